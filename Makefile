@@ -1,0 +1,29 @@
+# Two commands for a fresh machine (see README): `make demo` and `make test`.
+VENV ?= .venv
+PY := $(VENV)/bin/python
+OUT ?= results/2ds-paper
+
+.PHONY: setup browser demo test clean
+
+setup: $(VENV)/.installed
+
+$(VENV)/.installed: pyproject.toml constraints.txt
+	python3 -m venv $(VENV)
+	$(PY) -m pip install --quiet --upgrade pip
+	$(PY) -m pip install --quiet -c constraints.txt -e ".[dev]"
+	touch $@
+
+# Debian's Chromium for the browser test (root on these machines; skipped where present).
+browser:
+	@command -v chromium >/dev/null 2>&1 || { apt-get update -qq && apt-get install -y -qq chromium >/dev/null; }
+
+# The main job: the paper's 2DS tables at full size, printed next to the published numbers.
+demo: setup
+	$(VENV)/bin/toolkit reproduce --scenario 2ds --preset paper --out $(OUT)
+	cat $(OUT)/tables.md
+
+test: setup browser
+	$(PY) -m pytest -q
+
+clean:
+	rm -rf $(VENV) results .pytest_cache

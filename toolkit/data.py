@@ -1,0 +1,155 @@
+"""Labelled, balanced datasets of configurations and their seen / unseen splits (paper §V-A).
+
+For every workspace we draw configurations uniformly, label them with the exact
+checker and keep about as many valid as invalid ones (the paper: "approximately
+distributed 50/50"). Three splits follow the paper:
+
+- ``train``: the seen workspaces (2DS 30, 3DO 100, 3DC 50) with their samples;
+- ``seen_test``: the first ``n_seen_test`` seen workspaces with *new* samples;
+- ``unseen_test``: workspaces never trained on (2DS 10, 3DO 20, 3DC 10).
+
+Each workspace has its own seed, derived from ``(seed, split, index)``, so growing a
+split keeps the workspaces it already had.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+from tqdm.auto import tqdm
+
+from .collision import exact_checker
+from .scenarios import Scenario
+from .workspace import Workspace
+
+SPLITS = ("train", "seen_test", "unseen_test")
+STREAMS = {"seen": 0, "unseen": 1, "query": 2, "train_samples": 3, "test_samples": 4, "unseen_samples": 5}
+
+
+def stream_rng(seed: int, stream: str, index: int) -> np.random.Generator:
+    """The generator for item ``index`` of a named stream ('seen', 'unseen', 'query', ...)."""
+    return np.random.default_rng([int(seed), STREAMS[stream], int(index)])
+
+
+def workspaces(scenario: Scenario, stream: str, count: int, seed: int) -> list[Workspace]:
+    """``count`` workspaces of a stream: 'seen' (training), 'unseen' or 'query' (planning)."""
+    return [scenario.make_workspace(stream_rng(seed, stream, i)) for i in range(count)]
+
+
+def balanced_samples(checker, rng: np.random.Generator, n: int, valid_fraction: float = 0.5,
+                     max_draws: int = 2_000_000) -> tuple[np.ndarray, np.ndarray]:
+    """``n`` uniform configurations, ``round(n * valid_fraction)`` of them valid: ``(n, dof)``, ``(n,)`` bool.
+
+    Draws batches until both quotas are met; raises if ``max_draws`` are not enough
+    (a workspace almost entirely free or entirely blocked).
+    """
+    robot = checker.robot
+    want_valid = int(round(n * valid_fraction))
+    want = {True: want_valid, False: n - want_valid}
+    kept = {True: [], False: []}
+    drawn, batch = 0, max(64, 4 * n)
+    while any(sum(map(len, kept[c])) < want[c] for c in (True, False)):
+        if drawn >= max_draws:
+            have = {c: sum(map(len, kept[c])) for c in kept}
+            raise RuntimeError(f"after {drawn} draws only {have[True]} valid / {have[False]} invalid "
+                               f"configurations of the {want[True]} / {want[False]} wanted")
+        Q = robot.sample(rng, batch)
+        valid = checker.are_valid(Q)
+        drawn += batch
+        for c in (True, False):
+            kept[c].append(Q[valid == c])
+    Q = np.concatenate([np.concatenate(kept[True])[: want[True]], np.concatenate(kept[False])[: want[False]]])
+    labels = np.arange(n) < want[True]
+    order = rng.permutation(n)
+    return Q[order], labels[order]
+
+
+@dataclass
+class CollisionDataset:
+    """Configurations labelled in a list of workspaces.
+
+    ``occupancy (W, *grid)`` float32 of -1/+1, ``configs (W, n, dof)``, ``valid (W, n)`` bool.
+    """
+
+    scenario: str
+    workspaces: list[Workspace]
+    occupancy: np.ndarray
+    configs: np.ndarray
+    valid: np.ndarray
+    meta: dict = field(default_factory=dict)
+
+    def __post_init__(self):
+        w = len(self.workspaces)
+        if not (len(self.occupancy) == len(self.configs) == len(self.valid) == w):
+            raise ValueError(f"dataset arrays disagree on the number of workspaces: {w} workspaces, "
+                             f"{len(self.occupancy)} grids, {len(self.configs)} config sets, {len(self.valid)} label sets")
+        if self.configs.shape[:2] != self.valid.shape:
+            raise ValueError(f"configs {self.configs.shape} and labels {self.valid.shape} disagree")
+
+    def __len__(self) -> int:
+        return int(self.valid.size)
+
+    def flat(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``(workspace index (M,), configs (M, dof), valid (M,))`` with M = W * n."""
+        w, n = self.valid.shape
+        return np.repeat(np.arange(w), n), self.configs.reshape(w * n, -1), self.valid.reshape(-1)
+
+    def save(self, path: str | Path) -> None:
+        """Write an ``.npz`` (atomically: a temporary file, then a rename)."""
+        path = Path(path)
+        meta = dict(self.meta, scenario=self.scenario, workspaces=[ws.to_dict() for ws in self.workspaces])
+        tmp = path.with_name(path.name + ".tmp.npz")
+        np.savez_compressed(tmp, occupancy=self.occupancy, configs=self.configs, valid=self.valid,
+                            meta=np.array(json.dumps(meta)))
+        tmp.replace(path)
+
+    @classmethod
+    def load(cls, path: str | Path, scenario: str | None = None) -> "CollisionDataset":
+        """Read a dataset; a clear error for a corrupted file or another scenario's data."""
+        path = Path(path)
+        try:
+            with np.load(path, allow_pickle=False) as data:
+                arrays = {k: data[k] for k in ("occupancy", "configs", "valid", "meta")}
+            meta = json.loads(str(arrays.pop("meta")))
+        except FileNotFoundError:
+            raise
+        except Exception as err:  # zipfile, zlib, KeyError, JSON: all mean the file cannot be trusted
+            raise ValueError(f"{path} is not a valid dataset file (corrupted or truncated): {err}") from err
+        if scenario is not None and meta.get("scenario") != scenario:
+            raise ValueError(f"{path} holds data for scenario {meta.get('scenario')!r}, not {scenario!r}")
+        spaces = [Workspace.from_dict(d) for d in meta.pop("workspaces")]
+        return cls(meta.pop("scenario"), spaces, arrays["occupancy"], arrays["configs"], arrays["valid"].astype(bool), meta)
+
+
+def label_workspaces(scenario: Scenario, spaces: list[Workspace], samples_per_workspace: int, seed: int,
+                     stream: str, progress: bool = True, desc: str = "") -> CollisionDataset:
+    """Balanced labelled samples in each workspace, drawn from ``stream_rng(seed, stream, i)``."""
+    configs, valid = [], []
+    for i, ws in enumerate(tqdm(spaces, desc=desc or f"labelling {scenario.name}", disable=not progress, leave=False)):
+        Q, labels = balanced_samples(exact_checker(ws, scenario.robot), stream_rng(seed, stream, i), samples_per_workspace)
+        configs.append(Q)
+        valid.append(labels)
+    occupancy = np.stack([ws.occupancy() for ws in spaces]) if spaces else np.zeros((0,) + scenario.grid_shape, np.float32)
+    return CollisionDataset(scenario.name, list(spaces), occupancy, np.array(configs, dtype=float).reshape(len(spaces), samples_per_workspace, -1),
+                            np.array(valid, dtype=bool).reshape(len(spaces), samples_per_workspace),
+                            meta={"seed": seed, "stream": stream, "samples_per_workspace": samples_per_workspace})
+
+
+def make_splits(scenario: Scenario, seed: int = 0, samples_per_workspace: int | None = None,
+                n_seen: int | None = None, n_seen_test: int | None = None, n_unseen: int | None = None,
+                progress: bool = True) -> dict[str, CollisionDataset]:
+    """The paper's three splits (``train``, ``seen_test``, ``unseen_test``); counts default to the paper's."""
+    n = samples_per_workspace or scenario.samples_per_workspace
+    n_seen = scenario.n_seen if n_seen is None else n_seen
+    n_seen_test = min(n_seen, scenario.n_seen_test if n_seen_test is None else n_seen_test)
+    n_unseen = scenario.n_unseen if n_unseen is None else n_unseen
+    seen = workspaces(scenario, "seen", n_seen, seed)
+    unseen = workspaces(scenario, "unseen", n_unseen, seed)
+    return {
+        "train": label_workspaces(scenario, seen, n, seed, "train_samples", progress, "train samples"),
+        "seen_test": label_workspaces(scenario, seen[:n_seen_test], n, seed, "test_samples", progress, "seen test samples"),
+        "unseen_test": label_workspaces(scenario, unseen, n, seed, "unseen_samples", progress, "unseen test samples"),
+    }

@@ -1,0 +1,83 @@
+"""The paper's four scenarios (§V-A, §V-B): workspace family, robot, data counts, model sizes.
+
+>>> from toolkit import scenarios
+>>> s = scenarios.get("3dc9")
+>>> s.robot.dof, s.grid_shape
+(9, (11, 11, 11))
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from . import robots, workspace
+from .robots import BoxRobot
+from .workspace import Workspace
+
+
+@dataclass(frozen=True)
+class Scenario:
+    """One row of the paper's tables; counts and sizes are the paper's."""
+
+    name: str
+    title: str
+    family: str  # workspace family: '2ds', '3do' or '3dc'
+    robot: BoxRobot
+    grid_shape: tuple[int, ...]
+    n_seen: int  # workspaces the CAE and MLP train on (§V-A)
+    n_seen_test: int  # of those, how many are re-tested as "seen"
+    n_unseen: int  # workspaces never trained on
+    samples_per_workspace: int  # labelled configurations per workspace, about 50/50 (§V-A)
+    cae_hidden: tuple[int, ...]  # encoder widths after the input; the last is the latent size (§V-B1)
+    mlp_hidden: tuple[int, ...]  # MLP hidden widths (§V-B2)
+    plan_samples: int  # |S| in Algorithm 1 (§V-A): samples drawn before prediction
+    query_workspaces: int  # planning queries: workspaces x pairs (§V-A)
+    queries_per_workspace: int
+
+    def make_workspace(self, rng: np.random.Generator) -> Workspace:
+        """A new random workspace of this scenario's family."""
+        return workspace.generate(self.family, rng)
+
+    @property
+    def latent_dim(self) -> int:
+        return self.cae_hidden[-1]
+
+    @property
+    def grid_size(self) -> int:
+        return int(np.prod(self.grid_shape))
+
+
+MLP_3D = (50, 40, 30, 20, 10, 5)
+CAE_3DC = (1000, 800, 600, 400, 200, 100, 50)
+
+SCENARIOS: dict[str, Scenario] = {
+    s.name: s
+    for s in [
+        Scenario("2ds", "2D simple, point robot", "2ds", robots.point_robot(), (31, 31),
+                 n_seen=30, n_seen_test=30, n_unseen=10, samples_per_workspace=100,
+                 cae_hidden=(512, 256, 128, 64, 32, 12), mlp_hidden=(6, 4),
+                 plan_samples=200, query_workspaces=10, queries_per_workspace=10),
+        Scenario("3do", "3D office, youBot-like 8-DoF", "3do", robots.youbot(), (41, 41, 6),
+                 n_seen=100, n_seen_test=100, n_unseen=20, samples_per_workspace=200,
+                 cae_hidden=(5043, 3125, 1600, 800, 400, 200, 100, 50), mlp_hidden=MLP_3D,
+                 plan_samples=2000, query_workspaces=10, queries_per_workspace=10),
+        Scenario("3dc7", "3D clutter, 7-DoF box chain", "3dc", robots.box_chain(1), (11, 11, 11),
+                 n_seen=50, n_seen_test=30, n_unseen=10, samples_per_workspace=200,
+                 cae_hidden=CAE_3DC, mlp_hidden=MLP_3D,
+                 plan_samples=400, query_workspaces=100, queries_per_workspace=1),
+        Scenario("3dc9", "3D clutter, 9-DoF box chain", "3dc", robots.box_chain(3), (11, 11, 11),
+                 n_seen=50, n_seen_test=30, n_unseen=10, samples_per_workspace=200,
+                 cae_hidden=CAE_3DC, mlp_hidden=MLP_3D,
+                 plan_samples=400, query_workspaces=100, queries_per_workspace=1),
+    ]
+}
+
+
+def get(name: str) -> Scenario:
+    """The scenario called ``name`` ('2ds', '3do', '3dc7' or '3dc9')."""
+    try:
+        return SCENARIOS[name]
+    except KeyError:
+        raise ValueError(f"unknown scenario {name!r}; choose one of {sorted(SCENARIOS)}") from None

@@ -1,0 +1,205 @@
+"""Workspaces: axis-aligned box worlds and their occupancy grids (paper §V-A).
+
+A workspace is a rectangular region ``[lower, upper]`` holding ``K`` axis-aligned
+obstacle boxes, stored as one array ``boxes`` of shape ``(K, 2, D)`` (min and max
+corners). The paper's three families are generated from a seed:
+
+- ``2ds``: a 31x31 region with 3-5 rectangular blocks of different shapes and sizes;
+- ``3do``: a 41x41x6 office with 25-30 blocks of pre-defined furniture types;
+- ``3dc``: an 11x11x11 clutter of 110-125 identical unit blocks.
+
+Block corners lie on integer coordinates, so the occupancy grid (one point at the
+centre of every unit cell, paper §V-A: +1 occupied, -1 free) describes the
+workspace exactly: nothing the CAE is asked to encode is lost by the grid.
+"""
+
+from __future__ import annotations
+
+import json
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import numpy as np
+
+FREE, OCCUPIED = -1.0, 1.0
+
+
+@dataclass(frozen=True, eq=False)
+class Workspace:
+    """A region ``[lower, upper]`` (``(D,)`` each) holding boxes ``(K, 2, D)``."""
+
+    lower: np.ndarray  # (D,)
+    upper: np.ndarray  # (D,)
+    boxes: np.ndarray  # (K, 2, D) min / max corners
+    family: str = ""
+    labels: tuple[str, ...] = field(default=())  # optional name of each box's type
+
+    def __post_init__(self):
+        lower = _finite_array(self.lower, "lower", ndim=1)
+        upper = _finite_array(self.upper, "upper", ndim=1)
+        dim = lower.shape[0]
+        if dim not in (2, 3) or upper.shape != lower.shape:
+            raise ValueError(f"lower and upper must both have shape (2,) or (3,), got {lower.shape} and {upper.shape}")
+        if np.any(upper <= lower):
+            raise ValueError(f"upper {upper} must exceed lower {lower} in every axis")
+        boxes = _finite_array(self.boxes, "boxes", ndim=None)
+        if boxes.size == 0:
+            boxes = boxes.reshape(0, 2, dim)
+        if boxes.ndim != 3 or boxes.shape[1:] != (2, dim):
+            raise ValueError(f"boxes must have shape (K, 2, {dim}), got {boxes.shape}")
+        if np.any(boxes[:, 1] < boxes[:, 0]):
+            raise ValueError("every box needs max corner >= min corner")
+        if self.labels and len(self.labels) != len(boxes):
+            raise ValueError(f"{len(self.labels)} labels for {len(boxes)} boxes")
+        for name, value in (("lower", lower), ("upper", upper), ("boxes", boxes)):
+            value.setflags(write=False)
+            object.__setattr__(self, name, value)
+        object.__setattr__(self, "labels", tuple(self.labels))
+
+    @property
+    def dim(self) -> int:
+        return int(self.lower.shape[0])
+
+    @property
+    def grid_shape(self) -> tuple[int, ...]:
+        """One grid point per unit cell: (31, 31), (41, 41, 6) or (11, 11, 11)."""
+        return tuple(int(round(s)) for s in self.upper - self.lower)
+
+    def grid_points(self) -> np.ndarray:
+        """Centres of the unit cells, shape ``grid_shape + (D,)``."""
+        axes = [self.lower[d] + 0.5 + np.arange(n) for d, n in enumerate(self.grid_shape)]
+        return np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1)
+
+    def occupancy(self) -> np.ndarray:
+        """Occupancy grid, shape ``grid_shape``: +1 where a cell centre lies in a box, else -1."""
+        points = self.grid_points().reshape(-1, 1, self.dim)  # (P, 1, D)
+        inside = np.all((points >= self.boxes[None, :, 0]) & (points <= self.boxes[None, :, 1]), axis=-1)  # (P, K)
+        grid = np.where(inside.any(axis=1), OCCUPIED, FREE)
+        return grid.reshape(self.grid_shape).astype(np.float32)
+
+    def contains_points(self, points: np.ndarray) -> np.ndarray:
+        """Whether each point ``(..., D)`` lies inside an obstacle (closed boxes)."""
+        p = np.asarray(points, dtype=float)[..., None, :]  # (..., 1, D)
+        return np.any(np.all((p >= self.boxes[:, 0]) & (p <= self.boxes[:, 1]), axis=-1), axis=-1)
+
+    # -- equality and files ---------------------------------------------------
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Workspace):
+            return NotImplemented
+        return (
+            self.family == other.family
+            and self.labels == other.labels
+            and np.array_equal(self.lower, other.lower)
+            and np.array_equal(self.upper, other.upper)
+            and np.array_equal(self.boxes, other.boxes)
+        )
+
+    __hash__ = None  # mutable-looking arrays inside: not hashable
+
+    def to_dict(self) -> dict:
+        return {
+            "family": self.family,
+            "lower": self.lower.tolist(),
+            "upper": self.upper.tolist(),
+            "boxes": self.boxes.tolist(),
+            "labels": list(self.labels),
+        }
+
+    @classmethod
+    def from_dict(cls, data: dict) -> "Workspace":
+        missing = {"lower", "upper", "boxes"} - set(data)
+        if missing:
+            raise ValueError(f"workspace data is missing keys {sorted(missing)}")
+        return cls(np.asarray(data["lower"], float), np.asarray(data["upper"], float), data["boxes"],
+                   family=data.get("family", ""), labels=tuple(data.get("labels", ())))
+
+    def save(self, path: str | Path) -> None:
+        """Write the workspace as JSON (atomically: a temporary file, then a rename)."""
+        path = Path(path)
+        tmp = path.with_name(path.name + ".tmp")
+        tmp.write_text(json.dumps(self.to_dict()))
+        tmp.replace(path)
+
+    @classmethod
+    def load(cls, path: str | Path) -> "Workspace":
+        path = Path(path)
+        try:
+            data = json.loads(path.read_text())
+        except (json.JSONDecodeError, UnicodeDecodeError) as err:
+            raise ValueError(f"{path} is not a valid workspace file (corrupted or truncated JSON): {err}") from err
+        if not isinstance(data, dict):
+            raise ValueError(f"{path} is not a valid workspace file: expected a JSON object")
+        return cls.from_dict(data)
+
+
+def _finite_array(value, name: str, ndim: int | None) -> np.ndarray:
+    array = np.array(value, dtype=float)
+    if ndim is not None and array.ndim != ndim:
+        raise ValueError(f"{name} must be a {ndim}-D array, got shape {array.shape}")
+    if not np.all(np.isfinite(array)):
+        raise ValueError(f"{name} contains NaN or infinite values")
+    return array
+
+
+# -- generators -----------------------------------------------------------------
+
+def _place(rng: np.random.Generator, size: np.ndarray, region: np.ndarray, on_floor: bool = False) -> np.ndarray:
+    """A box of integer ``size`` (D,) at a random integer position inside ``region`` (D,)."""
+    corner = np.array([rng.integers(0, int(r - s) + 1) for r, s in zip(region, size)], dtype=float)
+    if on_floor:
+        corner[-1] = 0.0
+    return np.stack([corner, corner + size])
+
+
+def simple_2d(rng: np.random.Generator) -> Workspace:
+    """2DS: 31x31 region, 3-5 rectangular blocks, sides 2-9 (paper §V-A)."""
+    region = np.array([31.0, 31.0])
+    count = int(rng.integers(3, 6))
+    boxes = [_place(rng, rng.integers(2, 10, size=2).astype(float), region) for _ in range(count)]
+    return Workspace(np.zeros(2), region, np.array(boxes), family="2ds")
+
+
+# Pre-defined office furniture (size x, y, z), placed on the floor; walls also rotated by 90 degrees.
+OFFICE_TYPES: dict[str, tuple[float, float, float]] = {
+    "desk": (3.0, 2.0, 1.0),
+    "table": (4.0, 2.0, 1.0),
+    "shelf": (1.0, 4.0, 3.0),
+    "cabinet": (1.0, 1.0, 2.0),
+    "chair": (1.0, 1.0, 1.0),
+    "wall": (8.0, 1.0, 4.0),
+}
+
+
+def office_3d(rng: np.random.Generator) -> Workspace:
+    """3DO: 41x41x6 office, 25-30 blocks whose type and place are random (paper §V-A)."""
+    region = np.array([41.0, 41.0, 6.0])
+    names = list(OFFICE_TYPES)
+    count = int(rng.integers(25, 31))
+    boxes, labels = [], []
+    for _ in range(count):
+        name = names[int(rng.integers(len(names)))]
+        size = np.array(OFFICE_TYPES[name])
+        if rng.random() < 0.5:  # turn the block by 90 degrees about z
+            size[[0, 1]] = size[[1, 0]]
+        boxes.append(_place(rng, size, region, on_floor=True))
+        labels.append(name)
+    return Workspace(np.zeros(3), region, np.array(boxes), family="3do", labels=tuple(labels))
+
+
+def clutter_3d(rng: np.random.Generator) -> Workspace:
+    """3DC: 11x11x11 clutter, 110-125 identical unit blocks (paper §V-A)."""
+    region = np.array([11.0, 11.0, 11.0])
+    count = int(rng.integers(110, 126))
+    cells = rng.choice(11 ** 3, size=count, replace=False)  # distinct cells: every block counts
+    corners = np.stack(np.unravel_index(cells, (11, 11, 11)), axis=-1).astype(float)  # (K, 3)
+    return Workspace(np.zeros(3), region, np.stack([corners, corners + 1.0], axis=1), family="3dc")
+
+
+GENERATORS = {"2ds": simple_2d, "3do": office_3d, "3dc": clutter_3d}
+
+
+def generate(family: str, rng: np.random.Generator) -> Workspace:
+    """A workspace of ``family`` ('2ds', '3do' or '3dc') drawn with ``rng``."""
+    if family not in GENERATORS:
+        raise ValueError(f"unknown workspace family {family!r}; choose one of {sorted(GENERATORS)}")
+    return GENERATORS[family](rng)
