@@ -1,0 +1,232 @@
+"""Reproduction of the paper's Tables 1-3 and Figures 5-7 (§VI), with one resumable command.
+
+``reproduce(scenario, preset, quick, seed, out)`` runs the stages
+
+1. data: the seen / unseen splits (:mod:`toolkit.data`);
+2. models: the CAE and MLP (:mod:`toolkit.training`), a checkpoint folder;
+3. learning: Table 1 and Table 2 measures, and P(valid) on the unseen test set;
+4. planning: every sampler, without and with prediction, on the paper's queries (:mod:`toolkit.queries`);
+5. throughput: exact and learned checker speed (:mod:`toolkit.bench`);
+
+and writes ``out/results.json`` (the contract's keys), ``out/tables.md`` (our value
+next to the published one in every cell) and PNG figures. Each stage's product is
+cached under ``out/cache`` and written atomically, so an interrupted run resumes
+where it stopped and a finished stage is not redone.
+"""
+
+from __future__ import annotations
+
+import json
+import shutil
+import time
+from pathlib import Path
+
+import numpy as np
+import torch
+from tqdm.auto import tqdm
+
+from . import bench, checkpoints, paper_numbers, plots, queries, scenarios, training
+from .data import SPLITS, CollisionDataset
+from .learned import LearnedChecker
+from .paper_numbers import SAMPLERS
+from .prm import PRMOptions
+
+MODES = ("without", "with")
+QUICK_QUERIES = {"2ds": (2, 2), "3do": (1, 2), "3dc7": (3, 1), "3dc9": (3, 1)}  # (workspaces, pairs each)
+QUICK_PLAN_SAMPLES = {"3do": 400}  # |S| in quick runs, where the paper's would take minutes
+
+
+class Stages:
+    """The cache folder of one run: each stage's file is written once, atomically, then reused."""
+
+    def __init__(self, out: Path, settings: dict, progress: bool):
+        self.cache = out / "cache"
+        self.cache.mkdir(parents=True, exist_ok=True)
+        self.progress = progress
+        self.seconds: dict[str, float] = {}
+        recorded = self.cache / "settings.json"
+        if recorded.exists() and json.loads(recorded.read_text()) != settings:
+            raise ValueError(f"{out} holds a run with other settings {recorded.read_text()}; "
+                             f"choose another --out, or delete {out} to start again")
+        write_json(recorded, settings)
+
+    def json(self, name: str, compute) -> dict:
+        """The cached JSON ``name``, or ``compute()`` written atomically."""
+        path = self.cache / f"{name}.json"
+        if path.exists():
+            return json.loads(path.read_text())
+        began = time.perf_counter()
+        value = compute()
+        self.seconds[name] = time.perf_counter() - began
+        write_json(path, value)
+        return value
+
+
+def write_json(path: Path, value) -> None:
+    """Write ``value`` as JSON atomically: a temporary file, then a rename."""
+    tmp = path.with_name(path.name + ".tmp")
+    tmp.write_text(json.dumps(value, indent=2))
+    tmp.replace(path)
+
+
+def _splits(stages: Stages, scenario, preset: str, seed: int, quick: bool) -> dict[str, CollisionDataset]:
+    paths = {name: stages.cache / f"data_{name}.npz" for name in SPLITS}
+    if all(p.exists() for p in paths.values()):
+        return {name: CollisionDataset.load(p, scenario.name) for name, p in paths.items()}
+    began = time.perf_counter()
+    splits = training.preset_splits(scenario, preset, seed, quick=quick, progress=stages.progress)
+    for name, dataset in splits.items():
+        dataset.save(paths[name])
+    stages.seconds["data"] = time.perf_counter() - began
+    return splits
+
+
+def _models(stages: Stages, scenario, preset: str, splits, seed: int, quick: bool) -> training.TrainedModels:
+    folder = stages.cache / "checkpoint"
+    if folder.exists():
+        return checkpoints.load_models(folder, scenario.name)
+    began = time.perf_counter()
+    models = training.train_models(scenario, preset, splits, seed, progress=stages.progress, quick=quick)
+    tmp = stages.cache / "checkpoint.tmp"
+    shutil.rmtree(tmp, ignore_errors=True)
+    checkpoints.save_checkpoint(models, tmp)
+    tmp.rename(folder)  # a folder appears whole or not at all
+    stages.seconds["models"] = time.perf_counter() - began
+    return models
+
+
+def _learning(models: training.TrainedModels, splits) -> dict:
+    scores = training.evaluate(models, splits)
+    unseen = splits["unseen_test"]
+    scores["unseen_probability"] = training.probabilities(models.predictor, unseen).reshape(-1).tolist()
+    scores["unseen_valid"] = unseen.valid.reshape(-1).tolist()
+    scores["threshold"] = models.threshold
+    return scores
+
+
+def _planning(stages: Stages, scenario, models, seed: int, quick: bool) -> dict:
+    counts = QUICK_QUERIES[scenario.name] if quick else (None, None)
+    query_set = queries.make_queries(scenario, seed, *counts)
+    n_samples = QUICK_PLAN_SAMPLES.get(scenario.name, scenario.plan_samples) if quick else scenario.plan_samples
+    options = PRMOptions(n_samples=n_samples)
+    factory = {"without": None, "with": lambda ws: LearnedChecker(ws, models)}
+    planning = {}
+    runs = [(s, m) for s in SAMPLERS for m in MODES]
+    for sampler, mode in tqdm(runs, desc=f"planning {scenario.name}", disable=not stages.progress, leave=False):
+        planning.setdefault(sampler, {})[mode] = stages.json(
+            f"planning_{sampler}_{mode}",
+            lambda: queries.run_queries(scenario, query_set, sampler, factory[mode], options, seed)[1])
+    return planning
+
+
+def _throughput(scenario, preset: str, seed: int, quick: bool) -> dict:
+    repeats = 3 if quick else 7
+    exact = bench.exact_throughput(scenario, seed=seed, repeats=repeats)
+    learned = bench.learned_throughput(scenario, preset, seed=seed, repeats=repeats)
+    return {"exact_cfg_per_s": exact, "learned_cfg_per_s": learned, "ratio": learned / exact}
+
+
+def improvement(planning: dict, key: str) -> dict[str, float]:
+    """Table 3's measure per sampler: ``(without - with) / without`` of the mean ``key`` time."""
+    return {s: 1.0 - planning[s]["with"][key] / planning[s]["without"][key] for s in SAMPLERS}
+
+
+def reproduce(scenario_name: str, preset: str = "paper", quick: bool = False, seed: int = 0,
+              out: str | Path = "results", progress: bool = True) -> dict:
+    """Run every stage for one scenario; write ``results.json``, ``tables.md`` and figures into ``out``."""
+    scenario = scenarios.get(scenario_name)
+    out = Path(out)
+    settings = {"scenario": scenario.name, "preset": preset, "quick": bool(quick), "seed": int(seed)}
+    stages = Stages(out, settings, progress)
+    began = time.perf_counter()
+    splits = _splits(stages, scenario, preset, seed, quick)
+    models = _models(stages, scenario, preset, splits, seed, quick)
+    learning = stages.json("learning", lambda: _learning(models, splits))
+    planning = _planning(stages, scenario, models, seed, quick)
+    throughput = stages.json("throughput", lambda: _throughput(scenario, preset, seed, quick))
+    results = dict(settings, cae=learning["cae"], mlp=learning["mlp"], threshold=learning["threshold"],
+                   planning=planning, throughput=throughput,
+                   improvement={"sampling": improvement(planning, "sampling_s"), "total": improvement(planning, "total_s")},
+                   stage_seconds=stages.seconds, wall_seconds=time.perf_counter() - began,
+                   versions={"torch": torch.__version__, "numpy": np.__version__})
+    write_json(out / "results.json", results)
+    (out / "tables.md").write_text(tables_markdown(results))
+    _figures(out, scenario, models, splits, learning, planning)
+    return results
+
+
+def _figures(out: Path, scenario, models, splits, learning: dict, planning: dict) -> None:
+    grids = {"seen": splits["seen_test"].occupancy[0], "unseen": splits["unseen_test"].occupancy[0]}
+    with torch.no_grad():
+        decoded = {k: models.predictor.cae(torch.as_tensor(g)[None])[0].numpy() for k, g in grids.items()}
+    figures = {
+        "cae_reconstruction.png": plots.cae_reconstruction(grids, decoded),
+        "planning_times.png": plots.planning_times(planning, f"{scenario.title}: time per query"),
+        "mlp_threshold.png": plots.threshold_sweep(np.array(learning["unseen_probability"]),
+                                                   np.array(learning["unseen_valid"]), learning["threshold"]),
+    }
+    for name, fig in figures.items():
+        fig.savefig(out / name, dpi=110)
+
+
+# -- tables -----------------------------------------------------------------------------
+
+def _pct(x: float) -> str:
+    return "n/a" if x is None or not np.isfinite(x) else f"{100 * x:.0f}%"
+
+
+def _time(mean_std) -> str:
+    mean, std = mean_std
+    return f"{mean:.3g} ± {std:.2g}"
+
+
+def tables_markdown(results: dict) -> str:
+    """Tables 1-3 of the paper with our value next to the published one (``ours / paper``) in every cell."""
+    name = results["scenario"]
+    cae, mlp, planning = results["cae"], results["mlp"], results["planning"]
+    paper_cae, paper_mlp = paper_numbers.CAE[name], paper_numbers.MLP[name]
+    lines = [f"# {scenarios.get(name).title} — preset `{results['preset']}`"
+             f"{' (quick)' if results['quick'] else ''}, seed {results['seed']}", "",
+             "Every cell: **ours** / paper.", "",
+             "## Table 1: CAE reconstruction accuracy", "", "| | Seen | Unseen |", "| --- | --- | --- |",
+             f"| {name} | **{_pct(cae['seen_acc'])}** / {_pct(paper_cae['seen_acc'])} "
+             f"| **{_pct(cae['unseen_acc'])}** / {_pct(paper_cae['unseen_acc'])} |", "",
+             "## Table 2: MLP accuracy, TPR, TNR", "",
+             "| | Seen Acc | Seen TPR | Seen TNR | Unseen Acc | Unseen TPR | Unseen TNR |",
+             "| --- | --- | --- | --- | --- | --- | --- |",
+             "| " + name + " | " + " | ".join(f"**{_pct(mlp[s][m])}** / {_pct(paper_mlp[s][m])}"
+                                             for s in ("seen", "unseen") for m in ("acc", "tpr", "tnr")) + " |",
+             "", f"Decision threshold on P(valid): {results['threshold']:.2f}.", "",
+             "## Table 3: time improvement ratio (without − with) / without", "",
+             "| | " + " | ".join(f"Sampling {s}" for s in SAMPLERS) + " | " + " | ".join(f"Total {s}" for s in SAMPLERS) + " |",
+             "| --- " * 9 + "|",
+             "| " + name + " | " + " | ".join(
+                 f"**{_pct(results['improvement'][k][s])}** / {_pct(paper_numbers.IMPROVEMENT[name][k][s])}"
+                 for k in ("sampling", "total") for s in SAMPLERS) + " |", "",
+             "## Times behind Table 3 (seconds per query, mean ± std; ours / paper)", "",
+             "| sampler | sampling without | sampling with | total without | total with | success without / with | paths valid without / with |",
+             "| --- | --- | --- | --- | --- | --- | --- |"]
+    paper_times = paper_numbers.TIMES[name]
+    for s in SAMPLERS:
+        cells = []
+        for key in ("sampling_s", "total_s"):
+            for i, mode in enumerate(MODES):
+                ours = (planning[s][mode][key], planning[s][mode].get(key + "_std", 0.0))
+                cells.append(f"**{_time(ours)}** / {_time(paper_times[key][s][i])}")
+        cells.append(" / ".join(_pct(planning[s][m]["success_rate"]) for m in MODES))
+        cells.append(" / ".join(_pct(planning[s][m]["path_valid_rate"]) for m in MODES))
+        lines.append(f"| {s} | " + " | ".join(cells) + " |")
+    t = results["throughput"]
+    lines += ["", "## Checker throughput (configurations per second, median)", "",
+              f"exact {t['exact_cfg_per_s']:,.0f}; learned {t['learned_cfg_per_s']:,.0f}; ratio {t['ratio']:.1f}", ""]
+    return "\n".join(lines)
+
+
+def reproduce_many(names: list[str], preset: str = "paper", quick: bool = False, seed: int = 0,
+                   out: str | Path = "results", progress: bool = True) -> dict[str, dict]:
+    """:func:`reproduce` for several scenarios into ``out/<scenario>``, plus ``out/tables.md`` joining their tables."""
+    out = Path(out)
+    results = {name: reproduce(name, preset, quick, seed, out / name, progress) for name in names}
+    out.mkdir(parents=True, exist_ok=True)
+    (out / "tables.md").write_text("\n".join(tables_markdown(r) for r in results.values()))
+    return results

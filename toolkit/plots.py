@@ -1,0 +1,81 @@
+"""Figures of the reproduction (paper §VI, Figures 5-7): every function returns a matplotlib Figure.
+
+Nothing here calls ``show()``; the figures render headless (Agg) and the caller
+saves or displays them.
+"""
+
+from __future__ import annotations
+
+import matplotlib
+
+matplotlib.use("Agg", force=False)
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from .paper_numbers import SAMPLERS
+
+MODES = ("without", "with")
+
+
+def _show_grid(ax, grid: np.ndarray, title: str) -> None:
+    """A 2D grid as is; a 3D grid as its middle slice along z (the CAE's input is the whole volume)."""
+    if grid.ndim == 3:
+        z = grid.shape[2] // 2
+        grid, title = grid[:, :, z], f"{title} (slice z={z})"
+    ax.imshow(grid.T, origin="lower", cmap="gray_r", vmin=-1, vmax=1)
+    ax.set_title(title, fontsize=9)
+    ax.set_xticks([])
+    ax.set_yticks([])
+
+
+def cae_reconstruction(grids: dict[str, np.ndarray], decoded: dict[str, np.ndarray]) -> Figure:
+    """Input vs decoded occupancy for named workspaces (e.g. 'seen', 'unseen'); Table 1 in pictures."""
+    fig = Figure(figsize=(3.2 * len(grids), 6.4))
+    axes = fig.subplots(2, len(grids), squeeze=False)
+    for col, name in enumerate(grids):
+        _show_grid(axes[0, col], grids[name], f"{name}: input")
+        _show_grid(axes[1, col], np.where(decoded[name] >= 0, 1.0, -1.0), f"{name}: decoded (sign)")
+    fig.suptitle("CAE reconstruction: black = occupied")
+    fig.tight_layout()
+    return fig
+
+
+def planning_times(planning: dict, title: str = "") -> Figure:
+    """Sampling and total time per query, without / with prediction, mean with std error bars (Figures 5-7)."""
+    fig = Figure(figsize=(9, 3.6))
+    axes = fig.subplots(1, 2)
+    x = np.arange(len(SAMPLERS))
+    for ax, key, label in ((axes[0], "sampling_s", "sampling time (s)"), (axes[1], "total_s", "total time per query (s)")):
+        for i, mode in enumerate(MODES):
+            means = [planning[s][mode][key] for s in SAMPLERS]
+            stds = [planning[s][mode].get(key + "_std", 0.0) for s in SAMPLERS]
+            names = [s if mode == "without" else s + "F" for s in SAMPLERS]
+            bars = ax.bar(x + (i - 0.5) * 0.38, means, 0.38, yerr=stds, capsize=3, label=f"{mode} prediction")
+            ax.bar_label(bars, labels=names, fontsize=7, padding=2)
+        ax.set_xticks(x, SAMPLERS)
+        ax.set_ylabel(label)
+        ax.legend(fontsize=8)
+    fig.suptitle(title or "Time with and without prediction")
+    fig.tight_layout()
+    return fig
+
+
+def threshold_sweep(probability: np.ndarray, valid: np.ndarray, threshold: float | None = None) -> Figure:
+    """Accuracy, TPR and TNR of the MLP as the decision threshold on P(valid) moves; ``(N,)`` arrays."""
+    p, truth = np.asarray(probability).reshape(-1), np.asarray(valid, dtype=bool).reshape(-1)
+    ts = np.linspace(0.0, 1.0, 101)
+    predicted = p[None, :] >= ts[:, None]  # (T, N)
+    fig = Figure(figsize=(5, 3.6))
+    ax = fig.subplots()
+    ax.plot(ts, (predicted == truth).mean(axis=1), label="accuracy")
+    ax.plot(ts, predicted[:, truth].mean(axis=1), label="TPR (valid kept)")
+    ax.plot(ts, (~predicted[:, ~truth]).mean(axis=1), label="TNR (invalid rejected)")
+    if threshold is not None:
+        ax.axvline(threshold, color="gray", linestyle=":", label=f"threshold {threshold:.2f}")
+    ax.set_xlabel("threshold on P(valid)")
+    ax.set_ylim(0, 1.02)
+    ax.legend(fontsize=8)
+    ax.set_title("MLP on unseen workspaces")
+    fig.tight_layout()
+    return fig
