@@ -34,6 +34,7 @@ from .prm import PRMOptions
 MODES = ("without", "with")
 QUICK_QUERIES = {"2ds": (2, 2), "3do": (1, 2), "3dc7": (3, 1), "3dc9": (3, 1)}  # (workspaces, pairs each)
 QUICK_PLAN_SAMPLES = {"3do": 400}  # |S| in quick runs, where the paper's would take minutes
+QUICK_MAX_ROUNDS = 5  # quick models predict poorly: give up sooner than a full run would
 
 
 class Stages:
@@ -108,7 +109,7 @@ def _planning(stages: Stages, scenario, models, seed: int, quick: bool) -> dict:
     counts = QUICK_QUERIES[scenario.name] if quick else (None, None)
     query_set = queries.make_queries(scenario, seed, *counts)
     n_samples = QUICK_PLAN_SAMPLES.get(scenario.name, scenario.plan_samples) if quick else scenario.plan_samples
-    options = PRMOptions(n_samples=n_samples)
+    options = PRMOptions(n_samples=n_samples, max_rounds=QUICK_MAX_ROUNDS) if quick else PRMOptions(n_samples=n_samples)
     factory = {"without": None, "with": lambda ws: LearnedChecker(ws, models)}
     planning = {}
     runs = [(s, m) for s in SAMPLERS for m in MODES]

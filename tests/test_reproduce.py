@@ -1,0 +1,81 @@
+"""`toolkit reproduce --quick` for every scenario, checked against the contract of DESIGN.md."""
+
+import json
+
+import numpy as np
+import pytest
+
+from toolkit import cli, experiments, paper_numbers, scenarios
+
+RATE_KEYS = ("success_rate", "path_valid_rate")
+TIME_KEYS = ("sampling_s", "total_s")
+
+
+def check_contract(results: dict, name: str) -> None:
+    assert results["scenario"] == name and results["preset"] == "paper" and results["quick"] is True
+    assert results["seed"] == 0
+    for key in ("seen_acc", "unseen_acc"):
+        assert 0.0 <= results["cae"][key] <= 1.0
+    for split in ("seen", "unseen"):
+        for key in ("acc", "tpr", "tnr"):
+            assert 0.0 <= results["mlp"][split][key] <= 1.0
+    assert set(results["planning"]) == set(paper_numbers.SAMPLERS)
+    for sampler, modes in results["planning"].items():
+        assert set(modes) == {"without", "with"}
+        for mode, summary in modes.items():
+            for key in RATE_KEYS:
+                assert 0.0 <= summary[key] <= 1.0, (sampler, mode, key)
+            for key in TIME_KEYS:
+                assert summary[key] > 0.0, (sampler, mode, key)
+            assert summary["path_valid_rate"] == 1.0, f"{sampler} {mode}: a returned path failed the exact re-check"
+    # the exact planner solves these short quick queries
+    assert np.mean([results["planning"][s]["without"]["success_rate"] for s in paper_numbers.SAMPLERS]) > 0.5
+    assert results["throughput"]["exact_cfg_per_s"] > 0 and results["throughput"]["learned_cfg_per_s"] > 0
+
+
+def check_files(out, name: str) -> None:
+    tables = (out / "tables.md").read_text()
+    for heading in ("Table 1", "Table 2", "Table 3", "Times behind Table 3"):
+        assert heading in tables
+    # the published numbers stand next to ours
+    assert f"/ {100 * paper_numbers.MLP[name]['unseen']['acc']:.0f}%" in tables
+    for figure in ("cae_reconstruction.png", "planning_times.png", "mlp_threshold.png"):
+        assert (out / figure).read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", sorted(scenarios.SCENARIOS))
+def test_quick_reproduction_meets_the_contract(name, tmp_path):
+    out = tmp_path / name
+    assert cli.main(["reproduce", "--scenario", name, "--quick", "--out", str(out)]) == 0
+    results = json.loads((out / "results.json").read_text())
+    check_contract(results, name)
+    check_files(out, name)
+    if name == "2ds":  # a finished run is not redone: every stage comes from the cache
+        again = experiments.reproduce(name, quick=True, out=out, progress=False)
+        assert again["stage_seconds"] == {}
+        assert again["planning"] == results["planning"]
+
+
+def test_an_output_folder_of_other_settings_is_refused(tmp_path):
+    experiments.Stages(tmp_path, {"scenario": "2ds", "seed": 0}, progress=False)
+    with pytest.raises(ValueError, match="other settings"):
+        experiments.Stages(tmp_path, {"scenario": "2ds", "seed": 1}, progress=False)
+
+
+def test_an_interrupted_stage_leaves_no_file_a_later_run_trusts(tmp_path):
+    stages = experiments.Stages(tmp_path, {"scenario": "2ds"}, progress=False)
+
+    def crash():
+        raise KeyboardInterrupt
+
+    with pytest.raises(KeyboardInterrupt):
+        stages.json("planning_BS_without", crash)
+    assert not (stages.cache / "planning_BS_without.json").exists()
+    assert stages.json("planning_BS_without", lambda: {"total_s": 1.0}) == {"total_s": 1.0}
+    assert stages.json("planning_BS_without", lambda: {"total_s": 2.0}) == {"total_s": 1.0}  # cached
+
+
+def test_improvement_is_the_papers_table_3_measure():
+    planning = {s: {"without": {"total_s": 2.0}, "with": {"total_s": 1.5}} for s in paper_numbers.SAMPLERS}
+    assert experiments.improvement(planning, "total_s") == {s: 0.25 for s in paper_numbers.SAMPLERS}
