@@ -130,9 +130,20 @@ class ExactChecker(_BoxWorldChecker):
             link = self._links[l]
             link.setTransform(fcl.Transform(rotations[i, l], centers[i, l]))
             data = fcl.CollisionData(request=request)
-            self._world.collide(link, data, fcl.defaultCollisionCallback)
+            self._world.collide(link, data, _first_contact)
             hit[some[i]] = data.result.is_collision
         return hit
+
+
+def _first_contact(o1, o2, data) -> bool:
+    """Broadphase callback: test one candidate pair, and stop the search at the first contact.
+
+    (FCL's default callback never sets ``done`` for a default request, so it would test
+    every overlapping pair after a hit.)
+    """
+    if not data.done:
+        data.done = fcl.collide(o1, o2, data.request, data.result) > 0
+    return data.done
 
 
 def _fcl_box(lo: np.ndarray, hi: np.ndarray) -> fcl.CollisionObject:

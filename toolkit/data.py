@@ -46,6 +46,8 @@ def balanced_samples(checker, rng: np.random.Generator, n: int, valid_fraction: 
     Draws batches until both quotas are met; raises if ``max_draws`` are not enough
     (a workspace almost entirely free or entirely blocked).
     """
+    if not 0.0 <= valid_fraction <= 1.0 or n < 0:
+        raise ValueError(f"need n >= 0 and 0 <= valid_fraction <= 1, got n={n}, valid_fraction={valid_fraction}")
     robot = checker.robot
     want_valid = int(round(n * valid_fraction))
     want = {True: want_valid, False: n - want_valid}
@@ -114,14 +116,14 @@ class CollisionDataset:
             with np.load(path, allow_pickle=False) as data:
                 arrays = {k: data[k] for k in ("occupancy", "configs", "valid", "meta")}
             meta = json.loads(str(arrays.pop("meta")))
+            name, spaces = meta.pop("scenario"), [Workspace.from_dict(d) for d in meta.pop("workspaces")]
         except FileNotFoundError:
             raise
-        except Exception as err:  # zipfile, zlib, KeyError, JSON: all mean the file cannot be trusted
+        except Exception as err:  # zipfile, zlib, KeyError, JSON, bad workspaces: the file cannot be trusted
             raise ValueError(f"{path} is not a valid dataset file (corrupted or truncated): {err}") from err
-        if scenario is not None and meta.get("scenario") != scenario:
-            raise ValueError(f"{path} holds data for scenario {meta.get('scenario')!r}, not {scenario!r}")
-        spaces = [Workspace.from_dict(d) for d in meta.pop("workspaces")]
-        return cls(meta.pop("scenario"), spaces, arrays["occupancy"], arrays["configs"], arrays["valid"].astype(bool), meta)
+        if scenario is not None and name != scenario:
+            raise ValueError(f"{path} holds data for scenario {name!r}, not {scenario!r}")
+        return cls(name, spaces, arrays["occupancy"], arrays["configs"], arrays["valid"].astype(bool), meta)
 
 
 def label_workspaces(scenario: Scenario, spaces: list[Workspace], samples_per_workspace: int, seed: int,

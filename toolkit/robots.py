@@ -7,7 +7,7 @@ never over ``N``):
 
 - ``point2d``: the 2D point robot, a 0.5x0.5 square, DoF {x, y};
 - ``youbot``: a youBot-like mobile manipulator, DoF {x, y, yaw} of the base and 5
-  arm joints (8 DoF, about 1.0x0.6 base and a 1.1 tall arm);
+  arm joints (8 DoF; 1.5x1x1 overall with the arm upright, the paper's size);
 - ``chain7``: box chain, DoF {x, y, z, alpha, beta, gamma} and 1 joint, a small
   0.1^3 link and a big 0.4x0.1x0.1 link;
 - ``chain9``: box chain, 6 base DoF and 3 joints, small-big-small-big links.
@@ -71,7 +71,7 @@ class BoxRobot:
         self.dof_names = base_names + tuple(f"joint{i + 1}" for i in range(len(joints)))
         self.dof = len(self.dof_names)
         pos_lo, pos_hi = (np.asarray(b, dtype=float) for b in position_bounds)
-        n_rot = len(base_names) - self.dim
+        n_rot = sum(base_angular)  # base angles follow the base positions
         self.lower = np.concatenate([pos_lo[: len(base_names) - n_rot], np.full(n_rot, -np.pi), [j.limits[0] for j in joints]])
         self.upper = np.concatenate([pos_hi[: len(base_names) - n_rot], np.full(n_rot, np.pi), [j.limits[1] for j in joints]])
         self.wraps = np.array(base_angular + (False,) * len(joints))  # (dof,) angles that wrap around
@@ -91,11 +91,16 @@ class BoxRobot:
     # -- configurations ---------------------------------------------------------
     def check_configs(self, Q, name: str = "Q") -> np.ndarray:
         """``Q`` as a float array ``(N, dof)``; a clear error for a wrong shape or NaN/inf."""
+        Q = self._finite_configs(Q, name)
+        return Q[None] if Q.ndim == 1 else Q
+
+    def _finite_configs(self, Q, name: str, max_ndim: int | None = 2) -> np.ndarray:
+        """``Q`` as a float array ``(dof,)`` or ``(N, dof)`` (any leading axes if ``max_ndim`` is None);
+        a clear error for a wrong shape or NaN/inf."""
         Q = np.asarray(Q, dtype=float)
-        if Q.ndim == 1:
-            Q = Q[None]
-        if Q.ndim != 2 or Q.shape[1] != self.dof:
-            raise ValueError(f"{name} must have shape (N, {self.dof}) for robot {self.name!r}, got {np.shape(Q)}")
+        if Q.ndim < 1 or Q.ndim > (max_ndim or Q.ndim) or Q.shape[-1] != self.dof:
+            shape = f"(N, {self.dof}) or ({self.dof},)" if max_ndim else f"(..., {self.dof})"
+            raise ValueError(f"{name} must have shape {shape} for robot {self.name!r}, got {Q.shape}")
         if not np.all(np.isfinite(Q)):
             raise ValueError(f"{name} contains NaN or infinite values")
         return Q
@@ -109,8 +114,8 @@ class BoxRobot:
         return rng.uniform(self.lower, self.upper, size=(int(n), self.dof))
 
     def difference(self, Q0, Q1) -> np.ndarray:
-        """``Q1 - Q0`` with angles taken the short way round, ``(N, dof)``."""
-        delta = np.asarray(Q1, dtype=float) - np.asarray(Q0, dtype=float)
+        """``Q1 - Q0`` with angles taken the short way round, ``(N, dof)`` (leading axes broadcast)."""
+        delta = self._finite_configs(Q1, "Q1", max_ndim=None) - self._finite_configs(Q0, "Q0", max_ndim=None)
         return np.where(self.wraps, _wrap(delta), delta)
 
     def distance(self, Q0, Q1) -> np.ndarray:
@@ -119,8 +124,10 @@ class BoxRobot:
 
     def interpolate(self, q0, q1, t) -> np.ndarray:
         """``(T, dof)`` configurations at fractions ``t`` (T,) of the straight segment q0 -> q1."""
-        q0 = np.asarray(q0, dtype=float)
+        q0 = self._finite_configs(q0, "q0")
         t = np.asarray(t, dtype=float).reshape(-1, 1)  # (T, 1)
+        if not np.all(np.isfinite(t)):
+            raise ValueError("t contains NaN or infinite values")
         Q = q0 + t * self.difference(q0, q1)
         return np.where(self.wraps, _wrap(Q), Q)
 
@@ -221,19 +228,19 @@ def youbot(region=(41.0, 41.0, 6.0)) -> BoxRobot:
     """
     deg = np.pi / 180
     links = [
-        Link((0.5, 0.3, 0.1), (0.0, 0.0, 0.12)),  # base platform, 1.0 x 0.6 x 0.2, 2 cm above the floor
-        Link((0.07, 0.07, 0.075), (0.0, 0.0, 0.075)),  # turret
-        Link((0.04, 0.04, 0.155), (0.0, 0.0, 0.155)),  # upper arm
-        Link((0.035, 0.035, 0.135), (0.0, 0.0, 0.135)),  # forearm
-        Link((0.03, 0.03, 0.05), (0.0, 0.0, 0.05)),  # wrist
-        Link((0.04, 0.08, 0.05), (0.0, 0.0, 0.05)),  # gripper
+        Link((0.75, 0.5, 0.1), (0.0, 0.0, 0.12)),  # base platform, 1.5 x 1.0 x 0.2, 2 cm above the floor
+        Link((0.07, 0.07, 0.06), (0.0, 0.0, 0.06)),  # turret
+        Link((0.04, 0.04, 0.13), (0.0, 0.0, 0.13)),  # upper arm
+        Link((0.035, 0.035, 0.11), (0.0, 0.0, 0.11)),  # forearm
+        Link((0.03, 0.03, 0.045), (0.0, 0.0, 0.045)),  # wrist
+        Link((0.04, 0.08, 0.045), (0.0, 0.0, 0.045)),  # gripper, its top 1.0 above the floor
     ]
     joints = [
-        Joint((0.33, 0.0, 0.22), "z", (-169 * deg, 169 * deg)),
-        Joint((0.0, 0.0, 0.15), "y", (-65 * deg, 90 * deg)),
-        Joint((0.0, 0.0, 0.31), "y", (-150 * deg, 146 * deg)),
-        Joint((0.0, 0.0, 0.27), "y", (-102 * deg, 102 * deg)),
-        Joint((0.0, 0.0, 0.10), "z", (-167 * deg, 167 * deg)),
+        Joint((0.45, 0.0, 0.22), "z", (-169 * deg, 169 * deg)),
+        Joint((0.0, 0.0, 0.12), "y", (-65 * deg, 90 * deg)),
+        Joint((0.0, 0.0, 0.26), "y", (-150 * deg, 146 * deg)),
+        Joint((0.0, 0.0, 0.22), "y", (-102 * deg, 102 * deg)),
+        Joint((0.0, 0.0, 0.09), "z", (-167 * deg, 167 * deg)),
     ]
     region = np.asarray(region, dtype=float)
     return BoxRobot("youbot", "planar", links, joints, position_bounds=(np.zeros(3), region))

@@ -110,7 +110,7 @@ class Workspace:
         missing = {"lower", "upper", "boxes"} - set(data)
         if missing:
             raise ValueError(f"workspace data is missing keys {sorted(missing)}")
-        return cls(np.asarray(data["lower"], float), np.asarray(data["upper"], float), data["boxes"],
+        return cls(data["lower"], data["upper"], data["boxes"],
                    family=data.get("family", ""), labels=tuple(data.get("labels", ())))
 
     def save(self, path: str | Path) -> None:
@@ -133,7 +133,10 @@ class Workspace:
 
 
 def _finite_array(value, name: str, ndim: int | None) -> np.ndarray:
-    array = np.array(value, dtype=float)
+    try:
+        array = np.array(value, dtype=float)
+    except (TypeError, ValueError) as err:  # strings, ragged nesting, None
+        raise ValueError(f"{name} must be an array of numbers: {err}") from err
     if ndim is not None and array.ndim != ndim:
         raise ValueError(f"{name} must be a {ndim}-D array, got shape {array.shape}")
     if not np.all(np.isfinite(array)):

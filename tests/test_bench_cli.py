@@ -1,0 +1,44 @@
+"""`toolkit bench` (issue 2): prints one JSON object with the checkers' throughput (DESIGN.md contract).
+
+Speed targets are measured by the command, never asserted here (no timed unit tests).
+"""
+
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from toolkit import cli
+
+
+def test_bench_prints_one_json_object(capsys):
+    assert cli.main(["bench", "--scenario", "2ds", "--json"]) == 0
+    out = capsys.readouterr().out
+    result = json.loads(out)  # the whole output is one JSON object
+    assert isinstance(result, dict)
+    assert result["scenario"] == "2ds"
+    assert isinstance(result["exact_cfg_per_s"], float) and result["exact_cfg_per_s"] > 0
+    assert result["learned_cfg_per_s"] > 0  # the contract's other two keys
+    assert result["ratio"] == pytest.approx(result["learned_cfg_per_s"] / result["exact_cfg_per_s"])
+
+
+@pytest.mark.parametrize("command", [
+    [sys.executable, "-m", "toolkit"],
+    [str(Path(sys.executable).with_name("toolkit"))],  # the console script installed beside this Python
+])
+def test_bench_from_the_command_line(command):
+    if not Path(command[0]).exists():
+        pytest.skip("console script not installed beside this interpreter")
+    done = subprocess.run(command + ["bench", "--scenario", "2ds", "--json"],
+                          capture_output=True, text=True, timeout=120)
+    assert done.returncode == 0, done.stderr
+    assert json.loads(done.stdout)["exact_cfg_per_s"] > 0
+
+
+def test_bench_refuses_an_unknown_scenario(capsys):
+    with pytest.raises(SystemExit) as exit_info:
+        cli.main(["bench", "--scenario", "4dx", "--json"])
+    assert exit_info.value.code == 2
+    assert "invalid choice: '4dx'" in capsys.readouterr().err
