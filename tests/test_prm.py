@@ -1,0 +1,230 @@
+"""PRM and Algorithm 1: every returned path exactly valid (also with a lying checker), roadmap, queries, CLI."""
+
+import json
+
+import numpy as np
+import pytest
+
+from toolkit import cli, scenarios
+from toolkit.collision import CollisionChecker, exact_checker
+from toolkit.local_planner import check_edges, invalid_fractions, path_is_valid, segment_points
+from toolkit.prm import PRMOptions, plan
+from toolkit.queries import make_queries, run_queries
+from toolkit.roadmap import Roadmap
+from toolkit.sampling import SAMPLERS
+
+
+class NoisyChecker(CollisionChecker):
+    """Test double for a learned checker: the exact answer, flipped for a fixed fraction of configurations."""
+
+    def __init__(self, exact: CollisionChecker, flip: float, seed: int):
+        super().__init__(exact.robot)
+        self.exact, self.flip, self._rng = exact, flip, np.random.default_rng(seed)
+
+    def _are_valid(self, Q):
+        return self.exact._are_valid(Q) ^ (self._rng.random(len(Q)) < self.flip)
+
+
+def overlap_in_box(p0, p1, lo, hi) -> float:
+    """Exact continuous test (Liang-Barsky slabs): the fraction of segment p0 -> p1 inside the closed box [lo, hi]."""
+    t0, t1 = 0.0, 1.0
+    for a, b, l, h in zip(p0, p1, lo, hi):
+        d = b - a
+        if d == 0:
+            if a < l or a > h:
+                return 0.0
+            continue
+        ta, tb = sorted(((l - a) / d, (h - a) / d))
+        t0, t1 = max(t0, ta), min(t1, tb)
+    return max(t1 - t0, 0.0)
+
+
+def longest_hidden_overlap(ws, robot, path) -> float:
+    """The 2D point robot's path against its configuration-space obstacles, continuously: the largest robot
+    motion spent inside an obstacle along one segment (0 for a collision-free path)."""
+    half = robot.half_extents[0]
+    return max(overlap_in_box(p0, p1, lo - half, hi + half) * float(robot.motion_bound(p0, p1))
+               for p0, p1 in zip(path[:-1], path[1:]) for lo, hi in ws.boxes)
+
+
+MODES = {  # name -> (flip fraction of the test double or None for exact, screen_edges)
+    "exact": (None, True),
+    "noisy-screened": (0.15, True),
+    "noisy-paper": (0.15, False),
+}
+
+
+def solve_all(scenario, queries, sampler, mode, n_samples=None):
+    flip, screen = MODES[mode]
+    results = []
+    for i, q in enumerate(queries):
+        exact = exact_checker(q.workspace, scenario.robot)
+        checker = None if flip is None else NoisyChecker(exact, flip, seed=i)
+        options = PRMOptions(n_samples=n_samples or scenario.plan_samples, screen_edges=screen)
+        results.append((q, plan(exact, q.start, q.goal, sampler=sampler, checker=checker, options=options,
+                                rng=np.random.default_rng(i))))
+    return results
+
+
+def assert_paths_valid(scenario, results, continuous=False):
+    for q, result in results:
+        if not result.success:
+            assert len(result.path) == 0
+            continue
+        path = result.path
+        np.testing.assert_array_equal(path[0], q.start)
+        np.testing.assert_array_equal(path[-1], q.goal)
+        fresh = exact_checker(q.workspace, scenario.robot)
+        fine = result.stats["resolution"] / 10  # the planner's verification resolution
+        assert path_is_valid(fresh, path, fine)
+        if continuous:  # checks every `fine` of motion: a collision it misses is shorter than one step
+            assert longest_hidden_overlap(q.workspace, scenario.robot, path) < fine
+
+
+@pytest.mark.parametrize("mode", sorted(MODES))
+@pytest.mark.parametrize("sampler", sorted(SAMPLERS))
+def test_2ds_paths_are_exactly_valid(sampler, mode):
+    scenario = scenarios.get("2ds")
+    queries = make_queries(scenario, seed=0, n_workspaces=2, per_workspace=5)
+    results = solve_all(scenario, queries, sampler, mode)
+    assert_paths_valid(scenario, results, continuous=True)
+    assert np.mean([r.success for _, r in results]) >= 0.8
+    if mode == "noisy-screened":  # the lying checker let invalid samples or edges in: verification removed them
+        assert sum(r.stats["repairs"] for _, r in results) > 0
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("scenario_name", ["3dc7", "3dc9"])
+@pytest.mark.parametrize("mode", sorted(MODES))
+def test_3dc_paths_are_exactly_valid(scenario_name, mode):
+    scenario = scenarios.get(scenario_name)
+    queries = make_queries(scenario, seed=0, n_workspaces=2)
+    for sampler in ("BS", "BT"):
+        results = solve_all(scenario, queries, sampler, mode, n_samples=200)
+        assert_paths_valid(scenario, results)
+        assert all(r.success for _, r in results)
+
+
+def test_exact_baseline_never_repairs_nodes_and_counts_checks():
+    scenario = scenarios.get("2ds")
+    q = make_queries(scenario, seed=1, n_workspaces=1, per_workspace=1)[0]
+    exact = exact_checker(q.workspace, scenario.robot)
+    result = plan(exact, q.start, q.goal, sampler="BS", rng=np.random.default_rng(0))
+    s = result.stats
+    assert result.success and s["removed_nodes"] == 0 and s["predicted_checks"] == 0
+    assert s["exact_checks"] == exact.n_checked
+    assert s["node_checks"] == 200  # plus 2: the start and goal
+    assert s["exact_checks"] == 2 + s["node_checks"] + s["edge_checks"] + s["verify_checks"]
+    assert s["total_s"] >= s["sampling_s"] + s["connection_s"] + s["query_s"]
+    assert s["nodes"] == len(result.roadmap.nodes) and result.roadmap.edges.shape == (s["edges"], 2)
+
+
+def test_same_seed_same_result():
+    scenario = scenarios.get("3dc7")
+    q = make_queries(scenario, seed=0, n_workspaces=1)[0]
+    exact = exact_checker(q.workspace, scenario.robot)
+    runs = [plan(exact, q.start, q.goal, sampler="G", checker=NoisyChecker(exact, 0.1, 7),
+                 options=PRMOptions(n_samples=150), rng=np.random.default_rng(4)) for _ in range(2)]
+    np.testing.assert_array_equal(runs[0].path, runs[1].path)
+    np.testing.assert_array_equal(runs[0].roadmap.edges, runs[1].roadmap.edges)
+    assert runs[0].stats["exact_checks"] == runs[1].stats["exact_checks"]
+
+
+def test_bad_input_gives_clear_errors():
+    scenario = scenarios.get("2ds")
+    q = make_queries(scenario, seed=0, n_workspaces=1, per_workspace=1)[0]
+    exact = exact_checker(q.workspace, scenario.robot)
+    blocked = q.workspace.boxes[0].mean(axis=0)  # the centre of an obstacle
+    with pytest.raises(ValueError, match="start configuration .* in collision"):
+        plan(exact, blocked, q.goal, rng=np.random.default_rng(0))
+    with pytest.raises(ValueError, match="goal must have shape \\(2,\\)"):
+        plan(exact, q.start, np.zeros(3), rng=np.random.default_rng(0))
+    with pytest.raises(ValueError, match="NaN"):
+        plan(exact, q.start, np.array([np.nan, 1.0]), rng=np.random.default_rng(0))
+    with pytest.raises(ValueError, match="unknown sampler"):
+        plan(exact, q.start, q.goal, sampler="RRT", rng=np.random.default_rng(0))
+
+
+# -- local planner and roadmap ----------------------------------------------------------------
+
+def test_check_edges_agrees_with_checking_every_step():
+    scenario = scenarios.get("3dc9")
+    q = make_queries(scenario, seed=0, n_workspaces=1)[0]
+    exact, robot = exact_checker(q.workspace, scenario.robot), scenario.robot
+    rng = np.random.default_rng(0)
+    Q0, Q1 = robot.sample(rng, 60), robot.sample(rng, 60)
+    Q1 = Q0 + 0.05 * robot.difference(Q0, Q1)  # short segments, some valid, some not
+    got = check_edges(exact, Q0, Q1, 0.05)
+    n = np.maximum(np.ceil(robot.motion_bound(Q0, Q1) / 0.05).astype(int), 1)
+    want = [exact.are_valid(segment_points(robot, np.repeat(a[None], k - 1, 0), np.repeat(b[None], k - 1, 0),
+                                           np.arange(1, k) / k)).all() for a, b, k in zip(Q0, Q1, n)]
+    np.testing.assert_array_equal(got, want)
+    assert 0 < got.sum() < len(got)
+    fractions = invalid_fractions(exact, Q0, Q1, 0.05)
+    assert np.all(fractions[got] == 0) and np.all(fractions[~got] > 0)
+
+
+def test_nearest_neighbours_wrap_around_angles():
+    robot = scenarios.get("3dc7").robot
+    roadmap = Roadmap(robot)
+    base = np.array([5.0, 5, 5, 0, 0, 0, 0])
+    far_linear, across_pi, same_side = base.copy(), base.copy(), base.copy()
+    far_linear[0] += 1.0
+    across_pi[3], same_side[3] = np.pi - 0.05, 0.5
+    q = base.copy()
+    q[3] = -np.pi + 0.05
+    roadmap.add_nodes(np.stack([q, far_linear, across_pi, same_side]), verified=True)
+    pairs = roadmap.candidate_edges(np.array([0]), k=1)
+    np.testing.assert_array_equal(pairs, [[0, 2]])  # 0.1 rad away across +-pi, not 6.18
+    np.testing.assert_allclose(roadmap.distance(q, across_pi), 0.1 * robot.motion_weights[3])
+
+
+def test_remove_nodes_keeps_edges_consistent():
+    robot = scenarios.get("2ds").robot
+    roadmap = Roadmap(robot)
+    roadmap.add_nodes(np.array([[1.0, 1], [2, 2], [3, 3], [4, 4]]), verified=True)
+    roadmap.add_edges(np.array([[0, 1], [1, 2], [2, 3], [0, 3]]), np.ones(4), verified=False)
+    roadmap.remove_nodes(np.array([1]))
+    np.testing.assert_array_equal(roadmap.edges, [[1, 2], [0, 2]])
+    np.testing.assert_array_equal(roadmap.nodes[roadmap.shortest_path(0, 1)], [[1, 1], [4, 4], [3, 3]])
+
+
+# -- queries and the command ------------------------------------------------------------------
+
+@pytest.mark.parametrize("name, count", [("2ds", 100), ("3dc7", 100)])
+def test_paper_query_sets_are_valid_and_reproducible(name, count):
+    scenario = scenarios.get(name)
+    queries = make_queries(scenario, seed=0)
+    assert len(queries) == count
+    again = make_queries(scenario, seed=0, n_workspaces=3)
+    for a, b in zip(queries, again):
+        np.testing.assert_array_equal(a.start, b.start)
+        assert a.workspace == b.workspace
+    for q in queries[:: count // 10]:
+        exact = exact_checker(q.workspace, scenario.robot)
+        assert exact.are_valid(np.stack([q.start, q.goal])).all()
+
+
+def test_run_queries_summary_with_a_checker_factory():
+    scenario = scenarios.get("2ds")
+    queries = make_queries(scenario, seed=0, n_workspaces=2, per_workspace=3)
+    built = []
+
+    def factory(ws):
+        built.append(ws)
+        return NoisyChecker(exact_checker(ws, scenario.robot), 0.05, seed=len(built))
+
+    records, summary = run_queries(scenario, queries, "G", checker_factory=factory)
+    assert len(built) == 2 and len(records) == 6
+    assert summary["success_rate"] == 1.0 and summary["path_valid_rate"] == 1.0
+    assert summary["predicted_checks"] > 0 and summary["sampling_s"] <= summary["total_s"]
+    assert summary["total_s_std"] >= 0 and summary["n_queries"] == 6
+
+
+def test_plan_command_prints_json(capsys):
+    assert cli.main(["plan", "--scenario", "2ds", "--sampler", "OB", "--seed", "2", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["success"] is True and len(out["path"]) >= 2
+    assert set(out["workspace"]) >= {"lower", "upper", "boxes"} and out["stats"]["nodes"] > 2
+    assert cli.main(["plan", "--scenario", "2ds", "--predict"]) == 2
+    assert "--checkpoint" in capsys.readouterr().err

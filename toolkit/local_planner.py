@@ -1,0 +1,128 @@
+"""The straight-line local planner (paper §III-B, "Connection and Path Planning").
+
+A segment ``q0 -> q1`` (angles the short way round) is checked at configurations
+spaced so that **no point of the robot moves more than** ``resolution`` **between
+two consecutive checks**: the segment gets ``ceil(robot.motion_bound(q0, q1) /
+resolution)`` steps. The default resolution is half the thickness of the robot's
+thinnest link (``default_resolution``).
+
+Everything is batched over many segments at once. ``check_edges`` visits the
+interior points of all segments coarse-to-fine (odd multiples of 2^k steps, k
+decreasing, like OMPL's ``DiscreteMotionValidator`` bisection order), so a segment
+that collides is usually dropped after a few checks; ``invalid_fractions`` asks
+about every interior point (for screening by prediction); ``last_valid_along``
+walks segments from their start and stops at the first invalid point (for the
+obstacle-based sampler).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .collision import CollisionChecker
+from .robots import BoxRobot
+
+MAX_BATCH = 100_000  # configurations per checker call
+
+
+def default_resolution(robot: BoxRobot) -> float:
+    """Half the thickness of the robot's thinnest link: 0.25 (2D point), 0.03 (youBot), 0.05 (box chains)."""
+    return float(np.min(robot.half_extents))
+
+
+def step_counts(robot: BoxRobot, Q0: np.ndarray, Q1: np.ndarray, resolution: float) -> np.ndarray:
+    """``(E,)`` number of steps of each segment so that no robot point moves more than ``resolution`` per step."""
+    if not resolution > 0:
+        raise ValueError(f"resolution must be positive, got {resolution}")
+    return np.maximum(np.ceil(robot.motion_bound(Q0, Q1) / resolution).astype(int), 1)
+
+
+def wrap(robot: BoxRobot, Q: np.ndarray) -> np.ndarray:
+    """``Q (N, dof)`` with the robot's angles mapped to [-pi, pi)."""
+    return np.where(robot.wraps, (Q + np.pi) % (2 * np.pi) - np.pi, Q)
+
+
+def segment_points(robot: BoxRobot, Q0: np.ndarray, Q1: np.ndarray, t: np.ndarray) -> np.ndarray:
+    """``(P, dof)`` points at fractions ``t (P,)`` along segments ``Q0[p] -> Q1[p]`` (``(P, dof)`` each)."""
+    return wrap(robot, Q0 + t[:, None] * robot.difference(Q0, Q1))
+
+
+def _ragged(counts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """For counts ``(A,)``: owner index and ordinal within its owner of ``sum(counts)`` items."""
+    owner = np.repeat(np.arange(len(counts)), counts)
+    start = np.cumsum(counts) - counts
+    return owner, np.arange(len(owner)) - start[owner]
+
+
+def _are_valid_batched(checker: CollisionChecker, Q: np.ndarray) -> np.ndarray:
+    return np.concatenate([checker.are_valid(Q[i:i + MAX_BATCH]) for i in range(0, len(Q), MAX_BATCH)] or [np.zeros(0, bool)])
+
+
+def check_edges(checker: CollisionChecker, Q0, Q1, resolution: float) -> np.ndarray:
+    """``(E,)`` bool: whether every interior point of each segment is valid (endpoints are not checked)."""
+    robot = checker.robot
+    Q0, Q1 = robot.check_configs(Q0, "Q0"), robot.check_configs(Q1, "Q1")
+    n = step_counts(robot, Q0, Q1, resolution)  # (E,)
+    valid = np.ones(len(n), dtype=bool)
+    stride = 1 << int(np.max(n, initial=1)).bit_length()
+    while stride > 1:
+        stride //= 2
+        active = np.flatnonzero(valid & (n > stride))
+        counts = (n[active] - 1 + stride) // (2 * stride)  # odd multiples of stride below n
+        owner, ordinal = _ragged(counts)
+        edge = active[owner]
+        t = stride * (2 * ordinal + 1) / n[edge]  # (P,)
+        ok = _are_valid_batched(checker, segment_points(robot, Q0[edge], Q1[edge], t))
+        valid[edge[~ok]] = False
+    return valid
+
+
+def invalid_fractions(checker: CollisionChecker, Q0, Q1, resolution: float) -> np.ndarray:
+    """``(E,)`` fraction of each segment's interior points that ``checker`` calls invalid (0 without interior)."""
+    robot = checker.robot
+    Q0, Q1 = robot.check_configs(Q0, "Q0"), robot.check_configs(Q1, "Q1")
+    n = step_counts(robot, Q0, Q1, resolution)  # (E,)
+    edge, ordinal = _ragged(n - 1)
+    ok = _are_valid_batched(checker, segment_points(robot, Q0[edge], Q1[edge], (ordinal + 1) / n[edge]))
+    invalid = np.bincount(edge, weights=~ok, minlength=len(n))
+    return invalid / np.maximum(n - 1, 1)
+
+
+def last_valid_along(checker: CollisionChecker, Q0: np.ndarray, Q1: np.ndarray, resolution: float,
+                     bisections: int = 0, chunk: int = 16) -> np.ndarray:
+    """``(E, dof)``: along each segment from a valid ``Q0[e]``, the last valid point before the first invalid one.
+
+    Walks all segments together, ``chunk`` steps of ``resolution`` at a time; then
+    ``bisections`` halvings of the step that went from valid to invalid bring the
+    point within ``resolution / 2**bisections`` of the boundary. A segment with no
+    invalid point returns ``Q1[e]``.
+    """
+    robot = checker.robot
+    n = step_counts(robot, Q0, Q1, resolution)  # (E,)
+    first_bad = np.full(len(n), -1)  # step index of the first invalid point, -1 while unknown
+    done = 0
+    while np.any((first_bad < 0) & (n > done)):
+        active = np.flatnonzero((first_bad < 0) & (n > done))
+        owner, ordinal = _ragged(np.minimum(n[active] - done, chunk))
+        edge, step = active[owner], done + 1 + ordinal
+        ok = _are_valid_batched(checker, segment_points(robot, Q0[edge], Q1[edge], step / n[edge]))
+        bad_steps = np.full(len(n), np.iinfo(int).max)
+        np.minimum.at(bad_steps, edge[~ok], step[~ok])
+        hit = bad_steps < np.iinfo(int).max
+        first_bad[hit] = bad_steps[hit]
+        done += chunk
+    found = first_bad > 0
+    good = np.where(found, first_bad - 1, n) / n  # (E,) fraction of the last valid point
+    bad = first_bad[found] / n[found]
+    for _ in range(bisections):
+        middle = (good[found] + bad) / 2
+        ok = _are_valid_batched(checker, segment_points(robot, Q0[found], Q1[found], middle))
+        good[found] = np.where(ok, middle, good[found])
+        bad = np.where(ok, bad, middle)
+    return segment_points(robot, Q0, Q1, good)
+
+
+def path_is_valid(checker: CollisionChecker, path, resolution: float) -> bool:
+    """Whether every configuration of ``path (P, dof)`` and every segment between them is valid."""
+    path = checker.robot.check_configs(path, "path")
+    return bool(checker.are_valid(path).all() and check_edges(checker, path[:-1], path[1:], resolution).all())

@@ -1,0 +1,187 @@
+"""PRM with and without prediction: the paper's Algorithm 1 (§III-B), every returned path exactly valid.
+
+``plan(exact, start, goal, sampler=..., checker=...)`` runs:
+
+1. (the learned checker encoded the workspace when it was built: Algorithm 1, line 1);
+2. sample a set S with one of the four samplers, validity decided by ``checker``
+   (the learned one, or ``exact`` itself): S' are the samples it accepts (lines 2-3);
+3. build the roadmap: each new node's k nearest neighbours, straight-line edges (line 4);
+4. connect start and goal (while they lie in different components, also try the k
+   closest pairs between each one's component and the rest); when the roadmap does
+   not join them, sample another S with the same (auxiliary) sampler and repeat (line 4);
+5. extract the cheapest path and **verify** it with the exact checker: its nodes, and
+   its edges at ``resolution / verify_refinement`` (10x finer than the roadmap's
+   edges: shortest paths hug obstacles, and an edge that grazes a corner between two
+   checks at ``resolution`` is caught here); whatever fails is removed from the
+   roadmap and the query repeats (line 5). A returned path is always valid under
+   the exact checker at that resolution; otherwise ``success`` is False.
+
+"With" and "without prediction" differ in the ``checker`` argument only. With
+prediction, edges are decided in one of two ways (``PRMOptions.screen_edges``):
+
+- ``False``: the paper's Algorithm 1 — edges are checked exactly while the roadmap is built;
+- ``True`` (default; beyond the paper, its stated future work): *learned edge
+  screening*, a lazy PRM (Bohlin & Kavraki 2000) — every edge is screened by batched
+  prediction (edges mostly predicted in collision are dropped, the rest cost more the
+  more of them is predicted in collision) and only the candidate path's edges are
+  checked exactly.
+"""
+
+from __future__ import annotations
+
+import time
+from contextlib import contextmanager
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from .collision import CollisionChecker
+from .local_planner import check_edges, default_resolution, invalid_fractions
+from .roadmap import Roadmap
+from .sampling import make_sampler
+
+START, GOAL = 0, 1  # node indices of the query's endpoints (never removed)
+
+
+@dataclass
+class PRMOptions:
+    """Planner settings; ``k`` follows OMPL's PRM, ``n_samples`` the paper's |S| (§V-A)."""
+
+    n_samples: int = 200  # sampler attempts per round (|S|)
+    k: int = 10  # nearest neighbours tried for each new node
+    resolution: float | None = None  # local planner step bound; None: default_resolution(robot)
+    verify_refinement: int = 10  # the returned path's edges are checked exactly at resolution / this
+    max_rounds: int = 20  # sampling rounds before reporting failure
+    screen_edges: bool = True  # with prediction: learned edge screening (lazy PRM); False: the paper's exact edges
+    screen_reject: float = 0.9  # screening drops edges with a larger predicted-invalid fraction
+    screen_penalty: float = 10.0  # screened edge cost = length * (1 + penalty * predicted-invalid fraction)
+    sampler_options: dict = field(default_factory=dict)
+
+
+@dataclass
+class PlanResult:
+    """``success``; ``path (P, dof)`` (empty on failure); ``stats`` (counts, seconds); the final ``roadmap``."""
+
+    success: bool
+    path: np.ndarray
+    stats: dict
+    roadmap: Roadmap
+
+
+def plan(exact: CollisionChecker, start, goal, *, sampler: str = "BS", checker: CollisionChecker | None = None,
+         options: PRMOptions | None = None, rng: np.random.Generator) -> PlanResult:
+    """Solve one query ``start -> goal`` (``(dof,)`` each) with PRM; ``checker`` decides samples (default: ``exact``)."""
+    began = time.perf_counter()
+    options = options or PRMOptions()
+    robot = exact.robot
+    checker = exact if checker is None else checker
+    if checker.robot.dof != robot.dof:
+        raise ValueError(f"checker is for a {checker.robot.dof}-DoF robot, the exact checker for {robot.dof}")
+    endpoints = np.concatenate([_single(robot, start, "start"), _single(robot, goal, "goal")])  # (2, dof)
+    planner = _Planner(exact, checker, options, make_sampler(sampler, checker, **options.sampler_options))
+    for name, ok, q in zip(("start", "goal"), exact.are_valid(endpoints), endpoints):
+        if not ok:
+            raise ValueError(f"{name} configuration {np.round(q, 4).tolist()} is in collision or out of bounds")
+    new = planner.roadmap.add_nodes(endpoints, verified=True)  # START, GOAL
+    path = None
+    while path is None and planner.stats["rounds"] < options.max_rounds:
+        planner.stats["rounds"] += 1
+        with planner.timed("sampling_s", "node_checks"):
+            S_valid = planner.sampler.sample(options.n_samples, rng)  # S' (M, dof)
+        new = np.concatenate([new, planner.roadmap.add_nodes(S_valid, verified=checker is exact)])
+        with planner.timed("connection_s", "edge_checks"):
+            planner.connect(new)
+        new = new[:0]
+        with planner.timed("query_s", "verify_checks"):
+            path = planner.verified_path()
+    stats = planner.finish(began)
+    roadmap = planner.roadmap
+    path_q = roadmap.nodes[path] if path is not None else np.zeros((0, robot.dof))
+    return PlanResult(path is not None, path_q, stats, roadmap)
+
+
+def _single(robot, q, name: str) -> np.ndarray:
+    q = np.asarray(q, dtype=float)
+    if q.shape != (robot.dof,):
+        raise ValueError(f"{name} must have shape ({robot.dof},) for robot {robot.name!r}, got {q.shape}")
+    return robot.check_configs(q, name)
+
+
+class _Planner:
+    """The state of one query: roadmap, checkers, counters and timers."""
+
+    def __init__(self, exact, checker, options: PRMOptions, sampler):
+        self.exact, self.checker, self.options, self.sampler = exact, checker, options, sampler
+        self.predicted = checker is not exact
+        self.resolution = default_resolution(exact.robot) if options.resolution is None else float(options.resolution)
+        self.roadmap = Roadmap(exact.robot)
+        self.stats = {"rounds": 0, "repairs": 0, "removed_nodes": 0, "removed_edges": 0,
+                      "sampling_s": 0.0, "connection_s": 0.0, "query_s": 0.0,
+                      "node_checks": 0, "edge_checks": 0, "verify_checks": 0}
+        self._start_counts = self._counts()
+
+    def _counts(self) -> tuple[int, int]:
+        """Configurations checked so far: (exact, predicted)."""
+        return self.exact.n_checked, self.checker.n_checked if self.predicted else 0
+
+    @contextmanager
+    def timed(self, seconds_key: str, checks_key: str):
+        before, start = sum(self._counts()), time.perf_counter()
+        yield
+        self.stats[seconds_key] += time.perf_counter() - start
+        self.stats[checks_key] += sum(self._counts()) - before
+
+    def connect(self, new: np.ndarray) -> None:
+        """Edges from the new nodes to their k nearest; then, while start and goal lie apart, bridges from their components."""
+        roadmap, k = self.roadmap, self.options.k
+        self.decide(roadmap.candidate_edges(new, k))
+        for end in (START, GOAL):
+            if not roadmap.component(START)[GOAL]:
+                self.decide(roadmap.bridge_edges(end, k))
+
+    def decide(self, pairs: np.ndarray) -> None:
+        """Add the candidate edges ``pairs (C, 2)`` that screening (with prediction) or the exact check accepts."""
+        roadmap, options = self.roadmap, self.options
+        Q0, Q1 = roadmap.nodes[pairs[:, 0]], roadmap.nodes[pairs[:, 1]]
+        length = roadmap.distance(Q0, Q1)  # (C,)
+        if self.predicted and options.screen_edges:
+            fraction = invalid_fractions(self.checker, Q0, Q1, self.resolution)
+            keep = fraction <= options.screen_reject
+            roadmap.add_edges(pairs[keep], length[keep] * (1 + options.screen_penalty * fraction[keep]), verified=False)
+        else:
+            keep = check_edges(self.exact, Q0, Q1, self.resolution)
+            roadmap.add_edges(pairs[keep], length[keep], verified=False)  # the path's are confirmed finer
+
+    def verified_path(self) -> np.ndarray | None:
+        """Node indices of a start-goal path the exact checker confirms, repairing the roadmap; None if none."""
+        roadmap = self.roadmap
+        while (path := roadmap.shortest_path(START, GOAL)) is not None:
+            unsure = path[~roadmap.node_verified[path]]
+            ok = self.exact.are_valid(roadmap.nodes[unsure]) if len(unsure) else np.zeros(0, bool)
+            roadmap.node_verified[unsure[ok]] = True
+            if not ok.all():
+                self._repaired(nodes=len(unsure) - ok.sum())
+                roadmap.remove_nodes(unsure[~ok])
+                continue
+            steps = roadmap.edge_index(path)
+            unsure = steps[~roadmap.edge_verified[steps]]
+            a, b = roadmap.edges[unsure].T
+            ok = check_edges(self.exact, roadmap.nodes[a], roadmap.nodes[b], self.resolution / self.options.verify_refinement)
+            roadmap.edge_verified[unsure[ok]] = True
+            roadmap.edge_cost[unsure[ok]] = roadmap.distance(roadmap.nodes[a[ok]], roadmap.nodes[b[ok]])
+            if ok.all():
+                return path
+            self._repaired(edges=len(unsure) - ok.sum())
+            roadmap.remove_edges(unsure[~ok])
+        return None
+
+    def _repaired(self, nodes: int = 0, edges: int = 0) -> None:
+        self.stats["repairs"] += 1
+        self.stats["removed_nodes"] += int(nodes)
+        self.stats["removed_edges"] += int(edges)
+
+    def finish(self, began: float) -> dict:
+        exact, predicted = np.subtract(self._counts(), self._start_counts)
+        return dict(self.stats, nodes=len(self.roadmap.nodes), edges=len(self.roadmap.edges),
+                    exact_checks=int(exact), predicted_checks=int(predicted), resolution=self.resolution,
+                    total_s=time.perf_counter() - began)

@@ -1,0 +1,133 @@
+"""Planning queries as in the paper (§V-A) and running a sampler over them, with or without prediction.
+
+2DS and 3DO: 10 workspaces x 10 start/goal pairs; 3DC: 100 workspaces x 1 pair
+(``scenario.query_workspaces x scenario.queries_per_workspace``). Workspaces come
+from the ``'query'`` stream of :func:`toolkit.data.workspaces`; starts and goals are
+uniform configurations the exact checker accepts, drawn from a generator derived
+from ``(seed, workspace index)``, and at least a quarter of the region's diagonal
+apart (base positions), so every query means travelling.
+
+``run_queries`` solves each query from scratch (a fresh roadmap, as in the paper)
+and summarizes: mean and std of ``sampling_s`` and ``total_s``, ``success_rate``,
+and ``path_valid_rate``, the fraction of returned paths that a fresh exact checker
+accepts at 10x finer resolution than the local planner's.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+from . import data
+from .collision import CollisionChecker, exact_checker
+from .local_planner import path_is_valid
+from .prm import PlanResult, PRMOptions, plan
+from .scenarios import Scenario
+from .workspace import Workspace
+
+PAIR_STREAM = 1  # appended to the workspace's seed words: the start/goal pairs of query workspace i
+
+
+@dataclass(frozen=True)
+class Query:
+    """One start/goal pair in workspace number ``workspace_index`` of the query stream."""
+
+    workspace_index: int
+    workspace: Workspace
+    start: np.ndarray  # (dof,)
+    goal: np.ndarray  # (dof,)
+
+
+def query_pairs(scenario: Scenario, ws: Workspace, count: int, rng: np.random.Generator,
+                min_separation: float = 0.25) -> list[tuple[np.ndarray, np.ndarray]]:
+    """``count`` (start, goal) pairs valid under the exact checker, base positions ``min_separation`` x diagonal apart."""
+    robot, checker = scenario.robot, exact_checker(ws, scenario.robot)
+    far = min_separation * float(np.linalg.norm(ws.upper - ws.lower))
+    pairs: list[tuple[np.ndarray, np.ndarray]] = []
+    for _ in range(1000):
+        Q = robot.sample(rng, 256)  # (256, dof)
+        Q = Q[checker.are_valid(Q)]
+        for start, goal in zip(Q[0::2], Q[1::2]):
+            if len(pairs) < count and np.linalg.norm(goal[: robot.dim] - start[: robot.dim]) >= far:
+                pairs.append((start, goal))
+        if len(pairs) == count:
+            return pairs
+    raise RuntimeError(f"could not find {count} valid, separated start/goal pairs in this workspace")
+
+
+def make_queries(scenario: Scenario, seed: int = 0, n_workspaces: int | None = None,
+                 per_workspace: int | None = None) -> list[Query]:
+    """The paper's query set (counts default to the scenario's), reproducible from ``seed``."""
+    n_workspaces = scenario.query_workspaces if n_workspaces is None else n_workspaces
+    per_workspace = scenario.queries_per_workspace if per_workspace is None else per_workspace
+    queries = []
+    for i, ws in enumerate(data.workspaces(scenario, "query", n_workspaces, seed)):
+        rng = np.random.default_rng([int(seed), data.STREAMS["query"], i, PAIR_STREAM])
+        queries += [Query(i, ws, start, goal) for start, goal in query_pairs(scenario, ws, per_workspace, rng)]
+    return queries
+
+
+def solve_query(scenario: Scenario, query: Query, sampler: str, checker: CollisionChecker | None = None,
+                options: PRMOptions | None = None, seed=0) -> PlanResult:
+    """One query with ``sampler``; ``checker`` decides samples (None: the exact checker), paper's |S| by default."""
+    options = options or PRMOptions(n_samples=scenario.plan_samples)
+    return plan(exact_checker(query.workspace, scenario.robot), query.start, query.goal, sampler=sampler,
+                checker=checker, options=options, rng=np.random.default_rng(seed))
+
+
+def run_queries(scenario: Scenario, queries: list[Query], sampler: str,
+                checker_factory: Callable[[Workspace], CollisionChecker] | None = None,
+                options: PRMOptions | None = None, seed: int = 0) -> tuple[list[dict], dict]:
+    """Solve every query with ``sampler``; ``checker_factory(workspace)`` gives the learned checker (None: exact).
+
+    The factory runs once per workspace (it encodes the workspace: Algorithm 1,
+    line 1); its time is shared among that workspace's queries and counted in their
+    ``total_s``. Returns per-query records and the summary.
+    """
+    options = options or PRMOptions(n_samples=scenario.plan_samples)
+    records, checkers = [], {}
+    share = np.bincount([q.workspace_index for q in queries])  # queries per workspace
+    for n, query in enumerate(queries):
+        encode_s = 0.0
+        if checker_factory is not None and query.workspace_index not in checkers:
+            began = time.perf_counter()
+            checkers[query.workspace_index] = checker_factory(query.workspace)
+            encode_s = (time.perf_counter() - began) / share[query.workspace_index]
+        checker = checkers.get(query.workspace_index)
+        result = solve_query(scenario, query, sampler, checker, options, seed=[int(seed), n])
+        fine = result.stats["resolution"] / 10
+        valid = result.success and path_is_valid(exact_checker(query.workspace, scenario.robot), result.path, fine)
+        records.append(dict(result.stats, workspace=query.workspace_index, success=result.success,
+                            path_valid=bool(valid), encode_s=encode_s, total_s=result.stats["total_s"] + encode_s))
+    return records, summarize(records)
+
+
+def summarize(records: list[dict]) -> dict:
+    """Means and stds over queries of the times; success and path-validity rates in [0, 1]."""
+    def values(key):
+        return np.array([r[key] for r in records], dtype=float)
+
+    summary = {"n_queries": len(records)}
+    for key in ("sampling_s", "connection_s", "query_s", "total_s", "encode_s", "exact_checks", "predicted_checks"):
+        summary[key] = float(values(key).mean()) if records else 0.0
+        summary[key + "_std"] = float(values(key).std()) if records else 0.0
+    solved = [r for r in records if r["success"]]
+    summary["success_rate"] = len(solved) / len(records) if records else 0.0
+    summary["path_valid_rate"] = float(np.mean([r["path_valid"] for r in solved])) if solved else 1.0
+    return summary
+
+
+def compare_prediction(scenario: Scenario, queries: list[Query], checker_factory: Callable[[Workspace], CollisionChecker],
+                       samplers=("BS", "OB", "G", "BT"), options: PRMOptions | None = None, seed: int = 0) -> dict:
+    """Per sampler: ``{"without": summary, "with": summary, "sampling_ratio", "total_ratio"}`` (with / without)."""
+    table = {}
+    for sampler in samplers:
+        _, without = run_queries(scenario, queries, sampler, options=options, seed=seed)
+        _, with_ = run_queries(scenario, queries, sampler, checker_factory, options=options, seed=seed)
+        table[sampler] = {"without": without, "with": with_,
+                          "sampling_ratio": with_["sampling_s"] / max(without["sampling_s"], 1e-12),
+                          "total_ratio": with_["total_s"] / max(without["total_s"], 1e-12)}
+    return table

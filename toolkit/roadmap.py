@@ -1,0 +1,133 @@
+"""A probabilistic roadmap: nodes, edges, k-nearest candidates and shortest paths (Kavraki et al. 1996).
+
+Distances are ``||w * difference(q0, q1)||`` with ``w = robot.motion_weights``: a
+rotation counts by how far it can move the robot, and angles wrap around. The
+k-nearest search is a ``scipy.spatial.cKDTree`` on the scaled configurations with a
+periodic box along the angle axes (``boxsize``), so it is exact under that metric.
+
+Every node and edge remembers whether the exact checker has confirmed it
+(``node_verified``; ``edge_verified`` at the planner's verification resolution);
+the planner (:mod:`toolkit.prm`) confirms a path's nodes and edges before it returns it.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from scipy.sparse import csr_matrix
+from scipy.sparse.csgraph import connected_components, dijkstra
+from scipy.spatial import cKDTree
+
+from .robots import BoxRobot
+
+
+class Roadmap:
+    """``nodes (V, dof)``, ``edges (E, 2)`` int (i < j), ``edge_cost (E,)`` and the verified flags."""
+
+    def __init__(self, robot: BoxRobot):
+        self.robot = robot
+        self.nodes = np.zeros((0, robot.dof))
+        self.node_verified = np.zeros(0, dtype=bool)
+        self.edges = np.zeros((0, 2), dtype=int)
+        self.edge_cost = np.zeros(0)
+        self.edge_verified = np.zeros(0, dtype=bool)
+        self._box = np.where(robot.wraps, 2 * np.pi * robot.motion_weights, 0.0)  # (dof,) period per axis, 0: none
+
+    def __repr__(self) -> str:
+        return f"Roadmap({len(self.nodes)} nodes, {len(self.edges)} edges)"
+
+    def distance(self, Q0, Q1) -> np.ndarray:
+        """``(N,)`` weighted distance with angles the short way round."""
+        return np.linalg.norm(self.robot.difference(Q0, Q1) * self.robot.motion_weights, axis=-1)
+
+    def add_nodes(self, Q: np.ndarray, verified: bool) -> np.ndarray:
+        """Append ``Q (N, dof)``; returns their indices ``(N,)``."""
+        first = len(self.nodes)
+        self.nodes = np.concatenate([self.nodes, Q])
+        self.node_verified = np.concatenate([self.node_verified, np.full(len(Q), verified)])
+        return np.arange(first, len(self.nodes))
+
+    def _scaled(self) -> np.ndarray:
+        """``(V, dof)`` nodes scaled by the motion weights, angles shifted into ``[0, boxsize)`` for the KD-tree."""
+        scaled = self.nodes * self.robot.motion_weights  # (V, dof)
+        periodic = self._box > 0
+        shifted = np.mod(scaled[:, periodic] + np.pi * self.robot.motion_weights[periodic], self._box[periodic])
+        scaled[:, periodic] = np.where(shifted >= self._box[periodic], 0.0, shifted)
+        return scaled
+
+    def candidate_edges(self, new: np.ndarray, k: int) -> np.ndarray:
+        """``(C, 2)`` pairs ``i < j``: each node of ``new`` with its ``k`` nearest other nodes, no duplicates."""
+        if len(self.nodes) < 2 or len(new) == 0:
+            return np.zeros((0, 2), dtype=int)
+        scaled = self._scaled()
+        count = min(k + 1, len(self.nodes))
+        _, near = cKDTree(scaled, boxsize=self._box).query(scaled[new], k=count)  # (N, count), nearest first
+        pairs = np.stack(np.broadcast_arrays(new[:, None], near.reshape(len(new), count)), axis=-1).reshape(-1, 2)
+        return self._new_pairs(pairs)
+
+    def bridge_edges(self, node: int, k: int) -> np.ndarray:
+        """``(C, 2)``: the ``k`` closest pairs joining ``node``'s connected component to the rest of the roadmap.
+
+        k-nearest graphs of clustered samples (OB, G, BT gather around obstacles) fall
+        apart into one component per cluster; trying the closest pairs between the
+        query's component and the others joins them (a connected-component
+        connection strategy, as in Morales et al.'s PRM toolkit, restricted to the query).
+        """
+        inside = self.component(node)
+        if inside.all():
+            return np.zeros((0, 2), dtype=int)
+        scaled, outside = self._scaled(), np.flatnonzero(~inside)
+        members = np.flatnonzero(inside)
+        gap, nearest = cKDTree(scaled[outside], boxsize=self._box).query(scaled[members], k=1)  # (M,) each
+        best = np.argsort(gap)[:k]
+        return self._new_pairs(np.stack([members[best], outside[nearest[best]]], axis=1))
+
+    def component(self, node: int) -> np.ndarray:
+        """``(V,)`` bool: the nodes connected to ``node``."""
+        v = len(self.nodes)
+        graph = csr_matrix((np.ones(len(self.edges)), (self.edges[:, 0], self.edges[:, 1])), shape=(v, v))
+        _, label = connected_components(graph, directed=False)
+        return label == label[node]
+
+    def _new_pairs(self, pairs: np.ndarray) -> np.ndarray:
+        """``pairs (C, 2)`` as unique ``i < j`` pairs, without self-loops and edges already present."""
+        pairs = np.unique(np.sort(pairs[pairs[:, 0] != pairs[:, 1]], axis=1), axis=0).reshape(-1, 2)
+        v = len(self.nodes)
+        return pairs[~np.isin(pairs @ [v, 1], self.edges @ [v, 1])]
+
+    def add_edges(self, pairs: np.ndarray, cost: np.ndarray, verified: bool) -> None:
+        self.edges = np.concatenate([self.edges, pairs])
+        self.edge_cost = np.concatenate([self.edge_cost, cost])
+        self.edge_verified = np.concatenate([self.edge_verified, np.full(len(pairs), verified)])
+
+    def remove_edges(self, which: np.ndarray) -> None:
+        """Drop the edges selected by ``which`` (indices or a boolean mask)."""
+        keep = np.ones(len(self.edges), dtype=bool)
+        keep[which] = False
+        self.edges, self.edge_cost, self.edge_verified = self.edges[keep], self.edge_cost[keep], self.edge_verified[keep]
+
+    def remove_nodes(self, which: np.ndarray) -> None:
+        """Drop nodes ``which`` (indices) and their edges; later nodes shift down (earlier ones keep their index)."""
+        keep = np.ones(len(self.nodes), dtype=bool)
+        keep[which] = False
+        self.remove_edges(~keep[self.edges].all(axis=1))
+        new_index = np.cumsum(keep) - 1  # (V,) old index -> new index for kept nodes
+        self.edges = new_index[self.edges]
+        self.nodes, self.node_verified = self.nodes[keep], self.node_verified[keep]
+
+    def shortest_path(self, source: int, target: int) -> np.ndarray | None:
+        """Node indices ``(P,)`` of the cheapest path (Dijkstra on ``edge_cost``), or None when disconnected."""
+        v = len(self.nodes)
+        cost = np.maximum(self.edge_cost, 1e-12)  # sparse graphs treat 0 as "no edge"
+        graph = csr_matrix((cost, (self.edges[:, 0], self.edges[:, 1])), shape=(v, v))
+        _, previous = dijkstra(graph, directed=False, indices=source, return_predecessors=True)
+        if source != target and previous[target] < 0:
+            return None
+        path = [target]
+        while path[-1] != source:
+            path.append(previous[path[-1]])
+        return np.array(path[::-1])
+
+    def edge_index(self, path: np.ndarray) -> np.ndarray:
+        """``(P-1,)`` index into ``edges`` of each step of a node path."""
+        lookup = {(int(i), int(j)): e for e, (i, j) in enumerate(self.edges)}
+        return np.array([lookup[(min(a, b), max(a, b))] for a, b in zip(path[:-1], path[1:])], dtype=int)

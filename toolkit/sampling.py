@@ -1,0 +1,138 @@
+"""The paper's four samplers (§III-B "Sample Generation"), each over any collision checker.
+
+- ``BS`` uniform (Kavraki et al. 1996): uniform configurations the checker accepts.
+- ``OB`` obstacle-based (Amato et al. 1998), as OMPL's ``ObstacleBasedValidStateSampler``:
+  pair an invalid with a valid configuration and return the last valid state on the
+  segment from the valid one towards the invalid one, next to an obstacle boundary.
+- ``G`` Gaussian (Boor et al. 1999): ``q1`` uniform, ``q2 ~ N(q1, sigma^2 I)``; keep
+  whichever of the two is valid when exactly one is.
+- ``BT`` bridge test (Hsu et al. 2003): two invalid configurations at Gaussian
+  distance; keep their midpoint when it is valid.
+
+Every sampler asks its checker about whole batches. ``sample(n_attempts, rng)``
+runs ``n_attempts`` independent attempts (one attempt yields at most one sample)
+and returns the ``(M, dof)`` samples, ``M <= n_attempts``. Configurations outside
+the robot's bounds count as invalid without asking the checker (the bounds act as
+walls). Defaults follow OMPL: ``sigma = 0.1 x`` the diagonal of the bounds (OMPL's
+``STD_DEV_AS_SPACE_EXTENT_FRACTION``); OB walks in steps of 1 % of that diagonal (OMPL's longest valid segment).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .collision import CollisionChecker
+from .local_planner import last_valid_along, segment_points, wrap
+
+
+class Sampler:
+    """Base class: holds the checker; ``sample(n_attempts, rng) -> (M, dof)`` valid configurations."""
+
+    def __init__(self, checker: CollisionChecker):
+        self.checker = checker
+        self.robot = checker.robot
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}({self.robot.name!r})"
+
+    def sample(self, n_attempts: int, rng: np.random.Generator) -> np.ndarray:
+        if int(n_attempts) != n_attempts or n_attempts < 0:
+            raise ValueError(f"n_attempts must be a non-negative integer, got {n_attempts!r}")
+        return self._sample(int(n_attempts), rng)
+
+    def _sample(self, n: int, rng: np.random.Generator) -> np.ndarray:
+        raise NotImplementedError
+
+    def _valid(self, Q: np.ndarray) -> np.ndarray:
+        """``(N,)`` validity: outside the bounds is invalid, the checker decides the rest (one batch)."""
+        valid = self.robot.in_bounds(Q)
+        if valid.any():
+            valid[valid] = self.checker.are_valid(Q[valid])
+        return valid
+
+
+class _NearSampler(Sampler):
+    """A sampler that draws Gaussian neighbours with standard deviation ``sigma`` (scalar or ``(dof,)``)."""
+
+    def __init__(self, checker: CollisionChecker, sigma=None):
+        super().__init__(checker)
+        diagonal = float(np.linalg.norm(self.robot.upper - self.robot.lower))
+        sigma = 0.1 * diagonal if sigma is None else sigma
+        self.sigma = np.broadcast_to(np.asarray(sigma, dtype=float), (self.robot.dof,))
+        if not np.all(np.isfinite(self.sigma) & (self.sigma > 0)):
+            raise ValueError(f"sigma must be positive and finite, got {sigma!r}")
+
+    def _near(self, Q: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+        """``(N, dof)`` Gaussian neighbours of ``Q``, angles wrapped."""
+        return wrap(self.robot, Q + rng.normal(0.0, self.sigma, size=Q.shape))
+
+
+class UniformSampler(Sampler):
+    """BS: uniform samples that the checker accepts."""
+
+    def _sample(self, n, rng):
+        Q = self.robot.sample(rng, n)  # (n, dof)
+        return Q[self._valid(Q)]
+
+
+class ObstacleBasedSampler(Sampler):
+    """OB: per attempt two uniform draws; a (valid, invalid) pair gives the last valid state towards the invalid one.
+
+    The walk takes steps of ``resolution`` (default: 1 % of the bounds' diagonal, OMPL's
+    longest valid segment), so a sample lies within one step of the boundary, as in
+    OMPL; ``bisections`` halvings of that step bring it closer (samples that hug the
+    boundary connect badly around convex corners, hence the default 0).
+    """
+
+    def __init__(self, checker: CollisionChecker, resolution: float | None = None, bisections: int = 0):
+        super().__init__(checker)
+        self.resolution = 0.01 * float(np.linalg.norm(self.robot.upper - self.robot.lower)) if resolution is None else float(resolution)
+        self.bisections = int(bisections)
+
+    def _sample(self, n, rng):
+        Q = self.robot.sample(rng, 2 * n)  # (2n, dof)
+        valid = self._valid(Q)
+        pairs = min(n, int(valid.sum()), int((~valid).sum()))
+        free, blocked = Q[valid][:pairs], Q[~valid][:pairs]
+        return last_valid_along(self.checker, free, blocked, self.resolution, self.bisections)
+
+
+class GaussianSampler(_NearSampler):
+    """G: a uniform ``q1`` and ``q2 ~ N(q1, sigma)``; keep the valid one of a pair with exactly one valid."""
+
+    def _sample(self, n, rng):
+        Q1 = self.robot.sample(rng, n)  # (n, dof)
+        Q2 = self._near(Q1, rng)
+        valid = self._valid(np.concatenate([Q1, Q2])).reshape(2, n)
+        one = valid[0] != valid[1]
+        return np.where(valid[0, one, None], Q1[one], Q2[one])
+
+
+class BridgeTestSampler(_NearSampler):
+    """BT: an invalid uniform ``q1``, an invalid ``q2 ~ N(q1, sigma)``; keep the midpoint when valid."""
+
+    def _sample(self, n, rng):
+        Q1 = self.robot.sample(rng, n)  # (n, dof)
+        Q2 = self._near(Q1, rng)
+        blocked = np.flatnonzero(~self._valid(Q1))
+        blocked = blocked[~self._valid(Q2[blocked])]  # both ends invalid
+        middle = segment_points(self.robot, Q1[blocked], Q2[blocked], np.full(len(blocked), 0.5))
+        return middle[self._valid(middle)]
+
+
+SAMPLERS: dict[str, type[Sampler]] = {
+    "BS": UniformSampler,
+    "OB": ObstacleBasedSampler,
+    "G": GaussianSampler,
+    "BT": BridgeTestSampler,
+}
+
+
+def make_sampler(name: str, checker: CollisionChecker, **options) -> Sampler:
+    """The sampler called ``name`` ('BS', 'OB', 'G' or 'BT') over ``checker``; ``options`` go to its constructor."""
+    if name not in SAMPLERS:
+        raise ValueError(f"unknown sampler {name!r}; choose one of {sorted(SAMPLERS)}")
+    try:
+        return SAMPLERS[name](checker, **options)
+    except TypeError as err:
+        raise ValueError(f"bad options {sorted(options)} for sampler {name!r}: {err}") from None
