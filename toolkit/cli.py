@@ -7,6 +7,7 @@ computes what the library does not also offer from Python.
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import json
 import sys
 
@@ -19,17 +20,49 @@ def cmd_bench(args: argparse.Namespace) -> int:
     from . import bench
 
     scenario = scenarios.get(args.scenario)
-    result = {"scenario": scenario.name, "exact_cfg_per_s": bench.exact_throughput(scenario, seed=args.seed)}
+    result = {"scenario": scenario.name, "exact_cfg_per_s": bench.exact_throughput(scenario, seed=args.seed),
+              "learned_cfg_per_s": bench.learned_throughput(scenario, args.preset, seed=args.seed)}
+    result["ratio"] = result["learned_cfg_per_s"] / result["exact_cfg_per_s"]
     print(json.dumps(result) if args.json else "\n".join(f"{k}: {v}" for k, v in result.items()))
     return 0
 
 
 def cmd_train(args: argparse.Namespace) -> int:
-    raise NotImplementedError("toolkit train: being written (learning issue)")
+    from . import checkpoints, presets, training
+
+    preset = presets.get(args.preset)
+    overrides = {k: v for k, v in (("cae_epochs", args.cae_epochs), ("mlp_epochs", args.mlp_epochs)) if v is not None}
+    preset = dataclasses.replace(preset.quick_version() if args.quick else preset, **overrides)
+    splits = training.preset_splits(args.scenario, preset, args.seed, quick=args.quick)
+    models = training.train_models(args.scenario, preset, splits, args.seed, device=args.device)
+    scores = training.evaluate(models, splits)
+    folder = checkpoints.save_checkpoint(models, args.out, evaluation=scores)
+    print(json.dumps({"checkpoint": str(folder), "threshold": models.threshold, **scores}))
+    return 0
 
 
 def cmd_plan(args: argparse.Namespace) -> int:
-    raise NotImplementedError("toolkit plan: being written (planning issue)")
+    from . import queries
+
+    if args.predict and not args.checkpoint:
+        raise ValueError("--predict needs --checkpoint DIR (a folder written by `toolkit train`)")
+    scenario = scenarios.get(args.scenario)
+    query = queries.make_queries(scenario, args.seed, n_workspaces=1, per_workspace=1)[0]
+    checker = None
+    if args.predict:
+        from . import learned
+
+        checker = learned.load_checker(args.checkpoint, query.workspace)
+    result = queries.solve_query(scenario, query, args.sampler, checker, seed=args.seed)
+    out = {"scenario": scenario.name, "sampler": args.sampler, "predict": args.predict, "seed": args.seed,
+           "success": result.success, "path": result.path.tolist(), "stats": result.stats,
+           "start": query.start.tolist(), "goal": query.goal.tolist(), "workspace": query.workspace.to_dict()}
+    if args.json:
+        print(json.dumps(out))
+    else:
+        print(f"{'solved' if result.success else 'no path'}: {len(result.path)} configurations, "
+              f"{result.stats['nodes']} nodes, {result.stats['edges']} edges, {result.stats['total_s']:.3f} s")
+    return 0
 
 
 def cmd_view(args: argparse.Namespace) -> int:
@@ -37,7 +70,16 @@ def cmd_view(args: argparse.Namespace) -> int:
 
 
 def cmd_reproduce(args: argparse.Namespace) -> int:
-    raise NotImplementedError("toolkit reproduce: being written (reproduction issue)")
+    from . import experiments
+
+    names = SCENARIO_NAMES if args.scenario == "all" else [args.scenario]
+    if len(names) == 1:
+        experiments.reproduce(names[0], args.preset, args.quick, args.seed, args.out)
+    else:
+        experiments.reproduce_many(names, args.preset, args.quick, args.seed, args.out)
+    print(f"wrote {args.out}/tables.md and results.json; the tables:\n")
+    print(open(f"{args.out}/tables.md").read())
+    return 0
 
 
 def build_parser() -> argparse.ArgumentParser:
@@ -48,6 +90,8 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--scenario", choices=SCENARIO_NAMES, required=True)
     bench.add_argument("--seed", type=int, default=0)
     bench.add_argument("--json", action="store_true", help="print one JSON object")
+    bench.add_argument("--preset", choices=["paper", "strong"], default="paper",
+                       help="networks whose learned throughput is measured (untrained: speed does not depend on weights)")
     bench.set_defaults(func=cmd_bench)
 
     # -- train (learning issue) --
@@ -56,6 +100,10 @@ def build_parser() -> argparse.ArgumentParser:
     train.add_argument("--preset", choices=["paper", "strong"], default="paper")
     train.add_argument("--seed", type=int, default=0)
     train.add_argument("--out", required=True, help="checkpoint folder to write")
+    train.add_argument("--quick", action="store_true", help="few workspaces and epochs: seconds, for trying things out")
+    train.add_argument("--device", default=None, help="torch device (default: cuda when available, else cpu)")
+    train.add_argument("--cae-epochs", type=int, help="override the preset's CAE epochs")
+    train.add_argument("--mlp-epochs", type=int, help="override the preset's MLP epochs")
     train.set_defaults(func=cmd_train)
 
     # -- plan (planning issue) --

@@ -1,0 +1,87 @@
+"""The learned checker: same interface as the exact one, agreement with it, bounds, thresholds, bad input."""
+
+import json
+
+import numpy as np
+import pytest
+
+from toolkit import checkpoints, cli, data, scenarios, training
+from toolkit.collision import CollisionChecker, exact_checker
+from toolkit.learned import LearnedChecker, load_checker
+
+SCENARIO = scenarios.get("2ds")
+
+
+@pytest.fixture(scope="module")
+def models():
+    splits = training.preset_splits(SCENARIO, "strong", seed=0, quick=True, progress=False)
+    return training.train_models(SCENARIO, "strong", splits, seed=0, progress=False, quick=True, device="cpu")
+
+
+@pytest.fixture(scope="module")
+def workspace():
+    return data.workspaces(SCENARIO, "query", 1, seed=0)[0]
+
+
+def test_agrees_with_the_exact_checker(models, workspace, rng):
+    checker, exact = LearnedChecker(workspace, models), exact_checker(workspace, SCENARIO.robot)
+    assert isinstance(checker, CollisionChecker)
+    Q = SCENARIO.robot.sample(rng, 5000)
+    valid = exact.are_valid(Q)
+    predicted = checker.are_valid(Q)
+    assert np.mean(predicted == valid) > 0.9
+    assert np.mean(predicted[valid]) > 0.9 and np.mean(~predicted[~valid]) > 0.7  # TPR, TNR on uniform samples
+    assert checker.n_checked == 5000
+
+
+def test_probability_and_threshold(models, workspace, rng):
+    checker = LearnedChecker(workspace, models, threshold=0.5)
+    Q = SCENARIO.robot.sample(rng, 1000)
+    p = checker.probability(Q)
+    assert p.shape == (1000,) and np.all((p >= 0) & (p <= 1))
+    assert np.array_equal(checker.are_valid(Q), p >= 0.5)
+    checker.threshold = 0.9
+    assert np.array_equal(checker.are_valid(Q), p >= 0.9)
+    assert checker.is_valid(Q[0]) == (p[0] >= 0.9)
+    with pytest.raises(ValueError, match="threshold"):
+        checker.threshold = 1.5
+
+
+def test_default_threshold_is_the_models(models, workspace):
+    assert LearnedChecker(workspace, models).threshold == models.threshold
+
+
+def test_outside_the_bounds_is_invalid(models, workspace):
+    checker = LearnedChecker(workspace, models, threshold=0.0)  # would accept anything inside
+    Q = np.array([[-3.0, 10.0], [15.0, 40.0], [15.0, 15.0]])
+    assert checker.are_valid(Q).tolist() == [False, False, True]
+    assert checker.probability(Q)[:2].tolist() == [0.0, 0.0]
+
+
+@pytest.mark.parametrize("Q", [np.zeros((4, 3)), np.zeros((2, 2, 2)), np.array([[1.0, np.nan]])])
+def test_bad_configurations(models, workspace, Q):
+    checker = LearnedChecker(workspace, models)
+    with pytest.raises(ValueError):
+        checker.are_valid(Q)
+    with pytest.raises(ValueError):
+        checker.probability(Q)
+
+
+def test_workspace_of_another_scenario(models):
+    other = data.workspaces(scenarios.get("3dc7"), "query", 1, seed=0)[0]
+    with pytest.raises(ValueError, match="does not fit scenario '2ds'"):
+        LearnedChecker(other, models)
+
+
+def test_load_checker(models, workspace, tmp_path, rng):
+    checkpoints.save_checkpoint(models, tmp_path)
+    loaded, direct = load_checker(tmp_path, workspace), LearnedChecker(workspace, models)
+    Q = SCENARIO.robot.sample(rng, 200)
+    assert np.array_equal(loaded.probability(Q), direct.probability(Q))
+
+
+def test_bench_json(capsys):
+    assert cli.main(["bench", "--scenario", "2ds", "--json"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert result["learned_cfg_per_s"] > 0 and result["exact_cfg_per_s"] > 0
+    assert result["ratio"] == pytest.approx(result["learned_cfg_per_s"] / result["exact_cfg_per_s"])

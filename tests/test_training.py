@@ -1,0 +1,144 @@
+"""Training: metrics against hand counts, determinism, evaluation keys, checkpoints and bad checkpoints."""
+
+import json
+from dataclasses import replace
+
+import numpy as np
+import pytest
+import torch
+
+from toolkit import checkpoints, cli, metrics, presets, training
+
+TINY = replace(presets.get("strong").quick_version(), cae_epochs=1, mlp_epochs=2)  # enough to tell seeds apart
+
+
+@pytest.fixture(scope="module")
+def quick_2ds():
+    splits = training.preset_splits("2ds", "strong", seed=0, quick=True, progress=False)
+    models = training.train_models("2ds", "strong", splits, seed=0, progress=False, quick=True, device="cpu")
+    return splits, models
+
+
+def test_classification_metrics_by_hand():
+    truth = np.array([True, True, True, False, False])
+    pred = np.array([True, False, True, False, True])
+    assert metrics.classification(pred, truth) == pytest.approx({"acc": 3 / 5, "tpr": 2 / 3, "tnr": 1 / 2})
+
+
+def test_classification_metrics_reject_bad_shapes():
+    with pytest.raises(ValueError, match="predictions"):
+        metrics.classification(np.ones(3, bool), np.ones(4, bool))
+
+
+def test_reconstruction_accuracy_by_hand():
+    grids = np.array([[[1.0, -1.0], [-1.0, -1.0]], [[1.0, 1.0], [-1.0, 1.0]]])
+    recon = np.array([[[0.3, -0.2], [0.1, -5.0]], [[-0.1, 2.0], [-1.0, 1.0]]])
+    assert metrics.reconstruction_accuracy(recon, grids) == pytest.approx([0.75, 0.75])
+
+
+def test_unknown_preset():
+    with pytest.raises(ValueError, match="unknown preset"):
+        presets.get("huge")
+
+
+def test_splits_follow_the_preset():
+    splits = training.preset_splits("2ds", "paper", quick=True, progress=False)
+    assert splits["train"].configs.shape == (8, 100, 2)  # paper: 100 samples per 2DS workspace
+    assert len(training.preset_splits("2ds", "strong", quick=True, progress=False)["train"]) == 8 * 400
+
+
+def test_quick_strong_2ds_learns(quick_2ds):
+    splits, models = quick_2ds
+    scores = training.evaluate(models, splits)
+    assert set(scores) == {"cae", "mlp"} and set(scores["cae"]) == {"seen_acc", "unseen_acc"}
+    assert set(scores["mlp"]["unseen"]) == {"acc", "tpr", "tnr"}
+    assert scores["mlp"]["unseen"]["acc"] > 0.85  # balanced test set: chance is 0.5
+    assert models.history["mlp"][-1] < models.history["mlp"][0]
+    assert 0.05 <= models.threshold <= 0.95
+
+
+def test_same_seed_same_models(quick_2ds):
+    splits = quick_2ds[0]
+    first, again, other = (training.train_models("2ds", TINY, splits, seed, progress=False, device="cpu") for seed in (0, 0, 1))
+    state, same, different = (m.predictor.state_dict() for m in (first, again, other))
+    assert all(torch.equal(state[k], same[k]) for k in state)
+    assert not torch.equal(state["mlp.net.0.weight"], different["mlp.net.0.weight"])
+
+
+def test_paper_preset_trains():
+    splits = training.preset_splits("3dc7", "paper", quick=True, progress=False)
+    tiny = replace(presets.get("paper"), cae_epochs=1, mlp_epochs=2)
+    models = training.train_models("3dc7", tiny, splits, progress=False, device="cpu")
+    assert models.threshold == 0.5 and np.all(np.isfinite(models.history["cae"] + models.history["mlp"]))
+    assert isinstance(models.predictor.mlp.net[0], torch.nn.Linear) and models.predictor.mlp.in_features == 57
+
+
+def test_training_split_of_another_scenario(quick_2ds):
+    with pytest.raises(ValueError, match="'2ds' data, not '3dc7'"):
+        training.train_models("3dc7", "paper", quick_2ds[0], progress=False, quick=True)
+
+
+def test_calibrated_threshold_is_best_on_its_data(quick_2ds):
+    splits, models = quick_2ds
+    data = splits["seen_test"]
+    t = training.calibrate_threshold(models.predictor, data)
+    p = training.probabilities(models.predictor, data)
+    acc = lambda threshold: np.mean((p >= threshold) == data.valid)
+    assert all(acc(t) >= acc(other) for other in training.CALIBRATION_THRESHOLDS)
+
+
+# -- checkpoints -------------------------------------------------------------------
+
+def test_checkpoint_round_trip(quick_2ds, tmp_path):
+    splits, models = quick_2ds
+    checkpoints.save_checkpoint(models, tmp_path, evaluation={"x": 1})
+    loaded = checkpoints.load_models(tmp_path, scenario="2ds")
+    data = splits["unseen_test"]
+    assert np.array_equal(training.probabilities(loaded.predictor, data), training.probabilities(models.predictor, data))
+    assert loaded.threshold == models.threshold and loaded.preset == models.preset
+    meta = json.loads((tmp_path / "meta.json").read_text())
+    assert meta["scenario"] == "2ds" and meta["versions"]["torch"] == torch.__version__ and meta["evaluation"] == {"x": 1}
+
+
+def test_checkpoint_of_another_scenario(quick_2ds, tmp_path):
+    checkpoints.save_checkpoint(quick_2ds[1], tmp_path)
+    with pytest.raises(ValueError, match="trained for scenario '2ds', not '3do'"):
+        checkpoints.load_models(tmp_path, scenario="3do")
+
+
+@pytest.mark.parametrize("damage", ["truncate", "garbage", "no_weights", "no_meta", "bad_meta", "wrong_sizes"])
+def test_damaged_checkpoint(quick_2ds, tmp_path, damage):
+    checkpoints.save_checkpoint(quick_2ds[1], tmp_path)
+    weights, meta = tmp_path / "weights.pt", tmp_path / "meta.json"
+    if damage == "truncate":
+        weights.write_bytes(weights.read_bytes()[:1000])
+    elif damage == "garbage":
+        weights.write_bytes(b"not a torch file")
+    elif damage == "no_weights":
+        weights.unlink()
+    elif damage == "no_meta":
+        meta.unlink()
+    elif damage == "bad_meta":
+        meta.write_text(meta.read_text()[:50])
+    else:
+        data = json.loads(meta.read_text())
+        data["sizes"]["mlp_hidden"] = [6, 4]
+        meta.write_text(json.dumps(data))
+    message = {"no_meta": "metadata missing", "bad_meta": "corrupted", "no_weights": "no weights.pt",
+               "wrong_sizes": "recorded sizes"}.get(damage, "corrupted")
+    with pytest.raises(ValueError, match=message):
+        checkpoints.load_models(tmp_path)
+
+
+def test_missing_checkpoint_folder(tmp_path):
+    with pytest.raises(FileNotFoundError):
+        checkpoints.load_models(tmp_path / "nowhere")
+
+
+def test_cli_train_writes_a_checkpoint(tmp_path, capsys):
+    out = tmp_path / "ckpt"
+    assert cli.main(["train", "--scenario", "2ds", "--preset", "paper", "--quick", "--out", str(out)]) == 0
+    printed = json.loads(capsys.readouterr().out)
+    assert set(printed["mlp"]) == {"seen", "unseen"}
+    loaded = checkpoints.load_models(out, "2ds")
+    assert loaded.preset.name == "paper" and loaded.quick

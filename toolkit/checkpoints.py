@@ -1,0 +1,106 @@
+"""Checkpoint folders: the predictor's ``state_dict`` plus JSON metadata.
+
+A folder written by :func:`save_checkpoint` holds
+
+- ``weights.pt``: ``CollisionPredictor.state_dict()`` (CAE, input encoding, MLP,
+  threshold), read back with ``torch.load(..., weights_only=True)``;
+- ``meta.json``: scenario, preset, seed, the networks' sizes, the library versions,
+  the loss per epoch and (from ``toolkit train``) the evaluation scores.
+
+:func:`load_models` rebuilds the networks from the metadata and refuses, with a
+``ValueError`` naming the problem, a folder for another scenario, missing or
+corrupted files, and weights that do not fit the recorded sizes.
+"""
+
+from __future__ import annotations
+
+import json
+import platform
+from dataclasses import asdict
+from pathlib import Path
+
+import numpy as np
+import torch
+
+from . import __version__, presets, scenarios
+from .models import CollisionPredictor, build_predictor
+from .presets import Preset
+from .training import TrainedModels
+
+WEIGHTS, META = "weights.pt", "meta.json"
+FORMAT = 1
+
+
+def sizes(predictor: CollisionPredictor) -> dict:
+    """The shapes that define the networks: CAE widths, MLP input and hidden widths, input encoding."""
+    return {"cae": list(predictor.cae.sizes), "mlp_in": predictor.mlp.in_features, "mlp_hidden": list(predictor.mlp.hidden),
+            "encoding": predictor.encoding.kind, "patch_radius": predictor.encoding.radius}
+
+
+def save_checkpoint(models: TrainedModels, folder: str | Path, evaluation: dict | None = None) -> Path:
+    """Write ``weights.pt`` and ``meta.json`` (with ``evaluation``, if given) into ``folder``; returns the folder."""
+    folder = Path(folder)
+    folder.mkdir(parents=True, exist_ok=True)
+    meta = {
+        "format": FORMAT,
+        "scenario": models.scenario.name,
+        "preset": asdict(models.preset),
+        "seed": models.seed,
+        "threshold": models.threshold,
+        "sizes": sizes(models.predictor),
+        "history": models.history,
+        "evaluation": evaluation,
+        "versions": {"toolkit": __version__, "torch": torch.__version__, "numpy": np.__version__,
+                     "python": platform.python_version()},
+    }
+    state = {k: v.detach().cpu() for k, v in models.predictor.state_dict().items()}
+    tmp = folder / (WEIGHTS + ".tmp")
+    torch.save(state, tmp)
+    tmp.replace(folder / WEIGHTS)
+    (folder / META).write_text(json.dumps(meta, indent=2))
+    return folder
+
+
+def load_models(folder: str | Path, scenario: str | None = None) -> TrainedModels:
+    """Read a checkpoint folder; with ``scenario``, refuse one trained for another scenario."""
+    folder = Path(folder)
+    if not folder.is_dir():
+        raise FileNotFoundError(f"checkpoint folder {folder} does not exist")
+    meta = _read_meta(folder)
+    if scenario is not None and meta["scenario"] != scenario:
+        raise ValueError(f"checkpoint {folder} was trained for scenario {meta['scenario']!r}, not {scenario!r}")
+    preset_fields = dict(meta["preset"])
+    preset_fields["mlp_hidden"] = tuple(preset_fields["mlp_hidden"]) if preset_fields.get("mlp_hidden") else None
+    try:
+        preset = Preset(**preset_fields)
+        presets.get(preset.name)
+    except TypeError as err:
+        raise ValueError(f"checkpoint {folder}: {META} has an unreadable preset: {err}") from err
+    scen = scenarios.get(meta["scenario"])
+    predictor = build_predictor(scen, preset.encoding, preset.mlp_hidden, preset.dropout)
+    if sizes(predictor) != meta["sizes"]:
+        raise ValueError(f"checkpoint {folder}: recorded sizes {meta['sizes']} differ from the {meta['scenario']!r} "
+                         f"networks of preset {preset.name!r}, {sizes(predictor)}")
+    try:
+        state = torch.load(folder / WEIGHTS, map_location="cpu", weights_only=True)
+        predictor.load_state_dict(state)
+    except FileNotFoundError:
+        raise ValueError(f"checkpoint {folder} has no {WEIGHTS}") from None
+    except Exception as err:  # unpickling, zip, shape or key errors: the weights cannot be trusted
+        raise ValueError(f"checkpoint {folder}: {WEIGHTS} is corrupted or does not match the networks: {err}") from err
+    return TrainedModels(scen, preset, predictor.eval(), int(meta.get("seed", 0)), meta.get("history", {}))
+
+
+def _read_meta(folder: Path) -> dict:
+    try:
+        meta = json.loads((folder / META).read_text())
+    except FileNotFoundError:
+        raise ValueError(f"checkpoint {folder} has no {META} (metadata missing)") from None
+    except (json.JSONDecodeError, UnicodeDecodeError) as err:
+        raise ValueError(f"checkpoint {folder}: {META} is corrupted: {err}") from err
+    missing = {"format", "scenario", "preset", "sizes"} - set(meta) if isinstance(meta, dict) else {"everything"}
+    if missing:
+        raise ValueError(f"checkpoint {folder}: {META} lacks {sorted(missing)}")
+    if meta["format"] != FORMAT:
+        raise ValueError(f"checkpoint {folder} has format {meta['format']}, this toolkit reads format {FORMAT}")
+    return meta

@@ -1,0 +1,34 @@
+"""The paper's measures (§VI): CAE reconstruction accuracy (Table 1); MLP accuracy, TPR, TNR (Table 2).
+
+TPR is the share of truly valid configurations predicted valid, TNR the share of
+truly invalid ones predicted invalid (false negative rate = 1 - TPR, false positive
+rate = 1 - TNR).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+
+def classification(predicted_valid, valid) -> dict[str, float]:
+    """``{"acc", "tpr", "tnr"}`` of boolean predictions against boolean truth, both ``(N,)``.
+
+    A rate whose class is absent (no valid, or no invalid, configurations) is NaN.
+    """
+    pred, truth = np.asarray(predicted_valid, dtype=bool), np.asarray(valid, dtype=bool)
+    if pred.shape != truth.shape or pred.ndim != 1 or len(pred) == 0:
+        raise ValueError(f"predictions {pred.shape} and labels {truth.shape} must be equal, non-empty 1-D arrays")
+    return {
+        "acc": float(np.mean(pred == truth)),
+        "tpr": float(np.mean(pred[truth])) if truth.any() else float("nan"),
+        "tnr": float(np.mean(~pred[~truth])) if (~truth).any() else float("nan"),
+    }
+
+
+def reconstruction_accuracy(reconstructed, grids) -> np.ndarray:
+    """``(W,)`` share of each grid's cells whose sign the reconstruction gets right (grids of -1 / +1)."""
+    rec, x = np.asarray(reconstructed), np.asarray(grids)
+    if rec.shape != x.shape or rec.ndim < 2:
+        raise ValueError(f"reconstructions {rec.shape} and grids {x.shape} must be equal arrays (W, *grid)")
+    match = np.sign(rec) == np.sign(x)
+    return match.reshape(len(x), -1).mean(axis=1)

@@ -1,0 +1,203 @@
+"""Training and evaluating the CAE and the collision MLP (paper §III-A, §V-B3, §VI).
+
+The CAE is fitted first on the training workspaces' occupancy grids (Eq. 1), then
+frozen; the MLP is fitted on ``[z, q]`` (or the ``strong`` preset's richer input)
+with cross-entropy. One call does both::
+
+    splits = training.preset_splits(scenario, preset, seed)
+    models = training.train_models(scenario, "paper", splits, seed)
+    training.evaluate(models, splits)  # the keys of results.json's "cae" and "mlp"
+"""
+
+from __future__ import annotations
+
+import math
+from dataclasses import dataclass, field
+
+import numpy as np
+import torch
+from torch import nn
+from tqdm.auto import tqdm
+
+from . import data, metrics, presets, scenarios
+from .data import CollisionDataset
+from .models import CollisionPredictor, build_predictor
+from .presets import Preset
+from .scenarios import Scenario
+
+CALIBRATION_THRESHOLDS = np.linspace(0.05, 0.95, 91)
+
+
+@dataclass
+class TrainedModels:
+    """A trained predictor with what made it: scenario, preset, seed and the loss per epoch."""
+
+    scenario: Scenario
+    preset: Preset
+    predictor: CollisionPredictor
+    seed: int = 0
+    history: dict[str, list[float]] = field(default_factory=dict)
+
+    @property
+    def quick(self) -> bool:
+        return self.preset.quick
+
+    @property
+    def threshold(self) -> float:
+        """Decision threshold on P(valid): 0.5, or calibrated on held-out workspaces."""
+        return float(self.predictor.threshold)
+
+
+def default_device() -> torch.device:
+    """CUDA when present, else the CPU."""
+    return torch.device("cuda" if torch.cuda.is_available() else "cpu")
+
+
+def preset_splits(scenario: Scenario | str, preset: Preset | str, seed: int = 0, quick: bool = False,
+                  progress: bool = True) -> dict[str, CollisionDataset]:
+    """The three data splits a preset trains and tests on (quick: few workspaces, see ``presets.QUICK_WORKSPACES``)."""
+    scenario, preset = _scenario(scenario), _preset(preset, quick)
+    counts = dict(zip(("n_seen", "n_seen_test", "n_unseen"), presets.QUICK_WORKSPACES)) if preset.quick else {}
+    return data.make_splits(scenario, seed, samples_per_workspace=scenario.samples_per_workspace * preset.samples_factor,
+                            progress=progress, **counts)
+
+
+def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[str, CollisionDataset], seed: int = 0,
+                 progress: bool = True, quick: bool = False, device: torch.device | str | None = None) -> TrainedModels:
+    """Fit the CAE on ``splits["train"]``'s grids, then the MLP on its labelled samples; models end on the CPU."""
+    scenario, preset = _scenario(scenario), _preset(preset, quick)
+    train = splits["train"]
+    if train.scenario != scenario.name:
+        raise ValueError(f"the training split holds {train.scenario!r} data, not {scenario.name!r}")
+    device = torch.device(device) if device is not None else default_device()
+    torch.manual_seed(seed)
+    predictor = build_predictor(scenario, preset.encoding, preset.mlp_hidden, preset.dropout).to(device)
+    shuffle = torch.Generator().manual_seed(seed)
+    grids = torch.as_tensor(train.occupancy, device=device)
+    history = {"cae": train_cae(predictor, grids, preset, shuffle, progress)}
+    n_holdout = int(round(preset.holdout * len(train.workspaces))) if len(train.workspaces) > 1 else 0
+    fit, holdout = _split_workspaces(train, len(train.workspaces) - n_holdout)
+    history["mlp"] = train_mlp(predictor, fit, preset, shuffle, progress)
+    if n_holdout:
+        predictor.threshold.fill_(calibrate_threshold(predictor, holdout))
+    return TrainedModels(scenario, preset, predictor.cpu().eval(), seed, history)
+
+
+def train_cae(predictor: CollisionPredictor, grids: torch.Tensor, preset: Preset, shuffle: torch.Generator,
+              progress: bool = True) -> list[float]:
+    """Fit the CAE to grids ``(W, *grid)`` with Eq. (1); the mean loss of each epoch."""
+    cae = predictor.cae.train()
+    batches = _batches(len(grids), preset.cae_batch, preset.cae_epochs, shuffle)
+    return _fit(cae.parameters(), preset.cae_optimizer, preset.cae_lr, preset, batches, lambda idx: cae.loss(grids[idx], preset.cae_lambda),
+                progress, f"CAE ({preset.name})")
+
+
+def train_mlp(predictor: CollisionPredictor, dataset: CollisionDataset, preset: Preset, shuffle: torch.Generator,
+              progress: bool = True) -> list[float]:
+    """Fit the MLP with cross-entropy on a dataset's samples, the CAE frozen; the mean loss of each epoch."""
+    device = predictor.threshold.device
+    X, y = _inputs(predictor, dataset), torch.as_tensor(dataset.valid.reshape(-1), device=device).long()
+    mean, std = (X.mean(dim=0), X.std(dim=0).clamp(min=1e-6)) if preset.standardize else (0.0, 1.0)
+    X = (X - mean) / std
+    mlp = predictor.mlp.train()
+    batches = _batches(len(X), preset.mlp_batch, preset.mlp_epochs, shuffle)
+    losses = _fit(mlp.parameters(), preset.optimizer, preset.lr, preset, batches,
+                  lambda idx: nn.functional.cross_entropy(mlp(X[idx]), y[idx]), progress, f"MLP ({preset.name})")
+    mlp.eval()
+    if preset.standardize:
+        mlp.fold_standardization(mean, std)
+    return losses
+
+
+def calibrate_threshold(predictor: CollisionPredictor, dataset: CollisionDataset) -> float:
+    """The threshold on P(valid) with the best accuracy on a held-out dataset (ties: the one nearest 0.5)."""
+    p, valid = probabilities(predictor, dataset).reshape(-1), dataset.valid.reshape(-1)
+    acc = np.array([np.mean((p >= t) == valid) for t in CALIBRATION_THRESHOLDS])
+    best = np.flatnonzero(acc == acc.max())
+    return float(CALIBRATION_THRESHOLDS[best[np.argmin(np.abs(CALIBRATION_THRESHOLDS[best] - 0.5))]])
+
+
+@torch.no_grad()
+def probabilities(predictor: CollisionPredictor, dataset: CollisionDataset) -> np.ndarray:
+    """P(valid) of every labelled configuration, ``(W, n)``."""
+    predictor.eval()
+    logits = predictor.mlp(_inputs(predictor, dataset))
+    return torch.softmax(logits, dim=1)[:, 1].cpu().numpy().reshape(dataset.valid.shape)
+
+
+@torch.no_grad()
+def evaluate(models: TrainedModels, splits: dict[str, CollisionDataset]) -> dict:
+    """Table 1 and Table 2 measures: ``{"cae": {"seen_acc", "unseen_acc"}, "mlp": {"seen": {...}, "unseen": {...}}}``."""
+    predictor = models.predictor.eval()
+    result: dict = {"cae": {}, "mlp": {}}
+    for key, split in (("seen", "seen_test"), ("unseen", "unseen_test")):
+        dataset = splits[split]
+        grids = torch.as_tensor(dataset.occupancy, device=predictor.threshold.device)
+        result["cae"][f"{key}_acc"] = float(metrics.reconstruction_accuracy(predictor.cae(grids).cpu().numpy(), dataset.occupancy).mean())
+        predicted = probabilities(predictor, dataset) >= models.threshold
+        result["mlp"][key] = metrics.classification(predicted.reshape(-1), dataset.valid.reshape(-1))
+    return result
+
+
+# -- helpers ---------------------------------------------------------------------
+
+def _inputs(predictor: CollisionPredictor, dataset: CollisionDataset) -> torch.Tensor:
+    """MLP inputs ``(W * n, F)`` of a dataset's samples, the workspaces encoded once (no gradient)."""
+    device = predictor.threshold.device
+    ws_index, Q, _ = dataset.flat()
+    with torch.no_grad():
+        z, padded, _ = predictor.context(torch.as_tensor(dataset.occupancy, device=device))
+        return predictor.encoding(z, padded, torch.as_tensor(ws_index, device=device),
+                                  torch.as_tensor(Q, dtype=torch.float32, device=device))
+
+
+def _split_workspaces(dataset: CollisionDataset, n_first: int) -> tuple[CollisionDataset, CollisionDataset]:
+    """The first ``n_first`` workspaces and the rest, as two datasets."""
+    parts = []
+    for part in (slice(0, n_first), slice(n_first, None)):
+        parts.append(CollisionDataset(dataset.scenario, dataset.workspaces[part], dataset.occupancy[part],
+                                      dataset.configs[part], dataset.valid[part], dict(dataset.meta)))
+    return parts[0], parts[1]
+
+
+def _batches(n: int, batch: int, epochs: int, shuffle: torch.Generator) -> list[list[torch.Tensor]]:
+    """Index batches of each epoch, every epoch a fresh permutation drawn from ``shuffle``."""
+    return [list(torch.randperm(n, generator=shuffle).split(batch)) for _ in range(epochs)]
+
+
+def _fit(params, optimizer_name: str, lr: float, preset: Preset, epochs: list[list[torch.Tensor]], loss_of,
+         progress: bool, desc: str) -> list[float]:
+    """Minimize ``loss_of(batch indices)`` over the epochs with the named optimizer; mean loss per epoch."""
+    params = list(params)
+    if optimizer_name == "adagrad":
+        optimizer = torch.optim.Adagrad(params, lr=lr, weight_decay=preset.weight_decay)
+    elif optimizer_name == "adamw":
+        optimizer = torch.optim.AdamW(params, lr=lr, weight_decay=preset.weight_decay)
+    else:
+        raise ValueError(f"unknown optimizer {optimizer_name!r}; choose 'adagrad' or 'adamw'")
+    total = sum(map(len, epochs))
+    schedule = (lambda step: 0.5 * (1 + math.cos(math.pi * step / total))) if preset.cosine_schedule else (lambda step: 1.0)
+    scheduler = torch.optim.lr_scheduler.LambdaLR(optimizer, schedule)
+    history = []
+    bar = tqdm(epochs, desc=desc, disable=not progress, leave=False)
+    for batches in bar:
+        losses = []
+        for idx in batches:
+            optimizer.zero_grad(set_to_none=True)
+            loss = loss_of(idx.to(params[0].device))
+            loss.backward()
+            optimizer.step()
+            scheduler.step()
+            losses.append(loss.item())
+        history.append(float(np.mean(losses)))
+        bar.set_postfix(loss=f"{history[-1]:.4g}")
+    return history
+
+
+def _scenario(scenario: Scenario | str) -> Scenario:
+    return scenarios.get(scenario) if isinstance(scenario, str) else scenario
+
+
+def _preset(preset: Preset | str, quick: bool) -> Preset:
+    preset = presets.get(preset) if isinstance(preset, str) else preset
+    return preset.quick_version() if quick else preset
