@@ -29,7 +29,6 @@ from . import bench, checkpoints, paper_numbers, plots, queries, scenarios, trai
 from .data import SPLITS, CollisionDataset
 from .learned import LearnedChecker
 from .paper_numbers import SAMPLERS
-from .prm import PRMOptions
 
 MODES = ("without", "with")
 QUICK_QUERIES = {"2ds": (2, 2), "3do": (1, 2), "3dc7": (3, 1), "3dc9": (3, 1)}  # (workspaces, pairs each)
@@ -109,7 +108,7 @@ def _planning(stages: Stages, scenario, models, seed: int, quick: bool) -> dict:
     counts = QUICK_QUERIES[scenario.name] if quick else (None, None)
     query_set = queries.make_queries(scenario, seed, *counts)
     n_samples = QUICK_PLAN_SAMPLES.get(scenario.name, scenario.plan_samples) if quick else scenario.plan_samples
-    options = PRMOptions(n_samples=n_samples, max_rounds=QUICK_MAX_ROUNDS) if quick else PRMOptions(n_samples=n_samples)
+    options = queries.default_options(scenario, n_samples=n_samples, **({"max_rounds": QUICK_MAX_ROUNDS} if quick else {}))
     factory = {"without": None, "with": lambda ws: LearnedChecker(ws, models)}
     planning = {}
     runs = [(s, m) for s in SAMPLERS for m in MODES]

@@ -58,6 +58,13 @@ def query_pairs(scenario: Scenario, ws: Workspace, count: int, rng: np.random.Ge
     raise RuntimeError(f"could not find {count} valid, separated start/goal pairs in this workspace")
 
 
+def default_options(scenario: Scenario, **overrides) -> PRMOptions:
+    """The planner settings of a scenario: the paper's |S| and the scenario's local-planner resolution."""
+    settings = {"n_samples": scenario.plan_samples, "resolution": scenario.plan_resolution}
+    settings.update(overrides)
+    return PRMOptions(**settings)
+
+
 def make_queries(scenario: Scenario, seed: int = 0, n_workspaces: int | None = None,
                  per_workspace: int | None = None) -> list[Query]:
     """The paper's query set (counts default to the scenario's), reproducible from ``seed``."""
@@ -73,7 +80,7 @@ def make_queries(scenario: Scenario, seed: int = 0, n_workspaces: int | None = N
 def solve_query(scenario: Scenario, query: Query, sampler: str, checker: CollisionChecker | None = None,
                 options: PRMOptions | None = None, seed=0) -> PlanResult:
     """One query with ``sampler``; ``checker`` decides samples (None: the exact checker), paper's |S| by default."""
-    options = options or PRMOptions(n_samples=scenario.plan_samples)
+    options = options or default_options(scenario)
     return plan(exact_checker(query.workspace, scenario.robot), query.start, query.goal, sampler=sampler,
                 checker=checker, options=options, rng=np.random.default_rng(seed))
 
@@ -87,7 +94,7 @@ def run_queries(scenario: Scenario, queries: list[Query], sampler: str,
     line 1); its time is shared among that workspace's queries and counted in their
     ``total_s``. Returns per-query records and the summary.
     """
-    options = options or PRMOptions(n_samples=scenario.plan_samples)
+    options = options or default_options(scenario)
     records, checkers = [], {}
     share = np.bincount([q.workspace_index for q in queries])  # queries per workspace
     for n, query in enumerate(queries):

@@ -87,7 +87,9 @@ def train_cae(predictor: CollisionPredictor, grids: torch.Tensor, preset: Preset
               progress: bool = True) -> list[float]:
     """Fit the CAE to grids ``(W, *grid)`` with Eq. (1); the mean loss of each epoch."""
     cae = predictor.cae.train()
-    batches = _batches(len(grids), preset.cae_batch, preset.cae_epochs, shuffle)
+    steps_per_epoch = math.ceil(len(grids) / preset.cae_batch)
+    epochs = max(1, min(preset.cae_epochs, preset.cae_max_steps // steps_per_epoch))
+    batches = _batches(len(grids), preset.cae_batch, epochs, shuffle)
     return _fit(cae.parameters(), preset.cae_optimizer, preset.cae_lr, preset, batches, lambda idx: cae.loss(grids[idx], preset.cae_lambda),
                 progress, f"CAE ({preset.name})")
 
@@ -146,8 +148,8 @@ def _inputs(predictor: CollisionPredictor, dataset: CollisionDataset) -> torch.T
     device = predictor.threshold.device
     ws_index, Q, _ = dataset.flat()
     with torch.no_grad():
-        z, padded, _ = predictor.context(torch.as_tensor(dataset.occupancy, device=device))
-        return predictor.encoding(z, padded, torch.as_tensor(ws_index, device=device),
+        grids = torch.as_tensor(dataset.occupancy, device=device)
+        return predictor.encoding(predictor.cae.encode(grids), grids, torch.as_tensor(ws_index, device=device),
                                   torch.as_tensor(Q, dtype=torch.float32, device=device))
 
 
