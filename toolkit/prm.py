@@ -9,6 +9,8 @@
 4. connect start and goal (while they lie in different components, also try the k
    closest pairs between each one's component and the rest); when the roadmap does
    not join them, sample another S with the same (auxiliary) sampler and repeat (line 4);
+   its samples are checked exactly ("create additional valid samples", ``exact_auxiliary``),
+   which keeps the planner probabilistically complete however poor the prediction;
 5. extract the cheapest path and **verify** it with the exact checker: its nodes, and
    its edges at ``resolution / verify_refinement`` (10x finer than the roadmap's
    edges: shortest paths hug obstacles, and an edge that grazes a corner between two
@@ -52,6 +54,7 @@ class PRMOptions:
     resolution: float | None = None  # local planner step bound; None: default_resolution(robot)
     verify_refinement: int = 10  # the returned path's edges are checked exactly at resolution / this
     max_rounds: int = 20  # sampling rounds before reporting failure
+    exact_auxiliary: bool = True  # with prediction: rounds after the first sample with the exact checker
     screen_edges: bool = True  # with prediction: learned edge screening (lazy PRM); False: the paper's exact edges
     screen_reject: float = 0.9  # screening drops edges with a larger predicted-invalid fraction
     screen_penalty: float = 10.0  # screened edge cost = length * (1 + penalty * predicted-invalid fraction)
@@ -79,6 +82,7 @@ def plan(exact: CollisionChecker, start, goal, *, sampler: str = "BS", checker: 
         raise ValueError(f"checker is for a {checker.robot.dof}-DoF robot, the exact checker for {robot.dof}")
     endpoints = np.concatenate([_single(robot, start, "start"), _single(robot, goal, "goal")])  # (2, dof)
     planner = _Planner(exact, checker, options, make_sampler(sampler, checker, **options.sampler_options))
+    auxiliary = make_sampler(sampler, exact, **options.sampler_options) if options.exact_auxiliary else planner.sampler
     for name, ok, q in zip(("start", "goal"), exact.are_valid(endpoints), endpoints):
         if not ok:
             raise ValueError(f"{name} configuration {np.round(q, 4).tolist()} is in collision or out of bounds")
@@ -86,9 +90,10 @@ def plan(exact: CollisionChecker, start, goal, *, sampler: str = "BS", checker: 
     path = None
     while path is None and planner.stats["rounds"] < options.max_rounds:
         planner.stats["rounds"] += 1
+        source = planner.sampler if planner.stats["rounds"] == 1 else auxiliary
         with planner.timed("sampling_s", "node_checks"):
-            S_valid = planner.sampler.sample(options.n_samples, rng)  # S' (M, dof)
-        new = np.concatenate([new, planner.roadmap.add_nodes(S_valid, verified=checker is exact)])
+            S_valid = source.sample(options.n_samples, rng)  # S' (M, dof)
+        new = np.concatenate([new, planner.roadmap.add_nodes(S_valid, verified=source.checker is exact)])
         with planner.timed("connection_s", "edge_checks"):
             planner.connect(new)
         new = new[:0]
