@@ -6,7 +6,8 @@ import torch
 from torch import nn
 
 from toolkit import scenarios
-from toolkit.models import CAE, CollisionMLP, InputEncoding, build_predictor, reach_cells
+from toolkit.encoding import InputEncoding, LinkKinematics, position_dofs, reach_cells
+from toolkit.models import CAE, CollisionMLP, build_predictor
 from toolkit.workspace import Workspace
 
 PAPER_CAE = {
@@ -91,7 +92,7 @@ def test_local_encoding_reads_the_grid_around_the_base():
     enc = InputEncoding(s.robot, s.grid_shape, latent_dim=1, kind="local", radius=1)
     grid = torch.as_tensor(ws.occupancy())[None]
     Q = torch.tensor([[11.2, 19.7], [0.3, 30.6]])  # next to the block; in the corner
-    x = enc(torch.zeros(1, 1), enc.pad(grid), torch.zeros(2, dtype=torch.long), Q)
+    x = enc(torch.zeros(1, 1), grid, torch.zeros(2, dtype=torch.long), Q)
     patch = x[:, 1:10].reshape(2, 3, 3)
     expected = -torch.ones(3, 3)
     expected[:2, 2] = 1.0  # base cell (11, 19); the block covers cells x = 10, 11 at y = 20
@@ -100,14 +101,36 @@ def test_local_encoding_reads_the_grid_around_the_base():
     assert torch.allclose(x[:, 10:12], torch.tensor([[0.2 - 0.5, 0.7 - 0.5], [0.3 - 0.5, 0.6 - 0.5]]), atol=1e-5)
 
 
-def test_local_encoding_of_angles_and_joints():
+def test_local_encoding_of_angles_joints_and_links():
     s = scenarios.get("3dc7")
     enc = InputEncoding(s.robot, s.grid_shape, latent_dim=2, kind="local", radius=1)
-    q = torch.tensor([[5.5, 5.5, 5.5, np.pi / 2, 0.0, -np.pi / 2, 2.0]], dtype=torch.float32)
+    q = torch.tensor([[5.5, 5.5, 5.25, np.pi / 2, 0.0, 0.0, 2.0]], dtype=torch.float32)
     grid = -torch.ones(1, 11, 11, 11)
-    x = enc(torch.zeros(1, 2), enc.pad(grid), torch.zeros(1, dtype=torch.long), q)[0]
-    assert x.shape == (enc.out_features,) == (2 + 27 + 3 + 6 + 1,)
-    assert torch.allclose(x[-7:], torch.tensor([1.0, 0.0, -1.0, 0.0, 1.0, 0.0, 1.0]), atol=1e-6)  # sin, cos, joint
+    x = enc(torch.zeros(1, 2), grid, torch.zeros(1, dtype=torch.long), q)[0]
+    assert x.shape == (enc.out_features,) == (2 + 27 + 3 + 6 + 1 + 2 * 6,)
+    pose = x[2 + 27:]
+    assert torch.allclose(pose[:10], torch.tensor([0.0, 0.0, -0.25, 1.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0]), atol=1e-6)
+    # yaw pi/2: the small link (0.1 long) points along +y from the base, the big one turns by joint 2 rad about z
+    centers, axes = pose[10:16].reshape(2, 3), pose[16:].reshape(2, 3)
+    big = torch.tensor([-np.sin(2.0), np.cos(2.0), 0.0], dtype=torch.float32)  # x axis of the big link
+    assert torch.allclose(centers, torch.stack([torch.tensor([0.0, 0.05, -0.25]), torch.tensor([0.0, 0.1, -0.25]) + 0.2 * big]),
+                          atol=1e-6)  # relative to the base cell's centre (5.5, 5.5, 5.5)
+    assert torch.allclose(axes, torch.stack([torch.tensor([0.0, 1.0, 0.0]), big]), atol=1e-6)
+
+
+@pytest.mark.parametrize("name", ["3do", "3dc7", "3dc9"])
+def test_link_kinematics_match_the_robot(name, rng):
+    robot = scenarios.get(name).robot
+    Q = robot.sample(rng, 200)
+    n_pos = position_dofs(robot)
+    position = np.pad(Q[:, :n_pos], ((0, 0), (0, 3 - n_pos)), constant_values=robot.base_height)  # (N, 3)
+    turns = torch.as_tensor(Q[:, n_pos:].T)  # (R, N): base angles, then joints
+    centers, axes = LinkKinematics(robot)(torch.as_tensor(position.T), torch.sin(turns), torch.cos(turns))  # (L, 3, N)
+    centers, axes = centers.permute(2, 0, 1), axes.permute(2, 0, 1)  # (N, L, 3)
+    expected_centers, rotations, half = robot.link_boxes(Q)
+    long_axes = np.stack([rotations[:, i, :, np.argmax(h)] for i, h in enumerate(half)], axis=1)  # (N, L, 3)
+    assert np.allclose(centers.numpy(), expected_centers, atol=1e-9)
+    assert np.allclose(axes.numpy(), long_axes, atol=1e-9)
 
 
 @pytest.mark.parametrize("kind", ["raw", "local"])
@@ -117,15 +140,30 @@ def test_logits_shortcut_equals_the_full_network(kind, rng):
     predictor = build_predictor(s, kind).eval()
     grids = torch.as_tensor(np.stack([s.make_workspace(rng).occupancy() for _ in range(2)]))
     Q = torch.as_tensor(s.robot.sample(rng, 50), dtype=torch.float32)
+    Q[:3, :3] = torch.tensor([[0.0, 0.0, 0.0], [11.0, 11.0, 11.0], [10.99, 0.01, 5.0]])  # cells on the grid's faces
     ws_index = torch.as_tensor(rng.integers(0, 2, 50))
     with torch.no_grad():
+        z = predictor.cae.encode(grids)
         context = predictor.context(grids)
-        z, padded, _ = context
-        full = predictor.mlp(predictor.encoding(z, padded, ws_index, Q))
-        assert torch.allclose(predictor.logits(context, ws_index, Q), full, atol=1e-5)
-        one = predictor.context(grids[:1])  # a single workspace broadcasts its share instead of gathering it
-        assert torch.allclose(predictor.logits(one, torch.zeros(50, dtype=torch.long), Q),
-                              predictor.mlp(predictor.encoding(z[:1], padded[:1], torch.zeros(50, dtype=torch.long), Q)), atol=1e-5)
+        assert context.shape == (2, 11 ** 3 if kind == "local" else 1, predictor.mlp.hidden[0])
+        full = predictor.mlp(predictor.encoding(z, grids, ws_index, Q))
+        assert torch.allclose(predictor.logits(context, ws_index, Q), full, atol=1e-4)
+        one = predictor.context(grids[:1])  # a single workspace: one table, no gather over workspaces
+        zeros = torch.zeros(50, dtype=torch.long)
+        assert torch.allclose(predictor.logits(one, zeros, Q), predictor.mlp(predictor.encoding(z[:1], grids[:1], zeros, Q)),
+                              atol=1e-4)
+
+
+def test_cell_patches_match_the_patch_of_each_configuration(rng):
+    s = scenarios.get("3do")
+    enc = InputEncoding(s.robot, s.grid_shape, latent_dim=1, kind="local", radius=2)
+    grids = torch.as_tensor(np.stack([s.make_workspace(rng).occupancy() for _ in range(2)]))
+    patches = enc.cell_patches(grids)
+    assert patches.shape == (2, 41 * 41, 5 * 5 * 6)
+    padded = np.pad(grids.numpy(), ((0, 0), (2, 2), (2, 2), (0, 0)), constant_values=1.0)
+    for w, (i, j) in [(0, (0, 0)), (1, (40, 17)), (1, (13, 40))]:
+        expected = padded[w, i:i + 5, j:j + 5, :].reshape(-1)  # cells (i-2..i+2, j-2..j+2), all heights
+        assert torch.equal(patches[w, i * 41 + j], torch.as_tensor(expected))
 
 
 def test_fold_standardization():

@@ -83,7 +83,8 @@ def load_models(folder: str | Path, scenario: str | None = None) -> TrainedModel
                          f"networks of preset {preset.name!r}, {sizes(predictor)}")
     try:
         state = torch.load(folder / WEIGHTS, map_location="cpu", weights_only=True)
-        predictor.load_state_dict(state)
+        # the input encoding's buffers derive from the scenario; earlier checkpoints stored them, now they are rebuilt
+        predictor.load_state_dict({k: v for k, v in state.items() if not k.startswith("encoding.")})
     except FileNotFoundError:
         raise ValueError(f"checkpoint {folder} has no {WEIGHTS}") from None
     except Exception as err:  # unpickling, zip, shape or key errors: the weights cannot be trusted

@@ -6,22 +6,20 @@
   reaches the gradients (it is computed from the parameters themselves).
 - :class:`CollisionMLP`: ``[z, q] -> 2`` logits (invalid, valid), hidden blocks of
   Linear -> PReLU -> Dropout(p) (§V-B2).
-- :class:`InputEncoding`: what the MLP sees. ``"raw"`` is the paper's ``[z, q]``;
-  ``"local"`` (the ``strong`` preset) is ``[z, local occupancy, encoded q]``: the
-  grid cells the robot can reach from its base cell, the base's position inside its
-  cell, sin/cos of the angles that wrap and the joints scaled to [-1, 1].
-- :class:`CollisionPredictor`: the three together, one ``state_dict``.
+- :class:`~toolkit.encoding.InputEncoding` (in :mod:`toolkit.encoding`): what the MLP
+  sees, the paper's ``[z, q]`` or the ``strong`` preset's ``[z, patch, pose]``.
+- :class:`CollisionPredictor`: the three together, one ``state_dict``; its
+  :meth:`~CollisionPredictor.context` folds everything a workspace gives the first
+  layer (``z``, the patch of every base cell, the bias) into one table, so a
+  prediction gathers one row and multiplies only the pose.
 """
 
 from __future__ import annotations
 
-import math
-
-import numpy as np
 import torch
 from torch import nn
 
-from .robots import BoxRobot
+from .encoding import InputEncoding, reach_cells
 from .scenarios import Scenario
 
 VALID = 1  # class index of "valid" in the MLP's two logits
@@ -74,7 +72,7 @@ class CAE(nn.Module):
 
 
 class CollisionMLP(nn.Module):
-    """Validity classifier (§III-A2, §V-B2): Linear -> PReLU -> Dropout(p) blocks, then 2 logits."""
+    """Validity classifier (§III-A2, §V-B2): Linear -> PReLU -> Dropout(p) blocks, then 2 logits (no Dropout when p = 0)."""
 
     def __init__(self, in_features: int, hidden: tuple[int, ...], dropout: float):
         super().__init__()
@@ -82,7 +80,7 @@ class CollisionMLP(nn.Module):
             raise ValueError(f"dropout must lie in [0, 1), got {dropout}")
         layers: list[nn.Module] = []
         for a, b in zip((in_features,) + tuple(hidden[:-1]), hidden):
-            layers += [nn.Linear(a, b), nn.PReLU(), nn.Dropout(dropout)]
+            layers += [nn.Linear(a, b), nn.PReLU()] + ([nn.Dropout(dropout)] if dropout > 0 else [])
         layers.append(nn.Linear(hidden[-1] if hidden else in_features, 2))
         self.net = nn.Sequential(*layers)
         self.in_features, self.hidden, self.dropout = int(in_features), tuple(hidden), float(dropout)
@@ -99,83 +97,6 @@ class CollisionMLP(nn.Module):
         first.bias.sub_(first.weight @ mean)
 
 
-def reach_cells(robot: BoxRobot, samples: int = 20_000) -> int:
-    """How many unit cells from its base cell the robot can reach, along the base's position axes.
-
-    Measured from the links' axis-aligned bounds over a fixed sample of configurations.
-    """
-    Q = robot.sample(np.random.default_rng(0), samples)
-    aabbs = robot.link_aabbs(Q)  # (N, L, 2, D)
-    n_pos = position_dofs(robot)
-    reach = np.abs(aabbs[..., :n_pos] - Q[:, None, None, :n_pos]).max()
-    return int(math.ceil(reach))
-
-
-def position_dofs(robot: BoxRobot) -> int:
-    """How many leading DoFs are base positions: 2 for the point robot and the youBot, 3 for the chains."""
-    return int(np.argmax(robot.wraps)) if robot.wraps.any() else robot.dof
-
-
-class InputEncoding(nn.Module):
-    """Turns workspace context and configurations into MLP inputs.
-
-    ``kind="raw"``: ``[z, q]`` (the paper). ``kind="local"``: ``[z, patch, position in
-    cell, sin/cos(angles), scaled joints]``; the patch is the occupancy of the
-    ``(2r+1)`` cells around the base cell along each position axis (the whole extent
-    of the other grid axes, e.g. the office's height), grids padded with "occupied"
-    so leaving the workspace reads as an obstacle.
-    """
-
-    def __init__(self, robot: BoxRobot, grid_shape: tuple[int, ...], latent_dim: int, kind: str, radius: int = 0):
-        super().__init__()
-        if kind not in ("raw", "local"):
-            raise ValueError(f"unknown input encoding {kind!r}; choose 'raw' or 'local'")
-        self.kind, self.radius, self.grid_shape = kind, int(radius), tuple(grid_shape)
-        self.n_pos = position_dofs(robot)
-        self.register_buffer("lower", torch.tensor(np.array(robot.lower), dtype=torch.float32))
-        self.register_buffer("upper", torch.tensor(np.array(robot.upper), dtype=torch.float32))
-        self.register_buffer("wraps", torch.tensor(np.array(robot.wraps)))
-        window = [torch.arange(-self.radius, self.radius + 1)] * self.n_pos
-        window += [torch.arange(n) for n in self.grid_shape[self.n_pos:]]
-        offsets = torch.stack(torch.meshgrid(*window, indexing="ij"), dim=-1).reshape(-1, len(self.grid_shape))
-        self.register_buffer("offsets", offsets)  # (P, G): cell offsets of the patch
-        self.register_buffer("last_cell", torch.tensor(self.grid_shape[: self.n_pos]) - 1)  # (n_pos,)
-        n_angles = int(robot.wraps.sum())
-        if kind == "raw":
-            self.out_features = latent_dim + robot.dof
-        else:
-            self.out_features = latent_dim + len(offsets) + self.n_pos + 2 * n_angles + (robot.dof - self.n_pos - n_angles)
-
-    def pad(self, grids: torch.Tensor) -> torch.Tensor:
-        """Grids ``(W, *grid)`` padded by ``radius`` cells of +1 along the position axes."""
-        if self.kind == "raw":
-            return grids
-        pad: list[int] = []
-        for axis in reversed(range(len(self.grid_shape))):  # F.pad lists the last axis first
-            pad += [self.radius, self.radius] if axis < self.n_pos else [0, 0]
-        return nn.functional.pad(grids, pad, value=1.0)
-
-    def forward(self, z: torch.Tensor, padded: torch.Tensor, ws_index: torch.Tensor, Q: torch.Tensor) -> torch.Tensor:
-        """MLP inputs ``(N, out_features)``: latents ``z (W, L)``, padded grids ``(W, *)``, ``ws_index (N,)``, ``Q (N, dof)``."""
-        return torch.cat([z[ws_index], self.config_features(padded, ws_index, Q)], dim=1)
-
-    def config_features(self, padded: torch.Tensor, ws_index: torch.Tensor, Q: torch.Tensor) -> torch.Tensor:
-        """The inputs after ``z``: ``q`` itself, or ``[patch, position in cell, sin/cos(angles), scaled joints]``."""
-        if self.kind == "raw":
-            return Q
-        position = Q[:, : self.n_pos]  # (N, n_pos); grid cells are unit cubes from the origin
-        cell = torch.minimum(torch.floor(position).long().clamp(min=0), self.last_cell)  # (N, n_pos)
-        base = torch.zeros(len(Q), len(self.grid_shape), dtype=torch.long, device=Q.device)
-        base[:, : self.n_pos] = cell + self.radius  # (N, G) in padded coordinates
-        cells = base[:, None, :] + self.offsets  # (N, P, G)
-        patch = padded[(ws_index[:, None],) + tuple(cells.unbind(-1))]  # (N, P)
-        angles = Q[:, self.wraps]
-        joints = Q[:, ~self.wraps][:, self.n_pos:]
-        lo, hi = self.lower[~self.wraps][self.n_pos:], self.upper[~self.wraps][self.n_pos:]
-        return torch.cat([patch, position - cell - 0.5, torch.sin(angles), torch.cos(angles),
-                          2 * (joints - lo) / (hi - lo) - 1], dim=1)
-
-
 class CollisionPredictor(nn.Module):
     """CAE + input encoding + MLP, with the decision ``threshold`` on P(valid) kept as a buffer."""
 
@@ -184,25 +105,31 @@ class CollisionPredictor(nn.Module):
         self.cae, self.encoding, self.mlp = cae, encoding, mlp
         self.register_buffer("threshold", torch.tensor(float(threshold)))
 
-    def context(self, grids: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor, torch.Tensor]:
-        """What a workspace contributes, computed once: latents ``z (W, L)``, padded grids, and the
-        first MLP layer's share of ``z`` plus its bias, ``(W, H)``."""
-        z = self.cae.encode(grids)
-        first = self.mlp.net[0]
-        return z, self.encoding.pad(grids), z @ first.weight[:, : z.shape[1]].T + first.bias
+    def context(self, grids: torch.Tensor) -> torch.Tensor:
+        """What workspaces ``(W, *grid)`` contribute to the first MLP layer, computed once: ``(W, n_cells, H)``,
+        the bias plus the first layer applied to ``z`` and to the patch around every base cell."""
+        z = self.cae.encode(grids)  # (W, L)
+        weight, bias = self.mlp.net[0].weight, self.mlp.net[0].bias
+        L, P = self.encoding.latent_dim, self.encoding.patch_size
+        share = z @ weight[:, :L].T + bias  # (W, H)
+        return share[:, None, :] + self.encoding.cell_patches(grids) @ weight[:, L:L + P].T  # (W, n_cells, H)
 
-    def logits(self, context: tuple[torch.Tensor, torch.Tensor, torch.Tensor], ws_index: torch.Tensor,
-               Q: torch.Tensor) -> torch.Tensor:
+    def logits(self, context: torch.Tensor, ws_index: torch.Tensor, Q: torch.Tensor) -> torch.Tensor:
         """Logits ``(N, 2)`` for configurations ``Q (N, dof)`` in workspaces ``ws_index (N,)``.
 
-        Equal to ``mlp(encoding(...))``, but the first layer's share of ``z`` comes from the
-        context (once per workspace, not once per configuration).
+        Equal to ``mlp(encoding(...))``, but the first layer's share of ``z`` and of the
+        patch is one row of the context per configuration instead of a product. For
+        inference: the PReLU slopes enter as numbers, so no gradient reaches them.
         """
-        z, padded, share = context
         first = self.mlp.net[0]
-        h = self.encoding.config_features(padded, ws_index, Q) @ first.weight[:, z.shape[1]:].T  # (N, H)
-        h = h + (share if len(share) == 1 else share[ws_index])  # one workspace: broadcast, no gather
-        return self.mlp.net[1:](h)
+        L, P = self.encoding.latent_dim, self.encoding.patch_size
+        cell, pose = self.encoding.configs(Q)  # (N,), (N, pose_size)
+        rows = cell if len(context) == 1 else ws_index * context.shape[1] + cell  # (N,); one workspace: no ws offsets
+        h = context.flatten(0, 1).index_select(0, rows)  # (N, H); index_select is ~5x faster than context[ws, cell]
+        h.addmm_(pose, first.weight[:, L + P:].T)  # (N, H), in place
+        for layer in self.mlp.net[1:]:  # PReLU (one slope) in place: fewer large temporaries, fewer page faults
+            h = nn.functional.leaky_relu_(h, layer.weight.item()) if isinstance(layer, nn.PReLU) else layer(h)
+        return h
 
 
 def build_predictor(scenario: Scenario, encoding: str, mlp_hidden: tuple[int, ...] | None = None,

@@ -1,0 +1,169 @@
+"""What the collision MLP sees: the paper's ``[z, q]``, or the ``strong`` preset's ``[z, patch, pose]``.
+
+- :class:`InputEncoding` ``"raw"``: ``[z, q]`` (§III-A2). ``"local"``: ``z``, the
+  occupancy patch around the robot's base cell, and the *pose*: the base's position
+  inside its cell, sin/cos of the angles that wrap, the joints scaled to [-1, 1] and,
+  for robots of several links, where each link box is (its centre relative to the
+  base cell's centre, its long axis), from forward kinematics.
+- :class:`LinkKinematics`: that forward kinematics in torch, batched, float32: the
+  same frames as :meth:`toolkit.robots.BoxRobot.link_frames` (a test holds it to it).
+
+The patch depends only on the workspace and the base cell, so :meth:`InputEncoding.cell_patches`
+lists it for every cell at once; the predictor folds it into a per-workspace table
+(:meth:`toolkit.models.CollisionPredictor.context`).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import torch
+from torch import nn
+
+from .robots import AXES, BoxRobot
+
+
+def reach_cells(robot: BoxRobot, samples: int = 20_000) -> int:
+    """How many unit cells from its base cell the robot can reach, along the base's position axes.
+
+    Measured from the links' axis-aligned bounds over a fixed sample of configurations.
+    """
+    Q = robot.sample(np.random.default_rng(0), samples)
+    aabbs = robot.link_aabbs(Q)  # (N, L, 2, D)
+    n_pos = position_dofs(robot)
+    reach = np.abs(aabbs[..., :n_pos] - Q[:, None, None, :n_pos]).max()
+    return int(math.ceil(reach))
+
+
+def position_dofs(robot: BoxRobot) -> int:
+    """How many leading DoFs are base positions: 2 for the point robot and the youBot, 3 for the chains."""
+    return int(np.argmax(robot.wraps)) if robot.wraps.any() else robot.dof
+
+
+def _turn(columns: list[torch.Tensor], axis: int, sin: torch.Tensor, cos: torch.Tensor) -> list[torch.Tensor]:
+    """The columns of ``R @ rotation(axis, angle)``, given the columns ``3 x (3, N)`` of ``R`` and ``sin, cos (1, N)``."""
+    j, k = (axis + 1) % 3, (axis + 2) % 3
+    turned = list(columns)
+    turned[j], turned[k] = cos * columns[j] + sin * columns[k], cos * columns[k] - sin * columns[j]
+    return turned
+
+
+def _rotate(columns: list[torch.Tensor], vector: tuple[float, float, float]) -> torch.Tensor | float:
+    """``R @ vector`` ``(3, N)`` from the columns of ``R``, skipping the vector's zero entries."""
+    return sum(v * column for v, column in zip(vector, columns) if v)
+
+
+class LinkKinematics(nn.Module):
+    """Link box centres and long axes of a :class:`BoxRobot`, ``(L, 3, N)`` each, in torch.
+
+    Takes the base position ``(3, N)`` and sin/cos ``(R, N)`` of the robot's ``R``
+    rotational DoFs (base angles, then joints), which the encoding computes anyway;
+    batches lie along the last axis, where elementwise ops are fastest.
+    """
+
+    def __init__(self, robot: BoxRobot):
+        super().__init__()
+        base_turns = {"point2d": [], "planar": [AXES["z"]], "free": [AXES["z"], AXES["y"], AXES["x"]]}[robot.base]
+        self.n_base_turns = len(base_turns)  # Z-Y-X Euler angles for the free base, yaw for the planar one
+        self.turn_axes = base_turns + [AXES[j.axis] for j in robot.joints]  # (R,): axis of each rotational DoF
+        self.long_axes = [int(np.argmax(link.half_extents)) for link in robot.links]
+        self.origins = [tuple(map(float, j.origin)) for j in robot.joints]  # (J, 3): joint in its parent's frame
+        self.offsets = [tuple(map(float, l.offset)) for l in robot.links]  # (L, 3): box centre in its link's frame
+
+    def forward(self, position: torch.Tensor, sin: torch.Tensor, cos: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor]:
+        """Centres and long axes of the link boxes, ``(L, 3, N)`` each."""
+        eye = torch.eye(3, dtype=position.dtype, device=position.device)
+        columns = [eye[:, i: i + 1].expand(3, position.shape[1]) for i in range(3)]
+        for r in range(self.n_base_turns):
+            columns = _turn(columns, self.turn_axes[r], sin[r: r + 1], cos[r: r + 1])
+        centers, long_axes = [], []
+        for link, offset in enumerate(self.offsets):
+            if link:
+                position = position + _rotate(columns, self.origins[link - 1])  # (3, N)
+                r = self.n_base_turns + link - 1
+                columns = _turn(columns, self.turn_axes[r], sin[r: r + 1], cos[r: r + 1])
+            centers.append(position + _rotate(columns, offset))
+            long_axes.append(columns[self.long_axes[link]])
+        return torch.stack(centers), torch.stack(long_axes)
+
+
+class InputEncoding(nn.Module):
+    """Turns workspace context and configurations into MLP inputs ``[z, patch, pose]``.
+
+    ``kind="raw"``: ``[z, q]`` (the paper; no patch). ``kind="local"``: the patch is
+    the occupancy of the ``(2r+1)`` cells around the base cell along each position
+    axis (the whole extent of the other grid axes, e.g. the office's height), grids
+    padded with "occupied" so leaving the workspace reads as an obstacle; the pose is
+    ``[position in cell, sin/cos(angles), scaled joints, link centres, link long axes]``
+    (link features only for robots of several links; centres relative to the base
+    cell's centre along the position axes).
+    """
+
+    def __init__(self, robot: BoxRobot, grid_shape: tuple[int, ...], latent_dim: int, kind: str, radius: int = 0):
+        super().__init__()
+        if kind not in ("raw", "local"):
+            raise ValueError(f"unknown input encoding {kind!r}; choose 'raw' or 'local'")
+        self.kind, self.radius, self.grid_shape = kind, int(radius), tuple(grid_shape)
+        self.n_pos = position_dofs(robot)  # buffers below derive from the robot and grid: not saved in checkpoints
+        self.register_buffer("lower", torch.tensor(np.array(robot.lower), dtype=torch.float32), persistent=False)
+        self.register_buffer("upper", torch.tensor(np.array(robot.upper), dtype=torch.float32), persistent=False)
+        self.n_angles = int(robot.wraps.sum())  # configurations are [positions, angles, joints]
+        self.base_height = robot.base_height  # the planar base's z
+        cell_axes = self.grid_shape[: self.n_pos] if kind == "local" else ()
+        self.register_buffer("last_cell", torch.tensor(cell_axes, dtype=torch.float32) - 1, persistent=False)  # (n_pos,)
+        strides = [math.prod(cell_axes[i + 1:]) for i in range(len(cell_axes))]
+        self.register_buffer("cell_strides", torch.tensor(strides, dtype=torch.long), persistent=False)  # (n_pos,)
+        self.n_cells = math.prod(cell_axes)  # 1 for "raw"
+        window = [torch.arange(-self.radius, self.radius + 1)] * self.n_pos
+        window += [torch.arange(n) for n in self.grid_shape[self.n_pos:]]
+        offsets = torch.stack(torch.meshgrid(*window, indexing="ij"), dim=-1).reshape(-1, len(self.grid_shape))
+        self.register_buffer("offsets", offsets, persistent=False)  # (P, G): cell offsets of the patch
+        self.kinematics = LinkKinematics(robot) if kind == "local" and robot.n_links > 1 else None
+        self.latent_dim = int(latent_dim)
+        self.patch_size = len(offsets) if kind == "local" else 0
+        n_joints = robot.dof - self.n_pos - self.n_angles
+        self.pose_size = robot.dof if kind == "raw" else (
+            self.n_pos + 2 * self.n_angles + n_joints + (6 * robot.n_links if self.kinematics else 0))
+        self.out_features = self.latent_dim + self.patch_size + self.pose_size
+
+    def forward(self, z: torch.Tensor, grids: torch.Tensor, ws_index: torch.Tensor, Q: torch.Tensor) -> torch.Tensor:
+        """MLP inputs ``(N, out_features)``: latents ``z (W, L)``, grids ``(W, *grid)``, ``ws_index (N,)``, ``Q (N, dof)``."""
+        cell, pose = self.configs(Q)
+        return torch.cat([z[ws_index], self.cell_patches(grids)[ws_index, cell], pose], dim=1)
+
+    def cell_patches(self, grids: torch.Tensor) -> torch.Tensor:
+        """``(W, n_cells, P)``: the patch around every base cell of every grid ``(W, *grid)``."""
+        if self.kind == "raw":
+            return grids.new_zeros(len(grids), 1, 0)
+        pad: list[int] = []
+        for axis in reversed(range(len(self.grid_shape))):  # F.pad lists the last axis first
+            pad += [self.radius, self.radius] if axis < self.n_pos else [0, 0]
+        padded = nn.functional.pad(grids, pad, value=1.0)  # (W, *grid padded along the position axes)
+        cells = torch.meshgrid(*[torch.arange(n, device=grids.device) for n in self.grid_shape[: self.n_pos]], indexing="ij")
+        base = torch.zeros(self.n_cells, len(self.grid_shape), dtype=torch.long, device=grids.device)
+        base[:, : self.n_pos] = torch.stack(cells, dim=-1).reshape(-1, self.n_pos) + self.radius  # (n_cells, G), padded
+        index = (base[:, None, :] + self.offsets).unbind(-1)  # G x (n_cells, P)
+        return padded[(slice(None),) + index]  # (W, n_cells, P)
+
+    def configs(self, Q: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor]:
+        """Configurations ``Q (N, dof)`` as ``(cell, pose)``: each one's base cell, ``(N,)`` indices into the rows of
+        :meth:`cell_patches` (0 for "raw"), and its pose ``(N, pose_size)`` (``q`` itself for "raw")."""
+        if self.kind == "raw":
+            return torch.zeros(len(Q), dtype=torch.long, device=Q.device), Q
+        # one row per feature: elementwise ops on contiguous (k, N) rows are several times faster than on (N, k) columns
+        rows = Q.T.contiguous()  # (dof, N)
+        first_joint = self.n_pos + self.n_angles
+        position = rows[: self.n_pos]  # (n_pos, N); grid cells are unit cubes from the origin
+        cell = torch.minimum(torch.floor(position).clamp(min=0), self.last_cell[:, None])  # (n_pos, N), clamped into the grid
+        centre = cell + 0.5
+        turns = rows[self.n_pos:] if self.kinematics is not None else rows[self.n_pos:first_joint]  # (R, N)
+        sin, cos = torch.sin(turns), torch.cos(turns)
+        lo, hi = self.lower[first_joint:, None], self.upper[first_joint:, None]
+        parts = [position - centre, sin[: self.n_angles], cos[: self.n_angles], (rows[first_joint:] - lo) * (2 / (hi - lo)) - 1]
+        if self.kinematics is not None:
+            base = nn.functional.pad(position, (0, 0, 0, 3 - self.n_pos), value=self.base_height)  # (3, N)
+            centers, long_axes = self.kinematics(base, sin, cos)  # (L, 3, N) each
+            parts += [(centers - nn.functional.pad(centre, (0, 0, 0, 3 - self.n_pos))).flatten(0, 1), long_axes.flatten(0, 1)]
+        index = (cell.long() * self.cell_strides[:, None]).sum(dim=0)  # (N,)
+        return index, torch.cat(parts, dim=0).T  # (N,), (N, pose_size)
