@@ -66,7 +66,22 @@ def cmd_plan(args: argparse.Namespace) -> int:
 
 
 def cmd_view(args: argparse.Namespace) -> int:
-    raise NotImplementedError("toolkit view: being written (viewer issue)")
+    from . import viewer
+
+    v = viewer.launch(args.scenario, seed=args.seed, checkpoint=args.checkpoint, host=args.host, port=args.port,
+                      quiet=bool(args.screenshot))
+    try:
+        if args.samples:
+            v.sample("raw", args.samples, seed=args.seed)
+        if args.screenshot:
+            from .viewer_browser import screenshot
+
+            print(f"toolkit view: wrote {screenshot(v.url, args.screenshot)}")
+        else:
+            viewer.serve_forever(v)
+    finally:
+        v.stop()
+    return 0
 
 
 def cmd_reproduce(args: argparse.Namespace) -> int:
@@ -122,7 +137,9 @@ def build_parser() -> argparse.ArgumentParser:
     view.add_argument("--seed", type=int, default=0)
     view.add_argument("--checkpoint", help="checkpoint folder: color samples by predicted validity too")
     view.add_argument("--host", default="127.0.0.1")
-    view.add_argument("--port", type=int, default=8080)
+    view.add_argument("--port", type=int, default=8080, help="first port to try; a busy one moves to the next free")
+    view.add_argument("--samples", type=int, default=0, help="show this many uniform samples at start")
+    view.add_argument("--screenshot", help="save a headless-Chromium PNG of the page here and exit")
     view.set_defaults(func=cmd_view)
 
     # -- reproduce (reproduction issue) --

@@ -1,0 +1,49 @@
+"""The viewer in a real headless Chromium: the screenshot's pixels show the scene, not a blank or "connecting" page.
+
+Skipped only where no Chromium is installed (``make test`` installs Debian's).
+"""
+
+import numpy as np
+import pytest
+
+from toolkit import viewer, viewer_browser
+from toolkit import viewer_scene as draw
+
+pytestmark = [
+    pytest.mark.browser,
+    pytest.mark.slow,
+    pytest.mark.skipif(viewer_browser.find_chromium() is None,
+                       reason="no Chromium installed (run `make browser` or `apt-get install chromium`)"),
+]
+
+
+SIZE = (1100, 700)  # window (width, height): smaller renders faster in software WebGL
+
+
+def test_the_office_renders_with_its_samples(make_viewer, tmp_path):
+    v = make_viewer("3do", seed=0)
+    v.sample("raw", 400, seed=0)
+    png = viewer_browser.screenshot(v.url, tmp_path / "office.png", size=SIZE)
+    assert viewer_browser.color_share(png, draw.OBSTACLE) > 0.03  # furniture covers much of the canvas
+    assert viewer_browser.color_share(png, draw.VALID) > 0.003  # valid samples, green
+    assert viewer_browser.color_share(png, draw.COLLIDING) > 0.0005  # samples in collision, red
+
+
+def test_a_colliding_robot_shows_red(make_viewer, tmp_path):
+    v = make_viewer("2ds", seed=0)
+    centers = v.workspace.boxes.mean(axis=1)  # (K, 2)
+    block = centers[np.argmin(np.linalg.norm(centers - v.q, axis=1))]  # the block nearest the robot: in view
+    v.set_configuration(block)  # the robot's square inside the block: it pokes out of it, red
+    assert not v.valid
+    png = viewer_browser.screenshot(v.url, tmp_path / "colliding.png", size=SIZE)
+    assert viewer_browser.color_share(png, draw.COLLIDING) > 5e-5  # the robot (~100 px) is the only red thing
+    assert viewer_browser.color_share(png, draw.VALID) == 0.0  # and nothing is green
+
+
+def test_the_embedded_snapshot_renders_without_a_server(tmp_path):
+    page = tmp_path / "snapshot.html"
+    with viewer.Viewer("3dc7", seed=0, port=0) as v:
+        page.write_text(v.html())
+    png = viewer_browser.screenshot(page.as_uri(), tmp_path / "snapshot.png", size=SIZE)
+    assert viewer_browser.color_share(png, draw.OBSTACLE) > 0.01
+

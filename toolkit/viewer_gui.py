@@ -1,0 +1,171 @@
+"""The viewer's GUI panel: scenario and seed, one slider per DoF, samples, plan player, layers.
+
+Every control calls a public method of :class:`toolkit.viewer.Viewer`, so whatever
+the panel does a script can do too. Errors in a callback are shown in the panel's
+status line instead of vanishing in viser's worker threads.
+"""
+
+from __future__ import annotations
+
+import threading
+from typing import TYPE_CHECKING, Callable
+
+import numpy as np
+
+from . import scenarios
+
+if TYPE_CHECKING:
+    from .viewer import Viewer
+
+PLANNER_SAMPLERS = ("BS", "OB", "G", "BT")  # the paper's four (§III-B)
+SAMPLERS = ("raw",) + PLANNER_SAMPLERS  # 'raw': uniform configurations, unfiltered
+PLAY_SECONDS = 8.0  # a whole path plays in this time
+PLAY_FPS = 20
+
+
+class Panel:
+    """Builds the GUI of ``viewer`` and keeps it in step with the scene."""
+
+    def __init__(self, viewer: Viewer):
+        self.viewer = viewer
+        gui = viewer.server.gui
+        self._syncing = False  # set while the panel writes slider values itself
+        self._player: threading.Thread | None = None
+        self._stop_playing = threading.Event()
+
+        with gui.add_folder("Workspace"):
+            self.scenario = gui.add_dropdown("scenario", sorted(scenarios.SCENARIOS))
+            self.seed = gui.add_number("seed", 0, min=0, step=1)
+            self.new_workspace = gui.add_button("new workspace", hint="next seed")
+        self.status = gui.add_markdown("")
+        self.configuration = gui.add_folder("Configuration")
+        self.sliders: list = []
+        with gui.add_folder("Samples"):
+            self.sampler = gui.add_dropdown("sampler", SAMPLERS, initial_value="raw")
+            self.n_samples = gui.add_number("attempts", 500, min=1, max=20000, step=1)
+            self.mark = gui.add_dropdown("mark at", ("base", "tip"))
+            self.sample = gui.add_button("sample")
+        with gui.add_folder("Plan"):
+            self.planner_sampler = gui.add_dropdown("PRM sampler", PLANNER_SAMPLERS)
+            self.plan = gui.add_button("plan (PRM)", hint="a new start / goal query")
+            self.plan_status = gui.add_markdown("")
+            self.play = gui.add_button("play / pause")
+            self.along = gui.add_slider("along path", 0.0, 1.0, 0.001, 0.0, disabled=True)
+        with gui.add_folder("Layers", expand_by_default=False):
+            self.layers = {layer: gui.add_checkbox(layer, True) for layer in viewer.visible}
+
+        self.scenario.on_update(self._guarded(self._reload))
+        self.seed.on_update(self._guarded(self._reload))
+        self.new_workspace.on_click(self._guarded(lambda _: setattr(self.seed, "value", int(self.seed.value) + 1)))
+        self.sample.on_click(self._guarded(lambda _: viewer.sample(
+            self.sampler.value, int(self.n_samples.value), seed=self._next_seed(), at=self.mark.value)))
+        self.plan.on_click(self._guarded(self._plan))
+        self.play.on_click(self._guarded(lambda _: self.toggle_play()))
+        self.along.on_update(self._guarded(lambda _: self._follow_path()))
+        for layer, box in self.layers.items():
+            box.on_update(self._guarded(lambda event, layer=layer: viewer.set_visible(layer, event.target.value)))
+
+    # -- hooks the viewer calls ------------------------------------------------------
+    def on_load(self) -> None:
+        """A new workspace: sync the scenario / seed inputs and rebuild one slider per DoF."""
+        viewer = self.viewer
+        self._rng = np.random.default_rng(viewer.seed)  # each press of "random", "sample", "plan" draws anew
+        self._syncing = True
+        self.scenario.value, self.seed.value = viewer.scenario.name, viewer.seed
+        self.configuration.remove()
+        gui, robot = viewer.server.gui, viewer.robot
+        self.configuration = gui.add_folder("Configuration", order=self.status.order + 0.5)
+        with self.configuration:
+            self.sliders = [gui.add_slider(name, float(lo), float(hi), float(hi - lo) / 500, float(lo))
+                            for name, lo, hi in zip(robot.dof_names, robot.lower, robot.upper)]
+            self.random = gui.add_button("random valid configuration")
+        for slider in self.sliders:
+            slider.on_update(self._guarded(lambda _: self._follow_sliders()))
+        self.random.on_click(self._guarded(lambda _: viewer.set_configuration(viewer.valid_configuration(self._rng))))
+        self.along.value, self.along.disabled = 0.0, True
+        self._syncing = False
+
+    def on_configuration(self) -> None:
+        """The robot moved: sliders and status line follow."""
+        viewer = self.viewer
+        self._syncing = True
+        for slider, value in zip(self.sliders, viewer.q):
+            slider.value = float(value)
+        self._syncing = False
+        text = f"**{viewer.scenario.title}**, seed {viewer.seed} — exact: " + (
+            "**valid**" if viewer.valid else "**in collision**")
+        if viewer.probability is not None:
+            verdict = "agrees" if viewer.predicted_valid == viewer.valid else "**disagrees**"
+            text += f"; model: p(valid) = {viewer.probability:.2f}, {verdict}"
+        elif viewer.model_error:
+            text += f"; model not used: {viewer.model_error}"
+        self.status.content = text
+
+    def on_plan(self, result) -> None:
+        """A plan is shown: report it and ready the path slider."""
+        stats = result.stats
+        self.plan_status.content = (
+            f"{'path of ' + str(len(result.path)) + ' nodes' if result.success else '**no path found**'}; "
+            f"roadmap {len(result.roadmap.nodes)} nodes, {stats.get('rounds', '?')} rounds, "
+            f"{stats.get('total_s', 0.0):.2f} s")
+        self._syncing = True
+        self.along.value, self.along.disabled = 0.0, self.viewer.path is None
+        self._syncing = False
+
+    def show_error(self, err: Exception) -> None:
+        self.status.content = f"**error:** {err}"
+
+    # -- path player --------------------------------------------------------------------
+    def toggle_play(self) -> None:
+        """Play the robot along the path from the slider's place, or pause it."""
+        if self._player is not None and self._player.is_alive():
+            self.stop_playing()
+            return
+        if self.viewer.path is None:
+            raise ValueError("no path to play: press 'plan (PRM)' first")
+        self._stop_playing.clear()
+        self._player = threading.Thread(target=self._play, daemon=True)
+        self._player.start()
+
+    def stop_playing(self) -> None:
+        self._stop_playing.set()
+        if self._player is not None and self._player is not threading.current_thread():
+            self._player.join()
+        self._player = None
+
+    def _play(self) -> None:
+        step = 1.0 / (PLAY_SECONDS * PLAY_FPS)
+        start = 0.0 if self.along.value >= 1.0 else float(self.along.value)
+        for t in np.arange(start + step, 1.0 + step, step):
+            if self._stop_playing.wait(1.0 / PLAY_FPS):
+                return
+            self.along.value = float(min(t, 1.0))
+
+    # -- callbacks -----------------------------------------------------------------------
+    def _plan(self, _event) -> None:
+        self.plan_status.content = "planning…"
+        self.viewer.plan(self.planner_sampler.value, seed=self._next_seed())
+
+    def _next_seed(self) -> int:
+        return int(self._rng.integers(2 ** 31))
+
+    def _reload(self, _event) -> None:
+        if not self._syncing:
+            self.viewer.load(self.scenario.value, int(self.seed.value))
+
+    def _follow_sliders(self) -> None:
+        if not self._syncing:
+            self.viewer.set_configuration(np.array([slider.value for slider in self.sliders]))
+
+    def _follow_path(self) -> None:
+        if not self._syncing and self.viewer.path is not None:
+            self.viewer.set_configuration(self.viewer.path_configurations([self.along.value])[0])
+
+    def _guarded(self, callback: Callable) -> Callable:
+        """``callback`` with any error shown in the status line."""
+        def run(event) -> None:
+            try:
+                callback(event)
+            except Exception as err:  # noqa: BLE001 - shown to the user, not swallowed
+                self.show_error(err)
+        return run

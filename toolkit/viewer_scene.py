@@ -1,0 +1,191 @@
+"""Drawing the paper's scenes with Viser: obstacle boxes, robots, samples, roadmaps (§V-A).
+
+Everything is drawn in 3D, as batches of boxes (one Viser node per batch, one unit
+cube instanced with per-box pose, size and color). A 2D workspace (2DS) becomes a
+flat scene: its blocks are extruded to :data:`FLAT_HEIGHT` and the point robot's
+square to :data:`FLAT_ROBOT_HEIGHT`, so it pokes out of any block it collides with.
+
+Colors tell validity (§III): green valid, red in collision; where a learned model
+disagrees with the exact checker, magenta marks "predicted valid but colliding"
+(the dangerous error) and orange "predicted colliding but valid".
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+import trimesh
+import viser
+import viser.transforms as vtf
+
+from .robots import BoxRobot
+from .workspace import Workspace
+
+FLAT_HEIGHT = 1.0  # height of a 2D block in the flat 3D scene
+FLAT_ROBOT_HEIGHT = 1.5  # height of the 2D point robot's square
+
+OBSTACLE = (72, 104, 196)  # slate blue, the browser test looks for it
+OBSTACLE_OPACITY = {"3dc": 0.45}  # by workspace family: see through the clutter to the robot inside
+VALID = (46, 170, 84)
+COLLIDING = (222, 48, 48)
+PREDICTED_VALID_BUT_COLLIDING = (190, 40, 210)  # magenta: the model's dangerous mistake
+PREDICTED_COLLIDING_BUT_VALID = (245, 160, 20)  # orange: the model's wasteful mistake
+POINT_SIZE = {"2ds": 0.25, "3do": 0.2, "3dc": 0.12}  # sample markers, by workspace family
+REGION = (90, 90, 90)
+ROADMAP = (160, 160, 160)
+PATH = (0, 170, 200)  # cyan: apart from every validity color
+
+_UNIT_CUBE = trimesh.creation.box(extents=(1.0, 1.0, 1.0))
+
+
+@dataclass(frozen=True)
+class Boxes:
+    """Oriented boxes in 3D: centres ``(N, 3)``, rotations ``(N, 3, 3)``, full sizes ``(N, 3)``."""
+
+    centers: np.ndarray
+    rotations: np.ndarray
+    sizes: np.ndarray
+
+    def __len__(self) -> int:
+        return len(self.centers)
+
+    def scaled(self, factor: float) -> "Boxes":
+        """The same boxes, each ``factor`` times larger about its centre."""
+        return Boxes(self.centers, self.rotations, self.sizes * factor)
+
+
+def obstacle_boxes(workspace: Workspace) -> Boxes:
+    """The workspace's ``K`` axis-aligned blocks; 2D blocks are extruded to ``FLAT_HEIGHT``."""
+    lo, hi = _lift_points(workspace.boxes[:, 0], 0.0), _lift_points(workspace.boxes[:, 1], FLAT_HEIGHT)  # (K, 3)
+    return Boxes((lo + hi) / 2, np.broadcast_to(np.eye(3), (len(lo), 3, 3)), hi - lo)
+
+
+def robot_boxes(robot: BoxRobot, Q) -> Boxes:
+    """Link boxes of every configuration in ``Q (N, dof)``, ``N * L`` boxes (configuration-major)."""
+    centers, rotations, half = robot.link_boxes(Q)  # (N, L, D), (N, L, D, D), (L, D)
+    n, links = centers.shape[:2]
+    sizes = np.broadcast_to(2 * half, (n, links, robot.dim))  # (N, L, D)
+    if robot.dim == 2:
+        centers = _lift_points(centers, FLAT_ROBOT_HEIGHT / 2)
+        lifted = np.broadcast_to(np.eye(3), (n, links, 3, 3)).copy()
+        lifted[..., :2, :2] = rotations
+        rotations = lifted
+        sizes = _lift_points(sizes, FLAT_ROBOT_HEIGHT)
+    return Boxes(centers.reshape(-1, 3), rotations.reshape(-1, 3, 3), sizes.reshape(-1, 3))
+
+
+def config_points(robot: BoxRobot, Q, at: str = "base") -> np.ndarray:
+    """One point per configuration, ``(N, 3)``: the centre of its first (``"base"``) or last (``"tip"``) link."""
+    if at not in ("base", "tip"):
+        raise ValueError(f"mark configurations at 'base' or 'tip', not {at!r}")
+    centers = robot.link_boxes(Q)[0][:, 0 if at == "base" else -1]  # (N, D)
+    return _lift_points(centers, FLAT_ROBOT_HEIGHT) if robot.dim == 2 else centers
+
+
+def region_edges(workspace: Workspace) -> np.ndarray:
+    """The 12 edges of the workspace region, ``(12, 2, 3)`` (2D: the extruded region)."""
+    lo, hi = _lift_points(workspace.lower, 0.0), _lift_points(workspace.upper, FLAT_HEIGHT)
+    corners = np.array([[hi[d] if (i >> d) & 1 else lo[d] for d in range(3)] for i in range(8)])  # (8, 3)
+    pairs = [(i, i | (1 << d)) for i in range(8) for d in range(3) if not (i >> d) & 1]
+    return corners[np.array(pairs)]
+
+
+def edge_segments(points: np.ndarray, edges: np.ndarray) -> np.ndarray:
+    """Segments ``(E, 2, 3)`` joining ``points (V, 3)`` along ``edges (E, 2)`` of vertex indices."""
+    return np.asarray(points, dtype=float)[np.asarray(edges, dtype=int).reshape(-1, 2)]
+
+
+def polyline_segments(points: np.ndarray) -> np.ndarray:
+    """Segments ``(P - 1, 2, 3)`` joining consecutive ``points (P, 3)``."""
+    points = np.asarray(points, dtype=float)
+    return np.stack([points[:-1], points[1:]], axis=1)
+
+
+def validity_colors(valid: np.ndarray, predicted: np.ndarray | None = None) -> np.ndarray:
+    """``(N, 3)`` uint8 colors: green / red by exact validity, disagreements with ``predicted`` marked."""
+    valid = np.asarray(valid, dtype=bool)
+    colors = np.where(valid[:, None], VALID, COLLIDING)
+    if predicted is not None:
+        predicted = np.asarray(predicted, dtype=bool)
+        colors[predicted & ~valid] = PREDICTED_VALID_BUT_COLLIDING
+        colors[~predicted & valid] = PREDICTED_COLLIDING_BUT_VALID
+    return colors.astype(np.uint8)
+
+
+def probability_colors(probability: np.ndarray) -> np.ndarray:
+    """``(N, 3)`` uint8 colors blending red (p = 0, colliding) to green (p = 1, valid)."""
+    p = np.clip(np.asarray(probability, dtype=float), 0.0, 1.0)[:, None]  # (N, 1)
+    return np.round((1 - p) * np.array(COLLIDING) + p * np.array(VALID)).astype(np.uint8)
+
+
+def add_boxes(scene: viser.SceneApi, name: str, boxes: Boxes, colors, *, opacity: float | None = None,
+              wireframe: bool = False, visible: bool = True) -> viser.BatchedMeshHandle:
+    """One batched-mesh node drawing ``boxes``; ``colors`` is one RGB or ``(N, 3)``."""
+    return scene.add_batched_meshes_simple(
+        name, _UNIT_CUBE.vertices, _UNIT_CUBE.faces,
+        batched_wxyzs=_quaternions(boxes.rotations), batched_positions=boxes.centers,
+        batched_scales=boxes.sizes, batched_colors=np.asarray(colors, dtype=np.uint8),
+        opacity=opacity, wireframe=wireframe, flat_shading=not wireframe, lod="off",
+        visible=visible,
+    )
+
+
+def move_boxes(handle: viser.BatchedMeshHandle, boxes: Boxes, colors) -> None:
+    """Update the poses and colors of a node made by :func:`add_boxes` (same number of boxes)."""
+    handle.batched_positions = boxes.centers.astype(np.float32)
+    handle.batched_wxyzs = _quaternions(boxes.rotations)
+    handle.batched_colors = np.asarray(colors, dtype=np.uint8)
+
+
+def draw_workspace(scene: viser.SceneApi, workspace: Workspace) -> dict[str, viser.SceneNodeHandle]:
+    """Obstacles (one batched node of ``K`` boxes), the region's outline and a floor grid, by layer name."""
+    width, depth = (workspace.upper - workspace.lower)[:2]
+    center = np.append((workspace.lower + workspace.upper)[:2] / 2, 0.0)
+    return {
+        "obstacles": add_boxes(scene, "/workspace/obstacles", obstacle_boxes(workspace), OBSTACLE,
+                               opacity=OBSTACLE_OPACITY.get(workspace.family)),
+        "region": scene.add_line_segments("/workspace/region", region_edges(workspace), REGION, thickness=0.05),
+        "floor": scene.add_grid("/workspace/floor", width=width, height=depth, cell_size=1.0, section_size=5.0,
+                                position=center),
+    }
+
+
+# Camera by the robot's base kind: what to look at, and the offset to the camera in workspace extents.
+CAMERA = {
+    "point2d": ("region", (-0.1, -0.75, 0.8)),  # the whole flat scene
+    "planar": ("robot", (-0.05, -0.2, 0.18)),  # near the youBot: it is small in its big office
+    "free": ("region", (-0.6, -1.3, 0.9)),  # the whole clutter, from outside
+}
+
+
+def camera_pose(robot: BoxRobot, workspace: Workspace, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(look_at, position)`` of the camera, from the front-left (see :data:`CAMERA`)."""
+    target, offset = CAMERA[robot.base]
+    if target == "robot":
+        look_at = config_points(robot, q[None])[0] * np.array([1.0, 1.0, 0.0])  # its base, on the floor
+    else:
+        look_at = _lift_points((workspace.lower + workspace.upper) / 2, 0.0)
+        look_at[0] += 0.1 * float(workspace.upper[0] - workspace.lower[0])  # to the right: the GUI panel covers it
+    return look_at, look_at + float(np.max(workspace.upper - workspace.lower)) * np.array(offset)
+
+
+def light(scene: viser.SceneApi) -> None:
+    """Soft light from the front-left: viser's default lights wash the tops of boxes out to white."""
+    scene.configure_default_lights(enabled=False)
+    scene.configure_environment_map(environment_intensity=0.2)
+    scene.add_light_ambient("/lights/ambient", intensity=0.4)
+    scene.add_light_directional("/lights/key", intensity=1.2, position=(-1.0, -2.0, 3.0))
+
+
+def _quaternions(rotations: np.ndarray) -> np.ndarray:
+    """Rotation matrices ``(N, 3, 3)`` as wxyz quaternions ``(N, 4)``."""
+    return vtf.SO3.from_matrix(np.asarray(rotations, dtype=float)).wxyz.astype(np.float32)
+
+
+def _lift_points(points: np.ndarray, z: float) -> np.ndarray:
+    """``(..., D)`` points as ``(..., 3)``: 2D points get height ``z``, 3D points are unchanged."""
+    points = np.asarray(points, dtype=float)
+    if points.shape[-1] == 3:
+        return points
+    return np.concatenate([points, np.full(points.shape[:-1] + (1,), z)], axis=-1)
