@@ -53,7 +53,11 @@ def test_quick_reproduction_meets_the_contract(name, tmp_path):
     check_files(out, name)
     if name == "2ds":  # a finished run is not redone: every stage comes from the cache
         again = experiments.reproduce(name, quick=True, out=out, progress=False)
-        assert again["stage_seconds"] == {}
+        assert again["recomputed"] == []
+        assert again["stage_seconds"] == results["stage_seconds"]  # the times of the first run, kept
+        summary = experiments.summary_markdown([results, results])  # `--scenario all`: a row per scenario
+        table1 = summary.split("## Table 1")[1].split("## Table 2")[0]
+        assert table1.count("| 2ds | **") == 2
         assert again["planning"] == results["planning"]
 
 

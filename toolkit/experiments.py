@@ -37,18 +37,30 @@ QUICK_MAX_ROUNDS = 5  # quick models predict poorly: give up sooner than a full 
 
 
 class Stages:
-    """The cache folder of one run: each stage's file is written once, atomically, then reused."""
+    """The cache folder of one run: each stage's file is written once, atomically, then reused.
+
+    ``seconds`` holds how long each stage took when it was computed (kept in the cache,
+    so a resumed run still reports them); ``recomputed`` the stages this run computed.
+    """
 
     def __init__(self, out: Path, settings: dict, progress: bool):
         self.cache = out / "cache"
         self.cache.mkdir(parents=True, exist_ok=True)
         self.progress = progress
-        self.seconds: dict[str, float] = {}
         recorded = self.cache / "settings.json"
         if recorded.exists() and json.loads(recorded.read_text()) != settings:
             raise ValueError(f"{out} holds a run with other settings {recorded.read_text()}; "
                              f"choose another --out, or delete {out} to start again")
         write_json(recorded, settings)
+        self._seconds_file = self.cache / "stage_seconds.json"
+        self.seconds: dict[str, float] = json.loads(self._seconds_file.read_text()) if self._seconds_file.exists() else {}
+        self.recomputed: list[str] = []
+
+    def took(self, name: str, seconds: float) -> None:
+        """Record that stage ``name`` was computed in ``seconds``."""
+        self.seconds[name] = seconds
+        self.recomputed.append(name)
+        write_json(self._seconds_file, self.seconds)
 
     def json(self, name: str, compute) -> dict:
         """The cached JSON ``name``, or ``compute()`` written atomically."""
@@ -57,8 +69,8 @@ class Stages:
             return json.loads(path.read_text())
         began = time.perf_counter()
         value = compute()
-        self.seconds[name] = time.perf_counter() - began
         write_json(path, value)
+        self.took(name, time.perf_counter() - began)
         return value
 
 
@@ -77,7 +89,7 @@ def _splits(stages: Stages, scenario, preset: str, seed: int, quick: bool) -> di
     splits = training.preset_splits(scenario, preset, seed, quick=quick, progress=stages.progress)
     for name, dataset in splits.items():
         dataset.save(paths[name])
-    stages.seconds["data"] = time.perf_counter() - began
+    stages.took("data", time.perf_counter() - began)
     return splits
 
 
@@ -91,7 +103,7 @@ def _models(stages: Stages, scenario, preset: str, splits, seed: int, quick: boo
     shutil.rmtree(tmp, ignore_errors=True)
     checkpoints.save_checkpoint(models, tmp)
     tmp.rename(folder)  # a folder appears whole or not at all
-    stages.seconds["models"] = time.perf_counter() - began
+    stages.took("models", time.perf_counter() - began)
     return models
 
 
@@ -147,7 +159,7 @@ def reproduce(scenario_name: str, preset: str = "paper", quick: bool = False, se
     results = dict(settings, cae=learning["cae"], mlp=learning["mlp"], threshold=learning["threshold"],
                    planning=planning, throughput=throughput,
                    improvement={"sampling": improvement(planning, "sampling_s"), "total": improvement(planning, "total_s")},
-                   stage_seconds=stages.seconds, wall_seconds=time.perf_counter() - began,
+                   stage_seconds=stages.seconds, recomputed=stages.recomputed, wall_seconds=time.perf_counter() - began,
                    versions={"torch": torch.__version__, "numpy": np.__version__})
     write_json(out / "results.json", results)
     (out / "tables.md").write_text(tables_markdown(results))
@@ -180,53 +192,83 @@ def _time(mean_std) -> str:
     return f"{mean:.3g} ± {std:.2g}"
 
 
+def _row(cells: list[str]) -> str:
+    return "| " + " | ".join(cells) + " |"
+
+
+def _table(header: list[str], rows: list[list[str]]) -> list[str]:
+    return [_row(header), _row(["---"] * len(header))] + [_row(r) for r in rows]
+
+
+def _ours_paper(ours: float, paper: float) -> str:
+    return f"**{_pct(ours)}** / {_pct(paper)}"
+
+
+def paper_tables(runs: list[dict]) -> list[str]:
+    """Tables 1-3 of the paper and the times behind Table 3, one row per run (``results.json`` dicts),
+    our value next to the published one (``ours / paper``) in every cell."""
+    table1 = [[r["scenario"]] + [_ours_paper(r["cae"][k], paper_numbers.CAE[r["scenario"]][k])
+                                 for k in ("seen_acc", "unseen_acc")] for r in runs]
+    table2 = [[r["scenario"]] + [_ours_paper(r["mlp"][s][m], paper_numbers.MLP[r["scenario"]][s][m])
+                                 for s in ("seen", "unseen") for m in ("acc", "tpr", "tnr")] for r in runs]
+    table3 = [[r["scenario"]] + [_ours_paper(r["improvement"][k][s], paper_numbers.IMPROVEMENT[r["scenario"]][k][s])
+                                 for k in ("sampling", "total") for s in SAMPLERS] for r in runs]
+    times = []
+    for r in runs:
+        for s in SAMPLERS:
+            planning, published = r["planning"][s], paper_numbers.TIMES[r["scenario"]]
+            cells = [f"**{_time((planning[m][key], planning[m].get(key + '_std', 0.0)))}** / {_time(published[key][s][i])}"
+                     for key in ("sampling_s", "total_s") for i, m in enumerate(MODES)]
+            times.append([r["scenario"], s] + cells + [" / ".join(_pct(planning[m][rate]) for m in MODES)
+                                                        for rate in ("success_rate", "path_valid_rate")])
+    thresholds = ", ".join(f"{r['scenario']} {r['threshold']:.2f}" for r in runs)
+    return (["## Table 1: CAE reconstruction accuracy", ""]
+            + _table(["", "Seen", "Unseen"], table1)
+            + ["", "## Table 2: MLP accuracy, TPR, TNR", ""]
+            + _table(["", "Seen Acc", "Seen TPR", "Seen TNR", "Unseen Acc", "Unseen TPR", "Unseen TNR"], table2)
+            + ["", f"Decision threshold on P(valid): {thresholds}.", "",
+               "## Table 3: time improvement ratio (without − with) / without", ""]
+            + _table([""] + [f"Sampling {s}" for s in SAMPLERS] + [f"Total {s}" for s in SAMPLERS], table3)
+            + ["", "## Times behind Table 3 (seconds per query, mean ± std; ours / paper)", ""]
+            + _table(["", "sampler", "sampling without", "sampling with", "total without", "total with",
+                      "success without / with", "paths valid without / with"], times))
+
+
+def run_costs(runs: list[dict]) -> list[str]:
+    """Checker throughput and the seconds each stage took, one row per run."""
+    rows = []
+    for r in runs:
+        t, seconds = r["throughput"], r["stage_seconds"]
+        planning = sum(v for k, v in seconds.items() if k.startswith("planning_"))
+        rows.append([r["scenario"], f"{t['exact_cfg_per_s']:,.0f}", f"{t['learned_cfg_per_s']:,.0f}", f"{t['ratio']:.3g}"]
+                    + [f"{seconds[k]:.0f}" if k in seconds else "n/a" for k in ("data", "models")]
+                    + [f"{planning:.0f}", f"{sum(seconds.values()):.0f}"])
+    return (["## Checker throughput (configurations per second, median) and stage times (seconds)", ""]
+            + _table(["", "exact cfg/s", "learned cfg/s", "learned / exact", "data s", "models s", "planning s",
+                      "all stages s"], rows))
+
+
 def tables_markdown(results: dict) -> str:
-    """Tables 1-3 of the paper with our value next to the published one (``ours / paper``) in every cell."""
-    name = results["scenario"]
-    cae, mlp, planning = results["cae"], results["mlp"], results["planning"]
-    paper_cae, paper_mlp = paper_numbers.CAE[name], paper_numbers.MLP[name]
-    lines = [f"# {scenarios.get(name).title} — preset `{results['preset']}`"
-             f"{' (quick)' if results['quick'] else ''}, seed {results['seed']}", "",
-             "Every cell: **ours** / paper.", "",
-             "## Table 1: CAE reconstruction accuracy", "", "| | Seen | Unseen |", "| --- | --- | --- |",
-             f"| {name} | **{_pct(cae['seen_acc'])}** / {_pct(paper_cae['seen_acc'])} "
-             f"| **{_pct(cae['unseen_acc'])}** / {_pct(paper_cae['unseen_acc'])} |", "",
-             "## Table 2: MLP accuracy, TPR, TNR", "",
-             "| | Seen Acc | Seen TPR | Seen TNR | Unseen Acc | Unseen TPR | Unseen TNR |",
-             "| --- | --- | --- | --- | --- | --- | --- |",
-             "| " + name + " | " + " | ".join(f"**{_pct(mlp[s][m])}** / {_pct(paper_mlp[s][m])}"
-                                             for s in ("seen", "unseen") for m in ("acc", "tpr", "tnr")) + " |",
-             "", f"Decision threshold on P(valid): {results['threshold']:.2f}.", "",
-             "## Table 3: time improvement ratio (without − with) / without", "",
-             "| | " + " | ".join(f"Sampling {s}" for s in SAMPLERS) + " | " + " | ".join(f"Total {s}" for s in SAMPLERS) + " |",
-             "| --- " * 9 + "|",
-             "| " + name + " | " + " | ".join(
-                 f"**{_pct(results['improvement'][k][s])}** / {_pct(paper_numbers.IMPROVEMENT[name][k][s])}"
-                 for k in ("sampling", "total") for s in SAMPLERS) + " |", "",
-             "## Times behind Table 3 (seconds per query, mean ± std; ours / paper)", "",
-             "| sampler | sampling without | sampling with | total without | total with | success without / with | paths valid without / with |",
-             "| --- | --- | --- | --- | --- | --- | --- |"]
-    paper_times = paper_numbers.TIMES[name]
-    for s in SAMPLERS:
-        cells = []
-        for key in ("sampling_s", "total_s"):
-            for i, mode in enumerate(MODES):
-                ours = (planning[s][mode][key], planning[s][mode].get(key + "_std", 0.0))
-                cells.append(f"**{_time(ours)}** / {_time(paper_times[key][s][i])}")
-        cells.append(" / ".join(_pct(planning[s][m]["success_rate"]) for m in MODES))
-        cells.append(" / ".join(_pct(planning[s][m]["path_valid_rate"]) for m in MODES))
-        lines.append(f"| {s} | " + " | ".join(cells) + " |")
-    t = results["throughput"]
-    lines += ["", "## Checker throughput (configurations per second, median)", "",
-              f"exact {t['exact_cfg_per_s']:,.0f}; learned {t['learned_cfg_per_s']:,.0f}; ratio {t['ratio']:.1f}", ""]
-    return "\n".join(lines)
+    """One run's tables: the paper's Tables 1-3 with the published numbers beside ours, and its costs."""
+    title = (f"# {scenarios.get(results['scenario']).title} — preset `{results['preset']}`"
+             f"{' (quick)' if results['quick'] else ''}, seed {results['seed']}")
+    return "\n".join([title, "", "Every cell: **ours** / paper.", ""] + paper_tables([results]) + [""]
+                     + run_costs([results]) + [""])
+
+
+def summary_markdown(runs: list[dict]) -> str:
+    """Several scenarios' tables in one: a row per scenario, as in the paper."""
+    first = runs[0]
+    title = f"# Preset `{first['preset']}`{' (quick)' if first['quick'] else ''}, seed {first['seed']}"
+    return "\n".join([title, "", "Every cell: **ours** / paper.", ""] + paper_tables(runs) + [""]
+                     + run_costs(runs) + [""])
 
 
 def reproduce_many(names: list[str], preset: str = "paper", quick: bool = False, seed: int = 0,
                    out: str | Path = "results", progress: bool = True) -> dict[str, dict]:
-    """:func:`reproduce` for several scenarios into ``out/<scenario>``, plus ``out/tables.md`` joining their tables."""
+    """:func:`reproduce` for several scenarios into ``out/<scenario>``, plus ``out/tables.md`` with a row per scenario."""
     out = Path(out)
     results = {name: reproduce(name, preset, quick, seed, out / name, progress) for name in names}
     out.mkdir(parents=True, exist_ok=True)
-    (out / "tables.md").write_text("\n".join(tables_markdown(r) for r in results.values()))
+    (out / "tables.md").write_text(summary_markdown(list(results.values())))
     return results
