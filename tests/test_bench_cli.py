@@ -37,6 +37,21 @@ def test_bench_from_the_command_line(command):
     assert json.loads(done.stdout)["exact_cfg_per_s"] > 0
 
 
+def test_bench_with_a_checkpoint_times_prm_with_and_without_it(capsys, checkpoint_2ds):
+    assert cli.main(["bench", "--scenario", "2ds", "--checkpoint", str(checkpoint_2ds), "--workspaces", "1",
+                     "--pairs", "2", "--json"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert set(result["planning"]) == {"BS", "OB", "G", "BT"}
+    for row in result["planning"].values():
+        assert row["sampling_ratio"] > 0 and row["total_ratio"] > 0
+        assert 0.0 <= row["success_with"] <= 1.0 and 0.0 <= row["success_without"] <= 1.0
+
+
+def test_bench_refuses_a_checkpoint_of_another_scenario(capsys, checkpoint_2ds):
+    assert cli.main(["bench", "--scenario", "3dc7", "--checkpoint", str(checkpoint_2ds), "--json"]) == 2
+    assert "trained for scenario '2ds', not '3dc7'" in capsys.readouterr().err
+
+
 def test_bench_refuses_an_unknown_scenario(capsys):
     with pytest.raises(SystemExit) as exit_info:
         cli.main(["bench", "--scenario", "4dx", "--json"])

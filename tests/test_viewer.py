@@ -17,7 +17,7 @@ import zstandard
 
 from matplotlib import image as mpimg
 
-from toolkit import checkpoints, learned, scenarios, training, viewer, viewer_browser
+from toolkit import learned, scenarios, viewer, viewer_browser
 from toolkit import viewer_scene as draw
 from toolkit.collision import CollisionChecker, exact_checker
 
@@ -155,13 +155,6 @@ def test_a_wrong_model_is_marked_everywhere(make_viewer, rng):
 def test_a_model_of_another_robot_is_not_used(make_viewer):
     v = make_viewer("3dc9", predictor=lambda ws: Flipped(ws, scenarios.get("3dc7").robot))
     assert v.model is None and "chain7" in v.model_error and "model not used" in v.panel.status.content
-
-
-@pytest.fixture(scope="module")
-def checkpoint_2ds(tmp_path_factory):
-    splits = training.preset_splits("2ds", "strong", seed=0, quick=True, progress=False)
-    models = training.train_models("2ds", "strong", splits, seed=0, progress=False, quick=True, device="cpu")
-    return checkpoints.save_checkpoint(models, tmp_path_factory.mktemp("ckpt"))
 
 
 def test_a_trained_checkpoint_colors_the_robot_and_samples(make_viewer, checkpoint_2ds, rng):

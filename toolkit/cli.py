@@ -17,12 +17,15 @@ SCENARIO_NAMES = sorted(scenarios.SCENARIOS)
 
 
 def cmd_bench(args: argparse.Namespace) -> int:
-    from . import bench
+    from . import bench, checkpoints
 
     scenario = scenarios.get(args.scenario)
+    models = checkpoints.load_models(args.checkpoint, scenario.name) if args.checkpoint else None
     result = {"scenario": scenario.name, "exact_cfg_per_s": bench.exact_throughput(scenario, seed=args.seed),
-              "learned_cfg_per_s": bench.learned_throughput(scenario, args.preset, seed=args.seed)}
+              "learned_cfg_per_s": bench.learned_throughput(scenario, args.preset, seed=args.seed, models=models)}
     result["ratio"] = result["learned_cfg_per_s"] / result["exact_cfg_per_s"]
+    if models is not None:
+        result["planning"] = bench.planning_ratios(scenario, models, args.workspaces, args.pairs, seed=args.seed)
     print(json.dumps(result) if args.json else "\n".join(f"{k}: {v}" for k, v in result.items()))
     return 0
 
@@ -107,6 +110,10 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--json", action="store_true", help="print one JSON object")
     bench.add_argument("--preset", choices=["paper", "strong"], default="paper",
                        help="networks whose learned throughput is measured (untrained: speed does not depend on weights)")
+    bench.add_argument("--checkpoint", help="a trained model (from `toolkit train`, or DIR/cache/checkpoint of "
+                                            "`toolkit reproduce`): also time PRM with and without it")
+    bench.add_argument("--workspaces", type=int, default=2, help="with --checkpoint: query workspaces to plan in")
+    bench.add_argument("--pairs", type=int, default=2, help="with --checkpoint: start/goal pairs per workspace")
     bench.set_defaults(func=cmd_bench)
 
     # -- train (learning issue) --
