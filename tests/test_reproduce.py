@@ -1,11 +1,12 @@
 """`toolkit reproduce --quick` for every scenario, checked against the contract of DESIGN.md."""
 
 import json
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
 
-from toolkit import cli, experiments, paper_numbers, scenarios
+from toolkit import cli, experiments, paper_numbers, presets, scenarios
 
 RATE_KEYS = ("success_rate", "path_valid_rate")
 TIME_KEYS = ("sampling_s", "total_s")
@@ -83,3 +84,20 @@ def test_an_interrupted_stage_leaves_no_file_a_later_run_trusts(tmp_path):
 def test_improvement_is_the_papers_table_3_measure():
     planning = {s: {"without": {"total_s": 2.0}, "with": {"total_s": 1.5}} for s in paper_numbers.SAMPLERS}
     assert experiments.improvement(planning, "total_s") == {s: 0.25 for s in paper_numbers.SAMPLERS}
+
+
+@pytest.mark.parametrize("preset, screened", [("paper", False), ("strong", True)])
+def test_planning_with_prediction_follows_the_presets_edge_rule(preset, screened, monkeypatch, tmp_path):
+    """``paper``: Algorithm 1 as published (edges checked exactly); ``strong``: learned edge screening."""
+    calls = []
+
+    def fake_run(scenario, query_set, sampler, factory, options, seed):
+        calls.append((sampler, factory is not None, options.screen_edges))
+        return [], {"sampling_s": 1.0, "total_s": 1.0}
+
+    monkeypatch.setattr(experiments.queries, "run_queries", fake_run)
+    models = SimpleNamespace(preset=presets.get(preset))
+    stages = experiments.Stages(tmp_path, {"scenario": "2ds"}, progress=False)
+    experiments._planning(stages, scenarios.get("2ds"), models, seed=0, quick=True)
+    assert len(calls) == 8
+    assert {screen for _, predicted, screen in calls if predicted} == {screened}

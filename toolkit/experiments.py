@@ -120,7 +120,8 @@ def _planning(stages: Stages, scenario, models, seed: int, quick: bool) -> dict:
     counts = QUICK_QUERIES[scenario.name] if quick else (None, None)
     query_set = queries.make_queries(scenario, seed, *counts)
     n_samples = QUICK_PLAN_SAMPLES.get(scenario.name, scenario.plan_samples) if quick else scenario.plan_samples
-    options = queries.default_options(scenario, n_samples=n_samples, **({"max_rounds": QUICK_MAX_ROUNDS} if quick else {}))
+    options = queries.default_options(scenario, n_samples=n_samples, screen_edges=models.preset.screen_edges,
+                                      **({"max_rounds": QUICK_MAX_ROUNDS} if quick else {}))
     factory = {"without": None, "with": lambda ws: LearnedChecker(ws, models)}
     planning = {}
     runs = [(s, m) for s in SAMPLERS for m in MODES]

@@ -5,6 +5,7 @@ for the MLP, dropout 0.5, lambda = 1e-3, the MLP sees ``[z, q]``. The paper give
 no epoch counts or batch sizes; ours are stated here. One measured deviation: the
 CAE trained with Adagrad at learning rate 0.1 diverges (2DS: loss 1e22 after 200
 epochs) and at 0.01 collapses to the all-free grid, so the CAE uses AdamW at 1e-3.
+Planning with it is the paper's Algorithm 1: predicted samples, exactly checked edges.
 
 ``strong``: the same CAE; the MLP sees ``[z, patch, pose]`` (see
 :mod:`toolkit.encoding`): the occupancy around the robot's base cell, the base's
@@ -25,6 +26,9 @@ kinematics, where each link box is. Each choice, measured on unseen workspaces
   cosine schedule, batch 256, inputs standardized (folded into the first layer),
   threshold calibrated on 10 % held-out training workspaces. 20 epochs: 3DC-9 94.0
   instead of 93.7, for twice the MLP's training time.
+- planning with it screens edges by prediction too (``screen_edges``, the paper's
+  future work; see :mod:`toolkit.prm`): only the candidate path's edges are checked
+  exactly.
 - CAE capped at 150 steps (the paper preset: 300): the 147M-parameter 3DO CAE takes
   2-5 s a step on 2 cores, and the MLP barely needs ``z`` once it sees the patch
   (3DO 98.2 with a 20-step CAE, 98.4 with 300). CAE accuracy seen/unseen at 150 vs
@@ -59,6 +63,7 @@ class Preset:
     cosine_schedule: bool = False  # learning rate decays to 0 along a cosine
     standardize: bool = False  # MLP inputs scaled to zero mean, unit variance on the training data
     holdout: float = 0.0  # share of training workspaces kept from the MLP to calibrate its threshold
+    screen_edges: bool = False  # planning with this model: learned edge screening (toolkit.prm), or the paper's exact edges
     quick: bool = False  # shrunk by quick_version()
 
     def quick_version(self) -> "Preset":
@@ -76,7 +81,8 @@ PRESETS: dict[str, Preset] = {
     "strong": Preset("strong", encoding="local", optimizer="adamw", lr=3e-3,
                      cae_optimizer="adamw", cae_lr=1e-3, dropout=0.0, cae_lambda=1e-3,
                      cae_epochs=300, cae_batch=10, cae_max_steps=150, mlp_epochs=10, mlp_batch=256, mlp_hidden=(64, 32),
-                     samples_factor=20, weight_decay=1e-4, cosine_schedule=True, standardize=True, holdout=0.1),
+                     samples_factor=20, weight_decay=1e-4, cosine_schedule=True, standardize=True, holdout=0.1,
+                     screen_edges=True),
 }
 
 # Quick runs also use fewer workspaces than the paper (seen, seen-test, unseen).
