@@ -1,6 +1,7 @@
 """`toolkit reproduce --quick` for every scenario, checked against the contract of DESIGN.md."""
 
 import json
+import shutil
 from types import SimpleNamespace
 
 import numpy as np
@@ -87,7 +88,7 @@ def test_improvement_is_the_papers_table_3_measure():
 
 
 @pytest.mark.parametrize("preset, screened", [("paper", False), ("strong", True)])
-def test_planning_with_prediction_follows_the_presets_edge_rule(preset, screened, monkeypatch, tmp_path):
+def test_planning_with_prediction_follows_the_presets_edge_rule(preset, screened, monkeypatch, tmp_path, checkpoint_2ds):
     """``paper``: Algorithm 1 as published (edges checked exactly); ``strong``: learned edge screening."""
     calls = []
 
@@ -98,6 +99,7 @@ def test_planning_with_prediction_follows_the_presets_edge_rule(preset, screened
     monkeypatch.setattr(experiments.queries, "run_queries", fake_run)
     models = SimpleNamespace(preset=presets.get(preset))
     stages = experiments.Stages(tmp_path, {"scenario": "2ds"}, progress=False)
-    experiments._planning(stages, scenarios.get("2ds"), models, seed=0, quick=True)
+    shutil.copytree(checkpoint_2ds, stages.cache / "checkpoint")
+    experiments._planning(stages, scenarios.get("2ds"), models, seed=0, quick=True, workers=1)
     assert len(calls) == 8
     assert {screen for _, predicted, screen in calls if predicted} == {screened}

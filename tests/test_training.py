@@ -50,7 +50,7 @@ def test_splits_follow_the_preset():
 def test_quick_strong_2ds_learns(quick_2ds):
     splits, models = quick_2ds
     scores = training.evaluate(models, splits)
-    assert set(scores) == {"cae", "mlp"} and set(scores["cae"]) == {"seen_acc", "unseen_acc"}
+    assert set(scores) == {"cae", "mlp"} and set(scores["cae"]) == {"seen_acc", "unseen_acc", "seen_all_free", "unseen_all_free"}
     assert set(scores["mlp"]["unseen"]) == {"acc", "tpr", "tnr"}
     assert scores["mlp"]["unseen"]["acc"] > 0.85  # balanced test set: chance is 0.5
     assert models.history["mlp"][-1] < models.history["mlp"][0]

@@ -50,7 +50,7 @@ def learned_throughput(scenario: Scenario, preset: str = "paper", batch: int = 1
     if models is None:
         recipe = presets.get(preset)
         torch.manual_seed(seed)
-        predictor = build_predictor(scenario, recipe.encoding, recipe.mlp_hidden, recipe.dropout).eval()
+        predictor = build_predictor(scenario, recipe.encoding, recipe.mlp_hidden, recipe.dropout, recipe.latent_input).eval()
         models = TrainedModels(scenario, recipe, predictor, seed)
     ws = data.workspaces(scenario, "query", 1, seed)[0]
     checker = LearnedChecker(ws, models)

@@ -77,7 +77,7 @@ def load_models(folder: str | Path, scenario: str | None = None) -> TrainedModel
     except TypeError as err:
         raise ValueError(f"checkpoint {folder}: {META} has an unreadable preset: {err}") from err
     scen = scenarios.get(meta["scenario"])
-    predictor = build_predictor(scen, preset.encoding, preset.mlp_hidden, preset.dropout)
+    predictor = build_predictor(scen, preset.encoding, preset.mlp_hidden, preset.dropout, preset.latent_input)
     if sizes(predictor) != meta["sizes"]:
         raise ValueError(f"checkpoint {folder}: recorded sizes {meta['sizes']} differ from the {meta['scenario']!r} "
                          f"networks of preset {preset.name!r}, {sizes(predictor)}")

@@ -92,9 +92,9 @@ def cmd_reproduce(args: argparse.Namespace) -> int:
 
     names = SCENARIO_NAMES if args.scenario == "all" else [args.scenario]
     if len(names) == 1:
-        experiments.reproduce(names[0], args.preset, args.quick, args.seed, args.out)
+        experiments.reproduce(names[0], args.preset, args.quick, args.seed, args.out, workers=args.workers)
     else:
-        experiments.reproduce_many(names, args.preset, args.quick, args.seed, args.out)
+        experiments.reproduce_many(names, args.preset, args.quick, args.seed, args.out, workers=args.workers)
     print(f"wrote {args.out}/tables.md and results.json; the tables:\n")
     print(open(f"{args.out}/tables.md").read())
     return 0
@@ -156,6 +156,8 @@ def build_parser() -> argparse.ArgumentParser:
     reproduce.add_argument("--quick", action="store_true", help="small counts, minutes per scenario")
     reproduce.add_argument("--seed", type=int, default=0)
     reproduce.add_argument("--out", required=True, help="output folder (also the cache for resuming)")
+    reproduce.add_argument("--workers", type=int, default=None,
+                           help="processes for the planning runs (default: one per core; 1: plan in this process)")
     reproduce.set_defaults(func=cmd_reproduce)
     return parser
 

@@ -1,4 +1,4 @@
-"""What the collision MLP sees: the paper's ``[z, q]``, or the ``strong`` preset's ``[z, patch, pose]``.
+"""What the collision MLP sees: the paper's ``[z, q]``, or ``[z, patch, pose]`` (the ``strong`` preset: ``z`` left out).
 
 - :class:`InputEncoding` ``"raw"``: ``[z, q]`` (§III-A2). ``"local"``: ``z``, the
   occupancy patch around the robot's base cell, and the *pose*: the base's position
@@ -130,7 +130,7 @@ class InputEncoding(nn.Module):
     def forward(self, z: torch.Tensor, grids: torch.Tensor, ws_index: torch.Tensor, Q: torch.Tensor) -> torch.Tensor:
         """MLP inputs ``(N, out_features)``: latents ``z (W, L)``, grids ``(W, *grid)``, ``ws_index (N,)``, ``Q (N, dof)``."""
         cell, pose = self.configs(Q)
-        return torch.cat([z[ws_index], self.cell_patches(grids)[ws_index, cell], pose], dim=1)
+        return torch.cat([z[ws_index, : self.latent_dim], self.cell_patches(grids)[ws_index, cell], pose], dim=1)
 
     def cell_patches(self, grids: torch.Tensor) -> torch.Tensor:
         """``(W, n_cells, P)``: the patch around every base cell of every grid ``(W, *grid)``."""

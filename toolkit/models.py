@@ -7,7 +7,7 @@
 - :class:`CollisionMLP`: ``[z, q] -> 2`` logits (invalid, valid), hidden blocks of
   Linear -> PReLU -> Dropout(p) (§V-B2).
 - :class:`~toolkit.encoding.InputEncoding` (in :mod:`toolkit.encoding`): what the MLP
-  sees, the paper's ``[z, q]`` or the ``strong`` preset's ``[z, patch, pose]``.
+  sees, the paper's ``[z, q]`` or ``[z, patch, pose]`` (the ``strong`` preset leaves out ``z``).
 - :class:`CollisionPredictor`: the three together, one ``state_dict``; its
   :meth:`~CollisionPredictor.context` folds everything a workspace gives the first
   layer (``z``, the patch of every base cell, the bias) into one table, so a
@@ -23,6 +23,7 @@ from .encoding import InputEncoding, reach_cells
 from .scenarios import Scenario
 
 VALID = 1  # class index of "valid" in the MLP's two logits
+PRELU_SLOPE = 0.25  # nn.PReLU's initial negative slope
 
 
 def _stack(widths: list[int], last_activation: bool) -> nn.Sequential:
@@ -39,6 +40,12 @@ class CAE(nn.Module):
     """Contractive autoencoder of flattened occupancy grids (§III-A1, §V-B1).
 
     ``sizes`` = (input, hidden..., latent), e.g. 2DS (961, 512, 256, 128, 64, 32, 12).
+
+    Weights start with He initialization for PReLU (He et al. 2015; the paper names
+    none). PyTorch's default shrinks the signal's variance about threefold per layer,
+    so through 7-14 layers the latent hardly depends on the input and the CAE settles
+    on the mean grid: measured on 3DC, 91.2 % reconstruction accuracy on seen
+    workspaces, exactly the all-free share, against 100 % with He initialization.
     """
 
     def __init__(self, sizes: tuple[int, ...]):
@@ -48,6 +55,10 @@ class CAE(nn.Module):
         self.sizes = tuple(int(s) for s in sizes)
         self.encoder = _stack(list(self.sizes), last_activation=False)
         self.decoder = _stack(list(reversed(self.sizes)), last_activation=False)
+        for layer in self.modules():
+            if isinstance(layer, nn.Linear):
+                nn.init.kaiming_normal_(layer.weight, a=PRELU_SLOPE, nonlinearity="leaky_relu")
+                nn.init.zeros_(layer.bias)
 
     @property
     def latent_dim(self) -> int:
@@ -111,7 +122,7 @@ class CollisionPredictor(nn.Module):
         z = self.cae.encode(grids)  # (W, L)
         weight, bias = self.mlp.net[0].weight, self.mlp.net[0].bias
         L, P = self.encoding.latent_dim, self.encoding.patch_size
-        share = z @ weight[:, :L].T + bias  # (W, H)
+        share = z[:, :L] @ weight[:, :L].T + bias  # (W, H)
         return share[:, None, :] + self.encoding.cell_patches(grids) @ weight[:, L:L + P].T  # (W, n_cells, H)
 
     def logits(self, context: torch.Tensor, ws_index: torch.Tensor, Q: torch.Tensor) -> torch.Tensor:
@@ -133,10 +144,11 @@ class CollisionPredictor(nn.Module):
 
 
 def build_predictor(scenario: Scenario, encoding: str, mlp_hidden: tuple[int, ...] | None = None,
-                    dropout: float = 0.5) -> CollisionPredictor:
-    """Untrained networks of the paper's sizes for ``scenario`` (``mlp_hidden`` may override the MLP's)."""
+                    dropout: float = 0.5, latent_input: bool = True) -> CollisionPredictor:
+    """Untrained networks of the paper's sizes for ``scenario`` (``mlp_hidden`` may override the MLP's;
+    ``latent_input=False``: the MLP does not see ``z``)."""
     cae = CAE((scenario.grid_size,) + tuple(scenario.cae_hidden))
     radius = reach_cells(scenario.robot) if encoding == "local" else 0
-    enc = InputEncoding(scenario.robot, scenario.grid_shape, cae.latent_dim, encoding, radius)
+    enc = InputEncoding(scenario.robot, scenario.grid_shape, cae.latent_dim if latent_input else 0, encoding, radius)
     mlp = CollisionMLP(enc.out_features, tuple(mlp_hidden or scenario.mlp_hidden), dropout)
     return CollisionPredictor(cae, enc, mlp)

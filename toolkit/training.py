@@ -71,10 +71,10 @@ def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[st
         raise ValueError(f"the training split holds {train.scenario!r} data, not {scenario.name!r}")
     device = torch.device(device) if device is not None else default_device()
     torch.manual_seed(seed)
-    predictor = build_predictor(scenario, preset.encoding, preset.mlp_hidden, preset.dropout).to(device)
+    predictor = build_predictor(scenario, preset.encoding, preset.mlp_hidden, preset.dropout, preset.latent_input).to(device)
     shuffle = torch.Generator().manual_seed(seed)
     grids = torch.as_tensor(train.occupancy, device=device)
-    history = {"cae": train_cae(predictor, grids, preset, shuffle, progress)}
+    history = {"cae": train_cae(predictor, grids, preset, shuffle, progress, max_steps=scenario.cae_max_steps)}
     n_holdout = int(round(preset.holdout * len(train.workspaces))) if len(train.workspaces) > 1 else 0
     fit, holdout = _split_workspaces(train, len(train.workspaces) - n_holdout)
     history["mlp"] = train_mlp(predictor, fit, preset, shuffle, progress)
@@ -84,11 +84,12 @@ def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[st
 
 
 def train_cae(predictor: CollisionPredictor, grids: torch.Tensor, preset: Preset, shuffle: torch.Generator,
-              progress: bool = True) -> list[float]:
-    """Fit the CAE to grids ``(W, *grid)`` with Eq. (1); the mean loss of each epoch."""
+              progress: bool = True, max_steps: int | None = None) -> list[float]:
+    """Fit the CAE to grids ``(W, *grid)`` with Eq. (1), at most ``max_steps`` steps if given; the mean loss of each epoch."""
     cae = predictor.cae.train()
     steps_per_epoch = math.ceil(len(grids) / preset.cae_batch)
-    epochs = max(1, min(preset.cae_epochs, preset.cae_max_steps // steps_per_epoch))
+    max_steps = min(preset.cae_max_steps, max_steps or preset.cae_max_steps)
+    epochs = max(1, min(preset.cae_epochs, max_steps // steps_per_epoch))
     batches = _batches(len(grids), preset.cae_batch, epochs, shuffle)
     return _fit(cae.parameters(), preset.cae_optimizer, preset.cae_lr, preset, batches, lambda idx: cae.loss(grids[idx], preset.cae_lambda),
                 progress, f"CAE ({preset.name})")
@@ -129,13 +130,18 @@ def probabilities(predictor: CollisionPredictor, dataset: CollisionDataset) -> n
 
 @torch.no_grad()
 def evaluate(models: TrainedModels, splits: dict[str, CollisionDataset]) -> dict:
-    """Table 1 and Table 2 measures: ``{"cae": {"seen_acc", "unseen_acc"}, "mlp": {"seen": {...}, "unseen": {...}}}``."""
+    """Table 1 and Table 2 measures: ``{"cae": {"seen_acc", "unseen_acc", ...}, "mlp": {"seen": {...}, "unseen": {...}}}``.
+
+    ``cae`` also holds ``seen_all_free`` and ``unseen_all_free``, the share of free cells: the
+    reconstruction accuracy of a CAE that ignores its input and answers "all free".
+    """
     predictor = models.predictor.eval()
     result: dict = {"cae": {}, "mlp": {}}
     for key, split in (("seen", "seen_test"), ("unseen", "unseen_test")):
         dataset = splits[split]
         grids = torch.as_tensor(dataset.occupancy, device=predictor.threshold.device)
         result["cae"][f"{key}_acc"] = float(metrics.reconstruction_accuracy(predictor.cae(grids).cpu().numpy(), dataset.occupancy).mean())
+        result["cae"][f"{key}_all_free"] = float(np.mean(dataset.occupancy < 0))  # the accuracy of predicting "all free"
         predicted = probabilities(predictor, dataset) >= models.threshold
         result["mlp"][key] = metrics.classification(predicted.reshape(-1), dataset.valid.reshape(-1))
     return result
