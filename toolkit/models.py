@@ -36,6 +36,14 @@ def _stack(widths: list[int], last_activation: bool) -> nn.Sequential:
     return nn.Sequential(*layers)
 
 
+def he_init(module: nn.Module) -> None:
+    """He initialization for PReLU (He et al. 2015) of every linear layer in ``module``; zero biases."""
+    for layer in module.modules():
+        if isinstance(layer, nn.Linear):
+            nn.init.kaiming_normal_(layer.weight, a=PRELU_SLOPE, nonlinearity="leaky_relu")
+            nn.init.zeros_(layer.bias)
+
+
 class CAE(nn.Module):
     """Contractive autoencoder of flattened occupancy grids (§III-A1, §V-B1).
 
@@ -55,10 +63,7 @@ class CAE(nn.Module):
         self.sizes = tuple(int(s) for s in sizes)
         self.encoder = _stack(list(self.sizes), last_activation=False)
         self.decoder = _stack(list(reversed(self.sizes)), last_activation=False)
-        for layer in self.modules():
-            if isinstance(layer, nn.Linear):
-                nn.init.kaiming_normal_(layer.weight, a=PRELU_SLOPE, nonlinearity="leaky_relu")
-                nn.init.zeros_(layer.bias)
+        he_init(self)
 
     @property
     def latent_dim(self) -> int:
