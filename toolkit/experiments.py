@@ -5,7 +5,8 @@
 1. data: the seen / unseen splits (:mod:`toolkit.data`);
 2. models: the CAE and MLP (:mod:`toolkit.training`), a checkpoint folder;
 3. learning: Table 1 and Table 2 measures, and P(valid) on the unseen test set;
-4. planning: every sampler, without and with prediction, on the paper's queries (:mod:`toolkit.queries`);
+4. planning: every sampler, without and with prediction, on the paper's queries (:mod:`toolkit.queries`),
+   the eight runs spread over one process per core;
 5. throughput: exact and learned checker speed (:mod:`toolkit.bench`);
 
 and writes ``out/results.json`` (the contract's keys), ``out/tables.md`` (our value
