@@ -1,11 +1,12 @@
 """The learned checker: same interface as the exact one, agreement with it, bounds, thresholds, bad input."""
 
+import dataclasses
 import json
 
 import numpy as np
 import pytest
 
-from toolkit import checkpoints, cli, data, scenarios, training
+from toolkit import checkpoints, cli, data, presets, queries, scenarios, training
 from toolkit.collision import CollisionChecker, exact_checker
 from toolkit.learned import LearnedChecker, load_checker
 
@@ -78,6 +79,13 @@ def test_load_checker(models, workspace, tmp_path, rng):
     loaded, direct = load_checker(tmp_path, workspace), LearnedChecker(workspace, models)
     Q = SCENARIO.robot.sample(rng, 200)
     assert np.array_equal(loaded.probability(Q), direct.probability(Q))
+
+
+@pytest.mark.parametrize("preset, screened", [("paper", False), ("strong", True)])
+def test_planning_with_a_learned_checker_follows_its_presets_edge_rule(models, workspace, preset, screened):
+    checker = LearnedChecker(workspace, dataclasses.replace(models, preset=presets.get(preset)))
+    assert queries.default_options(SCENARIO, checker).screen_edges is screened
+    assert queries.default_options(SCENARIO, checker, screen_edges=not screened).screen_edges is not screened
 
 
 def test_bench_json(capsys):

@@ -7,7 +7,7 @@ from torch import nn
 
 from toolkit import metrics, scenarios
 from toolkit.encoding import InputEncoding, LinkKinematics, position_dofs, reach_cells
-from toolkit.models import CAE, CollisionMLP, build_predictor
+from toolkit.models import CAE, VALID, CollisionMLP, build_predictor
 from toolkit.workspace import Workspace
 
 PAPER_CAE = {
@@ -89,9 +89,11 @@ def test_cae_learns_more_than_the_mean_grid():
     assert np.all(accuracy > all_free + 0.05), (accuracy, all_free)
 
 
-def test_mlp_rejects_bad_dropout():
+def test_mlp_rejects_bad_settings():
     with pytest.raises(ValueError, match="dropout"):
         CollisionMLP(4, (3,), dropout=1.0)
+    with pytest.raises(ValueError, match="hidden layer"):
+        CollisionMLP(4, (), dropout=0.0)
 
 
 def test_unknown_encoding():
@@ -152,26 +154,24 @@ def test_link_kinematics_match_the_robot(name, rng):
 
 
 @pytest.mark.parametrize("kind, latent_input", [("raw", True), ("local", True), ("local", False)])
-def test_logits_shortcut_equals_the_full_network(kind, latent_input, rng):
+def test_workspace_margin_equals_the_full_network(kind, latent_input, rng):
     s = scenarios.get("3dc9")
     torch.manual_seed(0)
-    predictor = build_predictor(s, kind, latent_input=latent_input).eval()
+    predictor = build_predictor(s, kind, latent_input=latent_input, dropout=0.5).eval()
+    for slope, layer in enumerate(m for m in predictor.mlp.net if isinstance(m, nn.PReLU)):
+        layer.weight.data.fill_(0.1 * slope)  # a different slope per layer: each one must be read from its own layer
     assert predictor.encoding.out_features == predictor.mlp.in_features
     assert predictor.encoding.latent_dim == (s.latent_dim if latent_input else 0)
-    grids = torch.as_tensor(np.stack([s.make_workspace(rng).occupancy() for _ in range(2)]))
+    grid = torch.as_tensor(s.make_workspace(rng).occupancy())
     Q = torch.as_tensor(s.robot.sample(rng, 50), dtype=torch.float32)
     Q[:3, :3] = torch.tensor([[0.0, 0.0, 0.0], [11.0, 11.0, 11.0], [10.99, 0.01, 5.0]])  # cells on the grid's faces
-    ws_index = torch.as_tensor(rng.integers(0, 2, 50))
+    margin_of = predictor.for_workspace(grid)
+    assert margin_of.table.shape == (predictor.mlp.hidden[0], 11 ** 3 if kind == "local" else 1)
     with torch.no_grad():
-        z = predictor.cae.encode(grids)
-        context = predictor.context(grids)
-        assert context.shape == (2, 11 ** 3 if kind == "local" else 1, predictor.mlp.hidden[0])
-        full = predictor.mlp(predictor.encoding(z, grids, ws_index, Q))
-        assert torch.allclose(predictor.logits(context, ws_index, Q), full, atol=1e-4)
-        one = predictor.context(grids[:1])  # a single workspace: one table, no gather over workspaces
-        zeros = torch.zeros(50, dtype=torch.long)
-        assert torch.allclose(predictor.logits(one, zeros, Q), predictor.mlp(predictor.encoding(z[:1], grids[:1], zeros, Q)),
-                              atol=1e-4)
+        grids, ws_index = grid[None], torch.zeros(50, dtype=torch.long)
+        logits = predictor.mlp(predictor.encoding(predictor.cae.encode(grids), grids, ws_index, Q))  # (50, 2)
+    assert torch.allclose(margin_of(Q), logits[:, VALID] - logits[:, 1 - VALID], atol=1e-4)
+    assert margin_of(Q[:0]).shape == (0,)
 
 
 def test_cell_patches_match_the_patch_of_each_configuration(rng):

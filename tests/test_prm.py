@@ -5,7 +5,7 @@ import json
 import numpy as np
 import pytest
 
-from toolkit import cli, scenarios
+from toolkit import cli, local_planner, scenarios
 from toolkit.collision import CollisionChecker, exact_checker
 from toolkit.local_planner import check_edges, invalid_fractions, path_is_valid, segment_points
 from toolkit.prm import PRMOptions, plan
@@ -162,6 +162,38 @@ def test_check_edges_agrees_with_checking_every_step():
     assert 0 < got.sum() < len(got)
     fractions = invalid_fractions(exact, Q0, Q1, 0.05)
     assert np.all(fractions[got] == 0) and np.all(fractions[~got] > 0)
+
+
+class RecordingChecker(CollisionChecker):
+    """Test double: every configuration valid; remembers each batch it was asked about."""
+
+    def __init__(self, robot):
+        super().__init__(robot)
+        self.batches = []
+
+    def _are_valid(self, Q):
+        self.batches.append(Q.copy())
+        return np.ones(len(Q), bool)
+
+
+def test_check_edges_visits_every_interior_point_once_coarse_to_fine(monkeypatch):
+    robot = scenarios.get("3dc7").robot
+    rng = np.random.default_rng(1)
+    Q0, Q1 = robot.sample(rng, 40), robot.sample(rng, 40)
+    n = np.maximum(np.ceil(robot.motion_bound(Q0, Q1) / 0.05).astype(int), 1)
+    want = np.concatenate([segment_points(robot, np.repeat(a[None], k - 1, 0), np.repeat(b[None], k - 1, 0),
+                                          np.arange(1, k) / k) for a, b, k in zip(Q0, Q1, n)])
+    calls = {}
+    for min_batch in (1, 256, 10**9):
+        monkeypatch.setattr(local_planner, "MIN_BATCH", min_batch)
+        checker = RecordingChecker(robot)
+        assert check_edges(checker, Q0, Q1, 0.05).all()
+        got = np.concatenate(checker.batches)
+        assert len(got) == len(want)  # no point twice
+        np.testing.assert_allclose(np.sort(got, axis=0), np.sort(want, axis=0), atol=1e-9)
+        assert len(checker.batches[0]) >= min(min_batch, len(want))
+        calls[min_batch] = len(checker.batches)
+    assert calls[1] > calls[256] > calls[10**9] == 1  # plain bisection order, merged coarse levels, all at once
 
 
 def test_nearest_neighbours_wrap_around_angles():

@@ -130,7 +130,7 @@ class InputEncoding(nn.Module):
     def forward(self, z: torch.Tensor, grids: torch.Tensor, ws_index: torch.Tensor, Q: torch.Tensor) -> torch.Tensor:
         """MLP inputs ``(N, out_features)``: latents ``z (W, L)``, grids ``(W, *grid)``, ``ws_index (N,)``, ``Q (N, dof)``."""
         cell, pose = self.configs(Q)
-        return torch.cat([z[ws_index, : self.latent_dim], self.cell_patches(grids)[ws_index, cell], pose], dim=1)
+        return torch.cat([z[ws_index, : self.latent_dim], self.cell_patches(grids)[ws_index, cell], pose.T], dim=1)
 
     def cell_patches(self, grids: torch.Tensor) -> torch.Tensor:
         """``(W, n_cells, P)``: the patch around every base cell of every grid ``(W, *grid)``."""
@@ -148,9 +148,9 @@ class InputEncoding(nn.Module):
 
     def configs(self, Q: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor]:
         """Configurations ``Q (N, dof)`` as ``(cell, pose)``: each one's base cell, ``(N,)`` indices into the rows of
-        :meth:`cell_patches` (0 for "raw"), and its pose ``(N, pose_size)`` (``q`` itself for "raw")."""
+        :meth:`cell_patches` (0 for "raw"), and its pose, one row per feature ``(pose_size, N)`` (``q.T`` for "raw")."""
         if self.kind == "raw":
-            return torch.zeros(len(Q), dtype=torch.long, device=Q.device), Q
+            return torch.zeros(len(Q), dtype=torch.long, device=Q.device), Q.T
         # one row per feature: elementwise ops on contiguous (k, N) rows are several times faster than on (N, k) columns
         rows = Q.T.contiguous()  # (dof, N)
         first_joint = self.n_pos + self.n_angles
@@ -166,4 +166,4 @@ class InputEncoding(nn.Module):
             centers, long_axes = self.kinematics(base, sin, cos)  # (L, 3, N) each
             parts += [(centers - nn.functional.pad(centre, (0, 0, 0, 3 - self.n_pos))).flatten(0, 1), long_axes.flatten(0, 1)]
         index = (cell.long() * self.cell_strides[:, None]).sum(dim=0)  # (N,)
-        return index, torch.cat(parts, dim=0).T  # (N,), (N, pose_size)
+        return index, torch.cat(parts, dim=0)  # (N,), (pose_size, N)

@@ -9,7 +9,10 @@ thinnest link (``default_resolution``).
 Everything is batched over many segments at once. ``check_edges`` visits the
 interior points of all segments coarse-to-fine (odd multiples of 2^k steps, k
 decreasing, like OMPL's ``DiscreteMotionValidator`` bisection order), so a segment
-that collides is usually dropped after a few checks; ``invalid_fractions`` asks
+that collides is usually dropped after a few checks; its first batch takes every
+multiple of the coarsest level that still holds ``MIN_BATCH`` points, because a
+checker call has a fixed cost (measured: 0.4 ms for 1 configuration, against about
+6 us per configuration in a batch, exact 3DC-7) that tiny coarse levels would repeat; ``invalid_fractions`` asks
 about every interior point (for screening by prediction); ``last_valid_along``
 walks segments from their start and stops at the first invalid point (for the
 obstacle-based sampler).
@@ -23,6 +26,7 @@ from .collision import CollisionChecker
 from .robots import BoxRobot
 
 MAX_BATCH = 100_000  # configurations per checker call
+MIN_BATCH = 256  # check_edges: configurations in its first, coarsest call (when the segments have that many)
 
 
 def default_resolution(robot: BoxRobot) -> float:
@@ -64,14 +68,15 @@ def check_edges(checker: CollisionChecker, Q0, Q1, resolution: float) -> np.ndar
     Q0, Q1 = robot.check_configs(Q0, "Q0"), robot.check_configs(Q1, "Q1")
     n = step_counts(robot, Q0, Q1, resolution)  # (E,)
     valid = np.ones(len(n), dtype=bool)
-    stride = 1 << int(np.max(n, initial=1)).bit_length()
-    while stride > 1:
-        stride //= 2
-        active = np.flatnonzero(valid & (n > stride))
-        counts = (n[active] - 1 + stride) // (2 * stride)  # odd multiples of stride below n
-        owner, ordinal = _ragged(counts)
+    stride = 1  # the coarsest stride with MIN_BATCH multiples below n
+    while np.sum((n - 1) // (2 * stride)) >= MIN_BATCH:
+        stride *= 2
+    # visit every multiple of stride, then the odd multiples of stride / 2, stride / 4, ..., 1
+    for unit, every in [(stride, 1)] + [(stride >> k, 2) for k in range(1, stride.bit_length())]:
+        active = np.flatnonzero(valid & (n > unit))
+        owner, ordinal = _ragged(((n[active] - 1) // unit + every - 1) // every)  # points unit * (1 + every * i) below n
         edge = active[owner]
-        t = stride * (2 * ordinal + 1) / n[edge]  # (P,)
+        t = unit * (1 + every * ordinal) / n[edge]  # (P,)
         ok = _are_valid_batched(checker, segment_points(robot, Q0[edge], Q1[edge], t))
         valid[edge[~ok]] = False
     return valid

@@ -8,10 +8,9 @@
   Linear -> PReLU -> Dropout(p) (§V-B2).
 - :class:`~toolkit.encoding.InputEncoding` (in :mod:`toolkit.encoding`): what the MLP
   sees, the paper's ``[z, q]`` or ``[z, patch, pose]`` (the ``strong`` preset leaves out ``z``).
-- :class:`CollisionPredictor`: the three together, one ``state_dict``; its
-  :meth:`~CollisionPredictor.context` folds everything a workspace gives the first
-  layer (``z``, the patch of every base cell, the bias) into one table, so a
-  prediction gathers one row and multiplies only the pose.
+- :class:`CollisionPredictor`: the three together, one ``state_dict``;
+  :meth:`~CollisionPredictor.for_workspace` freezes it in one workspace as a
+  :class:`WorkspaceMargin`, the fast inference path of the learned checker.
 """
 
 from __future__ import annotations
@@ -94,10 +93,12 @@ class CollisionMLP(nn.Module):
         super().__init__()
         if not 0.0 <= dropout < 1.0:
             raise ValueError(f"dropout must lie in [0, 1), got {dropout}")
+        if not hidden:
+            raise ValueError("the collision MLP needs at least one hidden layer")
         layers: list[nn.Module] = []
         for a, b in zip((in_features,) + tuple(hidden[:-1]), hidden):
             layers += [nn.Linear(a, b), nn.PReLU()] + ([nn.Dropout(dropout)] if dropout > 0 else [])
-        layers.append(nn.Linear(hidden[-1] if hidden else in_features, 2))
+        layers.append(nn.Linear(hidden[-1], 2))
         self.net = nn.Sequential(*layers)
         self.in_features, self.hidden, self.dropout = int(in_features), tuple(hidden), float(dropout)
 
@@ -121,31 +122,60 @@ class CollisionPredictor(nn.Module):
         self.cae, self.encoding, self.mlp = cae, encoding, mlp
         self.register_buffer("threshold", torch.tensor(float(threshold)))
 
-    def context(self, grids: torch.Tensor) -> torch.Tensor:
-        """What workspaces ``(W, *grid)`` contribute to the first MLP layer, computed once: ``(W, n_cells, H)``,
-        the bias plus the first layer applied to ``z`` and to the patch around every base cell."""
-        z = self.cae.encode(grids)  # (W, L)
-        weight, bias = self.mlp.net[0].weight, self.mlp.net[0].bias
-        L, P = self.encoding.latent_dim, self.encoding.patch_size
-        share = z[:, :L] @ weight[:, :L].T + bias  # (W, H)
-        return share[:, None, :] + self.encoding.cell_patches(grids) @ weight[:, L:L + P].T  # (W, n_cells, H)
+    def for_workspace(self, grid: torch.Tensor) -> "WorkspaceMargin":
+        """This predictor, frozen for fast inference in the workspace ``grid (*grid)``: Algorithm 1, line 1."""
+        return WorkspaceMargin(self, grid)
 
-    def logits(self, context: torch.Tensor, ws_index: torch.Tensor, Q: torch.Tensor) -> torch.Tensor:
-        """Logits ``(N, 2)`` for configurations ``Q (N, dof)`` in workspaces ``ws_index (N,)``.
 
-        Equal to ``mlp(encoding(...))``, but the first layer's share of ``z`` and of the
-        patch is one row of the context per configuration instead of a product. For
-        inference: the PReLU slopes enter as numbers, so no gradient reaches them.
-        """
-        first = self.mlp.net[0]
-        L, P = self.encoding.latent_dim, self.encoding.patch_size
-        cell, pose = self.encoding.configs(Q)  # (N,), (N, pose_size)
-        rows = cell if len(context) == 1 else ws_index * context.shape[1] + cell  # (N,); one workspace: no ws offsets
-        h = context.flatten(0, 1).index_select(0, rows)  # (N, H); index_select is ~5x faster than context[ws, cell]
-        h.addmm_(pose, first.weight[:, L + P:].T)  # (N, H), in place
-        for layer in self.mlp.net[1:]:  # PReLU (one slope) in place: fewer large temporaries, fewer page faults
-            h = nn.functional.leaky_relu_(h, layer.weight.item()) if isinstance(layer, nn.PReLU) else layer(h)
-        return h
+class WorkspaceMargin:
+    """``margin(Q) = logit(valid) - logit(invalid)`` of a :class:`CollisionPredictor` in one workspace, for inference.
+
+    Equal to the full network's logit difference (a test holds it to it), computed with
+    fewer, cheaper operations:
+
+    - everything the workspace gives the first layer (its bias, ``W z``, ``W patch`` of
+      every base cell) is one table ``(H, n_cells)``, built once, so a prediction gathers
+      one column and multiplies only the pose;
+    - only the difference of the two logits matters, so the last layer is one vector;
+    - activations are column-major ``(features, N)``: the small matmuls of these MLPs
+      run about 1.5x faster that way on CPU than row-major (measured: the paper's
+      3D MLP at 10k configurations, one thread, 1.3 ms against 2.0 ms);
+    - the PReLU slopes are read once. Dropout is off, as in ``eval()``.
+
+    A snapshot: training the predictor further does not change it.
+    """
+
+    @torch.no_grad()
+    def __init__(self, predictor: CollisionPredictor, grid: torch.Tensor):
+        encoding, net = predictor.encoding, predictor.mlp.net
+        grids = grid[None]  # (1, *grid)
+        first = net[0]
+        L, P = encoding.latent_dim, encoding.patch_size
+        share = first.bias.clone()  # (H,)
+        if L:
+            share += first.weight[:, :L] @ predictor.cae.encode(grids)[0, :L]
+        patches = encoding.cell_patches(grids)[0]  # (n_cells, P)
+        self.encoding = encoding
+        self.table = (first.weight[:, L:L + P] @ patches.T + share[:, None]).contiguous()  # (H, n_cells)
+        self.pose_weight = first.weight[:, L + P:].clone()  # (H, pose_size)
+        linears = [m for m in net if isinstance(m, nn.Linear)]
+        slopes = [float(m.weight) for m in net if isinstance(m, nn.PReLU)]  # one after each hidden layer
+        self.hidden = [(m.weight.clone(), m.bias[:, None].clone(), slope) for m, slope in zip(linears[1:-1], slopes[1:])]
+        self.first_slope = slopes[0]
+        last = linears[-1]
+        self.last_weight = (last.weight[VALID] - last.weight[1 - VALID]).clone()  # (H_last,)
+        self.last_bias = float(last.bias[VALID] - last.bias[1 - VALID])
+
+    def __call__(self, Q: torch.Tensor) -> torch.Tensor:
+        """Margins ``(N,)`` of configurations ``Q (N, dof)`` (float32, on the predictor's device)."""
+        with torch.inference_mode():
+            cell, pose = self.encoding.configs(Q)  # (N,), (pose_size, N)
+            h = self.table.index_select(1, cell)  # (H, N)
+            h.addmm_(self.pose_weight, pose)
+            nn.functional.leaky_relu_(h, self.first_slope)
+            for weight, bias, slope in self.hidden:
+                h = nn.functional.leaky_relu_(torch.addmm(bias, weight, h), slope)  # (H_next, N)
+            return torch.mv(h.T, self.last_weight) + self.last_bias  # (N,)
 
 
 def build_predictor(scenario: Scenario, encoding: str, mlp_hidden: tuple[int, ...] | None = None,

@@ -23,6 +23,7 @@ import numpy as np
 
 from . import data
 from .collision import CollisionChecker, exact_checker
+from .learned import LearnedChecker
 from .local_planner import path_is_valid
 from .prm import PlanResult, PRMOptions, plan
 from .scenarios import Scenario
@@ -58,9 +59,12 @@ def query_pairs(scenario: Scenario, ws: Workspace, count: int, rng: np.random.Ge
     raise RuntimeError(f"could not find {count} valid, separated start/goal pairs in this workspace")
 
 
-def default_options(scenario: Scenario, **overrides) -> PRMOptions:
-    """The planner settings of a scenario: the paper's |S| and the scenario's local-planner resolution."""
+def default_options(scenario: Scenario, checker: CollisionChecker | None = None, **overrides) -> PRMOptions:
+    """The planner settings of a scenario: the paper's |S| and the scenario's local-planner resolution;
+    with a learned ``checker``, the edge rule of its model's preset (``Preset.screen_edges``)."""
     settings = {"n_samples": scenario.plan_samples, "resolution": scenario.plan_resolution}
+    if isinstance(checker, LearnedChecker):
+        settings["screen_edges"] = checker.models.preset.screen_edges
     settings.update(overrides)
     return PRMOptions(**settings)
 
@@ -79,8 +83,9 @@ def make_queries(scenario: Scenario, seed: int = 0, n_workspaces: int | None = N
 
 def solve_query(scenario: Scenario, query: Query, sampler: str, checker: CollisionChecker | None = None,
                 options: PRMOptions | None = None, seed=0) -> PlanResult:
-    """One query with ``sampler``; ``checker`` decides samples (None: the exact checker), paper's |S| by default."""
-    options = options or default_options(scenario)
+    """One query with ``sampler``; ``checker`` decides samples (None: the exact checker); by default the
+    scenario's settings and the edge rule of the checker's preset (:func:`default_options`)."""
+    options = options or default_options(scenario, checker)
     return plan(exact_checker(query.workspace, scenario.robot), query.start, query.goal, sampler=sampler,
                 checker=checker, options=options, rng=np.random.default_rng(seed))
 
@@ -92,9 +97,9 @@ def run_queries(scenario: Scenario, queries: list[Query], sampler: str,
 
     The factory runs once per workspace (it encodes the workspace: Algorithm 1,
     line 1); its time is shared among that workspace's queries and counted in their
-    ``total_s``. Returns per-query records and the summary.
+    ``total_s``. ``options`` None: :func:`default_options` for each query's checker.
+    Returns per-query records and the summary.
     """
-    options = options or default_options(scenario)
     records, checkers = [], {}
     share = np.bincount([q.workspace_index for q in queries])  # queries per workspace
     for n, query in enumerate(queries):

@@ -182,7 +182,7 @@ class Viewer:
         rng = np.random.default_rng(seed)
         start, goal = queries.query_pairs(self.scenario, self.workspace, 1, rng)[0]
         result = prm.plan(self.exact, start, goal, sampler=sampler, checker=self.model,
-                          options=queries.default_options(self.scenario), rng=rng)
+                          options=queries.default_options(self.scenario, self.model), rng=rng)
         self.show_plan(result)
         return result
 

@@ -65,17 +65,24 @@ class Workspace:
         """One grid point per unit cell: (31, 31), (41, 41, 6) or (11, 11, 11)."""
         return tuple(int(round(s)) for s in self.upper - self.lower)
 
+    def _cell_centres(self) -> list[np.ndarray]:
+        """Per axis, the centres of the unit cells along it, ``(n_d,)``."""
+        return [self.lower[d] + 0.5 + np.arange(n) for d, n in enumerate(self.grid_shape)]
+
     def grid_points(self) -> np.ndarray:
         """Centres of the unit cells, shape ``grid_shape + (D,)``."""
-        axes = [self.lower[d] + 0.5 + np.arange(n) for d, n in enumerate(self.grid_shape)]
-        return np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1)
+        return np.stack(np.meshgrid(*self._cell_centres(), indexing="ij"), axis=-1)
 
     def occupancy(self) -> np.ndarray:
         """Occupancy grid, shape ``grid_shape``: +1 where a cell centre lies in a box, else -1."""
-        points = self.grid_points().reshape(-1, 1, self.dim)  # (P, 1, D)
-        inside = np.all((points >= self.boxes[None, :, 0]) & (points <= self.boxes[None, :, 1]), axis=-1)  # (P, K)
-        grid = np.where(inside.any(axis=1), OCCUPIED, FREE)
-        return grid.reshape(self.grid_shape).astype(np.float32)
+        grid = np.full(self.grid_shape, FREE, dtype=np.float32)
+        # per axis, the cells whose centre lies in [lo, hi]: from the first centre >= lo to the last <= hi
+        centres = self._cell_centres()
+        first = [np.searchsorted(c, self.boxes[:, 0, d], side="left") for d, c in enumerate(centres)]  # D x (K,)
+        stop = [np.searchsorted(c, self.boxes[:, 1, d], side="right") for d, c in enumerate(centres)]
+        for box_first, box_stop in zip(np.transpose(first), np.transpose(stop)):  # (D,) each
+            grid[tuple(map(slice, box_first, box_stop))] = OCCUPIED
+        return grid
 
     def contains_points(self, points: np.ndarray) -> np.ndarray:
         """Whether each point ``(..., D)`` lies inside an obstacle (closed boxes)."""
