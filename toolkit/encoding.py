@@ -10,7 +10,7 @@
 
 The patch depends only on the workspace and the base cell, so :meth:`InputEncoding.cell_patches`
 lists it for every cell at once; the predictor folds it into a per-workspace table
-(:meth:`toolkit.models.CollisionPredictor.context`).
+(:class:`toolkit.models.WorkspaceMargin`).
 """
 
 from __future__ import annotations

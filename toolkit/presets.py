@@ -23,8 +23,8 @@ kinematics, where each link box is. Each choice, measured on unseen workspaces
 - MLP 64-32 without dropout: 3DC-9 93.7 (128-32: 93.6, 64-64-32: 93.5, 32-32:
   92.7; the old 256-256-128 without link features: 82.0). Small, because the
   learned checker must be much faster than the exact one: the patch's share of the
-  first layer is a per-workspace table (:meth:`~toolkit.models.CollisionPredictor.context`),
-  so a prediction costs a row gather, the pose's product and two small layers.
+  first layer is a per-workspace table (:class:`~toolkit.models.WorkspaceMargin`),
+  so a prediction costs a gather, the pose's product and two small layers.
 - 20x the paper's labelled samples, 10 epochs, AdamW at 3e-3 with weight decay 1e-4 and a
   cosine schedule, batch 256, inputs standardized (folded into the first layer),
   threshold calibrated on 10 % held-out training workspaces. 20 epochs: 3DC-9 94.0
