@@ -13,10 +13,9 @@ that collides is usually dropped after a few checks; its first batch takes every
 multiple of the coarsest level that still holds ``MIN_BATCH`` points, because a
 checker call has a fixed cost (measured: 0.4 ms for 1 configuration, against about
 6 us per configuration in a batch, exact 3DC-7) that tiny coarse levels would repeat;
-``invalid_fractions`` asks
-about every interior point (for screening by prediction); ``last_valid_along``
-walks segments from their start and stops at the first invalid point (for the
-obstacle-based sampler).
+``invalid_fractions`` asks about every interior point (for screening by
+prediction); ``last_valid_along`` walks segments from their start and stops at the
+first invalid point (for the obstacle-based sampler).
 """
 
 from __future__ import annotations
