@@ -32,7 +32,8 @@ prediction, edges are decided in one of two ways (``PRMOptions.screen_edges``):
   points per unit obstacle cell crossed). Measured with ``queries.compare_prediction``
   on the first 30 queries of 3DC, seed 0, strong model; total time with / without,
   BS OB G BT: 3DC-7, spacing 1 — 0.41 0.44 0.36 0.91; 4 — 0.18 0.33 0.14 0.63;
-  8 — 0.11 0.26 0.13 0.62; 3DC-9, spacing 4 — 0.14 0.30 0.13 1.07; 8 — 0.10 0.25 0.10 1.09 (the bridge test's sparse roadmaps need repairs at any spacing).
+  8 — 0.11 0.26 0.13 0.62; 3DC-9, spacing 4 — 0.14 0.30 0.13 1.07; 8 — 0.10 0.25 0.10 1.09
+  (the bridge test's sparse roadmaps need repairs at any spacing).
 """
 
 from __future__ import annotations
