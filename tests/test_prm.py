@@ -5,7 +5,7 @@ import json
 import numpy as np
 import pytest
 
-from toolkit import cli, local_planner, scenarios
+from toolkit import cli, local_planner, prm, scenarios
 from toolkit.collision import CollisionChecker, exact_checker
 from toolkit.local_planner import check_edges, invalid_fractions, path_is_valid, segment_points
 from toolkit.prm import PRMOptions, plan
@@ -196,6 +196,34 @@ def test_check_edges_visits_every_interior_point_once_coarse_to_fine(monkeypatch
     assert calls[1] > calls[256] > calls[10**9] == 1  # plain bisection order, merged coarse levels, all at once
 
 
+def test_screened_path_edges_are_confirmed_coarse_then_fine_each_once(monkeypatch):
+    scenario = scenarios.get("2ds")
+    checked = []  # (resolution, edge, passed) of every edge the planner checks exactly
+    def recording(checker, Q0, Q1, resolution):
+        ok = check_edges(checker, Q0, Q1, resolution)
+        checked.extend((resolution, q0.tobytes() + q1.tobytes(), bool(v)) for q0, q1, v in zip(Q0, Q1, ok))
+        return ok
+    monkeypatch.setattr(prm, "check_edges", recording)
+    repairs = 0
+    for i, q in enumerate(make_queries(scenario, seed=0, n_workspaces=2, per_workspace=3)):
+        exact = exact_checker(q.workspace, scenario.robot)
+        result = plan(exact, q.start, q.goal, sampler="BS", checker=NoisyChecker(exact, 0.15, seed=i),
+                      options=PRMOptions(screen_edges=True), rng=np.random.default_rng(i))
+        assert result.success
+        roadmap, coarse = result.roadmap, result.stats["resolution"]
+        steps = roadmap.edge_index(roadmap.shortest_path(0, 1))
+        np.testing.assert_array_equal(roadmap.edge_checked_at[steps], coarse / 10)  # the returned path: all fine
+        repairs += result.stats["repairs"]
+    assert repairs > 0  # paths were abandoned: their confirmed edges were remembered, not checked again
+    resolutions = sorted({r for r, _, _ in checked}, reverse=True)
+    assert resolutions == [coarse, coarse / 10]
+    for resolution in resolutions:
+        edges = [e for r, e, _ in checked if r == resolution]
+        assert len(edges) == len(set(edges))
+    passed_coarse = {e for r, e, ok in checked if r == coarse and ok}
+    assert {e for r, e, _ in checked if r == coarse / 10} <= passed_coarse
+
+
 def test_nearest_neighbours_wrap_around_angles():
     robot = scenarios.get("3dc7").robot
     roadmap = Roadmap(robot)
@@ -215,9 +243,11 @@ def test_remove_nodes_keeps_edges_consistent():
     robot = scenarios.get("2ds").robot
     roadmap = Roadmap(robot)
     roadmap.add_nodes(np.array([[1.0, 1], [2, 2], [3, 3], [4, 4]]), verified=True)
-    roadmap.add_edges(np.array([[0, 1], [1, 2], [2, 3], [0, 3]]), np.ones(4), verified=False)
+    roadmap.add_edges(np.array([[0, 1], [2, 3]]), np.ones(2), checked_at=0.5)
+    roadmap.add_edges(np.array([[1, 2], [0, 3]]), np.ones(2))
     roadmap.remove_nodes(np.array([1]))
     np.testing.assert_array_equal(roadmap.edges, [[1, 2], [0, 2]])
+    np.testing.assert_array_equal(roadmap.edge_checked_at, [0.5, np.inf])
     np.testing.assert_array_equal(roadmap.nodes[roadmap.shortest_path(0, 1)], [[1, 1], [4, 4], [3, 3]])
 
 

@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 
 from toolkit import data, scenarios
-from toolkit.collision import exact_checker
+from toolkit.collision import CollisionChecker, exact_checker
 from toolkit.local_planner import segment_points, wrap
 from toolkit.sampling import SAMPLERS, make_sampler
 
@@ -98,6 +98,29 @@ def test_bridge_midpoints_are_valid_between_invalid_ends(scenario):
     assert len(Q) > 0
     np.testing.assert_allclose(Q, expected)
     assert not checker.are_valid(Q1[both_invalid]).any()
+
+
+class CallCounter(CollisionChecker):
+    """The exact answers, counting calls; ``few_calls`` as given."""
+
+    def __init__(self, exact: CollisionChecker, few_calls: bool):
+        super().__init__(exact.robot)
+        self.exact, self.few_calls, self.calls = exact, few_calls, 0
+
+    def _are_valid(self, Q):
+        self.calls += 1
+        return self.exact._are_valid(Q)
+
+
+@pytest.mark.parametrize("name", ["OB", "BT"])
+def test_a_few_calls_checker_gets_the_same_samples_in_fewer_calls(name):
+    _, exact = setting("3dc7")
+    many, few = CallCounter(exact, few_calls=False), CallCounter(exact, few_calls=True)
+    Q = make_sampler(name, many).sample(300, np.random.default_rng(5))
+    np.testing.assert_array_equal(make_sampler(name, few).sample(300, np.random.default_rng(5)), Q)
+    assert len(Q) > 0
+    assert few.calls == (2 if name == "OB" else 1)  # OB: draws, then the whole walk
+    assert many.calls > few.calls
 
 
 def test_gaussian_neighbours_wrap_angles():

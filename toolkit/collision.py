@@ -28,7 +28,14 @@ from .workspace import Workspace
 
 
 class CollisionChecker:
-    """Answers "is this configuration valid?" for batches; counts configurations checked."""
+    """Answers "is this configuration valid?" for batches; counts configurations checked.
+
+    ``few_calls``: a call's fixed cost outweighs its cost per configuration (a neural
+    network on CPU): callers then ask about configurations they may not need in one
+    call rather than in several dependent ones (same answers, fewer calls).
+    """
+
+    few_calls = False
 
     def __init__(self, robot: BoxRobot):
         self.robot = robot

@@ -28,6 +28,8 @@ from .workspace import Workspace
 class LearnedChecker(CollisionChecker):
     """Predicted validity in one workspace: P(valid) >= ``threshold`` (default: the model's own, 0.5 or calibrated)."""
 
+    few_calls = True  # measured on 3DC, CPU: about 0.5-1 ms a call, 0.3 us a configuration (exact: 6-9 us)
+
     def __init__(self, workspace: Workspace, models: TrainedModels, threshold: float | None = None):
         scenario = models.scenario
         if workspace.grid_shape != scenario.grid_shape:
@@ -40,6 +42,7 @@ class LearnedChecker(CollisionChecker):
         grid = torch.as_tensor(workspace.occupancy(), device=device)  # (*grid)
         self._margin_of = models.predictor.eval().for_workspace(grid)  # the workspace, encoded once
         self._device = device
+        self._margins(self.robot.lower[None].copy())  # a first call's one-off costs (torch's lazy set-up) belong here
 
     @property
     def threshold(self) -> float:

@@ -12,11 +12,13 @@
    its samples are checked exactly ("create additional valid samples", ``exact_auxiliary``),
    which keeps the planner probabilistically complete however poor the prediction;
 5. extract the cheapest path and **verify** it with the exact checker: its nodes, and
-   its edges at ``resolution / verify_refinement`` (10x finer than the roadmap's
-   edges: shortest paths hug obstacles, and an edge that grazes a corner between two
-   checks at ``resolution`` is caught here); whatever fails is removed from the
-   roadmap and the query repeats (line 5). A returned path is always valid under
-   the exact checker at that resolution; otherwise ``success`` is False.
+   its edges at ``resolution`` (unless checked exactly when they were added), then at
+   ``resolution / verify_refinement`` (10x finer: shortest paths hug obstacles, and an
+   edge that grazes a corner between two checks at ``resolution`` is caught here);
+   whatever fails is removed from the roadmap and the query repeats (line 5). Each
+   edge remembers the finest resolution it passed at (``Roadmap.edge_checked_at``),
+   so the next candidate path re-checks none of them. A returned path is always
+   valid under the exact checker at the finer resolution; otherwise ``success`` is False.
 
 "With" and "without prediction" differ in the ``checker`` argument only. With
 prediction, edges are decided in one of two ways (``PRMOptions.screen_edges``):
@@ -128,9 +130,9 @@ class _Planner:
         self.predicted = checker is not exact
         self.resolution = default_resolution(exact.robot) if options.resolution is None else float(options.resolution)
         self.screened = self.predicted and options.screen_edges  # edges screened by prediction, not checked exactly
-        fine = self.resolution / options.verify_refinement
-        # a path's edges: screened ones first at the roadmap's resolution, a cheap filter (most that fail, fail there)
-        self.verify_resolutions = (self.resolution, fine) if self.screened else (fine,)
+        # a path's edges are confirmed at the roadmap's resolution (a cheap filter: most that fail, fail there;
+        # exactly checked edges already were), then finer
+        self.verify_resolutions = (self.resolution, self.resolution / options.verify_refinement)
         self.roadmap = Roadmap(exact.robot)
         self.stats = {"rounds": 0, "repairs": 0, "removed_nodes": 0, "removed_edges": 0,
                       "sampling_s": 0.0, "connection_s": 0.0, "query_s": 0.0,
@@ -164,10 +166,10 @@ class _Planner:
         if self.screened:
             fraction = invalid_fractions(self.checker, Q0, Q1, self.resolution * options.screen_spacing)
             keep = fraction <= options.screen_reject
-            roadmap.add_edges(pairs[keep], length[keep] * (1 + options.screen_penalty * fraction[keep]), verified=False)
+            roadmap.add_edges(pairs[keep], length[keep] * (1 + options.screen_penalty * fraction[keep]))
         else:
             keep = check_edges(self.exact, Q0, Q1, self.resolution)
-            roadmap.add_edges(pairs[keep], length[keep], verified=False)  # the path's are confirmed finer
+            roadmap.add_edges(pairs[keep], length[keep], checked_at=self.resolution)
 
     def verified_path(self) -> np.ndarray | None:
         """Node indices of a start-goal path the exact checker confirms, repairing the roadmap; None if none."""
@@ -181,19 +183,18 @@ class _Planner:
                 roadmap.remove_nodes(unsure[~ok])
                 continue
             steps = roadmap.edge_index(path)
-            unsure = steps[~roadmap.edge_verified[steps]]
-            a, b = roadmap.edges[unsure].T
             for resolution in self.verify_resolutions:
+                unsure = steps[roadmap.edge_checked_at[steps] > resolution]
+                a, b = roadmap.edges[unsure].T
                 ok = check_edges(self.exact, roadmap.nodes[a], roadmap.nodes[b], resolution)
-                if not ok.all():
-                    break
-            if resolution == self.verify_resolutions[-1]:  # the finest: what passed is verified
-                roadmap.edge_verified[unsure[ok]] = True
+                roadmap.edge_checked_at[unsure[ok]] = resolution  # remembered across repairs
                 roadmap.edge_cost[unsure[ok]] = roadmap.distance(roadmap.nodes[a[ok]], roadmap.nodes[b[ok]])
-            if ok.all():
+                if not ok.all():
+                    self._repaired(edges=len(unsure) - ok.sum())
+                    roadmap.remove_edges(unsure[~ok])
+                    break
+            else:
                 return path
-            self._repaired(edges=len(unsure) - ok.sum())
-            roadmap.remove_edges(unsure[~ok])
         return None
 
     def _repaired(self, nodes: int = 0, edges: int = 0) -> None:

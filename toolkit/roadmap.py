@@ -5,9 +5,10 @@ rotation counts by how far it can move the robot, and angles wrap around. The
 k-nearest search is a ``scipy.spatial.cKDTree`` on the scaled configurations with a
 periodic box along the angle axes (``boxsize``), so it is exact under that metric.
 
-Every node and edge remembers whether the exact checker has confirmed it
-(``node_verified``; ``edge_verified`` at the planner's verification resolution);
-the planner (:mod:`toolkit.prm`) confirms a path's nodes and edges before it returns it.
+Every node remembers whether the exact checker has confirmed it (``node_verified``),
+every edge the finest resolution at which it did (``edge_checked_at``, ``inf``: not
+yet); the planner (:mod:`toolkit.prm`) confirms a path's nodes and edges before it
+returns it.
 """
 
 from __future__ import annotations
@@ -21,7 +22,7 @@ from .robots import BoxRobot
 
 
 class Roadmap:
-    """``nodes (V, dof)``, ``edges (E, 2)`` int (i < j), ``edge_cost (E,)`` and the verified flags."""
+    """``nodes (V, dof)``, ``edges (E, 2)`` int (i < j), ``edge_cost (E,)``, ``node_verified (V,)``, ``edge_checked_at (E,)``."""
 
     def __init__(self, robot: BoxRobot):
         self.robot = robot
@@ -29,7 +30,7 @@ class Roadmap:
         self.node_verified = np.zeros(0, dtype=bool)
         self.edges = np.zeros((0, 2), dtype=int)
         self.edge_cost = np.zeros(0)
-        self.edge_verified = np.zeros(0, dtype=bool)
+        self.edge_checked_at = np.zeros(0)  # the finest resolution the exact checker confirmed each edge at
         self._box = np.where(robot.wraps, 2 * np.pi * robot.motion_weights, 0.0)  # (dof,) period per axis, 0: none
 
     def __repr__(self) -> str:
@@ -94,16 +95,17 @@ class Roadmap:
         v = len(self.nodes)
         return pairs[~np.isin(pairs @ [v, 1], self.edges @ [v, 1])]
 
-    def add_edges(self, pairs: np.ndarray, cost: np.ndarray, verified: bool) -> None:
+    def add_edges(self, pairs: np.ndarray, cost: np.ndarray, checked_at: float = np.inf) -> None:
+        """Append edges ``pairs (C, 2)`` of ``cost (C,)``, confirmed by the exact checker at ``checked_at`` (inf: not)."""
         self.edges = np.concatenate([self.edges, pairs])
         self.edge_cost = np.concatenate([self.edge_cost, cost])
-        self.edge_verified = np.concatenate([self.edge_verified, np.full(len(pairs), verified)])
+        self.edge_checked_at = np.concatenate([self.edge_checked_at, np.full(len(pairs), float(checked_at))])
 
     def remove_edges(self, which: np.ndarray) -> None:
         """Drop the edges selected by ``which`` (indices or a boolean mask)."""
         keep = np.ones(len(self.edges), dtype=bool)
         keep[which] = False
-        self.edges, self.edge_cost, self.edge_verified = self.edges[keep], self.edge_cost[keep], self.edge_verified[keep]
+        self.edges, self.edge_cost, self.edge_checked_at = self.edges[keep], self.edge_cost[keep], self.edge_checked_at[keep]
 
     def remove_nodes(self, which: np.ndarray) -> None:
         """Drop nodes ``which`` (indices) and their edges; later nodes shift down (earlier ones keep their index)."""

@@ -9,7 +9,7 @@
 - ``BT`` bridge test (Hsu et al. 2003): two invalid configurations at Gaussian
   distance; keep their midpoint when it is valid.
 
-Every sampler asks its checker about whole batches. ``sample(n_attempts, rng)``
+Every sampler asks its checker about whole batches (a ``few_calls`` checker about fewer, larger ones). ``sample(n_attempts, rng)``
 runs ``n_attempts`` independent attempts (one attempt yields at most one sample)
 and returns the ``(M, dof)`` samples, ``M <= n_attempts``. Configurations outside
 the robot's bounds count as invalid without asking the checker (the bounds act as
@@ -109,11 +109,19 @@ class GaussianSampler(_NearSampler):
 
 
 class BridgeTestSampler(_NearSampler):
-    """BT: an invalid uniform ``q1``, an invalid ``q2 ~ N(q1, sigma)``; keep the midpoint when valid."""
+    """BT: an invalid uniform ``q1``, an invalid ``q2 ~ N(q1, sigma)``; keep the midpoint when valid.
+
+    A ``few_calls`` checker is asked about all three of every attempt at once; another
+    one about ``q2`` only where ``q1`` is invalid, and then about the midpoints.
+    """
 
     def _sample(self, n, rng):
         Q1 = self.robot.sample(rng, n)  # (n, dof)
         Q2 = self._near(Q1, rng)
+        if self.checker.few_calls:
+            middle = segment_points(self.robot, Q1, Q2, np.full(n, 0.5))
+            valid = self._valid(np.concatenate([Q1, Q2, middle])).reshape(3, n)
+            return middle[~valid[0] & ~valid[1] & valid[2]]
         blocked = np.flatnonzero(~self._valid(Q1))
         blocked = blocked[~self._valid(Q2[blocked])]  # both ends invalid
         middle = segment_points(self.robot, Q1[blocked], Q2[blocked], np.full(len(blocked), 0.5))
