@@ -143,6 +143,13 @@ def test_bad_input_gives_clear_errors():
         plan(exact, q.start, np.array([np.nan, 1.0]), rng=np.random.default_rng(0))
     with pytest.raises(ValueError, match="unknown sampler"):
         plan(exact, q.start, q.goal, sampler="RRT", rng=np.random.default_rng(0))
+    for bad, match in [(dict(n_samples=0), "n_samples must be a positive integer"), (dict(k=2.5), "k must"),
+                       (dict(screen_spacing=0), "screen_spacing must be positive"),
+                       (dict(resolution=np.nan), "resolution must be positive"),
+                       (dict(screen_reject=1.5), "screen_reject must lie in"),
+                       (dict(screen_penalty=-1), "screen_penalty must be non-negative")]:
+        with pytest.raises(ValueError, match=f"PRMOptions.{match}"):
+            PRMOptions(**bad)
 
 
 # -- local planner and roadmap ----------------------------------------------------------------

@@ -70,6 +70,20 @@ class PRMOptions:
     screen_spacing: float = 8.0  # screening predicts points resolution * this apart (an estimate of the fraction)
     sampler_options: dict = field(default_factory=dict)
 
+    def __post_init__(self):
+        for name in ("n_samples", "k", "verify_refinement", "max_rounds"):
+            value = getattr(self, name)
+            if int(value) != value or value < 1:
+                raise ValueError(f"PRMOptions.{name} must be a positive integer, got {value!r}")
+        for name in ("resolution", "screen_spacing"):
+            value = getattr(self, name)
+            if value is not None and not (np.isfinite(value) and value > 0):
+                raise ValueError(f"PRMOptions.{name} must be positive and finite, got {value!r}")
+        if not 0 <= self.screen_reject <= 1:
+            raise ValueError(f"PRMOptions.screen_reject must lie in [0, 1], got {self.screen_reject!r}")
+        if not (np.isfinite(self.screen_penalty) and self.screen_penalty >= 0):
+            raise ValueError(f"PRMOptions.screen_penalty must be non-negative and finite, got {self.screen_penalty!r}")
+
 
 @dataclass
 class PlanResult:
