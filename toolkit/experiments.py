@@ -287,7 +287,7 @@ def run_costs(runs: list[dict]) -> list[str]:
                     + [f"{planning:.0f}"])
     return (["## Checker throughput (configurations per second, median) and stage times (seconds)", "",
              "Each stage's time when it was computed (a resumed run keeps them). *planning*: the 8 runs (4 samplers, "
-             "without and with prediction) added up; they run in parallel, one process per core.", ""]
+             "without and with prediction) added up (by default in parallel, one process per core; `--workers`).", ""]
             + _table(["", "exact cfg/s", "learned cfg/s", "learned / exact", "data s", "models s", "planning s"], rows))
 
 
