@@ -5,8 +5,13 @@
   inside its cell, sin/cos of the angles that wrap, the joints scaled to [-1, 1] and,
   for robots of several links, where each link box is (its centre relative to the
   base cell's centre, its long axis), from forward kinematics.
-- :class:`LinkKinematics`: that forward kinematics in torch, batched, float32: the
-  same frames as :meth:`toolkit.robots.BoxRobot.link_frames` (a test holds it to it).
+- :class:`LinkKinematics`: that forward kinematics, batched, float32: the same frames
+  as :meth:`toolkit.robots.BoxRobot.link_frames` (a test holds it to it).
+
+Both take torch tensors (training, GPU) or numpy arrays (the learned checker on CPU:
+a few hundred configurations per call, where numpy's per-operation cost is about
+half of torch's) and are written once for both: the functions they call have the
+same name and meaning in numpy (>= 2.0) and torch.
 
 The patch depends only on the workspace and the base cell, so :meth:`InputEncoding.cell_patches`
 lists it for every cell at once; the predictor folds it into a per-workspace table
@@ -41,6 +46,11 @@ def position_dofs(robot: BoxRobot) -> int:
     return int(np.argmax(robot.wraps)) if robot.wraps.any() else robot.dof
 
 
+def _namespace(x):
+    """The array library of ``x``: ``numpy`` for arrays, ``torch`` for tensors."""
+    return np if isinstance(x, np.ndarray) else torch
+
+
 def _turn(columns: list[torch.Tensor], axis: int, sin: torch.Tensor, cos: torch.Tensor) -> list[torch.Tensor]:
     """The columns of ``R @ rotation(axis, angle)``, given the columns ``3 x (3, N)`` of ``R`` and ``sin, cos (1, N)``."""
     j, k = (axis + 1) % 3, (axis + 2) % 3
@@ -55,7 +65,7 @@ def _rotate(columns: list[torch.Tensor], vector: tuple[float, float, float]) -> 
 
 
 class LinkKinematics(nn.Module):
-    """Link box centres and long axes of a :class:`BoxRobot`, ``(L, 3, N)`` each, in torch.
+    """Link box centres and long axes of a :class:`BoxRobot`, ``(L, 3, N)`` each.
 
     Takes the base position ``(3, N)`` and sin/cos ``(R, N)`` of the robot's ``R``
     rotational DoFs (base angles, then joints), which the encoding computes anyway;
@@ -71,10 +81,11 @@ class LinkKinematics(nn.Module):
         self.origins = [tuple(map(float, j.origin)) for j in robot.joints]  # (J, 3): joint in its parent's frame
         self.offsets = [tuple(map(float, l.offset)) for l in robot.links]  # (L, 3): box centre in its link's frame
 
-    def forward(self, position: torch.Tensor, sin: torch.Tensor, cos: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor]:
-        """Centres and long axes of the link boxes, ``(L, 3, N)`` each."""
-        eye = torch.eye(3, dtype=position.dtype, device=position.device)
-        columns = [eye[:, i: i + 1].expand(3, position.shape[1]) for i in range(3)]
+    def forward(self, position, sin, cos):
+        """Centres and long axes of the link boxes, ``(L, 3, N)`` each (tensors or arrays, as the inputs)."""
+        xp = _namespace(position)
+        eye = xp.eye(3, dtype=position.dtype, device=position.device)
+        columns = [xp.broadcast_to(eye[:, i: i + 1], (3, position.shape[1])) for i in range(3)]
         for r in range(self.n_base_turns):
             columns = _turn(columns, self.turn_axes[r], sin[r: r + 1], cos[r: r + 1])
         centers, long_axes = [], []
@@ -85,7 +96,7 @@ class LinkKinematics(nn.Module):
                 columns = _turn(columns, self.turn_axes[r], sin[r: r + 1], cos[r: r + 1])
             centers.append(position + _rotate(columns, offset))
             long_axes.append(columns[self.long_axes[link]])
-        return torch.stack(centers), torch.stack(long_axes)
+        return xp.stack(centers), xp.stack(long_axes)
 
 
 class InputEncoding(nn.Module):
@@ -106,14 +117,16 @@ class InputEncoding(nn.Module):
             raise ValueError(f"unknown input encoding {kind!r}; choose 'raw' or 'local'")
         self.kind, self.radius, self.grid_shape = kind, int(radius), tuple(grid_shape)
         self.n_pos = position_dofs(robot)  # buffers below derive from the robot and grid: not saved in checkpoints
-        self.register_buffer("lower", torch.tensor(np.array(robot.lower), dtype=torch.float32), persistent=False)
-        self.register_buffer("upper", torch.tensor(np.array(robot.upper), dtype=torch.float32), persistent=False)
         self.n_angles = int(robot.wraps.sum())  # configurations are [positions, angles, joints]
         self.base_height = robot.base_height  # the planar base's z
+        lower, upper = (np.array(bound[self.n_pos + self.n_angles:])[:, None] for bound in (robot.lower, robot.upper))
+        scale = 2 / (upper - lower)  # joints to [-1, 1]: q * scale + shift
         cell_axes = self.grid_shape[: self.n_pos] if kind == "local" else ()
-        self.register_buffer("last_cell", torch.tensor(cell_axes, dtype=torch.float32) - 1, persistent=False)  # (n_pos,)
-        strides = [math.prod(cell_axes[i + 1:]) for i in range(len(cell_axes))]
-        self.register_buffer("cell_strides", torch.tensor(strides, dtype=torch.long), persistent=False)  # (n_pos,)
+        strides = [math.prod(cell_axes[i + 1:]) for i in range(len(cell_axes))]  # exact in float32 below 2**24 cells
+        for name, value in [("joint_scale", scale), ("joint_shift", -1 - lower * scale),  # (n_joints, 1)
+                            ("last_cell", np.array(cell_axes)[:, None] - 1), ("cell_strides", np.array(strides)[:, None])]:
+            self.register_buffer(name, torch.tensor(value, dtype=torch.float32).reshape(-1, 1), persistent=False)
+        self._numpy_constants = None
         self.n_cells = math.prod(cell_axes)  # 1 for "raw"
         window = [torch.arange(-self.radius, self.radius + 1)] * self.n_pos
         window += [torch.arange(n) for n in self.grid_shape[self.n_pos:]]
@@ -146,24 +159,40 @@ class InputEncoding(nn.Module):
         index = (base[:, None, :] + self.offsets).unbind(-1)  # G x (n_cells, P)
         return padded[(slice(None),) + index]  # (W, n_cells, P)
 
-    def configs(self, Q: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor]:
+    def configs(self, Q):
         """Configurations ``Q (N, dof)`` as ``(cell, pose)``: each one's base cell, ``(N,)`` indices into the rows of
-        :meth:`cell_patches` (0 for "raw"), and its pose, one row per feature ``(pose_size, N)`` (``q.T`` for "raw")."""
-        if self.kind == "raw":
-            return torch.zeros(len(Q), dtype=torch.long, device=Q.device), Q.T
+        :meth:`cell_patches` (0 for "raw"), and its pose, one row per feature ``(pose_size, N)`` (``q.T`` for "raw").
+
+        ``Q`` is a float32 tensor, or a numpy array (computed in float32, answered in numpy).
+        """
+        xp = _namespace(Q)
         # one row per feature: elementwise ops on contiguous (k, N) rows are several times faster than on (N, k) columns
-        rows = Q.T.contiguous()  # (dof, N)
+        rows = Q.T.contiguous() if xp is torch else np.ascontiguousarray(Q.T, dtype=np.float32)  # (dof, N)
+        n = rows.shape[1]
+        if self.kind == "raw":
+            return xp.zeros(n, dtype=xp.int64, device=rows.device), rows
+        last_cell, strides, scale, shift = self._constants(xp)
         first_joint = self.n_pos + self.n_angles
         position = rows[: self.n_pos]  # (n_pos, N); grid cells are unit cubes from the origin
-        cell = torch.minimum(torch.floor(position).clamp(min=0), self.last_cell[:, None])  # (n_pos, N), clamped into the grid
+        cell = xp.minimum(xp.clip(xp.floor(position), 0, None), last_cell)  # (n_pos, N), clamped into the grid
         centre = cell + 0.5
         turns = rows[self.n_pos:] if self.kinematics is not None else rows[self.n_pos:first_joint]  # (R, N)
-        sin, cos = torch.sin(turns), torch.cos(turns)
-        lo, hi = self.lower[first_joint:, None], self.upper[first_joint:, None]
-        parts = [position - centre, sin[: self.n_angles], cos[: self.n_angles], (rows[first_joint:] - lo) * (2 / (hi - lo)) - 1]
+        sin, cos = xp.sin(turns), xp.cos(turns)
+        parts = [position - centre, sin[: self.n_angles], cos[: self.n_angles], rows[first_joint:] * scale + shift]
         if self.kinematics is not None:
-            base = nn.functional.pad(position, (0, 0, 0, 3 - self.n_pos), value=self.base_height)  # (3, N)
-            centers, long_axes = self.kinematics(base, sin, cos)  # (L, 3, N) each
-            parts += [(centers - nn.functional.pad(centre, (0, 0, 0, 3 - self.n_pos))).flatten(0, 1), long_axes.flatten(0, 1)]
-        index = (cell.long() * self.cell_strides[:, None]).sum(dim=0)  # (N,)
-        return index, torch.cat(parts, dim=0)  # (N,), (pose_size, N)
+            up = 3 - self.n_pos  # the planar base's z, not a DoF
+            height = xp.full((up, n), self.base_height, dtype=rows.dtype, device=rows.device)
+            centers, long_axes = self.kinematics(xp.concat([position, height]), sin, cos)  # (L, 3, N) each
+            centre_3d = xp.concat([centre, xp.zeros((up, n), dtype=rows.dtype, device=rows.device)])
+            parts += [(centers - centre_3d).reshape(3 * len(centers), n), long_axes.reshape(3 * len(centers), n)]
+        index = (cell * strides).sum(0)  # (N,)
+        return (index.long() if xp is torch else index.astype(np.int64)), xp.concat(parts)  # (N,), (pose_size, N)
+
+    def _constants(self, xp) -> tuple:
+        """``(last_cell, cell_strides, joint_scale, joint_shift)``, ``(k, 1)`` each, as tensors or numpy arrays."""
+        buffers = (self.last_cell, self.cell_strides, self.joint_scale, self.joint_shift)
+        if xp is torch:
+            return buffers
+        if self._numpy_constants is None:
+            self._numpy_constants = tuple(b.cpu().numpy() for b in buffers)
+        return self._numpy_constants

@@ -28,7 +28,7 @@ from .workspace import Workspace
 class LearnedChecker(CollisionChecker):
     """Predicted validity in one workspace: P(valid) >= ``threshold`` (default: the model's own, 0.5 or calibrated)."""
 
-    few_calls = True  # measured on 3DC, CPU: about 0.5-1 ms a call, 0.3 us a configuration (exact: 6-9 us)
+    few_calls = True  # 3DC on a CPU: about 0.4 ms a call plus 0.7 us a configuration (exact: 6-9 us a configuration)
 
     def __init__(self, workspace: Workspace, models: TrainedModels, threshold: float | None = None):
         scenario = models.scenario
@@ -41,8 +41,7 @@ class LearnedChecker(CollisionChecker):
         device = models.predictor.threshold.device
         grid = torch.as_tensor(workspace.occupancy(), device=device)  # (*grid)
         self._margin_of = models.predictor.eval().for_workspace(grid)  # the workspace, encoded once
-        self._device = device
-        self._margins(self.robot.lower[None].copy())  # a first call's one-off costs (torch's lazy set-up) belong here
+        self._margins(self.robot.lower[None])  # a first call's one-off costs (lazy set-up) belong here
 
     @property
     def threshold(self) -> float:
@@ -69,8 +68,7 @@ class LearnedChecker(CollisionChecker):
 
         Every row goes through the network, in or out of bounds: cheaper than selecting rows.
         """
-        Qt = torch.from_numpy(Q).to(self._device, torch.float32)  # (N, dof)
-        return self._margin_of(Qt).cpu().numpy()
+        return self._margin_of(Q)
 
 
 def load_checker(checkpoint_dir: str | Path, workspace: Workspace, threshold: float | None = None) -> LearnedChecker:

@@ -94,18 +94,16 @@ def invalid_fractions(checker: CollisionChecker, Q0, Q1, resolution: float) -> n
 
 
 def last_valid_along(checker: CollisionChecker, Q0: np.ndarray, Q1: np.ndarray, resolution: float,
-                     bisections: int = 0, chunk: int | None = None) -> np.ndarray:
+                     bisections: int = 0, chunk: int = 16) -> np.ndarray:
     """``(E, dof)``: along each segment from a valid ``Q0[e]``, the last valid point before the first invalid one.
 
-    Walks all segments together, ``chunk`` steps of ``resolution`` at a time (default:
-    16, all of them for a ``few_calls`` checker); then
+    Walks all segments together, ``chunk`` steps of ``resolution`` at a time; then
     ``bisections`` halvings of the step that went from valid to invalid bring the
     point within ``resolution / 2**bisections`` of the boundary. A segment with no
     invalid point returns ``Q1[e]``.
     """
     robot = checker.robot
     n = step_counts(robot, Q0, Q1, resolution)  # (E,)
-    chunk = chunk or (int(n.max(initial=1)) if checker.few_calls else 16)
     first_bad = np.full(len(n), -1)  # step index of the first invalid point, -1 while unknown
     done = 0
     while np.any((first_bad < 0) & (n > done)):

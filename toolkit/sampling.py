@@ -9,12 +9,14 @@
 - ``BT`` bridge test (Hsu et al. 2003): two invalid configurations at Gaussian
   distance; keep their midpoint when it is valid.
 
-Every sampler asks its checker about whole batches (a ``few_calls`` checker about fewer, larger ones). ``sample(n_attempts, rng)``
-runs ``n_attempts`` independent attempts (one attempt yields at most one sample)
-and returns the ``(M, dof)`` samples, ``M <= n_attempts``. Configurations outside
-the robot's bounds count as invalid without asking the checker (the bounds act as
+Every sampler asks its checker about whole batches (the bridge test asks a
+``few_calls`` checker about fewer, larger ones). ``sample(n_attempts, rng)`` runs
+``n_attempts`` independent attempts (one attempt yields at most one sample) and
+returns the ``(M, dof)`` samples, ``M <= n_attempts``. Configurations outside the
+robot's bounds count as invalid without asking the checker (the bounds act as
 walls). Defaults follow OMPL: ``sigma = 0.1 x`` the diagonal of the bounds (OMPL's
-``STD_DEV_AS_SPACE_EXTENT_FRACTION``); OB walks in steps of 1 % of that diagonal (OMPL's longest valid segment).
+``STD_DEV_AS_SPACE_EXTENT_FRACTION``); OB walks in steps of 1 % of that diagonal
+(OMPL's longest valid segment).
 """
 
 from __future__ import annotations
