@@ -288,6 +288,7 @@ def test_run_queries_summary_with_a_checker_factory():
     assert summary["success_rate"] == 1.0 and summary["path_valid_rate"] == 1.0
     assert summary["predicted_checks"] > 0 and summary["sampling_s"] <= summary["total_s"]
     assert summary["total_s_std"] >= 0 and summary["n_queries"] == 6
+    assert summary["total_s_median"] == np.median([r["total_s"] for r in records])
 
 
 def test_plan_command_prints_json(capsys):

@@ -276,6 +276,18 @@ def paper_tables(runs: list[dict]) -> list[str]:
                       "success without / with", "paths valid without / with"], times))
 
 
+def median_ratios(runs: list[dict]) -> list[str]:
+    """Per sampler, the median time per query with prediction over the median without (n/a in older results)."""
+    def ratio(planning: dict, key: str) -> str:
+        with_, without = (planning[m].get(key + "_median") for m in ("with", "without"))
+        return f"{with_ / without:.2f}" if with_ is not None and without else "n/a"
+
+    rows = [[r["scenario"]] + [ratio(r["planning"][s], key) for key in ("sampling_s", "total_s") for s in SAMPLERS]
+            for r in runs]
+    return (["## Time with / without prediction, medians over the queries", ""]
+            + _table([""] + [f"Sampling {s}" for s in SAMPLERS] + [f"Total {s}" for s in SAMPLERS], rows))
+
+
 def run_costs(runs: list[dict]) -> list[str]:
     """Checker throughput and the seconds each stage took, one row per run."""
     rows = []
@@ -296,7 +308,7 @@ def tables_markdown(results: dict) -> str:
     title = (f"# {scenarios.get(results['scenario']).title} — preset `{results['preset']}`"
              f"{' (quick)' if results['quick'] else ''}, seed {results['seed']}")
     return "\n".join([title, "", "Every cell: **ours** / paper.", ""] + paper_tables([results]) + [""]
-                     + run_costs([results]) + [""])
+                     + median_ratios([results]) + [""] + run_costs([results]) + [""])
 
 
 def summary_markdown(runs: list[dict]) -> str:
@@ -304,7 +316,7 @@ def summary_markdown(runs: list[dict]) -> str:
     first = runs[0]
     title = f"# Preset `{first['preset']}`{' (quick)' if first['quick'] else ''}, seed {first['seed']}"
     return "\n".join([title, "", "Every cell: **ours** / paper.", ""] + paper_tables(runs) + [""]
-                     + run_costs(runs) + [""])
+                     + median_ratios(runs) + [""] + run_costs(runs) + [""])
 
 
 def reproduce_many(names: list[str], preset: str = "paper", quick: bool = False, seed: int = 0,

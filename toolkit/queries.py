@@ -8,7 +8,7 @@ from ``(seed, workspace index)``, and at least a quarter of the region's diagona
 apart (base positions), so every query means travelling.
 
 ``run_queries`` solves each query from scratch (a fresh roadmap, as in the paper)
-and summarizes: mean and std of ``sampling_s`` and ``total_s``, ``success_rate``,
+and summarizes: mean and std of ``sampling_s`` and ``total_s`` (and their medians), ``success_rate``,
 and ``path_valid_rate``, the fraction of returned paths that a fresh exact checker
 accepts at 10x finer resolution than the local planner's.
 """
@@ -126,6 +126,8 @@ def summarize(records: list[dict]) -> dict:
     for key in ("sampling_s", "connection_s", "query_s", "total_s", "encode_s", "exact_checks", "predicted_checks"):
         summary[key] = float(values(key).mean()) if records else 0.0
         summary[key + "_std"] = float(values(key).std()) if records else 0.0
+    for key in ("sampling_s", "total_s"):  # robust to the odd slow query on a noisy machine
+        summary[key + "_median"] = float(np.median(values(key))) if records else 0.0
     solved = [r for r in records if r["success"]]
     summary["success_rate"] = len(solved) / len(records) if records else 0.0
     summary["path_valid_rate"] = float(np.mean([r["path_valid"] for r in solved])) if solved else 1.0
