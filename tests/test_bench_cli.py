@@ -24,6 +24,14 @@ def test_bench_prints_one_json_object(capsys):
     assert result["ratio"] == pytest.approx(result["learned_cfg_per_s"] / result["exact_cfg_per_s"])
 
 
+def test_bench_at_a_sampler_sized_batch(capsys):
+    assert cli.main(["bench", "--scenario", "2ds", "--batch", "200", "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["learned_cfg_per_s"] > 0
+    with pytest.raises(SystemExit):
+        cli.main(["bench", "--scenario", "2ds", "--batch", "0"])
+    assert "must be a positive integer" in capsys.readouterr().err
+
+
 @pytest.mark.parametrize("command", [
     [sys.executable, "-m", "toolkit"],
     [str(Path(sys.executable).with_name("toolkit"))],  # the console script installed beside this Python

@@ -16,13 +16,23 @@ from . import scenarios
 SCENARIO_NAMES = sorted(scenarios.SCENARIOS)
 
 
+def _positive_int(text: str) -> int:
+    """An argparse type: an integer >= 1."""
+    value = int(text)
+    if value < 1:
+        raise argparse.ArgumentTypeError(f"must be a positive integer, got {text}")
+    return value
+
+
 def cmd_bench(args: argparse.Namespace) -> int:
     from . import bench, checkpoints
 
     scenario = scenarios.get(args.scenario)
     models = checkpoints.load_models(args.checkpoint, scenario.name) if args.checkpoint else None
-    result = {"scenario": scenario.name, "exact_cfg_per_s": bench.exact_throughput(scenario, seed=args.seed),
-              "learned_cfg_per_s": bench.learned_throughput(scenario, args.preset, seed=args.seed, models=models)}
+    batches = {"batch": args.batch} if args.batch else {}  # default: each function's own
+    result = {"scenario": scenario.name, "exact_cfg_per_s": bench.exact_throughput(scenario, seed=args.seed, **batches),
+              "learned_cfg_per_s": bench.learned_throughput(scenario, args.preset, seed=args.seed, models=models,
+                                                            **batches)}
     result["ratio"] = result["learned_cfg_per_s"] / result["exact_cfg_per_s"]
     if models is not None:
         result["planning"] = bench.planning_ratios(scenario, models, args.workspaces, args.pairs, seed=args.seed)
@@ -110,6 +120,8 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--json", action="store_true", help="print one JSON object")
     bench.add_argument("--preset", choices=["paper", "strong"], default="paper",
                        help="networks whose learned throughput is measured (untrained: speed does not depend on weights)")
+    bench.add_argument("--batch", type=_positive_int, help="configurations per call for both checkers (default: "
+                                                             "20,000 exact, 10,000 learned; a sampler asks 200-2,000)")
     bench.add_argument("--checkpoint", help="a trained model (from `toolkit train`, or DIR/cache/checkpoint of "
                                             "`toolkit reproduce`): also time PRM with and without it")
     bench.add_argument("--workspaces", type=int, default=2, help="with --checkpoint: query workspaces to plan in")
