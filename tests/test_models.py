@@ -166,17 +166,18 @@ def test_workspace_margin_equals_the_full_network(kind, latent_input, rng):
     Q = torch.as_tensor(s.robot.sample(rng, 50), dtype=torch.float32)
     Q[:3, :3] = torch.tensor([[0.0, 0.0, 0.0], [11.0, 11.0, 11.0], [10.99, 0.01, 5.0]])  # cells on the grid's faces
     margin_of = predictor.for_workspace(grid)
-    assert margin_of.table.shape == (11 ** 3 if kind == "local" else 1, predictor.mlp.hidden[0])
+    assert margin_of.table.shape == (predictor.mlp.hidden[0], 11 ** 3 if kind == "local" else 1)
     with torch.no_grad():
         grids, ws_index = grid[None], torch.zeros(50, dtype=torch.long)
         logits = predictor.mlp(predictor.encoding(predictor.cae.encode(grids), grids, ws_index, Q))  # (50, 2)
-    margins = margin_of(Q.numpy().astype(float))  # numpy in, numpy out (on the CPU, computed in numpy)
+    margins = margin_of(Q.numpy().astype(float))  # numpy in, numpy out (50 configurations: computed in numpy)
     assert margins.dtype == np.float32
     np.testing.assert_allclose(margins, (logits[:, VALID] - logits[:, 1 - VALID]).numpy(), atol=1e-4)
     assert margin_of(Q.numpy()[:0]).shape == (0,)
-    in_torch = WorkspaceMargin(predictor, grid, numpy=False)  # the path for a GPU, here on the CPU
-    in_torch.CHUNK = 16  # several chunks
+    in_torch = WorkspaceMargin(predictor, grid, numpy_below=0)  # as on a GPU (or a large call)
     np.testing.assert_allclose(in_torch(Q.numpy()), margins, atol=1e-5)
+    margin_of.CHUNK = 16  # numpy in several chunks
+    np.testing.assert_allclose(margin_of(Q.numpy()), margins, atol=1e-6)
 
 
 def test_cell_patches_match_the_patch_of_each_configuration(rng):

@@ -135,28 +135,30 @@ class WorkspaceMargin:
     fewer, cheaper operations:
 
     - everything the workspace gives the first layer (its bias, ``W z``, ``W patch`` of
-      every base cell) is one table ``(n_cells, H)``, built once, so a prediction gathers
-      one row and multiplies only the pose;
+      every base cell) is one table ``(H, n_cells)``, built once, so a prediction gathers
+      one column and multiplies only the pose;
     - only the difference of the two logits matters, so the last layer is one vector;
     - activations are column-major ``(features, N)``: the small matmuls of these MLPs
       run about 1.5x faster that way on CPU than row-major (measured: the paper's
       3D MLP at 10k configurations, one thread, 1.3 ms against 2.0 ms);
-    - on the CPU it computes in numpy: a sampler's call holds a few hundred
-      configurations, where the cost per operation dominates, and numpy's is about
-      half of torch's (strong 3DC-7 model, 400 configurations right after an exact
-      check: 0.4 ms against 0.9 ms a call); at 10k it is about as fast as torch
-      was (the paper's 3DC-9 MLP, one thread: 3.6M configurations/s); batches go
-      in chunks of ``CHUNK``, whose temporaries stay in cache;
+    - on the CPU, calls of fewer than ``NUMPY_BELOW`` configurations compute in numpy:
+      a sampler asks about a few hundred at a time, where the cost per operation
+      dominates, and numpy's is about half of torch's (strong 3DC-7 model, 400
+      configurations right after an exact check: 0.4 ms against 0.9 ms a call), in
+      chunks of ``CHUNK`` whose temporaries stay in cache; larger calls go to torch,
+      whose fused kernels are faster there (the paper's 3DC-9 MLP at 10k: about 1.5x);
     - the PReLU slopes are read once. Dropout is off, as in ``eval()``.
 
     A snapshot: training the predictor further does not change it.
     """
 
-    CHUNK = 4096  # configurations per pass
+    NUMPY_BELOW = 8192  # on the CPU, calls of fewer configurations compute in numpy, in chunks of CHUNK
+    CHUNK = 4096
 
     @torch.no_grad()
-    def __init__(self, predictor: CollisionPredictor, grid: torch.Tensor, numpy: bool | None = None):
-        """``numpy``: compute in numpy (default: when ``grid`` is on the CPU) or in torch on ``grid``'s device."""
+    def __init__(self, predictor: CollisionPredictor, grid: torch.Tensor, numpy_below: int | None = None):
+        """``numpy_below``: calls of fewer configurations compute in numpy, the others in torch on ``grid``'s
+        device (default: ``NUMPY_BELOW`` on the CPU, 0 elsewhere)."""
         encoding, net = predictor.encoding, predictor.mlp.net
         grids = grid[None]  # (1, *grid)
         first = net[0]
@@ -166,48 +168,51 @@ class WorkspaceMargin:
             share += first.weight[:, :L] @ predictor.cae.encode(grids)[0, :L]
         patches = encoding.cell_patches(grids)[0]  # (n_cells, P)
         linears = [m for m in net if isinstance(m, nn.Linear)]
-        slopes = [float(m.weight) for m in net if isinstance(m, nn.PReLU)]  # one after each hidden layer
         last = linears[-1]
-        self.encoding, self.device, self.slopes = encoding, grid.device, slopes
-        self.numpy = self.device.type == "cpu" if numpy is None else bool(numpy)
-        arrays = [patches @ first.weight[:, L:L + P].T + share,  # (n_cells, H): rows gather fast
-                  first.weight[:, L + P:],  # (H, pose_size)
-                  last.weight[VALID] - last.weight[1 - VALID]]  # (H_last,)
-        arrays += [a for m in linears[1:-1] for a in (m.weight, m.bias[:, None])]
-        arrays = [a.cpu().numpy().copy() if self.numpy else a.clone() for a in arrays]
-        self.table, self.pose_weight, self.last_weight = arrays[:3]
-        self.hidden = list(zip(arrays[3::2], arrays[4::2]))  # (weight, bias (H_next, 1)) of each hidden layer
+        self.encoding, self.device = encoding, grid.device
+        self.numpy_below = (self.NUMPY_BELOW if grid.device.type == "cpu" else 0) if numpy_below is None else numpy_below
+        self.slopes = [float(m.weight) for m in net if isinstance(m, nn.PReLU)]  # one after each hidden layer
         self.last_bias = float(last.bias[VALID] - last.bias[1 - VALID])
+        tensors = [first.weight[:, L:L + P] @ patches.T + share[:, None],  # (H, n_cells)
+                   first.weight[:, L + P:],  # (H, pose_size)
+                   last.weight[VALID] - last.weight[1 - VALID]]  # (H_last,)
+        tensors += [a for m in linears[1:-1] for a in (m.weight, m.bias[:, None])]  # (H_next, H), (H_next, 1)
+        tensors = [t.clone().contiguous() for t in tensors]
+        self.table = tensors[0]
+        self._weights = {torch: tensors}  # the same numbers for each library (numpy views share the memory)
+        if self.numpy_below:
+            self._weights[np] = [t.numpy() for t in tensors]
 
     def __call__(self, Q: np.ndarray) -> np.ndarray:
-        """Margins ``(N,)`` float32 of configurations ``Q (N, dof)`` (computed on the predictor's device)."""
-        margins = []
-        for start in range(0, max(len(Q), 1), self.CHUNK):
-            q = Q[start:start + self.CHUNK]
-            if self.numpy:
-                margins.append(self._margins(q))
-            else:
-                margins.append(self._margins(torch.as_tensor(q, dtype=torch.float32, device=self.device)).cpu().numpy())
-        return np.concatenate(margins)
+        """Margins ``(N,)`` float32 of configurations ``Q (N, dof)``."""
+        if len(Q) >= self.numpy_below:
+            return self._margins(torch.as_tensor(Q, dtype=torch.float32, device=self.device), torch).cpu().numpy()
+        return np.concatenate([self._margins(Q[i:i + self.CHUNK], np) for i in range(0, max(len(Q), 1), self.CHUNK)])
 
-    def _margins(self, Q):
-        """One chunk, as arrays or tensors."""
-        xp = np if isinstance(Q, np.ndarray) else torch
-        with torch.inference_mode():
-            cell, pose = self.encoding.configs(Q)  # (N,), (pose_size, N)
-            h = self.pose_weight @ pose  # (H, N)
-            h += self.table[cell].T
-            _prelu_(xp, h, self.slopes[0])
-            for (weight, bias), slope in zip(self.hidden, self.slopes[1:]):
-                h = weight @ h  # (H_next, N)
-                h += bias
-                _prelu_(xp, h, slope)
-            return self.last_weight @ h + self.last_bias  # (N,)
+    @torch.inference_mode()
+    def _margins(self, Q, xp):
+        """``Q`` and the margins as arrays (``xp`` numpy) or tensors (``xp`` torch), each with its fused operations."""
+        table, pose_weight, last_weight, *hidden = self._weights[xp]
+        cell, pose = self.encoding.configs(Q)  # (N,), (pose_size, N)
+        if xp is torch:
+            h = table.index_select(1, cell).addmm_(pose_weight, pose)  # (H, N)
+            nn.functional.leaky_relu_(h, self.slopes[0])
+            for weight, bias, slope in zip(hidden[0::2], hidden[1::2], self.slopes[1:]):
+                h = nn.functional.leaky_relu_(torch.addmm(bias, weight, h), slope)  # (H_next, N)
+            return torch.mv(h.T, last_weight) + self.last_bias  # (N,)
+        h = np.take(table, cell, axis=1)  # (H, N)
+        h += pose_weight @ pose
+        _prelu_(h, self.slopes[0])
+        for weight, bias, slope in zip(hidden[0::2], hidden[1::2], self.slopes[1:]):
+            h = weight @ h  # (H_next, N)
+            h += bias
+            _prelu_(h, slope)
+        return last_weight @ h + self.last_bias  # (N,)
 
 
-def _prelu_(xp, h, slope: float) -> None:
-    """PReLU in place, for arrays or tensors: the larger of ``h`` and ``slope * h`` (the smaller if slope > 1)."""
-    (xp.maximum if slope <= 1 else xp.minimum)(h, slope * h, out=h)
+def _prelu_(h: np.ndarray, slope: float) -> None:
+    """PReLU in place: the larger of ``h`` and ``slope * h`` (the smaller if slope > 1)."""
+    (np.maximum if slope <= 1 else np.minimum)(h, slope * h, out=h)
 
 
 def build_predictor(scenario: Scenario, encoding: str, mlp_hidden: tuple[int, ...] | None = None,
