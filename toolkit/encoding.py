@@ -51,15 +51,16 @@ def _namespace(x):
     return np if isinstance(x, np.ndarray) else torch
 
 
-def _turn(columns: list[torch.Tensor], axis: int, sin: torch.Tensor, cos: torch.Tensor) -> list[torch.Tensor]:
-    """The columns of ``R @ rotation(axis, angle)``, given the columns ``3 x (3, N)`` of ``R`` and ``sin, cos (1, N)``."""
+def _turn(columns: list, axis: int, sin, cos) -> list:
+    """The columns of ``R @ rotation(axis, angle)``, given the columns ``3 x (3, N)`` of ``R`` and ``sin, cos (1, N)``
+    (tensors or arrays: only ``*``, ``+`` and ``-``)."""
     j, k = (axis + 1) % 3, (axis + 2) % 3
     turned = list(columns)
     turned[j], turned[k] = cos * columns[j] + sin * columns[k], cos * columns[k] - sin * columns[j]
     return turned
 
 
-def _rotate(columns: list[torch.Tensor], vector: tuple[float, float, float]) -> torch.Tensor | float:
+def _rotate(columns: list, vector: tuple[float, float, float]):
     """``R @ vector`` ``(3, N)`` from the columns of ``R``, skipping the vector's zero entries."""
     return sum(v * column for v, column in zip(vector, columns) if v)
 
