@@ -285,3 +285,70 @@ def test_exact_checker_picks_the_fastest_exact_one():
     assert type(exact_checker(plane, robots.point_robot())) is PointRobotChecker
     room = scenarios.get("3dc9").make_workspace(np.random.default_rng(0))
     assert type(exact_checker(room, robots.box_chain(3))) is ExactChecker
+
+
+# -- clearance bounds: below FCL's distances, and not vacuous --------------------------------
+
+def true_clearance(ws, robot, q, cap):
+    """Min over links of FCL's distance to every block and the exact distance to the walls (corners), capped."""
+    import fcl
+
+    centers, rotations, half = robot.link_boxes(q[None])
+    distance = cap
+    for l in range(robot.n_links):
+        corners = centers[0, l] + (np.array(list(np.ndindex(*(2,) * robot.dim))) * 2 - 1) * half[l] @ rotations[0, l].T
+        walls = np.minimum(corners - ws.lower, ws.upper - corners)  # (2^D, D)
+        if l < robot.level_links:  # never moves vertically: floor and ceiling are out of reach
+            walls = walls[:, :-1]
+        distance = min(distance, walls.min())
+        R, c, h = np.eye(3), np.zeros(3), np.full(3, 0.5)
+        R[: robot.dim, : robot.dim], c[: robot.dim], h[: robot.dim] = rotations[0, l], centers[0, l], half[l]
+        link = fcl.CollisionObject(fcl.Box(*(2 * h)), fcl.Transform(R, c))
+        for lo, hi in ws.boxes:
+            lo3, hi3 = np.full(3, -1.0), np.full(3, 1.0)
+            lo3[: robot.dim], hi3[: robot.dim] = lo, hi
+            box = fcl.CollisionObject(fcl.Box(*(hi3 - lo3)), fcl.Transform((lo3 + hi3) / 2))
+            distance = min(distance, fcl.distance(link, box, fcl.DistanceRequest(), fcl.DistanceResult()))
+    return max(distance, 0.0)
+
+
+@pytest.mark.parametrize("name", SCENARIOS)
+def test_clearances_bound_fcl_distances_from_below_and_closely(name):
+    scenario = scenarios.get(name)
+    robot, rng = scenario.robot, np.random.default_rng(3)
+    ws = scenario.make_workspace(rng)
+    exact, cap = exact_checker(ws, robot), 0.5
+    Q = np.concatenate([robot.sample(rng, 100), near_contact(robot, ws, rng, 300)])
+    Q = Q[exact.are_valid(Q)][:150]
+    bound = exact.clearances(Q, cap)
+    truth = np.array([true_clearance(ws, robot, q, cap) for q in Q])
+    assert np.all((bound >= 0) & (bound <= truth + 1e-9))  # a lower bound
+    near = truth < cap
+    assert near.sum() >= 20 and np.median(bound[near] / truth[near]) > 0.9  # and mostly a tight one
+    assert exact.n_bounded == len(Q)
+
+
+def test_clearances_are_zero_where_invalid_and_positive_proves_validity():
+    scenario = scenarios.get("3dc9")
+    robot, rng = scenario.robot, np.random.default_rng(4)
+    ws = scenario.make_workspace(rng)
+    exact = exact_checker(ws, robot)
+    Q = np.concatenate([robot.sample(rng, 1000), near_contact(robot, ws, rng, 1000)])
+    Q[:50, 0] = robot.upper[0] + 1  # out of bounds
+    bound, valid = exact.clearances(Q, 0.1), exact.are_valid(Q)
+    assert np.all(valid[bound > 0]) and np.all(bound[~valid] == 0)
+    assert (bound > 0).sum() > 0.5 * valid.sum()
+    for bad in (0.0, -1.0, np.nan, np.inf):
+        with pytest.raises(ValueError, match="cap must be positive"):
+            exact.clearances(Q[:3], bad)
+
+
+def test_level_links_never_move_vertically():
+    robot, rng = robots.youbot(), np.random.default_rng(5)
+    assert robot.level_links == 2  # the base and the turret, turned about vertical axes
+    assert robots.box_chain(3).level_links == 0 and robots.point_robot().level_links == 0
+    Q = robot.sample(rng, 200)
+    moved = robot.sample(rng, 200)
+    heights = robot.link_aabbs(Q)[:, :, :, 2], robot.link_aabbs(moved)[:, :, :, 2]  # (N, L, 2) each
+    np.testing.assert_allclose(heights[0][:, :2], heights[1][:, :2], atol=1e-12)
+    assert np.abs(heights[0][:, 2:] - heights[1][:, 2:]).max() > 0.1  # the arm does

@@ -7,7 +7,7 @@ import pytest
 
 from toolkit import cli, local_planner, prm, scenarios
 from toolkit.collision import CollisionChecker, exact_checker
-from toolkit.local_planner import check_edges, invalid_fractions, path_is_valid, segment_points
+from toolkit.local_planner import certify_edges, check_edges, invalid_fractions, path_is_valid, segment_points
 from toolkit.prm import PRMOptions, plan
 from toolkit.queries import make_queries, run_queries
 from toolkit.roadmap import Roadmap
@@ -183,13 +183,19 @@ class RecordingChecker(CollisionChecker):
         return np.ones(len(Q), bool)
 
 
-def test_check_edges_visits_every_interior_point_once_coarse_to_fine(monkeypatch):
+def forty_segments_and_their_points(resolution):
+    """A robot, 40 random segments ``Q0 -> Q1``, and all their interior points at ``resolution``."""
     robot = scenarios.get("3dc7").robot
     rng = np.random.default_rng(1)
     Q0, Q1 = robot.sample(rng, 40), robot.sample(rng, 40)
-    n = np.maximum(np.ceil(robot.motion_bound(Q0, Q1) / 0.05).astype(int), 1)
-    want = np.concatenate([segment_points(robot, np.repeat(a[None], k - 1, 0), np.repeat(b[None], k - 1, 0),
-                                          np.arange(1, k) / k) for a, b, k in zip(Q0, Q1, n)])
+    n = np.maximum(np.ceil(robot.motion_bound(Q0, Q1) / resolution).astype(int), 1)
+    points = np.concatenate([segment_points(robot, np.repeat(a[None], k - 1, 0), np.repeat(b[None], k - 1, 0),
+                                            np.arange(1, k) / k) for a, b, k in zip(Q0, Q1, n)])
+    return robot, Q0, Q1, points
+
+
+def test_check_edges_visits_every_interior_point_once_coarse_to_fine(monkeypatch):
+    robot, Q0, Q1, want = forty_segments_and_their_points(0.05)
     calls = {}
     for min_batch in (1, 256, 10**9):
         monkeypatch.setattr(local_planner, "MIN_BATCH", min_batch)
@@ -205,12 +211,12 @@ def test_check_edges_visits_every_interior_point_once_coarse_to_fine(monkeypatch
 
 def test_screened_path_edges_are_confirmed_coarse_then_fine_each_once(monkeypatch):
     scenario = scenarios.get("2ds")
-    checked = []  # (resolution, edge, passed) of every edge the planner checks exactly
-    def recording(checker, Q0, Q1, resolution):
-        ok = check_edges(checker, Q0, Q1, resolution)
+    checked = []  # (resolution, edge, passed) of every edge the planner confirms exactly
+    def recording(checker, Q0, Q1, resolution, spacing):
+        ok = certify_edges(checker, Q0, Q1, resolution, spacing)
         checked.extend((resolution, q0.tobytes() + q1.tobytes(), bool(v)) for q0, q1, v in zip(Q0, Q1, ok))
         return ok
-    monkeypatch.setattr(prm, "check_edges", recording)
+    monkeypatch.setattr(prm, "certify_edges", recording)
     repairs = 0
     for i, q in enumerate(make_queries(scenario, seed=0, n_workspaces=2, per_workspace=3)):
         exact = exact_checker(q.workspace, scenario.robot)
@@ -229,6 +235,53 @@ def test_screened_path_edges_are_confirmed_coarse_then_fine_each_once(monkeypatc
         assert len(edges) == len(set(edges))
     passed_coarse = {e for r, e, ok in checked if r == coarse and ok}
     assert {e for r, e, _ in checked if r == coarse / 10} <= passed_coarse
+
+
+def segments_near_obstacles(name, n, scale, seed):
+    """A query workspace of ``name``, its exact checker, and ``n`` segments between valid configurations
+    ``scale`` (a fraction of the bounds) apart: some valid, some grazing, some through obstacles."""
+    scenario = scenarios.get(name)
+    q = make_queries(scenario, seed=0, n_workspaces=1)[0]
+    exact, robot, rng = exact_checker(q.workspace, scenario.robot), scenario.robot, np.random.default_rng(seed)
+    Q = robot.sample(rng, 20 * n)
+    Q = Q[exact.are_valid(Q)]
+    Q1 = np.clip(Q + rng.normal(0, scale, Q.shape) * (robot.upper - robot.lower), robot.lower, robot.upper)
+    keep = exact.are_valid(Q1)
+    return scenario, exact, Q[keep][:n], Q1[keep][:n]
+
+
+@pytest.mark.parametrize("name, scale", [("3dc9", 0.05), ("3dc9", 0.1), ("3do", 0.08), ("2ds", 0.1)])
+def test_certify_edges_answers_as_check_edges_with_far_fewer_checks(name, scale):
+    scenario, exact, Q0, Q1 = segments_near_obstacles(name, 150, scale, seed=7)
+    resolution = scenario.plan_resolution or local_planner.default_resolution(scenario.robot)
+    for fine in (resolution, resolution / 10):
+        exact.reset_count()
+        want = check_edges(exact, Q0, Q1, fine)
+        checks = exact.n_checked
+        exact.reset_count()
+        got = certify_edges(exact, Q0, Q1, fine, spacing=8 * resolution)
+        np.testing.assert_array_equal(got, want)
+        assert exact.n_checked < checks / 5 and exact.n_bounded < checks / 2
+    assert 0.05 < want.mean() < 0.97  # both kinds of segment
+
+
+def test_certified_intervals_are_free_throughout():
+    """Two configurations whose clearances sum to more than the motion between them: every point between is valid."""
+    scenario, exact, Q0, Q1 = segments_near_obstacles("3dc9", 400, 0.01, seed=8)
+    robot = scenario.robot
+    c0, c1 = exact.clearances(Q0, cap=1.0), exact.clearances(Q1, cap=1.0)
+    certified = c0 + c1 > robot.motion_bound(Q0, Q1)
+    assert certified.sum() > 100
+    np.testing.assert_array_equal(check_edges(exact, Q0[certified], Q1[certified], 1e-3), True)
+
+
+def test_certify_edges_without_clearances_checks_every_grid_point_once():
+    robot, Q0, Q1, want = forty_segments_and_their_points(0.05)
+    checker = RecordingChecker(robot)  # knows no geometry: clearances 0
+    assert certify_edges(checker, Q0, Q1, 0.05, spacing=0.4).all()
+    got = np.concatenate(checker.batches)
+    assert len(got) == len(want)
+    np.testing.assert_allclose(np.sort(got, axis=0), np.sort(want, axis=0), atol=1e-9)
 
 
 def test_nearest_neighbours_wrap_around_angles():

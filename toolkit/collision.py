@@ -23,6 +23,7 @@ from __future__ import annotations
 import fcl
 import numpy as np
 
+from .ragged import ragged
 from .robots import BoxRobot
 from .workspace import Workspace
 
@@ -40,6 +41,7 @@ class CollisionChecker:
     def __init__(self, robot: BoxRobot):
         self.robot = robot
         self.n_checked = 0  # configurations asked about since construction or reset_count()
+        self.n_bounded = 0  # configurations whose clearance was bounded, likewise
 
     def are_valid(self, Q) -> np.ndarray:
         """``(N,)`` bool: whether each configuration of ``Q (N, dof)`` is valid."""
@@ -55,7 +57,24 @@ class CollisionChecker:
         return bool(self.are_valid(q[None])[0])
 
     def reset_count(self) -> None:
-        self.n_checked = 0
+        self.n_checked = self.n_bounded = 0
+
+    def clearances(self, Q, cap: float) -> np.ndarray:
+        """``(N,)`` a lower bound on each configuration's clearance, in ``[0, cap]``.
+
+        The clearance is how far some point of the robot must move before the robot
+        touches an obstacle or leaves the region (its distance to them, leaving out walls
+        it never moves towards); > 0 proves the configuration valid.
+        """
+        Q = self.robot.check_configs(Q)
+        if not (np.isfinite(cap) and cap > 0):
+            raise ValueError(f"cap must be positive and finite, got {cap!r}")
+        self.n_bounded += len(Q)
+        return self._clearances(Q, float(cap))
+
+    def _clearances(self, Q: np.ndarray, cap: float) -> np.ndarray:
+        """A checker that knows no geometry proves nothing: 0 everywhere (the box-world checkers know more)."""
+        return np.zeros(len(Q))
 
     def _are_valid(self, Q: np.ndarray) -> np.ndarray:
         raise NotImplementedError
@@ -75,16 +94,42 @@ class _BoxWorldChecker(CollisionChecker):
         super().__init__(robot)
         self.workspace = workspace
         self._cell = 2 * float(np.max(np.linalg.norm(robot.half_extents, axis=1)))  # widest link bounds
-        shape = np.maximum(np.ceil((workspace.upper - workspace.lower) / self._cell).astype(int), 1) + 1
-        self._marked = np.zeros(tuple(shape), dtype=bool)
-        lo_cells, hi_cells = self._cells(workspace.boxes[:, 0]), self._cells(workspace.boxes[:, 1])
-        for lo, hi in zip(lo_cells, hi_cells):
-            self._marked[tuple(slice(a, b + 1) for a, b in zip(lo, hi))] = True
+        self._shape = tuple(np.maximum(np.ceil((workspace.upper - workspace.lower) / self._cell).astype(int), 1) + 1)
+        self._marked = self._box_lists(grow=0.0)[0].reshape(self._shape) > 0  # cells an obstacle touches
+        self._near: dict[float, tuple] = {}  # clearances: _box_lists(cap), by cap
+
+    def _box_lists(self, grow: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Per grid cell, the obstacle boxes that touch it once grown by ``grow`` on every side.
+
+        ``count (C,)`` and ``first (C,)`` per flattened cell, ``members (B,)``: cell c's boxes
+        are ``members[first[c]:first[c] + count[c]]``.
+        """
+        cells = []  # (cell, box) pairs
+        boxes = self.workspace.boxes  # (K, 2, D)
+        for box, (lo, hi) in enumerate(zip(self._cells(boxes[:, 0] - grow), self._cells(boxes[:, 1] + grow))):
+            block = np.mgrid[tuple(slice(a, b + 1) for a, b in zip(lo, hi))].reshape(len(lo), -1)  # (D, cells)
+            cells.append(np.stack([np.ravel_multi_index(tuple(block), self._shape), np.full(block.shape[1], box)]))
+        cells = np.concatenate(cells, axis=1) if cells else np.zeros((2, 0), dtype=int)
+        cells = cells[:, np.argsort(cells[0], kind="stable")]
+        count = np.bincount(cells[0], minlength=int(np.prod(self._shape)))
+        return count, np.cumsum(count) - count, cells[1]
 
     def _cells(self, points: np.ndarray) -> np.ndarray:
         """Integer cell index of each point ``(..., D)``, clipped to the grid."""
         index = np.floor((points - self.workspace.lower) / self._cell).astype(int)
-        return np.clip(index, 0, np.array(self._marked.shape) - 1)
+        return np.clip(index, 0, np.array(self._shape) - 1)
+
+    def _may_touch(self, marked: np.ndarray, aabbs: np.ndarray) -> np.ndarray:
+        """``(n, L)``: whether each link's bounds ``aabbs (n, L, 2, D)`` meet a cell of ``marked``.
+
+        Bounds are no wider than a cell, so they cover at most two cells per axis: 2^D look-ups.
+        """
+        lo, hi = self._cells(aabbs[:, :, 0]), self._cells(aabbs[:, :, 1])  # (n, L, D) each
+        touch = np.zeros(lo.shape[:2], dtype=bool)
+        for corner in np.ndindex(*(2,) * self.robot.dim):
+            cell = np.where(np.array(corner, dtype=bool), hi, lo)  # (n, L, D)
+            touch |= marked[tuple(np.moveaxis(cell, -1, 0))]
+        return touch
 
     def _are_valid(self, Q: np.ndarray) -> np.ndarray:
         valid = self.robot.in_bounds(Q)  # (N,)
@@ -93,13 +138,53 @@ class _BoxWorldChecker(CollisionChecker):
         inside = np.all((aabbs[:, :, 0] >= self.workspace.lower) & (aabbs[:, :, 1] <= self.workspace.upper), axis=(1, 2))
         valid[idx[~inside]] = False
         idx, aabbs = idx[inside], aabbs[inside]
-        lo, hi = self._cells(aabbs[:, :, 0]), self._cells(aabbs[:, :, 1])  # (n, L, D) each
-        candidates = np.zeros(lo.shape[:2], dtype=bool)  # (n, L): links that may touch an obstacle
-        for corner in np.ndindex(*(2,) * self.robot.dim):
-            cell = np.where(np.array(corner, dtype=bool), hi, lo)  # (n, L, D)
-            candidates |= self._marked[tuple(np.moveaxis(cell, -1, 0))]
+        candidates = self._may_touch(self._marked, aabbs)  # (n, L): links that may touch an obstacle
         valid[idx[self._links_collide(Q[idx], aabbs, candidates)]] = False
         return valid
+
+    def _clearances(self, Q: np.ndarray, cap: float) -> np.ndarray:
+        """0 out of bounds; otherwise the smallest over links of a lower bound on its clearance.
+
+        A link's clearance is bounded by its distance to the region's walls (exact; a
+        floor or ceiling that a link never moves towards, ``robot.level_links``, does not
+        count) and, for each obstacle box listed in the grid cells its bounds cover (boxes
+        grown by ``cap``: farther ones cannot matter), the larger of two lower bounds: the
+        distance between the link's axis-aligned bounds and the box, and the gap between
+        their projections on any of the link's own axes (a projection on a unit axis
+        brings points no closer: the separating-axis theorem's measure).
+        """
+        clearance = np.zeros(len(Q))
+        idx = np.flatnonzero(self.robot.in_bounds(Q))
+        centers, rotations, half = self.robot.link_boxes(Q[idx])  # (n, L, D), (n, L, D, D), (L, D)
+        n_links, d = half.shape
+        centers, rotations = centers.reshape(-1, d), rotations.reshape(-1, d, d)  # (n * L, ...): every link box
+        reach = np.einsum("pij,pj->pi", np.abs(rotations), np.tile(half, (len(idx), 1)))  # (n * L, D)
+        lo, hi = centers - reach, centers + reach  # the links' bounds
+        walls = np.minimum(lo - self.workspace.lower, self.workspace.upper - hi).reshape(len(idx), n_links, d)
+        level = walls[:, : self.robot.level_links, -1]  # links that never move vertically: floor and ceiling
+        walls[:, : self.robot.level_links, -1] = np.where(level >= 0, np.inf, level)
+        link = walls.min(axis=-1).reshape(-1)  # (n * L,)
+        if cap not in self._near:
+            self._near[cap] = self._box_lists(grow=cap)
+        count, first, members = self._near[cap]
+        lo_cell, hi_cell = self._cells(lo), self._cells(hi)  # (n * L, D) each
+        cell = np.concatenate([np.ravel_multi_index(tuple(np.where(np.array(corner, dtype=bool), hi_cell, lo_cell).T), self._shape)
+                               for corner in np.ndindex(*(2,) * d)])  # (2^D * n * L,): the cells each link's bounds cover
+        owner, ordinal = ragged(count[cell])
+        pair_link, pair_box = owner % len(link), members[first[cell[owner]] + ordinal]  # (P,) each; repeats are harmless
+        boxes = self.workspace.boxes  # (K, 2, D)
+        gap = np.maximum(np.maximum(boxes[pair_box, 0] - hi[pair_link], lo[pair_link] - boxes[pair_box, 1]), 0)  # (P, D)
+        bound = np.linalg.norm(gap, axis=-1)  # (P,)
+        near = np.flatnonzero(bound < cap)
+        j, k = pair_link[near], pair_box[near]
+        axes = np.swapaxes(rotations[j], -1, -2)  # (R, D, D): rows are the link's axes
+        box_center, box_half = boxes[k].mean(axis=1), (boxes[k, 1] - boxes[k, 0]) / 2  # (R, D)
+        along = (np.abs(np.einsum("rad,rd->ra", axes, centers[j] - box_center))
+                 - half[j % n_links] - np.einsum("rad,rd->ra", np.abs(axes), box_half))  # (R, D): gaps along link axes
+        bound[near] = np.maximum(bound[near], along.max(axis=1))
+        np.minimum.at(link, pair_link, bound)
+        clearance[idx] = link.reshape(len(idx), n_links).min(axis=1)
+        return np.clip(clearance, 0.0, cap)
 
     def _links_collide(self, Q: np.ndarray, aabbs: np.ndarray, candidates: np.ndarray) -> np.ndarray:
         """(n,) whether any link of each configuration meets an obstacle; ``candidates (n, L)`` may."""

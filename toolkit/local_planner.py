@@ -13,6 +13,10 @@ that collides is usually dropped after a few checks; its first batch takes every
 multiple of the coarsest level that still holds ``MIN_BATCH`` points, because a
 checker call has a fixed cost (measured: 0.4 ms for 1 configuration, against about
 6 us per configuration in a batch, exact 3DC-7) that tiny coarse levels would repeat;
+``certify_edges`` gives the same answer from the checker's clearance bounds, checking
+only where they cannot vouch for a stretch (the planner's path verification: 300
+3DC-9 segments at 10x finer resolution, 110k configurations checked by
+``check_edges``, 3k bounded and 300 checked by ``certify_edges``, about 15x faster);
 ``invalid_fractions`` asks about every interior point (for screening by
 prediction); ``last_valid_along`` walks segments from their start and stops at the
 first invalid point (for the obstacle-based sampler).
@@ -23,6 +27,7 @@ from __future__ import annotations
 import numpy as np
 
 from .collision import CollisionChecker
+from .ragged import ragged
 from .robots import BoxRobot
 
 MAX_BATCH = 100_000  # configurations per checker call
@@ -51,13 +56,6 @@ def segment_points(robot: BoxRobot, Q0: np.ndarray, Q1: np.ndarray, t: np.ndarra
     return wrap(robot, Q0 + t[:, None] * robot.difference(Q0, Q1))
 
 
-def _ragged(counts: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """For counts ``(A,)``: owner index and ordinal within its owner of ``sum(counts)`` items."""
-    owner = np.repeat(np.arange(len(counts)), counts)
-    start = np.cumsum(counts) - counts
-    return owner, np.arange(len(owner)) - start[owner]
-
-
 def _are_valid_batched(checker: CollisionChecker, Q: np.ndarray) -> np.ndarray:
     return np.concatenate([checker.are_valid(Q[i:i + MAX_BATCH]) for i in range(0, len(Q), MAX_BATCH)] or [np.zeros(0, bool)])
 
@@ -74,7 +72,7 @@ def check_edges(checker: CollisionChecker, Q0, Q1, resolution: float) -> np.ndar
     # visit every multiple of stride, then the odd multiples of stride / 2, stride / 4, ..., 1
     for unit, every in [(stride, 1)] + [(stride >> k, 2) for k in range(1, stride.bit_length())]:
         active = np.flatnonzero(valid & (n > unit))
-        owner, ordinal = _ragged(((n[active] - 1) // unit + every - 1) // every)  # points unit * (1 + every * i) below n
+        owner, ordinal = ragged(((n[active] - 1) // unit + every - 1) // every)  # points unit * (1 + every * i) below n
         edge = active[owner]
         t = unit * (1 + every * ordinal) / n[edge]  # (P,)
         ok = _are_valid_batched(checker, segment_points(robot, Q0[edge], Q1[edge], t))
@@ -82,12 +80,57 @@ def check_edges(checker: CollisionChecker, Q0, Q1, resolution: float) -> np.ndar
     return valid
 
 
+def certify_edges(checker: CollisionChecker, Q0, Q1, resolution: float, spacing: float) -> np.ndarray:
+    """``(E,)`` bool: the answer of ``check_edges(checker, Q0, Q1, resolution)``, from far fewer checks.
+
+    A clearance certificate (as in conservative advancement): the checker bounds the
+    clearance at the two ends of an interval of a segment (``checker.clearances``);
+    when they sum to more than the interval's motion bound, the interval is
+    collision-free throughout — a robot point at fraction t of it has moved at most
+    t x step from one end and (1 - t) x step from the other, so it stays within one
+    end's clearance. Segments start as intervals of motion ``spacing`` at most, between
+    points of the ``resolution`` grid; an interval that is not certified is halved at
+    a grid point, until it holds no grid point inside. Every grid point is thus inside
+    a certified interval or an interval's end, and an end whose clearance is 0 is
+    checked exactly. A checker that bounds no clearance (0 everywhere) gets every grid
+    point checked, once.
+    """
+    robot = checker.robot
+    Q0, Q1 = robot.check_configs(Q0, "Q0"), robot.check_configs(Q1, "Q1")
+    m = step_counts(robot, Q0, Q1, resolution)  # (E,) grid steps
+    bound = robot.motion_bound(Q0, Q1)  # (E,)
+    valid = np.ones(len(m), dtype=bool)
+
+    def cut(edge, lo, hi, c_lo, c_hi, pieces):
+        """Intervals ``[lo, hi]`` (grid steps) of segments ``edge``, with end clearances, cut in ``pieces`` each."""
+        owner, i = ragged(pieces + 1)
+        edge, f = edge[owner], lo[owner] + i * (hi - lo)[owner] // pieces[owner]  # (P,) the cuts, ends included
+        clearance = np.where(i == 0, c_lo[owner], np.where(i == pieces[owner], c_hi[owner], np.nan))
+        new = np.flatnonzero(np.isnan(clearance))
+        Q = segment_points(robot, Q0[edge[new]], Q1[edge[new]], f[new] / m[edge[new]])
+        clearance[new] = checker.clearances(Q, cap=spacing)
+        unsure = (clearance[new] <= 0) & (f[new] > 0) & (f[new] < m[edge[new]])  # an interior grid point: check it
+        valid[edge[new[unsure]][~_are_valid_batched(checker, Q[unsure])]] = False
+        first = np.flatnonzero(i < pieces[owner])
+        return edge[first], f[first], f[first + 1], clearance[first], clearance[first + 1]
+
+    unknown = np.full(len(m), np.nan)
+    first_pieces = np.minimum(step_counts(robot, Q0, Q1, spacing), m)  # (E,)
+    intervals = cut(np.arange(len(m)), np.zeros_like(m), m, unknown, unknown, first_pieces)
+    while True:
+        edge, lo, hi, c_lo, c_hi = intervals
+        unsure = valid[edge] & (hi - lo > 1) & (c_lo + c_hi <= bound[edge] * (hi - lo) / m[edge])
+        if not unsure.any():
+            return valid
+        intervals = cut(*(x[unsure] for x in intervals), np.full(unsure.sum(), 2))  # halved
+
+
 def invalid_fractions(checker: CollisionChecker, Q0, Q1, resolution: float) -> np.ndarray:
     """``(E,)`` fraction of each segment's interior points that ``checker`` calls invalid (0 without interior)."""
     robot = checker.robot
     Q0, Q1 = robot.check_configs(Q0, "Q0"), robot.check_configs(Q1, "Q1")
     n = step_counts(robot, Q0, Q1, resolution)  # (E,)
-    edge, ordinal = _ragged(n - 1)
+    edge, ordinal = ragged(n - 1)
     ok = _are_valid_batched(checker, segment_points(robot, Q0[edge], Q1[edge], (ordinal + 1) / n[edge]))
     invalid = np.bincount(edge, weights=~ok, minlength=len(n))
     return invalid / np.maximum(n - 1, 1)
@@ -108,7 +151,7 @@ def last_valid_along(checker: CollisionChecker, Q0: np.ndarray, Q1: np.ndarray, 
     done = 0
     while np.any((first_bad < 0) & (n > done)):
         active = np.flatnonzero((first_bad < 0) & (n > done))
-        owner, ordinal = _ragged(np.minimum(n[active] - done, chunk))
+        owner, ordinal = ragged(np.minimum(n[active] - done, chunk))
         edge, step = active[owner], done + 1 + ordinal
         ok = _are_valid_batched(checker, segment_points(robot, Q0[edge], Q1[edge], step / n[edge]))
         bad_steps = np.full(len(n), np.iinfo(int).max)

@@ -17,8 +17,11 @@
    edge that grazes a corner between two checks at ``resolution`` is caught here);
    whatever fails is removed from the roadmap and the query repeats (line 5). Each
    edge remembers the finest resolution it passed at (``Roadmap.edge_checked_at``),
-   so the next candidate path re-checks none of them. A returned path is always
-   valid under the exact checker at the finer resolution; otherwise ``success`` is False.
+   so the next candidate path re-checks none of them. Verification uses clearance
+   certificates (``local_planner.certify_edges``: the same answer as checking every
+   point, but a stretch whose ends are far enough from every obstacle needs no check),
+   which makes the 10x finer level cost about as much as the first. A returned path is
+   always valid under the exact checker at both resolutions; otherwise ``success`` is False.
 
 "With" and "without prediction" differ in the ``checker`` argument only. With
 prediction, edges are decided in one of two ways (``PRMOptions.screen_edges``):
@@ -47,7 +50,7 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from .collision import CollisionChecker
-from .local_planner import check_edges, default_resolution, invalid_fractions
+from .local_planner import certify_edges, check_edges, default_resolution, invalid_fractions
 from .roadmap import Roadmap
 from .sampling import make_sampler
 
@@ -68,6 +71,7 @@ class PRMOptions:
     screen_reject: float = 0.9  # screening drops edges with a larger predicted-invalid fraction
     screen_penalty: float = 10.0  # screened edge cost = length * (1 + penalty * predicted-invalid fraction)
     screen_spacing: float = 8.0  # screening predicts points resolution * this apart (an estimate of the fraction)
+    certify_spacing: float = 8.0  # path verification: intervals of motion resolution * this first (certify_edges)
     sampler_options: dict = field(default_factory=dict)
 
     def __post_init__(self):
@@ -75,7 +79,7 @@ class PRMOptions:
             value = getattr(self, name)
             if int(value) != value or value < 1:
                 raise ValueError(f"PRMOptions.{name} must be a positive integer, got {value!r}")
-        for name in ("resolution", "screen_spacing"):
+        for name in ("resolution", "screen_spacing", "certify_spacing"):
             value = getattr(self, name)
             if value is not None and not (np.isfinite(value) and value > 0):
                 raise ValueError(f"PRMOptions.{name} must be positive and finite, got {value!r}")
@@ -144,14 +148,14 @@ class _Planner:
         self.predicted = checker is not exact
         self.resolution = default_resolution(exact.robot) if options.resolution is None else float(options.resolution)
         self.screened = self.predicted and options.screen_edges  # edges screened by prediction, not checked exactly
-        # a path's edges are confirmed at the roadmap's resolution (a cheap filter: most that fail, fail there;
-        # exactly checked edges already were), then finer
+        # a path's edges are confirmed at the roadmap's resolution (where most that fail, fail; exactly checked
+        # edges already were), then finer
         self.verify_resolutions = (self.resolution, self.resolution / options.verify_refinement)
         self.roadmap = Roadmap(exact.robot)
         self.stats = {"rounds": 0, "repairs": 0, "removed_nodes": 0, "removed_edges": 0,
                       "sampling_s": 0.0, "connection_s": 0.0, "query_s": 0.0,
                       "node_checks": 0, "edge_checks": 0, "verify_checks": 0}
-        self._start_counts = self._counts()
+        self._start_counts, self._start_bounded = self._counts(), exact.n_bounded
 
     def _counts(self) -> tuple[int, int]:
         """Configurations checked so far: (exact, predicted)."""
@@ -187,7 +191,7 @@ class _Planner:
 
     def verified_path(self) -> np.ndarray | None:
         """Node indices of a start-goal path the exact checker confirms, repairing the roadmap; None if none."""
-        roadmap = self.roadmap
+        roadmap, options = self.roadmap, self.options
         while (path := roadmap.shortest_path(START, GOAL)) is not None:
             unsure = path[~roadmap.node_verified[path]]
             ok = self.exact.are_valid(roadmap.nodes[unsure]) if len(unsure) else np.zeros(0, bool)
@@ -199,10 +203,10 @@ class _Planner:
             steps = roadmap.edge_index(path)
             for resolution in self.verify_resolutions:
                 unsure = steps[roadmap.edge_checked_at[steps] > resolution]
-                a, b = roadmap.edges[unsure].T
-                ok = check_edges(self.exact, roadmap.nodes[a], roadmap.nodes[b], resolution)
+                Q0, Q1 = roadmap.nodes[roadmap.edges[unsure].T]
+                ok = certify_edges(self.exact, Q0, Q1, resolution, spacing=self.resolution * options.certify_spacing)
                 roadmap.edge_checked_at[unsure[ok]] = resolution  # remembered across repairs
-                roadmap.edge_cost[unsure[ok]] = roadmap.distance(roadmap.nodes[a[ok]], roadmap.nodes[b[ok]])
+                roadmap.edge_cost[unsure[ok]] = roadmap.distance(Q0[ok], Q1[ok])
                 if not ok.all():
                     self._repaired(edges=len(unsure) - ok.sum())
                     roadmap.remove_edges(unsure[~ok])
@@ -220,4 +224,5 @@ class _Planner:
         exact, predicted = np.subtract(self._counts(), self._start_counts)
         return dict(self.stats, nodes=len(self.roadmap.nodes), edges=len(self.roadmap.edges),
                     exact_checks=int(exact), predicted_checks=int(predicted), resolution=self.resolution,
+                    exact_clearances=self.exact.n_bounded - self._start_bounded,
                     total_s=time.perf_counter() - began)

@@ -78,6 +78,8 @@ class BoxRobot:
         self.half_extents = np.array([l.half_extents[: self.dim] for l in links], dtype=float)  # (L, D)
         self._offsets = np.array([l.offset for l in links], dtype=float)  # (L, 3)
         self.motion_weights = self._motion_weights()  # (dof,)
+        # links whose height never changes: on a planar base, the base and the links after it turned about vertical axes
+        self.level_links = 1 + next((i for i, j in enumerate(joints) if j.axis != "z"), len(joints)) if base == "planar" else 0
         for array in (self.lower, self.upper, self.wraps, self.half_extents, self.motion_weights):
             array.setflags(write=False)
 
@@ -198,14 +200,13 @@ def _wrap(angle):
 def _rotation(axis: str, angle: np.ndarray) -> np.ndarray:
     """Rotations about a coordinate axis, ``(N, 3, 3)``."""
     c, s = np.cos(angle), np.sin(angle)
-    one, zero = np.ones_like(c), np.zeros_like(c)
     i = AXES[axis]
-    rows = {
-        0: [[one, zero, zero], [zero, c, -s], [zero, s, c]],
-        1: [[c, zero, s], [zero, one, zero], [-s, zero, c]],
-        2: [[c, -s, zero], [s, c, zero], [zero, zero, one]],
-    }[i]
-    return np.stack([np.stack(r, axis=-1) for r in rows], axis=-2)
+    j, k = (i + 1) % 3, (i + 2) % 3  # the plane it turns, in right-handed order
+    R = np.zeros(np.shape(angle) + (3, 3))
+    R[..., i, i] = 1.0
+    R[..., j, j], R[..., j, k] = c, -s
+    R[..., k, j], R[..., k, k] = s, c
+    return R
 
 
 # -- the paper's robots ------------------------------------------------------------
