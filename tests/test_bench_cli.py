@@ -22,6 +22,11 @@ def test_bench_prints_one_json_object(capsys):
     assert isinstance(result["exact_cfg_per_s"], float) and result["exact_cfg_per_s"] > 0
     assert result["learned_cfg_per_s"] > 0  # the contract's other two keys
     assert result["ratio"] == pytest.approx(result["learned_cfg_per_s"] / result["exact_cfg_per_s"])
+    fine, coarse = result["edges"]["finer"], result["edges"]["resolution"]
+    assert fine["resolution"] == pytest.approx(coarse["resolution"] / 10) and fine["segments"] > 100
+    assert 0 < fine["valid"] <= 1
+    assert fine["certify_edges_checked"] < fine["check_edges_checked"] / 5  # clearances vouch for most stretches
+    assert fine["check_edges_s"] > 0 and fine["certify_edges_s"] > 0
 
 
 def test_bench_at_a_sampler_sized_batch(capsys):

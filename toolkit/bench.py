@@ -1,9 +1,10 @@
-"""Benchmarks: configurations checked per second, exact and learned; PRM time with and without prediction.
+"""Benchmarks: configurations checked per second, exact and learned; exact edge checks, plain and certified;
+PRM time with and without prediction.
 
 Figures are medians over repeats, and ratios come from one run, since these
-machines are noisy. ``toolkit bench --scenario S --json`` prints the throughput;
-with ``--checkpoint DIR`` it also plans a few of the paper's queries with each
-sampler, with and without that model, and prints the time ratios.
+machines are noisy. ``toolkit bench --scenario S --json`` prints the throughput and
+the edge checks; with ``--checkpoint DIR`` it also plans a few of the paper's
+queries with each sampler, with and without that model, and prints the time ratios.
 """
 
 from __future__ import annotations
@@ -16,20 +17,27 @@ import torch
 from . import data, presets, queries
 from .collision import exact_checker
 from .learned import LearnedChecker
+from .local_planner import certify_edges, check_edges, default_resolution
 from .models import build_predictor
+from .prm import PRMOptions
 from .scenarios import Scenario
 from .training import TrainedModels
 
 
-def median_rate(fn, n_items: int, repeats: int = 5) -> float:
-    """Items per second of ``fn()``, the median over ``repeats`` timed calls (one warm-up call first)."""
+def median_seconds(fn, repeats: int = 5) -> float:
+    """Seconds of ``fn()``, the median over ``repeats`` timed calls (one warm-up call first)."""
     fn()
     times = []
     for _ in range(repeats):
         start = time.perf_counter()
         fn()
         times.append(time.perf_counter() - start)
-    return n_items / float(np.median(times))
+    return float(np.median(times))
+
+
+def median_rate(fn, n_items: int, repeats: int = 5) -> float:
+    """Items per second of ``fn()``, the median over ``repeats`` timed calls (one warm-up call first)."""
+    return n_items / median_seconds(fn, repeats)
 
 
 def exact_throughput(scenario: Scenario, batch: int = 20_000, seed: int = 0, repeats: int = 5) -> float:
@@ -56,6 +64,38 @@ def learned_throughput(scenario: Scenario, preset: str = "paper", batch: int = 1
     checker = LearnedChecker(ws, models)
     Q = scenario.robot.sample(np.random.default_rng(seed), batch)
     return median_rate(lambda: checker.are_valid(Q), batch, repeats)
+
+
+def edge_checks(scenario: Scenario, n_segments: int = 300, seed: int = 0, repeats: int = 5) -> dict[str, dict]:
+    """``check_edges`` against ``certify_edges`` (same answers) at the planner's resolution and 10x finer.
+
+    On ``n_segments`` segments between valid configurations of a query workspace, 3 %
+    of the bounds apart (normal steps: some valid, some grazing, some through a block;
+    a path's edges look like these). Per resolution: median seconds of each, and the
+    configurations each checked (``certify_edges`` also bounds clearances).
+    """
+    ws = data.workspaces(scenario, "query", 1, seed)[0]
+    exact, robot, rng = exact_checker(ws, scenario.robot), scenario.robot, np.random.default_rng(seed)
+    Q0 = robot.sample(rng, 20 * n_segments)
+    Q0 = Q0[exact.are_valid(Q0)]
+    Q1 = np.clip(Q0 + rng.normal(0, 0.03, Q0.shape) * (robot.upper - robot.lower), robot.lower, robot.upper)
+    keep = exact.are_valid(Q1)
+    Q0, Q1 = Q0[keep][:n_segments], Q1[keep][:n_segments]  # (E, dof) each
+    resolution = scenario.plan_resolution or default_resolution(robot)
+    spacing = resolution * PRMOptions().certify_spacing
+    result = {}
+    for name, r in (("resolution", resolution), ("finer", resolution / 10)):
+        exact.reset_count()
+        valid = check_edges(exact, Q0, Q1, r)
+        row = {"resolution": r, "segments": len(Q0), "valid": float(valid.mean()), "check_edges_checked": exact.n_checked}
+        exact.reset_count()
+        certify_edges(exact, Q0, Q1, r, spacing)
+        row.update(certify_edges_checked=exact.n_checked, certify_edges_bounded=exact.n_bounded,
+                   check_edges_s=median_seconds(lambda: check_edges(exact, Q0, Q1, r), repeats),
+                   certify_edges_s=median_seconds(lambda: certify_edges(exact, Q0, Q1, r, spacing), repeats))
+        row["speedup"] = row["check_edges_s"] / row["certify_edges_s"]
+        result[name] = row
+    return result
 
 
 def planning_ratios(scenario: Scenario, models: TrainedModels, n_workspaces: int = 2, per_workspace: int = 2,

@@ -34,6 +34,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
               "learned_cfg_per_s": bench.learned_throughput(scenario, args.preset, seed=args.seed, models=models,
                                                             **batches)}
     result["ratio"] = result["learned_cfg_per_s"] / result["exact_cfg_per_s"]
+    result["edges"] = bench.edge_checks(scenario, seed=args.seed)
     if models is not None:
         result["planning"] = bench.planning_ratios(scenario, models, args.workspaces, args.pairs, seed=args.seed)
     print(json.dumps(result) if args.json else "\n".join(f"{k}: {v}" for k, v in result.items()))
