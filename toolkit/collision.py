@@ -119,17 +119,14 @@ class _BoxWorldChecker(CollisionChecker):
         index = np.floor((points - self.workspace.lower) / self._cell).astype(int)
         return np.clip(index, 0, np.array(self._shape) - 1)
 
-    def _may_touch(self, marked: np.ndarray, aabbs: np.ndarray) -> np.ndarray:
-        """``(n, L)``: whether each link's bounds ``aabbs (n, L, 2, D)`` meet a cell of ``marked``.
+    def _covered_cells(self, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+        """``(2^D, M)`` flat indices of the cells that bounds ``lo, hi (M, D)`` cover (repeats where they span one cell).
 
-        Bounds are no wider than a cell, so they cover at most two cells per axis: 2^D look-ups.
+        Bounds are no wider than a cell, so they cover at most two cells per axis: their 2^D corners' cells.
         """
-        lo, hi = self._cells(aabbs[:, :, 0]), self._cells(aabbs[:, :, 1])  # (n, L, D) each
-        touch = np.zeros(lo.shape[:2], dtype=bool)
-        for corner in np.ndindex(*(2,) * self.robot.dim):
-            cell = np.where(np.array(corner, dtype=bool), hi, lo)  # (n, L, D)
-            touch |= marked[tuple(np.moveaxis(cell, -1, 0))]
-        return touch
+        lo, hi = self._cells(lo), self._cells(hi)  # (M, D) each
+        return np.stack([np.ravel_multi_index(tuple(np.where(np.array(corner, dtype=bool), hi, lo).T), self._shape)
+                         for corner in np.ndindex(*(2,) * self.robot.dim)])
 
     def _are_valid(self, Q: np.ndarray) -> np.ndarray:
         valid = self.robot.in_bounds(Q)  # (N,)
@@ -138,7 +135,8 @@ class _BoxWorldChecker(CollisionChecker):
         inside = np.all((aabbs[:, :, 0] >= self.workspace.lower) & (aabbs[:, :, 1] <= self.workspace.upper), axis=(1, 2))
         valid[idx[~inside]] = False
         idx, aabbs = idx[inside], aabbs[inside]
-        candidates = self._may_touch(self._marked, aabbs)  # (n, L): links that may touch an obstacle
+        cells = self._covered_cells(aabbs[:, :, 0].reshape(-1, self.robot.dim), aabbs[:, :, 1].reshape(-1, self.robot.dim))
+        candidates = self._marked.reshape(-1)[cells].any(axis=0).reshape(aabbs.shape[:2])  # (n, L): may touch a block
         valid[idx[self._links_collide(Q[idx], aabbs, candidates)]] = False
         return valid
 
@@ -167,9 +165,7 @@ class _BoxWorldChecker(CollisionChecker):
         if cap not in self._near:
             self._near[cap] = self._box_lists(grow=cap)
         count, first, members = self._near[cap]
-        lo_cell, hi_cell = self._cells(lo), self._cells(hi)  # (n * L, D) each
-        cell = np.concatenate([np.ravel_multi_index(tuple(np.where(np.array(corner, dtype=bool), hi_cell, lo_cell).T), self._shape)
-                               for corner in np.ndindex(*(2,) * d)])  # (2^D * n * L,): the cells each link's bounds cover
+        cell = self._covered_cells(lo, hi).reshape(-1)  # (2^D * n * L,)
         owner, ordinal = ragged(count[cell])
         pair_link, pair_box = owner % len(link), members[first[cell[owner]] + ordinal]  # (P,) each; repeats are harmless
         boxes = self.workspace.boxes  # (K, 2, D)

@@ -20,7 +20,8 @@
    so the next candidate path re-checks none of them. Verification uses clearance
    certificates (``local_planner.certify_edges``: the same answer as checking every
    point, but a stretch whose ends are far enough from every obstacle needs no check),
-   which makes the 10x finer level cost about as much as the first. A returned path is
+   so the 10x finer level costs less than twice the first (`toolkit bench`, 3DC-9: 0.032 s
+   against 0.019 s for 300 segments; 0.36 s checking every point). A returned path is
    always valid under the exact checker at both resolutions; otherwise ``success`` is False.
 
 "With" and "without prediction" differ in the ``checker`` argument only. With
