@@ -14,9 +14,10 @@ multiple of the coarsest level that still holds ``MIN_BATCH`` points, because a
 checker call has a fixed cost (measured: 0.4 ms for 1 configuration, against about
 6 us per configuration in a batch, exact 3DC-7) that tiny coarse levels would repeat;
 ``certify_edges`` gives the same answer from the checker's clearance bounds, checking
-only where they cannot vouch for a stretch (the planner's path verification: 300
-3DC-9 segments at 10x finer resolution, 110k configurations checked by
-``check_edges``, 3k bounded and 300 checked by ``certify_edges``, about 15x faster);
+only where they cannot vouch for a stretch (the planner's path verification;
+``toolkit bench --scenario 3dc9``: 300 segments at 10x finer resolution, 79k
+configurations checked by ``check_edges``, 2.5k bounded and 300 checked by
+``certify_edges``, 11x faster);
 ``invalid_fractions`` asks about every interior point (for screening by
 prediction); ``last_valid_along`` walks segments from their start and stops at the
 first invalid point (for the obstacle-based sampler).
