@@ -4,6 +4,7 @@ import json
 
 import numpy as np
 import pytest
+import torch
 
 from toolkit import cli, local_planner, prm, scenarios
 from toolkit.collision import CollisionChecker, exact_checker
@@ -330,13 +331,20 @@ def test_paper_query_sets_are_valid_and_reproducible(name, count):
 def test_run_queries_summary_with_a_checker_factory():
     scenario = scenarios.get("2ds")
     queries = make_queries(scenario, seed=0, n_workspaces=2, per_workspace=3)
-    built = []
+    built, threads, before = [], [], torch.get_num_threads()
 
     def factory(ws):
         built.append(ws)
+        threads.append(torch.get_num_threads())
         return NoisyChecker(exact_checker(ws, scenario.robot), 0.05, seed=len(built))
 
-    records, summary = run_queries(scenario, queries, "G", checker_factory=factory)
+    torch.set_num_threads(2)
+    try:
+        records, summary = run_queries(scenario, queries, "G", checker_factory=factory)
+        assert threads == [1, 1]  # queries are timed on one torch thread, like the exact checker ...
+        assert torch.get_num_threads() == 2  # ... and the caller's setting comes back
+    finally:
+        torch.set_num_threads(before)
     assert len(built) == 2 and len(records) == 6
     assert summary["success_rate"] == 1.0 and summary["path_valid_rate"] == 1.0
     assert summary["predicted_checks"] > 0 and summary["sampling_s"] <= summary["total_s"]

@@ -138,8 +138,7 @@ def _planning(stages: Stages, scenario, models, seed: int, quick: bool, workers:
     with tqdm(total=len(todo), desc=f"planning {scenario.name}", disable=not stages.progress, leave=False) as bar:
         if workers > 1 and len(todo) > 1:
             spawn = multiprocessing.get_context("spawn")  # fresh interpreters: no forked torch thread pools
-            with ProcessPoolExecutor(min(workers, len(todo)), mp_context=spawn, initializer=torch.set_num_threads,
-                                     initargs=(1,)) as pool:
+            with ProcessPoolExecutor(min(workers, len(todo)), mp_context=spawn) as pool:
                 futures = {pool.submit(job, s, m): (s, m) for s, m in todo}
                 for future in as_completed(futures):
                     stages.save("planning_{}_{}".format(*futures[future]), *future.result())

@@ -7,8 +7,8 @@ uniform configurations the exact checker accepts, drawn from a generator derived
 from ``(seed, workspace index)``, and at least a quarter of the region's diagonal
 apart (base positions), so every query means travelling.
 
-``run_queries`` solves each query from scratch (a fresh roadmap, as in the paper)
-and summarizes: mean and std of ``sampling_s`` and ``total_s`` (and their medians), ``success_rate``,
+``run_queries`` solves each query from scratch (a fresh roadmap, as in the paper),
+with torch on one thread (:func:`one_torch_thread`), and summarizes: mean and std of ``sampling_s`` and ``total_s`` (and their medians), ``success_rate``,
 and ``path_valid_rate``, the fraction of returned paths that a fresh exact checker
 accepts at 10x finer resolution than the local planner's.
 """
@@ -16,10 +16,12 @@ accepts at 10x finer resolution than the local planner's.
 from __future__ import annotations
 
 import time
+from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
+import torch
 
 from . import data
 from .collision import CollisionChecker, exact_checker
@@ -98,8 +100,36 @@ def run_queries(scenario: Scenario, queries: list[Query], sampler: str,
     The factory runs once per workspace (it encodes the workspace: Algorithm 1,
     line 1); its time is shared among that workspace's queries and counted in their
     ``total_s``. ``options`` None: :func:`default_options` for each query's checker.
-    Returns per-query records and the summary.
+    Torch runs on one thread meanwhile (:func:`one_torch_thread`). Returns per-query
+    records and the summary.
     """
+    with one_torch_thread():
+        records = _solve_all(scenario, queries, sampler, checker_factory, options, seed)
+    return records, summarize(records)
+
+
+@contextmanager
+def one_torch_thread():
+    """Torch on one thread inside (the previous count restored after): how queries are timed, in both modes.
+
+    The exact checker runs on one thread. The learned checker's calls are small (a
+    few hundred to a few ten thousand configurations), where torch's intra-op threads
+    cost more than they give and, on a machine with other work, stall: 3DC-7, bridge
+    test, strong model, 100 queries on 2 cores, sampling with prediction took 1.2 ms
+    a query on one thread and 2.4 ms on two (total 20 ms against 40 ms).
+    """
+    before = torch.get_num_threads()
+    torch.set_num_threads(1)
+    try:
+        yield
+    finally:
+        torch.set_num_threads(before)
+
+
+def _solve_all(scenario: Scenario, queries: list[Query], sampler: str,
+               checker_factory: Callable[[Workspace], CollisionChecker] | None, options: PRMOptions | None,
+               seed: int) -> list[dict]:
+    """The per-query records of :func:`run_queries`."""
     records, checkers = [], {}
     share = np.bincount([q.workspace_index for q in queries])  # queries per workspace
     for n, query in enumerate(queries):
@@ -114,7 +144,7 @@ def run_queries(scenario: Scenario, queries: list[Query], sampler: str,
         valid = result.success and path_is_valid(exact_checker(query.workspace, scenario.robot), result.path, fine)
         records.append(dict(result.stats, workspace=query.workspace_index, success=result.success,
                             path_valid=bool(valid), encode_s=encode_s, total_s=result.stats["total_s"] + encode_s))
-    return records, summarize(records)
+    return records
 
 
 def summarize(records: list[dict]) -> dict:
