@@ -12,7 +12,7 @@ from toolkit.local_planner import certify_edges, check_edges, invalid_fractions,
 from toolkit.prm import PRMOptions, plan
 from toolkit.queries import make_queries, run_queries
 from toolkit.roadmap import Roadmap
-from toolkit.sampling import SAMPLERS
+from toolkit.sampling import SAMPLERS, make_sampler
 
 
 class NoisyChecker(CollisionChecker):
@@ -120,6 +120,32 @@ def test_exact_baseline_never_repairs_nodes_and_counts_checks():
     assert s["nodes"] == len(result.roadmap.nodes) and result.roadmap.edges.shape == (s["edges"], 2)
 
 
+@pytest.mark.parametrize("auxiliary, sources", [("exact", ["predicted", "exact", "exact", "exact"]),
+                                                 ("confirmed", ["predicted", "confirmed", "exact", "confirmed"]),
+                                                 ("predicted", ["predicted"] * 4)])
+def test_rounds_after_the_first_sample_as_options_auxiliary_says(auxiliary, sources):
+    scenario = scenarios.get("2ds")
+    q = make_queries(scenario, seed=0, n_workspaces=1, per_workspace=1)[0]
+    exact = exact_checker(q.workspace, scenario.robot)
+    lying = NoisyChecker(exact, 0.3, seed=0)
+    planner = prm._Planner(exact, lying, PRMOptions(n_samples=200, auxiliary=auxiliary),
+                           make_sampler("BS", lying), make_sampler("BS", exact))
+    rng = np.random.default_rng(0)
+    for round_, source in enumerate(sources, start=1):
+        planner.stats["rounds"] = round_
+        exact.reset_count(), lying.reset_count()
+        S, vouched = planner.sample_round(rng)
+        assert vouched == (source != "predicted")
+        assert (lying.n_checked > 0) == (source != "exact")
+        if source == "exact":
+            assert exact.n_checked == 200  # every uniform draw
+        elif source == "confirmed":
+            assert 0 < len(S) < exact.n_checked < 200  # only the predicted-valid draws, and some of those fail
+        else:
+            assert exact.n_checked == 0
+        assert exact.are_valid(S).all() == vouched  # 30 % lies: predicted samples include invalid ones
+
+
 def test_same_seed_same_result():
     scenario = scenarios.get("3dc7")
     q = make_queries(scenario, seed=0, n_workspaces=1)[0]
@@ -148,7 +174,8 @@ def test_bad_input_gives_clear_errors():
                        (dict(screen_spacing=0), "screen_spacing must be positive"),
                        (dict(resolution=np.nan), "resolution must be positive"),
                        (dict(screen_reject=1.5), "screen_reject must lie in"),
-                       (dict(screen_penalty=-1), "screen_penalty must be non-negative")]:
+                       (dict(screen_penalty=-1), "screen_penalty must be non-negative"),
+                       (dict(auxiliary="sometimes"), "auxiliary must be one of")]:
         with pytest.raises(ValueError, match=f"PRMOptions.{match}"):
             PRMOptions(**bad)
 

@@ -8,9 +8,11 @@
 3. build the roadmap: each new node's k nearest neighbours, straight-line edges (line 4);
 4. connect start and goal (while they lie in different components, also try the k
    closest pairs between each one's component and the rest); when the roadmap does
-   not join them, sample another S with the same (auxiliary) sampler and repeat (line 4);
-   its samples are checked exactly ("create additional valid samples", ``exact_auxiliary``),
-   which keeps the planner probabilistically complete however poor the prediction;
+   not join them, sample another S with the same (auxiliary) sampler and repeat (line 4),
+   "creating additional valid samples" (``PRMOptions.auxiliary``): by default, the
+   even rounds sample with prediction and keep what the exact checker confirms, the
+   odd ones sample with the exact checker, which keeps the planner probabilistically
+   complete however poor the prediction;
 5. extract the cheapest path and **verify** it with the exact checker: its nodes, and
    its edges at ``resolution`` (unless checked exactly when they were added), then at
    ``resolution / verify_refinement`` (10x finer: shortest paths hug obstacles, and an
@@ -56,6 +58,11 @@ from .roadmap import Roadmap
 from .sampling import make_sampler
 
 START, GOAL = 0, 1  # node indices of the query's endpoints (never removed)
+AUXILIARY = {  # PRMOptions.auxiliary: how rounds after the first sample, with prediction
+    "exact": "with the exact checker",
+    "confirmed": "even rounds with prediction, keeping what the exact checker confirms; odd rounds with the exact checker",
+    "predicted": "with prediction, like the first (nodes are checked when a candidate path uses them)",
+}
 
 
 @dataclass
@@ -67,7 +74,7 @@ class PRMOptions:
     resolution: float | None = None  # local planner step bound; None: default_resolution(robot)
     verify_refinement: int = 10  # the returned path's edges are checked exactly at resolution / this
     max_rounds: int = 20  # sampling rounds before reporting failure
-    exact_auxiliary: bool = True  # with prediction: rounds after the first sample with the exact checker
+    auxiliary: str = "confirmed"  # with prediction, rounds after the first: see AUXILIARY
     screen_edges: bool = True  # with prediction: learned edge screening (lazy PRM); False: the paper's exact edges
     screen_reject: float = 0.9  # screening drops edges with a larger predicted-invalid fraction
     screen_penalty: float = 10.0  # screened edge cost = length * (1 + penalty * predicted-invalid fraction)
@@ -84,6 +91,8 @@ class PRMOptions:
             value = getattr(self, name)
             if value is not None and not (np.isfinite(value) and value > 0):
                 raise ValueError(f"PRMOptions.{name} must be positive and finite, got {value!r}")
+        if self.auxiliary not in AUXILIARY:
+            raise ValueError(f"PRMOptions.auxiliary must be one of {sorted(AUXILIARY)}, got {self.auxiliary!r}")
         if not 0 <= self.screen_reject <= 1:
             raise ValueError(f"PRMOptions.screen_reject must lie in [0, 1], got {self.screen_reject!r}")
         if not (np.isfinite(self.screen_penalty) and self.screen_penalty >= 0):
@@ -110,8 +119,8 @@ def plan(exact: CollisionChecker, start, goal, *, sampler: str = "BS", checker: 
     if checker.robot.dof != robot.dof:
         raise ValueError(f"checker is for a {checker.robot.dof}-DoF robot, the exact checker for {robot.dof}")
     endpoints = np.concatenate([_single(robot, start, "start"), _single(robot, goal, "goal")])  # (2, dof)
-    planner = _Planner(exact, checker, options, make_sampler(sampler, checker, **options.sampler_options))
-    auxiliary = make_sampler(sampler, exact, **options.sampler_options) if options.exact_auxiliary else planner.sampler
+    planner = _Planner(exact, checker, options, make_sampler(sampler, checker, **options.sampler_options),
+                       make_sampler(sampler, exact, **options.sampler_options))
     for name, ok, q in zip(("start", "goal"), exact.are_valid(endpoints), endpoints):
         if not ok:
             raise ValueError(f"{name} configuration {np.round(q, 4).tolist()} is in collision or out of bounds")
@@ -119,10 +128,9 @@ def plan(exact: CollisionChecker, start, goal, *, sampler: str = "BS", checker: 
     path = None
     while path is None and planner.stats["rounds"] < options.max_rounds:
         planner.stats["rounds"] += 1
-        source = planner.sampler if planner.stats["rounds"] == 1 else auxiliary
         with planner.timed("sampling_s", "node_checks"):
-            S_valid = source.sample(options.n_samples, rng)  # S' (M, dof)
-        new = np.concatenate([new, planner.roadmap.add_nodes(S_valid, verified=source.checker is exact)])
+            S_valid, verified = planner.sample_round(rng)  # S' (M, dof)
+        new = np.concatenate([new, planner.roadmap.add_nodes(S_valid, verified=verified)])
         with planner.timed("connection_s", "edge_checks"):
             planner.connect(new)
         new = new[:0]
@@ -144,8 +152,9 @@ def _single(robot, q, name: str) -> np.ndarray:
 class _Planner:
     """The state of one query: roadmap, checkers, counters and timers."""
 
-    def __init__(self, exact, checker, options: PRMOptions, sampler):
-        self.exact, self.checker, self.options, self.sampler = exact, checker, options, sampler
+    def __init__(self, exact, checker, options: PRMOptions, sampler, exact_sampler):
+        self.exact, self.checker, self.options = exact, checker, options
+        self.sampler, self.exact_sampler = sampler, exact_sampler  # the same sampler over each checker
         self.predicted = checker is not exact
         self.resolution = default_resolution(exact.robot) if options.resolution is None else float(options.resolution)
         self.screened = self.predicted and options.screen_edges  # edges screened by prediction, not checked exactly
@@ -168,6 +177,16 @@ class _Planner:
         yield
         self.stats[seconds_key] += time.perf_counter() - start
         self.stats[checks_key] += sum(self._counts()) - before
+
+    def sample_round(self, rng: np.random.Generator) -> tuple[np.ndarray, bool]:
+        """This round's samples ``(M, dof)`` and whether the exact checker vouches for them (``PRMOptions.auxiliary``)."""
+        n, auxiliary, round_ = self.options.n_samples, self.options.auxiliary, self.stats["rounds"]
+        if not self.predicted or (round_ > 1 and (auxiliary == "exact" or (auxiliary == "confirmed" and round_ % 2))):
+            return self.exact_sampler.sample(n, rng), True
+        S = self.sampler.sample(n, rng)
+        if round_ > 1 and auxiliary == "confirmed":
+            return S[self.exact.are_valid(S)], True
+        return S, False
 
     def connect(self, new: np.ndarray) -> None:
         """Edges from the new nodes to their k nearest; then, while start and goal lie apart, bridges from their components."""

@@ -131,5 +131,10 @@ class Roadmap:
 
     def edge_index(self, path: np.ndarray) -> np.ndarray:
         """``(P-1,)`` index into ``edges`` of each step of a node path."""
-        lookup = {(int(i), int(j)): e for e, (i, j) in enumerate(self.edges)}
-        return np.array([lookup[(min(a, b), max(a, b))] for a, b in zip(path[:-1], path[1:])], dtype=int)
+        v = len(self.nodes)
+        keys = self.edges @ [v, 1]  # (E,) unique: edges are i < j pairs without duplicates
+        wanted = np.sort(np.stack([path[:-1], path[1:]], axis=1), axis=1) @ [v, 1]  # (P-1,)
+        if not np.isin(wanted, keys).all():
+            raise ValueError("the path takes a step that is not an edge of the roadmap")
+        order = np.argsort(keys)
+        return order[np.searchsorted(keys, wanted, sorter=order)]
