@@ -165,6 +165,19 @@ def test_bounds_and_wrapping_dofs():
 
 
 @pytest.mark.parametrize("name", list(ROBOTS))
+def test_wrap_maps_only_the_angles_into_minus_pi_to_pi_in_place(name, rng):
+    robot = ROBOTS[name]
+    Q = rng.uniform(-20, 20, size=(500, robot.dof))
+    wrapped = robot.wrap(Q.copy())
+    np.testing.assert_array_equal(wrapped[:, ~robot.wraps], Q[:, ~robot.wraps])
+    angles = wrapped[:, robot.wraps]
+    assert np.all((angles >= -np.pi) & (angles < np.pi))
+    np.testing.assert_allclose(np.cos(angles), np.cos(Q[:, robot.wraps]), atol=1e-9)  # the same angle
+    np.testing.assert_allclose(np.sin(angles), np.sin(Q[:, robot.wraps]), atol=1e-9)
+    assert robot.wrap(Q) is Q and np.array_equal(Q, wrapped)  # in place
+
+
+@pytest.mark.parametrize("name", list(ROBOTS))
 def test_sample_is_uniform_within_bounds_and_reproducible(name):
     robot = ROBOTS[name]
     Q = robot.sample(np.random.default_rng(5), 4000)

@@ -5,7 +5,7 @@ import pytest
 
 from toolkit import data, scenarios
 from toolkit.collision import CollisionChecker, exact_checker
-from toolkit.local_planner import segment_points, wrap
+from toolkit.local_planner import segment_points
 from toolkit.sampling import SAMPLERS, make_sampler
 
 
@@ -37,7 +37,7 @@ def test_uniform_keeps_exactly_the_valid_draws():
 def _perturbed_invalid_fraction(robot, checker, Q, scale, rng):
     """Fraction of ``Q``'s small random perturbations (8 each) that are invalid."""
     Q = np.repeat(Q, 8, axis=0)
-    moved = wrap(robot, Q + rng.normal(0.0, scale, size=Q.shape))
+    moved = robot.wrap(Q + rng.normal(0.0, scale, size=Q.shape))
     return 1.0 - checker.are_valid(moved).mean()
 
 

@@ -47,14 +47,9 @@ def step_counts(robot: BoxRobot, Q0: np.ndarray, Q1: np.ndarray, resolution: flo
     return np.maximum(np.ceil(robot.motion_bound(Q0, Q1) / resolution).astype(int), 1)
 
 
-def wrap(robot: BoxRobot, Q: np.ndarray) -> np.ndarray:
-    """``Q (N, dof)`` with the robot's angles mapped to [-pi, pi)."""
-    return np.where(robot.wraps, (Q + np.pi) % (2 * np.pi) - np.pi, Q)
-
-
 def segment_points(robot: BoxRobot, Q0: np.ndarray, Q1: np.ndarray, t: np.ndarray) -> np.ndarray:
     """``(P, dof)`` points at fractions ``t (P,)`` along segments ``Q0[p] -> Q1[p]`` (``(P, dof)`` each)."""
-    return wrap(robot, Q0 + t[:, None] * robot.difference(Q0, Q1))
+    return robot.wrap(Q0 + t[:, None] * robot.difference(Q0, Q1))
 
 
 def _are_valid_batched(checker: CollisionChecker, Q: np.ndarray) -> np.ndarray:

@@ -75,6 +75,8 @@ class BoxRobot:
         self.lower = np.concatenate([pos_lo[: len(base_names) - n_rot], np.full(n_rot, -np.pi), [j.limits[0] for j in joints]])
         self.upper = np.concatenate([pos_hi[: len(base_names) - n_rot], np.full(n_rot, np.pi), [j.limits[1] for j in joints]])
         self.wraps = np.array(base_angular + (False,) * len(joints))  # (dof,) angles that wrap around
+        len_pos = len(base_names) - n_rot
+        self._angles = slice(len_pos, len_pos + n_rot)  # the angles' columns: base angles follow the base positions
         self.half_extents = np.array([l.half_extents[: self.dim] for l in links], dtype=float)  # (L, D)
         self._offsets = np.array([l.offset for l in links], dtype=float)  # (L, 3)
         self.motion_weights = self._motion_weights()  # (dof,)
@@ -118,7 +120,15 @@ class BoxRobot:
     def difference(self, Q0, Q1) -> np.ndarray:
         """``Q1 - Q0`` with angles taken the short way round, ``(N, dof)`` (leading axes broadcast)."""
         delta = self._finite_configs(Q1, "Q1", max_ndim=None) - self._finite_configs(Q0, "Q0", max_ndim=None)
-        return np.where(self.wraps, _wrap(delta), delta)
+        return self.wrap(delta)
+
+    def wrap(self, Q: np.ndarray) -> np.ndarray:
+        """``Q (..., dof)``, a float array, with its angles mapped to [-pi, pi) in place; returns it."""
+        angles = Q[..., self._angles]  # a view
+        angles += np.pi
+        np.mod(angles, 2 * np.pi, out=angles)
+        angles -= np.pi
+        return Q
 
     def distance(self, Q0, Q1) -> np.ndarray:
         """Euclidean distance in configuration space, respecting angle wrap-around, ``(N,)``."""
@@ -130,8 +140,7 @@ class BoxRobot:
         t = np.asarray(t, dtype=float).reshape(-1, 1)  # (T, 1)
         if not np.all(np.isfinite(t)):
             raise ValueError("t contains NaN or infinite values")
-        Q = q0 + t * self.difference(q0, q1)
-        return np.where(self.wraps, _wrap(Q), Q)
+        return self.wrap(q0 + t * self.difference(q0, q1))
 
     def motion_bound(self, Q0, Q1) -> np.ndarray:
         """Upper bound on how far any point of the robot moves along each segment, ``(N,)``.
@@ -190,11 +199,6 @@ class BoxRobot:
         centers, rotations, half = self.link_boxes(Q)
         reach = np.einsum("nlij,lj->nli", np.abs(rotations), half)  # (N, L, D)
         return np.stack([centers - reach, centers + reach], axis=2)
-
-
-def _wrap(angle):
-    """Angles mapped to [-pi, pi)."""
-    return (np.asarray(angle) + np.pi) % (2 * np.pi) - np.pi
 
 
 def _rotation(axis: str, angle: np.ndarray) -> np.ndarray:

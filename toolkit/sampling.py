@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 
 from .collision import CollisionChecker
-from .local_planner import last_valid_along, segment_points, wrap
+from .local_planner import last_valid_along, segment_points
 
 
 class Sampler:
@@ -66,7 +66,7 @@ class _NearSampler(Sampler):
 
     def _near(self, Q: np.ndarray, rng: np.random.Generator) -> np.ndarray:
         """``(N, dof)`` Gaussian neighbours of ``Q``, angles wrapped."""
-        return wrap(self.robot, Q + rng.normal(0.0, self.sigma, size=Q.shape))
+        return self.robot.wrap(Q + rng.standard_normal(Q.shape) * self.sigma)
 
 
 class UniformSampler(Sampler):
