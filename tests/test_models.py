@@ -153,6 +153,22 @@ def test_link_kinematics_match_the_robot(name, rng):
     assert np.allclose(axes.numpy(), long_axes, atol=1e-9)
 
 
+@pytest.mark.parametrize("name", ["3do", "3dc7", "3dc9"])
+def test_local_pose_is_the_same_in_numpy_and_torch_and_holds_the_link_centres(name, rng):
+    s = scenarios.get(name)
+    enc = InputEncoding(s.robot, s.grid_shape, latent_dim=0, kind="local", radius=1)
+    Q = s.robot.sample(rng, 100)
+    cell, pose = enc.configs(Q)  # numpy: the learned checker's path on the CPU
+    cell_t, pose_t = enc.configs(torch.as_tensor(Q, dtype=torch.float32))
+    np.testing.assert_array_equal(cell, cell_t.numpy())
+    np.testing.assert_allclose(pose, pose_t.numpy(), atol=1e-5)
+    n_links, n_pos = s.robot.n_links, position_dofs(s.robot)
+    centres = pose[-6 * n_links: -3 * n_links].reshape(n_links, 3, -1).transpose(2, 0, 1)  # (N, L, 3)
+    base_cell_centre = np.zeros((len(Q), 1, 3))
+    base_cell_centre[:, 0, :n_pos] = np.floor(Q[:, :n_pos]) + 0.5  # the z of a planar base's cell centre: 0
+    np.testing.assert_allclose(centres + base_cell_centre, s.robot.link_boxes(Q)[0], atol=1e-4)
+
+
 @pytest.mark.parametrize("kind, latent_input", [("raw", True), ("local", True), ("local", False)])
 def test_workspace_margin_equals_the_full_network(kind, latent_input, rng):
     s = scenarios.get("3dc9")

@@ -181,10 +181,12 @@ class InputEncoding(nn.Module):
         sin, cos = xp.sin(turns), xp.cos(turns)
         parts = [position - centre, sin[: self.n_angles], cos[: self.n_angles], rows[first_joint:] * scale + shift]
         if self.kinematics is not None:
-            up = 3 - self.n_pos  # the planar base's z, not a DoF
-            height = xp.full((up, n), self.base_height, dtype=rows.dtype, device=rows.device)
-            centers, long_axes = self.kinematics(xp.concat([position, height]), sin, cos)  # (L, 3, N) each
-            centre_3d = xp.concat([centre, xp.zeros((up, n), dtype=rows.dtype, device=rows.device)])
+            position_3d, centre_3d = position, centre  # (3, N) each
+            if self.n_pos < 3:  # the planar base's z, not a DoF
+                up = 3 - self.n_pos
+                position_3d = xp.concat([position, xp.full((up, n), self.base_height, dtype=rows.dtype, device=rows.device)])
+                centre_3d = xp.concat([centre, xp.zeros((up, n), dtype=rows.dtype, device=rows.device)])
+            centers, long_axes = self.kinematics.forward(position_3d, sin, cos)  # (L, 3, N) each; forward: no hooks
             parts += [(centers - centre_3d).reshape(3 * len(centers), n), long_axes.reshape(3 * len(centers), n)]
         index = (cell * strides).sum(0)  # (N,)
         return (index.long() if xp is torch else index.astype(np.int64)), xp.concat(parts)  # (N,), (pose_size, N)

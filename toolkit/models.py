@@ -186,20 +186,26 @@ class WorkspaceMargin:
     def __call__(self, Q: np.ndarray) -> np.ndarray:
         """Margins ``(N,)`` float32 of configurations ``Q (N, dof)``."""
         if len(Q) >= self.numpy_below:
-            return self._margins(torch.as_tensor(Q, dtype=torch.float32, device=self.device), torch).cpu().numpy()
-        return np.concatenate([self._margins(Q[i:i + self.CHUNK], np) for i in range(0, max(len(Q), 1), self.CHUNK)])
+            return self._torch_margins(torch.as_tensor(Q, dtype=torch.float32, device=self.device)).cpu().numpy()
+        if len(Q) <= self.CHUNK:
+            return self._numpy_margins(Q)
+        return np.concatenate([self._numpy_margins(Q[i:i + self.CHUNK]) for i in range(0, len(Q), self.CHUNK)])
 
     @torch.inference_mode()
-    def _margins(self, Q, xp):
-        """``Q`` and the margins as arrays (``xp`` numpy) or tensors (``xp`` torch), each with its fused operations."""
-        table, pose_weight, last_weight, *hidden = self._weights[xp]
+    def _torch_margins(self, Q: torch.Tensor) -> torch.Tensor:
+        """Margins ``(N,)`` of a float32 tensor ``Q (N, dof)`` on the table's device, with torch's fused operations."""
+        table, pose_weight, last_weight, *hidden = self._weights[torch]
         cell, pose = self.encoding.configs(Q)  # (N,), (pose_size, N)
-        if xp is torch:
-            h = table.index_select(1, cell).addmm_(pose_weight, pose)  # (H, N)
-            nn.functional.leaky_relu_(h, self.slopes[0])
-            for weight, bias, slope in zip(hidden[0::2], hidden[1::2], self.slopes[1:]):
-                h = nn.functional.leaky_relu_(torch.addmm(bias, weight, h), slope)  # (H_next, N)
-            return torch.mv(h.T, last_weight) + self.last_bias  # (N,)
+        h = table.index_select(1, cell).addmm_(pose_weight, pose)  # (H, N)
+        nn.functional.leaky_relu_(h, self.slopes[0])
+        for weight, bias, slope in zip(hidden[0::2], hidden[1::2], self.slopes[1:]):
+            h = nn.functional.leaky_relu_(torch.addmm(bias, weight, h), slope)  # (H_next, N)
+        return torch.mv(h.T, last_weight) + self.last_bias  # (N,)
+
+    def _numpy_margins(self, Q: np.ndarray) -> np.ndarray:
+        """The same numbers as :meth:`_torch_margins`, in numpy (float32)."""
+        table, pose_weight, last_weight, *hidden = self._weights[np]
+        cell, pose = self.encoding.configs(Q)  # (N,), (pose_size, N)
         h = np.take(table, cell, axis=1)  # (H, N)
         h += pose_weight @ pose
         _prelu_(h, self.slopes[0])
