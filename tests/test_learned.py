@@ -9,6 +9,7 @@ import pytest
 from toolkit import checkpoints, cli, data, presets, queries, scenarios, training
 from toolkit.collision import CollisionChecker, exact_checker
 from toolkit.learned import LearnedChecker, load_checker
+from toolkit.prm import PRMOptions
 
 SCENARIO = scenarios.get("2ds")
 
@@ -81,11 +82,15 @@ def test_load_checker(models, workspace, tmp_path, rng):
     assert np.array_equal(loaded.probability(Q), direct.probability(Q))
 
 
-@pytest.mark.parametrize("preset, screened", [("paper", False), ("strong", True)])
-def test_planning_with_a_learned_checker_follows_its_presets_edge_rule(models, workspace, preset, screened):
+@pytest.mark.parametrize("preset, screened, auxiliary", [("paper", False, "exact"), ("strong", True, "confirmed")])
+def test_planning_with_a_learned_checker_follows_its_presets_planner_options(models, workspace, preset, screened,
+                                                                              auxiliary):
     checker = LearnedChecker(workspace, dataclasses.replace(models, preset=presets.get(preset)))
-    assert queries.default_options(SCENARIO, checker).screen_edges is screened
+    options = queries.default_options(SCENARIO, checker)
+    assert options.screen_edges is screened and options.auxiliary == auxiliary
     assert queries.default_options(SCENARIO, checker, screen_edges=not screened).screen_edges is not screened
+    assert queries.default_options(SCENARIO, checker, auxiliary="predicted").auxiliary == "predicted"
+    assert queries.default_options(SCENARIO).auxiliary == PRMOptions().auxiliary  # without a model: the planner's
 
 
 def test_bench_json(capsys):

@@ -89,10 +89,12 @@ def test_improvement_is_the_papers_table_3_measure():
 
 @pytest.mark.parametrize("preset, screened", [("paper", False), ("strong", True)])
 def test_planning_with_prediction_follows_the_presets_edge_rule(preset, screened, monkeypatch, tmp_path, checkpoint_2ds):
-    """``paper``: Algorithm 1 as published (edges checked exactly); ``strong``: learned edge screening."""
+    """``paper``: Algorithm 1 as published (edges checked exactly, later rounds exact); ``strong``: learned edge
+    screening, later rounds confirmed predictions and exact in turn."""
     calls = []
 
     def fake_run(scenario, query_set, sampler, factory, options, seed):
+        assert options.auxiliary == ("confirmed" if screened else "exact")
         calls.append((sampler, factory is not None, options.screen_edges))
         return [], {"sampling_s": 1.0, "total_s": 1.0}
 

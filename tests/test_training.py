@@ -8,6 +8,7 @@ import pytest
 import torch
 
 from toolkit import checkpoints, cli, metrics, presets, training
+from toolkit.presets import Preset
 
 TINY = replace(presets.get("strong").quick_version(), cae_epochs=1, mlp_epochs=2)  # enough to tell seeds apart
 
@@ -98,6 +99,16 @@ def test_checkpoint_round_trip(quick_2ds, tmp_path):
     assert loaded.threshold == models.threshold and loaded.preset == models.preset
     meta = json.loads((tmp_path / "meta.json").read_text())
     assert meta["scenario"] == "2ds" and meta["versions"]["torch"] == torch.__version__ and meta["evaluation"] == {"x": 1}
+
+
+def test_a_checkpoint_older_than_a_preset_setting_takes_the_named_presets(quick_2ds, tmp_path):
+    checkpoints.save_checkpoint(quick_2ds[1], tmp_path)  # a strong model
+    meta = json.loads((tmp_path / "meta.json").read_text())
+    del meta["preset"]["auxiliary"]  # written before Preset.auxiliary existed
+    (tmp_path / "meta.json").write_text(json.dumps(meta))
+    loaded = checkpoints.load_models(tmp_path).preset
+    assert loaded.auxiliary == "confirmed" != Preset.auxiliary  # strong's, not the field's default
+    assert loaded.quick  # what the checkpoint does record wins
 
 
 def test_checkpoint_of_another_scenario(quick_2ds, tmp_path):

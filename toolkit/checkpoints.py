@@ -70,10 +70,11 @@ def load_models(folder: str | Path, scenario: str | None = None) -> TrainedModel
     if scenario is not None and meta["scenario"] != scenario:
         raise ValueError(f"checkpoint {folder} was trained for scenario {meta['scenario']!r}, not {scenario!r}")
     preset_fields = dict(meta["preset"])
-    preset_fields["mlp_hidden"] = tuple(preset_fields["mlp_hidden"]) if preset_fields.get("mlp_hidden") else None
     try:
+        # settings added to Preset after the checkpoint was written: those of the preset it names
+        preset_fields = {**asdict(presets.get(preset_fields.get("name"))), **preset_fields}
+        preset_fields["mlp_hidden"] = tuple(preset_fields["mlp_hidden"]) if preset_fields.get("mlp_hidden") else None
         preset = Preset(**preset_fields)
-        presets.get(preset.name)
     except TypeError as err:
         raise ValueError(f"checkpoint {folder}: {META} has an unreadable preset: {err}") from err
     scen = scenarios.get(meta["scenario"])

@@ -134,7 +134,7 @@ def _planning(stages: Stages, scenario, models, seed: int, quick: bool, workers:
     """Every sampler without and with prediction on the query set. Runs not yet in the cache go to
     ``workers`` processes (one per core, each timing its own queries) when there are several."""
     todo = [(s, m) for s in SAMPLERS for m in MODES if not stages.has(f"planning_{s}_{m}")]
-    job = partial(_planning_run, scenario.name, str(stages.cache / "checkpoint"), models.preset.screen_edges, seed, quick)
+    job = partial(_planning_run, scenario.name, str(stages.cache / "checkpoint"), models.preset.planner_options(), seed, quick)
     with tqdm(total=len(todo), desc=f"planning {scenario.name}", disable=not stages.progress, leave=False) as bar:
         if workers > 1 and len(todo) > 1:
             spawn = multiprocessing.get_context("spawn")  # fresh interpreters: no forked torch thread pools
@@ -150,7 +150,7 @@ def _planning(stages: Stages, scenario, models, seed: int, quick: bool, workers:
     return {s: {m: stages.load(f"planning_{s}_{m}") for m in MODES} for s in SAMPLERS}
 
 
-def _planning_run(scenario_name: str, checkpoint: str, screen_edges: bool, seed: int, quick: bool, sampler: str,
+def _planning_run(scenario_name: str, checkpoint: str, planner: dict, seed: int, quick: bool, sampler: str,
                   mode: str) -> tuple[dict, float]:
     """One sampler in one mode over the query set (also in a worker process): its summary and seconds."""
     began = time.perf_counter()
@@ -158,7 +158,7 @@ def _planning_run(scenario_name: str, checkpoint: str, screen_edges: bool, seed:
     counts = QUICK_QUERIES[scenario.name] if quick else (None, None)
     query_set = queries.make_queries(scenario, seed, *counts)
     n_samples = QUICK_PLAN_SAMPLES.get(scenario.name, scenario.plan_samples) if quick else scenario.plan_samples
-    options = queries.default_options(scenario, n_samples=n_samples, screen_edges=screen_edges,
+    options = queries.default_options(scenario, n_samples=n_samples, **planner,
                                       **({"max_rounds": QUICK_MAX_ROUNDS} if quick else {}))
     factory = None
     if mode == "with":

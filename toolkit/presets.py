@@ -31,7 +31,10 @@ kinematics, where each link box is. Each choice, measured on unseen workspaces
   instead of 93.7, for twice the MLP's training time.
 - planning with it screens edges by prediction too (``screen_edges``, the paper's
   future work; see :mod:`toolkit.prm`): only the candidate path's edges are checked
-  exactly.
+  exactly; and sampling rounds after the first alternate between prediction confirmed
+  by the exact checker and exact sampling (``auxiliary="confirmed"``; the paper
+  preset samples every later round exactly: with its near-chance networks, confirmed
+  rounds yield few samples).
 - no ``z``: once the MLP sees the patch, the CAE's latent adds nothing (unseen
   accuracy with / without ``z``: 2DS 99.5 / 99.7, 3DC-7 95.1 / 95.5), and the CAE
   reconstructs unseen workspaces no better than "all free" (3DC: 89.7 vs 91.2), so
@@ -69,7 +72,12 @@ class Preset:
     holdout: float = 0.0  # share of training workspaces kept from the MLP to calibrate its threshold
     latent_input: bool = True  # the MLP sees the CAE's z (the paper); False: only the patch and pose
     screen_edges: bool = False  # planning with this model: learned edge screening (toolkit.prm), or the paper's exact edges
+    auxiliary: str = "exact"  # planning with this model: how rounds after the first sample (toolkit.prm.AUXILIARY)
     quick: bool = False  # shrunk by quick_version()
+
+    def planner_options(self) -> dict:
+        """The :class:`~toolkit.prm.PRMOptions` that planning with this model uses."""
+        return {"screen_edges": self.screen_edges, "auxiliary": self.auxiliary}
 
     def quick_version(self) -> "Preset":
         """The same recipe with few epochs and samples: a whole scenario in seconds (tests, ``--quick``)."""
@@ -87,7 +95,7 @@ PRESETS: dict[str, Preset] = {
                      cae_optimizer="adamw", cae_lr=1e-4, dropout=0.0, cae_lambda=1e-3,
                      cae_epochs=500, cae_batch=10, cae_max_steps=1500, mlp_epochs=10, mlp_batch=256, mlp_hidden=(64, 32),
                      samples_factor=20, weight_decay=1e-4, cosine_schedule=True, standardize=True, holdout=0.1,
-                     latent_input=False, screen_edges=True),
+                     latent_input=False, screen_edges=True, auxiliary="confirmed"),
 }
 
 # Quick runs also use fewer workspaces than the paper (seen, seen-test, unseen).

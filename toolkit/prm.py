@@ -9,10 +9,11 @@
 4. connect start and goal (while they lie in different components, also try the k
    closest pairs between each one's component and the rest); when the roadmap does
    not join them, sample another S with the same (auxiliary) sampler and repeat (line 4),
-   "creating additional valid samples" (``PRMOptions.auxiliary``): by default, the
-   even rounds sample with prediction and keep what the exact checker confirms, the
-   odd ones sample with the exact checker, which keeps the planner probabilistically
-   complete however poor the prediction;
+   "creating additional valid samples" (``PRMOptions.auxiliary``): with the exact
+   checker (the paper preset), or (the default and the strong preset) even rounds
+   sample with prediction and keep what the exact checker confirms and odd rounds
+   sample exactly; either keeps the planner probabilistically complete however poor
+   the prediction;
 5. extract the cheapest path and **verify** it with the exact checker: its nodes, and
    its edges at ``resolution`` (unless checked exactly when they were added), then at
    ``resolution / verify_refinement`` (10x finer: shortest paths hug obstacles, and an

@@ -63,10 +63,10 @@ def query_pairs(scenario: Scenario, ws: Workspace, count: int, rng: np.random.Ge
 
 def default_options(scenario: Scenario, checker: CollisionChecker | None = None, **overrides) -> PRMOptions:
     """The planner settings of a scenario: the paper's |S| and the scenario's local-planner resolution;
-    with a learned ``checker``, the edge rule of its model's preset (``Preset.screen_edges``)."""
+    with a learned ``checker``, the edge rule and later rounds of its model's preset (``Preset.planner_options``)."""
     settings = {"n_samples": scenario.plan_samples, "resolution": scenario.plan_resolution}
     if isinstance(checker, LearnedChecker):
-        settings["screen_edges"] = checker.models.preset.screen_edges
+        settings.update(checker.models.preset.planner_options())
     settings.update(overrides)
     return PRMOptions(**settings)
 
@@ -86,7 +86,7 @@ def make_queries(scenario: Scenario, seed: int = 0, n_workspaces: int | None = N
 def solve_query(scenario: Scenario, query: Query, sampler: str, checker: CollisionChecker | None = None,
                 options: PRMOptions | None = None, seed=0) -> PlanResult:
     """One query with ``sampler``; ``checker`` decides samples (None: the exact checker); by default the
-    scenario's settings and the edge rule of the checker's preset (:func:`default_options`)."""
+    scenario's settings and the planner options of the checker's preset (:func:`default_options`)."""
     options = options or default_options(scenario, checker)
     return plan(exact_checker(query.workspace, scenario.robot), query.start, query.goal, sampler=sampler,
                 checker=checker, options=options, rng=np.random.default_rng(seed))
