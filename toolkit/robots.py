@@ -75,8 +75,8 @@ class BoxRobot:
         self.lower = np.concatenate([pos_lo[: len(base_names) - n_rot], np.full(n_rot, -np.pi), [j.limits[0] for j in joints]])
         self.upper = np.concatenate([pos_hi[: len(base_names) - n_rot], np.full(n_rot, np.pi), [j.limits[1] for j in joints]])
         self.wraps = np.array(base_angular + (False,) * len(joints))  # (dof,) angles that wrap around
-        len_pos = len(base_names) - n_rot
-        self._angles = slice(len_pos, len_pos + n_rot)  # the angles' columns: base angles follow the base positions
+        n_pos = len(base_names) - n_rot
+        self._angles = slice(n_pos, n_pos + n_rot)  # the columns where wraps is True: base angles follow the positions
         self.half_extents = np.array([l.half_extents[: self.dim] for l in links], dtype=float)  # (L, D)
         self._offsets = np.array([l.offset for l in links], dtype=float)  # (L, 3)
         self.motion_weights = self._motion_weights()  # (dof,)
