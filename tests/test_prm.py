@@ -5,6 +5,7 @@ import json
 import numpy as np
 import pytest
 import torch
+from threadpoolctl import threadpool_info, threadpool_limits
 
 from toolkit import cli, local_planner, prm, scenarios
 from toolkit.collision import CollisionChecker, exact_checker
@@ -355,6 +356,10 @@ def test_paper_query_sets_are_valid_and_reproducible(name, count):
         assert exact.are_valid(np.stack([q.start, q.goal])).all()
 
 
+def _blas_threads() -> list[int]:
+    return [pool["num_threads"] for pool in threadpool_info() if pool["user_api"] == "blas"]
+
+
 def test_run_queries_summary_with_a_checker_factory():
     scenario = scenarios.get("2ds")
     queries = make_queries(scenario, seed=0, n_workspaces=2, per_workspace=3)
@@ -362,14 +367,18 @@ def test_run_queries_summary_with_a_checker_factory():
 
     def factory(ws):
         built.append(ws)
-        threads.append(torch.get_num_threads())
+        threads.append((torch.get_num_threads(), _blas_threads()))
         return NoisyChecker(exact_checker(ws, scenario.robot), 0.05, seed=len(built))
 
     torch.set_num_threads(2)
     try:
-        records, summary = run_queries(scenario, queries, "G", checker_factory=factory)
-        assert threads == [1, 1]  # queries are timed on one torch thread, like the exact checker ...
-        assert torch.get_num_threads() == 2  # ... and the caller's setting comes back
+        with threadpool_limits(limits=2, user_api="blas"):
+            blas_before = _blas_threads()
+            records, summary = run_queries(scenario, queries, "G", checker_factory=factory)
+            # queries are timed on one torch and one BLAS thread, like the exact checker ...
+            assert blas_before and blas_before != [1] * len(blas_before)
+            assert threads == [(1, [1] * len(blas_before))] * 2
+            assert torch.get_num_threads() == 2 and _blas_threads() == blas_before  # ... and the caller's come back
     finally:
         torch.set_num_threads(before)
     assert len(built) == 2 and len(records) == 6

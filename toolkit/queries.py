@@ -8,8 +8,9 @@ from ``(seed, workspace index)``, and at least a quarter of the region's diagona
 apart (base positions), so every query means travelling.
 
 ``run_queries`` solves each query from scratch (a fresh roadmap, as in the paper),
-with torch on one thread (:func:`one_torch_thread`), and summarizes: mean and std of ``sampling_s`` and ``total_s`` (and their medians), ``success_rate``,
-and ``path_valid_rate``, the fraction of returned paths that a fresh exact checker
+with torch and numpy's BLAS on one thread (:func:`one_thread`), and summarizes: mean
+and std of ``sampling_s`` and ``total_s`` (and their medians), ``success_rate``, and
+``path_valid_rate``, the fraction of returned paths that a fresh exact checker
 accepts at 10x finer resolution than the local planner's.
 """
 
@@ -22,6 +23,7 @@ from typing import Callable
 
 import numpy as np
 import torch
+from threadpoolctl import threadpool_limits
 
 from . import data
 from .collision import CollisionChecker, exact_checker
@@ -100,28 +102,31 @@ def run_queries(scenario: Scenario, queries: list[Query], sampler: str,
     The factory runs once per workspace (it encodes the workspace: Algorithm 1,
     line 1); its time is shared among that workspace's queries and counted in their
     ``total_s``. ``options`` None: :func:`default_options` for each query's checker.
-    Torch runs on one thread meanwhile (:func:`one_torch_thread`). Returns per-query
-    records and the summary.
+    Torch and numpy's BLAS run on one thread meanwhile (:func:`one_thread`). Returns
+    per-query records and the summary.
     """
-    with one_torch_thread():
+    with one_thread():
         records = _solve_all(scenario, queries, sampler, checker_factory, options, seed)
     return records, summarize(records)
 
 
 @contextmanager
-def one_torch_thread():
-    """Torch on one thread inside (the previous count restored after): how queries are timed, in both modes.
+def one_thread():
+    """Torch and numpy's BLAS on one thread inside (the previous counts restored after): how queries are timed.
 
-    The exact checker runs on one thread. The learned checker's calls are small (a
-    few hundred to a few ten thousand configurations), where torch's intra-op threads
-    cost more than they give and, on a machine with other work, stall: 3DC-7, bridge
-    test, strong model, 100 queries on 2 cores, sampling with prediction took 1.2 ms
-    a query on one thread and 2.4 ms on two (total 20 ms against 40 ms).
+    The exact checker's own work runs on one thread; the learned checker's calls are
+    small (a few hundred to a few ten thousand configurations), where intra-op threads
+    cost more than they give and, when the other core is busy, stall. Torch: 3DC-7,
+    bridge test, strong model, 100 queries on 2 cores, sampling with prediction took
+    1.2 ms a query on one thread and 2.4 ms on two. OpenBLAS (numpy's matrix products,
+    the learned checker's small calls): 3DC-7, strong model, 50 queries, sampling with
+    prediction G 5.5 -> 1.4 ms, BT 3.9 -> 1.2 ms a query on one BLAS thread.
     """
     before = torch.get_num_threads()
     torch.set_num_threads(1)
     try:
-        yield
+        with threadpool_limits(limits=1, user_api="blas"):
+            yield
     finally:
         torch.set_num_threads(before)
 
