@@ -9,7 +9,8 @@ from threadpoolctl import threadpool_info, threadpool_limits
 
 from toolkit import cli, local_planner, prm, scenarios
 from toolkit.collision import CollisionChecker, exact_checker
-from toolkit.local_planner import certify_edges, check_edges, invalid_fractions, path_is_valid, segment_points
+from toolkit.local_planner import (certify_edges, check_edges, invalid_fractions, path_is_valid, refute_at,
+                                   segment_points)
 from toolkit.prm import PRMOptions, plan
 from toolkit.queries import make_queries, run_queries
 from toolkit.roadmap import Roadmap
@@ -196,8 +197,10 @@ def test_check_edges_agrees_with_checking_every_step():
                                            np.arange(1, k) / k)).all() for a, b, k in zip(Q0, Q1, n)]
     np.testing.assert_array_equal(got, want)
     assert 0 < got.sum() < len(got)
-    fractions = invalid_fractions(exact, Q0, Q1, 0.05)
+    fractions, suspects = invalid_fractions(exact, Q0, Q1, 0.05)
     assert np.all(fractions[got] == 0) and np.all(fractions[~got] > 0)
+    assert np.all(np.isnan(suspects[got]))
+    assert np.all(refute_at(exact, Q0, Q1, suspects, 0.05) == ~got)  # the suspect points are the invalid ones
 
 
 class RecordingChecker(CollisionChecker):
@@ -264,6 +267,41 @@ def test_screened_path_edges_are_confirmed_coarse_then_fine_each_once(monkeypatc
         assert len(edges) == len(set(edges))
     passed_coarse = {e for r, e, ok in checked if r == coarse and ok}
     assert {e for r, e, _ in checked if r == coarse / 10} <= passed_coarse
+
+
+def test_screened_edges_are_refuted_where_screening_saw_them_fail_and_only_when_invalid(monkeypatch):
+    scenario = scenarios.get("3dc7")
+    looked = []  # (edge, refuted, invalid at the roadmap's resolution) of every suspect point checked exactly
+    def recording(checker, Q0, Q1, suspect, resolution):
+        refuted = refute_at(checker, Q0, Q1, suspect, resolution)
+        invalid = ~check_edges(checker, Q0, Q1, resolution)
+        looked.extend((q0.tobytes() + q1.tobytes(), r, v) for q0, q1, s, r, v in zip(Q0, Q1, suspect, refuted, invalid)
+                      if np.isfinite(s))
+        return refuted
+    monkeypatch.setattr(prm, "refute_at", recording)
+    for i, q in enumerate(make_queries(scenario, seed=0, n_workspaces=4)):
+        exact = exact_checker(q.workspace, scenario.robot)
+        result = plan(exact, q.start, q.goal, sampler="BT", checker=NoisyChecker(exact, 0.1, seed=i),
+                      options=PRMOptions(n_samples=scenario.plan_samples), rng=np.random.default_rng(i))
+        assert result.success
+    refuted = [r for _, r, _ in looked]
+    assert sum(refuted) > 0  # screened edges failed where screening said, and cost one exact check each
+    assert all(invalid for _, r, invalid in looked if r)  # a refutation is always right
+    assert len({e for e, _, _ in looked}) == len(looked)  # each suspect point is looked at once
+
+
+def test_refute_at_checks_one_interior_grid_point():
+    scenario, exact, Q0, Q1 = segments_near_obstacles("3dc9", 60, 0.1, seed=3)
+    fractions, suspects = invalid_fractions(exact, Q0, Q1, 0.05)
+    assert np.isfinite(suspects).any() and np.isnan(suspects).any()
+    exact.reset_count()
+    refuted = refute_at(exact, Q0, Q1, suspects, 0.05)
+    assert exact.n_checked == np.isfinite(suspects).sum()
+    np.testing.assert_array_equal(refuted, fractions > 0)  # the exact checker's own suspects: all invalid
+    np.testing.assert_array_equal(refute_at(exact, Q0, Q1, np.full(len(Q0), np.nan), 0.05), False)
+    ends = np.zeros(len(Q0))  # fraction 0 is an endpoint: the nearest interior grid point is looked at instead
+    assert refute_at(exact, Q0, Q1, ends, 0.05).sum() <= (~check_edges(exact, Q0, Q1, 0.05)).sum()
+    np.testing.assert_array_equal(refute_at(exact, Q0, Q0 + 1e-6, ends, 0.05), False)  # no interior point: nothing
 
 
 def segments_near_obstacles(name, n, scale, seed):
@@ -333,10 +371,11 @@ def test_remove_nodes_keeps_edges_consistent():
     roadmap = Roadmap(robot)
     roadmap.add_nodes(np.array([[1.0, 1], [2, 2], [3, 3], [4, 4]]), verified=True)
     roadmap.add_edges(np.array([[0, 1], [2, 3]]), np.ones(2), checked_at=0.5)
-    roadmap.add_edges(np.array([[1, 2], [0, 3]]), np.ones(2))
+    roadmap.add_edges(np.array([[1, 2], [0, 3]]), np.ones(2), suspect=np.array([0.25, 0.75]))
     roadmap.remove_nodes(np.array([1]))
     np.testing.assert_array_equal(roadmap.edges, [[1, 2], [0, 2]])
     np.testing.assert_array_equal(roadmap.edge_checked_at, [0.5, np.inf])
+    np.testing.assert_array_equal(roadmap.edge_suspect, [np.nan, 0.75])
     np.testing.assert_array_equal(roadmap.nodes[roadmap.shortest_path(0, 1)], [[1, 1], [4, 4], [3, 3]])
 
 

@@ -19,7 +19,7 @@ only where they cannot vouch for a stretch (the planner's path verification;
 configurations checked by ``check_edges``, 2.5k bounded and 300 checked by
 ``certify_edges``, 11x faster);
 ``invalid_fractions`` asks about every interior point (for screening by
-prediction); ``last_valid_along`` walks segments from their start and stops at the
+prediction), and ``refute_at`` checks one point a segment where screening saw it fail; ``last_valid_along`` walks segments from their start and stops at the
 first invalid point (for the obstacle-based sampler).
 """
 
@@ -121,15 +121,36 @@ def certify_edges(checker: CollisionChecker, Q0, Q1, resolution: float, spacing:
         intervals = cut(*(x[unsure] for x in intervals), np.full(unsure.sum(), 2))  # halved
 
 
-def invalid_fractions(checker: CollisionChecker, Q0, Q1, resolution: float) -> np.ndarray:
-    """``(E,)`` fraction of each segment's interior points that ``checker`` calls invalid (0 without interior)."""
+def invalid_fractions(checker: CollisionChecker, Q0, Q1, resolution: float) -> tuple[np.ndarray, np.ndarray]:
+    """Screening: ``(E,)`` fraction of each segment's interior points that ``checker`` calls invalid (0 without
+    interior), and ``(E,)`` where along the segment (a fraction of it) the middle one of those points lies (NaN: none)."""
     robot = checker.robot
     Q0, Q1 = robot.check_configs(Q0, "Q0"), robot.check_configs(Q1, "Q1")
     n = step_counts(robot, Q0, Q1, resolution)  # (E,)
-    edge, ordinal = ragged(n - 1)
-    ok = _are_valid_batched(checker, segment_points(robot, Q0[edge], Q1[edge], (ordinal + 1) / n[edge]))
-    invalid = np.bincount(edge, weights=~ok, minlength=len(n))
-    return invalid / np.maximum(n - 1, 1)
+    edge, ordinal = ragged(n - 1)  # edge ascending
+    t = (ordinal + 1) / n[edge]  # (P,)
+    bad = np.flatnonzero(~_are_valid_batched(checker, segment_points(robot, Q0[edge], Q1[edge], t)))
+    count = np.bincount(edge[bad], minlength=len(n))  # (E,) invalid points per segment
+    suspect = np.full(len(n), np.nan)
+    some = count > 0
+    suspect[some] = t[bad[(np.cumsum(count) - count + count // 2)[some]]]  # each segment's middle invalid point
+    return count / np.maximum(n - 1, 1), suspect
+
+
+def refute_at(checker: CollisionChecker, Q0, Q1, suspect: np.ndarray, resolution: float) -> np.ndarray:
+    """``(E,)`` bool: whether ``checker`` finds invalid the ``resolution`` grid point nearest fraction ``suspect`` of
+    each segment, an interior point (NaN, or no interior point: False). True is certain: ``check_edges`` says False.
+
+    One call over one point a segment: where a cheap checker's screening
+    (:func:`invalid_fractions`) saw a segment fail, the exact checker usually does too.
+    """
+    robot = checker.robot
+    n = step_counts(robot, Q0, Q1, resolution)  # (E,)
+    look = np.flatnonzero(np.isfinite(suspect) & (n > 1))
+    t = np.clip(np.round(suspect[look] * n[look]), 1, n[look] - 1) / n[look]  # a grid point inside
+    refuted = np.zeros(len(n), dtype=bool)
+    refuted[look] = ~_are_valid_batched(checker, segment_points(robot, Q0[look], Q1[look], t))
+    return refuted
 
 
 def last_valid_along(checker: CollisionChecker, Q0: np.ndarray, Q1: np.ndarray, resolution: float,

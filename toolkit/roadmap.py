@@ -7,7 +7,8 @@ periodic box along the angle axes (``boxsize``), so it is exact under that metri
 
 Every node remembers whether the exact checker has confirmed it (``node_verified``),
 every edge the finest resolution at which it did (``edge_checked_at``, ``inf``: not
-yet); the planner (:mod:`toolkit.prm`) confirms a path's nodes and edges before it
+yet) and, when screened by prediction, where along it prediction saw it fail
+(``edge_suspect``, a fraction from ``edges[:, 0]``; NaN: nowhere); the planner (:mod:`toolkit.prm`) confirms a path's nodes and edges before it
 returns it.
 """
 
@@ -22,7 +23,8 @@ from .robots import BoxRobot
 
 
 class Roadmap:
-    """``nodes (V, dof)``, ``edges (E, 2)`` int (i < j), ``edge_cost (E,)``, ``node_verified (V,)``, ``edge_checked_at (E,)``."""
+    """``nodes (V, dof)``, ``edges (E, 2)`` int (i < j), ``edge_cost (E,)``, ``node_verified (V,)``,
+    ``edge_checked_at (E,)``, ``edge_suspect (E,)``."""
 
     def __init__(self, robot: BoxRobot):
         self.robot = robot
@@ -31,6 +33,7 @@ class Roadmap:
         self.edges = np.zeros((0, 2), dtype=int)
         self.edge_cost = np.zeros(0)
         self.edge_checked_at = np.zeros(0)  # the finest resolution the exact checker confirmed each edge at
+        self.edge_suspect = np.zeros(0)  # where along each edge screening predicted a collision (NaN: nowhere)
         self._box = np.where(robot.wraps, 2 * np.pi * robot.motion_weights, 0.0)  # (dof,) period per axis, 0: none
 
     def __repr__(self) -> str:
@@ -95,17 +98,21 @@ class Roadmap:
         v = len(self.nodes)
         return pairs[~np.isin(pairs @ [v, 1], self.edges @ [v, 1])]
 
-    def add_edges(self, pairs: np.ndarray, cost: np.ndarray, checked_at: float = np.inf) -> None:
-        """Append edges ``pairs (C, 2)`` of ``cost (C,)``, confirmed by the exact checker at ``checked_at`` (inf: not)."""
+    def add_edges(self, pairs: np.ndarray, cost: np.ndarray, checked_at: float = np.inf,
+                  suspect: np.ndarray | None = None) -> None:
+        """Append edges ``pairs (C, 2)`` of ``cost (C,)``, confirmed by the exact checker at ``checked_at`` (inf: not),
+        with ``suspect (C,)`` where screening saw them fail (None: nowhere)."""
         self.edges = np.concatenate([self.edges, pairs])
         self.edge_cost = np.concatenate([self.edge_cost, cost])
         self.edge_checked_at = np.concatenate([self.edge_checked_at, np.full(len(pairs), float(checked_at))])
+        self.edge_suspect = np.concatenate([self.edge_suspect, np.full(len(pairs), np.nan) if suspect is None else suspect])
 
     def remove_edges(self, which: np.ndarray) -> None:
         """Drop the edges selected by ``which`` (indices or a boolean mask)."""
         keep = np.ones(len(self.edges), dtype=bool)
         keep[which] = False
-        self.edges, self.edge_cost, self.edge_checked_at = self.edges[keep], self.edge_cost[keep], self.edge_checked_at[keep]
+        self.edges, self.edge_cost = self.edges[keep], self.edge_cost[keep]
+        self.edge_checked_at, self.edge_suspect = self.edge_checked_at[keep], self.edge_suspect[keep]
 
     def remove_nodes(self, which: np.ndarray) -> None:
         """Drop nodes ``which`` (indices) and their edges; later nodes shift down (earlier ones keep their index)."""
