@@ -88,6 +88,7 @@ def test_planning_with_a_learned_checker_follows_its_presets_planner_options(mod
     checker = LearnedChecker(workspace, dataclasses.replace(models, preset=presets.get(preset)))
     options = queries.default_options(SCENARIO, checker)
     assert options.screen_edges is screened and options.auxiliary == auxiliary
+    assert options.exact_every == presets.get(preset).exact_every
     assert queries.default_options(SCENARIO, checker, screen_edges=not screened).screen_edges is not screened
     assert queries.default_options(SCENARIO, checker, auxiliary="predicted").auxiliary == "predicted"
     assert queries.default_options(SCENARIO).auxiliary == PRMOptions().auxiliary  # without a model: the planner's

@@ -122,15 +122,18 @@ def test_exact_baseline_never_repairs_nodes_and_counts_checks():
     assert s["nodes"] == len(result.roadmap.nodes) and result.roadmap.edges.shape == (s["edges"], 2)
 
 
-@pytest.mark.parametrize("auxiliary, sources", [("exact", ["predicted", "exact", "exact", "exact"]),
-                                                 ("confirmed", ["predicted", "confirmed", "exact", "confirmed"]),
-                                                 ("predicted", ["predicted"] * 4)])
-def test_rounds_after_the_first_sample_as_options_auxiliary_says(auxiliary, sources):
+@pytest.mark.parametrize("options, sources", [
+    (dict(auxiliary="exact"), ["predicted", "exact", "exact", "exact"]),
+    (dict(auxiliary="confirmed", exact_every=2), ["predicted", "confirmed", "exact", "confirmed", "exact"]),
+    (dict(auxiliary="confirmed", exact_every=3),
+     ["predicted", "confirmed", "confirmed", "exact", "confirmed", "confirmed", "exact"]),
+    (dict(auxiliary="predicted"), ["predicted"] * 4)])
+def test_rounds_after_the_first_sample_as_options_auxiliary_says(options, sources):
     scenario = scenarios.get("2ds")
     q = make_queries(scenario, seed=0, n_workspaces=1, per_workspace=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
     lying = NoisyChecker(exact, 0.3, seed=0)
-    planner = prm._Planner(exact, lying, PRMOptions(n_samples=200, auxiliary=auxiliary),
+    planner = prm._Planner(exact, lying, PRMOptions(n_samples=200, **options),
                            make_sampler("BS", lying), make_sampler("BS", exact))
     rng = np.random.default_rng(0)
     for round_, source in enumerate(sources, start=1):
@@ -177,7 +180,8 @@ def test_bad_input_gives_clear_errors():
                        (dict(resolution=np.nan), "resolution must be positive"),
                        (dict(screen_reject=1.5), "screen_reject must lie in"),
                        (dict(screen_penalty=-1), "screen_penalty must be non-negative"),
-                       (dict(auxiliary="sometimes"), "auxiliary must be one of")]:
+                       (dict(auxiliary="sometimes"), "auxiliary must be one of"),
+                       (dict(exact_every=0), "exact_every must be a positive integer")]:
         with pytest.raises(ValueError, match=f"PRMOptions.{match}"):
             PRMOptions(**bad)
 

@@ -10,10 +10,10 @@
    closest pairs between each one's component and the rest); when the roadmap does
    not join them, sample another S with the same (auxiliary) sampler and repeat (line 4),
    "creating additional valid samples" (``PRMOptions.auxiliary``): with the exact
-   checker (the paper preset), or (the default and the strong preset) even rounds
-   sample with prediction and keep what the exact checker confirms and odd rounds
-   sample exactly; either keeps the planner probabilistically complete however poor
-   the prediction;
+   checker (the paper preset), or (the default and the strong preset) with
+   prediction, keeping what the exact checker confirms, and every fourth round
+   (``exact_every``) exactly; either keeps the planner probabilistically complete
+   however poor the prediction;
 5. extract the cheapest path and **verify** it with the exact checker: its nodes, and
    its edges at ``resolution`` (unless checked exactly when they were added), then at
    ``resolution / verify_refinement`` (10x finer: shortest paths hug obstacles, and an
@@ -67,7 +67,8 @@ from .sampling import make_sampler
 START, GOAL = 0, 1  # node indices of the query's endpoints (never removed)
 AUXILIARY = {  # PRMOptions.auxiliary: how rounds after the first sample, with prediction
     "exact": "with the exact checker",
-    "confirmed": "even rounds with prediction, keeping what the exact checker confirms; odd rounds with the exact checker",
+    "confirmed": "with prediction, keeping what the exact checker confirms; every PRMOptions.exact_every-th round "
+                 "(counting from the first) with the exact checker",
     "predicted": "with prediction, like the first (nodes are checked when a candidate path uses them)",
 }
 
@@ -82,6 +83,7 @@ class PRMOptions:
     verify_refinement: int = 10  # the returned path's edges are checked exactly at resolution / this
     max_rounds: int = 20  # sampling rounds before reporting failure
     auxiliary: str = "confirmed"  # with prediction, rounds after the first: see AUXILIARY
+    exact_every: int = 4  # auxiliary "confirmed": rounds 1 + exact_every, 1 + 2 * exact_every, ... sample exactly
     screen_edges: bool = True  # with prediction: learned edge screening (lazy PRM); False: the paper's exact edges
     screen_reject: float = 0.9  # screening drops edges with a larger predicted-invalid fraction
     screen_penalty: float = 10.0  # screened edge cost = length * (1 + penalty * predicted-invalid fraction)
@@ -90,7 +92,7 @@ class PRMOptions:
     sampler_options: dict = field(default_factory=dict)
 
     def __post_init__(self):
-        for name in ("n_samples", "k", "verify_refinement", "max_rounds"):
+        for name in ("n_samples", "k", "verify_refinement", "max_rounds", "exact_every"):
             value = getattr(self, name)
             if int(value) != value or value < 1:
                 raise ValueError(f"PRMOptions.{name} must be a positive integer, got {value!r}")
@@ -188,7 +190,8 @@ class _Planner:
     def sample_round(self, rng: np.random.Generator) -> tuple[np.ndarray, bool]:
         """This round's samples ``(M, dof)`` and whether the exact checker vouches for them (``PRMOptions.auxiliary``)."""
         n, auxiliary, round_ = self.options.n_samples, self.options.auxiliary, self.stats["rounds"]
-        if not self.predicted or (round_ > 1 and (auxiliary == "exact" or (auxiliary == "confirmed" and round_ % 2))):
+        exact_round = auxiliary == "exact" or (auxiliary == "confirmed" and (round_ - 1) % self.options.exact_every == 0)
+        if not self.predicted or (round_ > 1 and exact_round):
             return self.exact_sampler.sample(n, rng), True
         S = self.sampler.sample(n, rng)
         if round_ > 1 and auxiliary == "confirmed":
