@@ -8,6 +8,7 @@ import torch
 from threadpoolctl import threadpool_info, threadpool_limits
 
 from toolkit import cli, local_planner, prm, scenarios
+from toolkit import queries as queries_module
 from toolkit.collision import CollisionChecker, exact_checker
 from toolkit.local_planner import (certify_edges, check_edges, invalid_fractions, path_is_valid, refute_at,
                                    segment_points)
@@ -429,6 +430,27 @@ def test_run_queries_summary_with_a_checker_factory():
     assert summary["predicted_checks"] > 0 and summary["sampling_s"] <= summary["total_s"]
     assert summary["total_s_std"] >= 0 and summary["n_queries"] == 6
     assert summary["total_s_median"] == np.median([r["total_s"] for r in records])
+
+
+def test_run_interleaved_takes_turns_and_answers_as_separate_runs(monkeypatch):
+    scenario = scenarios.get("2ds")
+    queries = make_queries(scenario, seed=0, n_workspaces=2, per_workspace=2)
+
+    def factory(ws):
+        return NoisyChecker(exact_checker(ws, scenario.robot), 0.05, seed=1)
+
+    separate = {"without": run_queries(scenario, queries, "OB"), "with": run_queries(scenario, queries, "OB", factory)}
+    order, solve = [], queries_module.solve_query
+    def recording(scenario, query, sampler, checker, options, seed):
+        order.append("with" if checker is not None else "without")
+        return solve(scenario, query, sampler, checker, options, seed)
+    monkeypatch.setattr(queries_module, "solve_query", recording)
+    runs = queries_module.run_interleaved(scenario, queries, "OB", {"without": None, "with": factory})
+    assert order == ["without", "with", "with", "without"] * 2  # who goes first rotates
+    for mode, (records, summary) in runs.items():
+        keys = ("nodes", "edges", "rounds", "exact_checks", "predicted_checks", "success")
+        assert [[r[k] for k in keys] for r in records] == [[r[k] for k in keys] for r in separate[mode][0]]
+        assert summary["n_queries"] == 4
 
 
 def test_plan_command_prints_json(capsys):

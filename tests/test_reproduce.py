@@ -93,15 +93,17 @@ def test_planning_with_prediction_follows_the_presets_edge_rule(preset, screened
     screening, later rounds confirmed predictions and exact in turn."""
     calls = []
 
-    def fake_run(scenario, query_set, sampler, factory, options, seed):
+    def fake_run(scenario, query_set, sampler, factories, options, seed):
         assert options.auxiliary == ("confirmed" if screened else "exact")
-        calls.append((sampler, factory is not None, options.screen_edges))
-        return [], {"sampling_s": 1.0, "total_s": 1.0}
+        assert list(factories) == ["without", "with"] and factories["without"] is None  # in turns, one run
+        calls.append((sampler, factories["with"] is not None, options.screen_edges))
+        return {mode: ([], {"sampling_s": 1.0, "total_s": 1.0}) for mode in factories}
 
-    monkeypatch.setattr(experiments.queries, "run_queries", fake_run)
+    monkeypatch.setattr(experiments.queries, "run_interleaved", fake_run)
     models = SimpleNamespace(preset=presets.get(preset))
     stages = experiments.Stages(tmp_path, {"scenario": "2ds"}, progress=False)
     shutil.copytree(checkpoint_2ds, stages.cache / "checkpoint")
-    experiments._planning(stages, scenarios.get("2ds"), models, seed=0, quick=True, workers=1)
-    assert len(calls) == 8
+    planning = experiments._planning(stages, scenarios.get("2ds"), models, seed=0, quick=True, workers=1)
+    assert sorted(s for s, _, _ in calls) == sorted(paper_numbers.SAMPLERS)
     assert {screen for _, predicted, screen in calls if predicted} == {screened}
+    assert set(planning) == set(paper_numbers.SAMPLERS) and set(planning["BS"]) == {"without", "with"}

@@ -5,8 +5,8 @@
 1. data: the seen / unseen splits (:mod:`toolkit.data`);
 2. models: the CAE and MLP (:mod:`toolkit.training`), a checkpoint folder;
 3. learning: Table 1 and Table 2 measures, and P(valid) on the unseen test set;
-4. planning: every sampler, without and with prediction, on the paper's queries (:mod:`toolkit.queries`),
-   the eight runs spread over one process per core;
+4. planning: every sampler, without and with prediction in turns query by query, on the paper's queries
+   (:mod:`toolkit.queries`), the four samplers spread over one process per core;
 5. throughput: exact and learned checker speed (:mod:`toolkit.bench`);
 
 and writes ``out/results.json`` (the contract's keys), ``out/tables.md`` (our value
@@ -131,28 +131,30 @@ def _learning(models: training.TrainedModels, splits) -> dict:
 
 
 def _planning(stages: Stages, scenario, models, seed: int, quick: bool, workers: int) -> dict:
-    """Every sampler without and with prediction on the query set. Runs not yet in the cache go to
-    ``workers`` processes (one per core, each timing its own queries) when there are several."""
-    todo = [(s, m) for s in SAMPLERS for m in MODES if not stages.has(f"planning_{s}_{m}")]
+    """Every sampler without and with prediction on the query set, the two in turns query by query. Samplers
+    not yet in the cache go to ``workers`` processes (one per core, each timing its own queries) when there
+    are several."""
+    todo = [s for s in SAMPLERS if not stages.has(f"planning_{s}")]
     job = partial(_planning_run, scenario.name, str(stages.cache / "checkpoint"), models.preset.planner_options(), seed, quick)
     with tqdm(total=len(todo), desc=f"planning {scenario.name}", disable=not stages.progress, leave=False) as bar:
         if workers > 1 and len(todo) > 1:
             spawn = multiprocessing.get_context("spawn")  # fresh interpreters: no forked torch thread pools
             with ProcessPoolExecutor(min(workers, len(todo)), mp_context=spawn) as pool:
-                futures = {pool.submit(job, s, m): (s, m) for s, m in todo}
+                futures = {pool.submit(job, s): s for s in todo}
                 for future in as_completed(futures):
-                    stages.save("planning_{}_{}".format(*futures[future]), *future.result())
+                    stages.save(f"planning_{futures[future]}", *future.result())
                     bar.update()
         else:
-            for s, m in todo:
-                stages.save(f"planning_{s}_{m}", *job(s, m))
+            for s in todo:
+                stages.save(f"planning_{s}", *job(s))
                 bar.update()
-    return {s: {m: stages.load(f"planning_{s}_{m}") for m in MODES} for s in SAMPLERS}
+    return {s: stages.load(f"planning_{s}") for s in SAMPLERS}
 
 
-def _planning_run(scenario_name: str, checkpoint: str, planner: dict, seed: int, quick: bool, sampler: str,
-                  mode: str) -> tuple[dict, float]:
-    """One sampler in one mode over the query set (also in a worker process): its summary and seconds."""
+def _planning_run(scenario_name: str, checkpoint: str, planner: dict, seed: int, quick: bool,
+                  sampler: str) -> tuple[dict, float]:
+    """One sampler over the query set, without and with prediction in turns (also in a worker process):
+    ``{"without": summary, "with": summary}`` and seconds."""
     began = time.perf_counter()
     scenario = scenarios.get(scenario_name)
     counts = QUICK_QUERIES[scenario.name] if quick else (None, None)
@@ -160,12 +162,10 @@ def _planning_run(scenario_name: str, checkpoint: str, planner: dict, seed: int,
     n_samples = QUICK_PLAN_SAMPLES.get(scenario.name, scenario.plan_samples) if quick else scenario.plan_samples
     options = queries.default_options(scenario, n_samples=n_samples, **planner,
                                       **({"max_rounds": QUICK_MAX_ROUNDS} if quick else {}))
-    factory = None
-    if mode == "with":
-        models = checkpoints.load_models(checkpoint, scenario.name)
-        factory = partial(LearnedChecker, models=models)
-    summary = queries.run_queries(scenario, query_set, sampler, factory, options, seed)[1]
-    return summary, time.perf_counter() - began
+    models = checkpoints.load_models(checkpoint, scenario.name)
+    factories = {"without": None, "with": partial(LearnedChecker, models=models)}
+    runs = queries.run_interleaved(scenario, query_set, sampler, factories, options, seed)
+    return {mode: runs[mode][1] for mode in MODES}, time.perf_counter() - began
 
 
 def _throughput(scenario, preset: str, seed: int, quick: bool) -> dict:
@@ -297,8 +297,9 @@ def run_costs(runs: list[dict]) -> list[str]:
                     + [f"{seconds[k]:.0f}" if k in seconds else "n/a" for k in ("data", "models")]
                     + [f"{planning:.0f}"])
     return (["## Checker throughput (configurations per second, median) and stage times (seconds)", "",
-             "Each stage's time when it was computed (a resumed run keeps them). *planning*: the 8 runs (4 samplers, "
-             "without and with prediction) added up (by default in parallel, one process per core; `--workers`).", ""]
+             "Each stage's time when it was computed (a resumed run keeps them). *planning*: the 4 samplers' runs "
+             "(each query without and with prediction in turn) added up (by default in parallel, one process per core; "
+             "`--workers`).", ""]
             + _table(["", "exact cfg/s", "learned cfg/s", "learned / exact", "data s", "models s", "planning s"], rows))
 
 

@@ -11,7 +11,9 @@ apart (base positions), so every query means travelling.
 with torch and numpy's BLAS on one thread (:func:`one_thread`), and summarizes: mean
 and std of ``sampling_s`` and ``total_s`` (and their medians), ``success_rate``, and
 ``path_valid_rate``, the fraction of returned paths that a fresh exact checker
-accepts at 10x finer resolution than the local planner's.
+accepts at 10x finer resolution than the local planner's. ``run_interleaved`` does
+the same in several modes (without and with prediction) taking turns query by
+query, so that the ratio of their times is measured under the same conditions.
 """
 
 from __future__ import annotations
@@ -105,9 +107,22 @@ def run_queries(scenario: Scenario, queries: list[Query], sampler: str,
     Torch and numpy's BLAS run on one thread meanwhile (:func:`one_thread`). Returns
     per-query records and the summary.
     """
+    return run_interleaved(scenario, queries, sampler, {"run": checker_factory}, options, seed)["run"]
+
+
+def run_interleaved(scenario: Scenario, queries: list[Query], sampler: str,
+                    factories: dict[str, Callable[[Workspace], CollisionChecker] | None],
+                    options: PRMOptions | None = None, seed: int = 0) -> dict[str, tuple[list[dict], dict]]:
+    """:func:`run_queries` once per entry of ``factories`` (a name: a checker factory, or None for exact), the
+    entries taking turns query by query (who goes first rotates), each query with the same seed in every entry.
+
+    So all entries see the machine alike: these machines change speed for minutes
+    at a time (up to 2x, seen here), which moves the ratio of two runs made one
+    after the other, not that of runs made in turns. Per name: records and summary.
+    """
     with one_thread():
-        records = _solve_all(scenario, queries, sampler, checker_factory, options, seed)
-    return records, summarize(records)
+        records = _solve_all(scenario, queries, sampler, factories, options, seed)
+    return {name: (runs, summarize(runs)) for name, runs in records.items()}
 
 
 @contextmanager
@@ -132,23 +147,27 @@ def one_thread():
 
 
 def _solve_all(scenario: Scenario, queries: list[Query], sampler: str,
-               checker_factory: Callable[[Workspace], CollisionChecker] | None, options: PRMOptions | None,
-               seed: int) -> list[dict]:
-    """The per-query records of :func:`run_queries`."""
-    records, checkers = [], {}
+               factories: dict[str, Callable[[Workspace], CollisionChecker] | None], options: PRMOptions | None,
+               seed: int) -> dict[str, list[dict]]:
+    """The per-query records of :func:`run_interleaved`, per name."""
+    names = list(factories)
+    records: dict[str, list[dict]] = {name: [] for name in names}
+    checkers: dict[str, dict] = {name: {} for name in names}  # per name: workspace index -> checker
     share = np.bincount([q.workspace_index for q in queries])  # queries per workspace
     for n, query in enumerate(queries):
-        encode_s = 0.0
-        if checker_factory is not None and query.workspace_index not in checkers:
-            began = time.perf_counter()
-            checkers[query.workspace_index] = checker_factory(query.workspace)
-            encode_s = (time.perf_counter() - began) / share[query.workspace_index]
-        checker = checkers.get(query.workspace_index)
-        result = solve_query(scenario, query, sampler, checker, options, seed=[int(seed), n])
-        fine = result.stats["resolution"] / 10
-        valid = result.success and path_is_valid(exact_checker(query.workspace, scenario.robot), result.path, fine)
-        records.append(dict(result.stats, workspace=query.workspace_index, success=result.success,
-                            path_valid=bool(valid), encode_s=encode_s, total_s=result.stats["total_s"] + encode_s))
+        turn = n % len(names)
+        for name in names[turn:] + names[:turn]:
+            encode_s, factory, built = 0.0, factories[name], checkers[name]
+            if factory is not None and query.workspace_index not in built:
+                began = time.perf_counter()
+                built[query.workspace_index] = factory(query.workspace)
+                encode_s = (time.perf_counter() - began) / share[query.workspace_index]
+            result = solve_query(scenario, query, sampler, built.get(query.workspace_index), options, seed=[int(seed), n])
+            fine = result.stats["resolution"] / 10
+            valid = result.success and path_is_valid(exact_checker(query.workspace, scenario.robot), result.path, fine)
+            records[name].append(dict(result.stats, workspace=query.workspace_index, success=result.success,
+                                      path_valid=bool(valid), encode_s=encode_s,
+                                      total_s=result.stats["total_s"] + encode_s))
     return records
 
 
@@ -171,11 +190,12 @@ def summarize(records: list[dict]) -> dict:
 
 def compare_prediction(scenario: Scenario, queries: list[Query], checker_factory: Callable[[Workspace], CollisionChecker],
                        samplers=("BS", "OB", "G", "BT"), options: PRMOptions | None = None, seed: int = 0) -> dict:
-    """Per sampler: ``{"without": summary, "with": summary, "sampling_ratio", "total_ratio"}`` (with / without)."""
+    """Per sampler: ``{"without": summary, "with": summary, "sampling_ratio", "total_ratio"}`` (with / without),
+    the two modes in turns (:func:`run_interleaved`)."""
     table = {}
     for sampler in samplers:
-        _, without = run_queries(scenario, queries, sampler, options=options, seed=seed)
-        _, with_ = run_queries(scenario, queries, sampler, checker_factory, options=options, seed=seed)
+        runs = run_interleaved(scenario, queries, sampler, {"without": None, "with": checker_factory}, options, seed)
+        without, with_ = runs["without"][1], runs["with"][1]
         table[sampler] = {"without": without, "with": with_,
                           "sampling_ratio": with_["sampling_s"] / max(without["sampling_s"], 1e-12),
                           "total_ratio": with_["total_s"] / max(without["total_s"], 1e-12)}
