@@ -107,3 +107,12 @@ def test_planning_with_prediction_follows_the_presets_edge_rule(preset, screened
     assert sorted(s for s, _, _ in calls) == sorted(paper_numbers.SAMPLERS)
     assert {screen for _, predicted, screen in calls if predicted} == {screened}
     assert set(planning) == set(paper_numbers.SAMPLERS) and set(planning["BS"]) == {"without", "with"}
+
+
+def test_stage_times_count_this_layouts_planning_stages_only():
+    seconds = {"data": 1.0, "models": 2.0, "planning_BS_without": 50.0}  # a stage of an older cache layout
+    seconds.update({f"planning_{s}": 3.0 for s in paper_numbers.SAMPLERS})
+    run = {"scenario": "2ds", "stage_seconds": seconds,
+           "throughput": {"exact_cfg_per_s": 2.0, "learned_cfg_per_s": 1.0, "ratio": 0.5}}
+    row = experiments.run_costs([run])[-1]
+    assert row.endswith("| 1 | 2 | 12 |")

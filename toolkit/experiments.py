@@ -292,7 +292,7 @@ def run_costs(runs: list[dict]) -> list[str]:
     rows = []
     for r in runs:
         t, seconds = r["throughput"], r["stage_seconds"]
-        planning = sum(v for k, v in seconds.items() if k.startswith("planning_"))
+        planning = sum(seconds.get(f"planning_{s}", 0.0) for s in SAMPLERS)  # not an older cache's stage names
         rows.append([r["scenario"], f"{t['exact_cfg_per_s']:,.0f}", f"{t['learned_cfg_per_s']:,.0f}", f"{t['ratio']:.3g}"]
                     + [f"{seconds[k]:.0f}" if k in seconds else "n/a" for k in ("data", "models")]
                     + [f"{planning:.0f}"])
