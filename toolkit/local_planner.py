@@ -19,8 +19,9 @@ only where they cannot vouch for a stretch (the planner's path verification;
 configurations checked by ``check_edges``, 2.5k bounded and 300 checked by
 ``certify_edges``, 11x faster);
 ``invalid_fractions`` asks about every interior point (for screening by
-prediction), and ``refute_at`` checks one point a segment where screening saw it fail; ``last_valid_along`` walks segments from their start and stops at the
-first invalid point (for the obstacle-based sampler).
+prediction), and ``refute_at`` checks one point a segment, where screening saw it
+fail; ``last_valid_along`` walks segments from their start and stops at the first
+invalid point (for the obstacle-based sampler).
 """
 
 from __future__ import annotations
