@@ -384,6 +384,64 @@ def test_remove_nodes_keeps_edges_consistent():
     np.testing.assert_array_equal(roadmap.nodes[roadmap.shortest_path(0, 1)], [[1, 1], [4, 4], [3, 3]])
 
 
+def test_rejected_pairs_are_remembered_across_renumbering_and_never_offered_again():
+    robot = scenarios.get("2ds").robot
+    roadmap = Roadmap(robot)
+    roadmap.add_nodes(np.array([[1.0, 1], [1.2, 1], [5, 5], [1.4, 1], [1.6, 1]]), verified=True)
+    roadmap.add_edges(np.array([[0, 1], [3, 4]]), np.ones(2))
+    roadmap.remove_edges(np.array([1]))  # 3-4 failed
+    roadmap.reject(np.array([[1, 3]]))
+    assert roadmap.candidate_edges(np.array([3]), k=4).tolist() == [[0, 3], [2, 3]]  # neither 1-3 nor 3-4
+    roadmap.remove_nodes(np.array([2]))  # 3 -> 2, 4 -> 3
+    np.testing.assert_array_equal(roadmap.rejected, [[2, 3], [1, 2]])
+    assert roadmap.candidate_edges(np.array([2]), k=3).tolist() == [[0, 2]]
+    roadmap.remove_nodes(np.array([1]))
+    np.testing.assert_array_equal(roadmap.rejected, [[1, 2]])
+
+
+def test_bridging_again_tries_the_next_closest_pairs():
+    robot = scenarios.get("2ds").robot
+    roadmap = Roadmap(robot)
+    left = np.array([[1.0, 1], [1.0, 1.5], [1.0, 2]])  # start's component: nodes 0-2
+    right = np.array([[2.0, 1], [2.1, 1.45], [2.2, 2], [4, 4]])  # the rest: nodes 3-6
+    roadmap.add_nodes(np.concatenate([left, right]), verified=True)
+    roadmap.add_edges(np.array([[0, 1], [1, 2], [3, 4], [4, 5], [5, 6]]), np.ones(5))
+    offered = []
+    for _ in range(5):
+        offered.append(roadmap.bridge_edges(0, k=2).tolist())
+        roadmap.reject(np.array(offered[-1], dtype=int).reshape(-1, 2))
+    # each member's nearest untried pair among its 2 nearest outside nodes, closest first:
+    # 0-3 1.0, 1-4 1.10 (2-5 1.2 waits); 1-3 1.12, 0-4 1.19; 2-5; 2-4 1.23; none left
+    assert offered == [[[0, 3], [1, 4]], [[1, 3], [0, 4]], [[2, 5]], [[2, 4]], []]
+
+
+def test_the_planner_decides_no_pair_twice(monkeypatch):
+    """Repairs split roadmaps and the planner bridges them again: every pair it screens or checks is new."""
+    scenario = scenarios.get("3dc9")
+    decided = []
+    original = prm._Planner.decide
+    def recording(self, pairs):
+        Q = self.roadmap.nodes
+        decided.append({Q[i].tobytes() + Q[j].tobytes() for i, j in pairs})
+        assert len(decided[-1]) == len(pairs)
+        original(self, pairs)
+    monkeypatch.setattr(prm._Planner, "decide", recording)
+    rounds = []
+    for rebridge in (0, 3):
+        stats = []
+        for i, q in enumerate(make_queries(scenario, seed=0, n_workspaces=6)):
+            decided.clear()
+            exact = exact_checker(q.workspace, scenario.robot)
+            result = plan(exact, q.start, q.goal, sampler="BT", checker=NoisyChecker(exact, 0.1, seed=i),
+                          options=PRMOptions(n_samples=scenario.plan_samples, rebridge=rebridge),
+                          rng=np.random.default_rng(i))
+            assert result.success
+            assert sum(map(len, decided)) == len(set().union(*decided))
+            stats.append(result.stats)
+        rounds.append(sum(s["rounds"] for s in stats))
+    assert rounds[1] < rounds[0]  # bridging again saved sampling rounds
+
+
 # -- queries and the command ------------------------------------------------------------------
 
 @pytest.mark.parametrize("name, count", [("2ds", 100), ("3dc7", 100)])

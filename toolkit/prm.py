@@ -24,8 +24,11 @@
    certificates (``local_planner.certify_edges``: the same answer as checking every
    point, but a stretch whose ends are far enough from every obstacle needs no check),
    so the 10x finer level costs less than twice the first (`toolkit bench`, 3DC-9: 0.032 s
-   against 0.019 s for 300 segments; 0.36 s checking every point). A returned path is
-   always valid under the exact checker at both resolutions; otherwise ``success`` is False.
+   against 0.019 s for 300 segments; 0.36 s checking every point). When repairs leave
+   start and goal in different components, the planner bridges them again (the closest
+   pairs not yet tried: the roadmap remembers rejected pairs) up to ``rebridge`` times
+   before it samples another round. A returned path is always valid under the exact
+   checker at both resolutions; otherwise ``success`` is False.
 
 "With" and "without prediction" differ in the ``checker`` argument only. With
 prediction, edges are decided in one of two ways (``PRMOptions.screen_edges``):
@@ -82,6 +85,7 @@ class PRMOptions:
     resolution: float | None = None  # local planner step bound; None: default_resolution(robot)
     verify_refinement: int = 10  # the returned path's edges are checked exactly at resolution / this
     max_rounds: int = 20  # sampling rounds before reporting failure
+    rebridge: int = 3  # when no path survives verification, bridge the split roadmap up to this often before sampling
     auxiliary: str = "confirmed"  # with prediction, rounds after the first: see AUXILIARY
     exact_every: int = 4  # auxiliary "confirmed": rounds 1 + exact_every, 1 + 2 * exact_every, ... sample exactly
     screen_edges: bool = True  # with prediction: learned edge screening (lazy PRM); False: the paper's exact edges
@@ -96,6 +100,8 @@ class PRMOptions:
             value = getattr(self, name)
             if int(value) != value or value < 1:
                 raise ValueError(f"PRMOptions.{name} must be a positive integer, got {value!r}")
+        if int(self.rebridge) != self.rebridge or self.rebridge < 0:
+            raise ValueError(f"PRMOptions.rebridge must be a non-negative integer, got {self.rebridge!r}")
         for name in ("resolution", "screen_spacing", "certify_spacing"):
             value = getattr(self, name)
             if value is not None and not (np.isfinite(value) and value > 0):
@@ -145,6 +151,14 @@ def plan(exact: CollisionChecker, start, goal, *, sampler: str = "BS", checker: 
         new = new[:0]
         with planner.timed("query_s", "verify_checks"):
             path = planner.verified_path()
+        bridges = 0
+        while path is None and bridges < options.rebridge:  # repairs split the roadmap: bridge it again
+            bridges += 1
+            with planner.timed("connection_s", "edge_checks"):
+                if not planner.bridge():
+                    break
+            with planner.timed("query_s", "verify_checks"):
+                path = planner.verified_path()
     stats = planner.finish(began)
     roadmap = planner.roadmap
     path_q = roadmap.nodes[path] if path is not None else np.zeros((0, robot.dof))
@@ -200,14 +214,20 @@ class _Planner:
 
     def connect(self, new: np.ndarray) -> None:
         """Edges from the new nodes to their k nearest; then, while start and goal lie apart, bridges from their components."""
-        roadmap, k = self.roadmap, self.options.k
-        self.decide(roadmap.candidate_edges(new, k))
+        self.decide(self.roadmap.candidate_edges(new, self.options.k))
+        self.bridge()
+
+    def bridge(self) -> int:
+        """While start and goal lie apart, try the closest untried pairs from each one's component; edges added."""
+        roadmap, before = self.roadmap, len(self.roadmap.edges)
         for end in (START, GOAL):
             if not roadmap.component(START)[GOAL]:
-                self.decide(roadmap.bridge_edges(end, k))
+                self.decide(roadmap.bridge_edges(end, self.options.k))
+        return len(roadmap.edges) - before
 
     def decide(self, pairs: np.ndarray) -> None:
-        """Add the candidate edges ``pairs (C, 2)`` that screening (with prediction) or the exact check accepts."""
+        """Add the candidate edges ``pairs (C, 2)`` that screening (with prediction) or the exact check accepts;
+        remember the others as rejected."""
         roadmap, options = self.roadmap, self.options
         Q0, Q1 = roadmap.nodes[pairs[:, 0]], roadmap.nodes[pairs[:, 1]]
         length = roadmap.distance(Q0, Q1)  # (C,)
@@ -219,6 +239,7 @@ class _Planner:
         else:
             keep = check_edges(self.exact, Q0, Q1, self.resolution)
             roadmap.add_edges(pairs[keep], length[keep], checked_at=self.resolution)
+        roadmap.reject(pairs[~keep])
 
     def verified_path(self) -> np.ndarray | None:
         """Node indices of a start-goal path the exact checker confirms, repairing the roadmap; None if none."""

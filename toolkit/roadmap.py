@@ -8,8 +8,10 @@ periodic box along the angle axes (``boxsize``), so it is exact under that metri
 Every node remembers whether the exact checker has confirmed it (``node_verified``),
 every edge the finest resolution at which it did (``edge_checked_at``, ``inf``: not
 yet) and, when screened by prediction, where along it prediction saw it fail
-(``edge_suspect``, a fraction from ``edges[:, 0]``; NaN: nowhere); the planner (:mod:`toolkit.prm`) confirms a path's nodes and edges before it
-returns it.
+(``edge_suspect``, a fraction from ``edges[:, 0]``; NaN: nowhere); the planner
+(:mod:`toolkit.prm`) confirms a path's nodes and edges before it returns it. Pairs that
+were decided against (``reject``, and every removed edge) are remembered in ``rejected``
+and never offered again, so bridging a split roadmap tries new pairs each time.
 """
 
 from __future__ import annotations
@@ -24,7 +26,7 @@ from .robots import BoxRobot
 
 class Roadmap:
     """``nodes (V, dof)``, ``edges (E, 2)`` int (i < j), ``edge_cost (E,)``, ``node_verified (V,)``,
-    ``edge_checked_at (E,)``, ``edge_suspect (E,)``."""
+    ``edge_checked_at (E,)``, ``edge_suspect (E,)``, ``rejected (R, 2)`` int (i < j)."""
 
     def __init__(self, robot: BoxRobot):
         self.robot = robot
@@ -34,6 +36,7 @@ class Roadmap:
         self.edge_cost = np.zeros(0)
         self.edge_checked_at = np.zeros(0)  # the finest resolution the exact checker confirmed each edge at
         self.edge_suspect = np.zeros(0)  # where along each edge screening predicted a collision (NaN: nowhere)
+        self.rejected = np.zeros((0, 2), dtype=int)  # pairs decided against: never candidates again
         self._box = np.where(robot.wraps, 2 * np.pi * robot.motion_weights, 0.0)  # (dof,) period per axis, 0: none
 
     def __repr__(self) -> str:
@@ -69,21 +72,29 @@ class Roadmap:
         return self._new_pairs(pairs)
 
     def bridge_edges(self, node: int, k: int) -> np.ndarray:
-        """``(C, 2)``: the ``k`` closest pairs joining ``node``'s connected component to the rest of the roadmap.
+        """``(C, 2)``: up to ``k`` pairs joining ``node``'s connected component to the rest of the roadmap, closest first.
 
         k-nearest graphs of clustered samples (OB, G, BT gather around obstacles) fall
         apart into one component per cluster; trying the closest pairs between the
         query's component and the others joins them (a connected-component
         connection strategy, as in Morales et al.'s PRM toolkit, restricted to the query).
+        Each of ``k`` members of the component offers its nearest outside node among
+        the pairs not yet tried (of its ``k`` nearest), so a second call after the first
+        pairs were rejected tries the next ones.
         """
         inside = self.component(node)
         if inside.all():
             return np.zeros((0, 2), dtype=int)
-        scaled, outside = self._scaled(), np.flatnonzero(~inside)
-        members = np.flatnonzero(inside)
-        gap, nearest = cKDTree(scaled[outside], boxsize=self._box).query(scaled[members], k=1)  # (M,) each
-        best = np.argsort(gap)[:k]
-        return self._new_pairs(np.stack([members[best], outside[nearest[best]]], axis=1))
+        scaled, outside, members = self._scaled(), np.flatnonzero(~inside), np.flatnonzero(inside)
+        count = min(k, len(outside))
+        gap, nearest = cKDTree(scaled[outside], boxsize=self._box).query(scaled[members], k=count)
+        gap, nearest = gap.reshape(len(members), count), outside[nearest.reshape(len(members), count)]  # (M, count)
+        pairs = np.stack(np.broadcast_arrays(members[:, None], nearest), axis=-1)  # (M, count, 2)
+        gap[~self._untried(pairs.reshape(-1, 2)).reshape(gap.shape)] = np.inf
+        first = gap.argmin(axis=1)  # (M,) each member's nearest untried pair (gaps ascend along a row)
+        gap, pairs = gap[np.arange(len(members)), first], pairs[np.arange(len(members)), first]  # (M,), (M, 2)
+        best = np.argsort(gap, kind="stable")[:k]
+        return np.sort(pairs[best[np.isfinite(gap[best])]], axis=1)
 
     def component(self, node: int) -> np.ndarray:
         """``(V,)`` bool: the nodes connected to ``node``."""
@@ -93,10 +104,19 @@ class Roadmap:
         return label == label[node]
 
     def _new_pairs(self, pairs: np.ndarray) -> np.ndarray:
-        """``pairs (C, 2)`` as unique ``i < j`` pairs, without self-loops and edges already present."""
+        """``pairs (C, 2)`` as unique ``i < j`` pairs, without self-loops, edges already present and rejected pairs."""
         pairs = np.unique(np.sort(pairs[pairs[:, 0] != pairs[:, 1]], axis=1), axis=0).reshape(-1, 2)
+        return pairs[self._untried(pairs)]
+
+    def _untried(self, pairs: np.ndarray) -> np.ndarray:
+        """``(C,)`` bool: the pairs ``(C, 2)`` (either order) that are neither an edge nor rejected."""
         v = len(self.nodes)
-        return pairs[~np.isin(pairs @ [v, 1], self.edges @ [v, 1])]
+        tried = np.concatenate([self.edges, self.rejected]) @ [v, 1]
+        return ~np.isin(np.sort(pairs, axis=1) @ [v, 1], tried)
+
+    def reject(self, pairs: np.ndarray) -> None:
+        """Remember pairs ``(C, 2)`` (i < j) decided against, so that no candidate offers them again."""
+        self.rejected = np.concatenate([self.rejected, pairs])
 
     def add_edges(self, pairs: np.ndarray, cost: np.ndarray, checked_at: float = np.inf,
                   suspect: np.ndarray | None = None) -> None:
@@ -108,19 +128,25 @@ class Roadmap:
         self.edge_suspect = np.concatenate([self.edge_suspect, np.full(len(pairs), np.nan) if suspect is None else suspect])
 
     def remove_edges(self, which: np.ndarray) -> None:
-        """Drop the edges selected by ``which`` (indices or a boolean mask)."""
+        """Drop the edges selected by ``which`` (indices or a boolean mask) and remember them as rejected."""
         keep = np.ones(len(self.edges), dtype=bool)
         keep[which] = False
+        self.reject(self.edges[~keep])
+        self._keep_edges(keep)
+
+    def _keep_edges(self, keep: np.ndarray) -> None:
         self.edges, self.edge_cost = self.edges[keep], self.edge_cost[keep]
         self.edge_checked_at, self.edge_suspect = self.edge_checked_at[keep], self.edge_suspect[keep]
 
     def remove_nodes(self, which: np.ndarray) -> None:
-        """Drop nodes ``which`` (indices) and their edges; later nodes shift down (earlier ones keep their index)."""
+        """Drop nodes ``which`` (indices), their edges and rejected pairs; later nodes shift down (earlier ones keep
+        their index)."""
         keep = np.ones(len(self.nodes), dtype=bool)
         keep[which] = False
-        self.remove_edges(~keep[self.edges].all(axis=1))
+        self._keep_edges(keep[self.edges].all(axis=1))
+        self.rejected = self.rejected[keep[self.rejected].all(axis=1)]
         new_index = np.cumsum(keep) - 1  # (V,) old index -> new index for kept nodes
-        self.edges = new_index[self.edges]
+        self.edges, self.rejected = new_index[self.edges], new_index[self.rejected]
         self.nodes, self.node_verified = self.nodes[keep], self.node_verified[keep]
 
     def shortest_path(self, source: int, target: int) -> np.ndarray | None:
