@@ -182,7 +182,9 @@ def test_bad_input_gives_clear_errors():
                        (dict(screen_reject=1.5), "screen_reject must lie in"),
                        (dict(screen_penalty=-1), "screen_penalty must be non-negative"),
                        (dict(auxiliary="sometimes"), "auxiliary must be one of"),
-                       (dict(exact_every=0), "exact_every must be a positive integer")]:
+                       (dict(exact_every=0), "exact_every must be a positive integer"),
+                       (dict(rebridge=-1), "rebridge must be a non-negative integer"),
+                       (dict(rebridge=1.5), "rebridge must be")]:
         with pytest.raises(ValueError, match=f"PRMOptions.{match}"):
             PRMOptions(**bad)
 
