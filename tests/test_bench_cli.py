@@ -60,6 +60,32 @@ def test_bench_with_a_checkpoint_times_prm_with_and_without_it(capsys, checkpoin
         assert 0.0 <= row["success_with"] <= 1.0 and 0.0 <= row["success_without"] <= 1.0
 
 
+def test_bench_plans_with_chosen_samplers_and_planner_options(capsys, checkpoint_2ds):
+    args = ["bench", "--scenario", "2ds", "--checkpoint", str(checkpoint_2ds), "--workspaces", "1", "--pairs", "2",
+            "--samplers", "BT", "--json"]
+    runs = {}
+    for max_rounds in (1, 20):
+        assert cli.main(args + ["--option", f"max_rounds={max_rounds}", "--option", "auxiliary=exact"]) == 0
+        result = json.loads(capsys.readouterr().out)
+        assert result["planning_options"] == {"max_rounds": max_rounds, "auxiliary": "exact"}
+        runs[max_rounds] = result["planning"]["BT"]
+    assert set(runs[1]) >= {"sampling_ratio_median", "total_ratio_median", "rounds_with", "repairs_without"}
+    assert runs[1]["rounds_with"] == runs[1]["rounds_without"] == 1  # the option reached both modes
+    assert runs[20]["rounds_without"] >= 1 and runs[20]["success_without"] >= runs[1]["success_without"]
+
+
+def test_bench_names_a_bad_planner_option_or_sampler(capsys, checkpoint_2ds):
+    args = ["bench", "--scenario", "2ds", "--checkpoint", str(checkpoint_2ds), "--workspaces", "1", "--pairs", "1"]
+    assert cli.main(args + ["--option", "rebrige=0"]) == 2
+    assert "unknown planner option(s) ['rebrige']" in capsys.readouterr().err
+    assert cli.main(args + ["--option", "rebridge=-1"]) == 2
+    assert "PRMOptions.rebridge must be a non-negative integer" in capsys.readouterr().err
+    for bad, message in (("--option=rebridge", "expected NAME=VALUE"), ("--samplers=BS,RRT", "unknown sampler(s) ['RRT']")):
+        with pytest.raises(SystemExit):
+            cli.main(args + [bad])
+        assert message in capsys.readouterr().err
+
+
 def test_bench_refuses_a_checkpoint_of_another_scenario(capsys, checkpoint_2ds):
     assert cli.main(["bench", "--scenario", "3dc7", "--checkpoint", str(checkpoint_2ds), "--json"]) == 2
     assert "trained for scenario '2ds', not '3dc7'" in capsys.readouterr().err

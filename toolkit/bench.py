@@ -9,6 +9,7 @@ queries with each sampler, with and without that model, and prints the time rati
 
 from __future__ import annotations
 
+import dataclasses
 import time
 
 import numpy as np
@@ -99,12 +100,25 @@ def edge_checks(scenario: Scenario, n_segments: int = 300, seed: int = 0, repeat
 
 
 def planning_ratios(scenario: Scenario, models: TrainedModels, n_workspaces: int = 2, per_workspace: int = 2,
-                    seed: int = 0) -> dict[str, dict]:
-    """Per sampler, PRM on the first queries of the paper's set, with ``models`` and without:
-    ``{"sampling_ratio", "total_ratio"}`` (with / without, mean times) and both success rates."""
+                    seed: int = 0, samplers=("BS", "OB", "G", "BT"), overrides: dict | None = None) -> dict[str, dict]:
+    """Per sampler, PRM on the first queries of the paper's set, with ``models`` and without, in turns:
+    ``{"sampling_ratio", "total_ratio"}`` (with / without, mean times), the same of the medians, both
+    success rates and the sampling rounds and repairs a query each mode needed (means).
+
+    ``overrides`` (PRMOptions fields) apply to both modes, over the scenario's settings and the
+    preset's: the same queries with one option changed measure what that option does.
+    """
+    fields = {f.name for f in dataclasses.fields(PRMOptions)}
+    if unknown := sorted(set(overrides or {}) - fields):
+        raise ValueError(f"unknown planner option(s) {unknown}; PRMOptions has {sorted(fields)}")
+    options = queries.default_options(scenario, None, **{**models.preset.planner_options(), **(overrides or {})})
     per_workspace = min(per_workspace, scenario.queries_per_workspace)
     query_set = queries.make_queries(scenario, seed, n_workspaces, per_workspace)
-    table = queries.compare_prediction(scenario, query_set, lambda ws: LearnedChecker(ws, models), seed=seed)
+    table = queries.compare_prediction(scenario, query_set, lambda ws: LearnedChecker(ws, models), samplers,
+                                       options, seed)
     return {sampler: {"sampling_ratio": row["sampling_ratio"], "total_ratio": row["total_ratio"],
-                      "success_without": row["without"]["success_rate"], "success_with": row["with"]["success_rate"]}
+                      "sampling_ratio_median": row["with"]["sampling_s_median"] / row["without"]["sampling_s_median"],
+                      "total_ratio_median": row["with"]["total_s_median"] / row["without"]["total_s_median"],
+                      "success_without": row["without"]["success_rate"], "success_with": row["with"]["success_rate"],
+                      **{f"{key}_{mode}": row[mode][key] for key in ("rounds", "repairs") for mode in ("without", "with")}}
             for sampler, row in table.items()}

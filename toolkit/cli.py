@@ -24,6 +24,25 @@ def _positive_int(text: str) -> int:
     return value
 
 
+def _samplers(text: str) -> tuple[str, ...]:
+    """An argparse type: comma-separated sampler names."""
+    names = tuple(text.split(","))
+    if unknown := [n for n in names if n not in ("BS", "OB", "G", "BT")]:
+        raise argparse.ArgumentTypeError(f"unknown sampler(s) {unknown}; choose from BS, OB, G, BT")
+    return names
+
+
+def _planner_option(text: str) -> tuple[str, object]:
+    """An argparse type: ``NAME=VALUE``, the value read as JSON (``rebridge=0``, ``screen_edges=false``)."""
+    name, sep, value = text.partition("=")
+    if not sep or not name:
+        raise argparse.ArgumentTypeError(f"expected NAME=VALUE, got {text!r}")
+    try:
+        return name, json.loads(value)
+    except json.JSONDecodeError:
+        return name, value  # a string, e.g. auxiliary=exact
+
+
 def cmd_bench(args: argparse.Namespace) -> int:
     from . import bench, checkpoints
 
@@ -36,7 +55,9 @@ def cmd_bench(args: argparse.Namespace) -> int:
     result["ratio"] = result["learned_cfg_per_s"] / result["exact_cfg_per_s"]
     result["edges"] = bench.edge_checks(scenario, seed=args.seed)
     if models is not None:
-        result["planning"] = bench.planning_ratios(scenario, models, args.workspaces, args.pairs, seed=args.seed)
+        result["planning"] = bench.planning_ratios(scenario, models, args.workspaces, args.pairs, args.seed,
+                                                   args.samplers, dict(args.option))
+        result["planning_options"] = dict(args.option)
     print(json.dumps(result) if args.json else "\n".join(f"{k}: {v}" for k, v in result.items()))
     return 0
 
@@ -127,6 +148,10 @@ def build_parser() -> argparse.ArgumentParser:
                                             "`toolkit reproduce`): also time PRM with and without it")
     bench.add_argument("--workspaces", type=int, default=2, help="with --checkpoint: query workspaces to plan in")
     bench.add_argument("--pairs", type=int, default=2, help="with --checkpoint: start/goal pairs per workspace")
+    bench.add_argument("--samplers", type=_samplers, default=("BS", "OB", "G", "BT"),
+                       help="with --checkpoint: comma-separated samplers to plan with (default: all four)")
+    bench.add_argument("--option", type=_planner_option, action="append", default=[], metavar="NAME=VALUE",
+                       help="with --checkpoint: a PRMOptions field for both modes, e.g. rebridge=0 (repeatable)")
     bench.set_defaults(func=cmd_bench)
 
     # -- train (learning issue) --

@@ -177,7 +177,8 @@ def summarize(records: list[dict]) -> dict:
         return np.array([r[key] for r in records], dtype=float)
 
     summary = {"n_queries": len(records)}
-    for key in ("sampling_s", "connection_s", "query_s", "total_s", "encode_s", "exact_checks", "predicted_checks"):
+    for key in ("sampling_s", "connection_s", "query_s", "total_s", "encode_s", "exact_checks", "predicted_checks",
+                "rounds", "repairs"):
         summary[key] = float(values(key).mean()) if records else 0.0
         summary[key + "_std"] = float(values(key).std()) if records else 0.0
     for key in ("sampling_s", "total_s"):  # robust to the odd slow query on a noisy machine
