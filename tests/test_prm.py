@@ -441,6 +441,7 @@ def test_the_planner_decides_no_pair_twice(monkeypatch):
             assert sum(map(len, decided)) == len(set().union(*decided))
             stats.append(result.stats)
         rounds.append(sum(s["rounds"] for s in stats))
+        assert (sum(s["rebridges"] for s in stats) > 0) == (rebridge > 0)
     assert rounds[1] < rounds[0]  # bridging again saved sampling rounds
 
 

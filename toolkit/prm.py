@@ -154,6 +154,7 @@ def plan(exact: CollisionChecker, start, goal, *, sampler: str = "BS", checker: 
         bridges = 0
         while path is None and bridges < options.rebridge:  # repairs split the roadmap: bridge it again
             bridges += 1
+            planner.stats["rebridges"] += 1
             with planner.timed("connection_s", "edge_checks"):
                 if not planner.bridge():
                     break
@@ -185,7 +186,7 @@ class _Planner:
         # edges already were), then finer
         self.verify_resolutions = (self.resolution, self.resolution / options.verify_refinement)
         self.roadmap = Roadmap(exact.robot)
-        self.stats = {"rounds": 0, "repairs": 0, "removed_nodes": 0, "removed_edges": 0,
+        self.stats = {"rounds": 0, "repairs": 0, "rebridges": 0, "removed_nodes": 0, "removed_edges": 0,
                       "sampling_s": 0.0, "connection_s": 0.0, "query_s": 0.0,
                       "node_checks": 0, "edge_checks": 0, "verify_checks": 0}
         self._start_counts, self._start_bounded = self._counts(), exact.n_bounded
