@@ -24,10 +24,11 @@
    certificates (``local_planner.certify_edges``: the same answer as checking every
    point, but a stretch whose ends are far enough from every obstacle needs no check),
    so the 10x finer level costs less than twice the first (`toolkit bench`, 3DC-9: 0.032 s
-   against 0.019 s for 300 segments; 0.36 s checking every point). When repairs leave
-   start and goal in different components, the planner bridges them again (the closest
-   pairs not yet tried: the roadmap remembers rejected pairs) up to ``rebridge`` times
-   before it samples another round. A returned path is always valid under the exact
+   against 0.019 s for 300 segments; 0.36 s checking every point). While start and goal
+   still lie in different components (repairs split a lazy roadmap; or the bridges
+   failed), the planner bridges them again with the closest pairs not yet tried (the
+   roadmap remembers rejected pairs), up to ``rebridge`` times, before it samples
+   another round. A returned path is always valid under the exact
    checker at both resolutions; otherwise ``success`` is False.
 
 "With" and "without prediction" differ in the ``checker`` argument only. With
@@ -85,7 +86,7 @@ class PRMOptions:
     resolution: float | None = None  # local planner step bound; None: default_resolution(robot)
     verify_refinement: int = 10  # the returned path's edges are checked exactly at resolution / this
     max_rounds: int = 20  # sampling rounds before reporting failure
-    rebridge: int = 3  # when no path survives verification, bridge the split roadmap up to this often before sampling
+    rebridge: int = 3  # when no path survives verification, bridge again up to this often before sampling again
     auxiliary: str = "confirmed"  # with prediction, rounds after the first: see AUXILIARY
     exact_every: int = 4  # auxiliary "confirmed": rounds 1 + exact_every, 1 + 2 * exact_every, ... sample exactly
     screen_edges: bool = True  # with prediction: learned edge screening (lazy PRM); False: the paper's exact edges
@@ -152,7 +153,7 @@ def plan(exact: CollisionChecker, start, goal, *, sampler: str = "BS", checker: 
         with planner.timed("query_s", "verify_checks"):
             path = planner.verified_path()
         bridges = 0
-        while path is None and bridges < options.rebridge:  # repairs split the roadmap: bridge it again
+        while path is None and bridges < options.rebridge:  # still apart (repairs split it): the next closest pairs
             bridges += 1
             planner.stats["rebridges"] += 1
             with planner.timed("connection_s", "edge_checks"):
