@@ -30,8 +30,9 @@
    roadmap remembers rejected pairs), up to ``rebridge`` times, before it samples
    another round (3DC-9, strong model, 100 queries, ``toolkit bench --option
    rebridge=0`` against the default: sampling rounds a query with prediction OB 1.36 ->
-   1.06, BT 1.29 -> 1.13; sampling time with / without OB 0.20 -> 0.13, BT 0.29 -> 0.25). A returned path is always valid under the exact
-   checker at both resolutions; otherwise ``success`` is False.
+   1.06, BT 1.29 -> 1.13; sampling time with / without OB 0.20 -> 0.13, BT 0.29 -> 0.25).
+   A returned path is always valid under the exact checker at both resolutions;
+   otherwise ``success`` is False.
 
 "With" and "without prediction" differ in the ``checker`` argument only. With
 prediction, edges are decided in one of two ways (``PRMOptions.screen_edges``):
