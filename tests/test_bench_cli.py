@@ -63,15 +63,13 @@ def test_bench_with_a_checkpoint_times_prm_with_and_without_it(capsys, checkpoin
 def test_bench_plans_with_chosen_samplers_and_planner_options(capsys, checkpoint_2ds):
     args = ["bench", "--scenario", "2ds", "--checkpoint", str(checkpoint_2ds), "--workspaces", "1", "--pairs", "2",
             "--samplers", "BT", "--json"]
-    runs = {}
-    for max_rounds in (1, 20):
-        assert cli.main(args + ["--option", f"max_rounds={max_rounds}", "--option", "auxiliary=exact"]) == 0
-        result = json.loads(capsys.readouterr().out)
-        assert result["planning_options"] == {"max_rounds": max_rounds, "auxiliary": "exact"}
-        runs[max_rounds] = result["planning"]["BT"]
-    assert set(runs[1]) >= {"sampling_ratio_median", "total_ratio_median", "rounds_with", "repairs_without"}
-    assert runs[1]["rounds_with"] == runs[1]["rounds_without"] == 1  # the option reached both modes
-    assert runs[20]["rounds_without"] >= 1 and runs[20]["success_without"] >= runs[1]["success_without"]
+    assert cli.main(args + ["--option", "max_rounds=1", "--option", "auxiliary=exact"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert result["planning_options"] == {"max_rounds": 1, "auxiliary": "exact"}
+    row = result["planning"]["BT"]
+    assert set(result["planning"]) == {"BT"}
+    assert set(row) >= {"sampling_ratio_median", "total_ratio_median", "rounds_with", "repairs_without"}
+    assert row["rounds_with"] == row["rounds_without"] == 1  # the option reached both modes (the default: 20)
 
 
 def test_bench_names_a_bad_planner_option_or_sampler(capsys, checkpoint_2ds):
