@@ -3,7 +3,7 @@ VENV ?= .venv
 PY := $(VENV)/bin/python
 OUT ?= results/2ds-paper
 
-.PHONY: setup browser demo test clean
+.PHONY: setup browser demo test lab clean
 
 setup: $(VENV)/.installed
 
@@ -24,6 +24,10 @@ demo: setup
 
 test: setup browser
 	$(PY) -m pytest -q
+
+# JupyterLab on the notebooks, for a student: open the URL it prints, start with 01.
+lab: setup
+	$(VENV)/bin/jupyter lab --notebook-dir=notebooks --ip=127.0.0.1
 
 clean:
 	rm -rf $(VENV) results .pytest_cache

@@ -13,7 +13,7 @@ matplotlib.use("Agg", force=False)
 import numpy as np
 from matplotlib.figure import Figure
 
-from .paper_numbers import SAMPLERS
+from ..paper_numbers import SAMPLERS
 
 MODES = ("without", "with")
 

@@ -1,0 +1,66 @@
+"""What the notebooks share: quick mode, read in one place, and trained models cached on disk.
+
+Quick mode (the environment variable ``TOOLKIT_QUICK=1``) shrinks sizes so that a
+notebook runs top to bottom in about a minute (the test suite runs every notebook
+so); it never changes which code runs. A notebook asks for its sizes with
+:func:`sized`::
+
+    from toolkit.notebook import sized, trained_models
+    n_workspaces = sized(full=200, quick=20)
+    models = trained_models("2ds", "strong")   # trains once (about 30 s), then loads in a second
+
+Trained models live in ``$TOOLKIT_CACHE`` (default ``~/.cache/sample-collision-toolkit``),
+one checkpoint folder per scenario, preset, seed and size, written whole or not at all.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import uuid
+from pathlib import Path
+from typing import TypeVar
+
+from . import checkpoints, training
+from .training import TrainedModels
+
+QUICK_ENV = "TOOLKIT_QUICK"
+CACHE_ENV = "TOOLKIT_CACHE"
+T = TypeVar("T")
+
+
+def is_quick() -> bool:
+    """True when ``TOOLKIT_QUICK`` is set to ``1`` (or ``true``/``yes``): the notebooks' small sizes."""
+    return os.environ.get(QUICK_ENV, "").strip().lower() in ("1", "true", "yes")
+
+
+def sized(full: T, quick: T) -> T:
+    """``quick`` in quick mode, otherwise ``full``: the one place a notebook's sizes change."""
+    return quick if is_quick() else full
+
+
+def cache_dir() -> Path:
+    """Where trained models are kept: ``$TOOLKIT_CACHE`` or ``~/.cache/sample-collision-toolkit``."""
+    return Path(os.environ.get(CACHE_ENV) or Path.home() / ".cache" / "sample-collision-toolkit")
+
+
+def trained_models(scenario: str, preset: str, *, seed: int = 0, progress: bool = True) -> TrainedModels:
+    """The CAE and MLP of ``preset`` for ``scenario`` (quick-sized in quick mode), trained once and then loaded.
+
+    The first call trains as ``toolkit train --scenario S --preset P`` does (2DS: under a
+    minute; 3DC: about two minutes on two cores) and saves a checkpoint folder in
+    :func:`cache_dir`; later calls, in any notebook, load it in about a second.
+    """
+    folder = cache_dir() / f"{scenario}-{preset}-seed{seed}{'-quick' if is_quick() else ''}"
+    if folder.exists():
+        return checkpoints.load_models(folder, scenario)
+    splits = training.preset_splits(scenario, preset, seed, quick=is_quick(), progress=progress)
+    models = training.train_models(scenario, preset, splits, seed, progress=progress, quick=is_quick(), device="cpu")
+    scores = training.evaluate(models, splits)
+    tmp = folder.with_name(f"{folder.name}.{uuid.uuid4().hex}.tmp")  # another notebook may be training the same
+    checkpoints.save_checkpoint(models, tmp, evaluation=scores)
+    try:
+        tmp.rename(folder)  # the folder appears whole or not at all
+    except OSError:  # another process finished first: keep its folder
+        shutil.rmtree(tmp, ignore_errors=True)
+    return models

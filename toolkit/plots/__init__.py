@@ -1,0 +1,18 @@
+"""Every figure of the toolkit: functions that return a matplotlib ``Figure``.
+
+Nothing here calls ``show()`` and everything renders headless (Agg): a notebook
+displays the returned figure, a script saves it (``fig.savefig(path)``). One module
+per topic, in the order of the notebooks:
+
+- :mod:`toolkit.plots.cspace` — workspaces, robots, configuration-space obstacles (notebook 01);
+- :mod:`toolkit.plots.cae` — the contractive autoencoder's reconstructions and latents (notebook 02);
+- :mod:`toolkit.plots.classifier` — the collision MLP's decision boundaries and thresholds (notebook 03);
+- :mod:`toolkit.plots.planning` — samplers, roadmaps and planning times (notebook 04);
+- :mod:`toolkit.plots.reproduction` — the reproduction's figures (paper Figures 5-7, ``toolkit reproduce``).
+
+>>> from toolkit.plots import reproduction  # doctest: +SKIP
+"""
+
+from .reproduction import cae_reconstruction, planning_times, threshold_sweep
+
+__all__ = ["cae_reconstruction", "planning_times", "threshold_sweep"]
