@@ -6,10 +6,6 @@ saves or displays them.
 
 from __future__ import annotations
 
-import matplotlib
-
-matplotlib.use("Agg", force=False)
-
 import numpy as np
 from matplotlib.figure import Figure
 
