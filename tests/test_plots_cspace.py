@@ -1,0 +1,186 @@
+"""Notebook 01's figures draw what the geometry says: blocks, grids, link boxes and C-obstacles.
+
+The C-space images are held against checkers other than the one that drew them
+(python-fcl against the numpy point-robot check, the separating-axis reference
+against python-fcl), so a figure that drew the wrong cells would fail.
+"""
+
+import numpy as np
+import pytest
+from matplotlib.patches import Polygon, Rectangle
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+
+from toolkit import robots, scenarios
+from toolkit.collision import ExactChecker, PointRobotChecker, SeparatingAxisChecker
+from toolkit.plots import cspace
+from toolkit.workspace import Workspace
+
+
+@pytest.fixture
+def square_world():
+    """31x31 with two blocks: [10, 12]^2 and [20, 25] x [3, 9]."""
+    return Workspace(np.zeros(2), np.array([31.0, 31.0]),
+                     np.array([[[10, 10], [12, 12]], [[20, 3], [25, 9]]], dtype=float), family="2ds")
+
+
+@pytest.fixture
+def clutter():
+    return scenarios.get("3dc7").make_workspace(np.random.default_rng(3))
+
+
+def _patches(ax, gid):
+    return [p for p in ax.patches if p.get_gid() == gid]
+
+
+def _image(fig, panel=0):
+    return np.asarray(fig.axes[panel].images[0].get_array())
+
+
+# -- workspaces and grids -------------------------------------------------------------
+
+def test_workspace_figure_2d_draws_one_rectangle_per_block(square_world):
+    fig = cspace.workspace_figure(square_world)
+    rects = _patches(fig.axes[0], "block")
+    assert len(rects) == len(square_world.boxes)
+    for rect, (lo, hi) in zip(rects, square_world.boxes):
+        assert isinstance(rect, Rectangle)
+        np.testing.assert_allclose(rect.get_xy(), lo)
+        np.testing.assert_allclose([rect.get_width(), rect.get_height()], hi - lo)
+    assert fig.axes[0].get_xlim() == (0.0, 31.0)
+
+
+def test_workspace_figure_3d_draws_each_block_at_its_corners():
+    ws = scenarios.get("3do").make_workspace(np.random.default_rng(1))
+    fig = cspace.workspace_figure(ws)
+    blocks = [c for c in fig.axes[0].collections if c.get_gid() == "block"]
+    assert len(blocks) == len(ws.boxes) and all(isinstance(b, Poly3DCollection) for b in blocks)
+    for block, (lo, hi) in zip(blocks, ws.boxes):
+        corners = block._faces.reshape(-1, 3)  # (6 faces * 4, 3) vertices as given (matplotlib keeps no public getter)
+        np.testing.assert_allclose(corners.min(axis=0), lo)
+        np.testing.assert_allclose(corners.max(axis=0), hi)
+    legend = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+    assert legend == sorted(set(ws.labels))
+
+
+def test_occupancy_figure_2d_is_dark_exactly_on_cells_whose_centre_is_in_a_block(square_world):
+    image = _image(cspace.occupancy_figure(square_world))  # (y, x)
+    centres = square_world.grid_points()  # (31, 31, 2), [x, y]
+    expected = np.where(square_world.contains_points(centres), 1.0, -1.0).T
+    np.testing.assert_array_equal(image, expected)
+    assert image.sum() == 31 * 31 - 2 * (31 * 31 - 2 * 2 - 5 * 6)  # 4 + 30 cells occupied
+
+
+def test_occupancy_figure_3d_draws_one_layer_per_z(clutter):
+    fig = cspace.occupancy_figure(clutter)
+    images = [ax.images[0] for ax in fig.axes]
+    assert len(images) == 11
+    centres = clutter.grid_points()  # (11, 11, 11, 3)
+    for z, image in enumerate(images):
+        expected = np.where(clutter.contains_points(centres[:, :, z]), 1.0, -1.0).T
+        np.testing.assert_array_equal(np.asarray(image.get_array()), expected)
+    assert fig.axes[4].get_title() == "layer z = 4.5"
+    chosen = cspace.occupancy_figure(clutter, layers=[2, 7])
+    assert [ax.get_title() for ax in chosen.axes] == ["layer z = 2.5", "layer z = 7.5"]
+
+
+# -- robots ----------------------------------------------------------------------------
+
+def test_robot_figure_draws_the_point_robot_square_at_q(square_world):
+    robot = robots.point_robot()
+    fig = cspace.robot_figure(robot, [[5.0, 6.0], [9.9, 11.0]], square_world, valid=[True, False])
+    links = _patches(fig.axes[0], "link")
+    assert len(links) == 2 and all(isinstance(p, Polygon) for p in links)
+    np.testing.assert_allclose(links[0].get_xy().min(axis=0), [4.75, 5.75])
+    np.testing.assert_allclose(links[0].get_xy().max(axis=0), [5.25, 6.25])
+    assert links[0].get_facecolor()[:3] != links[1].get_facecolor()[:3]  # green vs red
+    assert len(_patches(fig.axes[0], "block")) == 1  # the block at [10, 12]^2; [20, 25] x [3, 9] is far
+
+
+def test_robot_figure_projects_a_chain_by_forward_kinematics():
+    robot = robots.box_chain(1)  # small link 0.1 long, then big link 0.4 long, along x at zero
+    q = np.array([5.0, 5.0, 5.0, 0.0, 0.0, 0.0, np.pi / 2])  # the joint turns the big link to +y
+    fig = cspace.robot_figure(robot, q, views=("xy", "xz", "3d"))
+    xy = np.concatenate([p.get_xy() for p in _patches(fig.axes[0], "link")])
+    np.testing.assert_allclose(xy.min(axis=0), [5.0, 4.95], atol=1e-9)
+    np.testing.assert_allclose(xy.max(axis=0), [5.15, 5.4], atol=1e-9)
+    xz = np.concatenate([p.get_xy() for p in _patches(fig.axes[1], "link")])
+    np.testing.assert_allclose([xz[:, 1].min(), xz[:, 1].max()], [4.95, 5.05], atol=1e-9)
+    assert len([c for c in fig.axes[2].collections if c.get_gid() == "link"]) == robot.n_links
+
+
+# -- configuration space ---------------------------------------------------------------
+
+def test_slice_configs_varies_two_dof_and_fixes_the_rest():
+    robot = robots.box_chain(3)
+    q = np.linspace(0.1, 0.9, robot.dof)
+    values_i, values_j, Q = cspace.slice_configs(robot, q, (7, 2), resolution=5)
+    assert Q.shape == (5, 5, robot.dof)
+    np.testing.assert_allclose(values_i, [-1.6, -0.8, 0.0, 0.8, 1.6])  # cell centres: 5 cells over [-2, 2]
+    np.testing.assert_allclose(values_j, 1.1 + 2.2 * np.arange(5))
+    np.testing.assert_allclose(Q[3, 1, 7], values_i[3])
+    np.testing.assert_allclose(Q[3, 1, 2], values_j[1])
+    others = [k for k in range(robot.dof) if k not in (7, 2)]
+    np.testing.assert_allclose(Q[..., others], np.broadcast_to(q[others], (5, 5, len(others))))
+    with pytest.raises(ValueError, match="two different"):
+        cspace.slice_configs(robot, q, (3, 3), 5)
+
+
+def test_cspace_image_is_dark_exactly_where_fcl_reports_collision(square_world):
+    robot = robots.point_robot()
+    fig = cspace.cspace_image(PointRobotChecker(square_world, robot), resolution=90)
+    _, _, Q = cspace.slice_configs(robot, robot.lower, (0, 1), 90)
+    by_fcl = ExactChecker(square_world, robot).are_valid(Q.reshape(-1, 2)).reshape(90, 90)
+    image = _image(fig)  # (y, x): 1 dark
+    np.testing.assert_array_equal(image, (~by_fcl).T.astype(float))
+    assert 0 < image.mean() < 0.2
+    assert len(_patches(fig.axes[0], "block")) == 2
+
+
+def test_cspace_image_grows_each_block_by_the_robots_half_width(square_world):
+    """Zoomed on the block [10, 12]^2: dark from 9.75 to 12.25 (touching counts), light beyond."""
+    robot = robots.point_robot()
+    fig = cspace.cspace_image(PointRobotChecker(square_world, robot), resolution=20, window=((9.0, 13.0), (10.0, 12.0)))
+    row = _image(fig)[10]  # y = 11.05; x at 9.1, 9.3, ..., 12.9
+    x = 9.1 + 0.2 * np.arange(20)
+    np.testing.assert_array_equal(row, ((x > 9.75) & (x < 12.25)).astype(float))
+    assert fig.axes[0].images[0].get_extent() == [9.0, 13.0, 10.0, 12.0]
+    assert fig.axes[0].get_xlim() == (9.0, 13.0) and fig.axes[0].get_ylim() == (10.0, 12.0)
+    with pytest.raises(ValueError, match="cspace_slice"):
+        cspace.cspace_image(ExactChecker(Workspace(np.zeros(3), np.full(3, 11.0), np.zeros((0, 2, 3))),
+                                         robots.box_chain(1)))
+
+
+def test_cspace_slice_equals_the_separating_axis_reference(clutter):
+    robot = robots.box_chain(1)
+    checker = ExactChecker(clutter, robot)
+    q = cspace.configuration_near_blocks(checker, np.random.default_rng(0), n=500)
+    fig = cspace.cspace_slice(checker, q, joints=(5, 6), resolution=30)
+    _, _, Q = cspace.slice_configs(robot, q, (5, 6), 30)
+    by_sat = SeparatingAxisChecker(clutter, robot).are_valid(Q.reshape(-1, robot.dof)).reshape(30, 30)
+    image = _image(fig)
+    np.testing.assert_array_equal(image, (~by_sat).T.astype(float))
+    assert 0 < image.mean() < 1  # the slice crosses a C-obstacle
+    ax = fig.axes[0]
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("gamma (rad)", "joint1 (rad)")
+    star = next(line for line in ax.lines if line.get_gid() == "q")
+    np.testing.assert_allclose(np.ravel(star.get_data()), q[[5, 6]])
+    assert star.get_color() == cspace.VALID_COLOR
+    assert len(_patches(fig.axes[1], "link")) == robot.n_links
+
+
+def test_configuration_near_blocks_is_the_valid_sample_closest_to_a_block(clutter):
+    robot = robots.box_chain(1)
+    checker = ExactChecker(clutter, robot)
+    q = cspace.configuration_near_blocks(checker, np.random.default_rng(5), n=300)
+    Q = robot.sample(np.random.default_rng(5), 300)
+    Q = Q[checker.are_valid(Q)]
+
+    def block_distance(config):  # one link and one block at a time
+        distance = np.inf
+        for lo, hi in robot.link_aabbs(config)[0]:
+            for b_lo, b_hi in clutter.boxes:
+                distance = min(distance, np.linalg.norm(np.maximum(np.maximum(b_lo - hi, lo - b_hi), 0)))
+        return distance
+
+    assert checker.is_valid(q)
+    assert block_distance(q) == pytest.approx(min(block_distance(c) for c in Q))

@@ -1,0 +1,342 @@
+"""Figures of notebook 01: workspaces, occupancy grids, robots and configuration-space obstacles (paper §V-A).
+
+A planner never sees the workspace directly: it asks a collision checker about
+configurations ``q``. The set of configurations at which the robot touches a block
+is the *configuration-space obstacle*; these figures draw it next to the geometry
+that makes it:
+
+- :func:`workspace_figure` draws a workspace's blocks (one patch per block);
+- :func:`occupancy_figure` draws its −1/+1 occupancy grid, the CAE's input (a 3D
+  grid as one image per z layer);
+- :func:`robot_figure` draws a robot's link boxes at configurations (forward
+  kinematics, ``robot.link_boxes``), projected onto coordinate planes;
+- :func:`cspace_image` draws the point robot's whole 2-DoF C-space, dark where the
+  checker says "in collision";
+- :func:`cspace_slice` draws a 2-DoF slice of any robot's C-space (two DoF vary,
+  the others stay fixed) beside the robot at the fixed configuration.
+
+Every function returns a matplotlib ``Figure`` and never calls ``show()``.
+"""
+
+from __future__ import annotations
+
+import itertools
+
+import numpy as np
+from matplotlib.colors import ListedColormap
+from matplotlib.figure import Figure
+from matplotlib.patches import Patch, Polygon, Rectangle
+from mpl_toolkits.mplot3d.art3d import Poly3DCollection
+from scipy.spatial import ConvexHull
+
+from ..collision import CollisionChecker
+from ..robots import BoxRobot
+from ..workspace import Workspace
+
+VALID_COLOR, INVALID_COLOR, NEUTRAL_COLOR = "tab:green", "tab:red", "tab:blue"
+BLOCK_COLOR = "0.6"
+COLLISION_CMAP = ListedColormap(["white", "0.2"])  # 0: valid, 1: in collision (dark)
+OCCUPANCY_CMAP = ListedColormap(["white", "0.2"])  # -1: free, +1: occupied (dark)
+VIEWS = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
+POSITION_NAMES = ("x", "y", "z")
+
+
+def _corner_signs(dim: int) -> np.ndarray:
+    """``(2^D, D)`` the corners of a box as ±1 per axis; corner ``k`` has bit ``D-1-a`` set where axis ``a`` is +."""
+    return np.array(list(itertools.product((-1.0, 1.0), repeat=dim)))
+
+
+def _face_indices() -> np.ndarray:
+    """``(6, 4)`` corners of each face of a 3D box (numbered as :func:`_corner_signs`), in order around it."""
+    faces = []
+    for axis, side in itertools.product(range(3), (0, 1)):
+        u, v = (a for a in range(3) if a != axis)
+        face = []
+        for bit_u, bit_v in ((0, 0), (0, 1), (1, 1), (1, 0)):
+            bits = np.zeros(3, dtype=int)
+            bits[[axis, u, v]] = side, bit_u, bit_v
+            face.append(int(bits @ (4, 2, 1)))
+        faces.append(face)
+    return np.array(faces)
+
+
+FACES = _face_indices()
+
+
+def _box_corners(center: np.ndarray, rotation: np.ndarray, half: np.ndarray) -> np.ndarray:
+    """``(2^D, D)`` corners of an oriented box: ``center (D,)``, ``rotation (D, D)``, ``half (D,)``."""
+    return center + (_corner_signs(len(center)) * half) @ rotation.T
+
+
+def _aabb_corners(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """``(2^D, D)`` corners of an axis-aligned box."""
+    return _box_corners((lo + hi) / 2, np.eye(len(lo)), (hi - lo) / 2)
+
+
+def _outline(corners: np.ndarray, axes: tuple[int, int]) -> np.ndarray:
+    """The box's shadow on the plane of ``axes``: its projected corners' convex hull, ``(V, 2)`` in order."""
+    points = corners[:, list(axes)]
+    return points[ConvexHull(points).vertices]
+
+
+def _add_box_3d(ax, corners: np.ndarray, **style) -> Poly3DCollection:
+    faces = Poly3DCollection(corners[FACES], **style)
+    ax.add_collection3d(faces)
+    return faces
+
+
+def _dof_label(robot: BoxRobot, index: int) -> str:
+    name = robot.dof_names[index]
+    return f"{name}" if name in POSITION_NAMES else f"{name} (rad)"
+
+
+# -- workspaces and their grids --------------------------------------------------
+
+def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
+    """The workspace's blocks: one ``Rectangle`` per block in 2D, one ``Poly3DCollection`` per block in 3D.
+
+    Office blocks are colored by furniture type (``workspace.labels``); every patch has gid ``"block"``.
+    """
+    title = title or f"{workspace.family or 'workspace'}: {len(workspace.boxes)} blocks in " + " x ".join(
+        f"{s:g}" for s in workspace.upper - workspace.lower)
+    kinds = sorted(set(workspace.labels))
+    colors = {kind: f"C{i}" for i, kind in enumerate(kinds)}
+    box_colors = [colors[label] for label in workspace.labels] or [BLOCK_COLOR] * len(workspace.boxes)
+    if workspace.dim == 2:
+        fig = Figure(figsize=(5, 5))
+        ax = fig.subplots()
+        for (lo, hi), color in zip(workspace.boxes, box_colors):
+            ax.add_patch(Rectangle(lo, *(hi - lo), facecolor=color, edgecolor="k", gid="block"))
+        ax.set_xlim(workspace.lower[0], workspace.upper[0])
+        ax.set_ylim(workspace.lower[1], workspace.upper[1])
+        ax.set_aspect("equal")
+        ax.set_xlabel("x")
+        ax.set_ylabel("y")
+    else:
+        fig = Figure(figsize=(7, 6))
+        ax = fig.add_subplot(projection="3d")
+        for (lo, hi), color in zip(workspace.boxes, box_colors):
+            _add_box_3d(ax, _aabb_corners(lo, hi), facecolor=color, edgecolor="k", linewidth=0.3,
+                        alpha=0.8).set_gid("block")
+        ax.set(xlim=(workspace.lower[0], workspace.upper[0]), ylim=(workspace.lower[1], workspace.upper[1]),
+               zlim=(workspace.lower[2], workspace.upper[2]), xlabel="x", ylabel="y", zlabel="z")
+        ax.set_box_aspect(workspace.upper - workspace.lower)
+        if kinds:
+            ax.legend(handles=[Patch(color=colors[k], label=k) for k in kinds], fontsize=8, loc="upper left")
+    ax.set_title(title)
+    return fig
+
+
+def occupancy_figure(workspace: Workspace, layers: list[int] | None = None, columns: int = 4) -> Figure:
+    """The occupancy grid (paper §V-A: +1 occupied, dark; −1 free, white), one image per z layer in 3D.
+
+    Image ``[row, col]`` is cell ``(x=col, y=row)``, so the picture lies as :func:`workspace_figure`'s.
+    ``layers``: which z layers of a 3D grid to draw (default: all).
+    """
+    grid = workspace.occupancy()  # (nx, ny) or (nx, ny, nz)
+    extent = (workspace.lower[0], workspace.upper[0], workspace.lower[1], workspace.upper[1])
+    if grid.ndim == 2:
+        images, titles = [grid], [f"{workspace.family} grid {grid.shape[0]} x {grid.shape[1]}"]
+    else:
+        layers = range(grid.shape[2]) if layers is None else layers
+        images = [grid[:, :, z] for z in layers]
+        titles = [f"layer z = {workspace.lower[2] + z + 0.5:g}" for z in layers]
+    columns = min(columns, len(images))
+    rows = -(-len(images) // columns)
+    fig = Figure(figsize=(2.6 * columns, 2.6 * rows + 0.4))
+    axes = fig.subplots(rows, columns, squeeze=False, gridspec_kw={"hspace": 0.35, "wspace": 0.3}).ravel()
+    for ax, image, title in zip(axes, images, titles):
+        ax.imshow(image.T, origin="lower", extent=extent, cmap=OCCUPANCY_CMAP, vmin=-1, vmax=1,
+                  interpolation="nearest")
+        ax.set_title(title, fontsize=9)
+        ax.locator_params(nbins=3)  # few tick labels: drawing text is most of this figure's cost
+        ax.tick_params(labelsize=7)
+    for ax in axes[len(images):]:
+        ax.remove()
+    fig.suptitle(f"Occupancy grid {' x '.join(map(str, grid.shape))}: dark = +1 (occupied), white = -1 (free)")
+    return fig
+
+
+# -- robots ------------------------------------------------------------------------
+
+def _nearby_blocks(workspace: Workspace, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """Indices of the blocks that meet the axis-aligned window ``[lo, hi]`` (D,)."""
+    boxes = workspace.boxes
+    return np.flatnonzero(np.all((boxes[:, 0] <= hi) & (boxes[:, 1] >= lo), axis=1))
+
+
+def _draw_robot(ax, robot: BoxRobot, Q: np.ndarray, colors: list[str], view: str,
+                workspace: Workspace | None, margin: float) -> None:
+    """Link boxes of configurations ``Q (k, dof)`` and the blocks within ``margin`` of them, on one axes.
+
+    ``view``: ``"3d"`` (an mplot3d axes) or a plane ``"xy"``, ``"xz"``, ``"yz"`` (the shadow of each box).
+    Links have gid ``"link"``, blocks gid ``"block"``.
+    """
+    centers, rotations, half = robot.link_boxes(Q)  # (k, L, D), (k, L, D, D), (L, D)
+    aabbs = robot.link_aabbs(Q)  # (k, L, 2, D)
+    lo, hi = aabbs[:, :, 0].min(axis=(0, 1)) - margin, aabbs[:, :, 1].max(axis=(0, 1)) + margin  # (D,) window
+    if workspace is not None:
+        lo, hi = np.maximum(lo, workspace.lower), np.minimum(hi, workspace.upper)
+        blocks = workspace.boxes[_nearby_blocks(workspace, lo, hi)]
+    else:
+        blocks = np.zeros((0, 2, robot.dim))
+    link_boxes = [(_box_corners(c, r, h), color)
+                  for cs, rs, color in zip(centers, rotations, colors) for c, r, h in zip(cs, rs, half)]
+    if view == "3d":
+        for b_lo, b_hi in blocks:
+            _add_box_3d(ax, _aabb_corners(b_lo, b_hi), facecolor=BLOCK_COLOR, edgecolor="0.3", linewidth=0.3,
+                        alpha=0.25).set_gid("block")
+        for corners, color in link_boxes:
+            _add_box_3d(ax, corners, facecolor=color, edgecolor="k", linewidth=0.4, alpha=0.9).set_gid("link")
+        ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), zlim=(lo[2], hi[2]), xlabel="x", ylabel="y", zlabel="z")
+        ax.set_box_aspect(hi - lo)
+        return
+    axes = VIEWS[view]
+    for b_lo, b_hi in blocks:
+        ax.add_patch(Rectangle(b_lo[list(axes)], *(b_hi - b_lo)[list(axes)], facecolor=BLOCK_COLOR,
+                               edgecolor="0.3", alpha=0.5, gid="block"))
+    for corners, color in link_boxes:
+        ax.add_patch(Polygon(_outline(corners, axes), facecolor=color, edgecolor="k", linewidth=0.6,
+                             alpha=0.85, gid="link"))
+    ax.set_xlim(lo[axes[0]], hi[axes[0]])
+    ax.set_ylim(lo[axes[1]], hi[axes[1]])
+    ax.set_aspect("equal")
+    ax.set_xlabel(POSITION_NAMES[axes[0]])
+    ax.set_ylabel(POSITION_NAMES[axes[1]])
+
+
+def _link_colors(n: int, valid: np.ndarray | None) -> list[str]:
+    if valid is None:
+        return [NEUTRAL_COLOR] * n
+    return [VALID_COLOR if v else INVALID_COLOR for v in np.asarray(valid, dtype=bool).reshape(n)]
+
+
+def robot_figure(robot: BoxRobot, Q, workspace: Workspace | None = None, valid=None,
+                 views: tuple[str, ...] | None = None, margin: float = 1.0) -> Figure:
+    """The robot's link boxes at configurations ``Q (dof,)`` or ``(k, dof)``, by forward kinematics.
+
+    One panel per view: ``"xy"`` (from above), ``"xz"``, ``"yz"`` (from the side; a box's
+    panel shows its shadow, the convex hull of its projected corners) or ``"3d"``.
+    Default: ``("xy",)`` for a 2D robot, ``("3d", "xy", "xz")`` for a 3D one. Blocks of
+    ``workspace`` within ``margin`` of the robot are drawn too; ``valid (k,)`` colors
+    each configuration green (valid) or red (in collision).
+    """
+    Q = robot.check_configs(Q)  # (k, dof)
+    views = views or (("xy",) if robot.dim == 2 else ("3d", "xy", "xz"))
+    fig = Figure(figsize=(4.2 * len(views), 4.2))
+    colors = _link_colors(len(Q), valid)
+    for i, view in enumerate(views):
+        ax = fig.add_subplot(1, len(views), i + 1, **({"projection": "3d"} if view == "3d" else {}))
+        _draw_robot(ax, robot, Q, colors, view, workspace, margin)
+        ax.set_title(f"{robot.name}: {view}", fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+# -- configuration space --------------------------------------------------------------
+
+def _joint_bounds(robot: BoxRobot, joints: tuple[int, int]) -> tuple:
+    """``((lo_i, hi_i), (lo_j, hi_j))``: the bounds of two DoF."""
+    return tuple((float(robot.lower[k]), float(robot.upper[k])) for k in joints)
+
+
+def slice_configs(robot: BoxRobot, q, joints: tuple[int, int], resolution: int,
+                  window: tuple | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """A grid over two DoF with the others fixed at ``q (dof,)``.
+
+    Returns the values of DoF ``i`` ``(n,)``, of DoF ``j`` ``(n,)`` and the configurations
+    ``(n, n, dof)`` (``Q[a, b]`` has DoF i at ``values_i[a]``, DoF j at ``values_j[b]``).
+    The values are the centres of ``n`` equal cells spanning the robot's bounds, or
+    ``window = ((lo_i, hi_i), (lo_j, hi_j))``: one pixel per configuration.
+    """
+    i, j = joints
+    if i == j or not (0 <= i < robot.dof and 0 <= j < robot.dof):
+        raise ValueError(f"joints must be two different DoF indices of {robot.name!r} (0..{robot.dof - 1}), got {joints}")
+    q = robot.check_configs(q)[0]  # (dof,)
+    window = window or _joint_bounds(robot, joints)
+    values_i, values_j = (lo + (np.arange(int(resolution)) + 0.5) * (hi - lo) / int(resolution) for lo, hi in window)
+    Q = np.tile(q, (len(values_i), len(values_j), 1))  # (n, n, dof)
+    Q[:, :, i], Q[:, :, j] = values_i[:, None], values_j[None, :]
+    return values_i, values_j, Q
+
+
+def _draw_cspace(ax, checker: CollisionChecker, q, joints: tuple[int, int], resolution: int,
+                 window: tuple | None) -> np.ndarray:
+    """Image of the slice, dark where the checker says "in collision"; returns validity ``(n, n)``."""
+    robot = checker.robot
+    _, _, Q = slice_configs(robot, q, joints, resolution, window)  # (n, n, dof); checks the joints
+    window = window or _joint_bounds(robot, joints)
+    valid = checker.are_valid(Q.reshape(-1, robot.dof)).reshape(Q.shape[:2])  # (n, n)
+    ax.imshow((~valid).T.astype(float), origin="lower", extent=np.ravel(window), cmap=COLLISION_CMAP, vmin=0, vmax=1,
+              interpolation="nearest", aspect="auto")
+    ax.set_xlabel(_dof_label(robot, joints[0]))
+    ax.set_ylabel(_dof_label(robot, joints[1]))
+    return valid
+
+
+def cspace_image(checker: CollisionChecker, resolution: int = 600, window: tuple | None = None) -> Figure:
+    """The point robot's whole C-space (x, y), dark where ``checker`` reports a collision.
+
+    The workspace's blocks are outlined in orange (gid ``"block"``): each dark C-obstacle is
+    its block grown by the robot's half width, since the square's centre is the configuration.
+    ``window = ((x_lo, x_hi), (y_lo, y_hi))`` zooms in; ``resolution``: pixels (configurations) per axis.
+    """
+    robot = checker.robot
+    if robot.dof != 2:
+        raise ValueError(f"cspace_image draws a 2-DoF C-space; {robot.name!r} has {robot.dof} DoF: use cspace_slice")
+    fig = Figure(figsize=(5.5, 5.2))
+    ax = fig.subplots()
+    valid = _draw_cspace(ax, checker, robot.lower, (0, 1), resolution, window)
+    for lo, hi in checker.workspace.boxes:
+        ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor="tab:orange", linewidth=1.2, gid="block"))
+    left, right, bottom, top = ax.images[0].get_extent()
+    ax.set(xlim=(left, right), ylim=(bottom, top), aspect="equal")  # the window, whatever blocks lie beyond it
+    ax.set_title(f"C-space of the point robot: {1 - valid.mean():.0%} in collision (dark)\n"
+                 "orange: the workspace's blocks", fontsize=10)
+    return fig
+
+
+def cspace_slice(checker: CollisionChecker, q, joints: tuple[int, int] = (0, 1), resolution: int = 60,
+                 view: str | None = "xy", margin: float = 1.0) -> Figure:
+    """A 2-DoF slice of the C-space through ``q (dof,)``: DoF ``joints`` vary over their bounds, the rest stay at ``q``.
+
+    Left: dark where ``checker`` reports a collision, with a star at ``q`` itself. Right
+    (unless ``view`` is None): the robot at ``q`` among the nearby blocks, green if ``q``
+    is valid, red if not (see :func:`robot_figure`).
+    """
+    robot = checker.robot
+    q = robot.check_configs(q)[0]  # (dof,)
+    q_valid = checker.are_valid(q[None])
+    fig = Figure(figsize=(9.5 if view else 5, 4.4))
+    ax = fig.add_subplot(1, 2 if view else 1, 1)
+    valid = _draw_cspace(ax, checker, q, joints, resolution, None)
+    ax.plot(q[joints[0]], q[joints[1]], marker="*", markersize=14, markeredgecolor="k",
+            color=_link_colors(1, q_valid)[0], linestyle="none", gid="q")
+    fixed = [f"{robot.dof_names[k]}={q[k]:.2f}" for k in range(robot.dof) if k not in joints]
+    ax.set_title(f"{robot.name}: {1 - valid.mean():.0%} of this slice in collision (dark)\nfixed: "
+                 + ", ".join(fixed), fontsize=8)
+    if view:
+        robot_ax = fig.add_subplot(1, 2, 2, **({"projection": "3d"} if view == "3d" else {}))
+        _draw_robot(robot_ax, robot, q[None], _link_colors(1, q_valid), view, checker.workspace, margin)
+        robot_ax.set_title(f"the robot at the star ({view})", fontsize=9)
+    fig.tight_layout()
+    return fig
+
+
+def configuration_near_blocks(checker: CollisionChecker, rng: np.random.Generator, n: int = 2000) -> np.ndarray:
+    """A valid configuration ``(dof,)`` close to a block: a slice through it is likely to cross C-obstacles.
+
+    Of ``n`` uniform samples, the valid one whose link boxes' axis-aligned bounds come
+    nearest a block (a random valid configuration is usually far from every block, and
+    its slices through arm joints are all free).
+    """
+    robot, boxes = checker.robot, checker.workspace.boxes  # boxes (K, 2, D)
+    Q = robot.sample(rng, n)
+    Q = Q[checker.are_valid(Q)]  # (M, dof)
+    if len(Q) == 0:
+        raise ValueError(f"none of {n} samples is valid: draw more")
+    if len(boxes) == 0:
+        return Q[0]
+    aabbs = robot.link_aabbs(Q)[:, :, None]  # (M, L, 1, 2, D)
+    gap = np.maximum(np.maximum(boxes[:, 0] - aabbs[..., 1, :], aabbs[..., 0, :] - boxes[:, 1]), 0)  # (M, L, K, D)
+    return Q[np.argmin(np.linalg.norm(gap, axis=-1).min(axis=(1, 2)))]
