@@ -38,3 +38,9 @@ def checkpoint_2ds(tmp_path_factory):
     splits = training.preset_splits("2ds", "strong", seed=0, quick=True, progress=False)
     models = training.train_models("2ds", "strong", splits, seed=0, progress=False, quick=True, device="cpu")
     return checkpoints.save_checkpoint(models, tmp_path_factory.mktemp("ckpt"))
+
+
+@pytest.fixture(scope="session")
+def notebook_cache(tmp_path_factory):
+    """Trained models shared by the notebooks of one test session (``TOOLKIT_CACHE``), not the user's cache."""
+    return tmp_path_factory.mktemp("notebook-cache")

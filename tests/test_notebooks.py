@@ -11,7 +11,7 @@ import nbformat
 import pytest
 from nbclient import NotebookClient
 
-NOTEBOOKS = sorted((Path(__file__).resolve().parents[1] / "notebooks").glob("[0-9][0-9]_*.ipynb"))
+NOTEBOOKS = sorted((Path(__file__).resolve().parents[1] / "notebooks").glob("[0-9][0-9]_*.ipynb"))  # 01_... to 05_...
 
 
 def test_the_five_notebooks_exist():
@@ -41,9 +41,3 @@ def test_runs_in_quick_mode(path, monkeypatch, notebook_cache):
     streams = "".join(o.get("text", "") for c in nb.cells if c.cell_type == "code" for o in c.outputs
                       if o.output_type == "stream" and o.name == "stderr")
     assert "Traceback" not in streams, f"{path.name} printed a traceback:\n{streams[-2000:]}"
-
-
-@pytest.fixture(scope="session")
-def notebook_cache(tmp_path_factory):
-    """Trained models shared by the notebooks of one test session."""
-    return tmp_path_factory.mktemp("notebook-cache")

@@ -1,0 +1,179 @@
+"""A notebook as a student sees it: opened in a real JupyterLab, run in headless Chromium (Playwright).
+
+Used by ``tests/test_jupyterlab.py`` and to make the README's screenshot::
+
+    python -m toolkit.lab_browser notebooks/05_3d_scenes.ipynb --screenshot docs/jupyterlab.png
+
+The notebook is copied into a temporary folder first (JupyterLab saves what it
+runs; the original stays without outputs), a JupyterLab server starts on
+127.0.0.1 with a one-time token, Chromium opens the notebook and clicks
+*Run → Run All Cells*, and waits until every code cell has run. What the page then
+shows is counted: ipywidgets sliders, images (matplotlib figures), iframes (the
+embedded viewer), "Error displaying widget" messages and tracebacks. Playwright
+drives Debian's Chromium (``executable_path``); it never downloads a browser.
+"""
+
+from __future__ import annotations
+
+import argparse
+import os
+import secrets
+import shutil
+import signal
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+import urllib.request
+from contextlib import contextmanager
+from dataclasses import asdict, dataclass
+from pathlib import Path
+from typing import Iterator
+
+from .viewer_browser import find_chromium
+
+CHROMIUM_ARGS = ["--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run", "--disable-background-networking",
+                 "--disable-component-update", "--disable-sync"]
+WINDOW = (1400, 1000)  # (width, height) of the page
+STDERR = '.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.stderr"]'  # errors and warnings render so
+
+
+@dataclass
+class RenderedNotebook:
+    """What the page shows once every cell has run."""
+
+    code_cells: int
+    cells_run: int
+    sliders: int  # ipywidgets sliders rendered
+    images: int  # images in output areas (matplotlib figures)
+    iframes: int  # iframes in output areas (the embedded viewer)
+    widget_errors: int  # "Error displaying widget" messages
+    tracebacks: int  # error outputs
+    seconds: float  # from "Run All Cells" to the last cell's end
+
+
+def _free_port() -> int:
+    with socket.socket() as s:
+        s.bind(("127.0.0.1", 0))
+        return s.getsockname()[1]
+
+
+@contextmanager
+def jupyterlab(root: Path, env: dict[str, str] | None = None, timeout_s: float = 120.0) -> Iterator[str]:
+    """A JupyterLab server on ``root``, bound to 127.0.0.1; yields its URL with the token, stops it afterwards."""
+    port, token = _free_port(), secrets.token_hex(16)
+    settings = root / ".lab-settings" / "@jupyterlab" / "apputils-extension"
+    settings.mkdir(parents=True, exist_ok=True)
+    (settings / "notification.jupyterlab-settings").write_text('{"fetchNews": "false", "checkForUpdates": false}')
+    env = {**os.environ, "JUPYTERLAB_SETTINGS_DIR": str(settings.parents[1]), **(env or {})}
+    command = [sys.executable, "-m", "jupyterlab", "--no-browser", "--ServerApp.ip=127.0.0.1",
+               f"--ServerApp.port={port}", "--ServerApp.port_retries=0", f"--IdentityProvider.token={token}",
+               f"--ServerApp.root_dir={root}", "--LabApp.news_url=", "--LabApp.check_for_updates_class="
+               "jupyterlab.NeverCheckForUpdate"]
+    if os.geteuid() == 0:  # CI machines run as root, which JupyterLab refuses unless told
+        command.append("--allow-root")
+    log = tempfile.TemporaryFile()
+    server = subprocess.Popen(command, env=env, stdout=log, stderr=subprocess.STDOUT,
+                              start_new_session=True)  # its kernels share its process group: one signal stops all
+    url = f"http://127.0.0.1:{port}"
+    try:
+        deadline = time.monotonic() + timeout_s
+        while True:
+            try:
+                urllib.request.urlopen(f"{url}/api/status?token={token}", timeout=5).close()
+                break
+            except OSError:
+                if server.poll() is not None or time.monotonic() > deadline:
+                    log.seek(0)
+                    raise RuntimeError(f"JupyterLab did not start on {url}: {log.read().decode()[-2000:]}") from None
+                time.sleep(0.5)
+        yield f"{url}/lab/tree/{{path}}?token={token}"
+    finally:
+        _stop(server)
+        log.close()
+
+
+def _stop(server: subprocess.Popen) -> None:
+    """Stop the server and its kernels (one process group): SIGTERM, then SIGKILL after 20 s."""
+    for sig, wait_s in ((signal.SIGTERM, 20), (signal.SIGKILL, None)):
+        try:
+            os.killpg(server.pid, sig)
+        except ProcessLookupError:
+            pass
+        try:
+            server.wait(timeout=wait_s)
+            return
+        except subprocess.TimeoutExpired:
+            continue
+
+
+def run_all(notebook: str | Path, *, env: dict[str, str] | None = None, screenshot: str | Path | None = None,
+            timeout_s: float = 900.0) -> RenderedNotebook:
+    """Open ``notebook`` in JupyterLab, run all cells, and count what the page shows (optionally save a PNG)."""
+    from playwright.sync_api import sync_playwright
+
+    chromium = find_chromium()
+    if chromium is None:
+        raise FileNotFoundError("no Chromium found; install it with `make browser` or `apt-get install chromium`")
+    notebook = Path(notebook).resolve()
+    with tempfile.TemporaryDirectory(prefix="toolkit-lab-") as root, sync_playwright() as pw:
+        shutil.copy(notebook, Path(root) / notebook.name)
+        with jupyterlab(Path(root), env) as url:
+            browser = pw.chromium.launch(executable_path=chromium, args=CHROMIUM_ARGS)
+            try:
+                page = browser.new_page(viewport={"width": WINDOW[0], "height": WINDOW[1]})
+                page.set_default_timeout(timeout_s * 1000)
+                page.goto(url.format(path=notebook.name))
+                page.wait_for_selector(".jp-Notebook .jp-CodeCell")
+                _wait_idle(page)  # the kernel has started
+                began = time.monotonic()
+                page.locator("#jp-menu-panel").get_by_text("Run", exact=True).click()
+                page.get_by_text("Run All Cells", exact=True).click()
+                n_code = page.locator(".jp-CodeCell").count()
+                page.wait_for_function(f"""() => {{  // every cell ran, or one failed and the rest were skipped
+                    const prompts = [...document.querySelectorAll('.jp-CodeCell .jp-InputArea-prompt')];
+                    const ran = prompts.filter(p => /\\[\\d+\\]/.test(p.textContent)).length;
+                    const failed = [...document.querySelectorAll('{STDERR}')].some(o => o.textContent.includes('Traceback'));
+                    return ran === {n_code} || (failed && !prompts.some(p => p.textContent.includes('*')));
+                }}""")
+                _wait_idle(page)
+                seconds = time.monotonic() - began
+                page.wait_for_timeout(2000)  # widgets and iframes finish rendering
+                outputs = page.locator(".jp-OutputArea-output")
+                rendered = RenderedNotebook(
+                    code_cells=n_code,
+                    cells_run=page.evaluate("[...document.querySelectorAll('.jp-CodeCell .jp-InputArea-prompt')]"
+                                            ".filter(p => /\\[\\d+\\]/.test(p.textContent)).length"),
+                    sliders=page.locator(".jp-OutputArea .widget-slider").count(),
+                    images=outputs.locator("img").count(),
+                    iframes=outputs.locator("iframe").count(),
+                    widget_errors=page.get_by_text("Error displaying widget").count(),
+                    tracebacks=page.locator(STDERR, has_text="Traceback").count(),
+                    seconds=seconds)
+                if screenshot is not None:
+                    page.keyboard.press("Control+b")  # the file browser closed: more room for the notebook
+                    Path(screenshot).parent.mkdir(parents=True, exist_ok=True)
+                    page.screenshot(path=str(screenshot))
+            finally:
+                browser.close()
+    return rendered
+
+
+def _wait_idle(page) -> None:
+    """Wait until the status bar says the kernel is idle ("Python 3 (ipykernel) | Idle")."""
+    page.wait_for_function("(document.querySelector('#jp-main-statusbar')?.innerText ?? '').includes('| Idle')")
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(description="Run a notebook in JupyterLab in headless Chromium and report what "
+                                                 "the page shows (quick mode: TOOLKIT_QUICK=1).")
+    parser.add_argument("notebook")
+    parser.add_argument("--screenshot", help="save a PNG of the page here")
+    args = parser.parse_args(argv)
+    print(asdict(run_all(args.notebook, screenshot=args.screenshot)))
+    return 0
+
+
+if __name__ == "__main__":
+    raise SystemExit(main())
