@@ -7,6 +7,7 @@ against python-fcl), so a figure that drew the wrong cells would fail.
 
 import numpy as np
 import pytest
+from matplotlib.colors import to_rgba
 from matplotlib.patches import Polygon, Rectangle
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
@@ -94,6 +95,8 @@ def test_robot_figure_draws_the_point_robot_square_at_q(square_world):
     np.testing.assert_allclose(links[0].get_xy().max(axis=0), [5.25, 6.25])
     assert links[0].get_facecolor()[:3] != links[1].get_facecolor()[:3]  # green vs red
     assert len(_patches(fig.axes[0], "block")) == 1  # the block at [10, 12]^2; [20, 25] x [3, 9] is far
+    unjudged = cspace.robot_figure(robot, [[5.0, 6.0], [9.9, 11.0]])  # no validity: a colour per configuration
+    assert [p.get_facecolor()[:3] for p in _patches(unjudged.axes[0], "link")] == [to_rgba(c)[:3] for c in ("C0", "C1")]
 
 
 def test_robot_figure_projects_a_chain_by_forward_kinematics():
@@ -145,6 +148,7 @@ def test_cspace_image_grows_each_block_by_the_robots_half_width(square_world):
     np.testing.assert_array_equal(row, ((x > 9.75) & (x < 12.25)).astype(float))
     assert fig.axes[0].images[0].get_extent() == [9.0, 13.0, 10.0, 12.0]
     assert fig.axes[0].get_xlim() == (9.0, 13.0) and fig.axes[0].get_ylim() == (10.0, 12.0)
+    assert "of this window" in fig.axes[0].get_title()
     with pytest.raises(ValueError, match="cspace_slice"):
         cspace.cspace_image(ExactChecker(Workspace(np.zeros(3), np.full(3, 11.0), np.zeros((0, 2, 3))),
                                          robots.box_chain(1)))

@@ -33,7 +33,7 @@ from ..collision import CollisionChecker
 from ..robots import BoxRobot
 from ..workspace import Workspace
 
-VALID_COLOR, INVALID_COLOR, NEUTRAL_COLOR = "tab:green", "tab:red", "tab:blue"
+VALID_COLOR, INVALID_COLOR = "tab:green", "tab:red"
 BLOCK_COLOR = "0.6"
 COLLISION_CMAP = ListedColormap(["white", "0.2"])  # 0: valid, 1: in collision (dark)
 OCCUPANCY_CMAP = ListedColormap(["white", "0.2"])  # -1: free, +1: occupied (dark)
@@ -143,7 +143,8 @@ def occupancy_figure(workspace: Workspace, layers: list[int] | None = None, colu
         titles = [f"layer z = {workspace.lower[2] + z + 0.5:g}" for z in layers]
     columns = min(columns, len(images))
     rows = -(-len(images) // columns)
-    fig = Figure(figsize=(2.6 * columns, 2.6 * rows + 0.4))
+    panel = 4.5 if len(images) == 1 else 2.6  # inches
+    fig = Figure(figsize=(panel * columns, panel * rows + 0.4))
     axes = fig.subplots(rows, columns, squeeze=False, gridspec_kw={"hspace": 0.35, "wspace": 0.3}).ravel()
     for ax, image, title in zip(axes, images, titles):
         ax.imshow(image.T, origin="lower", extent=extent, cmap=OCCUPANCY_CMAP, vmin=-1, vmax=1,
@@ -153,7 +154,8 @@ def occupancy_figure(workspace: Workspace, layers: list[int] | None = None, colu
         ax.tick_params(labelsize=7)
     for ax in axes[len(images):]:
         ax.remove()
-    fig.suptitle(f"Occupancy grid {' x '.join(map(str, grid.shape))}: dark = +1 (occupied), white = -1 (free)")
+    fig.suptitle(f"Occupancy grid {' x '.join(map(str, grid.shape))}: dark = +1 (occupied), white = -1 (free)",
+                 fontsize=10)
     return fig
 
 
@@ -206,8 +208,9 @@ def _draw_robot(ax, robot: BoxRobot, Q: np.ndarray, colors: list[str], view: str
 
 
 def _link_colors(n: int, valid: np.ndarray | None) -> list[str]:
+    """One colour per configuration: green / red by ``valid (n,)``, else matplotlib's cycle (C0, C1, ...)."""
     if valid is None:
-        return [NEUTRAL_COLOR] * n
+        return [f"C{k % 10}" for k in range(n)]
     return [VALID_COLOR if v else INVALID_COLOR for v in np.asarray(valid, dtype=bool).reshape(n)]
 
 
@@ -219,7 +222,7 @@ def robot_figure(robot: BoxRobot, Q, workspace: Workspace | None = None, valid=N
     panel shows its shadow, the convex hull of its projected corners) or ``"3d"``.
     Default: ``("xy",)`` for a 2D robot, ``("3d", "xy", "xz")`` for a 3D one. Blocks of
     ``workspace`` within ``margin`` of the robot are drawn too; ``valid (k,)`` colors
-    each configuration green (valid) or red (in collision).
+    each configuration green (valid) or red (in collision), else each one in a colour of its own.
     """
     Q = robot.check_configs(Q)  # (k, dof)
     views = views or (("xy",) if robot.dim == 2 else ("3d", "xy", "xz"))
@@ -291,7 +294,7 @@ def cspace_image(checker: CollisionChecker, resolution: int = 600, window: tuple
         ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor="tab:orange", linewidth=1.2, gid="block"))
     left, right, bottom, top = ax.images[0].get_extent()
     ax.set(xlim=(left, right), ylim=(bottom, top), aspect="equal")  # the window, whatever blocks lie beyond it
-    ax.set_title(f"C-space of the point robot: {1 - valid.mean():.0%} in collision (dark)\n"
+    ax.set_title(f"C-space of the point robot: {1 - valid.mean():.0%} {'of this window ' if window else ''}in collision (dark)\n"
                  "orange: the workspace's blocks", fontsize=10)
     return fig
 
