@@ -154,8 +154,9 @@ def occupancy_figure(workspace: Workspace, layers: list[int] | None = None, colu
         ax.tick_params(labelsize=7)
     for ax in axes[len(images):]:
         ax.remove()
-    fig.suptitle(f"Occupancy grid {' x '.join(map(str, grid.shape))}: dark = +1 (occupied), white = -1 (free)",
+    fig.suptitle(f"Occupancy grid {' x '.join(map(str, grid.shape))}\ndark = +1 (occupied), white = -1 (free)",
                  fontsize=10)
+    fig.subplots_adjust(top=1 - 0.8 / fig.get_figheight())  # room for the two title lines
     return fig
 
 
