@@ -1,0 +1,194 @@
+"""The collision MLP's figures (notebook 03) show what they claim: the given probabilities, the exact
+checker's C-obstacles, exactly the dangerous and conservative cells, hand-computed counts and ROC points."""
+
+import numpy as np
+import pytest
+from matplotlib.collections import PathCollection
+from matplotlib.contour import ContourSet
+
+from toolkit import metrics, robots
+from toolkit.collision import exact_checker
+from toolkit.plots import classifier as pc
+from toolkit.workspace import Workspace
+
+N = 24  # grid cells per axis
+
+
+@pytest.fixture(scope="module")
+def grid():
+    return pc.cspace_slice(robots.point_robot(), n=N)
+
+
+@pytest.fixture(scope="module")
+def valid(grid):
+    """The exact checker's answers in a 31x31 workspace with one block [10, 20] x [5, 12], as a grid (N, N)."""
+    ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
+    return grid.image(exact_checker(ws, robots.point_robot()).are_valid(grid.configs))
+
+
+@pytest.fixture(scope="module")
+def probability(grid):
+    """A made-up P(valid) (N, N): rising along x, so mistakes of both kinds appear at a middle threshold."""
+    x = (grid.axes[0] - grid.lower[0]) / (grid.upper[0] - grid.lower[0])
+    return np.repeat(x[:, None], N, axis=1) * 0.8 + 0.1 * np.sin(np.arange(N))[None, :] + 0.1
+
+
+def cell_centres(grid, mask):
+    i, j = np.nonzero(mask)
+    return {(x, y) for x, y in zip(grid.axes[0][i], grid.axes[1][j])}
+
+
+def scatter_points(ax, label):
+    (collection,) = [c for c in ax.collections if isinstance(c, PathCollection) and c.get_label() == label]
+    return {tuple(p) for p in collection.get_offsets()}
+
+
+def test_cspace_slice_sweeps_two_dofs_over_cell_centres_and_fixes_the_rest():
+    robot = robots.box_chain(1)
+    fixed = np.array([5.5, 5.5, 5.5, 0.1, 0.2, 0.3, 0.4])
+    grid = pc.cspace_slice(robot, dofs=(0, 6), fixed=fixed, n=5)
+    assert grid.shape == (5, 5) and grid.names == ("x", "joint1") and grid.configs.shape == (25, 7)
+    assert grid.extent == (0.0, 11.0, -2.0, 2.0)
+    np.testing.assert_allclose(grid.axes[0], [1.1, 3.3, 5.5, 7.7, 9.9])
+    np.testing.assert_allclose(grid.axes[1], [-1.6, -0.8, 0.0, 0.8, 1.6], atol=1e-12)
+    i, j = 3, 1
+    row = grid.configs[i * 5 + j]
+    assert row[0] == grid.axes[0][i] and row[6] == grid.axes[1][j]
+    np.testing.assert_array_equal(row[1:6], fixed[1:6])
+    assert grid.image(np.arange(25))[i, j] == i * 5 + j
+    with pytest.raises(ValueError):
+        pc.cspace_slice(robot, dofs=(0, 0))
+
+
+def test_answer_codes_and_counts_by_hand():
+    predicted = np.array([True, True, False, False, True, True])
+    truth = np.array([True, False, True, False, False, True])
+    np.testing.assert_array_equal(pc.answer_codes(predicted, truth), [0, 3, 1, 2, 3, 0])
+    assert pc.confusion_counts(predicted, truth) == {"valid kept": 2, "valid rejected": 1, "invalid rejected": 1,
+                                                     "invalid kept (dangerous)": 2}
+
+
+def test_roc_points_are_fpr_and_tpr_at_each_threshold(probability, valid):
+    thresholds = [0.0, 0.3, 0.5, 0.71, 1.0]
+    ts, fpr, tpr = pc.roc_points(probability, valid, thresholds)
+    for t, f, r in zip(thresholds, fpr, tpr):
+        rates = metrics.classification((probability >= t).ravel(), valid.ravel())
+        assert r == pytest.approx(rates["tpr"]) and f == pytest.approx(1 - rates["tnr"])
+    ts, fpr, tpr = pc.roc_points(probability, valid)  # every distinct probability, then +inf: (1, 1) ... (0, 0)
+    assert (fpr[0], tpr[0], fpr[-1], tpr[-1]) == (1, 1, 0, 0)
+    assert np.all(np.diff(fpr) <= 0) and np.all(np.diff(tpr) <= 0)
+    with pytest.raises(ValueError):
+        pc.roc_points(probability, np.ones_like(valid))
+
+
+def test_probability_map_shows_the_probabilities_the_boundary_and_exactly_the_mistakes(grid, probability, valid):
+    threshold = 0.45
+    ax = pc.probability_map(probability, valid, grid, threshold).axes[0]
+    (image,) = ax.images
+    np.testing.assert_array_equal(image.get_array(), probability.T)  # origin lower: row = second DoF
+    assert image.origin == "lower" and tuple(image.get_extent()) == grid.extent
+    dangerous, conservative = (probability >= threshold) & ~valid, (probability < threshold) & valid
+    assert dangerous.sum() > 0 and conservative.sum() > 0  # the test means something
+    assert scatter_points(ax, "invalid kept (dangerous)") == cell_centres(grid, dangerous)
+    assert scatter_points(ax, "valid rejected") == cell_centres(grid, conservative)
+    # the boundary runs midway between the exact checker's free and blocked cells, around the one block
+    blocked = np.argwhere(~valid)
+    step = grid.axes[0][1] - grid.axes[0][0]
+    x0, x1 = grid.axes[0][blocked[:, 0].min()] - step / 2, grid.axes[0][blocked[:, 0].max()] + step / 2
+    y0, y1 = grid.axes[1][blocked[:, 1].min()] - step / 2, grid.axes[1][blocked[:, 1].max()] + step / 2
+    (contour,) = [c for c in ax.get_children() if isinstance(c, ContourSet)]
+    vertices = np.concatenate([p.vertices for p in contour.get_paths()])
+    x, y = vertices.T
+    on_side = np.isclose(x, x0) | np.isclose(x, x1) | np.isclose(y, y0) | np.isclose(y, y1)
+    inside = (x >= x0 - 1e-9) & (x <= x1 + 1e-9) & (y >= y0 - 1e-9) & (y <= y1 + 1e-9)
+    assert len(vertices) > 4 and on_side.all() and inside.all()
+
+
+def test_blocked_cells_are_the_grown_block(grid, valid):
+    """The truth the maps draw is the C-obstacle: the block grown by the robot's half width, 0.25."""
+    x, y = grid.configs.T
+    inside = (x >= 9.75) & (x <= 20.25) & (y >= 4.75) & (y <= 12.25)
+    np.testing.assert_array_equal(~valid, grid.image(inside))
+
+
+def test_probability_maps_side_by_side_each_with_its_own_threshold(grid, probability, valid):
+    maps = {"paper": probability, "strong": 1 - probability}
+    fig = pc.probability_maps(maps, valid, grid, {"paper": 0.3, "strong": 0.6})
+    axes = [ax for ax in fig.axes if ax.images and ax.get_label() != "<colorbar>"]
+    assert [ax.get_title() for ax in axes] == ["paper: P(valid), threshold 0.30", "strong: P(valid), threshold 0.60"]
+    for ax, (name, p), t in zip(axes, maps.items(), (0.3, 0.6)):
+        np.testing.assert_array_equal(ax.images[0].get_array(), p.T)
+        assert scatter_points(ax, "invalid kept (dangerous)") == cell_centres(grid, (p >= t) & ~valid)
+
+
+def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, probability, valid):
+    threshold = 0.55
+    ax_map, ax_counts, ax_roc = pc.threshold_view(probability, valid, grid, threshold).axes
+    predicted = probability >= threshold
+    np.testing.assert_array_equal(ax_map.images[0].get_array(), pc.answer_codes(predicted, valid).T)
+    heights = [bar.get_height() for bar in ax_counts.patches]
+    assert heights == [np.sum(predicted & valid), np.sum(~predicted & valid), np.sum(~predicted & ~valid),
+                       np.sum(predicted & ~valid)]
+    (point,) = [line for line in ax_roc.get_lines() if line.get_marker() == "o"]
+    rates = metrics.classification(predicted.ravel(), valid.ravel())
+    assert point.get_xdata()[0] == pytest.approx(1 - rates["tnr"])
+    assert point.get_ydata()[0] == pytest.approx(rates["tpr"])
+
+
+def test_roc_curve_draws_every_curve_and_its_operating_point(probability, valid):
+    curves = {"a": (probability, valid, 0.5), "b": (probability ** 2, valid, 0.2)}
+    ax = pc.roc_curve(curves).axes[0]
+    lines = [line for line in ax.get_lines() if line.get_label() != "chance"]
+    assert len(lines) == 4
+    for (curve, point), (p, truth, t) in zip(zip(lines[::2], lines[1::2]), curves.values()):
+        _, fpr, tpr = pc.roc_points(p, truth)
+        np.testing.assert_array_equal(curve.get_xdata(), fpr)
+        np.testing.assert_array_equal(curve.get_ydata(), tpr)
+        kept = p >= t
+        assert point.get_xdata()[0] == pytest.approx(np.mean(kept[~truth]))
+        assert point.get_ydata()[0] == pytest.approx(np.mean(kept[truth]))
+
+
+def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probability, valid):
+    path = np.array([[1.0, 2.0], [5.0, 3.0], [25.0, 28.0]])
+    nodes = np.array([[1.0, 1.0], [15.0, 8.0], [3.0, 4.0], [12.0, 6.0]])
+    nodes_valid = np.array([True, False, True, False])
+    ax = pc.path_map(probability, valid, grid, 0.5, path, nodes, nodes_valid).axes[0]
+    lines = {line.get_label(): np.column_stack([line.get_xdata(), line.get_ydata()]) for line in ax.get_lines()}
+    np.testing.assert_array_equal(lines["returned path (checked exactly)"], path)
+    np.testing.assert_array_equal(lines["roadmap node in collision"], nodes[~nodes_valid])
+    np.testing.assert_array_equal(lines["roadmap node, valid"], nodes[nodes_valid])
+    np.testing.assert_array_equal(ax.images[0].get_array(), probability.T)
+
+
+def test_confusion_bars_heights_are_the_counts_and_rates():
+    predicted = np.array([True] * 5 + [False] * 3 + [True] * 2)
+    truth = np.array([True] * 6 + [False] * 4)
+    ax_counts, ax_rates = pc.confusion_bars(predicted, truth).axes
+    assert [bar.get_height() for bar in ax_counts.patches] == [5, 1, 2, 2]
+    assert ax_counts.patches[3].get_facecolor()[:3] == (1.0, 0.0, 0.0)  # dangerous in red
+    rates = metrics.classification(predicted, truth)
+    assert [bar.get_height() for bar in ax_rates.patches] == pytest.approx([rates["acc"], rates["tpr"], rates["tnr"]])
+
+
+def test_metrics_bars_one_group_per_model():
+    scores = {"paper": {"acc": 0.57, "tpr": 0.29, "tnr": 0.85}, "always valid": {"acc": 0.85, "tpr": 1.0, "tnr": 0.0}}
+    ax = pc.metrics_bars(scores).axes[0]
+    assert [t.get_text() for t in ax.get_xticklabels()] == ["paper", "always valid"]
+    heights = [bar.get_height() for bar in ax.patches]  # drawn measure by measure: acc of each, then tpr, then tnr
+    assert heights == [0.57, 0.85, 0.29, 1.0, 0.85, 0.0]
+
+
+def test_maps_refuse_arrays_of_another_shape(grid, probability, valid):
+    with pytest.raises(ValueError, match="grid"):
+        pc.probability_map(probability[:-1], valid, grid)
+    with pytest.raises(ValueError):
+        pc.threshold_view(probability, valid.T[:, :-1], grid, 0.5)
+
+
+def test_figures_are_never_pyplot_figures(grid, probability, valid):
+    import matplotlib.pyplot as plt
+
+    before = plt.get_fignums()
+    pc.threshold_view(probability, valid, grid, 0.5)
+    assert plt.get_fignums() == before

@@ -1,0 +1,274 @@
+"""Figures of the collision MLP (paper §III-B, Table 2): where it says "valid", and where it is wrong (notebook 03).
+
+The MLP answers P(valid) for a configuration; the learned checker calls it valid when
+P(valid) >= a threshold. Against the exact checker each answer is one of four kinds:
+
+- *valid kept* and *invalid rejected*: right (TPR and TNR count them, as
+  :func:`toolkit.metrics.classification` does);
+- *valid rejected* (a false invalid): a **conservative** mistake, it only costs a sample;
+- *invalid kept* (a false valid): a **dangerous** mistake, a configuration in collision
+  that the planner would trust, unless it checks its path exactly (``toolkit.prm`` does).
+
+The maps here sweep two degrees of freedom over their bounds (:func:`cspace_slice`;
+the point robot's whole C-space, or a 2-DoF slice of a 3D robot with the other joints
+fixed), show P(valid) as an image, draw the true C-obstacle boundary over it and mark
+every mistake at its cell, dangerous ones in red.
+
+>>> grid = cspace_slice(robot, dofs=(0, 1), n=80)  # doctest: +SKIP
+>>> probability = grid.image(checker.probability(grid.configs))  # (80, 80)  # doctest: +SKIP
+>>> probability_map(probability, grid.image(exact.are_valid(grid.configs)), grid, checker.threshold)  # doctest: +SKIP
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass
+
+import numpy as np
+from matplotlib.colors import ListedColormap
+from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch
+
+from .. import metrics
+from ..robots import BoxRobot
+
+DANGEROUS, CONSERVATIVE, BOUNDARY = "red", "deepskyblue", "orange"
+ANSWERS = ("valid kept", "valid rejected", "invalid rejected", "invalid kept (dangerous)")  # answer_codes 0-3
+ANSWER_COLORS = ("white", CONSERVATIVE, "0.15", DANGEROUS)  # C-space pictures: free white, obstacles dark
+
+
+@dataclass(frozen=True)
+class CSpaceSlice:
+    """``n x n`` configurations: DoFs ``dofs`` swept over their bounds at cell centres, the others fixed."""
+
+    dofs: tuple[int, int]
+    names: tuple[str, str]
+    axes: tuple[np.ndarray, np.ndarray]  # (nx,), (ny,) cell centres along each swept DoF
+    lower: np.ndarray  # (2,) bounds of the swept DoFs
+    upper: np.ndarray  # (2,)
+    configs: np.ndarray  # (nx * ny, dof), row i * ny + j holds axes[0][i], axes[1][j]
+
+    @property
+    def shape(self) -> tuple[int, int]:
+        return len(self.axes[0]), len(self.axes[1])
+
+    @property
+    def extent(self) -> tuple[float, float, float, float]:
+        """``(left, right, bottom, top)`` for ``imshow``: the swept DoFs' bounds."""
+        return float(self.lower[0]), float(self.upper[0]), float(self.lower[1]), float(self.upper[1])
+
+    def image(self, values) -> np.ndarray:
+        """Values per configuration ``(nx * ny,)`` as a grid ``(nx, ny)``, ``[i, j]`` at ``axes[0][i], axes[1][j]``."""
+        return np.asarray(values).reshape(self.shape)
+
+
+def cspace_slice(robot: BoxRobot, dofs: tuple[int, int] = (0, 1), fixed=None, n: int = 80) -> CSpaceSlice:
+    """The ``n x n`` grid over DoFs ``dofs`` of ``robot``, the other DoFs at ``fixed (dof,)`` (default: mid-bounds)."""
+    fixed = (robot.lower + robot.upper) / 2 if fixed is None else np.asarray(fixed, dtype=float)
+    if fixed.shape != (robot.dof,) or len(set(dofs)) != 2:
+        raise ValueError(f"need two different DoFs and fixed of shape ({robot.dof},), got {dofs} and {fixed.shape}")
+    lower, upper = robot.lower[list(dofs)], robot.upper[list(dofs)]
+    axes = tuple(lo + (np.arange(n) + 0.5) * (hi - lo) / n for lo, hi in zip(lower, upper))
+    configs = np.tile(fixed, (n * n, 1))  # (n * n, dof)
+    configs[:, dofs[0]], configs[:, dofs[1]] = np.repeat(axes[0], n), np.tile(axes[1], n)
+    return CSpaceSlice(tuple(dofs), tuple(robot.dof_names[d] for d in dofs), axes, lower, upper, configs)
+
+
+def answer_codes(predicted_valid, valid) -> np.ndarray:
+    """Each answer's index in ``ANSWERS``: 0 valid kept, 1 valid rejected, 2 invalid rejected, 3 invalid kept."""
+    pred, truth = np.asarray(predicted_valid, dtype=bool), np.asarray(valid, dtype=bool)
+    if pred.shape != truth.shape:
+        raise ValueError(f"predictions {pred.shape} and truth {truth.shape} must have the same shape")
+    return np.where(truth, np.where(pred, 0, 1), np.where(pred, 3, 2))
+
+
+def confusion_counts(predicted_valid, valid) -> dict[str, int]:
+    """How many answers of each kind in ``ANSWERS``: valid kept, valid rejected, invalid rejected, invalid kept."""
+    counts = np.bincount(answer_codes(predicted_valid, valid).ravel(), minlength=len(ANSWERS))
+    return dict(zip(ANSWERS, counts.tolist()))
+
+
+def roc_points(probability, valid, thresholds=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """``(thresholds, FPR, TPR)`` of "valid when P(valid) >= t": FPR = invalid kept share = 1 - TNR.
+
+    Default thresholds: every distinct probability and +inf, so the curve runs from
+    (1, 1) to (0, 0) through every point a threshold can reach.
+    """
+    p, truth = np.asarray(probability, dtype=float).ravel(), np.asarray(valid, dtype=bool).ravel()
+    if not truth.any() or truth.all():
+        raise ValueError("an ROC curve needs both valid and invalid configurations")
+    ts = np.append(np.unique(p), np.inf) if thresholds is None else np.asarray(thresholds, dtype=float)
+    def kept(q):  # how many of q are >= each threshold
+        return len(q) - np.searchsorted(np.sort(q), ts, side="left")
+    return ts, kept(p[~truth]) / (~truth).sum(), kept(p[truth]) / truth.sum()
+
+
+def probability_map(probability, valid, grid: CSpaceSlice, threshold: float = 0.5, title: str = "P(valid)") -> Figure:
+    """P(valid) over a 2-DoF grid ``(nx, ny)``, the true C-obstacle boundary, the mistakes at ``threshold`` marked."""
+    return probability_maps({title: probability}, valid, grid, threshold)
+
+
+def probability_maps(probabilities: Mapping[str, np.ndarray], valid, grid: CSpaceSlice,
+                     thresholds: float | Mapping[str, float] = 0.5) -> Figure:
+    """Several models' P(valid) maps side by side, same grid and truth (e.g. the ``paper`` and ``strong`` presets)."""
+    fig = Figure(figsize=(4.3 * len(probabilities) + 0.8, 4.7), layout="constrained")
+    axes = fig.subplots(1, len(probabilities), squeeze=False)[0]
+    for ax, (name, probability) in zip(axes, probabilities.items()):
+        t = thresholds[name] if isinstance(thresholds, Mapping) else thresholds
+        image = _draw_probability(ax, probability, valid, grid, t)
+        ax.set_title(f"{name}: P(valid), threshold {t:.2f}", fontsize=9)
+    fig.colorbar(image, ax=list(axes), label="P(valid)", shrink=0.8)
+    _legend(fig, _mistake_handles())
+    return fig
+
+
+def path_map(probability, valid, grid: CSpaceSlice, threshold: float, path, nodes, nodes_valid,
+             title: str = "") -> Figure:
+    """A planner's roadmap ``nodes (M, dof)`` and returned ``path (P, dof)`` over a P(valid) map of the grid's two DoFs.
+
+    Nodes in collision (``nodes_valid`` False, by the exact checker) are the dangerous mistakes the
+    planner accepted: red crosses. The path, checked exactly, avoids them.
+    """
+    nodes, nodes_valid, path = np.asarray(nodes), np.asarray(nodes_valid, dtype=bool), np.asarray(path)
+    fig = Figure(figsize=(5.6, 5.4), layout="constrained")
+    ax = fig.subplots()
+    fig.colorbar(_draw_probability(ax, probability, valid, grid, threshold), ax=ax, label="P(valid)", shrink=0.8)
+    x, y = grid.dofs
+    ax.plot(nodes[nodes_valid, x], nodes[nodes_valid, y], ".", color="gold", markersize=4, label="roadmap node, valid")
+    ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], "X", color=DANGEROUS, markeredgecolor="black",
+            markersize=7, label="roadmap node in collision")
+    ax.plot(path[:, x], path[:, y], "-", color="limegreen", linewidth=2.5, label="returned path (checked exactly)")
+    ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=9)
+    _legend(fig, _mistake_handles() + ax.get_lines())
+    return fig
+
+
+def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
+    """The four kinds of answer as bars (dangerous ones red) and accuracy / TPR / TNR."""
+    fig = Figure(figsize=(8, 3.4), layout="constrained")
+    ax_counts, ax_rates = fig.subplots(1, 2)
+    _draw_counts(ax_counts, predicted_valid, valid)
+    _draw_rates(ax_rates, {"": metrics.classification(np.ravel(predicted_valid), np.ravel(valid))})
+    fig.suptitle(title or "Predictions against the exact checker")
+    return fig
+
+
+def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> Figure:
+    """Accuracy, TPR and TNR of several models or baselines (``{name: {"acc", "tpr", "tnr"}}``), grouped."""
+    fig = Figure(figsize=(1.6 + 1.6 * len(scores), 3.4), layout="constrained")
+    _draw_rates(fig.subplots(), scores)
+    fig.suptitle(title or "Accuracy, TPR (valid kept), TNR (invalid rejected)")
+    return fig
+
+
+def roc_curve(curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]], title: str = "") -> Figure:
+    """ROC curves of ``{name: (P(valid), valid, threshold)}``, each with its operating point at ``threshold``."""
+    fig = Figure(figsize=(4.2, 4.2), layout="constrained")
+    _draw_roc(fig.subplots(), curves)
+    fig.suptitle(title or "ROC: valid kept against invalid kept", fontsize=10)
+    return fig
+
+
+def threshold_view(probability, valid, grid: CSpaceSlice, threshold: float, title: str = "") -> Figure:
+    """One threshold three ways: the decision map (each cell coloured by its kind of answer), the counts, the ROC."""
+    predicted = np.asarray(probability) >= threshold
+    fig = Figure(figsize=(13, 4.3), layout="constrained")
+    ax_map, ax_counts, ax_roc = fig.subplots(1, 3, width_ratios=(1.1, 1, 1))
+    _draw_decision(ax_map, predicted, valid, grid)
+    ax_map.set_title(f"decision at threshold {threshold:.2f}", fontsize=9)
+    _draw_counts(ax_counts, predicted, valid)
+    _draw_roc(ax_roc, {"": (probability, valid, threshold)})
+    fig.suptitle(title)
+    _legend(fig, [Patch(facecolor=c, edgecolor="black", label=a) for a, c in zip(ANSWERS, ANSWER_COLORS)])
+    return fig
+
+
+# -- the panels ----------------------------------------------------------------
+
+def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float):
+    """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary, dangerous cells as squares, conservative dots."""
+    probability = _on_grid(probability, grid, "probability")
+    image = ax.imshow(probability.T, origin="lower", extent=grid.extent, cmap="gray", vmin=0, vmax=1, aspect="auto",
+                      interpolation="nearest")
+    _draw_boundary(ax, valid, grid)
+    codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
+    area = (160.0 / max(grid.shape)) ** 2  # points^2: a dangerous square about half a cell wide
+    for code, color, marker, size in ((3, DANGEROUS, "s", area), (1, CONSERVATIVE, "o", area / 4)):
+        i, j = np.nonzero(codes == code)
+        ax.scatter(grid.axes[0][i], grid.axes[1][j], s=size, c=color, marker=marker, linewidths=0, label=ANSWERS[code])
+    return image
+
+
+def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):
+    """Each cell coloured by its kind of answer (``ANSWER_COLORS``), and the boundary."""
+    codes = answer_codes(_on_grid(predicted_valid, grid, "predictions"), _on_grid(valid, grid, "valid"))
+    image = ax.imshow(codes.T, origin="lower", extent=grid.extent, cmap=ListedColormap(ANSWER_COLORS), vmin=-0.5,
+                      vmax=len(ANSWERS) - 0.5, aspect="auto", interpolation="nearest")
+    _draw_boundary(ax, valid, grid)
+    return image
+
+
+def _draw_boundary(ax, valid, grid: CSpaceSlice) -> None:
+    """The true C-obstacle boundary: the 0.5 contour of the exact checker's answers; axis names."""
+    valid = _on_grid(valid, grid, "valid")
+    if valid.any() and not valid.all():
+        ax.contour(*grid.axes, valid.T.astype(float), levels=[0.5], colors=BOUNDARY, linewidths=1.2)
+    ax.set_xlabel(grid.names[0])
+    ax.set_ylabel(grid.names[1])
+
+
+def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
+    values = np.asarray(values, dtype=bool if name != "probability" else float)
+    if values.shape != grid.shape:
+        raise ValueError(f"{name} has shape {values.shape}, the grid {grid.shape}")
+    return values
+
+
+def _mistake_handles() -> list:
+    return [Line2D([], [], color=DANGEROUS, marker="s", linestyle="", label="dangerous: kept, in collision"),
+            Line2D([], [], color=CONSERVATIVE, marker=".", linestyle="", label="conservative: rejected, free")]
+
+
+def _legend(fig: Figure, handles: list) -> None:
+    handles = [Line2D([], [], color=BOUNDARY, label="true C-obstacle boundary"), *handles]
+    ncols = len(handles) if fig.get_figwidth() >= 9 else 2
+    fig.legend(handles=handles, loc="outside lower center", ncols=ncols, fontsize=8, frameon=False)
+
+
+def _draw_counts(ax, predicted_valid, valid) -> None:
+    counts = confusion_counts(predicted_valid, valid)
+    bars = ax.bar(range(len(counts)), list(counts.values()), color=ANSWER_COLORS, edgecolor="black")
+    ax.bar_label(bars, fontsize=8)
+    ax.set_xticks(range(len(counts)), [a.replace(" ", "\n", 1) for a in ANSWERS], fontsize=8)
+    ax.set_ylabel("configurations")
+    rates = metrics.classification(np.ravel(predicted_valid), np.ravel(valid))
+    ax.set_title(f"accuracy {rates['acc']:.2f}, TPR {rates['tpr']:.2f}, TNR {rates['tnr']:.2f}", fontsize=9)
+
+
+def _draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
+    keys, labels = ("acc", "tpr", "tnr"), ("accuracy", "TPR (valid kept)", "TNR (invalid rejected)")
+    x, width = np.arange(len(scores)), 0.8 / len(keys)
+    for k, (key, label) in enumerate(zip(keys, labels)):
+        bars = ax.bar(x + (k - 1) * width, [s[key] for s in scores.values()], width, label=label)
+        ax.bar_label(bars, fmt="%.2f", fontsize=7)
+    ax.set_xticks(x, list(scores), fontsize=8)
+    ax.set_ylim(0, 1.25)
+    ax.legend(fontsize=7, loc="upper center", ncols=3, frameon=False)
+
+
+def _draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> None:
+    ax.plot([0, 1], [0, 1], color="lightgray", linestyle="--", label="chance")
+    for name, (probability, valid, threshold) in curves.items():
+        _, fpr, tpr = roc_points(probability, valid)
+        auc = np.trapezoid(tpr[::-1], fpr[::-1])  # thresholds rise, so FPR falls: integrate left to right
+        line, = ax.plot(fpr, tpr, label=f"{name + ': ' if name else ''}AUC {auc:.2f}")
+        _, fpr_t, tpr_t = roc_points(probability, valid, [threshold])
+        ax.plot(fpr_t, tpr_t, "o", color=line.get_color(), markeredgecolor="black",
+                label=f"{name + ' ' if name else ''}threshold {threshold:.2f}")
+    ax.set_xlabel("FPR: invalid kept (dangerous) = 1 - TNR")
+    ax.set_ylabel("TPR: valid kept")
+    ax.set_xlim(-0.02, 1.02)
+    ax.set_ylim(-0.02, 1.02)
+    ax.set_aspect("equal")
+    ax.legend(fontsize=7, loc="lower right")
