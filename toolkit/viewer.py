@@ -11,12 +11,15 @@ The robot's link boxes are colored by the exact checker (green valid, red in
 collision, §III). With a learned model (``checkpoint=`` from ``toolkit train``) a
 wireframe around them shows its predicted probability of validity and a label marks
 disagreements; samples are colored by exact vs predicted validity, and planning runs
-the paper's Algorithm 1 (§III-B). Drawing helpers live in :mod:`toolkit.viewer_scene`,
+the paper's Algorithm 1 (§III-B). For a notebook, :meth:`Viewer.iframe` and :func:`embed` give
+a static snapshot and :meth:`Viewer.animation_iframe` the robot moving along the planned path,
+each a self-contained page that needs no server. Drawing helpers live in :mod:`toolkit.viewer_scene`,
 the GUI panel in :mod:`toolkit.viewer_gui`, browser screenshots in :mod:`toolkit.viewer_browser`.
 """
 
 from __future__ import annotations
 
+import contextlib
 import html as html_lib
 import threading
 import time
@@ -24,6 +27,7 @@ from pathlib import Path
 from typing import Callable
 
 import numpy as np
+import rich
 import viser
 
 from . import prm, queries, scenarios
@@ -55,7 +59,8 @@ class Viewer:
 
             predictor = lambda workspace: load_checker(checkpoint, workspace)  # noqa: E731
         self.predictor = predictor
-        self.server = viser.ViserServer(host=host, port=port, label="Predicting sample collision", verbose=False)
+        with _viser_quiet():  # launch() prints the one line a user needs
+            self.server = viser.ViserServer(host=host, port=port, label="Predicting sample collision", verbose=False)
         draw.light(self.server.scene)
         self.lock = threading.RLock()  # GUI callbacks arrive on viser's threads
         self.nodes: dict[str, viser.SceneNodeHandle] = {}
@@ -236,8 +241,38 @@ class Viewer:
 
     def iframe(self, height: int = 480) -> str:
         """The current scene as an ``<iframe>`` for ``IPython.display.HTML`` (a static snapshot)."""
-        return (f'<iframe srcdoc="{html_lib.escape(self.html(), quote=True)}" width="100%" '
-                f'height="{int(height)}" style="border:none"></iframe>')
+        return srcdoc_iframe(self.html(), height)
+
+    def animation_html(self, *, frames: int = 60, seconds: float = 6.0) -> str:
+        """The robot moving along the shown path, as one self-contained HTML document (no server needed).
+
+        A recording made with viser's scene serializer: the scene as it is now, then
+        ``frames`` configurations evenly spaced along the path (:meth:`path_configurations`),
+        ``seconds / (frames - 1)`` apart, each colored by the exact checker (and the model's
+        wireframe, if one is loaded). The camera starts framing the whole motion
+        (:func:`toolkit.viewer_scene.path_camera`); the page plays the recording in a loop,
+        with a timeline to pause and scrub. The robot and the camera are put back afterwards.
+        """
+        if frames < 2 or not seconds > 0:
+            raise ValueError(f"an animation needs frames >= 2 and seconds > 0, got {frames} and {seconds}")
+        configurations = self.path_configurations(np.linspace(0.0, 1.0, int(frames)))  # (F, dof)
+        camera = self.server.initial_camera
+        with self.lock:
+            before = self.q, camera.look_at, camera.position
+            self.set_configuration(configurations[0])
+            camera.look_at, camera.position = draw.path_camera(self.robot, configurations)
+            recording = self.server.get_scene_serializer()  # the scene now, then every scene message
+            for q in configurations[1:]:
+                recording.insert_sleep(seconds / (frames - 1))
+                self.set_configuration(q)
+            document = recording.as_html()  # stops the recording
+            self.set_configuration(before[0])
+            camera.look_at, camera.position = before[1:]
+        return document
+
+    def animation_iframe(self, height: int = 480, *, frames: int = 60, seconds: float = 6.0) -> str:
+        """:meth:`animation_html` as an ``<iframe>`` for ``IPython.display.HTML``."""
+        return srcdoc_iframe(self.animation_html(frames=frames, seconds=seconds), height)
 
     def stop(self) -> None:
         """Stop the GUI's player and the server; the port is free afterwards. Stopping twice is harmless."""
@@ -245,7 +280,8 @@ class Viewer:
             return
         self.stopped = True
         self.panel.stop_playing()
-        self.server.stop()
+        with _viser_quiet():
+            self.server.stop()
 
     def __enter__(self) -> "Viewer":
         return self
@@ -284,6 +320,20 @@ class Viewer:
             handle.remove()
 
 
+@contextlib.contextmanager
+def _viser_quiet():
+    """Silence viser's own banner and "Server stopped" (printed with rich, which comes with viser).
+
+    In a notebook each would be an extra output naming a server that a snapshot has already stopped.
+    """
+    console = rich.get_console()
+    quiet, console.quiet = console.quiet, True
+    try:
+        yield
+    finally:
+        console.quiet = quiet
+
+
 def launch(scenario: str = "3do", *, seed: int = 0, checkpoint: str | Path | None = None,
            host: str = "127.0.0.1", port: int = 8080, quiet: bool = False) -> Viewer:
     """Start a :class:`Viewer` and print the URL to open (and whether the port was busy)."""
@@ -304,6 +354,12 @@ def serve_forever(viewer: Viewer) -> None:
         pass
     finally:
         viewer.stop()
+
+
+def srcdoc_iframe(document: str, height: int = 480) -> str:
+    """An ``<iframe>`` holding a whole HTML ``document`` inline (``srcdoc``): it needs no server or file."""
+    return (f'<iframe srcdoc="{html_lib.escape(document, quote=True)}" width="100%" '
+            f'height="{int(height)}" style="border:none"></iframe>')
 
 
 def embed(scenario: str = "3do", *, seed: int = 0, q=None, samples=None, height: int = 480) -> str:

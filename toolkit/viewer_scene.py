@@ -170,6 +170,22 @@ def camera_pose(robot: BoxRobot, workspace: Workspace, q: np.ndarray) -> tuple[n
     return look_at, look_at + float(np.max(workspace.upper - workspace.lower)) * np.array(offset)
 
 
+PATH_VIEW = (-0.45, -1.0, 0.7)  # from the front-left and above; its length ~1.3 times the framed size fits the view
+
+
+def path_camera(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
+    """``(look_at, position)`` of a camera that frames the robot at every configuration of ``Q (T, dof)``.
+
+    It looks at the middle of the links' bounds along the whole motion, from :data:`PATH_VIEW`
+    scaled by their largest extent: a small robot on a long path stays in the picture.
+    """
+    aabbs = robot.link_aabbs(Q)  # (T, L, 2, D)
+    lo = _lift_points(aabbs[:, :, 0].min(axis=(0, 1)), 0.0)  # (3,)
+    hi = _lift_points(aabbs[:, :, 1].max(axis=(0, 1)), FLAT_ROBOT_HEIGHT)
+    look_at = (lo + hi) / 2
+    return look_at, look_at + float(np.max(hi - lo)) * np.array(PATH_VIEW)
+
+
 def light(scene: viser.SceneApi) -> None:
     """Soft light from the front-left: viser's default lights wash the tops of boxes out to white."""
     scene.configure_default_lights(enabled=False)

@@ -1,0 +1,120 @@
+"""Notebook 05's path figure: the robot drawn by forward kinematics at the chosen frame, the path's series beside it."""
+
+import numpy as np
+import pytest
+from matplotlib.colors import to_rgba
+
+from toolkit import scenarios
+from toolkit.collision import exact_checker
+from toolkit.plots import scenes
+from toolkit.plots.cspace import INVALID_COLOR, VALID_COLOR
+
+FRAMES = 25
+
+
+@pytest.fixture(scope="module")
+def crossing():
+    """A 3DC-7 straight path from a valid configuration through the nearest block's centre: valid, then colliding."""
+    scenario = scenarios.get("3dc7")
+    workspace, robot = scenario.make_workspace(np.random.default_rng(2)), scenario.robot
+    exact = exact_checker(workspace, robot)
+    Q = robot.sample(np.random.default_rng(0), 400)
+    start = Q[exact.are_valid(Q)][0]
+    centres = workspace.boxes.mean(axis=1)  # (K, 3)
+    goal = start.copy()
+    goal[:3] = centres[np.argmin(np.linalg.norm(centres - start[:3], axis=1))]  # the base inside a block
+    path = robot.interpolate(start, goal, np.linspace(0.0, 1.0, FRAMES))  # (T, dof)
+    valid = exact.are_valid(path)
+    assert valid[0] and not valid[-1]
+    return robot, workspace, exact, path, valid
+
+
+def links(ax):
+    return [c for c in ax.collections if c.get_gid() == "link"]
+
+
+def line(ax, gid):
+    return next(artist for artist in ax.lines if artist.get_gid() == gid)
+
+
+@pytest.mark.parametrize("index", [0, FRAMES - 1])
+def test_the_robot_is_its_link_boxes_at_the_frame_colored_by_validity(crossing, index):
+    robot, workspace, _, path, valid = crossing
+    fig = scenes.path_frame(robot, path, index, workspace=workspace, valid=valid)
+    scene = fig.axes[0]
+    drawn = links(scene)
+    assert len(drawn) == robot.n_links
+    centers, rotations, half = robot.link_boxes(path[index])  # (1, L, 3), (1, L, 3, 3), (L, 3)
+    for box, center, rotation, h in zip(drawn, centers[0], rotations[0], half):
+        corners = box._faces.reshape(-1, 3)  # (6 faces * 4, 3) as given (matplotlib keeps no public getter)
+        local = (corners - center) @ rotation  # in the link's frame: exactly +-half on every axis
+        np.testing.assert_allclose(np.abs(local), np.broadcast_to(h, local.shape), atol=1e-9)
+        want = VALID_COLOR if valid[index] else INVALID_COLOR
+        np.testing.assert_allclose(box.get_facecolor()[0][:3], to_rgba(want)[:3])
+    assert ("valid (exact checker)" if valid[index] else "IN COLLISION") in fig._suptitle.get_text()
+
+
+def test_without_validity_the_robot_is_neutral(crossing):
+    robot, workspace, _, path, _ = crossing
+    fig = scenes.path_frame(robot, path, 3, workspace=workspace)
+    assert all(np.allclose(box.get_facecolor()[0][:3], to_rgba(scenes.UNCHECKED_COLOR)[:3]) for box in links(fig.axes[0]))
+    assert "exact" not in fig._suptitle.get_text()
+
+
+def test_the_blocks_near_the_robot_are_drawn_and_the_trace_stays_in_the_window(crossing):
+    robot, workspace, _, path, valid = crossing
+    index = FRAMES - 1  # the base inside a block: that block is drawn
+    scene = scenes.path_frame(robot, path, index, workspace=workspace, valid=valid, margin=1.0).axes[0]
+    lo, hi = np.array([scene.get_xlim(), scene.get_ylim(), scene.get_zlim()]).T
+    aabbs = robot.link_aabbs(path[index])[0]  # (L, 2, 3)
+    np.testing.assert_allclose(lo, np.maximum(aabbs[:, 0].min(axis=0) - 1.0, workspace.lower))
+    np.testing.assert_allclose(hi, np.minimum(aabbs[:, 1].max(axis=0) + 1.0, workspace.upper))
+    near = np.all((workspace.boxes[:, 0] <= hi) & (workspace.boxes[:, 1] >= lo), axis=1)
+    assert len([c for c in scene.collections if c.get_gid() == "block"]) == near.sum() >= 1
+    trace = np.array(line(scene, "trace").get_data_3d()).T  # (T, 3)
+    bases = robot.link_boxes(path)[0][:, 0]  # (T, 3)
+    inside = np.all((bases >= lo) & (bases <= hi), axis=1)
+    assert inside[index] and 0 < inside.sum()
+    np.testing.assert_allclose(trace[inside], bases[inside])
+    assert np.isnan(trace[~inside]).all()
+
+
+def test_the_series_panels_show_each_dof_clearance_and_probability(crossing):
+    robot, workspace, exact, path, valid = crossing
+    clearance = exact.clearances(path, cap=1.0)
+    probability = np.linspace(1.0, 0.0, FRAMES)
+    index, threshold = 7, 0.4
+    fig = scenes.path_frame(robot, path, index, workspace=workspace, valid=valid, clearance=clearance,
+                            probability=probability, threshold=threshold)
+    dof_ax, clearance_ax, probability_ax = fig.axes[1:]
+    along = np.linspace(0.0, 1.0, FRAMES)
+    dofs = [artist for artist in dof_ax.lines if artist.get_gid() == "dof"]
+    assert [artist.get_label() for artist in dofs] == list(robot.dof_names)
+    for k, artist in enumerate(dofs):
+        np.testing.assert_allclose(artist.get_xdata(), along)
+        np.testing.assert_allclose(artist.get_ydata(), (path[:, k] - robot.lower[k]) / (robot.upper[k] - robot.lower[k]))
+    np.testing.assert_allclose(line(clearance_ax, "clearance").get_ydata(), clearance)
+    assert clearance[0] > 0 and clearance[-1] == 0  # room at the start, none inside the block
+    np.testing.assert_allclose(line(probability_ax, "probability").get_ydata(), probability)
+    assert line(probability_ax, "threshold").get_ydata()[0] == threshold
+    for ax in fig.axes[1:]:
+        assert line(ax, "now").get_xdata()[0] == pytest.approx(along[index])
+    title = fig._suptitle.get_text()
+    assert f"frame {index} of {FRAMES - 1}" in title and f"P(valid) = {probability[index]:.2f}" in title
+    assert "valid at 0.40" in title  # 0.71 >= 0.4
+
+
+def test_only_the_given_series_get_panels(crossing):
+    robot, workspace, _, path, _ = crossing
+    assert len(scenes.path_frame(robot, path, 0, workspace=workspace).axes) == 2
+    assert len(scenes.path_frame(robot, path, 0, probability=np.ones(FRAMES)).axes) == 3
+
+
+def test_bad_input(crossing):
+    robot, workspace, _, path, _ = crossing
+    with pytest.raises(ValueError, match="index"):
+        scenes.path_frame(robot, path, FRAMES)
+    with pytest.raises(ValueError, match="one value per configuration"):
+        scenes.path_frame(robot, path, 0, probability=np.ones(FRAMES - 1))
+    with pytest.raises(ValueError, match="shape"):
+        scenes.path_frame(robot, path[:, :3], 0)

@@ -1,0 +1,134 @@
+"""Embedded viewer pages for notebooks: a recorded animation of the robot along a planned path.
+
+The recording is decoded here as viser's player reads it (a zstd frame of msgpack
+messages with binary arrays appended), so the tests see the frames a student sees.
+"""
+
+import base64
+import html
+import re
+
+import msgspec
+import numpy as np
+import pytest
+import zstandard
+
+from toolkit import viewer
+from toolkit import viewer_scene as draw
+
+
+def recording(document: str) -> tuple[dict, list[bytes]]:
+    """The ``.viser`` recording inside a self-contained page: its msgpack record and its binary buffers."""
+    data = base64.b64decode(re.search(r'__VISER_EMBED_DATA__="([^"]+)"', document).group(1))
+    inner = zstandard.ZstdDecompressor().decompress(data[8:], max_output_size=int.from_bytes(data[:8], "little"))
+    size = int.from_bytes(inner[:8], "little")
+    record = msgspec.msgpack.decode(inner[8: 8 + size])
+    buffers, offset = [], 8 + size
+    for length in record["binaryBufferLengths"]:
+        offset += -offset % 8  # each buffer starts 8-byte aligned
+        buffers.append(inner[offset: offset + length])
+        offset += length
+    return record, buffers
+
+
+def robot_poses(document: str) -> list[tuple[float, np.ndarray]]:
+    """``(time, link centres (L, 3))`` of the robot at each moment of a recording that places it (the last word)."""
+    record, buffers = recording(document)
+    poses = {}
+    for time, message in record["messages"]:
+        if message.get("name") == "/robot/links":  # created (props) or moved (updates)
+            array = (message.get("updates") or message.get("props") or {}).get("batched_positions")
+            if array is not None:
+                poses[time] = np.frombuffer(buffers[array["__binary_index"]], dtype=array["dtype"]).reshape(-1, 3)
+    return sorted(poses.items(), key=lambda pose: pose[0])
+
+
+@pytest.fixture(scope="module")
+def planned():
+    """A 3DC-7 viewer with a planned path (exact planner), stopped after the module."""
+    with viewer.Viewer("3dc7", seed=1, port=0) as v:
+        result = v.plan("BS", seed=0)
+        assert result.success and len(result.path) >= 2
+        yield v
+
+
+def test_the_animation_holds_one_robot_pose_per_frame_along_the_path(planned):
+    v, frames, seconds = planned, 12, 3.0
+    document = v.animation_html(frames=frames, seconds=seconds)
+    record, _ = recording(document)
+    assert record["durationSeconds"] == pytest.approx(seconds)
+    poses = robot_poses(document)
+    expected = draw.robot_boxes(v.robot, v.path_configurations(np.linspace(0, 1, frames))).centers.reshape(frames, -1, 3)
+    assert len(poses) == frames  # the scene as the recording starts, then one move per frame
+    times = np.array([time for time, _ in poses])
+    np.testing.assert_allclose(times, np.linspace(0.0, seconds, frames), atol=1e-9)
+    for (_, centers), want in zip(poses, expected):
+        np.testing.assert_allclose(centers, want, atol=1e-5)
+    assert not np.allclose(poses[0][1], poses[-1][1], atol=0.1)  # the robot really travels
+
+
+def test_the_animation_page_is_self_contained(planned):
+    document = planned.animation_html(frames=5, seconds=1.0)
+    assert document.lstrip().lower().startswith("<!doctype html")
+    assert not re.search(r'(src|href)="(https?:)?//', document)  # nothing fetched from elsewhere
+    names = {message.get("name") for _, message in recording(document)[0]["messages"]}
+    assert {"/workspace/obstacles", "/robot/links", "/plan/path", "/plan/roadmap"} <= names
+    assert len(document) < 3_000_000  # a few MB at most in a saved notebook
+
+
+def test_the_camera_starts_framing_the_whole_motion(planned):
+    v, frames = planned, 8
+    record, _ = recording(v.animation_html(frames=frames, seconds=1.0))
+    camera = {message["type"]: message for time, message in record["messages"]
+              if message["type"] in ("SetCameraLookAtMessage", "SetCameraPositionMessage")}
+    look_at, position = draw.path_camera(v.robot, v.path_configurations(np.linspace(0, 1, frames)))
+    np.testing.assert_allclose(camera["SetCameraLookAtMessage"]["look_at"], look_at)
+    np.testing.assert_allclose(camera["SetCameraPositionMessage"]["position"], position)
+    aabbs = v.robot.link_aabbs(v.path_configurations(np.linspace(0, 1, frames)))  # (F, L, 2, 3)
+    lo, hi = aabbs[:, :, 0].min(axis=(0, 1)), aabbs[:, :, 1].max(axis=(0, 1))
+    np.testing.assert_allclose(look_at, (lo + hi) / 2)  # the middle of everything the robot sweeps
+    np.testing.assert_allclose(np.linalg.norm(position - look_at),
+                               np.max(hi - lo) * np.linalg.norm(draw.PATH_VIEW))
+
+
+def test_the_animation_leaves_the_robot_and_the_camera_where_they_were(planned):
+    v = planned
+    v.set_configuration(v.path[0])
+    before = np.array(v.nodes["robot"].batched_positions)
+    camera = v.server.initial_camera.look_at.copy(), v.server.initial_camera.position.copy()
+    v.animation_html(frames=4, seconds=1.0)
+    np.testing.assert_allclose(v.q, v.path[0])
+    np.testing.assert_allclose(v.nodes["robot"].batched_positions, before)
+    assert v.valid
+    np.testing.assert_allclose(v.server.initial_camera.look_at, camera[0])
+    np.testing.assert_allclose(v.server.initial_camera.position, camera[1])
+
+
+def test_animation_iframe_embeds_the_page_escaped(planned):
+    snippet = planned.animation_iframe(300, frames=3, seconds=1.0)
+    assert snippet.startswith("<iframe srcdoc=") and 'height="300"' in snippet
+    document = html.unescape(re.search(r'srcdoc="([^"]*)"', snippet).group(1))
+    assert len(robot_poses(document)) == 3
+
+
+def test_srcdoc_iframe_quotes_the_document():
+    snippet = viewer.srcdoc_iframe('<p title="a & b">x</p>', height=120)
+    assert snippet == ('<iframe srcdoc="&lt;p title=&quot;a &amp; b&quot;&gt;x&lt;/p&gt;" width="100%" '
+                       'height="120" style="border:none"></iframe>')
+
+
+def test_an_animation_needs_a_path_and_frames(make_viewer):
+    v = make_viewer("2ds")
+    with pytest.raises(ValueError, match="no path"):
+        v.animation_html()
+    v.plan("BS", seed=0)
+    with pytest.raises(ValueError, match="frames >= 2"):
+        v.animation_html(frames=1)
+    with pytest.raises(ValueError, match="seconds > 0"):
+        v.animation_html(seconds=0.0)
+
+
+def test_a_snapshot_prints_nothing(capsys):
+    """viser's banner and "Server stopped" would be two stray outputs per snapshot in a notebook."""
+    snippet = viewer.embed("2ds", height=200)
+    assert snippet.startswith("<iframe") and capsys.readouterr().out == ""

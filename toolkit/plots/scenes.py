@@ -1,0 +1,118 @@
+"""Figures of notebook 05: a planned path of a 3D robot, one frame at a time (paper §III-B, Algorithm 1).
+
+A PRM path is a list of configurations joined by straight lines in configuration
+space (the straight-line local planner of §III-B). :func:`path_frame` shows one
+configuration along it in the workspace, among the blocks near the robot, next to
+what stays hidden in a 3D picture: every degree of freedom along the path, how much
+room the robot has (the exact checker's clearance bound) and what a learned model
+thinks of each configuration (P(valid), the MLP of §III-B).
+
+The 3D drawing of the robot and its nearby blocks is :mod:`toolkit.plots.cspace`'s.
+Every function returns a matplotlib ``Figure`` and never calls ``show()``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from ..robots import BoxRobot
+from ..workspace import Workspace
+from .cspace import INVALID_COLOR, VALID_COLOR, _draw_robot
+
+TRACE_COLOR = "tab:cyan"  # the path of the robot's base, as the viewer's path line
+UNCHECKED_COLOR = "tab:blue"  # the robot when no validity is given
+NOW_COLOR = "0.25"
+
+
+def path_frame(robot: BoxRobot, configurations, index: int, *, workspace: Workspace | None = None, valid=None,
+               clearance=None, probability=None, threshold: float = 0.5, margin: float = 1.0) -> Figure:
+    """Frame ``index`` of a path ``configurations (T, dof)`` evenly spaced along it.
+
+    Left (3D): the robot's link boxes at that frame among the blocks of ``workspace``
+    within ``margin`` of it (green if ``valid[index]``, red if not, blue if ``valid`` is
+    None) and the trace of its base along the whole path (cyan, inside the window).
+    Right, against the fraction of the path travelled, a line at this frame in each:
+    every DoF scaled to its bounds (0 = lower, 1 = upper; straight segments between
+    roadmap nodes show as straight lines); ``clearance (T,)``, a lower bound on the
+    distance to the nearest block (``checker.clearances``), if given; the model's
+    ``probability (T,)`` of validity with its ``threshold``, if given.
+    """
+    Q = robot.check_configs(configurations, "configurations")  # (T, dof)
+    frames = len(Q)
+    if not 0 <= index < frames:
+        raise ValueError(f"index must be in [0, {frames}), got {index}")
+    series = {name: _per_frame(values, frames, name)
+              for name, values in (("valid", valid), ("clearance", clearance), ("probability", probability))}
+    along = np.linspace(0.0, 1.0, frames)  # (T,)
+
+    fig = Figure(figsize=(11, 4.8))
+    left, right = fig.add_gridspec(1, 2, width_ratios=(1.05, 1.0), wspace=0.12)
+    scene = fig.add_subplot(left, projection="3d")
+    color = UNCHECKED_COLOR if series["valid"] is None else VALID_COLOR if series["valid"][index] else INVALID_COLOR
+    _draw_robot(scene, robot, Q[index : index + 1], [color], "3d", workspace, margin)
+    _draw_trace(scene, robot, Q)
+    scene.set_title("the robot and the blocks near it", fontsize=9)
+    scene.locator_params(nbins=4)  # few tick labels: drawing text is most of a frame's cost
+    scene.tick_params(labelsize=7)
+
+    panels = ["dof"] + [name for name in ("clearance", "probability") if series[name] is not None]
+    axes = right.subgridspec(len(panels), 1, hspace=0.15).subplots(sharex=True)
+    for ax, panel in zip(np.atleast_1d(axes), panels):
+        if panel == "dof":
+            scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
+            for k, name in enumerate(robot.dof_names):
+                ax.plot(along, scaled[:, k], linewidth=1.2, label=name, gid="dof")
+            ax.set_ylim(-0.05, 1.05)
+            ax.set_ylabel("DoF in bounds")
+            ax.legend(fontsize=6, ncol=min(robot.dof, 5), loc="upper center", bbox_to_anchor=(0.5, 1.32),
+                      frameon=False, handlelength=1.2)
+        elif panel == "clearance":
+            ax.plot(along, series["clearance"], color="k", linewidth=1.2, gid="clearance")
+            ax.fill_between(along, 0.0, series["clearance"], color="0.85")
+            ax.set_ylim(bottom=0.0)
+            ax.set_ylabel("clearance")
+        else:
+            p = series["probability"]
+            ax.plot(along, p, color="tab:purple", linewidth=1.2, gid="probability")
+            ax.axhline(threshold, color="k", linestyle="--", linewidth=0.8, gid="threshold")
+            ax.fill_between(along, 0.0, 1.0, where=p < threshold, color=INVALID_COLOR, alpha=0.15, linewidth=0)
+            ax.set_ylim(-0.02, 1.02)
+            ax.set_ylabel("P(valid)")
+        ax.axvline(along[index], color=NOW_COLOR, linewidth=1.0, gid="now")
+        ax.locator_params(axis="y", nbins=3)
+        ax.tick_params(labelsize=7)
+        ax.label_outer()
+    np.atleast_1d(axes)[-1].set_xlabel("fraction of the path")
+    fig.suptitle(_frame_title(index, frames, series, threshold), fontsize=10)
+    return fig
+
+
+def _draw_trace(ax, robot: BoxRobot, Q: np.ndarray) -> None:
+    """The base's path (first link's centre, ``(T, 3)``), left out where it leaves the 3D axes' window."""
+    trace = robot.link_boxes(Q)[0][:, 0].copy()  # (T, 3)
+    lo, hi = np.array([ax.get_xlim(), ax.get_ylim(), ax.get_zlim()]).T  # (3,) each
+    trace[~np.all((trace >= lo) & (trace <= hi), axis=1)] = np.nan  # mplot3d does not clip lines to the axes
+    ax.plot(*trace.T, color=TRACE_COLOR, linewidth=2.0, gid="trace")
+
+
+def _per_frame(values, frames: int, name: str) -> np.ndarray | None:
+    """``values`` as a float array ``(T,)``, or None; a clear error for a wrong length."""
+    if values is None:
+        return None
+    values = np.asarray(values, dtype=float).reshape(-1)
+    if len(values) != frames:
+        raise ValueError(f"{name} must have one value per configuration ({frames}), got {len(values)}")
+    return values
+
+
+def _frame_title(index: int, frames: int, series: dict, threshold: float) -> str:
+    parts = [f"frame {index} of {frames - 1}"]
+    if series["valid"] is not None:
+        parts.append("valid (exact checker)" if series["valid"][index] else "IN COLLISION (exact checker)")
+    if series["clearance"] is not None:
+        parts.append(f"clearance ≥ {series['clearance'][index]:.3f}")
+    if series["probability"] is not None:
+        p = series["probability"][index]
+        parts.append(f"P(valid) = {p:.2f} ({'valid' if p >= threshold else 'colliding'} at {threshold:.2f})")
+    return ", ".join(parts)
