@@ -163,6 +163,64 @@ def test_same_seed_same_result():
     assert runs[0].stats["exact_checks"] == runs[1].stats["exact_checks"]
 
 
+
+def traced_2ds_queries(flip, n_queries=6):
+    """Per 2DS query: (query, exact checker, result, trace) of a screened plan, a lying checker when ``flip``."""
+    scenario = scenarios.get("2ds")
+    runs = []
+    for i, q in enumerate(make_queries(scenario, seed=0, n_workspaces=n_queries // 2, per_workspace=2)):
+        exact, trace = exact_checker(q.workspace, scenario.robot), []
+        checker = NoisyChecker(exact, flip, seed=i) if flip else None
+        result = plan(exact, q.start, q.goal, sampler="BS", checker=checker, options=PRMOptions(n_samples=150),
+                      rng=np.random.default_rng(i), trace=trace)
+        runs.append((q, exact, result, trace))
+    return runs
+
+
+def test_trace_follows_algorithm_1_and_ends_with_the_returned_path():
+    for q, exact, result, trace in traced_2ds_queries(flip=0.0):
+        stages = [step.stage for step in trace]
+        assert set(stages) <= set(prm.STAGES)
+        assert stages[:3] == ["sample", "connect", "candidate"] and stages[-1] == "path"
+        first, last = trace[0], trace[-1]
+        assert first.round == 1 and {prm.START, prm.GOAL} <= set(first.new_nodes.tolist())
+        assert len(first.edges) == 0 and len(trace[1].edges) > 0  # connecting adds the edges
+        np.testing.assert_array_equal(last.nodes[last.path], result.path)
+        np.testing.assert_array_equal(last.edges, result.roadmap.edges)
+
+
+def test_tracing_changes_nothing_but_records():
+    scenario = scenarios.get("2ds")
+    q = make_queries(scenario, seed=0, n_workspaces=1, per_workspace=1)[0]
+    exact = exact_checker(q.workspace, scenario.robot)
+    runs = [plan(exact, q.start, q.goal, sampler="OB", checker=NoisyChecker(exact, 0.2, 3),
+                 options=PRMOptions(n_samples=150), rng=np.random.default_rng(5), trace=trace) for trace in (None, [])]
+    np.testing.assert_array_equal(runs[0].path, runs[1].path)
+    np.testing.assert_array_equal(runs[0].roadmap.edges, runs[1].roadmap.edges)
+    assert runs[0].stats["exact_checks"] == runs[1].stats["exact_checks"]
+
+
+def test_traced_repairs_remove_what_the_exact_checker_rejects_from_the_candidate_path():
+    repairs = 0
+    for q, exact, result, trace in traced_2ds_queries(flip=0.3):
+        assert result.success
+        assert sum(step.stage == "repair" for step in trace) == result.stats["repairs"]
+        for step, after in zip(trace[:-1], trace[1:]):
+            if step.stage != "repair":
+                continue
+            repairs += 1
+            assert len(step.removed_nodes) + len(step.removed_edges) > 0
+            assert set(step.removed_nodes.tolist()) <= set(step.path.tolist())
+            assert not exact.are_valid(step.nodes[step.removed_nodes]).any()
+            path_edges = {tuple(sorted(pair)) for pair in zip(step.path[:-1], step.path[1:])}
+            assert {tuple(step.edges[e]) for e in step.removed_edges} <= path_edges
+            Q0, Q1 = step.nodes[step.edges[step.removed_edges].T]
+            assert not check_edges(exact, Q0, Q1, result.stats["resolution"] / 10).any()
+            assert len(after.nodes) == len(step.nodes) - len(step.removed_nodes)
+            if len(step.removed_nodes) == 0:
+                assert len(after.edges) == len(step.edges) - len(step.removed_edges)
+    assert repairs > 0  # 30 % lies: some candidate paths fail verification
+
 def test_bad_input_gives_clear_errors():
     scenario = scenarios.get("2ds")
     q = make_queries(scenario, seed=0, n_workspaces=1, per_workspace=1)[0]

@@ -34,6 +34,11 @@
    A returned path is always valid under the exact checker at both resolutions;
    otherwise ``success`` is False.
 
+To watch these steps, pass ``trace=[]``: the planner appends a :class:`PlanStep`, a
+snapshot of the roadmap, at every stage (``STAGES``: new samples, edges, bridges, each
+candidate path, each repair, the verified path), e.g. to draw the roadmap as it grows
+and is repaired (notebook 04). Snapshots cost copies: time the planner without it.
+
 "With" and "without prediction" differ in the ``checker`` argument only. With
 prediction, edges are decided in one of two ways (``PRMOptions.screen_edges``):
 
@@ -77,6 +82,16 @@ AUXILIARY = {  # PRMOptions.auxiliary: how rounds after the first sample, with p
     "confirmed": "with prediction, keeping what the exact checker confirms; every PRMOptions.exact_every-th round "
                  "(counting from the first) with the exact checker",
     "predicted": "with prediction, like the first (nodes are checked when a candidate path uses them)",
+}
+
+STAGES = {  # PlanStep.stage: what the planner just did (Algorithm 1, §III-B)
+    "sample": "added this round's accepted samples S' as nodes (lines 2-3; round 1 also start and goal)",
+    "connect": "tried edges to each new node's k nearest neighbours, then bridges between start's and goal's "
+               "components (line 4)",
+    "bridge": "after repairs left start and goal apart, tried the next closest pairs between their components",
+    "candidate": "found the cheapest start-goal path, not yet verified (line 5)",
+    "repair": "the exact checker rejected the candidate's removed_nodes or removed_edges; they are removed next",
+    "path": "the exact checker confirmed the candidate's nodes and edges at both resolutions: the answer",
 }
 
 
@@ -128,9 +143,29 @@ class PlanResult:
     roadmap: Roadmap
 
 
+@dataclass(frozen=True)
+class PlanStep:
+    """A snapshot of the roadmap after one stage of the planner (``STAGES``), for ``plan(..., trace=[])``.
+
+    Indices refer to this snapshot's ``nodes`` and ``edges``: a repair removes nodes and
+    so shifts the indices of later ones in the steps after it.
+    """
+
+    stage: str  # a key of STAGES
+    round: int  # the sampling round (1, 2, ...)
+    nodes: np.ndarray  # (V, dof)
+    node_verified: np.ndarray  # (V,) bool: confirmed by the exact checker
+    edges: np.ndarray  # (E, 2) node indices, i < j
+    new_nodes: np.ndarray  # (M,) the nodes this stage added ("sample"); empty otherwise
+    path: np.ndarray  # (P,) node indices of the candidate path ("candidate", "repair", "path"); empty otherwise
+    removed_nodes: np.ndarray  # (R,) nodes the exact checker rejected ("repair"); empty otherwise
+    removed_edges: np.ndarray  # (R,) indices into edges the exact checker rejected ("repair"); empty otherwise
+
+
 def plan(exact: CollisionChecker, start, goal, *, sampler: str = "BS", checker: CollisionChecker | None = None,
-         options: PRMOptions | None = None, rng: np.random.Generator) -> PlanResult:
-    """Solve one query ``start -> goal`` (``(dof,)`` each) with PRM; ``checker`` decides samples (default: ``exact``)."""
+         options: PRMOptions | None = None, rng: np.random.Generator, trace: list | None = None) -> PlanResult:
+    """Solve one query ``start -> goal`` (``(dof,)`` each) with PRM; ``checker`` decides samples (default: ``exact``);
+    a ``trace`` list receives a :class:`PlanStep` at every stage."""
     began = time.perf_counter()
     options = options or PRMOptions()
     robot = exact.robot
@@ -139,7 +174,7 @@ def plan(exact: CollisionChecker, start, goal, *, sampler: str = "BS", checker: 
         raise ValueError(f"checker is for a {checker.robot.dof}-DoF robot, the exact checker for {robot.dof}")
     endpoints = np.concatenate([_single(robot, start, "start"), _single(robot, goal, "goal")])  # (2, dof)
     planner = _Planner(exact, checker, options, make_sampler(sampler, checker, **options.sampler_options),
-                       make_sampler(sampler, exact, **options.sampler_options))
+                       make_sampler(sampler, exact, **options.sampler_options), trace)
     for name, ok, q in zip(("start", "goal"), exact.are_valid(endpoints), endpoints):
         if not ok:
             raise ValueError(f"{name} configuration {np.round(q, 4).tolist()} is in collision or out of bounds")
@@ -150,8 +185,10 @@ def plan(exact: CollisionChecker, start, goal, *, sampler: str = "BS", checker: 
         with planner.timed("sampling_s", "node_checks"):
             S_valid, verified = planner.sample_round(rng)  # S' (M, dof)
         new = np.concatenate([new, planner.roadmap.add_nodes(S_valid, verified=verified)])
+        planner.record("sample", new_nodes=new)
         with planner.timed("connection_s", "edge_checks"):
             planner.connect(new)
+        planner.record("connect")
         new = new[:0]
         with planner.timed("query_s", "verify_checks"):
             path = planner.verified_path()
@@ -162,6 +199,7 @@ def plan(exact: CollisionChecker, start, goal, *, sampler: str = "BS", checker: 
             with planner.timed("connection_s", "edge_checks"):
                 if not planner.bridge():
                     break
+            planner.record("bridge")
             with planner.timed("query_s", "verify_checks"):
                 path = planner.verified_path()
     stats = planner.finish(began)
@@ -180,8 +218,8 @@ def _single(robot, q, name: str) -> np.ndarray:
 class _Planner:
     """The state of one query: roadmap, checkers, counters and timers."""
 
-    def __init__(self, exact, checker, options: PRMOptions, sampler, exact_sampler):
-        self.exact, self.checker, self.options = exact, checker, options
+    def __init__(self, exact, checker, options: PRMOptions, sampler, exact_sampler, trace: list | None = None):
+        self.exact, self.checker, self.options, self.trace = exact, checker, options, trace
         self.sampler, self.exact_sampler = sampler, exact_sampler  # the same sampler over each checker
         self.predicted = checker is not exact
         self.resolution = default_resolution(exact.robot) if options.resolution is None else float(options.resolution)
@@ -194,6 +232,15 @@ class _Planner:
                       "sampling_s": 0.0, "connection_s": 0.0, "query_s": 0.0,
                       "node_checks": 0, "edge_checks": 0, "verify_checks": 0}
         self._start_counts, self._start_bounded = self._counts(), exact.n_bounded
+
+    def record(self, stage: str, *, new_nodes=(), path=(), removed_nodes=(), removed_edges=()) -> None:
+        """Append a :class:`PlanStep` of the roadmap as it is now to the trace (if tracing)."""
+        if self.trace is None:
+            return
+        roadmap, indices = self.roadmap, lambda a: np.array(a, dtype=int)
+        self.trace.append(PlanStep(stage, self.stats["rounds"], roadmap.nodes.copy(), roadmap.node_verified.copy(),
+                                   roadmap.edges.copy(), indices(new_nodes), indices(path), indices(removed_nodes),
+                                   indices(removed_edges)))
 
     def _counts(self) -> tuple[int, int]:
         """Configurations checked so far: (exact, predicted)."""
@@ -250,12 +297,12 @@ class _Planner:
         """Node indices of a start-goal path the exact checker confirms, repairing the roadmap; None if none."""
         roadmap, options = self.roadmap, self.options
         while (path := roadmap.shortest_path(START, GOAL)) is not None:
+            self.record("candidate", path=path)
             unsure = path[~roadmap.node_verified[path]]
             ok = self.exact.are_valid(roadmap.nodes[unsure]) if len(unsure) else np.zeros(0, bool)
             roadmap.node_verified[unsure[ok]] = True
             if not ok.all():
-                self._repaired(nodes=len(unsure) - ok.sum())
-                roadmap.remove_nodes(unsure[~ok])
+                self._repair(path, nodes=unsure[~ok])
                 continue
             steps = roadmap.edge_index(path)
             for resolution in self.verify_resolutions:
@@ -266,24 +313,29 @@ class _Planner:
                     refuted = refute_at(self.exact, Q0, Q1, suspect, resolution)  # one exact check each, first
                     roadmap.edge_suspect[unsure] = np.nan  # looked at
                     if refuted.any():
-                        self._repaired(edges=refuted.sum())
-                        roadmap.remove_edges(unsure[refuted])
+                        self._repair(path, edges=unsure[refuted])
                         break
                 ok = certify_edges(self.exact, Q0, Q1, resolution, spacing=self.resolution * options.certify_spacing)
                 roadmap.edge_checked_at[unsure[ok]] = resolution  # remembered across repairs
                 roadmap.edge_cost[unsure[ok]] = roadmap.distance(Q0[ok], Q1[ok])
                 if not ok.all():
-                    self._repaired(edges=len(unsure) - ok.sum())
-                    roadmap.remove_edges(unsure[~ok])
+                    self._repair(path, edges=unsure[~ok])
                     break
             else:
+                self.record("path", path=path)
                 return path
         return None
 
-    def _repaired(self, nodes: int = 0, edges: int = 0) -> None:
+    def _repair(self, path: np.ndarray, nodes=(), edges=()) -> None:
+        """Remove the candidate ``path``'s ``nodes`` or ``edges`` (indices) that the exact checker rejected."""
+        self.record("repair", path=path, removed_nodes=nodes, removed_edges=edges)
         self.stats["repairs"] += 1
-        self.stats["removed_nodes"] += int(nodes)
-        self.stats["removed_edges"] += int(edges)
+        self.stats["removed_nodes"] += len(nodes)
+        self.stats["removed_edges"] += len(edges)
+        if len(nodes):
+            self.roadmap.remove_nodes(np.asarray(nodes, dtype=int))
+        if len(edges):
+            self.roadmap.remove_edges(np.asarray(edges, dtype=int))
 
     def finish(self, began: float) -> dict:
         exact, predicted = np.subtract(self._counts(), self._start_counts)

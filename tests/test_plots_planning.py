@@ -1,0 +1,173 @@
+"""Planning figures (notebook 04) draw what they are given: C-obstacles, samples, roadmaps, repairs, bar heights."""
+
+import numpy as np
+import pytest
+from matplotlib.collections import LineCollection
+from matplotlib.colors import to_rgba, to_rgba_array
+from matplotlib.figure import Figure
+
+from toolkit import scenarios
+from toolkit.collision import exact_checker
+from toolkit.plots import planning
+from toolkit.prm import PlanStep, PRMOptions, plan
+from toolkit.queries import make_queries
+
+SCENARIO = scenarios.get("2ds")
+
+
+@pytest.fixture(scope="module")
+def query():
+    return make_queries(SCENARIO, seed=0, n_workspaces=1, per_workspace=1)[0]
+
+
+@pytest.fixture(scope="module")
+def exact(query):
+    return exact_checker(query.workspace, SCENARIO.robot)
+
+
+def is_color(colors, name) -> np.ndarray:
+    """``(N,)`` whether each of ``colors`` (RGBA rows or a colour name) is the colour ``name``."""
+    return np.all(np.isclose(to_rgba_array(colors), to_rgba(name)), axis=1)
+
+
+def segments(ax) -> list[np.ndarray]:
+    """Every line collection's segments, ``(S, 2, 2)`` each, in drawing order."""
+    return [np.array(c.get_segments()).reshape(-1, 2, 2) for c in ax.collections if isinstance(c, LineCollection)]
+
+
+def test_cspace_image_is_dark_exactly_on_the_grown_blocks(exact, query):
+    fig = planning.samplers(exact, {"BS": np.zeros((0, 2))})
+    image = fig.axes[0].images[0]
+    blocked = np.asarray(image.get_array(), dtype=bool)  # (H, W), row = y
+    robot = SCENARIO.robot
+    assert image.get_extent() == [robot.lower[0], robot.upper[0], robot.lower[1], robot.upper[1]]
+    cell = (robot.upper - robot.lower) / blocked.shape[::-1]  # (2,) pixel size along x, y
+    xs, ys = (robot.lower[a] + (np.arange(blocked.shape[1 - a]) + 0.5) * cell[a] for a in (0, 1))
+    X, Y = np.meshgrid(xs, ys)  # (H, W)
+    half = robot.half_extents[0]
+    inside, near_edge = np.zeros_like(blocked), np.zeros_like(blocked)
+    for lo, hi in query.workspace.boxes:  # C-obstacle of an axis-aligned square: the block grown by its half size
+        lo, hi = lo - half, hi + half
+        inside |= (X >= lo[0]) & (X <= hi[0]) & (Y >= lo[1]) & (Y <= hi[1])
+        near_edge |= np.isclose(X, lo[0]) | np.isclose(X, hi[0]) | np.isclose(Y, lo[1]) | np.isclose(Y, hi[1])
+    assert blocked.shape == (300, 300) and 0.05 < blocked.mean() < 0.6
+    np.testing.assert_array_equal(blocked[~near_edge], inside[~near_edge])
+
+
+def test_cspace_needs_a_2d_robot():
+    scenario = scenarios.get("3dc7")
+    ws = make_queries(scenario, seed=0, n_workspaces=1)[0].workspace
+    with pytest.raises(ValueError, match="2-DoF"):
+        planning.cspace_validity(exact_checker(ws, scenario.robot))
+
+
+def test_samplers_one_panel_per_sampler_with_its_samples_over_the_blocks(exact, query, rng):
+    samples = {name: rng.uniform(0, 31, size=(n, 2)) for name, n in (("BS", 40), ("OB", 7), ("G", 0), ("BT", 1))}
+    fig = planning.samplers(exact, samples, attempts=200)
+    assert isinstance(fig, Figure) and len(fig.axes) == 4
+    for ax, (name, Q) in zip(fig.axes, samples.items()):
+        np.testing.assert_array_equal(ax.collections[0].get_offsets(), Q)
+        assert ax.get_title() == f"{name}: {len(Q)} sample{'' if len(Q) == 1 else 's'} of 200 attempts"
+        blocks = [(p.get_xy(), p.get_width(), p.get_height()) for p in ax.patches[:-1]]  # the last: the bounds
+        assert [(tuple(lo), w, h) for lo, (w, h) in zip(query.workspace.boxes[:, 0], np.ptp(query.workspace.boxes, axis=1))] \
+            == [(tuple(xy), w, h) for xy, w, h in blocks]
+
+
+def test_sample_sets_marks_accepted_samples_that_are_truly_in_collision(exact, rng):
+    S = SCENARIO.robot.sample(rng, 300)
+    accepted = rng.random(300) < 0.7  # a checker that accepts at random
+    truth = exact.are_valid(S)
+    ax = planning.sample_sets(exact, S, accepted).axes[0]
+    rejected, kept, wrong = ax.collections
+    np.testing.assert_array_equal(rejected.get_offsets(), S[~accepted])
+    np.testing.assert_array_equal(kept.get_offsets(), S[accepted & truth])
+    np.testing.assert_array_equal(wrong.get_offsets(), S[accepted & ~truth])
+    assert len(S[accepted & ~truth]) > 0 and is_color(wrong.get_facecolors(), planning.REPAIR_COLOR).all()
+    assert f"S', truly in collision: {(accepted & ~truth).sum()}" in [t.get_text() for t in ax.get_legend().texts]
+
+
+def a_repair_step() -> PlanStep:
+    """Five nodes in a row from start (0) to goal (1); the path 0-2-3-4-1; the repair removes node 3 and edge 1."""
+    nodes = np.array([[2.0, 2.0], [12.0, 2.0], [4.0, 3.0], [6.0, 3.0], [9.0, 3.0]])
+    edges = np.array([[0, 2], [2, 3], [3, 4], [1, 4], [0, 1]])
+    return PlanStep("repair", 2, nodes, np.array([True, True, True, False, False]), edges, np.zeros(0, int),
+                    np.array([0, 2, 3, 4, 1]), np.array([3]), np.array([1]))
+
+
+def test_roadmap_draws_every_edge_and_the_repair_in_red(exact):
+    step = a_repair_step()
+    ax = planning.roadmap(exact, step, title="a repair").axes[0]
+    kept, removed = segments(ax)
+    assert len(kept) + len(removed) == len(step.edges)
+    np.testing.assert_array_equal(removed, step.nodes[step.edges[[1]]])
+    lines = [c for c in ax.collections if isinstance(c, LineCollection)]
+    assert [is_color(c.get_colors(), planning.REPAIR_COLOR).all() for c in lines] == [False, True]
+    points = [c for c in ax.collections if not isinstance(c, LineCollection)]
+    confirmed, unconfirmed, removed_nodes = (points[i].get_offsets() for i in range(3))
+    np.testing.assert_array_equal(confirmed, step.nodes[:3])
+    np.testing.assert_array_equal(unconfirmed, step.nodes[3:])
+    np.testing.assert_array_equal(removed_nodes, step.nodes[[3]])
+    assert is_color(points[2].get_facecolors(), planning.REPAIR_COLOR).all()
+    (path,) = ax.lines
+    np.testing.assert_array_equal(np.c_[path.get_xdata(), path.get_ydata()], step.nodes[step.path])
+    assert ax.get_title() == "round 2, repair: 5 nodes, 5 edges"
+
+
+def test_roadmap_of_a_real_plan_draws_as_many_edges_as_the_roadmap_has(exact, query):
+    trace = []
+    result = plan(exact, query.start, query.goal, sampler="G", options=PRMOptions(n_samples=100),
+                  rng=np.random.default_rng(0), trace=trace)
+    ax = planning.roadmap(exact, trace[-1]).axes[0]
+    kept, removed = segments(ax)
+    assert len(kept) == len(result.roadmap.edges) > 0 and len(removed) == 0
+    assert is_color(ax.lines[0].get_color(), planning.PATH_COLORS["path"]).all()
+
+
+def test_roadmap_steps_one_panel_per_step(exact):
+    steps = [a_repair_step()] * 4
+    fig = planning.roadmap_steps(exact, steps, columns=3)
+    visible = [ax for ax in fig.axes if ax.axison]
+    assert len(fig.axes) == 6 and len(visible) == 4
+
+
+PLANNING = {  # sampler -> mode -> summary (seconds)
+    s: {m: {"sampling_s": 0.01 * (i + 1) * f, "connection_s": 0.1 * f, "query_s": 0.02 * f,
+            "total_s": (0.01 * (i + 1) + 0.12 + 0.005) * f} for m, f in (("without", 1.0), ("with", 0.5))}
+    for i, s in enumerate(("BS", "OB", "G", "BT"))
+}
+
+
+def test_stage_times_one_stacked_bar_per_sampler_and_mode_with_the_given_heights():
+    ax = planning.stage_times({"2DS": PLANNING}).axes[0]
+    bars = {c.get_label(): [p.get_height() for p in c.patches] for c in ax.containers}
+    assert [t.get_text() for t in ax.figure.legends[0].texts] == list(bars)
+    assert list(bars) == [planning.STAGE_LABELS[k] for k in ("sampling_s", "connection_s", "query_s", "other_s")]
+    order = [(s, m) for s in ("BS", "OB", "G", "BT") for m in ("without", "with")]
+    for key in ("sampling_s", "connection_s", "query_s"):
+        np.testing.assert_allclose(bars[planning.STAGE_LABELS[key]], [PLANNING[s][m][key] for s, m in order])
+    np.testing.assert_allclose(np.sum(list(bars.values()), axis=0), [PLANNING[s][m]["total_s"] for s, m in order])
+    assert [t.get_text() for t in ax.texts] == ["0.50x"] * 4
+    assert [t.get_text() for t in ax.get_xticklabels()][:2] == ["BS\nwithout", "BS\nwith"]
+
+
+def test_ratio_comparison_bars_are_the_ratios_on_a_log_scale():
+    sources = {"paper": {"BS": 0.5, "OB": 0.4, "G": 0.3, "BT": 0.2}, "ours": {"BS": 2.0, "OB": 1.5, "G": 1.1, "BT": 0.9}}
+    fig = planning.ratio_comparison({"2DS sampling": sources, "3DC-7 total": sources})
+    assert len(fig.axes) == 2
+    ax = fig.axes[0]
+    assert ax.get_yscale() == "log" and ax.get_title() == "2DS sampling"
+    assert {"0.2", "0.5", "1", "2"} <= {t.get_text() for t in ax.get_yticklabels()}
+    assert [t.get_text() for t in fig.legends[0].texts] == list(sources)
+    for container, (name, ratios) in zip(ax.containers, sources.items()):
+        assert container.get_label() == name
+        np.testing.assert_allclose([p.get_height() for p in container.patches], list(ratios.values()))
+
+
+def test_throughputs_bar_per_scenario_and_checker():
+    rates = {"2DS": {"exact": 9e7, "learned": 3e6}, "3DC-7": {"exact": 2e5, "learned": 2.5e6}}
+    ax = planning.throughputs(rates).axes[0]
+    exact_bars, learned_bars = ax.containers
+    np.testing.assert_allclose([p.get_height() for p in exact_bars.patches], [9e7, 2e5])
+    np.testing.assert_allclose([p.get_height() for p in learned_bars.patches], [3e6, 2.5e6])
+    assert [t.get_text() for t in ax.get_xticklabels()] == ["2DS", "3DC-7"] and ax.get_yscale() == "log"
+    assert [t.get_text() for t in ax.texts] == ["90M/s", "200k/s", "3M/s", "2.5M/s"]

@@ -1,0 +1,220 @@
+"""Figures of PRM with and without prediction (paper §III-B, Algorithm 1; §VI, Table 3): notebook 04.
+
+The 2D figures draw the point robot's configuration space, where a configuration is
+the robot's centre (x, y): C-obstacles (the blocks grown by the robot's half-size, as
+the exact checker sees them) are shaded, the blocks themselves outlined, and the
+bounds of the centre dotted (half a robot inside the region). Samples,
+roadmaps and paths are drawn over it. The other figures compare timings and
+throughputs. Every function returns a matplotlib ``Figure`` and never calls ``show()``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.collections import LineCollection
+from matplotlib.colors import ListedColormap
+from matplotlib.figure import Figure
+from matplotlib.ticker import NullFormatter
+from matplotlib.patches import Rectangle
+
+from ..collision import CollisionChecker
+from ..paper_numbers import SAMPLERS
+from ..prm import GOAL, START, PlanStep
+from .cspace import slice_configs
+
+MODES = ("without", "with")
+STAGE_KEYS = ("sampling_s", "connection_s", "query_s")  # PRM stats, in the order the planner spends them
+STAGE_LABELS = {"sampling_s": "sampling (S, S')", "connection_s": "connection (edges)",
+                "query_s": "query (path, verification, repair)", "other_s": "other (encoding, set-up)"}
+C_OBSTACLE = ListedColormap(["white", "0.78"])  # valid, invalid
+EDGE_COLOR, NODE_COLOR, UNCONFIRMED_COLOR = "0.55", "0.15", "tab:blue"
+PATH_COLORS = {"candidate": "tab:orange", "repair": "tab:orange", "path": "tab:green"}
+REPAIR_COLOR = "tab:red"  # what the exact checker rejected: removed by a repair, or a wrongly accepted sample
+
+
+def cspace_validity(exact: CollisionChecker, pixels: int = 300) -> tuple[np.ndarray, tuple[float, float, float, float]]:
+    """The 2D robot's configuration space as an image: ``(H, W)`` bool validity at pixel centres (row = y), and the
+    image's extent ``(x0, x1, y0, y1)``: the robot's bounds."""
+    robot = exact.robot
+    if robot.dof != 2:
+        raise ValueError(f"a 2D configuration-space figure needs a 2-DoF robot, got {robot.name!r} ({robot.dof} DoF)")
+    _, _, Q = slice_configs(robot, robot.lower, (0, 1), pixels)  # (W, H, 2): Q[a, b] = (x_a, y_b)
+    valid = exact.are_valid(Q.reshape(-1, 2)).reshape(pixels, pixels).T  # (H, W)
+    return valid, (robot.lower[0], robot.upper[0], robot.lower[1], robot.upper[1])
+
+
+def _draw_cspace(ax, exact: CollisionChecker) -> None:
+    """C-obstacles shaded (the exact checker's answer), the blocks themselves outlined."""
+    valid, extent = cspace_validity(exact)
+    ax.imshow(~valid, origin="lower", extent=extent, cmap=C_OBSTACLE, vmin=0, vmax=1, interpolation="nearest")
+    ws = exact.workspace
+    for lo, hi in ws.boxes:
+        ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor="0.3", linewidth=0.8))
+    ax.add_patch(Rectangle(extent[::2], extent[1] - extent[0], extent[3] - extent[2], fill=False, edgecolor="0.3",
+                           linewidth=0.8, linestyle=":"))  # the bounds of the robot's centre
+    ax.set_xlim(ws.lower[0], ws.upper[0])
+    ax.set_ylim(ws.lower[1], ws.upper[1])
+    ax.set_aspect("equal")
+    ax.set_xticks([])
+    ax.set_yticks([])
+
+
+def samplers(exact: CollisionChecker, samples: dict[str, np.ndarray], attempts: int | None = None) -> Figure:
+    """One panel per sampler: its samples ``(M, 2)`` over the C-obstacles (§III-B, "Sample Generation")."""
+    fig = Figure(figsize=(3.2 * len(samples), 3.6))
+    axes = fig.subplots(1, len(samples), squeeze=False)[0]
+    for ax, (name, Q) in zip(axes, samples.items()):
+        _draw_cspace(ax, exact)
+        ax.scatter(Q[:, 0], Q[:, 1], s=6, color=NODE_COLOR)
+        count = f"{len(Q)} sample{'' if len(Q) == 1 else 's'}"
+        ax.set_title(f"{name}: {count}" + (f" of {attempts} attempts" if attempts else ""), fontsize=9)
+    fig.suptitle("The four samplers over the exact checker (grey: C-obstacles)")
+    fig.tight_layout()
+    return fig
+
+
+def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) -> Figure:
+    """Algorithm 1, lines 2-3: the attempts ``S (N, 2)``, the ones a checker accepts (``accepted (N,)`` bool: S'),
+    and among those the ones the exact checker rejects (the dangerous mistakes, in the repair colour)."""
+    truly_valid = exact.are_valid(S)
+    fig = Figure(figsize=(4.6, 4.6))
+    ax = fig.subplots()
+    _draw_cspace(ax, exact)
+    groups = [(~accepted, dict(marker="x", s=10, color="0.5"), "rejected"),
+              (accepted & truly_valid, dict(s=10, color=UNCONFIRMED_COLOR), "S' (accepted)"),
+              (accepted & ~truly_valid, dict(s=30, marker="X", color=REPAIR_COLOR), "S', truly in collision")]
+    for mask, style, label in groups:
+        ax.scatter(S[mask, 0], S[mask, 1], label=f"{label}: {mask.sum()}", **style)
+    ax.legend(fontsize=7, loc="upper left", framealpha=0.9)
+    ax.set_title(f"S: {len(S)} uniform attempts", fontsize=9)
+    fig.tight_layout()
+    return fig
+
+
+def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
+    """One planner step: edges, nodes (hollow: not yet confirmed exactly), start and goal, the candidate path,
+    and what a repair removes (in the repair colour)."""
+    _draw_cspace(ax, exact)
+    P = step.nodes  # (V, 2)
+    removed_edge = np.zeros(len(step.edges), dtype=bool)
+    removed_edge[step.removed_edges] = True
+    ax.add_collection(LineCollection(P[step.edges[~removed_edge]], colors=EDGE_COLOR, linewidths=0.5, zorder=2))
+    confirmed = step.node_verified
+    ax.scatter(*P[confirmed].T, s=7, color=NODE_COLOR, zorder=3)
+    ax.scatter(*P[~confirmed].T, s=9, facecolors="none", edgecolors=UNCONFIRMED_COLOR, linewidths=0.7, zorder=3)
+    if len(step.path):
+        ax.plot(*P[step.path].T, color=PATH_COLORS[step.stage], linewidth=2.2, zorder=4)
+    ax.add_collection(LineCollection(P[step.edges[removed_edge]], colors=REPAIR_COLOR, linewidths=3, zorder=5))
+    ax.scatter(*P[step.removed_nodes].T, s=70, marker="X", color=REPAIR_COLOR, zorder=5)
+    for node, marker, color in ((START, "s", "tab:green"), (GOAL, "*", "gold")):
+        ax.scatter(*P[node], s=110, marker=marker, color=color, edgecolors="black", zorder=6)
+    ax.set_title(f"round {step.round}, {step.stage}: {len(P)} nodes, {len(step.edges)} edges", fontsize=9)
+
+
+def roadmap(exact: CollisionChecker, step: PlanStep, title: str = "") -> Figure:
+    """The roadmap at one step of Algorithm 1 (a :class:`~toolkit.prm.PlanStep` of ``plan(..., trace=[])``)."""
+    fig = Figure(figsize=(5, 5.2))
+    ax = fig.subplots()
+    _draw_roadmap(ax, exact, step)
+    if title:
+        fig.suptitle(title, fontsize=10)
+    fig.tight_layout()
+    return fig
+
+
+def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int = 3) -> Figure:
+    """Several steps of Algorithm 1 side by side, the roadmap drawn at each (one panel per step)."""
+    rows = -(-len(steps) // columns)
+    fig = Figure(figsize=(3.6 * columns, 4.0 * rows))
+    axes = fig.subplots(rows, columns, squeeze=False).ravel()
+    for ax, step in zip(axes, steps):
+        _draw_roadmap(ax, exact, step)
+    for ax in axes[len(steps):]:
+        ax.set_axis_off()
+    fig.suptitle("Algorithm 1 step by step (hollow: not yet confirmed exactly; red: removed by a repair)")
+    fig.tight_layout()
+    return fig
+
+
+def stage_times(panels: dict[str, dict]) -> Figure:
+    """Per panel (e.g. a scenario), a ``planning`` table ``{sampler: {"without": summary, "with": summary}}``
+    (``queries.summarize`` means): one stacked bar per sampler and mode, one segment per planner stage, the rest
+    of ``total_s`` on top as "other"; the total's with / without ratio above each pair."""
+    fig = Figure(figsize=(5.2 * len(panels), 4.6))
+    axes = fig.subplots(1, len(panels), squeeze=False)[0]
+    for ax, (title, planning) in zip(axes, panels.items()):
+        names = [s for s in SAMPLERS if s in planning]
+        x = np.arange(len(names))[:, None] + np.array([-0.2, 0.2])  # (samplers, modes) bar centres
+        table = {key: np.array([[planning[s][m][key] for m in MODES] for s in names]) for key in STAGE_KEYS + ("total_s",)}
+        table["other_s"] = np.maximum(table["total_s"] - sum(table[k] for k in STAGE_KEYS), 0.0)
+        bottom = np.zeros_like(table["total_s"])
+        for key in STAGE_KEYS + ("other_s",):
+            ax.bar(x.ravel(), table[key].ravel(), 0.38, bottom=bottom.ravel(), label=STAGE_LABELS[key],
+                   edgecolor="white", linewidth=0.5)
+            bottom = bottom + table[key]
+        ratio = table["total_s"][:, 1] / np.maximum(table["total_s"][:, 0], 1e-12)
+        for i, r in enumerate(ratio):
+            ax.annotate(f"{r:.2f}x", (i, bottom[i].max()), xytext=(0, 3), textcoords="offset points",
+                        ha="center", fontsize=8)
+        ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=7)
+        ax.set_ylabel("seconds per query (mean)")
+        ax.set_ylim(0, bottom.max() * 1.15)
+        ax.set_title(f"{title}: with / without prediction, total", fontsize=9)
+    fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=4, fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0, 0.07, 1, 1))
+    return fig
+
+
+def ratio_comparison(panels: dict[str, dict[str, dict[str, float]]]) -> Figure:
+    """Time with / without prediction (below 1: prediction saves time) per sampler, one bar per source
+    (e.g. the paper, docs/results.md, this notebook); ``{panel: {source: {sampler: ratio}}}``, log scale."""
+    fig = Figure(figsize=(3.6 * len(panels), 3.6))
+    axes = fig.subplots(1, len(panels), squeeze=False)[0]
+    for ax, (title, sources) in zip(axes, panels.items()):
+        width = 0.8 / len(sources)
+        for i, (source, ratios) in enumerate(sources.items()):
+            ax.bar(np.arange(len(SAMPLERS)) + (i - (len(sources) - 1) / 2) * width,
+                   [ratios[s] for s in SAMPLERS], width, label=source)
+        ax.axhline(1.0, color="black", linewidth=0.8)
+        _log_ticks(ax)
+        ax.set_xticks(np.arange(len(SAMPLERS)), SAMPLERS)
+        ax.set_title(title, fontsize=9)
+        ax.set_ylabel("time with / without")
+    fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=len(sources), fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0, 0.08, 1, 1))
+    return fig
+
+
+def _log_ticks(ax) -> None:
+    """A log y axis labelled at 1-2-5 steps in plain numbers (0.2, 0.5, 1, 2), no minor labels."""
+    ax.set_yscale("log")
+    lo, hi = ax.get_ylim()
+    ticks = [m * 10.0 ** e for e in range(int(np.floor(np.log10(lo))), int(np.ceil(np.log10(hi))) + 1) for m in (1, 2, 5)]
+    ticks = [t for t in ticks if lo <= t <= hi]
+    ax.set_yticks(ticks, [f"{t:g}" for t in ticks])
+    ax.yaxis.set_minor_formatter(NullFormatter())
+
+
+def throughputs(rates: dict[str, dict[str, float]]) -> Figure:
+    """Configurations checked per second, ``{scenario: {checker: rate}}`` (e.g. exact, learned), log scale,
+    each bar labelled with its rate."""
+    fig = Figure(figsize=(5, 3.6))
+    ax = fig.subplots()
+    checkers = list(next(iter(rates.values())))
+    width = 0.8 / len(checkers)
+    for i, checker in enumerate(checkers):
+        bars = ax.bar(np.arange(len(rates)) + (i - (len(checkers) - 1) / 2) * width,
+                      [rates[s][checker] for s in rates], width, label=checker)
+        ax.bar_label(bars, labels=[_per_second(rates[s][checker]) for s in rates], fontsize=7)
+    ax.set_yscale("log")
+    ax.set_xticks(np.arange(len(rates)), list(rates))
+    ax.set_ylabel("configurations checked per second")
+    ax.set_title("Collision checking in batches: exact vs learned", fontsize=9)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    return fig
+
+
+def _per_second(rate: float) -> str:
+    """A rate in thousands or millions: ``'210k/s'``, ``'3.4M/s'``."""
+    return f"{rate / 1e6:.2g}M/s" if rate >= 1e6 else f"{rate / 1e3:.3g}k/s"
