@@ -1,0 +1,109 @@
+"""The CAE figures (notebook 02) show the numbers they are given: curves, error cells, accuracies, points."""
+
+import numpy as np
+import pytest
+from matplotlib.figure import Figure
+
+from toolkit.metrics import reconstruction_accuracy
+from toolkit.plots import cae as plots
+
+
+@pytest.fixture
+def grids_and_decoded(rng):
+    """Two 6x5 grids of -1 / +1 and decoder outputs that get some cells wrong (one decodes exactly 0)."""
+    grids = np.where(rng.random((2, 6, 5)) < 0.3, 1.0, -1.0)
+    decoded = grids * rng.uniform(0.2, 1.0, grids.shape)
+    flip = rng.random(grids.shape) < 0.15
+    decoded[flip] *= -1
+    decoded[1, 0, 0] = 0.0  # neither sign: wrong, as reconstruction_accuracy counts it
+    return grids, decoded
+
+
+def test_training_curves_plot_each_history_per_epoch():
+    histories = {"lambda = 0": [5.0, 3.0, 2.5], "lambda = 1e-3": [6.0, 2.0, 1.0, 0.5]}
+    fig = plots.training_curves(histories)
+    assert isinstance(fig, Figure)
+    ax = fig.axes[0]
+    assert [line.get_label() for line in ax.get_lines()] == list(histories)
+    for line, history in zip(ax.get_lines(), histories.values()):
+        np.testing.assert_array_equal(line.get_xdata(), np.arange(1, len(history) + 1))
+        np.testing.assert_array_equal(line.get_ydata(), history)
+    assert ax.get_yscale() == "log" and ax.get_xlabel() == "epoch"
+
+
+def test_error_cells_are_the_cells_whose_sign_differs(grids_and_decoded):
+    grids, decoded = grids_and_decoded
+    errors = plots.error_cells(grids, decoded)
+    assert errors[1, 0, 0]  # a zero output is an error
+    np.testing.assert_allclose(1 - errors.reshape(2, -1).mean(axis=1), reconstruction_accuracy(decoded, grids))
+
+
+def test_reconstructions_mark_exactly_the_error_cells_and_title_accuracy_vs_all_free(grids_and_decoded):
+    grids, decoded = grids_and_decoded
+    fig = plots.reconstructions(grids, decoded, ["seen 0", "unseen 3"])
+    rows = fig.subfigs
+    assert len(rows) == 2
+    accuracy = reconstruction_accuracy(decoded, grids)
+    for row, grid, out, acc, name in zip(rows, grids, decoded, accuracy, ["seen 0", "unseen 3"]):
+        inputs, signs, errors = row.axes
+        np.testing.assert_array_equal(inputs.images[0].get_array(), grid.T)
+        np.testing.assert_array_equal(signs.images[0].get_array(), np.where(out > 0, 1.0, -1.0).T)
+        marked = errors.images[-1].get_array()
+        wrong = np.sign(out) != grid
+        np.testing.assert_array_equal(~np.ma.getmaskarray(marked), wrong.T)  # marked cells = sign(decoded) != input
+        np.testing.assert_array_equal(marked.compressed(), grid.T[wrong.T])  # red (+1) missed, blue (-1) invented
+        title = row._suptitle.get_text()
+        assert title.startswith(name) and f"{acc:.1%}" in title and f"all free: {np.mean(grid < 0):.1%}" in title
+        assert f"{int(np.sum(wrong & (grid > 0)))} missed" in errors.get_title()
+        assert f"{int(np.sum(wrong & (grid < 0)))} invented" in errors.get_title()
+
+
+def test_reconstructions_refuse_mismatched_inputs(grids_and_decoded):
+    grids, decoded = grids_and_decoded
+    with pytest.raises(ValueError):
+        plots.reconstructions(grids, decoded[:1], ["a", "b"])
+    with pytest.raises(ValueError):
+        plots.reconstructions(grids, decoded, ["only one name"])
+
+
+def test_accuracy_vs_all_free_has_one_point_per_workspace_and_the_diagonal():
+    groups = {"seen": (np.array([0.88, 0.9, 0.85]), np.array([1.0, 0.99, 1.0])),
+              "unseen": (np.array([0.87, 0.91]), np.array([0.86, 0.9]))}
+    fig = plots.accuracy_vs_all_free(groups)
+    ax = fig.axes[0]
+    assert len(ax.collections) == 2
+    for collection, (all_free, accuracy) in zip(ax.collections, groups.values()):
+        np.testing.assert_allclose(collection.get_offsets(), np.column_stack([all_free, accuracy]))
+    (diagonal,) = ax.get_lines()
+    np.testing.assert_allclose(diagonal.get_xdata(), diagonal.get_ydata())
+    assert "99.7%" in ax.get_legend().get_texts()[0].get_text()  # the seen group's mean accuracy
+
+
+def test_contraction_shows_each_models_norms_and_mean_responses():
+    flips = np.array([1, 3, 10])
+    norms = {"lambda = 0": np.array([2.0, 3.0, 4.0]), "lambda = 1": np.array([0.5, 0.7, 0.6])}
+    shift = {"lambda = 0": np.array([[0.1, 0.3], [0.2, 0.4], [0.5, 0.7]]), "lambda = 1": np.full((3, 2), 0.05)}
+    change = {"lambda = 0": np.array([[1, 1], [3, 2], [9, 11]]), "lambda = 1": np.zeros((3, 2))}
+    fig = plots.contraction(norms, flips, shift, change)
+    ax_j, ax_z, ax_x = fig.axes
+    assert [t.get_text() for t in ax_j.get_xticklabels()] == list(norms)
+    medians = [line.get_ydata()[0] for line in ax_j.get_lines() if line.get_xdata().size == 2
+               and line.get_ydata()[0] == line.get_ydata()[1]]
+    assert 3.0 in medians and 0.6 in medians  # each box's median
+    for ax, data in ((ax_z, shift), (ax_x, change)):
+        lines = {line.get_label(): line for line in ax.get_lines()}
+        for name, values in data.items():
+            np.testing.assert_array_equal(lines[name].get_xdata(), flips)
+            np.testing.assert_allclose(lines[name].get_ydata(), values.mean(axis=1))
+    np.testing.assert_array_equal({l.get_label(): l for l in ax_x.get_lines()}["copy the input"].get_ydata(), flips)
+
+
+def test_latent_scatter_has_one_point_per_workspace_at_its_coordinates(rng):
+    points = {"seen": rng.normal(size=(30, 2)), "generated": rng.normal(size=(200, 2))}
+    fig = plots.latent_scatter(points)
+    ax = fig.axes[0]
+    assert len(ax.collections) == 2
+    for collection, (name, xy) in zip(ax.collections, points.items()):
+        np.testing.assert_allclose(collection.get_offsets(), xy)
+        assert collection.get_label() == f"{name} ({len(xy)})"
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("PC 1", "PC 2")

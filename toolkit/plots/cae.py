@@ -1,0 +1,152 @@
+"""Figures of the contractive autoencoder (paper §III-A, Eq. 1; notebook 02): every function returns a Figure.
+
+- :func:`training_curves` — the loss of Eq. (1) per epoch, one line per model;
+- :func:`reconstructions` — input, decoded grid and the wrongly decoded cells of
+  2D workspaces, each titled with its reconstruction accuracy next to "all free";
+- :func:`accuracy_vs_all_free` — every workspace's reconstruction accuracy against
+  the accuracy of answering "all free" (Table 1, one point per workspace);
+- :func:`contraction` — what the contractive penalty does: the encoder Jacobian's
+  norm, and how far ``z`` and the decoded grid move when a few cells are flipped;
+- :func:`latent_scatter` — latent codes projected to 2D, one point per workspace.
+
+Grids hold -1 (free) and +1 (occupied), as :meth:`toolkit.workspace.Workspace.occupancy`
+returns them; a decoded cell counts as occupied where the decoder's output is positive,
+as in :func:`toolkit.metrics.reconstruction_accuracy`. Nothing here calls ``show()``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.colors import ListedColormap
+from matplotlib.figure import Figure
+
+from ..metrics import reconstruction_accuracy
+
+ERROR_COLORS = ListedColormap(["tab:blue", "tab:red"])  # -1: phantom block (free decoded occupied); +1: missed block
+
+
+def training_curves(histories: dict[str, list[float]], *, ylabel: str = "loss of Eq. (1), mean per epoch",
+                    log: bool = True) -> Figure:
+    """One line per named history (e.g. ``TrainedModels.history["cae"]``), epochs 1, 2, ... on x."""
+    fig = Figure(figsize=(6.4, 3.6))
+    ax = fig.subplots()
+    for name, history in histories.items():
+        ax.plot(np.arange(1, len(history) + 1), history, label=name)
+    if log:
+        ax.set_yscale("log")
+    ax.set_xlabel("epoch")
+    ax.set_ylabel(ylabel)
+    ax.legend()
+    ax.set_title("CAE training curves")
+    fig.tight_layout()
+    return fig
+
+
+def error_cells(grid: np.ndarray, decoded: np.ndarray) -> np.ndarray:
+    """Boolean mask of the cells whose decoded sign differs from the input's (what reconstruction accuracy counts)."""
+    return np.sign(decoded) != np.sign(grid)
+
+
+def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) -> Figure:
+    """One row per 2D workspace: input, decoded sign, and the error cells over the input.
+
+    ``grids``, ``decoded``: ``(W, nx, ny)``. Error cells are red where a block was
+    missed (input occupied, decoded free) and blue where one was invented. Each row's
+    title gives the reconstruction accuracy next to the share of free cells, the
+    accuracy of a CAE that ignores its input and answers "all free".
+    """
+    grids, decoded = np.asarray(grids), np.asarray(decoded)
+    if grids.ndim != 3 or decoded.shape != grids.shape or len(names) != len(grids):
+        raise ValueError(f"need grids and decoded of one shape (W, nx, ny) and W names; got {grids.shape}, "
+                         f"{decoded.shape}, {len(names)} names")
+    accuracy = reconstruction_accuracy(decoded, grids)  # (W,)
+    fig = Figure(figsize=(8.4, 3.0 * len(grids)), layout="constrained")
+    rows = np.atleast_1d(fig.subfigures(len(grids), 1))
+    for row, grid, out, name, acc in zip(rows, grids, decoded, names, accuracy):
+        errors = error_cells(grid, out)
+        missed, phantom = int(np.sum(errors & (grid > 0))), int(np.sum(errors & (grid < 0)))
+        axes = row.subplots(1, 3)
+        _image(axes[0], grid, "input")
+        _image(axes[1], np.where(out > 0, 1.0, -1.0), "decoded (sign)")
+        _image(axes[2], grid, f"errors: {missed} missed (red), {phantom} invented (blue)", alpha=0.25)
+        axes[2].imshow(np.ma.masked_array(grid, ~errors).T, origin="lower", cmap=ERROR_COLORS, vmin=-1, vmax=1)
+        row.suptitle(f"{name}: {acc:.1%} of cells right (all free: {np.mean(grid < 0):.1%})")
+    return fig
+
+
+def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
+    """Reconstruction accuracy (y) against the share of free cells (x), one point per workspace, per named group.
+
+    ``groups[name] = (all_free (W,), accuracy (W,))``. Points above the diagonal beat a
+    CAE that answers "all free"; on it, the CAE has learned nothing about that workspace.
+    """
+    fig = Figure(figsize=(5.2, 4.6))
+    ax = fig.subplots()
+    for name, (all_free, accuracy) in groups.items():
+        ax.scatter(all_free, accuracy, label=f"{name} (mean {np.mean(accuracy):.1%} vs {np.mean(all_free):.1%})",
+                   alpha=0.8)
+    low = min(min(np.min(f), np.min(a)) for f, a in groups.values())
+    ax.plot([low, 1], [low, 1], color="gray", linestyle="--", label='"all free" (diagonal)')
+    ax.set_xlabel('share of free cells = accuracy of answering "all free"')
+    ax.set_ylabel("reconstruction accuracy")
+    ax.set_title("Above the diagonal: better than all free")
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    return fig
+
+
+def contraction(jacobian_norms: dict[str, np.ndarray], flips: np.ndarray, latent_shift: dict[str, np.ndarray],
+                decoded_change: dict[str, np.ndarray]) -> Figure:
+    """Two (or more) CAEs side by side: how strongly the encoder reacts to its input.
+
+    For each named model: ``jacobian_norms (W,)``, the Frobenius norm of dz/dx at each
+    workspace; ``latent_shift (F, T)``, ``||z' - z|| / ||z||`` after flipping
+    ``flips[f]`` random cells, in ``T`` trials; ``decoded_change (F, T)``, how many
+    decoded cells change sign then. Lines are the means over trials. The dotted line of
+    the last panel is a perfect copy machine: it changes exactly the flipped cells.
+    """
+    flips = np.asarray(flips)
+    fig = Figure(figsize=(12, 3.8))
+    ax_j, ax_z, ax_x = fig.subplots(1, 3)
+    names = list(jacobian_norms)
+    ax_j.boxplot([np.asarray(jacobian_norms[n]) for n in names], showmeans=True)
+    ax_j.set_xticks(range(1, len(names) + 1), names)
+    ax_j.set_ylabel(r"$\|\partial z / \partial x\|_F$ per workspace")
+    ax_j.set_title("Encoder Jacobian norm")
+    for name in names:
+        ax_z.plot(flips, np.mean(latent_shift[name], axis=1), marker="o", label=name)
+        ax_x.plot(flips, np.mean(decoded_change[name], axis=1), marker="o", label=name)
+    ax_x.plot(flips, flips, color="gray", linestyle=":", label="copy the input")
+    ax_z.set_ylabel(r"$\|z' - z\| \,/\, \|z\|$")
+    ax_z.set_title("Latent code moves")
+    ax_x.set_ylabel("decoded cells that change sign")
+    ax_x.set_title("Reconstruction changes")
+    for ax in (ax_z, ax_x):
+        ax.set_xlabel("cells flipped")
+        ax.legend(fontsize=8)
+    fig.tight_layout()
+    return fig
+
+
+def latent_scatter(points: dict[str, np.ndarray], *, xlabel: str = "PC 1", ylabel: str = "PC 2",
+                   title: str = "Latent codes, projected to 2D") -> Figure:
+    """One marker per workspace: ``points[group]`` is ``(n, 2)``, e.g. the first two principal components of ``z``."""
+    fig = Figure(figsize=(5.6, 4.6))
+    ax = fig.subplots()
+    for name, xy in points.items():
+        xy = np.asarray(xy)
+        ax.scatter(xy[:, 0], xy[:, 1], label=f"{name} ({len(xy)})", s=14, alpha=0.7)
+    ax.set_xlabel(xlabel)
+    ax.set_ylabel(ylabel)
+    ax.set_title(title)
+    ax.legend(fontsize=8)
+    fig.tight_layout()
+    return fig
+
+
+def _image(ax, grid: np.ndarray, title: str, alpha: float = 1.0) -> None:
+    """A 2D grid of -1 / +1, x to the right and y up, occupied black."""
+    ax.imshow(grid.T, origin="lower", cmap="gray_r", vmin=-1, vmax=1, alpha=alpha)
+    ax.set_title(title, fontsize=8)
+    ax.set_xticks([])
+    ax.set_yticks([])
