@@ -12,6 +12,9 @@ closed sets: touching counts as collision, as in FCL).
 - :class:`ExactChecker`: python-fcl, the ground truth. Kinematics and a
   conservative axis-aligned prefilter run batched in numpy; only links whose
   bounds meet an obstacle's are handed to FCL's ``DynamicAABBTreeCollisionManager``.
+- :class:`MeshChecker`: the same against a triangle mesh (a
+  :class:`~toolkit.workspace.MeshWorkspace`): FCL's ``BVHModel`` for links that touch
+  the surface, winding numbers for links wholly inside a solid (:class:`toolkit.meshes.Solid`).
 - :class:`PointRobotChecker`: the 2D point robot is an axis-aligned square, so an
   interval test against every block is exact; vectorized numpy.
 - :class:`SeparatingAxisChecker`: an independent reference for tests, the
@@ -25,7 +28,7 @@ import numpy as np
 
 from .ragged import ragged
 from .robots import BoxRobot
-from .workspace import Workspace
+from .workspace import MeshWorkspace, Workspace
 
 
 class CollisionChecker:
@@ -191,14 +194,14 @@ class ExactChecker(_BoxWorldChecker):
     """Ground truth with python-fcl: obstacles in a ``DynamicAABBTreeCollisionManager``."""
 
     def __init__(self, workspace: Workspace, robot: BoxRobot):
+        if isinstance(workspace, MeshWorkspace):
+            raise ValueError("a mesh workspace's obstacles are its triangles, not its boxes: "
+                             "use exact_checker(workspace, robot) or MeshChecker")
         super().__init__(workspace, robot)
         self._world = fcl.DynamicAABBTreeCollisionManager()
         self._world.registerObjects([_fcl_box(lo, hi) for lo, hi in workspace.boxes])
         self._world.setup()
-        half3 = np.array([link.half_extents for link in robot.links], dtype=float)  # (L, 3)
-        if robot.dim == 2:  # FCL is 3D: the square becomes a unit-thick slab inside the plane's slab
-            half3[:, 2] = 0.5
-        self._links = [fcl.CollisionObject(fcl.Box(*(2 * h))) for h in half3]
+        self._links = _fcl_links(robot)
 
     def _links_collide(self, Q, aabbs, candidates):
         if not candidates.any():
@@ -221,6 +224,54 @@ class ExactChecker(_BoxWorldChecker):
             self._world.collide(link, data, _first_contact)
             hit[some[i]] = data.result.is_collision
         return hit
+
+
+class MeshChecker(_BoxWorldChecker):
+    """Ground truth against a triangle mesh: a :class:`~toolkit.workspace.MeshWorkspace`'s triangles.
+
+    The prefilter and the clearance bounds use the bounds of the mesh's parts (they
+    cover it, so both stay conservative). A link box that passes them is valid when it
+    touches no triangle (FCL, box against the mesh's ``BVHModel``) and its centre lies
+    outside every closed part (:meth:`toolkit.meshes.Solid.inside`): a box that touches no
+    triangle lies wholly inside or wholly outside, and FCL alone would miss the first.
+    """
+
+    def __init__(self, workspace: MeshWorkspace, robot: BoxRobot):
+        if not isinstance(workspace, MeshWorkspace):
+            raise ValueError(f"MeshChecker needs a MeshWorkspace (toolkit.workspace.from_mesh), got {type(workspace).__name__}")
+        super().__init__(workspace, robot)
+        self._solid = workspace.solid
+        self._links = _fcl_links(robot)
+
+    def _links_collide(self, Q, aabbs, candidates):
+        hit = np.zeros(len(Q), dtype=bool)
+        some = np.flatnonzero(candidates.any(axis=1))
+        if not len(some):
+            return hit
+        centers, rotations, _ = self.robot.link_boxes(Q[some])  # (n, L, 3), (n, L, 3, 3)
+        request = fcl.CollisionRequest()
+        pairs = np.transpose(np.nonzero(candidates[some]))  # (P, 2): (configuration, link)
+        clear = []  # candidate pairs whose link touches no triangle
+        for p, (i, l) in enumerate(pairs):
+            if hit[some[i]]:
+                continue
+            link = self._links[l]
+            link.setTransform(fcl.Transform(rotations[i, l], centers[i, l]))
+            if fcl.collide(link, self._solid.object, request, fcl.CollisionResult()):
+                hit[some[i]] = True
+            else:
+                clear.append(p)
+        i, l = pairs[clear].T if clear else (np.zeros(0, int), np.zeros(0, int))
+        np.logical_or.at(hit, some[i], self._solid.inside(centers[i, l]))
+        return hit
+
+
+def _fcl_links(robot: BoxRobot) -> list:
+    """One FCL box per link, posed later; a 2D robot's squares become unit-thick slabs (FCL is 3D)."""
+    half3 = np.array([link.half_extents for link in robot.links], dtype=float)  # (L, 3)
+    if robot.dim == 2:
+        half3[:, 2] = 0.5
+    return [fcl.CollisionObject(fcl.Box(*(2 * h))) for h in half3]
 
 
 def _first_contact(o1, o2, data) -> bool:
@@ -299,7 +350,10 @@ class SeparatingAxisChecker(_BoxWorldChecker):
 
 
 def exact_checker(workspace: Workspace, robot: BoxRobot) -> CollisionChecker:
-    """The fastest exact checker for this robot: numpy for the 2D point robot, FCL otherwise."""
-    if robot.base == "point2d":
+    """The fastest exact checker for this workspace and robot: the mesh's triangles for a mesh workspace;
+    otherwise numpy for a lone 2D square (the point robot), FCL for the rest."""
+    if isinstance(workspace, MeshWorkspace):
+        return MeshChecker(workspace, robot)
+    if robot.base == "point2d" and robot.dof == 2:
         return PointRobotChecker(workspace, robot)
     return ExactChecker(workspace, robot)

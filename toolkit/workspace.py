@@ -11,15 +11,23 @@ corners). The paper's three families are generated from a seed:
 Block corners lie on integer coordinates, so the occupancy grid (one point at the
 centre of every unit cell, paper §V-A: +1 occupied, -1 free) describes the
 workspace exactly: nothing the CAE is asked to encode is lost by the grid.
+
+Beyond the paper, :func:`from_mesh` makes a :class:`MeshWorkspace` from a triangle
+mesh (a scanned or modelled scene): its grid marks the cells the mesh's solid meets,
+and :func:`toolkit.collision.exact_checker` checks robots against the triangles
+themselves (see :mod:`toolkit.meshes`).
 """
 
 from __future__ import annotations
 
 import json
 from dataclasses import dataclass, field
+from functools import cached_property
 from pathlib import Path
 
 import numpy as np
+
+from . import meshes
 
 FREE, OCCUPIED = -1.0, 1.0
 
@@ -114,11 +122,13 @@ class Workspace:
 
     @classmethod
     def from_dict(cls, data: dict) -> "Workspace":
+        """The workspace of :meth:`to_dict`'s data (a :class:`MeshWorkspace` when it holds a ``mesh``)."""
         missing = {"lower", "upper", "boxes"} - set(data)
         if missing:
             raise ValueError(f"workspace data is missing keys {sorted(missing)}")
-        return cls(data["lower"], data["upper"], data["boxes"],
-                   family=data.get("family", ""), labels=tuple(data.get("labels", ())))
+        mesh = {"vertices": data["mesh"]["vertices"], "faces": data["mesh"]["faces"]} if "mesh" in data else {}
+        return (MeshWorkspace if mesh else Workspace)(data["lower"], data["upper"], data["boxes"], family=data.get("family", ""),
+                                                      labels=tuple(data.get("labels", ())), **mesh)
 
     def save(self, path: str | Path) -> None:
         """Write the workspace as JSON (atomically: a temporary file, then a rename)."""
@@ -137,6 +147,91 @@ class Workspace:
         if not isinstance(data, dict):
             raise ValueError(f"{path} is not a valid workspace file: expected a JSON object")
         return cls.from_dict(data)
+
+
+@dataclass(frozen=True, eq=False)
+class MeshWorkspace(Workspace):
+    """A workspace whose obstacles are a triangle mesh: ``vertices (V, 3)``, ``faces (F, 3)`` (see :func:`from_mesh`).
+
+    ``boxes`` are the bounds of the mesh's connected parts: they cover the obstacles
+    (what a box-only consumer, such as the viewer, draws; the checker's prefilter and
+    clearance bounds stay conservative with them), but the obstacles are the triangles.
+    ``occupancy()`` marks the unit cells the mesh's solid meets (:meth:`toolkit.meshes.Solid.voxel_grid`).
+    """
+
+    vertices: np.ndarray = None  # (V, 3)
+    faces: np.ndarray = None  # (F, 3) vertex indices, counter-clockwise seen from outside
+
+    def __post_init__(self):
+        super().__post_init__()
+        if self.dim != 3:
+            raise ValueError("a mesh workspace is 3D: lower and upper need shape (3,)")
+        vertices = _finite_array(self.vertices, "vertices", ndim=2)
+        faces = np.asarray(self.faces if self.faces is not None else np.zeros((0, 3)), dtype=np.int64).reshape(-1, 3)
+        if vertices.size == 0:
+            vertices = vertices.reshape(0, 3)
+        if vertices.shape[1] != 3 or (len(faces) and (faces.min() < 0 or faces.max() >= len(vertices))):
+            raise ValueError(f"need vertices (V, 3) and faces (F, 3) indexing them, got {vertices.shape} and {faces.shape}")
+        for name, value in (("vertices", vertices), ("faces", faces)):
+            value.setflags(write=False)
+            object.__setattr__(self, name, value)
+
+    @property
+    def mesh(self):
+        """The obstacles as a ``trimesh.Trimesh``."""
+        import trimesh
+
+        return trimesh.Trimesh(self.vertices, self.faces, process=False)
+
+    @cached_property
+    def solid(self) -> meshes.Solid:
+        """The mesh as obstacles: parts, fcl model, inside tests (built once)."""
+        return meshes.Solid(self.vertices, self.faces)
+
+    @cached_property
+    def _grid(self) -> np.ndarray:
+        grid = self.solid.voxel_grid(self.lower, self.upper)
+        grid.setflags(write=False)
+        return grid
+
+    def occupancy(self) -> np.ndarray:
+        """Occupancy grid, shape ``grid_shape``: +1 where the mesh's solid meets a cell's interior, else -1."""
+        return self._grid.copy()
+
+    def contains_points(self, points: np.ndarray) -> np.ndarray:
+        """Whether each point ``(..., 3)`` lies inside the mesh's solid (winding number above one half)."""
+        points = np.asarray(points, dtype=float)
+        return self.solid.inside(points.reshape(-1, 3)).reshape(points.shape[:-1])
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, MeshWorkspace):
+            return NotImplemented if not isinstance(other, Workspace) else False
+        return (super().__eq__(other) and np.array_equal(self.vertices, other.vertices)
+                and np.array_equal(self.faces, other.faces))
+
+    __hash__ = None
+
+    def to_dict(self) -> dict:
+        return dict(super().to_dict(), mesh={"vertices": self.vertices.tolist(), "faces": self.faces.tolist()})
+
+
+def from_mesh(mesh, *, lower, upper, family: str = "mesh") -> MeshWorkspace:
+    """A :class:`MeshWorkspace` of the region ``[lower, upper]`` holding a mesh (a ``trimesh.Trimesh`` or a file path).
+
+    The grid's cells are unit cubes from ``lower``, as in every scenario, so ``upper -
+    lower`` must be whole numbers; to use a scenario's trained models, give the region
+    of its workspaces (``lower`` at the origin, e.g. 11 x 11 x 11 for ``3dc7``) and scale
+    your mesh into it first (``mesh.apply_scale``). A closed (watertight) mesh has an
+    inside, which counts as obstacle; an open surface is an obstacle only where it is.
+    """
+    lower, upper = _finite_array(lower, "lower", ndim=1), _finite_array(upper, "upper", ndim=1)
+    if lower.shape != (3,) or upper.shape != (3,):
+        raise ValueError(f"a mesh workspace is 3D: lower and upper need shape (3,), got {lower.shape} and {upper.shape}")
+    if not np.allclose(upper - lower, np.round(upper - lower)):
+        raise ValueError(f"the region's sides {upper - lower} must be whole numbers of unit cells")
+    mesh = meshes.load(mesh)
+    solid = meshes.Solid(mesh.vertices, mesh.faces)
+    return MeshWorkspace(lower, upper, solid.bounds, family=family, vertices=solid.vertices, faces=solid.faces)
 
 
 def _finite_array(value, name: str, ndim: int | None) -> np.ndarray:
