@@ -43,7 +43,7 @@ def reach_cells(robot: BoxRobot, samples: int = 20_000) -> int:
 
 def position_dofs(robot: BoxRobot) -> int:
     """How many leading DoFs are base positions: 2 for the point robot and the youBot, 3 for the chains."""
-    return int(np.argmax(robot.wraps)) if robot.wraps.any() else robot.dof
+    return robot.n_positions
 
 
 def _namespace(x):

@@ -14,6 +14,11 @@ never over ``N``):
 
 Angles of the base (yaw, Euler angles) wrap around; arm joints have limits and do
 not. Self-collision is not modelled (nor is it in the paper).
+
+A robot of your own is a :class:`BoxRobot` as well: pick a base kind, list the link
+boxes and the joints between them, and bound the base position inside the workspace
+region; :func:`toolkit.scenarios.register` then makes it a scenario that trains,
+plans and loads checkpoints by name (``tutorials/add_a_robot.ipynb``).
 """
 
 from __future__ import annotations
@@ -53,9 +58,11 @@ BASES = {
 class BoxRobot:
     """A base plus a serial chain of revolute joints, every link a box.
 
-    ``base`` is ``"point2d"`` (2D translation), ``"planar"`` (x, y, yaw on the floor
-    at height ``base_height``) or ``"free"`` (x, y, z and Z-Y-X Euler angles).
-    ``position_bounds`` is ``(lower, upper)`` of the base position, ``(D,)`` each.
+    ``base`` is ``"point2d"`` (2D translation; its joints, if any, turn about z, in
+    the plane), ``"planar"`` (x, y, yaw on the floor at height ``base_height``) or
+    ``"free"`` (x, y, z and Z-Y-X Euler angles). ``position_bounds`` is ``(lower,
+    upper)`` of the base position, ``(D,)`` each. Configurations are ordered base
+    positions, base angles, joints (``dof_names``).
     """
 
     def __init__(self, name: str, base: str, links: list[Link], joints: list[Joint],
@@ -64,6 +71,10 @@ class BoxRobot:
             raise ValueError(f"unknown base kind {base!r}; choose one of {sorted(BASES)}")
         if len(joints) != len(links) - 1:
             raise ValueError("a serial chain has one joint fewer than links")
+        if base == "point2d" and any(joint.axis != "z" for joint in joints):
+            raise ValueError("a 2D robot's joints turn about z: any other axis would lift its links out of the plane")
+        if any(not joint.limits[0] < joint.limits[1] for joint in joints):
+            raise ValueError(f"every joint needs limits (lower, upper) with lower < upper, got {[j.limits for j in joints]}")
         self.name, self.base, self.base_height = name, base, float(base_height)
         self.links, self.joints = tuple(links), tuple(joints)
         self.dim = 2 if base == "point2d" else 3
@@ -76,6 +87,7 @@ class BoxRobot:
         self.upper = np.concatenate([pos_hi[: len(base_names) - n_rot], np.full(n_rot, np.pi), [j.limits[1] for j in joints]])
         self.wraps = np.array(base_angular + (False,) * len(joints))  # (dof,) angles that wrap around
         n_pos = len(base_names) - n_rot
+        self.n_positions = n_pos  # configurations are [base positions, base angles (wrap), joints (limited)]
         self._angles = slice(n_pos, n_pos + n_rot)  # the columns where wraps is True: base angles follow the positions
         self.half_extents = np.array([l.half_extents[: self.dim] for l in links], dtype=float)  # (L, D)
         self._offsets = np.array([l.offset for l in links], dtype=float)  # (L, 3)

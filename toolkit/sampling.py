@@ -17,6 +17,11 @@ robot's bounds count as invalid without asking the checker (the bounds act as
 walls). Defaults follow OMPL: ``sigma = 0.1 x`` the diagonal of the bounds (OMPL's
 ``STD_DEV_AS_SPACE_EXTENT_FRACTION``); OB walks in steps of 1 % of that diagonal
 (OMPL's longest valid segment).
+
+A new sampler is a subclass of :class:`Sampler` that implements ``_sample(n, rng)``
+(ask ``self._valid`` about whole batches); :func:`register_sampler` gives it a name,
+and then ``make_sampler(name, checker)`` and ``toolkit.prm.plan(..., sampler=name)``
+use it, with the exact or the learned checker alike (``tutorials/add_a_sampler.ipynb``).
 """
 
 from __future__ import annotations
@@ -138,8 +143,25 @@ SAMPLERS: dict[str, type[Sampler]] = {
 }
 
 
+def register_sampler(name: str, sampler: type[Sampler], *, replace: bool = False) -> type[Sampler]:
+    """Make ``make_sampler(name, ...)``, and so the planner, build ``sampler`` (a subclass of :class:`Sampler`).
+
+    Refuses to rebind a name already taken (the paper's four among them) unless ``replace``;
+    returns ``sampler``. Registration lasts for the Python process: register again after a restart.
+    """
+    if not (isinstance(name, str) and name.strip()):
+        raise ValueError(f"a sampler's name must be a non-empty string, got {name!r}")
+    if not (isinstance(sampler, type) and issubclass(sampler, Sampler)):
+        raise TypeError(f"{sampler!r} is not a subclass of toolkit.sampling.Sampler")
+    if name in SAMPLERS and SAMPLERS[name] is not sampler and not replace:
+        raise ValueError(f"a sampler called {name!r} exists ({SAMPLERS[name].__name__}); pass replace=True to rebind it")
+    SAMPLERS[name] = sampler
+    return sampler
+
+
 def make_sampler(name: str, checker: CollisionChecker, **options) -> Sampler:
-    """The sampler called ``name`` ('BS', 'OB', 'G' or 'BT') over ``checker``; ``options`` go to its constructor."""
+    """The sampler called ``name`` ('BS', 'OB', 'G', 'BT' or a registered one) over ``checker``; ``options`` go to
+    its constructor."""
     if name not in SAMPLERS:
         raise ValueError(f"unknown sampler {name!r}; choose one of {sorted(SAMPLERS)}")
     try:

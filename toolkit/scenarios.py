@@ -80,8 +80,29 @@ SCENARIOS: dict[str, Scenario] = {
 }
 
 
+def register(scenario: Scenario, *, replace: bool = False) -> Scenario:
+    """Make ``get(scenario.name)`` return ``scenario`` (a robot of your own, say), so that everything that takes a
+    scenario's name accepts it: training, checkpoints, queries, ``toolkit.notebook.trained_models``.
+
+    The robot must fit the family's workspaces (its dimension is the grid's); a name
+    already taken (the paper's four among them) is refused unless ``replace``.
+    Registration lasts for the Python process: register again before loading a checkpoint.
+    """
+    if scenario.family not in workspace.GENERATORS:
+        raise ValueError(f"unknown workspace family {scenario.family!r}; choose one of {sorted(workspace.GENERATORS)}")
+    if len(scenario.grid_shape) != scenario.robot.dim:
+        raise ValueError(f"a {scenario.robot.dim}D robot cannot move in the {len(scenario.grid_shape)}D grid {scenario.grid_shape}")
+    family_grid = scenario.make_workspace(np.random.default_rng(0)).grid_shape
+    if family_grid != tuple(scenario.grid_shape):
+        raise ValueError(f"{scenario.family!r} workspaces have the grid {family_grid}, not {scenario.grid_shape}")
+    if scenario.name in SCENARIOS and SCENARIOS[scenario.name] is not scenario and not replace:
+        raise ValueError(f"a scenario called {scenario.name!r} exists; pass replace=True to rebind it")
+    SCENARIOS[scenario.name] = scenario
+    return scenario
+
+
 def get(name: str) -> Scenario:
-    """The scenario called ``name`` ('2ds', '3do', '3dc7' or '3dc9')."""
+    """The scenario called ``name`` ('2ds', '3do', '3dc7', '3dc9' or a registered one)."""
     try:
         return SCENARIOS[name]
     except KeyError:

@@ -1,0 +1,129 @@
+"""Extension points (issue 19): a sampler of your own by name, a robot of your own as a registered scenario."""
+
+import dataclasses
+
+import numpy as np
+import pytest
+
+from toolkit import checkpoints, encoding, presets, robots, sampling, scenarios
+from toolkit.collision import ExactChecker, PointRobotChecker, SeparatingAxisChecker, exact_checker
+from toolkit.learned import LearnedChecker
+from toolkit.models import build_predictor
+from toolkit.prm import PRMOptions, plan
+from toolkit.robots import BoxRobot, Joint, Link
+from toolkit.training import TrainedModels
+from toolkit.workspace import Workspace
+
+
+@pytest.fixture(autouse=True)
+def fresh_registries(monkeypatch):
+    """Registrations made by a test end with it."""
+    monkeypatch.setattr(sampling, "SAMPLERS", dict(sampling.SAMPLERS))
+    monkeypatch.setattr(scenarios, "SCENARIOS", dict(scenarios.SCENARIOS))
+
+
+class CornerSampler(sampling.Sampler):
+    """Test sampler: uniform samples, kept only in the lower-left quarter of the bounds."""
+
+    def _sample(self, n, rng):
+        Q = self.robot.sample(rng, n)
+        Q = Q[np.all(Q < (self.robot.lower + self.robot.upper) / 2, axis=1)]
+        return Q[self._valid(Q)]
+
+
+def planar_arm() -> BoxRobot:
+    """A 3-link arm on a sliding 2D base: 5 DoF."""
+    links = [Link((0.4, 0.4, 0.0)), Link((1.0, 0.15, 0.0), (1.0, 0.0, 0.0)), Link((0.75, 0.15, 0.0), (0.75, 0.0, 0.0)),
+             Link((0.5, 0.15, 0.0), (0.5, 0.0, 0.0))]
+    joints = [Joint((0.0, 0.0, 0.0), "z", (-3.0, 3.0)), Joint((2.0, 0.0, 0.0), "z", (-2.6, 2.6)),
+              Joint((1.5, 0.0, 0.0), "z", (-2.6, 2.6))]
+    return BoxRobot("arm2d", "point2d", links, joints, position_bounds=(np.full(2, 0.4), np.full(2, 30.6)))
+
+
+def arm_scenario() -> scenarios.Scenario:
+    return dataclasses.replace(scenarios.get("2ds"), name="2ds-arm", title="2D simple, planar 3-link arm", robot=planar_arm())
+
+
+# -- samplers -----------------------------------------------------------------------------
+
+def test_a_registered_sampler_is_built_by_name_and_plans():
+    sampling.register_sampler("CORNER", CornerSampler)
+    ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[20.0, 20.0], [25.0, 25.0]]]))
+    exact = exact_checker(ws, robots.point_robot())
+    sampler = sampling.make_sampler("CORNER", exact)
+    assert type(sampler) is CornerSampler
+    samples = sampler.sample(400, np.random.default_rng(0))
+    assert 0 < len(samples) < 400 and np.all(samples < 15.5)
+    result = plan(exact, np.array([2.0, 2.0]), np.array([12.0, 12.0]), sampler="CORNER",
+                  options=PRMOptions(n_samples=200), rng=np.random.default_rng(0))
+    assert result.success and np.all(result.path < 15.5)
+
+
+def test_register_sampler_refuses_taken_names_and_non_samplers():
+    with pytest.raises(ValueError, match="replace=True"):
+        sampling.register_sampler("OB", CornerSampler)
+    assert sampling.register_sampler("OB", CornerSampler, replace=True) is CornerSampler
+    assert sampling.SAMPLERS["OB"] is CornerSampler
+    with pytest.raises(TypeError, match="Sampler"):
+        sampling.register_sampler("X", object)
+    with pytest.raises(ValueError, match="name"):
+        sampling.register_sampler("", CornerSampler)
+    with pytest.raises(ValueError, match="unknown sampler"):
+        sampling.make_sampler("NOPE", exact_checker(Workspace(np.zeros(2), np.ones(2), np.zeros((0, 2, 2))),
+                                                    robots.point_robot((1.0, 1.0))))
+
+
+# -- robots -------------------------------------------------------------------------------
+
+def test_position_dofs_come_first_for_every_base():
+    assert [r.n_positions for r in (robots.point_robot(), robots.youbot(), robots.box_chain(1), planar_arm())] == [2, 2, 3, 2]
+    assert encoding.position_dofs(planar_arm()) == 2  # not 5: the arm's joints do not wrap, yet are no positions
+
+
+def test_a_2d_arm_is_checked_by_fcl_and_agrees_with_separating_axes():
+    arm = planar_arm()
+    ws = scenarios.get("2ds").make_workspace(np.random.default_rng(0))
+    checker = exact_checker(ws, arm)
+    assert type(checker) is ExactChecker  # the numpy shortcut is for the lone square only
+    assert type(exact_checker(ws, robots.point_robot())) is PointRobotChecker
+    Q = arm.sample(np.random.default_rng(1), 3000)
+    valid = checker.are_valid(Q)
+    assert 0.2 < valid.mean() < 0.9
+    np.testing.assert_array_equal(valid, SeparatingAxisChecker(ws, arm).are_valid(Q))
+
+
+def test_a_2d_robots_joints_must_turn_in_the_plane_and_have_limits():
+    with pytest.raises(ValueError, match="about z"):
+        BoxRobot("bad", "point2d", [Link((0.5, 0.5, 0.0)), Link((0.5, 0.1, 0.0))], [Joint((0, 0, 0), "y", (-1, 1))],
+                 position_bounds=(np.zeros(2), np.ones(2)))
+    with pytest.raises(ValueError, match="lower < upper"):
+        BoxRobot("bad", "free", [Link((0.5, 0.5, 0.5)), Link((0.5, 0.1, 0.1))], [Joint((0, 0, 0), "z", (1, -1))],
+                 position_bounds=(np.zeros(3), np.ones(3)))
+
+
+# -- scenarios ----------------------------------------------------------------------------
+
+def test_a_registered_scenario_is_found_by_name_and_its_checkpoints_load(tmp_path):
+    scenario = scenarios.register(arm_scenario())
+    assert scenarios.get("2ds-arm") is scenario
+    preset = presets.get("strong")
+    predictor = build_predictor(scenario, preset.encoding, preset.mlp_hidden, preset.dropout, preset.latent_input)
+    assert predictor.encoding.radius == encoding.reach_cells(scenario.robot) >= 5  # the patch covers the arm's reach
+    folder = checkpoints.save_checkpoint(TrainedModels(scenario, preset, predictor), tmp_path / "arm")
+    loaded = checkpoints.load_models(folder, "2ds-arm")
+    ws = scenario.make_workspace(np.random.default_rng(0))
+    Q = scenario.robot.sample(np.random.default_rng(1), 100)
+    np.testing.assert_allclose(LearnedChecker(ws, loaded).probability(Q), LearnedChecker(ws, TrainedModels(scenario, preset, predictor)).probability(Q), rtol=1e-5)
+
+
+def test_register_refuses_clashes_and_robots_that_do_not_fit():
+    with pytest.raises(ValueError, match="replace=True"):
+        scenarios.register(dataclasses.replace(scenarios.get("2ds"), title="another"))
+    with pytest.raises(ValueError, match="2D robot"):
+        scenarios.register(dataclasses.replace(arm_scenario(), family="3dc", grid_shape=(11, 11, 11)))
+    with pytest.raises(ValueError, match="grid"):
+        scenarios.register(dataclasses.replace(arm_scenario(), grid_shape=(20, 20)))
+    with pytest.raises(ValueError, match="family"):
+        scenarios.register(dataclasses.replace(arm_scenario(), family="moon"))
+    with pytest.raises(ValueError, match="unknown scenario"):
+        scenarios.get("2ds-arm")
