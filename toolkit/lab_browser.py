@@ -152,7 +152,10 @@ def run_all(notebook: str | Path, *, env: dict[str, str] | None = None, screensh
                     tracebacks=page.locator(STDERR, has_text="Traceback").count(),
                     seconds=seconds)
                 if screenshot is not None:
-                    page.keyboard.press("Control+b")  # the file browser closed: more room for the notebook
+                    page.locator(".jp-SideBar.jp-mod-left .lm-TabBar-tab.lm-mod-current").click()  # file browser closed
+                    if rendered.iframes:  # the picture shows the first embedded viewer
+                        outputs.locator("iframe").first.scroll_into_view_if_needed()
+                        page.wait_for_timeout(3000)  # its WebGL scene draws
                     Path(screenshot).parent.mkdir(parents=True, exist_ok=True)
                     page.screenshot(path=str(screenshot))
             finally:
