@@ -81,12 +81,12 @@ def test_accuracy_vs_all_free_has_one_point_per_workspace_and_the_diagonal():
 
 def test_contraction_shows_each_models_norms_and_mean_responses():
     flips = np.array([1, 3, 10])
-    norms = {"lambda = 0": np.array([2.0, 3.0, 4.0]), "lambda = 1": np.array([0.5, 0.7, 0.6])}
-    shift = {"lambda = 0": np.array([[0.1, 0.3], [0.2, 0.4], [0.5, 0.7]]), "lambda = 1": np.full((3, 2), 0.05)}
-    change = {"lambda = 0": np.array([[1, 1], [3, 2], [9, 11]]), "lambda = 1": np.zeros((3, 2))}
+    norms = {"lambda = 0": np.array([2.0, 3.0, 4.0]), "lambda = 1 (strong)": np.array([0.5, 0.7, 0.6])}
+    shift = {"lambda = 0": np.array([[0.1, 0.3], [0.2, 0.4], [0.5, 0.7]]), "lambda = 1 (strong)": np.full((3, 2), 0.05)}
+    change = {"lambda = 0": np.array([[1, 1], [3, 2], [9, 11]]), "lambda = 1 (strong)": np.zeros((3, 2))}
     fig = plots.contraction(norms, flips, shift, change)
     ax_j, ax_z, ax_x = fig.axes
-    assert [t.get_text() for t in ax_j.get_xticklabels()] == list(norms)
+    assert [t.get_text().replace("\n", " ") for t in ax_j.get_xticklabels()] == list(norms)
     medians = [line.get_ydata()[0] for line in ax_j.get_lines() if line.get_xdata().size == 2
                and line.get_ydata()[0] == line.get_ydata()[1]]
     assert 3.0 in medians and 0.6 in medians  # each box's median
@@ -107,3 +107,17 @@ def test_latent_scatter_has_one_point_per_workspace_at_its_coordinates(rng):
         np.testing.assert_allclose(collection.get_offsets(), xy)
         assert collection.get_label() == f"{name} ({len(xy)})"
     assert (ax.get_xlabel(), ax.get_ylabel()) == ("PC 1", "PC 2")
+
+
+def test_latent_scatter_colors_each_workspace_by_its_value(rng):
+    points = {"seen": rng.normal(size=(5, 2)), "unseen": rng.normal(size=(7, 2))}
+    occupied = {"seen": rng.uniform(0.05, 0.2, 5), "unseen": rng.uniform(0.1, 0.3, 7)}
+    fig = plots.latent_scatter(points, color=occupied, color_label="occupied share", highlight="seen")
+    ax, bar = fig.axes
+    assert ax.collections[0].get_sizes()[0] > ax.collections[1].get_sizes()[0]  # the highlighted group stands out
+    for collection, name in zip(ax.collections, points):
+        np.testing.assert_allclose(collection.get_offsets(), points[name])
+        np.testing.assert_allclose(collection.get_array(), occupied[name])
+        assert collection.get_clim() == (min(occupied["seen"].min(), occupied["unseen"].min()),
+                                         max(occupied["seen"].max(), occupied["unseen"].max()))
+    assert bar.get_ylabel() == "occupied share"

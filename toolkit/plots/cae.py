@@ -110,7 +110,7 @@ def contraction(jacobian_norms: dict[str, np.ndarray], flips: np.ndarray, latent
     ax_j, ax_z, ax_x = fig.subplots(1, 3)
     names = list(jacobian_norms)
     ax_j.boxplot([np.asarray(jacobian_norms[n]) for n in names], showmeans=True)
-    ax_j.set_xticks(range(1, len(names) + 1), names)
+    ax_j.set_xticks(range(1, len(names) + 1), [n.replace(" (", "\n(") for n in names])  # long names on two lines
     ax_j.set_ylabel(r"$\|\partial z / \partial x\|_F$ per workspace")
     ax_j.set_title("Encoder Jacobian norm")
     for name in names:
@@ -128,14 +128,27 @@ def contraction(jacobian_norms: dict[str, np.ndarray], flips: np.ndarray, latent
     return fig
 
 
-def latent_scatter(points: dict[str, np.ndarray], *, xlabel: str = "PC 1", ylabel: str = "PC 2",
+def latent_scatter(points: dict[str, np.ndarray], *, color: dict[str, np.ndarray] | None = None,
+                   color_label: str = "", highlight: str | None = None, xlabel: str = "PC 1", ylabel: str = "PC 2",
                    title: str = "Latent codes, projected to 2D") -> Figure:
-    """One marker per workspace: ``points[group]`` is ``(n, 2)``, e.g. the first two principal components of ``z``."""
-    fig = Figure(figsize=(5.6, 4.6))
+    """One marker per workspace: ``points[group]`` is ``(n, 2)``, e.g. the first two principal components of ``z``.
+
+    ``color[group]`` ``(n,)`` (optional): a value per workspace shown on one shared color
+    scale (e.g. its share of occupied cells); the groups then differ by marker.
+    ``highlight``: a group drawn with larger, black-edged markers (e.g. the few training workspaces).
+    """
+    fig = Figure(figsize=(6.2 if color else 5.6, 4.6))
     ax = fig.subplots()
-    for name, xy in points.items():
+    if color:
+        low, high = min(np.min(c) for c in color.values()), max(np.max(c) for c in color.values())
+    for (name, xy), marker in zip(points.items(), "o^sDv"):
         xy = np.asarray(xy)
-        ax.scatter(xy[:, 0], xy[:, 1], label=f"{name} ({len(xy)})", s=14, alpha=0.7)
+        style = dict(s=40, edgecolors="black") if name == highlight else dict(s=16, edgecolors="none")
+        if color:
+            style.update(c=color[name], cmap="viridis", vmin=low, vmax=high, marker=marker)
+        drawn = ax.scatter(xy[:, 0], xy[:, 1], label=f"{name} ({len(xy)})", alpha=0.75, **style)
+    if color:
+        fig.colorbar(drawn, ax=ax, label=color_label)
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.set_title(title)
