@@ -16,7 +16,7 @@ N = 24  # grid cells per axis
 
 @pytest.fixture(scope="module")
 def grid():
-    return pc.cspace_slice(robots.point_robot(), n=N)
+    return pc.slice_grid(robots.point_robot(), n=N)
 
 
 @pytest.fixture(scope="module")
@@ -43,10 +43,10 @@ def scatter_points(ax, label):
     return {tuple(p) for p in collection.get_offsets()}
 
 
-def test_cspace_slice_sweeps_two_dofs_over_cell_centres_and_fixes_the_rest():
+def test_slice_grid_sweeps_two_dofs_over_cell_centres_and_fixes_the_rest():
     robot = robots.box_chain(1)
     fixed = np.array([5.5, 5.5, 5.5, 0.1, 0.2, 0.3, 0.4])
-    grid = pc.cspace_slice(robot, dofs=(0, 6), fixed=fixed, n=5)
+    grid = pc.slice_grid(robot, dofs=(0, 6), fixed=fixed, n=5)
     assert grid.shape == (5, 5) and grid.names == ("x", "joint1") and grid.configs.shape == (25, 7)
     assert grid.extent == (0.0, 11.0, -2.0, 2.0)
     np.testing.assert_allclose(grid.axes[0], [1.1, 3.3, 5.5, 7.7, 9.9])
@@ -57,7 +57,7 @@ def test_cspace_slice_sweeps_two_dofs_over_cell_centres_and_fixes_the_rest():
     np.testing.assert_array_equal(row[1:6], fixed[1:6])
     assert grid.image(np.arange(25))[i, j] == i * 5 + j
     with pytest.raises(ValueError):
-        pc.cspace_slice(robot, dofs=(0, 0))
+        pc.slice_grid(robot, dofs=(0, 0))
 
 
 def test_answer_codes_and_counts_by_hand():

@@ -9,12 +9,12 @@ P(valid) >= a threshold. Against the exact checker each answer is one of four ki
 - *invalid kept* (a false valid): a **dangerous** mistake, a configuration in collision
   that the planner would trust, unless it checks its path exactly (``toolkit.prm`` does).
 
-The maps here sweep two degrees of freedom over their bounds (:func:`cspace_slice`;
+The maps here sweep two degrees of freedom over their bounds (:func:`slice_grid`;
 the point robot's whole C-space, or a 2-DoF slice of a 3D robot with the other joints
 fixed), show P(valid) as an image, draw the true C-obstacle boundary over it and mark
 every mistake at its cell, dangerous ones in red.
 
->>> grid = cspace_slice(robot, dofs=(0, 1), n=80)  # doctest: +SKIP
+>>> grid = slice_grid(robot, dofs=(0, 1), n=80)  # doctest: +SKIP
 >>> probability = grid.image(checker.probability(grid.configs))  # (80, 80)  # doctest: +SKIP
 >>> probability_map(probability, grid.image(exact.are_valid(grid.configs)), grid, checker.threshold)  # doctest: +SKIP
 """
@@ -32,6 +32,7 @@ from matplotlib.patches import Patch
 
 from .. import metrics
 from ..robots import BoxRobot
+from .cspace import slice_configs
 
 DANGEROUS, CONSERVATIVE, BOUNDARY = "red", "deepskyblue", "orange"
 ANSWERS = ("valid kept", "valid rejected", "invalid rejected", "invalid kept (dangerous)")  # answer_codes 0-3
@@ -63,16 +64,16 @@ class CSpaceSlice:
         return np.asarray(values).reshape(self.shape)
 
 
-def cspace_slice(robot: BoxRobot, dofs: tuple[int, int] = (0, 1), fixed=None, n: int = 80) -> CSpaceSlice:
-    """The ``n x n`` grid over DoFs ``dofs`` of ``robot``, the other DoFs at ``fixed (dof,)`` (default: mid-bounds)."""
-    fixed = (robot.lower + robot.upper) / 2 if fixed is None else np.asarray(fixed, dtype=float)
-    if fixed.shape != (robot.dof,) or len(set(dofs)) != 2:
-        raise ValueError(f"need two different DoFs and fixed of shape ({robot.dof},), got {dofs} and {fixed.shape}")
-    lower, upper = robot.lower[list(dofs)], robot.upper[list(dofs)]
-    axes = tuple(lo + (np.arange(n) + 0.5) * (hi - lo) / n for lo, hi in zip(lower, upper))
-    configs = np.tile(fixed, (n * n, 1))  # (n * n, dof)
-    configs[:, dofs[0]], configs[:, dofs[1]] = np.repeat(axes[0], n), np.tile(axes[1], n)
-    return CSpaceSlice(tuple(dofs), tuple(robot.dof_names[d] for d in dofs), axes, lower, upper, configs)
+def slice_grid(robot: BoxRobot, dofs: tuple[int, int] = (0, 1), fixed=None, n: int = 80) -> CSpaceSlice:
+    """The ``n x n`` grid over DoFs ``dofs`` of ``robot``, the others at ``fixed (dof,)`` (default: mid-bounds).
+
+    The configurations of :func:`toolkit.plots.cspace.slice_configs` (notebook 01's slices), flattened.
+    """
+    fixed = (robot.lower + robot.upper) / 2 if fixed is None else fixed
+    values_i, values_j, Q = slice_configs(robot, fixed, dofs, n)  # (n,), (n,), (n, n, dof)
+    dofs = tuple(dofs)
+    return CSpaceSlice(dofs, tuple(robot.dof_names[d] for d in dofs), (values_i, values_j), robot.lower[list(dofs)],
+                       robot.upper[list(dofs)], Q.reshape(-1, robot.dof))
 
 
 def answer_codes(predicted_valid, valid) -> np.ndarray:
@@ -253,7 +254,8 @@ def _draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
         bars = ax.bar(x + (k - 1) * width, [s[key] for s in scores.values()], width, label=label)
         ax.bar_label(bars, fmt="%.2f", fontsize=7)
     ax.set_xticks(x, list(scores), fontsize=8)
-    ax.set_ylim(0, 1.25)
+    ax.set_ylim(0, 1.3)  # room for the legend above the bars
+    ax.set_yticks(np.linspace(0, 1, 6))
     ax.legend(fontsize=7, loc="upper center", ncols=3, frameon=False)
 
 
