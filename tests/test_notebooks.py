@@ -37,7 +37,14 @@ def test_runs_in_quick_mode(path, monkeypatch, notebook_cache):
     nb = nbformat.read(path, as_version=4)
     NotebookClient(nb, timeout=600, kernel_name="python3", resources={"metadata": {"path": str(path.parent)}}).execute()
     errors = [o for c in nb.cells if c.cell_type == "code" for o in c.outputs if o.output_type == "error"]
+    errors += [o for o in _widget_outputs(nb) if o.get("output_type") == "error"]  # raised inside interact()
     assert not errors, f"{path.name}: {errors[0]['ename']}: {errors[0]['evalue']}" if errors else ""
     streams = "".join(o.get("text", "") for c in nb.cells if c.cell_type == "code" for o in c.outputs
                       if o.output_type == "stream" and o.name == "stderr")
     assert "Traceback" not in streams, f"{path.name} printed a traceback:\n{streams[-2000:]}"
+
+
+def _widget_outputs(nb) -> list[dict]:
+    """The outputs that widgets (``interact``'s Output widgets) captured, from the executed notebook's widget state."""
+    state = nb.metadata.get("widgets", {}).get("application/vnd.jupyter.widget-state+json", {}).get("state", {})
+    return [o for model in state.values() for o in model.get("state", {}).get("outputs", [])]
