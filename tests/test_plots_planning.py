@@ -158,6 +158,8 @@ def test_ratio_comparison_bars_are_the_ratios_on_a_log_scale():
     assert ax.get_yscale() == "log" and ax.get_title() == "2DS sampling"
     assert {"0.2", "0.5", "1", "2"} <= {t.get_text() for t in ax.get_yticklabels()}
     assert [t.get_text() for t in fig.legends[0].texts] == list(sources)
+    close = planning.ratio_comparison({"total": {"ours": {"BS": 0.8, "OB": 1.2, "G": 1.6, "BT": 2.1}}}).axes[0]
+    assert {"1", "1.5", "2"} <= {t.get_text() for t in close.get_yticklabels()}  # finer labels within a decade
     for container, (name, ratios) in zip(ax.containers, sources.items()):
         assert container.get_label() == name
         np.testing.assert_allclose([p.get_height() for p in container.patches], list(ratios.values()))

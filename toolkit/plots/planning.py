@@ -68,7 +68,7 @@ def samplers(exact: CollisionChecker, samples: dict[str, np.ndarray], attempts: 
         ax.scatter(Q[:, 0], Q[:, 1], s=6, color=NODE_COLOR)
         count = f"{len(Q)} sample{'' if len(Q) == 1 else 's'}"
         ax.set_title(f"{name}: {count}" + (f" of {attempts} attempts" if attempts else ""), fontsize=9)
-    fig.suptitle("The four samplers over the exact checker (grey: C-obstacles)")
+    fig.suptitle("Samples over the exact checker (grey: C-obstacles)")
     fig.tight_layout()
     return fig
 
@@ -186,10 +186,11 @@ def ratio_comparison(panels: dict[str, dict[str, dict[str, float]]]) -> Figure:
 
 
 def _log_ticks(ax) -> None:
-    """A log y axis labelled at 1-2-5 steps in plain numbers (0.2, 0.5, 1, 2), no minor labels."""
+    """A log y axis labelled in plain numbers at 1-2-5 steps (0.2, 0.5, 1, 2), finer over less than a decade."""
     ax.set_yscale("log")
     lo, hi = ax.get_ylim()
-    ticks = [m * 10.0 ** e for e in range(int(np.floor(np.log10(lo))), int(np.ceil(np.log10(hi))) + 1) for m in (1, 2, 5)]
+    steps = (1, 2, 5) if hi / lo >= 10 else (1, 1.5, 2, 3, 5, 7)
+    ticks = [m * 10.0 ** e for e in range(int(np.floor(np.log10(lo))), int(np.ceil(np.log10(hi))) + 1) for m in steps]
     ticks = [t for t in ticks if lo <= t <= hi]
     ax.set_yticks(ticks, [f"{t:g}" for t in ticks])
     ax.yaxis.set_minor_formatter(NullFormatter())
