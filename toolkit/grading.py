@@ -1,0 +1,122 @@
+"""Course assignments graded with otter-grader (``tutorials/assignments/``).
+
+Each assignment is one otter master notebook, ``tutorials/assignments/<name>/<name>.ipynb``,
+with its solutions inside otter's markers, public tests (students run them with
+``grader.check("q1")``) and hidden tests (only grading runs them). :func:`build` runs
+``otter assign`` on a master and writes ``dist/student/<name>.ipynb`` (what a course hands out)
+and ``dist/autograder/`` (the zip that grades) beside it; :func:`grade` runs ``otter run``
+(locally, no Docker) on a filled-in student notebook with that zip and returns the score of
+each autograded question. Questions marked ``manual`` (prose) are graded by hand and are not
+part of the score.
+
+A submission that runs longer than ``timeout`` seconds is stopped and scores 0 on every
+autograded question (a loop that never ends must not hold up a whole class's grading).
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ASSIGNMENTS = Path(__file__).resolve().parent.parent / "tutorials" / "assignments"
+TIMEOUT_S = 600  # seconds a submission may run before it is stopped and scored 0
+
+
+def assignment_names() -> list[str]:
+    """The assignments whose master ``<name>/<name>.ipynb`` exists, sorted."""
+    return sorted(p.parent.name for p in ASSIGNMENTS.glob("*/*.ipynb") if p.stem == p.parent.name)
+
+
+def master(name: str) -> Path:
+    """The master notebook of assignment ``name``."""
+    path = ASSIGNMENTS / name / f"{name}.ipynb"
+    if not path.is_file():
+        raise ValueError(f"unknown assignment {name!r}; choose one of {assignment_names()}")
+    return path
+
+
+def _otter(*args: str) -> list[str]:
+    return [sys.executable, "-m", "otter", *args]
+
+
+def build(name: str) -> Path:
+    """Run ``otter assign`` on the master (which also checks that its solutions pass every test);
+    return the autograder zip. Replaces ``dist/`` beside the master."""
+    source = master(name)
+    dist = source.parent / "dist"
+    shutil.rmtree(dist, ignore_errors=True)
+    done = subprocess.run(_otter("assign", "--no-pdfs", source.name, "dist"), cwd=source.parent,
+                          capture_output=True, text=True)
+    if done.returncode != 0:
+        raise RuntimeError(f"otter assign failed for {name}:\n{done.stdout[-3000:]}\n{done.stderr[-3000:]}")
+    return autograder(name, build_missing=False)
+
+
+def autograder(name: str, build_missing: bool = True) -> Path:
+    """The newest autograder zip of assignment ``name``, built first when missing."""
+    zips = sorted((master(name).parent / "dist" / "autograder").glob(f"{name}-autograder_*.zip"))
+    if zips:
+        return zips[-1]
+    if not build_missing:
+        raise FileNotFoundError(f"otter assign wrote no autograder zip for {name}")
+    return build(name)
+
+
+def _max_points(zip_path: Path) -> dict[str, float]:
+    """Points of each autograded question, read from the autograder notebook beside the zip."""
+    notebook = json.loads((zip_path.parent / f"{zip_path.name.split('-autograder_')[0]}.ipynb").read_text())
+    return {q: float(test["points"]) for q, test in notebook["metadata"]["otter"]["tests"].items()}
+
+
+def grade(notebook: str | Path, assignment: str | None = None, timeout: float = TIMEOUT_S) -> dict:
+    """Grade a filled-in student notebook; the assignment defaults to the notebook's file name.
+
+    Returns ``{"assignment", "questions": [{"name", "score", "max_score", "feedback"}],
+    "score", "max_score", "timed_out"}``.
+    """
+    notebook = Path(notebook).resolve()
+    name = assignment or notebook.stem
+    zip_path = autograder(name)
+    points = _max_points(zip_path)
+    with tempfile.TemporaryDirectory() as out:
+        process = subprocess.Popen(_otter("run", "--no-logo", "-a", str(zip_path), "-o", out, str(notebook)),
+                                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                                   start_new_session=True)  # its own group: a timeout stops the kernel too
+        try:
+            log, _ = process.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, signal.SIGKILL)
+            process.communicate()
+            questions = [{"name": q, "score": 0.0, "max_score": p,
+                          "feedback": f"stopped after {timeout:g} s: the notebook did not finish"} for q, p in points.items()]
+            return _total(name, questions, timed_out=True)
+        results = Path(out) / "results.json"
+        if not results.is_file():
+            raise RuntimeError(f"otter run wrote no results for {notebook}:\n{log[-3000:]}")
+        tests = {t["name"]: t for t in json.loads(results.read_text())["tests"]}
+    questions = [{"name": q, "score": float(tests.get(q, {}).get("score") or 0.0), "max_score": p,
+                  "feedback": tests.get(q, {}).get("output", "not graded: the question's tests did not run")}
+                 for q, p in points.items()]
+    return _total(name, questions, timed_out=False)
+
+
+def _total(name: str, questions: list[dict], timed_out: bool) -> dict:
+    return {"assignment": name, "questions": questions, "timed_out": timed_out,
+            "score": sum(q["score"] for q in questions), "max_score": sum(q["max_score"] for q in questions)}
+
+
+def report(result: dict) -> str:
+    """Per-question scores, the feedback of every question that lost points, and a last line ``score: X/Y``."""
+    lines = [f"assignment: {result['assignment']}"]
+    for q in result["questions"]:
+        lines.append(f"{q['name']}: {q['score']:g}/{q['max_score']:g}")
+        if q["score"] < q["max_score"]:
+            lines += ["    " + line for line in q["feedback"].strip().splitlines()]
+    lines.append(f"score: {result['score']:g}/{result['max_score']:g}")
+    return "\n".join(lines)
