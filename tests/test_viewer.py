@@ -258,7 +258,7 @@ def embedded_messages(snippet: str) -> list[dict]:
 def test_embed_is_a_static_snapshot_of_the_scene(rng):
     robot = scenarios.get("3dc7").robot
     snippet = viewer.embed("3dc7", seed=2, samples=robot.sample(rng, 40), height=320)
-    assert snippet.startswith("<iframe") and 'height="320"' in snippet
+    assert snippet.startswith("<div><iframe") and 'height="320"' in snippet
     names = {message.get("name") for message in embedded_messages(snippet)}
     assert {"/workspace/obstacles", "/robot/links", "/samples"} <= names
 

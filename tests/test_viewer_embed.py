@@ -12,6 +12,7 @@ import msgspec
 import numpy as np
 import pytest
 import zstandard
+from IPython.display import HTML
 
 from toolkit import viewer
 from toolkit import viewer_scene as draw
@@ -106,15 +107,17 @@ def test_the_animation_leaves_the_robot_and_the_camera_where_they_were(planned):
 
 def test_animation_iframe_embeds_the_page_escaped(planned):
     snippet = planned.animation_iframe(300, frames=3, seconds=1.0)
-    assert snippet.startswith("<iframe srcdoc=") and 'height="300"' in snippet
+    assert snippet.startswith("<div><iframe srcdoc=") and 'height="300"' in snippet
     document = html.unescape(re.search(r'srcdoc="([^"]*)"', snippet).group(1))
     assert len(robot_poses(document)) == 3
 
 
-def test_srcdoc_iframe_quotes_the_document():
+def test_srcdoc_iframe_quotes_the_document_and_shows_without_a_warning(recwarn):
     snippet = viewer.srcdoc_iframe('<p title="a & b">x</p>', height=120)
-    assert snippet == ('<iframe srcdoc="&lt;p title=&quot;a &amp; b&quot;&gt;x&lt;/p&gt;" width="100%" '
-                       'height="120" style="border:none"></iframe>')
+    assert snippet == ('<div><iframe srcdoc="&lt;p title=&quot;a &amp; b&quot;&gt;x&lt;/p&gt;" width="100%" '
+                       'height="120" style="border:none"></iframe></div>')
+    HTML(snippet)  # IPython warns "Consider using IPython.display.IFrame" about markup starting with <iframe
+    assert not [w for w in recwarn if "IFrame" in str(w.message)]
 
 
 def test_an_animation_needs_a_path_and_frames(make_viewer):
@@ -131,4 +134,4 @@ def test_an_animation_needs_a_path_and_frames(make_viewer):
 def test_a_snapshot_prints_nothing(capsys):
     """viser's banner and "Server stopped" would be two stray outputs per snapshot in a notebook."""
     snippet = viewer.embed("2ds", height=200)
-    assert snippet.startswith("<iframe") and capsys.readouterr().out == ""
+    assert "<iframe srcdoc=" in snippet and capsys.readouterr().out == ""

@@ -357,9 +357,12 @@ def serve_forever(viewer: Viewer) -> None:
 
 
 def srcdoc_iframe(document: str, height: int = 480) -> str:
-    """An ``<iframe>`` holding a whole HTML ``document`` inline (``srcdoc``): it needs no server or file."""
-    return (f'<iframe srcdoc="{html_lib.escape(document, quote=True)}" width="100%" '
-            f'height="{int(height)}" style="border:none"></iframe>')
+    """An ``<iframe>`` holding a whole HTML ``document`` inline (``srcdoc``): it needs no server or file.
+
+    Wrapped in a ``<div>``: ``IPython.display.HTML`` warns about markup that starts with ``<iframe``.
+    """
+    return (f'<div><iframe srcdoc="{html_lib.escape(document, quote=True)}" width="100%" '
+            f'height="{int(height)}" style="border:none"></iframe></div>')
 
 
 def embed(scenario: str = "3do", *, seed: int = 0, q=None, samples=None, height: int = 480) -> str:

@@ -8,6 +8,7 @@ per topic, in the order of the notebooks:
 - :mod:`toolkit.plots.cae` — the contractive autoencoder's reconstructions and latents (notebook 02);
 - :mod:`toolkit.plots.classifier` — the collision MLP's decision boundaries and thresholds (notebook 03);
 - :mod:`toolkit.plots.planning` — samplers, roadmaps and planning times (notebook 04);
+- :mod:`toolkit.plots.scenes` — a planned 3D path, one frame at a time (notebook 05);
 - :mod:`toolkit.plots.reproduction` — the reproduction's figures (paper Figures 5-7, ``toolkit reproduce``).
 
 >>> from toolkit.plots import reproduction  # doctest: +SKIP

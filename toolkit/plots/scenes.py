@@ -47,7 +47,7 @@ def path_frame(robot: BoxRobot, configurations, index: int, *, workspace: Worksp
     along = np.linspace(0.0, 1.0, frames)  # (T,)
 
     fig = Figure(figsize=(11, 4.8))
-    left, right = fig.add_gridspec(1, 2, width_ratios=(1.05, 1.0), wspace=0.12)
+    left, right = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.3)
     scene = fig.add_subplot(left, projection="3d")
     color = UNCHECKED_COLOR if series["valid"] is None else VALID_COLOR if series["valid"][index] else INVALID_COLOR
     _draw_robot(scene, robot, Q[index : index + 1], [color], "3d", workspace, margin)
