@@ -132,6 +132,19 @@ def cmd_reproduce(args: argparse.Namespace) -> int:
     return 0
 
 
+def cmd_grade(args: argparse.Namespace) -> int:
+    from . import grading
+
+    results = {}
+    for notebook in grading.submissions(args.notebooks):
+        results[notebook] = grading.grade(notebook, args.assignment, timeout=args.timeout)
+        print(json.dumps({"submission": str(notebook), **results[notebook]}) if args.json
+              else grading.report(results[notebook]), flush=True)
+    if args.csv:
+        grading.write_csv(results, args.csv)
+    return 0
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="toolkit", description=__doc__.splitlines()[0])
     sub = parser.add_subparsers(dest="command", required=True)
@@ -197,6 +210,15 @@ def build_parser() -> argparse.ArgumentParser:
     reproduce.add_argument("--workers", type=int, default=None,
                            help="processes for the planning runs (default: one per core; 1: plan in this process)")
     reproduce.set_defaults(func=cmd_reproduce)
+
+    # -- grade (assignments issue) --
+    grade = sub.add_parser("grade", help="grade filled-in assignment notebooks with otter (last line: score: X/Y)")
+    grade.add_argument("notebooks", nargs="+", help="student notebooks, or folders of them")
+    grade.add_argument("--assignment", help="assignment name (default: each notebook's file name)")
+    grade.add_argument("--timeout", type=float, help="seconds a notebook may run before it scores 0 (default: 600)")
+    grade.add_argument("--csv", help="also write one row of scores per notebook to this CSV file")
+    grade.add_argument("--json", action="store_true", help="print one JSON object a notebook instead of the report")
+    grade.set_defaults(func=cmd_grade)
     return parser
 
 
