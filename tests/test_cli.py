@@ -82,7 +82,10 @@ def test_view_refuses_a_bad_checkpoint_in_the_terminal_before_serving(tmp_path, 
     damaged = shutil.copytree(checkpoint_2ds, tmp_path / "damaged")
     (damaged / checkpoints.META).write_text('{"format": 1, "scen')
     assert cli.main(["view", "--checkpoint", str(damaged)]) == 2
-    assert f"checkpoint {damaged}: meta.json is corrupted" in capsys.readouterr().err
+    err = capsys.readouterr().err
+    assert f"checkpoint {damaged}: meta.json is corrupted" in err
+    assert err.rstrip().endswith(f"write it again with `toolkit train ... --force --out {damaged}`, or use another "
+                                 "checkpoint")
 
 
 @pytest.mark.parametrize("host, message", [

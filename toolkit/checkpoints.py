@@ -13,7 +13,8 @@ existing checkpoint only when asked to (``overwrite=True``, ``toolkit train --fo
 
 :func:`load_models` rebuilds the networks from the metadata and refuses, with a
 ``ValueError`` naming the problem, a folder for another scenario, missing or
-corrupted files, and weights that do not fit the recorded sizes.
+corrupted files (saying how to write them again), and weights that do not fit the
+recorded sizes.
 """
 
 from __future__ import annotations
@@ -94,14 +95,30 @@ def save_checkpoint(models: TrainedModels, folder: str | Path, evaluation: dict 
     return folder
 
 
-def load_models(folder: str | Path, scenario: str | None = None) -> TrainedModels:
-    """Read a checkpoint folder; with ``scenario``, refuse one trained for another scenario."""
+def load_models(folder: str | Path, scenario: str | None = None, *, remedy: str | None = None) -> TrainedModels:
+    """Read a checkpoint folder; with ``scenario``, refuse one trained for another scenario.
+
+    A damaged folder is a ``ValueError`` naming the file and ending in ``remedy``
+    (default: how to write it again with ``toolkit train``).
+    """
     folder = Path(folder)
     if not folder.is_dir():
         raise FileNotFoundError(f"checkpoint folder {folder} does not exist")
-    meta = _read_meta(folder)
+    remedy = remedy or f"write it again with `toolkit train ... --force --out {folder}`, or use another checkpoint"
+    try:
+        meta = _read_meta(folder)
+    except ValueError as err:
+        raise ValueError(f"{err}; {remedy}") from None
     if scenario is not None and meta["scenario"] != scenario:
         raise ValueError(f"checkpoint {folder} was trained for scenario {meta['scenario']!r}, not {scenario!r}")
+    try:
+        return _build(folder, meta)
+    except ValueError as err:
+        raise ValueError(f"{err}; {remedy}") from None
+
+
+def _build(folder: Path, meta: dict) -> TrainedModels:
+    """The networks ``meta`` describes, with the weights of ``folder``."""
     preset_fields = dict(meta["preset"])
     try:
         # settings added to Preset after the checkpoint was written: those of the preset it names

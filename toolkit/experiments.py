@@ -138,10 +138,8 @@ def _splits(stages: Stages, scenario, preset: str, seed: int, quick: bool) -> di
 def _models(stages: Stages, scenario, preset: str, splits, seed: int, quick: bool) -> training.TrainedModels:
     folder = stages.cache / "checkpoint"
     if folder.exists():
-        try:
-            return checkpoints.load_models(folder, scenario.name)
-        except ValueError as err:
-            raise ValueError(f"{err}; delete {folder} to train again (the models stage)") from None
+        return checkpoints.load_models(folder, scenario.name, remedy=f"delete {folder} to train again (the models "
+                                                                     "stage)")
     began = time.perf_counter()
     models = training.train_models(scenario, preset, splits, seed, progress=stages.progress, quick=quick)
     checkpoints.save_checkpoint(models, folder)  # the folder appears whole or not at all
