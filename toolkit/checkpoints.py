@@ -7,22 +7,28 @@ A folder written by :func:`save_checkpoint` holds
 - ``meta.json``: scenario, preset, seed, the networks' sizes, the library versions,
   the loss per epoch and (from ``toolkit train``) the evaluation scores.
 
+:func:`save_checkpoint` writes the folder whole or not at all, and replaces an
+existing checkpoint only when asked to (``overwrite=True``, ``toolkit train --force``);
+:func:`check_destination` says before training whether a folder may receive one.
+
 :func:`load_models` rebuilds the networks from the metadata and refuses, with a
 ``ValueError`` naming the problem, a folder for another scenario, missing or
-corrupted files, and weights that do not fit the recorded sizes.
+corrupted files (saying how to write them again), and weights that do not fit the
+recorded sizes.
 """
 
 from __future__ import annotations
 
 import json
 import platform
+import shutil
 from dataclasses import asdict
 from pathlib import Path
 
 import numpy as np
 import torch
 
-from . import __version__, presets, scenarios
+from . import __version__, outputs, presets, scenarios
 from .models import CollisionPredictor, build_predictor
 from .presets import Preset
 from .training import TrainedModels
@@ -37,10 +43,32 @@ def sizes(predictor: CollisionPredictor) -> dict:
             "encoding": predictor.encoding.kind, "patch_radius": predictor.encoding.radius}
 
 
-def save_checkpoint(models: TrainedModels, folder: str | Path, evaluation: dict | None = None) -> Path:
-    """Write ``weights.pt`` and ``meta.json`` (with ``evaluation``, if given) into ``folder``; returns the folder."""
+def check_destination(folder: str | Path, overwrite: bool = False) -> Path:
+    """Refuse, before any training, a ``folder`` that cannot receive a checkpoint: a file, a place that cannot
+    be written, a folder holding other things, or (unless ``overwrite``) a checkpoint already."""
     folder = Path(folder)
-    folder.mkdir(parents=True, exist_ok=True)
+    if folder.exists() and not folder.is_dir():
+        raise ValueError(f"checkpoint folder {folder} is a file; choose a folder")
+    if folder.is_dir() and any(folder.iterdir()):
+        if not ((folder / META).exists() or (folder / WEIGHTS).exists()):
+            raise ValueError(f"checkpoint folder {folder} is not empty and holds no checkpoint; choose a new or "
+                             "empty folder")
+        if not overwrite:
+            raise ValueError(f"checkpoint folder {folder} holds a checkpoint already ({_describe(folder)}); replace "
+                             "it with `toolkit train --force` (overwrite=True), or choose another folder")
+    # the checkpoint is written beside the folder, then renamed into place: its parent must be writable
+    outputs.writable_folder(folder.parent, f"checkpoint folder {folder}")
+    return folder
+
+
+def save_checkpoint(models: TrainedModels, folder: str | Path, evaluation: dict | None = None, *,
+                    overwrite: bool = False) -> Path:
+    """Write ``weights.pt`` and ``meta.json`` (with ``evaluation``, if given) into ``folder``; returns the folder.
+
+    The files go to a folder beside it first, which then takes its place: an interrupted
+    save leaves the old folder as it was. An existing checkpoint is replaced only with ``overwrite``.
+    """
+    folder = check_destination(folder, overwrite)
     meta = {
         "format": FORMAT,
         "scenario": models.scenario.name,
@@ -54,21 +82,43 @@ def save_checkpoint(models: TrainedModels, folder: str | Path, evaluation: dict 
                      "python": platform.python_version()},
     }
     state = {k: v.detach().cpu() for k, v in models.predictor.state_dict().items()}
-    tmp = folder / (WEIGHTS + ".tmp")
-    torch.save(state, tmp)
-    tmp.replace(folder / WEIGHTS)
-    (folder / META).write_text(json.dumps(meta, indent=2))
+    new, old = (folder.with_name(f"{folder.name}.{suffix}.tmp") for suffix in ("new", "old"))
+    for leftover in (new, old):  # of a save interrupted earlier
+        shutil.rmtree(leftover, ignore_errors=True)
+    new.mkdir()
+    torch.save(state, new / WEIGHTS)
+    (new / META).write_text(json.dumps(meta, indent=2))
+    if folder.exists():
+        folder.rename(old)
+    new.rename(folder)
+    shutil.rmtree(old, ignore_errors=True)
     return folder
 
 
-def load_models(folder: str | Path, scenario: str | None = None) -> TrainedModels:
-    """Read a checkpoint folder; with ``scenario``, refuse one trained for another scenario."""
+def load_models(folder: str | Path, scenario: str | None = None, *, remedy: str | None = None) -> TrainedModels:
+    """Read a checkpoint folder; with ``scenario``, refuse one trained for another scenario.
+
+    A damaged folder is a ``ValueError`` naming the file and ending in ``remedy``
+    (default: how to write it again with ``toolkit train``).
+    """
     folder = Path(folder)
     if not folder.is_dir():
         raise FileNotFoundError(f"checkpoint folder {folder} does not exist")
-    meta = _read_meta(folder)
+    remedy = remedy or f"write it again with `toolkit train ... --force --out {folder}`, or use another checkpoint"
+    try:
+        meta = _read_meta(folder)
+    except ValueError as err:
+        raise ValueError(f"{err}; {remedy}") from None
     if scenario is not None and meta["scenario"] != scenario:
         raise ValueError(f"checkpoint {folder} was trained for scenario {meta['scenario']!r}, not {scenario!r}")
+    try:
+        return _build(folder, meta)
+    except ValueError as err:
+        raise ValueError(f"{err}; {remedy}") from None
+
+
+def _build(folder: Path, meta: dict) -> TrainedModels:
+    """The networks ``meta`` describes, with the weights of ``folder``."""
     preset_fields = dict(meta["preset"])
     try:
         # settings added to Preset after the checkpoint was written: those of the preset it names
@@ -91,6 +141,15 @@ def load_models(folder: str | Path, scenario: str | None = None) -> TrainedModel
     except Exception as err:  # unpickling, zip, shape or key errors: the weights cannot be trusted
         raise ValueError(f"checkpoint {folder}: {WEIGHTS} is corrupted or does not match the networks: {err}") from err
     return TrainedModels(scen, preset, predictor.eval(), int(meta.get("seed", 0)), meta.get("history", {}))
+
+
+def _describe(folder: Path) -> str:
+    """A checkpoint's scenario and preset, for messages."""
+    try:
+        meta = json.loads((folder / META).read_text())
+        return f"scenario {meta['scenario']}, preset {meta['preset']['name']}"
+    except (OSError, ValueError, KeyError, TypeError):  # damaged or partial: still a checkpoint folder
+        return "its metadata unreadable"
 
 
 def _read_meta(folder: Path) -> dict:

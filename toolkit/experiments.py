@@ -12,17 +12,22 @@
 and writes ``out/results.json`` (the contract's keys), ``out/tables.md`` (our value
 next to the published one in every cell) and PNG figures. Each stage's product is
 cached under ``out/cache`` and written atomically, so an interrupted run resumes
-where it stopped and a finished stage is not redone.
+where it stopped and a finished stage is not redone; each sampler's planning is a
+stage of its own. ``out`` is checked before any work (:func:`check_out`), and an
+interruption (Ctrl-C, or SIGTERM turned into one by ``toolkit``) stops the planning
+processes before it goes on: nothing is left running, and :func:`finished_stages`
+says what a rerun will reuse.
 """
 
 from __future__ import annotations
 
-import json
 import multiprocessing
 import os
-import shutil
+import signal
+import threading
 import time
 from concurrent.futures import ProcessPoolExecutor, as_completed
+from contextlib import contextmanager
 from functools import partial
 from pathlib import Path
 
@@ -30,7 +35,7 @@ import numpy as np
 import torch
 from tqdm.auto import tqdm
 
-from . import bench, checkpoints, paper_numbers, plots, queries, scenarios, training
+from . import bench, checkpoints, outputs, paper_numbers, plots, queries, scenarios, training
 from .data import SPLITS, CollisionDataset
 from .learned import LearnedChecker
 from .paper_numbers import SAMPLERS
@@ -39,6 +44,7 @@ MODES = ("without", "with")
 QUICK_QUERIES = {"2ds": (2, 2), "3do": (1, 2), "3dc7": (3, 1), "3dc9": (3, 1)}  # (workspaces, pairs each)
 QUICK_PLAN_SAMPLES = {"3do": 400}  # |S| in quick runs, where the paper's would take minutes
 QUICK_MAX_ROUNDS = 5  # quick models predict poorly: give up sooner than a full run would
+STAGES = ("data", "models", "learning", *(f"planning_{s}" for s in SAMPLERS), "throughput")
 
 
 class Stages:
@@ -49,34 +55,33 @@ class Stages:
     """
 
     def __init__(self, out: Path, settings: dict, progress: bool):
+        check_out(out, settings)
         self.cache = out / "cache"
-        self.cache.mkdir(parents=True, exist_ok=True)
+        self.cache.mkdir(exist_ok=True)
         self.progress = progress
-        recorded = self.cache / "settings.json"
-        if recorded.exists() and json.loads(recorded.read_text()) != settings:
-            raise ValueError(f"{out} holds a run with other settings {recorded.read_text()}; "
-                             f"choose another --out, or delete {out} to start again")
-        write_json(recorded, settings)
+        outputs.write_json(self.cache / "settings.json", settings)
         self._seconds_file = self.cache / "stage_seconds.json"
-        self.seconds: dict[str, float] = json.loads(self._seconds_file.read_text()) if self._seconds_file.exists() else {}
+        self.seconds: dict[str, float] = (outputs.read_json(self._seconds_file, "delete it (the cached stages' "
+                                                            "times will read n/a)") if self._seconds_file.exists() else {})
         self.recomputed: list[str] = []
 
     def took(self, name: str, seconds: float) -> None:
         """Record that stage ``name`` was computed in ``seconds``."""
         self.seconds[name] = seconds
         self.recomputed.append(name)
-        write_json(self._seconds_file, self.seconds)
+        outputs.write_json(self._seconds_file, self.seconds)
 
     def has(self, name: str) -> bool:
         return (self.cache / f"{name}.json").exists()
 
     def load(self, name: str) -> dict:
-        return json.loads((self.cache / f"{name}.json").read_text())
+        return outputs.read_json(self.cache / f"{name}.json", "delete it to compute that stage again")
 
     def save(self, name: str, value: dict, seconds: float) -> None:
-        """Store stage ``name``'s JSON ``value`` atomically, computed in ``seconds``."""
-        write_json(self.cache / f"{name}.json", value)
+        """Store stage ``name``'s JSON ``value`` atomically, computed in ``seconds`` (recorded first: a run
+        stopped between the two computes the stage again and records its time again)."""
         self.took(name, seconds)
+        outputs.write_json(self.cache / f"{name}.json", value)
 
     def json(self, name: str, compute) -> dict:
         """The cached JSON ``name``, or ``compute()`` written atomically."""
@@ -88,17 +93,40 @@ class Stages:
         return value
 
 
-def write_json(path: Path, value) -> None:
-    """Write ``value`` as JSON atomically: a temporary file, then a rename."""
-    tmp = path.with_name(path.name + ".tmp")
-    tmp.write_text(json.dumps(value, indent=2))
-    tmp.replace(path)
+def check_out(out: Path, settings: dict) -> None:
+    """Refuse, before any work, an output folder that cannot take this run: a file, a place that cannot be
+    written, a folder holding something else (a checkpoint, other files), or a run with other settings. A
+    folder holding a run with the same settings is what resuming needs."""
+    recorded = out / "cache" / "settings.json"
+    if out.is_dir() and not recorded.exists() and any(out.iterdir()):
+        held = "a checkpoint of `toolkit train`" if (out / checkpoints.META).exists() else "other files"
+        raise ValueError(f"--out {out} holds {held}, not a reproduction; choose a new or empty folder")
+    outputs.writable_folder(out, "--out")
+    if recorded.exists():
+        previous = outputs.read_json(recorded, f"delete {out} to start again")
+        if previous != settings:
+            raise ValueError(f"{out} holds a run with other settings {previous}; "
+                             f"choose another --out, or delete {out} to start again")
+
+
+def finished_stages(out: str | Path) -> list[str]:
+    """The stages of :data:`STAGES` whose products are cached in ``out/cache``: what a rerun reuses."""
+    cache = Path(out) / "cache"
+    files = {"data": list(_data_paths(cache).values()), "models": [cache / "checkpoint"]}
+    return [name for name in STAGES if all(p.exists() for p in files.get(name, [cache / f"{name}.json"]))]
+
+
+def _data_paths(cache: Path) -> dict[str, Path]:
+    return {name: cache / f"data_{name}.npz" for name in SPLITS}
 
 
 def _splits(stages: Stages, scenario, preset: str, seed: int, quick: bool) -> dict[str, CollisionDataset]:
-    paths = {name: stages.cache / f"data_{name}.npz" for name in SPLITS}
+    paths = _data_paths(stages.cache)
     if all(p.exists() for p in paths.values()):
-        return {name: CollisionDataset.load(p, scenario.name) for name, p in paths.items()}
+        try:
+            return {name: CollisionDataset.load(p, scenario.name) for name, p in paths.items()}
+        except ValueError as err:
+            raise ValueError(f"{err}; delete it to compute the data stage again") from None
     began = time.perf_counter()
     splits = training.preset_splits(scenario, preset, seed, quick=quick, progress=stages.progress)
     for name, dataset in splits.items():
@@ -110,13 +138,11 @@ def _splits(stages: Stages, scenario, preset: str, seed: int, quick: bool) -> di
 def _models(stages: Stages, scenario, preset: str, splits, seed: int, quick: bool) -> training.TrainedModels:
     folder = stages.cache / "checkpoint"
     if folder.exists():
-        return checkpoints.load_models(folder, scenario.name)
+        return checkpoints.load_models(folder, scenario.name, remedy=f"delete {folder} to train again (the models "
+                                                                     "stage)")
     began = time.perf_counter()
     models = training.train_models(scenario, preset, splits, seed, progress=stages.progress, quick=quick)
-    tmp = stages.cache / "checkpoint.tmp"
-    shutil.rmtree(tmp, ignore_errors=True)
-    checkpoints.save_checkpoint(models, tmp)
-    tmp.rename(folder)  # a folder appears whole or not at all
+    checkpoints.save_checkpoint(models, folder)  # the folder appears whole or not at all
     stages.took("models", time.perf_counter() - began)
     return models
 
@@ -133,28 +159,61 @@ def _learning(models: training.TrainedModels, splits) -> dict:
 def _planning(stages: Stages, scenario, models, seed: int, quick: bool, workers: int) -> dict:
     """Every sampler without and with prediction on the query set, the two in turns query by query. Samplers
     not yet in the cache go to ``workers`` processes (one per core, each timing its own queries) when there
-    are several."""
+    are several; each sampler's results are cached as soon as they arrive."""
     todo = [s for s in SAMPLERS if not stages.has(f"planning_{s}")]
     job = partial(_planning_run, scenario.name, str(stages.cache / "checkpoint"), models.preset.planner_options(), seed, quick)
-    with tqdm(total=len(todo), desc=f"planning {scenario.name}", disable=not stages.progress, leave=False) as bar:
-        if workers > 1 and len(todo) > 1:
-            spawn = multiprocessing.get_context("spawn")  # fresh interpreters: no forked torch thread pools
-            with ProcessPoolExecutor(min(workers, len(todo)), mp_context=spawn) as pool:
-                futures = {pool.submit(job, s): s for s in todo}
-                for future in as_completed(futures):
-                    stages.save(f"planning_{futures[future]}", *future.result())
-                    bar.update()
-        else:
-            for s in todo:
-                stages.save(f"planning_{s}", *job(s))
-                bar.update()
+    with (tqdm(total=len(todo), desc=f"planning {scenario.name}", disable=not stages.progress, leave=False) as bar,
+          _processes(min(workers, len(todo))) as pool):
+        runs = map(job, todo) if pool is None else (f.result() for f in as_completed(map(partial(pool.submit, job), todo)))
+        for sampler, summary, seconds in runs:
+            stages.save(f"planning_{sampler}", summary, seconds)
+            bar.update()
     return {s: stages.load(f"planning_{s}") for s in SAMPLERS}
 
 
+@contextmanager
+def _processes(n: int):
+    """``n`` fresh worker processes (None when ``n`` <= 1: work in this process).
+
+    On any exception, Ctrl-C included, the workers are killed before it goes on: a
+    ``ProcessPoolExecutor`` alone would wait for every task to finish first.
+    """
+    if n <= 1:
+        yield None
+        return
+    spawn = multiprocessing.get_context("spawn")  # fresh interpreters: no forked torch thread pools
+    pool = ProcessPoolExecutor(n, mp_context=spawn, initializer=_worker_start)
+    try:
+        yield pool
+    except BaseException:
+        if hasattr(pool, "terminate_workers"):  # Python >= 3.14
+            pool.terminate_workers()
+        else:
+            for process in list((pool._processes or {}).values()):
+                process.terminate()
+        raise
+    finally:
+        pool.shutdown(wait=True, cancel_futures=True)
+
+
+def _worker_start() -> None:
+    """In each worker: leave Ctrl-C to the parent (which stops the workers), and exit if the parent dies
+    without doing so (SIGKILL, a crash) rather than wait for work forever."""
+    signal.signal(signal.SIGINT, signal.SIG_IGN)
+    parent = os.getppid()
+
+    def watch() -> None:
+        while os.getppid() == parent:
+            time.sleep(0.5)
+        os._exit(1)
+
+    threading.Thread(target=watch, daemon=True).start()
+
+
 def _planning_run(scenario_name: str, checkpoint: str, planner: dict, seed: int, quick: bool,
-                  sampler: str) -> tuple[dict, float]:
+                  sampler: str) -> tuple[str, dict, float]:
     """One sampler over the query set, without and with prediction in turns (also in a worker process):
-    ``{"without": summary, "with": summary}`` and seconds."""
+    the sampler, ``{"without": summary, "with": summary}`` and seconds."""
     began = time.perf_counter()
     scenario = scenarios.get(scenario_name)
     counts = QUICK_QUERIES[scenario.name] if quick else (None, None)
@@ -165,7 +224,7 @@ def _planning_run(scenario_name: str, checkpoint: str, planner: dict, seed: int,
     models = checkpoints.load_models(checkpoint, scenario.name)
     factories = {"without": None, "with": partial(LearnedChecker, models=models)}
     runs = queries.run_interleaved(scenario, query_set, sampler, factories, options, seed)
-    return {mode: runs[mode][1] for mode in MODES}, time.perf_counter() - began
+    return sampler, {mode: runs[mode][1] for mode in MODES}, time.perf_counter() - began
 
 
 def _throughput(scenario, preset: str, seed: int, quick: bool) -> dict:
@@ -173,6 +232,11 @@ def _throughput(scenario, preset: str, seed: int, quick: bool) -> dict:
     exact = bench.exact_throughput(scenario, seed=seed, repeats=repeats)
     learned = bench.learned_throughput(scenario, preset, seed=seed, repeats=repeats)
     return {"exact_cfg_per_s": exact, "learned_cfg_per_s": learned, "ratio": learned / exact}
+
+
+def run_settings(scenario: str, preset: str, quick: bool, seed: int) -> dict:
+    """What makes one run: a folder holding another run's cache is refused (its stages do not apply)."""
+    return {"scenario": scenario, "preset": preset, "quick": bool(quick), "seed": int(seed)}
 
 
 def improvement(planning: dict, key: str) -> dict[str, float]:
@@ -188,7 +252,7 @@ def reproduce(scenario_name: str, preset: str = "paper", quick: bool = False, se
     """
     scenario = scenarios.get(scenario_name)
     out = Path(out)
-    settings = {"scenario": scenario.name, "preset": preset, "quick": bool(quick), "seed": int(seed)}
+    settings = run_settings(scenario.name, preset, quick, seed)
     stages = Stages(out, settings, progress)
     began = time.perf_counter()
     splits = _splits(stages, scenario, preset, seed, quick)
@@ -201,7 +265,7 @@ def reproduce(scenario_name: str, preset: str = "paper", quick: bool = False, se
                    improvement={"sampling": improvement(planning, "sampling_s"), "total": improvement(planning, "total_s")},
                    stage_seconds=stages.seconds, recomputed=stages.recomputed, wall_seconds=time.perf_counter() - began,
                    versions={"torch": torch.__version__, "numpy": np.__version__})
-    write_json(out / "results.json", results)
+    outputs.write_json(out / "results.json", results)
     (out / "tables.md").write_text(tables_markdown(results))
     _figures(out, scenario, models, splits, learning, planning)
     return results
@@ -321,9 +385,15 @@ def summary_markdown(runs: list[dict]) -> str:
 
 def reproduce_many(names: list[str], preset: str = "paper", quick: bool = False, seed: int = 0,
                    out: str | Path = "results", progress: bool = True, workers: int | None = None) -> dict[str, dict]:
-    """:func:`reproduce` for several scenarios into ``out/<scenario>``, plus ``out/tables.md`` with a row per scenario."""
+    """:func:`reproduce` for several scenarios into ``out/<scenario>``, plus ``out/tables.md`` with a row per scenario.
+
+    Every scenario's folder is checked before the first one starts."""
     out = Path(out)
+    if out.is_dir() and (other := sorted(p.name for p in out.iterdir() if p.name not in {*scenarios.SCENARIOS, "tables.md"})):
+        raise ValueError(f"--out {out} holds {other}, not the scenario folders of a reproduction; choose a new or "
+                         "empty folder")
+    for name in names:
+        check_out(out / name, run_settings(name, preset, quick, seed))
     results = {name: reproduce(name, preset, quick, seed, out / name, progress, workers) for name in names}
-    out.mkdir(parents=True, exist_ok=True)
     (out / "tables.md").write_text(summary_markdown(list(results.values())))
     return results

@@ -19,15 +19,12 @@ query, so that the ratio of their times is measured under the same conditions.
 from __future__ import annotations
 
 import time
-from contextlib import contextmanager
 from dataclasses import dataclass
 from typing import Callable
 
 import numpy as np
-import torch
-from threadpoolctl import threadpool_limits
 
-from . import data
+from . import data, threads
 from .collision import CollisionChecker, exact_checker
 from .learned import LearnedChecker
 from .local_planner import path_is_valid
@@ -125,9 +122,9 @@ def run_interleaved(scenario: Scenario, queries: list[Query], sampler: str,
     return {name: (runs, summarize(runs)) for name, runs in records.items()}
 
 
-@contextmanager
 def one_thread():
-    """Torch and numpy's BLAS on one thread inside (the previous counts restored after): how queries are timed.
+    """Torch and numpy's BLAS on one thread inside (the previous counts restored after): how queries are timed,
+    whatever ``TOOLKIT_THREADS`` says, so that times from different runs compare (:mod:`toolkit.threads`).
 
     The exact checker's own work runs on one thread; the learned checker's calls are
     small (a few hundred to a few ten thousand configurations), where intra-op threads
@@ -137,13 +134,7 @@ def one_thread():
     the learned checker's small calls): 3DC-7, strong model, 50 queries, sampling with
     prediction G 5.5 -> 1.4 ms, BT 3.9 -> 1.2 ms a query on one BLAS thread.
     """
-    before = torch.get_num_threads()
-    torch.set_num_threads(1)
-    try:
-        with threadpool_limits(limits=1, user_api="blas"):
-            yield
-    finally:
-        torch.set_num_threads(before)
+    return threads.limited(1)
 
 
 def _solve_all(scenario: Scenario, queries: list[Query], sampler: str,

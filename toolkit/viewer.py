@@ -20,9 +20,12 @@ the GUI panel in :mod:`toolkit.viewer_gui`, browser screenshots in :mod:`toolkit
 from __future__ import annotations
 
 import contextlib
+import errno
 import html as html_lib
+import socket
 import threading
 import time
+from functools import partial
 from pathlib import Path
 from typing import Callable
 
@@ -47,7 +50,9 @@ class Viewer:
     """A live Viser scene of one scenario and workspace, with its GUI panel.
 
     ``checkpoint`` (a folder from ``toolkit train``) or ``predictor`` (a function
-    workspace -> learned checker) adds the model's predictions.
+    workspace -> learned checker) adds the model's predictions. A checkpoint that
+    cannot be read, or a host or port that cannot be served on, raises before the
+    server starts.
     """
 
     def __init__(self, scenario: str = "3do", *, seed: int = 0, checkpoint: str | Path | None = None,
@@ -55,10 +60,12 @@ class Viewer:
         if checkpoint is not None and predictor is not None:
             raise ValueError("give a checkpoint or a predictor, not both")
         if checkpoint is not None:
-            from .learned import load_checker  # torch: only when a model is asked for
+            from .checkpoints import load_models  # torch: only when a model is asked for
+            from .learned import LearnedChecker
 
-            predictor = lambda workspace: load_checker(checkpoint, workspace)  # noqa: E731
+            predictor = partial(LearnedChecker, models=load_models(checkpoint))
         self.predictor = predictor
+        port = free_port(host, port)
         with _viser_quiet():  # launch() prints the one line a user needs
             self.server = viser.ViserServer(host=host, port=port, label="Predicting sample collision", verbose=False)
         draw.light(self.server.scene)
@@ -334,10 +341,35 @@ def _viser_quiet():
         console.quiet = quiet
 
 
+def free_port(host: str, port: int, tries: int = 100) -> int:
+    """The first port from ``port`` on that ``host`` can serve on (0: let the system choose one).
+
+    Checked here because viser, given a port out of range or an address this computer
+    does not have, waits forever; here it is a ``ValueError`` that says why.
+    """
+    if not 0 <= port <= 65535:
+        raise ValueError(f"port must be 0..65535, got {port}")
+    try:
+        family, kind, proto, _, address = socket.getaddrinfo(host, port, type=socket.SOCK_STREAM)[0]
+    except socket.gaierror as err:
+        raise ValueError(f"cannot serve on host {host!r}: {err.strerror}") from None
+    for candidate in range(port, min(port + tries, 65536)) if port else [0]:
+        with socket.socket(family, kind, proto) as probe:
+            probe.setsockopt(socket.SOL_SOCKET, socket.SO_REUSEADDR, 1)  # as the server's own socket does
+            try:
+                probe.bind((address[0], candidate, *address[2:]))
+                return candidate
+            except OSError as err:
+                if err.errno != errno.EADDRINUSE:
+                    raise ValueError(f"cannot serve on {host}:{candidate}: {err.strerror}") from None
+    raise ValueError(f"ports {port}..{min(port + tries, 65536) - 1} on {host} are all busy; choose another port")
+
+
 def launch(scenario: str = "3do", *, seed: int = 0, checkpoint: str | Path | None = None,
-           host: str = "127.0.0.1", port: int = 8080, quiet: bool = False) -> Viewer:
+           predictor: Predictor | None = None, host: str = "127.0.0.1", port: int = 8080,
+           quiet: bool = False) -> Viewer:
     """Start a :class:`Viewer` and print the URL to open (and whether the port was busy)."""
-    viewer = Viewer(scenario, seed=seed, checkpoint=checkpoint, host=host, port=port)
+    viewer = Viewer(scenario, seed=seed, checkpoint=checkpoint, predictor=predictor, host=host, port=port)
     if not quiet:
         busy = f" (port {port} was busy)" if port and viewer.port != port else ""
         print(f"toolkit view: {scenario} (seed {seed}) at {viewer.url}{busy} — open it in a browser; Ctrl-C stops",

@@ -1,27 +1,31 @@
-"""Screenshots of the viewer in a real headless Chromium, and what their pixels show.
+"""Screenshots of the viewer in a real headless Chromium, taken once the page shows the scene.
 
 Used by the browser test and to make ``docs/viewer.png``::
 
     toolkit view --scenario 3do --screenshot docs/viewer.png
 
-Chromium renders WebGL in software here (``--disable-gpu``, no ``--use-gl`` flag:
-``--use-gl=swiftshader`` would turn WebGL off). ``--virtual-time-budget`` lets the
-page run that many milliseconds of timers (WebSocket connection, first frames)
-before the screenshot is taken. Without ``--run-all-compositor-stages-before-draw``
-about half of the runs never finish (measured: 6 of 12 hung; with it 12 of 12
-finished in 6-16 s on 2 busy cores); a run that still hangs is retried once.
+Playwright drives Debian's Chromium (``make browser``). WebGL renders in software
+there (``--disable-gpu``; ``--use-gl=swiftshader`` would turn WebGL off), and on a
+busy machine the first frame takes from a second to a minute. So the picture is not
+taken after a fixed time: the page is photographed every second until ``ready(png)``
+says it shows what is expected (by default, the workspace's obstacles), within a
+total budget after which a ``TimeoutError`` names the last picture. (The earlier
+way, ``chromium --screenshot`` with a fixed ``--virtual-time-budget``, took its one
+picture blind and, beside busy processes, timed out.)
 """
 
 from __future__ import annotations
 
 import shutil
-import subprocess
-import tempfile
+import time
 from pathlib import Path
+from typing import Callable
 
 import numpy as np
 from matplotlib import image as mpimg
 from matplotlib.colors import rgb_to_hsv
+
+from . import viewer_scene as draw
 
 CHROMIUM_NAMES = ("chromium", "chromium-browser", "google-chrome")
 CANVAS_ROWS = (0.2, 0.95)  # fractions of the height clear of the top-left notice and the bottom edge
@@ -34,33 +38,51 @@ def find_chromium() -> str | None:
     return next((path for path in map(shutil.which, CHROMIUM_NAMES) if path), None)
 
 
-def screenshot(url: str, path: str | Path, *, size: tuple[int, int] = (1280, 800), budget_ms: int = 5000,
-               timeout_s: float = 60.0, attempts: int = 2) -> Path:
-    """Load ``url`` in headless Chromium and save a PNG of ``size`` (width, height) to ``path``."""
+def shows_obstacles(png: str | Path) -> bool:
+    """Whether a screenshot shows the workspace's obstacles (every scene has some): the scene has arrived."""
+    return color_share(png, draw.OBSTACLE) > 0.001
+
+
+def screenshot(url: str, path: str | Path, *, size: tuple[int, int] = (1280, 800),
+               ready: Callable[[Path], bool] = shows_obstacles, budget_s: float = 300.0,
+               every_s: float = 1.0) -> Path:
+    """Load ``url`` in headless Chromium and save a PNG of ``size`` (width, height) to ``path`` once
+    ``ready(path)`` holds, photographing the page every ``every_s`` seconds for at most ``budget_s``."""
     chromium = find_chromium()
     if chromium is None:
         raise FileNotFoundError(f"no Chromium found (looked for {', '.join(CHROMIUM_NAMES)}); "
                                 "install it with `make browser` or `apt-get install chromium`")
+    try:
+        from playwright.sync_api import TimeoutError as PageTimeout
+        from playwright.sync_api import sync_playwright
+    except ImportError:
+        raise FileNotFoundError("screenshots need Playwright: pip install playwright (it is in the dev extras, "
+                                "pip install -e '.[dev]')") from None
     path = Path(path).resolve()
     path.parent.mkdir(parents=True, exist_ok=True)
     path.unlink(missing_ok=True)
-    for attempt in range(attempts):
-        with tempfile.TemporaryDirectory(prefix="toolkit-chromium-") as profile:
-            command = [
-                chromium, "--headless", "--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",
-                "--disable-background-networking", "--disable-component-update", "--disable-sync",
-                "--hide-scrollbars", "--run-all-compositor-stages-before-draw", f"--user-data-dir={profile}",
-                f"--window-size={size[0]},{size[1]}", f"--virtual-time-budget={budget_ms}", f"--screenshot={path}",
-                url,
-            ]
-            try:
-                done = subprocess.run(command, capture_output=True, text=True, timeout=timeout_s)
-            except subprocess.TimeoutExpired:
-                continue
-        if done.returncode != 0 or not path.exists():
-            raise RuntimeError(f"chromium failed ({done.returncode}) to screenshot {url}: {done.stderr[-2000:]}")
-        return path
-    raise TimeoutError(f"chromium did not finish a screenshot of {url} in {attempts} tries of {timeout_s:.0f} s")
+    deadline = time.monotonic() + budget_s
+
+    def left_ms() -> float:
+        return max(1.0, deadline - time.monotonic()) * 1000
+
+    with sync_playwright() as playwright:
+        try:
+            browser = playwright.chromium.launch(executable_path=chromium, args=["--no-sandbox", "--disable-gpu"],
+                                                 timeout=left_ms())
+            page = browser.new_page(viewport={"width": size[0], "height": size[1]})
+            page.goto(url, timeout=left_ms())
+            while True:
+                page.screenshot(path=str(path), timeout=left_ms())
+                if ready(path):
+                    return path
+                if time.monotonic() + every_s > deadline:
+                    break
+                time.sleep(every_s)
+        except PageTimeout:
+            pass
+    raise TimeoutError(f"{url} did not show what was expected within {budget_s:.0f} s; the last screenshot: "
+                       f"{path if path.exists() else 'none'}")
 
 
 def color_share(png: str | Path, rgb: tuple[int, int, int], *, hue_tolerance: float = 15.0,
