@@ -21,7 +21,7 @@ import uuid
 from pathlib import Path
 from typing import TypeVar
 
-from . import checkpoints, training
+from . import checkpoints, threads, training
 from .training import TrainedModels
 
 QUICK_ENV = "TOOLKIT_QUICK"
@@ -54,9 +54,11 @@ def trained_models(scenario: str, preset: str, *, seed: int = 0, progress: bool 
     folder = cache_dir() / f"{scenario}-{preset}-seed{seed}{'-quick' if is_quick() else ''}"
     if folder.exists():
         return checkpoints.load_models(folder, scenario)
-    splits = training.preset_splits(scenario, preset, seed, quick=is_quick(), progress=progress)
-    models = training.train_models(scenario, preset, splits, seed, progress=progress, quick=is_quick(), device="cpu")
-    scores = training.evaluate(models, splits)
+    with threads.limited(threads.configured()):  # one thread, as the toolkit command: fast on a shared machine
+        splits = training.preset_splits(scenario, preset, seed, quick=is_quick(), progress=progress)
+        models = training.train_models(scenario, preset, splits, seed, progress=progress, quick=is_quick(),
+                                       device="cpu")
+        scores = training.evaluate(models, splits)
     tmp = folder.with_name(f"{folder.name}.{uuid.uuid4().hex}.tmp")  # another notebook may be training the same
     checkpoints.save_checkpoint(models, tmp, evaluation=scores)
     try:

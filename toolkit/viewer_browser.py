@@ -31,6 +31,8 @@ CHROMIUM_NAMES = ("chromium", "chromium-browser", "google-chrome")
 CANVAS_ROWS = (0.2, 0.95)  # fractions of the height clear of the top-left notice and the bottom edge
 CANVAS_LEFT = 0.02  # fraction of the width left out on the left
 PANEL_PX = 340  # the GUI panel's width on the right, in pixels
+CHROMIUM_ARGS = ["--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",  # no network besides the page
+                 "--disable-background-networking", "--disable-component-update", "--disable-sync"]
 
 
 def find_chromium() -> str | None:
@@ -68,7 +70,7 @@ def screenshot(url: str, path: str | Path, *, size: tuple[int, int] = (1280, 800
 
     with sync_playwright() as playwright:
         try:
-            browser = playwright.chromium.launch(executable_path=chromium, args=["--no-sandbox", "--disable-gpu"],
+            browser = playwright.chromium.launch(executable_path=chromium, args=CHROMIUM_ARGS,
                                                  timeout=left_ms())
             page = browser.new_page(viewport={"width": size[0], "height": size[1]})
             page.goto(url, timeout=left_ms())
