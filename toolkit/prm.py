@@ -22,17 +22,12 @@
    edge remembers the finest resolution it passed at (``Roadmap.edge_checked_at``),
    so the next candidate path re-checks none of them. Verification uses clearance
    certificates (``local_planner.certify_edges``: the same answer as checking every
-   point, but a stretch whose ends are far enough from every obstacle needs no check),
-   so the 10x finer level costs less than twice the first (`toolkit bench`, 3DC-9: 0.032 s
-   against 0.019 s for 300 segments; 0.36 s checking every point). While start and goal
-   still lie in different components (repairs split a lazy roadmap; or the bridges
-   failed), the planner bridges them again with the closest pairs not yet tried (the
-   roadmap remembers rejected pairs), up to ``rebridge`` times, before it samples
-   another round (3DC-9, strong model, 100 queries, ``toolkit bench --option
-   rebridge=0`` against the default: sampling rounds a query with prediction OB 1.36 ->
-   1.06, BT 1.29 -> 1.13; sampling time with / without OB 0.20 -> 0.13, BT 0.29 -> 0.25).
-   A returned path is always valid under the exact checker at both resolutions;
-   otherwise ``success`` is False.
+   point, but a stretch whose ends are far enough from every obstacle needs no check).
+   While start and goal still lie in different components (repairs split a lazy
+   roadmap; or the bridges failed), the planner bridges them again with the closest
+   pairs not yet tried (the roadmap remembers rejected pairs), up to ``rebridge``
+   times, before it samples another round. A returned path is always valid under the
+   exact checker at both resolutions; otherwise ``success`` is False.
 
 To watch these steps, pass ``trace=[]``: the planner appends a :class:`PlanStep`, a
 snapshot of the roadmap, at every stage (``STAGES``: new samples, edges, bridges, each
@@ -49,18 +44,13 @@ prediction, edges are decided in one of two ways (``PRMOptions.screen_edges``):
   more of them is predicted in collision) and only the candidate path's edges are
   checked exactly, first at the roadmap's resolution (most edges that fail, fail
   there), then 10x finer. Screening only estimates the fraction in collision, so it
-  predicts points ``screen_spacing = 8`` resolutions apart (3DC: 0.4, still two
-  points per unit obstacle cell crossed). Measured with ``queries.compare_prediction``
-  on the first 30 queries of 3DC, seed 0, strong model; total time with / without,
-  BS OB G BT: 3DC-7, spacing 1 — 0.41 0.44 0.36 0.91; 4 — 0.18 0.33 0.14 0.63;
-  8 — 0.11 0.26 0.13 0.62; 3DC-9, spacing 4 — 0.14 0.30 0.13 1.07; 8 — 0.10 0.25 0.10 1.09
-  (the bridge test's sparse roadmaps need repairs at any spacing). Before certifying
-  a path's edges, the exact checker looks at the one point of each edge where
-  screening predicted a collision (the middle predicted-invalid point;
-  ``Roadmap.edge_suspect``, ``local_planner.refute_at``): a screened edge that fails
-  usually fails there, for one exact check instead of a certificate's several calls
-  (the first 100 queries, strong model, query phase a query, without / with this:
-  BT 3DO 78 / 35 ms, 3DC-9 43 / 26 ms; OB 3DC-9 107 / 84 ms; BS and G about equal).
+  predicts points ``screen_spacing`` resolutions apart. Before certifying a path's
+  edges, the exact checker looks at the one point of each edge where screening
+  predicted a collision (the middle predicted-invalid point; ``Roadmap.edge_suspect``,
+  ``local_planner.refute_at``): a screened edge that fails usually fails there, for
+  one exact check instead of a certificate's several calls.
+
+What each of these choices buys, measured, is in ``docs/benchmarks.md`` ("Planner design").
 """
 
 from __future__ import annotations
