@@ -3,7 +3,7 @@ VENV ?= .venv
 PY := $(VENV)/bin/python
 OUT ?= results/2ds-paper
 
-.PHONY: setup browser demo test lab clean
+.PHONY: setup browser demo test lab assignments clean
 
 setup: $(VENV)/.installed
 
@@ -28,6 +28,11 @@ test: setup browser
 # JupyterLab on the notebooks, for a student: open the URL it prints, start with 01.
 lab: setup
 	$(VENV)/bin/jupyter lab --notebook-dir=notebooks --ip=127.0.0.1
+
+# Course assignments: otter assign on every master, writing dist/student/ (hand these out) and
+# dist/autograder/ beside it; grade with `toolkit grade NOTEBOOK` (tutorials/assignments/README.md).
+assignments: setup
+	$(PY) -c "from toolkit import grading; print(grading.build_all())"
 
 clean:
 	rm -rf $(VENV) results .pytest_cache

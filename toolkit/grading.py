@@ -58,6 +58,11 @@ def build(name: str) -> Path:
     return autograder(name, build_missing=False)
 
 
+def build_all() -> dict[str, Path]:
+    """:func:`build` every assignment (``make assignments``); returns each one's autograder zip."""
+    return {name: build(name) for name in assignment_names()}
+
+
 def autograder(name: str, build_missing: bool = True) -> Path:
     """The newest autograder zip of assignment ``name``, built first when missing."""
     zips = sorted((master(name).parent / "dist" / "autograder").glob(f"{name}-autograder_*.zip"))
@@ -74,13 +79,14 @@ def _max_points(zip_path: Path) -> dict[str, float]:
     return {q: float(test["points"]) for q, test in notebook["metadata"]["otter"]["tests"].items()}
 
 
-def grade(notebook: str | Path, assignment: str | None = None, timeout: float = TIMEOUT_S) -> dict:
+def grade(notebook: str | Path, assignment: str | None = None, timeout: float | None = None) -> dict:
     """Grade a filled-in student notebook; the assignment defaults to the notebook's file name.
 
     Returns ``{"assignment", "questions": [{"name", "score", "max_score", "feedback"}],
     "score", "max_score", "timed_out"}``.
     """
     notebook = Path(notebook).resolve()
+    timeout = TIMEOUT_S if timeout is None else timeout
     name = assignment or notebook.stem
     zip_path = autograder(name)
     points = _max_points(zip_path)
@@ -120,3 +126,25 @@ def report(result: dict) -> str:
             lines += ["    " + line for line in q["feedback"].strip().splitlines()]
     lines.append(f"score: {result['score']:g}/{result['max_score']:g}")
     return "\n".join(lines)
+
+
+def submissions(paths: list[str | Path]) -> list[Path]:
+    """The notebooks among ``paths``: files as given, folders expanded to their ``*.ipynb`` (sorted)."""
+    found = []
+    for path in map(Path, paths):
+        found += sorted(path.glob("*.ipynb")) if path.is_dir() else [path]
+    return found
+
+
+def write_csv(results: dict[Path, dict], path: str | Path) -> None:
+    """One row per submission: ``submission, assignment, <question>..., score, max_score, timed_out``."""
+    import csv
+
+    questions = list(dict.fromkeys(q["name"] for r in results.values() for q in r["questions"]))
+    with open(path, "w", newline="") as file:
+        writer = csv.writer(file)
+        writer.writerow(["submission", "assignment", *questions, "score", "max_score", "timed_out"])
+        for notebook, result in results.items():
+            scores = {q["name"]: q["score"] for q in result["questions"]}
+            writer.writerow([str(notebook), result["assignment"], *(scores.get(q, "") for q in questions),
+                             result["score"], result["max_score"], result["timed_out"]])

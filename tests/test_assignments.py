@@ -1,0 +1,133 @@
+"""The course assignments grade honestly (tutorials/assignments/, toolkit.grading, otter-grader).
+
+The slow tests build every master with ``otter assign`` and grade, all at once in threads
+(each ``otter run`` is a subprocess with its own kernel): the master's solutions, the untouched
+student notebook, a plausible wrong answer per assignment and a submission that never ends.
+"""
+
+from __future__ import annotations
+
+import csv
+import json
+from concurrent.futures import ThreadPoolExecutor
+from pathlib import Path
+
+import pytest
+
+from toolkit import cli, grading
+
+# Plausible wrong answers: (assignment, the solution's line, its replacement, the questions it breaks).
+WRONG = {
+    "bridge_keeps_invalid_midpoints": ("bridge_test", "keep = free(checker, middles)",
+                                       "keep = np.ones(len(middles), dtype=bool)", {"q1"}),
+    "repair_trusts_the_liar": ("verify_and_repair", "path = roadmap.shortest_path(start, goal)  # (P,) node indices",
+                               "return roadmap.shortest_path(start, goal)", {"q1"}),
+    "threshold_largest_not_smallest": ("evaluating_a_checker", "for threshold in sorted(thresholds):",
+                                       "for threshold in sorted(thresholds, reverse=True):", {"q2"}),
+    "tpr_and_tnr_swapped": ("evaluating_a_checker",
+                            '"tpr": float(np.mean(predicted_valid[valid])) if valid.any() else float("nan"),\n        "tnr"',
+                            '"tnr": float(np.mean(predicted_valid[valid])) if valid.any() else float("nan"),\n        "tpr"',
+                            {"q1", "q2"}),  # q2 uses q1's rates
+}
+HANG_TIMEOUT_S = 30
+
+
+def _edited(source: Path, target: Path, old: str, new: str) -> Path:
+    """A copy of notebook ``source`` at ``target`` with ``old`` replaced by ``new`` (which must occur once)."""
+    notebook = json.loads(source.read_text())
+    hits = 0
+    for cell in notebook["cells"]:
+        text = "".join(cell["source"])
+        hits += text.count(old)
+        cell["source"] = text.replace(old, new)
+    assert hits == 1, f"{old!r} occurs {hits} times in {source}"
+    target.parent.mkdir(parents=True, exist_ok=True)
+    target.write_text(json.dumps(notebook))
+    return target
+
+
+@pytest.fixture(scope="module")
+def graded(tmp_path_factory) -> dict[str, dict]:
+    """Build every assignment, then grade all the notebooks below concurrently.
+
+    Building runs each master's solutions against every public and hidden test and fails
+    when one fails (``otter assign``), so a built assignment's solutions score full marks.
+    """
+    with ThreadPoolExecutor() as pool:
+        zips = dict(zip(grading.assignment_names(), pool.map(grading.build, grading.assignment_names())))
+    root = tmp_path_factory.mktemp("submissions")
+    jobs = {}  # label -> (notebook, assignment, timeout)
+    for name, zip_path in zips.items():
+        dist = zip_path.parent.parent
+        jobs[f"{name}/blank"] = (dist / "student" / f"{name}.ipynb", name, None)
+    for label, (name, old, new, _) in WRONG.items():
+        solution = zips[name].parent / f"{name}.ipynb"
+        jobs[label] = (_edited(solution, root / label / f"{name}.ipynb", old, new), name, None)
+    solution = zips["verify_and_repair"].parent / "verify_and_repair.ipynb"
+    jobs["hangs"] = (_edited(solution, root / "hangs" / "verify_and_repair.ipynb",
+                             "path = roadmap.shortest_path(start, goal)  # (P,) node indices",
+                             "path = None\n        while True:\n            pass"), "verify_and_repair", HANG_TIMEOUT_S)
+    with ThreadPoolExecutor(max_workers=5) as pool:
+        results = pool.map(lambda job: grading.grade(*job), jobs.values())
+        return dict(zip(jobs, results))
+
+
+def test_the_assignments_exist():
+    assert {"bridge_test", "verify_and_repair", "evaluating_a_checker"} <= set(grading.assignment_names())
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["bridge_test", "verify_and_repair", "evaluating_a_checker"])
+def test_the_untouched_student_notebook_runs_and_scores_zero(graded, name):
+    blank = graded[f"{name}/blank"]
+    assert not blank["timed_out"] and blank["max_score"] > 0
+    assert blank["score"] == 0, grading.report(blank)
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("label", sorted(WRONG))
+def test_a_wrong_answer_loses_the_points_of_its_parts_only(graded, label):
+    broken = WRONG[label][3]
+    result = graded[label]
+    for question in result["questions"]:
+        lost = question["score"] < question["max_score"]
+        assert lost == (question["name"] in broken), grading.report(result)
+
+
+@pytest.mark.slow
+def test_a_submission_that_never_ends_is_stopped_and_scored_zero(graded):
+    result = graded["hangs"]
+    assert result["timed_out"] and result["score"] == 0 and result["max_score"] > 0
+    assert "stopped after" in result["questions"][0]["feedback"]
+
+
+def test_the_report_ends_with_the_score_and_shows_feedback_where_points_were_lost():
+    result = {"assignment": "a", "timed_out": False, "score": 2.0, "max_score": 5.0,
+              "questions": [{"name": "q1", "score": 2.0, "max_score": 2.0, "feedback": "all passed"},
+                            {"name": "q2", "score": 0.0, "max_score": 3.0, "feedback": "AssertionError: a returned sample is in collision"}]}
+    lines = grading.report(result).splitlines()
+    assert lines[-1] == "score: 2/5"
+    assert "q2: 0/3" in lines and any("a returned sample is in collision" in line for line in lines)
+    assert not any("all passed" in line for line in lines)
+
+
+def test_a_folder_of_submissions_becomes_one_csv_row_each(tmp_path):
+    for stem in ("b", "a"):
+        (tmp_path / f"{stem}.ipynb").write_text("{}")
+    (tmp_path / "notes.txt").write_text("")
+    found = grading.submissions([tmp_path])
+    assert [p.name for p in found] == ["a.ipynb", "b.ipynb"]
+    results = {p: {"assignment": "x", "timed_out": False, "score": float(i), "max_score": 2.0,
+                   "questions": [{"name": "q1", "score": float(i), "max_score": 2.0, "feedback": ""}]}
+               for i, p in enumerate(found)}
+    grading.write_csv(results, tmp_path / "scores.csv")
+    rows = list(csv.DictReader(open(tmp_path / "scores.csv")))
+    assert [(Path(r["submission"]).name, r["q1"], r["score"], r["max_score"]) for r in rows] == \
+        [("a.ipynb", "0.0", "0.0", "2.0"), ("b.ipynb", "1.0", "1.0", "2.0")]
+
+
+def test_the_grade_command_is_wired():
+    args = cli.build_parser().parse_args(["grade", "x.ipynb", "--csv", "s.csv", "--timeout", "5"])
+    assert args.func is cli.cmd_grade and args.notebooks == ["x.ipynb"] and args.timeout == 5.0
+    with pytest.raises(ValueError, match="unknown assignment"):
+        grading.master("no_such_assignment")
