@@ -16,6 +16,7 @@ drives Debian's Chromium (``executable_path``); it never downloads a browser.
 from __future__ import annotations
 
 import argparse
+import json
 import os
 import secrets
 import shutil
@@ -34,6 +35,10 @@ from typing import Iterator
 from .viewer_browser import CHROMIUM_ARGS, find_chromium
 
 WINDOW = (1400, 1000)  # (width, height) of the page
+SETTINGS = {  # JupyterLab settings for the run: no news pop-up; every cell in the page, also those scrolled away
+    "@jupyterlab/apputils-extension/notification": {"fetchNews": "false", "checkForUpdates": False},
+    "@jupyterlab/notebook-extension/tracker": {"windowingMode": "none"},
+}
 STDERR = '.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.stderr"]'  # errors and warnings render so
 
 
@@ -61,10 +66,12 @@ def _free_port() -> int:
 def jupyterlab(root: Path, env: dict[str, str] | None = None, timeout_s: float = 120.0) -> Iterator[str]:
     """A JupyterLab server on ``root``, bound to 127.0.0.1; yields its URL with the token, stops it afterwards."""
     port, token = _free_port(), secrets.token_hex(16)
-    settings = root / ".lab-settings" / "@jupyterlab" / "apputils-extension"
-    settings.mkdir(parents=True, exist_ok=True)
-    (settings / "notification.jupyterlab-settings").write_text('{"fetchNews": "false", "checkForUpdates": false}')
-    env = {**os.environ, "JUPYTERLAB_SETTINGS_DIR": str(settings.parents[1]), **(env or {})}
+    settings = root / ".lab-settings"
+    for plugin, value in SETTINGS.items():
+        path = settings / f"{plugin}.jupyterlab-settings"
+        path.parent.mkdir(parents=True, exist_ok=True)
+        path.write_text(json.dumps(value))
+    env = {**os.environ, "JUPYTERLAB_SETTINGS_DIR": str(settings), **(env or {})}
     command = [sys.executable, "-m", "jupyterlab", "--no-browser", "--ServerApp.ip=127.0.0.1",
                f"--ServerApp.port={port}", "--ServerApp.port_retries=0", f"--IdentityProvider.token={token}",
                f"--ServerApp.root_dir={root}", "--LabApp.news_url=", "--LabApp.check_for_updates_class="
@@ -128,7 +135,7 @@ def run_all(notebook: str | Path, *, env: dict[str, str] | None = None, screensh
                 began = time.monotonic()
                 page.locator("#jp-menu-panel").get_by_text("Run", exact=True).click()
                 page.get_by_text("Run All Cells", exact=True).click()
-                n_code = page.locator(".jp-CodeCell").count()
+                n_code = sum(cell["cell_type"] == "code" for cell in json.loads(notebook.read_text())["cells"])
                 page.wait_for_function(f"""() => {{  // every cell ran, or one failed and the rest were skipped
                     const prompts = [...document.querySelectorAll('.jp-CodeCell .jp-InputArea-prompt')];
                     const ran = prompts.filter(p => /\\[\\d+\\]/.test(p.textContent)).length;
