@@ -1,4 +1,4 @@
-"""Labelled datasets (issue 2, paper §V-A): balance, labels, the seen / unseen splits, files."""
+"""Labelled datasets (issue 2, paper §IV-A): balance, labels, the seen / unseen splits, files."""
 
 import json
 

@@ -1,4 +1,4 @@
-"""Robots (issue 2, paper §V-A): kinematics against 4x4 matrices, bounds, interpolation, motion bound."""
+"""Robots (issue 2, paper §IV-A): kinematics against 4x4 matrices, bounds, interpolation, motion bound."""
 
 import itertools
 

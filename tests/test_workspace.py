@@ -1,4 +1,4 @@
-"""Workspaces (issue 2, paper §V-A): the three families, occupancy grids, files, bad input."""
+"""Workspaces (issue 2, paper §IV-A): the three families, occupancy grids, files, bad input."""
 
 import json
 

@@ -1,4 +1,4 @@
-"""Labelled, balanced datasets of configurations and their seen / unseen splits (paper §V-A).
+"""Labelled, balanced datasets of configurations and their seen / unseen splits (paper §IV-A).
 
 For every workspace we draw configurations uniformly, label them with the exact
 checker and keep about as many valid as invalid ones (the paper: "approximately

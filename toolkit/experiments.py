@@ -1,4 +1,4 @@
-"""Reproduction of the paper's Tables 1-3 and Figures 5-7 (§VI), with one resumable command.
+"""Reproduction of the paper's Tables 1-3 and Figures 5-7 (§V), with one resumable command.
 
 ``reproduce(scenario, preset, quick, seed, out)`` runs the stages
 

@@ -1,4 +1,4 @@
-"""The paper's measures (§VI): CAE reconstruction accuracy (Table 1); MLP accuracy, TPR, TNR (Table 2).
+"""The paper's measures (§V): CAE reconstruction accuracy (Table 1); MLP accuracy, TPR, TNR (Table 2).
 
 TPR is the share of truly valid configurations predicted valid, TNR the share of
 truly invalid ones predicted invalid (false negative rate = 1 - TPR, false positive

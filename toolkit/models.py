@@ -1,11 +1,11 @@
-"""The two networks of the paper (§III-A, §V-B) and the input encoding of the MLP.
+"""The two networks of the paper (§III-A, §IV-B) and the input encoding of the MLP.
 
 - :class:`CAE`: the contractive autoencoder. Linear layers with PReLU, the decoder
   mirrors the encoder; loss = Eq. (1), reconstruction error plus
   ``lambda * sum(W_e ** 2)`` over the *encoder's* weights, a penalty that really
   reaches the gradients (it is computed from the parameters themselves).
 - :class:`CollisionMLP`: ``[z, q] -> 2`` logits (invalid, valid), hidden blocks of
-  Linear -> PReLU -> Dropout(p) (§V-B2).
+  Linear -> PReLU -> Dropout(p) (§IV-B2).
 - :class:`~toolkit.encoding.InputEncoding` (in :mod:`toolkit.encoding`): what the MLP
   sees, the paper's ``[z, q]`` or ``[z, patch, pose]`` (the ``strong`` preset leaves out ``z``).
 - :class:`CollisionPredictor`: the three together, one ``state_dict``;
@@ -45,7 +45,7 @@ def he_init(module: nn.Module) -> None:
 
 
 class CAE(nn.Module):
-    """Contractive autoencoder of flattened occupancy grids (§III-A1, §V-B1).
+    """Contractive autoencoder of flattened occupancy grids (§III-A1, §IV-B1).
 
     ``sizes`` = (input, hidden..., latent), e.g. 2DS (961, 512, 256, 128, 64, 32, 12).
 
@@ -88,7 +88,7 @@ class CAE(nn.Module):
 
 
 class CollisionMLP(nn.Module):
-    """Validity classifier (§III-A2, §V-B2): Linear -> PReLU -> Dropout(p) blocks, then 2 logits (no Dropout when p = 0)."""
+    """Validity classifier (§III-A2, §IV-B2): Linear -> PReLU -> Dropout(p) blocks, then 2 logits (no Dropout when p = 0)."""
 
     def __init__(self, in_features: int, hidden: tuple[int, ...], dropout: float):
         super().__init__()

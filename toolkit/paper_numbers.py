@@ -1,4 +1,4 @@
-"""The published figures of Tran, Denny, Ekenna, as printed in the paper (§VI).
+"""The published figures of Tran, Denny, Ekenna, as printed in the paper (§V).
 
 Fractions in [0, 1] and seconds, keyed like ``results.json``. Table 3 gives the
 time improvement ratio ``(without - with) / without``; the text around it gives
@@ -31,7 +31,7 @@ IMPROVEMENT = {
     "3dc9": {"sampling": {"BS": 0.39, "OB": 0.59, "G": 0.48, "BT": 0.62}, "total": {"BS": 0.18, "OB": 0.20, "G": 0.13, "BT": 0.37}},
 }
 
-# §VI text: (mean, std) seconds per query, without and with the framework.
+# §V text: (mean, std) seconds per query, without and with the framework.
 TIMES = {
     "2ds": {
         "sampling_s": {"BS": ((0.0004, 0.0002), (0.0002, 0.0002)), "OB": ((0.05, 0.01), (0.03, 0.01)),

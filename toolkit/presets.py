@@ -1,4 +1,4 @@
-"""Training presets: ``paper`` (§V-B3, exactly the paper's settings) and ``strong`` (ours, measured).
+"""Training presets: ``paper`` (§IV-B3, exactly the paper's settings) and ``strong`` (ours, measured).
 
 ``paper``: the paper's sizes and data counts, Adagrad with learning rate 0.1
 for the MLP, dropout 0.5, lambda = 1e-3, the MLP sees ``[z, q]``. The paper gives

@@ -87,7 +87,7 @@ STAGES = {  # PlanStep.stage: what the planner just did (Algorithm 1, §III-B)
 
 @dataclass
 class PRMOptions:
-    """Planner settings; ``k`` follows OMPL's PRM, ``n_samples`` the paper's |S| (§V-A)."""
+    """Planner settings; ``k`` follows OMPL's PRM, ``n_samples`` the paper's |S| (§IV-A)."""
 
     n_samples: int = 200  # sampler attempts per round (|S|)
     k: int = 10  # nearest neighbours tried for each new node

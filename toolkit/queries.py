@@ -1,4 +1,4 @@
-"""Planning queries as in the paper (§V-A) and running a sampler over them, with or without prediction.
+"""Planning queries as in the paper (§IV-A) and running a sampler over them, with or without prediction.
 
 2DS and 3DO: 10 workspaces x 10 start/goal pairs; 3DC: 100 workspaces x 1 pair
 (``scenario.query_workspaces x scenario.queries_per_workspace``). Workspaces come

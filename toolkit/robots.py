@@ -1,4 +1,4 @@
-"""The paper's four robots as serial chains of boxes, with vectorized kinematics (paper §V-A).
+"""The paper's four robots as serial chains of boxes, with vectorized kinematics (paper §IV-A).
 
 Every robot is a :class:`BoxRobot`: a moving base followed by revolute joints, each
 link a box. Forward kinematics maps configurations ``Q (N, dof)`` to oriented link

@@ -1,4 +1,4 @@
-"""The paper's four scenarios (§V-A, §V-B): workspace family, robot, data counts, model sizes.
+"""The paper's four scenarios (§IV-A, §IV-B): workspace family, robot, data counts, model sizes.
 
 >>> from toolkit import scenarios
 >>> s = scenarios.get("3dc9")
@@ -26,14 +26,14 @@ class Scenario:
     family: str  # workspace family: '2ds', '3do' or '3dc'
     robot: BoxRobot
     grid_shape: tuple[int, ...]
-    n_seen: int  # workspaces the CAE and MLP train on (§V-A)
+    n_seen: int  # workspaces the CAE and MLP train on (§IV-A)
     n_seen_test: int  # of those, how many are re-tested as "seen"
     n_unseen: int  # workspaces never trained on
-    samples_per_workspace: int  # labelled configurations per workspace, about 50/50 (§V-A)
-    cae_hidden: tuple[int, ...]  # encoder widths after the input; the last is the latent size (§V-B1)
-    mlp_hidden: tuple[int, ...]  # MLP hidden widths (§V-B2)
-    plan_samples: int  # |S| in Algorithm 1 (§V-A): samples drawn before prediction
-    query_workspaces: int  # planning queries: workspaces x pairs (§V-A)
+    samples_per_workspace: int  # labelled configurations per workspace, about 50/50 (§IV-A)
+    cae_hidden: tuple[int, ...]  # encoder widths after the input; the last is the latent size (§IV-B1)
+    mlp_hidden: tuple[int, ...]  # MLP hidden widths (§IV-B2)
+    plan_samples: int  # |S| in Algorithm 1 (§IV-A): samples drawn before prediction
+    query_workspaces: int  # planning queries: workspaces x pairs (§IV-A)
     queries_per_workspace: int
     plan_resolution: float | None = None  # local planner: no robot point moves farther between checks
     #   (None: half the thinnest link, see toolkit.local_planner.default_resolution)

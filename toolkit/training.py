@@ -1,4 +1,4 @@
-"""Training and evaluating the CAE and the collision MLP (paper §III-A, §V-B3, §VI).
+"""Training and evaluating the CAE and the collision MLP (paper §III-A, §IV-B3, §V).
 
 The CAE is fitted first on the training workspaces' occupancy grids (Eq. 1), then
 frozen; the MLP is fitted on ``[z, q]`` (or the ``strong`` preset's richer input)

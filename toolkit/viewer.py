@@ -187,7 +187,7 @@ class Viewer:
         return Q
 
     def plan(self, sampler: str = "BS", *, seed: int = 0) -> prm.PlanResult:
-        """Solve a paper-style query (§V-A: valid start and goal far apart, from ``seed``) with PRM and show it.
+        """Solve a paper-style query (§IV-A: valid start and goal far apart, from ``seed``) with PRM and show it.
 
         With a model loaded this is Algorithm 1; the returned path is verified exactly either way.
         """

@@ -1,4 +1,4 @@
-"""Drawing the paper's scenes with Viser: obstacle boxes, robots, samples, roadmaps (§V-A).
+"""Drawing the paper's scenes with Viser: obstacle boxes, robots, samples, roadmaps (§IV-A).
 
 Everything is drawn in 3D, as batches of boxes (one Viser node per batch, one unit
 cube instanced with per-box pose, size and color). A 2D workspace (2DS) becomes a

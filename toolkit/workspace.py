@@ -1,4 +1,4 @@
-"""Workspaces: axis-aligned box worlds and their occupancy grids (paper §V-A).
+"""Workspaces: axis-aligned box worlds and their occupancy grids (paper §IV-A).
 
 A workspace is a rectangular region ``[lower, upper]`` holding ``K`` axis-aligned
 obstacle boxes, stored as one array ``boxes`` of shape ``(K, 2, D)`` (min and max
@@ -9,7 +9,7 @@ corners). The paper's three families are generated from a seed:
 - ``3dc``: an 11x11x11 clutter of 110-125 identical unit blocks.
 
 Block corners lie on integer coordinates, so the occupancy grid (one point at the
-centre of every unit cell, paper §V-A: +1 occupied, -1 free) describes the
+centre of every unit cell, paper §IV-A: +1 occupied, -1 free) describes the
 workspace exactly: nothing the CAE is asked to encode is lost by the grid.
 
 Beyond the paper, :func:`from_mesh` makes a :class:`MeshWorkspace` from a triangle
@@ -257,7 +257,7 @@ def _place(rng: np.random.Generator, size: np.ndarray, region: np.ndarray, on_fl
 
 
 def simple_2d(rng: np.random.Generator) -> Workspace:
-    """2DS: 31x31 region, 3-5 rectangular blocks, sides 2-9 (paper §V-A)."""
+    """2DS: 31x31 region, 3-5 rectangular blocks, sides 2-9 (paper §IV-A)."""
     region = np.array([31.0, 31.0])
     count = int(rng.integers(3, 6))
     boxes = [_place(rng, rng.integers(2, 10, size=2).astype(float), region) for _ in range(count)]
@@ -276,7 +276,7 @@ OFFICE_TYPES: dict[str, tuple[float, float, float]] = {
 
 
 def office_3d(rng: np.random.Generator) -> Workspace:
-    """3DO: 41x41x6 office, 25-30 blocks whose type and place are random (paper §V-A)."""
+    """3DO: 41x41x6 office, 25-30 blocks whose type and place are random (paper §IV-A)."""
     region = np.array([41.0, 41.0, 6.0])
     names = list(OFFICE_TYPES)
     count = int(rng.integers(25, 31))
@@ -292,7 +292,7 @@ def office_3d(rng: np.random.Generator) -> Workspace:
 
 
 def clutter_3d(rng: np.random.Generator) -> Workspace:
-    """3DC: 11x11x11 clutter, 110-125 identical unit blocks (paper §V-A)."""
+    """3DC: 11x11x11 clutter, 110-125 identical unit blocks (paper §IV-A)."""
     region = np.array([11.0, 11.0, 11.0])
     count = int(rng.integers(110, 126))
     cells = rng.choice(11 ** 3, size=count, replace=False)  # distinct cells: every block counts

@@ -1,4 +1,4 @@
-"""Figures of notebook 01: workspaces, occupancy grids, robots and configuration-space obstacles (paper §V-A).
+"""Figures of notebook 01: workspaces, occupancy grids, robots and configuration-space obstacles (paper §IV-A).
 
 A planner never sees the workspace directly: it asks a collision checker about
 configurations ``q``. The set of configurations at which the robot touches a block
@@ -128,7 +128,7 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
 
 
 def occupancy_figure(workspace: Workspace, layers: list[int] | None = None, columns: int = 4) -> Figure:
-    """The occupancy grid (paper §V-A: +1 occupied, dark; −1 free, white), one image per z layer in 3D.
+    """The occupancy grid (paper §IV-A: +1 occupied, dark; −1 free, white), one image per z layer in 3D.
 
     Image ``[row, col]`` is cell ``(x=col, y=row)``, so the picture lies as :func:`workspace_figure`'s.
     ``layers``: which z layers of a 3D grid to draw (default: all).

@@ -1,4 +1,4 @@
-"""Figures of PRM with and without prediction (paper §III-B, Algorithm 1; §VI, Table 3): notebook 04.
+"""Figures of PRM with and without prediction (paper §III-B, Algorithm 1; §V, Table 3): notebook 04.
 
 The 2D figures draw the point robot's configuration space, where a configuration is
 the robot's centre (x, y): C-obstacles (the blocks grown by the robot's half-size, as

@@ -1,4 +1,4 @@
-"""Figures of the reproduction (paper §VI, Figures 5-7): every function returns a matplotlib Figure.
+"""Figures of the reproduction (paper §V, Figures 5-7): every function returns a matplotlib Figure.
 
 Nothing here calls ``show()``; the figures render headless (Agg) and the caller
 saves or displays them.
