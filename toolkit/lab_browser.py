@@ -157,7 +157,9 @@ def run_all(notebook: str | Path, *, env: dict[str, str] | None = None, screensh
                     tracebacks=page.locator(STDERR, has_text="Traceback").count(),
                     seconds=seconds)
                 if screenshot is not None:
-                    page.locator(".jp-SideBar.jp-mod-left .lm-TabBar-tab.lm-mod-current").click()  # file browser closed
+                    open_panel = page.locator(".jp-SideBar.jp-mod-left .lm-TabBar-tab.lm-mod-current")
+                    if open_panel.count():  # the file browser closed: room for the notebook
+                        open_panel.click()
                     if rendered.iframes:  # the picture shows the first embedded viewer
                         outputs.locator("iframe").first.scroll_into_view_if_needed()
                         page.wait_for_timeout(3000)  # its WebGL scene draws
