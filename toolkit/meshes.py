@@ -53,7 +53,7 @@ class Solid:
     """A triangle mesh as obstacles: its connected parts and their bounds, an fcl ``BVHModel``, inside tests.
 
     ``vertices (V, 3)``, ``faces (F, 3)`` (vertex indices, counter-clockwise seen from
-    outside). Parts are sets of faces joined by shared vertices; ``bounds (K, 2, 3)``
+    outside). Parts are sets of faces joined by shared edges; ``bounds (K, 2, 3)``
     are their min / max corners, boxes that cover the mesh.
     """
 
@@ -61,7 +61,7 @@ class Solid:
         self.vertices = np.asarray(vertices, dtype=float).reshape(-1, 3)
         self.faces = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
         self.triangles = self.vertices[self.faces]  # (F, 3, 3)
-        part_of_face = _parts(len(self.vertices), self.faces)  # (F,)
+        part_of_face = _parts(self.faces)  # (F,)
         self.parts = [np.flatnonzero(part_of_face == k) for k in range(part_of_face.max() + 1 if len(part_of_face) else 0)]
         self.bounds = np.array([[self.triangles[f].min(axis=(0, 1)), self.triangles[f].max(axis=(0, 1))]
                                 for f in self.parts]).reshape(-1, 2, 3)  # (K, 2, 3)
@@ -127,15 +127,14 @@ def winding_numbers(points: np.ndarray, triangles: np.ndarray, chunk: int = 1024
     return total / (4 * np.pi)
 
 
-def _parts(n_vertices: int, faces: np.ndarray) -> np.ndarray:
-    """``(F,)`` the connected part of each face (faces sharing a vertex are connected)."""
+def _parts(faces: np.ndarray) -> np.ndarray:
+    """``(F,)`` the connected part of each face: faces sharing an edge are connected (boxes that only touch at a
+    corner, such as a shelf's boards and panels read back from an STL file, stay apart)."""
     if len(faces) == 0:
         return np.zeros(0, dtype=np.int64)
-    rows, cols = np.repeat(faces[:, 0], 2), faces[:, 1:].reshape(-1)
-    graph = coo_matrix((np.ones(len(rows)), (rows, cols)), shape=(n_vertices, n_vertices))
-    _, vertex_part = connected_components(graph, directed=False)
-    _, part = np.unique(vertex_part[faces[:, 0]], return_inverse=True)  # numbered 0, 1, ... by first appearance order
-    return part
+    pairs = trimesh.graph.face_adjacency(faces=faces)  # (A, 2) faces sharing an edge
+    graph = coo_matrix((np.ones(len(pairs)), (pairs[:, 0], pairs[:, 1])), shape=(len(faces), len(faces)))
+    return connected_components(graph, directed=False)[1]
 
 
 def _bvh(vertices: np.ndarray, faces: np.ndarray) -> fcl.CollisionObject:
