@@ -164,7 +164,10 @@ def _planning(stages: Stages, scenario, models, seed: int, quick: bool, workers:
     job = partial(_planning_run, scenario.name, str(stages.cache / "checkpoint"), models.preset.planner_options(), seed, quick)
     with (tqdm(total=len(todo), desc=f"planning {scenario.name}", disable=not stages.progress, leave=False) as bar,
           _processes(min(workers, len(todo))) as pool):
-        runs = map(job, todo) if pool is None else (f.result() for f in as_completed(map(partial(pool.submit, job), todo)))
+        if pool is None:
+            runs = map(job, todo)  # one after another, in this process
+        else:  # as each finishes
+            runs = (future.result() for future in as_completed([pool.submit(job, s) for s in todo]))
         for sampler, summary, seconds in runs:
             stages.save(f"planning_{sampler}", summary, seconds)
             bar.update()
@@ -188,7 +191,7 @@ def _processes(n: int):
     except BaseException:
         if hasattr(pool, "terminate_workers"):  # Python >= 3.14
             pool.terminate_workers()
-        else:
+        else:  # the same by hand: the pool's own table of its worker processes
             for process in list((pool._processes or {}).values()):
                 process.terminate()
         raise
