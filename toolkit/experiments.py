@@ -230,13 +230,6 @@ def _planning_run(scenario_name: str, checkpoint: str, planner: dict, seed: int,
     return sampler, {mode: runs[mode][1] for mode in MODES}, time.perf_counter() - began
 
 
-def _throughput(scenario, preset: str, seed: int, quick: bool) -> dict:
-    repeats = 3 if quick else 7
-    exact = bench.exact_throughput(scenario, seed=seed, repeats=repeats)
-    learned = bench.learned_throughput(scenario, preset, seed=seed, repeats=repeats)
-    return {"exact_cfg_per_s": exact, "learned_cfg_per_s": learned, "ratio": learned / exact}
-
-
 def run_settings(scenario: str, preset: str, quick: bool, seed: int) -> dict:
     """What makes one run: a folder holding another run's cache is refused (its stages do not apply)."""
     return {"scenario": scenario, "preset": preset, "quick": bool(quick), "seed": int(seed)}
@@ -262,7 +255,8 @@ def reproduce(scenario_name: str, preset: str = "paper", quick: bool = False, se
     models = _models(stages, scenario, preset, splits, seed, quick)
     learning = stages.json("learning", lambda: _learning(models, splits))
     planning = _planning(stages, scenario, models, seed, quick, workers or os.cpu_count() or 1)
-    throughput = stages.json("throughput", lambda: _throughput(scenario, preset, seed, quick))
+    throughput = stages.json("throughput", lambda: bench.throughput(scenario, preset, seed=seed,
+                                                                   repeats=3 if quick else 7))
     results = dict(settings, cae=learning["cae"], mlp=learning["mlp"], threshold=learning["threshold"],
                    planning=planning, throughput=throughput,
                    improvement={"sampling": improvement(planning, "sampling_s"), "total": improvement(planning, "total_s")},
