@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from toolkit import cli
+from toolkit import bench, cli
 
 
 def test_bench_prints_one_json_object(capsys):
@@ -94,3 +94,22 @@ def test_bench_refuses_an_unknown_scenario(capsys):
         cli.main(["bench", "--scenario", "4dx", "--json"])
     assert exit_info.value.code == 2
     assert "invalid choice: '4dx'" in capsys.readouterr().err
+
+
+def test_the_two_checkers_are_timed_in_turns(monkeypatch):
+    """``in_turns``: every round times each call once, in turns; each rate is items over its median time.
+
+    A fake clock that each call moves on by its own duration stands in for the machine."""
+    clock, order = [0.0], []
+
+    def call(name, seconds):
+        def fn():
+            order.append(name)
+            clock[0] += seconds
+        return fn
+
+    monkeypatch.setattr(bench.time, "perf_counter", lambda: clock[0])
+    rates = bench.in_turns({"exact": (call("exact", 2.0), 20_000), "learned": (call("learned", 0.01), 10_000)},
+                           repeats=3)
+    assert order == ["exact", "learned"] * 4  # a warm-up call each, then three rounds
+    assert rates == {"exact": pytest.approx(10_000), "learned": pytest.approx(1_000_000)}

@@ -249,9 +249,8 @@ def test_commands_run_on_one_thread_unless_toolkit_threads_says(setting, expecte
     from toolkit import bench
 
     seen = []
-    monkeypatch.setattr(bench, "exact_throughput", lambda *a, **k: seen.append((torch.get_num_threads(),
-                                                                                 blas_threads())) or 1.0)
-    monkeypatch.setattr(bench, "learned_throughput", lambda *a, **k: 2.0)
+    monkeypatch.setattr(bench, "throughput", lambda *a, **k: seen.append((torch.get_num_threads(), blas_threads()))
+                        or {"exact_cfg_per_s": 1.0, "learned_cfg_per_s": 2.0, "ratio": 2.0})
     monkeypatch.setattr(bench, "edge_checks", lambda *a, **k: {})
     if setting is None:
         monkeypatch.delenv(threads.ENV, raising=False)

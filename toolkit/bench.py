@@ -2,15 +2,18 @@
 PRM time with and without prediction.
 
 Figures are medians over repeats, and ratios come from one run, since these
-machines are noisy. ``toolkit bench --scenario S --json`` prints the throughput and
-the edge checks; with ``--checkpoint DIR`` it also plans a few of the paper's
-queries with each sampler, with and without that model, and prints the time ratios.
+machines are noisy; :func:`throughput` times the two checkers in turns, so that
+both see the same machine however its load changes. ``toolkit bench --scenario S
+--json`` prints the throughput and the edge checks; with ``--checkpoint DIR`` it
+also plans a few of the paper's queries with each sampler, with and without that
+model, and prints the time ratios.
 """
 
 from __future__ import annotations
 
 import dataclasses
 import time
+from typing import Callable
 
 import numpy as np
 import torch
@@ -38,15 +41,43 @@ def median_seconds(fn, repeats: int = 5) -> float:
 
 def median_rate(fn, n_items: int, repeats: int = 5) -> float:
     """Items per second of ``fn()``, the median over ``repeats`` timed calls (one warm-up call first)."""
-    return n_items / median_seconds(fn, repeats)
+    return in_turns({"": (fn, n_items)}, repeats)[""]
+
+
+def in_turns(calls: dict[str, tuple[Callable[[], object], int]], repeats: int = 5) -> dict[str, float]:
+    """Items per second of each ``name: (fn, n_items)``, the medians of ``repeats`` rounds in which every
+    ``fn`` is timed once, in turns (after one warm-up call each).
+
+    Timed one after the other, two measurements see different machines when the load
+    changes: on 2 cores beside two busy processes (and other work), 3DC-7's learned /
+    exact ratio came out 20.9 in one run and 5.2 in another, 3DO's 27.4 and 151; timed
+    in turns, both see the same machine.
+    """
+    for fn, _ in calls.values():
+        fn()
+    seconds: dict[str, list[float]] = {name: [] for name in calls}
+    for _ in range(repeats):
+        for name, (fn, _) in calls.items():
+            start = time.perf_counter()
+            fn()
+            seconds[name].append(time.perf_counter() - start)
+    return {name: n / float(np.median(seconds[name])) for name, (_, n) in calls.items()}
+
+
+def throughput(scenario: Scenario, preset: str = "paper", batch: int | None = None, seed: int = 0, repeats: int = 5,
+               models: TrainedModels | None = None) -> dict[str, float]:
+    """``{"exact_cfg_per_s", "learned_cfg_per_s", "ratio"}``: both checkers timed in turns (:func:`in_turns`),
+    at ``batch`` configurations a call (default: 20,000 exact, 10,000 learned)."""
+    batches = {"batch": batch} if batch else {}
+    rates = in_turns({"exact": _exact_call(scenario, seed=seed, **batches),
+                      "learned": _learned_call(scenario, preset, seed=seed, models=models, **batches)}, repeats)
+    return {"exact_cfg_per_s": rates["exact"], "learned_cfg_per_s": rates["learned"],
+            "ratio": rates["learned"] / rates["exact"]}
 
 
 def exact_throughput(scenario: Scenario, batch: int = 20_000, seed: int = 0, repeats: int = 5) -> float:
     """Configurations per second of the exact checker on uniform samples in one workspace."""
-    ws = data.workspaces(scenario, "query", 1, seed)[0]
-    checker = exact_checker(ws, scenario.robot)
-    Q = scenario.robot.sample(np.random.default_rng(seed), batch)
-    return median_rate(lambda: checker.are_valid(Q), batch, repeats)
+    return median_rate(*_exact_call(scenario, batch, seed), repeats)
 
 
 def learned_throughput(scenario: Scenario, preset: str = "paper", batch: int = 10_000, seed: int = 0,
@@ -56,6 +87,21 @@ def learned_throughput(scenario: Scenario, preset: str = "paper", batch: int = 1
     The networks are ``models`` or, by default, untrained ones of the preset's sizes: their speed
     does not depend on the weights.
     """
+    return median_rate(*_learned_call(scenario, preset, batch, seed, models), repeats)
+
+
+def _exact_call(scenario: Scenario, batch: int = 20_000, seed: int = 0) -> tuple[Callable[[], object], int]:
+    """The exact checker asked about ``batch`` uniform samples in a query workspace, and ``batch``."""
+    ws = data.workspaces(scenario, "query", 1, seed)[0]
+    checker = exact_checker(ws, scenario.robot)
+    Q = scenario.robot.sample(np.random.default_rng(seed), batch)
+    return (lambda: checker.are_valid(Q)), batch
+
+
+def _learned_call(scenario: Scenario, preset: str = "paper", batch: int = 10_000, seed: int = 0,
+                  models: TrainedModels | None = None) -> tuple[Callable[[], object], int]:
+    """A learned checker (``models``, or untrained networks of the preset's sizes) asked about ``batch``
+    uniform samples in a query workspace, and ``batch``."""
     if models is None:
         recipe = presets.get(preset)
         torch.manual_seed(seed)
@@ -64,7 +110,7 @@ def learned_throughput(scenario: Scenario, preset: str = "paper", batch: int = 1
     ws = data.workspaces(scenario, "query", 1, seed)[0]
     checker = LearnedChecker(ws, models)
     Q = scenario.robot.sample(np.random.default_rng(seed), batch)
-    return median_rate(lambda: checker.are_valid(Q), batch, repeats)
+    return (lambda: checker.are_valid(Q)), batch
 
 
 def edge_checks(scenario: Scenario, n_segments: int = 300, seed: int = 0, repeats: int = 5) -> dict[str, dict]:

@@ -95,11 +95,8 @@ def cmd_bench(args: argparse.Namespace) -> int:
 
     scenario = scenarios.get(args.scenario)
     models = checkpoints.load_models(args.checkpoint, scenario.name) if args.checkpoint else None
-    batches = {"batch": args.batch} if args.batch else {}  # default: each function's own
-    result = {"scenario": scenario.name, "exact_cfg_per_s": bench.exact_throughput(scenario, seed=args.seed, **batches),
-              "learned_cfg_per_s": bench.learned_throughput(scenario, args.preset, seed=args.seed, models=models,
-                                                            **batches)}
-    result["ratio"] = result["learned_cfg_per_s"] / result["exact_cfg_per_s"]
+    result = {"scenario": scenario.name,
+              **bench.throughput(scenario, args.preset, args.batch, seed=args.seed, models=models)}
     result["edges"] = bench.edge_checks(scenario, seed=args.seed)
     if models is not None:
         result["planning"] = bench.planning_ratios(scenario, models, args.workspaces, args.pairs, args.seed,

@@ -164,7 +164,10 @@ def _planning(stages: Stages, scenario, models, seed: int, quick: bool, workers:
     job = partial(_planning_run, scenario.name, str(stages.cache / "checkpoint"), models.preset.planner_options(), seed, quick)
     with (tqdm(total=len(todo), desc=f"planning {scenario.name}", disable=not stages.progress, leave=False) as bar,
           _processes(min(workers, len(todo))) as pool):
-        runs = map(job, todo) if pool is None else (f.result() for f in as_completed(map(partial(pool.submit, job), todo)))
+        if pool is None:
+            runs = map(job, todo)  # one after another, in this process
+        else:  # as each finishes
+            runs = (future.result() for future in as_completed([pool.submit(job, s) for s in todo]))
         for sampler, summary, seconds in runs:
             stages.save(f"planning_{sampler}", summary, seconds)
             bar.update()
@@ -188,7 +191,7 @@ def _processes(n: int):
     except BaseException:
         if hasattr(pool, "terminate_workers"):  # Python >= 3.14
             pool.terminate_workers()
-        else:
+        else:  # the same by hand: the pool's own table of its worker processes
             for process in list((pool._processes or {}).values()):
                 process.terminate()
         raise
@@ -227,13 +230,6 @@ def _planning_run(scenario_name: str, checkpoint: str, planner: dict, seed: int,
     return sampler, {mode: runs[mode][1] for mode in MODES}, time.perf_counter() - began
 
 
-def _throughput(scenario, preset: str, seed: int, quick: bool) -> dict:
-    repeats = 3 if quick else 7
-    exact = bench.exact_throughput(scenario, seed=seed, repeats=repeats)
-    learned = bench.learned_throughput(scenario, preset, seed=seed, repeats=repeats)
-    return {"exact_cfg_per_s": exact, "learned_cfg_per_s": learned, "ratio": learned / exact}
-
-
 def run_settings(scenario: str, preset: str, quick: bool, seed: int) -> dict:
     """What makes one run: a folder holding another run's cache is refused (its stages do not apply)."""
     return {"scenario": scenario, "preset": preset, "quick": bool(quick), "seed": int(seed)}
@@ -259,7 +255,8 @@ def reproduce(scenario_name: str, preset: str = "paper", quick: bool = False, se
     models = _models(stages, scenario, preset, splits, seed, quick)
     learning = stages.json("learning", lambda: _learning(models, splits))
     planning = _planning(stages, scenario, models, seed, quick, workers or os.cpu_count() or 1)
-    throughput = stages.json("throughput", lambda: _throughput(scenario, preset, seed, quick))
+    throughput = stages.json("throughput", lambda: bench.throughput(scenario, preset, seed=seed,
+                                                                   repeats=3 if quick else 7))
     results = dict(settings, cae=learning["cae"], mlp=learning["mlp"], threshold=learning["threshold"],
                    planning=planning, throughput=throughput,
                    improvement={"sampling": improvement(planning, "sampling_s"), "total": improvement(planning, "total_s")},
