@@ -1,6 +1,6 @@
 """Triangle-mesh obstacles: loading, inside tests, fcl models, voxel grids, and a demo room.
 
-The paper's workspaces are axis-aligned blocks (§V-A); a real scene comes as a
+The paper's workspaces are axis-aligned blocks (§IV-A); a real scene comes as a
 mesh (STL, OBJ, GLB). Three questions decide how a mesh becomes a workspace
 (:func:`toolkit.workspace.from_mesh`) and how it is checked exactly
 (:class:`toolkit.collision.MeshChecker`):
