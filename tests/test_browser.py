@@ -43,8 +43,9 @@ def test_a_colliding_robot_shows_red(make_viewer, tmp_path):
     v.set_configuration(block)  # the robot's square inside the block: it pokes out of it, red
     assert not v.valid
     png = viewer_browser.screenshot(v.url, tmp_path / "colliding.png", size=SIZE,
-                                    ready=lambda png: share(png, draw.COLLIDING) > 5e-5)  # the robot, ~100 px
-    assert share(png, draw.OBSTACLE) > 0.01 and share(png, draw.VALID) == 0.0  # the scene, and nothing green
+                                    ready=lambda png: (share(png, draw.COLLIDING) > 5e-5  # the robot, ~100 px
+                                                       and share(png, draw.OBSTACLE) > 0.01))  # and the scene
+    assert share(png, draw.VALID) == 0.0  # nothing green
 
 
 def test_the_embedded_snapshot_renders_without_a_server(tmp_path):
