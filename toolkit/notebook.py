@@ -10,18 +10,21 @@ so); it never changes which code runs. A notebook asks for its sizes with
     models = trained_models("2ds", "strong")   # trains once (about 30 s), then loads in a second
 
 Trained models live in ``$TOOLKIT_CACHE`` (default ``~/.cache/sample-collision-toolkit``),
-one checkpoint folder per scenario, preset, seed and size, written whole or not at all.
+one checkpoint folder per scenario, preset, seed and size, written whole or not at all;
+its name ends with a fingerprint of the preset's settings, so a changed preset trains anew
+instead of loading a model made by the old one.
 """
 
 from __future__ import annotations
 
+import hashlib
 import os
 import shutil
 import uuid
 from pathlib import Path
 from typing import TypeVar
 
-from . import checkpoints, threads, training
+from . import checkpoints, presets, threads, training
 from .training import TrainedModels
 
 QUICK_ENV = "TOOLKIT_QUICK"
@@ -51,7 +54,8 @@ def trained_models(scenario: str, preset: str, *, seed: int = 0, progress: bool 
     minute; 3DC: about two minutes on two cores) and saves a checkpoint folder in
     :func:`cache_dir`; later calls, in any notebook, load it in about a second.
     """
-    folder = cache_dir() / f"{scenario}-{preset}-seed{seed}{'-quick' if is_quick() else ''}"
+    fingerprint = hashlib.sha256(repr(presets.get(preset)).encode()).hexdigest()[:8]  # the recipe's settings
+    folder = cache_dir() / f"{scenario}-{preset}-seed{seed}-{fingerprint}{'-quick' if is_quick() else ''}"
     if folder.exists():
         return checkpoints.load_models(folder, scenario)
     with threads.limited(threads.configured()):  # one thread, as the toolkit command: fast on a shared machine
