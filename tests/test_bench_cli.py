@@ -113,3 +113,26 @@ def test_the_two_checkers_are_timed_in_turns(monkeypatch):
                            repeats=3)
     assert order == ["exact", "learned"] * 4  # a warm-up call each, then three rounds
     assert rates == {"exact": pytest.approx(10_000), "learned": pytest.approx(1_000_000)}
+
+
+def test_bench_vs_ompl_prints_a_markdown_table(capsys):
+    pytest.importorskip("ompl")
+    assert cli.main(["bench", "--vs-ompl", "--scenario", "2ds", "--queries", "2", "--seed", "9000",
+                     "--ompl-seconds", "5"]) == 0
+    lines = capsys.readouterr().out.splitlines()
+    assert lines[0].startswith("| 2ds (2 queries) | solved | valid at 10x finer | median s")
+    rows = {line.split("|")[1].strip(): line for line in lines[2:]}
+    assert list(rows) == ["ours, best exact", "ours, paper's baseline", "OMPL PRM", "OMPL RRTConnect"]
+    for name in ("ours, best exact", "ours, paper's baseline"):  # every query solved, paths valid 10x finer
+        assert rows[name].split("|")[2:4] == [" 100% ", " 100% "]
+    assert rows["OMPL PRM"].rstrip().endswith("| 1.00 |")  # the ratios' reference
+
+
+def test_bench_vs_ompl_says_how_to_install_ompl(monkeypatch, capsys):
+    import toolkit
+
+    monkeypatch.setitem(sys.modules, "ompl", None)  # as if not installed: importing it raises ImportError
+    monkeypatch.delitem(sys.modules, "toolkit.ompl", raising=False)
+    monkeypatch.delattr(toolkit, "ompl", raising=False)
+    assert cli.main(["bench", "--vs-ompl", "--scenario", "2ds", "--queries", "1"]) == 2
+    assert "pip install 'sample-collision-toolkit[ompl]'" in capsys.readouterr().err

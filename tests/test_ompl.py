@@ -114,3 +114,89 @@ def test_an_enclosed_goal_is_unsolvable_for_both():
     ours = plan(exact_checker(ws, robot), start, goal, options=PRMOptions(max_rounds=5), rng=np.random.default_rng(0))
     assert not ours.success and len(ours.path) == 0 and ours.stats["rounds"] == 5
     assert ompl_solves(ws, robot, start, goal, ours.stats["resolution"] / 10, seconds=0.3) is None
+
+
+# -- toolkit.ompl: our checkers and samplers inside OMPL ------------------------------------------------------------
+
+toolkit_ompl = pytest.importorskip("toolkit.ompl")
+
+
+def test_ompls_distance_is_our_motion_bound_and_its_motion_checks_at_least_our_steps():
+    from toolkit.local_planner import step_counts
+
+    scenario = scenarios.get("3do")  # a base angle that wraps, and joints
+    robot = scenario.robot
+    q = make_queries(scenario, seed=7100, n_workspaces=1, per_workspace=1)[0]
+    exact = exact_checker(q.workspace, robot)
+    resolution = scenario.plan_resolution
+    si = toolkit_ompl.space_information(exact, resolution)
+    rng = np.random.default_rng(0)
+    Q0, Q1 = robot.sample(rng, 20), robot.sample(rng, 20)
+    Q1[:, 2] = np.where(rng.random(20) < 0.5, Q0[:, 2] + 3.0, Q1[:, 2])  # some turns the short way across +-pi
+    Q1 = robot.wrap(Q1)
+    a, b = si.allocState(), si.allocState()
+    free = exact_checker(q.workspace, robot)
+    free._are_valid = lambda Q: np.ones(len(Q), dtype=bool)  # every state valid: OMPL checks the whole motion
+    si_free = toolkit_ompl.space_information(free, resolution)
+    for q0, q1, steps in zip(Q0, Q1, step_counts(robot, Q0, Q1, resolution)):
+        toolkit_ompl.set_state(a, q0, robot)
+        toolkit_ompl.set_state(b, q1, robot)
+        np.testing.assert_allclose(toolkit_ompl.to_array(a, robot), q0)
+        assert si.distance(a, b) == pytest.approx(float(robot.motion_bound(q0, q1)))
+        before = free.n_checked
+        assert si_free.checkMotion(a, b)
+        checked = free.n_checked - before  # the end state and the interior ones
+        assert checked >= steps  # at least our local planner's steps: no robot point moves farther between checks
+        assert robot.motion_bound(q0, q1) / checked <= resolution
+        assert checked <= steps * robot.dof  # OMPL takes the most steps any one DoF needs
+
+
+def test_rrtconnect_with_our_exact_checker_returns_paths_our_checker_accepts():
+    scenario = scenarios.get("3dc7")
+    resolution = scenario.plan_resolution or scenario.robot.half_extents.min()
+    for q in make_queries(scenario, seed=7100, n_workspaces=2, per_workspace=1):
+        exact = exact_checker(q.workspace, scenario.robot)
+        result = toolkit_ompl.solve(exact, q.start, q.goal, planner="RRTConnect", resolution=resolution, seconds=20)
+        assert result.success and result.checks > 0
+        np.testing.assert_allclose(result.path[0], q.start)
+        np.testing.assert_allclose(result.path[-1], q.goal)
+        assert path_is_valid(exact_checker(q.workspace, scenario.robot), result.path, resolution)
+
+
+def test_a_learned_checker_answers_inside_ompl_as_outside(checkpoint_2ds):
+    from toolkit.learned import load_checker
+
+    scenario = scenarios.get("2ds")
+    q = make_queries(scenario, seed=7100, n_workspaces=1, per_workspace=1)[0]
+    learned = load_checker(checkpoint_2ds, q.workspace)
+    si = toolkit_ompl.space_information(learned)
+    state = si.allocState()
+    Q = scenario.robot.sample(np.random.default_rng(1), 50)
+    inside = []
+    for config in Q:
+        toolkit_ompl.set_state(state, config, scenario.robot)
+        inside.append(si.isValid(state))
+    np.testing.assert_array_equal(inside, learned.are_valid(Q))
+
+
+def test_our_samplers_feed_ompls_prm():
+    scenario = scenarios.get("2ds")
+    robot = scenario.robot
+    q = make_queries(scenario, seed=7100, n_workspaces=1, per_workspace=1)[0]
+    exact = exact_checker(q.workspace, robot)
+    si = toolkit_ompl.space_information(exact)
+    sampler = toolkit_ompl.ToolkitValidStateSampler(si, "OB", exact, np.random.default_rng(0))
+    state, near = si.allocState(), si.allocState()
+    drawn = []
+    for _ in range(100):
+        assert sampler.sample(state)
+        drawn.append(toolkit_ompl.to_array(state, robot))
+    assert exact.are_valid(np.array(drawn)).all() and len(np.unique(drawn, axis=0)) == 100
+    toolkit_ompl.set_state(near, q.start, robot)
+    for _ in range(20):
+        if sampler.sampleNear(state, near, 2.0):
+            assert robot.motion_bound(q.start, toolkit_ompl.to_array(state, robot)) <= 2.0
+            assert exact.is_valid(toolkit_ompl.to_array(state, robot))
+    result = toolkit_ompl.solve(exact, q.start, q.goal, planner="PRM", sampler="OB", rng=np.random.default_rng(0),
+                                seconds=10)
+    assert result.success and path_is_valid(exact, result.path, robot.half_extents.min())

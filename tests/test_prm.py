@@ -16,6 +16,7 @@ from toolkit.prm import PRMOptions, plan
 from toolkit.queries import make_queries, run_queries
 from toolkit.roadmap import Roadmap
 from toolkit.sampling import SAMPLERS, make_sampler
+from toolkit.workspace import Workspace
 
 
 class NoisyChecker(CollisionChecker):
@@ -51,20 +52,22 @@ def longest_hidden_overlap(ws, robot, path) -> float:
                for p0, p1 in zip(path[:-1], path[1:]) for lo, hi in ws.boxes)
 
 
-MODES = {  # name -> (flip fraction of the test double or None for exact, screen_edges)
-    "exact": (None, True),
-    "noisy-screened": (0.15, True),
-    "noisy-paper": (0.15, False),
+PAPER = dict(screen_edges=False, **prm.PAPER_BASELINE)  # Algorithm 1 as the paper has it
+MODES = {  # name -> (flip fraction of the test double or None for exact, PRMOptions fields)
+    "exact": (None, {}),  # the best exact planner: lazy edges, growing rounds
+    "exact-paper": (None, PAPER),
+    "noisy-screened": (0.15, {}),
+    "noisy-paper": (0.15, PAPER),
 }
 
 
 def solve_all(scenario, queries, sampler, mode, n_samples=None):
-    flip, screen = MODES[mode]
+    flip, fields = MODES[mode]
     results = []
     for i, q in enumerate(queries):
         exact = exact_checker(q.workspace, scenario.robot)
         checker = None if flip is None else NoisyChecker(exact, flip, seed=i)
-        options = PRMOptions(n_samples=n_samples or scenario.plan_samples, screen_edges=screen)
+        options = PRMOptions(n_samples=n_samples or scenario.plan_samples, **fields)
         results.append((q, plan(exact, q.start, q.goal, sampler=sampler, checker=checker, options=options,
                                 rng=np.random.default_rng(i))))
     return results
@@ -109,18 +112,79 @@ def test_3dc_paths_are_exactly_valid(scenario_name, mode):
         assert all(r.success for _, r in results)
 
 
-def test_exact_baseline_never_repairs_nodes_and_counts_checks():
+@pytest.mark.parametrize("fields, first_round", [(PAPER, 200), ({}, 50)])
+def test_exact_planners_never_repair_nodes_and_count_checks(fields, first_round):
     scenario = scenarios.get("2ds")
     q = make_queries(scenario, seed=1, n_workspaces=1, per_workspace=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
-    result = plan(exact, q.start, q.goal, sampler="BS", rng=np.random.default_rng(0))
+    result = plan(exact, q.start, q.goal, sampler="BS", options=PRMOptions(**fields), rng=np.random.default_rng(0))
     s = result.stats
-    assert result.success and s["removed_nodes"] == 0 and s["predicted_checks"] == 0
+    assert result.success and s["removed_nodes"] == 0 and s["predicted_checks"] == 0 and s["rounds"] == 1
     assert s["exact_checks"] == exact.n_checked
-    assert s["node_checks"] == 200  # plus 2: the start and goal
+    assert s["node_checks"] == first_round  # plus 2: the start and goal
     assert s["exact_checks"] == 2 + s["node_checks"] + s["edge_checks"] + s["verify_checks"]
     assert s["total_s"] >= s["sampling_s"] + s["connection_s"] + s["query_s"]
     assert s["nodes"] == len(result.roadmap.nodes) and result.roadmap.edges.shape == (s["edges"], 2)
+
+
+def test_rounds_double_from_first_samples_up_to_n_samples():
+    robot = scenarios.get("2ds").robot  # the goal walled in: every round is sampled, none solves it
+    walls = [[[18, 18], [28, 19]], [[18, 27], [28, 28]], [[18, 18], [19, 28]], [[27, 18], [28, 28]]]
+    ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array(walls, dtype=float), family="2ds")
+    for fields, attempts in [(dict(first_samples=10, n_samples=50), 10 + 20 + 40 + 50 + 50),
+                             (dict(first_samples=None, n_samples=50), 5 * 50)]:
+        trace = []
+        result = plan(exact_checker(ws, robot), np.array([5.0, 5.0]), np.array([23.0, 23.0]), sampler="BS",
+                      options=PRMOptions(max_rounds=5, **fields), rng=np.random.default_rng(0), trace=trace)
+        assert not result.success and result.stats["rounds"] == 5
+        assert result.stats["node_checks"] == attempts  # BS checks each attempt once
+        assert [step.round for step in trace if step.stage == "sample"] == [1, 2, 3, 4, 5]
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ["3dc7", "3do"])
+def test_lazy_exact_solves_what_the_paper_baseline_solves_with_far_fewer_checks(name):
+    scenario = scenarios.get(name)
+    queries = make_queries(scenario, seed=7100, n_workspaces=3, per_workspace=1)
+    results = {mode: solve_all(scenario, queries, "BS", mode) for mode in ("exact", "exact-paper")}
+    for mode in results:
+        assert_paths_valid(scenario, results[mode])  # at 10x finer resolution than the roadmap's
+        assert all(r.success for _, r in results[mode])
+    lazy, paper = ([r.stats["exact_checks"] + r.stats["exact_clearances"] for _, r in results[mode]]
+                   for mode in ("exact", "exact-paper"))
+    assert np.median(lazy) * 10 < np.median(paper)
+
+
+def test_lazy_screen_rejects_only_edges_with_a_point_in_collision(monkeypatch):
+    scenario = scenarios.get("3dc7")
+    q = make_queries(scenario, seed=7100, n_workspaces=1, per_workspace=1)[0]
+    exact = exact_checker(q.workspace, scenario.robot)
+    options = PRMOptions(n_samples=100, first_samples=None, max_rounds=1, rebridge=0)
+    planner = prm._Planner(exact, exact, options, make_sampler("BS", exact), make_sampler("BS", exact))
+    nodes = planner.roadmap.add_nodes(make_sampler("BS", exact).sample(100, np.random.default_rng(0)), verified=True)
+    pairs = planner.roadmap.candidate_edges(nodes, options.k)
+    planner.decide(pairs)
+    roadmap = planner.roadmap
+    assert len(roadmap.edges) + len(roadmap.rejected) == len(pairs) and len(roadmap.rejected) > 0
+    assert np.isinf(roadmap.edge_checked_at).all()  # lazy: none confirmed yet
+    spacing = planner.resolution * options.lazy_screen
+    assert (invalid_fractions(exact, *roadmap.nodes[roadmap.rejected.T], spacing)[0] > 0).all()
+    assert (invalid_fractions(exact, *roadmap.nodes[roadmap.edges.T], spacing)[0] == 0).all()
+    np.testing.assert_allclose(roadmap.edge_cost, roadmap.distance(*roadmap.nodes[roadmap.edges.T]))
+
+
+def test_the_paper_preset_plans_with_the_papers_baseline_and_the_strong_one_with_the_best_exact_planner():
+    from toolkit import presets
+
+    scenario = scenarios.get("3dc7")
+    best = queries_module.default_options(scenario)  # no checker: the best exact planner
+    assert best.lazy and best.first_samples == PRMOptions().first_samples is not None
+    paper = queries_module.default_options(scenario, **presets.get("paper").planner_options())
+    assert not paper.lazy and paper.first_samples is None and not paper.screen_edges
+    assert paper.n_samples == scenario.plan_samples == 400
+    strong = queries_module.default_options(scenario, **presets.get("strong").planner_options())
+    assert (strong.lazy, strong.first_samples, strong.lazy_screen) == (best.lazy, best.first_samples, best.lazy_screen)
+    assert strong.screen_edges
 
 
 @pytest.mark.parametrize("options, sources", [
@@ -134,7 +198,7 @@ def test_rounds_after_the_first_sample_as_options_auxiliary_says(options, source
     q = make_queries(scenario, seed=0, n_workspaces=1, per_workspace=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
     lying = NoisyChecker(exact, 0.3, seed=0)
-    planner = prm._Planner(exact, lying, PRMOptions(n_samples=200, **options),
+    planner = prm._Planner(exact, lying, PRMOptions(n_samples=200, first_samples=None, **options),
                            make_sampler("BS", lying), make_sampler("BS", exact))
     rng = np.random.default_rng(0)
     for round_, source in enumerate(sources, start=1):
@@ -216,9 +280,10 @@ def test_traced_repairs_remove_what_the_exact_checker_rejects_from_the_candidate
             assert {tuple(step.edges[e]) for e in step.removed_edges} <= path_edges
             Q0, Q1 = step.nodes[step.edges[step.removed_edges].T]
             assert not check_edges(exact, Q0, Q1, result.stats["resolution"] / 10).any()
-            assert len(after.nodes) == len(step.nodes) - len(step.removed_nodes)
-            if len(step.removed_nodes) == 0:
-                assert len(after.edges) == len(step.edges) - len(step.removed_edges)
+            if after.stage == "candidate":  # not a bridge or a new round, which add edges or nodes
+                assert len(after.nodes) == len(step.nodes) - len(step.removed_nodes)
+                if len(step.removed_nodes) == 0:
+                    assert len(after.edges) == len(step.edges) - len(step.removed_edges)
     assert repairs > 0  # 30 % lies: some candidate paths fail verification
 
 def test_bad_input_gives_clear_errors():
@@ -309,11 +374,14 @@ def test_check_edges_visits_every_interior_point_once_coarse_to_fine(monkeypatch
 def test_screened_path_edges_are_confirmed_coarse_then_fine_each_once(monkeypatch):
     scenario = scenarios.get("2ds")
     checked = []  # (resolution, edge, passed) of every edge the planner confirms exactly
-    def recording(checker, Q0, Q1, resolution, spacing):
-        ok = certify_edges(checker, Q0, Q1, resolution, spacing)
-        checked.extend((resolution, q0.tobytes() + q1.tobytes(), bool(v)) for q0, q1, v in zip(Q0, Q1, ok))
-        return ok
-    monkeypatch.setattr(prm, "certify_edges", recording)
+    def recording(check):  # certify_edges, or check_edges where certificates do not pay (2DS)
+        def confirm(checker, Q0, Q1, resolution, **spacing):
+            ok = check(checker, Q0, Q1, resolution, **spacing)
+            checked.extend((resolution, q0.tobytes() + q1.tobytes(), bool(v)) for q0, q1, v in zip(Q0, Q1, ok))
+            return ok
+        return confirm
+    monkeypatch.setattr(prm, "certify_edges", recording(certify_edges))
+    monkeypatch.setattr(prm, "check_edges", recording(check_edges))
     repairs = 0
     for i, q in enumerate(make_queries(scenario, seed=0, n_workspaces=2, per_workspace=3)):
         exact = exact_checker(q.workspace, scenario.robot)
@@ -493,7 +561,7 @@ def test_the_planner_decides_no_pair_twice(monkeypatch):
             decided.clear()
             exact = exact_checker(q.workspace, scenario.robot)
             result = plan(exact, q.start, q.goal, sampler="BT", checker=NoisyChecker(exact, 0.1, seed=i),
-                          options=PRMOptions(n_samples=scenario.plan_samples, rebridge=rebridge),
+                          options=PRMOptions(n_samples=scenario.plan_samples, rebridge=rebridge, first_samples=None),
                           rng=np.random.default_rng(i))
             assert result.success
             assert sum(map(len, decided)) == len(set().union(*decided))

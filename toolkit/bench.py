@@ -6,7 +6,9 @@ machines are noisy; :func:`throughput` times the two checkers in turns, so that
 both see the same machine however its load changes. ``toolkit bench --scenario S
 --json`` prints the throughput and the edge checks; with ``--checkpoint DIR`` it
 also plans a few of the paper's queries with each sampler, with and without that
-model, and prints the time ratios.
+model, and prints the time ratios. ``toolkit bench --vs-ompl --scenario S --queries N``
+plans N queries with our planners and OMPL's, on the same exact checker
+(:func:`versus_ompl`), and prints a markdown table.
 """
 
 from __future__ import annotations
@@ -168,3 +170,97 @@ def planning_ratios(scenario: Scenario, models: TrainedModels, n_workspaces: int
                       "success_without": row["without"]["success_rate"], "success_with": row["with"]["success_rate"],
                       **{f"{key}_{mode}": row[mode][key] for key in ("rounds", "repairs") for mode in ("without", "with")}}
             for sampler, row in table.items()}
+
+
+def versus_ompl(scenario: Scenario, n_queries: int = 10, seed: int = 9000, models: TrainedModels | None = None,
+                ompl_seconds: float = 30.0, sampler: str = "BS") -> dict[str, dict]:
+    """Our planners against OMPL's PRM and RRTConnect on the same queries and the same exact checker.
+
+    The first ``n_queries`` of ``queries.make_queries(scenario, seed)``; each planner
+    solves each query from scratch, the planners in turns query by query (who goes
+    first rotates), torch and BLAS on one thread. Ours: the best exact planner
+    (``queries.default_options``), the paper's baseline (``prm.PAPER_BASELINE``) and, with
+    ``models``, the best exact planner with prediction (the model's preset's options,
+    the workspace's encoding counted in its time). OMPL's: ``ompl.geometric.PRM`` and
+    ``RRTConnect`` through :mod:`toolkit.ompl`, the same exact checker answering one
+    state per call, with ``ompl_seconds`` per query. Edge resolution matched: OMPL's
+    state space measures distance as ``robot.motion_bound``, and its validity-checking
+    resolution is ``resolution / space.getMaximumExtent()``, so that no robot point
+    moves farther than the scenario's resolution between two checks, as in our local
+    planner (OMPL checks at least as many points a motion: :mod:`toolkit.ompl`). Every
+    returned path is then checked by
+    a fresh exact checker at 10x finer resolution (ours verify that themselves; OMPL's
+    only check at the resolution). Time is the wall time of the whole call.
+
+    Per planner: ``success_rate`` (an exact solution within the time), ``valid_rate``
+    (paths valid at 10x finer, of those found), ``median_s``, ``mean_s``, ``p90_s`` over
+    all queries (a failure counts its time), ``checks_median`` (configurations the exact
+    checker was asked about, clearance bounds included: one call each for OMPL), and
+    ``seconds`` (per query).
+    """
+    from . import ompl as toolkit_ompl
+    from .local_planner import path_is_valid
+    from .prm import PAPER_BASELINE, plan
+
+    toolkit_ompl.quiet(seed)
+    per = scenario.queries_per_workspace
+    query_set = queries.make_queries(scenario, seed, -(-n_queries // per), per)[:n_queries]
+    resolution = scenario.plan_resolution or default_resolution(scenario.robot)
+    best = queries.default_options(scenario)
+
+    def ours(options, learned: bool):
+        def run(query, exact, n):
+            checker = LearnedChecker(query.workspace, models) if learned else None
+            result = plan(exact, query.start, query.goal, sampler=sampler, checker=checker,
+                          options=options or queries.default_options(scenario, checker), rng=np.random.default_rng([seed, n]))
+            return result.success, result.path
+        return run
+
+    def theirs(planner):
+        def run(query, exact, n):
+            result = toolkit_ompl.solve(exact, query.start, query.goal, planner=planner, resolution=resolution,
+                                        seconds=ompl_seconds)
+            return result.success, result.path
+        return run
+
+    planners = {"ours, best exact": ours(best, False),
+                "ours, paper's baseline": ours(dataclasses.replace(best, **PAPER_BASELINE), False)}
+    if models is not None:
+        planners[f"ours, with prediction ({models.preset.name})"] = ours(None, True)
+    planners.update({"OMPL PRM": theirs("PRM"), "OMPL RRTConnect": theirs("RRTConnect")})
+    rows = {name: {"seconds": [], "success": [], "valid": [], "checks": []} for name in planners}
+    names = list(planners)
+    with queries.one_thread():
+        for n, query in enumerate(query_set):
+            for name in names[n % len(names):] + names[:n % len(names)]:
+                exact = exact_checker(query.workspace, scenario.robot)
+                began = time.perf_counter()
+                success, path = planners[name](query, exact, n)
+                row = rows[name]
+                row["seconds"].append(time.perf_counter() - began)
+                row["checks"].append(exact.n_checked + exact.n_bounded)
+                row["success"].append(bool(success))
+                fresh = exact_checker(query.workspace, scenario.robot)
+                row["valid"].append(bool(success and path_is_valid(fresh, path, resolution / 10)))
+    table = {}
+    for name, row in rows.items():
+        seconds, solved = np.array(row["seconds"]), np.array(row["success"])
+        table[name] = {"queries": len(seconds), "success_rate": float(solved.mean()),
+                       "valid_rate": float(np.mean(np.array(row["valid"])[solved])) if solved.any() else 1.0,
+                       "median_s": float(np.median(seconds)), "mean_s": float(seconds.mean()),
+                       "p90_s": float(np.percentile(seconds, 90)), "checks_median": float(np.median(row["checks"])),
+                       "seconds": row["seconds"]}
+    return table
+
+
+def versus_ompl_markdown(scenario: Scenario, table: dict[str, dict]) -> str:
+    """:func:`versus_ompl`'s table in markdown, with each planner's median over OMPL PRM's."""
+    prm_median = table["OMPL PRM"]["median_s"]
+    lines = [f"| {scenario.name} ({table['OMPL PRM']['queries']} queries) | solved | valid at 10x finer | "
+             "median s | mean s | p90 s | configurations checked, median | median / OMPL PRM's |",
+             "| --- | --- | --- | --- | --- | --- | --- | --- |"]
+    for name, row in table.items():
+        lines.append(f"| {name} | {row['success_rate']:.0%} | {row['valid_rate']:.0%} | {row['median_s']:.3f} | "
+                     f"{row['mean_s']:.3f} | {row['p90_s']:.3f} | {row['checks_median']:,.0f} | "
+                     f"{row['median_s'] / prm_median:.2f} |")
+    return "\n".join(lines)

@@ -95,6 +95,14 @@ def cmd_bench(args: argparse.Namespace) -> int:
 
     scenario = scenarios.get(args.scenario)
     models = checkpoints.load_models(args.checkpoint, scenario.name) if args.checkpoint else None
+    if args.vs_ompl:
+        try:
+            table = bench.versus_ompl(scenario, args.queries, args.seed, models, args.ompl_seconds)
+        except ImportError as missing:  # ompl is an optional extra
+            raise ValueError(str(missing)) from None
+        print(json.dumps({"scenario": scenario.name, "seed": args.seed, "planners": table}) if args.json
+              else bench.versus_ompl_markdown(scenario, table))
+        return 0
     result = {"scenario": scenario.name,
               **bench.throughput(scenario, args.preset, args.batch, seed=args.seed, models=models)}
     result["edges"] = bench.edge_checks(scenario, seed=args.seed)
@@ -352,9 +360,11 @@ def build_parser() -> argparse.ArgumentParser:
         "Prints configurations checked per second by the exact checker (geometry) and by the\n"
         "learned one (the networks; untrained ones of the preset's sizes unless --checkpoint),\n"
         "their ratio, and exact edge checking. With --checkpoint it also plans a few of the\n"
-        "paper's queries with and without that model and prints the time ratios.",
+        "paper's queries with and without that model and prints the time ratios. With --vs-ompl\n"
+        "it races our planners against OMPL's PRM and RRTConnect on the same queries and checker.",
         ["toolkit bench --scenario 3dc7 --json",
-         "toolkit bench --scenario 3dc9 --checkpoint runs/3dc9-strong --samplers BT --option rebridge=0"],
+         "toolkit bench --scenario 3dc9 --checkpoint runs/3dc9-strong --samplers BT --option rebridge=0",
+         "toolkit bench --vs-ompl --scenario 3dc7 --queries 20 --seed 9000"],
         cmd_bench)
     bench.add_argument("--scenario", choices=SCENARIO_NAMES, required=True, help=scenario_help)
     _seed(bench, "the workspace and the configurations timed")
@@ -373,6 +383,16 @@ def build_parser() -> argparse.ArgumentParser:
                        help="with --checkpoint: start/goal pairs per workspace, 1..10 (default 2)")
     bench.add_argument("--samplers", type=_samplers, default=SAMPLER_NAMES, metavar="LIST",
                        help="with --checkpoint: comma-separated samplers to plan with, e.g. BT,OB (default: all four)")
+    bench.add_argument("--vs-ompl", action="store_true",
+                       help="instead: plan --queries N queries with our planners (best exact, the paper's baseline, "
+                            "and with --checkpoint's model) and OMPL's PRM and RRTConnect on the same exact checker, "
+                            "in turns, one thread, and print a markdown table (needs the ompl extra: "
+                            "pip install 'sample-collision-toolkit[ompl]'); use a --seed the planner was not tuned on "
+                            "(not 0 or 7100), e.g. 9000")
+    bench.add_argument("--queries", type=_int_in(1, 1000), default=10, metavar="N",
+                       help="with --vs-ompl: the first N queries of the seed's query set (default 10)")
+    bench.add_argument("--ompl-seconds", type=float, default=30.0, metavar="S",
+                       help="with --vs-ompl: OMPL's time limit per query (default 30)")
     bench.add_argument("--option", type=_planner_option, action="append", default=[], metavar="NAME=VALUE",
                        help="with --checkpoint: a planner setting (a PRMOptions field in toolkit/prm.py) for both "
                             "runs, e.g. rebridge=0; repeat for several")

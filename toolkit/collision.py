@@ -37,9 +37,12 @@ class CollisionChecker:
     ``few_calls``: a call's fixed cost outweighs its cost per configuration (a neural
     network on CPU): callers then ask about configurations they may not need in one
     call rather than in several dependent ones (same answers, fewer calls).
+    ``certificates_pay``: bounding a clearance costs less than the checks it can spare
+    (``local_planner.certify_edges``); False where a check is a few comparisons.
     """
 
     few_calls = False
+    certificates_pay = True
 
     def __init__(self, robot: BoxRobot):
         self.robot = robot
@@ -297,7 +300,10 @@ class PointRobotChecker(_BoxWorldChecker):
     Its square never turns, so its configuration-space obstacles are the blocks grown
     by its half extents (a Minkowski sum of boxes is a box), and the free region is the
     workspace shrunk by the same amount: four comparisons per block on contiguous arrays.
+    A check is then cheaper than a clearance bound: certificates do not pay.
     """
+
+    certificates_pay = False
 
     def __init__(self, workspace: Workspace, robot: BoxRobot):
         if robot.base != "point2d" or robot.dof != 2:

@@ -8,7 +8,9 @@ epochs) and at 0.01 collapses to the all-free grid, so the CAE uses AdamW at 1e-
 (at 1e-3 the 3DO CAE diverges), for up to 1500 steps of 10 grids: 2DS and 3DC then
 reconstruct their training workspaces almost exactly (97 %, 99.7 %). The 3DO CAE stops at 300 steps
 (``Scenario.cae_max_steps``: 147M parameters, about 2.3 s a step on 2 cores).
-Planning with it is the paper's Algorithm 1: predicted samples, exactly checked edges.
+Planning with it is the paper's Algorithm 1: predicted samples, exactly checked edges, rounds of |S|;
+and so is planning without it (Table 3's "without" is the paper's baseline,
+``toolkit.prm.PAPER_BASELINE``).
 
 ``strong``: the same CAE; the MLP sees ``[patch, pose]`` (see
 :mod:`toolkit.encoding`): the occupancy around the robot's base cell, the base's
@@ -39,6 +41,10 @@ kinematics, where each link box is. Each choice, measured on unseen workspaces
   0.31-0.34 -> 0.16-0.17, 3DC-9 0.32 -> 0.26, OB 3DC-9 0.22 -> 0.14, with about as
   many rounds (3DO BT 203 -> 205, 3DC-9 OB 138 -> 136) and every query solved; 3DC-7
   queries rarely need a third round (no change).
+- planning without the model is the best exact planner (``toolkit.prm``: lazy edges,
+  rounds that double from a small first one), with the same laziness and rounds as
+  with it: only the checker differs, so the with / without ratios measure prediction,
+  not laziness.
 - no ``z``: once the MLP sees the patch, the CAE's latent adds nothing (unseen
   accuracy with / without ``z``: 2DS 99.5 / 99.7, 3DC-7 95.1 / 95.5), and the CAE
   reconstructs unseen workspaces no better than "all free" (3DC: 89.7 vs 91.2), so
@@ -49,6 +55,8 @@ kinematics, where each link box is. Each choice, measured on unseen workspaces
 from __future__ import annotations
 
 from dataclasses import dataclass, replace
+
+from .prm import PAPER_BASELINE
 
 
 @dataclass(frozen=True)
@@ -78,11 +86,13 @@ class Preset:
     screen_edges: bool = False  # planning with this model: learned edge screening (toolkit.prm), or the paper's exact edges
     auxiliary: str = "exact"  # planning with this model: how rounds after the first sample (toolkit.prm.AUXILIARY)
     exact_every: int = 4  # planning with this model, auxiliary "confirmed": how often a later round samples exactly
+    paper_baseline: bool = False  # planning, with and without this model: the paper's rounds and edges (prm.PAPER_BASELINE)
     quick: bool = False  # shrunk by quick_version()
 
     def planner_options(self) -> dict:
         """The :class:`~toolkit.prm.PRMOptions` that planning with this model uses."""
-        return {"screen_edges": self.screen_edges, "auxiliary": self.auxiliary, "exact_every": self.exact_every}
+        options = {"screen_edges": self.screen_edges, "auxiliary": self.auxiliary, "exact_every": self.exact_every}
+        return {**options, **(PAPER_BASELINE if self.paper_baseline else {})}
 
     def quick_version(self) -> "Preset":
         """The same recipe with few epochs and samples: a whole scenario in seconds (tests, ``--quick``)."""
@@ -95,7 +105,8 @@ class Preset:
 PRESETS: dict[str, Preset] = {
     "paper": Preset("paper", encoding="raw", optimizer="adagrad", lr=0.1,
                     cae_optimizer="adamw", cae_lr=1e-4, dropout=0.5, cae_lambda=1e-3,
-                    cae_epochs=500, cae_batch=10, cae_max_steps=1500, mlp_epochs=200, mlp_batch=100),
+                    cae_epochs=500, cae_batch=10, cae_max_steps=1500, mlp_epochs=200, mlp_batch=100,
+                    paper_baseline=True),
     "strong": Preset("strong", encoding="local", optimizer="adamw", lr=3e-3,
                      cae_optimizer="adamw", cae_lr=1e-4, dropout=0.0, cae_lambda=1e-3,
                      cae_epochs=500, cae_batch=10, cae_max_steps=1500, mlp_epochs=10, mlp_batch=256, mlp_hidden=(64, 32),

@@ -34,23 +34,44 @@ snapshot of the roadmap, at every stage (``STAGES``: new samples, edges, bridges
 candidate path, each repair, the verified path), e.g. to draw the roadmap as it grows
 and is repaired (notebook 04). Snapshots cost copies: time the planner without it.
 
+Two exact planners (no ``checker``), both as above:
+
+- the paper's baseline (``PAPER_BASELINE``: ``lazy=False, first_samples=None``; the
+  ``paper`` preset's Table 3): every round draws |S| = ``n_samples`` configurations, and every candidate
+  edge is checked exactly, point by point, as it is added. Most of those edges are
+  never on the path, and a first solution rarely needs |S| samples.
+- the default, the best exact planner we have: a *lazy PRM* (Bohlin & Kavraki 2000).
+  Edges cost their length and are confirmed only when a candidate path uses them
+  (step 5). As they are added, the exact checker looks at a few points of each,
+  ``lazy_screen`` resolutions apart, all edges in one call: a point in collision
+  rejects an edge for certain, and the candidate paths that follow fail less often
+  (each failure costs a shortest-path search and a few small checker calls). Rounds
+  grow: ``first_samples``, doubled each round up to |S|, so an easy query is solved
+  on a small roadmap. Checking many configurations in one call is what makes our
+  checkers fast (a call's fixed cost dwarfs a configuration's): the planner asks in
+  batches wherever it can.
+
 "With" and "without prediction" differ in the ``checker`` argument only. With
 prediction, edges are decided in one of two ways (``PRMOptions.screen_edges``):
 
-- ``False``: the paper's Algorithm 1 — edges are checked exactly while the roadmap is built;
+- ``False``: as without prediction (the paper's Algorithm 1: ``lazy=False``, edges
+  checked exactly while the roadmap is built);
 - ``True`` (default; beyond the paper, its stated future work): *learned edge
-  screening*, a lazy PRM (Bohlin & Kavraki 2000) — every edge is screened by batched
-  prediction (edges mostly predicted in collision are dropped, the rest cost more the
-  more of them is predicted in collision) and only the candidate path's edges are
-  checked exactly, first at the roadmap's resolution (most edges that fail, fail
-  there), then 10x finer. Screening only estimates the fraction in collision, so it
-  predicts points ``screen_spacing`` resolutions apart. Before certifying a path's
-  edges, the exact checker looks at the one point of each edge where screening
-  predicted a collision (the middle predicted-invalid point; ``Roadmap.edge_suspect``,
-  ``local_planner.refute_at``): a screened edge that fails usually fails there, for
-  one exact check instead of a certificate's several calls.
+  screening*, the lazy PRM with prediction in place of the few exact checks: every
+  edge is screened by batched prediction (edges mostly predicted in collision are
+  dropped, the rest cost more the more of them is predicted in collision) and only
+  the candidate path's edges are checked exactly, first at the roadmap's resolution
+  (most edges that fail, fail there), then 10x finer. Screening only estimates the
+  fraction in collision, so it predicts points ``screen_spacing`` resolutions apart.
+  Before certifying a path's edges, the exact checker looks at the one point of each
+  edge where screening predicted a collision (the middle predicted-invalid point;
+  ``Roadmap.edge_suspect``, ``local_planner.refute_at``): a screened edge that fails
+  usually fails there, for one exact check instead of a certificate's several calls.
 
-What each of these choices buys, measured, is in ``docs/benchmarks.md`` ("Planner design").
+So the ``strong`` preset's "with / without" compares the same lazy planner, with the
+same rounds, with and without prediction: only the checker differs.
+What each of these choices buys, measured, is in ``docs/benchmarks.md`` ("Planner design",
+"Against OMPL").
 """
 
 from __future__ import annotations
@@ -74,10 +95,13 @@ AUXILIARY = {  # PRMOptions.auxiliary: how rounds after the first sample, with p
     "predicted": "with prediction, like the first (nodes are checked when a candidate path uses them)",
 }
 
+PAPER_BASELINE = {"lazy": False, "first_samples": None}  # PRMOptions of Algorithm 1 as the paper has it: see above
+
 STAGES = {  # PlanStep.stage: what the planner just did (Algorithm 1, §III-B)
     "sample": "added this round's accepted samples S' as nodes (lines 2-3; round 1 also start and goal)",
     "connect": "tried edges to each new node's k nearest neighbours, then bridges between start's and goal's "
-               "components (line 4)",
+               "components (line 4): checked exactly (the paper), screened by prediction, or, lazy, looked at in a "
+               "few points",
     "bridge": "after repairs left start and goal apart, tried the next closest pairs between their components",
     "candidate": "found the cheapest start-goal path, not yet verified (line 5)",
     "repair": "the exact checker rejected the candidate's removed_nodes or removed_edges; they are removed next",
@@ -98,6 +122,9 @@ class PRMOptions:
     auxiliary: str = "confirmed"  # with prediction, rounds after the first: see AUXILIARY
     exact_every: int = 4  # auxiliary "confirmed": rounds 1 + exact_every, 1 + 2 * exact_every, ... sample exactly
     screen_edges: bool = True  # with prediction: learned edge screening (lazy PRM); False: the paper's exact edges
+    lazy: bool = True  # edges not screened by prediction: confirmed only on candidate paths; False: as added (paper)
+    lazy_screen: float | None = 32.0  # lazy edges: exact checks resolution * this apart as they are added (None: none)
+    first_samples: int | None = 50  # round r samples min(first_samples * 2**(r-1), n_samples); None: n_samples (paper)
     screen_reject: float = 0.9  # screening drops edges with a larger predicted-invalid fraction
     screen_penalty: float = 10.0  # screened edge cost = length * (1 + penalty * predicted-invalid fraction)
     screen_spacing: float = 8.0  # screening predicts points resolution * this apart (an estimate of the fraction)
@@ -105,13 +132,15 @@ class PRMOptions:
     sampler_options: dict = field(default_factory=dict)
 
     def __post_init__(self):
-        for name in ("n_samples", "k", "verify_refinement", "max_rounds", "exact_every"):
+        for name in ("n_samples", "k", "verify_refinement", "max_rounds", "exact_every", "first_samples"):
             value = getattr(self, name)
+            if value is None and name == "first_samples":
+                continue
             if int(value) != value or value < 1:
                 raise ValueError(f"PRMOptions.{name} must be a positive integer, got {value!r}")
         if int(self.rebridge) != self.rebridge or self.rebridge < 0:
             raise ValueError(f"PRMOptions.rebridge must be a non-negative integer, got {self.rebridge!r}")
-        for name in ("resolution", "screen_spacing", "certify_spacing"):
+        for name in ("resolution", "screen_spacing", "certify_spacing", "lazy_screen"):
             value = getattr(self, name)
             if value is not None and not (np.isfinite(value) and value > 0):
                 raise ValueError(f"PRMOptions.{name} must be positive and finite, got {value!r}")
@@ -214,6 +243,7 @@ class _Planner:
         self.predicted = checker is not exact
         self.resolution = default_resolution(exact.robot) if options.resolution is None else float(options.resolution)
         self.screened = self.predicted and options.screen_edges  # edges screened by prediction, not checked exactly
+        self.lazy = not self.screened and options.lazy  # edges unchecked until a candidate path uses them
         # a path's edges are confirmed at the roadmap's resolution (where most that fail, fail; exactly checked
         # edges already were), then finer
         self.verify_resolutions = (self.resolution, self.resolution / options.verify_refinement)
@@ -243,9 +273,14 @@ class _Planner:
         self.stats[seconds_key] += time.perf_counter() - start
         self.stats[checks_key] += sum(self._counts()) - before
 
+    def round_size(self) -> int:
+        """Sampler attempts this round: |S| (the paper), or, growing, ``first_samples`` doubled each round up to |S|."""
+        n, first = self.options.n_samples, self.options.first_samples
+        return n if first is None else min(n, first << min(self.stats["rounds"] - 1, 30))
+
     def sample_round(self, rng: np.random.Generator) -> tuple[np.ndarray, bool]:
         """This round's samples ``(M, dof)`` and whether the exact checker vouches for them (``PRMOptions.auxiliary``)."""
-        n, auxiliary, round_ = self.options.n_samples, self.options.auxiliary, self.stats["rounds"]
+        n, auxiliary, round_ = self.round_size(), self.options.auxiliary, self.stats["rounds"]
         exact_round = auxiliary == "exact" or (auxiliary == "confirmed" and (round_ - 1) % self.options.exact_every == 0)
         if not self.predicted or (round_ > 1 and exact_round):
             return self.exact_sampler.sample(n, rng), True
@@ -278,6 +313,11 @@ class _Planner:
             keep = fraction <= options.screen_reject
             roadmap.add_edges(pairs[keep], length[keep] * (1 + options.screen_penalty * fraction[keep]),
                               suspect=suspect[keep])
+        elif self.lazy:  # a few exact checks now (one call for all), the rest if a candidate path uses the edge
+            keep = np.ones(len(pairs), dtype=bool)
+            if options.lazy_screen is not None:
+                keep = invalid_fractions(self.exact, Q0, Q1, self.resolution * options.lazy_screen)[0] == 0
+            roadmap.add_edges(pairs[keep], length[keep])
         else:
             keep = check_edges(self.exact, Q0, Q1, self.resolution)
             roadmap.add_edges(pairs[keep], length[keep], checked_at=self.resolution)
@@ -305,7 +345,10 @@ class _Planner:
                     if refuted.any():
                         self._repair(path, edges=unsure[refuted])
                         break
-                ok = certify_edges(self.exact, Q0, Q1, resolution, spacing=self.resolution * options.certify_spacing)
+                if self.exact.certificates_pay:
+                    ok = certify_edges(self.exact, Q0, Q1, resolution, spacing=self.resolution * options.certify_spacing)
+                else:
+                    ok = check_edges(self.exact, Q0, Q1, resolution)
                 roadmap.edge_checked_at[unsure[ok]] = resolution  # remembered across repairs
                 roadmap.edge_cost[unsure[ok]] = roadmap.distance(Q0[ok], Q1[ok])
                 if not ok.all():

@@ -63,8 +63,9 @@ def query_pairs(scenario: Scenario, ws: Workspace, count: int, rng: np.random.Ge
 
 
 def default_options(scenario: Scenario, checker: CollisionChecker | None = None, **overrides) -> PRMOptions:
-    """The planner settings of a scenario: the paper's |S| and the scenario's local-planner resolution;
-    with a learned ``checker``, the edge rule and later rounds of its model's preset (``Preset.planner_options``)."""
+    """The planner settings of a scenario: the paper's |S| and the scenario's local-planner resolution, and otherwise
+    :class:`~toolkit.prm.PRMOptions`' defaults (the best exact planner: lazy edges, growing rounds); with a learned
+    ``checker``, the edge rule and rounds of its model's preset (``Preset.planner_options``)."""
     settings = {"n_samples": scenario.plan_samples, "resolution": scenario.plan_resolution}
     if isinstance(checker, LearnedChecker):
         settings.update(checker.models.preset.planner_options())
