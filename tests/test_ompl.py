@@ -40,10 +40,11 @@ def free_components(ws, robot):
     return label_of
 
 
-def ompl_solves(ws, robot, start, goal, resolution, seconds=10.0):
+def ompl_solves(ws, robot, start, goal, resolution, seconds=120.0):
     """OMPL's PRM with our exact checker; the solution path ``(P, 2)``, or None if none within ``seconds``.
 
-    PRM stops at its first solution, so a solvable query rarely takes more than a fraction of a second.
+    PRM stops at its first solution, so a solvable query rarely takes more than a fraction of a
+    second: ``seconds`` is a budget, not a speed test (on a loaded machine 10 s were once too few).
     """
     checker = exact_checker(ws, robot)
     space = ob.RealVectorStateSpace(2)
