@@ -16,6 +16,7 @@ import pytest
 
 from toolkit import cli, grading
 
+ASSIGNMENTS = ["bridge_test", "verify_and_repair", "evaluating_a_checker", "cae_loss"]
 # Plausible wrong answers: (assignment, the solution's line, its replacement, the questions it breaks).
 WRONG = {
     "bridge_keeps_invalid_midpoints": ("bridge_test", "keep = free(checker, middles)",
@@ -28,6 +29,9 @@ WRONG = {
                             '"tpr": float(np.mean(predicted_valid[valid])) if valid.any() else float("nan"),\n        "tnr"',
                             '"tnr": float(np.mean(predicted_valid[valid])) if valid.any() else float("nan"),\n        "tpr"',
                             {"q1", "q2"}),  # q2 uses q1's rates
+    "loss_without_the_penalty": ("cae_loss", "return reconstruction + lam * contractive_penalty(cae, grids)",
+                                 "return reconstruction", {"q2"}),
+    "penalty_without_gradient": ("cae_loss", "create_graph=True)[0]", "retain_graph=True)[0]", {"q1"}),
 }
 HANG_TIMEOUT_S = 30
 
@@ -73,11 +77,11 @@ def graded(tmp_path_factory) -> dict[str, dict]:
 
 
 def test_the_assignments_exist():
-    assert {"bridge_test", "verify_and_repair", "evaluating_a_checker"} <= set(grading.assignment_names())
+    assert set(ASSIGNMENTS) <= set(grading.assignment_names())
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("name", ["bridge_test", "verify_and_repair", "evaluating_a_checker"])
+@pytest.mark.parametrize("name", ASSIGNMENTS)
 def test_the_untouched_student_notebook_runs_and_scores_zero(graded, name):
     blank = graded[f"{name}/blank"]
     assert not blank["timed_out"] and blank["max_score"] > 0
