@@ -2,7 +2,8 @@
 
 The slow tests build every master with ``otter assign`` and grade, all at once in threads
 (each ``otter run`` is a subprocess with its own kernel): the master's solutions, the untouched
-student notebook, a plausible wrong answer per assignment and a submission that never ends.
+student notebook, a plausible wrong answer per assignment, a submission that never ends and a
+file that is not a notebook.
 """
 
 from __future__ import annotations
@@ -67,6 +68,9 @@ def graded(tmp_path_factory) -> dict[str, dict]:
     for label, (name, old, new, _) in WRONG.items():
         solution = zips[name].parent / f"{name}.ipynb"
         jobs[label] = (_edited(solution, root / label / f"{name}.ipynb", old, new), name, None)
+    jobs["broken"] = (root / "broken" / "bridge_test.ipynb", "bridge_test", None)
+    jobs["broken"][0].parent.mkdir()
+    jobs["broken"][0].write_text("this is not a notebook")
     solution = zips["verify_and_repair"].parent / "verify_and_repair.ipynb"
     jobs["hangs"] = (_edited(solution, root / "hangs" / "verify_and_repair.ipynb",
                              "path = roadmap.shortest_path(start, goal)  # (P,) node indices",
@@ -105,6 +109,13 @@ def test_a_submission_that_never_ends_is_stopped_and_scored_zero(graded):
     assert "stopped after" in result["questions"][0]["feedback"]
 
 
+@pytest.mark.slow
+def test_a_file_otter_cannot_grade_scores_zero_with_the_reason(graded):
+    result = graded["broken"]
+    assert not result["timed_out"] and result["score"] == 0 and result["max_score"] > 0
+    assert "otter could not grade" in result["error"] and "JSON" in result["error"]
+
+
 def test_the_report_ends_with_the_score_and_shows_feedback_where_points_were_lost():
     result = {"assignment": "a", "timed_out": False, "score": 2.0, "max_score": 5.0,
               "questions": [{"name": "q1", "score": 2.0, "max_score": 2.0, "feedback": "all passed"},
@@ -121,13 +132,32 @@ def test_a_folder_of_submissions_becomes_one_csv_row_each(tmp_path):
     (tmp_path / "notes.txt").write_text("")
     found = grading.submissions([tmp_path])
     assert [p.name for p in found] == ["a.ipynb", "b.ipynb"]
-    results = {p: {"assignment": "x", "timed_out": False, "score": float(i), "max_score": 2.0,
+    results = {p: {"assignment": "x", "timed_out": False, "error": None, "score": float(i), "max_score": 2.0,
                    "questions": [{"name": "q1", "score": float(i), "max_score": 2.0, "feedback": ""}]}
                for i, p in enumerate(found)}
     grading.write_csv(results, tmp_path / "scores.csv")
     rows = list(csv.DictReader(open(tmp_path / "scores.csv")))
     assert [(Path(r["submission"]).name, r["q1"], r["score"], r["max_score"]) for r in rows] == \
         [("a.ipynb", "0.0", "0.0", "2.0"), ("b.ipynb", "1.0", "1.0", "2.0")]
+    assert list(rows[0])[-3:] == ["max_score", "timed_out", "error"] and rows[0]["error"] == ""
+
+
+def test_the_assignment_is_read_from_the_notebook_then_its_file_name(tmp_path):
+    renamed = tmp_path / "alice.ipynb"  # a student version as otter assign writes it, renamed by its student
+    renamed.write_text(json.dumps({"cells": [], "metadata": {"otter": {"assignment_name": "cae_loss"}}}))
+    assert grading.assignment_of(renamed) == "cae_loss"
+    (tmp_path / "bridge_test.ipynb").write_text("{}")  # no metadata: the file name
+    assert grading.assignment_of(tmp_path / "bridge_test.ipynb") == "bridge_test"
+    (tmp_path / "bob.ipynb").write_text("not a notebook")
+    with pytest.raises(ValueError, match="bob.ipynb: cannot tell which assignment.*--assignment"):
+        grading.assignment_of(tmp_path / "bob.ipynb")
+
+
+def test_missing_or_empty_submissions_are_named(tmp_path):
+    with pytest.raises(ValueError, match="no such file or folder: .*missing"):
+        grading.submissions([tmp_path / "missing"])
+    with pytest.raises(ValueError, match="no notebooks"):
+        grading.submissions([tmp_path])
 
 
 def test_the_grade_command_is_wired():
@@ -135,3 +165,4 @@ def test_the_grade_command_is_wired():
     assert args.func is cli.cmd_grade and args.notebooks == ["x.ipynb"] and args.timeout == 5.0
     with pytest.raises(ValueError, match="unknown assignment"):
         grading.master("no_such_assignment")
+
