@@ -3,13 +3,18 @@
 The slow tests build every master with ``otter assign`` and grade, all at once in threads
 (each ``otter run`` is a subprocess with its own kernel): the master's solutions, the untouched
 student notebook, a plausible wrong answer per assignment, a submission that never ends and a
-file that is not a notebook.
+file that is not a notebook; and they follow ``tutorials/instructors.md`` on a folder of three
+submissions.
 """
 
 from __future__ import annotations
 
 import csv
 import json
+import os
+import subprocess
+import sys
+import zipfile
 from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
@@ -166,3 +171,43 @@ def test_the_grade_command_is_wired():
     with pytest.raises(ValueError, match="unknown assignment"):
         grading.master("no_such_assignment")
 
+
+GUIDE = Path(__file__).resolve().parent.parent / "tutorials" / "instructors.md"
+
+
+def _guide_command(word: str) -> list[str]:
+    """The command line of ``tutorials/instructors.md`` that contains ``word`` (in a fenced bash block), split."""
+    blocks = GUIDE.read_text().split("```bash\n")[1:]
+    lines = [line.split("#")[0].split() for block in blocks for line in block.split("```")[0].splitlines()]
+    found = [line for line in lines if word in line]
+    assert len(found) == 1, f"{GUIDE.name} should hold one command with {word!r}, found {found}"
+    return found[0]
+
+
+@pytest.mark.slow
+def test_the_instructors_guide_grades_a_folder_of_three_submissions_into_a_csv(tmp_path):
+    """Follow tutorials/instructors.md: collect three renamed submissions in one folder, run its grading command."""
+    solution = grading.autograder("bridge_test").parent / "bridge_test.ipynb"
+    blank = grading.autograder("verify_and_repair").parent.parent / "student" / "verify_and_repair.ipynb"
+    folder = tmp_path / "submissions"
+    folder.mkdir()
+    (folder / "alice.ipynb").write_text(solution.read_text())
+    (folder / "bob.ipynb").write_text(blank.read_text())
+    _edited(solution, folder / "carol.ipynb", *WRONG["bridge_keeps_invalid_midpoints"][1:3])
+    command = _guide_command("grade")
+    assert command[:2] == [".venv/bin/toolkit", "grade"] and "submissions/" in command, command
+    root = Path(__file__).resolve().parent.parent
+    done = subprocess.run([sys.executable, "-m", "toolkit", *command[1:]], cwd=tmp_path, capture_output=True, text=True,
+                          env={**os.environ, "PYTHONPATH": str(root)}, timeout=1500)
+    assert done.returncode == 0, done.stderr[-3000:]
+    csv_file = tmp_path / command[command.index("--csv") + 1]
+    rows = {Path(row["submission"]).name: row for row in csv.DictReader(open(csv_file))}
+    assert sorted(rows) == ["alice.ipynb", "bob.ipynb", "carol.ipynb"]
+    assert (rows["alice.ipynb"]["assignment"], rows["alice.ipynb"]["score"], rows["alice.ipynb"]["max_score"]) == \
+        ("bridge_test", "8.0", "8.0")
+    assert (rows["bob.ipynb"]["assignment"], rows["bob.ipynb"]["score"]) == ("verify_and_repair", "0.0")
+    carol = rows["carol.ipynb"]
+    assert float(carol["q1"]) < 6 and carol["q2"] == "2.0" and carol["timed_out"] == "False" and carol["error"] == ""
+    assert done.stdout.count("score: ") == 3
+    with zipfile.ZipFile(grading.autograder("bridge_test")) as archive:  # otter's Gradescope autograder, as the guide says
+        assert {"run_autograder", "setup.sh", "otter_config.json"} <= set(archive.namelist())
