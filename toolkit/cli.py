@@ -200,9 +200,13 @@ def cmd_reproduce(args: argparse.Namespace) -> int:
 def cmd_grade(args: argparse.Namespace) -> int:
     from . import grading
 
+    if args.assignment:
+        grading.master(args.assignment)  # an unknown name fails here, with the known ones
+    notebooks = grading.submissions(args.notebooks)
+    names = {notebook: args.assignment or grading.assignment_of(notebook) for notebook in notebooks}  # all, before grading
     results = {}
-    for notebook in grading.submissions(args.notebooks):
-        results[notebook] = grading.grade(notebook, args.assignment, timeout=args.timeout)
+    for notebook, name in names.items():
+        results[notebook] = grading.grade(notebook, name, timeout=args.timeout)
         print(json.dumps({"submission": str(notebook), **results[notebook]}) if args.json
               else grading.report(results[notebook]), flush=True)
     if args.csv:
@@ -429,7 +433,7 @@ def build_parser() -> argparse.ArgumentParser:
          "toolkit grade submissions/ --csv scores.csv       # every notebook in the folder"],
         cmd_grade)
     grade.add_argument("notebooks", nargs="+", help="student notebooks, or folders of them")
-    grade.add_argument("--assignment", help="assignment name (default: each notebook's file name)")
+    grade.add_argument("--assignment", help="assignment name (default: read from each notebook, else its file name)")
     grade.add_argument("--timeout", type=float, help="seconds a notebook may run before it scores 0 (default: 600)")
     grade.add_argument("--csv", help="also write one row of scores per notebook to this CSV file")
     grade.add_argument("--json", action="store_true", help="print one JSON object a notebook instead of the report")

@@ -10,7 +10,10 @@ each autograded question. Questions marked ``manual`` (prose) are graded by hand
 part of the score.
 
 A submission that runs longer than ``timeout`` seconds is stopped and scores 0 on every
-autograded question (a loop that never ends must not hold up a whole class's grading).
+autograded question (a loop that never ends must not hold up a whole class's grading); one that
+otter cannot grade at all (a broken file) scores 0 with the reason in its ``error``. Which
+assignment a submission answers is read from the notebook (``otter assign`` writes its name into
+the student version's metadata), so students may rename their files.
 """
 
 from __future__ import annotations
@@ -79,15 +82,30 @@ def _max_points(zip_path: Path) -> dict[str, float]:
     return {q: float(test["points"]) for q, test in notebook["metadata"]["otter"]["tests"].items()}
 
 
+def assignment_of(notebook: str | Path) -> str:
+    """The assignment a student notebook answers: the name ``otter assign`` wrote into its metadata, else its
+    file name (``<name>.ipynb``); a clear error when neither names a known assignment."""
+    notebook = Path(notebook)
+    try:
+        name = json.loads(notebook.read_text())["metadata"]["otter"]["assignment_name"]
+    except (OSError, ValueError, KeyError, TypeError):  # unreadable, not JSON, or no otter metadata
+        name = notebook.stem
+    if name not in assignment_names():
+        raise ValueError(f"{notebook}: cannot tell which assignment it answers (its metadata and file name give "
+                         f"{name!r}); pass --assignment, one of {assignment_names()}")
+    return name
+
+
 def grade(notebook: str | Path, assignment: str | None = None, timeout: float | None = None) -> dict:
-    """Grade a filled-in student notebook; the assignment defaults to the notebook's file name.
+    """Grade a filled-in student notebook; the assignment defaults to :func:`assignment_of` the notebook.
 
     Returns ``{"assignment", "questions": [{"name", "score", "max_score", "feedback"}],
-    "score", "max_score", "timed_out"}``.
+    "score", "max_score", "timed_out", "error"}``; ``error`` is None unless otter could not
+    grade the notebook at all (every question then scores 0).
     """
     notebook = Path(notebook).resolve()
     timeout = TIMEOUT_S if timeout is None else timeout
-    name = assignment or notebook.stem
+    name = assignment or assignment_of(notebook)
     zip_path = autograder(name)
     points = _max_points(zip_path)
     with tempfile.TemporaryDirectory() as out:
@@ -99,21 +117,26 @@ def grade(notebook: str | Path, assignment: str | None = None, timeout: float | 
         except subprocess.TimeoutExpired:
             os.killpg(process.pid, signal.SIGKILL)
             process.communicate()
-            questions = [{"name": q, "score": 0.0, "max_score": p,
-                          "feedback": f"stopped after {timeout:g} s: the notebook did not finish"} for q, p in points.items()]
-            return _total(name, questions, timed_out=True)
+            return _zero(name, points, f"stopped after {timeout:g} s: the notebook did not finish", timed_out=True)
         results = Path(out) / "results.json"
         if not results.is_file():
-            raise RuntimeError(f"otter run wrote no results for {notebook}:\n{log[-3000:]}")
+            last = log.strip().splitlines()[-1] if log.strip() else "no output"
+            return _zero(name, points, f"otter could not grade this notebook: {last}")
         tests = {t["name"]: t for t in json.loads(results.read_text())["tests"]}
     questions = [{"name": q, "score": float(tests.get(q, {}).get("score") or 0.0), "max_score": p,
                   "feedback": tests.get(q, {}).get("output", "not graded: the question's tests did not run")}
                  for q, p in points.items()]
-    return _total(name, questions, timed_out=False)
+    return _total(name, questions)
 
 
-def _total(name: str, questions: list[dict], timed_out: bool) -> dict:
-    return {"assignment": name, "questions": questions, "timed_out": timed_out,
+def _zero(name: str, points: dict[str, float], why: str, timed_out: bool = False) -> dict:
+    """Every question scored 0 with feedback ``why``: a notebook stopped by the time limit, or one otter cannot grade."""
+    questions = [{"name": q, "score": 0.0, "max_score": p, "feedback": why} for q, p in points.items()]
+    return _total(name, questions, timed_out=timed_out, error=None if timed_out else why)
+
+
+def _total(name: str, questions: list[dict], timed_out: bool = False, error: str | None = None) -> dict:
+    return {"assignment": name, "questions": questions, "timed_out": timed_out, "error": error,
             "score": sum(q["score"] for q in questions), "max_score": sum(q["max_score"] for q in questions)}
 
 
@@ -132,19 +155,24 @@ def submissions(paths: list[str | Path]) -> list[Path]:
     """The notebooks among ``paths``: files as given, folders expanded to their ``*.ipynb`` (sorted)."""
     found = []
     for path in map(Path, paths):
+        if not path.exists():
+            raise ValueError(f"no such file or folder: {path}")
         found += sorted(path.glob("*.ipynb")) if path.is_dir() else [path]
+    if not found:
+        raise ValueError(f"no notebooks (*.ipynb) in {', '.join(map(str, paths))}")
     return found
 
 
 def write_csv(results: dict[Path, dict], path: str | Path) -> None:
-    """One row per submission: ``submission, assignment, <question>..., score, max_score, timed_out``."""
+    """One row per submission: ``submission, assignment, <question>..., score, max_score, timed_out, error``
+    (``error``: empty, or why otter could not grade the notebook)."""
     import csv
 
     questions = list(dict.fromkeys(q["name"] for r in results.values() for q in r["questions"]))
     with open(path, "w", newline="") as file:
         writer = csv.writer(file)
-        writer.writerow(["submission", "assignment", *questions, "score", "max_score", "timed_out"])
+        writer.writerow(["submission", "assignment", *questions, "score", "max_score", "timed_out", "error"])
         for notebook, result in results.items():
             scores = {q["name"]: q["score"] for q in result["questions"]}
             writer.writerow([str(notebook), result["assignment"], *(scores.get(q, "") for q in questions),
-                             result["score"], result["max_score"], result["timed_out"]])
+                             result["score"], result["max_score"], result["timed_out"], result.get("error") or ""])
