@@ -6,6 +6,7 @@ would; trained models go to a cache folder of this test session, not the user's.
 """
 
 import json
+import re
 from pathlib import Path
 
 import pytest
@@ -41,3 +42,13 @@ def test_runs_in_quick_mode(path, monkeypatch, notebook_cache):
     run = run_notebook(path, timeout=600)
     assert run.problem() is None, f"{path.name}: {run.problem()}"
     assert run.figures >= 1, f"{path.name} showed no figure"
+
+
+def test_every_mention_of_a_notebook_names_one_that_exists():
+    documents = [ROOT / "README.md"] + [p for folder in ("docs", "notebooks", "tutorials", "toolkit", "tests")
+                                        for p in (ROOT / folder).rglob("*") if p.suffix in (".md", ".ipynb", ".py")
+                                        and "dist" not in p.relative_to(ROOT).parts]
+    names = {p.name for p in NOTEBOOKS}
+    wrong = {(str(doc.relative_to(ROOT)), name) for doc in documents
+             for name in re.findall(r"\b\d\d_[a-z0-9_]+\.ipynb", doc.read_text(errors="ignore")) if name not in names}
+    assert not wrong, f"mentions of notebooks that do not exist: {sorted(wrong)}"
