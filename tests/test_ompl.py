@@ -206,3 +206,14 @@ def test_our_samplers_feed_ompls_prm():
     result = toolkit_ompl.solve(exact, q.start, q.goal, planner="PRM", sampler="OB", rng=np.random.default_rng(0),
                                 seconds=10)
     assert result.success and path_is_valid(exact, result.path, robot.half_extents.min())
+
+
+def test_quiet_reseeds_ompl_so_a_planner_made_afterwards_repeats_itself():
+    scenario = scenarios.get("2ds")
+    q = make_queries(scenario, seed=9000, n_workspaces=1, per_workspace=1)[0]
+    runs = []
+    for _ in range(2):
+        toolkit_ompl.quiet(5)  # the second time after OMPL has drawn random numbers: still takes effect
+        runs.append(toolkit_ompl.solve(exact_checker(q.workspace, scenario.robot), q.start, q.goal, seconds=10))
+    assert runs[0].success and runs[0].checks == runs[1].checks
+    np.testing.assert_array_equal(runs[0].path, runs[1].path)

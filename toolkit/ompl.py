@@ -174,8 +174,8 @@ def solve(checker: CollisionChecker, start, goal, *, planner: str = "RRTConnect"
     """One query ``start -> goal`` with OMPL's ``planner`` (a class of ``ompl.geometric``), ``checker`` deciding
     validity; ``sampler``: one of ours for the planner's valid samples (PRM's), None: OMPL's uniform one.
 
-    OMPL draws from its own global generator: seed it once, before any planner
-    exists, with ``ompl.util.RNG.setSeed``. ``rng`` feeds our ``sampler`` only.
+    OMPL draws from its own generators, seeded from a global one: :func:`quiet` seeds
+    it. ``rng`` feeds our ``sampler`` only.
     """
     robot = checker.robot
     if not hasattr(og, planner):
@@ -204,7 +204,10 @@ def solve(checker: CollisionChecker, start, goal, *, planner: str = "RRTConnect"
 
 
 def quiet(seed: int | None = None) -> None:
-    """OMPL logs errors only; ``seed``: its global generator's seed (only before any planner or sampler exists)."""
+    """OMPL logs errors only; ``seed`` (not 0, which OMPL ignores) reseeds the global generator that seeds every new
+    planner's and sampler's own: what is made afterwards draws the same numbers on every run."""
     ou.setLogLevel(ou.LOG_ERROR)
     if seed is not None:
+        ou.setLogLevel(ou.LOG_NONE)  # after OMPL's first random number it logs an error, yet new generators follow
         ou.RNG.setSeed(int(seed))
+        ou.setLogLevel(ou.LOG_ERROR)
