@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from toolkit import bench, cli
+from toolkit import bench, cli, scenarios
 
 
 def test_bench_prints_one_json_object(capsys):
@@ -126,6 +126,19 @@ def test_bench_vs_ompl_prints_a_markdown_table(capsys):
     for name in ("ours, best exact", "ours, paper's baseline"):  # every query solved, paths valid 10x finer
         assert rows[name].split("|")[2:4] == [" 100% ", " 100% "]
     assert rows["OMPL PRM"].rstrip().endswith("| 1.00 |")  # the ratios' reference
+
+
+def test_versus_ompl_races_the_chosen_planners_only():
+    pytest.importorskip("ompl")
+    scenario = scenarios.get("2ds")
+    table = bench.versus_ompl(scenario, 2, 9000, ompl_seconds=5, ompl_planners=("RRTConnect",), paper_baseline=False)
+    assert list(table) == ["ours, best exact", "OMPL RRTConnect"]
+    assert table["ours, best exact"]["success_rate"] == 1.0 and table["ours, best exact"]["valid_rate"] == 1.0
+    assert all(len(row["seconds"]) == 2 for row in table.values())
+    lines = bench.versus_ompl_markdown(scenario, table).splitlines()
+    assert lines[0].endswith("| median / OMPL RRTConnect's |") and lines[-1].endswith("| 1.00 |")
+    with pytest.raises(ValueError, match="no planner"):
+        bench.versus_ompl(scenario, 1, ompl_planners=("NoSuchPlanner",))
 
 
 def test_bench_vs_ompl_says_how_to_install_ompl(monkeypatch, capsys):

@@ -139,7 +139,8 @@ def test_ompls_distance_is_our_motion_bound_and_its_motion_checks_at_least_our_s
     free = exact_checker(q.workspace, robot)
     free._are_valid = lambda Q: np.ones(len(Q), dtype=bool)  # every state valid: OMPL checks the whole motion
     si_free = toolkit_ompl.space_information(free, resolution)
-    for q0, q1, steps in zip(Q0, Q1, step_counts(robot, Q0, Q1, resolution)):
+    ompl_steps = toolkit_ompl.motion_steps(si, robot, Q0, Q1)  # (20,)
+    for q0, q1, steps, counted in zip(Q0, Q1, step_counts(robot, Q0, Q1, resolution), ompl_steps):
         toolkit_ompl.set_state(a, q0, robot)
         toolkit_ompl.set_state(b, q1, robot)
         np.testing.assert_allclose(toolkit_ompl.to_array(a, robot), q0)
@@ -147,9 +148,13 @@ def test_ompls_distance_is_our_motion_bound_and_its_motion_checks_at_least_our_s
         before = free.n_checked
         assert si_free.checkMotion(a, b)
         checked = free.n_checked - before  # the end state and the interior ones
+        assert checked == counted  # motion_steps counts what checkMotion checks
         assert checked >= steps  # at least our local planner's steps: no robot point moves farther between checks
         assert robot.motion_bound(q0, q1) / checked <= resolution
         assert checked <= steps * robot.dof  # OMPL takes the most steps any one DoF needs
+    assert (ompl_steps > step_counts(robot, Q0, Q1, resolution)).any()  # not all equal: OMPL counts per DoF
+    with pytest.raises(ValueError, match="as many"):
+        toolkit_ompl.motion_steps(si, robot, Q0, Q1[:3])
 
 
 def test_rrtconnect_with_our_exact_checker_returns_paths_our_checker_accepts():
@@ -201,3 +206,14 @@ def test_our_samplers_feed_ompls_prm():
     result = toolkit_ompl.solve(exact, q.start, q.goal, planner="PRM", sampler="OB", rng=np.random.default_rng(0),
                                 seconds=10)
     assert result.success and path_is_valid(exact, result.path, robot.half_extents.min())
+
+
+def test_quiet_reseeds_ompl_so_a_planner_made_afterwards_repeats_itself():
+    scenario = scenarios.get("2ds")
+    q = make_queries(scenario, seed=9000, n_workspaces=1, per_workspace=1)[0]
+    runs = []
+    for _ in range(2):
+        toolkit_ompl.quiet(5)  # the second time after OMPL has drawn random numbers: still takes effect
+        runs.append(toolkit_ompl.solve(exact_checker(q.workspace, scenario.robot), q.start, q.goal, seconds=10))
+    assert runs[0].success and runs[0].checks == runs[1].checks
+    np.testing.assert_array_equal(runs[0].path, runs[1].path)

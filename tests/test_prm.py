@@ -10,8 +10,8 @@ from threadpoolctl import threadpool_info, threadpool_limits
 from toolkit import cli, local_planner, prm, scenarios
 from toolkit import queries as queries_module
 from toolkit.collision import CollisionChecker, exact_checker
-from toolkit.local_planner import (certify_edges, check_edges, invalid_fractions, path_is_valid, refute_at,
-                                   segment_points)
+from toolkit.local_planner import (certify_edges, check_edges, invalid_fractions, path_is_valid, path_points,
+                                   refute_at, segment_points)
 from toolkit.prm import PRMOptions, plan
 from toolkit.queries import make_queries, run_queries
 from toolkit.roadmap import Roadmap
@@ -331,6 +331,23 @@ def test_check_edges_agrees_with_checking_every_step():
     assert np.all(fractions[got] == 0) and np.all(fractions[~got] > 0)
     assert np.all(np.isnan(suspects[got]))
     assert np.all(refute_at(exact, Q0, Q1, suspects, 0.05) == ~got)  # the suspect points are the invalid ones
+
+
+def test_path_points_walk_the_path_at_the_resolution_and_decide_as_path_is_valid():
+    scenario = scenarios.get("3dc7")
+    robot = scenario.robot
+    q = make_queries(scenario, seed=0, n_workspaces=1)[0]
+    exact = exact_checker(q.workspace, robot)
+    rng = np.random.default_rng(3)
+    for _ in range(5):
+        path = np.concatenate([q.start[None], robot.sample(rng, 2), q.goal[None]])  # (4, 7), most likely invalid
+        for route in (path, np.stack([q.start, q.start + 0.02])):  # the second: one step, valid
+            points = path_points(robot, route, 0.05)  # (T, 7)
+            np.testing.assert_allclose(points[[0, -1]], route[[0, -1]])
+            assert len(points) == local_planner.step_counts(robot, route[:-1], route[1:], 0.05).sum() + 1
+            assert np.all(robot.motion_bound(points[:-1], points[1:]) <= 0.05 + 1e-9)
+            assert exact.are_valid(points).all() == path_is_valid(exact, route, 0.05)
+    assert len(path_points(robot, q.start[None], 0.05)) == 1  # a one-configuration path is itself
 
 
 class RecordingChecker(CollisionChecker):

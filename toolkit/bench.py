@@ -173,16 +173,18 @@ def planning_ratios(scenario: Scenario, models: TrainedModels, n_workspaces: int
 
 
 def versus_ompl(scenario: Scenario, n_queries: int = 10, seed: int = 9000, models: TrainedModels | None = None,
-                ompl_seconds: float = 30.0, sampler: str = "BS") -> dict[str, dict]:
+                ompl_seconds: float = 30.0, sampler: str = "BS", ompl_planners: tuple[str, ...] = ("PRM", "RRTConnect"),
+                paper_baseline: bool = True) -> dict[str, dict]:
     """Our planners against OMPL's PRM and RRTConnect on the same queries and the same exact checker.
 
     The first ``n_queries`` of ``queries.make_queries(scenario, seed)``; each planner
     solves each query from scratch, the planners in turns query by query (who goes
     first rotates), torch and BLAS on one thread. Ours: the best exact planner
-    (``queries.default_options``), the paper's baseline (``prm.PAPER_BASELINE``) and, with
-    ``models``, the best exact planner with prediction (the model's preset's options,
-    the workspace's encoding counted in its time). OMPL's: ``ompl.geometric.PRM`` and
-    ``RRTConnect`` through :mod:`toolkit.ompl`, the same exact checker answering one
+    (``queries.default_options``), the paper's baseline (``prm.PAPER_BASELINE``; unless
+    ``paper_baseline`` is False) and, with ``models``, the best exact planner with
+    prediction (the model's preset's options, the workspace's encoding counted in its
+    time). OMPL's: each of ``ompl_planners`` (classes of ``ompl.geometric``, default PRM
+    and RRTConnect) through :mod:`toolkit.ompl`, the same exact checker answering one
     state per call, with ``ompl_seconds`` per query. Edge resolution matched: OMPL's
     state space measures distance as ``robot.motion_bound``, and its validity-checking
     resolution is ``resolution / space.getMaximumExtent()``, so that no robot point
@@ -202,6 +204,8 @@ def versus_ompl(scenario: Scenario, n_queries: int = 10, seed: int = 9000, model
     from .local_planner import path_is_valid
     from .prm import PAPER_BASELINE, plan
 
+    if unknown := [name for name in ompl_planners if not hasattr(toolkit_ompl.og, name)]:
+        raise ValueError(f"ompl.geometric has no planner(s) {unknown}")
     toolkit_ompl.quiet(seed)
     per = scenario.queries_per_workspace
     query_set = queries.make_queries(scenario, seed, -(-n_queries // per), per)[:n_queries]
@@ -223,11 +227,12 @@ def versus_ompl(scenario: Scenario, n_queries: int = 10, seed: int = 9000, model
             return result.success, result.path
         return run
 
-    planners = {"ours, best exact": ours(best, False),
-                "ours, paper's baseline": ours(dataclasses.replace(best, **PAPER_BASELINE), False)}
+    planners = {"ours, best exact": ours(best, False)}
+    if paper_baseline:
+        planners["ours, paper's baseline"] = ours(dataclasses.replace(best, **PAPER_BASELINE), False)
     if models is not None:
         planners[f"ours, with prediction ({models.preset.name})"] = ours(None, True)
-    planners.update({"OMPL PRM": theirs("PRM"), "OMPL RRTConnect": theirs("RRTConnect")})
+    planners.update({f"OMPL {name}": theirs(name) for name in ompl_planners})
     rows = {name: {"seconds": [], "success": [], "valid": [], "checks": []} for name in planners}
     names = list(planners)
     with queries.one_thread():
@@ -254,10 +259,14 @@ def versus_ompl(scenario: Scenario, n_queries: int = 10, seed: int = 9000, model
 
 
 def versus_ompl_markdown(scenario: Scenario, table: dict[str, dict]) -> str:
-    """:func:`versus_ompl`'s table in markdown, with each planner's median over OMPL PRM's."""
-    prm_median = table["OMPL PRM"]["median_s"]
-    lines = [f"| {scenario.name} ({table['OMPL PRM']['queries']} queries) | solved | valid at 10x finer | "
-             "median s | mean s | p90 s | configurations checked, median | median / OMPL PRM's |",
+    """:func:`versus_ompl`'s table in markdown, with each planner's median over OMPL PRM's (over the first OMPL
+    planner's when PRM did not run)."""
+    reference = "OMPL PRM" if "OMPL PRM" in table else next((n for n in table if n.startswith("OMPL ")), None)
+    if reference is None:
+        raise ValueError(f"the table holds no OMPL planner to compare with: {list(table)}")
+    prm_median = table[reference]["median_s"]
+    lines = [f"| {scenario.name} ({table[reference]['queries']} queries) | solved | valid at 10x finer | "
+             f"median s | mean s | p90 s | configurations checked, median | median / {reference}'s |",
              "| --- | --- | --- | --- | --- | --- | --- | --- |"]
     for name, row in table.items():
         lines.append(f"| {name} | {row['success_rate']:.0%} | {row['valid_rate']:.0%} | {row['median_s']:.3f} | "

@@ -188,6 +188,16 @@ def last_valid_along(checker: CollisionChecker, Q0: np.ndarray, Q1: np.ndarray, 
     return segment_points(robot, Q0, Q1, good)
 
 
+def path_points(robot: BoxRobot, path, resolution: float) -> np.ndarray:
+    """``(T, dof)`` every configuration of ``path (P, dof)`` and, between them, the points its segments are checked at
+    (``step_counts`` steps each), in order along the path: the robot's motion, e.g. to draw or check it frame by frame."""
+    path = robot.check_configs(path, "path")  # (P, dof)
+    steps = step_counts(robot, path[:-1], path[1:], resolution)  # (P-1,)
+    t = np.concatenate([np.arange(k) / k for k in steps] + [np.zeros(0)])  # (T-1,) fractions along each segment
+    starts = np.repeat(np.arange(len(path) - 1), steps)  # (T-1,) the segment of each point
+    return np.concatenate([segment_points(robot, path[starts], path[starts + 1], t), path[-1:]])
+
+
 def path_is_valid(checker: CollisionChecker, path, resolution: float) -> bool:
     """Whether every configuration of ``path (P, dof)`` and every segment between them is valid."""
     path = checker.robot.check_configs(path, "path")

@@ -18,7 +18,8 @@ samplers (BS, OB, G, BT, §IV-A) can feed OMPL's PRM:
   at most ``f e_i``, so no robot point moves more than ``sum_i w_i f e_i =
   resolution``: the guarantee of our local planner. OMPL checks at least as many
   points as our planner does (as many when every DoF moves its share of the
-  extent; up to ``dof`` times more when one DoF moves alone).
+  extent; up to ``dof`` times more when one DoF moves alone); :func:`motion_steps` counts
+  them.
 - :class:`ValidityChecker`: our checker as OMPL's, one configuration a call (OMPL asks
   about one state at a time, so our batched calls cannot help it; each call costs a
   whole checker call's fixed overhead).
@@ -143,6 +144,21 @@ def space_information(checker: CollisionChecker, resolution: float | None = None
     return si
 
 
+def motion_steps(si: ob.SpaceInformation, robot: BoxRobot, Q0, Q1) -> np.ndarray:
+    """``(N,)`` states OMPL checks along each motion ``Q0[k] -> Q1[k]`` (``(N, dof)`` each): its valid segment count
+    (the end state and the interior ones), to compare with ``local_planner.step_counts`` at the same resolution."""
+    Q0, Q1 = robot.check_configs(Q0, "Q0"), robot.check_configs(Q1, "Q1")  # (N, dof)
+    if len(Q0) != len(Q1):
+        raise ValueError(f"Q0 and Q1 must hold as many configurations, got {len(Q0)} and {len(Q1)}")
+    space, a, b = si.getStateSpace(), si.allocState(), si.allocState()
+    counts = []
+    for q0, q1 in zip(Q0, Q1):
+        set_state(a, q0, robot)
+        set_state(b, q1, robot)
+        counts.append(space.validSegmentCount(a, b))
+    return np.array(counts, dtype=int)
+
+
 @dataclass
 class OMPLResult:
     """``success`` (an exact solution), ``path (P, dof)`` (empty on failure), ``seconds``, ``checks`` (configurations)."""
@@ -158,8 +174,8 @@ def solve(checker: CollisionChecker, start, goal, *, planner: str = "RRTConnect"
     """One query ``start -> goal`` with OMPL's ``planner`` (a class of ``ompl.geometric``), ``checker`` deciding
     validity; ``sampler``: one of ours for the planner's valid samples (PRM's), None: OMPL's uniform one.
 
-    OMPL draws from its own global generator: seed it once, before any planner
-    exists, with ``ompl.util.RNG.setSeed``. ``rng`` feeds our ``sampler`` only.
+    OMPL draws from its own generators, seeded from a global one: :func:`quiet` seeds
+    it. ``rng`` feeds our ``sampler`` only.
     """
     robot = checker.robot
     if not hasattr(og, planner):
@@ -188,7 +204,10 @@ def solve(checker: CollisionChecker, start, goal, *, planner: str = "RRTConnect"
 
 
 def quiet(seed: int | None = None) -> None:
-    """OMPL logs errors only; ``seed``: its global generator's seed (only before any planner or sampler exists)."""
+    """OMPL logs errors only; ``seed`` (not 0, which OMPL ignores) reseeds the global generator that seeds every new
+    planner's and sampler's own: what is made afterwards draws the same numbers on every run."""
     ou.setLogLevel(ou.LOG_ERROR)
     if seed is not None:
+        ou.setLogLevel(ou.LOG_NONE)  # after OMPL's first random number it logs an error, yet new generators follow
         ou.RNG.setSeed(int(seed))
+        ou.setLogLevel(ou.LOG_ERROR)
