@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 import torch
 
-from toolkit import checkpoints, cli, metrics, presets, training
+from toolkit import checkpoints, cli, data, metrics, presets, training
 from toolkit.presets import Preset
 
 TINY = replace(presets.get("strong").quick_version(), cae_epochs=1, mlp_epochs=2)  # enough to tell seeds apart
@@ -52,8 +52,15 @@ def test_quick_strong_2ds_learns(quick_2ds):
     splits, models = quick_2ds
     scores = training.evaluate(models, splits)
     assert set(scores) == {"cae", "mlp"} and set(scores["cae"]) == {"seen_acc", "unseen_acc", "seen_all_free", "unseen_all_free"}
-    assert set(scores["mlp"]["unseen"]) == {"acc", "tpr", "tnr"}
+    assert set(scores["mlp"]) == {"seen", "unseen", "unseen_uniform"}
+    assert all(set(m) == {"acc", "tpr", "tnr", "always_valid"} for m in scores["mlp"].values())
     assert scores["mlp"]["unseen"]["acc"] > 0.85  # balanced test set: chance is 0.5
+    assert scores["mlp"]["unseen"]["always_valid"] == 0.5
+    # the paper's unseen test: validity-blind samples, mostly valid, scored against their share of valid ones
+    blind = data.validity_blind_split(models.scenario, splits["unseen_test"])
+    assert scores["mlp"]["unseen_uniform"]["always_valid"] == pytest.approx(blind.valid.mean())
+    assert scores["mlp"]["unseen_uniform"]["always_valid"] > 0.7
+    assert training.evaluate(models, dict(splits, unseen_uniform=blind)) == scores  # the same samples when given
     assert models.history["mlp"][-1] < models.history["mlp"][0]
     assert 0.05 <= models.threshold <= 0.95
 
@@ -150,6 +157,6 @@ def test_cli_train_writes_a_checkpoint(tmp_path, capsys):
     out = tmp_path / "ckpt"
     assert cli.main(["train", "--scenario", "2ds", "--preset", "paper", "--quick", "--out", str(out)]) == 0
     printed = json.loads(capsys.readouterr().out)
-    assert set(printed["mlp"]) == {"seen", "unseen"}
+    assert set(printed["mlp"]) == {"seen", "unseen", "unseen_uniform"}
     loaded = checkpoints.load_models(out, "2ds")
     assert loaded.preset.name == "paper" and loaded.quick

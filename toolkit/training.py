@@ -130,10 +130,15 @@ def probabilities(predictor: CollisionPredictor, dataset: CollisionDataset) -> n
 
 @torch.no_grad()
 def evaluate(models: TrainedModels, splits: dict[str, CollisionDataset]) -> dict:
-    """Table 1 and Table 2 measures: ``{"cae": {"seen_acc", "unseen_acc", ...}, "mlp": {"seen": {...}, "unseen": {...}}}``.
+    """Table 1 and Table 2 measures: ``{"cae": {"seen_acc", "unseen_acc", ...}, "mlp": {"seen", "unseen", "unseen_uniform"}}``.
 
     ``cae`` also holds ``seen_all_free`` and ``unseen_all_free``, the share of free cells: the
     reconstruction accuracy of a CAE that ignores its input and answers "all free".
+    ``mlp.seen`` and ``mlp.unseen`` score the balanced test samples; ``mlp.unseen_uniform``
+    scores the paper's unseen test, validity-blind samples in the unseen workspaces
+    (``splits["unseen_uniform"]``, or :func:`toolkit.data.validity_blind_split` of the
+    unseen workspaces). Each holds ``acc``, ``tpr``, ``tnr`` and ``always_valid``, the
+    accuracy of answering "valid" on the same samples (their share of valid ones).
     """
     predictor = models.predictor.eval()
     result: dict = {"cae": {}, "mlp": {}}
@@ -142,9 +147,17 @@ def evaluate(models: TrainedModels, splits: dict[str, CollisionDataset]) -> dict
         grids = torch.as_tensor(dataset.occupancy, device=predictor.threshold.device)
         result["cae"][f"{key}_acc"] = float(metrics.reconstruction_accuracy(predictor.cae(grids).cpu().numpy(), dataset.occupancy).mean())
         result["cae"][f"{key}_all_free"] = float(np.mean(dataset.occupancy < 0))  # the accuracy of predicting "all free"
-        predicted = probabilities(predictor, dataset) >= models.threshold
-        result["mlp"][key] = metrics.classification(predicted.reshape(-1), dataset.valid.reshape(-1))
+        result["mlp"][key] = classification_scores(models, dataset)
+    uniform = splits.get("unseen_uniform") or data.validity_blind_split(models.scenario, splits["unseen_test"])
+    result["mlp"]["unseen_uniform"] = classification_scores(models, uniform)
     return result
+
+
+def classification_scores(models: TrainedModels, dataset: CollisionDataset) -> dict[str, float]:
+    """``{"acc", "tpr", "tnr", "always_valid"}`` of the models' predictions on a dataset's samples."""
+    predicted = probabilities(models.predictor, dataset) >= models.threshold
+    return dict(metrics.classification(predicted.reshape(-1), dataset.valid.reshape(-1)),
+                always_valid=float(np.mean(dataset.valid)))
 
 
 # -- helpers ---------------------------------------------------------------------
