@@ -146,7 +146,8 @@ def _models(stages: Stages, scenario, preset: str, splits, seed: int, quick: boo
         return checkpoints.load_models(folder, scenario.name, remedy=f"delete {folder} to train again (the models "
                                                                      "stage)")
     began = time.perf_counter()
-    models = training.train_models(scenario, preset, splits, seed, progress=stages.progress, quick=quick)
+    models = training.train_models(scenario, preset, splits, seed, progress=stages.progress, quick=quick,
+                                   cae=True)  # Table 1 reports the CAE, used or not
     checkpoints.save_checkpoint(models, folder)  # the folder appears whole or not at all
     stages.took("models", time.perf_counter() - began)
     return models

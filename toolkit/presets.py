@@ -42,8 +42,8 @@ kinematics, where each link box is. Each choice, measured on unseen workspaces
 - no ``z``: once the MLP sees the patch, the CAE's latent adds nothing (unseen
   accuracy with / without ``z``: 2DS 99.5 / 99.7, 3DC-7 95.1 / 95.5), and the CAE
   reconstructs unseen workspaces no better than "all free" (3DC: 89.7 vs 91.2), so
-  ``z`` of an unseen workspace is noise to the MLP. The CAE is still trained, for
-  Table 1.
+  ``z`` of an unseen workspace is noise to the MLP. So ``toolkit train`` leaves its
+  CAE untrained unless asked (``--cae``); ``toolkit reproduce`` trains it, for Table 1.
 """
 
 from __future__ import annotations
@@ -69,6 +69,8 @@ class Preset:
     mlp_epochs: int
     mlp_batch: int
     mlp_hidden: tuple[int, ...] | None = None  # None: the paper's widths for the scenario
+    cae_loss: str = "sum"  # reconstruction error over the cells: "sum" (Eq. (1)) or "mean" (§IV-B1's MSE); see CAE.loss
+    cae_workspaces: int = 0  # the CAE trains on this many generated grids (0: the training split's, the paper)
     samples_factor: int = 1  # labelled samples per workspace = factor x the paper's
     weight_decay: float = 0.0
     cosine_schedule: bool = False  # learning rate decays to 0 along a cosine

@@ -63,8 +63,15 @@ def preset_splits(scenario: Scenario | str, preset: Preset | str, seed: int = 0,
 
 
 def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[str, CollisionDataset], seed: int = 0,
-                 progress: bool = True, quick: bool = False, device: torch.device | str | None = None) -> TrainedModels:
-    """Fit the CAE on ``splits["train"]``'s grids, then the MLP on its labelled samples; models end on the CPU."""
+                 progress: bool = True, quick: bool = False, device: torch.device | str | None = None,
+                 cae: bool | None = None) -> TrainedModels:
+    """Fit the CAE, then the MLP on ``splits["train"]``'s labelled samples; models end on the CPU.
+
+    The CAE trains on the training split's grids, or on ``preset.cae_workspaces`` generated
+    ones. ``cae``: train it (True) or leave it untrained (False); by default only when
+    the MLP sees its ``z`` (``preset.latent_input``), so that the ``strong`` MLP does not
+    wait for a CAE it never asks (``history`` then has no ``"cae"``: Table 1 needs ``cae=True``).
+    """
     scenario, preset = _scenario(scenario), _preset(preset, quick)
     train = splits["train"]
     if train.scenario != scenario.name:
@@ -73,8 +80,11 @@ def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[st
     torch.manual_seed(seed)
     predictor = build_predictor(scenario, preset.encoding, preset.mlp_hidden, preset.dropout, preset.latent_input).to(device)
     shuffle = torch.Generator().manual_seed(seed)
-    grids = torch.as_tensor(train.occupancy, device=device)
-    history = {"cae": train_cae(predictor, grids, preset, shuffle, progress, max_steps=scenario.cae_max_steps)}
+    history = {}
+    if cae if cae is not None else preset.latent_input:
+        grids = (torch.as_tensor(data.occupancy_grids(scenario, "cae_grids", preset.cae_workspaces, seed, progress))
+                 if preset.cae_workspaces else torch.as_tensor(train.occupancy)).to(device)
+        history["cae"] = train_cae(predictor, grids, preset, shuffle, progress, max_steps=scenario.cae_max_steps)
     n_holdout = int(round(preset.holdout * len(train.workspaces))) if len(train.workspaces) > 1 else 0
     fit, holdout = _split_workspaces(train, len(train.workspaces) - n_holdout)
     history["mlp"] = train_mlp(predictor, fit, preset, shuffle, progress)
@@ -85,14 +95,15 @@ def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[st
 
 def train_cae(predictor: CollisionPredictor, grids: torch.Tensor, preset: Preset, shuffle: torch.Generator,
               progress: bool = True, max_steps: int | None = None) -> list[float]:
-    """Fit the CAE to grids ``(W, *grid)`` with Eq. (1), at most ``max_steps`` steps if given; the mean loss of each epoch."""
+    """Fit the CAE to grids ``(W, *grid)`` with Eq. (1) (``preset.cae_loss``), at most ``max_steps`` steps if given;
+    the mean loss of each epoch. Integer grids (int8) become float a batch at a time."""
     cae = predictor.cae.train()
     steps_per_epoch = math.ceil(len(grids) / preset.cae_batch)
     max_steps = min(preset.cae_max_steps, max_steps or preset.cae_max_steps)
     epochs = max(1, min(preset.cae_epochs, max_steps // steps_per_epoch))
     batches = _batches(len(grids), preset.cae_batch, epochs, shuffle)
-    return _fit(cae.parameters(), preset.cae_optimizer, preset.cae_lr, preset, batches, lambda idx: cae.loss(grids[idx], preset.cae_lambda),
-                progress, f"CAE ({preset.name})")
+    return _fit(cae.parameters(), preset.cae_optimizer, preset.cae_lr, preset, batches,
+                lambda idx: cae.loss(grids[idx].float(), preset.cae_lambda, preset.cae_loss), progress, f"CAE ({preset.name})")
 
 
 def train_mlp(predictor: CollisionPredictor, dataset: CollisionDataset, preset: Preset, shuffle: torch.Generator,
@@ -133,7 +144,8 @@ def evaluate(models: TrainedModels, splits: dict[str, CollisionDataset]) -> dict
     """Table 1 and Table 2 measures: ``{"cae": {"seen_acc", "unseen_acc", ...}, "mlp": {"seen", "unseen", "unseen_uniform"}}``.
 
     ``cae`` also holds ``seen_all_free`` and ``unseen_all_free``, the share of free cells: the
-    reconstruction accuracy of a CAE that ignores its input and answers "all free".
+    reconstruction accuracy of a CAE that ignores its input and answers "all free"; a CAE
+    left untrained (``models.history`` without ``"cae"``) gives ``{"trained": False}``.
     ``mlp.seen`` and ``mlp.unseen`` score the balanced test samples; ``mlp.unseen_uniform``
     scores the paper's unseen test, validity-blind samples in the unseen workspaces
     (``splits["unseen_uniform"]``, or :func:`toolkit.data.validity_blind_split` of the
@@ -141,13 +153,16 @@ def evaluate(models: TrainedModels, splits: dict[str, CollisionDataset]) -> dict
     accuracy of answering "valid" on the same samples (their share of valid ones).
     """
     predictor = models.predictor.eval()
-    result: dict = {"cae": {}, "mlp": {}}
+    trained_cae = "cae" in models.history
+    result: dict = {"cae": {} if trained_cae else {"trained": False}, "mlp": {}}
     for key, split in (("seen", "seen_test"), ("unseen", "unseen_test")):
         dataset = splits[split]
         grids = torch.as_tensor(dataset.occupancy, device=predictor.threshold.device)
+        result["mlp"][key] = classification_scores(models, dataset)
+        if not trained_cae:  # left untrained (train_models' cae=False): nothing to measure
+            continue
         result["cae"][f"{key}_acc"] = float(metrics.reconstruction_accuracy(predictor.cae(grids).cpu().numpy(), dataset.occupancy).mean())
         result["cae"][f"{key}_all_free"] = float(np.mean(dataset.occupancy < 0))  # the accuracy of predicting "all free"
-        result["mlp"][key] = classification_scores(models, dataset)
     uniform = splits.get("unseen_uniform") or data.validity_blind_split(models.scenario, splits["unseen_test"])
     result["mlp"]["unseen_uniform"] = classification_scores(models, uniform)
     return result
