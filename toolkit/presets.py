@@ -71,9 +71,10 @@ class Preset:
     mlp_hidden: tuple[int, ...] | None = None  # None: the paper's widths for the scenario
     cae_loss: str = "sum"  # reconstruction error over the cells: "sum" (Eq. (1)) or "mean" (§IV-B1's MSE); see CAE.loss
     cae_workspaces: int = 0  # the CAE trains on this many generated grids (0: the training split's, the paper)
+    n_seen: int | None = None  # training workspaces (None: the paper's, Scenario.n_seen)
     samples_factor: int = 1  # labelled samples per workspace = factor x the paper's
-    weight_decay: float = 0.0
-    cosine_schedule: bool = False  # learning rate decays to 0 along a cosine
+    weight_decay: float = 0.0  # the MLP's optimizer (the CAE's penalty is Eq. (1)'s lambda)
+    cosine_schedule: bool = False  # the MLP's learning rate decays to 0 along a cosine
     standardize: bool = False  # MLP inputs scaled to zero mean, unit variance on the training data
     holdout: float = 0.0  # share of training workspaces kept from the MLP to calibrate its threshold
     latent_input: bool = True  # the MLP sees the CAE's z (the paper); False: only the patch and pose
@@ -91,7 +92,8 @@ class Preset:
         if self.quick:
             return self
         return replace(self, quick=True, cae_epochs=max(1, self.cae_epochs // 50), mlp_epochs=max(2, self.mlp_epochs // 10),
-                       samples_factor=min(self.samples_factor, 4))
+                       samples_factor=min(self.samples_factor, 4), cae_workspaces=min(self.cae_workspaces, 40),
+                       cae_max_steps=min(self.cae_max_steps, 20))
 
 
 PRESETS: dict[str, Preset] = {
@@ -99,8 +101,8 @@ PRESETS: dict[str, Preset] = {
                     cae_optimizer="adamw", cae_lr=1e-4, dropout=0.5, cae_lambda=1e-3,
                     cae_epochs=500, cae_batch=10, cae_max_steps=1500, mlp_epochs=200, mlp_batch=100),
     "strong": Preset("strong", encoding="local", optimizer="adamw", lr=3e-3,
-                     cae_optimizer="adamw", cae_lr=1e-4, dropout=0.0, cae_lambda=1e-3,
-                     cae_epochs=500, cae_batch=10, cae_max_steps=1500, mlp_epochs=10, mlp_batch=256, mlp_hidden=(64, 32),
+                     cae_optimizer="adamw", cae_lr=1e-3, dropout=0.0, cae_lambda=1e-3, cae_workspaces=2000,
+                     cae_epochs=10_000, cae_batch=100, cae_max_steps=2500, mlp_epochs=10, mlp_batch=256, mlp_hidden=(64, 32),
                      samples_factor=20, weight_decay=1e-4, cosine_schedule=True, standardize=True, holdout=0.1,
                      latent_input=False, screen_edges=True, auxiliary="confirmed"),
 }

@@ -21,7 +21,7 @@ from tqdm.auto import tqdm
 
 from . import data, metrics, presets, scenarios
 from .data import CollisionDataset
-from .models import CollisionPredictor, build_predictor
+from .models import CAE, CollisionPredictor, build_predictor
 from .presets import Preset
 from .scenarios import Scenario
 
@@ -57,20 +57,23 @@ def preset_splits(scenario: Scenario | str, preset: Preset | str, seed: int = 0,
                   progress: bool = True) -> dict[str, CollisionDataset]:
     """The three data splits a preset trains and tests on (quick: few workspaces, see ``presets.QUICK_WORKSPACES``)."""
     scenario, preset = _scenario(scenario), _preset(preset, quick)
-    counts = dict(zip(("n_seen", "n_seen_test", "n_unseen"), presets.QUICK_WORKSPACES)) if preset.quick else {}
+    counts = (dict(zip(("n_seen", "n_seen_test", "n_unseen"), presets.QUICK_WORKSPACES)) if preset.quick
+              else {"n_seen": preset.n_seen} if preset.n_seen else {})
     return data.make_splits(scenario, seed, samples_per_workspace=scenario.samples_per_workspace * preset.samples_factor,
                             progress=progress, **counts)
 
 
 def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[str, CollisionDataset], seed: int = 0,
                  progress: bool = True, quick: bool = False, device: torch.device | str | None = None,
-                 cae: bool | None = None) -> TrainedModels:
+                 cae: bool | None = None, trained_cae: CAE | None = None) -> TrainedModels:
     """Fit the CAE, then the MLP on ``splits["train"]``'s labelled samples; models end on the CPU.
 
     The CAE trains on the training split's grids, or on ``preset.cae_workspaces`` generated
     ones. ``cae``: train it (True) or leave it untrained (False); by default only when
     the MLP sees its ``z`` (``preset.latent_input``), so that the ``strong`` MLP does not
     wait for a CAE it never asks (``history`` then has no ``"cae"``: Table 1 needs ``cae=True``).
+    ``trained_cae``: a CAE already trained with these settings, copied instead of training one
+    (``history["cae"]`` is then empty).
     """
     scenario, preset = _scenario(scenario), _preset(preset, quick)
     train = splits["train"]
@@ -81,10 +84,14 @@ def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[st
     predictor = build_predictor(scenario, preset.encoding, preset.mlp_hidden, preset.dropout, preset.latent_input).to(device)
     shuffle = torch.Generator().manual_seed(seed)
     history = {}
-    if cae if cae is not None else preset.latent_input:
+    if trained_cae is not None:
+        predictor.cae.load_state_dict(trained_cae.state_dict())
+        history["cae"] = []
+    elif cae if cae is not None else preset.latent_input:
         grids = (torch.as_tensor(data.occupancy_grids(scenario, "cae_grids", preset.cae_workspaces, seed, progress))
                  if preset.cae_workspaces else torch.as_tensor(train.occupancy)).to(device)
-        history["cae"] = train_cae(predictor, grids, preset, shuffle, progress, max_steps=scenario.cae_max_steps)
+        history["cae"] = train_cae(predictor, grids, preset, shuffle, progress, max_steps=scenario.cae_max_steps,
+                                   max_batch=scenario.cae_max_batch)
     n_holdout = int(round(preset.holdout * len(train.workspaces))) if len(train.workspaces) > 1 else 0
     fit, holdout = _split_workspaces(train, len(train.workspaces) - n_holdout)
     history["mlp"] = train_mlp(predictor, fit, preset, shuffle, progress)
@@ -94,15 +101,17 @@ def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[st
 
 
 def train_cae(predictor: CollisionPredictor, grids: torch.Tensor, preset: Preset, shuffle: torch.Generator,
-              progress: bool = True, max_steps: int | None = None) -> list[float]:
-    """Fit the CAE to grids ``(W, *grid)`` with Eq. (1) (``preset.cae_loss``), at most ``max_steps`` steps if given;
-    the mean loss of each epoch. Integer grids (int8) become float a batch at a time."""
+              progress: bool = True, max_steps: int | None = None, max_batch: int | None = None) -> list[float]:
+    """Fit the CAE to grids ``(W, *grid)`` with Eq. (1) (``preset.cae_loss``), at most ``max_steps`` steps of at most
+    ``max_batch`` grids if given; the mean loss of each epoch. Integer grids (int8) become float a batch at a time."""
     cae = predictor.cae.train()
-    steps_per_epoch = math.ceil(len(grids) / preset.cae_batch)
+    batch = min(preset.cae_batch, max_batch or preset.cae_batch)
+    steps_per_epoch = math.ceil(len(grids) / batch)
     max_steps = min(preset.cae_max_steps, max_steps or preset.cae_max_steps)
     epochs = max(1, min(preset.cae_epochs, max_steps // steps_per_epoch))
-    batches = _batches(len(grids), preset.cae_batch, epochs, shuffle)
-    return _fit(cae.parameters(), preset.cae_optimizer, preset.cae_lr, preset, batches,
+    batches = _batches(len(grids), batch, epochs, shuffle)
+    # no weight decay or schedule of the optimizer here (those settings are the MLP's): Eq. (1)'s penalty is the CAE's
+    return _fit(cae.parameters(), preset.cae_optimizer, preset.cae_lr, batches,
                 lambda idx: cae.loss(grids[idx].float(), preset.cae_lambda, preset.cae_loss), progress, f"CAE ({preset.name})")
 
 
@@ -115,8 +124,9 @@ def train_mlp(predictor: CollisionPredictor, dataset: CollisionDataset, preset: 
     X = (X - mean) / std
     mlp = predictor.mlp.train()
     batches = _batches(len(X), preset.mlp_batch, preset.mlp_epochs, shuffle)
-    losses = _fit(mlp.parameters(), preset.optimizer, preset.lr, preset, batches,
-                  lambda idx: nn.functional.cross_entropy(mlp(X[idx]), y[idx]), progress, f"MLP ({preset.name})")
+    losses = _fit(mlp.parameters(), preset.optimizer, preset.lr, batches,
+                  lambda idx: nn.functional.cross_entropy(mlp(X[idx]), y[idx]), progress, f"MLP ({preset.name})",
+                  preset.weight_decay, preset.cosine_schedule)
     mlp.eval()
     if preset.standardize:
         mlp.fold_standardization(mean, std)
@@ -201,18 +211,18 @@ def _batches(n: int, batch: int, epochs: int, shuffle: torch.Generator) -> list[
     return [list(torch.randperm(n, generator=shuffle).split(batch)) for _ in range(epochs)]
 
 
-def _fit(params, optimizer_name: str, lr: float, preset: Preset, epochs: list[list[torch.Tensor]], loss_of,
-         progress: bool, desc: str) -> list[float]:
+def _fit(params, optimizer_name: str, lr: float, epochs: list[list[torch.Tensor]], loss_of, progress: bool, desc: str,
+         weight_decay: float = 0.0, cosine_schedule: bool = False) -> list[float]:
     """Minimize ``loss_of(batch indices)`` over the epochs with the named optimizer; mean loss per epoch."""
     params = list(params)
     if optimizer_name == "adagrad":
-        optimizer = torch.optim.Adagrad(params, lr=lr, weight_decay=preset.weight_decay)
+        optimizer = torch.optim.Adagrad(params, lr=lr, weight_decay=weight_decay)
     elif optimizer_name == "adamw":
-        optimizer = torch.optim.AdamW(params, lr=lr, weight_decay=preset.weight_decay)
+        optimizer = torch.optim.AdamW(params, lr=lr, weight_decay=weight_decay)
     else:
         raise ValueError(f"unknown optimizer {optimizer_name!r}; choose 'adagrad' or 'adamw'")
     total = sum(map(len, epochs))
-    schedule = (lambda step: 0.5 * (1 + math.cos(math.pi * step / total))) if preset.cosine_schedule else (lambda step: 1.0)
+    schedule = (lambda step: 0.5 * (1 + math.cos(math.pi * step / total))) if cosine_schedule else (lambda step: 1.0)
     scheduler = torch.optim.lr_scheduler.LambdaLR(optimizer, schedule)
     history = []
     bar = tqdm(epochs, desc=desc, disable=not progress, leave=False)
