@@ -57,7 +57,7 @@ def trained_models(scenario: str, preset: str, *, seed: int = 0, progress: bool 
     with threads.limited(threads.configured()):  # one thread, as the toolkit command: fast on a shared machine
         splits = training.preset_splits(scenario, preset, seed, quick=is_quick(), progress=progress)
         models = training.train_models(scenario, preset, splits, seed, progress=progress, quick=is_quick(),
-                                       device="cpu", cae=True)  # the notebooks show every preset's CAE
+                                       device="cpu")
         scores = training.evaluate(models, splits)
     tmp = folder.with_name(f"{folder.name}.{uuid.uuid4().hex}.tmp")  # another notebook may be training the same
     checkpoints.save_checkpoint(models, tmp, evaluation=scores)
