@@ -171,7 +171,7 @@ def test_save_load_round_trip(tmp_path, splits_3dc7):
     np.testing.assert_array_equal(back.configs, ds.configs)
     assert back.valid.dtype == bool
     np.testing.assert_array_equal(back.valid, ds.valid)
-    assert back.meta == {"seed": 4, "stream": "test_samples", "samples_per_workspace": 20}
+    assert back.meta == {"seed": 4, "stream": "test_samples", "samples_per_workspace": 20, "balanced": True}
     assert not list(tmp_path.glob("*.tmp*"))
 
 
