@@ -1,6 +1,7 @@
 """Training: metrics against hand counts, determinism, evaluation keys, checkpoints and bad checkpoints."""
 
 import json
+from types import SimpleNamespace
 from dataclasses import replace
 
 import numpy as np
@@ -196,3 +197,17 @@ def test_cli_train_trains_the_cae_when_asked(flags, asked, tmp_path, monkeypatch
     with pytest.raises(Stop):
         cli.main(["train", "--scenario", "2ds", "--preset", "strong", "--out", str(tmp_path / "c")] + flags)
     assert seen["cae"] is asked  # None: train_models' rule, a CAE only for an MLP that sees z
+
+
+
+@pytest.mark.parametrize("name, lr, batch", [("2ds", 1e-3, 100), ("3dc7", 1e-4, 100), ("3do", 1e-4, 10)])
+def test_strong_cae_follows_the_scenarios_caps(name, lr, batch, monkeypatch):
+    """strong's CAE: AdamW 1e-3 on batches of 100 generated grids where the scenario allows (at 1e-3 the 3DC and
+    3DO CAEs diverge; 3DO's steps are slow)."""
+    seen = {}
+    monkeypatch.setattr(training, "_fit", lambda params, optimizer, rate, epochs, *a, **k: seen.update(
+        lr=rate, batch=max(len(b) for e in epochs for b in e)))
+    s, stand_in = scenarios.get(name), SimpleNamespace(cae=torch.nn.Linear(1, 1))  # the 3DO CAE: 147M parameters
+    training.train_cae(stand_in, torch.zeros(2000, 1), presets.get("strong"), torch.Generator(), False,
+                       s.cae_max_steps, s.cae_max_batch, s.cae_max_lr)
+    assert seen == {"lr": lr, "batch": batch}

@@ -22,7 +22,9 @@ reconstruction 86.8 % / 88.0 %, all free 87.6 %; ``toolkit ablate``, rows 0 and 
 
 ``strong``: its CAE trains on 2000 generated grids (``cae_workspaces``; AdamW 1e-3,
 batch 100, 2500 steps, Eq. (1)'s sum): it no longer memorizes (2DS unseen
-reconstruction 93.3 %, all free 87.6 %; with the mean reading 92.7 %). The MLP sees ``[patch, pose]`` (see
+reconstruction 93.3 %, all free 87.6 %; with the mean reading 92.7 %). 3DC and 3DO
+cap its learning rate at 1e-4 (``Scenario.cae_max_lr``: the 3DC CAE diverges at 1e-3;
+at 1e-4 it matches "all free", 91.2 %). The MLP sees ``[patch, pose]`` (see
 :mod:`toolkit.encoding`): the occupancy around the robot's base cell, the base's
 position in its cell, sin/cos of its angles, its scaled joints and, from forward
 kinematics, where each link box is. Each choice, measured on unseen workspaces

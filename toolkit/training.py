@@ -91,7 +91,7 @@ def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[st
         grids = (torch.as_tensor(data.occupancy_grids(scenario, "cae_grids", preset.cae_workspaces, seed, progress))
                  if preset.cae_workspaces else torch.as_tensor(train.occupancy)).to(device)
         history["cae"] = train_cae(predictor, grids, preset, shuffle, progress, max_steps=scenario.cae_max_steps,
-                                   max_batch=scenario.cae_max_batch)
+                                   max_batch=scenario.cae_max_batch, max_lr=scenario.cae_max_lr)
     n_holdout = int(round(preset.holdout * len(train.workspaces))) if len(train.workspaces) > 1 else 0
     fit, holdout = _split_workspaces(train, len(train.workspaces) - n_holdout)
     history["mlp"] = train_mlp(predictor, fit, preset, shuffle, progress)
@@ -101,9 +101,11 @@ def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[st
 
 
 def train_cae(predictor: CollisionPredictor, grids: torch.Tensor, preset: Preset, shuffle: torch.Generator,
-              progress: bool = True, max_steps: int | None = None, max_batch: int | None = None) -> list[float]:
+              progress: bool = True, max_steps: int | None = None, max_batch: int | None = None,
+              max_lr: float | None = None) -> list[float]:
     """Fit the CAE to grids ``(W, *grid)`` with Eq. (1) (``preset.cae_loss``), at most ``max_steps`` steps of at most
-    ``max_batch`` grids if given; the mean loss of each epoch. Integer grids (int8) become float a batch at a time."""
+    ``max_batch`` grids at a learning rate of at most ``max_lr`` if given; the mean loss of each epoch. Integer grids
+    (int8) become float a batch at a time."""
     cae = predictor.cae.train()
     batch = min(preset.cae_batch, max_batch or preset.cae_batch)
     steps_per_epoch = math.ceil(len(grids) / batch)
@@ -111,7 +113,7 @@ def train_cae(predictor: CollisionPredictor, grids: torch.Tensor, preset: Preset
     epochs = max(1, min(preset.cae_epochs, max_steps // steps_per_epoch))
     batches = _batches(len(grids), batch, epochs, shuffle)
     # no weight decay or schedule of the optimizer here (those settings are the MLP's): Eq. (1)'s penalty is the CAE's
-    return _fit(cae.parameters(), preset.cae_optimizer, preset.cae_lr, batches,
+    return _fit(cae.parameters(), preset.cae_optimizer, min(preset.cae_lr, max_lr or preset.cae_lr), batches,
                 lambda idx: cae.loss(grids[idx].float(), preset.cae_lambda, preset.cae_loss), progress, f"CAE ({preset.name})")
 
 
