@@ -160,7 +160,7 @@ def test_train_never_replaces_a_checkpoint_without_force(tmp_path, checkpoint_2d
 def test_train_force_replaces_a_checkpoint_whole(tmp_path, checkpoint_2ds, monkeypatch, capsys):
     existing = shutil.copytree(checkpoint_2ds, tmp_path / "ckpt")
     trained = checkpoints.load_models(checkpoint_2ds)
-    monkeypatch.setattr(training, "train_models", lambda scenario, preset, splits, seed, device=None:
+    monkeypatch.setattr(training, "train_models", lambda scenario, preset, splits, seed, device=None, cae=None:
                         dataclasses.replace(trained, seed=seed))
     assert cli.main(["train", "--scenario", "2ds", "--preset", "strong", "--quick", "--seed", "7", "--force",
                      "--out", str(existing)]) == 0

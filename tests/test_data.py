@@ -103,6 +103,22 @@ def test_seen_test_reuses_training_workspaces_with_new_samples(splits_3dc7):
     assert unseen.workspaces == data.workspaces(scenarios.get("3dc7"), "unseen", 2, seed=4)
 
 
+@pytest.mark.parametrize("fixture", ["splits_2ds", "splits_3dc7"])
+def test_validity_blind_split_is_the_papers_unseen_test(request, fixture):
+    """§IV-A: in the unseen workspaces, |S| uniform samples each (2DS 200, 3DC 400), whatever their validity."""
+    unseen = request.getfixturevalue(fixture)["unseen_test"]
+    scenario = scenarios.get(unseen.scenario)
+    blind = data.validity_blind_split(scenario, unseen)
+    assert blind.workspaces == unseen.workspaces and blind.configs.shape == (2, scenario.plan_samples, scenario.robot.dof)
+    np.testing.assert_array_equal(blind.occupancy, unseen.occupancy)
+    for ws, Q, valid in zip(blind.workspaces, blind.configs, blind.valid):
+        np.testing.assert_array_equal(valid, ExactChecker(ws, scenario.robot).are_valid(Q))
+        assert np.all(Q >= scenario.robot.lower) and np.all(Q <= scenario.robot.upper)
+    assert 0.6 < blind.valid.mean() < 0.98  # not balanced: most uniform samples are free
+    np.testing.assert_array_equal(data.validity_blind_split(scenario, unseen).configs, blind.configs)  # reproducible
+    assert not np.isin(blind.configs, unseen.configs).all(axis=-1).any()  # its own stream, not the balanced samples
+
+
 def test_same_seed_same_arrays_other_seed_other(splits_2ds):
     again = make_splits(scenarios.get("2ds"), seed=4, **SMALL)
     other = make_splits(scenarios.get("2ds"), seed=5, **SMALL)
@@ -155,7 +171,7 @@ def test_save_load_round_trip(tmp_path, splits_3dc7):
     np.testing.assert_array_equal(back.configs, ds.configs)
     assert back.valid.dtype == bool
     np.testing.assert_array_equal(back.valid, ds.valid)
-    assert back.meta == {"seed": 4, "stream": "test_samples", "samples_per_workspace": 20}
+    assert back.meta == {"seed": 4, "stream": "test_samples", "samples_per_workspace": 20, "balanced": True}
     assert not list(tmp_path.glob("*.tmp*"))
 
 

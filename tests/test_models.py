@@ -53,6 +53,38 @@ def test_cae_loss_is_eq1():
     assert torch.allclose(cae.loss(x, 0.25), error + 0.25 * penalty)
 
 
+@pytest.mark.parametrize("reduction", ["sum", "mean"])
+def test_cae_loss_and_encoder_gradient_match_an_independent_reference(reduction):
+    """With a linear encoder the penalty is Rifai's contractive term ||df/dx||_F^2: computed here from the
+    encoder's Jacobian (torch.autograd.functional.jacobian, kept in the graph), the reference loss has the
+    same value as ``CAE.loss`` and the same gradient on the encoder's weights, a nonzero one."""
+    torch.manual_seed(0)
+    cae = CAE((6, 3)).double()  # encoder: one Linear 6 -> 3; decoder: Linear 3 -> 6
+    x = torch.sign(torch.randn(4, 2, 3, dtype=torch.float64))
+    lam, flat = 0.3, x.reshape(4, 6)
+    W, b = cae.encoder[0].weight, cae.encoder[0].bias
+
+    def reference(weight):
+        encode = lambda v: v @ weight.T + b  # (6,) -> (3,)
+        J = torch.autograd.functional.jacobian(encode, flat[0], create_graph=True)  # (3, 6), the same at every x
+        squared = (cae.decoder(encode(flat)) - flat) ** 2  # (4, 6)
+        error = squared.sum(dim=1).mean() if reduction == "sum" else squared.mean()
+        return error + lam * (J ** 2).sum()
+
+    expected = reference(W)
+    (expected_grad,) = torch.autograd.grad(expected, W)
+    loss = cae.loss(x, lam, reduction)
+    assert torch.allclose(loss, expected)
+    (grad,) = torch.autograd.grad(loss, W)
+    assert torch.allclose(grad, expected_grad)
+    (penalty_grad,) = torch.autograd.grad(cae.loss(x, lam, reduction) - cae.loss(x, 0.0, reduction), W)
+    assert torch.allclose(penalty_grad, 2 * lam * W) and penalty_grad.abs().min() > 0
+    # the two readings of §IV-B1 / Eq. (1) differ by the number of cells in the error term
+    assert torch.allclose(cae.loss(x, 0.0, "sum"), 6 * cae.loss(x, 0.0, "mean"))
+    with pytest.raises(ValueError, match="reduction 'median'"):
+        cae.loss(x, lam, "median")
+
+
 def test_penalty_reaches_only_encoder_gradients():
     torch.manual_seed(0)
     cae = CAE((961, 64, 12)).double()  # float64: gradients of ~1e3 leave float32 rounding of ~1e-5

@@ -18,9 +18,10 @@ def check_contract(results: dict, name: str) -> None:
     assert results["seed"] == 0
     for key in ("seen_acc", "unseen_acc"):
         assert 0.0 <= results["cae"][key] <= 1.0
-    for split in ("seen", "unseen"):
-        for key in ("acc", "tpr", "tnr"):
+    for split in ("seen", "unseen", "unseen_uniform"):
+        for key in ("acc", "tpr", "tnr", "always_valid"):
             assert 0.0 <= results["mlp"][split][key] <= 1.0
+    assert results["mlp"]["unseen"]["always_valid"] == 0.5  # balanced
     assert set(results["planning"]) == set(paper_numbers.SAMPLERS)
     for sampler, modes in results["planning"].items():
         assert set(modes) == {"without", "with"}
@@ -61,6 +62,12 @@ def test_quick_reproduction_meets_the_contract(name, tmp_path):
         table1 = summary.split("## Table 1")[1].split("## Table 2")[0]
         assert table1.count("| 2ds | **") == 2
         assert again["planning"] == results["planning"]
+        # a cache written before the paper's unseen test: only the learning stage is measured again, and says so
+        learning = json.loads((out / "cache" / "learning.json").read_text())
+        del learning["mlp"]["unseen_uniform"]
+        (out / "cache" / "learning.json").write_text(json.dumps(learning))
+        upgraded = experiments.reproduce(name, quick=True, out=out, progress=False)
+        assert upgraded["recomputed"] == ["learning"] and upgraded["mlp"] == results["mlp"]
 
 
 def test_an_output_folder_of_other_settings_is_refused(tmp_path):
@@ -80,6 +87,27 @@ def test_an_interrupted_stage_leaves_no_file_a_later_run_trusts(tmp_path):
     assert not (stages.cache / "planning_BS_without.json").exists()
     assert stages.json("planning_BS_without", lambda: {"total_s": 1.0}) == {"total_s": 1.0}
     assert stages.json("planning_BS_without", lambda: {"total_s": 2.0}) == {"total_s": 1.0}  # cached
+
+
+def test_table_2_shows_both_unseen_tests_beside_always_valid():
+    scores = {"acc": 0.8, "tpr": 0.9, "tnr": 0.7}
+    run = {"scenario": "2ds", "threshold": 0.5,
+           "mlp": {"seen": scores, "unseen": dict(scores, always_valid=0.5),
+                   "unseen_uniform": {"acc": 0.86, "tpr": 0.95, "tnr": 0.4, "always_valid": 0.84}}}
+    table2 = experiments.paper_tables([_with_planning(run)])
+    row = next(line for line in table2 if line.startswith("| 2ds | **80%** / 92%"))
+    assert row == "| 2ds | **80%** / 92% | **90%** / 96% | **70%** / 88% | **86%** / 88% | **95%** / 90% | **40%** / 85% | 84% | **80%** | **90%** | **70%** | 50% |"
+    older = {**run, "mlp": {"seen": scores, "unseen": scores}}  # results.json written before the key existed
+    row = next(line for line in experiments.paper_tables([_with_planning(older)]) if line.startswith("| 2ds | **80%** / 92%"))
+    assert "| n/a | n/a | n/a | n/a | **80%** |" in row
+
+
+def _with_planning(run: dict) -> dict:
+    """A results dict with the keys paper_tables needs besides Table 2's."""
+    summary = {"sampling_s": 1.0, "total_s": 1.0, "success_rate": 1.0, "path_valid_rate": 1.0}
+    return dict(run, cae={"seen_acc": 1.0, "unseen_acc": 0.9, "seen_all_free": 0.8, "unseen_all_free": 0.8},
+                planning={s: {m: summary for m in experiments.MODES} for s in paper_numbers.SAMPLERS},
+                improvement={k: {s: 0.0 for s in paper_numbers.SAMPLERS} for k in ("sampling", "total")})
 
 
 def test_improvement_is_the_papers_table_3_measure():

@@ -1,13 +1,15 @@
 """Training: metrics against hand counts, determinism, evaluation keys, checkpoints and bad checkpoints."""
 
 import json
+from types import SimpleNamespace
 from dataclasses import replace
 
 import numpy as np
 import pytest
 import torch
 
-from toolkit import checkpoints, cli, metrics, presets, training
+from toolkit import checkpoints, cli, data, metrics, presets, scenarios, training
+from toolkit.models import build_predictor
 from toolkit.presets import Preset
 
 TINY = replace(presets.get("strong").quick_version(), cae_epochs=1, mlp_epochs=2)  # enough to tell seeds apart
@@ -16,7 +18,7 @@ TINY = replace(presets.get("strong").quick_version(), cae_epochs=1, mlp_epochs=2
 @pytest.fixture(scope="module")
 def quick_2ds():
     splits = training.preset_splits("2ds", "strong", seed=0, quick=True, progress=False)
-    models = training.train_models("2ds", "strong", splits, seed=0, progress=False, quick=True, device="cpu")
+    models = training.train_models("2ds", "strong", splits, seed=0, progress=False, quick=True, device="cpu", cae=True)
     return splits, models
 
 
@@ -52,8 +54,15 @@ def test_quick_strong_2ds_learns(quick_2ds):
     splits, models = quick_2ds
     scores = training.evaluate(models, splits)
     assert set(scores) == {"cae", "mlp"} and set(scores["cae"]) == {"seen_acc", "unseen_acc", "seen_all_free", "unseen_all_free"}
-    assert set(scores["mlp"]["unseen"]) == {"acc", "tpr", "tnr"}
+    assert set(scores["mlp"]) == {"seen", "unseen", "unseen_uniform"}
+    assert all(set(m) == {"acc", "tpr", "tnr", "always_valid"} for m in scores["mlp"].values())
     assert scores["mlp"]["unseen"]["acc"] > 0.85  # balanced test set: chance is 0.5
+    assert scores["mlp"]["unseen"]["always_valid"] == 0.5
+    # the paper's unseen test: validity-blind samples, mostly valid, scored against their share of valid ones
+    blind = data.validity_blind_split(models.scenario, splits["unseen_test"])
+    assert scores["mlp"]["unseen_uniform"]["always_valid"] == pytest.approx(blind.valid.mean())
+    assert scores["mlp"]["unseen_uniform"]["always_valid"] > 0.7
+    assert training.evaluate(models, dict(splits, unseen_uniform=blind)) == scores  # the same samples when given
     assert models.history["mlp"][-1] < models.history["mlp"][0]
     assert 0.05 <= models.threshold <= 0.95
 
@@ -72,6 +81,23 @@ def test_paper_preset_trains():
     models = training.train_models("3dc7", tiny, splits, progress=False, device="cpu")
     assert models.threshold == 0.5 and np.all(np.isfinite(models.history["cae"] + models.history["mlp"]))
     assert isinstance(models.predictor.mlp.net[0], torch.nn.Linear) and models.predictor.mlp.in_features == 57
+
+
+def test_strong_mlp_does_not_wait_for_a_cae_it_never_asks(quick_2ds):
+    """strong's MLP does not see z: its CAE stays as initialized unless asked for (``cae=True``, ``--cae``)."""
+    splits = quick_2ds[0]
+    fast = training.train_models("2ds", TINY, splits, 0, progress=False, device="cpu")
+    asked = training.train_models("2ds", TINY, splits, 0, progress=False, device="cpu", cae=True)
+    torch.manual_seed(0)
+    initial = build_predictor(scenarios.get("2ds"), TINY.encoding, TINY.mlp_hidden, TINY.dropout, TINY.latent_input)
+    for name, weight in initial.cae.state_dict().items():
+        assert torch.equal(fast.predictor.cae.state_dict()[name], weight)
+    assert not torch.equal(asked.predictor.cae.encoder[0].weight, initial.cae.encoder[0].weight)
+    assert "cae" not in fast.history and len(asked.history["cae"]) >= 1
+    assert training.evaluate(fast, splits)["cae"] == {"trained": False}
+    assert set(training.evaluate(asked, splits)["cae"]) == {"seen_acc", "unseen_acc", "seen_all_free", "unseen_all_free"}
+    paper = replace(presets.get("paper").quick_version(), cae_epochs=1, mlp_epochs=2)
+    assert "cae" in training.train_models("2ds", paper, splits, 0, progress=False, device="cpu").history  # z is used
 
 
 def test_training_split_of_another_scenario(quick_2ds):
@@ -150,6 +176,38 @@ def test_cli_train_writes_a_checkpoint(tmp_path, capsys):
     out = tmp_path / "ckpt"
     assert cli.main(["train", "--scenario", "2ds", "--preset", "paper", "--quick", "--out", str(out)]) == 0
     printed = json.loads(capsys.readouterr().out)
-    assert set(printed["mlp"]) == {"seen", "unseen"}
+    assert set(printed["mlp"]) == {"seen", "unseen", "unseen_uniform"}
     loaded = checkpoints.load_models(out, "2ds")
     assert loaded.preset.name == "paper" and loaded.quick
+
+
+@pytest.mark.parametrize("flags, asked", [([], None), (["--cae"], True)])
+def test_cli_train_trains_the_cae_when_asked(flags, asked, tmp_path, monkeypatch):
+    seen = {}
+
+    class Stop(Exception):
+        pass
+
+    def fake_train(*args, **kwargs):
+        seen.update(kwargs)
+        raise Stop
+
+    monkeypatch.setattr(training, "preset_splits", lambda *args, **kwargs: {})
+    monkeypatch.setattr(training, "train_models", fake_train)
+    with pytest.raises(Stop):
+        cli.main(["train", "--scenario", "2ds", "--preset", "strong", "--out", str(tmp_path / "c")] + flags)
+    assert seen["cae"] is asked  # None: train_models' rule, a CAE only for an MLP that sees z
+
+
+
+@pytest.mark.parametrize("name, lr, batch", [("2ds", 1e-3, 100), ("3dc7", 1e-4, 100), ("3do", 1e-4, 10)])
+def test_strong_cae_follows_the_scenarios_caps(name, lr, batch, monkeypatch):
+    """strong's CAE: AdamW 1e-3 on batches of 100 generated grids where the scenario allows (at 1e-3 the 3DC and
+    3DO CAEs diverge; 3DO's steps are slow)."""
+    seen = {}
+    monkeypatch.setattr(training, "_fit", lambda params, optimizer, rate, epochs, *a, **k: seen.update(
+        lr=rate, batch=max(len(b) for e in epochs for b in e)))
+    s, stand_in = scenarios.get(name), SimpleNamespace(cae=torch.nn.Linear(1, 1))  # the 3DO CAE: 147M parameters
+    training.train_cae(stand_in, torch.zeros(2000, 1), presets.get("strong"), torch.Generator(), False,
+                       s.cae_max_steps, s.cae_max_batch, s.cae_max_lr)
+    assert seen == {"lr": lr, "batch": batch}

@@ -1,9 +1,11 @@
 """The two networks of the paper (§III-A, §IV-B) and the input encoding of the MLP.
 
 - :class:`CAE`: the contractive autoencoder. Linear layers with PReLU, the decoder
-  mirrors the encoder; loss = Eq. (1), reconstruction error plus
-  ``lambda * sum(W_e ** 2)`` over the *encoder's* weights, a penalty that really
-  reaches the gradients (it is computed from the parameters themselves).
+  mirrors the encoder; loss = Eq. (1), reconstruction error (summed or averaged over
+  the cells: :meth:`CAE.loss` argues both readings) plus ``lambda * sum(W_e ** 2)``
+  over the *encoder's* weights, a penalty that really reaches the gradients (it is
+  computed from the parameters themselves; MPNet's code takes them from
+  ``state_dict()``, detached, so there it changes the loss but not the training).
 - :class:`CollisionMLP`: ``[z, q] -> 2`` logits (invalid, valid), hidden blocks of
   Linear -> PReLU -> Dropout(p) (§IV-B2).
 - :class:`~toolkit.encoding.InputEncoding` (in :mod:`toolkit.encoding`): what the MLP
@@ -81,9 +83,28 @@ class CAE(nn.Module):
         """``sum_ij (W^e_ij)^2`` over the encoder's linear weights (biases and PReLU slopes excluded)."""
         return sum((layer.weight ** 2).sum() for layer in self.encoder if isinstance(layer, nn.Linear))
 
-    def loss(self, grids: torch.Tensor, lam: float) -> torch.Tensor:
-        """Eq. (1): mean over workspaces of ``||x - g(f(x))||^2``, plus ``lam * sum (W^e)^2``."""
-        error = ((self(grids) - grids) ** 2).reshape(len(grids), -1).sum(dim=1).mean()
+    def loss(self, grids: torch.Tensor, lam: float, reduction: str = "sum") -> torch.Tensor:
+        """Eq. (1): the reconstruction error of grids ``(W, *grid)`` plus ``lam * sum (W^e)^2``.
+
+        The paper gives the error two ways. Eq. (1) writes ``1/|D| sum_x ||x - g(f(x))||^2``,
+        a squared norm, so a *sum* over the cells averaged over the workspaces
+        (``reduction="sum"``); §IV-B1 says "for loss function, we use mean square error
+        with weight-decay", the *mean* over cells and workspaces (``"mean"``, PyTorch's
+        ``nn.MSELoss()``). The CAEs of MPNet (Qureshi et al.), from which this CAE evidently
+        comes (PReLU layers, lambda = 1e-3, a weight penalty called contractive), use the
+        latter: ``nn.MSELoss()`` plus ``lam * sum W^2``. The two differ by the number of
+        cells (961 in 2DS, 1331 in 3DC): under ``"mean"`` the penalty weighs that much more.
+        With a linear encoder the penalty is the contractive term of Rifai et al. (2011),
+        ``||df/dx||_F^2 = sum W^2``; with PReLU layers it is weight decay of the encoder
+        (the paper: "similar to the loss function of a regularized autoencoder").
+        """
+        squared = (self(grids) - grids) ** 2
+        if reduction == "sum":
+            error = squared.reshape(len(grids), -1).sum(dim=1).mean()
+        elif reduction == "mean":
+            error = squared.mean()
+        else:
+            raise ValueError(f"unknown CAE loss reduction {reduction!r}; choose 'sum' (Eq. (1)) or 'mean' (§IV-B1)")
         return error + lam * self.encoder_weight_penalty()
 
 

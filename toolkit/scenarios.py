@@ -38,6 +38,8 @@ class Scenario:
     plan_resolution: float | None = None  # local planner: no robot point moves farther between checks
     #   (None: half the thinnest link, see toolkit.local_planner.default_resolution)
     cae_max_steps: int | None = None  # caps CAE training where a step is slow (None: the preset's cap)
+    cae_max_batch: int | None = None  # caps the CAE's batch where a step is slow (None: the preset's batch)
+    cae_max_lr: float | None = None  # caps the CAE's learning rate where a higher one diverges (None: the preset's)
 
     def make_workspace(self, rng: np.random.Generator) -> Workspace:
         """A new random workspace of this scenario's family."""
@@ -67,15 +69,18 @@ SCENARIOS: dict[str, Scenario] = {
                  cae_hidden=(5043, 3125, 1600, 800, 400, 200, 100, 50), mlp_hidden=MLP_3D,
                  plan_samples=2000, query_workspaces=10, queries_per_workspace=10,
                  plan_resolution=0.1,  # half the thinnest link (0.03) costs ~15 s a query; blocks are >= 1 thick
-                cae_max_steps=300),  # the CAE has 147M parameters: ~2.3 s a step on 2 cores
+                cae_max_steps=300, cae_max_batch=10,  # 147M parameters: ~2.3 s a step of 10 grids on 2 cores
+                cae_max_lr=1e-4),  # at 1e-3 its CAE diverges
         Scenario("3dc7", "3D clutter, 7-DoF box chain", "3dc", robots.box_chain(1), (11, 11, 11),
                  n_seen=50, n_seen_test=30, n_unseen=10, samples_per_workspace=200,
                  cae_hidden=CAE_3DC, mlp_hidden=MLP_3D,
-                 plan_samples=400, query_workspaces=100, queries_per_workspace=1),
+                 plan_samples=400, query_workspaces=100, queries_per_workspace=1,
+                 cae_max_lr=1e-4),  # 2000 grids at 1e-3: the CAE diverges (docs/fidelity.md)
         Scenario("3dc9", "3D clutter, 9-DoF box chain", "3dc", robots.box_chain(3), (11, 11, 11),
                  n_seen=50, n_seen_test=30, n_unseen=10, samples_per_workspace=200,
                  cae_hidden=CAE_3DC, mlp_hidden=MLP_3D,
-                 plan_samples=400, query_workspaces=100, queries_per_workspace=1),
+                 plan_samples=400, query_workspaces=100, queries_per_workspace=1,
+                 cae_max_lr=1e-4),  # 2000 grids at 1e-3: the CAE diverges (docs/fidelity.md)
     ]
 }
 

@@ -21,7 +21,7 @@ from tqdm.auto import tqdm
 
 from . import data, metrics, presets, scenarios
 from .data import CollisionDataset
-from .models import CollisionPredictor, build_predictor
+from .models import CAE, CollisionPredictor, build_predictor
 from .presets import Preset
 from .scenarios import Scenario
 
@@ -57,14 +57,24 @@ def preset_splits(scenario: Scenario | str, preset: Preset | str, seed: int = 0,
                   progress: bool = True) -> dict[str, CollisionDataset]:
     """The three data splits a preset trains and tests on (quick: few workspaces, see ``presets.QUICK_WORKSPACES``)."""
     scenario, preset = _scenario(scenario), _preset(preset, quick)
-    counts = dict(zip(("n_seen", "n_seen_test", "n_unseen"), presets.QUICK_WORKSPACES)) if preset.quick else {}
+    counts = (dict(zip(("n_seen", "n_seen_test", "n_unseen"), presets.QUICK_WORKSPACES)) if preset.quick
+              else {"n_seen": preset.n_seen} if preset.n_seen else {})
     return data.make_splits(scenario, seed, samples_per_workspace=scenario.samples_per_workspace * preset.samples_factor,
                             progress=progress, **counts)
 
 
 def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[str, CollisionDataset], seed: int = 0,
-                 progress: bool = True, quick: bool = False, device: torch.device | str | None = None) -> TrainedModels:
-    """Fit the CAE on ``splits["train"]``'s grids, then the MLP on its labelled samples; models end on the CPU."""
+                 progress: bool = True, quick: bool = False, device: torch.device | str | None = None,
+                 cae: bool | None = None, trained_cae: CAE | None = None) -> TrainedModels:
+    """Fit the CAE, then the MLP on ``splits["train"]``'s labelled samples; models end on the CPU.
+
+    The CAE trains on the training split's grids, or on ``preset.cae_workspaces`` generated
+    ones. ``cae``: train it (True) or leave it untrained (False); by default only when
+    the MLP sees its ``z`` (``preset.latent_input``), so that the ``strong`` MLP does not
+    wait for a CAE it never asks (``history`` then has no ``"cae"``: Table 1 needs ``cae=True``).
+    ``trained_cae``: a CAE already trained with these settings, copied instead of training one
+    (``history["cae"]`` is then empty).
+    """
     scenario, preset = _scenario(scenario), _preset(preset, quick)
     train = splits["train"]
     if train.scenario != scenario.name:
@@ -73,8 +83,15 @@ def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[st
     torch.manual_seed(seed)
     predictor = build_predictor(scenario, preset.encoding, preset.mlp_hidden, preset.dropout, preset.latent_input).to(device)
     shuffle = torch.Generator().manual_seed(seed)
-    grids = torch.as_tensor(train.occupancy, device=device)
-    history = {"cae": train_cae(predictor, grids, preset, shuffle, progress, max_steps=scenario.cae_max_steps)}
+    history = {}
+    if trained_cae is not None:
+        predictor.cae.load_state_dict(trained_cae.state_dict())
+        history["cae"] = []
+    elif cae if cae is not None else preset.latent_input:
+        grids = (torch.as_tensor(data.occupancy_grids(scenario, "cae_grids", preset.cae_workspaces, seed, progress))
+                 if preset.cae_workspaces else torch.as_tensor(train.occupancy)).to(device)
+        history["cae"] = train_cae(predictor, grids, preset, shuffle, progress, max_steps=scenario.cae_max_steps,
+                                   max_batch=scenario.cae_max_batch, max_lr=scenario.cae_max_lr)
     n_holdout = int(round(preset.holdout * len(train.workspaces))) if len(train.workspaces) > 1 else 0
     fit, holdout = _split_workspaces(train, len(train.workspaces) - n_holdout)
     history["mlp"] = train_mlp(predictor, fit, preset, shuffle, progress)
@@ -84,15 +101,20 @@ def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[st
 
 
 def train_cae(predictor: CollisionPredictor, grids: torch.Tensor, preset: Preset, shuffle: torch.Generator,
-              progress: bool = True, max_steps: int | None = None) -> list[float]:
-    """Fit the CAE to grids ``(W, *grid)`` with Eq. (1), at most ``max_steps`` steps if given; the mean loss of each epoch."""
+              progress: bool = True, max_steps: int | None = None, max_batch: int | None = None,
+              max_lr: float | None = None) -> list[float]:
+    """Fit the CAE to grids ``(W, *grid)`` with Eq. (1) (``preset.cae_loss``), at most ``max_steps`` steps of at most
+    ``max_batch`` grids at a learning rate of at most ``max_lr`` if given; the mean loss of each epoch. Integer grids
+    (int8) become float a batch at a time."""
     cae = predictor.cae.train()
-    steps_per_epoch = math.ceil(len(grids) / preset.cae_batch)
+    batch = min(preset.cae_batch, max_batch or preset.cae_batch)
+    steps_per_epoch = math.ceil(len(grids) / batch)
     max_steps = min(preset.cae_max_steps, max_steps or preset.cae_max_steps)
     epochs = max(1, min(preset.cae_epochs, max_steps // steps_per_epoch))
-    batches = _batches(len(grids), preset.cae_batch, epochs, shuffle)
-    return _fit(cae.parameters(), preset.cae_optimizer, preset.cae_lr, preset, batches, lambda idx: cae.loss(grids[idx], preset.cae_lambda),
-                progress, f"CAE ({preset.name})")
+    batches = _batches(len(grids), batch, epochs, shuffle)
+    # no weight decay or schedule of the optimizer here (those settings are the MLP's): Eq. (1)'s penalty is the CAE's
+    return _fit(cae.parameters(), preset.cae_optimizer, min(preset.cae_lr, max_lr or preset.cae_lr), batches,
+                lambda idx: cae.loss(grids[idx].float(), preset.cae_lambda, preset.cae_loss), progress, f"CAE ({preset.name})")
 
 
 def train_mlp(predictor: CollisionPredictor, dataset: CollisionDataset, preset: Preset, shuffle: torch.Generator,
@@ -104,8 +126,9 @@ def train_mlp(predictor: CollisionPredictor, dataset: CollisionDataset, preset: 
     X = (X - mean) / std
     mlp = predictor.mlp.train()
     batches = _batches(len(X), preset.mlp_batch, preset.mlp_epochs, shuffle)
-    losses = _fit(mlp.parameters(), preset.optimizer, preset.lr, preset, batches,
-                  lambda idx: nn.functional.cross_entropy(mlp(X[idx]), y[idx]), progress, f"MLP ({preset.name})")
+    losses = _fit(mlp.parameters(), preset.optimizer, preset.lr, batches,
+                  lambda idx: nn.functional.cross_entropy(mlp(X[idx]), y[idx]), progress, f"MLP ({preset.name})",
+                  preset.weight_decay, preset.cosine_schedule)
     mlp.eval()
     if preset.standardize:
         mlp.fold_standardization(mean, std)
@@ -130,21 +153,38 @@ def probabilities(predictor: CollisionPredictor, dataset: CollisionDataset) -> n
 
 @torch.no_grad()
 def evaluate(models: TrainedModels, splits: dict[str, CollisionDataset]) -> dict:
-    """Table 1 and Table 2 measures: ``{"cae": {"seen_acc", "unseen_acc", ...}, "mlp": {"seen": {...}, "unseen": {...}}}``.
+    """Table 1 and Table 2 measures: ``{"cae": {"seen_acc", "unseen_acc", ...}, "mlp": {"seen", "unseen", "unseen_uniform"}}``.
 
     ``cae`` also holds ``seen_all_free`` and ``unseen_all_free``, the share of free cells: the
-    reconstruction accuracy of a CAE that ignores its input and answers "all free".
+    reconstruction accuracy of a CAE that ignores its input and answers "all free"; a CAE
+    left untrained (``models.history`` without ``"cae"``) gives ``{"trained": False}``.
+    ``mlp.seen`` and ``mlp.unseen`` score the balanced test samples; ``mlp.unseen_uniform``
+    scores the paper's unseen test, validity-blind samples in the unseen workspaces
+    (``splits["unseen_uniform"]``, or :func:`toolkit.data.validity_blind_split` of the
+    unseen workspaces). Each holds ``acc``, ``tpr``, ``tnr`` and ``always_valid``, the
+    accuracy of answering "valid" on the same samples (their share of valid ones).
     """
     predictor = models.predictor.eval()
-    result: dict = {"cae": {}, "mlp": {}}
+    trained_cae = "cae" in models.history
+    result: dict = {"cae": {} if trained_cae else {"trained": False}, "mlp": {}}
     for key, split in (("seen", "seen_test"), ("unseen", "unseen_test")):
         dataset = splits[split]
         grids = torch.as_tensor(dataset.occupancy, device=predictor.threshold.device)
+        result["mlp"][key] = classification_scores(models, dataset)
+        if not trained_cae:  # left untrained (train_models' cae=False): nothing to measure
+            continue
         result["cae"][f"{key}_acc"] = float(metrics.reconstruction_accuracy(predictor.cae(grids).cpu().numpy(), dataset.occupancy).mean())
         result["cae"][f"{key}_all_free"] = float(np.mean(dataset.occupancy < 0))  # the accuracy of predicting "all free"
-        predicted = probabilities(predictor, dataset) >= models.threshold
-        result["mlp"][key] = metrics.classification(predicted.reshape(-1), dataset.valid.reshape(-1))
+    uniform = splits.get("unseen_uniform") or data.validity_blind_split(models.scenario, splits["unseen_test"])
+    result["mlp"]["unseen_uniform"] = classification_scores(models, uniform)
     return result
+
+
+def classification_scores(models: TrainedModels, dataset: CollisionDataset) -> dict[str, float]:
+    """``{"acc", "tpr", "tnr", "always_valid"}`` of the models' predictions on a dataset's samples."""
+    predicted = probabilities(models.predictor, dataset) >= models.threshold
+    return dict(metrics.classification(predicted.reshape(-1), dataset.valid.reshape(-1)),
+                always_valid=float(np.mean(dataset.valid)))
 
 
 # -- helpers ---------------------------------------------------------------------
@@ -173,18 +213,18 @@ def _batches(n: int, batch: int, epochs: int, shuffle: torch.Generator) -> list[
     return [list(torch.randperm(n, generator=shuffle).split(batch)) for _ in range(epochs)]
 
 
-def _fit(params, optimizer_name: str, lr: float, preset: Preset, epochs: list[list[torch.Tensor]], loss_of,
-         progress: bool, desc: str) -> list[float]:
+def _fit(params, optimizer_name: str, lr: float, epochs: list[list[torch.Tensor]], loss_of, progress: bool, desc: str,
+         weight_decay: float = 0.0, cosine_schedule: bool = False) -> list[float]:
     """Minimize ``loss_of(batch indices)`` over the epochs with the named optimizer; mean loss per epoch."""
     params = list(params)
     if optimizer_name == "adagrad":
-        optimizer = torch.optim.Adagrad(params, lr=lr, weight_decay=preset.weight_decay)
+        optimizer = torch.optim.Adagrad(params, lr=lr, weight_decay=weight_decay)
     elif optimizer_name == "adamw":
-        optimizer = torch.optim.AdamW(params, lr=lr, weight_decay=preset.weight_decay)
+        optimizer = torch.optim.AdamW(params, lr=lr, weight_decay=weight_decay)
     else:
         raise ValueError(f"unknown optimizer {optimizer_name!r}; choose 'adagrad' or 'adamw'")
     total = sum(map(len, epochs))
-    schedule = (lambda step: 0.5 * (1 + math.cos(math.pi * step / total))) if preset.cosine_schedule else (lambda step: 1.0)
+    schedule = (lambda step: 0.5 * (1 + math.cos(math.pi * step / total))) if cosine_schedule else (lambda step: 1.0)
     scheduler = torch.optim.lr_scheduler.LambdaLR(optimizer, schedule)
     history = []
     bar = tqdm(epochs, desc=desc, disable=not progress, leave=False)
