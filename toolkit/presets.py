@@ -1,69 +1,27 @@
-"""Training presets: ``paper`` (§IV-B3, exactly the paper's settings) and ``strong`` (ours, measured).
+"""Training presets: ``paper`` (§IV-B3, exactly the paper's settings) and ``strong`` (ours).
 
-``paper``: the paper's sizes and data counts, Adagrad with learning rate 0.1
-for the MLP, dropout 0.5, lambda = 1e-3, the MLP sees ``[z, q]``. The paper gives
-no epoch counts or batch sizes; ours are stated here. One measured deviation: the
-CAE trained with Adagrad at learning rate 0.1 diverges (2DS: loss 1e22 after 200
-epochs) and at 0.01 collapses to the all-free grid, so the CAE uses AdamW at 1e-4
-(at 1e-3 the 3DO CAE diverges), for up to 1500 steps of 10 grids: 2DS and 3DC then
-reconstruct their training workspaces almost exactly (97 %, 99.7 %). The 3DO CAE stops at 300 steps
-(``Scenario.cae_max_steps``: 147M parameters, about 2.3 s a step on 2 cores).
-Planning with it is the paper's Algorithm 1: predicted samples, exactly checked edges, rounds of |S|;
-and so is planning without it (Table 3's "without" is the paper's baseline,
-``toolkit.prm.PAPER_BASELINE``).
+``paper``: the paper's sizes and data counts; the MLP sees ``[z, q]`` and trains with
+Adagrad at learning rate 0.1 and dropout 0.5; the CAE has lambda = 1e-3 and Eq. (1)'s
+loss summed over the cells (``cae_loss="sum"``; :meth:`~toolkit.models.CAE.loss` sets
+out the other reading, §IV-B1's "mean square error"). Where the paper is silent (epochs,
+batch sizes, initialization, input scaling, threshold) the settings below say what we
+chose. One deviation: the CAE trains with AdamW at 1e-4, because with Adagrad at the
+paper's rate it diverges or collapses to the all-free grid. Planning with and without
+the model is the paper's Algorithm 1 (``toolkit.prm.PAPER_BASELINE``).
 
-Settings the paper leaves unstated, and ours: MLP 200 epochs of batch 100; CAE as
-above; He initialization (:class:`~toolkit.models.CAE`); inputs unscaled (``z`` and
-``q`` as they come); threshold 0.5. They were set by hand, not yet chosen by
-validation on held-out training workspaces (``docs/fidelity.md`` says what that
-would take). The CAE loss: Eq. (1)'s squared norm summed over the cells
-(``cae_loss="sum"``), not §IV-B1's "mean square error" (``"mean"``,
-:meth:`~toolkit.models.CAE.loss` sets out both readings): Eq. (1) is the paper's
-one formula, and measured on 2DS (30 grids) the two readings memorize alike (unseen
-reconstruction 86.8 % / 88.0 %, all free 87.6 %; ``toolkit ablate``, rows 0 and 1).
+``strong``: what it takes to make the idea work. Its CAE trains on thousands of
+generated grids (``cae_workspaces``) so it stops memorizing; its MLP sees
+``[patch, pose]`` (:mod:`toolkit.encoding`): the occupancy around the robot and where
+each link box is, by forward kinematics, instead of only ``z``, which once the MLP sees
+the patch adds nothing, so ``toolkit train`` leaves its CAE untrained unless asked
+(``--cae``). A small MLP (the learned checker must stay much faster than the exact
+one), 20x the labelled samples, AdamW with a cosine schedule, standardized inputs and
+a threshold calibrated on held-out training workspaces. Planning screens edges by
+prediction too (a lazy PRM, the paper's future work) and compares against the best
+exact planner, with the same laziness and rounds: only the checker differs.
 
-``strong``: its CAE trains on 2000 generated grids (``cae_workspaces``; AdamW 1e-3,
-batch 100, 2500 steps, Eq. (1)'s sum): it no longer memorizes (2DS unseen
-reconstruction 93.3 %, all free 87.6 %; with the mean reading 92.7 %). 3DC and 3DO
-cap its learning rate at 1e-4 (``Scenario.cae_max_lr``: the 3DC CAE diverges at 1e-3;
-at 1e-4 it matches "all free", 91.2 %). The MLP sees ``[patch, pose]`` (see
-:mod:`toolkit.encoding`): the occupancy around the robot's base cell, the base's
-position in its cell, sin/cos of its angles, its scaled joints and, from forward
-kinematics, where each link box is. Each choice, measured on unseen workspaces
-(seed 0, one thread; acc/TPR/TNR in %; README has the full table):
-
-- link features: 3DC-9 83.1 -> 93.5 with the same 128-64 MLP (measured with a
-  prototype of them: link frame origins and x axes). The network no longer has to
-  learn the kinematics of a 9-DoF chain from sin/cos; it compares link boxes with
-  occupied cells.
-- MLP 64-32 without dropout: 3DC-9 93.7 (128-32: 93.6, 64-64-32: 93.5, 32-32:
-  92.7; the old 256-256-128 without link features: 82.0). Small, because the
-  learned checker must be much faster than the exact one: the patch's share of the
-  first layer is a per-workspace table (:class:`~toolkit.models.WorkspaceMargin`),
-  so a prediction costs a gather, the pose's product and two small layers.
-- 20x the paper's labelled samples, 10 epochs, AdamW at 3e-3 with weight decay 1e-4 and a
-  cosine schedule, batch 256, inputs standardized (folded into the first layer),
-  threshold calibrated on 10 % held-out training workspaces. 20 epochs: 3DC-9 94.0
-  instead of 93.7, for twice the MLP's training time.
-- planning with it screens edges by prediction too (``screen_edges``, the paper's
-  future work; see :mod:`toolkit.prm`): only the candidate path's edges are checked
-  exactly; and sampling rounds after the first sample with prediction confirmed by
-  the exact checker, every fourth of them exactly (``auxiliary="confirmed"``,
-  ``exact_every=4``; the paper preset samples every later round exactly: with its
-  near-chance networks, confirmed rounds yield few samples). Every fourth rather than
-  every second: 100 queries, sampling with / without prediction (means), BT 3DO
-  0.31-0.34 -> 0.16-0.17, 3DC-9 0.32 -> 0.26, OB 3DC-9 0.22 -> 0.14, with about as
-  many rounds (3DO BT 203 -> 205, 3DC-9 OB 138 -> 136) and every query solved; 3DC-7
-  queries rarely need a third round (no change).
-- planning without the model is the best exact planner (``toolkit.prm``: lazy edges,
-  rounds that double from a small first one), with the same laziness and rounds as
-  with it: only the checker differs, so the with / without ratios measure prediction,
-  not laziness.
-- no ``z``: once the MLP sees the patch, the CAE's latent adds nothing (unseen
-  accuracy with / without ``z``: 2DS 99.5 / 99.7, 3DC-7 95.1 / 95.5), and the CAE
-  reconstructs unseen workspaces no better than "all free" (3DC: 89.7 vs 91.2), so
-  ``z`` of an unseen workspace is noise to the MLP. So ``toolkit train`` leaves its
-  CAE untrained unless asked (``--cae``); ``toolkit reproduce`` trains it, for Table 1.
+Why each choice, measured one change at a time: ``docs/design.md`` ("The presets") and
+``docs/fidelity.md`` (``toolkit ablate``).
 """
 
 from __future__ import annotations
