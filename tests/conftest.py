@@ -44,3 +44,11 @@ def checkpoint_2ds(tmp_path_factory):
 def notebook_cache(tmp_path_factory):
     """Trained models shared by the notebooks of one test session (``TOOLKIT_CACHE``), not the user's cache."""
     return tmp_path_factory.mktemp("notebook-cache")
+
+
+@pytest.fixture
+def quick_notebooks(monkeypatch, notebook_cache):
+    """Notebooks run as the test suite runs them: quick mode, the session's model cache, inline figures."""
+    monkeypatch.setenv("TOOLKIT_QUICK", "1")
+    monkeypatch.setenv("TOOLKIT_CACHE", str(notebook_cache))
+    monkeypatch.setenv("MPLBACKEND", "module://matplotlib_inline.backend_inline")

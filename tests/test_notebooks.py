@@ -35,10 +35,7 @@ def test_committed_without_outputs(path):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
-def test_runs_in_quick_mode(path, monkeypatch, notebook_cache):
-    monkeypatch.setenv("TOOLKIT_QUICK", "1")
-    monkeypatch.setenv("TOOLKIT_CACHE", str(notebook_cache))
-    monkeypatch.setenv("MPLBACKEND", "module://matplotlib_inline.backend_inline")
+def test_runs_in_quick_mode(path, quick_notebooks):
     run = run_notebook(path, timeout=600)
     assert run.problem() is None, f"{path.name}: {run.problem()}"
     assert run.figures >= 1, f"{path.name} showed no figure"

@@ -30,10 +30,7 @@ def test_the_six_tutorials_exist_and_the_readme_lists_each_with_a_time():
 
 @pytest.mark.slow
 @pytest.mark.parametrize("path", TUTORIALS, ids=lambda p: p.stem)
-def test_runs_in_quick_mode(path, monkeypatch, notebook_cache):
-    monkeypatch.setenv("TOOLKIT_QUICK", "1")
-    monkeypatch.setenv("TOOLKIT_CACHE", str(notebook_cache))
-    monkeypatch.setenv("MPLBACKEND", "module://matplotlib_inline.backend_inline")
+def test_runs_in_quick_mode(path, quick_notebooks):
     run = run_notebook(path)
     assert run.problem() is None, f"{path.name}: {run.problem()}"
     assert run.figures >= 2, f"{path.name} showed {run.figures} figures"
