@@ -102,6 +102,13 @@ def test_table_2_shows_both_unseen_tests_beside_always_valid():
     assert "| n/a | n/a | n/a | n/a | **80%** |" in row
 
 
+def test_table_1_says_when_the_cae_was_not_trained():
+    run = _with_planning({"scenario": "2ds", "threshold": 0.5, "mlp": {"seen": {"acc": 1, "tpr": 1, "tnr": 1},
+                                                                       "unseen": {"acc": 1, "tpr": 1, "tnr": 1}}})
+    tables = experiments.paper_tables([dict(run, cae={"trained": False})])  # a checkpoint from toolkit train, no --cae
+    assert "| 2ds | not trained | not trained | n/a |" in tables
+
+
 def _with_planning(run: dict) -> dict:
     """A results dict with the keys paper_tables needs besides Table 2's."""
     summary = {"sampling_s": 1.0, "total_s": 1.0, "success_rate": 1.0, "path_valid_rate": 1.0}

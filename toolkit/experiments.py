@@ -316,7 +316,9 @@ def paper_tables(runs: list[dict]) -> list[str]:
     """Tables 1-3 of the paper and the times behind Table 3, one row per run (``results.json`` dicts),
     our value next to the published one (``ours / paper``) in every cell."""
     table1 = [[r["scenario"]] + [_ours_paper(r["cae"][k], paper_numbers.CAE[r["scenario"]][k]) for k in ("seen_acc", "unseen_acc")]
-              + [f"{_pct(r['cae']['seen_all_free'])} / {_pct(r['cae']['unseen_all_free'])}"] for r in runs]
+              + [f"{_pct(r['cae']['seen_all_free'])} / {_pct(r['cae']['unseen_all_free'])}"]
+              if "seen_acc" in r["cae"] else  # a checkpoint whose CAE was left untrained (toolkit train without --cae)
+              [r["scenario"], "not trained", "not trained", "n/a"] for r in runs]
     table2 = [[r["scenario"]] + [_ours_paper(r["mlp"][s][m], paper_numbers.MLP[r["scenario"]][p][m])
                                  for s, p in (("seen", "seen"), ("unseen_uniform", "unseen")) for m in ("acc", "tpr", "tnr")]
               + [_pct(r["mlp"]["unseen_uniform"]["always_valid"])]
