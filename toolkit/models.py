@@ -109,10 +109,16 @@ class CAE(nn.Module):
 
 
 class CollisionMLP(nn.Module):
-    """Validity classifier (§III-A2, §IV-B2): Linear -> PReLU -> Dropout(p) blocks, then 2 logits (no Dropout when p = 0)."""
+    """Validity classifier (§III-A2, §IV-B2): Linear -> PReLU -> Dropout(p) blocks, then 2 logits (no Dropout when p = 0).
 
-    def __init__(self, in_features: int, hidden: tuple[int, ...], dropout: float):
+    ``init``: the paper names no initialization; "torch" keeps PyTorch's default for ``nn.Linear``, "he" uses
+    He initialization for PReLU like the CAE (:func:`he_init`). ``toolkit tune`` chooses between them.
+    """
+
+    def __init__(self, in_features: int, hidden: tuple[int, ...], dropout: float, init: str = "torch"):
         super().__init__()
+        if init not in ("torch", "he"):
+            raise ValueError(f"unknown MLP initialization {init!r}; choose 'torch' or 'he'")
         if not 0.0 <= dropout < 1.0:
             raise ValueError(f"dropout must lie in [0, 1), got {dropout}")
         if not hidden:
@@ -122,6 +128,8 @@ class CollisionMLP(nn.Module):
             layers += [nn.Linear(a, b), nn.PReLU()] + ([nn.Dropout(dropout)] if dropout > 0 else [])
         layers.append(nn.Linear(hidden[-1], 2))
         self.net = nn.Sequential(*layers)
+        if init == "he":
+            he_init(self)
         self.in_features, self.hidden, self.dropout = int(in_features), tuple(hidden), float(dropout)
 
     def forward(self, x: torch.Tensor) -> torch.Tensor:
@@ -246,11 +254,11 @@ def _prelu_(h: np.ndarray, slope: float) -> None:
 
 
 def build_predictor(scenario: Scenario, encoding: str, mlp_hidden: tuple[int, ...] | None = None,
-                    dropout: float = 0.5, latent_input: bool = True) -> CollisionPredictor:
+                    dropout: float = 0.5, latent_input: bool = True, mlp_init: str = "torch") -> CollisionPredictor:
     """Untrained networks of the paper's sizes for ``scenario`` (``mlp_hidden`` may override the MLP's;
-    ``latent_input=False``: the MLP does not see ``z``)."""
+    ``latent_input=False``: the MLP does not see ``z``; ``mlp_init``: see :class:`CollisionMLP`)."""
     cae = CAE((scenario.grid_size,) + tuple(scenario.cae_hidden))
     radius = reach_cells(scenario.robot) if encoding == "local" else 0
     enc = InputEncoding(scenario.robot, scenario.grid_shape, cae.latent_dim if latent_input else 0, encoding, radius)
-    mlp = CollisionMLP(enc.out_features, tuple(mlp_hidden or scenario.mlp_hidden), dropout)
+    mlp = CollisionMLP(enc.out_features, tuple(mlp_hidden or scenario.mlp_hidden), dropout, mlp_init)
     return CollisionPredictor(cae, enc, mlp)

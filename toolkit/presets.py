@@ -49,6 +49,7 @@ class Preset:
     mlp_epochs: int
     mlp_batch: int
     mlp_hidden: tuple[int, ...] | None = None  # None: the paper's widths for the scenario
+    mlp_init: str = "torch"  # the MLP's initial weights: PyTorch's default or "he" (see models.CollisionMLP)
     cae_loss: str = "sum"  # reconstruction error over the cells: "sum" (Eq. (1)) or "mean" (§IV-B1's MSE); see CAE.loss
     cae_workspaces: int = 0  # the CAE trains on this many generated grids (0: the training split's, the paper)
     n_seen: int | None = None  # training workspaces (None: the paper's, Scenario.n_seen)

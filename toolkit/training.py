@@ -81,7 +81,8 @@ def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[st
         raise ValueError(f"the training split holds {train.scenario!r} data, not {scenario.name!r}")
     device = torch.device(device) if device is not None else default_device()
     torch.manual_seed(seed)
-    predictor = build_predictor(scenario, preset.encoding, preset.mlp_hidden, preset.dropout, preset.latent_input).to(device)
+    predictor = build_predictor(scenario, preset.encoding, preset.mlp_hidden, preset.dropout, preset.latent_input,
+                                preset.mlp_init).to(device)
     shuffle = torch.Generator().manual_seed(seed)
     history = {}
     if trained_cae is not None:
@@ -93,7 +94,7 @@ def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[st
         history["cae"] = train_cae(predictor, grids, preset, shuffle, progress, max_steps=scenario.cae_max_steps,
                                    max_batch=scenario.cae_max_batch, max_lr=scenario.cae_max_lr)
     n_holdout = int(round(preset.holdout * len(train.workspaces))) if len(train.workspaces) > 1 else 0
-    fit, holdout = _split_workspaces(train, len(train.workspaces) - n_holdout)
+    fit, holdout = split_workspaces(train, len(train.workspaces) - n_holdout)
     history["mlp"] = train_mlp(predictor, fit, preset, shuffle, progress)
     if n_holdout:
         predictor.threshold.fill_(calibrate_threshold(predictor, holdout))
@@ -199,7 +200,7 @@ def _inputs(predictor: CollisionPredictor, dataset: CollisionDataset) -> torch.T
                                   torch.as_tensor(Q, dtype=torch.float32, device=device))
 
 
-def _split_workspaces(dataset: CollisionDataset, n_first: int) -> tuple[CollisionDataset, CollisionDataset]:
+def split_workspaces(dataset: CollisionDataset, n_first: int) -> tuple[CollisionDataset, CollisionDataset]:
     """The first ``n_first`` workspaces and the rest, as two datasets."""
     parts = []
     for part in (slice(0, n_first), slice(n_first, None)):

@@ -1,0 +1,148 @@
+"""Choosing the paper's unstated settings by validation on held-out training workspaces.
+
+§IV-B3 gives the networks' sizes, the MLP's optimizer, learning rate and dropout, and
+the CAE's lambda, but not how long either network trains, the MLP's batch, its
+initialization, or whether its inputs are scaled. Choosing those by their score on
+Table 2's unseen workspaces would fit the test; ``tune(scenario, out)`` chooses them
+as a careful reproduction must, on workspaces the models do not train on but that come
+from the training set:
+
+1. the ``paper`` preset's training workspaces are split: the first 80 % fit the
+   networks, the last 20 % (``VALIDATION_SHARE``) validate them;
+2. the CAE is trained once for each number of epochs in ``CAE_EPOCHS`` on the fitting
+   workspaces' grids and scored by its reconstruction of the validation grids; the best
+   is kept (ties: fewer epochs);
+3. the MLP is trained on the fitting workspaces' samples, with that CAE, once for each
+   combination of ``MLP_GRID`` and scored by its accuracy on the validation workspaces'
+   samples (balanced, like its training data); the best is chosen (ties: the first in
+   grid order, the cheaper one).
+
+The unseen workspaces are never generated. ``toolkit/presets.py`` states what this chose;
+``docs/fidelity.md`` (§5) shows the table. Like :func:`toolkit.ablation.ablate`, every
+trained row is cached in ``out/cache``, so an interrupted run resumes.
+"""
+
+from __future__ import annotations
+
+import itertools
+import time
+from dataclasses import replace
+from pathlib import Path
+
+import numpy as np
+import torch
+
+from . import data, metrics, outputs, presets, scenarios, training
+from .experiments import Stages
+from .models import build_predictor
+
+VALIDATION_SHARE = 0.2
+CAE_EPOCHS = (100, 500, 1000)
+MLP_GRID: dict[str, tuple] = {
+    "mlp_epochs": (50, 200, 500),
+    "mlp_batch": (32, 100),
+    "standardize": (False, True),
+    "mlp_init": ("torch", "he"),
+}
+
+
+def tune(scenario_name: str, out: str | Path, seed: int = 0, quick: bool = False, progress: bool = True) -> dict:
+    """Validate the ``paper`` preset's unstated settings for one scenario; writes ``tuning.json`` and ``tuning.md``."""
+    scenario = scenarios.get(scenario_name)
+    out = Path(out)
+    stages = Stages(out, {"tuning": scenario.name, "quick": bool(quick), "seed": int(seed)}, progress)
+    paper = presets.get("paper")
+    n_seen = presets.QUICK_WORKSPACES[0] if quick else scenario.n_seen
+    seen = data.workspaces(scenario, "seen", n_seen, seed)
+    train = data.label_workspaces(scenario, seen, scenario.samples_per_workspace, seed, "train_samples", progress,
+                                  "train samples")  # the paper preset's training split (data.make_splits)
+    n_fit = n_seen - max(1, int(round(VALIDATION_SHARE * n_seen)))
+    fit, validation = training.split_workspaces(train, n_fit)
+    scale = 10 if quick else 1  # quick: a tenth of the epochs, for tests
+
+    cae_rows = []
+    for epochs in CAE_EPOCHS:
+        preset = replace(paper, name=f"tuning:cae{epochs}", cae_epochs=epochs // scale,
+                         cae_max_steps=10**9)  # the epochs decide here, not the step cap
+        cae_file = stages.cache / f"cae_{epochs}.pt"
+        cae_rows.append(dict(stages.json(f"cae_{epochs}", lambda: _cae_row(scenario, preset, fit, validation, cae_file,
+                                                                            seed, progress)), cae_epochs=epochs))
+    best_cae = max(cae_rows, key=lambda r: r["validation_acc"])  # max keeps the first of equals: fewer epochs
+    cae_file = stages.cache / f"cae_{best_cae['cae_epochs']}.pt"
+
+    mlp_rows = []
+    for values in itertools.product(*MLP_GRID.values()):
+        settings = dict(zip(MLP_GRID, values))
+        key = "mlp_" + "_".join(str(v) for v in values)
+        preset = replace(paper, name=f"tuning:{key}", **dict(settings, mlp_epochs=max(2, settings["mlp_epochs"] // scale)))
+        mlp_rows.append(dict(stages.json(f"{key}_cae{best_cae['cae_epochs']}",
+                                         lambda: _mlp_row(scenario, preset, fit, validation, cae_file, seed, progress)),
+                             **settings))
+    best_mlp = max(mlp_rows, key=lambda r: r["validation_acc"])
+    result = {"scenario": scenario.name, "seed": seed, "quick": quick, "fit_workspaces": n_fit,
+              "validation_workspaces": n_seen - n_fit, "validation_samples": int(validation.valid.size),
+              "cae": cae_rows, "mlp": mlp_rows,
+              "chosen": {"cae_epochs": best_cae["cae_epochs"], **{k: best_mlp[k] for k in MLP_GRID}}}
+    outputs.write_json(out / "tuning.json", result)
+    (out / "tuning.md").write_text(markdown(result))
+    return result
+
+
+def _cae_row(scenario, preset: presets.Preset, fit: data.CollisionDataset, validation: data.CollisionDataset,
+             cae_file: Path, seed: int, progress: bool) -> dict:
+    """Train the paper's CAE on the fitting grids, kept in ``cae_file``; its reconstruction accuracy on them and on
+    the validation grids."""
+    torch.manual_seed(seed)
+    predictor = build_predictor(scenario, "raw")
+    began = time.perf_counter()
+    training.train_cae(predictor, torch.as_tensor(fit.occupancy), preset, torch.Generator().manual_seed(seed), progress)
+    seconds = time.perf_counter() - began
+    torch.save(predictor.cae.state_dict(), cae_file)
+    with torch.no_grad():
+        acc = {name: float(metrics.reconstruction_accuracy(predictor.cae(torch.as_tensor(d.occupancy)).numpy(),
+                                                           d.occupancy).mean())
+               for name, d in (("fit", fit), ("validation", validation))}
+    return {"fit_acc": acc["fit"], "validation_acc": acc["validation"],
+            "validation_all_free": float(np.mean(validation.occupancy < 0)), "train_seconds": seconds}
+
+
+def _mlp_row(scenario, preset: presets.Preset, fit: data.CollisionDataset, validation: data.CollisionDataset,
+             cae_file: Path, seed: int, progress: bool) -> dict:
+    """Train the paper's MLP on the fitting samples with the chosen CAE; its accuracy on the validation samples."""
+    cae = build_predictor(scenario, "raw").cae
+    cae.load_state_dict(torch.load(cae_file, weights_only=True))
+    began = time.perf_counter()
+    models = training.train_models(scenario, preset, {"train": fit}, seed, progress=progress, device="cpu",
+                                   trained_cae=cae)
+    seconds = time.perf_counter() - began
+    scores = {name: training.classification_scores(models, d) for name, d in (("fit", fit), ("validation", validation))}
+    return {"fit_acc": scores["fit"]["acc"], "validation_acc": scores["validation"]["acc"],
+            "validation_tpr": scores["validation"]["tpr"], "validation_tnr": scores["validation"]["tnr"],
+            "train_seconds": seconds}
+
+
+def markdown(result: dict) -> str:
+    """The two validation tables, the chosen rows marked, and the paper preset's current values beside them."""
+    pct = lambda x: f"{100 * x:.1f}"
+    chosen, paper = result["chosen"], presets.get("paper")
+    n, se = result["validation_samples"], lambda acc: 100 * np.sqrt(acc * (1 - acc) / result["validation_samples"])
+    lines = [f"## Tuning the paper preset's unstated settings, {result['scenario']}", "",
+             f"Fitted on {result['fit_workspaces']} training workspaces, validated on the other "
+             f"{result['validation_workspaces']} ({n} balanced samples); the unseen workspaces are never used.", "",
+             "| CAE epochs | fit rec. | validation rec. (all free) | train s |", "| --- | --- | --- | --- |"]
+    for r in result["cae"]:
+        mark = " **chosen**" if r["cae_epochs"] == chosen["cae_epochs"] else ""
+        lines.append(f"| {r['cae_epochs']}{mark} | {pct(r['fit_acc'])} | {pct(r['validation_acc'])} "
+                     f"({pct(r['validation_all_free'])}) | {r['train_seconds']:.0f} |")
+    best = max(r["validation_acc"] for r in result["mlp"])
+    lines += ["", f"MLP with the chosen CAE; a validation accuracy has a standard error of about {se(best):.1f} "
+              "points here.", "", "| epochs | batch | standardized | init | fit acc | validation acc / TPR / TNR | train s |",
+              "| --- | --- | --- | --- | --- | --- | --- |"]
+    for r in result["mlp"]:
+        mark = " **chosen**" if all(r[k] == chosen[k] for k in MLP_GRID) else ""
+        lines.append(f"| {r['mlp_epochs']}{mark} | {r['mlp_batch']} | {'yes' if r['standardize'] else 'no'} "
+                     f"| {r['mlp_init']} | {pct(r['fit_acc'])} | {pct(r['validation_acc'])} / "
+                     f"{pct(r['validation_tpr'])} / {pct(r['validation_tnr'])} | {r['train_seconds']:.0f} |")
+    current = {"cae_epochs": paper.cae_epochs, **{k: getattr(paper, k) for k in MLP_GRID}}
+    lines += ["", f"Chosen: {chosen}.", f"The `paper` preset has: {current}."]
+    return "\n".join(lines) + "\n"
