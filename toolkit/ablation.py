@@ -10,7 +10,8 @@ that change nothing in the CAE reuse the CAE of the row above (its seconds are
 counted once, in the row that trained it).
 
 Like :func:`toolkit.experiments.reproduce`, each row is cached in ``out/cache`` as it
-finishes, so an interrupted run resumes; ``out/ablation.json`` and
+finishes, under its preset's fingerprint, so an interrupted run resumes and a changed
+recipe is trained again; ``out/ablation.json`` and
 ``out/ablation.md`` hold the table. ``docs/fidelity.md`` reads it.
 """
 
@@ -72,7 +73,7 @@ def ablate(scenario_name: str, out: str | Path, seed: int = 0, quick: bool = Fal
     caes: dict[tuple, CAE] = {}
     rows = []
     for key, what, preset in step_presets(quick):
-        rows.append(dict(stages.json(key, lambda: _row(stages, scenario, preset, tests, caes, seed, progress)),
+        rows.append(dict(stages.json(f"{key}_{preset.fingerprint()}", lambda: _row(stages, scenario, preset, tests, caes, seed, progress)),
                          key=key, change=what))
     outputs.write_json(out / "ablation.json", {"scenario": scenario.name, "seed": seed, "quick": quick, "rows": rows})
     (out / "ablation.md").write_text(markdown(scenario.name, rows))

@@ -17,7 +17,6 @@ instead of loading a model made by the old one.
 
 from __future__ import annotations
 
-import hashlib
 import os
 import shutil
 import uuid
@@ -54,7 +53,7 @@ def trained_models(scenario: str, preset: str, *, seed: int = 0, progress: bool 
     minute; 3DC: about two minutes on two cores) and saves a checkpoint folder in
     :func:`cache_dir`; later calls, in any notebook, load it in about a second.
     """
-    fingerprint = hashlib.sha256(repr(presets.get(preset)).encode()).hexdigest()[:8]  # the recipe's settings
+    fingerprint = presets.get(preset).fingerprint()  # the recipe's settings
     folder = cache_dir() / f"{scenario}-{preset}-seed{seed}-{fingerprint}{'-quick' if is_quick() else ''}"
     if folder.exists():
         return checkpoints.load_models(folder, scenario)

@@ -26,6 +26,7 @@ Why each choice, measured one change at a time: ``docs/design.md`` ("The presets
 
 from __future__ import annotations
 
+import hashlib
 from dataclasses import dataclass, replace
 
 from .prm import PAPER_BASELINE
@@ -69,6 +70,10 @@ class Preset:
         """The :class:`~toolkit.prm.PRMOptions` that planning with this model uses."""
         options = {"screen_edges": self.screen_edges, "auxiliary": self.auxiliary, "exact_every": self.exact_every}
         return {**options, **(PAPER_BASELINE if self.paper_baseline else {})}
+
+    def fingerprint(self) -> str:
+        """8 hex digits that change with any setting: a cache keyed by it never serves a changed recipe."""
+        return hashlib.sha256(repr(self).encode()).hexdigest()[:8]
 
     def quick_version(self) -> "Preset":
         """The same recipe with few epochs and samples: a whole scenario in seconds (tests, ``--quick``)."""

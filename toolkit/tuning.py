@@ -19,7 +19,8 @@ from the training set:
 
 The unseen workspaces are never generated. ``toolkit/presets.py`` states what this chose;
 ``docs/fidelity.md`` (§5) shows the table. Like :func:`toolkit.ablation.ablate`, every
-trained row is cached in ``out/cache``, so an interrupted run resumes.
+trained row is cached in ``out/cache`` under its preset's fingerprint, so an interrupted
+run resumes and a changed recipe is trained again.
 """
 
 from __future__ import annotations
@@ -60,22 +61,23 @@ def tune(scenario_name: str, out: str | Path, seed: int = 0, quick: bool = False
     fit, validation = training.split_workspaces(train, n_fit)
     scale = 10 if quick else 1  # quick: a tenth of the epochs, for tests
 
-    cae_rows = []
+    cae_rows, cae_files = [], {}
     for epochs in CAE_EPOCHS:
         preset = replace(paper, name=f"tuning:cae{epochs}", cae_epochs=epochs // scale,
                          cae_max_steps=10**9)  # the epochs decide here, not the step cap
-        cae_file = stages.cache / f"cae_{epochs}.pt"
-        cae_rows.append(dict(stages.json(f"cae_{epochs}", lambda: _cae_row(scenario, preset, fit, validation, cae_file,
-                                                                            seed, progress)), cae_epochs=epochs))
+        name = f"cae_{epochs}_{preset.fingerprint()}"
+        cae_files[epochs] = stages.cache / f"{name}.pt"
+        cae_rows.append(dict(stages.json(name, lambda: _cae_row(scenario, preset, fit, validation, cae_files[epochs],
+                                                                seed, progress)), cae_epochs=epochs))
     best_cae = max(cae_rows, key=lambda r: r["validation_acc"])  # max keeps the first of equals: fewer epochs
-    cae_file = stages.cache / f"cae_{best_cae['cae_epochs']}.pt"
+    cae_file = cae_files[best_cae["cae_epochs"]]
 
     mlp_rows = []
     for values in itertools.product(*MLP_GRID.values()):
         settings = dict(zip(MLP_GRID, values))
         key = "mlp_" + "_".join(str(v) for v in values)
         preset = replace(paper, name=f"tuning:{key}", **dict(settings, mlp_epochs=max(2, settings["mlp_epochs"] // scale)))
-        mlp_rows.append(dict(stages.json(f"{key}_cae{best_cae['cae_epochs']}",
+        mlp_rows.append(dict(stages.json(f"{key}_{preset.fingerprint()}_{cae_file.stem}",
                                          lambda: _mlp_row(scenario, preset, fit, validation, cae_file, seed, progress)),
                              **settings))
     best_mlp = max(mlp_rows, key=lambda r: r["validation_acc"])
