@@ -2,6 +2,7 @@
 
 import numpy as np
 import pytest
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.colors import to_rgba
 
 from toolkit import scenarios
@@ -108,6 +109,21 @@ def test_only_the_given_series_get_panels(crossing):
     robot, workspace, _, path, _ = crossing
     assert len(scenes.path_frame(robot, path, 0, workspace=workspace).axes) == 2
     assert len(scenes.path_frame(robot, path, 0, probability=np.ones(FRAMES)).axes) == 3
+
+
+@pytest.mark.parametrize("series", [{}, {"clearance": np.ones(FRAMES), "probability": np.ones(FRAMES)}])
+def test_the_dof_legend_lies_inside_the_figure_below_the_title(crossing, series):
+    robot, workspace, _, path, _ = crossing
+    fig = scenes.path_frame(robot, path, 0, **series)
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    title = fig._suptitle.get_window_extent(renderer)  # the Text of fig.suptitle (matplotlib keeps no public handle)
+    legend = fig.legends[0].get_window_extent(renderer)
+    figure = fig.bbox
+    assert figure.x0 <= legend.x0 and legend.x1 <= figure.x1 and figure.y0 <= legend.y0 and legend.y1 <= figure.y1
+    assert legend.y1 <= title.y0  # below the title, not over it
+    panels_top = max(ax.get_window_extent(renderer).y1 for ax in fig.axes[1:])
+    assert panels_top <= legend.y0 + 1  # and above the panels
+    assert [t.get_text() for t in fig.legends[0].get_texts()] == list(robot.dof_names)
 
 
 def test_bad_input(crossing):

@@ -47,7 +47,7 @@ def path_frame(robot: BoxRobot, configurations, index: int, *, workspace: Worksp
     along = np.linspace(0.0, 1.0, frames)  # (T,)
 
     fig = Figure(figsize=(11, 4.8))
-    left, right = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.3)
+    left, right = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.3, top=0.8)  # room for title and legend
     scene = fig.add_subplot(left, projection="3d")
     color = UNCHECKED_COLOR if series["valid"] is None else VALID_COLOR if series["valid"][index] else INVALID_COLOR
     _draw_robot(scene, robot, Q[index : index + 1], [color], "3d", workspace, margin)
@@ -65,8 +65,8 @@ def path_frame(robot: BoxRobot, configurations, index: int, *, workspace: Worksp
                 ax.plot(along, scaled[:, k], linewidth=1.2, label=name, gid="dof")
             ax.set_ylim(-0.05, 1.05)
             ax.set_ylabel("DoF in bounds")
-            ax.legend(fontsize=6, ncol=min(robot.dof, 5), loc="upper center", bbox_to_anchor=(0.5, 1.32),
-                      frameon=False, handlelength=1.2)
+            fig.legend(*ax.get_legend_handles_labels(), fontsize=6, ncol=min(robot.dof, 5), loc="upper center",
+                       bbox_to_anchor=(0.73, 0.93), frameon=False, handlelength=1.2)  # between the title and the panels
         elif panel == "clearance":
             ax.plot(along, series["clearance"], color="k", linewidth=1.2, gid="clearance")
             ax.fill_between(along, 0.0, series["clearance"], color="0.85")
