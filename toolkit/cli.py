@@ -245,6 +245,11 @@ def _reproduce_kept(args: argparse.Namespace) -> str:
             if any(kept.values()) else "nothing was finished; run the same command again to start over")
 
 
+def _rows_kept(args: argparse.Namespace) -> str:
+    """What an interrupted `ablate` or `tune` kept: its finished rows."""
+    return f"kept the finished rows in {args.out}/cache; run the same command again to go on from there"
+
+
 KEPT = {
     "bench": lambda args: "bench writes nothing; nothing is lost",
     "plan": lambda args: "plan writes nothing; nothing is lost",
@@ -253,10 +258,8 @@ KEPT = {
     "view": lambda args: "the viewer stopped",
     "grade": lambda args: "grading writes its CSV only at the end; run the same command again",
     "reproduce": _reproduce_kept,
-    "ablate": lambda args: (f"kept the finished rows in {args.out}/cache; run the same command again to go on "
-                            "from there"),
-    "tune": lambda args: (f"kept the finished rows in {args.out}/cache; run the same command again to go on "
-                          "from there"),
+    "ablate": _rows_kept,
+    "tune": _rows_kept,
 }
 
 
@@ -295,6 +298,15 @@ def _subcommand(sub, name: str, summary: str, description: str, examples: list[s
                             formatter_class=_formatter)
     parser.set_defaults(func=func)
     return parser
+
+
+def _study_arguments(cmd: argparse.ArgumentParser, scenario_help: str, quick_help: str, study: str) -> None:
+    """The options `ablate` and `tune` share: a scenario, a seed, --quick and a resumable --out folder."""
+    cmd.add_argument("--scenario", choices=SCENARIO_NAMES, required=True, help=scenario_help)
+    _seed(cmd, "workspaces, samples and initial weights")
+    cmd.add_argument("--quick", action="store_true", help=quick_help)
+    cmd.add_argument("--out", required=True, metavar="DIR",
+                     help=f"folder for the tables, new or empty, or holding this same {study} to resume it")
 
 
 def _seed(parser: argparse.ArgumentParser, what: str) -> None:
@@ -349,11 +361,7 @@ def build_parser() -> argparse.ArgumentParser:
         "is kept in DIR/cache: after Ctrl-C, the same command goes on where it stopped.",
         ["toolkit ablate --scenario 2ds --out results/ablation-2ds"],
         cmd_ablate)
-    ablate.add_argument("--scenario", choices=SCENARIO_NAMES, required=True, help=scenario_help)
-    _seed(ablate, "workspaces, samples and initial weights")
-    ablate.add_argument("--quick", action="store_true", help="small counts, to try the command; its figures mean little")
-    ablate.add_argument("--out", required=True, metavar="DIR",
-                        help="folder for the table, new or empty, or holding this same ablation to resume it")
+    _study_arguments(ablate, scenario_help, "small counts, to try the command; its figures mean little", "ablation")
 
     tune = _subcommand(
         sub, "tune", "choose the paper preset's unstated settings on held-out training workspaces",
@@ -363,11 +371,7 @@ def build_parser() -> argparse.ArgumentParser:
         "Writes DIR/tuning.md and tuning.json; finished rows are kept in DIR/cache (resumable).",
         ["toolkit tune --scenario 2ds --out results/tuning-2ds"],
         cmd_tune)
-    tune.add_argument("--scenario", choices=SCENARIO_NAMES, required=True, help=scenario_help)
-    _seed(tune, "workspaces, samples and initial weights")
-    tune.add_argument("--quick", action="store_true", help="a tenth of the epochs on few workspaces, to try the command")
-    tune.add_argument("--out", required=True, metavar="DIR",
-                      help="folder for the tables, new or empty, or holding this same tuning to resume it")
+    _study_arguments(tune, scenario_help, "a tenth of the epochs on few workspaces, to try the command", "tuning")
 
     train = _subcommand(
         sub, "train", "train the CAE and the collision MLP; write a checkpoint folder",

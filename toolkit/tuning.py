@@ -113,7 +113,9 @@ def _cae_row(scenario, preset: presets.Preset, fit: data.CollisionDataset, valid
     torch.manual_seed(seed)
     predictor = build_predictor(scenario, "raw")
     began = time.perf_counter()
-    training.train_cae(predictor, torch.as_tensor(fit.occupancy), preset, torch.Generator().manual_seed(seed), progress)
+    training.train_cae(predictor, torch.as_tensor(fit.occupancy), preset, torch.Generator().manual_seed(seed), progress,
+                       max_steps=scenario.cae_max_steps, max_batch=scenario.cae_max_batch,
+                       max_lr=scenario.cae_max_lr)  # as training.train_models caps it
     seconds = time.perf_counter() - began
     torch.save(predictor.cae.state_dict(), cae_file)
     with torch.no_grad():
