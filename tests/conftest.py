@@ -33,7 +33,7 @@ def make_viewer():
 @pytest.fixture(scope="session")
 def checkpoint_2ds(tmp_path_factory):
     """A checkpoint folder of a quick 2DS ``strong`` model (seconds to train)."""
-    from toolkit import checkpoints, training
+    from toolkit.learning import checkpoints, training
 
     splits = training.preset_splits("2ds", "strong", seed=0, quick=True, progress=False)
     models = training.train_models("2ds", "strong", splits, seed=0, progress=False, quick=True, device="cpu")

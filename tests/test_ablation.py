@@ -5,7 +5,9 @@ from dataclasses import replace
 
 import pytest
 
-from toolkit import ablation, cli, presets, training
+from toolkit import cli
+from toolkit.experiments import ablation
+from toolkit.learning import presets, training
 
 
 def test_rows_add_one_change_each_to_the_paper_preset():

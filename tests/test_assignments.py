@@ -1,4 +1,4 @@
-"""The course assignments grade honestly (tutorials/assignments/, toolkit.grading, otter-grader).
+"""The course assignments grade honestly (tutorials/assignments/, toolkit.teaching.grading, otter-grader).
 
 The slow tests build every master with ``otter assign`` and grade, all at once in threads
 (each ``otter run`` is a subprocess with its own kernel): the master's solutions, the untouched
@@ -20,7 +20,8 @@ from pathlib import Path
 
 import pytest
 
-from toolkit import cli, grading
+from toolkit import cli
+from toolkit.teaching import grading
 
 ASSIGNMENTS = ["bridge_test", "verify_and_repair", "evaluating_a_checker", "cae_loss"]
 # Plausible wrong answers: (assignment, the solution's line, its replacement, the questions it breaks).

@@ -10,7 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from toolkit import bench, cli, scenarios
+from toolkit import cli, scenarios
+from toolkit.experiments import bench
 
 
 def test_bench_prints_one_json_object(capsys):
@@ -142,10 +143,10 @@ def test_versus_ompl_races_the_chosen_planners_only():
 
 
 def test_bench_vs_ompl_says_how_to_install_ompl(monkeypatch, capsys):
-    import toolkit
+    import toolkit.planning
 
     monkeypatch.setitem(sys.modules, "ompl", None)  # as if not installed: importing it raises ImportError
-    monkeypatch.delitem(sys.modules, "toolkit.ompl", raising=False)
-    monkeypatch.delattr(toolkit, "ompl", raising=False)
+    monkeypatch.delitem(sys.modules, "toolkit.planning.ompl", raising=False)
+    monkeypatch.delattr(toolkit.planning, "ompl", raising=False)
     assert cli.main(["bench", "--vs-ompl", "--scenario", "2ds", "--queries", "1"]) == 2
     assert "pip install 'sample-collision-toolkit[ompl]'" in capsys.readouterr().err

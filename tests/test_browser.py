@@ -9,8 +9,9 @@ installs Debian's).
 import numpy as np
 import pytest
 
-from toolkit import viewer, viewer_browser
-from toolkit import viewer_scene as draw
+from toolkit import viewer
+from toolkit.viewer import browser as viewer_browser
+from toolkit.viewer import drawing as draw
 
 pytestmark = [
     pytest.mark.browser,

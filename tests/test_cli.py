@@ -15,7 +15,10 @@ import pytest
 import torch
 from threadpoolctl import threadpool_info
 
-from toolkit import checkpoints, cli, experiments, threads, training, viewer
+from toolkit import cli, viewer
+from toolkit.experiments import reproduce as experiments
+from toolkit.learning import checkpoints, training
+from toolkit.util import threads
 
 COMMANDS = ("reproduce", "train", "plan", "bench", "view")
 
@@ -74,7 +77,7 @@ def test_view_refuses_a_bad_checkpoint_in_the_terminal_before_serving(tmp_path, 
     def no_server(*args, **kwargs):
         raise AssertionError("a server was started")
 
-    monkeypatch.setattr(viewer.viser, "ViserServer", no_server)
+    monkeypatch.setattr(viewer.server.viser, "ViserServer", no_server)
     assert cli.main(["view", "--checkpoint", str(tmp_path / "missing")]) == 2
     assert capsys.readouterr().err == f"toolkit view: error: checkpoint folder {tmp_path / 'missing'} does not exist\n"
     assert cli.main(["view", "--scenario", "3do", "--checkpoint", str(checkpoint_2ds)]) == 2
@@ -246,7 +249,7 @@ def blas_threads() -> list[int]:
 
 @pytest.mark.parametrize("setting, expected", [(None, 1), ("3", 3)])
 def test_commands_run_on_one_thread_unless_toolkit_threads_says(setting, expected, monkeypatch, capsys):
-    from toolkit import bench
+    from toolkit.experiments import bench
 
     seen = []
     monkeypatch.setattr(bench, "throughput", lambda *a, **k: seen.append((torch.get_num_threads(), blas_threads()))

@@ -11,9 +11,15 @@ from hypothesis import given, settings
 from hypothesis import strategies as st
 from scipy.optimize import linprog
 
-from toolkit import robots, scenarios
-from toolkit.collision import ExactChecker, PointRobotChecker, SeparatingAxisChecker, exact_checker
-from toolkit.workspace import Workspace
+from toolkit import scenarios
+from toolkit.geometry import robots
+from toolkit.geometry.collision import (
+    ExactChecker,
+    PointRobotChecker,
+    SeparatingAxisChecker,
+    exact_checker,
+)
+from toolkit.geometry.workspace import Workspace
 
 SCENARIOS = ["2ds", "3do", "3dc7", "3dc9"]
 EPS = 1e-6

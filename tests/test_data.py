@@ -5,10 +5,12 @@ import json
 import numpy as np
 import pytest
 
-from toolkit import data, scenarios
-from toolkit.collision import ExactChecker, exact_checker
-from toolkit.data import CollisionDataset, balanced_samples, make_splits, stream_rng
-from toolkit.workspace import Workspace
+from toolkit import scenarios
+from toolkit.geometry.collision import ExactChecker, exact_checker
+from toolkit.geometry.workspace import Workspace
+from toolkit.learning import data
+from toolkit.learning.data import CollisionDataset, balanced_samples, make_splits
+from toolkit.scenarios import stream_rng
 
 SMALL = dict(n_seen=3, n_seen_test=2, n_unseen=2, samples_per_workspace=20, progress=False)
 
@@ -99,8 +101,8 @@ def test_seen_test_reuses_training_workspaces_with_new_samples(splits_3dc7):
     np.testing.assert_array_equal(seen.occupancy, train.occupancy[:2])
     assert not np.any(np.isclose(seen.configs[:, :, None], train.configs[:2, None]).all(axis=-1))  # no sample reused
     assert all(ws not in train.workspaces for ws in unseen.workspaces)
-    assert train.workspaces == data.workspaces(scenarios.get("3dc7"), "seen", 3, seed=4)
-    assert unseen.workspaces == data.workspaces(scenarios.get("3dc7"), "unseen", 2, seed=4)
+    assert train.workspaces == scenarios.get("3dc7").workspaces("seen", 3, seed=4)
+    assert unseen.workspaces == scenarios.get("3dc7").workspaces("unseen", 2, seed=4)
 
 
 @pytest.mark.parametrize("fixture", ["splits_2ds", "splits_3dc7"])
@@ -131,8 +133,8 @@ def test_same_seed_same_arrays_other_seed_other(splits_2ds):
 
 def test_growing_a_split_keeps_its_workspaces():
     scenario = scenarios.get("3do")
-    assert data.workspaces(scenario, "seen", 4, seed=1)[:2] == data.workspaces(scenario, "seen", 2, seed=1)
-    seen, query = data.workspaces(scenario, "seen", 1, seed=1), data.workspaces(scenario, "query", 1, seed=1)
+    assert scenario.workspaces("seen", 4, seed=1)[:2] == scenario.workspaces("seen", 2, seed=1)
+    seen, query = scenario.workspaces("seen", 1, seed=1), scenario.workspaces("query", 1, seed=1)
     assert seen != query
 
 
@@ -141,7 +143,7 @@ def test_stream_rng_is_keyed_by_seed_stream_and_index():
     np.testing.assert_array_equal(draw(0, "seen", 1), draw(0, "seen", 1))
     for other in [(1, "seen", 1), (0, "unseen", 1), (0, "seen", 2)]:
         assert not np.array_equal(draw(0, "seen", 1), draw(*other))
-    with pytest.raises(KeyError):
+    with pytest.raises(ValueError, match="unknown stream 'nonsense'"):
         stream_rng(0, "nonsense", 0)
 
 

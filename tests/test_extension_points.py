@@ -5,14 +5,22 @@ import dataclasses
 import numpy as np
 import pytest
 
-from toolkit import checkpoints, encoding, presets, robots, sampling, scenarios
-from toolkit.collision import ExactChecker, PointRobotChecker, SeparatingAxisChecker, exact_checker
-from toolkit.learned import LearnedChecker
-from toolkit.models import build_predictor
-from toolkit.prm import PRMOptions, plan
-from toolkit.robots import BoxRobot, Joint, Link
-from toolkit.training import TrainedModels
-from toolkit.workspace import Workspace
+from toolkit import scenarios
+from toolkit.geometry import robots
+from toolkit.geometry.collision import (
+    ExactChecker,
+    PointRobotChecker,
+    SeparatingAxisChecker,
+    exact_checker,
+)
+from toolkit.geometry.robots import BoxRobot, Joint, Link
+from toolkit.geometry.workspace import Workspace
+from toolkit.learning import checkpoints, encoding, presets
+from toolkit.learning.learned import LearnedChecker
+from toolkit.learning.models import build_predictor
+from toolkit.learning.training import TrainedModels
+from toolkit.planning import sampling
+from toolkit.planning.prm import PRMOptions, plan
 
 
 @pytest.fixture(autouse=True)

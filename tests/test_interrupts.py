@@ -20,7 +20,9 @@ from pathlib import Path
 
 import pytest
 
-from toolkit import cli, experiments, training
+from toolkit import cli
+from toolkit.experiments import reproduce as experiments
+from toolkit.learning import training
 
 pytestmark = [pytest.mark.slow,
               pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="finds processes in /proc (Linux)")]
@@ -30,7 +32,7 @@ STALLED_RUN = '''
 import sys
 import time
 
-from toolkit import queries
+from toolkit.planning import queries
 
 planned = queries.run_interleaved
 

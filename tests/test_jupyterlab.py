@@ -9,7 +9,8 @@ from pathlib import Path
 
 import pytest
 
-from toolkit import lab_browser, viewer_browser
+from toolkit.teaching import lab_browser
+from toolkit.viewer import browser as viewer_browser
 
 pytestmark = [
     pytest.mark.browser,

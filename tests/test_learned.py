@@ -6,10 +6,12 @@ import json
 import numpy as np
 import pytest
 
-from toolkit import checkpoints, cli, data, presets, queries, scenarios, training
-from toolkit.collision import CollisionChecker, exact_checker
-from toolkit.learned import LearnedChecker, load_checker
-from toolkit.prm import PRMOptions
+from toolkit import cli, scenarios
+from toolkit.geometry.collision import CollisionChecker, exact_checker
+from toolkit.learning import checkpoints, presets, training
+from toolkit.learning.learned import LearnedChecker, load_checker
+from toolkit.planning import queries
+from toolkit.planning.prm import PRMOptions
 
 SCENARIO = scenarios.get("2ds")
 
@@ -22,7 +24,7 @@ def models():
 
 @pytest.fixture(scope="module")
 def workspace():
-    return data.workspaces(SCENARIO, "query", 1, seed=0)[0]
+    return SCENARIO.workspaces("query", 1, seed=0)[0]
 
 
 def test_agrees_with_the_exact_checker(models, workspace, rng):
@@ -70,7 +72,7 @@ def test_bad_configurations(models, workspace, Q):
 
 
 def test_workspace_of_another_scenario(models):
-    other = data.workspaces(scenarios.get("3dc7"), "query", 1, seed=0)[0]
+    other = scenarios.get("3dc7").workspaces("query", 1, seed=0)[0]
     with pytest.raises(ValueError, match="does not fit scenario '2ds'"):
         LearnedChecker(other, models)
 

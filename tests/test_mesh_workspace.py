@@ -12,10 +12,12 @@ import numpy as np
 import pytest
 import trimesh
 
-from toolkit import data, meshes, robots, scenarios
-from toolkit.collision import ExactChecker, MeshChecker, exact_checker
-from toolkit.robots import BoxRobot, Link
-from toolkit.workspace import MeshWorkspace, Workspace, from_mesh, generate
+from toolkit import scenarios
+from toolkit.geometry import meshes, robots
+from toolkit.geometry.collision import ExactChecker, MeshChecker, exact_checker
+from toolkit.geometry.robots import BoxRobot, Link
+from toolkit.geometry.workspace import MeshWorkspace, Workspace, from_mesh, generate
+from toolkit.learning import data
 
 ROOM = Path(__file__).resolve().parents[1] / "tutorials" / "data" / "room.stl"
 REGION = dict(lower=np.zeros(3), upper=np.full(3, 11.0))
@@ -212,7 +214,7 @@ def test_the_demo_room_stands_inside_the_region_and_the_committed_file_is_the_sc
     committed = trimesh.load(ROOM, force="mesh")
     ours = np.sort(np.round(room.triangles.reshape(-1, 9), 4), axis=0)
     theirs = np.sort(np.round(committed.triangles.reshape(-1, 9), 4), axis=0)
-    np.testing.assert_array_equal(theirs, ours)  # rebuild with: python -m toolkit.meshes tutorials/data/room.stl
+    np.testing.assert_array_equal(theirs, ours)  # rebuild with: python -m toolkit.geometry.meshes tutorials/data/room.stl
 
 
 def test_random_rooms_are_seeded_and_inside_the_region():

@@ -5,10 +5,22 @@ import pytest
 import torch
 from torch import nn
 
-from toolkit import metrics, scenarios
-from toolkit.encoding import InputEncoding, LinkKinematics, position_dofs, reach_cells
-from toolkit.models import CAE, VALID, CollisionMLP, WorkspaceMargin, build_predictor
-from toolkit.workspace import Workspace
+from toolkit import scenarios
+from toolkit.geometry.workspace import Workspace
+from toolkit.learning import metrics
+from toolkit.learning.encoding import (
+    InputEncoding,
+    LinkKinematics,
+    position_dofs,
+    reach_cells,
+)
+from toolkit.learning.models import (
+    CAE,
+    VALID,
+    CollisionMLP,
+    WorkspaceMargin,
+    build_predictor,
+)
 
 PAPER_CAE = {
     "2ds": (961, 512, 256, 128, 64, 32, 12),

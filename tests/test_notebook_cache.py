@@ -1,8 +1,9 @@
-"""toolkit.notebook.trained_models: trains once, then loads; a changed preset trains anew."""
+"""toolkit.teaching.notebook.trained_models: trains once, then loads; a changed preset trains anew."""
 
 import dataclasses
 
-from toolkit import notebook, presets
+from toolkit.learning import presets
+from toolkit.teaching import notebook
 
 
 def test_models_are_trained_once_and_retrained_when_the_preset_changes(tmp_path, monkeypatch):

@@ -1,7 +1,7 @@
 """Every notebook runs top to bottom in quick mode (``TOOLKIT_QUICK=1``); every notebook of the repository
 (chapters, tutorials, assignment masters) is committed without outputs.
 
-Executed by :mod:`toolkit.notebook_runner` in a real kernel, as a student's JupyterLab
+Executed by :mod:`toolkit.teaching.notebook_runner` in a real kernel, as a student's JupyterLab
 would; trained models go to a cache folder of this test session, not the user's.
 """
 
@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from toolkit.notebook_runner import run_notebook
+from toolkit.teaching.notebook_runner import run_notebook
 
 ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))  # 01_... to 05_...

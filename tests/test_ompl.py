@@ -11,11 +11,11 @@ import pytest
 from scipy import ndimage
 
 from toolkit import scenarios
-from toolkit.collision import exact_checker
-from toolkit.local_planner import path_is_valid
-from toolkit.prm import PRMOptions, plan
-from toolkit.queries import make_queries
-from toolkit.workspace import Workspace
+from toolkit.geometry.collision import exact_checker
+from toolkit.geometry.workspace import Workspace
+from toolkit.planning.local_planner import path_is_valid
+from toolkit.planning.prm import PRMOptions, plan
+from toolkit.planning.queries import make_queries
 
 ob = pytest.importorskip("ompl.base")
 og = pytest.importorskip("ompl.geometric")
@@ -117,13 +117,13 @@ def test_an_enclosed_goal_is_unsolvable_for_both():
     assert ompl_solves(ws, robot, start, goal, ours.stats["resolution"] / 10, seconds=0.3) is None
 
 
-# -- toolkit.ompl: our checkers and samplers inside OMPL ------------------------------------------------------------
+# -- toolkit.planning.ompl: our checkers and samplers inside OMPL ------------------------------------------------------------
 
 toolkit_ompl = pytest.importorskip("toolkit.ompl")
 
 
 def test_ompls_distance_is_our_motion_bound_and_its_motion_checks_at_least_our_steps():
-    from toolkit.local_planner import step_counts
+    from toolkit.planning.local_planner import step_counts
 
     scenario = scenarios.get("3do")  # a base angle that wraps, and joints
     robot = scenario.robot
@@ -170,7 +170,7 @@ def test_rrtconnect_with_our_exact_checker_returns_paths_our_checker_accepts():
 
 
 def test_a_learned_checker_answers_inside_ompl_as_outside(checkpoint_2ds):
-    from toolkit.learned import load_checker
+    from toolkit.learning.learned import load_checker
 
     scenario = scenarios.get("2ds")
     q = make_queries(scenario, seed=7100, n_workspaces=1, per_workspace=1)[0]

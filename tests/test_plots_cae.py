@@ -4,7 +4,7 @@ import numpy as np
 import pytest
 from matplotlib.figure import Figure
 
-from toolkit.metrics import reconstruction_accuracy
+from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots import cae as plots
 
 

@@ -6,10 +6,11 @@ import pytest
 from matplotlib.collections import PathCollection
 from matplotlib.contour import ContourSet
 
-from toolkit import metrics, robots
-from toolkit.collision import exact_checker
+from toolkit.geometry import robots
+from toolkit.geometry.collision import exact_checker
+from toolkit.geometry.workspace import Workspace
+from toolkit.learning import metrics
 from toolkit.plots import classifier as pc
-from toolkit.workspace import Workspace
 
 N = 24  # grid cells per axis
 

@@ -11,10 +11,15 @@ from matplotlib.colors import to_rgba
 from matplotlib.patches import Polygon, Rectangle
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-from toolkit import robots, scenarios
-from toolkit.collision import ExactChecker, PointRobotChecker, SeparatingAxisChecker
+from toolkit import scenarios
+from toolkit.geometry import robots
+from toolkit.geometry.collision import (
+    ExactChecker,
+    PointRobotChecker,
+    SeparatingAxisChecker,
+)
+from toolkit.geometry.workspace import Workspace
 from toolkit.plots import cspace
-from toolkit.workspace import Workspace
 
 
 @pytest.fixture

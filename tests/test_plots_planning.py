@@ -7,10 +7,10 @@ from matplotlib.colors import to_rgba, to_rgba_array
 from matplotlib.figure import Figure
 
 from toolkit import scenarios
-from toolkit.collision import exact_checker
+from toolkit.geometry.collision import exact_checker
+from toolkit.planning.prm import PlanStep, PRMOptions, plan
+from toolkit.planning.queries import make_queries
 from toolkit.plots import planning
-from toolkit.prm import PlanStep, PRMOptions, plan
-from toolkit.queries import make_queries
 
 SCENARIO = scenarios.get("2ds")
 

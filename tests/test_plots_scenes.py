@@ -6,7 +6,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.colors import to_rgba
 
 from toolkit import scenarios
-from toolkit.collision import exact_checker
+from toolkit.geometry.collision import exact_checker
 from toolkit.plots import scenes
 from toolkit.plots.cspace import INVALID_COLOR, VALID_COLOR
 

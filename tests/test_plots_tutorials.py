@@ -6,10 +6,10 @@ import numpy as np
 from matplotlib.patches import Rectangle
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-from toolkit import meshes, robots
-from toolkit.collision import exact_checker
+from toolkit.geometry import meshes, robots
+from toolkit.geometry.collision import exact_checker
+from toolkit.geometry.workspace import Workspace, from_mesh
 from toolkit.plots import tutorials
-from toolkit.workspace import Workspace, from_mesh
 
 
 def test_mesh_and_grid_draws_every_triangle_and_one_cube_per_occupied_cell():

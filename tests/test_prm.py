@@ -7,16 +7,24 @@ import pytest
 import torch
 from threadpoolctl import threadpool_info, threadpool_limits
 
-from toolkit import cli, local_planner, prm, scenarios
-from toolkit import queries as queries_module
-from toolkit.collision import CollisionChecker, exact_checker
-from toolkit.local_planner import (certify_edges, check_edges, invalid_fractions, path_is_valid, path_points,
-                                   refute_at, segment_points)
-from toolkit.prm import PRMOptions, plan
-from toolkit.queries import make_queries, run_queries
-from toolkit.roadmap import Roadmap
-from toolkit.sampling import SAMPLERS, make_sampler
-from toolkit.workspace import Workspace
+from toolkit import cli, scenarios
+from toolkit.geometry.collision import CollisionChecker, exact_checker
+from toolkit.geometry.workspace import Workspace
+from toolkit.planning import local_planner, prm
+from toolkit.planning import queries as queries_module
+from toolkit.planning.local_planner import (
+    certify_edges,
+    check_edges,
+    invalid_fractions,
+    path_is_valid,
+    path_points,
+    refute_at,
+    segment_points,
+)
+from toolkit.planning.prm import PRMOptions, plan
+from toolkit.planning.queries import make_queries, run_queries
+from toolkit.planning.roadmap import Roadmap
+from toolkit.planning.sampling import SAMPLERS, make_sampler
 
 
 class NoisyChecker(CollisionChecker):
@@ -174,7 +182,7 @@ def test_lazy_screen_rejects_only_edges_with_a_point_in_collision(monkeypatch):
 
 
 def test_the_paper_preset_plans_with_the_papers_baseline_and_the_strong_one_with_the_best_exact_planner():
-    from toolkit import presets
+    from toolkit.learning import presets
 
     scenario = scenarios.get("3dc7")
     best = queries_module.default_options(scenario)  # no checker: the best exact planner

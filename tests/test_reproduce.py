@@ -7,7 +7,10 @@ from types import SimpleNamespace
 import numpy as np
 import pytest
 
-from toolkit import cli, experiments, paper_numbers, presets, scenarios
+from toolkit import cli, scenarios
+from toolkit.experiments import paper_numbers
+from toolkit.experiments import reproduce as experiments
+from toolkit.learning import presets
 
 RATE_KEYS = ("success_rate", "path_valid_rate")
 TIME_KEYS = ("sampling_s", "total_s")

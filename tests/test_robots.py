@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 import trimesh.transformations as tf
 
-from toolkit import robots
+from toolkit.geometry import robots
 
 ROBOTS = {
     "point2d": robots.point_robot(),

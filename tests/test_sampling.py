@@ -3,15 +3,15 @@
 import numpy as np
 import pytest
 
-from toolkit import data, scenarios
-from toolkit.collision import CollisionChecker, exact_checker
-from toolkit.local_planner import segment_points
-from toolkit.sampling import SAMPLERS, make_sampler
+from toolkit import scenarios
+from toolkit.geometry.collision import CollisionChecker, exact_checker
+from toolkit.planning.local_planner import segment_points
+from toolkit.planning.sampling import SAMPLERS, make_sampler
 
 
 def setting(name: str, index: int = 0):
     scenario = scenarios.get(name)
-    ws = data.workspaces(scenario, "query", index + 1, seed=0)[index]
+    ws = scenario.workspaces("query", index + 1, seed=0)[index]
     return scenario.robot, exact_checker(ws, scenario.robot)
 
 

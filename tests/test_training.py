@@ -1,16 +1,17 @@
 """Training: metrics against hand counts, determinism, evaluation keys, checkpoints and bad checkpoints."""
 
 import json
-from types import SimpleNamespace
 from dataclasses import replace
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
 import torch
 
-from toolkit import checkpoints, cli, data, metrics, presets, scenarios, training
-from toolkit.models import build_predictor
-from toolkit.presets import Preset
+from toolkit import cli, scenarios
+from toolkit.learning import checkpoints, data, metrics, presets, training
+from toolkit.learning.models import build_predictor
+from toolkit.learning.presets import Preset
 
 TINY = replace(presets.get("strong").quick_version(), cae_epochs=1, mlp_epochs=2)  # enough to tell seeds apart
 

@@ -6,7 +6,9 @@ import numpy as np
 import pytest
 import torch
 
-from toolkit import cli, data, models, presets, training, tuning
+from toolkit import cli, scenarios
+from toolkit.experiments import tuning
+from toolkit.learning import models, presets, training
 
 
 def test_the_one_standard_error_rule_takes_the_first_setting_within_noise_of_the_best():
@@ -30,13 +32,13 @@ def test_he_initialization_of_the_mlp_has_he_spread_and_unknown_names_fail():
 
 @pytest.mark.slow
 def test_quick_tuning_never_sees_the_unseen_workspaces_chooses_the_best_and_resumes(tmp_path, monkeypatch):
-    generate = data.workspaces
+    generate = scenarios.Scenario.workspaces
 
     def seen_only(scenario, stream, count, seed):
         assert stream != "unseen", "tuning generated the unseen test workspaces"
         return generate(scenario, stream, count, seed)
 
-    monkeypatch.setattr(data, "workspaces", seen_only)
+    monkeypatch.setattr(scenarios.Scenario, "workspaces", seen_only)
     out = tmp_path / "tune"
     assert cli.main(["tune", "--scenario", "2ds", "--quick", "--out", str(out)]) == 0
     result = json.loads((out / "tuning.json").read_text())

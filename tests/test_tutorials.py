@@ -11,7 +11,7 @@ from pathlib import Path
 
 import pytest
 
-from toolkit.notebook_runner import run_notebook
+from toolkit.teaching.notebook_runner import run_notebook
 
 FOLDER = Path(__file__).resolve().parents[1] / "tutorials"
 TUTORIALS = sorted(FOLDER.glob("*.ipynb"))  # assignments/ (otter masters) are tested with the grader, not here

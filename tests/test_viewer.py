@@ -14,12 +14,13 @@ import msgspec
 import numpy as np
 import pytest
 import zstandard
-
 from matplotlib import image as mpimg
 
-from toolkit import learned, scenarios, viewer, viewer_browser
-from toolkit import viewer_scene as draw
-from toolkit.collision import CollisionChecker, exact_checker
+from toolkit import scenarios, viewer
+from toolkit.geometry.collision import CollisionChecker, exact_checker
+from toolkit.learning import learned
+from toolkit.viewer import browser as viewer_browser
+from toolkit.viewer import drawing as draw
 
 
 def free_port() -> int:

@@ -15,7 +15,7 @@ import zstandard
 from IPython.display import HTML
 
 from toolkit import viewer
-from toolkit import viewer_scene as draw
+from toolkit.viewer import drawing as draw
 
 
 def recording(document: str) -> tuple[dict, list[bytes]]:

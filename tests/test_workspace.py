@@ -5,7 +5,7 @@ import json
 import numpy as np
 import pytest
 
-from toolkit.workspace import OFFICE_TYPES, Workspace, generate
+from toolkit.geometry.workspace import OFFICE_TYPES, Workspace, generate
 
 SEEDS = range(40)
 

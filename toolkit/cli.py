@@ -17,7 +17,7 @@ import sys
 from contextlib import contextmanager
 from pathlib import Path
 
-from . import scenarios
+from toolkit import scenarios
 
 SCENARIO_NAMES = sorted(scenarios.SCENARIOS)
 SAMPLER_NAMES = ("BS", "OB", "G", "BT")
@@ -39,7 +39,7 @@ GLOSSARY = "\n".join(
        "          far more accurate (docs/results.md)",
        "",
        "threads: torch and numpy use one thread, fastest when other programs share the machine;",
-       "TOOLKIT_THREADS=N uses N (0: one per core). See toolkit/threads.py."])
+       "TOOLKIT_THREADS=N uses N (0: one per core). See toolkit/util/threads.py."])
 
 
 class Interrupted(KeyboardInterrupt):
@@ -91,7 +91,8 @@ def _planner_option(text: str) -> tuple[str, object]:
 # -- the commands -------------------------------------------------------------------------------
 
 def cmd_bench(args: argparse.Namespace) -> int:
-    from . import bench, checkpoints
+    from toolkit.experiments import bench
+    from toolkit.learning import checkpoints
 
     scenario = scenarios.get(args.scenario)
     models = checkpoints.load_models(args.checkpoint, scenario.name) if args.checkpoint else None
@@ -115,7 +116,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
 
 
 def cmd_train(args: argparse.Namespace) -> int:
-    from . import checkpoints, presets, training
+    from toolkit.learning import checkpoints, presets, training
 
     checkpoints.check_destination(args.out, overwrite=args.force)  # before minutes of training, not after
     preset = presets.get(args.preset)
@@ -130,7 +131,7 @@ def cmd_train(args: argparse.Namespace) -> int:
 
 
 def cmd_plan(args: argparse.Namespace) -> int:
-    from . import queries
+    from toolkit.planning import queries
 
     if args.predict and not args.checkpoint:
         raise ValueError("--predict needs --checkpoint DIR (a folder written by `toolkit train`)")
@@ -138,7 +139,7 @@ def cmd_plan(args: argparse.Namespace) -> int:
     query = queries.make_queries(scenario, args.seed, n_workspaces=1, per_workspace=1)[0]
     checker = None
     if args.predict:
-        from . import learned
+        from toolkit.learning import learned
 
         checker = learned.load_checker(args.checkpoint, query.workspace)
     result = queries.solve_query(scenario, query, args.sampler, checker, seed=args.seed)
@@ -154,18 +155,18 @@ def cmd_plan(args: argparse.Namespace) -> int:
 
 
 def cmd_view(args: argparse.Namespace) -> int:
-    from . import viewer
+    from toolkit import viewer
 
     scenario, predictor = args.scenario or "3do", None
     if args.checkpoint:  # read it here: a bad one is an error in this terminal, before anything is served
         from functools import partial
 
-        from . import checkpoints, learned
+        from toolkit.learning import checkpoints, learned
 
         models = checkpoints.load_models(args.checkpoint, args.scenario)
         scenario, predictor = models.scenario.name, partial(learned.LearnedChecker, models=models)
     if args.screenshot:
-        from . import outputs
+        from toolkit.util import outputs
 
         outputs.writable_file(args.screenshot, "--screenshot")
     v = viewer.launch(scenario, seed=args.seed, predictor=predictor, host=args.host, port=args.port,
@@ -174,7 +175,7 @@ def cmd_view(args: argparse.Namespace) -> int:
         if args.samples:
             v.sample("raw", args.samples, seed=args.seed)
         if args.screenshot:
-            from .viewer_browser import screenshot
+            from toolkit.viewer.browser import screenshot
 
             print(f"toolkit view: wrote {screenshot(v.url, args.screenshot)}")
         else:
@@ -185,7 +186,7 @@ def cmd_view(args: argparse.Namespace) -> int:
 
 
 def cmd_reproduce(args: argparse.Namespace) -> int:
-    from . import experiments
+    from toolkit.experiments import reproduce as experiments
 
     names = SCENARIO_NAMES if args.scenario == "all" else [args.scenario]
     if len(names) == 1:
@@ -198,7 +199,7 @@ def cmd_reproduce(args: argparse.Namespace) -> int:
 
 
 def cmd_ablate(args: argparse.Namespace) -> int:
-    from . import ablation
+    from toolkit.experiments import ablation
 
     ablation.ablate(args.scenario, args.out, args.seed, args.quick)
     print(f"wrote {args.out}/ablation.md and ablation.json:\n")
@@ -207,7 +208,7 @@ def cmd_ablate(args: argparse.Namespace) -> int:
 
 
 def cmd_tune(args: argparse.Namespace) -> int:
-    from . import tuning
+    from toolkit.experiments import tuning
 
     tuning.tune(args.scenario, args.out, args.seed, args.quick)
     print(f"wrote {args.out}/tuning.md and tuning.json:\n")
@@ -216,7 +217,7 @@ def cmd_tune(args: argparse.Namespace) -> int:
 
 
 def cmd_grade(args: argparse.Namespace) -> int:
-    from . import grading
+    from toolkit.teaching import grading
 
     if args.assignment:
         grading.master(args.assignment)  # an unknown name fails here, with the known ones
@@ -235,7 +236,7 @@ def cmd_grade(args: argparse.Namespace) -> int:
 # -- what an interrupted command leaves ---------------------------------------------------------
 
 def _reproduce_kept(args: argparse.Namespace) -> str:
-    from . import experiments
+    from toolkit.experiments import reproduce as experiments
 
     folders = ({name: Path(args.out) / name for name in SCENARIO_NAMES} if args.scenario == "all"
                else {args.scenario: Path(args.out)})
@@ -354,7 +355,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     ablate = _subcommand(
         sub, "ablate", "walk from the paper's recipe to ours, one change at a time",
-        "Trains one model per row, each row keeping the changes above it (toolkit/ablation.py:\n"
+        "Trains one model per row, each row keeping the changes above it (toolkit/experiments/ablation.py:\n"
         "the CAE's loss and data, dropout, optimizer, input scaling, more workspaces, a wider MLP,\n"
         "local features, no z) and scores each on the same seen and unseen samples, balanced and\n"
         "validity-blind as the paper. Writes DIR/ablation.md and ablation.json; each finished row\n"
@@ -366,7 +367,7 @@ def build_parser() -> argparse.ArgumentParser:
     tune = _subcommand(
         sub, "tune", "choose the paper preset's unstated settings on held-out training workspaces",
         "The paper does not say how long its networks train, the MLP's batch, initialization or\n"
-        "input scaling. This tries each (toolkit/tuning.py), fitting on 80 % of the training\n"
+        "input scaling. This tries each (toolkit/experiments/tuning.py), fitting on 80 % of the training\n"
         "workspaces and scoring on the other 20 %; the unseen test workspaces are never used.\n"
         "Writes DIR/tuning.md and tuning.json; finished rows are kept in DIR/cache (resumable).",
         ["toolkit tune --scenario 2ds --out results/tuning-2ds"],
@@ -456,7 +457,7 @@ def build_parser() -> argparse.ArgumentParser:
     bench.add_argument("--ompl-seconds", type=float, default=30.0, metavar="S",
                        help="with --vs-ompl: OMPL's time limit per query (default 30)")
     bench.add_argument("--option", type=_planner_option, action="append", default=[], metavar="NAME=VALUE",
-                       help="with --checkpoint: a planner setting (a PRMOptions field in toolkit/prm.py) for both "
+                       help="with --checkpoint: a planner setting (a PRMOptions field in toolkit/planning/prm.py) for both "
                             "runs, e.g. rebridge=0; repeat for several")
 
     view = _subcommand(
@@ -505,7 +506,7 @@ def build_parser() -> argparse.ArgumentParser:
 
 def main(argv: list[str] | None = None) -> int:
     args = build_parser().parse_args(argv)
-    from . import threads
+    from toolkit.util import threads
 
     try:
         with _signals_interrupt(), threads.limited(threads.configured()):

@@ -12,9 +12,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from . import robots, workspace
-from .robots import BoxRobot
-from .workspace import Workspace
+from toolkit.geometry import robots, workspace
+from toolkit.geometry.robots import BoxRobot
+from toolkit.geometry.workspace import Workspace
+
+STREAMS = {"seen": 0, "unseen": 1, "query": 2, "train_samples": 3, "test_samples": 4, "unseen_samples": 5,
+           "unseen_uniform": 6, "cae_grids": 7}  # what a seed's random numbers are drawn for, one stream each
+
+
+def stream_rng(seed: int, stream: str, index: int) -> np.random.Generator:
+    """The generator for item ``index`` of a named stream of ``STREAMS``."""
+    if stream not in STREAMS:
+        raise ValueError(f"unknown stream {stream!r}; choose one of {sorted(STREAMS)}")
+    return np.random.default_rng([int(seed), STREAMS[stream], int(index)])
 
 
 @dataclass(frozen=True)
@@ -36,7 +46,7 @@ class Scenario:
     query_workspaces: int  # planning queries: workspaces x pairs (§IV-A)
     queries_per_workspace: int
     plan_resolution: float | None = None  # local planner: no robot point moves farther between checks
-    #   (None: half the thinnest link, see toolkit.local_planner.default_resolution)
+    #   (None: half the thinnest link, see toolkit.planning.local_planner.default_resolution)
     cae_max_steps: int | None = None  # caps CAE training where a step is slow (None: the preset's cap)
     cae_max_batch: int | None = None  # caps the CAE's batch where a step is slow (None: the preset's batch)
     cae_max_lr: float | None = None  # caps the CAE's learning rate where a higher one diverges (None: the preset's)
@@ -44,6 +54,14 @@ class Scenario:
     def make_workspace(self, rng: np.random.Generator) -> Workspace:
         """A new random workspace of this scenario's family."""
         return workspace.generate(self.family, rng)
+
+    def workspaces(self, stream: str, count: int, seed: int) -> list[Workspace]:
+        """``count`` workspaces of a named stream of ``STREAMS``: 'seen' (training), 'unseen' or 'query' (planning).
+
+        Workspace ``i`` is drawn from its own generator, :func:`stream_rng`, so growing a
+        stream keeps the workspaces it already had.
+        """
+        return [self.make_workspace(stream_rng(seed, stream, i)) for i in range(count)]
 
     @property
     def latent_dim(self) -> int:
@@ -87,7 +105,7 @@ SCENARIOS: dict[str, Scenario] = {
 
 def register(scenario: Scenario, *, replace: bool = False) -> Scenario:
     """Make ``get(scenario.name)`` return ``scenario`` (a robot of your own, say), so that everything that takes a
-    scenario's name accepts it: training, checkpoints, queries, ``toolkit.notebook.trained_models``.
+    scenario's name accepts it: training, checkpoints, queries, ``toolkit.teaching.notebook.trained_models``.
 
     The robot must fit the family's workspaces (its dimension is the grid's); a name
     already taken (the paper's four among them) is refused unless ``replace``.

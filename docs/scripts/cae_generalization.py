@@ -16,15 +16,16 @@ import time
 import numpy as np
 import torch
 
-from toolkit import data, metrics, models, presets, scenarios, training
+from toolkit import scenarios
+from toolkit.learning import data, metrics, models, presets, training
 
 torch.set_num_threads(1)
 name, configs = sys.argv[1], sys.argv[2].split(",")
 lr, steps = (float(a) for a in (sys.argv[3:5] if len(sys.argv) > 4 else (1e-3, 2500)))
 batch = int(sys.argv[5]) if len(sys.argv) > 5 else 100
 s = scenarios.get(name)
-seen = torch.as_tensor(np.stack([w.occupancy() for w in data.workspaces(s, "seen", s.n_seen, 0)]))
-unseen = torch.as_tensor(np.stack([w.occupancy() for w in data.workspaces(s, "unseen", s.n_unseen, 0)]))
+seen = torch.as_tensor(np.stack([w.occupancy() for w in s.workspaces("seen", s.n_seen, 0)]))
+unseen = torch.as_tensor(np.stack([w.occupancy() for w in s.workspaces("unseen", s.n_unseen, 0)]))
 paper = presets.get("paper")
 for config in configs:
     kind, loss = config.split(":")

@@ -14,6 +14,10 @@ per topic, in the order of the notebooks:
 >>> from toolkit.plots import reproduction  # doctest: +SKIP
 """
 
-from .reproduction import cae_reconstruction, planning_times, threshold_sweep
+from toolkit.plots.reproduction import (
+    cae_reconstruction,
+    planning_times,
+    threshold_sweep,
+)
 
 __all__ = ["cae_reconstruction", "planning_times", "threshold_sweep"]

@@ -11,7 +11,7 @@
 
 Grids hold -1 (free) and +1 (occupied), as :meth:`toolkit.workspace.Workspace.occupancy`
 returns them; a decoded cell counts as occupied where the decoder's output is positive,
-as in :func:`toolkit.metrics.reconstruction_accuracy`. Nothing here calls ``show()``.
+as in :func:`toolkit.learning.metrics.reconstruction_accuracy`. Nothing here calls ``show()``.
 """
 
 from __future__ import annotations
@@ -20,7 +20,7 @@ import numpy as np
 from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
 
-from ..metrics import reconstruction_accuracy
+from toolkit.learning.metrics import reconstruction_accuracy
 
 ERROR_COLORS = ListedColormap(["tab:blue", "tab:red"])  # -1: phantom block (free decoded occupied); +1: missed block
 

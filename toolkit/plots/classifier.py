@@ -4,7 +4,7 @@ The MLP answers P(valid) for a configuration; the learned checker calls it valid
 P(valid) >= a threshold. Against the exact checker each answer is one of four kinds:
 
 - *valid kept* and *invalid rejected*: right (TPR and TNR count them, as
-  :func:`toolkit.metrics.classification` does);
+  :func:`toolkit.learning.metrics.classification` does);
 - *valid rejected* (a false invalid): a **conservative** mistake, it only costs a sample;
 - *invalid kept* (a false valid): a **dangerous** mistake, a configuration in collision
   that the planner would trust, unless it checks its path exactly (``toolkit.prm`` does).
@@ -30,9 +30,9 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
-from .. import metrics
-from ..robots import BoxRobot
-from .cspace import slice_configs
+from toolkit.geometry.robots import BoxRobot
+from toolkit.learning import metrics
+from toolkit.plots.cspace import slice_configs
 
 DANGEROUS, CONSERVATIVE, BOUNDARY = "red", "deepskyblue", "orange"
 ANSWERS = ("valid kept", "valid rejected", "invalid rejected", "invalid kept (dangerous)")  # answer_codes 0-3

@@ -29,9 +29,9 @@ from matplotlib.patches import Patch, Polygon, Rectangle
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 from scipy.spatial import ConvexHull
 
-from ..collision import CollisionChecker
-from ..robots import BoxRobot
-from ..workspace import Workspace
+from toolkit.geometry.collision import CollisionChecker
+from toolkit.geometry.robots import BoxRobot
+from toolkit.geometry.workspace import Workspace
 
 VALID_COLOR, INVALID_COLOR = "tab:green", "tab:red"
 BLOCK_COLOR = "0.6"

@@ -14,13 +14,13 @@ import numpy as np
 from matplotlib.collections import LineCollection
 from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
-from matplotlib.ticker import NullFormatter
 from matplotlib.patches import Rectangle
+from matplotlib.ticker import NullFormatter
 
-from ..collision import CollisionChecker
-from ..paper_numbers import SAMPLERS
-from ..prm import GOAL, START, PlanStep
-from .cspace import slice_configs
+from toolkit.experiments.paper_numbers import SAMPLERS
+from toolkit.geometry.collision import CollisionChecker
+from toolkit.planning.prm import GOAL, START, PlanStep
+from toolkit.plots.cspace import slice_configs
 
 MODES = ("without", "with")
 STAGE_KEYS = ("sampling_s", "connection_s", "query_s")  # PRM stats, in the order the planner spends them

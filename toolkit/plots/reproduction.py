@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from ..paper_numbers import SAMPLERS
+from toolkit.experiments.paper_numbers import SAMPLERS
 
 MODES = ("without", "with")
 

@@ -16,9 +16,9 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from ..robots import BoxRobot
-from ..workspace import Workspace
-from .cspace import INVALID_COLOR, VALID_COLOR, _draw_robot
+from toolkit.geometry.robots import BoxRobot
+from toolkit.geometry.workspace import Workspace
+from toolkit.plots.cspace import INVALID_COLOR, VALID_COLOR, _draw_robot
 
 TRACE_COLOR = "tab:cyan"  # the path of the robot's base, as the viewer's path line
 UNCHECKED_COLOR = "tab:blue"  # the robot when no validity is given

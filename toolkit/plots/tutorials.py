@@ -13,9 +13,9 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Rectangle
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
-from ..collision import CollisionChecker
-from ..workspace import MeshWorkspace
-from . import planning
+from toolkit.geometry.collision import CollisionChecker
+from toolkit.geometry.workspace import MeshWorkspace
+from toolkit.plots import planning
 
 MESH_COLOR, VOXEL_COLOR = "tab:brown", "tab:blue"
 

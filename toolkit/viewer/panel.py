@@ -12,10 +12,10 @@ from typing import TYPE_CHECKING, Callable
 
 import numpy as np
 
-from . import scenarios
+from toolkit import scenarios
 
 if TYPE_CHECKING:
-    from .viewer import Viewer
+    from toolkit.viewer.server import Viewer
 
 PLANNER_SAMPLERS = ("BS", "OB", "G", "BT")  # the paper's four (§III-B)
 SAMPLERS = ("raw",) + PLANNER_SAMPLERS  # 'raw': uniform configurations, unfiltered

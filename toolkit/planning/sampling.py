@@ -28,8 +28,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .collision import CollisionChecker
-from .local_planner import last_valid_along, segment_points
+from toolkit.geometry.collision import CollisionChecker
+from toolkit.planning.local_planner import last_valid_along, segment_points
 
 
 class Sampler:
@@ -152,7 +152,7 @@ def register_sampler(name: str, sampler: type[Sampler], *, replace: bool = False
     if not (isinstance(name, str) and name.strip()):
         raise ValueError(f"a sampler's name must be a non-empty string, got {name!r}")
     if not (isinstance(sampler, type) and issubclass(sampler, Sampler)):
-        raise TypeError(f"{sampler!r} is not a subclass of toolkit.sampling.Sampler")
+        raise TypeError(f"{sampler!r} is not a subclass of toolkit.planning.sampling.Sampler")
     if name in SAMPLERS and SAMPLERS[name] is not sampler and not replace:
         raise ValueError(f"a sampler called {name!r} exists ({SAMPLERS[name].__name__}); pass replace=True to rebind it")
     SAMPLERS[name] = sampler

@@ -1,21 +1,4 @@
-"""The Viser viewer: a scenario's workspace, robot, samples, roadmap and path in a browser.
-
-::
-
-    from toolkit import viewer
-    v = viewer.launch("3do", seed=0)          # prints the URL to open
-    v.set_configuration(v.robot.lower)        # move the robot; colors follow the checker
-    v.stop()                                  # frees the port
-
-The robot's link boxes are colored by the exact checker (green valid, red in
-collision, §III). With a learned model (``checkpoint=`` from ``toolkit train``) a
-wireframe around them shows its predicted probability of validity and a label marks
-disagreements; samples are colored by exact vs predicted validity, and planning runs
-the paper's Algorithm 1 (§III-B). For a notebook, :meth:`Viewer.iframe` and :func:`embed` give
-a static snapshot and :meth:`Viewer.animation_iframe` the robot moving along the planned path,
-each a self-contained page that needs no server. Drawing helpers live in :mod:`toolkit.viewer_scene`,
-the GUI panel in :mod:`toolkit.viewer_gui`, browser screenshots in :mod:`toolkit.viewer_browser`.
-"""
+"""The live viewer: a :class:`Viewer` serves one scenario's scene and its GUI panel; snapshots for notebooks."""
 
 from __future__ import annotations
 
@@ -33,13 +16,14 @@ import numpy as np
 import rich
 import viser
 
-from . import prm, queries, scenarios
-from . import viewer_scene as draw
-from .collision import CollisionChecker, exact_checker
-from .robots import BASES
-from .sampling import make_sampler
-from .viewer_gui import Panel
-from .workspace import Workspace
+from toolkit import scenarios
+from toolkit.geometry.collision import CollisionChecker, exact_checker
+from toolkit.geometry.robots import BASES
+from toolkit.geometry.workspace import Workspace
+from toolkit.planning import prm, queries
+from toolkit.planning.sampling import make_sampler
+from toolkit.viewer import drawing as draw
+from toolkit.viewer.panel import Panel
 
 Predictor = Callable[[Workspace], CollisionChecker]  # workspace -> checker with are_valid(Q), probability(Q)
 LAYERS = ("obstacles", "robot", "prediction", "samples", "roadmap", "path")
@@ -60,8 +44,10 @@ class Viewer:
         if checkpoint is not None and predictor is not None:
             raise ValueError("give a checkpoint or a predictor, not both")
         if checkpoint is not None:
-            from .checkpoints import load_models  # torch: only when a model is asked for
-            from .learned import LearnedChecker
+            from toolkit.learning.checkpoints import (
+                load_models,  # torch: only when a model is asked for
+            )
+            from toolkit.learning.learned import LearnedChecker
 
             predictor = partial(LearnedChecker, models=load_models(checkpoint))
         self.predictor = predictor
@@ -257,7 +243,7 @@ class Viewer:
         ``frames`` configurations evenly spaced along the path (:meth:`path_configurations`),
         ``seconds / (frames - 1)`` apart, each colored by the exact checker (and the model's
         wireframe, if one is loaded). The camera starts framing the whole motion
-        (:func:`toolkit.viewer_scene.path_camera`); the page plays the recording in a loop,
+        (:func:`toolkit.viewer.drawing.path_camera`); the page plays the recording in a loop,
         with a timeline to pause and scrub. The robot and the camera are put back afterwards.
         """
         if frames < 2 or not seconds > 0:

@@ -28,9 +28,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from .collision import CollisionChecker
-from .ragged import ragged
-from .robots import BoxRobot
+from toolkit.geometry.collision import CollisionChecker
+from toolkit.geometry.robots import BoxRobot
+from toolkit.util.ragged import ragged
 
 MAX_BATCH = 100_000  # configurations per checker call
 MIN_BATCH = 256  # check_edges: configurations in its first, coarsest call (when the segments have that many)

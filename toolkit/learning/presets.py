@@ -2,11 +2,11 @@
 
 ``paper``: the paper's sizes and data counts; the MLP sees ``[z, q]`` and trains with
 Adagrad at learning rate 0.1 and dropout 0.5; the CAE has lambda = 1e-3 and Eq. (1)'s
-loss summed over the cells (``cae_loss="sum"``; :meth:`~toolkit.models.CAE.loss` sets
+loss summed over the cells (``cae_loss="sum"``; :meth:`~toolkit.learning.models.CAE.loss` sets
 out the other reading, §IV-B1's "mean square error"). Where the paper is silent, the
 CAE's epochs and the MLP's epochs, batch, initialization and input scaling were chosen
 by validation on held-out training workspaces, never the unseen test (``toolkit tune``,
-:mod:`toolkit.tuning`; its table is in ``docs/fidelity.md`` §5); the CAE's batch (10)
+:mod:`toolkit.experiments.tuning`; its table is in ``docs/fidelity.md`` §5); the CAE's batch (10)
 and the decision threshold (0.5) are ours. One deviation: the CAE trains with AdamW at
 1e-4, because with Adagrad at the paper's rate it diverges or collapses to the all-free
 grid. Planning with and without the model is the paper's Algorithm 1
@@ -14,7 +14,7 @@ grid. Planning with and without the model is the paper's Algorithm 1
 
 ``strong``: what it takes to make the idea work. Its CAE trains on thousands of
 generated grids (``cae_workspaces``) so it stops memorizing; its MLP sees
-``[patch, pose]`` (:mod:`toolkit.encoding`): the occupancy around the robot and where
+``[patch, pose]`` (:mod:`toolkit.learning.encoding`): the occupancy around the robot and where
 each link box is, by forward kinematics, instead of only ``z``, which once the MLP sees
 the patch adds nothing, so ``toolkit train`` leaves its CAE untrained unless asked
 (``--cae``). A small MLP (the learned checker must stay much faster than the exact
@@ -32,7 +32,7 @@ from __future__ import annotations
 import hashlib
 from dataclasses import dataclass, replace
 
-from .prm import PAPER_BASELINE
+from toolkit.planning.prm import PAPER_BASELINE
 
 
 @dataclass(frozen=True)
@@ -40,7 +40,7 @@ class Preset:
     """Every setting of one training recipe."""
 
     name: str
-    encoding: str  # MLP input: "raw" = [z, q] (paper), "local" = [z, patch, pose] (see toolkit.encoding)
+    encoding: str  # MLP input: "raw" = [z, q] (paper), "local" = [z, patch, pose] (see toolkit.learning.encoding)
     optimizer: str  # "adagrad" or "adamw", for the MLP
     lr: float
     cae_optimizer: str

@@ -25,7 +25,7 @@ import numpy as np
 from matplotlib import image as mpimg
 from matplotlib.colors import rgb_to_hsv
 
-from . import viewer_scene as draw
+from toolkit.viewer import drawing as draw
 
 CHROMIUM_NAMES = ("chromium", "chromium-browser", "google-chrome")
 CANVAS_ROWS = (0.2, 0.95)  # fractions of the height clear of the top-left notice and the bottom edge

@@ -28,23 +28,11 @@ from pathlib import Path
 import numpy as np
 from tqdm.auto import tqdm
 
-from .collision import exact_checker
-from .scenarios import Scenario
-from .workspace import Workspace
+from toolkit.geometry.collision import exact_checker
+from toolkit.geometry.workspace import Workspace
+from toolkit.scenarios import Scenario, stream_rng
 
 SPLITS = ("train", "seen_test", "unseen_test")
-STREAMS = {"seen": 0, "unseen": 1, "query": 2, "train_samples": 3, "test_samples": 4, "unseen_samples": 5,
-           "unseen_uniform": 6, "cae_grids": 7}
-
-
-def stream_rng(seed: int, stream: str, index: int) -> np.random.Generator:
-    """The generator for item ``index`` of a named stream ('seen', 'unseen', 'query', ...)."""
-    return np.random.default_rng([int(seed), STREAMS[stream], int(index)])
-
-
-def workspaces(scenario: Scenario, stream: str, count: int, seed: int) -> list[Workspace]:
-    """``count`` workspaces of a stream: 'seen' (training), 'unseen' or 'query' (planning)."""
-    return [scenario.make_workspace(stream_rng(seed, stream, i)) for i in range(count)]
 
 
 def occupancy_grids(scenario: Scenario, stream: str, count: int, seed: int, progress: bool = False) -> np.ndarray:
@@ -181,8 +169,8 @@ def make_splits(scenario: Scenario, seed: int = 0, samples_per_workspace: int | 
     n_seen = scenario.n_seen if n_seen is None else n_seen
     n_seen_test = min(n_seen, scenario.n_seen_test if n_seen_test is None else n_seen_test)
     n_unseen = scenario.n_unseen if n_unseen is None else n_unseen
-    seen = workspaces(scenario, "seen", n_seen, seed)
-    unseen = workspaces(scenario, "unseen", n_unseen, seed)
+    seen = scenario.workspaces("seen", n_seen, seed)
+    unseen = scenario.workspaces("unseen", n_unseen, seed)
     return {
         "train": label_workspaces(scenario, seen, n, seed, "train_samples", progress, "train samples"),
         "seen_test": label_workspaces(scenario, seen[:n_seen_test], n, seed, "test_samples", progress, "seen test samples"),

@@ -19,11 +19,12 @@ import torch
 from torch import nn
 from tqdm.auto import tqdm
 
-from . import data, metrics, presets, scenarios
-from .data import CollisionDataset
-from .models import CAE, CollisionPredictor, build_predictor
-from .presets import Preset
-from .scenarios import Scenario
+from toolkit import scenarios
+from toolkit.learning import data, metrics, presets
+from toolkit.learning.data import CollisionDataset
+from toolkit.learning.models import CAE, CollisionPredictor, build_predictor
+from toolkit.learning.presets import Preset
+from toolkit.scenarios import Scenario
 
 CALIBRATION_THRESHOLDS = np.linspace(0.05, 0.95, 91)
 
@@ -161,7 +162,7 @@ def evaluate(models: TrainedModels, splits: dict[str, CollisionDataset]) -> dict
     left untrained (``models.history`` without ``"cae"``) gives ``{"trained": False}``.
     ``mlp.seen`` and ``mlp.unseen`` score the balanced test samples; ``mlp.unseen_uniform``
     scores the paper's unseen test, validity-blind samples in the unseen workspaces
-    (``splits["unseen_uniform"]``, or :func:`toolkit.data.validity_blind_split` of the
+    (``splits["unseen_uniform"]``, or :func:`toolkit.learning.data.validity_blind_split` of the
     unseen workspaces). Each holds ``acc``, ``tpr``, ``tnr`` and ``always_valid``, the
     accuracy of answering "valid" on the same samples (their share of valid ones).
     """

@@ -21,7 +21,7 @@ from scipy.sparse import csr_matrix
 from scipy.sparse.csgraph import connected_components, dijkstra
 from scipy.spatial import cKDTree
 
-from .robots import BoxRobot
+from toolkit.geometry.robots import BoxRobot
 
 
 class Roadmap:

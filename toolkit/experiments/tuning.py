@@ -20,8 +20,8 @@ from the training set:
    the first setting in grid order, the cheapest, whose accuracy lies within one
    standard error of the best.
 
-The unseen workspaces are never generated. ``toolkit/presets.py`` states what this chose;
-``docs/fidelity.md`` (§5) shows the table. Like :func:`toolkit.ablation.ablate`, every
+The unseen workspaces are never generated. ``toolkit/learning/presets.py`` states what this chose;
+``docs/fidelity.md`` (§5) shows the table. Like :func:`toolkit.experiments.ablation.ablate`, every
 trained row is cached in ``out/cache`` under its preset's fingerprint, so an interrupted
 run resumes and a changed recipe is trained again.
 """
@@ -36,9 +36,11 @@ from pathlib import Path
 import numpy as np
 import torch
 
-from . import data, metrics, outputs, presets, scenarios, training
-from .experiments import Stages
-from .models import build_predictor
+from toolkit import scenarios
+from toolkit.experiments.reproduce import Stages
+from toolkit.learning import data, metrics, presets, training
+from toolkit.learning.models import build_predictor
+from toolkit.util import outputs
 
 VALIDATION_SHARE = 0.2
 CAE_EPOCHS = (100, 500, 1000)
@@ -57,7 +59,7 @@ def tune(scenario_name: str, out: str | Path, seed: int = 0, quick: bool = False
     stages = Stages(out, {"tuning": scenario.name, "quick": bool(quick), "seed": int(seed)}, progress)
     paper = presets.get("paper")
     n_seen = presets.QUICK_WORKSPACES[0] if quick else scenario.n_seen
-    seen = data.workspaces(scenario, "seen", n_seen, seed)
+    seen = scenario.workspaces("seen", n_seen, seed)
     train = data.label_workspaces(scenario, seen, scenario.samples_per_workspace, seed, "train_samples", progress,
                                   "train samples")  # the paper preset's training split (data.make_splits)
     n_fit = n_seen - max(1, int(round(VALIDATION_SHARE * n_seen)))

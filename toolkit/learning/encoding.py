@@ -6,7 +6,7 @@
   for robots of several links, where each link box is (its centre relative to the
   base cell's centre, its long axis), from forward kinematics.
 - :class:`LinkKinematics`: that forward kinematics, batched, float32: the same frames
-  as :meth:`toolkit.robots.BoxRobot.link_frames` (a test holds it to it).
+  as :meth:`toolkit.geometry.robots.BoxRobot.link_frames` (a test holds it to it).
 
 Both take torch tensors (training, GPU) or numpy arrays (the learned checker on CPU:
 a few hundred configurations per call, where numpy's per-operation cost is about
@@ -15,7 +15,7 @@ same name and meaning in numpy (>= 2.0) and torch.
 
 The patch depends only on the workspace and the base cell, so :meth:`InputEncoding.cell_patches`
 lists it for every cell at once; the predictor folds it into a per-workspace table
-(:class:`toolkit.models.WorkspaceMargin`).
+(:class:`toolkit.learning.models.WorkspaceMargin`).
 """
 
 from __future__ import annotations
@@ -26,7 +26,7 @@ import numpy as np
 import torch
 from torch import nn
 
-from .robots import AXES, BoxRobot
+from toolkit.geometry.robots import AXES, BoxRobot
 
 
 def reach_cells(robot: BoxRobot, samples: int = 20_000) -> int:

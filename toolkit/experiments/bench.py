@@ -20,14 +20,19 @@ from typing import Callable
 import numpy as np
 import torch
 
-from . import data, presets, queries
-from .collision import exact_checker
-from .learned import LearnedChecker
-from .local_planner import certify_edges, check_edges, default_resolution
-from .models import build_predictor
-from .prm import PRMOptions
-from .scenarios import Scenario
-from .training import TrainedModels
+from toolkit.geometry.collision import exact_checker
+from toolkit.learning import presets
+from toolkit.learning.learned import LearnedChecker
+from toolkit.learning.models import build_predictor
+from toolkit.learning.training import TrainedModels
+from toolkit.planning import queries
+from toolkit.planning.local_planner import (
+    certify_edges,
+    check_edges,
+    default_resolution,
+)
+from toolkit.planning.prm import PRMOptions
+from toolkit.scenarios import Scenario
 
 
 def median_seconds(fn, repeats: int = 5) -> float:
@@ -94,7 +99,7 @@ def learned_throughput(scenario: Scenario, preset: str = "paper", batch: int = 1
 
 def _exact_call(scenario: Scenario, batch: int = 20_000, seed: int = 0) -> tuple[Callable[[], object], int]:
     """The exact checker asked about ``batch`` uniform samples in a query workspace, and ``batch``."""
-    ws = data.workspaces(scenario, "query", 1, seed)[0]
+    ws = scenario.workspaces("query", 1, seed)[0]
     checker = exact_checker(ws, scenario.robot)
     Q = scenario.robot.sample(np.random.default_rng(seed), batch)
     return (lambda: checker.are_valid(Q)), batch
@@ -109,7 +114,7 @@ def _learned_call(scenario: Scenario, preset: str = "paper", batch: int = 10_000
         torch.manual_seed(seed)
         predictor = build_predictor(scenario, recipe.encoding, recipe.mlp_hidden, recipe.dropout, recipe.latent_input).eval()
         models = TrainedModels(scenario, recipe, predictor, seed)
-    ws = data.workspaces(scenario, "query", 1, seed)[0]
+    ws = scenario.workspaces("query", 1, seed)[0]
     checker = LearnedChecker(ws, models)
     Q = scenario.robot.sample(np.random.default_rng(seed), batch)
     return (lambda: checker.are_valid(Q)), batch
@@ -123,7 +128,7 @@ def edge_checks(scenario: Scenario, n_segments: int = 300, seed: int = 0, repeat
     a path's edges look like these). Per resolution: median seconds of each, and the
     configurations each checked (``certify_edges`` also bounds clearances).
     """
-    ws = data.workspaces(scenario, "query", 1, seed)[0]
+    ws = scenario.workspaces("query", 1, seed)[0]
     exact, robot, rng = exact_checker(ws, scenario.robot), scenario.robot, np.random.default_rng(seed)
     Q0 = robot.sample(rng, 20 * n_segments)
     Q0 = Q0[exact.are_valid(Q0)]
@@ -184,12 +189,12 @@ def versus_ompl(scenario: Scenario, n_queries: int = 10, seed: int = 9000, model
     ``paper_baseline`` is False) and, with ``models``, the best exact planner with
     prediction (the model's preset's options, the workspace's encoding counted in its
     time). OMPL's: each of ``ompl_planners`` (classes of ``ompl.geometric``, default PRM
-    and RRTConnect) through :mod:`toolkit.ompl`, the same exact checker answering one
+    and RRTConnect) through :mod:`toolkit.planning.ompl`, the same exact checker answering one
     state per call, with ``ompl_seconds`` per query. Edge resolution matched: OMPL's
     state space measures distance as ``robot.motion_bound``, and its validity-checking
     resolution is ``resolution / space.getMaximumExtent()``, so that no robot point
     moves farther than the scenario's resolution between two checks, as in our local
-    planner (OMPL checks at least as many points a motion: :mod:`toolkit.ompl`). Every
+    planner (OMPL checks at least as many points a motion: :mod:`toolkit.planning.ompl`). Every
     returned path is then checked by
     a fresh exact checker at 10x finer resolution (ours verify that themselves; OMPL's
     only check at the resolution). Time is the wall time of the whole call.
@@ -200,9 +205,9 @@ def versus_ompl(scenario: Scenario, n_queries: int = 10, seed: int = 9000, model
     checker was asked about, clearance bounds included: one call each for OMPL), and
     ``seconds`` (per query).
     """
-    from . import ompl as toolkit_ompl
-    from .local_planner import path_is_valid
-    from .prm import PAPER_BASELINE, plan
+    from toolkit.planning import ompl as toolkit_ompl
+    from toolkit.planning.local_planner import path_is_valid
+    from toolkit.planning.prm import PAPER_BASELINE, plan
 
     if unknown := [name for name in ompl_planners if not hasattr(toolkit_ompl.og, name)]:
         raise ValueError(f"ompl.geometric has no planner(s) {unknown}")

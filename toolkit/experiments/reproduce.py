@@ -2,12 +2,12 @@
 
 ``reproduce(scenario, preset, quick, seed, out)`` runs the stages
 
-1. data: the seen / unseen splits (:mod:`toolkit.data`);
-2. models: the CAE and MLP (:mod:`toolkit.training`), a checkpoint folder;
+1. data: the seen / unseen splits (:mod:`toolkit.learning.data`);
+2. models: the CAE and MLP (:mod:`toolkit.learning.training`), a checkpoint folder;
 3. learning: Table 1 and Table 2 measures, and P(valid) on the unseen test set;
 4. planning: every sampler, without and with prediction in turns query by query, on the paper's queries
    (:mod:`toolkit.queries`), the four samplers spread over one process per core;
-5. throughput: exact and learned checker speed (:mod:`toolkit.bench`);
+5. throughput: exact and learned checker speed (:mod:`toolkit.experiments.bench`);
 
 and writes ``out/results.json`` (the contract's keys), ``out/tables.md`` (our value
 next to the published one in every cell) and PNG figures. Each stage's product is
@@ -35,10 +35,14 @@ import numpy as np
 import torch
 from tqdm.auto import tqdm
 
-from . import bench, checkpoints, outputs, paper_numbers, plots, queries, scenarios, training
-from .data import SPLITS, CollisionDataset
-from .learned import LearnedChecker
-from .paper_numbers import SAMPLERS
+from toolkit import plots, scenarios
+from toolkit.experiments import bench, paper_numbers
+from toolkit.experiments.paper_numbers import SAMPLERS
+from toolkit.learning import checkpoints, training
+from toolkit.learning.data import SPLITS, CollisionDataset
+from toolkit.learning.learned import LearnedChecker
+from toolkit.planning import queries
+from toolkit.util import outputs
 
 MODES = ("without", "with")
 QUICK_QUERIES = {"2ds": (2, 2), "3do": (1, 2), "3dc7": (3, 1), "3dc9": (3, 1)}  # (workspaces, pairs each)

@@ -4,12 +4,12 @@
 every change above it and adds its own, starting from the ``paper`` preset (§IV-B3).
 Every row is scored on the same test samples: seen workspaces (balanced), unseen
 workspaces balanced and validity-blind as the paper (§IV-A, see
-:func:`toolkit.data.validity_blind_split`), with the accuracy of answering "valid"
+:func:`toolkit.learning.data.validity_blind_split`), with the accuracy of answering "valid"
 beside them, the CAE's unseen reconstruction, and the seconds training took. Rows
 that change nothing in the CAE reuse the CAE of the row above (its seconds are
 counted once, in the row that trained it).
 
-Like :func:`toolkit.experiments.reproduce`, each row is cached in ``out/cache`` as it
+Like :func:`toolkit.experiments.reproduce.reproduce`, each row is cached in ``out/cache`` as it
 finishes, under its preset's fingerprint, so an interrupted run resumes and a changed
 recipe is trained again; ``out/ablation.json`` and
 ``out/ablation.md`` hold the table. ``docs/fidelity.md`` reads it.
@@ -24,9 +24,11 @@ from pathlib import Path
 
 import torch
 
-from . import data, outputs, presets, scenarios, training
-from .experiments import Stages
-from .models import CAE
+from toolkit import scenarios
+from toolkit.experiments.reproduce import Stages
+from toolkit.learning import data, presets, training
+from toolkit.learning.models import CAE
+from toolkit.util import outputs
 
 # (key, what changes, the Preset fields it sets); each row keeps the changes of the rows above it.
 STEPS: list[tuple[str, str, dict]] = [
@@ -42,7 +44,7 @@ STEPS: list[tuple[str, str, dict]] = [
     ("more_workspaces", "1000 training workspaces instead of the paper's (100 samples each), 20 epochs",
      {"n_seen": 1000, "mlp_epochs": 20}),
     ("wider", "MLP 64-32 instead of the paper's widths", {"mlp_hidden": (64, 32)}),
-    ("local", "MLP input: occupancy patch and link features beside z and q (toolkit.encoding)", {"encoding": "local"}),
+    ("local", "MLP input: occupancy patch and link features beside z and q (toolkit.learning.encoding)", {"encoding": "local"}),
     ("no_z", "without z: the MLP sees the patch and pose only", {"latent_input": False}),
 ]
 # The CAE settings a row may change; a row that changes none reuses the CAE above it (the MLP optimizer's weight

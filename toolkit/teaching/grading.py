@@ -27,7 +27,7 @@ import sys
 import tempfile
 from pathlib import Path
 
-ASSIGNMENTS = Path(__file__).resolve().parent.parent / "tutorials" / "assignments"
+ASSIGNMENTS = Path(__file__).resolve().parents[2] / "tutorials" / "assignments"
 TIMEOUT_S = 600  # seconds a submission may run before it is stopped and scored 0
 
 

@@ -28,10 +28,12 @@ from pathlib import Path
 import numpy as np
 import torch
 
-from . import __version__, outputs, presets, scenarios
-from .models import CollisionPredictor, build_predictor
-from .presets import Preset
-from .training import TrainedModels
+from toolkit import __version__, scenarios
+from toolkit.learning import presets
+from toolkit.learning.models import CollisionPredictor, build_predictor
+from toolkit.learning.presets import Preset
+from toolkit.learning.training import TrainedModels
+from toolkit.util import outputs
 
 WEIGHTS, META = "weights.pt", "meta.json"
 FORMAT = 1

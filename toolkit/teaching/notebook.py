@@ -5,7 +5,7 @@ notebook runs top to bottom in about a minute (the test suite runs every noteboo
 so); it never changes which code runs. A notebook asks for its sizes with
 :func:`sized`::
 
-    from toolkit.notebook import sized, trained_models
+    from toolkit.teaching.notebook import sized, trained_models
     n_workspaces = sized(full=200, quick=20)
     models = trained_models("2ds", "strong")   # trains once (about 30 s), then loads in a second
 
@@ -23,8 +23,9 @@ import uuid
 from pathlib import Path
 from typing import TypeVar
 
-from . import checkpoints, presets, threads, training
-from .training import TrainedModels
+from toolkit.learning import checkpoints, presets, training
+from toolkit.learning.training import TrainedModels
+from toolkit.util import threads
 
 QUICK_ENV = "TOOLKIT_QUICK"
 CACHE_ENV = "TOOLKIT_CACHE"

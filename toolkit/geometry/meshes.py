@@ -22,7 +22,7 @@ mesh (STL, OBJ, GLB). Three questions decide how a mesh becomes a workspace
   other by numpy's round-half-to-even, growing a unit block to as many as 27 cells;
   away from cell boundaries the two grids agree (``tests/test_mesh_workspace.py``).
 
-``python -m toolkit.meshes PATH`` writes the demo room (:func:`room`) to ``PATH``
+``python -m toolkit.geometry.meshes PATH`` writes the demo room (:func:`room`) to ``PATH``
 (any format trimesh exports by suffix: ``.stl``, ``.obj``, ``.glb``).
 """
 
@@ -221,7 +221,7 @@ def main(argv: list[str] | None = None) -> int:
     """Write the demo room to the path given (its suffix picks the format)."""
     args = sys.argv[1:] if argv is None else argv
     if len(args) != 1:
-        print("usage: python -m toolkit.meshes PATH  (e.g. tutorials/data/room.stl)", file=sys.stderr)
+        print("usage: python -m toolkit.geometry.meshes PATH  (e.g. tutorials/data/room.stl)", file=sys.stderr)
         return 2
     room().export(args[0])
     return 0

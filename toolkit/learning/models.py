@@ -8,7 +8,7 @@
   ``state_dict()``, detached, so there it changes the loss but not the training).
 - :class:`CollisionMLP`: ``[z, q] -> 2`` logits (invalid, valid), hidden blocks of
   Linear -> PReLU -> Dropout(p) (§IV-B2).
-- :class:`~toolkit.encoding.InputEncoding` (in :mod:`toolkit.encoding`): what the MLP
+- :class:`~toolkit.learning.encoding.InputEncoding` (in :mod:`toolkit.learning.encoding`): what the MLP
   sees, the paper's ``[z, q]`` or ``[z, patch, pose]`` (the ``strong`` preset leaves out ``z``).
 - :class:`CollisionPredictor`: the three together, one ``state_dict``;
   :meth:`~CollisionPredictor.for_workspace` freezes it in one workspace as a
@@ -21,8 +21,8 @@ import numpy as np
 import torch
 from torch import nn
 
-from .encoding import InputEncoding, reach_cells
-from .scenarios import Scenario
+from toolkit.learning.encoding import InputEncoding, reach_cells
+from toolkit.scenarios import Scenario
 
 VALID = 1  # class index of "valid" in the MLP's two logits
 PRELU_SLOPE = 0.25  # nn.PReLU's initial negative slope

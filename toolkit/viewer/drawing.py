@@ -19,8 +19,8 @@ import trimesh
 import viser
 import viser.transforms as vtf
 
-from .robots import BoxRobot
-from .workspace import Workspace
+from toolkit.geometry.robots import BoxRobot
+from toolkit.geometry.workspace import Workspace
 
 FLAT_HEIGHT = 1.0  # height of a 2D block in the flat 3D scene
 FLAT_ROBOT_HEIGHT = 1.5  # height of the 2D point robot's square

@@ -2,7 +2,7 @@
 
 Used by ``tests/test_jupyterlab.py`` and to make the README's screenshot::
 
-    python -m toolkit.lab_browser notebooks/05_3d_scenes.ipynb --screenshot docs/jupyterlab.png
+    python -m toolkit.teaching.lab_browser notebooks/05_3d_scenes.ipynb --screenshot docs/jupyterlab.png
 
 The notebook is copied into a temporary folder first (JupyterLab saves what it
 runs; the original stays without outputs), a JupyterLab server starts on
@@ -32,7 +32,7 @@ from dataclasses import asdict, dataclass
 from pathlib import Path
 from typing import Iterator
 
-from .viewer_browser import CHROMIUM_ARGS, find_chromium
+from toolkit.viewer.browser import CHROMIUM_ARGS, find_chromium
 
 WINDOW = (1400, 1000)  # (width, height) of the page
 SETTINGS = {  # JupyterLab settings for the run: no news pop-up; every cell in the page, also those scrolled away

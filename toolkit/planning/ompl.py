@@ -37,10 +37,10 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .collision import CollisionChecker
-from .local_planner import default_resolution
-from .robots import BoxRobot
-from .sampling import make_sampler
+from toolkit.geometry.collision import CollisionChecker
+from toolkit.geometry.robots import BoxRobot
+from toolkit.planning.local_planner import default_resolution
+from toolkit.planning.sampling import make_sampler
 
 INSTALL = "pip install 'sample-collision-toolkit[ompl]'  (or: pip install ompl)"
 
@@ -49,7 +49,7 @@ try:
     from ompl import geometric as og
     from ompl import util as ou
 except ImportError as error:  # an optional extra: say how to get it
-    raise ImportError(f"toolkit.ompl needs OMPL's Python bindings, which are not installed: {INSTALL}") from error
+    raise ImportError(f"toolkit.planning.ompl needs OMPL's Python bindings, which are not installed: {INSTALL}") from error
 
 
 def state_space(robot: BoxRobot) -> ob.CompoundStateSpace:

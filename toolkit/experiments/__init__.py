@@ -1,0 +1,13 @@
+"""The paper's results (§V), reproduced and extended: where learning and planning meet.
+
+Reading order:
+
+1. :mod:`toolkit.experiments.config` — ``RunConfig``: one run's scenario, preset, seed and sizes;
+2. :mod:`toolkit.experiments.pipeline` — data, training, evaluation and a checkpoint, in one call;
+3. :mod:`toolkit.experiments.paper_numbers` — the published figures;
+4. :mod:`toolkit.experiments.reproduce` — ``toolkit reproduce``: Tables 1-3 and figures, resumable;
+5. :mod:`toolkit.experiments.tables` — the tables beside the paper's;
+6. :mod:`toolkit.experiments.bench` — throughput and planner benchmarks (``toolkit bench``);
+7. :mod:`toolkit.experiments.ablation` — the paper's recipe to ours, one change at a time;
+8. :mod:`toolkit.experiments.tuning` — the paper's unstated settings, chosen on held-out workspaces.
+"""

@@ -1,0 +1,195 @@
+"""Planning queries as in the paper (§IV-A) and running a sampler over them, with or without prediction.
+
+2DS and 3DO: 10 workspaces x 10 start/goal pairs; 3DC: 100 workspaces x 1 pair
+(``scenario.query_workspaces x scenario.queries_per_workspace``). Workspaces come
+from the ``'query'`` stream of :meth:`toolkit.scenarios.Scenario.workspaces`; starts and goals are
+uniform configurations the exact checker accepts, drawn from a generator derived
+from ``(seed, workspace index)``, and at least a quarter of the region's diagonal
+apart (base positions), so every query means travelling.
+
+``run_queries`` solves each query from scratch (a fresh roadmap, as in the paper),
+with torch and numpy's BLAS on one thread (:func:`one_thread`), and summarizes: mean
+and std of ``sampling_s`` and ``total_s`` (and their medians), ``success_rate``, and
+``path_valid_rate``, the fraction of returned paths that a fresh exact checker
+accepts at 10x finer resolution than the local planner's. ``run_interleaved`` does
+the same in several modes (without and with prediction) taking turns query by
+query, so that the ratio of their times is measured under the same conditions.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+from typing import Callable
+
+import numpy as np
+
+from toolkit.geometry.collision import CollisionChecker, exact_checker
+from toolkit.geometry.workspace import Workspace
+from toolkit.learning.learned import LearnedChecker
+from toolkit.planning.local_planner import path_is_valid
+from toolkit.planning.prm import PlanResult, PRMOptions, plan
+from toolkit.scenarios import STREAMS, Scenario
+from toolkit.util import threads
+
+PAIR_STREAM = 1  # appended to the workspace's seed words: the start/goal pairs of query workspace i
+
+
+@dataclass(frozen=True)
+class Query:
+    """One start/goal pair in workspace number ``workspace_index`` of the query stream."""
+
+    workspace_index: int
+    workspace: Workspace
+    start: np.ndarray  # (dof,)
+    goal: np.ndarray  # (dof,)
+
+
+def query_pairs(scenario: Scenario, ws: Workspace, count: int, rng: np.random.Generator,
+                min_separation: float = 0.25) -> list[tuple[np.ndarray, np.ndarray]]:
+    """``count`` (start, goal) pairs valid under the exact checker, base positions ``min_separation`` x diagonal apart."""
+    robot, checker = scenario.robot, exact_checker(ws, scenario.robot)
+    far = min_separation * float(np.linalg.norm(ws.upper - ws.lower))
+    pairs: list[tuple[np.ndarray, np.ndarray]] = []
+    for _ in range(1000):
+        Q = robot.sample(rng, 256)  # (256, dof)
+        Q = Q[checker.are_valid(Q)]
+        for start, goal in zip(Q[0::2], Q[1::2]):
+            if len(pairs) < count and np.linalg.norm(goal[: robot.dim] - start[: robot.dim]) >= far:
+                pairs.append((start, goal))
+        if len(pairs) == count:
+            return pairs
+    raise RuntimeError(f"could not find {count} valid, separated start/goal pairs in this workspace")
+
+
+def default_options(scenario: Scenario, checker: CollisionChecker | None = None, **overrides) -> PRMOptions:
+    """The planner settings of a scenario: the paper's |S| and the scenario's local-planner resolution, and otherwise
+    :class:`~toolkit.prm.PRMOptions`' defaults (the best exact planner: lazy edges, growing rounds); with a learned
+    ``checker``, the edge rule and rounds of its model's preset (``Preset.planner_options``)."""
+    settings = {"n_samples": scenario.plan_samples, "resolution": scenario.plan_resolution}
+    if isinstance(checker, LearnedChecker):
+        settings.update(checker.models.preset.planner_options())
+    settings.update(overrides)
+    return PRMOptions(**settings)
+
+
+def make_queries(scenario: Scenario, seed: int = 0, n_workspaces: int | None = None,
+                 per_workspace: int | None = None) -> list[Query]:
+    """The paper's query set (counts default to the scenario's), reproducible from ``seed``."""
+    n_workspaces = scenario.query_workspaces if n_workspaces is None else n_workspaces
+    per_workspace = scenario.queries_per_workspace if per_workspace is None else per_workspace
+    queries = []
+    for i, ws in enumerate(scenario.workspaces("query", n_workspaces, seed)):
+        rng = np.random.default_rng([int(seed), STREAMS["query"], i, PAIR_STREAM])
+        queries += [Query(i, ws, start, goal) for start, goal in query_pairs(scenario, ws, per_workspace, rng)]
+    return queries
+
+
+def solve_query(scenario: Scenario, query: Query, sampler: str, checker: CollisionChecker | None = None,
+                options: PRMOptions | None = None, seed=0) -> PlanResult:
+    """One query with ``sampler``; ``checker`` decides samples (None: the exact checker); by default the
+    scenario's settings and the planner options of the checker's preset (:func:`default_options`)."""
+    options = options or default_options(scenario, checker)
+    return plan(exact_checker(query.workspace, scenario.robot), query.start, query.goal, sampler=sampler,
+                checker=checker, options=options, rng=np.random.default_rng(seed))
+
+
+def run_queries(scenario: Scenario, queries: list[Query], sampler: str,
+                checker_factory: Callable[[Workspace], CollisionChecker] | None = None,
+                options: PRMOptions | None = None, seed: int = 0) -> tuple[list[dict], dict]:
+    """Solve every query with ``sampler``; ``checker_factory(workspace)`` gives the learned checker (None: exact).
+
+    The factory runs once per workspace (it encodes the workspace: Algorithm 1,
+    line 1); its time is shared among that workspace's queries and counted in their
+    ``total_s``. ``options`` None: :func:`default_options` for each query's checker.
+    Torch and numpy's BLAS run on one thread meanwhile (:func:`one_thread`). Returns
+    per-query records and the summary.
+    """
+    return run_interleaved(scenario, queries, sampler, {"run": checker_factory}, options, seed)["run"]
+
+
+def run_interleaved(scenario: Scenario, queries: list[Query], sampler: str,
+                    factories: dict[str, Callable[[Workspace], CollisionChecker] | None],
+                    options: PRMOptions | None = None, seed: int = 0) -> dict[str, tuple[list[dict], dict]]:
+    """:func:`run_queries` once per entry of ``factories`` (a name: a checker factory, or None for exact), the
+    entries taking turns query by query (who goes first rotates), each query with the same seed in every entry.
+
+    So all entries see the machine alike: these machines change speed for minutes
+    at a time (up to 2x, seen here), which moves the ratio of two runs made one
+    after the other, not that of runs made in turns. Per name: records and summary.
+    """
+    with one_thread():
+        records = _solve_all(scenario, queries, sampler, factories, options, seed)
+    return {name: (runs, summarize(runs)) for name, runs in records.items()}
+
+
+def one_thread():
+    """Torch and numpy's BLAS on one thread inside (the previous counts restored after): how queries are timed,
+    whatever ``TOOLKIT_THREADS`` says, so that times from different runs compare (:mod:`toolkit.util.threads`).
+
+    The exact checker's own work runs on one thread; the learned checker's calls are
+    small (a few hundred to a few ten thousand configurations), where intra-op threads
+    cost more than they give and, when the other core is busy, stall. Torch: 3DC-7,
+    bridge test, strong model, 100 queries on 2 cores, sampling with prediction took
+    1.2 ms a query on one thread and 2.4 ms on two. OpenBLAS (numpy's matrix products,
+    the learned checker's small calls): 3DC-7, strong model, 50 queries, sampling with
+    prediction G 5.5 -> 1.4 ms, BT 3.9 -> 1.2 ms a query on one BLAS thread.
+    """
+    return threads.limited(1)
+
+
+def _solve_all(scenario: Scenario, queries: list[Query], sampler: str,
+               factories: dict[str, Callable[[Workspace], CollisionChecker] | None], options: PRMOptions | None,
+               seed: int) -> dict[str, list[dict]]:
+    """The per-query records of :func:`run_interleaved`, per name."""
+    names = list(factories)
+    records: dict[str, list[dict]] = {name: [] for name in names}
+    checkers: dict[str, dict] = {name: {} for name in names}  # per name: workspace index -> checker
+    share = np.bincount([q.workspace_index for q in queries])  # queries per workspace
+    for n, query in enumerate(queries):
+        turn = n % len(names)
+        for name in names[turn:] + names[:turn]:
+            encode_s, factory, built = 0.0, factories[name], checkers[name]
+            if factory is not None and query.workspace_index not in built:
+                began = time.perf_counter()
+                built[query.workspace_index] = factory(query.workspace)
+                encode_s = (time.perf_counter() - began) / share[query.workspace_index]
+            result = solve_query(scenario, query, sampler, built.get(query.workspace_index), options, seed=[int(seed), n])
+            fine = result.stats["resolution"] / 10
+            valid = result.success and path_is_valid(exact_checker(query.workspace, scenario.robot), result.path, fine)
+            records[name].append(dict(result.stats, workspace=query.workspace_index, success=result.success,
+                                      path_valid=bool(valid), encode_s=encode_s,
+                                      total_s=result.stats["total_s"] + encode_s))
+    return records
+
+
+def summarize(records: list[dict]) -> dict:
+    """Means and stds over queries of the times; success and path-validity rates in [0, 1]."""
+    def values(key):
+        return np.array([r[key] for r in records], dtype=float)
+
+    summary = {"n_queries": len(records)}
+    for key in ("sampling_s", "connection_s", "query_s", "total_s", "encode_s", "exact_checks", "predicted_checks",
+                "rounds", "repairs"):
+        summary[key] = float(values(key).mean()) if records else 0.0
+        summary[key + "_std"] = float(values(key).std()) if records else 0.0
+    for key in ("sampling_s", "total_s"):  # robust to the odd slow query on a noisy machine
+        summary[key + "_median"] = float(np.median(values(key))) if records else 0.0
+    solved = [r for r in records if r["success"]]
+    summary["success_rate"] = len(solved) / len(records) if records else 0.0
+    summary["path_valid_rate"] = float(np.mean([r["path_valid"] for r in solved])) if solved else 1.0
+    return summary
+
+
+def compare_prediction(scenario: Scenario, queries: list[Query], checker_factory: Callable[[Workspace], CollisionChecker],
+                       samplers=("BS", "OB", "G", "BT"), options: PRMOptions | None = None, seed: int = 0) -> dict:
+    """Per sampler: ``{"without": summary, "with": summary, "sampling_ratio", "total_ratio"}`` (with / without),
+    the two modes in turns (:func:`run_interleaved`)."""
+    table = {}
+    for sampler in samplers:
+        runs = run_interleaved(scenario, queries, sampler, {"without": None, "with": checker_factory}, options, seed)
+        without, with_ = runs["without"][1], runs["with"][1]
+        table[sampler] = {"without": without, "with": with_,
+                          "sampling_ratio": with_["sampling_s"] / max(without["sampling_s"], 1e-12),
+                          "total_ratio": with_["total_s"] / max(without["total_s"], 1e-12)}
+    return table

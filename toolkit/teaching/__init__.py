@@ -1,0 +1,10 @@
+"""What the course around the library uses: the notebooks' helpers, running notebooks headless, a
+JupyterLab in a browser, and grading assignments.
+
+Reading order:
+
+1. :mod:`toolkit.teaching.notebook` — quick mode and the trained-model cache the notebooks share;
+2. :mod:`toolkit.teaching.notebook_runner` — run and time notebooks without a browser;
+3. :mod:`toolkit.teaching.lab_browser` — JupyterLab in headless Chromium, screenshots of rendered notebooks;
+4. :mod:`toolkit.teaching.grading` — otter-grader assignments: build, grade, report.
+"""

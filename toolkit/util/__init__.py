@@ -1,0 +1,6 @@
+"""What every layer uses and none is about the paper: the bottom of the toolkit, importing nothing of it.
+
+- :mod:`toolkit.util.ragged` — index arithmetic for batches of items of different counts;
+- :mod:`toolkit.util.outputs` — output folders checked before work, JSON written atomically;
+- :mod:`toolkit.util.threads` — how many threads torch and numpy use (one, by default).
+"""

@@ -1,0 +1,35 @@
+"""The Viser viewer: a scenario's workspace, robot, samples, roadmap and path in a browser.
+
+::
+
+    from toolkit import viewer
+    v = viewer.launch("3do", seed=0)          # prints the URL to open
+    v.set_configuration(v.robot.lower)        # move the robot; colors follow the checker
+    v.stop()                                  # frees the port
+
+The robot's link boxes are colored by the exact checker (green valid, red in
+collision, §III). With a learned model (``checkpoint=`` from ``toolkit train``) a
+wireframe around them shows its predicted probability of validity and a label marks
+disagreements; samples are colored by exact vs predicted validity, and planning runs
+the paper's Algorithm 1 (§III-B). For a notebook, :meth:`Viewer.iframe` and :func:`embed` give
+a static snapshot and :meth:`Viewer.animation_iframe` the robot moving along the planned path,
+each a self-contained page that needs no server.
+
+Reading order:
+
+1. :mod:`toolkit.viewer.drawing` — workspaces, robots, samples and paths as Viser meshes and lines;
+2. :mod:`toolkit.viewer.server` — :class:`Viewer`: the live scene; :func:`launch`, :func:`embed`;
+3. :mod:`toolkit.viewer.panel` — the GUI panel: joint sliders, samplers, planning, playback;
+4. :mod:`toolkit.viewer.browser` — the page in headless Chromium: screenshots, what they show.
+"""
+
+from toolkit.viewer.server import (
+    Viewer,
+    embed,
+    free_port,
+    launch,
+    serve_forever,
+    srcdoc_iframe,
+)
+
+__all__ = ["Viewer", "embed", "free_port", "launch", "serve_forever", "srcdoc_iframe"]
