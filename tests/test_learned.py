@@ -5,10 +5,13 @@ import json
 
 import numpy as np
 import pytest
+import torch
 
 from toolkit import cli, scenarios
+from toolkit.experiments import pipeline
+from toolkit.experiments.config import RunConfig
 from toolkit.geometry.collision import CollisionChecker, exact_checker
-from toolkit.learning import checkpoints, presets, training
+from toolkit.learning import checkpoints, presets
 from toolkit.learning.learned import LearnedChecker, load_checker
 from toolkit.planning import queries
 from toolkit.planning.prm import PRMOptions
@@ -18,8 +21,8 @@ SCENARIO = scenarios.get("2ds")
 
 @pytest.fixture(scope="module")
 def models():
-    splits = training.preset_splits(SCENARIO, "strong", seed=0, quick=True, progress=False)
-    return training.train_models(SCENARIO, "strong", splits, seed=0, progress=False, quick=True, device="cpu")
+    config = RunConfig.create(SCENARIO, "strong", quick=True, progress=False, device="cpu")
+    return pipeline.train(config, pipeline.make_splits(config))
 
 
 @pytest.fixture(scope="module")
@@ -82,6 +85,41 @@ def test_load_checker(models, workspace, tmp_path, rng):
     loaded, direct = load_checker(tmp_path, workspace), LearnedChecker(workspace, models)
     Q = SCENARIO.robot.sample(rng, 200)
     assert np.array_equal(loaded.probability(Q), direct.probability(Q))
+
+
+@pytest.mark.parametrize("change, message", [
+    ({"format": 0}, "has format 0, this toolkit reads format 1"),
+    ({"format": None}, "has format None, this toolkit reads format 1"),
+    ({"format": "absent"}, "has format none recorded, this toolkit reads format 1"),
+    ({"preset": "without auxiliary"}, r"preset does not match this toolkit's Preset \(missing \['auxiliary'\], unknown \[\]\)"),
+    ({"preset": "with colour"}, r"\(missing \[\], unknown \['colour'\]\)"),
+    ({"seed": "absent"}, r"meta.json lacks \['seed'\]"),
+])
+def test_a_checkpoint_of_another_format_is_refused_by_name(models, workspace, tmp_path, change, message):
+    checkpoints.save_checkpoint(models, tmp_path)
+    meta = json.loads((tmp_path / "meta.json").read_text())
+    key, value = next(iter(change.items()))
+    if value == "absent":
+        del meta[key]
+    elif value == "without auxiliary":
+        del meta["preset"]["auxiliary"]
+    elif value == "with colour":
+        meta["preset"]["colour"] = "blue"
+    else:
+        meta[key] = value
+    (tmp_path / "meta.json").write_text(json.dumps(meta))
+    with pytest.raises(ValueError, match=message) as refused:
+        load_checker(tmp_path, workspace)
+    assert "toolkit train" in str(refused.value)  # and says how to write it again
+
+
+def test_weights_with_other_entries_are_refused(models, workspace, tmp_path):
+    checkpoints.save_checkpoint(models, tmp_path)
+    state = torch.load(tmp_path / "weights.pt", weights_only=True)
+    state["encoding.offsets"] = torch.zeros(9, 2)  # an entry the networks do not have
+    torch.save(state, tmp_path / "weights.pt")
+    with pytest.raises(ValueError, match="weights.pt is corrupted or does not match the networks"):
+        load_checker(tmp_path, workspace)
 
 
 @pytest.mark.parametrize("preset, screened, auxiliary", [("paper", False, "exact"), ("strong", True, "confirmed")])

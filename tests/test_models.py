@@ -14,11 +14,11 @@ from toolkit.learning.encoding import (
     position_dofs,
     reach_cells,
 )
+from toolkit.learning.inference import WorkspaceMLP
 from toolkit.learning.models import (
     CAE,
     VALID,
     CollisionMLP,
-    WorkspaceMargin,
     build_predictor,
 )
 
@@ -213,31 +213,83 @@ def test_local_pose_is_the_same_in_numpy_and_torch_and_holds_the_link_centres(na
     np.testing.assert_allclose(centres + base_cell_centre, s.robot.link_boxes(Q)[0], atol=1e-4)
 
 
-@pytest.mark.parametrize("kind, latent_input", [("raw", True), ("local", True), ("local", False)])
-def test_workspace_margin_equals_the_full_network(kind, latent_input, rng):
+def _predictor_and_workspace(kind: str, latent_input: bool, rng):
+    """An untrained 3DC-9 predictor in eval mode, each PReLU with its own slope, and one workspace's grid."""
     s = scenarios.get("3dc9")
     torch.manual_seed(0)
-    predictor = build_predictor(s, kind, latent_input=latent_input, dropout=0.5).eval()
-    for slope, layer in enumerate(m for m in predictor.mlp.net if isinstance(m, nn.PReLU)):
-        layer.weight.data.fill_(0.1 * slope)  # a different slope per layer: each one must be read from its own layer
+    predictor = build_predictor(s, kind, latent_input=latent_input, dropout=0.5, mlp_init="he").eval()
+    slopes = [0.25, -0.1, 1.5, 0.0, 0.6, 2.0]  # each read from its own layer; below 0, 0 and above 1 included
+    for slope, layer in zip(slopes, (m for m in predictor.mlp.net if isinstance(m, nn.PReLU)), strict=True):
+        layer.weight.data.fill_(slope)
+    return s, predictor, torch.as_tensor(s.make_workspace(rng).occupancy())
+
+
+def _full_network_margins(predictor, grid: torch.Tensor, Q: np.ndarray) -> np.ndarray:
+    """``(N,)`` logit(valid) - logit(invalid) of the predictor's own forward pass: the reference."""
+    with torch.no_grad():
+        grids, ws_index = grid[None], torch.zeros(len(Q), dtype=torch.long)
+        x = predictor.encoding(predictor.cae.encode(grids), grids, ws_index, torch.as_tensor(Q, dtype=torch.float32))
+        logits = predictor.mlp(x)  # (N, 2)
+    return (logits[:, VALID] - logits[:, 1 - VALID]).numpy()
+
+
+@pytest.mark.parametrize("kind, latent_input", [("raw", True), ("local", True), ("local", False)])
+def test_workspace_mlp_equals_the_full_network(kind, latent_input, rng):
+    s, predictor, grid = _predictor_and_workspace(kind, latent_input, rng)
     assert predictor.encoding.out_features == predictor.mlp.in_features
     assert predictor.encoding.latent_dim == (s.latent_dim if latent_input else 0)
-    grid = torch.as_tensor(s.make_workspace(rng).occupancy())
-    Q = torch.as_tensor(s.robot.sample(rng, 50), dtype=torch.float32)
-    Q[:3, :3] = torch.tensor([[0.0, 0.0, 0.0], [11.0, 11.0, 11.0], [10.99, 0.01, 5.0]])  # cells on the grid's faces
-    margin_of = predictor.for_workspace(grid)
-    assert margin_of.table.shape == (predictor.mlp.hidden[0], 11 ** 3 if kind == "local" else 1)
+    Q = s.robot.sample(rng, 300)
+    Q[:3, :3] = [[0.0, 0.0, 0.0], [11.0, 11.0, 11.0], [10.99, 0.01, 5.0]]  # cells on the grid's faces
+    expected = _full_network_margins(predictor, grid, Q)  # (300,)
+    assert np.ptp(expected) > 1.0  # the margins vary: a constant would not test much
+    default = predictor.for_workspace(grid)
+    assert isinstance(default, WorkspaceMLP) and default.numpy_below == WorkspaceMLP.NUMPY_BELOW  # on the CPU
+    assert default.layers.table.shape == (predictor.mlp.hidden[0], 11 ** 3 if kind == "local" else 1)
+    variants = {"torch": WorkspaceMLP(predictor, grid, numpy_below=0),  # as on a GPU
+                "numpy": WorkspaceMLP(predictor, grid, numpy_below=len(Q) + 1),  # one pass
+                "numpy, chunks of 16": WorkspaceMLP(predictor, grid, numpy_below=len(Q) + 1, chunk=16),
+                "switching at 64, chunks of 16": WorkspaceMLP(predictor, grid, numpy_below=64, chunk=16)}
+    for name, workspace_mlp in variants.items():
+        for n in (0, 1, 15, 16, 17, 63, 64, 65, 300):  # both sides of the chunk size and of the numpy / torch switch
+            margins = workspace_mlp(Q[:n])
+            assert margins.dtype == np.float32 and margins.shape == (n,), (name, n)
+            np.testing.assert_allclose(margins, expected[:n], rtol=1e-5, atol=1e-4, err_msg=f"{name}, {n} configurations")
+
+
+def test_workspace_mlp_switches_to_torch_at_its_default_batch_size(rng):
+    s, predictor, grid = _predictor_and_workspace("local", False, rng)
+    n = WorkspaceMLP.NUMPY_BELOW
+    Q = s.robot.sample(rng, n)
+    expected = _full_network_margins(predictor, grid, Q)
+    workspace_mlp = predictor.for_workspace(grid)
+    np.testing.assert_allclose(workspace_mlp(Q[:n - 1]), expected[:n - 1], atol=1e-4)  # numpy, in chunks
+    np.testing.assert_allclose(workspace_mlp(Q), expected, atol=1e-4)  # torch
+
+
+def test_workspace_mlp_is_a_snapshot(rng):
+    s, predictor, grid = _predictor_and_workspace("local", True, rng)
+    Q = s.robot.sample(rng, 40)
+    workspace_mlps = [WorkspaceMLP(predictor, grid, numpy_below=below) for below in (0, 100)]  # torch, numpy
+    before = _full_network_margins(predictor, grid, Q)
     with torch.no_grad():
-        grids, ws_index = grid[None], torch.zeros(50, dtype=torch.long)
-        logits = predictor.mlp(predictor.encoding(predictor.cae.encode(grids), grids, ws_index, Q))  # (50, 2)
-    margins = margin_of(Q.numpy().astype(float))  # numpy in, numpy out (50 configurations: computed in numpy)
-    assert margins.dtype == np.float32
-    np.testing.assert_allclose(margins, (logits[:, VALID] - logits[:, 1 - VALID]).numpy(), atol=1e-4)
-    assert margin_of(Q.numpy()[:0]).shape == (0,)
-    in_torch = WorkspaceMargin(predictor, grid, numpy_below=0)  # as on a GPU (or a large call)
-    np.testing.assert_allclose(in_torch(Q.numpy()), margins, atol=1e-5)
-    margin_of.CHUNK = 16  # numpy in several chunks
-    np.testing.assert_allclose(margin_of(Q.numpy()), margins, atol=1e-6)
+        for parameter in predictor.parameters():
+            parameter.add_(0.5)  # training further
+    assert not np.allclose(_full_network_margins(predictor, grid, Q), before, atol=1e-2)
+    for workspace_mlp in workspace_mlps:
+        np.testing.assert_allclose(workspace_mlp(Q), before, atol=1e-4)
+
+
+def test_workspace_mlp_rejects_bad_input(rng):
+    s, predictor, grid = _predictor_and_workspace("local", False, rng)
+    with pytest.raises(ValueError, match=r"workspace grid \(11, 11\) does not fit the predictor's \(11, 11, 11\)"):
+        WorkspaceMLP(predictor, grid[0])
+    with pytest.raises(ValueError, match="chunk >= 1"):
+        WorkspaceMLP(predictor, grid, chunk=0)
+    workspace_mlp = predictor.for_workspace(grid)
+    with pytest.raises(ValueError, match=r"Q must have shape \(N, 9\), got \(4, 7\)"):
+        workspace_mlp(np.zeros((4, 7)))
+    with pytest.raises(ValueError, match=r"got \(9,\)"):
+        workspace_mlp(np.zeros(9))
 
 
 def test_cell_patches_match_the_patch_of_each_configuration(rng):

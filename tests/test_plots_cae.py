@@ -52,7 +52,7 @@ def test_reconstructions_mark_exactly_the_error_cells_and_title_accuracy_vs_all_
         wrong = np.sign(out) != grid
         np.testing.assert_array_equal(~np.ma.getmaskarray(marked), wrong.T)  # marked cells = sign(decoded) != input
         np.testing.assert_array_equal(marked.compressed(), grid.T[wrong.T])  # red (+1) missed, blue (-1) invented
-        title = row._suptitle.get_text()
+        title = row.get_suptitle()
         assert title.startswith(name) and f"{acc:.1%}" in title and f"all free: {np.mean(grid < 0):.1%}" in title
         assert f"{int(np.sum(wrong & (grid > 0)))} missed" in errors.get_title()
         assert f"{int(np.sum(wrong & (grid < 0)))} invented" in errors.get_title()

@@ -8,6 +8,7 @@ against python-fcl), so a figure that drew the wrong cells would fail.
 import numpy as np
 import pytest
 from matplotlib.colors import to_rgba
+from matplotlib.figure import Figure
 from matplotlib.patches import Polygon, Rectangle
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
@@ -42,6 +43,20 @@ def _image(fig, panel=0):
     return np.asarray(fig.axes[panel].images[0].get_array())
 
 
+class RecordedPolys(Poly3DCollection):
+    """A ``Poly3DCollection`` that keeps the 3D faces it was made of (matplotlib keeps them only privately)."""
+
+    def __init__(self, verts, *args, **kwargs):
+        super().__init__(verts, *args, **kwargs)
+        self.faces3d = np.asarray(verts, dtype=float)  # (faces, corners, 3)
+
+
+@pytest.fixture
+def recorded_polys(monkeypatch):
+    """The 3D boxes the figures draw, recorded with their faces."""
+    monkeypatch.setattr(cspace, "Poly3DCollection", RecordedPolys)
+
+
 # -- workspaces and grids -------------------------------------------------------------
 
 def test_workspace_figure_2d_draws_one_rectangle_per_block(square_world):
@@ -55,13 +70,13 @@ def test_workspace_figure_2d_draws_one_rectangle_per_block(square_world):
     assert fig.axes[0].get_xlim() == (0.0, 31.0)
 
 
-def test_workspace_figure_3d_draws_each_block_at_its_corners():
+def test_workspace_figure_3d_draws_each_block_at_its_corners(recorded_polys):
     ws = scenarios.get("3do").make_workspace(np.random.default_rng(1))
     fig = cspace.workspace_figure(ws)
     blocks = [c for c in fig.axes[0].collections if c.get_gid() == "block"]
-    assert len(blocks) == len(ws.boxes) and all(isinstance(b, Poly3DCollection) for b in blocks)
+    assert len(blocks) == len(ws.boxes) and all(isinstance(b, RecordedPolys) for b in blocks)
     for block, (lo, hi) in zip(blocks, ws.boxes):
-        corners = block._faces.reshape(-1, 3)  # (6 faces * 4, 3) vertices as given (matplotlib keeps no public getter)
+        corners = block.faces3d.reshape(-1, 3)  # (6 faces * 4, 3)
         np.testing.assert_allclose(corners.min(axis=0), lo)
         np.testing.assert_allclose(corners.max(axis=0), hi)
     legend = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
@@ -114,6 +129,34 @@ def test_robot_figure_projects_a_chain_by_forward_kinematics():
     xz = np.concatenate([p.get_xy() for p in _patches(fig.axes[1], "link")])
     np.testing.assert_allclose([xz[:, 1].min(), xz[:, 1].max()], [4.95, 5.05], atol=1e-9)
     assert len([c for c in fig.axes[2].collections if c.get_gid() == "link"]) == robot.n_links
+
+
+def test_draw_robot_in_3d_draws_each_link_box_at_its_pose_and_the_blocks_near_it(recorded_polys, clutter):
+    robot = robots.box_chain(3)
+    Q = np.array([[5.0, 5.0, 5.0, 0.3, -0.2, 0.1, 0.5, -1.0, 1.5], [2.0, 8.0, 3.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]])
+    fig = Figure()
+    ax = fig.add_subplot(projection="3d")
+    cspace.draw_robot(ax, robot, Q, ["C3", "C4"], "3d", clutter, margin=0.5)
+    links = [c for c in ax.collections if c.get_gid() == "link"]
+    assert len(links) == 2 * robot.n_links
+    centers, rotations, half = robot.link_boxes(Q)  # (2, L, 3), (2, L, 3, 3), (L, 3)
+    for k, box in enumerate(links):
+        i, link = divmod(k, robot.n_links)  # configuration by configuration, link by link
+        local = (box.faces3d.reshape(-1, 3) - centers[i, link]) @ rotations[i, link]  # in the link's frame
+        np.testing.assert_allclose(np.abs(local), np.broadcast_to(half[link], local.shape), atol=1e-9)  # +-half
+        np.testing.assert_allclose(box.get_facecolor()[0][:3], to_rgba(("C3", "C4")[i])[:3])
+    aabbs = robot.link_aabbs(Q)  # (2, L, 2, 3)
+    lo, hi = aabbs[:, :, 0].min(axis=(0, 1)) - 0.5, aabbs[:, :, 1].max(axis=(0, 1)) + 0.5
+    near = np.all((clutter.boxes[:, 0] <= hi) & (clutter.boxes[:, 1] >= lo), axis=1)  # (K,) blocks in the window
+    assert 0 < near.sum() == len([c for c in ax.collections if c.get_gid() == "block"])
+
+
+def test_draw_robot_rejects_an_unknown_view_and_a_colour_count_off_by_one():
+    robot, fig = robots.point_robot(), Figure()
+    with pytest.raises(ValueError, match="unknown view 'xw'"):
+        cspace.draw_robot(fig.add_subplot(), robot, [[5.0, 5.0]], ["C0"], "xw")
+    with pytest.raises(ValueError, match="2 colours for 1 configurations"):
+        cspace.draw_robot(fig.add_subplot(), robot, [[5.0, 5.0]], ["C0", "C1"], "xy")
 
 
 # -- configuration space ---------------------------------------------------------------

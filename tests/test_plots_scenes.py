@@ -7,7 +7,7 @@ from matplotlib.colors import to_rgba
 
 from toolkit import scenarios
 from toolkit.geometry.collision import exact_checker
-from toolkit.plots import scenes
+from toolkit.plots import cspace, scenes
 from toolkit.plots.cspace import INVALID_COLOR, VALID_COLOR
 
 FRAMES = 25
@@ -39,27 +39,34 @@ def line(ax, gid):
 
 
 @pytest.mark.parametrize("index", [0, FRAMES - 1])
-def test_the_robot_is_its_link_boxes_at_the_frame_colored_by_validity(crossing, index):
+def test_the_robot_is_its_link_boxes_at_the_frame_colored_by_validity(crossing, index, monkeypatch):
+    """The frame's configuration goes to ``cspace.draw_robot`` (whose boxes ``tests/test_plots_cspace.py`` holds to
+    forward kinematics) in the colour of its validity, in 3D, with the workspace."""
     robot, workspace, _, path, valid = crossing
+    drawn_robots = []
+
+    def recording(ax, robot, Q, colors, view, workspace, margin):
+        drawn_robots.append((Q, colors, view, workspace))
+        cspace.draw_robot(ax, robot, Q, colors, view, workspace, margin)
+
+    monkeypatch.setattr(scenes, "draw_robot", recording)
     fig = scenes.path_frame(robot, path, index, workspace=workspace, valid=valid)
-    scene = fig.axes[0]
-    drawn = links(scene)
+    want = VALID_COLOR if valid[index] else INVALID_COLOR
+    [(Q, colors, view, drawn_in)] = drawn_robots
+    np.testing.assert_array_equal(Q, path[index:index + 1])
+    assert (colors, view, drawn_in) == ([want], "3d", workspace)
+    drawn = links(fig.axes[0])
     assert len(drawn) == robot.n_links
-    centers, rotations, half = robot.link_boxes(path[index])  # (1, L, 3), (1, L, 3, 3), (L, 3)
-    for box, center, rotation, h in zip(drawn, centers[0], rotations[0], half):
-        corners = box._faces.reshape(-1, 3)  # (6 faces * 4, 3) as given (matplotlib keeps no public getter)
-        local = (corners - center) @ rotation  # in the link's frame: exactly +-half on every axis
-        np.testing.assert_allclose(np.abs(local), np.broadcast_to(h, local.shape), atol=1e-9)
-        want = VALID_COLOR if valid[index] else INVALID_COLOR
+    for box in drawn:
         np.testing.assert_allclose(box.get_facecolor()[0][:3], to_rgba(want)[:3])
-    assert ("valid (exact checker)" if valid[index] else "IN COLLISION") in fig._suptitle.get_text()
+    assert ("valid (exact checker)" if valid[index] else "IN COLLISION") in fig.get_suptitle()
 
 
 def test_without_validity_the_robot_is_neutral(crossing):
     robot, workspace, _, path, _ = crossing
     fig = scenes.path_frame(robot, path, 3, workspace=workspace)
     assert all(np.allclose(box.get_facecolor()[0][:3], to_rgba(scenes.UNCHECKED_COLOR)[:3]) for box in links(fig.axes[0]))
-    assert "exact" not in fig._suptitle.get_text()
+    assert "exact" not in fig.get_suptitle()
 
 
 def test_the_blocks_near_the_robot_are_drawn_and_the_trace_stays_in_the_window(crossing):
@@ -100,7 +107,7 @@ def test_the_series_panels_show_each_dof_clearance_and_probability(crossing):
     assert line(probability_ax, "threshold").get_ydata()[0] == threshold
     for ax in fig.axes[1:]:
         assert line(ax, "now").get_xdata()[0] == pytest.approx(along[index])
-    title = fig._suptitle.get_text()
+    title = fig.get_suptitle()
     assert f"frame {index} of {FRAMES - 1}" in title and f"P(valid) = {probability[index]:.2f}" in title
     assert "valid at 0.40" in title  # 0.71 >= 0.4
 
@@ -116,7 +123,7 @@ def test_the_dof_legend_lies_inside_the_figure_below_the_title(crossing, series)
     robot, workspace, _, path, _ = crossing
     fig = scenes.path_frame(robot, path, 0, **series)
     renderer = FigureCanvasAgg(fig).get_renderer()
-    title = fig._suptitle.get_window_extent(renderer)  # the Text of fig.suptitle (matplotlib keeps no public handle)
+    title = next(t for t in fig.texts if t.get_text() == fig.get_suptitle()).get_window_extent(renderer)  # suptitle's Text
     legend = fig.legends[0].get_window_extent(renderer)
     figure = fig.bbox
     assert figure.x0 <= legend.x0 and legend.x1 <= figure.x1 and figure.y0 <= legend.y0 and legend.y1 <= figure.y1

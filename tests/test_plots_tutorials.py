@@ -25,7 +25,7 @@ def test_mesh_and_grid_draws_every_triangle_and_one_cube_per_occupied_cell():
     assert len(cubes) == 5  # ax.voxels: one collection per occupied cell, holding its faces no neighbour hides
     assert sum(len(c.get_paths()) for c in cubes) == 10 + 14  # a 2-cell and a 3-cell row
     assert "24 triangles in 2 parts" in mesh_ax.get_title() and "5 of 1331 cells" in grid_ax.get_title()
-    assert fig._suptitle.get_text() == "two boxes"
+    assert fig.get_suptitle() == "two boxes"
 
 
 def test_samplers_in_a_passage_counts_the_samples_inside_it():
@@ -38,4 +38,4 @@ def test_samplers_in_a_passage_counts_the_samples_inside_it():
     assert "3 samples of 10 attempts" in fig.axes[0].get_title()
     red = [p for p in fig.axes[0].patches if isinstance(p, Rectangle) and p.get_edgecolor()[:3] == (0.8392156862745098, 0.15294117647058825, 0.1568627450980392)]
     assert len(red) == 1 and red[0].get_xy() == (15.0, 14.0) and (red[0].get_width(), red[0].get_height()) == (1.0, 3.0)
-    assert fig._suptitle.get_text().startswith("2 samplers")
+    assert fig.get_suptitle().startswith("2 samplers")

@@ -86,8 +86,9 @@ SCENARIOS: dict[str, Scenario] = {
                  n_seen=100, n_seen_test=100, n_unseen=20, samples_per_workspace=200,
                  cae_hidden=(5043, 3125, 1600, 800, 400, 200, 100, 50), mlp_hidden=MLP_3D,
                  plan_samples=2000, query_workspaces=10, queries_per_workspace=10,
-                 plan_resolution=0.1,  # half the thinnest link (0.03) costs ~15 s a query; blocks are >= 1 thick
-                cae_max_steps=300, cae_max_batch=10,  # 147M parameters: ~2.3 s a step of 10 grids on 2 cores
+                 plan_resolution=0.1,  # half the thinnest link (0.03) would make every query far slower, and the
+                 #   office's blocks are >= 1 thick (docs/design.md, "Local planner resolution")
+                cae_max_steps=300, cae_max_batch=10,  # 147M parameters: each step is slow (docs/fidelity.md §3)
                 cae_max_lr=1e-4),  # at 1e-3 its CAE diverges
         Scenario("3dc7", "3D clutter, 7-DoF box chain", "3dc", robots.box_chain(1), (11, 11, 11),
                  n_seen=50, n_seen_test=30, n_unseen=10, samples_per_workspace=200,

@@ -1,5 +1,5 @@
 """The geometry of the paper's problems (§II-B, §IV-A): robots, workspaces, and the exact answer to
-"is this configuration in collision?". Everything else rests on it; it rests on nothing else.
+"is this configuration in collision?". Everything else rests on it; it rests only on :mod:`toolkit.util`.
 
 Reading order:
 
@@ -9,5 +9,6 @@ Reading order:
    occupancy grid, the seeded generators of 2DS, 3DO and 3DC; ``from_mesh`` for a triangle mesh;
 3. :mod:`toolkit.geometry.meshes` — triangle meshes as obstacles (fcl BVH, inside tests, voxels);
 4. :mod:`toolkit.geometry.collision` — the checker interface (``are_valid(Q)``, clearance bounds)
-   and the exact checkers: python-fcl, a separating-axis reference, a numpy grid lookup for the point robot.
+   and the exact checkers: python-fcl for blocks and for meshes, a separating-axis reference, and
+   interval tests in numpy for the point robot; ``exact_checker`` picks the fastest.
 """

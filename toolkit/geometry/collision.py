@@ -2,7 +2,7 @@
 
 As in OMPL's ``StateValidityChecker``, everything that needs validity asks a
 :class:`CollisionChecker` for whole batches: ``are_valid(Q (N, dof)) -> (N,) bool``.
-The exact checkers here and the learned one (:mod:`toolkit.learned`) share it, so
+The exact checkers here and the learned one (:mod:`toolkit.learning.learned`) share it, so
 planning with or without prediction differs in one argument.
 
 A configuration is valid when it lies within the robot's bounds, every link lies
@@ -13,7 +13,7 @@ closed sets: touching counts as collision, as in FCL).
   conservative axis-aligned prefilter run batched in numpy; only links whose
   bounds meet an obstacle's are handed to FCL's ``DynamicAABBTreeCollisionManager``.
 - :class:`MeshChecker`: the same against a triangle mesh (a
-  :class:`~toolkit.workspace.MeshWorkspace`): FCL's ``BVHModel`` for links that touch
+  :class:`~toolkit.geometry.workspace.MeshWorkspace`): FCL's ``BVHModel`` for links that touch
   the surface, winding numbers for links wholly inside a solid (:class:`toolkit.geometry.meshes.Solid`).
 - :class:`PointRobotChecker`: the 2D point robot is an axis-aligned square, so an
   interval test against every block is exact; vectorized numpy.
@@ -22,6 +22,9 @@ closed sets: touching counts as collision, as in FCL).
 """
 
 from __future__ import annotations
+
+from collections.abc import Mapping
+from types import MappingProxyType
 
 import fcl
 import numpy as np
@@ -39,10 +42,15 @@ class CollisionChecker:
     call rather than in several dependent ones (same answers, fewer calls).
     ``certificates_pay``: bounding a clearance costs less than the checks it can spare
     (``local_planner.certify_edges``); False where a check is a few comparisons.
+    ``planner_options``: settings a planner should use when this checker decides its
+    samples (a learned checker: its recipe's, ``Preset.planner_options``); none for an
+    exact checker. Like OMPL's validity-checker specs, the planner reads them without
+    knowing what kind of checker it holds.
     """
 
     few_calls = False
     certificates_pay = True
+    planner_options: Mapping[str, object] = MappingProxyType({})
 
     def __init__(self, robot: BoxRobot):
         self.robot = robot
@@ -230,7 +238,7 @@ class ExactChecker(_BoxWorldChecker):
 
 
 class MeshChecker(_BoxWorldChecker):
-    """Ground truth against a triangle mesh: a :class:`~toolkit.workspace.MeshWorkspace`'s triangles.
+    """Ground truth against a triangle mesh: a :class:`~toolkit.geometry.workspace.MeshWorkspace`'s triangles.
 
     The prefilter and the clearance bounds use the bounds of the mesh's parts (they
     cover it, so both stay conservative). A link box that passes them is valid when it

@@ -2,8 +2,8 @@
 
 The paper's workspaces are axis-aligned blocks (§IV-A); a real scene comes as a
 mesh (STL, OBJ, GLB). Three questions decide how a mesh becomes a workspace
-(:func:`toolkit.workspace.from_mesh`) and how it is checked exactly
-(:class:`toolkit.collision.MeshChecker`):
+(:func:`toolkit.geometry.workspace.from_mesh`) and how it is checked exactly
+(:class:`toolkit.geometry.collision.MeshChecker`):
 
 - *does a robot link touch the surface?* python-fcl's ``BVHModel`` (a bounding-volume
   hierarchy over the triangles) answers it for a box against thousands of triangles;
@@ -15,7 +15,7 @@ mesh (STL, OBJ, GLB). Three questions decide how a mesh becomes a workspace
 - *which grid cells are occupied?* A cell is occupied when the solid meets its open
   interior: the surface crosses the cell, or its centre lies inside. For blocks on the
   integer grid this is exactly the block workspaces' rule (a cell centre inside a
-  block, :meth:`toolkit.workspace.Workspace.occupancy`), and a board thinner than a
+  block, :meth:`toolkit.geometry.workspace.Workspace.occupancy`), and a board thinner than a
   cell still marks the cells it crosses. trimesh's own voxelizer (``mesh.voxelized``)
   rounds points of the surface to the nearest cell centre, so a face lying on a cell
   boundary — every face of a block workspace — marks the cell on one side or the

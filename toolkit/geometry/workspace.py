@@ -14,7 +14,7 @@ workspace exactly: nothing the CAE is asked to encode is lost by the grid.
 
 Beyond the paper, :func:`from_mesh` makes a :class:`MeshWorkspace` from a triangle
 mesh (a scanned or modelled scene): its grid marks the cells the mesh's solid meets,
-and :func:`toolkit.collision.exact_checker` checks robots against the triangles
+and :func:`toolkit.geometry.collision.exact_checker` checks robots against the triangles
 themselves (see :mod:`toolkit.geometry.meshes`).
 """
 

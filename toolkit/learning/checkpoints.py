@@ -13,8 +13,10 @@ existing checkpoint only when asked to (``overwrite=True``, ``toolkit train --fo
 
 :func:`load_models` rebuilds the networks from the metadata and refuses, with a
 ``ValueError`` naming the problem, a folder for another scenario, missing or
-corrupted files (saying how to write them again), and weights that do not fit the
-recorded sizes.
+corrupted files (saying how to write them again), a checkpoint of another
+``FORMAT`` (naming the one it has and the one this toolkit reads: there is no
+conversion), a preset whose settings are not this toolkit's, and weights that do
+not fit the recorded sizes.
 """
 
 from __future__ import annotations
@@ -22,21 +24,20 @@ from __future__ import annotations
 import json
 import platform
 import shutil
-from dataclasses import asdict
+from dataclasses import asdict, fields
 from pathlib import Path
 
 import numpy as np
 import torch
 
 from toolkit import __version__, scenarios
-from toolkit.learning import presets
 from toolkit.learning.models import CollisionPredictor, build_predictor
 from toolkit.learning.presets import Preset
 from toolkit.learning.training import TrainedModels
 from toolkit.util import outputs
 
 WEIGHTS, META = "weights.pt", "meta.json"
-FORMAT = 1
+FORMAT = 1  # of meta.json and weights.pt: a checkpoint of another format is refused, not converted
 
 
 def sizes(predictor: CollisionPredictor) -> dict:
@@ -121,28 +122,30 @@ def load_models(folder: str | Path, scenario: str | None = None, *, remedy: str 
 
 def _build(folder: Path, meta: dict) -> TrainedModels:
     """The networks ``meta`` describes, with the weights of ``folder``."""
-    preset_fields = dict(meta["preset"])
-    try:
-        # settings added to Preset after the checkpoint was written: those of the preset it names
-        preset_fields = {**asdict(presets.get(preset_fields.get("name"))), **preset_fields}
-        preset_fields["mlp_hidden"] = tuple(preset_fields["mlp_hidden"]) if preset_fields.get("mlp_hidden") else None
-        preset = Preset(**preset_fields)
-    except TypeError as err:
-        raise ValueError(f"checkpoint {folder}: {META} has an unreadable preset: {err}") from err
+    preset = _read_preset(folder, meta["preset"])
     scen = scenarios.get(meta["scenario"])
     predictor = build_predictor(scen, preset.encoding, preset.mlp_hidden, preset.dropout, preset.latent_input)
     if sizes(predictor) != meta["sizes"]:
         raise ValueError(f"checkpoint {folder}: recorded sizes {meta['sizes']} differ from the {meta['scenario']!r} "
                          f"networks of preset {preset.name!r}, {sizes(predictor)}")
     try:
-        state = torch.load(folder / WEIGHTS, map_location="cpu", weights_only=True)
-        # the input encoding's buffers derive from the scenario; earlier checkpoints stored them, now they are rebuilt
-        predictor.load_state_dict({k: v for k, v in state.items() if not k.startswith("encoding.")})
+        predictor.load_state_dict(torch.load(folder / WEIGHTS, map_location="cpu", weights_only=True))
     except FileNotFoundError:
         raise ValueError(f"checkpoint {folder} has no {WEIGHTS}") from None
     except Exception as err:  # unpickling, zip, shape or key errors: the weights cannot be trusted
         raise ValueError(f"checkpoint {folder}: {WEIGHTS} is corrupted or does not match the networks: {err}") from err
-    return TrainedModels(scen, preset, predictor.eval(), int(meta.get("seed", 0)), meta.get("history", {}))
+    return TrainedModels(scen, preset, predictor.eval(), int(meta["seed"]), meta["history"])
+
+
+def _read_preset(folder: Path, recorded) -> Preset:
+    """The :class:`Preset` a checkpoint records: every setting of it, none missing or unknown."""
+    expected = {f.name for f in fields(Preset)}
+    have = set(recorded) if isinstance(recorded, dict) else set()
+    if have != expected:
+        raise ValueError(f"checkpoint {folder}: {META}'s preset does not match this toolkit's Preset (missing "
+                         f"{sorted(expected - have)}, unknown {sorted(have - expected)})")
+    mlp_hidden = recorded["mlp_hidden"]  # a list in JSON
+    return Preset(**{**recorded, "mlp_hidden": None if mlp_hidden is None else tuple(mlp_hidden)})
 
 
 def _describe(folder: Path) -> str:
@@ -155,15 +158,19 @@ def _describe(folder: Path) -> str:
 
 
 def _read_meta(folder: Path) -> dict:
+    """``folder``'s metadata, checked: a JSON object of this toolkit's format, with every key the loader reads."""
     try:
         meta = json.loads((folder / META).read_text())
     except FileNotFoundError:
         raise ValueError(f"checkpoint {folder} has no {META} (metadata missing)") from None
     except (json.JSONDecodeError, UnicodeDecodeError) as err:
         raise ValueError(f"checkpoint {folder}: {META} is corrupted: {err}") from err
-    missing = {"format", "scenario", "preset", "sizes"} - set(meta) if isinstance(meta, dict) else {"everything"}
+    if not isinstance(meta, dict):
+        raise ValueError(f"checkpoint {folder}: {META} is corrupted: not a JSON object")
+    if meta.get("format") != FORMAT:
+        raise ValueError(f"checkpoint {folder} has format {meta.get('format', 'none recorded')}, this toolkit "
+                         f"reads format {FORMAT}")
+    missing = {"scenario", "preset", "sizes", "seed", "history"} - set(meta)
     if missing:
         raise ValueError(f"checkpoint {folder}: {META} lacks {sorted(missing)}")
-    if meta["format"] != FORMAT:
-        raise ValueError(f"checkpoint {folder} has format {meta['format']}, this toolkit reads format {FORMAT}")
     return meta

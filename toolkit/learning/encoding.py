@@ -9,13 +9,14 @@
   as :meth:`toolkit.geometry.robots.BoxRobot.link_frames` (a test holds it to it).
 
 Both take torch tensors (training, GPU) or numpy arrays (the learned checker on CPU:
-a few hundred configurations per call, where numpy's per-operation cost is about
-half of torch's) and are written once for both: the functions they call have the
-same name and meaning in numpy (>= 2.0) and torch.
+a few hundred configurations per call, where numpy's fixed cost per operation is
+lower than torch's; ``docs/benchmarks.md``, "The learned checker's fast path") and are
+written once for both: the functions they call have the same name and meaning in
+numpy (>= 2.0) and torch.
 
 The patch depends only on the workspace and the base cell, so :meth:`InputEncoding.cell_patches`
-lists it for every cell at once; the predictor folds it into a per-workspace table
-(:class:`toolkit.learning.models.WorkspaceMargin`).
+lists it for every cell at once; inference folds it into a per-workspace table
+(:func:`toolkit.learning.inference.workspace_table`).
 """
 
 from __future__ import annotations
@@ -117,6 +118,7 @@ class InputEncoding(nn.Module):
         if kind not in ("raw", "local"):
             raise ValueError(f"unknown input encoding {kind!r}; choose 'raw' or 'local'")
         self.kind, self.radius, self.grid_shape = kind, int(radius), tuple(grid_shape)
+        self.dof = robot.dof  # configurations are (N, dof)
         self.n_pos = position_dofs(robot)  # buffers below derive from the robot and grid: not saved in checkpoints
         self.n_angles = int(robot.wraps.sum())  # configurations are [positions, angles, joints]
         self.base_height = robot.base_height  # the planar base's z

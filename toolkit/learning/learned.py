@@ -2,7 +2,7 @@
 
 :class:`LearnedChecker` encodes its workspace with the CAE once, at construction,
 and then answers ``are_valid(Q)`` for whole batches with one MLP pass, exactly like
-the exact checkers of :mod:`toolkit.collision` do, so a planner swaps one for the
+the exact checkers of :mod:`toolkit.geometry.collision` do, so a planner swaps one for the
 other in one argument. ``probability(Q)`` gives P(valid); ``threshold`` trades
 false-valid (lower it: more samples accepted) against false-invalid (raise it).
 Configurations outside the robot's bounds are invalid, whatever the network says.
@@ -28,7 +28,9 @@ from toolkit.learning.training import TrainedModels
 class LearnedChecker(CollisionChecker):
     """Predicted validity in one workspace: P(valid) >= ``threshold`` (default: the model's own, 0.5 or calibrated)."""
 
-    few_calls = True  # 3DC on a CPU: about 0.4 ms a call plus 0.7 us a configuration (exact: 6-9 us a configuration)
+    # on a CPU a call's fixed cost is worth hundreds of configurations ("The learned checker's fast path" in
+    # docs/benchmarks.md): better one call too many configurations than several calls
+    few_calls = True
 
     def __init__(self, workspace: Workspace, models: TrainedModels, threshold: float | None = None):
         scenario = models.scenario
@@ -37,10 +39,11 @@ class LearnedChecker(CollisionChecker):
                              f"{scenario.grid_shape}")
         super().__init__(scenario.robot)
         self.workspace, self.models = workspace, models
+        self.planner_options = models.preset.planner_options()  # how a planner uses this model (its recipe's)
         self.threshold = models.threshold if threshold is None else threshold
         device = models.predictor.threshold.device
         grid = torch.as_tensor(workspace.occupancy(), device=device)  # (*grid)
-        self._margin_of = models.predictor.eval().for_workspace(grid)  # the workspace, encoded once
+        self.workspace_mlp = models.predictor.eval().for_workspace(grid)  # the workspace, encoded once
         self._margins(self.robot.lower[None])  # a first call's one-off costs (lazy set-up) belong here
 
     @property
@@ -68,7 +71,7 @@ class LearnedChecker(CollisionChecker):
 
         Every row goes through the network, in or out of bounds: cheaper than selecting rows.
         """
-        return self._margin_of(Q)
+        return self.workspace_mlp(Q)
 
 
 def load_checker(checkpoint_dir: str | Path, workspace: Workspace, threshold: float | None = None) -> LearnedChecker:

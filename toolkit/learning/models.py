@@ -11,18 +11,23 @@
 - :class:`~toolkit.learning.encoding.InputEncoding` (in :mod:`toolkit.learning.encoding`): what the MLP
   sees, the paper's ``[z, q]`` or ``[z, patch, pose]`` (the ``strong`` preset leaves out ``z``).
 - :class:`CollisionPredictor`: the three together, one ``state_dict``;
-  :meth:`~CollisionPredictor.for_workspace` freezes it in one workspace as a
-  :class:`WorkspaceMargin`, the fast inference path of the learned checker.
+  :meth:`~CollisionPredictor.for_workspace` folds one workspace into its MLP, a
+  :class:`~toolkit.learning.inference.WorkspaceMLP`: the learned checker's fast
+  inference path (:mod:`toolkit.learning.inference`).
 """
 
 from __future__ import annotations
 
-import numpy as np
+from typing import TYPE_CHECKING
+
 import torch
 from torch import nn
 
 from toolkit.learning.encoding import InputEncoding, reach_cells
 from toolkit.scenarios import Scenario
+
+if TYPE_CHECKING:
+    from toolkit.learning.inference import WorkspaceMLP
 
 VALID = 1  # class index of "valid" in the MLP's two logits
 PRELU_SLOPE = 0.25  # nn.PReLU's initial negative slope
@@ -54,8 +59,8 @@ class CAE(nn.Module):
     Weights start with He initialization for PReLU (He et al. 2015; the paper names
     none). PyTorch's default shrinks the signal's variance about threefold per layer,
     so through 7-14 layers the latent hardly depends on the input and the CAE settles
-    on the mean grid: measured on 3DC, 91.2 % reconstruction accuracy on seen
-    workspaces, exactly the all-free share, against 100 % with He initialization.
+    on the mean grid, all free, even on the grids it trains on (``docs/design.md``,
+    "The presets", has the measurement).
     """
 
     def __init__(self, sizes: tuple[int, ...]):
@@ -152,105 +157,12 @@ class CollisionPredictor(nn.Module):
         self.cae, self.encoding, self.mlp = cae, encoding, mlp
         self.register_buffer("threshold", torch.tensor(float(threshold)))
 
-    def for_workspace(self, grid: torch.Tensor) -> "WorkspaceMargin":
-        """This predictor, frozen for fast inference in the workspace ``grid (*grid)``: Algorithm 1, line 1."""
-        return WorkspaceMargin(self, grid)
+    def for_workspace(self, grid: torch.Tensor) -> WorkspaceMLP:
+        """This predictor's MLP with the workspace ``grid (*grid)`` folded in, for fast inference: the workspace
+        encoded once (Algorithm 1, line 1) for every later prediction (line 3)."""
+        from toolkit.learning.inference import WorkspaceMLP  # it builds on this module, so it is imported late
 
-
-class WorkspaceMargin:
-    """``margin(Q) = logit(valid) - logit(invalid)`` of a :class:`CollisionPredictor` in one workspace, for inference.
-
-    Equal to the full network's logit difference (a test holds it to it), computed with
-    fewer, cheaper operations:
-
-    - everything the workspace gives the first layer (its bias, ``W z``, ``W patch`` of
-      every base cell) is one table ``(H, n_cells)``, built once, so a prediction gathers
-      one column and multiplies only the pose; with one column (the paper's ``[z, q]``)
-      that column is added to every prediction without gathering copies of it first
-      (3DC-7 paper MLP, 10k configurations, one thread: the gather was a fifth of a call);
-    - only the difference of the two logits matters, so the last layer is one vector;
-    - activations are column-major ``(features, N)``: the small matmuls of these MLPs
-      run about 1.5x faster that way on CPU than row-major (measured: the paper's
-      3D MLP at 10k configurations, one thread, 1.3 ms against 2.0 ms);
-    - on the CPU, calls of fewer than ``NUMPY_BELOW`` configurations compute in numpy:
-      a sampler asks about a few hundred at a time, where the cost per operation
-      dominates, and numpy's is about half of torch's (strong 3DC-7 model, 400
-      configurations right after an exact check: 0.4 ms against 0.9 ms a call), in
-      chunks of ``CHUNK`` whose temporaries stay in cache; larger calls go to torch,
-      whose fused kernels are faster there (the paper's 3DC-9 MLP at 10k: about 1.5x);
-    - the PReLU slopes are read once. Dropout is off, as in ``eval()``.
-
-    A snapshot: training the predictor further does not change it.
-    """
-
-    NUMPY_BELOW = 8192  # on the CPU, calls of fewer configurations compute in numpy, in chunks of CHUNK
-    CHUNK = 4096
-
-    @torch.no_grad()
-    def __init__(self, predictor: CollisionPredictor, grid: torch.Tensor, numpy_below: int | None = None):
-        """``numpy_below``: calls of fewer configurations compute in numpy, the others in torch on ``grid``'s
-        device (default: ``NUMPY_BELOW`` on the CPU, 0 elsewhere)."""
-        encoding, net = predictor.encoding, predictor.mlp.net
-        grids = grid[None]  # (1, *grid)
-        first = net[0]
-        L, P = encoding.latent_dim, encoding.patch_size
-        share = first.bias.clone()  # (H,)
-        if L:
-            share += first.weight[:, :L] @ predictor.cae.encode(grids)[0, :L]
-        patches = encoding.cell_patches(grids)[0]  # (n_cells, P)
-        linears = [m for m in net if isinstance(m, nn.Linear)]
-        last = linears[-1]
-        self.encoding, self.device = encoding, grid.device
-        self.numpy_below = (self.NUMPY_BELOW if grid.device.type == "cpu" else 0) if numpy_below is None else numpy_below
-        self.slopes = [float(m.weight) for m in net if isinstance(m, nn.PReLU)]  # one after each hidden layer
-        self.last_bias = float(last.bias[VALID] - last.bias[1 - VALID])
-        tensors = [first.weight[:, L:L + P] @ patches.T + share[:, None],  # (H, n_cells)
-                   first.weight[:, L + P:],  # (H, pose_size)
-                   last.weight[VALID] - last.weight[1 - VALID]]  # (H_last,)
-        tensors += [a for m in linears[1:-1] for a in (m.weight, m.bias[:, None])]  # (H_next, H), (H_next, 1)
-        tensors = [t.clone().contiguous() for t in tensors]
-        self.table = tensors[0]
-        self.one_cell = self.table.shape[1] == 1  # the workspace's share is the same for every configuration
-        self._weights = {torch: tensors}  # the same numbers for each library (numpy views share the memory)
-        if self.numpy_below:
-            self._weights[np] = [t.numpy() for t in tensors]
-
-    def __call__(self, Q: np.ndarray) -> np.ndarray:
-        """Margins ``(N,)`` float32 of configurations ``Q (N, dof)``."""
-        if len(Q) >= self.numpy_below:
-            return self._torch_margins(torch.as_tensor(Q, dtype=torch.float32, device=self.device)).cpu().numpy()
-        if len(Q) <= self.CHUNK:
-            return self._numpy_margins(Q)
-        return np.concatenate([self._numpy_margins(Q[i:i + self.CHUNK]) for i in range(0, len(Q), self.CHUNK)])
-
-    @torch.inference_mode()
-    def _torch_margins(self, Q: torch.Tensor) -> torch.Tensor:
-        """Margins ``(N,)`` of a float32 tensor ``Q (N, dof)`` on the table's device, with torch's fused operations."""
-        table, pose_weight, last_weight, *hidden = self._weights[torch]
-        cell, pose = self.encoding.configs(Q)  # (N,), (pose_size, N)
-        h = torch.addmm(table if self.one_cell else table.index_select(1, cell), pose_weight, pose)  # (H, N)
-        nn.functional.leaky_relu_(h, self.slopes[0])
-        for weight, bias, slope in zip(hidden[0::2], hidden[1::2], self.slopes[1:]):
-            h = nn.functional.leaky_relu_(torch.addmm(bias, weight, h), slope)  # (H_next, N)
-        return torch.mv(h.T, last_weight) + self.last_bias  # (N,)
-
-    def _numpy_margins(self, Q: np.ndarray) -> np.ndarray:
-        """The same numbers as :meth:`_torch_margins`, in numpy (float32)."""
-        table, pose_weight, last_weight, *hidden = self._weights[np]
-        cell, pose = self.encoding.configs(Q)  # (N,), (pose_size, N)
-        h = pose_weight @ pose  # (H, N)
-        h += table if self.one_cell else np.take(table, cell, axis=1)
-        _prelu_(h, self.slopes[0])
-        for weight, bias, slope in zip(hidden[0::2], hidden[1::2], self.slopes[1:]):
-            h = weight @ h  # (H_next, N)
-            h += bias
-            _prelu_(h, slope)
-        return last_weight @ h + self.last_bias  # (N,)
-
-
-def _prelu_(h: np.ndarray, slope: float) -> None:
-    """PReLU in place: the larger of ``h`` and ``slope * h`` (the smaller if slope > 1)."""
-    (np.maximum if slope <= 1 else np.minimum)(h, slope * h, out=h)
+        return WorkspaceMLP(self, grid)
 
 
 def build_predictor(scenario: Scenario, encoding: str, mlp_hidden: tuple[int, ...] | None = None,

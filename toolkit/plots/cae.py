@@ -9,7 +9,7 @@
   norm, and how far ``z`` and the decoded grid move when a few cells are flipped;
 - :func:`latent_scatter` — latent codes projected to 2D, one point per workspace.
 
-Grids hold -1 (free) and +1 (occupied), as :meth:`toolkit.workspace.Workspace.occupancy`
+Grids hold -1 (free) and +1 (occupied), as :meth:`toolkit.geometry.workspace.Workspace.occupancy`
 returns them; a decoded cell counts as occupied where the decoder's output is positive,
 as in :func:`toolkit.learning.metrics.reconstruction_accuracy`. Nothing here calls ``show()``.
 """

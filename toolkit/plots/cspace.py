@@ -9,7 +9,8 @@ that makes it:
 - :func:`occupancy_figure` draws its −1/+1 occupancy grid, the CAE's input (a 3D
   grid as one image per z layer);
 - :func:`robot_figure` draws a robot's link boxes at configurations (forward
-  kinematics, ``robot.link_boxes``), projected onto coordinate planes;
+  kinematics, ``robot.link_boxes``), projected onto coordinate planes or in 3D
+  (:func:`draw_robot` draws them on an axes of your own);
 - :func:`cspace_image` draws the point robot's whole 2-DoF C-space, dark where the
   checker says "in collision";
 - :func:`cspace_slice` draws a 2-DoF slice of any robot's C-space (two DoF vary,
@@ -168,13 +169,19 @@ def _nearby_blocks(workspace: Workspace, lo: np.ndarray, hi: np.ndarray) -> np.n
     return np.flatnonzero(np.all((boxes[:, 0] <= hi) & (boxes[:, 1] >= lo), axis=1))
 
 
-def _draw_robot(ax, robot: BoxRobot, Q: np.ndarray, colors: list[str], view: str,
-                workspace: Workspace | None, margin: float) -> None:
-    """Link boxes of configurations ``Q (k, dof)`` and the blocks within ``margin`` of them, on one axes.
+def draw_robot(ax, robot: BoxRobot, Q, colors: list[str], view: str = "3d", workspace: Workspace | None = None,
+               margin: float = 1.0) -> None:
+    """Draw the link boxes of configurations ``Q (k, dof)``, one colour each, and the blocks within ``margin`` of them,
+    on one axes (the building block of :func:`robot_figure`, :func:`cspace_slice` and the scene figures).
 
-    ``view``: ``"3d"`` (an mplot3d axes) or a plane ``"xy"``, ``"xz"``, ``"yz"`` (the shadow of each box).
-    Links have gid ``"link"``, blocks gid ``"block"``.
+    ``view``: ``"3d"`` (``ax`` an mplot3d axes) or a plane ``"xy"``, ``"xz"``, ``"yz"`` (the shadow of each box).
+    Links have gid ``"link"``, blocks gid ``"block"``; the axes' limits frame them.
     """
+    Q = robot.check_configs(Q)  # (k, dof)
+    if view != "3d" and view not in VIEWS:
+        raise ValueError(f"unknown view {view!r}; choose '3d' or one of {sorted(VIEWS)}")
+    if len(colors) != len(Q):
+        raise ValueError(f"{len(colors)} colours for {len(Q)} configurations: give one colour a configuration")
     centers, rotations, half = robot.link_boxes(Q)  # (k, L, D), (k, L, D, D), (L, D)
     aabbs = robot.link_aabbs(Q)  # (k, L, 2, D)
     lo, hi = aabbs[:, :, 0].min(axis=(0, 1)) - margin, aabbs[:, :, 1].max(axis=(0, 1)) + margin  # (D,) window
@@ -231,7 +238,7 @@ def robot_figure(robot: BoxRobot, Q, workspace: Workspace | None = None, valid=N
     colors = _link_colors(len(Q), valid)
     for i, view in enumerate(views):
         ax = fig.add_subplot(1, len(views), i + 1, **({"projection": "3d"} if view == "3d" else {}))
-        _draw_robot(ax, robot, Q, colors, view, workspace, margin)
+        draw_robot(ax, robot, Q, colors, view, workspace, margin)
         ax.set_title(f"{robot.name}: {view}", fontsize=10)
     fig.tight_layout()
     return fig
@@ -321,7 +328,7 @@ def cspace_slice(checker: CollisionChecker, q, joints: tuple[int, int] = (0, 1),
                  + ", ".join(fixed), fontsize=8)
     if view:
         robot_ax = fig.add_subplot(1, 2, 2, **({"projection": "3d"} if view == "3d" else {}))
-        _draw_robot(robot_ax, robot, q[None], _link_colors(1, q_valid), view, checker.workspace, margin)
+        draw_robot(robot_ax, robot, q[None], _link_colors(1, q_valid), view, checker.workspace, margin)
         robot_ax.set_title(f"the robot at the star ({view})", fontsize=9)
     fig.tight_layout()
     return fig

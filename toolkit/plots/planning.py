@@ -112,7 +112,7 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
 
 
 def roadmap(exact: CollisionChecker, step: PlanStep, title: str = "") -> Figure:
-    """The roadmap at one step of Algorithm 1 (a :class:`~toolkit.prm.PlanStep` of ``plan(..., trace=[])``)."""
+    """The roadmap at one step of Algorithm 1 (a :class:`~toolkit.planning.prm.PlanStep` of ``plan(..., trace=[])``)."""
     fig = Figure(figsize=(5, 5.2))
     ax = fig.subplots()
     _draw_roadmap(ax, exact, step)

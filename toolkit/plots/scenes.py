@@ -18,7 +18,7 @@ from matplotlib.figure import Figure
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots.cspace import INVALID_COLOR, VALID_COLOR, _draw_robot
+from toolkit.plots.cspace import INVALID_COLOR, VALID_COLOR, draw_robot
 
 TRACE_COLOR = "tab:cyan"  # the path of the robot's base, as the viewer's path line
 UNCHECKED_COLOR = "tab:blue"  # the robot when no validity is given
@@ -50,7 +50,7 @@ def path_frame(robot: BoxRobot, configurations, index: int, *, workspace: Worksp
     left, right = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.3, top=0.8)  # room for title and legend
     scene = fig.add_subplot(left, projection="3d")
     color = UNCHECKED_COLOR if series["valid"] is None else VALID_COLOR if series["valid"][index] else INVALID_COLOR
-    _draw_robot(scene, robot, Q[index : index + 1], [color], "3d", workspace, margin)
+    draw_robot(scene, robot, Q[index : index + 1], [color], "3d", workspace, margin)
     _draw_trace(scene, robot, Q)
     scene.set_title("the robot and the blocks near it", fontsize=9)
     scene.locator_params(nbins=4)  # few tick labels: drawing text is most of a frame's cost
