@@ -33,10 +33,10 @@ def fresh_registries(monkeypatch):
 class CornerSampler(sampling.Sampler):
     """Test sampler: uniform samples, kept only in the lower-left quarter of the bounds."""
 
-    def _sample(self, n, rng):
+    def draw(self, n, rng):
         Q = self.robot.sample(rng, n)
         Q = Q[np.all(Q < (self.robot.lower + self.robot.upper) / 2, axis=1)]
-        return Q[self._valid(Q)]
+        return Q[self.valid(Q)]
 
 
 def planar_arm() -> BoxRobot:

@@ -119,7 +119,7 @@ def test_an_enclosed_goal_is_unsolvable_for_both():
 
 # -- toolkit.planning.ompl: our checkers and samplers inside OMPL ------------------------------------------------------------
 
-toolkit_ompl = pytest.importorskip("toolkit.ompl")
+toolkit_ompl = pytest.importorskip("toolkit.planning.ompl")
 
 
 def test_ompls_distance_is_our_motion_bound_and_its_motion_checks_at_least_our_steps():

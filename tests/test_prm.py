@@ -10,8 +10,9 @@ from threadpoolctl import threadpool_info, threadpool_limits
 from toolkit import cli, scenarios
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.geometry.workspace import Workspace
-from toolkit.planning import local_planner, prm
+from toolkit.planning import local_planner, prm, query_roadmap
 from toolkit.planning import queries as queries_module
+from toolkit.planning.lazy_prm import LazyPRM
 from toolkit.planning.local_planner import (
     certify_edges,
     check_edges,
@@ -21,8 +22,10 @@ from toolkit.planning.local_planner import (
     refute_at,
     segment_points,
 )
+from toolkit.planning.paper_prm import PRM
 from toolkit.planning.prm import PRMOptions, plan
 from toolkit.planning.queries import make_queries, run_queries
+from toolkit.planning.query_roadmap import QueryRoadmap
 from toolkit.planning.roadmap import Roadmap
 from toolkit.planning.sampling import SAMPLERS, make_sampler
 
@@ -60,7 +63,7 @@ def longest_hidden_overlap(ws, robot, path) -> float:
                for p0, p1 in zip(path[:-1], path[1:]) for lo, hi in ws.boxes)
 
 
-PAPER = dict(screen_edges=False, **prm.PAPER_BASELINE)  # Algorithm 1 as the paper has it
+PAPER = dict(prm.PAPER_BASELINE)  # Algorithm 1 as the paper has it
 MODES = {  # name -> (flip fraction of the test double or None for exact, PRMOptions fields)
     "exact": (None, {}),  # the best exact planner: lazy edges, growing rounds
     "exact-paper": (None, PAPER),
@@ -140,7 +143,8 @@ def test_rounds_double_from_first_samples_up_to_n_samples():
     walls = [[[18, 18], [28, 19]], [[18, 27], [28, 28]], [[18, 18], [19, 28]], [[27, 18], [28, 28]]]
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array(walls, dtype=float), family="2ds")
     for fields, attempts in [(dict(first_samples=10, n_samples=50), 10 + 20 + 40 + 50 + 50),
-                             (dict(first_samples=None, n_samples=50), 5 * 50)]:
+                             (dict(first_samples=None, n_samples=50), 5 * 50),
+                             (dict(PAPER, first_samples=10, n_samples=50), 5 * 50)]:  # the paper's: |S| a round
         trace = []
         result = plan(exact_checker(ws, robot), np.array([5.0, 5.0]), np.array([23.0, 23.0]), sampler="BS",
                       options=PRMOptions(max_rounds=5, **fields), rng=np.random.default_rng(0), trace=trace)
@@ -168,17 +172,58 @@ def test_lazy_screen_rejects_only_edges_with_a_point_in_collision(monkeypatch):
     q = make_queries(scenario, seed=7100, n_workspaces=1, per_workspace=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
     options = PRMOptions(n_samples=100, first_samples=None, max_rounds=1, rebridge=0)
-    planner = prm._Planner(exact, exact, options, make_sampler("BS", exact), make_sampler("BS", exact))
-    nodes = planner.roadmap.add_nodes(make_sampler("BS", exact).sample(100, np.random.default_rng(0)), verified=True)
-    pairs = planner.roadmap.candidate_edges(nodes, options.k)
-    planner.decide(pairs)
-    roadmap = planner.roadmap
+    query = QueryRoadmap(exact, exact, options)
+    nodes = query.roadmap.add_nodes(make_sampler("BS", exact).sample(100, np.random.default_rng(0)), verified=True)
+    pairs = query.roadmap.candidate_edges(nodes, options.k)
+    LazyPRM(exact, options=options).decide(query, pairs)
+    roadmap = query.roadmap
     assert len(roadmap.edges) + len(roadmap.rejected) == len(pairs) and len(roadmap.rejected) > 0
     assert np.isinf(roadmap.edge_checked_at).all()  # lazy: none confirmed yet
-    spacing = planner.resolution * options.lazy_screen
+    spacing = query.resolution * options.lazy_screen
     assert (invalid_fractions(exact, *roadmap.nodes[roadmap.rejected.T], spacing)[0] > 0).all()
     assert (invalid_fractions(exact, *roadmap.nodes[roadmap.edges.T], spacing)[0] == 0).all()
     np.testing.assert_allclose(roadmap.edge_cost, roadmap.distance(*roadmap.nodes[roadmap.edges.T]))
+
+
+@pytest.mark.parametrize("flip", [None, 0.15])
+def test_the_papers_planner_checks_every_edge_exactly_as_it_is_added(flip):
+    scenario = scenarios.get("2ds")
+    for i, q in enumerate(make_queries(scenario, seed=0, n_workspaces=2, per_workspace=2)):
+        exact, trace = exact_checker(q.workspace, scenario.robot), []
+        checker = None if flip is None else NoisyChecker(exact, flip, seed=i)
+        result = plan(exact, q.start, q.goal, sampler="BS", checker=checker, options=PRMOptions(**PAPER),
+                      rng=np.random.default_rng(i), trace=trace)
+        assert result.success
+        roadmap, coarse = result.roadmap, result.stats["resolution"]
+        on_path = np.zeros(len(roadmap.edges), bool)
+        on_path[roadmap.edge_index(roadmap.shortest_path(prm.START, prm.GOAL))] = True
+        np.testing.assert_array_equal(roadmap.edge_checked_at[~on_path], coarse)  # checked as added
+        np.testing.assert_array_equal(roadmap.edge_checked_at[on_path], coarse / 10)  # the path: also 10x finer
+        assert check_edges(exact, *roadmap.nodes[roadmap.edges.T], coarse).all()
+        assert not check_edges(exact, *roadmap.nodes[roadmap.rejected.T], coarse).any()
+        if flip is None:  # rounds of |S| attempts each (BS checks each attempt once)
+            assert result.stats["node_checks"] == result.stats["rounds"] * PRMOptions().n_samples
+
+
+def test_plan_runs_the_papers_planner_with_paper_baseline_and_the_lazy_one_without():
+    scenario = scenarios.get("3dc7")
+    q = make_queries(scenario, seed=0, n_workspaces=1)[0]
+    exact = exact_checker(q.workspace, scenario.robot)
+    runs = {}
+    for name, options, planner in [("paper", PRMOptions(**PAPER), PRM), ("lazy", PRMOptions(), LazyPRM)]:
+        by_plan = plan(exact, q.start, q.goal, sampler="G", options=options, rng=np.random.default_rng(3))
+        by_class = planner(exact, options=options, sampler="G").solve(q.start, q.goal, rng=np.random.default_rng(3))
+        np.testing.assert_array_equal(by_plan.path, by_class.path)
+        np.testing.assert_array_equal(by_plan.roadmap.edges, by_class.roadmap.edges)
+        runs[name] = by_plan
+    paper, lazy = runs["paper"], runs["lazy"]
+    assert paper.success and lazy.success
+    assert np.isfinite(paper.roadmap.edge_checked_at).all()  # every edge checked exactly ...
+    assert np.isinf(lazy.roadmap.edge_checked_at).any()  # ... against edges never confirmed
+    assert paper.stats["exact_checks"] > 5 * lazy.stats["exact_checks"]
+    with pytest.raises(ValueError, match="LazyPRM runs planner 'lazy', but options.planner is 'paper'"):
+        LazyPRM(exact, options=PRMOptions(**PAPER))
+    assert PRM(exact).options.planner == "paper" and LazyPRM(exact).options.planner == "lazy"
 
 
 def test_the_paper_preset_plans_with_the_papers_baseline_and_the_strong_one_with_the_best_exact_planner():
@@ -186,12 +231,13 @@ def test_the_paper_preset_plans_with_the_papers_baseline_and_the_strong_one_with
 
     scenario = scenarios.get("3dc7")
     best = queries_module.default_options(scenario)  # no checker: the best exact planner
-    assert best.lazy and best.first_samples == PRMOptions().first_samples is not None
+    assert best.planner == "lazy" and best.first_samples == PRMOptions().first_samples is not None
     paper = queries_module.default_options(scenario, **presets.get("paper").planner_options())
-    assert not paper.lazy and paper.first_samples is None and not paper.screen_edges
+    assert paper.planner == "paper" and paper.auxiliary == "exact"  # rounds of |S|, exact edges, exact later rounds
     assert paper.n_samples == scenario.plan_samples == 400
     strong = queries_module.default_options(scenario, **presets.get("strong").planner_options())
-    assert (strong.lazy, strong.first_samples, strong.lazy_screen) == (best.lazy, best.first_samples, best.lazy_screen)
+    assert (strong.planner, strong.first_samples, strong.lazy_screen) == (best.planner, best.first_samples,
+                                                                           best.lazy_screen)
     assert strong.screen_edges
 
 
@@ -201,18 +247,20 @@ def test_the_paper_preset_plans_with_the_papers_baseline_and_the_strong_one_with
     (dict(auxiliary="confirmed", exact_every=3),
      ["predicted", "confirmed", "confirmed", "exact", "confirmed", "confirmed", "exact"]),
     (dict(auxiliary="predicted"), ["predicted"] * 4)])
-def test_rounds_after_the_first_sample_as_options_auxiliary_says(options, sources):
+@pytest.mark.parametrize("planner_name", ["lazy", "paper"])  # both planners read PRMOptions.auxiliary
+def test_rounds_after_the_first_sample_as_options_auxiliary_says(options, sources, planner_name):
     scenario = scenarios.get("2ds")
     q = make_queries(scenario, seed=0, n_workspaces=1, per_workspace=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
     lying = NoisyChecker(exact, 0.3, seed=0)
-    planner = prm._Planner(exact, lying, PRMOptions(n_samples=200, first_samples=None, **options),
-                           make_sampler("BS", lying), make_sampler("BS", exact))
+    options = PRMOptions(planner=planner_name, n_samples=200, first_samples=None, **options)
+    planner = prm.PLANNER_CLASSES[planner_name](exact, lying, options)
+    query = QueryRoadmap(exact, lying, options)
     rng = np.random.default_rng(0)
     for round_, source in enumerate(sources, start=1):
-        planner.stats["rounds"] = round_
+        query.stats["rounds"] = round_
         exact.reset_count(), lying.reset_count()
-        S, vouched = planner.sample_round(rng)
+        S, vouched = planner.sample_round(query, rng)
         assert vouched == (source != "predicted")
         assert (lying.n_checked > 0) == (source != "exact")
         if source == "exact":
@@ -313,6 +361,7 @@ def test_bad_input_gives_clear_errors():
                        (dict(screen_reject=1.5), "screen_reject must lie in"),
                        (dict(screen_penalty=-1), "screen_penalty must be non-negative"),
                        (dict(auxiliary="sometimes"), "auxiliary must be one of"),
+                       (dict(planner="rrt"), "planner must be one of"),
                        (dict(exact_every=0), "exact_every must be a positive integer"),
                        (dict(rebridge=-1), "rebridge must be a non-negative integer"),
                        (dict(rebridge=1.5), "rebridge must be")]:
@@ -405,8 +454,8 @@ def test_screened_path_edges_are_confirmed_coarse_then_fine_each_once(monkeypatc
             checked.extend((resolution, q0.tobytes() + q1.tobytes(), bool(v)) for q0, q1, v in zip(Q0, Q1, ok))
             return ok
         return confirm
-    monkeypatch.setattr(prm, "certify_edges", recording(certify_edges))
-    monkeypatch.setattr(prm, "check_edges", recording(check_edges))
+    monkeypatch.setattr(query_roadmap, "certify_edges", recording(certify_edges))
+    monkeypatch.setattr(query_roadmap, "check_edges", recording(check_edges))
     repairs = 0
     for i, q in enumerate(make_queries(scenario, seed=0, n_workspaces=2, per_workspace=3)):
         exact = exact_checker(q.workspace, scenario.robot)
@@ -436,7 +485,7 @@ def test_screened_edges_are_refuted_where_screening_saw_them_fail_and_only_when_
         looked.extend((q0.tobytes() + q1.tobytes(), r, v) for q0, q1, s, r, v in zip(Q0, Q1, suspect, refuted, invalid)
                       if np.isfinite(s))
         return refuted
-    monkeypatch.setattr(prm, "refute_at", recording)
+    monkeypatch.setattr(query_roadmap, "refute_at", recording)
     for i, q in enumerate(make_queries(scenario, seed=0, n_workspaces=4)):
         exact = exact_checker(q.workspace, scenario.robot)
         result = plan(exact, q.start, q.goal, sampler="BT", checker=NoisyChecker(exact, 0.1, seed=i),
@@ -572,13 +621,13 @@ def test_the_planner_decides_no_pair_twice(monkeypatch):
     """Repairs split roadmaps and the planner bridges them again: every pair it screens or checks is new."""
     scenario = scenarios.get("3dc9")
     decided = []
-    original = prm._Planner.decide
-    def recording(self, pairs):
-        Q = self.roadmap.nodes
+    original = LazyPRM.decide
+    def recording(self, query, pairs):
+        Q = query.roadmap.nodes
         decided.append({Q[i].tobytes() + Q[j].tobytes() for i, j in pairs})
         assert len(decided[-1]) == len(pairs)
-        original(self, pairs)
-    monkeypatch.setattr(prm._Planner, "decide", recording)
+        original(self, query, pairs)
+    monkeypatch.setattr(LazyPRM, "decide", recording)
     rounds = []
     for rebridge in (0, 3):
         stats = []

@@ -6,7 +6,7 @@ import pytest
 from toolkit import scenarios
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.planning.local_planner import segment_points
-from toolkit.planning.sampling import SAMPLERS, make_sampler
+from toolkit.planning.sampling import SAMPLERS, Sampler, make_sampler
 
 
 def setting(name: str, index: int = 0):
@@ -68,7 +68,7 @@ def _pairs(sampler, n, seed):
     """The (q1, q2) pairs that G and BT draw for ``n`` attempts (same draws, same order)."""
     rng = np.random.default_rng(seed)
     Q1 = sampler.robot.sample(rng, n)
-    return Q1, sampler._near(Q1, rng)
+    return Q1, sampler.near(Q1, rng)
 
 
 @pytest.mark.parametrize("scenario", ["2ds", "3dc7"])
@@ -77,7 +77,7 @@ def test_gaussian_keeps_the_valid_one_of_a_mixed_pair(scenario):
     sampler = make_sampler("G", checker)
     Q = sampler.sample(400, np.random.default_rng(5))
     Q1, Q2 = _pairs(sampler, 400, 5)
-    v1, v2 = sampler._valid(Q1), sampler._valid(Q2)
+    v1, v2 = sampler.valid(Q1), sampler.valid(Q2)
     for q in Q:
         i = np.flatnonzero(np.all(Q1 == q, axis=1) | np.all(Q2 == q, axis=1))
         assert len(i) == 1 and v1[i[0]] != v2[i[0]]  # its Gaussian partner is invalid
@@ -92,9 +92,9 @@ def test_bridge_midpoints_are_valid_between_invalid_ends(scenario):
     sampler = make_sampler("BT", checker)
     Q = sampler.sample(2000, np.random.default_rng(2))
     Q1, Q2 = _pairs(sampler, 2000, 2)
-    both_invalid = ~sampler._valid(Q1) & ~sampler._valid(Q2)
+    both_invalid = ~sampler.valid(Q1) & ~sampler.valid(Q2)
     middles = segment_points(robot, Q1, Q2, np.full(len(Q1), 0.5))
-    expected = middles[both_invalid & sampler._valid(middles)]
+    expected = middles[both_invalid & sampler.valid(middles)]
     assert len(Q) > 0
     np.testing.assert_allclose(Q, expected)
     assert not checker.are_valid(Q1[both_invalid]).any()
@@ -123,7 +123,7 @@ def test_a_few_calls_checker_gets_the_same_bridge_samples_in_one_call():
 def test_gaussian_neighbours_wrap_angles():
     robot, checker = setting("3dc7")
     sampler = make_sampler("G", checker, sigma=5.0)
-    near = sampler._near(np.zeros((1000, robot.dof)), np.random.default_rng(0))
+    near = sampler.near(np.zeros((1000, robot.dof)), np.random.default_rng(0))
     angles = near[:, robot.wraps]
     assert angles.min() >= -np.pi and angles.max() < np.pi and np.abs(angles).max() > 3.0
 
@@ -138,3 +138,28 @@ def test_bad_input_gives_clear_errors():
         make_sampler("G", checker, sigma=-1.0)
     with pytest.raises(ValueError, match="n_attempts"):
         make_sampler("BS", checker).sample(-3, np.random.default_rng(0))
+
+
+def test_valid_calls_out_of_bounds_invalid_and_asks_the_checker_about_the_rest_in_one_call():
+    _, exact = setting("2ds")
+    counting = CallCounter(exact, few_calls=False)
+    sampler = make_sampler("BS", counting)
+    inside = np.array([[5.0, 5.0], [30.0, 30.0]])
+    outside = np.array([[-1.0, 5.0], [5.0, 40.0]])
+    Q = np.concatenate([inside, outside])  # (4, 2)
+    np.testing.assert_array_equal(sampler.valid(Q), np.concatenate([exact.are_valid(inside), [False, False]]))
+    assert counting.calls == 1
+
+
+def test_a_sampler_subclass_overrides_draw_and_sample_calls_it():
+    class EveryOther(Sampler):
+        def draw(self, n, rng):
+            Q = self.robot.sample(rng, n)  # (n, dof)
+            return Q[::2][self.valid(Q[::2])]
+
+    robot, checker = setting("2ds")
+    Q = EveryOther(checker).sample(100, np.random.default_rng(2))
+    draws = robot.sample(np.random.default_rng(2), 100)[::2]
+    np.testing.assert_array_equal(Q, draws[checker.are_valid(draws)])
+    with pytest.raises(NotImplementedError, match="must override draw"):
+        Sampler(checker).sample(10, np.random.default_rng(0))

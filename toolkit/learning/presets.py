@@ -10,7 +10,7 @@ by validation on held-out training workspaces, never the unseen test (``toolkit 
 and the decision threshold (0.5) are ours. One deviation: the CAE trains with AdamW at
 1e-4, because with Adagrad at the paper's rate it diverges or collapses to the all-free
 grid. Planning with and without the model is the paper's Algorithm 1
-(``toolkit.prm.PAPER_BASELINE``).
+(``planner="paper"``, :mod:`toolkit.planning.paper_prm`).
 
 ``strong``: what it takes to make the idea work. Its CAE trains on thousands of
 generated grids (``cae_workspaces``) so it stops memorizing; its MLP sees
@@ -30,9 +30,7 @@ Why each choice, measured one change at a time: ``docs/design.md`` ("The presets
 from __future__ import annotations
 
 import hashlib
-from dataclasses import dataclass, replace
-
-from toolkit.planning.prm import PAPER_BASELINE
+from dataclasses import dataclass
 
 
 @dataclass(frozen=True)
@@ -66,25 +64,17 @@ class Preset:
     screen_edges: bool = False  # planning with this model: learned edge screening (toolkit.prm), or the paper's exact edges
     auxiliary: str = "exact"  # planning with this model: how rounds after the first sample (toolkit.prm.AUXILIARY)
     exact_every: int = 4  # planning with this model, auxiliary "confirmed": how often a later round samples exactly
-    paper_baseline: bool = False  # planning, with and without this model: the paper's rounds and edges (prm.PAPER_BASELINE)
-    quick: bool = False  # shrunk by quick_version()
+    planner: str = "lazy"  # planning, with and without this model: "lazy" PRM or "paper" (Algorithm 1; toolkit.prm.PRMOptions)
+    quick: bool = False  # shrunk for a quick run (toolkit.experiments.config.QUICK)
 
     def planner_options(self) -> dict:
         """The :class:`~toolkit.prm.PRMOptions` that planning with this model uses."""
-        options = {"screen_edges": self.screen_edges, "auxiliary": self.auxiliary, "exact_every": self.exact_every}
-        return {**options, **(PAPER_BASELINE if self.paper_baseline else {})}
+        return {"planner": self.planner, "screen_edges": self.screen_edges, "auxiliary": self.auxiliary,
+                "exact_every": self.exact_every}
 
     def fingerprint(self) -> str:
         """8 hex digits that change with any setting: a cache keyed by it never serves a changed recipe."""
         return hashlib.sha256(repr(self).encode()).hexdigest()[:8]
-
-    def quick_version(self) -> "Preset":
-        """The same recipe with few epochs and samples: a whole scenario in seconds (tests, ``--quick``)."""
-        if self.quick:
-            return self
-        return replace(self, quick=True, cae_epochs=max(1, self.cae_epochs // 50), mlp_epochs=max(2, self.mlp_epochs // 10),
-                       samples_factor=min(self.samples_factor, 4), cae_workspaces=min(self.cae_workspaces, 40),
-                       cae_max_steps=min(self.cae_max_steps, 20))
 
 
 PRESETS: dict[str, Preset] = {
@@ -92,7 +82,7 @@ PRESETS: dict[str, Preset] = {
                     cae_optimizer="adamw", cae_lr=1e-4, dropout=0.5, cae_lambda=1e-3,
                     # unstated in the paper, chosen by `toolkit tune --scenario 2ds` on held-out training workspaces:
                     cae_epochs=100, mlp_epochs=50, mlp_batch=32, mlp_init="he", standardize=False,
-                    cae_batch=10, cae_max_steps=1500, paper_baseline=True),
+                    cae_batch=10, cae_max_steps=1500, planner="paper"),
     "strong": Preset("strong", encoding="local", optimizer="adamw", lr=3e-3,
                      cae_optimizer="adamw", cae_lr=1e-3, dropout=0.0, cae_lambda=1e-3, cae_workspaces=2000,
                      cae_epochs=10_000, cae_batch=100, cae_max_steps=2500, mlp_epochs=10, mlp_batch=256, mlp_hidden=(64, 32),
@@ -100,12 +90,23 @@ PRESETS: dict[str, Preset] = {
                      latent_input=False, screen_edges=True, auxiliary="confirmed"),
 }
 
-# Quick runs also use fewer workspaces than the paper (seen, seen-test, unseen).
-QUICK_WORKSPACES = (8, 4, 4)
+
+def register(preset: Preset, *, replace: bool = False) -> Preset:
+    """Make ``get(preset.name)`` return ``preset`` (a recipe of your own), so that everything that takes a preset's
+    name accepts it: ``toolkit train --preset``, ``toolkit reproduce --preset`` (with ``--import MODULE``), the
+    notebooks' ``trained_models``. A name already taken (``paper``, ``strong``) is refused unless ``replace``.
+    Registration lasts for the Python process: register again before loading a checkpoint trained with it.
+    """
+    if not isinstance(preset, Preset):
+        raise TypeError(f"expected a Preset, got {type(preset).__name__}")
+    if preset.name in PRESETS and PRESETS[preset.name] is not preset and not replace:
+        raise ValueError(f"a preset called {preset.name!r} exists; pass replace=True to rebind it")
+    PRESETS[preset.name] = preset
+    return preset
 
 
 def get(name: str) -> Preset:
-    """The preset called ``name`` ('paper' or 'strong')."""
+    """The preset called ``name`` ('paper', 'strong' or a registered one)."""
     try:
         return PRESETS[name]
     except KeyError:

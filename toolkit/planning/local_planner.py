@@ -11,17 +11,15 @@ interior points of all segments coarse-to-fine (odd multiples of 2^k steps, k
 decreasing, like OMPL's ``DiscreteMotionValidator`` bisection order), so a segment
 that collides is usually dropped after a few checks; its first batch takes every
 multiple of the coarsest level that still holds ``MIN_BATCH`` points, because a
-checker call has a fixed cost (measured: 0.4 ms for 1 configuration, against about
-6 us per configuration in a batch, exact 3DC-7) that tiny coarse levels would repeat;
-``certify_edges`` gives the same answer from the checker's clearance bounds, checking
-only where they cannot vouch for a stretch (the planner's path verification;
-``toolkit bench --scenario 3dc9``: 300 segments at 10x finer resolution, 79k
-configurations checked by ``check_edges``, 2.5k bounded and 300 checked by
-``certify_edges``, 11x faster);
-``invalid_fractions`` asks about every interior point (for screening by
-prediction), and ``refute_at`` checks one point a segment, where screening saw it
-fail; ``last_valid_along`` walks segments from their start and stops at the first
-invalid point (for the obstacle-based sampler).
+checker call has a fixed cost, worth many configurations in a batch, that tiny coarse
+levels would repeat; ``certify_edges`` gives the same answer from the checker's
+clearance bounds, checking only where they cannot vouch for a stretch (the planner's
+path verification: at 10x finer resolution it checks a small fraction of the points
+``check_edges`` would). ``invalid_fractions`` asks about every interior point (for
+screening by prediction), and ``refute_at`` checks one point a segment, where screening
+saw it fail; ``last_valid_along`` walks segments from their start and stops at the first
+invalid point (for the obstacle-based sampler). The measurements behind ``MIN_BATCH``
+and the certificates are in ``docs/benchmarks.md`` ("Planner design").
 """
 
 from __future__ import annotations

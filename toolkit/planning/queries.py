@@ -26,7 +26,6 @@ import numpy as np
 
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.geometry.workspace import Workspace
-from toolkit.learning.learned import LearnedChecker
 from toolkit.planning.local_planner import path_is_valid
 from toolkit.planning.prm import PlanResult, PRMOptions, plan
 from toolkit.scenarios import STREAMS, Scenario
@@ -64,13 +63,13 @@ def query_pairs(scenario: Scenario, ws: Workspace, count: int, rng: np.random.Ge
 
 def default_options(scenario: Scenario, checker: CollisionChecker | None = None, **overrides) -> PRMOptions:
     """The planner settings of a scenario: the paper's |S| and the scenario's local-planner resolution, and otherwise
-    :class:`~toolkit.prm.PRMOptions`' defaults (the best exact planner: lazy edges, growing rounds); with a learned
-    ``checker``, the edge rule and rounds of its model's preset (``Preset.planner_options``)."""
+    :class:`~toolkit.planning.prm.PRMOptions`' defaults (the best exact planner: lazy edges, growing rounds); with a
+    ``checker`` that decides samples, the settings it asks for (``checker.planner_options``: a learned checker's are
+    its model's recipe's)."""
     settings = {"n_samples": scenario.plan_samples, "resolution": scenario.plan_resolution}
-    if isinstance(checker, LearnedChecker):
-        settings.update(checker.models.preset.planner_options())
-    settings.update(overrides)
-    return PRMOptions(**settings)
+    if checker is not None:
+        settings.update(checker.planner_options)
+    return PRMOptions(**{**settings, **overrides})
 
 
 def make_queries(scenario: Scenario, seed: int = 0, n_workspaces: int | None = None,

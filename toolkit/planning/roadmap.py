@@ -9,8 +9,8 @@ Every node remembers whether the exact checker has confirmed it (``node_verified
 every edge the finest resolution at which it did (``edge_checked_at``, ``inf``: not
 yet) and, when screened by prediction, where along it prediction saw it fail
 (``edge_suspect``, a fraction from ``edges[:, 0]``; NaN: nowhere); the planner
-(:mod:`toolkit.prm`) confirms a path's nodes and edges before it returns it. Pairs that
-were decided against (``reject``, and every removed edge) are remembered in ``rejected``
+(:mod:`toolkit.planning.query_roadmap`) confirms a path's nodes and edges before it
+returns it. Pairs that were decided against (``reject``, and every removed edge) are remembered in ``rejected``
 and never offered again, so bridging a split roadmap tries new pairs each time.
 """
 

@@ -18,10 +18,13 @@ walls). Defaults follow OMPL: ``sigma = 0.1 x`` the diagonal of the bounds (OMPL
 ``STD_DEV_AS_SPACE_EXTENT_FRACTION``); OB walks in steps of 1 % of that diagonal
 (OMPL's longest valid segment).
 
-A new sampler is a subclass of :class:`Sampler` that implements ``_sample(n, rng)``
-(ask ``self._valid`` about whole batches); :func:`register_sampler` gives it a name,
-and then ``make_sampler(name, checker)`` and ``toolkit.prm.plan(..., sampler=name)``
-use it, with the exact or the learned checker alike (``tutorials/add_a_sampler.ipynb``).
+A new sampler is a subclass of :class:`Sampler` that overrides one method,
+``draw(n, rng)``: ``n`` attempts, returning the ``(M, dof)`` samples they yield. It asks
+``self.valid(Q)`` (the bounds, then the checker, about a whole batch in one call) and may use
+the local planner's batched helpers; callers use ``sample(n_attempts, rng)``, which checks its
+arguments and calls ``draw``. :func:`register_sampler` gives the class a name, and then
+``make_sampler(name, checker)`` and ``toolkit.prm.plan(..., sampler=name)`` use it, with the
+exact or the learned checker alike (``tutorials/add_a_sampler.ipynb``).
 """
 
 from __future__ import annotations
@@ -33,7 +36,13 @@ from toolkit.planning.local_planner import last_valid_along, segment_points
 
 
 class Sampler:
-    """Base class: holds the checker; ``sample(n_attempts, rng) -> (M, dof)`` valid configurations."""
+    """Base class: holds the checker; ``sample(n_attempts, rng) -> (M, dof)`` valid configurations.
+
+    Subclasses override :meth:`draw` and ask :meth:`valid` about whole batches; ``summary``
+    is the line ``toolkit --help`` shows for the sampler (default: the docstring's first line).
+    """
+
+    summary = ""
 
     def __init__(self, checker: CollisionChecker):
         self.checker = checker
@@ -43,23 +52,27 @@ class Sampler:
         return f"{type(self).__name__}({self.robot.name!r})"
 
     def sample(self, n_attempts: int, rng: np.random.Generator) -> np.ndarray:
+        """``(M, dof)`` samples of ``n_attempts`` independent attempts, ``M <= n_attempts``."""
         if int(n_attempts) != n_attempts or n_attempts < 0:
             raise ValueError(f"n_attempts must be a non-negative integer, got {n_attempts!r}")
-        return self._sample(int(n_attempts), rng)
+        return self.draw(int(n_attempts), rng)
 
-    def _sample(self, n: int, rng: np.random.Generator) -> np.ndarray:
-        raise NotImplementedError
+    def draw(self, n: int, rng: np.random.Generator) -> np.ndarray:
+        """What a subclass overrides: ``(M, dof)`` samples of ``n`` attempts (``n`` already checked)."""
+        raise NotImplementedError(f"{type(self).__name__} must override draw(n, rng), the sampler's one method")
 
-    def _valid(self, Q: np.ndarray) -> np.ndarray:
-        """``(N,)`` validity: outside the bounds is invalid, the checker decides the rest (one batch)."""
-        valid = self.robot.in_bounds(Q)
-        if valid.any():
-            valid[valid] = self.checker.are_valid(Q[valid])
-        return valid
+    def valid(self, Q: np.ndarray) -> np.ndarray:
+        """``(N,)`` validity of ``Q (N, dof)``: outside the bounds is invalid, the checker decides the rest (one
+        call for the batch)."""
+        ok = self.robot.in_bounds(Q)  # (N,)
+        if ok.any():
+            ok[ok] = self.checker.are_valid(Q[ok])
+        return ok
 
 
-class _NearSampler(Sampler):
-    """A sampler that draws Gaussian neighbours with standard deviation ``sigma`` (scalar or ``(dof,)``)."""
+class NearSampler(Sampler):
+    """A sampler that draws Gaussian neighbours (:meth:`near`) with standard deviation ``sigma`` (scalar or
+    ``(dof,)``; default: OMPL's, a tenth of the bounds' diagonal)."""
 
     def __init__(self, checker: CollisionChecker, sigma=None):
         super().__init__(checker)
@@ -69,7 +82,7 @@ class _NearSampler(Sampler):
         if not np.all(np.isfinite(self.sigma) & (self.sigma > 0)):
             raise ValueError(f"sigma must be positive and finite, got {sigma!r}")
 
-    def _near(self, Q: np.ndarray, rng: np.random.Generator) -> np.ndarray:
+    def near(self, Q: np.ndarray, rng: np.random.Generator) -> np.ndarray:
         """``(N, dof)`` Gaussian neighbours of ``Q``, angles wrapped."""
         return self.robot.wrap(Q + rng.standard_normal(Q.shape) * self.sigma)
 
@@ -77,9 +90,11 @@ class _NearSampler(Sampler):
 class UniformSampler(Sampler):
     """BS: uniform samples that the checker accepts."""
 
-    def _sample(self, n, rng):
+    summary = "basic: uniform random configurations the checker accepts (Kavraki et al. 1996)"
+
+    def draw(self, n, rng):
         Q = self.robot.sample(rng, n)  # (n, dof)
-        return Q[self._valid(Q)]
+        return Q[self.valid(Q)]
 
 
 class ObstacleBasedSampler(Sampler):
@@ -91,48 +106,54 @@ class ObstacleBasedSampler(Sampler):
     boundary connect badly around convex corners, hence the default 0).
     """
 
+    summary = "obstacle-based: the last free configuration on a line towards a colliding one (Amato et al. 1998)"
+
     def __init__(self, checker: CollisionChecker, resolution: float | None = None, bisections: int = 0):
         super().__init__(checker)
         self.resolution = 0.01 * float(np.linalg.norm(self.robot.upper - self.robot.lower)) if resolution is None else float(resolution)
         self.bisections = int(bisections)
 
-    def _sample(self, n, rng):
+    def draw(self, n, rng):
         Q = self.robot.sample(rng, 2 * n)  # (2n, dof)
-        valid = self._valid(Q)
+        valid = self.valid(Q)
         pairs = min(n, int(valid.sum()), int((~valid).sum()))
         free, blocked = Q[valid][:pairs], Q[~valid][:pairs]
         return last_valid_along(self.checker, free, blocked, self.resolution, self.bisections)
 
 
-class GaussianSampler(_NearSampler):
+class GaussianSampler(NearSampler):
     """G: a uniform ``q1`` and ``q2 ~ N(q1, sigma)``; keep the valid one of a pair with exactly one valid."""
 
-    def _sample(self, n, rng):
+    summary = "Gaussian: of two nearby configurations, the free one when the other collides (Boor et al. 1999)"
+
+    def draw(self, n, rng):
         Q1 = self.robot.sample(rng, n)  # (n, dof)
-        Q2 = self._near(Q1, rng)
-        valid = self._valid(np.concatenate([Q1, Q2])).reshape(2, n)
+        Q2 = self.near(Q1, rng)
+        valid = self.valid(np.concatenate([Q1, Q2])).reshape(2, n)
         one = valid[0] != valid[1]
         return np.where(valid[0, one, None], Q1[one], Q2[one])
 
 
-class BridgeTestSampler(_NearSampler):
+class BridgeTestSampler(NearSampler):
     """BT: an invalid uniform ``q1``, an invalid ``q2 ~ N(q1, sigma)``; keep the midpoint when valid.
 
     A ``few_calls`` checker is asked about all three of every attempt at once; another
     one about ``q2`` only where ``q1`` is invalid, and then about the midpoints.
     """
 
-    def _sample(self, n, rng):
+    summary = "bridge test: the free midpoint of two colliding configurations, for narrow passages (Hsu et al. 2003)"
+
+    def draw(self, n, rng):
         Q1 = self.robot.sample(rng, n)  # (n, dof)
-        Q2 = self._near(Q1, rng)
+        Q2 = self.near(Q1, rng)
         if self.checker.few_calls:
             middle = segment_points(self.robot, Q1, Q2, np.full(n, 0.5))
-            valid = self._valid(np.concatenate([Q1, Q2, middle])).reshape(3, n)
+            valid = self.valid(np.concatenate([Q1, Q2, middle])).reshape(3, n)
             return middle[~valid[0] & ~valid[1] & valid[2]]
-        blocked = np.flatnonzero(~self._valid(Q1))
-        blocked = blocked[~self._valid(Q2[blocked])]  # both ends invalid
+        blocked = np.flatnonzero(~self.valid(Q1))
+        blocked = blocked[~self.valid(Q2[blocked])]  # both ends invalid
         middle = segment_points(self.robot, Q1[blocked], Q2[blocked], np.full(len(blocked), 0.5))
-        return middle[self._valid(middle)]
+        return middle[self.valid(middle)]
 
 
 SAMPLERS: dict[str, type[Sampler]] = {
