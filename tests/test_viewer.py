@@ -1,5 +1,7 @@
-"""The viewer's scene and GUI, driven from Python: nodes per scenario, sliders, colors, plans, ports, embedding."""
+"""The viewer's scene and GUI, driven from Python: nodes per scenario, sliders, colors, plans, events, ports,
+embedding."""
 
+import ast
 import base64
 import html
 import re
@@ -9,6 +11,8 @@ import subprocess
 import sys
 import time
 import urllib.request
+from pathlib import Path
+from typing import ClassVar
 
 import msgspec
 import numpy as np
@@ -19,6 +23,8 @@ from matplotlib import image as mpimg
 from toolkit import scenarios, viewer
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.learning import learned
+from toolkit.planning import sampling
+from toolkit.planning.prm import GOAL, START
 from toolkit.viewer import browser as viewer_browser
 from toolkit.viewer import drawing as draw
 
@@ -43,13 +49,20 @@ class Flipped(CollisionChecker):
         return ~self.exact.are_valid(Q)
 
 
+@pytest.fixture
+def make_panel(make_viewer):
+    """GUI panels over viewers on free ports, as ``viewer.launch`` joins them; ``panel.viewer`` is the scene."""
+    return lambda scenario, **kwargs: viewer.Panel(make_viewer(scenario, **kwargs))
+
+
 def link_colors(v):
     return np.asarray(v.nodes["robot"].batched_colors)
 
 
 @pytest.mark.parametrize("name", ["2ds", "3do", "3dc7", "3dc9"])
-def test_scene_holds_the_workspace_and_the_robot(make_viewer, name):
-    v = make_viewer(name, seed=3)
+def test_scene_holds_the_workspace_and_the_robot(make_panel, name):
+    panel = make_panel(name, seed=3)
+    v = panel.viewer
     scenario = scenarios.get(name)
     ws = scenario.make_workspace(np.random.default_rng(3))
     assert v.workspace == ws
@@ -65,7 +78,7 @@ def test_scene_holds_the_workspace_and_the_robot(make_viewer, name):
     np.testing.assert_allclose(links.batched_positions[:, : ws.dim], centers, atol=1e-5)
     assert v.valid and exact_checker(ws, scenario.robot).is_valid(v.q)
     assert np.all(link_colors(v) == draw.VALID)
-    sliders = v.panel.sliders
+    sliders = panel.sliders
     assert [s.label for s in sliders] == list(scenario.robot.dof_names)
     np.testing.assert_allclose([s.min for s in sliders], scenario.robot.lower)
     np.testing.assert_allclose([s.max for s in sliders], scenario.robot.upper)
@@ -80,10 +93,11 @@ def test_2ds_is_a_flat_3d_scene(make_viewer):
     np.testing.assert_allclose(v.nodes["robot"].batched_scales[:, 2], draw.FLAT_ROBOT_HEIGHT)
 
 
-def test_sliders_move_the_youbot_into_an_obstacle_and_out(make_viewer):
-    v = make_viewer("3do", seed=0)
+def test_sliders_move_the_youbot_into_an_obstacle_and_out(make_panel):
+    panel = make_panel("3do", seed=0)
+    v = panel.viewer
     rest = v.q.copy()
-    x, y = v.panel.sliders[0], v.panel.sliders[1]
+    x, y = panel.sliders[0], panel.sliders[1]
     block = v.workspace.boxes[0]  # furniture stands on the floor, as high as the youBot's base at least
     x.value, y.value = (block[0, :2] + block[1, :2]) / 2
     q = np.concatenate([(block[0, :2] + block[1, :2]) / 2, rest[2:]])
@@ -92,28 +106,30 @@ def test_sliders_move_the_youbot_into_an_obstacle_and_out(make_viewer):
     assert np.all(link_colors(v) == draw.COLLIDING)
     np.testing.assert_allclose(v.nodes["robot"].batched_positions, draw.robot_boxes(v.robot, q[None]).centers,
                                atol=1e-5)
-    assert "in collision" in v.panel.status.content
+    assert "in collision" in panel.status.content
     x.value, y.value = rest[:2]
     assert v.valid and np.all(link_colors(v) == draw.VALID)
-    assert "valid" in v.panel.status.content
+    assert "valid" in panel.status.content
 
 
-def test_an_arm_joint_slider_turns_the_arm(make_viewer):
-    v = make_viewer("3do", seed=0)
+def test_an_arm_joint_slider_turns_the_arm(make_panel):
+    panel = make_panel("3do", seed=0)
+    v = panel.viewer
     before = np.array(v.nodes["robot"].batched_positions)
-    v.panel.sliders[4].value = 1.0  # joint2: the shoulder pitch
+    panel.sliders[4].value = 1.0  # joint2: the shoulder pitch
     after = np.array(v.nodes["robot"].batched_positions)
     assert np.allclose(after[:2], before[:2], atol=1e-6)  # base and turret stay
     assert not np.allclose(after[2:], before[2:], atol=1e-3)  # the arm moves
 
 
-def test_workspace_controls_rebuild_the_scene(make_viewer):
-    v = make_viewer("3do", seed=0)
-    v.panel.new_workspace.value = True  # press the button: next seed
-    assert v.seed == 1 and v.panel.seed.value == 1
+def test_workspace_controls_rebuild_the_scene(make_panel):
+    panel = make_panel("3do", seed=0)
+    v = panel.viewer
+    panel.new_workspace.value = True  # press the button: next seed
+    assert v.seed == 1 and panel.seed.value == 1
     assert v.workspace == scenarios.get("3do").make_workspace(np.random.default_rng(1))
-    v.panel.scenario.value = "3dc9"
-    assert v.scenario.name == "3dc9" and len(v.panel.sliders) == 9
+    panel.scenario.value = "3dc9"
+    assert v.scenario.name == "3dc9" and len(panel.sliders) == 9
     assert len(v.nodes["robot"].batched_positions) == 4
     assert len(v.nodes["obstacles"].batched_positions) == len(v.workspace.boxes)
 
@@ -138,24 +154,26 @@ def test_the_four_samplers_show_valid_samples(make_viewer, sampler):
     assert len(v.nodes["samples"].points) == len(Q)
 
 
-def test_a_wrong_model_is_marked_everywhere(make_viewer, rng):
-    v = make_viewer("2ds", predictor=lambda ws: Flipped(ws, scenarios.get("2ds").robot))
+def test_a_wrong_model_is_marked_everywhere(make_panel, rng):
+    panel = make_panel("2ds", predictor=lambda ws: Flipped(ws, scenarios.get("2ds").robot))
+    v = panel.viewer
     assert v.valid and v.probability == 0.0 and not v.predicted_valid
     assert v.nodes["disagreement"].visible
     assert np.all(np.asarray(v.nodes["prediction"].batched_colors) == draw.COLLIDING)  # p = 0 -> red
-    assert "disagrees" in v.panel.status.content
+    assert "disagrees" in panel.status.content
     v.sample("raw", 300, seed=1)
     colors = v.nodes["samples"].colors
     valid = v.exact.are_valid(v.robot.sample(np.random.default_rng(1), 300))
     assert np.all(colors[valid] == draw.PREDICTED_COLLIDING_BUT_VALID)
     assert np.all(colors[~valid] == draw.PREDICTED_VALID_BUT_COLLIDING)
-    v.panel.layers["prediction"].value = False
+    panel.layers["prediction"].value = False
     assert not v.nodes["prediction"].visible and not v.nodes["disagreement"].visible
 
 
-def test_a_model_of_another_robot_is_not_used(make_viewer):
-    v = make_viewer("3dc9", predictor=lambda ws: Flipped(ws, scenarios.get("3dc7").robot))
-    assert v.model is None and "chain7" in v.model_error and "model not used" in v.panel.status.content
+def test_a_model_of_another_robot_is_not_used(make_panel):
+    panel = make_panel("3dc9", predictor=lambda ws: Flipped(ws, scenarios.get("3dc7").robot))
+    v = panel.viewer
+    assert v.model is None and "chain7" in v.model_error and "model not used" in panel.status.content
 
 
 def test_a_trained_checkpoint_colors_the_robot_and_samples(make_viewer, checkpoint_2ds, rng):
@@ -169,8 +187,9 @@ def test_a_trained_checkpoint_colors_the_robot_and_samples(make_viewer, checkpoi
     np.testing.assert_array_equal(colors, draw.validity_colors(v.exact.are_valid(Q), model.are_valid(Q)))
 
 
-def test_plan_shows_one_roadmap_node_and_a_playable_path(make_viewer):
-    v = make_viewer("2ds")
+def test_plan_shows_one_roadmap_node_and_a_playable_path(make_panel):
+    panel = make_panel("2ds")
+    v = panel.viewer
     result = v.plan("BS", seed=0)
     assert result.success
     edges, nodes = result.roadmap.edges, result.roadmap.nodes
@@ -178,46 +197,49 @@ def test_plan_shows_one_roadmap_node_and_a_playable_path(make_viewer):
     assert segments.shape == (len(edges), 2, 3)  # every edge in one line-segment node
     np.testing.assert_allclose(segments[:, :, :2], nodes[edges], atol=1e-4)
     np.testing.assert_allclose(v.q, result.path[0])  # the robot waits at the start
-    assert not v.panel.along.disabled
-    v.panel.along.value = 1.0  # scrub to the end
+    assert not panel.along.disabled
+    panel.along.value = 1.0  # scrub to the end
     np.testing.assert_allclose(v.q, result.path[-1], atol=1e-9)
-    v.panel.along.value = 0.5
+    panel.along.value = 0.5
     assert v.exact.is_valid(v.q)
     dense = v.path_configurations(np.linspace(0, 1, 200))
     assert v.exact.are_valid(dense).all()
     np.testing.assert_allclose(dense[[0, -1]], result.path[[0, -1]], atol=1e-9)
 
 
-def test_play_and_pause(make_viewer):
-    v = make_viewer("2ds")
+def test_play_and_pause(make_panel):
+    panel = make_panel("2ds")
+    v = panel.viewer
     v.plan("BS", seed=0)
-    v.panel.toggle_play()
+    panel.toggle_play()
     deadline = time.monotonic() + 10
-    while v.panel.along.value == 0.0 and time.monotonic() < deadline:
+    while panel.along.value == 0.0 and time.monotonic() < deadline:
         time.sleep(0.05)
-    v.panel.toggle_play()  # pause
-    paused_at = v.panel.along.value
-    assert 0.0 < paused_at < 1.0 and v.panel._player is None
+    panel.toggle_play()  # pause
+    paused_at = panel.along.value
+    assert 0.0 < paused_at < 1.0 and not panel.playing
     np.testing.assert_allclose(v.q, v.path_configurations([paused_at])[0])
 
 
-def test_layers_toggle(make_viewer):
-    v = make_viewer("3dc7")
+def test_layers_toggle(make_panel):
+    panel = make_panel("3dc7")
+    v = panel.viewer
     v.sample("raw", 50)
     for layer in ("obstacles", "robot", "samples"):
-        v.panel.layers[layer].value = False
+        panel.layers[layer].value = False
         assert not v.nodes[layer].visible
     v.sample("raw", 50, seed=1)  # a redrawn layer keeps its toggle
     assert not v.nodes["samples"].visible
 
 
-def test_bad_input(make_viewer):
+def test_bad_input(make_panel):
     port = free_port()
     with pytest.raises(ValueError, match="unknown scenario"):
         viewer.Viewer("4d", port=port)
     with socket.socket() as again:
         again.bind(("127.0.0.1", port))  # the failed viewer left no server behind
-    v = make_viewer("2ds")
+    panel = make_panel("2ds")
+    v = panel.viewer
     with pytest.raises(ValueError, match="shape"):
         v.set_configuration([1.0, 2.0, 3.0])
     with pytest.raises(ValueError, match="NaN"):
@@ -226,8 +248,116 @@ def test_bad_input(make_viewer):
         v.set_visible("clouds", False)
     with pytest.raises(ValueError, match="no path"):
         v.path_configurations([0.5])
-    v.panel.play.value = True  # the GUI shows the error instead of raising in a worker thread
-    assert "no path to play" in v.panel.status.content
+    panel.play.value = True  # the GUI shows the error instead of raising in a worker thread
+    assert "no path to play" in panel.status.content
+
+
+class Recording(sampling.Sampler):
+    """A toy sampler: uniform configurations the checker accepts, each remembered in ``drawn`` (class-wide)."""
+
+    drawn: ClassVar[list] = []
+
+    def draw(self, n, rng):
+        Q = self.robot.sample(rng, n)  # (n, dof)
+        Q = Q[self.valid(Q)]
+        Recording.drawn.append(Q)
+        return Q
+
+
+@pytest.fixture
+def toy_sampler():
+    """``"toy"``: :class:`Recording`, registered for one test (registration lasts for the process)."""
+    Recording.drawn = []
+    sampling.register_sampler("toy", Recording)
+    yield "toy"
+    del sampling.SAMPLERS["toy"]
+
+
+def test_a_registered_sampler_is_offered_and_samples_and_plans(make_panel, toy_sampler):
+    panel = make_panel("2ds")
+    v = panel.viewer
+    assert panel.sampler.options == ("raw", "BS", "OB", "G", "BT", toy_sampler)  # the paper's four first
+    assert panel.planner_sampler.options == ("BS", "OB", "G", "BT", toy_sampler)
+    Q = v.sample(toy_sampler, 300, seed=4)
+    np.testing.assert_array_equal(Q, Recording.drawn[-1])  # the viewer asked the registered class
+    assert 0 < len(Q) < 300 and v.exact.are_valid(Q).all()
+    np.testing.assert_allclose(v.nodes["samples"].points[:, :2], Q, atol=0.02)
+    Recording.drawn = []
+    result = v.plan(toy_sampler, seed=0)
+    assert result.success and Recording.drawn  # the planner drew its rounds from the toy sampler
+    drawn = np.concatenate(Recording.drawn)  # (M, 2)
+    nodes = np.delete(result.roadmap.nodes, [START, GOAL], axis=0)  # (V - 2, 2) the sampled nodes
+    assert len(nodes) and all(np.any(np.all(drawn == node, axis=1)) for node in nodes)
+    assert v.exact.are_valid(v.path_configurations(np.linspace(0, 1, 200))).all()
+    panel.planner_sampler.value = toy_sampler  # the same from the GUI
+    panel.plan.value = True
+    assert panel.plan_status.content.startswith("path of"), panel.status.content
+
+
+def test_the_viewer_tells_its_listeners_what_happened(make_viewer):
+    v = make_viewer("2ds")
+    heard = []
+    for event in viewer.EVENTS:
+        v.subscribe(event, lambda *args, event=event: heard.append((event, *args)))
+    v.load("2ds", 5)
+    assert heard == [("loading",), ("loaded",), ("moved",)] and v.seed == 5
+    heard.clear()
+    result = v.plan("BS", seed=0)
+    assert heard[-1] == ("planned", result) and ("moved",) in heard  # the robot went to the path's start
+    heard.clear()
+    v.stop()
+    v.stop()  # told once
+    assert heard == [("stopping",)]
+    with pytest.raises(ValueError, match="unknown event 'clicked'"):
+        v.subscribe("clicked", print)
+    with pytest.raises(TypeError, match="callable"):
+        v.subscribe("moved", None)
+
+
+def test_a_panel_joined_later_shows_the_viewer_as_it_is(make_viewer):
+    v = make_viewer("2ds", seed=2)
+    v.plan("BS", seed=0)
+    v.set_configuration(v.path_configurations([0.5])[0])
+    panel = viewer.Panel(v)
+    np.testing.assert_allclose([s.value for s in panel.sliders], v.q)
+    assert panel.seed.value == 2 and not panel.along.disabled
+    assert "seed 2" in panel.status.content
+    v.set_configuration(v.path[0])  # from a script: the panel follows
+    np.testing.assert_allclose([s.value for s in panel.sliders], v.path[0])
+
+
+def test_launch_joins_one_panel_to_the_viewer(capsys):
+    v = viewer.launch("2ds", port=0, quiet=True)
+    try:
+        panels = {callback.__self__ for callbacks in v.listeners.values() for callback in callbacks}
+        assert len(panels) == 1 and isinstance(panels.pop(), viewer.Panel)
+        assert capsys.readouterr().out == ""  # quiet
+    finally:
+        v.stop()
+
+
+READING_ORDER = ["drawing", "server", "scene", "panel", "app", "browser"]  # toolkit/viewer/__init__.py's
+
+
+def viewer_imports(source: str) -> set[str]:
+    """The ``toolkit.viewer`` modules that ``source`` imports anywhere (``TYPE_CHECKING`` blocks included)."""
+    names = set()
+    for node in ast.walk(ast.parse(source)):
+        if isinstance(node, ast.Import):
+            names |= {alias.name for alias in node.names}
+        elif isinstance(node, ast.ImportFrom) and node.module:
+            names |= {node.module} | {f"{node.module}.{alias.name}" for alias in node.names}
+    return {name.split(".")[2] for name in names if name.startswith("toolkit.viewer.")} & set(READING_ORDER)
+
+
+def test_each_viewer_module_imports_only_those_before_it():
+    folder = Path(viewer.__file__).parent
+    assert sorted(READING_ORDER) == sorted(path.stem for path in folder.glob("*.py") if path.stem != "__init__")
+    assert viewer_imports("from toolkit.viewer import drawing as draw\nimport toolkit.viewer.panel") == {
+        "drawing", "panel"}
+    for place, name in enumerate(READING_ORDER):
+        imported = viewer_imports((folder / f"{name}.py").read_text())
+        assert imported <= set(READING_ORDER[:place]), f"{name} imports {sorted(imported)}"
 
 
 def test_busy_port_moves_on_and_stop_frees_it(capsys):

@@ -3,7 +3,7 @@
 ::
 
     from toolkit import viewer
-    v = viewer.launch("3do", seed=0)          # prints the URL to open
+    v = viewer.launch("3do", seed=0)          # the scene and its GUI panel; prints the URL to open
     v.set_configuration(v.robot.lower)        # move the robot; colors follow the checker
     v.stop()                                  # frees the port
 
@@ -15,21 +15,19 @@ the paper's Algorithm 1 (§III-B). For a notebook, :meth:`Viewer.iframe` and :fu
 a static snapshot and :meth:`Viewer.animation_iframe` the robot moving along the planned path,
 each a self-contained page that needs no server.
 
-Reading order:
+Reading order (each module imports only those above it):
 
 1. :mod:`toolkit.viewer.drawing` — workspaces, robots, samples and paths as Viser meshes and lines;
-2. :mod:`toolkit.viewer.server` — :class:`Viewer`: the live scene; :func:`launch`, :func:`embed`;
-3. :mod:`toolkit.viewer.panel` — the GUI panel: joint sliders, samplers, planning, playback;
-4. :mod:`toolkit.viewer.browser` — the page in headless Chromium: screenshots, what they show.
+2. :mod:`toolkit.viewer.server` — how a scene reaches a browser: a server on a free port, or a page inline;
+3. :mod:`toolkit.viewer.scene` — :class:`Viewer`: the live scene, and the events it tells its listeners;
+4. :mod:`toolkit.viewer.panel` — the GUI panel, one listener: joint sliders, samplers, planning, playback;
+5. :mod:`toolkit.viewer.app` — :func:`launch` (the scene with its panel), :func:`serve_forever`, :func:`embed`;
+6. :mod:`toolkit.viewer.browser` — the page in headless Chromium: screenshots, what they show.
 """
 
-from toolkit.viewer.server import (
-    Viewer,
-    embed,
-    free_port,
-    launch,
-    serve_forever,
-    srcdoc_iframe,
-)
+from toolkit.viewer.app import embed, launch, serve_forever
+from toolkit.viewer.panel import Panel
+from toolkit.viewer.scene import EVENTS, Viewer
+from toolkit.viewer.server import free_port, srcdoc_iframe
 
-__all__ = ["Viewer", "embed", "free_port", "launch", "serve_forever", "srcdoc_iframe"]
+__all__ = ["EVENTS", "Panel", "Viewer", "embed", "free_port", "launch", "serve_forever", "srcdoc_iframe"]

@@ -6,7 +6,7 @@ Used by the browser test and to make ``docs/viewer.png``::
 
 Playwright drives Debian's Chromium (``make browser``). WebGL renders in software
 there (``--disable-gpu``; ``--use-gl=swiftshader`` would turn WebGL off), and on a
-busy machine the first frame takes from a second to a minute. So the picture is not
+busy machine the first frame can be long in coming (``docs/viewer.md``). So the picture is not
 taken after a fixed time: the page is photographed every second until ``ready(png)``
 says it shows what is expected (by default, the workspace's obstacles), within a
 total budget after which a ``TimeoutError`` names the last picture. (The earlier

@@ -1,37 +1,56 @@
 """The viewer's GUI panel: scenario and seed, one slider per DoF, samples, plan player, layers.
 
-Every control calls a public method of :class:`toolkit.viewer.Viewer`, so whatever
-the panel does a script can do too. Errors in a callback are shown in the panel's
-status line instead of vanishing in viser's worker threads.
+The panel is a listener of a :class:`~toolkit.viewer.scene.Viewer`: it subscribes to the
+viewer's events (:data:`~toolkit.viewer.scene.EVENTS`) and follows them: a new workspace
+rebuilds the sliders, a move updates them and the status line (exact validity, §III, and
+the model's verdict), a plan readies the path player. The viewer does not know the panel.
+Every control calls a public method of the viewer, so whatever the panel does a script
+can do too. Errors in a callback are shown in the panel's status line instead of
+vanishing in viser's worker threads.
+
+The sampler dropdowns offer the samplers registered when the panel is built
+(:data:`toolkit.planning.sampling.SAMPLERS`: the paper's four, §III-B, then any given to
+``register_sampler``, in that order), so a sampler of your own can be picked, and planned
+with (Algorithm 1), like the paper's.
 """
 
 from __future__ import annotations
 
 import threading
-from typing import TYPE_CHECKING, Callable
+from collections.abc import Callable
 
 import numpy as np
 
 from toolkit import scenarios
+from toolkit.planning import sampling
+from toolkit.viewer.scene import RAW, Viewer
 
-if TYPE_CHECKING:
-    from toolkit.viewer.server import Viewer
-
-PLANNER_SAMPLERS = ("BS", "OB", "G", "BT")  # the paper's four (§III-B)
-SAMPLERS = ("raw",) + PLANNER_SAMPLERS  # 'raw': uniform configurations, unfiltered
 PLAY_SECONDS = 8.0  # a whole path plays in this time
 PLAY_FPS = 20
 
 
 class Panel:
-    """Builds the GUI of ``viewer`` and keeps it in step with the scene."""
+    """Builds the GUI of ``viewer``, shows its current state and follows its events from then on."""
 
     def __init__(self, viewer: Viewer):
         self.viewer = viewer
-        gui = viewer.server.gui
         self._syncing = False  # set while the panel writes slider values itself
         self._player: threading.Thread | None = None
         self._stop_playing = threading.Event()
+        with viewer.lock:  # no event slips between building the controls and subscribing
+            self._build(viewer.server.gui)
+            self.on_load()
+            self.along.disabled = viewer.path is None  # a path planned before the panel came can be played
+            self.on_configuration()
+            for event, callback in (("loading", self.stop_playing), ("loaded", self.on_load),
+                                    ("moved", self.on_configuration), ("planned", self.on_plan),
+                                    ("stopping", self.stop_playing)):
+                viewer.subscribe(event, callback)
+
+    def _build(self, gui) -> None:
+        """The controls, in the panel's order, each wired to a public method of the viewer."""
+        viewer = self.viewer
+        planners = sampler_choices()
 
         with gui.add_folder("Workspace"):
             self.scenario = gui.add_dropdown("scenario", sorted(scenarios.SCENARIOS))
@@ -41,12 +60,12 @@ class Panel:
         self.configuration = gui.add_folder("Configuration")
         self.sliders: list = []
         with gui.add_folder("Samples"):
-            self.sampler = gui.add_dropdown("sampler", SAMPLERS, initial_value="raw")
+            self.sampler = gui.add_dropdown("sampler", (RAW,) + planners, initial_value=RAW)
             self.n_samples = gui.add_number("attempts", 500, min=1, max=20000, step=1)
             self.mark = gui.add_dropdown("mark at", ("base", "tip"))
             self.sample = gui.add_button("sample")
         with gui.add_folder("Plan"):
-            self.planner_sampler = gui.add_dropdown("PRM sampler", PLANNER_SAMPLERS)
+            self.planner_sampler = gui.add_dropdown("PRM sampler", planners)
             self.plan = gui.add_button("plan (PRM)", hint="a new start / goal query")
             self.plan_status = gui.add_markdown("")
             self.play = gui.add_button("play / pause")
@@ -65,7 +84,7 @@ class Panel:
         for layer, box in self.layers.items():
             box.on_update(self._guarded(lambda event, layer=layer: viewer.set_visible(layer, event.target.value)))
 
-    # -- hooks the viewer calls ------------------------------------------------------
+    # -- what the panel does on the viewer's events ------------------------------------
     def on_load(self) -> None:
         """A new workspace: sync the scenario / seed inputs and rebuild one slider per DoF."""
         viewer = self.viewer
@@ -102,7 +121,7 @@ class Panel:
         self.status.content = text
 
     def on_plan(self, result) -> None:
-        """A plan is shown: report it and ready the path slider."""
+        """A plan is shown (Algorithm 1 when a model decides samples): report it and ready the path slider."""
         stats = result.stats
         self.plan_status.content = (
             f"{'path of ' + str(len(result.path)) + ' nodes' if result.success else '**no path found**'}; "
@@ -113,12 +132,13 @@ class Panel:
         self._syncing = False
 
     def show_error(self, err: Exception) -> None:
+        """Show ``err`` in the status line."""
         self.status.content = f"**error:** {err}"
 
     # -- path player --------------------------------------------------------------------
     def toggle_play(self) -> None:
         """Play the robot along the path from the slider's place, or pause it."""
-        if self._player is not None and self._player.is_alive():
+        if self.playing:
             self.stop_playing()
             return
         if self.viewer.path is None:
@@ -127,7 +147,13 @@ class Panel:
         self._player = threading.Thread(target=self._play, daemon=True)
         self._player.start()
 
+    @property
+    def playing(self) -> bool:
+        """Whether the robot is moving along the path."""
+        return self._player is not None and self._player.is_alive()
+
     def stop_playing(self) -> None:
+        """Pause the player and wait for it (the viewer's ``loading`` and ``stopping`` events call this)."""
         self._stop_playing.set()
         if self._player is not None and self._player is not threading.current_thread():
             self._player.join()
@@ -169,3 +195,9 @@ class Panel:
             except Exception as err:  # noqa: BLE001 - shown to the user, not swallowed
                 self.show_error(err)
         return run
+
+
+def sampler_choices() -> tuple[str, ...]:
+    """The names of the samplers registered now: the paper's four first, then the registered ones (the registry
+    keeps the order names were added in)."""
+    return tuple(sampling.SAMPLERS)

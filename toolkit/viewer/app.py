@@ -1,0 +1,58 @@
+"""Starting a viewer: the live one with its GUI panel (``toolkit view``), or a one-off snapshot for a notebook.
+
+:func:`launch` builds the two halves and joins them: a :class:`~toolkit.viewer.scene.Viewer`
+(the scene) and a :class:`~toolkit.viewer.panel.Panel` that listens to it. This is the one
+module that knows both; the scene never imports the panel. :func:`serve_forever` keeps the
+process serving until Ctrl-C. :func:`embed` takes a snapshot with no panel and no server
+left behind.
+"""
+
+from __future__ import annotations
+
+import time
+from pathlib import Path
+
+from toolkit.viewer.panel import Panel
+from toolkit.viewer.scene import Predictor, Viewer
+
+
+def launch(scenario: str = "3do", *, seed: int = 0, checkpoint: str | Path | None = None,
+           predictor: Predictor | None = None, host: str = "127.0.0.1", port: int = 8080,
+           quiet: bool = False) -> Viewer:
+    """Start a :class:`Viewer` with its GUI panel and print the URL to open (and whether the port was busy)."""
+    viewer = Viewer(scenario, seed=seed, checkpoint=checkpoint, predictor=predictor, host=host, port=port)
+    try:
+        Panel(viewer)  # it subscribes to the viewer's events: the viewer keeps it
+    except BaseException:
+        viewer.stop()
+        raise
+    if not quiet:
+        busy = f" (port {port} was busy)" if port and viewer.port != port else ""
+        print(f"toolkit view: {scenario} (seed {seed}) at {viewer.url}{busy} — open it in a browser; Ctrl-C stops",
+              flush=True)
+    return viewer
+
+
+def serve_forever(viewer: Viewer) -> None:
+    """Keep serving until Ctrl-C, then stop the viewer."""
+    try:
+        while True:
+            time.sleep(0.5)
+    except KeyboardInterrupt:
+        pass
+    finally:
+        viewer.stop()
+
+
+def embed(scenario: str = "3do", *, seed: int = 0, q=None, samples=None, height: int = 480) -> str:
+    """A static snapshot of a scenario (robot at ``q``, optional ``samples (N, dof)``) as an ``<iframe>``.
+
+    For notebooks: ``IPython.display.HTML(viewer.embed("3do"))``. A server runs on a
+    free port only while the snapshot is taken; nothing opens a browser.
+    """
+    with Viewer(scenario, seed=seed, port=0) as viewer:
+        if q is not None:
+            viewer.set_configuration(q)
+        if samples is not None:
+            viewer.show_samples(samples)
+        return viewer.iframe(height)

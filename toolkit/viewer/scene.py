@@ -1,0 +1,347 @@
+"""The live scene: a :class:`Viewer` shows one scenario's workspace, robot, samples, roadmap and path.
+
+The scene answers the questions of the paper's §III in colors: the robot's link boxes
+are green where the exact checker calls the configuration valid and red where it finds
+a collision; with a learned model (``checkpoint=`` or ``predictor=``) a wireframe around
+the links shows its probability of validity, and samples are colored by exact vs
+predicted validity (:func:`toolkit.viewer.drawing.validity_colors`). :meth:`Viewer.plan`
+runs PRM, with the model deciding samples when one is loaded: the paper's Algorithm 1.
+
+The viewer knows nothing of a GUI. It tells *listeners* what happened (:data:`EVENTS`,
+:meth:`Viewer.subscribe`); the panel (:mod:`toolkit.viewer.panel`) is one listener, a
+script or a test can be another, and any of them changes the scene through the same
+public methods.
+"""
+
+from __future__ import annotations
+
+import threading
+from collections.abc import Callable
+from functools import partial
+from pathlib import Path
+
+import numpy as np
+import viser
+
+from toolkit import scenarios
+from toolkit.geometry.collision import CollisionChecker, exact_checker
+from toolkit.geometry.robots import BASES
+from toolkit.geometry.workspace import Workspace
+from toolkit.planning import prm, queries
+from toolkit.planning.sampling import make_sampler
+from toolkit.viewer import drawing as draw
+from toolkit.viewer.server import srcdoc_iframe, start_server, stop_server
+
+Predictor = Callable[[Workspace], CollisionChecker]  # workspace -> checker with are_valid(Q), probability(Q)
+LAYERS = ("obstacles", "robot", "prediction", "samples", "roadmap", "path")
+HALO = 1.15  # the prediction wireframe is this much larger than the links
+RAW = "raw"  # the "sampler" of uniform configurations, unfiltered: what a model is asked about
+
+EVENTS = {  # what a Viewer tells its listeners, and the arguments a listener's callback receives
+    "loading": "before a new workspace replaces the scene (outside the lock: a listener may wait for its threads); ()",
+    "loaded": "a new workspace, robot and checkers are in place; ()",
+    "moved": "the robot moved: q, valid, probability, predicted_valid are current; ()",
+    "planned": "a PRM result is drawn (path holds its path, or None); (result,)",
+    "stopping": "before the server stops (outside the lock); ()",
+}
+
+
+class Viewer:
+    """A live Viser scene of one scenario and workspace, served on ``host:port``.
+
+    ``checkpoint`` (a folder from ``toolkit train``) or ``predictor`` (a function
+    workspace -> learned checker) adds the model's predictions. A checkpoint that
+    cannot be read, or a host or port that cannot be served on, raises before the
+    server starts. The scene has no GUI of its own: :func:`toolkit.viewer.launch` adds
+    the panel.
+    """
+
+    def __init__(self, scenario: str = "3do", *, seed: int = 0, checkpoint: str | Path | None = None,
+                 predictor: Predictor | None = None, host: str = "127.0.0.1", port: int = 8080):
+        if checkpoint is not None and predictor is not None:
+            raise ValueError("give a checkpoint or a predictor, not both")
+        if checkpoint is not None:
+            # torch: only when a model is asked for
+            from toolkit.learning.checkpoints import load_models
+            from toolkit.learning.learned import LearnedChecker
+
+            predictor = partial(LearnedChecker, models=load_models(checkpoint))
+        self.predictor = predictor
+        self.server = start_server(host, port)
+        draw.light(self.server.scene)
+        self.lock = threading.RLock()  # GUI callbacks arrive on viser's threads
+        self.listeners: dict[str, list[Callable]] = {event: [] for event in EVENTS}
+        self.nodes: dict[str, viser.SceneNodeHandle] = {}
+        self.visible = dict.fromkeys(LAYERS, True)
+        self.path: np.ndarray | None = None  # (P, dof) the shown solution path
+        self.stopped = False
+        try:
+            self.load(scenario, seed)
+        except BaseException:  # e.g. an unknown scenario: leave no server behind
+            self.stop()
+            raise
+
+    @property
+    def port(self) -> int:
+        return self.server.get_port()
+
+    @property
+    def url(self) -> str:
+        host = self.server.get_host()
+        return f"http://{'127.0.0.1' if host in ('0.0.0.0', '') else host}:{self.port}"
+
+    @property
+    def robot(self):
+        return self.scenario.robot
+
+    # -- listeners ---------------------------------------------------------------------
+    def subscribe(self, event: str, callback: Callable) -> None:
+        """Call ``callback`` whenever ``event`` (one of :data:`EVENTS`) happens, with the arguments listed there.
+
+        A listener that subscribes after the viewer started reads its current state itself.
+        """
+        if event not in EVENTS:
+            raise ValueError(f"unknown event {event!r}; choose one of {tuple(EVENTS)}")
+        if not callable(callback):
+            raise TypeError(f"a listener must be callable, got {callback!r}")
+        self.listeners[event].append(callback)
+
+    def _notify(self, event: str, *args) -> None:
+        for callback in list(self.listeners[event]):
+            callback(*args)
+
+    # -- workspace and robot -----------------------------------------------------
+    def load(self, scenario: str, seed: int) -> None:
+        """Show a new workspace of ``scenario`` drawn from ``seed``; the robot starts at a valid rest pose."""
+        self._notify("loading")  # before taking the lock: a listener may wait for a thread that needs it
+        with self.lock:
+            self.scenario, self.seed = scenarios.get(scenario), int(seed)
+            rng = np.random.default_rng(self.seed)
+            self.workspace = self.scenario.make_workspace(rng)
+            self.exact = exact_checker(self.workspace, self.robot)
+            self.model, self.model_error = self._load_model()
+            for name in ("prediction", "disagreement", "samples", "roadmap", "path"):
+                self._remove(name)
+            self.path = None
+            for layer, handle in draw.draw_workspace(self.server.scene, self.workspace).items():
+                self._add(layer, handle)
+            self.q = self.valid_configuration(rng, rest=True)
+            self._aim_camera(*draw.camera_pose(self.robot, self.workspace, self.q))
+            boxes = draw.robot_boxes(self.robot, self.q[None])
+            self._add("robot", draw.add_boxes(self.server.scene, "/robot/links", boxes, draw.VALID))
+            if self.model is not None:
+                self._add("prediction", draw.add_boxes(self.server.scene, "/robot/prediction", boxes.scaled(HALO),
+                                                       draw.VALID, wireframe=True))
+                self.nodes["disagreement"] = self.server.scene.add_label(
+                    "/robot/disagreement", "model disagrees", visible=False)
+            self._notify("loaded")
+            self.set_configuration(self.q)
+
+    def set_configuration(self, q) -> None:
+        """Move the robot to ``q (dof,)`` and color it by validity (§III): green valid, red in collision, by the
+        exact checker; the model's wireframe from red (p = 0) to green (p = 1)."""
+        q = self.robot.check_configs(q, "q")[0]
+        with self.lock:
+            self.q = q
+            boxes = draw.robot_boxes(self.robot, q[None])
+            self.valid = bool(self.exact.are_valid(q[None])[0])
+            draw.move_boxes(self.nodes["robot"], boxes,
+                            np.broadcast_to(draw.VALID if self.valid else draw.COLLIDING, (len(boxes), 3)))
+            self.probability = self.predicted_valid = None
+            if self.model is not None:
+                self.probability = float(self.model.probability(q[None])[0])
+                self.predicted_valid = bool(self.model.are_valid(q[None])[0])
+                draw.move_boxes(self.nodes["prediction"], boxes.scaled(HALO),
+                                np.repeat(draw.probability_colors([self.probability]), len(boxes), axis=0))
+                self.nodes["disagreement"].position = boxes.centers.max(axis=0) + np.array([0.0, 0.0, 1.0])
+                self._show_disagreement()
+            self._notify("moved")
+
+    def valid_configuration(self, rng: np.random.Generator, *, rest: bool = False, tries: int = 512) -> np.ndarray:
+        """A valid configuration ``(dof,)`` drawn with ``rng``.
+
+        ``rest``: the arm at rest (joints 0, within limits) and, of the valid candidates,
+        the one whose base is nearest the middle of the workspace (easy to find on screen).
+        If none of ``tries`` candidates is valid, the first one (it is shown red).
+        """
+        Q = self.robot.sample(rng, tries)  # (tries, dof)
+        if rest:
+            n_base = len(BASES[self.robot.base][0])
+            Q[:, n_base:] = np.clip(0.0, self.robot.lower[n_base:], self.robot.upper[n_base:])
+        valid = np.flatnonzero(self.exact.are_valid(Q))
+        if not len(valid) or not rest:
+            return Q[valid[0]] if len(valid) else Q[0]
+        middle = (self.workspace.lower + self.workspace.upper) / 2
+        bases = self.robot.link_boxes(Q[valid])[0][:, 0]  # (V, D)
+        return Q[valid[np.argmin(np.linalg.norm(bases - middle, axis=1))]]
+
+    # -- samples, roadmap, path ------------------------------------------------------
+    def show_samples(self, Q, *, at: str = "base") -> np.ndarray:
+        """Mark configurations ``Q (N, dof)`` as points colored by exact vs predicted validity (§III); returns the
+        ``(N, 3)`` colors."""
+        Q = self.robot.check_configs(Q)
+        with self.lock:
+            valid = self.exact.are_valid(Q)
+            predicted = self.model.are_valid(Q) if self.model is not None else None
+            colors = draw.validity_colors(valid, predicted)  # (N, 3)
+            self._add("samples", self.server.scene.add_point_cloud(
+                "/samples", draw.config_points(self.robot, Q, at).astype(np.float32), colors,
+                point_size=draw.POINT_SIZE[self.workspace.family], point_shape="circle"))
+            return colors
+
+    def sample(self, sampler: str = RAW, n: int = 200, *, seed: int = 0, at: str = "base") -> np.ndarray:
+        """Draw ``n`` attempts with ``sampler`` and show them; returns the samples ``(M, dof)``.
+
+        ``'raw'``: uniform configurations, unfiltered (what the model is asked about);
+        ``'BS'``, ``'OB'``, ``'G'``, ``'BT'`` (the paper's samplers, §III-B) or any name given
+        to :func:`toolkit.planning.sampling.register_sampler`: validity decided by the model
+        when one is loaded (Algorithm 1, lines 2-3), else exactly.
+        """
+        rng = np.random.default_rng(seed)
+        if sampler == RAW:
+            Q = self.robot.sample(rng, n)
+        else:
+            Q = make_sampler(sampler, self.model or self.exact).sample(n, rng)
+        self.show_samples(Q, at=at)
+        return Q
+
+    def plan(self, sampler: str = "BS", *, seed: int = 0) -> prm.PlanResult:
+        """Solve a paper-style query (§IV-A: valid start and goal far apart, from ``seed``) with PRM and show it.
+
+        With a model loaded this is Algorithm 1, with the planner settings the model asks for
+        (:func:`toolkit.planning.queries.default_options`); the returned path is verified
+        exactly either way. ``sampler``: any name :meth:`sample` takes but ``'raw'``.
+        """
+        rng = np.random.default_rng(seed)
+        start, goal = queries.query_pairs(self.scenario, self.workspace, 1, rng)[0]
+        result = prm.plan(self.exact, start, goal, sampler=sampler, checker=self.model,
+                          options=queries.default_options(self.scenario, self.model), rng=rng)
+        self.show_plan(result)
+        return result
+
+    def show_plan(self, result: prm.PlanResult, *, at: str = "base") -> None:
+        """Draw a PRM result: roadmap edges as one line-segment node, the path, and move the robot to its start."""
+        nodes, edges = np.asarray(result.roadmap.nodes), np.asarray(result.roadmap.edges).reshape(-1, 2)
+        with self.lock:
+            points = draw.config_points(self.robot, nodes, at)  # (V, 3)
+            self._add("roadmap", self.server.scene.add_line_segments(
+                "/plan/roadmap", draw.edge_segments(points, edges), draw.ROADMAP, thickness=1.0,
+                thickness_units="screen"))
+            self._remove("path")
+            self.path = None
+            if len(result.path) > 1:
+                self.path = self.robot.check_configs(result.path, "path")
+                dense = self.path_configurations(np.linspace(0.0, 1.0, 20 * len(self.path)))
+                self._add("path", self.server.scene.add_line_segments(
+                    "/plan/path", draw.polyline_segments(draw.config_points(self.robot, dense, at)), draw.PATH,
+                    thickness=4.0, thickness_units="screen"))
+                self.set_configuration(self.path[0])
+            self._notify("planned", result)
+
+    def path_configurations(self, t) -> np.ndarray:
+        """``(T, dof)`` configurations at fractions ``t`` (T,) of the shown path's length."""
+        if self.path is None:
+            raise ValueError("no path is shown; plan or show_plan first")
+        lengths = self.robot.distance(self.path[:-1], self.path[1:])  # (P-1,)
+        ends = np.cumsum(lengths)
+        at = np.clip(np.asarray(t, dtype=float).reshape(-1), 0.0, 1.0) * ends[-1]  # (T,) distance travelled
+        segment = np.minimum(np.searchsorted(ends, at), len(lengths) - 1)  # (T,)
+        fraction = (at - (ends[segment] - lengths[segment])) / np.maximum(lengths[segment], 1e-12)
+        return np.stack([self.robot.interpolate(self.path[s], self.path[s + 1], [f])[0]
+                         for s, f in zip(segment, np.clip(fraction, 0.0, 1.0))])
+
+    # -- layers, pages, shutdown -----------------------------------------------------------
+    def set_visible(self, layer: str, visible: bool) -> None:
+        """Show or hide one of :data:`LAYERS`."""
+        if layer not in LAYERS:
+            raise ValueError(f"unknown layer {layer!r}; choose one of {LAYERS}")
+        with self.lock:
+            self.visible[layer] = bool(visible)
+            if layer in self.nodes:
+                self.nodes[layer].visible = bool(visible)
+            if layer == "prediction" and self.model is not None:
+                self._show_disagreement()
+
+    def html(self) -> str:
+        """The current scene as one self-contained HTML document (no server needed to view it)."""
+        with self.lock:
+            return self.server.scene.as_html()
+
+    def iframe(self, height: int = 480) -> str:
+        """The current scene as an ``<iframe>`` for ``IPython.display.HTML`` (a static snapshot)."""
+        return srcdoc_iframe(self.html(), height)
+
+    def animation_html(self, *, frames: int = 60, seconds: float = 6.0) -> str:
+        """The robot moving along the shown path, as one self-contained HTML document (no server needed).
+
+        A recording made with viser's scene serializer: the scene as it is now, then
+        ``frames`` configurations evenly spaced along the path (:meth:`path_configurations`),
+        ``seconds / (frames - 1)`` apart, each colored by the exact checker (and the model's
+        wireframe, if one is loaded). The camera starts framing the whole motion
+        (:func:`toolkit.viewer.drawing.path_camera`); the page plays the recording in a loop,
+        with a timeline to pause and scrub. The robot and the camera are put back afterwards.
+        """
+        if frames < 2 or not seconds > 0:
+            raise ValueError(f"an animation needs frames >= 2 and seconds > 0, got {frames} and {seconds}")
+        configurations = self.path_configurations(np.linspace(0.0, 1.0, int(frames)))  # (F, dof)
+        camera = self.server.initial_camera
+        with self.lock:
+            before = self.q, camera.look_at, camera.position
+            self.set_configuration(configurations[0])
+            camera.look_at, camera.position = draw.path_camera(self.robot, configurations)
+            recording = self.server.get_scene_serializer()  # the scene now, then every scene message
+            for q in configurations[1:]:
+                recording.insert_sleep(seconds / (frames - 1))
+                self.set_configuration(q)
+            document = recording.as_html()  # stops the recording
+            self.set_configuration(before[0])
+            camera.look_at, camera.position = before[1:]
+        return document
+
+    def animation_iframe(self, height: int = 480, *, frames: int = 60, seconds: float = 6.0) -> str:
+        """:meth:`animation_html` as an ``<iframe>`` for ``IPython.display.HTML``."""
+        return srcdoc_iframe(self.animation_html(frames=frames, seconds=seconds), height)
+
+    def stop(self) -> None:
+        """Tell the listeners, then stop the server; the port is free afterwards. Stopping twice is harmless."""
+        if self.stopped:
+            return
+        self.stopped = True
+        self._notify("stopping")
+        stop_server(self.server)
+
+    def __enter__(self) -> Viewer:
+        return self
+
+    def __exit__(self, *exc) -> None:
+        self.stop()
+
+    # -- internals ------------------------------------------------------------------------
+    def _load_model(self) -> tuple[CollisionChecker | None, str]:
+        """The predictor's checker for this workspace, or None and why it does not apply."""
+        if self.predictor is None:
+            return None, ""
+        try:
+            model = self.predictor(self.workspace)
+        except (ValueError, FileNotFoundError) as err:  # e.g. a checkpoint of another scenario
+            return None, str(err)
+        if model.robot.name != self.robot.name:
+            return None, f"the model is for robot {model.robot.name!r}, this scenario's is {self.robot.name!r}"
+        return model, ""
+
+    def _show_disagreement(self) -> None:
+        self.nodes["disagreement"].visible = self.visible["prediction"] and self.predicted_valid != self.valid
+
+    def _aim_camera(self, look_at: np.ndarray, position: np.ndarray) -> None:
+        self.server.initial_camera.look_at, self.server.initial_camera.position = look_at, position
+        for client in self.server.get_clients().values():
+            client.camera.look_at, client.camera.position = look_at, position
+
+    def _add(self, layer: str, handle: viser.SceneNodeHandle) -> None:
+        handle.visible = self.visible.get(layer, True)
+        self.nodes[layer] = handle
+
+    def _remove(self, name: str) -> None:
+        handle = self.nodes.pop(name, None)
+        if handle is not None:
+            handle.remove()
