@@ -8,10 +8,13 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from toolkit import cli, scenarios
-from toolkit.experiments import bench
+from toolkit.experiments import bench, versus_ompl
+from toolkit.learning import checkpoints
+from toolkit.planning import queries, sampling
 
 
 def test_bench_prints_one_json_object(capsys):
@@ -132,14 +135,100 @@ def test_bench_vs_ompl_prints_a_markdown_table(capsys):
 def test_versus_ompl_races_the_chosen_planners_only():
     pytest.importorskip("ompl")
     scenario = scenarios.get("2ds")
-    table = bench.versus_ompl(scenario, 2, 9000, ompl_seconds=5, ompl_planners=("RRTConnect",), paper_baseline=False)
+    table = versus_ompl.versus_ompl(scenario, 2, 9000, ompl_seconds=5, ompl_planners=("RRTConnect",),
+                                    paper_baseline=False)
     assert list(table) == ["ours, best exact", "OMPL RRTConnect"]
     assert table["ours, best exact"]["success_rate"] == 1.0 and table["ours, best exact"]["valid_rate"] == 1.0
     assert all(len(row["seconds"]) == 2 for row in table.values())
-    lines = bench.versus_ompl_markdown(scenario, table).splitlines()
+    lines = versus_ompl.versus_ompl_markdown(scenario, table).splitlines()
     assert lines[0].endswith("| median / OMPL RRTConnect's |") and lines[-1].endswith("| 1.00 |")
-    with pytest.raises(ValueError, match="no planner"):
-        bench.versus_ompl(scenario, 1, ompl_planners=("NoSuchPlanner",))
+    with pytest.raises(ValueError, match=r"no planner\(s\) \['NoSuchPlanner'\]"):
+        versus_ompl.versus_ompl(scenario, 1, ompl_planners=("NoSuchPlanner",))
+    with pytest.raises(ValueError, match="n_queries must be a positive integer, got 0"):
+        versus_ompl.versus_ompl(scenario, 0)
+
+
+def test_a_race_takes_the_first_queries_of_the_paper_set():
+    scenario = scenarios.get("2ds")
+    first = versus_ompl.race_queries(scenario, 3, 9000)
+    paper_set = queries.make_queries(scenario, 9000)
+    assert len(first) == 3
+    for ours, theirs in zip(first, paper_set[:3]):
+        np.testing.assert_array_equal(ours.start, theirs.start)
+        np.testing.assert_array_equal(ours.goal, theirs.goal)
+
+
+def test_a_race_rotates_who_goes_first_and_times_every_solve(monkeypatch):
+    """Three planners over three queries: each query's first planner is the next one; a fake clock moves on by
+    each planner's own duration, and the table reports those durations."""
+    clock, order = [0.0], []
+
+    def fake(name, seconds, success):
+        def solve(query, exact, n):
+            order.append((n, name))
+            clock[0] += seconds
+            return success, None if not success else np.stack([query.start, query.start])
+        return solve
+
+    monkeypatch.setattr(versus_ompl.time, "perf_counter", lambda: clock[0])
+    scenario = scenarios.get("2ds")
+    planners = {"a": fake("a", 1.0, True), "b": fake("b", 2.0, False), "c": fake("c", 4.0, True)}
+    solves = versus_ompl.race(scenario, versus_ompl.race_queries(scenario, 3, 9000), planners)
+    assert order == [(0, "a"), (0, "b"), (0, "c"), (1, "b"), (1, "c"), (1, "a"), (2, "c"), (2, "a"), (2, "b")]
+    table = versus_ompl.summarize(solves)
+    assert table["a"]["seconds"] == [1.0, 1.0, 1.0] and table["c"]["median_s"] == 4.0
+    assert table["b"]["success_rate"] == 0.0 and table["b"]["valid_rate"] == 1.0  # nothing found, nothing invalid
+    assert table["a"]["success_rate"] == 1.0 and table["a"]["valid_rate"] == 1.0  # a path of the start, twice
+    assert table["a"]["checks_median"] == 0.0  # the fake planners ask the checker nothing
+
+
+def test_summarize_counts_failures_times_and_validity_of_found_paths_only():
+    runs = [{"seconds": s, "success": ok, "valid": valid, "checks": c}
+            for s, ok, valid, c in ((1.0, True, True, 10), (2.0, True, False, 20), (3.0, False, False, 30),
+                                    (10.0, True, True, 40))]
+    row = versus_ompl.summarize({"p": runs})["p"]
+    assert row["queries"] == 4 and row["success_rate"] == 0.75
+    assert row["valid_rate"] == pytest.approx(2 / 3)  # of the three paths found
+    assert row["median_s"] == 2.5 and row["mean_s"] == 4.0 and row["checks_median"] == 25.0
+    assert row["p90_s"] == pytest.approx(float(np.percentile([1.0, 2.0, 3.0, 10.0], 90)))
+
+
+def test_planning_ratios_plans_a_registered_sampler_and_names_an_unknown_one(monkeypatch, checkpoint_2ds):
+    monkeypatch.setattr(sampling, "SAMPLERS", dict(sampling.SAMPLERS))
+
+    class Uniform(sampling.UniformSampler):
+        """BS under another name."""
+
+    sampling.register_sampler("MINE", Uniform)
+    models = checkpoints.load_models(checkpoint_2ds, "2ds")
+    scenario = scenarios.get("2ds")
+    result = bench.planning_ratios(scenario, models, 1, 1, samplers=("MINE",), overrides={"max_rounds": 1})
+    assert set(result) == {"MINE"}
+    assert result["MINE"]["rounds_with"] == result["MINE"]["rounds_without"] == 1
+    with pytest.raises(ValueError, match=r"unknown sampler\(s\) \['RRT'\]; choose from \['BS', 'BT', 'G', 'MINE', 'OB'\]"):
+        bench.planning_ratios(scenario, models, 1, 1, samplers=("BS", "RRT"))
+
+
+def test_untrained_models_have_the_presets_sizes_and_answer_alike_for_a_seed():
+    scenario = scenarios.get("2ds")
+    one, two = (bench.untrained_models(scenario, "strong", seed=3) for _ in range(2))
+    assert one.preset.name == "strong" and not one.predictor.training
+    for a, b in zip(one.predictor.state_dict().values(), two.predictor.state_dict().values()):
+        assert a.shape == b.shape and bool((a == b).all())
+    with pytest.raises(ValueError, match="unknown preset"):
+        bench.untrained_models(scenario, "nope")
+
+
+def test_edge_check_segments_join_valid_configurations_a_short_step_apart():
+    from toolkit.geometry.collision import exact_checker
+
+    scenario = scenarios.get("2ds")
+    exact = exact_checker(scenario.workspaces("query", 1, 0)[0], scenario.robot)
+    Q0, Q1 = bench.short_valid_segments(exact, 50, np.random.default_rng(0))
+    assert Q0.shape == Q1.shape == (50, scenario.robot.dof)
+    assert exact.are_valid(Q0).all() and exact.are_valid(Q1).all()
+    steps = np.abs(Q1 - Q0) / (scenario.robot.upper - scenario.robot.lower)  # (50, dof), as fractions of the bounds
+    assert 0.005 < np.median(steps) < 0.05  # normal steps of 0.03 x the bounds: median |step| about 0.02
 
 
 def test_bench_vs_ompl_says_how_to_install_ompl(monkeypatch, capsys):
