@@ -33,11 +33,11 @@ def make_viewer():
 @pytest.fixture(scope="session")
 def checkpoint_2ds(tmp_path_factory):
     """A checkpoint folder of a quick 2DS ``strong`` model (seconds to train)."""
-    from toolkit.learning import checkpoints, training
+    from toolkit.experiments import pipeline
+    from toolkit.experiments.config import RunConfig
 
-    splits = training.preset_splits("2ds", "strong", seed=0, quick=True, progress=False)
-    models = training.train_models("2ds", "strong", splits, seed=0, progress=False, quick=True, device="cpu")
-    return checkpoints.save_checkpoint(models, tmp_path_factory.mktemp("ckpt"))
+    config = RunConfig.create("2ds", "strong", quick=True, progress=False, device="cpu")
+    return pipeline.train_and_save(config, tmp_path_factory.mktemp("ckpt") / "ckpt")[2]
 
 
 @pytest.fixture(scope="session")

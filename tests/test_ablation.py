@@ -7,6 +7,7 @@ import pytest
 
 from toolkit import cli
 from toolkit.experiments import ablation
+from toolkit.experiments.config import RunConfig
 from toolkit.learning import presets, training
 
 
@@ -39,4 +40,4 @@ def test_quick_ablation_scores_every_row_and_resumes(tmp_path, monkeypatch, caps
     assert table.count("\n| ") == len(ablation.STEPS) + 2 and "(CAE reused)" in table
     # a finished ablation is not redone
     monkeypatch.setattr(training, "train_models", lambda *a, **k: pytest.fail("a cached row was trained again"))
-    assert ablation.ablate("2ds", out, quick=True, progress=False) == result["rows"]
+    assert ablation.ablate(RunConfig.create("2ds", quick=True, progress=False), out) == result["rows"]

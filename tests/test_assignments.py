@@ -21,6 +21,7 @@ from pathlib import Path
 import pytest
 
 from toolkit import cli
+from toolkit.cli import commands
 from toolkit.teaching import grading
 
 ASSIGNMENTS = ["bridge_test", "verify_and_repair", "evaluating_a_checker", "cae_loss"]
@@ -168,7 +169,7 @@ def test_missing_or_empty_submissions_are_named(tmp_path):
 
 def test_the_grade_command_is_wired():
     args = cli.build_parser().parse_args(["grade", "x.ipynb", "--csv", "s.csv", "--timeout", "5"])
-    assert args.func is cli.cmd_grade and args.notebooks == ["x.ipynb"] and args.timeout == 5.0
+    assert args.func is commands.cmd_grade and args.notebooks == ["x.ipynb"] and args.timeout == 5.0
     with pytest.raises(ValueError, match="unknown assignment"):
         grading.master("no_such_assignment")
 

@@ -16,8 +16,12 @@ import torch
 from threadpoolctl import threadpool_info
 
 from toolkit import cli, viewer
+from toolkit.experiments import pipeline
 from toolkit.experiments import reproduce as experiments
+from toolkit.experiments.config import RunConfig
+from toolkit.experiments.stages import Stages
 from toolkit.learning import checkpoints, training
+from toolkit.learning.data import SPLITS
 from toolkit.util import threads
 
 COMMANDS = ("reproduce", "train", "plan", "bench", "view")
@@ -163,7 +167,7 @@ def test_train_never_replaces_a_checkpoint_without_force(tmp_path, checkpoint_2d
 def test_train_force_replaces_a_checkpoint_whole(tmp_path, checkpoint_2ds, monkeypatch, capsys):
     existing = shutil.copytree(checkpoint_2ds, tmp_path / "ckpt")
     trained = checkpoints.load_models(checkpoint_2ds)
-    monkeypatch.setattr(training, "train_models", lambda scenario, preset, splits, seed, device=None, cae=None:
+    monkeypatch.setattr(training, "train_models", lambda scenario, preset, splits, seed, **options:
                         dataclasses.replace(trained, seed=seed))
     assert cli.main(["train", "--scenario", "2ds", "--preset", "strong", "--quick", "--seed", "7", "--force",
                      "--out", str(existing)]) == 0
@@ -180,7 +184,7 @@ def no_data(monkeypatch):
     def made(*args, **kwargs):
         raise AssertionError("the data stage started before the output was checked")
 
-    monkeypatch.setattr(training, "preset_splits", made)
+    monkeypatch.setattr(pipeline, "make_splits", made)
 
 
 def reproduce(out, scenario="2ds") -> int:
@@ -202,43 +206,43 @@ def test_reproduce_refuses_what_it_cannot_write_before_any_work(tmp_path, checkp
 
 
 def test_reproduce_all_checks_every_scenario_folder_before_the_first_starts(tmp_path, no_data, capsys):
-    experiments.Stages(tmp_path / "3do", experiments.run_settings("3do", "paper", True, seed=1), progress=False)
+    Stages(tmp_path / "3do", RunConfig.create("3do", "paper", quick=True, seed=1).settings(), progress=False)
     assert reproduce(tmp_path, "all") == 2  # 2ds would run first; 3do's folder holds another seed
     assert f"{tmp_path / '3do'} holds a run with other settings" in capsys.readouterr().err
     assert not any((tmp_path / "2ds").iterdir())  # checked (made, written to), nothing computed
     single = tmp_path / "single"
-    experiments.Stages(single, experiments.run_settings("2ds", "paper", True, seed=0), progress=False)
+    Stages(single, RunConfig.create("2ds", "paper", quick=True, seed=0).settings(), progress=False)
     assert reproduce(single, "all") == 2
     assert "holds ['cache'], not the scenario folders of a reproduction" in capsys.readouterr().err
 
 
 @pytest.mark.parametrize("name", ["settings", "stage_seconds", "planning_BS", "learning"])
 def test_a_damaged_cache_file_is_named_with_what_to_do(name, tmp_path):
-    settings = experiments.run_settings("2ds", "paper", True, seed=0)
-    stages = experiments.Stages(tmp_path, settings, progress=False)
+    settings = RunConfig.create("2ds", "paper", quick=True, seed=0).settings()
+    stages = Stages(tmp_path, settings, progress=False)
     damaged = stages.cache / f"{name}.json"
     damaged.write_text('{"scenario": "2ds", "pre')  # cut off mid-write, as by a full disk
     advice = {"settings": f"delete {tmp_path} to start again", "stage_seconds": "delete it"}
     with pytest.raises(ValueError) as error:
-        experiments.Stages(tmp_path, settings, progress=False).load(name)
+        Stages(tmp_path, settings, progress=False).load(name)
     assert str(error.value).startswith(f"{damaged} is damaged (Unterminated string")
     assert advice.get(name, "delete it to compute that stage again") in str(error.value)
 
 
 def test_damaged_data_and_checkpoint_in_the_cache_are_named_with_what_to_do(tmp_path, checkpoint_2ds):
-    settings = experiments.run_settings("2ds", "strong", True, seed=0)
-    cache = experiments.Stages(tmp_path, settings, progress=False).cache
-    for split in experiments.SPLITS:
+    config = RunConfig.create("2ds", "strong", quick=True, progress=False)
+    cache = Stages(tmp_path, config.settings(), progress=False).cache
+    for split in SPLITS:
         (cache / f"data_{split}.npz").write_bytes(b"PK\x03\x04 cut off")
     with pytest.raises(ValueError, match=r"data_train.npz is not a valid dataset file .*; delete it to compute the "
                                          r"data stage again"):
-        experiments.reproduce("2ds", "strong", quick=True, out=tmp_path, progress=False)
-    for name, dataset in training.preset_splits("2ds", "strong", 0, quick=True, progress=False).items():
+        experiments.reproduce(config, tmp_path)
+    for name, dataset in pipeline.make_splits(config).items():
         dataset.save(cache / f"data_{name}.npz")
     checkpoint = shutil.copytree(checkpoint_2ds, cache / "checkpoint")
     (checkpoint / checkpoints.META).write_text("{")
     with pytest.raises(ValueError, match=f"meta.json is corrupted.*; delete {checkpoint} to train again"):
-        experiments.reproduce("2ds", "strong", quick=True, out=tmp_path, progress=False)
+        experiments.reproduce(config, tmp_path)
 
 
 # -- threads ------------------------------------------------------------------------------------------

@@ -21,8 +21,10 @@ from pathlib import Path
 import pytest
 
 from toolkit import cli
+from toolkit.experiments import pipeline
 from toolkit.experiments import reproduce as experiments
-from toolkit.learning import training
+from toolkit.experiments.config import RunConfig
+from toolkit.experiments.stages import Stages
 
 pytestmark = [pytest.mark.slow,
               pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="finds processes in /proc (Linux)")]
@@ -84,8 +86,9 @@ def alive(pid: int) -> bool:
 def out(tmp_path, checkpoint_2ds):
     """A run folder holding the data and models stages already (they are not what is tested here)."""
     out = tmp_path / "run"
-    cache = experiments.Stages(out, experiments.run_settings("2ds", "strong", True, 0), progress=False).cache
-    for name, dataset in training.preset_splits("2ds", "strong", 0, quick=True, progress=False).items():
+    config = RunConfig.create("2ds", "strong", quick=True, progress=False)
+    cache = Stages(out, config.settings(), progress=False).cache
+    for name, dataset in pipeline.make_splits(config).items():
         dataset.save(cache / f"data_{name}.npz")
     shutil.copytree(checkpoint_2ds, cache / "checkpoint")
     return out

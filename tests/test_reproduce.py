@@ -8,8 +8,10 @@ import numpy as np
 import pytest
 
 from toolkit import cli, scenarios
-from toolkit.experiments import paper_numbers
+from toolkit.experiments import paper_numbers, tables
 from toolkit.experiments import reproduce as experiments
+from toolkit.experiments.config import RunConfig
+from toolkit.experiments.stages import Stages
 from toolkit.learning import presets
 
 RATE_KEYS = ("success_rate", "path_valid_rate")
@@ -58,29 +60,28 @@ def test_quick_reproduction_meets_the_contract(name, tmp_path):
     check_contract(results, name)
     check_files(out, name)
     if name == "2ds":  # a finished run is not redone: every stage comes from the cache
-        again = experiments.reproduce(name, quick=True, out=out, progress=False)
+        config = RunConfig.create(name, quick=True, progress=False)
+        again = experiments.reproduce(config, out)
         assert again["recomputed"] == []
         assert again["stage_seconds"] == results["stage_seconds"]  # the times of the first run, kept
-        summary = experiments.summary_markdown([results, results])  # `--scenario all`: a row per scenario
+        summary = tables.summary_markdown([results, results])  # `--scenario all`: a row per scenario
         table1 = summary.split("## Table 1")[1].split("## Table 2")[0]
         assert table1.count("| 2ds | **") == 2
         assert again["planning"] == results["planning"]
-        # a cache written before the paper's unseen test: only the learning stage is measured again, and says so
-        learning = json.loads((out / "cache" / "learning.json").read_text())
-        del learning["mlp"]["unseen_uniform"]
-        (out / "cache" / "learning.json").write_text(json.dumps(learning))
-        upgraded = experiments.reproduce(name, quick=True, out=out, progress=False)
-        assert upgraded["recomputed"] == ["learning"] and upgraded["mlp"] == results["mlp"]
+        # a lost stage file is computed again, and only that stage
+        (out / "cache" / "learning.json").unlink()
+        redone = experiments.reproduce(config, out)
+        assert redone["recomputed"] == ["learning"] and redone["mlp"] == results["mlp"]
 
 
 def test_an_output_folder_of_other_settings_is_refused(tmp_path):
-    experiments.Stages(tmp_path, {"scenario": "2ds", "seed": 0}, progress=False)
+    Stages(tmp_path, {"scenario": "2ds", "seed": 0}, progress=False)
     with pytest.raises(ValueError, match="other settings"):
-        experiments.Stages(tmp_path, {"scenario": "2ds", "seed": 1}, progress=False)
+        Stages(tmp_path, {"scenario": "2ds", "seed": 1}, progress=False)
 
 
 def test_an_interrupted_stage_leaves_no_file_a_later_run_trusts(tmp_path):
-    stages = experiments.Stages(tmp_path, {"scenario": "2ds"}, progress=False)
+    stages = Stages(tmp_path, {"scenario": "2ds"}, progress=False)
 
     def crash():
         raise KeyboardInterrupt
@@ -97,26 +98,25 @@ def test_table_2_shows_both_unseen_tests_beside_always_valid():
     run = {"scenario": "2ds", "threshold": 0.5,
            "mlp": {"seen": scores, "unseen": dict(scores, always_valid=0.5),
                    "unseen_uniform": {"acc": 0.86, "tpr": 0.95, "tnr": 0.4, "always_valid": 0.84}}}
-    table2 = experiments.paper_tables([_with_planning(run)])
+    table2 = tables.paper_tables([_with_planning(run)])
     row = next(line for line in table2 if line.startswith("| 2ds | **80%** / 92%"))
     assert row == "| 2ds | **80%** / 92% | **90%** / 96% | **70%** / 88% | **86%** / 88% | **95%** / 90% | **40%** / 85% | 84% | **80%** | **90%** | **70%** | 50% |"
-    older = {**run, "mlp": {"seen": scores, "unseen": scores}}  # results.json written before the key existed
-    row = next(line for line in experiments.paper_tables([_with_planning(older)]) if line.startswith("| 2ds | **80%** / 92%"))
-    assert "| n/a | n/a | n/a | n/a | **80%** |" in row
 
 
 def test_table_1_says_when_the_cae_was_not_trained():
-    run = _with_planning({"scenario": "2ds", "threshold": 0.5, "mlp": {"seen": {"acc": 1, "tpr": 1, "tnr": 1},
-                                                                       "unseen": {"acc": 1, "tpr": 1, "tnr": 1}}})
-    tables = experiments.paper_tables([dict(run, cae={"trained": False})])  # a checkpoint from toolkit train, no --cae
-    assert "| 2ds | not trained | not trained | n/a |" in tables
+    scores = {"acc": 1, "tpr": 1, "tnr": 1, "always_valid": 0.5}
+    run = _with_planning({"scenario": "2ds", "threshold": 0.5,
+                          "mlp": {"seen": scores, "unseen": scores, "unseen_uniform": scores}})
+    lines = tables.paper_tables([dict(run, cae={"trained": False})])  # a checkpoint from toolkit train, no --cae
+    assert "| 2ds | not trained | not trained | n/a |" in lines
 
 
 def _with_planning(run: dict) -> dict:
     """A results dict with the keys paper_tables needs besides Table 2's."""
-    summary = {"sampling_s": 1.0, "total_s": 1.0, "success_rate": 1.0, "path_valid_rate": 1.0}
+    summary = {"success_rate": 1.0, "path_valid_rate": 1.0,
+               **{f"{key}{stat}": 1.0 for key in ("sampling_s", "total_s") for stat in ("", "_std", "_median")}}
     return dict(run, cae={"seen_acc": 1.0, "unseen_acc": 0.9, "seen_all_free": 0.8, "unseen_all_free": 0.8},
-                planning={s: {m: summary for m in experiments.MODES} for s in paper_numbers.SAMPLERS},
+                planning={s: {m: summary for m in tables.MODES} for s in paper_numbers.SAMPLERS},
                 improvement={k: {s: 0.0 for s in paper_numbers.SAMPLERS} for k in ("sampling", "total")})
 
 
@@ -139,18 +139,19 @@ def test_planning_with_prediction_follows_the_presets_edge_rule(preset, screened
 
     monkeypatch.setattr(experiments.queries, "run_interleaved", fake_run)
     models = SimpleNamespace(preset=presets.get(preset))
-    stages = experiments.Stages(tmp_path, {"scenario": "2ds"}, progress=False)
+    stages = Stages(tmp_path, {"scenario": "2ds"}, progress=False)
     shutil.copytree(checkpoint_2ds, stages.cache / "checkpoint")
-    planning = experiments._planning(stages, scenarios.get("2ds"), models, seed=0, quick=True, workers=1)
+    config = RunConfig.create("2ds", preset, quick=True, workers=1, progress=False)
+    planning = experiments.planning_stage(stages, config, models)
     assert sorted(s for s, _, _ in calls) == sorted(paper_numbers.SAMPLERS)
     assert {screen for _, predicted, screen in calls if predicted} == {screened}
     assert set(planning) == set(paper_numbers.SAMPLERS) and set(planning["BS"]) == {"without", "with"}
 
 
-def test_stage_times_count_this_layouts_planning_stages_only():
-    seconds = {"data": 1.0, "models": 2.0, "planning_BS_without": 50.0}  # a stage of an older cache layout
+def test_stage_times_add_up_the_planned_samplers_stages_only():
+    seconds = {"data": 1.0, "models": 2.0, "planning_MA": 50.0}  # a sampler this run did not plan
     seconds.update({f"planning_{s}": 3.0 for s in paper_numbers.SAMPLERS})
-    run = {"scenario": "2ds", "stage_seconds": seconds,
+    run = {"scenario": "2ds", "stage_seconds": seconds, "planning": {s: {} for s in paper_numbers.SAMPLERS},
            "throughput": {"exact_cfg_per_s": 2.0, "learned_cfg_per_s": 1.0, "ratio": 0.5}}
-    row = experiments.run_costs([run])[-1]
+    row = tables.run_costs([run])[-1]
     assert row.endswith("| 1 | 2 | 12 |")

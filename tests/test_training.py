@@ -9,18 +9,21 @@ import pytest
 import torch
 
 from toolkit import cli, scenarios
+from toolkit.experiments import pipeline
+from toolkit.experiments.config import QUICK, RunConfig
 from toolkit.learning import checkpoints, data, metrics, presets, training
 from toolkit.learning.models import build_predictor
-from toolkit.learning.presets import Preset
 
-TINY = replace(presets.get("strong").quick_version(), cae_epochs=1, mlp_epochs=2)  # enough to tell seeds apart
+SCENARIO_2DS = scenarios.get("2ds")
+
+TINY = replace(QUICK.shrink(presets.get("strong")), cae_epochs=1, mlp_epochs=2)  # enough to tell seeds apart
 
 
 @pytest.fixture(scope="module")
 def quick_2ds():
-    splits = training.preset_splits("2ds", "strong", seed=0, quick=True, progress=False)
-    models = training.train_models("2ds", "strong", splits, seed=0, progress=False, quick=True, device="cpu", cae=True)
-    return splits, models
+    config = RunConfig.create("2ds", "strong", quick=True, progress=False, device="cpu")
+    splits = pipeline.make_splits(config)
+    return splits, pipeline.train(config, splits, cae=True)
 
 
 def test_classification_metrics_by_hand():
@@ -46,9 +49,9 @@ def test_unknown_preset():
 
 
 def test_splits_follow_the_preset():
-    splits = training.preset_splits("2ds", "paper", quick=True, progress=False)
+    splits = pipeline.make_splits(RunConfig.create("2ds", "paper", quick=True, progress=False))
     assert splits["train"].configs.shape == (8, 100, 2)  # paper: 100 samples per 2DS workspace
-    assert len(training.preset_splits("2ds", "strong", quick=True, progress=False)["train"]) == 8 * 400
+    assert len(pipeline.make_splits(RunConfig.create("2ds", "strong", quick=True, progress=False))["train"]) == 8 * 400
 
 
 def test_quick_strong_2ds_learns(quick_2ds):
@@ -70,16 +73,16 @@ def test_quick_strong_2ds_learns(quick_2ds):
 
 def test_same_seed_same_models(quick_2ds):
     splits = quick_2ds[0]
-    first, again, other = (training.train_models("2ds", TINY, splits, seed, progress=False, device="cpu") for seed in (0, 0, 1))
+    first, again, other = (training.train_models(SCENARIO_2DS, TINY, splits, seed, progress=False, device="cpu") for seed in (0, 0, 1))
     state, same, different = (m.predictor.state_dict() for m in (first, again, other))
     assert all(torch.equal(state[k], same[k]) for k in state)
     assert not torch.equal(state["mlp.net.0.weight"], different["mlp.net.0.weight"])
 
 
 def test_paper_preset_trains():
-    splits = training.preset_splits("3dc7", "paper", quick=True, progress=False)
+    splits = pipeline.make_splits(RunConfig.create("3dc7", "paper", quick=True, progress=False))
     tiny = replace(presets.get("paper"), cae_epochs=1, mlp_epochs=2)
-    models = training.train_models("3dc7", tiny, splits, progress=False, device="cpu")
+    models = training.train_models(scenarios.get("3dc7"), tiny, splits, progress=False, device="cpu")
     assert models.threshold == 0.5 and np.all(np.isfinite(models.history["cae"] + models.history["mlp"]))
     assert isinstance(models.predictor.mlp.net[0], torch.nn.Linear) and models.predictor.mlp.in_features == 57
 
@@ -87,8 +90,8 @@ def test_paper_preset_trains():
 def test_strong_mlp_does_not_wait_for_a_cae_it_never_asks(quick_2ds):
     """strong's MLP does not see z: its CAE stays as initialized unless asked for (``cae=True``, ``--cae``)."""
     splits = quick_2ds[0]
-    fast = training.train_models("2ds", TINY, splits, 0, progress=False, device="cpu")
-    asked = training.train_models("2ds", TINY, splits, 0, progress=False, device="cpu", cae=True)
+    fast = training.train_models(SCENARIO_2DS, TINY, splits, 0, progress=False, device="cpu")
+    asked = training.train_models(SCENARIO_2DS, TINY, splits, 0, progress=False, device="cpu", cae=True)
     torch.manual_seed(0)
     initial = build_predictor(scenarios.get("2ds"), TINY.encoding, TINY.mlp_hidden, TINY.dropout, TINY.latent_input)
     for name, weight in initial.cae.state_dict().items():
@@ -97,13 +100,13 @@ def test_strong_mlp_does_not_wait_for_a_cae_it_never_asks(quick_2ds):
     assert "cae" not in fast.history and len(asked.history["cae"]) >= 1
     assert training.evaluate(fast, splits)["cae"] == {"trained": False}
     assert set(training.evaluate(asked, splits)["cae"]) == {"seen_acc", "unseen_acc", "seen_all_free", "unseen_all_free"}
-    paper = replace(presets.get("paper").quick_version(), cae_epochs=1, mlp_epochs=2)
-    assert "cae" in training.train_models("2ds", paper, splits, 0, progress=False, device="cpu").history  # z is used
+    paper = replace(QUICK.shrink(presets.get("paper")), cae_epochs=1, mlp_epochs=2)
+    assert "cae" in training.train_models(SCENARIO_2DS, paper, splits, 0, progress=False, device="cpu").history  # z is used
 
 
 def test_training_split_of_another_scenario(quick_2ds):
     with pytest.raises(ValueError, match="'2ds' data, not '3dc7'"):
-        training.train_models("3dc7", "paper", quick_2ds[0], progress=False, quick=True)
+        training.train_models(scenarios.get("3dc7"), QUICK.shrink(presets.get("paper")), quick_2ds[0], progress=False)
 
 
 def test_calibrated_threshold_is_best_on_its_data(quick_2ds):
@@ -126,16 +129,6 @@ def test_checkpoint_round_trip(quick_2ds, tmp_path):
     assert loaded.threshold == models.threshold and loaded.preset == models.preset
     meta = json.loads((tmp_path / "meta.json").read_text())
     assert meta["scenario"] == "2ds" and meta["versions"]["torch"] == torch.__version__ and meta["evaluation"] == {"x": 1}
-
-
-def test_a_checkpoint_older_than_a_preset_setting_takes_the_named_presets(quick_2ds, tmp_path):
-    checkpoints.save_checkpoint(quick_2ds[1], tmp_path)  # a strong model
-    meta = json.loads((tmp_path / "meta.json").read_text())
-    del meta["preset"]["auxiliary"]  # written before Preset.auxiliary existed
-    (tmp_path / "meta.json").write_text(json.dumps(meta))
-    loaded = checkpoints.load_models(tmp_path).preset
-    assert loaded.auxiliary == "confirmed" != Preset.auxiliary  # strong's, not the field's default
-    assert loaded.quick  # what the checkpoint does record wins
 
 
 def test_checkpoint_of_another_scenario(quick_2ds, tmp_path):
@@ -193,7 +186,7 @@ def test_cli_train_trains_the_cae_when_asked(flags, asked, tmp_path, monkeypatch
         seen.update(kwargs)
         raise Stop
 
-    monkeypatch.setattr(training, "preset_splits", lambda *args, **kwargs: {})
+    monkeypatch.setattr(pipeline, "make_splits", lambda *args, **kwargs: {})
     monkeypatch.setattr(training, "train_models", fake_train)
     with pytest.raises(Stop):
         cli.main(["train", "--scenario", "2ds", "--preset", "strong", "--out", str(tmp_path / "c")] + flags)
@@ -206,7 +199,7 @@ def test_strong_cae_follows_the_scenarios_caps(name, lr, batch, monkeypatch):
     """strong's CAE: AdamW 1e-3 on batches of 100 generated grids where the scenario allows (at 1e-3 the 3DC and
     3DO CAEs diverge; 3DO's steps are slow)."""
     seen = {}
-    monkeypatch.setattr(training, "_fit", lambda params, optimizer, rate, epochs, *a, **k: seen.update(
+    monkeypatch.setattr(training, "fit", lambda params, optimizer, rate, epochs, *a, **k: seen.update(
         lr=rate, batch=max(len(b) for e in epochs for b in e)))
     s, stand_in = scenarios.get(name), SimpleNamespace(cae=torch.nn.Linear(1, 1))  # the 3DO CAE: 147M parameters
     training.train_cae(stand_in, torch.zeros(2000, 1), presets.get("strong"), torch.Generator(), False,

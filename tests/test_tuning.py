@@ -8,7 +8,8 @@ import torch
 
 from toolkit import cli, scenarios
 from toolkit.experiments import tuning
-from toolkit.learning import models, presets, training
+from toolkit.experiments.config import QUICK, RunConfig
+from toolkit.learning import models, training
 
 
 def test_the_one_standard_error_rule_takes_the_first_setting_within_noise_of_the_best():
@@ -42,7 +43,7 @@ def test_quick_tuning_never_sees_the_unseen_workspaces_chooses_the_best_and_resu
     out = tmp_path / "tune"
     assert cli.main(["tune", "--scenario", "2ds", "--quick", "--out", str(out)]) == 0
     result = json.loads((out / "tuning.json").read_text())
-    n = presets.QUICK_WORKSPACES[0]
+    n = QUICK.workspaces[0]
     assert (result["fit_workspaces"], result["validation_workspaces"]) == (n - 2, 2)
     assert [r["cae_epochs"] for r in result["cae"]] == list(tuning.CAE_EPOCHS)
     assert len(result["mlp"]) == np.prod([len(v) for v in tuning.MLP_GRID.values()])
@@ -58,4 +59,4 @@ def test_quick_tuning_never_sees_the_unseen_workspaces_chooses_the_best_and_resu
     # a finished tuning is not redone
     monkeypatch.setattr(training, "train_models", lambda *a, **k: pytest.fail("a cached row was trained again"))
     monkeypatch.setattr(training, "train_cae", lambda *a, **k: pytest.fail("a cached CAE was trained again"))
-    assert tuning.tune("2ds", out, quick=True, progress=False) == result
+    assert tuning.tune(RunConfig.create("2ds", quick=True, progress=False), out) == result

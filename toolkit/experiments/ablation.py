@@ -24,8 +24,9 @@ from pathlib import Path
 
 import torch
 
-from toolkit import scenarios
-from toolkit.experiments.reproduce import Stages
+from toolkit.experiments import pipeline
+from toolkit.experiments.config import QUICK, RunConfig
+from toolkit.experiments.stages import Stages
 from toolkit.learning import data, presets, training
 from toolkit.learning.models import CAE
 from toolkit.util import outputs
@@ -54,46 +55,47 @@ CAE_FIELDS = ("cae_optimizer", "cae_lr", "cae_lambda", "cae_epochs", "cae_batch"
 
 
 def step_presets(quick: bool = False) -> list[tuple[str, str, presets.Preset]]:
-    """Each row's key, description and cumulative preset (quick: shrunk, for tests)."""
+    """Each row's key, description and cumulative preset (quick: shrunk by ``QUICK``, for tests)."""
     rows, preset = [], presets.get("paper")
     for key, what, changes in STEPS:
         preset = replace(preset, name=f"ablation:{key}", **changes)
-        rows.append((key, what, preset.quick_version() if quick else preset))
-    if quick:  # seconds, not minutes: quick_version's counts, and few workspaces where a row asks for many
-        rows = [(k, w, replace(p, n_seen=p.n_seen and 12)) for k, w, p in rows]
+        rows.append((key, what, replace(QUICK.shrink(preset), n_seen=preset.n_seen and QUICK.study_seen) if quick
+                     else preset))
     return rows
 
 
-def ablate(scenario_name: str, out: str | Path, seed: int = 0, quick: bool = False, progress: bool = True) -> list[dict]:
-    """Every row of :data:`STEPS` for one scenario, cached in ``out``; writes ``ablation.json`` and ``ablation.md``."""
-    scenario = scenarios.get(scenario_name)
+def ablate(config: RunConfig, out: str | Path) -> list[dict]:
+    """Every row of :data:`STEPS` for the configuration's scenario and seed (its preset is each row's), cached in
+    ``out``; writes ``ablation.json`` and ``ablation.md``."""
+    scenario, seed, quick = config.scenario, config.seed, config.quick
     out = Path(out)
-    stages = Stages(out, {"ablation": scenario.name, "quick": bool(quick), "seed": int(seed)}, progress)
-    counts = dict(zip(("n_seen", "n_seen_test", "n_unseen"), presets.QUICK_WORKSPACES)) if quick else {}
-    tests = data.make_splits(scenario, seed, progress=progress, **counts)  # the paper's counts; every row's test
+    stages = Stages(out, {"ablation": scenario.name, "quick": quick, "seed": seed}, config.progress)
+    tests = pipeline.make_splits(replace(config, preset=presets.get("paper")))  # the paper's counts: every row's test
     tests["unseen_uniform"] = data.validity_blind_split(scenario, tests["unseen_test"])
     caes: dict[tuple, CAE] = {}
     rows = []
     for key, what, preset in step_presets(quick):
-        rows.append(dict(stages.json(f"{key}_{preset.fingerprint()}", lambda: _row(stages, scenario, preset, tests, caes, seed, progress)),
+        row_config = replace(config, preset=preset, device="cpu")
+        rows.append(dict(stages.json(f"{key}_{preset.fingerprint()}", lambda: _row(stages, row_config, tests, caes)),
                          key=key, change=what))
     outputs.write_json(out / "ablation.json", {"scenario": scenario.name, "seed": seed, "quick": quick, "rows": rows})
     (out / "ablation.md").write_text(markdown(scenario.name, rows))
     return rows
 
 
-def _row(stages: Stages, scenario, preset: presets.Preset, tests: dict, caes: dict, seed: int, progress: bool) -> dict:
+def _row(stages: Stages, config: RunConfig, tests: dict, caes: dict) -> dict:
     """Train one row's models (the CAE reused when an earlier row trained the same), score them on ``tests``."""
+    scenario, preset = config.scenario, config.preset
     cae_key = tuple((f, getattr(preset, f)) for f in CAE_FIELDS)
     cae_file = stages.cache / f"cae_{hashlib.sha1(repr(cae_key).encode()).hexdigest()[:12]}.pt"
     trained = caes.get(cae_key)
     if trained is None and cae_file.exists():
         trained = CAE((scenario.grid_size,) + tuple(scenario.cae_hidden))
         trained.load_state_dict(torch.load(cae_file, weights_only=True))
-    splits = dict(tests, train=training.preset_splits(scenario, preset, seed, progress=progress)["train"])
+    splits = dict(tests, train=pipeline.make_splits(config)["train"])
     began = time.perf_counter()
-    models = training.train_models(scenario, preset, splits, seed, progress=progress, device="cpu", cae=True,
-                                   trained_cae=trained)
+    models = training.train_models(scenario, preset, splits, config.seed, progress=config.progress,
+                                   device=config.device, cae=True, trained_cae=trained)
     seconds = time.perf_counter() - began
     if trained is None:
         torch.save(models.predictor.cae.state_dict(), cae_file)

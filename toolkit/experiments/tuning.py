@@ -36,8 +36,8 @@ from pathlib import Path
 import numpy as np
 import torch
 
-from toolkit import scenarios
-from toolkit.experiments.reproduce import Stages
+from toolkit.experiments.config import QUICK, RunConfig
+from toolkit.experiments.stages import Stages
 from toolkit.learning import data, metrics, presets, training
 from toolkit.learning.models import build_predictor
 from toolkit.util import outputs
@@ -52,19 +52,20 @@ MLP_GRID: dict[str, tuple] = {
 }
 
 
-def tune(scenario_name: str, out: str | Path, seed: int = 0, quick: bool = False, progress: bool = True) -> dict:
-    """Validate the ``paper`` preset's unstated settings for one scenario; writes ``tuning.json`` and ``tuning.md``."""
-    scenario = scenarios.get(scenario_name)
+def tune(config: RunConfig, out: str | Path) -> dict:
+    """Validate the ``paper`` preset's unstated settings for the configuration's scenario and seed (each candidate is
+    a variant of the paper preset, whatever ``config.preset``); writes ``tuning.json`` and ``tuning.md``."""
+    scenario, seed, quick, progress = config.scenario, config.seed, config.quick, config.progress
     out = Path(out)
-    stages = Stages(out, {"tuning": scenario.name, "quick": bool(quick), "seed": int(seed)}, progress)
+    stages = Stages(out, {"tuning": scenario.name, "quick": quick, "seed": seed}, progress)
     paper = presets.get("paper")
-    n_seen = presets.QUICK_WORKSPACES[0] if quick else scenario.n_seen
+    n_seen = QUICK.workspaces[0] if quick else scenario.n_seen
     seen = scenario.workspaces("seen", n_seen, seed)
     train = data.label_workspaces(scenario, seen, scenario.samples_per_workspace, seed, "train_samples", progress,
                                   "train samples")  # the paper preset's training split (data.make_splits)
     n_fit = n_seen - max(1, int(round(VALIDATION_SHARE * n_seen)))
     fit, validation = training.split_workspaces(train, n_fit)
-    scale = 10 if quick else 1  # quick: a tenth of the epochs, for tests
+    scale = QUICK.study_epochs_divisor if quick else 1  # quick: a fraction of the epochs, for tests
 
     # every tuned setting is set in each row, so a row's fingerprint does not change when presets.py adopts the choice
     base = replace(paper, cae_max_steps=10**9, **{k: v[0] for k, v in MLP_GRID.items()})  # epochs decide, not a cap

@@ -2,11 +2,13 @@
 
 The CAE is fitted first on the training workspaces' occupancy grids (Eq. 1), then
 frozen; the MLP is fitted on ``[z, q]`` (or the ``strong`` preset's richer input)
-with cross-entropy. One call does both::
+with cross-entropy. One call does both, another scores them as Tables 1 and 2 do::
 
-    splits = training.preset_splits(scenario, preset, seed)
-    models = training.train_models(scenario, "paper", splits, seed)
+    splits = data.make_splits(scenario, seed)
+    models = training.train_models(scenario, presets.get("paper"), splits, seed)
     training.evaluate(models, splits)  # the keys of results.json's "cae" and "mlp"
+
+(:mod:`toolkit.experiments.pipeline` runs these steps from one run configuration.)
 """
 
 from __future__ import annotations
@@ -19,8 +21,7 @@ import torch
 from torch import nn
 from tqdm.auto import tqdm
 
-from toolkit import scenarios
-from toolkit.learning import data, metrics, presets
+from toolkit.learning import data, metrics
 from toolkit.learning.data import CollisionDataset
 from toolkit.learning.models import CAE, CollisionPredictor, build_predictor
 from toolkit.learning.presets import Preset
@@ -54,18 +55,8 @@ def default_device() -> torch.device:
     return torch.device("cuda" if torch.cuda.is_available() else "cpu")
 
 
-def preset_splits(scenario: Scenario | str, preset: Preset | str, seed: int = 0, quick: bool = False,
-                  progress: bool = True) -> dict[str, CollisionDataset]:
-    """The three data splits a preset trains and tests on (quick: few workspaces, see ``presets.QUICK_WORKSPACES``)."""
-    scenario, preset = _scenario(scenario), _preset(preset, quick)
-    counts = (dict(zip(("n_seen", "n_seen_test", "n_unseen"), presets.QUICK_WORKSPACES)) if preset.quick
-              else {"n_seen": preset.n_seen} if preset.n_seen else {})
-    return data.make_splits(scenario, seed, samples_per_workspace=scenario.samples_per_workspace * preset.samples_factor,
-                            progress=progress, **counts)
-
-
-def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[str, CollisionDataset], seed: int = 0,
-                 progress: bool = True, quick: bool = False, device: torch.device | str | None = None,
+def train_models(scenario: Scenario, preset: Preset, splits: dict[str, CollisionDataset], seed: int = 0, *,
+                 progress: bool = True, device: torch.device | str | None = None,
                  cae: bool | None = None, trained_cae: CAE | None = None) -> TrainedModels:
     """Fit the CAE, then the MLP on ``splits["train"]``'s labelled samples; models end on the CPU.
 
@@ -76,7 +67,6 @@ def train_models(scenario: Scenario | str, preset: Preset | str, splits: dict[st
     ``trained_cae``: a CAE already trained with these settings, copied instead of training one
     (``history["cae"]`` is then empty).
     """
-    scenario, preset = _scenario(scenario), _preset(preset, quick)
     train = splits["train"]
     if train.scenario != scenario.name:
         raise ValueError(f"the training split holds {train.scenario!r} data, not {scenario.name!r}")
@@ -115,7 +105,7 @@ def train_cae(predictor: CollisionPredictor, grids: torch.Tensor, preset: Preset
     epochs = max(1, min(preset.cae_epochs, max_steps // steps_per_epoch))
     batches = _batches(len(grids), batch, epochs, shuffle)
     # no weight decay or schedule of the optimizer here (those settings are the MLP's): Eq. (1)'s penalty is the CAE's
-    return _fit(cae.parameters(), preset.cae_optimizer, min(preset.cae_lr, max_lr or preset.cae_lr), batches,
+    return fit(cae.parameters(), preset.cae_optimizer, min(preset.cae_lr, max_lr or preset.cae_lr), batches,
                 lambda idx: cae.loss(grids[idx].float(), preset.cae_lambda, preset.cae_loss), progress, f"CAE ({preset.name})")
 
 
@@ -128,7 +118,7 @@ def train_mlp(predictor: CollisionPredictor, dataset: CollisionDataset, preset: 
     X = (X - mean) / std
     mlp = predictor.mlp.train()
     batches = _batches(len(X), preset.mlp_batch, preset.mlp_epochs, shuffle)
-    losses = _fit(mlp.parameters(), preset.optimizer, preset.lr, batches,
+    losses = fit(mlp.parameters(), preset.optimizer, preset.lr, batches,
                   lambda idx: nn.functional.cross_entropy(mlp(X[idx]), y[idx]), progress, f"MLP ({preset.name})",
                   preset.weight_decay, preset.cosine_schedule)
     mlp.eval()
@@ -215,7 +205,7 @@ def _batches(n: int, batch: int, epochs: int, shuffle: torch.Generator) -> list[
     return [list(torch.randperm(n, generator=shuffle).split(batch)) for _ in range(epochs)]
 
 
-def _fit(params, optimizer_name: str, lr: float, epochs: list[list[torch.Tensor]], loss_of, progress: bool, desc: str,
+def fit(params, optimizer_name: str, lr: float, epochs: list[list[torch.Tensor]], loss_of, progress: bool, desc: str,
          weight_decay: float = 0.0, cosine_schedule: bool = False) -> list[float]:
     """Minimize ``loss_of(batch indices)`` over the epochs with the named optimizer; mean loss per epoch."""
     params = list(params)
@@ -242,12 +232,3 @@ def _fit(params, optimizer_name: str, lr: float, epochs: list[list[torch.Tensor]
         history.append(float(np.mean(losses)))
         bar.set_postfix(loss=f"{history[-1]:.4g}")
     return history
-
-
-def _scenario(scenario: Scenario | str) -> Scenario:
-    return scenarios.get(scenario) if isinstance(scenario, str) else scenario
-
-
-def _preset(preset: Preset | str, quick: bool) -> Preset:
-    preset = presets.get(preset) if isinstance(preset, str) else preset
-    return preset.quick_version() if quick else preset

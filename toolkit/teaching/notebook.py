@@ -5,9 +5,13 @@ notebook runs top to bottom in about a minute (the test suite runs every noteboo
 so); it never changes which code runs. A notebook asks for its sizes with
 :func:`sized`::
 
-    from toolkit.teaching.notebook import sized, trained_models
+    from toolkit.teaching.notebook import run_config, sized, trained_models
     n_workspaces = sized(full=200, quick=20)
-    models = trained_models("2ds", "strong")   # trains once (about 30 s), then loads in a second
+    models = trained_models("2ds", "strong")   # trains once, then loads in a second
+    recipe = run_config("2ds", "strong").preset  # the preset, quick-sized in quick mode
+
+The library's own quick sizes (epochs, workspaces, queries) are in
+:data:`toolkit.experiments.config.QUICK`.
 
 Trained models live in ``$TOOLKIT_CACHE`` (default ``~/.cache/sample-collision-toolkit``),
 one checkpoint folder per scenario, preset, seed and size, written whole or not at all;
@@ -23,7 +27,9 @@ import uuid
 from pathlib import Path
 from typing import TypeVar
 
-from toolkit.learning import checkpoints, presets, training
+from toolkit.experiments import pipeline
+from toolkit.experiments.config import RunConfig
+from toolkit.learning import checkpoints, presets
 from toolkit.learning.training import TrainedModels
 from toolkit.util import threads
 
@@ -47,24 +53,28 @@ def cache_dir() -> Path:
     return Path(os.environ.get(CACHE_ENV) or Path.home() / ".cache" / "sample-collision-toolkit")
 
 
+def run_config(scenario: str, preset: str = "paper", *, seed: int = 0, progress: bool = True) -> RunConfig:
+    """The run configuration a notebook works with: quick-sized in quick mode, trained on the CPU."""
+    return RunConfig.create(scenario, preset, seed=seed, quick=is_quick(), progress=progress, device="cpu")
+
+
 def trained_models(scenario: str, preset: str, *, seed: int = 0, progress: bool = True) -> TrainedModels:
     """The CAE and MLP of ``preset`` for ``scenario`` (quick-sized in quick mode), trained once and then loaded.
 
-    The first call trains as ``toolkit train --scenario S --preset P`` does (2DS: under a
-    minute; 3DC: about two minutes on two cores) and saves a checkpoint folder in
-    :func:`cache_dir`; later calls, in any notebook, load it in about a second.
+    The first call trains as ``toolkit train --scenario S --preset P`` does (the same
+    :func:`~toolkit.experiments.pipeline.train_and_save`; the notebooks say how long it
+    takes) and saves a checkpoint folder in :func:`cache_dir`; later calls, in any
+    notebook, load it in about a second.
     """
-    fingerprint = presets.get(preset).fingerprint()  # the recipe's settings
-    folder = cache_dir() / f"{scenario}-{preset}-seed{seed}-{fingerprint}{'-quick' if is_quick() else ''}"
+    config = run_config(scenario, preset, seed=seed, progress=progress)
+    recipe = presets.get(preset).fingerprint()  # the full recipe's: a quick model changes with it too
+    name = f"{config.scenario.name}-{config.preset.name}-seed{seed}-{recipe}"
+    folder = cache_dir() / f"{name}{'-quick' if config.quick else ''}"
     if folder.exists():
-        return checkpoints.load_models(folder, scenario)
-    with threads.limited(threads.configured()):  # one thread, as the toolkit command: fast on a shared machine
-        splits = training.preset_splits(scenario, preset, seed, quick=is_quick(), progress=progress)
-        models = training.train_models(scenario, preset, splits, seed, progress=progress, quick=is_quick(),
-                                       device="cpu")
-        scores = training.evaluate(models, splits)
+        return checkpoints.load_models(folder, config.scenario.name)
     tmp = folder.with_name(f"{folder.name}.{uuid.uuid4().hex}.tmp")  # another notebook may be training the same
-    checkpoints.save_checkpoint(models, tmp, evaluation=scores)
+    with threads.limited(threads.configured()):  # one thread, as the toolkit command: fast on a shared machine
+        models, _, _ = pipeline.train_and_save(config, tmp)
     try:
         tmp.rename(folder)  # the folder appears whole or not at all
     except OSError:  # another process finished first: keep its folder

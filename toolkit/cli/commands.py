@@ -1,0 +1,200 @@
+"""What each sub-command of ``toolkit`` does: read its arguments, build one run configuration, call the library.
+
+Nothing here computes what the library does not also offer from Python: ``toolkit
+train`` is :func:`toolkit.experiments.pipeline.train_and_save` of a
+:class:`~toolkit.experiments.config.RunConfig`, ``toolkit reproduce`` is
+:func:`toolkit.experiments.reproduce.reproduce` of one, and so on. Each command checks
+where it will write before it starts. :data:`KEPT` says, per command, what an
+interrupted run leaves behind.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from pathlib import Path
+
+from toolkit import scenarios
+from toolkit.experiments.config import RunConfig
+
+
+def _config(args: argparse.Namespace, scenario: str, **settings) -> RunConfig:
+    """The run configuration of a command's arguments (the modules it imported included, for worker processes)."""
+    return RunConfig.create(scenario, getattr(args, "preset", "paper"), seed=args.seed,
+                            quick=getattr(args, "quick", False), imports=tuple(args.imports), **settings)
+
+
+def cmd_bench(args: argparse.Namespace) -> int:
+    from toolkit.experiments import bench
+    from toolkit.learning import checkpoints
+
+    scenario = scenarios.get(args.scenario)
+    models = checkpoints.load_models(args.checkpoint, scenario.name) if args.checkpoint else None
+    if args.vs_ompl:
+        try:
+            table = bench.versus_ompl(scenario, args.queries, args.seed, models, args.ompl_seconds)
+        except ImportError as missing:  # ompl is an optional extra
+            raise ValueError(str(missing)) from None
+        print(json.dumps({"scenario": scenario.name, "seed": args.seed, "planners": table}) if args.json
+              else bench.versus_ompl_markdown(scenario, table))
+        return 0
+    result = {"scenario": scenario.name,
+              **bench.throughput(scenario, args.preset, args.batch, seed=args.seed, models=models)}
+    result["edges"] = bench.edge_checks(scenario, seed=args.seed)
+    if models is not None:
+        result["planning"] = bench.planning_ratios(scenario, models, args.workspaces, args.pairs, args.seed,
+                                                   args.samplers, dict(args.option))
+        result["planning_options"] = dict(args.option)
+    print(json.dumps(result) if args.json else "\n".join(f"{k}: {v}" for k, v in result.items()))
+    return 0
+
+
+def cmd_train(args: argparse.Namespace) -> int:
+    from toolkit.experiments import pipeline
+    from toolkit.learning import checkpoints
+
+    checkpoints.check_destination(args.out, overwrite=args.force)  # before minutes of training, not after
+    changes = {k: v for k, v in (("cae_epochs", args.cae_epochs), ("mlp_epochs", args.mlp_epochs)) if v is not None}
+    config = _config(args, args.scenario, device=args.device, **changes)
+    models, scores, folder = pipeline.train_and_save(config, args.out, cae=args.cae or None, overwrite=args.force)
+    print(json.dumps({"checkpoint": str(folder), "threshold": models.threshold, **scores}))
+    return 0
+
+
+def cmd_plan(args: argparse.Namespace) -> int:
+    from toolkit.planning import queries
+
+    if args.predict and not args.checkpoint:
+        raise ValueError("--predict needs --checkpoint DIR (a folder written by `toolkit train`)")
+    scenario = scenarios.get(args.scenario)
+    query = queries.make_queries(scenario, args.seed, n_workspaces=1, per_workspace=1)[0]
+    checker = None
+    if args.predict:
+        from toolkit.learning import learned
+
+        checker = learned.load_checker(args.checkpoint, query.workspace)
+    result = queries.solve_query(scenario, query, args.sampler, checker, seed=args.seed)
+    out = {"scenario": scenario.name, "sampler": args.sampler, "predict": args.predict, "seed": args.seed,
+           "success": result.success, "path": result.path.tolist(), "stats": result.stats,
+           "start": query.start.tolist(), "goal": query.goal.tolist(), "workspace": query.workspace.to_dict()}
+    if args.json:
+        print(json.dumps(out))
+    else:
+        print(f"{'solved' if result.success else 'no path'}: {len(result.path)} configurations, "
+              f"{result.stats['nodes']} nodes, {result.stats['edges']} edges, {result.stats['total_s']:.3f} s")
+    return 0
+
+
+def cmd_view(args: argparse.Namespace) -> int:
+    from toolkit import viewer
+
+    scenario, predictor = args.scenario or "3do", None
+    if args.checkpoint:  # read it here: a bad one is an error in this terminal, before anything is served
+        from functools import partial
+
+        from toolkit.learning import checkpoints, learned
+
+        models = checkpoints.load_models(args.checkpoint, args.scenario)
+        scenario, predictor = models.scenario.name, partial(learned.LearnedChecker, models=models)
+    if args.screenshot:
+        from toolkit.util import outputs
+
+        outputs.writable_file(args.screenshot, "--screenshot")
+    v = viewer.launch(scenario, seed=args.seed, predictor=predictor, host=args.host, port=args.port,
+                      quiet=bool(args.screenshot))
+    try:
+        if args.samples:
+            v.sample("raw", args.samples, seed=args.seed)
+        if args.screenshot:
+            from toolkit.viewer.browser import screenshot
+
+            print(f"toolkit view: wrote {screenshot(v.url, args.screenshot)}")
+        else:
+            viewer.serve_forever(v)
+    finally:
+        v.stop()
+    return 0
+
+
+def cmd_reproduce(args: argparse.Namespace) -> int:
+    from toolkit.experiments import reproduce
+
+    names = sorted(scenarios.SCENARIOS) if args.scenario == "all" else [args.scenario]
+    configs = [_config(args, name, workers=args.workers, samplers=args.samplers) for name in names]
+    if len(configs) == 1:
+        reproduce.reproduce(configs[0], args.out)
+    else:
+        reproduce.reproduce_many(configs, args.out)
+    print(f"wrote {args.out}/tables.md and results.json; the tables:\n")
+    print(Path(args.out, "tables.md").read_text())
+    return 0
+
+
+def cmd_ablate(args: argparse.Namespace) -> int:
+    from toolkit.experiments import ablation
+
+    ablation.ablate(_config(args, args.scenario), args.out)
+    print(f"wrote {args.out}/ablation.md and ablation.json:\n")
+    print(Path(args.out, "ablation.md").read_text())
+    return 0
+
+
+def cmd_tune(args: argparse.Namespace) -> int:
+    from toolkit.experiments import tuning
+
+    tuning.tune(_config(args, args.scenario), args.out)
+    print(f"wrote {args.out}/tuning.md and tuning.json:\n")
+    print(Path(args.out, "tuning.md").read_text())
+    return 0
+
+
+def cmd_grade(args: argparse.Namespace) -> int:
+    from toolkit.teaching import grading
+
+    if args.assignment:
+        grading.master(args.assignment)  # an unknown name fails here, with the known ones
+    notebooks = grading.submissions(args.notebooks)
+    names = {notebook: args.assignment or grading.assignment_of(notebook) for notebook in notebooks}  # all, before grading
+    results = {}
+    for notebook, name in names.items():
+        results[notebook] = grading.grade(notebook, name, timeout=args.timeout)
+        print(json.dumps({"submission": str(notebook), **results[notebook]}) if args.json
+              else grading.report(results[notebook]), flush=True)
+    if args.csv:
+        grading.write_csv(results, args.csv)
+    return 0
+
+
+COMMANDS = {"reproduce": cmd_reproduce, "ablate": cmd_ablate, "tune": cmd_tune, "train": cmd_train,
+            "plan": cmd_plan, "bench": cmd_bench, "view": cmd_view, "grade": cmd_grade}
+
+
+# -- what an interrupted command leaves ---------------------------------------------------------
+
+def _reproduce_kept(args: argparse.Namespace) -> str:
+    from toolkit.experiments import reproduce
+
+    folders = ({name: Path(args.out) / name for name in sorted(scenarios.SCENARIOS)} if args.scenario == "all"
+               else {args.scenario: Path(args.out)})
+    kept = {name: reproduce.finished_stages(folder) for name, folder in folders.items()}
+    listed = "; ".join(f"{name}: {', '.join(stages) or 'nothing yet'}" for name, stages in kept.items())
+    return (f"kept the finished stages in {args.out} ({listed}); run the same command again to go on from there"
+            if any(kept.values()) else "nothing was finished; run the same command again to start over")
+
+
+def _rows_kept(args: argparse.Namespace) -> str:
+    """What an interrupted `ablate` or `tune` kept: its finished rows."""
+    return f"kept the finished rows in {args.out}/cache; run the same command again to go on from there"
+
+
+KEPT = {
+    "bench": lambda args: "bench writes nothing; nothing is lost",
+    "plan": lambda args: "plan writes nothing; nothing is lost",
+    "train": lambda args: (f"{args.out} is as it was (the checkpoint is written only when training ends); "
+                           "run the same command again to train from the start"),
+    "view": lambda args: "the viewer stopped",
+    "grade": lambda args: "grading writes its CSV only at the end; run the same command again",
+    "reproduce": _reproduce_kept,
+    "ablate": _rows_kept,
+    "tune": _rows_kept,
+}
