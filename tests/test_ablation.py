@@ -16,7 +16,13 @@ def test_rows_add_one_change_each_to_the_paper_preset():
     assert [k for k, _, _ in rows] == [k for k, _, _ in ablation.STEPS]
     assert rows[0][2] == replace(presets.get("paper"), name="ablation:paper")
     last = rows[-1][2]
-    assert (last.encoding, last.latent_input, last.optimizer, last.dropout, last.cae_workspaces) == ("local", False, "adamw", 0.0, 2000)
+    assert (last.encoding, last.latent_input, last.optimizer, last.dropout, last.cae_workspaces) == (
+        "local",
+        False,
+        "adamw",
+        0.0,
+        2000,
+    )
     for (_, _, before), (key, _, after), (_, _, changes) in zip(rows, rows[1:], ablation.STEPS[1:]):
         differ = {f for f in before.__dataclass_fields__ if f != "name" and getattr(before, f) != getattr(after, f)}
         assert differ == {f for f, v in changes.items() if getattr(before, f) != v}, key

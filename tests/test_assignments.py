@@ -27,18 +27,36 @@ from toolkit.teaching import grading
 ASSIGNMENTS = ["bridge_test", "verify_and_repair", "evaluating_a_checker", "cae_loss"]
 # Plausible wrong answers: (assignment, the solution's line, its replacement, the questions it breaks).
 WRONG = {
-    "bridge_keeps_invalid_midpoints": ("bridge_test", "keep = free(checker, middles)",
-                                       "keep = np.ones(len(middles), dtype=bool)", {"q1"}),
-    "repair_trusts_the_liar": ("verify_and_repair", "path = roadmap.shortest_path(start, goal)  # (P,) node indices",
-                               "return roadmap.shortest_path(start, goal)", {"q1"}),
-    "tpr_and_tnr_swapped": ("evaluating_a_checker",
-                            '"tpr": float(np.mean(predicted_valid[valid])) if valid.any() else float("nan"),\n        "tnr"',
-                            '"tnr": float(np.mean(predicted_valid[valid])) if valid.any() else float("nan"),\n        "tpr"',
-                            {"q1"}),
-    "threshold_ignores_invalid_paths": ("evaluating_a_checker", 'if all(r["success"] and r["path_valid"] for r in records)',
-                                        'if all(r["success"] for r in records)', {"q2"}),
-    "loss_without_the_penalty": ("cae_loss", "return reconstruction + lam * contractive_penalty(cae, grids)",
-                                 "return reconstruction", {"q2"}),
+    "bridge_keeps_invalid_midpoints": (
+        "bridge_test",
+        "keep = free(checker, middles)",
+        "keep = np.ones(len(middles), dtype=bool)",
+        {"q1"},
+    ),
+    "repair_trusts_the_liar": (
+        "verify_and_repair",
+        "path = roadmap.shortest_path(start, goal)  # (P,) node indices",
+        "return roadmap.shortest_path(start, goal)",
+        {"q1"},
+    ),
+    "tpr_and_tnr_swapped": (
+        "evaluating_a_checker",
+        '"tpr": float(np.mean(predicted_valid[valid])) if valid.any() else float("nan"),\n        "tnr"',
+        '"tnr": float(np.mean(predicted_valid[valid])) if valid.any() else float("nan"),\n        "tpr"',
+        {"q1"},
+    ),
+    "threshold_ignores_invalid_paths": (
+        "evaluating_a_checker",
+        'if all(r["success"] and r["path_valid"] for r in records)',
+        'if all(r["success"] for r in records)',
+        {"q2"},
+    ),
+    "loss_without_the_penalty": (
+        "cae_loss",
+        "return reconstruction + lam * contractive_penalty(cae, grids)",
+        "return reconstruction",
+        {"q2"},
+    ),
     "penalty_without_gradient": ("cae_loss", "create_graph=True)[0]", "retain_graph=True)[0]", {"q1"}),
 }
 HANG_TIMEOUT_S = 30
@@ -79,9 +97,16 @@ def graded(tmp_path_factory) -> dict[str, dict]:
     jobs["broken"][0].parent.mkdir()
     jobs["broken"][0].write_text("this is not a notebook")
     solution = zips["verify_and_repair"].parent / "verify_and_repair.ipynb"
-    jobs["hangs"] = (_edited(solution, root / "hangs" / "verify_and_repair.ipynb",
-                             "path = roadmap.shortest_path(start, goal)  # (P,) node indices",
-                             "path = None\n        while True:\n            pass"), "verify_and_repair", HANG_TIMEOUT_S)
+    jobs["hangs"] = (
+        _edited(
+            solution,
+            root / "hangs" / "verify_and_repair.ipynb",
+            "path = roadmap.shortest_path(start, goal)  # (P,) node indices",
+            "path = None\n        while True:\n            pass",
+        ),
+        "verify_and_repair",
+        HANG_TIMEOUT_S,
+    )
     with ThreadPoolExecutor(max_workers=5) as pool:
         results = pool.map(lambda job: grading.grade(*job), jobs.values())
         return dict(zip(jobs, results))
@@ -124,9 +149,21 @@ def test_a_file_otter_cannot_grade_scores_zero_with_the_reason(graded):
 
 
 def test_the_report_ends_with_the_score_and_shows_feedback_where_points_were_lost():
-    result = {"assignment": "a", "timed_out": False, "score": 2.0, "max_score": 5.0,
-              "questions": [{"name": "q1", "score": 2.0, "max_score": 2.0, "feedback": "all passed"},
-                            {"name": "q2", "score": 0.0, "max_score": 3.0, "feedback": "AssertionError: a returned sample is in collision"}]}
+    result = {
+        "assignment": "a",
+        "timed_out": False,
+        "score": 2.0,
+        "max_score": 5.0,
+        "questions": [
+            {"name": "q1", "score": 2.0, "max_score": 2.0, "feedback": "all passed"},
+            {
+                "name": "q2",
+                "score": 0.0,
+                "max_score": 3.0,
+                "feedback": "AssertionError: a returned sample is in collision",
+            },
+        ],
+    }
     lines = grading.report(result).splitlines()
     assert lines[-1] == "score: 2/5"
     assert "q2: 0/3" in lines and any("a returned sample is in collision" in line for line in lines)
@@ -139,13 +176,23 @@ def test_a_folder_of_submissions_becomes_one_csv_row_each(tmp_path):
     (tmp_path / "notes.txt").write_text("")
     found = grading.submissions([tmp_path])
     assert [p.name for p in found] == ["a.ipynb", "b.ipynb"]
-    results = {p: {"assignment": "x", "timed_out": False, "error": None, "score": float(i), "max_score": 2.0,
-                   "questions": [{"name": "q1", "score": float(i), "max_score": 2.0, "feedback": ""}]}
-               for i, p in enumerate(found)}
+    results = {
+        p: {
+            "assignment": "x",
+            "timed_out": False,
+            "error": None,
+            "score": float(i),
+            "max_score": 2.0,
+            "questions": [{"name": "q1", "score": float(i), "max_score": 2.0, "feedback": ""}],
+        }
+        for i, p in enumerate(found)
+    }
     grading.write_csv(results, tmp_path / "scores.csv")
     rows = list(csv.DictReader(open(tmp_path / "scores.csv")))
-    assert [(Path(r["submission"]).name, r["q1"], r["score"], r["max_score"]) for r in rows] == \
-        [("a.ipynb", "0.0", "0.0", "2.0"), ("b.ipynb", "1.0", "1.0", "2.0")]
+    assert [(Path(r["submission"]).name, r["q1"], r["score"], r["max_score"]) for r in rows] == [
+        ("a.ipynb", "0.0", "0.0", "2.0"),
+        ("b.ipynb", "1.0", "1.0", "2.0"),
+    ]
     assert list(rows[0])[-3:] == ["max_score", "timed_out", "error"] and rows[0]["error"] == ""
 
 
@@ -199,17 +246,28 @@ def test_the_instructors_guide_grades_a_folder_of_three_submissions_into_a_csv(t
     command = _guide_command("grade")
     assert command[:2] == [".venv/bin/toolkit", "grade"] and "submissions/" in command, command
     root = Path(__file__).resolve().parent.parent
-    done = subprocess.run([sys.executable, "-m", "toolkit", *command[1:]], cwd=tmp_path, capture_output=True, text=True,
-                          env={**os.environ, "PYTHONPATH": str(root)}, timeout=1500)
+    done = subprocess.run(
+        [sys.executable, "-m", "toolkit", *command[1:]],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        env={**os.environ, "PYTHONPATH": str(root)},
+        timeout=1500,
+    )
     assert done.returncode == 0, done.stderr[-3000:]
     csv_file = tmp_path / command[command.index("--csv") + 1]
     rows = {Path(row["submission"]).name: row for row in csv.DictReader(open(csv_file))}
     assert sorted(rows) == ["alice.ipynb", "bob.ipynb", "carol.ipynb"]
-    assert (rows["alice.ipynb"]["assignment"], rows["alice.ipynb"]["score"], rows["alice.ipynb"]["max_score"]) == \
-        ("bridge_test", "8.0", "8.0")
+    assert (rows["alice.ipynb"]["assignment"], rows["alice.ipynb"]["score"], rows["alice.ipynb"]["max_score"]) == (
+        "bridge_test",
+        "8.0",
+        "8.0",
+    )
     assert (rows["bob.ipynb"]["assignment"], rows["bob.ipynb"]["score"]) == ("verify_and_repair", "0.0")
     carol = rows["carol.ipynb"]
     assert float(carol["q1"]) < 6 and carol["q2"] == "2.0" and carol["timed_out"] == "False" and carol["error"] == ""
     assert done.stdout.count("score: ") == 3
-    with zipfile.ZipFile(grading.autograder("bridge_test")) as archive:  # otter's Gradescope autograder, as the guide says
+    with zipfile.ZipFile(
+        grading.autograder("bridge_test")
+    ) as archive:  # otter's Gradescope autograder, as the guide says
         assert {"run_autograder", "setup.sh", "otter_config.json"} <= set(archive.namelist())

@@ -41,22 +41,41 @@ def test_bench_at_a_sampler_sized_batch(capsys):
     assert "argument --batch: must be 1..1000000, got 0" in capsys.readouterr().err
 
 
-@pytest.mark.parametrize("command", [
-    [sys.executable, "-m", "toolkit"],
-    [str(Path(sys.executable).with_name("toolkit"))],  # the console script installed beside this Python
-])
+@pytest.mark.parametrize(
+    "command",
+    [
+        [sys.executable, "-m", "toolkit"],
+        [str(Path(sys.executable).with_name("toolkit"))],  # the console script installed beside this Python
+    ],
+)
 def test_bench_from_the_command_line(command):
     if not Path(command[0]).exists():
         pytest.skip("console script not installed beside this interpreter")
-    done = subprocess.run(command + ["bench", "--scenario", "2ds", "--json"],
-                          capture_output=True, text=True, timeout=120)
+    done = subprocess.run(
+        command + ["bench", "--scenario", "2ds", "--json"], capture_output=True, text=True, timeout=120
+    )
     assert done.returncode == 0, done.stderr
     assert json.loads(done.stdout)["exact_cfg_per_s"] > 0
 
 
 def test_bench_with_a_checkpoint_times_prm_with_and_without_it(capsys, checkpoint_2ds):
-    assert cli.main(["bench", "--scenario", "2ds", "--checkpoint", str(checkpoint_2ds), "--workspaces", "1",
-                     "--pairs", "2", "--json"]) == 0
+    assert (
+        cli.main(
+            [
+                "bench",
+                "--scenario",
+                "2ds",
+                "--checkpoint",
+                str(checkpoint_2ds),
+                "--workspaces",
+                "1",
+                "--pairs",
+                "2",
+                "--json",
+            ]
+        )
+        == 0
+    )
     result = json.loads(capsys.readouterr().out)
     assert set(result["planning"]) == {"BS", "OB", "G", "BT"}
     for row in result["planning"].values():
@@ -65,8 +84,20 @@ def test_bench_with_a_checkpoint_times_prm_with_and_without_it(capsys, checkpoin
 
 
 def test_bench_plans_with_chosen_samplers_and_planner_options(capsys, checkpoint_2ds):
-    args = ["bench", "--scenario", "2ds", "--checkpoint", str(checkpoint_2ds), "--workspaces", "1", "--pairs", "2",
-            "--samplers", "BT", "--json"]
+    args = [
+        "bench",
+        "--scenario",
+        "2ds",
+        "--checkpoint",
+        str(checkpoint_2ds),
+        "--workspaces",
+        "1",
+        "--pairs",
+        "2",
+        "--samplers",
+        "BT",
+        "--json",
+    ]
     assert cli.main(args + ["--option", "max_rounds=1", "--option", "auxiliary=exact"]) == 0
     result = json.loads(capsys.readouterr().out)
     assert result["planning_options"] == {"max_rounds": 1, "auxiliary": "exact"}
@@ -82,7 +113,10 @@ def test_bench_names_a_bad_planner_option_or_sampler(capsys, checkpoint_2ds):
     assert "unknown planner option(s) ['rebrige']" in capsys.readouterr().err
     assert cli.main(args + ["--option", "rebridge=-1"]) == 2
     assert "PRMOptions.rebridge must be a non-negative integer" in capsys.readouterr().err
-    for bad, message in (("--option=rebridge", "expected NAME=VALUE"), ("--samplers=BS,RRT", "unknown sampler(s) ['RRT']")):
+    for bad, message in (
+        ("--option=rebridge", "expected NAME=VALUE"),
+        ("--samplers=BS,RRT", "unknown sampler(s) ['RRT']"),
+    ):
         with pytest.raises(SystemExit):
             cli.main(args + [bad])
         assert message in capsys.readouterr().err
@@ -110,19 +144,23 @@ def test_the_two_checkers_are_timed_in_turns(monkeypatch):
         def fn():
             order.append(name)
             clock[0] += seconds
+
         return fn
 
     monkeypatch.setattr(bench.time, "perf_counter", lambda: clock[0])
-    rates = bench.in_turns({"exact": (call("exact", 2.0), 20_000), "learned": (call("learned", 0.01), 10_000)},
-                           repeats=3)
+    rates = bench.in_turns(
+        {"exact": (call("exact", 2.0), 20_000), "learned": (call("learned", 0.01), 10_000)}, repeats=3
+    )
     assert order == ["exact", "learned"] * 4  # a warm-up call each, then three rounds
     assert rates == {"exact": pytest.approx(10_000), "learned": pytest.approx(1_000_000)}
 
 
 def test_bench_vs_ompl_prints_a_markdown_table(capsys):
     pytest.importorskip("ompl")
-    assert cli.main(["bench", "--vs-ompl", "--scenario", "2ds", "--queries", "2", "--seed", "9000",
-                     "--ompl-seconds", "5"]) == 0
+    assert (
+        cli.main(["bench", "--vs-ompl", "--scenario", "2ds", "--queries", "2", "--seed", "9000", "--ompl-seconds", "5"])
+        == 0
+    )
     lines = capsys.readouterr().out.splitlines()
     assert lines[0].startswith("| 2ds (2 queries) | solved | valid at 10x finer | median s")
     rows = {line.split("|")[1].strip(): line for line in lines[2:]}
@@ -135,8 +173,9 @@ def test_bench_vs_ompl_prints_a_markdown_table(capsys):
 def test_versus_ompl_races_the_chosen_planners_only():
     pytest.importorskip("ompl")
     scenario = scenarios.get("2ds")
-    table = versus_ompl.versus_ompl(scenario, 2, 9000, ompl_seconds=5, ompl_planners=("RRTConnect",),
-                                    paper_baseline=False)
+    table = versus_ompl.versus_ompl(
+        scenario, 2, 9000, ompl_seconds=5, ompl_planners=("RRTConnect",), paper_baseline=False
+    )
     assert list(table) == ["ours, best exact", "OMPL RRTConnect"]
     assert table["ours, best exact"]["success_rate"] == 1.0 and table["ours, best exact"]["valid_rate"] == 1.0
     assert all(len(row["seconds"]) == 2 for row in table.values())
@@ -168,6 +207,7 @@ def test_a_race_rotates_who_goes_first_and_times_every_solve(monkeypatch):
             order.append((n, name))
             clock[0] += seconds
             return success, None if not success else np.stack([query.start, query.start])
+
         return solve
 
     monkeypatch.setattr(versus_ompl.time, "perf_counter", lambda: clock[0])
@@ -183,9 +223,15 @@ def test_a_race_rotates_who_goes_first_and_times_every_solve(monkeypatch):
 
 
 def test_summarize_counts_failures_times_and_validity_of_found_paths_only():
-    runs = [{"seconds": s, "success": ok, "valid": valid, "checks": c}
-            for s, ok, valid, c in ((1.0, True, True, 10), (2.0, True, False, 20), (3.0, False, False, 30),
-                                    (10.0, True, True, 40))]
+    runs = [
+        {"seconds": s, "success": ok, "valid": valid, "checks": c}
+        for s, ok, valid, c in (
+            (1.0, True, True, 10),
+            (2.0, True, False, 20),
+            (3.0, False, False, 30),
+            (10.0, True, True, 40),
+        )
+    ]
     row = versus_ompl.summarize({"p": runs})["p"]
     assert row["queries"] == 4 and row["success_rate"] == 0.75
     assert row["valid_rate"] == pytest.approx(2 / 3)  # of the three paths found
@@ -205,7 +251,9 @@ def test_planning_ratios_plans_a_registered_sampler_and_names_an_unknown_one(mon
     result = bench.planning_ratios(scenario, models, 1, 1, samplers=("MINE",), overrides={"max_rounds": 1})
     assert set(result) == {"MINE"}
     assert result["MINE"]["rounds_with"] == result["MINE"]["rounds_without"] == 1
-    with pytest.raises(ValueError, match=r"unknown sampler\(s\) \['RRT'\]; choose from \['BS', 'BT', 'G', 'MINE', 'OB'\]"):
+    with pytest.raises(
+        ValueError, match=r"unknown sampler\(s\) \['RRT'\]; choose from \['BS', 'BT', 'G', 'MINE', 'OB'\]"
+    ):
         bench.planning_ratios(scenario, models, 1, 1, samplers=("BS", "RRT"))
 
 

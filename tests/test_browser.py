@@ -16,8 +16,10 @@ from toolkit.viewer import drawing as draw
 pytestmark = [
     pytest.mark.browser,
     pytest.mark.slow,
-    pytest.mark.skipif(viewer_browser.find_chromium() is None,
-                       reason="no Chromium installed (run `make browser` or `apt-get install chromium`)"),
+    pytest.mark.skipif(
+        viewer_browser.find_chromium() is None,
+        reason="no Chromium installed (run `make browser` or `apt-get install chromium`)",
+    ),
 ]
 
 
@@ -31,10 +33,16 @@ SIZE = (1100, 700)  # window (width, height): smaller renders faster in software
 def test_the_office_renders_with_its_samples(make_viewer, tmp_path):
     v = make_viewer("3do", seed=0)
     v.sample("raw", 400, seed=0)
-    viewer_browser.screenshot(v.url, tmp_path / "office.png", size=SIZE, ready=lambda png: (
-        share(png, draw.OBSTACLE) > 0.03  # furniture covers much of the canvas
-        and share(png, draw.VALID) > 0.003  # valid samples, green
-        and share(png, draw.COLLIDING) > 0.0005))  # samples in collision, red
+    viewer_browser.screenshot(
+        v.url,
+        tmp_path / "office.png",
+        size=SIZE,
+        ready=lambda png: (
+            share(png, draw.OBSTACLE) > 0.03  # furniture covers much of the canvas
+            and share(png, draw.VALID) > 0.003  # valid samples, green
+            and share(png, draw.COLLIDING) > 0.0005
+        ),
+    )  # samples in collision, red
 
 
 def test_a_colliding_robot_shows_red(make_viewer, tmp_path):
@@ -43,9 +51,15 @@ def test_a_colliding_robot_shows_red(make_viewer, tmp_path):
     block = centers[np.argmin(np.linalg.norm(centers - v.q, axis=1))]  # the block nearest the robot: in view
     v.set_configuration(block)  # the robot's square inside the block: it pokes out of it, red
     assert not v.valid
-    png = viewer_browser.screenshot(v.url, tmp_path / "colliding.png", size=SIZE,
-                                    ready=lambda png: (share(png, draw.COLLIDING) > 5e-5  # the robot, ~100 px
-                                                       and share(png, draw.OBSTACLE) > 0.01))  # and the scene
+    png = viewer_browser.screenshot(
+        v.url,
+        tmp_path / "colliding.png",
+        size=SIZE,
+        ready=lambda png: (
+            share(png, draw.COLLIDING) > 5e-5  # the robot, ~100 px
+            and share(png, draw.OBSTACLE) > 0.01
+        ),
+    )  # and the scene
     assert share(png, draw.VALID) == 0.0  # nothing green
 
 
@@ -53,8 +67,9 @@ def test_the_embedded_snapshot_renders_without_a_server(tmp_path):
     page = tmp_path / "snapshot.html"
     with viewer.Viewer("3dc7", seed=0, port=0) as v:
         page.write_text(v.html())
-    viewer_browser.screenshot(page.as_uri(), tmp_path / "snapshot.png", size=SIZE,
-                              ready=lambda png: share(png, draw.OBSTACLE) > 0.01)
+    viewer_browser.screenshot(
+        page.as_uri(), tmp_path / "snapshot.png", size=SIZE, ready=lambda png: share(png, draw.OBSTACLE) > 0.01
+    )
 
 
 def test_a_page_that_never_shows_the_scene_times_out(tmp_path):

@@ -34,12 +34,21 @@ def subparsers() -> dict:
 
 # -- help ---------------------------------------------------------------------------------------------
 
+
 def test_help_names_the_scenarios_samplers_and_commands_in_words(capsys):
     with pytest.raises(SystemExit):
         cli.main(["--help"])
     text = capsys.readouterr().out
-    for words in ("3D office, youBot-like 8-DoF", "3D clutter, 9-DoF box chain", "bridge test", "obstacle-based",
-                  "Gaussian", "uniform random configurations", "TOOLKIT_THREADS", "examples:"):
+    for words in (
+        "3D office, youBot-like 8-DoF",
+        "3D clutter, 9-DoF box chain",
+        "bridge test",
+        "obstacle-based",
+        "Gaussian",
+        "uniform random configurations",
+        "TOOLKIT_THREADS",
+        "examples:",
+    ):
         assert words in text
     for name in COMMANDS:
         assert f"\n  {name} " in text  # listed with its summary
@@ -59,17 +68,27 @@ def test_every_option_is_explained_in_plain_text(name, capsys):
 
 # -- arguments ------------------------------------------------------------------------------------------
 
-@pytest.mark.parametrize("argv, message", [
-    (["view", "--port", "70000"], "argument --port: must be 0..65535, got 70000"),
-    (["view", "--port", "-1"], "argument --port: must be 0..65535, got -1"),
-    (["view", "--port", "http"], "argument --port: must be a whole number, 0..65535; got 'http'"),
-    (["view", "--samples", "1000000"], "argument --samples: must be 0..100000, got 1000000"),
-    (["plan", "--scenario", "2ds", "--seed", "-3"], "argument --seed: must be 0..4294967295, got -3"),
-    (["reproduce", "--scenario", "2ds", "--out", "x", "--workers", "0"], "argument --workers: must be 1 or more, got 0"),
-    (["bench", "--scenario", "2ds", "--pairs", "11"], "argument --pairs: must be 1..10, got 11"),
-    (["bench", "--scenario", "2ds", "--workspaces", "0"], "argument --workspaces: must be 1..100, got 0"),
-    (["train", "--scenario", "2ds", "--out", "x", "--mlp-epochs", "0"], "argument --mlp-epochs: must be 1 or more, got 0"),
-])
+
+@pytest.mark.parametrize(
+    "argv, message",
+    [
+        (["view", "--port", "70000"], "argument --port: must be 0..65535, got 70000"),
+        (["view", "--port", "-1"], "argument --port: must be 0..65535, got -1"),
+        (["view", "--port", "http"], "argument --port: must be a whole number, 0..65535; got 'http'"),
+        (["view", "--samples", "1000000"], "argument --samples: must be 0..100000, got 1000000"),
+        (["plan", "--scenario", "2ds", "--seed", "-3"], "argument --seed: must be 0..4294967295, got -3"),
+        (
+            ["reproduce", "--scenario", "2ds", "--out", "x", "--workers", "0"],
+            "argument --workers: must be 1 or more, got 0",
+        ),
+        (["bench", "--scenario", "2ds", "--pairs", "11"], "argument --pairs: must be 1..10, got 11"),
+        (["bench", "--scenario", "2ds", "--workspaces", "0"], "argument --workspaces: must be 1..100, got 0"),
+        (
+            ["train", "--scenario", "2ds", "--out", "x", "--mlp-epochs", "0"],
+            "argument --mlp-epochs: must be 1 or more, got 0",
+        ),
+    ],
+)
 def test_numbers_are_checked_by_the_parser_with_the_flag_named(argv, message, capsys):
     with pytest.raises(SystemExit) as exit_info:
         cli.main(argv)
@@ -91,17 +110,25 @@ def test_view_refuses_a_bad_checkpoint_in_the_terminal_before_serving(tmp_path, 
     assert cli.main(["view", "--checkpoint", str(damaged)]) == 2
     err = capsys.readouterr().err
     assert f"checkpoint {damaged}: meta.json is corrupted" in err
-    assert err.rstrip().endswith(f"write it again with `toolkit train ... --force --out {damaged}`, or use another "
-                                 "checkpoint")
+    assert err.rstrip().endswith(
+        f"write it again with `toolkit train ... --force --out {damaged}`, or use another checkpoint"
+    )
 
 
-@pytest.mark.parametrize("host, message", [
-    ("192.0.2.1", "cannot serve on 192.0.2.1:8080: Cannot assign requested address"),  # not this computer's
-    ("no-such-host.invalid", "cannot serve on host 'no-such-host.invalid'"),
-])
+@pytest.mark.parametrize(
+    "host, message",
+    [
+        ("192.0.2.1", "cannot serve on 192.0.2.1:8080: Cannot assign requested address"),  # not this computer's
+        ("no-such-host.invalid", "cannot serve on host 'no-such-host.invalid'"),
+    ],
+)
 def test_view_on_a_host_it_cannot_serve_on_says_so_instead_of_hanging(host, message):
-    done = subprocess.run([sys.executable, "-m", "toolkit", "view", "--scenario", "2ds", "--host", host],
-                          capture_output=True, text=True, timeout=300)
+    done = subprocess.run(
+        [sys.executable, "-m", "toolkit", "view", "--scenario", "2ds", "--host", host],
+        capture_output=True,
+        text=True,
+        timeout=300,
+    )
     assert done.returncode == 2
     assert done.stderr.startswith(f"toolkit view: error: {message}")
 
@@ -120,9 +147,11 @@ def test_free_port_moves_past_busy_ports_and_stops_at_the_last_one():
 
 # -- outputs: train -------------------------------------------------------------------------------------
 
+
 @pytest.fixture
 def no_training(monkeypatch):
     """Fail the test if training starts: the checks must come first."""
+
     def trained(*args, **kwargs):
         raise AssertionError("training started before the output was checked")
 
@@ -167,10 +196,29 @@ def test_train_never_replaces_a_checkpoint_without_force(tmp_path, checkpoint_2d
 def test_train_force_replaces_a_checkpoint_whole(tmp_path, checkpoint_2ds, monkeypatch, capsys):
     existing = shutil.copytree(checkpoint_2ds, tmp_path / "ckpt")
     trained = checkpoints.load_models(checkpoint_2ds)
-    monkeypatch.setattr(training, "train_models", lambda scenario, preset, splits, seed, **options:
-                        dataclasses.replace(trained, seed=seed))
-    assert cli.main(["train", "--scenario", "2ds", "--preset", "strong", "--quick", "--seed", "7", "--force",
-                     "--out", str(existing)]) == 0
+    monkeypatch.setattr(
+        training,
+        "train_models",
+        lambda scenario, preset, splits, seed, **options: dataclasses.replace(trained, seed=seed),
+    )
+    assert (
+        cli.main(
+            [
+                "train",
+                "--scenario",
+                "2ds",
+                "--preset",
+                "strong",
+                "--quick",
+                "--seed",
+                "7",
+                "--force",
+                "--out",
+                str(existing),
+            ]
+        )
+        == 0
+    )
     assert json.loads(capsys.readouterr().out)["checkpoint"] == str(existing)
     assert checkpoints.load_models(existing).seed == 7
     assert sorted(p.name for p in tmp_path.iterdir()) == ["ckpt"]  # no temporary folder left beside it
@@ -178,9 +226,11 @@ def test_train_force_replaces_a_checkpoint_whole(tmp_path, checkpoint_2ds, monke
 
 # -- outputs: reproduce ---------------------------------------------------------------------------------
 
+
 @pytest.fixture
 def no_data(monkeypatch):
     """Fail the test if a reproduction starts its first stage: the checks must come first."""
+
     def made(*args, **kwargs):
         raise AssertionError("the data stage started before the output was checked")
 
@@ -194,8 +244,10 @@ def reproduce(out, scenario="2ds") -> int:
 def test_reproduce_refuses_what_it_cannot_write_before_any_work(tmp_path, checkpoint_2ds, no_data, capsys):
     (tmp_path / "notes.txt").write_text("mine")
     assert reproduce(tmp_path / "notes.txt") == 2
-    assert capsys.readouterr().err == f"toolkit reproduce: error: --out: {tmp_path / 'notes.txt'} is a file, not a " \
-                                      "folder; choose a folder\n"
+    assert (
+        capsys.readouterr().err == f"toolkit reproduce: error: --out: {tmp_path / 'notes.txt'} is a file, not a "
+        "folder; choose a folder\n"
+    )
     assert reproduce(tmp_path / "notes.txt" / "run") == 2
     assert f"--out: {tmp_path / 'notes.txt'} is a file, not a folder" in capsys.readouterr().err
     assert reproduce(checkpoint_2ds) == 2
@@ -234,8 +286,11 @@ def test_damaged_data_and_checkpoint_in_the_cache_are_named_with_what_to_do(tmp_
     cache = Stages(tmp_path, config.settings(), progress=False).cache
     for split in SPLITS:
         (cache / f"data_{split}.npz").write_bytes(b"PK\x03\x04 cut off")
-    with pytest.raises(ValueError, match=r"data_train.npz is not a valid dataset file .*; delete it to compute the "
-                                         r"data stage again"):
+    with pytest.raises(
+        ValueError,
+        match=r"data_train.npz is not a valid dataset file .*; delete it to compute the "
+        r"data stage again",
+    ):
         experiments.reproduce(config, tmp_path)
     for name, dataset in pipeline.make_splits(config).items():
         dataset.save(cache / f"data_{name}.npz")
@@ -247,6 +302,7 @@ def test_damaged_data_and_checkpoint_in_the_cache_are_named_with_what_to_do(tmp_
 
 # -- threads ------------------------------------------------------------------------------------------
 
+
 def blas_threads() -> list[int]:
     return [pool["num_threads"] for pool in threadpool_info() if pool["user_api"] == "blas"]
 
@@ -256,8 +312,14 @@ def test_commands_run_on_one_thread_unless_toolkit_threads_says(setting, expecte
     from toolkit.experiments import bench
 
     seen = []
-    monkeypatch.setattr(bench, "throughput", lambda *a, **k: seen.append((torch.get_num_threads(), blas_threads()))
-                        or {"exact_cfg_per_s": 1.0, "learned_cfg_per_s": 2.0, "ratio": 2.0})
+    monkeypatch.setattr(
+        bench,
+        "throughput",
+        lambda *a, **k: (
+            seen.append((torch.get_num_threads(), blas_threads()))
+            or {"exact_cfg_per_s": 1.0, "learned_cfg_per_s": 2.0, "ratio": 2.0}
+        ),
+    )
     monkeypatch.setattr(bench, "edge_checks", lambda *a, **k: {})
     if setting is None:
         monkeypatch.delenv(threads.ENV, raising=False)

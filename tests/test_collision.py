@@ -28,7 +28,8 @@ seeds = st.integers(0, 2**32 - 1)
 # A chain whose sizes are powers of two, so that exact touching is exact in floating point too:
 # at zero angles it spans [x, x + 1.5] x [y -+ 0.125] x [z -+ 0.125].
 DYADIC = robots.BoxRobot(
-    "dyadic", "free",
+    "dyadic",
+    "free",
     [robots.Link((0.25, 0.125, 0.125), (0.25, 0.0, 0.0)), robots.Link((0.5, 0.125, 0.125), (0.5, 0.0, 0.0))],
     [robots.Joint((0.5, 0.0, 0.0), "z", (-2.0, 2.0))],
     position_bounds=(np.zeros(3), np.full(3, 8.0)),
@@ -73,6 +74,7 @@ def answers(ws, robot, Q):
 
 # -- random agreement: 3,000 configurations per example, 5 examples per scenario ----------------
 
+
 @pytest.mark.parametrize("name", SCENARIOS)
 @settings(max_examples=5, deadline=None)
 @given(seed=seeds)
@@ -115,6 +117,7 @@ def test_point_robot_checker_agrees_with_fcl_on_random_and_grazing_configuration
 
 # -- constructed contacts ------------------------------------------------------------------------
 
+
 def test_point_robot_grazing_cases():
     robot = robots.point_robot()
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10, 10], [12, 12]], [[12, 12], [14, 13]]], float))
@@ -139,26 +142,29 @@ def test_point_robot_grazing_cases():
 DYADIC_WS = Workspace(np.zeros(3), np.full(3, 8.0), np.array([[[4, 4, 4], [5, 5, 5]], [[5, 4, 4], [6, 5, 5]]], float))
 
 
-@pytest.mark.parametrize("base, valid", [
-    ((2.5, 4.5, 4.5), False),  # the tip face touches the block's face x = 4
-    ((2.5 - EPS, 4.5, 4.5), True),
-    ((2.5 + EPS, 4.5, 4.5), False),
-    ((3.0, 3.875, 3.875), False),  # a link edge touches the block's edge y = z = 4
-    ((3.0, 3.875 - EPS, 3.875), True),
-    ((3.0, 3.875 + EPS, 3.875 + EPS), False),
-    ((2.5, 3.875, 3.875), False),  # the tip's corner touches the block's corner (4, 4, 4)
-    ((2.5, 3.875, 3.875 - EPS), True),
-    ((2.5 - EPS, 3.875 + EPS, 3.875 + EPS), True),
-    ((4.0, 4.5, 5.125), False),  # lying on the top of both blocks, across the seam where they touch
-    ((4.0, 4.5, 5.125 + EPS), True),
-    ((4.0, 5.125, 4.5), False),  # against the side of both blocks
-    ((4.0, 5.125 + EPS, 4.5), True),
-    ((6.5, 4.5, 4.5), True),  # beyond the second block, nothing near
-    ((6.5, 4.5, 0.125), True),  # touching the floor from inside the region
-    ((6.5, 4.5, 0.125 - EPS), False),  # 1e-6 through the floor
-    ((6.5, 7.875, 2.0), True),  # touching the side wall
-    ((6.5 + EPS, 2.0, 2.0), False),  # the tip 1e-6 past the wall x = 8
-])
+@pytest.mark.parametrize(
+    "base, valid",
+    [
+        ((2.5, 4.5, 4.5), False),  # the tip face touches the block's face x = 4
+        ((2.5 - EPS, 4.5, 4.5), True),
+        ((2.5 + EPS, 4.5, 4.5), False),
+        ((3.0, 3.875, 3.875), False),  # a link edge touches the block's edge y = z = 4
+        ((3.0, 3.875 - EPS, 3.875), True),
+        ((3.0, 3.875 + EPS, 3.875 + EPS), False),
+        ((2.5, 3.875, 3.875), False),  # the tip's corner touches the block's corner (4, 4, 4)
+        ((2.5, 3.875, 3.875 - EPS), True),
+        ((2.5 - EPS, 3.875 + EPS, 3.875 + EPS), True),
+        ((4.0, 4.5, 5.125), False),  # lying on the top of both blocks, across the seam where they touch
+        ((4.0, 4.5, 5.125 + EPS), True),
+        ((4.0, 5.125, 4.5), False),  # against the side of both blocks
+        ((4.0, 5.125 + EPS, 4.5), True),
+        ((6.5, 4.5, 4.5), True),  # beyond the second block, nothing near
+        ((6.5, 4.5, 0.125), True),  # touching the floor from inside the region
+        ((6.5, 4.5, 0.125 - EPS), False),  # 1e-6 through the floor
+        ((6.5, 7.875, 2.0), True),  # touching the side wall
+        ((6.5 + EPS, 2.0, 2.0), False),  # the tip 1e-6 past the wall x = 8
+    ],
+)
 def test_dyadic_chain_grazing_cases(base, valid):
     q = np.concatenate([base, np.zeros(4)])
     for checker in checkers(DYADIC_WS, DYADIC):
@@ -179,8 +185,14 @@ def contact_offset(robot, q, size, anchor, direction):
         bounds = [(-x, x) for x in h] + [(0, s) for s in size] + [(None, None)]
         cost = np.zeros(2 * d + 1)
         cost[-1] = -1.0
-        result = linprog(cost, A_eq=A, b_eq=anchor - c, bounds=bounds, method="highs",
-                         options={"primal_feasibility_tolerance": 1e-10, "dual_feasibility_tolerance": 1e-10})
+        result = linprog(
+            cost,
+            A_eq=A,
+            b_eq=anchor - c,
+            bounds=bounds,
+            method="highs",
+            options={"primal_feasibility_tolerance": 1e-10, "dual_feasibility_tolerance": 1e-10},
+        )
         if result.status == 0:
             best = max(best, result.x[-1])
     return best
@@ -213,6 +225,7 @@ def test_turned_links_grazing_a_block_by_linear_programming(name, seed):
 
 
 # -- the rules: bounds, region, counting, errors ---------------------------------------------------
+
 
 def test_out_of_bounds_and_out_of_region_are_invalid():
     robot = robots.box_chain(1)  # spans [x, x + 0.5] along +x at zero angles
@@ -294,6 +307,7 @@ def test_exact_checker_picks_the_fastest_exact_one():
 
 
 # -- clearance bounds: below FCL's distances, and not vacuous --------------------------------
+
 
 def true_clearance(ws, robot, q, cap):
     """Min over links of FCL's distance to every block and the exact distance to the walls (corners), capped."""

@@ -27,6 +27,7 @@ def splits_3dc7():
 
 # -- balanced samples -------------------------------------------------------------------
 
+
 @pytest.mark.parametrize("name, fraction", [("2ds", 0.5), ("3do", 0.5), ("3dc9", 0.5), ("3dc7", 0.3), ("2ds", 1.0)])
 def test_balanced_samples_have_the_fraction_and_the_exact_labels(name, fraction):
     scenario = scenarios.get(name)
@@ -67,12 +68,16 @@ def test_balanced_samples_refuse_impossible_requests(n, fraction):
 
 # -- splits ---------------------------------------------------------------------------------
 
-@pytest.mark.parametrize("name, seen, seen_test, unseen, samples", [
-    ("2ds", 30, 30, 10, 100),
-    ("3do", 100, 100, 20, 200),
-    ("3dc7", 50, 30, 10, 200),
-    ("3dc9", 50, 30, 10, 200),
-])
+
+@pytest.mark.parametrize(
+    "name, seen, seen_test, unseen, samples",
+    [
+        ("2ds", 30, 30, 10, 100),
+        ("3do", 100, 100, 20, 200),
+        ("3dc7", 50, 30, 10, 200),
+        ("3dc9", 50, 30, 10, 200),
+    ],
+)
 def test_paper_defaults(name, seen, seen_test, unseen, samples):
     s = scenarios.get(name)
     assert (s.n_seen, s.n_seen_test, s.n_unseen, s.samples_per_workspace) == (seen, seen_test, unseen, samples)
@@ -111,11 +116,15 @@ def test_validity_blind_split_is_the_papers_unseen_test(request, fixture):
     unseen = request.getfixturevalue(fixture)["unseen_test"]
     scenario = scenarios.get(unseen.scenario)
     blind = data.validity_blind_split(scenario, unseen)
-    assert blind.workspaces == unseen.workspaces and blind.configs.shape == (2, scenario.plan_samples, scenario.robot.dof)
+    assert blind.workspaces == unseen.workspaces and blind.configs.shape == (
+        2,
+        scenario.plan_samples,
+        scenario.robot.dof,
+    )
     np.testing.assert_array_equal(blind.occupancy, unseen.occupancy)
     for ws, Q, valid in zip(blind.workspaces, blind.configs, blind.valid):
         np.testing.assert_array_equal(valid, ExactChecker(ws, scenario.robot).are_valid(Q))
-        assert np.all(Q >= scenario.robot.lower) and np.all(Q <= scenario.robot.upper)
+        assert np.all(scenario.robot.lower <= Q) and np.all(scenario.robot.upper >= Q)
     assert 0.6 < blind.valid.mean() < 0.98  # not balanced: most uniform samples are free
     np.testing.assert_array_equal(data.validity_blind_split(scenario, unseen).configs, blind.configs)  # reproducible
     assert not np.isin(blind.configs, unseen.configs).all(axis=-1).any()  # its own stream, not the balanced samples
@@ -164,6 +173,7 @@ def test_inconsistent_dataset_is_refused(splits_2ds):
 
 # -- files ------------------------------------------------------------------------------------
 
+
 def test_save_load_round_trip(tmp_path, splits_3dc7):
     ds = splits_3dc7["seen_test"]
     ds.save(tmp_path / "seen.npz")
@@ -191,7 +201,7 @@ def corrupt(path, how):
         path.write_bytes(np.random.default_rng(0).bytes(len(raw)))
     elif how == "flipped":  # one byte changed inside the compressed arrays
         middle = len(raw) // 3
-        path.write_bytes(raw[:middle] + bytes([raw[middle] ^ 0xFF]) + raw[middle + 1:])
+        path.write_bytes(raw[:middle] + bytes([raw[middle] ^ 0xFF]) + raw[middle + 1 :])
     elif how == "missing array":
         with np.load(path) as data:
             np.savez(path, occupancy=data["occupancy"], configs=data["configs"], meta=data["meta"])
@@ -208,8 +218,9 @@ def corrupt(path, how):
         path.write_bytes(b"")
 
 
-@pytest.mark.parametrize("how", ["truncated", "garbage", "flipped", "missing array", "meta without workspaces",
-                                 "meta not json", "empty"])
+@pytest.mark.parametrize(
+    "how", ["truncated", "garbage", "flipped", "missing array", "meta without workspaces", "meta not json", "empty"]
+)
 def test_corrupted_dataset_is_named(tmp_path, splits_2ds, how):
     path = tmp_path / "train.npz"
     splits_2ds["train"].save(path)

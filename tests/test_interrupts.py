@@ -26,8 +26,10 @@ from toolkit.experiments import reproduce as experiments
 from toolkit.experiments.config import RunConfig
 from toolkit.experiments.stages import Stages
 
-pytestmark = [pytest.mark.slow,
-              pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="finds processes in /proc (Linux)")]
+pytestmark = [
+    pytest.mark.slow,
+    pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="finds processes in /proc (Linux)"),
+]
 
 STALLED_RUN = '''
 """`toolkit ...` whose bridge-test planning never finishes."""
@@ -94,14 +96,21 @@ def out(tmp_path, checkpoint_2ds):
     return out
 
 
-@pytest.mark.parametrize("sig, whom", [(signal.SIGINT, "group"), (signal.SIGINT, "parent"),
-                                       (signal.SIGTERM, "parent"), (signal.SIGKILL, "parent")],
-                         ids=["ctrl-c", "sigint-parent", "sigterm", "sigkill"])
+@pytest.mark.parametrize(
+    "sig, whom",
+    [(signal.SIGINT, "group"), (signal.SIGINT, "parent"), (signal.SIGTERM, "parent"), (signal.SIGKILL, "parent")],
+    ids=["ctrl-c", "sigint-parent", "sigterm", "sigkill"],
+)
 def test_a_signal_during_planning_stops_every_process_and_keeps_the_finished_samplers(sig, whom, out, tmp_path):
     script = tmp_path / "stalled_run.py"
     script.write_text(STALLED_RUN)
-    run = subprocess.Popen([sys.executable, str(script), *ARGS, "--out", str(out)], stdout=subprocess.PIPE,
-                           stderr=subprocess.PIPE, text=True, start_new_session=True)  # its own process group
+    run = subprocess.Popen(
+        [sys.executable, str(script), *ARGS, "--out", str(out)],
+        stdout=subprocess.PIPE,
+        stderr=subprocess.PIPE,
+        text=True,
+        start_new_session=True,
+    )  # its own process group
     workers: set[int] = set()
     try:
         deadline = time.monotonic() + 600  # generous: imports and spawns crawl on a busy machine
@@ -132,7 +141,8 @@ def test_a_signal_during_planning_stops_every_process_and_keeps_the_finished_sam
         name = signal.Signals(sig).name
         assert stderr.splitlines()[-1] == (
             f"toolkit reproduce: stopped by {name}; kept the finished stages in {out} (2ds: data, models, learning, "
-            "planning_BS, planning_OB, planning_G); run the same command again to go on from there")
+            "planning_BS, planning_OB, planning_G); run the same command again to go on from there"
+        )
         assert "Traceback" not in stderr
 
     assert cli.main([*ARGS, "--out", str(out)]) == 0  # the same command, without the stall
@@ -143,8 +153,12 @@ def test_a_signal_during_planning_stops_every_process_and_keeps_the_finished_sam
 
 def test_sigterm_while_training_leaves_the_output_as_it_was(tmp_path):
     out = tmp_path / "ckpt"
-    run = subprocess.Popen([sys.executable, "-m", "toolkit", "train", "--scenario", "2ds", "--quick", "--out", str(out)],
-                           stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
+    run = subprocess.Popen(
+        [sys.executable, "-m", "toolkit", "train", "--scenario", "2ds", "--quick", "--out", str(out)],
+        stdout=subprocess.DEVNULL,
+        stderr=subprocess.PIPE,
+        text=True,
+    )
     printed = []
     reader = threading.Thread(target=lambda: printed.extend(iter(lambda: run.stderr.read(1), "")), daemon=True)
     reader.start()
@@ -161,5 +175,6 @@ def test_sigterm_while_training_leaves_the_output_as_it_was(tmp_path):
     assert code == 128 + signal.SIGTERM
     assert "".join(printed).splitlines()[-1] == (
         f"toolkit train: stopped by SIGTERM; {out} is as it was (the checkpoint is written only when training "
-        "ends); run the same command again to train from the start")
+        "ends); run the same command again to train from the start"
+    )
     assert list(tmp_path.iterdir()) == []  # no checkpoint, no half-written folder beside it

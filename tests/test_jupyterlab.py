@@ -15,16 +15,19 @@ from toolkit.viewer import browser as viewer_browser
 pytestmark = [
     pytest.mark.browser,
     pytest.mark.slow,
-    pytest.mark.skipif(viewer_browser.find_chromium() is None,
-                       reason="no Chromium installed (run `make browser` or `apt-get install chromium`)"),
+    pytest.mark.skipif(
+        viewer_browser.find_chromium() is None,
+        reason="no Chromium installed (run `make browser` or `apt-get install chromium`)",
+    ),
 ]
 
 NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks" / "05_3d_scenes.ipynb"
 
 
 def test_notebook_05_runs_in_jupyterlab_with_widgets_figures_and_the_viewer(notebook_cache, tmp_path):
-    shown = lab_browser.run_all(NOTEBOOK, env={"TOOLKIT_QUICK": "1", "TOOLKIT_CACHE": str(notebook_cache)},
-                                screenshot=tmp_path / "lab.png")
+    shown = lab_browser.run_all(
+        NOTEBOOK, env={"TOOLKIT_QUICK": "1", "TOOLKIT_CACHE": str(notebook_cache)}, screenshot=tmp_path / "lab.png"
+    )
     assert shown.cells_run == shown.code_cells > 0, shown
     assert shown.tracebacks == 0, shown
     assert shown.widget_errors == 0, shown

@@ -87,14 +87,20 @@ def test_load_checker(models, workspace, tmp_path, rng):
     assert np.array_equal(loaded.probability(Q), direct.probability(Q))
 
 
-@pytest.mark.parametrize("change, message", [
-    ({"format": 0}, "has format 0, this toolkit reads format 1"),
-    ({"format": None}, "has format None, this toolkit reads format 1"),
-    ({"format": "absent"}, "has format none recorded, this toolkit reads format 1"),
-    ({"preset": "without auxiliary"}, r"preset does not match this toolkit's Preset \(missing \['auxiliary'\], unknown \[\]\)"),
-    ({"preset": "with colour"}, r"\(missing \[\], unknown \['colour'\]\)"),
-    ({"seed": "absent"}, r"meta.json lacks \['seed'\]"),
-])
+@pytest.mark.parametrize(
+    "change, message",
+    [
+        ({"format": 0}, "has format 0, this toolkit reads format 1"),
+        ({"format": None}, "has format None, this toolkit reads format 1"),
+        ({"format": "absent"}, "has format none recorded, this toolkit reads format 1"),
+        (
+            {"preset": "without auxiliary"},
+            r"preset does not match this toolkit's Preset \(missing \['auxiliary'\], unknown \[\]\)",
+        ),
+        ({"preset": "with colour"}, r"\(missing \[\], unknown \['colour'\]\)"),
+        ({"seed": "absent"}, r"meta.json lacks \['seed'\]"),
+    ],
+)
 def test_a_checkpoint_of_another_format_is_refused_by_name(models, workspace, tmp_path, change, message):
     checkpoints.save_checkpoint(models, tmp_path)
     meta = json.loads((tmp_path / "meta.json").read_text())
@@ -123,8 +129,9 @@ def test_weights_with_other_entries_are_refused(models, workspace, tmp_path):
 
 
 @pytest.mark.parametrize("preset, screened, auxiliary", [("paper", False, "exact"), ("strong", True, "confirmed")])
-def test_planning_with_a_learned_checker_follows_its_presets_planner_options(models, workspace, preset, screened,
-                                                                              auxiliary):
+def test_planning_with_a_learned_checker_follows_its_presets_planner_options(
+    models, workspace, preset, screened, auxiliary
+):
     checker = LearnedChecker(workspace, dataclasses.replace(models, preset=presets.get(preset)))
     options = queries.default_options(SCENARIO, checker)
     assert options.screen_edges is screened and options.auxiliary == auxiliary

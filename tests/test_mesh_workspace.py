@@ -49,10 +49,13 @@ def trimesh_voxels(mesh, shape):
 def cube_robot(side=0.9):
     """A free-flying cube, small enough to sit inside one cell."""
     half = side / 2
-    return BoxRobot("cube", "free", [Link((half, half, half))], [], position_bounds=(np.full(3, half), np.full(3, 11 - half)))
+    return BoxRobot(
+        "cube", "free", [Link((half, half, half))], [], position_bounds=(np.full(3, half), np.full(3, 11 - half))
+    )
 
 
 # -- the mesh checker against the box checker --------------------------------------------
+
 
 @pytest.mark.parametrize("name", ["3dc7", "3dc9", "3do"])
 @pytest.mark.parametrize("seed", [0, 1])
@@ -74,10 +77,15 @@ def test_mesh_checker_agrees_on_configurations_grazing_the_boxes():
     Q = scenario.robot.sample(rng, 600)
     lo, hi = ws.boxes[rng.integers(len(ws.boxes), size=600)].transpose(1, 0, 2)  # (600, 3) each
     axis = rng.integers(3, size=600)
-    face = np.where(rng.random(600) < 0.5, lo[np.arange(600), axis] - 0.05, hi[np.arange(600), axis] + 0.05)  # small link's half side
+    face = np.where(
+        rng.random(600) < 0.5, lo[np.arange(600), axis] - 0.05, hi[np.arange(600), axis] + 0.05
+    )  # small link's half side
     Q[:, :3] = (lo + hi) / 2
     Q[np.arange(600), axis] = face + rng.choice([-1e-6, 1e-6], size=600)
-    boxes, mesh = ExactChecker(ws, scenario.robot).are_valid(Q), exact_checker(mesh_twin(ws), scenario.robot).are_valid(Q)
+    boxes, mesh = (
+        ExactChecker(ws, scenario.robot).are_valid(Q),
+        exact_checker(mesh_twin(ws), scenario.robot).are_valid(Q),
+    )
     np.testing.assert_array_equal(mesh, boxes)
 
 
@@ -101,6 +109,7 @@ def test_exact_checker_picks_the_mesh_checker_and_the_box_checkers_refuse_a_mesh
 
 # -- the voxel grid ---------------------------------------------------------------------
 
+
 @pytest.mark.parametrize("family", ["3dc", "3do"])
 def test_grid_of_a_mesh_of_blocks_is_the_block_workspaces_grid(family):
     for seed in range(3):
@@ -116,8 +125,12 @@ def test_grid_and_checker_agree_where_a_cell_is_wholly_inside_or_outside(seed):
     ws = from_mesh(meshes.mesh_of_boxes(boxes), **REGION)
     grid = ws.occupancy().reshape(-1)
     cells = np.stack(np.meshgrid(*[np.arange(11.0)] * 3, indexing="ij"), axis=-1).reshape(-1, 3)  # (C, 3) min corners
-    wholly_inside = np.any(np.all((cells[:, None] >= boxes[:, 0]) & (cells[:, None] + 1 <= boxes[:, 1]), axis=-1), axis=1)
-    wholly_outside = ~np.any(np.all((cells[:, None] <= boxes[:, 1]) & (cells[:, None] + 1 >= boxes[:, 0]), axis=-1), axis=1)
+    wholly_inside = np.any(
+        np.all((cells[:, None] >= boxes[:, 0]) & (cells[:, None] + 1 <= boxes[:, 1]), axis=-1), axis=1
+    )
+    wholly_outside = ~np.any(
+        np.all((cells[:, None] <= boxes[:, 1]) & (cells[:, None] + 1 >= boxes[:, 0]), axis=-1), axis=1
+    )
     assert wholly_inside.sum() > 5 and wholly_outside.sum() > 500
     assert np.all(grid[wholly_inside] == 1.0) and np.all(grid[wholly_outside] == -1.0)
     Q = np.concatenate([cells + 0.5, np.zeros((len(cells), 3))], axis=1)  # the cube at each cell's centre
@@ -149,15 +162,21 @@ def test_trimeshs_voxelizer_grows_blocks_whose_faces_lie_on_cell_boundaries():
 
 # -- inside tests -----------------------------------------------------------------------
 
+
 def test_winding_numbers_of_a_closed_box_and_of_overlapping_boxes():
     box = meshes.mesh_of_boxes(np.array([[[0.0, 0.0, 0.0], [2.0, 2.0, 2.0]]]))
     points = np.array([[1.0, 1.0, 1.0], [3.0, 1.0, 1.0], [1.0, 1.0, -0.5]])
     np.testing.assert_allclose(meshes.winding_numbers(points, box.triangles), [1.0, 0.0, 0.0], atol=1e-9)
-    both = meshes.Solid(*(lambda m: (m.vertices, m.faces))(meshes.mesh_of_boxes(np.array(
-        [[[0.0, 0.0, 0.0], [2.0, 2.0, 2.0]], [[1.0, 1.0, 1.0], [3.0, 3.0, 3.0]]]))))
+    both = meshes.Solid(
+        *(lambda m: (m.vertices, m.faces))(
+            meshes.mesh_of_boxes(np.array([[[0.0, 0.0, 0.0], [2.0, 2.0, 2.0]], [[1.0, 1.0, 1.0], [3.0, 3.0, 3.0]]]))
+        )
+    )
     assert len(both.parts) == 2
-    np.testing.assert_array_equal(both.inside(np.array([[1.5, 1.5, 1.5], [0.5, 0.5, 0.5], [2.5, 2.5, 2.5], [0.5, 2.5, 0.5]])),
-                                  [True, True, True, False])
+    np.testing.assert_array_equal(
+        both.inside(np.array([[1.5, 1.5, 1.5], [0.5, 0.5, 0.5], [2.5, 2.5, 2.5], [0.5, 2.5, 0.5]])),
+        [True, True, True, False],
+    )
 
 
 def test_contains_points_follows_the_mesh_not_its_covering_boxes():
@@ -169,6 +188,7 @@ def test_contains_points_follows_the_mesh_not_its_covering_boxes():
 
 # -- workspaces, files, bad input ------------------------------------------------------
 
+
 def test_from_mesh_reads_a_file_and_round_trips_through_files(tmp_path):
     ws = from_mesh(meshes.room(), **REGION)
     path = tmp_path / "room.stl"
@@ -177,7 +197,11 @@ def test_from_mesh_reads_a_file_and_round_trips_through_files(tmp_path):
     np.testing.assert_array_equal(from_file.occupancy(), ws.occupancy())
     ws.save(tmp_path / "ws.json")
     again = Workspace.load(tmp_path / "ws.json")
-    assert isinstance(again, MeshWorkspace) and again == ws and again != Workspace(ws.lower, ws.upper, ws.boxes, family=ws.family)
+    assert (
+        isinstance(again, MeshWorkspace)
+        and again == ws
+        and again != Workspace(ws.lower, ws.upper, ws.boxes, family=ws.family)
+    )
     np.testing.assert_array_equal(again.occupancy(), ws.occupancy())
 
 
@@ -207,6 +231,7 @@ def test_bad_input_is_named(tmp_path):
 
 # -- the demo room ---------------------------------------------------------------------
 
+
 def test_the_demo_room_stands_inside_the_region_and_the_committed_file_is_the_script_output():
     room = meshes.room()
     assert np.all(room.bounds[0] >= 0) and np.all(room.bounds[1] <= meshes.ROOM_REGION)
@@ -214,7 +239,9 @@ def test_the_demo_room_stands_inside_the_region_and_the_committed_file_is_the_sc
     committed = trimesh.load(ROOM, force="mesh")
     ours = np.sort(np.round(room.triangles.reshape(-1, 9), 4), axis=0)
     theirs = np.sort(np.round(committed.triangles.reshape(-1, 9), 4), axis=0)
-    np.testing.assert_array_equal(theirs, ours)  # rebuild with: python -m toolkit.geometry.meshes tutorials/data/room.stl
+    np.testing.assert_array_equal(
+        theirs, ours
+    )  # rebuild with: python -m toolkit.geometry.meshes tutorials/data/room.stl
 
 
 def test_random_rooms_are_seeded_and_inside_the_region():
@@ -243,7 +270,13 @@ def test_clearances_in_the_room_bound_fcls_distances_to_the_mesh_from_below():
     assert np.all(clearance[~valid] == 0) and np.mean(clearance[valid] > 0) > 0.5
     centers, rotations, half = scenario.robot.link_boxes(Q)
     for i in np.flatnonzero(valid)[:60]:
-        distance = min(fcl.distance(fcl.CollisionObject(fcl.Box(*(2 * half[l])), fcl.Transform(rotations[i, l], centers[i, l])),
-                                    ws.solid.object, fcl.DistanceRequest(), fcl.DistanceResult())
-                       for l in range(scenario.robot.n_links))
-        assert 0 < distance and clearance[i] <= distance + 1e-9
+        distance = min(
+            fcl.distance(
+                fcl.CollisionObject(fcl.Box(*(2 * half[l])), fcl.Transform(rotations[i, l], centers[i, l])),
+                ws.solid.object,
+                fcl.DistanceRequest(),
+                fcl.DistanceResult(),
+            )
+            for l in range(scenario.robot.n_links)
+        )
+        assert distance > 0 and clearance[i] <= distance + 1e-9

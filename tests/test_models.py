@@ -28,8 +28,12 @@ PAPER_CAE = {
     "3dc7": (1331, 1000, 800, 600, 400, 200, 100, 50),
     "3dc9": (1331, 1000, 800, 600, 400, 200, 100, 50),
 }
-PAPER_MLP = {"2ds": (14, 6, 4, 2), "3do": (58, 50, 40, 30, 20, 10, 5, 2),
-             "3dc7": (57, 50, 40, 30, 20, 10, 5, 2), "3dc9": (59, 50, 40, 30, 20, 10, 5, 2)}
+PAPER_MLP = {
+    "2ds": (14, 6, 4, 2),
+    "3do": (58, 50, 40, 30, 20, 10, 5, 2),
+    "3dc7": (57, 50, 40, 30, 20, 10, 5, 2),
+    "3dc9": (59, 50, 40, 30, 20, 10, 5, 2),
+}
 
 
 def _widths(seq: nn.Sequential) -> tuple[int, ...]:
@@ -81,7 +85,7 @@ def test_cae_loss_and_encoder_gradient_match_an_independent_reference(reduction)
         J = torch.autograd.functional.jacobian(encode, flat[0], create_graph=True)  # (3, 6), the same at every x
         squared = (cae.decoder(encode(flat)) - flat) ** 2  # (4, 6)
         error = squared.sum(dim=1).mean() if reduction == "sum" else squared.mean()
-        return error + lam * (J ** 2).sum()
+        return error + lam * (J**2).sum()
 
     expected = reference(W)
     (expected_grad,) = torch.autograd.grad(expected, W)
@@ -172,13 +176,14 @@ def test_local_encoding_of_angles_joints_and_links():
     grid = -torch.ones(1, 11, 11, 11)
     x = enc(torch.zeros(1, 2), grid, torch.zeros(1, dtype=torch.long), q)[0]
     assert x.shape == (enc.out_features,) == (2 + 27 + 3 + 6 + 1 + 2 * 6,)
-    pose = x[2 + 27:]
+    pose = x[2 + 27 :]
     assert torch.allclose(pose[:10], torch.tensor([0.0, 0.0, -0.25, 1.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0]), atol=1e-6)
     # yaw pi/2: the small link (0.1 long) points along +y from the base, the big one turns by joint 2 rad about z
     centers, axes = pose[10:16].reshape(2, 3), pose[16:].reshape(2, 3)
     big = torch.tensor([-np.sin(2.0), np.cos(2.0), 0.0], dtype=torch.float32)  # x axis of the big link
-    assert torch.allclose(centers, torch.stack([torch.tensor([0.0, 0.05, -0.25]), torch.tensor([0.0, 0.1, -0.25]) + 0.2 * big]),
-                          atol=1e-6)  # relative to the base cell's centre (5.5, 5.5, 5.5)
+    assert torch.allclose(
+        centers, torch.stack([torch.tensor([0.0, 0.05, -0.25]), torch.tensor([0.0, 0.1, -0.25]) + 0.2 * big]), atol=1e-6
+    )  # relative to the base cell's centre (5.5, 5.5, 5.5)
     assert torch.allclose(axes, torch.stack([torch.tensor([0.0, 1.0, 0.0]), big]), atol=1e-6)
 
 
@@ -207,7 +212,7 @@ def test_local_pose_is_the_same_in_numpy_and_torch_and_holds_the_link_centres(na
     np.testing.assert_array_equal(cell, cell_t.numpy())
     np.testing.assert_allclose(pose, pose_t.numpy(), atol=1e-5)
     n_links, n_pos = s.robot.n_links, position_dofs(s.robot)
-    centres = pose[-6 * n_links: -3 * n_links].reshape(n_links, 3, -1).transpose(2, 0, 1)  # (N, L, 3)
+    centres = pose[-6 * n_links : -3 * n_links].reshape(n_links, 3, -1).transpose(2, 0, 1)  # (N, L, 3)
     base_cell_centre = np.zeros((len(Q), 1, 3))
     base_cell_centre[:, 0, :n_pos] = np.floor(Q[:, :n_pos]) + 0.5  # the z of a planar base's cell centre: 0
     np.testing.assert_allclose(centres + base_cell_centre, s.robot.link_boxes(Q)[0], atol=1e-4)
@@ -242,18 +247,22 @@ def test_workspace_mlp_equals_the_full_network(kind, latent_input, rng):
     Q[:3, :3] = [[0.0, 0.0, 0.0], [11.0, 11.0, 11.0], [10.99, 0.01, 5.0]]  # cells on the grid's faces
     expected = _full_network_margins(predictor, grid, Q)  # (300,)
     assert np.ptp(expected) > 1.0  # the margins vary: a constant would not test much
-    default = predictor.for_workspace(grid)
+    default = WorkspaceMLP(predictor, grid)
     assert isinstance(default, WorkspaceMLP) and default.numpy_below == WorkspaceMLP.NUMPY_BELOW  # on the CPU
-    assert default.layers.table.shape == (predictor.mlp.hidden[0], 11 ** 3 if kind == "local" else 1)
-    variants = {"torch": WorkspaceMLP(predictor, grid, numpy_below=0),  # as on a GPU
-                "numpy": WorkspaceMLP(predictor, grid, numpy_below=len(Q) + 1),  # one pass
-                "numpy, chunks of 16": WorkspaceMLP(predictor, grid, numpy_below=len(Q) + 1, chunk=16),
-                "switching at 64, chunks of 16": WorkspaceMLP(predictor, grid, numpy_below=64, chunk=16)}
+    assert default.layers.table.shape == (predictor.mlp.hidden[0], 11**3 if kind == "local" else 1)
+    variants = {
+        "torch": WorkspaceMLP(predictor, grid, numpy_below=0),  # as on a GPU
+        "numpy": WorkspaceMLP(predictor, grid, numpy_below=len(Q) + 1),  # one pass
+        "numpy, chunks of 16": WorkspaceMLP(predictor, grid, numpy_below=len(Q) + 1, chunk=16),
+        "switching at 64, chunks of 16": WorkspaceMLP(predictor, grid, numpy_below=64, chunk=16),
+    }
     for name, workspace_mlp in variants.items():
         for n in (0, 1, 15, 16, 17, 63, 64, 65, 300):  # both sides of the chunk size and of the numpy / torch switch
             margins = workspace_mlp(Q[:n])
             assert margins.dtype == np.float32 and margins.shape == (n,), (name, n)
-            np.testing.assert_allclose(margins, expected[:n], rtol=1e-5, atol=1e-4, err_msg=f"{name}, {n} configurations")
+            np.testing.assert_allclose(
+                margins, expected[:n], rtol=1e-5, atol=1e-4, err_msg=f"{name}, {n} configurations"
+            )
 
 
 def test_workspace_mlp_switches_to_torch_at_its_default_batch_size(rng):
@@ -261,8 +270,8 @@ def test_workspace_mlp_switches_to_torch_at_its_default_batch_size(rng):
     n = WorkspaceMLP.NUMPY_BELOW
     Q = s.robot.sample(rng, n)
     expected = _full_network_margins(predictor, grid, Q)
-    workspace_mlp = predictor.for_workspace(grid)
-    np.testing.assert_allclose(workspace_mlp(Q[:n - 1]), expected[:n - 1], atol=1e-4)  # numpy, in chunks
+    workspace_mlp = WorkspaceMLP(predictor, grid)
+    np.testing.assert_allclose(workspace_mlp(Q[: n - 1]), expected[: n - 1], atol=1e-4)  # numpy, in chunks
     np.testing.assert_allclose(workspace_mlp(Q), expected, atol=1e-4)  # torch
 
 
@@ -285,7 +294,7 @@ def test_workspace_mlp_rejects_bad_input(rng):
         WorkspaceMLP(predictor, grid[0])
     with pytest.raises(ValueError, match="chunk >= 1"):
         WorkspaceMLP(predictor, grid, chunk=0)
-    workspace_mlp = predictor.for_workspace(grid)
+    workspace_mlp = WorkspaceMLP(predictor, grid)
     with pytest.raises(ValueError, match=r"Q must have shape \(N, 9\), got \(4, 7\)"):
         workspace_mlp(np.zeros((4, 7)))
     with pytest.raises(ValueError, match=r"got \(9,\)"):
@@ -300,7 +309,7 @@ def test_cell_patches_match_the_patch_of_each_configuration(rng):
     assert patches.shape == (2, 41 * 41, 5 * 5 * 6)
     padded = np.pad(grids.numpy(), ((0, 0), (2, 2), (2, 2), (0, 0)), constant_values=1.0)
     for w, (i, j) in [(0, (0, 0)), (1, (40, 17)), (1, (13, 40))]:
-        expected = padded[w, i:i + 5, j:j + 5, :].reshape(-1)  # cells (i-2..i+2, j-2..j+2), all heights
+        expected = padded[w, i : i + 5, j : j + 5, :].reshape(-1)  # cells (i-2..i+2, j-2..j+2), all heights
         assert torch.equal(patches[w, i * 41 + j], torch.as_tensor(expected))
 
 

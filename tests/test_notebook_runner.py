@@ -18,16 +18,21 @@ def write(tmp_path, *sources):
 
 def test_a_clean_notebook_shows_its_figure_and_costs_kernel_time(tmp_path, monkeypatch):
     monkeypatch.setenv("MPLBACKEND", "module://matplotlib_inline.backend_inline")
-    path = write(tmp_path, "import matplotlib.pyplot as plt\nplt.plot([0, 1])\nplt.show()",
-                 "sum(i * i for i in range(3_000_000))")
+    path = write(
+        tmp_path,
+        "import matplotlib.pyplot as plt\nplt.plot([0, 1])\nplt.show()",
+        "sum(i * i for i in range(3_000_000))",
+    )
     run = notebook_runner.run_notebook(path, timeout=120)
     assert run.problem() is None and run.figures == 1
     assert run.kernel_cpu_s > 0.1 and run.wall_s >= run.kernel_cpu_s / 4
 
 
 def test_an_error_inside_interact_is_reported(tmp_path):
-    path = write(tmp_path, "from ipywidgets import interact\n"
-                           "@interact(n=(0, 3))\ndef show(n=1):\n    raise ValueError(f'bad n={n}')")
+    path = write(
+        tmp_path,
+        "from ipywidgets import interact\n@interact(n=(0, 3))\ndef show(n=1):\n    raise ValueError(f'bad n={n}')",
+    )
     run = notebook_runner.run_notebook(path, timeout=120)
     assert run.problem() == "ValueError: bad n=1"
 

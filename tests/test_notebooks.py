@@ -15,8 +15,11 @@ from toolkit.teaching.notebook_runner import run_notebook
 
 ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))  # 01_... to 05_...
-COMMITTED = NOTEBOOKS + sorted((ROOT / "tutorials").glob("*.ipynb")) + sorted(
-    (ROOT / "tutorials" / "assignments").glob("*/*.ipynb"))  # chapters, tutorials, assignment masters
+COMMITTED = (
+    NOTEBOOKS
+    + sorted((ROOT / "tutorials").glob("*.ipynb"))
+    + sorted((ROOT / "tutorials" / "assignments").glob("*/*.ipynb"))
+)  # chapters, tutorials, assignment masters
 
 
 def test_the_five_notebooks_exist():
@@ -42,10 +45,17 @@ def test_runs_in_quick_mode(path, quick_notebooks):
 
 
 def test_every_mention_of_a_notebook_names_one_that_exists():
-    documents = [ROOT / "README.md"] + [p for folder in ("docs", "notebooks", "tutorials", "toolkit", "tests")
-                                        for p in (ROOT / folder).rglob("*") if p.suffix in (".md", ".ipynb", ".py")
-                                        and "dist" not in p.relative_to(ROOT).parts]
+    documents = [ROOT / "README.md"] + [
+        p
+        for folder in ("docs", "notebooks", "tutorials", "toolkit", "tests")
+        for p in (ROOT / folder).rglob("*")
+        if p.suffix in (".md", ".ipynb", ".py") and "dist" not in p.relative_to(ROOT).parts
+    ]
     names = {p.name for p in NOTEBOOKS}
-    wrong = {(str(doc.relative_to(ROOT)), name) for doc in documents
-             for name in re.findall(r"\b\d\d_[a-z0-9_]+\.ipynb", doc.read_text(errors="ignore")) if name not in names}
+    wrong = {
+        (str(doc.relative_to(ROOT)), name)
+        for doc in documents
+        for name in re.findall(r"\b\d\d_[a-z0-9_]+\.ipynb", doc.read_text(errors="ignore"))
+        if name not in names
+    }
     assert not wrong, f"mentions of notebooks that do not exist: {sorted(wrong)}"

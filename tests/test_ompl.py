@@ -81,8 +81,14 @@ def test_ours_and_ompls_prm_solve_every_solvable_2ds_query():
         label_of = free_components(q.workspace, robot)
         solvable = label_of(q.start) == label_of(q.goal) != 0
         exact = exact_checker(q.workspace, robot)
-        ours = plan(exact, q.start, q.goal, sampler="BS", options=PRMOptions(n_samples=200, max_rounds=40),
-                    rng=np.random.default_rng(i))
+        ours = plan(
+            exact,
+            q.start,
+            q.goal,
+            sampler="BS",
+            options=PRMOptions(n_samples=200, max_rounds=40),
+            rng=np.random.default_rng(i),
+        )
         resolution = ours.stats["resolution"] / 10
         assert ours.success == solvable, f"query {i}: ours {ours.success}, solvable {solvable}"
         if not solvable:
@@ -203,8 +209,9 @@ def test_our_samplers_feed_ompls_prm():
         if sampler.sampleNear(state, near, 2.0):
             assert robot.motion_bound(q.start, toolkit_ompl.to_array(state, robot)) <= 2.0
             assert exact.is_valid(toolkit_ompl.to_array(state, robot))
-    result = toolkit_ompl.solve(exact, q.start, q.goal, planner="PRM", sampler="OB", rng=np.random.default_rng(0),
-                                seconds=10)
+    result = toolkit_ompl.solve(
+        exact, q.start, q.goal, planner="PRM", sampler="OB", rng=np.random.default_rng(0), seconds=10
+    )
     assert result.success and path_is_valid(exact, result.path, robot.half_extents.min())
 
 

@@ -67,8 +67,10 @@ def test_reconstructions_refuse_mismatched_inputs(grids_and_decoded):
 
 
 def test_accuracy_vs_all_free_has_one_point_per_workspace_and_the_diagonal():
-    groups = {"seen": (np.array([0.88, 0.9, 0.85]), np.array([1.0, 0.99, 1.0])),
-              "unseen": (np.array([0.87, 0.91]), np.array([0.86, 0.9]))}
+    groups = {
+        "seen": (np.array([0.88, 0.9, 0.85]), np.array([1.0, 0.99, 1.0])),
+        "unseen": (np.array([0.87, 0.91]), np.array([0.86, 0.9])),
+    }
     fig = plots.accuracy_vs_all_free(groups)
     ax = fig.axes[0]
     assert len(ax.collections) == 2
@@ -87,8 +89,11 @@ def test_contraction_shows_each_models_norms_and_mean_responses():
     fig = plots.contraction(norms, flips, shift, change)
     ax_j, ax_z, ax_x = fig.axes
     assert [t.get_text().replace("\n", " ") for t in ax_j.get_xticklabels()] == list(norms)
-    medians = [line.get_ydata()[0] for line in ax_j.get_lines() if line.get_xdata().size == 2
-               and line.get_ydata()[0] == line.get_ydata()[1]]
+    medians = [
+        line.get_ydata()[0]
+        for line in ax_j.get_lines()
+        if line.get_xdata().size == 2 and line.get_ydata()[0] == line.get_ydata()[1]
+    ]
     assert 3.0 in medians and 0.6 in medians  # each box's median
     for ax, data in ((ax_z, shift), (ax_x, change)):
         lines = {line.get_label(): line for line in ax.get_lines()}
@@ -118,6 +123,8 @@ def test_latent_scatter_colors_each_workspace_by_its_value(rng):
     for collection, name in zip(ax.collections, points):
         np.testing.assert_allclose(collection.get_offsets(), points[name])
         np.testing.assert_allclose(collection.get_array(), occupied[name])
-        assert collection.get_clim() == (min(occupied["seen"].min(), occupied["unseen"].min()),
-                                         max(occupied["seen"].max(), occupied["unseen"].max()))
+        assert collection.get_clim() == (
+            min(occupied["seen"].min(), occupied["unseen"].min()),
+            max(occupied["seen"].max(), occupied["unseen"].max()),
+        )
     assert bar.get_ylabel() == "occupied share"

@@ -65,8 +65,12 @@ def test_answer_codes_and_counts_by_hand():
     predicted = np.array([True, True, False, False, True, True])
     truth = np.array([True, False, True, False, False, True])
     np.testing.assert_array_equal(pc.answer_codes(predicted, truth), [0, 3, 1, 2, 3, 0])
-    assert pc.confusion_counts(predicted, truth) == {"valid kept": 2, "valid rejected": 1, "invalid rejected": 1,
-                                                     "invalid kept (dangerous)": 2}
+    assert pc.confusion_counts(predicted, truth) == {
+        "valid kept": 2,
+        "valid rejected": 1,
+        "invalid rejected": 1,
+        "invalid kept (dangerous)": 2,
+    }
 
 
 def test_roc_points_are_fpr_and_tpr_at_each_threshold(probability, valid):
@@ -128,8 +132,12 @@ def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, pr
     predicted = probability >= threshold
     np.testing.assert_array_equal(ax_map.images[0].get_array(), pc.answer_codes(predicted, valid).T)
     heights = [bar.get_height() for bar in ax_counts.patches]
-    assert heights == [np.sum(predicted & valid), np.sum(~predicted & valid), np.sum(~predicted & ~valid),
-                       np.sum(predicted & ~valid)]
+    assert heights == [
+        np.sum(predicted & valid),
+        np.sum(~predicted & valid),
+        np.sum(~predicted & ~valid),
+        np.sum(predicted & ~valid),
+    ]
     (point,) = [line for line in ax_roc.get_lines() if line.get_marker() == "o"]
     rates = metrics.classification(predicted.ravel(), valid.ravel())
     assert point.get_xdata()[0] == pytest.approx(1 - rates["tnr"])
@@ -137,7 +145,7 @@ def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, pr
 
 
 def test_roc_curve_draws_every_curve_and_its_operating_point(probability, valid):
-    curves = {"a": (probability, valid, 0.5), "b": (probability ** 2, valid, 0.2)}
+    curves = {"a": (probability, valid, 0.5), "b": (probability**2, valid, 0.2)}
     ax = pc.roc_curve(curves).axes[0]
     lines = [line for line in ax.get_lines() if line.get_label() != "chance"]
     assert len(lines) == 4

@@ -26,8 +26,12 @@ from toolkit.plots import cspace
 @pytest.fixture
 def square_world():
     """31x31 with two blocks: [10, 12]^2 and [20, 25] x [3, 9]."""
-    return Workspace(np.zeros(2), np.array([31.0, 31.0]),
-                     np.array([[[10, 10], [12, 12]], [[20, 3], [25, 9]]], dtype=float), family="2ds")
+    return Workspace(
+        np.zeros(2),
+        np.array([31.0, 31.0]),
+        np.array([[[10, 10], [12, 12]], [[20, 3], [25, 9]]], dtype=float),
+        family="2ds",
+    )
 
 
 @pytest.fixture
@@ -58,6 +62,7 @@ def recorded_polys(monkeypatch):
 
 
 # -- workspaces and grids -------------------------------------------------------------
+
 
 def test_workspace_figure_2d_draws_one_rectangle_per_block(square_world):
     fig = cspace.workspace_figure(square_world)
@@ -105,6 +110,7 @@ def test_occupancy_figure_3d_draws_one_layer_per_z(clutter):
 
 
 # -- robots ----------------------------------------------------------------------------
+
 
 def test_robot_figure_draws_the_point_robot_square_at_q(square_world):
     robot = robots.point_robot()
@@ -161,6 +167,7 @@ def test_draw_robot_rejects_an_unknown_view_and_a_colour_count_off_by_one():
 
 # -- configuration space ---------------------------------------------------------------
 
+
 def test_slice_configs_varies_two_dof_and_fixes_the_rest():
     robot = robots.box_chain(3)
     q = np.linspace(0.1, 0.9, robot.dof)
@@ -198,8 +205,9 @@ def test_cspace_image_grows_each_block_by_the_robots_half_width(square_world):
     assert fig.axes[0].get_xlim() == (9.0, 13.0) and fig.axes[0].get_ylim() == (10.0, 12.0)
     assert "of this window" in fig.axes[0].get_title()
     with pytest.raises(ValueError, match="cspace_slice"):
-        cspace.cspace_image(ExactChecker(Workspace(np.zeros(3), np.full(3, 11.0), np.zeros((0, 2, 3))),
-                                         robots.box_chain(1)))
+        cspace.cspace_image(
+            ExactChecker(Workspace(np.zeros(3), np.full(3, 11.0), np.zeros((0, 2, 3))), robots.box_chain(1))
+        )
 
 
 def test_cspace_slice_equals_the_separating_axis_reference(clutter):

@@ -48,7 +48,7 @@ def test_cspace_image_is_dark_exactly_on_the_grown_blocks(exact, query):
     inside, near_edge = np.zeros_like(blocked), np.zeros_like(blocked)
     for lo, hi in query.workspace.boxes:  # C-obstacle of an axis-aligned square: the block grown by its half size
         lo, hi = lo - half, hi + half
-        inside |= (X >= lo[0]) & (X <= hi[0]) & (Y >= lo[1]) & (Y <= hi[1])
+        inside |= (lo[0] <= X) & (hi[0] >= X) & (lo[1] <= Y) & (hi[1] >= Y)
         near_edge |= np.isclose(X, lo[0]) | np.isclose(X, hi[0]) | np.isclose(Y, lo[1]) | np.isclose(Y, hi[1])
     assert blocked.shape == (300, 300) and 0.05 < blocked.mean() < 0.6
     np.testing.assert_array_equal(blocked[~near_edge], inside[~near_edge])
@@ -69,8 +69,9 @@ def test_samplers_one_panel_per_sampler_with_its_samples_over_the_blocks(exact, 
         np.testing.assert_array_equal(ax.collections[0].get_offsets(), Q)
         assert ax.get_title() == f"{name}: {len(Q)} sample{'' if len(Q) == 1 else 's'} of 200 attempts"
         blocks = [(p.get_xy(), p.get_width(), p.get_height()) for p in ax.patches[:-1]]  # the last: the bounds
-        assert [(tuple(lo), w, h) for lo, (w, h) in zip(query.workspace.boxes[:, 0], np.ptp(query.workspace.boxes, axis=1))] \
-            == [(tuple(xy), w, h) for xy, w, h in blocks]
+        assert [
+            (tuple(lo), w, h) for lo, (w, h) in zip(query.workspace.boxes[:, 0], np.ptp(query.workspace.boxes, axis=1))
+        ] == [(tuple(xy), w, h) for xy, w, h in blocks]
 
 
 def test_sample_sets_marks_accepted_samples_that_are_truly_in_collision(exact, rng):
@@ -90,8 +91,17 @@ def a_repair_step() -> PlanStep:
     """Five nodes in a row from start (0) to goal (1); the path 0-2-3-4-1; the repair removes node 3 and edge 1."""
     nodes = np.array([[2.0, 2.0], [12.0, 2.0], [4.0, 3.0], [6.0, 3.0], [9.0, 3.0]])
     edges = np.array([[0, 2], [2, 3], [3, 4], [1, 4], [0, 1]])
-    return PlanStep("repair", 2, nodes, np.array([True, True, True, False, False]), edges, np.zeros(0, int),
-                    np.array([0, 2, 3, 4, 1]), np.array([3]), np.array([1]))
+    return PlanStep(
+        "repair",
+        2,
+        nodes,
+        np.array([True, True, True, False, False]),
+        edges,
+        np.zeros(0, int),
+        np.array([0, 2, 3, 4, 1]),
+        np.array([3]),
+        np.array([1]),
+    )
 
 
 def test_roadmap_draws_every_edge_and_the_repair_in_red(exact):
@@ -115,8 +125,15 @@ def test_roadmap_draws_every_edge_and_the_repair_in_red(exact):
 
 def test_roadmap_of_a_real_plan_draws_as_many_edges_as_the_roadmap_has(exact, query):
     trace = []
-    result = plan(exact, query.start, query.goal, sampler="G", options=PRMOptions(n_samples=100),
-                  rng=np.random.default_rng(0), trace=trace)
+    result = plan(
+        exact,
+        query.start,
+        query.goal,
+        sampler="G",
+        options=PRMOptions(n_samples=100),
+        rng=np.random.default_rng(0),
+        trace=trace,
+    )
     ax = planning.roadmap(exact, trace[-1]).axes[0]
     kept, removed = segments(ax)
     assert len(kept) == len(result.roadmap.edges) > 0 and len(removed) == 0
@@ -131,8 +148,15 @@ def test_roadmap_steps_one_panel_per_step(exact):
 
 
 PLANNING = {  # sampler -> mode -> summary (seconds)
-    s: {m: {"sampling_s": 0.01 * (i + 1) * f, "connection_s": 0.1 * f, "query_s": 0.02 * f,
-            "total_s": (0.01 * (i + 1) + 0.12 + 0.005) * f} for m, f in (("without", 1.0), ("with", 0.5))}
+    s: {
+        m: {
+            "sampling_s": 0.01 * (i + 1) * f,
+            "connection_s": 0.1 * f,
+            "query_s": 0.02 * f,
+            "total_s": (0.01 * (i + 1) + 0.12 + 0.005) * f,
+        }
+        for m, f in (("without", 1.0), ("with", 0.5))
+    }
     for i, s in enumerate(("BS", "OB", "G", "BT"))
 }
 
@@ -151,7 +175,10 @@ def test_stage_times_one_stacked_bar_per_sampler_and_mode_with_the_given_heights
 
 
 def test_ratio_comparison_bars_are_the_ratios_on_a_log_scale():
-    sources = {"paper": {"BS": 0.5, "OB": 0.4, "G": 0.3, "BT": 0.2}, "ours": {"BS": 2.0, "OB": 1.5, "G": 1.1, "BT": 0.9}}
+    sources = {
+        "paper": {"BS": 0.5, "OB": 0.4, "G": 0.3, "BT": 0.2},
+        "ours": {"BS": 2.0, "OB": 1.5, "G": 1.1, "BT": 0.9},
+    }
     fig = planning.ratio_comparison({"2DS sampling": sources, "3DC-7 total": sources})
     assert len(fig.axes) == 2
     ax = fig.axes[0]

@@ -53,7 +53,7 @@ def test_the_robot_is_its_link_boxes_at_the_frame_colored_by_validity(crossing, 
     fig = scenes.path_frame(robot, path, index, workspace=workspace, valid=valid)
     want = VALID_COLOR if valid[index] else INVALID_COLOR
     [(Q, colors, view, drawn_in)] = drawn_robots
-    np.testing.assert_array_equal(Q, path[index:index + 1])
+    np.testing.assert_array_equal(Q, path[index : index + 1])
     assert (colors, view, drawn_in) == ([want], "3d", workspace)
     drawn = links(fig.axes[0])
     assert len(drawn) == robot.n_links
@@ -65,7 +65,9 @@ def test_the_robot_is_its_link_boxes_at_the_frame_colored_by_validity(crossing, 
 def test_without_validity_the_robot_is_neutral(crossing):
     robot, workspace, _, path, _ = crossing
     fig = scenes.path_frame(robot, path, 3, workspace=workspace)
-    assert all(np.allclose(box.get_facecolor()[0][:3], to_rgba(scenes.UNCHECKED_COLOR)[:3]) for box in links(fig.axes[0]))
+    assert all(
+        np.allclose(box.get_facecolor()[0][:3], to_rgba(scenes.UNCHECKED_COLOR)[:3]) for box in links(fig.axes[0])
+    )
     assert "exact" not in fig.get_suptitle()
 
 
@@ -82,7 +84,7 @@ def test_the_blocks_near_the_robot_are_drawn_and_the_trace_stays_in_the_window(c
     trace = np.array(line(scene, "trace").get_data_3d()).T  # (T, 3)
     bases = robot.link_boxes(path)[0][:, 0]  # (T, 3)
     inside = np.all((bases >= lo) & (bases <= hi), axis=1)
-    assert inside[index] and 0 < inside.sum()
+    assert inside[index] and inside.sum() > 0
     np.testing.assert_allclose(trace[inside], bases[inside])
     assert np.isnan(trace[~inside]).all()
 
@@ -92,15 +94,25 @@ def test_the_series_panels_show_each_dof_clearance_and_probability(crossing):
     clearance = exact.clearances(path, cap=1.0)
     probability = np.linspace(1.0, 0.0, FRAMES)
     index, threshold = 7, 0.4
-    fig = scenes.path_frame(robot, path, index, workspace=workspace, valid=valid, clearance=clearance,
-                            probability=probability, threshold=threshold)
+    fig = scenes.path_frame(
+        robot,
+        path,
+        index,
+        workspace=workspace,
+        valid=valid,
+        clearance=clearance,
+        probability=probability,
+        threshold=threshold,
+    )
     dof_ax, clearance_ax, probability_ax = fig.axes[1:]
     along = np.linspace(0.0, 1.0, FRAMES)
     dofs = [artist for artist in dof_ax.lines if artist.get_gid() == "dof"]
     assert [artist.get_label() for artist in dofs] == list(robot.dof_names)
     for k, artist in enumerate(dofs):
         np.testing.assert_allclose(artist.get_xdata(), along)
-        np.testing.assert_allclose(artist.get_ydata(), (path[:, k] - robot.lower[k]) / (robot.upper[k] - robot.lower[k]))
+        np.testing.assert_allclose(
+            artist.get_ydata(), (path[:, k] - robot.lower[k]) / (robot.upper[k] - robot.lower[k])
+        )
     np.testing.assert_allclose(line(clearance_ax, "clearance").get_ydata(), clearance)
     assert clearance[0] > 0 and clearance[-1] == 0  # room at the start, none inside the block
     np.testing.assert_allclose(line(probability_ax, "probability").get_ydata(), probability)
@@ -123,7 +135,9 @@ def test_the_dof_legend_lies_inside_the_figure_below_the_title(crossing, series)
     robot, workspace, _, path, _ = crossing
     fig = scenes.path_frame(robot, path, 0, **series)
     renderer = FigureCanvasAgg(fig).get_renderer()
-    title = next(t for t in fig.texts if t.get_text() == fig.get_suptitle()).get_window_extent(renderer)  # suptitle's Text
+    title = next(t for t in fig.texts if t.get_text() == fig.get_suptitle()).get_window_extent(
+        renderer
+    )  # suptitle's Text
     legend = fig.legends[0].get_window_extent(renderer)
     figure = fig.bbox
     assert figure.x0 <= legend.x0 and legend.x1 <= figure.x1 and figure.y0 <= legend.y0 and legend.y1 <= figure.y1

@@ -36,6 +36,11 @@ def test_samplers_in_a_passage_counts_the_samples_inside_it():
     assert len(fig.axes) == 2
     assert fig.axes[0].get_title().endswith("2 in the passage") and fig.axes[1].get_title().endswith("0 in the passage")
     assert "3 samples of 10 attempts" in fig.axes[0].get_title()
-    red = [p for p in fig.axes[0].patches if isinstance(p, Rectangle) and p.get_edgecolor()[:3] == (0.8392156862745098, 0.15294117647058825, 0.1568627450980392)]
+    red = [
+        p
+        for p in fig.axes[0].patches
+        if isinstance(p, Rectangle)
+        and p.get_edgecolor()[:3] == (0.8392156862745098, 0.15294117647058825, 0.1568627450980392)
+    ]
     assert len(red) == 1 and red[0].get_xy() == (15.0, 14.0) and (red[0].get_width(), red[0].get_height()) == (1.0, 3.0)
     assert fig.get_suptitle().startswith("2 samplers")

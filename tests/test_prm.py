@@ -59,8 +59,11 @@ def longest_hidden_overlap(ws, robot, path) -> float:
     """The 2D point robot's path against its configuration-space obstacles, continuously: the largest robot
     motion spent inside an obstacle along one segment (0 for a collision-free path)."""
     half = robot.half_extents[0]
-    return max(overlap_in_box(p0, p1, lo - half, hi + half) * float(robot.motion_bound(p0, p1))
-               for p0, p1 in zip(path[:-1], path[1:]) for lo, hi in ws.boxes)
+    return max(
+        overlap_in_box(p0, p1, lo - half, hi + half) * float(robot.motion_bound(p0, p1))
+        for p0, p1 in zip(path[:-1], path[1:])
+        for lo, hi in ws.boxes
+    )
 
 
 PAPER = dict(prm.PAPER_BASELINE)  # Algorithm 1 as the paper has it
@@ -79,8 +82,20 @@ def solve_all(scenario, queries, sampler, mode, n_samples=None):
         exact = exact_checker(q.workspace, scenario.robot)
         checker = None if flip is None else NoisyChecker(exact, flip, seed=i)
         options = PRMOptions(n_samples=n_samples or scenario.plan_samples, **fields)
-        results.append((q, plan(exact, q.start, q.goal, sampler=sampler, checker=checker, options=options,
-                                rng=np.random.default_rng(i))))
+        results.append(
+            (
+                q,
+                plan(
+                    exact,
+                    q.start,
+                    q.goal,
+                    sampler=sampler,
+                    checker=checker,
+                    options=options,
+                    rng=np.random.default_rng(i),
+                ),
+            )
+        )
     return results
 
 
@@ -142,12 +157,21 @@ def test_rounds_double_from_first_samples_up_to_n_samples():
     robot = scenarios.get("2ds").robot  # the goal walled in: every round is sampled, none solves it
     walls = [[[18, 18], [28, 19]], [[18, 27], [28, 28]], [[18, 18], [19, 28]], [[27, 18], [28, 28]]]
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array(walls, dtype=float), family="2ds")
-    for fields, attempts in [(dict(first_samples=10, n_samples=50), 10 + 20 + 40 + 50 + 50),
-                             (dict(first_samples=None, n_samples=50), 5 * 50),
-                             (dict(PAPER, first_samples=10, n_samples=50), 5 * 50)]:  # the paper's: |S| a round
+    for fields, attempts in [
+        (dict(first_samples=10, n_samples=50), 10 + 20 + 40 + 50 + 50),
+        (dict(first_samples=None, n_samples=50), 5 * 50),
+        (dict(PAPER, first_samples=10, n_samples=50), 5 * 50),
+    ]:  # the paper's: |S| a round
         trace = []
-        result = plan(exact_checker(ws, robot), np.array([5.0, 5.0]), np.array([23.0, 23.0]), sampler="BS",
-                      options=PRMOptions(max_rounds=5, **fields), rng=np.random.default_rng(0), trace=trace)
+        result = plan(
+            exact_checker(ws, robot),
+            np.array([5.0, 5.0]),
+            np.array([23.0, 23.0]),
+            sampler="BS",
+            options=PRMOptions(max_rounds=5, **fields),
+            rng=np.random.default_rng(0),
+            trace=trace,
+        )
         assert not result.success and result.stats["rounds"] == 5
         assert result.stats["node_checks"] == attempts  # BS checks each attempt once
         assert [step.round for step in trace if step.stage == "sample"] == [1, 2, 3, 4, 5]
@@ -162,8 +186,10 @@ def test_lazy_exact_solves_what_the_paper_baseline_solves_with_far_fewer_checks(
     for mode in results:
         assert_paths_valid(scenario, results[mode])  # at 10x finer resolution than the roadmap's
         assert all(r.success for _, r in results[mode])
-    lazy, paper = ([r.stats["exact_checks"] + r.stats["exact_clearances"] for _, r in results[mode]]
-                   for mode in ("exact", "exact-paper"))
+    lazy, paper = (
+        [r.stats["exact_checks"] + r.stats["exact_clearances"] for _, r in results[mode]]
+        for mode in ("exact", "exact-paper")
+    )
     assert np.median(lazy) * 10 < np.median(paper)
 
 
@@ -191,8 +217,16 @@ def test_the_papers_planner_checks_every_edge_exactly_as_it_is_added(flip):
     for i, q in enumerate(make_queries(scenario, seed=0, n_workspaces=2, per_workspace=2)):
         exact, trace = exact_checker(q.workspace, scenario.robot), []
         checker = None if flip is None else NoisyChecker(exact, flip, seed=i)
-        result = plan(exact, q.start, q.goal, sampler="BS", checker=checker, options=PRMOptions(**PAPER),
-                      rng=np.random.default_rng(i), trace=trace)
+        result = plan(
+            exact,
+            q.start,
+            q.goal,
+            sampler="BS",
+            checker=checker,
+            options=PRMOptions(**PAPER),
+            rng=np.random.default_rng(i),
+            trace=trace,
+        )
         assert result.success
         roadmap, coarse = result.roadmap, result.stats["resolution"]
         on_path = np.zeros(len(roadmap.edges), bool)
@@ -236,17 +270,26 @@ def test_the_paper_preset_plans_with_the_papers_baseline_and_the_strong_one_with
     assert paper.planner == "paper" and paper.auxiliary == "exact"  # rounds of |S|, exact edges, exact later rounds
     assert paper.n_samples == scenario.plan_samples == 400
     strong = queries_module.default_options(scenario, **presets.get("strong").planner_options())
-    assert (strong.planner, strong.first_samples, strong.lazy_screen) == (best.planner, best.first_samples,
-                                                                           best.lazy_screen)
+    assert (strong.planner, strong.first_samples, strong.lazy_screen) == (
+        best.planner,
+        best.first_samples,
+        best.lazy_screen,
+    )
     assert strong.screen_edges
 
 
-@pytest.mark.parametrize("options, sources", [
-    (dict(auxiliary="exact"), ["predicted", "exact", "exact", "exact"]),
-    (dict(auxiliary="confirmed", exact_every=2), ["predicted", "confirmed", "exact", "confirmed", "exact"]),
-    (dict(auxiliary="confirmed", exact_every=3),
-     ["predicted", "confirmed", "confirmed", "exact", "confirmed", "confirmed", "exact"]),
-    (dict(auxiliary="predicted"), ["predicted"] * 4)])
+@pytest.mark.parametrize(
+    "options, sources",
+    [
+        (dict(auxiliary="exact"), ["predicted", "exact", "exact", "exact"]),
+        (dict(auxiliary="confirmed", exact_every=2), ["predicted", "confirmed", "exact", "confirmed", "exact"]),
+        (
+            dict(auxiliary="confirmed", exact_every=3),
+            ["predicted", "confirmed", "confirmed", "exact", "confirmed", "confirmed", "exact"],
+        ),
+        (dict(auxiliary="predicted"), ["predicted"] * 4),
+    ],
+)
 @pytest.mark.parametrize("planner_name", ["lazy", "paper"])  # both planners read PRMOptions.auxiliary
 def test_rounds_after_the_first_sample_as_options_auxiliary_says(options, sources, planner_name):
     scenario = scenarios.get("2ds")
@@ -276,12 +319,21 @@ def test_same_seed_same_result():
     scenario = scenarios.get("3dc7")
     q = make_queries(scenario, seed=0, n_workspaces=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
-    runs = [plan(exact, q.start, q.goal, sampler="G", checker=NoisyChecker(exact, 0.1, 7),
-                 options=PRMOptions(n_samples=150), rng=np.random.default_rng(4)) for _ in range(2)]
+    runs = [
+        plan(
+            exact,
+            q.start,
+            q.goal,
+            sampler="G",
+            checker=NoisyChecker(exact, 0.1, 7),
+            options=PRMOptions(n_samples=150),
+            rng=np.random.default_rng(4),
+        )
+        for _ in range(2)
+    ]
     np.testing.assert_array_equal(runs[0].path, runs[1].path)
     np.testing.assert_array_equal(runs[0].roadmap.edges, runs[1].roadmap.edges)
     assert runs[0].stats["exact_checks"] == runs[1].stats["exact_checks"]
-
 
 
 def traced_2ds_queries(flip, n_queries=6):
@@ -291,8 +343,16 @@ def traced_2ds_queries(flip, n_queries=6):
     for i, q in enumerate(make_queries(scenario, seed=0, n_workspaces=n_queries // 2, per_workspace=2)):
         exact, trace = exact_checker(q.workspace, scenario.robot), []
         checker = NoisyChecker(exact, flip, seed=i) if flip else None
-        result = plan(exact, q.start, q.goal, sampler="BS", checker=checker, options=PRMOptions(n_samples=150),
-                      rng=np.random.default_rng(i), trace=trace)
+        result = plan(
+            exact,
+            q.start,
+            q.goal,
+            sampler="BS",
+            checker=checker,
+            options=PRMOptions(n_samples=150),
+            rng=np.random.default_rng(i),
+            trace=trace,
+        )
         runs.append((q, exact, result, trace))
     return runs
 
@@ -313,8 +373,19 @@ def test_tracing_changes_nothing_but_records():
     scenario = scenarios.get("2ds")
     q = make_queries(scenario, seed=0, n_workspaces=1, per_workspace=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
-    runs = [plan(exact, q.start, q.goal, sampler="OB", checker=NoisyChecker(exact, 0.2, 3),
-                 options=PRMOptions(n_samples=150), rng=np.random.default_rng(5), trace=trace) for trace in (None, [])]
+    runs = [
+        plan(
+            exact,
+            q.start,
+            q.goal,
+            sampler="OB",
+            checker=NoisyChecker(exact, 0.2, 3),
+            options=PRMOptions(n_samples=150),
+            rng=np.random.default_rng(5),
+            trace=trace,
+        )
+        for trace in (None, [])
+    ]
     np.testing.assert_array_equal(runs[0].path, runs[1].path)
     np.testing.assert_array_equal(runs[0].roadmap.edges, runs[1].roadmap.edges)
     assert runs[0].stats["exact_checks"] == runs[1].stats["exact_checks"]
@@ -342,6 +413,7 @@ def test_traced_repairs_remove_what_the_exact_checker_rejects_from_the_candidate
                     assert len(after.edges) == len(step.edges) - len(step.removed_edges)
     assert repairs > 0  # 30 % lies: some candidate paths fail verification
 
+
 def test_bad_input_gives_clear_errors():
     scenario = scenarios.get("2ds")
     q = make_queries(scenario, seed=0, n_workspaces=1, per_workspace=1)[0]
@@ -355,21 +427,25 @@ def test_bad_input_gives_clear_errors():
         plan(exact, q.start, np.array([np.nan, 1.0]), rng=np.random.default_rng(0))
     with pytest.raises(ValueError, match="unknown sampler"):
         plan(exact, q.start, q.goal, sampler="RRT", rng=np.random.default_rng(0))
-    for bad, match in [(dict(n_samples=0), "n_samples must be a positive integer"), (dict(k=2.5), "k must"),
-                       (dict(screen_spacing=0), "screen_spacing must be positive"),
-                       (dict(resolution=np.nan), "resolution must be positive"),
-                       (dict(screen_reject=1.5), "screen_reject must lie in"),
-                       (dict(screen_penalty=-1), "screen_penalty must be non-negative"),
-                       (dict(auxiliary="sometimes"), "auxiliary must be one of"),
-                       (dict(planner="rrt"), "planner must be one of"),
-                       (dict(exact_every=0), "exact_every must be a positive integer"),
-                       (dict(rebridge=-1), "rebridge must be a non-negative integer"),
-                       (dict(rebridge=1.5), "rebridge must be")]:
+    for bad, match in [
+        (dict(n_samples=0), "n_samples must be a positive integer"),
+        (dict(k=2.5), "k must"),
+        (dict(screen_spacing=0), "screen_spacing must be positive"),
+        (dict(resolution=np.nan), "resolution must be positive"),
+        (dict(screen_reject=1.5), "screen_reject must lie in"),
+        (dict(screen_penalty=-1), "screen_penalty must be non-negative"),
+        (dict(auxiliary="sometimes"), "auxiliary must be one of"),
+        (dict(planner="rrt"), "planner must be one of"),
+        (dict(exact_every=0), "exact_every must be a positive integer"),
+        (dict(rebridge=-1), "rebridge must be a non-negative integer"),
+        (dict(rebridge=1.5), "rebridge must be"),
+    ]:
         with pytest.raises(ValueError, match=f"PRMOptions.{match}"):
             PRMOptions(**bad)
 
 
 # -- local planner and roadmap ----------------------------------------------------------------
+
 
 def test_check_edges_agrees_with_checking_every_step():
     scenario = scenarios.get("3dc9")
@@ -380,8 +456,12 @@ def test_check_edges_agrees_with_checking_every_step():
     Q1 = Q0 + 0.05 * robot.difference(Q0, Q1)  # short segments, some valid, some not
     got = check_edges(exact, Q0, Q1, 0.05)
     n = np.maximum(np.ceil(robot.motion_bound(Q0, Q1) / 0.05).astype(int), 1)
-    want = [exact.are_valid(segment_points(robot, np.repeat(a[None], k - 1, 0), np.repeat(b[None], k - 1, 0),
-                                           np.arange(1, k) / k)).all() for a, b, k in zip(Q0, Q1, n)]
+    want = [
+        exact.are_valid(
+            segment_points(robot, np.repeat(a[None], k - 1, 0), np.repeat(b[None], k - 1, 0), np.arange(1, k) / k)
+        ).all()
+        for a, b, k in zip(Q0, Q1, n)
+    ]
     np.testing.assert_array_equal(got, want)
     assert 0 < got.sum() < len(got)
     fractions, suspects = invalid_fractions(exact, Q0, Q1, 0.05)
@@ -425,8 +505,12 @@ def forty_segments_and_their_points(resolution):
     rng = np.random.default_rng(1)
     Q0, Q1 = robot.sample(rng, 40), robot.sample(rng, 40)
     n = np.maximum(np.ceil(robot.motion_bound(Q0, Q1) / resolution).astype(int), 1)
-    points = np.concatenate([segment_points(robot, np.repeat(a[None], k - 1, 0), np.repeat(b[None], k - 1, 0),
-                                            np.arange(1, k) / k) for a, b, k in zip(Q0, Q1, n)])
+    points = np.concatenate(
+        [
+            segment_points(robot, np.repeat(a[None], k - 1, 0), np.repeat(b[None], k - 1, 0), np.arange(1, k) / k)
+            for a, b, k in zip(Q0, Q1, n)
+        ]
+    )
     return robot, Q0, Q1, points
 
 
@@ -448,19 +532,29 @@ def test_check_edges_visits_every_interior_point_once_coarse_to_fine(monkeypatch
 def test_screened_path_edges_are_confirmed_coarse_then_fine_each_once(monkeypatch):
     scenario = scenarios.get("2ds")
     checked = []  # (resolution, edge, passed) of every edge the planner confirms exactly
+
     def recording(check):  # certify_edges, or check_edges where certificates do not pay (2DS)
         def confirm(checker, Q0, Q1, resolution, **spacing):
             ok = check(checker, Q0, Q1, resolution, **spacing)
             checked.extend((resolution, q0.tobytes() + q1.tobytes(), bool(v)) for q0, q1, v in zip(Q0, Q1, ok))
             return ok
+
         return confirm
+
     monkeypatch.setattr(query_roadmap, "certify_edges", recording(certify_edges))
     monkeypatch.setattr(query_roadmap, "check_edges", recording(check_edges))
     repairs = 0
     for i, q in enumerate(make_queries(scenario, seed=0, n_workspaces=2, per_workspace=3)):
         exact = exact_checker(q.workspace, scenario.robot)
-        result = plan(exact, q.start, q.goal, sampler="BS", checker=NoisyChecker(exact, 0.15, seed=i),
-                      options=PRMOptions(screen_edges=True), rng=np.random.default_rng(i))
+        result = plan(
+            exact,
+            q.start,
+            q.goal,
+            sampler="BS",
+            checker=NoisyChecker(exact, 0.15, seed=i),
+            options=PRMOptions(screen_edges=True),
+            rng=np.random.default_rng(i),
+        )
         assert result.success
         roadmap, coarse = result.roadmap, result.stats["resolution"]
         steps = roadmap.edge_index(roadmap.shortest_path(0, 1))
@@ -479,17 +573,29 @@ def test_screened_path_edges_are_confirmed_coarse_then_fine_each_once(monkeypatc
 def test_screened_edges_are_refuted_where_screening_saw_them_fail_and_only_when_invalid(monkeypatch):
     scenario = scenarios.get("3dc7")
     looked = []  # (edge, refuted, invalid at the roadmap's resolution) of every suspect point checked exactly
+
     def recording(checker, Q0, Q1, suspect, resolution):
         refuted = refute_at(checker, Q0, Q1, suspect, resolution)
         invalid = ~check_edges(checker, Q0, Q1, resolution)
-        looked.extend((q0.tobytes() + q1.tobytes(), r, v) for q0, q1, s, r, v in zip(Q0, Q1, suspect, refuted, invalid)
-                      if np.isfinite(s))
+        looked.extend(
+            (q0.tobytes() + q1.tobytes(), r, v)
+            for q0, q1, s, r, v in zip(Q0, Q1, suspect, refuted, invalid)
+            if np.isfinite(s)
+        )
         return refuted
+
     monkeypatch.setattr(query_roadmap, "refute_at", recording)
     for i, q in enumerate(make_queries(scenario, seed=0, n_workspaces=4)):
         exact = exact_checker(q.workspace, scenario.robot)
-        result = plan(exact, q.start, q.goal, sampler="BT", checker=NoisyChecker(exact, 0.1, seed=i),
-                      options=PRMOptions(n_samples=scenario.plan_samples), rng=np.random.default_rng(i))
+        result = plan(
+            exact,
+            q.start,
+            q.goal,
+            sampler="BT",
+            checker=NoisyChecker(exact, 0.1, seed=i),
+            options=PRMOptions(n_samples=scenario.plan_samples),
+            rng=np.random.default_rng(i),
+        )
         assert result.success
     refuted = [r for _, r, _ in looked]
     assert sum(refuted) > 0  # screened edges failed where screening said, and cost one exact check each
@@ -622,11 +728,13 @@ def test_the_planner_decides_no_pair_twice(monkeypatch):
     scenario = scenarios.get("3dc9")
     decided = []
     original = LazyPRM.decide
+
     def recording(self, query, pairs):
         Q = query.roadmap.nodes
         decided.append({Q[i].tobytes() + Q[j].tobytes() for i, j in pairs})
         assert len(decided[-1]) == len(pairs)
         original(self, query, pairs)
+
     monkeypatch.setattr(LazyPRM, "decide", recording)
     rounds = []
     for rebridge in (0, 3):
@@ -634,9 +742,15 @@ def test_the_planner_decides_no_pair_twice(monkeypatch):
         for i, q in enumerate(make_queries(scenario, seed=0, n_workspaces=6)):
             decided.clear()
             exact = exact_checker(q.workspace, scenario.robot)
-            result = plan(exact, q.start, q.goal, sampler="BT", checker=NoisyChecker(exact, 0.1, seed=i),
-                          options=PRMOptions(n_samples=scenario.plan_samples, rebridge=rebridge, first_samples=None),
-                          rng=np.random.default_rng(i))
+            result = plan(
+                exact,
+                q.start,
+                q.goal,
+                sampler="BT",
+                checker=NoisyChecker(exact, 0.1, seed=i),
+                options=PRMOptions(n_samples=scenario.plan_samples, rebridge=rebridge, first_samples=None),
+                rng=np.random.default_rng(i),
+            )
             assert result.success
             assert sum(map(len, decided)) == len(set().union(*decided))
             stats.append(result.stats)
@@ -646,6 +760,7 @@ def test_the_planner_decides_no_pair_twice(monkeypatch):
 
 
 # -- queries and the command ------------------------------------------------------------------
+
 
 @pytest.mark.parametrize("name, count", [("2ds", 100), ("3dc7", 100)])
 def test_paper_query_sets_are_valid_and_reproducible(name, count):
@@ -702,9 +817,11 @@ def test_run_interleaved_takes_turns_and_answers_as_separate_runs(monkeypatch):
 
     separate = {"without": run_queries(scenario, queries, "OB"), "with": run_queries(scenario, queries, "OB", factory)}
     order, solve = [], queries_module.solve_query
+
     def recording(scenario, query, sampler, checker, options, seed):
         order.append("with" if checker is not None else "without")
         return solve(scenario, query, sampler, checker, options, seed)
+
     monkeypatch.setattr(queries_module, "solve_query", recording)
     runs = queries_module.run_interleaved(scenario, queries, "OB", {"without": None, "with": factory})
     assert order == ["without", "with", "with", "without"] * 2  # who goes first rotates

@@ -95,38 +95,56 @@ def test_an_interrupted_stage_leaves_no_file_a_later_run_trusts(tmp_path):
 
 def test_table_2_shows_both_unseen_tests_beside_always_valid():
     scores = {"acc": 0.8, "tpr": 0.9, "tnr": 0.7}
-    run = {"scenario": "2ds", "threshold": 0.5,
-           "mlp": {"seen": scores, "unseen": dict(scores, always_valid=0.5),
-                   "unseen_uniform": {"acc": 0.86, "tpr": 0.95, "tnr": 0.4, "always_valid": 0.84}}}
+    run = {
+        "scenario": "2ds",
+        "threshold": 0.5,
+        "mlp": {
+            "seen": scores,
+            "unseen": dict(scores, always_valid=0.5),
+            "unseen_uniform": {"acc": 0.86, "tpr": 0.95, "tnr": 0.4, "always_valid": 0.84},
+        },
+    }
     table2 = tables.paper_tables([_with_planning(run)])
     row = next(line for line in table2 if line.startswith("| 2ds | **80%** / 92%"))
-    assert row == "| 2ds | **80%** / 92% | **90%** / 96% | **70%** / 88% | **86%** / 88% | **95%** / 90% | **40%** / 85% | 84% | **80%** | **90%** | **70%** | 50% |"
+    assert (
+        row
+        == "| 2ds | **80%** / 92% | **90%** / 96% | **70%** / 88% | **86%** / 88% | **95%** / 90% | **40%** / 85% | 84% | **80%** | **90%** | **70%** | 50% |"
+    )
 
 
 def test_table_1_says_when_the_cae_was_not_trained():
     scores = {"acc": 1, "tpr": 1, "tnr": 1, "always_valid": 0.5}
-    run = _with_planning({"scenario": "2ds", "threshold": 0.5,
-                          "mlp": {"seen": scores, "unseen": scores, "unseen_uniform": scores}})
+    run = _with_planning(
+        {"scenario": "2ds", "threshold": 0.5, "mlp": {"seen": scores, "unseen": scores, "unseen_uniform": scores}}
+    )
     lines = tables.paper_tables([dict(run, cae={"trained": False})])  # a checkpoint from toolkit train, no --cae
     assert "| 2ds | not trained | not trained | n/a |" in lines
 
 
 def _with_planning(run: dict) -> dict:
     """A results dict with the keys paper_tables needs besides Table 2's."""
-    summary = {"success_rate": 1.0, "path_valid_rate": 1.0,
-               **{f"{key}{stat}": 1.0 for key in ("sampling_s", "total_s") for stat in ("", "_std", "_median")}}
-    return dict(run, cae={"seen_acc": 1.0, "unseen_acc": 0.9, "seen_all_free": 0.8, "unseen_all_free": 0.8},
-                planning={s: {m: summary for m in tables.MODES} for s in paper_numbers.SAMPLERS},
-                improvement={k: {s: 0.0 for s in paper_numbers.SAMPLERS} for k in ("sampling", "total")})
+    summary = {
+        "success_rate": 1.0,
+        "path_valid_rate": 1.0,
+        **{f"{key}{stat}": 1.0 for key in ("sampling_s", "total_s") for stat in ("", "_std", "_median")},
+    }
+    return dict(
+        run,
+        cae={"seen_acc": 1.0, "unseen_acc": 0.9, "seen_all_free": 0.8, "unseen_all_free": 0.8},
+        planning={s: dict.fromkeys(tables.MODES, summary) for s in paper_numbers.SAMPLERS},
+        improvement={k: dict.fromkeys(paper_numbers.SAMPLERS, 0.0) for k in ("sampling", "total")},
+    )
 
 
 def test_improvement_is_the_papers_table_3_measure():
     planning = {s: {"without": {"total_s": 2.0}, "with": {"total_s": 1.5}} for s in paper_numbers.SAMPLERS}
-    assert experiments.improvement(planning, "total_s") == {s: 0.25 for s in paper_numbers.SAMPLERS}
+    assert experiments.improvement(planning, "total_s") == dict.fromkeys(paper_numbers.SAMPLERS, 0.25)
 
 
 @pytest.mark.parametrize("preset, screened", [("paper", False), ("strong", True)])
-def test_planning_with_prediction_follows_the_presets_edge_rule(preset, screened, monkeypatch, tmp_path, checkpoint_2ds):
+def test_planning_with_prediction_follows_the_presets_edge_rule(
+    preset, screened, monkeypatch, tmp_path, checkpoint_2ds
+):
     """``paper``: Algorithm 1 as published (edges checked exactly, later rounds exact); ``strong``: learned edge
     screening, later rounds confirmed predictions and exact in turn."""
     calls = []
@@ -151,7 +169,11 @@ def test_planning_with_prediction_follows_the_presets_edge_rule(preset, screened
 def test_stage_times_add_up_the_planned_samplers_stages_only():
     seconds = {"data": 1.0, "models": 2.0, "planning_MA": 50.0}  # a sampler this run did not plan
     seconds.update({f"planning_{s}": 3.0 for s in paper_numbers.SAMPLERS})
-    run = {"scenario": "2ds", "stage_seconds": seconds, "planning": {s: {} for s in paper_numbers.SAMPLERS},
-           "throughput": {"exact_cfg_per_s": 2.0, "learned_cfg_per_s": 1.0, "ratio": 0.5}}
+    run = {
+        "scenario": "2ds",
+        "stage_seconds": seconds,
+        "planning": {s: {} for s in paper_numbers.SAMPLERS},
+        "throughput": {"exact_cfg_per_s": 2.0, "learned_cfg_per_s": 1.0, "ratio": 0.5},
+    }
     row = tables.run_costs([run])[-1]
     assert row.endswith("| 1 | 2 | 12 |")

@@ -36,7 +36,7 @@ def reference_corners(robot, q):
         frames.append(frame)
     corners = []
     for frame, link in zip(frames, robot.links):
-        local = np.zeros((2 ** robot.dim, 4))
+        local = np.zeros((2**robot.dim, 4))
         local[:, :3] = link.offset
         local[:, : robot.dim] += corner_signs(robot.dim) * np.array(link.half_extents[: robot.dim])
         local[:, 3] = 1.0
@@ -59,6 +59,7 @@ def config(robot, **values):
 
 
 # -- forward kinematics ---------------------------------------------------------------
+
 
 @pytest.mark.parametrize("name", list(ROBOTS))
 def test_link_boxes_match_homogeneous_matrices(name, rng):
@@ -102,12 +103,15 @@ def test_chain9_hand_worked_configurations():
     np.testing.assert_allclose(rotations[1, 3], [[0, -1, 0], [1, 0, 0], [0, 0, 1]], atol=1e-12)
 
 
-@pytest.mark.parametrize("angles, small, big", [
-    ({"alpha": np.pi / 2}, [1, 2.05, 3], [1, 2.3, 3]),  # yaw: the chain points along +y
-    ({"beta": np.pi / 2}, [1, 2, 2.95], [1, 2, 2.7]),  # pitch about y: +x turns to -z
-    ({"gamma": 1.0}, [1.05, 2, 3], [1.3, 2, 3]),  # roll about the chain's own axis
-    ({"alpha": np.pi / 2, "beta": np.pi / 2}, [1, 2, 2.95], [1, 2, 2.7]),  # Z then the turned Y
-])
+@pytest.mark.parametrize(
+    "angles, small, big",
+    [
+        ({"alpha": np.pi / 2}, [1, 2.05, 3], [1, 2.3, 3]),  # yaw: the chain points along +y
+        ({"beta": np.pi / 2}, [1, 2, 2.95], [1, 2, 2.7]),  # pitch about y: +x turns to -z
+        ({"gamma": 1.0}, [1.05, 2, 3], [1.3, 2, 3]),  # roll about the chain's own axis
+        ({"alpha": np.pi / 2, "beta": np.pi / 2}, [1, 2, 2.95], [1, 2, 2.7]),  # Z then the turned Y
+    ],
+)
 def test_chain7_base_angles(angles, small, big):
     robot = ROBOTS["chain7"]
     centers, _, _ = robot.link_boxes(config(robot, x=1, y=2, z=3, **angles))
@@ -146,6 +150,7 @@ def test_link_aabbs_are_the_tight_bounds_of_the_corners(name, rng):
 
 
 # -- configuration space ------------------------------------------------------------------
+
 
 def test_bounds_and_wrapping_dofs():
     pi = np.pi
@@ -264,14 +269,18 @@ def test_motion_bound_is_exact_for_a_translation():
 
 # -- bad input ----------------------------------------------------------------------------------
 
-@pytest.mark.parametrize("Q, message", [
-    (np.zeros((3, 8)), r"Q must have shape \(N, 9\) or \(9,\) for robot 'chain9', got \(3, 8\)"),
-    (np.zeros(10), r"got \(10,\)"),
-    (np.zeros((2, 3, 9)), r"got \(2, 3, 9\)"),
-    (np.zeros(()), r"got \(\)"),
-    (np.full((2, 9), np.nan), "Q contains NaN or infinite values"),
-    (np.array([[0.0] * 8 + [np.inf]]), "Q contains NaN or infinite values"),
-])
+
+@pytest.mark.parametrize(
+    "Q, message",
+    [
+        (np.zeros((3, 8)), r"Q must have shape \(N, 9\) or \(9,\) for robot 'chain9', got \(3, 8\)"),
+        (np.zeros(10), r"got \(10,\)"),
+        (np.zeros((2, 3, 9)), r"got \(2, 3, 9\)"),
+        (np.zeros(()), r"got \(\)"),
+        (np.full((2, 9), np.nan), "Q contains NaN or infinite values"),
+        (np.array([[0.0] * 8 + [np.inf]]), "Q contains NaN or infinite values"),
+    ],
+)
 def test_bad_configurations_are_named(Q, message):
     robot = ROBOTS["chain9"]
     for call in (robot.link_boxes, robot.link_aabbs, robot.link_frames, robot.check_configs):

@@ -60,8 +60,9 @@ def test_obstacle_based_bisection_brings_samples_closer():
     tight = make_sampler("OB", checker, bisections=6).sample(400, np.random.default_rng(0))
     rng = np.random.default_rng(1)
     step = 0.02
-    assert (_perturbed_invalid_fraction(robot, checker, tight, step, rng)
-            > 2 * _perturbed_invalid_fraction(robot, checker, coarse, step, rng))
+    assert _perturbed_invalid_fraction(robot, checker, tight, step, rng) > 2 * _perturbed_invalid_fraction(
+        robot, checker, coarse, step, rng
+    )
 
 
 def _pairs(sampler, n, seed):
@@ -79,7 +80,7 @@ def test_gaussian_keeps_the_valid_one_of_a_mixed_pair(scenario):
     Q1, Q2 = _pairs(sampler, 400, 5)
     v1, v2 = sampler.valid(Q1), sampler.valid(Q2)
     for q in Q:
-        i = np.flatnonzero(np.all(Q1 == q, axis=1) | np.all(Q2 == q, axis=1))
+        i = np.flatnonzero(np.all(q == Q1, axis=1) | np.all(q == Q2, axis=1))
         assert len(i) == 1 and v1[i[0]] != v2[i[0]]  # its Gaussian partner is invalid
     assert len(Q) == np.sum(v1 != v2)
     # the partner lies at Gaussian distance sigma = 0.1 x the bounds' diagonal per axis

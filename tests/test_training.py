@@ -57,7 +57,12 @@ def test_splits_follow_the_preset():
 def test_quick_strong_2ds_learns(quick_2ds):
     splits, models = quick_2ds
     scores = training.evaluate(models, splits)
-    assert set(scores) == {"cae", "mlp"} and set(scores["cae"]) == {"seen_acc", "unseen_acc", "seen_all_free", "unseen_all_free"}
+    assert set(scores) == {"cae", "mlp"} and set(scores["cae"]) == {
+        "seen_acc",
+        "unseen_acc",
+        "seen_all_free",
+        "unseen_all_free",
+    }
     assert set(scores["mlp"]) == {"seen", "unseen", "unseen_uniform"}
     assert all(set(m) == {"acc", "tpr", "tnr", "always_valid"} for m in scores["mlp"].values())
     assert scores["mlp"]["unseen"]["acc"] > 0.85  # balanced test set: chance is 0.5
@@ -73,7 +78,9 @@ def test_quick_strong_2ds_learns(quick_2ds):
 
 def test_same_seed_same_models(quick_2ds):
     splits = quick_2ds[0]
-    first, again, other = (training.train_models(SCENARIO_2DS, TINY, splits, seed, progress=False, device="cpu") for seed in (0, 0, 1))
+    first, again, other = (
+        training.train_models(SCENARIO_2DS, TINY, splits, seed, progress=False, device="cpu") for seed in (0, 0, 1)
+    )
     state, same, different = (m.predictor.state_dict() for m in (first, again, other))
     assert all(torch.equal(state[k], same[k]) for k in state)
     assert not torch.equal(state["mlp.net.0.weight"], different["mlp.net.0.weight"])
@@ -99,9 +106,16 @@ def test_strong_mlp_does_not_wait_for_a_cae_it_never_asks(quick_2ds):
     assert not torch.equal(asked.predictor.cae.encoder[0].weight, initial.cae.encoder[0].weight)
     assert "cae" not in fast.history and len(asked.history["cae"]) >= 1
     assert training.evaluate(fast, splits)["cae"] == {"trained": False}
-    assert set(training.evaluate(asked, splits)["cae"]) == {"seen_acc", "unseen_acc", "seen_all_free", "unseen_all_free"}
+    assert set(training.evaluate(asked, splits)["cae"]) == {
+        "seen_acc",
+        "unseen_acc",
+        "seen_all_free",
+        "unseen_all_free",
+    }
     paper = replace(QUICK.shrink(presets.get("paper")), cae_epochs=1, mlp_epochs=2)
-    assert "cae" in training.train_models(SCENARIO_2DS, paper, splits, 0, progress=False, device="cpu").history  # z is used
+    assert (
+        "cae" in training.train_models(SCENARIO_2DS, paper, splits, 0, progress=False, device="cpu").history
+    )  # z is used
 
 
 def test_training_split_of_another_scenario(quick_2ds):
@@ -120,15 +134,20 @@ def test_calibrated_threshold_is_best_on_its_data(quick_2ds):
 
 # -- checkpoints -------------------------------------------------------------------
 
+
 def test_checkpoint_round_trip(quick_2ds, tmp_path):
     splits, models = quick_2ds
     checkpoints.save_checkpoint(models, tmp_path, evaluation={"x": 1})
     loaded = checkpoints.load_models(tmp_path, scenario="2ds")
     data = splits["unseen_test"]
-    assert np.array_equal(training.probabilities(loaded.predictor, data), training.probabilities(models.predictor, data))
+    assert np.array_equal(
+        training.probabilities(loaded.predictor, data), training.probabilities(models.predictor, data)
+    )
     assert loaded.threshold == models.threshold and loaded.preset == models.preset
     meta = json.loads((tmp_path / "meta.json").read_text())
-    assert meta["scenario"] == "2ds" and meta["versions"]["torch"] == torch.__version__ and meta["evaluation"] == {"x": 1}
+    assert (
+        meta["scenario"] == "2ds" and meta["versions"]["torch"] == torch.__version__ and meta["evaluation"] == {"x": 1}
+    )
 
 
 def test_checkpoint_of_another_scenario(quick_2ds, tmp_path):
@@ -155,8 +174,12 @@ def test_damaged_checkpoint(quick_2ds, tmp_path, damage):
         data = json.loads(meta.read_text())
         data["sizes"]["mlp_hidden"] = [6, 4]
         meta.write_text(json.dumps(data))
-    message = {"no_meta": "metadata missing", "bad_meta": "corrupted", "no_weights": "no weights.pt",
-               "wrong_sizes": "recorded sizes"}.get(damage, "corrupted")
+    message = {
+        "no_meta": "metadata missing",
+        "bad_meta": "corrupted",
+        "no_weights": "no weights.pt",
+        "wrong_sizes": "recorded sizes",
+    }.get(damage, "corrupted")
     with pytest.raises(ValueError, match=message):
         checkpoints.load_models(tmp_path)
 
@@ -193,15 +216,27 @@ def test_cli_train_trains_the_cae_when_asked(flags, asked, tmp_path, monkeypatch
     assert seen["cae"] is asked  # None: train_models' rule, a CAE only for an MLP that sees z
 
 
-
 @pytest.mark.parametrize("name, lr, batch", [("2ds", 1e-3, 100), ("3dc7", 1e-4, 100), ("3do", 1e-4, 10)])
 def test_strong_cae_follows_the_scenarios_caps(name, lr, batch, monkeypatch):
     """strong's CAE: AdamW 1e-3 on batches of 100 generated grids where the scenario allows (at 1e-3 the 3DC and
     3DO CAEs diverge; 3DO's steps are slow)."""
     seen = {}
-    monkeypatch.setattr(training, "fit", lambda params, optimizer, rate, epochs, *a, **k: seen.update(
-        lr=rate, batch=max(len(b) for e in epochs for b in e)))
+    monkeypatch.setattr(
+        training,
+        "fit",
+        lambda params, optimizer, rate, epochs, *a, **k: seen.update(
+            lr=rate, batch=max(len(b) for e in epochs for b in e)
+        ),
+    )
     s, stand_in = scenarios.get(name), SimpleNamespace(cae=torch.nn.Linear(1, 1))  # the 3DO CAE: 147M parameters
-    training.train_cae(stand_in, torch.zeros(2000, 1), presets.get("strong"), torch.Generator(), False,
-                       s.cae_max_steps, s.cae_max_batch, s.cae_max_lr)
+    training.train_cae(
+        stand_in,
+        torch.zeros(2000, 1),
+        presets.get("strong"),
+        torch.Generator(),
+        False,
+        s.cae_max_steps,
+        s.cae_max_batch,
+        s.cae_max_lr,
+    )
     assert seen == {"lr": lr, "batch": batch}

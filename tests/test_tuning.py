@@ -50,8 +50,10 @@ def test_quick_tuning_never_sees_the_unseen_workspaces_chooses_the_best_and_resu
     best = max(r["validation_acc"] for r in result["mlp"])
     se = np.sqrt(best * (1 - best) / result["validation_samples"])
     chosen = next(r for r in result["mlp"] if r["validation_acc"] >= best - se)  # the first within one SE
-    assert result["chosen"] == {"cae_epochs": max(result["cae"], key=lambda r: r["validation_acc"])["cae_epochs"],
-                                **{k: chosen[k] for k in tuning.MLP_GRID}}
+    assert result["chosen"] == {
+        "cae_epochs": max(result["cae"], key=lambda r: r["validation_acc"])["cae_epochs"],
+        **{k: chosen[k] for k in tuning.MLP_GRID},
+    }
     for row in result["mlp"]:
         assert 0.0 <= row["validation_acc"] <= 1.0 and row["train_seconds"] >= 0
     table = (out / "tuning.md").read_text()

@@ -15,8 +15,14 @@ from toolkit.teaching.notebook_runner import run_notebook
 
 FOLDER = Path(__file__).resolve().parents[1] / "tutorials"
 TUTORIALS = sorted(FOLDER.glob("*.ipynb"))  # assignments/ (otter masters) are tested with the grader, not here
-EXPECTED = {"getting_started", "your_own_workspace", "add_a_sampler", "add_a_robot", "train_on_your_data",
-            "plan_with_ompl"}
+EXPECTED = {
+    "getting_started",
+    "your_own_workspace",
+    "add_a_sampler",
+    "add_a_robot",
+    "train_on_your_data",
+    "plan_with_ompl",
+}
 
 
 def test_the_six_tutorials_exist_and_the_readme_lists_each_with_a_time():

@@ -104,8 +104,9 @@ def test_sliders_move_the_youbot_into_an_obstacle_and_out(make_panel):
     np.testing.assert_allclose(v.q, q)
     assert not v.valid and not v.exact.is_valid(q)
     assert np.all(link_colors(v) == draw.COLLIDING)
-    np.testing.assert_allclose(v.nodes["robot"].batched_positions, draw.robot_boxes(v.robot, q[None]).centers,
-                               atol=1e-5)
+    np.testing.assert_allclose(
+        v.nodes["robot"].batched_positions, draw.robot_boxes(v.robot, q[None]).centers, atol=1e-5
+    )
     assert "in collision" in panel.status.content
     x.value, y.value = rest[:2]
     assert v.valid and np.all(link_colors(v) == draw.VALID)
@@ -180,8 +181,9 @@ def test_a_trained_checkpoint_colors_the_robot_and_samples(make_viewer, checkpoi
     v = make_viewer("2ds", checkpoint=checkpoint_2ds)
     model = learned.load_checker(checkpoint_2ds, v.workspace)
     assert v.probability == pytest.approx(float(model.probability(v.q[None])[0]))
-    np.testing.assert_array_equal(np.asarray(v.nodes["prediction"].batched_colors)[0],
-                                  draw.probability_colors([v.probability])[0])
+    np.testing.assert_array_equal(
+        np.asarray(v.nodes["prediction"].batched_colors)[0], draw.probability_colors([v.probability])[0]
+    )
     Q = v.robot.sample(rng, 500)
     colors = v.show_samples(Q)
     np.testing.assert_array_equal(colors, draw.validity_colors(v.exact.are_valid(Q), model.are_valid(Q)))
@@ -354,7 +356,9 @@ def test_each_viewer_module_imports_only_those_before_it():
     folder = Path(viewer.__file__).parent
     assert sorted(READING_ORDER) == sorted(path.stem for path in folder.glob("*.py") if path.stem != "__init__")
     assert viewer_imports("from toolkit.viewer import drawing as draw\nimport toolkit.viewer.panel") == {
-        "drawing", "panel"}
+        "drawing",
+        "panel",
+    }
     for place, name in enumerate(READING_ORDER):
         imported = viewer_imports((folder / f"{name}.py").read_text())
         assert imported <= set(READING_ORDER[:place]), f"{name} imports {sorted(imported)}"
@@ -383,7 +387,7 @@ def embedded_messages(snippet: str) -> list[dict]:
     data = base64.b64decode(re.search(r'__VISER_EMBED_DATA__="([^"]+)"', document).group(1))
     inner = zstandard.ZstdDecompressor().decompress(data[8:], max_output_size=int.from_bytes(data[:8], "little"))
     size = int.from_bytes(inner[:8], "little")
-    return [message for _, message in msgspec.msgpack.decode(inner[8: 8 + size])["messages"]]
+    return [message for _, message in msgspec.msgpack.decode(inner[8 : 8 + size])["messages"]]
 
 
 def test_embed_is_a_static_snapshot_of_the_scene(rng):
@@ -406,8 +410,13 @@ def test_color_share_reads_pixels(tmp_path):
 
 def test_toolkit_view_serves_until_ctrl_c():
     command = [sys.executable, "-m", "toolkit", "view", "--scenario", "2ds", "--port", "0"]
-    process = subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                               preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL))
+    process = subprocess.Popen(
+        command,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        preexec_fn=lambda: signal.signal(signal.SIGINT, signal.SIG_DFL),
+    )
     try:
         lines = iter(process.stdout.readline, "")
         line = next(line for line in lines if line.startswith("toolkit view:"))

@@ -23,11 +23,11 @@ def recording(document: str) -> tuple[dict, list[bytes]]:
     data = base64.b64decode(re.search(r'__VISER_EMBED_DATA__="([^"]+)"', document).group(1))
     inner = zstandard.ZstdDecompressor().decompress(data[8:], max_output_size=int.from_bytes(data[:8], "little"))
     size = int.from_bytes(inner[:8], "little")
-    record = msgspec.msgpack.decode(inner[8: 8 + size])
+    record = msgspec.msgpack.decode(inner[8 : 8 + size])
     buffers, offset = [], 8 + size
     for length in record["binaryBufferLengths"]:
         offset += -offset % 8  # each buffer starts 8-byte aligned
-        buffers.append(inner[offset: offset + length])
+        buffers.append(inner[offset : offset + length])
         offset += length
     return record, buffers
 
@@ -59,7 +59,9 @@ def test_the_animation_holds_one_robot_pose_per_frame_along_the_path(planned):
     record, _ = recording(document)
     assert record["durationSeconds"] == pytest.approx(seconds)
     poses = robot_poses(document)
-    expected = draw.robot_boxes(v.robot, v.path_configurations(np.linspace(0, 1, frames))).centers.reshape(frames, -1, 3)
+    expected = draw.robot_boxes(v.robot, v.path_configurations(np.linspace(0, 1, frames))).centers.reshape(
+        frames, -1, 3
+    )
     assert len(poses) == frames  # the scene as the recording starts, then one move per frame
     times = np.array([time for time, _ in poses])
     np.testing.assert_allclose(times, np.linspace(0.0, seconds, frames), atol=1e-9)
@@ -80,16 +82,18 @@ def test_the_animation_page_is_self_contained(planned):
 def test_the_camera_starts_framing_the_whole_motion(planned):
     v, frames = planned, 8
     record, _ = recording(v.animation_html(frames=frames, seconds=1.0))
-    camera = {message["type"]: message for time, message in record["messages"]
-              if message["type"] in ("SetCameraLookAtMessage", "SetCameraPositionMessage")}
+    camera = {
+        message["type"]: message
+        for time, message in record["messages"]
+        if message["type"] in ("SetCameraLookAtMessage", "SetCameraPositionMessage")
+    }
     look_at, position = draw.path_camera(v.robot, v.path_configurations(np.linspace(0, 1, frames)))
     np.testing.assert_allclose(camera["SetCameraLookAtMessage"]["look_at"], look_at)
     np.testing.assert_allclose(camera["SetCameraPositionMessage"]["position"], position)
     aabbs = v.robot.link_aabbs(v.path_configurations(np.linspace(0, 1, frames)))  # (F, L, 2, 3)
     lo, hi = aabbs[:, :, 0].min(axis=(0, 1)), aabbs[:, :, 1].max(axis=(0, 1))
     np.testing.assert_allclose(look_at, (lo + hi) / 2)  # the middle of everything the robot sweeps
-    np.testing.assert_allclose(np.linalg.norm(position - look_at),
-                               np.max(hi - lo) * np.linalg.norm(draw.PATH_VIEW))
+    np.testing.assert_allclose(np.linalg.norm(position - look_at), np.max(hi - lo) * np.linalg.norm(draw.PATH_VIEW))
 
 
 def test_the_animation_leaves_the_robot_and_the_camera_where_they_were(planned):
@@ -114,8 +118,10 @@ def test_animation_iframe_embeds_the_page_escaped(planned):
 
 def test_srcdoc_iframe_quotes_the_document_and_shows_without_a_warning(recwarn):
     snippet = viewer.srcdoc_iframe('<p title="a & b">x</p>', height=120)
-    assert snippet == ('<div><iframe srcdoc="&lt;p title=&quot;a &amp; b&quot;&gt;x&lt;/p&gt;" width="100%" '
-                       'height="120" style="border:none"></iframe></div>')
+    assert snippet == (
+        '<div><iframe srcdoc="&lt;p title=&quot;a &amp; b&quot;&gt;x&lt;/p&gt;" width="100%" '
+        'height="120" style="border:none"></iframe></div>'
+    )
     HTML(snippet)  # IPython warns "Consider using IPython.display.IFrame" about markup starting with <iframe
     assert not [w for w in recwarn if "IFrame" in str(w.message)]
 

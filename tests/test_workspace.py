@@ -27,6 +27,7 @@ def slow_occupancy(ws):
 
 # -- the three families -----------------------------------------------------------
 
+
 def test_2ds_has_3_to_5_integer_blocks_inside_31x31():
     spaces = family_samples("2ds")
     assert {len(ws.boxes) for ws in spaces} == {3, 4, 5}
@@ -89,6 +90,7 @@ def test_unknown_family_is_named():
 
 # -- occupancy ------------------------------------------------------------------------
 
+
 @pytest.mark.parametrize("family, shape", [("2ds", (31, 31)), ("3do", (41, 41, 6)), ("3dc", (11, 11, 11))])
 def test_occupancy_matches_a_cell_by_cell_loop(family, shape):
     ws = generate(family, np.random.default_rng(3))
@@ -100,12 +102,14 @@ def test_occupancy_matches_a_cell_by_cell_loop(family, shape):
 
 def test_occupancy_of_a_hand_made_workspace():
     ws = Workspace(np.zeros(2), np.array([4.0, 3.0]), np.array([[[1, 0], [3, 1]], [[0, 2], [0.6, 2.6]]], float))
-    expected = np.array([  # x rows, y columns; cell centres at 0.5, 1.5, ...
-        [-1, -1, 1],  # x=0.5: the thin box covers y=2.5 only
-        [1, -1, -1],  # x=1.5: first box covers y=0.5
-        [1, -1, -1],
-        [-1, -1, -1],
-    ])
+    expected = np.array(
+        [  # x rows, y columns; cell centres at 0.5, 1.5, ...
+            [-1, -1, 1],  # x=0.5: the thin box covers y=2.5 only
+            [1, -1, -1],  # x=1.5: first box covers y=0.5
+            [1, -1, -1],
+            [-1, -1, -1],
+        ]
+    )
     np.testing.assert_array_equal(ws.occupancy(), expected)
     np.testing.assert_array_equal(ws.occupancy(), slow_occupancy(ws))
 
@@ -130,6 +134,7 @@ def test_contains_points_uses_closed_boxes():
 
 
 # -- files and equality -----------------------------------------------------------------
+
 
 @pytest.mark.parametrize("family", ["2ds", "3do", "3dc"])
 def test_save_load_round_trip(tmp_path, family):
@@ -160,19 +165,22 @@ def test_arrays_are_read_only():
 GOOD_BOX = [[[1.0, 1.0], [2.0, 2.0]]]
 
 
-@pytest.mark.parametrize("lower, upper, boxes, message", [
-    ([0, 0], [5, 5], [[[1, 1, 1], [2, 2, 2]]], r"boxes must have shape \(K, 2, 2\)"),
-    ([0, 0], [5, 5], [[1, 1], [2, 2]], r"boxes must have shape"),
-    ([0, 0], [5, 5], [[[1, 1], [2, 2], [3, 3]]], r"boxes must have shape"),
-    ([0, 0], [5, 5], [[[1, np.nan], [2, 2]]], "boxes contains NaN"),
-    ([0, 0], [5, np.inf], GOOD_BOX, "upper contains NaN or infinite"),
-    ([0, 0], [5, 0], GOOD_BOX, "upper .* must exceed lower"),
-    ([0, 0], [5, -1], GOOD_BOX, "must exceed lower"),
-    ([0, 0], [5, 5, 5], GOOD_BOX, "lower and upper must both have shape"),
-    ([0], [5], [], "lower and upper must both have shape"),
-    ([[0, 0]], [5, 5], GOOD_BOX, "lower must be a 1-D array"),
-    ([0, 0], [5, 5], [[[2, 2], [1, 3]]], "max corner >= min corner"),
-])
+@pytest.mark.parametrize(
+    "lower, upper, boxes, message",
+    [
+        ([0, 0], [5, 5], [[[1, 1, 1], [2, 2, 2]]], r"boxes must have shape \(K, 2, 2\)"),
+        ([0, 0], [5, 5], [[1, 1], [2, 2]], r"boxes must have shape"),
+        ([0, 0], [5, 5], [[[1, 1], [2, 2], [3, 3]]], r"boxes must have shape"),
+        ([0, 0], [5, 5], [[[1, np.nan], [2, 2]]], "boxes contains NaN"),
+        ([0, 0], [5, np.inf], GOOD_BOX, "upper contains NaN or infinite"),
+        ([0, 0], [5, 0], GOOD_BOX, "upper .* must exceed lower"),
+        ([0, 0], [5, -1], GOOD_BOX, "must exceed lower"),
+        ([0, 0], [5, 5, 5], GOOD_BOX, "lower and upper must both have shape"),
+        ([0], [5], [], "lower and upper must both have shape"),
+        ([[0, 0]], [5, 5], GOOD_BOX, "lower must be a 1-D array"),
+        ([0, 0], [5, 5], [[[2, 2], [1, 3]]], "max corner >= min corner"),
+    ],
+)
 def test_bad_workspace_is_named(lower, upper, boxes, message):
     with pytest.raises(ValueError, match=message):
         Workspace(np.array(lower, float), np.array(upper, float), boxes)
@@ -189,16 +197,19 @@ def test_empty_workspace_is_all_free():
     np.testing.assert_array_equal(ws.occupancy(), -np.ones((4, 4, 4)))
 
 
-@pytest.mark.parametrize("content, message", [
-    (None, "corrupted or truncated JSON"),  # truncated: the first half of a real file
-    ("[1, 2, 3]", "expected a JSON object"),
-    ('{"lower": [0, 0], "upper": [5, 5]}', r"missing keys \['boxes'\]"),
-    ('{"lower": [0, 0], "upper": [5, 5], "boxes": [[[1, 1], [2, "x"]]]}', "boxes must be an array of numbers"),
-    ('{"lower": [0, 0], "upper": [5, 5], "boxes": [[[1, 1], [2]]]}', "boxes must be an array of numbers"),
-    ('{"lower": null, "upper": [5, 5], "boxes": []}', "lower must be a 1-D array"),
-    ('{"lower": ["a", 0], "upper": [5, 5], "boxes": []}', "lower must be an array of numbers"),
-    ('{"lower": [0, 0], "upper": [5, 5], "boxes": [[[3, 3], [2, 2]]]}', "max corner >= min corner"),
-])
+@pytest.mark.parametrize(
+    "content, message",
+    [
+        (None, "corrupted or truncated JSON"),  # truncated: the first half of a real file
+        ("[1, 2, 3]", "expected a JSON object"),
+        ('{"lower": [0, 0], "upper": [5, 5]}', r"missing keys \['boxes'\]"),
+        ('{"lower": [0, 0], "upper": [5, 5], "boxes": [[[1, 1], [2, "x"]]]}', "boxes must be an array of numbers"),
+        ('{"lower": [0, 0], "upper": [5, 5], "boxes": [[[1, 1], [2]]]}', "boxes must be an array of numbers"),
+        ('{"lower": null, "upper": [5, 5], "boxes": []}', "lower must be a 1-D array"),
+        ('{"lower": ["a", 0], "upper": [5, 5], "boxes": []}', "lower must be an array of numbers"),
+        ('{"lower": [0, 0], "upper": [5, 5], "boxes": [[[3, 3], [2, 2]]]}', "max corner >= min corner"),
+    ],
+)
 def test_corrupted_workspace_file_is_named(tmp_path, content, message):
     path = tmp_path / "ws.json"
     if content is None:

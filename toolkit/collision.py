@@ -10,4 +10,11 @@ from toolkit.geometry.collision import (
     exact_checker,
 )
 
-__all__ = ["CollisionChecker", "ExactChecker", "MeshChecker", "PointRobotChecker", "SeparatingAxisChecker", "exact_checker"]
+__all__ = [
+    "CollisionChecker",
+    "ExactChecker",
+    "MeshChecker",
+    "PointRobotChecker",
+    "SeparatingAxisChecker",
+    "exact_checker",
+]

@@ -13,4 +13,4 @@ from toolkit.planning.prm import (
     plan,
 )
 
-__all__ = ["AUXILIARY", "GOAL", "PAPER_BASELINE", "START", "STAGES", "PRMOptions", "PlanResult", "PlanStep", "plan"]
+__all__ = ["AUXILIARY", "GOAL", "PAPER_BASELINE", "STAGES", "START", "PRMOptions", "PlanResult", "PlanStep", "plan"]

@@ -14,4 +14,15 @@ from toolkit.planning.queries import (
     summarize,
 )
 
-__all__ = ["Query", "compare_prediction", "default_options", "make_queries", "one_thread", "query_pairs", "run_interleaved", "run_queries", "solve_query", "summarize"]
+__all__ = [
+    "Query",
+    "compare_prediction",
+    "default_options",
+    "make_queries",
+    "one_thread",
+    "query_pairs",
+    "run_interleaved",
+    "run_queries",
+    "solve_query",
+    "summarize",
+]

@@ -16,8 +16,16 @@ from toolkit.geometry import robots, workspace
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 
-STREAMS = {"seen": 0, "unseen": 1, "query": 2, "train_samples": 3, "test_samples": 4, "unseen_samples": 5,
-           "unseen_uniform": 6, "cae_grids": 7}  # what a seed's random numbers are drawn for, one stream each
+STREAMS = {
+    "seen": 0,
+    "unseen": 1,
+    "query": 2,
+    "train_samples": 3,
+    "test_samples": 4,
+    "unseen_samples": 5,
+    "unseen_uniform": 6,
+    "cae_grids": 7,
+}  # what a seed's random numbers are drawn for, one stream each
 
 
 def stream_rng(seed: int, stream: str, index: int) -> np.random.Generator:
@@ -78,28 +86,77 @@ CAE_3DC = (1000, 800, 600, 400, 200, 100, 50)
 SCENARIOS: dict[str, Scenario] = {
     s.name: s
     for s in [
-        Scenario("2ds", "2D simple, point robot", "2ds", robots.point_robot(), (31, 31),
-                 n_seen=30, n_seen_test=30, n_unseen=10, samples_per_workspace=100,
-                 cae_hidden=(512, 256, 128, 64, 32, 12), mlp_hidden=(6, 4),
-                 plan_samples=200, query_workspaces=10, queries_per_workspace=10),
-        Scenario("3do", "3D office, youBot-like 8-DoF", "3do", robots.youbot(), (41, 41, 6),
-                 n_seen=100, n_seen_test=100, n_unseen=20, samples_per_workspace=200,
-                 cae_hidden=(5043, 3125, 1600, 800, 400, 200, 100, 50), mlp_hidden=MLP_3D,
-                 plan_samples=2000, query_workspaces=10, queries_per_workspace=10,
-                 plan_resolution=0.1,  # half the thinnest link (0.03) would make every query far slower, and the
-                 #   office's blocks are >= 1 thick (docs/design.md, "Local planner resolution")
-                cae_max_steps=300, cae_max_batch=10,  # 147M parameters: each step is slow (docs/fidelity.md §3)
-                cae_max_lr=1e-4),  # at 1e-3 its CAE diverges
-        Scenario("3dc7", "3D clutter, 7-DoF box chain", "3dc", robots.box_chain(1), (11, 11, 11),
-                 n_seen=50, n_seen_test=30, n_unseen=10, samples_per_workspace=200,
-                 cae_hidden=CAE_3DC, mlp_hidden=MLP_3D,
-                 plan_samples=400, query_workspaces=100, queries_per_workspace=1,
-                 cae_max_lr=1e-4),  # 2000 grids at 1e-3: the CAE diverges (docs/fidelity.md)
-        Scenario("3dc9", "3D clutter, 9-DoF box chain", "3dc", robots.box_chain(3), (11, 11, 11),
-                 n_seen=50, n_seen_test=30, n_unseen=10, samples_per_workspace=200,
-                 cae_hidden=CAE_3DC, mlp_hidden=MLP_3D,
-                 plan_samples=400, query_workspaces=100, queries_per_workspace=1,
-                 cae_max_lr=1e-4),  # 2000 grids at 1e-3: the CAE diverges (docs/fidelity.md)
+        Scenario(
+            "2ds",
+            "2D simple, point robot",
+            "2ds",
+            robots.point_robot(),
+            (31, 31),
+            n_seen=30,
+            n_seen_test=30,
+            n_unseen=10,
+            samples_per_workspace=100,
+            cae_hidden=(512, 256, 128, 64, 32, 12),
+            mlp_hidden=(6, 4),
+            plan_samples=200,
+            query_workspaces=10,
+            queries_per_workspace=10,
+        ),
+        Scenario(
+            "3do",
+            "3D office, youBot-like 8-DoF",
+            "3do",
+            robots.youbot(),
+            (41, 41, 6),
+            n_seen=100,
+            n_seen_test=100,
+            n_unseen=20,
+            samples_per_workspace=200,
+            cae_hidden=(5043, 3125, 1600, 800, 400, 200, 100, 50),
+            mlp_hidden=MLP_3D,
+            plan_samples=2000,
+            query_workspaces=10,
+            queries_per_workspace=10,
+            plan_resolution=0.1,  # half the thinnest link (0.03) would make every query far slower, and the
+            #   office's blocks are >= 1 thick (docs/design.md, "Local planner resolution")
+            cae_max_steps=300,
+            cae_max_batch=10,  # 147M parameters: each step is slow (docs/fidelity.md §3)
+            cae_max_lr=1e-4,
+        ),  # at 1e-3 its CAE diverges
+        Scenario(
+            "3dc7",
+            "3D clutter, 7-DoF box chain",
+            "3dc",
+            robots.box_chain(1),
+            (11, 11, 11),
+            n_seen=50,
+            n_seen_test=30,
+            n_unseen=10,
+            samples_per_workspace=200,
+            cae_hidden=CAE_3DC,
+            mlp_hidden=MLP_3D,
+            plan_samples=400,
+            query_workspaces=100,
+            queries_per_workspace=1,
+            cae_max_lr=1e-4,
+        ),  # 2000 grids at 1e-3: the CAE diverges (docs/fidelity.md)
+        Scenario(
+            "3dc9",
+            "3D clutter, 9-DoF box chain",
+            "3dc",
+            robots.box_chain(3),
+            (11, 11, 11),
+            n_seen=50,
+            n_seen_test=30,
+            n_unseen=10,
+            samples_per_workspace=200,
+            cae_hidden=CAE_3DC,
+            mlp_hidden=MLP_3D,
+            plan_samples=400,
+            query_workspaces=100,
+            queries_per_workspace=1,
+            cae_max_lr=1e-4,
+        ),  # 2000 grids at 1e-3: the CAE diverges (docs/fidelity.md)
     ]
 }
 
@@ -115,7 +172,9 @@ def register(scenario: Scenario, *, replace: bool = False) -> Scenario:
     if scenario.family not in workspace.GENERATORS:
         raise ValueError(f"unknown workspace family {scenario.family!r}; choose one of {sorted(workspace.GENERATORS)}")
     if len(scenario.grid_shape) != scenario.robot.dim:
-        raise ValueError(f"a {scenario.robot.dim}D robot cannot move in the {len(scenario.grid_shape)}D grid {scenario.grid_shape}")
+        raise ValueError(
+            f"a {scenario.robot.dim}D robot cannot move in the {len(scenario.grid_shape)}D grid {scenario.grid_shape}"
+        )
     family_grid = scenario.make_workspace(np.random.default_rng(0)).grid_shape
     if family_grid != tuple(scenario.grid_shape):
         raise ValueError(f"{scenario.family!r} workspaces have the grid {family_grid}, not {scenario.grid_shape}")

@@ -8,6 +8,7 @@ default 1e-3, 2500, 100), LOSS ``sum`` or ``mean`` (``Preset.cae_loss``). Prints
 line per config: accuracy on (up to 200) training grids, the seen and unseen test
 grids, the unseen grids' all-free share, seconds. One torch thread.
 """
+
 import dataclasses
 import json
 import sys
@@ -32,8 +33,9 @@ for config in configs:
     if kind == "paper":
         preset, grids = dataclasses.replace(paper, cae_loss=loss), seen
     else:
-        preset = dataclasses.replace(paper, cae_loss=loss, cae_lr=lr, cae_batch=batch, cae_max_steps=int(steps),
-                                     cae_epochs=10**6)
+        preset = dataclasses.replace(
+            paper, cae_loss=loss, cae_lr=lr, cae_batch=batch, cae_max_steps=int(steps), cae_epochs=10**6
+        )
         grids = torch.as_tensor(data.occupancy_grids(s, "cae_grids", int(kind), 0))
     torch.manual_seed(0)
     predictor = models.build_predictor(s, "raw")
@@ -41,9 +43,21 @@ for config in configs:
     training.train_cae(predictor, grids, preset, torch.Generator().manual_seed(0), progress=False)
     seconds = time.perf_counter() - began
     with torch.no_grad():
-        acc = {k: float(metrics.reconstruction_accuracy(predictor.cae(g.float()).numpy(), g.numpy()).mean())
-               for k, g in (("train", grids[:200]), ("seen", seen), ("unseen", unseen))}
-    print(json.dumps(dict(scenario=name, config=config, lr=lr if kind != "paper" else paper.cae_lr,
-                          batch=batch if kind != "paper" else paper.cae_batch, seconds=round(seconds),
-                          **{k: round(v, 4) for k, v in acc.items()},
-                          all_free_unseen=round(float((unseen < 0).float().mean()), 4))), flush=True)
+        acc = {
+            k: float(metrics.reconstruction_accuracy(predictor.cae(g.float()).numpy(), g.numpy()).mean())
+            for k, g in (("train", grids[:200]), ("seen", seen), ("unseen", unseen))
+        }
+    print(
+        json.dumps(
+            dict(
+                scenario=name,
+                config=config,
+                lr=lr if kind != "paper" else paper.cae_lr,
+                batch=batch if kind != "paper" else paper.cae_batch,
+                seconds=round(seconds),
+                **{k: round(v, 4) for k, v in acc.items()},
+                all_free_unseen=round(float((unseen < 0).float().mean()), 4),
+            )
+        ),
+        flush=True,
+    )

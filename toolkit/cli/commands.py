@@ -20,8 +20,14 @@ from toolkit.experiments.config import RunConfig
 
 def _config(args: argparse.Namespace, scenario: str, **settings) -> RunConfig:
     """The run configuration of a command's arguments (the modules it imported included, for worker processes)."""
-    return RunConfig.create(scenario, getattr(args, "preset", "paper"), seed=args.seed,
-                            quick=getattr(args, "quick", False), imports=tuple(args.imports), **settings)
+    return RunConfig.create(
+        scenario,
+        getattr(args, "preset", "paper"),
+        seed=args.seed,
+        quick=getattr(args, "quick", False),
+        imports=tuple(args.imports),
+        **settings,
+    )
 
 
 def cmd_bench(args: argparse.Namespace) -> int:
@@ -35,15 +41,21 @@ def cmd_bench(args: argparse.Namespace) -> int:
             table = bench.versus_ompl(scenario, args.queries, args.seed, models, args.ompl_seconds)
         except ImportError as missing:  # ompl is an optional extra
             raise ValueError(str(missing)) from None
-        print(json.dumps({"scenario": scenario.name, "seed": args.seed, "planners": table}) if args.json
-              else bench.versus_ompl_markdown(scenario, table))
+        print(
+            json.dumps({"scenario": scenario.name, "seed": args.seed, "planners": table})
+            if args.json
+            else bench.versus_ompl_markdown(scenario, table)
+        )
         return 0
-    result = {"scenario": scenario.name,
-              **bench.throughput(scenario, args.preset, args.batch, seed=args.seed, models=models)}
+    result = {
+        "scenario": scenario.name,
+        **bench.throughput(scenario, args.preset, args.batch, seed=args.seed, models=models),
+    }
     result["edges"] = bench.edge_checks(scenario, seed=args.seed)
     if models is not None:
-        result["planning"] = bench.planning_ratios(scenario, models, args.workspaces, args.pairs, args.seed,
-                                                   args.samplers, dict(args.option))
+        result["planning"] = bench.planning_ratios(
+            scenario, models, args.workspaces, args.pairs, args.seed, args.samplers, dict(args.option)
+        )
         result["planning_options"] = dict(args.option)
     print(json.dumps(result) if args.json else "\n".join(f"{k}: {v}" for k, v in result.items()))
     return 0
@@ -74,14 +86,25 @@ def cmd_plan(args: argparse.Namespace) -> int:
 
         checker = learned.load_checker(args.checkpoint, query.workspace)
     result = queries.solve_query(scenario, query, args.sampler, checker, seed=args.seed)
-    out = {"scenario": scenario.name, "sampler": args.sampler, "predict": args.predict, "seed": args.seed,
-           "success": result.success, "path": result.path.tolist(), "stats": result.stats,
-           "start": query.start.tolist(), "goal": query.goal.tolist(), "workspace": query.workspace.to_dict()}
+    out = {
+        "scenario": scenario.name,
+        "sampler": args.sampler,
+        "predict": args.predict,
+        "seed": args.seed,
+        "success": result.success,
+        "path": result.path.tolist(),
+        "stats": result.stats,
+        "start": query.start.tolist(),
+        "goal": query.goal.tolist(),
+        "workspace": query.workspace.to_dict(),
+    }
     if args.json:
         print(json.dumps(out))
     else:
-        print(f"{'solved' if result.success else 'no path'}: {len(result.path)} configurations, "
-              f"{result.stats['nodes']} nodes, {result.stats['edges']} edges, {result.stats['total_s']:.3f} s")
+        print(
+            f"{'solved' if result.success else 'no path'}: {len(result.path)} configurations, "
+            f"{result.stats['nodes']} nodes, {result.stats['edges']} edges, {result.stats['total_s']:.3f} s"
+        )
     return 0
 
 
@@ -100,8 +123,9 @@ def cmd_view(args: argparse.Namespace) -> int:
         from toolkit.util import outputs
 
         outputs.writable_file(args.screenshot, "--screenshot")
-    v = viewer.launch(scenario, seed=args.seed, predictor=predictor, host=args.host, port=args.port,
-                      quiet=bool(args.screenshot))
+    v = viewer.launch(
+        scenario, seed=args.seed, predictor=predictor, host=args.host, port=args.port, quiet=bool(args.screenshot)
+    )
     try:
         if args.samples:
             v.sample("raw", args.samples, seed=args.seed)
@@ -154,32 +178,53 @@ def cmd_grade(args: argparse.Namespace) -> int:
     if args.assignment:
         grading.master(args.assignment)  # an unknown name fails here, with the known ones
     notebooks = grading.submissions(args.notebooks)
-    names = {notebook: args.assignment or grading.assignment_of(notebook) for notebook in notebooks}  # all, before grading
+    names = {
+        notebook: args.assignment or grading.assignment_of(notebook) for notebook in notebooks
+    }  # all, before grading
     results = {}
     for notebook, name in names.items():
         results[notebook] = grading.grade(notebook, name, timeout=args.timeout)
-        print(json.dumps({"submission": str(notebook), **results[notebook]}) if args.json
-              else grading.report(results[notebook]), flush=True)
+        print(
+            json.dumps({"submission": str(notebook), **results[notebook]})
+            if args.json
+            else grading.report(results[notebook]),
+            flush=True,
+        )
     if args.csv:
         grading.write_csv(results, args.csv)
     return 0
 
 
-COMMANDS = {"reproduce": cmd_reproduce, "ablate": cmd_ablate, "tune": cmd_tune, "train": cmd_train,
-            "plan": cmd_plan, "bench": cmd_bench, "view": cmd_view, "grade": cmd_grade}
+COMMANDS = {
+    "reproduce": cmd_reproduce,
+    "ablate": cmd_ablate,
+    "tune": cmd_tune,
+    "train": cmd_train,
+    "plan": cmd_plan,
+    "bench": cmd_bench,
+    "view": cmd_view,
+    "grade": cmd_grade,
+}
 
 
 # -- what an interrupted command leaves ---------------------------------------------------------
 
+
 def _reproduce_kept(args: argparse.Namespace) -> str:
     from toolkit.experiments import reproduce
 
-    folders = ({name: Path(args.out) / name for name in sorted(scenarios.SCENARIOS)} if args.scenario == "all"
-               else {args.scenario: Path(args.out)})
+    folders = (
+        {name: Path(args.out) / name for name in sorted(scenarios.SCENARIOS)}
+        if args.scenario == "all"
+        else {args.scenario: Path(args.out)}
+    )
     kept = {name: reproduce.finished_stages(folder) for name, folder in folders.items()}
     listed = "; ".join(f"{name}: {', '.join(stages) or 'nothing yet'}" for name, stages in kept.items())
-    return (f"kept the finished stages in {args.out} ({listed}); run the same command again to go on from there"
-            if any(kept.values()) else "nothing was finished; run the same command again to start over")
+    return (
+        f"kept the finished stages in {args.out} ({listed}); run the same command again to go on from there"
+        if any(kept.values())
+        else "nothing was finished; run the same command again to start over"
+    )
 
 
 def _rows_kept(args: argparse.Namespace) -> str:
@@ -190,8 +235,10 @@ def _rows_kept(args: argparse.Namespace) -> str:
 KEPT = {
     "bench": lambda args: "bench writes nothing; nothing is lost",
     "plan": lambda args: "plan writes nothing; nothing is lost",
-    "train": lambda args: (f"{args.out} is as it was (the checkpoint is written only when training ends); "
-                           "run the same command again to train from the start"),
+    "train": lambda args: (
+        f"{args.out} is as it was (the checkpoint is written only when training ends); "
+        "run the same command again to train from the start"
+    ),
     "view": lambda args: "the viewer stopped",
     "grade": lambda args: "grading writes its CSV only at the end; run the same command again",
     "reproduce": _reproduce_kept,

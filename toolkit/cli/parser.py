@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import argparse
 import json
-from typing import Callable
+from collections.abc import Callable
 
 from toolkit import scenarios
 from toolkit.experiments import paper_numbers
@@ -22,11 +22,12 @@ SEEDS = 2**32  # seeds are 0 .. 2**32 - 1
 PRESET_WORDS = {
     "paper": "the paper's networks and training settings",
     "strong": "ours: the MLP also sees the occupancy around the robot and where its links are; far more accurate "
-              "(docs/results.md)",
+    "(docs/results.md)",
 }
 
 
 # -- argument types: each names the rule it checks; argparse adds the flag ----------------------
+
 
 def int_in(low: int, high: int | None = None) -> Callable[[str], int]:
     """An argparse type: a whole number in ``low .. high`` (no upper limit when ``high`` is None)."""
@@ -47,10 +48,10 @@ def int_in(low: int, high: int | None = None) -> Callable[[str], int]:
 
 def sampler_list(text: str) -> tuple[str, ...]:
     """An argparse type: comma-separated names of registered samplers."""
-    names = tuple(text.split(","))
-    if unknown := [n for n in names if n not in sampling.SAMPLERS]:
-        raise argparse.ArgumentTypeError(f"unknown sampler(s) {unknown}; choose from {', '.join(sampling.SAMPLERS)}")
-    return names
+    try:
+        return sampling.check_names(text.split(","))
+    except ValueError as err:
+        raise argparse.ArgumentTypeError(str(err)) from None
 
 
 def planner_option(text: str) -> tuple[str, object]:
@@ -66,6 +67,7 @@ def planner_option(text: str) -> tuple[str, object]:
 
 # -- what the registries hold -------------------------------------------------------------------
 
+
 def scenario_names() -> list[str]:
     return sorted(scenarios.SCENARIOS)
 
@@ -77,18 +79,25 @@ def sampler_names() -> list[str]:
 
 def glossary() -> str:
     """The scenarios, samplers and presets in words, for ``toolkit --help``."""
+
     def first_line(text: str | None) -> str:
         return (text or "").strip().splitlines()[0] if (text or "").strip() else "(registered)"
 
     return "\n".join(
-        ["scenarios (--scenario):"] + [f"  {s.name:6}{s.title}" for s in scenarios.SCENARIOS.values()]
+        ["scenarios (--scenario):"]
+        + [f"  {s.name:6}{s.title}" for s in scenarios.SCENARIOS.values()]
         + ["", "samplers (--sampler, --samplers), how PRM draws its nodes:"]
         + [f"  {name:6}{cls.summary or first_line(cls.__doc__)}" for name, cls in sampling.SAMPLERS.items()]
         + ["", "presets (--preset):"]
         + [f"  {name:8}{PRESET_WORDS.get(name, 'registered (--import)')}" for name in presets.PRESETS]
-        + ["", "your own sampler, preset or scenario: --import MODULE (a module that registers it), on any command.",
-           "", "threads: torch and numpy use one thread, fastest when other programs share the machine;",
-           "TOOLKIT_THREADS=N uses N (0: one per core). See toolkit/util/threads.py."])
+        + [
+            "",
+            "your own sampler, preset or scenario: --import MODULE (a module that registers it), on any command.",
+            "",
+            "threads: torch and numpy use one thread, fastest when other programs share the machine;",
+            "TOOLKIT_THREADS=N uses N (0: one per core). See toolkit/util/threads.py.",
+        ]
+    )
 
 
 # -- building blocks ----------------------------------------------------------------------------
@@ -104,15 +113,26 @@ def _formatter(prog: str) -> argparse.HelpFormatter:
 def imports_parent() -> argparse.ArgumentParser:
     """The ``--import`` option every sub-command takes (``main`` reads it before the parser is built)."""
     parent = argparse.ArgumentParser(add_help=False)
-    parent.add_argument("--import", dest="imports", action="append", default=[], metavar="MODULE",
-                        help="import MODULE (a module name or a .py file) first: what it registers (a sampler, "
-                             "preset or scenario) is offered like the toolkit's own; repeat for several")
+    parent.add_argument(
+        "--import",
+        dest="imports",
+        action="append",
+        default=[],
+        metavar="MODULE",
+        help="import MODULE (a module name or a .py file) first: what it registers (a sampler, "
+        "preset or scenario) is offered like the toolkit's own; repeat for several",
+    )
     return parent
 
 
 def seed(parser: argparse.ArgumentParser, what: str) -> None:
-    parser.add_argument("--seed", type=int_in(0, SEEDS - 1), default=0, metavar="N",
-                        help=f"random seed, 0..{SEEDS - 1} (default 0): {what}")
+    parser.add_argument(
+        "--seed",
+        type=int_in(0, SEEDS - 1),
+        default=0,
+        metavar="N",
+        help=f"random seed, 0..{SEEDS - 1} (default 0): {what}",
+    )
 
 
 def scenario(parser: argparse.ArgumentParser, *, extra: list[str] = (), **kwargs) -> None:
@@ -128,26 +148,48 @@ def study(parser: argparse.ArgumentParser, quick_help: str, what: str) -> None:
     scenario(parser, required=True, help=SCENARIO_HELP)
     seed(parser, "workspaces, samples and initial weights")
     parser.add_argument("--quick", action="store_true", help=quick_help)
-    parser.add_argument("--out", required=True, metavar="DIR",
-                        help=f"folder for the tables, new or empty, or holding this same {what} to resume it")
+    parser.add_argument(
+        "--out",
+        required=True,
+        metavar="DIR",
+        help=f"folder for the tables, new or empty, or holding this same {what} to resume it",
+    )
 
 
 # -- the sub-commands' own options ----------------------------------------------------------------
 
+
 def reproduce_options(cmd: argparse.ArgumentParser) -> None:
     scenario(cmd, extra=["all"], required=True, help=SCENARIO_HELP + "; all: each of them in turn")
     preset(cmd, "paper: the paper's recipe (default); strong: ours, more accurate; or a registered one")
-    cmd.add_argument("--quick", action="store_true",
-                     help="small counts (few workspaces, epochs and queries) to try the whole pipeline in minutes; "
-                          "its figures mean little")
+    cmd.add_argument(
+        "--quick",
+        action="store_true",
+        help="small counts (few workspaces, epochs and queries) to try the whole pipeline in minutes; "
+        "its figures mean little",
+    )
     seed(cmd, "workspaces, samples, training and queries all follow from it")
-    cmd.add_argument("--out", required=True, metavar="DIR",
-                     help="folder for the results, new or empty, or holding this same run to resume it")
-    cmd.add_argument("--workers", type=int_in(1), default=None, metavar="N",
-                     help="processes for planning, one sampler each (default: one per core; 1: all in this process)")
-    cmd.add_argument("--samplers", type=sampler_list, default=paper_numbers.SAMPLERS, metavar="LIST",
-                     help="comma-separated samplers for Table 3 (default: the paper's four, BS,OB,G,BT; a registered "
-                          "one has no published figure beside it)")
+    cmd.add_argument(
+        "--out",
+        required=True,
+        metavar="DIR",
+        help="folder for the results, new or empty, or holding this same run to resume it",
+    )
+    cmd.add_argument(
+        "--workers",
+        type=int_in(1),
+        default=None,
+        metavar="N",
+        help="processes for planning, one sampler each (default: one per core; 1: all in this process)",
+    )
+    cmd.add_argument(
+        "--samplers",
+        type=sampler_list,
+        default=paper_numbers.SAMPLERS,
+        metavar="LIST",
+        help="comma-separated samplers for Table 3 (default: the paper's four, BS,OB,G,BT; a registered "
+        "one has no published figure beside it)",
+    )
 
 
 def ablate_options(cmd: argparse.ArgumentParser) -> None:
@@ -164,28 +206,46 @@ def train_options(cmd: argparse.ArgumentParser) -> None:
     seed(cmd, "training data and initial weights")
     cmd.add_argument("--out", required=True, metavar="DIR", help="checkpoint folder to write (new or empty)")
     cmd.add_argument("--force", action="store_true", help="replace the checkpoint already in --out")
-    cmd.add_argument("--quick", action="store_true",
-                     help="few workspaces and epochs: a weak model in seconds to minutes, for trying things out")
+    cmd.add_argument(
+        "--quick",
+        action="store_true",
+        help="few workspaces and epochs: a weak model in seconds to minutes, for trying things out",
+    )
     cmd.add_argument("--device", default=None, help="torch device, e.g. cpu or cuda (default: cuda if present)")
-    cmd.add_argument("--cae-epochs", type=int_in(1), metavar="N",
-                     help="passes over the grids for the CAE (default: the preset's)")
-    cmd.add_argument("--cae", action="store_true",
-                     help="train the CAE even when the preset's MLP does not use its code z (strong): for its "
-                          "reconstructions (Table 1); by default only the paper preset trains it")
-    cmd.add_argument("--mlp-epochs", type=int_in(1), metavar="N",
-                     help="passes over the samples for the MLP (default: the preset's)")
+    cmd.add_argument(
+        "--cae-epochs", type=int_in(1), metavar="N", help="passes over the grids for the CAE (default: the preset's)"
+    )
+    cmd.add_argument(
+        "--cae",
+        action="store_true",
+        help="train the CAE even when the preset's MLP does not use its code z (strong): for its "
+        "reconstructions (Table 1); by default only the paper preset trains it",
+    )
+    cmd.add_argument(
+        "--mlp-epochs", type=int_in(1), metavar="N", help="passes over the samples for the MLP (default: the preset's)"
+    )
 
 
 def plan_options(cmd: argparse.ArgumentParser) -> None:
     scenario(cmd, required=True, help=SCENARIO_HELP)
-    cmd.add_argument("--sampler", choices=sampler_names(), default="BS",
-                     help="how PRM draws its nodes (listed in `toolkit --help`; default BS)")
-    cmd.add_argument("--predict", action="store_true",
-                     help="decide which samples are free with the learned checker (needs --checkpoint)")
+    cmd.add_argument(
+        "--sampler",
+        choices=sampler_names(),
+        default="BS",
+        help="how PRM draws its nodes (listed in `toolkit --help`; default BS)",
+    )
+    cmd.add_argument(
+        "--predict",
+        action="store_true",
+        help="decide which samples are free with the learned checker (needs --checkpoint)",
+    )
     cmd.add_argument("--checkpoint", metavar="DIR", help="a checkpoint folder from `toolkit train`")
     seed(cmd, "the workspace, start and goal, and the sampler's draws")
-    cmd.add_argument("--json", action="store_true",
-                     help="print one JSON object (success, path, stats, workspace) instead of a sentence")
+    cmd.add_argument(
+        "--json",
+        action="store_true",
+        help="print one JSON object (success, path, stats, workspace) instead of a sentence",
+    )
 
 
 def bench_options(cmd: argparse.ArgumentParser) -> None:
@@ -193,47 +253,102 @@ def bench_options(cmd: argparse.ArgumentParser) -> None:
     seed(cmd, "the workspace and the configurations timed")
     cmd.add_argument("--json", action="store_true", help="print one JSON object instead of lines")
     preset(cmd, "network sizes whose learned speed is measured (default paper; speed does not depend on the weights)")
-    cmd.add_argument("--batch", type=int_in(1, 1_000_000), metavar="N",
-                     help="configurations per call for both checkers, 1..1000000 (default: 20,000 exact, "
-                          "10,000 learned; a sampler asks for 200-2,000)")
-    cmd.add_argument("--checkpoint", metavar="DIR", help="a trained model (from `toolkit train`, or "
-                     "DIR/cache/checkpoint of `toolkit reproduce`): also time PRM with and without it")
-    cmd.add_argument("--workspaces", type=int_in(1, 100), default=2, metavar="N",
-                     help="with --checkpoint: query workspaces to plan in, 1..100 (default 2)")
-    cmd.add_argument("--pairs", type=int_in(1, 10), default=2, metavar="N",
-                     help="with --checkpoint: start/goal pairs per workspace, 1..10 (default 2)")
-    cmd.add_argument("--samplers", type=sampler_list, default=paper_numbers.SAMPLERS, metavar="LIST",
-                     help="with --checkpoint: comma-separated samplers to plan with, e.g. BT,OB (default: the paper's "
-                          "four)")
-    cmd.add_argument("--vs-ompl", action="store_true",
-                     help="instead: plan --queries N queries with our planners (best exact, the paper's baseline, "
-                          "and with --checkpoint's model) and OMPL's PRM and RRTConnect on the same exact checker, "
-                          "in turns, one thread, and print a markdown table (needs the ompl extra: "
-                          "pip install 'sample-collision-toolkit[ompl]'); use a --seed the planner was not tuned on "
-                          "(not 0 or 7100), e.g. 9000")
-    cmd.add_argument("--queries", type=int_in(1, 1000), default=10, metavar="N",
-                     help="with --vs-ompl: the first N queries of the seed's query set (default 10)")
-    cmd.add_argument("--ompl-seconds", type=float, default=30.0, metavar="S",
-                     help="with --vs-ompl: OMPL's time limit per query (default 30)")
-    cmd.add_argument("--option", type=planner_option, action="append", default=[], metavar="NAME=VALUE",
-                     help="with --checkpoint: a planner setting (a PRMOptions field in toolkit/planning/options.py) "
-                          "for both runs, e.g. rebridge=0; repeat for several")
+    cmd.add_argument(
+        "--batch",
+        type=int_in(1, 1_000_000),
+        metavar="N",
+        help="configurations per call for both checkers, 1..1000000 (default: 20,000 exact, "
+        "10,000 learned; a sampler asks for 200-2,000)",
+    )
+    cmd.add_argument(
+        "--checkpoint",
+        metavar="DIR",
+        help="a trained model (from `toolkit train`, or "
+        "DIR/cache/checkpoint of `toolkit reproduce`): also time PRM with and without it",
+    )
+    cmd.add_argument(
+        "--workspaces",
+        type=int_in(1, 100),
+        default=2,
+        metavar="N",
+        help="with --checkpoint: query workspaces to plan in, 1..100 (default 2)",
+    )
+    cmd.add_argument(
+        "--pairs",
+        type=int_in(1, 10),
+        default=2,
+        metavar="N",
+        help="with --checkpoint: start/goal pairs per workspace, 1..10 (default 2)",
+    )
+    cmd.add_argument(
+        "--samplers",
+        type=sampler_list,
+        default=paper_numbers.SAMPLERS,
+        metavar="LIST",
+        help="with --checkpoint: comma-separated samplers to plan with, e.g. BT,OB (default: the paper's four)",
+    )
+    cmd.add_argument(
+        "--vs-ompl",
+        action="store_true",
+        help="instead: plan --queries N queries with our planners (best exact, the paper's baseline, "
+        "and with --checkpoint's model) and OMPL's PRM and RRTConnect on the same exact checker, "
+        "in turns, one thread, and print a markdown table (needs the ompl extra: "
+        "pip install 'sample-collision-toolkit[ompl]'); use a --seed the planner was not tuned on "
+        "(not 0 or 7100), e.g. 9000",
+    )
+    cmd.add_argument(
+        "--queries",
+        type=int_in(1, 1000),
+        default=10,
+        metavar="N",
+        help="with --vs-ompl: the first N queries of the seed's query set (default 10)",
+    )
+    cmd.add_argument(
+        "--ompl-seconds",
+        type=float,
+        default=30.0,
+        metavar="S",
+        help="with --vs-ompl: OMPL's time limit per query (default 30)",
+    )
+    cmd.add_argument(
+        "--option",
+        type=planner_option,
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="with --checkpoint: a planner setting (a PRMOptions field in toolkit/planning/options.py) "
+        "for both runs, e.g. rebridge=0; repeat for several",
+    )
 
 
 def view_options(cmd: argparse.ArgumentParser) -> None:
     scenario(cmd, default=None, help=SCENARIO_HELP + "; default: the checkpoint's, else 3do")
     seed(cmd, "which workspace is shown")
     cmd.add_argument("--checkpoint", metavar="DIR", help="a checkpoint folder: show the model's predictions too")
-    cmd.add_argument("--host", default="127.0.0.1",
-                     help="address to serve on (default 127.0.0.1: this computer only; 0.0.0.0: every network)")
-    cmd.add_argument("--port", type=int_in(0, 65535), default=8080,
-                     help="first port to try, 0..65535 (default 8080; a busy one moves to the next free; "
-                          "0: any free port)")
-    cmd.add_argument("--samples", type=int_in(0, 100_000), default=0, metavar="N",
-                     help="show N uniform samples at the start, 0..100000 (default 0)")
-    cmd.add_argument("--screenshot", metavar="PNG",
-                     help="save a picture of the page from a headless Chromium and exit (needs Chromium and "
-                          "Playwright: `make browser`, the dev extras)")
+    cmd.add_argument(
+        "--host",
+        default="127.0.0.1",
+        help="address to serve on (default 127.0.0.1: this computer only; 0.0.0.0: every network)",
+    )
+    cmd.add_argument(
+        "--port",
+        type=int_in(0, 65535),
+        default=8080,
+        help="first port to try, 0..65535 (default 8080; a busy one moves to the next free; 0: any free port)",
+    )
+    cmd.add_argument(
+        "--samples",
+        type=int_in(0, 100_000),
+        default=0,
+        metavar="N",
+        help="show N uniform samples at the start, 0..100000 (default 0)",
+    )
+    cmd.add_argument(
+        "--screenshot",
+        metavar="PNG",
+        help="save a picture of the page from a headless Chromium and exit (needs Chromium and "
+        "Playwright: `make browser`, the dev extras)",
+    )
 
 
 def grade_options(cmd: argparse.ArgumentParser) -> None:
@@ -246,90 +361,144 @@ def grade_options(cmd: argparse.ArgumentParser) -> None:
 
 # (name, one-line summary, description, examples, options)
 SUBCOMMANDS: list[tuple[str, str, str, list[str], Callable[[argparse.ArgumentParser], None]]] = [
-    ("reproduce", "reproduce the paper's Tables 1-3 and figures",
-     "Makes the data, trains the CAE and MLP, measures them (Tables 1, 2), plans with every\n"
-     "sampler without and with prediction (Table 3) and writes DIR/results.json, DIR/tables.md\n"
-     "(our figure next to the paper's in every cell) and PNG figures. Each finished stage is\n"
-     "kept in DIR/cache: after Ctrl-C, the same command goes on where it stopped.",
-     ["toolkit reproduce --scenario 2ds --out results/2ds            # the paper's 2D tables",
-      "toolkit reproduce --scenario 3dc7 --quick --out results/try   # small counts, to try things",
-      "toolkit reproduce --scenario all --preset strong --out results/strong"], reproduce_options),
-    ("ablate", "walk from the paper's recipe to ours, one change at a time",
-     "Trains one model per row, each row keeping the changes above it (toolkit/experiments/ablation.py:\n"
-     "the CAE's loss and data, dropout, optimizer, input scaling, more workspaces, a wider MLP,\n"
-     "local features, no z) and scores each on the same seen and unseen samples, balanced and\n"
-     "validity-blind as the paper. Writes DIR/ablation.md and ablation.json; each finished row\n"
-     "is kept in DIR/cache: after Ctrl-C, the same command goes on where it stopped.",
-     ["toolkit ablate --scenario 2ds --out results/ablation-2ds"], ablate_options),
-    ("tune", "choose the paper preset's unstated settings on held-out training workspaces",
-     "The paper does not say how long its networks train, the MLP's batch, initialization or\n"
-     "input scaling. This tries each (toolkit/experiments/tuning.py), fitting on 80 % of the training\n"
-     "workspaces and scoring on the other 20 %; the unseen test workspaces are never used.\n"
-     "Writes DIR/tuning.md and tuning.json; finished rows are kept in DIR/cache (resumable).",
-     ["toolkit tune --scenario 2ds --out results/tuning-2ds"], tune_options),
-    ("train", "train the CAE and the collision MLP; write a checkpoint folder",
-     "Makes the preset's training data, trains the CAE (it compresses a workspace's occupancy\n"
-     "grid) and the MLP (it predicts whether a configuration is free), and writes DIR/weights.pt\n"
-     "and DIR/meta.json with the test scores. `toolkit plan`, `view` and `bench` read DIR.",
-     ["toolkit train --scenario 2ds --preset strong --out runs/2ds-strong",
-      "toolkit train --scenario 3dc9 --quick --out runs/try --force   # replace runs/try"], train_options),
-    ("plan", "solve one planning query with PRM, with or without prediction",
-     "Draws a workspace and a start and goal from --seed, builds a PRM roadmap with the sampler\n"
-     "and searches it. With --predict the learned checker decides which samples are free (the\n"
-     "paper's Algorithm 1); the returned path is always checked exactly.",
-     ["toolkit plan --scenario 2ds --sampler OB",
-      "toolkit plan --scenario 3dc7 --sampler BT --predict --checkpoint runs/3dc7-strong --json",
-      "toolkit plan --import my_samplers --scenario 2ds --sampler MA   # a sampler registered in my_samplers.py"],
-     plan_options),
-    ("bench", "measure how fast the exact and the learned checker are",
-     "Prints configurations checked per second by the exact checker (geometry) and by the\n"
-     "learned one (the networks; untrained ones of the preset's sizes unless --checkpoint),\n"
-     "their ratio, and exact edge checking. With --checkpoint it also plans a few of the\n"
-     "paper's queries with and without that model and prints the time ratios. With --vs-ompl\n"
-     "it races our planners against OMPL's PRM and RRTConnect on the same queries and checker.",
-     ["toolkit bench --scenario 3dc7 --json",
-      "toolkit bench --scenario 3dc9 --checkpoint runs/3dc9-strong --samplers BT --option rebridge=0",
-      "toolkit bench --vs-ompl --scenario 3dc7 --queries 20 --seed 9000"], bench_options),
-    ("view", "show a scenario in your browser (Viser)",
-     "Serves a 3D scene on this computer and prints the address to open: the workspace, the\n"
-     "robot colored by the exact checker (green free, red colliding), a slider per joint,\n"
-     "samples, and a PRM roadmap with its path. Ctrl-C stops it.",
-     ["toolkit view --scenario 3do",
-      "toolkit view --checkpoint runs/3dc7-strong          # also the model's predictions",
-      "toolkit view --scenario 3dc9 --samples 300 --screenshot scene.png"], view_options),
-    ("grade", "grade filled-in assignment notebooks with otter",
-     "Runs each student notebook with the assignment's public and hidden tests (otter-grader,\n"
-     "no Docker), prints a report per notebook with feedback, and ends with `score: X/Y`.\n"
-     "Questions answered in prose are graded by hand and not counted here.",
-     ["toolkit grade submissions/bridge_test.ipynb",
-      "toolkit grade submissions/ --csv scores.csv       # every notebook in the folder"], grade_options),
+    (
+        "reproduce",
+        "reproduce the paper's Tables 1-3 and figures",
+        "Makes the data, trains the CAE and MLP, measures them (Tables 1, 2), plans with every\n"
+        "sampler without and with prediction (Table 3) and writes DIR/results.json, DIR/tables.md\n"
+        "(our figure next to the paper's in every cell) and PNG figures. Each finished stage is\n"
+        "kept in DIR/cache: after Ctrl-C, the same command goes on where it stopped.",
+        [
+            "toolkit reproduce --scenario 2ds --out results/2ds            # the paper's 2D tables",
+            "toolkit reproduce --scenario 3dc7 --quick --out results/try   # small counts, to try things",
+            "toolkit reproduce --scenario all --preset strong --out results/strong",
+        ],
+        reproduce_options,
+    ),
+    (
+        "ablate",
+        "walk from the paper's recipe to ours, one change at a time",
+        "Trains one model per row, each row keeping the changes above it (toolkit/experiments/ablation.py:\n"
+        "the CAE's loss and data, dropout, optimizer, input scaling, more workspaces, a wider MLP,\n"
+        "local features, no z) and scores each on the same seen and unseen samples, balanced and\n"
+        "validity-blind as the paper. Writes DIR/ablation.md and ablation.json; each finished row\n"
+        "is kept in DIR/cache: after Ctrl-C, the same command goes on where it stopped.",
+        ["toolkit ablate --scenario 2ds --out results/ablation-2ds"],
+        ablate_options,
+    ),
+    (
+        "tune",
+        "choose the paper preset's unstated settings on held-out training workspaces",
+        "The paper does not say how long its networks train, the MLP's batch, initialization or\n"
+        "input scaling. This tries each (toolkit/experiments/tuning.py), fitting on 80 % of the training\n"
+        "workspaces and scoring on the other 20 %; the unseen test workspaces are never used.\n"
+        "Writes DIR/tuning.md and tuning.json; finished rows are kept in DIR/cache (resumable).",
+        ["toolkit tune --scenario 2ds --out results/tuning-2ds"],
+        tune_options,
+    ),
+    (
+        "train",
+        "train the CAE and the collision MLP; write a checkpoint folder",
+        "Makes the preset's training data, trains the CAE (it compresses a workspace's occupancy\n"
+        "grid) and the MLP (it predicts whether a configuration is free), and writes DIR/weights.pt\n"
+        "and DIR/meta.json with the test scores. `toolkit plan`, `view` and `bench` read DIR.",
+        [
+            "toolkit train --scenario 2ds --preset strong --out runs/2ds-strong",
+            "toolkit train --scenario 3dc9 --quick --out runs/try --force   # replace runs/try",
+        ],
+        train_options,
+    ),
+    (
+        "plan",
+        "solve one planning query with PRM, with or without prediction",
+        "Draws a workspace and a start and goal from --seed, builds a PRM roadmap with the sampler\n"
+        "and searches it. With --predict the learned checker decides which samples are free (the\n"
+        "paper's Algorithm 1); the returned path is always checked exactly.",
+        [
+            "toolkit plan --scenario 2ds --sampler OB",
+            "toolkit plan --scenario 3dc7 --sampler BT --predict --checkpoint runs/3dc7-strong --json",
+            "toolkit plan --import my_samplers --scenario 2ds --sampler MA   # a sampler registered in my_samplers.py",
+        ],
+        plan_options,
+    ),
+    (
+        "bench",
+        "measure how fast the exact and the learned checker are",
+        "Prints configurations checked per second by the exact checker (geometry) and by the\n"
+        "learned one (the networks; untrained ones of the preset's sizes unless --checkpoint),\n"
+        "their ratio, and exact edge checking. With --checkpoint it also plans a few of the\n"
+        "paper's queries with and without that model and prints the time ratios. With --vs-ompl\n"
+        "it races our planners against OMPL's PRM and RRTConnect on the same queries and checker.",
+        [
+            "toolkit bench --scenario 3dc7 --json",
+            "toolkit bench --scenario 3dc9 --checkpoint runs/3dc9-strong --samplers BT --option rebridge=0",
+            "toolkit bench --vs-ompl --scenario 3dc7 --queries 20 --seed 9000",
+        ],
+        bench_options,
+    ),
+    (
+        "view",
+        "show a scenario in your browser (Viser)",
+        "Serves a 3D scene on this computer and prints the address to open: the workspace, the\n"
+        "robot colored by the exact checker (green free, red colliding), a slider per joint,\n"
+        "samples, and a PRM roadmap with its path. Ctrl-C stops it.",
+        [
+            "toolkit view --scenario 3do",
+            "toolkit view --checkpoint runs/3dc7-strong          # also the model's predictions",
+            "toolkit view --scenario 3dc9 --samples 300 --screenshot scene.png",
+        ],
+        view_options,
+    ),
+    (
+        "grade",
+        "grade filled-in assignment notebooks with otter",
+        "Runs each student notebook with the assignment's public and hidden tests (otter-grader,\n"
+        "no Docker), prints a report per notebook with feedback, and ends with `score: X/Y`.\n"
+        "Questions answered in prose are graded by hand and not counted here.",
+        [
+            "toolkit grade submissions/bridge_test.ipynb",
+            "toolkit grade submissions/ --csv scores.csv       # every notebook in the folder",
+        ],
+        grade_options,
+    ),
 ]
 
 
 def build_parser(commands: dict[str, Callable[[argparse.Namespace], int]]) -> argparse.ArgumentParser:
     """The whole parser; ``commands`` maps each sub-command's name to the function that runs it."""
-    parser = argparse.ArgumentParser(
-        prog="toolkit", formatter_class=_formatter,
-        epilog="examples:\n"
-               "  toolkit reproduce --scenario 2ds --quick --out results/2ds-quick\n"
-               "  toolkit train --scenario 3dc7 --preset strong --out runs/3dc7-strong\n"
-               "  toolkit view --checkpoint runs/3dc7-strong\n"
-               "  toolkit reproduce --help        (every command explains its options)")
-    sub = parser.add_subparsers(dest="command", required=True, metavar="COMMAND",
-                                help="one of the commands above, then its options")
     parent = imports_parent()
+    parser = argparse.ArgumentParser(
+        prog="toolkit",
+        formatter_class=_formatter,
+        parents=[parent],
+        epilog="examples:\n"
+        "  toolkit reproduce --scenario 2ds --quick --out results/2ds-quick\n"
+        "  toolkit train --scenario 3dc7 --preset strong --out runs/3dc7-strong\n"
+        "  toolkit view --checkpoint runs/3dc7-strong\n"
+        "  toolkit reproduce --help        (every command explains its options)",
+    )
+    sub = parser.add_subparsers(
+        dest="command", required=True, metavar="COMMAND", help="one of the commands above, then its options"
+    )
     for name, summary, description, examples, add_options in SUBCOMMANDS:
-        cmd = sub.add_parser(name, description=f"{summary[0].upper()}{summary[1:]}.\n\n{description}",
-                             epilog="examples:\n" + "\n".join(f"  {line}" for line in examples),
-                             formatter_class=_formatter, parents=[parent])
+        cmd = sub.add_parser(
+            name,
+            description=f"{summary[0].upper()}{summary[1:]}.\n\n{description}",
+            epilog="examples:\n" + "\n".join(f"  {line}" for line in examples),
+            formatter_class=_formatter,
+            parents=[parent],
+        )
         add_options(cmd)
         cmd.set_defaults(func=commands[name])
-    parser.description = ("Learn, reproduce and extend \"Predicting Sample Collision with Neural Networks\"\n"
-                          "(Tran, Denny, Ekenna): a neural network that tells a planner, faster than geometry,\n"
-                          "whether a robot configuration collides.\n\n"
-                          "commands (toolkit COMMAND --help explains each one):\n"
-                          + "\n".join(f"  {name:11}{summary}" for name, summary, *_ in SUBCOMMANDS)
-                          + "\n\n" + glossary())
+    parser.description = (
+        'Learn, reproduce and extend "Predicting Sample Collision with Neural Networks"\n'
+        "(Tran, Denny, Ekenna): a neural network that tells a planner, faster than geometry,\n"
+        "whether a robot configuration collides.\n\n"
+        "commands (toolkit COMMAND --help explains each one):\n"
+        + "\n".join(f"  {name:11}{summary}" for name, summary, *_ in SUBCOMMANDS)
+        + "\n\n"
+        + glossary()
+    )
     return parser
 
 

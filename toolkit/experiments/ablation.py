@@ -35,23 +35,50 @@ from toolkit.util import outputs
 STEPS: list[tuple[str, str, dict]] = [
     ("paper", "the paper's recipe (preset `paper`)", {}),
     ("cae_mean", "CAE loss: mean squared error over the cells (§IV-B1) instead of Eq. (1)'s sum", {"cae_loss": "mean"}),
-    ("cae_many", "CAE on 2000 generated grids: AdamW 1e-3, batch 100, 2500 steps, Eq. (1)'s sum",
-     {"cae_loss": "sum", "cae_workspaces": 2000, "cae_lr": 1e-3, "cae_batch": 100, "cae_max_steps": 2500,
-      "cae_epochs": 10_000}),
+    (
+        "cae_many",
+        "CAE on 2000 generated grids: AdamW 1e-3, batch 100, 2500 steps, Eq. (1)'s sum",
+        {
+            "cae_loss": "sum",
+            "cae_workspaces": 2000,
+            "cae_lr": 1e-3,
+            "cae_batch": 100,
+            "cae_max_steps": 2500,
+            "cae_epochs": 10_000,
+        },
+    ),
     ("no_dropout", "MLP without dropout (0.5 -> 0)", {"dropout": 0.0}),
-    ("adamw", "MLP: AdamW 3e-3, weight decay 1e-4, cosine schedule, batch 256", {
-        "optimizer": "adamw", "lr": 3e-3, "weight_decay": 1e-4, "cosine_schedule": True, "mlp_batch": 256}),
+    (
+        "adamw",
+        "MLP: AdamW 3e-3, weight decay 1e-4, cosine schedule, batch 256",
+        {"optimizer": "adamw", "lr": 3e-3, "weight_decay": 1e-4, "cosine_schedule": True, "mlp_batch": 256},
+    ),
     ("standardize", "MLP inputs standardized", {"standardize": True}),
-    ("more_workspaces", "1000 training workspaces instead of the paper's (100 samples each), 20 epochs",
-     {"n_seen": 1000, "mlp_epochs": 20}),
+    (
+        "more_workspaces",
+        "1000 training workspaces instead of the paper's (100 samples each), 20 epochs",
+        {"n_seen": 1000, "mlp_epochs": 20},
+    ),
     ("wider", "MLP 64-32 instead of the paper's widths", {"mlp_hidden": (64, 32)}),
-    ("local", "MLP input: occupancy patch and link features beside z and q (toolkit.learning.encoding)", {"encoding": "local"}),
+    (
+        "local",
+        "MLP input: occupancy patch and link features beside z and q (toolkit.learning.encoding)",
+        {"encoding": "local"},
+    ),
     ("no_z", "without z: the MLP sees the patch and pose only", {"latent_input": False}),
 ]
 # The CAE settings a row may change; a row that changes none reuses the CAE above it (the MLP optimizer's weight
 # decay and schedule, which train_cae would also read, are the MLP's here: the CAE keeps row 2's training).
-CAE_FIELDS = ("cae_optimizer", "cae_lr", "cae_lambda", "cae_epochs", "cae_batch", "cae_max_steps", "cae_loss",
-              "cae_workspaces")
+CAE_FIELDS = (
+    "cae_optimizer",
+    "cae_lr",
+    "cae_lambda",
+    "cae_epochs",
+    "cae_batch",
+    "cae_max_steps",
+    "cae_loss",
+    "cae_workspaces",
+)
 
 
 def step_presets(quick: bool = False) -> list[tuple[str, str, presets.Preset]]:
@@ -59,8 +86,9 @@ def step_presets(quick: bool = False) -> list[tuple[str, str, presets.Preset]]:
     rows, preset = [], presets.get("paper")
     for key, what, changes in STEPS:
         preset = replace(preset, name=f"ablation:{key}", **changes)
-        rows.append((key, what, replace(QUICK.shrink(preset), n_seen=preset.n_seen and QUICK.study_seen) if quick
-                     else preset))
+        rows.append(
+            (key, what, replace(QUICK.shrink(preset), n_seen=preset.n_seen and QUICK.study_seen) if quick else preset)
+        )
     return rows
 
 
@@ -76,8 +104,13 @@ def ablate(config: RunConfig, out: str | Path) -> list[dict]:
     rows = []
     for key, what, preset in step_presets(quick):
         row_config = replace(config, preset=preset, device="cpu")
-        rows.append(dict(stages.json(f"{key}_{preset.fingerprint()}", lambda: _row(stages, row_config, tests, caes)),
-                         key=key, change=what))
+        rows.append(
+            dict(
+                stages.json(f"{key}_{preset.fingerprint()}", lambda: _row(stages, row_config, tests, caes)),
+                key=key,
+                change=what,
+            )
+        )
     outputs.write_json(out / "ablation.json", {"scenario": scenario.name, "seed": seed, "quick": quick, "rows": rows})
     (out / "ablation.md").write_text(markdown(scenario.name, rows))
     return rows
@@ -94,15 +127,28 @@ def _row(stages: Stages, config: RunConfig, tests: dict, caes: dict) -> dict:
         trained.load_state_dict(torch.load(cae_file, weights_only=True))
     splits = dict(tests, train=pipeline.make_splits(config)["train"])
     began = time.perf_counter()
-    models = training.train_models(scenario, preset, splits, config.seed, progress=config.progress,
-                                   device=config.device, cae=True, trained_cae=trained)
+    models = training.train_models(
+        scenario,
+        preset,
+        splits,
+        config.seed,
+        progress=config.progress,
+        device=config.device,
+        cae=True,
+        trained_cae=trained,
+    )
     seconds = time.perf_counter() - began
     if trained is None:
         torch.save(models.predictor.cae.state_dict(), cae_file)
     caes[cae_key] = models.predictor.cae
     scores = training.evaluate(models, splits)
-    return {"cae": scores["cae"], "mlp": scores["mlp"], "train_seconds": seconds, "cae_trained": trained is None,
-            "preset": {k: v for k, v in asdict(preset).items() if k != "name"}}
+    return {
+        "cae": scores["cae"],
+        "mlp": scores["mlp"],
+        "train_seconds": seconds,
+        "cae_trained": trained is None,
+        "preset": {k: v for k, v in asdict(preset).items() if k != "name"},
+    }
 
 
 def _pct(x: float) -> str:
@@ -111,15 +157,23 @@ def _pct(x: float) -> str:
 
 def markdown(scenario_name: str, rows: list[dict]) -> str:
     """The ablation as a markdown table: accuracy / TPR / TNR in %, "always valid" beside the unseen tests."""
-    head = ("| # | change (cumulative) | CAE unseen rec. (all free) | seen acc / TPR / TNR | unseen balanced acc / TPR / TNR "
-            "| unseen validity-blind acc / TPR / TNR (always valid) | train s |")
-    lines = [f"## Ablation, {scenario_name}: the paper's recipe to ours, one change at a time", "", head,
-             "|" + " --- |" * 7]
+    head = (
+        "| # | change (cumulative) | CAE unseen rec. (all free) | seen acc / TPR / TNR | unseen balanced acc / TPR / TNR "
+        "| unseen validity-blind acc / TPR / TNR (always valid) | train s |"
+    )
+    lines = [
+        f"## Ablation, {scenario_name}: the paper's recipe to ours, one change at a time",
+        "",
+        head,
+        "|" + " --- |" * 7,
+    ]
     for i, r in enumerate(rows):
         mlp, cae = r["mlp"], r["cae"]
         trio = lambda m: " / ".join(_pct(m[k]) for k in ("acc", "tpr", "tnr"))
-        lines.append(f"| {i} | {r['change']} | {_pct(cae['unseen_acc'])} ({_pct(cae['unseen_all_free'])}) "
-                     f"| {trio(mlp['seen'])} | {trio(mlp['unseen'])} "
-                     f"| {trio(mlp['unseen_uniform'])} ({_pct(mlp['unseen_uniform']['always_valid'])}) "
-                     f"| {r['train_seconds']:.0f}{'' if r['cae_trained'] else ' (CAE reused)'} |")
+        lines.append(
+            f"| {i} | {r['change']} | {_pct(cae['unseen_acc'])} ({_pct(cae['unseen_all_free'])}) "
+            f"| {trio(mlp['seen'])} | {trio(mlp['unseen'])} "
+            f"| {trio(mlp['unseen_uniform'])} ({_pct(mlp['unseen_uniform']['always_valid'])}) "
+            f"| {r['train_seconds']:.0f}{'' if r['cae_trained'] else ' (CAE reused)'} |"
+        )
     return "\n".join(lines) + "\n"

@@ -43,9 +43,22 @@ from toolkit.planning.local_planner import (
 from toolkit.planning.prm import PRMOptions
 from toolkit.scenarios import Scenario
 
-__all__ = ["edge_checks", "edge_checks_at", "exact_throughput", "in_turns", "learned_throughput", "median_rate",
-           "median_seconds", "planning_ratios", "prediction_ratios", "short_valid_segments", "throughput",
-           "untrained_models", "versus_ompl", "versus_ompl_markdown"]
+__all__ = [
+    "edge_checks",
+    "edge_checks_at",
+    "exact_throughput",
+    "in_turns",
+    "learned_throughput",
+    "median_rate",
+    "median_seconds",
+    "planning_ratios",
+    "prediction_ratios",
+    "short_valid_segments",
+    "throughput",
+    "untrained_models",
+    "versus_ompl",
+    "versus_ompl_markdown",
+]
 
 
 def median_seconds(fn, repeats: int = 5) -> float:
@@ -84,15 +97,29 @@ def in_turns(calls: dict[str, tuple[Callable[[], object], int]], repeats: int = 
     return {name: n / float(np.median(seconds[name])) for name, (_, n) in calls.items()}
 
 
-def throughput(scenario: Scenario, preset: str = "paper", batch: int | None = None, seed: int = 0, repeats: int = 5,
-               models: TrainedModels | None = None) -> dict[str, float]:
+def throughput(
+    scenario: Scenario,
+    preset: str = "paper",
+    batch: int | None = None,
+    seed: int = 0,
+    repeats: int = 5,
+    models: TrainedModels | None = None,
+) -> dict[str, float]:
     """``{"exact_cfg_per_s", "learned_cfg_per_s", "ratio"}``: both checkers timed in turns (:func:`in_turns`),
     at ``batch`` configurations a call (default: 20,000 exact, 10,000 learned)."""
     batches = {"batch": batch} if batch else {}
-    rates = in_turns({"exact": _exact_call(scenario, seed=seed, **batches),
-                      "learned": _learned_call(scenario, preset, seed=seed, models=models, **batches)}, repeats)
-    return {"exact_cfg_per_s": rates["exact"], "learned_cfg_per_s": rates["learned"],
-            "ratio": rates["learned"] / rates["exact"]}
+    rates = in_turns(
+        {
+            "exact": _exact_call(scenario, seed=seed, **batches),
+            "learned": _learned_call(scenario, preset, seed=seed, models=models, **batches),
+        },
+        repeats,
+    )
+    return {
+        "exact_cfg_per_s": rates["exact"],
+        "learned_cfg_per_s": rates["learned"],
+        "ratio": rates["learned"] / rates["exact"],
+    }
 
 
 def exact_throughput(scenario: Scenario, batch: int = 20_000, seed: int = 0, repeats: int = 5) -> float:
@@ -100,8 +127,14 @@ def exact_throughput(scenario: Scenario, batch: int = 20_000, seed: int = 0, rep
     return median_rate(*_exact_call(scenario, batch, seed), repeats)
 
 
-def learned_throughput(scenario: Scenario, preset: str = "paper", batch: int = 10_000, seed: int = 0,
-                       repeats: int = 5, models: TrainedModels | None = None) -> float:
+def learned_throughput(
+    scenario: Scenario,
+    preset: str = "paper",
+    batch: int = 10_000,
+    seed: int = 0,
+    repeats: int = 5,
+    models: TrainedModels | None = None,
+) -> float:
     """Predictions per second of a :class:`~toolkit.learned.LearnedChecker` at ``batch``, the workspace encoded once.
 
     The networks are ``models`` or, by default, untrained ones of the preset's sizes: their speed
@@ -118,8 +151,9 @@ def _exact_call(scenario: Scenario, batch: int = 20_000, seed: int = 0) -> tuple
     return (lambda: checker.are_valid(Q)), batch
 
 
-def _learned_call(scenario: Scenario, preset: str = "paper", batch: int = 10_000, seed: int = 0,
-                  models: TrainedModels | None = None) -> tuple[Callable[[], object], int]:
+def _learned_call(
+    scenario: Scenario, preset: str = "paper", batch: int = 10_000, seed: int = 0, models: TrainedModels | None = None
+) -> tuple[Callable[[], object], int]:
     """A learned checker (``models``, or :func:`untrained_models` of the preset) asked about ``batch`` uniform
     samples in a query workspace, and ``batch``."""
     models = untrained_models(scenario, preset, seed) if models is None else models
@@ -151,29 +185,40 @@ def edge_checks(scenario: Scenario, n_segments: int = 300, seed: int = 0, repeat
     Q0, Q1 = short_valid_segments(exact, n_segments, np.random.default_rng(seed))  # (E, dof) each
     resolution = scenario.plan_resolution or default_resolution(robot)
     spacing = resolution * PRMOptions().certify_spacing
-    return {name: edge_checks_at(exact, Q0, Q1, r, spacing, repeats)
-            for name, r in (("resolution", resolution), ("finer", resolution / 10))}
+    return {
+        name: edge_checks_at(exact, Q0, Q1, r, spacing, repeats)
+        for name, r in (("resolution", resolution), ("finer", resolution / 10))
+    }
 
 
-def edge_checks_at(exact: CollisionChecker, Q0: np.ndarray, Q1: np.ndarray, resolution: float, spacing: float,
-                   repeats: int = 5) -> dict[str, float]:
+def edge_checks_at(
+    exact: CollisionChecker, Q0: np.ndarray, Q1: np.ndarray, resolution: float, spacing: float, repeats: int = 5
+) -> dict[str, float]:
     """:func:`edge_checks`' row at one ``resolution``: configurations checked (and clearances bounded) and median
     seconds of ``check_edges`` and of ``certify_edges`` (certificates ``spacing`` apart) on ``Q0 -> Q1``."""
     exact.reset_count()
     valid = check_edges(exact, Q0, Q1, resolution)  # (E,)
-    row = {"resolution": resolution, "segments": len(Q0), "valid": float(valid.mean()),
-           "check_edges_checked": exact.n_checked}
+    row = {
+        "resolution": resolution,
+        "segments": len(Q0),
+        "valid": float(valid.mean()),
+        "check_edges_checked": exact.n_checked,
+    }
     exact.reset_count()
     certify_edges(exact, Q0, Q1, resolution, spacing)
-    row.update(certify_edges_checked=exact.n_checked, certify_edges_bounded=exact.n_bounded,
-               check_edges_s=median_seconds(lambda: check_edges(exact, Q0, Q1, resolution), repeats),
-               certify_edges_s=median_seconds(lambda: certify_edges(exact, Q0, Q1, resolution, spacing), repeats))
+    row.update(
+        certify_edges_checked=exact.n_checked,
+        certify_edges_bounded=exact.n_bounded,
+        check_edges_s=median_seconds(lambda: check_edges(exact, Q0, Q1, resolution), repeats),
+        certify_edges_s=median_seconds(lambda: certify_edges(exact, Q0, Q1, resolution, spacing), repeats),
+    )
     row["speedup"] = row["check_edges_s"] / row["certify_edges_s"]
     return row
 
 
-def short_valid_segments(exact: CollisionChecker, n_segments: int, rng: np.random.Generator,
-                         step: float = 0.03) -> tuple[np.ndarray, np.ndarray]:
+def short_valid_segments(
+    exact: CollisionChecker, n_segments: int, rng: np.random.Generator, step: float = 0.03
+) -> tuple[np.ndarray, np.ndarray]:
     """Up to ``n_segments`` segments ``(Q0, Q1)``, ``(E, dof)`` each: valid uniform starts, ends a normal step of
     ``step`` x the bounds away (clipped to them) and valid too; what is between them may not be."""
     robot = exact.robot
@@ -184,9 +229,15 @@ def short_valid_segments(exact: CollisionChecker, n_segments: int, rng: np.rando
     return Q0[keep][:n_segments], Q1[keep][:n_segments]
 
 
-def planning_ratios(scenario: Scenario, models: TrainedModels, n_workspaces: int = 2, per_workspace: int = 2,
-                    seed: int = 0, samplers: tuple[str, ...] = paper_numbers.SAMPLERS,
-                    overrides: dict | None = None) -> dict[str, dict]:
+def planning_ratios(
+    scenario: Scenario,
+    models: TrainedModels,
+    n_workspaces: int = 2,
+    per_workspace: int = 2,
+    seed: int = 0,
+    samplers: tuple[str, ...] = paper_numbers.SAMPLERS,
+    overrides: dict | None = None,
+) -> dict[str, dict]:
     """Per sampler, PRM on the first queries of the paper's set, with ``models`` and without, in turns:
     ``{"sampling_ratio", "total_ratio"}`` (with / without, mean times), the same of the medians, both
     success rates and the sampling rounds and repairs a query each mode needed (means).
@@ -195,25 +246,28 @@ def planning_ratios(scenario: Scenario, models: TrainedModels, n_workspaces: int
     preset's: the same queries with one option changed measure what that option does.
     ``samplers``: the paper's four by default, or any registered ones (``sampling.register_sampler``).
     """
-    if unknown := [name for name in samplers if name not in sampling.SAMPLERS]:
-        raise ValueError(f"unknown sampler(s) {unknown}; choose from {sorted(sampling.SAMPLERS)}")
+    samplers = sampling.check_names(samplers)
     fields = {f.name for f in dataclasses.fields(PRMOptions)}
     if unknown := sorted(set(overrides or {}) - fields):
         raise ValueError(f"unknown planner option(s) {unknown}; PRMOptions has {sorted(fields)}")
     options = queries.default_options(scenario, None, **{**models.preset.planner_options(), **(overrides or {})})
     per_workspace = min(per_workspace, scenario.queries_per_workspace)
     query_set = queries.make_queries(scenario, seed, n_workspaces, per_workspace)
-    table = queries.compare_prediction(scenario, query_set, lambda ws: LearnedChecker(ws, models), samplers,
-                                       options, seed)
+    table = queries.compare_prediction(
+        scenario, query_set, lambda ws: LearnedChecker(ws, models), samplers, options, seed
+    )
     return {sampler: prediction_ratios(row) for sampler, row in table.items()}
 
 
 def prediction_ratios(row: dict) -> dict[str, float]:
     """One sampler's row of ``queries.compare_prediction``, as :func:`planning_ratios` reports it."""
     with_, without = row["with"], row["without"]
-    return {"sampling_ratio": row["sampling_ratio"], "total_ratio": row["total_ratio"],
-            "sampling_ratio_median": with_["sampling_s_median"] / without["sampling_s_median"],
-            "total_ratio_median": with_["total_s_median"] / without["total_s_median"],
-            "success_without": without["success_rate"], "success_with": with_["success_rate"],
-            **{f"{key}_{mode}": row[mode][key] for key in ("rounds", "repairs") for mode in ("without", "with")}}
-
+    return {
+        "sampling_ratio": row["sampling_ratio"],
+        "total_ratio": row["total_ratio"],
+        "sampling_ratio_median": with_["sampling_s_median"] / without["sampling_s_median"],
+        "total_ratio_median": with_["total_s_median"] / without["total_s_median"],
+        "success_without": without["success_rate"],
+        "success_with": with_["success_rate"],
+        **{f"{key}_{mode}": row[mode][key] for key in ("rounds", "repairs") for mode in ("without", "with")},
+    }

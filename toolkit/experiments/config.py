@@ -14,15 +14,15 @@ and every size they change is in :data:`QUICK`, here.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from types import MappingProxyType
-from typing import Mapping
 
 from toolkit import scenarios
 from toolkit.experiments import paper_numbers
 from toolkit.learning import presets
-from toolkit.planning import sampling
 from toolkit.learning.presets import Preset
+from toolkit.planning import sampling
 from toolkit.scenarios import Scenario
 
 
@@ -36,11 +36,13 @@ class QuickSizes:
     samples_factor: int = 4  # at most this many times the paper's labelled samples per workspace
     cae_workspaces: int = 40  # at most this many generated grids for the CAE
     cae_max_steps: int = 20  # at most this many CAE training steps
-    queries: Mapping[str, tuple[int, int]] = field(default_factory=lambda: MappingProxyType(
-        {"2ds": (2, 2), "3do": (1, 2), "3dc7": (3, 1), "3dc9": (3, 1)}))  # (workspaces, pairs each) by scenario
+    queries: Mapping[str, tuple[int, int]] = field(
+        default_factory=lambda: MappingProxyType({"2ds": (2, 2), "3do": (1, 2), "3dc7": (3, 1), "3dc9": (3, 1)})
+    )  # (workspaces, pairs each) by scenario
     default_queries: tuple[int, int] = (2, 1)  # for a scenario of your own
-    plan_samples: Mapping[str, int] = field(default_factory=lambda: MappingProxyType(
-        {"3do": 400}))  # |S| where the paper's would take minutes
+    plan_samples: Mapping[str, int] = field(
+        default_factory=lambda: MappingProxyType({"3do": 400})
+    )  # |S| where the paper's would take minutes
     max_rounds: int = 5  # quick models predict poorly: planning gives up sooner
     throughput_repeats: int = 3  # timed calls per checker (a full run: 7)
     study_seen: int = 12  # ablation rows that ask for more training workspaces get this many
@@ -50,11 +52,15 @@ class QuickSizes:
         """The same recipe with few epochs and samples (marked ``quick``, so a checkpoint remembers it)."""
         if preset.quick:
             return preset
-        return replace(preset, quick=True, cae_epochs=max(1, preset.cae_epochs // self.cae_epochs_divisor),
-                       mlp_epochs=max(2, preset.mlp_epochs // self.mlp_epochs_divisor),
-                       samples_factor=min(preset.samples_factor, self.samples_factor),
-                       cae_workspaces=min(preset.cae_workspaces, self.cae_workspaces),
-                       cae_max_steps=min(preset.cae_max_steps, self.cae_max_steps))
+        return replace(
+            preset,
+            quick=True,
+            cae_epochs=max(1, preset.cae_epochs // self.cae_epochs_divisor),
+            mlp_epochs=max(2, preset.mlp_epochs // self.mlp_epochs_divisor),
+            samples_factor=min(preset.samples_factor, self.samples_factor),
+            cae_workspaces=min(preset.cae_workspaces, self.cae_workspaces),
+            cae_max_steps=min(preset.cae_max_steps, self.cae_max_steps),
+        )
 
 
 QUICK = QuickSizes()
@@ -76,14 +82,23 @@ class RunConfig:
     #   a worker process imports them again, since it starts without what the parent registered
 
     @classmethod
-    def create(cls, scenario: str | Scenario, preset: str | Preset = "paper", *, seed: int = 0, quick: bool = False,
-               workers: int | None = None, progress: bool = True, device: str | None = None,
-               samplers: tuple[str, ...] = paper_numbers.SAMPLERS, imports: tuple[str, ...] = (),
-               **preset_changes) -> RunConfig:
+    def create(
+        cls,
+        scenario: str | Scenario,
+        preset: str | Preset = "paper",
+        *,
+        seed: int = 0,
+        quick: bool = False,
+        workers: int | None = None,
+        progress: bool = True,
+        device: str | None = None,
+        samplers: tuple[str, ...] = paper_numbers.SAMPLERS,
+        imports: tuple[str, ...] = (),
+        **preset_changes,
+    ) -> RunConfig:
         """Resolve names (``scenarios.get``, ``presets.get``, the sampler registry) once; ``preset_changes`` replace
         preset fields after quick shrinking (e.g. ``cae_epochs=5``). A seed is a whole number in ``0 .. 2**32 - 1``."""
-        if unknown := [s for s in samplers if s not in sampling.SAMPLERS]:
-            raise ValueError(f"unknown sampler(s) {unknown}; choose from {sorted(sampling.SAMPLERS)}")
+        samplers = sampling.check_names(samplers)
         scenario = scenarios.get(scenario) if isinstance(scenario, str) else scenario
         recipe = presets.get(preset) if isinstance(preset, str) else preset
         recipe = QUICK.shrink(recipe) if quick else recipe
@@ -93,8 +108,17 @@ class RunConfig:
             raise ValueError(f"seed must be a whole number in 0..{2**32 - 1}, got {seed!r}")
         if workers is not None and workers < 1:
             raise ValueError(f"workers must be 1 or more, got {workers!r}")
-        return cls(scenario, replace(recipe, **preset_changes), int(seed), bool(quick), workers, progress, device,
-                   tuple(samplers), tuple(imports))
+        return cls(
+            scenario,
+            replace(recipe, **preset_changes),
+            int(seed),
+            bool(quick),
+            workers,
+            progress,
+            device,
+            tuple(samplers),
+            tuple(imports),
+        )
 
     def settings(self) -> dict:
         """What makes the run, as ``results.json`` records it: a folder holding another run's cache is refused."""
@@ -121,8 +145,10 @@ class RunConfig:
         """``PRMOptions`` fields of this run: the paper's |S|, and fewer rounds and samples when quick."""
         if not self.quick:
             return {"n_samples": self.scenario.plan_samples}
-        return {"n_samples": QUICK.plan_samples.get(self.scenario.name, self.scenario.plan_samples),
-                "max_rounds": QUICK.max_rounds}
+        return {
+            "n_samples": QUICK.plan_samples.get(self.scenario.name, self.scenario.plan_samples),
+            "max_rounds": QUICK.max_rounds,
+        }
 
     def throughput_repeats(self) -> int:
         """Timed calls per checker in the reproduction's throughput stage."""

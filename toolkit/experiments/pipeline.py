@@ -26,18 +26,25 @@ from toolkit.learning.training import TrainedModels
 
 def make_splits(config: RunConfig) -> dict[str, CollisionDataset]:
     """The ``train``, ``seen_test`` and ``unseen_test`` splits of the run (its counts and samples per workspace)."""
-    return data.make_splits(config.scenario, config.seed, samples_per_workspace=config.samples_per_workspace(),
-                            progress=config.progress, **config.workspace_counts())
+    return data.make_splits(
+        config.scenario,
+        config.seed,
+        samples_per_workspace=config.samples_per_workspace(),
+        progress=config.progress,
+        **config.workspace_counts(),
+    )
 
 
 def train(config: RunConfig, splits: dict[str, CollisionDataset], *, cae: bool | None = None) -> TrainedModels:
     """The run's preset trained on ``splits["train"]``; ``cae``: as :func:`toolkit.learning.training.train_models`."""
-    return training.train_models(config.scenario, config.preset, splits, config.seed, progress=config.progress,
-                                 device=config.device, cae=cae)
+    return training.train_models(
+        config.scenario, config.preset, splits, config.seed, progress=config.progress, device=config.device, cae=cae
+    )
 
 
-def train_and_save(config: RunConfig, folder: str | Path, *, cae: bool | None = None,
-                   overwrite: bool = False) -> tuple[TrainedModels, dict, Path]:
+def train_and_save(
+    config: RunConfig, folder: str | Path, *, cae: bool | None = None, overwrite: bool = False
+) -> tuple[TrainedModels, dict, Path]:
     """Make the data, train, evaluate and write a checkpoint folder: the models, their scores and the folder."""
     splits = make_splits(config)
     models = train(config, splits, cae=cae)

@@ -40,15 +40,24 @@ from toolkit.learning import checkpoints, training
 from toolkit.learning.data import SPLITS, CollisionDataset
 from toolkit.learning.learned import LearnedChecker
 from toolkit.planning import queries
+from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.util import outputs, plugins
 
 
 def finished_stages(out: str | Path) -> list[str]:
     """The stages whose products are cached in ``out/cache``, in the order they run: what a rerun reuses."""
     cache = Path(out) / "cache"
-    done = [name for name, files in (("data", _data_paths(cache).values()), ("models", [cache / "checkpoint"]),
-                                     ("learning", [cache / "learning.json"])) if all(p.exists() for p in files)]
-    planned = sorted(p.stem for p in cache.glob("planning_*.json"))
+    done = [
+        name
+        for name, files in (
+            ("data", _data_paths(cache).values()),
+            ("models", [cache / "checkpoint"]),
+            ("learning", [cache / "learning.json"]),
+        )
+        if all(p.exists() for p in files)
+    ]
+    order = {f"planning_{s}": i for i, s in enumerate(PAPER_SAMPLERS)}  # the paper's four in its order, then others
+    planned = sorted((p.stem for p in cache.glob("planning_*.json")), key=lambda name: (order.get(name, 4), name))
     return done + planned + (["throughput"] if (cache / "throughput.json").exists() else [])
 
 
@@ -76,8 +85,9 @@ def models_stage(stages: Stages, config: RunConfig, splits: dict[str, CollisionD
     """Stage 2: the CAE and MLP, trained once and kept as a checkpoint folder (the CAE always: Table 1 reports it)."""
     folder = stages.cache / "checkpoint"
     if folder.exists():
-        return checkpoints.load_models(folder, config.scenario.name,
-                                       remedy=f"delete {folder} to train again (the models stage)")
+        return checkpoints.load_models(
+            folder, config.scenario.name, remedy=f"delete {folder} to train again (the models stage)"
+        )
     began = time.perf_counter()
     models = pipeline.train(config, splits, cae=True)
     checkpoints.save_checkpoint(models, folder)  # the folder appears whole or not at all
@@ -105,8 +115,10 @@ def planning_stage(stages: Stages, config: RunConfig, models: training.TrainedMo
     todo = [s for s in config.samplers if not stages.has(f"planning_{s}")]
     job = partial(plan_sampler, config, str(stages.cache / "checkpoint"), models.preset.planner_options())
     workers = config.workers or os.cpu_count() or 1
-    with (tqdm(total=len(todo), desc=f"planning {config.scenario.name}", disable=not stages.progress,
-               leave=False) as bar, processes(min(workers, len(todo))) as pool):
+    with (
+        tqdm(total=len(todo), desc=f"planning {config.scenario.name}", disable=not stages.progress, leave=False) as bar,
+        processes(min(workers, len(todo))) as pool,
+    ):
         if pool is None:
             runs = map(job, todo)  # one after another, in this process
         else:  # as each finishes
@@ -149,13 +161,25 @@ def reproduce(config: RunConfig, out: str | Path) -> dict:
     models = models_stage(stages, config, splits)
     learning = stages.json("learning", lambda: learning_scores(models, splits))
     planning = planning_stage(stages, config, models)
-    throughput = stages.json("throughput", lambda: bench.throughput(config.scenario, config.preset.name,
-                                                                   seed=config.seed, repeats=config.throughput_repeats()))
-    results = dict(settings, cae=learning["cae"], mlp=learning["mlp"], threshold=learning["threshold"],
-                   planning=planning, throughput=throughput,
-                   improvement={"sampling": improvement(planning, "sampling_s"), "total": improvement(planning, "total_s")},
-                   stage_seconds=stages.seconds, recomputed=stages.recomputed, wall_seconds=time.perf_counter() - began,
-                   versions={"torch": torch.__version__, "numpy": np.__version__})
+    throughput = stages.json(
+        "throughput",
+        lambda: bench.throughput(
+            config.scenario, config.preset.name, seed=config.seed, repeats=config.throughput_repeats()
+        ),
+    )
+    results = dict(
+        settings,
+        cae=learning["cae"],
+        mlp=learning["mlp"],
+        threshold=learning["threshold"],
+        planning=planning,
+        throughput=throughput,
+        improvement={"sampling": improvement(planning, "sampling_s"), "total": improvement(planning, "total_s")},
+        stage_seconds=stages.seconds,
+        recomputed=stages.recomputed,
+        wall_seconds=time.perf_counter() - began,
+        versions={"torch": torch.__version__, "numpy": np.__version__},
+    )
     outputs.write_json(out / "results.json", results)
     (out / "tables.md").write_text(tables.tables_markdown(results))
     _figures(out, config, models, splits, learning, planning)
@@ -169,8 +193,9 @@ def _figures(out: Path, config: RunConfig, models, splits, learning: dict, plann
     figures = {
         "cae_reconstruction.png": plots.cae_reconstruction(grids, decoded),
         "planning_times.png": plots.planning_times(planning, f"{config.scenario.title}: time per query"),
-        "mlp_threshold.png": plots.threshold_sweep(np.array(learning["unseen_probability"]),
-                                                   np.array(learning["unseen_valid"]), learning["threshold"]),
+        "mlp_threshold.png": plots.threshold_sweep(
+            np.array(learning["unseen_probability"]), np.array(learning["unseen_valid"]), learning["threshold"]
+        ),
     }
     for name, fig in figures.items():
         fig.savefig(out / name, dpi=110)
@@ -183,8 +208,9 @@ def reproduce_many(configs: list[RunConfig], out: str | Path) -> dict[str, dict]
     out = Path(out)
     names = {config.scenario.name for config in configs}
     if out.is_dir() and (other := sorted(p.name for p in out.iterdir() if p.name not in {*names, "tables.md"})):
-        raise ValueError(f"--out {out} holds {other}, not the scenario folders of a reproduction; choose a new or "
-                         "empty folder")
+        raise ValueError(
+            f"--out {out} holds {other}, not the scenario folders of a reproduction; choose a new or empty folder"
+        )
     for config in configs:
         check_out(out / config.scenario.name, config.settings())
     results = {config.scenario.name: reproduce(config, out / config.scenario.name) for config in configs}

@@ -11,8 +11,8 @@ refused before any work (:func:`check_out`), since its stages would not apply.
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from pathlib import Path
-from typing import Callable
 
 from toolkit.learning import checkpoints
 from toolkit.util import outputs
@@ -32,8 +32,11 @@ class Stages:
         self.progress = progress
         outputs.write_json(self.cache / "settings.json", settings)
         self._seconds_file = self.cache / "stage_seconds.json"
-        self.seconds: dict[str, float] = (outputs.read_json(self._seconds_file, "delete it (the cached stages' "
-                                                            "times will read n/a)") if self._seconds_file.exists() else {})
+        self.seconds: dict[str, float] = (
+            outputs.read_json(self._seconds_file, "delete it (the cached stages' times will read n/a)")
+            if self._seconds_file.exists()
+            else {}
+        )
         self.recomputed: list[str] = []
 
     def took(self, name: str, seconds: float) -> None:
@@ -76,5 +79,7 @@ def check_out(out: Path, settings: dict) -> None:
     if recorded.exists():
         previous = outputs.read_json(recorded, f"delete {out} to start again")
         if previous != settings:
-            raise ValueError(f"{out} holds a run with other settings {previous}; "
-                             f"choose another --out, or delete {out} to start again")
+            raise ValueError(
+                f"{out} holds a run with other settings {previous}; "
+                f"choose another --out, or delete {out} to start again"
+            )

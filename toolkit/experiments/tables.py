@@ -43,8 +43,11 @@ def cae_row(run: dict) -> list[str]:
     cae, paper = run["cae"], paper_numbers.CAE.get(run["scenario"], {})
     if "seen_acc" not in cae:  # a checkpoint whose CAE was left untrained (toolkit train without --cae)
         return [run["scenario"], "not trained", "not trained", "n/a"]
-    return ([run["scenario"]] + [ours_paper(cae[k], paper.get(k)) for k in ("seen_acc", "unseen_acc")]
-            + [f"{percent(cae['seen_all_free'])} / {percent(cae['unseen_all_free'])}"])
+    return (
+        [run["scenario"]]
+        + [ours_paper(cae[k], paper.get(k)) for k in ("seen_acc", "unseen_acc")]
+        + [f"{percent(cae['seen_all_free'])} / {percent(cae['unseen_all_free'])}"]
+    )
 
 
 def mlp_row(run: dict) -> list[str]:
@@ -52,18 +55,22 @@ def mlp_row(run: dict) -> list[str]:
     balanced unseen samples; "always valid" beside each unseen test."""
     mlp, paper = run["mlp"], paper_numbers.MLP.get(run["scenario"], {})
     trio = ("acc", "tpr", "tnr")
-    return ([run["scenario"]]
-            + [ours_paper(mlp["seen"][m], paper.get("seen", {}).get(m)) for m in trio]
-            + [ours_paper(mlp["unseen_uniform"][m], paper.get("unseen", {}).get(m)) for m in trio]
-            + [percent(mlp["unseen_uniform"]["always_valid"])]
-            + [f"**{percent(mlp['unseen'][m])}**" for m in trio] + [percent(mlp["unseen"]["always_valid"])])
+    return (
+        [run["scenario"]]
+        + [ours_paper(mlp["seen"][m], paper.get("seen", {}).get(m)) for m in trio]
+        + [ours_paper(mlp["unseen_uniform"][m], paper.get("unseen", {}).get(m)) for m in trio]
+        + [percent(mlp["unseen_uniform"]["always_valid"])]
+        + [f"**{percent(mlp['unseen'][m])}**" for m in trio]
+        + [percent(mlp["unseen"]["always_valid"])]
+    )
 
 
 def improvement_row(run: dict, samplers: list[str]) -> list[str]:
     """Table 3: the time improvement ratio ``(without - with) / without``, sampling then total, per sampler."""
     paper = paper_numbers.IMPROVEMENT.get(run["scenario"], {})
-    return [run["scenario"]] + [ours_paper(run["improvement"][k][s], paper.get(k, {}).get(s))
-                                for k in ("sampling", "total") for s in samplers]
+    return [run["scenario"]] + [
+        ours_paper(run["improvement"][k][s], paper.get(k, {}).get(s)) for k in ("sampling", "total") for s in samplers
+    ]
 
 
 def time_rows(run: dict, samplers: list[str]) -> list[list[str]]:
@@ -71,18 +78,23 @@ def time_rows(run: dict, samplers: list[str]) -> list[list[str]]:
     rows, paper = [], paper_numbers.TIMES.get(run["scenario"], {})
     for s in samplers:
         planning = run["planning"][s]
-        cells = [f"**{mean_std((planning[m][key], planning[m][key + '_std']))}** / "
-                 f"{mean_std(paper.get(key, {}).get(s, (None, None))[i])}"
-                 for key in ("sampling_s", "total_s") for i, m in enumerate(MODES)]
+        cells = [
+            f"**{mean_std((planning[m][key], planning[m][key + '_std']))}** / "
+            f"{mean_std(paper.get(key, {}).get(s, (None, None))[i])}"
+            for key in ("sampling_s", "total_s")
+            for i, m in enumerate(MODES)
+        ]
         rates = [" / ".join(percent(planning[m][rate]) for m in MODES) for rate in ("success_rate", "path_valid_rate")]
         rows.append([run["scenario"], s] + cells + rates)
     return rows
 
 
-TABLE_2_NOTE = ("*Seen*: balanced samples (half valid) in training workspaces. *Unseen*: as the paper (§IV-A), "
-                "validity-blind samples in unseen workspaces (2DS 200, 3DO 2000, 3DC 400 each); *always valid*: the "
-                "accuracy of answering \"valid\" on the same samples. *Balanced unseen*: half-valid samples in the same "
-                "workspaces (ours only; the paper reports none).")
+TABLE_2_NOTE = (
+    "*Seen*: balanced samples (half valid) in training workspaces. *Unseen*: as the paper (§IV-A), "
+    "validity-blind samples in unseen workspaces (2DS 200, 3DO 2000, 3DC 400 each); *always valid*: the "
+    'accuracy of answering "valid" on the same samples. *Balanced unseen*: half-valid samples in the same '
+    "workspaces (ours only; the paper reports none)."
+)
 
 
 def paper_tables(runs: list[dict]) -> list[str]:
@@ -90,20 +102,53 @@ def paper_tables(runs: list[dict]) -> list[str]:
     samplers = samplers_of(runs)
     thresholds = ", ".join(f"{r['scenario']} {r['threshold']:.2f}" for r in runs)
     by_sampler = [f"Sampling {s}" for s in samplers] + [f"Total {s}" for s in samplers]
-    return (["## Table 1: CAE reconstruction accuracy", ""]
-            + table(["", "Seen", "Unseen", "all free: Seen / Unseen"], [cae_row(r) for r in runs])
-            + ["", "*All free*: the accuracy of a CAE that ignores its input and answers \"free\" everywhere."]
-            + ["", "## Table 2: MLP accuracy, TPR, TNR", ""]
-            + table(["", "Seen Acc", "Seen TPR", "Seen TNR", "Unseen Acc", "Unseen TPR", "Unseen TNR",
-                     "Unseen always valid", "Balanced unseen Acc", "TPR", "TNR", "always valid"],
-                    [mlp_row(r) for r in runs])
-            + ["", TABLE_2_NOTE, "", f"Decision threshold on P(valid): {thresholds}.", "",
-               "## Table 3: time improvement ratio (without − with) / without", ""]
-            + table([""] + by_sampler, [improvement_row(r, samplers) for r in runs])
-            + ["", "## Times behind Table 3 (seconds per query, mean ± std; ours / paper)", ""]
-            + table(["", "sampler", "sampling without", "sampling with", "total without", "total with",
-                     "success without / with", "paths valid without / with"],
-                    [row for r in runs for row in time_rows(r, samplers)]))
+    return (
+        ["## Table 1: CAE reconstruction accuracy", ""]
+        + table(["", "Seen", "Unseen", "all free: Seen / Unseen"], [cae_row(r) for r in runs])
+        + ["", '*All free*: the accuracy of a CAE that ignores its input and answers "free" everywhere.']
+        + ["", "## Table 2: MLP accuracy, TPR, TNR", ""]
+        + table(
+            [
+                "",
+                "Seen Acc",
+                "Seen TPR",
+                "Seen TNR",
+                "Unseen Acc",
+                "Unseen TPR",
+                "Unseen TNR",
+                "Unseen always valid",
+                "Balanced unseen Acc",
+                "TPR",
+                "TNR",
+                "always valid",
+            ],
+            [mlp_row(r) for r in runs],
+        )
+        + [
+            "",
+            TABLE_2_NOTE,
+            "",
+            f"Decision threshold on P(valid): {thresholds}.",
+            "",
+            "## Table 3: time improvement ratio (without − with) / without",
+            "",
+        ]
+        + table([""] + by_sampler, [improvement_row(r, samplers) for r in runs])
+        + ["", "## Times behind Table 3 (seconds per query, mean ± std; ours / paper)", ""]
+        + table(
+            [
+                "",
+                "sampler",
+                "sampling without",
+                "sampling with",
+                "total without",
+                "total with",
+                "success without / with",
+                "paths valid without / with",
+            ],
+            [row for r in runs for row in time_rows(r, samplers)],
+        )
+    )
 
 
 def median_ratios(runs: list[dict]) -> list[str]:
@@ -113,10 +158,13 @@ def median_ratios(runs: list[dict]) -> list[str]:
     def ratio(planning: dict, key: str) -> str:
         return f"{planning['with'][key + '_median'] / planning['without'][key + '_median']:.2f}"
 
-    rows = [[r["scenario"]] + [ratio(r["planning"][s], key) for key in ("sampling_s", "total_s") for s in samplers]
-            for r in runs]
-    return (["## Time with / without prediction, medians over the queries", ""]
-            + table([""] + [f"Sampling {s}" for s in samplers] + [f"Total {s}" for s in samplers], rows))
+    rows = [
+        [r["scenario"]] + [ratio(r["planning"][s], key) for key in ("sampling_s", "total_s") for s in samplers]
+        for r in runs
+    ]
+    return ["## Time with / without prediction, medians over the queries", ""] + table(
+        [""] + [f"Sampling {s}" for s in samplers] + [f"Total {s}" for s in samplers], rows
+    )
 
 
 def run_costs(runs: list[dict]) -> list[str]:
@@ -125,20 +173,27 @@ def run_costs(runs: list[dict]) -> list[str]:
     for r in runs:
         t, seconds = r["throughput"], r["stage_seconds"]
         planning = sum(seconds.get(f"planning_{s}", 0.0) for s in r["planning"])
-        rows.append([r["scenario"], f"{t['exact_cfg_per_s']:,.0f}", f"{t['learned_cfg_per_s']:,.0f}", f"{t['ratio']:.3g}"]
-                    + [f"{seconds[k]:.0f}" if k in seconds else "n/a" for k in ("data", "models")]
-                    + [f"{planning:.0f}"])
-    return (["## Checker throughput (configurations per second, median) and stage times (seconds)", "",
-             "Each stage's time when it was computed (a resumed run keeps them). *planning*: the samplers' runs "
-             "(each query without and with prediction in turn) added up (by default in parallel, one process per core; "
-             "`--workers`).", ""]
-            + table(["", "exact cfg/s", "learned cfg/s", "learned / exact", "data s", "models s", "planning s"], rows))
+        rows.append(
+            [r["scenario"], f"{t['exact_cfg_per_s']:,.0f}", f"{t['learned_cfg_per_s']:,.0f}", f"{t['ratio']:.3g}"]
+            + [f"{seconds[k]:.0f}" if k in seconds else "n/a" for k in ("data", "models")]
+            + [f"{planning:.0f}"]
+        )
+    return [
+        "## Checker throughput (configurations per second, median) and stage times (seconds)",
+        "",
+        "Each stage's time when it was computed (a resumed run keeps them). *planning*: the samplers' runs "
+        "(each query without and with prediction in turn) added up (by default in parallel, one process per core; "
+        "`--workers`).",
+        "",
+    ] + table(["", "exact cfg/s", "learned cfg/s", "learned / exact", "data s", "models s", "planning s"], rows)
 
 
 def tables_markdown(results: dict) -> str:
     """One run's tables: the paper's Tables 1-3 with the published numbers beside ours, and its costs."""
-    title = (f"# {scenarios.get(results['scenario']).title} — preset `{results['preset']}`"
-             f"{' (quick)' if results['quick'] else ''}, seed {results['seed']}")
+    title = (
+        f"# {scenarios.get(results['scenario']).title} — preset `{results['preset']}`"
+        f"{' (quick)' if results['quick'] else ''}, seed {results['seed']}"
+    )
     return _document(title, [results])
 
 
@@ -149,5 +204,12 @@ def summary_markdown(runs: list[dict]) -> str:
 
 
 def _document(title: str, runs: list[dict]) -> str:
-    return "\n".join([title, "", "Every cell: **ours** / paper.", ""] + paper_tables(runs) + [""]
-                     + median_ratios(runs) + [""] + run_costs(runs) + [""])
+    return "\n".join(
+        [title, "", "Every cell: **ours** / paper.", ""]
+        + paper_tables(runs)
+        + [""]
+        + median_ratios(runs)
+        + [""]
+        + run_costs(runs)
+        + [""]
+    )

@@ -61,8 +61,9 @@ def tune(config: RunConfig, out: str | Path) -> dict:
     paper = presets.get("paper")
     n_seen = QUICK.workspaces[0] if quick else scenario.n_seen
     seen = scenario.workspaces("seen", n_seen, seed)
-    train = data.label_workspaces(scenario, seen, scenario.samples_per_workspace, seed, "train_samples", progress,
-                                  "train samples")  # the paper preset's training split (data.make_splits)
+    train = data.label_workspaces(
+        scenario, seen, scenario.samples_per_workspace, seed, "train_samples", progress, "train samples"
+    )  # the paper preset's training split (data.make_splits)
     n_fit = n_seen - max(1, int(round(VALIDATION_SHARE * n_seen)))
     fit, validation = training.split_workspaces(train, n_fit)
     scale = QUICK.study_epochs_divisor if quick else 1  # quick: a fraction of the epochs, for tests
@@ -74,8 +75,14 @@ def tune(config: RunConfig, out: str | Path) -> dict:
         preset = replace(base, name=f"tuning:cae{epochs}", cae_epochs=epochs // scale)
         name = f"cae_{epochs}_{preset.fingerprint()}"
         cae_files[epochs] = stages.cache / f"{name}.pt"
-        cae_rows.append(dict(stages.json(name, lambda: _cae_row(scenario, preset, fit, validation, cae_files[epochs],
-                                                                seed, progress)), cae_epochs=epochs))
+        cae_rows.append(
+            dict(
+                stages.json(
+                    name, lambda: _cae_row(scenario, preset, fit, validation, cae_files[epochs], seed, progress)
+                ),
+                cae_epochs=epochs,
+            )
+        )
     best_cae = max(cae_rows, key=lambda r: r["validation_acc"])  # max keeps the first of equals: fewer epochs
     cae_file = cae_files[best_cae["cae_epochs"]]
 
@@ -83,16 +90,33 @@ def tune(config: RunConfig, out: str | Path) -> dict:
     for values in itertools.product(*MLP_GRID.values()):
         settings = dict(zip(MLP_GRID, values))
         key = "mlp_" + "_".join(str(v) for v in values)
-        preset = replace(base, name=f"tuning:{key}", cae_epochs=best_cae["cae_epochs"] // scale,
-                         **dict(settings, mlp_epochs=max(2, settings["mlp_epochs"] // scale)))
-        mlp_rows.append(dict(stages.json(f"{key}_{preset.fingerprint()}_{cae_file.stem}",
-                                         lambda: _mlp_row(scenario, preset, fit, validation, cae_file, seed, progress)),
-                             **settings))
+        preset = replace(
+            base,
+            name=f"tuning:{key}",
+            cae_epochs=best_cae["cae_epochs"] // scale,
+            **dict(settings, mlp_epochs=max(2, settings["mlp_epochs"] // scale)),
+        )
+        mlp_rows.append(
+            dict(
+                stages.json(
+                    f"{key}_{preset.fingerprint()}_{cae_file.stem}",
+                    lambda: _mlp_row(scenario, preset, fit, validation, cae_file, seed, progress),
+                ),
+                **settings,
+            )
+        )
     best_mlp = one_standard_error_choice(mlp_rows, int(validation.valid.size))
-    result = {"scenario": scenario.name, "seed": seed, "quick": quick, "fit_workspaces": n_fit,
-              "validation_workspaces": n_seen - n_fit, "validation_samples": int(validation.valid.size),
-              "cae": cae_rows, "mlp": mlp_rows,
-              "chosen": {"cae_epochs": best_cae["cae_epochs"], **{k: best_mlp[k] for k in MLP_GRID}}}
+    result = {
+        "scenario": scenario.name,
+        "seed": seed,
+        "quick": quick,
+        "fit_workspaces": n_fit,
+        "validation_workspaces": n_seen - n_fit,
+        "validation_samples": int(validation.valid.size),
+        "cae": cae_rows,
+        "mlp": mlp_rows,
+        "chosen": {"cae_epochs": best_cae["cae_epochs"], **{k: best_mlp[k] for k in MLP_GRID}},
+    }
     outputs.write_json(out / "tuning.json", result)
     (out / "tuning.md").write_text(markdown(result))
     return result
@@ -109,39 +133,72 @@ def one_standard_error_choice(rows: list[dict], n: int) -> dict:
     return next(r for r in rows if r["validation_acc"] >= best - standard_error(best, n))
 
 
-def _cae_row(scenario, preset: presets.Preset, fit: data.CollisionDataset, validation: data.CollisionDataset,
-             cae_file: Path, seed: int, progress: bool) -> dict:
+def _cae_row(
+    scenario,
+    preset: presets.Preset,
+    fit: data.CollisionDataset,
+    validation: data.CollisionDataset,
+    cae_file: Path,
+    seed: int,
+    progress: bool,
+) -> dict:
     """Train the paper's CAE on the fitting grids, kept in ``cae_file``; its reconstruction accuracy on them and on
     the validation grids."""
     torch.manual_seed(seed)
     predictor = build_predictor(scenario, "raw")
     began = time.perf_counter()
-    training.train_cae(predictor, torch.as_tensor(fit.occupancy), preset, torch.Generator().manual_seed(seed), progress,
-                       max_steps=scenario.cae_max_steps, max_batch=scenario.cae_max_batch,
-                       max_lr=scenario.cae_max_lr)  # as training.train_models caps it
+    training.train_cae(
+        predictor,
+        torch.as_tensor(fit.occupancy),
+        preset,
+        torch.Generator().manual_seed(seed),
+        progress,
+        max_steps=scenario.cae_max_steps,
+        max_batch=scenario.cae_max_batch,
+        max_lr=scenario.cae_max_lr,
+    )  # as training.train_models caps it
     seconds = time.perf_counter() - began
     torch.save(predictor.cae.state_dict(), cae_file)
     with torch.no_grad():
-        acc = {name: float(metrics.reconstruction_accuracy(predictor.cae(torch.as_tensor(d.occupancy)).numpy(),
-                                                           d.occupancy).mean())
-               for name, d in (("fit", fit), ("validation", validation))}
-    return {"fit_acc": acc["fit"], "validation_acc": acc["validation"],
-            "validation_all_free": float(np.mean(validation.occupancy < 0)), "train_seconds": seconds}
+        acc = {
+            name: float(
+                metrics.reconstruction_accuracy(predictor.cae(torch.as_tensor(d.occupancy)).numpy(), d.occupancy).mean()
+            )
+            for name, d in (("fit", fit), ("validation", validation))
+        }
+    return {
+        "fit_acc": acc["fit"],
+        "validation_acc": acc["validation"],
+        "validation_all_free": float(np.mean(validation.occupancy < 0)),
+        "train_seconds": seconds,
+    }
 
 
-def _mlp_row(scenario, preset: presets.Preset, fit: data.CollisionDataset, validation: data.CollisionDataset,
-             cae_file: Path, seed: int, progress: bool) -> dict:
+def _mlp_row(
+    scenario,
+    preset: presets.Preset,
+    fit: data.CollisionDataset,
+    validation: data.CollisionDataset,
+    cae_file: Path,
+    seed: int,
+    progress: bool,
+) -> dict:
     """Train the paper's MLP on the fitting samples with the chosen CAE; its accuracy on the validation samples."""
     cae = build_predictor(scenario, "raw").cae
     cae.load_state_dict(torch.load(cae_file, weights_only=True))
     began = time.perf_counter()
-    models = training.train_models(scenario, preset, {"train": fit}, seed, progress=progress, device="cpu",
-                                   trained_cae=cae)
+    models = training.train_models(
+        scenario, preset, {"train": fit}, seed, progress=progress, device="cpu", trained_cae=cae
+    )
     seconds = time.perf_counter() - began
     scores = {name: training.classification_scores(models, d) for name, d in (("fit", fit), ("validation", validation))}
-    return {"fit_acc": scores["fit"]["acc"], "validation_acc": scores["validation"]["acc"],
-            "validation_tpr": scores["validation"]["tpr"], "validation_tnr": scores["validation"]["tnr"],
-            "train_seconds": seconds}
+    return {
+        "fit_acc": scores["fit"]["acc"],
+        "validation_acc": scores["validation"]["acc"],
+        "validation_tpr": scores["validation"]["tpr"],
+        "validation_tnr": scores["validation"]["tnr"],
+        "train_seconds": seconds,
+    }
 
 
 def markdown(result: dict) -> str:
@@ -149,24 +206,38 @@ def markdown(result: dict) -> str:
     pct = lambda x: f"{100 * x:.1f}"
     chosen, paper = result["chosen"], presets.get("paper")
     n = result["validation_samples"]
-    lines = [f"## Tuning the paper preset's unstated settings, {result['scenario']}", "",
-             f"Fitted on {result['fit_workspaces']} training workspaces, validated on the other "
-             f"{result['validation_workspaces']} ({n} balanced samples); the unseen workspaces are never used.", "",
-             "| CAE epochs | fit rec. | validation rec. (all free) | train s |", "| --- | --- | --- | --- |"]
+    lines = [
+        f"## Tuning the paper preset's unstated settings, {result['scenario']}",
+        "",
+        f"Fitted on {result['fit_workspaces']} training workspaces, validated on the other "
+        f"{result['validation_workspaces']} ({n} balanced samples); the unseen workspaces are never used.",
+        "",
+        "| CAE epochs | fit rec. | validation rec. (all free) | train s |",
+        "| --- | --- | --- | --- |",
+    ]
     for r in result["cae"]:
         mark = " **chosen**" if r["cae_epochs"] == chosen["cae_epochs"] else ""
-        lines.append(f"| {r['cae_epochs']}{mark} | {pct(r['fit_acc'])} | {pct(r['validation_acc'])} "
-                     f"({pct(r['validation_all_free'])}) | {r['train_seconds']:.0f} |")
+        lines.append(
+            f"| {r['cae_epochs']}{mark} | {pct(r['fit_acc'])} | {pct(r['validation_acc'])} "
+            f"({pct(r['validation_all_free'])}) | {r['train_seconds']:.0f} |"
+        )
     best = max(r["validation_acc"] for r in result["mlp"])
-    lines += ["", f"MLP with the chosen CAE. The best validation accuracy has a standard error of "
-              f"{100 * standard_error(best, n):.1f} points; the chosen row is the first within one standard error "
-              "of the best.", "", "| epochs | batch | standardized | init | fit acc | validation acc / TPR / TNR | train s |",
-              "| --- | --- | --- | --- | --- | --- | --- |"]
+    lines += [
+        "",
+        f"MLP with the chosen CAE. The best validation accuracy has a standard error of "
+        f"{100 * standard_error(best, n):.1f} points; the chosen row is the first within one standard error "
+        "of the best.",
+        "",
+        "| epochs | batch | standardized | init | fit acc | validation acc / TPR / TNR | train s |",
+        "| --- | --- | --- | --- | --- | --- | --- |",
+    ]
     for r in result["mlp"]:
         mark = " **chosen**" if all(r[k] == chosen[k] for k in MLP_GRID) else ""
-        lines.append(f"| {r['mlp_epochs']}{mark} | {r['mlp_batch']} | {'yes' if r['standardize'] else 'no'} "
-                     f"| {r['mlp_init']} | {pct(r['fit_acc'])} | {pct(r['validation_acc'])} / "
-                     f"{pct(r['validation_tpr'])} / {pct(r['validation_tnr'])} | {r['train_seconds']:.0f} |")
+        lines.append(
+            f"| {r['mlp_epochs']}{mark} | {r['mlp_batch']} | {'yes' if r['standardize'] else 'no'} "
+            f"| {r['mlp_init']} | {pct(r['fit_acc'])} | {pct(r['validation_acc'])} / "
+            f"{pct(r['validation_tpr'])} / {pct(r['validation_tnr'])} | {r['train_seconds']:.0f} |"
+        )
     current = {"cae_epochs": paper.cae_epochs, **{k: getattr(paper, k) for k in MLP_GRID}}
     lines += ["", f"Chosen: {chosen}.", f"The `paper` preset has: {current}."]
     return "\n".join(lines) + "\n"

@@ -69,11 +69,20 @@ def our_planner(options: PRMOptions, sampler: str, seed: int, models: TrainedMod
     """Our PRM with ``options`` and ``sampler``; with ``models``, a learned checker of the query's workspace decides
     the samples (built inside the call, so its workspace encoding counts in the time). Query ``n`` draws from
     ``rng = default_rng([seed, n])``."""
+
     def solve(query: Query, exact: CollisionChecker, n: int):
         checker = LearnedChecker(query.workspace, models) if models is not None else None
-        result = plan(exact, query.start, query.goal, sampler=sampler, checker=checker, options=options,
-                      rng=np.random.default_rng([seed, n]))
+        result = plan(
+            exact,
+            query.start,
+            query.goal,
+            sampler=sampler,
+            checker=checker,
+            options=options,
+            rng=np.random.default_rng([seed, n]),
+        )
         return result.success, result.path
+
     return solve
 
 
@@ -83,14 +92,23 @@ def ompl_planner(name: str, resolution: float, seconds: float) -> Planner:
     from toolkit.planning import ompl as toolkit_ompl
 
     def solve(query: Query, exact: CollisionChecker, n: int):
-        result = toolkit_ompl.solve(exact, query.start, query.goal, planner=name, resolution=resolution,
-                                    seconds=seconds)
+        result = toolkit_ompl.solve(
+            exact, query.start, query.goal, planner=name, resolution=resolution, seconds=seconds
+        )
         return result.success, result.path
+
     return solve
 
 
-def contenders(scenario: Scenario, seed: int, models: TrainedModels | None, sampler: str,
-               ompl_planners: tuple[str, ...], ompl_seconds: float, paper_baseline: bool) -> dict[str, Planner]:
+def contenders(
+    scenario: Scenario,
+    seed: int,
+    models: TrainedModels | None,
+    sampler: str,
+    ompl_planners: tuple[str, ...],
+    ompl_seconds: float,
+    paper_baseline: bool,
+) -> dict[str, Planner]:
     """The planners of a race, by the name its table gives them, ours first.
 
     Ours: the best exact planner (``queries.default_options``), the paper's baseline
@@ -132,7 +150,7 @@ def race(scenario: Scenario, query_set: list[Query], planners: dict[str, Planner
     names = list(planners)
     with queries.one_thread():
         for n, query in enumerate(query_set):
-            for name in names[n % len(names):] + names[:n % len(names)]:
+            for name in names[n % len(names) :] + names[: n % len(names)]:
                 solves[name].append(timed_solve(planners[name], query, n, scenario.robot, resolution))
     return solves
 
@@ -146,18 +164,29 @@ def summarize(solves: dict[str, list[dict]]) -> dict[str, dict]:
         seconds = np.array([run["seconds"] for run in runs])  # (Q,)
         solved = np.array([run["success"] for run in runs])  # (Q,)
         valid = np.array([run["valid"] for run in runs])  # (Q,)
-        table[name] = {"queries": len(runs), "success_rate": float(solved.mean()),
-                       "valid_rate": float(valid[solved].mean()) if solved.any() else 1.0,
-                       "median_s": float(np.median(seconds)), "mean_s": float(seconds.mean()),
-                       "p90_s": float(np.percentile(seconds, 90)),
-                       "checks_median": float(np.median([run["checks"] for run in runs])),
-                       "seconds": seconds.tolist()}
+        table[name] = {
+            "queries": len(runs),
+            "success_rate": float(solved.mean()),
+            "valid_rate": float(valid[solved].mean()) if solved.any() else 1.0,
+            "median_s": float(np.median(seconds)),
+            "mean_s": float(seconds.mean()),
+            "p90_s": float(np.percentile(seconds, 90)),
+            "checks_median": float(np.median([run["checks"] for run in runs])),
+            "seconds": seconds.tolist(),
+        }
     return table
 
 
-def versus_ompl(scenario: Scenario, n_queries: int = 10, seed: int = 9000, models: TrainedModels | None = None,
-                ompl_seconds: float = 30.0, sampler: str = "BS", ompl_planners: tuple[str, ...] = ("PRM", "RRTConnect"),
-                paper_baseline: bool = True) -> dict[str, dict]:
+def versus_ompl(
+    scenario: Scenario,
+    n_queries: int = 10,
+    seed: int = 9000,
+    models: TrainedModels | None = None,
+    ompl_seconds: float = 30.0,
+    sampler: str = "BS",
+    ompl_planners: tuple[str, ...] = ("PRM", "RRTConnect"),
+    paper_baseline: bool = True,
+) -> dict[str, dict]:
     """Our planners (:func:`contenders`) against OMPL's ``ompl_planners`` on the first ``n_queries`` of the paper's
     query set for ``seed``, raced in turns (:func:`race`): :func:`summarize`'s table.
 
@@ -184,12 +213,15 @@ def versus_ompl_markdown(scenario: Scenario, table: dict[str, dict]) -> str:
     if reference is None:
         raise ValueError(f"the table holds no OMPL planner to compare with: {list(table)}")
     reference_median = table[reference]["median_s"]
-    header = (f"| {scenario.name} ({table[reference]['queries']} queries) | solved | valid at 10x finer | "
-              f"median s | mean s | p90 s | configurations checked, median | median / {reference}'s |")
-    lines = [header,
-             "| --- | --- | --- | --- | --- | --- | --- | --- |"]
+    header = (
+        f"| {scenario.name} ({table[reference]['queries']} queries) | solved | valid at 10x finer | "
+        f"median s | mean s | p90 s | configurations checked, median | median / {reference}'s |"
+    )
+    lines = [header, "| --- | --- | --- | --- | --- | --- | --- | --- |"]
     for name, row in table.items():
-        lines.append(f"| {name} | {row['success_rate']:.0%} | {row['valid_rate']:.0%} | {row['median_s']:.3f} | "
-                     f"{row['mean_s']:.3f} | {row['p90_s']:.3f} | {row['checks_median']:,.0f} | "
-                     f"{row['median_s'] / reference_median:.2f} |")
+        lines.append(
+            f"| {name} | {row['success_rate']:.0%} | {row['valid_rate']:.0%} | {row['median_s']:.3f} | "
+            f"{row['mean_s']:.3f} | {row['p90_s']:.3f} | {row['checks_median']:,.0f} | "
+            f"{row['median_s'] / reference_median:.2f} |"
+        )
     return "\n".join(lines)

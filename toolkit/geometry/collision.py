@@ -139,17 +139,25 @@ class _BoxWorldChecker(CollisionChecker):
         Bounds are no wider than a cell, so they cover at most two cells per axis: their 2^D corners' cells.
         """
         lo, hi = self._cells(lo), self._cells(hi)  # (M, D) each
-        return np.stack([np.ravel_multi_index(tuple(np.where(np.array(corner, dtype=bool), hi, lo).T), self._shape)
-                         for corner in np.ndindex(*(2,) * self.robot.dim)])
+        return np.stack(
+            [
+                np.ravel_multi_index(tuple(np.where(np.array(corner, dtype=bool), hi, lo).T), self._shape)
+                for corner in np.ndindex(*(2,) * self.robot.dim)
+            ]
+        )
 
     def _are_valid(self, Q: np.ndarray) -> np.ndarray:
         valid = self.robot.in_bounds(Q)  # (N,)
         idx = np.flatnonzero(valid)
         aabbs = self.robot.link_aabbs(Q[idx])  # (n, L, 2, D)
-        inside = np.all((aabbs[:, :, 0] >= self.workspace.lower) & (aabbs[:, :, 1] <= self.workspace.upper), axis=(1, 2))
+        inside = np.all(
+            (aabbs[:, :, 0] >= self.workspace.lower) & (aabbs[:, :, 1] <= self.workspace.upper), axis=(1, 2)
+        )
         valid[idx[~inside]] = False
         idx, aabbs = idx[inside], aabbs[inside]
-        cells = self._covered_cells(aabbs[:, :, 0].reshape(-1, self.robot.dim), aabbs[:, :, 1].reshape(-1, self.robot.dim))
+        cells = self._covered_cells(
+            aabbs[:, :, 0].reshape(-1, self.robot.dim), aabbs[:, :, 1].reshape(-1, self.robot.dim)
+        )
         candidates = self._marked.reshape(-1)[cells].any(axis=0).reshape(aabbs.shape[:2])  # (n, L): may touch a block
         valid[idx[self._links_collide(Q[idx], aabbs, candidates)]] = False
         return valid
@@ -181,16 +189,24 @@ class _BoxWorldChecker(CollisionChecker):
         count, first, members = self._near[cap]
         cell = self._covered_cells(lo, hi).reshape(-1)  # (2^D * n * L,)
         owner, ordinal = ragged(count[cell])
-        pair_link, pair_box = owner % len(link), members[first[cell[owner]] + ordinal]  # (P,) each; repeats are harmless
+        pair_link, pair_box = (
+            owner % len(link),
+            members[first[cell[owner]] + ordinal],
+        )  # (P,) each; repeats are harmless
         boxes = self.workspace.boxes  # (K, 2, D)
-        gap = np.maximum(np.maximum(boxes[pair_box, 0] - hi[pair_link], lo[pair_link] - boxes[pair_box, 1]), 0)  # (P, D)
+        gap = np.maximum(
+            np.maximum(boxes[pair_box, 0] - hi[pair_link], lo[pair_link] - boxes[pair_box, 1]), 0
+        )  # (P, D)
         bound = np.linalg.norm(gap, axis=-1)  # (P,)
         near = np.flatnonzero(bound < cap)
         j, k = pair_link[near], pair_box[near]
         axes = np.swapaxes(rotations[j], -1, -2)  # (R, D, D): rows are the link's axes
         box_center, box_half = boxes[k].mean(axis=1), (boxes[k, 1] - boxes[k, 0]) / 2  # (R, D)
-        along = (np.abs(np.einsum("rad,rd->ra", axes, centers[j] - box_center))
-                 - half[j % n_links] - np.einsum("rad,rd->ra", np.abs(axes), box_half))  # (R, D): gaps along link axes
+        along = (
+            np.abs(np.einsum("rad,rd->ra", axes, centers[j] - box_center))
+            - half[j % n_links]
+            - np.einsum("rad,rd->ra", np.abs(axes), box_half)
+        )  # (R, D): gaps along link axes
         bound[near] = np.maximum(bound[near], along.max(axis=1))
         np.minimum.at(link, pair_link, bound)
         clearance[idx] = link.reshape(len(idx), n_links).min(axis=1)
@@ -206,8 +222,10 @@ class ExactChecker(_BoxWorldChecker):
 
     def __init__(self, workspace: Workspace, robot: BoxRobot):
         if isinstance(workspace, MeshWorkspace):
-            raise ValueError("a mesh workspace's obstacles are its triangles, not its boxes: "
-                             "use exact_checker(workspace, robot) or MeshChecker")
+            raise ValueError(
+                "a mesh workspace's obstacles are its triangles, not its boxes: "
+                "use exact_checker(workspace, robot) or MeshChecker"
+            )
         super().__init__(workspace, robot)
         self._world = fcl.DynamicAABBTreeCollisionManager()
         self._world.registerObjects([_fcl_box(lo, hi) for lo, hi in workspace.boxes])
@@ -249,7 +267,9 @@ class MeshChecker(_BoxWorldChecker):
 
     def __init__(self, workspace: MeshWorkspace, robot: BoxRobot):
         if not isinstance(workspace, MeshWorkspace):
-            raise ValueError(f"MeshChecker needs a MeshWorkspace (toolkit.workspace.from_mesh), got {type(workspace).__name__}")
+            raise ValueError(
+                f"MeshChecker needs a MeshWorkspace (toolkit.workspace.from_mesh), got {type(workspace).__name__}"
+            )
         super().__init__(workspace, robot)
         self._solid = workspace.solid
         self._links = _fcl_links(robot)
@@ -342,7 +362,9 @@ class SeparatingAxisChecker(_BoxWorldChecker):
     def _links_collide(self, Q, aabbs, candidates):
         """Ignores the voxel prefilter: every (link, obstacle) pair whose bounds meet is tested."""
         boxes = self.workspace.boxes  # (K, 2, D)
-        near = np.all((aabbs[:, :, None, 0] <= boxes[:, 1]) & (aabbs[:, :, None, 1] >= boxes[:, 0]), axis=-1)  # (n, L, K)
+        near = np.all(
+            (aabbs[:, :, None, 0] <= boxes[:, 1]) & (aabbs[:, :, None, 1] >= boxes[:, 0]), axis=-1
+        )  # (n, L, K)
         centers, rotations, half = self.robot.link_boxes(Q)
         n, l, k = np.nonzero(near)  # candidate pairs
         boxes = self.workspace.boxes[k]  # (P, 2, D)

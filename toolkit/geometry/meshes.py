@@ -62,9 +62,12 @@ class Solid:
         self.faces = np.asarray(faces, dtype=np.int64).reshape(-1, 3)
         self.triangles = self.vertices[self.faces]  # (F, 3, 3)
         part_of_face = _parts(self.faces)  # (F,)
-        self.parts = [np.flatnonzero(part_of_face == k) for k in range(part_of_face.max() + 1 if len(part_of_face) else 0)]
-        self.bounds = np.array([[self.triangles[f].min(axis=(0, 1)), self.triangles[f].max(axis=(0, 1))]
-                                for f in self.parts]).reshape(-1, 2, 3)  # (K, 2, 3)
+        self.parts = [
+            np.flatnonzero(part_of_face == k) for k in range(part_of_face.max() + 1 if len(part_of_face) else 0)
+        ]
+        self.bounds = np.array(
+            [[self.triangles[f].min(axis=(0, 1)), self.triangles[f].max(axis=(0, 1))] for f in self.parts]
+        ).reshape(-1, 2, 3)  # (K, 2, 3)
         self.object = _bvh(self.vertices, self.faces) if len(self.faces) else None
 
     def inside(self, points: np.ndarray) -> np.ndarray:
@@ -118,12 +121,16 @@ def winding_numbers(points: np.ndarray, triangles: np.ndarray, chunk: int = 1024
     points = np.asarray(points, dtype=float).reshape(-1, 3)
     total = np.zeros(len(points))
     for start in range(0, len(points), chunk):
-        rel = triangles[None] - points[start:start + chunk, None, None]  # (m, T, 3 corners, 3)
+        rel = triangles[None] - points[start : start + chunk, None, None]  # (m, T, 3 corners, 3)
         a, b, c = rel[:, :, 0], rel[:, :, 1], rel[:, :, 2]  # (m, T, 3) each
         la, lb, lc = (np.linalg.norm(v, axis=-1) for v in (a, b, c))  # (m, T) each
         det = np.einsum("mtd,mtd->mt", a, np.cross(b, c))
-        dots = np.einsum("mtd,mtd->mt", a, b) * lc + np.einsum("mtd,mtd->mt", b, c) * la + np.einsum("mtd,mtd->mt", c, a) * lb
-        total[start:start + chunk] = 2 * np.arctan2(det, la * lb * lc + dots).sum(axis=1)
+        dots = (
+            np.einsum("mtd,mtd->mt", a, b) * lc
+            + np.einsum("mtd,mtd->mt", b, c) * la
+            + np.einsum("mtd,mtd->mt", c, a) * lb
+        )
+        total[start : start + chunk] = 2 * np.arctan2(det, la * lb * lc + dots).sum(axis=1)
     return total / (4 * np.pi)
 
 
@@ -148,6 +155,7 @@ def _bvh(vertices: np.ndarray, faces: np.ndarray) -> fcl.CollisionObject:
 
 # -- a demo room ---------------------------------------------------------------------
 
+
 def _table(width: float, depth: float, height: float, leg: float = 0.3, top: float = 0.3) -> list:
     """A table's boxes (min, max corners) from the origin: a top on four legs."""
     boxes = [((0.0, 0.0, height - top), (width, depth, height))]
@@ -159,8 +167,11 @@ def _table(width: float, depth: float, height: float, leg: float = 0.3, top: flo
 
 def _shelf(width: float, depth: float, height: float, boards: int, side: float = 0.2, board: float = 0.15) -> list:
     """A shelf's boxes from the origin: two side panels, a back panel and ``boards`` boards, open at the front (+y)."""
-    boxes = [((0.0, 0.0, 0.0), (side, depth, height)), ((width - side, 0.0, 0.0), (width, depth, height)),
-             ((side, 0.0, 0.0), (width - side, side, height))]
+    boxes = [
+        ((0.0, 0.0, 0.0), (side, depth, height)),
+        ((width - side, 0.0, 0.0), (width, depth, height)),
+        ((side, 0.0, 0.0), (width - side, side, height)),
+    ]
     for z in np.linspace(0.0, height - board, boards):
         boxes.append(((side, side, z), (width - side, depth, z + board)))
     return boxes
@@ -186,9 +197,16 @@ def furniture_boxes(name: str, corner, turns: int = 0) -> np.ndarray:
     """``(B, 2, 3)`` the boxes of a piece of ``FURNITURE``, turned by ``turns`` quarter turns about z (anticlockwise),
     placed with its bounds' min corner at ``corner (x, y)``."""
     boxes = np.array(FURNITURE[name], dtype=float)  # (B, 2, 3)
-    for _ in range(turns % 4):  # a quarter turn: (x, y) -> (-y, x), so x spans [-y_max, -y_min] and y spans [x_min, x_max]
-        boxes = np.stack([np.stack([-boxes[:, 1, 1], boxes[:, 0, 0], boxes[:, 0, 2]], -1),
-                          np.stack([-boxes[:, 0, 1], boxes[:, 1, 0], boxes[:, 1, 2]], -1)], axis=1)
+    for _ in range(
+        turns % 4
+    ):  # a quarter turn: (x, y) -> (-y, x), so x spans [-y_max, -y_min] and y spans [x_min, x_max]
+        boxes = np.stack(
+            [
+                np.stack([-boxes[:, 1, 1], boxes[:, 0, 0], boxes[:, 0, 2]], -1),
+                np.stack([-boxes[:, 0, 1], boxes[:, 1, 0], boxes[:, 1, 2]], -1),
+            ],
+            axis=1,
+        )
     boxes -= boxes[:, 0].min(axis=0) * np.array([1.0, 1.0, 0.0])
     return boxes + np.array([corner[0], corner[1], 0.0])
 

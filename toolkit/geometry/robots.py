@@ -65,8 +65,15 @@ class BoxRobot:
     positions, base angles, joints (``dof_names``).
     """
 
-    def __init__(self, name: str, base: str, links: list[Link], joints: list[Joint],
-                 position_bounds: tuple, base_height: float = 0.0):
+    def __init__(
+        self,
+        name: str,
+        base: str,
+        links: list[Link],
+        joints: list[Joint],
+        position_bounds: tuple,
+        base_height: float = 0.0,
+    ):
         if base not in BASES:
             raise ValueError(f"unknown base kind {base!r}; choose one of {sorted(BASES)}")
         if len(joints) != len(links) - 1:
@@ -74,7 +81,9 @@ class BoxRobot:
         if base == "point2d" and any(joint.axis != "z" for joint in joints):
             raise ValueError("a 2D robot's joints turn about z: any other axis would lift its links out of the plane")
         if any(not joint.limits[0] < joint.limits[1] for joint in joints):
-            raise ValueError(f"every joint needs limits (lower, upper) with lower < upper, got {[j.limits for j in joints]}")
+            raise ValueError(
+                f"every joint needs limits (lower, upper) with lower < upper, got {[j.limits for j in joints]}"
+            )
         self.name, self.base, self.base_height = name, base, float(base_height)
         self.links, self.joints = tuple(links), tuple(joints)
         self.dim = 2 if base == "point2d" else 3
@@ -83,8 +92,12 @@ class BoxRobot:
         self.dof = len(self.dof_names)
         pos_lo, pos_hi = (np.asarray(b, dtype=float) for b in position_bounds)
         n_rot = sum(base_angular)  # base angles follow the base positions
-        self.lower = np.concatenate([pos_lo[: len(base_names) - n_rot], np.full(n_rot, -np.pi), [j.limits[0] for j in joints]])
-        self.upper = np.concatenate([pos_hi[: len(base_names) - n_rot], np.full(n_rot, np.pi), [j.limits[1] for j in joints]])
+        self.lower = np.concatenate(
+            [pos_lo[: len(base_names) - n_rot], np.full(n_rot, -np.pi), [j.limits[0] for j in joints]]
+        )
+        self.upper = np.concatenate(
+            [pos_hi[: len(base_names) - n_rot], np.full(n_rot, np.pi), [j.limits[1] for j in joints]]
+        )
         self.wraps = np.array(base_angular + (False,) * len(joints))  # (dof,) angles that wrap around
         n_pos = len(base_names) - n_rot
         self.n_positions = n_pos  # configurations are [base positions, base angles (wrap), joints (limited)]
@@ -93,7 +106,9 @@ class BoxRobot:
         self._offsets = np.array([l.offset for l in links], dtype=float)  # (L, 3)
         self.motion_weights = self._motion_weights()  # (dof,)
         # links whose height never changes: on a planar base, the base and the links after it turned about vertical axes
-        self.level_links = 1 + next((i for i, j in enumerate(joints) if j.axis != "z"), len(joints)) if base == "planar" else 0
+        self.level_links = (
+            1 + next((i for i, j in enumerate(joints) if j.axis != "z"), len(joints)) if base == "planar" else 0
+        )
         for array in (self.lower, self.upper, self.wraps, self.half_extents, self.motion_weights):
             array.setflags(write=False)
 
@@ -123,7 +138,7 @@ class BoxRobot:
 
     def in_bounds(self, Q: np.ndarray) -> np.ndarray:
         """(N,) whether each configuration lies within ``[lower, upper]``."""
-        return np.all((Q >= self.lower) & (Q <= self.upper), axis=1)
+        return np.all((self.lower <= Q) & (self.upper >= Q), axis=1)
 
     def sample(self, rng: np.random.Generator, n: int) -> np.ndarray:
         """``(n, dof)`` configurations drawn uniformly from the bounds."""
@@ -234,8 +249,13 @@ CHAIN_JOINT_LIMITS = (-2.0, 2.0)
 def point_robot(region=(31.0, 31.0)) -> BoxRobot:
     """2D point robot: a 0.5x0.5 square whose centre stays inside the region."""
     region = np.asarray(region, dtype=float)
-    return BoxRobot("point2d", "point2d", [Link(half_extents=(0.25, 0.25, 0.0))], [],
-                    position_bounds=(np.full(2, 0.25), region - 0.25))
+    return BoxRobot(
+        "point2d",
+        "point2d",
+        [Link(half_extents=(0.25, 0.25, 0.0))],
+        [],
+        position_bounds=(np.full(2, 0.25), region - 0.25),
+    )
 
 
 def youbot(region=(41.0, 41.0, 6.0)) -> BoxRobot:

@@ -121,14 +121,20 @@ class Workspace:
         }
 
     @classmethod
-    def from_dict(cls, data: dict) -> "Workspace":
+    def from_dict(cls, data: dict) -> Workspace:
         """The workspace of :meth:`to_dict`'s data (a :class:`MeshWorkspace` when it holds a ``mesh``)."""
         missing = {"lower", "upper", "boxes"} - set(data)
         if missing:
             raise ValueError(f"workspace data is missing keys {sorted(missing)}")
         mesh = {"vertices": data["mesh"]["vertices"], "faces": data["mesh"]["faces"]} if "mesh" in data else {}
-        return (MeshWorkspace if mesh else Workspace)(data["lower"], data["upper"], data["boxes"], family=data.get("family", ""),
-                                                      labels=tuple(data.get("labels", ())), **mesh)
+        return (MeshWorkspace if mesh else Workspace)(
+            data["lower"],
+            data["upper"],
+            data["boxes"],
+            family=data.get("family", ""),
+            labels=tuple(data.get("labels", ())),
+            **mesh,
+        )
 
     def save(self, path: str | Path) -> None:
         """Write the workspace as JSON (atomically: a temporary file, then a rename)."""
@@ -138,7 +144,7 @@ class Workspace:
         tmp.replace(path)
 
     @classmethod
-    def load(cls, path: str | Path) -> "Workspace":
+    def load(cls, path: str | Path) -> Workspace:
         path = Path(path)
         try:
             data = json.loads(path.read_text())
@@ -171,7 +177,9 @@ class MeshWorkspace(Workspace):
         if vertices.size == 0:
             vertices = vertices.reshape(0, 3)
         if vertices.shape[1] != 3 or (len(faces) and (faces.min() < 0 or faces.max() >= len(vertices))):
-            raise ValueError(f"need vertices (V, 3) and faces (F, 3) indexing them, got {vertices.shape} and {faces.shape}")
+            raise ValueError(
+                f"need vertices (V, 3) and faces (F, 3) indexing them, got {vertices.shape} and {faces.shape}"
+            )
         for name, value in (("vertices", vertices), ("faces", faces)):
             value.setflags(write=False)
             object.__setattr__(self, name, value)
@@ -206,8 +214,11 @@ class MeshWorkspace(Workspace):
     def __eq__(self, other: object) -> bool:
         if not isinstance(other, MeshWorkspace):
             return NotImplemented if not isinstance(other, Workspace) else False
-        return (super().__eq__(other) and np.array_equal(self.vertices, other.vertices)
-                and np.array_equal(self.faces, other.faces))
+        return (
+            super().__eq__(other)
+            and np.array_equal(self.vertices, other.vertices)
+            and np.array_equal(self.faces, other.faces)
+        )
 
     __hash__ = None
 
@@ -226,7 +237,9 @@ def from_mesh(mesh, *, lower, upper, family: str = "mesh") -> MeshWorkspace:
     """
     lower, upper = _finite_array(lower, "lower", ndim=1), _finite_array(upper, "upper", ndim=1)
     if lower.shape != (3,) or upper.shape != (3,):
-        raise ValueError(f"a mesh workspace is 3D: lower and upper need shape (3,), got {lower.shape} and {upper.shape}")
+        raise ValueError(
+            f"a mesh workspace is 3D: lower and upper need shape (3,), got {lower.shape} and {upper.shape}"
+        )
     if not np.allclose(upper - lower, np.round(upper - lower)):
         raise ValueError(f"the region's sides {upper - lower} must be whole numbers of unit cells")
     mesh = meshes.load(mesh)
@@ -247,6 +260,7 @@ def _finite_array(value, name: str, ndim: int | None) -> np.ndarray:
 
 
 # -- generators -----------------------------------------------------------------
+
 
 def _place(rng: np.random.Generator, size: np.ndarray, region: np.ndarray, on_floor: bool = False) -> np.ndarray:
     """A box of integer ``size`` (D,) at a random integer position inside ``region`` (D,)."""
@@ -295,7 +309,7 @@ def clutter_3d(rng: np.random.Generator) -> Workspace:
     """3DC: 11x11x11 clutter, 110-125 identical unit blocks (paper §IV-A)."""
     region = np.array([11.0, 11.0, 11.0])
     count = int(rng.integers(110, 126))
-    cells = rng.choice(11 ** 3, size=count, replace=False)  # distinct cells: every block counts
+    cells = rng.choice(11**3, size=count, replace=False)  # distinct cells: every block counts
     corners = np.stack(np.unravel_index(cells, (11, 11, 11)), axis=-1).astype(float)  # (K, 3)
     return Workspace(np.zeros(3), region, np.stack([corners, corners + 1.0], axis=1), family="3dc")
 

@@ -42,8 +42,13 @@ FORMAT = 1  # of meta.json and weights.pt: a checkpoint of another format is ref
 
 def sizes(predictor: CollisionPredictor) -> dict:
     """The shapes that define the networks: CAE widths, MLP input and hidden widths, input encoding."""
-    return {"cae": list(predictor.cae.sizes), "mlp_in": predictor.mlp.in_features, "mlp_hidden": list(predictor.mlp.hidden),
-            "encoding": predictor.encoding.kind, "patch_radius": predictor.encoding.radius}
+    return {
+        "cae": list(predictor.cae.sizes),
+        "mlp_in": predictor.mlp.in_features,
+        "mlp_hidden": list(predictor.mlp.hidden),
+        "encoding": predictor.encoding.kind,
+        "patch_radius": predictor.encoding.radius,
+    }
 
 
 def check_destination(folder: str | Path, overwrite: bool = False) -> Path:
@@ -54,18 +59,22 @@ def check_destination(folder: str | Path, overwrite: bool = False) -> Path:
         raise ValueError(f"checkpoint folder {folder} is a file; choose a folder")
     if folder.is_dir() and any(folder.iterdir()):
         if not ((folder / META).exists() or (folder / WEIGHTS).exists()):
-            raise ValueError(f"checkpoint folder {folder} is not empty and holds no checkpoint; choose a new or "
-                             "empty folder")
+            raise ValueError(
+                f"checkpoint folder {folder} is not empty and holds no checkpoint; choose a new or empty folder"
+            )
         if not overwrite:
-            raise ValueError(f"checkpoint folder {folder} holds a checkpoint already ({_describe(folder)}); replace "
-                             "it with `toolkit train --force` (overwrite=True), or choose another folder")
+            raise ValueError(
+                f"checkpoint folder {folder} holds a checkpoint already ({_describe(folder)}); replace "
+                "it with `toolkit train --force` (overwrite=True), or choose another folder"
+            )
     # the checkpoint is written beside the folder, then renamed into place: its parent must be writable
     outputs.writable_folder(folder.parent, f"checkpoint folder {folder}")
     return folder
 
 
-def save_checkpoint(models: TrainedModels, folder: str | Path, evaluation: dict | None = None, *,
-                    overwrite: bool = False) -> Path:
+def save_checkpoint(
+    models: TrainedModels, folder: str | Path, evaluation: dict | None = None, *, overwrite: bool = False
+) -> Path:
     """Write ``weights.pt`` and ``meta.json`` (with ``evaluation``, if given) into ``folder``; returns the folder.
 
     The files go to a folder beside it first, which then takes its place: an interrupted
@@ -81,8 +90,12 @@ def save_checkpoint(models: TrainedModels, folder: str | Path, evaluation: dict 
         "sizes": sizes(models.predictor),
         "history": models.history,
         "evaluation": evaluation,
-        "versions": {"toolkit": __version__, "torch": torch.__version__, "numpy": np.__version__,
-                     "python": platform.python_version()},
+        "versions": {
+            "toolkit": __version__,
+            "torch": torch.__version__,
+            "numpy": np.__version__,
+            "python": platform.python_version(),
+        },
     }
     state = {k: v.detach().cpu() for k, v in models.predictor.state_dict().items()}
     new, old = (folder.with_name(f"{folder.name}.{suffix}.tmp") for suffix in ("new", "old"))
@@ -126,8 +139,10 @@ def _build(folder: Path, meta: dict) -> TrainedModels:
     scen = scenarios.get(meta["scenario"])
     predictor = build_predictor(scen, preset.encoding, preset.mlp_hidden, preset.dropout, preset.latent_input)
     if sizes(predictor) != meta["sizes"]:
-        raise ValueError(f"checkpoint {folder}: recorded sizes {meta['sizes']} differ from the {meta['scenario']!r} "
-                         f"networks of preset {preset.name!r}, {sizes(predictor)}")
+        raise ValueError(
+            f"checkpoint {folder}: recorded sizes {meta['sizes']} differ from the {meta['scenario']!r} "
+            f"networks of preset {preset.name!r}, {sizes(predictor)}"
+        )
     try:
         predictor.load_state_dict(torch.load(folder / WEIGHTS, map_location="cpu", weights_only=True))
     except FileNotFoundError:
@@ -142,8 +157,10 @@ def _read_preset(folder: Path, recorded) -> Preset:
     expected = {f.name for f in fields(Preset)}
     have = set(recorded) if isinstance(recorded, dict) else set()
     if have != expected:
-        raise ValueError(f"checkpoint {folder}: {META}'s preset does not match this toolkit's Preset (missing "
-                         f"{sorted(expected - have)}, unknown {sorted(have - expected)})")
+        raise ValueError(
+            f"checkpoint {folder}: {META}'s preset does not match this toolkit's Preset (missing "
+            f"{sorted(expected - have)}, unknown {sorted(have - expected)})"
+        )
     mlp_hidden = recorded["mlp_hidden"]  # a list in JSON
     return Preset(**{**recorded, "mlp_hidden": None if mlp_hidden is None else tuple(mlp_hidden)})
 
@@ -168,8 +185,9 @@ def _read_meta(folder: Path) -> dict:
     if not isinstance(meta, dict):
         raise ValueError(f"checkpoint {folder}: {META} is corrupted: not a JSON object")
     if meta.get("format") != FORMAT:
-        raise ValueError(f"checkpoint {folder} has format {meta.get('format', 'none recorded')}, this toolkit "
-                         f"reads format {FORMAT}")
+        raise ValueError(
+            f"checkpoint {folder} has format {meta.get('format', 'none recorded')}, this toolkit reads format {FORMAT}"
+        )
     missing = {"scenario", "preset", "sizes", "seed", "history"} - set(meta)
     if missing:
         raise ValueError(f"checkpoint {folder}: {META} lacks {sorted(missing)}")

@@ -44,8 +44,9 @@ def occupancy_grids(scenario: Scenario, stream: str, count: int, seed: int, prog
     return grids
 
 
-def balanced_samples(checker, rng: np.random.Generator, n: int, valid_fraction: float = 0.5,
-                     max_draws: int = 2_000_000) -> tuple[np.ndarray, np.ndarray]:
+def balanced_samples(
+    checker, rng: np.random.Generator, n: int, valid_fraction: float = 0.5, max_draws: int = 2_000_000
+) -> tuple[np.ndarray, np.ndarray]:
     """``n`` uniform configurations, ``round(n * valid_fraction)`` of them valid: ``(n, dof)``, ``(n,)`` bool.
 
     Draws batches until both quotas are met; raises if ``max_draws`` are not enough
@@ -61,8 +62,10 @@ def balanced_samples(checker, rng: np.random.Generator, n: int, valid_fraction: 
     while any(sum(map(len, kept[c])) < want[c] for c in (True, False)):
         if drawn >= max_draws:
             have = {c: sum(map(len, kept[c])) for c in kept}
-            raise RuntimeError(f"after {drawn} draws only {have[True]} valid / {have[False]} invalid "
-                               f"configurations of the {want[True]} / {want[False]} wanted")
+            raise RuntimeError(
+                f"after {drawn} draws only {have[True]} valid / {have[False]} invalid "
+                f"configurations of the {want[True]} / {want[False]} wanted"
+            )
         Q = robot.sample(rng, batch)
         valid = checker.are_valid(Q)
         drawn += batch
@@ -91,8 +94,10 @@ class CollisionDataset:
     def __post_init__(self):
         w = len(self.workspaces)
         if not (len(self.occupancy) == len(self.configs) == len(self.valid) == w):
-            raise ValueError(f"dataset arrays disagree on the number of workspaces: {w} workspaces, "
-                             f"{len(self.occupancy)} grids, {len(self.configs)} config sets, {len(self.valid)} label sets")
+            raise ValueError(
+                f"dataset arrays disagree on the number of workspaces: {w} workspaces, "
+                f"{len(self.occupancy)} grids, {len(self.configs)} config sets, {len(self.valid)} label sets"
+            )
         if self.configs.shape[:2] != self.valid.shape:
             raise ValueError(f"configs {self.configs.shape} and labels {self.valid.shape} disagree")
 
@@ -109,12 +114,13 @@ class CollisionDataset:
         path = Path(path)
         meta = dict(self.meta, scenario=self.scenario, workspaces=[ws.to_dict() for ws in self.workspaces])
         tmp = path.with_name(path.name + ".tmp.npz")
-        np.savez_compressed(tmp, occupancy=self.occupancy, configs=self.configs, valid=self.valid,
-                            meta=np.array(json.dumps(meta)))
+        np.savez_compressed(
+            tmp, occupancy=self.occupancy, configs=self.configs, valid=self.valid, meta=np.array(json.dumps(meta))
+        )
         tmp.replace(path)
 
     @classmethod
-    def load(cls, path: str | Path, scenario: str | None = None) -> "CollisionDataset":
+    def load(cls, path: str | Path, scenario: str | None = None) -> CollisionDataset:
         """Read a dataset; a clear error for a corrupted file or another scenario's data."""
         path = Path(path)
         try:
@@ -131,8 +137,16 @@ class CollisionDataset:
         return cls(name, spaces, arrays["occupancy"], arrays["configs"], arrays["valid"].astype(bool), meta)
 
 
-def label_workspaces(scenario: Scenario, spaces: list[Workspace], samples_per_workspace: int, seed: int,
-                     stream: str, progress: bool = True, desc: str = "", balanced: bool = True) -> CollisionDataset:
+def label_workspaces(
+    scenario: Scenario,
+    spaces: list[Workspace],
+    samples_per_workspace: int,
+    seed: int,
+    stream: str,
+    progress: bool = True,
+    desc: str = "",
+    balanced: bool = True,
+) -> CollisionDataset:
     """Labelled samples in each workspace, drawn from ``stream_rng(seed, stream, i)``: half valid, half invalid
     (``balanced``), or uniform configurations whatever their validity (``balanced=False``)."""
     configs, valid = [], []
@@ -145,25 +159,46 @@ def label_workspaces(scenario: Scenario, spaces: list[Workspace], samples_per_wo
             labels = checker.are_valid(Q)
         configs.append(Q)
         valid.append(labels)
-    occupancy = np.stack([ws.occupancy() for ws in spaces]) if spaces else np.zeros((0,) + scenario.grid_shape, np.float32)
-    return CollisionDataset(scenario.name, list(spaces), occupancy, np.array(configs, dtype=float).reshape(len(spaces), samples_per_workspace, -1),
-                            np.array(valid, dtype=bool).reshape(len(spaces), samples_per_workspace),
-                            meta={"seed": seed, "stream": stream, "samples_per_workspace": samples_per_workspace,
-                                  "balanced": balanced})
+    occupancy = (
+        np.stack([ws.occupancy() for ws in spaces]) if spaces else np.zeros((0,) + scenario.grid_shape, np.float32)
+    )
+    return CollisionDataset(
+        scenario.name,
+        list(spaces),
+        occupancy,
+        np.array(configs, dtype=float).reshape(len(spaces), samples_per_workspace, -1),
+        np.array(valid, dtype=bool).reshape(len(spaces), samples_per_workspace),
+        meta={"seed": seed, "stream": stream, "samples_per_workspace": samples_per_workspace, "balanced": balanced},
+    )
 
 
-def validity_blind_split(scenario: Scenario, unseen: CollisionDataset, samples_per_workspace: int | None = None,
-                         progress: bool = False) -> CollisionDataset:
+def validity_blind_split(
+    scenario: Scenario, unseen: CollisionDataset, samples_per_workspace: int | None = None, progress: bool = False
+) -> CollisionDataset:
     """The paper's unseen test (§IV-A): in the workspaces of ``unseen``, uniform samples regardless of their
     validity, as many as ``scenario.plan_samples`` each (200 in 2DS, 2000 in 3DO, 400 in 3DC), labelled exactly."""
     n = scenario.plan_samples if samples_per_workspace is None else samples_per_workspace
-    return label_workspaces(scenario, unseen.workspaces, n, unseen.meta.get("seed", 0), "unseen_uniform", progress,
-                            "validity-blind unseen samples", balanced=False)
+    return label_workspaces(
+        scenario,
+        unseen.workspaces,
+        n,
+        unseen.meta.get("seed", 0),
+        "unseen_uniform",
+        progress,
+        "validity-blind unseen samples",
+        balanced=False,
+    )
 
 
-def make_splits(scenario: Scenario, seed: int = 0, samples_per_workspace: int | None = None,
-                n_seen: int | None = None, n_seen_test: int | None = None, n_unseen: int | None = None,
-                progress: bool = True) -> dict[str, CollisionDataset]:
+def make_splits(
+    scenario: Scenario,
+    seed: int = 0,
+    samples_per_workspace: int | None = None,
+    n_seen: int | None = None,
+    n_seen_test: int | None = None,
+    n_unseen: int | None = None,
+    progress: bool = True,
+) -> dict[str, CollisionDataset]:
     """The paper's three splits (``train``, ``seen_test``, ``unseen_test``); counts default to the paper's."""
     n = samples_per_workspace or scenario.samples_per_workspace
     n_seen = scenario.n_seen if n_seen is None else n_seen
@@ -173,6 +208,8 @@ def make_splits(scenario: Scenario, seed: int = 0, samples_per_workspace: int | 
     unseen = scenario.workspaces("unseen", n_unseen, seed)
     return {
         "train": label_workspaces(scenario, seen, n, seed, "train_samples", progress, "train samples"),
-        "seen_test": label_workspaces(scenario, seen[:n_seen_test], n, seed, "test_samples", progress, "seen test samples"),
+        "seen_test": label_workspaces(
+            scenario, seen[:n_seen_test], n, seed, "test_samples", progress, "seen test samples"
+        ),
         "unseen_test": label_workspaces(scenario, unseen, n, seed, "unseen_samples", progress, "unseen test samples"),
     }

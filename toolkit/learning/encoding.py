@@ -87,15 +87,15 @@ class LinkKinematics(nn.Module):
         """Centres and long axes of the link boxes, ``(L, 3, N)`` each (tensors or arrays, as the inputs)."""
         xp = _namespace(position)
         eye = xp.eye(3, dtype=position.dtype, device=position.device)
-        columns = [xp.broadcast_to(eye[:, i: i + 1], (3, position.shape[1])) for i in range(3)]
+        columns = [xp.broadcast_to(eye[:, i : i + 1], (3, position.shape[1])) for i in range(3)]
         for r in range(self.n_base_turns):
-            columns = _turn(columns, self.turn_axes[r], sin[r: r + 1], cos[r: r + 1])
+            columns = _turn(columns, self.turn_axes[r], sin[r : r + 1], cos[r : r + 1])
         centers, long_axes = [], []
         for link, offset in enumerate(self.offsets):
             if link:
                 position = position + _rotate(columns, self.origins[link - 1])  # (3, N)
                 r = self.n_base_turns + link - 1
-                columns = _turn(columns, self.turn_axes[r], sin[r: r + 1], cos[r: r + 1])
+                columns = _turn(columns, self.turn_axes[r], sin[r : r + 1], cos[r : r + 1])
             centers.append(position + _rotate(columns, offset))
             long_axes.append(columns[self.long_axes[link]])
         return xp.stack(centers), xp.stack(long_axes)
@@ -122,25 +122,32 @@ class InputEncoding(nn.Module):
         self.n_pos = position_dofs(robot)  # buffers below derive from the robot and grid: not saved in checkpoints
         self.n_angles = int(robot.wraps.sum())  # configurations are [positions, angles, joints]
         self.base_height = robot.base_height  # the planar base's z
-        lower, upper = (np.array(bound[self.n_pos + self.n_angles:])[:, None] for bound in (robot.lower, robot.upper))
+        lower, upper = (np.array(bound[self.n_pos + self.n_angles :])[:, None] for bound in (robot.lower, robot.upper))
         scale = 2 / (upper - lower)  # joints to [-1, 1]: q * scale + shift
         cell_axes = self.grid_shape[: self.n_pos] if kind == "local" else ()
-        strides = [math.prod(cell_axes[i + 1:]) for i in range(len(cell_axes))]  # exact in float32 below 2**24 cells
-        for name, value in [("joint_scale", scale), ("joint_shift", -1 - lower * scale),  # (n_joints, 1)
-                            ("last_cell", np.array(cell_axes)[:, None] - 1), ("cell_strides", np.array(strides)[:, None])]:
+        strides = [math.prod(cell_axes[i + 1 :]) for i in range(len(cell_axes))]  # exact in float32 below 2**24 cells
+        for name, value in [
+            ("joint_scale", scale),
+            ("joint_shift", -1 - lower * scale),  # (n_joints, 1)
+            ("last_cell", np.array(cell_axes)[:, None] - 1),
+            ("cell_strides", np.array(strides)[:, None]),
+        ]:
             self.register_buffer(name, torch.tensor(value, dtype=torch.float32).reshape(-1, 1), persistent=False)
         self._numpy_constants = None
         self.n_cells = math.prod(cell_axes)  # 1 for "raw"
         window = [torch.arange(-self.radius, self.radius + 1)] * self.n_pos
-        window += [torch.arange(n) for n in self.grid_shape[self.n_pos:]]
+        window += [torch.arange(n) for n in self.grid_shape[self.n_pos :]]
         offsets = torch.stack(torch.meshgrid(*window, indexing="ij"), dim=-1).reshape(-1, len(self.grid_shape))
         self.register_buffer("offsets", offsets, persistent=False)  # (P, G): cell offsets of the patch
         self.kinematics = LinkKinematics(robot) if kind == "local" and robot.n_links > 1 else None
         self.latent_dim = int(latent_dim)
         self.patch_size = len(offsets) if kind == "local" else 0
         n_joints = robot.dof - self.n_pos - self.n_angles
-        self.pose_size = robot.dof if kind == "raw" else (
-            self.n_pos + 2 * self.n_angles + n_joints + (6 * robot.n_links if self.kinematics else 0))
+        self.pose_size = (
+            robot.dof
+            if kind == "raw"
+            else (self.n_pos + 2 * self.n_angles + n_joints + (6 * robot.n_links if self.kinematics else 0))
+        )
         self.out_features = self.latent_dim + self.patch_size + self.pose_size
 
     def forward(self, z: torch.Tensor, grids: torch.Tensor, ws_index: torch.Tensor, Q: torch.Tensor) -> torch.Tensor:
@@ -156,7 +163,9 @@ class InputEncoding(nn.Module):
         for axis in reversed(range(len(self.grid_shape))):  # F.pad lists the last axis first
             pad += [self.radius, self.radius] if axis < self.n_pos else [0, 0]
         padded = nn.functional.pad(grids, pad, value=1.0)  # (W, *grid padded along the position axes)
-        cells = torch.meshgrid(*[torch.arange(n, device=grids.device) for n in self.grid_shape[: self.n_pos]], indexing="ij")
+        cells = torch.meshgrid(
+            *[torch.arange(n, device=grids.device) for n in self.grid_shape[: self.n_pos]], indexing="ij"
+        )
         base = torch.zeros(self.n_cells, len(self.grid_shape), dtype=torch.long, device=grids.device)
         base[:, : self.n_pos] = torch.stack(cells, dim=-1).reshape(-1, self.n_pos) + self.radius  # (n_cells, G), padded
         index = (base[:, None, :] + self.offsets).unbind(-1)  # G x (n_cells, P)
@@ -179,14 +188,16 @@ class InputEncoding(nn.Module):
         position = rows[: self.n_pos]  # (n_pos, N); grid cells are unit cubes from the origin
         cell = xp.minimum(xp.clip(xp.floor(position), 0, None), last_cell)  # (n_pos, N), clamped into the grid
         centre = cell + 0.5
-        turns = rows[self.n_pos:] if self.kinematics is not None else rows[self.n_pos:first_joint]  # (R, N)
+        turns = rows[self.n_pos :] if self.kinematics is not None else rows[self.n_pos : first_joint]  # (R, N)
         sin, cos = xp.sin(turns), xp.cos(turns)
         parts = [position - centre, sin[: self.n_angles], cos[: self.n_angles], rows[first_joint:] * scale + shift]
         if self.kinematics is not None:
             position_3d, centre_3d = position, centre  # (3, N) each
             if self.n_pos < 3:  # the planar base's z, not a DoF
                 up = 3 - self.n_pos
-                position_3d = xp.concat([position, xp.full((up, n), self.base_height, dtype=rows.dtype, device=rows.device)])
+                position_3d = xp.concat(
+                    [position, xp.full((up, n), self.base_height, dtype=rows.dtype, device=rows.device)]
+                )
                 centre_3d = xp.concat([centre, xp.zeros((up, n), dtype=rows.dtype, device=rows.device)])
             centers, long_axes = self.kinematics.forward(position_3d, sin, cos)  # (L, 3, N) each; forward: no hooks
             parts += [(centers - centre_3d).reshape(3 * len(centers), n), long_axes.reshape(3 * len(centers), n)]

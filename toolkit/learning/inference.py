@@ -56,11 +56,16 @@ class FoldedLayers(NamedTuple):
 
     def numpy(self) -> FoldedLayers:
         """The same numbers as numpy arrays (views of the tensors' memory when they are on the CPU)."""
+
         def array(t: torch.Tensor) -> np.ndarray:
             return t.cpu().numpy()
 
-        return FoldedLayers(array(self.table), array(self.pose_weight), [(array(w), array(b)) for w, b in self.hidden],
-                            array(self.margin_weight))
+        return FoldedLayers(
+            array(self.table),
+            array(self.pose_weight),
+            [(array(w), array(b)) for w, b in self.hidden],
+            array(self.margin_weight),
+        )
 
 
 @torch.no_grad()
@@ -74,7 +79,7 @@ def workspace_table(predictor: CollisionPredictor, grid: torch.Tensor) -> torch.
     if L:
         share += first.weight[:, :L] @ predictor.cae.encode(grids)[0, :L]
     patches = encoding.cell_patches(grids)[0]  # (n_cells, P)
-    return first.weight[:, L:L + P] @ patches.T + share[:, None]
+    return first.weight[:, L : L + P] @ patches.T + share[:, None]
 
 
 class WorkspaceMLP:
@@ -89,8 +94,13 @@ class WorkspaceMLP:
     CHUNK = 4096  # configurations a numpy pass computes at once
 
     @torch.no_grad()
-    def __init__(self, predictor: CollisionPredictor, grid: torch.Tensor, numpy_below: int | None = None,
-                 chunk: int | None = None):
+    def __init__(
+        self,
+        predictor: CollisionPredictor,
+        grid: torch.Tensor,
+        numpy_below: int | None = None,
+        chunk: int | None = None,
+    ):
         """``grid (*grid)``: the workspace's occupancy, on the device torch computes on. ``numpy_below``: calls of
         fewer configurations compute in numpy (default: ``NUMPY_BELOW`` on the CPU, 0 elsewhere); ``chunk``:
         configurations a numpy pass computes at once (default ``CHUNK``)."""
@@ -111,9 +121,12 @@ class WorkspaceMLP:
         table = workspace_table(predictor, grid)  # (H, n_cells)
         self.one_cell = table.shape[1] == 1  # the workspace's share is the same for every configuration
         pose_start = encoding.latent_dim + encoding.patch_size
-        self.layers = FoldedLayers(_snapshot(table), _snapshot(first.weight[:, pose_start:]),
-                                   [(_snapshot(m.weight), _snapshot(m.bias[:, None])) for m in linears[1:-1]],
-                                   _snapshot(last.weight[VALID] - last.weight[1 - VALID]))
+        self.layers = FoldedLayers(
+            _snapshot(table),
+            _snapshot(first.weight[:, pose_start:]),
+            [(_snapshot(m.weight), _snapshot(m.bias[:, None])) for m in linears[1:-1]],
+            _snapshot(last.weight[VALID] - last.weight[1 - VALID]),
+        )
         self.numpy_layers = self.layers.numpy() if self.numpy_below else None  # the same numbers, for small calls
 
     def __call__(self, Q: np.ndarray) -> np.ndarray:
@@ -125,7 +138,7 @@ class WorkspaceMLP:
             return self._torch_margins(torch.as_tensor(Q, dtype=torch.float32, device=self.device)).cpu().numpy()
         if len(Q) <= self.chunk:
             return self._numpy_margins(Q)
-        return np.concatenate([self._numpy_margins(Q[i:i + self.chunk]) for i in range(0, len(Q), self.chunk)])
+        return np.concatenate([self._numpy_margins(Q[i : i + self.chunk]) for i in range(0, len(Q), self.chunk)])
 
     @torch.inference_mode()
     def _torch_margins(self, Q: torch.Tensor) -> torch.Tensor:

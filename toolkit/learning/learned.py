@@ -22,6 +22,7 @@ from scipy.special import expit, logit
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.geometry.workspace import Workspace
 from toolkit.learning.checkpoints import load_models
+from toolkit.learning.inference import WorkspaceMLP
 from toolkit.learning.training import TrainedModels
 
 
@@ -35,15 +36,16 @@ class LearnedChecker(CollisionChecker):
     def __init__(self, workspace: Workspace, models: TrainedModels, threshold: float | None = None):
         scenario = models.scenario
         if workspace.grid_shape != scenario.grid_shape:
-            raise ValueError(f"workspace grid {workspace.grid_shape} does not fit scenario {scenario.name!r}'s "
-                             f"{scenario.grid_shape}")
+            raise ValueError(
+                f"workspace grid {workspace.grid_shape} does not fit scenario {scenario.name!r}'s {scenario.grid_shape}"
+            )
         super().__init__(scenario.robot)
         self.workspace, self.models = workspace, models
         self.planner_options = models.preset.planner_options()  # how a planner uses this model (its recipe's)
         self.threshold = models.threshold if threshold is None else threshold
         device = models.predictor.threshold.device
         grid = torch.as_tensor(workspace.occupancy(), device=device)  # (*grid)
-        self.workspace_mlp = models.predictor.eval().for_workspace(grid)  # the workspace, encoded once
+        self.workspace_mlp = WorkspaceMLP(models.predictor.eval(), grid)  # the workspace, encoded once
         self._margins(self.robot.lower[None])  # a first call's one-off costs (lazy set-up) belong here
 
     @property

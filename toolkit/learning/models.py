@@ -10,24 +10,18 @@
   Linear -> PReLU -> Dropout(p) (§IV-B2).
 - :class:`~toolkit.learning.encoding.InputEncoding` (in :mod:`toolkit.learning.encoding`): what the MLP
   sees, the paper's ``[z, q]`` or ``[z, patch, pose]`` (the ``strong`` preset leaves out ``z``).
-- :class:`CollisionPredictor`: the three together, one ``state_dict``;
-  :meth:`~CollisionPredictor.for_workspace` folds one workspace into its MLP, a
-  :class:`~toolkit.learning.inference.WorkspaceMLP`: the learned checker's fast
-  inference path (:mod:`toolkit.learning.inference`).
+- :class:`CollisionPredictor`: the three together, one ``state_dict``.
+  :class:`toolkit.learning.inference.WorkspaceMLP` folds one workspace into its MLP:
+  the learned checker's fast inference path.
 """
 
 from __future__ import annotations
-
-from typing import TYPE_CHECKING
 
 import torch
 from torch import nn
 
 from toolkit.learning.encoding import InputEncoding, reach_cells
 from toolkit.scenarios import Scenario
-
-if TYPE_CHECKING:
-    from toolkit.learning.inference import WorkspaceMLP
 
 VALID = 1  # class index of "valid" in the MLP's two logits
 PRELU_SLOPE = 0.25  # nn.PReLU's initial negative slope
@@ -86,7 +80,7 @@ class CAE(nn.Module):
 
     def encoder_weight_penalty(self) -> torch.Tensor:
         """``sum_ij (W^e_ij)^2`` over the encoder's linear weights (biases and PReLU slopes excluded)."""
-        return sum((layer.weight ** 2).sum() for layer in self.encoder if isinstance(layer, nn.Linear))
+        return sum((layer.weight**2).sum() for layer in self.encoder if isinstance(layer, nn.Linear))
 
     def loss(self, grids: torch.Tensor, lam: float, reduction: str = "sum") -> torch.Tensor:
         """Eq. (1): the reconstruction error of grids ``(W, *grid)`` plus ``lam * sum (W^e)^2``.
@@ -157,16 +151,15 @@ class CollisionPredictor(nn.Module):
         self.cae, self.encoding, self.mlp = cae, encoding, mlp
         self.register_buffer("threshold", torch.tensor(float(threshold)))
 
-    def for_workspace(self, grid: torch.Tensor) -> WorkspaceMLP:
-        """This predictor's MLP with the workspace ``grid (*grid)`` folded in, for fast inference: the workspace
-        encoded once (Algorithm 1, line 1) for every later prediction (line 3)."""
-        from toolkit.learning.inference import WorkspaceMLP  # it builds on this module, so it is imported late
 
-        return WorkspaceMLP(self, grid)
-
-
-def build_predictor(scenario: Scenario, encoding: str, mlp_hidden: tuple[int, ...] | None = None,
-                    dropout: float = 0.5, latent_input: bool = True, mlp_init: str = "torch") -> CollisionPredictor:
+def build_predictor(
+    scenario: Scenario,
+    encoding: str,
+    mlp_hidden: tuple[int, ...] | None = None,
+    dropout: float = 0.5,
+    latent_input: bool = True,
+    mlp_init: str = "torch",
+) -> CollisionPredictor:
     """Untrained networks of the paper's sizes for ``scenario`` (``mlp_hidden`` may override the MLP's;
     ``latent_input=False``: the MLP does not see ``z``; ``mlp_init``: see :class:`CollisionMLP`)."""
     cae = CAE((scenario.grid_size,) + tuple(scenario.cae_hidden))

@@ -61,16 +61,24 @@ class Preset:
     standardize: bool = False  # MLP inputs scaled to zero mean, unit variance on the training data
     holdout: float = 0.0  # share of training workspaces kept from the MLP to calibrate its threshold
     latent_input: bool = True  # the MLP sees the CAE's z (the paper); False: only the patch and pose
-    screen_edges: bool = False  # planning with this model: learned edge screening (toolkit.prm), or the paper's exact edges
+    screen_edges: bool = (
+        False  # planning with this model: learned edge screening (toolkit.prm), or the paper's exact edges
+    )
     auxiliary: str = "exact"  # planning with this model: how rounds after the first sample (toolkit.prm.AUXILIARY)
     exact_every: int = 4  # planning with this model, auxiliary "confirmed": how often a later round samples exactly
-    planner: str = "lazy"  # planning, with and without this model: "lazy" PRM or "paper" (Algorithm 1; toolkit.prm.PRMOptions)
+    planner: str = (
+        "lazy"  # planning, with and without this model: "lazy" PRM or "paper" (Algorithm 1; toolkit.prm.PRMOptions)
+    )
     quick: bool = False  # shrunk for a quick run (toolkit.experiments.config.QUICK)
 
     def planner_options(self) -> dict:
         """The :class:`~toolkit.prm.PRMOptions` that planning with this model uses."""
-        return {"planner": self.planner, "screen_edges": self.screen_edges, "auxiliary": self.auxiliary,
-                "exact_every": self.exact_every}
+        return {
+            "planner": self.planner,
+            "screen_edges": self.screen_edges,
+            "auxiliary": self.auxiliary,
+            "exact_every": self.exact_every,
+        }
 
     def fingerprint(self) -> str:
         """8 hex digits that change with any setting: a cache keyed by it never serves a changed recipe."""
@@ -78,16 +86,50 @@ class Preset:
 
 
 PRESETS: dict[str, Preset] = {
-    "paper": Preset("paper", encoding="raw", optimizer="adagrad", lr=0.1,
-                    cae_optimizer="adamw", cae_lr=1e-4, dropout=0.5, cae_lambda=1e-3,
-                    # unstated in the paper, chosen by `toolkit tune --scenario 2ds` on held-out training workspaces:
-                    cae_epochs=100, mlp_epochs=50, mlp_batch=32, mlp_init="he", standardize=False,
-                    cae_batch=10, cae_max_steps=1500, planner="paper"),
-    "strong": Preset("strong", encoding="local", optimizer="adamw", lr=3e-3,
-                     cae_optimizer="adamw", cae_lr=1e-3, dropout=0.0, cae_lambda=1e-3, cae_workspaces=2000,
-                     cae_epochs=10_000, cae_batch=100, cae_max_steps=2500, mlp_epochs=10, mlp_batch=256, mlp_hidden=(64, 32),
-                     samples_factor=20, weight_decay=1e-4, cosine_schedule=True, standardize=True, holdout=0.1,
-                     latent_input=False, screen_edges=True, auxiliary="confirmed"),
+    "paper": Preset(
+        "paper",
+        encoding="raw",
+        optimizer="adagrad",
+        lr=0.1,
+        cae_optimizer="adamw",
+        cae_lr=1e-4,
+        dropout=0.5,
+        cae_lambda=1e-3,
+        # unstated in the paper, chosen by `toolkit tune --scenario 2ds` on held-out training workspaces:
+        cae_epochs=100,
+        mlp_epochs=50,
+        mlp_batch=32,
+        mlp_init="he",
+        standardize=False,
+        cae_batch=10,
+        cae_max_steps=1500,
+        planner="paper",
+    ),
+    "strong": Preset(
+        "strong",
+        encoding="local",
+        optimizer="adamw",
+        lr=3e-3,
+        cae_optimizer="adamw",
+        cae_lr=1e-3,
+        dropout=0.0,
+        cae_lambda=1e-3,
+        cae_workspaces=2000,
+        cae_epochs=10_000,
+        cae_batch=100,
+        cae_max_steps=2500,
+        mlp_epochs=10,
+        mlp_batch=256,
+        mlp_hidden=(64, 32),
+        samples_factor=20,
+        weight_decay=1e-4,
+        cosine_schedule=True,
+        standardize=True,
+        holdout=0.1,
+        latent_input=False,
+        screen_edges=True,
+        auxiliary="confirmed",
+    ),
 }
 
 

@@ -55,9 +55,17 @@ def default_device() -> torch.device:
     return torch.device("cuda" if torch.cuda.is_available() else "cpu")
 
 
-def train_models(scenario: Scenario, preset: Preset, splits: dict[str, CollisionDataset], seed: int = 0, *,
-                 progress: bool = True, device: torch.device | str | None = None,
-                 cae: bool | None = None, trained_cae: CAE | None = None) -> TrainedModels:
+def train_models(
+    scenario: Scenario,
+    preset: Preset,
+    splits: dict[str, CollisionDataset],
+    seed: int = 0,
+    *,
+    progress: bool = True,
+    device: torch.device | str | None = None,
+    cae: bool | None = None,
+    trained_cae: CAE | None = None,
+) -> TrainedModels:
     """Fit the CAE, then the MLP on ``splits["train"]``'s labelled samples; models end on the CPU.
 
     The CAE trains on the training split's grids, or on ``preset.cae_workspaces`` generated
@@ -72,18 +80,30 @@ def train_models(scenario: Scenario, preset: Preset, splits: dict[str, Collision
         raise ValueError(f"the training split holds {train.scenario!r} data, not {scenario.name!r}")
     device = torch.device(device) if device is not None else default_device()
     torch.manual_seed(seed)
-    predictor = build_predictor(scenario, preset.encoding, preset.mlp_hidden, preset.dropout, preset.latent_input,
-                                preset.mlp_init).to(device)
+    predictor = build_predictor(
+        scenario, preset.encoding, preset.mlp_hidden, preset.dropout, preset.latent_input, preset.mlp_init
+    ).to(device)
     shuffle = torch.Generator().manual_seed(seed)
     history = {}
     if trained_cae is not None:
         predictor.cae.load_state_dict(trained_cae.state_dict())
         history["cae"] = []
     elif cae if cae is not None else preset.latent_input:
-        grids = (torch.as_tensor(data.occupancy_grids(scenario, "cae_grids", preset.cae_workspaces, seed, progress))
-                 if preset.cae_workspaces else torch.as_tensor(train.occupancy)).to(device)
-        history["cae"] = train_cae(predictor, grids, preset, shuffle, progress, max_steps=scenario.cae_max_steps,
-                                   max_batch=scenario.cae_max_batch, max_lr=scenario.cae_max_lr)
+        grids = (
+            torch.as_tensor(data.occupancy_grids(scenario, "cae_grids", preset.cae_workspaces, seed, progress))
+            if preset.cae_workspaces
+            else torch.as_tensor(train.occupancy)
+        ).to(device)
+        history["cae"] = train_cae(
+            predictor,
+            grids,
+            preset,
+            shuffle,
+            progress,
+            max_steps=scenario.cae_max_steps,
+            max_batch=scenario.cae_max_batch,
+            max_lr=scenario.cae_max_lr,
+        )
     n_holdout = int(round(preset.holdout * len(train.workspaces))) if len(train.workspaces) > 1 else 0
     fit, holdout = split_workspaces(train, len(train.workspaces) - n_holdout)
     history["mlp"] = train_mlp(predictor, fit, preset, shuffle, progress)
@@ -92,9 +112,16 @@ def train_models(scenario: Scenario, preset: Preset, splits: dict[str, Collision
     return TrainedModels(scenario, preset, predictor.cpu().eval(), seed, history)
 
 
-def train_cae(predictor: CollisionPredictor, grids: torch.Tensor, preset: Preset, shuffle: torch.Generator,
-              progress: bool = True, max_steps: int | None = None, max_batch: int | None = None,
-              max_lr: float | None = None) -> list[float]:
+def train_cae(
+    predictor: CollisionPredictor,
+    grids: torch.Tensor,
+    preset: Preset,
+    shuffle: torch.Generator,
+    progress: bool = True,
+    max_steps: int | None = None,
+    max_batch: int | None = None,
+    max_lr: float | None = None,
+) -> list[float]:
     """Fit the CAE to grids ``(W, *grid)`` with Eq. (1) (``preset.cae_loss``), at most ``max_steps`` steps of at most
     ``max_batch`` grids at a learning rate of at most ``max_lr`` if given; the mean loss of each epoch. Integer grids
     (int8) become float a batch at a time."""
@@ -105,12 +132,24 @@ def train_cae(predictor: CollisionPredictor, grids: torch.Tensor, preset: Preset
     epochs = max(1, min(preset.cae_epochs, max_steps // steps_per_epoch))
     batches = _batches(len(grids), batch, epochs, shuffle)
     # no weight decay or schedule of the optimizer here (those settings are the MLP's): Eq. (1)'s penalty is the CAE's
-    return fit(cae.parameters(), preset.cae_optimizer, min(preset.cae_lr, max_lr or preset.cae_lr), batches,
-                lambda idx: cae.loss(grids[idx].float(), preset.cae_lambda, preset.cae_loss), progress, f"CAE ({preset.name})")
+    return fit(
+        cae.parameters(),
+        preset.cae_optimizer,
+        min(preset.cae_lr, max_lr or preset.cae_lr),
+        batches,
+        lambda idx: cae.loss(grids[idx].float(), preset.cae_lambda, preset.cae_loss),
+        progress,
+        f"CAE ({preset.name})",
+    )
 
 
-def train_mlp(predictor: CollisionPredictor, dataset: CollisionDataset, preset: Preset, shuffle: torch.Generator,
-              progress: bool = True) -> list[float]:
+def train_mlp(
+    predictor: CollisionPredictor,
+    dataset: CollisionDataset,
+    preset: Preset,
+    shuffle: torch.Generator,
+    progress: bool = True,
+) -> list[float]:
     """Fit the MLP with cross-entropy on a dataset's samples, the CAE frozen; the mean loss of each epoch."""
     device = predictor.threshold.device
     X, y = _inputs(predictor, dataset), torch.as_tensor(dataset.valid.reshape(-1), device=device).long()
@@ -118,9 +157,17 @@ def train_mlp(predictor: CollisionPredictor, dataset: CollisionDataset, preset: 
     X = (X - mean) / std
     mlp = predictor.mlp.train()
     batches = _batches(len(X), preset.mlp_batch, preset.mlp_epochs, shuffle)
-    losses = fit(mlp.parameters(), preset.optimizer, preset.lr, batches,
-                  lambda idx: nn.functional.cross_entropy(mlp(X[idx]), y[idx]), progress, f"MLP ({preset.name})",
-                  preset.weight_decay, preset.cosine_schedule)
+    losses = fit(
+        mlp.parameters(),
+        preset.optimizer,
+        preset.lr,
+        batches,
+        lambda idx: nn.functional.cross_entropy(mlp(X[idx]), y[idx]),
+        progress,
+        f"MLP ({preset.name})",
+        preset.weight_decay,
+        preset.cosine_schedule,
+    )
     mlp.eval()
     if preset.standardize:
         mlp.fold_standardization(mean, std)
@@ -165,8 +212,12 @@ def evaluate(models: TrainedModels, splits: dict[str, CollisionDataset]) -> dict
         result["mlp"][key] = classification_scores(models, dataset)
         if not trained_cae:  # left untrained (train_models' cae=False): nothing to measure
             continue
-        result["cae"][f"{key}_acc"] = float(metrics.reconstruction_accuracy(predictor.cae(grids).cpu().numpy(), dataset.occupancy).mean())
-        result["cae"][f"{key}_all_free"] = float(np.mean(dataset.occupancy < 0))  # the accuracy of predicting "all free"
+        result["cae"][f"{key}_acc"] = float(
+            metrics.reconstruction_accuracy(predictor.cae(grids).cpu().numpy(), dataset.occupancy).mean()
+        )
+        result["cae"][f"{key}_all_free"] = float(
+            np.mean(dataset.occupancy < 0)
+        )  # the accuracy of predicting "all free"
     uniform = splits.get("unseen_uniform") or data.validity_blind_split(models.scenario, splits["unseen_test"])
     result["mlp"]["unseen_uniform"] = classification_scores(models, uniform)
     return result
@@ -175,11 +226,14 @@ def evaluate(models: TrainedModels, splits: dict[str, CollisionDataset]) -> dict
 def classification_scores(models: TrainedModels, dataset: CollisionDataset) -> dict[str, float]:
     """``{"acc", "tpr", "tnr", "always_valid"}`` of the models' predictions on a dataset's samples."""
     predicted = probabilities(models.predictor, dataset) >= models.threshold
-    return dict(metrics.classification(predicted.reshape(-1), dataset.valid.reshape(-1)),
-                always_valid=float(np.mean(dataset.valid)))
+    return dict(
+        metrics.classification(predicted.reshape(-1), dataset.valid.reshape(-1)),
+        always_valid=float(np.mean(dataset.valid)),
+    )
 
 
 # -- helpers ---------------------------------------------------------------------
+
 
 def _inputs(predictor: CollisionPredictor, dataset: CollisionDataset) -> torch.Tensor:
     """MLP inputs ``(W * n, F)`` of a dataset's samples, the workspaces encoded once (no gradient)."""
@@ -187,16 +241,28 @@ def _inputs(predictor: CollisionPredictor, dataset: CollisionDataset) -> torch.T
     ws_index, Q, _ = dataset.flat()
     with torch.no_grad():
         grids = torch.as_tensor(dataset.occupancy, device=device)
-        return predictor.encoding(predictor.cae.encode(grids), grids, torch.as_tensor(ws_index, device=device),
-                                  torch.as_tensor(Q, dtype=torch.float32, device=device))
+        return predictor.encoding(
+            predictor.cae.encode(grids),
+            grids,
+            torch.as_tensor(ws_index, device=device),
+            torch.as_tensor(Q, dtype=torch.float32, device=device),
+        )
 
 
 def split_workspaces(dataset: CollisionDataset, n_first: int) -> tuple[CollisionDataset, CollisionDataset]:
     """The first ``n_first`` workspaces and the rest, as two datasets."""
     parts = []
     for part in (slice(0, n_first), slice(n_first, None)):
-        parts.append(CollisionDataset(dataset.scenario, dataset.workspaces[part], dataset.occupancy[part],
-                                      dataset.configs[part], dataset.valid[part], dict(dataset.meta)))
+        parts.append(
+            CollisionDataset(
+                dataset.scenario,
+                dataset.workspaces[part],
+                dataset.occupancy[part],
+                dataset.configs[part],
+                dataset.valid[part],
+                dict(dataset.meta),
+            )
+        )
     return parts[0], parts[1]
 
 
@@ -205,8 +271,17 @@ def _batches(n: int, batch: int, epochs: int, shuffle: torch.Generator) -> list[
     return [list(torch.randperm(n, generator=shuffle).split(batch)) for _ in range(epochs)]
 
 
-def fit(params, optimizer_name: str, lr: float, epochs: list[list[torch.Tensor]], loss_of, progress: bool, desc: str,
-         weight_decay: float = 0.0, cosine_schedule: bool = False) -> list[float]:
+def fit(
+    params,
+    optimizer_name: str,
+    lr: float,
+    epochs: list[list[torch.Tensor]],
+    loss_of,
+    progress: bool,
+    desc: str,
+    weight_decay: float = 0.0,
+    cosine_schedule: bool = False,
+) -> list[float]:
     """Minimize ``loss_of(batch indices)`` over the epochs with the named optimizer; mean loss per epoch."""
     params = list(params)
     if optimizer_name == "adagrad":

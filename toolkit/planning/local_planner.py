@@ -52,7 +52,9 @@ def segment_points(robot: BoxRobot, Q0: np.ndarray, Q1: np.ndarray, t: np.ndarra
 
 
 def _are_valid_batched(checker: CollisionChecker, Q: np.ndarray) -> np.ndarray:
-    return np.concatenate([checker.are_valid(Q[i:i + MAX_BATCH]) for i in range(0, len(Q), MAX_BATCH)] or [np.zeros(0, bool)])
+    return np.concatenate(
+        [checker.are_valid(Q[i : i + MAX_BATCH]) for i in range(0, len(Q), MAX_BATCH)] or [np.zeros(0, bool)]
+    )
 
 
 def check_edges(checker: CollisionChecker, Q0, Q1, resolution: float) -> np.ndarray:
@@ -152,8 +154,9 @@ def refute_at(checker: CollisionChecker, Q0, Q1, suspect: np.ndarray, resolution
     return refuted
 
 
-def last_valid_along(checker: CollisionChecker, Q0: np.ndarray, Q1: np.ndarray, resolution: float,
-                     bisections: int = 0, chunk: int = 16) -> np.ndarray:
+def last_valid_along(
+    checker: CollisionChecker, Q0: np.ndarray, Q1: np.ndarray, resolution: float, bisections: int = 0, chunk: int = 16
+) -> np.ndarray:
     """``(E, dof)``: along each segment from a valid ``Q0[e]``, the last valid point before the first invalid one.
 
     Walks all segments together, ``chunk`` steps of ``resolution`` at a time; then

@@ -49,7 +49,9 @@ try:
     from ompl import geometric as og
     from ompl import util as ou
 except ImportError as error:  # an optional extra: say how to get it
-    raise ImportError(f"toolkit.planning.ompl needs OMPL's Python bindings, which are not installed: {INSTALL}") from error
+    raise ImportError(
+        f"toolkit.planning.ompl needs OMPL's Python bindings, which are not installed: {INSTALL}"
+    ) from error
 
 
 def state_space(robot: BoxRobot) -> ob.CompoundStateSpace:
@@ -102,8 +104,15 @@ class ToolkitValidStateSampler(ob.ValidStateSampler):
     ``near`` and keeps a valid configuration within ``distance``.
     """
 
-    def __init__(self, si: ob.SpaceInformation, sampler: str, checker: CollisionChecker, rng: np.random.Generator,
-                 batch: int = 64, **options):
+    def __init__(
+        self,
+        si: ob.SpaceInformation,
+        sampler: str,
+        checker: CollisionChecker,
+        rng: np.random.Generator,
+        batch: int = 64,
+        **options,
+    ):
         super().__init__(si)
         self.robot, self.checker, self.rng, self.batch = checker.robot, checker, rng, batch
         self.sampler = make_sampler(sampler, checker, **options)
@@ -169,8 +178,17 @@ class OMPLResult:
     checks: int
 
 
-def solve(checker: CollisionChecker, start, goal, *, planner: str = "RRTConnect", resolution: float | None = None,
-          seconds: float = 30.0, sampler: str | None = None, rng: np.random.Generator | None = None) -> OMPLResult:
+def solve(
+    checker: CollisionChecker,
+    start,
+    goal,
+    *,
+    planner: str = "RRTConnect",
+    resolution: float | None = None,
+    seconds: float = 30.0,
+    sampler: str | None = None,
+    rng: np.random.Generator | None = None,
+) -> OMPLResult:
     """One query ``start -> goal`` with OMPL's ``planner`` (a class of ``ompl.geometric``), ``checker`` deciding
     validity; ``sampler``: one of ours for the planner's valid samples (PRM's), None: OMPL's uniform one.
 

@@ -25,7 +25,7 @@ PLANNERS = {  # PRMOptions.planner
 AUXILIARY = {  # PRMOptions.auxiliary: how rounds after the first sample, with prediction (both planners)
     "exact": "with the exact checker",
     "confirmed": "with prediction, keeping what the exact checker confirms; every PRMOptions.exact_every-th round "
-                 "(counting from the first) with the exact checker",
+    "(counting from the first) with the exact checker",
     "predicted": "with prediction, like the first (nodes are checked when a candidate path uses them)",
 }
 

@@ -43,12 +43,19 @@ class PRM:
 
     name = "paper"  # the PRMOptions.planner this class runs
 
-    def __init__(self, exact: CollisionChecker, checker: CollisionChecker | None = None,
-                 options: PRMOptions | None = None, sampler: str = "BS"):
+    def __init__(
+        self,
+        exact: CollisionChecker,
+        checker: CollisionChecker | None = None,
+        options: PRMOptions | None = None,
+        sampler: str = "BS",
+    ):
         self.options = PRMOptions(planner=self.name) if options is None else options
         if self.options.planner != self.name:
-            raise ValueError(f"{type(self).__name__} runs planner {self.name!r}, but options.planner is "
-                             f"{self.options.planner!r}; use toolkit.planning.prm.plan to choose by options")
+            raise ValueError(
+                f"{type(self).__name__} runs planner {self.name!r}, but options.planner is "
+                f"{self.options.planner!r}; use toolkit.planning.prm.plan to choose by options"
+            )
         self.exact = exact
         # Algorithm 1, line 1: a learned checker encoded the workspace (the CAE's z) when it was built
         self.checker = exact if checker is None else checker

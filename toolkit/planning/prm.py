@@ -25,12 +25,33 @@ from toolkit.planning.query_roadmap import GOAL, STAGES, START, PlanResult, Plan
 
 PLANNER_CLASSES = {"paper": PRM, "lazy": LazyPRM}  # PRMOptions.planner -> the class that runs it
 
-__all__ = ["AUXILIARY", "GOAL", "PAPER_BASELINE", "PLANNER_CLASSES", "PRM", "STAGES", "START", "LazyPRM",
-           "PRMOptions", "PlanResult", "PlanStep", "plan"]
+__all__ = [
+    "AUXILIARY",
+    "GOAL",
+    "PAPER_BASELINE",
+    "PLANNER_CLASSES",
+    "PRM",
+    "STAGES",
+    "START",
+    "LazyPRM",
+    "PRMOptions",
+    "PlanResult",
+    "PlanStep",
+    "plan",
+]
 
 
-def plan(exact: CollisionChecker, start, goal, *, sampler: str = "BS", checker: CollisionChecker | None = None,
-         options: PRMOptions | None = None, rng: np.random.Generator, trace: list | None = None) -> PlanResult:
+def plan(
+    exact: CollisionChecker,
+    start,
+    goal,
+    *,
+    sampler: str = "BS",
+    checker: CollisionChecker | None = None,
+    options: PRMOptions | None = None,
+    rng: np.random.Generator,
+    trace: list | None = None,
+) -> PlanResult:
     """Solve one query ``start -> goal`` (``(dof,)`` each) with the planner ``options.planner`` names (default: the
     lazy PRM); ``checker`` decides samples (default: ``exact``); a ``trace`` list receives a :class:`PlanStep` at
     every stage."""

@@ -19,8 +19,8 @@ query, so that the ratio of their times is measured under the same conditions.
 from __future__ import annotations
 
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
-from typing import Callable
 
 import numpy as np
 
@@ -28,6 +28,7 @@ from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.geometry.workspace import Workspace
 from toolkit.planning.local_planner import path_is_valid
 from toolkit.planning.prm import PlanResult, PRMOptions, plan
+from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.scenarios import STREAMS, Scenario
 from toolkit.util import threads
 
@@ -44,8 +45,9 @@ class Query:
     goal: np.ndarray  # (dof,)
 
 
-def query_pairs(scenario: Scenario, ws: Workspace, count: int, rng: np.random.Generator,
-                min_separation: float = 0.25) -> list[tuple[np.ndarray, np.ndarray]]:
+def query_pairs(
+    scenario: Scenario, ws: Workspace, count: int, rng: np.random.Generator, min_separation: float = 0.25
+) -> list[tuple[np.ndarray, np.ndarray]]:
     """``count`` (start, goal) pairs valid under the exact checker, base positions ``min_separation`` x diagonal apart."""
     robot, checker = scenario.robot, exact_checker(ws, scenario.robot)
     far = min_separation * float(np.linalg.norm(ws.upper - ws.lower))
@@ -72,8 +74,9 @@ def default_options(scenario: Scenario, checker: CollisionChecker | None = None,
     return PRMOptions(**{**settings, **overrides})
 
 
-def make_queries(scenario: Scenario, seed: int = 0, n_workspaces: int | None = None,
-                 per_workspace: int | None = None) -> list[Query]:
+def make_queries(
+    scenario: Scenario, seed: int = 0, n_workspaces: int | None = None, per_workspace: int | None = None
+) -> list[Query]:
     """The paper's query set (counts default to the scenario's), reproducible from ``seed``."""
     n_workspaces = scenario.query_workspaces if n_workspaces is None else n_workspaces
     per_workspace = scenario.queries_per_workspace if per_workspace is None else per_workspace
@@ -84,18 +87,36 @@ def make_queries(scenario: Scenario, seed: int = 0, n_workspaces: int | None = N
     return queries
 
 
-def solve_query(scenario: Scenario, query: Query, sampler: str, checker: CollisionChecker | None = None,
-                options: PRMOptions | None = None, seed=0) -> PlanResult:
+def solve_query(
+    scenario: Scenario,
+    query: Query,
+    sampler: str,
+    checker: CollisionChecker | None = None,
+    options: PRMOptions | None = None,
+    seed=0,
+) -> PlanResult:
     """One query with ``sampler``; ``checker`` decides samples (None: the exact checker); by default the
     scenario's settings and the planner options of the checker's preset (:func:`default_options`)."""
     options = options or default_options(scenario, checker)
-    return plan(exact_checker(query.workspace, scenario.robot), query.start, query.goal, sampler=sampler,
-                checker=checker, options=options, rng=np.random.default_rng(seed))
+    return plan(
+        exact_checker(query.workspace, scenario.robot),
+        query.start,
+        query.goal,
+        sampler=sampler,
+        checker=checker,
+        options=options,
+        rng=np.random.default_rng(seed),
+    )
 
 
-def run_queries(scenario: Scenario, queries: list[Query], sampler: str,
-                checker_factory: Callable[[Workspace], CollisionChecker] | None = None,
-                options: PRMOptions | None = None, seed: int = 0) -> tuple[list[dict], dict]:
+def run_queries(
+    scenario: Scenario,
+    queries: list[Query],
+    sampler: str,
+    checker_factory: Callable[[Workspace], CollisionChecker] | None = None,
+    options: PRMOptions | None = None,
+    seed: int = 0,
+) -> tuple[list[dict], dict]:
     """Solve every query with ``sampler``; ``checker_factory(workspace)`` gives the learned checker (None: exact).
 
     The factory runs once per workspace (it encodes the workspace: Algorithm 1,
@@ -107,14 +128,19 @@ def run_queries(scenario: Scenario, queries: list[Query], sampler: str,
     return run_interleaved(scenario, queries, sampler, {"run": checker_factory}, options, seed)["run"]
 
 
-def run_interleaved(scenario: Scenario, queries: list[Query], sampler: str,
-                    factories: dict[str, Callable[[Workspace], CollisionChecker] | None],
-                    options: PRMOptions | None = None, seed: int = 0) -> dict[str, tuple[list[dict], dict]]:
+def run_interleaved(
+    scenario: Scenario,
+    queries: list[Query],
+    sampler: str,
+    factories: dict[str, Callable[[Workspace], CollisionChecker] | None],
+    options: PRMOptions | None = None,
+    seed: int = 0,
+) -> dict[str, tuple[list[dict], dict]]:
     """:func:`run_queries` once per entry of ``factories`` (a name: a checker factory, or None for exact), the
     entries taking turns query by query (who goes first rotates), each query with the same seed in every entry.
 
-    So all entries see the machine alike: these machines change speed for minutes
-    at a time (up to 2x, seen here), which moves the ratio of two runs made one
+    So all entries see the machine alike: a shared machine changes speed for minutes
+    at a time, which moves the ratio of two runs made one
     after the other, not that of runs made in turns. Per name: records and summary.
     """
     with one_thread():
@@ -128,18 +154,20 @@ def one_thread():
 
     The exact checker's own work runs on one thread; the learned checker's calls are
     small (a few hundred to a few ten thousand configurations), where intra-op threads
-    cost more than they give and, when the other core is busy, stall. Torch: 3DC-7,
-    bridge test, strong model, 100 queries on 2 cores, sampling with prediction took
-    1.2 ms a query on one thread and 2.4 ms on two. OpenBLAS (numpy's matrix products,
-    the learned checker's small calls): 3DC-7, strong model, 50 queries, sampling with
-    prediction G 5.5 -> 1.4 ms, BT 3.9 -> 1.2 ms a query on one BLAS thread.
+    cost more than they give and, when the other core is busy, stall (measured in
+    ``docs/benchmarks.md``, "On a busy machine").
     """
     return threads.limited(1)
 
 
-def _solve_all(scenario: Scenario, queries: list[Query], sampler: str,
-               factories: dict[str, Callable[[Workspace], CollisionChecker] | None], options: PRMOptions | None,
-               seed: int) -> dict[str, list[dict]]:
+def _solve_all(
+    scenario: Scenario,
+    queries: list[Query],
+    sampler: str,
+    factories: dict[str, Callable[[Workspace], CollisionChecker] | None],
+    options: PRMOptions | None,
+    seed: int,
+) -> dict[str, list[dict]]:
     """The per-query records of :func:`run_interleaved`, per name."""
     names = list(factories)
     records: dict[str, list[dict]] = {name: [] for name in names}
@@ -153,23 +181,42 @@ def _solve_all(scenario: Scenario, queries: list[Query], sampler: str,
                 began = time.perf_counter()
                 built[query.workspace_index] = factory(query.workspace)
                 encode_s = (time.perf_counter() - began) / share[query.workspace_index]
-            result = solve_query(scenario, query, sampler, built.get(query.workspace_index), options, seed=[int(seed), n])
+            result = solve_query(
+                scenario, query, sampler, built.get(query.workspace_index), options, seed=[int(seed), n]
+            )
             fine = result.stats["resolution"] / 10
             valid = result.success and path_is_valid(exact_checker(query.workspace, scenario.robot), result.path, fine)
-            records[name].append(dict(result.stats, workspace=query.workspace_index, success=result.success,
-                                      path_valid=bool(valid), encode_s=encode_s,
-                                      total_s=result.stats["total_s"] + encode_s))
+            records[name].append(
+                dict(
+                    result.stats,
+                    workspace=query.workspace_index,
+                    success=result.success,
+                    path_valid=bool(valid),
+                    encode_s=encode_s,
+                    total_s=result.stats["total_s"] + encode_s,
+                )
+            )
     return records
 
 
 def summarize(records: list[dict]) -> dict:
     """Means and stds over queries of the times; success and path-validity rates in [0, 1]."""
+
     def values(key):
         return np.array([r[key] for r in records], dtype=float)
 
     summary = {"n_queries": len(records)}
-    for key in ("sampling_s", "connection_s", "query_s", "total_s", "encode_s", "exact_checks", "predicted_checks",
-                "rounds", "repairs"):
+    for key in (
+        "sampling_s",
+        "connection_s",
+        "query_s",
+        "total_s",
+        "encode_s",
+        "exact_checks",
+        "predicted_checks",
+        "rounds",
+        "repairs",
+    ):
         summary[key] = float(values(key).mean()) if records else 0.0
         summary[key + "_std"] = float(values(key).std()) if records else 0.0
     for key in ("sampling_s", "total_s"):  # robust to the odd slow query on a noisy machine
@@ -180,15 +227,24 @@ def summarize(records: list[dict]) -> dict:
     return summary
 
 
-def compare_prediction(scenario: Scenario, queries: list[Query], checker_factory: Callable[[Workspace], CollisionChecker],
-                       samplers=("BS", "OB", "G", "BT"), options: PRMOptions | None = None, seed: int = 0) -> dict:
+def compare_prediction(
+    scenario: Scenario,
+    queries: list[Query],
+    checker_factory: Callable[[Workspace], CollisionChecker],
+    samplers=PAPER_SAMPLERS,
+    options: PRMOptions | None = None,
+    seed: int = 0,
+) -> dict:
     """Per sampler: ``{"without": summary, "with": summary, "sampling_ratio", "total_ratio"}`` (with / without),
     the two modes in turns (:func:`run_interleaved`)."""
     table = {}
     for sampler in samplers:
         runs = run_interleaved(scenario, queries, sampler, {"without": None, "with": checker_factory}, options, seed)
         without, with_ = runs["without"][1], runs["with"][1]
-        table[sampler] = {"without": without, "with": with_,
-                          "sampling_ratio": with_["sampling_s"] / max(without["sampling_s"], 1e-12),
-                          "total_ratio": with_["total_s"] / max(without["total_s"], 1e-12)}
+        table[sampler] = {
+            "without": without,
+            "with": with_,
+            "sampling_ratio": with_["sampling_s"] / max(without["sampling_s"], 1e-12),
+            "total_ratio": with_["total_s"] / max(without["total_s"], 1e-12),
+        }
     return table

@@ -54,8 +54,8 @@ START, GOAL = 0, 1  # node indices of the query's endpoints (never removed)
 STAGES = {  # PlanStep.stage: what the planner just did (Algorithm 1, §III-B)
     "sample": "added this round's accepted samples S' as nodes (lines 2-3; round 1 also start and goal)",
     "connect": "tried edges to each new node's k nearest neighbours, then bridges between start's and goal's "
-               "components (line 4): checked exactly (the paper), screened by prediction, or, lazy, looked at in a "
-               "few points",
+    "components (line 4): checked exactly (the paper), screened by prediction, or, lazy, looked at in a "
+    "few points",
     "bridge": "after repairs left start and goal apart, tried the next closest pairs between their components",
     "candidate": "found the cheapest start-goal path, not yet verified (line 5)",
     "repair": "the exact checker rejected the candidate's removed_nodes or removed_edges; they are removed next",
@@ -97,8 +97,9 @@ class PlanStep:
 class QueryRoadmap:
     """The state of one query: roadmap, the exact and the deciding checker, counters and timers, the trace."""
 
-    def __init__(self, exact: CollisionChecker, checker: CollisionChecker, options: PRMOptions,
-                 trace: list | None = None):
+    def __init__(
+        self, exact: CollisionChecker, checker: CollisionChecker, options: PRMOptions, trace: list | None = None
+    ):
         if checker.robot.dof != exact.robot.dof:
             raise ValueError(f"checker is for a {checker.robot.dof}-DoF robot, the exact checker for {exact.robot.dof}")
         self.exact, self.checker, self.options, self.trace = exact, checker, options, trace
@@ -108,9 +109,19 @@ class QueryRoadmap:
         # edges already were), then finer
         self.verify_resolutions = (self.resolution, self.resolution / options.verify_refinement)
         self.roadmap = Roadmap(exact.robot)
-        self.stats = {"rounds": 0, "repairs": 0, "rebridges": 0, "removed_nodes": 0, "removed_edges": 0,
-                      "sampling_s": 0.0, "connection_s": 0.0, "query_s": 0.0,
-                      "node_checks": 0, "edge_checks": 0, "verify_checks": 0}
+        self.stats = {
+            "rounds": 0,
+            "repairs": 0,
+            "rebridges": 0,
+            "removed_nodes": 0,
+            "removed_edges": 0,
+            "sampling_s": 0.0,
+            "connection_s": 0.0,
+            "query_s": 0.0,
+            "node_checks": 0,
+            "edge_checks": 0,
+            "verify_checks": 0,
+        }
         self.began = time.perf_counter()
         self.counts_at_start, self.bounded_at_start = self.counts(), exact.n_bounded
 
@@ -129,9 +140,19 @@ class QueryRoadmap:
         if self.trace is None:
             return
         roadmap, indices = self.roadmap, lambda a: np.array(a, dtype=int)
-        self.trace.append(PlanStep(stage, self.stats["rounds"], roadmap.nodes.copy(), roadmap.node_verified.copy(),
-                                   roadmap.edges.copy(), indices(new_nodes), indices(path), indices(removed_nodes),
-                                   indices(removed_edges)))
+        self.trace.append(
+            PlanStep(
+                stage,
+                self.stats["rounds"],
+                roadmap.nodes.copy(),
+                roadmap.node_verified.copy(),
+                roadmap.edges.copy(),
+                indices(new_nodes),
+                indices(path),
+                indices(removed_nodes),
+                indices(removed_edges),
+            )
+        )
 
     def counts(self) -> tuple[int, int]:
         """Configurations checked so far: (exact, predicted)."""
@@ -159,12 +180,19 @@ class QueryRoadmap:
                 decide(roadmap.bridge_edges(end, self.options.k))
         return len(roadmap.edges) - before
 
-    def add_decided(self, pairs: np.ndarray, keep: np.ndarray, cost: np.ndarray, checked_at: float = np.inf,
-                    suspect: np.ndarray | None = None) -> None:
+    def add_decided(
+        self,
+        pairs: np.ndarray,
+        keep: np.ndarray,
+        cost: np.ndarray,
+        checked_at: float = np.inf,
+        suspect: np.ndarray | None = None,
+    ) -> None:
         """Add the candidate edges ``pairs[keep]`` (``pairs (C, 2)``, ``keep``, ``cost`` and ``suspect (C,)``: see
         ``Roadmap.add_edges``) and remember the others as rejected."""
-        self.roadmap.add_edges(pairs[keep], cost[keep], checked_at=checked_at,
-                               suspect=None if suspect is None else suspect[keep])
+        self.roadmap.add_edges(
+            pairs[keep], cost[keep], checked_at=checked_at, suspect=None if suspect is None else suspect[keep]
+        )
         self.roadmap.reject(pairs[~keep])
 
     def extract_path(self, decide: EdgeRule) -> np.ndarray | None:
@@ -242,10 +270,16 @@ class QueryRoadmap:
     def result(self, path: np.ndarray | None) -> PlanResult:
         """The query's answer: the path's configurations (if any), the final stats and roadmap."""
         exact, predicted = np.subtract(self.counts(), self.counts_at_start)
-        stats = dict(self.stats, nodes=len(self.roadmap.nodes), edges=len(self.roadmap.edges),
-                     exact_checks=int(exact), predicted_checks=int(predicted), resolution=self.resolution,
-                     exact_clearances=self.exact.n_bounded - self.bounded_at_start,
-                     total_s=time.perf_counter() - self.began)
+        stats = dict(
+            self.stats,
+            nodes=len(self.roadmap.nodes),
+            edges=len(self.roadmap.edges),
+            exact_checks=int(exact),
+            predicted_checks=int(predicted),
+            resolution=self.resolution,
+            exact_clearances=self.exact.n_bounded - self.bounded_at_start,
+            total_s=time.perf_counter() - self.began,
+        )
         path_q = self.roadmap.nodes[path] if path is not None else np.zeros((0, self.exact.robot.dof))
         return PlanResult(path is not None, path_q, stats, self.roadmap)
 

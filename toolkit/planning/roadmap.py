@@ -118,14 +118,17 @@ class Roadmap:
         """Remember pairs ``(C, 2)`` (i < j) decided against, so that no candidate offers them again."""
         self.rejected = np.concatenate([self.rejected, pairs])
 
-    def add_edges(self, pairs: np.ndarray, cost: np.ndarray, checked_at: float = np.inf,
-                  suspect: np.ndarray | None = None) -> None:
+    def add_edges(
+        self, pairs: np.ndarray, cost: np.ndarray, checked_at: float = np.inf, suspect: np.ndarray | None = None
+    ) -> None:
         """Append edges ``pairs (C, 2)`` of ``cost (C,)``, confirmed by the exact checker at ``checked_at`` (inf: not),
         with ``suspect (C,)`` where screening saw them fail (None: nowhere)."""
         self.edges = np.concatenate([self.edges, pairs])
         self.edge_cost = np.concatenate([self.edge_cost, cost])
         self.edge_checked_at = np.concatenate([self.edge_checked_at, np.full(len(pairs), float(checked_at))])
-        self.edge_suspect = np.concatenate([self.edge_suspect, np.full(len(pairs), np.nan) if suspect is None else suspect])
+        self.edge_suspect = np.concatenate(
+            [self.edge_suspect, np.full(len(pairs), np.nan) if suspect is None else suspect]
+        )
 
     def remove_edges(self, which: np.ndarray) -> None:
         """Drop the edges selected by ``which`` (indices or a boolean mask) and remember them as rejected."""

@@ -110,7 +110,11 @@ class ObstacleBasedSampler(Sampler):
 
     def __init__(self, checker: CollisionChecker, resolution: float | None = None, bisections: int = 0):
         super().__init__(checker)
-        self.resolution = 0.01 * float(np.linalg.norm(self.robot.upper - self.robot.lower)) if resolution is None else float(resolution)
+        self.resolution = (
+            0.01 * float(np.linalg.norm(self.robot.upper - self.robot.lower))
+            if resolution is None
+            else float(resolution)
+        )
         self.bisections = int(bisections)
 
     def draw(self, n, rng):
@@ -156,7 +160,8 @@ class BridgeTestSampler(NearSampler):
         return middle[self.valid(middle)]
 
 
-SAMPLERS: dict[str, type[Sampler]] = {
+PAPER_SAMPLERS = ("BS", "OB", "G", "BT")  # the paper's four (§III-B), in its tables' order
+SAMPLERS: dict[str, type[Sampler]] = {  # the registry: the paper's four, then registered ones in their order
     "BS": UniformSampler,
     "OB": ObstacleBasedSampler,
     "G": GaussianSampler,
@@ -175,9 +180,19 @@ def register_sampler(name: str, sampler: type[Sampler], *, replace: bool = False
     if not (isinstance(sampler, type) and issubclass(sampler, Sampler)):
         raise TypeError(f"{sampler!r} is not a subclass of toolkit.planning.sampling.Sampler")
     if name in SAMPLERS and SAMPLERS[name] is not sampler and not replace:
-        raise ValueError(f"a sampler called {name!r} exists ({SAMPLERS[name].__name__}); pass replace=True to rebind it")
+        raise ValueError(
+            f"a sampler called {name!r} exists ({SAMPLERS[name].__name__}); pass replace=True to rebind it"
+        )
     SAMPLERS[name] = sampler
     return sampler
+
+
+def check_names(names) -> tuple[str, ...]:
+    """``names`` as a tuple, every one a registered sampler; otherwise a ``ValueError`` naming the unknown ones."""
+    names = tuple(names)
+    if unknown := [n for n in names if n not in SAMPLERS]:
+        raise ValueError(f"unknown sampler(s) {unknown}; choose from {', '.join(SAMPLERS)}")
+    return names
 
 
 def make_sampler(name: str, checker: CollisionChecker, **options) -> Sampler:

@@ -25,8 +25,9 @@ from toolkit.learning.metrics import reconstruction_accuracy
 ERROR_COLORS = ListedColormap(["tab:blue", "tab:red"])  # -1: phantom block (free decoded occupied); +1: missed block
 
 
-def training_curves(histories: dict[str, list[float]], *, ylabel: str = "loss of Eq. (1), mean per epoch",
-                    log: bool = True) -> Figure:
+def training_curves(
+    histories: dict[str, list[float]], *, ylabel: str = "loss of Eq. (1), mean per epoch", log: bool = True
+) -> Figure:
     """One line per named history (e.g. ``TrainedModels.history["cae"]``), epochs 1, 2, ... on x."""
     fig = Figure(figsize=(6.4, 3.6))
     ax = fig.subplots()
@@ -57,8 +58,10 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
     """
     grids, decoded = np.asarray(grids), np.asarray(decoded)
     if grids.ndim != 3 or decoded.shape != grids.shape or len(names) != len(grids):
-        raise ValueError(f"need grids and decoded of one shape (W, nx, ny) and W names; got {grids.shape}, "
-                         f"{decoded.shape}, {len(names)} names")
+        raise ValueError(
+            f"need grids and decoded of one shape (W, nx, ny) and W names; got {grids.shape}, "
+            f"{decoded.shape}, {len(names)} names"
+        )
     accuracy = reconstruction_accuracy(decoded, grids)  # (W,)
     fig = Figure(figsize=(8.4, 3.0 * len(grids)), layout="constrained")
     rows = np.atleast_1d(fig.subfigures(len(grids), 1))
@@ -83,8 +86,9 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
     fig = Figure(figsize=(5.2, 4.6))
     ax = fig.subplots()
     for name, (all_free, accuracy) in groups.items():
-        ax.scatter(all_free, accuracy, label=f"{name} (mean {np.mean(accuracy):.1%} vs {np.mean(all_free):.1%})",
-                   alpha=0.8)
+        ax.scatter(
+            all_free, accuracy, label=f"{name} (mean {np.mean(accuracy):.1%} vs {np.mean(all_free):.1%})", alpha=0.8
+        )
     low = min(min(np.min(f), np.min(a)) for f, a in groups.values())
     ax.plot([low, 1], [low, 1], color="gray", linestyle="--", label='"all free" (diagonal)')
     ax.set_xlabel('share of free cells = accuracy of answering "all free"')
@@ -95,8 +99,12 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
     return fig
 
 
-def contraction(jacobian_norms: dict[str, np.ndarray], flips: np.ndarray, latent_shift: dict[str, np.ndarray],
-                decoded_change: dict[str, np.ndarray]) -> Figure:
+def contraction(
+    jacobian_norms: dict[str, np.ndarray],
+    flips: np.ndarray,
+    latent_shift: dict[str, np.ndarray],
+    decoded_change: dict[str, np.ndarray],
+) -> Figure:
     """Two (or more) CAEs side by side: how strongly the encoder reacts to its input.
 
     For each named model: ``jacobian_norms (W,)``, the Frobenius norm of dz/dx at each
@@ -128,9 +136,16 @@ def contraction(jacobian_norms: dict[str, np.ndarray], flips: np.ndarray, latent
     return fig
 
 
-def latent_scatter(points: dict[str, np.ndarray], *, color: dict[str, np.ndarray] | None = None,
-                   color_label: str = "", highlight: str | None = None, xlabel: str = "PC 1", ylabel: str = "PC 2",
-                   title: str = "Latent codes, projected to 2D") -> Figure:
+def latent_scatter(
+    points: dict[str, np.ndarray],
+    *,
+    color: dict[str, np.ndarray] | None = None,
+    color_label: str = "",
+    highlight: str | None = None,
+    xlabel: str = "PC 1",
+    ylabel: str = "PC 2",
+    title: str = "Latent codes, projected to 2D",
+) -> Figure:
     """One marker per workspace: ``points[group]`` is ``(n, 2)``, e.g. the first two principal components of ``z``.
 
     ``color[group]`` ``(n,)`` (optional): a value per workspace shown on one shared color

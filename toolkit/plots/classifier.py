@@ -72,8 +72,14 @@ def slice_grid(robot: BoxRobot, dofs: tuple[int, int] = (0, 1), fixed=None, n: i
     fixed = (robot.lower + robot.upper) / 2 if fixed is None else fixed
     values_i, values_j, Q = slice_configs(robot, fixed, dofs, n)  # (n,), (n,), (n, n, dof)
     dofs = tuple(dofs)
-    return CSpaceSlice(dofs, tuple(robot.dof_names[d] for d in dofs), (values_i, values_j), robot.lower[list(dofs)],
-                       robot.upper[list(dofs)], Q.reshape(-1, robot.dof))
+    return CSpaceSlice(
+        dofs,
+        tuple(robot.dof_names[d] for d in dofs),
+        (values_i, values_j),
+        robot.lower[list(dofs)],
+        robot.upper[list(dofs)],
+        Q.reshape(-1, robot.dof),
+    )
 
 
 def answer_codes(predicted_valid, valid) -> np.ndarray:
@@ -100,8 +106,10 @@ def roc_points(probability, valid, thresholds=None) -> tuple[np.ndarray, np.ndar
     if not truth.any() or truth.all():
         raise ValueError("an ROC curve needs both valid and invalid configurations")
     ts = np.append(np.unique(p), np.inf) if thresholds is None else np.asarray(thresholds, dtype=float)
+
     def kept(q):  # how many of q are >= each threshold
         return len(q) - np.searchsorted(np.sort(q), ts, side="left")
+
     return ts, kept(p[~truth]) / (~truth).sum(), kept(p[truth]) / truth.sum()
 
 
@@ -110,8 +118,9 @@ def probability_map(probability, valid, grid: CSpaceSlice, threshold: float = 0.
     return probability_maps({title: probability}, valid, grid, threshold)
 
 
-def probability_maps(probabilities: Mapping[str, np.ndarray], valid, grid: CSpaceSlice,
-                     thresholds: float | Mapping[str, float] = 0.5) -> Figure:
+def probability_maps(
+    probabilities: Mapping[str, np.ndarray], valid, grid: CSpaceSlice, thresholds: float | Mapping[str, float] = 0.5
+) -> Figure:
     """Several models' P(valid) maps side by side, same grid and truth (e.g. the ``paper`` and ``strong`` presets)."""
     fig = Figure(figsize=(4.3 * len(probabilities) + 0.8, 4.7), layout="constrained")
     axes = fig.subplots(1, len(probabilities), squeeze=False)[0]
@@ -124,8 +133,9 @@ def probability_maps(probabilities: Mapping[str, np.ndarray], valid, grid: CSpac
     return fig
 
 
-def path_map(probability, valid, grid: CSpaceSlice, threshold: float, path, nodes, nodes_valid,
-             title: str = "") -> Figure:
+def path_map(
+    probability, valid, grid: CSpaceSlice, threshold: float, path, nodes, nodes_valid, title: str = ""
+) -> Figure:
     """A planner's roadmap ``nodes (M, dof)`` and returned ``path (P, dof)`` over a P(valid) map of the grid's two DoFs.
 
     Nodes in collision (``nodes_valid`` False, by the exact checker) are the dangerous mistakes the
@@ -137,8 +147,15 @@ def path_map(probability, valid, grid: CSpaceSlice, threshold: float, path, node
     fig.colorbar(_draw_probability(ax, probability, valid, grid, threshold), ax=ax, label="P(valid)", shrink=0.8)
     x, y = grid.dofs
     ax.plot(nodes[nodes_valid, x], nodes[nodes_valid, y], ".", color="gold", markersize=4, label="roadmap node, valid")
-    ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], "X", color=DANGEROUS, markeredgecolor="black",
-            markersize=7, label="roadmap node in collision")
+    ax.plot(
+        nodes[~nodes_valid, x],
+        nodes[~nodes_valid, y],
+        "X",
+        color=DANGEROUS,
+        markeredgecolor="black",
+        markersize=7,
+        label="roadmap node in collision",
+    )
     ax.plot(path[:, x], path[:, y], "-", color="limegreen", linewidth=2.5, label="returned path (checked exactly)")
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=9)
     _legend(fig, _mistake_handles() + ax.get_lines())
@@ -187,11 +204,20 @@ def threshold_view(probability, valid, grid: CSpaceSlice, threshold: float, titl
 
 # -- the panels ----------------------------------------------------------------
 
+
 def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float):
     """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary, dangerous cells as squares, conservative dots."""
     probability = _on_grid(probability, grid, "probability")
-    image = ax.imshow(probability.T, origin="lower", extent=grid.extent, cmap="gray", vmin=0, vmax=1, aspect="auto",
-                      interpolation="nearest")
+    image = ax.imshow(
+        probability.T,
+        origin="lower",
+        extent=grid.extent,
+        cmap="gray",
+        vmin=0,
+        vmax=1,
+        aspect="auto",
+        interpolation="nearest",
+    )
     _draw_boundary(ax, valid, grid)
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
     area = (160.0 / max(grid.shape)) ** 2  # points^2: a dangerous square about half a cell wide
@@ -204,8 +230,16 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
 def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):
     """Each cell coloured by its kind of answer (``ANSWER_COLORS``), and the boundary."""
     codes = answer_codes(_on_grid(predicted_valid, grid, "predictions"), _on_grid(valid, grid, "valid"))
-    image = ax.imshow(codes.T, origin="lower", extent=grid.extent, cmap=ListedColormap(ANSWER_COLORS), vmin=-0.5,
-                      vmax=len(ANSWERS) - 0.5, aspect="auto", interpolation="nearest")
+    image = ax.imshow(
+        codes.T,
+        origin="lower",
+        extent=grid.extent,
+        cmap=ListedColormap(ANSWER_COLORS),
+        vmin=-0.5,
+        vmax=len(ANSWERS) - 0.5,
+        aspect="auto",
+        interpolation="nearest",
+    )
     _draw_boundary(ax, valid, grid)
     return image
 
@@ -227,8 +261,10 @@ def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
 
 
 def _mistake_handles() -> list:
-    return [Line2D([], [], color=DANGEROUS, marker="s", linestyle="", label="dangerous: kept, in collision"),
-            Line2D([], [], color=CONSERVATIVE, marker=".", linestyle="", label="conservative: rejected, free")]
+    return [
+        Line2D([], [], color=DANGEROUS, marker="s", linestyle="", label="dangerous: kept, in collision"),
+        Line2D([], [], color=CONSERVATIVE, marker=".", linestyle="", label="conservative: rejected, free"),
+    ]
 
 
 def _legend(fig: Figure, handles: list) -> None:
@@ -264,10 +300,16 @@ def _draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) ->
     for name, (probability, valid, threshold) in curves.items():
         _, fpr, tpr = roc_points(probability, valid)
         auc = np.trapezoid(tpr[::-1], fpr[::-1])  # thresholds rise, so FPR falls: integrate left to right
-        line, = ax.plot(fpr, tpr, label=f"{name + ': ' if name else ''}AUC {auc:.2f}")
+        (line,) = ax.plot(fpr, tpr, label=f"{name + ': ' if name else ''}AUC {auc:.2f}")
         _, fpr_t, tpr_t = roc_points(probability, valid, [threshold])
-        ax.plot(fpr_t, tpr_t, "o", color=line.get_color(), markeredgecolor="black",
-                label=f"{name + ' ' if name else ''}threshold {threshold:.2f}")
+        ax.plot(
+            fpr_t,
+            tpr_t,
+            "o",
+            color=line.get_color(),
+            markeredgecolor="black",
+            label=f"{name + ' ' if name else ''}threshold {threshold:.2f}",
+        )
     ax.set_xlabel("FPR: invalid kept (dangerous) = 1 - TNR")
     ax.set_ylabel("TPR: valid kept")
     ax.set_xlim(-0.02, 1.02)

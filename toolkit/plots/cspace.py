@@ -93,13 +93,15 @@ def _dof_label(robot: BoxRobot, index: int) -> str:
 
 # -- workspaces and their grids --------------------------------------------------
 
+
 def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
     """The workspace's blocks: one ``Rectangle`` per block in 2D, one ``Poly3DCollection`` per block in 3D.
 
     Office blocks are colored by furniture type (``workspace.labels``); every patch has gid ``"block"``.
     """
     title = title or f"{workspace.family or 'workspace'}: {len(workspace.boxes)} blocks in " + " x ".join(
-        f"{s:g}" for s in workspace.upper - workspace.lower)
+        f"{s:g}" for s in workspace.upper - workspace.lower
+    )
     kinds = sorted(set(workspace.labels))
     colors = {kind: f"C{i}" for i, kind in enumerate(kinds)}
     box_colors = [colors[label] for label in workspace.labels] or [BLOCK_COLOR] * len(workspace.boxes)
@@ -117,10 +119,17 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
         fig = Figure(figsize=(7, 6))
         ax = fig.add_subplot(projection="3d")
         for (lo, hi), color in zip(workspace.boxes, box_colors):
-            _add_box_3d(ax, _aabb_corners(lo, hi), facecolor=color, edgecolor="k", linewidth=0.3,
-                        alpha=0.8).set_gid("block")
-        ax.set(xlim=(workspace.lower[0], workspace.upper[0]), ylim=(workspace.lower[1], workspace.upper[1]),
-               zlim=(workspace.lower[2], workspace.upper[2]), xlabel="x", ylabel="y", zlabel="z")
+            _add_box_3d(ax, _aabb_corners(lo, hi), facecolor=color, edgecolor="k", linewidth=0.3, alpha=0.8).set_gid(
+                "block"
+            )
+        ax.set(
+            xlim=(workspace.lower[0], workspace.upper[0]),
+            ylim=(workspace.lower[1], workspace.upper[1]),
+            zlim=(workspace.lower[2], workspace.upper[2]),
+            xlabel="x",
+            ylabel="y",
+            zlabel="z",
+        )
         ax.set_box_aspect(workspace.upper - workspace.lower)
         if kinds:
             ax.legend(handles=[Patch(color=colors[k], label=k) for k in kinds], fontsize=8, loc="upper left")
@@ -148,20 +157,21 @@ def occupancy_figure(workspace: Workspace, layers: list[int] | None = None, colu
     fig = Figure(figsize=(panel * columns, panel * rows + 0.4))
     axes = fig.subplots(rows, columns, squeeze=False, gridspec_kw={"hspace": 0.35, "wspace": 0.3}).ravel()
     for ax, image, title in zip(axes, images, titles):
-        ax.imshow(image.T, origin="lower", extent=extent, cmap=OCCUPANCY_CMAP, vmin=-1, vmax=1,
-                  interpolation="nearest")
+        ax.imshow(image.T, origin="lower", extent=extent, cmap=OCCUPANCY_CMAP, vmin=-1, vmax=1, interpolation="nearest")
         ax.set_title(title, fontsize=9)
         ax.locator_params(nbins=3)  # few tick labels: drawing text is most of this figure's cost
         ax.tick_params(labelsize=7)
-    for ax in axes[len(images):]:
+    for ax in axes[len(images) :]:
         ax.remove()
-    fig.suptitle(f"Occupancy grid {' x '.join(map(str, grid.shape))}\ndark = +1 (occupied), white = -1 (free)",
-                 fontsize=10)
+    fig.suptitle(
+        f"Occupancy grid {' x '.join(map(str, grid.shape))}\ndark = +1 (occupied), white = -1 (free)", fontsize=10
+    )
     fig.subplots_adjust(top=1 - 0.8 / fig.get_figheight())  # room for the two title lines
     return fig
 
 
 # -- robots ------------------------------------------------------------------------
+
 
 def _nearby_blocks(workspace: Workspace, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
     """Indices of the blocks that meet the axis-aligned window ``[lo, hi]`` (D,)."""
@@ -169,8 +179,9 @@ def _nearby_blocks(workspace: Workspace, lo: np.ndarray, hi: np.ndarray) -> np.n
     return np.flatnonzero(np.all((boxes[:, 0] <= hi) & (boxes[:, 1] >= lo), axis=1))
 
 
-def draw_robot(ax, robot: BoxRobot, Q, colors: list[str], view: str = "3d", workspace: Workspace | None = None,
-               margin: float = 1.0) -> None:
+def draw_robot(
+    ax, robot: BoxRobot, Q, colors: list[str], view: str = "3d", workspace: Workspace | None = None, margin: float = 1.0
+) -> None:
     """Draw the link boxes of configurations ``Q (k, dof)``, one colour each, and the blocks within ``margin`` of them,
     on one axes (the building block of :func:`robot_figure`, :func:`cspace_slice` and the scene figures).
 
@@ -190,12 +201,16 @@ def draw_robot(ax, robot: BoxRobot, Q, colors: list[str], view: str = "3d", work
         blocks = workspace.boxes[_nearby_blocks(workspace, lo, hi)]
     else:
         blocks = np.zeros((0, 2, robot.dim))
-    link_boxes = [(_box_corners(c, r, h), color)
-                  for cs, rs, color in zip(centers, rotations, colors) for c, r, h in zip(cs, rs, half)]
+    link_boxes = [
+        (_box_corners(c, r, h), color)
+        for cs, rs, color in zip(centers, rotations, colors)
+        for c, r, h in zip(cs, rs, half)
+    ]
     if view == "3d":
         for b_lo, b_hi in blocks:
-            _add_box_3d(ax, _aabb_corners(b_lo, b_hi), facecolor=BLOCK_COLOR, edgecolor="0.3", linewidth=0.3,
-                        alpha=0.25).set_gid("block")
+            _add_box_3d(
+                ax, _aabb_corners(b_lo, b_hi), facecolor=BLOCK_COLOR, edgecolor="0.3", linewidth=0.3, alpha=0.25
+            ).set_gid("block")
         for corners, color in link_boxes:
             _add_box_3d(ax, corners, facecolor=color, edgecolor="k", linewidth=0.4, alpha=0.9).set_gid("link")
         ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), zlim=(lo[2], hi[2]), xlabel="x", ylabel="y", zlabel="z")
@@ -203,11 +218,20 @@ def draw_robot(ax, robot: BoxRobot, Q, colors: list[str], view: str = "3d", work
         return
     axes = VIEWS[view]
     for b_lo, b_hi in blocks:
-        ax.add_patch(Rectangle(b_lo[list(axes)], *(b_hi - b_lo)[list(axes)], facecolor=BLOCK_COLOR,
-                               edgecolor="0.3", alpha=0.5, gid="block"))
+        ax.add_patch(
+            Rectangle(
+                b_lo[list(axes)],
+                *(b_hi - b_lo)[list(axes)],
+                facecolor=BLOCK_COLOR,
+                edgecolor="0.3",
+                alpha=0.5,
+                gid="block",
+            )
+        )
     for corners, color in link_boxes:
-        ax.add_patch(Polygon(_outline(corners, axes), facecolor=color, edgecolor="k", linewidth=0.6,
-                             alpha=0.85, gid="link"))
+        ax.add_patch(
+            Polygon(_outline(corners, axes), facecolor=color, edgecolor="k", linewidth=0.6, alpha=0.85, gid="link")
+        )
     ax.set_xlim(lo[axes[0]], hi[axes[0]])
     ax.set_ylim(lo[axes[1]], hi[axes[1]])
     ax.set_aspect("equal")
@@ -222,8 +246,14 @@ def _link_colors(n: int, valid: np.ndarray | None) -> list[str]:
     return [VALID_COLOR if v else INVALID_COLOR for v in np.asarray(valid, dtype=bool).reshape(n)]
 
 
-def robot_figure(robot: BoxRobot, Q, workspace: Workspace | None = None, valid=None,
-                 views: tuple[str, ...] | None = None, margin: float = 1.0) -> Figure:
+def robot_figure(
+    robot: BoxRobot,
+    Q,
+    workspace: Workspace | None = None,
+    valid=None,
+    views: tuple[str, ...] | None = None,
+    margin: float = 1.0,
+) -> Figure:
     """The robot's link boxes at configurations ``Q (dof,)`` or ``(k, dof)``, by forward kinematics.
 
     One panel per view: ``"xy"`` (from above), ``"xz"``, ``"yz"`` (from the side; a box's
@@ -246,13 +276,15 @@ def robot_figure(robot: BoxRobot, Q, workspace: Workspace | None = None, valid=N
 
 # -- configuration space --------------------------------------------------------------
 
+
 def _joint_bounds(robot: BoxRobot, joints: tuple[int, int]) -> tuple:
     """``((lo_i, hi_i), (lo_j, hi_j))``: the bounds of two DoF."""
     return tuple((float(robot.lower[k]), float(robot.upper[k])) for k in joints)
 
 
-def slice_configs(robot: BoxRobot, q, joints: tuple[int, int], resolution: int,
-                  window: tuple | None = None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+def slice_configs(
+    robot: BoxRobot, q, joints: tuple[int, int], resolution: int, window: tuple | None = None
+) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """A grid over two DoF with the others fixed at ``q (dof,)``.
 
     Returns the values of DoF ``i`` ``(n,)``, of DoF ``j`` ``(n,)`` and the configurations
@@ -262,7 +294,9 @@ def slice_configs(robot: BoxRobot, q, joints: tuple[int, int], resolution: int,
     """
     i, j = joints
     if i == j or not (0 <= i < robot.dof and 0 <= j < robot.dof):
-        raise ValueError(f"joints must be two different DoF indices of {robot.name!r} (0..{robot.dof - 1}), got {joints}")
+        raise ValueError(
+            f"joints must be two different DoF indices of {robot.name!r} (0..{robot.dof - 1}), got {joints}"
+        )
     q = robot.check_configs(q)[0]  # (dof,)
     window = window or _joint_bounds(robot, joints)
     values_i, values_j = (lo + (np.arange(int(resolution)) + 0.5) * (hi - lo) / int(resolution) for lo, hi in window)
@@ -271,15 +305,24 @@ def slice_configs(robot: BoxRobot, q, joints: tuple[int, int], resolution: int,
     return values_i, values_j, Q
 
 
-def _draw_cspace(ax, checker: CollisionChecker, q, joints: tuple[int, int], resolution: int,
-                 window: tuple | None) -> np.ndarray:
+def _draw_cspace(
+    ax, checker: CollisionChecker, q, joints: tuple[int, int], resolution: int, window: tuple | None
+) -> np.ndarray:
     """Image of the slice, dark where the checker says "in collision"; returns validity ``(n, n)``."""
     robot = checker.robot
     _, _, Q = slice_configs(robot, q, joints, resolution, window)  # (n, n, dof); checks the joints
     window = window or _joint_bounds(robot, joints)
     valid = checker.are_valid(Q.reshape(-1, robot.dof)).reshape(Q.shape[:2])  # (n, n)
-    ax.imshow((~valid).T.astype(float), origin="lower", extent=np.ravel(window), cmap=COLLISION_CMAP, vmin=0, vmax=1,
-              interpolation="nearest", aspect="auto")
+    ax.imshow(
+        (~valid).T.astype(float),
+        origin="lower",
+        extent=np.ravel(window),
+        cmap=COLLISION_CMAP,
+        vmin=0,
+        vmax=1,
+        interpolation="nearest",
+        aspect="auto",
+    )
     ax.set_xlabel(_dof_label(robot, joints[0]))
     ax.set_ylabel(_dof_label(robot, joints[1]))
     return valid
@@ -302,13 +345,22 @@ def cspace_image(checker: CollisionChecker, resolution: int = 600, window: tuple
         ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor="tab:orange", linewidth=1.2, gid="block"))
     left, right, bottom, top = ax.images[0].get_extent()
     ax.set(xlim=(left, right), ylim=(bottom, top), aspect="equal")  # the window, whatever blocks lie beyond it
-    ax.set_title(f"C-space of the point robot: {1 - valid.mean():.0%} {'of this window ' if window else ''}in collision (dark)\n"
-                 "orange: the workspace's blocks", fontsize=10)
+    ax.set_title(
+        f"C-space of the point robot: {1 - valid.mean():.0%} {'of this window ' if window else ''}in collision (dark)\n"
+        "orange: the workspace's blocks",
+        fontsize=10,
+    )
     return fig
 
 
-def cspace_slice(checker: CollisionChecker, q, joints: tuple[int, int] = (0, 1), resolution: int = 60,
-                 view: str | None = "xy", margin: float = 1.0) -> Figure:
+def cspace_slice(
+    checker: CollisionChecker,
+    q,
+    joints: tuple[int, int] = (0, 1),
+    resolution: int = 60,
+    view: str | None = "xy",
+    margin: float = 1.0,
+) -> Figure:
     """A 2-DoF slice of the C-space through ``q (dof,)``: DoF ``joints`` vary over their bounds, the rest stay at ``q``.
 
     Left: dark where ``checker`` reports a collision, with a star at ``q`` itself. Right
@@ -321,11 +373,21 @@ def cspace_slice(checker: CollisionChecker, q, joints: tuple[int, int] = (0, 1),
     fig = Figure(figsize=(9.5 if view else 5, 4.4))
     ax = fig.add_subplot(1, 2 if view else 1, 1)
     valid = _draw_cspace(ax, checker, q, joints, resolution, None)
-    ax.plot(q[joints[0]], q[joints[1]], marker="*", markersize=14, markeredgecolor="k",
-            color=_link_colors(1, q_valid)[0], linestyle="none", gid="q")
+    ax.plot(
+        q[joints[0]],
+        q[joints[1]],
+        marker="*",
+        markersize=14,
+        markeredgecolor="k",
+        color=_link_colors(1, q_valid)[0],
+        linestyle="none",
+        gid="q",
+    )
     fixed = [f"{robot.dof_names[k]}={q[k]:.2f}" for k in range(robot.dof) if k not in joints]
-    ax.set_title(f"{robot.name}: {1 - valid.mean():.0%} of this slice in collision (dark)\nfixed: "
-                 + ", ".join(fixed), fontsize=8)
+    ax.set_title(
+        f"{robot.name}: {1 - valid.mean():.0%} of this slice in collision (dark)\nfixed: " + ", ".join(fixed),
+        fontsize=8,
+    )
     if view:
         robot_ax = fig.add_subplot(1, 2, 2, **({"projection": "3d"} if view == "3d" else {}))
         draw_robot(robot_ax, robot, q[None], _link_colors(1, q_valid), view, checker.workspace, margin)

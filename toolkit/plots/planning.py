@@ -17,15 +17,19 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Rectangle
 from matplotlib.ticker import NullFormatter
 
-from toolkit.experiments.paper_numbers import SAMPLERS
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.planning.prm import GOAL, START, PlanStep
+from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.cspace import slice_configs
 
 MODES = ("without", "with")
 STAGE_KEYS = ("sampling_s", "connection_s", "query_s")  # PRM stats, in the order the planner spends them
-STAGE_LABELS = {"sampling_s": "sampling (S, S')", "connection_s": "connection (edges)",
-                "query_s": "query (path, verification, repair)", "other_s": "other (encoding, set-up)"}
+STAGE_LABELS = {
+    "sampling_s": "sampling (S, S')",
+    "connection_s": "connection (edges)",
+    "query_s": "query (path, verification, repair)",
+    "other_s": "other (encoding, set-up)",
+}
 C_OBSTACLE = ListedColormap(["white", "0.78"])  # valid, invalid
 EDGE_COLOR, NODE_COLOR, UNCONFIRMED_COLOR = "0.55", "0.15", "tab:blue"
 PATH_COLORS = {"candidate": "tab:orange", "repair": "tab:orange", "path": "tab:green"}
@@ -50,8 +54,17 @@ def _draw_cspace(ax, exact: CollisionChecker) -> None:
     ws = exact.workspace
     for lo, hi in ws.boxes:
         ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor="0.3", linewidth=0.8))
-    ax.add_patch(Rectangle(extent[::2], extent[1] - extent[0], extent[3] - extent[2], fill=False, edgecolor="0.3",
-                           linewidth=0.8, linestyle=":"))  # the bounds of the robot's centre
+    ax.add_patch(
+        Rectangle(
+            extent[::2],
+            extent[1] - extent[0],
+            extent[3] - extent[2],
+            fill=False,
+            edgecolor="0.3",
+            linewidth=0.8,
+            linestyle=":",
+        )
+    )  # the bounds of the robot's centre
     ax.set_xlim(ws.lower[0], ws.upper[0])
     ax.set_ylim(ws.lower[1], ws.upper[1])
     ax.set_aspect("equal")
@@ -80,9 +93,11 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
     fig = Figure(figsize=(4.6, 4.6))
     ax = fig.subplots()
     _draw_cspace(ax, exact)
-    groups = [(~accepted, dict(marker="x", s=10, color="0.5"), "rejected"),
-              (accepted & truly_valid, dict(s=10, color=UNCONFIRMED_COLOR), "S' (accepted)"),
-              (accepted & ~truly_valid, dict(s=30, marker="X", color=REPAIR_COLOR), "S', truly in collision")]
+    groups = [
+        (~accepted, dict(marker="x", s=10, color="0.5"), "rejected"),
+        (accepted & truly_valid, dict(s=10, color=UNCONFIRMED_COLOR), "S' (accepted)"),
+        (accepted & ~truly_valid, dict(s=30, marker="X", color=REPAIR_COLOR), "S', truly in collision"),
+    ]
     for mask, style, label in groups:
         ax.scatter(S[mask, 0], S[mask, 1], label=f"{label}: {mask.sum()}", **style)
     ax.legend(fontsize=7, loc="upper left", framealpha=0.9)
@@ -129,7 +144,7 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
     axes = fig.subplots(rows, columns, squeeze=False).ravel()
     for ax, step in zip(axes, steps):
         _draw_roadmap(ax, exact, step)
-    for ax in axes[len(steps):]:
+    for ax in axes[len(steps) :]:
         ax.set_axis_off()
     fig.suptitle("Algorithm 1 step by step (hollow: not yet confirmed exactly; red: removed by a repair)")
     fig.tight_layout()
@@ -143,19 +158,29 @@ def stage_times(panels: dict[str, dict]) -> Figure:
     fig = Figure(figsize=(5.2 * len(panels), 4.6))
     axes = fig.subplots(1, len(panels), squeeze=False)[0]
     for ax, (title, planning) in zip(axes, panels.items()):
-        names = [s for s in SAMPLERS if s in planning]
+        names = list(planning)  # the samplers planned, in their order
         x = np.arange(len(names))[:, None] + np.array([-0.2, 0.2])  # (samplers, modes) bar centres
-        table = {key: np.array([[planning[s][m][key] for m in MODES] for s in names]) for key in STAGE_KEYS + ("total_s",)}
+        table = {
+            key: np.array([[planning[s][m][key] for m in MODES] for s in names]) for key in STAGE_KEYS + ("total_s",)
+        }
         table["other_s"] = np.maximum(table["total_s"] - sum(table[k] for k in STAGE_KEYS), 0.0)
         bottom = np.zeros_like(table["total_s"])
         for key in STAGE_KEYS + ("other_s",):
-            ax.bar(x.ravel(), table[key].ravel(), 0.38, bottom=bottom.ravel(), label=STAGE_LABELS[key],
-                   edgecolor="white", linewidth=0.5)
+            ax.bar(
+                x.ravel(),
+                table[key].ravel(),
+                0.38,
+                bottom=bottom.ravel(),
+                label=STAGE_LABELS[key],
+                edgecolor="white",
+                linewidth=0.5,
+            )
             bottom = bottom + table[key]
         ratio = table["total_s"][:, 1] / np.maximum(table["total_s"][:, 0], 1e-12)
         for i, r in enumerate(ratio):
-            ax.annotate(f"{r:.2f}x", (i, bottom[i].max()), xytext=(0, 3), textcoords="offset points",
-                        ha="center", fontsize=8)
+            ax.annotate(
+                f"{r:.2f}x", (i, bottom[i].max()), xytext=(0, 3), textcoords="offset points", ha="center", fontsize=8
+            )
         ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=7)
         ax.set_ylabel("seconds per query (mean)")
         ax.set_ylim(0, bottom.max() * 1.15)
@@ -173,11 +198,15 @@ def ratio_comparison(panels: dict[str, dict[str, dict[str, float]]]) -> Figure:
     for ax, (title, sources) in zip(axes, panels.items()):
         width = 0.8 / len(sources)
         for i, (source, ratios) in enumerate(sources.items()):
-            ax.bar(np.arange(len(SAMPLERS)) + (i - (len(sources) - 1) / 2) * width,
-                   [ratios[s] for s in SAMPLERS], width, label=source)
+            ax.bar(
+                np.arange(len(PAPER_SAMPLERS)) + (i - (len(sources) - 1) / 2) * width,
+                [ratios[s] for s in PAPER_SAMPLERS],
+                width,
+                label=source,
+            )
         ax.axhline(1.0, color="black", linewidth=0.8)
         _log_ticks(ax)
-        ax.set_xticks(np.arange(len(SAMPLERS)), SAMPLERS)
+        ax.set_xticks(np.arange(len(PAPER_SAMPLERS)), PAPER_SAMPLERS)
         ax.set_title(title, fontsize=9)
         ax.set_ylabel("time with / without")
     fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=len(sources), fontsize=8, frameon=False)
@@ -190,7 +219,7 @@ def _log_ticks(ax) -> None:
     ax.set_yscale("log")
     lo, hi = ax.get_ylim()
     steps = (1, 2, 5) if hi / lo >= 10 else (1, 1.5, 2, 3, 5, 7)
-    ticks = [m * 10.0 ** e for e in range(int(np.floor(np.log10(lo))), int(np.ceil(np.log10(hi))) + 1) for m in steps]
+    ticks = [m * 10.0**e for e in range(int(np.floor(np.log10(lo))), int(np.ceil(np.log10(hi))) + 1) for m in steps]
     ticks = [t for t in ticks if lo <= t <= hi]
     ax.set_yticks(ticks, [f"{t:g}" for t in ticks])
     ax.yaxis.set_minor_formatter(NullFormatter())
@@ -204,8 +233,12 @@ def throughputs(rates: dict[str, dict[str, float]]) -> Figure:
     checkers = list(next(iter(rates.values())))
     width = 0.8 / len(checkers)
     for i, checker in enumerate(checkers):
-        bars = ax.bar(np.arange(len(rates)) + (i - (len(checkers) - 1) / 2) * width,
-                      [rates[s][checker] for s in rates], width, label=checker)
+        bars = ax.bar(
+            np.arange(len(rates)) + (i - (len(checkers) - 1) / 2) * width,
+            [rates[s][checker] for s in rates],
+            width,
+            label=checker,
+        )
         ax.bar_label(bars, labels=[_per_second(rates[s][checker]) for s in rates], fontsize=7)
     ax.set_yscale("log")
     ax.set_xticks(np.arange(len(rates)), list(rates))

@@ -9,8 +9,6 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from toolkit.experiments.paper_numbers import SAMPLERS
-
 MODES = ("without", "with")
 
 
@@ -41,15 +39,19 @@ def planning_times(planning: dict, title: str = "") -> Figure:
     """Sampling and total time per query, without / with prediction, mean with std error bars (Figures 5-7)."""
     fig = Figure(figsize=(9, 3.6))
     axes = fig.subplots(1, 2)
-    x = np.arange(len(SAMPLERS))
-    for ax, key, label in ((axes[0], "sampling_s", "sampling time (s)"), (axes[1], "total_s", "total time per query (s)")):
+    samplers = list(planning)  # the paper's four, or the ones the run planned
+    x = np.arange(len(samplers))
+    for ax, key, label in (
+        (axes[0], "sampling_s", "sampling time (s)"),
+        (axes[1], "total_s", "total time per query (s)"),
+    ):
         for i, mode in enumerate(MODES):
-            means = [planning[s][mode][key] for s in SAMPLERS]
-            stds = [planning[s][mode].get(key + "_std", 0.0) for s in SAMPLERS]
-            names = [s if mode == "without" else s + "F" for s in SAMPLERS]
+            means = [planning[s][mode][key] for s in samplers]
+            stds = [planning[s][mode].get(key + "_std", 0.0) for s in samplers]
+            names = [s if mode == "without" else s + "F" for s in samplers]
             bars = ax.bar(x + (i - 0.5) * 0.38, means, 0.38, yerr=stds, capsize=3, label=f"{mode} prediction")
             ax.bar_label(bars, labels=names, fontsize=7, padding=2)
-        ax.set_xticks(x, SAMPLERS)
+        ax.set_xticks(x, samplers)
         ax.set_ylabel(label)
         ax.legend(fontsize=8)
     fig.suptitle(title or "Time with and without prediction")

@@ -25,8 +25,18 @@ UNCHECKED_COLOR = "tab:blue"  # the robot when no validity is given
 NOW_COLOR = "0.25"
 
 
-def path_frame(robot: BoxRobot, configurations, index: int, *, workspace: Workspace | None = None, valid=None,
-               clearance=None, probability=None, threshold: float = 0.5, margin: float = 1.0) -> Figure:
+def path_frame(
+    robot: BoxRobot,
+    configurations,
+    index: int,
+    *,
+    workspace: Workspace | None = None,
+    valid=None,
+    clearance=None,
+    probability=None,
+    threshold: float = 0.5,
+    margin: float = 1.0,
+) -> Figure:
     """Frame ``index`` of a path ``configurations (T, dof)`` evenly spaced along it.
 
     Left (3D): the robot's link boxes at that frame among the blocks of ``workspace``
@@ -42,19 +52,16 @@ def path_frame(robot: BoxRobot, configurations, index: int, *, workspace: Worksp
     frames = len(Q)
     if not 0 <= index < frames:
         raise ValueError(f"index must be in [0, {frames}), got {index}")
-    series = {name: _per_frame(values, frames, name)
-              for name, values in (("valid", valid), ("clearance", clearance), ("probability", probability))}
+    series = {
+        name: _per_frame(values, frames, name)
+        for name, values in (("valid", valid), ("clearance", clearance), ("probability", probability))
+    }
     along = np.linspace(0.0, 1.0, frames)  # (T,)
 
     fig = Figure(figsize=(11, 4.8))
     left, right = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.3, top=0.8)  # room for title and legend
-    scene = fig.add_subplot(left, projection="3d")
-    color = UNCHECKED_COLOR if series["valid"] is None else VALID_COLOR if series["valid"][index] else INVALID_COLOR
-    draw_robot(scene, robot, Q[index : index + 1], [color], "3d", workspace, margin)
-    _draw_trace(scene, robot, Q)
-    scene.set_title("the robot and the blocks near it", fontsize=9)
-    scene.locator_params(nbins=4)  # few tick labels: drawing text is most of a frame's cost
-    scene.tick_params(labelsize=7)
+    valid_now = None if series["valid"] is None else bool(series["valid"][index])
+    _draw_scene(fig.add_subplot(left, projection="3d"), robot, Q, index, valid_now, workspace, margin)
 
     panels = ["dof"] + [name for name in ("clearance", "probability") if series[name] is not None]
     axes = right.subgridspec(len(panels), 1, hspace=0.15).subplots(sharex=True)
@@ -65,8 +72,15 @@ def path_frame(robot: BoxRobot, configurations, index: int, *, workspace: Worksp
                 ax.plot(along, scaled[:, k], linewidth=1.2, label=name, gid="dof")
             ax.set_ylim(-0.05, 1.05)
             ax.set_ylabel("DoF in bounds")
-            fig.legend(*ax.get_legend_handles_labels(), fontsize=6, ncol=min(robot.dof, 5), loc="upper center",
-                       bbox_to_anchor=(0.73, 0.93), frameon=False, handlelength=1.2)  # between the title and the panels
+            fig.legend(
+                *ax.get_legend_handles_labels(),
+                fontsize=6,
+                ncol=min(robot.dof, 5),
+                loc="upper center",
+                bbox_to_anchor=(0.73, 0.93),
+                frameon=False,
+                handlelength=1.2,
+            )  # between the title and the panels
         elif panel == "clearance":
             ax.plot(along, series["clearance"], color="k", linewidth=1.2, gid="clearance")
             ax.fill_between(along, 0.0, series["clearance"], color="0.85")
@@ -94,6 +108,18 @@ def _draw_trace(ax, robot: BoxRobot, Q: np.ndarray) -> None:
     lo, hi = np.array([ax.get_xlim(), ax.get_ylim(), ax.get_zlim()]).T  # (3,) each
     trace[~np.all((trace >= lo) & (trace <= hi), axis=1)] = np.nan  # mplot3d does not clip lines to the axes
     ax.plot(*trace.T, color=TRACE_COLOR, linewidth=2.0, gid="trace")
+
+
+def _draw_scene(
+    scene, robot: BoxRobot, Q: np.ndarray, index: int, valid: bool | None, workspace, margin: float
+) -> None:
+    """The 3D panel of :func:`path_frame`: the robot at frame ``index`` among the blocks near it, its base's trace."""
+    color = UNCHECKED_COLOR if valid is None else VALID_COLOR if valid else INVALID_COLOR
+    draw_robot(scene, robot, Q[index : index + 1], [color], "3d", workspace, margin)
+    _draw_trace(scene, robot, Q)
+    scene.set_title("the robot and the blocks near it", fontsize=9)
+    scene.locator_params(nbins=4)  # few tick labels: drawing text is most of a frame's cost
+    scene.tick_params(labelsize=7)
 
 
 def _per_frame(values, frames: int, name: str) -> np.ndarray | None:

@@ -24,8 +24,11 @@ def mesh_and_grid(workspace: MeshWorkspace, title: str = "") -> Figure:
     """Left: the workspace's triangles. Right: its occupancy grid, one cube per occupied cell (what the networks read)."""
     fig = Figure(figsize=(10, 4.8))
     mesh_ax = fig.add_subplot(1, 2, 1, projection="3d")
-    mesh_ax.add_collection3d(Poly3DCollection(workspace.vertices[workspace.faces], facecolors=MESH_COLOR,
-                                              edgecolors="0.25", linewidths=0.2, alpha=0.6))
+    mesh_ax.add_collection3d(
+        Poly3DCollection(
+            workspace.vertices[workspace.faces], facecolors=MESH_COLOR, edgecolors="0.25", linewidths=0.2, alpha=0.6
+        )
+    )
     mesh_ax.set_title(f"the mesh: {len(workspace.faces)} triangles in {len(workspace.boxes)} parts", fontsize=10)
     grid_ax = fig.add_subplot(1, 2, 2, projection="3d")
     occupied = workspace.occupancy() > 0
@@ -34,8 +37,14 @@ def mesh_and_grid(workspace: MeshWorkspace, title: str = "") -> Figure:
     grid_ax.voxels(x, y, z, occupied, facecolors=VOXEL_COLOR, edgecolors="0.3", linewidth=0.2, alpha=0.5)
     grid_ax.set_title(f"its occupancy grid: {occupied.sum()} of {occupied.size} cells occupied", fontsize=10)
     for ax in (mesh_ax, grid_ax):
-        ax.set(xlim=(workspace.lower[0], workspace.upper[0]), ylim=(workspace.lower[1], workspace.upper[1]),
-               zlim=(workspace.lower[2], workspace.upper[2]), xlabel="x", ylabel="y", zlabel="z")
+        ax.set(
+            xlim=(workspace.lower[0], workspace.upper[0]),
+            ylim=(workspace.lower[1], workspace.upper[1]),
+            zlim=(workspace.lower[2], workspace.upper[2]),
+            xlabel="x",
+            ylabel="y",
+            zlabel="z",
+        )
         ax.set_box_aspect(workspace.upper - workspace.lower)
         ax.view_init(elev=25, azim=-60)
     if title:
@@ -44,15 +53,16 @@ def mesh_and_grid(workspace: MeshWorkspace, title: str = "") -> Figure:
     return fig
 
 
-def samplers_in_a_passage(exact: CollisionChecker, samples: dict[str, np.ndarray], passage: tuple,
-                          attempts: int | None = None) -> Figure:
+def samplers_in_a_passage(
+    exact: CollisionChecker, samples: dict[str, np.ndarray], passage: tuple, attempts: int | None = None
+) -> Figure:
     """One panel per sampler, its samples ``(M, 2)`` over the point robot's C-obstacles, the ``passage``
     ``((x0, y0), (x1, y1))`` outlined in red, with how many samples fell inside it in each panel's title."""
     fig = planning.samplers(exact, samples, attempts)
     (x0, y0), (x1, y1) = passage
     for ax, (name, Q) in zip(fig.axes, samples.items()):
         ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, edgecolor="tab:red", linewidth=1.2))
-        inside = int(np.sum(np.all((Q >= (x0, y0)) & (Q <= (x1, y1)), axis=1)))
+        inside = int(np.sum(np.all(((x0, y0) <= Q) & ((x1, y1) >= Q), axis=1)))
         ax.set_title(f"{ax.get_title()}\n{inside} in the passage", fontsize=9)
     fig.suptitle(f"{len(samples)} samplers, the same attempts each (red: the narrow passage)")
     fig.tight_layout()

@@ -54,8 +54,9 @@ def build(name: str) -> Path:
     source = master(name)
     dist = source.parent / "dist"
     shutil.rmtree(dist, ignore_errors=True)
-    done = subprocess.run(_otter("assign", "--no-pdfs", source.name, "dist"), cwd=source.parent,
-                          capture_output=True, text=True)
+    done = subprocess.run(
+        _otter("assign", "--no-pdfs", source.name, "dist"), cwd=source.parent, capture_output=True, text=True
+    )
     if done.returncode != 0:
         raise RuntimeError(f"otter assign failed for {name}:\n{done.stdout[-3000:]}\n{done.stderr[-3000:]}")
     return autograder(name, build_missing=False)
@@ -91,8 +92,10 @@ def assignment_of(notebook: str | Path) -> str:
     except (OSError, ValueError, KeyError, TypeError):  # unreadable, not JSON, or no otter metadata
         name = notebook.stem
     if name not in assignment_names():
-        raise ValueError(f"{notebook}: cannot tell which assignment it answers (its metadata and file name give "
-                         f"{name!r}); pass --assignment, one of {assignment_names()}")
+        raise ValueError(
+            f"{notebook}: cannot tell which assignment it answers (its metadata and file name give "
+            f"{name!r}); pass --assignment, one of {assignment_names()}"
+        )
     return name
 
 
@@ -109,9 +112,13 @@ def grade(notebook: str | Path, assignment: str | None = None, timeout: float | 
     zip_path = autograder(name)
     points = _max_points(zip_path)
     with tempfile.TemporaryDirectory() as out:
-        process = subprocess.Popen(_otter("run", "--no-logo", "-a", str(zip_path), "-o", out, str(notebook)),
-                                   stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                                   start_new_session=True)  # its own group: a timeout stops the kernel too
+        process = subprocess.Popen(
+            _otter("run", "--no-logo", "-a", str(zip_path), "-o", out, str(notebook)),
+            stdout=subprocess.PIPE,
+            stderr=subprocess.STDOUT,
+            text=True,
+            start_new_session=True,
+        )  # its own group: a timeout stops the kernel too
         try:
             log, _ = process.communicate(timeout=timeout)
         except subprocess.TimeoutExpired:
@@ -123,9 +130,15 @@ def grade(notebook: str | Path, assignment: str | None = None, timeout: float | 
             last = log.strip().splitlines()[-1] if log.strip() else "no output"
             return _zero(name, points, f"otter could not grade this notebook: {last}")
         tests = {t["name"]: t for t in json.loads(results.read_text())["tests"]}
-    questions = [{"name": q, "score": float(tests.get(q, {}).get("score") or 0.0), "max_score": p,
-                  "feedback": tests.get(q, {}).get("output", "not graded: the question's tests did not run")}
-                 for q, p in points.items()]
+    questions = [
+        {
+            "name": q,
+            "score": float(tests.get(q, {}).get("score") or 0.0),
+            "max_score": p,
+            "feedback": tests.get(q, {}).get("output", "not graded: the question's tests did not run"),
+        }
+        for q, p in points.items()
+    ]
     return _total(name, questions)
 
 
@@ -136,8 +149,14 @@ def _zero(name: str, points: dict[str, float], why: str, timed_out: bool = False
 
 
 def _total(name: str, questions: list[dict], timed_out: bool = False, error: str | None = None) -> dict:
-    return {"assignment": name, "questions": questions, "timed_out": timed_out, "error": error,
-            "score": sum(q["score"] for q in questions), "max_score": sum(q["max_score"] for q in questions)}
+    return {
+        "assignment": name,
+        "questions": questions,
+        "timed_out": timed_out,
+        "error": error,
+        "score": sum(q["score"] for q in questions),
+        "max_score": sum(q["max_score"] for q in questions),
+    }
 
 
 def report(result: dict) -> str:
@@ -174,5 +193,14 @@ def write_csv(results: dict[Path, dict], path: str | Path) -> None:
         writer.writerow(["submission", "assignment", *questions, "score", "max_score", "timed_out", "error"])
         for notebook, result in results.items():
             scores = {q["name"]: q["score"] for q in result["questions"]}
-            writer.writerow([str(notebook), result["assignment"], *(scores.get(q, "") for q in questions),
-                             result["score"], result["max_score"], result["timed_out"], result.get("error") or ""])
+            writer.writerow(
+                [
+                    str(notebook),
+                    result["assignment"],
+                    *(scores.get(q, "") for q in questions),
+                    result["score"],
+                    result["max_score"],
+                    result["timed_out"],
+                    result.get("error") or "",
+                ]
+            )

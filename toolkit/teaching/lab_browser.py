@@ -27,10 +27,10 @@ import sys
 import tempfile
 import time
 import urllib.request
+from collections.abc import Iterator
 from contextlib import contextmanager
 from dataclasses import asdict, dataclass
 from pathlib import Path
-from typing import Iterator
 
 from toolkit.viewer.browser import CHROMIUM_ARGS, find_chromium
 
@@ -72,15 +72,25 @@ def jupyterlab(root: Path, env: dict[str, str] | None = None, timeout_s: float =
         path.parent.mkdir(parents=True, exist_ok=True)
         path.write_text(json.dumps(value))
     env = {**os.environ, "JUPYTERLAB_SETTINGS_DIR": str(settings), **(env or {})}
-    command = [sys.executable, "-m", "jupyterlab", "--no-browser", "--ServerApp.ip=127.0.0.1",
-               f"--ServerApp.port={port}", "--ServerApp.port_retries=0", f"--IdentityProvider.token={token}",
-               f"--ServerApp.root_dir={root}", "--LabApp.news_url=", "--LabApp.check_for_updates_class="
-               "jupyterlab.NeverCheckForUpdate"]
+    command = [
+        sys.executable,
+        "-m",
+        "jupyterlab",
+        "--no-browser",
+        "--ServerApp.ip=127.0.0.1",
+        f"--ServerApp.port={port}",
+        "--ServerApp.port_retries=0",
+        f"--IdentityProvider.token={token}",
+        f"--ServerApp.root_dir={root}",
+        "--LabApp.news_url=",
+        "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate",
+    ]
     if os.geteuid() == 0:  # CI machines run as root, which JupyterLab refuses unless told
         command.append("--allow-root")
     log = tempfile.TemporaryFile()
-    server = subprocess.Popen(command, env=env, stdout=log, stderr=subprocess.STDOUT,
-                              start_new_session=True)  # its kernels share its process group: one signal stops all
+    server = subprocess.Popen(
+        command, env=env, stdout=log, stderr=subprocess.STDOUT, start_new_session=True
+    )  # its kernels share its process group: one signal stops all
     url = f"http://127.0.0.1:{port}"
     try:
         deadline = time.monotonic() + timeout_s
@@ -113,8 +123,13 @@ def _stop(server: subprocess.Popen) -> None:
             continue
 
 
-def run_all(notebook: str | Path, *, env: dict[str, str] | None = None, screenshot: str | Path | None = None,
-            timeout_s: float = 900.0) -> RenderedNotebook:
+def run_all(
+    notebook: str | Path,
+    *,
+    env: dict[str, str] | None = None,
+    screenshot: str | Path | None = None,
+    timeout_s: float = 900.0,
+) -> RenderedNotebook:
     """Open ``notebook`` in JupyterLab, run all cells, and count what the page shows (optionally save a PNG)."""
     from playwright.sync_api import sync_playwright
 
@@ -148,14 +163,17 @@ def run_all(notebook: str | Path, *, env: dict[str, str] | None = None, screensh
                 outputs = page.locator(".jp-OutputArea-output")
                 rendered = RenderedNotebook(
                     code_cells=n_code,
-                    cells_run=page.evaluate("[...document.querySelectorAll('.jp-CodeCell .jp-InputArea-prompt')]"
-                                            ".filter(p => /\\[\\d+\\]/.test(p.textContent)).length"),
+                    cells_run=page.evaluate(
+                        "[...document.querySelectorAll('.jp-CodeCell .jp-InputArea-prompt')]"
+                        ".filter(p => /\\[\\d+\\]/.test(p.textContent)).length"
+                    ),
                     sliders=page.locator(".jp-OutputArea .widget-slider").count(),
                     images=outputs.locator("img").count(),
                     iframes=outputs.locator("iframe").count(),
                     widget_errors=page.get_by_text("Error displaying widget").count(),
                     tracebacks=page.locator(STDERR, has_text="Traceback").count(),
-                    seconds=seconds)
+                    seconds=seconds,
+                )
                 if screenshot is not None:
                     open_panel = page.locator(".jp-SideBar.jp-mod-left .lm-TabBar-tab.lm-mod-current")
                     if open_panel.count():  # the file browser closed: room for the notebook
@@ -176,8 +194,10 @@ def _wait_idle(page) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(description="Run a notebook in JupyterLab in headless Chromium and report what "
-                                                 "the page shows (quick mode: TOOLKIT_QUICK=1).")
+    parser = argparse.ArgumentParser(
+        description="Run a notebook in JupyterLab in headless Chromium and report what "
+        "the page shows (quick mode: TOOLKIT_QUICK=1)."
+    )
     parser.add_argument("notebook")
     parser.add_argument("--screenshot", help="save a PNG of the page here")
     args = parser.parse_args(argv)

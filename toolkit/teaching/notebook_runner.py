@@ -43,8 +43,9 @@ class NotebookRun:
 
     @property
     def stderr(self) -> str:
-        return "".join(o.get("text", "") for o in self.outputs
-                       if o.get("output_type") == "stream" and o.get("name") == "stderr")
+        return "".join(
+            o.get("text", "") for o in self.outputs if o.get("output_type") == "stream" and o.get("name") == "stderr"
+        )
 
     @property
     def figures(self) -> int:
@@ -63,7 +64,9 @@ def run_notebook(path: str | Path, *, timeout: float = 900) -> NotebookRun:
     """Execute ``path`` from its own folder (relative paths work as in JupyterLab); ``timeout`` is per cell."""
     path = Path(path)
     nb = nbformat.read(path, as_version=4)
-    client = NotebookClient(nb, timeout=timeout, kernel_name="python3", resources={"metadata": {"path": str(path.parent)}})
+    client = NotebookClient(
+        nb, timeout=timeout, kernel_name="python3", resources={"metadata": {"path": str(path.parent)}}
+    )
     client.on_notebook_start = lambda notebook: _poll_shell_in_slices(client.kc)
     began, cpu_before = time.perf_counter(), _children_cpu()
     client.execute()  # shuts the kernel down and waits for it, so its CPU time is counted below
@@ -81,8 +84,12 @@ def _widget_outputs(nb) -> list[dict]:
     """What the widgets' default values displayed (an ``interact`` shows its output, and a failing callback's
     traceback, in an Output widget, not in the cell's outputs)."""
     state = nb.metadata.get("widgets", {}).get("application/vnd.jupyter.widget-state+json", {}).get("state", {})
-    return [o for model in state.values() if model.get("model_name") == "OutputModel"
-            for o in model.get("state", {}).get("outputs", [])]
+    return [
+        o
+        for model in state.values()
+        if model.get("model_name") == "OutputModel"
+        for o in model.get("state", {}).get("outputs", [])
+    ]
 
 
 def _poll_shell_in_slices(kc, every: float = 1.0) -> None:
@@ -109,8 +116,10 @@ def _poll_shell_in_slices(kc, every: float = 1.0) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m toolkit.teaching.notebook_runner",
-                                     description="Run notebooks top to bottom and print each one's running time.")
+    parser = argparse.ArgumentParser(
+        prog="python -m toolkit.teaching.notebook_runner",
+        description="Run notebooks top to bottom and print each one's running time.",
+    )
     parser.add_argument("notebooks", nargs="+", type=Path, help="notebook files (.ipynb)")
     parser.add_argument("--quick", action="store_true", help=f"set {QUICK_ENV}=1: the notebooks' small sizes")
     args = parser.parse_args(argv)
@@ -129,8 +138,11 @@ def main(argv: list[str] | None = None) -> int:
             continue
         problem = run.problem()
         failed += problem is not None
-        print(f"{path}: wall {run.wall_s:.0f} s, kernel CPU {run.kernel_cpu_s:.0f} s, {run.figures} figures"
-              + (f", FAILED: {problem}" if problem else ""), flush=True)
+        print(
+            f"{path}: wall {run.wall_s:.0f} s, kernel CPU {run.kernel_cpu_s:.0f} s, {run.figures} figures"
+            + (f", FAILED: {problem}" if problem else ""),
+            flush=True,
+        )
     return 1 if failed else 0
 
 

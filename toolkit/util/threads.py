@@ -19,7 +19,6 @@ from __future__ import annotations
 import os
 from contextlib import contextmanager
 
-import torch
 from threadpoolctl import threadpool_limits
 
 ENV = "TOOLKIT_THREADS"
@@ -41,6 +40,8 @@ def limited(n: int | None):
     if n is None:
         yield
         return
+    import torch  # here, not at the top: commands that never touch a network do not wait for torch to load
+
     before = torch.get_num_threads()
     torch.set_num_threads(n)
     try:

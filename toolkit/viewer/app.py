@@ -16,9 +16,16 @@ from toolkit.viewer.panel import Panel
 from toolkit.viewer.scene import Predictor, Viewer
 
 
-def launch(scenario: str = "3do", *, seed: int = 0, checkpoint: str | Path | None = None,
-           predictor: Predictor | None = None, host: str = "127.0.0.1", port: int = 8080,
-           quiet: bool = False) -> Viewer:
+def launch(
+    scenario: str = "3do",
+    *,
+    seed: int = 0,
+    checkpoint: str | Path | None = None,
+    predictor: Predictor | None = None,
+    host: str = "127.0.0.1",
+    port: int = 8080,
+    quiet: bool = False,
+) -> Viewer:
     """Start a :class:`Viewer` with its GUI panel and print the URL to open (and whether the port was busy)."""
     viewer = Viewer(scenario, seed=seed, checkpoint=checkpoint, predictor=predictor, host=host, port=port)
     try:
@@ -28,8 +35,10 @@ def launch(scenario: str = "3do", *, seed: int = 0, checkpoint: str | Path | Non
         raise
     if not quiet:
         busy = f" (port {port} was busy)" if port and viewer.port != port else ""
-        print(f"toolkit view: {scenario} (seed {seed}) at {viewer.url}{busy} — open it in a browser; Ctrl-C stops",
-              flush=True)
+        print(
+            f"toolkit view: {scenario} (seed {seed}) at {viewer.url}{busy} — open it in a browser; Ctrl-C stops",
+            flush=True,
+        )
     return viewer
 
 

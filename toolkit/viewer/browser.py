@@ -18,8 +18,8 @@ from __future__ import annotations
 
 import shutil
 import time
+from collections.abc import Callable
 from pathlib import Path
-from typing import Callable
 
 import numpy as np
 from matplotlib import image as mpimg
@@ -31,8 +31,15 @@ CHROMIUM_NAMES = ("chromium", "chromium-browser", "google-chrome")
 CANVAS_ROWS = (0.2, 0.95)  # fractions of the height clear of the top-left notice and the bottom edge
 CANVAS_LEFT = 0.02  # fraction of the width left out on the left
 PANEL_PX = 340  # the GUI panel's width on the right, in pixels
-CHROMIUM_ARGS = ["--no-sandbox", "--disable-gpu", "--disable-quic", "--no-first-run",  # no network besides the page
-                 "--disable-background-networking", "--disable-component-update", "--disable-sync"]
+CHROMIUM_ARGS = [
+    "--no-sandbox",
+    "--disable-gpu",
+    "--disable-quic",
+    "--no-first-run",  # no network besides the page
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+]
 
 
 def find_chromium() -> str | None:
@@ -45,21 +52,30 @@ def shows_obstacles(png: str | Path) -> bool:
     return color_share(png, draw.OBSTACLE) > 0.001
 
 
-def screenshot(url: str, path: str | Path, *, size: tuple[int, int] = (1280, 800),
-               ready: Callable[[Path], bool] = shows_obstacles, budget_s: float = 300.0,
-               every_s: float = 1.0) -> Path:
+def screenshot(
+    url: str,
+    path: str | Path,
+    *,
+    size: tuple[int, int] = (1280, 800),
+    ready: Callable[[Path], bool] = shows_obstacles,
+    budget_s: float = 300.0,
+    every_s: float = 1.0,
+) -> Path:
     """Load ``url`` in headless Chromium and save a PNG of ``size`` (width, height) to ``path`` once
     ``ready(path)`` holds, photographing the page every ``every_s`` seconds for at most ``budget_s``."""
     chromium = find_chromium()
     if chromium is None:
-        raise FileNotFoundError(f"no Chromium found (looked for {', '.join(CHROMIUM_NAMES)}); "
-                                "install it with `make browser` or `apt-get install chromium`")
+        raise FileNotFoundError(
+            f"no Chromium found (looked for {', '.join(CHROMIUM_NAMES)}); "
+            "install it with `make browser` or `apt-get install chromium`"
+        )
     try:
         from playwright.sync_api import TimeoutError as PageTimeout
         from playwright.sync_api import sync_playwright
     except ImportError:
-        raise FileNotFoundError("screenshots need Playwright: pip install playwright (it is in the dev extras, "
-                                "pip install -e '.[dev]')") from None
+        raise FileNotFoundError(
+            "screenshots need Playwright: pip install playwright (it is in the dev extras, pip install -e '.[dev]')"
+        ) from None
     path = Path(path).resolve()
     path.parent.mkdir(parents=True, exist_ok=True)
     path.unlink(missing_ok=True)
@@ -70,8 +86,7 @@ def screenshot(url: str, path: str | Path, *, size: tuple[int, int] = (1280, 800
 
     with sync_playwright() as playwright:
         try:
-            browser = playwright.chromium.launch(executable_path=chromium, args=CHROMIUM_ARGS,
-                                                 timeout=left_ms())
+            browser = playwright.chromium.launch(executable_path=chromium, args=CHROMIUM_ARGS, timeout=left_ms())
             page = browser.new_page(viewport={"width": size[0], "height": size[1]})
             page.goto(url, timeout=left_ms())
             while True:
@@ -83,12 +98,15 @@ def screenshot(url: str, path: str | Path, *, size: tuple[int, int] = (1280, 800
                 time.sleep(every_s)
         except PageTimeout:
             pass
-    raise TimeoutError(f"{url} did not show what was expected within {budget_s:.0f} s; the last screenshot: "
-                       f"{path if path.exists() else 'none'}")
+    raise TimeoutError(
+        f"{url} did not show what was expected within {budget_s:.0f} s; the last screenshot: "
+        f"{path if path.exists() else 'none'}"
+    )
 
 
-def color_share(png: str | Path, rgb: tuple[int, int, int], *, hue_tolerance: float = 15.0,
-                min_saturation: float = 0.1) -> float:
+def color_share(
+    png: str | Path, rgb: tuple[int, int, int], *, hue_tolerance: float = 15.0, min_saturation: float = 0.1
+) -> float:
     """Share of the canvas's pixels whose hue is within ``hue_tolerance`` degrees of ``rgb``'s.
 
     Shading scales a face's color and lighting adds white to it; neither moves its hue
@@ -99,7 +117,7 @@ def color_share(png: str | Path, rgb: tuple[int, int, int], *, hue_tolerance: fl
     pixels = mpimg.imread(str(png))[..., :3].astype(float)  # (H, W, 3) in [0, 1]
     height, width = pixels.shape[:2]
     top, bottom = (int(f * height) for f in CANVAS_ROWS)
-    pixels = pixels[top:bottom, int(CANVAS_LEFT * width): width - PANEL_PX]
+    pixels = pixels[top:bottom, int(CANVAS_LEFT * width) : width - PANEL_PX]
     hsv = rgb_to_hsv(pixels)  # (h, w, 3), hue in [0, 1)
     target = rgb_to_hsv(np.asarray(rgb, dtype=float) / 255)[0] * 360
     gap = np.abs((hsv[..., 0] * 360 - target + 180) % 360 - 180)  # circular hue distance, degrees

@@ -50,7 +50,7 @@ class Boxes:
     def __len__(self) -> int:
         return len(self.centers)
 
-    def scaled(self, factor: float) -> "Boxes":
+    def scaled(self, factor: float) -> Boxes:
         """The same boxes, each ``factor`` times larger about its centre."""
         return Boxes(self.centers, self.rotations, self.sizes * factor)
 
@@ -119,14 +119,29 @@ def probability_colors(probability: np.ndarray) -> np.ndarray:
     return np.round((1 - p) * np.array(COLLIDING) + p * np.array(VALID)).astype(np.uint8)
 
 
-def add_boxes(scene: viser.SceneApi, name: str, boxes: Boxes, colors, *, opacity: float | None = None,
-              wireframe: bool = False, visible: bool = True) -> viser.BatchedMeshHandle:
+def add_boxes(
+    scene: viser.SceneApi,
+    name: str,
+    boxes: Boxes,
+    colors,
+    *,
+    opacity: float | None = None,
+    wireframe: bool = False,
+    visible: bool = True,
+) -> viser.BatchedMeshHandle:
     """One batched-mesh node drawing ``boxes``; ``colors`` is one RGB or ``(N, 3)``."""
     return scene.add_batched_meshes_simple(
-        name, _UNIT_CUBE.vertices, _UNIT_CUBE.faces,
-        batched_wxyzs=_quaternions(boxes.rotations), batched_positions=boxes.centers,
-        batched_scales=boxes.sizes, batched_colors=np.asarray(colors, dtype=np.uint8),
-        opacity=opacity, wireframe=wireframe, flat_shading=not wireframe, lod="off",
+        name,
+        _UNIT_CUBE.vertices,
+        _UNIT_CUBE.faces,
+        batched_wxyzs=_quaternions(boxes.rotations),
+        batched_positions=boxes.centers,
+        batched_scales=boxes.sizes,
+        batched_colors=np.asarray(colors, dtype=np.uint8),
+        opacity=opacity,
+        wireframe=wireframe,
+        flat_shading=not wireframe,
+        lod="off",
         visible=visible,
     )
 
@@ -143,11 +158,17 @@ def draw_workspace(scene: viser.SceneApi, workspace: Workspace) -> dict[str, vis
     width, depth = (workspace.upper - workspace.lower)[:2]
     center = np.append((workspace.lower + workspace.upper)[:2] / 2, 0.0)
     return {
-        "obstacles": add_boxes(scene, "/workspace/obstacles", obstacle_boxes(workspace), OBSTACLE,
-                               opacity=OBSTACLE_OPACITY.get(workspace.family)),
+        "obstacles": add_boxes(
+            scene,
+            "/workspace/obstacles",
+            obstacle_boxes(workspace),
+            OBSTACLE,
+            opacity=OBSTACLE_OPACITY.get(workspace.family),
+        ),
         "region": scene.add_line_segments("/workspace/region", region_edges(workspace), REGION, thickness=0.05),
-        "floor": scene.add_grid("/workspace/floor", width=width, height=depth, cell_size=1.0, section_size=5.0,
-                                position=center),
+        "floor": scene.add_grid(
+            "/workspace/floor", width=width, height=depth, cell_size=1.0, section_size=5.0, position=center
+        ),
     }
 
 

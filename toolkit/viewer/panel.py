@@ -42,9 +42,13 @@ class Panel:
             self.on_load()
             self.along.disabled = viewer.path is None  # a path planned before the panel came can be played
             self.on_configuration()
-            for event, callback in (("loading", self.stop_playing), ("loaded", self.on_load),
-                                    ("moved", self.on_configuration), ("planned", self.on_plan),
-                                    ("stopping", self.stop_playing)):
+            for event, callback in (
+                ("loading", self.stop_playing),
+                ("loaded", self.on_load),
+                ("moved", self.on_configuration),
+                ("planned", self.on_plan),
+                ("stopping", self.stop_playing),
+            ):
                 viewer.subscribe(event, callback)
 
     def _build(self, gui) -> None:
@@ -76,8 +80,13 @@ class Panel:
         self.scenario.on_update(self._guarded(self._reload))
         self.seed.on_update(self._guarded(self._reload))
         self.new_workspace.on_click(self._guarded(lambda _: setattr(self.seed, "value", int(self.seed.value) + 1)))
-        self.sample.on_click(self._guarded(lambda _: viewer.sample(
-            self.sampler.value, int(self.n_samples.value), seed=self._next_seed(), at=self.mark.value)))
+        self.sample.on_click(
+            self._guarded(
+                lambda _: viewer.sample(
+                    self.sampler.value, int(self.n_samples.value), seed=self._next_seed(), at=self.mark.value
+                )
+            )
+        )
         self.plan.on_click(self._guarded(self._plan))
         self.play.on_click(self._guarded(lambda _: self.toggle_play()))
         self.along.on_update(self._guarded(lambda _: self._follow_path()))
@@ -95,8 +104,10 @@ class Panel:
         gui, robot = viewer.server.gui, viewer.robot
         self.configuration = gui.add_folder("Configuration", order=self.status.order + 0.5)
         with self.configuration:
-            self.sliders = [gui.add_slider(name, float(lo), float(hi), float(hi - lo) / 500, float(lo))
-                            for name, lo, hi in zip(robot.dof_names, robot.lower, robot.upper)]
+            self.sliders = [
+                gui.add_slider(name, float(lo), float(hi), float(hi - lo) / 500, float(lo))
+                for name, lo, hi in zip(robot.dof_names, robot.lower, robot.upper)
+            ]
             self.random = gui.add_button("random valid configuration")
         for slider in self.sliders:
             slider.on_update(self._guarded(lambda _: self._follow_sliders()))
@@ -112,7 +123,8 @@ class Panel:
             slider.value = float(value)
         self._syncing = False
         text = f"**{viewer.scenario.title}**, seed {viewer.seed} — exact: " + (
-            "**valid**" if viewer.valid else "**in collision**")
+            "**valid**" if viewer.valid else "**in collision**"
+        )
         if viewer.probability is not None:
             verdict = "agrees" if viewer.predicted_valid == viewer.valid else "**disagrees**"
             text += f"; model: p(valid) = {viewer.probability:.2f}, {verdict}"
@@ -126,7 +138,8 @@ class Panel:
         self.plan_status.content = (
             f"{'path of ' + str(len(result.path)) + ' nodes' if result.success else '**no path found**'}; "
             f"roadmap {len(result.roadmap.nodes)} nodes, {stats.get('rounds', '?')} rounds, "
-            f"{stats.get('total_s', 0.0):.2f} s")
+            f"{stats.get('total_s', 0.0):.2f} s"
+        )
         self._syncing = True
         self.along.value, self.along.disabled = 0.0, self.viewer.path is None
         self._syncing = False
@@ -173,7 +186,7 @@ class Panel:
         self.viewer.plan(self.planner_sampler.value, seed=self._next_seed())
 
     def _next_seed(self) -> int:
-        return int(self._rng.integers(2 ** 31))
+        return int(self._rng.integers(2**31))
 
     def _reload(self, _event) -> None:
         if not self._syncing:
@@ -189,11 +202,13 @@ class Panel:
 
     def _guarded(self, callback: Callable) -> Callable:
         """``callback`` with any error shown in the status line."""
+
         def run(event) -> None:
             try:
                 callback(event)
-            except Exception as err:  # noqa: BLE001 - shown to the user, not swallowed
+            except Exception as err:
                 self.show_error(err)
+
         return run
 
 

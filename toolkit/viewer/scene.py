@@ -56,8 +56,16 @@ class Viewer:
     the panel.
     """
 
-    def __init__(self, scenario: str = "3do", *, seed: int = 0, checkpoint: str | Path | None = None,
-                 predictor: Predictor | None = None, host: str = "127.0.0.1", port: int = 8080):
+    def __init__(
+        self,
+        scenario: str = "3do",
+        *,
+        seed: int = 0,
+        checkpoint: str | Path | None = None,
+        predictor: Predictor | None = None,
+        host: str = "127.0.0.1",
+        port: int = 8080,
+    ):
         if checkpoint is not None and predictor is not None:
             raise ValueError("give a checkpoint or a predictor, not both")
         if checkpoint is not None:
@@ -130,10 +138,15 @@ class Viewer:
             boxes = draw.robot_boxes(self.robot, self.q[None])
             self._add("robot", draw.add_boxes(self.server.scene, "/robot/links", boxes, draw.VALID))
             if self.model is not None:
-                self._add("prediction", draw.add_boxes(self.server.scene, "/robot/prediction", boxes.scaled(HALO),
-                                                       draw.VALID, wireframe=True))
+                self._add(
+                    "prediction",
+                    draw.add_boxes(
+                        self.server.scene, "/robot/prediction", boxes.scaled(HALO), draw.VALID, wireframe=True
+                    ),
+                )
                 self.nodes["disagreement"] = self.server.scene.add_label(
-                    "/robot/disagreement", "model disagrees", visible=False)
+                    "/robot/disagreement", "model disagrees", visible=False
+                )
             self._notify("loaded")
             self.set_configuration(self.q)
 
@@ -145,14 +158,20 @@ class Viewer:
             self.q = q
             boxes = draw.robot_boxes(self.robot, q[None])
             self.valid = bool(self.exact.are_valid(q[None])[0])
-            draw.move_boxes(self.nodes["robot"], boxes,
-                            np.broadcast_to(draw.VALID if self.valid else draw.COLLIDING, (len(boxes), 3)))
+            draw.move_boxes(
+                self.nodes["robot"],
+                boxes,
+                np.broadcast_to(draw.VALID if self.valid else draw.COLLIDING, (len(boxes), 3)),
+            )
             self.probability = self.predicted_valid = None
             if self.model is not None:
                 self.probability = float(self.model.probability(q[None])[0])
                 self.predicted_valid = bool(self.model.are_valid(q[None])[0])
-                draw.move_boxes(self.nodes["prediction"], boxes.scaled(HALO),
-                                np.repeat(draw.probability_colors([self.probability]), len(boxes), axis=0))
+                draw.move_boxes(
+                    self.nodes["prediction"],
+                    boxes.scaled(HALO),
+                    np.repeat(draw.probability_colors([self.probability]), len(boxes), axis=0),
+                )
                 self.nodes["disagreement"].position = boxes.centers.max(axis=0) + np.array([0.0, 0.0, 1.0])
                 self._show_disagreement()
             self._notify("moved")
@@ -184,9 +203,16 @@ class Viewer:
             valid = self.exact.are_valid(Q)
             predicted = self.model.are_valid(Q) if self.model is not None else None
             colors = draw.validity_colors(valid, predicted)  # (N, 3)
-            self._add("samples", self.server.scene.add_point_cloud(
-                "/samples", draw.config_points(self.robot, Q, at).astype(np.float32), colors,
-                point_size=draw.POINT_SIZE[self.workspace.family], point_shape="circle"))
+            self._add(
+                "samples",
+                self.server.scene.add_point_cloud(
+                    "/samples",
+                    draw.config_points(self.robot, Q, at).astype(np.float32),
+                    colors,
+                    point_size=draw.POINT_SIZE[self.workspace.family],
+                    point_shape="circle",
+                ),
+            )
             return colors
 
     def sample(self, sampler: str = RAW, n: int = 200, *, seed: int = 0, at: str = "base") -> np.ndarray:
@@ -214,8 +240,15 @@ class Viewer:
         """
         rng = np.random.default_rng(seed)
         start, goal = queries.query_pairs(self.scenario, self.workspace, 1, rng)[0]
-        result = prm.plan(self.exact, start, goal, sampler=sampler, checker=self.model,
-                          options=queries.default_options(self.scenario, self.model), rng=rng)
+        result = prm.plan(
+            self.exact,
+            start,
+            goal,
+            sampler=sampler,
+            checker=self.model,
+            options=queries.default_options(self.scenario, self.model),
+            rng=rng,
+        )
         self.show_plan(result)
         return result
 
@@ -224,17 +257,31 @@ class Viewer:
         nodes, edges = np.asarray(result.roadmap.nodes), np.asarray(result.roadmap.edges).reshape(-1, 2)
         with self.lock:
             points = draw.config_points(self.robot, nodes, at)  # (V, 3)
-            self._add("roadmap", self.server.scene.add_line_segments(
-                "/plan/roadmap", draw.edge_segments(points, edges), draw.ROADMAP, thickness=1.0,
-                thickness_units="screen"))
+            self._add(
+                "roadmap",
+                self.server.scene.add_line_segments(
+                    "/plan/roadmap",
+                    draw.edge_segments(points, edges),
+                    draw.ROADMAP,
+                    thickness=1.0,
+                    thickness_units="screen",
+                ),
+            )
             self._remove("path")
             self.path = None
             if len(result.path) > 1:
                 self.path = self.robot.check_configs(result.path, "path")
                 dense = self.path_configurations(np.linspace(0.0, 1.0, 20 * len(self.path)))
-                self._add("path", self.server.scene.add_line_segments(
-                    "/plan/path", draw.polyline_segments(draw.config_points(self.robot, dense, at)), draw.PATH,
-                    thickness=4.0, thickness_units="screen"))
+                self._add(
+                    "path",
+                    self.server.scene.add_line_segments(
+                        "/plan/path",
+                        draw.polyline_segments(draw.config_points(self.robot, dense, at)),
+                        draw.PATH,
+                        thickness=4.0,
+                        thickness_units="screen",
+                    ),
+                )
                 self.set_configuration(self.path[0])
             self._notify("planned", result)
 
@@ -247,8 +294,12 @@ class Viewer:
         at = np.clip(np.asarray(t, dtype=float).reshape(-1), 0.0, 1.0) * ends[-1]  # (T,) distance travelled
         segment = np.minimum(np.searchsorted(ends, at), len(lengths) - 1)  # (T,)
         fraction = (at - (ends[segment] - lengths[segment])) / np.maximum(lengths[segment], 1e-12)
-        return np.stack([self.robot.interpolate(self.path[s], self.path[s + 1], [f])[0]
-                         for s, f in zip(segment, np.clip(fraction, 0.0, 1.0))])
+        return np.stack(
+            [
+                self.robot.interpolate(self.path[s], self.path[s + 1], [f])[0]
+                for s, f in zip(segment, np.clip(fraction, 0.0, 1.0))
+            ]
+        )
 
     # -- layers, pages, shutdown -----------------------------------------------------------
     def set_visible(self, layer: str, visible: bool) -> None:

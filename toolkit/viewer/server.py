@@ -77,5 +77,7 @@ def srcdoc_iframe(document: str, height: int = 480) -> str:
 
     Wrapped in a ``<div>``: ``IPython.display.HTML`` warns about markup that starts with ``<iframe``.
     """
-    return (f'<div><iframe srcdoc="{html_lib.escape(document, quote=True)}" width="100%" '
-            f'height="{int(height)}" style="border:none"></iframe></div>')
+    return (
+        f'<div><iframe srcdoc="{html_lib.escape(document, quote=True)}" width="100%" '
+        f'height="{int(height)}" style="border:none"></iframe></div>'
+    )

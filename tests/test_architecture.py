@@ -1,0 +1,152 @@
+"""The library's shape, held as it is promised in the packages' docstrings and docs/design.md.
+
+Packages are layers (``LAYERS``): a module imports only from lower layers and its own
+package, ``learning`` and ``planning`` never import each other, nothing imports the
+thin re-exports kept for old names, and no two modules import each other, even
+indirectly (imports inside functions count). Modules stay under 400 lines,
+functions under 60, and no module imports another's private name.
+"""
+
+import ast
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parents[1] / "toolkit"
+LAYERS = {  # package (or top-level module) -> layer; a module imports only from lower layers and its own package
+    "util": 0,
+    "geometry": 1,
+    "scenarios": 2,
+    "learning": 3,
+    "planning": 3,
+    "plots": 4,
+    "experiments": 5,
+    "viewer": 6,
+    "teaching": 7,
+    "cli": 8,
+    "__main__": 9,
+    # the re-exports kept for the contract's old names (DESIGN.md): for users, never imported inside the toolkit
+    "collision": 9,
+    "workspace": 9,
+    "learned": 9,
+    "prm": 9,
+    "queries": 9,
+}
+MAX_MODULE_LINES = 400
+MAX_FUNCTION_LINES = 60
+
+
+def modules() -> dict[str, Path]:
+    return {
+        ".".join(p.relative_to(ROOT.parent).with_suffix("").parts).removesuffix(".__init__"): p
+        for p in sorted(ROOT.rglob("*.py"))
+    }
+
+
+def imports(path: Path) -> list[tuple[str, list[str], int]]:
+    """``(module, names, line)`` of every toolkit import in the file, those inside functions included."""
+    found = []
+    for node in ast.walk(ast.parse(path.read_text())):
+        if isinstance(node, ast.ImportFrom) and node.module and node.module.split(".")[0] == "toolkit":
+            found.append((node.module, [a.name for a in node.names], node.lineno))
+        elif isinstance(node, ast.Import):
+            found += [(a.name, [], node.lineno) for a in node.names if a.name.split(".")[0] == "toolkit"]
+    return found
+
+
+def targets(module: str, names: list[str], known: dict[str, Path]) -> list[str]:
+    """The toolkit modules an import statement loads: ``from toolkit.x import y`` is ``toolkit.x.y`` when that is a
+    module, else ``toolkit.x``."""
+    found = [f"{module}.{name}" for name in names if f"{module}.{name}" in known]
+    return found or [module]
+
+
+def part(module: str) -> str:
+    """The layer key of a module: its package below ``toolkit`` (or its own name at the top)."""
+    parts = module.split(".")
+    return parts[1] if len(parts) > 1 else "toolkit"
+
+
+def test_every_package_has_a_layer():
+    assert {part(m) for m in modules()} - {"toolkit"} <= set(LAYERS)
+
+
+def test_modules_import_only_lower_layers_and_their_own_package():
+    known, wrong = modules(), []
+    for name, path in known.items():
+        if name == "toolkit":
+            continue
+        mine = part(name)
+        for module, names, line in imports(path):
+            for target in targets(module, names, known):
+                theirs = part(target)
+                if theirs == "toolkit" or theirs == mine:
+                    continue
+                if LAYERS[theirs] >= LAYERS[mine] and not (mine == "__main__" and theirs == "cli"):
+                    wrong.append(
+                        f"{path.relative_to(ROOT.parent)}:{line} ({mine}, layer {LAYERS[mine]}) imports "
+                        f"{target} (layer {LAYERS[theirs]})"
+                    )
+    assert wrong == []
+
+
+def test_no_import_cycles():
+    known = modules()
+    graph = {
+        name: {
+            t for module, names, _ in imports(path) for t in targets(module, names, known) if t in known and t != name
+        }
+        for name, path in known.items()
+    }
+    for package in [m for m in known if known[m].name == "__init__.py"]:  # a package's __init__ may re-export its own
+        graph[package] = {t for t in graph[package] if not t.startswith(package + ".")}
+    cycles, state = [], {}
+
+    def visit(node, stack):
+        state[node] = "open"
+        for nxt in graph[node]:
+            if state.get(nxt) == "open":
+                cycles.append(stack[stack.index(nxt) :] + [nxt])
+            elif nxt not in state:
+                visit(nxt, stack + [nxt])
+        state[node] = "done"
+
+    for name in graph:
+        if name not in state:
+            visit(name, [name])
+    assert cycles == []
+
+
+def test_modules_and_functions_stay_short():
+    long = []
+    for name, path in modules().items():
+        text = path.read_text()
+        if len(text.splitlines()) > MAX_MODULE_LINES:
+            long.append(f"{name}: {len(text.splitlines())} lines")
+        for node in ast.walk(ast.parse(text)):
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                length = node.end_lineno - node.lineno + 1
+                if length > MAX_FUNCTION_LINES:
+                    long.append(f"{name}.{node.name}: {length} lines")
+    assert long == []
+
+
+def test_no_module_imports_another_modules_private_names():
+    private = [
+        f"{name}: {module}.{n}"
+        for name, path in modules().items()
+        for module, names, _ in imports(path)
+        for n in names
+        if n.startswith("_") and not n.startswith("__")
+    ]
+    assert private == []
+
+
+@pytest.mark.parametrize("name", ["collision", "workspace", "learned", "prm", "queries"])
+def test_the_contracts_old_names_still_import_and_are_the_new_objects(name):
+    import importlib
+
+    old = importlib.import_module(f"toolkit.{name}")
+    assert old.__all__ and all(getattr(old, n) is not None for n in old.__all__)
+    new = importlib.import_module(old.__doc__.split(":mod:`")[1].split("`")[0])
+    assert all(getattr(old, n) is getattr(new, n) for n in old.__all__)
