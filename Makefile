@@ -3,7 +3,7 @@ VENV ?= .venv
 PY := $(VENV)/bin/python
 OUT ?= results/2ds-paper
 
-.PHONY: setup browser demo test lab assignments clean
+.PHONY: setup browser demo lint test lab assignments clean
 
 setup: $(VENV)/.installed
 
@@ -22,7 +22,13 @@ demo: setup
 	$(VENV)/bin/toolkit reproduce --scenario 2ds --preset paper --out $(OUT)
 	cat $(OUT)/tables.md
 
-test: setup browser
+# The code's checks: ruff's lint and format, mypy's types (all configured in pyproject.toml).
+lint: setup
+	$(VENV)/bin/ruff check toolkit tests docs/scripts
+	$(VENV)/bin/ruff format --check toolkit tests docs/scripts
+	$(VENV)/bin/mypy
+
+test: setup browser lint
 	$(PY) -m pytest -q
 
 # JupyterLab on the notebooks, for a student: open the URL it prints, start with 01.

@@ -86,7 +86,7 @@ def graded(tmp_path_factory) -> dict[str, dict]:
     with ThreadPoolExecutor() as pool:
         zips = dict(zip(grading.assignment_names(), pool.map(grading.build, grading.assignment_names())))
     root = tmp_path_factory.mktemp("submissions")
-    jobs = {}  # label -> (notebook, assignment, timeout)
+    jobs: dict[str, tuple[Path, str, float | None]] = {}  # label -> (notebook, assignment, timeout in s)
     for name, zip_path in zips.items():
         dist = zip_path.parent.parent
         jobs[f"{name}/blank"] = (dist / "student" / f"{name}.ipynb", name, None)
@@ -188,7 +188,8 @@ def test_a_folder_of_submissions_becomes_one_csv_row_each(tmp_path):
         for i, p in enumerate(found)
     }
     grading.write_csv(results, tmp_path / "scores.csv")
-    rows = list(csv.DictReader(open(tmp_path / "scores.csv")))
+    with open(tmp_path / "scores.csv") as scores:
+        rows = list(csv.DictReader(scores))
     assert [(Path(r["submission"]).name, r["q1"], r["score"], r["max_score"]) for r in rows] == [
         ("a.ipynb", "0.0", "0.0", "2.0"),
         ("b.ipynb", "1.0", "1.0", "2.0"),
@@ -203,12 +204,12 @@ def test_the_assignment_is_read_from_the_notebook_then_its_file_name(tmp_path):
     (tmp_path / "bridge_test.ipynb").write_text("{}")  # no metadata: the file name
     assert grading.assignment_of(tmp_path / "bridge_test.ipynb") == "bridge_test"
     (tmp_path / "bob.ipynb").write_text("not a notebook")
-    with pytest.raises(ValueError, match="bob.ipynb: cannot tell which assignment.*--assignment"):
+    with pytest.raises(ValueError, match=r"bob\.ipynb: cannot tell which assignment.*--assignment"):
         grading.assignment_of(tmp_path / "bob.ipynb")
 
 
 def test_missing_or_empty_submissions_are_named(tmp_path):
-    with pytest.raises(ValueError, match="no such file or folder: .*missing"):
+    with pytest.raises(ValueError, match=r"no such file or folder: .*missing"):
         grading.submissions([tmp_path / "missing"])
     with pytest.raises(ValueError, match="no notebooks"):
         grading.submissions([tmp_path])
@@ -256,7 +257,8 @@ def test_the_instructors_guide_grades_a_folder_of_three_submissions_into_a_csv(t
     )
     assert done.returncode == 0, done.stderr[-3000:]
     csv_file = tmp_path / command[command.index("--csv") + 1]
-    rows = {Path(row["submission"]).name: row for row in csv.DictReader(open(csv_file))}
+    with open(csv_file) as scores:
+        rows = {Path(row["submission"]).name: row for row in csv.DictReader(scores)}
     assert sorted(rows) == ["alice.ipynb", "bob.ipynb", "carol.ipynb"]
     assert (rows["alice.ipynb"]["assignment"], rows["alice.ipynb"]["score"], rows["alice.ipynb"]["max_score"]) == (
         "bridge_test",

@@ -251,9 +251,7 @@ def test_planning_ratios_plans_a_registered_sampler_and_names_an_unknown_one(mon
     result = bench.planning_ratios(scenario, models, 1, 1, samplers=("MINE",), overrides={"max_rounds": 1})
     assert set(result) == {"MINE"}
     assert result["MINE"]["rounds_with"] == result["MINE"]["rounds_without"] == 1
-    with pytest.raises(
-        ValueError, match=r"unknown sampler\(s\) \['RRT'\]; choose from \['BS', 'BT', 'G', 'MINE', 'OB'\]"
-    ):
+    with pytest.raises(ValueError, match=r"unknown sampler\(s\) \['RRT'\]; choose from BS, OB, G, BT, MINE$"):
         bench.planning_ratios(scenario, models, 1, 1, samplers=("BS", "RRT"))
 
 

@@ -29,7 +29,9 @@ COMMANDS = ("reproduce", "train", "plan", "bench", "view")
 
 def subparsers() -> dict:
     parser = cli.build_parser()
-    return next(a for a in parser._actions if a.dest == "command").choices
+    choices = next(a for a in parser._actions if a.dest == "command").choices
+    assert isinstance(choices, dict)
+    return choices
 
 
 # -- help ---------------------------------------------------------------------------------------------

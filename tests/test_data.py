@@ -167,7 +167,7 @@ def test_inconsistent_dataset_is_refused(splits_2ds):
     ds = splits_2ds["train"]
     with pytest.raises(ValueError, match="disagree on the number of workspaces"):
         CollisionDataset("2ds", ds.workspaces[:2], ds.occupancy, ds.configs, ds.valid)
-    with pytest.raises(ValueError, match="configs .* and labels .* disagree"):
+    with pytest.raises(ValueError, match=r"configs .* and labels .* disagree"):
         CollisionDataset("2ds", ds.workspaces, ds.occupancy, ds.configs, ds.valid[:, :10])
 
 

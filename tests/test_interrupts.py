@@ -101,7 +101,9 @@ def out(tmp_path, checkpoint_2ds):
     [(signal.SIGINT, "group"), (signal.SIGINT, "parent"), (signal.SIGTERM, "parent"), (signal.SIGKILL, "parent")],
     ids=["ctrl-c", "sigint-parent", "sigterm", "sigkill"],
 )
-def test_a_signal_during_planning_stops_every_process_and_keeps_the_finished_samplers(sig, whom, out, tmp_path):
+def test_a_signal_during_planning_stops_every_process_and_keeps_the_finished_samplers(
+    sig: signal.Signals, whom: str, out: Path, tmp_path: Path
+) -> None:
     script = tmp_path / "stalled_run.py"
     script.write_text(STALLED_RUN)
     run = subprocess.Popen(

@@ -124,7 +124,7 @@ def test_weights_with_other_entries_are_refused(models, workspace, tmp_path):
     state = torch.load(tmp_path / "weights.pt", weights_only=True)
     state["encoding.offsets"] = torch.zeros(9, 2)  # an entry the networks do not have
     torch.save(state, tmp_path / "weights.pt")
-    with pytest.raises(ValueError, match="weights.pt is corrupted or does not match the networks"):
+    with pytest.raises(ValueError, match=r"weights\.pt is corrupted or does not match the networks"):
         load_checker(tmp_path, workspace)
 
 

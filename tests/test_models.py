@@ -289,7 +289,7 @@ def test_workspace_mlp_is_a_snapshot(rng):
 
 
 def test_workspace_mlp_rejects_bad_input(rng):
-    s, predictor, grid = _predictor_and_workspace("local", False, rng)
+    _, predictor, grid = _predictor_and_workspace("local", False, rng)
     with pytest.raises(ValueError, match=r"workspace grid \(11, 11\) does not fit the predictor's \(11, 11, 11\)"):
         WorkspaceMLP(predictor, grid[0])
     with pytest.raises(ValueError, match="chunk >= 1"):

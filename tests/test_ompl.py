@@ -123,7 +123,7 @@ def test_an_enclosed_goal_is_unsolvable_for_both():
     assert ompl_solves(ws, robot, start, goal, ours.stats["resolution"] / 10, seconds=0.3) is None
 
 
-# -- toolkit.planning.ompl: our checkers and samplers inside OMPL ------------------------------------------------------------
+# -- toolkit.planning.ompl: our checkers and samplers inside OMPL -----------------------------------------------------
 
 toolkit_ompl = pytest.importorskip("toolkit.planning.ompl")
 

@@ -76,10 +76,12 @@ def test_answer_codes_and_counts_by_hand():
 def test_roc_points_are_fpr_and_tpr_at_each_threshold(probability, valid):
     thresholds = [0.0, 0.3, 0.5, 0.71, 1.0]
     ts, fpr, tpr = pc.roc_points(probability, valid, thresholds)
+    np.testing.assert_array_equal(ts, thresholds)
     for t, f, r in zip(thresholds, fpr, tpr):
         rates = metrics.classification((probability >= t).ravel(), valid.ravel())
         assert r == pytest.approx(rates["tpr"]) and f == pytest.approx(1 - rates["tnr"])
     ts, fpr, tpr = pc.roc_points(probability, valid)  # every distinct probability, then +inf: (1, 1) ... (0, 0)
+    np.testing.assert_array_equal(ts, np.append(np.unique(probability), np.inf))
     assert (fpr[0], tpr[0], fpr[-1], tpr[-1]) == (1, 1, 0, 0)
     assert np.all(np.diff(fpr) <= 0) and np.all(np.diff(tpr) <= 0)
     with pytest.raises(ValueError):
@@ -121,7 +123,7 @@ def test_probability_maps_side_by_side_each_with_its_own_threshold(grid, probabi
     fig = pc.probability_maps(maps, valid, grid, {"paper": 0.3, "strong": 0.6})
     axes = [ax for ax in fig.axes if ax.images and ax.get_label() != "<colorbar>"]
     assert [ax.get_title() for ax in axes] == ["paper: P(valid), threshold 0.30", "strong: P(valid), threshold 0.60"]
-    for ax, (name, p), t in zip(axes, maps.items(), (0.3, 0.6)):
+    for ax, p, t in zip(axes, maps.values(), (0.3, 0.6)):
         np.testing.assert_array_equal(ax.images[0].get_array(), p.T)
         assert scatter_points(ax, "invalid kept (dangerous)") == cell_centres(grid, (p >= t) & ~valid)
 

@@ -15,12 +15,13 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 from toolkit import scenarios
 from toolkit.geometry import robots
 from toolkit.geometry.collision import (
+    CollisionChecker,
     ExactChecker,
     PointRobotChecker,
     SeparatingAxisChecker,
 )
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots import cspace
+from toolkit.plots import boxes, cspace
 
 
 @pytest.fixture
@@ -58,7 +59,42 @@ class RecordedPolys(Poly3DCollection):
 @pytest.fixture
 def recorded_polys(monkeypatch):
     """The 3D boxes the figures draw, recorded with their faces."""
-    monkeypatch.setattr(cspace, "Poly3DCollection", RecordedPolys)
+    monkeypatch.setattr(boxes, "Poly3DCollection", RecordedPolys)
+
+
+# -- boxes ------------------------------------------------------------------------------
+
+
+def test_corner_k_lies_on_the_plus_side_of_axis_a_where_bit_d_minus_1_minus_a_of_k_is_set():
+    signs = boxes.corner_signs(3)  # (8, 3)
+    for k, corner in enumerate(signs):
+        np.testing.assert_array_equal(corner, [1.0 if k >> (2 - a) & 1 else -1.0 for a in range(3)])
+
+
+def test_the_faces_are_the_six_sides_of_a_box_each_once_its_corners_in_order_around_it():
+    signs = boxes.corner_signs(3)  # (8, 3)
+    sides = set()
+    for face in boxes.FACES:  # (4,) corner indices
+        corners = signs[face]  # (4, 3)
+        (axis,) = np.flatnonzero(np.ptp(corners, axis=0) == 0)  # the one axis the face does not span
+        sides.add((int(axis), float(corners[0, axis])))
+        around = np.abs(corners - np.roll(corners, 1, axis=0)).sum(axis=1)  # (4,) to the previous corner
+        np.testing.assert_array_equal(around, 2.0)  # one edge of the box each, never a diagonal
+    assert sides == {(a, s) for a in range(3) for s in (-1.0, 1.0)}
+
+
+def test_the_shadow_of_a_box_turned_about_z_is_its_turned_rectangle_in_order_around_it():
+    c, s = np.cos(0.3), np.sin(0.3)
+    turn = np.array([[c, -s, 0.0], [s, c, 0.0], [0.0, 0.0, 1.0]])
+    corners = boxes.box_corners(np.array([5.0, 2.0, 1.0]), turn, np.array([2.0, 1.0, 0.5]))  # (8, 3)
+    np.testing.assert_allclose(corners.mean(axis=0), [5.0, 2.0, 1.0])
+    np.testing.assert_allclose(np.linalg.norm(corners - [5.0, 2.0, 1.0], axis=1), np.sqrt(4 + 1 + 0.25))
+    shadow = boxes.outline(corners, (0, 1))  # (4, 2): top and bottom faces fall on each other
+    expected = boxes.box_corners(np.array([5.0, 2.0]), turn[:2, :2], np.array([2.0, 1.0]))  # (4, 2)
+    assert sorted(map(tuple, shadow.round(9))) == sorted(map(tuple, expected.round(9)))
+    sides = np.linalg.norm(shadow - np.roll(shadow, 1, axis=0), axis=1)  # (4,)
+    np.testing.assert_allclose(np.sort(sides), [2.0, 2.0, 4.0, 4.0])  # the rectangle's sides: no diagonal
+    np.testing.assert_allclose(boxes.aabb_corners(np.zeros(2), np.array([2.0, 1.0])), [[0, 0], [0, 1], [2, 0], [2, 1]])
 
 
 # -- workspaces and grids -------------------------------------------------------------
@@ -226,6 +262,15 @@ def test_cspace_slice_equals_the_separating_axis_reference(clutter):
     np.testing.assert_allclose(np.ravel(star.get_data()), q[[5, 6]])
     assert star.get_color() == cspace.VALID_COLOR
     assert len(_patches(fig.axes[1], "link")) == robot.n_links
+
+
+def test_a_checker_that_knows_no_workspace_is_a_clear_error():
+    class Blind(CollisionChecker):
+        def _are_valid(self, Q):
+            return np.ones(len(Q), dtype=bool)
+
+    with pytest.raises(TypeError, match="a Blind knows none"):
+        cspace.cspace_image(Blind(robots.point_robot()), resolution=4)
 
 
 def test_configuration_near_blocks_is_the_valid_sample_closest_to_a_block(clutter):

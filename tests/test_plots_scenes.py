@@ -132,12 +132,11 @@ def test_only_the_given_series_get_panels(crossing):
 
 @pytest.mark.parametrize("series", [{}, {"clearance": np.ones(FRAMES), "probability": np.ones(FRAMES)}])
 def test_the_dof_legend_lies_inside_the_figure_below_the_title(crossing, series):
-    robot, workspace, _, path, _ = crossing
+    robot, _, _, path, _ = crossing
     fig = scenes.path_frame(robot, path, 0, **series)
     renderer = FigureCanvasAgg(fig).get_renderer()
-    title = next(t for t in fig.texts if t.get_text() == fig.get_suptitle()).get_window_extent(
-        renderer
-    )  # suptitle's Text
+    suptitle = next(t for t in fig.texts if t.get_text() == fig.get_suptitle())
+    title = suptitle.get_window_extent(renderer)
     legend = fig.legends[0].get_window_extent(renderer)
     figure = fig.bbox
     assert figure.x0 <= legend.x0 and legend.x1 <= figure.x1 and figure.y0 <= legend.y0 and legend.y1 <= figure.y1
@@ -148,7 +147,7 @@ def test_the_dof_legend_lies_inside_the_figure_below_the_title(crossing, series)
 
 
 def test_bad_input(crossing):
-    robot, workspace, _, path, _ = crossing
+    robot, _, _, path, _ = crossing
     with pytest.raises(ValueError, match="index"):
         scenes.path_frame(robot, path, FRAMES)
     with pytest.raises(ValueError, match="one value per configuration"):

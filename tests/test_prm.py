@@ -17,6 +17,7 @@ from toolkit.planning.local_planner import (
     certify_edges,
     check_edges,
     invalid_fractions,
+    path_at,
     path_is_valid,
     path_points,
     refute_at,
@@ -255,7 +256,7 @@ def test_plan_runs_the_papers_planner_with_paper_baseline_and_the_lazy_one_witho
     assert np.isfinite(paper.roadmap.edge_checked_at).all()  # every edge checked exactly ...
     assert np.isinf(lazy.roadmap.edge_checked_at).any()  # ... against edges never confirmed
     assert paper.stats["exact_checks"] > 5 * lazy.stats["exact_checks"]
-    with pytest.raises(ValueError, match="LazyPRM runs planner 'lazy', but options.planner is 'paper'"):
+    with pytest.raises(ValueError, match=r"LazyPRM runs planner 'lazy', but options\.planner is 'paper'"):
         LazyPRM(exact, options=PRMOptions(**PAPER))
     assert PRM(exact).options.planner == "paper" and LazyPRM(exact).options.planner == "lazy"
 
@@ -358,7 +359,7 @@ def traced_2ds_queries(flip, n_queries=6):
 
 
 def test_trace_follows_algorithm_1_and_ends_with_the_returned_path():
-    for q, exact, result, trace in traced_2ds_queries(flip=0.0):
+    for _, _, result, trace in traced_2ds_queries(flip=0.0):
         stages = [step.stage for step in trace]
         assert set(stages) <= set(prm.STAGES)
         assert stages[:3] == ["sample", "connect", "candidate"] and stages[-1] == "path"
@@ -393,7 +394,7 @@ def test_tracing_changes_nothing_but_records():
 
 def test_traced_repairs_remove_what_the_exact_checker_rejects_from_the_candidate_path():
     repairs = 0
-    for q, exact, result, trace in traced_2ds_queries(flip=0.3):
+    for _, exact, result, trace in traced_2ds_queries(flip=0.3):
         assert result.success
         assert sum(step.stage == "repair" for step in trace) == result.stats["repairs"]
         for step, after in zip(trace[:-1], trace[1:]):
@@ -419,7 +420,7 @@ def test_bad_input_gives_clear_errors():
     q = make_queries(scenario, seed=0, n_workspaces=1, per_workspace=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
     blocked = q.workspace.boxes[0].mean(axis=0)  # the centre of an obstacle
-    with pytest.raises(ValueError, match="start configuration .* in collision"):
+    with pytest.raises(ValueError, match=r"start configuration .* in collision"):
         plan(exact, blocked, q.goal, rng=np.random.default_rng(0))
     with pytest.raises(ValueError, match="goal must have shape \\(2,\\)"):
         plan(exact, q.start, np.zeros(3), rng=np.random.default_rng(0))
@@ -485,6 +486,26 @@ def test_path_points_walk_the_path_at_the_resolution_and_decide_as_path_is_valid
             assert np.all(robot.motion_bound(points[:-1], points[1:]) <= 0.05 + 1e-9)
             assert exact.are_valid(points).all() == path_is_valid(exact, route, 0.05)
     assert len(path_points(robot, q.start[None], 0.05)) == 1  # a one-configuration path is itself
+
+
+def test_path_at_moves_at_constant_speed_along_the_path_and_wraps_angles():
+    robot = scenarios.get("3do").robot  # the youBot: its base angle wraps around
+    path = np.stack([robot.lower + 0.1, (robot.lower + robot.upper) / 2, robot.upper - 0.1])  # (3, dof)
+    path[:, 2] = [3.0, -3.0, -2.0]  # the base turns the short way round, through pi
+    lengths = robot.distance(path[:-1], path[1:])  # (2,)
+    assert lengths[0] < lengths[1]
+    np.testing.assert_allclose(
+        path_at(robot, path, [-1.0, 0.0, lengths[0] / lengths.sum(), 1.0, 2.0]), path[[0, 0, 1, 2, 2]]
+    )
+    t = np.linspace(0.0, 1.0, 101)
+    Q = path_at(robot, path, t)  # (101, dof)
+    steps = robot.distance(Q[:-1], Q[1:])  # (100,)
+    corner = np.searchsorted(t, lengths[0] / lengths.sum()) - 1  # the step that cuts the corner at path[1]
+    np.testing.assert_allclose(np.delete(steps, corner), lengths.sum() / 100)  # equal steps along each segment
+    assert steps[corner] < lengths.sum() / 100
+    assert np.all(np.abs(Q[:, 2]) <= np.pi)  # the angle stays wrapped
+    with pytest.raises(ValueError, match="two configurations or more, got 1"):
+        path_at(robot, path[:1], [0.5])
 
 
 class RecordingChecker(CollisionChecker):
@@ -604,7 +625,7 @@ def test_screened_edges_are_refuted_where_screening_saw_them_fail_and_only_when_
 
 
 def test_refute_at_checks_one_interior_grid_point():
-    scenario, exact, Q0, Q1 = segments_near_obstacles("3dc9", 60, 0.1, seed=3)
+    _, exact, Q0, Q1 = segments_near_obstacles("3dc9", 60, 0.1, seed=3)
     fractions, suspects = invalid_fractions(exact, Q0, Q1, 0.05)
     assert np.isfinite(suspects).any() and np.isnan(suspects).any()
     exact.reset_count()

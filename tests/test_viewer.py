@@ -1,9 +1,7 @@
-"""The viewer's scene and GUI, driven from Python: nodes per scenario, sliders, colors, plans, events, ports,
-embedding."""
+"""The viewer's scene and GUI, driven from Python: nodes per scenario, sliders, colors, plans, events, ports.
+Embedded pages are tested in test_viewer_embed.py."""
 
 import ast
-import base64
-import html
 import re
 import signal
 import socket
@@ -14,10 +12,8 @@ import urllib.request
 from pathlib import Path
 from typing import ClassVar
 
-import msgspec
 import numpy as np
 import pytest
-import zstandard
 from matplotlib import image as mpimg
 
 from toolkit import scenarios, viewer
@@ -135,6 +131,15 @@ def test_workspace_controls_rebuild_the_scene(make_panel):
     assert len(v.nodes["obstacles"].batched_positions) == len(v.workspace.boxes)
 
 
+def test_move_boxes_moves_only_a_node_of_boxes(make_viewer):
+    v = make_viewer("2ds")
+    boxes = draw.robot_boxes(v.robot, v.robot.upper[None] - 1.0)
+    draw.move_boxes(v.nodes["robot"], boxes, draw.COLLIDING)
+    np.testing.assert_allclose(v.nodes["robot"].batched_positions, boxes.centers, atol=1e-5)
+    with pytest.raises(TypeError, match="a node made by add_boxes, got a LabelHandle"):
+        draw.move_boxes(v.server.scene.add_label("/label", "not boxes"), boxes, draw.COLLIDING)
+
+
 def test_samples_are_colored_by_the_exact_checker(make_viewer, rng):
     v = make_viewer("2ds")
     Q = v.robot.sample(rng, 300)
@@ -175,6 +180,13 @@ def test_a_model_of_another_robot_is_not_used(make_panel):
     panel = make_panel("3dc9", predictor=lambda ws: Flipped(ws, scenarios.get("3dc7").robot))
     v = panel.viewer
     assert v.model is None and "chain7" in v.model_error and "model not used" in panel.status.content
+
+
+def test_a_model_that_gives_no_probability_is_not_used(make_panel):
+    panel = make_panel("2ds", predictor=lambda ws: exact_checker(ws, scenarios.get("2ds").robot))
+    v = panel.viewer
+    assert v.model is None and "PointRobotChecker gives no probability(Q)" in v.model_error
+    assert v.probability is None and "model not used" in panel.status.content
 
 
 def test_a_trained_checkpoint_colors_the_robot_and_samples(make_viewer, checkpoint_2ds, rng):
@@ -379,23 +391,6 @@ def test_busy_port_moves_on_and_stop_frees_it(capsys):
     v.stop()  # twice is harmless
     with socket.socket() as again:
         again.bind(("127.0.0.1", v.port))  # free after stop()
-
-
-def embedded_messages(snippet: str) -> list[dict]:
-    """The scene messages inside an embedded viewer's HTML (viser's .viser recording, base64 in the page)."""
-    document = html.unescape(re.search(r'srcdoc="([^"]*)"', snippet).group(1))
-    data = base64.b64decode(re.search(r'__VISER_EMBED_DATA__="([^"]+)"', document).group(1))
-    inner = zstandard.ZstdDecompressor().decompress(data[8:], max_output_size=int.from_bytes(data[:8], "little"))
-    size = int.from_bytes(inner[:8], "little")
-    return [message for _, message in msgspec.msgpack.decode(inner[8 : 8 + size])["messages"]]
-
-
-def test_embed_is_a_static_snapshot_of_the_scene(rng):
-    robot = scenarios.get("3dc7").robot
-    snippet = viewer.embed("3dc7", seed=2, samples=robot.sample(rng, 40), height=320)
-    assert snippet.startswith("<div><iframe") and 'height="320"' in snippet
-    names = {message.get("name") for message in embedded_messages(snippet)}
-    assert {"/workspace/obstacles", "/robot/links", "/samples"} <= names
 
 
 def test_color_share_reads_pixels(tmp_path):

@@ -1,4 +1,4 @@
-"""Embedded viewer pages for notebooks: a recorded animation of the robot along a planned path.
+"""Embedded viewer pages for notebooks: a snapshot of the scene, a recorded animation of the robot along a path.
 
 The recording is decoded here as viser's player reads it (a zstd frame of msgpack
 messages with binary arrays appended), so the tests see the frames a student sees.
@@ -14,13 +14,25 @@ import pytest
 import zstandard
 from IPython.display import HTML
 
-from toolkit import viewer
+from toolkit import scenarios, viewer
 from toolkit.viewer import drawing as draw
+
+
+def found(pattern: str, text: str) -> str:
+    """The first group of ``pattern``'s first match in ``text`` (failing the test where there is none)."""
+    match = re.search(pattern, text)
+    assert match is not None, f"no {pattern!r} in the page"
+    return match.group(1)
+
+
+def page_of(snippet: str) -> str:
+    """The document an ``<iframe srcdoc=...>`` snippet carries."""
+    return html.unescape(found(r'srcdoc="([^"]*)"', snippet))
 
 
 def recording(document: str) -> tuple[dict, list[bytes]]:
     """The ``.viser`` recording inside a self-contained page: its msgpack record and its binary buffers."""
-    data = base64.b64decode(re.search(r'__VISER_EMBED_DATA__="([^"]+)"', document).group(1))
+    data = base64.b64decode(found(r'__VISER_EMBED_DATA__="([^"]+)"', document))
     inner = zstandard.ZstdDecompressor().decompress(data[8:], max_output_size=int.from_bytes(data[:8], "little"))
     size = int.from_bytes(inner[:8], "little")
     record = msgspec.msgpack.decode(inner[8 : 8 + size])
@@ -109,11 +121,18 @@ def test_the_animation_leaves_the_robot_and_the_camera_where_they_were(planned):
     np.testing.assert_allclose(v.server.initial_camera.position, camera[1])
 
 
+def test_embed_is_a_static_snapshot_of_the_scene(rng):
+    robot = scenarios.get("3dc7").robot
+    snippet = viewer.embed("3dc7", seed=2, samples=robot.sample(rng, 40), height=320)
+    assert snippet.startswith("<div><iframe") and 'height="320"' in snippet
+    names = {message.get("name") for _, message in recording(page_of(snippet))[0]["messages"]}
+    assert {"/workspace/obstacles", "/robot/links", "/samples"} <= names
+
+
 def test_animation_iframe_embeds_the_page_escaped(planned):
     snippet = planned.animation_iframe(300, frames=3, seconds=1.0)
     assert snippet.startswith("<div><iframe srcdoc=") and 'height="300"' in snippet
-    document = html.unescape(re.search(r'srcdoc="([^"]*)"', snippet).group(1))
-    assert len(robot_poses(document)) == 3
+    assert len(robot_poses(page_of(snippet))) == 3
 
 
 def test_srcdoc_iframe_quotes_the_document_and_shows_without_a_warning(recwarn):

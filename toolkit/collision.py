@@ -1,5 +1,5 @@
-"""``toolkit.collision``: the checker interface and the exact checkers, kept at this name for code written against it; the code is in
-:mod:`toolkit.geometry.collision`."""
+"""``toolkit.collision``: the checker interface and the exact checkers, kept at this name for code
+written against it; the code is in :mod:`toolkit.geometry.collision`."""
 
 from toolkit.geometry.collision import (
     CollisionChecker,

@@ -1,5 +1,5 @@
-"""``toolkit.queries``: the paper"s query sets and runs over them, kept at this name for code written against it; the code is in
-:mod:`toolkit.planning.queries`."""
+"""``toolkit.queries``: the paper's query sets and runs over them, kept at this name for code
+written against it; the code is in :mod:`toolkit.planning.queries`."""
 
 from toolkit.planning.queries import (
     Query,

@@ -1,5 +1,5 @@
-"""``toolkit.workspace``: workspaces, their occupancy grids and generators, kept at this name for code written against it; the code is in
-:mod:`toolkit.geometry.workspace`."""
+"""``toolkit.workspace``: workspaces, their occupancy grids and generators, kept at this name for
+code written against it; the code is in :mod:`toolkit.geometry.workspace`."""
 
 from toolkit.geometry.workspace import (
     GENERATORS,

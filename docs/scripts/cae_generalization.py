@@ -1,4 +1,5 @@
-"""The CAE's reconstruction accuracy on seen and unseen workspaces, by training data and loss reading (docs/fidelity.md §2-3).
+"""The CAE's reconstruction accuracy on seen and unseen workspaces, by training data and loss
+reading (docs/fidelity.md §2-3).
 
     python docs/scripts/cae_generalization.py SCENARIO CONFIGS [LR STEPS [BATCH]]
 

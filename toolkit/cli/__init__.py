@@ -1,13 +1,14 @@
 """The ``toolkit`` command (also ``python -m toolkit``): one sub-command per job.
 
-Reading order: :mod:`toolkit.cli.parser` (the arguments, checked, with choices read from
-the registries), :mod:`toolkit.cli.commands` (each sub-command: a run configuration,
-then one library call), and :func:`main` here, which imports the modules named by
-``--import`` first (so that what they register is offered), runs the command on
-:func:`toolkit.util.threads.configured` threads and turns errors and signals into exit
-codes: a clear message and 2 for bad input; Ctrl-C or SIGTERM stops a command within
-seconds, says what it kept and exits with 128 + the signal's number (130, 143), as
-shells expect.
+Reading order: :mod:`toolkit.cli.arguments` (the checked argument types, the choices read
+from the registries, the options several sub-commands share), :mod:`toolkit.cli.parser`
+(each sub-command's options and help text), :mod:`toolkit.cli.commands` (each
+sub-command: a run configuration, then one library call), and :func:`main` here, which
+imports the modules named by ``--import`` first (so that what they register is
+offered), runs the command on :func:`toolkit.util.threads.configured` threads and turns
+errors and signals into exit codes: a clear message and 2 for bad input; Ctrl-C or
+SIGTERM stops a command within seconds, says what it kept and exits with 128 + the
+signal's number (130, 143), as shells expect.
 """
 
 from __future__ import annotations
@@ -17,10 +18,13 @@ import signal
 import sys
 from collections.abc import Iterator
 from contextlib import contextmanager
+from types import FrameType
 
-from toolkit.cli import parser as arguments
+from toolkit.cli import arguments, parser
 from toolkit.cli.commands import COMMANDS, KEPT
 from toolkit.util import plugins, threads
+
+SIGNALS = (signal.SIGINT, signal.SIGTERM)  # what stops a command
 
 
 class Interrupted(KeyboardInterrupt):
@@ -35,15 +39,13 @@ class Interrupted(KeyboardInterrupt):
 def signals_interrupt() -> Iterator[None]:
     """SIGINT and SIGTERM raise :class:`Interrupted` inside, once: a second signal while the command stops ends
     it at once (planning processes notice within a second that it is gone, and end too)."""
-    handlers = {}
 
-    def interrupt(signum, frame):
-        for sig in handlers:
+    def interrupt(signum: int, frame: FrameType | None) -> None:
+        for sig in SIGNALS:
             signal.signal(sig, signal.SIG_DFL)
         raise Interrupted(signum)
 
-    for sig in (signal.SIGINT, signal.SIGTERM):
-        handlers[sig] = signal.signal(sig, interrupt)
+    handlers = {sig: signal.signal(sig, interrupt) for sig in SIGNALS}
     try:
         yield
     finally:
@@ -53,7 +55,7 @@ def signals_interrupt() -> Iterator[None]:
 
 def build_parser() -> argparse.ArgumentParser:
     """The ``toolkit`` parser, offering what the registries hold now."""
-    return arguments.build_parser(COMMANDS)
+    return parser.build_parser(COMMANDS)
 
 
 def main(argv: list[str] | None = None) -> int:

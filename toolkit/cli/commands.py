@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import argparse
 import json
+from collections.abc import Callable
 from pathlib import Path
 
 from toolkit import scenarios
@@ -195,7 +196,7 @@ def cmd_grade(args: argparse.Namespace) -> int:
     return 0
 
 
-COMMANDS = {
+COMMANDS: dict[str, Callable[[argparse.Namespace], int]] = {
     "reproduce": cmd_reproduce,
     "ablate": cmd_ablate,
     "tune": cmd_tune,
@@ -232,7 +233,7 @@ def _rows_kept(args: argparse.Namespace) -> str:
     return f"kept the finished rows in {args.out}/cache; run the same command again to go on from there"
 
 
-KEPT = {
+KEPT: dict[str, Callable[[argparse.Namespace], str]] = {
     "bench": lambda args: "bench writes nothing; nothing is lost",
     "plan": lambda args: "plan writes nothing; nothing is lost",
     "train": lambda args: (

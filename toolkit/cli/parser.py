@@ -1,160 +1,33 @@
-"""The ``toolkit`` command's arguments: one function per sub-command, choices read from the registries.
+"""The ``toolkit`` command's parser: each sub-command's options, its help text and examples.
 
-Scenarios, samplers and presets are offered as the registries hold them when the
-parser is built (``scenarios.register``, ``sampling.register_sampler``,
-``presets.register``), so one registered by a module of yours (``--import MODULE``,
-imported first) is offered, listed in ``--help`` and checked like the toolkit's own.
-Every number is checked by the parser, which names the flag in its error.
+One function per sub-command adds its options (``reproduce_options``, ``bench_options``,
+...), built from the checked types and shared options of :mod:`toolkit.cli.arguments`,
+so choices are read from the registries when the parser is built. :data:`SUBCOMMANDS`
+holds what ``toolkit COMMAND --help`` says about each one, and :func:`build_parser`
+joins them under ``toolkit``, whose ``--help`` lists the commands, scenarios, samplers
+and presets.
 """
 
 from __future__ import annotations
 
 import argparse
-import json
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 
-from toolkit import scenarios
+from toolkit.cli.arguments import (
+    SCENARIO_HELP,
+    glossary,
+    help_formatter,
+    imports_parent,
+    int_in,
+    planner_option,
+    preset,
+    sampler_list,
+    sampler_names,
+    scenario,
+    seed,
+    study,
+)
 from toolkit.experiments import paper_numbers
-from toolkit.learning import presets
-from toolkit.planning import sampling
-
-SEEDS = 2**32  # seeds are 0 .. 2**32 - 1
-PRESET_WORDS = {
-    "paper": "the paper's networks and training settings",
-    "strong": "ours: the MLP also sees the occupancy around the robot and where its links are; far more accurate "
-    "(docs/results.md)",
-}
-
-
-# -- argument types: each names the rule it checks; argparse adds the flag ----------------------
-
-
-def int_in(low: int, high: int | None = None) -> Callable[[str], int]:
-    """An argparse type: a whole number in ``low .. high`` (no upper limit when ``high`` is None)."""
-    allowed = f"{low}..{high}" if high is not None else f"{low} or more"
-
-    def parse(text: str) -> int:
-        try:
-            value = int(text)
-        except ValueError:
-            raise argparse.ArgumentTypeError(f"must be a whole number, {allowed}; got {text!r}") from None
-        if value < low or (high is not None and value > high):
-            raise argparse.ArgumentTypeError(f"must be {allowed}, got {value}")
-        return value
-
-    parse.__name__ = "number"  # argparse names the type in some messages
-    return parse
-
-
-def sampler_list(text: str) -> tuple[str, ...]:
-    """An argparse type: comma-separated names of registered samplers."""
-    try:
-        return sampling.check_names(text.split(","))
-    except ValueError as err:
-        raise argparse.ArgumentTypeError(str(err)) from None
-
-
-def planner_option(text: str) -> tuple[str, object]:
-    """An argparse type: ``NAME=VALUE``, the value read as JSON (``rebridge=0``, ``screen_edges=false``)."""
-    name, sep, value = text.partition("=")
-    if not sep or not name:
-        raise argparse.ArgumentTypeError(f"expected NAME=VALUE, got {text!r}")
-    try:
-        return name, json.loads(value)
-    except json.JSONDecodeError:
-        return name, value  # a string, e.g. auxiliary=exact
-
-
-# -- what the registries hold -------------------------------------------------------------------
-
-
-def scenario_names() -> list[str]:
-    return sorted(scenarios.SCENARIOS)
-
-
-def sampler_names() -> list[str]:
-    """The paper's four first, then registered ones, in the order they were registered."""
-    return list(sampling.SAMPLERS)
-
-
-def glossary() -> str:
-    """The scenarios, samplers and presets in words, for ``toolkit --help``."""
-
-    def first_line(text: str | None) -> str:
-        return (text or "").strip().splitlines()[0] if (text or "").strip() else "(registered)"
-
-    return "\n".join(
-        ["scenarios (--scenario):"]
-        + [f"  {s.name:6}{s.title}" for s in scenarios.SCENARIOS.values()]
-        + ["", "samplers (--sampler, --samplers), how PRM draws its nodes:"]
-        + [f"  {name:6}{cls.summary or first_line(cls.__doc__)}" for name, cls in sampling.SAMPLERS.items()]
-        + ["", "presets (--preset):"]
-        + [f"  {name:8}{PRESET_WORDS.get(name, 'registered (--import)')}" for name in presets.PRESETS]
-        + [
-            "",
-            "your own sampler, preset or scenario: --import MODULE (a module that registers it), on any command.",
-            "",
-            "threads: torch and numpy use one thread, fastest when other programs share the machine;",
-            "TOOLKIT_THREADS=N uses N (0: one per core). See toolkit/util/threads.py.",
-        ]
-    )
-
-
-# -- building blocks ----------------------------------------------------------------------------
-
-SCENARIO_HELP = "one of the scenarios named in `toolkit --help`"
-
-
-def _formatter(prog: str) -> argparse.HelpFormatter:
-    """Help as written (line breaks kept in descriptions and examples), options in a wide first column."""
-    return argparse.RawDescriptionHelpFormatter(prog, max_help_position=28)
-
-
-def imports_parent() -> argparse.ArgumentParser:
-    """The ``--import`` option every sub-command takes (``main`` reads it before the parser is built)."""
-    parent = argparse.ArgumentParser(add_help=False)
-    parent.add_argument(
-        "--import",
-        dest="imports",
-        action="append",
-        default=[],
-        metavar="MODULE",
-        help="import MODULE (a module name or a .py file) first: what it registers (a sampler, "
-        "preset or scenario) is offered like the toolkit's own; repeat for several",
-    )
-    return parent
-
-
-def seed(parser: argparse.ArgumentParser, what: str) -> None:
-    parser.add_argument(
-        "--seed",
-        type=int_in(0, SEEDS - 1),
-        default=0,
-        metavar="N",
-        help=f"random seed, 0..{SEEDS - 1} (default 0): {what}",
-    )
-
-
-def scenario(parser: argparse.ArgumentParser, *, extra: list[str] = (), **kwargs) -> None:
-    parser.add_argument("--scenario", choices=scenario_names() + list(extra), **kwargs)
-
-
-def preset(parser: argparse.ArgumentParser, help: str) -> None:
-    parser.add_argument("--preset", choices=list(presets.PRESETS), default="paper", help=help)
-
-
-def study(parser: argparse.ArgumentParser, quick_help: str, what: str) -> None:
-    """The options `ablate` and `tune` share: a scenario, a seed, --quick and a resumable --out folder."""
-    scenario(parser, required=True, help=SCENARIO_HELP)
-    seed(parser, "workspaces, samples and initial weights")
-    parser.add_argument("--quick", action="store_true", help=quick_help)
-    parser.add_argument(
-        "--out",
-        required=True,
-        metavar="DIR",
-        help=f"folder for the tables, new or empty, or holding this same {what} to resume it",
-    )
-
 
 # -- the sub-commands' own options ----------------------------------------------------------------
 
@@ -249,6 +122,9 @@ def plan_options(cmd: argparse.ArgumentParser) -> None:
 
 
 def bench_options(cmd: argparse.ArgumentParser) -> None:
+    """The two checkers' speed (a scenario, a seed, the sizes), then the options of ``--checkpoint``
+    (:func:`bench_planning_options`) and ``--vs-ompl`` (:func:`bench_versus_ompl_options`), and ``--option``, a
+    planner setting for ``--checkpoint``'s runs, last, as ``toolkit bench --help`` lists them."""
     scenario(cmd, required=True, help=SCENARIO_HELP)
     seed(cmd, "the workspace and the configurations timed")
     cmd.add_argument("--json", action="store_true", help="print one JSON object instead of lines")
@@ -260,6 +136,21 @@ def bench_options(cmd: argparse.ArgumentParser) -> None:
         help="configurations per call for both checkers, 1..1000000 (default: 20,000 exact, "
         "10,000 learned; a sampler asks for 200-2,000)",
     )
+    bench_planning_options(cmd)
+    bench_versus_ompl_options(cmd)
+    cmd.add_argument(
+        "--option",
+        type=planner_option,
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="with --checkpoint: a planner setting (a PRMOptions field in toolkit/planning/options.py) "
+        "for both runs, e.g. rebridge=0; repeat for several",
+    )
+
+
+def bench_planning_options(cmd: argparse.ArgumentParser) -> None:
+    """`bench --checkpoint`: the trained model, and the queries planned with and without it."""
     cmd.add_argument(
         "--checkpoint",
         metavar="DIR",
@@ -287,6 +178,10 @@ def bench_options(cmd: argparse.ArgumentParser) -> None:
         metavar="LIST",
         help="with --checkpoint: comma-separated samplers to plan with, e.g. BT,OB (default: the paper's four)",
     )
+
+
+def bench_versus_ompl_options(cmd: argparse.ArgumentParser) -> None:
+    """`bench --vs-ompl`: the race against OMPL's planners, and its queries and time limit."""
     cmd.add_argument(
         "--vs-ompl",
         action="store_true",
@@ -309,15 +204,6 @@ def bench_options(cmd: argparse.ArgumentParser) -> None:
         default=30.0,
         metavar="S",
         help="with --vs-ompl: OMPL's time limit per query (default 30)",
-    )
-    cmd.add_argument(
-        "--option",
-        type=planner_option,
-        action="append",
-        default=[],
-        metavar="NAME=VALUE",
-        help="with --checkpoint: a planner setting (a PRMOptions field in toolkit/planning/options.py) "
-        "for both runs, e.g. rebridge=0; repeat for several",
     )
 
 
@@ -464,12 +350,12 @@ SUBCOMMANDS: list[tuple[str, str, str, list[str], Callable[[argparse.ArgumentPar
 ]
 
 
-def build_parser(commands: dict[str, Callable[[argparse.Namespace], int]]) -> argparse.ArgumentParser:
+def build_parser(commands: Mapping[str, Callable[[argparse.Namespace], int]]) -> argparse.ArgumentParser:
     """The whole parser; ``commands`` maps each sub-command's name to the function that runs it."""
     parent = imports_parent()
     parser = argparse.ArgumentParser(
         prog="toolkit",
-        formatter_class=_formatter,
+        formatter_class=help_formatter,
         parents=[parent],
         epilog="examples:\n"
         "  toolkit reproduce --scenario 2ds --quick --out results/2ds-quick\n"
@@ -485,7 +371,7 @@ def build_parser(commands: dict[str, Callable[[argparse.Namespace], int]]) -> ar
             name,
             description=f"{summary[0].upper()}{summary[1:]}.\n\n{description}",
             epilog="examples:\n" + "\n".join(f"  {line}" for line in examples),
-            formatter_class=_formatter,
+            formatter_class=help_formatter,
             parents=[parent],
         )
         add_options(cmd)
@@ -500,10 +386,3 @@ def build_parser(commands: dict[str, Callable[[argparse.Namespace], int]]) -> ar
         + glossary()
     )
     return parser
-
-
-def imports_in(argv: list[str]) -> list[str]:
-    """The ``--import MODULE`` values anywhere in ``argv`` (read before the parser, whose choices they change)."""
-    pre = argparse.ArgumentParser(add_help=False)
-    pre.add_argument("--import", dest="imports", action="append", default=[])
-    return pre.parse_known_args(argv)[0].imports

@@ -7,7 +7,8 @@
 2. models: the CAE and MLP (:func:`toolkit.experiments.pipeline.train`), a checkpoint folder;
 3. learning: Table 1 and Table 2 measures, and P(valid) on the unseen test set;
 4. planning: every sampler, without and with prediction in turns query by query, on the paper's queries
-   (:mod:`toolkit.planning.queries`), the samplers spread over one process per core (:mod:`toolkit.experiments.workers`);
+   (:mod:`toolkit.planning.queries`), the samplers spread over one process per core
+   (:mod:`toolkit.experiments.workers`);
 5. throughput: exact and learned checker speed (:mod:`toolkit.experiments.bench`);
 
 and writes ``out/results.json`` (the contract's keys), ``out/tables.md`` (our value
@@ -22,6 +23,7 @@ from __future__ import annotations
 
 import os
 import time
+from collections.abc import Callable, Iterable
 from concurrent.futures import as_completed
 from functools import partial
 from pathlib import Path
@@ -36,6 +38,8 @@ from toolkit.experiments.config import RunConfig
 from toolkit.experiments.stages import Stages, check_out
 from toolkit.experiments.tables import MODES
 from toolkit.experiments.workers import processes
+from toolkit.geometry.collision import CollisionChecker
+from toolkit.geometry.workspace import Workspace
 from toolkit.learning import checkpoints, training
 from toolkit.learning.data import SPLITS, CollisionDataset
 from toolkit.learning.learned import LearnedChecker
@@ -119,6 +123,7 @@ def planning_stage(stages: Stages, config: RunConfig, models: training.TrainedMo
         tqdm(total=len(todo), desc=f"planning {config.scenario.name}", disable=not stages.progress, leave=False) as bar,
         processes(min(workers, len(todo))) as pool,
     ):
+        runs: Iterable[tuple[str, dict, float]]
         if pool is None:
             runs = map(job, todo)  # one after another, in this process
         else:  # as each finishes
@@ -141,7 +146,10 @@ def plan_sampler(config: RunConfig, checkpoint: str, planner: dict, sampler: str
     query_set = queries.make_queries(scenario, config.seed, *config.query_counts())
     options = queries.default_options(scenario, None, **planner, **config.planner_settings())
     models = checkpoints.load_models(checkpoint, scenario.name)
-    factories = {"without": None, "with": partial(LearnedChecker, models=models)}
+    factories: dict[str, Callable[[Workspace], CollisionChecker] | None] = {
+        "without": None,
+        "with": partial(LearnedChecker, models=models),
+    }
     runs = queries.run_interleaved(scenario, query_set, sampler, factories, options, config.seed)
     return sampler, {mode: runs[mode][1] for mode in MODES}, time.perf_counter() - began
 

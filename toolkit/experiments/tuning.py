@@ -3,7 +3,7 @@
 §IV-B3 gives the networks' sizes, the MLP's optimizer, learning rate and dropout, and
 the CAE's lambda, but not how long either network trains, the MLP's batch, its
 initialization, or whether its inputs are scaled. Choosing those by their score on
-Table 2's unseen workspaces would fit the test; ``tune(scenario, out)`` chooses them
+Table 2's unseen workspaces would fit the test; ``tune(config, out)`` chooses them
 as a careful reproduction must, on workspaces the models do not train on but that come
 from the training set:
 
@@ -30,7 +30,8 @@ from __future__ import annotations
 
 import itertools
 import time
-from dataclasses import replace
+from dataclasses import dataclass, replace
+from functools import partial
 from pathlib import Path
 
 import numpy as np
@@ -55,64 +56,26 @@ MLP_GRID: dict[str, tuple] = {
 def tune(config: RunConfig, out: str | Path) -> dict:
     """Validate the ``paper`` preset's unstated settings for the configuration's scenario and seed (each candidate is
     a variant of the paper preset, whatever ``config.preset``); writes ``tuning.json`` and ``tuning.md``."""
-    scenario, seed, quick, progress = config.scenario, config.seed, config.quick, config.progress
     out = Path(out)
-    stages = Stages(out, {"tuning": scenario.name, "quick": quick, "seed": seed}, progress)
-    paper = presets.get("paper")
-    n_seen = QUICK.workspaces[0] if quick else scenario.n_seen
-    seen = scenario.workspaces("seen", n_seen, seed)
-    train = data.label_workspaces(
-        scenario, seen, scenario.samples_per_workspace, seed, "train_samples", progress, "train samples"
-    )  # the paper preset's training split (data.make_splits)
-    n_fit = n_seen - max(1, int(round(VALIDATION_SHARE * n_seen)))
-    fit, validation = training.split_workspaces(train, n_fit)
-    scale = QUICK.study_epochs_divisor if quick else 1  # quick: a fraction of the epochs, for tests
-
-    # every tuned setting is set in each row, so a row's fingerprint does not change when presets.py adopts the choice
-    base = replace(paper, cae_max_steps=10**9, **{k: v[0] for k, v in MLP_GRID.items()})  # epochs decide, not a cap
-    cae_rows, cae_files = [], {}
-    for epochs in CAE_EPOCHS:
-        preset = replace(base, name=f"tuning:cae{epochs}", cae_epochs=epochs // scale)
-        name = f"cae_{epochs}_{preset.fingerprint()}"
-        cae_files[epochs] = stages.cache / f"{name}.pt"
-        cae_rows.append(
-            dict(
-                stages.json(
-                    name, lambda: _cae_row(scenario, preset, fit, validation, cae_files[epochs], seed, progress)
-                ),
-                cae_epochs=epochs,
-            )
-        )
+    stages = Stages(out, {"tuning": config.scenario.name, "quick": config.quick, "seed": config.seed}, config.progress)
+    held = held_out(config)
+    scale = QUICK.study_epochs_divisor if config.quick else 1  # quick: a fraction of the epochs, for tests
+    # every tuned setting is set in each row, so a row's fingerprint does not change when presets.py adopts the
+    # choice; the CAE's steps are not capped, its epochs decide
+    base = replace(presets.get("paper"), cae_max_steps=10**9, **{k: v[0] for k, v in MLP_GRID.items()})
+    cae_rows, cae_files = tune_cae(held, stages, base, scale)
     best_cae = max(cae_rows, key=lambda r: r["validation_acc"])  # max keeps the first of equals: fewer epochs
-    cae_file = cae_files[best_cae["cae_epochs"]]
-
-    mlp_rows = []
-    for values in itertools.product(*MLP_GRID.values()):
-        settings = dict(zip(MLP_GRID, values))
-        key = "mlp_" + "_".join(str(v) for v in values)
-        preset = replace(
-            base,
-            name=f"tuning:{key}",
-            cae_epochs=best_cae["cae_epochs"] // scale,
-            **dict(settings, mlp_epochs=max(2, settings["mlp_epochs"] // scale)),
-        )
-        mlp_rows.append(
-            dict(
-                stages.json(
-                    f"{key}_{preset.fingerprint()}_{cae_file.stem}",
-                    lambda: _mlp_row(scenario, preset, fit, validation, cae_file, seed, progress),
-                ),
-                **settings,
-            )
-        )
-    best_mlp = one_standard_error_choice(mlp_rows, int(validation.valid.size))
+    with_cae = replace(base, cae_epochs=best_cae["cae_epochs"] // scale)
+    mlp_rows = tune_mlp(held, stages, with_cae, scale, cae_files[best_cae["cae_epochs"]])
+    n_validation = int(held.validation.valid.size)
+    best_mlp = one_standard_error_choice(mlp_rows, n_validation)
     result = {
-        "scenario": scenario.name,
-        "seed": seed,
-        "quick": quick,
-        "fit_workspaces": n_fit,
-        "validation_workspaces": n_seen - n_fit,
-        "validation_samples": int(validation.valid.size),
+        "scenario": config.scenario.name,
+        "seed": config.seed,
+        "quick": config.quick,
+        "fit_workspaces": len(held.fit.workspaces),
+        "validation_workspaces": len(held.validation.workspaces),
+        "validation_samples": n_validation,
         "cae": cae_rows,
         "mlp": mlp_rows,
         "chosen": {"cae_epochs": best_cae["cae_epochs"], **{k: best_mlp[k] for k in MLP_GRID}},
@@ -120,6 +83,56 @@ def tune(config: RunConfig, out: str | Path) -> dict:
     outputs.write_json(out / "tuning.json", result)
     (out / "tuning.md").write_text(markdown(result))
     return result
+
+
+@dataclass(frozen=True)
+class HeldOut:
+    """What every candidate trains and is scored on: the run's settings and its training workspaces split in two."""
+
+    config: RunConfig
+    fit: data.CollisionDataset  # the first workspaces: the networks train on them
+    validation: data.CollisionDataset  # the last VALIDATION_SHARE of them: the candidates are scored on them
+
+
+def held_out(config: RunConfig) -> HeldOut:
+    """The ``paper`` preset's training samples (the train split of ``data.make_splits``), split into the fitting and
+    the validation workspaces (step 1); the unseen workspaces are not generated."""
+    scenario, seed = config.scenario, config.seed
+    n_seen = QUICK.workspaces[0] if config.quick else scenario.n_seen
+    seen = scenario.workspaces("seen", n_seen, seed)
+    train = data.label_workspaces(
+        scenario, seen, scenario.samples_per_workspace, seed, "train_samples", config.progress, "train samples"
+    )
+    n_fit = n_seen - max(1, int(round(VALIDATION_SHARE * n_seen)))
+    fit, validation = training.split_workspaces(train, n_fit)
+    return HeldOut(config, fit, validation)
+
+
+def tune_cae(held: HeldOut, stages: Stages, base: presets.Preset, scale: int) -> tuple[list[dict], dict[int, Path]]:
+    """Step 2: one CAE for each of ``CAE_EPOCHS`` (divided by ``scale``), each row cached; the rows and, by epochs,
+    the files holding the trained CAEs."""
+    rows, files = [], {}
+    for epochs in CAE_EPOCHS:
+        preset = replace(base, name=f"tuning:cae{epochs}", cae_epochs=epochs // scale)
+        name = f"cae_{epochs}_{preset.fingerprint()}"
+        files[epochs] = stages.cache / f"{name}.pt"
+        rows.append(dict(stages.json(name, partial(_cae_row, held, preset, files[epochs])), cae_epochs=epochs))
+    return rows, files
+
+
+def tune_mlp(held: HeldOut, stages: Stages, base: presets.Preset, scale: int, cae_file: Path) -> list[dict]:
+    """Step 3: one MLP for each combination of ``MLP_GRID`` (epochs divided by ``scale``), with the CAE in
+    ``cae_file``, each row cached; the rows in grid order."""
+    rows = []
+    for values in itertools.product(*MLP_GRID.values()):
+        settings = dict(zip(MLP_GRID, values))
+        key = "mlp_" + "_".join(str(v) for v in values)
+        preset = replace(
+            base, name=f"tuning:{key}", **dict(settings, mlp_epochs=max(2, settings["mlp_epochs"] // scale))
+        )
+        name = f"{key}_{preset.fingerprint()}_{cae_file.stem}"
+        rows.append(dict(stages.json(name, partial(_mlp_row, held, preset, cae_file)), **settings))
+    return rows
 
 
 def standard_error(acc: float, n: int) -> float:
@@ -133,17 +146,10 @@ def one_standard_error_choice(rows: list[dict], n: int) -> dict:
     return next(r for r in rows if r["validation_acc"] >= best - standard_error(best, n))
 
 
-def _cae_row(
-    scenario,
-    preset: presets.Preset,
-    fit: data.CollisionDataset,
-    validation: data.CollisionDataset,
-    cae_file: Path,
-    seed: int,
-    progress: bool,
-) -> dict:
+def _cae_row(held: HeldOut, preset: presets.Preset, cae_file: Path) -> dict:
     """Train the paper's CAE on the fitting grids, kept in ``cae_file``; its reconstruction accuracy on them and on
     the validation grids."""
+    scenario, seed, fit, validation = held.config.scenario, held.config.seed, held.fit, held.validation
     torch.manual_seed(seed)
     predictor = build_predictor(scenario, "raw")
     began = time.perf_counter()
@@ -152,7 +158,7 @@ def _cae_row(
         torch.as_tensor(fit.occupancy),
         preset,
         torch.Generator().manual_seed(seed),
-        progress,
+        held.config.progress,
         max_steps=scenario.cae_max_steps,
         max_batch=scenario.cae_max_batch,
         max_lr=scenario.cae_max_lr,
@@ -174,21 +180,14 @@ def _cae_row(
     }
 
 
-def _mlp_row(
-    scenario,
-    preset: presets.Preset,
-    fit: data.CollisionDataset,
-    validation: data.CollisionDataset,
-    cae_file: Path,
-    seed: int,
-    progress: bool,
-) -> dict:
+def _mlp_row(held: HeldOut, preset: presets.Preset, cae_file: Path) -> dict:
     """Train the paper's MLP on the fitting samples with the chosen CAE; its accuracy on the validation samples."""
+    scenario, fit, validation = held.config.scenario, held.fit, held.validation
     cae = build_predictor(scenario, "raw").cae
     cae.load_state_dict(torch.load(cae_file, weights_only=True))
     began = time.perf_counter()
     models = training.train_models(
-        scenario, preset, {"train": fit}, seed, progress=progress, device="cpu", trained_cae=cae
+        scenario, preset, {"train": fit}, held.config.seed, progress=held.config.progress, device="cpu", trained_cae=cae
     )
     seconds = time.perf_counter() - began
     scores = {name: training.classification_scores(models, d) for name, d in (("fit", fit), ("validation", validation))}

@@ -118,12 +118,12 @@ class _BoxWorldChecker(CollisionChecker):
         ``count (C,)`` and ``first (C,)`` per flattened cell, ``members (B,)``: cell c's boxes
         are ``members[first[c]:first[c] + count[c]]``.
         """
-        cells = []  # (cell, box) pairs
+        pairs = []  # (2, cells) per box: rows cell and box
         boxes = self.workspace.boxes  # (K, 2, D)
         for box, (lo, hi) in enumerate(zip(self._cells(boxes[:, 0] - grow), self._cells(boxes[:, 1] + grow))):
             block = np.mgrid[tuple(slice(a, b + 1) for a, b in zip(lo, hi))].reshape(len(lo), -1)  # (D, cells)
-            cells.append(np.stack([np.ravel_multi_index(tuple(block), self._shape), np.full(block.shape[1], box)]))
-        cells = np.concatenate(cells, axis=1) if cells else np.zeros((2, 0), dtype=int)
+            pairs.append(np.stack([np.ravel_multi_index(tuple(block), self._shape), np.full(block.shape[1], box)]))
+        cells = np.concatenate(pairs, axis=1) if pairs else np.zeros((2, 0), dtype=int)  # (2, B)
         cells = cells[:, np.argsort(cells[0], kind="stable")]
         count = np.bincount(cells[0], minlength=int(np.prod(self._shape)))
         return count, np.cumsum(count) - count, cells[1]
@@ -134,7 +134,8 @@ class _BoxWorldChecker(CollisionChecker):
         return np.clip(index, 0, np.array(self._shape) - 1)
 
     def _covered_cells(self, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
-        """``(2^D, M)`` flat indices of the cells that bounds ``lo, hi (M, D)`` cover (repeats where they span one cell).
+        """``(2^D, M)`` flat indices of the cells that bounds ``lo, hi (M, D)`` cover (repeats where
+        they span one cell).
 
         Bounds are no wider than a cell, so they cover at most two cells per axis: their 2^D corners' cells.
         """

@@ -29,7 +29,9 @@ mesh (STL, OBJ, GLB). Three questions decide how a mesh becomes a workspace
 from __future__ import annotations
 
 import sys
+from collections.abc import Sequence
 from pathlib import Path
+from typing import cast
 
 import fcl
 import numpy as np
@@ -45,7 +47,10 @@ def load(mesh) -> trimesh.Trimesh:
     if isinstance(mesh, trimesh.Trimesh):
         return mesh
     if isinstance(mesh, (str, Path)):
-        return trimesh.load(mesh, force="mesh")
+        loaded = trimesh.load(mesh, force="mesh")
+        if not isinstance(loaded, trimesh.Trimesh):
+            raise ValueError(f"{mesh} holds no triangle mesh: trimesh read a {type(loaded).__name__}")
+        return loaded
     raise TypeError(f"expected a trimesh.Trimesh or a path to a mesh file, got {type(mesh).__name__}")
 
 
@@ -92,7 +97,8 @@ class Solid:
         return fcl.collide(box, self.object, fcl.CollisionRequest(), fcl.CollisionResult()) > 0
 
     def voxel_grid(self, lower, upper) -> np.ndarray:
-        """Occupancy of the unit cells from ``lower`` to ``upper``: +1 where the solid meets a cell's open interior, else -1.
+        """Occupancy of the unit cells from ``lower`` to ``upper``: +1 where the solid meets a cell's
+        open interior, else -1.
 
         Only cells that meet a part's bounds are tested: the centre inside, or else the
         cell touching the surface, tested as a box a millionth smaller than the cell (a
@@ -215,7 +221,8 @@ def mesh_of_boxes(boxes: np.ndarray) -> trimesh.Trimesh:
     """One mesh of closed boxes ``(K, 2, 3)`` (min / max corners), each box its own part (no boolean union)."""
     if len(boxes) == 0:
         return trimesh.Trimesh()
-    return trimesh.util.concatenate([trimesh.creation.box(bounds=box) for box in np.asarray(boxes, dtype=float)])
+    parts = [trimesh.creation.box(bounds=box) for box in np.asarray(boxes, dtype=float)]
+    return cast(trimesh.Trimesh, trimesh.util.concatenate(parts))  # typed Geometry; meshes join into a Trimesh
 
 
 def room(rng: np.random.Generator | None = None) -> trimesh.Trimesh:
@@ -224,6 +231,7 @@ def room(rng: np.random.Generator | None = None) -> trimesh.Trimesh:
     Without ``rng``: the demo layout (``DEMO_LAYOUT``). With ``rng``: each piece at a random
     place on the floor, turned by a random number of quarter turns (pieces may overlap, as the paper's blocks do).
     """
+    layout: Sequence[tuple[str, tuple[float, float] | np.ndarray, int]]
     if rng is None:
         layout = DEMO_LAYOUT
     else:

@@ -109,7 +109,7 @@ class Workspace:
             and np.array_equal(self.boxes, other.boxes)
         )
 
-    __hash__ = None  # mutable-looking arrays inside: not hashable
+    # A class that defines __eq__ without __hash__ gets __hash__ = None: arrays inside, so not hashable.
 
     def to_dict(self) -> dict:
         return {
@@ -165,15 +165,16 @@ class MeshWorkspace(Workspace):
     ``occupancy()`` marks the unit cells the mesh's solid meets (:meth:`toolkit.geometry.meshes.Solid.voxel_grid`).
     """
 
-    vertices: np.ndarray = None  # (V, 3)
-    faces: np.ndarray = None  # (F, 3) vertex indices, counter-clockwise seen from outside
+    # keyword-only, as they follow fields with defaults; faces are vertex indices, counter-clockwise seen from outside
+    vertices: np.ndarray = field(kw_only=True)  # (V, 3)
+    faces: np.ndarray = field(kw_only=True, default_factory=lambda: np.zeros((0, 3), dtype=np.int64))  # (F, 3)
 
     def __post_init__(self):
         super().__post_init__()
         if self.dim != 3:
             raise ValueError("a mesh workspace is 3D: lower and upper need shape (3,)")
         vertices = _finite_array(self.vertices, "vertices", ndim=2)
-        faces = np.asarray(self.faces if self.faces is not None else np.zeros((0, 3)), dtype=np.int64).reshape(-1, 3)
+        faces = np.asarray(self.faces, dtype=np.int64).reshape(-1, 3)
         if vertices.size == 0:
             vertices = vertices.reshape(0, 3)
         if vertices.shape[1] != 3 or (len(faces) and (faces.min() < 0 or faces.max() >= len(vertices))):
@@ -219,8 +220,6 @@ class MeshWorkspace(Workspace):
             and np.array_equal(self.vertices, other.vertices)
             and np.array_equal(self.faces, other.faces)
         )
-
-    __hash__ = None
 
     def to_dict(self) -> dict:
         return dict(super().to_dict(), mesh={"vertices": self.vertices.tolist(), "faces": self.faces.tolist()})

@@ -57,7 +57,7 @@ def balanced_samples(
     robot = checker.robot
     want_valid = int(round(n * valid_fraction))
     want = {True: want_valid, False: n - want_valid}
-    kept = {True: [], False: []}
+    kept: dict[bool, list[np.ndarray]] = {True: [], False: []}  # batches (M, dof) of each label
     drawn, batch = 0, max(64, 4 * n)
     while any(sum(map(len, kept[c])) < want[c] for c in (True, False)):
         if drawn >= max_draws:

@@ -113,6 +113,13 @@ class InputEncoding(nn.Module):
     cell's centre along the position axes).
     """
 
+    # buffers, registered in __init__: they follow the module's device and are not saved in checkpoints
+    joint_scale: torch.Tensor  # (n_joints, 1)
+    joint_shift: torch.Tensor  # (n_joints, 1)
+    last_cell: torch.Tensor  # (n_pos, 1), 0 rows for "raw"
+    cell_strides: torch.Tensor  # (n_pos, 1)
+    offsets: torch.Tensor  # (P, G)
+
     def __init__(self, robot: BoxRobot, grid_shape: tuple[int, ...], latent_dim: int, kind: str, radius: int = 0):
         super().__init__()
         if kind not in ("raw", "local"):
@@ -133,7 +140,7 @@ class InputEncoding(nn.Module):
             ("cell_strides", np.array(strides)[:, None]),
         ]:
             self.register_buffer(name, torch.tensor(value, dtype=torch.float32).reshape(-1, 1), persistent=False)
-        self._numpy_constants = None
+        self._numpy_constants: tuple[np.ndarray, ...] | None = None  # the buffers in numpy, made on first use
         self.n_cells = math.prod(cell_axes)  # 1 for "raw"
         window = [torch.arange(-self.radius, self.radius + 1)] * self.n_pos
         window += [torch.arange(n) for n in self.grid_shape[self.n_pos :]]
@@ -151,7 +158,8 @@ class InputEncoding(nn.Module):
         self.out_features = self.latent_dim + self.patch_size + self.pose_size
 
     def forward(self, z: torch.Tensor, grids: torch.Tensor, ws_index: torch.Tensor, Q: torch.Tensor) -> torch.Tensor:
-        """MLP inputs ``(N, out_features)``: latents ``z (W, L)``, grids ``(W, *grid)``, ``ws_index (N,)``, ``Q (N, dof)``."""
+        """MLP inputs ``(N, out_features)``: latents ``z (W, L)``, grids ``(W, *grid)``,
+        ``ws_index (N,)``, ``Q (N, dof)``."""
         cell, pose = self.configs(Q)
         return torch.cat([z[ws_index, : self.latent_dim], self.cell_patches(grids)[ws_index, cell], pose.T], dim=1)
 

@@ -37,7 +37,8 @@ A snapshot: training the predictor further does not change a ``WorkspaceMLP`` ma
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from dataclasses import dataclass
+from typing import Generic, TypeVar
 
 import numpy as np
 import torch
@@ -45,16 +46,19 @@ from torch import nn
 
 from toolkit.learning.models import VALID, CollisionPredictor
 
+Array = TypeVar("Array", torch.Tensor, np.ndarray)
 
-class FoldedLayers(NamedTuple):
+
+@dataclass(frozen=True)
+class FoldedLayers(Generic[Array]):
     """The MLP's weights after folding, column-major: torch tensors, or numpy arrays (:meth:`numpy`)."""
 
-    table: torch.Tensor | np.ndarray  # (H, n_cells): the workspace's share of the first layer, per base cell
-    pose_weight: torch.Tensor | np.ndarray  # (H, pose_size): the first layer's weights on the pose
-    hidden: list  # [(weight (H_next, H), bias (H_next, 1)), ...]: the layers between the first and the last
-    margin_weight: torch.Tensor | np.ndarray  # (H_last,): the last layer's valid row minus its invalid row
+    table: Array  # (H, n_cells): the workspace's share of the first layer, per base cell
+    pose_weight: Array  # (H, pose_size): the first layer's weights on the pose
+    hidden: list[tuple[Array, Array]]  # [(weight (H_next, H), bias (H_next, 1)), ...]: between the first and last
+    margin_weight: Array  # (H_last,): the last layer's valid row minus its invalid row
 
-    def numpy(self) -> FoldedLayers:
+    def numpy(self: FoldedLayers[torch.Tensor]) -> FoldedLayers[np.ndarray]:
         """The same numbers as numpy arrays (views of the tensors' memory when they are on the CPU)."""
 
         def array(t: torch.Tensor) -> np.ndarray:
@@ -72,7 +76,7 @@ class FoldedLayers(NamedTuple):
 def workspace_table(predictor: CollisionPredictor, grid: torch.Tensor) -> torch.Tensor:
     """``(H, n_cells)``: ``W_z z + W_patch patch + b``, all the first layer takes from the workspace ``grid (*grid)``,
     for each base cell (one column when the MLP sees no patch)."""
-    encoding, first = predictor.encoding, predictor.mlp.net[0]
+    encoding, first = predictor.encoding, predictor.mlp.linears[0]
     L, P = encoding.latent_dim, encoding.patch_size
     grids = grid[None]  # (1, *grid)
     share = first.bias.clone()  # (H,)
@@ -113,10 +117,9 @@ class WorkspaceMLP:
         if self.numpy_below < 0 or self.chunk < 1:
             raise ValueError(f"numpy_below must be >= 0 and chunk >= 1, got {self.numpy_below} and {self.chunk}")
         self.encoding, self.device = encoding, grid.device
-        net = predictor.mlp.net
-        linears = [m for m in net if isinstance(m, nn.Linear)]
+        linears = predictor.mlp.linears
         first, last = linears[0], linears[-1]
-        self.slopes = [float(m.weight) for m in net if isinstance(m, nn.PReLU)]  # one after each hidden layer
+        self.slopes = [float(m.weight) for m in predictor.mlp.net if isinstance(m, nn.PReLU)]  # one per hidden layer
         self.margin_bias = float(last.bias[VALID] - last.bias[1 - VALID])
         table = workspace_table(predictor, grid)  # (H, n_cells)
         self.one_cell = table.shape[1] == 1  # the workspace's share is the same for every configuration
@@ -127,7 +130,8 @@ class WorkspaceMLP:
             [(_snapshot(m.weight), _snapshot(m.bias[:, None])) for m in linears[1:-1]],
             _snapshot(last.weight[VALID] - last.weight[1 - VALID]),
         )
-        self.numpy_layers = self.layers.numpy() if self.numpy_below else None  # the same numbers, for small calls
+        # the same numbers, for small calls
+        self.numpy_layers: FoldedLayers[np.ndarray] | None = self.layers.numpy() if self.numpy_below else None
 
     def __call__(self, Q: np.ndarray) -> np.ndarray:
         """Margins ``(N,)`` float32 of configurations ``Q (N, dof)``; P(valid) = sigmoid(margin)."""
@@ -143,26 +147,28 @@ class WorkspaceMLP:
     @torch.inference_mode()
     def _torch_margins(self, Q: torch.Tensor) -> torch.Tensor:
         """Margins ``(N,)`` of a float32 tensor ``Q (N, dof)`` on the table's device, with torch's fused operations."""
-        table, pose_weight, hidden, margin_weight = self.layers
+        layers = self.layers
         cell, pose = self.encoding.configs(Q)  # (N,), (pose_size, N)
-        h = torch.addmm(table if self.one_cell else table.index_select(1, cell), pose_weight, pose)  # (H, N)
+        table = layers.table if self.one_cell else layers.table.index_select(1, cell)  # (H, 1 or N)
+        h = torch.addmm(table, layers.pose_weight, pose)  # (H, N)
         nn.functional.leaky_relu_(h, self.slopes[0])  # PReLU of one slope: leaky ReLU with that slope
-        for (weight, bias), slope in zip(hidden, self.slopes[1:]):
+        for (weight, bias), slope in zip(layers.hidden, self.slopes[1:]):
             h = nn.functional.leaky_relu_(torch.addmm(bias, weight, h), slope)  # (H_next, N)
-        return torch.mv(h.T, margin_weight) + self.margin_bias  # (N,)
+        return torch.mv(h.T, layers.margin_weight) + self.margin_bias  # (N,)
 
     def _numpy_margins(self, Q: np.ndarray) -> np.ndarray:
         """The same margins as :meth:`_torch_margins`, in numpy (float32), of ``Q (N, dof)``."""
-        table, pose_weight, hidden, margin_weight = self.numpy_layers
+        layers = self.numpy_layers
+        assert layers is not None, "numpy computes only calls below numpy_below > 0, and then numpy_layers exist"
         cell, pose = self.encoding.configs(Q)  # (N,), (pose_size, N)
-        h = pose_weight @ pose  # (H, N)
-        h += table if self.one_cell else np.take(table, cell, axis=1)
+        h = layers.pose_weight @ pose  # (H, N)
+        h += layers.table if self.one_cell else np.take(layers.table, cell, axis=1)
         prelu_(h, self.slopes[0])
-        for (weight, bias), slope in zip(hidden, self.slopes[1:]):
+        for (weight, bias), slope in zip(layers.hidden, self.slopes[1:]):
             h = weight @ h  # (H_next, N)
             h += bias
             prelu_(h, slope)
-        return margin_weight @ h + self.margin_bias  # (N,)
+        return layers.margin_weight @ h + self.margin_bias  # (N,)
 
 
 def _snapshot(t: torch.Tensor) -> torch.Tensor:
@@ -171,5 +177,6 @@ def _snapshot(t: torch.Tensor) -> torch.Tensor:
 
 
 def prelu_(h: np.ndarray, slope: float) -> None:
-    """PReLU in place: ``h`` where positive, ``slope * h`` elsewhere (the larger of the two, the smaller if slope > 1)."""
+    """PReLU in place: ``h`` where positive, ``slope * h`` elsewhere (the larger of the two, the
+    smaller if slope > 1)."""
     (np.maximum if slope <= 1 else np.minimum)(h, slope * h, out=h)

@@ -69,7 +69,8 @@ class LearnedChecker(CollisionChecker):
         return self.robot.in_bounds(Q) & (self._margins(Q) >= self._margin_threshold)
 
     def _margins(self, Q: np.ndarray) -> np.ndarray:
-        """``(N,)`` float32 logit(valid) - logit(invalid), so P(valid) = sigmoid(margin); meaningless outside the bounds.
+        """``(N,)`` float32 logit(valid) - logit(invalid), so P(valid) = sigmoid(margin); meaningless
+        outside the bounds.
 
         Every row goes through the network, in or out of bounds: cheaper than selecting rows.
         """

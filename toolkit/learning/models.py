@@ -80,7 +80,8 @@ class CAE(nn.Module):
 
     def encoder_weight_penalty(self) -> torch.Tensor:
         """``sum_ij (W^e_ij)^2`` over the encoder's linear weights (biases and PReLU slopes excluded)."""
-        return sum((layer.weight**2).sum() for layer in self.encoder if isinstance(layer, nn.Linear))
+        penalties = [(layer.weight**2).sum() for layer in self.encoder if isinstance(layer, nn.Linear)]  # per layer
+        return sum(penalties[1:], start=penalties[0])
 
     def loss(self, grids: torch.Tensor, lam: float, reduction: str = "sum") -> torch.Tensor:
         """Eq. (1): the reconstruction error of grids ``(W, *grid)`` plus ``lam * sum (W^e)^2``.
@@ -108,7 +109,8 @@ class CAE(nn.Module):
 
 
 class CollisionMLP(nn.Module):
-    """Validity classifier (§III-A2, §IV-B2): Linear -> PReLU -> Dropout(p) blocks, then 2 logits (no Dropout when p = 0).
+    """Validity classifier (§III-A2, §IV-B2): Linear -> PReLU -> Dropout(p) blocks, then 2 logits
+    (no Dropout when p = 0).
 
     ``init``: the paper names no initialization; "torch" keeps PyTorch's default for ``nn.Linear``, "he" uses
     He initialization for PReLU like the CAE (:func:`he_init`). ``toolkit tune`` chooses between them.
@@ -135,16 +137,23 @@ class CollisionMLP(nn.Module):
         """Logits ``(N, 2)`` (invalid, valid) of inputs ``(N, in_features)``."""
         return self.net(x)
 
+    @property
+    def linears(self) -> list[nn.Linear]:
+        """The linear layers, first to last: the first takes the inputs, the last gives the logits."""
+        return [layer for layer in self.net if isinstance(layer, nn.Linear)]
+
     @torch.no_grad()
     def fold_standardization(self, mean: torch.Tensor, std: torch.Tensor) -> None:
         """Make a network trained on ``(x - mean) / std`` take ``x`` itself (rescales the first layer)."""
-        first = self.net[0]
+        first = self.linears[0]
         first.weight.div_(std)
         first.bias.sub_(first.weight @ mean)
 
 
 class CollisionPredictor(nn.Module):
     """CAE + input encoding + MLP, with the decision ``threshold`` on P(valid) kept as a buffer."""
+
+    threshold: torch.Tensor  # () buffer, saved with the weights
 
     def __init__(self, cae: CAE, encoding: InputEncoding, mlp: CollisionMLP, threshold: float = 0.5):
         super().__init__()

@@ -84,7 +84,7 @@ def train_models(
         scenario, preset.encoding, preset.mlp_hidden, preset.dropout, preset.latent_input, preset.mlp_init
     ).to(device)
     shuffle = torch.Generator().manual_seed(seed)
-    history = {}
+    history: dict[str, list[float]] = {}
     if trained_cae is not None:
         predictor.cae.load_state_dict(trained_cae.state_dict())
         history["cae"] = []
@@ -153,7 +153,10 @@ def train_mlp(
     """Fit the MLP with cross-entropy on a dataset's samples, the CAE frozen; the mean loss of each epoch."""
     device = predictor.threshold.device
     X, y = _inputs(predictor, dataset), torch.as_tensor(dataset.valid.reshape(-1), device=device).long()
-    mean, std = (X.mean(dim=0), X.std(dim=0).clamp(min=1e-6)) if preset.standardize else (0.0, 1.0)
+    if preset.standardize:
+        mean, std = X.mean(dim=0), X.std(dim=0).clamp(min=1e-6)  # (F,) each
+    else:
+        mean, std = X.new_zeros(()), X.new_ones(())  # leave X as it is
     X = (X - mean) / std
     mlp = predictor.mlp.train()
     batches = _batches(len(X), preset.mlp_batch, preset.mlp_epochs, shuffle)
@@ -192,7 +195,8 @@ def probabilities(predictor: CollisionPredictor, dataset: CollisionDataset) -> n
 
 @torch.no_grad()
 def evaluate(models: TrainedModels, splits: dict[str, CollisionDataset]) -> dict:
-    """Table 1 and Table 2 measures: ``{"cae": {"seen_acc", "unseen_acc", ...}, "mlp": {"seen", "unseen", "unseen_uniform"}}``.
+    """Table 1 and Table 2 measures: ``{"cae": {"seen_acc", "unseen_acc", ...},
+    "mlp": {"seen", "unseen", "unseen_uniform"}}``.
 
     ``cae`` also holds ``seen_all_free`` and ``unseen_all_free``, the share of free cells: the
     reconstruction accuracy of a CAE that ignores its input and answers "all free"; a CAE
@@ -284,6 +288,7 @@ def fit(
 ) -> list[float]:
     """Minimize ``loss_of(batch indices)`` over the epochs with the named optimizer; mean loss per epoch."""
     params = list(params)
+    optimizer: torch.optim.Optimizer
     if optimizer_name == "adagrad":
         optimizer = torch.optim.Adagrad(params, lr=lr, weight_decay=weight_decay)
     elif optimizer_name == "adamw":

@@ -57,7 +57,7 @@ class LazyPRM(PRM):
     def round_size(self, query: QueryRoadmap) -> int:
         """Sampler attempts this round: ``first_samples`` doubled each round up to |S| (None: |S| every round)."""
         n, first = self.options.n_samples, self.options.first_samples
-        return n if first is None else min(n, first << min(query.stats["rounds"] - 1, 30))
+        return n if first is None else min(n, first << min(int(query.stats["rounds"]) - 1, 30))
 
     def decide(self, query: QueryRoadmap, pairs: np.ndarray) -> None:
         """Add the candidate edges ``pairs (C, 2)`` that screening (with prediction) or a few exact checks accept,

@@ -18,8 +18,10 @@ path verification: at 10x finer resolution it checks a small fraction of the poi
 ``check_edges`` would). ``invalid_fractions`` asks about every interior point (for
 screening by prediction), and ``refute_at`` checks one point a segment, where screening
 saw it fail; ``last_valid_along`` walks segments from their start and stops at the first
-invalid point (for the obstacle-based sampler). The measurements behind ``MIN_BATCH``
-and the certificates are in ``docs/benchmarks.md`` ("Planner design").
+invalid point (for the obstacle-based sampler). ``path_points`` lists the points a
+path's segments are checked at and ``path_at`` the configurations at fractions of a
+path's length (to draw, check or play back a path). The measurements behind
+``MIN_BATCH`` and the certificates are in ``docs/benchmarks.md`` ("Planner design").
 """
 
 from __future__ import annotations
@@ -119,12 +121,14 @@ def certify_edges(checker: CollisionChecker, Q0, Q1, resolution: float, spacing:
         unsure = valid[edge] & (hi - lo > 1) & (c_lo + c_hi <= bound[edge] * (hi - lo) / m[edge])
         if not unsure.any():
             return valid
-        intervals = cut(*(x[unsure] for x in intervals), np.full(unsure.sum(), 2))  # halved
+        edge, lo, hi, c_lo, c_hi = (x[unsure] for x in intervals)
+        intervals = cut(edge, lo, hi, c_lo, c_hi, np.full(unsure.sum(), 2))  # halved
 
 
 def invalid_fractions(checker: CollisionChecker, Q0, Q1, resolution: float) -> tuple[np.ndarray, np.ndarray]:
     """Screening: ``(E,)`` fraction of each segment's interior points that ``checker`` calls invalid (0 without
-    interior), and ``(E,)`` where along the segment (a fraction of it) the middle one of those points lies (NaN: none)."""
+    interior), and ``(E,)`` where along the segment (a fraction of it) the middle one of those points lies
+    (NaN: none)."""
     robot = checker.robot
     Q0, Q1 = robot.check_configs(Q0, "Q0"), robot.check_configs(Q1, "Q1")
     n = step_counts(robot, Q0, Q1, resolution)  # (E,)
@@ -191,7 +195,8 @@ def last_valid_along(
 
 def path_points(robot: BoxRobot, path, resolution: float) -> np.ndarray:
     """``(T, dof)`` every configuration of ``path (P, dof)`` and, between them, the points its segments are checked at
-    (``step_counts`` steps each), in order along the path: the robot's motion, e.g. to draw or check it frame by frame."""
+    (``step_counts`` steps each), in order along the path: the robot's motion, e.g. to draw or check it frame by
+    frame."""
     path = robot.check_configs(path, "path")  # (P, dof)
     steps = step_counts(robot, path[:-1], path[1:], resolution)  # (P-1,)
     t = np.concatenate([np.arange(k) / k for k in steps] + [np.zeros(0)])  # (T-1,) fractions along each segment
@@ -203,3 +208,17 @@ def path_is_valid(checker: CollisionChecker, path, resolution: float) -> bool:
     """Whether every configuration of ``path (P, dof)`` and every segment between them is valid."""
     path = checker.robot.check_configs(path, "path")
     return bool(checker.are_valid(path).all() and check_edges(checker, path[:-1], path[1:], resolution).all())
+
+
+def path_at(robot: BoxRobot, path, t) -> np.ndarray:
+    """``(T, dof)`` the configurations at fractions ``t (T,)`` (clipped to [0, 1]) of the length of ``path (P, dof)``
+    (``robot.distance``): where a point moving at constant speed along the path's segments is at those times."""
+    path = robot.check_configs(path, "path")  # (P, dof)
+    if len(path) < 2:
+        raise ValueError(f"a path to move along needs two configurations or more, got {len(path)}")
+    lengths = robot.distance(path[:-1], path[1:])  # (P-1,)
+    ends = np.cumsum(lengths)
+    at = np.clip(np.asarray(t, dtype=float).reshape(-1), 0.0, 1.0) * ends[-1]  # (T,) distance travelled
+    segment = np.minimum(np.searchsorted(ends, at), len(lengths) - 1)  # (T,)
+    fraction = (at - (ends[segment] - lengths[segment])) / np.maximum(lengths[segment], 1e-12)
+    return segment_points(robot, path[segment], path[segment + 1], np.clip(fraction, 0.0, 1.0))

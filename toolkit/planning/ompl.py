@@ -55,7 +55,8 @@ except ImportError as error:  # an optional extra: say how to get it
 
 
 def state_space(robot: BoxRobot) -> ob.CompoundStateSpace:
-    """OMPL's space for ``robot``: subspace ``i`` holds DoF ``i`` (SO2 where ``robot.wraps``), weight ``motion_weights[i]``."""
+    """OMPL's space for ``robot``: subspace ``i`` holds DoF ``i`` (SO2 where ``robot.wraps``), weight
+    ``motion_weights[i]``."""
     space = ob.CompoundStateSpace()
     for i in range(robot.dof):
         if robot.wraps[i]:
@@ -170,7 +171,8 @@ def motion_steps(si: ob.SpaceInformation, robot: BoxRobot, Q0, Q1) -> np.ndarray
 
 @dataclass
 class OMPLResult:
-    """``success`` (an exact solution), ``path (P, dof)`` (empty on failure), ``seconds``, ``checks`` (configurations)."""
+    """``success`` (an exact solution), ``path (P, dof)`` (empty on failure), ``seconds``, ``checks``
+    (configurations)."""
 
     success: bool
     path: np.ndarray

@@ -15,6 +15,7 @@ ignores them. ``PAPER_BASELINE`` is the one field that makes a set of options th
 from __future__ import annotations
 
 from dataclasses import dataclass, field
+from typing import Any
 
 import numpy as np
 
@@ -29,7 +30,7 @@ AUXILIARY = {  # PRMOptions.auxiliary: how rounds after the first sample, with p
     "predicted": "with prediction, like the first (nodes are checked when a candidate path uses them)",
 }
 
-PAPER_BASELINE = {"planner": "paper"}  # PRMOptions of Algorithm 1 as the paper has it
+PAPER_BASELINE: dict[str, Any] = {"planner": "paper"}  # PRMOptions of Algorithm 1 as the paper has it
 
 
 @dataclass

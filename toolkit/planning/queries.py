@@ -48,7 +48,8 @@ class Query:
 def query_pairs(
     scenario: Scenario, ws: Workspace, count: int, rng: np.random.Generator, min_separation: float = 0.25
 ) -> list[tuple[np.ndarray, np.ndarray]]:
-    """``count`` (start, goal) pairs valid under the exact checker, base positions ``min_separation`` x diagonal apart."""
+    """``count`` (start, goal) pairs valid under the exact checker, base positions ``min_separation`` x diagonal
+    apart."""
     robot, checker = scenario.robot, exact_checker(ws, scenario.robot)
     far = min_separation * float(np.linalg.norm(ws.upper - ws.lower))
     pairs: list[tuple[np.ndarray, np.ndarray]] = []
@@ -68,7 +69,7 @@ def default_options(scenario: Scenario, checker: CollisionChecker | None = None,
     :class:`~toolkit.planning.prm.PRMOptions`' defaults (the best exact planner: lazy edges, growing rounds); with a
     ``checker`` that decides samples, the settings it asks for (``checker.planner_options``: a learned checker's are
     its model's recipe's)."""
-    settings = {"n_samples": scenario.plan_samples, "resolution": scenario.plan_resolution}
+    settings: dict[str, object] = {"n_samples": scenario.plan_samples, "resolution": scenario.plan_resolution}
     if checker is not None:
         settings.update(checker.planner_options)
     return PRMOptions(**{**settings, **overrides})
@@ -205,7 +206,7 @@ def summarize(records: list[dict]) -> dict:
     def values(key):
         return np.array([r[key] for r in records], dtype=float)
 
-    summary = {"n_queries": len(records)}
+    summary: dict[str, float] = {"n_queries": len(records)}
     for key in (
         "sampling_s",
         "connection_s",

@@ -109,7 +109,7 @@ class QueryRoadmap:
         # edges already were), then finer
         self.verify_resolutions = (self.resolution, self.resolution / options.verify_refinement)
         self.roadmap = Roadmap(exact.robot)
-        self.stats = {
+        self.stats: dict[str, float] = {  # counts (ints) and seconds
             "rounds": 0,
             "repairs": 0,
             "rebridges": 0,
@@ -143,7 +143,7 @@ class QueryRoadmap:
         self.trace.append(
             PlanStep(
                 stage,
-                self.stats["rounds"],
+                int(self.stats["rounds"]),
                 roadmap.nodes.copy(),
                 roadmap.node_verified.copy(),
                 roadmap.edges.copy(),

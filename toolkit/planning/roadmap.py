@@ -72,7 +72,8 @@ class Roadmap:
         return self._new_pairs(pairs)
 
     def bridge_edges(self, node: int, k: int) -> np.ndarray:
-        """``(C, 2)``: up to ``k`` pairs joining ``node``'s connected component to the rest of the roadmap, closest first.
+        """``(C, 2)``: up to ``k`` pairs joining ``node``'s connected component to the rest of the roadmap, closest
+        first.
 
         k-nearest graphs of clustered samples (OB, G, BT gather around obstacles) fall
         apart into one component per cluster; trying the closest pairs between the
@@ -146,7 +147,7 @@ class Roadmap:
         their index)."""
         keep = np.ones(len(self.nodes), dtype=bool)
         keep[which] = False
-        self._keep_edges(keep[self.edges].all(axis=1))
+        self._keep_edges(np.all(keep[self.edges], axis=1))
         self.rejected = self.rejected[keep[self.rejected].all(axis=1)]
         new_index = np.cumsum(keep) - 1  # (V,) old index -> new index for kept nodes
         self.edges, self.rejected = new_index[self.edges], new_index[self.rejected]

@@ -4,12 +4,14 @@ Nothing here calls ``show()`` and everything renders headless (Agg): a notebook
 displays the returned figure, a script saves it (``fig.savefig(path)``). One module
 per topic, in the order of the notebooks:
 
-- :mod:`toolkit.plots.cspace` — workspaces, robots, configuration-space obstacles (notebook 01);
+- :mod:`toolkit.plots.cspace` — workspaces, robots, configuration-space obstacles (notebook 01),
+  each box drawn from its corners by :mod:`toolkit.plots.boxes`;
 - :mod:`toolkit.plots.cae` — the contractive autoencoder's reconstructions and latents (notebook 02);
 - :mod:`toolkit.plots.classifier` — the collision MLP's decision boundaries and thresholds (notebook 03);
 - :mod:`toolkit.plots.planning` — samplers, roadmaps and planning times (notebook 04);
 - :mod:`toolkit.plots.scenes` — a planned 3D path, one frame at a time (notebook 05);
-- :mod:`toolkit.plots.reproduction` — the reproduction's figures (paper Figures 5-7, ``toolkit reproduce``).
+- :mod:`toolkit.plots.reproduction` — the reproduction's figures (paper Figures 5-7, ``toolkit reproduce``);
+- :mod:`toolkit.plots.tutorials` — what only the tutorials show: a mesh workspace, samplers in a narrow passage.
 
 >>> from toolkit.plots import reproduction  # doctest: +SKIP
 """

@@ -16,6 +16,8 @@ as in :func:`toolkit.learning.metrics.reconstruction_accuracy`. Nothing here cal
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
@@ -64,7 +66,7 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
         )
     accuracy = reconstruction_accuracy(decoded, grids)  # (W,)
     fig = Figure(figsize=(8.4, 3.0 * len(grids)), layout="constrained")
-    rows = np.atleast_1d(fig.subfigures(len(grids), 1))
+    rows = fig.subfigures(len(grids), 1, squeeze=False)[:, 0]  # (W,) one row per workspace
     for row, grid, out, name, acc in zip(rows, grids, decoded, names, accuracy):
         errors = error_cells(grid, out)
         missed, phantom = int(np.sum(errors & (grid > 0))), int(np.sum(errors & (grid < 0)))
@@ -158,7 +160,8 @@ def latent_scatter(
         low, high = min(np.min(c) for c in color.values()), max(np.max(c) for c in color.values())
     for (name, xy), marker in zip(points.items(), "o^sDv"):
         xy = np.asarray(xy)
-        style = dict(s=40, edgecolors="black") if name == highlight else dict(s=16, edgecolors="none")
+        big = name == highlight
+        style: dict[str, Any] = dict(s=40 if big else 16, edgecolors="black" if big else "none")
         if color:
             style.update(c=color[name], cmap="viridis", vmin=low, vmax=high, marker=marker)
         drawn = ax.scatter(xy[:, 0], xy[:, 1], label=f"{name} ({len(xy)})", alpha=0.75, **style)

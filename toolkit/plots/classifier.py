@@ -70,14 +70,14 @@ def slice_grid(robot: BoxRobot, dofs: tuple[int, int] = (0, 1), fixed=None, n: i
     The configurations of :func:`toolkit.plots.cspace.slice_configs` (notebook 01's slices), flattened.
     """
     fixed = (robot.lower + robot.upper) / 2 if fixed is None else fixed
-    values_i, values_j, Q = slice_configs(robot, fixed, dofs, n)  # (n,), (n,), (n, n, dof)
-    dofs = tuple(dofs)
+    values_i, values_j, Q = slice_configs(robot, fixed, dofs, n)  # (n,), (n,), (n, n, dof); checks the DoFs
+    i, j = dofs
     return CSpaceSlice(
-        dofs,
-        tuple(robot.dof_names[d] for d in dofs),
+        (i, j),
+        (robot.dof_names[i], robot.dof_names[j]),
         (values_i, values_j),
-        robot.lower[list(dofs)],
-        robot.upper[list(dofs)],
+        robot.lower[[i, j]],
+        robot.upper[[i, j]],
         Q.reshape(-1, robot.dof),
     )
 

@@ -16,23 +16,24 @@ that makes it:
 - :func:`cspace_slice` draws a 2-DoF slice of any robot's C-space (two DoF vary,
   the others stay fixed) beside the robot at the fixed configuration.
 
+Each box (a block or a link) is drawn from its corners (:mod:`toolkit.plots.boxes`).
+
 Every function returns a matplotlib ``Figure`` and never calls ``show()``.
 """
 
 from __future__ import annotations
 
-import itertools
+from collections.abc import Sequence
 
 import numpy as np
 from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch, Polygon, Rectangle
-from mpl_toolkits.mplot3d.art3d import Poly3DCollection
-from scipy.spatial import ConvexHull
 
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
+from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
 
 VALID_COLOR, INVALID_COLOR = "tab:green", "tab:red"
 BLOCK_COLOR = "0.6"
@@ -42,48 +43,12 @@ VIEWS = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
 POSITION_NAMES = ("x", "y", "z")
 
 
-def _corner_signs(dim: int) -> np.ndarray:
-    """``(2^D, D)`` the corners of a box as ±1 per axis; corner ``k`` has bit ``D-1-a`` set where axis ``a`` is +."""
-    return np.array(list(itertools.product((-1.0, 1.0), repeat=dim)))
-
-
-def _face_indices() -> np.ndarray:
-    """``(6, 4)`` corners of each face of a 3D box (numbered as :func:`_corner_signs`), in order around it."""
-    faces = []
-    for axis, side in itertools.product(range(3), (0, 1)):
-        u, v = (a for a in range(3) if a != axis)
-        face = []
-        for bit_u, bit_v in ((0, 0), (0, 1), (1, 1), (1, 0)):
-            bits = np.zeros(3, dtype=int)
-            bits[[axis, u, v]] = side, bit_u, bit_v
-            face.append(int(bits @ (4, 2, 1)))
-        faces.append(face)
-    return np.array(faces)
-
-
-FACES = _face_indices()
-
-
-def _box_corners(center: np.ndarray, rotation: np.ndarray, half: np.ndarray) -> np.ndarray:
-    """``(2^D, D)`` corners of an oriented box: ``center (D,)``, ``rotation (D, D)``, ``half (D,)``."""
-    return center + (_corner_signs(len(center)) * half) @ rotation.T
-
-
-def _aabb_corners(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
-    """``(2^D, D)`` corners of an axis-aligned box."""
-    return _box_corners((lo + hi) / 2, np.eye(len(lo)), (hi - lo) / 2)
-
-
-def _outline(corners: np.ndarray, axes: tuple[int, int]) -> np.ndarray:
-    """The box's shadow on the plane of ``axes``: its projected corners' convex hull, ``(V, 2)`` in order."""
-    points = corners[:, list(axes)]
-    return points[ConvexHull(points).vertices]
-
-
-def _add_box_3d(ax, corners: np.ndarray, **style) -> Poly3DCollection:
-    faces = Poly3DCollection(corners[FACES], **style)
-    ax.add_collection3d(faces)
-    return faces
+def checker_workspace(checker: CollisionChecker) -> Workspace:
+    """The workspace ``checker`` decides in (exact and learned checkers know theirs), or a clear error."""
+    workspace = getattr(checker, "workspace", None)
+    if not isinstance(workspace, Workspace):
+        raise TypeError(f"this figure draws the checker's workspace, and a {type(checker).__name__} knows none")
+    return workspace
 
 
 def _dof_label(robot: BoxRobot, index: int) -> str:
@@ -119,7 +84,7 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
         fig = Figure(figsize=(7, 6))
         ax = fig.add_subplot(projection="3d")
         for (lo, hi), color in zip(workspace.boxes, box_colors):
-            _add_box_3d(ax, _aabb_corners(lo, hi), facecolor=color, edgecolor="k", linewidth=0.3, alpha=0.8).set_gid(
+            add_box_3d(ax, aabb_corners(lo, hi), facecolor=color, edgecolor="k", linewidth=0.3, alpha=0.8).set_gid(
                 "block"
             )
         ax.set(
@@ -137,7 +102,7 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
     return fig
 
 
-def occupancy_figure(workspace: Workspace, layers: list[int] | None = None, columns: int = 4) -> Figure:
+def occupancy_figure(workspace: Workspace, layers: Sequence[int] | None = None, columns: int = 4) -> Figure:
     """The occupancy grid (paper §IV-A: +1 occupied, dark; −1 free, white), one image per z layer in 3D.
 
     Image ``[row, col]`` is cell ``(x=col, y=row)``, so the picture lies as :func:`workspace_figure`'s.
@@ -148,9 +113,9 @@ def occupancy_figure(workspace: Workspace, layers: list[int] | None = None, colu
     if grid.ndim == 2:
         images, titles = [grid], [f"{workspace.family} grid {grid.shape[0]} x {grid.shape[1]}"]
     else:
-        layers = range(grid.shape[2]) if layers is None else layers
-        images = [grid[:, :, z] for z in layers]
-        titles = [f"layer z = {workspace.lower[2] + z + 0.5:g}" for z in layers]
+        drawn = range(grid.shape[2]) if layers is None else layers
+        images = [grid[:, :, z] for z in drawn]
+        titles = [f"layer z = {workspace.lower[2] + z + 0.5:g}" for z in drawn]
     columns = min(columns, len(images))
     rows = -(-len(images) // columns)
     panel = 4.5 if len(images) == 1 else 2.6  # inches
@@ -202,17 +167,17 @@ def draw_robot(
     else:
         blocks = np.zeros((0, 2, robot.dim))
     link_boxes = [
-        (_box_corners(c, r, h), color)
+        (box_corners(c, r, h), color)
         for cs, rs, color in zip(centers, rotations, colors)
         for c, r, h in zip(cs, rs, half)
     ]
     if view == "3d":
         for b_lo, b_hi in blocks:
-            _add_box_3d(
-                ax, _aabb_corners(b_lo, b_hi), facecolor=BLOCK_COLOR, edgecolor="0.3", linewidth=0.3, alpha=0.25
+            add_box_3d(
+                ax, aabb_corners(b_lo, b_hi), facecolor=BLOCK_COLOR, edgecolor="0.3", linewidth=0.3, alpha=0.25
             ).set_gid("block")
         for corners, color in link_boxes:
-            _add_box_3d(ax, corners, facecolor=color, edgecolor="k", linewidth=0.4, alpha=0.9).set_gid("link")
+            add_box_3d(ax, corners, facecolor=color, edgecolor="k", linewidth=0.4, alpha=0.9).set_gid("link")
         ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), zlim=(lo[2], hi[2]), xlabel="x", ylabel="y", zlabel="z")
         ax.set_box_aspect(hi - lo)
         return
@@ -230,7 +195,7 @@ def draw_robot(
         )
     for corners, color in link_boxes:
         ax.add_patch(
-            Polygon(_outline(corners, axes), facecolor=color, edgecolor="k", linewidth=0.6, alpha=0.85, gid="link")
+            Polygon(outline(corners, axes), facecolor=color, edgecolor="k", linewidth=0.6, alpha=0.85, gid="link")
         )
     ax.set_xlim(lo[axes[0]], hi[axes[0]])
     ax.set_ylim(lo[axes[1]], hi[axes[1]])
@@ -341,7 +306,7 @@ def cspace_image(checker: CollisionChecker, resolution: int = 600, window: tuple
     fig = Figure(figsize=(5.5, 5.2))
     ax = fig.subplots()
     valid = _draw_cspace(ax, checker, robot.lower, (0, 1), resolution, window)
-    for lo, hi in checker.workspace.boxes:
+    for lo, hi in checker_workspace(checker).boxes:
         ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor="tab:orange", linewidth=1.2, gid="block"))
     left, right, bottom, top = ax.images[0].get_extent()
     ax.set(xlim=(left, right), ylim=(bottom, top), aspect="equal")  # the window, whatever blocks lie beyond it
@@ -390,7 +355,7 @@ def cspace_slice(
     )
     if view:
         robot_ax = fig.add_subplot(1, 2, 2, **({"projection": "3d"} if view == "3d" else {}))
-        draw_robot(robot_ax, robot, q[None], _link_colors(1, q_valid), view, checker.workspace, margin)
+        draw_robot(robot_ax, robot, q[None], _link_colors(1, q_valid), view, checker_workspace(checker), margin)
         robot_ax.set_title(f"the robot at the star ({view})", fontsize=9)
     fig.tight_layout()
     return fig
@@ -403,7 +368,7 @@ def configuration_near_blocks(checker: CollisionChecker, rng: np.random.Generato
     nearest a block (a random valid configuration is usually far from every block, and
     its slices through arm joints are all free).
     """
-    robot, boxes = checker.robot, checker.workspace.boxes  # boxes (K, 2, D)
+    robot, boxes = checker.robot, checker_workspace(checker).boxes  # boxes (K, 2, D)
     Q = robot.sample(rng, n)
     Q = Q[checker.are_valid(Q)]  # (M, dof)
     if len(Q) == 0:

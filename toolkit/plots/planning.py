@@ -10,6 +10,8 @@ throughputs. Every function returns a matplotlib ``Figure`` and never calls ``sh
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 from matplotlib.collections import LineCollection
 from matplotlib.colors import ListedColormap
@@ -20,7 +22,7 @@ from matplotlib.ticker import NullFormatter
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.planning.prm import GOAL, START, PlanStep
 from toolkit.planning.sampling import PAPER_SAMPLERS
-from toolkit.plots.cspace import slice_configs
+from toolkit.plots.cspace import checker_workspace, slice_configs
 
 MODES = ("without", "with")
 STAGE_KEYS = ("sampling_s", "connection_s", "query_s")  # PRM stats, in the order the planner spends them
@@ -51,7 +53,7 @@ def _draw_cspace(ax, exact: CollisionChecker) -> None:
     """C-obstacles shaded (the exact checker's answer), the blocks themselves outlined."""
     valid, extent = cspace_validity(exact)
     ax.imshow(~valid, origin="lower", extent=extent, cmap=C_OBSTACLE, vmin=0, vmax=1, interpolation="nearest")
-    ws = exact.workspace
+    ws = checker_workspace(exact)
     for lo, hi in ws.boxes:
         ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor="0.3", linewidth=0.8))
     ax.add_patch(
@@ -93,7 +95,7 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
     fig = Figure(figsize=(4.6, 4.6))
     ax = fig.subplots()
     _draw_cspace(ax, exact)
-    groups = [
+    groups: list[tuple[np.ndarray, dict[str, Any], str]] = [  # (mask, scatter style, label)
         (~accepted, dict(marker="x", s=10, color="0.5"), "rejected"),
         (accepted & truly_valid, dict(s=10, color=UNCONFIRMED_COLOR), "S' (accepted)"),
         (accepted & ~truly_valid, dict(s=30, marker="X", color=REPAIR_COLOR), "S', truly in collision"),

@@ -13,8 +13,11 @@ Every function returns a matplotlib ``Figure`` and never calls ``show()``.
 
 from __future__ import annotations
 
+from functools import partial
+
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.gridspec import SubplotSpec
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
@@ -56,50 +59,69 @@ def path_frame(
         name: _per_frame(values, frames, name)
         for name, values in (("valid", valid), ("clearance", clearance), ("probability", probability))
     }
-    along = np.linspace(0.0, 1.0, frames)  # (T,)
-
     fig = Figure(figsize=(11, 4.8))
-    left, right = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.3, top=0.8)  # room for title and legend
+    grid = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.3, top=0.8)  # room for title and legend
     valid_now = None if series["valid"] is None else bool(series["valid"][index])
-    _draw_scene(fig.add_subplot(left, projection="3d"), robot, Q, index, valid_now, workspace, margin)
+    _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, valid_now, workspace, margin)
+    _draw_series(fig, grid[1], robot, Q, index, series, threshold)
+    fig.suptitle(_frame_title(index, frames, series, threshold), fontsize=10)
+    return fig
 
-    panels = ["dof"] + [name for name in ("clearance", "probability") if series[name] is not None]
-    axes = right.subgridspec(len(panels), 1, hspace=0.15).subplots(sharex=True)
-    for ax, panel in zip(np.atleast_1d(axes), panels):
-        if panel == "dof":
-            scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
-            for k, name in enumerate(robot.dof_names):
-                ax.plot(along, scaled[:, k], linewidth=1.2, label=name, gid="dof")
-            ax.set_ylim(-0.05, 1.05)
-            ax.set_ylabel("DoF in bounds")
-            fig.legend(
-                *ax.get_legend_handles_labels(),
-                fontsize=6,
-                ncol=min(robot.dof, 5),
-                loc="upper center",
-                bbox_to_anchor=(0.73, 0.93),
-                frameon=False,
-                handlelength=1.2,
-            )  # between the title and the panels
-        elif panel == "clearance":
-            ax.plot(along, series["clearance"], color="k", linewidth=1.2, gid="clearance")
-            ax.fill_between(along, 0.0, series["clearance"], color="0.85")
-            ax.set_ylim(bottom=0.0)
-            ax.set_ylabel("clearance")
-        else:
-            p = series["probability"]
-            ax.plot(along, p, color="tab:purple", linewidth=1.2, gid="probability")
-            ax.axhline(threshold, color="k", linestyle="--", linewidth=0.8, gid="threshold")
-            ax.fill_between(along, 0.0, 1.0, where=p < threshold, color=INVALID_COLOR, alpha=0.15, linewidth=0)
-            ax.set_ylim(-0.02, 1.02)
-            ax.set_ylabel("P(valid)")
+
+def _draw_series(
+    fig: Figure, spec: SubplotSpec, robot: BoxRobot, Q: np.ndarray, index: int, series: dict, threshold: float
+) -> None:
+    """The right of :func:`path_frame`: panels one above the other against the fraction of the path travelled (the
+    DoFs, then the clearance and P(valid) where given), a line at frame ``index`` in each."""
+    along = np.linspace(0.0, 1.0, len(Q))  # (T,)
+    panels = [partial(_draw_dofs, fig, robot, Q)]
+    if (clearance := series["clearance"]) is not None:
+        panels.append(partial(_draw_clearance, clearance))
+    if (probability := series["probability"]) is not None:
+        panels.append(partial(_draw_probability, probability, threshold))
+    axes = spec.subgridspec(len(panels), 1, hspace=0.15).subplots(sharex=True, squeeze=False)[:, 0]
+    for ax, draw_panel in zip(axes, panels):
+        draw_panel(ax, along)
         ax.axvline(along[index], color=NOW_COLOR, linewidth=1.0, gid="now")
         ax.locator_params(axis="y", nbins=3)
         ax.tick_params(labelsize=7)
         ax.label_outer()
-    np.atleast_1d(axes)[-1].set_xlabel("fraction of the path")
-    fig.suptitle(_frame_title(index, frames, series, threshold), fontsize=10)
-    return fig
+    axes[-1].set_xlabel("fraction of the path")
+
+
+def _draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, ax, along: np.ndarray) -> None:
+    """Every DoF of ``Q (T, dof)`` scaled to its bounds (0 = lower, 1 = upper), the legend above the panels."""
+    scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
+    for k, name in enumerate(robot.dof_names):
+        ax.plot(along, scaled[:, k], linewidth=1.2, label=name, gid="dof")
+    ax.set_ylim(-0.05, 1.05)
+    ax.set_ylabel("DoF in bounds")
+    fig.legend(
+        *ax.get_legend_handles_labels(),
+        fontsize=6,
+        ncol=min(robot.dof, 5),
+        loc="upper center",
+        bbox_to_anchor=(0.73, 0.93),
+        frameon=False,
+        handlelength=1.2,
+    )  # between the title and the panels
+
+
+def _draw_clearance(clearance: np.ndarray, ax, along: np.ndarray) -> None:
+    """The exact checker's lower bound on the distance to the nearest block, ``clearance (T,)``, shaded below."""
+    ax.plot(along, clearance, color="k", linewidth=1.2, gid="clearance")
+    ax.fill_between(along, 0.0, clearance, color="0.85")
+    ax.set_ylim(bottom=0.0)
+    ax.set_ylabel("clearance")
+
+
+def _draw_probability(p: np.ndarray, threshold: float, ax, along: np.ndarray) -> None:
+    """The model's P(valid) ``p (T,)`` with its ``threshold``, shaded where the model calls the path colliding."""
+    ax.plot(along, p, color="tab:purple", linewidth=1.2, gid="probability")
+    ax.axhline(threshold, color="k", linestyle="--", linewidth=0.8, gid="threshold")
+    ax.fill_between(along, 0.0, 1.0, where=p < threshold, color=INVALID_COLOR, alpha=0.15, linewidth=0)
+    ax.set_ylim(-0.02, 1.02)
+    ax.set_ylabel("P(valid)")
 
 
 def _draw_trace(ax, robot: BoxRobot, Q: np.ndarray) -> None:

@@ -21,7 +21,8 @@ MESH_COLOR, VOXEL_COLOR = "tab:brown", "tab:blue"
 
 
 def mesh_and_grid(workspace: MeshWorkspace, title: str = "") -> Figure:
-    """Left: the workspace's triangles. Right: its occupancy grid, one cube per occupied cell (what the networks read)."""
+    """Left: the workspace's triangles. Right: its occupancy grid, one cube per occupied cell (what the networks
+    read)."""
     fig = Figure(figsize=(10, 4.8))
     mesh_ax = fig.add_subplot(1, 2, 1, projection="3d")
     mesh_ax.add_collection3d(
@@ -60,7 +61,7 @@ def samplers_in_a_passage(
     ``((x0, y0), (x1, y1))`` outlined in red, with how many samples fell inside it in each panel's title."""
     fig = planning.samplers(exact, samples, attempts)
     (x0, y0), (x1, y1) = passage
-    for ax, (name, Q) in zip(fig.axes, samples.items()):
+    for ax, Q in zip(fig.axes, samples.values()):
         ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, edgecolor="tab:red", linewidth=1.2))
         inside = int(np.sum(np.all(((x0, y0) <= Q) & ((x1, y1) >= Q), axis=1)))
         ax.set_title(f"{ax.get_title()}\n{inside} in the passage", fontsize=9)

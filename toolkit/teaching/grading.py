@@ -143,7 +143,8 @@ def grade(notebook: str | Path, assignment: str | None = None, timeout: float | 
 
 
 def _zero(name: str, points: dict[str, float], why: str, timed_out: bool = False) -> dict:
-    """Every question scored 0 with feedback ``why``: a notebook stopped by the time limit, or one otter cannot grade."""
+    """Every question scored 0 with feedback ``why``: a notebook stopped by the time limit, or one otter cannot
+    grade."""
     questions = [{"name": q, "score": 0.0, "max_score": p, "feedback": why} for q, p in points.items()]
     return _total(name, questions, timed_out=timed_out, error=None if timed_out else why)
 

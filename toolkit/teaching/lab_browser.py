@@ -28,9 +28,10 @@ import tempfile
 import time
 import urllib.request
 from collections.abc import Iterator
-from contextlib import contextmanager
+from contextlib import contextmanager, suppress
 from dataclasses import asdict, dataclass
 from pathlib import Path
+from typing import IO
 
 from toolkit.viewer.browser import CHROMIUM_ARGS, find_chromium
 
@@ -40,6 +41,8 @@ SETTINGS = {  # JupyterLab settings for the run: no news pop-up; every cell in t
     "@jupyterlab/notebook-extension/tracker": {"windowingMode": "none"},
 }
 STDERR = '.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.stderr"]'  # errors and warnings render so
+PROMPTS = "[...document.querySelectorAll('.jp-CodeCell .jp-InputArea-prompt')]"  # JavaScript: each code cell's prompt
+CELLS_RUN = PROMPTS + ".filter(p => /\\[\\d+\\]/.test(p.textContent)).length"  # JavaScript: prompts with a number
 
 
 @dataclass
@@ -87,35 +90,36 @@ def jupyterlab(root: Path, env: dict[str, str] | None = None, timeout_s: float =
     ]
     if os.geteuid() == 0:  # CI machines run as root, which JupyterLab refuses unless told
         command.append("--allow-root")
-    log = tempfile.TemporaryFile()
-    server = subprocess.Popen(
-        command, env=env, stdout=log, stderr=subprocess.STDOUT, start_new_session=True
-    )  # its kernels share its process group: one signal stops all
     url = f"http://127.0.0.1:{port}"
-    try:
-        deadline = time.monotonic() + timeout_s
-        while True:
-            try:
-                urllib.request.urlopen(f"{url}/api/status?token={token}", timeout=5).close()
-                break
-            except OSError:
-                if server.poll() is not None or time.monotonic() > deadline:
-                    log.seek(0)
-                    raise RuntimeError(f"JupyterLab did not start on {url}: {log.read().decode()[-2000:]}") from None
-                time.sleep(0.5)
-        yield f"{url}/lab/tree/{{path}}?token={token}"
-    finally:
-        _stop(server)
-        log.close()
+    with tempfile.TemporaryFile() as log:
+        server = subprocess.Popen(
+            command, env=env, stdout=log, stderr=subprocess.STDOUT, start_new_session=True
+        )  # its kernels share its process group: one signal stops all
+        try:
+            yield _wait_until_up(server, log, url, token, timeout_s)
+        finally:
+            _stop(server)
+
+
+def _wait_until_up(server: subprocess.Popen, log: IO[bytes], url: str, token: str, timeout_s: float) -> str:
+    """Wait until the server at ``url`` answers; its notebook URL pattern (with ``{path}`` and the token)."""
+    deadline = time.monotonic() + timeout_s
+    while True:
+        try:
+            urllib.request.urlopen(f"{url}/api/status?token={token}", timeout=5).close()
+            return f"{url}/lab/tree/{{path}}?token={token}"
+        except OSError:
+            if server.poll() is not None or time.monotonic() > deadline:
+                log.seek(0)
+                raise RuntimeError(f"JupyterLab did not start on {url}: {log.read().decode()[-2000:]}") from None
+            time.sleep(0.5)
 
 
 def _stop(server: subprocess.Popen) -> None:
     """Stop the server and its kernels (one process group): SIGTERM, then SIGKILL after 20 s."""
     for sig, wait_s in ((signal.SIGTERM, 20), (signal.SIGKILL, None)):
-        try:
+        with suppress(ProcessLookupError):
             os.killpg(server.pid, sig)
-        except ProcessLookupError:
-            pass
         try:
             server.wait(timeout=wait_s)
             return
@@ -137,6 +141,7 @@ def run_all(
     if chromium is None:
         raise FileNotFoundError("no Chromium found; install it with `make browser` or `apt-get install chromium`")
     notebook = Path(notebook).resolve()
+    n_code = sum(cell["cell_type"] == "code" for cell in json.loads(notebook.read_text())["cells"])
     with tempfile.TemporaryDirectory(prefix="toolkit-lab-") as root, sync_playwright() as pw:
         shutil.copy(notebook, Path(root) / notebook.name)
         with jupyterlab(Path(root), env) as url:
@@ -145,47 +150,57 @@ def run_all(
                 page = browser.new_page(viewport={"width": WINDOW[0], "height": WINDOW[1]})
                 page.set_default_timeout(timeout_s * 1000)
                 page.goto(url.format(path=notebook.name))
-                page.wait_for_selector(".jp-Notebook .jp-CodeCell")
-                _wait_idle(page)  # the kernel has started
-                began = time.monotonic()
-                page.locator("#jp-menu-panel").get_by_text("Run", exact=True).click()
-                page.get_by_text("Run All Cells", exact=True).click()
-                n_code = sum(cell["cell_type"] == "code" for cell in json.loads(notebook.read_text())["cells"])
-                page.wait_for_function(f"""() => {{  // every cell ran, or one failed and the rest were skipped
-                    const prompts = [...document.querySelectorAll('.jp-CodeCell .jp-InputArea-prompt')];
-                    const ran = prompts.filter(p => /\\[\\d+\\]/.test(p.textContent)).length;
-                    const failed = [...document.querySelectorAll('{STDERR}')].some(o => o.textContent.includes('Traceback'));
-                    return ran === {n_code} || (failed && !prompts.some(p => p.textContent.includes('*')));
-                }}""")
-                _wait_idle(page)
-                seconds = time.monotonic() - began
+                seconds = _run_every_cell(page, n_code)
                 page.wait_for_timeout(2000)  # widgets and iframes finish rendering
-                outputs = page.locator(".jp-OutputArea-output")
-                rendered = RenderedNotebook(
-                    code_cells=n_code,
-                    cells_run=page.evaluate(
-                        "[...document.querySelectorAll('.jp-CodeCell .jp-InputArea-prompt')]"
-                        ".filter(p => /\\[\\d+\\]/.test(p.textContent)).length"
-                    ),
-                    sliders=page.locator(".jp-OutputArea .widget-slider").count(),
-                    images=outputs.locator("img").count(),
-                    iframes=outputs.locator("iframe").count(),
-                    widget_errors=page.get_by_text("Error displaying widget").count(),
-                    tracebacks=page.locator(STDERR, has_text="Traceback").count(),
-                    seconds=seconds,
-                )
+                rendered = _count_outputs(page, n_code, seconds)
                 if screenshot is not None:
-                    open_panel = page.locator(".jp-SideBar.jp-mod-left .lm-TabBar-tab.lm-mod-current")
-                    if open_panel.count():  # the file browser closed: room for the notebook
-                        open_panel.click()
-                    if rendered.iframes:  # the picture shows the first embedded viewer
-                        outputs.locator("iframe").first.scroll_into_view_if_needed()
-                        page.wait_for_timeout(3000)  # its WebGL scene draws
-                    Path(screenshot).parent.mkdir(parents=True, exist_ok=True)
-                    page.screenshot(path=str(screenshot))
+                    _save_screenshot(page, rendered, Path(screenshot))
             finally:
                 browser.close()
     return rendered
+
+
+def _run_every_cell(page, n_code: int) -> float:
+    """Click *Run → Run All Cells* once the kernel has started and wait until every one of the ``n_code`` code
+    cells has run, or one failed and the rest were skipped; the seconds that took."""
+    page.wait_for_selector(".jp-Notebook .jp-CodeCell")
+    _wait_idle(page)  # the kernel has started
+    began = time.monotonic()
+    page.locator("#jp-menu-panel").get_by_text("Run", exact=True).click()
+    page.get_by_text("Run All Cells", exact=True).click()
+    page.wait_for_function(f"""() => {{
+        const failed = [...document.querySelectorAll('{STDERR}')].some(o => o.textContent.includes('Traceback'));
+        return {CELLS_RUN} === {n_code} || (failed && !{PROMPTS}.some(p => p.textContent.includes('*')));
+    }}""")
+    _wait_idle(page)
+    return time.monotonic() - began
+
+
+def _count_outputs(page, n_code: int, seconds: float) -> RenderedNotebook:
+    """What the page shows now, counted."""
+    outputs = page.locator(".jp-OutputArea-output")
+    return RenderedNotebook(
+        code_cells=n_code,
+        cells_run=page.evaluate(CELLS_RUN),
+        sliders=page.locator(".jp-OutputArea .widget-slider").count(),
+        images=outputs.locator("img").count(),
+        iframes=outputs.locator("iframe").count(),
+        widget_errors=page.get_by_text("Error displaying widget").count(),
+        tracebacks=page.locator(STDERR, has_text="Traceback").count(),
+        seconds=seconds,
+    )
+
+
+def _save_screenshot(page, rendered: RenderedNotebook, path: Path) -> None:
+    """A PNG of the page with the file browser closed, scrolled to the first embedded viewer if there is one."""
+    open_panel = page.locator(".jp-SideBar.jp-mod-left .lm-TabBar-tab.lm-mod-current")
+    if open_panel.count():  # the file browser closed: room for the notebook
+        open_panel.click()
+    if rendered.iframes:  # the picture shows the first embedded viewer
+        page.locator(".jp-OutputArea-output").locator("iframe").first.scroll_into_view_if_needed()
+        page.wait_for_timeout(3000)  # its WebGL scene draws
+    path.parent.mkdir(parents=True, exist_ok=True)
+    page.screenshot(path=str(path))
 
 
 def _wait_idle(page) -> None:

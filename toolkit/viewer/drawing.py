@@ -15,6 +15,7 @@ from __future__ import annotations
 from dataclasses import dataclass
 
 import numpy as np
+import numpy.typing as npt
 import trimesh
 import viser
 import viser.transforms as vtf
@@ -113,7 +114,7 @@ def validity_colors(valid: np.ndarray, predicted: np.ndarray | None = None) -> n
     return colors.astype(np.uint8)
 
 
-def probability_colors(probability: np.ndarray) -> np.ndarray:
+def probability_colors(probability: npt.ArrayLike) -> np.ndarray:
     """``(N, 3)`` uint8 colors blending red (p = 0, colliding) to green (p = 1, valid)."""
     p = np.clip(np.asarray(probability, dtype=float), 0.0, 1.0)[:, None]  # (N, 1)
     return np.round((1 - p) * np.array(COLLIDING) + p * np.array(VALID)).astype(np.uint8)
@@ -146,8 +147,10 @@ def add_boxes(
     )
 
 
-def move_boxes(handle: viser.BatchedMeshHandle, boxes: Boxes, colors) -> None:
+def move_boxes(handle: viser.SceneNodeHandle, boxes: Boxes, colors) -> None:
     """Update the poses and colors of a node made by :func:`add_boxes` (same number of boxes)."""
+    if not isinstance(handle, viser.BatchedMeshHandle):
+        raise TypeError(f"move_boxes moves a node made by add_boxes, got a {type(handle).__name__}")
     handle.batched_positions = boxes.centers.astype(np.float32)
     handle.batched_wxyzs = _quaternions(boxes.rotations)
     handle.batched_colors = np.asarray(colors, dtype=np.uint8)

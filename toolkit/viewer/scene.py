@@ -19,6 +19,7 @@ import threading
 from collections.abc import Callable
 from functools import partial
 from pathlib import Path
+from typing import Protocol, runtime_checkable
 
 import numpy as np
 import viser
@@ -28,6 +29,7 @@ from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.geometry.robots import BASES
 from toolkit.geometry.workspace import Workspace
 from toolkit.planning import prm, queries
+from toolkit.planning.local_planner import path_at
 from toolkit.planning.sampling import make_sampler
 from toolkit.viewer import drawing as draw
 from toolkit.viewer.server import srcdoc_iframe, start_server, stop_server
@@ -44,6 +46,13 @@ EVENTS = {  # what a Viewer tells its listeners, and the arguments a listener's 
     "planned": "a PRM result is drawn (path holds its path, or None); (result,)",
     "stopping": "before the server stops (outside the lock); ()",
 }
+
+
+@runtime_checkable
+class Predicts(Protocol):
+    """What a model's checker has beyond are_valid: P(valid) ``(N,)`` of configurations ``Q (N, dof)``."""
+
+    def probability(self, Q) -> np.ndarray: ...
 
 
 class Viewer:
@@ -164,7 +173,7 @@ class Viewer:
                 np.broadcast_to(draw.VALID if self.valid else draw.COLLIDING, (len(boxes), 3)),
             )
             self.probability = self.predicted_valid = None
-            if self.model is not None:
+            if isinstance(self.model, Predicts):  # every model _load_model keeps
                 self.probability = float(self.model.probability(q[None])[0])
                 self.predicted_valid = bool(self.model.are_valid(q[None])[0])
                 draw.move_boxes(
@@ -289,17 +298,7 @@ class Viewer:
         """``(T, dof)`` configurations at fractions ``t`` (T,) of the shown path's length."""
         if self.path is None:
             raise ValueError("no path is shown; plan or show_plan first")
-        lengths = self.robot.distance(self.path[:-1], self.path[1:])  # (P-1,)
-        ends = np.cumsum(lengths)
-        at = np.clip(np.asarray(t, dtype=float).reshape(-1), 0.0, 1.0) * ends[-1]  # (T,) distance travelled
-        segment = np.minimum(np.searchsorted(ends, at), len(lengths) - 1)  # (T,)
-        fraction = (at - (ends[segment] - lengths[segment])) / np.maximum(lengths[segment], 1e-12)
-        return np.stack(
-            [
-                self.robot.interpolate(self.path[s], self.path[s + 1], [f])[0]
-                for s, f in zip(segment, np.clip(fraction, 0.0, 1.0))
-            ]
-        )
+        return path_at(self.robot, self.path, t)
 
     # -- layers, pages, shutdown -----------------------------------------------------------
     def set_visible(self, layer: str, visible: bool) -> None:
@@ -376,6 +375,8 @@ class Viewer:
             model = self.predictor(self.workspace)
         except (ValueError, FileNotFoundError) as err:  # e.g. a checkpoint of another scenario
             return None, str(err)
+        if not isinstance(model, Predicts):
+            return None, f"the predictor's {type(model).__name__} gives no probability(Q)"
         if model.robot.name != self.robot.name:
             return None, f"the model is for robot {model.robot.name!r}, this scenario's is {self.robot.name!r}"
         return model, ""
