@@ -15,6 +15,7 @@ import numpy as np
 from toolkit.geometry import robots, workspace
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
+from toolkit.util import registry
 
 STREAMS = {
     "seen": 0,
@@ -178,15 +179,9 @@ def register(scenario: Scenario, *, replace: bool = False) -> Scenario:
     family_grid = scenario.make_workspace(np.random.default_rng(0)).grid_shape
     if family_grid != tuple(scenario.grid_shape):
         raise ValueError(f"{scenario.family!r} workspaces have the grid {family_grid}, not {scenario.grid_shape}")
-    if scenario.name in SCENARIOS and SCENARIOS[scenario.name] is not scenario and not replace:
-        raise ValueError(f"a scenario called {scenario.name!r} exists; pass replace=True to rebind it")
-    SCENARIOS[scenario.name] = scenario
-    return scenario
+    return registry.bind(SCENARIOS, scenario.name, scenario, kind="scenario", replace=replace)
 
 
 def get(name: str) -> Scenario:
     """The scenario called ``name`` ('2ds', '3do', '3dc7', '3dc9' or a registered one)."""
-    try:
-        return SCENARIOS[name]
-    except KeyError:
-        raise ValueError(f"unknown scenario {name!r}; choose one of {sorted(SCENARIOS)}") from None
+    return registry.lookup(SCENARIOS, name, kind="scenario")

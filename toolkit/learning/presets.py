@@ -32,6 +32,8 @@ from __future__ import annotations
 import hashlib
 from dataclasses import dataclass
 
+from toolkit.util import registry
+
 
 @dataclass(frozen=True)
 class Preset:
@@ -141,15 +143,9 @@ def register(preset: Preset, *, replace: bool = False) -> Preset:
     """
     if not isinstance(preset, Preset):
         raise TypeError(f"expected a Preset, got {type(preset).__name__}")
-    if preset.name in PRESETS and PRESETS[preset.name] is not preset and not replace:
-        raise ValueError(f"a preset called {preset.name!r} exists; pass replace=True to rebind it")
-    PRESETS[preset.name] = preset
-    return preset
+    return registry.bind(PRESETS, preset.name, preset, kind="preset", replace=replace)
 
 
 def get(name: str) -> Preset:
     """The preset called ``name`` ('paper', 'strong' or a registered one)."""
-    try:
-        return PRESETS[name]
-    except KeyError:
-        raise ValueError(f"unknown preset {name!r}; choose one of {sorted(PRESETS)}") from None
+    return registry.lookup(PRESETS, name, kind="preset")

@@ -11,7 +11,8 @@ Reading order:
    counters and trace, and the exact verification of a path (repairing what fails);
 5. :mod:`toolkit.planning.paper_prm` — **Algorithm 1**, as the paper has it, on one page;
 6. :mod:`toolkit.planning.lazy_prm` — the lazy PRM: the best exact planner, and prediction beyond the paper;
-7. :mod:`toolkit.planning.prm` — ``plan(exact, start, goal, ...)``: one entry to either planner;
+7. :mod:`toolkit.planning.options` and :mod:`toolkit.planning.prm` — ``PRMOptions`` (``planner="paper"`` or
+   ``"lazy"``) and ``plan(exact, start, goal, ...)``: one entry to either planner;
 8. :mod:`toolkit.planning.queries` — the paper's query sets and runs over them (§IV-A);
 9. :mod:`toolkit.planning.ompl` — our checkers and samplers inside OMPL, for comparison.
 """

@@ -33,6 +33,7 @@ import numpy as np
 
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.planning.local_planner import last_valid_along, segment_points
+from toolkit.util import registry
 
 
 class Sampler:
@@ -175,16 +176,9 @@ def register_sampler(name: str, sampler: type[Sampler], *, replace: bool = False
     Refuses to rebind a name already taken (the paper's four among them) unless ``replace``;
     returns ``sampler``. Registration lasts for the Python process: register again after a restart.
     """
-    if not (isinstance(name, str) and name.strip()):
-        raise ValueError(f"a sampler's name must be a non-empty string, got {name!r}")
     if not (isinstance(sampler, type) and issubclass(sampler, Sampler)):
         raise TypeError(f"{sampler!r} is not a subclass of toolkit.planning.sampling.Sampler")
-    if name in SAMPLERS and SAMPLERS[name] is not sampler and not replace:
-        raise ValueError(
-            f"a sampler called {name!r} exists ({SAMPLERS[name].__name__}); pass replace=True to rebind it"
-        )
-    SAMPLERS[name] = sampler
-    return sampler
+    return registry.bind(SAMPLERS, name, sampler, kind="sampler", replace=replace)
 
 
 def check_names(names) -> tuple[str, ...]:
@@ -198,9 +192,8 @@ def check_names(names) -> tuple[str, ...]:
 def make_sampler(name: str, checker: CollisionChecker, **options) -> Sampler:
     """The sampler called ``name`` ('BS', 'OB', 'G', 'BT' or a registered one) over ``checker``; ``options`` go to
     its constructor."""
-    if name not in SAMPLERS:
-        raise ValueError(f"unknown sampler {name!r}; choose one of {sorted(SAMPLERS)}")
+    sampler = registry.lookup(SAMPLERS, name, kind="sampler")
     try:
-        return SAMPLERS[name](checker, **options)
+        return sampler(checker, **options)
     except TypeError as err:
         raise ValueError(f"bad options {sorted(options)} for sampler {name!r}: {err}") from None

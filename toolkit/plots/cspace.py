@@ -43,6 +43,19 @@ VIEWS = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
 POSITION_NAMES = ("x", "y", "z")
 
 
+def frame_region(ax, workspace: Workspace) -> None:
+    """A 3D axes framed on the workspace's region, its axes named x, y, z."""
+    lower, upper = workspace.lower, workspace.upper
+    ax.set(
+        xlim=(lower[0], upper[0]),
+        ylim=(lower[1], upper[1]),
+        zlim=(lower[2], upper[2]),
+        xlabel="x",
+        ylabel="y",
+        zlabel="z",
+    )
+
+
 def checker_workspace(checker: CollisionChecker) -> Workspace:
     """The workspace ``checker`` decides in (exact and learned checkers know theirs), or a clear error."""
     workspace = getattr(checker, "workspace", None)
@@ -87,14 +100,7 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
             add_box_3d(ax, aabb_corners(lo, hi), facecolor=color, edgecolor="k", linewidth=0.3, alpha=0.8).set_gid(
                 "block"
             )
-        ax.set(
-            xlim=(workspace.lower[0], workspace.upper[0]),
-            ylim=(workspace.lower[1], workspace.upper[1]),
-            zlim=(workspace.lower[2], workspace.upper[2]),
-            xlabel="x",
-            ylabel="y",
-            zlabel="z",
-        )
+        frame_region(ax, workspace)
         ax.set_box_aspect(workspace.upper - workspace.lower)
         if kinds:
             ax.legend(handles=[Patch(color=colors[k], label=k) for k in kinds], fontsize=8, loc="upper left")

@@ -16,6 +16,7 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.geometry.workspace import MeshWorkspace
 from toolkit.plots import planning
+from toolkit.plots.cspace import frame_region
 
 MESH_COLOR, VOXEL_COLOR = "tab:brown", "tab:blue"
 
@@ -38,14 +39,7 @@ def mesh_and_grid(workspace: MeshWorkspace, title: str = "") -> Figure:
     grid_ax.voxels(x, y, z, occupied, facecolors=VOXEL_COLOR, edgecolors="0.3", linewidth=0.2, alpha=0.5)
     grid_ax.set_title(f"its occupancy grid: {occupied.sum()} of {occupied.size} cells occupied", fontsize=10)
     for ax in (mesh_ax, grid_ax):
-        ax.set(
-            xlim=(workspace.lower[0], workspace.upper[0]),
-            ylim=(workspace.lower[1], workspace.upper[1]),
-            zlim=(workspace.lower[2], workspace.upper[2]),
-            xlabel="x",
-            ylabel="y",
-            zlabel="z",
-        )
+        frame_region(ax, workspace)
         ax.set_box_aspect(workspace.upper - workspace.lower)
         ax.view_init(elev=25, azim=-60)
     if title:
