@@ -143,7 +143,7 @@ def test_ompls_distance_is_our_motion_bound_and_its_motion_checks_at_least_our_s
     Q1 = robot.wrap(Q1)
     a, b = si.allocState(), si.allocState()
     free = exact_checker(q.workspace, robot)
-    free._are_valid = lambda Q: np.ones(len(Q), dtype=bool)  # every state valid: OMPL checks the whole motion
+    free.validity = lambda Q: np.ones(len(Q), dtype=bool)  # every state valid: OMPL checks the whole motion
     si_free = toolkit_ompl.space_information(free, resolution)
     ompl_steps = toolkit_ompl.motion_steps(si, robot, Q0, Q1)  # (20,)
     for q0, q1, steps, counted in zip(Q0, Q1, step_counts(robot, Q0, Q1, resolution), ompl_steps):

@@ -266,7 +266,7 @@ def test_cspace_slice_equals_the_separating_axis_reference(clutter):
 
 def test_a_checker_that_knows_no_workspace_is_a_clear_error():
     class Blind(CollisionChecker):
-        def _are_valid(self, Q):
+        def validity(self, Q):
             return np.ones(len(Q), dtype=bool)
 
     with pytest.raises(TypeError, match="a Blind knows none"):

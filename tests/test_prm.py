@@ -38,8 +38,8 @@ class NoisyChecker(CollisionChecker):
         super().__init__(exact.robot)
         self.exact, self.flip, self._rng = exact, flip, np.random.default_rng(seed)
 
-    def _are_valid(self, Q):
-        return self.exact._are_valid(Q) ^ (self._rng.random(len(Q)) < self.flip)
+    def validity(self, Q):
+        return self.exact.validity(Q) ^ (self._rng.random(len(Q)) < self.flip)
 
 
 def overlap_in_box(p0, p1, lo, hi) -> float:
@@ -515,7 +515,7 @@ class RecordingChecker(CollisionChecker):
         super().__init__(robot)
         self.batches = []
 
-    def _are_valid(self, Q):
+    def validity(self, Q):
         self.batches.append(Q.copy())
         return np.ones(len(Q), bool)
 

@@ -108,9 +108,9 @@ class CallCounter(CollisionChecker):
         super().__init__(exact.robot)
         self.exact, self.few_calls, self.calls = exact, few_calls, 0
 
-    def _are_valid(self, Q):
+    def validity(self, Q):
         self.calls += 1
-        return self.exact._are_valid(Q)
+        return self.exact.validity(Q)
 
 
 def test_a_few_calls_checker_gets_the_same_bridge_samples_in_one_call():

@@ -41,7 +41,7 @@ class Flipped(CollisionChecker):
     def probability(self, Q):
         return np.where(self.exact.are_valid(Q), 0.0, 1.0)
 
-    def _are_valid(self, Q):
+    def validity(self, Q):
         return ~self.exact.are_valid(Q)
 
 

@@ -37,6 +37,9 @@ from toolkit.util.ragged import ragged
 class CollisionChecker:
     """Answers "is this configuration valid?" for batches; counts configurations checked.
 
+    Callers ask :meth:`are_valid` and :meth:`clearances`, which check and count the batch; a
+    checker of your own overrides :meth:`validity` (and :meth:`clearance_bounds`), which count nothing.
+
     ``few_calls``: a call's fixed cost outweighs its cost per configuration (a neural
     network on CPU): callers then ask about configurations they may not need in one
     call rather than in several dependent ones (same answers, fewer calls).
@@ -61,7 +64,7 @@ class CollisionChecker:
         """``(N,)`` bool: whether each configuration of ``Q (N, dof)`` is valid."""
         Q = self.robot.check_configs(Q)
         self.n_checked += len(Q)
-        return self._are_valid(Q)
+        return self.validity(Q)
 
     def is_valid(self, q) -> bool:
         """Whether the single configuration ``q (dof,)`` is valid."""
@@ -84,14 +87,15 @@ class CollisionChecker:
         if not (np.isfinite(cap) and cap > 0):
             raise ValueError(f"cap must be positive and finite, got {cap!r}")
         self.n_bounded += len(Q)
-        return self._clearances(Q, float(cap))
+        return self.clearance_bounds(Q, float(cap))
 
-    def _clearances(self, Q: np.ndarray, cap: float) -> np.ndarray:
-        """A checker that knows no geometry proves nothing: 0 everywhere (the box-world checkers know more)."""
+    def clearance_bounds(self, Q: np.ndarray, cap: float) -> np.ndarray:
+        """``(N,)`` clearance lower bounds of a checked batch; knowing no geometry, 0 (box-world checkers know more)."""
         return np.zeros(len(Q))
 
-    def _are_valid(self, Q: np.ndarray) -> np.ndarray:
-        raise NotImplementedError
+    def validity(self, Q: np.ndarray) -> np.ndarray:
+        """``(N,)`` bool for a checked batch ``Q (N, dof)``: what a subclass decides (:meth:`are_valid` counts it)."""
+        raise NotImplementedError(f"{type(self).__name__} must override validity(Q)")
 
 
 class _BoxWorldChecker(CollisionChecker):
@@ -147,7 +151,7 @@ class _BoxWorldChecker(CollisionChecker):
             ]
         )
 
-    def _are_valid(self, Q: np.ndarray) -> np.ndarray:
+    def validity(self, Q: np.ndarray) -> np.ndarray:
         valid = self.robot.in_bounds(Q)  # (N,)
         idx = np.flatnonzero(valid)
         aabbs = self.robot.link_aabbs(Q[idx])  # (n, L, 2, D)
@@ -163,7 +167,7 @@ class _BoxWorldChecker(CollisionChecker):
         valid[idx[self._links_collide(Q[idx], aabbs, candidates)]] = False
         return valid
 
-    def _clearances(self, Q: np.ndarray, cap: float) -> np.ndarray:
+    def clearance_bounds(self, Q: np.ndarray, cap: float) -> np.ndarray:
         """0 out of bounds; otherwise the smallest over links of a lower bound on its clearance.
 
         A link's clearance is bounded by its distance to the region's walls (exact; a
@@ -343,7 +347,7 @@ class PointRobotChecker(_BoxWorldChecker):
         self._free_hi = np.minimum(robot.upper, workspace.upper - half)  # (2,)
         self._c_obstacles = np.stack([workspace.boxes[:, 0] - half, workspace.boxes[:, 1] + half], axis=1)  # (K, 2, 2)
 
-    def _are_valid(self, Q: np.ndarray) -> np.ndarray:
+    def validity(self, Q: np.ndarray) -> np.ndarray:
         x, y = np.ascontiguousarray(Q[:, 0]), np.ascontiguousarray(Q[:, 1])  # (N,) each
         (x_lo, y_lo), (x_hi, y_hi) = self._free_lo, self._free_hi
         valid = (x >= x_lo) & (x <= x_hi) & (y >= y_lo) & (y <= y_hi)

@@ -65,7 +65,7 @@ class LearnedChecker(CollisionChecker):
         Q = self.robot.check_configs(Q)
         return np.where(self.robot.in_bounds(Q), expit(self._margins(Q).astype(float)), 0.0)
 
-    def _are_valid(self, Q: np.ndarray) -> np.ndarray:
+    def validity(self, Q: np.ndarray) -> np.ndarray:
         return self.robot.in_bounds(Q) & (self._margins(Q) >= self._margin_threshold)
 
     def _margins(self, Q: np.ndarray) -> np.ndarray:
