@@ -155,8 +155,11 @@ def test_a_signal_during_planning_stops_every_process_and_keeps_the_finished_sam
 
 def test_sigterm_while_training_leaves_the_output_as_it_was(tmp_path):
     out = tmp_path / "ckpt"
+    # Many MLP epochs (tens of seconds of training), so the signal lands in training however late a busy machine
+    # lets us see it begin; a quick run would finish first, and the signal would meet the process on its way out.
+    train = ["train", "--scenario", "2ds", "--quick", "--mlp-epochs", "3000", "--out", str(out)]
     run = subprocess.Popen(
-        [sys.executable, "-m", "toolkit", "train", "--scenario", "2ds", "--quick", "--out", str(out)],
+        [sys.executable, "-m", "toolkit", *train],
         stdout=subprocess.DEVNULL,
         stderr=subprocess.PIPE,
         text=True,
@@ -166,7 +169,7 @@ def test_sigterm_while_training_leaves_the_output_as_it_was(tmp_path):
     reader.start()
     try:
         deadline = time.monotonic() + 600
-        while "CAE (paper)" not in "".join(printed):  # its progress bar: training has begun
+        while "MLP (paper)" not in "".join(printed):  # its progress bar: the MLP's training has begun
             assert run.poll() is None and time.monotonic() < deadline, "".join(printed)[-3000:]
             time.sleep(0.2)
         run.send_signal(signal.SIGTERM)
