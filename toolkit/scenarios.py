@@ -84,6 +84,28 @@ class Scenario:
 MLP_3D = (50, 40, 30, 20, 10, 5)
 CAE_3DC = (1000, 800, 600, 400, 200, 100, 50)
 
+
+def clutter(name: str, title: str, robot: BoxRobot) -> Scenario:
+    """A 3D clutter scenario (3DC): the paper's counts and sizes, the same for both box chains (§IV-A, §IV-B)."""
+    return Scenario(
+        name,
+        title,
+        "3dc",
+        robot,
+        (11, 11, 11),
+        n_seen=50,
+        n_seen_test=30,
+        n_unseen=10,
+        samples_per_workspace=200,
+        cae_hidden=CAE_3DC,
+        mlp_hidden=MLP_3D,
+        plan_samples=400,
+        query_workspaces=100,
+        queries_per_workspace=1,
+        cae_max_lr=1e-4,
+    )  # 2000 grids at 1e-3: the CAE diverges (docs/fidelity.md)
+
+
 SCENARIOS: dict[str, Scenario] = {
     s.name: s
     for s in [
@@ -124,40 +146,8 @@ SCENARIOS: dict[str, Scenario] = {
             cae_max_batch=10,  # 147M parameters: each step is slow (docs/fidelity.md §3)
             cae_max_lr=1e-4,
         ),  # at 1e-3 its CAE diverges
-        Scenario(
-            "3dc7",
-            "3D clutter, 7-DoF box chain",
-            "3dc",
-            robots.box_chain(1),
-            (11, 11, 11),
-            n_seen=50,
-            n_seen_test=30,
-            n_unseen=10,
-            samples_per_workspace=200,
-            cae_hidden=CAE_3DC,
-            mlp_hidden=MLP_3D,
-            plan_samples=400,
-            query_workspaces=100,
-            queries_per_workspace=1,
-            cae_max_lr=1e-4,
-        ),  # 2000 grids at 1e-3: the CAE diverges (docs/fidelity.md)
-        Scenario(
-            "3dc9",
-            "3D clutter, 9-DoF box chain",
-            "3dc",
-            robots.box_chain(3),
-            (11, 11, 11),
-            n_seen=50,
-            n_seen_test=30,
-            n_unseen=10,
-            samples_per_workspace=200,
-            cae_hidden=CAE_3DC,
-            mlp_hidden=MLP_3D,
-            plan_samples=400,
-            query_workspaces=100,
-            queries_per_workspace=1,
-            cae_max_lr=1e-4,
-        ),  # 2000 grids at 1e-3: the CAE diverges (docs/fidelity.md)
+        clutter("3dc7", "3D clutter, 7-DoF box chain", robots.box_chain(1)),
+        clutter("3dc9", "3D clutter, 9-DoF box chain", robots.box_chain(3)),
     ]
 }
 
