@@ -2,7 +2,8 @@
 
 The checkers must agree on random configurations and on constructed contacts: a link
 exactly touching an obstacle is in collision (boxes are closed sets), a gap of 1e-6 is
-free, an overlap of 1e-6 is not.
+free, an overlap of 1e-6 is not. The constructed contacts hold the compiled checker too
+(tests/test_compiled_checker.py holds it to FCL at scale).
 """
 
 import numpy as np
@@ -14,7 +15,9 @@ from scipy.optimize import linprog
 from toolkit import scenarios
 from toolkit.geometry import robots
 from toolkit.geometry.collision import (
+    CompiledChecker,
     ExactChecker,
+    FCLChecker,
     PointRobotChecker,
     SeparatingAxisChecker,
     exact_checker,
@@ -61,8 +64,8 @@ def near_contact(robot, ws, rng, n):
 
 
 def checkers(ws, robot):
-    found = [ExactChecker(ws, robot), SeparatingAxisChecker(ws, robot)]
-    if robot.base == "point2d":
+    found = [FCLChecker(ws, robot), SeparatingAxisChecker(ws, robot), CompiledChecker(ws, robot)]
+    if robot.base == "point2d" and robot.dof == 2:
         found.append(PointRobotChecker(ws, robot))
     return found
 
@@ -83,7 +86,7 @@ def test_fcl_and_separating_axes_agree_on_random_configurations(name, seed):
     robot, rng = scenario.robot, np.random.default_rng(seed)
     ws = scenario.make_workspace(rng)
     Q = np.concatenate([robot.sample(rng, 2000), near_contact(robot, ws, rng, 1000)])
-    by_fcl, by_sat = ExactChecker(ws, robot).are_valid(Q), SeparatingAxisChecker(ws, robot).are_valid(Q)
+    by_fcl, by_sat = FCLChecker(ws, robot).are_valid(Q), SeparatingAxisChecker(ws, robot).are_valid(Q)
     np.testing.assert_array_equal(by_fcl, by_sat)
     assert 0.05 < by_fcl.mean() < 0.95
     if robot.dim == 3:  # the narrow phase had real work: valid configurations whose link bounds meet a block
@@ -108,11 +111,11 @@ def test_point_robot_checker_agrees_with_fcl_on_random_and_grazing_configuration
     outward[rows, axis] = np.where(side == 1, EPS, -EPS)
     Q = np.concatenate([robot.sample(rng, 2000), touching, touching + outward, touching - outward])
     found = answers(ws, robot, Q)
-    np.testing.assert_array_equal(found[0], found[2])  # FCL == numpy
-    np.testing.assert_array_equal(found[1], found[2])  # separating axes == numpy
-    assert not found[2, 2000:2500].any()  # touching a block is a collision
-    assert not found[2, 3000:].any()  # so is overlapping it by 1e-6
-    assert found[2, 2500:3000].mean() > 0.1  # 1e-6 away is often free (unless another block or a wall is there)
+    for other in found[:3]:  # FCL, separating axes, compiled == numpy
+        np.testing.assert_array_equal(other, found[3])
+    assert not found[3, 2000:2500].any()  # touching a block is a collision
+    assert not found[3, 3000:].any()  # so is overlapping it by 1e-6
+    assert found[3, 2500:3000].mean() > 0.1  # 1e-6 away is often free (unless another block or a wall is there)
 
 
 # -- constructed contacts ------------------------------------------------------------------------
@@ -254,14 +257,14 @@ def test_youbot_must_stay_in_the_office_region():
     bowing = upright.copy()
     bowing[4:6] = [1.5, 1.6]  # shoulder flat, elbow bent straight down: the gripper goes through the floor
     assert robot.link_aabbs(bowing)[0, -1, 0, 2] < 0
-    valid = ExactChecker(empty, robot).are_valid([upright, by_the_wall, bowing])
-    np.testing.assert_array_equal(valid, [True, False, False])
+    for checker in checkers(empty, robot):
+        np.testing.assert_array_equal(checker.are_valid([upright, by_the_wall, bowing]), [True, False, False])
 
 
 def test_counter_and_single_configurations():
     scenario = scenarios.get("3dc7")
     ws = scenario.make_workspace(np.random.default_rng(0))
-    checker = ExactChecker(ws, scenario.robot)
+    checker = FCLChecker(ws, scenario.robot)
     Q = scenario.robot.sample(np.random.default_rng(1), 10)
     batch = checker.are_valid(Q)
     assert checker.n_checked == 10
@@ -277,7 +280,7 @@ def test_counter_and_single_configurations():
 
 def test_bad_input_is_named():
     scenario = scenarios.get("3dc9")
-    checker = ExactChecker(scenario.make_workspace(np.random.default_rng(0)), scenario.robot)
+    checker = FCLChecker(scenario.make_workspace(np.random.default_rng(0)), scenario.robot)
     with pytest.raises(ValueError, match=r"must have shape \(N, 9\)"):
         checker.are_valid(np.zeros((4, 7)))
     with pytest.raises(ValueError, match="NaN or infinite"):
@@ -290,7 +293,7 @@ def test_bad_input_is_named():
 def test_robot_and_workspace_dimensions_must_match():
     plane = scenarios.get("2ds").make_workspace(np.random.default_rng(0))
     room = scenarios.get("3dc7").make_workspace(np.random.default_rng(0))
-    for make in (ExactChecker, SeparatingAxisChecker):
+    for make in (FCLChecker, SeparatingAxisChecker, CompiledChecker):
         with pytest.raises(ValueError, match="robot 'chain9' is 3D but the workspace is 2D"):
             make(plane, robots.box_chain(3))
         with pytest.raises(ValueError, match="robot 'point2d' is 2D but the workspace is 3D"):
@@ -303,7 +306,8 @@ def test_exact_checker_picks_the_fastest_exact_one():
     plane = scenarios.get("2ds").make_workspace(np.random.default_rng(0))
     assert type(exact_checker(plane, robots.point_robot())) is PointRobotChecker
     room = scenarios.get("3dc9").make_workspace(np.random.default_rng(0))
-    assert type(exact_checker(room, robots.box_chain(3))) is ExactChecker
+    assert type(exact_checker(room, robots.box_chain(3))) is CompiledChecker
+    assert ExactChecker is FCLChecker  # the reference's first name
 
 
 # -- clearance bounds: below FCL's distances, and not vacuous --------------------------------

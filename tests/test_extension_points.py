@@ -11,7 +11,8 @@ import pytest
 from toolkit import cli, scenarios
 from toolkit.geometry import robots
 from toolkit.geometry.collision import (
-    ExactChecker,
+    CompiledChecker,
+    FCLChecker,
     PointRobotChecker,
     SeparatingAxisChecker,
     exact_checker,
@@ -117,16 +118,17 @@ def test_position_dofs_come_first_for_every_base():
     assert encoding.position_dofs(planar_arm()) == 2  # not 5: the arm's joints do not wrap, yet are no positions
 
 
-def test_a_2d_arm_is_checked_by_fcl_and_agrees_with_separating_axes():
+def test_a_2d_arm_is_checked_compiled_and_agrees_with_fcl_and_separating_axes():
     arm = planar_arm()
     ws = scenarios.get("2ds").make_workspace(np.random.default_rng(0))
     checker = exact_checker(ws, arm)
-    assert type(checker) is ExactChecker  # the numpy shortcut is for the lone square only
+    assert type(checker) is CompiledChecker  # the numpy shortcut is for the lone square only
     assert type(exact_checker(ws, robots.point_robot())) is PointRobotChecker
     Q = arm.sample(np.random.default_rng(1), 3000)
     valid = checker.are_valid(Q)
     assert 0.2 < valid.mean() < 0.9
     np.testing.assert_array_equal(valid, SeparatingAxisChecker(ws, arm).are_valid(Q))
+    np.testing.assert_array_equal(valid, FCLChecker(ws, arm).are_valid(Q))
 
 
 def test_a_2d_robots_joints_must_turn_in_the_plane_and_have_limits():

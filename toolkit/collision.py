@@ -3,7 +3,9 @@ written against it; the code is in :mod:`toolkit.geometry.collision`."""
 
 from toolkit.geometry.collision import (
     CollisionChecker,
+    CompiledChecker,
     ExactChecker,
+    FCLChecker,
     MeshChecker,
     PointRobotChecker,
     SeparatingAxisChecker,
@@ -12,7 +14,9 @@ from toolkit.geometry.collision import (
 
 __all__ = [
     "CollisionChecker",
+    "CompiledChecker",
     "ExactChecker",
+    "FCLChecker",
     "MeshChecker",
     "PointRobotChecker",
     "SeparatingAxisChecker",

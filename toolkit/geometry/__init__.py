@@ -8,7 +8,14 @@ Reading order:
 2. :mod:`toolkit.geometry.workspace` — ``Workspace``: a region with axis-aligned blocks, its −1/+1
    occupancy grid, the seeded generators of 2DS, 3DO and 3DC; ``from_mesh`` for a triangle mesh;
 3. :mod:`toolkit.geometry.meshes` — triangle meshes as obstacles (fcl BVH, inside tests, voxels);
-4. :mod:`toolkit.geometry.collision` — the checker interface (``are_valid(Q)``, clearance bounds)
-   and the exact checkers: python-fcl for blocks and for meshes, a separating-axis reference, and
-   interval tests in numpy for the point robot; ``exact_checker`` picks the fastest.
+4. :mod:`toolkit.geometry.checker` — the checker interface: ``are_valid(Q)``, clearance bounds;
+5. :mod:`toolkit.geometry.box_world` — what the box-world checkers share (bounds, region, a grid of
+   cells listing the obstacles near each, clearance bounds), the point robot's interval tests and the
+   separating-axis reference in numpy;
+6. :mod:`toolkit.geometry.fcl_checker` — python-fcl: ``FCLChecker`` (also ``ExactChecker``), the
+   reference, and ``MeshChecker`` for meshes;
+7. :mod:`toolkit.geometry.compiled` and :mod:`toolkit.geometry.kernels` — ``CompiledChecker``:
+   kinematics and separating axes compiled with numba, one loop over configurations, the default;
+8. :mod:`toolkit.geometry.collision` — all of them in one place, and ``exact_checker``, which picks the
+   fastest: compiled for box worlds, numpy for the point robot, FCL for meshes.
 """

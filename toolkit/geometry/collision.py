@@ -1,400 +1,49 @@
 """Collision checking: one interface, exact implementations (paper §II-B's "black box").
 
-As in OMPL's ``StateValidityChecker``, everything that needs validity asks a
-:class:`CollisionChecker` for whole batches: ``are_valid(Q (N, dof)) -> (N,) bool``.
-The exact checkers here and the learned one (:mod:`toolkit.learning.learned`) share it, so
-planning with or without prediction differs in one argument.
+Every checker answers ``are_valid(Q (N, dof)) -> (N,) bool`` (:class:`CollisionChecker`,
+in :mod:`toolkit.geometry.checker`). A configuration is valid when it lies within the
+robot's bounds, every link lies inside the workspace region, and no link box touches an
+obstacle (closed sets: touching counts as collision, as in FCL). The exact checkers:
 
-A configuration is valid when it lies within the robot's bounds, every link lies
-inside the workspace region, and no link box touches an obstacle box (boxes are
-closed sets: touching counts as collision, as in FCL).
+- :class:`CompiledChecker` (:mod:`toolkit.geometry.compiled`, :mod:`toolkit.geometry.kernels`):
+  kinematics and separating axes compiled with numba, one loop over configurations; the
+  default for box worlds.
+- :class:`FCLChecker` (``ExactChecker``, its first name; :mod:`toolkit.geometry.fcl_checker`):
+  python-fcl, the reference the tests hold the others to. :class:`MeshChecker`: python-fcl
+  against a triangle mesh.
+- :class:`PointRobotChecker` and :class:`SeparatingAxisChecker` (:mod:`toolkit.geometry.box_world`):
+  interval tests for the 2D point robot, and the separating-axis reference, in numpy.
 
-- :class:`ExactChecker`: python-fcl, the ground truth. Kinematics and a
-  conservative axis-aligned prefilter run batched in numpy; only links whose
-  bounds meet an obstacle's are handed to FCL's ``DynamicAABBTreeCollisionManager``.
-- :class:`MeshChecker`: the same against a triangle mesh (a
-  :class:`~toolkit.geometry.workspace.MeshWorkspace`): FCL's ``BVHModel`` for links that touch
-  the surface, winding numbers for links wholly inside a solid (:class:`toolkit.geometry.meshes.Solid`).
-- :class:`PointRobotChecker`: the 2D point robot is an axis-aligned square, so an
-  interval test against every block is exact; vectorized numpy.
-- :class:`SeparatingAxisChecker`: an independent reference for tests, the
-  separating-axis theorem for oriented vs axis-aligned boxes, vectorized numpy.
+:func:`exact_checker` picks the fastest for a workspace and robot.
 """
 
 from __future__ import annotations
 
-from collections.abc import Mapping
-from types import MappingProxyType
-
-import fcl
-import numpy as np
-
+from toolkit.geometry.box_world import BoxWorldChecker, PointRobotChecker, SeparatingAxisChecker
+from toolkit.geometry.checker import CollisionChecker
+from toolkit.geometry.compiled import CompiledChecker
+from toolkit.geometry.fcl_checker import ExactChecker, FCLChecker, MeshChecker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import MeshWorkspace, Workspace
-from toolkit.util.ragged import ragged
 
-
-class CollisionChecker:
-    """Answers "is this configuration valid?" for batches; counts configurations checked.
-
-    Callers ask :meth:`are_valid` and :meth:`clearances`, which check and count the batch; a
-    checker of your own overrides :meth:`validity` (and :meth:`clearance_bounds`), which count nothing.
-
-    ``few_calls``: a call's fixed cost outweighs its cost per configuration (a neural
-    network on CPU): callers then ask about configurations they may not need in one
-    call rather than in several dependent ones (same answers, fewer calls).
-    ``certificates_pay``: bounding a clearance costs less than the checks it can spare
-    (``local_planner.certify_edges``); False where a check is a few comparisons.
-    ``planner_options``: settings a planner should use when this checker decides its
-    samples (a learned checker: its recipe's, ``Preset.planner_options``); none for an
-    exact checker. Like OMPL's validity-checker specs, the planner reads them without
-    knowing what kind of checker it holds.
-    """
-
-    few_calls = False
-    certificates_pay = True
-    planner_options: Mapping[str, object] = MappingProxyType({})
-
-    def __init__(self, robot: BoxRobot):
-        self.robot = robot
-        self.n_checked = 0  # configurations asked about since construction or reset_count()
-        self.n_bounded = 0  # configurations whose clearance was bounded, likewise
-
-    def are_valid(self, Q) -> np.ndarray:
-        """``(N,)`` bool: whether each configuration of ``Q (N, dof)`` is valid."""
-        Q = self.robot.check_configs(Q)
-        self.n_checked += len(Q)
-        return self.validity(Q)
-
-    def is_valid(self, q) -> bool:
-        """Whether the single configuration ``q (dof,)`` is valid."""
-        q = np.asarray(q, dtype=float)
-        if q.ndim != 1:
-            raise ValueError(f"q must have shape ({self.robot.dof},), got {q.shape}")
-        return bool(self.are_valid(q[None])[0])
-
-    def reset_count(self) -> None:
-        self.n_checked = self.n_bounded = 0
-
-    def clearances(self, Q, cap: float) -> np.ndarray:
-        """``(N,)`` a lower bound on each configuration's clearance, in ``[0, cap]``.
-
-        The clearance is how far some point of the robot must move before the robot
-        touches an obstacle or leaves the region (its distance to them, leaving out walls
-        it never moves towards); > 0 proves the configuration valid.
-        """
-        Q = self.robot.check_configs(Q)
-        if not (np.isfinite(cap) and cap > 0):
-            raise ValueError(f"cap must be positive and finite, got {cap!r}")
-        self.n_bounded += len(Q)
-        return self.clearance_bounds(Q, float(cap))
-
-    def clearance_bounds(self, Q: np.ndarray, cap: float) -> np.ndarray:
-        """``(N,)`` clearance lower bounds of a checked batch; knowing no geometry, 0 (box-world checkers know more)."""
-        return np.zeros(len(Q))
-
-    def validity(self, Q: np.ndarray) -> np.ndarray:
-        """``(N,)`` bool for a checked batch ``Q (N, dof)``: what a subclass decides (:meth:`are_valid` counts it)."""
-        raise NotImplementedError(f"{type(self).__name__} must override validity(Q)")
-
-
-class _BoxWorldChecker(CollisionChecker):
-    """Shared exact steps: bounds, region, then a conservative voxel prefilter per link.
-
-    The prefilter marks every cell of a grid that an obstacle touches; cells are at
-    least as wide as any link's axis-aligned bounds, so a link's bounds cover at most
-    two cells per axis and 2^D look-ups tell whether it may touch an obstacle.
-    """
-
-    def __init__(self, workspace: Workspace, robot: BoxRobot):
-        if workspace.dim != robot.dim:
-            raise ValueError(f"robot {robot.name!r} is {robot.dim}D but the workspace is {workspace.dim}D")
-        super().__init__(robot)
-        self.workspace = workspace
-        self._cell = 2 * float(np.max(np.linalg.norm(robot.half_extents, axis=1)))  # widest link bounds
-        self._shape = tuple(np.maximum(np.ceil((workspace.upper - workspace.lower) / self._cell).astype(int), 1) + 1)
-        self._marked = self._box_lists(grow=0.0)[0].reshape(self._shape) > 0  # cells an obstacle touches
-        self._near: dict[float, tuple] = {}  # clearances: _box_lists(cap), by cap
-
-    def _box_lists(self, grow: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Per grid cell, the obstacle boxes that touch it once grown by ``grow`` on every side.
-
-        ``count (C,)`` and ``first (C,)`` per flattened cell, ``members (B,)``: cell c's boxes
-        are ``members[first[c]:first[c] + count[c]]``.
-        """
-        pairs = []  # (2, cells) per box: rows cell and box
-        boxes = self.workspace.boxes  # (K, 2, D)
-        for box, (lo, hi) in enumerate(zip(self._cells(boxes[:, 0] - grow), self._cells(boxes[:, 1] + grow))):
-            block = np.mgrid[tuple(slice(a, b + 1) for a, b in zip(lo, hi))].reshape(len(lo), -1)  # (D, cells)
-            pairs.append(np.stack([np.ravel_multi_index(tuple(block), self._shape), np.full(block.shape[1], box)]))
-        cells = np.concatenate(pairs, axis=1) if pairs else np.zeros((2, 0), dtype=int)  # (2, B)
-        cells = cells[:, np.argsort(cells[0], kind="stable")]
-        count = np.bincount(cells[0], minlength=int(np.prod(self._shape)))
-        return count, np.cumsum(count) - count, cells[1]
-
-    def _cells(self, points: np.ndarray) -> np.ndarray:
-        """Integer cell index of each point ``(..., D)``, clipped to the grid."""
-        index = np.floor((points - self.workspace.lower) / self._cell).astype(int)
-        return np.clip(index, 0, np.array(self._shape) - 1)
-
-    def _covered_cells(self, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
-        """``(2^D, M)`` flat indices of the cells that bounds ``lo, hi (M, D)`` cover (repeats where
-        they span one cell).
-
-        Bounds are no wider than a cell, so they cover at most two cells per axis: their 2^D corners' cells.
-        """
-        lo, hi = self._cells(lo), self._cells(hi)  # (M, D) each
-        return np.stack(
-            [
-                np.ravel_multi_index(tuple(np.where(np.array(corner, dtype=bool), hi, lo).T), self._shape)
-                for corner in np.ndindex(*(2,) * self.robot.dim)
-            ]
-        )
-
-    def validity(self, Q: np.ndarray) -> np.ndarray:
-        valid = self.robot.in_bounds(Q)  # (N,)
-        idx = np.flatnonzero(valid)
-        aabbs = self.robot.link_aabbs(Q[idx])  # (n, L, 2, D)
-        inside = np.all(
-            (aabbs[:, :, 0] >= self.workspace.lower) & (aabbs[:, :, 1] <= self.workspace.upper), axis=(1, 2)
-        )
-        valid[idx[~inside]] = False
-        idx, aabbs = idx[inside], aabbs[inside]
-        cells = self._covered_cells(
-            aabbs[:, :, 0].reshape(-1, self.robot.dim), aabbs[:, :, 1].reshape(-1, self.robot.dim)
-        )
-        candidates = self._marked.reshape(-1)[cells].any(axis=0).reshape(aabbs.shape[:2])  # (n, L): may touch a block
-        valid[idx[self._links_collide(Q[idx], aabbs, candidates)]] = False
-        return valid
-
-    def clearance_bounds(self, Q: np.ndarray, cap: float) -> np.ndarray:
-        """0 out of bounds; otherwise the smallest over links of a lower bound on its clearance.
-
-        A link's clearance is bounded by its distance to the region's walls (exact; a
-        floor or ceiling that a link never moves towards, ``robot.level_links``, does not
-        count) and, for each obstacle box listed in the grid cells its bounds cover (boxes
-        grown by ``cap``: farther ones cannot matter), the larger of two lower bounds: the
-        distance between the link's axis-aligned bounds and the box, and the gap between
-        their projections on any of the link's own axes (a projection on a unit axis
-        brings points no closer: the separating-axis theorem's measure).
-        """
-        clearance = np.zeros(len(Q))
-        idx = np.flatnonzero(self.robot.in_bounds(Q))
-        centers, rotations, half = self.robot.link_boxes(Q[idx])  # (n, L, D), (n, L, D, D), (L, D)
-        n_links, d = half.shape
-        centers, rotations = centers.reshape(-1, d), rotations.reshape(-1, d, d)  # (n * L, ...): every link box
-        reach = np.einsum("pij,pj->pi", np.abs(rotations), np.tile(half, (len(idx), 1)))  # (n * L, D)
-        lo, hi = centers - reach, centers + reach  # the links' bounds
-        walls = np.minimum(lo - self.workspace.lower, self.workspace.upper - hi).reshape(len(idx), n_links, d)
-        level = walls[:, : self.robot.level_links, -1]  # links that never move vertically: floor and ceiling
-        walls[:, : self.robot.level_links, -1] = np.where(level >= 0, np.inf, level)
-        link = walls.min(axis=-1).reshape(-1)  # (n * L,)
-        if cap not in self._near:
-            self._near[cap] = self._box_lists(grow=cap)
-        count, first, members = self._near[cap]
-        cell = self._covered_cells(lo, hi).reshape(-1)  # (2^D * n * L,)
-        owner, ordinal = ragged(count[cell])
-        pair_link, pair_box = (
-            owner % len(link),
-            members[first[cell[owner]] + ordinal],
-        )  # (P,) each; repeats are harmless
-        boxes = self.workspace.boxes  # (K, 2, D)
-        gap = np.maximum(
-            np.maximum(boxes[pair_box, 0] - hi[pair_link], lo[pair_link] - boxes[pair_box, 1]), 0
-        )  # (P, D)
-        bound = np.linalg.norm(gap, axis=-1)  # (P,)
-        near = np.flatnonzero(bound < cap)
-        j, k = pair_link[near], pair_box[near]
-        axes = np.swapaxes(rotations[j], -1, -2)  # (R, D, D): rows are the link's axes
-        box_center, box_half = boxes[k].mean(axis=1), (boxes[k, 1] - boxes[k, 0]) / 2  # (R, D)
-        along = (
-            np.abs(np.einsum("rad,rd->ra", axes, centers[j] - box_center))
-            - half[j % n_links]
-            - np.einsum("rad,rd->ra", np.abs(axes), box_half)
-        )  # (R, D): gaps along link axes
-        bound[near] = np.maximum(bound[near], along.max(axis=1))
-        np.minimum.at(link, pair_link, bound)
-        clearance[idx] = link.reshape(len(idx), n_links).min(axis=1)
-        return np.clip(clearance, 0.0, cap)
-
-    def _links_collide(self, Q: np.ndarray, aabbs: np.ndarray, candidates: np.ndarray) -> np.ndarray:
-        """(n,) whether any link of each configuration meets an obstacle; ``candidates (n, L)`` may."""
-        raise NotImplementedError
-
-
-class ExactChecker(_BoxWorldChecker):
-    """Ground truth with python-fcl: obstacles in a ``DynamicAABBTreeCollisionManager``."""
-
-    def __init__(self, workspace: Workspace, robot: BoxRobot):
-        if isinstance(workspace, MeshWorkspace):
-            raise ValueError(
-                "a mesh workspace's obstacles are its triangles, not its boxes: "
-                "use exact_checker(workspace, robot) or MeshChecker"
-            )
-        super().__init__(workspace, robot)
-        self._world = fcl.DynamicAABBTreeCollisionManager()
-        self._world.registerObjects([_fcl_box(lo, hi) for lo, hi in workspace.boxes])
-        self._world.setup()
-        self._links = _fcl_links(robot)
-
-    def _links_collide(self, Q, aabbs, candidates):
-        if not candidates.any():
-            return np.zeros(len(Q), dtype=bool)
-        some = np.flatnonzero(candidates.any(axis=1))  # kinematics only where FCL will be asked
-        hit = np.zeros(len(Q), dtype=bool)
-        centers, rotations, _ = self.robot.link_boxes(Q[some])
-        if self.robot.dim == 2:  # lift to 3D: obstacles become slabs z in [-1, 1]
-            centers = np.concatenate([centers, np.zeros(centers.shape[:2] + (1,))], axis=-1)
-            eye = np.broadcast_to(np.eye(3), rotations.shape[:2] + (3, 3)).copy()
-            eye[..., :2, :2] = rotations
-            rotations = eye
-        request = fcl.CollisionRequest()
-        for i, l in zip(*np.nonzero(candidates[some])):
-            if hit[some[i]]:
-                continue
-            link = self._links[l]
-            link.setTransform(fcl.Transform(rotations[i, l], centers[i, l]))
-            data = fcl.CollisionData(request=request)
-            self._world.collide(link, data, _first_contact)
-            hit[some[i]] = data.result.is_collision
-        return hit
-
-
-class MeshChecker(_BoxWorldChecker):
-    """Ground truth against a triangle mesh: a :class:`~toolkit.geometry.workspace.MeshWorkspace`'s triangles.
-
-    The prefilter and the clearance bounds use the bounds of the mesh's parts (they
-    cover it, so both stay conservative). A link box that passes them is valid when it
-    touches no triangle (FCL, box against the mesh's ``BVHModel``) and its centre lies
-    outside every closed part (:meth:`toolkit.geometry.meshes.Solid.inside`): a box that touches no
-    triangle lies wholly inside or wholly outside, and FCL alone would miss the first.
-    """
-
-    def __init__(self, workspace: MeshWorkspace, robot: BoxRobot):
-        if not isinstance(workspace, MeshWorkspace):
-            raise ValueError(
-                f"MeshChecker needs a MeshWorkspace (toolkit.workspace.from_mesh), got {type(workspace).__name__}"
-            )
-        super().__init__(workspace, robot)
-        self._solid = workspace.solid
-        self._links = _fcl_links(robot)
-
-    def _links_collide(self, Q, aabbs, candidates):
-        hit = np.zeros(len(Q), dtype=bool)
-        some = np.flatnonzero(candidates.any(axis=1))
-        if not len(some):
-            return hit
-        centers, rotations, _ = self.robot.link_boxes(Q[some])  # (n, L, 3), (n, L, 3, 3)
-        request = fcl.CollisionRequest()
-        pairs = np.transpose(np.nonzero(candidates[some]))  # (P, 2): (configuration, link)
-        clear = []  # candidate pairs whose link touches no triangle
-        for p, (i, l) in enumerate(pairs):
-            if hit[some[i]]:
-                continue
-            link = self._links[l]
-            link.setTransform(fcl.Transform(rotations[i, l], centers[i, l]))
-            if fcl.collide(link, self._solid.object, request, fcl.CollisionResult()):
-                hit[some[i]] = True
-            else:
-                clear.append(p)
-        i, l = pairs[clear].T if clear else (np.zeros(0, int), np.zeros(0, int))
-        np.logical_or.at(hit, some[i], self._solid.inside(centers[i, l]))
-        return hit
-
-
-def _fcl_links(robot: BoxRobot) -> list:
-    """One FCL box per link, posed later; a 2D robot's squares become unit-thick slabs (FCL is 3D)."""
-    half3 = np.array([link.half_extents for link in robot.links], dtype=float)  # (L, 3)
-    if robot.dim == 2:
-        half3[:, 2] = 0.5
-    return [fcl.CollisionObject(fcl.Box(*(2 * h))) for h in half3]
-
-
-def _first_contact(o1, o2, data) -> bool:
-    """Broadphase callback: test one candidate pair, and stop the search at the first contact.
-
-    (FCL's default callback never sets ``done`` for a default request, so it would test
-    every overlapping pair after a hit.)
-    """
-    if not data.done:
-        data.done = fcl.collide(o1, o2, data.request, data.result) > 0
-    return data.done
-
-
-def _fcl_box(lo: np.ndarray, hi: np.ndarray) -> fcl.CollisionObject:
-    lo3, hi3 = np.zeros(3) - 1.0, np.zeros(3) + 1.0  # 2D boxes: slabs z in [-1, 1]
-    lo3[: len(lo)], hi3[: len(hi)] = lo, hi
-    return fcl.CollisionObject(fcl.Box(*(hi3 - lo3)), fcl.Transform((lo3 + hi3) / 2))
-
-
-class PointRobotChecker(_BoxWorldChecker):
-    """Exact numpy check for the 2D point robot.
-
-    Its square never turns, so its configuration-space obstacles are the blocks grown
-    by its half extents (a Minkowski sum of boxes is a box), and the free region is the
-    workspace shrunk by the same amount: four comparisons per block on contiguous arrays.
-    A check is then cheaper than a clearance bound: certificates do not pay.
-    """
-
-    certificates_pay = False
-
-    def __init__(self, workspace: Workspace, robot: BoxRobot):
-        if robot.base != "point2d" or robot.dof != 2:
-            raise ValueError(f"PointRobotChecker needs the 2D point robot, got {robot.name!r}")
-        super().__init__(workspace, robot)
-        half = robot.half_extents[0]  # (2,)
-        self._free_lo = np.maximum(robot.lower, workspace.lower + half)  # (2,)
-        self._free_hi = np.minimum(robot.upper, workspace.upper - half)  # (2,)
-        self._c_obstacles = np.stack([workspace.boxes[:, 0] - half, workspace.boxes[:, 1] + half], axis=1)  # (K, 2, 2)
-
-    def validity(self, Q: np.ndarray) -> np.ndarray:
-        x, y = np.ascontiguousarray(Q[:, 0]), np.ascontiguousarray(Q[:, 1])  # (N,) each
-        (x_lo, y_lo), (x_hi, y_hi) = self._free_lo, self._free_hi
-        valid = (x >= x_lo) & (x <= x_hi) & (y >= y_lo) & (y <= y_hi)
-        for (bx_lo, by_lo), (bx_hi, by_hi) in self._c_obstacles:  # a handful of blocks: loop over K, never N
-            valid &= ~((x >= bx_lo) & (x <= bx_hi) & (y >= by_lo) & (y <= by_hi))
-        return valid
-
-
-class SeparatingAxisChecker(_BoxWorldChecker):
-    """Reference: separating-axis test of every candidate (link, obstacle) pair, vectorized.
-
-    Two convex boxes are disjoint iff some axis separates their projections
-    (Gottschalk et al., OBBTree, 1996): in 3D the 3 world axes, the link's 3 axes and
-    their 9 cross products; in 2D the 2 world axes and the link's 2 axes.
-    """
-
-    def _links_collide(self, Q, aabbs, candidates):
-        """Ignores the voxel prefilter: every (link, obstacle) pair whose bounds meet is tested."""
-        boxes = self.workspace.boxes  # (K, 2, D)
-        near = np.all(
-            (aabbs[:, :, None, 0] <= boxes[:, 1]) & (aabbs[:, :, None, 1] >= boxes[:, 0]), axis=-1
-        )  # (n, L, K)
-        centers, rotations, half = self.robot.link_boxes(Q)
-        n, l, k = np.nonzero(near)  # candidate pairs
-        boxes = self.workspace.boxes[k]  # (P, 2, D)
-        box_center, box_half = boxes.mean(axis=1), (boxes[:, 1] - boxes[:, 0]) / 2  # (P, D)
-        axes_link = np.swapaxes(rotations[n, l], -1, -2)  # (P, D, D): rows are the link's axes
-        d = self.robot.dim
-        world = np.broadcast_to(np.eye(d), axes_link.shape)
-        axes = [world, axes_link]
-        if d == 3:
-            axes.append(np.cross(world[:, :, None, :], axes_link[:, None, :, :]).reshape(-1, 9, 3))
-        axes = np.concatenate(axes, axis=1)  # (P, A, D)
-        gap = np.abs(np.einsum("pad,pd->pa", axes, centers[n, l] - box_center))  # (P, A)
-        r_link = np.einsum("pae,pe->pa", np.abs(np.einsum("pad,ped->pae", axes, axes_link)), half[l])  # (P, A)
-        r_box = np.einsum("pad,pd->pa", np.abs(axes), box_half)  # (P, A)
-        pair_hit = ~np.any(gap > r_link + r_box, axis=1)  # (P,)
-        hit = np.zeros(len(Q), dtype=bool)
-        np.logical_or.at(hit, n, pair_hit)
-        return hit
+__all__ = [
+    "BoxWorldChecker",
+    "CollisionChecker",
+    "CompiledChecker",
+    "ExactChecker",
+    "FCLChecker",
+    "MeshChecker",
+    "PointRobotChecker",
+    "SeparatingAxisChecker",
+    "exact_checker",
+]
 
 
 def exact_checker(workspace: Workspace, robot: BoxRobot) -> CollisionChecker:
-    """The fastest exact checker for this workspace and robot: the mesh's triangles for a mesh workspace;
-    otherwise numpy for a lone 2D square (the point robot), FCL for the rest."""
+    """The fastest exact checker for this workspace and robot: FCL against the triangles of a mesh workspace;
+    otherwise interval tests in numpy for the lone 2D square (the point robot), the compiled checker for the rest."""
     if isinstance(workspace, MeshWorkspace):
         return MeshChecker(workspace, robot)
     if robot.base == "point2d" and robot.dof == 2:
         return PointRobotChecker(workspace, robot)
-    return ExactChecker(workspace, robot)
+    return CompiledChecker(workspace, robot)

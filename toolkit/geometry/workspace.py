@@ -28,6 +28,7 @@ from pathlib import Path
 import numpy as np
 
 from toolkit.geometry import meshes
+from toolkit.util import outputs
 
 FREE, OCCUPIED = -1.0, 1.0
 
@@ -139,9 +140,8 @@ class Workspace:
     def save(self, path: str | Path) -> None:
         """Write the workspace as JSON (atomically: a temporary file, then a rename)."""
         path = Path(path)
-        tmp = path.with_name(path.name + ".tmp")
-        tmp.write_text(json.dumps(self.to_dict()))
-        tmp.replace(path)
+        text = json.dumps(self.to_dict())
+        outputs.write_atomically(path, lambda tmp: tmp.write_text(text))
 
     @classmethod
     def load(cls, path: str | Path) -> Workspace:

@@ -1,0 +1,241 @@
+"""The compiled exact check, one configuration at a time: kinematics, then separating axes (numba).
+
+Numpy checks a batch one step at a time: kinematics for every configuration, then bounds for
+every link, then the pairs that may touch. Each step writes arrays the next one reads, so
+the cost is memory traffic, and FCL adds a Python call per pair. Here one loop (compiled by
+numba to machine code) takes each configuration through every step while its few numbers
+stay in registers, and stops at its first collision:
+
+1. bounds: ``lower <= q <= upper``;
+2. forward kinematics of the box chain (:meth:`toolkit.geometry.robots.BoxRobot.link_frames`);
+3. per link, its axis-aligned bounds must lie inside the region;
+4. per link, the obstacle boxes listed in the grid cells its bounds cover
+   (:class:`toolkit.geometry.box_world.BoxWorldChecker`'s cell lists) are tested with the
+   separating-axis theorem (Gottschalk et al., OBBTree, 1996): two boxes are disjoint iff
+   their projections on some axis are disjoint; it suffices to try the world's axes, the
+   link's axes and, in 3D, their 9 cross products. Touching projections do not separate:
+   boxes are closed, as in FCL.
+
+The robot and the workspace arrive as arrays (:class:`toolkit.geometry.compiled.CompiledChecker`
+builds them), never as constants, so one compiled version serves every robot and
+workspace; ``cache=True`` keeps it on disk (in ``NUMBA_CACHE_DIR`` if set, else in ``__pycache__``
+beside this file, else, where that is read-only, in the user's cache folder, ``~/.cache/numba``),
+so a machine compiles it once.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+
+@njit(cache=True)
+def _turn(rotation, axis, angle):
+    """``rotation (3, 3) @ (rotation about world axis ``axis`` by ``angle``)``, in place."""
+    c, s = np.cos(angle), np.sin(angle)
+    j, k = (axis + 1) % 3, (axis + 2) % 3  # the plane it turns, in right-handed order
+    for row in range(3):
+        a, b = rotation[row, j], rotation[row, k]
+        rotation[row, j] = a * c + b * s
+        rotation[row, k] = b * c - a * s
+
+
+@njit(cache=True)
+def _link_frames(q, robot, frame, centers, rotations):
+    """Fill ``centers (L, 3)`` and ``rotations (L, 3, 3)`` (columns: the link's axes) for configuration ``q``
+    (:meth:`toolkit.geometry.robots.BoxRobot.link_boxes`); ``frame (4, 3)``: the frame being posed, position and
+    rotation."""
+    position, rotation = frame[0], frame[1:]
+    position[:], rotation[:] = 0.0, 0.0
+    for i in range(3):
+        rotation[i, i] = 1.0
+    if robot.base == 0:  # point2d
+        position[0], position[1], first_joint = q[0], q[1], 2
+    elif robot.base == 1:  # planar: x, y, yaw on the floor
+        position[0], position[1], position[2], first_joint = q[0], q[1], robot.base_height, 3
+        _turn(rotation, 2, q[2])
+    else:  # free: x, y, z, then Z-Y-X Euler angles
+        position[0], position[1], position[2], first_joint = q[0], q[1], q[2], 6
+        _turn(rotation, 2, q[3])
+        _turn(rotation, 1, q[4])
+        _turn(rotation, 0, q[5])
+    for link in range(len(robot.link_offsets)):
+        if link > 0:  # joint link - 1 carries this link
+            joint = link - 1
+            for i in range(3):
+                for j in range(3):
+                    position[i] += rotation[i, j] * robot.joint_origins[joint, j]
+            _turn(rotation, robot.joint_axes[joint], q[first_joint + joint])
+        for i in range(3):
+            centers[link, i] = position[i]
+            for j in range(3):
+                centers[link, i] += rotation[i, j] * robot.link_offsets[link, j]
+                rotations[link, i, j] = rotation[i, j]
+
+
+@njit(cache=True)
+def _link_bounds(half_extents, world, centers, rotations, low, high, cells):
+    """Fill every link's axis-aligned bounds ``low, high (L, 3)`` and the cells they cover, ``cells (L, 2, 3)``
+    (first and last per axis, clipped to the grid); returns whether every link lies inside the region."""
+    inside = True
+    for link in range(len(half_extents)):
+        for i in range(len(world.lower)):
+            reach = 0.0
+            for j in range(len(world.lower)):
+                reach += abs(rotations[link, i, j]) * half_extents[link, j]
+            low[link, i], high[link, i] = centers[link, i] - reach, centers[link, i] + reach
+            inside &= world.lower[i] <= low[link, i] and high[link, i] <= world.upper[i]
+            for end, value in enumerate((low[link, i], high[link, i])):
+                cell = int(np.floor((value - world.lower[i]) / world.cell))
+                cells[link, end, i] = min(max(cell, 0), world.shape[i] - 1)
+    return inside
+
+
+@njit(cache=True)
+def _listed_boxes(cells, world, seen, tag, found):
+    """Fill ``found`` with the boxes listed in ``cells (2, 3)`` (first and last per axis) that ``seen`` has not
+    marked with ``tag`` yet, and mark them; returns their number (a box listed in two cells is tested once)."""
+    shape, n_found = world.shape, 0
+    for a in range(cells[0, 0], cells[1, 0] + 1):
+        for b in range(cells[0, 1], cells[1, 1] + 1):
+            for c in range(cells[0, 2], cells[1, 2] + 1):
+                flat = (a * shape[1] + b) * shape[2] + c
+                for m in range(world.cell_first[flat], world.cell_first[flat] + world.cell_count[flat]):
+                    box = world.cell_boxes[m]
+                    if seen[box] != tag:
+                        seen[box] = tag
+                        found[n_found] = box
+                        n_found += 1
+    return n_found
+
+
+@njit(cache=True)
+def _boxes_touch(center, R, half, low, high, box, dim):
+    """Whether a link box (``center (3,)``, ``R (3, 3)`` whose columns are its axes, ``half (3,)``, bounds
+    ``low, high (3,)``) touches the obstacle ``box (2, D)``.
+
+    Separating axes, cheapest first: the world's (do the bounds overlap?), the link's, their cross products.
+    """
+    for i in range(dim):
+        if low[i] > box[1, i] or high[i] < box[0, i]:
+            return False
+    offset = (  # link centre minus box centre
+        center[0] - (box[0, 0] + box[1, 0]) / 2,
+        center[1] - (box[0, 1] + box[1, 1]) / 2,
+        center[2] - (box[0, 2] + box[1, 2]) / 2 if dim == 3 else 0.0,
+    )
+    box_half = (
+        (box[1, 0] - box[0, 0]) / 2,
+        (box[1, 1] - box[0, 1]) / 2,
+        (box[1, 2] - box[0, 2]) / 2 if dim == 3 else 0.0,
+    )
+    for j in range(dim):  # link axis j: the link reaches half[j] along it
+        gap, reach = 0.0, half[j]
+        for i in range(dim):
+            gap += R[i, j] * offset[i]
+            reach += abs(R[i, j]) * box_half[i]
+        if abs(gap) > reach:
+            return False
+    if dim == 3:
+        for w in range(3):  # world axis w crossed with link axis j: (0, -R[v, j], R[u, j]) in (w, u, v) order
+            u, v = (w + 1) % 3, (w + 2) % 3
+            for j in range(3):
+                a_u, a_v = -R[v, j], R[u, j]
+                reach = abs(a_u) * box_half[u] + abs(a_v) * box_half[v]
+                for k in range(3):
+                    reach += abs(a_u * R[u, k] + a_v * R[v, k]) * half[k]
+                if abs(a_u * offset[u] + a_v * offset[v]) > reach:
+                    return False
+    return True
+
+
+@njit(cache=True)
+def _in_bounds(q, lower, upper):
+    for i in range(len(q)):  # noqa: SIM110 (numba compiles loops, not generators)
+        if not lower[i] <= q[i] <= upper[i]:
+            return False
+    return True
+
+
+@njit(cache=True)
+def _some_link_touches(tag, half, boxes, world, centers, rotations, low, high, cells, seen, found):
+    """Whether some link touches an obstacle listed in the cells its bounds cover (``tag``: the first link's)."""
+    for link in range(len(half)):
+        for m in range(_listed_boxes(cells[link], world, seen, tag + link, found)):
+            if _boxes_touch(
+                centers[link], rotations[link], half[link], low[link], high[link], boxes[found[m]], len(world.lower)
+            ):
+                return True
+    return False
+
+
+@njit(cache=True)
+def validity(Q, robot, world, valid):
+    """Fill ``valid (N,)`` for configurations ``Q (N, dof)``: the steps in the module's docstring, each
+    configuration stopping at its first failure. ``robot``, ``world``: arrays
+    (:class:`toolkit.geometry.compiled.Robot`, :class:`~toolkit.geometry.compiled.World`)."""
+    half, boxes, n_links = robot.half_extents, world.boxes, len(robot.half_extents)
+    frame, centers, rotations = np.zeros((4, 3)), np.zeros((n_links, 3)), np.zeros((n_links, 3, 3))
+    low, high, cells = np.zeros((n_links, 3)), np.zeros((n_links, 3)), np.zeros((n_links, 2, 3), np.int64)
+    seen, found = np.full(len(boxes), -1), np.zeros(len(boxes), np.int64)  # per box: the last link that listed it
+    for n in range(len(Q)):
+        valid[n] = False
+        if not _in_bounds(Q[n], robot.lower, robot.upper):
+            continue
+        _link_frames(Q[n], robot, frame, centers, rotations)
+        if not _link_bounds(half, world, centers, rotations, low, high, cells):  # out of the region: no search
+            continue
+        valid[n] = not _some_link_touches(
+            n * n_links, half, boxes, world, centers, rotations, low, high, cells, seen, found
+        )
+
+
+@njit(cache=True)
+def _box_clearance(center, R, half, low, high, box, dim, cap):
+    """A lower bound on the distance between a link box and an obstacle ``box (2, D)`` (arguments as in
+    :func:`_boxes_touch`): the larger of the gap between the link's bounds and the box and the gap between their
+    projections on each of the link's axes; the first alone when it reaches ``cap`` (the caller's limit)."""
+    gap = 0.0
+    for i in range(dim):
+        gap += max(box[0, i] - high[i], low[i] - box[1, i], 0.0) ** 2
+    gap = np.sqrt(gap)
+    if gap < cap:
+        for j in range(dim):
+            along, reach = 0.0, half[j]
+            for i in range(dim):
+                along += R[i, j] * (center[i] - (box[0, i] + box[1, i]) / 2)
+                reach += abs(R[i, j]) * (box[1, i] - box[0, i]) / 2
+            gap = max(gap, abs(along) - reach)
+    return gap
+
+
+@njit(cache=True)
+def clearance_bounds(Q, robot, world, level_links, cap, clearance):
+    """Fill ``clearance (N,)`` with lower bounds in ``[0, cap]``: 0 out of bounds, else the least over links of
+    the distance to the walls (a floor or ceiling that a level link never moves towards does not count) and to
+    each box listed near it: :meth:`toolkit.geometry.box_world.BoxWorldChecker.clearance_bounds`, compiled.
+
+    ``world`` as in :func:`validity`, its cell lists holding the boxes grown by ``cap``.
+    """
+    half, boxes, region_lo, region_hi = robot.half_extents, world.boxes, world.lower, world.upper
+    n_links, dim = len(half), len(region_lo)
+    frame, centers, rotations = np.zeros((4, 3)), np.zeros((n_links, 3)), np.zeros((n_links, 3, 3))
+    low, high, cells = np.zeros((n_links, 3)), np.zeros((n_links, 3)), np.zeros((n_links, 2, 3), np.int64)
+    seen, found = np.full(len(boxes), -1), np.zeros(len(boxes), np.int64)
+    for n in range(len(Q)):
+        clearance[n] = 0.0
+        if not _in_bounds(Q[n], robot.lower, robot.upper):
+            continue
+        _link_frames(Q[n], robot, frame, centers, rotations)
+        _link_bounds(half, world, centers, rotations, low, high, cells)
+        bound = cap
+        for link in range(n_links):
+            for i in range(dim):
+                wall = min(low[link, i] - region_lo[i], region_hi[i] - high[link, i])
+                if not (link < level_links and i == dim - 1 and wall >= 0):
+                    bound = min(bound, wall)
+            for m in range(_listed_boxes(cells[link], world, seen, n * n_links + link, found)):
+                box = boxes[found[m]]
+                gap = _box_clearance(centers[link], rotations[link], half[link], low[link], high[link], box, dim, cap)
+                bound = min(bound, gap)
+        clearance[n] = max(bound, 0.0)
