@@ -1,4 +1,4 @@
-"""`toolkit bench` (issue 2): prints one JSON object with the checkers' throughput (DESIGN.md contract).
+"""`toolkit bench` (issues 2, 25): prints one JSON object with the checkers' throughput (DESIGN.md contract).
 
 Speed targets are measured by the command, never asserted here (no timed unit tests).
 """
@@ -7,14 +7,17 @@ import json
 import subprocess
 import sys
 from pathlib import Path
+from types import SimpleNamespace
 
 import numpy as np
 import pytest
 
 from toolkit import cli, scenarios
 from toolkit.experiments import bench, versus_ompl
-from toolkit.learning import checkpoints
+from toolkit.learning import checkpoints, presets
 from toolkit.planning import queries, sampling
+
+THROUGHPUT_KEYS = {"exact_cfg_per_s", "fcl_cfg_per_s", "learned_cfg_per_s", "ratio", "exact_over_fcl"}
 
 
 def test_bench_prints_one_json_object(capsys):
@@ -23,14 +26,58 @@ def test_bench_prints_one_json_object(capsys):
     result = json.loads(out)  # the whole output is one JSON object
     assert isinstance(result, dict)
     assert result["scenario"] == "2ds"
+    assert set(result) == {"scenario", "edges"} | THROUGHPUT_KEYS
     assert isinstance(result["exact_cfg_per_s"], float) and result["exact_cfg_per_s"] > 0
-    assert result["learned_cfg_per_s"] > 0  # the contract's other two keys
+    assert result["fcl_cfg_per_s"] > 0 and result["learned_cfg_per_s"] > 0  # the contract's other keys
     assert result["ratio"] == pytest.approx(result["learned_cfg_per_s"] / result["exact_cfg_per_s"])
+    assert result["exact_over_fcl"] == pytest.approx(result["exact_cfg_per_s"] / result["fcl_cfg_per_s"])
     fine, coarse = result["edges"]["finer"], result["edges"]["resolution"]
     assert fine["resolution"] == pytest.approx(coarse["resolution"] / 10) and fine["segments"] > 100
     assert 0 < fine["valid"] <= 1
     assert fine["certify_edges_checked"] < fine["check_edges_checked"] / 5  # clearances vouch for most stretches
     assert fine["check_edges_s"] > 0 and fine["certify_edges_s"] > 0
+
+
+def test_throughput_times_the_compiled_checker_beside_fcl_in_3d():
+    """The default exact checker (compiled) and the python-fcl reference, both timed, on a 3D scenario."""
+    result = bench.throughput(scenarios.get("3dc7"), batch=300, repeats=1)
+    assert set(result) == THROUGHPUT_KEYS
+    assert all(result[key] > 0 for key in THROUGHPUT_KEYS)
+    assert result["exact_over_fcl"] == pytest.approx(result["exact_cfg_per_s"] / result["fcl_cfg_per_s"])
+
+
+def test_without_prediction_is_the_best_exact_planner_whatever_the_models_recipe(monkeypatch):
+    """`bench --checkpoint`: "without" plans with the lazy PRM (and the default exact checker), "with" with the
+    recipe's planner (the paper preset's: Algorithm 1); an --option reaches both."""
+    seen = {}
+
+    def fake_run(scenario, query_set, sampler, factories, options, seed):
+        seen.update(factories, run_options=options)
+        return {
+            mode: (
+                [],
+                {
+                    "sampling_s": 1.0,
+                    "total_s": 2.0,
+                    "sampling_s_median": 1.0,
+                    "total_s_median": 2.0,
+                    "success_rate": 1.0,
+                    "rounds": 1.0,
+                    "repairs": 0.0,
+                },
+            )
+            for mode in factories
+        }
+
+    monkeypatch.setattr(queries, "run_interleaved", fake_run)
+    models = SimpleNamespace(preset=presets.get("paper"))
+    row = bench.planning_ratios(scenarios.get("2ds"), models, 1, 1, samplers=("BS",), overrides={"max_rounds": 3})
+    assert row["BS"]["total_ratio"] == 1.0
+    assert seen["without"] is None and seen["run_options"].planner == "lazy"  # the best exact planner
+    with_ = seen["with"]
+    assert isinstance(with_, queries.Mode) and with_.options.planner == "paper"
+    assert with_.exact is queries.exact_checker  # the default exact checker checks the edges
+    assert seen["run_options"].max_rounds == with_.options.max_rounds == 3
 
 
 def test_bench_at_a_sampler_sized_batch(capsys):
@@ -285,3 +332,8 @@ def test_bench_vs_ompl_says_how_to_install_ompl(monkeypatch, capsys):
     monkeypatch.delattr(toolkit.planning, "ompl", raising=False)
     assert cli.main(["bench", "--vs-ompl", "--scenario", "2ds", "--queries", "1"]) == 2
     assert "pip install 'sample-collision-toolkit[ompl]'" in capsys.readouterr().err
+
+
+def test_bench_needs_a_scenario_but_with_crossover(capsys):
+    assert cli.main(["bench", "--json"]) == 2
+    assert "--scenario is needed (but with --crossover)" in capsys.readouterr().err

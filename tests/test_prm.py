@@ -839,9 +839,9 @@ def test_run_interleaved_takes_turns_and_answers_as_separate_runs(monkeypatch):
     separate = {"without": run_queries(scenario, queries, "OB"), "with": run_queries(scenario, queries, "OB", factory)}
     order, solve = [], queries_module.solve_query
 
-    def recording(scenario, query, sampler, checker, options, seed):
+    def recording(scenario, query, sampler, checker, options, seed, **exact):
         order.append("with" if checker is not None else "without")
-        return solve(scenario, query, sampler, checker, options, seed)
+        return solve(scenario, query, sampler, checker, options, seed, **exact)
 
     monkeypatch.setattr(queries_module, "solve_query", recording)
     runs = queries_module.run_interleaved(scenario, queries, "OB", {"without": None, "with": factory})

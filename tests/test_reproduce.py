@@ -10,9 +10,11 @@ import pytest
 from toolkit import cli, scenarios
 from toolkit.experiments import paper_numbers, tables
 from toolkit.experiments import reproduce as experiments
-from toolkit.experiments.config import RunConfig
+from toolkit.experiments.config import BASELINES, RunConfig
 from toolkit.experiments.stages import Stages
+from toolkit.geometry.collision import FCLChecker, exact_checker
 from toolkit.learning import presets
+from toolkit.planning import queries
 
 RATE_KEYS = ("success_rate", "path_valid_rate")
 TIME_KEYS = ("sampling_s", "total_s")
@@ -28,8 +30,9 @@ def check_contract(results: dict, name: str) -> None:
             assert 0.0 <= results["mlp"][split][key] <= 1.0
     assert results["mlp"]["unseen"]["always_valid"] == 0.5  # balanced
     assert set(results["planning"]) == set(paper_numbers.SAMPLERS)
+    assert results["baseline"] == "paper"  # the paper preset's Table 3: Algorithm 1 without prediction
     for sampler, modes in results["planning"].items():
-        assert set(modes) == {"without", "with"}
+        assert set(modes) == {"without", "with", "baseline"}
         for mode, summary in modes.items():
             for key in RATE_KEYS:
                 assert 0.0 <= summary[key] <= 1.0, (sampler, mode, key)
@@ -38,7 +41,8 @@ def check_contract(results: dict, name: str) -> None:
             assert summary["path_valid_rate"] == 1.0, f"{sampler} {mode}: a returned path failed the exact re-check"
     # the exact planner solves these short quick queries
     assert np.mean([results["planning"][s]["without"]["success_rate"] for s in paper_numbers.SAMPLERS]) > 0.5
-    assert results["throughput"]["exact_cfg_per_s"] > 0 and results["throughput"]["learned_cfg_per_s"] > 0
+    throughput = results["throughput"]
+    assert throughput["exact_cfg_per_s"] > 0 and throughput["learned_cfg_per_s"] > 0 and throughput["fcl_cfg_per_s"] > 0
 
 
 def check_files(out, name: str) -> None:
@@ -121,13 +125,22 @@ def test_table_1_says_when_the_cae_was_not_trained():
     assert "| 2ds | not trained | not trained | n/a |" in lines
 
 
+_MLP = {s: {"acc": 1, "tpr": 1, "tnr": 1, "always_valid": 0.5} for s in ("seen", "unseen", "unseen_uniform")}
+_COSTS = {
+    "stage_seconds": {"data": 1.0, "models": 2.0},
+    "throughput": {"exact_cfg_per_s": 4.0, "fcl_cfg_per_s": 2.0, "learned_cfg_per_s": 1.0, "ratio": 0.25},
+}
+
+
+def _summary(total: float = 1.0) -> dict:
+    """A planning summary: every time 1 s but the mean total, ``total``."""
+    times = {f"{key}{stat}": 1.0 for key in ("sampling_s", "total_s") for stat in ("", "_std", "_median")}
+    return {"success_rate": 1.0, "path_valid_rate": 1.0, **times, "total_s": total}
+
+
 def _with_planning(run: dict) -> dict:
     """A results dict with the keys paper_tables needs besides Table 2's."""
-    summary = {
-        "success_rate": 1.0,
-        "path_valid_rate": 1.0,
-        **{f"{key}{stat}": 1.0 for key in ("sampling_s", "total_s") for stat in ("", "_std", "_median")},
-    }
+    summary = _summary()
     return dict(
         run,
         cae={"seen_acc": 1.0, "unseen_acc": 0.9, "seen_all_free": 0.8, "unseen_all_free": 0.8},
@@ -146,14 +159,23 @@ def test_planning_with_prediction_follows_the_presets_edge_rule(
     preset, screened, monkeypatch, tmp_path, checkpoint_2ds
 ):
     """``paper``: Algorithm 1 as published (edges checked exactly, later rounds exact); ``strong``: learned edge
-    screening, later rounds confirmed predictions and exact in turn."""
+    screening, later rounds confirmed predictions and exact in turn. Without prediction: the best exact planner
+    (lazy) with the default exact checker; the paper preset's Table 3 baseline, Algorithm 1, in the same turns."""
     calls = []
 
-    def fake_run(scenario, query_set, sampler, factories, options, seed):
-        assert options.auxiliary == ("confirmed" if screened else "exact")
-        assert list(factories) == ["without", "with"] and factories["without"] is None  # in turns, one run
-        calls.append((sampler, factories["with"] is not None, options.screen_edges))
-        return {mode: ([], {"sampling_s": 1.0, "total_s": 1.0}) for mode in factories}
+    def fake_run(scenario, query_set, sampler, modes, options=None, seed=0):
+        with_, without = modes["with"], modes["without"]
+        assert with_.options.auxiliary == ("confirmed" if screened else "exact")
+        assert with_.checker is not None and without.checker is None
+        assert without.options.planner == "lazy" and without.exact is exact_checker
+        assert with_.options.planner == presets.get(preset).planner and with_.exact is exact_checker
+        baseline = {"paper": ["baseline"], "strong": []}[preset]
+        assert list(modes) == ["without", "with", *baseline]  # in turns, one run
+        if baseline:
+            assert modes["baseline"].options.planner == "paper" and modes["baseline"].checker is None
+            assert modes["baseline"].exact is exact_checker  # Algorithm 1 with the compiled checker
+        calls.append((sampler, with_.options.screen_edges))
+        return {mode: ([], {"sampling_s": 1.0, "total_s": 1.0}) for mode in modes}
 
     monkeypatch.setattr(experiments.queries, "run_interleaved", fake_run)
     models = SimpleNamespace(preset=presets.get(preset))
@@ -161,9 +183,54 @@ def test_planning_with_prediction_follows_the_presets_edge_rule(
     shutil.copytree(checkpoint_2ds, stages.cache / "checkpoint")
     config = RunConfig.create("2ds", preset, quick=True, workers=1, progress=False)
     planning = experiments.planning_stage(stages, config, models)
-    assert sorted(s for s, _, _ in calls) == sorted(paper_numbers.SAMPLERS)
-    assert {screen for _, predicted, screen in calls if predicted} == {screened}
-    assert set(planning) == set(paper_numbers.SAMPLERS) and set(planning["BS"]) == {"without", "with"}
+    assert sorted(s for s, _ in calls) == sorted(paper_numbers.SAMPLERS)
+    assert {screen for _, screen in calls} == {screened}
+    assert set(planning) == set(paper_numbers.SAMPLERS)
+    assert set(planning["BS"]) == {"without", "with"} | ({"baseline"} if preset == "paper" else set())
+
+
+@pytest.mark.parametrize(
+    "preset, chosen, baseline, exact",
+    [
+        ("paper", None, "paper", exact_checker),
+        ("strong", None, "best", None),
+        ("strong", "paper-fcl", "paper-fcl", FCLChecker),
+        ("paper", "best", "best", None),
+    ],
+)
+def test_table_3s_baseline_is_the_recipes_planner_unless_chosen(preset, chosen, baseline, exact):
+    config = RunConfig.create("2ds", preset, quick=True, progress=False, baseline=chosen)
+    assert config.baseline == baseline and config.settings()["baseline"] == baseline
+    modes = experiments.planning_modes(config, SimpleNamespace(preset=config.preset))
+    assert modes["without"].options.planner == "lazy"  # always the best exact planner
+    assert ("baseline" in modes) == (exact is not None)
+    if exact is not None:
+        assert modes["baseline"].exact is exact and modes["baseline"].options.planner == "paper"
+    with pytest.raises(ValueError, match="unknown baseline 'eager'; choose one of best, paper, paper-fcl"):
+        RunConfig.create("2ds", preset, baseline="eager")
+
+
+def test_reproduce_offers_the_baselines(capsys, tmp_path):
+    with pytest.raises(SystemExit):
+        cli.main(["reproduce", "--scenario", "2ds", "--baseline", "eager", "--out", str(tmp_path)])
+    assert "argument --baseline: invalid choice: 'eager'" in capsys.readouterr().err
+
+
+def test_each_table_says_what_without_prediction_is():
+    run = _with_planning({"scenario": "2ds", "threshold": 0.5, "mlp": _MLP, "baseline": "paper-fcl"})
+    run["planning"] = {s: dict(run["planning"][s], baseline=_summary(total=4.0)) for s in paper_numbers.SAMPLERS}
+    text = tables.tables_markdown(dict(run, preset="paper", quick=True, seed=0, **_COSTS))
+    table3 = text.split("## Table 3")[1].split("## Times behind")[0]
+    assert f"*Without prediction*: {BASELINES['paper-fcl']}." in table3
+    times = text.split("## Times behind Table 3")[1].split("## Time with / without")[0]
+    assert f"*Without prediction*: {BASELINES['paper-fcl']}." in times
+    row = next(line for line in times.splitlines() if line.startswith("| 2ds | BS |")).split("|")
+    assert row[5].startswith(" **4 ± 1** / ") and row[6].startswith(" **1 ± 1** / ")  # total: baseline, with
+    medians = text.split("## Time with / without prediction, medians")[1].split("## Checker")[0]
+    assert f"*Without prediction*: {BASELINES['best']}." in medians  # always the strongest
+    assert "| 2ds | 1.00 | 1.00 | 1.00 | 1.00 | 1.00 | 1.00 | 1.00 | 1.00 |" in medians
+    assert experiments.improvement(run["planning"], "total_s") == dict.fromkeys(paper_numbers.SAMPLERS, 0.75)
+    assert "| exact cfg/s | FCL cfg/s | learned cfg/s |" in text and "| 2ds | 4 | 2 | 1 | 0.25 |" in text
 
 
 def test_stage_times_add_up_the_planned_samplers_stages_only():
@@ -177,3 +244,23 @@ def test_stage_times_add_up_the_planned_samplers_stages_only():
     }
     row = tables.run_costs([run])[-1]
     assert row.endswith("| 1 | 2 | 12 |")
+
+
+def test_a_planning_mode_brings_its_own_exact_checker_and_options():
+    """``queries.Mode``, what the baseline runs on: the paper-fcl baseline's FCL checker checks its edges, and its
+    options (here one round of Algorithm 1) are its own while the other mode plans with the run's."""
+    scenario = scenarios.get("2ds")
+    query_set = queries.make_queries(scenario, 0, 1, 1)
+    made = []
+
+    def fcl(ws, robot):
+        made.append(FCLChecker(ws, robot))
+        return made[-1]
+
+    eager = queries.default_options(scenario, None, planner="paper", max_rounds=1)
+    runs = queries.run_interleaved(
+        scenario, query_set, "BS", {"best": None, "paper-fcl": queries.Mode(exact=fcl, options=eager)}
+    )
+    (record,) = runs["paper-fcl"][0]
+    assert len(made) == 1 and made[0].n_checked > 0 and record["rounds"] == 1
+    assert runs["best"][1]["success_rate"] == 1.0

@@ -35,6 +35,10 @@ def cmd_bench(args: argparse.Namespace) -> int:
     from toolkit.experiments import bench
     from toolkit.learning import checkpoints
 
+    if args.crossover:
+        return _bench_crossover(args)
+    if args.scenario is None:
+        raise ValueError("--scenario is needed (but with --crossover): one of the scenarios in `toolkit --help`")
     scenario = scenarios.get(args.scenario)
     models = checkpoints.load_models(args.checkpoint, scenario.name) if args.checkpoint else None
     if args.vs_ompl:
@@ -59,6 +63,23 @@ def cmd_bench(args: argparse.Namespace) -> int:
         )
         result["planning_options"] = dict(args.option)
     print(json.dumps(result) if args.json else "\n".join(f"{k}: {v}" for k, v in result.items()))
+    return 0
+
+
+def _bench_crossover(args: argparse.Namespace) -> int:
+    """`toolkit bench --crossover`: the sweep, printed (JSON or markdown), and written to ``--out`` with its figure."""
+    from toolkit import plots
+    from toolkit.cli.bench_parser import CROSSOVER_SCENARIO
+    from toolkit.experiments import crossover
+    from toolkit.util import outputs
+
+    out = outputs.writable_folder(args.out, "--out") if args.out else None  # before minutes of timing
+    scenario = scenarios.get(args.scenario or CROSSOVER_SCENARIO)
+    results = crossover.crossover(scenario, args.preset, args.seed, args.quick, args.variables)
+    if out is not None:
+        outputs.write_json(out / "crossover.json", results)
+        plots.crossover(results).savefig(out / "crossover.png", dpi=110)
+    print(json.dumps(results) if args.json else crossover.markdown(results))
     return 0
 
 
@@ -145,7 +166,9 @@ def cmd_reproduce(args: argparse.Namespace) -> int:
     from toolkit.experiments import reproduce
 
     names = sorted(scenarios.SCENARIOS) if args.scenario == "all" else [args.scenario]
-    configs = [_config(args, name, workers=args.workers, samplers=args.samplers) for name in names]
+    configs = [
+        _config(args, name, workers=args.workers, samplers=args.samplers, baseline=args.baseline) for name in names
+    ]
     if len(configs) == 1:
         reproduce.reproduce(configs[0], args.out)
     else:
@@ -234,7 +257,11 @@ def _rows_kept(args: argparse.Namespace) -> str:
 
 
 KEPT: dict[str, Callable[[argparse.Namespace], str]] = {
-    "bench": lambda args: "bench writes nothing; nothing is lost",
+    "bench": lambda args: (
+        "bench --crossover writes its files only at the end; nothing was written"
+        if args.crossover and args.out
+        else "bench writes nothing; nothing is lost"
+    ),
     "plan": lambda args: "plan writes nothing; nothing is lost",
     "train": lambda args: (
         f"{args.out} is as it was (the checkpoint is written only when training ends); "

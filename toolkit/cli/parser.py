@@ -1,11 +1,11 @@
 """The ``toolkit`` command's parser: each sub-command's options, its help text and examples.
 
-One function per sub-command adds its options (``reproduce_options``, ``bench_options``,
-...), built from the checked types and shared options of :mod:`toolkit.cli.arguments`,
-so choices are read from the registries when the parser is built. :data:`SUBCOMMANDS`
-holds what ``toolkit COMMAND --help`` says about each one, and :func:`build_parser`
-joins them under ``toolkit``, whose ``--help`` lists the commands, scenarios, samplers
-and presets.
+One function per sub-command adds its options (``reproduce_options``, ``plan_options``, ...;
+``bench_options``, the longest, in :mod:`toolkit.cli.bench_parser`), built from the checked
+types and shared options of :mod:`toolkit.cli.arguments`, so choices are read from the
+registries when the parser is built. :data:`SUBCOMMANDS` holds what ``toolkit COMMAND
+--help`` says about each one, and :func:`build_parser` joins them under ``toolkit``, whose
+``--help`` lists the commands, scenarios, samplers and presets.
 """
 
 from __future__ import annotations
@@ -19,7 +19,6 @@ from toolkit.cli.arguments import (
     help_formatter,
     imports_parent,
     int_in,
-    planner_option,
     preset,
     sampler_list,
     sampler_names,
@@ -27,7 +26,9 @@ from toolkit.cli.arguments import (
     seed,
     study,
 )
+from toolkit.cli.bench_parser import bench_options
 from toolkit.experiments import paper_numbers
+from toolkit.experiments.config import BASELINES
 
 # -- the sub-commands' own options ----------------------------------------------------------------
 
@@ -62,6 +63,14 @@ def reproduce_options(cmd: argparse.ArgumentParser) -> None:
         metavar="LIST",
         help="comma-separated samplers for Table 3 (default: the paper's four, BS,OB,G,BT; a registered "
         "one has no published figure beside it)",
+    )
+    cmd.add_argument(
+        "--baseline",
+        choices=list(BASELINES),
+        default=None,
+        help="what Table 3 compares prediction against (the medians table: always the best): "
+        + "; ".join(f"{name}: {words}" for name, words in BASELINES.items())
+        + " (default: the preset's own planner, so paper for the paper preset, best for strong)",
     )
 
 
@@ -121,92 +130,6 @@ def plan_options(cmd: argparse.ArgumentParser) -> None:
     )
 
 
-def bench_options(cmd: argparse.ArgumentParser) -> None:
-    """The two checkers' speed (a scenario, a seed, the sizes), then the options of ``--checkpoint``
-    (:func:`bench_planning_options`) and ``--vs-ompl`` (:func:`bench_versus_ompl_options`), and ``--option``, a
-    planner setting for ``--checkpoint``'s runs, last, as ``toolkit bench --help`` lists them."""
-    scenario(cmd, required=True, help=SCENARIO_HELP)
-    seed(cmd, "the workspace and the configurations timed")
-    cmd.add_argument("--json", action="store_true", help="print one JSON object instead of lines")
-    preset(cmd, "network sizes whose learned speed is measured (default paper; speed does not depend on the weights)")
-    cmd.add_argument(
-        "--batch",
-        type=int_in(1, 1_000_000),
-        metavar="N",
-        help="configurations per call for both checkers, 1..1000000 (default: 20,000 exact, "
-        "10,000 learned; a sampler asks for 200-2,000)",
-    )
-    bench_planning_options(cmd)
-    bench_versus_ompl_options(cmd)
-    cmd.add_argument(
-        "--option",
-        type=planner_option,
-        action="append",
-        default=[],
-        metavar="NAME=VALUE",
-        help="with --checkpoint: a planner setting (a PRMOptions field in toolkit/planning/options.py) "
-        "for both runs, e.g. rebridge=0; repeat for several",
-    )
-
-
-def bench_planning_options(cmd: argparse.ArgumentParser) -> None:
-    """`bench --checkpoint`: the trained model, and the queries planned with and without it."""
-    cmd.add_argument(
-        "--checkpoint",
-        metavar="DIR",
-        help="a trained model (from `toolkit train`, or "
-        "DIR/cache/checkpoint of `toolkit reproduce`): also time PRM with and without it",
-    )
-    cmd.add_argument(
-        "--workspaces",
-        type=int_in(1, 100),
-        default=2,
-        metavar="N",
-        help="with --checkpoint: query workspaces to plan in, 1..100 (default 2)",
-    )
-    cmd.add_argument(
-        "--pairs",
-        type=int_in(1, 10),
-        default=2,
-        metavar="N",
-        help="with --checkpoint: start/goal pairs per workspace, 1..10 (default 2)",
-    )
-    cmd.add_argument(
-        "--samplers",
-        type=sampler_list,
-        default=paper_numbers.SAMPLERS,
-        metavar="LIST",
-        help="with --checkpoint: comma-separated samplers to plan with, e.g. BT,OB (default: the paper's four)",
-    )
-
-
-def bench_versus_ompl_options(cmd: argparse.ArgumentParser) -> None:
-    """`bench --vs-ompl`: the race against OMPL's planners, and its queries and time limit."""
-    cmd.add_argument(
-        "--vs-ompl",
-        action="store_true",
-        help="instead: plan --queries N queries with our planners (best exact, the paper's baseline, "
-        "and with --checkpoint's model) and OMPL's PRM and RRTConnect on the same exact checker, "
-        "in turns, one thread, and print a markdown table (needs the ompl extra: "
-        "pip install 'sample-collision-toolkit[ompl]'); use a --seed the planner was not tuned on "
-        "(not 0 or 7100), e.g. 9000",
-    )
-    cmd.add_argument(
-        "--queries",
-        type=int_in(1, 1000),
-        default=10,
-        metavar="N",
-        help="with --vs-ompl: the first N queries of the seed's query set (default 10)",
-    )
-    cmd.add_argument(
-        "--ompl-seconds",
-        type=float,
-        default=30.0,
-        metavar="S",
-        help="with --vs-ompl: OMPL's time limit per query (default 30)",
-    )
-
-
 def view_options(cmd: argparse.ArgumentParser) -> None:
     scenario(cmd, default=None, help=SCENARIO_HELP + "; default: the checkpoint's, else 3do")
     seed(cmd, "which workspace is shown")
@@ -252,12 +175,15 @@ SUBCOMMANDS: list[tuple[str, str, str, list[str], Callable[[argparse.ArgumentPar
         "reproduce the paper's Tables 1-3 and figures",
         "Makes the data, trains the CAE and MLP, measures them (Tables 1, 2), plans with every\n"
         "sampler without and with prediction (Table 3) and writes DIR/results.json, DIR/tables.md\n"
-        "(our figure next to the paper's in every cell) and PNG figures. Each finished stage is\n"
-        "kept in DIR/cache: after Ctrl-C, the same command goes on where it stopped.",
+        "(our figure next to the paper's in every cell) and PNG figures. Without prediction is the\n"
+        "best exact planner and checker; Table 3 compares against --baseline (the paper preset:\n"
+        "its Algorithm 1), and tables.md says which. Each finished stage is kept in DIR/cache:\n"
+        "after Ctrl-C, the same command goes on where it stopped.",
         [
             "toolkit reproduce --scenario 2ds --out results/2ds            # the paper's 2D tables",
             "toolkit reproduce --scenario 3dc7 --quick --out results/try   # small counts, to try things",
             "toolkit reproduce --scenario all --preset strong --out results/strong",
+            "toolkit reproduce --scenario 3dc9 --baseline paper-fcl --out results/3dc9-as-published",
         ],
         reproduce_options,
     ),
@@ -310,15 +236,18 @@ SUBCOMMANDS: list[tuple[str, str, str, list[str], Callable[[argparse.ArgumentPar
     (
         "bench",
         "measure how fast the exact and the learned checker are",
-        "Prints configurations checked per second by the exact checker (geometry) and by the\n"
-        "learned one (the networks; untrained ones of the preset's sizes unless --checkpoint),\n"
-        "their ratio, and exact edge checking. With --checkpoint it also plans a few of the\n"
-        "paper's queries with and without that model and prints the time ratios. With --vs-ompl\n"
-        "it races our planners against OMPL's PRM and RRTConnect on the same queries and checker.",
+        "Prints configurations checked per second by the default exact checker (compiled for box\n"
+        "worlds), by the python-fcl reference, and by the learned one (the networks; untrained ones\n"
+        "of the preset's sizes unless --checkpoint), timed in turns, their ratios, and exact edge\n"
+        "checking. With --checkpoint it also plans a few of the paper's queries with that model and\n"
+        "without (the best exact planner and checker) and prints the time ratios. With --vs-ompl it\n"
+        "races our planners against OMPL's PRM and RRTConnect on the same queries and checker. With\n"
+        "--crossover it sweeps what makes an exact check dear and shows where prediction pays.",
         [
             "toolkit bench --scenario 3dc7 --json",
             "toolkit bench --scenario 3dc9 --checkpoint runs/3dc9-strong --samplers BT --option rebridge=0",
             "toolkit bench --vs-ompl --scenario 3dc7 --queries 20 --seed 9000",
+            "toolkit bench --crossover --scenario 3dc9 --out docs   # docs/crossover.png and .json",
         ],
         bench_options,
     ),

@@ -140,7 +140,8 @@ def _row(stages: Stages, config: RunConfig, tests: dict, caes: dict) -> dict:
     )
     seconds = time.perf_counter() - began
     if trained is None:
-        torch.save(models.predictor.cae.state_dict(), cae_file)
+        state = models.predictor.cae.state_dict()
+        outputs.write_atomically(cae_file, lambda tmp: torch.save(state, tmp))  # a rerun trusts it: whole or none
     caes[cae_key] = models.predictor.cae
     scores = training.evaluate(models, splits)
     return {

@@ -4,18 +4,20 @@ The paper's framework pays when the network answers "is this sample valid?" fast
 than the exact checker does (§III-B, "Sample's Validity"), and when those answers
 save planning time. So three measurements, one function each:
 
-- :func:`throughput` — configurations per second of the exact and the learned checker;
+- :func:`throughput` — configurations per second of the default exact checker (compiled for box
+  worlds), of the python-fcl reference and of the learned checker;
 - :func:`edge_checks` — the exact local planner's edge checks, every point against
   clearance certificates (``local_planner.check_edges`` / ``certify_edges``);
 - :func:`planning_ratios` — PRM with and without prediction, per sampler, on the paper's
-  queries: the time ratios of Table 3.
+  queries: the time ratios of Table 3, "without" being the strongest exact planner and checker.
 
 Figures are medians over repeats, and a ratio's two figures come from one run, timed
 in turns (:func:`in_turns`), since a shared machine's speed changes while it runs.
 ``toolkit bench --scenario S --json`` prints the throughput and the edge checks; with
 ``--checkpoint DIR`` also the planning ratios. ``toolkit bench --vs-ompl`` races our
 planners against OMPL's (:mod:`toolkit.experiments.versus_ompl`; its two functions are
-importable from here too). Results: ``docs/benchmarks.md``.
+importable from here too), and ``toolkit bench --crossover`` asks where prediction pays
+(:mod:`toolkit.experiments.crossover`). Results: ``docs/benchmarks.md``.
 """
 
 from __future__ import annotations
@@ -29,7 +31,9 @@ import torch
 
 from toolkit.experiments import paper_numbers
 from toolkit.experiments.versus_ompl import versus_ompl, versus_ompl_markdown
-from toolkit.geometry.collision import CollisionChecker, exact_checker
+from toolkit.geometry.collision import CollisionChecker, FCLChecker, exact_checker
+from toolkit.geometry.robots import BoxRobot
+from toolkit.geometry.workspace import Workspace
 from toolkit.learning import presets
 from toolkit.learning.learned import LearnedChecker
 from toolkit.learning.models import build_predictor
@@ -105,25 +109,30 @@ def throughput(
     repeats: int = 5,
     models: TrainedModels | None = None,
 ) -> dict[str, float]:
-    """``{"exact_cfg_per_s", "learned_cfg_per_s", "ratio"}``: both checkers timed in turns (:func:`in_turns`),
-    at ``batch`` configurations a call (default: 20,000 exact, 10,000 learned)."""
-    batches = {"batch": batch} if batch else {}
+    """Configurations per second of the default exact checker (``exact_cfg_per_s``: ``exact_checker``, compiled
+    for box worlds), of the python-fcl reference (``fcl_cfg_per_s``) and of the learned checker
+    (``learned_cfg_per_s``), the three timed in turns (:func:`in_turns`) at ``batch`` configurations a call (default:
+    20,000 exact, 10,000 learned); ``ratio`` is learned / default exact, ``exact_over_fcl`` the compiled checker's
+    speed-up."""
     rates = in_turns(
         {
-            "exact": _exact_call(scenario, seed=seed, **batches),
-            "learned": _learned_call(scenario, preset, seed=seed, models=models, **batches),
+            "exact": _exact_call(scenario, batch or 20_000, seed),
+            "fcl": _exact_call(scenario, batch or 20_000, seed, make=FCLChecker),
+            "learned": _learned_call(scenario, preset, batch or 10_000, seed, models),
         },
         repeats,
     )
     return {
         "exact_cfg_per_s": rates["exact"],
+        "fcl_cfg_per_s": rates["fcl"],
         "learned_cfg_per_s": rates["learned"],
         "ratio": rates["learned"] / rates["exact"],
+        "exact_over_fcl": rates["exact"] / rates["fcl"],
     }
 
 
 def exact_throughput(scenario: Scenario, batch: int = 20_000, seed: int = 0, repeats: int = 5) -> float:
-    """Configurations per second of the exact checker on uniform samples in one workspace."""
+    """Configurations per second of the default exact checker on uniform samples in one workspace."""
     return median_rate(*_exact_call(scenario, batch, seed), repeats)
 
 
@@ -143,10 +152,16 @@ def learned_throughput(
     return median_rate(*_learned_call(scenario, preset, batch, seed, models), repeats)
 
 
-def _exact_call(scenario: Scenario, batch: int = 20_000, seed: int = 0) -> tuple[Callable[[], object], int]:
-    """The exact checker asked about ``batch`` uniform samples in a query workspace, and ``batch``."""
+def _exact_call(
+    scenario: Scenario,
+    batch: int = 20_000,
+    seed: int = 0,
+    make: Callable[[Workspace, BoxRobot], CollisionChecker] = exact_checker,
+) -> tuple[Callable[[], object], int]:
+    """An exact checker (``make(workspace, robot)``, default the fastest) asked about ``batch`` uniform samples in a
+    query workspace, and ``batch``."""
     ws = scenario.workspaces("query", 1, seed)[0]
-    checker = exact_checker(ws, scenario.robot)
+    checker = make(ws, scenario.robot)
     Q = scenario.robot.sample(np.random.default_rng(seed), batch)
     return (lambda: checker.are_valid(Q)), batch
 
@@ -242,20 +257,23 @@ def planning_ratios(
     ``{"sampling_ratio", "total_ratio"}`` (with / without, mean times), the same of the medians, both
     success rates and the sampling rounds and repairs a query each mode needed (means).
 
-    ``overrides`` (PRMOptions fields) apply to both modes, over the scenario's settings and the
-    preset's: the same queries with one option changed measure what that option does.
+    Without prediction is the strongest exact planner and checker: the lazy PRM (``PRMOptions``' defaults) with
+    the default exact checker (compiled), whatever the model's recipe plans with; with prediction, the recipe's
+    planner (``Preset.planner_options``: the ``paper`` preset's is Algorithm 1). ``overrides`` (PRMOptions fields)
+    apply to both modes, over the scenario's settings and the preset's: the same queries with one option changed
+    measure what that option does.
     ``samplers``: the paper's four by default, or any registered ones (``sampling.register_sampler``).
     """
     samplers = sampling.check_names(samplers)
     fields = {f.name for f in dataclasses.fields(PRMOptions)}
     if unknown := sorted(set(overrides or {}) - fields):
         raise ValueError(f"unknown planner option(s) {unknown}; PRMOptions has {sorted(fields)}")
-    options = queries.default_options(scenario, None, **{**models.preset.planner_options(), **(overrides or {})})
+    without = queries.default_options(scenario, None, **(overrides or {}))
+    with_ = queries.default_options(scenario, None, **{**models.preset.planner_options(), **(overrides or {})})
     per_workspace = min(per_workspace, scenario.queries_per_workspace)
     query_set = queries.make_queries(scenario, seed, n_workspaces, per_workspace)
-    table = queries.compare_prediction(
-        scenario, query_set, lambda ws: LearnedChecker(ws, models), samplers, options, seed
-    )
+    learned = queries.Mode(lambda ws: LearnedChecker(ws, models), options=with_)
+    table = queries.compare_prediction(scenario, query_set, learned, samplers, without, seed)
     return {sampler: prediction_ratios(row) for sampler, row in table.items()}
 
 

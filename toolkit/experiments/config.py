@@ -1,8 +1,9 @@
 """One run's configuration, built once — from the command line or a notebook — and passed down.
 
 A run of the toolkit is one of the paper's scenarios (§IV-A), a training recipe
-(a preset, §IV-B3), a seed from which every random draw follows, and a size: the
-paper's counts, or *quick*. :class:`RunConfig` holds them as objects, resolved from
+(a preset, §IV-B3), a seed from which every random draw follows, a size: the
+paper's counts, or *quick*, and what Table 3 compares prediction against
+(:data:`BASELINES`). :class:`RunConfig` holds them as objects, resolved from
 their names once (``RunConfig.create("2ds", "paper", seed=0, quick=True)``), and
 every stage of a run reads what it needs from it: how many workspaces to label,
 which preset to train, how many queries to plan, how many processes to plan in.
@@ -17,6 +18,7 @@ from __future__ import annotations
 from collections.abc import Mapping
 from dataclasses import dataclass, field, replace
 from types import MappingProxyType
+from typing import Any
 
 from toolkit import scenarios
 from toolkit.experiments import paper_numbers
@@ -47,6 +49,19 @@ class QuickSizes:
     throughput_repeats: int = 3  # timed calls per checker (a full run: 7)
     study_seen: int = 12  # ablation rows that ask for more training workspaces get this many
     study_epochs_divisor: int = 10  # tuning trains a tenth of each candidate's epochs
+    crossover: Mapping[str, Any] = field(
+        default_factory=lambda: MappingProxyType(
+            {
+                "obstacles": (10, 100),
+                "subdivisions": (0, 2),
+                "joints": (1, 3),
+                "batches": (1, 100),
+                "batch": 500,
+                "mesh_batch": 100,
+                "repeats": 1,
+            }
+        )
+    )  # `toolkit bench --crossover --quick`: CrossoverSizes' fields (two values a variable, short calls, one round)
 
     def shrink(self, preset: Preset) -> Preset:
         """The same recipe with few epochs and samples (marked ``quick``, so a checkpoint remembers it)."""
@@ -65,6 +80,20 @@ class QuickSizes:
 
 QUICK = QuickSizes()
 
+BASELINES = {  # what "without prediction" is in a reproduction's Table 3 (RunConfig.baseline; --baseline)
+    "best": "the best exact planner (the lazy PRM) with the fastest exact checker (`exact_checker`: compiled)",
+    "paper": "the paper's Algorithm 1 (every candidate edge checked as it is added) with the fastest exact checker "
+    "(`exact_checker`: compiled)",
+    "paper-fcl": "the paper's Algorithm 1 with the python-fcl checker, the paper's own baseline (with prediction, "
+    "exact checks still use the fastest checker)",
+}
+
+
+def default_baseline(preset: Preset) -> str:
+    """Table 3's baseline unless one is chosen: the recipe's own planner without prediction (the ``paper``
+    preset's is Algorithm 1, so its Table 3 compares what the paper compares), with the default exact checker."""
+    return "paper" if preset.planner == "paper" else "best"
+
 
 @dataclass(frozen=True)
 class RunConfig:
@@ -80,6 +109,7 @@ class RunConfig:
     samplers: tuple[str, ...] = paper_numbers.SAMPLERS  # planned for Table 3: the paper's four, or registered ones
     imports: tuple[str, ...] = ()  # modules that register samplers, presets or scenarios (`toolkit --import`):
     #   a worker process imports them again, since it starts without what the parent registered
+    baseline: str = "best"  # Table 3's "without prediction": a name of BASELINES
 
     @classmethod
     def create(
@@ -94,10 +124,12 @@ class RunConfig:
         device: str | None = None,
         samplers: tuple[str, ...] = paper_numbers.SAMPLERS,
         imports: tuple[str, ...] = (),
+        baseline: str | None = None,
         **preset_changes,
     ) -> RunConfig:
         """Resolve names (``scenarios.get``, ``presets.get``, the sampler registry) once; ``preset_changes`` replace
-        preset fields after quick shrinking (e.g. ``cae_epochs=5``). A seed is a whole number in ``0 .. 2**32 - 1``."""
+        preset fields after quick shrinking (e.g. ``cae_epochs=5``). A seed is a whole number in ``0 .. 2**32 - 1``;
+        ``baseline`` a name of :data:`BASELINES` (None: :func:`default_baseline` of the preset)."""
         samplers = sampling.check_names(samplers)
         scenario = scenarios.get(scenario) if isinstance(scenario, str) else scenario
         recipe = presets.get(preset) if isinstance(preset, str) else preset
@@ -108,6 +140,8 @@ class RunConfig:
             raise ValueError(f"seed must be a whole number in 0..{2**32 - 1}, got {seed!r}")
         if workers is not None and workers < 1:
             raise ValueError(f"workers must be 1 or more, got {workers!r}")
+        if baseline is not None and baseline not in BASELINES:
+            raise ValueError(f"unknown baseline {baseline!r}; choose one of {', '.join(BASELINES)}")
         return cls(
             scenario,
             replace(recipe, **preset_changes),
@@ -118,11 +152,18 @@ class RunConfig:
             device,
             tuple(samplers),
             tuple(imports),
+            baseline or default_baseline(recipe),
         )
 
     def settings(self) -> dict:
         """What makes the run, as ``results.json`` records it: a folder holding another run's cache is refused."""
-        return {"scenario": self.scenario.name, "preset": self.preset.name, "quick": self.quick, "seed": self.seed}
+        return {
+            "scenario": self.scenario.name,
+            "preset": self.preset.name,
+            "quick": self.quick,
+            "seed": self.seed,
+            "baseline": self.baseline,
+        }
 
     def workspace_counts(self) -> dict[str, int]:
         """Training, seen-test and unseen workspaces (``data.make_splits``' counts): the paper's unless quick or the

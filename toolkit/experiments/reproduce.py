@@ -8,8 +8,11 @@
 3. learning: Table 1 and Table 2 measures, and P(valid) on the unseen test set;
 4. planning: every sampler, without and with prediction in turns query by query, on the paper's queries
    (:mod:`toolkit.planning.queries`), the samplers spread over one process per core
-   (:mod:`toolkit.experiments.workers`);
-5. throughput: exact and learned checker speed (:mod:`toolkit.experiments.bench`);
+   (:mod:`toolkit.experiments.workers`). *Without* is the strongest exact planner and checker (the
+   lazy PRM, the compiled checker); where Table 3's baseline is another (``RunConfig.baseline``:
+   the ``paper`` preset's is Algorithm 1), that one is planned in the same turns too
+   (:func:`planning_modes`);
+5. throughput: the default exact, the python-fcl and the learned checker's speed (:mod:`toolkit.experiments.bench`);
 
 and writes ``out/results.json`` (the contract's keys), ``out/tables.md`` (our value
 next to the published one in every cell, :mod:`toolkit.experiments.tables`) and PNG
@@ -23,7 +26,7 @@ from __future__ import annotations
 
 import os
 import time
-from collections.abc import Callable, Iterable
+from collections.abc import Iterable
 from concurrent.futures import as_completed
 from functools import partial
 from pathlib import Path
@@ -36,14 +39,14 @@ from toolkit import plots
 from toolkit.experiments import bench, pipeline, tables
 from toolkit.experiments.config import RunConfig
 from toolkit.experiments.stages import Stages, check_out
-from toolkit.experiments.tables import MODES
+from toolkit.experiments.tables import BASELINE
 from toolkit.experiments.workers import processes
-from toolkit.geometry.collision import CollisionChecker
-from toolkit.geometry.workspace import Workspace
+from toolkit.geometry.collision import FCLChecker, exact_checker
 from toolkit.learning import checkpoints, training
 from toolkit.learning.data import SPLITS, CollisionDataset
 from toolkit.learning.learned import LearnedChecker
 from toolkit.planning import queries
+from toolkit.planning.prm import PAPER_BASELINE
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.util import outputs, plugins
 
@@ -117,7 +120,7 @@ def planning_stage(stages: Stages, config: RunConfig, models: training.TrainedMo
     are cached as soon as they arrive.
     """
     todo = [s for s in config.samplers if not stages.has(f"planning_{s}")]
-    job = partial(plan_sampler, config, str(stages.cache / "checkpoint"), models.preset.planner_options())
+    job = partial(plan_sampler, config, str(stages.cache / "checkpoint"))
     workers = config.workers or os.cpu_count() or 1
     with (
         tqdm(total=len(todo), desc=f"planning {config.scenario.name}", disable=not stages.progress, leave=False) as bar,
@@ -134,29 +137,46 @@ def planning_stage(stages: Stages, config: RunConfig, models: training.TrainedMo
     return {s: stages.load(f"planning_{s}") for s in config.samplers}
 
 
-def plan_sampler(config: RunConfig, checkpoint: str, planner: dict, sampler: str) -> tuple[str, dict, float]:
-    """One sampler over the query set, without and with prediction in turns (also in a worker process, which first
+def plan_sampler(config: RunConfig, checkpoint: str, sampler: str) -> tuple[str, dict, float]:
+    """One sampler over the query set, its :func:`planning_modes` in turns (also in a worker process, which first
     imports ``config.imports`` to register what the parent registered): the sampler, ``{"without": summary, "with":
-    summary}`` and seconds. Both modes plan with the model's recipe's planner (``planner``), so only the checker
-    differs."""
+    summary}`` (and ``"baseline"``) and seconds."""
     began = time.perf_counter()
     for module in config.imports:
         plugins.import_module(module)
     scenario = config.scenario
     query_set = queries.make_queries(scenario, config.seed, *config.query_counts())
-    options = queries.default_options(scenario, None, **planner, **config.planner_settings())
-    models = checkpoints.load_models(checkpoint, scenario.name)
-    factories: dict[str, Callable[[Workspace], CollisionChecker] | None] = {
-        "without": None,
-        "with": partial(LearnedChecker, models=models),
+    modes = planning_modes(config, checkpoints.load_models(checkpoint, scenario.name))
+    runs = queries.run_interleaved(scenario, query_set, sampler, modes, seed=config.seed)
+    return sampler, {mode: runs[mode][1] for mode in modes}, time.perf_counter() - began
+
+
+def planning_modes(config: RunConfig, models: training.TrainedModels) -> dict[str, queries.Mode]:
+    """What the planning stage plans, in turns: ``without`` prediction, the strongest exact planner and checker (the
+    lazy PRM, ``PRMOptions``' defaults, with the default exact checker); ``with``, the run's recipe's planner
+    (``Preset.planner_options``, the model's) with the learned checker deciding samples; and, when Table 3's baseline
+    (``config.baseline``) is the paper's, ``baseline``: Algorithm 1 without prediction, with the default exact
+    checker (``paper``) or python-fcl's (``paper-fcl``)."""
+    settings = config.planner_settings()
+
+    def options(**planner):
+        return queries.default_options(config.scenario, None, **planner, **settings)
+
+    learned = partial(LearnedChecker, models=models)
+    modes = {
+        "without": queries.Mode(options=options()),
+        "with": queries.Mode(learned, options=options(**config.preset.planner_options())),
     }
-    runs = queries.run_interleaved(scenario, query_set, sampler, factories, options, config.seed)
-    return sampler, {mode: runs[mode][1] for mode in MODES}, time.perf_counter() - began
+    if config.baseline != "best":
+        exact = FCLChecker if config.baseline == "paper-fcl" else exact_checker
+        modes[BASELINE] = queries.Mode(exact=exact, options=options(**PAPER_BASELINE))
+    return modes
 
 
 def improvement(planning: dict, key: str) -> dict[str, float]:
-    """Table 3's measure per sampler: ``(without - with) / without`` of the mean ``key`` time."""
-    return {s: 1.0 - planning[s]["with"][key] / planning[s]["without"][key] for s in planning}
+    """Table 3's measure per sampler: ``(without - with) / without`` of the mean ``key`` time, "without" being
+    Table 3's baseline (:func:`toolkit.experiments.tables.table_3_mode`)."""
+    return {s: 1.0 - planning[s]["with"][key] / planning[s][tables.table_3_mode(planning[s])][key] for s in planning}
 
 
 def reproduce(config: RunConfig, out: str | Path) -> dict:

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable
+from functools import partial
 from pathlib import Path
 
 from toolkit.learning import checkpoints
@@ -28,7 +29,8 @@ class Stages:
     def __init__(self, out: Path, settings: dict, progress: bool):
         check_out(out, settings)
         self.cache = out / "cache"
-        self.cache.mkdir(exist_ok=True)
+        if not self.cache.is_dir():  # it appears holding its settings: without them, check_out would refuse `out`
+            outputs.write_atomically(self.cache, partial(_new_cache, settings=settings))
         self.progress = progress
         outputs.write_json(self.cache / "settings.json", settings)
         self._seconds_file = self.cache / "stage_seconds.json"
@@ -65,6 +67,12 @@ class Stages:
         value = compute()
         self.save(name, value, time.perf_counter() - began)
         return value
+
+
+def _new_cache(folder: Path, settings: dict) -> None:
+    """A cache folder holding the run's settings."""
+    folder.mkdir()
+    outputs.write_json(folder / "settings.json", settings)
 
 
 def check_out(out: Path, settings: dict) -> None:

@@ -3,6 +3,11 @@
 Each function takes runs as ``results.json`` dicts (one row per run, as the paper
 has a row per scenario) and returns markdown lines. A sampler the paper did not
 run (one registered from your code) shows ``n/a`` where the paper's figure would be.
+
+Each table says what "without prediction" is in it: Table 3 compares against the run's
+baseline (``results["baseline"]``, :data:`toolkit.experiments.config.BASELINES`: by default the
+recipe's own planner, so the ``paper`` preset's Table 3 uses Algorithm 1 as the paper does), the
+medians table always against the strongest exact planner and checker (``without``).
 """
 
 from __future__ import annotations
@@ -11,8 +16,10 @@ import numpy as np
 
 from toolkit import scenarios
 from toolkit.experiments import paper_numbers
+from toolkit.experiments.config import BASELINES
 
 MODES = ("without", "with")  # planning without and with prediction
+BASELINE = "baseline"  # the planning mode of Table 3's baseline, where it is not "without" (the best exact)
 
 
 def percent(x: float | None) -> str:
@@ -36,6 +43,24 @@ def table(header: list[str], rows: list[list[str]]) -> list[str]:
 def samplers_of(runs: list[dict]) -> list[str]:
     """The samplers planned in the runs, in the order of the first run."""
     return list(runs[0]["planning"])
+
+
+def table_3_mode(row: dict) -> str:
+    """The mode Table 3 compares "with" against in one sampler's planning ``row``: its baseline's where the run
+    planned one, else ``without``."""
+    return BASELINE if BASELINE in row else "without"
+
+
+def baseline_note(runs: list[dict], name: str | None = None) -> str:
+    """What "without prediction" is in a table: ``name`` (a key of ``BASELINES``), or each run's baseline."""
+    names = {name} if name else {r.get("baseline", "best") for r in runs}
+    if len(names) == 1:
+        return f"*Without prediction*: {BASELINES[names.pop()]}."
+    return (
+        "*Without prediction*: "
+        + "; ".join(f"{r['scenario']}: {BASELINES[r.get('baseline', 'best')]}" for r in runs)
+        + "."
+    )
 
 
 def cae_row(run: dict) -> list[str]:
@@ -78,13 +103,14 @@ def time_rows(run: dict, samplers: list[str]) -> list[list[str]]:
     rows, paper = [], paper_numbers.TIMES.get(run["scenario"], {})
     for s in samplers:
         planning = run["planning"][s]
+        modes = (table_3_mode(planning), "with")
         cells = [
             f"**{mean_std((planning[m][key], planning[m][key + '_std']))}** / "
             f"{mean_std(paper.get(key, {}).get(s, (None, None))[i])}"
             for key in ("sampling_s", "total_s")
-            for i, m in enumerate(MODES)
+            for i, m in enumerate(modes)
         ]
-        rates = [" / ".join(percent(planning[m][rate]) for m in MODES) for rate in ("success_rate", "path_valid_rate")]
+        rates = [" / ".join(percent(planning[m][rate]) for m in modes) for rate in ("success_rate", "path_valid_rate")]
         rows.append([run["scenario"], s] + cells + rates)
     return rows
 
@@ -132,9 +158,11 @@ def paper_tables(runs: list[dict]) -> list[str]:
             "",
             "## Table 3: time improvement ratio (without − with) / without",
             "",
+            baseline_note(runs),
+            "",
         ]
         + table([""] + by_sampler, [improvement_row(r, samplers) for r in runs])
-        + ["", "## Times behind Table 3 (seconds per query, mean ± std; ours / paper)", ""]
+        + ["", "## Times behind Table 3 (seconds per query, mean ± std; ours / paper)", "", baseline_note(runs), ""]
         + table(
             [
                 "",
@@ -162,7 +190,7 @@ def median_ratios(runs: list[dict]) -> list[str]:
         [r["scenario"]] + [ratio(r["planning"][s], key) for key in ("sampling_s", "total_s") for s in samplers]
         for r in runs
     ]
-    return ["## Time with / without prediction, medians over the queries", ""] + table(
+    return ["## Time with / without prediction, medians over the queries", "", baseline_note(runs, "best"), ""] + table(
         [""] + [f"Sampling {s}" for s in samplers] + [f"Total {s}" for s in samplers], rows
     )
 
@@ -173,19 +201,24 @@ def run_costs(runs: list[dict]) -> list[str]:
     for r in runs:
         t, seconds = r["throughput"], r["stage_seconds"]
         planning = sum(seconds.get(f"planning_{s}", 0.0) for s in r["planning"])
+        fcl = f"{t['fcl_cfg_per_s']:,.0f}" if "fcl_cfg_per_s" in t else "n/a"  # a run from before issue 25
         rows.append(
-            [r["scenario"], f"{t['exact_cfg_per_s']:,.0f}", f"{t['learned_cfg_per_s']:,.0f}", f"{t['ratio']:.3g}"]
+            [r["scenario"], f"{t['exact_cfg_per_s']:,.0f}", fcl, f"{t['learned_cfg_per_s']:,.0f}", f"{t['ratio']:.3g}"]
             + [f"{seconds[k]:.0f}" if k in seconds else "n/a" for k in ("data", "models")]
             + [f"{planning:.0f}"]
         )
     return [
         "## Checker throughput (configurations per second, median) and stage times (seconds)",
         "",
-        "Each stage's time when it was computed (a resumed run keeps them). *planning*: the samplers' runs "
-        "(each query without and with prediction in turn) added up (by default in parallel, one process per core; "
-        "`--workers`).",
+        "*Exact*: the fastest exact checker (`exact_checker`: compiled; numpy interval tests for the 2D point "
+        "robot); *FCL*: the python-fcl reference; *learned*: the networks of the preset's sizes; the three timed in "
+        "turns. Each stage's time when it was computed (a "
+        "resumed run keeps them). *planning*: the samplers' runs (each query in every mode in turn) added up (by "
+        "default in parallel, one process per core; `--workers`).",
         "",
-    ] + table(["", "exact cfg/s", "learned cfg/s", "learned / exact", "data s", "models s", "planning s"], rows)
+    ] + table(
+        ["", "exact cfg/s", "FCL cfg/s", "learned cfg/s", "learned / exact", "data s", "models s", "planning s"], rows
+    )
 
 
 def tables_markdown(results: dict) -> str:

@@ -164,7 +164,8 @@ def _cae_row(held: HeldOut, preset: presets.Preset, cae_file: Path) -> dict:
         max_lr=scenario.cae_max_lr,
     )  # as training.train_models caps it
     seconds = time.perf_counter() - began
-    torch.save(predictor.cae.state_dict(), cae_file)
+    state = predictor.cae.state_dict()
+    outputs.write_atomically(cae_file, lambda tmp: torch.save(state, tmp))  # a rerun trusts it: whole or none
     with torch.no_grad():
         acc = {
             name: float(

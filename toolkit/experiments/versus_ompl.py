@@ -20,8 +20,8 @@ one function each:
 
 What keeps the race fair:
 
-- One checker: every planner asks a fresh ``ExactChecker`` per query; ours in
-  batches, OMPL's one state per call (OMPL asks about one state at a time).
+- One checker: every planner asks a fresh default exact checker (``exact_checker``: compiled for box
+  worlds) per query; ours in batches, OMPL's one state per call (OMPL asks about one state at a time).
 - One edge resolution: OMPL's state space measures distance as ``robot.motion_bound``
   and its validity-checking resolution is ``resolution / space.getMaximumExtent()``,
   so no robot point moves farther than the scenario's resolution between two checks,

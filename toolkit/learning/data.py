@@ -31,6 +31,7 @@ from tqdm.auto import tqdm
 from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace
 from toolkit.scenarios import Scenario, stream_rng
+from toolkit.util import outputs
 
 SPLITS = ("train", "seen_test", "unseen_test")
 
@@ -113,11 +114,12 @@ class CollisionDataset:
         """Write an ``.npz`` (atomically: a temporary file, then a rename)."""
         path = Path(path)
         meta = dict(self.meta, scenario=self.scenario, workspaces=[ws.to_dict() for ws in self.workspaces])
-        tmp = path.with_name(path.name + ".tmp.npz")
-        np.savez_compressed(
-            tmp, occupancy=self.occupancy, configs=self.configs, valid=self.valid, meta=np.array(json.dumps(meta))
+        outputs.write_atomically(
+            path,
+            lambda tmp: np.savez_compressed(
+                tmp, occupancy=self.occupancy, configs=self.configs, valid=self.valid, meta=np.array(json.dumps(meta))
+            ),
         )
-        tmp.replace(path)
 
     @classmethod
     def load(cls, path: str | Path, scenario: str | None = None) -> CollisionDataset:

@@ -13,18 +13,21 @@ and std of ``sampling_s`` and ``total_s`` (and their medians), ``success_rate``,
 ``path_valid_rate``, the fraction of returned paths that a fresh exact checker
 accepts at 10x finer resolution than the local planner's. ``run_interleaved`` does
 the same in several modes (without and with prediction) taking turns query by
-query, so that the ratio of their times is measured under the same conditions.
+query, so that the ratio of their times is measured under the same conditions; a
+:class:`Mode` names what differs between them: the checker that decides samples,
+the exact checker, the planner's settings.
 """
 
 from __future__ import annotations
 
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 import numpy as np
 
 from toolkit.geometry.collision import CollisionChecker, exact_checker
+from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.planning.local_planner import path_is_valid
 from toolkit.planning.prm import PlanResult, PRMOptions, plan
@@ -33,6 +36,17 @@ from toolkit.scenarios import STREAMS, Scenario
 from toolkit.util import threads
 
 PAIR_STREAM = 1  # appended to the workspace's seed words: the start/goal pairs of query workspace i
+
+
+@dataclass(frozen=True)
+class Mode:
+    """One way to plan a query set, for :func:`run_interleaved`: which checker decides samples (``checker(workspace)``;
+    None: the exact one), which exact checker checks edges and paths (``exact(workspace, robot)``; default: the
+    fastest, :func:`~toolkit.geometry.collision.exact_checker`), with which planner settings (None: the run's)."""
+
+    checker: Callable[[Workspace], CollisionChecker] | None = None
+    exact: Callable[[Workspace, BoxRobot], CollisionChecker] = exact_checker
+    options: PRMOptions | None = None
 
 
 @dataclass(frozen=True)
@@ -95,12 +109,14 @@ def solve_query(
     checker: CollisionChecker | None = None,
     options: PRMOptions | None = None,
     seed=0,
+    exact: CollisionChecker | None = None,
 ) -> PlanResult:
     """One query with ``sampler``; ``checker`` decides samples (None: the exact checker); by default the
-    scenario's settings and the planner options of the checker's preset (:func:`default_options`)."""
+    scenario's settings and the planner options of the checker's preset (:func:`default_options`); ``exact``
+    checks edges and paths (None: :func:`~toolkit.geometry.collision.exact_checker`)."""
     options = options or default_options(scenario, checker)
     return plan(
-        exact_checker(query.workspace, scenario.robot),
+        exact or exact_checker(query.workspace, scenario.robot),
         query.start,
         query.goal,
         sampler=sampler,
@@ -133,12 +149,13 @@ def run_interleaved(
     scenario: Scenario,
     queries: list[Query],
     sampler: str,
-    factories: dict[str, Callable[[Workspace], CollisionChecker] | None],
+    factories: Mapping[str, Callable[[Workspace], CollisionChecker] | Mode | None],
     options: PRMOptions | None = None,
     seed: int = 0,
 ) -> dict[str, tuple[list[dict], dict]]:
-    """:func:`run_queries` once per entry of ``factories`` (a name: a checker factory, or None for exact), the
-    entries taking turns query by query (who goes first rotates), each query with the same seed in every entry.
+    """:func:`run_queries` once per entry of ``factories`` (a name: a checker factory, None for exact, or a
+    :class:`Mode`, whose own options replace ``options``), the entries taking turns query by query (who goes
+    first rotates), each query with the same seed in every entry.
 
     So all entries see the machine alike: a shared machine changes speed for minutes
     at a time, which moves the ratio of two runs made one
@@ -165,25 +182,32 @@ def _solve_all(
     scenario: Scenario,
     queries: list[Query],
     sampler: str,
-    factories: dict[str, Callable[[Workspace], CollisionChecker] | None],
+    factories: Mapping[str, Callable[[Workspace], CollisionChecker] | Mode | None],
     options: PRMOptions | None,
     seed: int,
 ) -> dict[str, list[dict]]:
     """The per-query records of :func:`run_interleaved`, per name."""
-    names = list(factories)
+    modes = {name: entry if isinstance(entry, Mode) else Mode(entry) for name, entry in factories.items()}
+    names = list(modes)
     records: dict[str, list[dict]] = {name: [] for name in names}
     checkers: dict[str, dict] = {name: {} for name in names}  # per name: workspace index -> checker
     share = np.bincount([q.workspace_index for q in queries])  # queries per workspace
     for n, query in enumerate(queries):
         turn = n % len(names)
         for name in names[turn:] + names[:turn]:
-            encode_s, factory, built = 0.0, factories[name], checkers[name]
-            if factory is not None and query.workspace_index not in built:
+            encode_s, mode, built = 0.0, modes[name], checkers[name]
+            if mode.checker is not None and query.workspace_index not in built:
                 began = time.perf_counter()
-                built[query.workspace_index] = factory(query.workspace)
+                built[query.workspace_index] = mode.checker(query.workspace)
                 encode_s = (time.perf_counter() - began) / share[query.workspace_index]
             result = solve_query(
-                scenario, query, sampler, built.get(query.workspace_index), options, seed=[int(seed), n]
+                scenario,
+                query,
+                sampler,
+                built.get(query.workspace_index),
+                mode.options or options,
+                seed=[int(seed), n],
+                exact=mode.exact(query.workspace, scenario.robot),
             )
             fine = result.stats["resolution"] / 10
             valid = result.success and path_is_valid(exact_checker(query.workspace, scenario.robot), result.path, fine)
@@ -231,13 +255,14 @@ def summarize(records: list[dict]) -> dict:
 def compare_prediction(
     scenario: Scenario,
     queries: list[Query],
-    checker_factory: Callable[[Workspace], CollisionChecker],
+    checker_factory: Callable[[Workspace], CollisionChecker] | Mode,
     samplers=PAPER_SAMPLERS,
     options: PRMOptions | None = None,
     seed: int = 0,
 ) -> dict:
     """Per sampler: ``{"without": summary, "with": summary, "sampling_ratio", "total_ratio"}`` (with / without),
-    the two modes in turns (:func:`run_interleaved`)."""
+    the two modes in turns (:func:`run_interleaved`); "without" plans with ``options``, "with" with
+    ``checker_factory`` (a :class:`Mode` brings its own options)."""
     table = {}
     for sampler in samplers:
         runs = run_interleaved(scenario, queries, sampler, {"without": None, "with": checker_factory}, options, seed)

@@ -11,15 +11,18 @@ per topic, in the order of the notebooks:
 - :mod:`toolkit.plots.planning` — samplers, roadmaps and planning times (notebook 04);
 - :mod:`toolkit.plots.scenes` — a planned 3D path, one frame at a time (notebook 05);
 - :mod:`toolkit.plots.reproduction` — the reproduction's figures (paper Figures 5-7, ``toolkit reproduce``);
+- :mod:`toolkit.plots.crossover` — where prediction pays: exact and learned cost per configuration
+  (``toolkit bench --crossover``; notebook 04);
 - :mod:`toolkit.plots.tutorials` — what only the tutorials show: a mesh workspace, samplers in a narrow passage.
 
 >>> from toolkit.plots import reproduction  # doctest: +SKIP
 """
 
+from toolkit.plots.crossover import crossover
 from toolkit.plots.reproduction import (
     cae_reconstruction,
     planning_times,
     threshold_sweep,
 )
 
-__all__ = ["cae_reconstruction", "planning_times", "threshold_sweep"]
+__all__ = ["cae_reconstruction", "crossover", "planning_times", "threshold_sweep"]

@@ -96,6 +96,28 @@ def confusion_counts(predicted_valid, valid) -> dict[str, int]:
     return dict(zip(ANSWERS, counts.tolist()))
 
 
+def mistakes_near_boundary(predicted_valid, valid, cells: int = 1) -> tuple[int, float]:
+    """Wrong answers on a map ``(nx, ny)``, and the share of them near a boundary of the true C-obstacle: within
+    ``cells`` steps (left, right, down, up) of a cell of the other truth, or of the map's edge (the swept bounds,
+    where a robot placed in the region meets its walls). A model that has learned the obstacles errs there only,
+    where a configuration is a hair's breadth from a block or a wall; mistakes elsewhere mean it has not."""
+    truth = np.asarray(valid, dtype=bool)
+    if truth.ndim != 2 or np.shape(predicted_valid) != truth.shape:
+        raise ValueError(f"a map of predictions {np.shape(predicted_valid)} and one of truth {truth.shape} (nx, ny)")
+    if cells < 1:
+        raise ValueError(f"cells must be 1 or more, got {cells}")
+    wrong = np.asarray(predicted_valid, dtype=bool) != truth  # (nx, ny) valid rejected or invalid kept
+    padded = np.pad(truth, 1, mode="edge")  # (nx + 2, ny + 2): the map's edge counts as a boundary below
+    inside = padded[1:-1, 1:-1]
+    near = (padded[:-2, 1:-1] != inside) | (padded[2:, 1:-1] != inside)
+    near |= (padded[1:-1, :-2] != inside) | (padded[1:-1, 2:] != inside)
+    near[[0, -1], :] = near[:, [0, -1]] = True  # (nx, ny) beside the other truth, or on the map's edge
+    for _ in range(cells - 1):  # grow by one step a round
+        grown = np.pad(near, 1)
+        near = near | grown[:-2, 1:-1] | grown[2:, 1:-1] | grown[1:-1, :-2] | grown[1:-1, 2:]
+    return int(wrong.sum()), float((wrong & near).sum() / max(1, wrong.sum()))
+
+
 def roc_points(probability, valid, thresholds=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """``(thresholds, FPR, TPR)`` of "valid when P(valid) >= t": FPR = invalid kept share = 1 - TNR.
 

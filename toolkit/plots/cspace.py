@@ -156,7 +156,8 @@ def draw_robot(
     """Draw the link boxes of configurations ``Q (k, dof)``, one colour each, and the blocks within ``margin`` of them,
     on one axes (the building block of :func:`robot_figure`, :func:`cspace_slice` and the scene figures).
 
-    ``view``: ``"3d"`` (``ax`` an mplot3d axes) or a plane ``"xy"``, ``"xz"``, ``"yz"`` (the shadow of each box).
+    ``view``: ``"3d"`` (``ax`` an mplot3d axes) or a plane ``"xy"``, ``"xz"``, ``"yz"`` (the shadow of each box,
+    drawn far to near as seen from the page's front: in ``"xy"`` from above, so the highest link lies on top).
     Links have gid ``"link"``, blocks gid ``"block"``; the axes' limits frame them.
     """
     Q = robot.check_configs(Q)  # (k, dof)
@@ -199,8 +200,9 @@ def draw_robot(
                 gid="block",
             )
         )
-    for corners, color in link_boxes:
-        ax.add_patch(
+    toward_viewer = np.cross(*np.eye(3)[list(axes)]) if robot.dim == 3 else np.zeros(2)  # (D,) out of the page
+    for corners, color in sorted(link_boxes, key=lambda box: float((box[0] @ toward_viewer).max())):
+        ax.add_patch(  # nearest the viewer last, on top: from above, a higher link hides what lies under it
             Polygon(outline(corners, axes), facecolor=color, edgecolor="k", linewidth=0.6, alpha=0.85, gid="link")
         )
     ax.set_xlim(lo[axes[0]], hi[axes[0]])
@@ -224,6 +226,7 @@ def robot_figure(
     valid=None,
     views: tuple[str, ...] | None = None,
     margin: float = 1.0,
+    labels: Sequence[str] | None = None,
 ) -> Figure:
     """The robot's link boxes at configurations ``Q (dof,)`` or ``(k, dof)``, by forward kinematics.
 
@@ -231,17 +234,23 @@ def robot_figure(
     panel shows its shadow, the convex hull of its projected corners) or ``"3d"``.
     Default: ``("xy",)`` for a 2D robot, ``("3d", "xy", "xz")`` for a 3D one. Blocks of
     ``workspace`` within ``margin`` of the robot are drawn too; ``valid (k,)`` colors
-    each configuration green (valid) or red (in collision), else each one in a colour of its own.
+    each configuration green (valid) or red (in collision), else each one in a colour of its own,
+    named in a legend by ``labels (k,)`` (where the configurations' boxes coincide, the last one's shows).
     """
     Q = robot.check_configs(Q)  # (k, dof)
     views = views or (("xy",) if robot.dim == 2 else ("3d", "xy", "xz"))
-    fig = Figure(figsize=(4.2 * len(views), 4.2))
+    if labels is not None and len(labels) != len(Q):
+        raise ValueError(f"{len(labels)} labels for {len(Q)} configurations: give one label a configuration")
+    fig = Figure(figsize=(4.2 * len(views), 4.2 + 0.4 * (labels is not None)))
     colors = _link_colors(len(Q), valid)
     for i, view in enumerate(views):
         ax = fig.add_subplot(1, len(views), i + 1, **({"projection": "3d"} if view == "3d" else {}))
         draw_robot(ax, robot, Q, colors, view, workspace, margin)
         ax.set_title(f"{robot.name}: {view}", fontsize=10)
-    fig.tight_layout()
+    if labels is not None:
+        handles = [Patch(facecolor=color, edgecolor="k", label=label) for color, label in zip(colors, labels)]
+        fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0, 0.08 if labels is not None else 0, 1, 1))
     return fig
 
 

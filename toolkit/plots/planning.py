@@ -10,6 +10,7 @@ throughputs. Every function returns a matplotlib ``Figure`` and never calls ``sh
 
 from __future__ import annotations
 
+import textwrap
 from typing import Any
 
 import numpy as np
@@ -192,27 +193,33 @@ def stage_times(panels: dict[str, dict]) -> Figure:
     return fig
 
 
-def ratio_comparison(panels: dict[str, dict[str, dict[str, float]]]) -> Figure:
-    """Time with / without prediction (below 1: prediction saves time) per sampler, one bar per source
-    (e.g. the paper, docs/results.md, this notebook); ``{panel: {source: {sampler: ratio}}}``, log scale."""
-    fig = Figure(figsize=(3.6 * len(panels), 3.6))
-    axes = fig.subplots(1, len(panels), squeeze=False)[0]
-    for ax, (title, sources) in zip(axes, panels.items()):
-        width = 0.8 / len(sources)
-        for i, (source, ratios) in enumerate(sources.items()):
+def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figure:
+    """Time with / without prediction per sampler (below 1: prediction saves time), one panel per baseline.
+
+    ``{baseline: {series: {sampler: ratio}}}``: a baseline is what "without" was (the paper's own planner and
+    means, our eager or lazy exact planner and medians), a series what was timed (e.g. "2DS, sampling"). Ratios
+    against different baselines never share a bar group; the panels share one log axis, so heights compare.
+    """
+    fig = Figure(figsize=(3.8 * len(baselines), 4.0))
+    axes = fig.subplots(1, len(baselines), squeeze=False, sharey=True)[0]
+    for ax, (title, series) in zip(axes, baselines.items()):
+        width = 0.8 / len(series)
+        for i, (name, ratios) in enumerate(series.items()):
             ax.bar(
-                np.arange(len(PAPER_SAMPLERS)) + (i - (len(sources) - 1) / 2) * width,
+                np.arange(len(PAPER_SAMPLERS)) + (i - (len(series) - 1) / 2) * width,
                 [ratios[s] for s in PAPER_SAMPLERS],
                 width,
-                label=source,
+                label=name,
+                color=f"C{i}",
             )
         ax.axhline(1.0, color="black", linewidth=0.8)
-        _log_ticks(ax)
         ax.set_xticks(np.arange(len(PAPER_SAMPLERS)), PAPER_SAMPLERS)
-        ax.set_title(title, fontsize=9)
-        ax.set_ylabel("time with / without")
-    fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=len(sources), fontsize=8, frameon=False)
-    fig.tight_layout(rect=(0, 0.08, 1, 1))
+        ax.set_title(textwrap.fill(title, 42), fontsize=8)
+    _log_ticks(axes[0])  # shared by every panel
+    axes[0].set_ylabel("time with / without")
+    handles, names = axes[0].get_legend_handles_labels()
+    fig.legend(handles, names, loc="lower center", ncol=len(names), fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0, 0.07, 1, 1))
     return fig
 
 

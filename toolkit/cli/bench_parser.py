@@ -1,0 +1,128 @@
+"""``toolkit bench``'s options: the checkers' speed, then ``--checkpoint``'s planning, ``--vs-ompl``'s race and
+``--crossover``'s sweep, one function each (:func:`bench_options` joins them), built from the checked types and
+shared options of :mod:`toolkit.cli.arguments`.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+from toolkit.cli.arguments import SCENARIO_HELP, int_in, planner_option, preset, sampler_list, scenario, seed
+from toolkit.experiments import paper_numbers
+
+CROSSOVER_SCENARIO = "3dc9"  # --crossover without --scenario: the paper's dearest clutter check
+
+
+def bench_options(cmd: argparse.ArgumentParser) -> None:
+    """The checkers' speed (a scenario, a seed, the sizes), then the options of ``--checkpoint``
+    (:func:`bench_planning_options`), ``--vs-ompl`` (:func:`bench_versus_ompl_options`) and ``--crossover``
+    (:func:`bench_crossover_options`), and ``--option``, a planner setting for ``--checkpoint``'s runs, last, as
+    ``toolkit bench --help`` lists them."""
+    scenario(cmd, help=SCENARIO_HELP + f"; needed but with --crossover (default {CROSSOVER_SCENARIO})")
+    seed(cmd, "the workspace and the configurations timed")
+    cmd.add_argument("--json", action="store_true", help="print one JSON object instead of lines")
+    preset(cmd, "network sizes whose learned speed is measured (default paper; speed does not depend on the weights)")
+    cmd.add_argument(
+        "--batch",
+        type=int_in(1, 1_000_000),
+        metavar="N",
+        help="configurations per call for every checker, 1..1000000 (default: 20,000 exact and FCL, "
+        "10,000 learned; a sampler asks for 200-2,000)",
+    )
+    bench_planning_options(cmd)
+    bench_versus_ompl_options(cmd)
+    bench_crossover_options(cmd)
+    cmd.add_argument(
+        "--option",
+        type=planner_option,
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="with --checkpoint: a planner setting (a PRMOptions field in toolkit/planning/options.py) "
+        "for both runs, e.g. rebridge=0; repeat for several",
+    )
+
+
+def bench_planning_options(cmd: argparse.ArgumentParser) -> None:
+    """`bench --checkpoint`: the trained model, and the queries planned with and without it."""
+    cmd.add_argument(
+        "--checkpoint",
+        metavar="DIR",
+        help="a trained model (from `toolkit train`, or DIR/cache/checkpoint of `toolkit reproduce`): also "
+        "time PRM with it and without (the best exact planner, the lazy PRM, with the default exact checker)",
+    )
+    cmd.add_argument(
+        "--workspaces",
+        type=int_in(1, 100),
+        default=2,
+        metavar="N",
+        help="with --checkpoint: query workspaces to plan in, 1..100 (default 2)",
+    )
+    cmd.add_argument(
+        "--pairs",
+        type=int_in(1, 10),
+        default=2,
+        metavar="N",
+        help="with --checkpoint: start/goal pairs per workspace, 1..10 (default 2)",
+    )
+    cmd.add_argument(
+        "--samplers",
+        type=sampler_list,
+        default=paper_numbers.SAMPLERS,
+        metavar="LIST",
+        help="with --checkpoint: comma-separated samplers to plan with, e.g. BT,OB (default: the paper's four)",
+    )
+
+
+def bench_versus_ompl_options(cmd: argparse.ArgumentParser) -> None:
+    """`bench --vs-ompl`: the race against OMPL's planners, and its queries and time limit."""
+    cmd.add_argument(
+        "--vs-ompl",
+        action="store_true",
+        help="instead: plan --queries N queries with our planners (best exact, the paper's baseline, "
+        "and with --checkpoint's model) and OMPL's PRM and RRTConnect on the same exact checker, "
+        "in turns, one thread, and print a markdown table (needs the ompl extra: "
+        "pip install 'sample-collision-toolkit[ompl]'); use a --seed the planner was not tuned on "
+        "(not 0 or 7100), e.g. 9000",
+    )
+    cmd.add_argument(
+        "--queries",
+        type=int_in(1, 1000),
+        default=10,
+        metavar="N",
+        help="with --vs-ompl: the first N queries of the seed's query set (default 10)",
+    )
+    cmd.add_argument(
+        "--ompl-seconds",
+        type=float,
+        default=30.0,
+        metavar="S",
+        help="with --vs-ompl: OMPL's time limit per query (default 30)",
+    )
+
+
+def bench_crossover_options(cmd: argparse.ArgumentParser) -> None:
+    """`bench --crossover`: where prediction pays, the variables swept, quick sizes, a folder for the figure."""
+    cmd.add_argument(
+        "--crossover",
+        action="store_true",
+        help="instead: the exact checkers' and the learned one's cost per configuration as the obstacles, a mesh "
+        "obstacle's triangles, the robot's links and the batch grow (toolkit/experiments/crossover.py), and "
+        "where they cross; a few minutes",
+    )
+    cmd.add_argument(
+        "--variables",
+        type=lambda text: tuple(text.split(",")),
+        default=(),
+        metavar="LIST",
+        help="with --crossover: comma-separated variables to sweep, of obstacles, triangles, links, batch "
+        "(default: all that apply; 2D: obstacles, batch)",
+    )
+    cmd.add_argument(
+        "--quick", action="store_true", help="with --crossover: two small values a variable, to try the command"
+    )
+    cmd.add_argument(
+        "--out",
+        metavar="DIR",
+        help="with --crossover: also write DIR/crossover.json and DIR/crossover.png (the figure)",
+    )

@@ -1,0 +1,69 @@
+"""Where prediction pays: an exact check's cost per configuration against the network's (``toolkit bench --crossover``).
+
+:func:`crossover` draws the sweeps of :func:`toolkit.experiments.crossover.crossover` (its
+results dict, as ``crossover.json`` holds it): one panel per variable that makes an exact check
+dear, microseconds per configuration on log-log axes, shaded where the network is the cheaper
+check and a dotted line where its curve crosses an exact one. Nothing here calls ``show()``.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+
+STYLES = {  # checker -> (marker and line, colour, legend)
+    "exact": ("o-", "tab:blue", "exact, default (compiled)"),
+    "fcl": ("s--", "tab:gray", "exact, python-fcl"),
+    "learned": ("^-", "tab:orange", "learned (the network)"),
+}
+
+
+def crossover(results: dict) -> Figure:
+    """One panel per swept variable: cost per configuration of the default exact checker, of python-fcl and of
+    the learned checker against the variable; shaded where learning is cheaper than the default exact check,
+    a dotted vertical line where two curves cross (the crossing's value beside it)."""
+    sweeps = results["variables"]
+    columns = min(len(sweeps), 2)
+    rows = -(-len(sweeps) // columns)
+    fig = Figure(figsize=(5.2 * columns, 3.9 * rows))
+    axes = fig.subplots(rows, columns, squeeze=False).ravel()
+    for ax, sweep in zip(axes, sweeps.values()):
+        _panel(ax, sweep)
+    for ax in axes[len(sweeps) :]:
+        ax.set_visible(False)
+    quick = " (quick sizes)" if results.get("quick") else ""
+    fig.suptitle(
+        f"Where prediction pays: {results['scenario']}, preset {results['preset']}{quick}; "
+        "shaded: the network is the cheaper check"
+    )
+    fig.tight_layout()
+    return fig
+
+
+def _panel(ax, sweep: dict) -> None:
+    """One variable: the three curves, the shaded wins, the crossings."""
+    x = np.asarray(sweep["values"], dtype=float)
+    exact, learned = np.asarray(sweep["exact_us"], float), np.asarray(sweep["learned_us"], float)
+    mesh = all(f is None for f in sweep["fcl_us"])  # a mesh: the default exact check is FCL's BVH
+    for name in ("exact", "fcl", "learned"):
+        if name == "fcl" and mesh:
+            continue
+        style, colour, label = STYLES[name]
+        label = "exact, default (FCL's mesh BVH, inside test)" if name == "exact" and mesh else label
+        ax.plot(x, np.asarray(sweep[f"{name}_us"], float), style, color=colour, label=label)
+    ax.fill_between(
+        x, learned, exact, where=learned < exact, interpolate=True, color="tab:orange", alpha=0.2, label="learning wins"
+    )
+    for name, found in sweep["crossing"].items():
+        if found is not None:
+            ax.axvline(found["value"], ls=":", color=STYLES[name][1])
+            ax.annotate(
+                f"{found['value']:,.3g}", (found["value"], 0.02), xycoords=("data", "axes fraction"), fontsize=8
+            )
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    ax.set_xticks(x, [f"{v:,.0f}" for v in x])  # the measured values, as numbers
+    ax.minorticks_off()
+    ax.set_xlabel(sweep["label"])
+    ax.set_ylabel("µs per configuration")
+    ax.legend(fontsize=7)
