@@ -1,10 +1,13 @@
 """The course assignments grade honestly (tutorials/assignments/, toolkit.teaching.grading, otter-grader).
 
-The slow tests build every master with ``otter assign`` and grade, all at once in threads
-(each ``otter run`` is a subprocess with its own kernel): the master's solutions, the untouched
-student notebook, a plausible wrong answer per assignment, a submission that never ends and a
-file that is not a notebook; and they follow ``tutorials/instructors.md`` on a folder of three
-submissions.
+The slow tests build every master with ``otter assign`` and grade with ``otter run``, as
+``toolkit grade`` does, all at once in threads (each ``otter run`` is a subprocess with its own
+kernel): each master's solutions, its untouched student notebook, a submission that never ends and
+a file that is not a notebook. Every planted wrong answer of ``tests/assignment_variants.py`` is
+scored by otter's own test runner on the autograder's tests, public and hidden, in this process
+(the cells grading runs, then the tests, as ``otter run`` does, in seconds instead of a kernel
+each); one wrong answer per assignment also goes through ``otter run`` and must score the same.
+Then they follow ``tutorials/instructors.md`` on a folder of three submissions.
 """
 
 from __future__ import annotations
@@ -19,119 +22,147 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import pytest
+from assignment_variants import VARIANTS, Variant
+from otter.test_files import OKTestFile
 
 from toolkit import cli
 from toolkit.cli import commands
-from toolkit.teaching import grading
+from toolkit.teaching import grading, handout
 
 ASSIGNMENTS = ["bridge_test", "verify_and_repair", "evaluating_a_checker", "cae_loss"]
-# Plausible wrong answers: (assignment, the solution's line, its replacement, the questions it breaks).
-WRONG = {
-    "bridge_keeps_invalid_midpoints": (
-        "bridge_test",
-        "keep = free(checker, middles)",
-        "keep = np.ones(len(middles), dtype=bool)",
-        {"q1"},
-    ),
-    "repair_trusts_the_liar": (
-        "verify_and_repair",
-        "path = roadmap.shortest_path(start, goal)  # (P,) node indices",
-        "return roadmap.shortest_path(start, goal)",
-        {"q1"},
-    ),
-    "tpr_and_tnr_swapped": (
-        "evaluating_a_checker",
-        '"tpr": float(np.mean(predicted_valid[valid])) if valid.any() else float("nan"),\n        "tnr"',
-        '"tnr": float(np.mean(predicted_valid[valid])) if valid.any() else float("nan"),\n        "tpr"',
-        {"q1"},
-    ),
-    "threshold_ignores_invalid_paths": (
-        "evaluating_a_checker",
-        'if all(r["success"] and r["path_valid"] for r in records)',
-        'if all(r["success"] for r in records)',
-        {"q2"},
-    ),
-    "loss_without_the_penalty": (
-        "cae_loss",
-        "return reconstruction + lam * contractive_penalty(cae, grids)",
-        "return reconstruction",
-        {"q2"},
-    ),
-    "penalty_without_gradient": ("cae_loss", "create_graph=True)[0]", "retain_graph=True)[0]", {"q1"}),
+THROUGH_OTTER_RUN = {  # one wrong answer per assignment graded by `otter run` too, to agree with the in-process score
+    "bridge_test": "bridge_sigma_squared",
+    "verify_and_repair": "repair_checks_nodes_only",
+    "evaluating_a_checker": "threshold_upper_median",
+    "cae_loss": "loss_sign_error",
 }
 HANG_TIMEOUT_S = 30
 
 
-def _edited(source: Path, target: Path, old: str, new: str) -> Path:
-    """A copy of notebook ``source`` at ``target`` with ``old`` replaced by ``new`` (which must occur once)."""
-    notebook = json.loads(source.read_text())
-    hits = 0
-    for cell in notebook["cells"]:
-        text = "".join(cell["source"])
-        hits += text.count(old)
-        cell["source"] = text.replace(old, new)
-    assert hits == 1, f"{old!r} occurs {hits} times in {source}"
+def _solved(name: str) -> Path:
+    """The master's notebook with its solutions, as ``otter assign`` wrote it beside the autograder."""
+    return grading.autograder(name).parent / f"{name}.ipynb"
+
+
+def _with_variant(variant: Variant, target: Path) -> Path:
+    """A copy of the solved notebook at ``target`` with the cell defining the variant's function replaced by it."""
+    notebook = json.loads(_solved(variant.assignment).read_text())
+    cells = [
+        c for c in notebook["cells"] if c["cell_type"] == "code" and f"def {variant.function}(" in "".join(c["source"])
+    ]
+    assert len(cells) == 1, f"{len(cells)} cells define {variant.function} in {variant.assignment}"
+    cells[0]["source"] = variant.code
     target.parent.mkdir(parents=True, exist_ok=True)
     target.write_text(json.dumps(notebook))
     return target
 
 
-@pytest.fixture(scope="module")
-def graded(tmp_path_factory) -> dict[str, dict]:
-    """Build every assignment, then grade all the notebooks below concurrently.
+def _scores_in_process(notebook: Path) -> dict[str, float]:
+    """Each autograded question's score, as ``otter run`` computes it: the student's cells that grading runs
+    (``otter_ignore`` ones skipped, IPython magics dropped) in one namespace, then otter's test runner on every
+    test of the autograder, public and hidden."""
+    cells = json.loads(notebook.read_text())["cells"]
+    namespace: dict = {"__name__": "__main__"}
+    for cell in cells:  # otter's own cells (its set-up, the grader.check calls) are not editable: not the student's
+        meta = cell["metadata"]
+        if cell["cell_type"] == "code" and "otter_ignore" not in meta.get("tags", []) and meta.get("editable", True):
+            source = "".join(line for line in cell["source"] if not line.lstrip().startswith("%"))
+            exec(compile(source, str(notebook), "exec"), namespace)
+    tests = json.loads(notebook.read_text())["metadata"]["otter"]["tests"]
+    scores = {}
+    for question, spec in tests.items():
+        test_file = OKTestFile.from_spec(spec)
+        test_file.run(namespace)
+        scores[question] = float(test_file.score)
+    return scores
 
-    Building runs each master's solutions against every public and hidden test and fails
-    when one fails (``otter assign``), so a built assignment's solutions score full marks.
-    """
+
+@pytest.fixture(scope="module")
+def built() -> dict[str, Path]:
+    """Build every assignment (``otter assign`` runs each master's solutions against all its tests first and fails
+    when one fails: a built assignment's solutions pass them all)."""
     with ThreadPoolExecutor() as pool:
-        zips = dict(zip(grading.assignment_names(), pool.map(grading.build, grading.assignment_names())))
+        return dict(zip(grading.assignment_names(), pool.map(grading.build, grading.assignment_names())))
+
+
+@pytest.fixture(scope="module")
+def graded(built, tmp_path_factory) -> dict[str, dict]:
+    """``otter run`` (through :func:`grading.grade`) on the solutions, the blank student notebooks, one wrong answer
+    per assignment, a file that is not a notebook and a notebook that never ends, concurrently."""
     root = tmp_path_factory.mktemp("submissions")
     jobs: dict[str, tuple[Path, str, float | None]] = {}  # label -> (notebook, assignment, timeout in s)
-    for name, zip_path in zips.items():
-        dist = zip_path.parent.parent
-        jobs[f"{name}/blank"] = (dist / "student" / f"{name}.ipynb", name, None)
-    for label, (name, old, new, _) in WRONG.items():
-        solution = zips[name].parent / f"{name}.ipynb"
-        jobs[label] = (_edited(solution, root / label / f"{name}.ipynb", old, new), name, None)
+    for name in built:
+        jobs[f"{name}/solution"] = (_solved(name), name, None)
+        jobs[f"{name}/blank"] = (grading.student_notebook(name), name, None)
+    for name, label in THROUGH_OTTER_RUN.items():
+        jobs[label] = (_with_variant(VARIANTS[label], root / label / f"{name}.ipynb"), name, None)
     jobs["broken"] = (root / "broken" / "bridge_test.ipynb", "bridge_test", None)
     jobs["broken"][0].parent.mkdir()
     jobs["broken"][0].write_text("this is not a notebook")
-    solution = zips["verify_and_repair"].parent / "verify_and_repair.ipynb"
+    hangs = Variant(
+        "verify_and_repair", frozenset({"q1"}), "def verify_and_repair(*args):\n    while True:\n        pass\n"
+    )
     jobs["hangs"] = (
-        _edited(
-            solution,
-            root / "hangs" / "verify_and_repair.ipynb",
-            "path = roadmap.shortest_path(start, goal)  # (P,) node indices",
-            "path = None\n        while True:\n            pass",
-        ),
+        _with_variant(hangs, root / "hangs" / "verify_and_repair.ipynb"),
         "verify_and_repair",
         HANG_TIMEOUT_S,
     )
-    with ThreadPoolExecutor(max_workers=5) as pool:
-        results = pool.map(lambda job: grading.grade(*job), jobs.values())
-        return dict(zip(jobs, results))
+    with ThreadPoolExecutor(max_workers=4) as pool:
+        return dict(zip(jobs, pool.map(lambda job: grading.grade(*job), jobs.values())))
 
 
 def test_the_assignments_exist():
     assert set(ASSIGNMENTS) <= set(grading.assignment_names())
 
 
+def test_every_variant_replaces_a_solution_of_its_assignment():
+    for label, variant in VARIANTS.items():
+        assert variant.assignment in ASSIGNMENTS and variant.loses, label
+        assert f"def {variant.function}(" in grading.master(variant.assignment).read_text(), label
+    assert {v.assignment for v in VARIANTS.values()} == set(ASSIGNMENTS)
+    assert all(THROUGH_OTTER_RUN[name] in VARIANTS for name in ASSIGNMENTS)
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("name", ASSIGNMENTS)
-def test_the_untouched_student_notebook_runs_and_scores_zero(graded, name):
-    blank = graded[f"{name}/blank"]
-    assert not blank["timed_out"] and blank["max_score"] > 0
+def test_the_solution_scores_full_marks_and_the_blank_notebook_zero(graded, name):
+    solution, blank = graded[f"{name}/solution"], graded[f"{name}/blank"]
+    assert solution["score"] == solution["max_score"] > 0, grading.report(solution)
+    assert not blank["timed_out"] and blank["max_score"] == solution["max_score"]
     assert blank["score"] == 0, grading.report(blank)
 
 
 @pytest.mark.slow
-@pytest.mark.parametrize("label", sorted(WRONG))
-def test_a_wrong_answer_loses_the_points_of_its_parts_only(graded, label):
-    broken = WRONG[label][3]
+@pytest.mark.parametrize("name", ASSIGNMENTS)
+def test_public_tests_carry_no_points(built, name):
+    tests = json.loads(_solved(name).read_text())["metadata"]["otter"]["tests"]
+    for question, spec in tests.items():
+        cases = OKTestFile.from_spec(spec).test_cases
+        assert any(case.hidden for case in cases), f"{name} {question} has no hidden test"
+        assert all(case.points == 0 for case in cases if not case.hidden), f"{name} {question}: a public test scores"
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("label", sorted(VARIANTS))
+def test_a_wrong_answer_loses_points_on_its_questions_only(built, tmp_path, label):
+    variant = VARIANTS[label]
+    scores = _scores_in_process(_with_variant(variant, tmp_path / f"{variant.assignment}.ipynb"))
+    full = grading.points(variant.assignment)
+    lost = {question for question, score in scores.items() if score < full[question]}
+    assert lost == variant.loses, f"{label}: scores {scores} of {full}"
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("name", ASSIGNMENTS)
+def test_otter_run_agrees_with_the_in_process_score_and_shows_no_test_source(graded, tmp_path, name):
+    label = THROUGH_OTTER_RUN[name]
     result = graded[label]
-    for question in result["questions"]:
-        lost = question["score"] < question["max_score"]
-        assert lost == (question["name"] in broken), grading.report(result)
+    in_process = _scores_in_process(_with_variant(VARIANTS[label], tmp_path / f"{name}.ipynb"))
+    assert {q["name"]: q["score"] for q in result["questions"]} == in_process, grading.report(result)
+    report = grading.report(result)
+    assert "hidden test" in report and "AssertionError: " in report, report
+    leaked = [line for line in handout.secret_lines(name) if line in report]
+    assert not leaked, f"the grade report quotes a test's or a solution's source: {leaked}"
 
 
 @pytest.mark.slow
@@ -148,6 +179,70 @@ def test_a_file_otter_cannot_grade_scores_zero_with_the_reason(graded):
     assert "otter could not grade" in result["error"] and "JSON" in result["error"]
 
 
+OTTER_OUTPUT = """q1 results:
+    q1 - 1 result:
+        ✅ Test case passed
+
+    q1 - 2 result:
+        ❌ Test case failed
+        Trying:
+            middles = bridge_test(exact, 50000, 1.0, rng)
+        Expecting nothing
+        ok
+        Trying:
+            assert free(exact, middles).all(), 'a returned sample is in collision'
+        Expecting nothing
+        **********************************************************************
+        Line 2, in q1 1
+        Failed example:
+            assert free(exact, middles).all(), 'a returned sample is in collision'
+        Exception raised:
+            Traceback (most recent call last):
+              File "/usr/lib/python3.11/doctest.py", line 1353, in __run
+                exec(compile(example.source, filename, "single",
+              File "<doctest q1 1[1]>", line 1, in <module>
+                assert free(exact, middles).all(), 'a returned sample is in collision'
+                       ^^^^^^^^^^^^^^^^^^^^^^^^^^
+            AssertionError: a returned sample is in collision
+
+    q1 - 3 result:
+        ❌ Test case failed
+        Trying:
+            x = passage_fraction(Q, PASSAGE)
+        Expecting nothing
+        **********************************************************************
+        Line 1, in q1 2
+        Failed example:
+            x = passage_fraction(Q, PASSAGE)
+        Exception raised:
+            Traceback (most recent call last):
+              File "<doctest q1 2[0]>", line 1, in <module>
+                x = passage_fraction(Q, PASSAGE)
+            NameError: name 'passage_fraction' is not defined
+        Trying:
+            assert x == 0.5, 'one of two points'
+        Expecting nothing
+        **********************************************************************
+        Line 2, in q1 2
+        Failed example:
+            assert x == 0.5, 'one of two points'
+        Exception raised:
+            Traceback (most recent call last):
+              File "<doctest q1 2[1]>", line 1, in <module>
+                assert x == 0.5, 'one of two points'
+            NameError: name 'x' is not defined
+"""
+
+
+def test_feedback_names_the_failed_tests_and_why_never_their_source():
+    feedback = grading.feedback(OTTER_OUTPUT, hidden=[False, True, False])
+    assert feedback.splitlines() == [
+        "hidden test 2 failed: AssertionError: a returned sample is in collision",
+        "public test 3 failed: NameError: name 'passage_fraction' is not defined",
+    ]
+    assert grading.feedback("q2 results: All test cases passed!", hidden=[True]) == "all tests passed"
+
+
 def test_the_report_ends_with_the_score_and_shows_feedback_where_points_were_lost():
     result = {
         "assignment": "a",
@@ -155,19 +250,19 @@ def test_the_report_ends_with_the_score_and_shows_feedback_where_points_were_los
         "score": 2.0,
         "max_score": 5.0,
         "questions": [
-            {"name": "q1", "score": 2.0, "max_score": 2.0, "feedback": "all passed"},
+            {"name": "q1", "score": 2.0, "max_score": 2.0, "feedback": "all tests passed"},
             {
                 "name": "q2",
                 "score": 0.0,
                 "max_score": 3.0,
-                "feedback": "AssertionError: a returned sample is in collision",
+                "feedback": "hidden test 2 failed: AssertionError: a returned sample is in collision",
             },
         ],
     }
     lines = grading.report(result).splitlines()
     assert lines[-1] == "score: 2/5"
     assert "q2: 0/3" in lines and any("a returned sample is in collision" in line for line in lines)
-    assert not any("all passed" in line for line in lines)
+    assert not any("all tests passed" in line for line in lines)
 
 
 def test_a_folder_of_submissions_becomes_one_csv_row_each(tmp_path):
@@ -235,15 +330,13 @@ def _guide_command(word: str) -> list[str]:
 
 
 @pytest.mark.slow
-def test_the_instructors_guide_grades_a_folder_of_three_submissions_into_a_csv(tmp_path):
+def test_the_instructors_guide_grades_a_folder_of_three_submissions_into_a_csv(built, tmp_path):
     """Follow tutorials/instructors.md: collect three renamed submissions in one folder, run its grading command."""
-    solution = grading.autograder("bridge_test").parent / "bridge_test.ipynb"
-    blank = grading.autograder("verify_and_repair").parent.parent / "student" / "verify_and_repair.ipynb"
     folder = tmp_path / "submissions"
     folder.mkdir()
-    (folder / "alice.ipynb").write_text(solution.read_text())
-    (folder / "bob.ipynb").write_text(blank.read_text())
-    _edited(solution, folder / "carol.ipynb", *WRONG["bridge_keeps_invalid_midpoints"][1:3])
+    (folder / "alice.ipynb").write_text(_solved("bridge_test").read_text())
+    (folder / "bob.ipynb").write_text(grading.student_notebook("verify_and_repair").read_text())
+    _with_variant(VARIANTS["bridge_keeps_invalid_midpoints"], folder / "carol.ipynb")
     command = _guide_command("grade")
     assert command[:2] == [".venv/bin/toolkit", "grade"] and "submissions/" in command, command
     root = Path(__file__).resolve().parent.parent
@@ -260,16 +353,10 @@ def test_the_instructors_guide_grades_a_folder_of_three_submissions_into_a_csv(t
     with open(csv_file) as scores:
         rows = {Path(row["submission"]).name: row for row in csv.DictReader(scores)}
     assert sorted(rows) == ["alice.ipynb", "bob.ipynb", "carol.ipynb"]
-    assert (rows["alice.ipynb"]["assignment"], rows["alice.ipynb"]["score"], rows["alice.ipynb"]["max_score"]) == (
-        "bridge_test",
-        "8.0",
-        "8.0",
-    )
-    assert (rows["bob.ipynb"]["assignment"], rows["bob.ipynb"]["score"]) == ("verify_and_repair", "0.0")
-    carol = rows["carol.ipynb"]
+    alice, bob, carol = rows["alice.ipynb"], rows["bob.ipynb"], rows["carol.ipynb"]
+    assert (alice["assignment"], alice["score"], alice["max_score"]) == ("bridge_test", "8.0", "8.0")
+    assert (bob["assignment"], bob["score"]) == ("verify_and_repair", "0.0")
     assert float(carol["q1"]) < 6 and carol["q2"] == "2.0" and carol["timed_out"] == "False" and carol["error"] == ""
     assert done.stdout.count("score: ") == 3
-    with zipfile.ZipFile(
-        grading.autograder("bridge_test")
-    ) as archive:  # otter's Gradescope autograder, as the guide says
+    with zipfile.ZipFile(grading.autograder("bridge_test")) as archive:  # otter's Gradescope autograder
         assert {"run_autograder", "setup.sh", "otter_config.json"} <= set(archive.namelist())

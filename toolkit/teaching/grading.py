@@ -7,7 +7,12 @@ with its solutions inside otter's markers, public tests (students run them with
 and ``dist/autograder/`` (the zip that grades) beside it; :func:`grade` runs ``otter run``
 (locally, no Docker) on a filled-in student notebook with that zip and returns the score of
 each autograded question. Questions marked ``manual`` (prose) are graded by hand and are not
-part of the score.
+part of the score; cells tagged ``otter_ignore`` (exploration: training, figures) are skipped.
+
+The feedback of a question that lost points says which tests failed, public or hidden, and why:
+the last line of the exception each raised, a test's assertion message (:func:`feedback`). It
+never quotes a test's code, which otter's own output does, so it can go back to the student as
+it is without revealing the hidden tests.
 
 A submission that runs longer than ``timeout`` seconds is stopped and scores 0 on every
 autograded question (a loop that never ends must not hold up a whole class's grading); one that
@@ -20,11 +25,13 @@ from __future__ import annotations
 
 import json
 import os
+import re
 import shutil
 import signal
 import subprocess
 import sys
 import tempfile
+import textwrap
 from pathlib import Path
 
 ASSIGNMENTS = Path(__file__).resolve().parents[2] / "tutorials" / "assignments"
@@ -52,6 +59,11 @@ def build(name: str) -> Path:
     """Run ``otter assign`` on the master (which also checks that its solutions pass every test);
     return the autograder zip. Replaces ``dist/`` beside the master."""
     source = master(name)
+    if "# ASSIGNMENT CONFIG" not in source.read_text():
+        raise ValueError(
+            f"{source} is a student version, not a master (it has no ASSIGNMENT CONFIG cell): a handout cannot build "
+            "the autograder, which holds the hidden tests; the instructor grades with the masters"
+        )
     dist = source.parent / "dist"
     shutil.rmtree(dist, ignore_errors=True)
     done = subprocess.run(
@@ -67,6 +79,16 @@ def build_all() -> dict[str, Path]:
     return {name: build(name) for name in assignment_names()}
 
 
+def student_notebook(name: str) -> Path:
+    """The student version of assignment ``name`` (``dist/student/<name>.ipynb``), built first when missing or older
+    than its master: what a course hands out."""
+    source = master(name)
+    student = source.parent / "dist" / "student" / source.name
+    if not student.is_file() or student.stat().st_mtime < source.stat().st_mtime:
+        build(name)
+    return student
+
+
 def autograder(name: str, build_missing: bool = True) -> Path:
     """The newest autograder zip of assignment ``name``, built first when missing."""
     zips = sorted((master(name).parent / "dist" / "autograder").glob(f"{name}-autograder_*.zip"))
@@ -77,10 +99,57 @@ def autograder(name: str, build_missing: bool = True) -> Path:
     return build(name)
 
 
-def _max_points(zip_path: Path) -> dict[str, float]:
-    """Points of each autograded question, read from the autograder notebook beside the zip."""
+def _tests(zip_path: Path) -> dict[str, tuple[float, list[bool]]]:
+    """Each autograded question's points and, test by test, whether it is hidden; read from the autograder
+    notebook beside the zip."""
     notebook = json.loads((zip_path.parent / f"{zip_path.name.split('-autograder_')[0]}.ipynb").read_text())
-    return {q: float(test["points"]) for q, test in notebook["metadata"]["otter"]["tests"].items()}
+    return {
+        q: (float(test["points"]), [case["hidden"] for suite in test["suites"] for case in suite["cases"]])
+        for q, test in notebook["metadata"]["otter"]["tests"].items()
+    }
+
+
+def points(name: str) -> dict[str, float]:
+    """Each autograded question of assignment ``name`` and its points (the autograder built first when missing)."""
+    return {q: p for q, (p, _) in _tests(autograder(name)).items()}
+
+
+CASE = re.compile(r"^\s*\S+ - (\d+) result:\n(.*?)(?=^\s*\S+ - \d+ result:|\Z)", re.MULTILINE | re.DOTALL)
+
+
+def feedback(output: str, hidden: list[bool]) -> str:
+    """What a student may see of otter's output for one question: which tests failed (numbered, public or
+    hidden) and why, the last line of the exception each raised (a test's assertion message); never a test's
+    source, which otter's own output quotes."""
+    if "All test cases passed" in output:
+        return "all tests passed"
+    failed = [
+        f"{'hidden' if hidden[int(n) - 1] else 'public'} test {n} failed: {_why(body)}"
+        for n, body in CASE.findall(output)
+        if "Test case passed" not in body and 0 < int(n) <= len(hidden)
+    ]
+    return "\n".join(failed) or "the tests did not run"
+
+
+def _why(body: str) -> str:
+    """Why a failed doctest failed, from its first failing line: the exception it raised (its message lines), or
+    the output it printed unasked."""
+    lines = body.splitlines()
+    for i, line in enumerate(lines):
+        if line.strip() in ("Exception raised:", "Got:"):
+            indent = len(line) - len(line.lstrip())
+            block = []  # the lines indented below the heading: the traceback, or the output
+            for after in lines[i + 1 :]:
+                if after.strip() and len(after) - len(after.lstrip()) <= indent:
+                    break
+                block.append(after)
+            block = textwrap.dedent("\n".join(block)).strip("\n").splitlines()
+            if line.strip() == "Got:":
+                return f"a line printed {block[0].strip() if block else 'output'!r} (a test line's value must be None)"
+            frames = [j for j, text in enumerate(block) if text.lstrip().startswith('File "')]
+            message = [text for text in block[frames[-1] + 1 if frames else 0 :] if text and not text[0].isspace()]
+            return " / ".join(message[-5:]) or "an exception without a message"
+    return "no reason given"
 
 
 def assignment_of(notebook: str | Path) -> str:
@@ -110,7 +179,8 @@ def grade(notebook: str | Path, assignment: str | None = None, timeout: float | 
     timeout = TIMEOUT_S if timeout is None else timeout
     name = assignment or assignment_of(notebook)
     zip_path = autograder(name)
-    points = _max_points(zip_path)
+    tests = _tests(zip_path)
+    full = {q: p for q, (p, _) in tests.items()}
     with tempfile.TemporaryDirectory() as out:
         process = subprocess.Popen(
             _otter("run", "--no-logo", "-a", str(zip_path), "-o", out, str(notebook)),
@@ -124,20 +194,20 @@ def grade(notebook: str | Path, assignment: str | None = None, timeout: float | 
         except subprocess.TimeoutExpired:
             os.killpg(process.pid, signal.SIGKILL)
             process.communicate()
-            return _zero(name, points, f"stopped after {timeout:g} s: the notebook did not finish", timed_out=True)
-        results = Path(out) / "results.json"
-        if not results.is_file():
+            return _zero(name, full, f"stopped after {timeout:g} s: the notebook did not finish", timed_out=True)
+        results_file = Path(out) / "results.json"
+        if not results_file.is_file():
             last = log.strip().splitlines()[-1] if log.strip() else "no output"
-            return _zero(name, points, f"otter could not grade this notebook: {last}")
-        tests = {t["name"]: t for t in json.loads(results.read_text())["tests"]}
+            return _zero(name, full, f"otter could not grade this notebook: {last}")
+        results = {t["name"]: t for t in json.loads(results_file.read_text())["tests"]}
     questions = [
         {
             "name": q,
-            "score": float(tests.get(q, {}).get("score") or 0.0),
+            "score": float(results.get(q, {}).get("score") or 0.0),
             "max_score": p,
-            "feedback": tests.get(q, {}).get("output", "not graded: the question's tests did not run"),
+            "feedback": feedback(results[q]["output"], hidden) if q in results else "not graded: its tests did not run",
         }
-        for q, p in points.items()
+        for q, (p, hidden) in tests.items()
     ]
     return _total(name, questions)
 
