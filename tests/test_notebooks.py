@@ -36,6 +36,17 @@ def test_committed_without_outputs(path):
     assert "widgets" not in nb["metadata"], f"{path.name} carries saved widget state"
 
 
+@pytest.mark.parametrize("path", NOTEBOOKS + sorted((ROOT / "tutorials").glob("*.ipynb")), ids=lambda p: p.stem)
+def test_the_first_code_cell_says_the_size_it_runs_at(path):
+    """In quick mode a student learns first what shrank: the first code cell names its sizes and calls ``banner()``."""
+    code = next(
+        "".join(cell["source"]) for cell in json.loads(path.read_text())["cells"] if cell["cell_type"] == "code"
+    )
+    assert re.search(r"^banner\(", code, re.MULTILINE), f"{path.name}: its first code cell does not call banner()"
+    sizes = re.findall(r"\bsized\((.*)\)", code)
+    assert all("what=" in args for args in sizes), f"{path.name}: name every size for the banner (sized(..., what=))"
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
 def test_runs_in_quick_mode(path, quick_notebooks):

@@ -61,6 +61,23 @@ def test_slice_grid_sweeps_two_dofs_over_cell_centres_and_fixes_the_rest():
         pc.slice_grid(robot, dofs=(0, 0))
 
 
+def test_mistakes_near_boundary_counts_the_wrong_cells_beside_the_other_truth():
+    truth = np.ones((7, 8), dtype=bool)
+    truth[1:3, 1:4] = False  # a C-obstacle of 2 x 3 cells
+    predicted = truth.copy()
+    predicted[1, 1] = True  # inside it, but beside free cells: a boundary mistake
+    predicted[2, 4] = False  # free, beside it: a boundary mistake
+    predicted[5, 6] = False  # free, away from it and from the map's edge
+    predicted[6, 7] = False  # free, in the map's corner: where the region's walls are
+    assert pc.mistakes_near_boundary(predicted, truth) == (4, pytest.approx(3 / 4))
+    assert pc.mistakes_near_boundary(predicted, truth, cells=2) == (4, 1.0)  # (5, 6): 2 steps from the wall past (5, 7)
+    assert pc.mistakes_near_boundary(truth, truth) == (0, 0.0)
+    with pytest.raises(ValueError, match="a map of predictions"):
+        pc.mistakes_near_boundary(predicted.ravel(), truth.ravel())
+    with pytest.raises(ValueError, match="cells must be 1 or more"):
+        pc.mistakes_near_boundary(predicted, truth, cells=0)
+
+
 def test_answer_codes_and_counts_by_hand():
     predicted = np.array([True, True, False, False, True, True])
     truth = np.array([True, False, True, False, False, True])

@@ -161,6 +161,25 @@ def test_robot_figure_draws_the_point_robot_square_at_q(square_world):
     assert [p.get_facecolor()[:3] for p in _patches(unjudged.axes[0], "link")] == [to_rgba(c)[:3] for c in ("C0", "C1")]
 
 
+def test_robot_figure_overlays_configurations_nearest_the_viewer_last_and_names_them():
+    youbot = scenarios.get("3do").robot
+    bending = np.tile([5.0, 5.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0], (3, 1))
+    bending[:, 4] = [-1.0, 0.0, 1.0]  # the upper arm back, upright, forward
+    labels = ["back", "upright", "forward"]
+    fig = cspace.robot_figure(youbot, bending, views=("xy",), labels=labels)
+    links = _patches(fig.axes[0], "link")
+    assert len(links) == 3 * youbot.n_links
+    top_z = youbot.link_aabbs(bending)[:, :, 1, 2]  # (3, L): how high each link reaches
+    drawn = [
+        to_rgba(f"C{k}")[:3] for k in np.unravel_index(np.argsort(top_z, axis=None, kind="stable"), top_z.shape)[0]
+    ]
+    assert [p.get_facecolor()[:3] for p in links] == drawn  # from above: lowest first, the upright gripper last
+    assert links[-1].get_facecolor()[:3] == to_rgba("C1")[:3]
+    assert [t.get_text() for t in fig.legends[0].get_texts()] == labels
+    with pytest.raises(ValueError, match="2 labels for 3 configurations"):
+        cspace.robot_figure(youbot, bending, labels=labels[:2])
+
+
 def test_robot_figure_projects_a_chain_by_forward_kinematics():
     robot = robots.box_chain(1)  # small link 0.1 long, then big link 0.4 long, along x at zero
     q = np.array([5.0, 5.0, 5.0, 0.0, 0.0, 0.0, np.pi / 2])  # the joint turns the big link to +y

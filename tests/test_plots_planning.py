@@ -174,22 +174,33 @@ def test_stage_times_one_stacked_bar_per_sampler_and_mode_with_the_given_heights
     assert [t.get_text() for t in ax.get_xticklabels()][:2] == ["BS\nwithout", "BS\nwith"]
 
 
-def test_ratio_comparison_bars_are_the_ratios_on_a_log_scale():
-    sources = {
-        "paper": {"BS": 0.5, "OB": 0.4, "G": 0.3, "BT": 0.2},
-        "ours": {"BS": 2.0, "OB": 1.5, "G": 1.1, "BT": 0.9},
+def test_ratio_comparison_draws_one_baseline_per_panel_on_one_log_scale():
+    series = {
+        "2DS sampling": {"BS": 0.5, "OB": 0.4, "G": 0.3, "BT": 0.2},
+        "3DC-7 total": {"BS": 2.0, "OB": 1.5, "G": 1.1, "BT": 0.9},
     }
-    fig = planning.ratio_comparison({"2DS sampling": sources, "3DC-7 total": sources})
+    lazy = {
+        "2DS sampling": {"BS": 1.2, "OB": 1.1, "G": 1.3, "BT": 0.7},
+        "3DC-7 total": {"BS": 1, "OB": 1, "G": 1, "BT": 1},
+    }
+    fig = planning.ratio_comparison({"paper, means": series, "ours vs the lazy planner": lazy})
     assert len(fig.axes) == 2
-    ax = fig.axes[0]
-    assert ax.get_yscale() == "log" and ax.get_title() == "2DS sampling"
+    ax, other = fig.axes
+    assert (
+        ax.get_yscale() == "log"
+        and ax.get_title() == "paper, means"
+        and other.get_title() == "ours vs the lazy planner"
+    )
+    assert ax.get_ylim() == other.get_ylim()  # one scale: heights compare across baselines
     assert {"0.2", "0.5", "1", "2"} <= {t.get_text() for t in ax.get_yticklabels()}
-    assert [t.get_text() for t in fig.legends[0].texts] == list(sources)
+    assert [t.get_text() for t in fig.legends[0].texts] == list(series)
+    for panel, ratios_by_series in ((ax, series), (other, lazy)):
+        assert len(panel.containers) == len(ratios_by_series)  # a panel holds its own baseline's bars only
+        for container, (name, ratios) in zip(panel.containers, ratios_by_series.items()):
+            assert container.get_label() == name
+            np.testing.assert_allclose([p.get_height() for p in container.patches], list(ratios.values()))
     close = planning.ratio_comparison({"total": {"ours": {"BS": 0.8, "OB": 1.2, "G": 1.6, "BT": 2.1}}}).axes[0]
     assert {"1", "1.5", "2"} <= {t.get_text() for t in close.get_yticklabels()}  # finer labels within a decade
-    for container, (name, ratios) in zip(ax.containers, sources.items()):
-        assert container.get_label() == name
-        np.testing.assert_allclose([p.get_height() for p in container.patches], list(ratios.values()))
 
 
 def test_throughputs_bar_per_scenario_and_checker():

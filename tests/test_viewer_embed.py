@@ -91,21 +91,56 @@ def test_the_animation_page_is_self_contained(planned):
     assert len(document) < 3_000_000  # a few MB at most in a saved notebook
 
 
-def test_the_camera_starts_framing_the_whole_motion(planned):
-    v, frames = planned, 8
-    record, _ = recording(v.animation_html(frames=frames, seconds=1.0))
-    camera = {
-        message["type"]: message
-        for time, message in record["messages"]
-        if message["type"] in ("SetCameraLookAtMessage", "SetCameraPositionMessage")
-    }
-    look_at, position = draw.path_camera(v.robot, v.path_configurations(np.linspace(0, 1, frames)))
-    np.testing.assert_allclose(camera["SetCameraLookAtMessage"]["look_at"], look_at)
-    np.testing.assert_allclose(camera["SetCameraPositionMessage"]["position"], position)
-    aabbs = v.robot.link_aabbs(v.path_configurations(np.linspace(0, 1, frames)))  # (F, L, 2, 3)
-    lo, hi = aabbs[:, :, 0].min(axis=(0, 1)), aabbs[:, :, 1].max(axis=(0, 1))
-    np.testing.assert_allclose(look_at, (lo + hi) / 2)  # the middle of everything the robot sweeps
-    np.testing.assert_allclose(np.linalg.norm(position - look_at), np.max(hi - lo) * np.linalg.norm(draw.PATH_VIEW))
+def slides(document: str) -> dict[str, list[tuple[float, np.ndarray]]]:
+    """``{node name: [(time, position (3,)), ...]}``: where a recording places each node, the last word at each time."""
+    moves: dict[str, dict] = {}
+    for time, message in recording(document)[0]["messages"]:
+        if message["type"] == "SetPositionMessage":
+            moves.setdefault(message["name"], {})[time] = np.array(message["position"])
+    return {name: sorted(at.items(), key=lambda step: step[0]) for name, at in moves.items()}
+
+
+def cameras(document: str) -> dict[str, np.ndarray]:
+    """The camera a page starts with: ``{"look_at": (3,), "position": (3,)}``."""
+    found = {}
+    for _, message in recording(document)[0]["messages"]:
+        if message["type"] == "SetCameraLookAtMessage":
+            found["look_at"] = np.array(message["look_at"])
+        elif message["type"] == "SetCameraPositionMessage":
+            found["position"] = np.array(message["position"])
+    return found
+
+
+def test_the_animation_keeps_the_robot_framed_by_sliding_the_scene_under_the_camera(planned):
+    v, frames, seconds = planned, 8, 1.0
+    document = v.animation_html(frames=frames, seconds=seconds)
+    Q = v.path_configurations(np.linspace(0, 1, frames))
+    looks, positions = draw.follow_camera(v.robot, Q)  # (F, 3) each
+    camera = cameras(document)
+    moves = slides(document)
+    assert all(len(moves[name]) == 1 for name in ("/lights/key", "/workspace/floor"))  # placed once: the lights stay
+    for name, steps in ((name, moves[name]) for name in ("/workspace", "/robot", "/plan")):
+        assert [t for t, _ in steps] == pytest.approx(np.linspace(0.0, seconds, frames)), name  # frame 0's too
+        for (_, offset), look_at in zip(steps, looks):
+            np.testing.assert_allclose(look_at + offset, camera["look_at"], atol=1e-9)  # the robot, where it looks
+    np.testing.assert_allclose(camera["position"] - camera["look_at"], positions[0] - looks[0])
+    np.testing.assert_allclose(looks, v.robot.link_boxes(Q)[0].mean(axis=1))  # the middle of the robot's links
+    distance = np.linalg.norm(positions - looks, axis=1)
+    np.testing.assert_allclose(distance, draw.ROBOT_SPAN * 0.5 * np.linalg.norm(draw.PATH_VIEW))  # the chain: 0.5 long
+
+
+def test_a_snapshot_starts_framing_the_robot_and_leaves_the_live_camera_alone(planned):
+    v = planned
+    v.set_configuration(v.path[len(v.path) // 2])
+    live = v.server.initial_camera.look_at.copy(), v.server.initial_camera.position.copy()
+    camera = cameras(v.html())
+    look_at, position = draw.robot_camera(v.robot, v.q)
+    np.testing.assert_allclose(camera["look_at"], look_at)
+    np.testing.assert_allclose(camera["position"], position)
+    np.testing.assert_allclose(look_at, v.robot.link_boxes(v.q[None])[0][0].mean(axis=0))  # the middle of the robot
+    assert np.linalg.norm(position - look_at) < 4  # close: the 0.5-long chain, not the 11-unit cube
+    np.testing.assert_allclose(v.server.initial_camera.look_at, live[0])
+    np.testing.assert_allclose(v.server.initial_camera.position, live[1])
 
 
 def test_the_animation_leaves_the_robot_and_the_camera_where_they_were(planned):
@@ -119,6 +154,7 @@ def test_the_animation_leaves_the_robot_and_the_camera_where_they_were(planned):
     assert v.valid
     np.testing.assert_allclose(v.server.initial_camera.look_at, camera[0])
     np.testing.assert_allclose(v.server.initial_camera.position, camera[1])
+    assert all(np.allclose(frame.position, 0.0) for frame in v.frames.values())  # the scene back where it belongs
 
 
 def test_embed_is_a_static_snapshot_of_the_scene(rng):

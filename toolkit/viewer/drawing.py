@@ -195,6 +195,7 @@ def camera_pose(robot: BoxRobot, workspace: Workspace, q: np.ndarray) -> tuple[n
 
 
 PATH_VIEW = (-0.45, -1.0, 0.7)  # from the front-left and above; its length ~1.3 times the framed size fits the view
+ROBOT_SPAN = 4.0  # a robot's camera frames this many robot sizes: the robot, large, and the blocks beside it
 
 
 def path_camera(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
@@ -203,11 +204,40 @@ def path_camera(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
     It looks at the middle of the links' bounds along the whole motion, from :data:`PATH_VIEW`
     scaled by their largest extent: a small robot on a long path stays in the picture.
     """
-    aabbs = robot.link_aabbs(Q)  # (T, L, 2, D)
-    lo = _lift_points(aabbs[:, :, 0].min(axis=(0, 1)), 0.0)  # (3,)
-    hi = _lift_points(aabbs[:, :, 1].max(axis=(0, 1)), FLAT_ROBOT_HEIGHT)
+    lo, hi = _swept_bounds(robot, Q)
     look_at = (lo + hi) / 2
     return look_at, look_at + float(np.max(hi - lo)) * np.array(PATH_VIEW)
+
+
+def robot_camera(robot: BoxRobot, q) -> tuple[np.ndarray, np.ndarray]:
+    """``(look_at, position)`` of a camera that frames the robot at ``q (dof,)`` (a snapshot's), as
+    :func:`follow_camera` does at each configuration of a motion."""
+    looks, positions = follow_camera(robot, robot.check_configs(q)[:1])
+    return looks[0], positions[0]
+
+
+def follow_camera(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
+    """``(look_at (T, 3), position (T, 3))``: a camera that keeps the robot framed at each configuration of
+    ``Q (T, dof)``. It looks at the mean of the link centres (it moves smoothly with the configuration), from
+    :data:`PATH_VIEW` scaled to :data:`ROBOT_SPAN` robot sizes: a robot small in its workspace fills a good
+    part of the picture, with the blocks beside it."""
+    centers, _, _ = robot.link_boxes(robot.check_configs(Q))  # (T, L, D)
+    look_at = _lift_points(centers, FLAT_ROBOT_HEIGHT / 2).mean(axis=1)  # (T, 3)
+    return look_at, look_at + ROBOT_SPAN * _robot_size(robot) * np.array(PATH_VIEW)
+
+
+def _swept_bounds(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
+    """The 3D min and max corner ``(3,), (3,)`` of the robot's links over every configuration of ``Q``."""
+    aabbs = robot.link_aabbs(robot.check_configs(Q))  # (T, L, 2, D)
+    lo = _lift_points(aabbs[:, :, 0].min(axis=(0, 1)), 0.0)  # (3,)
+    hi = _lift_points(aabbs[:, :, 1].max(axis=(0, 1)), FLAT_ROBOT_HEIGHT)
+    return lo, hi
+
+
+def _robot_size(robot: BoxRobot) -> float:
+    """The largest extent of the robot at its zero configuration (its joints straight), in workspace units."""
+    lo, hi = _swept_bounds(robot, np.clip(np.zeros(robot.dof), robot.lower, robot.upper))
+    return float(np.max(hi - lo))
 
 
 def light(scene: viser.SceneApi) -> None:

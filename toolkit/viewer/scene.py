@@ -1,16 +1,14 @@
 """The live scene: a :class:`Viewer` shows one scenario's workspace, robot, samples, roadmap and path.
 
-The scene answers the questions of the paper's §III in colors: the robot's link boxes
-are green where the exact checker calls the configuration valid and red where it finds
-a collision; with a learned model (``checkpoint=`` or ``predictor=``) a wireframe around
-the links shows its probability of validity, and samples are colored by exact vs
-predicted validity (:func:`toolkit.viewer.drawing.validity_colors`). :meth:`Viewer.plan`
-runs PRM, with the model deciding samples when one is loaded: the paper's Algorithm 1.
+The scene answers the questions of the paper's §III in colors: the robot's link boxes are green where the exact
+checker calls the configuration valid and red where it finds a collision; with a learned model (``checkpoint=`` or
+``predictor=``) a wireframe around the links shows its probability of validity, and samples are colored by exact vs
+predicted validity (:func:`toolkit.viewer.drawing.validity_colors`). :meth:`Viewer.plan` runs PRM, with the model
+deciding samples when one is loaded: the paper's Algorithm 1.
 
-The viewer knows nothing of a GUI. It tells *listeners* what happened (:data:`EVENTS`,
-:meth:`Viewer.subscribe`); the panel (:mod:`toolkit.viewer.panel`) is one listener, a
-script or a test can be another, and any of them changes the scene through the same
-public methods.
+The viewer knows nothing of a GUI. It tells *listeners* what happened (:data:`EVENTS`, :meth:`Viewer.subscribe`);
+the panel (:mod:`toolkit.viewer.panel`) is one listener, a script or a test can be another, and any of them changes
+the scene through the same public methods.
 """
 
 from __future__ import annotations
@@ -32,11 +30,12 @@ from toolkit.planning import prm, queries
 from toolkit.planning.local_planner import path_at
 from toolkit.planning.sampling import make_sampler
 from toolkit.viewer import drawing as draw
-from toolkit.viewer.server import srcdoc_iframe, start_server, stop_server
+from toolkit.viewer.server import camera_at, srcdoc_iframe, start_server, stop_server
 
 Predictor = Callable[[Workspace], CollisionChecker]  # workspace -> checker with are_valid(Q), probability(Q)
 LAYERS = ("obstacles", "robot", "prediction", "samples", "roadmap", "path")
 HALO = 1.15  # the prediction wireframe is this much larger than the links
+SLIDING = ("/workspace", "/robot", "/plan")  # scene frames an animation slides so that the camera follows the robot
 RAW = "raw"  # the "sampler" of uniform configurations, unfiltered: what a model is asked about
 
 EVENTS = {  # what a Viewer tells its listeners, and the arguments a listener's callback receives
@@ -58,11 +57,9 @@ class Predicts(Protocol):
 class Viewer:
     """A live Viser scene of one scenario and workspace, served on ``host:port``.
 
-    ``checkpoint`` (a folder from ``toolkit train``) or ``predictor`` (a function
-    workspace -> learned checker) adds the model's predictions. A checkpoint that
-    cannot be read, or a host or port that cannot be served on, raises before the
-    server starts. The scene has no GUI of its own: :func:`toolkit.viewer.launch` adds
-    the panel.
+    ``checkpoint`` (a folder from ``toolkit train``) or ``predictor`` (a function workspace -> learned checker) adds
+    the model's predictions. A checkpoint that cannot be read, or a host or port that cannot be served on, raises
+    before the server starts. The scene has no GUI of its own: :func:`toolkit.viewer.launch` adds the panel.
     """
 
     def __init__(
@@ -92,6 +89,7 @@ class Viewer:
         self.visible = dict.fromkeys(LAYERS, True)
         self.path: np.ndarray | None = None  # (P, dof) the shown solution path
         self.stopped = False
+        self.frames = {name: self.server.scene.add_frame(name, show_axes=False) for name in SLIDING}
         try:
             self.load(scenario, seed)
         except BaseException:  # e.g. an unknown scenario: leave no server behind
@@ -313,8 +311,8 @@ class Viewer:
                 self._show_disagreement()
 
     def html(self) -> str:
-        """The current scene as one self-contained HTML document (no server needed to view it)."""
-        with self.lock:
+        """The current scene as one self-contained HTML document (no server needed), its camera framing the robot."""
+        with self.lock, camera_at(self.server, *draw.robot_camera(self.robot, self.q)):
             return self.server.scene.as_html()
 
     def iframe(self, height: int = 480) -> str:
@@ -324,28 +322,26 @@ class Viewer:
     def animation_html(self, *, frames: int = 60, seconds: float = 6.0) -> str:
         """The robot moving along the shown path, as one self-contained HTML document (no server needed).
 
-        A recording made with viser's scene serializer: the scene as it is now, then
-        ``frames`` configurations evenly spaced along the path (:meth:`path_configurations`),
-        ``seconds / (frames - 1)`` apart, each colored by the exact checker (and the model's
-        wireframe, if one is loaded). The camera starts framing the whole motion
-        (:func:`toolkit.viewer.drawing.path_camera`); the page plays the recording in a loop,
-        with a timeline to pause and scrub. The robot and the camera are put back afterwards.
+        A recording made with viser's scene serializer: the scene as it is now, then ``frames`` configurations
+        evenly spaced along the path (:meth:`path_configurations`), ``seconds / (frames - 1)`` apart, colored as
+        :meth:`set_configuration` colors them. The camera follows the robot (``drawing.follow_camera``): a
+        recording cannot move a browser's camera, so the scene (:data:`SLIDING`, the samples) slides under it, and
+        a student can still turn the view. The page loops, with a timeline to pause and scrub; all is put back.
         """
         if frames < 2 or not seconds > 0:
             raise ValueError(f"an animation needs frames >= 2 and seconds > 0, got {frames} and {seconds}")
         configurations = self.path_configurations(np.linspace(0.0, 1.0, int(frames)))  # (F, dof)
-        camera = self.server.initial_camera
-        with self.lock:
-            before = self.q, camera.look_at, camera.position
-            self.set_configuration(configurations[0])
-            camera.look_at, camera.position = draw.path_camera(self.robot, configurations)
+        looks, positions = draw.follow_camera(self.robot, configurations)  # (F, 3) each
+        middle, before = looks.mean(axis=0), self.q  # the camera looks at the middle; the robot slides there
+        with self.lock, camera_at(self.server, middle, middle + positions[0] - looks[0]):
             recording = self.server.get_scene_serializer()  # the scene now, then every scene message
-            for q in configurations[1:]:
-                recording.insert_sleep(seconds / (frames - 1))
+            for k, (q, look_at) in enumerate(zip(configurations, looks)):
+                recording.insert_sleep(seconds / (frames - 1) if k else 0.0)
+                self._slide(middle - look_at)  # frame 0's too: each loop of the page starts from it
                 self.set_configuration(q)
             document = recording.as_html()  # stops the recording
-            self.set_configuration(before[0])
-            camera.look_at, camera.position = before[1:]
+            self._slide(np.zeros(3))
+            self.set_configuration(before)
         return document
 
     def animation_iframe(self, height: int = 480, *, frames: int = 60, seconds: float = 6.0) -> str:
@@ -383,6 +379,11 @@ class Viewer:
 
     def _show_disagreement(self) -> None:
         self.nodes["disagreement"].visible = self.visible["prediction"] and self.predicted_valid != self.valid
+
+    def _slide(self, offset: np.ndarray) -> None:
+        """Move the whole scene but the lights by ``offset (3,)`` (zero: where it belongs)."""
+        for handle in [*self.frames.values(), *([self.nodes["samples"]] if "samples" in self.nodes else [])]:
+            handle.position = offset
 
     def _aim_camera(self, look_at: np.ndarray, position: np.ndarray) -> None:
         self.server.initial_camera.look_at, self.server.initial_camera.position = look_at, position

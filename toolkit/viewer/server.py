@@ -14,6 +14,7 @@ import contextlib
 import errno
 import html as html_lib
 import socket
+from collections.abc import Iterator
 
 import rich
 import viser
@@ -70,6 +71,19 @@ def free_port(host: str, port: int, tries: int = 100) -> int:
                 if err.errno != errno.EADDRINUSE:
                     raise ValueError(f"cannot serve on {host}:{candidate}: {err.strerror}") from None
     raise ValueError(f"ports {port}..{min(port + tries, 65536) - 1} on {host} are all busy; choose another port")
+
+
+@contextlib.contextmanager
+def camera_at(server: viser.ViserServer, look_at, position) -> Iterator[None]:
+    """The server's initial camera at ``position``, looking at ``look_at`` (3,) each, while the block runs (a page
+    serialized meanwhile starts there), then back where it was."""
+    camera = server.initial_camera
+    before = camera.look_at, camera.position
+    camera.position, camera.look_at = position, look_at  # viser moves what it looks at with the position: that last
+    try:
+        yield
+    finally:
+        camera.position, camera.look_at = before[1], before[0]
 
 
 def srcdoc_iframe(document: str, height: int = 480) -> str:

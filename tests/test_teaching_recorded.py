@@ -1,0 +1,85 @@
+"""toolkit.teaching.recorded: the tables of docs/results.md, read cell by cell as the notebooks quote them."""
+
+import pytest
+
+from toolkit.experiments.paper_numbers import SAMPLERS
+from toolkit.teaching import recorded
+
+RESULTS = """# Results
+
+## Preset `paper`
+
+### Table 2: MLP accuracy, TPR, TNR
+
+|  | Seen Acc | Seen TPR |
+| --- | --- | --- |
+| 2ds | **61%** / 92% | **36%** / 96% |
+| 3dc7 | **50%** / 75% | **100%** / 87% |
+
+*Seen*: balanced samples.
+
+### Time with / without prediction, medians over the queries
+
+|  | Sampling BS | Total BS |
+| --- | --- | --- |
+| 3dc7 | 0.05 | 0.88 |
+
+## Preset `strong`
+
+### Time with / without prediction, medians over the queries
+
+*Without prediction*: the best exact planner (the lazy PRM).
+
+|  | Sampling BS | Total BS |
+| --- | --- | --- |
+| 3dc7 | 0.28 | 0.08 |
+"""
+
+
+@pytest.fixture
+def results(tmp_path):
+    path = tmp_path / "results.md"
+    path.write_text(RESULTS)
+    return path
+
+
+def test_a_table_is_read_by_preset_and_heading(results):
+    assert recorded.table("paper", "mlp accuracy", results) == {
+        "2ds": {"Seen Acc": "**61%** / 92%", "Seen TPR": "**36%** / 96%"},
+        "3dc7": {"Seen Acc": "**50%** / 75%", "Seen TPR": "**100%** / 87%"},
+    }
+    assert recorded.median_ratios("paper", results) == {"3dc7": {"sampling": {"BS": 0.05}, "total": {"BS": 0.88}}}
+    assert recorded.median_ratios("strong", results) == {"3dc7": {"sampling": {"BS": 0.28}, "total": {"BS": 0.08}}}
+    assert recorded.without("strong", "medians", results) == "the best exact planner (the lazy PRM)."
+    assert recorded.without("paper", "medians", results) is None  # no line says
+
+
+@pytest.mark.parametrize(
+    "cell, number",
+    [("**61%** / 92%", 0.61), ("0.28", 0.28), ("43,049,544", 43049544.0), ("**-40%** / 53%", -0.40), ("1.5 %", 0.015)],
+)
+def test_ours_is_the_first_figure_of_a_cell(cell, number):
+    assert recorded.ours(cell) == pytest.approx(number)
+
+
+def test_a_missing_preset_heading_or_number_is_named(results):
+    with pytest.raises(ValueError, match="no section '## Preset `ablation`'"):
+        recorded.table("ablation", "medians", results)
+    with pytest.raises(ValueError, match="no table under a heading with 'Table 9'"):
+        recorded.table("paper", "Table 9", results)
+    with pytest.raises(ValueError, match="no number in the cell 'n/a'"):
+        recorded.ours("n/a")
+
+
+def test_the_projects_results_hold_the_tables_the_notebooks_read():
+    for preset in ("paper", "strong"):
+        medians = recorded.median_ratios(preset)
+        assert set(medians) == {"2ds", "3dc7", "3dc9", "3do"}
+        for kinds in medians.values():
+            assert {kind: set(ratios) for kind, ratios in kinds.items()} == {
+                "sampling": set(SAMPLERS),
+                "total": set(SAMPLERS),
+            }
+            assert all(0 < r < 100 for ratios in kinds.values() for r in ratios.values())
+    mlp = recorded.table("paper", "MLP accuracy")["3dc7"]
+    assert 0 <= recorded.ours(mlp["Seen TPR"]) <= 1 and 0 <= recorded.ours(mlp["Seen TNR"]) <= 1
