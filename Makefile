@@ -3,7 +3,7 @@ VENV ?= .venv
 PY := $(VENV)/bin/python
 OUT ?= results/2ds-paper
 
-.PHONY: setup browser demo lint test lab assignments clean
+.PHONY: setup browser demo lint test lab assignments handout clean site
 
 setup: $(VENV)/.installed
 
@@ -38,7 +38,19 @@ lab: setup
 # Course assignments: otter assign on every master, writing dist/student/ (hand these out) and
 # dist/autograder/ beside it; grade with `toolkit grade NOTEBOOK` (tutorials/assignments/README.md).
 assignments: setup
-	$(PY) -c "from toolkit import grading; print(grading.build_all())"
+	$(PY) -c "from toolkit.teaching import grading; print(grading.build_all())"
+
+# The tree a course gives its students, written into handout/: the library, notebooks, tutorials, docs and the
+# assignments' student versions, with no master, hidden test or solution (checked as it is written;
+# toolkit/teaching/handout.py). Publish this tree, keep the masters private (tutorials/instructors.md).
+handout: setup
+	$(PY) -c "from toolkit.teaching import handout; print(handout.build_handout('handout'))"
+
+# The course website, built into site/ (open site/index.html, or serve it from any static host:
+# tutorials/instructors.md): the notebooks and tutorials executed at full size (TOOLKIT_QUICK=1: quick),
+# the assignments' student versions, docs/ and the API reference (toolkit/teaching/site.py).
+site: setup
+	$(PY) -m toolkit.teaching.site --out site
 
 clean:
 	rm -rf $(VENV) results .pytest_cache

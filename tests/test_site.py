@@ -1,0 +1,395 @@
+"""The course website (``make site``, :mod:`toolkit.teaching.site`): built once in quick mode, then read as a
+student's browser reads it.
+
+The module's build executes every chapter and tutorial in quick mode with this session's model cache, renders
+the assignments' student versions and the API reference, and is checked for what a course needs: every figure
+on its page, no file from another host, no solution or hidden test, and (in headless Chromium, served from
+127.0.0.1 and opened from disk) loaded images, the embedded viewer, typeset math, search and unbroken links.
+The fast tests hold the pieces (widgets made static, links resolved) against hand-made inputs.
+"""
+
+from __future__ import annotations
+
+import functools
+import html
+import http.server
+import re
+import threading
+import time
+from collections.abc import Iterator
+from html.parser import HTMLParser
+from pathlib import Path
+from urllib.error import HTTPError
+from urllib.parse import urldefrag, urljoin, urlsplit
+from urllib.request import urlopen
+
+import nbformat
+import pytest
+from mkdocs.structure.files import File, Files
+
+from toolkit.teaching import grading, handout, site_hooks
+from toolkit.teaching.site import LIVE_ONLY_IN_JUPYTERLAB, Site, build_site, static_widgets
+from toolkit.viewer import browser as viewer_browser
+
+ROOT = Path(__file__).resolve().parents[1]
+CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
+TUTORIALS = sorted((ROOT / "tutorials").glob("*.ipynb"))
+needs_chromium = pytest.mark.skipif(
+    viewer_browser.find_chromium() is None,
+    reason="no Chromium installed (run `make browser` or `apt-get install chromium`)",
+)
+
+
+@pytest.fixture(scope="module")
+def site(tmp_path_factory, notebook_cache) -> Site:
+    """The site in quick mode, built once for this module (its build time is printed: ``pytest -s``)."""
+    root = tmp_path_factory.mktemp("site")
+    with pytest.MonkeyPatch.context() as env:
+        env.setenv("TOOLKIT_CACHE", str(notebook_cache))
+        began = time.perf_counter()
+        built = build_site(root / "site", quick=True, work=root / "build")
+    took = time.perf_counter() - began
+    print(f"\nsite built in {took:.0f} s (sources {built.assemble_s:.0f} s, mkdocs {built.render_s:.0f} s)")
+    return built
+
+
+def page_of(site: Site, source: Path) -> Path:
+    return site.out / source.relative_to(ROOT).with_suffix(".html")
+
+
+# ---- the built site, read as files ----
+
+
+@pytest.mark.slow
+def test_every_chapter_and_tutorial_ran_and_shows_every_figure_it_made(site):
+    for source in CHAPTERS + TUTORIALS:
+        run = site.runs[str(source.relative_to(ROOT))]
+        assert run.figures >= (1 if source in CHAPTERS else 2), f"{source.name} showed {run.figures} figures"
+        page = page_of(site, source).read_text()
+        assert page.count('src="data:image/png;base64,') == run.figures, f"{source.name}: figures lost on the page"
+        assert "Traceback" not in html.unescape(re.sub(r"<[^>]+>", "", page)), source.name
+
+
+@pytest.mark.slow
+def test_widgets_are_a_visible_note_and_no_widget_state_is_left(site):
+    notes = {s.name: page_of(site, s).read_text().count("live-in-jupyterlab") for s in CHAPTERS}
+    assert notes["01_workspaces_and_collision.ipynb"] >= 1, notes  # its interact cells
+    for source in CHAPTERS + TUTORIALS:
+        page = page_of(site, source).read_text()
+        assert "widget-state+json" not in page and "widget-view+json" not in page, source.name
+
+
+@pytest.mark.slow
+def test_the_site_has_every_page_a_student_needs(site):
+    expected = ["index.html", "docs/results.html", "docs/fidelity.html", "docs/benchmarks.html", "docs/design.html"]
+    expected += ["docs/viewer.html", "tutorials/index.html", "tutorials/instructors.html", "reference/index.html"]
+    expected += [f"tutorials/assignments/{name}/{name}.html" for name in grading.assignment_names()]
+    expected += [f"reference/{p}.html" for p in ("geometry", "learning", "planning", "experiments", "plots")]
+    expected += [f"reference/{p}.html" for p in ("viewer", "teaching", "util", "cli", "scenarios")]
+    expected += [str(page_of(site, s).relative_to(site.out)) for s in CHAPTERS + TUTORIALS]
+    assert [p for p in expected if not (site.out / p).is_file()] == []
+    geometry = (site.out / "reference" / "geometry.html").read_text()
+    assert 'id="toolkit.geometry.robots.BoxRobot"' in geometry and 'class="autorefs autorefs-internal"' in geometry
+
+
+@pytest.mark.slow
+def test_no_solution_or_hidden_test_of_any_assignment_is_in_the_site(site):
+    assert all(handout.secret_lines(name) for name in grading.assignment_names())  # there is something to find
+    assert handout.find_secrets(site.out) == []
+
+
+LOADS = [  # what makes a browser fetch a URL: tags' src/href, CSS url() and @import, scripts' imports and workers
+    re.compile(
+        r"<(?:script|img|iframe|source|audio|video|embed|track|input)\b[^>]*?\bsrc\s*=\s*[\"']?(https?:)?//", re.I
+    ),
+    re.compile(r"<link\b[^>]*?\bhref\s*=\s*[\"']?(https?:)?//", re.I),
+    re.compile(r"\bposter\s*=\s*[\"']?(https?:)?//|\bsrcset\s*=\s*[\"'][^\"']*https?://", re.I),
+    re.compile(r"url\(\s*[\"']?(https?:)?//|@import\s+(url\()?[\"']?(https?:)?//", re.I),
+    re.compile(r"(?:\bimport\s*\(|\bfrom|importScripts\s*\(|new\s+Worker\s*\(|fetch\s*\()\s*[\"'`](https?:)?//", re.I),
+]
+
+
+def remote_loads(text: str) -> list[str]:
+    """Snippets of ``text`` (HTML, CSS or JavaScript) that load something from another host, srcdoc documents too."""
+    found = [text[max(0, m.start() - 40) : m.end() + 40] for pattern in LOADS for m in pattern.finditer(text)]
+    for document in re.findall(r'srcdoc="([^"]*)"', text):
+        found += remote_loads(html.unescape(document))
+    return found
+
+
+def test_the_remote_load_finder_finds_each_kind_of_load():
+    for load in (
+        '<script src="https://cdn.example/x.js">',
+        "<link rel=stylesheet href='//fonts.example/css'>",
+        '<img alt="" src="http://example.com/a.png">',
+        "body { background: url(https://example.com/a.png) }",
+        '@import "https://fonts.example/css";',
+        'await import("https://cdn.example/mermaid.mjs")',
+        '<iframe srcdoc="&lt;script src=&quot;https://cdn.example/x.js&quot;&gt;"></iframe>',
+    ):
+        assert remote_loads(load), load
+    assert not remote_loads('<a href="https://viser.studio">Viser</a> <svg xmlns="http://www.w3.org/2000/svg">')
+
+
+@pytest.mark.slow
+def test_no_page_loads_a_script_stylesheet_font_or_image_from_another_host(site):
+    files = [p for p in site.out.rglob("*") if p.suffix in (".html", ".js", ".css", ".mjs")]
+    assert len(files) > 50
+    found = {
+        str(p.relative_to(site.out)): loads for p in files if (loads := remote_loads(p.read_text(errors="replace")))
+    }
+    assert found == {}
+
+
+# ---- the pieces, on hand-made inputs ----
+
+
+def test_a_widget_becomes_a_note_followed_by_what_its_output_widget_showed():
+    figure = nbformat.v4.new_output("display_data", data={"image/png": "iVBORw0KGgo=", "text/plain": "<Figure>"})
+    view = {"model_id": "box", "version_major": 2, "version_minor": 0}
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_code_cell("interact(f, seed=1)")]
+    nb.cells[0].outputs = [
+        nbformat.v4.new_output("display_data", data={"application/vnd.jupyter.widget-view+json": view})
+    ]
+    state = {
+        "box": {"model_name": "VBoxModel", "state": {"children": ["IPY_MODEL_slider", "IPY_MODEL_out"]}},
+        "slider": {"model_name": "IntSliderModel", "state": {"value": 1}},
+        "out": {"model_name": "OutputModel", "state": {"outputs": [dict(figure)]}},
+    }
+    nb.metadata["widgets"] = {"application/vnd.jupyter.widget-state+json": {"state": state}}
+    outputs = static_widgets(nb).cells[0].outputs
+    assert [o["data"].get("text/html") for o in outputs] == [LIVE_ONLY_IN_JUPYTERLAB, None]
+    assert outputs[1]["data"]["image/png"] == "iVBORw0KGgo=" and "widgets" not in nb.metadata
+
+
+class FakePage:
+    def __init__(self, file: File):
+        self.file = file
+
+
+def source_files(tmp_path: Path) -> Files:
+    paths = ["README.md", "docs/results.md", "notebooks/chapter.ipynb", "notebooks/02_cae_reconstruction.ipynb"]
+    paths += ["tutorials/assignments/README.md", "reference/planning.md", "docs/viewer.png"]
+    files = [File(p, str(tmp_path), str(tmp_path / "site"), use_directory_urls=False) for p in paths]
+    return Files([as_page(f, str(tmp_path / "site")) if f.src_uri.endswith(".ipynb") else f for f in files])
+
+
+def as_page(file: File, site_dir: str) -> File:
+    """A notebook as mkdocs-jupyter presents it to mkdocs: a page with an ``.html`` URL."""
+    from mkdocs_jupyter.plugin import NotebookFile  # type: ignore[import-untyped]
+
+    return NotebookFile(file, use_directory_urls=False, site_dir=site_dir)
+
+
+def test_links_between_sources_land_on_pages(tmp_path):
+    files = source_files(tmp_path)
+    chapter = FakePage(files.get_file_from_path("notebooks/chapter.ipynb"))
+    page = site_hooks.on_page_content(
+        '<a href="02_cae_reconstruction.ipynb#eq-1">next</a> <a href="../docs/results.md">results</a> '
+        '<img src="../docs/viewer.png"> <a href="../toolkit/planning/paper_prm.py">Algorithm 1</a> '
+        '<a href="https://viser.studio">Viser</a> <img src="data:image/png;base64,AAAA">',
+        chapter,
+        None,
+        files,
+    )
+    assert re.findall(r'(?:href|src)="([^"]*)"', page) == [
+        "02_cae_reconstruction.html#eq-1",
+        "../docs/results.html",
+        "../docs/viewer.png",
+        "../reference/planning.html#toolkit.planning.paper_prm",
+        "https://viser.studio",
+        "data:image/png;base64,AAAA",
+    ]
+    home = FakePage(files.get_file_from_path("README.md"))
+    markdown = "[a](tutorials/assignments/) [b](docs/results.md#x) [c](toolkit/planning/__init__.py) [d](nowhere.md)"
+    assert site_hooks.on_page_markdown(markdown, home, None, files) == (
+        "[a](tutorials/assignments/README.md) [b](docs/results.md#x) [c](reference/planning.md#toolkit.planning) "
+        "[d](nowhere.md)"
+    )
+
+
+def test_sphinx_roles_in_the_api_reference_become_cross_references():
+    rendered = (
+        '<div class="doc doc-object doc-module">\n<h2 id="toolkit.teaching.grading" class="doc doc-heading">'
+        "<p>:func:<code>build</code> then :mod:<code>~toolkit.teaching.notebook</code></p>"
+    )
+    assert site_hooks.cross_references(rendered).endswith(
+        '<p><autoref identifier="toolkit.teaching.grading.build" slug="build" optional><code>build</code></autoref>'
+        ' then <autoref identifier="toolkit.teaching.notebook" slug="toolkit.teaching.notebook" optional>'
+        "<code>notebook</code></autoref></p>"
+    )
+
+
+# ---- in Chromium ----
+
+
+@pytest.fixture(scope="module")
+def served(site) -> Iterator[str]:
+    """The site on a free port of 127.0.0.1, for this module; the port is free again afterwards."""
+    handler = functools.partial(QuietHandler, directory=str(site.out))
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    try:
+        yield f"http://127.0.0.1:{server.server_address[1]}/"
+    finally:
+        server.shutdown()
+        server.server_close()
+        thread.join()
+
+
+class QuietHandler(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, format, *args):
+        pass
+
+
+@pytest.fixture(scope="module")
+def chromium() -> Iterator:
+    """A headless Chromium (Debian's, driven by Playwright) whose pages refuse, and record, requests to other hosts."""
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as pw:
+        browser = pw.chromium.launch(executable_path=viewer_browser.find_chromium(), args=viewer_browser.CHROMIUM_ARGS)
+        try:
+            yield browser
+        finally:
+            browser.close()
+
+
+def open_page(chromium, url: str, remote: list[str]):
+    """A new page at ``url``, loaded; every request it makes to a host other than 127.0.0.1 is aborted and listed."""
+    page = chromium.new_page(viewport={"width": 1280, "height": 900})
+    page.set_default_timeout(120_000)
+
+    def route(request_route):
+        host = urlsplit(request_route.request.url).hostname
+        if request_route.request.url.startswith(("http:", "https:", "ws:", "wss:")) and host != "127.0.0.1":
+            remote.append(request_route.request.url)
+            return request_route.abort()
+        return request_route.continue_()
+
+    page.route("**/*", route)
+    page.goto(url, wait_until="load")
+    return page
+
+
+def broken_images(page) -> list[str]:
+    """The images of ``page`` that did not load (``naturalWidth`` 0), once every image has settled."""
+    page.wait_for_function("[...document.images].every(i => i.complete)")
+    return page.evaluate("[...document.images].filter(i => i.naturalWidth === 0).map(i => i.src.slice(0, 80))")
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_home_chapters_and_api_reference_show_every_image_in_chromium(site, served, chromium):
+    remote: list[str] = []
+    for path in ["index.html", "reference/index.html", "reference/geometry.html"] + [
+        str(page_of(site, s).relative_to(site.out)) for s in CHAPTERS
+    ]:
+        page = open_page(chromium, served + path, remote)
+        try:
+            count = page.evaluate("document.images.length")
+            assert broken_images(page) == [], path
+            assert count >= (1 if path.startswith("notebooks/") or path == "index.html" else 0), path
+        finally:
+            page.close()
+    assert remote == []
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_the_chapter_shows_the_embedded_viewer_and_typeset_math(served, chromium):
+    remote: list[str] = []
+    page = open_page(chromium, served + "notebooks/05_3d_scenes.html", remote)
+    try:
+        frame = page.locator(".jp-OutputArea-output iframe").first
+        frame.scroll_into_view_if_needed()
+        assert frame.bounding_box()["height"] > 100
+        frame.content_frame.locator("canvas").first.wait_for(state="attached")  # the viewer's WebGL scene
+    finally:
+        page.close()
+    page = open_page(chromium, served + "notebooks/02_cae_reconstruction.html", remote)
+    try:
+        page.wait_for_function("document.querySelectorAll('.MathJax, .MathJax_Display').length > 10")
+        assert page.get_by_text("Math Processing Error").count() == 0
+    finally:
+        page.close()
+    assert remote == []
+
+
+def search(page, words: str) -> list[str]:
+    """Type ``words`` into the site's search box (key by key, as a reader does); the titles of the results."""
+    page.locator("input.md-search__input").click()
+    page.keyboard.type(words)
+    page.locator(".md-search-result__item").first.wait_for()
+    return page.locator(".md-search-result__item h1, .md-search-result__item h2").all_inner_texts()
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_search_finds_the_bridge_test_served_and_opened_from_disk(site, served, chromium):
+    remote: list[str] = []
+    for url in (served + "index.html", (site.out / "index.html").as_uri()):
+        page = open_page(chromium, url, remote)
+        try:
+            results = search(page, "bridge test")
+            assert any("bridge" in r.lower() for r in results), (url, results)
+        finally:
+            page.close()
+    assert remote == []
+
+
+class Links(HTMLParser):
+    """The ``href``/``src`` of a page's tags and the ids it defines."""
+
+    def __init__(self):
+        super().__init__()
+        self.links: list[str] = []
+        self.ids: set[str] = set()
+
+    def handle_starttag(self, tag, attrs):
+        for name, value in attrs:
+            if name in ("href", "src") and value and tag != "iframe":
+                self.links.append(value)
+            elif name in ("id", "name") and value:
+                self.ids.add(value)
+
+
+def crawl(base: str) -> tuple[int, list[str]]:
+    """Follow every internal link from ``base + "index.html"``; the number of files read and the links that are
+    broken (no such file, or no such anchor on its page)."""
+    pages: dict[str, Links | None] = {}
+    queue, broken = [base + "index.html"], set()
+    while queue:
+        url, fragment = urldefrag(queue.pop())
+        if url not in pages:
+            pages[url] = found = read(url)
+            links = [urljoin(url, link) for link in (found.links if found else []) if not link.startswith("data:")]
+            queue += [link for link in links if link.startswith(base)]
+        page = pages[url]
+        if page is None or (fragment and fragment not in page.ids):
+            broken.add(f"{url}#{fragment}" if fragment else url)
+    return len(pages), sorted(broken)
+
+
+def read(url: str) -> Links | None:
+    try:
+        with urlopen(url) as response:
+            body = response.read()
+    except HTTPError:
+        return None
+    links = Links()
+    if url.endswith(".html"):
+        links.feed(body.decode("utf-8", "replace"))
+    return links
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+def test_no_internal_link_is_broken(site, served):
+    pages, broken = crawl(served)
+    assert pages >= 30 and broken == []

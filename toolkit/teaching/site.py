@@ -1,0 +1,279 @@
+"""The course website: the chapters, tutorials, assignments and docs as one static, searchable site.
+
+``make site`` builds it into ``site/`` (``TOOLKIT_QUICK=1 make site``: quick-sized chapters), in two steps:
+
+1. :func:`assemble` gathers a source tree under ``build/site/docs`` that mirrors the repository's paths
+   (so a link written in any source still points at its page): the README as the home page, the notebooks
+   and tutorials executed by :func:`~toolkit.teaching.notebook_runner.run_notebook` (the one way notebooks run;
+   trained models come from the notebooks' cache), the assignments' student versions (what ``otter assign``
+   hands out, never the master), docs/, one API reference page per package, and MathJax;
+2. :func:`render` runs mkdocs on it (``mkdocs.yml``: mkdocs-material, mkdocs-jupyter on the executed
+   notebooks, mkdocstrings on the docstrings); :mod:`toolkit.teaching.site_hooks` makes links land on pages
+   and keeps every page free of files from other hosts, so the site works from an intranet or from disk.
+
+    python -m toolkit.teaching.site --out site             # full size, as `make site`
+    python -m toolkit.teaching.site --quick --out site     # quick mode
+"""
+
+from __future__ import annotations
+
+import argparse
+import ast
+import contextlib
+import importlib.util
+import os
+import re
+import shutil
+import sys
+import time
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import nbformat
+
+from toolkit.teaching import grading
+from toolkit.teaching.notebook import QUICK_ENV, is_quick
+from toolkit.teaching.notebook_runner import NotebookRun, run_notebook
+
+ROOT = Path(__file__).resolve().parents[2]
+CONFIG = ROOT / "mkdocs.yml"
+PAGES = ("README.md", "docs/*.md", "docs/*.png", "tutorials/*.md", "tutorials/assignments/README.md")
+CHAPTERS = "notebooks/[0-9][0-9]_*.ipynb"
+TUTORIALS = "tutorials/*.ipynb"
+DOCS_ORDER = ("results", "fidelity", "benchmarks", "design", "viewer")  # docs/ pages in the nav, then any others
+PACKAGES = (
+    "util",
+    "geometry",
+    "scenarios",
+    "learning",
+    "planning",
+    "plots",
+    "experiments",
+    "viewer",
+    "teaching",
+    "cli",
+)
+MATHJAX = "assets/mathjax"  # MathJax 2.7 from jupyter-server-mathjax, served from the site itself
+WORKER_SHIM = ("docs/site/iframe-worker-shim.js", "assets/javascripts/iframe-worker-shim.js")  # mkdocs.yml: polyfills
+MATHJAX_CONFIG = """MathJax.Hub.Config({
+  "HTML-CSS": {availableFonts: [], preferredFont: null, webFont: "STIX-Web", imageFont: null},
+  SVG: {font: "STIX-Web"}
+});
+MathJax.Ajax.loadComplete("[MathJax]/config/toolkit.js");
+"""
+ANSI_COLOR = re.compile(r"\x1b\[[0-9;]*m")  # in tracebacks' text
+WIDGET_VIEW = "application/vnd.jupyter.widget-view+json"
+WIDGET_STATE = "application/vnd.jupyter.widget-state+json"
+LIVE_ONLY_IN_JUPYTERLAB = (
+    '<div class="admonition note live-in-jupyterlab"><p class="admonition-title">Live in JupyterLab</p>'
+    "<p>This cell's controls (ipywidgets) work when you run the notebook in JupyterLab (<code>make lab</code>); "
+    "this page shows what they display at their starting values.</p></div>"
+)
+
+
+@dataclass
+class Site:
+    """A built site: where it is, and each executed notebook's run (its outputs, errors and running time)."""
+
+    out: Path
+    runs: dict[str, NotebookRun] = field(default_factory=dict)  # by path in the repository
+    assemble_s: float = 0.0
+    render_s: float = 0.0
+
+
+def build_site(
+    out: str | Path = ROOT / "site", *, quick: bool = False, work: str | Path = ROOT / "build" / "site"
+) -> Site:
+    """Build the static site into ``out`` (replaced), its sources under ``work``; quick-sized when ``quick``."""
+    docs = Path(work) / "docs"
+    began = time.perf_counter()
+    runs = assemble(docs, quick=quick)
+    assembled = time.perf_counter()
+    render(docs, Path(out))
+    return Site(Path(out), runs, assembled - began, time.perf_counter() - assembled)
+
+
+def assemble(docs: Path, *, quick: bool = False) -> dict[str, NotebookRun]:
+    """Write the site's source tree into ``docs`` (replaced); returns the runs of the notebooks it executed.
+
+    Raises ``RuntimeError`` naming the notebook when one fails: a chapter with a traceback is no page to publish.
+    """
+    shutil.rmtree(docs, ignore_errors=True)
+    for pattern in PAGES:
+        for source in sorted(ROOT.glob(pattern)):
+            copy(source, docs / source.relative_to(ROOT))
+    copy(ROOT / WORKER_SHIM[0], docs / WORKER_SHIM[1])
+    runs = {}
+    with kernel_environment(quick):
+        for source in sorted(ROOT.glob(CHAPTERS)) + sorted(ROOT.glob(TUTORIALS)):
+            name = str(source.relative_to(ROOT))
+            runs[name] = execute(source, docs / name, quick=quick)
+            print(f"{name}: {runs[name].wall_s:.0f} s, {runs[name].figures} figures", flush=True)
+    for name in grading.assignment_names():
+        copy(student_notebook(name), docs / grading.master(name).relative_to(ROOT))
+    shutil.copytree(mathjax_folder(), docs / MATHJAX)
+    (docs / MATHJAX / "config" / "toolkit.js").write_text(MATHJAX_CONFIG)
+    write_reference(docs / "reference")
+    return runs
+
+
+def copy(source: Path, target: Path) -> None:
+    target.parent.mkdir(parents=True, exist_ok=True)
+    shutil.copyfile(source, target)
+
+
+@contextlib.contextmanager
+def kernel_environment(quick: bool) -> Iterator[None]:
+    """Kernels started inside see quick mode on or off as asked, and draw figures inline; restored afterwards."""
+    before = {key: os.environ.get(key) for key in (QUICK_ENV, "MPLBACKEND")}
+    set_environment({QUICK_ENV: "1" if quick else None, "MPLBACKEND": "module://matplotlib_inline.backend_inline"})
+    try:
+        yield
+    finally:
+        set_environment(before)
+
+
+def set_environment(values: dict[str, str | None]) -> None:
+    """Set each variable to its value; None removes it."""
+    for key, value in values.items():
+        if value is None:
+            os.environ.pop(key, None)
+        else:
+            os.environ[key] = value
+
+
+def execute(source: Path, target: Path, *, quick: bool) -> NotebookRun:
+    """Run ``source`` from its own folder and write it, with its outputs and widgets made static, to ``target``."""
+    failed = f"{source.relative_to(ROOT)} failed while building the site"
+    try:
+        run = run_notebook(source, timeout=600 if quick else 3600)
+    except Exception as error:  # nbclient's CellExecutionError (its last line names the error) or a dead kernel
+        raise RuntimeError(f"{failed}: {ANSI_COLOR.sub('', str(error)).strip().splitlines()[-1]}") from error
+    if run.problem() is not None:
+        raise RuntimeError(f"{failed}: {run.problem()}")
+    target.parent.mkdir(parents=True, exist_ok=True)
+    nbformat.write(static_widgets(run.notebook), target)
+    return run
+
+
+def static_widgets(nb: nbformat.NotebookNode) -> nbformat.NotebookNode:
+    """Replace each widget in ``nb`` by a note that it is live only in JupyterLab and what it displayed.
+
+    A page has no kernel to drive a slider, and rendering saved widget state would need the widget
+    manager's scripts from a CDN; the figure an ``interact`` showed at its starting values is kept
+    (it sits in the saved state of its ``Output`` widget), so the page still shows every figure.
+    """
+    state = nb.metadata.pop("widgets", {}).get(WIDGET_STATE, {}).get("state", {})
+    for cell in nb.cells:
+        if cell.cell_type != "code":
+            continue
+        outputs = []
+        for output in cell.outputs:
+            view = output.get("data", {}).get(WIDGET_VIEW)
+            if view is None:
+                outputs.append(output)
+                continue
+            outputs.append(nbformat.v4.new_output("display_data", data={"text/html": LIVE_ONLY_IN_JUPYTERLAB}))
+            outputs.extend(shown_by(view["model_id"], state))
+        cell.outputs = outputs
+    return nb
+
+
+def shown_by(model_id: str, state: dict) -> list[nbformat.NotebookNode]:
+    """The outputs the widget ``model_id`` and the widgets inside it displayed (its ``Output`` widgets' outputs)."""
+    model = state.get(model_id)
+    if model is None:
+        return []
+    if model.get("model_name") == "OutputModel":
+        return [nbformat.from_dict(o) for o in model.get("state", {}).get("outputs", [])]
+    children = model.get("state", {}).get("children", [])
+    return [o for child in children for o in shown_by(str(child).removeprefix("IPY_MODEL_"), state)]
+
+
+def student_notebook(name: str) -> Path:
+    """The student version of assignment ``name`` that ``otter assign`` wrote; built first when missing or older
+    than its master (:func:`toolkit.teaching.grading.build`, as ``make assignments``)."""
+    master = grading.master(name)
+    student = master.parent / "dist" / "student" / master.name
+    if not student.is_file() or student.stat().st_mtime < master.stat().st_mtime:
+        grading.build(name)
+    return student
+
+
+def mathjax_folder() -> Path:
+    """MathJax 2.7's files, as the PyPI package ``jupyter-server-mathjax`` ships them."""
+    spec = importlib.util.find_spec("jupyter_server_mathjax")
+    if spec is None or spec.origin is None:
+        raise FileNotFoundError("the site serves MathJax itself: pip install jupyter-server-mathjax")
+    return Path(spec.origin).parent / "static"
+
+
+def packages() -> list[str]:
+    """The packages of ``toolkit/`` in the layers' order (any new one last), each to get a reference page."""
+    found = {p.parent.name for p in (ROOT / "toolkit").glob("*/__init__.py")} | {"scenarios"}
+    return [name for name in PACKAGES if name in found] + sorted(found - set(PACKAGES))
+
+
+def summary(package: str) -> str:
+    """The first line of a package's docstring (read without importing it)."""
+    folder = ROOT / "toolkit" / package
+    source = folder / "__init__.py" if folder.is_dir() else folder.with_suffix(".py")
+    docstring = ast.get_docstring(ast.parse(source.read_text())) or ""
+    return docstring.strip().splitlines()[0] if docstring.strip() else ""
+
+
+def write_reference(folder: Path) -> None:
+    """One mkdocstrings page per package (its modules below it) and an index listing them."""
+    folder.mkdir(parents=True, exist_ok=True)
+    lines = ["# API reference", "", "Generated from the docstrings; one page per package of `toolkit/`, in the"]
+    lines += ["order of its layers (a package imports only from those above it).", ""]
+    for package in packages():
+        (folder / f"{package}.md").write_text(f"::: toolkit.{package}\n")
+        lines.append(f"- [`toolkit.{package}`]({package}.md): {summary(package)}")
+    (folder / "index.md").write_text("\n".join(lines) + "\n")
+
+
+def in_order(paths: list[str], text: str) -> list[str]:
+    """``paths`` in the order ``text`` first mentions their file names (unmentioned ones last, by name)."""
+    position = {p: text.find(Path(p).name) for p in paths}
+    return sorted(paths, key=lambda p: (position[p] < 0, position[p], p))
+
+
+def navigation(docs: Path) -> list:
+    """The sidebar: home, chapters, tutorials, assignments, docs, API reference."""
+    found = lambda pattern: sorted(str(p.relative_to(docs)) for p in docs.glob(pattern))
+    tutorials = in_order(found(TUTORIALS), (docs / "tutorials" / "README.md").read_text())
+    named = [f"docs/{stem}.md" for stem in DOCS_ORDER if (docs / "docs" / f"{stem}.md").is_file()]
+    return [
+        {"Home": "README.md"},
+        {"Chapters": found(CHAPTERS)},
+        {"Tutorials": ["tutorials/README.md", *tutorials, "tutorials/instructors.md"]},
+        {"Assignments": ["tutorials/assignments/README.md", *found("tutorials/assignments/*/*.ipynb")]},
+        {"Docs": named + [p for p in found("docs/*.md") if p not in named]},
+        {"API reference": ["reference/index.md", *({f"toolkit.{p}": f"reference/{p}.md"} for p in packages())]},
+    ]
+
+
+def render(docs: Path, out: Path) -> None:
+    """Run mkdocs (``mkdocs.yml``) on the source tree ``docs``, writing the site into ``out`` (replaced)."""
+    from mkdocs.commands import build
+    from mkdocs.config import load_config
+
+    config = load_config(str(CONFIG), docs_dir=str(docs), site_dir=str(out.resolve()), nav=navigation(docs))
+    build.build(config)
+    (out / ".nojekyll").touch()  # GitHub Pages serves files named _* (assets/_mkdocstrings.css) only so
+
+
+def main(argv: list[str] | None = None) -> int:
+    parser = argparse.ArgumentParser(prog="python -m toolkit.teaching.site", description="Build the course website.")
+    parser.add_argument("--out", type=Path, default=ROOT / "site", help="where the site goes (default: site/)")
+    parser.add_argument("--quick", action="store_true", help=f"quick-sized chapters (also when {QUICK_ENV}=1)")
+    args = parser.parse_args(argv)
+    site = build_site(args.out, quick=args.quick or is_quick())
+    print(f"site: {site.out}/index.html (sources {site.assemble_s:.0f} s, mkdocs {site.render_s:.0f} s)")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,152 @@
+"""mkdocs hooks of the course website (``mkdocs.yml``, built by :mod:`toolkit.teaching.site`).
+
+Links: the sources link each other by their paths in the repository (``02_cae_reconstruction.ipynb``,
+``../docs/results.md``, ``tutorials/assignments/``), and the site's source tree keeps those paths. mkdocs
+turns such links into page URLs in Markdown pages, but not in notebooks (mkdocs-jupyter writes their HTML
+as nbconvert made it), and not links to a folder or to a module of ``toolkit/``. These hooks send every
+one to its page: a folder to its ``README.md``, a module to its entry in the API reference. In the API
+reference, the docstrings' Sphinx roles (``:func:`name```) become links to the object where it is found.
+
+Offline: notebook pages load MathJax from the site's own copy (``assets/mathjax``, at the right depth for
+each page), and nbconvert's loader of mermaid diagrams, which imports its script from a CDN, is dropped
+(no chapter draws a mermaid diagram).
+"""
+
+from __future__ import annotations
+
+import posixpath
+import re
+from typing import TypedDict
+from urllib.parse import urlsplit
+
+from mkdocs.structure.files import File, Files
+from mkdocs.structure.pages import Page
+from mkdocs.structure.toc import get_toc
+
+MATHJAX_PLACEHOLDER = '"MATHJAX/'  # how mkdocs.yml's custom_mathjax_url starts; the site's copy replaces it
+MATHJAX = "assets/mathjax"
+MARKDOWN_LINK = re.compile(r"(?P<head>\]\()(?P<url>[^)\s#]+)(?P<fragment>#[^)\s]*)?(?P<tail>\))")
+HTML_LINK = re.compile(r'(?P<head>\b(?:href|src)=")(?P<url>[^"#]+)(?P<fragment>#[^"]*)?(?P<tail>")')
+HEADING = re.compile(r'<h(?P<level>[1-6]) id="(?P<id>[^"]+)"(?P<attrs>[^>]*)>(?P<body>.*?)</h(?P=level)>', re.DOTALL)
+ANCHOR_LINK = re.compile(r'<a class="anchor-link"[^>]*>.*?</a>', re.DOTALL)
+MERMAID_LOADER = re.compile(r'<script type="module">(?:(?!</script>).)*?\.jp-Mermaid.*?</script>', re.DOTALL)
+ROLE_OR_MODULE = re.compile(
+    r'doc-object doc-module">\s*<h\d id="(?P<module>[\w.]+)"'  # where a module's entry begins
+    r"|:(?:py:)?(?:mod|func|class|meth|attr|data|exc|obj):<code>(?P<tilde>~)?(?P<name>[\w.]+)</code>"
+)
+
+
+class Heading(TypedDict):
+    """A table of contents entry, as mkdocs reads them (its ``get_toc``)."""
+
+    level: int
+    id: str
+    name: str  # as HTML
+    children: list[Heading]
+
+
+def target(url: str, page: Page, files: Files) -> tuple[File, str] | None:
+    """The file a relative link ``url`` in ``page`` means and a fragment for it (``""``: keep the link's own);
+    None for another site's address, an absolute path, or a path that names nothing of the site."""
+    if not url or urlsplit(url).scheme or url.startswith(("/", "#")):
+        return None
+    path = source_path(url, page)
+    for candidate in (path, f"{path}/README.md", f"{path}/index.md"):
+        found = files.get_file_from_path(candidate)
+        if found is not None:
+            return found, ""
+    parts = path.removesuffix(".py").split("/")
+    if parts[0] == "toolkit" and len(parts) > 1 and path.endswith(".py"):
+        reference = files.get_file_from_path(f"reference/{parts[1]}.md")
+        module = ".".join(parts[:-1] if parts[-1] == "__init__" else parts)
+        return (reference, f"#{module}") if reference is not None else None
+    return None
+
+
+def source_path(url: str, page: Page) -> str:
+    """The path in the source tree that the relative link ``url`` of ``page`` names."""
+    return posixpath.normpath(posixpath.join(posixpath.dirname(page.file.src_uri), url))
+
+
+def on_page_markdown(markdown: str, page: Page, config, files: Files) -> str:
+    """A link to a folder or to a module becomes a link to its page's source, which mkdocs then resolves."""
+
+    def resolve(match: re.Match) -> str:
+        found = target(match["url"], page, files)
+        if found is None or found[0].src_uri == source_path(match["url"], page):  # mkdocs resolves it
+            return match[0]
+        link = posixpath.relpath(found[0].src_uri, posixpath.dirname(page.file.src_uri) or ".")
+        return f"{match['head']}{link}{found[1] or match['fragment'] or ''}{match['tail']}"
+
+    return MARKDOWN_LINK.sub(resolve, markdown)
+
+
+def on_page_content(html: str, page: Page, config, files: Files) -> str:
+    """Notebook pages: links go to pages, MathJax comes from the site, no mermaid loader. API reference:
+    Sphinx roles become cross-references."""
+    if page.file.src_uri.startswith("reference/"):
+        return cross_references(html)
+    if not page.file.src_uri.endswith(".ipynb"):
+        return html
+    mathjax = posixpath.relpath(MATHJAX, posixpath.dirname(page.file.dest_uri) or ".")
+    html = headings_and_contents(MERMAID_LOADER.sub("", html.replace(MATHJAX_PLACEHOLDER, f'"{mathjax}/')), page)
+
+    def resolve(match: re.Match) -> str:
+        found = target(match["url"], page, files)
+        if found is None:
+            return match[0]
+        return (
+            f"{match['head']}{found[0].url_relative_to(page.file)}{found[1] or match['fragment'] or ''}{match['tail']}"
+        )
+
+    return HTML_LINK.sub(resolve, html)
+
+
+def headings_and_contents(html: str, page: Page) -> str:
+    """Give a notebook page's headings unique ids (a second "Try this" becomes ``try-this_1``) and make its table
+    of contents from them: mkdocs-jupyter's own is made from the Markdown with code removed, so an entry for a
+    heading with code in it, or for a repeated one, pointed at no heading."""
+    seen: dict[str, int] = {}
+    tokens: list[Heading] = []
+
+    def unique(match: re.Match) -> str:
+        given = match["id"]
+        seen[given] = seen.get(given, -1) + 1
+        new = given if seen[given] == 0 else f"{given}_{seen[given]}"
+        name = ANCHOR_LINK.sub("", match["body"]).strip()
+        tokens.append({"level": int(match["level"]), "id": new, "name": name, "children": []})
+        return match[0].replace(f'"{given}"', f'"{new}"').replace(f'"#{given}"', f'"#{new}"')
+
+    html = HEADING.sub(unique, html)
+    page.toc = get_toc(nested(tokens))
+    return html
+
+
+def nested(tokens: list[Heading]) -> list[Heading]:
+    """Flat heading tokens in page order, each put among the children of the last one above its level."""
+    roots: list[Heading] = []
+    open_: list[Heading] = []  # the current chain of headings, outermost first
+    for token in tokens:
+        while open_ and open_[-1]["level"] >= token["level"]:
+            open_.pop()
+        (open_[-1]["children"] if open_ else roots).append(token)
+        open_.append(token)
+    return roots
+
+
+def cross_references(html: str) -> str:
+    """``:func:`name``` (as mkdocstrings renders it) becomes a cross-reference that mkdocs-autorefs links to the
+    object, tried as a name in the module whose entry it sits in, then as written; plain code when not found."""
+    module = ""
+
+    def link(match: re.Match) -> str:
+        nonlocal module
+        if match["module"]:
+            module = match["module"]
+            return match[0]
+        name = match["name"]
+        shown = name.rsplit(".", 1)[-1] if match["tilde"] else name
+        scoped = f"{module}.{name}" if module and not name.startswith("toolkit.") else name
+        return f'<autoref identifier="{scoped}" slug="{name}" optional><code>{shown}</code></autoref>'
+
+    return ROLE_OR_MODULE.sub(link, html)
