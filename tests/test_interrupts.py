@@ -1,35 +1,45 @@
-"""Stopping `toolkit reproduce` while it plans: nothing left running, nothing finished lost, a rerun goes on;
-stopping `toolkit train`: the output folder as it was.
+"""A signal stops a command cleanly: nothing left running, nothing finished lost, no output half-written.
 
-The reproduction runs in a subprocess from a small script that makes the bridge
-test's planning never finish (the script is re-imported by the spawned planning
-processes, so the stall is theirs): the three other samplers finish and are cached,
-the bridge test's worker is still busy, and then the signal comes. The processes
-are found in /proc (Linux).
+- `toolkit reproduce` stopped while it plans: every process ends, the finished samplers are
+  kept and a rerun goes on. The reproduction runs in a subprocess from a small script
+  that makes the bridge test's planning never finish (the script is re-imported by the
+  spawned planning processes, so the stall is theirs): the three other samplers finish
+  and are cached, the bridge test's worker is still busy, and then the signal comes.
+  The processes are found in /proc (Linux).
+- `toolkit train` stopped while it trains, saves the weights or renames the new
+  checkpoint into place (a script signals it at that point): the output folder as it
+  was, nothing beside it.
+- A signal at every line an atomic write runs (:func:`toolkit.util.outputs.write_atomically`,
+  :func:`toolkit.learning.checkpoints.save_checkpoint`), traced in-process: the old output
+  until the rename that puts the new one in place, the new one after it, whole, and
+  nothing else in the folder.
 """
 
+import dataclasses
 import json
 import os
+import re
 import shutil
 import signal
 import subprocess
 import sys
 import threading
 import time
+from collections.abc import Callable
 from pathlib import Path
+from unittest.mock import ANY
 
 import pytest
 
 from toolkit import cli
-from toolkit.experiments import pipeline
+from toolkit.experiments import pipeline, stages
 from toolkit.experiments import reproduce as experiments
 from toolkit.experiments.config import RunConfig
 from toolkit.experiments.stages import Stages
+from toolkit.learning import checkpoints
+from toolkit.util import outputs
 
-pytestmark = [
-    pytest.mark.slow,
-    pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="finds processes in /proc (Linux)"),
-]
+pytestmark = pytest.mark.skipif(not Path("/proc/self/stat").exists(), reason="finds processes in /proc (Linux)")
 
 STALLED_RUN = '''
 """`toolkit ...` whose bridge-test planning never finishes."""
@@ -96,6 +106,7 @@ def out(tmp_path, checkpoint_2ds):
     return out
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize(
     "sig, whom",
     [(signal.SIGINT, "group"), (signal.SIGINT, "parent"), (signal.SIGTERM, "parent"), (signal.SIGKILL, "parent")],
@@ -153,33 +164,241 @@ def test_a_signal_during_planning_stops_every_process_and_keeps_the_finished_sam
     assert set(results["planning"]) == {"BS", "OB", "G", "BT"}
 
 
-def test_sigterm_while_training_leaves_the_output_as_it_was(tmp_path):
-    out = tmp_path / "ckpt"
-    # Many MLP epochs (tens of seconds of training), so the signal lands in training however late a busy machine
-    # lets us see it begin; a quick run would finish first, and the signal would meet the process on its way out.
-    train = ["train", "--scenario", "2ds", "--quick", "--mlp-epochs", "3000", "--out", str(out)]
+SIGNALLED_TRAIN = '''
+"""`toolkit train ...` that meets a signal at POINT (argv[1]): stalled in the MLP's training until one comes,
+or sending itself SIGNAL (argv[2]) as it saves the weights or renames a folder of the new checkpoint."""
+import signal
+import sys
+import time
+from pathlib import Path
+
+import torch
+
+from toolkit import cli
+from toolkit.learning import training
+
+POINT, SIGNAL = sys.argv[1], signal.Signals[sys.argv[2]]
+
+
+def stalled(*args, **kwargs):
+    print("training the MLP", file=sys.stderr, flush=True)
+    while True:
+        time.sleep(0.1)
+
+
+def signalling(real):
+    def call(*args, **kwargs):
+        signal.raise_signal(SIGNAL)  # to this thread, at once (os.kill may reach another thread, and later)
+        return real(*args, **kwargs)
+
+    return call
+
+
+if POINT == "training":
+    training.train_mlp = stalled
+elif POINT == "saving":
+    torch.save = signalling(torch.save)
+elif POINT == "renaming":
+    Path.rename, Path.replace = signalling(Path.rename), signalling(Path.replace)
+raise SystemExit(cli.main(sys.argv[3:]))
+'''
+
+
+def _contents(folder: Path) -> dict[str, bytes | None]:
+    """Everything under ``folder`` by relative path: a file's bytes, None for a folder (an empty one counts)."""
+    return {str(p.relative_to(folder)): p.read_bytes() if p.is_file() else None for p in sorted(folder.rglob("*"))}
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize(
+    "point, sig, existing",
+    [
+        ("training", signal.SIGTERM, False),
+        ("saving", signal.SIGTERM, False),
+        ("saving", signal.SIGTERM, True),
+        ("renaming", signal.SIGINT, True),
+    ],
+    ids=["training", "saving", "saving-force", "renaming-force-sigint"],
+)
+def test_a_signal_while_training_leaves_the_output_as_it_was(
+    point: str, sig: signal.Signals, existing: bool, tmp_path: Path, checkpoint_2ds: Path
+) -> None:
+    script, out = tmp_path / "signalled_train.py", tmp_path / "outputs" / "ckpt"
+    script.write_text(SIGNALLED_TRAIN)
+    out.parent.mkdir()
+    if existing:  # `--force` replaces it: until the new one is whole, it must stay as it was
+        shutil.copytree(checkpoint_2ds, out)
+    before = _contents(out.parent)
+    train = ["train", "--scenario", "2ds", "--quick", "--seed", "1", "--out", str(out), *(["--force"] * existing)]
     run = subprocess.Popen(
-        [sys.executable, "-m", "toolkit", *train],
+        [sys.executable, str(script), point, sig.name, *train],
         stdout=subprocess.DEVNULL,
         stderr=subprocess.PIPE,
         text=True,
     )
-    printed = []
+    printed: list[str] = []
     reader = threading.Thread(target=lambda: printed.extend(iter(lambda: run.stderr.read(1), "")), daemon=True)
     reader.start()
     try:
-        deadline = time.monotonic() + 600
-        while "MLP (paper)" not in "".join(printed):  # its progress bar: the MLP's training has begun
-            assert run.poll() is None and time.monotonic() < deadline, "".join(printed)[-3000:]
-            time.sleep(0.2)
-        run.send_signal(signal.SIGTERM)
-        code = run.wait(timeout=60)
+        if point == "training":  # the signal comes from outside, while the MLP trains (for ever)
+            deadline = time.monotonic() + 600  # generous: imports crawl on a busy machine
+            while "training the MLP" not in "".join(printed):
+                assert run.poll() is None and time.monotonic() < deadline, "".join(printed)[-3000:]
+                time.sleep(0.2)
+            run.send_signal(sig)
+        code = run.wait(timeout=600)
     finally:
         run.kill()
         reader.join(timeout=60)
-    assert code == 128 + signal.SIGTERM
+    assert code == 128 + sig, "".join(printed)[-3000:]
     assert "".join(printed).splitlines()[-1] == (
-        f"toolkit train: stopped by SIGTERM; {out} is as it was (the checkpoint is written only when training "
+        f"toolkit train: stopped by {sig.name}; {out} is as it was (the checkpoint is written only when training "
         "ends); run the same command again to train from the start"
     )
-    assert list(tmp_path.iterdir()) == []  # no checkpoint, no half-written folder beside it
+    assert _contents(out.parent) == before  # the old checkpoint or none, byte for byte, and nothing beside it
+    assert sorted(p.name for p in out.parent.iterdir()) == (["ckpt"] if existing else [])
+
+
+def _signal_at_line(n: int | None, sig: signal.Signals, files: set[str], lines: list[str]) -> Callable:
+    """A trace function (``sys.settrace``) that raises ``sig`` before the ``n``-th line run in ``files`` (never
+    when ``n`` is None); every line run there is appended to ``lines`` as ``file:line``."""
+
+    def local(frame, event, arg):
+        if event == "line":
+            if len(lines) == n:
+                signal.raise_signal(sig)  # its handler runs here, as if the signal came before this line
+            lines.append(f"{Path(frame.f_code.co_filename).name}:{frame.f_lineno}")
+        return local
+
+    return lambda frame, event, arg: local if frame.f_code.co_filename in files else None
+
+
+def _signal_at_every_line(
+    make_old: Callable[[Path], object], run: Callable[[Path], object], sig: signal.Signals, tmp_path: Path
+) -> tuple[list[str], Path, list[Path]]:
+    """Run ``run(folder)`` under the CLI's signal handling once per line it runs in the toolkit's writing modules
+    (and this file), ``sig`` raised before that line, each time in a fresh ``folder`` made by ``make_old``; the
+    lines, a folder where it ran without a signal, and the folders the signals left (each signal must act)."""
+    files = {outputs.__file__, checkpoints.__file__, stages.__file__, __file__}
+
+    def fresh(name: str) -> Path:
+        folder = tmp_path / name
+        folder.mkdir(parents=True)
+        make_old(folder)
+        return folder
+
+    lines: list[str] = []
+    whole = fresh("whole")
+    sys.settrace(_signal_at_line(None, sig, files, lines))
+    try:
+        run(whole)
+    finally:
+        sys.settrace(None)
+    left = []
+    for n in range(len(lines)):
+        folder = fresh(f"signal-at-{n}")
+        with pytest.raises(cli.Interrupted) as stopped, cli.signals_interrupt():
+            sys.settrace(_signal_at_line(n, sig, files, []))
+            try:
+                run(folder)
+            finally:
+                sys.settrace(None)
+        assert stopped.value.signum == sig, lines[n]
+        left.append(folder)
+    return lines, whole, left
+
+
+def _old_or_new(
+    make_old: Callable[[Path], object], write_new: Callable[[Path], object], sig: signal.Signals, tmp_path: Path
+) -> tuple[list[str], list[str]]:
+    """:func:`_signal_at_every_line` for a write: the lines, and what the signal before each left, "old" (as
+    ``make_old`` left the folder) or "new" (as the whole write does). Anything else (a temporary left, a
+    mixture) fails here."""
+    lines, whole, folders = _signal_at_every_line(make_old, write_new, sig, tmp_path)
+    old = tmp_path / "old"
+    old.mkdir()
+    make_old(old)
+    reference = {"old": _contents(old), "new": _contents(whole)}
+    left = []
+    for line, folder in zip(lines, folders):
+        state = [name for name, there in reference.items() if _contents(folder) == there]
+        assert state, f"a signal before {line} left {sorted(_contents(folder))}"
+        left.append(state[0])
+    return lines, left
+
+
+@pytest.mark.parametrize("sig", [signal.SIGTERM, signal.SIGINT], ids=["sigterm", "sigint"])
+@pytest.mark.parametrize("kind", ["folder", "file", "new folder"])
+def test_a_signal_at_any_line_of_a_write_leaves_the_old_output_or_the_new_whole(kind, sig, tmp_path):
+    def make_old(folder: Path) -> None:
+        if kind == "folder":
+            (folder / "out").mkdir()
+            (folder / "out" / "a.txt").write_text("old a")
+        elif kind == "file":
+            (folder / "out.json").write_text('"old"')
+
+    def write_folder(tmp: Path) -> None:
+        tmp.mkdir()
+        (tmp / "a.txt").write_text("new a")
+        (tmp / "b.txt").write_text("new b")
+
+    if kind == "file":
+        write_new = lambda folder: outputs.write_json(folder / "out.json", "new")
+    else:
+        write_new = lambda folder: outputs.write_atomically(folder / "out", write_folder)
+    lines, left = _old_or_new(make_old, write_new, sig, tmp_path / "runs")
+    kept = left.count("old")
+    assert left == ["old"] * kept + ["new"] * (len(left) - kept), list(zip(lines, left))
+    first_new = lines[kept]  # the first line before which a signal no longer keeps the old output: the rename
+    source = Path(outputs.__file__).read_text().splitlines()[int(first_new.split(":")[1]) - 1]
+    assert re.search(r"tmp\.replace\(path\)", source), (first_new, source)
+
+
+def test_a_signal_at_any_line_of_saving_a_checkpoint_leaves_the_old_one_or_the_new_one(checkpoint_2ds, tmp_path):
+    models = checkpoints.load_models(checkpoint_2ds)
+    retrained = dataclasses.replace(models, seed=models.seed + 1)  # another checkpoint: its meta.json differs
+    lines, left = _old_or_new(
+        lambda folder: shutil.copytree(checkpoint_2ds, folder / "ckpt"),
+        lambda folder: checkpoints.save_checkpoint(retrained, folder / "ckpt", overwrite=True),
+        signal.SIGTERM,
+        tmp_path,
+    )
+    kept = left.count("old")
+    assert left == ["old"] * kept + ["new"] * (len(left) - kept), list(zip(lines, left))
+    assert kept > len(lines) // 2  # a signal anywhere in the writing keeps the old checkpoint
+
+
+def test_a_signal_at_any_line_of_starting_a_run_leaves_a_folder_the_rerun_takes(tmp_path):
+    settings = RunConfig.create("2ds", "strong", quick=True, progress=False).settings()
+    start = lambda folder: Stages(folder / "run", settings, progress=False)
+    lines, whole, left = _signal_at_every_line(lambda folder: None, start, signal.SIGTERM, tmp_path)
+    assert _contents(whole) == {"run": None, "run/cache": None, "run/cache/settings.json": ANY}
+    for line, folder in zip(lines, left):
+        start(folder)  # the rerun: check_out takes what the signal left (a cache folder without settings it refuses)
+        assert _contents(folder) == _contents(whole), line
+
+
+def test_signals_wait_until_a_write_is_done_and_then_act_as_they_would_have(tmp_path):
+    ran_on = []
+    mask = signal.pthread_sigmask(signal.SIG_BLOCK, [])
+    status = {k: v for k, v in (l.split(":\t") for l in Path("/proc/thread-self/status").read_text().splitlines() if l.startswith("Sig"))}
+    print("DEBUG", mask, status, signal.getsignal(signal.SIGINT), threading.enumerate())
+    assert not mask, (mask, status, threading.enumerate())
+    with pytest.raises(KeyboardInterrupt), outputs.signals_held() as came:  # Python's own SIGINT handler
+        signal.raise_signal(signal.SIGINT)
+        ran_on.append(list(came))  # still runs: the signal waits
+    assert ran_on == [[signal.SIGINT]]
+    assert signal.getsignal(signal.SIGINT) is signal.default_int_handler
+
+    def interrupted_write(tmp: Path) -> None:
+        tmp.write_text("new")
+        signal.raise_signal(signal.SIGINT)
+
+    with pytest.raises(KeyboardInterrupt):
+        outputs.write_atomically(tmp_path / "out.txt", interrupted_write)
+    assert list(tmp_path.iterdir()) == []  # the write that met the signal was thrown away
+    done = []
+    worker = threading.Thread(target=lambda: done.append(outputs.write_json(tmp_path / "t.json", [1])))
+    worker.start()
+    worker.join()
+    assert done == [tmp_path / "t.json"] and json.loads((tmp_path / "t.json").read_text()) == [1]

@@ -2,13 +2,13 @@
 
 Reading order: :mod:`toolkit.cli.arguments` (the checked argument types, the choices read
 from the registries, the options several sub-commands share), :mod:`toolkit.cli.parser`
-(each sub-command's options and help text), :mod:`toolkit.cli.commands` (each
-sub-command: a run configuration, then one library call), and :func:`main` here, which
-imports the modules named by ``--import`` first (so that what they register is
-offered), runs the command on :func:`toolkit.util.threads.configured` threads and turns
-errors and signals into exit codes: a clear message and 2 for bad input; Ctrl-C or
-SIGTERM stops a command within seconds, says what it kept and exits with 128 + the
-signal's number (130, 143), as shells expect.
+(each sub-command's options and help text; ``bench``'s in :mod:`toolkit.cli.bench_parser`),
+:mod:`toolkit.cli.commands` (each sub-command: a run configuration, then one library call),
+and :func:`main` here, which imports the modules named by ``--import`` first (so that what
+they register is offered), runs the command on :func:`toolkit.util.threads.configured`
+threads and turns errors and signals into exit codes: a clear message and 2 for bad input;
+Ctrl-C or SIGTERM stops a command within seconds, says what it kept and exits with 128 +
+the signal's number (130, 143), as shells expect.
 """
 
 from __future__ import annotations
@@ -38,7 +38,9 @@ class Interrupted(KeyboardInterrupt):
 @contextmanager
 def signals_interrupt() -> Iterator[None]:
     """SIGINT and SIGTERM raise :class:`Interrupted` inside, once: a second signal while the command stops ends
-    it at once (planning processes notice within a second that it is gone, and end too)."""
+    it at once (planning processes notice within a second that it is gone, and end too). A signal that comes
+    while an output is written waits until the write is undone or done (:func:`toolkit.util.outputs.signals_held`),
+    so neither signal leaves a temporary or half a file behind."""
 
     def interrupt(signum: int, frame: FrameType | None) -> None:
         for sig in SIGNALS:

@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import json
 import platform
-import shutil
 from dataclasses import asdict, fields
 from pathlib import Path
 
@@ -77,8 +76,10 @@ def save_checkpoint(
 ) -> Path:
     """Write ``weights.pt`` and ``meta.json`` (with ``evaluation``, if given) into ``folder``; returns the folder.
 
-    The files go to a folder beside it first, which then takes its place: an interrupted
-    save leaves the old folder as it was. An existing checkpoint is replaced only with ``overwrite``.
+    The files go to a folder beside it first, which then takes its place
+    (:func:`toolkit.util.outputs.write_atomically`): a save stopped by an error or a signal
+    leaves the old folder as it was and nothing beside it. An existing checkpoint is
+    replaced only with ``overwrite``.
     """
     folder = check_destination(folder, overwrite)
     meta = {
@@ -98,16 +99,13 @@ def save_checkpoint(
         },
     }
     state = {k: v.detach().cpu() for k, v in models.predictor.state_dict().items()}
-    new, old = (folder.with_name(f"{folder.name}.{suffix}.tmp") for suffix in ("new", "old"))
-    for leftover in (new, old):  # of a save interrupted earlier
-        shutil.rmtree(leftover, ignore_errors=True)
-    new.mkdir()
-    torch.save(state, new / WEIGHTS)
-    (new / META).write_text(json.dumps(meta, indent=2))
-    if folder.exists():
-        folder.rename(old)
-    new.rename(folder)
-    shutil.rmtree(old, ignore_errors=True)
+
+    def write(new: Path) -> None:
+        new.mkdir()
+        torch.save(state, new / WEIGHTS)
+        (new / META).write_text(json.dumps(meta, indent=2))
+
+    outputs.write_atomically(folder, write)
     return folder
 
 

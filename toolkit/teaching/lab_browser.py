@@ -1,8 +1,11 @@
 """A notebook as a student sees it: opened in a real JupyterLab, run in headless Chromium (Playwright).
 
-Used by ``tests/test_jupyterlab.py`` and to make the README's screenshot::
+Used by ``tests/test_jupyterlab.py``, to make the README's screenshot, and to look at a
+whole rendered notebook, screen by screen (``--full-page``: ``lab_01.png``, ``lab_02.png``, ...)::
 
     python -m toolkit.teaching.lab_browser notebooks/05_3d_scenes.ipynb --screenshot docs/jupyterlab.png
+    TOOLKIT_QUICK=1 python -m toolkit.teaching.lab_browser notebooks/02_cae_reconstruction.ipynb \\
+        --screenshot lab.png --full-page
 
 The notebook is copied into a temporary folder first (JupyterLab saves what it
 runs; the original stays without outputs), a JupyterLab server starts on
@@ -11,6 +14,15 @@ runs; the original stays without outputs), a JupyterLab server starts on
 shows is counted: ipywidgets sliders, images (matplotlib figures), iframes (the
 embedded viewer), "Error displaying widget" messages and tracebacks. Playwright
 drives Debian's Chromium (``executable_path``); it never downloads a browser.
+
+JupyterLab scrolls a notebook inside its own element, not the page, so a page
+screenshot (even Playwright's ``full_page=True``) holds one screen. ``full_page``
+scrolls that element a screen at a time and saves each, the notebook panel only, the
+last one ending where the notebook ends. Lab's windowing is off
+(``"windowingMode": "none"``: every cell in the page): ``"full"`` attaches only the cells
+in view, ``"defer"`` the others later, and the default, ``"contentVisibility"``, lets the
+browser skip drawing those off screen, any of which could hide cells from the counts
+above or leave a screen half drawn.
 """
 
 from __future__ import annotations
@@ -29,20 +41,49 @@ import time
 import urllib.request
 from collections.abc import Iterator
 from contextlib import contextmanager, suppress
-from dataclasses import asdict, dataclass
+from dataclasses import asdict, dataclass, field
 from pathlib import Path
 from typing import IO
 
 from toolkit.viewer.browser import CHROMIUM_ARGS, find_chromium
 
 WINDOW = (1400, 1000)  # (width, height) of the page
-SETTINGS = {  # JupyterLab settings for the run: no news pop-up; every cell in the page, also those scrolled away
+SETTINGS = {  # JupyterLab settings for the run: no news pop-up; every cell in the page, also those scrolled away;
+    # no empty screen below the last cell
     "@jupyterlab/apputils-extension/notification": {"fetchNews": "false", "checkForUpdates": False},
-    "@jupyterlab/notebook-extension/tracker": {"windowingMode": "none"},
+    "@jupyterlab/notebook-extension/tracker": {"windowingMode": "none", "scrollPastEnd": False},
 }
 STDERR = '.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.stderr"]'  # errors and warnings render so
 PROMPTS = "[...document.querySelectorAll('.jp-CodeCell .jp-InputArea-prompt')]"  # JavaScript: each code cell's prompt
 CELLS_RUN = PROMPTS + ".filter(p => /\\[\\d+\\]/.test(p.textContent)).length"  # JavaScript: prompts with a number
+SCROLLER = "lab-browser-scroller"  # attribute marking the element the notebook scrolls in
+FIND_SCROLLER = f"""() => {{  // the nearest ancestor of the first cell that scrolls, else (it fits) the notebook
+    const first = document.querySelector('.jp-NotebookPanel .jp-Cell');
+    let node = first;
+    while (node && !(['auto', 'scroll'].includes(getComputedStyle(node).overflowY)
+                     && node.scrollHeight > node.clientHeight)) node = node.parentElement;
+    node = node ?? first.closest('.jp-Notebook');
+    node.setAttribute('{SCROLLER}', '');
+    return [node.scrollHeight, node.clientHeight];  // the notebook's height and a screen's, in px
+}}"""
+SCROLL_TO = f"""top => {{  // scroll there; the cells (by index) now in view, and whether an iframe is
+    const box = document.querySelector('[{SCROLLER}]');
+    box.scrollTop = top;
+    const view = box.getBoundingClientRect(), overlaps = r => r.bottom > view.top && r.top < view.bottom;
+    const cells = [...box.querySelectorAll('.jp-Cell')];
+    return [box.scrollTop, cells.flatMap((c, i) => overlaps(c.getBoundingClientRect()) ? [i] : []),
+            [...box.querySelectorAll('iframe')].some(f => overlaps(f.getBoundingClientRect()))];
+}}"""
+
+
+@dataclass
+class Screen:
+    """One PNG of a notebook saved screen by screen: which stretch of it, which cells it shows."""
+
+    path: str
+    top: int  # px from the notebook's top to the screen's top
+    bottom: int  # px from the notebook's top to the screen's bottom
+    cells: list[int]  # the cells (0-based, markdown cells included) of which some part is in view
 
 
 @dataclass
@@ -57,6 +98,7 @@ class RenderedNotebook:
     widget_errors: int  # "Error displaying widget" messages
     tracebacks: int  # error outputs
     seconds: float  # from "Run All Cells" to the last cell's end
+    screens: list[Screen] = field(default_factory=list)  # the PNGs saved, top to bottom
 
 
 def _free_port() -> int:
@@ -132,9 +174,13 @@ def run_all(
     *,
     env: dict[str, str] | None = None,
     screenshot: str | Path | None = None,
+    full_page: bool = False,
     timeout_s: float = 900.0,
 ) -> RenderedNotebook:
-    """Open ``notebook`` in JupyterLab, run all cells, and count what the page shows (optionally save a PNG)."""
+    """Open ``notebook`` in JupyterLab, run all cells, and count what the page shows.
+
+    With ``screenshot``, save a PNG of the page there; with ``full_page`` too, the whole
+    notebook instead, a screen per PNG named after it (``lab.png``: ``lab_01.png``, ...)."""
     from playwright.sync_api import sync_playwright
 
     chromium = find_chromium()
@@ -154,7 +200,11 @@ def run_all(
                 page.wait_for_timeout(2000)  # widgets and iframes finish rendering
                 rendered = _count_outputs(page, n_code, seconds)
                 if screenshot is not None:
-                    _save_screenshot(page, rendered, Path(screenshot))
+                    _close_side_panel(page)
+                    if full_page:
+                        rendered.screens = _save_screens(page, Path(screenshot))
+                    else:
+                        _save_screenshot(page, rendered, Path(screenshot))
             finally:
                 browser.close()
     return rendered
@@ -191,16 +241,39 @@ def _count_outputs(page, n_code: int, seconds: float) -> RenderedNotebook:
     )
 
 
-def _save_screenshot(page, rendered: RenderedNotebook, path: Path) -> None:
-    """A PNG of the page with the file browser closed, scrolled to the first embedded viewer if there is one."""
+def _close_side_panel(page) -> None:
+    """Close the file browser (or whichever left panel is open): room for the notebook."""
     open_panel = page.locator(".jp-SideBar.jp-mod-left .lm-TabBar-tab.lm-mod-current")
-    if open_panel.count():  # the file browser closed: room for the notebook
+    if open_panel.count():
         open_panel.click()
+        page.wait_for_timeout(500)  # the notebook widens, its outputs reflow
+
+
+def _save_screenshot(page, rendered: RenderedNotebook, path: Path) -> None:
+    """A PNG of the page, scrolled to the first embedded viewer if there is one."""
     if rendered.iframes:  # the picture shows the first embedded viewer
         page.locator(".jp-OutputArea-output").locator("iframe").first.scroll_into_view_if_needed()
         page.wait_for_timeout(3000)  # its WebGL scene draws
     path.parent.mkdir(parents=True, exist_ok=True)
     page.screenshot(path=str(path))
+
+
+def _save_screens(page, path: Path) -> list[Screen]:
+    """PNGs of the notebook panel from its top to its end, a screen each (the last one overlaps the one before
+    so that it ends where the notebook ends), named ``path``'s stem + ``_01``, ``_02``, ...; what each shows."""
+    total, height = page.evaluate(FIND_SCROLLER)
+    box = page.locator(f"[{SCROLLER}]").bounding_box()
+    tops = [*range(0, total - height, height), max(total - height, 0)]  # scroll offsets, the last one at the end
+    digits = max(2, len(str(len(tops))))
+    path.parent.mkdir(parents=True, exist_ok=True)
+    screens = []
+    for i, wanted in enumerate(tops, start=1):
+        top, cells, iframe = page.evaluate(SCROLL_TO, wanted)
+        page.wait_for_timeout(3000 if iframe else 300)  # outputs in view draw (a viewer's WebGL scene: seconds)
+        shot = path.with_name(f"{path.stem}_{i:0{digits}d}{path.suffix}")
+        page.screenshot(path=str(shot), clip=box)
+        screens.append(Screen(str(shot), top, top + height, cells))
+    return screens
 
 
 def _wait_idle(page) -> None:
@@ -214,9 +287,16 @@ def main(argv: list[str] | None = None) -> int:
         "the page shows (quick mode: TOOLKIT_QUICK=1)."
     )
     parser.add_argument("notebook")
-    parser.add_argument("--screenshot", help="save a PNG of the page here")
+    parser.add_argument("--screenshot", metavar="PNG", help="save a PNG of the page here")
+    parser.add_argument(
+        "--full-page",
+        action="store_true",
+        help="with --screenshot: the whole notebook, a screen per PNG (PNG's name + _01, _02, ...)",
+    )
     args = parser.parse_args(argv)
-    print(asdict(run_all(args.notebook, screenshot=args.screenshot)))
+    if args.full_page and not args.screenshot:
+        parser.error("--full-page needs --screenshot PNG (the series is named after it)")
+    print(asdict(run_all(args.notebook, screenshot=args.screenshot, full_page=args.full_page)))
     return 0
 
 
