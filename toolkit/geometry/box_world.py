@@ -22,7 +22,7 @@ import numpy as np
 
 from toolkit.geometry.checker import CollisionChecker
 from toolkit.geometry.robots import BoxRobot
-from toolkit.geometry.workspace import Workspace
+from toolkit.geometry.workspace import MeshWorkspace, Workspace
 from toolkit.util.ragged import ragged
 
 
@@ -213,3 +213,12 @@ class SeparatingAxisChecker(BoxWorldChecker):
         hit = np.zeros(len(Q), dtype=bool)
         np.logical_or.at(hit, n, pair_hit)
         return hit
+
+
+def refuse_mesh(workspace: Workspace) -> None:
+    """A clear error for a checker of boxes handed a mesh workspace, whose obstacles are its triangles."""
+    if isinstance(workspace, MeshWorkspace):
+        raise ValueError(
+            "a mesh workspace's obstacles are its triangles, not its boxes: "
+            "use exact_checker(workspace, robot) or MeshChecker"
+        )

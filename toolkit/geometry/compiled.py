@@ -20,9 +20,9 @@ from typing import NamedTuple
 
 import numpy as np
 
-from toolkit.geometry.box_world import BoxWorldChecker
+from toolkit.geometry.box_world import BoxWorldChecker, refuse_mesh
 from toolkit.geometry.robots import AXES, BoxRobot
-from toolkit.geometry.workspace import MeshWorkspace, Workspace
+from toolkit.geometry.workspace import Workspace
 
 BASE_KINDS = {"point2d": 0, "planar": 1, "free": 2}  # a robot's base kind, as the kernels read it
 
@@ -63,11 +63,7 @@ class CompiledChecker(BoxWorldChecker):
     """
 
     def __init__(self, workspace: Workspace, robot: BoxRobot):
-        if isinstance(workspace, MeshWorkspace):
-            raise ValueError(
-                "a mesh workspace's obstacles are its triangles, not its boxes: "
-                "use exact_checker(workspace, robot) or MeshChecker"
-            )
+        refuse_mesh(workspace)
         super().__init__(workspace, robot)
         self._robot = robot_arrays(robot)
         self._world = self._world_arrays(grow=0.0)

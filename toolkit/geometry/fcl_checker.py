@@ -16,7 +16,7 @@ from __future__ import annotations
 import fcl
 import numpy as np
 
-from toolkit.geometry.box_world import BoxWorldChecker
+from toolkit.geometry.box_world import BoxWorldChecker, refuse_mesh
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import MeshWorkspace, Workspace
 
@@ -30,11 +30,7 @@ class FCLChecker(BoxWorldChecker):
     """
 
     def __init__(self, workspace: Workspace, robot: BoxRobot):
-        if isinstance(workspace, MeshWorkspace):
-            raise ValueError(
-                "a mesh workspace's obstacles are its triangles, not its boxes: "
-                "use exact_checker(workspace, robot) or MeshChecker"
-            )
+        refuse_mesh(workspace)
         super().__init__(workspace, robot)
         self._world = fcl.DynamicAABBTreeCollisionManager()
         self._world.registerObjects([_fcl_box(lo, hi) for lo, hi in workspace.boxes])
