@@ -20,7 +20,8 @@ The robot and the workspace arrive as arrays (:class:`toolkit.geometry.compiled.
 builds them), never as constants, so one compiled version serves every robot and
 workspace; ``cache=True`` keeps it on disk (in ``NUMBA_CACHE_DIR`` if set, else in ``__pycache__``
 beside this file, else, where that is read-only, in the user's cache folder, ``~/.cache/numba``),
-so a machine compiles it once.
+so a machine compiles it once. The steps are small functions that numba inlines into the loop
+(``inline="always"``): a call that passes arrays costs more than most of the steps themselves.
 """
 
 from __future__ import annotations
@@ -29,7 +30,7 @@ import numpy as np
 from numba import njit
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _turn(rotation, axis, angle):
     """``rotation (3, 3) @ (rotation about world axis ``axis`` by ``angle``)``, in place."""
     c, s = np.cos(angle), np.sin(angle)
@@ -40,7 +41,7 @@ def _turn(rotation, axis, angle):
         rotation[row, k] = b * c - a * s
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _link_frames(q, robot, frame, centers, rotations):
     """Fill ``centers (L, 3)`` and ``rotations (L, 3, 3)`` (columns: the link's axes) for configuration ``q``
     (:meth:`toolkit.geometry.robots.BoxRobot.link_boxes`); ``frame (4, 3)``: the frame being posed, position and
@@ -73,7 +74,7 @@ def _link_frames(q, robot, frame, centers, rotations):
                 rotations[link, i, j] = rotation[i, j]
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _link_bounds(half_extents, world, centers, rotations, low, high, cells):
     """Fill every link's axis-aligned bounds ``low, high (L, 3)`` and the cells they cover, ``cells (L, 2, 3)``
     (first and last per axis, clipped to the grid); returns whether every link lies inside the region."""
@@ -91,7 +92,7 @@ def _link_bounds(half_extents, world, centers, rotations, low, high, cells):
     return inside
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _listed_boxes(cells, world, seen, tag, found):
     """Fill ``found`` with the boxes listed in ``cells (2, 3)`` (first and last per axis) that ``seen`` has not
     marked with ``tag`` yet, and mark them; returns their number (a box listed in two cells is tested once)."""
@@ -109,7 +110,7 @@ def _listed_boxes(cells, world, seen, tag, found):
     return n_found
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _boxes_touch(center, R, half, low, high, box, dim):
     """Whether a link box (``center (3,)``, ``R (3, 3)`` whose columns are its axes, ``half (3,)``, bounds
     ``low, high (3,)``) touches the obstacle ``box (2, D)``.
@@ -149,7 +150,7 @@ def _boxes_touch(center, R, half, low, high, box, dim):
     return True
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _in_bounds(q, lower, upper):
     for i in range(len(q)):  # noqa: SIM110 (numba compiles loops, not generators)
         if not lower[i] <= q[i] <= upper[i]:
@@ -157,7 +158,7 @@ def _in_bounds(q, lower, upper):
     return True
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _some_link_touches(tag, half, boxes, world, centers, rotations, low, high, cells, seen, found):
     """Whether some link touches an obstacle listed in the cells its bounds cover (``tag``: the first link's)."""
     for link in range(len(half)):
@@ -190,7 +191,7 @@ def validity(Q, robot, world, valid):
         )
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _box_clearance(center, R, half, low, high, box, dim, cap):
     """A lower bound on the distance between a link box and an obstacle ``box (2, D)`` (arguments as in
     :func:`_boxes_touch`): the larger of the gap between the link's bounds and the box and the gap between their
