@@ -5,6 +5,7 @@ shape, the settings it builds, that every exact answer agrees with python-fcl, t
 and the conclusion computed from given figures, and the figure's axes.
 """
 
+import dataclasses
 import json
 
 import numpy as np
@@ -84,6 +85,13 @@ def test_the_chains_of_one_and_three_joints_are_the_papers(n_joints):
     Q = paper.sample(np.random.default_rng(0), 50)
     for a, b in zip(ours.link_boxes(Q), paper.link_boxes(Q)):
         np.testing.assert_allclose(a, b)
+
+
+def test_sizes_of_ones_own_set_what_is_swept():
+    sizes = dataclasses.replace(crossover.CrossoverSizes.quick(), obstacles=(5, 15, 40), batch=300)
+    swept = crossover.crossover(scenarios.get("2ds"), variables=("obstacles",), sizes=sizes)
+    assert swept["quick"] is False and swept["batch"] == 300
+    assert list(swept["variables"]) == ["obstacles"] and swept["variables"]["obstacles"]["values"] == [5, 15, 40]
 
 
 def test_a_longer_chain_and_bad_sizes_are_named():

@@ -191,11 +191,18 @@ def sweep(scenario: Scenario, variable: str, sizes: CrossoverSizes, preset: str 
 
 
 def crossover(
-    scenario: Scenario, preset: str = "paper", seed: int = 0, quick: bool = False, variables: tuple[str, ...] = ()
+    scenario: Scenario,
+    preset: str = "paper",
+    seed: int = 0,
+    quick: bool = False,
+    variables: tuple[str, ...] = (),
+    sizes: CrossoverSizes | None = None,
 ) -> dict:
-    """Every variable that applies (or those named), swept on ``scenario``: ``{"scenario", "preset", "quick",
-    "seed", "batch", "mesh_batch", "variables": {name: sweep}, "conclusion": [lines]}``."""
-    sizes = CrossoverSizes.quick() if quick else CrossoverSizes()
+    """Every variable that applies (or those named), swept on ``scenario`` at ``sizes`` (default: the full ones, or
+    :meth:`CrossoverSizes.quick` where ``quick``): ``{"scenario", "preset", "quick", "seed", "batch", "mesh_batch",
+    "variables": {name: sweep}, "conclusion": [lines]}``."""
+    if sizes is None:
+        sizes = CrossoverSizes.quick() if quick else CrossoverSizes()
     applicable = variables_of(scenario)
     if unknown := sorted(set(variables) - set(applicable)):
         raise ValueError(f"variable(s) {unknown} do not apply to {scenario.name}; choose from {', '.join(applicable)}")
