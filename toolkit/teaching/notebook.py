@@ -10,7 +10,7 @@ what shrank::
     n_workspaces = sized(full=200, quick=20, what="workspaces per family")
     banner(models=[("2ds", "strong")])           # quick mode: these sizes, and how the model trains
     models = trained_models("2ds", "strong")     # trains once, then loads in a second
-    scores = trained_scores("2ds", "strong")     # its Table I and II measures, as toolkit train scores them
+    scores = trained_scores("2ds", "strong")     # its Table 1 and 2 measures, as toolkit train scores them
     recipe = run_config("2ds", "strong").preset  # the preset, quick-sized in quick mode
 
 The library's own quick sizes (epochs, workspaces, queries) are in
@@ -149,7 +149,7 @@ def trained_scores(scenario: str, preset: str, *, seed: int = 0, progress: bool 
     """The scores of :func:`trained_models`' model, as ``toolkit train`` evaluates it (training it if need be).
 
     ``{"cae": {"seen_acc", "unseen_acc", "seen_all_free", "unseen_all_free"}, "mlp": {"seen", "unseen",
-    "unseen_uniform"}}`` (:func:`toolkit.learning.training.evaluate`): Table I and II's measures on this size's
+    "unseen_uniform"}}`` (:func:`toolkit.learning.training.evaluate`): Table 1 and 2's measures on this size's
     test workspaces, the numbers ``toolkit reproduce`` puts in its tables for the same preset, seed and size.
     """
     trained_models(scenario, preset, seed=seed, progress=progress)

@@ -7,7 +7,7 @@ the ones the docs show, and follow the docs when the reproduction is run again::
 
     from toolkit.teaching import recorded
     medians = recorded.median_ratios("strong")              # {scenario: {"sampling"|"total": {sampler: ratio}}}
-    row = recorded.table("paper", "MLP accuracy")["3dc7"]   # {column: cell} of Table II's 3DC-7 row
+    row = recorded.table("paper", "MLP accuracy")["3dc7"]   # {column: cell} of Table 2's 3DC-7 row
     recorded.ours(row["Seen TPR"])                          # 1.0: our figure of the cell "**100%** / 87%"
     recorded.without("strong", "medians")                   # what "without prediction" was, where the docs say
 """
