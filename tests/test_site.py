@@ -28,7 +28,7 @@ import pytest
 from mkdocs.structure.files import File, Files
 
 from toolkit.teaching import grading, handout, site_hooks
-from toolkit.teaching.site import LIVE_ONLY_IN_JUPYTERLAB, Site, build_site, static_widgets
+from toolkit.teaching.site import LIVE_ONLY_IN_JUPYTERLAB, Site, build_site, modules, static_widgets
 from toolkit.viewer import browser as viewer_browser
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -90,6 +90,8 @@ def test_the_site_has_every_page_a_student_needs(site):
     assert [p for p in expected if not (site.out / p).is_file()] == []
     geometry = (site.out / "reference" / "geometry.html").read_text()
     assert 'id="toolkit.geometry.robots.BoxRobot"' in geometry and 'class="autorefs autorefs-internal"' in geometry
+    shown = re.findall(r'<h2 id="toolkit\.geometry\.(\w+)"', geometry)  # the modules, in the page's order
+    assert shown == modules("geometry") and shown[:2] == ["robots", "workspace"]
 
 
 @pytest.mark.slow
@@ -142,6 +144,14 @@ def test_no_page_loads_a_script_stylesheet_font_or_image_from_another_host(site)
 
 
 # ---- the pieces, on hand-made inputs ----
+
+
+def test_a_reference_page_follows_its_packages_reading_order_and_misses_no_module():
+    files = {p.stem for p in (ROOT / "toolkit" / "planning").glob("*.py") if p.stem != "__init__"}
+    order = modules("planning")
+    assert sorted(order) == sorted(files) and order[:3] == ["sampling", "local_planner", "roadmap"]
+    assert order.index("paper_prm") < order.index("lazy_prm")  # Algorithm 1 before the planner that extends it
+    assert modules("scenarios") == []  # a module, not a package: its page is the module itself
 
 
 def test_a_widget_becomes_a_note_followed_by_what_its_output_widget_showed():
@@ -283,16 +293,16 @@ def broken_images(page) -> list[str]:
 @pytest.mark.slow
 @pytest.mark.browser
 @needs_chromium
-def test_home_chapters_and_api_reference_show_every_image_in_chromium(site, served, chromium):
+def test_home_chapters_tutorials_assignments_and_api_reference_show_every_image_in_chromium(site, served, chromium):
     remote: list[str] = []
-    for path in ["index.html", "reference/index.html", "reference/geometry.html"] + [
-        str(page_of(site, s).relative_to(site.out)) for s in CHAPTERS
-    ]:
+    executed = ["index.html"] + [str(page_of(site, s).relative_to(site.out)) for s in CHAPTERS + TUTORIALS]
+    assignments = [f"tutorials/assignments/{name}/{name}.html" for name in grading.assignment_names()]  # not run
+    for path in executed + assignments + ["reference/index.html", "reference/geometry.html"]:
         page = open_page(chromium, served + path, remote)
         try:
             count = page.evaluate("document.images.length")
             assert broken_images(page) == [], path
-            assert count >= (1 if path.startswith("notebooks/") or path == "index.html" else 0), path
+            assert count >= (1 if path in executed else 0), path
         finally:
             page.close()
     assert remote == []

@@ -215,21 +215,46 @@ def packages() -> list[str]:
     return [name for name in PACKAGES if name in found] + sorted(found - set(PACKAGES))
 
 
-def summary(package: str) -> str:
-    """The first line of a package's docstring (read without importing it)."""
+def docstring(package: str) -> str:
+    """A package's docstring (read without importing it)."""
     folder = ROOT / "toolkit" / package
     source = folder / "__init__.py" if folder.is_dir() else folder.with_suffix(".py")
-    docstring = ast.get_docstring(ast.parse(source.read_text())) or ""
-    return docstring.strip().splitlines()[0] if docstring.strip() else ""
+    return (ast.get_docstring(ast.parse(source.read_text())) or "").strip()
+
+
+def summary(package: str) -> str:
+    """The first line of a package's docstring."""
+    text = docstring(package)
+    return text.splitlines()[0] if text else ""
+
+
+def modules(package: str) -> list[str]:
+    """The modules of a package in the reading order its docstring gives (``toolkit.geometry.robots``, ...),
+    any it does not name last, by name; none for a single-module package (``toolkit.scenarios``)."""
+    folder = ROOT / "toolkit" / package
+    found = sorted(p.stem for p in folder.glob("*.py") if not p.stem.startswith("_")) if folder.is_dir() else []
+    named = list(dict.fromkeys(re.findall(rf"toolkit\.{package}\.(\w+)", docstring(package))))
+    return [m for m in named if m in found] + [m for m in found if m not in named]
+
+
+def reference_page(package: str) -> str:
+    """The mkdocstrings page of one package: its docstring, then each module in reading order."""
+    blocks = [f"::: toolkit.{package}\n    options:\n      show_submodules: false\n"]
+    for module in modules(package):
+        blocks.append(
+            f"::: toolkit.{package}.{module}\n    options:\n      heading_level: 2\n      show_root_full_path: false\n"
+        )
+    return "\n".join(blocks)
 
 
 def write_reference(folder: Path) -> None:
-    """One mkdocstrings page per package (its modules below it) and an index listing them."""
+    """One mkdocstrings page per package (its modules below it, in reading order) and an index listing them."""
     folder.mkdir(parents=True, exist_ok=True)
     lines = ["# API reference", "", "Generated from the docstrings; one page per package of `toolkit/`, in the"]
-    lines += ["order of its layers (a package imports only from those above it).", ""]
+    lines += ["order of its layers (a package imports only from those above it); on each page its modules follow"]
+    lines += ["the reading order of the package's docstring.", ""]
     for package in packages():
-        (folder / f"{package}.md").write_text(f"::: toolkit.{package}\n")
+        (folder / f"{package}.md").write_text(reference_page(package))
         lines.append(f"- [`toolkit.{package}`]({package}.md): {summary(package)}")
     (folder / "index.md").write_text("\n".join(lines) + "\n")
 
