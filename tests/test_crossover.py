@@ -130,6 +130,7 @@ def test_the_conclusion_says_where_learning_wins_or_by_how_much_it_would_have_to
             "variables": {
                 "obstacles": sweep("obstacles", [1.0, 2.0], [10.0, 40.0], [3.0, 3.0]),
                 "triangles": sweep("triangles", [50.0, 200.0], [None, None], [1.0, 1.0]),
+                "links": sweep("links", [1.0, 1.0], [None, None], [1.5, 1.04]),
             }
         }
     )
@@ -139,6 +140,10 @@ def test_the_conclusion_says_where_learning_wins_or_by_how_much_it_would_have_to
         "python-fcl it wins at 10, 100"
     )
     assert lines[1].startswith("triangles: learning is cheaper than the default exact check at 10, 100 (")
+    assert lines[2].startswith(
+        "links: learning never wins over 10-100: at its best (100) the network costs about as much as the default "
+        "exact check (1.04x): a tie, not a saving ("
+    )
 
 
 def test_the_figure_has_a_log_log_panel_per_variable(swept):
