@@ -55,7 +55,10 @@ PACKAGES = (
     "cli",
 )
 MATHJAX = "assets/mathjax"  # MathJax 2.7 from jupyter-server-mathjax, served from the site itself
-WORKER_SHIM = ("docs/site/iframe-worker-shim.js", "assets/javascripts/iframe-worker-shim.js")  # mkdocs.yml: polyfills
+SITE_FILES = {  # the site's own files in docs/site/, and where the site serves them (named in mkdocs.yml)
+    "docs/site/iframe-worker-shim.js": "assets/javascripts/iframe-worker-shim.js",  # extra.polyfills
+    "docs/site/notebook-pages.css": "assets/stylesheets/notebook-pages.css",  # extra_css
+}
 MATHJAX_CONFIG = """MathJax.Hub.Config({
   "HTML-CSS": {availableFonts: [], preferredFont: null, webFont: "STIX-Web", imageFont: null},
   SVG: {font: "STIX-Web"}
@@ -103,7 +106,8 @@ def assemble(docs: Path, *, quick: bool = False) -> dict[str, NotebookRun]:
     for pattern in PAGES:
         for source in sorted(ROOT.glob(pattern)):
             copy(source, docs / source.relative_to(ROOT))
-    copy(ROOT / WORKER_SHIM[0], docs / WORKER_SHIM[1])
+    for source, served in SITE_FILES.items():
+        copy(ROOT / source, docs / served)
     runs = {}
     with kernel_environment(quick):
         for source in sorted(ROOT.glob(CHAPTERS)) + sorted(ROOT.glob(TUTORIALS)):
