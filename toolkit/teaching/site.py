@@ -106,8 +106,8 @@ def assemble(docs: Path, *, quick: bool = False) -> dict[str, NotebookRun]:
     for pattern in PAGES:
         for source in sorted(ROOT.glob(pattern)):
             copy(source, docs / source.relative_to(ROOT))
-    for source, served in SITE_FILES.items():
-        copy(ROOT / source, docs / served)
+    for own, served in SITE_FILES.items():
+        copy(ROOT / own, docs / served)
     runs = {}
     with kernel_environment(quick):
         for source in sorted(ROOT.glob(CHAPTERS)) + sorted(ROOT.glob(TUTORIALS)):
