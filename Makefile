@@ -22,9 +22,10 @@ demo: setup
 	$(VENV)/bin/toolkit reproduce --scenario 2ds --preset paper --out $(OUT)
 	cat $(OUT)/tables.md
 
-# The code's checks: ruff's lint and format, mypy's types (all configured in pyproject.toml).
+# The code's checks: ruff's lint (the notebooks' code cells too) and format (the library's files; the notebooks'
+# cells are laid out by hand), mypy's types (all configured in pyproject.toml).
 lint: setup
-	$(VENV)/bin/ruff check toolkit tests docs/scripts
+	$(VENV)/bin/ruff check toolkit tests docs/scripts notebooks tutorials
 	$(VENV)/bin/ruff format --check toolkit tests docs/scripts
 	$(VENV)/bin/mypy
 
