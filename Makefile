@@ -22,11 +22,11 @@ demo: setup
 	$(VENV)/bin/toolkit reproduce --scenario 2ds --preset paper --out $(OUT)
 	cat $(OUT)/tables.md
 
-# The code's checks: ruff's lint (the notebooks' code cells too) and format (the library's files; the notebooks'
-# cells are laid out by hand), mypy's types (all configured in pyproject.toml).
+# The code's checks: ruff's lint (the notebooks' code cells too) and format (the library's and the tools' files; the
+# notebooks' cells are laid out by hand), mypy's types (all configured in pyproject.toml).
 lint: setup
-	$(VENV)/bin/ruff check toolkit tests docs/scripts notebooks tutorials
-	$(VENV)/bin/ruff format --check toolkit tests docs/scripts
+	$(VENV)/bin/ruff check toolkit tools tests docs/scripts notebooks tutorials
+	$(VENV)/bin/ruff format --check toolkit tools tests docs/scripts
 	$(VENV)/bin/mypy
 
 test: setup browser lint
@@ -43,15 +43,15 @@ assignments: setup
 
 # The tree a course gives its students, written into handout/: the library, notebooks, tutorials, docs and the
 # assignments' student versions, with no master, hidden test or solution (checked as it is written;
-# toolkit/teaching/handout.py). Publish this tree, keep the masters private (tutorials/instructors.md).
+# tools/handout.py; tools/ and tests/ stay out). Publish this tree, keep the masters private (tutorials/instructors.md).
 handout: setup
-	$(PY) -c "from toolkit.teaching import handout; print(handout.build_handout('handout'))"
+	$(PY) -c "from tools import handout; print(handout.build_handout('handout'))"
 
 # The course website, built into site/ (open site/index.html, or serve it from any static host:
 # tutorials/instructors.md): the notebooks and tutorials executed at full size (TOOLKIT_QUICK=1: quick),
-# the assignments' student versions, docs/ and the API reference (toolkit/teaching/site.py).
+# the assignments' student versions, docs/ and the API reference of toolkit/ (tools/site.py).
 site: setup
-	$(PY) -m toolkit.teaching.site --out site
+	$(PY) -m tools.site --out site
 
 clean:
 	rm -rf $(VENV) results .pytest_cache

@@ -1,9 +1,10 @@
 """The library's shape, held as it is promised in the packages' docstrings and docs/design.md.
 
 Packages are layers (``LAYERS``): a module imports only from lower layers and its own
-package, ``learning`` and ``planning`` never import each other, nothing imports the
-thin re-exports kept for old names, and no two modules import each other, even
-indirectly (imports inside functions count). Modules stay under 400 lines,
+package, ``learning`` and ``planning`` never import each other, and no two modules import
+each other, even indirectly (imports inside functions count). Lower layers know nothing of
+higher ones' settings: no planner vocabulary in ``geometry`` or ``learning``. No module only
+re-exports names of another. Modules stay under 400 lines,
 functions under 60, and no module imports another's private name.
 """
 
@@ -25,12 +26,6 @@ LAYERS = {  # package (or top-level module) -> layer; a module imports only from
     "teaching": 7,
     "cli": 8,
     "__main__": 9,
-    # the re-exports kept for the contract's old names (DESIGN.md): for users, never imported inside the toolkit
-    "collision": 9,
-    "workspace": 9,
-    "learned": 9,
-    "prm": 9,
-    "queries": 9,
 }
 MAX_MODULE_LINES = 400
 MAX_FUNCTION_LINES = 60
@@ -142,11 +137,71 @@ def test_no_module_imports_another_modules_private_names():
     assert private == []
 
 
-@pytest.mark.parametrize("name", ["collision", "workspace", "learned", "prm", "queries"])
-def test_the_contracts_old_names_still_import_and_are_the_new_objects(name):
-    import importlib
+PLANNER_WORDS = ("PRMOptions", "planner_options", "screen_edges", "auxiliary", "exact_every", "lazy PRM")
 
-    old = importlib.import_module(f"toolkit.{name}")
-    assert old.__all__ and all(getattr(old, n) is not None for n in old.__all__)
-    new = importlib.import_module(old.__doc__.split(":mod:`")[1].split("`")[0])
-    assert all(getattr(old, n) is getattr(new, n) for n in old.__all__)
+
+@pytest.mark.parametrize("package", ["geometry", "learning"])
+def test_lower_layers_know_no_planner_settings(package):
+    """What a checker or a model *is* may live below planning; how a planner uses it lives in planning and in the
+    experiments that pair a model with a planner."""
+    found = [
+        f"{path.relative_to(ROOT.parent)}:{n}: {word}"
+        for path in sorted((ROOT / package).rglob("*.py"))
+        for n, line in enumerate(path.read_text().splitlines(), 1)
+        for word in PLANNER_WORDS
+        if word in line
+    ]
+    assert found == []
+
+
+def test_no_module_only_re_exports_names():
+    """A module that only imports names (and lists them in ``__all__``) is an old name kept alive: use the new one.
+    (A package's ``__init__`` may gather the names a user starts with, as ``toolkit.viewer`` does.)"""
+    only_imports = []
+    for name, path in modules().items():
+        if path.name == "__init__.py":
+            continue
+        body = ast.parse(path.read_text()).body
+        statements = [s for s in body if not (isinstance(s, ast.Expr) and isinstance(s.value, ast.Constant))]
+        imported = [s for s in statements if isinstance(s, (ast.Import, ast.ImportFrom))]
+        if imported and all(
+            isinstance(s, (ast.Import, ast.ImportFrom))
+            or (isinstance(s, ast.Assign) and any(getattr(t, "id", "") == "__all__" for t in s.targets))
+            or (isinstance(s, ast.ImportFrom) and s.module == "__future__")
+            for s in statements
+        ):
+            only_imports.append(name)
+    assert only_imports == []
+
+
+COURSE_BUILD = ("mkdocs", "nbconvert", "nbclient", "playwright")  # mkdocs also stands for its plugins: mkdocs_*, ...
+LAZY_COURSE_BUILD = {("toolkit.viewer.browser", "playwright")}  # `toolkit view --screenshot`, imported when it runs
+
+
+def test_the_library_imports_no_course_build_tool():
+    """mkdocs (and its plugins), nbconvert, nbclient and Playwright build the course (``tools/``, not installed) and
+    come with the dev extras only: no module of ``toolkit`` imports them, imports inside functions included. The one
+    exception (``LAZY_COURSE_BUILD``) imports Playwright inside the function that needs it, never at module level:
+    ``toolkit view --screenshot`` drives Chromium with it and says what to install when it is missing."""
+    found = []
+    for name, path in modules().items():
+        tree = ast.parse(path.read_text())
+        in_functions = {
+            id(inner)
+            for node in ast.walk(tree)
+            if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef))
+            for inner in ast.walk(node)
+        }
+        for node in ast.walk(tree):
+            if isinstance(node, ast.Import):
+                roots = [alias.name.split(".")[0] for alias in node.names]
+            elif isinstance(node, ast.ImportFrom) and node.level == 0 and node.module:
+                roots = [node.module.split(".")[0]]
+            else:
+                continue
+            for root in roots:
+                tool = next((t for t in COURSE_BUILD if root == t or root.startswith(t)), None)
+                if tool is None or ((name, tool) in LAZY_COURSE_BUILD and id(node) in in_functions):
+                    continue
+                found.append(f"{path.relative_to(ROOT.parent)}:{node.lineno} imports {root}")
+    assert found == []

@@ -27,7 +27,8 @@ from otter.test_files import OKTestFile
 
 from toolkit import cli
 from toolkit.cli import commands
-from toolkit.teaching import grading, handout
+from toolkit.teaching import grading
+from tools import handout
 
 ASSIGNMENTS = ["bridge_test", "verify_and_repair", "evaluating_a_checker", "cae_loss"]
 THROUGH_OTTER_RUN = {  # one wrong answer per assignment graded by `otter run` too, to agree with the in-process score

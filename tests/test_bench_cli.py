@@ -13,9 +13,10 @@ import numpy as np
 import pytest
 
 from toolkit import cli, scenarios
-from toolkit.experiments import bench, versus_ompl
+from toolkit.experiments import bench, queries, versus_ompl
 from toolkit.learning import checkpoints, presets
-from toolkit.planning import queries, sampling
+from toolkit.planning import sampling
+from toolkit.planning.options import LazyPRMOptions, PRMOptions
 
 THROUGHPUT_KEYS = {"exact_cfg_per_s", "fcl_cfg_per_s", "learned_cfg_per_s", "ratio", "exact_over_fcl"}
 
@@ -40,7 +41,8 @@ def test_bench_prints_one_json_object(capsys):
 
 def test_throughput_times_the_compiled_checker_beside_fcl_in_3d():
     """The default exact checker (compiled) and the python-fcl reference, both timed, on a 3D scenario."""
-    result = bench.throughput(scenarios.get("3dc7"), batch=300, repeats=1)
+    scenario = scenarios.get("3dc7")
+    result = bench.throughput(scenario, bench.untrained_models(scenario, presets.get("paper")), batch=300, repeats=1)
     assert set(result) == THROUGHPUT_KEYS
     assert all(result[key] > 0 for key in THROUGHPUT_KEYS)
     assert result["exact_over_fcl"] == pytest.approx(result["exact_cfg_per_s"] / result["fcl_cfg_per_s"])
@@ -51,7 +53,7 @@ def test_without_prediction_is_the_best_exact_planner_whatever_the_models_recipe
     recipe's planner (the paper preset's: Algorithm 1); an --option reaches both."""
     seen = {}
 
-    def fake_run(scenario, query_set, sampler, factories, options, seed):
+    def fake_run(scenario, query_set, sampler, factories, *, options, seed):
         seen.update(factories, run_options=options)
         return {
             mode: (
@@ -71,11 +73,15 @@ def test_without_prediction_is_the_best_exact_planner_whatever_the_models_recipe
 
     monkeypatch.setattr(queries, "run_interleaved", fake_run)
     models = SimpleNamespace(preset=presets.get("paper"))
-    row = bench.planning_ratios(scenarios.get("2ds"), models, 1, 1, samplers=("BS",), overrides={"max_rounds": 3})
+    overrides = {"max_rounds": 3, "screen_spacing": 4.0}  # the second: the lazy PRM's alone
+    row = bench.planning_ratios(
+        scenarios.get("2ds"), models, n_workspaces=1, per_workspace=1, samplers=("BS",), overrides=overrides
+    )
     assert row["BS"]["total_ratio"] == 1.0
-    assert seen["without"] is None and seen["run_options"].planner == "lazy"  # the best exact planner
+    assert seen["without"] is None and type(seen["run_options"]) is LazyPRMOptions  # the best exact planner
+    assert seen["run_options"].screen_spacing == 4.0
     with_ = seen["with"]
-    assert isinstance(with_, queries.Mode) and with_.options.planner == "paper"
+    assert isinstance(with_, queries.Mode) and type(with_.options) is PRMOptions  # Algorithm 1
     assert with_.exact is queries.exact_checker  # the default exact checker checks the edges
     assert seen["run_options"].max_rounds == with_.options.max_rounds == 3
 
@@ -221,7 +227,7 @@ def test_versus_ompl_races_the_chosen_planners_only():
     pytest.importorskip("ompl")
     scenario = scenarios.get("2ds")
     table = versus_ompl.versus_ompl(
-        scenario, 2, 9000, ompl_seconds=5, ompl_planners=("RRTConnect",), paper_baseline=False
+        scenario, n_queries=2, seed=9000, ompl_seconds=5, ompl_planners=("RRTConnect",), paper_baseline=False
     )
     assert list(table) == ["ours, best exact", "OMPL RRTConnect"]
     assert table["ours, best exact"]["success_rate"] == 1.0 and table["ours, best exact"]["valid_rate"] == 1.0
@@ -229,15 +235,15 @@ def test_versus_ompl_races_the_chosen_planners_only():
     lines = versus_ompl.versus_ompl_markdown(scenario, table).splitlines()
     assert lines[0].endswith("| median / OMPL RRTConnect's |") and lines[-1].endswith("| 1.00 |")
     with pytest.raises(ValueError, match=r"no planner\(s\) \['NoSuchPlanner'\]"):
-        versus_ompl.versus_ompl(scenario, 1, ompl_planners=("NoSuchPlanner",))
+        versus_ompl.versus_ompl(scenario, n_queries=1, ompl_planners=("NoSuchPlanner",))
     with pytest.raises(ValueError, match="n_queries must be a positive integer, got 0"):
-        versus_ompl.versus_ompl(scenario, 0)
+        versus_ompl.versus_ompl(scenario, n_queries=0)
 
 
 def test_a_race_takes_the_first_queries_of_the_paper_set():
     scenario = scenarios.get("2ds")
     first = versus_ompl.race_queries(scenario, 3, 9000)
-    paper_set = queries.make_queries(scenario, 9000)
+    paper_set = queries.make_queries(scenario, seed=9000)
     assert len(first) == 3
     for ours, theirs in zip(first, paper_set[:3]):
         np.testing.assert_array_equal(ours.start, theirs.start)
@@ -259,8 +265,8 @@ def test_a_race_rotates_who_goes_first_and_times_every_solve(monkeypatch):
 
     monkeypatch.setattr(versus_ompl.time, "perf_counter", lambda: clock[0])
     scenario = scenarios.get("2ds")
-    planners = {"a": fake("a", 1.0, True), "b": fake("b", 2.0, False), "c": fake("c", 4.0, True)}
-    solves = versus_ompl.race(scenario, versus_ompl.race_queries(scenario, 3, 9000), planners)
+    racing = {"a": fake("a", 1.0, True), "b": fake("b", 2.0, False), "c": fake("c", 4.0, True)}
+    solves = versus_ompl.race(scenario, versus_ompl.race_queries(scenario, 3, 9000), racing)
     assert order == [(0, "a"), (0, "b"), (0, "c"), (1, "b"), (1, "c"), (1, "a"), (2, "c"), (2, "a"), (2, "b")]
     table = versus_ompl.summarize(solves)
     assert table["a"]["seconds"] == [1.0, 1.0, 1.0] and table["c"]["median_s"] == 4.0
@@ -295,21 +301,21 @@ def test_planning_ratios_plans_a_registered_sampler_and_names_an_unknown_one(mon
     sampling.register_sampler("MINE", Uniform)
     models = checkpoints.load_models(checkpoint_2ds, "2ds")
     scenario = scenarios.get("2ds")
-    result = bench.planning_ratios(scenario, models, 1, 1, samplers=("MINE",), overrides={"max_rounds": 1})
+    result = bench.planning_ratios(
+        scenario, models, n_workspaces=1, per_workspace=1, samplers=("MINE",), overrides={"max_rounds": 1}
+    )
     assert set(result) == {"MINE"}
     assert result["MINE"]["rounds_with"] == result["MINE"]["rounds_without"] == 1
     with pytest.raises(ValueError, match=r"unknown sampler\(s\) \['RRT'\]; choose from BS, OB, G, BT, MINE$"):
-        bench.planning_ratios(scenario, models, 1, 1, samplers=("BS", "RRT"))
+        bench.planning_ratios(scenario, models, n_workspaces=1, per_workspace=1, samplers=("BS", "RRT"))
 
 
 def test_untrained_models_have_the_presets_sizes_and_answer_alike_for_a_seed():
     scenario = scenarios.get("2ds")
-    one, two = (bench.untrained_models(scenario, "strong", seed=3) for _ in range(2))
+    one, two = (bench.untrained_models(scenario, presets.get("strong"), seed=3) for _ in range(2))
     assert one.preset.name == "strong" and not one.predictor.training
     for a, b in zip(one.predictor.state_dict().values(), two.predictor.state_dict().values()):
         assert a.shape == b.shape and bool((a == b).all())
-    with pytest.raises(ValueError, match="unknown preset"):
-        bench.untrained_models(scenario, "nope")
 
 
 def test_edge_check_segments_join_valid_configurations_a_short_step_apart():

@@ -40,9 +40,9 @@ def test_the_office_renders_with_its_samples(make_viewer, tmp_path):
         ready=lambda png: (
             share(png, draw.OBSTACLE) > 0.03  # furniture covers much of the canvas
             and share(png, draw.VALID) > 0.003  # valid samples, green
-            and share(png, draw.COLLIDING) > 0.0005
+            and share(png, draw.COLLIDING) > 0.0005  # samples in collision, red
         ),
-    )  # samples in collision, red
+    )
 
 
 def test_a_colliding_robot_shows_red(make_viewer, tmp_path):
@@ -57,9 +57,9 @@ def test_a_colliding_robot_shows_red(make_viewer, tmp_path):
         size=SIZE,
         ready=lambda png: (
             share(png, draw.COLLIDING) > 5e-5  # the robot, ~100 px
-            and share(png, draw.OBSTACLE) > 0.01
+            and share(png, draw.OBSTACLE) > 0.01  # and the scene
         ),
-    )  # and the scene
+    )
     assert share(png, draw.VALID) == 0.0  # nothing green
 
 

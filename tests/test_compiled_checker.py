@@ -274,7 +274,7 @@ def test_one_compiled_version_serves_every_robot_and_workspace():
 
 
 def test_importing_the_checkers_compiles_nothing():
-    code = "import sys, toolkit.collision, toolkit.geometry.compiled; print('numba' in sys.modules)"
+    code = "import sys, toolkit.geometry.collision, toolkit.geometry.compiled; print('numba' in sys.modules)"
     assert (
         subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout.strip()
         == "False"

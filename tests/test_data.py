@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 from toolkit import scenarios
-from toolkit.geometry.collision import ExactChecker, exact_checker
+from toolkit.geometry.collision import FCLChecker, exact_checker
 from toolkit.geometry.workspace import Workspace
 from toolkit.learning import data
 from toolkit.learning.data import CollisionDataset, balanced_samples, make_splits
@@ -32,10 +32,12 @@ def splits_3dc7():
 def test_balanced_samples_have_the_fraction_and_the_exact_labels(name, fraction):
     scenario = scenarios.get(name)
     ws = scenario.make_workspace(np.random.default_rng(1))
-    Q, valid = balanced_samples(exact_checker(ws, scenario.robot), np.random.default_rng(2), 101, fraction)
+    Q, valid = balanced_samples(
+        exact_checker(ws, scenario.robot), np.random.default_rng(2), 101, valid_fraction=fraction
+    )
     assert Q.shape == (101, scenario.robot.dof) and valid.shape == (101,) and valid.dtype == bool
     assert valid.sum() == round(101 * fraction)
-    np.testing.assert_array_equal(valid, ExactChecker(ws, scenario.robot).are_valid(Q))  # FCL agrees with every label
+    np.testing.assert_array_equal(valid, FCLChecker(ws, scenario.robot).are_valid(Q))  # FCL agrees with every label
     assert np.all(scenario.robot.in_bounds(Q))
     if 0 < fraction < 1:
         assert 0 < valid[:50].sum() < 50  # shuffled, not all valid first
@@ -63,7 +65,7 @@ def test_balanced_samples_refuse_impossible_requests(n, fraction):
     scenario = scenarios.get("2ds")
     checker = exact_checker(scenario.make_workspace(np.random.default_rng(0)), scenario.robot)
     with pytest.raises(ValueError, match="valid_fraction"):
-        balanced_samples(checker, np.random.default_rng(0), n, fraction)
+        balanced_samples(checker, np.random.default_rng(0), n, valid_fraction=fraction)
 
 
 # -- splits ---------------------------------------------------------------------------------
@@ -97,7 +99,7 @@ def test_split_shapes_balance_and_labels(request, fixture, dof, grid):
         np.testing.assert_array_equal(ds.valid.sum(axis=1), 10)  # exactly 50/50 in every workspace
         for ws, grid_w, Q, valid in zip(ds.workspaces, ds.occupancy, ds.configs, ds.valid):
             np.testing.assert_array_equal(grid_w, ws.occupancy())
-            np.testing.assert_array_equal(valid, ExactChecker(ws, robot).are_valid(Q))
+            np.testing.assert_array_equal(valid, FCLChecker(ws, robot).are_valid(Q))
 
 
 def test_seen_test_reuses_training_workspaces_with_new_samples(splits_3dc7):
@@ -123,7 +125,7 @@ def test_validity_blind_split_is_the_papers_unseen_test(request, fixture):
     )
     np.testing.assert_array_equal(blind.occupancy, unseen.occupancy)
     for ws, Q, valid in zip(blind.workspaces, blind.configs, blind.valid):
-        np.testing.assert_array_equal(valid, ExactChecker(ws, scenario.robot).are_valid(Q))
+        np.testing.assert_array_equal(valid, FCLChecker(ws, scenario.robot).are_valid(Q))
         assert np.all(scenario.robot.lower <= Q) and np.all(scenario.robot.upper >= Q)
     assert 0.6 < blind.valid.mean() < 0.98  # not balanced: most uniform samples are free
     np.testing.assert_array_equal(data.validity_blind_split(scenario, unseen).configs, blind.configs)  # reproducible

@@ -21,7 +21,6 @@ from toolkit.geometry.robots import BoxRobot, Joint, Link
 from toolkit.geometry.workspace import Workspace
 from toolkit.learning import checkpoints, encoding, presets
 from toolkit.learning.learned import LearnedChecker
-from toolkit.learning.models import build_predictor
 from toolkit.learning.training import TrainedModels
 from toolkit.planning import sampling
 from toolkit.planning.local_planner import default_resolution, path_is_valid
@@ -157,7 +156,7 @@ def test_a_registered_scenario_is_found_by_name_and_its_checkpoints_load(tmp_pat
     scenario = scenarios.register(arm_scenario())
     assert scenarios.get("2ds-arm") is scenario
     preset = presets.get("strong")
-    predictor = build_predictor(scenario, preset.encoding, preset.mlp_hidden, preset.dropout, preset.latent_input)
+    predictor = preset.build_predictor(scenario)
     assert predictor.encoding.radius == encoding.reach_cells(scenario.robot) >= 5  # the patch covers the arm's reach
     folder = checkpoints.save_checkpoint(TrainedModels(scenario, preset, predictor), tmp_path / "arm")
     loaded = checkpoints.load_models(folder, "2ds-arm")

@@ -1,4 +1,4 @@
-"""The students' tree holds no solution (toolkit.teaching.handout, `make handout`)."""
+"""The students' tree holds no solution (tools.handout, `make handout`)."""
 
 from __future__ import annotations
 
@@ -7,7 +7,8 @@ import shutil
 
 import pytest
 
-from toolkit.teaching import grading, handout
+from toolkit.teaching import grading
+from tools import handout
 
 
 def test_every_master_has_solution_and_hidden_test_lines_to_look_for():
@@ -47,7 +48,8 @@ def test_the_handout_holds_the_course_and_no_solution(tmp_path):
         assert needed in files, needed
     assert any(f.startswith("notebooks/") and f.endswith(".ipynb") for f in files)
     assert "tutorials/getting_started.ipynb" in files and "tutorials/assignments/README.md" in files
-    assert not any("/dist/" in f or f.endswith(".zip") or f.startswith("tests/") for f in files), sorted(files)
+    outside = ("tests/", "tools/")  # the test suite and the course's build tools are not the students'
+    assert not any("/dist/" in f or f.endswith(".zip") or f.startswith(outside) for f in files), sorted(files)
     for name in grading.assignment_names():
         given = out / grading.master(name).relative_to(handout.ROOT)
         notebook = json.loads(given.read_text())

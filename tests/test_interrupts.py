@@ -46,7 +46,7 @@ STALLED_RUN = '''
 import sys
 import time
 
-from toolkit.planning import queries
+from toolkit.experiments import queries
 
 planned = queries.run_interleaved
 
@@ -122,8 +122,8 @@ def test_a_signal_during_planning_stops_every_process_and_keeps_the_finished_sam
         stdout=subprocess.PIPE,
         stderr=subprocess.PIPE,
         text=True,
-        start_new_session=True,
-    )  # its own process group
+        start_new_session=True,  # its own process group
+    )
     workers: set[int] = set()
     try:
         deadline = time.monotonic() + 600  # generous: imports and spawns crawl on a busy machine

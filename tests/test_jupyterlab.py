@@ -15,8 +15,8 @@ import numpy as np
 import pytest
 from PIL import Image
 
-from toolkit.teaching import lab_browser
 from toolkit.viewer import browser as viewer_browser
+from tools import lab_browser
 
 pytestmark = [
     pytest.mark.browser,

@@ -8,13 +8,12 @@ import pytest
 import torch
 
 from toolkit import cli, scenarios
-from toolkit.experiments import pipeline
+from toolkit.experiments import pipeline, queries
 from toolkit.experiments.config import RunConfig
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.learning import checkpoints, presets
 from toolkit.learning.learned import LearnedChecker, load_checker
-from toolkit.planning import queries
-from toolkit.planning.prm import PRMOptions
+from toolkit.planning.options import LazyPRMOptions, PRMOptions
 
 SCENARIO = scenarios.get("2ds")
 
@@ -90,12 +89,12 @@ def test_load_checker(models, workspace, tmp_path, rng):
 @pytest.mark.parametrize(
     "change, message",
     [
-        ({"format": 0}, "has format 0, this toolkit reads format 1"),
-        ({"format": None}, "has format None, this toolkit reads format 1"),
-        ({"format": "absent"}, "has format none recorded, this toolkit reads format 1"),
+        ({"format": 1}, "has format 1, this toolkit reads format 2"),  # before presets dropped planner settings
+        ({"format": None}, "has format None, this toolkit reads format 2"),
+        ({"format": "absent"}, "has format none recorded, this toolkit reads format 2"),
         (
-            {"preset": "without auxiliary"},
-            r"preset does not match this toolkit's Preset \(missing \['auxiliary'\], unknown \[\]\)",
+            {"preset": "without dropout"},
+            r"preset does not match this toolkit's Preset \(missing \['dropout'\], unknown \[\]\)",
         ),
         ({"preset": "with colour"}, r"\(missing \[\], unknown \['colour'\]\)"),
         ({"seed": "absent"}, r"meta.json lacks \['seed'\]"),
@@ -107,8 +106,8 @@ def test_a_checkpoint_of_another_format_is_refused_by_name(models, workspace, tm
     key, value = next(iter(change.items()))
     if value == "absent":
         del meta[key]
-    elif value == "without auxiliary":
-        del meta["preset"]["auxiliary"]
+    elif value == "without dropout":
+        del meta["preset"]["dropout"]
     elif value == "with colour":
         meta["preset"]["colour"] = "blue"
     else:
@@ -128,17 +127,45 @@ def test_weights_with_other_entries_are_refused(models, workspace, tmp_path):
         load_checker(tmp_path, workspace)
 
 
-@pytest.mark.parametrize("preset, screened, auxiliary", [("paper", False, "exact"), ("strong", True, "confirmed")])
-def test_planning_with_a_learned_checker_follows_its_presets_planner_options(
-    models, workspace, preset, screened, auxiliary
+@pytest.mark.parametrize(
+    "preset, options_class, screened, auxiliary",
+    [("paper", PRMOptions, None, "exact"), ("strong", LazyPRMOptions, True, "confirmed")],
+)
+def test_planning_with_a_learned_checker_uses_the_planner_paired_with_its_preset(
+    models, workspace, preset, options_class, screened, auxiliary
 ):
     checker = LearnedChecker(workspace, dataclasses.replace(models, preset=presets.get(preset)))
     options = queries.default_options(SCENARIO, checker)
-    assert options.screen_edges is screened and options.auxiliary == auxiliary
-    assert options.exact_every == presets.get(preset).exact_every
-    assert queries.default_options(SCENARIO, checker, screen_edges=not screened).screen_edges is not screened
+    assert type(options) is options_class and options.auxiliary == auxiliary
+    assert getattr(options, "screen_edges", None) is screened  # Algorithm 1 has no learned edge screening
     assert queries.default_options(SCENARIO, checker, auxiliary="predicted").auxiliary == "predicted"
-    assert queries.default_options(SCENARIO).auxiliary == PRMOptions().auxiliary  # without a model: the planner's
+    without = queries.default_options(SCENARIO)  # without a model: the best exact planner, its own defaults
+    assert type(without) is LazyPRMOptions and without.auxiliary == LazyPRMOptions().auxiliary
+
+
+def test_a_predictor_is_built_from_a_preset_in_one_place_and_its_initialization_changes_no_loaded_result(
+    models, workspace, tmp_path, rng
+):
+    """``Preset.build_predictor`` is the one way from a recipe to networks (training, checkpoints, benchmarks). Two
+    of the three places that built them field by field dropped ``mlp_init``: it changed no result, since a
+    checkpoint's weights replace the initial ones and a benchmark's speed does not depend on them; shown here."""
+    assert presets.get("paper").mlp_init == "he"
+    built = []
+    for init in ("he", "torch"):
+        torch.manual_seed(0)
+        built.append(dataclasses.replace(models.preset, mlp_init=init).build_predictor(SCENARIO))
+    he, default = built
+    assert not torch.equal(he.mlp.linears[0].weight, default.mlp.linears[0].weight)  # the field matters here ...
+    checkpoints.save_checkpoint(models, tmp_path)
+    state = torch.load(tmp_path / "weights.pt", weights_only=True)
+    Q = SCENARIO.robot.sample(rng, 300)
+    answers = []
+    for predictor in (he, default):
+        predictor.load_state_dict(state)
+        trained = dataclasses.replace(models, predictor=predictor.eval())
+        answers.append(LearnedChecker(workspace, trained).probability(Q))
+    np.testing.assert_array_equal(*answers)  # ... and not once the checkpoint's weights are in
+    np.testing.assert_array_equal(answers[0], load_checker(tmp_path, workspace).probability(Q))
 
 
 def test_bench_json(capsys):
@@ -146,3 +173,14 @@ def test_bench_json(capsys):
     result = json.loads(capsys.readouterr().out)
     assert result["learned_cfg_per_s"] > 0 and result["exact_cfg_per_s"] > 0
     assert result["ratio"] == pytest.approx(result["learned_cfg_per_s"] / result["exact_cfg_per_s"])
+
+
+def test_a_checkpoint_loads_for_the_scenario_object_it_is_given(models, tmp_path):
+    """Objects flow down: a caller holding a scenario gets its models for that very object, not a fresh lookup of
+    the recorded name (a registered or changed scenario stays the caller's)."""
+    checkpoints.save_checkpoint(models, tmp_path)
+    own = dataclasses.replace(SCENARIO)  # equal to the registry's, but another object
+    assert checkpoints.load_models(tmp_path, own).scenario is own
+    assert checkpoints.load_models(tmp_path).scenario is scenarios.get("2ds")  # no scenario given: its name's
+    with pytest.raises(ValueError, match="trained for scenario '2ds', not '3dc7'"):
+        checkpoints.load_models(tmp_path, scenarios.get("3dc7"))

@@ -14,7 +14,7 @@ import trimesh
 
 from toolkit import scenarios
 from toolkit.geometry import meshes, robots
-from toolkit.geometry.collision import ExactChecker, MeshChecker, exact_checker
+from toolkit.geometry.collision import FCLChecker, MeshChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot, Link
 from toolkit.geometry.workspace import MeshWorkspace, Workspace, from_mesh, generate
 from toolkit.learning import data
@@ -64,7 +64,7 @@ def test_mesh_checker_agrees_with_the_box_checker_on_the_same_boxes(name, seed):
     ws = scenario.make_workspace(np.random.default_rng(seed))
     twin = mesh_twin(ws)
     Q = scenario.robot.sample(np.random.default_rng(seed + 10), 2000)
-    boxes, mesh = ExactChecker(ws, scenario.robot).are_valid(Q), exact_checker(twin, scenario.robot).are_valid(Q)
+    boxes, mesh = FCLChecker(ws, scenario.robot).are_valid(Q), exact_checker(twin, scenario.robot).are_valid(Q)
     assert 0.2 < boxes.mean() < 0.9  # both answers occur
     np.testing.assert_array_equal(mesh, boxes)
 
@@ -77,13 +77,13 @@ def test_mesh_checker_agrees_on_configurations_grazing_the_boxes():
     Q = scenario.robot.sample(rng, 600)
     lo, hi = ws.boxes[rng.integers(len(ws.boxes), size=600)].transpose(1, 0, 2)  # (600, 3) each
     axis = rng.integers(3, size=600)
-    face = np.where(
+    face = np.where(  # 0.05: the small link's half side
         rng.random(600) < 0.5, lo[np.arange(600), axis] - 0.05, hi[np.arange(600), axis] + 0.05
-    )  # small link's half side
+    )
     Q[:, :3] = (lo + hi) / 2
     Q[np.arange(600), axis] = face + rng.choice([-1e-6, 1e-6], size=600)
     boxes, mesh = (
-        ExactChecker(ws, scenario.robot).are_valid(Q),
+        FCLChecker(ws, scenario.robot).are_valid(Q),
         exact_checker(mesh_twin(ws), scenario.robot).are_valid(Q),
     )
     np.testing.assert_array_equal(mesh, boxes)
@@ -102,7 +102,7 @@ def test_exact_checker_picks_the_mesh_checker_and_the_box_checkers_refuse_a_mesh
     twin = mesh_twin(generate("3dc", np.random.default_rng(0)))
     assert type(exact_checker(twin, robots.box_chain(1))) is MeshChecker
     with pytest.raises(ValueError, match="exact_checker"):
-        ExactChecker(twin, robots.box_chain(1))
+        FCLChecker(twin, robots.box_chain(1))
     with pytest.raises(ValueError, match="MeshWorkspace"):
         MeshChecker(generate("3dc", np.random.default_rng(0)), robots.box_chain(1))
 
@@ -208,7 +208,9 @@ def test_from_mesh_reads_a_file_and_round_trips_through_files(tmp_path):
 def test_labelled_datasets_of_mesh_workspaces_keep_their_meshes(tmp_path):
     scenario = scenarios.get("3dc7")
     rooms = [from_mesh(meshes.room(np.random.default_rng(i)), **REGION) for i in range(2)]
-    dataset = data.label_workspaces(scenario, rooms, 40, seed=0, stream="train_samples", progress=False)
+    dataset = data.label_workspaces(
+        scenario, rooms, samples_per_workspace=40, seed=0, stream="train_samples", progress=False
+    )
     for ws, Q, valid in zip(rooms, dataset.configs, dataset.valid):
         np.testing.assert_array_equal(exact_checker(ws, scenario.robot).are_valid(Q), valid)
     dataset.save(tmp_path / "rooms.npz")
@@ -239,9 +241,8 @@ def test_the_demo_room_stands_inside_the_region_and_the_committed_file_is_the_sc
     committed = trimesh.load(ROOM, force="mesh")
     ours = np.sort(np.round(room.triangles.reshape(-1, 9), 4), axis=0)
     theirs = np.sort(np.round(committed.triangles.reshape(-1, 9), 4), axis=0)
-    np.testing.assert_array_equal(
-        theirs, ours
-    )  # rebuild with: python -m toolkit.geometry.meshes tutorials/data/room.stl
+    # rebuild with: python -m toolkit.geometry.meshes tutorials/data/room.stl
+    np.testing.assert_array_equal(theirs, ours)
 
 
 def test_random_rooms_are_seeded_and_inside_the_region():

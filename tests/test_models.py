@@ -181,9 +181,9 @@ def test_local_encoding_of_angles_joints_and_links():
     # yaw pi/2: the small link (0.1 long) points along +y from the base, the big one turns by joint 2 rad about z
     centers, axes = pose[10:16].reshape(2, 3), pose[16:].reshape(2, 3)
     big = torch.tensor([-np.sin(2.0), np.cos(2.0), 0.0], dtype=torch.float32)  # x axis of the big link
-    assert torch.allclose(
+    assert torch.allclose(  # relative to the base cell's centre (5.5, 5.5, 5.5)
         centers, torch.stack([torch.tensor([0.0, 0.05, -0.25]), torch.tensor([0.0, 0.1, -0.25]) + 0.2 * big]), atol=1e-6
-    )  # relative to the base cell's centre (5.5, 5.5, 5.5)
+    )
     assert torch.allclose(axes, torch.stack([torch.tensor([0.0, 1.0, 0.0]), big]), atol=1e-6)
 
 

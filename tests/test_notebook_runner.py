@@ -1,10 +1,10 @@
-"""toolkit.teaching.notebook_runner: a clean notebook runs and its figures are counted; an error inside a widget's
+"""tools.notebook_runner: a clean notebook runs and its figures are counted; an error inside a widget's
 callback, which JupyterLab would show only in the widget, is reported."""
 
 import nbformat
 import pytest
 
-from toolkit.teaching import notebook_runner
+from tools import notebook_runner
 
 pytestmark = pytest.mark.slow  # starts kernels
 

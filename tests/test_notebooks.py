@@ -1,7 +1,7 @@
 """Every notebook runs top to bottom in quick mode (``TOOLKIT_QUICK=1``); every notebook of the repository
 (chapters, tutorials, assignment masters) is committed without outputs.
 
-Executed by :mod:`toolkit.teaching.notebook_runner` in a real kernel, as a student's JupyterLab
+Executed by :mod:`tools.notebook_runner` in a real kernel, as a student's JupyterLab
 would; trained models go to a cache folder of this test session, not the user's.
 """
 
@@ -14,10 +14,10 @@ import pytest
 ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))  # 01_... to 05_...
 COMMITTED = (
-    NOTEBOOKS
-    + sorted((ROOT / "tutorials").glob("*.ipynb"))
-    + sorted((ROOT / "tutorials" / "assignments").glob("*/*.ipynb"))
-)  # chapters, tutorials, assignment masters
+    NOTEBOOKS  # chapters
+    + sorted((ROOT / "tutorials").glob("*.ipynb"))  # tutorials
+    + sorted((ROOT / "tutorials" / "assignments").glob("*/*.ipynb"))  # assignment masters
+)
 
 
 def test_the_five_notebooks_exist():

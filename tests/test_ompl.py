@@ -11,11 +11,11 @@ import pytest
 from scipy import ndimage
 
 from toolkit import scenarios
+from toolkit.experiments.queries import make_queries
 from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace
 from toolkit.planning.local_planner import path_is_valid
 from toolkit.planning.prm import PRMOptions, plan
-from toolkit.planning.queries import make_queries
 
 ob = pytest.importorskip("ompl.base")
 og = pytest.importorskip("ompl.geometric")

@@ -86,7 +86,7 @@ def test_contraction_shows_each_models_norms_and_mean_responses():
     norms = {"lambda = 0": np.array([2.0, 3.0, 4.0]), "lambda = 1 (strong)": np.array([0.5, 0.7, 0.6])}
     shift = {"lambda = 0": np.array([[0.1, 0.3], [0.2, 0.4], [0.5, 0.7]]), "lambda = 1 (strong)": np.full((3, 2), 0.05)}
     change = {"lambda = 0": np.array([[1, 1], [3, 2], [9, 11]]), "lambda = 1 (strong)": np.zeros((3, 2))}
-    fig = plots.contraction(norms, flips, shift, change)
+    fig = plots.contraction(norms, flips=flips, latent_shift=shift, decoded_change=change)
     ax_j, ax_z, ax_x = fig.axes
     assert [t.get_text().replace("\n", " ") for t in ax_j.get_xticklabels()] == list(norms)
     medians = [

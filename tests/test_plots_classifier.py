@@ -107,7 +107,7 @@ def test_roc_points_are_fpr_and_tpr_at_each_threshold(probability, valid):
 
 def test_probability_map_shows_the_probabilities_the_boundary_and_exactly_the_mistakes(grid, probability, valid):
     threshold = 0.45
-    ax = pc.probability_map(probability, valid, grid, threshold).axes[0]
+    ax = pc.probability_map(probability, valid, grid, threshold=threshold).axes[0]
     (image,) = ax.images
     np.testing.assert_array_equal(image.get_array(), probability.T)  # origin lower: row = second DoF
     assert image.origin == "lower" and tuple(image.get_extent()) == grid.extent
@@ -137,7 +137,7 @@ def test_blocked_cells_are_the_grown_block(grid, valid):
 
 def test_probability_maps_side_by_side_each_with_its_own_threshold(grid, probability, valid):
     maps = {"paper": probability, "strong": 1 - probability}
-    fig = pc.probability_maps(maps, valid, grid, {"paper": 0.3, "strong": 0.6})
+    fig = pc.probability_maps(maps, valid, grid, thresholds={"paper": 0.3, "strong": 0.6})
     axes = [ax for ax in fig.axes if ax.images and ax.get_label() != "<colorbar>"]
     assert [ax.get_title() for ax in axes] == ["paper: P(valid), threshold 0.30", "strong: P(valid), threshold 0.60"]
     for ax, p, t in zip(axes, maps.values(), (0.3, 0.6)):
@@ -147,7 +147,7 @@ def test_probability_maps_side_by_side_each_with_its_own_threshold(grid, probabi
 
 def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, probability, valid):
     threshold = 0.55
-    ax_map, ax_counts, ax_roc = pc.threshold_view(probability, valid, grid, threshold).axes
+    ax_map, ax_counts, ax_roc = pc.threshold_view(probability, valid, grid, threshold=threshold).axes
     predicted = probability >= threshold
     np.testing.assert_array_equal(ax_map.images[0].get_array(), pc.answer_codes(predicted, valid).T)
     heights = [bar.get_height() for bar in ax_counts.patches]
@@ -181,7 +181,7 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     path = np.array([[1.0, 2.0], [5.0, 3.0], [25.0, 28.0]])
     nodes = np.array([[1.0, 1.0], [15.0, 8.0], [3.0, 4.0], [12.0, 6.0]])
     nodes_valid = np.array([True, False, True, False])
-    ax = pc.path_map(probability, valid, grid, 0.5, path, nodes, nodes_valid).axes[0]
+    ax = pc.path_map(probability, valid, grid, threshold=0.5, path=path, nodes=nodes, nodes_valid=nodes_valid).axes[0]
     lines = {line.get_label(): np.column_stack([line.get_xdata(), line.get_ydata()]) for line in ax.get_lines()}
     np.testing.assert_array_equal(lines["returned path (checked exactly)"], path)
     np.testing.assert_array_equal(lines["roadmap node in collision"], nodes[~nodes_valid])
@@ -211,12 +211,12 @@ def test_maps_refuse_arrays_of_another_shape(grid, probability, valid):
     with pytest.raises(ValueError, match="grid"):
         pc.probability_map(probability[:-1], valid, grid)
     with pytest.raises(ValueError):
-        pc.threshold_view(probability, valid.T[:, :-1], grid, 0.5)
+        pc.threshold_view(probability, valid.T[:, :-1], grid, threshold=0.5)
 
 
 def test_figures_are_never_pyplot_figures(grid, probability, valid):
     import matplotlib.pyplot as plt
 
     before = plt.get_fignums()
-    pc.threshold_view(probability, valid, grid, 0.5)
+    pc.threshold_view(probability, valid, grid, threshold=0.5)
     assert plt.get_fignums() == before

@@ -16,7 +16,7 @@ from toolkit import scenarios
 from toolkit.geometry import robots
 from toolkit.geometry.collision import (
     CollisionChecker,
-    ExactChecker,
+    FCLChecker,
     PointRobotChecker,
     SeparatingAxisChecker,
 )
@@ -197,7 +197,7 @@ def test_draw_robot_in_3d_draws_each_link_box_at_its_pose_and_the_blocks_near_it
     Q = np.array([[5.0, 5.0, 5.0, 0.3, -0.2, 0.1, 0.5, -1.0, 1.5], [2.0, 8.0, 3.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]])
     fig = Figure()
     ax = fig.add_subplot(projection="3d")
-    cspace.draw_robot(ax, robot, Q, ["C3", "C4"], "3d", clutter, margin=0.5)
+    cspace.draw_robot(ax, robot, Q, colors=["C3", "C4"], view="3d", workspace=clutter, margin=0.5)
     links = [c for c in ax.collections if c.get_gid() == "link"]
     assert len(links) == 2 * robot.n_links
     centers, rotations, half = robot.link_boxes(Q)  # (2, L, 3), (2, L, 3, 3), (L, 3)
@@ -215,9 +215,9 @@ def test_draw_robot_in_3d_draws_each_link_box_at_its_pose_and_the_blocks_near_it
 def test_draw_robot_rejects_an_unknown_view_and_a_colour_count_off_by_one():
     robot, fig = robots.point_robot(), Figure()
     with pytest.raises(ValueError, match="unknown view 'xw'"):
-        cspace.draw_robot(fig.add_subplot(), robot, [[5.0, 5.0]], ["C0"], "xw")
+        cspace.draw_robot(fig.add_subplot(), robot, [[5.0, 5.0]], colors=["C0"], view="xw")
     with pytest.raises(ValueError, match="2 colours for 1 configurations"):
-        cspace.draw_robot(fig.add_subplot(), robot, [[5.0, 5.0]], ["C0", "C1"], "xy")
+        cspace.draw_robot(fig.add_subplot(), robot, [[5.0, 5.0]], colors=["C0", "C1"], view="xy")
 
 
 # -- configuration space ---------------------------------------------------------------
@@ -235,14 +235,14 @@ def test_slice_configs_varies_two_dof_and_fixes_the_rest():
     others = [k for k in range(robot.dof) if k not in (7, 2)]
     np.testing.assert_allclose(Q[..., others], np.broadcast_to(q[others], (5, 5, len(others))))
     with pytest.raises(ValueError, match="two different"):
-        cspace.slice_configs(robot, q, (3, 3), 5)
+        cspace.slice_configs(robot, q, (3, 3), resolution=5)
 
 
 def test_cspace_image_is_dark_exactly_where_fcl_reports_collision(square_world):
     robot = robots.point_robot()
     fig = cspace.cspace_image(PointRobotChecker(square_world, robot), resolution=90)
-    _, _, Q = cspace.slice_configs(robot, robot.lower, (0, 1), 90)
-    by_fcl = ExactChecker(square_world, robot).are_valid(Q.reshape(-1, 2)).reshape(90, 90)
+    _, _, Q = cspace.slice_configs(robot, robot.lower, (0, 1), resolution=90)
+    by_fcl = FCLChecker(square_world, robot).are_valid(Q.reshape(-1, 2)).reshape(90, 90)
     image = _image(fig)  # (y, x): 1 dark
     np.testing.assert_array_equal(image, (~by_fcl).T.astype(float))
     assert 0 < image.mean() < 0.2
@@ -261,16 +261,16 @@ def test_cspace_image_grows_each_block_by_the_robots_half_width(square_world):
     assert "of this window" in fig.axes[0].get_title()
     with pytest.raises(ValueError, match="cspace_slice"):
         cspace.cspace_image(
-            ExactChecker(Workspace(np.zeros(3), np.full(3, 11.0), np.zeros((0, 2, 3))), robots.box_chain(1))
+            FCLChecker(Workspace(np.zeros(3), np.full(3, 11.0), np.zeros((0, 2, 3))), robots.box_chain(1))
         )
 
 
 def test_cspace_slice_equals_the_separating_axis_reference(clutter):
     robot = robots.box_chain(1)
-    checker = ExactChecker(clutter, robot)
+    checker = FCLChecker(clutter, robot)
     q = cspace.configuration_near_blocks(checker, np.random.default_rng(0), n=500)
     fig = cspace.cspace_slice(checker, q, joints=(5, 6), resolution=30)
-    _, _, Q = cspace.slice_configs(robot, q, (5, 6), 30)
+    _, _, Q = cspace.slice_configs(robot, q, (5, 6), resolution=30)
     by_sat = SeparatingAxisChecker(clutter, robot).are_valid(Q.reshape(-1, robot.dof)).reshape(30, 30)
     image = _image(fig)
     np.testing.assert_array_equal(image, (~by_sat).T.astype(float))
@@ -294,7 +294,7 @@ def test_a_checker_that_knows_no_workspace_is_a_clear_error():
 
 def test_configuration_near_blocks_is_the_valid_sample_closest_to_a_block(clutter):
     robot = robots.box_chain(1)
-    checker = ExactChecker(clutter, robot)
+    checker = FCLChecker(clutter, robot)
     q = cspace.configuration_near_blocks(checker, np.random.default_rng(5), n=300)
     Q = robot.sample(np.random.default_rng(5), 300)
     Q = Q[checker.are_valid(Q)]

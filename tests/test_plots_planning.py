@@ -7,9 +7,9 @@ from matplotlib.colors import to_rgba, to_rgba_array
 from matplotlib.figure import Figure
 
 from toolkit import scenarios
+from toolkit.experiments.queries import make_queries
 from toolkit.geometry.collision import exact_checker
 from toolkit.planning.prm import PlanStep, PRMOptions, plan
-from toolkit.planning.queries import make_queries
 from toolkit.plots import planning
 
 SCENARIO = scenarios.get("2ds")

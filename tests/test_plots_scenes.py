@@ -45,9 +45,9 @@ def test_the_robot_is_its_link_boxes_at_the_frame_colored_by_validity(crossing, 
     robot, workspace, _, path, valid = crossing
     drawn_robots = []
 
-    def recording(ax, robot, Q, colors, view, workspace, margin):
+    def recording(ax, robot, Q, *, colors, view, workspace, margin):
         drawn_robots.append((Q, colors, view, workspace))
-        cspace.draw_robot(ax, robot, Q, colors, view, workspace, margin)
+        cspace.draw_robot(ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin)
 
     monkeypatch.setattr(scenes, "draw_robot", recording)
     fig = scenes.path_frame(robot, path, index, workspace=workspace, valid=valid)

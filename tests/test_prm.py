@@ -1,5 +1,6 @@
 """PRM and Algorithm 1: every returned path exactly valid (also with a lying checker), roadmap, queries, CLI."""
 
+import dataclasses
 import json
 
 import numpy as np
@@ -8,10 +9,11 @@ import torch
 from threadpoolctl import threadpool_info, threadpool_limits
 
 from toolkit import cli, scenarios
+from toolkit.experiments import queries as queries_module
+from toolkit.experiments.queries import make_queries, run_queries
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.geometry.workspace import Workspace
 from toolkit.planning import local_planner, prm, query_roadmap
-from toolkit.planning import queries as queries_module
 from toolkit.planning.lazy_prm import LazyPRM
 from toolkit.planning.local_planner import (
     certify_edges,
@@ -24,8 +26,7 @@ from toolkit.planning.local_planner import (
     segment_points,
 )
 from toolkit.planning.paper_prm import PRM
-from toolkit.planning.prm import PRMOptions, plan
-from toolkit.planning.queries import make_queries, run_queries
+from toolkit.planning.prm import LazyPRMOptions, PRMOptions, plan
 from toolkit.planning.query_roadmap import QueryRoadmap
 from toolkit.planning.roadmap import Roadmap
 from toolkit.planning.sampling import SAMPLERS, make_sampler
@@ -67,22 +68,21 @@ def longest_hidden_overlap(ws, robot, path) -> float:
     )
 
 
-PAPER = dict(prm.PAPER_BASELINE)  # Algorithm 1 as the paper has it
-MODES = {  # name -> (flip fraction of the test double or None for exact, PRMOptions fields)
-    "exact": (None, {}),  # the best exact planner: lazy edges, growing rounds
-    "exact-paper": (None, PAPER),
-    "noisy-screened": (0.15, {}),
-    "noisy-paper": (0.15, PAPER),
+MODES = {  # name -> (flip fraction of the test double or None for exact, the planner's options class)
+    "exact": (None, LazyPRMOptions),  # the best exact planner: lazy edges, growing rounds
+    "exact-paper": (None, PRMOptions),  # Algorithm 1 as the paper has it
+    "noisy-screened": (0.15, LazyPRMOptions),
+    "noisy-paper": (0.15, PRMOptions),
 }
 
 
 def solve_all(scenario, queries, sampler, mode, n_samples=None):
-    flip, fields = MODES[mode]
+    flip, options_class = MODES[mode]
     results = []
     for i, q in enumerate(queries):
         exact = exact_checker(q.workspace, scenario.robot)
         checker = None if flip is None else NoisyChecker(exact, flip, seed=i)
-        options = PRMOptions(n_samples=n_samples or scenario.plan_samples, **fields)
+        options = options_class(n_samples=n_samples or scenario.plan_samples)
         results.append(
             (
                 q,
@@ -139,12 +139,12 @@ def test_3dc_paths_are_exactly_valid(scenario_name, mode):
         assert all(r.success for _, r in results)
 
 
-@pytest.mark.parametrize("fields, first_round", [(PAPER, 200), ({}, 50)])
-def test_exact_planners_never_repair_nodes_and_count_checks(fields, first_round):
+@pytest.mark.parametrize("options_class, first_round", [(PRMOptions, 200), (LazyPRMOptions, 50)])
+def test_exact_planners_never_repair_nodes_and_count_checks(options_class, first_round):
     scenario = scenarios.get("2ds")
     q = make_queries(scenario, seed=1, n_workspaces=1, per_workspace=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
-    result = plan(exact, q.start, q.goal, sampler="BS", options=PRMOptions(**fields), rng=np.random.default_rng(0))
+    result = plan(exact, q.start, q.goal, sampler="BS", options=options_class(), rng=np.random.default_rng(0))
     s = result.stats
     assert result.success and s["removed_nodes"] == 0 and s["predicted_checks"] == 0 and s["rounds"] == 1
     assert s["exact_checks"] == exact.n_checked
@@ -158,10 +158,10 @@ def test_rounds_double_from_first_samples_up_to_n_samples():
     robot = scenarios.get("2ds").robot  # the goal walled in: every round is sampled, none solves it
     walls = [[[18, 18], [28, 19]], [[18, 27], [28, 28]], [[18, 18], [19, 28]], [[27, 18], [28, 28]]]
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array(walls, dtype=float), family="2ds")
-    for fields, attempts in [
-        (dict(first_samples=10, n_samples=50), 10 + 20 + 40 + 50 + 50),
-        (dict(first_samples=None, n_samples=50), 5 * 50),
-        (dict(PAPER, first_samples=10, n_samples=50), 5 * 50),
+    for options, attempts in [
+        (LazyPRMOptions(max_rounds=5, first_samples=10, n_samples=50), 10 + 20 + 40 + 50 + 50),
+        (LazyPRMOptions(max_rounds=5, first_samples=None, n_samples=50), 5 * 50),
+        (PRMOptions(max_rounds=5, n_samples=50), 5 * 50),
     ]:  # the paper's: |S| a round
         trace = []
         result = plan(
@@ -169,7 +169,7 @@ def test_rounds_double_from_first_samples_up_to_n_samples():
             np.array([5.0, 5.0]),
             np.array([23.0, 23.0]),
             sampler="BS",
-            options=PRMOptions(max_rounds=5, **fields),
+            options=options,
             rng=np.random.default_rng(0),
             trace=trace,
         )
@@ -198,7 +198,7 @@ def test_lazy_screen_rejects_only_edges_with_a_point_in_collision(monkeypatch):
     scenario = scenarios.get("3dc7")
     q = make_queries(scenario, seed=7100, n_workspaces=1, per_workspace=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
-    options = PRMOptions(n_samples=100, first_samples=None, max_rounds=1, rebridge=0)
+    options = LazyPRMOptions(n_samples=100, first_samples=None, max_rounds=1, rebridge=0)
     query = QueryRoadmap(exact, exact, options)
     nodes = query.roadmap.add_nodes(make_sampler("BS", exact).sample(100, np.random.default_rng(0)), verified=True)
     pairs = query.roadmap.candidate_edges(nodes, options.k)
@@ -224,7 +224,7 @@ def test_the_papers_planner_checks_every_edge_exactly_as_it_is_added(flip):
             q.goal,
             sampler="BS",
             checker=checker,
-            options=PRMOptions(**PAPER),
+            options=PRMOptions(),
             rng=np.random.default_rng(i),
             trace=trace,
         )
@@ -240,12 +240,12 @@ def test_the_papers_planner_checks_every_edge_exactly_as_it_is_added(flip):
             assert result.stats["node_checks"] == result.stats["rounds"] * PRMOptions().n_samples
 
 
-def test_plan_runs_the_papers_planner_with_paper_baseline_and_the_lazy_one_without():
+def test_the_options_class_says_which_planner_runs():
     scenario = scenarios.get("3dc7")
     q = make_queries(scenario, seed=0, n_workspaces=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
     runs = {}
-    for name, options, planner in [("paper", PRMOptions(**PAPER), PRM), ("lazy", PRMOptions(), LazyPRM)]:
+    for name, options, planner in [("paper", PRMOptions(), PRM), ("lazy", LazyPRMOptions(), LazyPRM)]:
         by_plan = plan(exact, q.start, q.goal, sampler="G", options=options, rng=np.random.default_rng(3))
         by_class = planner(exact, options=options, sampler="G").solve(q.start, q.goal, rng=np.random.default_rng(3))
         np.testing.assert_array_equal(by_plan.path, by_class.path)
@@ -256,27 +256,33 @@ def test_plan_runs_the_papers_planner_with_paper_baseline_and_the_lazy_one_witho
     assert np.isfinite(paper.roadmap.edge_checked_at).all()  # every edge checked exactly ...
     assert np.isinf(lazy.roadmap.edge_checked_at).any()  # ... against edges never confirmed
     assert paper.stats["exact_checks"] > 5 * lazy.stats["exact_checks"]
-    with pytest.raises(ValueError, match=r"LazyPRM runs planner 'lazy', but options\.planner is 'paper'"):
-        LazyPRM(exact, options=PRMOptions(**PAPER))
-    assert PRM(exact).options.planner == "paper" and LazyPRM(exact).options.planner == "lazy"
+    with pytest.raises(TypeError, match=r"LazyPRM reads LazyPRMOptions, got PRMOptions"):
+        LazyPRM(exact, options=PRMOptions())
+    assert type(PRM(exact).options) is PRMOptions and type(LazyPRM(exact).options) is LazyPRMOptions
+    # the trap of the single options class: the paper's planner with its own options, made by hand
+    assert PRM(exact, options=PRMOptions(n_samples=100)).options.n_samples == 100
+    default = plan(exact, q.start, q.goal, sampler="G", rng=np.random.default_rng(3))  # no options: the lazy PRM
+    np.testing.assert_array_equal(default.roadmap.edges, lazy.roadmap.edges)
 
 
-def test_the_paper_preset_plans_with_the_papers_baseline_and_the_strong_one_with_the_best_exact_planner():
+def test_the_paper_preset_plans_with_the_papers_planner_and_the_strong_one_with_the_best_exact_planner():
     from toolkit.learning import presets
 
     scenario = scenarios.get("3dc7")
     best = queries_module.default_options(scenario)  # no checker: the best exact planner
-    assert best.planner == "lazy" and best.first_samples == PRMOptions().first_samples is not None
-    paper = queries_module.default_options(scenario, **presets.get("paper").planner_options())
-    assert paper.planner == "paper" and paper.auxiliary == "exact"  # rounds of |S|, exact edges, exact later rounds
+    assert type(best) is LazyPRMOptions and best.first_samples == LazyPRMOptions().first_samples is not None
+    paper = queries_module.planner_options(scenario, presets.get("paper"), predicted=True)
+    assert type(paper) is PRMOptions and paper.auxiliary == "exact"  # rounds of |S|, exact edges, exact later rounds
     assert paper.n_samples == scenario.plan_samples == 400
-    strong = queries_module.default_options(scenario, **presets.get("strong").planner_options())
-    assert (strong.planner, strong.first_samples, strong.lazy_screen) == (
-        best.planner,
-        best.first_samples,
-        best.lazy_screen,
-    )
-    assert strong.screen_edges
+    strong = queries_module.planner_options(scenario, presets.get("strong"), predicted=True)
+    assert type(strong) is LazyPRMOptions
+    assert (strong.first_samples, strong.lazy_screen) == (best.first_samples, best.lazy_screen)
+    assert strong.screen_edges and strong.auxiliary == "confirmed"
+    own = dataclasses.replace(presets.get("strong"), name="my-recipe")  # not paired: the lazy PRM, samples only
+    mine = queries_module.planner_options(scenario, own, predicted=True)
+    assert type(mine) is LazyPRMOptions and not mine.screen_edges and mine.auxiliary == "exact"
+    with pytest.raises(ValueError, match=r"unknown planner option\(s\) \['screen_edges'\]; PRMOptions has"):
+        queries_module.planner_options(scenario, presets.get("paper"), screen_edges=False)
 
 
 @pytest.mark.parametrize(
@@ -291,14 +297,16 @@ def test_the_paper_preset_plans_with_the_papers_baseline_and_the_strong_one_with
         (dict(auxiliary="predicted"), ["predicted"] * 4),
     ],
 )
-@pytest.mark.parametrize("planner_name", ["lazy", "paper"])  # both planners read PRMOptions.auxiliary
-def test_rounds_after_the_first_sample_as_options_auxiliary_says(options, sources, planner_name):
+@pytest.mark.parametrize("planner", [LazyPRM, PRM])  # both planners read PRMOptions.auxiliary
+def test_rounds_after_the_first_sample_as_options_auxiliary_says(options, sources, planner):
     scenario = scenarios.get("2ds")
     q = make_queries(scenario, seed=0, n_workspaces=1, per_workspace=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
     lying = NoisyChecker(exact, 0.3, seed=0)
-    options = PRMOptions(planner=planner_name, n_samples=200, first_samples=None, **options)
-    planner = prm.PLANNER_CLASSES[planner_name](exact, lying, options)
+    options = planner.Options(n_samples=200, **options)  # Algorithm 1's rounds of |S| (the lazy PRM: first_samples)
+    if planner is LazyPRM:
+        options = dataclasses.replace(options, first_samples=None)
+    planner = planner(exact, lying, options=options)
     query = QueryRoadmap(exact, lying, options)
     rng = np.random.default_rng(0)
     for round_, source in enumerate(sources, start=1):
@@ -327,7 +335,7 @@ def test_same_seed_same_result():
             q.goal,
             sampler="G",
             checker=NoisyChecker(exact, 0.1, 7),
-            options=PRMOptions(n_samples=150),
+            options=LazyPRMOptions(n_samples=150),
             rng=np.random.default_rng(4),
         )
         for _ in range(2)
@@ -350,7 +358,7 @@ def traced_2ds_queries(flip, n_queries=6):
             q.goal,
             sampler="BS",
             checker=checker,
-            options=PRMOptions(n_samples=150),
+            options=LazyPRMOptions(n_samples=150),
             rng=np.random.default_rng(i),
             trace=trace,
         )
@@ -381,7 +389,7 @@ def test_tracing_changes_nothing_but_records():
             q.goal,
             sampler="OB",
             checker=NoisyChecker(exact, 0.2, 3),
-            options=PRMOptions(n_samples=150),
+            options=LazyPRMOptions(n_samples=150),
             rng=np.random.default_rng(5),
             trace=trace,
         )
@@ -433,16 +441,20 @@ def test_bad_input_gives_clear_errors():
         (dict(k=2.5), "k must"),
         (dict(screen_spacing=0), "screen_spacing must be positive"),
         (dict(resolution=np.nan), "resolution must be positive"),
-        (dict(screen_reject=1.5), "screen_reject must lie in"),
+        (dict(screen_reject=1.5), r"screen_reject must be in \[0, 1\]"),
         (dict(screen_penalty=-1), "screen_penalty must be non-negative"),
-        (dict(auxiliary="sometimes"), "auxiliary must be one of"),
-        (dict(planner="rrt"), "planner must be one of"),
+        (dict(auxiliary="sometimes"), "auxiliary must be one of exact, confirmed, predicted, got 'sometimes'"),
         (dict(exact_every=0), "exact_every must be a positive integer"),
         (dict(rebridge=-1), "rebridge must be a non-negative integer"),
         (dict(rebridge=1.5), "rebridge must be"),
+        (dict(first_samples=0), "first_samples must be a positive integer"),
     ]:
-        with pytest.raises(ValueError, match=f"PRMOptions.{match}"):
-            PRMOptions(**bad)
+        with pytest.raises(ValueError, match=f"LazyPRMOptions.{match}"):
+            LazyPRMOptions(**bad)
+    with pytest.raises(ValueError, match=r"PRMOptions\.k must"):
+        PRMOptions(k=0)
+    with pytest.raises(TypeError, match="screen_spacing"):  # the lazy planner's field: not Algorithm 1's
+        PRMOptions(screen_spacing=4.0)
 
 
 # -- local planner and roadmap ----------------------------------------------------------------
@@ -573,7 +585,7 @@ def test_screened_path_edges_are_confirmed_coarse_then_fine_each_once(monkeypatc
             q.goal,
             sampler="BS",
             checker=NoisyChecker(exact, 0.15, seed=i),
-            options=PRMOptions(screen_edges=True),
+            options=LazyPRMOptions(screen_edges=True),
             rng=np.random.default_rng(i),
         )
         assert result.success
@@ -614,7 +626,7 @@ def test_screened_edges_are_refuted_where_screening_saw_them_fail_and_only_when_
             q.goal,
             sampler="BT",
             checker=NoisyChecker(exact, 0.1, seed=i),
-            options=PRMOptions(n_samples=scenario.plan_samples),
+            options=LazyPRMOptions(n_samples=scenario.plan_samples),
             rng=np.random.default_rng(i),
         )
         assert result.success
@@ -769,7 +781,7 @@ def test_the_planner_decides_no_pair_twice(monkeypatch):
                 q.goal,
                 sampler="BT",
                 checker=NoisyChecker(exact, 0.1, seed=i),
-                options=PRMOptions(n_samples=scenario.plan_samples, rebridge=rebridge, first_samples=None),
+                options=LazyPRMOptions(n_samples=scenario.plan_samples, rebridge=rebridge, first_samples=None),
                 rng=np.random.default_rng(i),
             )
             assert result.success
@@ -839,9 +851,9 @@ def test_run_interleaved_takes_turns_and_answers_as_separate_runs(monkeypatch):
     separate = {"without": run_queries(scenario, queries, "OB"), "with": run_queries(scenario, queries, "OB", factory)}
     order, solve = [], queries_module.solve_query
 
-    def recording(scenario, query, sampler, checker, options, seed, **exact):
-        order.append("with" if checker is not None else "without")
-        return solve(scenario, query, sampler, checker, options, seed, **exact)
+    def recording(scenario, query, sampler, **settings):
+        order.append("with" if settings["checker"] is not None else "without")
+        return solve(scenario, query, sampler, **settings)
 
     monkeypatch.setattr(queries_module, "solve_query", recording)
     runs = queries_module.run_interleaved(scenario, queries, "OB", {"without": None, "with": factory})

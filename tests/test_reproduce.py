@@ -1,20 +1,20 @@
 """`toolkit reproduce --quick` for every scenario, checked against the contract of DESIGN.md."""
 
 import json
-import shutil
 from types import SimpleNamespace
 
 import numpy as np
 import pytest
 
 from toolkit import cli, scenarios
-from toolkit.experiments import paper_numbers, tables
+from toolkit.experiments import paper_numbers, queries, tables
 from toolkit.experiments import reproduce as experiments
 from toolkit.experiments.config import BASELINES, RunConfig
 from toolkit.experiments.stages import Stages
 from toolkit.geometry.collision import FCLChecker, exact_checker
 from toolkit.learning import presets
-from toolkit.planning import queries
+from toolkit.planning.options import LazyPRMOptions, PRMOptions
+from toolkit.planning.sampling import PAPER_SAMPLERS
 
 RATE_KEYS = ("success_rate", "path_valid_rate")
 TIME_KEYS = ("sampling_s", "total_s")
@@ -29,7 +29,7 @@ def check_contract(results: dict, name: str) -> None:
         for key in ("acc", "tpr", "tnr", "always_valid"):
             assert 0.0 <= results["mlp"][split][key] <= 1.0
     assert results["mlp"]["unseen"]["always_valid"] == 0.5  # balanced
-    assert set(results["planning"]) == set(paper_numbers.SAMPLERS)
+    assert set(results["planning"]) == set(PAPER_SAMPLERS)
     assert results["baseline"] == "paper"  # the paper preset's Table 3: Algorithm 1 without prediction
     for sampler, modes in results["planning"].items():
         assert set(modes) == {"without", "with", "baseline"}
@@ -40,7 +40,7 @@ def check_contract(results: dict, name: str) -> None:
                 assert summary[key] > 0.0, (sampler, mode, key)
             assert summary["path_valid_rate"] == 1.0, f"{sampler} {mode}: a returned path failed the exact re-check"
     # the exact planner solves these short quick queries
-    assert np.mean([results["planning"][s]["without"]["success_rate"] for s in paper_numbers.SAMPLERS]) > 0.5
+    assert np.mean([results["planning"][s]["without"]["success_rate"] for s in PAPER_SAMPLERS]) > 0.5
     throughput = results["throughput"]
     assert throughput["exact_cfg_per_s"] > 0 and throughput["learned_cfg_per_s"] > 0 and throughput["fcl_cfg_per_s"] > 0
 
@@ -144,20 +144,18 @@ def _with_planning(run: dict) -> dict:
     return dict(
         run,
         cae={"seen_acc": 1.0, "unseen_acc": 0.9, "seen_all_free": 0.8, "unseen_all_free": 0.8},
-        planning={s: dict.fromkeys(tables.MODES, summary) for s in paper_numbers.SAMPLERS},
-        improvement={k: dict.fromkeys(paper_numbers.SAMPLERS, 0.0) for k in ("sampling", "total")},
+        planning={s: dict.fromkeys(tables.MODES, summary) for s in PAPER_SAMPLERS},
+        improvement={k: dict.fromkeys(PAPER_SAMPLERS, 0.0) for k in ("sampling", "total")},
     )
 
 
 def test_improvement_is_the_papers_table_3_measure():
-    planning = {s: {"without": {"total_s": 2.0}, "with": {"total_s": 1.5}} for s in paper_numbers.SAMPLERS}
-    assert experiments.improvement(planning, "total_s") == dict.fromkeys(paper_numbers.SAMPLERS, 0.25)
+    planning = {s: {"without": {"total_s": 2.0}, "with": {"total_s": 1.5}} for s in PAPER_SAMPLERS}
+    assert experiments.improvement(planning, "total_s") == dict.fromkeys(PAPER_SAMPLERS, 0.25)
 
 
 @pytest.mark.parametrize("preset, screened", [("paper", False), ("strong", True)])
-def test_planning_with_prediction_follows_the_presets_edge_rule(
-    preset, screened, monkeypatch, tmp_path, checkpoint_2ds
-):
+def test_planning_with_prediction_follows_the_presets_edge_rule(preset, screened, monkeypatch, tmp_path):
     """``paper``: Algorithm 1 as published (edges checked exactly, later rounds exact); ``strong``: learned edge
     screening, later rounds confirmed predictions and exact in turn. Without prediction: the best exact planner
     (lazy) with the default exact checker; the paper preset's Table 3 baseline, Algorithm 1, in the same turns."""
@@ -167,25 +165,25 @@ def test_planning_with_prediction_follows_the_presets_edge_rule(
         with_, without = modes["with"], modes["without"]
         assert with_.options.auxiliary == ("confirmed" if screened else "exact")
         assert with_.checker is not None and without.checker is None
-        assert without.options.planner == "lazy" and without.exact is exact_checker
-        assert with_.options.planner == presets.get(preset).planner and with_.exact is exact_checker
+        assert type(without.options) is LazyPRMOptions and without.exact is exact_checker
+        paired = {"paper": PRMOptions, "strong": LazyPRMOptions}[preset]
+        assert type(with_.options) is paired and with_.exact is exact_checker
         baseline = {"paper": ["baseline"], "strong": []}[preset]
         assert list(modes) == ["without", "with", *baseline]  # in turns, one run
         if baseline:
-            assert modes["baseline"].options.planner == "paper" and modes["baseline"].checker is None
+            assert type(modes["baseline"].options) is PRMOptions and modes["baseline"].checker is None
             assert modes["baseline"].exact is exact_checker  # Algorithm 1 with the compiled checker
-        calls.append((sampler, with_.options.screen_edges))
+        calls.append((sampler, getattr(with_.options, "screen_edges", False)))
         return {mode: ([], {"sampling_s": 1.0, "total_s": 1.0}) for mode in modes}
 
     monkeypatch.setattr(experiments.queries, "run_interleaved", fake_run)
-    models = SimpleNamespace(preset=presets.get(preset))
+    models = SimpleNamespace(preset=presets.get(preset))  # the planning stage plans with the models it is given
     stages = Stages(tmp_path, {"scenario": "2ds"}, progress=False)
-    shutil.copytree(checkpoint_2ds, stages.cache / "checkpoint")
     config = RunConfig.create("2ds", preset, quick=True, workers=1, progress=False)
     planning = experiments.planning_stage(stages, config, models)
-    assert sorted(s for s, _ in calls) == sorted(paper_numbers.SAMPLERS)
+    assert sorted(s for s, _ in calls) == sorted(PAPER_SAMPLERS)
     assert {screen for _, screen in calls} == {screened}
-    assert set(planning) == set(paper_numbers.SAMPLERS)
+    assert set(planning) == set(PAPER_SAMPLERS)
     assert set(planning["BS"]) == {"without", "with"} | ({"baseline"} if preset == "paper" else set())
 
 
@@ -202,10 +200,10 @@ def test_table_3s_baseline_is_the_recipes_planner_unless_chosen(preset, chosen, 
     config = RunConfig.create("2ds", preset, quick=True, progress=False, baseline=chosen)
     assert config.baseline == baseline and config.settings()["baseline"] == baseline
     modes = experiments.planning_modes(config, SimpleNamespace(preset=config.preset))
-    assert modes["without"].options.planner == "lazy"  # always the best exact planner
+    assert type(modes["without"].options) is LazyPRMOptions  # always the best exact planner
     assert ("baseline" in modes) == (exact is not None)
     if exact is not None:
-        assert modes["baseline"].exact is exact and modes["baseline"].options.planner == "paper"
+        assert modes["baseline"].exact is exact and type(modes["baseline"].options) is PRMOptions
     with pytest.raises(ValueError, match="unknown baseline 'eager'; choose one of best, paper, paper-fcl"):
         RunConfig.create("2ds", preset, baseline="eager")
 
@@ -218,7 +216,7 @@ def test_reproduce_offers_the_baselines(capsys, tmp_path):
 
 def test_each_table_says_what_without_prediction_is():
     run = _with_planning({"scenario": "2ds", "threshold": 0.5, "mlp": _MLP, "baseline": "paper-fcl"})
-    run["planning"] = {s: dict(run["planning"][s], baseline=_summary(total=4.0)) for s in paper_numbers.SAMPLERS}
+    run["planning"] = {s: dict(run["planning"][s], baseline=_summary(total=4.0)) for s in PAPER_SAMPLERS}
     text = tables.tables_markdown(dict(run, preset="paper", quick=True, seed=0, **_COSTS))
     table3 = text.split("## Table 3")[1].split("## Times behind")[0]
     assert f"*Without prediction*: {BASELINES['paper-fcl']}." in table3
@@ -229,17 +227,17 @@ def test_each_table_says_what_without_prediction_is():
     medians = text.split("## Time with / without prediction, medians")[1].split("## Checker")[0]
     assert f"*Without prediction*: {BASELINES['best']}." in medians  # always the strongest
     assert "| 2ds | 1.00 | 1.00 | 1.00 | 1.00 | 1.00 | 1.00 | 1.00 | 1.00 |" in medians
-    assert experiments.improvement(run["planning"], "total_s") == dict.fromkeys(paper_numbers.SAMPLERS, 0.75)
+    assert experiments.improvement(run["planning"], "total_s") == dict.fromkeys(PAPER_SAMPLERS, 0.75)
     assert "| exact cfg/s | FCL cfg/s | learned cfg/s |" in text and "| 2ds | 4 | 2 | 1 | 0.25 |" in text
 
 
 def test_stage_times_add_up_the_planned_samplers_stages_only():
     seconds = {"data": 1.0, "models": 2.0, "planning_MA": 50.0}  # a sampler this run did not plan
-    seconds.update({f"planning_{s}": 3.0 for s in paper_numbers.SAMPLERS})
+    seconds.update({f"planning_{s}": 3.0 for s in PAPER_SAMPLERS})
     run = {
         "scenario": "2ds",
         "stage_seconds": seconds,
-        "planning": {s: {} for s in paper_numbers.SAMPLERS},
+        "planning": {s: {} for s in PAPER_SAMPLERS},
         "throughput": {"exact_cfg_per_s": 2.0, "learned_cfg_per_s": 1.0, "ratio": 0.5},
     }
     row = tables.run_costs([run])[-1]
@@ -250,14 +248,14 @@ def test_a_planning_mode_brings_its_own_exact_checker_and_options():
     """``queries.Mode``, what the baseline runs on: the paper-fcl baseline's FCL checker checks its edges, and its
     options (here one round of Algorithm 1) are its own while the other mode plans with the run's."""
     scenario = scenarios.get("2ds")
-    query_set = queries.make_queries(scenario, 0, 1, 1)
+    query_set = queries.make_queries(scenario, seed=0, n_workspaces=1, per_workspace=1)
     made = []
 
     def fcl(ws, robot):
         made.append(FCLChecker(ws, robot))
         return made[-1]
 
-    eager = queries.default_options(scenario, None, planner="paper", max_rounds=1)
+    eager = PRMOptions(n_samples=scenario.plan_samples, max_rounds=1)  # Algorithm 1, one round
     runs = queries.run_interleaved(
         scenario, query_set, "BS", {"best": None, "paper-fcl": queries.Mode(exact=fcl, options=eager)}
     )

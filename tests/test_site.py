@@ -1,4 +1,4 @@
-"""The course website (``make site``, :mod:`toolkit.teaching.site`): built once in quick mode, then read as a
+"""The course website (``make site``, :mod:`tools.site`): built once in quick mode, then read as a
 student's browser reads it.
 
 The module's build executes every chapter and tutorial in quick mode with this session's model cache, renders
@@ -27,9 +27,10 @@ import nbformat
 import pytest
 from mkdocs.structure.files import File, Files
 
-from toolkit.teaching import grading, handout, site_hooks
-from toolkit.teaching.site import LIVE_ONLY_IN_JUPYTERLAB, Site, build_site, modules, static_widgets
+from toolkit.teaching import grading
 from toolkit.viewer import browser as viewer_browser
+from tools import handout, site_hooks
+from tools.site import LIVE_ONLY_IN_JUPYTERLAB, Site, build_site, modules, static_widgets
 
 ROOT = Path(__file__).resolve().parents[1]
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))

@@ -2,7 +2,7 @@
 
 import pytest
 
-from toolkit.experiments.paper_numbers import SAMPLERS
+from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.teaching import recorded
 
 RESULTS = """# Results
@@ -77,8 +77,8 @@ def test_the_projects_results_hold_the_tables_the_notebooks_read():
         assert set(medians) == {"2ds", "3dc7", "3dc9", "3do"}
         for kinds in medians.values():
             assert {kind: set(ratios) for kind, ratios in kinds.items()} == {
-                "sampling": set(SAMPLERS),
-                "total": set(SAMPLERS),
+                "sampling": set(PAPER_SAMPLERS),
+                "total": set(PAPER_SAMPLERS),
             }
             assert all(0 < r < 100 for ratios in kinds.values() for r in ratios.values())
     mlp = recorded.table("paper", "MLP accuracy")["3dc7"]

@@ -12,7 +12,6 @@ from toolkit import cli, scenarios
 from toolkit.experiments import pipeline
 from toolkit.experiments.config import QUICK, RunConfig
 from toolkit.learning import checkpoints, data, metrics, presets, training
-from toolkit.learning.models import build_predictor
 
 SCENARIO_2DS = scenarios.get("2ds")
 
@@ -100,7 +99,7 @@ def test_strong_mlp_does_not_wait_for_a_cae_it_never_asks(quick_2ds):
     fast = training.train_models(SCENARIO_2DS, TINY, splits, 0, progress=False, device="cpu")
     asked = training.train_models(SCENARIO_2DS, TINY, splits, 0, progress=False, device="cpu", cae=True)
     torch.manual_seed(0)
-    initial = build_predictor(scenarios.get("2ds"), TINY.encoding, TINY.mlp_hidden, TINY.dropout, TINY.latent_input)
+    initial = TINY.build_predictor(scenarios.get("2ds"))
     for name, weight in initial.cae.state_dict().items():
         assert torch.equal(fast.predictor.cae.state_dict()[name], weight)
     assert not torch.equal(asked.predictor.cae.encoder[0].weight, initial.cae.encoder[0].weight)
@@ -113,9 +112,8 @@ def test_strong_mlp_does_not_wait_for_a_cae_it_never_asks(quick_2ds):
         "unseen_all_free",
     }
     paper = replace(QUICK.shrink(presets.get("paper")), cae_epochs=1, mlp_epochs=2)
-    assert (
-        "cae" in training.train_models(SCENARIO_2DS, paper, splits, 0, progress=False, device="cpu").history
-    )  # z is used
+    trained = training.train_models(SCENARIO_2DS, paper, splits, 0, progress=False, device="cpu")
+    assert "cae" in trained.history  # z is used
 
 
 def test_training_split_of_another_scenario(quick_2ds):
@@ -224,8 +222,8 @@ def test_strong_cae_follows_the_scenarios_caps(name, lr, batch, monkeypatch):
     monkeypatch.setattr(
         training,
         "fit",
-        lambda params, optimizer, rate, epochs, *a, **k: seen.update(
-            lr=rate, batch=max(len(b) for e in epochs for b in e)
+        lambda params, epochs, loss_of, **settings: seen.update(
+            lr=settings["lr"], batch=max(len(b) for e in epochs for b in e)
         ),
     )
     s, stand_in = scenarios.get(name), SimpleNamespace(cae=torch.nn.Linear(1, 1))  # the 3DO CAE: 147M parameters
@@ -234,9 +232,9 @@ def test_strong_cae_follows_the_scenarios_caps(name, lr, batch, monkeypatch):
         torch.zeros(2000, 1),
         presets.get("strong"),
         torch.Generator(),
-        False,
-        s.cae_max_steps,
-        s.cae_max_batch,
-        s.cae_max_lr,
+        progress=False,
+        max_steps=s.cae_max_steps,
+        max_batch=s.cae_max_batch,
+        max_lr=s.cae_max_lr,
     )
     assert seen == {"lr": lr, "batch": batch}

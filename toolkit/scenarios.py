@@ -17,6 +17,7 @@ from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.util import registry
 
+# What a seed's random numbers are drawn for, one stream each.
 STREAMS = {
     "seen": 0,
     "unseen": 1,
@@ -26,7 +27,7 @@ STREAMS = {
     "unseen_samples": 5,
     "unseen_uniform": 6,
     "cae_grids": 7,
-}  # what a seed's random numbers are drawn for, one stream each
+}
 
 
 def stream_rng(seed: int, stream: str, index: int) -> np.random.Generator:
@@ -85,71 +86,35 @@ MLP_3D = (50, 40, 30, 20, 10, 5)
 CAE_3DC = (1000, 800, 600, 400, 200, 100, 50)
 
 
+# The table: one scenario a block, its fields in the dataclass's order. The 3D clutter scenarios differ
+# only in their robot; clutter() holds what they share.
+# fmt: off
 def clutter(name: str, title: str, robot: BoxRobot) -> Scenario:
     """A 3D clutter scenario (3DC): the paper's counts and sizes, the same for both box chains (§IV-A, §IV-B)."""
-    return Scenario(
-        name,
-        title,
-        "3dc",
-        robot,
-        (11, 11, 11),
-        n_seen=50,
-        n_seen_test=30,
-        n_unseen=10,
-        samples_per_workspace=200,
-        cae_hidden=CAE_3DC,
-        mlp_hidden=MLP_3D,
-        plan_samples=400,
-        query_workspaces=100,
-        queries_per_workspace=1,
-        cae_max_lr=1e-4,
-    )  # 2000 grids at 1e-3: the CAE diverges (docs/fidelity.md)
+    return Scenario(name, title, "3dc", robot, (11, 11, 11),
+                    n_seen=50, n_seen_test=30, n_unseen=10, samples_per_workspace=200,
+                    cae_hidden=CAE_3DC, mlp_hidden=MLP_3D,
+                    plan_samples=400, query_workspaces=100, queries_per_workspace=1,
+                    cae_max_lr=1e-4)  # at 1e-3 the CAE diverges on 2000 grids (docs/fidelity.md)
 
 
-SCENARIOS: dict[str, Scenario] = {
-    s.name: s
-    for s in [
-        Scenario(
-            "2ds",
-            "2D simple, point robot",
-            "2ds",
-            robots.point_robot(),
-            (31, 31),
-            n_seen=30,
-            n_seen_test=30,
-            n_unseen=10,
-            samples_per_workspace=100,
-            cae_hidden=(512, 256, 128, 64, 32, 12),
-            mlp_hidden=(6, 4),
-            plan_samples=200,
-            query_workspaces=10,
-            queries_per_workspace=10,
-        ),
-        Scenario(
-            "3do",
-            "3D office, youBot-like 8-DoF",
-            "3do",
-            robots.youbot(),
-            (41, 41, 6),
-            n_seen=100,
-            n_seen_test=100,
-            n_unseen=20,
-            samples_per_workspace=200,
-            cae_hidden=(5043, 3125, 1600, 800, 400, 200, 100, 50),
-            mlp_hidden=MLP_3D,
-            plan_samples=2000,
-            query_workspaces=10,
-            queries_per_workspace=10,
-            plan_resolution=0.1,  # half the thinnest link (0.03) would make every query far slower, and the
-            #   office's blocks are >= 1 thick (docs/design.md, "Local planner resolution")
-            cae_max_steps=300,
-            cae_max_batch=10,  # 147M parameters: each step is slow (docs/fidelity.md §3)
-            cae_max_lr=1e-4,
-        ),  # at 1e-3 its CAE diverges
-        clutter("3dc7", "3D clutter, 7-DoF box chain", robots.box_chain(1)),
-        clutter("3dc9", "3D clutter, 9-DoF box chain", robots.box_chain(3)),
-    ]
-}
+SCENARIOS: dict[str, Scenario] = {s.name: s for s in [
+    Scenario("2ds", "2D simple, point robot",       "2ds", robots.point_robot(), (31, 31),
+             n_seen=30,  n_seen_test=30,  n_unseen=10, samples_per_workspace=100,
+             cae_hidden=(512, 256, 128, 64, 32, 12),                mlp_hidden=(6, 4),
+             plan_samples=200,  query_workspaces=10,  queries_per_workspace=10),
+    Scenario("3do", "3D office, youBot-like 8-DoF", "3do", robots.youbot(),      (41, 41, 6),
+             n_seen=100, n_seen_test=100, n_unseen=20, samples_per_workspace=200,
+             cae_hidden=(5043, 3125, 1600, 800, 400, 200, 100, 50), mlp_hidden=MLP_3D,
+             plan_samples=2000, query_workspaces=10,  queries_per_workspace=10,
+             plan_resolution=0.1,  # half the thinnest link (0.03) would make every query far slower, and
+                                   # the office's blocks are >= 1 thick (docs/design.md, "Local planner resolution")
+             cae_max_steps=300, cae_max_batch=10,  # 147M parameters: each step is slow (docs/fidelity.md §3)
+             cae_max_lr=1e-4),                     # at 1e-3 its CAE diverges
+    clutter("3dc7", "3D clutter, 7-DoF box chain", robots.box_chain(1)),
+    clutter("3dc9", "3D clutter, 9-DoF box chain", robots.box_chain(3)),
+]}
+# fmt: on
 
 
 def register(scenario: Scenario, *, replace: bool = False) -> Scenario:

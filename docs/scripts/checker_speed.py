@@ -18,7 +18,7 @@ import time
 import numpy as np
 
 from toolkit import scenarios
-from toolkit.collision import CompiledChecker, FCLChecker, PointRobotChecker
+from toolkit.geometry.collision import CompiledChecker, FCLChecker, PointRobotChecker
 
 
 def rate(checker, Q) -> float:

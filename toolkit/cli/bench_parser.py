@@ -8,7 +8,7 @@ from __future__ import annotations
 import argparse
 
 from toolkit.cli.arguments import SCENARIO_HELP, int_in, planner_option, preset, sampler_list, scenario, seed
-from toolkit.experiments import paper_numbers
+from toolkit.planning import sampling
 
 CROSSOVER_SCENARIO = "3dc9"  # --crossover without --scenario: the paper's dearest clutter check
 
@@ -38,8 +38,8 @@ def bench_options(cmd: argparse.ArgumentParser) -> None:
         action="append",
         default=[],
         metavar="NAME=VALUE",
-        help="with --checkpoint: a planner setting (a PRMOptions field in toolkit/planning/options.py) "
-        "for both runs, e.g. rebridge=0; repeat for several",
+        help="with --checkpoint: a planner setting (a field of PRMOptions or LazyPRMOptions in "
+        "toolkit/planning/options.py) for both runs where their planner reads it, e.g. rebridge=0; repeat for several",
     )
 
 
@@ -68,7 +68,7 @@ def bench_planning_options(cmd: argparse.ArgumentParser) -> None:
     cmd.add_argument(
         "--samplers",
         type=sampler_list,
-        default=paper_numbers.SAMPLERS,
+        default=sampling.PAPER_SAMPLERS,
         metavar="LIST",
         help="with --checkpoint: comma-separated samplers to plan with, e.g. BT,OB (default: the paper's four)",
     )

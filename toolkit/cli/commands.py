@@ -33,17 +33,19 @@ def _config(args: argparse.Namespace, scenario: str, **settings) -> RunConfig:
 
 def cmd_bench(args: argparse.Namespace) -> int:
     from toolkit.experiments import bench
-    from toolkit.learning import checkpoints
+    from toolkit.learning import checkpoints, presets
 
     if args.crossover:
         return _bench_crossover(args)
     if args.scenario is None:
         raise ValueError("--scenario is needed (but with --crossover): one of the scenarios in `toolkit --help`")
     scenario = scenarios.get(args.scenario)
-    models = checkpoints.load_models(args.checkpoint, scenario.name) if args.checkpoint else None
+    models = checkpoints.load_models(args.checkpoint, scenario) if args.checkpoint else None
     if args.vs_ompl:
         try:
-            table = bench.versus_ompl(scenario, args.queries, args.seed, models, args.ompl_seconds)
+            table = bench.versus_ompl(
+                scenario, n_queries=args.queries, seed=args.seed, models=models, ompl_seconds=args.ompl_seconds
+            )
         except ImportError as missing:  # ompl is an optional extra
             raise ValueError(str(missing)) from None
         print(
@@ -52,14 +54,18 @@ def cmd_bench(args: argparse.Namespace) -> int:
             else bench.versus_ompl_markdown(scenario, table)
         )
         return 0
-    result = {
-        "scenario": scenario.name,
-        **bench.throughput(scenario, args.preset, args.batch, seed=args.seed, models=models),
-    }
+    timed = models or bench.untrained_models(scenario, presets.get(args.preset), seed=args.seed)
+    result = {"scenario": scenario.name, **bench.throughput(scenario, timed, batch=args.batch, seed=args.seed)}
     result["edges"] = bench.edge_checks(scenario, seed=args.seed)
     if models is not None:
         result["planning"] = bench.planning_ratios(
-            scenario, models, args.workspaces, args.pairs, args.seed, args.samplers, dict(args.option)
+            scenario,
+            models,
+            n_workspaces=args.workspaces,
+            per_workspace=args.pairs,
+            seed=args.seed,
+            samplers=args.samplers,
+            overrides=dict(args.option),
         )
         result["planning_options"] = dict(args.option)
     print(json.dumps(result) if args.json else "\n".join(f"{k}: {v}" for k, v in result.items()))
@@ -71,11 +77,12 @@ def _bench_crossover(args: argparse.Namespace) -> int:
     from toolkit import plots
     from toolkit.cli.bench_parser import CROSSOVER_SCENARIO
     from toolkit.experiments import crossover
+    from toolkit.learning import presets
     from toolkit.util import outputs
 
     out = outputs.writable_folder(args.out, "--out") if args.out else None  # before minutes of timing
     scenario = scenarios.get(args.scenario or CROSSOVER_SCENARIO)
-    results = crossover.crossover(scenario, args.preset, args.seed, args.quick, args.variables)
+    results = crossover.crossover(scenario, presets.get(args.preset), args.seed, args.quick, variables=args.variables)
     if out is not None:
         outputs.write_json(out / "crossover.json", results)
         plots.crossover(results).savefig(out / "crossover.png", dpi=110)
@@ -96,18 +103,18 @@ def cmd_train(args: argparse.Namespace) -> int:
 
 
 def cmd_plan(args: argparse.Namespace) -> int:
-    from toolkit.planning import queries
+    from toolkit.experiments import queries
 
     if args.predict and not args.checkpoint:
         raise ValueError("--predict needs --checkpoint DIR (a folder written by `toolkit train`)")
     scenario = scenarios.get(args.scenario)
-    query = queries.make_queries(scenario, args.seed, n_workspaces=1, per_workspace=1)[0]
+    query = queries.make_queries(scenario, seed=args.seed, n_workspaces=1, per_workspace=1)[0]
     checker = None
     if args.predict:
         from toolkit.learning import learned
 
         checker = learned.load_checker(args.checkpoint, query.workspace)
-    result = queries.solve_query(scenario, query, args.sampler, checker, seed=args.seed)
+    result = queries.solve_query(scenario, query, args.sampler, checker=checker, seed=args.seed)
     out = {
         "scenario": scenario.name,
         "sampler": args.sampler,
@@ -202,9 +209,8 @@ def cmd_grade(args: argparse.Namespace) -> int:
     if args.assignment:
         grading.master(args.assignment)  # an unknown name fails here, with the known ones
     notebooks = grading.submissions(args.notebooks)
-    names = {
-        notebook: args.assignment or grading.assignment_of(notebook) for notebook in notebooks
-    }  # all, before grading
+    # the assignment of each, all before grading
+    names = {notebook: args.assignment or grading.assignment_of(notebook) for notebook in notebooks}
     results = {}
     for notebook, name in names.items():
         results[notebook] = grading.grade(notebook, name, timeout=args.timeout)

@@ -27,8 +27,8 @@ from toolkit.cli.arguments import (
     study,
 )
 from toolkit.cli.bench_parser import bench_options
-from toolkit.experiments import paper_numbers
 from toolkit.experiments.config import BASELINES
+from toolkit.planning import sampling
 
 # -- the sub-commands' own options ----------------------------------------------------------------
 
@@ -59,7 +59,7 @@ def reproduce_options(cmd: argparse.ArgumentParser) -> None:
     cmd.add_argument(
         "--samplers",
         type=sampler_list,
-        default=paper_numbers.SAMPLERS,
+        default=sampling.PAPER_SAMPLERS,
         metavar="LIST",
         help="comma-separated samplers for Table 3 (default: the paper's four, BS,OB,G,BT; a registered "
         "one has no published figure beside it)",

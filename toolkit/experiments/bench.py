@@ -29,22 +29,21 @@ from collections.abc import Callable
 import numpy as np
 import torch
 
-from toolkit.experiments import paper_numbers
+from toolkit.experiments import planners, queries
 from toolkit.experiments.versus_ompl import versus_ompl, versus_ompl_markdown
 from toolkit.geometry.collision import CollisionChecker, FCLChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
-from toolkit.learning import presets
 from toolkit.learning.learned import LearnedChecker
-from toolkit.learning.models import build_predictor
+from toolkit.learning.presets import Preset
 from toolkit.learning.training import TrainedModels
-from toolkit.planning import queries, sampling
+from toolkit.planning import sampling
 from toolkit.planning.local_planner import (
     certify_edges,
     check_edges,
     default_resolution,
 )
-from toolkit.planning.prm import PRMOptions
+from toolkit.planning.options import LazyPRMOptions, PRMOptions
 from toolkit.scenarios import Scenario
 
 __all__ = [
@@ -102,23 +101,18 @@ def in_turns(calls: dict[str, tuple[Callable[[], object], int]], repeats: int = 
 
 
 def throughput(
-    scenario: Scenario,
-    preset: str = "paper",
-    batch: int | None = None,
-    seed: int = 0,
-    repeats: int = 5,
-    models: TrainedModels | None = None,
+    scenario: Scenario, models: TrainedModels, *, batch: int | None = None, seed: int = 0, repeats: int = 5
 ) -> dict[str, float]:
     """Configurations per second of the default exact checker (``exact_cfg_per_s``: ``exact_checker``, compiled
-    for box worlds), of the python-fcl reference (``fcl_cfg_per_s``) and of the learned checker
-    (``learned_cfg_per_s``), the three timed in turns (:func:`in_turns`) at ``batch`` configurations a call (default:
-    20,000 exact, 10,000 learned); ``ratio`` is learned / default exact, ``exact_over_fcl`` the compiled checker's
-    speed-up."""
+    for box worlds), of the python-fcl reference (``fcl_cfg_per_s``) and of the learned checker of ``models``
+    (``learned_cfg_per_s``; trained, or :func:`untrained_models`: the speed does not depend on the weights), the
+    three timed in turns (:func:`in_turns`) at ``batch`` configurations a call (default: 20,000 exact, 10,000
+    learned); ``ratio`` is learned / default exact, ``exact_over_fcl`` the compiled checker's speed-up."""
     rates = in_turns(
         {
             "exact": _exact_call(scenario, batch or 20_000, seed),
             "fcl": _exact_call(scenario, batch or 20_000, seed, make=FCLChecker),
-            "learned": _learned_call(scenario, preset, batch or 10_000, seed, models),
+            "learned": _learned_call(scenario, models, batch or 10_000, seed),
         },
         repeats,
     )
@@ -131,25 +125,17 @@ def throughput(
     }
 
 
-def exact_throughput(scenario: Scenario, batch: int = 20_000, seed: int = 0, repeats: int = 5) -> float:
+def exact_throughput(scenario: Scenario, *, batch: int = 20_000, seed: int = 0, repeats: int = 5) -> float:
     """Configurations per second of the default exact checker on uniform samples in one workspace."""
     return median_rate(*_exact_call(scenario, batch, seed), repeats)
 
 
 def learned_throughput(
-    scenario: Scenario,
-    preset: str = "paper",
-    batch: int = 10_000,
-    seed: int = 0,
-    repeats: int = 5,
-    models: TrainedModels | None = None,
+    scenario: Scenario, models: TrainedModels, *, batch: int = 10_000, seed: int = 0, repeats: int = 5
 ) -> float:
-    """Predictions per second of a :class:`~toolkit.learned.LearnedChecker` at ``batch``, the workspace encoded once.
-
-    The networks are ``models`` or, by default, untrained ones of the preset's sizes: their speed
-    does not depend on the weights.
-    """
-    return median_rate(*_learned_call(scenario, preset, batch, seed, models), repeats)
+    """Predictions per second of a :class:`~toolkit.learning.learned.LearnedChecker` of ``models`` at ``batch``, the
+    workspace encoded once (:func:`untrained_models` time as well as trained ones: the weights do not matter)."""
+    return median_rate(*_learned_call(scenario, models, batch, seed), repeats)
 
 
 def _exact_call(
@@ -167,24 +153,20 @@ def _exact_call(
 
 
 def _learned_call(
-    scenario: Scenario, preset: str = "paper", batch: int = 10_000, seed: int = 0, models: TrainedModels | None = None
+    scenario: Scenario, models: TrainedModels, batch: int = 10_000, seed: int = 0
 ) -> tuple[Callable[[], object], int]:
-    """A learned checker (``models``, or :func:`untrained_models` of the preset) asked about ``batch`` uniform
-    samples in a query workspace, and ``batch``."""
-    models = untrained_models(scenario, preset, seed) if models is None else models
+    """A learned checker of ``models`` asked about ``batch`` uniform samples in a query workspace, and ``batch``."""
     ws = scenario.workspaces("query", 1, seed)[0]
     checker = LearnedChecker(ws, models)
     Q = scenario.robot.sample(np.random.default_rng(seed), batch)
     return (lambda: checker.are_valid(Q)), batch
 
 
-def untrained_models(scenario: Scenario, preset: str = "paper", seed: int = 0) -> TrainedModels:
-    """Networks of the preset's sizes with random weights (torch seeded by ``seed``), in eval mode: a learned
+def untrained_models(scenario: Scenario, preset: Preset, seed: int = 0) -> TrainedModels:
+    """Networks of ``preset``'s recipe with random weights (torch seeded by ``seed``), in eval mode: a learned
     checker's speed does not depend on its weights, so timing needs no training."""
-    recipe = presets.get(preset)
     torch.manual_seed(seed)
-    predictor = build_predictor(scenario, recipe.encoding, recipe.mlp_hidden, recipe.dropout, recipe.latent_input)
-    return TrainedModels(scenario, recipe, predictor.eval(), seed)
+    return TrainedModels(scenario, preset, preset.build_predictor(scenario).eval(), seed)
 
 
 def edge_checks(scenario: Scenario, n_segments: int = 300, seed: int = 0, repeats: int = 5) -> dict[str, dict]:
@@ -201,13 +183,13 @@ def edge_checks(scenario: Scenario, n_segments: int = 300, seed: int = 0, repeat
     resolution = scenario.plan_resolution or default_resolution(robot)
     spacing = resolution * PRMOptions().certify_spacing
     return {
-        name: edge_checks_at(exact, Q0, Q1, r, spacing, repeats)
+        name: edge_checks_at(exact, Q0, Q1, r, spacing=spacing, repeats=repeats)
         for name, r in (("resolution", resolution), ("finer", resolution / 10))
     }
 
 
 def edge_checks_at(
-    exact: CollisionChecker, Q0: np.ndarray, Q1: np.ndarray, resolution: float, spacing: float, repeats: int = 5
+    exact: CollisionChecker, Q0: np.ndarray, Q1: np.ndarray, resolution: float, *, spacing: float, repeats: int = 5
 ) -> dict[str, float]:
     """:func:`edge_checks`' row at one ``resolution``: configurations checked (and clearances bounded) and median
     seconds of ``check_edges`` and of ``certify_edges`` (certificates ``spacing`` apart) on ``Q0 -> Q1``."""
@@ -220,12 +202,12 @@ def edge_checks_at(
         "check_edges_checked": exact.n_checked,
     }
     exact.reset_count()
-    certify_edges(exact, Q0, Q1, resolution, spacing)
+    certify_edges(exact, Q0, Q1, resolution, spacing=spacing)
     row.update(
         certify_edges_checked=exact.n_checked,
         certify_edges_bounded=exact.n_bounded,
         check_edges_s=median_seconds(lambda: check_edges(exact, Q0, Q1, resolution), repeats),
-        certify_edges_s=median_seconds(lambda: certify_edges(exact, Q0, Q1, resolution, spacing), repeats),
+        certify_edges_s=median_seconds(lambda: certify_edges(exact, Q0, Q1, resolution, spacing=spacing), repeats),
     )
     row["speedup"] = row["check_edges_s"] / row["certify_edges_s"]
     return row
@@ -247,34 +229,43 @@ def short_valid_segments(
 def planning_ratios(
     scenario: Scenario,
     models: TrainedModels,
+    *,
     n_workspaces: int = 2,
     per_workspace: int = 2,
     seed: int = 0,
-    samplers: tuple[str, ...] = paper_numbers.SAMPLERS,
+    samplers: tuple[str, ...] = sampling.PAPER_SAMPLERS,
     overrides: dict | None = None,
 ) -> dict[str, dict]:
     """Per sampler, PRM on the first queries of the paper's set, with ``models`` and without, in turns:
     ``{"sampling_ratio", "total_ratio"}`` (with / without, mean times), the same of the medians, both
     success rates and the sampling rounds and repairs a query each mode needed (means).
 
-    Without prediction is the strongest exact planner and checker: the lazy PRM (``PRMOptions``' defaults) with
-    the default exact checker (compiled), whatever the model's recipe plans with; with prediction, the recipe's
-    planner (``Preset.planner_options``: the ``paper`` preset's is Algorithm 1). ``overrides`` (PRMOptions fields)
-    apply to both modes, over the scenario's settings and the preset's: the same queries with one option changed
-    measure what that option does.
-    ``samplers``: the paper's four by default, or any registered ones (``sampling.register_sampler``).
+    Without prediction is the strongest exact planner and checker: the lazy PRM with the default exact checker
+    (compiled), whatever the model's recipe plans with; with prediction, the planner the recipe is paired with
+    (:mod:`toolkit.experiments.planners`: the ``paper`` preset's is Algorithm 1). ``overrides`` (planner options)
+    apply to both modes where their options have the field: the same queries with one option changed measure what
+    that option does. ``samplers``: the paper's four by default, or any registered ones
+    (``sampling.register_sampler``).
     """
     samplers = sampling.check_names(samplers)
-    fields = {f.name for f in dataclasses.fields(PRMOptions)}
-    if unknown := sorted(set(overrides or {}) - fields):
-        raise ValueError(f"unknown planner option(s) {unknown}; PRMOptions has {sorted(fields)}")
-    without = queries.default_options(scenario, None, **(overrides or {}))
-    with_ = queries.default_options(scenario, None, **{**models.preset.planner_options(), **(overrides or {})})
+    overrides = overrides or {}
+    known = {f.name for f in dataclasses.fields(LazyPRMOptions)}  # every planner's options are among these
+    if unknown := sorted(set(overrides) - known):
+        raise ValueError(f"unknown planner option(s) {unknown}; choose from {sorted(known)}")
+    without = queries.planner_options(scenario, **overrides)
+    with_ = queries.planner_options(scenario, models.preset, predicted=True, **_applicable(overrides, models.preset))
     per_workspace = min(per_workspace, scenario.queries_per_workspace)
-    query_set = queries.make_queries(scenario, seed, n_workspaces, per_workspace)
+    query_set = queries.make_queries(scenario, seed=seed, n_workspaces=n_workspaces, per_workspace=per_workspace)
     learned = queries.Mode(lambda ws: LearnedChecker(ws, models), options=with_)
-    table = queries.compare_prediction(scenario, query_set, learned, samplers, without, seed)
+    table = queries.compare_prediction(scenario, query_set, learned, samplers=samplers, options=without, seed=seed)
     return {sampler: prediction_ratios(row) for sampler, row in table.items()}
+
+
+def _applicable(overrides: dict, preset: Preset) -> dict:
+    """The ``overrides`` that the planner paired with ``preset`` reads (the lazy PRM's own fields mean nothing to
+    Algorithm 1)."""
+    known = {f.name for f in dataclasses.fields(planners.pairing(preset).options)}
+    return {name: value for name, value in overrides.items() if name in known}
 
 
 def prediction_ratios(row: dict) -> dict[str, float]:

@@ -21,10 +21,11 @@ from types import MappingProxyType
 from typing import Any
 
 from toolkit import scenarios
-from toolkit.experiments import paper_numbers
+from toolkit.experiments import planners
 from toolkit.learning import presets
 from toolkit.learning.presets import Preset
 from toolkit.planning import sampling
+from toolkit.planning.options import LazyPRMOptions
 from toolkit.scenarios import Scenario
 
 
@@ -38,17 +39,18 @@ class QuickSizes:
     samples_factor: int = 4  # at most this many times the paper's labelled samples per workspace
     cae_workspaces: int = 40  # at most this many generated grids for the CAE
     cae_max_steps: int = 20  # at most this many CAE training steps
-    queries: Mapping[str, tuple[int, int]] = field(
+    queries: Mapping[str, tuple[int, int]] = field(  # (workspaces, pairs each) by scenario
         default_factory=lambda: MappingProxyType({"2ds": (2, 2), "3do": (1, 2), "3dc7": (3, 1), "3dc9": (3, 1)})
-    )  # (workspaces, pairs each) by scenario
+    )
     default_queries: tuple[int, int] = (2, 1)  # for a scenario of your own
-    plan_samples: Mapping[str, int] = field(
+    plan_samples: Mapping[str, int] = field(  # |S| where the paper's would take minutes
         default_factory=lambda: MappingProxyType({"3do": 400})
-    )  # |S| where the paper's would take minutes
+    )
     max_rounds: int = 5  # quick models predict poorly: planning gives up sooner
     throughput_repeats: int = 3  # timed calls per checker (a full run: 7)
     study_seen: int = 12  # ablation rows that ask for more training workspaces get this many
     study_epochs_divisor: int = 10  # tuning trains a tenth of each candidate's epochs
+    # `toolkit bench --crossover --quick`: CrossoverSizes' fields (two values a variable, short calls, one round)
     crossover: Mapping[str, Any] = field(
         default_factory=lambda: MappingProxyType(
             {
@@ -61,7 +63,7 @@ class QuickSizes:
                 "repeats": 1,
             }
         )
-    )  # `toolkit bench --crossover --quick`: CrossoverSizes' fields (two values a variable, short calls, one round)
+    )
 
     def shrink(self, preset: Preset) -> Preset:
         """The same recipe with few epochs and samples (marked ``quick``, so a checkpoint remembers it)."""
@@ -90,26 +92,29 @@ BASELINES = {  # what "without prediction" is in a reproduction's Table 3 (RunCo
 
 
 def default_baseline(preset: Preset) -> str:
-    """Table 3's baseline unless one is chosen: the recipe's own planner without prediction (the ``paper``
-    preset's is Algorithm 1, so its Table 3 compares what the paper compares), with the default exact checker."""
-    return "paper" if preset.planner == "paper" else "best"
+    """Table 3's baseline unless one is chosen: the planner paired with the recipe, without prediction
+    (:mod:`toolkit.experiments.planners`; the ``paper`` preset's is Algorithm 1, so its Table 3 compares what the
+    paper compares), with the default exact checker."""
+    return "best" if issubclass(planners.pairing(preset).options, LazyPRMOptions) else "paper"
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, kw_only=True)
 class RunConfig:
-    """A scenario, a preset (already shrunk when ``quick``), a seed, and how to run: built once, read everywhere."""
+    """A scenario, a preset (already shrunk when ``quick``), a seed, and how to run: built once, read everywhere.
+
+    Build it with :meth:`create`, which resolves names and checks values (and chooses Table 3's baseline)."""
 
     scenario: Scenario
     preset: Preset
+    baseline: str  # Table 3's "without prediction": a name of BASELINES (create: default_baseline(preset))
     seed: int = 0
     quick: bool = False
     workers: int | None = None  # processes for planning (None: one per core; 1: all in this process)
     progress: bool = True  # progress bars
     device: str | None = None  # torch device for training (None: CUDA when present, else the CPU)
-    samplers: tuple[str, ...] = paper_numbers.SAMPLERS  # planned for Table 3: the paper's four, or registered ones
+    samplers: tuple[str, ...] = sampling.PAPER_SAMPLERS  # planned for Table 3: the paper's four, or registered ones
     imports: tuple[str, ...] = ()  # modules that register samplers, presets or scenarios (`toolkit --import`):
     #   a worker process imports them again, since it starts without what the parent registered
-    baseline: str = "best"  # Table 3's "without prediction": a name of BASELINES
 
     @classmethod
     def create(
@@ -122,7 +127,7 @@ class RunConfig:
         workers: int | None = None,
         progress: bool = True,
         device: str | None = None,
-        samplers: tuple[str, ...] = paper_numbers.SAMPLERS,
+        samplers: tuple[str, ...] = sampling.PAPER_SAMPLERS,
         imports: tuple[str, ...] = (),
         baseline: str | None = None,
         **preset_changes,
@@ -143,16 +148,16 @@ class RunConfig:
         if baseline is not None and baseline not in BASELINES:
             raise ValueError(f"unknown baseline {baseline!r}; choose one of {', '.join(BASELINES)}")
         return cls(
-            scenario,
-            replace(recipe, **preset_changes),
-            int(seed),
-            bool(quick),
-            workers,
-            progress,
-            device,
-            tuple(samplers),
-            tuple(imports),
-            baseline or default_baseline(recipe),
+            scenario=scenario,
+            preset=replace(recipe, **preset_changes),
+            baseline=baseline or default_baseline(recipe),
+            seed=int(seed),
+            quick=bool(quick),
+            workers=workers,
+            progress=progress,
+            device=device,
+            samplers=tuple(samplers),
+            imports=tuple(imports),
         )
 
     def settings(self) -> dict:
@@ -183,7 +188,8 @@ class RunConfig:
         return QUICK.queries.get(self.scenario.name, QUICK.default_queries)
 
     def planner_settings(self) -> dict:
-        """``PRMOptions`` fields of this run: the paper's |S|, and fewer rounds and samples when quick."""
+        """Planner options of this run (``toolkit.planning.options``): the paper's |S|, and fewer rounds and samples
+        when quick."""
         if not self.quick:
             return {"n_samples": self.scenario.plan_samples}
         return {

@@ -37,12 +37,14 @@ import trimesh
 
 from toolkit.experiments import bench
 from toolkit.experiments.config import QUICK
+from toolkit.experiments.queries import one_thread
 from toolkit.geometry.collision import FCLChecker, exact_checker
 from toolkit.geometry.robots import BIG, CHAIN_JOINT_LIMITS, SMALL, BoxRobot, Joint
 from toolkit.geometry.workspace import MeshWorkspace, Workspace, from_mesh
+from toolkit.learning import presets
 from toolkit.learning.learned import LearnedChecker
+from toolkit.learning.presets import Preset
 from toolkit.learning.training import TrainedModels
-from toolkit.planning.queries import one_thread
 from toolkit.scenarios import Scenario
 
 VARIABLES = {  # what is varied -> the axis label
@@ -169,7 +171,7 @@ def measure(setting: Setting, models: TrainedModels, repeats: int, seed: int = 0
     }
 
 
-def sweep(scenario: Scenario, variable: str, sizes: CrossoverSizes, preset: str = "paper", seed: int = 0) -> dict:
+def sweep(scenario: Scenario, variable: str, *, sizes: CrossoverSizes, preset: Preset, seed: int = 0) -> dict:
     """One variable's measurements as columns (``values``, ``exact_us``, ``fcl_us``, ``learned_us``,
     ``disagreements``, ``valid``), and where the learned curve crosses each exact one (:func:`crossing`)."""
     models: dict[str, TrainedModels] = {}  # by scenario name: the chains need networks of their own DoF
@@ -192,9 +194,10 @@ def sweep(scenario: Scenario, variable: str, sizes: CrossoverSizes, preset: str 
 
 def crossover(
     scenario: Scenario,
-    preset: str = "paper",
+    preset: Preset = presets.PRESETS["paper"],
     seed: int = 0,
     quick: bool = False,
+    *,
     variables: tuple[str, ...] = (),
     sizes: CrossoverSizes | None = None,
 ) -> dict:
@@ -207,10 +210,10 @@ def crossover(
     if unknown := sorted(set(variables) - set(applicable)):
         raise ValueError(f"variable(s) {unknown} do not apply to {scenario.name}; choose from {', '.join(applicable)}")
     with one_thread():
-        sweeps = {v: sweep(scenario, v, sizes, preset, seed) for v in variables or applicable}
+        sweeps = {v: sweep(scenario, v, sizes=sizes, preset=preset, seed=seed) for v in variables or applicable}
     results = {
         "scenario": scenario.name,
-        "preset": preset,
+        "preset": preset.name,
         "quick": quick,
         "seed": seed,
         "batch": sizes.batch,

@@ -5,10 +5,6 @@ time improvement ratio ``(without - with) / without``; the text around it gives
 the mean and standard deviation of the times behind it, ``(mean, std)``.
 """
 
-from toolkit.planning.sampling import PAPER_SAMPLERS
-
-SAMPLERS = PAPER_SAMPLERS  # the paper's four samplers, in the order of its tables
-
 # Table 1: CAE reconstruction accuracy (3DC is one row for both box chains).
 CAE = {
     "2ds": {"seen_acc": 1.00, "unseen_acc": 1.00},

@@ -7,7 +7,7 @@
 2. models: the CAE and MLP (:func:`toolkit.experiments.pipeline.train`), a checkpoint folder;
 3. learning: Table 1 and Table 2 measures, and P(valid) on the unseen test set;
 4. planning: every sampler, without and with prediction in turns query by query, on the paper's queries
-   (:mod:`toolkit.planning.queries`), the samplers spread over one process per core
+   (:mod:`toolkit.experiments.queries`), the samplers spread over one process per core
    (:mod:`toolkit.experiments.workers`). *Without* is the strongest exact planner and checker (the
    lazy PRM, the compiled checker); where Table 3's baseline is another (``RunConfig.baseline``:
    the ``paper`` preset's is Algorithm 1), that one is planned in the same turns too
@@ -36,17 +36,15 @@ import torch
 from tqdm.auto import tqdm
 
 from toolkit import plots
-from toolkit.experiments import bench, pipeline, tables
+from toolkit.experiments import bench, pipeline, queries, tables
 from toolkit.experiments.config import RunConfig
 from toolkit.experiments.stages import Stages, check_out
 from toolkit.experiments.tables import BASELINE
 from toolkit.experiments.workers import processes
 from toolkit.geometry.collision import FCLChecker, exact_checker
-from toolkit.learning import checkpoints, training
+from toolkit.learning import checkpoints, presets, training
 from toolkit.learning.data import SPLITS, CollisionDataset
 from toolkit.learning.learned import LearnedChecker
-from toolkit.planning import queries
-from toolkit.planning.prm import PAPER_BASELINE
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.util import outputs, plugins
 
@@ -93,7 +91,7 @@ def models_stage(stages: Stages, config: RunConfig, splits: dict[str, CollisionD
     folder = stages.cache / "checkpoint"
     if folder.exists():
         return checkpoints.load_models(
-            folder, config.scenario.name, remedy=f"delete {folder} to train again (the models stage)"
+            folder, config.scenario, remedy=f"delete {folder} to train again (the models stage)"
         )
     began = time.perf_counter()
     models = pipeline.train(config, splits, cae=True)
@@ -116,11 +114,11 @@ def planning_stage(stages: Stages, config: RunConfig, models: training.TrainedMo
     """Stage 4: every sampler without and with prediction on the query set, the two in turns query by query.
 
     Samplers not yet in the cache go to ``config.workers`` processes (default one per
-    core, each timing its own queries) when there are several; each sampler's results
-    are cached as soon as they arrive.
+    core, each timing its own queries; each receives the models trained above) when
+    there are several; each sampler's results are cached as soon as they arrive.
     """
     todo = [s for s in config.samplers if not stages.has(f"planning_{s}")]
-    job = partial(plan_sampler, config, str(stages.cache / "checkpoint"))
+    job = partial(plan_sampler, config, models)
     workers = config.workers or os.cpu_count() or 1
     with (
         tqdm(total=len(todo), desc=f"planning {config.scenario.name}", disable=not stages.progress, leave=False) as bar,
@@ -137,7 +135,7 @@ def planning_stage(stages: Stages, config: RunConfig, models: training.TrainedMo
     return {s: stages.load(f"planning_{s}") for s in config.samplers}
 
 
-def plan_sampler(config: RunConfig, checkpoint: str, sampler: str) -> tuple[str, dict, float]:
+def plan_sampler(config: RunConfig, models: training.TrainedModels, sampler: str) -> tuple[str, dict, float]:
     """One sampler over the query set, its :func:`planning_modes` in turns (also in a worker process, which first
     imports ``config.imports`` to register what the parent registered): the sampler, ``{"without": summary, "with":
     summary}`` (and ``"baseline"``) and seconds."""
@@ -145,31 +143,31 @@ def plan_sampler(config: RunConfig, checkpoint: str, sampler: str) -> tuple[str,
     for module in config.imports:
         plugins.import_module(module)
     scenario = config.scenario
-    query_set = queries.make_queries(scenario, config.seed, *config.query_counts())
-    modes = planning_modes(config, checkpoints.load_models(checkpoint, scenario.name))
+    n_workspaces, per_workspace = config.query_counts()
+    query_set = queries.make_queries(scenario, seed=config.seed, n_workspaces=n_workspaces, per_workspace=per_workspace)
+    modes = planning_modes(config, models)
     runs = queries.run_interleaved(scenario, query_set, sampler, modes, seed=config.seed)
     return sampler, {mode: runs[mode][1] for mode in modes}, time.perf_counter() - began
 
 
 def planning_modes(config: RunConfig, models: training.TrainedModels) -> dict[str, queries.Mode]:
     """What the planning stage plans, in turns: ``without`` prediction, the strongest exact planner and checker (the
-    lazy PRM, ``PRMOptions``' defaults, with the default exact checker); ``with``, the run's recipe's planner
-    (``Preset.planner_options``, the model's) with the learned checker deciding samples; and, when Table 3's baseline
+    lazy PRM with the default exact checker); ``with``, the planner paired with the run's recipe
+    (:mod:`toolkit.experiments.planners`) with the learned checker deciding samples; and, when Table 3's baseline
     (``config.baseline``) is the paper's, ``baseline``: Algorithm 1 without prediction, with the default exact
     checker (``paper``) or python-fcl's (``paper-fcl``)."""
-    settings = config.planner_settings()
-
-    def options(**planner):
-        return queries.default_options(config.scenario, None, **planner, **settings)
-
-    learned = partial(LearnedChecker, models=models)
+    scenario, settings = config.scenario, config.planner_settings()
     modes = {
-        "without": queries.Mode(options=options()),
-        "with": queries.Mode(learned, options=options(**config.preset.planner_options())),
+        "without": queries.Mode(options=queries.planner_options(scenario, **settings)),
+        "with": queries.Mode(
+            partial(LearnedChecker, models=models),
+            options=queries.planner_options(scenario, config.preset, predicted=True, **settings),
+        ),
     }
     if config.baseline != "best":
         exact = FCLChecker if config.baseline == "paper-fcl" else exact_checker
-        modes[BASELINE] = queries.Mode(exact=exact, options=options(**PAPER_BASELINE))
+        algorithm_1 = queries.planner_options(scenario, presets.PRESETS["paper"], **settings)  # no model
+        modes[BASELINE] = queries.Mode(exact=exact, options=algorithm_1)
     return modes
 
 
@@ -191,9 +189,7 @@ def reproduce(config: RunConfig, out: str | Path) -> dict:
     planning = planning_stage(stages, config, models)
     throughput = stages.json(
         "throughput",
-        lambda: bench.throughput(
-            config.scenario, config.preset.name, seed=config.seed, repeats=config.throughput_repeats()
-        ),
+        lambda: bench.throughput(config.scenario, models, seed=config.seed, repeats=config.throughput_repeats()),
     )
     results = dict(
         settings,

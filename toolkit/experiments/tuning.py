@@ -66,7 +66,7 @@ def tune(config: RunConfig, out: str | Path) -> dict:
     cae_rows, cae_files = tune_cae(held, stages, base, scale)
     best_cae = max(cae_rows, key=lambda r: r["validation_acc"])  # max keeps the first of equals: fewer epochs
     with_cae = replace(base, cae_epochs=best_cae["cae_epochs"] // scale)
-    mlp_rows = tune_mlp(held, stages, with_cae, scale, cae_files[best_cae["cae_epochs"]])
+    mlp_rows = tune_mlp(held, stages, base=with_cae, scale=scale, cae_file=cae_files[best_cae["cae_epochs"]])
     n_validation = int(held.validation.valid.size)
     best_mlp = one_standard_error_choice(mlp_rows, n_validation)
     result = {
@@ -101,7 +101,13 @@ def held_out(config: RunConfig) -> HeldOut:
     n_seen = QUICK.workspaces[0] if config.quick else scenario.n_seen
     seen = scenario.workspaces("seen", n_seen, seed)
     train = data.label_workspaces(
-        scenario, seen, scenario.samples_per_workspace, seed, "train_samples", config.progress, "train samples"
+        scenario,
+        seen,
+        samples_per_workspace=scenario.samples_per_workspace,
+        seed=seed,
+        stream="train_samples",
+        progress=config.progress,
+        desc="train samples",
     )
     n_fit = n_seen - max(1, int(round(VALIDATION_SHARE * n_seen)))
     fit, validation = training.split_workspaces(train, n_fit)
@@ -120,7 +126,7 @@ def tune_cae(held: HeldOut, stages: Stages, base: presets.Preset, scale: int) ->
     return rows, files
 
 
-def tune_mlp(held: HeldOut, stages: Stages, base: presets.Preset, scale: int, cae_file: Path) -> list[dict]:
+def tune_mlp(held: HeldOut, stages: Stages, *, base: presets.Preset, scale: int, cae_file: Path) -> list[dict]:
     """Step 3: one MLP for each combination of ``MLP_GRID`` (epochs divided by ``scale``), with the CAE in
     ``cae_file``, each row cached; the rows in grid order."""
     rows = []
@@ -153,16 +159,16 @@ def _cae_row(held: HeldOut, preset: presets.Preset, cae_file: Path) -> dict:
     torch.manual_seed(seed)
     predictor = build_predictor(scenario, "raw")
     began = time.perf_counter()
-    training.train_cae(
+    training.train_cae(  # capped as training.train_models caps it
         predictor,
         torch.as_tensor(fit.occupancy),
         preset,
         torch.Generator().manual_seed(seed),
-        held.config.progress,
+        progress=held.config.progress,
         max_steps=scenario.cae_max_steps,
         max_batch=scenario.cae_max_batch,
         max_lr=scenario.cae_max_lr,
-    )  # as training.train_models caps it
+    )
     seconds = time.perf_counter() - began
     state = predictor.cae.state_dict()
     outputs.write_atomically(cae_file, lambda tmp: torch.save(state, tmp))  # a rerun trusts it: whole or none

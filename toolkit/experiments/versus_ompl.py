@@ -37,20 +37,20 @@ Results and what they say: ``docs/benchmarks.md``, "Against OMPL (issue 18)".
 
 from __future__ import annotations
 
-import dataclasses
 import time
 from collections.abc import Callable
 
 import numpy as np
 
+from toolkit.experiments import queries
+from toolkit.experiments.queries import Query
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot
+from toolkit.learning import presets
 from toolkit.learning.learned import LearnedChecker
 from toolkit.learning.training import TrainedModels
-from toolkit.planning import queries
 from toolkit.planning.local_planner import default_resolution, path_is_valid
-from toolkit.planning.prm import PAPER_BASELINE, PRMOptions, plan
-from toolkit.planning.queries import Query
+from toolkit.planning.prm import PRMOptions, plan
 from toolkit.scenarios import Scenario
 
 # planner(query, exact, n) -> (success, path (P, dof) or None): solves query number n, exact deciding validity
@@ -62,10 +62,10 @@ def race_queries(scenario: Scenario, n_queries: int, seed: int) -> list[Query]:
     if int(n_queries) != n_queries or n_queries < 1:
         raise ValueError(f"n_queries must be a positive integer, got {n_queries!r}")
     per = scenario.queries_per_workspace
-    return queries.make_queries(scenario, seed, -(-n_queries // per), per)[:n_queries]
+    return queries.make_queries(scenario, seed=seed, n_workspaces=-(-n_queries // per), per_workspace=per)[:n_queries]
 
 
-def our_planner(options: PRMOptions, sampler: str, seed: int, models: TrainedModels | None = None) -> Planner:
+def our_planner(options: PRMOptions, *, sampler: str, seed: int, models: TrainedModels | None = None) -> Planner:
     """Our PRM with ``options`` and ``sampler``; with ``models``, a learned checker of the query's workspace decides
     the samples (built inside the call, so its workspace encoding counts in the time). Query ``n`` draws from
     ``rng = default_rng([seed, n])``."""
@@ -102,6 +102,7 @@ def ompl_planner(name: str, resolution: float, seconds: float) -> Planner:
 
 def contenders(
     scenario: Scenario,
+    *,
     seed: int,
     models: TrainedModels | None,
     sampler: str,
@@ -111,24 +112,26 @@ def contenders(
 ) -> dict[str, Planner]:
     """The planners of a race, by the name its table gives them, ours first.
 
-    Ours: the best exact planner (``queries.default_options``), the paper's baseline
-    (``prm.PAPER_BASELINE``; unless ``paper_baseline`` is False) and, with ``models``,
-    the best planner with prediction (the scenario's settings and the model's preset's
-    options, as ``bench.planning_ratios`` plans). OMPL's: each of ``ompl_planners``.
+    Ours: the best exact planner (the lazy PRM), the paper's baseline (Algorithm 1, ``PRMOptions``;
+    unless ``paper_baseline`` is False) and, with ``models``, the planner paired with the model's
+    preset with prediction (:mod:`toolkit.experiments.planners`, as ``bench.planning_ratios``
+    plans). OMPL's: each of ``ompl_planners``.
     """
-    best = queries.default_options(scenario)
-    planners = {"ours, best exact": our_planner(best, sampler, seed)}
+    best = queries.planner_options(scenario)
+    ours = {"ours, best exact": our_planner(best, sampler=sampler, seed=seed)}
     if paper_baseline:
-        planners["ours, paper's baseline"] = our_planner(dataclasses.replace(best, **PAPER_BASELINE), sampler, seed)
+        paper = queries.planner_options(scenario, presets.PRESETS["paper"])  # Algorithm 1, no model
+        ours["ours, paper's baseline"] = our_planner(paper, sampler=sampler, seed=seed)
     if models is not None:
-        predicting = queries.default_options(scenario, None, **models.preset.planner_options())
-        planners[f"ours, with prediction ({models.preset.name})"] = our_planner(predicting, sampler, seed, models)
+        predicting = queries.planner_options(scenario, models.preset, predicted=True)
+        ours[f"ours, with prediction ({models.preset.name})"] = our_planner(
+            predicting, sampler=sampler, seed=seed, models=models
+        )
     resolution = scenario.plan_resolution or default_resolution(scenario.robot)
-    planners.update({f"OMPL {name}": ompl_planner(name, resolution, ompl_seconds) for name in ompl_planners})
-    return planners
+    return {**ours, **{f"OMPL {name}": ompl_planner(name, resolution, ompl_seconds) for name in ompl_planners}}
 
 
-def timed_solve(planner: Planner, query: Query, n: int, robot: BoxRobot, resolution: float) -> dict:
+def timed_solve(planner: Planner, query: Query, n: int, *, robot: BoxRobot, resolution: float) -> dict:
     """One solve from scratch: ``{"seconds", "success", "valid", "checks"}``.
 
     ``valid``: the path passes a fresh exact checker at ``resolution / 10``; ``checks``:
@@ -142,16 +145,16 @@ def timed_solve(planner: Planner, query: Query, n: int, robot: BoxRobot, resolut
     return {"seconds": seconds, "success": bool(success), "valid": valid, "checks": exact.n_checked + exact.n_bounded}
 
 
-def race(scenario: Scenario, query_set: list[Query], planners: dict[str, Planner]) -> dict[str, list[dict]]:
+def race(scenario: Scenario, query_set: list[Query], racing: dict[str, Planner]) -> dict[str, list[dict]]:
     """Per planner, its :func:`timed_solve` of every query; the planners in turns query by query, the first of
     query ``n`` the ``n``-th (mod their count), on one thread (``queries.one_thread``)."""
     resolution = scenario.plan_resolution or default_resolution(scenario.robot)
-    solves: dict[str, list[dict]] = {name: [] for name in planners}
-    names = list(planners)
+    solves: dict[str, list[dict]] = {name: [] for name in racing}
+    names = list(racing)
     with queries.one_thread():
         for n, query in enumerate(query_set):
             for name in names[n % len(names) :] + names[: n % len(names)]:
-                solves[name].append(timed_solve(planners[name], query, n, scenario.robot, resolution))
+                solves[name].append(timed_solve(racing[name], query, n, robot=scenario.robot, resolution=resolution))
     return solves
 
 
@@ -179,6 +182,7 @@ def summarize(solves: dict[str, list[dict]]) -> dict[str, dict]:
 
 def versus_ompl(
     scenario: Scenario,
+    *,
     n_queries: int = 10,
     seed: int = 9000,
     models: TrainedModels | None = None,
@@ -201,9 +205,17 @@ def versus_ompl(
     if not ompl_seconds > 0:
         raise ValueError(f"ompl_seconds must be positive, got {ompl_seconds!r}")
     query_set = race_queries(scenario, n_queries, seed)
-    planners = contenders(scenario, seed, models, sampler, tuple(ompl_planners), ompl_seconds, paper_baseline)
+    racing = contenders(
+        scenario,
+        seed=seed,
+        models=models,
+        sampler=sampler,
+        ompl_planners=tuple(ompl_planners),
+        ompl_seconds=ompl_seconds,
+        paper_baseline=paper_baseline,
+    )
     toolkit_ompl.quiet(seed)  # OMPL's own generators, seeded
-    return summarize(race(scenario, query_set, planners))
+    return summarize(race(scenario, query_set, racing))
 
 
 def versus_ompl_markdown(scenario: Scenario, table: dict[str, dict]) -> str:

@@ -12,8 +12,8 @@ Reading order:
 5. :mod:`toolkit.geometry.box_world` — what the box-world checkers share (bounds, region, a grid of
    cells listing the obstacles near each, clearance bounds), the point robot's interval tests and the
    separating-axis reference in numpy;
-6. :mod:`toolkit.geometry.fcl_checker` — python-fcl: ``FCLChecker`` (also ``ExactChecker``), the
-   reference, and ``MeshChecker`` for meshes;
+6. :mod:`toolkit.geometry.fcl_checker` — python-fcl: ``FCLChecker``, the reference, and
+   ``MeshChecker`` for meshes;
 7. :mod:`toolkit.geometry.compiled` and :mod:`toolkit.geometry.kernels` — ``CompiledChecker``:
    kinematics and separating axes compiled with numba, one loop over configurations, the default;
 8. :mod:`toolkit.geometry.collision` — all of them in one place, and ``exact_checker``, which picks the

@@ -124,24 +124,23 @@ class BoxWorldChecker(CollisionChecker):
         count, first, members = self._near[cap]
         cell = self._covered_cells(lo, hi).reshape(-1)  # (2^D * n * L,)
         owner, ordinal = ragged(count[cell])
-        pair_link, pair_box = (
-            owner % len(link),
-            members[first[cell[owner]] + ordinal],
-        )  # (P,) each; repeats are harmless
+        # (link, box) pairs from the cells each link's bounds cover; repeats are harmless
+        pair_link = owner % len(link)  # (P,)
+        pair_box = members[first[cell[owner]] + ordinal]  # (P,)
         boxes = self.workspace.boxes  # (K, 2, D)
-        gap = np.maximum(
+        gap = np.maximum(  # (P, D)
             np.maximum(boxes[pair_box, 0] - hi[pair_link], lo[pair_link] - boxes[pair_box, 1]), 0
-        )  # (P, D)
+        )
         bound = np.linalg.norm(gap, axis=-1)  # (P,)
         near = np.flatnonzero(bound < cap)
         j, k = pair_link[near], pair_box[near]
         axes = np.swapaxes(rotations[j], -1, -2)  # (R, D, D): rows are the link's axes
         box_center, box_half = boxes[k].mean(axis=1), (boxes[k, 1] - boxes[k, 0]) / 2  # (R, D)
-        along = (
+        along = (  # (R, D): gaps along link axes
             np.abs(np.einsum("rad,rd->ra", axes, centers[j] - box_center))
             - half[j % n_links]
             - np.einsum("rad,rd->ra", np.abs(axes), box_half)
-        )  # (R, D): gaps along link axes
+        )
         bound[near] = np.maximum(bound[near], along.max(axis=1))
         np.minimum.at(link, pair_link, bound)
         clearance[idx] = link.reshape(len(idx), n_links).min(axis=1)
@@ -192,9 +191,9 @@ class SeparatingAxisChecker(BoxWorldChecker):
     def _links_collide(self, Q, aabbs, candidates):
         """Ignores the voxel prefilter: every (link, obstacle) pair whose bounds meet is tested."""
         boxes = self.workspace.boxes  # (K, 2, D)
-        near = np.all(
+        near = np.all(  # (n, L, K)
             (aabbs[:, :, None, 0] <= boxes[:, 1]) & (aabbs[:, :, None, 1] >= boxes[:, 0]), axis=-1
-        )  # (n, L, K)
+        )
         centers, rotations, half = self.robot.link_boxes(Q)
         n, l, k = np.nonzero(near)  # candidate pairs
         boxes = self.workspace.boxes[k]  # (P, 2, D)

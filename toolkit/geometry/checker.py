@@ -8,9 +8,6 @@ share it, so planning with or without prediction differs in one argument.
 
 from __future__ import annotations
 
-from collections.abc import Mapping
-from types import MappingProxyType
-
 import numpy as np
 
 from toolkit.geometry.robots import BoxRobot
@@ -27,15 +24,12 @@ class CollisionChecker:
     call rather than in several dependent ones (same answers, fewer calls).
     ``certificates_pay``: bounding a clearance costs less than the checks it can spare
     (``local_planner.certify_edges``); False where a check is a few comparisons.
-    ``planner_options``: settings a planner should use when this checker decides its
-    samples (a learned checker: its recipe's, ``Preset.planner_options``); none for an
-    exact checker. Like OMPL's validity-checker specs, the planner reads them without
-    knowing what kind of checker it holds.
+    Both say what the checker *is*, like OMPL's validity-checker specs; how a planner uses
+    it is the planner's business.
     """
 
     few_calls = False
     certificates_pay = True
-    planner_options: Mapping[str, object] = MappingProxyType({})
 
     def __init__(self, robot: BoxRobot):
         self.robot = robot

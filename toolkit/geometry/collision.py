@@ -8,7 +8,7 @@ obstacle (closed sets: touching counts as collision, as in FCL). The exact check
 - :class:`CompiledChecker` (:mod:`toolkit.geometry.compiled`, :mod:`toolkit.geometry.kernels`):
   kinematics and separating axes compiled with numba, one loop over configurations; the
   default for box worlds.
-- :class:`FCLChecker` (``ExactChecker``, its first name; :mod:`toolkit.geometry.fcl_checker`):
+- :class:`FCLChecker` (:mod:`toolkit.geometry.fcl_checker`):
   python-fcl, the reference the tests hold the others to. :class:`MeshChecker`: python-fcl
   against a triangle mesh.
 - :class:`PointRobotChecker` and :class:`SeparatingAxisChecker` (:mod:`toolkit.geometry.box_world`):
@@ -22,7 +22,7 @@ from __future__ import annotations
 from toolkit.geometry.box_world import BoxWorldChecker, PointRobotChecker, SeparatingAxisChecker
 from toolkit.geometry.checker import CollisionChecker
 from toolkit.geometry.compiled import CompiledChecker
-from toolkit.geometry.fcl_checker import ExactChecker, FCLChecker, MeshChecker
+from toolkit.geometry.fcl_checker import FCLChecker, MeshChecker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import MeshWorkspace, Workspace
 
@@ -30,7 +30,6 @@ __all__ = [
     "BoxWorldChecker",
     "CollisionChecker",
     "CompiledChecker",
-    "ExactChecker",
     "FCLChecker",
     "MeshChecker",
     "PointRobotChecker",

@@ -74,9 +74,8 @@ class CompiledChecker(BoxWorldChecker):
         ws = self.workspace
         shape = np.ones(3, dtype=np.int64)
         shape[: ws.dim] = self._shape
-        lists = (
-            np.ascontiguousarray(a, dtype=np.int32) for a in self._box_lists(grow)
-        )  # int32: the grid stays in cache
+        # int32: the grid stays in cache
+        lists = (np.ascontiguousarray(a, dtype=np.int32) for a in self._box_lists(grow))
         count, first, members = lists
         return World(
             np.array(ws.lower, dtype=np.float64),  # copies: writable arrays, so one compiled version serves all

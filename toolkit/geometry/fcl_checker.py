@@ -1,11 +1,11 @@
 """The python-fcl checkers: the reference for box worlds, and the checker for triangle meshes.
 
-- :class:`FCLChecker` (also importable as ``ExactChecker``, its first name): obstacles in
-  FCL's ``DynamicAABBTreeCollisionManager``; kinematics and the shared prefilter
-  (:class:`~toolkit.geometry.box_world.BoxWorldChecker`) run batched in numpy, and only links
-  whose bounds meet an obstacle's are handed to FCL, one call per link. It is the reference the
-  tests hold every other checker to; for box worlds :func:`toolkit.geometry.collision.exact_checker`
-  returns the compiled checker, which gives the same answers many times faster.
+- :class:`FCLChecker`: obstacles in FCL's ``DynamicAABBTreeCollisionManager``; kinematics and
+  the shared prefilter (:class:`~toolkit.geometry.box_world.BoxWorldChecker`) run batched in
+  numpy, and only links whose bounds meet an obstacle's are handed to FCL, one call per link.
+  It is the reference the tests hold every other checker to; for box worlds
+  :func:`toolkit.geometry.collision.exact_checker` returns the compiled checker, which gives the
+  same answers many times faster.
 - :class:`MeshChecker`: the same against a triangle mesh (a
   :class:`~toolkit.geometry.workspace.MeshWorkspace`): FCL's ``BVHModel`` for links that touch
   the surface, winding numbers for links wholly inside a solid (:class:`toolkit.geometry.meshes.Solid`).
@@ -24,9 +24,9 @@ from toolkit.geometry.workspace import MeshWorkspace, Workspace
 class FCLChecker(BoxWorldChecker):
     """The reference exact checker, python-fcl: obstacles in a ``DynamicAABBTreeCollisionManager``.
 
-    ``ExactChecker`` is this class under its first name. It is the ground truth the tests hold
-    the other checkers to; :func:`toolkit.geometry.collision.exact_checker` returns the faster
-    compiled checker (:class:`toolkit.geometry.compiled.CompiledChecker`) for box worlds.
+    It is the ground truth the tests hold the other checkers to;
+    :func:`toolkit.geometry.collision.exact_checker` returns the faster compiled checker
+    (:class:`toolkit.geometry.compiled.CompiledChecker`) for box worlds.
     """
 
     def __init__(self, workspace: Workspace, robot: BoxRobot):
@@ -60,9 +60,6 @@ class FCLChecker(BoxWorldChecker):
         return hit
 
 
-ExactChecker = FCLChecker  # the first name of the reference checker, kept for code written against it
-
-
 class MeshChecker(BoxWorldChecker):
     """Ground truth against a triangle mesh: a :class:`~toolkit.geometry.workspace.MeshWorkspace`'s triangles.
 
@@ -76,7 +73,8 @@ class MeshChecker(BoxWorldChecker):
     def __init__(self, workspace: MeshWorkspace, robot: BoxRobot):
         if not isinstance(workspace, MeshWorkspace):
             raise ValueError(
-                f"MeshChecker needs a MeshWorkspace (toolkit.workspace.from_mesh), got {type(workspace).__name__}"
+                "MeshChecker needs a MeshWorkspace (toolkit.geometry.workspace.from_mesh), "
+                f"got {type(workspace).__name__}"
             )
         super().__init__(workspace, robot)
         self._solid = workspace.solid

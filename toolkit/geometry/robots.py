@@ -71,6 +71,7 @@ class BoxRobot:
         base: str,
         links: list[Link],
         joints: list[Joint],
+        *,
         position_bounds: tuple,
         base_height: float = 0.0,
     ):

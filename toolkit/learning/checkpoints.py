@@ -30,13 +30,15 @@ import numpy as np
 import torch
 
 from toolkit import __version__, scenarios
-from toolkit.learning.models import CollisionPredictor, build_predictor
+from toolkit.learning.models import CollisionPredictor
 from toolkit.learning.presets import Preset
 from toolkit.learning.training import TrainedModels
+from toolkit.scenarios import Scenario
 from toolkit.util import outputs
 
 WEIGHTS, META = "weights.pt", "meta.json"
-FORMAT = 1  # of meta.json and weights.pt: a checkpoint of another format is refused, not converted
+FORMAT = 2  # of meta.json and weights.pt: a checkpoint of another format is refused, not converted
+# (format 2: presets no longer record planner settings; which planner plans with a model is the experiments' choice)
 
 
 def sizes(predictor: CollisionPredictor) -> dict:
@@ -109,8 +111,11 @@ def save_checkpoint(
     return folder
 
 
-def load_models(folder: str | Path, scenario: str | None = None, *, remedy: str | None = None) -> TrainedModels:
-    """Read a checkpoint folder; with ``scenario``, refuse one trained for another scenario.
+def load_models(
+    folder: str | Path, scenario: str | Scenario | None = None, *, remedy: str | None = None
+) -> TrainedModels:
+    """Read a checkpoint folder; with ``scenario``, refuse one trained for another scenario, and with a
+    :class:`~toolkit.scenarios.Scenario` use that one (else the one its recorded name resolves to).
 
     A damaged folder is a ``ValueError`` naming the file and ending in ``remedy``
     (default: how to write it again with ``toolkit train``).
@@ -123,19 +128,19 @@ def load_models(folder: str | Path, scenario: str | None = None, *, remedy: str 
         meta = _read_meta(folder)
     except ValueError as err:
         raise ValueError(f"{err}; {remedy}") from None
-    if scenario is not None and meta["scenario"] != scenario:
-        raise ValueError(f"checkpoint {folder} was trained for scenario {meta['scenario']!r}, not {scenario!r}")
+    name = scenario.name if isinstance(scenario, Scenario) else scenario
+    if name is not None and meta["scenario"] != name:
+        raise ValueError(f"checkpoint {folder} was trained for scenario {meta['scenario']!r}, not {name!r}")
     try:
-        return _build(folder, meta)
+        return _build(folder, meta, scenario if isinstance(scenario, Scenario) else scenarios.get(meta["scenario"]))
     except ValueError as err:
         raise ValueError(f"{err}; {remedy}") from None
 
 
-def _build(folder: Path, meta: dict) -> TrainedModels:
-    """The networks ``meta`` describes, with the weights of ``folder``."""
+def _build(folder: Path, meta: dict, scenario: Scenario) -> TrainedModels:
+    """The networks ``meta`` describes for ``scenario``, with the weights of ``folder``."""
     preset = _read_preset(folder, meta["preset"])
-    scen = scenarios.get(meta["scenario"])
-    predictor = build_predictor(scen, preset.encoding, preset.mlp_hidden, preset.dropout, preset.latent_input)
+    predictor = preset.build_predictor(scenario)
     if sizes(predictor) != meta["sizes"]:
         raise ValueError(
             f"checkpoint {folder}: recorded sizes {meta['sizes']} differ from the {meta['scenario']!r} "
@@ -147,7 +152,7 @@ def _build(folder: Path, meta: dict) -> TrainedModels:
         raise ValueError(f"checkpoint {folder} has no {WEIGHTS}") from None
     except Exception as err:  # unpickling, zip, shape or key errors: the weights cannot be trusted
         raise ValueError(f"checkpoint {folder}: {WEIGHTS} is corrupted or does not match the networks: {err}") from err
-    return TrainedModels(scen, preset, predictor.eval(), int(meta["seed"]), meta["history"])
+    return TrainedModels(scenario, preset, predictor.eval(), int(meta["seed"]), meta["history"])
 
 
 def _read_preset(folder: Path, recorded) -> Preset:

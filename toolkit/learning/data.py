@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import json
 from dataclasses import dataclass, field
+from functools import partial
 from pathlib import Path
 
 import numpy as np
@@ -36,7 +37,7 @@ from toolkit.util import outputs
 SPLITS = ("train", "seen_test", "unseen_test")
 
 
-def occupancy_grids(scenario: Scenario, stream: str, count: int, seed: int, progress: bool = False) -> np.ndarray:
+def occupancy_grids(scenario: Scenario, stream: str, count: int, seed: int, *, progress: bool = False) -> np.ndarray:
     """``(count, *grid)`` int8 occupancy grids (-1 / +1) of a stream's workspaces, made one at a time: a CAE
     can train on thousands (2000 3DO grids: 20 MB) without keeping their workspaces."""
     grids = np.empty((count,) + tuple(scenario.grid_shape), dtype=np.int8)
@@ -46,7 +47,7 @@ def occupancy_grids(scenario: Scenario, stream: str, count: int, seed: int, prog
 
 
 def balanced_samples(
-    checker, rng: np.random.Generator, n: int, valid_fraction: float = 0.5, max_draws: int = 2_000_000
+    checker, rng: np.random.Generator, n: int, *, valid_fraction: float = 0.5, max_draws: int = 2_000_000
 ) -> tuple[np.ndarray, np.ndarray]:
     """``n`` uniform configurations, ``round(n * valid_fraction)`` of them valid: ``(n, dof)``, ``(n,)`` bool.
 
@@ -142,6 +143,7 @@ class CollisionDataset:
 def label_workspaces(
     scenario: Scenario,
     spaces: list[Workspace],
+    *,
     samples_per_workspace: int,
     seed: int,
     stream: str,
@@ -183,11 +185,11 @@ def validity_blind_split(
     return label_workspaces(
         scenario,
         unseen.workspaces,
-        n,
-        unseen.meta.get("seed", 0),
-        "unseen_uniform",
-        progress,
-        "validity-blind unseen samples",
+        samples_per_workspace=n,
+        seed=unseen.meta.get("seed", 0),
+        stream="unseen_uniform",
+        progress=progress,
+        desc="validity-blind unseen samples",
         balanced=False,
     )
 
@@ -195,6 +197,7 @@ def validity_blind_split(
 def make_splits(
     scenario: Scenario,
     seed: int = 0,
+    *,
     samples_per_workspace: int | None = None,
     n_seen: int | None = None,
     n_seen_test: int | None = None,
@@ -208,10 +211,9 @@ def make_splits(
     n_unseen = scenario.n_unseen if n_unseen is None else n_unseen
     seen = scenario.workspaces("seen", n_seen, seed)
     unseen = scenario.workspaces("unseen", n_unseen, seed)
+    label = partial(label_workspaces, scenario, samples_per_workspace=n, seed=seed, progress=progress)
     return {
-        "train": label_workspaces(scenario, seen, n, seed, "train_samples", progress, "train samples"),
-        "seen_test": label_workspaces(
-            scenario, seen[:n_seen_test], n, seed, "test_samples", progress, "seen test samples"
-        ),
-        "unseen_test": label_workspaces(scenario, unseen, n, seed, "unseen_samples", progress, "unseen test samples"),
+        "train": label(seen, stream="train_samples", desc="train samples"),
+        "seen_test": label(seen[:n_seen_test], stream="test_samples", desc="seen test samples"),
+        "unseen_test": label(unseen, stream="unseen_samples", desc="unseen test samples"),
     }

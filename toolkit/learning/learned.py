@@ -1,4 +1,4 @@
-"""The learned checker: the paper's online phase (§III-B, Algorithm 1 lines 1-6) behind the checker interface.
+"""The learned checker: the paper's predictor (§III-B, Algorithm 1 lines 1 and 3) behind the checker interface.
 
 :class:`LearnedChecker` encodes its workspace with the CAE once, at construction,
 and then answers ``are_valid(Q)`` for whole batches with one MLP pass, exactly like
@@ -41,12 +41,11 @@ class LearnedChecker(CollisionChecker):
             )
         super().__init__(scenario.robot)
         self.workspace, self.models = workspace, models
-        self.planner_options = models.preset.planner_options()  # how a planner uses this model (its recipe's)
         self.threshold = models.threshold if threshold is None else threshold
         device = models.predictor.threshold.device
         grid = torch.as_tensor(workspace.occupancy(), device=device)  # (*grid)
         self.workspace_mlp = WorkspaceMLP(models.predictor.eval(), grid)  # the workspace, encoded once
-        self._margins(self.robot.lower[None])  # a first call's one-off costs (lazy set-up) belong here
+        self.workspace_mlp(self.robot.lower[None])  # a first call's one-off costs (lazy set-up) belong here
 
     @property
     def threshold(self) -> float:
@@ -63,18 +62,11 @@ class LearnedChecker(CollisionChecker):
     def probability(self, Q) -> np.ndarray:
         """``(N,)`` P(valid) of configurations ``Q (N, dof)``; 0 outside the robot's bounds."""
         Q = self.robot.check_configs(Q)
-        return np.where(self.robot.in_bounds(Q), expit(self._margins(Q).astype(float)), 0.0)
+        return np.where(self.robot.in_bounds(Q), expit(self.workspace_mlp(Q).astype(float)), 0.0)
 
     def validity(self, Q: np.ndarray) -> np.ndarray:
-        return self.robot.in_bounds(Q) & (self._margins(Q) >= self._margin_threshold)
-
-    def _margins(self, Q: np.ndarray) -> np.ndarray:
-        """``(N,)`` float32 logit(valid) - logit(invalid), so P(valid) = sigmoid(margin); meaningless
-        outside the bounds.
-
-        Every row goes through the network, in or out of bounds: cheaper than selecting rows.
-        """
-        return self.workspace_mlp(Q)
+        # the margin logit(valid) - logit(invalid) (N,) of every row, in or out of bounds (cheaper than selecting)
+        return self.robot.in_bounds(Q) & (self.workspace_mlp(Q) >= self._margin_threshold)
 
 
 def load_checker(checkpoint_dir: str | Path, workspace: Workspace, threshold: float | None = None) -> LearnedChecker:

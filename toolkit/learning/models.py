@@ -164,6 +164,7 @@ class CollisionPredictor(nn.Module):
 def build_predictor(
     scenario: Scenario,
     encoding: str,
+    *,
     mlp_hidden: tuple[int, ...] | None = None,
     dropout: float = 0.5,
     latent_input: bool = True,

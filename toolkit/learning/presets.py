@@ -9,8 +9,7 @@ by validation on held-out training workspaces, never the unseen test (``toolkit 
 :mod:`toolkit.experiments.tuning`; its table is in ``docs/fidelity.md`` §5); the CAE's batch (10)
 and the decision threshold (0.5) are ours. One deviation: the CAE trains with AdamW at
 1e-4, because with Adagrad at the paper's rate it diverges or collapses to the all-free
-grid. Planning with and without the model is the paper's Algorithm 1
-(``planner="paper"``, :mod:`toolkit.planning.paper_prm`).
+grid.
 
 ``strong``: what it takes to make the idea work. Its CAE trains on thousands of
 generated grids (``cae_workspaces``) so it stops memorizing; its MLP sees
@@ -19,12 +18,12 @@ each link box is, by forward kinematics, instead of only ``z``, which once the M
 the patch adds nothing, so ``toolkit train`` leaves its CAE untrained unless asked
 (``--cae``). A small MLP (the learned checker must stay much faster than the exact
 one), 20x the labelled samples, AdamW with a cosine schedule, standardized inputs and
-a threshold calibrated on held-out training workspaces. Planning screens edges by
-prediction too (a lazy PRM, the paper's future work) and compares against the best
-exact planner, with the same laziness and rounds: only the checker differs.
+a threshold calibrated on held-out training workspaces.
 
-Why each choice, measured one change at a time: ``docs/design.md`` ("The presets") and
-``docs/fidelity.md`` (``toolkit ablate``).
+A preset says how to train a model, not how to plan with it: which planner each recipe plans
+with is the experiments' choice (:mod:`toolkit.experiments.planners`). Why each choice,
+measured one change at a time: ``docs/design.md`` ("The presets") and ``docs/fidelity.md``
+(``toolkit ablate``).
 """
 
 from __future__ import annotations
@@ -32,6 +31,8 @@ from __future__ import annotations
 import hashlib
 from dataclasses import dataclass
 
+from toolkit.learning.models import CollisionPredictor, build_predictor
+from toolkit.scenarios import Scenario
 from toolkit.util import registry
 
 
@@ -63,24 +64,19 @@ class Preset:
     standardize: bool = False  # MLP inputs scaled to zero mean, unit variance on the training data
     holdout: float = 0.0  # share of training workspaces kept from the MLP to calibrate its threshold
     latent_input: bool = True  # the MLP sees the CAE's z (the paper); False: only the patch and pose
-    screen_edges: bool = (
-        False  # planning with this model: learned edge screening (toolkit.prm), or the paper's exact edges
-    )
-    auxiliary: str = "exact"  # planning with this model: how rounds after the first sample (toolkit.prm.AUXILIARY)
-    exact_every: int = 4  # planning with this model, auxiliary "confirmed": how often a later round samples exactly
-    planner: str = (
-        "lazy"  # planning, with and without this model: "lazy" PRM or "paper" (Algorithm 1; toolkit.prm.PRMOptions)
-    )
     quick: bool = False  # shrunk for a quick run (toolkit.experiments.config.QUICK)
 
-    def planner_options(self) -> dict:
-        """The :class:`~toolkit.prm.PRMOptions` that planning with this model uses."""
-        return {
-            "planner": self.planner,
-            "screen_edges": self.screen_edges,
-            "auxiliary": self.auxiliary,
-            "exact_every": self.exact_every,
-        }
+    def build_predictor(self, scenario: Scenario) -> CollisionPredictor:
+        """Untrained networks of this recipe for ``scenario``: the CAE, the MLP's input encoding and the MLP, with the
+        recipe's sizes, dropout and initialization (what training starts from and a checkpoint's weights fill)."""
+        return build_predictor(
+            scenario,
+            self.encoding,
+            mlp_hidden=self.mlp_hidden,
+            dropout=self.dropout,
+            latent_input=self.latent_input,
+            mlp_init=self.mlp_init,
+        )
 
     def fingerprint(self) -> str:
         """8 hex digits that change with any setting: a cache keyed by it never serves a changed recipe."""
@@ -105,7 +101,6 @@ PRESETS: dict[str, Preset] = {
         standardize=False,
         cae_batch=10,
         cae_max_steps=1500,
-        planner="paper",
     ),
     "strong": Preset(
         "strong",
@@ -129,8 +124,6 @@ PRESETS: dict[str, Preset] = {
         standardize=True,
         holdout=0.1,
         latent_input=False,
-        screen_edges=True,
-        auxiliary="confirmed",
     ),
 }
 

@@ -23,7 +23,7 @@ from tqdm.auto import tqdm
 
 from toolkit.learning import data, metrics
 from toolkit.learning.data import CollisionDataset
-from toolkit.learning.models import CAE, CollisionPredictor, build_predictor
+from toolkit.learning.models import CAE, CollisionPredictor
 from toolkit.learning.presets import Preset
 from toolkit.scenarios import Scenario
 
@@ -80,9 +80,7 @@ def train_models(
         raise ValueError(f"the training split holds {train.scenario!r} data, not {scenario.name!r}")
     device = torch.device(device) if device is not None else default_device()
     torch.manual_seed(seed)
-    predictor = build_predictor(
-        scenario, preset.encoding, preset.mlp_hidden, preset.dropout, preset.latent_input, preset.mlp_init
-    ).to(device)
+    predictor = preset.build_predictor(scenario).to(device)
     shuffle = torch.Generator().manual_seed(seed)
     history: dict[str, list[float]] = {}
     if trained_cae is not None:
@@ -90,7 +88,7 @@ def train_models(
         history["cae"] = []
     elif cae if cae is not None else preset.latent_input:
         grids = (
-            torch.as_tensor(data.occupancy_grids(scenario, "cae_grids", preset.cae_workspaces, seed, progress))
+            torch.as_tensor(data.occupancy_grids(scenario, "cae_grids", preset.cae_workspaces, seed, progress=progress))
             if preset.cae_workspaces
             else torch.as_tensor(train.occupancy)
         ).to(device)
@@ -99,14 +97,14 @@ def train_models(
             grids,
             preset,
             shuffle,
-            progress,
+            progress=progress,
             max_steps=scenario.cae_max_steps,
             max_batch=scenario.cae_max_batch,
             max_lr=scenario.cae_max_lr,
         )
     n_holdout = int(round(preset.holdout * len(train.workspaces))) if len(train.workspaces) > 1 else 0
     fit, holdout = split_workspaces(train, len(train.workspaces) - n_holdout)
-    history["mlp"] = train_mlp(predictor, fit, preset, shuffle, progress)
+    history["mlp"] = train_mlp(predictor, fit, preset, shuffle, progress=progress)
     if n_holdout:
         predictor.threshold.fill_(calibrate_threshold(predictor, holdout))
     return TrainedModels(scenario, preset, predictor.cpu().eval(), seed, history)
@@ -117,6 +115,7 @@ def train_cae(
     grids: torch.Tensor,
     preset: Preset,
     shuffle: torch.Generator,
+    *,
     progress: bool = True,
     max_steps: int | None = None,
     max_batch: int | None = None,
@@ -134,12 +133,12 @@ def train_cae(
     # no weight decay or schedule of the optimizer here (those settings are the MLP's): Eq. (1)'s penalty is the CAE's
     return fit(
         cae.parameters(),
-        preset.cae_optimizer,
-        min(preset.cae_lr, max_lr or preset.cae_lr),
         batches,
         lambda idx: cae.loss(grids[idx].float(), preset.cae_lambda, preset.cae_loss),
-        progress,
-        f"CAE ({preset.name})",
+        optimizer_name=preset.cae_optimizer,
+        lr=min(preset.cae_lr, max_lr or preset.cae_lr),
+        progress=progress,
+        desc=f"CAE ({preset.name})",
     )
 
 
@@ -148,6 +147,7 @@ def train_mlp(
     dataset: CollisionDataset,
     preset: Preset,
     shuffle: torch.Generator,
+    *,
     progress: bool = True,
 ) -> list[float]:
     """Fit the MLP with cross-entropy on a dataset's samples, the CAE frozen; the mean loss of each epoch."""
@@ -162,14 +162,14 @@ def train_mlp(
     batches = _batches(len(X), preset.mlp_batch, preset.mlp_epochs, shuffle)
     losses = fit(
         mlp.parameters(),
-        preset.optimizer,
-        preset.lr,
         batches,
         lambda idx: nn.functional.cross_entropy(mlp(X[idx]), y[idx]),
-        progress,
-        f"MLP ({preset.name})",
-        preset.weight_decay,
-        preset.cosine_schedule,
+        optimizer_name=preset.optimizer,
+        lr=preset.lr,
+        progress=progress,
+        desc=f"MLP ({preset.name})",
+        weight_decay=preset.weight_decay,
+        cosine_schedule=preset.cosine_schedule,
     )
     mlp.eval()
     if preset.standardize:
@@ -219,9 +219,7 @@ def evaluate(models: TrainedModels, splits: dict[str, CollisionDataset]) -> dict
         result["cae"][f"{key}_acc"] = float(
             metrics.reconstruction_accuracy(predictor.cae(grids).cpu().numpy(), dataset.occupancy).mean()
         )
-        result["cae"][f"{key}_all_free"] = float(
-            np.mean(dataset.occupancy < 0)
-        )  # the accuracy of predicting "all free"
+        result["cae"][f"{key}_all_free"] = float(np.mean(dataset.occupancy < 0))  # the accuracy of "all free"
     uniform = splits.get("unseen_uniform") or data.validity_blind_split(models.scenario, splits["unseen_test"])
     result["mlp"]["unseen_uniform"] = classification_scores(models, uniform)
     return result
@@ -277,10 +275,11 @@ def _batches(n: int, batch: int, epochs: int, shuffle: torch.Generator) -> list[
 
 def fit(
     params,
-    optimizer_name: str,
-    lr: float,
     epochs: list[list[torch.Tensor]],
     loss_of,
+    *,
+    optimizer_name: str,
+    lr: float,
     progress: bool,
     desc: str,
     weight_decay: float = 0.0,

@@ -28,12 +28,12 @@ adds edges at the cost of their length and confirms them only when a candidate p
 later round twice as many, up to |S| = ``n_samples``, so an easy query is solved on a small
 roadmap; Algorithm 1 draws |S| every round.
 
-With prediction, rounds after the first sample as ``PRMOptions.auxiliary`` says (both planners
-read it): the default ``"confirmed"`` samples with prediction and keeps what the exact checker
-confirms, and every ``exact_every``-th round samples exactly; either keeps the planner
+With prediction, rounds after the first sample as ``auxiliary`` says (both planners read it):
+the lazy PRM's default, ``"confirmed"``, samples with prediction and keeps what the exact
+checker confirms, and every ``exact_every``-th round samples exactly; either keeps the planner
 probabilistically complete however poor the prediction.
 
-So the ``strong`` preset's "with / without" compares the same lazy planner, with the same rounds,
+So "with / without prediction" on the lazy PRM compares the same planner, with the same rounds,
 with and without prediction: only the checker differs. Checking many configurations in one call
 is what makes our checkers fast (a call's fixed cost dwarfs a configuration's), so the planner
 asks in batches wherever it can. What each choice buys, measured, is in ``docs/benchmarks.md``
@@ -45,6 +45,7 @@ from __future__ import annotations
 import numpy as np
 
 from toolkit.planning.local_planner import invalid_fractions
+from toolkit.planning.options import LazyPRMOptions
 from toolkit.planning.paper_prm import PRM
 from toolkit.planning.query_roadmap import QueryRoadmap
 
@@ -52,7 +53,8 @@ from toolkit.planning.query_roadmap import QueryRoadmap
 class LazyPRM(PRM):
     """Algorithm 1 with lazy edges (exact or screened by prediction) and growing rounds."""
 
-    name = "lazy"
+    Options = LazyPRMOptions
+    options: LazyPRMOptions
 
     def round_size(self, query: QueryRoadmap) -> int:
         """Sampler attempts this round: ``first_samples`` doubled each round up to |S| (None: |S| every round)."""

@@ -79,7 +79,7 @@ def check_edges(checker: CollisionChecker, Q0, Q1, resolution: float) -> np.ndar
     return valid
 
 
-def certify_edges(checker: CollisionChecker, Q0, Q1, resolution: float, spacing: float) -> np.ndarray:
+def certify_edges(checker: CollisionChecker, Q0, Q1, resolution: float, *, spacing: float) -> np.ndarray:
     """``(E,)`` bool: the answer of ``check_edges(checker, Q0, Q1, resolution)``, from far fewer checks.
 
     A clearance certificate (as in conservative advancement): the checker bounds the
@@ -159,7 +159,13 @@ def refute_at(checker: CollisionChecker, Q0, Q1, suspect: np.ndarray, resolution
 
 
 def last_valid_along(
-    checker: CollisionChecker, Q0: np.ndarray, Q1: np.ndarray, resolution: float, bisections: int = 0, chunk: int = 16
+    checker: CollisionChecker,
+    Q0: np.ndarray,
+    Q1: np.ndarray,
+    resolution: float,
+    *,
+    bisections: int = 0,
+    chunk: int = 16,
 ) -> np.ndarray:
     """``(E, dof)``: along each segment from a valid ``Q0[e]``, the last valid point before the first invalid one.
 

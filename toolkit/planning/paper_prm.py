@@ -13,7 +13,7 @@ Read this page beside the paper's Algorithm 1; each of its five lines is marked 
    each **checked exactly**, point by point at the local planner's ``resolution``, as it is
    added (:meth:`PRM.decide`). If the roadmap does not join start and goal, "create additional
    valid samples using auxiliary samplers": another round of the same sampler, its samples
-   checked exactly (``PRMOptions.auxiliary``; the ``paper`` preset's ``"exact"``);
+   checked exactly (``PRMOptions.auxiliary``, ``"exact"`` by default);
 5. extract a path from the roadmap, and (§III-B, "the path is extracted and verified") verify it
    with the exact checker, repairing what fails (:mod:`toolkit.planning.query_roadmap`).
 
@@ -41,20 +41,21 @@ from toolkit.planning.sampling import make_sampler
 class PRM:
     """The paper's PRM (Algorithm 1) over ``exact`` and, deciding samples, ``checker`` (default: ``exact``)."""
 
-    name = "paper"  # the PRMOptions.planner this class runs
+    Options = PRMOptions  # the settings this planner reads
 
     def __init__(
         self,
         exact: CollisionChecker,
         checker: CollisionChecker | None = None,
+        *,
         options: PRMOptions | None = None,
         sampler: str = "BS",
     ):
-        self.options = PRMOptions(planner=self.name) if options is None else options
-        if self.options.planner != self.name:
-            raise ValueError(
-                f"{type(self).__name__} runs planner {self.name!r}, but options.planner is "
-                f"{self.options.planner!r}; use toolkit.planning.prm.plan to choose by options"
+        self.options = self.Options() if options is None else options
+        if not isinstance(self.options, self.Options):
+            raise TypeError(
+                f"{type(self).__name__} reads {self.Options.__name__}, got {type(self.options).__name__}; "
+                "toolkit.planning.prm.plan runs the planner of the options' class"
             )
         self.exact = exact
         # Algorithm 1, line 1: a learned checker encoded the workspace (the CAE's z) when it was built

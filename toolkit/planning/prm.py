@@ -1,12 +1,13 @@
 """PRM with and without prediction: ``plan(exact, start, goal, ...)``, one entry to either planner.
 
-``options.planner`` chooses (:class:`~toolkit.planning.options.PRMOptions`):
+The options' class chooses the planner (:mod:`toolkit.planning.options`):
 
-- ``"paper"`` (``PAPER_BASELINE``): the paper's Algorithm 1 (§III-B), on one page in
+- :class:`~toolkit.planning.options.PRMOptions`: the paper's Algorithm 1 (§III-B), on one page in
   :mod:`toolkit.planning.paper_prm`: rounds of |S|, every candidate edge checked exactly as it
-  is added; the ``paper`` preset's planner, with and without its model (Table 3);
-- ``"lazy"`` (the default): the lazy PRM, :mod:`toolkit.planning.lazy_prm`: the best exact
-  planner, and with prediction learned edge screening (the paper's future work).
+  is added;
+- :class:`~toolkit.planning.options.LazyPRMOptions` (the default): the lazy PRM,
+  :mod:`toolkit.planning.lazy_prm`: the best exact planner, and with prediction learned edge
+  screening (the paper's future work).
 
 Both share one query's machinery (:mod:`toolkit.planning.query_roadmap`): connecting, bridging,
 and the exact verification and repair of the candidate path, so every returned path is valid
@@ -19,21 +20,18 @@ import numpy as np
 
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.planning.lazy_prm import LazyPRM
-from toolkit.planning.options import AUXILIARY, PAPER_BASELINE, PRMOptions
+from toolkit.planning.options import AUXILIARY, LazyPRMOptions, PRMOptions
 from toolkit.planning.paper_prm import PRM
 from toolkit.planning.query_roadmap import GOAL, STAGES, START, PlanResult, PlanStep
-
-PLANNER_CLASSES = {"paper": PRM, "lazy": LazyPRM}  # PRMOptions.planner -> the class that runs it
 
 __all__ = [
     "AUXILIARY",
     "GOAL",
-    "PAPER_BASELINE",
-    "PLANNER_CLASSES",
     "PRM",
     "STAGES",
     "START",
     "LazyPRM",
+    "LazyPRMOptions",
     "PRMOptions",
     "PlanResult",
     "PlanStep",
@@ -52,9 +50,9 @@ def plan(
     rng: np.random.Generator,
     trace: list | None = None,
 ) -> PlanResult:
-    """Solve one query ``start -> goal`` (``(dof,)`` each) with the planner ``options.planner`` names (default: the
+    """Solve one query ``start -> goal`` (``(dof,)`` each) with the planner of the ``options``' class (default: the
     lazy PRM); ``checker`` decides samples (default: ``exact``); a ``trace`` list receives a :class:`PlanStep` at
     every stage."""
-    options = PRMOptions() if options is None else options
-    planner = PLANNER_CLASSES[options.planner](exact, checker, options, sampler)
-    return planner.solve(start, goal, rng=rng, trace=trace)
+    options = LazyPRMOptions() if options is None else options
+    planner = LazyPRM if isinstance(options, LazyPRMOptions) else PRM  # the options' class says which
+    return planner(exact, checker, options=options, sampler=sampler).solve(start, goal, rng=rng, trace=trace)

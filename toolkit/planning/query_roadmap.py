@@ -185,6 +185,7 @@ class QueryRoadmap:
         pairs: np.ndarray,
         keep: np.ndarray,
         cost: np.ndarray,
+        *,
         checked_at: float = np.inf,
         suspect: np.ndarray | None = None,
     ) -> None:

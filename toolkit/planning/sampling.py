@@ -23,7 +23,7 @@ A new sampler is a subclass of :class:`Sampler` that overrides one method,
 ``self.valid(Q)`` (the bounds, then the checker, about a whole batch in one call) and may use
 the local planner's batched helpers; callers use ``sample(n_attempts, rng)``, which checks its
 arguments and calls ``draw``. :func:`register_sampler` gives the class a name, and then
-``make_sampler(name, checker)`` and ``toolkit.prm.plan(..., sampler=name)`` use it, with the
+``make_sampler(name, checker)`` and ``toolkit.planning.prm.plan(..., sampler=name)`` use it, with the
 exact or the learned checker alike (``tutorials/add_a_sampler.ipynb``).
 """
 
@@ -123,7 +123,7 @@ class ObstacleBasedSampler(Sampler):
         valid = self.valid(Q)
         pairs = min(n, int(valid.sum()), int((~valid).sum()))
         free, blocked = Q[valid][:pairs], Q[~valid][:pairs]
-        return last_valid_along(self.checker, free, blocked, self.resolution, self.bisections)
+        return last_valid_along(self.checker, free, blocked, self.resolution, bisections=self.bisections)
 
 
 class GaussianSampler(NearSampler):

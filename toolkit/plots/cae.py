@@ -103,6 +103,7 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
 
 def contraction(
     jacobian_norms: dict[str, np.ndarray],
+    *,
     flips: np.ndarray,
     latent_shift: dict[str, np.ndarray],
     decoded_change: dict[str, np.ndarray],

@@ -7,7 +7,7 @@ P(valid) >= a threshold. Against the exact checker each answer is one of four ki
   :func:`toolkit.learning.metrics.classification` does);
 - *valid rejected* (a false invalid): a **conservative** mistake, it only costs a sample;
 - *invalid kept* (a false valid): a **dangerous** mistake, a configuration in collision
-  that the planner would trust, unless it checks its path exactly (``toolkit.prm`` does).
+  that the planner would trust, unless it checks its path exactly (``toolkit.planning.prm`` does).
 
 The maps here sweep two degrees of freedom over their bounds (:func:`slice_grid`;
 the point robot's whole C-space, or a 2-DoF slice of a 3D robot with the other joints
@@ -16,7 +16,8 @@ every mistake at its cell, dangerous ones in red.
 
 >>> grid = slice_grid(robot, dofs=(0, 1), n=80)  # doctest: +SKIP
 >>> probability = grid.image(checker.probability(grid.configs))  # (80, 80)  # doctest: +SKIP
->>> probability_map(probability, grid.image(exact.are_valid(grid.configs)), grid, checker.threshold)  # doctest: +SKIP
+>>> valid = grid.image(exact.are_valid(grid.configs))  # (80, 80)  # doctest: +SKIP
+>>> probability_map(probability, valid, grid, threshold=checker.threshold)  # doctest: +SKIP
 """
 
 from __future__ import annotations
@@ -64,13 +65,13 @@ class CSpaceSlice:
         return np.asarray(values).reshape(self.shape)
 
 
-def slice_grid(robot: BoxRobot, dofs: tuple[int, int] = (0, 1), fixed=None, n: int = 80) -> CSpaceSlice:
+def slice_grid(robot: BoxRobot, dofs: tuple[int, int] = (0, 1), *, fixed=None, n: int = 80) -> CSpaceSlice:
     """The ``n x n`` grid over DoFs ``dofs`` of ``robot``, the others at ``fixed (dof,)`` (default: mid-bounds).
 
     The configurations of :func:`toolkit.plots.cspace.slice_configs` (notebook 01's slices), flattened.
     """
     fixed = (robot.lower + robot.upper) / 2 if fixed is None else fixed
-    values_i, values_j, Q = slice_configs(robot, fixed, dofs, n)  # (n,), (n,), (n, n, dof); checks the DoFs
+    values_i, values_j, Q = slice_configs(robot, fixed, dofs, resolution=n)  # (n,), (n,), (n, n, dof); checks the DoFs
     i, j = dofs
     return CSpaceSlice(
         (i, j),
@@ -135,13 +136,15 @@ def roc_points(probability, valid, thresholds=None) -> tuple[np.ndarray, np.ndar
     return ts, kept(p[~truth]) / (~truth).sum(), kept(p[truth]) / truth.sum()
 
 
-def probability_map(probability, valid, grid: CSpaceSlice, threshold: float = 0.5, title: str = "P(valid)") -> Figure:
+def probability_map(
+    probability, valid, grid: CSpaceSlice, *, threshold: float = 0.5, title: str = "P(valid)"
+) -> Figure:
     """P(valid) over a 2-DoF grid ``(nx, ny)``, the true C-obstacle boundary, the mistakes at ``threshold`` marked."""
-    return probability_maps({title: probability}, valid, grid, threshold)
+    return probability_maps({title: probability}, valid, grid, thresholds=threshold)
 
 
 def probability_maps(
-    probabilities: Mapping[str, np.ndarray], valid, grid: CSpaceSlice, thresholds: float | Mapping[str, float] = 0.5
+    probabilities: Mapping[str, np.ndarray], valid, grid: CSpaceSlice, *, thresholds: float | Mapping[str, float] = 0.5
 ) -> Figure:
     """Several models' P(valid) maps side by side, same grid and truth (e.g. the ``paper`` and ``strong`` presets)."""
     fig = Figure(figsize=(4.3 * len(probabilities) + 0.8, 4.7), layout="constrained")
@@ -156,7 +159,7 @@ def probability_maps(
 
 
 def path_map(
-    probability, valid, grid: CSpaceSlice, threshold: float, path, nodes, nodes_valid, title: str = ""
+    probability, valid, grid: CSpaceSlice, *, threshold: float, path, nodes, nodes_valid, title: str = ""
 ) -> Figure:
     """A planner's roadmap ``nodes (M, dof)`` and returned ``path (P, dof)`` over a P(valid) map of the grid's two DoFs.
 
@@ -210,7 +213,7 @@ def roc_curve(curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]], title:
     return fig
 
 
-def threshold_view(probability, valid, grid: CSpaceSlice, threshold: float, title: str = "") -> Figure:
+def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, title: str = "") -> Figure:
     """One threshold three ways: the decision map (each cell coloured by its kind of answer), the counts, the ROC."""
     predicted = np.asarray(probability) >= threshold
     fig = Figure(figsize=(13, 4.3), layout="constrained")

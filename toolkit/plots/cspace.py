@@ -151,7 +151,7 @@ def _nearby_blocks(workspace: Workspace, lo: np.ndarray, hi: np.ndarray) -> np.n
 
 
 def draw_robot(
-    ax, robot: BoxRobot, Q, colors: list[str], view: str = "3d", workspace: Workspace | None = None, margin: float = 1.0
+    ax, robot: BoxRobot, Q, *, colors: list[str], view: str = "3d", workspace: Workspace | None = None, margin=1.0
 ) -> None:
     """Draw the link boxes of configurations ``Q (k, dof)``, one colour each, and the blocks within ``margin`` of them,
     on one axes (the building block of :func:`robot_figure`, :func:`cspace_slice` and the scene figures).
@@ -223,6 +223,7 @@ def robot_figure(
     robot: BoxRobot,
     Q,
     workspace: Workspace | None = None,
+    *,
     valid=None,
     views: tuple[str, ...] | None = None,
     margin: float = 1.0,
@@ -245,7 +246,7 @@ def robot_figure(
     colors = _link_colors(len(Q), valid)
     for i, view in enumerate(views):
         ax = fig.add_subplot(1, len(views), i + 1, **({"projection": "3d"} if view == "3d" else {}))
-        draw_robot(ax, robot, Q, colors, view, workspace, margin)
+        draw_robot(ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin)
         ax.set_title(f"{robot.name}: {view}", fontsize=10)
     if labels is not None:
         handles = [Patch(facecolor=color, edgecolor="k", label=label) for color, label in zip(colors, labels)]
@@ -263,7 +264,7 @@ def _joint_bounds(robot: BoxRobot, joints: tuple[int, int]) -> tuple:
 
 
 def slice_configs(
-    robot: BoxRobot, q, joints: tuple[int, int], resolution: int, window: tuple | None = None
+    robot: BoxRobot, q, joints: tuple[int, int], *, resolution: int, window: tuple | None = None
 ) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
     """A grid over two DoF with the others fixed at ``q (dof,)``.
 
@@ -290,7 +291,7 @@ def _draw_cspace(
 ) -> np.ndarray:
     """Image of the slice, dark where the checker says "in collision"; returns validity ``(n, n)``."""
     robot = checker.robot
-    _, _, Q = slice_configs(robot, q, joints, resolution, window)  # (n, n, dof); checks the joints
+    _, _, Q = slice_configs(robot, q, joints, resolution=resolution, window=window)  # (n, n, dof); checks the joints
     window = window or _joint_bounds(robot, joints)
     valid = checker.are_valid(Q.reshape(-1, robot.dof)).reshape(Q.shape[:2])  # (n, n)
     ax.imshow(
@@ -337,6 +338,7 @@ def cspace_slice(
     checker: CollisionChecker,
     q,
     joints: tuple[int, int] = (0, 1),
+    *,
     resolution: int = 60,
     view: str | None = "xy",
     margin: float = 1.0,
@@ -370,7 +372,8 @@ def cspace_slice(
     )
     if view:
         robot_ax = fig.add_subplot(1, 2, 2, **({"projection": "3d"} if view == "3d" else {}))
-        draw_robot(robot_ax, robot, q[None], _link_colors(1, q_valid), view, checker_workspace(checker), margin)
+        colors, workspace = _link_colors(1, q_valid), checker_workspace(checker)
+        draw_robot(robot_ax, robot, q[None], colors=colors, view=view, workspace=workspace, margin=margin)
         robot_ax.set_title(f"the robot at the star ({view})", fontsize=9)
     fig.tight_layout()
     return fig

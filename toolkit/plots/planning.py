@@ -45,7 +45,7 @@ def cspace_validity(exact: CollisionChecker, pixels: int = 300) -> tuple[np.ndar
     robot = exact.robot
     if robot.dof != 2:
         raise ValueError(f"a 2D configuration-space figure needs a 2-DoF robot, got {robot.name!r} ({robot.dof} DoF)")
-    _, _, Q = slice_configs(robot, robot.lower, (0, 1), pixels)  # (W, H, 2): Q[a, b] = (x_a, y_b)
+    _, _, Q = slice_configs(robot, robot.lower, (0, 1), resolution=pixels)  # (W, H, 2): Q[a, b] = (x_a, y_b)
     valid = exact.are_valid(Q.reshape(-1, 2)).reshape(pixels, pixels).T  # (H, W)
     return valid, (robot.lower[0], robot.upper[0], robot.lower[1], robot.upper[1])
 
@@ -57,7 +57,7 @@ def _draw_cspace(ax, exact: CollisionChecker) -> None:
     ws = checker_workspace(exact)
     for lo, hi in ws.boxes:
         ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor="0.3", linewidth=0.8))
-    ax.add_patch(
+    ax.add_patch(  # the bounds of the robot's centre
         Rectangle(
             extent[::2],
             extent[1] - extent[0],
@@ -67,7 +67,7 @@ def _draw_cspace(ax, exact: CollisionChecker) -> None:
             linewidth=0.8,
             linestyle=":",
         )
-    )  # the bounds of the robot's centre
+    )
     ax.set_xlim(ws.lower[0], ws.upper[0])
     ax.set_ylim(ws.lower[1], ws.upper[1])
     ax.set_aspect("equal")

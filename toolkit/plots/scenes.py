@@ -101,10 +101,10 @@ def _draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, ax, along: np.ndarra
         fontsize=6,
         ncol=min(robot.dof, 5),
         loc="upper center",
-        bbox_to_anchor=(0.73, 0.93),
+        bbox_to_anchor=(0.73, 0.93),  # between the title and the panels
         frameon=False,
         handlelength=1.2,
-    )  # between the title and the panels
+    )
 
 
 def _draw_clearance(clearance: np.ndarray, ax, along: np.ndarray) -> None:
@@ -137,7 +137,7 @@ def _draw_scene(
 ) -> None:
     """The 3D panel of :func:`path_frame`: the robot at frame ``index`` among the blocks near it, its base's trace."""
     color = UNCHECKED_COLOR if valid is None else VALID_COLOR if valid else INVALID_COLOR
-    draw_robot(scene, robot, Q[index : index + 1], [color], "3d", workspace, margin)
+    draw_robot(scene, robot, Q[index : index + 1], colors=[color], view="3d", workspace=workspace, margin=margin)
     _draw_trace(scene, robot, Q)
     scene.set_title("the robot and the blocks near it", fontsize=9)
     scene.locator_params(nbins=4)  # few tick labels: drawing text is most of a frame's cost

@@ -49,7 +49,7 @@ def mesh_and_grid(workspace: MeshWorkspace, title: str = "") -> Figure:
 
 
 def samplers_in_a_passage(
-    exact: CollisionChecker, samples: dict[str, np.ndarray], passage: tuple, attempts: int | None = None
+    exact: CollisionChecker, samples: dict[str, np.ndarray], passage: tuple, *, attempts: int | None = None
 ) -> Figure:
     """One panel per sampler, its samples ``(M, 2)`` over the point robot's C-obstacles, the ``passage``
     ``((x0, y0), (x1, y1))`` outlined in red, with how many samples fell inside it in each panel's title."""

@@ -187,8 +187,8 @@ def grade(notebook: str | Path, assignment: str | None = None, timeout: float | 
             stdout=subprocess.PIPE,
             stderr=subprocess.STDOUT,
             text=True,
-            start_new_session=True,
-        )  # its own group: a timeout stops the kernel too
+            start_new_session=True,  # its own group: a timeout stops the kernel too
+        )
         try:
             log, _ = process.communicate(timeout=timeout)
         except subprocess.TimeoutExpired:

@@ -130,7 +130,7 @@ def trained_models(scenario: str, preset: str, *, seed: int = 0, progress: bool 
     config = run_config(scenario, preset, seed=seed, progress=progress)
     folder = _cached_folder(config)
     if folder.exists():
-        return checkpoints.load_models(folder, config.scenario.name)
+        return checkpoints.load_models(folder, config.scenario)
     tmp = folder.with_name(f"{folder.name}.{uuid.uuid4().hex}.tmp")  # another notebook may be training the same
     began = time.perf_counter()
     try:

@@ -10,10 +10,13 @@
 The robot's link boxes are colored by the exact checker (green valid, red in
 collision, §III). With a learned model (``checkpoint=`` from ``toolkit train``) a
 wireframe around them shows its predicted probability of validity and a label marks
-disagreements; samples are colored by exact vs predicted validity, and planning runs
-the paper's Algorithm 1 (§III-B). For a notebook, :meth:`Viewer.iframe` and :func:`embed` give
-a static snapshot and :meth:`Viewer.animation_iframe` the robot moving along the planned path,
-each a self-contained page that needs no server.
+disagreements; samples are colored by exact vs predicted validity. Planning runs the default
+planner, the lazy PRM of :func:`toolkit.planning.prm.plan`; with a model, the model decides samples
+and the planner is the one the experiments pair with its preset
+(:func:`toolkit.experiments.queries.default_options`: the paper's Algorithm 1, §III-B, for the
+``paper`` preset). For a notebook, :meth:`Viewer.iframe` and :func:`embed` give a static snapshot and
+:meth:`Viewer.animation_iframe` the robot moving along the planned path, each a self-contained
+page that needs no server.
 
 Reading order (each module imports only those above it):
 

@@ -198,17 +198,6 @@ PATH_VIEW = (-0.45, -1.0, 0.7)  # from the front-left and above; its length ~1.3
 ROBOT_SPAN = 4.0  # a robot's camera frames this many robot sizes: the robot, large, and the blocks beside it
 
 
-def path_camera(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
-    """``(look_at, position)`` of a camera that frames the robot at every configuration of ``Q (T, dof)``.
-
-    It looks at the middle of the links' bounds along the whole motion, from :data:`PATH_VIEW`
-    scaled by their largest extent: a small robot on a long path stays in the picture.
-    """
-    lo, hi = _swept_bounds(robot, Q)
-    look_at = (lo + hi) / 2
-    return look_at, look_at + float(np.max(hi - lo)) * np.array(PATH_VIEW)
-
-
 def robot_camera(robot: BoxRobot, q) -> tuple[np.ndarray, np.ndarray]:
     """``(look_at, position)`` of a camera that frames the robot at ``q (dof,)`` (a snapshot's), as
     :func:`follow_camera` does at each configuration of a motion."""

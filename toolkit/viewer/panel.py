@@ -11,7 +11,7 @@ vanishing in viser's worker threads.
 The sampler dropdowns offer the samplers registered when the panel is built
 (:data:`toolkit.planning.sampling.SAMPLERS`: the paper's four, §III-B, then any given to
 ``register_sampler``, in that order), so a sampler of your own can be picked, and planned
-with (Algorithm 1), like the paper's.
+with, like the paper's.
 """
 
 from __future__ import annotations
@@ -133,7 +133,7 @@ class Panel:
         self.status.content = text
 
     def on_plan(self, result) -> None:
-        """A plan is shown (Algorithm 1 when a model decides samples): report it and ready the path slider."""
+        """A plan is shown: report it and ready the path slider."""
         stats = result.stats
         self.plan_status.content = (
             f"{'path of ' + str(len(result.path)) + ' nodes' if result.success else '**no path found**'}; "

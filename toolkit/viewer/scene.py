@@ -3,8 +3,9 @@
 The scene answers the questions of the paper's §III in colors: the robot's link boxes are green where the exact
 checker calls the configuration valid and red where it finds a collision; with a learned model (``checkpoint=`` or
 ``predictor=``) a wireframe around the links shows its probability of validity, and samples are colored by exact vs
-predicted validity (:func:`toolkit.viewer.drawing.validity_colors`). :meth:`Viewer.plan` runs PRM, with the model
-deciding samples when one is loaded: the paper's Algorithm 1.
+predicted validity (:func:`toolkit.viewer.drawing.validity_colors`). :meth:`Viewer.plan` runs the default planner,
+the lazy PRM (:func:`toolkit.planning.prm.plan`); with a model loaded, the model decides samples and the planner is
+the one its preset is paired with (:func:`toolkit.experiments.queries.default_options`: Algorithm 1 for ``paper``).
 
 The viewer knows nothing of a GUI. It tells *listeners* what happened (:data:`EVENTS`, :meth:`Viewer.subscribe`);
 the panel (:mod:`toolkit.viewer.panel`) is one listener, a script or a test can be another, and any of them changes
@@ -23,10 +24,11 @@ import numpy as np
 import viser
 
 from toolkit import scenarios
+from toolkit.experiments import queries
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.geometry.robots import BASES
 from toolkit.geometry.workspace import Workspace
-from toolkit.planning import prm, queries
+from toolkit.planning import prm
 from toolkit.planning.local_planner import path_at
 from toolkit.planning.sampling import make_sampler
 from toolkit.viewer import drawing as draw
@@ -143,12 +145,12 @@ class Viewer:
             self.q = self.valid_configuration(rng, rest=True)
             self._aim_camera(*draw.camera_pose(self.robot, self.workspace, self.q))
             boxes = draw.robot_boxes(self.robot, self.q[None])
-            self._add("robot", draw.add_boxes(self.server.scene, "/robot/links", boxes, draw.VALID))
+            self._add("robot", draw.add_boxes(self.server.scene, "/robot/links", boxes, colors=draw.VALID))
             if self.model is not None:
                 self._add(
                     "prediction",
                     draw.add_boxes(
-                        self.server.scene, "/robot/prediction", boxes.scaled(HALO), draw.VALID, wireframe=True
+                        self.server.scene, "/robot/prediction", boxes.scaled(HALO), colors=draw.VALID, wireframe=True
                     ),
                 )
                 self.nodes["disagreement"] = self.server.scene.add_label(
@@ -241,21 +243,14 @@ class Viewer:
     def plan(self, sampler: str = "BS", *, seed: int = 0) -> prm.PlanResult:
         """Solve a paper-style query (§IV-A: valid start and goal far apart, from ``seed``) with PRM and show it.
 
-        With a model loaded this is Algorithm 1, with the planner settings the model asks for
-        (:func:`toolkit.planning.queries.default_options`); the returned path is verified
-        exactly either way. ``sampler``: any name :meth:`sample` takes but ``'raw'``.
+        Without a model this is the best exact planner (the lazy PRM); with one, the planner its recipe
+        is paired with (:func:`toolkit.experiments.queries.default_options`: Algorithm 1 for ``paper``). The
+        returned path is verified exactly either way. ``sampler``: any name :meth:`sample` takes but ``'raw'``.
         """
         rng = np.random.default_rng(seed)
         start, goal = queries.query_pairs(self.scenario, self.workspace, 1, rng)[0]
-        result = prm.plan(
-            self.exact,
-            start,
-            goal,
-            sampler=sampler,
-            checker=self.model,
-            options=queries.default_options(self.scenario, self.model),
-            rng=rng,
-        )
+        options = queries.default_options(self.scenario, self.model)
+        result = prm.plan(self.exact, start, goal, sampler=sampler, checker=self.model, options=options, rng=rng)
         self.show_plan(result)
         return result
 

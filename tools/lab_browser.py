@@ -3,8 +3,8 @@
 Used by ``tests/test_jupyterlab.py``, to make the README's screenshot, and to look at a
 whole rendered notebook, screen by screen (``--full-page``: ``lab_01.png``, ``lab_02.png``, ...)::
 
-    python -m toolkit.teaching.lab_browser notebooks/05_3d_scenes.ipynb --screenshot docs/jupyterlab.png
-    TOOLKIT_QUICK=1 python -m toolkit.teaching.lab_browser notebooks/02_cae_reconstruction.ipynb \\
+    python -m tools.lab_browser notebooks/05_3d_scenes.ipynb --screenshot docs/jupyterlab.png
+    TOOLKIT_QUICK=1 python -m tools.lab_browser notebooks/02_cae_reconstruction.ipynb \\
         --screenshot lab.png --full-page
 
 The notebook is copied into a temporary folder first (JupyterLab saves what it

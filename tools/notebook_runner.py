@@ -3,8 +3,8 @@
 The test suite runs every notebook and tutorial this way (in quick mode); the same
 command measures the running times the notebooks state in their first cell::
 
-    python -m toolkit.teaching.notebook_runner notebooks/02_cae_reconstruction.ipynb            # full size
-    python -m toolkit.teaching.notebook_runner --quick notebooks/*.ipynb tutorials/*.ipynb     # TOOLKIT_QUICK=1
+    python -m tools.notebook_runner notebooks/02_cae_reconstruction.ipynb            # full size
+    python -m tools.notebook_runner --quick notebooks/*.ipynb tutorials/*.ipynb     # TOOLKIT_QUICK=1
 
 It prints the wall-clock time and the kernel's CPU time: on a machine shared with
 other work the first grows with the load, the second hardly does.
@@ -117,7 +117,7 @@ def _poll_shell_in_slices(kc, every: float = 1.0) -> None:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(
-        prog="python -m toolkit.teaching.notebook_runner",
+        prog="python -m tools.notebook_runner",
         description="Run notebooks top to bottom and print each one's running time.",
     )
     parser.add_argument("notebooks", nargs="+", type=Path, help="notebook files (.ipynb)")

@@ -1,4 +1,4 @@
-"""mkdocs hooks of the course website (``mkdocs.yml``, built by :mod:`toolkit.teaching.site`).
+"""mkdocs hooks of the course website (``mkdocs.yml``, built by :mod:`tools.site`).
 
 Links: the sources link each other by their paths in the repository (``02_cae_reconstruction.ipynb``,
 ``../docs/results.md``, ``tutorials/assignments/``), and the site's source tree keeps those paths. mkdocs

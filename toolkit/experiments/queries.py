@@ -22,13 +22,17 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
+from typing import Any
 
 import numpy as np
 
+from toolkit.experiments import planners
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
+from toolkit.learning.learned import LearnedChecker
+from toolkit.learning.presets import Preset
 from toolkit.planning.local_planner import path_is_valid
 from toolkit.planning.prm import PlanResult, PRMOptions, plan
 from toolkit.planning.sampling import PAPER_SAMPLERS
@@ -60,7 +64,7 @@ class Query:
 
 
 def query_pairs(
-    scenario: Scenario, ws: Workspace, count: int, rng: np.random.Generator, min_separation: float = 0.25
+    scenario: Scenario, ws: Workspace, count: int, rng: np.random.Generator, *, min_separation: float = 0.25
 ) -> list[tuple[np.ndarray, np.ndarray]]:
     """``count`` (start, goal) pairs valid under the exact checker, base positions ``min_separation`` x diagonal
     apart."""
@@ -78,19 +82,33 @@ def query_pairs(
     raise RuntimeError(f"could not find {count} valid, separated start/goal pairs in this workspace")
 
 
-def default_options(scenario: Scenario, checker: CollisionChecker | None = None, **overrides) -> PRMOptions:
-    """The planner settings of a scenario: the paper's |S| and the scenario's local-planner resolution, and otherwise
-    :class:`~toolkit.planning.prm.PRMOptions`' defaults (the best exact planner: lazy edges, growing rounds); with a
-    ``checker`` that decides samples, the settings it asks for (``checker.planner_options``: a learned checker's are
-    its model's recipe's)."""
-    settings: dict[str, object] = {"n_samples": scenario.plan_samples, "resolution": scenario.plan_resolution}
-    if checker is not None:
-        settings.update(checker.planner_options)
-    return PRMOptions(**{**settings, **overrides})
+def default_options(scenario: Scenario, learned: CollisionChecker | None = None, **overrides) -> PRMOptions:
+    """The planner settings of a query in ``scenario``: without a ``learned`` checker, the best exact planner (the lazy
+    PRM) with the paper's |S| and the scenario's resolution; with a :class:`LearnedChecker`, the planner its model's
+    preset is paired with (:mod:`toolkit.experiments.planners`: Algorithm 1 for ``paper``); with a predictor of your
+    own, the lazy PRM. ``overrides``: fields of those options."""
+    preset = learned.models.preset if isinstance(learned, LearnedChecker) else None
+    return planner_options(scenario, preset, predicted=learned is not None, **overrides)
+
+
+def planner_options(
+    scenario: Scenario, preset: Preset | None = None, *, predicted: bool = False, **overrides
+) -> PRMOptions:
+    """The options of the planner that plans with ``preset``'s model (None: the best exact planner, the lazy PRM;
+    ``PRESETS["paper"]`` without ``predicted``: the paper's baseline, Algorithm 1): the paper's |S| and the
+    scenario's resolution, the pairing's settings with the model when ``predicted``, then ``overrides`` (fields of
+    the planner's options; an unknown one is an error naming the fields there are)."""
+    paired = planners.OWN_RECIPE if preset is None else planners.pairing(preset)
+    settings: dict[str, Any] = {"n_samples": scenario.plan_samples, "resolution": scenario.plan_resolution}
+    settings.update(paired.with_model if predicted else {}, **overrides)
+    known = {f.name for f in fields(paired.options)}
+    if unknown := sorted(set(settings) - known):
+        raise ValueError(f"unknown planner option(s) {unknown}; {paired.options.__name__} has {sorted(known)}")
+    return paired.options(**settings)
 
 
 def make_queries(
-    scenario: Scenario, seed: int = 0, n_workspaces: int | None = None, per_workspace: int | None = None
+    scenario: Scenario, *, seed: int = 0, n_workspaces: int | None = None, per_workspace: int | None = None
 ) -> list[Query]:
     """The paper's query set (counts default to the scenario's), reproducible from ``seed``."""
     n_workspaces = scenario.query_workspaces if n_workspaces is None else n_workspaces
@@ -106,13 +124,14 @@ def solve_query(
     scenario: Scenario,
     query: Query,
     sampler: str,
+    *,
     checker: CollisionChecker | None = None,
     options: PRMOptions | None = None,
     seed=0,
     exact: CollisionChecker | None = None,
 ) -> PlanResult:
-    """One query with ``sampler``; ``checker`` decides samples (None: the exact checker); by default the
-    scenario's settings and the planner options of the checker's preset (:func:`default_options`); ``exact``
+    """One query with ``sampler``; ``checker`` decides samples (None: the exact checker); ``options`` by default
+    :func:`default_options` of the scenario and the checker; ``exact``
     checks edges and paths (None: :func:`~toolkit.geometry.collision.exact_checker`)."""
     options = options or default_options(scenario, checker)
     return plan(
@@ -131,6 +150,7 @@ def run_queries(
     queries: list[Query],
     sampler: str,
     checker_factory: Callable[[Workspace], CollisionChecker] | None = None,
+    *,
     options: PRMOptions | None = None,
     seed: int = 0,
 ) -> tuple[list[dict], dict]:
@@ -142,7 +162,7 @@ def run_queries(
     Torch and numpy's BLAS run on one thread meanwhile (:func:`one_thread`). Returns
     per-query records and the summary.
     """
-    return run_interleaved(scenario, queries, sampler, {"run": checker_factory}, options, seed)["run"]
+    return run_interleaved(scenario, queries, sampler, {"run": checker_factory}, options=options, seed=seed)["run"]
 
 
 def run_interleaved(
@@ -150,6 +170,7 @@ def run_interleaved(
     queries: list[Query],
     sampler: str,
     factories: Mapping[str, Callable[[Workspace], CollisionChecker] | Mode | None],
+    *,
     options: PRMOptions | None = None,
     seed: int = 0,
 ) -> dict[str, tuple[list[dict], dict]]:
@@ -162,7 +183,7 @@ def run_interleaved(
     after the other, not that of runs made in turns. Per name: records and summary.
     """
     with one_thread():
-        records = _solve_all(scenario, queries, sampler, factories, options, seed)
+        records = _solve_all(scenario, queries, sampler, factories, options=options, seed=seed)
     return {name: (runs, summarize(runs)) for name, runs in records.items()}
 
 
@@ -183,6 +204,7 @@ def _solve_all(
     queries: list[Query],
     sampler: str,
     factories: Mapping[str, Callable[[Workspace], CollisionChecker] | Mode | None],
+    *,
     options: PRMOptions | None,
     seed: int,
 ) -> dict[str, list[dict]]:
@@ -204,8 +226,8 @@ def _solve_all(
                 scenario,
                 query,
                 sampler,
-                built.get(query.workspace_index),
-                mode.options or options,
+                checker=built.get(query.workspace_index),
+                options=mode.options or options,
                 seed=[int(seed), n],
                 exact=mode.exact(query.workspace, scenario.robot),
             )
@@ -256,6 +278,7 @@ def compare_prediction(
     scenario: Scenario,
     queries: list[Query],
     checker_factory: Callable[[Workspace], CollisionChecker] | Mode,
+    *,
     samplers=PAPER_SAMPLERS,
     options: PRMOptions | None = None,
     seed: int = 0,
@@ -265,7 +288,8 @@ def compare_prediction(
     ``checker_factory`` (a :class:`Mode` brings its own options)."""
     table = {}
     for sampler in samplers:
-        runs = run_interleaved(scenario, queries, sampler, {"without": None, "with": checker_factory}, options, seed)
+        modes = {"without": None, "with": checker_factory}
+        runs = run_interleaved(scenario, queries, sampler, modes, options=options, seed=seed)
         without, with_ = runs["without"][1], runs["with"][1]
         table[sampler] = {
             "without": without,

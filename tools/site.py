@@ -4,15 +4,15 @@
 
 1. :func:`assemble` gathers a source tree under ``build/site/docs`` that mirrors the repository's paths
    (so a link written in any source still points at its page): the README as the home page, the notebooks
-   and tutorials executed by :func:`~toolkit.teaching.notebook_runner.run_notebook` (the one way notebooks run;
+   and tutorials executed by :func:`~tools.notebook_runner.run_notebook` (the one way notebooks run;
    trained models come from the notebooks' cache), the assignments' student versions (what ``otter assign``
    hands out, never the master), docs/, one API reference page per package, and MathJax;
 2. :func:`render` runs mkdocs on it (``mkdocs.yml``: mkdocs-material, mkdocs-jupyter on the executed
-   notebooks, mkdocstrings on the docstrings); :mod:`toolkit.teaching.site_hooks` makes links land on pages
+   notebooks, mkdocstrings on the docstrings); :mod:`tools.site_hooks` makes links land on pages
    and keeps every page free of files from other hosts, so the site works from an intranet or from disk.
 
-    python -m toolkit.teaching.site --out site             # full size, as `make site`
-    python -m toolkit.teaching.site --quick --out site     # quick mode
+    python -m tools.site --out site             # full size, as `make site` (from the repository's root)
+    python -m tools.site --quick --out site     # quick mode
 """
 
 from __future__ import annotations
@@ -34,9 +34,9 @@ import nbformat
 
 from toolkit.teaching import grading
 from toolkit.teaching.notebook import QUICK_ENV, is_quick
-from toolkit.teaching.notebook_runner import NotebookRun, run_notebook
+from tools.notebook_runner import NotebookRun, run_notebook
 
-ROOT = Path(__file__).resolve().parents[2]
+ROOT = Path(__file__).resolve().parents[1]  # the repository (this file is tools/site.py)
 CONFIG = ROOT / "mkdocs.yml"
 PAGES = ("README.md", "docs/*.md", "docs/*.png", "tutorials/*.md", "tutorials/assignments/README.md")
 CHAPTERS = "notebooks/[0-9][0-9]_*.ipynb"
@@ -295,7 +295,7 @@ def render(docs: Path, out: Path) -> None:
 
 
 def main(argv: list[str] | None = None) -> int:
-    parser = argparse.ArgumentParser(prog="python -m toolkit.teaching.site", description="Build the course website.")
+    parser = argparse.ArgumentParser(prog="python -m tools.site", description="Build the course website.")
     parser.add_argument("--out", type=Path, default=ROOT / "site", help="where the site goes (default: site/)")
     parser.add_argument("--quick", action="store_true", help=f"quick-sized chapters (also when {QUICK_ENV}=1)")
     args = parser.parse_args(argv)

@@ -4,8 +4,10 @@ An assignment's master (``tutorials/assignments/<name>/<name>.ipynb``) holds its
 hidden tests; students get the student version ``otter assign`` writes (:func:`grading.build`).
 :func:`build_handout` writes the library, the notebooks, the tutorials, the docs and the files
 that install them, with every master replaced by its student version and no autograder, hidden
-test or solution in it. :func:`secret_lines` names the lines a master must not leak (its
-solutions and hidden tests) and :func:`find_secrets` finds them in any tree of files: the
+test or solution in it; the course's own tools (``tools/``: this module, the site builder, the
+notebook runner) and the test suite stay out, since a student needs the library, not what builds
+the course around it. :func:`secret_lines` names the lines a master must not leak (its solutions
+and hidden tests) and :func:`find_secrets` finds them in any tree of files: the
 handout, or a website built from the notebooks.
 """
 
@@ -24,7 +26,7 @@ from pathlib import Path
 from toolkit.teaching import grading
 
 ROOT = grading.ASSIGNMENTS.parents[1]  # the repository
-SHIPPED = (
+SHIPPED = (  # path prefixes a handout copies; not tools/ (the course's build tools) nor tests/
     "toolkit/",
     "notebooks/",
     "tutorials/",
