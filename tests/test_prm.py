@@ -265,7 +265,8 @@ def test_the_options_class_says_which_planner_runs():
     np.testing.assert_array_equal(default.roadmap.edges, lazy.roadmap.edges)
 
 
-def test_the_paper_preset_plans_with_the_papers_planner_and_the_strong_one_with_the_best_exact_planner():
+def test_the_paper_preset_plans_with_the_papers_planner_and_the_strong_one_with_the_best_exact_planner(monkeypatch):
+    from toolkit.experiments import planners
     from toolkit.learning import presets
 
     scenario = scenarios.get("3dc7")
@@ -283,6 +284,13 @@ def test_the_paper_preset_plans_with_the_papers_planner_and_the_strong_one_with_
     assert type(mine) is LazyPRMOptions and not mine.screen_edges and mine.auxiliary == "exact"
     with pytest.raises(ValueError, match=r"unknown planner option\(s\) \['screen_edges'\]; PRMOptions has"):
         queries_module.planner_options(scenario, presets.get("paper"), screen_edges=False)
+    monkeypatch.setattr(planners, "PAIRINGS", dict(planners.PAIRINGS))  # a recipe of yours, paired by name
+    planners.register("my-recipe", planners.Pairing(PRMOptions, {"auxiliary": "confirmed"}))
+    mine = queries_module.planner_options(scenario, own, predicted=True)
+    assert type(mine) is PRMOptions and mine.auxiliary == "confirmed"
+    assert type(queries_module.planner_options(scenario, own)) is PRMOptions  # its planner without the model too
+    with pytest.raises(ValueError, match="a planner pairing called 'paper' exists"):
+        planners.register("paper", planners.OWN_RECIPE)
 
 
 @pytest.mark.parametrize(

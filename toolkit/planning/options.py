@@ -26,9 +26,9 @@ AUXILIARY = {  # PRMOptions.auxiliary: how rounds after the first sample, with p
 
 
 RULES = {  # what a field must be: __post_init__ checks each field against its rule (``rules``)
-    "a positive integer": lambda v: int(v) == v >= 1,
-    "a positive integer or None": lambda v: v is None or int(v) == v >= 1,
-    "a non-negative integer": lambda v: int(v) == v >= 0,
+    "a positive integer": lambda v: int(v) == v and v >= 1,
+    "a positive integer or None": lambda v: v is None or (int(v) == v and v >= 1),
+    "a non-negative integer": lambda v: int(v) == v and v >= 0,
     "positive and finite": lambda v: bool(np.isfinite(v)) and v > 0,
     "positive and finite, or None": lambda v: v is None or (bool(np.isfinite(v)) and v > 0),
     "non-negative and finite": lambda v: bool(np.isfinite(v)) and v >= 0,
