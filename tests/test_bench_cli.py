@@ -50,7 +50,7 @@ def test_throughput_times_the_compiled_checker_beside_fcl_in_3d():
 
 def test_without_prediction_is_the_best_exact_planner_whatever_the_models_recipe(monkeypatch):
     """`bench --checkpoint`: "without" plans with the lazy PRM (and the default exact checker), "with" with the
-    recipe's planner (the paper preset's: Algorithm 1); an --option reaches both."""
+    planner paired with the recipe (the paper preset's: Algorithm 1); an --option reaches both where it applies."""
     seen = {}
 
     def fake_run(scenario, query_set, sampler, factories, *, options, seed):
@@ -84,6 +84,12 @@ def test_without_prediction_is_the_best_exact_planner_whatever_the_models_recipe
     assert isinstance(with_, queries.Mode) and type(with_.options) is PRMOptions  # Algorithm 1
     assert with_.exact is queries.exact_checker  # the default exact checker checks the edges
     assert seen["run_options"].max_rounds == with_.options.max_rounds == 3
+    one_planner = {"scenario": scenarios.get("2ds"), "models": models, "samplers": ("BS",)}
+    bench.planning_ratios(**one_planner, options_class=LazyPRMOptions, overrides={"screen_spacing": 4.0})  # --planner
+    assert type(seen["run_options"]) is type(seen["with"].options) is LazyPRMOptions
+    assert seen["with"].options.screen_spacing == 4.0 and seen["with"].options.auxiliary == "exact"  # paper's pairing
+    with pytest.raises(ValueError, match=r"unknown planner option\(s\) \['screen_spacing'\]; the planners read"):
+        bench.planning_ratios(**one_planner, options_class=PRMOptions, overrides={"screen_spacing": 4.0})
 
 
 def test_bench_at_a_sampler_sized_batch(capsys):
@@ -158,6 +164,8 @@ def test_bench_plans_with_chosen_samplers_and_planner_options(capsys, checkpoint
     assert set(result["planning"]) == {"BT"}
     assert set(row) >= {"sampling_ratio_median", "total_ratio_median", "rounds_with", "repairs_without"}
     assert row["rounds_with"] == row["rounds_without"] == 1  # the option reached both modes (the default: 20)
+    assert cli.main(args + ["--option", "max_rounds=1", "--planner", "paper"]) == 0  # both modes Algorithm 1
+    assert json.loads(capsys.readouterr().out)["planning_options"] == {"max_rounds": 1, "planner": "paper"}
 
 
 def test_bench_names_a_bad_planner_option_or_sampler(capsys, checkpoint_2ds):

@@ -98,6 +98,13 @@ def test_numbers_are_checked_by_the_parser_with_the_flag_named(argv, message, ca
     assert capsys.readouterr().err.strip().endswith(message)
 
 
+def test_plan_refuses_a_checkpoint_of_another_scenario_by_name(checkpoint_2ds, capsys):
+    args = ["plan", "--scenario", "3dc7", "--sampler", "BS", "--predict", "--checkpoint", str(checkpoint_2ds)]
+    assert cli.main([*args, "--seed", "0"]) == 2
+    err = capsys.readouterr().err
+    assert f"checkpoint {checkpoint_2ds} was trained for scenario '2ds', not '3dc7'" in err
+
+
 def test_view_refuses_a_bad_checkpoint_in_the_terminal_before_serving(tmp_path, checkpoint_2ds, capsys, monkeypatch):
     def no_server(*args, **kwargs):
         raise AssertionError("a server was started")

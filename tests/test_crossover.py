@@ -17,6 +17,7 @@ from toolkit.experiments import crossover
 from toolkit.experiments.config import QUICK
 from toolkit.geometry import robots
 from toolkit.geometry.workspace import MeshWorkspace
+from toolkit.learning import presets
 
 QUICK_VALUES = {  # what each variable takes at quick sizes (config.QUICK.crossover)
     "obstacles": [10, 100],
@@ -29,7 +30,7 @@ COLUMNS = {"label", "values", "exact_us", "fcl_us", "learned_us", "disagreements
 
 @pytest.fixture(scope="module")
 def swept():
-    return crossover.crossover(scenarios.get("3dc7"), quick=True)
+    return crossover.crossover(scenarios.get("3dc7"), presets.get("paper"), quick=True)
 
 
 def test_a_quick_sweep_measures_every_variable_at_its_values(swept):
@@ -89,7 +90,7 @@ def test_the_chains_of_one_and_three_joints_are_the_papers(n_joints):
 
 def test_sizes_of_ones_own_set_what_is_swept():
     sizes = dataclasses.replace(crossover.CrossoverSizes.quick(), obstacles=(5, 15, 40), batch=300)
-    swept = crossover.crossover(scenarios.get("2ds"), variables=("obstacles",), sizes=sizes)
+    swept = crossover.crossover(scenarios.get("2ds"), presets.get("paper"), variables=("obstacles",), sizes=sizes)
     assert swept["quick"] is False and swept["batch"] == 300
     assert list(swept["variables"]) == ["obstacles"] and swept["variables"]["obstacles"]["values"] == [5, 15, 40]
 
@@ -107,7 +108,7 @@ def test_a_longer_chain_and_bad_sizes_are_named():
 def test_2d_sweeps_obstacles_and_the_batch_only():
     assert crossover.variables_of(scenarios.get("2ds")) == ("obstacles", "batch")
     with pytest.raises(ValueError, match=r"variable\(s\) \['links'\] do not apply to 2ds"):
-        crossover.crossover(scenarios.get("2ds"), quick=True, variables=("links",))
+        crossover.crossover(scenarios.get("2ds"), presets.get("paper"), quick=True, variables=("links",))
 
 
 def test_crossing_interpolates_log_log_between_the_measured_values():

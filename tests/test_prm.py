@@ -258,6 +258,8 @@ def test_the_options_class_says_which_planner_runs():
     assert paper.stats["exact_checks"] > 5 * lazy.stats["exact_checks"]
     with pytest.raises(TypeError, match=r"LazyPRM reads LazyPRMOptions, got PRMOptions"):
         LazyPRM(exact, options=PRMOptions())
+    with pytest.raises(TypeError, match=r"PRM reads PRMOptions, got LazyPRMOptions"):  # its fields are another's
+        PRM(exact, options=LazyPRMOptions())
     assert type(PRM(exact).options) is PRMOptions and type(LazyPRM(exact).options) is LazyPRMOptions
     # the trap of the single options class: the paper's planner with its own options, made by hand
     assert PRM(exact, options=PRMOptions(n_samples=100)).options.n_samples == 100
@@ -279,8 +281,11 @@ def test_the_paper_preset_plans_with_the_papers_planner_and_the_strong_one_with_
     assert type(strong) is LazyPRMOptions
     assert (strong.first_samples, strong.lazy_screen) == (best.first_samples, best.lazy_screen)
     assert strong.screen_edges and strong.auxiliary == "confirmed"
-    own = dataclasses.replace(presets.get("strong"), name="my-recipe")  # not paired: the lazy PRM, samples only
-    mine = queries_module.planner_options(scenario, own, predicted=True)
+    derived = dataclasses.replace(presets.get("paper"), name="paper-wider", mlp_hidden=(64, 64))
+    assert derived.origin == "paper"  # made from paper: planned as paper is
+    assert type(queries_module.planner_options(scenario, derived, predicted=True)) is PRMOptions
+    own = presets.Preset(**{**dataclasses.asdict(presets.get("strong")), "name": "my-recipe", "origin": ""})
+    mine = queries_module.planner_options(scenario, own, predicted=True)  # made from scratch: the lazy PRM, samples
     assert type(mine) is LazyPRMOptions and not mine.screen_edges and mine.auxiliary == "exact"
     with pytest.raises(ValueError, match=r"unknown planner option\(s\) \['screen_edges'\]; PRMOptions has"):
         queries_module.planner_options(scenario, presets.get("paper"), screen_edges=False)
@@ -330,6 +335,36 @@ def test_rounds_after_the_first_sample_as_options_auxiliary_says(options, source
         else:
             assert exact.n_checked == 0
         assert exact.are_valid(S).all() == vouched  # 30 % lies: predicted samples include invalid ones
+
+
+def test_a_planner_of_your_own_runs_for_its_own_options_class(monkeypatch):
+    """``prm.register_planner``: ``plan`` runs the planner whose ``Options`` class the options are, exactly; options
+    of a class no planner reads are refused by name."""
+
+    @dataclasses.dataclass
+    class WideOptions(LazyPRMOptions):
+        widen: int = 2  # k is multiplied by this
+
+    class WidePRM(LazyPRM):
+        name, Options = "wide", WideOptions
+
+        def __init__(self, exact, checker=None, *, options=None, sampler="BS"):
+            super().__init__(exact, checker, options=options, sampler=sampler)
+            self.options = dataclasses.replace(self.options, k=self.options.k * self.options.widen)
+
+    monkeypatch.setattr(prm, "PLANNERS", dict(prm.PLANNERS))
+    scenario = scenarios.get("2ds")
+    q = make_queries(scenario, seed=0, n_workspaces=1, per_workspace=1)[0]
+    exact = exact_checker(q.workspace, scenario.robot)
+    with pytest.raises(TypeError, match="no planner reads WideOptions"):
+        plan(exact, q.start, q.goal, options=WideOptions(), rng=np.random.default_rng(0))
+    prm.register_planner(WidePRM)
+    wide = plan(exact, q.start, q.goal, options=WideOptions(widen=3), rng=np.random.default_rng(0))
+    lazy = plan(exact, q.start, q.goal, options=LazyPRMOptions(k=30), rng=np.random.default_rng(0))
+    np.testing.assert_array_equal(wide.roadmap.edges, lazy.roadmap.edges)  # the same planner with 3 x 10 neighbours
+    assert prm.PLANNERS[WideOptions] is WidePRM
+    with pytest.raises(ValueError, match="planner 'lazy' reads LazyPRMOptions already"):
+        prm.register_planner(type("Copy", (LazyPRM,), {"name": "copy"}))
 
 
 def test_same_seed_same_result():
@@ -456,6 +491,8 @@ def test_bad_input_gives_clear_errors():
         (dict(rebridge=-1), "rebridge must be a non-negative integer"),
         (dict(rebridge=1.5), "rebridge must be"),
         (dict(first_samples=0), "first_samples must be a positive integer"),
+        (dict(certify_spacing=None), "certify_spacing must be positive and finite, got None"),  # TypeError inside
+        (dict(n_samples="many"), "n_samples must be a positive integer, got 'many'"),  # ValueError inside
     ]:
         with pytest.raises(ValueError, match=f"LazyPRMOptions.{match}"):
             LazyPRMOptions(**bad)

@@ -126,7 +126,7 @@ def test_the_animation_keeps_the_robot_framed_by_sliding_the_scene_under_the_cam
     np.testing.assert_allclose(camera["position"] - camera["look_at"], positions[0] - looks[0])
     np.testing.assert_allclose(looks, v.robot.link_boxes(Q)[0].mean(axis=1))  # the middle of the robot's links
     distance = np.linalg.norm(positions - looks, axis=1)
-    np.testing.assert_allclose(distance, draw.ROBOT_SPAN * 0.5 * np.linalg.norm(draw.PATH_VIEW))  # the chain: 0.5 long
+    np.testing.assert_allclose(distance, draw.ROBOT_SPAN * 0.5 * np.linalg.norm(draw.ROBOT_VIEW))  # the chain: 0.5 long
 
 
 def test_a_snapshot_starts_framing_the_robot_and_leaves_the_live_camera_alone(planned):

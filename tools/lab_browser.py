@@ -134,9 +134,8 @@ def jupyterlab(root: Path, env: dict[str, str] | None = None, timeout_s: float =
         command.append("--allow-root")
     url = f"http://127.0.0.1:{port}"
     with tempfile.TemporaryFile() as log:
-        server = subprocess.Popen(
-            command, env=env, stdout=log, stderr=subprocess.STDOUT, start_new_session=True
-        )  # its kernels share its process group: one signal stops all
+        # start_new_session: its kernels share its process group, so one signal stops all
+        server = subprocess.Popen(command, env=env, stdout=log, stderr=subprocess.STDOUT, start_new_session=True)
         try:
             yield _wait_until_up(server, log, url, token, timeout_s)
         finally:

@@ -8,7 +8,7 @@ from __future__ import annotations
 import argparse
 
 from toolkit.cli.arguments import SCENARIO_HELP, int_in, planner_option, preset, sampler_list, scenario, seed
-from toolkit.planning import sampling
+from toolkit.planning import prm, sampling
 
 CROSSOVER_SCENARIO = "3dc9"  # --crossover without --scenario: the paper's dearest clutter check
 
@@ -71,6 +71,12 @@ def bench_planning_options(cmd: argparse.ArgumentParser) -> None:
         default=sampling.PAPER_SAMPLERS,
         metavar="LIST",
         help="with --checkpoint: comma-separated samplers to plan with, e.g. BT,OB (default: the paper's four)",
+    )
+    cmd.add_argument(
+        "--planner",
+        choices=[planner.name for planner in prm.PLANNERS.values()],
+        help="with --checkpoint: plan with and without the model with this planner (paper: Algorithm 1; lazy: "
+        "the lazy PRM); default: the lazy PRM without it, the planner paired with its recipe with it",
     )
 
 

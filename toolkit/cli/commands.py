@@ -34,6 +34,7 @@ def _config(args: argparse.Namespace, scenario: str, **settings) -> RunConfig:
 def cmd_bench(args: argparse.Namespace) -> int:
     from toolkit.experiments import bench
     from toolkit.learning import checkpoints, presets
+    from toolkit.planning import prm
 
     if args.crossover:
         return _bench_crossover(args)
@@ -66,8 +67,9 @@ def cmd_bench(args: argparse.Namespace) -> int:
             seed=args.seed,
             samplers=args.samplers,
             overrides=dict(args.option),
+            options_class=next((o for o, p in prm.PLANNERS.items() if p.name == args.planner), None),
         )
-        result["planning_options"] = dict(args.option)
+        result["planning_options"] = dict(args.option, **({"planner": args.planner} if args.planner else {}))
     print(json.dumps(result) if args.json else "\n".join(f"{k}: {v}" for k, v in result.items()))
     return 0
 
@@ -82,7 +84,8 @@ def _bench_crossover(args: argparse.Namespace) -> int:
 
     out = outputs.writable_folder(args.out, "--out") if args.out else None  # before minutes of timing
     scenario = scenarios.get(args.scenario or CROSSOVER_SCENARIO)
-    results = crossover.crossover(scenario, presets.get(args.preset), args.seed, args.quick, variables=args.variables)
+    recipe = presets.get(args.preset)
+    results = crossover.crossover(scenario, recipe, seed=args.seed, quick=args.quick, variables=args.variables)
     if out is not None:
         outputs.write_json(out / "crossover.json", results)
         plots.crossover(results).savefig(out / "crossover.png", dpi=110)
@@ -111,9 +114,9 @@ def cmd_plan(args: argparse.Namespace) -> int:
     query = queries.make_queries(scenario, seed=args.seed, n_workspaces=1, per_workspace=1)[0]
     checker = None
     if args.predict:
-        from toolkit.learning import learned
+        from toolkit.learning import checkpoints, learned
 
-        checker = learned.load_checker(args.checkpoint, query.workspace)
+        checker = learned.LearnedChecker(query.workspace, checkpoints.load_models(args.checkpoint, scenario))
     result = queries.solve_query(scenario, query, args.sampler, checker=checker, seed=args.seed)
     out = {
         "scenario": scenario.name,

@@ -169,7 +169,7 @@ def untrained_models(scenario: Scenario, preset: Preset, seed: int = 0) -> Train
     return TrainedModels(scenario, preset, preset.build_predictor(scenario).eval(), seed)
 
 
-def edge_checks(scenario: Scenario, n_segments: int = 300, seed: int = 0, repeats: int = 5) -> dict[str, dict]:
+def edge_checks(scenario: Scenario, *, n_segments: int = 300, seed: int = 0, repeats: int = 5) -> dict[str, dict]:
     """``check_edges`` against ``certify_edges`` (same answers) at the planner's resolution and 10x finer.
 
     On ``n_segments`` segments between valid configurations of a query workspace, 3 %
@@ -235,6 +235,7 @@ def planning_ratios(
     seed: int = 0,
     samplers: tuple[str, ...] = sampling.PAPER_SAMPLERS,
     overrides: dict | None = None,
+    options_class: type[PRMOptions] | None = None,
 ) -> dict[str, dict]:
     """Per sampler, PRM on the first queries of the paper's set, with ``models`` and without, in turns:
     ``{"sampling_ratio", "total_ratio"}`` (with / without, mean times), the same of the medians, both
@@ -242,30 +243,40 @@ def planning_ratios(
 
     Without prediction is the strongest exact planner and checker: the lazy PRM with the default exact checker
     (compiled), whatever the model's recipe plans with; with prediction, the planner the recipe is paired with
-    (:mod:`toolkit.experiments.planners`: the ``paper`` preset's is Algorithm 1). ``overrides`` (planner options)
-    apply to both modes where their options have the field: the same queries with one option changed measure what
-    that option does. ``samplers``: the paper's four by default, or any registered ones
+    (:mod:`toolkit.experiments.planners`: the ``paper`` preset's is Algorithm 1). ``options_class`` makes both
+    modes one planner (``PRMOptions``: Algorithm 1). ``overrides`` (planner options) apply to each mode whose
+    planner reads them (an option neither reads is an error): the same queries with one option changed measure
+    what that option does. ``samplers``: the paper's four by default, or any registered ones
     (``sampling.register_sampler``).
     """
     samplers = sampling.check_names(samplers)
     overrides = overrides or {}
-    known = {f.name for f in dataclasses.fields(LazyPRMOptions)}  # every planner's options are among these
-    if unknown := sorted(set(overrides) - known):
-        raise ValueError(f"unknown planner option(s) {unknown}; choose from {sorted(known)}")
-    without = queries.planner_options(scenario, **overrides)
-    with_ = queries.planner_options(scenario, models.preset, predicted=True, **_applicable(overrides, models.preset))
+    planner = {
+        "without": options_class or LazyPRMOptions,
+        "with": options_class or planners.pairing(models.preset).options,
+    }
+    reads = {mode: {f.name for f in dataclasses.fields(cls)} for mode, cls in planner.items()}
+    if unread := sorted(set(overrides) - reads["without"] - reads["with"]):
+        raise ValueError(
+            f"unknown planner option(s) {unread}; the planners read {sorted(reads['without'] | reads['with'])}"
+        )
+    options = {
+        mode: queries.planner_options(
+            scenario,
+            preset,
+            predicted=preset is not None,
+            options_class=planner[mode],
+            **{name: value for name, value in overrides.items() if name in reads[mode]},
+        )
+        for mode, preset in (("without", None), ("with", models.preset))
+    }
     per_workspace = min(per_workspace, scenario.queries_per_workspace)
     query_set = queries.make_queries(scenario, seed=seed, n_workspaces=n_workspaces, per_workspace=per_workspace)
-    learned = queries.Mode(lambda ws: LearnedChecker(ws, models), options=with_)
-    table = queries.compare_prediction(scenario, query_set, learned, samplers=samplers, options=without, seed=seed)
+    learned = queries.Mode(lambda ws: LearnedChecker(ws, models), options=options["with"])
+    table = queries.compare_prediction(
+        scenario, query_set, learned, samplers=samplers, options=options["without"], seed=seed
+    )
     return {sampler: prediction_ratios(row) for sampler, row in table.items()}
-
-
-def _applicable(overrides: dict, preset: Preset) -> dict:
-    """The ``overrides`` that the planner paired with ``preset`` reads (the lazy PRM's own fields mean nothing to
-    Algorithm 1)."""
-    known = {f.name for f in dataclasses.fields(planners.pairing(preset).options)}
-    return {name: value for name, value in overrides.items() if name in known}
 
 
 def prediction_ratios(row: dict) -> dict[str, float]:

@@ -41,7 +41,6 @@ from toolkit.experiments.queries import one_thread
 from toolkit.geometry.collision import FCLChecker, exact_checker
 from toolkit.geometry.robots import BIG, CHAIN_JOINT_LIMITS, SMALL, BoxRobot, Joint
 from toolkit.geometry.workspace import MeshWorkspace, Workspace, from_mesh
-from toolkit.learning import presets
 from toolkit.learning.learned import LearnedChecker
 from toolkit.learning.presets import Preset
 from toolkit.learning.training import TrainedModels
@@ -194,10 +193,10 @@ def sweep(scenario: Scenario, variable: str, *, sizes: CrossoverSizes, preset: P
 
 def crossover(
     scenario: Scenario,
-    preset: Preset = presets.PRESETS["paper"],
+    preset: Preset,
+    *,
     seed: int = 0,
     quick: bool = False,
-    *,
     variables: tuple[str, ...] = (),
     sizes: CrossoverSizes | None = None,
 ) -> dict:

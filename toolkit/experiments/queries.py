@@ -92,19 +92,24 @@ def default_options(scenario: Scenario, learned: CollisionChecker | None = None,
 
 
 def planner_options(
-    scenario: Scenario, preset: Preset | None = None, *, predicted: bool = False, **overrides
+    scenario: Scenario,
+    preset: Preset | None = None,
+    *,
+    predicted: bool = False,
+    options_class: type[PRMOptions] | None = None,
+    **overrides,
 ) -> PRMOptions:
-    """The options of the planner that plans with ``preset``'s model (None: the best exact planner, the lazy PRM;
-    ``PRESETS["paper"]`` without ``predicted``: the paper's baseline, Algorithm 1): the paper's |S| and the
-    scenario's resolution, the pairing's settings with the model when ``predicted``, then ``overrides`` (fields of
-    the planner's options; an unknown one is an error naming the fields there are)."""
-    paired = planners.OWN_RECIPE if preset is None else planners.pairing(preset)
+    """Options of the planner paired with ``preset`` (:mod:`~toolkit.experiments.planners`; None: the lazy PRM) or of
+    ``options_class`` (``PRMOptions``: Algorithm 1): the paper's |S| and the scenario's resolution, the pairing's
+    settings with the model when ``predicted``, then ``overrides`` (one the planner does not read is an error)."""
+    paired = planners.Pairing() if preset is None else planners.pairing(preset)
+    options_class = options_class or paired.options
+    known = {f.name for f in fields(options_class)}
     settings: dict[str, Any] = {"n_samples": scenario.plan_samples, "resolution": scenario.plan_resolution}
-    settings.update(paired.with_model if predicted else {}, **overrides)
-    known = {f.name for f in fields(paired.options)}
-    if unknown := sorted(set(settings) - known):
-        raise ValueError(f"unknown planner option(s) {unknown}; {paired.options.__name__} has {sorted(known)}")
-    return paired.options(**settings)
+    settings.update({name: value for name, value in paired.with_model.items() if predicted and name in known})
+    if unknown := sorted(set(overrides) - known):
+        raise ValueError(f"unknown planner option(s) {unknown}; {options_class.__name__} has {sorted(known)}")
+    return options_class(**{**settings, **overrides})
 
 
 def make_queries(

@@ -42,9 +42,10 @@ from toolkit.experiments.stages import Stages, check_out
 from toolkit.experiments.tables import BASELINE
 from toolkit.experiments.workers import processes
 from toolkit.geometry.collision import FCLChecker, exact_checker
-from toolkit.learning import checkpoints, presets, training
+from toolkit.learning import checkpoints, training
 from toolkit.learning.data import SPLITS, CollisionDataset
 from toolkit.learning.learned import LearnedChecker
+from toolkit.planning.options import PRMOptions
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.util import outputs, plugins
 
@@ -114,11 +115,12 @@ def planning_stage(stages: Stages, config: RunConfig, models: training.TrainedMo
     """Stage 4: every sampler without and with prediction on the query set, the two in turns query by query.
 
     Samplers not yet in the cache go to ``config.workers`` processes (default one per
-    core, each timing its own queries; each receives the models trained above) when
-    there are several; each sampler's results are cached as soon as they arrive.
+    core, each timing its own queries; each receives the planning modes built here, with
+    the models trained above) when there are several; each sampler's results are cached
+    as soon as they arrive.
     """
     todo = [s for s in config.samplers if not stages.has(f"planning_{s}")]
-    job = partial(plan_sampler, config, models)
+    job = partial(plan_sampler, config, planning_modes(config, models))  # built here: a worker plans them as they are
     workers = config.workers or os.cpu_count() or 1
     with (
         tqdm(total=len(todo), desc=f"planning {config.scenario.name}", disable=not stages.progress, leave=False) as bar,
@@ -135,17 +137,16 @@ def planning_stage(stages: Stages, config: RunConfig, models: training.TrainedMo
     return {s: stages.load(f"planning_{s}") for s in config.samplers}
 
 
-def plan_sampler(config: RunConfig, models: training.TrainedModels, sampler: str) -> tuple[str, dict, float]:
-    """One sampler over the query set, its :func:`planning_modes` in turns (also in a worker process, which first
-    imports ``config.imports`` to register what the parent registered): the sampler, ``{"without": summary, "with":
-    summary}`` (and ``"baseline"``) and seconds."""
+def plan_sampler(config: RunConfig, modes: dict[str, queries.Mode], sampler: str) -> tuple[str, dict, float]:
+    """One sampler over the query set, the ``modes`` (:func:`planning_modes`) in turns (also in a worker process,
+    which first imports ``config.imports`` to register what the parent registered, e.g. a sampler): the sampler,
+    ``{"without": summary, "with": summary}`` (and ``"baseline"``) and seconds."""
     began = time.perf_counter()
     for module in config.imports:
         plugins.import_module(module)
     scenario = config.scenario
     n_workspaces, per_workspace = config.query_counts()
     query_set = queries.make_queries(scenario, seed=config.seed, n_workspaces=n_workspaces, per_workspace=per_workspace)
-    modes = planning_modes(config, models)
     runs = queries.run_interleaved(scenario, query_set, sampler, modes, seed=config.seed)
     return sampler, {mode: runs[mode][1] for mode in modes}, time.perf_counter() - began
 
@@ -166,7 +167,7 @@ def planning_modes(config: RunConfig, models: training.TrainedModels) -> dict[st
     }
     if config.baseline != "best":
         exact = FCLChecker if config.baseline == "paper-fcl" else exact_checker
-        algorithm_1 = queries.planner_options(scenario, presets.PRESETS["paper"], **settings)  # no model
+        algorithm_1 = queries.planner_options(scenario, options_class=PRMOptions, **settings)
         modes[BASELINE] = queries.Mode(exact=exact, options=algorithm_1)
     return modes
 

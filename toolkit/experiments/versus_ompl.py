@@ -46,7 +46,6 @@ from toolkit.experiments import queries
 from toolkit.experiments.queries import Query
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot
-from toolkit.learning import presets
 from toolkit.learning.learned import LearnedChecker
 from toolkit.learning.training import TrainedModels
 from toolkit.planning.local_planner import default_resolution, path_is_valid
@@ -120,7 +119,7 @@ def contenders(
     best = queries.planner_options(scenario)
     ours = {"ours, best exact": our_planner(best, sampler=sampler, seed=seed)}
     if paper_baseline:
-        paper = queries.planner_options(scenario, presets.PRESETS["paper"])  # Algorithm 1, no model
+        paper = queries.planner_options(scenario, options_class=PRMOptions)  # Algorithm 1
         ours["ours, paper's baseline"] = our_planner(paper, sampler=sampler, seed=seed)
     if models is not None:
         predicting = queries.planner_options(scenario, models.preset, predicted=True)

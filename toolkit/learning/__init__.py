@@ -12,5 +12,5 @@ Reading order:
 6. :mod:`toolkit.learning.training` — fitting and evaluating both networks;
 7. :mod:`toolkit.learning.metrics` — accuracy, TPR, TNR (Tables 1-2);
 8. :mod:`toolkit.learning.checkpoints` — a trained model as a folder;
-9. :mod:`toolkit.learning.learned` — ``LearnedChecker``: the online phase's predictor (§III-B lines 1-3).
+9. :mod:`toolkit.learning.learned` — ``LearnedChecker``: the online phase's predictor (§III-B lines 1 and 3).
 """

@@ -177,7 +177,7 @@ def label_workspaces(
 
 
 def validity_blind_split(
-    scenario: Scenario, unseen: CollisionDataset, samples_per_workspace: int | None = None, progress: bool = False
+    scenario: Scenario, unseen: CollisionDataset, *, samples_per_workspace: int | None = None, progress: bool = False
 ) -> CollisionDataset:
     """The paper's unseen test (§IV-A): in the workspaces of ``unseen``, uniform samples regardless of their
     validity, as many as ``scenario.plan_samples`` each (200 in 2DS, 2000 in 3DO, 400 in 3DC), labelled exactly."""

@@ -65,6 +65,11 @@ class Preset:
     holdout: float = 0.0  # share of training workspaces kept from the MLP to calibrate its threshold
     latent_input: bool = True  # the MLP sees the CAE's z (the paper); False: only the patch and pose
     quick: bool = False  # shrunk for a quick run (toolkit.experiments.config.QUICK)
+    origin: str = ""  # the recipe this one was made from (dataclasses.replace keeps it); "": its own name
+
+    def __post_init__(self):
+        if not self.origin:
+            object.__setattr__(self, "origin", self.name)  # frozen: set once, as it is made
 
     def build_predictor(self, scenario: Scenario) -> CollisionPredictor:
         """Untrained networks of this recipe for ``scenario``: the CAE, the MLP's input encoding and the MLP, with the

@@ -53,6 +53,7 @@ from toolkit.planning.query_roadmap import QueryRoadmap
 class LazyPRM(PRM):
     """Algorithm 1 with lazy edges (exact or screened by prediction) and growing rounds."""
 
+    name = "lazy"
     Options = LazyPRMOptions
     options: LazyPRMOptions
 

@@ -62,7 +62,12 @@ class PRMOptions:
 
     def __post_init__(self):
         for name, rule in self.rules.items():
-            if not RULES[rule](value := getattr(self, name)):
+            value = getattr(self, name)
+            try:
+                ok = RULES[rule](value)
+            except (TypeError, ValueError):  # e.g. None or a string where a number belongs
+                ok = False
+            if not ok:
                 raise ValueError(f"{type(self).__name__}.{name} must be {rule}, got {value!r}")
 
 

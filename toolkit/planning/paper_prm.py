@@ -41,7 +41,8 @@ from toolkit.planning.sampling import make_sampler
 class PRM:
     """The paper's PRM (Algorithm 1) over ``exact`` and, deciding samples, ``checker`` (default: ``exact``)."""
 
-    Options = PRMOptions  # the settings this planner reads
+    name = "paper"  # in toolkit.planning.prm.PLANNERS
+    Options = PRMOptions  # the settings this planner reads, and no other planner
 
     def __init__(
         self,
@@ -52,7 +53,7 @@ class PRM:
         sampler: str = "BS",
     ):
         self.options = self.Options() if options is None else options
-        if not isinstance(self.options, self.Options):
+        if type(self.options) is not self.Options:  # a subclass's fields belong to another planner
             raise TypeError(
                 f"{type(self).__name__} reads {self.Options.__name__}, got {type(self.options).__name__}; "
                 "toolkit.planning.prm.plan runs the planner of the options' class"

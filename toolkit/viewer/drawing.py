@@ -124,8 +124,8 @@ def add_boxes(
     scene: viser.SceneApi,
     name: str,
     boxes: Boxes,
-    colors,
     *,
+    colors,
     opacity: float | None = None,
     wireframe: bool = False,
     visible: bool = True,
@@ -165,7 +165,7 @@ def draw_workspace(scene: viser.SceneApi, workspace: Workspace) -> dict[str, vis
             scene,
             "/workspace/obstacles",
             obstacle_boxes(workspace),
-            OBSTACLE,
+            colors=OBSTACLE,
             opacity=OBSTACLE_OPACITY.get(workspace.family),
         ),
         "region": scene.add_line_segments("/workspace/region", region_edges(workspace), REGION, thickness=0.05),
@@ -194,7 +194,7 @@ def camera_pose(robot: BoxRobot, workspace: Workspace, q: np.ndarray) -> tuple[n
     return look_at, look_at + float(np.max(workspace.upper - workspace.lower)) * np.array(offset)
 
 
-PATH_VIEW = (-0.45, -1.0, 0.7)  # from the front-left and above; its length ~1.3 times the framed size fits the view
+ROBOT_VIEW = (-0.45, -1.0, 0.7)  # a robot camera's direction: from the front-left and above (length ~1.3: it fits)
 ROBOT_SPAN = 4.0  # a robot's camera frames this many robot sizes: the robot, large, and the blocks beside it
 
 
@@ -208,15 +208,15 @@ def robot_camera(robot: BoxRobot, q) -> tuple[np.ndarray, np.ndarray]:
 def follow_camera(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
     """``(look_at (T, 3), position (T, 3))``: a camera that keeps the robot framed at each configuration of
     ``Q (T, dof)``. It looks at the mean of the link centres (it moves smoothly with the configuration), from
-    :data:`PATH_VIEW` scaled to :data:`ROBOT_SPAN` robot sizes: a robot small in its workspace fills a good
+    :data:`ROBOT_VIEW` scaled to :data:`ROBOT_SPAN` robot sizes: a robot small in its workspace fills a good
     part of the picture, with the blocks beside it."""
     centers, _, _ = robot.link_boxes(robot.check_configs(Q))  # (T, L, D)
     look_at = _lift_points(centers, FLAT_ROBOT_HEIGHT / 2).mean(axis=1)  # (T, 3)
-    return look_at, look_at + ROBOT_SPAN * _robot_size(robot) * np.array(PATH_VIEW)
+    return look_at, look_at + ROBOT_SPAN * _robot_size(robot) * np.array(ROBOT_VIEW)
 
 
-def _swept_bounds(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
-    """The 3D min and max corner ``(3,), (3,)`` of the robot's links over every configuration of ``Q``."""
+def _link_bounds(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
+    """The 3D min and max corner ``(3,), (3,)`` of the robot's links at the configurations ``Q (T, dof)``."""
     aabbs = robot.link_aabbs(robot.check_configs(Q))  # (T, L, 2, D)
     lo = _lift_points(aabbs[:, :, 0].min(axis=(0, 1)), 0.0)  # (3,)
     hi = _lift_points(aabbs[:, :, 1].max(axis=(0, 1)), FLAT_ROBOT_HEIGHT)
@@ -225,7 +225,7 @@ def _swept_bounds(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
 
 def _robot_size(robot: BoxRobot) -> float:
     """The largest extent of the robot at its zero configuration (its joints straight), in workspace units."""
-    lo, hi = _swept_bounds(robot, np.clip(np.zeros(robot.dof), robot.lower, robot.upper))
+    lo, hi = _link_bounds(robot, np.clip(np.zeros(robot.dof), robot.lower, robot.upper))
     return float(np.max(hi - lo))
 
 
