@@ -2,6 +2,7 @@
 Embedded pages are tested in test_viewer_embed.py."""
 
 import ast
+import dataclasses
 import re
 import signal
 import socket
@@ -80,6 +81,14 @@ def test_scene_holds_the_workspace_and_the_robot(make_panel, name):
     np.testing.assert_allclose([s.max for s in sliders], scenario.robot.upper)
     np.testing.assert_allclose([s.value for s in sliders], v.q)
     assert "prediction" not in v.nodes and "disagreement" not in v.nodes  # no model loaded
+
+
+def test_the_viewer_takes_a_scenario_object_and_keeps_it(make_viewer):
+    """Objects flow down: a scenario the caller holds (here an equal copy of 2DS) is shown as it is, not looked up
+    again by name (``toolkit view --checkpoint`` passes the checkpoint's scenario)."""
+    own = dataclasses.replace(scenarios.get("2ds"))
+    v = make_viewer(own)
+    assert v.scenario is own and v.robot is own.robot
 
 
 def test_2ds_is_a_flat_3d_scene(make_viewer):

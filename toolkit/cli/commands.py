@@ -32,7 +32,7 @@ def _config(args: argparse.Namespace, scenario: str, **settings) -> RunConfig:
 
 
 def cmd_bench(args: argparse.Namespace) -> int:
-    from toolkit.experiments import bench
+    from toolkit.experiments import bench, versus_ompl
     from toolkit.learning import checkpoints, presets
     from toolkit.planning import prm
 
@@ -44,7 +44,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
     models = checkpoints.load_models(args.checkpoint, scenario) if args.checkpoint else None
     if args.vs_ompl:
         try:
-            table = bench.versus_ompl(
+            table = versus_ompl.versus_ompl(
                 scenario, n_queries=args.queries, seed=args.seed, models=models, ompl_seconds=args.ompl_seconds
             )
         except ImportError as missing:  # ompl is an optional extra
@@ -52,7 +52,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
         print(
             json.dumps({"scenario": scenario.name, "seed": args.seed, "planners": table})
             if args.json
-            else bench.versus_ompl_markdown(scenario, table)
+            else versus_ompl.versus_ompl_markdown(scenario, table)
         )
         return 0
     timed = models or bench.untrained_models(scenario, presets.get(args.preset), seed=args.seed)
@@ -150,7 +150,7 @@ def cmd_view(args: argparse.Namespace) -> int:
         from toolkit.learning import checkpoints, learned
 
         models = checkpoints.load_models(args.checkpoint, args.scenario)
-        scenario, predictor = models.scenario.name, partial(learned.LearnedChecker, models=models)
+        scenario, predictor = models.scenario, partial(learned.LearnedChecker, models=models)
     if args.screenshot:
         from toolkit.util import outputs
 

@@ -15,9 +15,9 @@ Figures are medians over repeats, and a ratio's two figures come from one run, t
 in turns (:func:`in_turns`), since a shared machine's speed changes while it runs.
 ``toolkit bench --scenario S --json`` prints the throughput and the edge checks; with
 ``--checkpoint DIR`` also the planning ratios. ``toolkit bench --vs-ompl`` races our
-planners against OMPL's (:mod:`toolkit.experiments.versus_ompl`; its two functions are
-importable from here too), and ``toolkit bench --crossover`` asks where prediction pays
-(:mod:`toolkit.experiments.crossover`). Results: ``docs/benchmarks.md``.
+planners against OMPL's (:mod:`toolkit.experiments.versus_ompl`), and ``toolkit bench
+--crossover`` asks where prediction pays (:mod:`toolkit.experiments.crossover`). Results:
+``docs/benchmarks.md``.
 """
 
 from __future__ import annotations
@@ -30,7 +30,6 @@ import numpy as np
 import torch
 
 from toolkit.experiments import planners, queries
-from toolkit.experiments.versus_ompl import versus_ompl, versus_ompl_markdown
 from toolkit.geometry.collision import CollisionChecker, FCLChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
@@ -59,8 +58,6 @@ __all__ = [
     "short_valid_segments",
     "throughput",
     "untrained_models",
-    "versus_ompl",
-    "versus_ompl_markdown",
 ]
 
 

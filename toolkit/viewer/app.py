@@ -12,12 +12,13 @@ from __future__ import annotations
 import time
 from pathlib import Path
 
+from toolkit.scenarios import Scenario
 from toolkit.viewer.panel import Panel
 from toolkit.viewer.scene import Predictor, Viewer
 
 
 def launch(
-    scenario: str = "3do",
+    scenario: str | Scenario = "3do",
     *,
     seed: int = 0,
     checkpoint: str | Path | None = None,

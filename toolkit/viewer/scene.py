@@ -66,7 +66,7 @@ class Viewer:
 
     def __init__(
         self,
-        scenario: str = "3do",
+        scenario: str | scenarios.Scenario = "3do",
         *,
         seed: int = 0,
         checkpoint: str | Path | None = None,
@@ -128,11 +128,13 @@ class Viewer:
             callback(*args)
 
     # -- workspace and robot -----------------------------------------------------
-    def load(self, scenario: str, seed: int) -> None:
-        """Show a new workspace of ``scenario`` drawn from ``seed``; the robot starts at a valid rest pose."""
+    def load(self, scenario: str | scenarios.Scenario, seed: int) -> None:
+        """Show a new workspace of ``scenario`` (a name or a scenario) drawn from ``seed``; the robot starts at a
+        valid rest pose."""
         self._notify("loading")  # before taking the lock: a listener may wait for a thread that needs it
         with self.lock:
-            self.scenario, self.seed = scenarios.get(scenario), int(seed)
+            self.scenario = scenarios.get(scenario) if isinstance(scenario, str) else scenario
+            self.seed = int(seed)
             rng = np.random.default_rng(self.seed)
             self.workspace = self.scenario.make_workspace(rng)
             self.exact = exact_checker(self.workspace, self.robot)
