@@ -25,6 +25,7 @@ and a finished stage is not redone; each sampler's planning is a stage of its ow
 from __future__ import annotations
 
 import os
+import pickle
 import time
 from collections.abc import Iterable
 from concurrent.futures import as_completed
@@ -120,7 +121,9 @@ def planning_stage(stages: Stages, config: RunConfig, models: training.TrainedMo
     as soon as they arrive.
     """
     todo = [s for s in config.samplers if not stages.has(f"planning_{s}")]
-    job = partial(plan_sampler, config, planning_modes(config, models))  # built here: a worker plans them as they are
+    # built here, so a worker plans them as they are; sent as plain pickled bytes (torch would otherwise share the
+    # tensors through file descriptors, and a worker stopped mid-transfer leaves a traceback in the parent)
+    job = partial(plan_sampler, config, pickle.dumps(planning_modes(config, models)))
     workers = config.workers or os.cpu_count() or 1
     with (
         tqdm(total=len(todo), desc=f"planning {config.scenario.name}", disable=not stages.progress, leave=False) as bar,
@@ -137,9 +140,9 @@ def planning_stage(stages: Stages, config: RunConfig, models: training.TrainedMo
     return {s: stages.load(f"planning_{s}") for s in config.samplers}
 
 
-def plan_sampler(config: RunConfig, modes: dict[str, queries.Mode], sampler: str) -> tuple[str, dict, float]:
-    """One sampler over the query set, the ``modes`` (:func:`planning_modes`) in turns (also in a worker process,
-    which first imports ``config.imports`` to register what the parent registered, e.g. a sampler): the sampler,
+def plan_sampler(config: RunConfig, pickled_modes: bytes, sampler: str) -> tuple[str, dict, float]:
+    """One sampler over the query set, the pickled :func:`planning_modes` in turns (also in a worker process, which
+    first imports ``config.imports`` to register what the parent registered, e.g. a sampler): the sampler,
     ``{"without": summary, "with": summary}`` (and ``"baseline"``) and seconds."""
     began = time.perf_counter()
     for module in config.imports:
@@ -147,6 +150,7 @@ def plan_sampler(config: RunConfig, modes: dict[str, queries.Mode], sampler: str
     scenario = config.scenario
     n_workspaces, per_workspace = config.query_counts()
     query_set = queries.make_queries(scenario, seed=config.seed, n_workspaces=n_workspaces, per_workspace=per_workspace)
+    modes: dict[str, queries.Mode] = pickle.loads(pickled_modes)  # the parent's own, pickled above
     runs = queries.run_interleaved(scenario, query_set, sampler, modes, seed=config.seed)
     return sampler, {mode: runs[mode][1] for mode in modes}, time.perf_counter() - began
 
