@@ -7,6 +7,9 @@ uniform configurations the exact checker accepts, drawn from a generator derived
 from ``(seed, workspace index)``, and at least a quarter of the region's diagonal
 apart (base positions), so every query means travelling.
 
+:func:`planner_options` gives a query's planner settings (the paper's |S|, the scenario's
+resolution, and the planner the experiments pair with a model's recipe,
+:mod:`~toolkit.experiments.planners`); :func:`default_options` does it for a learned checker.
 ``run_queries`` solves each query from scratch (a fresh roadmap, as in the paper),
 with torch and numpy's BLAS on one thread (:func:`one_thread`), and summarizes: mean
 and std of ``sampling_s`` and ``total_s`` (and their medians), ``success_rate``, and
