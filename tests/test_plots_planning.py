@@ -147,7 +147,7 @@ def test_roadmap_steps_one_panel_per_step(exact):
     assert len(fig.axes) == 6 and len(visible) == 4
 
 
-PLANNING = {  # sampler -> mode -> summary (seconds)
+MEDIANS = {  # sampler -> mode -> median seconds of each stage and of the total
     s: {
         m: {
             "sampling_s": 0.01 * (i + 1) * f,
@@ -159,17 +159,33 @@ PLANNING = {  # sampler -> mode -> summary (seconds)
     }
     for i, s in enumerate(("BS", "OB", "G", "BT"))
 }
+PLANNING = {  # as queries.summarize writes it: the medians, quartiles 20 % below and 50 % above them
+    s: {
+        m: {
+            f"{key}_{stat}": t * scale
+            for key, t in row.items()
+            for stat, scale in (("median", 1), ("q1", 0.8), ("q3", 1.5))
+        }
+        for m, row in modes.items()
+    }
+    for s, modes in MEDIANS.items()
+}
 
 
 def test_stage_times_one_stacked_bar_per_sampler_and_mode_with_the_given_heights():
     ax = planning.stage_times({"2DS": PLANNING}).axes[0]
-    bars = {c.get_label(): [p.get_height() for p in c.patches] for c in ax.containers}
-    assert [t.get_text() for t in ax.figure.legends[0].texts] == list(bars)
+    bars = {c.get_label(): [p.get_height() for p in c.patches] for c in ax.containers if hasattr(c, "patches")}
+    assert [t.get_text() for t in ax.figure.legends[0].texts] == [*bars, "total: quartiles"]
     assert list(bars) == [planning.STAGE_LABELS[k] for k in ("sampling_s", "connection_s", "query_s", "other_s")]
     order = [(s, m) for s in ("BS", "OB", "G", "BT") for m in ("without", "with")]
     for key in ("sampling_s", "connection_s", "query_s"):
-        np.testing.assert_allclose(bars[planning.STAGE_LABELS[key]], [PLANNING[s][m][key] for s, m in order])
-    np.testing.assert_allclose(np.sum(list(bars.values()), axis=0), [PLANNING[s][m]["total_s"] for s, m in order])
+        np.testing.assert_allclose(bars[planning.STAGE_LABELS[key]], [MEDIANS[s][m][key] for s, m in order])
+    np.testing.assert_allclose(np.sum(list(bars.values()), axis=0), [MEDIANS[s][m]["total_s"] for s, m in order])
+    (whiskers,) = ax.collections  # the total's quartiles, one vertical segment a bar: never below zero
+    spans = np.array([segment[:, 1] for segment in whiskers.get_segments()])  # (bars, 2): q1, q3
+    np.testing.assert_allclose(
+        spans, [[0.8 * MEDIANS[s][m]["total_s"], 1.5 * MEDIANS[s][m]["total_s"]] for s, m in order]
+    )
     assert [t.get_text() for t in ax.texts] == ["0.50x"] * 4
     assert [t.get_text() for t in ax.get_xticklabels()][:2] == ["BS\nwithout", "BS\nwith"]
 

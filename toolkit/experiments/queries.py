@@ -12,7 +12,7 @@ resolution, and the planner the experiments pair with a model's recipe,
 :mod:`~toolkit.experiments.planners`); :func:`default_options` does it for a learned checker.
 ``run_queries`` solves each query from scratch (a fresh roadmap, as in the paper),
 with torch and numpy's BLAS on one thread (:func:`one_thread`), and summarizes: mean
-and std of ``sampling_s`` and ``total_s`` (and their medians), ``success_rate``, and
+and std of ``sampling_s`` and ``total_s`` (and their medians and quartiles), ``success_rate``, and
 ``path_valid_rate``, the fraction of returned paths that a fresh exact checker
 accepts at 10x finer resolution than the local planner's. ``run_interleaved`` does
 the same in several modes (without and with prediction) taking turns query by
@@ -254,8 +254,12 @@ def _solve_all(
     return records
 
 
+TIMES = ("sampling_s", "connection_s", "query_s", "encode_s", "total_s")  # a query's times, in seconds
+
+
 def summarize(records: list[dict]) -> dict:
-    """Means and stds over queries of the times; success and path-validity rates in [0, 1]."""
+    """Means and stds over queries of the times and counts, medians and quartiles (``_q1``, ``_q3``) of the times,
+    each query's total; success and path-validity rates in [0, 1]."""
 
     def values(key):
         return np.array([r[key] for r in records], dtype=float)
@@ -274,8 +278,10 @@ def summarize(records: list[dict]) -> dict:
     ):
         summary[key] = float(values(key).mean()) if records else 0.0
         summary[key + "_std"] = float(values(key).std()) if records else 0.0
-    for key in ("sampling_s", "total_s"):  # robust to the odd slow query on a noisy machine
-        summary[key + "_median"] = float(np.median(values(key))) if records else 0.0
+    for key in TIMES:  # robust to the odd slow query on a noisy machine: median and quartiles
+        q1, median, q3 = np.percentile(values(key), (25, 50, 75)) if records else (0.0, 0.0, 0.0)
+        summary.update({key + "_median": float(median), key + "_q1": float(q1), key + "_q3": float(q3)})
+    summary["total_s_per_query"] = values("total_s").tolist()  # in the order of the queries: names an outlier
     solved = [r for r in records if r["success"]]
     summary["success_rate"] = len(solved) / len(records) if records else 0.0
     summary["path_valid_rate"] = float(np.mean([r["path_valid"] for r in solved])) if solved else 1.0

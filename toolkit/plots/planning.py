@@ -156,16 +156,20 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
 
 def stage_times(panels: dict[str, dict]) -> Figure:
     """Per panel (e.g. a scenario), a ``planning`` table ``{sampler: {"without": summary, "with": summary}}``
-    (``queries.summarize`` means): one stacked bar per sampler and mode, one segment per planner stage, the rest
-    of ``total_s`` on top as "other"; the total's with / without ratio above each pair."""
+    (``queries.summarize``): one stacked bar per sampler and mode, one segment per planner stage's median over the
+    queries, the rest of the median total on top as "other"; a whisker from the total's first to third quartile;
+    the with / without ratio of the median totals above each pair."""
     fig = Figure(figsize=(5.2 * len(panels), 4.6))
     axes = fig.subplots(1, len(panels), squeeze=False)[0]
     for ax, (title, planning) in zip(axes, panels.items()):
         names = list(planning)  # the samplers planned, in their order
         x = np.arange(len(names))[:, None] + np.array([-0.2, 0.2])  # (samplers, modes) bar centres
         table = {
-            key: np.array([[planning[s][m][key] for m in MODES] for s in names]) for key in STAGE_KEYS + ("total_s",)
-        }
+            f"{key}_{stat}": np.array([[planning[s][m][f"{key}_{stat}"] for m in MODES] for s in names])
+            for key in STAGE_KEYS + ("total_s",)
+            for stat in ("median", "q1", "q3")
+        }  # key_stat -> (samplers, modes)
+        table.update({key: table[f"{key}_median"] for key in STAGE_KEYS + ("total_s",)})
         table["other_s"] = np.maximum(table["total_s"] - sum(table[k] for k in STAGE_KEYS), 0.0)
         bottom = np.zeros_like(table["total_s"])
         for key in STAGE_KEYS + ("other_s",):
@@ -179,16 +183,28 @@ def stage_times(panels: dict[str, dict]) -> Figure:
                 linewidth=0.5,
             )
             bottom = bottom + table[key]
+        low, high = table["total_s"] - table["total_s_q1"], table["total_s_q3"] - table["total_s"]
+        ax.errorbar(
+            x.ravel(),
+            table["total_s"].ravel(),
+            yerr=[low.ravel(), high.ravel()],
+            fmt="none",
+            ecolor="black",
+            capsize=3,
+            linewidth=1,
+            label="total: quartiles",
+        )
+        top = np.maximum(bottom, table["total_s_q3"])
         ratio = table["total_s"][:, 1] / np.maximum(table["total_s"][:, 0], 1e-12)
         for i, r in enumerate(ratio):
             ax.annotate(
-                f"{r:.2f}x", (i, bottom[i].max()), xytext=(0, 3), textcoords="offset points", ha="center", fontsize=8
+                f"{r:.2f}x", (i, top[i].max()), xytext=(0, 3), textcoords="offset points", ha="center", fontsize=8
             )
         ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=7)
-        ax.set_ylabel("seconds per query (mean)")
-        ax.set_ylim(0, bottom.max() * 1.15)
-        ax.set_title(f"{title}: with / without prediction, total", fontsize=9)
-    fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=4, fontsize=8, frameon=False)
+        ax.set_ylabel("seconds per query (median)")
+        ax.set_ylim(0, top.max() * 1.15)
+        ax.set_title(f"{title}: median total with / without prediction", fontsize=9)
+    fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=5, fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0.07, 1, 1))
     return fig
 

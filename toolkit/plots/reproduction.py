@@ -10,6 +10,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 MODES = ("without", "with")
+STATS = ("median", "q1", "q3")  # a time's summary over the queries (queries.summarize)
 
 
 def _show_grid(ax, grid: np.ndarray, title: str) -> None:
@@ -36,20 +37,22 @@ def cae_reconstruction(grids: dict[str, np.ndarray], decoded: dict[str, np.ndarr
 
 
 def planning_times(planning: dict, title: str = "") -> Figure:
-    """Sampling and total time per query, without / with prediction, mean with std error bars (Figures 5-7)."""
+    """Sampling and total time per query, without / with prediction (the paper's Figures 5-7): the median over the
+    queries, a whisker from the first to the third quartile (the paper draws means and stds; a single slow query
+    moves both, and a std bar can reach below zero)."""
     fig = Figure(figsize=(9, 3.6))
     axes = fig.subplots(1, 2)
     samplers = list(planning)  # the paper's four, or the ones the run planned
     x = np.arange(len(samplers))
     for ax, key, label in (
-        (axes[0], "sampling_s", "sampling time (s)"),
-        (axes[1], "total_s", "total time per query (s)"),
+        (axes[0], "sampling_s", "sampling time (s), median"),
+        (axes[1], "total_s", "total time per query (s), median"),
     ):
         for i, mode in enumerate(MODES):
-            means = [planning[s][mode][key] for s in samplers]
-            stds = [planning[s][mode].get(key + "_std", 0.0) for s in samplers]
+            median, q1, q3 = (np.array([planning[s][mode][f"{key}_{stat}"] for s in samplers]) for stat in STATS)
             names = [s if mode == "without" else s + "F" for s in samplers]
-            bars = ax.bar(x + (i - 0.5) * 0.38, means, 0.38, yerr=stds, capsize=3, label=f"{mode} prediction")
+            spread = [median - q1, q3 - median]  # (2, samplers): whiskers down to q1, up to q3
+            bars = ax.bar(x + (i - 0.5) * 0.38, median, 0.38, yerr=spread, capsize=3, label=f"{mode} prediction")
             ax.bar_label(bars, labels=names, fontsize=7, padding=2)
         ax.set_xticks(x, samplers)
         ax.set_ylabel(label)

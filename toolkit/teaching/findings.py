@@ -1,0 +1,90 @@
+"""The sentences a chapter prints from what it has just computed, so that its prose cannot contradict its figures.
+
+A sentence that states a measured number or a comparison ("saves time", "above 1") is generated here from the
+measurements and printed under the figure (``NOTEBOOKS.md``); the chapters' prose then says only what holds at
+quick and full size and from run to run. One statistic throughout: medians over the queries, their spread as
+quartiles; a single slow query that moves a mean is named.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping, Sequence
+
+import numpy as np
+
+TIE = 0.05  # a ratio of medians within 5 % of 1 is a tie: a shared machine moves timings that much from run to run
+OUTLIER = 5.0  # a query at least this many times the other queries' median total is an outlier
+
+
+def verdict(ratio: float, tie: float = TIE) -> str:
+    """``"saves"`` below ``1 - tie`` (a time with / without prediction), ``"costs"`` above ``1 + tie``, else a tie."""
+    if not np.isfinite(ratio) or ratio <= 0:
+        raise ValueError(f"a time ratio must be a positive number, got {ratio!r}")
+    return "saves" if ratio < 1 - tie else "costs" if ratio > 1 + tie else "ties"
+
+
+def median_ratios(table: Mapping[str, Mapping], kind: str = "total") -> dict[str, float]:
+    """Per sampler, ``kind`` time (``"total"`` or ``"sampling"``) with / without prediction, of the medians over
+    the queries, from a ``{sampler: {"without": summary, "with": summary}}`` table (``compare_prediction``)."""
+    key = f"{kind}_s_median"
+    return {s: row["with"][key] / max(row["without"][key], 1e-12) for s, row in table.items()}
+
+
+def describe_ratios(name: str, ratios: Mapping[str, float], against: str, *, kind: str = "total") -> str:
+    """One sentence: for which samplers prediction saves, costs or ties ``kind`` time (ratios with / without)."""
+    groups: dict[str, list[str]] = {"saves": [], "costs": [], "ties": []}
+    for sampler, ratio in ratios.items():
+        groups[verdict(ratio)].append(f"{sampler} ({ratio:.2f})")
+    words = {"saves": "saves time with", "costs": "costs time with", "ties": "ties (within 5 %) with"}
+    everyone = len(ratios) > 1 and any(len(found) == len(ratios) for found in groups.values())
+    parts = [
+        f"{words[v]} {'every sampler: ' if everyone else ''}{_joined(found)}" for v, found in groups.items() if found
+    ]
+    return f"{name}, {kind} time with / without prediction against {against}: prediction {'; '.join(parts)}."
+
+
+def describe_medians(name: str, table: Mapping[str, Mapping], against: str, *, kind: str = "total") -> str:
+    """:func:`describe_ratios` of a ``compare_prediction`` table's medians, with how many queries they are over."""
+    n = next(iter(table.values()))["without"]["n_queries"]
+    return describe_ratios(f"{name} (medians over {n} queries)", median_ratios(table, kind), against, kind=kind)
+
+
+def outliers(name: str, table: Mapping[str, Mapping], factor: float = OUTLIER) -> list[str]:
+    """A sentence for every sampler and mode whose slowest query took at least ``factor`` times the other queries'
+    median total: which query, how long, and where it moves the mean (and the median, with two queries)."""
+    lines = []
+    for sampler, row in table.items():
+        for mode in ("without", "with"):
+            summary = row[mode]
+            totals = np.asarray(summary["total_s_per_query"], dtype=float)  # (queries,)
+            if len(totals) < 2:
+                continue
+            slowest = int(np.argmax(totals))
+            rest = float(np.median(np.delete(totals, slowest)))
+            if totals[slowest] < factor * max(rest, 1e-12):
+                continue
+            line = (
+                f"{name}, {sampler} {mode} prediction: query {slowest} took {totals[slowest]:.3g} s, "
+                f"{totals[slowest] / max(rest, 1e-12):.0f}x the other queries' median ({rest:.3g} s); "
+                f"it pulls the mean up to {summary['total_s']:.3g} s"
+            )
+            if len(totals) == 2:
+                line += f", and with only two queries the median too ({summary['total_s_median']:.3g} s)"
+            else:
+                line += f" (the median: {summary['total_s_median']:.3g} s)"
+            lines.append(line + ".")
+    return lines
+
+
+def describe_lesson(verdicts: Mapping[str, str], crossover_conclusion: Sequence[str]) -> str:
+    """Markdown: the chapter's conclusion, ``verdicts`` (a :func:`describe_medians` sentence per scenario) then what
+    the crossover study (``toolkit.experiments.crossover.conclusion``) says about where prediction would pay."""
+    lines = ["**What this run measured.**", ""]
+    lines += [f"- {sentence}" for sentence in verdicts.values()]
+    lines += ["", "**Where the crossover study says prediction would pay** (`crossover.conclusion`):", ""]
+    lines += [f"- {line}" for line in crossover_conclusion]
+    return "\n".join(lines)
+
+
+def _joined(items: Sequence[str]) -> str:
+    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
