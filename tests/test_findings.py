@@ -78,3 +78,20 @@ def test_describe_lesson_carries_every_verdict_and_the_crossover_conclusion_verb
     text = findings.describe_lesson({"2DS": "2DS: prediction costs time.", "3DC-7": "3DC-7: it saves."}, conclusion)
     assert "- 2DS: prediction costs time.\n- 3DC-7: it saves." in text
     assert text.endswith("- " + conclusion[0] + "\n- " + conclusion[1])
+
+
+def test_describe_throughput_says_who_leads_in_both_directions():
+    measured = {"ratio": 0.5, "learned_cfg_per_s": 4e6, "fcl_cfg_per_s": 1e6}
+    assert findings.describe_throughput("3DC-7", measured, 10_000) == (
+        "3DC-7, calls of 10,000 configurations on one thread: the learned checker answered 0.50x as many "
+        "configurations a second as the default exact checker (it trails) and 4.00x as many as python-fcl (it leads)."
+    )
+    tie = findings.describe_throughput("2DS", {"ratio": 1.02, "learned_cfg_per_s": 1.0, "fcl_cfg_per_s": 1.0}, 500)
+    assert tie.count("(a tie, within 5 %)") == 2
+
+
+def test_compare_scores_says_higher_lower_and_equal_at_the_printed_precision():
+    ours, paper = {"acc": 0.77, "tpr": 0.849, "tnr": 0.6}, {"acc": 0.71, "tpr": 0.85, "tnr": 0.61}
+    assert findings.compare_scores(ours, paper) == (
+        "accuracy 77% against 71% (higher), TPR 85% against 85% (equal), TNR 60% against 61% (lower)"
+    )

@@ -120,7 +120,7 @@ def test_the_series_panels_show_each_dof_clearance_and_probability(crossing):
     for ax in fig.axes[1:]:
         assert line(ax, "now").get_xdata()[0] == pytest.approx(along[index])
     title = fig.get_suptitle()
-    assert f"frame {index} of {FRAMES - 1}" in title and f"P(valid) = {probability[index]:.2f}" in title
+    assert f"frame {index} of 0-{FRAMES - 1}" in title and f"P(valid) = {probability[index]:.2f}" in title
     assert "valid at 0.40" in title  # 0.71 >= 0.4
 
 

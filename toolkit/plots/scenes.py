@@ -155,7 +155,7 @@ def _per_frame(values, frames: int, name: str) -> np.ndarray | None:
 
 
 def _frame_title(index: int, frames: int, series: dict, threshold: float) -> str:
-    parts = [f"frame {index} of {frames - 1}"]
+    parts = [f"frame {index} of 0-{frames - 1}"]
     if series["valid"] is not None:
         parts.append("valid (exact checker)" if series["valid"][index] else "IN COLLISION (exact checker)")
     if series["clearance"] is not None:

@@ -14,6 +14,8 @@ import numpy as np
 
 TIE = 0.05  # a ratio of medians within 5 % of 1 is a tie: a shared machine moves timings that much from run to run
 OUTLIER = 5.0  # a query at least this many times the other queries' median total is an outlier
+SCORES = ("acc", "tpr", "tnr")  # a classifier's scores, as toolkit.learning.metrics names them (paper, Table 2)
+SCORE_NAMES = {"acc": "accuracy", "tpr": "TPR", "tnr": "TNR"}
 
 
 def verdict(ratio: float, tie: float = TIE) -> str:
@@ -46,7 +48,8 @@ def describe_ratios(name: str, ratios: Mapping[str, float], against: str, *, kin
 def describe_medians(name: str, table: Mapping[str, Mapping], against: str, *, kind: str = "total") -> str:
     """:func:`describe_ratios` of a ``compare_prediction`` table's medians, with how many queries they are over."""
     n = next(iter(table.values()))["without"]["n_queries"]
-    return describe_ratios(f"{name} (medians over {n} queries)", median_ratios(table, kind), against, kind=kind)
+    over = f"medians over {n} {'query' if n == 1 else 'queries'}"
+    return describe_ratios(f"{name} ({over})", median_ratios(table, kind), against, kind=kind)
 
 
 def outliers(name: str, table: Mapping[str, Mapping], factor: float = OUTLIER) -> list[str]:
@@ -79,7 +82,7 @@ def outliers(name: str, table: Mapping[str, Mapping], factor: float = OUTLIER) -
 def describe_lesson(verdicts: Mapping[str, str], crossover_conclusion: Sequence[str]) -> str:
     """Markdown: the chapter's conclusion, ``verdicts`` (a :func:`describe_medians` sentence per scenario) then what
     the crossover study (``toolkit.experiments.crossover.conclusion``) says about where prediction would pay."""
-    lines = ["**What this run measured.**", ""]
+    lines = ["**What was measured.**", ""]
     lines += [f"- {sentence}" for sentence in verdicts.values()]
     lines += ["", "**Where the crossover study says prediction would pay** (`crossover.conclusion`):", ""]
     lines += [f"- {line}" for line in crossover_conclusion]
@@ -88,3 +91,26 @@ def describe_lesson(verdicts: Mapping[str, str], crossover_conclusion: Sequence[
 
 def _joined(items: Sequence[str]) -> str:
     return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+
+
+def describe_throughput(name: str, measured: Mapping[str, float], batch: int) -> str:
+    """One sentence from a ``toolkit.experiments.bench.throughput`` result: how many times as many configurations
+    a second the learned checker answered as the default exact checker and as python-fcl, and who led."""
+    words = {"saves": "it leads", "costs": "it trails", "ties": "a tie, within 5 %"}
+    exact, fcl = measured["ratio"], measured["learned_cfg_per_s"] / measured["fcl_cfg_per_s"]  # above 1: it leads
+    return (
+        f"{name}, calls of {batch:,} configurations on one thread: the learned checker answered {exact:.2f}x as many "
+        f"configurations a second as the default exact checker ({words[verdict(1 / exact)]}) and {fcl:.2f}x as "
+        f"many as python-fcl ({words[verdict(1 / fcl)]})."
+    )
+
+
+def compare_scores(ours: Mapping[str, float], reference: Mapping[str, float], keys: Sequence[str] = SCORES) -> str:
+    """``"accuracy 77% against 71% (higher), TPR ..."``: classifier scores (fractions) next to a reference's, each
+    said higher, lower or equal at the printed precision."""
+    parts = []
+    for key in keys:
+        mine, theirs = round(100 * ours[key]), round(100 * reference[key])
+        word = "higher" if mine > theirs else "lower" if mine < theirs else "equal"
+        parts.append(f"{SCORE_NAMES[key]} {mine}% against {theirs}% ({word})")
+    return ", ".join(parts)
