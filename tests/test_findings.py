@@ -95,3 +95,25 @@ def test_compare_scores_says_higher_lower_and_equal_at_the_printed_precision():
     assert findings.compare_scores(ours, paper) == (
         "accuracy 77% against 71% (higher), TPR 85% against 85% (equal), TNR 60% against 61% (lower)"
     )
+
+
+def test_describe_accuracy_against_always_valid_and_a_coin_flip():
+    assert findings.describe_accuracy("paper", 0.38, 0.86) == (
+        'paper: accuracy 38%, below "always valid" (86%) and below a coin flip (50%) (worse than chance)'
+    )
+    assert findings.describe_accuracy("strong", 0.97, 0.86).endswith(
+        'above "always valid" (86%) and above a coin flip (50%)'
+    )
+    assert "level with a coin flip" in findings.describe_accuracy("x", 0.5, 0.5)
+
+
+def test_describe_threshold_sweep_finds_the_switch_and_the_best_threshold():
+    probability = np.array([0.45, 0.46, 0.47, 0.48, 0.9, 0.91, 0.92, 0.93, 0.94, 0.95])
+    valid = np.array([False, False, False, False, True, True, True, True, True, True])
+    sentence = findings.describe_threshold_sweep(probability, valid)
+    assert sentence.startswith('up to a threshold of 0.45 the model calls every sample valid (TPR 1, TNR 0: "always')
+    assert "60% accuracy" in sentence and "best accuracy over all thresholds is 100%, at 0.90" in sentence
+    flat = findings.describe_threshold_sweep(np.full(4, 0.5), np.array([True, True, True, False]))
+    assert "lie between 0.50 and 0.50" in flat and "is 75%, at 0.50" in flat
+    with pytest.raises(ValueError, match="must be equal, non-empty"):
+        findings.describe_threshold_sweep(np.zeros(3), np.zeros(4, dtype=bool))

@@ -23,6 +23,7 @@ from urllib.error import HTTPError
 from urllib.parse import urldefrag, urljoin, urlsplit
 from urllib.request import urlopen
 
+import chapter_claims
 import nbformat
 import pytest
 from mkdocs.structure.files import File, Files
@@ -69,6 +70,13 @@ def test_every_chapter_and_tutorial_ran_and_shows_every_figure_it_made(site):
         page = page_of(site, source).read_text()
         assert page.count('src="data:image/png;base64,') == run.figures, f"{source.name}: figures lost on the page"
         assert "Traceback" not in html.unescape(re.sub(r"<[^>]+>", "", page)), source.name
+
+
+@pytest.mark.slow
+def test_every_chapter_prints_the_claims_its_prose_relies_on(site):
+    """The sentences each chapter generates from its numbers exist and agree with its tables (issue 37)."""
+    found = {s.name: chapter_claims.problems(s.name, site.runs[str(s.relative_to(ROOT))].notebook) for s in CHAPTERS}
+    assert not any(found.values()), found
 
 
 @pytest.mark.slow

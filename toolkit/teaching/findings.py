@@ -114,3 +114,38 @@ def compare_scores(ours: Mapping[str, float], reference: Mapping[str, float], ke
         word = "higher" if mine > theirs else "lower" if mine < theirs else "equal"
         parts.append(f"{SCORE_NAMES[key]} {mine}% against {theirs}% ({word})")
     return ", ".join(parts)
+
+
+def describe_accuracy(label: str, accuracy: float, always_valid: float) -> str:
+    """``label``'s accuracy next to answering "valid" to everything on the same samples and next to a coin flip
+    (50 %, whatever the share of valid samples): above, below or equal at the printed precision."""
+
+    def side(other: float) -> str:
+        mine, theirs = round(100 * accuracy), round(100 * other)
+        return "above" if mine > theirs else "below" if mine < theirs else "level with"
+
+    flip = " (worse than chance)" if side(0.5) == "below" else ""
+    return (
+        f'{label}: accuracy {accuracy:.0%}, {side(always_valid)} "always valid" ({always_valid:.0%}) and '
+        f"{side(0.5)} a coin flip (50%){flip}"
+    )
+
+
+def describe_threshold_sweep(probability: np.ndarray, valid: np.ndarray) -> str:
+    """What a sweep of the decision threshold over ``probability (N,)`` against the truth ``valid (N,)`` shows: up to
+    which threshold the model calls everything valid ("always valid"), the thresholds over which the middle 80 % of
+    its P(valid) lie (narrow: an abrupt switch), and its best accuracy over all thresholds."""
+    p, truth = np.asarray(probability, dtype=float), np.asarray(valid, dtype=bool)
+    if p.shape != truth.shape or p.ndim != 1 or len(p) == 0:
+        raise ValueError(f"probability {p.shape} and valid {truth.shape} must be equal, non-empty (N,) arrays")
+    cuts = np.unique(np.concatenate([p, [np.inf]]))  # every distinct decision, from "all valid" to "none valid"
+    accuracy = np.array([np.mean((p >= t) == truth) for t in cuts])  # (thresholds,)
+    best = int(np.argmax(accuracy))
+    low, high = np.percentile(p, (10, 90))
+    best_at = "above every P(valid): it calls nothing valid" if np.isinf(cuts[best]) else f"at {cuts[best]:.2f}"
+    return (
+        f'up to a threshold of {p.min():.2f} the model calls every sample valid (TPR 1, TNR 0: "always valid", '
+        f"{truth.mean():.0%} accuracy); the middle 80 % of its P(valid) lie between {low:.2f} and {high:.2f}, so "
+        f"that is where its answers switch; its best accuracy over all thresholds is {accuracy[best]:.0%}, "
+        f"{best_at}"
+    )
