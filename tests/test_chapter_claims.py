@@ -20,6 +20,7 @@ from toolkit.teaching import findings
 
 ROOT = Path(__file__).resolve().parents[1]
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
+CH03, CH04 = "03_mlp_decision_boundaries.ipynb", "04_prm_with_and_without_prediction.ipynb"
 
 
 def markdown_of(path: Path) -> str:
@@ -120,18 +121,18 @@ def chapter_04(verdict_ratio: float, table_ratio: float) -> dict:
 
 
 def test_chapter_04_passes_when_its_verdicts_and_lesson_agree_with_its_tables():
-    assert problems("04_prm.ipynb", chapter_04(0.8, 0.8)) == []
+    assert problems(CH04, chapter_04(0.8, 0.8)) == []
 
 
 def test_chapter_04_fails_a_verdict_that_disagrees_with_the_table():
-    found = problems("04_prm.ipynb", chapter_04(0.8, 1.3))
+    found = problems(CH04, chapter_04(0.8, 1.3))
     assert found and all("BS" in p for p in found)
 
 
 def test_chapter_04_fails_without_the_lesson():
     nb = chapter_04(0.8, 0.8)
     nb["cells"].pop()
-    assert problems("04_prm.ipynb", nb) == ["04: the lesson (findings.describe_lesson) is not displayed"]
+    assert problems(CH04, nb) == ["04: the lesson (findings.describe_lesson) is not displayed"]
 
 
 def chapter_03(paper_blind: float, sentence_blind: float) -> dict:
@@ -157,10 +158,10 @@ def chapter_03(paper_blind: float, sentence_blind: float) -> dict:
 
 
 def test_chapter_03_passes_when_its_sentences_carry_the_tables_accuracies():
-    assert problems("03_mlp.ipynb", chapter_03(0.25, 0.25)) == []
+    assert problems(CH03, chapter_03(0.25, 0.25)) == []
 
 
 def test_chapter_03_fails_a_sentence_that_disagrees_with_the_table():
-    assert problems("03_mlp.ipynb", chapter_03(0.25, 0.38)) == [
+    assert problems(CH03, chapter_03(0.25, 0.38)) == [
         "03: paper, validity-blind: the sentence says 38% vs 86%, the table [25] vs [86]"
     ]
