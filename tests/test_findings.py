@@ -60,6 +60,7 @@ def test_outliers_names_the_slow_query_and_the_mean_it_moves():
     table = {
         "BS": {"without": summary([0.1, 2.1, 0.1]), "with": summary([0.2, 0.2, 0.2])},
         "OB": {"without": summary([0.1, 0.3, 0.2]), "with": summary([0.2, 0.2, 0.2])},  # 3x: not an outlier
+        "G": {"without": summary([0.01] * 20 + [0.05]), "with": summary([0.2] * 3)},  # 5x, but the mean hardly moves
     }
     (line,) = findings.outliers("3DC-7", table)
     assert line == (

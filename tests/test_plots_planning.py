@@ -147,7 +147,7 @@ def test_roadmap_steps_one_panel_per_step(exact):
     assert len(fig.axes) == 6 and len(visible) == 4
 
 
-MEDIANS = {  # sampler -> mode -> median seconds of each stage and of the total
+MEDIANS = {  # sampler -> mode -> seconds of each stage and the total of a typical query
     s: {
         m: {
             "sampling_s": 0.01 * (i + 1) * f,
@@ -159,12 +159,13 @@ MEDIANS = {  # sampler -> mode -> median seconds of each stage and of the total
     }
     for i, s in enumerate(("BS", "OB", "G", "BT"))
 }
-PLANNING = {  # as queries.summarize writes it: the medians, quartiles 20 % below and 50 % above them
+PLANNING = {  # as queries.summarize writes it: median totals, quartiles 20 % below and 50 % above, stage shares
     s: {
         m: {
-            f"{key}_{stat}": t * scale
-            for key, t in row.items()
-            for stat, scale in (("median", 1), ("q1", 0.8), ("q3", 1.5))
+            "total_s_median": row["total_s"],
+            "total_s_q1": 0.8 * row["total_s"],
+            "total_s_q3": 1.5 * row["total_s"],
+            **{f"{key}_share": row[key] / row["total_s"] for key in ("sampling_s", "connection_s", "query_s")},
         }
         for m, row in modes.items()
     }

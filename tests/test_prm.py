@@ -884,6 +884,12 @@ def test_run_queries_summary_with_a_checker_factory():
     assert summary["predicted_checks"] > 0 and summary["sampling_s"] <= summary["total_s"]
     assert summary["total_s_std"] >= 0 and summary["n_queries"] == 6
     assert summary["total_s_median"] == np.median([r["total_s"] for r in records])
+    totals = [r["total_s"] for r in records]
+    assert summary["total_s_per_query"] == totals
+    assert [summary["total_s_q1"], summary["total_s_q3"]] == pytest.approx(np.percentile(totals, [25, 75]))
+    shares = [summary[f"{key}_share"] for key in ("sampling_s", "connection_s", "query_s")]
+    assert shares[0] == pytest.approx(np.mean([r["sampling_s"] / r["total_s"] for r in records]))
+    assert 0 < sum(shares) <= 1  # the rest of a query's time is its set-up and encoding
 
 
 def test_run_interleaved_takes_turns_and_answers_as_separate_runs(monkeypatch):

@@ -255,11 +255,13 @@ def _solve_all(
 
 
 TIMES = ("sampling_s", "connection_s", "query_s", "encode_s", "total_s")  # a query's times, in seconds
+STAGES = ("sampling_s", "connection_s", "query_s")  # the parts of total_s the planner times (the rest: set-up)
 
 
 def summarize(records: list[dict]) -> dict:
     """Means and stds over queries of the times and counts, medians and quartiles (``_q1``, ``_q3``) of the times,
-    each query's total; success and path-validity rates in [0, 1]."""
+    each query's total, each stage's mean share of a query's total (``_share``); success and path-validity rates
+    in [0, 1]."""
 
     def values(key):
         return np.array([r[key] for r in records], dtype=float)
@@ -282,6 +284,8 @@ def summarize(records: list[dict]) -> dict:
         q1, median, q3 = np.percentile(values(key), (25, 50, 75)) if records else (0.0, 0.0, 0.0)
         summary.update({key + "_median": float(median), key + "_q1": float(q1), key + "_q3": float(q3)})
     summary["total_s_per_query"] = values("total_s").tolist()  # in the order of the queries: names an outlier
+    for key in STAGES:  # where a typical query's time goes: each stage's share of a query's total, averaged
+        summary[key + "_share"] = float(np.mean(values(key) / np.maximum(values("total_s"), 1e-12))) if records else 0.0
     solved = [r for r in records if r["success"]]
     summary["success_rate"] = len(solved) / len(records) if records else 0.0
     summary["path_valid_rate"] = float(np.mean([r["path_valid"] for r in solved])) if solved else 1.0

@@ -156,20 +156,21 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
 
 def stage_times(panels: dict[str, dict]) -> Figure:
     """Per panel (e.g. a scenario), a ``planning`` table ``{sampler: {"without": summary, "with": summary}}``
-    (``queries.summarize``): one stacked bar per sampler and mode, one segment per planner stage's median over the
-    queries, the rest of the median total on top as "other"; a whisker from the total's first to third quartile;
-    the with / without ratio of the median totals above each pair."""
+    (``queries.summarize``): one bar per sampler and mode, as tall as the median total over the queries, split
+    into the planner's stages in the shares of an average query (``_share``; the rest, encoding and set-up, on top
+    as "other"); a whisker from the total's first to third quartile; the ratio of the median totals above each
+    pair."""
     fig = Figure(figsize=(5.2 * len(panels), 4.6))
     axes = fig.subplots(1, len(panels), squeeze=False)[0]
     for ax, (title, planning) in zip(axes, panels.items()):
         names = list(planning)  # the samplers planned, in their order
         x = np.arange(len(names))[:, None] + np.array([-0.2, 0.2])  # (samplers, modes) bar centres
         table = {
-            f"{key}_{stat}": np.array([[planning[s][m][f"{key}_{stat}"] for m in MODES] for s in names])
-            for key in STAGE_KEYS + ("total_s",)
-            for stat in ("median", "q1", "q3")
-        }  # key_stat -> (samplers, modes)
-        table.update({key: table[f"{key}_median"] for key in STAGE_KEYS + ("total_s",)})
+            key: np.array([[planning[s][m][key] for m in MODES] for s in names])
+            for key in [f"total_s_{stat}" for stat in ("median", "q1", "q3")] + [f"{k}_share" for k in STAGE_KEYS]
+        }  # key -> (samplers, modes)
+        table["total_s"] = table["total_s_median"]
+        table.update({key: table["total_s"] * table[f"{key}_share"] for key in STAGE_KEYS})
         table["other_s"] = np.maximum(table["total_s"] - sum(table[k] for k in STAGE_KEYS), 0.0)
         bottom = np.zeros_like(table["total_s"])
         for key in STAGE_KEYS + ("other_s",):
