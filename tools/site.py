@@ -44,6 +44,7 @@ CONFIG = ROOT / "mkdocs.yml"
 PAGES = ("README.md", "docs/*.md", "docs/*.png", "tutorials/*.md", "tutorials/assignments/README.md")
 CHAPTERS = "notebooks/[0-9][0-9]_*.ipynb"
 TUTORIALS = "tutorials/*.ipynb"
+INSTRUCTORS_PAGES = "tutorials/instructors_*.md"  # after the instructors' guide in the sidebar
 DOCS_ORDER = ("results", "fidelity", "benchmarks", "design", "viewer")  # docs/ pages in the nav, then any others
 PACKAGES = (
     "util",
@@ -308,7 +309,7 @@ def navigation(docs: Path) -> list:
     return [
         {"Home": "README.md"},
         {"Chapters": found(CHAPTERS)},
-        {"Tutorials": ["tutorials/README.md", *tutorials, "tutorials/instructors.md"]},
+        {"Tutorials": ["tutorials/README.md", *tutorials, "tutorials/instructors.md", *found(INSTRUCTORS_PAGES)]},
         {"Assignments": ["tutorials/assignments/README.md", *found("tutorials/assignments/*/*.ipynb")]},
         {"Docs": named + [p for p in found("docs/*.md") if p not in named]},
         {"API reference": ["reference/index.md", *({f"toolkit.{p}": f"reference/{p}.md"} for p in packages())]},
