@@ -1,5 +1,7 @@
 """The viewer on a JupyterHub: the address it prints, the link and frame in a notebook, and a real proxied page.
 
+(conftest.py removes the hub's variables from the tests' environment; a test sets those it plays.)
+
 A hub's student reaches a port of their server only through jupyter-server-proxy, at
 ``<base URL>proxy/PORT/``. The last test starts a real Jupyter server with a base URL and
 jupyter-server-proxy, starts ``toolkit view`` with the environment JupyterHub gives a
@@ -22,16 +24,6 @@ from nbclient import NotebookClient
 from toolkit import viewer
 from toolkit.viewer import address
 from toolkit.viewer import browser as viewer_browser
-
-HUB_VARIABLES = ("JUPYTERHUB_SERVICE_PREFIX", "JUPYTERHUB_PUBLIC_URL", "JUPYTERHUB_HOST", address.BASE_URL_VARIABLE)
-
-
-@pytest.fixture
-def no_hub(monkeypatch):
-    """An environment with none of the variables a hub (or a user) sets."""
-    for name in HUB_VARIABLES:
-        monkeypatch.delenv(name, raising=False)
-    return monkeypatch
 
 
 def free_port() -> int:
@@ -76,8 +68,8 @@ def test_a_malformed_base_url_is_an_error_naming_it_and_where_it_came_from(bad):
         address.base_url(None, {"JUPYTERHUB_PUBLIC_URL": bad})
 
 
-def test_launch_prints_the_proxied_address_and_the_port_moves_on_when_busy(no_hub, capsys):
-    no_hub.setenv("JUPYTERHUB_SERVICE_PREFIX", "/user/student/")
+def test_launch_prints_the_proxied_address_and_the_port_moves_on_when_busy(monkeypatch, capsys):
+    monkeypatch.setenv("JUPYTERHUB_SERVICE_PREFIX", "/user/student/")
     port = free_port()
     with socket.socket() as busy:
         busy.bind(("127.0.0.1", port))
@@ -92,14 +84,14 @@ def test_launch_prints_the_proxied_address_and_the_port_moves_on_when_busy(no_hu
             v.stop()
 
 
-def test_launch_refuses_a_malformed_base_url_before_serving(no_hub, capsys):
-    no_hub.setenv(address.BASE_URL_VARIABLE, "hub.org/user/ana")
+def test_launch_refuses_a_malformed_base_url_before_serving(monkeypatch, capsys):
+    monkeypatch.setenv(address.BASE_URL_VARIABLE, "hub.org/user/ana")
     with pytest.raises(ValueError, match=r"\$TOOLKIT_VIEWER_BASE_URL 'hub.org/user/ana' is malformed"):
         viewer.launch("2ds", port=0)
     assert capsys.readouterr().out == ""
 
 
-def test_toolkit_view_names_a_malformed_base_url(no_hub):
+def test_toolkit_view_names_a_malformed_base_url():
     done = subprocess.run(
         [sys.executable, "-m", "toolkit", "view", "--base-url", "www.hub.org/user/x/", "--port", "0"],
         capture_output=True,
@@ -110,7 +102,7 @@ def test_toolkit_view_names_a_malformed_base_url(no_hub):
     assert "the base URL 'www.hub.org/user/x/' is malformed: give a path such as /user/student/" in done.stderr
 
 
-def test_a_notebook_on_a_hub_shows_a_link_and_a_frame_and_locally_only_the_address(no_hub):
+def test_a_notebook_on_a_hub_shows_a_link_and_a_frame_and_locally_only_the_address():
     cell = 'from toolkit import viewer\nv = viewer.launch("2ds", port=0, base_url={base!r})\nprint(v.port)\nv.stop()'
     notebook = nbformat.v4.new_notebook(
         cells=[nbformat.v4.new_code_cell(cell.format(base=base)) for base in ("/user/student/", None)]
@@ -148,7 +140,7 @@ def start(command: list[str], env: dict[str, str], log: Path) -> subprocess.Pope
 @pytest.mark.browser
 @pytest.mark.slow
 @pytest.mark.skipif(viewer_browser.find_chromium() is None, reason="no Chromium installed (run `make browser`)")
-def test_chromium_opens_the_printed_address_through_a_jupyter_server(no_hub, tmp_path):
+def test_chromium_opens_the_printed_address_through_a_jupyter_server(tmp_path):
     pytest.importorskip("jupyter_server_proxy", reason="jupyter-server-proxy is in the dev and hub extras")
     jupyter_port = free_port()
     root = f"http://127.0.0.1:{jupyter_port}"
