@@ -36,6 +36,10 @@ def test_binder_starts_in_quick_mode_unless_told_otherwise():
     )
 
 
+def test_binder_builds_with_the_python_this_test_installs_into():
+    assert (BINDER / "runtime.txt").read_text().strip() == "python-{}.{}".format(*sys.version_info[:2])
+
+
 def test_the_requirements_pin_the_cpu_torch_and_install_the_toolkit_for_a_hub():
     lines = [line.split("#")[0].strip() for line in (BINDER / "requirements.txt").read_text().splitlines()]
     lines = [line for line in lines if line]
