@@ -13,8 +13,9 @@ Pieces (default: demo site site-again):
 - ``binder``: ``tests/test_binder.py``'s install of ``binder/requirements.txt`` and its run of chapter 01;
 - ``test``: the whole suite, ``python -m pytest -q`` (``make test`` adds the set-up and the lint).
 
-Prints one JSON line per piece: its wall time in seconds and the load average (1 min) before and after, on
-``os.cpu_count()`` cores. Run it with the project's environment (``.venv/bin/python``) from the repository's root.
+Prints one JSON line per piece (its output goes to DIR/PIECE.log): its wall time in seconds and the load
+average (1 min) before and after, on ``os.cpu_count()`` cores. Run it with the project's environment
+(``.venv/bin/python``) from the repository's root.
 """
 
 from __future__ import annotations
@@ -46,7 +47,21 @@ def commands(work: Path, cold: bool) -> dict[str, tuple[list[str], dict[str, str
             ],
             {},
         ),
-        "demo": ([python, "-m", "toolkit", "reproduce", "--scenario", "2ds", "--out", str(work / "demo")], {}),
+        "demo": (
+            [
+                python,
+                "-m",
+                "toolkit",
+                "reproduce",
+                "--scenario",
+                "2ds",
+                "--preset",
+                "paper",
+                "--out",
+                str(work / "demo"),
+            ],
+            {},
+        ),
         "site": (site, cache),
         "site-again": (site, cache),
         "binder": ([python, "-m", "pytest", "-q", "tests/test_binder.py", "-k", "runs_a_chapter"], {}),
@@ -66,10 +81,12 @@ def main() -> None:
         parser.error(f"unknown piece {', '.join(unknown)}; choose from {', '.join(known)}")
     for piece in args.pieces:
         command, extra = known[piece]
-        if piece == "site":  # a first build: no executed notebook to reuse
-            shutil.rmtree(work / "executed", ignore_errors=True)
+        fresh = {"setup": "venv", "demo": "demo", "site": "executed"}  # what a first run finds missing
+        if piece in fresh:  # (a reproduction resumes from its cache; a site build reuses executed notebooks)
+            shutil.rmtree(work / fresh[piece], ignore_errors=True)
         load_before, began = os.getloadavg()[0], time.perf_counter()
-        done = subprocess.run(command, cwd=ROOT, env={**os.environ, **extra}, stdout=subprocess.DEVNULL)
+        with (work / f"{piece}.log").open("w") as log:  # its output, for a piece that failed
+            done = subprocess.run(command, cwd=ROOT, env={**os.environ, **extra}, stdout=log, stderr=log)
         took = time.perf_counter() - began
         print(
             json.dumps(
