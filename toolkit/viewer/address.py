@@ -63,5 +63,6 @@ def link_and_frame(url: str, height: int = 480) -> str:
     url = html.escape(url, quote=True)
     return (
         f'<div><p>The live viewer: <a href="{url}" target="_blank">{url}</a> (opens in a new tab)</p>'
-        f'<iframe src="{url}" width="100%" height="{int(height)}" style="border:none"></iframe></div>'
+        f'<iframe src="{url}" title="The live viewer" width="100%" height="{int(height)}" '
+        'style="border:none"></iframe></div>'
     )
