@@ -48,8 +48,9 @@ handout: setup
 	$(PY) -c "from tools import handout; print(handout.build_handout('handout'))"
 
 # The course website, built into site/ (open site/index.html, or serve it from any static host:
-# tutorials/instructors.md): the notebooks and tutorials executed at full size (TOOLKIT_QUICK=1: quick),
-# the assignments' student versions, docs/ and the API reference of toolkit/ (tools/site.py).
+# tutorials/instructors.md): the notebooks and tutorials executed at full size (TOOLKIT_QUICK=1: quick; a notebook
+# whose inputs have not changed since the last build is reused from build/site/executed, tools/executed_notebooks.py),
+# each with a download without outputs, the assignments' student versions, docs/ and the API reference (tools/site.py).
 site: setup
 	$(PY) -m tools.site --out site
 

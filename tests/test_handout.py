@@ -46,6 +46,9 @@ def test_the_handout_holds_the_course_and_no_solution(tmp_path):
     files = {str(p.relative_to(out)) for p in out.rglob("*") if p.is_file()}
     for needed in ("README.md", "pyproject.toml", "constraints.txt", "Makefile", "toolkit/__init__.py"):
         assert needed in files, needed
+    assert {"binder/requirements.txt", "binder/start"} <= files  # Binder for the published handout
+    assert (handout.ROOT / "tutorials" / "instructors_jupyterhub.md").is_file()
+    assert not [f for f in files if f.startswith("tutorials/instructors")]  # the instructors' guides stay out
     assert any(f.startswith("notebooks/") and f.endswith(".ipynb") for f in files)
     assert "tutorials/getting_started.ipynb" in files and "tutorials/assignments/README.md" in files
     outside = ("tests/", "tools/")  # the test suite and the course's build tools are not the students'

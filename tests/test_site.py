@@ -92,6 +92,7 @@ def test_widgets_are_a_visible_note_and_no_widget_state_is_left(site):
 def test_the_site_has_every_page_a_student_needs(site):
     expected = ["index.html", "docs/results.html", "docs/fidelity.html", "docs/benchmarks.html", "docs/design.html"]
     expected += ["docs/viewer.html", "tutorials/index.html", "tutorials/instructors.html", "reference/index.html"]
+    expected += ["tutorials/instructors_jupyterhub.html"]
     expected += [f"tutorials/assignments/{name}/{name}.html" for name in grading.assignment_names()]
     expected += [f"reference/{p}.html" for p in ("geometry", "learning", "planning", "experiments", "plots")]
     expected += [f"reference/{p}.html" for p in ("viewer", "teaching", "util", "cli", "scenarios")]
@@ -101,6 +102,23 @@ def test_the_site_has_every_page_a_student_needs(site):
     assert 'id="toolkit.geometry.robots.BoxRobot"' in geometry and 'class="autorefs autorefs-internal"' in geometry
     shown = re.findall(r'<h2 id="toolkit\.geometry\.(\w+)"', geometry)  # the modules, in the page's order
     assert shown == modules("geometry") and shown[:2] == ["robots", "workspace"]
+
+
+@pytest.mark.slow
+def test_every_notebook_page_links_its_notebook_without_outputs_and_assignments_their_student_version(site):
+    masters = [grading.master(name) for name in grading.assignment_names()]
+    for source in CHAPTERS + TUTORIALS + masters:
+        page = page_of(site, source)
+        link = re.search(r'<p class="notebook-take-away"><a href="([^"]+)" download>', page.read_text())
+        assert link, f"{source.name}: no download link"
+        download = (page.parent / link[1]).resolve()
+        assert download == site.out / "downloads" / source.name
+        notebook = nbformat.read(download, as_version=4)
+        assert not any(c.get("outputs") or c.get("execution_count") for c in notebook.cells), source.name
+        if source in masters:  # the student version: what otter assign hands out
+            assert notebook.metadata["otter"]["assignment_name"] == source.stem
+        else:
+            assert [c.source for c in notebook.cells] == [c.source for c in nbformat.read(source, as_version=4).cells]
 
 
 @pytest.mark.slow
@@ -226,6 +244,31 @@ def test_links_between_sources_land_on_pages(tmp_path):
         "[a](tutorials/assignments/README.md) [b](docs/results.md#x) [c](reference/planning.md#toolkit.planning) "
         "[d](nowhere.md)"
     )
+
+
+HUB = {"url": "https://hub.example.edu/", "repository": "https://github.com/course/handout.git", "branch": "spring"}
+
+
+def test_a_notebook_page_links_its_download_and_with_a_hub_its_nbgitpuller_link(tmp_path):
+    files = source_files(tmp_path)
+    files.append(File("downloads/chapter.ipynb", str(tmp_path), str(tmp_path / "site"), use_directory_urls=False))
+    chapter = FakePage(files.get_file_from_path("notebooks/chapter.ipynb"))
+    page = site_hooks.on_page_content("<h1 id='c'>Chapter</h1>", chapter, {"extra": {"jupyterhub": HUB}}, files)
+    links = re.findall(r'<a href="([^"]*)"', page.split("<h1")[0])
+    assert links == [
+        "../downloads/chapter.ipynb",
+        "https://hub.example.edu/hub/user-redirect/git-pull?repo=https%3A%2F%2Fgithub.com%2Fcourse%2Fhandout.git"
+        "&amp;branch=spring&amp;urlpath=lab%2Ftree%2Fhandout%2Fnotebooks%2Fchapter.ipynb",
+    ]
+    assert site_hooks.nbgitpuller_link({**HUB, "branch": ""}, "a b.ipynb").endswith(
+        "branch=main&urlpath=lab%2Ftree%2Fhandout%2Fa+b.ipynb"
+    )
+    unset = {"extra": {"jupyterhub": {"url": "", "repository": ""}}}  # as mkdocs.yml ships
+    assert re.findall(r'<a href="([^"]*)"', site_hooks.on_page_content("", chapter, unset, files)) == [
+        "../downloads/chapter.ipynb"
+    ]
+    other = FakePage(files.get_file_from_path("notebooks/02_cae_reconstruction.ipynb"))  # no download: no links
+    assert site_hooks.on_page_content("<p>x</p>", other, unset, files) == "<p>x</p>"
 
 
 def test_sphinx_roles_in_the_api_reference_become_cross_references():

@@ -6,7 +6,8 @@ hidden tests; students get the student version ``otter assign`` writes (:func:`g
 that install them, with every master replaced by its student version and no autograder, hidden
 test or solution in it; the course's own tools (``tools/``: this module, the site builder, the
 notebook runner) and the test suite stay out, since a student needs the library, not what builds
-the course around it. :func:`secret_lines` names the lines a master must not leak (its solutions
+the course around it, and so do the instructors' guides (``tutorials/instructors*.md``; the course website
+has them). :func:`secret_lines` names the lines a master must not leak (its solutions
 and hidden tests) and :func:`find_secrets` finds them in any tree of files: the
 handout, or a website built from the notebooks.
 """
@@ -35,7 +36,9 @@ SHIPPED = (  # path prefixes a handout copies; not tools/ (the course's build to
     "pyproject.toml",
     "constraints.txt",
     "Makefile",
+    "binder/",  # Binder's (repo2docker's) configuration: the published handout can be tried there
 )
+INSTRUCTORS_ONLY = ("tutorials/instructors",)  # the instructors' guides (instructors.md, instructors_jupyterhub.md)
 MARKERS = ("# BEGIN SOLUTION", "# END SOLUTION", "# BEGIN TESTS", "# END TESTS")  # otter's raw cells that open blocks
 MIN_CHARS = 20  # a secret line is at least this long: shorter ones (`return None`, `continue`) prove nothing
 
@@ -143,7 +146,7 @@ def find_secrets(root: Path, names: list[str] | None = None) -> list[str]:
 
 def _shipped_files() -> list[str]:
     """The repository's files a handout copies: tracked or not ignored by git, under :data:`SHIPPED`, outside
-    the assignments' folders (their masters and ``dist/``)."""
+    the assignments' folders (their masters and ``dist/``) and the instructors' guides."""
     listed = subprocess.run(
         ["git", "ls-files", "--cached", "--others", "--exclude-standard"],
         cwd=ROOT,
@@ -155,7 +158,9 @@ def _shipped_files() -> list[str]:
     return [
         path
         for path in listed
-        if path.startswith(SHIPPED) and not path.startswith(assignment_folders) and (ROOT / path).is_file()
+        if path.startswith(SHIPPED)
+        and not path.startswith(assignment_folders + INSTRUCTORS_ONLY)
+        and (ROOT / path).is_file()
     ]
 
 

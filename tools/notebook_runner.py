@@ -71,7 +71,7 @@ def run_notebook(path: str | Path, *, timeout: float = 900) -> NotebookRun:
     began, cpu_before = time.perf_counter(), _children_cpu()
     client.execute()  # shuts the kernel down and waits for it, so its CPU time is counted below
     wall, cpu = time.perf_counter() - began, _children_cpu() - cpu_before
-    outputs = [o for c in nb.cells if c.cell_type == "code" for o in c.outputs] + _widget_outputs(nb)
+    outputs = [o for c in nb.cells if c.cell_type == "code" for o in c.outputs] + widget_outputs(nb)
     return NotebookRun(nb, outputs, wall, cpu)
 
 
@@ -80,7 +80,7 @@ def _children_cpu() -> float:
     return usage.ru_utime + usage.ru_stime
 
 
-def _widget_outputs(nb) -> list[dict]:
+def widget_outputs(nb) -> list[dict]:
     """What the widgets' default values displayed (an ``interact`` shows its output, and a failing callback's
     traceback, in an Output widget, not in the cell's outputs)."""
     state = nb.metadata.get("widgets", {}).get("application/vnd.jupyter.widget-state+json", {}).get("state", {})

@@ -5,8 +5,10 @@
 1. :func:`assemble` gathers a source tree under ``build/site/docs`` that mirrors the repository's paths
    (so a link written in any source still points at its page): the README as the home page, the notebooks
    and tutorials executed by :func:`~tools.notebook_runner.run_notebook` (the one way notebooks run;
-   trained models come from the notebooks' cache), the assignments' student versions (what ``otter assign``
-   hands out, never the master), docs/, one API reference page per package, and MathJax;
+   trained models come from the notebooks' cache; a notebook whose inputs have not changed since the last
+   build is reused from ``build/site/executed``, :mod:`tools.executed_notebooks`), the assignments' student
+   versions (what ``otter assign`` hands out, never the master), every notebook without outputs to download,
+   docs/, one API reference page per package, and MathJax;
 2. :func:`render` runs mkdocs on it (``mkdocs.yml``: mkdocs-material, mkdocs-jupyter on the executed
    notebooks, mkdocstrings on the docstrings); :mod:`tools.site_hooks` makes links land on pages
    and keeps every page free of files from other hosts, so the site works from an intranet or from disk.
@@ -34,13 +36,15 @@ import nbformat
 
 from toolkit.teaching import grading
 from toolkit.teaching.notebook import QUICK_ENV, is_quick
-from tools.notebook_runner import NotebookRun, run_notebook
+from tools.executed_notebooks import run_or_reuse
+from tools.notebook_runner import NotebookRun
 
 ROOT = Path(__file__).resolve().parents[1]  # the repository (this file is tools/site.py)
 CONFIG = ROOT / "mkdocs.yml"
 PAGES = ("README.md", "docs/*.md", "docs/*.png", "tutorials/*.md", "tutorials/assignments/README.md")
 CHAPTERS = "notebooks/[0-9][0-9]_*.ipynb"
 TUTORIALS = "tutorials/*.ipynb"
+INSTRUCTORS_PAGES = "tutorials/instructors_*.md"  # after the instructors' guide in the sidebar
 DOCS_ORDER = ("results", "fidelity", "benchmarks", "design", "viewer")  # docs/ pages in the nav, then any others
 PACKAGES = (
     "util",
@@ -54,6 +58,7 @@ PACKAGES = (
     "teaching",
     "cli",
 )
+DOWNLOADS = "downloads"  # the notebooks without outputs, one folder (ignored by mkdocs-jupyter in mkdocs.yml)
 MATHJAX = "assets/mathjax"  # MathJax 2.7 from jupyter-server-mathjax, served from the site itself
 SITE_FILES = {  # the site's own files in docs/site/, and where the site serves them (named in mkdocs.yml)
     "docs/site/iframe-worker-shim.js": "assets/javascripts/iframe-worker-shim.js",  # extra.polyfills
@@ -91,17 +96,21 @@ def build_site(
     """Build the static site into ``out`` (replaced), its sources under ``work``; quick-sized when ``quick``."""
     docs = Path(work) / "docs"
     began = time.perf_counter()
-    runs = assemble(docs, quick=quick)
+    runs = assemble(docs, quick=quick, executed=Path(work) / "executed")
     assembled = time.perf_counter()
     render(docs, Path(out))
     return Site(Path(out), runs, assembled - began, time.perf_counter() - assembled)
 
 
-def assemble(docs: Path, *, quick: bool = False) -> dict[str, NotebookRun]:
+def assemble(docs: Path, *, quick: bool = False, executed: Path | None = None) -> dict[str, NotebookRun]:
     """Write the site's source tree into ``docs`` (replaced); returns the runs of the notebooks it executed.
 
+    A notebook whose inputs have not changed since it was executed into ``executed`` (default: beside ``docs``)
+    is not run again (:mod:`tools.executed_notebooks`). Each notebook is also offered to download as a student
+    runs it, without outputs (:data:`DOWNLOADS`): chapters and tutorials as written, assignments' student versions.
     Raises ``RuntimeError`` naming the notebook when one fails: a chapter with a traceback is no page to publish.
     """
+    executed = executed or docs.parent / "executed"
     shutil.rmtree(docs, ignore_errors=True)
     for pattern in PAGES:
         for source in sorted(ROOT.glob(pattern)):
@@ -112,10 +121,18 @@ def assemble(docs: Path, *, quick: bool = False) -> dict[str, NotebookRun]:
     with kernel_environment(quick):
         for source in sorted(ROOT.glob(CHAPTERS)) + sorted(ROOT.glob(TUTORIALS)):
             name = str(source.relative_to(ROOT))
-            runs[name] = execute(source, docs / name, quick=quick)
-            print(f"{name}: {runs[name].wall_s:.0f} s, {runs[name].figures} figures", flush=True)
+            runs[name], reused = execute(source, docs / name, quick=quick, executed=executed)
+            took = (
+                f"reused, unchanged since it ran ({runs[name].wall_s:.0f} s)"
+                if reused
+                else f"{runs[name].wall_s:.0f} s"
+            )
+            print(f"{name}: {took}, {runs[name].figures} figures", flush=True)
+            offer_download(source, docs)
     for name in grading.assignment_names():
-        copy(student_notebook(name), docs / grading.master(name).relative_to(ROOT))
+        student = student_notebook(name)
+        copy(student, docs / grading.master(name).relative_to(ROOT))
+        offer_download(student, docs)
     shutil.copytree(mathjax_folder(), docs / MATHJAX)
     (docs / MATHJAX / "config" / "toolkit.js").write_text(MATHJAX_CONFIG)
     write_reference(docs / "reference")
@@ -147,18 +164,33 @@ def set_environment(values: dict[str, str | None]) -> None:
             os.environ[key] = value
 
 
-def execute(source: Path, target: Path, *, quick: bool) -> NotebookRun:
-    """Run ``source`` from its own folder and write it, with its outputs and widgets made static, to ``target``."""
+def offer_download(source: Path, docs: Path) -> None:
+    """``source`` without outputs in the site's :data:`DOWNLOADS` folder, where each notebook page links it."""
+    target = docs / DOWNLOADS / source.name
+    if target.exists():
+        raise ValueError(f"two notebooks are named {source.name}: their downloads would be one file")
+    notebook = nbformat.read(source, as_version=4)
+    for cell in notebook.cells:
+        if cell.cell_type == "code":
+            cell.outputs, cell.execution_count = [], None
+    target.parent.mkdir(parents=True, exist_ok=True)
+    nbformat.write(notebook, target)
+
+
+def execute(source: Path, target: Path, *, quick: bool, executed: Path) -> tuple[NotebookRun, bool]:
+    """Run ``source`` from its own folder, or reuse its run kept in ``executed`` (then ``True``), and write it, with
+    its outputs and widgets made static, to ``target``."""
     failed = f"{source.relative_to(ROOT)} failed while building the site"
+    name = str(source.relative_to(ROOT))
     try:
-        run = run_notebook(source, timeout=600 if quick else 3600)
+        run, reused = run_or_reuse(source, executed, name, quick=quick, timeout=600 if quick else 3600)
     except Exception as error:  # nbclient's CellExecutionError (its last line names the error) or a dead kernel
         raise RuntimeError(f"{failed}: {ANSI_COLOR.sub('', str(error)).strip().splitlines()[-1]}") from error
     if run.problem() is not None:
         raise RuntimeError(f"{failed}: {run.problem()}")
     target.parent.mkdir(parents=True, exist_ok=True)
     nbformat.write(static_widgets(run.notebook), target)
-    return run
+    return run, reused
 
 
 def static_widgets(nb: nbformat.NotebookNode) -> nbformat.NotebookNode:
@@ -277,7 +309,7 @@ def navigation(docs: Path) -> list:
     return [
         {"Home": "README.md"},
         {"Chapters": found(CHAPTERS)},
-        {"Tutorials": ["tutorials/README.md", *tutorials, "tutorials/instructors.md"]},
+        {"Tutorials": ["tutorials/README.md", *tutorials, "tutorials/instructors.md", *found(INSTRUCTORS_PAGES)]},
         {"Assignments": ["tutorials/assignments/README.md", *found("tutorials/assignments/*/*.ipynb")]},
         {"Docs": named + [p for p in found("docs/*.md") if p not in named]},
         {"API reference": ["reference/index.md", *({f"toolkit.{p}": f"reference/{p}.md"} for p in packages())]},

@@ -7,6 +7,10 @@ as nbconvert made it), and not links to a folder or to a module of ``toolkit/``.
 one to its page: a folder to its ``README.md``, a module to its entry in the API reference. In the API
 reference, the docstrings' Sphinx roles (``:func:`name```) become links to the object where it is found.
 
+Take-away: each notebook page (chapter, tutorial, assignment) begins with a link to its notebook without outputs
+(``downloads/``, written by :mod:`tools.site`) and, when ``mkdocs.yml``'s ``extra.jupyterhub`` names the course's
+hub and the repository its students pull, a link that opens it there through nbgitpuller.
+
 Offline: notebook pages load MathJax from the site's own copy (``assets/mathjax``, at the right depth for
 each page), and nbconvert's loader of mermaid diagrams, which imports its script from a CDN, is dropped
 (no chapter draws a mermaid diagram).
@@ -14,10 +18,12 @@ each page), and nbconvert's loader of mermaid diagrams, which imports its script
 
 from __future__ import annotations
 
+import html as html_lib
 import posixpath
 import re
+from collections.abc import Mapping
 from typing import TypedDict
-from urllib.parse import urlsplit
+from urllib.parse import urlencode, urlsplit
 
 from mkdocs.structure.files import File, Files
 from mkdocs.structure.pages import Page
@@ -25,6 +31,7 @@ from mkdocs.structure.toc import get_toc
 
 MATHJAX_PLACEHOLDER = '"MATHJAX/'  # how mkdocs.yml's custom_mathjax_url starts; the site's copy replaces it
 MATHJAX = "assets/mathjax"
+DOWNLOADS = "downloads"  # tools.site's folder of notebooks without outputs
 MARKDOWN_LINK = re.compile(r"(?P<head>\]\()(?P<url>[^)\s#]+)(?P<fragment>#[^)\s]*)?(?P<tail>\))")
 HTML_LINK = re.compile(r'(?P<head>\b(?:href|src)=")(?P<url>[^"#]+)(?P<fragment>#[^"]*)?(?P<tail>")')
 HEADING = re.compile(r'<h(?P<level>[1-6]) id="(?P<id>[^"]+)"(?P<attrs>[^>]*)>(?P<body>.*?)</h(?P=level)>', re.DOTALL)
@@ -90,6 +97,7 @@ def on_page_content(html: str, page: Page, config, files: Files) -> str:
         return html
     mathjax = posixpath.relpath(MATHJAX, posixpath.dirname(page.file.dest_uri) or ".")
     html = headings_and_contents(MERMAID_LOADER.sub("", html.replace(MATHJAX_PLACEHOLDER, f'"{mathjax}/')), page)
+    html = take_away(page, config["extra"].get("jupyterhub") if config else None, files) + html
 
     def resolve(match: re.Match) -> str:
         found = target(match["url"], page, files)
@@ -100,6 +108,34 @@ def on_page_content(html: str, page: Page, config, files: Files) -> str:
         )
 
     return HTML_LINK.sub(resolve, html)
+
+
+def take_away(page: Page, hub: Mapping | None, files: Files) -> str:
+    """The links a notebook page begins with: its notebook without outputs to download, and (when ``hub`` names
+    the course's ``url`` and ``repository``) a link that opens it on that JupyterHub; "" when there is no download."""
+    download = files.get_file_from_path(f"{DOWNLOADS}/{posixpath.basename(page.file.src_uri)}")
+    if download is None:
+        return ""
+    links = [
+        f'<a href="{download.url_relative_to(page.file)}" download>Download this notebook</a> '
+        "(without outputs: run it in JupyterLab)"
+    ]
+    if hub and hub.get("url") and hub.get("repository"):
+        url = html_lib.escape(nbgitpuller_link(hub, page.file.src_uri), quote=True)
+        links.append(f'<a href="{url}">Open it on the course\'s JupyterHub</a>')
+    return f'<p class="notebook-take-away">{" · ".join(links)}</p>\n'
+
+
+def nbgitpuller_link(hub: Mapping, path: str) -> str:
+    """A link that clones (or updates) the course's ``repository`` into the student's home on the JupyterHub at
+    ``url`` and opens ``path`` (the notebook's path in that repository) in JupyterLab: nbgitpuller's ``git-pull``
+    (installed in the hub's image). ``branch`` defaults to ``main``; the folder is the repository's name."""
+    repository = str(hub["repository"])
+    folder = repository.rstrip("/").removesuffix(".git").rsplit("/", 1)[-1]
+    query = urlencode(
+        {"repo": repository, "branch": hub.get("branch") or "main", "urlpath": f"lab/tree/{folder}/{path}"}
+    )
+    return f"{str(hub['url']).rstrip('/')}/hub/user-redirect/git-pull?{query}"
 
 
 def headings_and_contents(html: str, page: Page) -> str:

@@ -156,7 +156,13 @@ def cmd_view(args: argparse.Namespace) -> int:
 
         outputs.writable_file(args.screenshot, "--screenshot")
     v = viewer.launch(
-        scenario, seed=args.seed, predictor=predictor, host=args.host, port=args.port, quiet=bool(args.screenshot)
+        scenario,
+        seed=args.seed,
+        predictor=predictor,
+        host=args.host,
+        port=args.port,
+        base_url=args.base_url,
+        quiet=bool(args.screenshot),
     )
     try:
         if args.samples:

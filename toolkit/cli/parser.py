@@ -146,6 +146,13 @@ def view_options(cmd: argparse.ArgumentParser) -> None:
         help="first port to try, 0..65535 (default 8080; a busy one moves to the next free; 0: any free port)",
     )
     cmd.add_argument(
+        "--base-url",
+        metavar="URL",
+        help="the base URL of the Jupyter server the browser reaches the viewer through, e.g. /user/NAME/: the "
+        "printed address is then URLproxy/PORT/ (jupyter-server-proxy; `pip install sample-collision-toolkit[hub]`). "
+        "Default: $TOOLKIT_VIEWER_BASE_URL, else JupyterHub's own variables; none: the port itself",
+    )
+    cmd.add_argument(
         "--samples",
         type=int_in(0, 100_000),
         default=0,
@@ -256,9 +263,11 @@ SUBCOMMANDS: list[tuple[str, str, str, list[str], Callable[[argparse.ArgumentPar
         "show a scenario in your browser (Viser)",
         "Serves a 3D scene on this computer and prints the address to open: the workspace, the\n"
         "robot colored by the exact checker (green free, red colliding), a slider per joint,\n"
-        "samples, and a PRM roadmap with its path. Ctrl-C stops it.",
+        "samples, and a PRM roadmap with its path. Ctrl-C stops it. On a JupyterHub the address is\n"
+        "the port's path through your Jupyter server, /user/NAME/proxy/PORT/.",
         [
             "toolkit view --scenario 3do",
+            "toolkit view --base-url /user/student/              # through a Jupyter server with that base URL",
             "toolkit view --checkpoint runs/3dc7-strong          # also the model's predictions",
             "toolkit view --scenario 3dc9 --samples 300 --screenshot scene.png",
         ],

@@ -7,6 +7,9 @@
     v.set_configuration(v.robot.lower)        # move the robot; colors follow the checker
     v.stop()                                  # frees the port
 
+On a JupyterHub the printed URL is the port's path through the hub, ``/user/<name>/proxy/PORT/``
+(:mod:`toolkit.viewer.address`), and a notebook shows a link and an inline frame to it.
+
 The robot's link boxes are colored by the exact checker (green valid, red in
 collision, §III). With a learned model (``checkpoint=`` from ``toolkit train``) a
 wireframe around them shows its predicted probability of validity and a label marks
@@ -22,6 +25,7 @@ Reading order (each module imports only those above it):
 
 1. :mod:`toolkit.viewer.drawing` — workspaces, robots, samples and paths as Viser meshes and lines;
 2. :mod:`toolkit.viewer.server` — how a scene reaches a browser: a server on a free port, or a page inline;
+   :mod:`toolkit.viewer.address` — where a student opens it: the port, or its path through a JupyterHub;
 3. :mod:`toolkit.viewer.scene` — :class:`Viewer`: the live scene, and the events it tells its listeners;
 4. :mod:`toolkit.viewer.panel` — the GUI panel, one listener: joint sliders, samplers, planning, playback;
 5. :mod:`toolkit.viewer.app` — :func:`launch` (the scene with its panel), :func:`serve_forever`, :func:`embed`;

@@ -13,6 +13,7 @@ import time
 from pathlib import Path
 
 from toolkit.scenarios import Scenario
+from toolkit.viewer import address
 from toolkit.viewer.panel import Panel
 from toolkit.viewer.scene import Predictor, Viewer
 
@@ -25,9 +26,15 @@ def launch(
     predictor: Predictor | None = None,
     host: str = "127.0.0.1",
     port: int = 8080,
+    base_url: str | None = None,
     quiet: bool = False,
 ) -> Viewer:
-    """Start a :class:`Viewer` with its GUI panel and print the URL to open (and whether the port was busy)."""
+    """Start a :class:`Viewer` with its GUI panel and print the URL to open (and whether the port was busy).
+
+    Behind a Jupyter server (``base_url``, else the environment's: :func:`toolkit.viewer.address.base_url`) that URL
+    is the port's path through jupyter-server-proxy, and in a notebook a link and an inline frame to it are shown.
+    """
+    base = address.base_url(base_url)  # a malformed one is an error before anything is served
     viewer = Viewer(scenario, seed=seed, checkpoint=checkpoint, predictor=predictor, host=host, port=port)
     try:
         Panel(viewer)  # it subscribes to the viewer's events: the viewer keeps it
@@ -35,12 +42,23 @@ def launch(
         viewer.stop()
         raise
     if not quiet:
+        url = address.proxied(viewer.port, base) if base else viewer.url
         busy = f" (port {port} was busy)" if port and viewer.port != port else ""
-        print(
-            f"toolkit view: {scenario} (seed {seed}) at {viewer.url}{busy} — open it in a browser; Ctrl-C stops",
-            flush=True,
-        )
+        print(f"toolkit view: {scenario} (seed {seed}) at {url}{busy} — open it in a browser; Ctrl-C stops", flush=True)
+        if base:
+            _show_in_notebook(url)
     return viewer
+
+
+def _show_in_notebook(url: str) -> None:
+    """In a notebook's kernel, a link and an inline frame to ``url``; elsewhere (a terminal) nothing."""
+    try:
+        from IPython import get_ipython
+        from IPython.display import HTML, display
+    except ImportError:
+        return
+    if getattr(get_ipython(), "kernel", None) is not None:
+        display(HTML(address.link_and_frame(url)))
 
 
 def serve_forever(viewer: Viewer) -> None:
