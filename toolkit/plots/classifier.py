@@ -12,7 +12,7 @@ P(valid) >= a threshold. Against the exact checker each answer is one of four ki
 The maps here sweep two degrees of freedom over their bounds (:func:`slice_grid`;
 the point robot's whole C-space, or a 2-DoF slice of a 3D robot with the other joints
 fixed), show P(valid) as an image, draw the true C-obstacle boundary over it and mark
-every mistake at its cell, dangerous ones in red.
+every mistake at its cell, dangerous ones as squares.
 
 >>> grid = slice_grid(robot, dofs=(0, 1), n=80)  # doctest: +SKIP
 >>> probability = grid.image(checker.probability(grid.configs))  # (80, 80)  # doctest: +SKIP
@@ -34,10 +34,11 @@ from matplotlib.patches import Patch
 from toolkit.geometry.robots import BoxRobot
 from toolkit.learning import metrics
 from toolkit.plots.cspace import slice_configs
+from toolkit.plots.palette import COLORS, GREY_CMAP
 
-DANGEROUS, CONSERVATIVE, BOUNDARY = "red", "deepskyblue", "orange"
+DANGEROUS, CONSERVATIVE, BOUNDARY = COLORS["dangerous"], COLORS["conservative"], COLORS["boundary"]
 ANSWERS = ("valid kept", "valid rejected", "invalid rejected", "invalid kept (dangerous)")  # answer_codes 0-3
-ANSWER_COLORS = ("white", CONSERVATIVE, "0.15", DANGEROUS)  # C-space pictures: free white, obstacles dark
+ANSWER_COLORS = (COLORS["free"], CONSERVATIVE, COLORS["occupied"], DANGEROUS)  # free white, obstacles dark
 
 
 @dataclass(frozen=True)
@@ -164,31 +165,38 @@ def path_map(
     """A planner's roadmap ``nodes (M, dof)`` and returned ``path (P, dof)`` over a P(valid) map of the grid's two DoFs.
 
     Nodes in collision (``nodes_valid`` False, by the exact checker) are the dangerous mistakes the
-    planner accepted: red crosses. The path, checked exactly, avoids them.
+    planner accepted: crosses (``COLORS["dangerous"]``). The path, checked exactly, avoids them.
     """
     nodes, nodes_valid, path = np.asarray(nodes), np.asarray(nodes_valid, dtype=bool), np.asarray(path)
     fig = Figure(figsize=(5.6, 5.4), layout="constrained")
     ax = fig.subplots()
     fig.colorbar(_draw_probability(ax, probability, valid, grid, threshold), ax=ax, label="P(valid)", shrink=0.8)
     x, y = grid.dofs
-    ax.plot(nodes[nodes_valid, x], nodes[nodes_valid, y], ".", color="gold", markersize=4, label="roadmap node, valid")
+    ax.plot(
+        nodes[nodes_valid, x],
+        nodes[nodes_valid, y],
+        ".",
+        color=COLORS["node"],
+        markersize=4,
+        label="roadmap node, valid",
+    )
     ax.plot(
         nodes[~nodes_valid, x],
         nodes[~nodes_valid, y],
         "X",
         color=DANGEROUS,
-        markeredgecolor="black",
+        markeredgecolor=COLORS["ink"],
         markersize=7,
         label="roadmap node in collision",
     )
-    ax.plot(path[:, x], path[:, y], "-", color="limegreen", linewidth=2.5, label="returned path (checked exactly)")
+    ax.plot(path[:, x], path[:, y], "-", color=COLORS["path"], linewidth=2.5, label="returned path (checked exactly)")
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=9)
     _legend(fig, _mistake_handles() + ax.get_lines())
     return fig
 
 
 def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
-    """The four kinds of answer as bars (dangerous ones red) and accuracy / TPR / TNR."""
+    """The four kinds of answer as bars (dangerous ones in the invalid colour, last) and accuracy / TPR / TNR."""
     fig = Figure(figsize=(8, 3.4), layout="constrained")
     ax_counts, ax_rates = fig.subplots(1, 2)
     _draw_counts(ax_counts, predicted_valid, valid)
@@ -223,7 +231,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     _draw_counts(ax_counts, predicted, valid)
     _draw_roc(ax_roc, {"": (probability, valid, threshold)})
     fig.suptitle(title)
-    _legend(fig, [Patch(facecolor=c, edgecolor="black", label=a) for a, c in zip(ANSWERS, ANSWER_COLORS)])
+    _legend(fig, [Patch(facecolor=c, edgecolor=COLORS["ink"], label=a) for a, c in zip(ANSWERS, ANSWER_COLORS)])
     return fig
 
 
@@ -237,7 +245,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
         probability.T,
         origin="lower",
         extent=grid.extent,
-        cmap="gray",
+        cmap=GREY_CMAP,
         vmin=0,
         vmax=1,
         aspect="auto",
@@ -300,7 +308,7 @@ def _legend(fig: Figure, handles: list) -> None:
 
 def _draw_counts(ax, predicted_valid, valid) -> None:
     counts = confusion_counts(predicted_valid, valid)
-    bars = ax.bar(range(len(counts)), list(counts.values()), color=ANSWER_COLORS, edgecolor="black")
+    bars = ax.bar(range(len(counts)), list(counts.values()), color=ANSWER_COLORS, edgecolor=COLORS["ink"])
     ax.bar_label(bars, fontsize=8)
     ax.set_xticks(range(len(counts)), [a.replace(" ", "\n", 1) for a in ANSWERS], fontsize=8)
     ax.set_ylabel("configurations")
@@ -321,7 +329,7 @@ def _draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
 
 
 def _draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> None:
-    ax.plot([0, 1], [0, 1], color="lightgray", linestyle="--", label="chance")
+    ax.plot([0, 1], [0, 1], color=COLORS["reference"], linestyle="--", label="chance")
     for name, (probability, valid, threshold) in curves.items():
         _, fpr, tpr = roc_points(probability, valid)
         auc = np.trapezoid(tpr[::-1], fpr[::-1])  # thresholds rise, so FPR falls: integrate left to right
@@ -332,7 +340,7 @@ def _draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) ->
             tpr_t,
             "o",
             color=line.get_color(),
-            markeredgecolor="black",
+            markeredgecolor=COLORS["ink"],
             label=f"{name + ' ' if name else ''}threshold {threshold:.2f}",
         )
     ax.set_xlabel("FPR: invalid kept (dangerous) = 1 - TNR")

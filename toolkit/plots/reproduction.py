@@ -9,6 +9,8 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from toolkit.plots.palette import COLORS, GREYS_CMAP
+
 MODES = ("without", "with")
 
 
@@ -17,7 +19,7 @@ def _show_grid(ax, grid: np.ndarray, title: str) -> None:
     if grid.ndim == 3:
         z = grid.shape[2] // 2
         grid, title = grid[:, :, z], f"{title} (slice z={z})"
-    ax.imshow(grid.T, origin="lower", cmap="gray_r", vmin=-1, vmax=1)
+    ax.imshow(grid.T, origin="lower", cmap=GREYS_CMAP, vmin=-1, vmax=1)
     ax.set_title(title, fontsize=9)
     ax.set_xticks([])
     ax.set_yticks([])
@@ -70,7 +72,7 @@ def threshold_sweep(probability: np.ndarray, valid: np.ndarray, threshold: float
     ax.plot(ts, predicted[:, truth].mean(axis=1), label="TPR (valid kept)")
     ax.plot(ts, (~predicted[:, ~truth]).mean(axis=1), label="TNR (invalid rejected)")
     if threshold is not None:
-        ax.axvline(threshold, color="gray", linestyle=":", label=f"threshold {threshold:.2f}")
+        ax.axvline(threshold, color=COLORS["reference"], linestyle=":", label=f"threshold {threshold:.2f}")
     ax.set_xlabel("threshold on P(valid)")
     ax.set_ylim(0, 1.02)
     ax.legend(fontsize=8)
