@@ -29,7 +29,7 @@ from mkdocs.structure.files import File, Files
 
 from toolkit.teaching import grading
 from toolkit.viewer import browser as viewer_browser
-from tools import handout, site_hooks
+from tools import accessibility, handout, site_hooks
 from tools.site import LIVE_ONLY_IN_JUPYTERLAB, Site, build_site, modules, static_widgets
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -93,6 +93,34 @@ def test_the_site_has_every_page_a_student_needs(site):
     assert 'id="toolkit.geometry.robots.BoxRobot"' in geometry and 'class="autorefs autorefs-internal"' in geometry
     shown = re.findall(r'<h2 id="toolkit\.geometry\.(\w+)"', geometry)  # the modules, in the page's order
     assert shown == modules("geometry") and shown[:2] == ["robots", "workspace"]
+
+
+@pytest.mark.slow
+def test_every_figure_of_every_chapter_and_tutorial_has_a_text_alternative(site):
+    lacking = {}
+    for name, run in site.runs.items():
+        outputs = [o for cell in run.notebook.cells if cell.cell_type == "code" for o in cell.outputs]
+        images = [o for o in outputs if "image/png" in o.get("data", {})]
+        assert images, name
+        alts = [o.get("metadata", {}).get("image/png", {}).get("alt", "").strip() for o in images]
+        if not all(alts):
+            lacking[name] = f"{alts.count('')} of {len(images)} figures"
+    assert lacking == {}  # in the notebook (JupyterLab shows it too) ...
+    pages = {str(p.relative_to(site.out)): p.read_text() for p in site.out.rglob("*.html")}
+    assert [p for p, text in pages.items() if "No description has been provided" in text] == []  # nbconvert's
+    assert {p: n for p, text in pages.items() if (n := len(re.findall(r'<img\b(?![^>]*\balt="[^"]+")', text)))} == {}
+
+
+@pytest.mark.slow
+def test_the_embedded_scenes_are_titled_and_told_in_words(site):
+    page = page_of(site, ROOT / "notebooks" / "05_3d_scenes.ipynb").read_text()
+    frames = re.findall(r"<iframe\b[^>]*>", page)
+    assert len(frames) >= 3
+    assert all(re.search(r'title="3D scene of workspace \w+ \(\d+ blocks\) with the \w+ robot', f) for f in frames)
+    summaries = re.findall(r'<p class="scene-summary">([^<]*)</p>', page)
+    assert len(summaries) == len(frames) and all("valid" in s for s in summaries)
+    assert any(re.search(r"Samples: \d+ valid \(circles\), \d+ in collision \(diamonds\)", s) for s in summaries)
+    assert any(re.search(r"Path: \d+ configurations, length \d+\.\d\d", s) for s in summaries)
 
 
 @pytest.mark.slow
@@ -220,6 +248,35 @@ def test_links_between_sources_land_on_pages(tmp_path):
     )
 
 
+def test_a_page_keeps_one_h1_and_its_scrolling_code_can_be_reached_by_keyboard():
+    assert site_hooks.one_h1('<h1 id="a">A</h1> <h1 id="b">B <em>b</em></h1>') == (
+        '<h1 id="a">A</h1> <h2 id="b">B <em>b</em></h2>'
+    )
+    code = '<div class="highlight-ipynb hl-python"><pre>x</pre></div><div class="language-sh highlight"><pre><code>'
+    assert re.findall(r"<div[^>]*>", site_hooks.focusable_code(code)) == [
+        '<div class="highlight-ipynb hl-python" tabindex="0" role="region" aria-label="code">',
+        '<div class="language-sh highlight" tabindex="0" role="region" aria-label="code">',
+    ]
+
+
+def test_the_audit_counts_nodes_per_rule_and_lists_only_serious_and_critical_ones():
+    found = {
+        "a.html": [{"id": "color-contrast", "impact": "serious", "nodes": [{}, {}]}],
+        "b.html": [
+            {"id": "color-contrast", "impact": "serious", "nodes": [{}]},
+            {"id": "region", "impact": "moderate", "nodes": [{}]},
+        ],
+    }
+    assert accessibility.tally(found) == {
+        "color-contrast": {"impact": "serious", "nodes": 3, "pages": 2},
+        "region": {"impact": "moderate", "nodes": 1, "pages": 1},
+    }
+    assert accessibility.blocking(found) == {
+        "a.html": ["color-contrast (serious): 2 nodes"],
+        "b.html": ["color-contrast (serious): 1 nodes"],
+    }
+
+
 def test_sphinx_roles_in_the_api_reference_become_cross_references():
     rendered = (
         '<div class="doc doc-object doc-module">\n<h2 id="toolkit.teaching.grading" class="doc doc-heading">'
@@ -329,6 +386,17 @@ def test_the_chapter_shows_the_embedded_viewer_and_typeset_math(served, chromium
     finally:
         page.close()
     assert remote == []
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_no_page_has_a_serious_or_critical_accessibility_violation(site, served, chromium):
+    """axe-core's WCAG 2.0/2.1 A and AA rules on every page, the embedded viewers' frames included
+    (``python -m tools.accessibility SITE`` prints the same audit; docs/accessibility.md records it)."""
+    found = accessibility.audit_site(chromium, served, accessibility.pages(site.out))
+    assert len(found) >= 30
+    assert accessibility.blocking(found) == {}
 
 
 def search(page, words: str) -> list[str]:

@@ -7,6 +7,11 @@ as nbconvert made it), and not links to a folder or to a module of ``toolkit/``.
 one to its page: a folder to its ``README.md``, a module to its entry in the API reference. In the API
 reference, the docstrings' Sphinx roles (``:func:`name```) become links to the object where it is found.
 
+Accessible (WCAG 2.1 AA, measured by :mod:`tools.accessibility`): every page has one ``h1`` (a heading that
+a notebook's output prints becomes an ``h2``), and every block of code that scrolls sideways can be reached by
+keyboard (``tabindex="0"``) and is named for a screen reader (:func:`focusable_code`); the colours, underlined
+links and focus outline are in ``docs/site/accessibility.css``.
+
 Offline: notebook pages load MathJax from the site's own copy (``assets/mathjax``, at the right depth for
 each page), and nbconvert's loader of mermaid diagrams, which imports its script from a CDN, is dropped
 (no chapter draws a mermaid diagram).
@@ -30,6 +35,8 @@ HTML_LINK = re.compile(r'(?P<head>\b(?:href|src)=")(?P<url>[^"#]+)(?P<fragment>#
 HEADING = re.compile(r'<h(?P<level>[1-6]) id="(?P<id>[^"]+)"(?P<attrs>[^>]*)>(?P<body>.*?)</h(?P=level)>', re.DOTALL)
 ANCHOR_LINK = re.compile(r'<a class="anchor-link"[^>]*>.*?</a>', re.DOTALL)
 MERMAID_LOADER = re.compile(r'<script type="module">(?:(?!</script>).)*?\.jp-Mermaid.*?</script>', re.DOTALL)
+H1 = re.compile(r"<h1\b(?P<attrs>[^>]*)>(?P<body>.*?)</h1>", re.DOTALL)
+CODE_BLOCK = re.compile(r'<div class="(?P<cls>[^"]*\bhighlight(?:-ipynb)?\b[^"]*)">(?P<inner>\s*<pre)(?![^>]*tabindex)')
 ROLE_OR_MODULE = re.compile(
     r'doc-object doc-module">\s*<h\d id="(?P<module>[\w.]+)"'  # where a module's entry begins
     r"|:(?:py:)?(?:mod|func|class|meth|attr|data|exc|obj):<code>(?P<tilde>~)?(?P<name>[\w.]+)</code>"
@@ -83,13 +90,15 @@ def on_page_markdown(markdown: str, page: Page, config, files: Files) -> str:
 
 def on_page_content(html: str, page: Page, config, files: Files) -> str:
     """Notebook pages: links go to pages, MathJax comes from the site, no mermaid loader. API reference:
-    Sphinx roles become cross-references."""
+    Sphinx roles become cross-references. Every page: its code blocks can be reached by keyboard."""
+    html = focusable_code(html)
     if page.file.src_uri.startswith("reference/"):
         return cross_references(html)
     if not page.file.src_uri.endswith(".ipynb"):
         return html
     mathjax = posixpath.relpath(MATHJAX, posixpath.dirname(page.file.dest_uri) or ".")
     html = headings_and_contents(MERMAID_LOADER.sub("", html.replace(MATHJAX_PLACEHOLDER, f'"{mathjax}/')), page)
+    html = one_h1(html)
 
     def resolve(match: re.Match) -> str:
         found = target(match["url"], page, files)
@@ -100,6 +109,26 @@ def on_page_content(html: str, page: Page, config, files: Files) -> str:
         )
 
     return HTML_LINK.sub(resolve, html)
+
+
+def one_h1(html: str) -> str:
+    """The page's first ``h1`` stays; any later one (a notebook output's title) becomes an ``h2``."""
+    count = 0
+
+    def demote(match: re.Match) -> str:
+        nonlocal count
+        count += 1
+        return match[0] if count == 1 else f"<h2{match['attrs']}>{match['body']}</h2>"
+
+    return H1.sub(demote, html)
+
+
+def focusable_code(html: str) -> str:
+    """Each code block (``<div class="highlight...">``, its ``<pre>`` scrolls sideways) becomes a named region that
+    the keyboard can reach: ``tabindex="0" role="region" aria-label="code"``."""
+    return CODE_BLOCK.sub(
+        lambda m: f'<div class="{m["cls"]}" tabindex="0" role="region" aria-label="code">{m["inner"]}', html
+    )
 
 
 def headings_and_contents(html: str, page: Page) -> str:

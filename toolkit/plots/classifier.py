@@ -33,6 +33,7 @@ from matplotlib.patches import Patch
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.learning import metrics
+from toolkit.plots.alt import describe
 from toolkit.plots.cspace import slice_configs
 from toolkit.plots.palette import COLORS, GREY_CMAP
 
@@ -192,7 +193,9 @@ def path_map(
     ax.plot(path[:, x], path[:, y], "-", color=COLORS["path"], linewidth=2.5, label="returned path (checked exactly)")
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=9)
     _legend(fig, _mistake_handles() + ax.get_lines())
-    return fig
+    text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
+    text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (crosses), and the"
+    return describe(fig, text + f" returned path through {len(path)} configurations, checked exactly.")
 
 
 def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:

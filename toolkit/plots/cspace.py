@@ -6,18 +6,15 @@ is the *configuration-space obstacle*; these figures draw it next to the geometr
 that makes it:
 
 - :func:`workspace_figure` draws a workspace's blocks (one patch per block);
-- :func:`occupancy_figure` draws its −1/+1 occupancy grid, the CAE's input (a 3D
-  grid as one image per z layer);
-- :func:`robot_figure` draws a robot's link boxes at configurations (forward
-  kinematics, ``robot.link_boxes``), projected onto coordinate planes or in 3D
-  (:func:`draw_robot` draws them on an axes of your own);
-- :func:`cspace_image` draws the point robot's whole 2-DoF C-space, dark where the
-  checker says "in collision";
-- :func:`cspace_slice` draws a 2-DoF slice of any robot's C-space (two DoF vary,
-  the others stay fixed) beside the robot at the fixed configuration.
+- :func:`occupancy_figure` draws its −1/+1 occupancy grid, the CAE's input (a 3D grid as one image per z layer);
+- :func:`robot_figure` draws a robot's link boxes at configurations (forward kinematics, ``robot.link_boxes``),
+  projected onto coordinate planes or in 3D (:func:`draw_robot` draws them on an axes of your own);
+- :func:`cspace_image` draws the point robot's whole 2-DoF C-space, dark where the checker says "in collision";
+- :func:`cspace_slice` draws a 2-DoF slice of any robot's C-space (two DoF vary, the others stay fixed) beside
+  the robot at the fixed configuration.
 
 Each box (a block or a link) is drawn from its corners (:mod:`toolkit.plots.boxes`). Every function returns a
-matplotlib ``Figure`` and never calls ``show()``.
+matplotlib ``Figure``, described in words (:func:`~toolkit.plots.alt.describe`), and never calls ``show()``.
 """
 
 from __future__ import annotations
@@ -33,6 +30,7 @@ from matplotlib.patches import Patch, Polygon, Rectangle
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
+from toolkit.plots.alt import describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
 from toolkit.plots.palette import CATEGORICAL, COLORS
 
@@ -332,7 +330,9 @@ def cspace_image(checker: CollisionChecker, resolution: int = 600, window: tuple
         "outlined: the workspace's blocks",
         fontsize=10,
     )
-    return fig
+    where = f"{checker_workspace(checker).family} workspace" + (" (a window of it)" if window else "")
+    text = f"Configuration space of the 2D point robot in the {where}: {1 - valid.mean():.0%} of configurations"
+    return describe(fig, text + " in collision, drawn dark; the workspace's blocks outlined inside them.")
 
 
 def cspace_slice(
@@ -356,16 +356,10 @@ def cspace_slice(
     fig = Figure(figsize=(9.5 if view else 5, 4.4))
     ax = fig.add_subplot(1, 2 if view else 1, 1)
     valid = _draw_cspace(ax, checker, q, joints, resolution, None)
-    ax.plot(
-        q[joints[0]],
-        q[joints[1]],
-        marker="*",
-        markersize=14,
-        markeredgecolor=COLORS["ink"],
-        color=_link_colors(1, q_valid)[0],
-        linestyle="none",
-        gid="q",
+    star: dict[str, Any] = dict(
+        marker="*", markersize=14, markeredgecolor=COLORS["ink"], color=_link_colors(1, q_valid)[0]
     )
+    ax.plot(q[joints[0]], q[joints[1]], linestyle="none", gid="q", **star)
     fixed = [f"{robot.dof_names[k]}={q[k]:.2f}" for k in range(robot.dof) if k not in joints]
     ax.set_title(
         f"{robot.name}: {1 - valid.mean():.0%} of this slice in collision (dark)\nfixed: " + ", ".join(fixed),
@@ -378,7 +372,11 @@ def cspace_slice(
         verdict = "valid" if q_valid[0] else "in collision"
         robot_ax.set_title(f"the robot at the star ({view}): {verdict}", fontsize=9)
     fig.tight_layout()
-    return fig
+    swept = " and ".join(robot.dof_names[k] for k in joints)
+    text = f"Slice of the {robot.name} robot's configuration space over {swept}, the other DoF fixed: "
+    text += f"{1 - valid.mean():.0%} in collision (dark). A star marks the fixed configuration, which is "
+    text += ("valid." if q_valid[0] else "in collision.") + (" Beside it, the robot there." if view else "")
+    return describe(fig, text)
 
 
 def configuration_near_blocks(checker: CollisionChecker, rng: np.random.Generator, n: int = 2000) -> np.ndarray:

@@ -23,6 +23,7 @@ from matplotlib.ticker import NullFormatter
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.planning.prm import GOAL, START, PlanStep
 from toolkit.planning.sampling import PAPER_SAMPLERS
+from toolkit.plots.alt import describe
 from toolkit.plots.cspace import checker_workspace, slice_configs
 from toolkit.plots.palette import CATEGORICAL, COLORS
 
@@ -91,7 +92,8 @@ def samplers(exact: CollisionChecker, samples: dict[str, np.ndarray], attempts: 
         ax.set_title(f"{name}: {count}" + (f" of {attempts} attempts" if attempts else ""), fontsize=9)
     fig.suptitle("Samples over the exact checker (grey: C-obstacles)")
     fig.tight_layout()
-    return fig
+    counts = ", ".join(f"{name} {len(Q)}" for name, Q in samples.items())
+    return describe(fig, f"Samples of {len(samples)} samplers over the point robot's C-obstacles (grey): {counts}.")
 
 
 def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) -> Figure:
@@ -111,7 +113,8 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
     ax.legend(fontsize=7, loc="upper left", framealpha=0.9)
     ax.set_title(f"S: {len(S)} uniform attempts", fontsize=9)
     fig.tight_layout()
-    return fig
+    counts = "; ".join(f"{label}: {mask.sum()} (marker {style['marker']})" for mask, style, label in groups)
+    return describe(fig, f"{len(S)} uniform attempts S over the point robot's C-obstacles (grey). {counts}.")
 
 
 def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
@@ -146,7 +149,16 @@ def roadmap(exact: CollisionChecker, step: PlanStep, title: str = "") -> Figure:
     if title:
         fig.suptitle(title, fontsize=10)
     fig.tight_layout(rect=(0, 0.1, 1, 1))
-    return fig
+    return describe(fig, f"{title + ': ' if title else ''}{step_in_words(step)}")
+
+
+def step_in_words(step: PlanStep) -> str:
+    """One step of Algorithm 1 in words (the text alternative of its roadmap picture)."""
+    text = f"Round {step.round}, {step.stage}: a roadmap of {len(step.nodes)} nodes "
+    text += f"({int(np.sum(step.node_verified))} confirmed exactly) and {len(step.edges)} edges over the C-obstacles"
+    if len(step.path):
+        text += f"; a {'solid' if step.stage == 'path' else 'dashed'} path through {len(step.path)} nodes"
+    return text + f"; a repair removed {len(step.removed_nodes)} nodes and {len(step.removed_edges)} edges."
 
 
 def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int = 3) -> Figure:
@@ -161,7 +173,7 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
     fig.suptitle("Algorithm 1 step by step (hollow: not yet confirmed exactly; X: removed by a repair)")
     _roadmap_legend(fig, axes)
     fig.tight_layout(rect=(0, 0.6 / fig.get_figheight(), 1, 1))
-    return fig
+    return describe(fig, "Algorithm 1 step by step. " + " ".join(step_in_words(step) for step in steps))
 
 
 def _roadmap_legend(fig: Figure, axes) -> None:

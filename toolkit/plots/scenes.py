@@ -21,6 +21,7 @@ from matplotlib.gridspec import SubplotSpec
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
+from toolkit.plots.alt import describe
 from toolkit.plots.cspace import INVALID_COLOR, VALID_COLOR, draw_robot
 from toolkit.plots.palette import COLORS
 
@@ -67,7 +68,9 @@ def path_frame(
     _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, valid_now, workspace, margin)
     _draw_series(fig, grid[1], robot, Q, index, series, threshold)
     fig.suptitle(_frame_title(index, frames, series, threshold), fontsize=10)
-    return fig
+    shown = "".join(f", {name}" for name, values in series.items() if values is not None and name != "valid")
+    text = f"A path of the {robot.name} robot, {_frame_title(index, frames, series, threshold)}. Left, the robot"
+    return describe(fig, text + f" in 3D and its base's trace; right, each DoF{shown} along the path.")
 
 
 def _draw_series(

@@ -7,10 +7,11 @@
     v.set_configuration(v.robot.lower)        # move the robot; colors follow the checker
     v.stop()                                  # frees the port
 
-The robot's link boxes are colored by the exact checker (green valid, red in
-collision, §III). With a learned model (``checkpoint=`` from ``toolkit train``) a
-wireframe around them shows its predicted probability of validity and a label marks
-disagreements; samples are colored by exact vs predicted validity. Planning runs the default
+The robot's link boxes are colored by the exact checker (the palette's valid and
+invalid colours, §III; the panel says which in words). With a learned model (``checkpoint=``
+from ``toolkit train``) a wireframe around them shows its predicted probability of validity and a
+label marks disagreements; samples are colored by exact validity and shaped by kind (circles valid,
+diamonds in collision, sparkles where the model is wrong). Planning runs the default
 planner, the lazy PRM of :func:`toolkit.planning.prm.plan`; with a model, the model decides samples
 and the planner is the one the experiments pair with its preset
 (:func:`toolkit.experiments.queries.default_options`: the paper's Algorithm 1, §III-B, for the

@@ -32,6 +32,7 @@ from toolkit.planning import prm
 from toolkit.planning.local_planner import path_at
 from toolkit.planning.sampling import make_sampler
 from toolkit.viewer import drawing as draw
+from toolkit.viewer.labels import label_controls
 from toolkit.viewer.server import camera_at, srcdoc_iframe, start_server, stop_server
 
 Predictor = Callable[[Workspace], CollisionChecker]  # workspace -> checker with are_valid(Q), probability(Q)
@@ -307,7 +308,7 @@ class Viewer:
     def html(self) -> str:
         """The current scene as one self-contained HTML document (no server needed), its camera framing the robot."""
         with self.lock, camera_at(self.server, *draw.robot_camera(self.robot, self.q)):
-            return self.server.scene.as_html()
+            return label_controls(self.server.scene.as_html())
 
     def summary(self) -> str:
         """The scene in words, the text alternative of a snapshot: workspace, robot, samples, path."""
@@ -338,7 +339,7 @@ class Viewer:
                 recording.insert_sleep(seconds / (frames - 1) if k else 0.0)
                 self._slide(middle - look_at)  # frame 0's too: each loop of the page starts from it
                 self.set_configuration(q)
-            document = recording.as_html()  # stops the recording
+            document = label_controls(recording.as_html())  # stops the recording
             self._slide(np.zeros(3))
             self.set_configuration(before)
         return document
