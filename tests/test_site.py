@@ -255,8 +255,25 @@ def test_a_page_keeps_one_h1_and_its_scrolling_code_can_be_reached_by_keyboard()
     code = '<div class="highlight-ipynb hl-python"><pre>x</pre></div><div class="language-sh highlight"><pre><code>'
     assert re.findall(r"<div[^>]*>", site_hooks.focusable_code(code)) == [
         '<div class="highlight-ipynb hl-python" tabindex="0" role="region" aria-label="code">',
-        '<div class="language-sh highlight" tabindex="0" role="region" aria-label="code">',
+        '<div class="language-sh highlight">',
     ]
+    assert '<pre tabindex="0" role="region" aria-label="code"><code>' in site_hooks.focusable_code(code)
+
+
+def test_a_figure_on_a_page_gets_the_alt_text_of_its_output(tmp_path):
+    figure = nbformat.v4.new_output(
+        "display_data", data={"image/png": "iVBORw0K\nGgo="}, metadata={"image/png": {"alt": 'a "dark" square'}}
+    )
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_code_cell("fig")]
+    nb.cells[0].outputs = [figure]
+    nbformat.write(nb, tmp_path / "chapter.ipynb")
+    page = (
+        '<img alt="No description has been provided for this image" class="" src="data:image/png;base64,iVBORw0KGgo=">'
+    )
+    assert site_hooks.figure_alts(page, tmp_path / "chapter.ipynb") == (
+        '<img alt="a &quot;dark&quot; square" class="" src="data:image/png;base64,iVBORw0KGgo=">'
+    )
 
 
 def test_the_audit_counts_nodes_per_rule_and_lists_only_serious_and_critical_ones():

@@ -59,6 +59,7 @@ SITE_FILES = {  # the site's own files in docs/site/, and where the site serves 
     "docs/site/iframe-worker-shim.js": "assets/javascripts/iframe-worker-shim.js",  # extra.polyfills
     "docs/site/notebook-pages.css": "assets/stylesheets/notebook-pages.css",  # extra_css
     "docs/site/accessibility.css": "assets/stylesheets/accessibility.css",  # extra_css
+    "docs/site/accessibility.js": "assets/javascripts/accessibility.js",  # extra_javascript
 }
 MATHJAX_CONFIG = """MathJax.Hub.Config({
   "HTML-CSS": {availableFonts: [], preferredFont: null, webFont: "STIX-Web", imageFont: null},

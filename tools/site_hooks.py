@@ -19,8 +19,11 @@ each page), and nbconvert's loader of mermaid diagrams, which imports its script
 
 from __future__ import annotations
 
+import html as html_lib
+import json
 import posixpath
 import re
+from pathlib import Path
 from typing import TypedDict
 from urllib.parse import urlsplit
 
@@ -35,8 +38,12 @@ HTML_LINK = re.compile(r'(?P<head>\b(?:href|src)=")(?P<url>[^"#]+)(?P<fragment>#
 HEADING = re.compile(r'<h(?P<level>[1-6]) id="(?P<id>[^"]+)"(?P<attrs>[^>]*)>(?P<body>.*?)</h(?P=level)>', re.DOTALL)
 ANCHOR_LINK = re.compile(r'<a class="anchor-link"[^>]*>.*?</a>', re.DOTALL)
 MERMAID_LOADER = re.compile(r'<script type="module">(?:(?!</script>).)*?\.jp-Mermaid.*?</script>', re.DOTALL)
+IMAGE = re.compile(r'<img\b[^>]*?\bsrc="data:image/png;base64,(?P<data>[^"]+)"[^>]*>')
 H1 = re.compile(r"<h1\b(?P<attrs>[^>]*)>(?P<body>.*?)</h1>", re.DOTALL)
-CODE_BLOCK = re.compile(r'<div class="(?P<cls>[^"]*\bhighlight(?:-ipynb)?\b[^"]*)">(?P<inner>\s*<pre)(?![^>]*tabindex)')
+CODE_BLOCK = re.compile(
+    r'<div class="(?P<cls>[^"]*\bhighlight(?P<cell>-ipynb)?\b[^"]*)">(?P<space>\s*)<pre(?![^>]*tabindex)'
+)
+REGION = 'tabindex="0" role="region" aria-label="code"'
 ROLE_OR_MODULE = re.compile(
     r'doc-object doc-module">\s*<h\d id="(?P<module>[\w.]+)"'  # where a module's entry begins
     r"|:(?:py:)?(?:mod|func|class|meth|attr|data|exc|obj):<code>(?P<tilde>~)?(?P<name>[\w.]+)</code>"
@@ -98,7 +105,7 @@ def on_page_content(html: str, page: Page, config, files: Files) -> str:
         return html
     mathjax = posixpath.relpath(MATHJAX, posixpath.dirname(page.file.dest_uri) or ".")
     html = headings_and_contents(MERMAID_LOADER.sub("", html.replace(MATHJAX_PLACEHOLDER, f'"{mathjax}/')), page)
-    html = one_h1(html)
+    html = figure_alts(one_h1(html), Path(page.file.abs_src_path or ""))
 
     def resolve(match: re.Match) -> str:
         found = target(match["url"], page, files)
@@ -109,6 +116,28 @@ def on_page_content(html: str, page: Page, config, files: Files) -> str:
         )
 
     return HTML_LINK.sub(resolve, html)
+
+
+def figure_alts(html: str, notebook: Path) -> str:
+    """Each figure's ``<img>`` gets the alt text its output carries in ``notebook`` (``metadata["image/png"]["alt"]``,
+    :mod:`toolkit.plots.alt`): nbconvert's lab template leaves that metadata out and writes a placeholder."""
+    if not notebook.is_file():  # a page made by hand (the tests')
+        return html
+    outputs = [o for c in json.loads(notebook.read_text()).get("cells", []) for o in c.get("outputs", [])]
+    alts = {
+        "".join(o["data"]["image/png"].split()): o.get("metadata", {}).get("image/png", {}).get("alt")
+        for o in outputs
+        if "image/png" in o.get("data", {})
+    }
+
+    def put(match: re.Match) -> str:
+        alt = alts.get("".join(match["data"].split()))
+        if not alt:
+            return match[0]
+        tag = re.sub(r'\s\balt="[^"]*"', "", match[0])
+        return tag.replace("<img", f'<img alt="{html_lib.escape(alt, quote=True)}"', 1)
+
+    return IMAGE.sub(put, html)
 
 
 def one_h1(html: str) -> str:
@@ -124,11 +153,15 @@ def one_h1(html: str) -> str:
 
 
 def focusable_code(html: str) -> str:
-    """Each code block (``<div class="highlight...">``, its ``<pre>`` scrolls sideways) becomes a named region that
-    the keyboard can reach: ``tabindex="0" role="region" aria-label="code"``."""
-    return CODE_BLOCK.sub(
-        lambda m: f'<div class="{m["cls"]}" tabindex="0" role="region" aria-label="code">{m["inner"]}', html
-    )
+    """Each block of code that scrolls sideways becomes a named region the keyboard can reach (:data:`REGION`):
+    a code cell's ``<div class="highlight-ipynb">`` (it scrolls), else the ``<pre>`` in ``<div class="highlight">``."""
+
+    def region(m: re.Match) -> str:
+        if m["cell"]:
+            return f'<div class="{m["cls"]}" {REGION}>{m["space"]}<pre'
+        return f'<div class="{m["cls"]}">{m["space"]}<pre {REGION}'
+
+    return CODE_BLOCK.sub(region, html)
 
 
 def headings_and_contents(html: str, page: Page) -> str:
