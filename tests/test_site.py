@@ -107,7 +107,7 @@ def test_every_figure_of_every_chapter_and_tutorial_has_a_text_alternative(site)
             lacking[name] = f"{alts.count('')} of {len(images)} figures"
     assert lacking == {}  # in the notebook (JupyterLab shows it too) ...
     pages = {str(p.relative_to(site.out)): p.read_text() for p in site.out.rglob("*.html")}
-    assert [p for p, text in pages.items() if "No description has been provided" in text] == []  # nbconvert's
+    assert [p for p, text in pages.items() if 'alt="No description has been provided' in text] == []  # nbconvert's
     assert {p: n for p, text in pages.items() if (n := len(re.findall(r'<img\b(?![^>]*\balt="[^"]+")', text)))} == {}
 
 
