@@ -366,7 +366,7 @@ def test_launch_joins_one_panel_to_the_viewer(capsys):
         v.stop()
 
 
-READING_ORDER = ["drawing", "server", "scene", "panel", "app", "browser"]  # toolkit/viewer/__init__.py's
+READING_ORDER = ["drawing", "server", "labels", "scene", "panel", "app", "browser"]  # toolkit/viewer/__init__.py's
 
 
 def viewer_imports(source: str) -> set[str]:

@@ -197,3 +197,12 @@ def test_a_snapshot_prints_nothing(capsys):
     """viser's banner and "Server stopped" would be two stray outputs per snapshot in a notebook."""
     snippet = viewer.embed("2ds", height=200)
     assert "<iframe srcdoc=" in snippet and capsys.readouterr().out == ""
+
+
+def test_a_saved_scene_names_its_player_controls_and_hides_notices():
+    from toolkit.viewer.labels import NAMES, label_controls
+
+    page = label_controls("<html><body><div id=root></div></body></html>")
+    assert page.endswith("</script>\n</body></html>") and "display: none !important" in page
+    assert all(name in page for name in NAMES.values())
+    assert label_controls("<p>no body</p>").startswith("<p>no body</p><style>")

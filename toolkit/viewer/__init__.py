@@ -23,10 +23,11 @@ Reading order (each module imports only those above it):
 
 1. :mod:`toolkit.viewer.drawing` — workspaces, robots, samples and paths as Viser meshes and lines;
 2. :mod:`toolkit.viewer.server` — how a scene reaches a browser: a server on a free port, or a page inline;
-3. :mod:`toolkit.viewer.scene` — :class:`Viewer`: the live scene, and the events it tells its listeners;
-4. :mod:`toolkit.viewer.panel` — the GUI panel, one listener: joint sliders, samplers, planning, playback;
-5. :mod:`toolkit.viewer.app` — :func:`launch` (the scene with its panel), :func:`serve_forever`, :func:`embed`;
-6. :mod:`toolkit.viewer.browser` — the page in headless Chromium: screenshots, what they show.
+3. :mod:`toolkit.viewer.labels` — names for a saved scene's player controls, for screen readers;
+4. :mod:`toolkit.viewer.scene` — :class:`Viewer`: the live scene, and the events it tells its listeners;
+5. :mod:`toolkit.viewer.panel` — the GUI panel, one listener: joint sliders, samplers, planning, playback;
+6. :mod:`toolkit.viewer.app` — :func:`launch` (the scene with its panel), :func:`serve_forever`, :func:`embed`;
+7. :mod:`toolkit.viewer.browser` — the page in headless Chromium: screenshots, what they show.
 """
 
 from toolkit.viewer.app import embed, launch, serve_forever
