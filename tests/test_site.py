@@ -4,7 +4,9 @@ student's browser reads it.
 The module's build executes every chapter and tutorial in quick mode with this session's model cache, renders
 the assignments' student versions and the API reference, and is checked for what a course needs: every figure
 on its page, no file from another host, no solution or hidden test, and (in headless Chromium, served from
-127.0.0.1 and opened from disk) loaded images, the embedded viewer, typeset math, search and unbroken links.
+127.0.0.1 and opened from disk) loaded images, the embedded viewer, typeset math, search and unbroken links;
+and accessible: every figure with alt text, every embedded scene titled and summarized, no serious or critical
+axe-core violation on any page (:mod:`tools.accessibility`).
 The fast tests hold the pieces (widgets made static, links resolved) against hand-made inputs.
 """
 
