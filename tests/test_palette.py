@@ -57,6 +57,13 @@ def test_every_two_roles_shown_together_stay_apart(deficiency):
         assert distance >= palette.MIN_DISTANCE, f"{figure}: {pair} {distance:.1f} apart for {deficiency}"
 
 
+@pytest.mark.parametrize("deficiency", [None, *DEFICIENCIES])
+def test_the_categorical_colours_stay_apart(deficiency):
+    seen = seen_as(list(palette.CATEGORICAL), deficiency)
+    distance = min(ciede2000(a, b) for a, b in itertools.combinations(seen, 2))
+    assert distance >= palette.MIN_DISTANCE, f"{distance:.1f} for {deficiency}"
+
+
 def test_valid_and_invalid_are_okabe_ito_and_roles_read_as_bytes():
     assert {palette.COLORS["valid"], palette.COLORS["invalid"]} <= set(palette.OKABE_ITO.values())
     assert palette.rgb("invalid") == (0xD5, 0x5E, 0x00)

@@ -35,7 +35,7 @@ from toolkit.geometry.robots import BoxRobot
 from toolkit.learning import metrics
 from toolkit.plots.alt import describe
 from toolkit.plots.cspace import slice_configs
-from toolkit.plots.palette import COLORS, GREY_CMAP
+from toolkit.plots.palette import CATEGORICAL, COLORS, GREY_CMAP
 
 DANGEROUS, CONSERVATIVE, BOUNDARY = COLORS["dangerous"], COLORS["conservative"], COLORS["boundary"]
 ANSWERS = ("valid kept", "valid rejected", "invalid rejected", "invalid kept (dangerous)")  # answer_codes 0-3
@@ -323,7 +323,7 @@ def _draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
     keys, labels = ("acc", "tpr", "tnr"), ("accuracy", "TPR (valid kept)", "TNR (invalid rejected)")
     x, width = np.arange(len(scores)), 0.8 / len(keys)
     for k, (key, label) in enumerate(zip(keys, labels)):
-        bars = ax.bar(x + (k - 1) * width, [s[key] for s in scores.values()], width, label=label)
+        bars = ax.bar(x + (k - 1) * width, [s[key] for s in scores.values()], width, color=CATEGORICAL[k], label=label)
         ax.bar_label(bars, fmt="%.2f", fontsize=7)
     ax.set_xticks(x, list(scores), fontsize=8)
     ax.set_ylim(0, 1.3)  # room for the legend above the bars
@@ -333,10 +333,11 @@ def _draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
 
 def _draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> None:
     ax.plot([0, 1], [0, 1], color=COLORS["reference"], linestyle="--", label="chance")
-    for name, (probability, valid, threshold) in curves.items():
+    for i, (name, (probability, valid, threshold)) in enumerate(curves.items()):
         _, fpr, tpr = roc_points(probability, valid)
         auc = np.trapezoid(tpr[::-1], fpr[::-1])  # thresholds rise, so FPR falls: integrate left to right
-        (line,) = ax.plot(fpr, tpr, label=f"{name + ': ' if name else ''}AUC {auc:.2f}")
+        style = dict(color=CATEGORICAL[i % len(CATEGORICAL)], linestyle=("-", "--", "-.", ":")[i % 4])
+        (line,) = ax.plot(fpr, tpr, label=f"{name + ': ' if name else ''}AUC {auc:.2f}", **style)
         _, fpr_t, tpr_t = roc_points(probability, valid, [threshold])
         ax.plot(
             fpr_t,

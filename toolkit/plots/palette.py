@@ -73,8 +73,8 @@ COLORS: dict[str, str] = {
     "c_obstacle": "#e0e0e0",  # the C-obstacles behind a roadmap
 }
 
-CATEGORICAL = tuple(OKABE_ITO[name] for name in ("blue", "orange", "bluish green", "vermillion", "sky blue"))
-"""Colours for categories that only a legend names (furniture kinds, configurations, planners)."""
+CATEGORICAL = (OKABE_ITO["blue"], OKABE_ITO["orange"], OKABE_ITO["sky blue"], OKABE_ITO["black"], "#888888")
+"""Colours for categories a legend names (furniture kinds, configurations, series): every two apart, as roles."""
 
 SHOWN_TOGETHER: dict[str, tuple[str, ...]] = {
     "robot and C-space figures": ("valid", "invalid", "block", "ink"),

@@ -9,7 +9,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from toolkit.plots.palette import COLORS, GREYS_CMAP
+from toolkit.plots.palette import CATEGORICAL, COLORS, GREYS_CMAP
 
 MODES = ("without", "with")
 
@@ -51,7 +51,15 @@ def planning_times(planning: dict, title: str = "") -> Figure:
             means = [planning[s][mode][key] for s in samplers]
             stds = [planning[s][mode].get(key + "_std", 0.0) for s in samplers]
             names = [s if mode == "without" else s + "F" for s in samplers]
-            bars = ax.bar(x + (i - 0.5) * 0.38, means, 0.38, yerr=stds, capsize=3, label=f"{mode} prediction")
+            bars = ax.bar(
+                x + (i - 0.5) * 0.38,
+                means,
+                0.38,
+                yerr=stds,
+                capsize=3,
+                color=CATEGORICAL[i],
+                label=f"{mode} prediction",
+            )
             ax.bar_label(bars, labels=names, fontsize=7, padding=2)
         ax.set_xticks(x, samplers)
         ax.set_ylabel(label)
@@ -68,9 +76,9 @@ def threshold_sweep(probability: np.ndarray, valid: np.ndarray, threshold: float
     predicted = p[None, :] >= ts[:, None]  # (T, N)
     fig = Figure(figsize=(5, 3.6))
     ax = fig.subplots()
-    ax.plot(ts, (predicted == truth).mean(axis=1), label="accuracy")
-    ax.plot(ts, predicted[:, truth].mean(axis=1), label="TPR (valid kept)")
-    ax.plot(ts, (~predicted[:, ~truth]).mean(axis=1), label="TNR (invalid rejected)")
+    ax.plot(ts, (predicted == truth).mean(axis=1), "-", color=CATEGORICAL[0], label="accuracy")
+    ax.plot(ts, predicted[:, truth].mean(axis=1), "--", color=CATEGORICAL[1], label="TPR (valid kept)")
+    ax.plot(ts, (~predicted[:, ~truth]).mean(axis=1), "-.", color=CATEGORICAL[2], label="TNR (invalid rejected)")
     if threshold is not None:
         ax.axvline(threshold, color=COLORS["reference"], linestyle=":", label=f"threshold {threshold:.2f}")
     ax.set_xlabel("threshold on P(valid)")
