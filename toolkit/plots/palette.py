@@ -73,7 +73,7 @@ COLORS: dict[str, str] = {
     "c_obstacle": "#e0e0e0",  # the C-obstacles behind a roadmap
 }
 
-CATEGORICAL = (OKABE_ITO["blue"], OKABE_ITO["orange"], OKABE_ITO["sky blue"], OKABE_ITO["black"], "#888888")
+CATEGORICAL = (OKABE_ITO["blue"], OKABE_ITO["orange"], OKABE_ITO["sky blue"], OKABE_ITO["black"], "#888888", "#ffffff")
 """Colours for categories a legend names (furniture kinds, configurations, series): every two apart, as roles."""
 
 SHOWN_TOGETHER: dict[str, tuple[str, ...]] = {
