@@ -109,7 +109,8 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
         frame_region(ax, workspace)
         ax.set_box_aspect(workspace.upper - workspace.lower)
         if kinds:
-            ax.legend(handles=[Patch(color=colors[k], label=k) for k in kinds], fontsize=8, loc="upper left")
+            handles = [Patch(facecolor=colors[k], edgecolor=COLORS["ink"], label=k) for k in kinds]
+            ax.legend(handles=handles, fontsize=8, loc="upper left")
     ax.set_title(title)
     return fig
 
