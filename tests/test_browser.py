@@ -39,8 +39,8 @@ def test_the_office_renders_with_its_samples(make_viewer, tmp_path):
         size=SIZE,
         ready=lambda png: (
             share(png, draw.OBSTACLE) > 0.03  # furniture covers much of the canvas
-            and share(png, draw.VALID) > 0.003  # valid samples, green
-            and share(png, draw.COLLIDING) > 0.0005  # samples in collision, red
+            and share(png, draw.VALID) > 0.003  # valid samples (blue circles)
+            and share(png, draw.COLLIDING) > 0.0005  # samples in collision (vermillion diamonds)
         ),
     )
 
@@ -49,7 +49,7 @@ def test_a_colliding_robot_shows_red(make_viewer, tmp_path):
     v = make_viewer("2ds", seed=0)
     centers = v.workspace.boxes.mean(axis=1)  # (K, 2)
     block = centers[np.argmin(np.linalg.norm(centers - v.q, axis=1))]  # the block nearest the robot: in view
-    v.set_configuration(block)  # the robot's square inside the block: it pokes out of it, red
+    v.set_configuration(block)  # the robot's square inside the block: it pokes out of it, in the invalid colour
     assert not v.valid
     png = viewer_browser.screenshot(
         v.url,
@@ -60,7 +60,7 @@ def test_a_colliding_robot_shows_red(make_viewer, tmp_path):
             and share(png, draw.OBSTACLE) > 0.01  # and the scene
         ),
     )
-    assert share(png, draw.VALID) == 0.0  # nothing green
+    assert share(png, draw.VALID) == 0.0  # nothing in the valid colour
 
 
 def test_the_embedded_snapshot_renders_without_a_server(tmp_path):

@@ -4,6 +4,7 @@ checker's C-obstacles, exactly the dangerous and conservative cells, hand-comput
 import numpy as np
 import pytest
 from matplotlib.collections import PathCollection
+from matplotlib.colors import to_rgba
 from matplotlib.contour import ContourSet
 
 from toolkit.geometry import robots
@@ -11,6 +12,7 @@ from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace
 from toolkit.learning import metrics
 from toolkit.plots import classifier as pc
+from toolkit.plots.palette import COLORS
 
 N = 24  # grid cells per axis
 
@@ -194,7 +196,7 @@ def test_confusion_bars_heights_are_the_counts_and_rates():
     truth = np.array([True] * 6 + [False] * 4)
     ax_counts, ax_rates = pc.confusion_bars(predicted, truth).axes
     assert [bar.get_height() for bar in ax_counts.patches] == [5, 1, 2, 2]
-    assert ax_counts.patches[3].get_facecolor()[:3] == (1.0, 0.0, 0.0)  # dangerous in red
+    assert ax_counts.patches[3].get_facecolor()[:3] == to_rgba(COLORS["dangerous"])[:3]
     rates = metrics.classification(predicted, truth)
     assert [bar.get_height() for bar in ax_rates.patches] == pytest.approx([rates["acc"], rates["tpr"], rates["tnr"]])
 

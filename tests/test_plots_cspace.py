@@ -22,6 +22,7 @@ from toolkit.geometry.collision import (
 )
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots import boxes, cspace
+from toolkit.plots.palette import CATEGORICAL
 
 
 @pytest.fixture
@@ -158,7 +159,9 @@ def test_robot_figure_draws_the_point_robot_square_at_q(square_world):
     assert links[0].get_facecolor()[:3] != links[1].get_facecolor()[:3]  # green vs red
     assert len(_patches(fig.axes[0], "block")) == 1  # the block at [10, 12]^2; [20, 25] x [3, 9] is far
     unjudged = cspace.robot_figure(robot, [[5.0, 6.0], [9.9, 11.0]])  # no validity: a colour per configuration
-    assert [p.get_facecolor()[:3] for p in _patches(unjudged.axes[0], "link")] == [to_rgba(c)[:3] for c in ("C0", "C1")]
+    assert [p.get_facecolor()[:3] for p in _patches(unjudged.axes[0], "link")] == [
+        to_rgba(c)[:3] for c in CATEGORICAL[:2]
+    ]
 
 
 def test_robot_figure_overlays_configurations_nearest_the_viewer_last_and_names_them():
@@ -171,10 +174,11 @@ def test_robot_figure_overlays_configurations_nearest_the_viewer_last_and_names_
     assert len(links) == 3 * youbot.n_links
     top_z = youbot.link_aabbs(bending)[:, :, 1, 2]  # (3, L): how high each link reaches
     drawn = [
-        to_rgba(f"C{k}")[:3] for k in np.unravel_index(np.argsort(top_z, axis=None, kind="stable"), top_z.shape)[0]
+        to_rgba(CATEGORICAL[k])[:3]
+        for k in np.unravel_index(np.argsort(top_z, axis=None, kind="stable"), top_z.shape)[0]
     ]
     assert [p.get_facecolor()[:3] for p in links] == drawn  # from above: lowest first, the upright gripper last
-    assert links[-1].get_facecolor()[:3] == to_rgba("C1")[:3]
+    assert links[-1].get_facecolor()[:3] == to_rgba(CATEGORICAL[1])[:3]
     assert [t.get_text() for t in fig.legends[0].get_texts()] == labels
     with pytest.raises(ValueError, match="2 labels for 3 configurations"):
         cspace.robot_figure(youbot, bending, labels=labels[:2])

@@ -137,7 +137,8 @@ def test_roadmap_of_a_real_plan_draws_as_many_edges_as_the_roadmap_has(exact, qu
     ax = planning.roadmap(exact, trace[-1]).axes[0]
     kept, removed = segments(ax)
     assert len(kept) == len(result.roadmap.edges) > 0 and len(removed) == 0
-    assert is_color(ax.lines[0].get_color(), planning.PATH_COLORS["path"]).all()
+    assert is_color(ax.lines[0].get_color(), planning.PATH_STYLES["path"][0]).all()
+    assert ax.lines[0].get_linestyle() == "-"  # the returned path solid, a candidate dashed
 
 
 def test_roadmap_steps_one_panel_per_step(exact):

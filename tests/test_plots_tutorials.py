@@ -3,6 +3,7 @@
 import io
 
 import numpy as np
+from matplotlib.colors import to_rgba
 from matplotlib.patches import Rectangle
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
@@ -10,6 +11,7 @@ from toolkit.geometry import meshes, robots
 from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace, from_mesh
 from toolkit.plots import tutorials
+from toolkit.plots.palette import COLORS
 
 
 def test_mesh_and_grid_draws_every_triangle_and_one_cube_per_occupied_cell():
@@ -36,11 +38,14 @@ def test_samplers_in_a_passage_counts_the_samples_inside_it():
     assert len(fig.axes) == 2
     assert fig.axes[0].get_title().endswith("2 in the passage") and fig.axes[1].get_title().endswith("0 in the passage")
     assert "3 samples of 10 attempts" in fig.axes[0].get_title()
-    red = [
+    outlined = [
         p
         for p in fig.axes[0].patches
-        if isinstance(p, Rectangle)
-        and p.get_edgecolor()[:3] == (0.8392156862745098, 0.15294117647058825, 0.1568627450980392)
+        if isinstance(p, Rectangle) and p.get_edgecolor()[:3] == to_rgba(COLORS["highlight"])[:3]
     ]
-    assert len(red) == 1 and red[0].get_xy() == (15.0, 14.0) and (red[0].get_width(), red[0].get_height()) == (1.0, 3.0)
+    assert (
+        len(outlined) == 1
+        and outlined[0].get_xy() == (15.0, 14.0)
+        and (outlined[0].get_width(), outlined[0].get_height()) == (1.0, 3.0)
+    )
     assert fig.get_suptitle().startswith("2 samplers")

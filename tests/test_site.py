@@ -4,7 +4,9 @@ student's browser reads it.
 The module's build executes every chapter and tutorial in quick mode with this session's model cache, renders
 the assignments' student versions and the API reference, and is checked for what a course needs: every figure
 on its page, no file from another host, no solution or hidden test, and (in headless Chromium, served from
-127.0.0.1 and opened from disk) loaded images, the embedded viewer, typeset math, search and unbroken links.
+127.0.0.1 and opened from disk) loaded images, the embedded viewer, typeset math, search and unbroken links;
+and accessible: every figure with alt text, every embedded scene titled and summarized, no serious or critical
+axe-core violation on any page (:mod:`tools.accessibility`).
 The fast tests hold the pieces (widgets made static, links resolved) against hand-made inputs.
 """
 
@@ -30,7 +32,7 @@ from mkdocs.structure.files import File, Files
 
 from toolkit.teaching import grading
 from toolkit.viewer import browser as viewer_browser
-from tools import handout, site_hooks
+from tools import accessibility, handout, site_hooks
 from tools.site import LIVE_ONLY_IN_JUPYTERLAB, Site, build_site, modules, static_widgets
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -119,6 +121,33 @@ def test_every_notebook_page_links_its_notebook_without_outputs_and_assignments_
             assert notebook.metadata["otter"]["assignment_name"] == source.stem
         else:
             assert [c.source for c in notebook.cells] == [c.source for c in nbformat.read(source, as_version=4).cells]
+
+
+def test_every_figure_of_every_chapter_and_tutorial_has_a_text_alternative(site):
+    lacking = {}
+    for name, run in site.runs.items():
+        outputs = [o for cell in run.notebook.cells if cell.cell_type == "code" for o in cell.outputs]
+        images = [o for o in outputs if "image/png" in o.get("data", {})]
+        assert images, name
+        alts = [o.get("metadata", {}).get("image/png", {}).get("alt", "").strip() for o in images]
+        if not all(alts):
+            lacking[name] = f"{alts.count('')} of {len(images)} figures"
+    assert lacking == {}  # in the notebook (JupyterLab shows it too) ...
+    pages = {str(p.relative_to(site.out)): p.read_text() for p in site.out.rglob("*.html")}
+    assert [p for p, text in pages.items() if 'alt="No description has been provided' in text] == []  # nbconvert's
+    assert {p: n for p, text in pages.items() if (n := len(re.findall(r'<img\b(?![^>]*\balt="[^"]+")', text)))} == {}
+
+
+@pytest.mark.slow
+def test_the_embedded_scenes_are_titled_and_told_in_words(site):
+    page = page_of(site, ROOT / "notebooks" / "05_3d_scenes.ipynb").read_text()
+    frames = re.findall(r"<iframe\b[^>]*>", page)
+    assert len(frames) >= 3
+    assert all(re.search(r'title="3D scene of workspace \w+ \(\d+ blocks\) with the \w+ robot', f) for f in frames)
+    summaries = re.findall(r'<p class="scene-summary">([^<]*)</p>', page)
+    assert len(summaries) == len(frames) and all("valid" in s for s in summaries)
+    assert any(re.search(r"Samples: \d+ valid \(circles\), \d+ in collision \(diamonds\)", s) for s in summaries)
+    assert any(re.search(r"Path: \d+ configurations, length \d+\.\d\d", s) for s in summaries)
 
 
 @pytest.mark.slow
@@ -271,6 +300,52 @@ def test_a_notebook_page_links_its_download_and_with_a_hub_its_nbgitpuller_link(
     assert site_hooks.on_page_content("<p>x</p>", other, unset, files) == "<p>x</p>"
 
 
+def test_a_page_keeps_one_h1_and_its_scrolling_code_can_be_reached_by_keyboard():
+    assert site_hooks.one_h1('<h1 id="a">A</h1> <h1 id="b">B <em>b</em></h1>') == (
+        '<h1 id="a">A</h1> <h2 id="b">B <em>b</em></h2>'
+    )
+    code = '<div class="highlight-ipynb hl-python"><pre>x</pre></div><div class="language-sh highlight"><pre><code>'
+    assert re.findall(r"<div[^>]*>", site_hooks.focusable_code(code)) == [
+        '<div class="highlight-ipynb hl-python" tabindex="0" role="region" aria-label="code">',
+        '<div class="language-sh highlight">',
+    ]
+    assert '<pre tabindex="0" role="region" aria-label="code"><code>' in site_hooks.focusable_code(code)
+
+
+def test_a_figure_on_a_page_gets_the_alt_text_of_its_output(tmp_path):
+    figure = nbformat.v4.new_output(
+        "display_data", data={"image/png": "iVBORw0K\nGgo="}, metadata={"image/png": {"alt": 'a "dark" square'}}
+    )
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_code_cell("fig")]
+    nb.cells[0].outputs = [figure]
+    nbformat.write(nb, tmp_path / "chapter.ipynb")
+    page = (
+        '<img alt="No description has been provided for this image" class="" src="data:image/png;base64,iVBORw0KGgo=">'
+    )
+    assert site_hooks.figure_alts(page, tmp_path / "chapter.ipynb") == (
+        '<img alt="a &quot;dark&quot; square" class="" src="data:image/png;base64,iVBORw0KGgo=">'
+    )
+
+
+def test_the_audit_counts_nodes_per_rule_and_lists_only_serious_and_critical_ones():
+    found = {
+        "a.html": [{"id": "color-contrast", "impact": "serious", "nodes": [{}, {}]}],
+        "b.html": [
+            {"id": "color-contrast", "impact": "serious", "nodes": [{}]},
+            {"id": "region", "impact": "moderate", "nodes": [{}]},
+        ],
+    }
+    assert accessibility.tally(found) == {
+        "color-contrast": {"impact": "serious", "nodes": 3, "pages": 2},
+        "region": {"impact": "moderate", "nodes": 1, "pages": 1},
+    }
+    assert accessibility.blocking(found) == {
+        "a.html": ["color-contrast (serious): 2 nodes"],
+        "b.html": ["color-contrast (serious): 1 nodes"],
+    }
+
+
 def test_sphinx_roles_in_the_api_reference_become_cross_references():
     rendered = (
         '<div class="doc doc-object doc-module">\n<h2 id="toolkit.teaching.grading" class="doc doc-heading">'
@@ -380,6 +455,17 @@ def test_the_chapter_shows_the_embedded_viewer_and_typeset_math(served, chromium
     finally:
         page.close()
     assert remote == []
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_no_page_has_a_serious_or_critical_accessibility_violation(site, served, chromium):
+    """axe-core's WCAG 2.0/2.1 A and AA rules on every page, the embedded viewers' frames included
+    (``python -m tools.accessibility SITE`` prints the same audit; docs/accessibility.md records it)."""
+    found = accessibility.audit_site(chromium, served, accessibility.pages(site.out))
+    assert len(found) >= 30
+    assert accessibility.blocking(found) == {}
 
 
 def search(page, words: str) -> list[str]:

@@ -156,9 +156,11 @@ def test_samples_are_colored_by_the_exact_checker(make_viewer, rng):
     valid = v.exact.are_valid(Q)
     assert 0 < valid.sum() < len(Q)
     assert np.all(colors[valid] == draw.VALID) and np.all(colors[~valid] == draw.COLLIDING)
-    cloud = v.nodes["samples"]
-    np.testing.assert_allclose(cloud.points[:, :2], Q, atol=0.02)  # float16 points
-    assert np.array_equal(cloud.colors, colors)
+    for kind, mask in (("valid", valid), ("in collision", ~valid)):
+        cloud = v.sample_clouds[kind]
+        np.testing.assert_allclose(cloud.points[:, :2], Q[mask], atol=0.02)  # float16 points
+        assert np.array_equal(cloud.colors, colors[mask]) and cloud.point_shape == draw.SAMPLE_SHAPES[kind][0]
+    assert "model wrong" not in v.sample_clouds and f"Samples: {valid.sum()} valid (circles)" in v.summary()
 
 
 @pytest.mark.parametrize("sampler", ["BS", "OB", "G", "BT"])
@@ -166,7 +168,7 @@ def test_the_four_samplers_show_valid_samples(make_viewer, sampler):
     v = make_viewer("2ds")
     Q = v.sample(sampler, 200, seed=0)
     assert len(Q) > 0 and v.exact.are_valid(Q).all()
-    assert len(v.nodes["samples"].points) == len(Q)
+    assert len(v.sample_clouds["valid"].points) == len(Q) and "in collision" not in v.sample_clouds
 
 
 def test_a_wrong_model_is_marked_everywhere(make_panel, rng):
@@ -174,13 +176,16 @@ def test_a_wrong_model_is_marked_everywhere(make_panel, rng):
     v = panel.viewer
     assert v.valid and v.probability == 0.0 and not v.predicted_valid
     assert v.nodes["disagreement"].visible
-    assert np.all(np.asarray(v.nodes["prediction"].batched_colors) == draw.COLLIDING)  # p = 0 -> red
+    assert np.all(
+        np.asarray(v.nodes["prediction"].batched_colors) == draw.probability_colors([0.0])
+    )  # cividis' dark end
     assert "disagrees" in panel.status.content
     v.sample("raw", 300, seed=1)
-    colors = v.nodes["samples"].colors
     valid = v.exact.are_valid(v.robot.sample(np.random.default_rng(1), 300))
-    assert np.all(colors[valid] == draw.PREDICTED_COLLIDING_BUT_VALID)
-    assert np.all(colors[~valid] == draw.PREDICTED_VALID_BUT_COLLIDING)
+    assert v.sample_counts == {"valid": valid.sum(), "in collision": (~valid).sum(), "model wrong": 300}
+    wrong = v.sample_clouds["model wrong"]
+    assert len(wrong.points) == 300 and np.all(wrong.colors == draw.MISTAKE)
+    assert "300 the model gets wrong (sparkles)" in v.summary()
     panel.layers["prediction"].value = False
     assert not v.nodes["prediction"].visible and not v.nodes["disagreement"].visible
 
@@ -207,7 +212,9 @@ def test_a_trained_checkpoint_colors_the_robot_and_samples(make_viewer, checkpoi
     )
     Q = v.robot.sample(rng, 500)
     colors = v.show_samples(Q)
-    np.testing.assert_array_equal(colors, draw.validity_colors(v.exact.are_valid(Q), model.are_valid(Q)))
+    valid, predicted = v.exact.are_valid(Q), model.are_valid(Q)
+    np.testing.assert_array_equal(colors, draw.validity_colors(valid))
+    assert v.sample_counts["model wrong"] == np.sum(valid != predicted)
 
 
 def test_plan_shows_one_roadmap_node_and_a_playable_path(make_panel):
@@ -304,7 +311,7 @@ def test_a_registered_sampler_is_offered_and_samples_and_plans(make_panel, toy_s
     Q = v.sample(toy_sampler, 300, seed=4)
     np.testing.assert_array_equal(Q, Recording.drawn[-1])  # the viewer asked the registered class
     assert 0 < len(Q) < 300 and v.exact.are_valid(Q).all()
-    np.testing.assert_allclose(v.nodes["samples"].points[:, :2], Q, atol=0.02)
+    np.testing.assert_allclose(v.sample_clouds["valid"].points[:, :2], Q, atol=0.02)
     Recording.drawn = []
     result = v.plan(toy_sampler, seed=0)
     assert result.success and Recording.drawn  # the planner drew its rounds from the toy sampler
@@ -359,7 +366,7 @@ def test_launch_joins_one_panel_to_the_viewer(capsys):
         v.stop()
 
 
-READING_ORDER = ["drawing", "server", "address", "scene", "panel", "app", "browser"]  # toolkit/viewer/__init__.py's
+READING_ORDER = ["drawing", "server", "address", "labels", "scene", "panel", "app", "browser"]  # toolkit/viewer/__init__.py's
 
 
 def viewer_imports(source: str) -> set[str]:

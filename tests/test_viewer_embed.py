@@ -172,10 +172,11 @@ def test_animation_iframe_embeds_the_page_escaped(planned):
 
 
 def test_srcdoc_iframe_quotes_the_document_and_shows_without_a_warning(recwarn):
-    snippet = viewer.srcdoc_iframe('<p title="a & b">x</p>', height=120)
+    snippet = viewer.srcdoc_iframe('<p title="a & b">x</p>', height=120, summary="A scene of <3 blocks. Samples: 4.")
     assert snippet == (
         '<div><iframe srcdoc="&lt;p title=&quot;a &amp; b&quot;&gt;x&lt;/p&gt;" width="100%" '
-        'height="120" style="border:none"></iframe></div>'
+        'height="120" style="border:none" title="A scene of &lt;3 blocks"></iframe>'
+        '<p class="scene-summary">A scene of &lt;3 blocks. Samples: 4.</p></div>'
     )
     HTML(snippet)  # IPython warns "Consider using IPython.display.IFrame" about markup starting with <iframe
     assert not [w for w in recwarn if "IFrame" in str(w.message)]
@@ -196,3 +197,12 @@ def test_a_snapshot_prints_nothing(capsys):
     """viser's banner and "Server stopped" would be two stray outputs per snapshot in a notebook."""
     snippet = viewer.embed("2ds", height=200)
     assert "<iframe srcdoc=" in snippet and capsys.readouterr().out == ""
+
+
+def test_a_saved_scene_names_its_player_controls_and_hides_notices():
+    from toolkit.viewer.labels import NAMES, label_controls
+
+    page = label_controls("<html><body><div id=root></div></body></html>")
+    assert page.endswith("</script>\n</body></html>") and "display: none !important" in page
+    assert all(name in page for name in NAMES.values())
+    assert label_controls("<p>no body</p>").startswith("<p>no body</p><style>")

@@ -63,6 +63,8 @@ MATHJAX = "assets/mathjax"  # MathJax 2.7 from jupyter-server-mathjax, served fr
 SITE_FILES = {  # the site's own files in docs/site/, and where the site serves them (named in mkdocs.yml)
     "docs/site/iframe-worker-shim.js": "assets/javascripts/iframe-worker-shim.js",  # extra.polyfills
     "docs/site/notebook-pages.css": "assets/stylesheets/notebook-pages.css",  # extra_css
+    "docs/site/accessibility.css": "assets/stylesheets/accessibility.css",  # extra_css
+    "docs/site/accessibility.js": "assets/javascripts/accessibility.js",  # extra_javascript
 }
 MATHJAX_CONFIG = """MathJax.Hub.Config({
   "HTML-CSS": {availableFonts: [], preferredFont: null, webFont: "STIX-Web", imageFont: null},

@@ -11,6 +11,11 @@ Take-away: each notebook page (chapter, tutorial, assignment) begins with a link
 (``downloads/``, written by :mod:`tools.site`) and, when ``mkdocs.yml``'s ``extra.jupyterhub`` names the course's
 hub and the repository its students pull, a link that opens it there through nbgitpuller.
 
+Accessible (WCAG 2.1 AA, measured by :mod:`tools.accessibility`): every page has one ``h1`` (a heading that
+a notebook's output prints becomes an ``h2``), and every block of code that scrolls sideways can be reached by
+keyboard (``tabindex="0"``) and is named for a screen reader (:func:`focusable_code`); the colours, underlined
+links and focus outline are in ``docs/site/accessibility.css``.
+
 Offline: notebook pages load MathJax from the site's own copy (``assets/mathjax``, at the right depth for
 each page), and nbconvert's loader of mermaid diagrams, which imports its script from a CDN, is dropped
 (no chapter draws a mermaid diagram).
@@ -19,9 +24,11 @@ each page), and nbconvert's loader of mermaid diagrams, which imports its script
 from __future__ import annotations
 
 import html as html_lib
+import json
 import posixpath
 import re
 from collections.abc import Mapping
+from pathlib import Path
 from typing import TypedDict
 from urllib.parse import urlencode, urlsplit
 
@@ -37,6 +44,12 @@ HTML_LINK = re.compile(r'(?P<head>\b(?:href|src)=")(?P<url>[^"#]+)(?P<fragment>#
 HEADING = re.compile(r'<h(?P<level>[1-6]) id="(?P<id>[^"]+)"(?P<attrs>[^>]*)>(?P<body>.*?)</h(?P=level)>', re.DOTALL)
 ANCHOR_LINK = re.compile(r'<a class="anchor-link"[^>]*>.*?</a>', re.DOTALL)
 MERMAID_LOADER = re.compile(r'<script type="module">(?:(?!</script>).)*?\.jp-Mermaid.*?</script>', re.DOTALL)
+IMAGE = re.compile(r'<img\b[^>]*?\bsrc="data:image/png;base64,(?P<data>[^"]+)"[^>]*>')
+H1 = re.compile(r"<h1\b(?P<attrs>[^>]*)>(?P<body>.*?)</h1>", re.DOTALL)
+CODE_BLOCK = re.compile(
+    r'<div class="(?P<cls>[^"]*\bhighlight(?P<cell>-ipynb)?\b[^"]*)">(?P<space>\s*)<pre(?![^>]*tabindex)'
+)
+REGION = 'tabindex="0" role="region" aria-label="code"'
 ROLE_OR_MODULE = re.compile(
     r'doc-object doc-module">\s*<h\d id="(?P<module>[\w.]+)"'  # where a module's entry begins
     r"|:(?:py:)?(?:mod|func|class|meth|attr|data|exc|obj):<code>(?P<tilde>~)?(?P<name>[\w.]+)</code>"
@@ -90,13 +103,15 @@ def on_page_markdown(markdown: str, page: Page, config, files: Files) -> str:
 
 def on_page_content(html: str, page: Page, config, files: Files) -> str:
     """Notebook pages: links go to pages, MathJax comes from the site, no mermaid loader. API reference:
-    Sphinx roles become cross-references."""
+    Sphinx roles become cross-references. Every page: its code blocks can be reached by keyboard."""
+    html = focusable_code(html)
     if page.file.src_uri.startswith("reference/"):
         return cross_references(html)
     if not page.file.src_uri.endswith(".ipynb"):
         return html
     mathjax = posixpath.relpath(MATHJAX, posixpath.dirname(page.file.dest_uri) or ".")
     html = headings_and_contents(MERMAID_LOADER.sub("", html.replace(MATHJAX_PLACEHOLDER, f'"{mathjax}/')), page)
+    html = figure_alts(one_h1(html), Path(page.file.abs_src_path or ""))
     html = take_away(page, config["extra"].get("jupyterhub") if config else None, files) + html
 
     def resolve(match: re.Match) -> str:
@@ -136,6 +151,52 @@ def nbgitpuller_link(hub: Mapping, path: str) -> str:
         {"repo": repository, "branch": hub.get("branch") or "main", "urlpath": f"lab/tree/{folder}/{path}"}
     )
     return f"{str(hub['url']).rstrip('/')}/hub/user-redirect/git-pull?{query}"
+
+
+def figure_alts(html: str, notebook: Path) -> str:
+    """Each figure's ``<img>`` gets the alt text its output carries in ``notebook`` (``metadata["image/png"]["alt"]``,
+    :mod:`toolkit.plots.alt`): nbconvert's lab template leaves that metadata out and writes a placeholder."""
+    if not notebook.is_file():  # a page made by hand (the tests')
+        return html
+    outputs = [o for c in json.loads(notebook.read_text()).get("cells", []) for o in c.get("outputs", [])]
+    alts = {
+        "".join(o["data"]["image/png"].split()): o.get("metadata", {}).get("image/png", {}).get("alt")
+        for o in outputs
+        if "image/png" in o.get("data", {})
+    }
+
+    def put(match: re.Match) -> str:
+        alt = alts.get("".join(match["data"].split()))
+        if not alt:
+            return match[0]
+        tag = re.sub(r'\s\balt="[^"]*"', "", match[0])
+        return tag.replace("<img", f'<img alt="{html_lib.escape(alt, quote=True)}"', 1)
+
+    return IMAGE.sub(put, html)
+
+
+def one_h1(html: str) -> str:
+    """The page's first ``h1`` stays; any later one (a notebook output's title) becomes an ``h2``."""
+    count = 0
+
+    def demote(match: re.Match) -> str:
+        nonlocal count
+        count += 1
+        return match[0] if count == 1 else f"<h2{match['attrs']}>{match['body']}</h2>"
+
+    return H1.sub(demote, html)
+
+
+def focusable_code(html: str) -> str:
+    """Each block of code that scrolls sideways becomes a named region the keyboard can reach (:data:`REGION`):
+    a code cell's ``<div class="highlight-ipynb">`` (it scrolls), else the ``<pre>`` in ``<div class="highlight">``."""
+
+    def region(m: re.Match) -> str:
+        if m["cell"]:
+            return f'<div class="{m["cls"]}" {REGION}>{m["space"]}<pre'
+        return f'<div class="{m["cls"]}">{m["space"]}<pre {REGION}'
+
+    return CODE_BLOCK.sub(region, html)
 
 
 def headings_and_contents(html: str, page: Page) -> str:

@@ -262,7 +262,7 @@ SUBCOMMANDS: list[tuple[str, str, str, list[str], Callable[[argparse.ArgumentPar
         "view",
         "show a scenario in your browser (Viser)",
         "Serves a 3D scene on this computer and prints the address to open: the workspace, the\n"
-        "robot colored by the exact checker (green free, red colliding), a slider per joint,\n"
+        "robot colored by the exact checker (blue free, vermillion colliding), a slider per joint,\n"
         "samples, and a PRM roadmap with its path. Ctrl-C stops it. On a JupyterHub the address is\n"
         "the port's path through your Jupyter server, /user/NAME/proxy/PORT/.",
         [

@@ -15,9 +15,14 @@ per topic, in the order of the notebooks:
   (``toolkit bench --crossover``; notebook 04);
 - :mod:`toolkit.plots.tutorials` — what only the tutorials show: a mesh workspace, samplers in a narrow passage.
 
+Every figure's colours come from :mod:`toolkit.plots.palette` (told apart by colour-blind readers too) and
+each figure carries a text alternative (:mod:`toolkit.plots.alt`; in a notebook, importing this package
+makes every displayed figure carry it as its ``alt``).
+
 >>> from toolkit.plots import reproduction  # doctest: +SKIP
 """
 
+from toolkit.plots import alt
 from toolkit.plots.crossover import crossover
 from toolkit.plots.reproduction import (
     cae_reconstruction,
@@ -26,3 +31,5 @@ from toolkit.plots.reproduction import (
 )
 
 __all__ = ["cae_reconstruction", "crossover", "planning_times", "threshold_sweep"]
+
+alt.register()  # in a notebook: every figure displayed from now on has its alt text

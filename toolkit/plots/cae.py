@@ -21,10 +21,14 @@ from typing import Any
 import numpy as np
 from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
+from matplotlib.patches import Patch
 
 from toolkit.learning.metrics import reconstruction_accuracy
+from toolkit.plots.palette import COLORS, GREYS_CMAP, SEQUENTIAL_CMAP
 
-ERROR_COLORS = ListedColormap(["tab:blue", "tab:red"])  # -1: phantom block (free decoded occupied); +1: missed block
+ERROR_COLORS = ListedColormap(
+    [COLORS["phantom"], COLORS["missed"]]
+)  # -1: phantom block (free decoded occupied); +1: missed block
 
 
 def training_curves(
@@ -53,8 +57,9 @@ def error_cells(grid: np.ndarray, decoded: np.ndarray) -> np.ndarray:
 def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) -> Figure:
     """One row per 2D workspace: input, decoded sign, and the error cells over the input.
 
-    ``grids``, ``decoded``: ``(W, nx, ny)``. Error cells are red where a block was
-    missed (input occupied, decoded free) and blue where one was invented. Each row's
+    ``grids``, ``decoded``: ``(W, nx, ny)``. Error cells are coloured ``COLORS["missed"]`` where a
+    block was missed (input occupied, decoded free: on a dark input cell) and ``COLORS["phantom"]`` where one was
+    invented (on a light one); a legend names them. Each row's
     title gives the reconstruction accuracy next to the share of free cells, the
     accuracy of a CAE that ignores its input and answers "all free".
     """
@@ -73,9 +78,11 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
         axes = row.subplots(1, 3)
         _image(axes[0], grid, "input")
         _image(axes[1], np.where(out > 0, 1.0, -1.0), "decoded (sign)")
-        _image(axes[2], grid, f"errors: {missed} missed (red), {phantom} invented (blue)", alpha=0.25)
+        _image(axes[2], grid, f"errors: {missed} missed, {phantom} invented", alpha=0.25)
         axes[2].imshow(np.ma.masked_array(grid, ~errors).T, origin="lower", cmap=ERROR_COLORS, vmin=-1, vmax=1)
         row.suptitle(f"{name}: {acc:.1%} of cells right (all free: {np.mean(grid < 0):.1%})")
+    handles = [Patch(color=COLORS[kind], label=f"{kind} block") for kind in ("missed", "phantom")]
+    fig.legend(handles=handles, loc="outside lower center", ncols=2, fontsize=8, frameon=False)
     return fig
 
 
@@ -92,7 +99,7 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
             all_free, accuracy, label=f"{name} (mean {np.mean(accuracy):.1%} vs {np.mean(all_free):.1%})", alpha=0.8
         )
     low = min(min(np.min(f), np.min(a)) for f, a in groups.values())
-    ax.plot([low, 1], [low, 1], color="gray", linestyle="--", label='"all free" (diagonal)')
+    ax.plot([low, 1], [low, 1], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal)')
     ax.set_xlabel('share of free cells = accuracy of answering "all free"')
     ax.set_ylabel("reconstruction accuracy")
     ax.set_title("Above the diagonal: better than all free")
@@ -127,7 +134,7 @@ def contraction(
     for name in names:
         ax_z.plot(flips, np.mean(latent_shift[name], axis=1), marker="o", label=name)
         ax_x.plot(flips, np.mean(decoded_change[name], axis=1), marker="o", label=name)
-    ax_x.plot(flips, flips, color="gray", linestyle=":", label="copy the input")
+    ax_x.plot(flips, flips, color=COLORS["reference"], linestyle=":", label="copy the input")
     ax_z.set_ylabel(r"$\|z' - z\| \,/\, \|z\|$")
     ax_z.set_title("Latent code moves")
     ax_x.set_ylabel("decoded cells that change sign")
@@ -162,9 +169,9 @@ def latent_scatter(
     for (name, xy), marker in zip(points.items(), "o^sDv"):
         xy = np.asarray(xy)
         big = name == highlight
-        style: dict[str, Any] = dict(s=40 if big else 16, edgecolors="black" if big else "none")
+        style: dict[str, Any] = dict(s=40 if big else 16, edgecolors=COLORS["ink"] if big else "none")
         if color:
-            style.update(c=color[name], cmap="viridis", vmin=low, vmax=high, marker=marker)
+            style.update(c=color[name], cmap=SEQUENTIAL_CMAP, vmin=low, vmax=high, marker=marker)
         drawn = ax.scatter(xy[:, 0], xy[:, 1], label=f"{name} ({len(xy)})", alpha=0.75, **style)
     if color:
         fig.colorbar(drawn, ax=ax, label=color_label)
@@ -178,7 +185,7 @@ def latent_scatter(
 
 def _image(ax, grid: np.ndarray, title: str, alpha: float = 1.0) -> None:
     """A 2D grid of -1 / +1, x to the right and y up, occupied black."""
-    ax.imshow(grid.T, origin="lower", cmap="gray_r", vmin=-1, vmax=1, alpha=alpha)
+    ax.imshow(grid.T, origin="lower", cmap=GREYS_CMAP, vmin=-1, vmax=1, alpha=alpha)
     ax.set_title(title, fontsize=8)
     ax.set_xticks([])
     ax.set_yticks([])

@@ -12,7 +12,7 @@ P(valid) >= a threshold. Against the exact checker each answer is one of four ki
 The maps here sweep two degrees of freedom over their bounds (:func:`slice_grid`;
 the point robot's whole C-space, or a 2-DoF slice of a 3D robot with the other joints
 fixed), show P(valid) as an image, draw the true C-obstacle boundary over it and mark
-every mistake at its cell, dangerous ones in red.
+every mistake at its cell, dangerous ones as squares.
 
 >>> grid = slice_grid(robot, dofs=(0, 1), n=80)  # doctest: +SKIP
 >>> probability = grid.image(checker.probability(grid.configs))  # (80, 80)  # doctest: +SKIP
@@ -33,11 +33,13 @@ from matplotlib.patches import Patch
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.learning import metrics
+from toolkit.plots.alt import describe
 from toolkit.plots.cspace import slice_configs
+from toolkit.plots.palette import CATEGORICAL, COLORS, GREY_CMAP
 
-DANGEROUS, CONSERVATIVE, BOUNDARY = "red", "deepskyblue", "orange"
+DANGEROUS, CONSERVATIVE, BOUNDARY = COLORS["dangerous"], COLORS["conservative"], COLORS["boundary"]
 ANSWERS = ("valid kept", "valid rejected", "invalid rejected", "invalid kept (dangerous)")  # answer_codes 0-3
-ANSWER_COLORS = ("white", CONSERVATIVE, "0.15", DANGEROUS)  # C-space pictures: free white, obstacles dark
+ANSWER_COLORS = (COLORS["free"], CONSERVATIVE, COLORS["occupied"], DANGEROUS)  # free white, obstacles dark
 
 
 @dataclass(frozen=True)
@@ -164,31 +166,40 @@ def path_map(
     """A planner's roadmap ``nodes (M, dof)`` and returned ``path (P, dof)`` over a P(valid) map of the grid's two DoFs.
 
     Nodes in collision (``nodes_valid`` False, by the exact checker) are the dangerous mistakes the
-    planner accepted: red crosses. The path, checked exactly, avoids them.
+    planner accepted: crosses (``COLORS["dangerous"]``). The path, checked exactly, avoids them.
     """
     nodes, nodes_valid, path = np.asarray(nodes), np.asarray(nodes_valid, dtype=bool), np.asarray(path)
     fig = Figure(figsize=(5.6, 5.4), layout="constrained")
     ax = fig.subplots()
     fig.colorbar(_draw_probability(ax, probability, valid, grid, threshold), ax=ax, label="P(valid)", shrink=0.8)
     x, y = grid.dofs
-    ax.plot(nodes[nodes_valid, x], nodes[nodes_valid, y], ".", color="gold", markersize=4, label="roadmap node, valid")
+    ax.plot(
+        nodes[nodes_valid, x],
+        nodes[nodes_valid, y],
+        ".",
+        color=COLORS["node"],
+        markersize=4,
+        label="roadmap node, valid",
+    )
     ax.plot(
         nodes[~nodes_valid, x],
         nodes[~nodes_valid, y],
         "X",
         color=DANGEROUS,
-        markeredgecolor="black",
+        markeredgecolor=COLORS["ink"],
         markersize=7,
         label="roadmap node in collision",
     )
-    ax.plot(path[:, x], path[:, y], "-", color="limegreen", linewidth=2.5, label="returned path (checked exactly)")
+    ax.plot(path[:, x], path[:, y], "-", color=COLORS["path"], linewidth=2.5, label="returned path (checked exactly)")
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=9)
     _legend(fig, _mistake_handles() + ax.get_lines())
-    return fig
+    text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
+    text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (crosses), and the"
+    return describe(fig, text + f" returned path through {len(path)} configurations, checked exactly.")
 
 
 def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
-    """The four kinds of answer as bars (dangerous ones red) and accuracy / TPR / TNR."""
+    """The four kinds of answer as bars (dangerous ones in the invalid colour, last) and accuracy / TPR / TNR."""
     fig = Figure(figsize=(8, 3.4), layout="constrained")
     ax_counts, ax_rates = fig.subplots(1, 2)
     _draw_counts(ax_counts, predicted_valid, valid)
@@ -223,7 +234,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     _draw_counts(ax_counts, predicted, valid)
     _draw_roc(ax_roc, {"": (probability, valid, threshold)})
     fig.suptitle(title)
-    _legend(fig, [Patch(facecolor=c, edgecolor="black", label=a) for a, c in zip(ANSWERS, ANSWER_COLORS)])
+    _legend(fig, [Patch(facecolor=c, edgecolor=COLORS["ink"], label=a) for a, c in zip(ANSWERS, ANSWER_COLORS)])
     return fig
 
 
@@ -237,7 +248,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
         probability.T,
         origin="lower",
         extent=grid.extent,
-        cmap="gray",
+        cmap=GREY_CMAP,
         vmin=0,
         vmax=1,
         aspect="auto",
@@ -300,7 +311,7 @@ def _legend(fig: Figure, handles: list) -> None:
 
 def _draw_counts(ax, predicted_valid, valid) -> None:
     counts = confusion_counts(predicted_valid, valid)
-    bars = ax.bar(range(len(counts)), list(counts.values()), color=ANSWER_COLORS, edgecolor="black")
+    bars = ax.bar(range(len(counts)), list(counts.values()), color=ANSWER_COLORS, edgecolor=COLORS["ink"])
     ax.bar_label(bars, fontsize=8)
     ax.set_xticks(range(len(counts)), [a.replace(" ", "\n", 1) for a in ANSWERS], fontsize=8)
     ax.set_ylabel("configurations")
@@ -312,7 +323,7 @@ def _draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
     keys, labels = ("acc", "tpr", "tnr"), ("accuracy", "TPR (valid kept)", "TNR (invalid rejected)")
     x, width = np.arange(len(scores)), 0.8 / len(keys)
     for k, (key, label) in enumerate(zip(keys, labels)):
-        bars = ax.bar(x + (k - 1) * width, [s[key] for s in scores.values()], width, label=label)
+        bars = ax.bar(x + (k - 1) * width, [s[key] for s in scores.values()], width, color=CATEGORICAL[k], label=label)
         ax.bar_label(bars, fmt="%.2f", fontsize=7)
     ax.set_xticks(x, list(scores), fontsize=8)
     ax.set_ylim(0, 1.3)  # room for the legend above the bars
@@ -321,18 +332,19 @@ def _draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
 
 
 def _draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> None:
-    ax.plot([0, 1], [0, 1], color="lightgray", linestyle="--", label="chance")
-    for name, (probability, valid, threshold) in curves.items():
+    ax.plot([0, 1], [0, 1], color=COLORS["reference"], linestyle="--", label="chance")
+    for i, (name, (probability, valid, threshold)) in enumerate(curves.items()):
         _, fpr, tpr = roc_points(probability, valid)
         auc = np.trapezoid(tpr[::-1], fpr[::-1])  # thresholds rise, so FPR falls: integrate left to right
-        (line,) = ax.plot(fpr, tpr, label=f"{name + ': ' if name else ''}AUC {auc:.2f}")
+        style = dict(color=CATEGORICAL[i % len(CATEGORICAL)], linestyle=("-", "--", "-.", ":")[i % 4])
+        (line,) = ax.plot(fpr, tpr, label=f"{name + ': ' if name else ''}AUC {auc:.2f}", **style)
         _, fpr_t, tpr_t = roc_points(probability, valid, [threshold])
         ax.plot(
             fpr_t,
             tpr_t,
             "o",
             color=line.get_color(),
-            markeredgecolor="black",
+            markeredgecolor=COLORS["ink"],
             label=f"{name + ' ' if name else ''}threshold {threshold:.2f}",
         )
     ax.set_xlabel("FPR: invalid kept (dangerous) = 1 - TNR")

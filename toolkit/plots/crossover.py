@@ -11,10 +11,12 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from toolkit.plots.palette import COLORS
+
 STYLES = {  # checker -> (marker and line, colour, legend)
-    "exact": ("o-", "tab:blue", "exact, default (compiled)"),
-    "fcl": ("s--", "tab:gray", "exact, python-fcl"),
-    "learned": ("^-", "tab:orange", "learned (the network)"),
+    "exact": ("o-", COLORS["exact"], "exact, default (compiled)"),
+    "fcl": ("s--", COLORS["fcl"], "exact, python-fcl"),
+    "learned": ("^-", COLORS["learned"], "learned (the network)"),
 }
 
 
@@ -52,7 +54,14 @@ def _panel(ax, sweep: dict) -> None:
         label = "exact, default (FCL's mesh BVH, inside test)" if name == "exact" and mesh else label
         ax.plot(x, np.asarray(sweep[f"{name}_us"], float), style, color=colour, label=label)
     ax.fill_between(
-        x, learned, exact, where=learned < exact, interpolate=True, color="tab:orange", alpha=0.2, label="learning wins"
+        x,
+        learned,
+        exact,
+        where=learned < exact,
+        interpolate=True,
+        color=COLORS["learned"],
+        alpha=0.2,
+        label="learning wins",
     )
     for name, found in sweep["crossing"].items():
         if found is not None:

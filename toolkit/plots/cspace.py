@@ -6,24 +6,21 @@ is the *configuration-space obstacle*; these figures draw it next to the geometr
 that makes it:
 
 - :func:`workspace_figure` draws a workspace's blocks (one patch per block);
-- :func:`occupancy_figure` draws its −1/+1 occupancy grid, the CAE's input (a 3D
-  grid as one image per z layer);
-- :func:`robot_figure` draws a robot's link boxes at configurations (forward
-  kinematics, ``robot.link_boxes``), projected onto coordinate planes or in 3D
-  (:func:`draw_robot` draws them on an axes of your own);
-- :func:`cspace_image` draws the point robot's whole 2-DoF C-space, dark where the
-  checker says "in collision";
-- :func:`cspace_slice` draws a 2-DoF slice of any robot's C-space (two DoF vary,
-  the others stay fixed) beside the robot at the fixed configuration.
+- :func:`occupancy_figure` draws its −1/+1 occupancy grid, the CAE's input (a 3D grid as one image per z layer);
+- :func:`robot_figure` draws a robot's link boxes at configurations (forward kinematics, ``robot.link_boxes``),
+  projected onto coordinate planes or in 3D (:func:`draw_robot` draws them on an axes of your own);
+- :func:`cspace_image` draws the point robot's whole 2-DoF C-space, dark where the checker says "in collision";
+- :func:`cspace_slice` draws a 2-DoF slice of any robot's C-space (two DoF vary, the others stay fixed) beside
+  the robot at the fixed configuration.
 
-Each box (a block or a link) is drawn from its corners (:mod:`toolkit.plots.boxes`).
-
-Every function returns a matplotlib ``Figure`` and never calls ``show()``.
+Each box (a block or a link) is drawn from its corners (:mod:`toolkit.plots.boxes`). Every function returns a
+matplotlib ``Figure``, described in words (:func:`~toolkit.plots.alt.describe`), and never calls ``show()``.
 """
 
 from __future__ import annotations
 
 from collections.abc import Sequence
+from typing import Any
 
 import numpy as np
 from matplotlib.colors import ListedColormap
@@ -33,12 +30,21 @@ from matplotlib.patches import Patch, Polygon, Rectangle
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
+from toolkit.plots.alt import describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
+from toolkit.plots.palette import CATEGORICAL, COLORS
 
-VALID_COLOR, INVALID_COLOR = "tab:green", "tab:red"
-BLOCK_COLOR = "0.6"
-COLLISION_CMAP = ListedColormap(["white", "0.2"])  # 0: valid, 1: in collision (dark)
-OCCUPANCY_CMAP = ListedColormap(["white", "0.2"])  # -1: free, +1: occupied (dark)
+VALID_COLOR, INVALID_COLOR = COLORS["valid"], COLORS["invalid"]
+BLOCK_STYLE: dict[str, Any] = dict(facecolor=COLORS["block"], edgecolor=COLORS["occupied"], gid="block")
+
+
+def link_style(color: str) -> dict:
+    """A link's face and edge; a link in collision is hatched too (colour is never the only cue)."""
+    return dict(facecolor=color, edgecolor=COLORS["ink"], hatch="xx" if color == INVALID_COLOR else None)
+
+
+COLLISION_CMAP = ListedColormap([COLORS["free"], COLORS["occupied"]])  # 0: valid, 1: in collision (dark)
+OCCUPANCY_CMAP = ListedColormap([COLORS["free"], COLORS["occupied"]])  # -1: free, +1: occupied (dark)
 VIEWS = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
 POSITION_NAMES = ("x", "y", "z")
 
@@ -81,13 +87,13 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
         f"{s:g}" for s in workspace.upper - workspace.lower
     )
     kinds = sorted(set(workspace.labels))
-    colors = {kind: f"C{i}" for i, kind in enumerate(kinds)}
-    box_colors = [colors[label] for label in workspace.labels] or [BLOCK_COLOR] * len(workspace.boxes)
+    colors = {kind: CATEGORICAL[i % len(CATEGORICAL)] for i, kind in enumerate(kinds)}
+    box_colors = [colors[label] for label in workspace.labels] or [COLORS["block"]] * len(workspace.boxes)
     if workspace.dim == 2:
         fig = Figure(figsize=(5, 5))
         ax = fig.subplots()
         for (lo, hi), color in zip(workspace.boxes, box_colors):
-            ax.add_patch(Rectangle(lo, *(hi - lo), facecolor=color, edgecolor="k", gid="block"))
+            ax.add_patch(Rectangle(lo, *(hi - lo), facecolor=color, edgecolor=COLORS["ink"], gid="block"))
         ax.set_xlim(workspace.lower[0], workspace.upper[0])
         ax.set_ylim(workspace.lower[1], workspace.upper[1])
         ax.set_aspect("equal")
@@ -97,13 +103,14 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
         fig = Figure(figsize=(7, 6))
         ax = fig.add_subplot(projection="3d")
         for (lo, hi), color in zip(workspace.boxes, box_colors):
-            add_box_3d(ax, aabb_corners(lo, hi), facecolor=color, edgecolor="k", linewidth=0.3, alpha=0.8).set_gid(
-                "block"
-            )
+            add_box_3d(
+                ax, aabb_corners(lo, hi), facecolor=color, edgecolor=COLORS["ink"], linewidth=0.3, alpha=0.8
+            ).set_gid("block")
         frame_region(ax, workspace)
         ax.set_box_aspect(workspace.upper - workspace.lower)
         if kinds:
-            ax.legend(handles=[Patch(color=colors[k], label=k) for k in kinds], fontsize=8, loc="upper left")
+            handles = [Patch(facecolor=colors[k], edgecolor=COLORS["ink"], label=k) for k in kinds]
+            ax.legend(handles=handles, fontsize=8, loc="upper left")
     ax.set_title(title)
     return fig
 
@@ -180,30 +187,19 @@ def draw_robot(
     ]
     if view == "3d":
         for b_lo, b_hi in blocks:
-            add_box_3d(
-                ax, aabb_corners(b_lo, b_hi), facecolor=BLOCK_COLOR, edgecolor="0.3", linewidth=0.3, alpha=0.25
-            ).set_gid("block")
+            add_box_3d(ax, aabb_corners(b_lo, b_hi), linewidth=0.3, alpha=0.25, **BLOCK_STYLE)
         for corners, color in link_boxes:
-            add_box_3d(ax, corners, facecolor=color, edgecolor="k", linewidth=0.4, alpha=0.9).set_gid("link")
+            add_box_3d(ax, corners, facecolor=color, edgecolor=COLORS["ink"], linewidth=0.4, alpha=0.9).set_gid("link")
         ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), zlim=(lo[2], hi[2]), xlabel="x", ylabel="y", zlabel="z")
         ax.set_box_aspect(hi - lo)
         return
     axes = VIEWS[view]
     for b_lo, b_hi in blocks:
-        ax.add_patch(
-            Rectangle(
-                b_lo[list(axes)],
-                *(b_hi - b_lo)[list(axes)],
-                facecolor=BLOCK_COLOR,
-                edgecolor="0.3",
-                alpha=0.5,
-                gid="block",
-            )
-        )
+        ax.add_patch(Rectangle(b_lo[list(axes)], *(b_hi - b_lo)[list(axes)], alpha=0.5, **BLOCK_STYLE))
     toward_viewer = np.cross(*np.eye(3)[list(axes)]) if robot.dim == 3 else np.zeros(2)  # (D,) out of the page
     for corners, color in sorted(link_boxes, key=lambda box: float((box[0] @ toward_viewer).max())):
         ax.add_patch(  # nearest the viewer last, on top: from above, a higher link hides what lies under it
-            Polygon(outline(corners, axes), facecolor=color, edgecolor="k", linewidth=0.6, alpha=0.85, gid="link")
+            Polygon(outline(corners, axes), linewidth=0.6, alpha=0.85, gid="link", **link_style(color))
         )
     ax.set_xlim(lo[axes[0]], hi[axes[0]])
     ax.set_ylim(lo[axes[1]], hi[axes[1]])
@@ -213,9 +209,9 @@ def draw_robot(
 
 
 def _link_colors(n: int, valid: np.ndarray | None) -> list[str]:
-    """One colour per configuration: green / red by ``valid (n,)``, else matplotlib's cycle (C0, C1, ...)."""
+    """One colour per configuration: valid / invalid by ``valid (n,)``, else the categorical colours in turn."""
     if valid is None:
-        return [f"C{k % 10}" for k in range(n)]
+        return [CATEGORICAL[k % len(CATEGORICAL)] for k in range(n)]
     return [VALID_COLOR if v else INVALID_COLOR for v in np.asarray(valid, dtype=bool).reshape(n)]
 
 
@@ -235,8 +231,8 @@ def robot_figure(
     panel shows its shadow, the convex hull of its projected corners) or ``"3d"``.
     Default: ``("xy",)`` for a 2D robot, ``("3d", "xy", "xz")`` for a 3D one. Blocks of
     ``workspace`` within ``margin`` of the robot are drawn too; ``valid (k,)`` colors
-    each configuration green (valid) or red (in collision), else each one in a colour of its own,
-    named in a legend by ``labels (k,)`` (where the configurations' boxes coincide, the last one's shows).
+    each configuration in the valid colour or, hatched, the invalid one (a legend names them), else each one in a
+    colour of its own, named in a legend by ``labels (k,)`` (where the boxes coincide, the last one's shows).
     """
     Q = robot.check_configs(Q)  # (k, dof)
     views = views or (("xy",) if robot.dim == 2 else ("3d", "xy", "xz"))
@@ -248,8 +244,10 @@ def robot_figure(
         ax = fig.add_subplot(1, len(views), i + 1, **({"projection": "3d"} if view == "3d" else {}))
         draw_robot(ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin)
         ax.set_title(f"{robot.name}: {view}", fontsize=10)
+    if labels is None and valid is not None:
+        labels = ["valid" if color == VALID_COLOR else "in collision" for color in colors]
     if labels is not None:
-        handles = [Patch(facecolor=color, edgecolor="k", label=label) for color, label in zip(colors, labels)]
+        handles = [Patch(label=label, **link_style(c)) for label, c in dict(zip(labels, colors)).items()]
         fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0.08 if labels is not None else 0, 1, 1))
     return fig
@@ -312,7 +310,7 @@ def _draw_cspace(
 def cspace_image(checker: CollisionChecker, resolution: int = 600, window: tuple | None = None) -> Figure:
     """The point robot's whole C-space (x, y), dark where ``checker`` reports a collision.
 
-    The workspace's blocks are outlined in orange (gid ``"block"``): each dark C-obstacle is
+    The workspace's blocks are outlined (``COLORS["block_outline"]``, gid ``"block"``): each dark C-obstacle is
     its block grown by the robot's half width, since the square's centre is the configuration.
     ``window = ((x_lo, x_hi), (y_lo, y_hi))`` zooms in; ``resolution``: pixels (configurations) per axis.
     """
@@ -323,15 +321,19 @@ def cspace_image(checker: CollisionChecker, resolution: int = 600, window: tuple
     ax = fig.subplots()
     valid = _draw_cspace(ax, checker, robot.lower, (0, 1), resolution, window)
     for lo, hi in checker_workspace(checker).boxes:
-        ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor="tab:orange", linewidth=1.2, gid="block"))
+        ax.add_patch(
+            Rectangle(lo, *(hi - lo), fill=False, edgecolor=COLORS["block_outline"], linewidth=1.2, gid="block")
+        )
     left, right, bottom, top = ax.images[0].get_extent()
     ax.set(xlim=(left, right), ylim=(bottom, top), aspect="equal")  # the window, whatever blocks lie beyond it
     ax.set_title(
         f"C-space of the point robot: {1 - valid.mean():.0%} {'of this window ' if window else ''}in collision (dark)\n"
-        "orange: the workspace's blocks",
+        "outlined: the workspace's blocks",
         fontsize=10,
     )
-    return fig
+    where = f"{checker_workspace(checker).family} workspace" + (" (a window of it)" if window else "")
+    text = f"Configuration space of the 2D point robot in the {where}: {1 - valid.mean():.0%} of configurations"
+    return describe(fig, text + " in collision, drawn dark; the workspace's blocks outlined inside them.")
 
 
 def cspace_slice(
@@ -346,8 +348,8 @@ def cspace_slice(
     """A 2-DoF slice of the C-space through ``q (dof,)``: DoF ``joints`` vary over their bounds, the rest stay at ``q``.
 
     Left: dark where ``checker`` reports a collision, with a star at ``q`` itself. Right
-    (unless ``view`` is None): the robot at ``q`` among the nearby blocks, green if ``q``
-    is valid, red if not (see :func:`robot_figure`).
+    (unless ``view`` is None): the robot at ``q`` among the nearby blocks, in the valid colour if ``q``
+    is valid, in the invalid colour and hatched if not, the title saying which (see :func:`robot_figure`).
     """
     robot = checker.robot
     q = robot.check_configs(q)[0]  # (dof,)
@@ -355,16 +357,10 @@ def cspace_slice(
     fig = Figure(figsize=(9.5 if view else 5, 4.4))
     ax = fig.add_subplot(1, 2 if view else 1, 1)
     valid = _draw_cspace(ax, checker, q, joints, resolution, None)
-    ax.plot(
-        q[joints[0]],
-        q[joints[1]],
-        marker="*",
-        markersize=14,
-        markeredgecolor="k",
-        color=_link_colors(1, q_valid)[0],
-        linestyle="none",
-        gid="q",
+    star: dict[str, Any] = dict(
+        marker="*", markersize=14, markeredgecolor=COLORS["ink"], color=_link_colors(1, q_valid)[0]
     )
+    ax.plot(q[joints[0]], q[joints[1]], linestyle="none", gid="q", **star)
     fixed = [f"{robot.dof_names[k]}={q[k]:.2f}" for k in range(robot.dof) if k not in joints]
     ax.set_title(
         f"{robot.name}: {1 - valid.mean():.0%} of this slice in collision (dark)\nfixed: " + ", ".join(fixed),
@@ -374,9 +370,14 @@ def cspace_slice(
         robot_ax = fig.add_subplot(1, 2, 2, **({"projection": "3d"} if view == "3d" else {}))
         colors, workspace = _link_colors(1, q_valid), checker_workspace(checker)
         draw_robot(robot_ax, robot, q[None], colors=colors, view=view, workspace=workspace, margin=margin)
-        robot_ax.set_title(f"the robot at the star ({view})", fontsize=9)
+        verdict = "valid" if q_valid[0] else "in collision"
+        robot_ax.set_title(f"the robot at the star ({view}): {verdict}", fontsize=9)
     fig.tight_layout()
-    return fig
+    swept = " and ".join(robot.dof_names[k] for k in joints)
+    text = f"Slice of the {robot.name} robot's configuration space over {swept}, the other DoF fixed: "
+    text += f"{1 - valid.mean():.0%} in collision (dark). A star marks the fixed configuration, which is "
+    text += ("valid." if q_valid[0] else "in collision.") + (" Beside it, the robot there." if view else "")
+    return describe(fig, text)
 
 
 def configuration_near_blocks(checker: CollisionChecker, rng: np.random.Generator, n: int = 2000) -> np.ndarray:

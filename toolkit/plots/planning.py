@@ -23,7 +23,9 @@ from matplotlib.ticker import NullFormatter
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.planning.prm import GOAL, START, PlanStep
 from toolkit.planning.sampling import PAPER_SAMPLERS
+from toolkit.plots.alt import describe
 from toolkit.plots.cspace import checker_workspace, slice_configs
+from toolkit.plots.palette import CATEGORICAL, COLORS
 
 MODES = ("without", "with")
 STAGE_KEYS = ("sampling_s", "connection_s", "query_s")  # PRM stats, in the order the planner spends them
@@ -33,10 +35,14 @@ STAGE_LABELS = {
     "query_s": "query (path, verification, repair)",
     "other_s": "other (encoding, set-up)",
 }
-C_OBSTACLE = ListedColormap(["white", "0.78"])  # valid, invalid
-EDGE_COLOR, NODE_COLOR, UNCONFIRMED_COLOR = "0.55", "0.15", "tab:blue"
-PATH_COLORS = {"candidate": "tab:orange", "repair": "tab:orange", "path": "tab:green"}
-REPAIR_COLOR = "tab:red"  # what the exact checker rejected: removed by a repair, or a wrongly accepted sample
+C_OBSTACLE = ListedColormap([COLORS["free"], COLORS["c_obstacle"]])  # valid, invalid
+EDGE_COLOR, NODE_COLOR = COLORS["edge"], COLORS["node"]
+PATH_STYLES = {  # by stage: colour and line style (a path not yet confirmed is dashed, the one returned solid)
+    "candidate": (COLORS["candidate"], "--"),
+    "repair": (COLORS["candidate"], "--"),
+    "path": (COLORS["path"], "-"),
+}
+REPAIR_COLOR = COLORS["removed"]  # what the exact checker rejected: removed by a repair (drawn as X)
 
 
 def cspace_validity(exact: CollisionChecker, pixels: int = 300) -> tuple[np.ndarray, tuple[float, float, float, float]]:
@@ -56,14 +62,14 @@ def _draw_cspace(ax, exact: CollisionChecker) -> None:
     ax.imshow(~valid, origin="lower", extent=extent, cmap=C_OBSTACLE, vmin=0, vmax=1, interpolation="nearest")
     ws = checker_workspace(exact)
     for lo, hi in ws.boxes:
-        ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor="0.3", linewidth=0.8))
+        ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor=COLORS["occupied"], linewidth=0.8))
     ax.add_patch(  # the bounds of the robot's centre
         Rectangle(
             extent[::2],
             extent[1] - extent[0],
             extent[3] - extent[2],
             fill=False,
-            edgecolor="0.3",
+            edgecolor=COLORS["occupied"],
             linewidth=0.8,
             linestyle=":",
         )
@@ -86,46 +92,51 @@ def samplers(exact: CollisionChecker, samples: dict[str, np.ndarray], attempts: 
         ax.set_title(f"{name}: {count}" + (f" of {attempts} attempts" if attempts else ""), fontsize=9)
     fig.suptitle("Samples over the exact checker (grey: C-obstacles)")
     fig.tight_layout()
-    return fig
+    counts = ", ".join(f"{name} {len(Q)}" for name, Q in samples.items())
+    return describe(fig, f"Samples of {len(samples)} samplers over the point robot's C-obstacles (grey): {counts}.")
 
 
 def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) -> Figure:
     """Algorithm 1, lines 2-3: the attempts ``S (N, 2)``, the ones a checker accepts (``accepted (N,)`` bool: S'),
-    and among those the ones the exact checker rejects (the dangerous mistakes, in the repair colour)."""
+    and among those the ones the exact checker rejects (the dangerous mistakes: large X in the invalid colour)."""
     truly_valid = exact.are_valid(S)
     fig = Figure(figsize=(4.6, 4.6))
     ax = fig.subplots()
     _draw_cspace(ax, exact)
     groups: list[tuple[np.ndarray, dict[str, Any], str]] = [  # (mask, scatter style, label)
-        (~accepted, dict(marker="x", s=10, color="0.5"), "rejected"),
-        (accepted & truly_valid, dict(s=10, color=UNCONFIRMED_COLOR), "S' (accepted)"),
-        (accepted & ~truly_valid, dict(s=30, marker="X", color=REPAIR_COLOR), "S', truly in collision"),
+        (~accepted, dict(marker="x", s=10, color=COLORS["rejected"]), "rejected"),
+        (accepted & truly_valid, dict(s=10, marker="o", color=COLORS["valid"]), "S' (accepted)"),
+        (accepted & ~truly_valid, dict(s=30, marker="X", color=COLORS["invalid"]), "S', truly in collision"),
     ]
     for mask, style, label in groups:
         ax.scatter(S[mask, 0], S[mask, 1], label=f"{label}: {mask.sum()}", **style)
     ax.legend(fontsize=7, loc="upper left", framealpha=0.9)
     ax.set_title(f"S: {len(S)} uniform attempts", fontsize=9)
     fig.tight_layout()
-    return fig
+    counts = "; ".join(f"{label}: {mask.sum()} (marker {style['marker']})" for mask, style, label in groups)
+    return describe(fig, f"{len(S)} uniform attempts S over the point robot's C-obstacles (grey). {counts}.")
 
 
 def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
     """One planner step: edges, nodes (hollow: not yet confirmed exactly), start and goal, the candidate path,
-    and what a repair removes (in the repair colour)."""
+    and what a repair removes (thick, and X at removed nodes); a legend names them."""
     _draw_cspace(ax, exact)
     P = step.nodes  # (V, 2)
     removed_edge = np.zeros(len(step.edges), dtype=bool)
     removed_edge[step.removed_edges] = True
     ax.add_collection(LineCollection(P[step.edges[~removed_edge]], colors=EDGE_COLOR, linewidths=0.5, zorder=2))
     confirmed = step.node_verified
-    ax.scatter(*P[confirmed].T, s=7, color=NODE_COLOR, zorder=3)
-    ax.scatter(*P[~confirmed].T, s=9, facecolors="none", edgecolors=UNCONFIRMED_COLOR, linewidths=0.7, zorder=3)
+    ax.scatter(*P[confirmed].T, s=7, color=NODE_COLOR, zorder=3, label="node, confirmed")
+    ax.scatter(*P[~confirmed].T, s=9, facecolors="none", edgecolors=NODE_COLOR, linewidths=0.7, zorder=3, label="node")
     if len(step.path):
-        ax.plot(*P[step.path].T, color=PATH_COLORS[step.stage], linewidth=2.2, zorder=4)
+        color, style = PATH_STYLES[step.stage]
+        ax.plot(*P[step.path].T, color=color, linestyle=style, linewidth=2.2, zorder=4, label=f"path ({step.stage})")
     ax.add_collection(LineCollection(P[step.edges[removed_edge]], colors=REPAIR_COLOR, linewidths=3, zorder=5))
-    ax.scatter(*P[step.removed_nodes].T, s=70, marker="X", color=REPAIR_COLOR, zorder=5)
-    for node, marker, color in ((START, "s", "tab:green"), (GOAL, "*", "gold")):
-        ax.scatter(*P[node], s=110, marker=marker, color=color, edgecolors="black", zorder=6)
+    ax.scatter(*P[step.removed_nodes].T, s=70, marker="X", color=REPAIR_COLOR, zorder=5, label="removed by a repair")
+    for node, marker, name in ((START, "s", "start"), (GOAL, "*", "goal")):
+        ax.scatter(
+            *P[node], s=110, marker=marker, color=COLORS["endpoint"], edgecolors=COLORS["free"], zorder=6, label=name
+        )
     ax.set_title(f"round {step.round}, {step.stage}: {len(P)} nodes, {len(step.edges)} edges", fontsize=9)
 
 
@@ -134,10 +145,20 @@ def roadmap(exact: CollisionChecker, step: PlanStep, title: str = "") -> Figure:
     fig = Figure(figsize=(5, 5.2))
     ax = fig.subplots()
     _draw_roadmap(ax, exact, step)
+    _roadmap_legend(fig, [ax])
     if title:
         fig.suptitle(title, fontsize=10)
-    fig.tight_layout()
-    return fig
+    fig.tight_layout(rect=(0, 0.1, 1, 1))
+    return describe(fig, f"{title + ': ' if title else ''}{step_in_words(step)}")
+
+
+def step_in_words(step: PlanStep) -> str:
+    """One step of Algorithm 1 in words (the text alternative of its roadmap picture)."""
+    text = f"Round {step.round}, {step.stage}: a roadmap of {len(step.nodes)} nodes "
+    text += f"({int(np.sum(step.node_verified))} confirmed exactly) and {len(step.edges)} edges over the C-obstacles"
+    if len(step.path):
+        text += f"; a {'solid' if step.stage == 'path' else 'dashed'} path through {len(step.path)} nodes"
+    return text + f"; a repair removed {len(step.removed_nodes)} nodes and {len(step.removed_edges)} edges."
 
 
 def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int = 3) -> Figure:
@@ -149,9 +170,18 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
         _draw_roadmap(ax, exact, step)
     for ax in axes[len(steps) :]:
         ax.set_axis_off()
-    fig.suptitle("Algorithm 1 step by step (hollow: not yet confirmed exactly; red: removed by a repair)")
-    fig.tight_layout()
-    return fig
+    fig.suptitle("Algorithm 1 step by step (hollow: not yet confirmed exactly; X: removed by a repair)")
+    _roadmap_legend(fig, axes)
+    fig.tight_layout(rect=(0, 0.6 / fig.get_figheight(), 1, 1))
+    return describe(fig, "Algorithm 1 step by step. " + " ".join(step_in_words(step) for step in steps))
+
+
+def _roadmap_legend(fig: Figure, axes) -> None:
+    """One legend below the panels naming every kind of mark any of them drew (each name once)."""
+    named = {label: handle for ax in axes for handle, label in zip(*ax.get_legend_handles_labels())}
+    fig.legend(
+        list(named.values()), list(named), loc="lower center", ncol=min(len(named), 4), fontsize=7, frameon=False
+    )
 
 
 def stage_times(panels: dict[str, dict]) -> Figure:
@@ -180,7 +210,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
                 0.38,
                 bottom=bottom.ravel(),
                 label=STAGE_LABELS[key],
-                edgecolor="white",
+                edgecolor=COLORS["free"],
                 linewidth=0.5,
             )
             bottom = bottom + table[key]
@@ -227,9 +257,9 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
                 [ratios[s] for s in PAPER_SAMPLERS],
                 width,
                 label=name,
-                color=f"C{i}",
+                color=CATEGORICAL[i % len(CATEGORICAL)],
             )
-        ax.axhline(1.0, color="black", linewidth=0.8)
+        ax.axhline(1.0, color=COLORS["ink"], linewidth=0.8)
         ax.set_xticks(np.arange(len(PAPER_SAMPLERS)), PAPER_SAMPLERS)
         ax.set_title(textwrap.fill(title, 42), fontsize=8)
     _log_ticks(axes[0])  # shared by every panel

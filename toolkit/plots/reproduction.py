@@ -9,6 +9,8 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from toolkit.plots.palette import CATEGORICAL, COLORS, GREYS_CMAP
+
 MODES = ("without", "with")
 STATS = ("median", "q1", "q3")  # a time's summary over the queries (queries.summarize)
 
@@ -18,7 +20,7 @@ def _show_grid(ax, grid: np.ndarray, title: str) -> None:
     if grid.ndim == 3:
         z = grid.shape[2] // 2
         grid, title = grid[:, :, z], f"{title} (slice z={z})"
-    ax.imshow(grid.T, origin="lower", cmap="gray_r", vmin=-1, vmax=1)
+    ax.imshow(grid.T, origin="lower", cmap=GREYS_CMAP, vmin=-1, vmax=1)
     ax.set_title(title, fontsize=9)
     ax.set_xticks([])
     ax.set_yticks([])
@@ -52,7 +54,15 @@ def planning_times(planning: dict, title: str = "") -> Figure:
             median, q1, q3 = (np.array([planning[s][mode][f"{key}_{stat}"] for s in samplers]) for stat in STATS)
             names = [s if mode == "without" else s + "F" for s in samplers]
             spread = [median - q1, q3 - median]  # (2, samplers): whiskers down to q1, up to q3
-            bars = ax.bar(x + (i - 0.5) * 0.38, median, 0.38, yerr=spread, capsize=3, label=f"{mode} prediction")
+            bars = ax.bar(
+                x + (i - 0.5) * 0.38,
+                median,
+                0.38,
+                yerr=spread,
+                capsize=3,
+                color=CATEGORICAL[i],
+                label=f"{mode} prediction",
+            )
             ax.bar_label(bars, labels=names, fontsize=7, padding=2)
         ax.set_xticks(x, samplers)
         ax.set_ylabel(label)
@@ -69,11 +79,11 @@ def threshold_sweep(probability: np.ndarray, valid: np.ndarray, threshold: float
     predicted = p[None, :] >= ts[:, None]  # (T, N)
     fig = Figure(figsize=(5, 3.6))
     ax = fig.subplots()
-    ax.plot(ts, (predicted == truth).mean(axis=1), label="accuracy")
-    ax.plot(ts, predicted[:, truth].mean(axis=1), label="TPR (valid kept)")
-    ax.plot(ts, (~predicted[:, ~truth]).mean(axis=1), label="TNR (invalid rejected)")
+    ax.plot(ts, (predicted == truth).mean(axis=1), "-", color=CATEGORICAL[0], label="accuracy")
+    ax.plot(ts, predicted[:, truth].mean(axis=1), "--", color=CATEGORICAL[1], label="TPR (valid kept)")
+    ax.plot(ts, (~predicted[:, ~truth]).mean(axis=1), "-.", color=CATEGORICAL[2], label="TNR (invalid rejected)")
     if threshold is not None:
-        ax.axvline(threshold, color="gray", linestyle=":", label=f"threshold {threshold:.2f}")
+        ax.axvline(threshold, color=COLORS["reference"], linestyle=":", label=f"threshold {threshold:.2f}")
     ax.set_xlabel("threshold on P(valid)")
     ax.set_ylim(0, 1.02)
     ax.legend(fontsize=8)

@@ -21,11 +21,13 @@ from matplotlib.gridspec import SubplotSpec
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
+from toolkit.plots.alt import describe
 from toolkit.plots.cspace import INVALID_COLOR, VALID_COLOR, draw_robot
+from toolkit.plots.palette import COLORS
 
-TRACE_COLOR = "tab:cyan"  # the path of the robot's base, as the viewer's path line
-UNCHECKED_COLOR = "tab:blue"  # the robot when no validity is given
-NOW_COLOR = "0.25"
+TRACE_COLOR = COLORS["trace"]  # the path of the robot's base, as the viewer's path line
+UNCHECKED_COLOR = COLORS["unchecked"]  # the robot when no validity is given
+NOW_COLOR = COLORS["occupied"]
 
 
 def path_frame(
@@ -43,8 +45,9 @@ def path_frame(
     """Frame ``index`` of a path ``configurations (T, dof)`` evenly spaced along it.
 
     Left (3D): the robot's link boxes at that frame among the blocks of ``workspace``
-    within ``margin`` of it (green if ``valid[index]``, red if not, blue if ``valid`` is
-    None) and the trace of its base along the whole path (cyan, inside the window).
+    within ``margin`` of it (in the valid colour if ``valid[index]``, the invalid
+    colour if not, the title saying which; ``COLORS["unchecked"]`` if ``valid`` is None) and the trace of its base
+    along the whole path (``COLORS["trace"]``, inside the window).
     Right, against the fraction of the path travelled, a line at this frame in each:
     every DoF scaled to its bounds (0 = lower, 1 = upper; straight segments between
     roadmap nodes show as straight lines); ``clearance (T,)``, a lower bound on the
@@ -65,7 +68,9 @@ def path_frame(
     _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, valid_now, workspace, margin)
     _draw_series(fig, grid[1], robot, Q, index, series, threshold)
     fig.suptitle(_frame_title(index, frames, series, threshold), fontsize=10)
-    return fig
+    shown = "".join(f", {name}" for name, values in series.items() if values is not None and name != "valid")
+    text = f"A path of the {robot.name} robot, {_frame_title(index, frames, series, threshold)}. Left, the robot"
+    return describe(fig, text + f" in 3D and its base's trace; right, each DoF{shown} along the path.")
 
 
 def _draw_series(
@@ -109,16 +114,16 @@ def _draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, ax, along: np.ndarra
 
 def _draw_clearance(clearance: np.ndarray, ax, along: np.ndarray) -> None:
     """The exact checker's lower bound on the distance to the nearest block, ``clearance (T,)``, shaded below."""
-    ax.plot(along, clearance, color="k", linewidth=1.2, gid="clearance")
-    ax.fill_between(along, 0.0, clearance, color="0.85")
+    ax.plot(along, clearance, color=COLORS["ink"], linewidth=1.2, gid="clearance")
+    ax.fill_between(along, 0.0, clearance, color=COLORS["shade"])
     ax.set_ylim(bottom=0.0)
     ax.set_ylabel("clearance")
 
 
 def _draw_probability(p: np.ndarray, threshold: float, ax, along: np.ndarray) -> None:
     """The model's P(valid) ``p (T,)`` with its ``threshold``, shaded where the model calls the path colliding."""
-    ax.plot(along, p, color="tab:purple", linewidth=1.2, gid="probability")
-    ax.axhline(threshold, color="k", linestyle="--", linewidth=0.8, gid="threshold")
+    ax.plot(along, p, color=COLORS["probability"], linewidth=1.2, gid="probability")
+    ax.axhline(threshold, color=COLORS["ink"], linestyle="--", linewidth=0.8, gid="threshold")
     ax.fill_between(along, 0.0, 1.0, where=p < threshold, color=INVALID_COLOR, alpha=0.15, linewidth=0)
     ax.set_ylim(-0.02, 1.02)
     ax.set_ylabel("P(valid)")
@@ -139,7 +144,8 @@ def _draw_scene(
     color = UNCHECKED_COLOR if valid is None else VALID_COLOR if valid else INVALID_COLOR
     draw_robot(scene, robot, Q[index : index + 1], colors=[color], view="3d", workspace=workspace, margin=margin)
     _draw_trace(scene, robot, Q)
-    scene.set_title("the robot and the blocks near it", fontsize=9)
+    verdict = "" if valid is None else ": valid" if valid else ": in collision"
+    scene.set_title(f"the robot and the blocks near it{verdict}", fontsize=9)
     scene.locator_params(nbins=4)  # few tick labels: drawing text is most of a frame's cost
     scene.tick_params(labelsize=7)
 

@@ -17,8 +17,9 @@ from toolkit.geometry.collision import CollisionChecker
 from toolkit.geometry.workspace import MeshWorkspace
 from toolkit.plots import planning
 from toolkit.plots.cspace import frame_region
+from toolkit.plots.palette import COLORS
 
-MESH_COLOR, VOXEL_COLOR = "tab:brown", "tab:blue"
+MESH_COLOR, VOXEL_COLOR = COLORS["mesh"], COLORS["voxel"]
 
 
 def mesh_and_grid(workspace: MeshWorkspace, title: str = "") -> Figure:
@@ -28,7 +29,11 @@ def mesh_and_grid(workspace: MeshWorkspace, title: str = "") -> Figure:
     mesh_ax = fig.add_subplot(1, 2, 1, projection="3d")
     mesh_ax.add_collection3d(
         Poly3DCollection(
-            workspace.vertices[workspace.faces], facecolors=MESH_COLOR, edgecolors="0.25", linewidths=0.2, alpha=0.6
+            workspace.vertices[workspace.faces],
+            facecolors=MESH_COLOR,
+            edgecolors=COLORS["occupied"],
+            linewidths=0.2,
+            alpha=0.6,
         )
     )
     mesh_ax.set_title(f"the mesh: {len(workspace.faces)} triangles in {len(workspace.boxes)} parts", fontsize=10)
@@ -36,7 +41,7 @@ def mesh_and_grid(workspace: MeshWorkspace, title: str = "") -> Figure:
     occupied = workspace.occupancy() > 0
     edges = [workspace.lower[d] + np.arange(n + 1) for d, n in enumerate(workspace.grid_shape)]
     x, y, z = np.meshgrid(*edges, indexing="ij")  # cell corners
-    grid_ax.voxels(x, y, z, occupied, facecolors=VOXEL_COLOR, edgecolors="0.3", linewidth=0.2, alpha=0.5)
+    grid_ax.voxels(x, y, z, occupied, facecolors=VOXEL_COLOR, edgecolors=COLORS["occupied"], linewidth=0.2, alpha=0.5)
     grid_ax.set_title(f"its occupancy grid: {occupied.sum()} of {occupied.size} cells occupied", fontsize=10)
     for ax in (mesh_ax, grid_ax):
         frame_region(ax, workspace)
@@ -52,13 +57,17 @@ def samplers_in_a_passage(
     exact: CollisionChecker, samples: dict[str, np.ndarray], passage: tuple, *, attempts: int | None = None
 ) -> Figure:
     """One panel per sampler, its samples ``(M, 2)`` over the point robot's C-obstacles, the ``passage``
-    ``((x0, y0), (x1, y1))`` outlined in red, with how many samples fell inside it in each panel's title."""
+    ``((x0, y0), (x1, y1))`` outlined (dashed), with how many samples fell inside it in each panel's title."""
     fig = planning.samplers(exact, samples, attempts)
     (x0, y0), (x1, y1) = passage
     for ax, Q in zip(fig.axes, samples.values()):
-        ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, fill=False, edgecolor="tab:red", linewidth=1.2))
+        ax.add_patch(
+            Rectangle(
+                (x0, y0), x1 - x0, y1 - y0, fill=False, edgecolor=COLORS["highlight"], linewidth=1.2, linestyle="--"
+            )
+        )
         inside = int(np.sum(np.all(((x0, y0) <= Q) & ((x1, y1) >= Q), axis=1)))
         ax.set_title(f"{ax.get_title()}\n{inside} in the passage", fontsize=9)
-    fig.suptitle(f"{len(samples)} samplers, the same attempts each (red: the narrow passage)")
+    fig.suptitle(f"{len(samples)} samplers, the same attempts each (dashed: the narrow passage)")
     fig.tight_layout()
     return fig

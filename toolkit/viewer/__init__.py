@@ -10,10 +10,11 @@
 On a JupyterHub the printed URL is the port's path through the hub, ``/user/<name>/proxy/PORT/``
 (:mod:`toolkit.viewer.address`), and a notebook shows a link and an inline frame to it.
 
-The robot's link boxes are colored by the exact checker (green valid, red in
-collision, §III). With a learned model (``checkpoint=`` from ``toolkit train``) a
-wireframe around them shows its predicted probability of validity and a label marks
-disagreements; samples are colored by exact vs predicted validity. Planning runs the default
+The robot's link boxes are colored by the exact checker (the palette's valid and
+invalid colours, §III; the panel says which in words). With a learned model (``checkpoint=``
+from ``toolkit train``) a wireframe around them shows its predicted probability of validity and a
+label marks disagreements; samples are colored by exact validity and shaped by kind (circles valid,
+diamonds in collision, sparkles where the model is wrong). Planning runs the default
 planner, the lazy PRM of :func:`toolkit.planning.prm.plan`; with a model, the model decides samples
 and the planner is the one the experiments pair with its preset
 (:func:`toolkit.experiments.queries.default_options`: the paper's Algorithm 1, §III-B, for the
@@ -25,11 +26,12 @@ Reading order (each module imports only those above it):
 
 1. :mod:`toolkit.viewer.drawing` — workspaces, robots, samples and paths as Viser meshes and lines;
 2. :mod:`toolkit.viewer.server` — how a scene reaches a browser: a server on a free port, or a page inline;
-   :mod:`toolkit.viewer.address` — where a student opens it: the port, or its path through a JupyterHub;
-3. :mod:`toolkit.viewer.scene` — :class:`Viewer`: the live scene, and the events it tells its listeners;
-4. :mod:`toolkit.viewer.panel` — the GUI panel, one listener: joint sliders, samplers, planning, playback;
-5. :mod:`toolkit.viewer.app` — :func:`launch` (the scene with its panel), :func:`serve_forever`, :func:`embed`;
-6. :mod:`toolkit.viewer.browser` — the page in headless Chromium: screenshots, what they show.
+3. :mod:`toolkit.viewer.address` — where a student opens it: the port, or its path through a JupyterHub;
+4. :mod:`toolkit.viewer.labels` — names for a saved scene's player controls, for screen readers;
+5. :mod:`toolkit.viewer.scene` — :class:`Viewer`: the live scene, and the events it tells its listeners;
+6. :mod:`toolkit.viewer.panel` — the GUI panel, one listener: joint sliders, samplers, planning, playback;
+7. :mod:`toolkit.viewer.app` — :func:`launch` (the scene with its panel), :func:`serve_forever`, :func:`embed`;
+8. :mod:`toolkit.viewer.browser` — the page in headless Chromium: screenshots, what they show.
 """
 
 from toolkit.viewer.app import embed, launch, serve_forever

@@ -5,14 +5,17 @@ cube instanced with per-box pose, size and color). A 2D workspace (2DS) becomes 
 flat scene: its blocks are extruded to :data:`FLAT_HEIGHT` and the point robot's
 square to :data:`FLAT_ROBOT_HEIGHT`, so it pokes out of any block it collides with.
 
-Colors tell validity (§III): green valid, red in collision; where a learned model
-disagrees with the exact checker, magenta marks "predicted valid but colliding"
-(the dangerous error) and orange "predicted colliding but valid".
+Colors tell validity (§III), from :mod:`toolkit.plots.palette` (Okabe-Ito, apart for colour-blind eyes too):
+the valid colour (blue), the invalid one (vermillion) in collision. Samples carry a second cue, their
+shape (:data:`SAMPLE_SHAPES`): circles valid, diamonds in collision, and a larger sparkle where a learned
+model disagrees with the exact checker. A probability of validity is drawn on cividis (dark: 0, light: 1).
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Literal
 
 import numpy as np
 import numpy.typing as npt
@@ -22,20 +25,26 @@ import viser.transforms as vtf
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
+from toolkit.plots.palette import probability_rgb, rgb
 
 FLAT_HEIGHT = 1.0  # height of a 2D block in the flat 3D scene
 FLAT_ROBOT_HEIGHT = 1.5  # height of the 2D point robot's square
 
-OBSTACLE = (72, 104, 196)  # slate blue, the browser test looks for it
+OBSTACLE = rgb("obstacle")  # a hue of its own: the browser test looks for it
 OBSTACLE_OPACITY = {"3dc": 0.45}  # by workspace family: see through the clutter to the robot inside
-VALID = (46, 170, 84)
-COLLIDING = (222, 48, 48)
-PREDICTED_VALID_BUT_COLLIDING = (190, 40, 210)  # magenta: the model's dangerous mistake
-PREDICTED_COLLIDING_BUT_VALID = (245, 160, 20)  # orange: the model's wasteful mistake
+VALID = rgb("valid")
+COLLIDING = rgb("invalid")
+MISTAKE = rgb("ink")  # a sample the learned model gets wrong (drawn over its validity colour)
 POINT_SIZE = {"2ds": 0.25, "3do": 0.2, "3dc": 0.12}  # sample markers, by workspace family
-REGION = (90, 90, 90)
-ROADMAP = (160, 160, 160)
-PATH = (0, 170, 200)  # cyan: apart from every validity color
+SAMPLE_SHAPES: dict[str, tuple[Literal["circle", "diamond", "sparkle"], float]] = {
+    "valid": ("circle", 1.0),
+    "in collision": ("diamond", 1.6),
+    "model wrong": ("sparkle", 2.4),
+}
+# shape and size (times POINT_SIZE) of each kind of sample: a cue besides colour
+REGION = rgb("ink")
+ROADMAP = rgb("edge")
+PATH = rgb("trace")
 
 _UNIT_CUBE = trimesh.creation.box(extents=(1.0, 1.0, 1.0))
 
@@ -103,21 +112,60 @@ def polyline_segments(points: np.ndarray) -> np.ndarray:
     return np.stack([points[:-1], points[1:]], axis=1)
 
 
-def validity_colors(valid: np.ndarray, predicted: np.ndarray | None = None) -> np.ndarray:
-    """``(N, 3)`` uint8 colors: green / red by exact validity, disagreements with ``predicted`` marked."""
+def validity_colors(valid: np.ndarray) -> np.ndarray:
+    """``(N, 3)`` uint8 colors by exact validity ``(N,)``: :data:`VALID` or :data:`COLLIDING`."""
     valid = np.asarray(valid, dtype=bool)
-    colors = np.where(valid[:, None], VALID, COLLIDING)
-    if predicted is not None:
-        predicted = np.asarray(predicted, dtype=bool)
-        colors[predicted & ~valid] = PREDICTED_VALID_BUT_COLLIDING
-        colors[~predicted & valid] = PREDICTED_COLLIDING_BUT_VALID
-    return colors.astype(np.uint8)
+    return np.where(valid[:, None], VALID, COLLIDING).astype(np.uint8)
+
+
+def sample_kinds(valid: np.ndarray, predicted: np.ndarray | None = None) -> dict[str, np.ndarray]:
+    """Masks ``(N,)`` of each kind of sample in :data:`SAMPLE_SHAPES`: valid, in collision (by the exact checker)
+    and, when a model's answers ``predicted (N,)`` are given, the ones it gets wrong."""
+    valid = np.asarray(valid, dtype=bool)
+    wrong = np.zeros_like(valid) if predicted is None else np.asarray(predicted, dtype=bool) != valid
+    return {"valid": valid, "in collision": ~valid, "model wrong": wrong}
+
+
+def add_samples(
+    scene: viser.SceneApi, points: np.ndarray, kinds: dict[str, np.ndarray], size: float
+) -> dict[str, viser.PointCloudHandle]:
+    """One point cloud per kind of sample with any (:func:`sample_kinds`), under ``/samples``: ``points (N, 3)``
+    in their validity colour (a model's mistakes in :data:`MISTAKE`), shaped and sized by :data:`SAMPLE_SHAPES`."""
+    colors = validity_colors(kinds["valid"])  # (N, 3)
+    clouds = {}
+    for kind, mask in kinds.items():
+        if mask.any():
+            shape, scale = SAMPLE_SHAPES[kind]
+            shown = np.broadcast_to(MISTAKE, (int(mask.sum()), 3)) if kind == "model wrong" else colors[mask]
+            name = f"/samples/{kind.replace(' ', '_')}"
+            clouds[kind] = scene.add_point_cloud(
+                name, points[mask].astype(np.float32), shown, point_size=size * scale, point_shape=shape
+            )
+    return clouds
+
+
+def scene_summary(
+    workspace: Workspace, robot: BoxRobot, valid: bool, samples: Mapping[str, int | None], path: np.ndarray | None
+) -> str:
+    """The scene in words, the text alternative of its picture: workspace, robot and its validity, ``samples`` by
+    kind (:func:`sample_kinds`; ``"model wrong": None`` when no model judged them) and the ``path (P, dof)``."""
+    words = [
+        f"3D scene of workspace {workspace.family} ({len(workspace.boxes)} blocks) with the {robot.name} robot "
+        f"({robot.dof} DoF) at a configuration that is {'valid' if valid else 'in collision'}."
+    ]
+    if samples.get("valid") is not None:
+        words.append(f"Samples: {samples['valid']} valid (circles), {samples['in collision']} in collision (diamonds)")
+        wrong = samples.get("model wrong")
+        words[-1] += "." if wrong is None else f", {wrong} the model gets wrong (sparkles)."
+    if path is not None:
+        length = float(np.sum(np.linalg.norm(np.diff(path, axis=0), axis=1)))
+        words.append(f"Path: {len(path)} configurations, length {length:.2f} in configuration space.")
+    return " ".join(words)
 
 
 def probability_colors(probability: npt.ArrayLike) -> np.ndarray:
-    """``(N, 3)`` uint8 colors blending red (p = 0, colliding) to green (p = 1, valid)."""
-    p = np.clip(np.asarray(probability, dtype=float), 0.0, 1.0)[:, None]  # (N, 1)
-    return np.round((1 - p) * np.array(COLLIDING) + p * np.array(VALID)).astype(np.uint8)
+    """``(N, 3)`` uint8 colors of P(valid) ``(N,)`` on cividis (p = 0 dark blue, p = 1 light yellow)."""
+    return probability_rgb(probability)
 
 
 def add_boxes(

@@ -28,6 +28,8 @@ from toolkit.viewer.scene import RAW, Viewer
 PLAY_SECONDS = 8.0  # a whole path plays in this time
 PLAY_FPS = 20
 
+SAMPLE_LEGEND = "Samples: **circles** valid, **diamonds** in collision, **sparkles** where the model is wrong."
+
 
 class Panel:
     """Builds the GUI of ``viewer``, shows its current state and follows its events from then on."""
@@ -68,6 +70,7 @@ class Panel:
             self.n_samples = gui.add_number("attempts", 500, min=1, max=20000, step=1)
             self.mark = gui.add_dropdown("mark at", ("base", "tip"))
             self.sample = gui.add_button("sample")
+            gui.add_markdown(SAMPLE_LEGEND)
         with gui.add_folder("Plan"):
             self.planner_sampler = gui.add_dropdown("PRM sampler", planners)
             self.plan = gui.add_button("plan (PRM)", hint="a new start / goal query")

@@ -1,11 +1,11 @@
 """The live scene: a :class:`Viewer` shows one scenario's workspace, robot, samples, roadmap and path.
 
-The scene answers the questions of the paper's §III in colors: the robot's link boxes are green where the exact
-checker calls the configuration valid and red where it finds a collision; with a learned model (``checkpoint=`` or
-``predictor=``) a wireframe around the links shows its probability of validity, and samples are colored by exact vs
-predicted validity (:func:`toolkit.viewer.drawing.validity_colors`). :meth:`Viewer.plan` runs the default planner,
-the lazy PRM (:func:`toolkit.planning.prm.plan`); with a model loaded, the model decides samples and the planner is
-the one its preset is paired with (:func:`toolkit.experiments.queries.default_options`: Algorithm 1 for ``paper``).
+The scene answers the paper's §III in colors (:mod:`toolkit.plots.palette`) and words: link boxes take the valid or
+the invalid colour by the exact checker (the panel says which); a learned model's (``checkpoint=`` or ``predictor=``)
+wireframe shows P(valid) (cividis); samples are shaped by kind (:data:`toolkit.viewer.drawing.SAMPLE_SHAPES`).
+:meth:`Viewer.plan` runs the default planner, the lazy PRM (:func:`toolkit.planning.prm.plan`); with a model loaded,
+the model decides samples and the planner is the one its preset is paired with
+(:func:`toolkit.experiments.queries.default_options`: Algorithm 1 for ``paper``).
 
 The viewer knows nothing of a GUI. It tells *listeners* what happened (:data:`EVENTS`, :meth:`Viewer.subscribe`);
 the panel (:mod:`toolkit.viewer.panel`) is one listener, a script or a test can be another, and any of them changes
@@ -32,6 +32,7 @@ from toolkit.planning import prm
 from toolkit.planning.local_planner import path_at
 from toolkit.planning.sampling import make_sampler
 from toolkit.viewer import drawing as draw
+from toolkit.viewer.labels import label_controls
 from toolkit.viewer.server import camera_at, srcdoc_iframe, start_server, stop_server
 
 Predictor = Callable[[Workspace], CollisionChecker]  # workspace -> checker with are_valid(Q), probability(Q)
@@ -90,6 +91,8 @@ class Viewer:
         self.nodes: dict[str, viser.SceneNodeHandle] = {}
         self.visible = dict.fromkeys(LAYERS, True)
         self.path: np.ndarray | None = None  # (P, dof) the shown solution path
+        self.sample_counts: dict[str, int] = {}  # shown samples by kind (drawing.SAMPLE_SHAPES)
+        self.sample_clouds: dict[str, viser.PointCloudHandle] = {}  # and their point clouds
         self.stopped = False
         self.frames = {name: self.server.scene.add_frame(name, show_axes=False) for name in SLIDING}
         try:
@@ -141,7 +144,7 @@ class Viewer:
             self.model, self.model_error = self._load_model()
             for name in ("prediction", "disagreement", "samples", "roadmap", "path"):
                 self._remove(name)
-            self.path = None
+            self.path, self.sample_counts, self.sample_clouds = None, {}, {}
             for layer, handle in draw.draw_workspace(self.server.scene, self.workspace).items():
                 self._add(layer, handle)
             self.q = self.valid_configuration(rng, rest=True)
@@ -162,8 +165,8 @@ class Viewer:
             self.set_configuration(self.q)
 
     def set_configuration(self, q) -> None:
-        """Move the robot to ``q (dof,)`` and color it by validity (§III): green valid, red in collision, by the
-        exact checker; the model's wireframe from red (p = 0) to green (p = 1)."""
+        """Move the robot to ``q (dof,)`` and color it by validity (§III): valid or invalid colour, by the exact
+        checker; the model's wireframe on cividis, dark (p = 0) to light (p = 1)."""
         q = self.robot.check_configs(q, "q")[0]
         with self.lock:
             self.q = q
@@ -207,24 +210,19 @@ class Viewer:
 
     # -- samples, roadmap, path ------------------------------------------------------
     def show_samples(self, Q, *, at: str = "base") -> np.ndarray:
-        """Mark configurations ``Q (N, dof)`` as points colored by exact vs predicted validity (§III); returns the
-        ``(N, 3)`` colors."""
+        """Mark configurations ``Q (N, dof)`` as points colored by exact validity (§III), shaped by kind
+        (:func:`~toolkit.viewer.drawing.add_samples`); returns the ``(N, 3)`` colors."""
         Q = self.robot.check_configs(Q)
         with self.lock:
             valid = self.exact.are_valid(Q)
             predicted = self.model.are_valid(Q) if self.model is not None else None
-            colors = draw.validity_colors(valid, predicted)  # (N, 3)
-            self._add(
-                "samples",
-                self.server.scene.add_point_cloud(
-                    "/samples",
-                    draw.config_points(self.robot, Q, at).astype(np.float32),
-                    colors,
-                    point_size=draw.POINT_SIZE[self.workspace.family],
-                    point_shape="circle",
-                ),
-            )
-            return colors
+            kinds = draw.sample_kinds(valid, predicted)
+            self._remove("samples")
+            self._add("samples", self.server.scene.add_frame("/samples", show_axes=False))  # the clouds' parent
+            points, size = draw.config_points(self.robot, Q, at), draw.POINT_SIZE[self.workspace.family]  # (N, 3)
+            self.sample_clouds = draw.add_samples(self.server.scene, points, kinds, size)
+            self.sample_counts = {kind: int(mask.sum()) for kind, mask in kinds.items()}
+            return draw.validity_colors(valid)
 
     def sample(self, sampler: str = RAW, n: int = 200, *, seed: int = 0, at: str = "base") -> np.ndarray:
         """Draw ``n`` attempts with ``sampler`` and show them; returns the samples ``(M, dof)``.
@@ -310,11 +308,16 @@ class Viewer:
     def html(self) -> str:
         """The current scene as one self-contained HTML document (no server needed), its camera framing the robot."""
         with self.lock, camera_at(self.server, *draw.robot_camera(self.robot, self.q)):
-            return self.server.scene.as_html()
+            return label_controls(self.server.scene.as_html())
+
+    def summary(self) -> str:
+        """The scene in words, the text alternative of a snapshot: workspace, robot, samples, path."""
+        counts = {**self.sample_counts, **({} if self.model else {"model wrong": None})}  # None: no model judged
+        return draw.scene_summary(self.workspace, self.robot, bool(self.valid), counts, self.path)
 
     def iframe(self, height: int = 480) -> str:
-        """The current scene as an ``<iframe>`` for ``IPython.display.HTML`` (a static snapshot)."""
-        return srcdoc_iframe(self.html(), height)
+        """The scene as a static snapshot ``<iframe>`` for ``IPython.display.HTML``, followed by :meth:`summary`."""
+        return srcdoc_iframe(self.html(), height, summary=self.summary())
 
     def animation_html(self, *, frames: int = 60, seconds: float = 6.0) -> str:
         """The robot moving along the shown path, as one self-contained HTML document (no server needed).
@@ -336,14 +339,14 @@ class Viewer:
                 recording.insert_sleep(seconds / (frames - 1) if k else 0.0)
                 self._slide(middle - look_at)  # frame 0's too: each loop of the page starts from it
                 self.set_configuration(q)
-            document = recording.as_html()  # stops the recording
+            document = label_controls(recording.as_html())  # stops the recording
             self._slide(np.zeros(3))
             self.set_configuration(before)
         return document
 
     def animation_iframe(self, height: int = 480, *, frames: int = 60, seconds: float = 6.0) -> str:
-        """:meth:`animation_html` as an ``<iframe>`` for ``IPython.display.HTML``."""
-        return srcdoc_iframe(self.animation_html(frames=frames, seconds=seconds), height)
+        """:meth:`animation_html` as an ``<iframe>`` for ``IPython.display.HTML``, with :meth:`summary`."""
+        return srcdoc_iframe(self.animation_html(frames=frames, seconds=seconds), height, summary=self.summary())
 
     def stop(self) -> None:
         """Tell the listeners, then stop the server; the port is free afterwards. Stopping twice is harmless."""

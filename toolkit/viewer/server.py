@@ -86,12 +86,15 @@ def camera_at(server: viser.ViserServer, look_at, position) -> Iterator[None]:
         camera.position, camera.look_at = before[1], before[0]
 
 
-def srcdoc_iframe(document: str, height: int = 480) -> str:
+def srcdoc_iframe(document: str, height: int = 480, *, summary: str = "3D scene") -> str:
     """An ``<iframe>`` holding a whole HTML ``document`` inline (``srcdoc``): it needs no server or file.
 
-    Wrapped in a ``<div>``: ``IPython.display.HTML`` warns about markup that starts with ``<iframe``.
+    Titled by the first sentence of ``summary`` and followed by all of it (the text alternative of the scene);
+    wrapped in a ``<div>``: ``IPython.display.HTML`` warns about markup that starts with ``<iframe``.
     """
+    title = html_lib.escape(summary.split(". ")[0].rstrip("."), quote=True)
     return (
         f'<div><iframe srcdoc="{html_lib.escape(document, quote=True)}" width="100%" '
-        f'height="{int(height)}" style="border:none"></iframe></div>'
+        f'height="{int(height)}" style="border:none" title="{title}"></iframe>'
+        f'<p class="scene-summary">{html_lib.escape(summary)}</p></div>'
     )

@@ -1,0 +1,61 @@
+"""Text alternatives for figures: what a figure shows, in words, for a reader who cannot see it.
+
+A figure function says what it drew, from its data (:func:`describe`); a figure made by hand gets one
+line, ``describe(fig, "...")``. Where nobody did, :func:`alt_text` reads the figure's own titles and axis
+labels. In a notebook, :func:`register` (run when :mod:`toolkit.plots` is imported in IPython) attaches the
+text to every displayed figure as Jupyter's ``{"image/png": {"alt": ...}}`` output metadata, which
+JupyterLab, nbconvert and the course site (mkdocs-jupyter) render as the ``<img>``'s ``alt``.
+
+>>> from matplotlib.figure import Figure
+>>> alt_text(describe(Figure(), "two points, both valid"))
+'two points, both valid'
+"""
+
+from __future__ import annotations
+
+import sys
+
+from matplotlib.figure import Figure
+
+ATTRIBUTE = "toolkit_alt_text"  # where a figure keeps its description
+
+
+def describe(fig: Figure, text: str) -> Figure:
+    """Attach the text alternative ``text`` to ``fig`` (replacing any); returns ``fig``."""
+    if not text.strip():
+        raise ValueError("a figure's text alternative must say something")
+    setattr(fig, ATTRIBUTE, " ".join(text.split()))
+    return fig
+
+
+def alt_text(fig: Figure) -> str:
+    """The text alternative of ``fig``: its description, or one read from its titles and axis labels."""
+    described = getattr(fig, ATTRIBUTE, None)
+    if described:
+        return described
+    panels = []
+    for ax in fig.axes:
+        words = [ax.get_title()] + [
+            f"{axis}: {label}" for axis, label in (("x", ax.get_xlabel()), ("y", ax.get_ylabel())) if label
+        ]
+        if any(words):
+            panels.append(", ".join(w for w in words if w))
+    title = fig.get_suptitle() if hasattr(fig, "get_suptitle") else ""
+    text = "; ".join(p for p in [title, *panels] if p)
+    return " ".join(f"Figure with {len(fig.axes)} panel(s): {text or 'no titles'}".split())
+
+
+def metadata(fig: Figure) -> tuple[dict, dict]:
+    """IPython's mime-bundle formatter for a figure: no data of its own (the PNG comes from matplotlib's
+    formatter), the alt text as the PNG's metadata."""
+    return {}, {"image/png": {"alt": alt_text(fig)}}
+
+
+def register() -> bool:
+    """In an IPython kernel, give every displayed matplotlib figure its alt text; False outside IPython."""
+    ipython = sys.modules.get("IPython")
+    shell = ipython.get_ipython() if ipython is not None else None
+    if shell is None:
+        return False
+    shell.display_formatter.mimebundle_formatter.for_type(Figure, metadata)
+    return True
