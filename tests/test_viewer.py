@@ -366,7 +366,8 @@ def test_launch_joins_one_panel_to_the_viewer(capsys):
         v.stop()
 
 
-READING_ORDER = ["drawing", "server", "address", "labels", "scene", "panel", "app", "browser"]  # toolkit/viewer/__init__.py's
+# toolkit/viewer/__init__.py's
+READING_ORDER = ["drawing", "server", "address", "labels", "scene", "panel", "app", "browser"]
 
 
 def viewer_imports(source: str) -> set[str]:
