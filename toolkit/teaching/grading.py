@@ -99,12 +99,22 @@ def autograder(name: str, build_missing: bool = True) -> Path:
     return build(name)
 
 
-def _tests(zip_path: Path) -> dict[str, tuple[float, list[bool]]]:
-    """Each autograded question's points and, test by test, whether it is hidden; read from the autograder
-    notebook beside the zip."""
+LABEL = re.compile(r"^>>> _checks = ['\"](.+?)['\"]$", re.MULTILINE)
+
+
+def test_name(case: dict) -> str:
+    """How the notebook lists the sentence a test case checks (its ``_checks = "sentence 3 (...)"`` line), or
+    "public test"/"hidden test" for a case without one."""
+    found = LABEL.search(case["code"])
+    return found[1] if found else f"{'hidden' if case['hidden'] else 'public'} test"
+
+
+def _tests(zip_path: Path) -> dict[str, tuple[float, list[str]]]:
+    """Each autograded question's points and, test by test, its name (:func:`test_name`); read from the
+    autograder notebook beside the zip."""
     notebook = json.loads((zip_path.parent / f"{zip_path.name.split('-autograder_')[0]}.ipynb").read_text())
     return {
-        q: (float(test["points"]), [case["hidden"] for suite in test["suites"] for case in suite["cases"]])
+        q: (float(test["points"]), [test_name(case) for suite in test["suites"] for case in suite["cases"]])
         for q, test in notebook["metadata"]["otter"]["tests"].items()
     }
 
@@ -117,16 +127,16 @@ def points(name: str) -> dict[str, float]:
 CASE = re.compile(r"^\s*\S+ - (\d+) result:\n(.*?)(?=^\s*\S+ - \d+ result:|\Z)", re.MULTILINE | re.DOTALL)
 
 
-def feedback(output: str, hidden: list[bool]) -> str:
-    """What a student may see of otter's output for one question: which tests failed (numbered, public or
-    hidden) and why, the last line of the exception each raised (a test's assertion message); never a test's
-    source, which otter's own output quotes."""
+def feedback(output: str, names: list[str]) -> str:
+    """What a student may see of otter's output for one question: which tests failed, each named as the notebook
+    lists it (``names``, test by test: the sentence it checks, or "public test"), and why, the last line of the
+    exception each raised (a test's assertion message); never a test's source, which otter's own output quotes."""
     if "All test cases passed" in output:
         return "all tests passed"
     failed = [
-        f"{'hidden' if hidden[int(n) - 1] else 'public'} test {n} failed: {_why(body)}"
+        f"{names[int(n) - 1]} failed: {_why(body)}"
         for n, body in CASE.findall(output)
-        if "Test case passed" not in body and 0 < int(n) <= len(hidden)
+        if "Test case passed" not in body and 0 < int(n) <= len(names)
     ]
     return "\n".join(failed) or "the tests did not run"
 
@@ -205,9 +215,9 @@ def grade(notebook: str | Path, assignment: str | None = None, timeout: float | 
             "name": q,
             "score": float(results.get(q, {}).get("score") or 0.0),
             "max_score": p,
-            "feedback": feedback(results[q]["output"], hidden) if q in results else "not graded: its tests did not run",
+            "feedback": feedback(results[q]["output"], names) if q in results else "not graded: its tests did not run",
         }
-        for q, (p, hidden) in tests.items()
+        for q, (p, names) in tests.items()
     ]
     return _total(name, questions)
 
