@@ -106,11 +106,14 @@ def graded(built, tmp_path_factory) -> dict[str, dict]:
         jobs[f"{name}/blank"] = (grading.student_notebook(name), name, None)
     for name, label in THROUGH_OTTER_RUN.items():
         jobs[label] = (_with_variant(VARIANTS[label], root / label / f"{name}.ipynb"), name, None)
-    jobs["broken"] = (root / "broken" / "bridge_test.ipynb", "bridge_test", None)
+    jobs["broken"] = (root / "broken" / "bridge_test.ipynb", "bridge_test", None)  # not a notebook
     jobs["broken"][0].parent.mkdir()
     jobs["broken"][0].write_text("this is not a notebook")
     hangs = Variant(
-        "verify_and_repair", frozenset({"q1"}), "def verify_and_repair(*args):\n    while True:\n        pass\n"
+        "verify_and_repair",
+        frozenset({"q1"}),
+        "def verify_and_repair(*args):\n    while True:\n        pass\n",
+        "never ends",
     )
     jobs["hangs"] = (
         _with_variant(hangs, root / "hangs" / "verify_and_repair.ipynb"),
@@ -214,7 +217,7 @@ def test_a_submission_that_never_ends_is_stopped_and_scored_zero(graded):
 def test_a_file_otter_cannot_grade_scores_zero_with_the_reason(graded):
     result = graded["broken"]
     assert not result["timed_out"] and result["score"] == 0 and result["max_score"] > 0
-    assert "otter could not grade" in result["error"] and "JSON" in result["error"]
+    assert result["error"].startswith("not a notebook (JSONDecodeError")
 
 
 OTTER_OUTPUT = """q1 results:
@@ -353,10 +356,35 @@ def test_missing_or_empty_submissions_are_named(tmp_path):
 
 
 def test_the_grade_command_is_wired():
-    args = cli.build_parser().parse_args(["grade", "x.ipynb", "--csv", "s.csv", "--timeout", "5"])
+    args = cli.build_parser().parse_args(["grade", "x.ipynb", "--csv", "s.csv", "--timeout", "5", "--workers", "3"])
     assert args.func is commands.cmd_grade and args.notebooks == ["x.ipynb"] and args.timeout == 5.0
+    assert args.workers == 3 and not args.unisolated
     with pytest.raises(ValueError, match="unknown assignment"):
         grading.master("no_such_assignment")
+
+
+@pytest.mark.parametrize(
+    "flag, value", [("--timeout", "0"), ("--timeout", "-5"), ("--workers", "0"), ("--workers", "-1")]
+)
+def test_grade_refuses_a_timeout_or_workers_of_zero_or_below(capsys, flag, value):
+    with pytest.raises(SystemExit):
+        cli.build_parser().parse_args(["grade", "x.ipynb", flag, value])
+    assert f"argument {flag}: must be" in capsys.readouterr().err
+    with pytest.raises(ValueError, match="must be a positive number"):
+        classroom.grade_all([Path("x.ipynb")], **{flag[2:]: float(value)}, isolate=False)
+
+
+def test_a_syntax_error_is_named_with_its_cell(tmp_path):
+    notebook = tmp_path / "n.ipynb"
+    cells = [
+        {"cell_type": "code", "source": ["%matplotlib inline\n", "x = 1\n"]},
+        {"cell_type": "code", "source": ["def f(:\n"]},
+    ]
+    notebook.write_text(json.dumps({"cells": cells}))
+    assert grading.syntax_errors(notebook) == "code cell 2 has a syntax error (line 1: invalid syntax)"
+    assert grading.notebook_problem(notebook) is None
+    (tmp_path / "m.ipynb").write_text("[1, 2]")
+    assert grading.notebook_problem(tmp_path / "m.ipynb").startswith("not a notebook (TypeError")
 
 
 GUIDE = Path(__file__).resolve().parent.parent / "tutorials" / "instructors.md"

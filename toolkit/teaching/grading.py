@@ -155,7 +155,7 @@ def feedback(output: str, names: list[str], secrets: Collection[str] = ()) -> st
     return "\n".join(failed) or "the tests did not run"
 
 
-def _withheld(message: str, secrets: set[str]) -> str:
+def _withheld(message: str, secrets: Collection[str]) -> str:
     """``message``, cut to :data:`MESSAGE_CHARS`; withheld when it quotes a line of a hidden test (a submission
     can raise an exception whose message is the hidden tests' source)."""
     if any(secret in message for secret in secrets):

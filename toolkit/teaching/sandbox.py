@@ -106,21 +106,16 @@ def command(inner: list[str], read_only: dict[str, str], writable: dict[str, str
         "--chdir",
         "/tmp",
         "--",
-        "setpriv",
-        f"--reuid={uid}",
-        f"--regid={uid}",
-        "--clear-groups",
-        "--inh-caps=-all",
-        "--bounding-set=-all",
-        "--",
-        "prlimit",
-        f"--nproc={PROCESSES}",
-        f"--nofile={OPEN_FILES}",
-        f"--fsize={FILE_BYTES}",
-        f"--cpu={max(1, int(cpu_s))}",
-        "--",
+        *_unprivileged(uid, cpu_s),
         *inner,
     ]
+
+
+def _unprivileged(uid: int, cpu_s: float) -> list[str]:
+    """The command line prefix that drops to ``uid`` (no capabilities) under the sandbox's limits."""
+    user = ["setpriv", f"--reuid={uid}", f"--regid={uid}", "--clear-groups", "--inh-caps=-all", "--bounding-set=-all"]
+    limits = [f"--nproc={PROCESSES}", f"--nofile={OPEN_FILES}", f"--fsize={FILE_BYTES}", f"--cpu={max(1, int(cpu_s))}"]
+    return [*user, "--", "prlimit", *limits, "--"]
 
 
 @functools.cache
