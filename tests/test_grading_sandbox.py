@@ -30,6 +30,8 @@ HOSTILE = {
 def bridge_test(checker, n_attempts, sigma, rng):
     import glob, json, os
     import toolkit
+    if "_solution" in globals():
+        return _solution(checker, n_attempts, sigma, rng)
     roots = [os.path.dirname(os.path.dirname(toolkit.__file__)), "{root}", "/work", "/root", "/home", "/"]
     for root in roots:
         for path in glob.glob(os.path.join(root, "**", "*.ipynb"), recursive=True):
