@@ -77,7 +77,7 @@ def _scores_in_process(notebook: Path, failed: set[str] | None = None) -> dict[s
         for question, spec in tests.items():
             test_file = OKTestFile.from_spec(spec)
             test_file.run(namespace)
-            scores[question] = round(float(test_file.score), 6)  # a sum of equal shares: 6 / 7 * 7 < 6
+            scores[question] = round(float(test_file.score), 4)  # as grading.grade rounds otter's score
             names = [grading.test_name(case) for suite in spec["suites"] for case in suite["cases"]]
             for name, result in zip(names, test_file.test_case_results):
                 if not result.passed and failed is not None:

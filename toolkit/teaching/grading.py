@@ -243,7 +243,7 @@ def grade(
     questions = [
         {
             "name": q,
-            "score": round(float(results.get(q, {}).get("score") or 0.0), 6),  # equal shares: 6 / 7 * 7 < 6
+            "score": round(float(results.get(q, {}).get("score") or 0.0), 4),  # otter keeps 5 digits; 6 / 7 * 7 < 6
             "max_score": p,
             "feedback": feedback(results[q]["output"], names, _secrets(zip_path, q))
             if q in results
