@@ -4,7 +4,8 @@ Each one is a bridge_test answer that tries to cheat or to do harm: find the mas
 their solution, read the hidden tests (and raise them as its feedback), write and delete outside
 its folder, reach the network, fork without end. Graded together in parallel, each must score 0
 on the question it answers and leave the instructor's files, the host's ``/tmp`` and the host's
-processes as they were. Where bubblewrap cannot run, grading refuses (tested here too).
+processes as they were; graded without the sandbox, the first one finds the master and scores full
+marks (the control: the sandbox is what stops it). Where bubblewrap cannot run, grading refuses.
 """
 
 from __future__ import annotations
@@ -41,7 +42,7 @@ def bridge_test(checker, n_attempts, sigma, rng):
                 continue
             for cell in cells:
                 source = "".join(cell["source"])
-                if "BEGIN SOLUTION" in source and "def bridge_test" in source and "..." not in source:
+                if "# BEGIN SOLUTION" in source and "def bridge_test(" in source:
                     exec(source.replace("def bridge_test", "def _solution"), globals())
                     return _solution(checker, n_attempts, sigma, rng)
     raise RuntimeError("no master found")
@@ -121,6 +122,8 @@ def test_hostile_submissions_score_nothing_and_harm_nothing(tmp_path):
     assert not MARK.exists() and not (ROOT / "toolkit" / "pwned.py").exists(), "a submission wrote outside its folder"
     assert not connections, "a submission reached a service on the host"
     assert not _sandbox_processes(), f"processes outlived their sandbox: {_sandbox_processes()}"
+    unisolated = grading.grade(notebooks["finds_the_masters"], timeout=240, isolate=False)  # the control
+    assert unisolated["score"] == unisolated["max_score"], "without the sandbox the master is within reach"
 
 
 def test_grading_refuses_where_it_cannot_isolate(monkeypatch, tmp_path):
