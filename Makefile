@@ -3,7 +3,7 @@ VENV ?= .venv
 PY := $(VENV)/bin/python
 OUT ?= results/2ds-paper
 
-.PHONY: setup browser demo lint test lab assignments handout clean site
+.PHONY: setup browser sandbox demo lint test lab assignments handout clean site
 
 setup: $(VENV)/.installed
 
@@ -17,6 +17,10 @@ $(VENV)/.installed: pyproject.toml constraints.txt
 browser:
 	@command -v chromium >/dev/null 2>&1 || { apt-get update -qq && apt-get install -y -qq chromium >/dev/null; }
 
+# Debian's bubblewrap, the sandbox `toolkit grade` runs each student's notebook in (toolkit/teaching/sandbox.py).
+sandbox:
+	@command -v bwrap >/dev/null 2>&1 || { apt-get update -qq && apt-get install -y -qq bubblewrap >/dev/null; }
+
 # The main job: the paper's 2DS tables at full size, printed next to the published numbers.
 demo: setup
 	$(VENV)/bin/toolkit reproduce --scenario 2ds --preset paper --out $(OUT)
@@ -29,7 +33,7 @@ lint: setup
 	$(VENV)/bin/ruff format --check toolkit tools tests docs/scripts
 	$(VENV)/bin/mypy
 
-test: setup browser lint
+test: setup browser sandbox lint
 	$(PY) -m pytest -q
 
 # JupyterLab on the notebooks, for a student: open the URL it prints, start with 01.

@@ -15,6 +15,7 @@ from __future__ import annotations
 import csv
 import json
 import os
+import re
 import subprocess
 import sys
 import zipfile
@@ -27,7 +28,7 @@ from otter.test_files import OKTestFile
 
 from toolkit import cli
 from toolkit.cli import commands
-from toolkit.teaching import grading
+from toolkit.teaching import classroom, grading, unavailable
 from tools import handout
 
 ASSIGNMENTS = ["bridge_test", "verify_and_repair", "evaluating_a_checker", "cae_loss"]
@@ -58,10 +59,11 @@ def _with_variant(variant: Variant, target: Path) -> Path:
     return target
 
 
-def _scores_in_process(notebook: Path) -> dict[str, float]:
+def _scores_in_process(notebook: Path, failed: set[str] | None = None) -> dict[str, float]:
     """Each autograded question's score, as ``otter run`` computes it: the student's cells that grading runs
     (``otter_ignore`` ones skipped, IPython magics dropped) in one namespace, then otter's test runner on every
-    test of the autograder, public and hidden."""
+    test of the autograder, public and hidden. ``failed`` collects "q1 sentence 4" for each hidden test that
+    failed. The toolkit functions the hidden tests make unavailable are restored afterwards."""
     cells = json.loads(notebook.read_text())["cells"]
     namespace: dict = {"__name__": "__main__"}
     for cell in cells:  # otter's own cells (its set-up, the grader.check calls) are not editable: not the student's
@@ -71,10 +73,17 @@ def _scores_in_process(notebook: Path) -> dict[str, float]:
             exec(compile(source, str(notebook), "exec"), namespace)
     tests = json.loads(notebook.read_text())["metadata"]["otter"]["tests"]
     scores = {}
-    for question, spec in tests.items():
-        test_file = OKTestFile.from_spec(spec)
-        test_file.run(namespace)
-        scores[question] = float(test_file.score)
+    try:
+        for question, spec in tests.items():
+            test_file = OKTestFile.from_spec(spec)
+            test_file.run(namespace)
+            scores[question] = round(float(test_file.score), 4)  # as grading.grade rounds otter's score
+            names = [grading.test_name(case) for suite in spec["suites"] for case in suite["cases"]]
+            for name, result in zip(names, test_file.test_case_results):
+                if not result.passed and failed is not None:
+                    failed.add(f"{question} {name.split(' (')[0]}")
+    finally:
+        unavailable.restore()
     return scores
 
 
@@ -97,11 +106,14 @@ def graded(built, tmp_path_factory) -> dict[str, dict]:
         jobs[f"{name}/blank"] = (grading.student_notebook(name), name, None)
     for name, label in THROUGH_OTTER_RUN.items():
         jobs[label] = (_with_variant(VARIANTS[label], root / label / f"{name}.ipynb"), name, None)
-    jobs["broken"] = (root / "broken" / "bridge_test.ipynb", "bridge_test", None)
+    jobs["broken"] = (root / "broken" / "bridge_test.ipynb", "bridge_test", None)  # not a notebook
     jobs["broken"][0].parent.mkdir()
     jobs["broken"][0].write_text("this is not a notebook")
     hangs = Variant(
-        "verify_and_repair", frozenset({"q1"}), "def verify_and_repair(*args):\n    while True:\n        pass\n"
+        "verify_and_repair",
+        frozenset({"q1"}),
+        "def verify_and_repair(*args):\n    while True:\n        pass\n",
+        "never ends",
     )
     jobs["hangs"] = (
         _with_variant(hangs, root / "hangs" / "verify_and_repair.ipynb"),
@@ -116,12 +128,35 @@ def test_the_assignments_exist():
     assert set(ASSIGNMENTS) <= set(grading.assignment_names())
 
 
+def _sentences(name: str) -> set[str]:
+    """Every sentence of the master's specifications that a hidden test checks: "q1 sentence 4", ..."""
+    found, question = set(), None
+    for cell in json.loads(grading.master(name).read_text())["cells"]:
+        source = "".join(cell["source"])
+        if source.startswith("# BEGIN QUESTION"):
+            question = source.split("name: ")[1].split()[0]
+        label = re.search(r'^_checks = "(sentence \d+) \(', source, re.MULTILINE)
+        if label:
+            found.add(f"{question} {label[1]}")
+    return found
+
+
 def test_every_variant_replaces_a_solution_of_its_assignment():
     for label, variant in VARIANTS.items():
-        assert variant.assignment in ASSIGNMENTS and variant.loses, label
+        assert variant.assignment in ASSIGNMENTS and bool(variant.loses) == bool(variant.breaks), label
         assert f"def {variant.function}(" in grading.master(variant.assignment).read_text(), label
     assert {v.assignment for v in VARIANTS.values()} == set(ASSIGNMENTS)
     assert all(THROUGH_OTTER_RUN[name] in VARIANTS for name in ASSIGNMENTS)
+
+
+@pytest.mark.parametrize("name", ASSIGNMENTS)
+def test_every_sentence_has_a_wrong_variant_and_every_assignment_two_correct_ones(name):
+    sentences = _sentences(name)
+    assert len(sentences) >= 4, sentences
+    broken = {v.breaks for v in VARIANTS.values() if v.assignment == name}
+    assert sentences <= broken, f"{name}: no wrong variant for {sorted(sentences - broken)}"
+    assert broken - {""} <= sentences | {"library"}, f"{name}: variants break sentences the master lacks"
+    assert sum(not v.loses for v in VARIANTS.values() if v.assignment == name) >= 2
 
 
 @pytest.mark.slow
@@ -145,12 +180,17 @@ def test_public_tests_carry_no_points(built, name):
 
 @pytest.mark.slow
 @pytest.mark.parametrize("label", sorted(VARIANTS))
-def test_a_wrong_answer_loses_points_on_its_questions_only(built, tmp_path, label):
-    variant = VARIANTS[label]
-    scores = _scores_in_process(_with_variant(variant, tmp_path / f"{variant.assignment}.ipynb"))
+def test_a_variant_loses_points_on_the_questions_it_breaks_only(built, tmp_path, label):
+    """A wrong variant fails the hidden test of the sentence it breaks and scores below full marks on its
+    questions, full marks on the others; a correct variant scores full marks."""
+    variant, failed = VARIANTS[label], set()
+    scores = _scores_in_process(_with_variant(variant, tmp_path / f"{variant.assignment}.ipynb"), failed)
     full = grading.points(variant.assignment)
-    lost = {question for question, score in scores.items() if score < full[question]}
-    assert lost == variant.loses, f"{label}: scores {scores} of {full}"
+    assert {q: scores[q] < full[q] for q in full} == {q: q in variant.loses for q in full}, (
+        f"{label}: {scores} of {full}"
+    )
+    if variant.breaks and variant.breaks != "library":
+        assert variant.breaks in failed, f"{label}: the test of {variant.breaks} passed; failed: {sorted(failed)}"
 
 
 @pytest.mark.slow
@@ -161,7 +201,7 @@ def test_otter_run_agrees_with_the_in_process_score_and_shows_no_test_source(gra
     in_process = _scores_in_process(_with_variant(VARIANTS[label], tmp_path / f"{name}.ipynb"))
     assert {q["name"]: q["score"] for q in result["questions"]} == in_process, grading.report(result)
     report = grading.report(result)
-    assert "hidden test" in report and "AssertionError: " in report, report
+    assert "sentence " in report and "AssertionError: " in report, report
     leaked = [line for line in handout.secret_lines(name) if line in report]
     assert not leaked, f"the grade report quotes a test's or a solution's source: {leaked}"
 
@@ -177,7 +217,7 @@ def test_a_submission_that_never_ends_is_stopped_and_scored_zero(graded):
 def test_a_file_otter_cannot_grade_scores_zero_with_the_reason(graded):
     result = graded["broken"]
     assert not result["timed_out"] and result["score"] == 0 and result["max_score"] > 0
-    assert "otter could not grade" in result["error"] and "JSON" in result["error"]
+    assert result["error"].startswith("not a notebook (JSONDecodeError")
 
 
 OTTER_OUTPUT = """q1 results:
@@ -235,13 +275,17 @@ OTTER_OUTPUT = """q1 results:
 """
 
 
-def test_feedback_names_the_failed_tests_and_why_never_their_source():
-    feedback = grading.feedback(OTTER_OUTPUT, hidden=[False, True, False])
+def test_feedback_names_the_failed_tests_as_the_notebook_lists_them_and_why_never_their_source():
+    names = ["public test", "sentence 5 (what is kept)", "public test"]
+    feedback = grading.feedback(OTTER_OUTPUT, names)
     assert feedback.splitlines() == [
-        "hidden test 2 failed: AssertionError: a returned sample is in collision",
-        "public test 3 failed: NameError: name 'passage_fraction' is not defined",
+        "sentence 5 (what is kept) failed: AssertionError: a returned sample is in collision",
+        "public test failed: NameError: name 'passage_fraction' is not defined",
     ]
-    assert grading.feedback("q2 results: All test cases passed!", hidden=[True]) == "all tests passed"
+    assert grading.feedback("q2 results: All test cases passed!", names=["x"]) == "all tests passed"
+    labelled = {"code": ">>> _checks = 'sentence 4 (the bounds act as walls)'\n>>> assert True\n", "hidden": True}
+    assert grading.test_name(labelled) == "sentence 4 (the bounds act as walls)"
+    assert grading.test_name({"code": ">>> assert True\n", "hidden": False}) == "public test"
 
 
 def test_the_report_ends_with_the_score_and_shows_feedback_where_points_were_lost():
@@ -256,7 +300,7 @@ def test_the_report_ends_with_the_score_and_shows_feedback_where_points_were_los
                 "name": "q2",
                 "score": 0.0,
                 "max_score": 3.0,
-                "feedback": "hidden test 2 failed: AssertionError: a returned sample is in collision",
+                "feedback": "sentence 5 (what is kept) failed: AssertionError: a returned sample is in collision",
             },
         ],
     }
@@ -270,7 +314,7 @@ def test_a_folder_of_submissions_becomes_one_csv_row_each(tmp_path):
     for stem in ("b", "a"):
         (tmp_path / f"{stem}.ipynb").write_text("{}")
     (tmp_path / "notes.txt").write_text("")
-    found = grading.submissions([tmp_path])
+    found = classroom.submissions([tmp_path])
     assert [p.name for p in found] == ["a.ipynb", "b.ipynb"]
     results = {
         p: {
@@ -283,7 +327,7 @@ def test_a_folder_of_submissions_becomes_one_csv_row_each(tmp_path):
         }
         for i, p in enumerate(found)
     }
-    grading.write_csv(results, tmp_path / "scores.csv")
+    classroom.write_csv(results, tmp_path / "scores.csv")
     with open(tmp_path / "scores.csv") as scores:
         rows = list(csv.DictReader(scores))
     assert [(Path(r["submission"]).name, r["q1"], r["score"], r["max_score"]) for r in rows] == [
@@ -306,16 +350,41 @@ def test_the_assignment_is_read_from_the_notebook_then_its_file_name(tmp_path):
 
 def test_missing_or_empty_submissions_are_named(tmp_path):
     with pytest.raises(ValueError, match=r"no such file or folder: .*missing"):
-        grading.submissions([tmp_path / "missing"])
+        classroom.submissions([tmp_path / "missing"])
     with pytest.raises(ValueError, match="no notebooks"):
-        grading.submissions([tmp_path])
+        classroom.submissions([tmp_path])
 
 
 def test_the_grade_command_is_wired():
-    args = cli.build_parser().parse_args(["grade", "x.ipynb", "--csv", "s.csv", "--timeout", "5"])
+    args = cli.build_parser().parse_args(["grade", "x.ipynb", "--csv", "s.csv", "--timeout", "5", "--workers", "3"])
     assert args.func is commands.cmd_grade and args.notebooks == ["x.ipynb"] and args.timeout == 5.0
+    assert args.workers == 3 and not args.unisolated
     with pytest.raises(ValueError, match="unknown assignment"):
         grading.master("no_such_assignment")
+
+
+@pytest.mark.parametrize(
+    "flag, value", [("--timeout", "0"), ("--timeout", "-5"), ("--workers", "0"), ("--workers", "-1")]
+)
+def test_grade_refuses_a_timeout_or_workers_of_zero_or_below(capsys, flag, value):
+    with pytest.raises(SystemExit):
+        cli.build_parser().parse_args(["grade", "x.ipynb", flag, value])
+    assert f"argument {flag}: must be" in capsys.readouterr().err
+    with pytest.raises(ValueError, match="must be a positive number"):
+        classroom.grade_all([Path("x.ipynb")], **{flag[2:]: float(value)}, isolate=False)
+
+
+def test_a_syntax_error_is_named_with_its_cell(tmp_path):
+    notebook = tmp_path / "n.ipynb"
+    cells = [
+        {"cell_type": "code", "source": ["%matplotlib inline\n", "x = 1\n"]},
+        {"cell_type": "code", "source": ["def f(:\n"]},
+    ]
+    notebook.write_text(json.dumps({"cells": cells}))
+    assert grading.syntax_errors(notebook) == "code cell 2 has a syntax error (line 1: invalid syntax)"
+    assert grading.notebook_problem(notebook) is None
+    (tmp_path / "m.ipynb").write_text("[1, 2]")
+    assert grading.notebook_problem(tmp_path / "m.ipynb").startswith("not a notebook (TypeError")
 
 
 GUIDE = Path(__file__).resolve().parent.parent / "tutorials" / "instructors.md"

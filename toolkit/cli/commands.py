@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import sys
 from collections.abc import Callable
 from pathlib import Path
 
@@ -213,24 +214,24 @@ def cmd_tune(args: argparse.Namespace) -> int:
 
 
 def cmd_grade(args: argparse.Namespace) -> int:
-    from toolkit.teaching import grading
+    from toolkit.teaching import classroom, grading
 
     if args.assignment:
         grading.master(args.assignment)  # an unknown name fails here, with the known ones
-    notebooks = grading.submissions(args.notebooks)
-    # the assignment of each, all before grading
-    names = {notebook: args.assignment or grading.assignment_of(notebook) for notebook in notebooks}
-    results = {}
-    for notebook, name in names.items():
-        results[notebook] = grading.grade(notebook, name, timeout=args.timeout)
+    if args.unisolated:
         print(
-            json.dumps({"submission": str(notebook), **results[notebook]})
-            if args.json
-            else grading.report(results[notebook]),
-            flush=True,
+            "WARNING: --unisolated: the students' code runs as you, with your files (the masters among them) and the "
+            "network in reach",
+            file=sys.stderr,
         )
+    notebooks = classroom.submissions(args.notebooks)
+    results = classroom.grade_all(
+        notebooks, args.assignment, timeout=args.timeout, workers=args.workers, isolate=not args.unisolated
+    )
+    for notebook, result in results.items():
+        print(json.dumps({"submission": str(notebook), **result}) if args.json else grading.report(result))
     if args.csv:
-        grading.write_csv(results, args.csv)
+        classroom.write_csv(results, args.csv)
     return 0
 
 

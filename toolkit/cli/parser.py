@@ -19,6 +19,7 @@ from toolkit.cli.arguments import (
     help_formatter,
     imports_parent,
     int_in,
+    positive_float,
     preset,
     sampler_list,
     sampler_names,
@@ -170,7 +171,17 @@ def view_options(cmd: argparse.ArgumentParser) -> None:
 def grade_options(cmd: argparse.ArgumentParser) -> None:
     cmd.add_argument("notebooks", nargs="+", help="student notebooks, or folders of them")
     cmd.add_argument("--assignment", help="assignment name (default: read from each notebook, else its file name)")
-    cmd.add_argument("--timeout", type=float, help="seconds a notebook may run before it scores 0 (default: 600)")
+    cmd.add_argument(
+        "--timeout", type=positive_float, help="seconds a notebook may run before it scores 0 (default: 600)"
+    )
+    cmd.add_argument(
+        "--workers", type=int_in(1), help="notebooks graded at once (default: one per core; each runs its own kernel)"
+    )
+    cmd.add_argument(
+        "--unisolated",
+        action="store_true",
+        help="run the notebooks without the bubblewrap sandbox, as you (only for code you trust)",
+    )
     cmd.add_argument("--csv", help="also write one row of scores per notebook to this CSV file")
     cmd.add_argument("--json", action="store_true", help="print one JSON object a notebook instead of the report")
 

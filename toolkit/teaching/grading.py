@@ -32,7 +32,10 @@ import subprocess
 import sys
 import tempfile
 import textwrap
+from collections.abc import Collection
 from pathlib import Path
+
+from toolkit.teaching import sandbox
 
 ASSIGNMENTS = Path(__file__).resolve().parents[2] / "tutorials" / "assignments"
 TIMEOUT_S = 600  # seconds a submission may run before it is stopped and scored 0
@@ -99,12 +102,22 @@ def autograder(name: str, build_missing: bool = True) -> Path:
     return build(name)
 
 
-def _tests(zip_path: Path) -> dict[str, tuple[float, list[bool]]]:
-    """Each autograded question's points and, test by test, whether it is hidden; read from the autograder
-    notebook beside the zip."""
+LABEL = re.compile(r"^>>> _checks = ['\"](.+?)['\"]$", re.MULTILINE)
+
+
+def test_name(case: dict) -> str:
+    """How the notebook lists the sentence a test case checks (its ``_checks = "sentence 3 (...)"`` line), or
+    "public test"/"hidden test" for a case without one."""
+    found = LABEL.search(case["code"])
+    return found[1] if found else f"{'hidden' if case['hidden'] else 'public'} test"
+
+
+def _tests(zip_path: Path) -> dict[str, tuple[float, list[str]]]:
+    """Each autograded question's points and, test by test, its name (:func:`test_name`); read from the
+    autograder notebook beside the zip."""
     notebook = json.loads((zip_path.parent / f"{zip_path.name.split('-autograder_')[0]}.ipynb").read_text())
     return {
-        q: (float(test["points"]), [case["hidden"] for suite in test["suites"] for case in suite["cases"]])
+        q: (float(test["points"]), [test_name(case) for suite in test["suites"] for case in suite["cases"]])
         for q, test in notebook["metadata"]["otter"]["tests"].items()
     }
 
@@ -117,18 +130,37 @@ def points(name: str) -> dict[str, float]:
 CASE = re.compile(r"^\s*\S+ - (\d+) result:\n(.*?)(?=^\s*\S+ - \d+ result:|\Z)", re.MULTILINE | re.DOTALL)
 
 
-def feedback(output: str, hidden: list[bool]) -> str:
-    """What a student may see of otter's output for one question: which tests failed (numbered, public or
-    hidden) and why, the last line of the exception each raised (a test's assertion message); never a test's
-    source, which otter's own output quotes."""
+def _secrets(zip_path: Path, question: str) -> set[str]:
+    """The lines of ``question``'s hidden tests long enough to recognize (a message that quotes one is withheld)."""
+    notebook = json.loads((zip_path.parent / f"{zip_path.name.split('-autograder_')[0]}.ipynb").read_text())
+    cases = [c for s in notebook["metadata"]["otter"]["tests"][question]["suites"] for c in s["cases"] if c["hidden"]]
+    lines = (line[4:].strip() for case in cases for line in case["code"].splitlines())
+    return {line for line in lines if len(line) >= 24}
+
+
+MESSAGE_CHARS = 400  # the longest message a failed test passes on
+
+
+def feedback(output: str, names: list[str], secrets: Collection[str] = ()) -> str:
+    """What a student may see of otter's output for one question: which tests failed, each named as the notebook
+    lists it (``names``, test by test: the sentence it checks, or "public test"), and why, the last line of the
+    exception each raised (a test's assertion message); never a test's source, which otter's own output quotes."""
     if "All test cases passed" in output:
         return "all tests passed"
     failed = [
-        f"{'hidden' if hidden[int(n) - 1] else 'public'} test {n} failed: {_why(body)}"
+        f"{names[int(n) - 1]} failed: {_withheld(_why(body), secrets)}"
         for n, body in CASE.findall(output)
-        if "Test case passed" not in body and 0 < int(n) <= len(hidden)
+        if "Test case passed" not in body and 0 < int(n) <= len(names)
     ]
     return "\n".join(failed) or "the tests did not run"
+
+
+def _withheld(message: str, secrets: Collection[str]) -> str:
+    """``message``, cut to :data:`MESSAGE_CHARS`; withheld when it quotes a line of a hidden test (a submission
+    can raise an exception whose message is the hidden tests' source)."""
+    if any(secret in message for secret in secrets):
+        return "(the message quotes a hidden test and is withheld)"
+    return message if len(message) <= MESSAGE_CHARS else message[: MESSAGE_CHARS - 3] + "..."
 
 
 def _why(body: str) -> str:
@@ -168,48 +200,107 @@ def assignment_of(notebook: str | Path) -> str:
     return name
 
 
-def grade(notebook: str | Path, assignment: str | None = None, timeout: float | None = None) -> dict:
+def grade(
+    notebook: str | Path, assignment: str | None = None, timeout: float | None = None, isolate: bool = True
+) -> dict:
     """Grade a filled-in student notebook; the assignment defaults to :func:`assignment_of` the notebook.
 
+    ``otter run`` runs it inside a :mod:`~toolkit.teaching.sandbox` (``isolate``; a clear error where bubblewrap
+    cannot run) or, with ``isolate=False``, as the instructor with the instructor's files in reach.
     Returns ``{"assignment", "questions": [{"name", "score", "max_score", "feedback"}],
     "score", "max_score", "timed_out", "error"}``; ``error`` is None unless otter could not
-    grade the notebook at all (every question then scores 0).
+    grade the notebook at all (every question then scores 0) or a cell has a syntax error (graded all the same).
     """
     notebook = Path(notebook).resolve()
     timeout = TIMEOUT_S if timeout is None else timeout
+    if not timeout > 0:
+        raise ValueError(f"timeout must be a positive number of seconds, got {timeout}")
+    if isolate and (why := sandbox.unavailable()):
+        raise RuntimeError(f"cannot isolate the submissions: {why}; grade without isolation only if you trust them")
     name = assignment or assignment_of(notebook)
     zip_path = autograder(name)
     tests = _tests(zip_path)
     full = {q: p for q, (p, _) in tests.items()}
-    with tempfile.TemporaryDirectory() as out:
-        process = subprocess.Popen(
-            _otter("run", "--no-logo", "-a", str(zip_path), "-o", out, str(notebook)),
-            stdout=subprocess.PIPE,
-            stderr=subprocess.STDOUT,
-            text=True,
-            start_new_session=True,  # its own group: a timeout stops the kernel too
-        )
-        try:
-            log, _ = process.communicate(timeout=timeout)
-        except subprocess.TimeoutExpired:
-            os.killpg(process.pid, signal.SIGKILL)
-            process.communicate()
+    if problem := notebook_problem(notebook):
+        return _zero(name, full, problem)
+    with tempfile.TemporaryDirectory() as work:
+        inbox, out = Path(work, "in"), Path(work, "out")
+        inbox.mkdir(mode=0o755)
+        out.mkdir()
+        out.chmod(0o777)  # the sandbox's own user writes the results
+        shutil.copy(zip_path, inbox / "autograder.zip")
+        shutil.copy(notebook, inbox / f"{name}.ipynb")
+        for file in inbox.iterdir():
+            file.chmod(0o644)
+        done = _run(inbox, out, name, timeout, isolate)
+        if done is None:
             return _zero(name, full, f"stopped after {timeout:g} s: the notebook did not finish", timed_out=True)
-        results_file = Path(out) / "results.json"
+        results_file = out / "results.json"
         if not results_file.is_file():
-            last = log.strip().splitlines()[-1] if log.strip() else "no output"
+            last = done.strip().splitlines()[-1] if done.strip() else "no output"
             return _zero(name, full, f"otter could not grade this notebook: {last}")
         results = {t["name"]: t for t in json.loads(results_file.read_text())["tests"]}
     questions = [
         {
             "name": q,
-            "score": float(results.get(q, {}).get("score") or 0.0),
+            "score": round(float(results.get(q, {}).get("score") or 0.0), 4),  # otter keeps 5 digits; 6 / 7 * 7 < 6
             "max_score": p,
-            "feedback": feedback(results[q]["output"], hidden) if q in results else "not graded: its tests did not run",
+            "feedback": feedback(results[q]["output"], names, _secrets(zip_path, q))
+            if q in results
+            else "not graded: its tests did not run",
         }
-        for q, (p, hidden) in tests.items()
+        for q, (p, names) in tests.items()
     ]
-    return _total(name, questions)
+    return _total(name, questions, error=syntax_errors(notebook))
+
+
+def _run(inbox: Path, out: Path, name: str, timeout: float, isolate: bool) -> str | None:
+    """Run ``otter run`` on ``inbox``'s notebook and autograder, results into ``out``; its log, or None when it was
+    stopped after ``timeout`` seconds (with everything it started)."""
+    inside = {"in": "/grading/in", "out": "/grading/out"} if isolate else {"in": str(inbox), "out": str(out)}
+    otter = _otter("run", "--no-logo", "-a", f"{inside['in']}/autograder.zip", "-o", inside["out"])
+    otter.append(f"{inside['in']}/{name}.ipynb")
+    if isolate:
+        otter = sandbox.command(otter, {str(inbox): inside["in"]}, {str(out): inside["out"]}, cpu_s=timeout)
+    process = subprocess.Popen(
+        otter,
+        stdout=subprocess.PIPE,
+        stderr=subprocess.STDOUT,
+        text=True,
+        cwd=out,
+        start_new_session=True,  # its own group: a timeout stops the kernel too
+    )
+    try:
+        return process.communicate(timeout=timeout)[0]
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        process.communicate()
+        return None
+
+
+def notebook_problem(notebook: Path) -> str | None:
+    """Why ``notebook`` cannot be graded at all (not a notebook), or None."""
+    try:
+        cells = json.loads(notebook.read_text())["cells"]
+        ["".join(c["source"]) for c in cells if c["cell_type"] == "code"]
+    except (OSError, UnicodeDecodeError, ValueError, KeyError, TypeError) as error:
+        return f"not a notebook ({type(error).__name__}: {error})"
+    return None
+
+
+def syntax_errors(notebook: Path) -> str | None:
+    """The code cells of ``notebook`` that Python cannot parse (IPython's ``%`` and ``!`` lines aside), or None:
+    such a notebook is graded (the tests of what the cell defines fail), and its row says why."""
+    errors = []
+    code = [c for c in json.loads(notebook.read_text())["cells"] if c["cell_type"] == "code"]
+    for number, cell in enumerate(code, start=1):
+        lines = "".join(cell["source"]).splitlines()
+        source = "\n".join("" if line.lstrip()[:1] in ("%", "!") else line for line in lines)
+        try:
+            compile(source, f"code cell {number}", "exec")
+        except SyntaxError as error:
+            errors.append(f"code cell {number} has a syntax error (line {error.lineno}: {error.msg})")
+    return "; ".join(errors) or None
 
 
 def _zero(name: str, points: dict[str, float], why: str, timed_out: bool = False) -> dict:
@@ -237,41 +328,7 @@ def report(result: dict) -> str:
         lines.append(f"{q['name']}: {q['score']:g}/{q['max_score']:g}")
         if q["score"] < q["max_score"]:
             lines += ["    " + line for line in q["feedback"].strip().splitlines()]
+    if result.get("error"):
+        lines.append(f"error: {result['error']}")
     lines.append(f"score: {result['score']:g}/{result['max_score']:g}")
     return "\n".join(lines)
-
-
-def submissions(paths: list[str | Path]) -> list[Path]:
-    """The notebooks among ``paths``: files as given, folders expanded to their ``*.ipynb`` (sorted)."""
-    found = []
-    for path in map(Path, paths):
-        if not path.exists():
-            raise ValueError(f"no such file or folder: {path}")
-        found += sorted(path.glob("*.ipynb")) if path.is_dir() else [path]
-    if not found:
-        raise ValueError(f"no notebooks (*.ipynb) in {', '.join(map(str, paths))}")
-    return found
-
-
-def write_csv(results: dict[Path, dict], path: str | Path) -> None:
-    """One row per submission: ``submission, assignment, <question>..., score, max_score, timed_out, error``
-    (``error``: empty, or why otter could not grade the notebook)."""
-    import csv
-
-    questions = list(dict.fromkeys(q["name"] for r in results.values() for q in r["questions"]))
-    with open(path, "w", newline="") as file:
-        writer = csv.writer(file)
-        writer.writerow(["submission", "assignment", *questions, "score", "max_score", "timed_out", "error"])
-        for notebook, result in results.items():
-            scores = {q["name"]: q["score"] for q in result["questions"]}
-            writer.writerow(
-                [
-                    str(notebook),
-                    result["assignment"],
-                    *(scores.get(q, "") for q in questions),
-                    result["score"],
-                    result["max_score"],
-                    result["timed_out"],
-                    result.get("error") or "",
-                ]
-            )
