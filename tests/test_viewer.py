@@ -366,7 +366,7 @@ def test_launch_joins_one_panel_to_the_viewer(capsys):
         v.stop()
 
 
-# toolkit/viewer/__init__.py's
+# the order of the modules in toolkit/viewer/__init__.py's docstring
 READING_ORDER = ["drawing", "server", "address", "labels", "scene", "panel", "app", "browser"]
 
 
