@@ -29,6 +29,7 @@ from toolkit.plots.palette import CATEGORICAL, COLORS
 
 MODES = ("without", "with")
 STAGE_KEYS = ("sampling_s", "connection_s", "query_s")  # PRM stats, in the order the planner spends them
+STAGE_HATCHES = ("", "//", "..", "xx")  # sampling, connection, query, other: told apart without colour
 STAGE_LABELS = {
     "sampling_s": "sampling (S, S')",
     "connection_s": "connection (edges)",
@@ -203,13 +204,15 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         table.update({key: table["total_s"] * table[f"{key}_share"] for key in STAGE_KEYS})
         table["other_s"] = np.maximum(table["total_s"] - sum(table[k] for k in STAGE_KEYS), 0.0)
         bottom = np.zeros_like(table["total_s"])
-        for key in STAGE_KEYS + ("other_s",):
+        for k, key in enumerate(STAGE_KEYS + ("other_s",)):
             ax.bar(
                 x.ravel(),
                 table[key].ravel(),
                 0.38,
                 bottom=bottom.ravel(),
                 label=STAGE_LABELS[key],
+                color=CATEGORICAL[k],
+                hatch=STAGE_HATCHES[k],  # a second cue besides the colour
                 edgecolor=COLORS["free"],
                 linewidth=0.5,
             )
@@ -220,7 +223,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
             table["total_s"].ravel(),
             yerr=[low.ravel(), high.ravel()],
             fmt="none",
-            ecolor="black",
+            ecolor=COLORS["ink"],
             capsize=3,
             linewidth=1,
             label="total: quartiles",
