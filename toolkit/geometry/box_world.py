@@ -43,7 +43,8 @@ class BoxWorldChecker(CollisionChecker):
         self.workspace = workspace
         self._cell = 2 * float(np.max(np.linalg.norm(robot.half_extents, axis=1)))  # widest link bounds
         self._shape = tuple(np.maximum(np.ceil((workspace.upper - workspace.lower) / self._cell).astype(int), 1) + 1)
-        self._marked = self._box_lists(grow=0.0)[0].reshape(self._shape) > 0  # cells an obstacle touches
+        self._lists = self._box_lists(grow=0.0)  # the obstacles of each cell
+        self._marked = self._lists[0].reshape(self._shape) > 0  # cells an obstacle touches
         self._near: dict[float, tuple] = {}  # clearances: _box_lists(cap), by cap
 
     def _box_lists(self, grow: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -52,12 +53,15 @@ class BoxWorldChecker(CollisionChecker):
         ``count (C,)`` and ``first (C,)`` per flattened cell, ``members (B,)``: cell c's boxes
         are ``members[first[c]:first[c] + count[c]]``.
         """
-        pairs = []  # (2, cells) per box: rows cell and box
         boxes = self.workspace.boxes  # (K, 2, D)
-        for box, (lo, hi) in enumerate(zip(self._cells(boxes[:, 0] - grow), self._cells(boxes[:, 1] + grow))):
-            block = np.mgrid[tuple(slice(a, b + 1) for a, b in zip(lo, hi))].reshape(len(lo), -1)  # (D, cells)
-            pairs.append(np.stack([np.ravel_multi_index(tuple(block), self._shape), np.full(block.shape[1], box)]))
-        cells = np.concatenate(pairs, axis=1) if pairs else np.zeros((2, 0), dtype=int)  # (2, B)
+        lo, hi = self._cells(boxes[:, 0] - grow), self._cells(boxes[:, 1] + grow)  # (K, D) each: first and last cell
+        span = hi - lo + 1  # (K, D) cells per axis of each box's block
+        box, rest = ragged(np.prod(span, axis=1))  # (B,) each: one (box, cell of its block) pair per item
+        coords = np.zeros((len(box), len(self._shape)), dtype=int)  # (B, D): the cell of each pair
+        for axis in reversed(range(len(self._shape))):  # the block's cells in C order, last axis fastest
+            coords[:, axis] = lo[box, axis] + rest % span[box, axis]
+            rest = rest // span[box, axis]
+        cells = np.stack([np.ravel_multi_index(tuple(coords.T), self._shape), box])  # (2, B): rows cell and box
         cells = cells[:, np.argsort(cells[0], kind="stable")]
         count = np.bincount(cells[0], minlength=int(np.prod(self._shape)))
         return count, np.cumsum(count) - count, cells[1]

@@ -75,7 +75,7 @@ class CompiledChecker(BoxWorldChecker):
         shape = np.ones(3, dtype=np.int64)
         shape[: ws.dim] = self._shape
         # int32: the grid stays in cache
-        lists = (np.ascontiguousarray(a, dtype=np.int32) for a in self._box_lists(grow))
+        lists = (np.ascontiguousarray(a, dtype=np.int32) for a in (self._box_lists(grow) if grow else self._lists))
         count, first, members = lists
         return World(
             np.array(ws.lower, dtype=np.float64),  # copies: writable arrays, so one compiled version serves all
