@@ -53,18 +53,14 @@ class BoxWorldChecker(CollisionChecker):
         ``count (C,)`` and ``first (C,)`` per flattened cell, ``members (B,)``: cell c's boxes
         are ``members[first[c]:first[c] + count[c]]``.
         """
-        boxes = self.workspace.boxes  # (K, 2, D)
-        lo, hi = self._cells(boxes[:, 0] - grow), self._cells(boxes[:, 1] + grow)  # (K, D) each: first and last cell
-        span = hi - lo + 1  # (K, D) cells per axis of each box's block
-        box, rest = ragged(np.prod(span, axis=1))  # (B,) each: one (box, cell of its block) pair per item
-        coords = np.zeros((len(box), len(self._shape)), dtype=int)  # (B, D): the cell of each pair
-        for axis in reversed(range(len(self._shape))):  # the block's cells in C order, last axis fastest
-            coords[:, axis] = lo[box, axis] + rest % span[box, axis]
-            rest = rest // span[box, axis]
-        cells = np.stack([np.ravel_multi_index(tuple(coords.T), self._shape), box])  # (2, B): rows cell and box
-        cells = cells[:, np.argsort(cells[0], kind="stable")]
-        count = np.bincount(cells[0], minlength=int(np.prod(self._shape)))
-        return count, np.cumsum(count) - count, cells[1]
+        from toolkit.geometry import kernels  # numba loads (or compiles) on first use, not on import
+
+        boxes, dim = self.workspace.boxes, self.workspace.dim  # (K, 2, D)
+        lo, hi = np.zeros((2, len(boxes), 3), dtype=np.int64)  # first and last cell per axis, (K, 3) each
+        lo[:, :dim], hi[:, :dim] = self._cells(boxes[:, 0] - grow), self._cells(boxes[:, 1] + grow)
+        shape = np.ones(3, dtype=np.int64)  # a 2D grid: one cell along the third axis
+        shape[:dim] = self._shape
+        return kernels.cell_lists(lo, hi, shape)
 
     def _cells(self, points: np.ndarray) -> np.ndarray:
         """Integer cell index of each point ``(..., D)``, clipped to the grid."""

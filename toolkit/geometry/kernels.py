@@ -240,3 +240,35 @@ def clearance_bounds(Q, robot, world, level_links, cap, clearance):
                 gap = _box_clearance(centers[link], rotations[link], half[link], low[link], high[link], box, dim, cap)
                 bound = min(bound, gap)
         clearance[n] = max(bound, 0.0)
+
+
+
+@njit(cache=True, inline="always")
+def _block_cells(lo, hi, shape, cells):
+    """Fill ``cells`` with the flat indices of the block of cells from ``lo`` to ``hi (3,)``; returns their number."""
+    n = 0
+    for a in range(lo[0], hi[0] + 1):
+        for b in range(lo[1], hi[1] + 1):
+            for c in range(lo[2], hi[2] + 1):
+                cells[n] = (a * shape[1] + b) * shape[2] + c
+                n += 1
+    return n
+
+
+@njit(cache=True)
+def cell_lists(lo, hi, shape):
+    """Per cell of a grid of ``shape (3,)`` cells, the boxes whose blocks of cells ``lo, hi (K, 3)`` (first and last
+    cell per axis) cover it, in box order: ``count (C,)``, ``first (C,)``, ``members (B,)``, cell ``c``'s boxes being
+    ``members[first[c]:first[c] + count[c]]``. A counting sort: one pass counts each cell's boxes, one lists them."""
+    count = np.zeros(shape[0] * shape[1] * shape[2], np.int64)
+    cells = np.empty(shape[0] * shape[1] * shape[2], np.int64)  # one box's block
+    for k in range(len(lo)):
+        for m in range(_block_cells(lo[k], hi[k], shape, cells)):
+            count[cells[m]] += 1
+    first = np.cumsum(count) - count
+    members, at = np.empty(count.sum(), np.int64), first.copy()
+    for k in range(len(lo)):
+        for m in range(_block_cells(lo[k], hi[k], shape, cells)):
+            members[at[cells[m]]] = k
+            at[cells[m]] += 1
+    return count, first, members
