@@ -242,7 +242,6 @@ def clearance_bounds(Q, robot, world, level_links, cap, clearance):
         clearance[n] = max(bound, 0.0)
 
 
-
 @njit(cache=True, inline="always")
 def _block_cells(lo, hi, shape, cells):
     """Fill ``cells`` with the flat indices of the block of cells from ``lo`` to ``hi (3,)``; returns their number."""
