@@ -21,8 +21,8 @@ from toolkit.geometry import robots
 from toolkit.geometry.box_world import BoxWorldChecker
 from toolkit.geometry.collision import (
     CompiledChecker,
+    CompiledMeshChecker,
     FCLChecker,
-    MeshChecker,
     PointRobotChecker,
     SeparatingAxisChecker,
     exact_checker,
@@ -235,7 +235,7 @@ def test_exact_checker_compiles_every_box_world_but_the_point_robots():
         scenario = scenarios.get(name)
         assert type(exact_checker(scenario.make_workspace(np.random.default_rng(0)), scenario.robot)) is expected
     mesh = from_mesh(__import__("trimesh").creation.box((2, 2, 2)), lower=np.zeros(3), upper=np.full(3, 11.0))
-    assert type(exact_checker(mesh, robots.box_chain(1))) is MeshChecker
+    assert type(exact_checker(mesh, robots.box_chain(1))) is CompiledMeshChecker
     with pytest.raises(ValueError, match="a mesh workspace's obstacles are its triangles"):
         CompiledChecker(mesh, robots.box_chain(1))
 

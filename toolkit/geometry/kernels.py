@@ -42,7 +42,7 @@ def _turn(rotation, axis, angle):
 
 
 @njit(cache=True, inline="always")
-def _link_frames(q, robot, frame, centers, rotations):
+def link_frames(q, robot, frame, centers, rotations):
     """Fill ``centers (L, 3)`` and ``rotations (L, 3, 3)`` (columns: the link's axes) for configuration ``q``
     (:meth:`toolkit.geometry.robots.BoxRobot.link_boxes`); ``frame (4, 3)``: the frame being posed, position and
     rotation."""
@@ -75,7 +75,7 @@ def _link_frames(q, robot, frame, centers, rotations):
 
 
 @njit(cache=True, inline="always")
-def _link_bounds(half_extents, world, centers, rotations, low, high, cells):
+def link_bounds(half_extents, world, centers, rotations, low, high, cells):
     """Fill every link's axis-aligned bounds ``low, high (L, 3)`` and the cells they cover, ``cells (L, 2, 3)``
     (first and last per axis, clipped to the grid); returns whether every link lies inside the region."""
     inside = True
@@ -93,7 +93,7 @@ def _link_bounds(half_extents, world, centers, rotations, low, high, cells):
 
 
 @njit(cache=True, inline="always")
-def _listed_boxes(cells, world, seen, tag, found):
+def listed_boxes(cells, world, seen, tag, found):
     """Fill ``found`` with the boxes listed in ``cells (2, 3)`` (first and last per axis) that ``seen`` has not
     marked with ``tag`` yet, and mark them; returns their number (a box listed in two cells is tested once)."""
     shape, n_found = world.shape, 0
@@ -111,7 +111,7 @@ def _listed_boxes(cells, world, seen, tag, found):
 
 
 @njit(cache=True, inline="always")
-def _boxes_touch(center, R, half, low, high, box, dim):
+def boxes_touch(center, R, half, low, high, box, dim):
     """Whether a link box (``center (3,)``, ``R (3, 3)`` whose columns are its axes, ``half (3,)``, bounds
     ``low, high (3,)``) touches the obstacle ``box (2, D)``.
 
@@ -151,7 +151,7 @@ def _boxes_touch(center, R, half, low, high, box, dim):
 
 
 @njit(cache=True, inline="always")
-def _in_bounds(q, lower, upper):
+def in_bounds(q, lower, upper):
     for i in range(len(q)):  # noqa: SIM110 (numba compiles loops, not generators)
         if not lower[i] <= q[i] <= upper[i]:
             return False
@@ -162,8 +162,8 @@ def _in_bounds(q, lower, upper):
 def _some_link_touches(tag, half, boxes, world, centers, rotations, low, high, cells, seen, found):
     """Whether some link touches an obstacle listed in the cells its bounds cover (``tag``: the first link's)."""
     for link in range(len(half)):
-        for m in range(_listed_boxes(cells[link], world, seen, tag + link, found)):
-            if _boxes_touch(
+        for m in range(listed_boxes(cells[link], world, seen, tag + link, found)):
+            if boxes_touch(
                 centers[link], rotations[link], half[link], low[link], high[link], boxes[found[m]], len(world.lower)
             ):
                 return True
@@ -181,10 +181,10 @@ def validity(Q, robot, world, valid):
     seen, found = np.full(len(boxes), -1), np.zeros(len(boxes), np.int64)  # per box: the last link that listed it
     for n in range(len(Q)):
         valid[n] = False
-        if not _in_bounds(Q[n], robot.lower, robot.upper):
+        if not in_bounds(Q[n], robot.lower, robot.upper):
             continue
-        _link_frames(Q[n], robot, frame, centers, rotations)
-        if not _link_bounds(half, world, centers, rotations, low, high, cells):  # out of the region: no search
+        link_frames(Q[n], robot, frame, centers, rotations)
+        if not link_bounds(half, world, centers, rotations, low, high, cells):  # out of the region: no search
             continue
         valid[n] = not _some_link_touches(
             n * n_links, half, boxes, world, centers, rotations, low, high, cells, seen, found
@@ -194,7 +194,7 @@ def validity(Q, robot, world, valid):
 @njit(cache=True, inline="always")
 def _box_clearance(center, R, half, low, high, box, dim, cap):
     """A lower bound on the distance between a link box and an obstacle ``box (2, D)`` (arguments as in
-    :func:`_boxes_touch`): the larger of the gap between the link's bounds and the box and the gap between their
+    :func:`boxes_touch`): the larger of the gap between the link's bounds and the box and the gap between their
     projections on each of the link's axes; the first alone when it reaches ``cap`` (the caller's limit)."""
     gap = 0.0
     for i in range(dim):
@@ -225,17 +225,17 @@ def clearance_bounds(Q, robot, world, level_links, cap, clearance):
     seen, found = np.full(len(boxes), -1), np.zeros(len(boxes), np.int64)
     for n in range(len(Q)):
         clearance[n] = 0.0
-        if not _in_bounds(Q[n], robot.lower, robot.upper):
+        if not in_bounds(Q[n], robot.lower, robot.upper):
             continue
-        _link_frames(Q[n], robot, frame, centers, rotations)
-        _link_bounds(half, world, centers, rotations, low, high, cells)
+        link_frames(Q[n], robot, frame, centers, rotations)
+        link_bounds(half, world, centers, rotations, low, high, cells)
         bound = cap
         for link in range(n_links):
             for i in range(dim):
                 wall = min(low[link, i] - region_lo[i], region_hi[i] - high[link, i])
                 if not (link < level_links and i == dim - 1 and wall >= 0):
                     bound = min(bound, wall)
-            for m in range(_listed_boxes(cells[link], world, seen, n * n_links + link, found)):
+            for m in range(listed_boxes(cells[link], world, seen, n * n_links + link, found)):
                 box = boxes[found[m]]
                 gap = _box_clearance(centers[link], rotations[link], half[link], low[link], high[link], box, dim, cap)
                 bound = min(bound, gap)

@@ -13,7 +13,7 @@ from matplotlib.figure import Figure
 
 STYLES = {  # checker -> (marker and line, colour, legend)
     "exact": ("o-", "tab:blue", "exact, default (compiled)"),
-    "fcl": ("s--", "tab:gray", "exact, python-fcl"),
+    "fcl": ("s--", "tab:gray", "exact, python-fcl (a mesh: + numpy inside test)"),
     "learned": ("^-", "tab:orange", "learned (the network)"),
 }
 
@@ -44,12 +44,8 @@ def _panel(ax, sweep: dict) -> None:
     """One variable: the three curves, the shaded wins, the crossings."""
     x = np.asarray(sweep["values"], dtype=float)
     exact, learned = np.asarray(sweep["exact_us"], float), np.asarray(sweep["learned_us"], float)
-    mesh = all(f is None for f in sweep["fcl_us"])  # a mesh: the default exact check is FCL's BVH
     for name in ("exact", "fcl", "learned"):
-        if name == "fcl" and mesh:
-            continue
         style, colour, label = STYLES[name]
-        label = "exact, default (FCL's mesh BVH, inside test)" if name == "exact" and mesh else label
         ax.plot(x, np.asarray(sweep[f"{name}_us"], float), style, color=colour, label=label)
     ax.fill_between(
         x, learned, exact, where=learned < exact, interpolate=True, color="tab:orange", alpha=0.2, label="learning wins"
