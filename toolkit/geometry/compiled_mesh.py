@@ -6,9 +6,9 @@
 hold the two equal near contact) in one compiled loop (:mod:`toolkit.geometry.mesh_kernels`). This class turns the
 mesh into the arrays that loop reads:
 
-- a grid over the region whose cells list the triangles whose bounds meet them (the broadphase: a link tests
-  only the triangles listed where its bounds lie);
-- each cell's state: a cell no triangle's bounds meet lies wholly inside or wholly outside a closed mesh, and so
+- a grid over the region whose cells list the triangles that touch them (the broadphase: a link tests
+  only the triangles listed where its box lies);
+- each cell's state: a cell no triangle touches lies wholly inside or wholly outside a closed mesh, and so
   does every cell joined to it through such cells, so one winding number per connected region of them classifies
   them all, once; a link centre in such a cell needs no winding number. An open mesh has no inside to share:
   every cell then asks the winding number.
@@ -68,9 +68,11 @@ class CompiledMeshChecker(BoxWorldChecker):
         )
 
     def _triangle_grid(self, tri: np.ndarray, bounds: np.ndarray) -> World:
-        """The region's grid, cells listing the triangles ``tri (T, 3, 3)`` whose ``bounds (T, 2, 3)`` meet them; its
-        cells hold about ``TRIANGLES_PER_CELL`` triangles of mean area where the surface crosses them."""
-        from toolkit.geometry import kernels
+        """The region's grid, cells listing the triangles ``tri (T, 3, 3)`` (their ``bounds (T, 2, 3)``) that touch
+        them; its cells hold about ``TRIANGLES_PER_CELL`` triangles of mean area where the surface crosses them, and
+        are no wider than the robot's thinnest link, so that a link near the surface mostly has points in cells the
+        surface does not cross (no winding number to compute)."""
+        from toolkit.geometry import mesh_kernels
 
         ws = self.workspace
         extent = ws.upper - ws.lower  # (3,)
@@ -79,11 +81,13 @@ class CompiledMeshChecker(BoxWorldChecker):
             if len(tri)
             else 1.0
         )
-        cell = float(np.clip(np.sqrt(area * TRIANGLES_PER_CELL), extent.max() / MAX_CELLS, extent.max()))
+        thinnest = 2 * float(np.min(self.robot.half_extents))  # the thinnest link's thickness
+        size = min(np.sqrt(area * TRIANGLES_PER_CELL), thinnest)
+        cell = float(np.clip(size, extent.max() / MAX_CELLS, extent.max()))
         shape = (np.ceil(extent / cell).astype(np.int64) + 1).astype(np.int64)  # (3,)
         lo = np.clip(np.floor((bounds[:, 0] - ws.lower) / cell).astype(np.int64), 0, shape - 1)  # (T, 3)
         hi = np.clip(np.floor((bounds[:, 1] - ws.lower) / cell).astype(np.int64), 0, shape - 1)
-        count, first, members = kernels.cell_lists(lo, hi, shape)
+        count, first, members = mesh_kernels.triangle_cell_lists(tri, lo, hi, np.asarray(ws.lower, float), cell, shape)
         return World(
             np.array(ws.lower, dtype=np.float64),
             np.array(ws.upper, dtype=np.float64),

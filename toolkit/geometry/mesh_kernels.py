@@ -76,6 +76,36 @@ def _triangle_touches(triangle, center, R, half, scratch):
 
 
 @njit(cache=True)
+def triangle_cell_lists(triangles, lo, hi, lower, cell, shape):
+    """Per cell of a grid (``lower (3,)``, cubes of side ``cell``, ``shape (3,)``), the triangles ``(T, 3, 3)`` that
+    touch it, in triangle order, as :func:`toolkit.geometry.kernels.cell_lists` returns them: each triangle tested
+    (separating axes) against each cell of its bounds' block ``lo, hi (T, 3)``, the cell a hair larger (a cell no
+    triangle touches then surely lies off the surface)."""
+    count = np.zeros(shape[0] * shape[1] * shape[2], np.int64)
+    identity, half = np.eye(3), np.full(3, cell / 2 * (1 + 1e-9) + 1e-12)
+    center, scratch = np.zeros(3), np.zeros((6, 3))
+    members = np.zeros(0, np.int64)
+    for fill in range(2):  # 0: count each cell's triangles; 1: list them
+        if fill:
+            first = np.cumsum(count) - count
+            members, at = np.empty(count.sum(), np.int64), first.copy()
+        for t in range(len(triangles)):
+            for a in range(lo[t, 0], hi[t, 0] + 1):
+                for b in range(lo[t, 1], hi[t, 1] + 1):
+                    for c in range(lo[t, 2], hi[t, 2] + 1):
+                        for i, index in enumerate((a, b, c)):
+                            center[i] = lower[i] + (index + 0.5) * cell
+                        if _triangle_touches(triangles[t], center, identity, half, scratch):
+                            flat = (a * shape[1] + b) * shape[2] + c
+                            if fill:
+                                members[at[flat]] = t
+                                at[flat] += 1
+                            else:
+                                count[flat] += 1
+    return count, np.cumsum(count) - count, members
+
+
+@njit(cache=True)
 def winding_number(point, triangles, faces):
     """The generalized winding number of ``point (3,)`` over ``triangles[faces]`` (``triangles (T, 3, 3)``): the
     solid angles they subtend there (Van Oosterom and Strackee 1983), summed, over 4 pi."""
