@@ -137,7 +137,9 @@ def test_the_conclusion_says_where_learning_wins_or_by_how_much_it_would_have_to
         "check; it would have to be 1.5x cheaper per configuration, or the check that much dearer; against "
         "python-fcl it wins at 10, 100"
     )
-    assert lines[1].startswith("triangles: learning is cheaper than the default exact check at 10, 100 (")
+    assert lines[1].startswith(
+        "triangles: learning is cheaper than the default exact check at 10, 100 (0.01-0.02x its cost)"
+    )
     assert lines[2].startswith(
         "links: learning never wins over 10-100: at its best (100) the network costs about as much as the default "
         "exact check (1.04x): a tie, not a saving ("

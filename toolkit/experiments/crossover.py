@@ -244,15 +244,19 @@ TIE = 1.1  # a network within 10 % of the exact check's cost saves nothing worth
 
 def conclusion(results: dict) -> list[str]:
     """In words, per variable, where the network is cheaper per configuration than the default exact checker (and
-    than FCL); where it never is, how many times cheaper it would have to be at its best value (or, the same, how
-    many times dearer the check)."""
+    by how much, a tie where within 10 %; and where than FCL); where it never is, how many times cheaper it would
+    have to be at its best value (or, the same, how many times dearer the check)."""
     lines = []
     for sweep_ in results["variables"].values():
         values, exact, learned = sweep_["values"], sweep_["exact_us"], sweep_["learned_us"]
         ratio = np.asarray(learned) / np.asarray(exact)  # > 1: the exact check is cheaper
         wins = [v for v, r in zip(values, ratio) if r < 1]
         if wins:
-            verdict = f"learning is cheaper than the default exact check at {_listed(wins)}"
+            cheaper = ratio[ratio < 1]
+            tie = ", within 10 % somewhere: a tie there" if cheaper.max() > 1 / TIE else ""
+            verdict = (
+                f"learning is cheaper than the default exact check at {_listed(wins)} ({_span(cheaper)}x its cost{tie})"
+            )
         else:
             best = int(np.argmin(ratio))
             verdict = (
@@ -271,6 +275,12 @@ def conclusion(results: dict) -> list[str]:
         span = f"exact {min(exact):.2g}-{max(exact):.2g} us, learned {min(learned):.2g}-{max(learned):.2g} us"
         lines.append(f"{sweep_['label']}: {verdict} ({span} a configuration).")
     return lines
+
+
+def _span(ratios: np.ndarray) -> str:
+    """``"0.27-0.29"``, or one figure where they round alike."""
+    low, high = f"{ratios.min():.2f}", f"{ratios.max():.2f}"
+    return low if low == high else f"{low}-{high}"
 
 
 def _listed(values: list) -> str:
