@@ -10,8 +10,8 @@ mesh into the arrays that loop reads:
   only the triangles listed where its box lies);
 - each cell's state: a cell no triangle touches lies wholly inside or wholly outside a closed mesh, and so
   does every cell joined to it through such cells, so one winding number per connected region of them classifies
-  them all, once; a link centre in such a cell needs no winding number. An open mesh has no inside to share:
-  every cell then asks the winding number.
+  them all, once; a link with a point in such a cell needs no winding number. An open (or inconsistently
+  oriented) mesh has no inside to share: every cell then asks the winding number.
 """
 
 from __future__ import annotations
@@ -55,7 +55,8 @@ class CompiledMeshChecker(BoxWorldChecker):
         self._parts = world_arrays(self, grow=0.0)  # the parts' bounds on the prefilter's grid
         bounds = np.stack([solid.triangles.min(axis=1), solid.triangles.max(axis=1)], axis=1)  # (T, 2, 3)
         self._grid = self._triangle_grid(solid.triangles, bounds)
-        state = self._cell_states(solid, watertight=workspace.mesh.is_watertight)
+        mesh = workspace.mesh
+        state = self._cell_states(solid, closed=bool(mesh.is_watertight and mesh.is_winding_consistent))
         parts = solid.parts or [np.zeros(0, dtype=np.int64)]
         count = np.array([len(p) for p in parts], dtype=np.int64)
         self._mesh = Mesh(
@@ -99,13 +100,15 @@ class CompiledMeshChecker(BoxWorldChecker):
             members.astype(np.int32),
         )
 
-    def _cell_states(self, solid, *, watertight: bool) -> np.ndarray:
-        """``(C,)`` each cell's state; cells no triangle meets, by connected region, from one winding number each."""
+    def _cell_states(self, solid, *, closed: bool) -> np.ndarray:
+        """``(C,)`` each cell's state; cells no triangle touches, by connected region, from one winding number each;
+        none unless the mesh is ``closed`` (every edge joins two faces, consistently oriented), where the winding
+        number can change only across the surface."""
         from toolkit.geometry.mesh_kernels import INSIDE, OUTSIDE, SURFACE
 
         grid = self._grid
         state = np.full(len(grid.cell_count), SURFACE, dtype=np.int64)
-        if not watertight:
+        if not closed:
             return state
         regions, n_regions = ndimage.label((grid.cell_count == 0).reshape(tuple(grid.shape)))
         regions = regions.reshape(-1)
