@@ -38,6 +38,8 @@ def assert_agree(ws, robot, Q) -> np.ndarray:
 def test_compiled_mesh_checker_equals_the_reference_near_contact(room, name):
     robot = scenarios.get(name).robot
     assert len(room.faces) == 4_608
+    # the youBot's base ranges over 41 x 41 cells, the room 11 x 11: its base link is posed and bounded first
+    assert CompiledMeshChecker(room, robot)._base_first == (name == "3do")
     valid = assert_agree(room, robot, robot.sample(np.random.default_rng(0), 3000))
     assert 0.02 < valid.mean() < 0.95  # both answers occur
     for seed, checker in enumerate((MeshChecker(room, robot), CompiledMeshChecker(room, robot))):

@@ -52,6 +52,7 @@ class CompiledMeshChecker(BoxWorldChecker):
         super().__init__(workspace, robot)
         solid = workspace.solid
         self._robot = robot_arrays(robot)
+        self._base_first = self._base_mostly_outside()
         self._parts = world_arrays(self, grow=0.0)  # the parts' bounds on the prefilter's grid
         bounds = np.stack([solid.triangles.min(axis=1), solid.triangles.max(axis=1)], axis=1)  # (T, 2, 3)
         self._grid = self._triangle_grid(solid.triangles, bounds)
@@ -67,6 +68,16 @@ class CompiledMeshChecker(BoxWorldChecker):
             count,
             np.concatenate(parts).astype(np.int64),
         )
+
+    def _base_mostly_outside(self) -> bool:
+        """Whether less than half of the box the base's position ranges over lies in the region (a robot bounded for
+        a larger workspace, as 3DO's youBot in a room): then most configurations leave the region with the base link,
+        which the loop poses and bounds alone first."""
+        ws, robot = self.workspace, self.robot
+        n = 3 if robot.base == "free" else 2  # the base's position coordinates, first in a configuration
+        lo, hi = robot.lower[:n], robot.upper[:n]
+        overlap = np.clip(np.minimum(hi, ws.upper[:n]) - np.maximum(lo, ws.lower[:n]), 0.0, None)
+        return bool(np.prod(overlap / np.maximum(hi - lo, 1e-12)) < 0.5)
 
     def _triangle_grid(self, tri: np.ndarray, bounds: np.ndarray) -> World:
         """The region's grid, cells listing the triangles ``tri (T, 3, 3)`` (their ``bounds (T, 2, 3)``) that touch
@@ -122,7 +133,14 @@ class CompiledMeshChecker(BoxWorldChecker):
     def validity(self, Q: np.ndarray) -> np.ndarray:
         from toolkit.geometry import mesh_kernels  # numba loads (or compiles) on first use, not on import
 
-        valid = np.empty(len(Q), dtype=bool)
         Q = np.ascontiguousarray(Q, dtype=np.float64)
-        mesh_kernels.mesh_validity(Q, self._robot, self._parts, self._grid, self._mesh, valid)
+        valid = np.zeros(len(Q), dtype=bool)
+        if self._base_first:  # the configurations whose base link leaves the region are invalid: the loop skips them
+            inside = np.empty(len(Q), dtype=bool)
+            mesh_kernels.base_link_inside(Q, self._robot, self._parts, inside)
+            kept, valid_kept = np.flatnonzero(inside), np.empty(int(inside.sum()), dtype=bool)
+            mesh_kernels.mesh_validity(Q[kept], self._robot, self._parts, self._grid, self._mesh, valid_kept)
+            valid[kept] = valid_kept
+        else:
+            mesh_kernels.mesh_validity(Q, self._robot, self._parts, self._grid, self._mesh, valid)
         return valid

@@ -42,10 +42,10 @@ def _turn(rotation, axis, angle):
 
 
 @njit(cache=True, inline="always")
-def link_frames(q, robot, frame, centers, rotations):
-    """Fill ``centers (L, 3)`` and ``rotations (L, 3, 3)`` (columns: the link's axes) for configuration ``q``
-    (:meth:`toolkit.geometry.robots.BoxRobot.link_boxes`); ``frame (4, 3)``: the frame being posed, position and
-    rotation."""
+def link_frames(q, robot, frame, centers, rotations, n_links):
+    """Fill ``centers (L, 3)`` and ``rotations (L, 3, 3)`` (columns: the link's axes) of the first ``n_links`` links
+    for configuration ``q`` (:meth:`toolkit.geometry.robots.BoxRobot.link_boxes`); ``frame (4, 3)``: the frame being
+    posed, position and rotation."""
     position, rotation = frame[0], frame[1:]
     position[:], rotation[:] = 0.0, 0.0
     for i in range(3):
@@ -60,7 +60,7 @@ def link_frames(q, robot, frame, centers, rotations):
         _turn(rotation, 2, q[3])
         _turn(rotation, 1, q[4])
         _turn(rotation, 0, q[5])
-    for link in range(len(robot.link_offsets)):
+    for link in range(n_links):
         if link > 0:  # joint link - 1 carries this link
             joint = link - 1
             for i in range(3):
@@ -183,7 +183,7 @@ def validity(Q, robot, world, valid):
         valid[n] = False
         if not in_bounds(Q[n], robot.lower, robot.upper):
             continue
-        link_frames(Q[n], robot, frame, centers, rotations)
+        link_frames(Q[n], robot, frame, centers, rotations, n_links)
         if not link_bounds(half, world, centers, rotations, low, high, cells):  # out of the region: no search
             continue
         valid[n] = not _some_link_touches(
@@ -227,7 +227,7 @@ def clearance_bounds(Q, robot, world, level_links, cap, clearance):
         clearance[n] = 0.0
         if not in_bounds(Q[n], robot.lower, robot.upper):
             continue
-        link_frames(Q[n], robot, frame, centers, rotations)
+        link_frames(Q[n], robot, frame, centers, rotations, n_links)
         link_bounds(half, world, centers, rotations, low, high, cells)
         bound = cap
         for link in range(n_links):

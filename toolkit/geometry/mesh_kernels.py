@@ -18,6 +18,10 @@ touches none touches no triangle and lies in no part):
    the generalized winding number of its centre (:func:`toolkit.geometry.meshes.winding_numbers`,
    compiled) over the parts whose bounds hold it.
 
+A robot whose base ranges mostly beyond the region (3DO's youBot in a room) leaves it, in most
+configurations, with its base link: :func:`base_link_inside` poses and bounds that link alone first, and
+the loop checks only the configurations it keeps.
+
 Like :mod:`toolkit.geometry.kernels`, the mesh arrives as arrays and ``cache=True`` keeps the
 compiled loop on disk.
 """
@@ -220,6 +224,17 @@ def _touches_a_triangle(center, R, half, low, high, cells, world, mesh, seen, ta
 
 
 @njit(cache=True)
+def base_link_inside(Q, robot, world, inside):
+    """Fill ``inside (N,)``: whether the base link of each configuration of ``Q (N, dof)`` lies inside ``world``'s
+    region (:func:`toolkit.geometry.kernels.link_bounds` of that link alone); false, the configuration is invalid."""
+    frame, centers, rotations = np.zeros((4, 3)), np.zeros((1, 3)), np.zeros((1, 3, 3))
+    low, high, cells = np.zeros((1, 3)), np.zeros((1, 3)), np.zeros((1, 2, 3), np.int64)
+    for n in range(len(Q)):
+        link_frames(Q[n], robot, frame, centers, rotations, 1)
+        inside[n] = link_bounds(robot.half_extents[:1], world, centers, rotations, low, high, cells)
+
+
+@njit(cache=True)
 def mesh_validity(Q, robot, parts, world, mesh, valid):
     """Fill ``valid (N,)`` for configurations ``Q (N, dof)``: the steps in the module's docstring, a link tested only
     where its bounds meet a part's bounds. ``robot``: :class:`toolkit.geometry.compiled.Robot`; ``parts``: a
@@ -235,7 +250,7 @@ def mesh_validity(Q, robot, parts, world, mesh, valid):
         valid[n] = False
         if not in_bounds(Q[n], robot.lower, robot.upper):
             continue
-        link_frames(Q[n], robot, frame, centers, rotations)
+        link_frames(Q[n], robot, frame, centers, rotations, n_links)
         if not link_bounds(half, parts, centers, rotations, low, high, part_cells):
             continue
         valid[n] = True
