@@ -21,8 +21,8 @@ from toolkit.geometry import robots
 from toolkit.geometry.box_world import BoxWorldChecker
 from toolkit.geometry.collision import (
     CompiledChecker,
+    CompiledMeshChecker,
     FCLChecker,
-    MeshChecker,
     PointRobotChecker,
     SeparatingAxisChecker,
     exact_checker,
@@ -235,7 +235,7 @@ def test_exact_checker_compiles_every_box_world_but_the_point_robots():
         scenario = scenarios.get(name)
         assert type(exact_checker(scenario.make_workspace(np.random.default_rng(0)), scenario.robot)) is expected
     mesh = from_mesh(__import__("trimesh").creation.box((2, 2, 2)), lower=np.zeros(3), upper=np.full(3, 11.0))
-    assert type(exact_checker(mesh, robots.box_chain(1))) is MeshChecker
+    assert type(exact_checker(mesh, robots.box_chain(1))) is CompiledMeshChecker
     with pytest.raises(ValueError, match="a mesh workspace's obstacles are its triangles"):
         CompiledChecker(mesh, robots.box_chain(1))
 
@@ -294,3 +294,19 @@ def test_compiled_clearances_equal_the_numpy_bound(name):
         np.testing.assert_allclose(compiled, BoxWorldChecker.clearance_bounds(checker, Q, cap), rtol=0, atol=1e-12)
         valid = checker.are_valid(Q)
         assert np.all(valid[compiled > 0]) and np.all(compiled[~valid] == 0) and (compiled > 0).mean() > 0.2
+
+
+@pytest.mark.parametrize("name", SCENARIOS)
+@pytest.mark.parametrize("grow", [0.0, 0.4])
+def test_each_cell_lists_exactly_the_boxes_that_touch_it_grown(name, grow):
+    """The broadphase's cell lists (built without a loop over boxes, issue 36) against every (cell, box) pair."""
+    scenario = scenarios.get(name)
+    ws = scenario.workspaces("query", 1, 3)[0]
+    checker = BoxWorldChecker(ws, scenario.robot)
+    count, first, members = checker._box_lists(grow)
+    shape = checker._shape
+    lo, hi = checker._cells(ws.boxes[:, 0] - grow), checker._cells(ws.boxes[:, 1] + grow)  # (K, D)
+    index = np.stack(np.unravel_index(np.arange(int(np.prod(shape))), shape), axis=-1)  # (C, D) every cell
+    touches = np.all((index[:, None] >= lo) & (index[:, None] <= hi), axis=-1)  # (C, K)
+    for c in range(len(index)):
+        assert members[first[c] : first[c] + count[c]].tolist() == np.flatnonzero(touches[c]).tolist()

@@ -14,7 +14,7 @@ import trimesh
 
 from toolkit import scenarios
 from toolkit.geometry import meshes, robots
-from toolkit.geometry.collision import FCLChecker, MeshChecker, exact_checker
+from toolkit.geometry.collision import CompiledMeshChecker, FCLChecker, MeshChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot, Link
 from toolkit.geometry.workspace import MeshWorkspace, Workspace, from_mesh, generate
 from toolkit.learning import data
@@ -100,7 +100,7 @@ def test_a_link_wholly_inside_a_solid_collides_though_it_touches_no_triangle():
 
 def test_exact_checker_picks_the_mesh_checker_and_the_box_checkers_refuse_a_mesh():
     twin = mesh_twin(generate("3dc", np.random.default_rng(0)))
-    assert type(exact_checker(twin, robots.box_chain(1))) is MeshChecker
+    assert type(exact_checker(twin, robots.box_chain(1))) is CompiledMeshChecker
     with pytest.raises(ValueError, match="exact_checker"):
         FCLChecker(twin, robots.box_chain(1))
     with pytest.raises(ValueError, match="MeshWorkspace"):

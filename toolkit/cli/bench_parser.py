@@ -81,7 +81,8 @@ def bench_planning_options(cmd: argparse.ArgumentParser) -> None:
 
 
 def bench_versus_ompl_options(cmd: argparse.ArgumentParser) -> None:
-    """`bench --vs-ompl`: the race against OMPL's planners, and its queries and time limit."""
+    """`bench --vs-ompl`: the race against OMPL's planners, and its queries and time limit; `--profile`, which
+    times the same queries' stages."""
     cmd.add_argument(
         "--vs-ompl",
         action="store_true",
@@ -92,11 +93,18 @@ def bench_versus_ompl_options(cmd: argparse.ArgumentParser) -> None:
         "(not 0 or 7100), e.g. 9000",
     )
     cmd.add_argument(
+        "--profile",
+        action="store_true",
+        help="instead: solve --queries N queries with the best exact planner and print where their time goes, "
+        "stage by stage (set-up, sampling, neighbours, edge checks, search, verification; "
+        "toolkit/experiments/profile.py)",
+    )
+    cmd.add_argument(
         "--queries",
         type=int_in(1, 1000),
         default=10,
         metavar="N",
-        help="with --vs-ompl: the first N queries of the seed's query set (default 10)",
+        help="with --vs-ompl or --profile: the first N queries of the seed's query set (default 10)",
     )
     cmd.add_argument(
         "--ompl-seconds",

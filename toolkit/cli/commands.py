@@ -42,6 +42,12 @@ def cmd_bench(args: argparse.Namespace) -> int:
     if args.scenario is None:
         raise ValueError("--scenario is needed (but with --crossover): one of the scenarios in `toolkit --help`")
     scenario = scenarios.get(args.scenario)
+    if args.profile:
+        from toolkit.experiments import profile
+
+        profiled = profile.profile(scenario, n_queries=args.queries, seed=args.seed)
+        print(json.dumps(profiled) if args.json else profile.markdown(profiled))
+        return 0
     models = checkpoints.load_models(args.checkpoint, scenario) if args.checkpoint else None
     if args.vs_ompl:
         try:

@@ -8,12 +8,13 @@ check grows with what it must test. So this experiment varies, one at a time, wh
 exact check expensive (:data:`VARIABLES`):
 
 - ``obstacles``: unit blocks in the scenario's region (3DC has 110-125);
-- ``triangles``: one icosphere obstacle, subdivided: a mesh workspace, checked by FCL's BVH;
+- ``triangles``: one icosphere obstacle, subdivided: a mesh workspace (its default exact checker compiled,
+  its reference python-fcl's BVH with numpy winding numbers, ``MeshChecker``);
 - ``links``: box chains of 1 to 15 joints (the paper's have 1 and 3: :func:`chain`);
 - ``batch``: configurations a call (a sampler asks for 200-2,000 at a time);
 
 and measures microseconds per configuration of the default exact checker
-(``exact_checker``: compiled for box worlds, FCL for meshes), of the python-fcl reference
+(``exact_checker``: compiled, for box worlds and meshes), of the python-fcl reference (``MeshChecker`` for a mesh)
 and of the learned checker (untrained networks of the preset's sizes,
 :func:`toolkit.experiments.bench.untrained_models`: their cost does not depend on their
 weights), the three timed in turns (:func:`~toolkit.experiments.bench.in_turns`) on the same
@@ -38,7 +39,7 @@ import trimesh
 from toolkit.experiments import bench
 from toolkit.experiments.config import QUICK
 from toolkit.experiments.queries import one_thread
-from toolkit.geometry.collision import FCLChecker, exact_checker
+from toolkit.geometry.collision import FCLChecker, MeshChecker, exact_checker
 from toolkit.geometry.robots import BIG, CHAIN_JOINT_LIMITS, SMALL, BoxRobot, Joint
 from toolkit.geometry.workspace import MeshWorkspace, Workspace, from_mesh
 from toolkit.learning.learned import LearnedChecker
@@ -112,8 +113,9 @@ def unit_blocks(region: Workspace, count: int, rng: np.random.Generator) -> Work
 
 def sphere(region: Workspace, subdivisions: int) -> MeshWorkspace:
     """An icosphere of ``20 * 4**subdivisions`` triangles in the middle of ``region``, its radius 0.3 x the
-    shortest side: a mesh workspace, whose exact check (``MeshChecker``) is FCL's BVH against the triangles and,
-    for links that touch none, a winding-number test of whether they lie inside."""
+    shortest side: a mesh workspace, whose default exact check is compiled (``CompiledMeshChecker``) and whose
+    reference (``MeshChecker``) is FCL's BVH against the triangles and, for links that touch none, a numpy
+    winding-number test of whether they lie inside."""
     mesh = trimesh.creation.icosphere(
         subdivisions=subdivisions, radius=0.3 * float(np.min(region.upper - region.lower))
     )
@@ -149,23 +151,22 @@ def variables_of(scenario: Scenario) -> tuple[str, ...]:
 
 def measure(setting: Setting, models: TrainedModels, repeats: int, seed: int = 0) -> dict:
     """Microseconds per configuration of each checker on ``setting.batch`` uniform configurations, timed in turns;
-    ``disagreements``: configurations the default exact checker answers differently from FCL (None: a mesh, whose
-    default exact checker is FCL); ``valid``: the fraction FCL (or the mesh checker) calls valid."""
+    ``disagreements``: configurations the default exact checker answers differently from FCL (a mesh: from the
+    reference ``MeshChecker``, FCL's BVH and numpy winding numbers); ``valid``: the fraction FCL calls valid."""
     robot, ws = setting.scenario.robot, setting.workspace
     Q = robot.sample(np.random.default_rng(seed), setting.batch)  # (batch, dof)
     checkers = {"exact": exact_checker(ws, robot), "learned": LearnedChecker(ws, models)}
-    if not isinstance(ws, MeshWorkspace):
-        checkers["fcl"] = FCLChecker(ws, robot)
+    checkers["fcl"] = MeshChecker(ws, robot) if isinstance(ws, MeshWorkspace) else FCLChecker(ws, robot)
     n = setting.calls
 
     def call(checker):
         return (lambda: [checker.are_valid(Q) for _ in range(n)]), n * len(Q)
 
     rates = bench.in_turns({name: call(checker) for name, checker in checkers.items()}, repeats)
-    truth = checkers.get("fcl", checkers["exact"]).are_valid(Q)  # (batch,)
+    truth = checkers["fcl"].are_valid(Q)  # (batch,)
     return {
         **{f"{name}_us": 1e6 / rates[name] if name in rates else None for name in CHECKERS},
-        "disagreements": int((checkers["exact"].are_valid(Q) != truth).sum()) if "fcl" in checkers else None,
+        "disagreements": int((checkers["exact"].are_valid(Q) != truth).sum()),
         "valid": float(truth.mean()),
     }
 
@@ -243,15 +244,19 @@ TIE = 1.1  # a network within 10 % of the exact check's cost saves nothing worth
 
 def conclusion(results: dict) -> list[str]:
     """In words, per variable, where the network is cheaper per configuration than the default exact checker (and
-    than FCL); where it never is, how many times cheaper it would have to be at its best value (or, the same, how
-    many times dearer the check)."""
+    by how much, a tie where within 10 %; and where than FCL); where it never is, how many times cheaper it would
+    have to be at its best value (or, the same, how many times dearer the check)."""
     lines = []
     for sweep_ in results["variables"].values():
         values, exact, learned = sweep_["values"], sweep_["exact_us"], sweep_["learned_us"]
         ratio = np.asarray(learned) / np.asarray(exact)  # > 1: the exact check is cheaper
         wins = [v for v, r in zip(values, ratio) if r < 1]
         if wins:
-            verdict = f"learning is cheaper than the default exact check at {_listed(wins)}"
+            cheaper = ratio[ratio < 1]
+            tie = ", within 10 % somewhere: a tie there" if cheaper.max() > 1 / TIE else ""
+            verdict = (
+                f"learning is cheaper than the default exact check at {_listed(wins)} ({_span(cheaper)}x its cost{tie})"
+            )
         else:
             best = int(np.argmin(ratio))
             verdict = (
@@ -270,6 +275,12 @@ def conclusion(results: dict) -> list[str]:
         span = f"exact {min(exact):.2g}-{max(exact):.2g} us, learned {min(learned):.2g}-{max(learned):.2g} us"
         lines.append(f"{sweep_['label']}: {verdict} ({span} a configuration).")
     return lines
+
+
+def _span(ratios: np.ndarray) -> str:
+    """``"0.27-0.29"``, or one figure where they round alike."""
+    low, high = f"{ratios.min():.2f}", f"{ratios.max():.2f}"
+    return low if low == high else f"{low}-{high}"
 
 
 def _listed(values: list) -> str:

@@ -16,6 +16,8 @@ Reading order:
    ``MeshChecker`` for meshes;
 7. :mod:`toolkit.geometry.compiled` and :mod:`toolkit.geometry.kernels` — ``CompiledChecker``:
    kinematics and separating axes compiled with numba, one loop over configurations, the default;
-8. :mod:`toolkit.geometry.collision` — all of them in one place, and ``exact_checker``, which picks the
-   fastest: compiled for box worlds, numpy for the point robot, FCL for meshes.
+8. :mod:`toolkit.geometry.compiled_mesh` and :mod:`toolkit.geometry.mesh_kernels` — ``CompiledMeshChecker``:
+   the same against a triangle mesh (triangle-box separating axes, inside tests from cells classified once);
+9. :mod:`toolkit.geometry.collision` — all of them in one place, and ``exact_checker``, which picks the
+   fastest: compiled for box worlds and meshes, numpy for the point robot.
 """

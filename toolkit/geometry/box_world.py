@@ -43,7 +43,8 @@ class BoxWorldChecker(CollisionChecker):
         self.workspace = workspace
         self._cell = 2 * float(np.max(np.linalg.norm(robot.half_extents, axis=1)))  # widest link bounds
         self._shape = tuple(np.maximum(np.ceil((workspace.upper - workspace.lower) / self._cell).astype(int), 1) + 1)
-        self._marked = self._box_lists(grow=0.0)[0].reshape(self._shape) > 0  # cells an obstacle touches
+        self._lists = self._box_lists(grow=0.0)  # the obstacles of each cell
+        self._marked = self._lists[0].reshape(self._shape) > 0  # cells an obstacle touches
         self._near: dict[float, tuple] = {}  # clearances: _box_lists(cap), by cap
 
     def _box_lists(self, grow: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
@@ -52,15 +53,14 @@ class BoxWorldChecker(CollisionChecker):
         ``count (C,)`` and ``first (C,)`` per flattened cell, ``members (B,)``: cell c's boxes
         are ``members[first[c]:first[c] + count[c]]``.
         """
-        pairs = []  # (2, cells) per box: rows cell and box
-        boxes = self.workspace.boxes  # (K, 2, D)
-        for box, (lo, hi) in enumerate(zip(self._cells(boxes[:, 0] - grow), self._cells(boxes[:, 1] + grow))):
-            block = np.mgrid[tuple(slice(a, b + 1) for a, b in zip(lo, hi))].reshape(len(lo), -1)  # (D, cells)
-            pairs.append(np.stack([np.ravel_multi_index(tuple(block), self._shape), np.full(block.shape[1], box)]))
-        cells = np.concatenate(pairs, axis=1) if pairs else np.zeros((2, 0), dtype=int)  # (2, B)
-        cells = cells[:, np.argsort(cells[0], kind="stable")]
-        count = np.bincount(cells[0], minlength=int(np.prod(self._shape)))
-        return count, np.cumsum(count) - count, cells[1]
+        from toolkit.geometry import kernels  # numba loads (or compiles) on first use, not on import
+
+        boxes, dim = self.workspace.boxes, self.workspace.dim  # (K, 2, D)
+        lo, hi = np.zeros((2, len(boxes), 3), dtype=np.int64)  # first and last cell per axis, (K, 3) each
+        lo[:, :dim], hi[:, :dim] = self._cells(boxes[:, 0] - grow), self._cells(boxes[:, 1] + grow)
+        shape = np.ones(3, dtype=np.int64)  # a 2D grid: one cell along the third axis
+        shape[:dim] = self._shape
+        return kernels.cell_lists(lo, hi, shape)
 
     def _cells(self, points: np.ndarray) -> np.ndarray:
         """Integer cell index of each point ``(..., D)``, clipped to the grid."""

@@ -66,27 +66,8 @@ class CompiledChecker(BoxWorldChecker):
         refuse_mesh(workspace)
         super().__init__(workspace, robot)
         self._robot = robot_arrays(robot)
-        self._world = self._world_arrays(grow=0.0)
+        self._world = world_arrays(self, grow=0.0)
         self._grown: dict[float, World] = {}  # clearances: the world with boxes grown by cap, by cap
-
-    def _world_arrays(self, grow: float) -> World:
-        """The workspace as the kernels read it, its cell lists holding the boxes grown by ``grow``."""
-        ws = self.workspace
-        shape = np.ones(3, dtype=np.int64)
-        shape[: ws.dim] = self._shape
-        # int32: the grid stays in cache
-        lists = (np.ascontiguousarray(a, dtype=np.int32) for a in self._box_lists(grow))
-        count, first, members = lists
-        return World(
-            np.array(ws.lower, dtype=np.float64),  # copies: writable arrays, so one compiled version serves all
-            np.array(ws.upper, dtype=np.float64),
-            np.array(ws.boxes, dtype=np.float64),
-            float(self._cell),
-            shape,
-            count,
-            first,
-            members,
-        )
 
     def validity(self, Q: np.ndarray) -> np.ndarray:
         from toolkit.geometry import kernels  # numba loads (or compiles) on first use, not on import
@@ -100,7 +81,7 @@ class CompiledChecker(BoxWorldChecker):
         from toolkit.geometry import kernels
 
         if cap not in self._grown:
-            self._grown[cap] = self._world_arrays(grow=cap)
+            self._grown[cap] = world_arrays(self, grow=cap)
         clearance = np.empty(len(Q))
         kernels.clearance_bounds(
             np.ascontiguousarray(Q, dtype=np.float64),
@@ -111,6 +92,26 @@ class CompiledChecker(BoxWorldChecker):
             clearance,
         )
         return clearance
+
+
+def world_arrays(checker: BoxWorldChecker, grow: float) -> World:
+    """A checker's workspace as the kernels read it, its cell lists holding the boxes grown by ``grow``."""
+    ws = checker.workspace
+    shape = np.ones(3, dtype=np.int64)
+    shape[: ws.dim] = checker._shape
+    # int32: the grid stays in cache
+    lists = checker._box_lists(grow) if grow else checker._lists
+    count, first, members = (np.ascontiguousarray(a, dtype=np.int32) for a in lists)
+    return World(
+        np.array(ws.lower, dtype=np.float64),  # copies: writable arrays, so one compiled version serves all
+        np.array(ws.upper, dtype=np.float64),
+        np.array(ws.boxes, dtype=np.float64),
+        float(checker._cell),
+        shape,
+        count,
+        first,
+        members,
+    )
 
 
 def robot_arrays(robot: BoxRobot) -> Robot:

@@ -42,10 +42,10 @@ def _turn(rotation, axis, angle):
 
 
 @njit(cache=True, inline="always")
-def _link_frames(q, robot, frame, centers, rotations):
-    """Fill ``centers (L, 3)`` and ``rotations (L, 3, 3)`` (columns: the link's axes) for configuration ``q``
-    (:meth:`toolkit.geometry.robots.BoxRobot.link_boxes`); ``frame (4, 3)``: the frame being posed, position and
-    rotation."""
+def link_frames(q, robot, frame, centers, rotations, n_links):
+    """Fill ``centers (L, 3)`` and ``rotations (L, 3, 3)`` (columns: the link's axes) of the first ``n_links`` links
+    for configuration ``q`` (:meth:`toolkit.geometry.robots.BoxRobot.link_boxes`); ``frame (4, 3)``: the frame being
+    posed, position and rotation."""
     position, rotation = frame[0], frame[1:]
     position[:], rotation[:] = 0.0, 0.0
     for i in range(3):
@@ -60,7 +60,7 @@ def _link_frames(q, robot, frame, centers, rotations):
         _turn(rotation, 2, q[3])
         _turn(rotation, 1, q[4])
         _turn(rotation, 0, q[5])
-    for link in range(len(robot.link_offsets)):
+    for link in range(n_links):
         if link > 0:  # joint link - 1 carries this link
             joint = link - 1
             for i in range(3):
@@ -75,7 +75,7 @@ def _link_frames(q, robot, frame, centers, rotations):
 
 
 @njit(cache=True, inline="always")
-def _link_bounds(half_extents, world, centers, rotations, low, high, cells):
+def link_bounds(half_extents, world, centers, rotations, low, high, cells):
     """Fill every link's axis-aligned bounds ``low, high (L, 3)`` and the cells they cover, ``cells (L, 2, 3)``
     (first and last per axis, clipped to the grid); returns whether every link lies inside the region."""
     inside = True
@@ -93,7 +93,7 @@ def _link_bounds(half_extents, world, centers, rotations, low, high, cells):
 
 
 @njit(cache=True, inline="always")
-def _listed_boxes(cells, world, seen, tag, found):
+def listed_boxes(cells, world, seen, tag, found):
     """Fill ``found`` with the boxes listed in ``cells (2, 3)`` (first and last per axis) that ``seen`` has not
     marked with ``tag`` yet, and mark them; returns their number (a box listed in two cells is tested once)."""
     shape, n_found = world.shape, 0
@@ -111,7 +111,7 @@ def _listed_boxes(cells, world, seen, tag, found):
 
 
 @njit(cache=True, inline="always")
-def _boxes_touch(center, R, half, low, high, box, dim):
+def boxes_touch(center, R, half, low, high, box, dim):
     """Whether a link box (``center (3,)``, ``R (3, 3)`` whose columns are its axes, ``half (3,)``, bounds
     ``low, high (3,)``) touches the obstacle ``box (2, D)``.
 
@@ -151,7 +151,7 @@ def _boxes_touch(center, R, half, low, high, box, dim):
 
 
 @njit(cache=True, inline="always")
-def _in_bounds(q, lower, upper):
+def in_bounds(q, lower, upper):
     for i in range(len(q)):  # noqa: SIM110 (numba compiles loops, not generators)
         if not lower[i] <= q[i] <= upper[i]:
             return False
@@ -162,8 +162,8 @@ def _in_bounds(q, lower, upper):
 def _some_link_touches(tag, half, boxes, world, centers, rotations, low, high, cells, seen, found):
     """Whether some link touches an obstacle listed in the cells its bounds cover (``tag``: the first link's)."""
     for link in range(len(half)):
-        for m in range(_listed_boxes(cells[link], world, seen, tag + link, found)):
-            if _boxes_touch(
+        for m in range(listed_boxes(cells[link], world, seen, tag + link, found)):
+            if boxes_touch(
                 centers[link], rotations[link], half[link], low[link], high[link], boxes[found[m]], len(world.lower)
             ):
                 return True
@@ -181,10 +181,10 @@ def validity(Q, robot, world, valid):
     seen, found = np.full(len(boxes), -1), np.zeros(len(boxes), np.int64)  # per box: the last link that listed it
     for n in range(len(Q)):
         valid[n] = False
-        if not _in_bounds(Q[n], robot.lower, robot.upper):
+        if not in_bounds(Q[n], robot.lower, robot.upper):
             continue
-        _link_frames(Q[n], robot, frame, centers, rotations)
-        if not _link_bounds(half, world, centers, rotations, low, high, cells):  # out of the region: no search
+        link_frames(Q[n], robot, frame, centers, rotations, n_links)
+        if not link_bounds(half, world, centers, rotations, low, high, cells):  # out of the region: no search
             continue
         valid[n] = not _some_link_touches(
             n * n_links, half, boxes, world, centers, rotations, low, high, cells, seen, found
@@ -194,7 +194,7 @@ def validity(Q, robot, world, valid):
 @njit(cache=True, inline="always")
 def _box_clearance(center, R, half, low, high, box, dim, cap):
     """A lower bound on the distance between a link box and an obstacle ``box (2, D)`` (arguments as in
-    :func:`_boxes_touch`): the larger of the gap between the link's bounds and the box and the gap between their
+    :func:`boxes_touch`): the larger of the gap between the link's bounds and the box and the gap between their
     projections on each of the link's axes; the first alone when it reaches ``cap`` (the caller's limit)."""
     gap = 0.0
     for i in range(dim):
@@ -225,18 +225,49 @@ def clearance_bounds(Q, robot, world, level_links, cap, clearance):
     seen, found = np.full(len(boxes), -1), np.zeros(len(boxes), np.int64)
     for n in range(len(Q)):
         clearance[n] = 0.0
-        if not _in_bounds(Q[n], robot.lower, robot.upper):
+        if not in_bounds(Q[n], robot.lower, robot.upper):
             continue
-        _link_frames(Q[n], robot, frame, centers, rotations)
-        _link_bounds(half, world, centers, rotations, low, high, cells)
+        link_frames(Q[n], robot, frame, centers, rotations, n_links)
+        link_bounds(half, world, centers, rotations, low, high, cells)
         bound = cap
         for link in range(n_links):
             for i in range(dim):
                 wall = min(low[link, i] - region_lo[i], region_hi[i] - high[link, i])
                 if not (link < level_links and i == dim - 1 and wall >= 0):
                     bound = min(bound, wall)
-            for m in range(_listed_boxes(cells[link], world, seen, n * n_links + link, found)):
+            for m in range(listed_boxes(cells[link], world, seen, n * n_links + link, found)):
                 box = boxes[found[m]]
                 gap = _box_clearance(centers[link], rotations[link], half[link], low[link], high[link], box, dim, cap)
                 bound = min(bound, gap)
         clearance[n] = max(bound, 0.0)
+
+
+@njit(cache=True, inline="always")
+def _block_cells(lo, hi, shape, cells):
+    """Fill ``cells`` with the flat indices of the block of cells from ``lo`` to ``hi (3,)``; returns their number."""
+    n = 0
+    for a in range(lo[0], hi[0] + 1):
+        for b in range(lo[1], hi[1] + 1):
+            for c in range(lo[2], hi[2] + 1):
+                cells[n] = (a * shape[1] + b) * shape[2] + c
+                n += 1
+    return n
+
+
+@njit(cache=True)
+def cell_lists(lo, hi, shape):
+    """Per cell of a grid of ``shape (3,)`` cells, the boxes whose blocks of cells ``lo, hi (K, 3)`` (first and last
+    cell per axis) cover it, in box order: ``count (C,)``, ``first (C,)``, ``members (B,)``, cell ``c``'s boxes being
+    ``members[first[c]:first[c] + count[c]]``. A counting sort: one pass counts each cell's boxes, one lists them."""
+    count = np.zeros(shape[0] * shape[1] * shape[2], np.int64)
+    cells = np.empty(shape[0] * shape[1] * shape[2], np.int64)  # one box's block
+    for k in range(len(lo)):
+        for m in range(_block_cells(lo[k], hi[k], shape, cells)):
+            count[cells[m]] += 1
+    first = np.cumsum(count) - count
+    members, at = np.empty(count.sum(), np.int64), first.copy()
+    for k in range(len(lo)):
+        for m in range(_block_cells(lo[k], hi[k], shape, cells)):
+            members[at[cells[m]]] = k
+            at[cells[m]] += 1
+    return count, first, members

@@ -15,7 +15,7 @@ from toolkit.plots.palette import COLORS
 
 STYLES = {  # checker -> (marker and line, colour, legend)
     "exact": ("o-", COLORS["exact"], "exact, default (compiled)"),
-    "fcl": ("s--", COLORS["fcl"], "exact, python-fcl"),
+    "fcl": ("s--", COLORS["fcl"], "exact, python-fcl (a mesh: + numpy inside test)"),
     "learned": ("^-", COLORS["learned"], "learned (the network)"),
 }
 
@@ -46,12 +46,8 @@ def _panel(ax, sweep: dict) -> None:
     """One variable: the three curves, the shaded wins, the crossings."""
     x = np.asarray(sweep["values"], dtype=float)
     exact, learned = np.asarray(sweep["exact_us"], float), np.asarray(sweep["learned_us"], float)
-    mesh = all(f is None for f in sweep["fcl_us"])  # a mesh: the default exact check is FCL's BVH
     for name in ("exact", "fcl", "learned"):
-        if name == "fcl" and mesh:
-            continue
         style, colour, label = STYLES[name]
-        label = "exact, default (FCL's mesh BVH, inside test)" if name == "exact" and mesh else label
         ax.plot(x, np.asarray(sweep[f"{name}_us"], float), style, color=colour, label=label)
     ax.fill_between(
         x,

@@ -1,0 +1,84 @@
+"""The compiled mesh checker (issue 36) gives the reference's answers: python-fcl's BVH and numpy winding numbers.
+
+Per robot, in the tutorials' room subdivided (4,608 triangles: the boxes' faces cut into many
+triangles, as a scanned or CAD mesh would be): uniform configurations, then pairs within 1e-6 of
+each other on either side of the boundary of the free space, found by bisection with either
+checker; in an icosphere (one large closed part, where links lie wholly inside it); and an open
+surface (no inside: every cell asks the winding number).
+"""
+
+import numpy as np
+import pytest
+import trimesh
+from test_compiled_checker import straddle_the_boundary
+
+from toolkit import scenarios
+from toolkit.experiments import crossover
+from toolkit.geometry import meshes
+from toolkit.geometry.collision import CompiledMeshChecker, MeshChecker, exact_checker
+from toolkit.geometry.mesh_kernels import INSIDE, OUTSIDE
+from toolkit.geometry.workspace import from_mesh
+
+REGION = dict(lower=np.zeros(3), upper=np.full(3, 11.0))
+
+
+@pytest.fixture(scope="module")
+def room():
+    """The demo room, its 288 triangles subdivided twice."""
+    return from_mesh(meshes.room().subdivide().subdivide(), **REGION)
+
+
+def assert_agree(ws, robot, Q) -> np.ndarray:
+    compiled, reference = CompiledMeshChecker(ws, robot).are_valid(Q), MeshChecker(ws, robot).are_valid(Q)
+    np.testing.assert_array_equal(compiled, reference)
+    return compiled
+
+
+@pytest.mark.parametrize("name", ["3dc7", "3dc9", "3do"])
+def test_compiled_mesh_checker_equals_the_reference_near_contact(room, name):
+    robot = scenarios.get(name).robot
+    assert len(room.faces) == 4_608
+    # the youBot's base ranges over 41 x 41 cells, the room 11 x 11: its base link is posed and bounded first
+    assert CompiledMeshChecker(room, robot)._base_first == (name == "3do")
+    valid = assert_agree(room, robot, robot.sample(np.random.default_rng(0), 3000))
+    assert 0.02 < valid.mean() < 0.95  # both answers occur
+    for seed, checker in enumerate((MeshChecker(room, robot), CompiledMeshChecker(room, robot))):
+        n = max(150, int(100 / valid.mean()))  # 3DO: few valid configurations to start from
+        inside, outside = straddle_the_boundary(checker, np.random.default_rng(seed + 1), n)
+        assert len(inside) > 50
+        assert assert_agree(room, robot, inside).all()
+        assert not assert_agree(room, robot, outside).any()
+
+
+def test_links_wholly_inside_a_sphere_collide_and_cells_are_classified_once():
+    scenario = scenarios.get("3dc9")
+    ws = crossover.sphere(scenario.workspaces("query", 1, 0)[0], 3)  # 1,280 triangles, radius 3.3
+    checker = CompiledMeshChecker(ws, scenario.robot)
+    centres = ws.lower + checker._grid.cell * (
+        np.stack(np.unravel_index(np.arange(len(checker._mesh.cell_state)), tuple(checker._grid.shape)), axis=-1) + 0.5
+    )
+    known = np.flatnonzero(checker._mesh.cell_state != 2)
+    np.testing.assert_array_equal(  # a classified cell's centre: the winding number's answer
+        checker._mesh.cell_state[known] == INSIDE, ws.solid.inside(centres[known])
+    )
+    assert {INSIDE, OUTSIDE} <= set(checker._mesh.cell_state[known].tolist())
+    Q = scenario.robot.sample(np.random.default_rng(4), 3000)
+    assert_agree(ws, scenario.robot, Q)
+    inside, outside = straddle_the_boundary(checker, np.random.default_rng(5), 100)
+    assert assert_agree(ws, scenario.robot, inside).all() and not assert_agree(ws, scenario.robot, outside).any()
+
+
+def test_an_open_surface_has_no_inside():
+    box = trimesh.creation.box(bounds=[[3.0, 3.0, 3.0], [8.0, 8.0, 8.0]])
+    open_box = trimesh.Trimesh(box.vertices, box.faces[2:], process=False)  # one face missing
+    ws = from_mesh(open_box, **REGION)
+    robot = scenarios.get("3dc7").robot
+    assert (CompiledMeshChecker(ws, robot)._mesh.cell_state == 2).all()  # nothing classified
+    assert_agree(ws, robot, robot.sample(np.random.default_rng(6), 3000))
+
+
+def test_exact_checker_compiles_a_mesh_and_refuses_a_box_world():
+    robot = scenarios.get("3dc7").robot
+    assert type(exact_checker(from_mesh(meshes.room(), **REGION), robot)) is CompiledMeshChecker
+    with pytest.raises(ValueError, match="MeshWorkspace"):
+        CompiledMeshChecker(scenarios.get("3dc7").workspaces("query", 1, 0)[0], robot)
