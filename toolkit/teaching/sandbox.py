@@ -28,6 +28,7 @@ PROCESSES = 256  # processes a sandbox's user may run: a fork bomb stops here
 OPEN_FILES = 1024
 FILE_BYTES = 2**30  # the largest file it may write
 TMP_BYTES = 2 * 2**30  # its private /tmp (memory-backed)
+PRIVATE_TMP = ("--size", str(TMP_BYTES), "--perms", "1777", "--tmpfs", "/tmp")  # bubblewrap: an empty /tmp of its own
 FIRST_UID, UIDS = 61_000, 1_000  # each running sandbox gets its own uid (process limits are per uid)
 LIBRARY = "/grading/lib"  # where the toolkit package appears inside
 _uids = itertools.count()
@@ -90,6 +91,7 @@ def command(inner: list[str], read_only: dict[str, str], writable: dict[str, str
         "--new-session",
         "--clearenv",
         *[arg for key, value in env.items() for arg in ("--setenv", key, value)],
+        *PRIVATE_TMP,  # first: the binds below may lie under /tmp (a clone's venv) and must stay visible
         *_directories([*binds.values(), *writable.values()]),
         *links,
         *mounts,
@@ -97,12 +99,6 @@ def command(inner: list[str], read_only: dict[str, str], writable: dict[str, str
         "/proc",
         "--dev",
         "/dev",
-        "--size",
-        str(TMP_BYTES),
-        "--perms",
-        "1777",
-        "--tmpfs",
-        "/tmp",
         "--chdir",
         "/tmp",
         "--",
