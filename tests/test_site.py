@@ -12,11 +12,8 @@ The fast tests hold the pieces (widgets made static, links resolved) against han
 
 from __future__ import annotations
 
-import functools
 import html
-import http.server
 import re
-import threading
 import time
 from collections.abc import Iterator
 from html.parser import HTMLParser
@@ -364,21 +361,8 @@ def test_sphinx_roles_in_the_api_reference_become_cross_references():
 @pytest.fixture(scope="module")
 def served(site) -> Iterator[str]:
     """The site on a free port of 127.0.0.1, for this module; the port is free again afterwards."""
-    handler = functools.partial(QuietHandler, directory=str(site.out))
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
-    thread = threading.Thread(target=server.serve_forever, daemon=True)
-    thread.start()
-    try:
-        yield f"http://127.0.0.1:{server.server_address[1]}/"
-    finally:
-        server.shutdown()
-        server.server_close()
-        thread.join()
-
-
-class QuietHandler(http.server.SimpleHTTPRequestHandler):
-    def log_message(self, format, *args):
-        pass
+    with accessibility.served(site.out) as url:
+        yield url
 
 
 @pytest.fixture(scope="module")
