@@ -64,3 +64,16 @@ def test_the_handout_holds_the_course_and_no_solution(tmp_path):
         ]
         assert cases and not any(case["hidden"] for case in cases), name
     assert handout.find_secrets(out) == []
+    assert handout.dead_links(out) == []  # the README's links to the instructors' guides keep only their text
+    readme = (out / "README.md").read_text()
+    assert "tutorials/instructors.md" in readme and "](tutorials/instructors.md" not in readme
+    assert "](notebooks/" in readme  # links into what the handout holds stay links
+
+
+def test_dead_links_are_found(tmp_path):
+    (tmp_path / "docs").mkdir()
+    (tmp_path / "here.md").write_text("x")
+    (tmp_path / "docs" / "page.md").write_text(
+        "[ok](../here.md#part) [web](https://example.org) [anchor](#top) [gone](../missing.md) [dir](../docs)"
+    )
+    assert handout.dead_links(tmp_path) == ["docs/page.md -> ../missing.md"]

@@ -7,7 +7,8 @@ that install them, with every master replaced by its student version and no auto
 test or solution in it; the course's own tools (``tools/``: this module, the site builder, the
 notebook runner) and the test suite stay out, since a student needs the library, not what builds
 the course around it, and so do the instructors' guides (``tutorials/instructors*.md``; the course website
-has them). :func:`secret_lines` names the lines a master must not leak (its solutions
+has them): a Markdown link to a file left out keeps its text and loses its target (:func:`dead_links` finds
+any that remain). :func:`secret_lines` names the lines a master must not leak (its solutions
 and hidden tests) and :func:`find_secrets` finds them in any tree of files: the
 handout, or a website built from the notebooks.
 """
@@ -40,6 +41,7 @@ SHIPPED = (  # path prefixes a handout copies; not tools/ (the course's build to
 )
 INSTRUCTORS_ONLY = ("tutorials/instructors",)  # the instructors' guides (instructors.md, instructors_jupyterhub.md)
 MARKERS = ("# BEGIN SOLUTION", "# END SOLUTION", "# BEGIN TESTS", "# END TESTS")  # otter's raw cells that open blocks
+LINK = re.compile(r"\[([^\]]*)\]\(([^)\s]+)\)")  # a Markdown link [text](target) (no title in ours)
 MIN_CHARS = 20  # a secret line is at least this long: shorter ones (`return None`, `continue`) prove nothing
 
 
@@ -179,6 +181,32 @@ def build_handout(out: str | Path) -> Path:
         target = out / grading.master(name).relative_to(ROOT)
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(grading.student_notebook(name), target)
+    for page in out.rglob("*.md"):  # a link into what the handout leaves out would be dead there
+        page.write_text(LINK.sub(functools.partial(_kept_or_text, page), page.read_text()))
     if leaks := find_secrets(out):
         raise RuntimeError(f"the handout in {out} holds solutions or hidden tests:\n" + "\n".join(leaks[:20]))
     return out
+
+
+def _resolves(page: Path, target: str) -> bool:
+    """Whether a link ``target`` on ``page`` reaches something: a web address or anchor, or a file or folder
+    that exists relative to the page."""
+    if re.match(r"[a-z][a-z0-9+.-]*:|#", target):
+        return True
+    return (page.parent / target.split("#")[0]).exists()
+
+
+def _kept_or_text(page: Path, link: re.Match) -> str:
+    """A Markdown link on ``page`` as it was if it resolves, else its text alone."""
+    return link[0] if _resolves(page, link[2]) else link[1]
+
+
+def dead_links(root: Path) -> list[str]:
+    """``"page -> target"`` for every Markdown link under ``root`` whose target does not exist."""
+    root = Path(root)
+    return [
+        f"{page.relative_to(root)} -> {link[2]}"
+        for page in sorted(root.rglob("*.md"))
+        for link in LINK.finditer(page.read_text())
+        if not _resolves(page, link[2])
+    ]
