@@ -76,6 +76,7 @@ def main() -> None:
     parser.add_argument("--cold", action="store_true", help="the site with an empty model cache too")
     args = parser.parse_args()
     work = (args.work or Path(tempfile.mkdtemp(prefix="setup-times-"))).resolve()
+    work.mkdir(parents=True, exist_ok=True)
     known = commands(work, args.cold)
     if unknown := [p for p in args.pieces if p not in known]:
         parser.error(f"unknown piece {', '.join(unknown)}; choose from {', '.join(known)}")
