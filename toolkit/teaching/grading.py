@@ -35,7 +35,7 @@ import textwrap
 from collections.abc import Collection
 from pathlib import Path
 
-from toolkit.teaching import sandbox
+from toolkit.teaching import gradescope, sandbox
 
 ASSIGNMENTS = Path(__file__).resolve().parents[2] / "tutorials" / "assignments"
 TIMEOUT_S = 600  # seconds a submission may run before it is stopped and scored 0
@@ -60,7 +60,8 @@ def _otter(*args: str) -> list[str]:
 
 def build(name: str) -> Path:
     """Run ``otter assign`` on the master (which also checks that its solutions pass every test);
-    return the autograder zip. Replaces ``dist/`` beside the master."""
+    return the autograder zip, which carries the toolkit (:func:`gradescope.ship_toolkit`). Replaces ``dist/``
+    beside the master."""
     source = master(name)
     if "# ASSIGNMENT CONFIG" not in source.read_text():
         raise ValueError(
@@ -74,7 +75,9 @@ def build(name: str) -> Path:
     )
     if done.returncode != 0:
         raise RuntimeError(f"otter assign failed for {name}:\n{done.stdout[-3000:]}\n{done.stderr[-3000:]}")
-    return autograder(name, build_missing=False)
+    zip_path = autograder(name, build_missing=False)
+    gradescope.ship_toolkit(zip_path)
+    return zip_path
 
 
 def build_all() -> dict[str, Path]:
