@@ -75,9 +75,9 @@ def link_frames(q, robot, frame, centers, rotations, n_links):
 
 
 @njit(cache=True, inline="always")
-def link_bounds(half_extents, world, centers, rotations, low, high, cells):
-    """Fill every link's axis-aligned bounds ``low, high (L, 3)`` and the cells they cover, ``cells (L, 2, 3)``
-    (first and last per axis, clipped to the grid); returns whether every link lies inside the region."""
+def region_bounds(half_extents, world, centers, rotations, low, high):
+    """Fill every link's axis-aligned bounds ``low, high (L, 3)``; returns whether every link lies inside the
+    region."""
     inside = True
     for link in range(len(half_extents)):
         for i in range(len(world.lower)):
@@ -86,6 +86,16 @@ def link_bounds(half_extents, world, centers, rotations, low, high, cells):
                 reach += abs(rotations[link, i, j]) * half_extents[link, j]
             low[link, i], high[link, i] = centers[link, i] - reach, centers[link, i] + reach
             inside &= world.lower[i] <= low[link, i] and high[link, i] <= world.upper[i]
+    return inside
+
+
+@njit(cache=True, inline="always")
+def link_bounds(half_extents, world, centers, rotations, low, high, cells):
+    """:func:`region_bounds`, and the cells the bounds cover, ``cells (L, 2, 3)`` (first and last per axis, clipped
+    to the grid)."""
+    inside = region_bounds(half_extents, world, centers, rotations, low, high)
+    for link in range(len(half_extents)):
+        for i in range(len(world.lower)):
             for end, value in enumerate((low[link, i], high[link, i])):
                 cell = int(np.floor((value - world.lower[i]) / world.cell))
                 cells[link, end, i] = min(max(cell, 0), world.shape[i] - 1)
