@@ -122,16 +122,19 @@ class CompiledMeshChecker(BoxWorldChecker):
         )
 
     def _far_bits(self, part_bounds: np.ndarray, radii: np.ndarray) -> np.ndarray:
-        """``(B, W)`` per ball radius ``radii (B,)``, the grid's cells as bits: 1 where the cell lies farther than the
-        radius from every part's bounds ``part_bounds (K, 2, 3)`` (then so does the ball round any point of it: the
-        ball touches no triangle, and its centre lies in no part, so the reference's winding number is 0 there)."""
+        """``(B, W)`` per ball radius ``radii (B,)``, the grid's cells as bits: 1 where the ball round any point of the
+        cell lies in the region and farther than its radius from every part's bounds ``part_bounds (K, 2, 3)``. Then
+        so does the link's box and its axis-aligned bounds (no wider than the ball), the box touches no triangle,
+        and its centre lies in no part (where the reference's winding number is 0)."""
         from toolkit.geometry import mesh_kernels
 
         grid = self._grid
         cap = 2 * float(radii.max())  # nearer cells than this are all the bits need
         clearance = mesh_kernels.part_clearance(part_bounds, grid.lower, grid.cell, grid.shape, cap)  # (C,)
+        corner = grid.lower + grid.cell * np.stack(np.unravel_index(np.arange(len(clearance)), tuple(grid.shape)), -1)
+        wall = np.minimum(corner - grid.lower, grid.upper - (corner + grid.cell)).min(axis=1)  # (C,) to the region's
         margin = 1e-9 * float(np.max(grid.upper - grid.lower))  # above rounding in the cell a centre falls in
-        far = clearance[None] > radii[:, None] + margin  # (B, C)
+        far = np.minimum(clearance, wall)[None] > radii[:, None] + margin  # (B, C)
         far = np.pad(far, ((0, 0), (0, -far.shape[1] % 64)))
         return np.packbits(far, axis=1, bitorder="little").view("<u8")
 

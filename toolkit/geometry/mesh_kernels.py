@@ -31,7 +31,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from toolkit.geometry.kernels import boxes_touch, in_bounds, link_frames, listed_boxes, region_bounds
+from toolkit.geometry.kernels import box_bounds, boxes_touch, in_bounds, link_frames, listed_boxes, region_bounds
 
 OUTSIDE, INSIDE, SURFACE = 0, 1, 2  # a grid cell's state: no triangle crosses it (out, in), or some may
 
@@ -278,8 +278,7 @@ def mesh_validity(Q, robot, parts, world, mesh, valid):
     triangles' bounds (a finer grid); ``mesh``: :class:`toolkit.geometry.compiled_mesh.Mesh`."""
     half, n_links = robot.half_extents, len(robot.half_extents)
     frame, centers, rotations = np.zeros((4, 3)), np.zeros((n_links, 3)), np.zeros((n_links, 3, 3))
-    low, high, scratch = np.zeros((n_links, 3)), np.zeros((n_links, 3)), np.zeros((9, 3))
-    cells = np.zeros((2, 3), np.int64)
+    low, high, scratch, cells = np.zeros(3), np.zeros(3), np.zeros((9, 3)), np.zeros((2, 3), np.int64)
     seen = np.full(len(world.boxes), -1)  # per triangle: the last link that tested it
     seen_part, found_part = np.full(len(parts.boxes), -1), np.zeros(len(parts.boxes), np.int64)
     for n in range(len(Q)):
@@ -287,22 +286,23 @@ def mesh_validity(Q, robot, parts, world, mesh, valid):
         if not in_bounds(Q[n], robot.lower, robot.upper):
             continue
         link_frames(Q[n], robot, frame, centers, rotations, n_links)
-        if not region_bounds(half, world, centers, rotations, low, high):
-            continue
         valid[n] = True
         for link in range(n_links):
             tag = n * n_links + link
             c, R, h = centers[link], rotations[link], half[link]
             if _far(c, mesh.far[mesh.link_ball[link]], world):
-                continue  # its ball, wherever in its cell, meets no part's bounds
-            _covered_cells(low[link], high[link], parts, cells)
-            if not _near_a_part(c, R, h, low[link], high[link], cells, parts, seen_part, tag, found_part):
+                continue  # its ball, wherever in its cell, lies in the region and meets no part's bounds
+            if not box_bounds(c, R, h, world, low, high):  # out of the region
+                valid[n] = False
+                break
+            _covered_cells(low, high, parts, cells)
+            if not _near_a_part(c, R, h, low, high, cells, parts, seen_part, tag, found_part):
                 continue  # no triangle lies there, nor any inside
-            _covered_cells(low[link], high[link], world, cells)
+            _covered_cells(low, high, world, cells)
             state = _known_state(c, R, h, mesh, world, scratch[6])  # INSIDE: some point of the link is
             if (
                 state == INSIDE
-                or _touches_a_triangle(c, R, h, low[link], high[link], cells, world, mesh, seen, tag, scratch)
+                or _touches_a_triangle(c, R, h, low, high, cells, world, mesh, seen, tag, scratch)
                 or (state == SURFACE and _winding_inside(c, mesh))  # it touches none: wholly inside or outside
             ):
                 valid[n] = False
