@@ -2,9 +2,16 @@
 
 A link box is in collision with a closed mesh when it touches a triangle or lies wholly inside
 the solid. The loop of :func:`mesh_validity` takes each configuration through the box chain's
-kinematics and bounds (the steps of :mod:`toolkit.geometry.kernels`), then, per link whose box
-touches the bounds of one of the mesh's parts (the separating-axis test of boxes; a link that
-touches none touches no triangle and lies in no part):
+kinematics (the steps of :mod:`toolkit.geometry.kernels`), then, link by link, stopping at the first
+in collision:
+
+- one look-up: the bit of the grid cell that holds the link's centre, for the link's ball (centred there,
+  through its corners; :class:`toolkit.geometry.compiled_mesh.CompiledMeshChecker` sets the bits once). A 1
+  says the ball lies in the region and misses the bounds of every part of the mesh, and so does the box:
+  most links are done;
+- else the link's bounds must lie in the region, and its box must touch the bounds of one of the mesh's
+  parts (the separating-axis test of boxes; a link that touches none touches no triangle and lies in no
+  part); then
 
 0. if one of 27 of its points (centre, faces' and edges' middles, corners) lies in a grid cell that
    no triangle crosses and that lies inside the solid (cells classified once,
@@ -164,8 +171,9 @@ def _cell_state(point, mesh, world):
 
 @njit(cache=True, inline="always")
 def _far(center, bits, world):
-    """Whether a link whose ball (centred at ``center (3,)``) misses every part's bounds from anywhere in its cell of
-    ``world``: ``bits (W,)``, one bit a cell (:class:`toolkit.geometry.compiled_mesh.Mesh`'s ``far``)."""
+    """Whether the ball of a link centred at ``center (3,)`` lies in the region and misses every part's bounds
+    wherever in its cell of ``world`` the centre lies: ``bits (W,)``, one a cell, that ball's row of
+    :class:`toolkit.geometry.compiled_mesh.Mesh`'s ``far``."""
     flat = _flat_cell(center, world)
     return (bits[flat >> 6] >> (flat & 63)) & 1
 
@@ -273,9 +281,10 @@ def base_link_inside(Q, robot, world, inside):
 @njit(cache=True)
 def mesh_validity(Q, robot, parts, world, mesh, valid):
     """Fill ``valid (N,)`` for configurations ``Q (N, dof)``: the steps in the module's docstring, a link tested only
-    where its bounds meet a part's bounds. ``robot``: :class:`toolkit.geometry.compiled.Robot`; ``parts``: a
-    :class:`~toolkit.geometry.compiled.World` of the parts' bounds (a box world's coarse grid), ``world`` one of the
-    triangles' bounds (a finer grid); ``mesh``: :class:`toolkit.geometry.compiled_mesh.Mesh`."""
+    where its cell's far bit is 0 and its box meets a part's bounds. ``robot``:
+    :class:`toolkit.geometry.compiled.Robot`; ``parts``: a :class:`~toolkit.geometry.compiled.World` of the parts'
+    bounds (a box world's coarse grid), ``world`` one of the triangles' bounds (a finer grid, whose cells the far
+    bits follow); ``mesh``: :class:`toolkit.geometry.compiled_mesh.Mesh`."""
     half, n_links = robot.half_extents, len(robot.half_extents)
     frame, centers, rotations = np.zeros((4, 3)), np.zeros((n_links, 3)), np.zeros((n_links, 3, 3))
     low, high, scratch, cells = np.zeros(3), np.zeros(3), np.zeros((9, 3)), np.zeros((2, 3), np.int64)
