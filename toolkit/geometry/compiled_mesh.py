@@ -130,12 +130,15 @@ class CompiledMeshChecker(BoxWorldChecker):
         from toolkit.geometry import mesh_kernels
 
         grid = self._grid
-        cap = 2 * float(radii.max())  # nearer cells than this are all the bits need
-        clearance = mesh_kernels.part_clearance(part_bounds, grid.lower, grid.cell, grid.shape, cap)  # (C,)
-        corner = grid.lower + grid.cell * np.stack(np.unravel_index(np.arange(len(clearance)), tuple(grid.shape)), -1)
-        wall = np.minimum(corner - grid.lower, grid.upper - (corner + grid.cell)).min(axis=1)  # (C,) to the region's
         margin = 1e-9 * float(np.max(grid.upper - grid.lower))  # above rounding in the cell a centre falls in
-        far = np.minimum(clearance, wall)[None] > radii[:, None] + margin  # (B, C)
+        cap = float(radii.max()) + grid.cell  # nearer cells than this are all the bits need
+        clearance = mesh_kernels.part_clearance(part_bounds, grid.lower, grid.cell, grid.shape, cap)  # (C,)
+        x, y, z = (  # per axis, each layer of cells' distance to the region's walls
+            np.minimum(i * grid.cell, grid.upper[a] - grid.lower[a] - (i + 1) * grid.cell)
+            for a, i in enumerate(np.arange(n) for n in grid.shape)
+        )
+        walls = np.minimum.outer(np.minimum.outer(x, y), z).reshape(-1)  # (C,)
+        far = np.minimum(clearance, walls)[None] > radii[:, None] + margin  # (B, C)
         far = np.pad(far, ((0, 0), (0, -far.shape[1] % 64)))
         return np.packbits(far, axis=1, bitorder="little").view("<u8")
 
