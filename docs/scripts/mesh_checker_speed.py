@@ -4,8 +4,9 @@
 
 The demo room (``toolkit.geometry.meshes.room``, 288 triangles, as ``tutorials/data/room.stl``)
 subdivided ``S`` (3) times (18,432 triangles), each scenario's robot (default 3dc7 3dc9 3do), ``N``
-(20,000) uniform configurations, then ``T`` (5) turns, each timing ``CompiledMeshChecker`` (the
-default, ``exact_checker``), ``MeshChecker`` (python-fcl's BVH and numpy winding numbers, the
+(20,000) uniform configurations, then ``T`` (15: a compiled turn lasts milliseconds, and a busy
+machine slows some of them) turns, each timing ``CompiledMeshChecker`` (the default, ``exact_checker``),
+``MeshChecker`` (python-fcl's BVH and numpy winding numbers, the
 reference) and the compiled box checker on the same furniture given as boxes, on the same batch.
 Prints one JSON line per scenario: median configurations per second of each, the speed-up over the
 reference, disagreements (must be 0; the box checker's too), the share valid, and the compiled mesh
@@ -30,7 +31,7 @@ def main() -> None:
     parser.add_argument("scenarios", nargs="*", default=["3dc7", "3dc9", "3do"])
     parser.add_argument("--subdivisions", type=int, default=3)
     parser.add_argument("--configs", type=int, default=20_000)
-    parser.add_argument("--turns", type=int, default=5)
+    parser.add_argument("--turns", type=int, default=15)
     args = parser.parse_args()
     mesh = meshes.room()
     for _ in range(args.subdivisions):
