@@ -75,27 +75,9 @@ def link_frames(q, robot, frame, centers, rotations, n_links):
 
 
 @njit(cache=True, inline="always")
-def box_bounds(half_extents, world, centers, rotations, low, high, link):
-    """Fill the axis-aligned bounds ``low[link], high[link] (D,)`` of link ``link`` (of ``centers (L, 3)``,
-    ``rotations (L, 3, 3)``, ``half_extents (L, 3)``); returns whether they lie inside the region."""
-    inside = True
-    for i in range(len(world.lower)):
-        reach = 0.0
-        for j in range(len(world.lower)):
-            reach += abs(rotations[link, i, j]) * half_extents[link, j]
-        low[link, i], high[link, i] = centers[link, i] - reach, centers[link, i] + reach
-        inside &= world.lower[i] <= low[link, i] and high[link, i] <= world.upper[i]
-    return inside
-
-
-@njit(cache=True, inline="always")
 def link_bounds(half_extents, world, centers, rotations, low, high, cells):
     """Fill every link's axis-aligned bounds ``low, high (L, 3)`` and the cells they cover, ``cells (L, 2, 3)``
-    (first and last per axis, clipped to the grid); returns whether every link lies inside the region.
-
-    :func:`box_bounds` for every link, written out: calling it here made the compiled box checker about 20 %
-    slower (issue 36; the two versions timed in alternation).
-    """
+    (first and last per axis, clipped to the grid); returns whether every link lies inside the region."""
     inside = True
     for link in range(len(half_extents)):
         for i in range(len(world.lower)):

@@ -38,7 +38,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from toolkit.geometry.kernels import box_bounds, boxes_touch, in_bounds, link_frames, listed_boxes
+from toolkit.geometry.kernels import boxes_touch, in_bounds, link_bounds, link_frames, listed_boxes
 
 OUTSIDE, INSIDE, SURFACE = 0, 1, 2  # a grid cell's state: no triangle crosses it (out, in), or some may
 
@@ -270,12 +270,12 @@ def _touches_a_triangle(center, R, half, low, high, cells, world, mesh, seen, ta
 @njit(cache=True)
 def base_link_inside(Q, robot, world, inside):
     """Fill ``inside (N,)``: whether the base link of each configuration of ``Q (N, dof)`` lies inside ``world``'s
-    region (:func:`toolkit.geometry.kernels.box_bounds` of that link alone); false, the configuration is invalid."""
+    region (:func:`toolkit.geometry.kernels.link_bounds` of that link alone); false, the configuration is invalid."""
     frame, centers, rotations = np.zeros((4, 3)), np.zeros((1, 3)), np.zeros((1, 3, 3))
-    low, high = np.zeros((1, 3)), np.zeros((1, 3))
+    low, high, cells = np.zeros((1, 3)), np.zeros((1, 3)), np.zeros((1, 2, 3), np.int64)
     for n in range(len(Q)):
         link_frames(Q[n], robot, frame, centers, rotations, 1)
-        inside[n] = box_bounds(robot.half_extents, world, centers, rotations, low, high, 0)
+        inside[n] = link_bounds(robot.half_extents[:1], world, centers, rotations, low, high, cells)
 
 
 @njit(cache=True)
@@ -287,8 +287,8 @@ def mesh_validity(Q, robot, parts, world, mesh, valid):
     bits follow); ``mesh``: :class:`toolkit.geometry.compiled_mesh.Mesh`."""
     half, n_links = robot.half_extents, len(robot.half_extents)
     frame, centers, rotations = np.zeros((4, 3)), np.zeros((n_links, 3)), np.zeros((n_links, 3, 3))
-    low, high, scratch = np.zeros((n_links, 3)), np.zeros((n_links, 3)), np.zeros((9, 3))
-    cells = np.zeros((2, 3), np.int64)
+    low, high, scratch = np.zeros((1, 3)), np.zeros((1, 3)), np.zeros((9, 3))  # low, high: one link's bounds
+    part_cells, cells = np.zeros((1, 2, 3), np.int64), np.zeros((2, 3), np.int64)
     seen = np.full(len(world.boxes), -1)  # per triangle: the last link that tested it
     seen_part, found_part = np.full(len(parts.boxes), -1), np.zeros(len(parts.boxes), np.int64)
     for n in range(len(Q)):
@@ -302,12 +302,12 @@ def mesh_validity(Q, robot, parts, world, mesh, valid):
             c, R, h = centers[link], rotations[link], half[link]
             if _far(c, mesh.far[mesh.link_ball[link]], world):
                 continue  # its ball, wherever in its cell, lies in the region and meets no part's bounds
-            if not box_bounds(half, world, centers, rotations, low, high, link):  # out of the region
-                valid[n] = False
+            one = slice(link, link + 1)
+            if not link_bounds(half[one], parts, centers[one], rotations[one], low, high, part_cells):
+                valid[n] = False  # out of the region
                 break
-            lo, hi = low[link], high[link]
-            _covered_cells(lo, hi, parts, cells)
-            if not _near_a_part(c, R, h, lo, hi, cells, parts, seen_part, tag, found_part):
+            lo, hi = low[0], high[0]
+            if not _near_a_part(c, R, h, lo, hi, part_cells[0], parts, seen_part, tag, found_part):
                 continue  # no triangle lies there, nor any inside
             _covered_cells(lo, hi, world, cells)
             state = _known_state(c, R, h, mesh, world, scratch[6])  # INSIDE: some point of the link is
