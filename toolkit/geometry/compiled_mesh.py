@@ -40,7 +40,9 @@ class Mesh(NamedTuple):
 
     triangles: np.ndarray  # (T, 3, 3) corners in rows
     cell_state: np.ndarray  # (C,) int8: OUTSIDE, INSIDE or SURFACE (mesh_kernels)
-    far: np.ndarray  # (B, W) uint64: per ball size, bit c % 64 of word c // 64: a ball centred in cell c meets no part
+    # (B, W) uint64, per ball size: bit c % 64 of word c // 64 says a ball centred in cell c lies in the region and
+    # meets no part's bounds
+    far: np.ndarray
     link_ball: np.ndarray  # (L,) each link's ball size: its row of far
     part_bounds: np.ndarray  # (K, 2, 3) min / max corners of each connected part
     part_first: np.ndarray  # (K,) part k's faces are part_faces[part_first[k]:part_first[k] + part_count[k]]
