@@ -50,6 +50,27 @@ def test_compiled_mesh_checker_equals_the_reference_near_contact(room, name):
         assert not assert_agree(room, robot, outside).any()
 
 
+def test_a_far_bit_says_the_ball_round_a_link_lies_in_the_region_and_misses_every_part(room):
+    robot = scenarios.get("3dc9").robot
+    checker = CompiledMeshChecker(room, robot)
+    grid, mesh = checker._grid, checker._mesh
+    points = np.random.default_rng(7).uniform(grid.lower, grid.upper, (20_000, 3))  # (N, 3) link centres
+    cells = np.clip(np.floor((points - grid.lower) / grid.cell).astype(np.int64), 0, grid.shape - 1)  # (N, 3)
+    flat = np.ravel_multi_index(tuple(cells.T), tuple(grid.shape))  # (N,)
+    lo, hi = room.solid.bounds[:, 0], room.solid.bounds[:, 1]  # (K, 3) the parts' bounds
+    gaps = np.maximum(np.maximum(lo - points[:, None], points[:, None] - hi), 0.0)  # (N, K, 3)
+    walls = np.minimum(points - grid.lower, grid.upper - points).min(axis=1)  # (N,)
+    clearance = np.minimum(np.linalg.norm(gaps, axis=-1).min(axis=1), walls)  # (N,)
+    assert len(np.unique(mesh.link_ball)) == 2  # 3DC-9's links: two sizes
+    for link, half in enumerate(robot.half_extents):
+        radius = np.linalg.norm(half)
+        word = mesh.far[mesh.link_ball[link]][flat >> 6]
+        far = ((word >> (flat & 63).astype(np.uint64)) & np.uint64(1)).astype(bool)  # (N,)
+        assert (clearance[far] > radius).all()  # safe: the ball misses every part and every wall
+        assert far[clearance > radius + np.sqrt(3) * grid.cell].all()  # and loses at most a cell's diagonal
+        assert 0.5 < far.mean() < 0.99
+
+
 def test_links_wholly_inside_a_sphere_collide_and_cells_are_classified_once():
     scenario = scenarios.get("3dc9")
     ws = crossover.sphere(scenario.workspaces("query", 1, 0)[0], 3)  # 1,280 triangles, radius 3.3

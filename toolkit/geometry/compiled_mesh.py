@@ -8,6 +8,11 @@ mesh into the arrays that loop reads:
 
 - a grid over the region whose cells list the triangles that touch them (the broadphase: a link tests
   only the triangles listed where its box lies);
+- per cell and link, one bit: whether the link's ball (centred at the link's centre, through its corners) lies
+  in the region and misses the bounds of every part of the mesh wherever in the cell its centre lies. Most links
+  in most configurations are done with that one look-up; one bit a cell keeps the grid in the processor's cache
+  (a link's 1.5 million cells in 185 kB, on the tutorials' room subdivided three times), where a distance a cell
+  would not;
 - each cell's state: a cell no triangle touches lies wholly inside or wholly outside a closed mesh, and so
   does every cell joined to it through such cells, so one winding number per connected region of them classifies
   them all, once; a link with a point in such a cell needs no winding number. An open (or inconsistently
@@ -34,7 +39,11 @@ class Mesh(NamedTuple):
     """A mesh as :func:`toolkit.geometry.mesh_kernels.mesh_validity` reads it."""
 
     triangles: np.ndarray  # (T, 3, 3) corners in rows
-    cell_state: np.ndarray  # (C,) OUTSIDE, INSIDE or SURFACE (mesh_kernels)
+    cell_state: np.ndarray  # (C,) int8: OUTSIDE, INSIDE or SURFACE (mesh_kernels)
+    # (B, W) uint64, per ball size: bit c % 64 of word c // 64 says a ball centred in cell c lies in the region and
+    # meets no part's bounds
+    far: np.ndarray
+    link_ball: np.ndarray  # (L,) each link's ball size: its row of far
     part_bounds: np.ndarray  # (K, 2, 3) min / max corners of each connected part
     part_first: np.ndarray  # (K,) part k's faces are part_faces[part_first[k]:part_first[k] + part_count[k]]
     part_count: np.ndarray  # (K,)
@@ -60,10 +69,14 @@ class CompiledMeshChecker(BoxWorldChecker):
         state = self._cell_states(solid, closed=bool(mesh.is_watertight and mesh.is_winding_consistent))
         parts = solid.parts or [np.zeros(0, dtype=np.int64)]
         count = np.array([len(p) for p in parts], dtype=np.int64)
+        part_bounds = np.ascontiguousarray(solid.bounds.reshape(-1, 2, 3), dtype=np.float64)  # (K, 2, 3)
+        radii, link_ball = np.unique(np.linalg.norm(robot.half_extents, axis=1), return_inverse=True)  # (B,), (L,)
         self._mesh = Mesh(
             np.ascontiguousarray(solid.triangles, dtype=np.float64),
             state,
-            np.ascontiguousarray(solid.bounds.reshape(-1, 2, 3), dtype=np.float64),
+            self._far_bits(part_bounds, radii),
+            link_ball.astype(np.int64),
+            part_bounds,
             np.cumsum(count) - count,
             count,
             np.concatenate(parts).astype(np.int64),
@@ -111,6 +124,26 @@ class CompiledMeshChecker(BoxWorldChecker):
             members.astype(np.int32),
         )
 
+    def _far_bits(self, part_bounds: np.ndarray, radii: np.ndarray) -> np.ndarray:
+        """``(B, W)`` per ball radius ``radii (B,)``, the grid's cells as bits: 1 where the ball round any point of the
+        cell lies in the region and farther than its radius from every part's bounds ``part_bounds (K, 2, 3)``. Then
+        so does the link's box and its axis-aligned bounds (no wider than the ball), the box touches no triangle,
+        and its centre lies in no part (where the reference's winding number is 0)."""
+        from toolkit.geometry import mesh_kernels
+
+        grid = self._grid
+        margin = 1e-9 * float(np.max(grid.upper - grid.lower))  # above rounding in the cell a centre falls in
+        cap = float(radii.max()) + grid.cell  # nearer cells than this are all the bits need
+        clearance = mesh_kernels.part_clearance(part_bounds, grid.lower, grid.cell, grid.shape, cap)  # (C,)
+        x, y, z = (  # per axis, each layer of cells' distance to the region's walls
+            np.minimum(i * grid.cell, grid.upper[a] - grid.lower[a] - (i + 1) * grid.cell)
+            for a, i in enumerate(np.arange(n) for n in grid.shape)
+        )
+        walls = np.minimum.outer(np.minimum.outer(x, y), z).reshape(-1)  # (C,)
+        far = np.minimum(clearance, walls)[None] > radii[:, None] + margin  # (B, C)
+        far = np.pad(far, ((0, 0), (0, -far.shape[1] % 64)))
+        return np.packbits(far, axis=1, bitorder="little").view("<u8")
+
     def _cell_states(self, solid, *, closed: bool) -> np.ndarray:
         """``(C,)`` each cell's state; cells no triangle touches, by connected region, from one winding number each;
         none unless the mesh is ``closed`` (every edge joins two faces, consistently oriented), where the winding
@@ -118,7 +151,7 @@ class CompiledMeshChecker(BoxWorldChecker):
         from toolkit.geometry.mesh_kernels import INSIDE, OUTSIDE, SURFACE
 
         grid = self._grid
-        state = np.full(len(grid.cell_count), SURFACE, dtype=np.int64)
+        state = np.full(len(grid.cell_count), SURFACE, dtype=np.int8)  # int8: the grid stays in cache
         if not closed:
             return state
         regions, n_regions = ndimage.label((grid.cell_count == 0).reshape(tuple(grid.shape)))

@@ -2,9 +2,16 @@
 
 A link box is in collision with a closed mesh when it touches a triangle or lies wholly inside
 the solid. The loop of :func:`mesh_validity` takes each configuration through the box chain's
-kinematics and bounds (the steps of :mod:`toolkit.geometry.kernels`), then, per link whose box
-touches the bounds of one of the mesh's parts (the separating-axis test of boxes; a link that
-touches none touches no triangle and lies in no part):
+kinematics (the steps of :mod:`toolkit.geometry.kernels`), then, link by link, stopping at the first
+in collision:
+
+- one look-up: the bit of the grid cell that holds the link's centre, for the link's ball (centred there,
+  through its corners; :class:`toolkit.geometry.compiled_mesh.CompiledMeshChecker` sets the bits once). A 1
+  says the ball lies in the region and misses the bounds of every part of the mesh, and so does the box:
+  most links are done;
+- else the link's bounds must lie in the region, and its box must touch the bounds of one of the mesh's
+  parts (the separating-axis test of boxes; a link that touches none touches no triangle and lies in no
+  part); then
 
 0. if one of 27 of its points (centre, faces' and edges' middles, corners) lies in a grid cell that
    no triangle crosses and that lies inside the solid (cells classified once,
@@ -124,14 +131,51 @@ def winding_number(point, triangles, faces):
     return total / (4 * np.pi)
 
 
+@njit(cache=True)
+def part_clearance(bounds, lower, cell, shape, cap):
+    """``(C,)`` per cell of a grid (``lower (3,)``, cubes of side ``cell``, ``shape (3,)``), the distance from the cell
+    to the nearest of the boxes ``bounds (K, 2, 3)`` (min / max corners), or ``cap`` where none lies nearer."""
+    clearance = np.full(shape[0] * shape[1] * shape[2], cap)
+    block = np.zeros((2, 3), np.int64)
+    for k in range(len(bounds)):
+        for i in range(3):  # the cells within cap of box k
+            for end, value in enumerate((bounds[k, 0, i] - cap, bounds[k, 1, i] + cap)):
+                block[end, i] = min(max(int(np.floor((value - lower[i]) / cell)), 0), shape[i] - 1)
+        for a in range(block[0, 0], block[1, 0] + 1):
+            for b in range(block[0, 1], block[1, 1] + 1):
+                for c in range(block[0, 2], block[1, 2] + 1):
+                    gap = 0.0
+                    for i, index in enumerate((a, b, c)):
+                        start = lower[i] + index * cell
+                        gap += max(bounds[k, 0, i] - (start + cell), start - bounds[k, 1, i], 0.0) ** 2
+                    flat = (a * shape[1] + b) * shape[2] + c
+                    clearance[flat] = min(clearance[flat], np.sqrt(gap))
+    return clearance
+
+
 @njit(cache=True, inline="always")
-def _cell_state(point, mesh, world):
-    """The state of the grid cell holding ``point (3,)`` (clipped to the grid)."""
+def _flat_cell(point, world):
+    """The index of the grid cell of ``world`` that holds ``point (3,)`` (clipped to the grid)."""
     flat = 0
     for i in range(3):
         cell = min(max(int(np.floor((point[i] - world.lower[i]) / world.cell)), 0), world.shape[i] - 1)
         flat = flat * world.shape[i] + cell
-    return mesh.cell_state[flat]
+    return flat
+
+
+@njit(cache=True, inline="always")
+def _cell_state(point, mesh, world):
+    """The state of the grid cell holding ``point (3,)`` (clipped to the grid)."""
+    return mesh.cell_state[_flat_cell(point, world)]
+
+
+@njit(cache=True, inline="always")
+def _far(center, bits, world):
+    """Whether the ball of a link centred at ``center (3,)`` lies in the region and misses every part's bounds
+    wherever in its cell of ``world`` the centre lies: ``bits (W,)``, one a cell, that ball's row of
+    :class:`toolkit.geometry.compiled_mesh.Mesh`'s ``far``."""
+    flat = _flat_cell(center, world)
+    return (bits[flat >> 6] >> (flat & 63)) & 1
 
 
 @njit(cache=True, inline="always")
@@ -237,13 +281,14 @@ def base_link_inside(Q, robot, world, inside):
 @njit(cache=True)
 def mesh_validity(Q, robot, parts, world, mesh, valid):
     """Fill ``valid (N,)`` for configurations ``Q (N, dof)``: the steps in the module's docstring, a link tested only
-    where its bounds meet a part's bounds. ``robot``: :class:`toolkit.geometry.compiled.Robot`; ``parts``: a
-    :class:`~toolkit.geometry.compiled.World` of the parts' bounds (a box world's coarse grid), ``world`` one of the
-    triangles' bounds (a finer grid); ``mesh``: :class:`toolkit.geometry.compiled_mesh.Mesh`."""
+    where its cell's far bit is 0 and its box meets a part's bounds. ``robot``:
+    :class:`toolkit.geometry.compiled.Robot`; ``parts``: a :class:`~toolkit.geometry.compiled.World` of the parts'
+    bounds (a box world's coarse grid), ``world`` one of the triangles' bounds (a finer grid, whose cells the far
+    bits follow); ``mesh``: :class:`toolkit.geometry.compiled_mesh.Mesh`."""
     half, n_links = robot.half_extents, len(robot.half_extents)
     frame, centers, rotations = np.zeros((4, 3)), np.zeros((n_links, 3)), np.zeros((n_links, 3, 3))
-    low, high, scratch = np.zeros((n_links, 3)), np.zeros((n_links, 3)), np.zeros((9, 3))
-    part_cells, cells = np.zeros((n_links, 2, 3), np.int64), np.zeros((2, 3), np.int64)
+    low, high, scratch = np.zeros((1, 3)), np.zeros((1, 3)), np.zeros((9, 3))  # low, high: one link's bounds
+    part_cells, cells = np.zeros((1, 2, 3), np.int64), np.zeros((2, 3), np.int64)
     seen = np.full(len(world.boxes), -1)  # per triangle: the last link that tested it
     seen_part, found_part = np.full(len(parts.boxes), -1), np.zeros(len(parts.boxes), np.int64)
     for n in range(len(Q)):
@@ -251,19 +296,24 @@ def mesh_validity(Q, robot, parts, world, mesh, valid):
         if not in_bounds(Q[n], robot.lower, robot.upper):
             continue
         link_frames(Q[n], robot, frame, centers, rotations, n_links)
-        if not link_bounds(half, parts, centers, rotations, low, high, part_cells):
-            continue
         valid[n] = True
         for link in range(n_links):
             tag = n * n_links + link
             c, R, h = centers[link], rotations[link], half[link]
-            if not _near_a_part(c, R, h, low[link], high[link], part_cells[link], parts, seen_part, tag, found_part):
+            if _far(c, mesh.far[mesh.link_ball[link]], world):
+                continue  # its ball, wherever in its cell, lies in the region and meets no part's bounds
+            one = slice(link, link + 1)
+            if not link_bounds(half[one], parts, centers[one], rotations[one], low, high, part_cells):
+                valid[n] = False  # out of the region
+                break
+            lo, hi = low[0], high[0]
+            if not _near_a_part(c, R, h, lo, hi, part_cells[0], parts, seen_part, tag, found_part):
                 continue  # no triangle lies there, nor any inside
-            _covered_cells(low[link], high[link], world, cells)
+            _covered_cells(lo, hi, world, cells)
             state = _known_state(c, R, h, mesh, world, scratch[6])  # INSIDE: some point of the link is
             if (
                 state == INSIDE
-                or _touches_a_triangle(c, R, h, low[link], high[link], cells, world, mesh, seen, tag, scratch)
+                or _touches_a_triangle(c, R, h, lo, hi, cells, world, mesh, seen, tag, scratch)
                 or (state == SURFACE and _winding_inside(c, mesh))  # it touches none: wholly inside or outside
             ):
                 valid[n] = False
