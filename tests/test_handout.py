@@ -44,7 +44,7 @@ def test_a_leaked_solution_or_hidden_test_is_found_in_notebooks_html_and_zips(tm
 def test_the_handout_holds_the_course_and_no_solution(tmp_path):
     out = handout.build_handout(tmp_path / "handout")
     files = {str(p.relative_to(out)) for p in out.rglob("*") if p.is_file()}
-    for needed in ("README.md", "pyproject.toml", "constraints.txt", "Makefile", "toolkit/__init__.py"):
+    for needed in ("README.md", "LICENSE", "pyproject.toml", "constraints.txt", "Makefile", "toolkit/__init__.py"):
         assert needed in files, needed
     assert {"binder/requirements.txt", "binder/start"} <= files  # Binder for the published handout
     assert (handout.ROOT / "tutorials" / "instructors_jupyterhub.md").is_file()

@@ -34,6 +34,7 @@ SHIPPED = (  # path prefixes a handout copies; not tools/ (the course's build to
     "tutorials/",
     "docs/",
     "README.md",
+    "LICENSE",
     "pyproject.toml",
     "constraints.txt",
     "Makefile",

@@ -34,7 +34,7 @@ def build_wheel(out: Path) -> Path:
     """A wheel of the toolkit alone (no dependencies) built from a copy of this working tree, written into ``out``
     (a copy: setuptools would leave a ``build/`` folder in the tree, and stale modules in later wheels)."""
     with tempfile.TemporaryDirectory() as tree:
-        for name in ("pyproject.toml", "README.md"):
+        for name in ("pyproject.toml", "README.md", "LICENSE"):
             shutil.copy(ROOT / name, tree)
         shutil.copytree(ROOT / "toolkit", Path(tree, "toolkit"), ignore=shutil.ignore_patterns("__pycache__"))
         wheel = [sys.executable, "-m", "pip", "wheel", "--no-deps", "--quiet", "--wheel-dir", str(out), tree]
