@@ -875,11 +875,11 @@ def test_run_queries_summary_with_a_checker_factory():
             records, summary = run_queries(scenario, queries, "G", checker_factory=factory)
             # queries are timed on one torch and one BLAS thread, like the exact checker ...
             assert blas_before and blas_before != [1] * len(blas_before)
-            assert threads == [(1, [1] * len(blas_before))] * 2
+            assert threads == [(1, [1] * len(blas_before))] * 3  # the untimed warm-up's, then one a workspace
             assert torch.get_num_threads() == 2 and _blas_threads() == blas_before  # ... and the caller's come back
     finally:
         torch.set_num_threads(before)
-    assert len(built) == 2 and len(records) == 6
+    assert len(built) == 3 and built[0] is built[1] and len(records) == 6  # warm-up, then once a workspace
     assert summary["success_rate"] == 1.0 and summary["path_valid_rate"] == 1.0
     assert summary["predicted_checks"] > 0 and summary["sampling_s"] <= summary["total_s"]
     assert summary["total_s_std"] >= 0 and summary["n_queries"] == 6
@@ -908,7 +908,8 @@ def test_run_interleaved_takes_turns_and_answers_as_separate_runs(monkeypatch):
 
     monkeypatch.setattr(queries_module, "solve_query", recording)
     runs = queries_module.run_interleaved(scenario, queries, "OB", {"without": None, "with": factory})
-    assert order == ["without", "with", "with", "without"] * 2  # who goes first rotates
+    # an untimed warm-up solve per mode, then the timed queries, who goes first rotating
+    assert order == ["without", "with"] + ["without", "with", "with", "without"] * 2
     for mode, (records, summary) in runs.items():
         keys = ("nodes", "edges", "rounds", "exact_checks", "predicted_checks", "success")
         assert [[r[k] for k in keys] for r in records] == [[r[k] for k in keys] for r in separate[mode][0]]

@@ -146,11 +146,17 @@ def timed_solve(planner: Planner, query: Query, n: int, *, robot: BoxRobot, reso
 
 def race(scenario: Scenario, query_set: list[Query], racing: dict[str, Planner]) -> dict[str, list[dict]]:
     """Per planner, its :func:`timed_solve` of every query; the planners in turns query by query, the first of
-    query ``n`` the ``n``-th (mod their count), on one thread (``queries.one_thread``)."""
+    query ``n`` the ``n``-th (mod their count), on one thread (``queries.one_thread``).
+
+    Each planner first solves the first query once, untimed, so that no timing includes a compiled
+    kernel's first call (numba compiling or loading it: seconds) or torch's set-up.
+    """
     resolution = scenario.plan_resolution or default_resolution(scenario.robot)
     solves: dict[str, list[dict]] = {name: [] for name in racing}
     names = list(racing)
     with queries.one_thread():
+        for name in names if query_set else []:  # the untimed warm-up
+            timed_solve(racing[name], query_set[0], 0, robot=scenario.robot, resolution=resolution)
         for n, query in enumerate(query_set):
             for name in names[n % len(names) :] + names[: n % len(names)]:
                 solves[name].append(timed_solve(racing[name], query, n, robot=scenario.robot, resolution=resolution))
