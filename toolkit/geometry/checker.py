@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from toolkit.geometry.device import checked_tensor, is_tensor
 from toolkit.geometry.robots import BoxRobot
 
 
@@ -36,8 +37,13 @@ class CollisionChecker:
         self.n_checked = 0  # configurations asked about since construction or reset_count()
         self.n_bounded = 0  # configurations whose clearance was bounded, likewise
 
-    def are_valid(self, Q) -> np.ndarray:
-        """``(N,)`` bool: whether each configuration of ``Q (N, dof)`` is valid."""
+    def are_valid(self, Q):
+        """``(N,)`` bool: whether each configuration of ``Q (N, dof)`` is valid; a numpy array for a numpy array,
+        a tensor on ``Q``'s device for a torch tensor (:mod:`toolkit.geometry.device`)."""
+        if is_tensor(Q):
+            Q = checked_tensor(self.robot, Q)
+            self.n_checked += len(Q)
+            return self.validity_tensor(Q)
         Q = self.robot.check_configs(Q)
         self.n_checked += len(Q)
         return self.validity(Q)
@@ -68,6 +74,13 @@ class CollisionChecker:
     def clearance_bounds(self, Q: np.ndarray, cap: float) -> np.ndarray:
         """``(N,)`` clearance lower bounds of a checked batch; knowing no geometry, 0 (box-world checkers know more)."""
         return np.zeros(len(Q))
+
+    def validity_tensor(self, Q):
+        """``(N,)`` bool tensor on ``Q``'s device for a checked tensor ``Q (N, dof)``; here a round trip through
+        :meth:`validity` on the host, which a checker that computes on a device overrides."""
+        import torch
+
+        return torch.as_tensor(self.validity(self.robot.check_configs(Q.detach().cpu().numpy())), device=Q.device)
 
     def validity(self, Q: np.ndarray) -> np.ndarray:
         """``(N,)`` bool for a checked batch ``Q (N, dof)``: what a subclass decides (:meth:`are_valid` counts it)."""
