@@ -28,6 +28,10 @@ the network's own numbers (a test holds it equal to the full forward pass of
    every call goes to torch.
 5. **Read once.** The PReLU slopes become Python floats and the weights contiguous
    copies (numpy views of the same memory); dropout is off, as in ``eval()``.
+6. **Replayed on a GPU.** A GPU call of a few hundred configurations costs a kernel
+   launch per operation, far more than its arithmetic. :class:`Replay` records the
+   operations once for a fixed batch (a CUDA graph) and launches them as one
+   (``docs/gpu.md``); elsewhere it calls the same function on the same fixed batch.
 
 ``docs/benchmarks.md`` ("The learned checker's fast path") has the measured speed-ups
 behind 1, 3 and 4, and the commits they were measured at.
@@ -37,6 +41,8 @@ A snapshot: training the predictor further does not change a ``WorkspaceMLP`` ma
 
 from __future__ import annotations
 
+import copy
+from collections.abc import Callable
 from dataclasses import dataclass
 from typing import Generic, TypeVar
 
@@ -71,6 +77,15 @@ class FoldedLayers(Generic[Array]):
             array(self.margin_weight),
         )
 
+    def to(self: FoldedLayers[torch.Tensor], device: torch.device) -> FoldedLayers[torch.Tensor]:
+        """The same numbers on ``device``."""
+        return FoldedLayers(
+            self.table.to(device),
+            self.pose_weight.to(device),
+            [(w.to(device), b.to(device)) for w, b in self.hidden],
+            self.margin_weight.to(device),
+        )
+
 
 @torch.no_grad()
 def workspace_table(predictor: CollisionPredictor, grid: torch.Tensor) -> torch.Tensor:
@@ -91,7 +106,8 @@ class WorkspaceMLP:
 
     ``WorkspaceMLP(predictor, grid)(Q)``: the margins ``logit(valid) - logit(invalid)``,
     ``(N,)`` float32, of configurations ``Q (N, dof)``, equal to the full network's.
-    The module's docstring explains how it saves work.
+    The module's docstring explains how it saves work. ``device``: where torch computes (default: the grid's);
+    the workspace is encoded where the predictor is, then the folded weights move there.
     """
 
     NUMPY_BELOW = 8192  # on the CPU, calls of fewer configurations compute in numpy
@@ -104,19 +120,23 @@ class WorkspaceMLP:
         grid: torch.Tensor,
         numpy_below: int | None = None,
         chunk: int | None = None,
+        device: torch.device | str | None = None,
     ):
-        """``grid (*grid)``: the workspace's occupancy, on the device torch computes on. ``numpy_below``: calls of
+        """``grid (*grid)``: the workspace's occupancy, on the predictor's device. ``numpy_below``: calls of
         fewer configurations compute in numpy (default: ``NUMPY_BELOW`` on the CPU, 0 elsewhere); ``chunk``:
         configurations a numpy pass computes at once (default ``CHUNK``)."""
         encoding = predictor.encoding
         if tuple(grid.shape) != encoding.grid_shape:
             raise ValueError(f"workspace grid {tuple(grid.shape)} does not fit the predictor's {encoding.grid_shape}")
-        default_below = self.NUMPY_BELOW if grid.device.type == "cpu" else 0
+        device = grid.device if device is None else torch.device(device)
+        if device != grid.device:  # the encoding's constants travel with it; the predictor's own stay where they are
+            encoding = copy.deepcopy(encoding).to(device)
+        default_below = self.NUMPY_BELOW if device.type == "cpu" else 0
         self.numpy_below = default_below if numpy_below is None else int(numpy_below)
         self.chunk = self.CHUNK if chunk is None else int(chunk)
         if self.numpy_below < 0 or self.chunk < 1:
             raise ValueError(f"numpy_below must be >= 0 and chunk >= 1, got {self.numpy_below} and {self.chunk}")
-        self.encoding, self.device = encoding, grid.device
+        self.encoding, self.device = encoding, device
         linears = predictor.mlp.linears
         first, last = linears[0], linears[-1]
         self.slopes = [float(m.weight) for m in predictor.mlp.net if isinstance(m, nn.PReLU)]  # one per hidden layer
@@ -129,7 +149,7 @@ class WorkspaceMLP:
             _snapshot(first.weight[:, pose_start:]),
             [(_snapshot(m.weight), _snapshot(m.bias[:, None])) for m in linears[1:-1]],
             _snapshot(last.weight[VALID] - last.weight[1 - VALID]),
-        )
+        ).to(device)
         # the same numbers, for small calls
         self.numpy_layers: FoldedLayers[np.ndarray] | None = self.layers.numpy() if self.numpy_below else None
 
@@ -139,13 +159,13 @@ class WorkspaceMLP:
         if Q.ndim != 2 or Q.shape[1] != self.encoding.dof:
             raise ValueError(f"Q must have shape (N, {self.encoding.dof}), got {Q.shape}")
         if len(Q) >= self.numpy_below:
-            return self._torch_margins(torch.as_tensor(Q, dtype=torch.float32, device=self.device)).cpu().numpy()
+            return self.margins(torch.as_tensor(Q, dtype=torch.float32, device=self.device)).cpu().numpy()
         if len(Q) <= self.chunk:
             return self._numpy_margins(Q)
         return np.concatenate([self._numpy_margins(Q[i : i + self.chunk]) for i in range(0, len(Q), self.chunk)])
 
     @torch.inference_mode()
-    def _torch_margins(self, Q: torch.Tensor) -> torch.Tensor:
+    def margins(self, Q: torch.Tensor) -> torch.Tensor:
         """Margins ``(N,)`` of a float32 tensor ``Q (N, dof)`` on the table's device, with torch's fused operations."""
         layers = self.layers
         cell, pose = self.encoding.configs(Q)  # (N,), (pose_size, N)
@@ -157,7 +177,7 @@ class WorkspaceMLP:
         return torch.mv(h.T, layers.margin_weight) + self.margin_bias  # (N,)
 
     def _numpy_margins(self, Q: np.ndarray) -> np.ndarray:
-        """The same margins as :meth:`_torch_margins`, in numpy (float32), of ``Q (N, dof)``."""
+        """The same margins as :meth:`margins`, in numpy (float32), of ``Q (N, dof)``."""
         layers = self.numpy_layers
         assert layers is not None, "numpy computes only calls below numpy_below > 0, and then numpy_layers exist"
         cell, pose = self.encoding.configs(Q)  # (N,), (pose_size, N)
@@ -169,6 +189,42 @@ class WorkspaceMLP:
             h += bias
             prelu_(h, slope)
         return layers.margin_weight @ h + self.margin_bias  # (N,)
+
+
+class Replay:
+    """``fn`` on a fixed batch of ``capacity`` rows, the rows of a call copied into it: on a CUDA device its
+    operations recorded once as a CUDA graph and replayed, elsewhere ``fn`` called on the fixed batch.
+
+    ``Replay(fn, fill)(Q (n, ...))`` equals ``fn(Q)`` for ``n <= capacity``, when row ``i`` of ``fn``'s answer
+    depends on row ``i`` of its batch only (true of the margins and of a checker's decisions); ``fill
+    (capacity, ...)``: the fixed batch's first contents (the rows past ``n`` in a call), on the device.
+    """
+
+    WARM_UP = 3  # calls on a side stream before recording, as torch's documentation asks
+
+    def __init__(self, fn: Callable[[torch.Tensor], torch.Tensor], fill: torch.Tensor):
+        self.fn, self.batch, self.capacity = fn, fill.clone(), len(fill)
+        self.graph: torch.cuda.CUDAGraph | None = None
+        if self.batch.device.type == "cuda":
+            side = torch.cuda.Stream(self.batch.device)
+            side.wait_stream(torch.cuda.current_stream(self.batch.device))
+            with torch.cuda.stream(side):
+                for _ in range(self.WARM_UP):
+                    fn(self.batch)
+            torch.cuda.current_stream(self.batch.device).wait_stream(side)
+            self.graph = torch.cuda.CUDAGraph()
+            with torch.cuda.graph(self.graph):
+                self.answer = fn(self.batch)
+
+    def __call__(self, Q: torch.Tensor) -> torch.Tensor:
+        n = len(Q)
+        if n > self.capacity:
+            raise ValueError(f"a replay of {self.capacity} rows was asked about {n}")
+        self.batch[:n].copy_(Q)
+        if self.graph is None:
+            return self.fn(self.batch)[:n]
+        self.graph.replay()
+        return self.answer[:n].clone()  # the next replay overwrites its answer
 
 
 def _snapshot(t: torch.Tensor) -> torch.Tensor:

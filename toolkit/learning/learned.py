@@ -7,6 +7,15 @@ other in one argument. ``probability(Q)`` gives P(valid); ``threshold`` trades
 false-valid (lower it: more samples accepted) against false-invalid (raise it).
 Configurations outside the robot's bounds are invalid, whatever the network says.
 
+On a device (``device="cuda"``, or the device the models are on): ``are_valid`` of a
+torch tensor answers with a bool tensor on the same device, without a round trip
+(:mod:`toolkit.geometry.device`); a numpy batch travels through pinned buffers, in
+chunks, as float32 (the network's type), and only its answers come back. The bounds
+are compared in the batch's own type, exactly (float32 bounds rounded inwards).
+``graph_sizes``: batch sizes whose calls are recorded once and replayed as a CUDA graph
+(:class:`~toolkit.learning.inference.Replay`): a small call's launches cost more than its
+arithmetic. ``docs/gpu.md`` has what each path measured.
+
 >>> checker = load_checker("runs/2ds-strong", workspace)  # doctest: +SKIP
 >>> checker.are_valid(Q), checker.probability(Q)  # doctest: +SKIP
 """
@@ -20,9 +29,10 @@ import torch
 from scipy.special import expit, logit
 
 from toolkit.geometry.collision import CollisionChecker
+from toolkit.geometry.device import Stager, checked_array, checked_tensor, is_tensor
 from toolkit.geometry.workspace import Workspace
 from toolkit.learning.checkpoints import load_models
-from toolkit.learning.inference import WorkspaceMLP
+from toolkit.learning.inference import Replay, WorkspaceMLP
 from toolkit.learning.training import TrainedModels
 
 
@@ -33,7 +43,15 @@ class LearnedChecker(CollisionChecker):
     # docs/benchmarks.md): better one call too many configurations than several calls
     few_calls = True
 
-    def __init__(self, workspace: Workspace, models: TrainedModels, threshold: float | None = None):
+    def __init__(
+        self,
+        workspace: Workspace,
+        models: TrainedModels,
+        threshold: float | None = None,
+        *,
+        device: torch.device | str | None = None,
+        graph_sizes: tuple[int, ...] = (),
+    ):
         scenario = models.scenario
         if workspace.grid_shape != scenario.grid_shape:
             raise ValueError(
@@ -42,10 +60,19 @@ class LearnedChecker(CollisionChecker):
         super().__init__(scenario.robot)
         self.workspace, self.models = workspace, models
         self.threshold = models.threshold if threshold is None else threshold
-        device = models.predictor.threshold.device
-        grid = torch.as_tensor(workspace.occupancy(), device=device)  # (*grid)
-        self.workspace_mlp = WorkspaceMLP(models.predictor.eval(), grid)  # the workspace, encoded once
+        home = models.predictor.threshold.device
+        self.device = home if device is None else torch.device(device)
+        grid = torch.as_tensor(workspace.occupancy(), device=home)  # (*grid)
+        # the workspace, encoded once
+        self.workspace_mlp = WorkspaceMLP(models.predictor.eval(), grid, device=self.device)
+        self._bounds = {  # by the batch's type: bounds that compare exactly in it
+            dtype: tuple(torch.as_tensor(b, device=self.device) for b in inward_bounds(self.robot, dtype))
+            for dtype in (torch.float32, torch.float64)
+        }
+        self._stager = Stager(self.device, self.robot.dof, torch.float32)
         self.workspace_mlp(self.robot.lower[None])  # a first call's one-off costs (lazy set-up) belong here
+        fill = torch.tensor(self.robot.lower, dtype=torch.float32, device=self.device)  # (dof,)
+        self._replays = [Replay(self._decide, fill.expand(n, -1)) for n in sorted(graph_sizes)]
 
     @property
     def threshold(self) -> float:
@@ -64,9 +91,57 @@ class LearnedChecker(CollisionChecker):
         Q = self.robot.check_configs(Q)
         return np.where(self.robot.in_bounds(Q), expit(self.workspace_mlp(Q).astype(float)), 0.0)
 
+    def are_valid(self, Q):
+        """``(N,)`` bool of ``Q (N, dof)``: numpy for numpy (float32 or float64, not copied to either), a tensor
+        on ``Q``'s device for a tensor (non-finite rows invalid, :mod:`toolkit.geometry.device`)."""
+        if is_tensor(Q):
+            Q = checked_tensor(self.robot, Q)
+            self.n_checked += len(Q)
+            return self.validity_tensor(Q)
+        Q = checked_array(self.robot, Q)
+        self.n_checked += len(Q)
+        if self.device.type == "cpu":
+            if not np.isfinite(Q).all():
+                raise ValueError("Q contains NaN or infinite values")
+            return self.validity(Q)
+        finite = torch.ones((), dtype=torch.bool, device=self.device)  # read once, after the last chunk
+
+        def decide(chunk: torch.Tensor) -> torch.Tensor:
+            finite.logical_and_(torch.isfinite(chunk).all())
+            return self._decide(chunk)
+
+        valid = self._stager(decide, Q)
+        if not finite.item():
+            raise ValueError("Q contains NaN or infinite values")
+        return valid
+
     def validity(self, Q: np.ndarray) -> np.ndarray:
         # the margin logit(valid) - logit(invalid) (N,) of every row, in or out of bounds (cheaper than selecting)
         return self.robot.in_bounds(Q) & (self.workspace_mlp(Q) >= self._margin_threshold)
+
+    def validity_tensor(self, Q: torch.Tensor) -> torch.Tensor:
+        """On the checker's device, replayed where a recorded size fits a float32 batch; answered on ``Q``'s."""
+        on_device = Q.to(self.device)
+        replay = next((r for r in self._replays if r.capacity >= len(Q)), None)
+        if replay is not None and Q.dtype == torch.float32:
+            return replay(on_device).to(Q.device)
+        return self._decide(on_device).to(Q.device)
+
+    def _decide(self, Q: torch.Tensor) -> torch.Tensor:
+        """``(N,)`` bool of a float tensor ``Q (N, dof)`` on the checker's device: in bounds, margin >= threshold."""
+        lower, upper = self._bounds[torch.float32 if Q.dtype == torch.float32 else torch.float64]
+        inside = ((Q >= lower) & (Q <= upper)).all(dim=1)  # (N,); NaN compares False
+        return inside & (self.workspace_mlp.margins(Q.float()) >= self._margin_threshold)
+
+
+def inward_bounds(robot, dtype: torch.dtype) -> tuple[np.ndarray, np.ndarray]:
+    """The robot's bounds in ``dtype``, rounded inwards: for ``q`` of that type, ``lower <= q`` in float64 exactly
+    when ``lower' <= q`` in it (the least representable number >= lower; likewise for upper)."""
+    kind = torch.empty(0, dtype=dtype).numpy().dtype
+    lower, upper = robot.lower.astype(kind), robot.upper.astype(kind)
+    lower = np.where(lower < robot.lower, np.nextafter(lower, kind.type(np.inf)), lower)
+    upper = np.where(upper > robot.upper, np.nextafter(upper, kind.type(-np.inf)), upper)
+    return lower, upper
 
 
 def load_checker(checkpoint_dir: str | Path, workspace: Workspace, threshold: float | None = None) -> LearnedChecker:
