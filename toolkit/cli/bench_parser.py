@@ -29,6 +29,12 @@ def bench_options(cmd: argparse.ArgumentParser) -> None:
         help="configurations per call for every checker, 1..1000000 (default: 20,000 exact and FCL, "
         "10,000 learned; a sampler asks for 200-2,000)",
     )
+    cmd.add_argument(
+        "--device",
+        metavar="DEVICE",
+        help="cpu or cuda: also time the learned checker and the exact one in torch there, a batch in numpy and "
+        "one already on the device (default: neither); with --crossover, sweep the batch on that device instead",
+    )
     bench_planning_options(cmd)
     bench_versus_ompl_options(cmd)
     bench_crossover_options(cmd)

@@ -63,7 +63,11 @@ def cmd_bench(args: argparse.Namespace) -> int:
         )
         return 0
     timed = models or bench.untrained_models(scenario, presets.get(args.preset), seed=args.seed)
-    result = {"scenario": scenario.name, **bench.throughput(scenario, timed, batch=args.batch, seed=args.seed)}
+    device = bench.usable_device(args.device)
+    result = {
+        "scenario": scenario.name,
+        **bench.throughput(scenario, timed, batch=args.batch, seed=args.seed, device=device),
+    }
     result["edges"] = bench.edge_checks(scenario, seed=args.seed)
     if models is not None:
         result["planning"] = bench.planning_ratios(
@@ -92,6 +96,16 @@ def _bench_crossover(args: argparse.Namespace) -> int:
     out = outputs.writable_folder(args.out, "--out") if args.out else None  # before minutes of timing
     scenario = scenarios.get(args.scenario or CROSSOVER_SCENARIO)
     recipe = presets.get(args.preset)
+    if args.device is not None:  # the batch swept on one device
+        from toolkit.experiments import bench
+
+        batches = crossover.DEVICE_QUICK_BATCHES if args.quick else crossover.DEVICE_BATCHES
+        device = bench.usable_device(args.device)
+        found = crossover.on_device(scenario, recipe, device=device, batches=batches, seed=args.seed)
+        if out is not None:
+            outputs.write_json(out / "crossover_device.json", found)
+        print(json.dumps(found) if args.json else crossover.device_markdown(found))
+        return 0
     results = crossover.crossover(scenario, recipe, seed=args.seed, quick=args.quick, variables=args.variables)
     if out is not None:
         outputs.write_json(out / "crossover.json", results)
@@ -121,9 +135,11 @@ def cmd_plan(args: argparse.Namespace) -> int:
     query = queries.make_queries(scenario, seed=args.seed, n_workspaces=1, per_workspace=1)[0]
     checker = None
     if args.predict:
+        from toolkit.experiments.bench import usable_device
         from toolkit.learning import checkpoints, learned
 
-        checker = learned.LearnedChecker(query.workspace, checkpoints.load_models(args.checkpoint, scenario))
+        models = checkpoints.load_models(args.checkpoint, scenario)
+        checker = learned.LearnedChecker(query.workspace, models, device=usable_device(args.device))
     result = queries.solve_query(scenario, query, args.sampler, checker=checker, seed=args.seed)
     out = {
         "scenario": scenario.name,

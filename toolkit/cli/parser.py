@@ -123,6 +123,9 @@ def plan_options(cmd: argparse.ArgumentParser) -> None:
         help="decide which samples are free with the learned checker (needs --checkpoint)",
     )
     cmd.add_argument("--checkpoint", metavar="DIR", help="a checkpoint folder from `toolkit train`")
+    cmd.add_argument(
+        "--device", metavar="DEVICE", help="with --predict: cpu or cuda, where the network runs (default cpu)"
+    )
     seed(cmd, "the workspace, start and goal, and the sampler's draws")
     cmd.add_argument(
         "--json",

@@ -32,6 +32,7 @@ import torch
 from toolkit.experiments import planners, queries
 from toolkit.geometry.collision import CollisionChecker, FCLChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot
+from toolkit.geometry.torch_kernels import TorchChecker
 from toolkit.geometry.workspace import Workspace
 from toolkit.learning.learned import LearnedChecker
 from toolkit.learning.presets import Preset
@@ -46,6 +47,7 @@ from toolkit.planning.options import LazyPRMOptions, PRMOptions
 from toolkit.scenarios import Scenario
 
 __all__ = [
+    "device_calls",
     "edge_checks",
     "edge_checks_at",
     "exact_throughput",
@@ -58,6 +60,7 @@ __all__ = [
     "short_valid_segments",
     "throughput",
     "untrained_models",
+    "usable_device",
 ]
 
 
@@ -98,27 +101,95 @@ def in_turns(calls: dict[str, tuple[Callable[[], object], int]], repeats: int = 
 
 
 def throughput(
-    scenario: Scenario, models: TrainedModels, *, batch: int | None = None, seed: int = 0, repeats: int = 5
+    scenario: Scenario,
+    models: TrainedModels,
+    *,
+    batch: int | None = None,
+    seed: int = 0,
+    repeats: int = 5,
+    device: str | None = None,
 ) -> dict[str, float]:
     """Configurations per second of the default exact checker (``exact_cfg_per_s``: ``exact_checker``, compiled
     for box worlds), of the python-fcl reference (``fcl_cfg_per_s``) and of the learned checker of ``models``
     (``learned_cfg_per_s``; trained, or :func:`untrained_models`: the speed does not depend on the weights), the
     three timed in turns (:func:`in_turns`) at ``batch`` configurations a call (default: 20,000 exact, 10,000
-    learned); ``ratio`` is learned / default exact, ``exact_over_fcl`` the compiled checker's speed-up."""
-    rates = in_turns(
-        {
-            "exact": _exact_call(scenario, batch or 20_000, seed),
-            "fcl": _exact_call(scenario, batch or 20_000, seed, make=FCLChecker),
-            "learned": _learned_call(scenario, models, batch or 10_000, seed),
-        },
-        repeats,
-    )
-    return {
+    learned); ``ratio`` is learned / default exact, ``exact_over_fcl`` the compiled checker's speed-up.
+
+    With ``device`` (``"cpu"``, ``"cuda"``): the learned checker runs there, and beside it the exact one in torch
+    (:class:`~toolkit.geometry.torch_kernels.TorchChecker`), each timed twice: a numpy batch in and out
+    (``learned_cfg_per_s``, ``exact_device_cfg_per_s``) and a batch already on the device, answered there
+    (``learned_resident_cfg_per_s``, ``exact_device_resident_cfg_per_s``); their ``batch`` defaults to 1M on a
+    GPU. ``device_ratio`` is learned / exact, both resident on the device."""
+    calls = {
+        "exact": _exact_call(scenario, batch or 20_000, seed),
+        "fcl": _exact_call(scenario, batch or 20_000, seed, make=FCLChecker),
+    }
+    if device is None:
+        calls["learned"] = _learned_call(scenario, models, batch or 10_000, seed)
+    else:
+        on_gpu = torch.device(device).type != "cpu"
+        calls.update(device_calls(scenario, models, batch or (1 << 20 if on_gpu else 10_000), device, seed))
+    rates = in_turns(calls, repeats)
+    result = {
         "exact_cfg_per_s": rates["exact"],
         "fcl_cfg_per_s": rates["fcl"],
         "learned_cfg_per_s": rates["learned"],
         "ratio": rates["learned"] / rates["exact"],
         "exact_over_fcl": rates["exact"] / rates["fcl"],
+    }
+    if device is not None:
+        result.update(
+            device=str(device),
+            learned_resident_cfg_per_s=rates["learned_resident"],
+            exact_device_cfg_per_s=rates["exact_device"],
+            exact_device_resident_cfg_per_s=rates["exact_device_resident"],
+            device_ratio=rates["learned_resident"] / rates["exact_device_resident"],
+        )
+    return result
+
+
+def usable_device(name: str | None) -> str | None:
+    """``name`` checked as a torch device this machine has (None stays None); a clear error otherwise."""
+    if name is None:
+        return None
+    try:
+        device = torch.device(name)
+    except (RuntimeError, ValueError):
+        raise ValueError(f"--device {name!r} is not a torch device; use cpu or cuda") from None
+    if device.type == "cuda" and not torch.cuda.is_available():
+        raise ValueError(f"--device {name}: this machine has no CUDA device (torch {torch.__version__})")
+    if device.type not in ("cpu", "cuda"):
+        raise ValueError(f"--device {name}: only cpu and cuda are measured here")
+    return name
+
+
+def device_calls(
+    scenario: Scenario, models: TrainedModels, batch: int, device: str, seed: int = 0, *, graph_sizes=(), calls=1
+) -> dict[str, tuple[Callable[[], object], int]]:
+    """The learned checker on ``device`` and the exact one in torch there, asked about ``batch`` uniform samples of
+    a query workspace ``calls`` times a round: ``learned`` and ``exact_device`` take and return numpy,
+    ``learned_resident`` and ``exact_device_resident`` a float32 tensor on the device (each call waits for the
+    device's answer, as a caller reading it would). ``graph_sizes``: the learned checker's replayed sizes."""
+    ws = scenario.workspaces("query", 1, seed)[0]
+    Q = scenario.robot.sample(np.random.default_rng(seed), batch)  # (batch, dof)
+    on_device = torch.as_tensor(Q, dtype=torch.float32, device=device)
+    learned = LearnedChecker(ws, models, device=device, graph_sizes=graph_sizes)
+    exact = TorchChecker(ws, scenario.robot, device=device)
+    wait = torch.cuda.synchronize if torch.device(device).type == "cuda" else (lambda: None)
+
+    def timed(checker, batch_):
+        def call():
+            for _ in range(calls):
+                checker.are_valid(batch_)
+            wait()
+
+        return call, calls * batch
+
+    return {
+        "learned": timed(learned, Q),
+        "learned_resident": timed(learned, on_device),
+        "exact_device": timed(exact, Q),
+        "exact_device_resident": timed(exact, on_device),
     }
 
 
