@@ -170,3 +170,22 @@ def test_bench_crossover_prints_json_and_writes_the_figure(tmp_path, capsys):
     assert (out / "crossover.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
     assert cli.main(["bench", "--crossover", "--quick", "--scenario", "2ds", "--variables", "links"]) == 2
     assert "do not apply to 2ds" in capsys.readouterr().err
+
+
+def test_on_one_device_every_checker_is_timed_at_every_batch_and_the_exact_answers_agree(tmp_path, capsys):
+    """`bench --crossover --device cpu --quick` (on a GPU the same with cuda): the device sweep's columns, the exact
+    check on the device answering as the compiled one, the fastest and the conclusion read from the figures."""
+    out = tmp_path / "device"
+    args = ["bench", "--crossover", "--quick", "--scenario", "3dc7", "--device", "cpu", "--out", str(out), "--json"]
+    assert cli.main(args) == 0
+    found = json.loads(capsys.readouterr().out)
+    assert json.loads((out / "crossover_device.json").read_text()) == found
+    assert found["batch"] == list(crossover.DEVICE_QUICK_BATCHES) and found["device"] == "cpu"
+    for name in crossover.ON_DEVICE:
+        assert all(us > 0 for us in found[f"{name}_us"])
+    assert found["disagreements"] == [0, 0]
+    for i, fastest in enumerate(found["fastest"]):
+        assert found[f"{fastest}_us"][i] == min(found[f"{n}_us"][i] for n in crossover.ON_DEVICE)
+    assert len(found["conclusion"]) == 2 and found["conclusion"][0].startswith("256 a call on cpu: cheapest is ")
+    table = crossover.device_markdown(found)
+    assert table.count("\n| 2,048 |") == 1 and "resident" in table

@@ -12,6 +12,7 @@ from toolkit.experiments import pipeline, queries
 from toolkit.experiments.config import RunConfig
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.learning import checkpoints, presets
+from toolkit.learning import learned as learned_module
 from toolkit.learning.learned import LearnedChecker, load_checker
 from toolkit.planning.options import LazyPRMOptions, PRMOptions
 
@@ -184,3 +185,99 @@ def test_a_checkpoint_loads_for_the_scenario_object_it_is_given(models, tmp_path
     assert checkpoints.load_models(tmp_path).scenario is scenarios.get("2ds")  # no scenario given: its name's
     with pytest.raises(ValueError, match="trained for scenario '2ds', not '3dc7'"):
         checkpoints.load_models(tmp_path, scenarios.get("3dc7"))
+
+
+# -- on a device (issue 50): tensors answered in kind, float32 without copies, replayed calls --------------------
+
+
+@pytest.fixture(scope="module")
+def untrained_3dc7():
+    """A learned checker of untrained `strong` networks in a 3DC-7 workspace, and uniform configurations."""
+    from toolkit.experiments.bench import untrained_models
+
+    scenario = scenarios.get("3dc7")
+    models = untrained_models(scenario, presets.get("strong"))
+    ws = scenario.workspaces("query", 1, seed=0)[0]
+    return models, ws, scenario.robot.sample(np.random.default_rng(5), 3000)
+
+
+def test_a_tensor_is_answered_on_its_device_as_numpy_is_in_numpy(untrained_3dc7):
+    models, ws, Q = untrained_3dc7
+    checker = LearnedChecker(ws, models, device="cpu")
+    expected = checker.are_valid(Q)  # (N,) numpy bool
+    assert 0.05 < expected.mean() < 0.95
+    for batch in (torch.from_numpy(Q), torch.from_numpy(Q).float()):
+        answer = checker.are_valid(batch)
+        assert isinstance(answer, torch.Tensor) and answer.dtype == torch.bool and answer.device == batch.device
+        np.testing.assert_array_equal(answer.numpy(), expected)
+    np.testing.assert_array_equal(checker.are_valid(Q.astype(np.float32)), expected)
+    assert checker.n_checked == 4 * len(Q)
+
+
+def test_float32_bounds_are_rounded_inwards_so_they_compare_exactly(untrained_3dc7):
+    """A float32 configuration one float32 step past a bound is out, as in float64; on the bound it is in."""
+    models, ws, Q = untrained_3dc7
+    checker = LearnedChecker(ws, models)
+    robot = checker.robot
+    lower32, upper32 = (torch.as_tensor(b) for b in learned_module.inward_bounds(robot, torch.float32))
+    assert torch.all(lower32.double() >= torch.tensor(robot.lower))
+    assert torch.all(upper32.double() <= torch.tensor(robot.upper))
+    below = torch.from_numpy(Q[:50]).float()
+    below[:, 0] = torch.nextafter(lower32[0], torch.tensor(-np.inf))  # just below the lowest float32 inside
+    assert not checker.are_valid(below).any()
+    assert not checker.are_valid(below.numpy()).any()
+
+
+def test_replayed_calls_give_the_answers_of_direct_ones(untrained_3dc7):
+    """graph_sizes records calls up to a size (a CUDA graph on a GPU; on the CPU the same function on a fixed
+    batch): a call of fewer rows, or of exactly that many, answers as a direct one; larger calls go direct."""
+    models, ws, Q = untrained_3dc7
+    direct = LearnedChecker(ws, models).are_valid(Q)
+    replayed = LearnedChecker(ws, models, graph_sizes=(1024, 256))
+    assert [r.capacity for r in replayed._replays] == [256, 1024]
+    for n in (1, 200, 256, 1000, 1024, 3000):
+        np.testing.assert_array_equal(replayed.are_valid(torch.from_numpy(Q[:n]).float()).numpy(), direct[:n])
+    first = replayed.are_valid(torch.from_numpy(Q[:10]).float())
+    replayed.are_valid(torch.from_numpy(Q[10:20]).float())
+    np.testing.assert_array_equal(first.numpy(), direct[:10])  # an answer is not overwritten by the next call
+
+
+def test_bad_tensors_are_named_and_non_finite_rows_are_invalid(untrained_3dc7):
+    models, ws, Q = untrained_3dc7
+    checker = LearnedChecker(ws, models)
+    with pytest.raises(ValueError, match=r"shape \(N, 7\)"):
+        checker.are_valid(torch.zeros(4, 3))
+    with pytest.raises(ValueError, match="floating-point"):
+        checker.are_valid(torch.zeros(4, 7, dtype=torch.int32))
+    bad = torch.from_numpy(Q[:3]).clone()
+    bad[0, 2] = float("nan")
+    assert checker.are_valid(bad).tolist()[0] is False
+    with pytest.raises(ValueError, match="NaN"):
+        checker.are_valid(bad.numpy())
+
+
+def test_the_stager_answers_in_chunks_as_in_one_call():
+    """The numpy path of a device checker, in chunks (pinned buffers need a GPU; the chunking runs here)."""
+    from toolkit.geometry.device import Stager
+
+    Q = np.random.default_rng(6).normal(size=(1000, 3))
+    stager = Stager("cpu", 3, torch.float32, chunk=64)
+    answer = stager(lambda chunk: chunk.sum(dim=1) > 0, Q)
+    np.testing.assert_array_equal(answer, Q.astype(np.float32).sum(axis=1) > 0)
+    assert stager(lambda chunk: chunk[:, 0] > 0, Q[:0]).shape == (0,)
+
+
+def test_bench_on_a_device_times_numpy_in_out_and_resident(capsys):
+    assert cli.main(["bench", "--scenario", "2ds", "--device", "cpu", "--batch", "500", "--json"]) == 0
+    result = json.loads(capsys.readouterr().out)
+    assert result["device"] == "cpu"
+    for key in ("learned_cfg_per_s", "learned_resident_cfg_per_s", "exact_device_cfg_per_s"):
+        assert result[key] > 0
+    assert result["device_ratio"] == pytest.approx(
+        result["learned_resident_cfg_per_s"] / result["exact_device_resident_cfg_per_s"]
+    )
+    if not torch.cuda.is_available():
+        assert cli.main(["bench", "--scenario", "2ds", "--device", "cuda", "--json"]) == 2
+        assert "no CUDA device" in capsys.readouterr().err
+    assert cli.main(["bench", "--scenario", "2ds", "--device", "tpu9", "--json"]) == 2
+    assert "not a torch device" in capsys.readouterr().err

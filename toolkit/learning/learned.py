@@ -131,7 +131,8 @@ class LearnedChecker(CollisionChecker):
         """``(N,)`` bool of a float tensor ``Q (N, dof)`` on the checker's device: in bounds, margin >= threshold."""
         lower, upper = self._bounds[torch.float32 if Q.dtype == torch.float32 else torch.float64]
         inside = ((Q >= lower) & (Q <= upper)).all(dim=1)  # (N,); NaN compares False
-        return inside & (self.workspace_mlp.margins(Q.float()) >= self._margin_threshold)
+        finite = torch.nan_to_num(Q.float(), nan=0.0, posinf=0.0, neginf=0.0)  # NaN would index no grid cell
+        return inside & (self.workspace_mlp.margins(finite) >= self._margin_threshold)
 
 
 def inward_bounds(robot, dtype: torch.dtype) -> tuple[np.ndarray, np.ndarray]:
