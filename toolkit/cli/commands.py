@@ -64,7 +64,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
         return 0
     timed = models or bench.untrained_models(scenario, presets.get(args.preset), seed=args.seed)
     device = bench.usable_device(args.device)
-    result = {
+    result: dict = {
         "scenario": scenario.name,
         **bench.throughput(scenario, timed, batch=args.batch, seed=args.seed, device=device),
     }
@@ -99,9 +99,9 @@ def _bench_crossover(args: argparse.Namespace) -> int:
     if args.device is not None:  # the batch swept on one device
         from toolkit.experiments import bench
 
+        bench.usable_device(args.device)
         batches = crossover.DEVICE_QUICK_BATCHES if args.quick else crossover.DEVICE_BATCHES
-        device = bench.usable_device(args.device)
-        found = crossover.on_device(scenario, recipe, device=device, batches=batches, seed=args.seed)
+        found = crossover.on_device(scenario, recipe, device=args.device, batches=batches, seed=args.seed)
         if out is not None:
             outputs.write_json(out / "crossover_device.json", found)
         print(json.dumps(found) if args.json else crossover.device_markdown(found))

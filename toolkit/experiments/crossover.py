@@ -36,7 +36,7 @@ out, the CPU pair (compiled exact, learned) beside them. ``docs/gpu.md`` reads t
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from dataclasses import dataclass
 
 import numpy as np
@@ -266,13 +266,18 @@ def on_device(
                 ("exact_cpu", bench._exact_call(scenario, batch, seed)),
                 ("learned_cpu", bench._learned_call(scenario, models, batch, seed)),
             ):
-                timed[name] = (lambda fn=fn, calls=calls: [fn() for _ in range(calls)]), calls * n
+                timed[name] = _repeated(fn, calls), calls * n
             rates = bench.in_turns(timed, repeats)
             rows.append({"batch": batch, **_device_row(rates), **_device_agreement(scenario, batch, device, seed)})
     columns = {key: [row[key] for row in rows] for key in rows[0]}
     results = {"scenario": scenario.name, "preset": preset.name, "device": str(device), "seed": seed, **columns}
     results["conclusion"] = device_conclusion(results)
     return results
+
+
+def _repeated(fn: Callable[[], object], calls: int) -> Callable[[], object]:
+    """``fn`` called ``calls`` times in one call."""
+    return lambda: [fn() for _ in range(calls)]
 
 
 def _device_row(rates: dict[str, float]) -> dict:
