@@ -13,7 +13,7 @@ import pytest
 from matplotlib.figure import Figure
 
 from toolkit import cli, plots, scenarios
-from toolkit.experiments import crossover
+from toolkit.experiments import crossover, on_device
 from toolkit.experiments.config import QUICK
 from toolkit.geometry import robots
 from toolkit.geometry.workspace import MeshWorkspace
@@ -180,12 +180,12 @@ def test_on_one_device_every_checker_is_timed_at_every_batch_and_the_exact_answe
     assert cli.main(args) == 0
     found = json.loads(capsys.readouterr().out)
     assert json.loads((out / "crossover_device.json").read_text()) == found
-    assert found["batch"] == list(crossover.DEVICE_QUICK_BATCHES) and found["device"] == "cpu"
-    for name in crossover.ON_DEVICE:
+    assert found["batch"] == list(on_device.QUICK_BATCHES) and found["device"] == "cpu"
+    for name in on_device.COLUMNS:
         assert all(us > 0 for us in found[f"{name}_us"])
     assert found["disagreements"] == [0, 0]
     for i, fastest in enumerate(found["fastest"]):
-        assert found[f"{fastest}_us"][i] == min(found[f"{n}_us"][i] for n in crossover.ON_DEVICE)
+        assert found[f"{fastest}_us"][i] == min(found[f"{n}_us"][i] for n in on_device.COLUMNS)
     assert len(found["conclusion"]) == 2 and found["conclusion"][0].startswith("256 a call on cpu: cheapest is ")
-    table = crossover.device_markdown(found)
+    table = on_device.markdown(found)
     assert table.count("\n| 2,048 |") == 1 and "resident" in table

@@ -100,11 +100,13 @@ def _bench_crossover(args: argparse.Namespace) -> int:
         from toolkit.experiments import bench
 
         bench.usable_device(args.device)
-        batches = crossover.DEVICE_QUICK_BATCHES if args.quick else crossover.DEVICE_BATCHES
-        found = crossover.on_device(scenario, recipe, device=args.device, batches=batches, seed=args.seed)
+        from toolkit.experiments import on_device
+
+        batches = on_device.QUICK_BATCHES if args.quick else on_device.BATCHES
+        found = on_device.sweep(scenario, recipe, device=args.device, batches=batches, seed=args.seed)
         if out is not None:
             outputs.write_json(out / "crossover_device.json", found)
-        print(json.dumps(found) if args.json else crossover.device_markdown(found))
+        print(json.dumps(found) if args.json else on_device.markdown(found))
         return 0
     results = crossover.crossover(scenario, recipe, seed=args.seed, quick=args.quick, variables=args.variables)
     if out is not None:

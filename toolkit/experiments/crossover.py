@@ -26,17 +26,13 @@ or how much cheaper the network (or dearer the check) would have to be.
 ``toolkit bench --crossover [--scenario S] [--out DIR]``; the figure is
 :func:`toolkit.plots.crossover`; results and their reading: ``docs/benchmarks.md``.
 
-**On one device** (``--device cpu|cuda``, :func:`on_device`): a network on a GPU is usually
-raced against an exact checker on a CPU. Here the exact check runs on the same device too
-(:mod:`toolkit.geometry.torch_kernels`), and over batch sizes from a sampler's 256 to 4M
-each checker is timed with the batch already on the device (resident) and with numpy in and
-out, the CPU pair (compiled exact, learned) beside them. ``docs/gpu.md`` reads the results.
+``--device cpu|cuda`` sweeps the batch on one device instead: :mod:`toolkit.experiments.on_device`.
 """
 
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from dataclasses import dataclass
 
 import numpy as np
@@ -60,17 +56,6 @@ VARIABLES = {  # what is varied -> the axis label
     "batch": "configurations per call",
 }
 CHECKERS = ("exact", "fcl", "learned")  # default exact (compiled for box worlds), python-fcl, the network
-DEVICE_BATCHES = (256, 4096, 65_536, 1 << 20, 1 << 22)  # on one device: a sampler's call to 4M
-DEVICE_QUICK_BATCHES = (256, 2048)
-GRAPHED_UP_TO = 4096  # on one device, the learned checker's calls up to this size are replayed (CUDA graphs)
-ON_DEVICE = {  # on_device's columns -> what they time
-    "exact_cpu": "exact, compiled, CPU (1 thread), numpy",
-    "learned_cpu": "learned, CPU (1 thread), numpy",
-    "exact_device_io": "exact in torch on the device, numpy in/out",
-    "exact_device": "exact in torch on the device, resident",
-    "learned_device_io": "learned on the device, numpy in/out",
-    "learned_device": "learned on the device, resident",
-}
 
 
 @dataclass(frozen=True)
@@ -239,97 +224,6 @@ def crossover(
     }
     results["conclusion"] = conclusion(results)
     return results
-
-
-def on_device(
-    scenario: Scenario,
-    preset: Preset,
-    *,
-    device: str,
-    batches: tuple[int, ...] = DEVICE_BATCHES,
-    repeats: int = 5,
-    seed: int = 0,
-) -> dict:
-    """Microseconds per configuration of the checkers of :data:`ON_DEVICE` at each of ``batches``, timed in turns
-    on one thread, in the scenario's first query workspace (untrained networks of ``preset``: the weights do not
-    matter); a round makes enough calls for 65,536 configurations. ``disagreements``: configurations the exact
-    check on the device answers differently from the compiled one (the float32 batch, widened, for both);
-    ``fastest``: the cheapest column per batch; ``conclusion``: in words."""
-    models = bench.untrained_models(scenario, preset, seed)
-    rows = []
-    with one_thread():
-        for batch in batches:
-            calls = max(1, (1 << 16) // batch)
-            graphs = (batch,) if batch <= GRAPHED_UP_TO else ()
-            timed = bench.device_calls(scenario, models, batch, device, seed, graph_sizes=graphs, calls=calls)
-            for name, (fn, n) in (
-                ("exact_cpu", bench._exact_call(scenario, batch, seed)),
-                ("learned_cpu", bench._learned_call(scenario, models, batch, seed)),
-            ):
-                timed[name] = _repeated(fn, calls), calls * n
-            rates = bench.in_turns(timed, repeats)
-            rows.append({"batch": batch, **_device_row(rates), **_device_agreement(scenario, batch, device, seed)})
-    columns = {key: [row[key] for row in rows] for key in rows[0]}
-    results = {"scenario": scenario.name, "preset": preset.name, "device": str(device), "seed": seed, **columns}
-    results["conclusion"] = device_conclusion(results)
-    return results
-
-
-def _repeated(fn: Callable[[], object], calls: int) -> Callable[[], object]:
-    """``fn`` called ``calls`` times in one call."""
-    return lambda: [fn() for _ in range(calls)]
-
-
-def _device_row(rates: dict[str, float]) -> dict:
-    """:func:`on_device`'s columns from :func:`bench.device_calls`' rates and the CPU pair's."""
-    names = {
-        "learned": "learned_device_io",
-        "learned_resident": "learned_device",
-        "exact_device": "exact_device_io",
-        "exact_device_resident": "exact_device",
-    }
-    us = {f"{names.get(name, name)}_us": 1e6 / rate for name, rate in rates.items()}
-    return {**us, "fastest": min(ON_DEVICE, key=lambda name: us[f"{name}_us"])}
-
-
-def _device_agreement(scenario: Scenario, batch: int, device: str, seed: int) -> dict:
-    """The exact check on the device against the compiled one, on the batch :func:`bench.device_calls` times."""
-    import torch
-
-    from toolkit.geometry.torch_kernels import TorchChecker
-
-    ws = scenario.workspaces("query", 1, seed)[0]
-    Q = scenario.robot.sample(np.random.default_rng(seed), batch).astype(np.float32).astype(np.float64)
-    on_device = TorchChecker(ws, scenario.robot, device).are_valid(torch.as_tensor(Q, device=device)).cpu().numpy()
-    return {"disagreements": int((on_device != exact_checker(ws, scenario.robot).are_valid(Q)).sum())}
-
-
-def device_conclusion(results: dict) -> list[str]:
-    """Per batch, the cheapest checker and, on the device, the network's cost over the exact check's (resident)."""
-    lines = []
-    for i, batch in enumerate(results["batch"]):
-        ratio = results["learned_device_us"][i] / results["exact_device_us"][i]
-        cpu = results["learned_cpu_us"][i] / results["exact_cpu_us"][i]
-        lines.append(
-            f"{batch:,} a call on {results['device']}: cheapest is {ON_DEVICE[results['fastest'][i]]}; "
-            f"there the network costs {ratio:.2f}x the exact check (both resident), on the CPU {cpu:.2f}x."
-        )
-    return lines
-
-
-def device_markdown(results: dict) -> str:
-    """:func:`on_device`'s measurements as a markdown table (microseconds a configuration), then its conclusion."""
-    names = list(ON_DEVICE)
-    lines = [
-        f"# One device: {results['scenario']}, preset `{results['preset']}`, device `{results['device']}`",
-        "",
-        "| batch | " + " | ".join(ON_DEVICE[n] for n in names) + " | disagree |",
-        "| --- |" + " --- |" * (len(names) + 1),
-    ]
-    for i, batch in enumerate(results["batch"]):
-        cells = " | ".join(f"{results[f'{n}_us'][i]:.3g}" for n in names)
-        lines.append(f"| {batch:,} | {cells} | {results['disagreements'][i]} |")
-    return "\n".join(lines + ["", *results["conclusion"], ""])
 
 
 def crossing(values: list, exact_us: list, learned_us: list) -> dict | None:
