@@ -63,6 +63,7 @@ class Robot(NamedTuple):
     joint_axes: list[int]  # (J,) 0, 1, 2 for x, y, z
     link_offsets: list[tuple[float, float, float]]  # (L, 3) link box centres in their frames
     half_extents: list[tuple[float, float, float]]  # (L, 3), zero-padded in 2D
+    half: torch.Tensor  # (L, D) the half extents as a float64 tensor
 
 
 class World(NamedTuple):
@@ -75,6 +76,7 @@ class World(NamedTuple):
     shape: torch.Tensor  # (D,) cells per axis, int64
     strides: torch.Tensor  # (D,) a cell's flat index is (cell index * strides).sum()
     table: torch.Tensor  # (C, M) int64: the boxes listed in each flat cell, padded with -1
+    picks: torch.Tensor  # (2^D, D) bool: per corner of a link's bounds, which axes take the last cell
 
 
 def robot_tensors(robot: BoxRobot, device: torch.device | str = "cpu") -> Robot:
@@ -95,6 +97,7 @@ def robot_tensors(robot: BoxRobot, device: torch.device | str = "cpu") -> Robot:
         [AXES[j.axis] for j in robot.joints],
         rows([link.offset for link in robot.links]),
         rows(half),
+        torch.tensor(half[:, : robot.dim], dtype=torch.float64, device=device),
     )
 
 
@@ -129,6 +132,7 @@ def world_tensors(workspace: Workspace, robot: BoxRobot, device: torch.device | 
         tensor(shape[:dim], torch.int64),
         tensor(strides, torch.int64),
         tensor(table, torch.int64),
+        tensor(list(itertools.product((False, True), repeat=dim)), torch.bool),
     )
 
 
@@ -184,7 +188,7 @@ def validity(Q: torch.Tensor, robot: Robot, world: World) -> torch.Tensor:
     valid = ((Q >= robot.lower) & (Q <= robot.upper)).all(dim=1)  # (N,)
     centers, rotations = link_frames(Q, robot)  # (N, L, 3), (N, L, 3, 3)
     centers, rotations = centers[..., :dim], rotations[..., :dim, :dim]
-    half = torch.tensor(robot.half_extents, dtype=Q.dtype, device=Q.device)[:, :dim]  # (L, D)
+    half, picks = robot.half, world.picks  # (L, D), (2^D, D)
     reach = torch.zeros_like(centers)  # (N, L, D): sum_j |R_ij| half_j, in kernels.link_bounds' order
     for j in range(dim):
         reach = reach + rotations[..., j].abs() * half[:, j, None]
@@ -192,7 +196,6 @@ def validity(Q: torch.Tensor, robot: Robot, world: World) -> torch.Tensor:
     valid &= ((low >= world.lower) & (high <= world.upper)).all(dim=2).all(dim=1)
     first, last = (torch.floor((x - world.lower) / world.cell).long().clamp(min=0) for x in (low, high))
     first, last = torch.minimum(first, world.shape - 1), torch.minimum(last, world.shape - 1)  # (N, L, D)
-    picks = torch.tensor(list(itertools.product((False, True), repeat=dim)), device=Q.device)  # (2^D, D)
     corner = torch.where(picks, last[:, :, None], first[:, :, None])  # (N, L, 2^D, D): the cells of the corners
     wanted = ((last > first)[:, :, None] | ~picks).all(-1) & valid[:, None, None]  # (N, L, 2^D): each cell once
     listed = world.table[(corner * world.strides).sum(-1)]  # (N, L, 2^D, M): the boxes listed there, -1 for none
@@ -200,9 +203,8 @@ def validity(Q: torch.Tensor, robot: Robot, world: World) -> torch.Tensor:
     listed = listed.flatten(2)  # (N, L, 2^D * M)
     box = world.boxes[listed[n, link, slot]]  # (P, 2, D)
     touch = boxes_touch(centers[n, link], rotations[n, link], half[link], low[n, link], high[n, link], box)  # (P,)
-    hit = torch.zeros_like(valid)
-    hit[n[touch]] = True
-    return valid & ~hit
+    hits = torch.zeros(len(Q), dtype=torch.int32, device=Q.device).index_add_(0, n, touch.int())  # (N,)
+    return valid & (hits == 0)
 
 
 def boxes_touch(
