@@ -3,7 +3,7 @@
     PYTHONPATH=. python docs/scripts/gpu_measure.py [--device cuda] [--out DIR] [--quick]
 
 From the repository's root, on a machine with a CUDA device and the toolkit's dependencies
-(torch with CUDA, numpy, numba, scipy, trimesh; python-fcl where present). In about five
+(torch with CUDA, numpy, numba, scipy, trimesh; python-fcl where present). In an estimated five
 minutes on an H200 it prints one JSON line per measurement, and writes them to
 ``DIR/gpu_measure.jsonl`` with ``--out``:
 
