@@ -169,7 +169,9 @@ def device_calls(
     """The learned checker on ``device`` and the exact one in torch there, asked about ``batch`` uniform samples of
     a query workspace ``calls`` times a round: ``learned`` and ``exact_device`` take and return numpy,
     ``learned_resident`` and ``exact_device_resident`` a float32 tensor on the device (each call waits for the
-    device's answer, as a caller reading it would). ``graph_sizes``: the learned checker's replayed sizes."""
+    device's answer, as a caller reading it would). Each numpy batch is in its checker's own type: float32 for the
+    network (a float64 one is converted on the way, a pass over the host's memory), float64 for the exact check.
+    ``graph_sizes``: the learned checker's replayed sizes."""
     ws = scenario.workspaces("query", 1, seed)[0]
     Q = scenario.robot.sample(np.random.default_rng(seed), batch)  # (batch, dof)
     on_device = torch.as_tensor(Q, dtype=torch.float32, device=device)
@@ -186,7 +188,7 @@ def device_calls(
         return call, calls * batch
 
     return {
-        "learned": timed(learned, Q),
+        "learned": timed(learned, Q.astype(np.float32)),
         "learned_resident": timed(learned, on_device),
         "exact_device": timed(exact, Q),
         "exact_device_resident": timed(exact, on_device),
