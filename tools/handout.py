@@ -27,7 +27,7 @@ from pathlib import Path
 
 from toolkit.teaching import grading
 
-ROOT = grading.ASSIGNMENTS.parents[1]  # the repository
+ROOT = Path(__file__).resolve().parents[1]  # the repository
 SHIPPED = (  # path prefixes a handout copies; not tools/ (the course's build tools) nor tests/
     "toolkit/",
     "notebooks/",
