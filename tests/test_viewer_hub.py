@@ -166,6 +166,7 @@ def test_a_notebook_on_a_hub_shows_a_link_and_a_frame_and_locally_only_the_addre
     assert f'<iframe src="{url}"' in frames[0] and f'href="{url}"' in frames[0]
     assert all(o.output_type == "stream" for o in local)  # locally: the printed line only
     assert "at http://127.0.0.1:" in "".join(o.text for o in local)
+    assert "the viewer's stop() stops it" in "".join(o.text for o in local)  # no Ctrl-C in a notebook
 
 
 def wait_for(url: str, server: subprocess.Popen, log: Path, budget_s: float = 120.0) -> None:
