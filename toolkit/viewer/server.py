@@ -60,7 +60,8 @@ def start_server(host: str = "127.0.0.1", port: int = 8080) -> viser.ViserServer
     global _secret_of_start
     with _starting:
         port = free_port(host, port)
-        websockets.asyncio.server.serve = _gated_serve  # type: ignore[misc,assignment]  # viser's one hook: see the docstring
+        # viser's one hook (the module's docstring); any other server passes through _gated_serve unchanged
+        websockets.asyncio.server.serve = _gated_serve  # type: ignore[misc,assignment]
         _secret_of_start = secrets.token_urlsafe(SECRET_BYTES)
         try:
             with _viser_quiet():  # launch() prints the one line a user needs
@@ -102,10 +103,14 @@ def _gate(handler: Handler | None, secret: str) -> Handler:
         first = first.partition("?")[0]
         if not hmac.compare_digest(first.encode(), secret.encode()):
             body = REFUSAL.encode()
-            headers = [("Content-Type", "text/html; charset=utf-8"), ("Content-Length", str(len(body)))]
-            return Response(
-                http.HTTPStatus.FORBIDDEN, "Forbidden", Headers(headers + [("Cache-Control", "no-store")]), body
+            headers = Headers(
+                [
+                    ("Content-Type", "text/html; charset=utf-8"),
+                    ("Content-Length", str(len(body))),
+                    ("Cache-Control", "no-store"),
+                ]
             )
+            return Response(http.HTTPStatus.FORBIDDEN, "Forbidden", headers, body)
         inner = dataclasses.replace(request, path="/" + rest)
         return None if handler is None else handler(connection, inner)
 
