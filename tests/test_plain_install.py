@@ -6,8 +6,11 @@ command of ``tutorials/instructors_jupyterhub.md`` (the CPU torch, ``-c constrai
 and ``ompl`` extras) into a fresh virtual environment, with pip's cache and the machine's registries. Every chapter and
 tutorial then runs in quick mode from a copy of ``notebooks/`` and ``tutorials/`` outside the checkout (nothing the
 library reads may come from the repository), and ``toolkit plan`` and ``toolkit grade`` run there too, the latter on
-an assignment folder given by ``$TOOLKIT_ASSIGNMENTS``. Measured: the figures are in
-``tutorials/instructors_jupyterhub.md``.
+an assignment folder given by ``$TOOLKIT_ASSIGNMENTS``.
+
+Measured (``pytest -s --durations=0 tests/test_plain_install.py``, the project's 2-core machine at a load of about
+15, pip's cache warm): 22.5 min in all, of which building and installing 11 min, the eleven notebooks 9.5 min in one
+runner process (each one's wall and CPU time printed), ``toolkit grade`` 76 s, ``toolkit plan`` 15 s.
 """
 
 import json
