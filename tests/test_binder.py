@@ -49,6 +49,20 @@ def test_the_requirements_pin_the_cpu_torch_and_install_the_toolkit_for_a_hub():
     assert "--extra-index-url https://download.pytorch.org/whl/cpu" in lines
 
 
+def test_the_guides_hub_config_runs_each_students_server_from_the_course_environment():
+    """tutorials/instructors_jupyterhub_config.py, read as JupyterHub reads it, sets what the guide says it sets."""
+    from traitlets.config import Config
+
+    config, path = Config(), ROOT / "tutorials" / "instructors_jupyterhub_config.py"
+    exec(compile(path.read_text(), str(path), "exec"), {"get_config": lambda: config})
+    assert config.Spawner.cmd == ["/opt/course/bin/jupyterhub-singleuser"]
+    assert config.Spawner.environment == {"TOOLKIT_QUICK": "1", "TOOLKIT_CACHE": "/srv/course/models"}
+    assert config.JupyterHub.public_url.endswith("/") and config.JupyterHub.bind_url.startswith("http://127.0.0.1:")
+    guide = (ROOT / "tutorials" / "instructors_jupyterhub.md").read_text()
+    for line in ('c.Spawner.cmd = ["/opt/course/bin/jupyterhub-singleuser"]', 'c.Spawner.mem_limit = "3G"'):
+        assert line in guide and line in path.read_text(), line  # the guide quotes the file
+
+
 @pytest.mark.slow
 @pytest.mark.binder
 def test_an_install_from_the_binder_files_runs_a_chapter(tmp_path):

@@ -29,6 +29,8 @@ from test_binder import clean_environment
 from toolkit.teaching import gradescope, grading, sandbox
 from tools import handout
 
+ROOT = Path(__file__).resolve().parents[1]  # the repository
+
 NAME = "bridge_test"
 OTTER_FILES = {"run_autograder", "run_otter.py", "setup.sh", "environment.yml", "otter_config.json"}
 OFFLINE = ["bwrap", "--dev-bind", "/", "/", "--unshare-net", "--die-with-parent", "--"]  # all of it, but no network
@@ -69,7 +71,7 @@ def test_the_zip_installs_the_cpu_torch_and_the_toolkit_from_itself_and_no_solut
     wheel = next(source.glob("sample_collision_toolkit-*-py3-none-any.whl"))
     assert {n for n in names if not n.startswith("tests/")} == OTTER_FILES | {wheel.name}
     python = "python={}.{}".format(*sys.version_info[:2])
-    torch = next(line for line in (gradescope.ROOT / "constraints.txt").read_text().splitlines() if "torch==" in line)
+    torch = next(line for line in (ROOT / "constraints.txt").read_text().splitlines() if "torch==" in line)
     assert _requirements(source) == [
         "jupyter_server",
         f"otter-grader[grading,plugins]=={otter.__version__}",  # otter adds itself

@@ -47,6 +47,7 @@ def test_the_handout_holds_the_course_and_no_solution(tmp_path):
     for needed in ("README.md", "LICENSE", "pyproject.toml", "constraints.txt", "Makefile", "toolkit/__init__.py"):
         assert needed in files, needed
     assert {"binder/requirements.txt", "binder/start"} <= files  # Binder for the published handout
+    assert "build/" in (out / ".gitignore").read_text().split()  # what `pip install ".[hub]"` writes stays out of git
     assert (handout.ROOT / "tutorials" / "instructors_jupyterhub.md").is_file()
     assert not [f for f in files if f.startswith("tutorials/instructors")]  # the instructors' guides stay out
     assert any(f.startswith("notebooks/") and f.endswith(".ipynb") for f in files)

@@ -19,7 +19,7 @@ from collections.abc import Iterator
 from html.parser import HTMLParser
 from pathlib import Path
 from urllib.error import HTTPError
-from urllib.parse import urldefrag, urljoin, urlsplit
+from urllib.parse import parse_qs, urldefrag, urljoin, urlsplit
 from urllib.request import urlopen
 
 import chapter_claims
@@ -284,10 +284,10 @@ def test_a_notebook_page_links_its_download_and_with_a_hub_its_nbgitpuller_link(
     assert links == [
         "../downloads/chapter.ipynb",
         "https://hub.example.edu/hub/user-redirect/git-pull?repo=https%3A%2F%2Fgithub.com%2Fcourse%2Fhandout.git"
-        "&amp;branch=spring&amp;urlpath=lab%2Ftree%2Fhandout%2Fnotebooks%2Fchapter.ipynb",
+        "&amp;branch=spring&amp;targetpath=handout&amp;urlpath=lab%2Ftree%2Fhandout%2Fnotebooks%2Fchapter.ipynb",
     ]
     assert site_hooks.nbgitpuller_link({**HUB, "branch": ""}, "a b.ipynb").endswith(
-        "branch=main&urlpath=lab%2Ftree%2Fhandout%2Fa+b.ipynb"
+        "branch=main&targetpath=handout&urlpath=lab%2Ftree%2Fhandout%2Fa+b.ipynb"
     )
     unset = {"extra": {"jupyterhub": {"url": "", "repository": ""}}}  # as mkdocs.yml ships
     assert re.findall(r'<a href="([^"]*)"', site_hooks.on_page_content("", chapter, unset, files)) == [
@@ -295,6 +295,22 @@ def test_a_notebook_page_links_its_download_and_with_a_hub_its_nbgitpuller_link(
     ]
     other = FakePage(files.get_file_from_path("notebooks/02_cae_reconstruction.ipynb"))  # no download: no links
     assert site_hooks.on_page_content("<p>x</p>", other, unset, files) == "<p>x</p>"
+
+
+@pytest.mark.parametrize(
+    "repository",
+    [
+        "https://github.com/course/handout",
+        "https://github.com/course/handout.git",
+        "https://github.com/course/handout.git/",
+    ],
+)
+def test_an_nbgitpuller_link_opens_the_folder_it_clones_into_with_or_without_dot_git(repository):
+    """nbgitpuller clones into ``targetpath``, by default the URL's last part as it is (``handout.git``, or empty
+    after a ``/``: jupyterhub/nbgitpuller, handlers.py); the link names the folder, and opens the notebook in it."""
+    query = parse_qs(urlsplit(site_hooks.nbgitpuller_link({**HUB, "repository": repository}, "n/c.ipynb")).query)
+    assert query["repo"] == [repository]
+    assert query["targetpath"] == ["handout"] and query["urlpath"] == ["lab/tree/handout/n/c.ipynb"]
 
 
 def test_a_page_keeps_one_h1_and_its_scrolling_code_can_be_reached_by_keyboard():

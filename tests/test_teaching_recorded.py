@@ -1,9 +1,13 @@
-"""toolkit.teaching.recorded: the tables of docs/results.md, read cell by cell as the notebooks quote them."""
+"""toolkit.teaching.recorded: the tables of docs/results.md, read cell by cell as the notebooks quote them, from the
+copy the package carries (tools/recorded_results.py writes it; it must say what docs/results.md says)."""
+
+import json
 
 import pytest
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.teaching import recorded
+from tools import recorded_results
 
 RESULTS = """# Results
 
@@ -37,10 +41,8 @@ RESULTS = """# Results
 
 
 @pytest.fixture
-def results(tmp_path):
-    path = tmp_path / "results.md"
-    path.write_text(RESULTS)
-    return path
+def results():
+    return recorded_results.parse(RESULTS)
 
 
 def test_a_table_is_read_by_preset_and_heading(results):
@@ -63,7 +65,7 @@ def test_ours_is_the_first_figure_of_a_cell(cell, number):
 
 
 def test_a_missing_preset_heading_or_number_is_named(results):
-    with pytest.raises(ValueError, match="no section '## Preset `ablation`'"):
+    with pytest.raises(ValueError, match=r"no section '## Preset `ablation`'; recorded presets: \['paper', 'strong'\]"):
         recorded.table("ablation", "medians", results)
     with pytest.raises(ValueError, match="no table under a heading with 'Table 9'"):
         recorded.table("paper", "Table 9", results)
@@ -83,3 +85,20 @@ def test_the_projects_results_hold_the_tables_the_notebooks_read():
             assert all(0 < r < 100 for ratios in kinds.values() for r in ratios.values())
     mlp = recorded.table("paper", "MLP accuracy")["3dc7"]
     assert 0 <= recorded.ours(mlp["Seen TPR"]) <= 1 and 0 <= recorded.ours(mlp["Seen TNR"]) <= 1
+
+
+def test_the_packaged_tables_are_what_docs_results_md_says():
+    packaged = recorded_results.PACKAGED.read_text()
+    assert packaged == recorded_results.packaged_text(), "docs/results.md changed: run python -m tools.recorded_results"
+    assert recorded.packaged() == json.loads(packaged)  # what an installed toolkit reads (tests/test_plain_install.py)
+
+
+def test_the_parse_keeps_every_row_and_only_the_first_table_under_a_heading():
+    text = RESULTS.replace("*Seen*: balanced samples.", "|  | other |\n| --- | --- |\n| 2ds | 1 |")
+    parsed = recorded_results.parse(text)
+    assert parsed["paper"]["Table 2: MLP accuracy, TPR, TNR"]["rows"] == [
+        ["2ds", "**61%** / 92%", "**36%** / 96%"],
+        ["3dc7", "**50%** / 75%", "**100%** / 87%"],
+    ]
+    assert list(parsed) == ["paper", "strong"]
+    assert recorded_results.parse("## Preset `paper` before issue 25\n\n### T\n\n| a |\n| - |\n| b |\n") == {}

@@ -432,7 +432,7 @@ def test_toolkit_view_serves_until_ctrl_c():
     try:
         lines = iter(process.stdout.readline, "")
         line = next(line for line in lines if line.startswith("toolkit view:"))
-        url = re.search(r"http://127\.0\.0\.1:\d+", line).group(0)
+        url = re.search(r"http://127\.0\.0\.1:\d+/\S+/", line).group(0)  # the launch's secret included
         with urllib.request.urlopen(url, timeout=10) as page:
             assert page.status == 200 and b"<html" in page.read(2000).lower()
         process.send_signal(signal.SIGINT)

@@ -27,7 +27,7 @@ from pathlib import Path
 
 from toolkit.teaching import grading
 
-ROOT = grading.ASSIGNMENTS.parents[1]  # the repository
+ROOT = Path(__file__).resolve().parents[1]  # the repository
 SHIPPED = (  # path prefixes a handout copies; not tools/ (the course's build tools) nor tests/
     "toolkit/",
     "notebooks/",
@@ -39,6 +39,7 @@ SHIPPED = (  # path prefixes a handout copies; not tools/ (the course's build to
     "constraints.txt",
     "Makefile",
     "binder/",  # Binder's (repo2docker's) configuration: the published handout can be tried there
+    ".gitignore",  # what installing (`pip install ".[hub]"`: build/, *.egg-info) and running leave is not committed
 )
 INSTRUCTORS_ONLY = ("tutorials/instructors",)  # the instructors' guides (instructors.md, instructors_jupyterhub.md)
 MARKERS = ("# BEGIN SOLUTION", "# END SOLUTION", "# BEGIN TESTS", "# END TESTS")  # otter's raw cells that open blocks

@@ -144,11 +144,18 @@ def take_away(page: Page, hub: Mapping | None, files: Files) -> str:
 def nbgitpuller_link(hub: Mapping, path: str) -> str:
     """A link that clones (or updates) the course's ``repository`` into the student's home on the JupyterHub at
     ``url`` and opens ``path`` (the notebook's path in that repository) in JupyterLab: nbgitpuller's ``git-pull``
-    (installed in the hub's image). ``branch`` defaults to ``main``; the folder is the repository's name."""
+    (installed in the hub's image). ``branch`` defaults to ``main``. The folder it clones into is the repository's
+    name without ``.git``, named in the link (``targetpath``): nbgitpuller's own default is the URL's last part as it
+    is, ``.git`` kept (or empty after a ``/``), which the notebook's path would then miss."""
     repository = str(hub["repository"])
     folder = repository.rstrip("/").removesuffix(".git").rsplit("/", 1)[-1]
     query = urlencode(
-        {"repo": repository, "branch": hub.get("branch") or "main", "urlpath": f"lab/tree/{folder}/{path}"}
+        {
+            "repo": repository,
+            "branch": hub.get("branch") or "main",
+            "targetpath": folder,
+            "urlpath": f"lab/tree/{folder}/{path}",
+        }
     )
     return f"{str(hub['url']).rstrip('/')}/hub/user-redirect/git-pull?{query}"
 

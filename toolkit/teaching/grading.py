@@ -1,4 +1,4 @@
-"""Course assignments graded with otter-grader (``tutorials/assignments/``).
+"""Course assignments graded with otter-grader (a course's ``tutorials/assignments/``).
 
 Each assignment is one otter master notebook, ``tutorials/assignments/<name>/<name>.ipynb``,
 with its solutions inside otter's markers, public tests (students run them with
@@ -19,6 +19,10 @@ autograded question (a loop that never ends must not hold up a whole class's gra
 otter cannot grade at all (a broken file) scores 0 with the reason in its ``error``. Which
 assignment a submission answers is read from the notebook (``otter assign`` writes its name into
 the student version's metadata), so students may rename their files.
+
+The assignments are the course's, not the library's: they are found in ``$TOOLKIT_ASSIGNMENTS``, else in
+``tutorials/assignments/`` under the current folder (the course's repository or handout, where ``make assignments``
+and ``toolkit grade`` run), never beside the installed package (:func:`folder`).
 """
 
 from __future__ import annotations
@@ -37,20 +41,32 @@ from pathlib import Path
 
 from toolkit.teaching import gradescope, sandbox
 
-ASSIGNMENTS = Path(__file__).resolve().parents[2] / "tutorials" / "assignments"
+FOLDER_VARIABLE = "TOOLKIT_ASSIGNMENTS"  # the folder of the assignments, when not ./tutorials/assignments
 TIMEOUT_S = 600  # seconds a submission may run before it is stopped and scored 0
 
 
+def folder() -> Path:
+    """The folder of the course's assignments (one ``<name>/<name>.ipynb`` master each): ``$TOOLKIT_ASSIGNMENTS``,
+    else ``tutorials/assignments`` under the current folder."""
+    return Path(os.environ.get(FOLDER_VARIABLE) or Path("tutorials", "assignments")).resolve()
+
+
 def assignment_names() -> list[str]:
-    """The assignments whose master ``<name>/<name>.ipynb`` exists, sorted."""
-    return sorted(p.parent.name for p in ASSIGNMENTS.glob("*/*.ipynb") if p.stem == p.parent.name)
+    """The assignments whose master ``<name>/<name>.ipynb`` exists in :func:`folder`, sorted."""
+    return sorted(p.parent.name for p in folder().glob("*/*.ipynb") if p.stem == p.parent.name)
 
 
 def master(name: str) -> Path:
     """The master notebook of assignment ``name``."""
-    path = ASSIGNMENTS / name / f"{name}.ipynb"
+    path = folder() / name / f"{name}.ipynb"
     if not path.is_file():
-        raise ValueError(f"unknown assignment {name!r}; choose one of {assignment_names()}")
+        known = assignment_names()
+        raise ValueError(
+            f"unknown assignment {name!r}; choose one of {known}"
+            if known
+            else f"no assignments in {folder()}: run from the course's folder (the one holding tutorials/assignments/)"
+            f" or set ${FOLDER_VARIABLE} to the folder of the assignments"
+        )
     return path
 
 
@@ -76,7 +92,7 @@ def build(name: str) -> Path:
     if done.returncode != 0:
         raise RuntimeError(f"otter assign failed for {name}:\n{done.stdout[-3000:]}\n{done.stderr[-3000:]}")
     zip_path = autograder(name, build_missing=False)
-    gradescope.ship_toolkit(zip_path)
+    gradescope.ship_toolkit(zip_path, source=folder().parents[1])  # the course's repository: the toolkit's source
     return zip_path
 
 
@@ -195,6 +211,8 @@ def assignment_of(notebook: str | Path) -> str:
         name = json.loads(notebook.read_text())["metadata"]["otter"]["assignment_name"]
     except (OSError, ValueError, KeyError, TypeError):  # unreadable, not JSON, or no otter metadata
         name = notebook.stem
+    if not assignment_names():
+        master(name)  # raises: the folder holds no assignment
     if name not in assignment_names():
         raise ValueError(
             f"{notebook}: cannot tell which assignment it answers (its metadata and file name give "

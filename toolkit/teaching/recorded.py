@@ -2,7 +2,7 @@
 
 ``docs/results.md`` holds the tables of the full-size reproductions (``toolkit reproduce
 --preset paper|strong``, each copied from its run's ``tables.md``). A notebook that sets
-its own small run beside them reads the cells from there, so the figures it quotes are
+its own small run beside them reads the cells from here, so the figures it quotes are
 the ones the docs show, and follow the docs when the reproduction is run again::
 
     from toolkit.teaching import recorded
@@ -10,31 +10,41 @@ the ones the docs show, and follow the docs when the reproduction is run again::
     row = recorded.table("paper", "MLP accuracy")["3dc7"]   # {column: cell} of Table 2's 3DC-7 row
     recorded.ours(row["Seen TPR"])                          # 1.0: our figure of the cell "**100%** / 87%"
     recorded.without("strong", "medians")                   # what "without prediction" was, where the docs say
+
+The tables travel with the package, in ``recorded.json`` beside this file (an installed toolkit has no ``docs/``):
+``python -m tools.recorded_results`` writes it from ``docs/results.md``, and a test holds the two equal. Every
+function also takes ``recorded``, tables of the same form, to read others'.
 """
 
 from __future__ import annotations
 
+import json
 import re
-from pathlib import Path
+from collections.abc import Mapping
+from functools import cache
+from importlib import resources
 
-RESULTS = Path(__file__).resolve().parents[2] / "docs" / "results.md"
-WITHOUT = "*Without prediction*:"  # how tables.md names, under a heading, what "without" was in its table
-
-
-def table(preset: str, heading: str, path: str | Path = RESULTS) -> dict[str, dict[str, str]]:
-    """``{row: {column: cell}}`` of the first table under the ``###`` heading containing ``heading`` (any case)
-    in the section ``## Preset `preset` `` of ``path``; rows are named by their first cell (the scenario)."""
-    rows = [[cell.strip() for cell in line.strip().strip("|").split("|")] for line in _under(preset, heading, path)[1]]
-    if len(rows) < 3:
-        raise ValueError(f"{path}, preset {preset!r}: the heading with {heading!r} has no table under it")
-    columns = rows[0][1:]
-    return {row[0]: dict(zip(columns, row[1:])) for row in rows[2:]}  # rows[1]: the | --- | line
+Tables = Mapping[str, Mapping[str, dict]]  # {preset: {heading: {"without", "columns", "rows"}}}
 
 
-def without(preset: str, heading: str, path: str | Path = RESULTS) -> str | None:
+@cache
+def packaged() -> Tables:
+    """The tables of ``docs/results.md`` as the package carries them (``recorded.json``)."""
+    return json.loads(resources.files(__package__).joinpath("recorded.json").read_text(encoding="utf-8"))
+
+
+def table(preset: str, heading: str, recorded: Tables | None = None) -> dict[str, dict[str, str]]:
+    """``{row: {column: cell}}`` of the table under the first ``###`` heading containing ``heading`` (any case)
+    in the section ``## Preset `preset` `` of ``docs/results.md``; rows are named by their first cell (the
+    scenario)."""
+    found = _under(preset, heading, recorded)
+    columns = found["columns"][1:]
+    return {row[0]: dict(zip(columns, row[1:])) for row in found["rows"]}
+
+
+def without(preset: str, heading: str, recorded: Tables | None = None) -> str | None:
     """What "without prediction" was in that table, as the line under its heading says; None where none does."""
-    note = next((line for line in _under(preset, heading, path)[0] if line.startswith(WITHOUT)), None)
-    return None if note is None else note.removeprefix(WITHOUT).strip()
+    return _under(preset, heading, recorded)["without"]
 
 
 def ours(cell: str) -> float:
@@ -47,29 +57,23 @@ def ours(cell: str) -> float:
     return float(number[:-1]) / 100 if number.endswith("%") else float(number)
 
 
-def median_ratios(preset: str, path: str | Path = RESULTS) -> dict[str, dict[str, dict[str, float]]]:
+def median_ratios(preset: str, recorded: Tables | None = None) -> dict[str, dict[str, dict[str, float]]]:
     """The table "Time with / without prediction, medians over the queries" of ``preset``:
     ``{scenario: {"sampling" | "total": {sampler: median time with / median time without}}}``."""
     ratios: dict[str, dict[str, dict[str, float]]] = {}
-    for scenario, cells in table(preset, "medians over the queries", path).items():
+    for scenario, cells in table(preset, "medians over the queries", recorded).items():
         for column, cell in cells.items():
             kind, sampler = column.split()  # e.g. "Sampling BS"
             ratios.setdefault(scenario, {}).setdefault(kind.lower(), {})[sampler] = ours(cell)
     return ratios
 
 
-def _under(preset: str, heading: str, path: str | Path) -> tuple[list[str], list[str]]:
-    """Under that heading: the lines before its table, and the table's ``|`` rows."""
-    lines = Path(path).read_text().splitlines()
-    title = f"## Preset `{preset}`"
-    if title not in lines:
-        raise ValueError(f"{path} has no section '{title}'")
-    start = lines.index(title) + 1
-    section = lines[start : next((i for i in range(start, len(lines)) if lines[i].startswith("## ")), len(lines))]
-    found = [i for i, line in enumerate(section) if line.startswith("### ") and heading.lower() in line.lower()]
+def _under(preset: str, heading: str, recorded: Tables | None) -> dict:
+    """The table under the first heading of ``preset`` containing ``heading``: ``{"without", "columns", "rows"}``."""
+    tables = packaged() if recorded is None else recorded
+    if preset not in tables:
+        raise ValueError(f"docs/results.md has no section '## Preset `{preset}`'; recorded presets: {sorted(tables)}")
+    found = [name for name in tables[preset] if heading.lower() in name.lower()]
     if not found:
-        raise ValueError(f"{path}, preset {preset!r}: no table under a heading with {heading!r}")
-    text = section[found[0] + 1 :]
-    begin = next((i for i, line in enumerate(text) if line.startswith(("|", "#"))), len(text))
-    end = next((i for i in range(begin, len(text)) if not text[i].startswith("|")), len(text))
-    return text[:begin], text[begin:end]
+        raise ValueError(f"docs/results.md, preset {preset!r}: no table under a heading with {heading!r}")
+    return tables[preset][found[0]]

@@ -7,8 +7,10 @@
     v.set_configuration(v.robot.lower)        # move the robot; colors follow the checker
     v.stop()                                  # frees the port
 
-On a JupyterHub the printed URL is the port's path through the hub, ``/user/<name>/proxy/PORT/``
-(:mod:`toolkit.viewer.address`), and a notebook shows a link and an inline frame to it.
+The printed URL ends in a random secret of the launch, without which the viewer refuses a browser
+(:mod:`toolkit.viewer.server`): on a shared machine no one else opens it. On a JupyterHub it is the port's
+path through the hub, ``/user/<name>/proxy/PORT/<secret>/`` (:mod:`toolkit.viewer.address`), and a notebook
+shows a link and an inline frame to it.
 
 The robot's link boxes are colored by the exact checker (the palette's valid and
 invalid colours, §III; the panel says which in words). With a learned model (``checkpoint=``
@@ -25,7 +27,8 @@ page that needs no server.
 Reading order (each module imports only those above it):
 
 1. :mod:`toolkit.viewer.drawing` — workspaces, robots, samples and paths as Viser meshes and lines;
-2. :mod:`toolkit.viewer.server` — how a scene reaches a browser: a server on a free port, or a page inline;
+2. :mod:`toolkit.viewer.server` — how a scene reaches a browser: a server on a free port under a secret path, or a
+   page inline;
 3. :mod:`toolkit.viewer.address` — where a student opens it: the port, or its path through a JupyterHub;
 4. :mod:`toolkit.viewer.labels` — names for a saved scene's player controls, for screen readers;
 5. :mod:`toolkit.viewer.scene` — :class:`Viewer`: the live scene, and the events it tells its listeners;

@@ -3,7 +3,8 @@
 On a laptop the viewer's server is opened directly, ``http://127.0.0.1:PORT``. On a
 JupyterHub the student's browser reaches only the hub: jupyter-server-proxy (the
 ``[hub]`` extra) forwards ``<base URL>proxy/PORT/`` of their Jupyter server to that
-port, websocket included. The base URL comes from, first to last:
+port, websocket included, to every user of the machine's ports: the address carries the viewer's
+secret after ``proxy/PORT/`` (:mod:`toolkit.viewer.server`). The base URL comes from, first to last:
 
 1. the ``base_url`` argument (``toolkit view --base-url``);
 2. ``$TOOLKIT_VIEWER_BASE_URL``, for any Jupyter server started with a base URL;
@@ -53,9 +54,10 @@ def checked(url: str, source: str = "the base URL") -> str:
     return url if url.endswith("/") else url + "/"
 
 
-def proxied(port: int, base: str) -> str:
-    """The address of ``port`` through jupyter-server-proxy on the server at ``base`` (a checked base URL)."""
-    return f"{base}proxy/{int(port)}/"
+def proxied(port: int, base: str, path: str = "/") -> str:
+    """The address of ``path`` on ``port`` (a viewer's: ``/<secret>/``) through jupyter-server-proxy on the server at
+    ``base`` (a checked base URL)."""
+    return f"{base}proxy/{int(port)}{path}"
 
 
 def link_and_frame(url: str, height: int = 480) -> str:

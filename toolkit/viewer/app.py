@@ -16,6 +16,7 @@ from toolkit.scenarios import Scenario
 from toolkit.viewer import address
 from toolkit.viewer.panel import Panel
 from toolkit.viewer.scene import Predictor, Viewer
+from toolkit.viewer.server import page_path
 
 
 def launch(
@@ -29,7 +30,8 @@ def launch(
     base_url: str | None = None,
     quiet: bool = False,
 ) -> Viewer:
-    """Start a :class:`Viewer` with its GUI panel and print the URL to open (and whether the port was busy).
+    """Start a :class:`Viewer` with its GUI panel and print the URL to open (and whether the port was busy): it ends
+    in the launch's secret (:func:`toolkit.viewer.server.page_path`), without which the viewer refuses a browser.
 
     Behind a Jupyter server (``base_url``, else the environment's: :func:`toolkit.viewer.address.base_url`) that URL
     is the port's path through jupyter-server-proxy, and in a notebook a link and an inline frame to it are shown.
@@ -42,23 +44,24 @@ def launch(
         viewer.stop()
         raise
     if not quiet:
-        url = address.proxied(viewer.port, base) if base else viewer.url
+        url = address.proxied(viewer.port, base, page_path(viewer.server)) if base else viewer.url
         busy = f" (port {port} was busy)" if port and viewer.port != port else ""
-        print(f"toolkit view: {scenario} (seed {seed}) at {url}{busy} — open it in a browser; Ctrl-C stops", flush=True)
-        if base:
-            _show_in_notebook(url)
+        stops = "the viewer's stop() stops it" if _in_notebook() else "Ctrl-C stops"
+        print(f"toolkit view: {scenario} (seed {seed}) at {url}{busy} — open it in a browser; {stops}", flush=True)
+        if base and _in_notebook():
+            from IPython.display import HTML, display
+
+            display(HTML(address.link_and_frame(url)))  # a link, and the viewer in an inline frame
     return viewer
 
 
-def _show_in_notebook(url: str) -> None:
-    """In a notebook's kernel, a link and an inline frame to ``url``; elsewhere (a terminal) nothing."""
+def _in_notebook() -> bool:
+    """Whether this runs in a notebook's kernel (not a terminal)."""
     try:
         from IPython import get_ipython
-        from IPython.display import HTML, display
     except ImportError:
-        return
-    if getattr(get_ipython(), "kernel", None) is not None:
-        display(HTML(address.link_and_frame(url)))
+        return False
+    return getattr(get_ipython(), "kernel", None) is not None
 
 
 def serve_forever(viewer: Viewer) -> None:

@@ -33,7 +33,7 @@ from toolkit.planning.local_planner import path_at
 from toolkit.planning.sampling import make_sampler
 from toolkit.viewer import drawing as draw
 from toolkit.viewer.labels import label_controls
-from toolkit.viewer.server import camera_at, srcdoc_iframe, start_server, stop_server
+from toolkit.viewer.server import camera_at, page_path, srcdoc_iframe, start_server, stop_server
 
 Predictor = Callable[[Workspace], CollisionChecker]  # workspace -> checker with are_valid(Q), probability(Q)
 LAYERS = ("obstacles", "robot", "prediction", "samples", "roadmap", "path")
@@ -108,7 +108,7 @@ class Viewer:
     @property
     def url(self) -> str:
         host = self.server.get_host()
-        return f"http://{'127.0.0.1' if host in ('0.0.0.0', '') else host}:{self.port}"
+        return f"http://{'127.0.0.1' if host in ('0.0.0.0', '') else host}:{self.port}{page_path(self.server)}"
 
     @property
     def robot(self):

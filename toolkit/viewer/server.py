@@ -6,33 +6,115 @@ process) bound to ``host:port``, by default 127.0.0.1: only this computer can op
 address is a clear error and not a server that waits forever; :func:`stop_server` frees
 the port. A snapshot needs no server at all: :func:`srcdoc_iframe` carries a whole page,
 scene included, inside one ``<iframe>``.
+
+A live server is its owner's alone. "Only this computer" is everyone on a shared machine: on a
+single-machine JupyterHub every student's jupyter-server-proxy forwards ``/proxy/PORT/`` to any
+port of the machine, and viser has no login. So each server answers only under a path that is a
+random secret of its launch, ``/<secret>/`` (:func:`page_path`), the one the printed address
+ends in; any other request, page or websocket, gets :data:`REFUSAL` (403), which says why. The
+check sits in the hook viser's web server answers through, websockets' ``process_request``:
+while :func:`start_server` builds a server, :func:`_gated_serve` (in place of
+``websockets.asyncio.server.serve``, which viser calls) wraps viser's handler in :func:`_gate`.
 """
 
 from __future__ import annotations
 
 import contextlib
+import dataclasses
 import errno
+import hmac
 import html as html_lib
+import http
+import secrets
 import socket
-from collections.abc import Iterator
+import threading
+import weakref
+from collections.abc import Callable, Iterator
 
 import rich
 import viser
+import websockets.asyncio.server
+from websockets.datastructures import Headers
+from websockets.http11 import Request, Response
 
 LABEL = "Predicting sample collision"  # the page's title
+SECRET_BYTES = 16  # a launch's secret: 128 random bits, 22 URL-safe characters
+REFUSAL = """<!doctype html><html lang="en"><head><meta charset="utf-8"><title>Not this viewer's address</title></head>
+<body><h1>Not this viewer's address</h1>
+<p>A viewer opens only at the whole address <code>toolkit view</code> printed when it started: it ends in a secret
+of that launch, <code>http://127.0.0.1:PORT/<i>secret</i>/</code> or, on a JupyterHub,
+<code>&hellip;/proxy/PORT/<i>secret</i>/</code>. Copy that whole address from where it was printed.</p>
+<p>If you did not start a viewer on this port, it is someone else's, and stays theirs. Start your own with
+<code>python -m toolkit view</code> (it takes a free port and prints its address).</p></body></html>
+"""
+
+_original_serve = websockets.asyncio.server.serve
+_secrets: weakref.WeakKeyDictionary[viser.ViserServer, str] = weakref.WeakKeyDictionary()
+_starting = threading.Lock()  # one server is built at a time: its secret is the one _gated_serve reads
+_secret_of_start: str | None = None  # the secret of the server being built, while it is
 
 
 def start_server(host: str = "127.0.0.1", port: int = 8080) -> viser.ViserServer:
-    """A viser server on ``host`` and the first free port from ``port`` (0: any free port)."""
-    port = free_port(host, port)
-    with _viser_quiet():  # launch() prints the one line a user needs
-        return viser.ViserServer(host=host, port=port, label=LABEL, verbose=False)
+    """A viser server on ``host`` and the first free port from ``port`` (0: any free port), answering only under
+    :func:`page_path`."""
+    global _secret_of_start
+    with _starting:
+        port = free_port(host, port)
+        # viser's one hook (the module's docstring); any other server passes through _gated_serve unchanged
+        websockets.asyncio.server.serve = _gated_serve  # type: ignore[misc,assignment]
+        _secret_of_start = secrets.token_urlsafe(SECRET_BYTES)
+        try:
+            with _viser_quiet():  # launch() prints the one line a user needs
+                server = viser.ViserServer(host=host, port=port, label=LABEL, verbose=False)
+            _secrets[server] = _secret_of_start
+        finally:
+            _secret_of_start = None
+    return server
+
+
+def page_path(server: viser.ViserServer) -> str:
+    """The path ``server`` answers under, ``/<secret>/``: its page's address is ``http://host:port`` followed by it."""
+    return f"/{_secrets[server]}/"
 
 
 def stop_server(server: viser.ViserServer) -> None:
     """Stop ``server``; its port is free afterwards."""
     with _viser_quiet():
         server.stop()
+
+
+def _gated_serve(*args, **kwargs):
+    """``websockets.asyncio.server.serve``; while :func:`start_server` builds a server, with its request handler
+    behind :func:`_gate`."""
+    if _secret_of_start is not None:
+        kwargs["process_request"] = _gate(kwargs.get("process_request"), _secret_of_start)
+    return _original_serve(*args, **kwargs)
+
+
+Handler = Callable[[websockets.asyncio.server.ServerConnection, Request], Response | None]
+
+
+def _gate(handler: Handler | None, secret: str) -> Handler:
+    """``handler`` (viser's: its page, or None to go on to the websocket) for a request whose path starts with
+    ``/<secret>``, seen without that prefix; :data:`REFUSAL` for any other."""
+
+    def gate(connection: websockets.asyncio.server.ServerConnection, request: Request) -> Response | None:
+        first, _, rest = request.path.removeprefix("/").partition("/")
+        first = first.partition("?")[0]
+        if not hmac.compare_digest(first.encode(), secret.encode()):
+            body = REFUSAL.encode()
+            headers = Headers(
+                [
+                    ("Content-Type", "text/html; charset=utf-8"),
+                    ("Content-Length", str(len(body))),
+                    ("Cache-Control", "no-store"),
+                ]
+            )
+            return Response(http.HTTPStatus.FORBIDDEN, "Forbidden", headers, body)
+        inner = dataclasses.replace(request, path="/" + rest)
+        return None if handler is None else handler(connection, inner)
+
+    return gate
 
 
 @contextlib.contextmanager
