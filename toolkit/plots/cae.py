@@ -54,7 +54,7 @@ def training_curves(
         f"{name}: {len(h)} epochs, from {h[0]:.3g} to {h[-1]:.3g} (lowest {min(h):.3g})"
         for name, h in histories.items()
     )
-    return describe(fig, f"Training curves, {ylabel} per epoch{', log scale' if log else ''}. {said}.")
+    return describe(fig, f"Training curves, epoch across and {ylabel} up{' on a log scale' if log else ''}. {said}.")
 
 
 def error_cells(grid: np.ndarray, decoded: np.ndarray) -> np.ndarray:
@@ -104,7 +104,8 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
     ]
     labels = ["missed block (x)", "invented block (o)"]
     fig.legend(handles, labels, loc="outside lower center", ncols=2, fontsize=8, frameon=False)
-    text = f"{len(grids)} occupancy grids, each beside its reconstruction and its wrong cells. " + "; ".join(said)
+    grids_said = f"{len(grids)} occupancy grid{'s' if len(grids) > 1 else ''}"
+    text = f"{grids_said}, each beside its reconstruction and its wrong cells. " + "; ".join(said)
     return describe(fig, text + ".")
 
 

@@ -51,8 +51,9 @@ def _in_words(sweep: dict) -> str:
     exact, learned = np.asarray(sweep["exact_us"], float), np.asarray(sweep["learned_us"], float)
     ratio = learned / exact  # (V,) below 1: the network is cheaper
     wins = [f"{v:,.0f}" for v, r in zip(x, ratio) if r < 1]
-    text = f"{sweep['label']} from {x[0]:,.0f} to {x[-1]:,.0f}: the network costs {np.nanmin(ratio):.2g} to "
-    text += f"{np.nanmax(ratio):.2g} times the exact check; "
+    low, high = (f"{r:.2f}" if r < 10 else f"{r:,.0f}" for r in (np.nanmin(ratio), np.nanmax(ratio)))
+    text = f"{sweep['label']} from {x[0]:,.0f} to {x[-1]:,.0f}: the network costs {low} to {high} times the exact "
+    text += "check; "
     return text + (f"cheaper at {', '.join(wins)}." if wins else "never cheaper.")
 
 

@@ -311,7 +311,8 @@ def robot_figure(
         fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0.08 if labels is not None else 0, 1, 1))
     text = f"The {robot.name} robot's link boxes at {len(Q)} configuration{'s' if len(Q) > 1 else ''}"
-    text += f", seen {', '.join('in 3D' if v == '3d' else 'in the ' + v + ' plane' for v in views)}"
+    seen = ["in 3D" if v == "3d" else f"in the {v} plane" for v in views]
+    text += ", seen " + (", ".join(seen[:-1]) + " and " if len(seen) > 1 else "") + seen[-1]
     text += ", with the blocks near it" if workspace is not None else ""
     if valid is not None:
         n_valid = int(np.sum(np.asarray(valid, dtype=bool)))

@@ -95,8 +95,9 @@ def samplers(exact: CollisionChecker, samples: dict[str, np.ndarray], attempts: 
         ax.set_title(f"{name}: {count}" + (f" of {attempts} attempts" if attempts else ""), fontsize=9)
     fig.suptitle("Samples over the exact checker (grey: C-obstacles)", fontsize=10)
     fig.tight_layout()
-    counts = ", ".join(f"{name} {len(Q)}" for name, Q in samples.items())
-    return describe(fig, f"Samples of {len(samples)} samplers over the point robot's C-obstacles (grey): {counts}.")
+    counts = "; ".join(f"{name}: {len(Q)}" for name, Q in samples.items())
+    of = f" of {attempts} attempts each" if attempts else ""
+    return describe(fig, f"Samples of {len(samples)} samplers{of} over the point robot's C-obstacles (grey). {counts}.")
 
 
 def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) -> Figure:
