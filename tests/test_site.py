@@ -517,10 +517,10 @@ def test_every_kind_of_focusable_element_shows_its_focus(site, served, chromium)
     try:
         page.locator("input.md-search__input").click()
         wrap = page.locator(".md-search__scrollwrap")
-        assert wrap.get_attribute("tabindex") == "-1"  # no results: no tab stop of no height
+        ring["search results, before a query"] = focus_ring(page, wrap)  # a tab stop of no height until focused
+        page.locator("input.md-search__input").click()
         page.keyboard.type("bridge")
         page.locator(".md-search-result__item").first.wait_for()
-        assert wrap.get_attribute("tabindex") == "0"
         ring["search results"] = focus_ring(page, wrap)
     finally:
         page.close()
@@ -528,6 +528,10 @@ def test_every_kind_of_focusable_element_shows_its_focus(site, served, chromium)
     assert {kind: pixels for kind, pixels in ring.items() if pixels < 40} == {}, ring
 
 
+MATHJAX_IDLE = (  # MathJax 2 has typeset everything it was given
+    "MathJax.Hub.queue.pending === 0 && MathJax.Hub.queue.running === 0"
+    " && document.querySelectorAll('.MathJax_Preview:not(:empty)').length === 0"
+)
 TEXT_SPACING = "* { line-height: 1.5 !important; letter-spacing: 0.12em !important; word-spacing: 0.16em !important; }"
 
 
@@ -544,10 +548,8 @@ def test_display_math_scrolls_at_320_px_instead_of_being_cut(served, chromium, s
         page = chromium.new_page(viewport={"width": 320, "height": 640})
         try:
             page.goto(served + path, wait_until="load")
-            page.wait_for_function("document.querySelectorAll('.MathJax_Display').length > 2", timeout=120_000)
-            page.wait_for_function(
-                "!document.querySelector('.MathJax_Processing, #MathJax_Message:not([style*=none])')"
-            )
+            page.wait_for_function("document.querySelectorAll('.MathJax').length > 10", timeout=120_000)
+            page.wait_for_function(MATHJAX_IDLE, timeout=120_000)
             if spacing:
                 page.add_style_tag(content=TEXT_SPACING)
             page.wait_for_timeout(500)
@@ -556,11 +558,11 @@ def test_display_math_scrolls_at_320_px_instead_of_being_cut(served, chromium, s
                     const style = getComputedStyle(m), over = m.scrollWidth - m.clientWidth;
                     const scrolls = over > 1 && ['auto', 'scroll'].includes(style.overflowX);
                     const reachable = m.getAttribute('tabindex') === '0' && m.getAttribute('role') === 'region';
-                    const tall = m.scrollHeight - m.clientHeight > 1 && style.overflowY === 'hidden';
+                    const tall = m.scrollHeight - m.clientHeight > 1 && !['auto', 'scroll'].includes(style.overflowY);
                     return {over, ok: (over <= 1 || (scrolls && reachable)) && !tall, text: m.textContent.slice(0, 30)};
                 })"""
             )
-            assert found, path
+            assert any(f["over"] > 1 for f in found), path  # at 320 px an equation of each page is too wide
             cut[path] = [f"{f['text']!r} {f['over']} px" for f in found if not f["ok"]]
         finally:
             page.close()
