@@ -98,7 +98,7 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
             f"{name}: {acc:.1%} of cells right against {all_free:.1%} for answering all free; "
             f"{missed} blocked cells missed, {phantom} free cells invented"
         )
-    handles = [  # the cell's colour with its marker on it
+    handles: list[Any] = [  # the cell's colour with its marker on it
         (Patch(facecolor=COLORS[kind]), Line2D([], [], marker=ERROR_MARKERS[kind], color=COLORS["ink"], linestyle=""))
         for kind in ("missed", "phantom")
     ]

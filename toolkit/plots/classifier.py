@@ -24,6 +24,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from matplotlib.colors import ListedColormap
@@ -256,7 +257,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     roc = _draw_roc(ax_roc, {"": (probability, valid, threshold)})
     fig.suptitle(title)
     cells = [Patch(facecolor=c, edgecolor=COLORS["ink"]) for c in ANSWER_COLORS]
-    handles = [  # a mistake's cell with its marker on it
+    handles: list[Any] = [  # a mistake's cell with its marker on it
         (cell, Line2D([], [], linestyle="", marker=MISTAKE_MARKERS[code], color=COLORS["ink"]))
         if code in MISTAKE_MARKERS
         else cell

@@ -205,8 +205,9 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
 def _roadmap_legend(fig: Figure, axes) -> None:
     """One legend below the panels naming every kind of mark any of them drew (each name once)."""
     named = {label: handle for ax in axes for handle, label in zip(*ax.get_legend_handles_labels())}
-    where = "outside lower center" if fig.get_layout_engine() is not None else "lower center"
-    fig.legend(list(named.values()), list(named), loc=where, ncol=min(len(named), 4), fontsize=8, frameon=False)
+    style: dict[str, Any] = dict(ncol=min(len(named), 4), fontsize=8, frameon=False)
+    style["loc"] = "outside lower center" if fig.get_layout_engine() is not None else "lower center"
+    fig.legend(list(named.values()), list(named), **style)
 
 
 def stage_times(panels: dict[str, dict]) -> Figure:

@@ -148,7 +148,7 @@ def named_live_page() -> Iterator[None]:
         return original(*args, **kwargs)
 
     with _serving:
-        viser.infra.WebsockServer = serving_named_page  # type: ignore[misc]
+        viser.infra.WebsockServer = serving_named_page  # type: ignore[assignment,misc]
         try:
             yield
         finally:
