@@ -81,6 +81,7 @@ COLORS: dict[str, str] = {
     "free": "#ffffff",  # free space in a C-space picture
     "occupied": "#333333",  # obstacles in a C-space picture or an occupancy grid
     "c_obstacle": "#e0e0e0",  # the C-obstacles behind a roadmap
+    "panel_text": "#5c5f66",  # the viewer panel's label text (viser's is 3.3:1 on white; this, 6.3:1)
 }
 
 CATEGORICAL = (OKABE_ITO["blue"], OKABE_ITO["orange"], OKABE_ITO["sky blue"], OKABE_ITO["black"], "#888888", "#ffffff")

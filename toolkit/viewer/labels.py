@@ -33,6 +33,8 @@ from pathlib import Path
 import viser
 import viser.infra
 
+from toolkit.plots.palette import COLORS
+
 NAMES = {  # CSS selector -> accessible name (aria-label), for the controls without a visible label
     ".tabler-icon-adjustments": "viewer settings",
     ".tabler-icon-share": "share the scene",
@@ -46,7 +48,7 @@ RECORDING_NAMES = {  # and on a saved scene's player, after those
 }
 LOGO_ALT = "viser"  # the logo in the panel's corner
 HIDDEN = ".mantine-Notifications-root, .mantine-Notification-root"  # notices over a saved scene
-DIMMED = "#5c5f66"  # viser's dimmed label text (3.3:1 on white) made darker: 6.3:1
+DIMMED = COLORS["panel_text"]  # viser's dimmed label text (3.3:1 on white) made darker
 
 SCRIPT = """<style>:root { --mantine-color-dimmed: %(dimmed)s !important; }</style>
 <script>
