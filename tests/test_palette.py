@@ -11,8 +11,10 @@ import itertools
 import re
 from pathlib import Path
 
+import matplotlib
 import numpy as np
 import pytest
+from matplotlib.colors import to_hex
 
 from toolkit.plots import palette
 
@@ -122,3 +124,64 @@ def test_no_colour_is_written_outside_the_palette():
         if p.name != "palette.py" and (hits := colour_literals(p.read_text()))
     }
     assert found == {}
+
+
+# ---- marks that stand out (WCAG 2.1, 1.4.11: 3:1 against what they are drawn on) ----
+
+
+def backgrounds(names: tuple[str, ...]) -> list[str]:
+    """The colours of ``names``: roles, colours, or a colour map sampled at 65 points over its range."""
+    found = []
+    for name in names:
+        if name.startswith("cmap:"):
+            found += [to_hex(c) for c in matplotlib.colormaps[name[5:]](np.linspace(0, 1, 65))]
+        else:
+            found.append(palette.COLORS.get(name, name))
+    return found
+
+
+def stands_out(mark: str, rings: tuple[str, ...], background: str) -> bool:
+    """Whether ``mark`` is told from ``background`` at 3:1: by its own colour, or by one of its outline's rings that
+    every boundary inside it (mark to first ring, ring to ring) keeps at 3:1 too."""
+    layers = [palette.COLORS.get(mark, mark), *(palette.COLORS[r] for r in rings)]
+    for k, layer in enumerate(layers):
+        if k and palette.contrast(layers[k - 1], layer) < palette.MIN_CONTRAST:
+            return False
+        if palette.contrast(layer, background) >= palette.MIN_CONTRAST:
+            return True
+    return False
+
+
+def test_the_contrast_is_wcag_s():
+    assert palette.contrast("#000000", "#ffffff") == pytest.approx(21.0)
+    assert palette.contrast("#767676", "#ffffff") == pytest.approx(4.54, abs=0.01)  # WebAIM's AA grey on white
+    assert palette.contrast("valid", "valid") == 1.0
+    # the issue's measurements: the candidate path on white, the crossover's orange
+    assert palette.contrast("candidate", "free") == pytest.approx(2.31, abs=0.01)
+    assert palette.contrast("learned", "free") == pytest.approx(2.25, abs=0.01)
+    assert not stands_out("candidate", (), "#ffffff") and stands_out("candidate", palette.HALO, "#ffffff")
+
+
+def test_an_outline_makes_a_mark_stand_out_on_any_grey():
+    greys = backgrounds(("cmap:gray",))
+    assert not all(stands_out("conservative", (), g) for g in greys)
+    assert all(stands_out(mark, palette.HALO, g) for mark in ("valid", "invalid", "conservative") for g in greys)
+
+
+@pytest.mark.parametrize("figure", sorted(palette.MARKS_ON))
+def test_every_mark_stands_out_from_what_it_is_drawn_on(figure):
+    drawn_on, marks = palette.MARKS_ON[figure]
+    faint = [
+        f"{mark} on {bg}: {palette.contrast(palette.COLORS.get(mark, mark), bg):.2f}"
+        for mark, rings in marks.items()
+        for bg in backgrounds(drawn_on)
+        if not stands_out(mark, rings, bg)
+    ]
+    assert faint == []
+
+
+def test_series_colours_stand_out_on_white_and_the_halo_draws_its_rings():
+    assert all(palette.contrast(c, "#ffffff") >= palette.MIN_CONTRAST for c in palette.LINE_COLORS)
+    inner, outer = palette.halo(2.0)[1], palette.halo(2.0)[0]  # drawn outer ring first, the mark last
+    assert (inner._gc["foreground"], outer._gc["foreground"]) == (palette.COLORS["ink"], palette.COLORS["free"])
+    assert inner._offset == outer._offset == (0, 0)

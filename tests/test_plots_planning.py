@@ -120,7 +120,7 @@ def test_roadmap_draws_every_edge_and_the_repair_in_red(exact):
     assert is_color(points[2].get_facecolors(), planning.REPAIR_COLOR).all()
     (path,) = ax.lines
     np.testing.assert_array_equal(np.c_[path.get_xdata(), path.get_ydata()], step.nodes[step.path])
-    assert ax.get_title() == "round 2, repair: 5 nodes, 5 edges"
+    assert ax.get_title() == "round 2, repair:\n5 nodes, 5 edges"
 
 
 def test_roadmap_of_a_real_plan_draws_as_many_edges_as_the_roadmap_has(exact, query):

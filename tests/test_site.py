@@ -27,6 +27,7 @@ import nbformat
 import pytest
 from mkdocs.structure.files import File, Files
 
+from toolkit.plots import alt
 from toolkit.teaching import grading
 from toolkit.viewer import browser as viewer_browser
 from tools import accessibility, handout, site_hooks
@@ -127,8 +128,11 @@ def test_every_figure_of_every_chapter_and_tutorial_has_a_text_alternative(site)
         images = [o for o in outputs if "image/png" in o.get("data", {})]
         assert images, name
         alts = [o.get("metadata", {}).get("image/png", {}).get("alt", "").strip() for o in images]
-        if not all(alts):
-            lacking[name] = f"{alts.count('')} of {len(images)} figures"
+        read_from_titles = [a for a in alts if alt.is_fallback(a)]  # the guard's text: nobody described the data
+        if not all(alts) or read_from_titles:
+            lacking[name] = (
+                f"{alts.count('')} of {len(images)} figures without, {len(read_from_titles)} read from titles"
+            )
     assert lacking == {}  # in the notebook (JupyterLab shows it too) ...
     pages = {str(p.relative_to(site.out)): p.read_text() for p in site.out.rglob("*.html")}
     assert [p for p, text in pages.items() if 'alt="No description has been provided' in text] == []  # nbconvert's
@@ -466,6 +470,120 @@ def test_no_page_has_a_serious_or_critical_accessibility_violation(site, served,
     found = accessibility.audit_site(chromium, served, accessibility.pages(site.out))
     assert len(found) >= 30
     assert accessibility.blocking(found) == {}
+
+
+FOCUS = (0x1F, 0x5F, 0x99)  # docs/site/accessibility.css's focus outline
+FOCUSABLE = {  # a kind of focusable element: a page that has one, and how to find it
+    "scrolling code cell": (
+        "notebooks/01_workspaces_and_collision.html",
+        ".jupyter-wrapper [role=region][tabindex='0']",
+    ),
+    "scrolling table": ("docs/accessibility.html", ".md-typeset__scrollwrap[tabindex='0']"),
+    "answer disclosure": ("notebooks/01_workspaces_and_collision.html", "details > summary"),
+    "link in text": ("index.html", "article p a[href]"),
+}
+
+
+def focus_ring(page, element) -> int:
+    """How many pixels around and on ``element`` turn the focus outline's colour when it takes the focus from the
+    keyboard (a screenshot of its box, 8 px wider each side, before and after)."""
+    import io
+
+    import numpy as np
+    from PIL import Image
+
+    element.scroll_into_view_if_needed()
+    page.evaluate("document.activeElement && document.activeElement.blur()")
+    page.mouse.move(0, 0)
+    box = element.bounding_box()
+    width, height = page.viewport_size["width"], page.viewport_size["height"]
+    x0, y0 = max(box["x"] - 8, 0), max(box["y"] - 8, 0)
+    clip = {
+        "x": x0,
+        "y": y0,
+        "width": min(box["width"] + 16, width - x0),
+        "height": min(box["height"] + 16, height - y0),
+    }
+    shots = []
+    for focused in (False, True):
+        if focused:
+            page.keyboard.press("Shift")  # the keyboard is in use: :focus-visible applies
+            element.focus()
+        shots.append(np.asarray(Image.open(io.BytesIO(page.screenshot(clip=clip))).convert("RGB"), dtype=int))
+    before, after = shots
+    near_focus = np.abs(after - np.array(FOCUS)).sum(axis=-1) < 60  # (H, W)
+    return int(np.sum(near_focus & (np.abs(after - before).sum(axis=-1) > 30)))
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_every_kind_of_focusable_element_shows_its_focus(site, served, chromium):
+    """WCAG 2.4.7: focusing each kind of element from the keyboard draws the outline around it, where a reader
+    sees it: not clipped by a scrolling ancestor, not removed by a stylesheet; the search results too."""
+    remote: list[str] = []
+    ring = {}
+    for kind, (path, selector) in FOCUSABLE.items():
+        page = open_page(chromium, served + path, remote)
+        try:
+            ring[kind] = focus_ring(page, page.locator(selector).first)
+        finally:
+            page.close()
+    page = open_page(chromium, served + "index.html", remote)
+    try:
+        page.locator("input.md-search__input").click()
+        wrap = page.locator(".md-search__scrollwrap")
+        ring["search results, before a query"] = focus_ring(page, wrap)  # a tab stop of no height until focused
+        page.locator("input.md-search__input").click()
+        page.keyboard.type("bridge")
+        page.locator(".md-search-result__item").first.wait_for()
+        ring["search results"] = focus_ring(page, wrap)
+    finally:
+        page.close()
+    assert remote == []
+    assert {kind: pixels for kind, pixels in ring.items() if pixels < 40} == {}, ring
+
+
+MATHJAX_IDLE = (  # MathJax 2 has typeset everything it was given
+    "MathJax.Hub.queue.pending === 0 && MathJax.Hub.queue.running === 0"
+    " && document.querySelectorAll('.MathJax_Preview:not(:empty)').length === 0"
+)
+TEXT_SPACING = "* { line-height: 1.5 !important; letter-spacing: 0.12em !important; word-spacing: 0.16em !important; }"
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+@pytest.mark.parametrize("spacing", [False, True], ids=["as styled", "WCAG text spacing"])
+def test_display_math_scrolls_at_320_px_instead_of_being_cut(served, chromium, spacing):
+    """WCAG 1.4.10 and 1.4.12: at 320 CSS px, with and without the text spacing of 1.4.12, every display equation
+    fits or scrolls sideways, and one that scrolls is a region the keyboard reaches."""
+    remote: list[str] = []
+    cut = {}
+    for path in ("notebooks/01_workspaces_and_collision.html", "notebooks/02_cae_reconstruction.html"):
+        page = chromium.new_page(viewport={"width": 320, "height": 640})
+        try:
+            page.goto(served + path, wait_until="load")
+            page.wait_for_function("document.querySelectorAll('.MathJax').length > 10", timeout=120_000)
+            page.wait_for_function(MATHJAX_IDLE, timeout=120_000)
+            if spacing:
+                page.add_style_tag(content=TEXT_SPACING)
+            page.wait_for_timeout(500)
+            found = page.evaluate(
+                """() => [...document.querySelectorAll('.MathJax_Display')].map(m => {
+                    const style = getComputedStyle(m), over = m.scrollWidth - m.clientWidth;
+                    const scrolls = over > 1 && ['auto', 'scroll'].includes(style.overflowX);
+                    const reachable = m.getAttribute('tabindex') === '0' && m.getAttribute('role') === 'region';
+                    const tall = m.scrollHeight - m.clientHeight > 1 && !['auto', 'scroll'].includes(style.overflowY);
+                    return {over, ok: (over <= 1 || (scrolls && reachable)) && !tall, text: m.textContent.slice(0, 30)};
+                })"""
+            )
+            assert any(f["over"] > 1 for f in found), path  # at 320 px an equation of each page is too wide
+            cut[path] = [f"{f['text']!r} {f['over']} px" for f in found if not f["ok"]]
+        finally:
+            page.close()
+    assert {path: eqs for path, eqs in cut.items() if eqs} == {}
+    assert remote == []
 
 
 def search(page, words: str) -> list[str]:

@@ -1,10 +1,35 @@
-// Keyboard access to the tables that scroll sideways: mkdocs-material wraps each table in a scrolling
-// <div class="md-typeset__scrollwrap"> when the page loads; each becomes a named region with tabindex 0
-// (WCAG 2.1.1; the axe rule scrollable-region-focusable). Added by mkdocs.yml's extra_javascript.
-document$.subscribe(() => {
-  for (const wrap of document.querySelectorAll(".md-typeset__scrollwrap:not([tabindex])")) {
-    wrap.setAttribute("tabindex", "0");
-    wrap.setAttribute("role", "region");
-    wrap.setAttribute("aria-label", "table");
+// Keyboard access to what scrolls sideways (WCAG 2.1.1; the axe rule scrollable-region-focusable). Added by
+// mkdocs.yml's extra_javascript.
+// - mkdocs-material wraps each table in a scrolling <div class="md-typeset__scrollwrap"> when the page loads:
+//   each becomes a named region with tabindex 0;
+// - a display equation wider than the page (at 320 px, or with WCAG text spacing) scrolls: it becomes a
+//   region named "equation" with tabindex 0 while it does, and leaves the tab order when it fits again.
+const makeRegion = (element, name) => {
+  element.setAttribute("tabindex", "0");
+  element.setAttribute("role", "region");
+  element.setAttribute("aria-label", name);
+};
+
+const markScrollingMath = () => {
+  for (const math of document.querySelectorAll(".MathJax_Display, .MathJax_SVG_Display, mjx-container[display]")) {
+    if (math.scrollWidth > math.clientWidth + 1) makeRegion(math, "equation");
+    else if (math.getAttribute("aria-label") === "equation") {
+      for (const name of ["tabindex", "role", "aria-label"]) math.removeAttribute(name);
+    }
   }
+};
+
+document$.subscribe(() => {
+  for (const wrap of document.querySelectorAll(".md-typeset__scrollwrap:not([tabindex])")) makeRegion(wrap, "table");
+  markScrollingMath();
 });
+let pending = false; // MathJax typesets after the page loads: look again, once a frame, whenever nodes come
+new MutationObserver(() => {
+  if (pending) return;
+  pending = true;
+  requestAnimationFrame(() => {
+    pending = false;
+    markScrollingMath();
+  });
+}).observe(document.body, {childList: true, subtree: true});
+window.addEventListener("resize", markScrollingMath);

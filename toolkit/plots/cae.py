@@ -21,14 +21,17 @@ from typing import Any
 import numpy as np
 from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from toolkit.learning.metrics import reconstruction_accuracy
-from toolkit.plots.palette import COLORS, GREYS_CMAP, SEQUENTIAL_CMAP
+from toolkit.plots.alt import describe
+from toolkit.plots.palette import COLORS, GREYS_CMAP, MARKERS, SEQUENTIAL_CMAP, series_style
 
 ERROR_COLORS = ListedColormap(
     [COLORS["phantom"], COLORS["missed"]]
 )  # -1: phantom block (free decoded occupied); +1: missed block
+ERROR_MARKERS = {"missed": "x", "phantom": "o"}  # a second cue on each wrong cell, in ink: x missed, o invented
 
 
 def training_curves(
@@ -37,16 +40,21 @@ def training_curves(
     """One line per named history (e.g. ``TrainedModels.history["cae"]``), epochs 1, 2, ... on x."""
     fig = Figure(figsize=(6.4, 3.6))
     ax = fig.subplots()
-    for name, history in histories.items():
-        ax.plot(np.arange(1, len(history) + 1), history, label=name)
+    for k, (name, history) in enumerate(histories.items()):
+        style = series_style(k) | dict(markevery=max(1, len(history) // 8), markersize=4)
+        ax.plot(np.arange(1, len(history) + 1), history, label=name, **style)
     if log:
         ax.set_yscale("log")
     ax.set_xlabel("epoch")
     ax.set_ylabel(ylabel)
-    ax.legend()
+    ax.legend(fontsize=8)
     ax.set_title("CAE training curves")
     fig.tight_layout()
-    return fig
+    said = "; ".join(
+        f"{name}: {len(h)} epochs, from {h[0]:.3g} to {h[-1]:.3g} (lowest {min(h):.3g})"
+        for name, h in histories.items()
+    )
+    return describe(fig, f"Training curves, epoch across and {ylabel} up{' on a log scale' if log else ''}. {said}.")
 
 
 def error_cells(grid: np.ndarray, decoded: np.ndarray) -> np.ndarray:
@@ -72,6 +80,7 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
     accuracy = reconstruction_accuracy(decoded, grids)  # (W,)
     fig = Figure(figsize=(8.4, 3.0 * len(grids)), layout="constrained")
     rows = fig.subfigures(len(grids), 1, squeeze=False)[:, 0]  # (W,) one row per workspace
+    said = []
     for row, grid, out, name, acc in zip(rows, grids, decoded, names, accuracy):
         errors = error_cells(grid, out)
         missed, phantom = int(np.sum(errors & (grid > 0))), int(np.sum(errors & (grid < 0)))
@@ -80,10 +89,24 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
         _image(axes[1], np.where(out > 0, 1.0, -1.0), "decoded (sign)")
         _image(axes[2], grid, f"errors: {missed} missed, {phantom} invented", alpha=0.25)
         axes[2].imshow(np.ma.masked_array(grid, ~errors).T, origin="lower", cmap=ERROR_COLORS, vmin=-1, vmax=1)
-        row.suptitle(f"{name}: {acc:.1%} of cells right (all free: {np.mean(grid < 0):.1%})")
-    handles = [Patch(color=COLORS[kind], label=f"{kind} block") for kind in ("missed", "phantom")]
-    fig.legend(handles=handles, loc="outside lower center", ncols=2, fontsize=8, frameon=False)
-    return fig
+        for kind, wrong in (("missed", errors & (grid > 0)), ("phantom", errors & (grid < 0))):
+            x, y = np.nonzero(wrong)
+            axes[2].plot(x, y, ERROR_MARKERS[kind], color=COLORS["ink"], markersize=3, fillstyle="none", mew=0.7)
+        all_free = np.mean(grid < 0)
+        row.suptitle(f"{name}: {acc:.1%} of cells right (all free: {all_free:.1%})", fontsize=10)
+        said.append(
+            f"{name}: {acc:.1%} of cells right against {all_free:.1%} for answering all free; "
+            f"{missed} blocked cells missed, {phantom} free cells invented"
+        )
+    handles: list[Any] = [  # the cell's colour with its marker on it
+        (Patch(facecolor=COLORS[kind]), Line2D([], [], marker=ERROR_MARKERS[kind], color=COLORS["ink"], linestyle=""))
+        for kind in ("missed", "phantom")
+    ]
+    labels = ["missed block (x)", "invented block (o)"]
+    fig.legend(handles, labels, loc="outside lower center", ncols=2, fontsize=8, frameon=False)
+    grids_said = f"{len(grids)} occupancy grid{'s' if len(grids) > 1 else ''}"
+    text = f"{grids_said}, each beside its reconstruction and its wrong cells. " + "; ".join(said)
+    return describe(fig, text + ".")
 
 
 def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
@@ -94,9 +117,23 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
     """
     fig = Figure(figsize=(5.2, 4.6))
     ax = fig.subplots()
-    for name, (all_free, accuracy) in groups.items():
+    said = []
+    for k, (name, (all_free, accuracy)) in enumerate(groups.items()):
+        style = series_style(k)
+        above = int(np.sum(np.asarray(accuracy) > np.asarray(all_free)))
         ax.scatter(
-            all_free, accuracy, label=f"{name} (mean {np.mean(accuracy):.1%} vs {np.mean(all_free):.1%})", alpha=0.8
+            all_free,
+            accuracy,
+            label=f"{name} (mean {np.mean(accuracy):.1%} vs {np.mean(all_free):.1%})",
+            alpha=0.8,
+            c=style["color"],
+            marker=style["marker"],
+            edgecolors=COLORS["ink"],
+            linewidths=0.4,
+        )
+        said.append(
+            f"{name}: {len(accuracy)} workspaces, mean accuracy {np.mean(accuracy):.1%} against {np.mean(all_free):.1%}"
+            f" for all free, {above} of them above the diagonal"
         )
     low = min(min(np.min(f), np.min(a)) for f, a in groups.values())
     ax.plot([low, 1], [low, 1], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal)')
@@ -105,7 +142,8 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
     ax.set_title("Above the diagonal: better than all free")
     ax.legend(fontsize=8)
     fig.tight_layout()
-    return fig
+    text = "Reconstruction accuracy against the accuracy of answering all free, one point per workspace. "
+    return describe(fig, text + "; ".join(said) + ".")
 
 
 def contraction(
@@ -127,23 +165,41 @@ def contraction(
     fig = Figure(figsize=(12, 3.8))
     ax_j, ax_z, ax_x = fig.subplots(1, 3)
     names = list(jacobian_norms)
-    ax_j.boxplot([np.asarray(jacobian_norms[n]) for n in names], showmeans=True)
+    ink = dict(color=COLORS["ink"])
+    ax_j.boxplot(
+        [np.asarray(jacobian_norms[n]) for n in names],
+        showmeans=True,
+        boxprops=ink,
+        whiskerprops=ink,
+        capprops=ink,
+        medianprops=ink | dict(linewidth=2),
+        meanprops=dict(marker="^", color=COLORS["ink"], markerfacecolor=COLORS["free"], markeredgecolor=COLORS["ink"]),
+        flierprops=dict(marker="o", markeredgecolor=COLORS["ink"], markersize=3),
+    )
     ax_j.set_xticks(range(1, len(names) + 1), [n.replace(" (", "\n(") for n in names])  # long names on two lines
-    ax_j.set_ylabel(r"$\|\partial z / \partial x\|_F$ per workspace")
-    ax_j.set_title("Encoder Jacobian norm")
-    for name in names:
-        ax_z.plot(flips, np.mean(latent_shift[name], axis=1), marker="o", label=name)
-        ax_x.plot(flips, np.mean(decoded_change[name], axis=1), marker="o", label=name)
+    ax_j.set_xlabel("model")
+    ax_j.set_ylabel("Jacobian norm ||dz/dx|| per workspace")
+    ax_j.set_title("Encoder Jacobian norm", fontsize=10)
+    for k, name in enumerate(names):
+        ax_z.plot(flips, np.mean(latent_shift[name], axis=1), label=name, **series_style(k))
+        ax_x.plot(flips, np.mean(decoded_change[name], axis=1), label=name, **series_style(k))
     ax_x.plot(flips, flips, color=COLORS["reference"], linestyle=":", label="copy the input")
-    ax_z.set_ylabel(r"$\|z' - z\| \,/\, \|z\|$")
-    ax_z.set_title("Latent code moves")
+    ax_z.set_ylabel("latent move ||z' - z|| / ||z||")
+    ax_z.set_title("Latent code moves", fontsize=10)
     ax_x.set_ylabel("decoded cells that change sign")
-    ax_x.set_title("Reconstruction changes")
+    ax_x.set_title("Reconstruction changes", fontsize=10)
     for ax in (ax_z, ax_x):
         ax.set_xlabel("cells flipped")
         ax.legend(fontsize=8)
     fig.tight_layout()
-    return fig
+    said = "; ".join(
+        f"{name}: median Jacobian norm {np.median(jacobian_norms[name]):.3g}; flipping {flips[-1]:g} cells moves z by "
+        f"{np.mean(latent_shift[name][-1]):.1%} of its length and changes {np.mean(decoded_change[name][-1]):.3g} "
+        "decoded cells"
+        for name in names
+    )
+    text = "How strongly each encoder reacts to its input: the norm of its Jacobian, and how far the latent code and"
+    return describe(fig, f"{text} the reconstruction move when cells of the input are flipped. {said}.")
 
 
 def latent_scatter(
@@ -166,13 +222,20 @@ def latent_scatter(
     ax = fig.subplots()
     if color:
         low, high = min(np.min(c) for c in color.values()), max(np.max(c) for c in color.values())
-    for (name, xy), marker in zip(points.items(), "o^sDv"):
+    said = []
+    for k, (name, xy) in enumerate(points.items()):
         xy = np.asarray(xy)
         big = name == highlight
-        style: dict[str, Any] = dict(s=40 if big else 16, edgecolors=COLORS["ink"] if big else "none")
+        style: dict[str, Any] = dict(s=40 if big else 16, edgecolors=COLORS["ink"], linewidths=1.0 if big else 0.3)
+        style.update(marker=MARKERS[k % len(MARKERS)], c=series_style(k)["color"])
         if color:
-            style.update(c=color[name], cmap=SEQUENTIAL_CMAP, vmin=low, vmax=high, marker=marker)
+            style.update(c=color[name], cmap=SEQUENTIAL_CMAP, vmin=low, vmax=high)
         drawn = ax.scatter(xy[:, 0], xy[:, 1], label=f"{name} ({len(xy)})", alpha=0.75, **style)
+        where = f"{name}: {len(xy)} workspaces ({style['marker']} markers{', larger' if big else ''}) around "
+        where += f"({np.mean(xy[:, 0]):.3g}, {np.mean(xy[:, 1]):.3g})"
+        if color:
+            where += f", {color_label or 'value'} {np.min(color[name]):.3g} to {np.max(color[name]):.3g}"
+        said.append(where)
     if color:
         fig.colorbar(drawn, ax=ax, label=color_label)
     ax.set_xlabel(xlabel)
@@ -180,12 +243,12 @@ def latent_scatter(
     ax.set_title(title)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    return fig
+    return describe(fig, f"{title}: {xlabel} across, {ylabel} up. " + "; ".join(said) + ".")
 
 
 def _image(ax, grid: np.ndarray, title: str, alpha: float = 1.0) -> None:
     """A 2D grid of -1 / +1, x to the right and y up, occupied black."""
     ax.imshow(grid.T, origin="lower", cmap=GREYS_CMAP, vmin=-1, vmax=1, alpha=alpha)
-    ax.set_title(title, fontsize=8)
+    ax.set_title(title, fontsize=9)
     ax.set_xticks([])
     ax.set_yticks([])

@@ -24,6 +24,7 @@ from __future__ import annotations
 
 from collections.abc import Mapping
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 from matplotlib.colors import ListedColormap
@@ -35,11 +36,12 @@ from toolkit.geometry.robots import BoxRobot
 from toolkit.learning import metrics
 from toolkit.plots.alt import describe
 from toolkit.plots.cspace import slice_configs
-from toolkit.plots.palette import CATEGORICAL, COLORS, GREY_CMAP
+from toolkit.plots.palette import CATEGORICAL, COLORS, GREY_CMAP, HATCHES, halo, series_style
 
 DANGEROUS, CONSERVATIVE, BOUNDARY = COLORS["dangerous"], COLORS["conservative"], COLORS["boundary"]
 ANSWERS = ("valid kept", "valid rejected", "invalid rejected", "invalid kept (dangerous)")  # answer_codes 0-3
 ANSWER_COLORS = (COLORS["free"], CONSERVATIVE, COLORS["occupied"], DANGEROUS)  # free white, obstacles dark
+MISTAKE_MARKERS = {1: ".", 3: "s"}  # conservative dots, dangerous squares: the mistakes told without colour
 
 
 @dataclass(frozen=True)
@@ -151,13 +153,18 @@ def probability_maps(
     """Several models' P(valid) maps side by side, same grid and truth (e.g. the ``paper`` and ``strong`` presets)."""
     fig = Figure(figsize=(4.3 * len(probabilities) + 0.8, 4.7), layout="constrained")
     axes = fig.subplots(1, len(probabilities), squeeze=False)[0]
+    said = []
     for ax, (name, probability) in zip(axes, probabilities.items()):
         t = thresholds[name] if isinstance(thresholds, Mapping) else thresholds
         image = _draw_probability(ax, probability, valid, grid, t)
         ax.set_title(f"{name}: P(valid), threshold {t:.2f}", fontsize=9)
+        said.append(f"{name}, threshold {t:.2f}: " + _answers_in_words(np.asarray(probability) >= t, valid))
     fig.colorbar(image, ax=list(axes), label="P(valid)", shrink=0.8)
     _legend(fig, _mistake_handles())
-    return fig
+    text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
+    text += "configurations; grey, 0 black to 1 white) with the true C-obstacle boundary outlined, dangerous "
+    text += "mistakes as squares and conservative ones as dots. "
+    return describe(fig, text + "; ".join(said) + ".")
 
 
 def path_map(
@@ -180,17 +187,26 @@ def path_map(
         color=COLORS["node"],
         markersize=4,
         label="roadmap node, valid",
+        path_effects=halo(0.5, ("free",)),
     )
     ax.plot(
         nodes[~nodes_valid, x],
         nodes[~nodes_valid, y],
         "X",
         color=DANGEROUS,
-        markeredgecolor=COLORS["ink"],
         markersize=7,
         label="roadmap node in collision",
+        path_effects=halo(),
     )
-    ax.plot(path[:, x], path[:, y], "-", color=COLORS["path"], linewidth=2.5, label="returned path (checked exactly)")
+    ax.plot(
+        path[:, x],
+        path[:, y],
+        "-",
+        color=COLORS["path"],
+        linewidth=2.5,
+        label="returned path (checked exactly)",
+        path_effects=halo(2.5),
+    )
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=9)
     _legend(fig, _mistake_handles() + ax.get_lines())
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
@@ -205,7 +221,8 @@ def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
     _draw_counts(ax_counts, predicted_valid, valid)
     _draw_rates(ax_rates, {"": metrics.classification(np.ravel(predicted_valid), np.ravel(valid))})
     fig.suptitle(title or "Predictions against the exact checker")
-    return fig
+    text = f"{title or 'Predictions against the exact checker'}: " + _answers_in_words(predicted_valid, valid)
+    return describe(fig, text + ".")
 
 
 def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> Figure:
@@ -213,15 +230,20 @@ def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> 
     fig = Figure(figsize=(1.6 + 1.6 * len(scores), 3.4), layout="constrained")
     _draw_rates(fig.subplots(), scores)
     fig.suptitle(title or "Accuracy, TPR (valid kept), TNR (invalid rejected)")
-    return fig
+    said = "; ".join(
+        f"{name}: accuracy {s['acc']:.2f}, TPR {s['tpr']:.2f}, TNR {s['tnr']:.2f}" for name, s in scores.items()
+    )
+    text = f"{title + '. ' if title else ''}Bars of accuracy, TPR (the share of valid configurations kept) and TNR"
+    return describe(fig, f"{text} (the share in collision rejected). {said}.")
 
 
 def roc_curve(curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]], title: str = "") -> Figure:
     """ROC curves of ``{name: (P(valid), valid, threshold)}``, each with its operating point at ``threshold``."""
     fig = Figure(figsize=(4.2, 4.2), layout="constrained")
-    _draw_roc(fig.subplots(), curves)
+    said = _draw_roc(fig.subplots(), curves)
     fig.suptitle(title or "ROC: valid kept against invalid kept", fontsize=10)
-    return fig
+    text = "ROC curves: the share of valid configurations kept against the share in collision kept, as the threshold"
+    return describe(fig, f"{text} moves; the diagonal is chance. {said}.")
 
 
 def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, title: str = "") -> Figure:
@@ -232,10 +254,30 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     _draw_decision(ax_map, predicted, valid, grid)
     ax_map.set_title(f"decision at threshold {threshold:.2f}", fontsize=9)
     _draw_counts(ax_counts, predicted, valid)
-    _draw_roc(ax_roc, {"": (probability, valid, threshold)})
+    roc = _draw_roc(ax_roc, {"": (probability, valid, threshold)})
     fig.suptitle(title)
-    _legend(fig, [Patch(facecolor=c, edgecolor=COLORS["ink"], label=a) for a, c in zip(ANSWERS, ANSWER_COLORS)])
-    return fig
+    cells = [Patch(facecolor=c, edgecolor=COLORS["ink"]) for c in ANSWER_COLORS]
+    handles: list[Any] = [  # a mistake's cell with its marker on it
+        (cell, Line2D([], [], linestyle="", marker=MISTAKE_MARKERS[code], color=COLORS["ink"]))
+        if code in MISTAKE_MARKERS
+        else cell
+        for code, cell in enumerate(cells)
+    ]
+    boundary = Line2D([], [], color=BOUNDARY, path_effects=halo(1.2))
+    labels = ["true C-obstacle boundary", *ANSWERS]
+    fig.legend([boundary, *handles], labels, loc="outside lower center", ncols=5, fontsize=8, frameon=False)
+    text = f"{title + ': ' if title else ''}the model's decision at threshold {threshold:.2f} over {grid.names[0]} and "
+    text += f"{grid.names[1]}, each cell by its kind of answer (dangerous ones marked with squares, conservative ones "
+    text += f"with dots), their counts, and the ROC curve. {_answers_in_words(predicted, valid)}; {roc}."
+    return describe(fig, text)
+
+
+def _answers_in_words(predicted_valid, valid) -> str:
+    """The four kinds of answer and the rates, in words (a figure's text alternative)."""
+    counts = confusion_counts(predicted_valid, valid)
+    rates = metrics.classification(np.ravel(predicted_valid), np.ravel(valid))
+    said = ", ".join(f"{kind} {n}" for kind, n in counts.items())
+    return f"{said}; accuracy {rates['acc']:.2f}, TPR {rates['tpr']:.2f}, TNR {rates['tnr']:.2f}"
 
 
 # -- the panels ----------------------------------------------------------------
@@ -259,7 +301,16 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     area = (160.0 / max(grid.shape)) ** 2  # points^2: a dangerous square about half a cell wide
     for code, color, marker, size in ((3, DANGEROUS, "s", area), (1, CONSERVATIVE, "o", area / 4)):
         i, j = np.nonzero(codes == code)
-        ax.scatter(grid.axes[0][i], grid.axes[1][j], s=size, c=color, marker=marker, linewidths=0, label=ANSWERS[code])
+        ax.scatter(
+            grid.axes[0][i],
+            grid.axes[1][j],
+            s=size,
+            c=color,
+            marker=marker,
+            linewidths=0,
+            label=ANSWERS[code],
+            path_effects=halo(0.0),
+        )
     return image
 
 
@@ -277,6 +328,10 @@ def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):
         interpolation="nearest",
     )
     _draw_boundary(ax, valid, grid)
+    area = (120.0 / max(grid.shape)) ** 2  # points^2
+    for code, marker in MISTAKE_MARKERS.items():  # the mistakes told by shape too, in ink on their cells
+        i, j = np.nonzero(codes == code)
+        ax.scatter(grid.axes[0][i], grid.axes[1][j], s=area, c=COLORS["ink"], marker=marker, linewidths=0)
     return image
 
 
@@ -284,7 +339,8 @@ def _draw_boundary(ax, valid, grid: CSpaceSlice) -> None:
     """The true C-obstacle boundary: the 0.5 contour of the exact checker's answers; axis names."""
     valid = _on_grid(valid, grid, "valid")
     if valid.any() and not valid.all():
-        ax.contour(*grid.axes, valid.T.astype(float), levels=[0.5], colors=BOUNDARY, linewidths=1.2)
+        contour = ax.contour(*grid.axes, valid.T.astype(float), levels=[0.5], colors=BOUNDARY, linewidths=1.2)
+        contour.set_path_effects(halo(1.2))
     ax.set_xlabel(grid.names[0])
     ax.set_ylabel(grid.names[1])
 
@@ -298,13 +354,30 @@ def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
 
 def _mistake_handles() -> list:
     return [
-        Line2D([], [], color=DANGEROUS, marker="s", linestyle="", label="dangerous: kept, in collision"),
-        Line2D([], [], color=CONSERVATIVE, marker=".", linestyle="", label="conservative: rejected, free"),
+        Line2D(
+            [],
+            [],
+            color=DANGEROUS,
+            marker="s",
+            markeredgecolor=COLORS["ink"],
+            linestyle="",
+            label="dangerous: kept, in collision (squares)",
+        ),
+        Line2D(
+            [],
+            [],
+            color=CONSERVATIVE,
+            marker="o",
+            markersize=4,
+            markeredgecolor=COLORS["ink"],
+            linestyle="",
+            label="conservative: rejected, free (dots)",
+        ),
     ]
 
 
 def _legend(fig: Figure, handles: list) -> None:
-    handles = [Line2D([], [], color=BOUNDARY, label="true C-obstacle boundary"), *handles]
+    handles = [Line2D([], [], color=BOUNDARY, label="true C-obstacle boundary", path_effects=halo(1.2)), *handles]
     ncols = len(handles) if fig.get_figwidth() >= 9 else 2
     fig.legend(handles=handles, loc="outside lower center", ncols=ncols, fontsize=8, frameon=False)
 
@@ -314,6 +387,7 @@ def _draw_counts(ax, predicted_valid, valid) -> None:
     bars = ax.bar(range(len(counts)), list(counts.values()), color=ANSWER_COLORS, edgecolor=COLORS["ink"])
     ax.bar_label(bars, fontsize=8)
     ax.set_xticks(range(len(counts)), [a.replace(" ", "\n", 1) for a in ANSWERS], fontsize=8)
+    ax.set_xlabel("answer")
     ax.set_ylabel("configurations")
     rates = metrics.classification(np.ravel(predicted_valid), np.ravel(valid))
     ax.set_title(f"accuracy {rates['acc']:.2f}, TPR {rates['tpr']:.2f}, TNR {rates['tnr']:.2f}", fontsize=9)
@@ -323,33 +397,51 @@ def _draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
     keys, labels = ("acc", "tpr", "tnr"), ("accuracy", "TPR (valid kept)", "TNR (invalid rejected)")
     x, width = np.arange(len(scores)), 0.8 / len(keys)
     for k, (key, label) in enumerate(zip(keys, labels)):
-        bars = ax.bar(x + (k - 1) * width, [s[key] for s in scores.values()], width, color=CATEGORICAL[k], label=label)
-        ax.bar_label(bars, fmt="%.2f", fontsize=7)
+        bars = ax.bar(
+            x + (k - 1) * width,
+            [s[key] for s in scores.values()],
+            width,
+            color=CATEGORICAL[k],
+            hatch=HATCHES[k],
+            edgecolor=COLORS["ink"],
+            linewidth=0.6,
+            label=label,
+        )
+        ax.bar_label(bars, fmt="%.2f", fontsize=8)
     ax.set_xticks(x, list(scores), fontsize=8)
-    ax.set_ylim(0, 1.3)  # room for the legend above the bars
+    ax.set_xlabel("model" if len(scores) > 1 or any(scores) else "")
+    ax.set_ylim(0, 1.35)  # room for the legend above the bars
     ax.set_yticks(np.linspace(0, 1, 6))
-    ax.legend(fontsize=7, loc="upper center", ncols=3, frameon=False)
+    ax.set_ylabel("share")
+    ax.legend(fontsize=8, loc="upper center", ncols=2, frameon=False)
 
 
-def _draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> None:
+def _draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> str:
+    """The ROC curves and their operating points; returns them in words."""
     ax.plot([0, 1], [0, 1], color=COLORS["reference"], linestyle="--", label="chance")
+    said = []
     for i, (name, (probability, valid, threshold)) in enumerate(curves.items()):
         _, fpr, tpr = roc_points(probability, valid)
         auc = np.trapezoid(tpr[::-1], fpr[::-1])  # thresholds rise, so FPR falls: integrate left to right
-        style = dict(color=CATEGORICAL[i % len(CATEGORICAL)], linestyle=("-", "--", "-.", ":")[i % 4])
-        (line,) = ax.plot(fpr, tpr, label=f"{name + ': ' if name else ''}AUC {auc:.2f}", **style)
+        style = series_style(i)
+        (line,) = ax.plot(fpr, tpr, label=f"{name + ': ' if name else ''}AUC {auc:.2f}", **style | dict(marker=""))
         _, fpr_t, tpr_t = roc_points(probability, valid, [threshold])
         ax.plot(
             fpr_t,
             tpr_t,
-            "o",
+            style["marker"],
             color=line.get_color(),
             markeredgecolor=COLORS["ink"],
             label=f"{name + ' ' if name else ''}threshold {threshold:.2f}",
+        )
+        said.append(
+            f"{name + ': ' if name else ''}area under the curve {auc:.2f}; at threshold {threshold:.2f} it keeps "
+            f"{tpr_t[0]:.0%} of the valid configurations and {fpr_t[0]:.0%} of those in collision"
         )
     ax.set_xlabel("FPR: invalid kept (dangerous) = 1 - TNR")
     ax.set_ylabel("TPR: valid kept")
     ax.set_xlim(-0.02, 1.02)
     ax.set_ylim(-0.02, 1.02)
     ax.set_aspect("equal")
-    ax.legend(fontsize=7, loc="lower right")
+    ax.legend(fontsize=8, loc="lower right")
+    return "; ".join(said)

@@ -11,7 +11,8 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from toolkit.plots.palette import COLORS
+from toolkit.plots.alt import describe
+from toolkit.plots.palette import COLORS, halo
 
 STYLES = {  # checker -> (marker and line, colour, legend)
     "exact": ("o-", COLORS["exact"], "exact, default (compiled)"),
@@ -39,7 +40,21 @@ def crossover(results: dict) -> Figure:
         "shaded: the network is the cheaper check"
     )
     fig.tight_layout()
-    return fig
+    text = f"Cost per configuration of the exact and the learned check, {results['scenario']}, preset "
+    text += f"{results['preset']}{quick}, microseconds on log axes. "
+    return describe(fig, text + " ".join(_in_words(sweep) for sweep in sweeps.values()))
+
+
+def _in_words(sweep: dict) -> str:
+    """One panel in words: the learned check's cost against the default exact one's, where it is cheaper."""
+    x = np.asarray(sweep["values"], dtype=float)
+    exact, learned = np.asarray(sweep["exact_us"], float), np.asarray(sweep["learned_us"], float)
+    ratio = learned / exact  # (V,) below 1: the network is cheaper
+    wins = [f"{v:,.0f}" for v, r in zip(x, ratio) if r < 1]
+    low, high = (f"{r:.2f}" if r < 10 else f"{r:,.0f}" for r in (np.nanmin(ratio), np.nanmax(ratio)))
+    text = f"{sweep['label']} from {x[0]:,.0f} to {x[-1]:,.0f}: the network costs {low} to {high} times the exact "
+    text += "check; "
+    return text + (f"cheaper at {', '.join(wins)}." if wins else "never cheaper.")
 
 
 def _panel(ax, sweep: dict) -> None:
@@ -48,7 +63,8 @@ def _panel(ax, sweep: dict) -> None:
     exact, learned = np.asarray(sweep["exact_us"], float), np.asarray(sweep["learned_us"], float)
     for name in ("exact", "fcl", "learned"):
         style, colour, label = STYLES[name]
-        ax.plot(x, np.asarray(sweep[f"{name}_us"], float), style, color=colour, label=label)
+        outline = halo(1.5) if name == "learned" else []  # orange alone is too light on white
+        ax.plot(x, np.asarray(sweep[f"{name}_us"], float), style, color=colour, label=label, path_effects=outline)
     ax.fill_between(
         x,
         learned,
@@ -71,4 +87,4 @@ def _panel(ax, sweep: dict) -> None:
     ax.minorticks_off()
     ax.set_xlabel(sweep["label"])
     ax.set_ylabel("µs per configuration")
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=8)

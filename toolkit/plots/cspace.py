@@ -32,15 +32,16 @@ from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
-from toolkit.plots.palette import CATEGORICAL, COLORS
+from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES
 
 VALID_COLOR, INVALID_COLOR = COLORS["valid"], COLORS["invalid"]
 BLOCK_STYLE: dict[str, Any] = dict(facecolor=COLORS["block"], edgecolor=COLORS["occupied"], gid="block")
 
 
-def link_style(color: str) -> dict:
-    """A link's face and edge; a link in collision is hatched too (colour is never the only cue)."""
-    return dict(facecolor=color, edgecolor=COLORS["ink"], hatch="xx" if color == INVALID_COLOR else None)
+def link_style(color: str, hatch: str | None = None) -> dict:
+    """A link's face and edge; a link in collision is hatched too (colour is never the only cue), and so is each
+    configuration a legend names (``hatch``)."""
+    return dict(facecolor=color, edgecolor=COLORS["ink"], hatch="xx" if color == INVALID_COLOR else hatch or None)
 
 
 COLLISION_CMAP = ListedColormap([COLORS["free"], COLORS["occupied"]])  # 0: valid, 1: in collision (dark)
@@ -81,19 +82,20 @@ def _dof_label(robot: BoxRobot, index: int) -> str:
 def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
     """The workspace's blocks: one ``Rectangle`` per block in 2D, one ``Poly3DCollection`` per block in 3D.
 
-    Office blocks are colored by furniture type (``workspace.labels``); every patch has gid ``"block"``.
+    Office blocks are colored and hatched by furniture type (``workspace.labels``); every patch has gid ``"block"``.
     """
-    title = title or f"{workspace.family or 'workspace'}: {len(workspace.boxes)} blocks in " + " x ".join(
-        f"{s:g}" for s in workspace.upper - workspace.lower
-    )
+    size = " x ".join(f"{s:g}" for s in workspace.upper - workspace.lower)
+    title = title or f"{workspace.family or 'workspace'}: {len(workspace.boxes)} blocks in {size}"
     kinds = sorted(set(workspace.labels))
     colors = {kind: CATEGORICAL[i % len(CATEGORICAL)] for i, kind in enumerate(kinds)}
+    hatches = {kind: HATCHES[i % len(HATCHES)] for i, kind in enumerate(kinds)}
     box_colors = [colors[label] for label in workspace.labels] or [COLORS["block"]] * len(workspace.boxes)
+    box_hatches = [hatches[label] for label in workspace.labels] or [""] * len(workspace.boxes)
     if workspace.dim == 2:
         fig = Figure(figsize=(5, 5))
         ax = fig.subplots()
-        for (lo, hi), color in zip(workspace.boxes, box_colors):
-            ax.add_patch(Rectangle(lo, *(hi - lo), facecolor=color, edgecolor=COLORS["ink"], gid="block"))
+        for (lo, hi), color, hatch in zip(workspace.boxes, box_colors, box_hatches):
+            ax.add_patch(Rectangle(lo, *(hi - lo), facecolor=color, edgecolor=COLORS["ink"], hatch=hatch, gid="block"))
         ax.set_xlim(workspace.lower[0], workspace.upper[0])
         ax.set_ylim(workspace.lower[1], workspace.upper[1])
         ax.set_aspect("equal")
@@ -102,17 +104,43 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
     else:
         fig = Figure(figsize=(7, 6))
         ax = fig.add_subplot(projection="3d")
-        for (lo, hi), color in zip(workspace.boxes, box_colors):
+        for (lo, hi), color, hatch in zip(workspace.boxes, box_colors, box_hatches):
             add_box_3d(
-                ax, aabb_corners(lo, hi), facecolor=color, edgecolor=COLORS["ink"], linewidth=0.3, alpha=0.8
+                ax,
+                aabb_corners(lo, hi),
+                facecolor=color,
+                edgecolor=COLORS["ink"],
+                linewidth=0.3,
+                alpha=0.8,
+                hatch=hatch,
             ).set_gid("block")
         frame_region(ax, workspace)
         ax.set_box_aspect(workspace.upper - workspace.lower)
-        if kinds:
-            handles = [Patch(facecolor=colors[k], edgecolor=COLORS["ink"], label=k) for k in kinds]
-            ax.legend(handles=handles, fontsize=8, loc="upper left")
+        _few_ticks(ax)
+    if kinds:
+        handles = [Patch(facecolor=colors[k], edgecolor=COLORS["ink"], hatch=hatches[k], label=k) for k in kinds]
+        ax.legend(handles=handles, fontsize=8, loc="upper left")
     ax.set_title(title)
-    return fig
+    counts = [f"{workspace.labels.count(k)} {k}" for k in kinds] if kinds else []
+    text = f"The {workspace.family or 'workspace'} workspace, {size}: {len(workspace.boxes)} blocks"
+    text += f" ({', '.join(counts)}, each kind its own colour and hatch)" if counts else ""
+    return describe(fig, text + f", {_occupied_share(workspace):.0%} of the region occupied.")
+
+
+def _occupied_share(workspace: Workspace) -> float:
+    """The share of the occupancy grid's cells that are occupied."""
+    return float(np.mean(workspace.occupancy() > 0))
+
+
+def _few_ticks(ax) -> None:
+    """A 3D axes with a few tick labels per axis, at 8 points: they do not run into each other (a flat region, as
+    the office's 41 x 41 x 6, gets its z axis labelled at its ends only)."""
+    ax.locator_params(nbins=4)
+    ax.tick_params(labelsize=8)
+    aspect = ax.get_box_aspect()  # (3,) the drawn lengths of x, y, z
+    if aspect is not None and aspect[2] < 0.3 * max(aspect[:2]):
+        ax.set_zticks(ax.get_zlim())
+        ax.zaxis.labelpad = 2
 
 
 def occupancy_figure(workspace: Workspace, layers: Sequence[int] | None = None, columns: int = 4) -> Figure:
@@ -133,19 +161,37 @@ def occupancy_figure(workspace: Workspace, layers: Sequence[int] | None = None, 
     rows = -(-len(images) // columns)
     panel = 4.5 if len(images) == 1 else 2.6  # inches
     fig = Figure(figsize=(panel * columns, panel * rows + 0.4))
-    axes = fig.subplots(rows, columns, squeeze=False, gridspec_kw={"hspace": 0.35, "wspace": 0.3}).ravel()
-    for ax, image, title in zip(axes, images, titles):
+    axes = fig.subplots(
+        rows, columns, squeeze=False, sharex=True, sharey=True, gridspec_kw={"hspace": 0.35, "wspace": 0.15}
+    )
+    for ax, image, title in zip(axes.ravel(), images, titles):
         ax.imshow(image.T, origin="lower", extent=extent, cmap=OCCUPANCY_CMAP, vmin=-1, vmax=1, interpolation="nearest")
         ax.set_title(title, fontsize=9)
         ax.locator_params(nbins=3)  # few tick labels: drawing text is most of this figure's cost
-        ax.tick_params(labelsize=7)
-    for ax in axes[len(images) :]:
+        ax.tick_params(labelsize=8)
+    for row in axes:
+        row[0].set_ylabel("y")
+    for column in range(columns):  # the lowest panel of each column names x
+        drawn = [r for r in range(rows) if r * columns + column < len(images)]
+        axes[drawn[-1], column].set_xlabel("x")
+        axes[drawn[-1], column].tick_params(labelbottom=True)
+        for r in drawn[:-1]:
+            axes[r, column].tick_params(labelbottom=False)
+    for c in range(columns):
+        for r in range(rows):
+            axes[r, c].tick_params(labelleft=c == 0)
+    for ax in axes.ravel()[len(images) :]:
         ax.remove()
     fig.suptitle(
         f"Occupancy grid {' x '.join(map(str, grid.shape))}\ndark = +1 (occupied), white = -1 (free)", fontsize=10
     )
     fig.subplots_adjust(top=1 - 0.8 / fig.get_figheight())  # room for the two title lines
-    return fig
+    shares = [f"{np.mean(image > 0):.0%}" for image in images]
+    text = f"Occupancy grid of the {workspace.family or 'workspace'} workspace, {' x '.join(map(str, grid.shape))} "
+    text += f"cells, occupied dark, free white: {np.mean(grid > 0):.0%} of the cells occupied"
+    if grid.ndim == 3:
+        text += f"; one image per z layer, {len(images)} drawn, occupied per layer from bottom: {', '.join(shares)}"
+    return describe(fig, text + ".")
 
 
 # -- robots ------------------------------------------------------------------------
@@ -158,14 +204,23 @@ def _nearby_blocks(workspace: Workspace, lo: np.ndarray, hi: np.ndarray) -> np.n
 
 
 def draw_robot(
-    ax, robot: BoxRobot, Q, *, colors: list[str], view: str = "3d", workspace: Workspace | None = None, margin=1.0
+    ax,
+    robot: BoxRobot,
+    Q,
+    *,
+    colors: list[str],
+    view: str = "3d",
+    workspace: Workspace | None = None,
+    margin=1.0,
+    hatches: Sequence[str | None] | None = None,
 ) -> None:
     """Draw the link boxes of configurations ``Q (k, dof)``, one colour each, and the blocks within ``margin`` of them,
     on one axes (the building block of :func:`robot_figure`, :func:`cspace_slice` and the scene figures).
 
     ``view``: ``"3d"`` (``ax`` an mplot3d axes) or a plane ``"xy"``, ``"xz"``, ``"yz"`` (the shadow of each box,
     drawn far to near as seen from the page's front: in ``"xy"`` from above, so the highest link lies on top).
-    Links have gid ``"link"``, blocks gid ``"block"``; the axes' limits frame them.
+    Links have gid ``"link"``, blocks gid ``"block"``; the axes' limits frame them. ``hatches``: one hatch per
+    configuration (a second cue where colours tell configurations apart).
     """
     Q = robot.check_configs(Q)  # (k, dof)
     if view != "3d" and view not in VIEWS:
@@ -180,16 +235,17 @@ def draw_robot(
         blocks = workspace.boxes[_nearby_blocks(workspace, lo, hi)]
     else:
         blocks = np.zeros((0, 2, robot.dim))
+    hatches = hatches if hatches is not None else [None] * len(Q)
     link_boxes = [
-        (box_corners(c, r, h), color)
-        for cs, rs, color in zip(centers, rotations, colors)
+        (box_corners(c, r, h), color, hatch)
+        for cs, rs, color, hatch in zip(centers, rotations, colors, hatches)
         for c, r, h in zip(cs, rs, half)
     ]
     if view == "3d":
         for b_lo, b_hi in blocks:
             add_box_3d(ax, aabb_corners(b_lo, b_hi), linewidth=0.3, alpha=0.25, **BLOCK_STYLE)
-        for corners, color in link_boxes:
-            add_box_3d(ax, corners, facecolor=color, edgecolor=COLORS["ink"], linewidth=0.4, alpha=0.9).set_gid("link")
+        for corners, color, hatch in link_boxes:
+            add_box_3d(ax, corners, linewidth=0.4, alpha=0.9, **link_style(color, hatch)).set_gid("link")
         ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), zlim=(lo[2], hi[2]), xlabel="x", ylabel="y", zlabel="z")
         ax.set_box_aspect(hi - lo)
         return
@@ -197,9 +253,9 @@ def draw_robot(
     for b_lo, b_hi in blocks:
         ax.add_patch(Rectangle(b_lo[list(axes)], *(b_hi - b_lo)[list(axes)], alpha=0.5, **BLOCK_STYLE))
     toward_viewer = np.cross(*np.eye(3)[list(axes)]) if robot.dim == 3 else np.zeros(2)  # (D,) out of the page
-    for corners, color in sorted(link_boxes, key=lambda box: float((box[0] @ toward_viewer).max())):
+    for corners, color, hatch in sorted(link_boxes, key=lambda box: float((box[0] @ toward_viewer).max())):
         ax.add_patch(  # nearest the viewer last, on top: from above, a higher link hides what lies under it
-            Polygon(outline(corners, axes), linewidth=0.6, alpha=0.85, gid="link", **link_style(color))
+            Polygon(outline(corners, axes), linewidth=0.6, alpha=0.85, gid="link", **link_style(color, hatch))
         )
     ax.set_xlim(lo[axes[0]], hi[axes[0]])
     ax.set_ylim(lo[axes[1]], hi[axes[1]])
@@ -240,17 +296,36 @@ def robot_figure(
         raise ValueError(f"{len(labels)} labels for {len(Q)} configurations: give one label a configuration")
     fig = Figure(figsize=(4.2 * len(views), 4.2 + 0.4 * (labels is not None)))
     colors = _link_colors(len(Q), valid)
+    hatches = [HATCHES[k % len(HATCHES)] for k in range(len(Q))] if valid is None else [None] * len(Q)
     for i, view in enumerate(views):
         ax = fig.add_subplot(1, len(views), i + 1, **({"projection": "3d"} if view == "3d" else {}))
-        draw_robot(ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin)
+        draw_robot(ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin, hatches=hatches)
         ax.set_title(f"{robot.name}: {view}", fontsize=10)
+        if view == "3d":
+            _few_ticks(ax)
     if labels is None and valid is not None:
         labels = ["valid" if color == VALID_COLOR else "in collision" for color in colors]
     if labels is not None:
-        handles = [Patch(label=label, **link_style(c)) for label, c in dict(zip(labels, colors)).items()]
+        styles = {label: link_style(c, h) for label, c, h in zip(labels, colors, hatches)}
+        handles = [Patch(label=label, **style) for label, style in styles.items()]
         fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0.08 if labels is not None else 0, 1, 1))
-    return fig
+    text = f"The {robot.name} robot's link boxes at {len(Q)} configuration{'s' if len(Q) > 1 else ''}"
+    seen = ["in 3D" if v == "3d" else f"in the {v} plane" for v in views]
+    text += ", seen " + (", ".join(seen[:-1]) + " and " if len(seen) > 1 else "") + seen[-1]
+    text += ", with the blocks near it" if workspace is not None else ""
+    if valid is not None:
+        n_valid = int(np.sum(np.asarray(valid, dtype=bool)))
+        text += f": {n_valid} valid, {len(Q) - n_valid} in collision (hatched)"
+    elif labels is not None:
+        text += ": " + ", ".join(f"{label} ({_hatch_name(h)})" for label, h in zip(labels, hatches))
+    return describe(fig, text + ".")
+
+
+def _hatch_name(hatch: str | None) -> str:
+    return {"": "plain", "//": "hatched with slashes", "..": "dotted", "xx": "cross-hatched"}.get(
+        hatch or "", "hatched"
+    )
 
 
 # -- configuration space --------------------------------------------------------------
@@ -358,7 +433,7 @@ def cspace_slice(
     ax = fig.add_subplot(1, 2 if view else 1, 1)
     valid = _draw_cspace(ax, checker, q, joints, resolution, None)
     star: dict[str, Any] = dict(
-        marker="*", markersize=14, markeredgecolor=COLORS["ink"], color=_link_colors(1, q_valid)[0]
+        marker="*", markersize=14, markeredgecolor=COLORS["free"], color=_link_colors(1, q_valid)[0]
     )
     ax.plot(q[joints[0]], q[joints[1]], linestyle="none", gid="q", **star)
     fixed = [f"{robot.dof_names[k]}={q[k]:.2f}" for k in range(robot.dof) if k not in joints]
@@ -372,6 +447,8 @@ def cspace_slice(
         draw_robot(robot_ax, robot, q[None], colors=colors, view=view, workspace=workspace, margin=margin)
         verdict = "valid" if q_valid[0] else "in collision"
         robot_ax.set_title(f"the robot at the star ({view}): {verdict}", fontsize=9)
+        if view == "3d":
+            _few_ticks(robot_ax)
     fig.tight_layout()
     swept = " and ".join(robot.dof_names[k] for k in joints)
     text = f"Slice of the {robot.name} robot's configuration space over {swept}, the other DoF fixed: "

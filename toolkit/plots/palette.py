@@ -5,14 +5,22 @@ for colour-blind readers (*Color Universal Design*, 2008) and every two roles th
 shows together stay apart for deuteranopes, protanopes and tritanopes too (at least
 :data:`MIN_DISTANCE` CIEDE2000 apart under simulated dichromacy; ``tests/test_palette.py``
 measures it). Colour is never the only cue: validity also has a marker (``o`` valid, ``x`` in
-collision) or a hatch, a candidate path is dashed and the final one solid, and a legend or the
-title says which is which.
+collision) or a hatch, a candidate path is dashed and the final one solid, many lines differ by
+line style and marker too (:data:`LINE_STYLES`, :data:`MARKERS`), categories by hatch
+(:data:`HATCHES`), and a legend or the title says which is which.
+
+A mark stands out from what it is drawn on (WCAG 2.1, 1.4.11: a contrast of at least 3:1, :func:`contrast`):
+by its own colour, or by an outline (:func:`halo`: a black ring, then a white one) where it is drawn on a
+picture that runs from dark to light or on colours too near its own. :data:`MARKS_ON` lists, per figure,
+the backgrounds and the marks drawn on them; ``tests/test_palette.py`` computes every pair.
 
 - :data:`COLORS` — role name to ``"#rrggbb"`` (``"valid"``, ``"invalid"``, ``"candidate"``, ...);
 - :data:`SHOWN_TOGETHER` — the roles each figure (or the viewer) shows side by side;
 - :data:`PROBABILITY_CMAP` — the colour map of a continuous probability (cividis: monotone in
   lightness, readable in every colour vision), and :func:`probability_rgb` for the viewer;
-- :func:`rgb` — a role's colour as ``(r, g, b)`` bytes, as the viewer draws it.
+- :func:`rgb` — a role's colour as ``(r, g, b)`` bytes, as the viewer draws it;
+- :data:`LINE_COLORS`, :data:`LINE_STYLES`, :data:`MARKERS`, :data:`HATCHES` — series a legend names;
+- :func:`contrast`, :func:`halo`, :data:`MARKS_ON` — marks that stand out from what they are drawn on.
 """
 
 from __future__ import annotations
@@ -20,6 +28,8 @@ from __future__ import annotations
 import matplotlib
 import numpy as np
 import numpy.typing as npt
+from matplotlib import patheffects
+from matplotlib.colors import to_rgb
 
 OKABE_ITO = {  # Okabe & Ito (2008), the eight colours of Color Universal Design
     "black": "#000000",
@@ -42,12 +52,12 @@ COLORS: dict[str, str] = {
     "boundary": OKABE_ITO["blue"],  # the true C-obstacle's edge
     # planning (notebook 04): roadmap, paths, repairs
     "node": OKABE_ITO["black"],
-    "edge": "#888888",
+    "edge": "#7d7d7d",  # 3.1:1 on the C-obstacles' light grey, yet apart from blue for a tritanope
     "candidate": OKABE_ITO["sky blue"],  # dashed: a path the lazy planner has not confirmed yet
     "path": OKABE_ITO["blue"],  # solid: the path returned, checked exactly
     "removed": OKABE_ITO["vermillion"],  # what the exact checker rejected during a repair
     "endpoint": OKABE_ITO["black"],  # start (square) and goal (star): roadmap nodes, drawn large
-    "rejected": "#888888",  # samples a sampler threw away
+    "rejected": "#7d7d7d",  # samples a sampler threw away
     # geometry
     "block": "#888888",  # the workspace's blocks in a figure
     "block_outline": OKABE_ITO["orange"],  # blocks outlined over a dark C-space picture
@@ -71,10 +81,29 @@ COLORS: dict[str, str] = {
     "free": "#ffffff",  # free space in a C-space picture
     "occupied": "#333333",  # obstacles in a C-space picture or an occupancy grid
     "c_obstacle": "#e0e0e0",  # the C-obstacles behind a roadmap
+    "panel_text": "#5c5f66",  # the viewer panel's label text (viser's is 3.3:1 on white; this, 6.3:1)
 }
 
 CATEGORICAL = (OKABE_ITO["blue"], OKABE_ITO["orange"], OKABE_ITO["sky blue"], OKABE_ITO["black"], "#888888", "#ffffff")
-"""Colours for categories a legend names (furniture kinds, configurations, series): every two apart, as roles."""
+"""Colours for filled categories a legend names (furniture kinds, configurations, bars): every two apart, as
+roles; each drawn with a black edge and a hatch of its own (:data:`HATCHES`)."""
+
+HATCHES = ("", "//", "..", "xx", "\\\\", "++")
+"""Hatches of the categories, in :data:`CATEGORICAL`'s order: a category told without its colour."""
+
+LINE_COLORS = (
+    OKABE_ITO["blue"],
+    OKABE_ITO["vermillion"],
+    OKABE_ITO["black"],
+    OKABE_ITO["bluish green"],
+    OKABE_ITO["reddish purple"],
+    "#7d7d7d",
+)
+"""Colours of lines and points a legend names (series, models, DoFs): each at least 3:1 on white."""
+LINE_STYLES = ("-", "--", "-.", ":")
+MARKERS = ("o", "s", "^", "D", "v", "P", "X")
+"""Line styles and marker shapes of series, in turn: a series told without its colour (series ``k`` takes
+``LINE_COLORS[k % 6]``, ``LINE_STYLES[k % 4]``, ``MARKERS[k % 7]``; :func:`series_style`)."""
 
 SHOWN_TOGETHER: dict[str, tuple[str, ...]] = {
     "robot and C-space figures": ("valid", "invalid", "block", "ink"),
@@ -99,6 +128,68 @@ PROBABILITY_CMAP = "cividis"  # P(valid): dark blue (0, in collision) to yellow 
 GREYS_CMAP = "gray_r"  # an occupancy grid: free light, occupied dark
 GREY_CMAP = "gray"  # P(valid) under coloured marks (the classifier's mistakes): 0 black, 1 white
 SEQUENTIAL_CMAP = "viridis"  # any other quantity on a colour bar
+
+
+HALO = ("ink", "free")  # a mark's outline, inside out: a black ring, then a white one
+MARKS_ON: dict[str, tuple[tuple[str, ...], dict[str, tuple[str, ...]]]] = {
+    # figure: (what its marks are drawn on, {mark: its outline rings, inside out}); a name is a role, a colour
+    # map ("cmap:NAME", sampled over its range) or a colour
+    "classifier probability": (
+        ("cmap:" + GREY_CMAP,),
+        {"boundary": HALO, "dangerous": HALO, "conservative": HALO, "node": ("free",), "path": HALO},
+    ),
+    "classifier answers": (
+        ("free", "conservative", "occupied", "dangerous"),
+        {"boundary": HALO},
+    ),
+    "classifier mistakes": (("dangerous", "conservative"), {"ink": ()}),  # markers on the wrong cells
+    "CAE errors": (("phantom", "missed"), {"ink": ()}),  # markers on the wrongly decoded cells
+    "sampler figure": (("free", "c_obstacle"), {"rejected": (), "valid": (), "invalid": HALO, "node": ()}),
+    "roadmap figure": (
+        ("free", "c_obstacle"),
+        {"node": (), "edge": (), "path": (), "candidate": HALO, "removed": HALO, "endpoint": (), "occupied": ()},
+    ),
+    "narrow passage": (("free", "c_obstacle"), {"highlight": HALO}),
+    "C-space picture": (("occupied",), {"block_outline": ()}),  # a block lies inside its C-obstacle
+    "C-space slice": (("free", "occupied"), {"valid": ("free",), "invalid": ("free",)}),
+    "crossover": (("free",), {"exact": (), "fcl": (), "learned": HALO, "reference": ()}),
+    "path profile": (("free", "shade"), {"ink": (), "probability": (), "occupied": ()}),
+    "scene frame": (("free",), {"trace": HALO, "ink": ()}),
+    "series": (("free",), dict.fromkeys(LINE_COLORS, ())),
+}
+"""The marks of each figure and what they are drawn on: each stands out at :data:`MIN_CONTRAST` or more."""
+MIN_CONTRAST = 3.0  # WCAG 2.1, 1.4.11 (non-text contrast)
+
+
+def luminance(color: str) -> float:
+    """Relative luminance of ``color`` (WCAG 2.1): 0 black, 1 white."""
+    channels = np.array(to_rgb(color))
+    linear = np.where(channels <= 0.04045, channels / 12.92, ((channels + 0.055) / 1.055) ** 2.4)
+    return float(linear @ (0.2126, 0.7152, 0.0722))
+
+
+def contrast(a: str, b: str) -> float:
+    """WCAG 2.1's contrast ratio of two colours (roles or colours): 1 (the same) to 21 (black on white)."""
+    low, high = sorted(luminance(COLORS.get(c, c)) for c in (a, b))
+    return (high + 0.05) / (low + 0.05)
+
+
+def halo(linewidth: float = 1.0, rings: tuple[str, ...] = HALO) -> list:
+    """Path effects that outline a mark of ``linewidth`` points with ``rings`` (roles, inside out; default a black
+    ring, then a white one): it then stands out on any background, dark or light."""
+    effects = [
+        patheffects.Stroke(linewidth=linewidth + 1.6 * (k + 1), foreground=COLORS[role]) for k, role in enumerate(rings)
+    ]
+    return effects[::-1] + [patheffects.Normal()]  # the outer ring first, the mark on top
+
+
+def series_style(k: int) -> dict:
+    """Colour, line style and marker of the ``k``-th series a legend names (``plot(..., **series_style(k))``)."""
+    return dict(
+        color=LINE_COLORS[k % len(LINE_COLORS)],
+        linestyle=LINE_STYLES[k % len(LINE_STYLES)],
+        marker=MARKERS[k % len(MARKERS)],
+    )
 
 
 def rgb(role: str) -> tuple[int, int, int]:

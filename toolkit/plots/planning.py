@@ -25,7 +25,7 @@ from toolkit.planning.prm import GOAL, START, PlanStep
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import describe
 from toolkit.plots.cspace import checker_workspace, slice_configs
-from toolkit.plots.palette import CATEGORICAL, COLORS
+from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, halo
 
 MODES = ("without", "with")
 STAGE_KEYS = ("sampling_s", "connection_s", "query_s")  # PRM stats, in the order the planner spends them
@@ -78,8 +78,10 @@ def _draw_cspace(ax, exact: CollisionChecker) -> None:
     ax.set_xlim(ws.lower[0], ws.upper[0])
     ax.set_ylim(ws.lower[1], ws.upper[1])
     ax.set_aspect("equal")
-    ax.set_xticks([])
-    ax.set_yticks([])
+    ax.locator_params(nbins=4)
+    ax.tick_params(labelsize=8)
+    ax.set_xlabel("x")
+    ax.set_ylabel("y")
 
 
 def samplers(exact: CollisionChecker, samples: dict[str, np.ndarray], attempts: int | None = None) -> Figure:
@@ -91,10 +93,11 @@ def samplers(exact: CollisionChecker, samples: dict[str, np.ndarray], attempts: 
         ax.scatter(Q[:, 0], Q[:, 1], s=6, color=NODE_COLOR)
         count = f"{len(Q)} sample{'' if len(Q) == 1 else 's'}"
         ax.set_title(f"{name}: {count}" + (f" of {attempts} attempts" if attempts else ""), fontsize=9)
-    fig.suptitle("Samples over the exact checker (grey: C-obstacles)")
+    fig.suptitle("Samples over the exact checker (grey: C-obstacles)", fontsize=10)
     fig.tight_layout()
-    counts = ", ".join(f"{name} {len(Q)}" for name, Q in samples.items())
-    return describe(fig, f"Samples of {len(samples)} samplers over the point robot's C-obstacles (grey): {counts}.")
+    counts = "; ".join(f"{name}: {len(Q)}" for name, Q in samples.items())
+    of = f" of {attempts} attempts each" if attempts else ""
+    return describe(fig, f"Samples of {len(samples)} samplers{of} over the point robot's C-obstacles (grey). {counts}.")
 
 
 def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) -> Figure:
@@ -107,11 +110,15 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
     groups: list[tuple[np.ndarray, dict[str, Any], str]] = [  # (mask, scatter style, label)
         (~accepted, dict(marker="x", s=10, color=COLORS["rejected"]), "rejected"),
         (accepted & truly_valid, dict(s=10, marker="o", color=COLORS["valid"]), "S' (accepted)"),
-        (accepted & ~truly_valid, dict(s=30, marker="X", color=COLORS["invalid"]), "S', truly in collision"),
+        (
+            accepted & ~truly_valid,
+            dict(s=30, marker="X", color=COLORS["invalid"], path_effects=halo(0.0)),
+            "S', truly in collision",
+        ),
     ]
     for mask, style, label in groups:
         ax.scatter(S[mask, 0], S[mask, 1], label=f"{label}: {mask.sum()}", **style)
-    ax.legend(fontsize=7, loc="upper left", framealpha=0.9)
+    ax.legend(fontsize=8, loc="upper left", framealpha=0.9)
     ax.set_title(f"S: {len(S)} uniform attempts", fontsize=9)
     fig.tight_layout()
     counts = "; ".join(f"{label}: {mask.sum()} (marker {style['marker']})" for mask, style, label in groups)
@@ -131,14 +138,33 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
     ax.scatter(*P[~confirmed].T, s=9, facecolors="none", edgecolors=NODE_COLOR, linewidths=0.7, zorder=3, label="node")
     if len(step.path):
         color, style = PATH_STYLES[step.stage]
-        ax.plot(*P[step.path].T, color=color, linestyle=style, linewidth=2.2, zorder=4, label=f"path ({step.stage})")
-    ax.add_collection(LineCollection(P[step.edges[removed_edge]], colors=REPAIR_COLOR, linewidths=3, zorder=5))
-    ax.scatter(*P[step.removed_nodes].T, s=70, marker="X", color=REPAIR_COLOR, zorder=5, label="removed by a repair")
+        outline = halo(2.2) if color != COLORS["path"] else []  # the candidate's light blue needs an outline
+        ax.plot(
+            *P[step.path].T,
+            color=color,
+            linestyle=style,
+            linewidth=2.2,
+            zorder=4,
+            label=f"path ({step.stage})",
+            path_effects=outline,
+        )
+    removed = LineCollection(P[step.edges[removed_edge]], colors=REPAIR_COLOR, linewidths=3, zorder=5)
+    removed.set_path_effects(halo(3))
+    ax.add_collection(removed)
+    ax.scatter(
+        *P[step.removed_nodes].T,
+        s=70,
+        marker="X",
+        color=REPAIR_COLOR,
+        zorder=5,
+        label="removed by a repair",
+        path_effects=halo(0.0),
+    )
     for node, marker, name in ((START, "s", "start"), (GOAL, "*", "goal")):
         ax.scatter(
             *P[node], s=110, marker=marker, color=COLORS["endpoint"], edgecolors=COLORS["free"], zorder=6, label=name
         )
-    ax.set_title(f"round {step.round}, {step.stage}: {len(P)} nodes, {len(step.edges)} edges", fontsize=9)
+    ax.set_title(f"round {step.round}, {step.stage}:\n{len(P)} nodes, {len(step.edges)} edges", fontsize=9)
 
 
 def roadmap(exact: CollisionChecker, step: PlanStep, title: str = "") -> Figure:
@@ -165,24 +191,23 @@ def step_in_words(step: PlanStep) -> str:
 def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int = 3) -> Figure:
     """Several steps of Algorithm 1 side by side, the roadmap drawn at each (one panel per step)."""
     rows = -(-len(steps) // columns)
-    fig = Figure(figsize=(3.6 * columns, 4.0 * rows))
+    fig = Figure(figsize=(3.8 * columns, 4.2 * rows + 0.8), layout="constrained")
     axes = fig.subplots(rows, columns, squeeze=False).ravel()
     for ax, step in zip(axes, steps):
         _draw_roadmap(ax, exact, step)
     for ax in axes[len(steps) :]:
         ax.set_axis_off()
-    fig.suptitle("Algorithm 1 step by step (hollow: not yet confirmed exactly; X: removed by a repair)")
+    fig.suptitle("Algorithm 1 step by step\n(hollow: not yet confirmed exactly; X: removed by a repair)", fontsize=10)
     _roadmap_legend(fig, axes)
-    fig.tight_layout(rect=(0, 0.6 / fig.get_figheight(), 1, 1))
     return describe(fig, "Algorithm 1 step by step. " + " ".join(step_in_words(step) for step in steps))
 
 
 def _roadmap_legend(fig: Figure, axes) -> None:
     """One legend below the panels naming every kind of mark any of them drew (each name once)."""
     named = {label: handle for ax in axes for handle, label in zip(*ax.get_legend_handles_labels())}
-    fig.legend(
-        list(named.values()), list(named), loc="lower center", ncol=min(len(named), 4), fontsize=7, frameon=False
-    )
+    style: dict[str, Any] = dict(ncol=min(len(named), 4), fontsize=8, frameon=False)
+    style["loc"] = "outside lower center" if fig.get_layout_engine() is not None else "lower center"
+    fig.legend(list(named.values()), list(named), **style)
 
 
 def stage_times(panels: dict[str, dict]) -> Figure:
@@ -191,8 +216,9 @@ def stage_times(panels: dict[str, dict]) -> Figure:
     into the planner's stages in the shares of an average query (``_share``; the rest, encoding and set-up, on top
     as "other"); a whisker from the total's first to third quartile; the ratio of the median totals above each
     pair."""
-    fig = Figure(figsize=(5.2 * len(panels), 4.6))
+    fig = Figure(figsize=(5.2 * len(panels), 4.8))
     axes = fig.subplots(1, len(panels), squeeze=False)[0]
+    said = []
     for ax, (title, planning) in zip(axes, panels.items()):
         names = list(planning)  # the samplers planned, in their order
         x = np.arange(len(names))[:, None] + np.array([-0.2, 0.2])  # (samplers, modes) bar centres
@@ -213,7 +239,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
                 label=STAGE_LABELS[key],
                 color=CATEGORICAL[k],
                 hatch=STAGE_HATCHES[k],  # a second cue besides the colour
-                edgecolor=COLORS["free"],
+                edgecolor=COLORS["ink"],
                 linewidth=0.5,
             )
             bottom = bottom + table[key]
@@ -234,13 +260,22 @@ def stage_times(panels: dict[str, dict]) -> Figure:
             ax.annotate(
                 f"{r:.2f}x", (i, top[i].max()), xytext=(0, 3), textcoords="offset points", ha="center", fontsize=8
             )
-        ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=7)
+        ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=8)
+        ax.set_xlabel("sampler, without / with prediction")
         ax.set_ylabel("seconds per query (median)")
         ax.set_ylim(0, top.max() * 1.15)
         ax.set_title(f"{title}: median total with / without prediction", fontsize=9)
-    fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=5, fontsize=8, frameon=False)
-    fig.tight_layout(rect=(0, 0.07, 1, 1))
-    return fig
+        said.append(
+            f"{title}: "
+            + ", ".join(
+                f"{s} {table['total_s'][i, 0]:.3g} s without, {table['total_s'][i, 1]:.3g} s with ({ratio[i]:.2f}x)"
+                for i, s in enumerate(names)
+            )
+        )
+    fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=3, fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0, 0.12, 1, 1))
+    text = "Median planning time per query without and with prediction, per sampler, split into the planner's stages"
+    return describe(fig, f"{text} (hatched), with the ratio with / without above each pair. {'; '.join(said)}.")
 
 
 def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figure:
@@ -250,8 +285,9 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
     means, our eager or lazy exact planner and medians), a series what was timed (e.g. "2DS, sampling"). Ratios
     against different baselines never share a bar group; the panels share one log axis, so heights compare.
     """
-    fig = Figure(figsize=(3.8 * len(baselines), 4.0))
+    fig = Figure(figsize=(3.8 * len(baselines), 4.2))
     axes = fig.subplots(1, len(baselines), squeeze=False, sharey=True)[0]
+    said = []
     for ax, (title, series) in zip(axes, baselines.items()):
         width = 0.8 / len(series)
         for i, (name, ratios) in enumerate(series.items()):
@@ -261,16 +297,23 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
                 width,
                 label=name,
                 color=CATEGORICAL[i % len(CATEGORICAL)],
+                hatch=HATCHES[i % len(HATCHES)],
+                edgecolor=COLORS["ink"],
+                linewidth=0.5,
             )
+            ratio_words = ", ".join(f"{s} {ratios[s]:.2f}" for s in PAPER_SAMPLERS)
+            said.append(f"{title}, {name}: {ratio_words}")
         ax.axhline(1.0, color=COLORS["ink"], linewidth=0.8)
         ax.set_xticks(np.arange(len(PAPER_SAMPLERS)), PAPER_SAMPLERS)
-        ax.set_title(textwrap.fill(title, 42), fontsize=8)
+        ax.set_xlabel("sampler")
+        ax.set_title(textwrap.fill(title, 40), fontsize=9)
     _log_ticks(axes[0])  # shared by every panel
     axes[0].set_ylabel("time with / without")
     handles, names = axes[0].get_legend_handles_labels()
-    fig.legend(handles, names, loc="lower center", ncol=len(names), fontsize=8, frameon=False)
-    fig.tight_layout(rect=(0, 0.07, 1, 1))
-    return fig
+    fig.legend(handles, names, loc="lower center", ncol=min(len(names), 3), fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0, 0.1, 1, 1))
+    text = "Planning time with prediction divided by the time without, per sampler, log scale; below 1 prediction saves"
+    return describe(fig, f"{text} time. {'; '.join(said)}.")
 
 
 def _log_ticks(ax) -> None:
@@ -297,15 +340,21 @@ def throughputs(rates: dict[str, dict[str, float]]) -> Figure:
             [rates[s][checker] for s in rates],
             width,
             label=checker,
+            color=CATEGORICAL[i % len(CATEGORICAL)],
+            hatch=HATCHES[i % len(HATCHES)],
+            edgecolor=COLORS["ink"],
+            linewidth=0.5,
         )
-        ax.bar_label(bars, labels=[_per_second(rates[s][checker]) for s in rates], fontsize=7)
+        ax.bar_label(bars, labels=[_per_second(rates[s][checker]) for s in rates], fontsize=8)
     ax.set_yscale("log")
     ax.set_xticks(np.arange(len(rates)), list(rates))
+    ax.set_xlabel("scenario")
     ax.set_ylabel("configurations checked per second")
     ax.set_title("Collision checking in batches: exact vs learned", fontsize=9)
     ax.legend(fontsize=8)
     fig.tight_layout()
-    return fig
+    said = "; ".join(f"{s}: " + ", ".join(f"{c} {_per_second(r[c])}" for c in checkers) for s, r in rates.items())
+    return describe(fig, f"Configurations checked per second in batches, log scale, per scenario and checker. {said}.")
 
 
 def _per_second(rate: float) -> str:

@@ -9,7 +9,9 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from toolkit.plots.palette import CATEGORICAL, COLORS, GREYS_CMAP
+from toolkit.learning.metrics import reconstruction_accuracy
+from toolkit.plots.alt import describe
+from toolkit.plots.palette import CATEGORICAL, COLORS, GREYS_CMAP, HATCHES, series_style
 
 MODES = ("without", "with")
 STATS = ("median", "q1", "q3")  # a time's summary over the queries (queries.summarize)
@@ -35,17 +37,24 @@ def cae_reconstruction(grids: dict[str, np.ndarray], decoded: dict[str, np.ndarr
         _show_grid(axes[1, col], np.where(decoded[name] >= 0, 1.0, -1.0), f"{name}: decoded (sign)")
     fig.suptitle("CAE reconstruction: black = occupied")
     fig.tight_layout()
-    return fig
+    said = "; ".join(
+        f"{name}: {float(reconstruction_accuracy(decoded[name][None], grids[name][None])[0]):.1%} of cells right, "
+        f"all free {np.mean(grids[name] < 0):.1%}"
+        for name in grids
+    )
+    text = "Occupancy grids (a 3D one as its middle z slice) above their reconstructions, occupied black. "
+    return describe(fig, text + said + ".")
 
 
 def planning_times(planning: dict, title: str = "") -> Figure:
     """Sampling and total time per query, without / with prediction (the paper's Figures 5-7): the median over the
     queries, a whisker from the first to the third quartile (the paper draws means and stds; a single slow query
     moves both, and a std bar can reach below zero)."""
-    fig = Figure(figsize=(9, 3.6))
+    fig = Figure(figsize=(9, 3.8))
     axes = fig.subplots(1, 2)
     samplers = list(planning)  # the paper's four, or the ones the run planned
     x = np.arange(len(samplers))
+    said = []
     for ax, key, label in (
         (axes[0], "sampling_s", "sampling time (s), median"),
         (axes[1], "total_s", "total time per query (s), median"),
@@ -61,15 +70,30 @@ def planning_times(planning: dict, title: str = "") -> Figure:
                 yerr=spread,
                 capsize=3,
                 color=CATEGORICAL[i],
+                hatch=HATCHES[i],
+                edgecolor=COLORS["ink"],
+                linewidth=0.5,
                 label=f"{mode} prediction",
             )
-            ax.bar_label(bars, labels=names, fontsize=7, padding=2)
+            ax.bar_label(bars, labels=names, fontsize=8, padding=2)
         ax.set_xticks(x, samplers)
+        ax.set_xlabel("sampler")
         ax.set_ylabel(label)
         ax.legend(fontsize=8)
+        said.append(
+            f"{label}: "
+            + ", ".join(
+                f"{s} {planning[s]['without'][key + '_median']:.3g} without, {planning[s]['with'][key + '_median']:.3g}"
+                " with"
+                for s in samplers
+            )
+        )
     fig.suptitle(title or "Time with and without prediction")
     fig.tight_layout()
-    return fig
+    text = f"{title or 'Time with and without prediction'}: bars of the median over the queries, plain without"
+    return describe(
+        fig, f"{text} prediction and hatched with it, whiskers from quartile to quartile. {'; '.join(said)}."
+    )
 
 
 def threshold_sweep(probability: np.ndarray, valid: np.ndarray, threshold: float | None = None) -> Figure:
@@ -79,14 +103,27 @@ def threshold_sweep(probability: np.ndarray, valid: np.ndarray, threshold: float
     predicted = p[None, :] >= ts[:, None]  # (T, N)
     fig = Figure(figsize=(5, 3.6))
     ax = fig.subplots()
-    ax.plot(ts, (predicted == truth).mean(axis=1), "-", color=CATEGORICAL[0], label="accuracy")
-    ax.plot(ts, predicted[:, truth].mean(axis=1), "--", color=CATEGORICAL[1], label="TPR (valid kept)")
-    ax.plot(ts, (~predicted[:, ~truth]).mean(axis=1), "-.", color=CATEGORICAL[2], label="TNR (invalid rejected)")
+    curves = {
+        "accuracy": (predicted == truth).mean(axis=1),
+        "TPR (valid kept)": predicted[:, truth].mean(axis=1),
+        "TNR (invalid rejected)": (~predicted[:, ~truth]).mean(axis=1),
+    }  # name -> (T,)
+    for k, (name, curve) in enumerate(curves.items()):
+        ax.plot(ts, curve, label=name, **series_style(k) | dict(markevery=10, markersize=4))
     if threshold is not None:
         ax.axvline(threshold, color=COLORS["reference"], linestyle=":", label=f"threshold {threshold:.2f}")
     ax.set_xlabel("threshold on P(valid)")
+    ax.set_ylabel("share")
     ax.set_ylim(0, 1.02)
     ax.legend(fontsize=8)
     ax.set_title("MLP on unseen workspaces")
     fig.tight_layout()
-    return fig
+    best = int(np.argmax(curves["accuracy"]))
+    text = "Accuracy, TPR and TNR of the MLP as the threshold on P(valid) moves from 0 to 1: accuracy is highest, "
+    text += f"{curves['accuracy'][best]:.2f}, at threshold {ts[best]:.2f}"
+    if threshold is not None:
+        at = int(np.argmin(np.abs(ts - threshold)))
+        text += f"; at the chosen threshold {threshold:.2f}: " + ", ".join(
+            f"{name} {curve[at]:.2f}" for name, curve in curves.items()
+        )
+    return describe(fig, text + ".")

@@ -23,7 +23,7 @@ from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import describe
 from toolkit.plots.cspace import INVALID_COLOR, VALID_COLOR, draw_robot
-from toolkit.plots.palette import COLORS
+from toolkit.plots.palette import COLORS, halo, series_style
 
 TRACE_COLOR = COLORS["trace"]  # the path of the robot's base, as the viewer's path line
 UNCHECKED_COLOR = COLORS["unchecked"]  # the robot when no validity is given
@@ -62,15 +62,32 @@ def path_frame(
         name: _per_frame(values, frames, name)
         for name, values in (("valid", valid), ("clearance", clearance), ("probability", probability))
     }
-    fig = Figure(figsize=(11, 4.8))
-    grid = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.3, top=0.8)  # room for title and legend
+    fig = Figure(figsize=(11, 5.2))
+    grid = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.3, top=0.78, bottom=0.1, right=0.9)
     valid_now = None if series["valid"] is None else bool(series["valid"][index])
     _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, valid_now, workspace, margin)
     _draw_series(fig, grid[1], robot, Q, index, series, threshold)
     fig.suptitle(_frame_title(index, frames, series, threshold), fontsize=10)
-    shown = "".join(f", {name}" for name, values in series.items() if values is not None and name != "valid")
     text = f"A path of the {robot.name} robot, {_frame_title(index, frames, series, threshold)}. Left, the robot"
-    return describe(fig, text + f" in 3D and its base's trace; right, each DoF{shown} along the path.")
+    text += " in 3D among the blocks near it and its base's trace; right, against the fraction of the path travelled, "
+    return describe(fig, text + _series_in_words(robot, Q, series, threshold) + ".")
+
+
+def _series_in_words(robot: BoxRobot, Q: np.ndarray, series: dict, threshold: float) -> str:
+    """The right-hand panels in words: which DoFs move, the clearance and P(valid) along the path."""
+    scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
+    moves = [f"{name} {scaled[0, k]:.2f} to {scaled[-1, k]:.2f}" for k, name in enumerate(robot.dof_names)]
+    text = "each DoF scaled to its bounds (0 lower, 1 upper), from start to end: " + ", ".join(moves)
+    if (valid := series["valid"]) is not None:
+        text += f"; {int(np.sum(valid == 0))} of {len(valid)} frames in collision"
+    if (clearance := series["clearance"]) is not None:
+        text += f"; the clearance is smallest, {np.min(clearance):.3f}, at {np.argmin(clearance) / (len(Q) - 1):.0%}"
+        text += " of the path"
+    if (p := series["probability"]) is not None:
+        below = int(np.sum(p < threshold))
+        text += f"; P(valid) from {np.min(p):.2f} to {np.max(p):.2f}, below the threshold {threshold:.2f} at {below}"
+        text += f" of {len(p)} frames"
+    return text
 
 
 def _draw_series(
@@ -89,27 +106,57 @@ def _draw_series(
         draw_panel(ax, along)
         ax.axvline(along[index], color=NOW_COLOR, linewidth=1.0, gid="now")
         ax.locator_params(axis="y", nbins=3)
-        ax.tick_params(labelsize=7)
+        ax.tick_params(labelsize=8)
         ax.label_outer()
     axes[-1].set_xlabel("fraction of the path")
 
 
 def _draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, ax, along: np.ndarray) -> None:
-    """Every DoF of ``Q (T, dof)`` scaled to its bounds (0 = lower, 1 = upper), the legend above the panels."""
+    """Every DoF of ``Q (T, dof)`` scaled to its bounds (0 = lower, 1 = upper), each in its own colour, line style
+    and marker, named in the legend above the panels and directly at the line's end."""
     scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
+    every = max(1, len(Q) // 6)
     for k, name in enumerate(robot.dof_names):
-        ax.plot(along, scaled[:, k], linewidth=1.2, label=name, gid="dof")
+        style = series_style(k) | dict(markevery=(k % every, every), markersize=4)
+        ax.plot(along, scaled[:, k], linewidth=1.2, label=name, gid="dof", **style)
+    ends = _spread(scaled[-1], gap=0.15)  # (dof,) label heights that do not overlap
+    for k, name in enumerate(robot.dof_names):
+        ax.annotate(
+            name,
+            (1.0, scaled[-1, k]),
+            xytext=(1.02, ends[k]),
+            textcoords=("axes fraction", "data"),
+            fontsize=8,
+            va="center",
+            color=series_style(k)["color"],
+            annotation_clip=False,
+        )
     ax.set_ylim(-0.05, 1.05)
     ax.set_ylabel("DoF in bounds")
     fig.legend(
         *ax.get_legend_handles_labels(),
-        fontsize=6,
-        ncol=min(robot.dof, 5),
+        fontsize=8,
+        ncol=min(robot.dof, 7),
         loc="upper center",
-        bbox_to_anchor=(0.73, 0.93),  # between the title and the panels
+        bbox_to_anchor=(0.71, 0.9),  # between the title and the panels
         frameon=False,
-        handlelength=1.2,
+        handlelength=2.0,
+        columnspacing=0.8,
     )
+
+
+def _spread(heights: np.ndarray, gap: float) -> np.ndarray:
+    """``heights (n,)`` moved apart as little as keeps every two at least ``gap`` apart (labels at a line's end)."""
+    order = np.argsort(heights)
+    placed = heights[order].astype(float)
+    for i in range(1, len(placed)):
+        placed[i] = max(placed[i], placed[i - 1] + gap)
+    placed -= max(0.0, placed[-1] - 1.05)  # back inside the panel where the top ran over
+    for i in range(len(placed) - 2, -1, -1):
+        placed[i] = min(placed[i], placed[i + 1] - gap)
+    out = np.empty_like(placed)
+    out[order] = placed
+    return out
 
 
 def _draw_clearance(clearance: np.ndarray, ax, along: np.ndarray) -> None:
@@ -134,7 +181,7 @@ def _draw_trace(ax, robot: BoxRobot, Q: np.ndarray) -> None:
     trace = robot.link_boxes(Q)[0][:, 0].copy()  # (T, 3)
     lo, hi = np.array([ax.get_xlim(), ax.get_ylim(), ax.get_zlim()]).T  # (3,) each
     trace[~np.all((trace >= lo) & (trace <= hi), axis=1)] = np.nan  # mplot3d does not clip lines to the axes
-    ax.plot(*trace.T, color=TRACE_COLOR, linewidth=2.0, gid="trace")
+    ax.plot(*trace.T, color=TRACE_COLOR, linewidth=2.0, gid="trace", path_effects=halo(2.0))
 
 
 def _draw_scene(
@@ -147,7 +194,7 @@ def _draw_scene(
     verdict = "" if valid is None else ": valid" if valid else ": in collision"
     scene.set_title(f"the robot and the blocks near it{verdict}", fontsize=9)
     scene.locator_params(nbins=4)  # few tick labels: drawing text is most of a frame's cost
-    scene.tick_params(labelsize=7)
+    scene.tick_params(labelsize=8)
 
 
 def _per_frame(values, frames: int, name: str) -> np.ndarray | None:

@@ -16,8 +16,9 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.geometry.workspace import MeshWorkspace
 from toolkit.plots import planning
+from toolkit.plots.alt import describe
 from toolkit.plots.cspace import frame_region
-from toolkit.plots.palette import COLORS
+from toolkit.plots.palette import COLORS, halo
 
 MESH_COLOR, VOXEL_COLOR = COLORS["mesh"], COLORS["voxel"]
 
@@ -41,16 +42,22 @@ def mesh_and_grid(workspace: MeshWorkspace, title: str = "") -> Figure:
     occupied = workspace.occupancy() > 0
     edges = [workspace.lower[d] + np.arange(n + 1) for d, n in enumerate(workspace.grid_shape)]
     x, y, z = np.meshgrid(*edges, indexing="ij")  # cell corners
-    grid_ax.voxels(x, y, z, occupied, facecolors=VOXEL_COLOR, edgecolors=COLORS["occupied"], linewidth=0.2, alpha=0.5)
+    grid_ax.voxels(
+        x, y, z, occupied, facecolors=VOXEL_COLOR, edgecolors=COLORS["occupied"], linewidth=0.2, alpha=0.5, shade=False
+    )
     grid_ax.set_title(f"its occupancy grid: {occupied.sum()} of {occupied.size} cells occupied", fontsize=10)
     for ax in (mesh_ax, grid_ax):
         frame_region(ax, workspace)
         ax.set_box_aspect(workspace.upper - workspace.lower)
         ax.view_init(elev=25, azim=-60)
+        ax.locator_params(nbins=4)
+        ax.tick_params(labelsize=8)
     if title:
         fig.suptitle(title)
     fig.tight_layout()
-    return fig
+    text = f"{title + ': ' if title else ''}left, a mesh workspace of {len(workspace.faces)} triangles in "
+    text += f"{len(workspace.boxes)} parts, in 3D; right, its occupancy grid, {occupied.sum()} of {occupied.size} "
+    return describe(fig, text + f"cells occupied ({occupied.mean():.1%}), one cube per occupied cell.")
 
 
 def samplers_in_a_passage(
@@ -60,14 +67,18 @@ def samplers_in_a_passage(
     ``((x0, y0), (x1, y1))`` outlined (dashed), with how many samples fell inside it in each panel's title."""
     fig = planning.samplers(exact, samples, attempts)
     (x0, y0), (x1, y1) = passage
-    for ax, Q in zip(fig.axes, samples.values()):
-        ax.add_patch(
-            Rectangle(
-                (x0, y0), x1 - x0, y1 - y0, fill=False, edgecolor=COLORS["highlight"], linewidth=1.2, linestyle="--"
-            )
+    said = []
+    for ax, (name, Q) in zip(fig.axes, samples.items()):
+        outlined = Rectangle(
+            (x0, y0), x1 - x0, y1 - y0, fill=False, edgecolor=COLORS["highlight"], linewidth=1.2, linestyle="--"
         )
+        outlined.set_path_effects(halo(1.2))
+        ax.add_patch(outlined)
         inside = int(np.sum(np.all(((x0, y0) <= Q) & ((x1, y1) >= Q), axis=1)))
         ax.set_title(f"{ax.get_title()}\n{inside} in the passage", fontsize=9)
-    fig.suptitle(f"{len(samples)} samplers, the same attempts each (dashed: the narrow passage)")
+        said.append(f"{name} {len(Q)} samples, {inside} in the passage")
+    fig.suptitle(f"{len(samples)} samplers, the same attempts each (dashed: the narrow passage)", fontsize=10)
     fig.tight_layout()
-    return fig
+    text = f"Samples of {len(samples)} samplers over the point robot's C-obstacles, the narrow passage from "
+    text += f"({x0:g}, {y0:g}) to ({x1:g}, {y1:g}) outlined: "
+    return describe(fig, text + "; ".join(said) + (f", of {attempts} attempts each." if attempts else "."))

@@ -14,6 +14,7 @@ from pathlib import Path
 
 from toolkit.scenarios import Scenario
 from toolkit.viewer import address
+from toolkit.viewer.labels import named_live_page
 from toolkit.viewer.panel import Panel
 from toolkit.viewer.scene import Predictor, Viewer
 from toolkit.viewer.server import page_path
@@ -37,7 +38,8 @@ def launch(
     is the port's path through jupyter-server-proxy, and in a notebook a link and an inline frame to it are shown.
     """
     base = address.base_url(base_url)  # a malformed one is an error before anything is served
-    viewer = Viewer(scenario, seed=seed, checkpoint=checkpoint, predictor=predictor, host=host, port=port)
+    with named_live_page():  # viser's page with its controls named for screen readers (labels.py)
+        viewer = Viewer(scenario, seed=seed, checkpoint=checkpoint, predictor=predictor, host=host, port=port)
     try:
         Panel(viewer)  # it subscribes to the viewer's events: the viewer keeps it
     except BaseException:

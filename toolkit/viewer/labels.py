@@ -1,32 +1,93 @@
-"""Names for the controls of a saved scene: what a screen reader says about a snapshot's or animation's player.
+"""Names for the controls viser leaves unnamed: what a screen reader says about a saved scene's player and about
+the live viewer's panel.
 
-viser draws a saved scene's player (play / pause, the time, the playback speed) with icon buttons and inputs
-that carry no accessible name, and may show a notice (e.g. that the browser renders WebGL in software) over
-the scene. :func:`label_controls` adds a small script to the document that names each control as the page
-builds it and hides the notices (a static page has nothing to notify); the scene's own text alternative is the
-summary beside it (:meth:`toolkit.viewer.Viewer.summary`).
+viser draws its controls without accessible names: a slider's handle has ``aria-label=""``, the number box beside
+it and every number input have no label (their visible names are ``<label for>`` the row's own element, not the
+input), icon buttons (settings, a notice's close button, a recording's play / pause) have no text, and the logo
+has no ``alt``; it may show a notice (e.g. that the browser renders WebGL in software) over the scene. viser has no
+option for any of these (``configure_theme`` can only hide the logo and the share button: the panel hides the
+share button, which would publish the scene), so a small script names them from the page itself, as React
+builds it: each control takes the name of the label of its row (:data:`SCRIPT`).
+
+- :func:`label_controls` adds the script to a saved scene's page (snapshots and animations in notebook 05), and
+  hides the notices there (a static page has nothing to notify); the scene's own text alternative is the
+  summary beside it (:meth:`toolkit.viewer.Viewer.summary`);
+- :func:`named_live_page` makes viser's server serve its page with the same script (``toolkit view``): a copy of
+  viser's ``client/build/index.html`` with the script in it, served in place of the original.
+
+The panel's status lines carry a mark (``<span data-live-status hidden>``, :data:`toolkit.viewer.panel.LIVE`; viser's
+markdown keeps raw HTML) by which the script makes each a live region (``role="status"``): a change of validity
+is announced. ``tests/test_viewer_accessibility.py`` runs axe-core on the live viewer.
 """
 
 from __future__ import annotations
 
+import contextlib
+import functools
 import json
+import tempfile
+import threading
+from collections.abc import Iterator
+from pathlib import Path
 
-NAMES = {  # CSS selector -> accessible name (aria-label), for the controls viser leaves unnamed
+import viser
+import viser.infra
+
+from toolkit.plots.palette import COLORS
+
+NAMES = {  # CSS selector -> accessible name (aria-label), for the controls without a visible label
+    ".tabler-icon-adjustments": "viewer settings",
+    ".tabler-icon-share": "share the scene",
+    ".mantine-Notification-closeButton": "close this notice",
+}
+RECORDING_NAMES = {  # and on a saved scene's player, after those
     ".mantine-ActionIcon-root:not([aria-label]):not([title])": "play or pause the recording",
     "input[inputmode=decimal]:not([aria-label])": "time in the recording (seconds)",
     "input[role=combobox]:not([aria-label])": "playback speed",
     "button:not([aria-label]):not([title])": "viewer control",
 }
-HIDDEN = ".mantine-Notifications-root, .mantine-Notification-root"  # notices over the scene
+LOGO_ALT = "viser"  # the logo in the panel's corner
+HIDDEN = ".mantine-Notifications-root, .mantine-Notification-root"  # notices over a saved scene
+DIMMED = COLORS["panel_text"]  # viser's dimmed label text (3.3:1 on white) made darker
 
-SCRIPT = """<style>%(hidden)s { display: none !important; }</style>
+SCRIPT = """<style>:root { --mantine-color-dimmed: %(dimmed)s !important; }</style>
 <script>
 (() => {
   const names = %(names)s;
+  const rowLabel = (control) => {  // the text of the one <label> of the nearest row around the control
+    for (let node = control.parentElement, depth = 0; node && depth < 8; node = node.parentElement, depth++) {
+      const labels = node.querySelectorAll("label");
+      if (labels.length > 1) return null;
+      if (labels.length === 1 && labels[0].textContent.trim()) return labels[0].textContent.trim();
+    }
+    return null;
+  };
+  const unnamed = (element) => !element.getAttribute("aria-label") && !element.getAttribute("aria-labelledby");
   const name = () => {
+    for (const slider of document.querySelectorAll("[role=slider]")) {
+      const label = unnamed(slider) && rowLabel(slider);
+      if (label) slider.setAttribute("aria-label", label);
+    }
+    for (const input of document.querySelectorAll("input:not([type=hidden])")) {
+      if (!unnamed(input) || (input.labels && input.labels.length)) continue;
+      const label = rowLabel(input);
+      const besideSlider = input.closest(".mantine-Flex-root")?.querySelector("[role=slider]");
+      if (label) input.setAttribute("aria-label", besideSlider ? label + ", typed value" : label);
+    }
     for (const [selector, label] of Object.entries(names)) {
-      for (const element of document.querySelectorAll(selector)) {
-        if (!element.textContent.trim() || element.tagName === "INPUT") element.setAttribute("aria-label", label);
+      for (const found of document.querySelectorAll(selector)) {
+        const control = found.closest("button, input") || found;
+        if (unnamed(control) && (!control.textContent.trim() || control.tagName === "INPUT")) {
+          control.setAttribute("aria-label", label);
+        }
+      }
+    }
+    for (const image of document.querySelectorAll("img:not([alt])")) image.setAttribute("alt", %(logo)s);
+    for (const mark of document.querySelectorAll("[data-live-status]")) {  // a status line: announce its changes
+      const line = mark.closest("div");
+      if (line && !line.getAttribute("role")) {
+        line.setAttribute("role", "status");
+        line.setAttribute("aria-live", "polite");
       }
     }
   };
@@ -37,8 +98,60 @@ SCRIPT = """<style>%(hidden)s { display: none !important; }</style>
 """
 
 
-def label_controls(document: str) -> str:
-    """``document`` (a saved scene's HTML) with the script that names its controls, placed before ``</body>``."""
-    script = SCRIPT % {"hidden": HIDDEN, "names": json.dumps(NAMES)}
+def script(names: dict[str, str] = NAMES) -> str:
+    """The style and script that name the controls: each by its row's label, else by ``names`` (a CSS selector
+    to a name), the logo by :data:`LOGO_ALT`."""
+    return SCRIPT % {"dimmed": DIMMED, "names": json.dumps(names), "logo": json.dumps(LOGO_ALT)}
+
+
+def _before_body_end(document: str, addition: str) -> str:
     head, found, tail = document.rpartition("</body>")
-    return head + script + found + tail if found else document + script
+    return head + addition + found + tail if found else document + addition
+
+
+def label_controls(document: str) -> str:
+    """``document`` (a saved scene's HTML) with the script that names its controls and hides its notices, placed
+    before ``</body>``."""
+    hidden = f"<style>{HIDDEN} {{ display: none !important; }}</style>\n"
+    return _before_body_end(document, hidden + script(NAMES | RECORDING_NAMES))
+
+
+@functools.cache
+def _named_client() -> Path:
+    """A folder holding viser's page with :func:`script` in it (made once a process; viser's build is one file)."""
+    build = Path(viser.__file__).resolve().parent / "client" / "build"
+    folder = Path(tempfile.mkdtemp(prefix="toolkit-viewer-page-"))
+    for source in build.iterdir():
+        if source.is_file():
+            text = source.read_text(encoding="utf-8") if source.name == "index.html" else None
+            target = folder / source.name
+            if text is None:
+                target.write_bytes(source.read_bytes())
+            else:
+                target.write_text(_before_body_end(text, script()), encoding="utf-8")
+    return folder
+
+
+_serving = threading.Lock()  # one server built at a time while viser's page is swapped
+
+
+@contextlib.contextmanager
+def named_live_page() -> Iterator[None]:
+    """While the block runs, a ``viser.ViserServer`` built in it serves viser's page with :func:`script` added.
+
+    viser takes the folder it serves from its own install, with no option to change it: the block gives its
+    server class (``viser.infra.WebsockServer``) the named copy (:func:`_named_client`) instead.
+    """
+    original = viser.infra.WebsockServer
+    root = _named_client()
+
+    def serving_named_page(*args, **kwargs):
+        kwargs["http_server_root"] = root
+        return original(*args, **kwargs)
+
+    with _serving:
+        viser.infra.WebsockServer = serving_named_page  # type: ignore[assignment,misc]
+        try:
+            yield
+        finally:
+            viser.infra.WebsockServer = original  # type: ignore[misc]
