@@ -102,15 +102,19 @@ def tables(nb) -> list[tuple[list[str], list[list[str]]]]:
     return found
 
 
+LABELS = ("scenario", "sampler", "what grows", "value", "measured")  # the columns that name a table's row
+
+
 def verdicts(nb) -> dict[tuple[str, ...], str]:
-    """Every verdict a table printed, keyed by the table's header, the row's first two cells and the column:
-    ``{(header, row label, row label 2, column): verdict}`` (the run-to-run comparison of ``test_chapter_claims``)."""
+    """Every verdict a table printed, keyed by the table's first column's header, the row's naming cells and the
+    column before the verdict: ``{key: verdict}`` (the run-to-run comparison of ``test_chapter_claims``)."""
     found = {}
     for header, rows in tables(nb):
+        naming = [k for k, column in enumerate(header) if column.startswith(LABELS)]
         for row in rows:
             for j, column in enumerate(header):
                 if column == "verdict":
-                    found[(" ".join(header[:2]), row[0], row[1], header[j - 1])] = row[j]
+                    found[(header[0], *(row[k] for k in naming), header[j - 1])] = row[j]
     return found
 
 

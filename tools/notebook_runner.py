@@ -27,6 +27,8 @@ from nbclient.exceptions import CellExecutionError
 
 from toolkit.teaching.notebook import QUICK_ENV
 
+NO_PROGRESS_BARS = "TQDM_DISABLE"  # tqdm's switch, read from the environment: off in a headless run
+
 
 @dataclass
 class NotebookRun:
@@ -69,7 +71,15 @@ def run_notebook(path: str | Path, *, timeout: float = 900) -> NotebookRun:
     )
     client.on_notebook_start = lambda notebook: _poll_shell_in_slices(client.kc)
     began, cpu_before = time.perf_counter(), _children_cpu()
-    client.execute()  # shuts the kernel down and waits for it, so its CPU time is counted below
+    before = os.environ.get(NO_PROGRESS_BARS)
+    os.environ[NO_PROGRESS_BARS] = "1"  # the kernel inherits it: no one watches this run, so no bar (tqdm >= 4.66)
+    try:
+        client.execute()  # shuts the kernel down and waits for it, so its CPU time is counted below
+    finally:
+        if before is None:
+            os.environ.pop(NO_PROGRESS_BARS, None)
+        else:
+            os.environ[NO_PROGRESS_BARS] = before
     wall, cpu = time.perf_counter() - began, _children_cpu() - cpu_before
     outputs = [o for c in nb.cells if c.cell_type == "code" for o in c.outputs] + widget_outputs(nb)
     return NotebookRun(nb, outputs, wall, cpu)
