@@ -21,7 +21,6 @@ from __future__ import annotations
 
 import argparse
 import ast
-import base64
 import contextlib
 import importlib.util
 import os
@@ -38,7 +37,7 @@ import nbformat
 from toolkit.teaching import grading
 from toolkit.teaching.notebook import QUICK_ENV, is_quick
 from tools.executed_notebooks import run_or_reuse
-from tools.notebook_runner import NotebookRun
+from tools.notebook_runner import NotebookRun, image_widget_output
 
 ROOT = Path(__file__).resolve().parents[1]  # the repository (this file is tools/site.py)
 CONFIG = ROOT / "mkdocs.yml"
@@ -249,20 +248,9 @@ def shown_by(model_id: str, state: dict) -> list[nbformat.NotebookNode]:
     if model.get("model_name") == "OutputModel":
         return [nbformat.from_dict(o) for o in model.get("state", {}).get("outputs", [])]
     if model.get("model_name") == "ImageModel":
-        return image_output(model)
+        return image_widget_output(model)
     children = model.get("state", {}).get("children", [])
     return [o for child in children for o in shown_by(str(child).removeprefix("IPY_MODEL_"), state)]
-
-
-def image_output(model: dict) -> list[nbformat.NotebookNode]:
-    """An ``Image`` widget's picture as a ``display_data`` output: its value is saved as a base64 buffer."""
-    widget = model.get("state", {})
-    value = next((b["data"] for b in model.get("buffers", []) if b.get("path") == ["value"]), widget.get("value"))
-    if not value or widget.get("format", "png") != "png":
-        return []
-    data = value if isinstance(value, str) else base64.b64encode(bytes(value)).decode()
-    alt = widget.get("tooltip") or "the picture this control shows at its starting value"
-    return [nbformat.v4.new_output("display_data", data={"image/png": data}, metadata={"image/png": {"alt": alt}})]
 
 
 def student_notebook(name: str) -> Path:
