@@ -133,11 +133,11 @@ def test_chapter_04_fails_a_verdict_its_numbers_contradict():
     nb = chapter_04()
     first = nb["cells"][0]["outputs"][0]["data"]
     first["text/markdown"] = first["text/markdown"].replace("costs time", "saves time", 1)
-    assert problems(CH04, nb) == ["04: 2DS BS: says 'saves time', its numbers say 'costs time'"]
+    assert problems(CH04, nb) == ["04: 2DS BS: says 'saves time (2.00; 2.00–2.25)', its numbers say 'costs time'"]
     nb = chapter_04()
     last = nb["cells"][1]["outputs"][0]["data"]
     last["text/markdown"] = last["text/markdown"].replace("network dearer", "network cheaper", 1)
-    assert problems(CH04, nb) == ["04: links 2: says 'network cheaper', its numbers say 'network dearer'"]
+    assert problems(CH04, nb) == ["04: links 2: says 'network cheaper (3.33)', its numbers say 'network dearer'"]
 
 
 def test_chapter_04_fails_without_its_tables_or_with_pre_wrapped_lines():

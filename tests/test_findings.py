@@ -65,7 +65,9 @@ def test_planning_verdict_pairs_each_query_with_itself():
     # medians 0.3 without, 0.6 with; each query against itself: 6.0, 0.67 and 2.0 (the median ratio: 2)
     paired = row([0.1, 0.3, 0.5], [0.6, 0.2, 1.0])
     median, q1, q3, said = findings.planning_verdict(paired)
-    assert median == pytest.approx(2.0) and q1 == pytest.approx((0.667 + 2.0) / 2, abs=1e-3) and q3 == pytest.approx(4.0)
+    assert (
+        median == pytest.approx(2.0) and q1 == pytest.approx((0.667 + 2.0) / 2, abs=1e-3) and q3 == pytest.approx(4.0)
+    )
     assert said == findings.COSTS  # its quartiles, 1.33 and 4.0, lie above 1.1
     assert findings.planning_verdict(row([1.0, 1.0, 1.0, 1.0], [0.5, 0.6, 0.7, 0.8]))[3] == findings.SAVES
     assert findings.planning_verdict(row([1.0, 1.0, 1.0, 1.0], [0.95, 1.0, 1.02, 1.05]))[3] == findings.TIES
@@ -78,21 +80,21 @@ def test_planning_table_is_a_markdown_table_with_a_verdict_per_row():
         {"3DC-7": {"BS": row([0.1, 0.1, 0.1], [0.2, 0.2, 0.2]), "OB": row([0.1, 0.1, 0.1], [0.05, 0.05, 0.05])}}
     )
     lines = table.splitlines()
-    assert lines[0].startswith("| scenario | sampler | queries |") and lines[0].endswith("| verdict |")
-    assert lines[2] == "| 3DC-7 | BS | 3 | 100 | 200 | 2.00 (2.00–2.00) | costs time |"
-    assert lines[3] == "| 3DC-7 | OB | 3 | 100 | 50 | 0.50 (0.50–0.50) | saves time |"
+    assert lines[0].startswith("| scenario | sampler | with / without: verdict")  # the verdict before the numbers
+    assert lines[2] == "| 3DC-7 | BS | costs time (2.00; 2.00–2.00) | 100 / 200 | 3 |"
+    assert lines[3] == "| 3DC-7 | OB | saves time (0.50; 0.50–0.50) | 100 / 50 | 3 |"
     assert "\n    " not in table  # never pre-wrapped
 
 
 def test_ratio_table_gives_each_recorded_ratio_its_verdict():
     table = findings.ratio_table({"3DC-7": {"BS": 2.13, "OB": 1.0, "G": 0.79}})
-    assert table.splitlines()[2] == "| 3DC-7 | 2.13 (costs time) | 1.00 (a tie) | 0.79 (saves time) |"
+    assert table.splitlines()[2] == "| 3DC-7 | costs time (2.13) | a tie (1.00) | saves time (0.79) |"
 
 
 def test_throughput_table_never_says_cheaper_beside_a_cost_above_one():
     measured = {"3DC-7": {"ratio": 0.5, "exact_cfg_per_s": 2e6, "fcl_cfg_per_s": 1e5, "learned_cfg_per_s": 1e6}}
     line = findings.throughput_table(measured, 10_000).splitlines()[2]
-    assert line == "| 3DC-7 | 2,000,000 | 100,000 | 1,000,000 | 2.00 | network dearer | 0.10 | network cheaper |"
+    assert line == "| 3DC-7 | network dearer (2.00) | network cheaper (0.10) | 2,000,000 / 100,000 / 1,000,000 |"
 
 
 def test_crossover_table_says_dearer_where_the_network_costs_more_than_either_checker():
@@ -109,14 +111,13 @@ def test_crossover_table_says_dearer_where_the_network_costs_more_than_either_ch
         }
     }
     lines = findings.crossover_table(results).splitlines()
-    assert lines[2] == "| links | 2 | 0.3 | 0.2 | 0.35 | 1.17 | close: can't tell | 1.75 | network dearer |"
-    assert lines[3] == "| links | 4 | 0.4 | 4 | 0.39 | 0.97 | close: can't tell | 0.10 | network cheaper |"
+    assert lines[2] == "| links | 2 | close: can't tell (1.17) | network dearer (1.75) | 0.3 / 0.2 / 0.35 |"
+    assert lines[3] == "| links | 4 | close: can't tell (0.97) | network cheaper (0.10) | 0.4 / 4 / 0.39 |"
     mesh = {
         "variables": {"t": {"label": "t", "values": [20], "exact_us": [1.0], "fcl_us": [None], "learned_us": [2.0]}}
     }
     assert (
-        findings.crossover_table(mesh).splitlines()[2]
-        == "| t | 20 | 1 | – | 2 | 2.00 | network dearer | not timed | – |"
+        findings.crossover_table(mesh).splitlines()[2] == "| t | 20 | network dearer (2.00) | not timed | 1 / – / 2 |"
     )
 
 

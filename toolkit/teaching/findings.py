@@ -68,19 +68,21 @@ def planning_verdict(row: Mapping[str, Mapping], tie: float = TIE) -> tuple[floa
 
 
 def planning_table(tables: Mapping[str, Mapping[str, Mapping]], tie: float = TIE) -> str:
-    """Markdown: per scenario and sampler of ``{scenario: compare_prediction table}``, the median totals without
-    and with prediction, the per-query ratios' median and middle half, and the verdict."""
+    """Markdown: per scenario and sampler of ``{scenario: compare_prediction table}``, the verdict with the per-query
+    ratios' median and middle half, then the median totals without and with prediction (the verdict comes first, so
+    that a narrow page shows it)."""
     rows = [
-        "| scenario | sampler | queries | median total without (ms) | median total with (ms) "
-        "| with / without: median (middle half) | verdict |",
-        "| --- | --- | --- | --- | --- | --- | --- |",
+        "| scenario | sampler | with / without: verdict (median; middle half) | median total, ms: without / with "
+        "| queries |",
+        "| --- | --- | --- | --- | --- |",
     ]
     for name, table in tables.items():
         for sampler, row in table.items():
             median, q1, q3, said = planning_verdict(row, tie)
             rows.append(
-                f"| {name} | {sampler} | {row['without']['n_queries']} | {_ms(row['without']['total_s_median'])} "
-                f"| {_ms(row['with']['total_s_median'])} | {median:.2f} ({q1:.2f}–{q3:.2f}) | {said} |"
+                f"| {name} | {sampler} | {said} ({median:.2f}; {q1:.2f}–{q3:.2f}) "
+                f"| {_ms(row['without']['total_s_median'])} / {_ms(row['with']['total_s_median'])} "
+                f"| {row['without']['n_queries']} |"
             )
     return "\n".join(rows)
 
@@ -91,44 +93,49 @@ def ratio_table(series: Mapping[str, Mapping[str, float]], tie: float = TIE) -> 
     samplers = list(next(iter(series.values())))
     rows = ["| measured | " + " | ".join(samplers) + " |", "| --- |" + " --- |" * len(samplers)]
     for label, ratios in series.items():
-        cells = [f"{ratios[s]:.2f} ({time_verdict(ratios[s], tie=tie)})" for s in samplers]
-        rows.append(f"| {label} | " + " | ".join(cells) + " |")
+        rows.append(
+            f"| {label} | "
+            + " | ".join(f"{time_verdict(ratios[s], tie=tie)} ({ratios[s]:.2f})" for s in samplers)
+            + " |"
+        )
     return "\n".join(rows)
 
 
 def throughput_table(measured: Mapping[str, Mapping[str, float]], batch: int, tie: float = CLOSE) -> str:
-    """Markdown: per scenario of ``{scenario: bench.throughput result}``, the three checkers' configurations a second
-    and the network's cost per configuration against each exact checker's, with its verdict."""
+    """Markdown: per scenario of ``{scenario: bench.throughput result}``, the network's cost per configuration
+    against each exact checker's (network / exact) with its verdict, then the three checkers' configurations a
+    second."""
     rows = [
-        f"| scenario ({batch:,} a call) | default exact (/s) | python-fcl (/s) | network (/s) "
-        "| cost, network / default exact | verdict | cost, network / python-fcl | verdict |",
-        "| --- | --- | --- | --- | --- | --- | --- | --- |",
+        f"| scenario, {batch:,} a call | cost, network / default exact | cost, network / python-fcl "
+        "| configurations a second: default exact / python-fcl / network |",
+        "| --- | --- | --- | --- |",
     ]
     for name, m in measured.items():
         exact, fcl = 1 / m["ratio"], m["fcl_cfg_per_s"] / m["learned_cfg_per_s"]  # cost ratios, network / exact
         rows.append(
-            f"| {name} | {m['exact_cfg_per_s']:,.0f} | {m['fcl_cfg_per_s']:,.0f} | {m['learned_cfg_per_s']:,.0f} "
-            f"| {exact:.2f} | {cost_verdict(exact, tie)} | {fcl:.2f} | {cost_verdict(fcl, tie)} |"
+            f"| {name} | {cost_verdict(exact, tie)} ({exact:.2f}) | {cost_verdict(fcl, tie)} ({fcl:.2f}) "
+            f"| {m['exact_cfg_per_s']:,.0f} / {m['fcl_cfg_per_s']:,.0f} / {m['learned_cfg_per_s']:,.0f} |"
         )
     return "\n".join(rows)
 
 
 def crossover_table(results: Mapping, tie: float = CLOSE) -> str:
-    """Markdown: every point of a ``toolkit.experiments.crossover`` run, each checker's microseconds per
-    configuration and the network's cost against the default exact checker's and python-fcl's, with verdicts."""
+    """Markdown: every point of a ``toolkit.experiments.crossover`` run (variables by their short names), the
+    network's cost per configuration against the default exact checker's and python-fcl's with verdicts, then the
+    three costs in microseconds."""
     rows = [
-        "| what grows | value | default exact (µs) | python-fcl (µs) | network (µs) | network / default exact "
-        "| verdict | network / python-fcl | verdict |",
-        "| --- | --- | --- | --- | --- | --- | --- | --- | --- |",
+        "| what grows | value | network / default exact | network / python-fcl "
+        "| µs a configuration: default exact / python-fcl / network |",
+        "| --- | --- | --- | --- | --- |",
     ]
-    for sweep in results["variables"].values():
+    for variable, sweep in results["variables"].items():
         for value, exact, fcl, learned in zip(sweep["values"], sweep["exact_us"], sweep["fcl_us"], sweep["learned_us"]):
             against_fcl = (
-                f"{learned / fcl:.2f} | {cost_verdict(learned / fcl, tie)}" if fcl is not None else "not timed | –"
+                f"{cost_verdict(learned / fcl, tie)} ({learned / fcl:.2f})" if fcl is not None else "not timed"
             )
             rows.append(
-                f"| {sweep['label']} | {value:,} | {exact:.3g} | {'–' if fcl is None else f'{fcl:.3g}'} "
-                f"| {learned:.3g} | {learned / exact:.2f} | {cost_verdict(learned / exact, tie)} | {against_fcl} |"
+                f"| {variable} | {value:,} | {cost_verdict(learned / exact, tie)} ({learned / exact:.2f}) "
+                f"| {against_fcl} | {exact:.3g} / {'–' if fcl is None else f'{fcl:.3g}'} / {learned:.3g} |"
             )
     return "\n".join(rows)
 
