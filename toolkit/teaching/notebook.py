@@ -24,6 +24,7 @@ instead of loading a model made by the old one.
 
 from __future__ import annotations
 
+import dataclasses
 import io
 import json
 import os
@@ -107,6 +108,10 @@ def _count(size: object) -> str:
     """A size as the banner prints it: whole numbers with thousands separators, ranges by their length."""
     if isinstance(size, range):
         return f"{len(size)} ({size.start}..{size.stop - 1})"
+    if dataclasses.is_dataclass(size) and not isinstance(size, type):  # e.g. a crossover's sizes: its fields, briefly
+        return "; ".join(f"{field.name} {_count(getattr(size, field.name))}" for field in dataclasses.fields(size))
+    if isinstance(size, tuple):
+        return "/".join(_count(v) for v in size)
     return f"{size:,}" if isinstance(size, int) else str(size)
 
 
