@@ -130,7 +130,7 @@ def test_outlier_table_lists_the_slow_query_and_the_mean_it_moves():
         }
     }
     lines = findings.outlier_table(tables).splitlines()
-    assert len(lines) == 3 and lines[2] == "| 3DC-7 | BS | without | 1 | 2,100 | 100 | 767 | 100 |"
+    assert len(lines) == 3 and lines[2] == "| 3DC-7 | BS | without | query 1: 2,100 (100) | 767 / 100 |"
     assert findings.outlier_table({"2DS": {"BS": row([0.1, 0.1], [0.1, 0.1])}}) == ""
 
 

@@ -156,15 +156,14 @@ def outlier_table(tables: Mapping[str, Mapping[str, Mapping]], factor: float = O
                 if totals[slowest] < factor * rest or summary["total_s"] < MOVED * rest:
                     continue  # not an outlier, or one that leaves the mean where the other queries put it
                 rows.append(
-                    f"| {name} | {sampler} | {mode} | {slowest} | {_ms(totals[slowest])} | {_ms(rest)} "
-                    f"| {_ms(summary['total_s'])} | {_ms(summary['total_s_median'])} |"
+                    f"| {name} | {sampler} | {mode} | query {slowest}: {_ms(totals[slowest])} ({_ms(rest)}) "
+                    f"| {_ms(summary['total_s'])} / {_ms(summary['total_s_median'])} |"
                 )
     if not rows:
         return ""
     head = [
-        "| scenario | sampler | prediction | slow query | its total (ms) | the other queries' median (ms) "
-        "| mean (ms) | median (ms) |",
-        "| --- | --- | --- | --- | --- | --- | --- | --- |",
+        "| scenario | sampler | prediction | slowest query: ms (the others' median) | mean / median (ms) |",
+        "| --- | --- | --- | --- | --- |",
     ]
     return "\n".join(head + rows)
 
