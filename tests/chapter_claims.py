@@ -149,8 +149,8 @@ def chapter_04(nb) -> list[str]:
     for header, rows in found:
         for row in rows:
             for j, cell in enumerate(row):
-                allowed = _checked_verdicts(header, row, j)
-                if allowed is not None and VERDICT.fullmatch(cell).group(1) not in allowed:
+                allowed, said = _checked_verdicts(header, row, j), VERDICT.fullmatch(cell)
+                if allowed is not None and said is not None and said.group(1) not in allowed:
                     problems.append(
                         f"04: {row[0]} {row[1]}: says '{cell}', its numbers say '{' or '.join(sorted(allowed))}'"
                     )
