@@ -18,7 +18,6 @@ SENTENCE = (  # the rest of a findings.describe_accuracy sentence, its numbers a
     r"(\d+)%, (above|below|level with) \"always valid\" \((\d+)%\) and (above|below|level with) a coin flip "
     r"\(50%\)( \(worse than chance\))?"
 )
-RATIOS = r"\| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \| ([\d.]+) \|"  # a table row's four samplers' ratios
 
 
 def texts(nb) -> list[str]:
@@ -89,58 +88,87 @@ def chapter_03(nb) -> list[str]:
     return problems
 
 
+def tables(nb) -> list[tuple[list[str], list[list[str]]]]:
+    """Every Markdown table the code cells displayed: its header's cells and its rows' cells."""
+    found = []
+    for cell in nb["cells"]:
+        for output in cell.get("outputs", []) if cell["cell_type"] == "code" else []:
+            lines = [
+                line for line in output.get("data", {}).get("text/markdown", "").splitlines() if line.startswith("|")
+            ]
+            rows = [[c.strip() for c in line.strip().strip("|").split("|")] for line in lines]
+            if len(rows) >= 3 and set(rows[1]) <= {"---"}:
+                found.append((rows[0], rows[2:]))
+    return found
+
+
+LABELS = ("scenario", "sampler", "what grows", "value", "measured")  # the columns that name a table's row
+VERDICT = re.compile(  # a cell that gives a verdict, then its numbers: "costs time (2.24; 1.29–3.50)"
+    r"(saves time|costs time|a tie|close: can't tell|can't tell|network cheaper|network dearer) \((.+)\)"
+)
+
+
+def verdicts(nb) -> dict[tuple[str, ...], str]:
+    """Every verdict a table printed, keyed by the table's first column's header, the row's naming cells and the
+    verdict's column: ``{key: verdict}`` (the run-to-run comparison of ``test_chapter_claims``)."""
+    found = {}
+    for header, rows in tables(nb):
+        naming = [k for k, column in enumerate(header) if column.startswith(LABELS)]
+        for row in rows:
+            for j, cell in enumerate(row):
+                if (said := VERDICT.fullmatch(cell)) is not None:
+                    found[(header[0], *(row[k] for k in naming), header[j])] = said.group(1)
+    return found
+
+
+def _checked_verdicts(header: list[str], row: list[str], j: int) -> set[str] | None:
+    """The verdicts cell ``j``'s own numbers allow, as printed (two decimals: a number that rounds onto a band's
+    edge allows either side of it); None where it is no verdict cell."""
+    said = VERDICT.fullmatch(row[j])
+    if said is None:
+        return None
+    numbers = [float(v) for v in re.findall(r"\d+(?:\.\d+)?", said.group(2))]
+    shifts = (-0.005, 0.0, 0.005)
+    if header[j].startswith("with / without: verdict"):  # a planning table: median; quartiles of per-query ratios
+        if int(row[header.index("queries")]) < 2:
+            return {findings.UNSURE}
+        return {findings.time_verdict(max(numbers[1] + d, 1e-9), max(numbers[2] + d, 1e-9)) for d in shifts}
+    if header[0] == "measured":  # recorded ratios over many queries
+        return {findings.time_verdict(max(numbers[0] + d, 1e-9)) for d in shifts}
+    return {findings.cost_verdict(max(numbers[0] + d, 1e-9)) for d in shifts}  # a cost per configuration
+
+
 def chapter_04(nb) -> list[str]:
-    outputs, problems = texts(nb), []
-    found = " ".join(outputs)
-    table = {  # scenario -> this notebook's total ratios, as the comparison table printed them
-        name: dict(zip(SAMPLERS, map(float, row)))
-        for name, row in (
-            (m.group(1), m.groups()[1:])
-            for m in re.finditer(r"\| (2DS|3DC-7) \| total \| this notebook [^|]*" + RATIOS, found)
-        )
-    }
-    for name in ("2DS", "3DC-7"):
-        sentence = re.search(
-            rf"{name} \(medians over \d+ quer(?:y|ies)\), total time with / without prediction "
-            r"against the lazy exact planner[^:]*: prediction (.*?)\.(?: |$)",
-            found,
-        )
-        if not sentence or name not in table:
-            problems.append(f"04: no verdict sentence or table row for {name}")
-            continue
-        said = dict(re.findall(r"(BS|OB|G|BT) \(([\d.]+)\)", sentence.group(1)))
-        for s in SAMPLERS:
-            if s not in said or abs(float(said[s]) - table[name][s]) > 0.005:
-                problems.append(f"04: {name} {s}: the sentence says {said.get(s)}, the table {table[name][s]}")
-                continue
-            verb = findings.verdict(float(said[s]))
-            clause = {"saves": "saves time with", "costs": "costs time with", "ties": "ties (within 5 %) with"}[verb]
-            if not re.search(re.escape(clause) + r"[^;]*\b" + s + r" \(", sentence.group(1)):
-                problems.append(f"04: {name} {s} ({said[s]}) is not said to {verb}")
-    lesson = next((t for t in outputs if "Where the crossover study says prediction would pay" in t), None)
-    printed = next(
-        (t for t in outputs if "sweeps in" not in t and re.search(r"learning (never wins|is cheaper)", t)), ""
+    problems = []
+    found = tables(nb)
+    planned = [rows for header, rows in found if "with / without: verdict (median; middle half)" in header]
+    if not planned or {r[0] for r in planned[0]} != {"2DS", "3DC-7"}:
+        problems.append("04: no verdict table for 2DS and 3DC-7 (findings.planning_table)")
+    if not any("what grows" in header for header, _ in found):
+        problems.append("04: the crossover's table (findings.crossover_table) is not displayed")
+    for header, rows in found:
+        for row in rows:
+            for j, cell in enumerate(row):
+                allowed, said = _checked_verdicts(header, row, j), VERDICT.fullmatch(cell)
+                if allowed is not None and said is not None and said.group(1) not in allowed:
+                    problems.append(
+                        f"04: {row[0]} {row[1]}: says '{cell}', its numbers say '{' or '.join(sorted(allowed))}'"
+                    )
+    printed = "\n".join(
+        o.get("text", "") for c in nb["cells"] for o in c.get("outputs", []) if c["cell_type"] == "code"
     )
-    if lesson is None:
-        return problems + ["04: the lesson (findings.describe_lesson) is not displayed"]
-    bullets = lesson.split("`crossover.conclusion`):")[1].split(" - ")[1:]
-    if len(bullets) != 4 or any(b.strip() not in printed for b in bullets):
-        problems.append("04: the lesson's crossover lines are not the printed crossover.conclusion")
-    if any(f"- {name} (medians over" not in lesson for name in ("2DS", "3DC-7")):
-        problems.append("04: the lesson does not repeat this run's verdicts")
+    if re.search(r"\n {4}\S", printed):  # textwrap's continuation lines: a sentence wrapped before the page wraps it
+        problems.append("04: pre-wrapped generated lines")
     return problems
 
 
 def chapter_05(nb) -> list[str]:
     found, problems = " ".join(texts(nb)), []
-    against = (recorded.without("strong", "medians") or "the exact planner docs/results.md names").rstrip(".")
-    documented = findings.describe_ratios(
-        "3DC-7 (docs/results.md, strong preset, medians over 100 queries)",
-        recorded.median_ratios("strong")["3dc7"]["total"],
-        against,
-    )
-    if " ".join(documented.split()) not in found:
-        problems.append("05: docs/results.md's 3DC-7 verdict is not printed as findings.describe_ratios says it")
+    documented = recorded.median_ratios("strong")["3dc7"]["total"]
+    row = next((r for header, rows in tables(nb) for r in rows if header[:1] == ["measured"] and "3DC-7" in r[0]), None)
+    expected = [f"{findings.time_verdict(documented[s])} ({documented[s]:.2f})" for s in SAMPLERS]
+    if row is None or row[1:] != expected:
+        problems.append(f"05: docs/results.md's 3DC-7 medians are not displayed as findings.ratio_table says: {row}")
     for needed in ("against the paper's Table 2: accuracy", 'accurate than answering "valid" to all of them'):
         if needed not in found:
             problems.append(f"05: '{needed}' is not printed")

@@ -6,6 +6,7 @@ Speed targets are measured by the command, never asserted here (no timed unit te
 import json
 import subprocess
 import sys
+import time
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -352,3 +353,11 @@ def test_bench_vs_ompl_says_how_to_install_ompl(monkeypatch, capsys):
 def test_bench_needs_a_scenario_but_with_crossover(capsys):
     assert cli.main(["bench", "--json"]) == 2
     assert "--scenario is needed (but with --crossover)" in capsys.readouterr().err
+
+
+def test_cpu_clock_times_what_a_call_computed_not_what_it_waited():
+    """Within ``bench.cpu_clock`` a call that sleeps costs next to nothing; outside it, the wall clock is back."""
+    nap = (lambda: time.sleep(0.05), 1)  # one item in 0.05 s of wall time: 20 a second
+    with bench.cpu_clock():
+        assert bench.in_turns({"nap": nap}, repeats=1)["nap"] > 200
+    assert bench.in_turns({"nap": nap}, repeats=1)["nap"] < 21

@@ -1,5 +1,5 @@
-"""The sentences the chapters print from their measurements (:mod:`toolkit.teaching.findings`), on crafted values:
-prediction saving, costing and tying, an outlier that moves a mean, and the lesson carrying the crossover's words."""
+"""What the chapters print from their measurements (:mod:`toolkit.teaching.findings`), on crafted values: verdicts
+read from intervals, saving, costing, tying and "can't tell"; tables that never say "cheaper" beside a loss."""
 
 import numpy as np
 import pytest
@@ -21,74 +21,117 @@ def summary(totals: list[float]) -> dict:
     }
 
 
+def row(without: list[float], with_: list[float]) -> dict:
+    return {"without": summary(without), "with": summary(with_)}
+
+
 @pytest.mark.parametrize(
-    ("ratio", "expected"), [(0.5, "saves"), (0.96, "ties"), (1.0, "ties"), (1.04, "ties"), (1.2, "costs")]
+    ("low", "high", "expected"),
+    [
+        (0.5, 0.8, findings.SAVES),  # the whole interval below 0.9
+        (0.5, 0.95, findings.UNSURE),  # crosses the band's lower edge
+        (0.92, 1.08, findings.TIES),  # inside the band
+        (0.9, 1.1, findings.TIES),  # the band's edges belong to the tie
+        (1.05, 1.3, findings.UNSURE),  # crosses the band's upper edge
+        (1.2, 3.0, findings.COSTS),
+        (0.5, 2.0, findings.UNSURE),  # straddles the whole band
+    ],
 )
-def test_verdict_reads_a_ratio_with_a_five_percent_tie(ratio, expected):
-    assert findings.verdict(ratio) == expected
+def test_time_verdict_reads_an_interval_against_a_ten_percent_band(low, high, expected):
+    assert findings.time_verdict(low, high) == expected
 
 
-@pytest.mark.parametrize("bad", [0.0, -1.0, float("nan"), float("inf")])
-def test_verdict_refuses_what_is_not_a_time_ratio(bad):
-    with pytest.raises(ValueError, match="a time ratio must be a positive number"):
-        findings.verdict(bad)
+@pytest.mark.parametrize(
+    ("ratio", "expected"),
+    [
+        (0.5, "network cheaper"),
+        (0.8, "close: can't tell"),
+        (1.0, "close: can't tell"),
+        (1.25, "close: can't tell"),
+        (1.3, "network dearer"),
+    ],
+)
+def test_cost_verdict_has_a_wider_band_for_a_checker_timed_in_a_few_rounds(ratio, expected):
+    assert findings.cost_verdict(ratio) == expected
 
 
-def test_describe_ratios_groups_the_samplers_in_every_direction():
-    sentence = findings.describe_ratios("3DC-7", {"BS": 0.5, "OB": 1.57, "G": 1.02, "BT": 1.89}, "the lazy planner")
-    assert sentence == (
-        "3DC-7, total time with / without prediction against the lazy planner: prediction saves time with BS (0.50); "
-        "costs time with OB (1.57) and BT (1.89); ties (within 5 %) with G (1.02)."
+@pytest.mark.parametrize(("low", "high"), [(0.0, 1.0), (-1.0, 1.0), (float("nan"), 1.0), (1.0, float("inf")), (2, 1)])
+def test_verdicts_refuse_what_is_not_an_interval_of_ratios(low, high):
+    with pytest.raises(ValueError, match="an interval of ratios must be positive numbers"):
+        findings.time_verdict(low, high)
+
+
+def test_planning_verdict_pairs_each_query_with_itself():
+    # medians 0.3 without, 0.6 with; each query against itself: 6.0, 0.67 and 2.0 (the median ratio: 2)
+    paired = row([0.1, 0.3, 0.5], [0.6, 0.2, 1.0])
+    median, q1, q3, said = findings.planning_verdict(paired)
+    assert (
+        median == pytest.approx(2.0) and q1 == pytest.approx((0.667 + 2.0) / 2, abs=1e-3) and q3 == pytest.approx(4.0)
     )
+    assert said == findings.COSTS  # its quartiles, 1.33 and 4.0, lie above 1.1
+    assert findings.planning_verdict(row([1.0, 1.0, 1.0, 1.0], [0.5, 0.6, 0.7, 0.8]))[3] == findings.SAVES
+    assert findings.planning_verdict(row([1.0, 1.0, 1.0, 1.0], [0.95, 1.0, 1.02, 1.05]))[3] == findings.TIES
+    assert findings.planning_verdict(row([1.0, 1.0, 1.0, 1.0], [0.5, 0.8, 1.3, 2.0]))[3] == findings.UNSURE
+    assert findings.planning_verdict(row([1.0], [0.1]))[3] == findings.UNSURE  # one query is no interval
 
 
-def test_describe_ratios_says_every_sampler_when_all_agree():
-    sentence = findings.describe_ratios("2DS", {"BS": 1.3, "OB": 1.5}, "X", kind="sampling")
-    assert sentence.endswith("prediction costs time with every sampler: BS (1.30) and OB (1.50).")
-    assert "sampling time" in sentence
+def test_planning_table_is_a_markdown_table_with_a_verdict_per_row():
+    table = findings.planning_table(
+        {"3DC-7": {"BS": row([0.1, 0.1, 0.1], [0.2, 0.2, 0.2]), "OB": row([0.1, 0.1, 0.1], [0.05, 0.05, 0.05])}}
+    )
+    lines = table.splitlines()
+    assert lines[0].startswith("| scenario | sampler | with / without: verdict")  # the verdict before the numbers
+    assert lines[2] == "| 3DC-7 | BS | costs time (2.00; 2.00–2.00) | 100 / 200 | 3 |"
+    assert lines[3] == "| 3DC-7 | OB | saves time (0.50; 0.50–0.50) | 100 / 50 | 3 |"
+    assert "\n    " not in table  # never pre-wrapped
 
 
-def test_describe_medians_uses_the_medians_not_the_means():
-    table = {"BS": {"without": summary([0.1, 0.1, 9.0]), "with": summary([0.2, 0.2, 0.2])}}  # means 3.07 vs 0.2
-    assert findings.median_ratios(table) == pytest.approx({"BS": 2.0})
-    sentence = findings.describe_medians("3DC-7", table, "the lazy planner")
-    assert sentence.startswith("3DC-7 (medians over 3 queries), total time") and "costs time with every" not in sentence
-    assert "costs time with BS (2.00)" in sentence
+def test_ratio_table_gives_each_recorded_ratio_its_verdict():
+    table = findings.ratio_table({"3DC-7": {"BS": 2.13, "OB": 1.0, "G": 0.79}})
+    assert table.splitlines()[2] == "| 3DC-7 | costs time (2.13) | a tie (1.00) | saves time (0.79) |"
 
 
-def test_outliers_names_the_slow_query_and_the_mean_it_moves():
-    table = {
-        "BS": {"without": summary([0.1, 2.1, 0.1]), "with": summary([0.2, 0.2, 0.2])},
-        "OB": {"without": summary([0.1, 0.3, 0.2]), "with": summary([0.2, 0.2, 0.2])},  # 3x: not an outlier
-        "G": {"without": summary([0.01] * 20 + [0.05]), "with": summary([0.2] * 3)},  # 5x, but the mean hardly moves
+def test_throughput_table_never_says_cheaper_beside_a_cost_above_one():
+    measured = {"3DC-7": {"ratio": 0.5, "exact_cfg_per_s": 2e6, "fcl_cfg_per_s": 1e5, "learned_cfg_per_s": 1e6}}
+    line = findings.throughput_table(measured, 10_000).splitlines()[2]
+    assert line == "| 3DC-7 | network dearer (2.00) | network cheaper (0.10) | 2,000,000 / 100,000 / 1,000,000 |"
+
+
+def test_crossover_table_says_dearer_where_the_network_costs_more_than_either_checker():
+    # the wording issue 45 found: "against python-fcl it wins at ..." beside numbers that show a loss
+    results = {
+        "variables": {
+            "links": {
+                "label": "links",
+                "values": [2, 4],
+                "exact_us": [0.3, 0.4],
+                "fcl_us": [0.2, 4.0],
+                "learned_us": [0.35, 0.39],
+            }
+        }
     }
-    (line,) = findings.outliers("3DC-7", table)
-    assert line == (
-        "3DC-7, BS without prediction: query 1 took 2.1 s, 21x the other queries' median (0.1 s); "
-        "it pulls the mean up to 0.767 s (the median: 0.1 s)."
+    lines = findings.crossover_table(results).splitlines()
+    assert lines[2] == "| links | 2 | close: can't tell (1.17) | network dearer (1.75) | 0.3 / 0.2 / 0.35 |"
+    assert lines[3] == "| links | 4 | close: can't tell (0.97) | network cheaper (0.10) | 0.4 / 4 / 0.39 |"
+    mesh = {
+        "variables": {"t": {"label": "t", "values": [20], "exact_us": [1.0], "fcl_us": [None], "learned_us": [2.0]}}
+    }
+    assert (
+        findings.crossover_table(mesh).splitlines()[2] == "| t | 20 | network dearer (2.00) | not timed | 1 / – / 2 |"
     )
 
 
-def test_outliers_of_two_queries_say_the_median_moves_too():
-    (line,) = findings.outliers("3DC-7", {"BS": {"without": summary([2.0, 0.02]), "with": summary([0.02, 0.02])}})
-    assert "query 0 took 2 s, 100x" in line and "with only two queries the median too (1.01 s)" in line
-
-
-def test_describe_lesson_carries_every_verdict_and_the_crossover_conclusion_verbatim():
-    conclusion = ["obstacles: learning never wins over 10-500.", "triangles: learning is cheaper at 20, 320."]
-    text = findings.describe_lesson({"2DS": "2DS: prediction costs time.", "3DC-7": "3DC-7: it saves."}, conclusion)
-    assert "- 2DS: prediction costs time.\n- 3DC-7: it saves." in text
-    assert text.endswith("- " + conclusion[0] + "\n- " + conclusion[1])
-
-
-def test_describe_throughput_says_who_leads_in_both_directions():
-    measured = {"ratio": 0.5, "learned_cfg_per_s": 4e6, "fcl_cfg_per_s": 1e6}
-    assert findings.describe_throughput("3DC-7", measured, 10_000) == (
-        "3DC-7, calls of 10,000 configurations on one thread: the learned checker answered 0.50x as many "
-        "configurations a second as the default exact checker (it trails) and 4.00x as many as python-fcl (it leads)."
-    )
-    tie = findings.describe_throughput("2DS", {"ratio": 1.02, "learned_cfg_per_s": 1.0, "fcl_cfg_per_s": 1.0}, 500)
-    assert tie.count("(a tie, within 5 %)") == 2
+def test_outlier_table_lists_the_slow_query_and_the_mean_it_moves():
+    tables = {
+        "3DC-7": {
+            "BS": row([0.1, 2.1, 0.1], [0.2, 0.2, 0.2]),
+            "OB": row([0.1, 0.3, 0.2], [0.2, 0.2, 0.2]),  # 3x: not an outlier
+            "G": row([0.01] * 20 + [0.05], [0.2] * 3),  # 5x, but the mean hardly moves
+        }
+    }
+    lines = findings.outlier_table(tables).splitlines()
+    assert len(lines) == 3 and lines[2] == "| 3DC-7 | BS | without | query 1: 2,100 (100) | 767 / 100 |"
+    assert findings.outlier_table({"2DS": {"BS": row([0.1, 0.1], [0.1, 0.1])}}) == ""
 
 
 def test_compare_scores_says_higher_lower_and_equal_at_the_printed_precision():

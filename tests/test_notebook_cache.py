@@ -49,16 +49,27 @@ def test_trained_scores_are_the_checkpoints_evaluation(tmp_path, monkeypatch):
     assert notebook.trained_scores("2ds", "paper", progress=False) == scores  # reads the cached folder
 
 
+@dataclasses.dataclass(frozen=True)
+class SweepSizes:
+    """Sizes a notebook names as one (as chapter 04's crossover sizes): the banner lists their fields."""
+
+    blocks: tuple[int, ...]
+    batch: int
+
+
 def test_banner_says_what_quick_mode_shrinks(monkeypatch, capsys):
     monkeypatch.setattr(notebook, "NAMED_SIZES", {})
     monkeypatch.setenv(notebook.QUICK_ENV, "1")
     assert notebook.sized(full=20_000, quick=2_000, what="configurations per check") == 2_000
     assert notebook.sized(full=range(8), quick=range(5, 8), what="queries") == range(5, 8)
+    sweep = notebook.sized(full=SweepSizes((10, 500), 10_000), quick=SweepSizes((10,), 500), what="sweep")
     notebook.banner(models=[("2ds", "paper"), ("3dc7", "strong")])
     lines = capsys.readouterr().out.splitlines()
     assert lines[0].startswith("QUICK MODE (TOOLKIT_QUICK=1)")
     assert lines[1] == "  configurations per check: 2,000 (full size: 20,000)"
     assert lines[2] == "  queries: 3 (5..7) (full size: 8 (0..7))"
+    assert sweep.batch == 500 and lines[3] == "  sweep: blocks 10; batch 500 (full size: blocks 10/500; batch 10,000)"
+    del lines[3]
     paper, strong = presets.get("paper"), presets.get("strong")
     quick_paper = QUICK.shrink(paper)
     assert lines[3].startswith(

@@ -5,11 +5,20 @@ Executed by :mod:`tools.notebook_runner` in a real kernel, as a student's Jupyte
 would; trained models go to a cache folder of this test session, not the user's.
 """
 
+import base64
 import json
+import os
 import re
 from pathlib import Path
 
+import nbformat
 import pytest
+from matplotlib.figure import Figure
+
+from toolkit.teaching.notebook import still
+from tools import notebook_runner
+from tools.notebook_runner import NotebookRun, widget_outputs
+from tools.site import LIVE_ONLY_IN_JUPYTERLAB, WIDGET_VIEW, static_widgets
 
 ROOT = Path(__file__).resolve().parents[1]
 NOTEBOOKS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))  # 01_... to 05_...
@@ -63,3 +72,65 @@ def test_every_mention_of_a_notebook_names_one_that_exists():
         if name not in names
     }
     assert not wrong, f"mentions of notebooks that do not exist: {sorted(wrong)}"
+
+
+# ---- what a static page shows of an executed notebook's widgets (tools/site.py, tools/notebook_runner.py) ----
+
+
+def executed_with_widget(state: dict, top: str) -> nbformat.NotebookNode:
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_code_cell("widget")]
+    view = {"model_id": top, "version_major": 2, "version_minor": 0}
+    nb.cells[0].outputs = [nbformat.v4.new_output("display_data", data={WIDGET_VIEW: view, "text/plain": "w"})]
+    nb.metadata["widgets"] = {"application/vnd.jupyter.widget-state+json": {"state": state}}
+    return nb
+
+
+def test_a_progress_bar_leaves_nothing_on_the_page():
+    state = {  # what tqdm.auto shows in a kernel: an HBox of a label, a FloatProgress and a label
+        "bar": {"model_name": "HBoxModel", "state": {"children": ["IPY_MODEL_a", "IPY_MODEL_p", "IPY_MODEL_b"]}},
+        "a": {"model_name": "HTMLModel", "state": {"value": "train samples"}},
+        "p": {"model_name": "FloatProgressModel", "state": {"value": 3}},
+        "b": {"model_name": "HTMLModel", "state": {"value": "3/8"}},
+    }
+    assert static_widgets(executed_with_widget(state, "bar")).cells[0].outputs == []
+
+
+def test_an_image_widget_shows_its_picture_with_its_tooltip_as_alt_and_a_note_only_beside_a_control():
+    png = base64.b64encode(b"\x89PNG picture").decode()
+    picture = {
+        "model_name": "ImageModel",
+        "state": {"format": "png", "tooltip": "threshold 0.50: 3 mistakes"},
+        "buffers": [{"path": ["value"], "data": png, "encoding": "base64"}],
+    }
+    alone = static_widgets(executed_with_widget({"img": picture}, "img")).cells[0].outputs
+    assert [o["data"]["image/png"] for o in alone] == [png]  # no "Live in JupyterLab" note: nothing to drive
+    assert alone[0]["metadata"]["image/png"]["alt"] == "threshold 0.50: 3 mistakes"
+    state = {
+        "box": {"model_name": "VBoxModel", "state": {"children": ["IPY_MODEL_slider", "IPY_MODEL_img"]}},
+        "slider": {"model_name": "FloatSliderModel", "state": {"value": 0.5}},
+        "img": picture,
+    }
+    nb = executed_with_widget(state, "box")
+    assert NotebookRun(nb, widget_outputs(nb), 0.0, 0.0).figures == 1  # the runner counts the picture too
+    outputs = static_widgets(nb).cells[0].outputs
+    assert outputs[0]["data"]["text/html"] == LIVE_ONLY_IN_JUPYTERLAB and outputs[1]["data"]["image/png"] == png
+
+
+def test_a_headless_run_switches_progress_bars_off_and_restores_the_variable(monkeypatch, tmp_path):
+    seen = []
+    monkeypatch.setattr(
+        notebook_runner.NotebookClient, "execute", lambda self: seen.append(os.environ.get("TQDM_DISABLE"))
+    )
+    monkeypatch.delenv("TQDM_DISABLE", raising=False)
+    nbformat.write(nbformat.v4.new_notebook(), tmp_path / "empty.ipynb")
+    notebook_runner.run_notebook(tmp_path / "empty.ipynb")
+    assert seen == ["1"] and "TQDM_DISABLE" not in os.environ
+
+
+def test_a_still_picture_folds_under_its_summary_with_its_figures_alt_text():
+    fig = Figure()
+    fig.subplots().set_title("the office from above")
+    html = still(fig, "No 3D view above?").data
+    assert html.startswith('<details><summary>No 3D view above?</summary><img src="data:image/png;base64,')
+    assert 'alt="Figure with 1 panel(s): the office from above"' in html

@@ -13,6 +13,7 @@ other work the first grows with the load, the second hardly does.
 from __future__ import annotations
 
 import argparse
+import base64
 import os
 import resource
 import sys
@@ -26,6 +27,9 @@ from nbclient import NotebookClient
 from nbclient.exceptions import CellExecutionError
 
 from toolkit.teaching.notebook import QUICK_ENV
+
+PNG_IN_HTML = 'src="data:image/png;base64,'  # a picture inside an HTML output
+NO_PROGRESS_BARS = "TQDM_DISABLE"  # tqdm's switch, read from the environment: off in a headless run
 
 
 @dataclass
@@ -49,7 +53,11 @@ class NotebookRun:
 
     @property
     def figures(self) -> int:
-        return sum("image/png" in o.get("data", {}) for o in self.outputs)
+        """PNG figures shown: outputs, and pictures inside HTML outputs (a still folded under a 3D view)."""
+        return sum(
+            ("image/png" in o.get("data", {})) + str(o.get("data", {}).get("text/html", "")).count(PNG_IN_HTML)
+            for o in self.outputs
+        )
 
     def problem(self) -> str | None:
         """The first error or printed traceback, in one message; None when the notebook ran cleanly."""
@@ -69,7 +77,15 @@ def run_notebook(path: str | Path, *, timeout: float = 900) -> NotebookRun:
     )
     client.on_notebook_start = lambda notebook: _poll_shell_in_slices(client.kc)
     began, cpu_before = time.perf_counter(), _children_cpu()
-    client.execute()  # shuts the kernel down and waits for it, so its CPU time is counted below
+    before = os.environ.get(NO_PROGRESS_BARS)
+    os.environ[NO_PROGRESS_BARS] = "1"  # the kernel inherits it: no one watches this run, so no bar (tqdm >= 4.66)
+    try:
+        client.execute()  # shuts the kernel down and waits for it, so its CPU time is counted below
+    finally:
+        if before is None:
+            os.environ.pop(NO_PROGRESS_BARS, None)
+        else:
+            os.environ[NO_PROGRESS_BARS] = before
     wall, cpu = time.perf_counter() - began, _children_cpu() - cpu_before
     outputs = [o for c in nb.cells if c.cell_type == "code" for o in c.outputs] + widget_outputs(nb)
     return NotebookRun(nb, outputs, wall, cpu)
@@ -82,14 +98,27 @@ def _children_cpu() -> float:
 
 def widget_outputs(nb) -> list[dict]:
     """What the widgets' default values displayed (an ``interact`` shows its output, and a failing callback's
-    traceback, in an Output widget, not in the cell's outputs)."""
+    traceback, in an Output widget, not in the cell's outputs; an ``Image`` widget holds its picture)."""
     state = nb.metadata.get("widgets", {}).get("application/vnd.jupyter.widget-state+json", {}).get("state", {})
-    return [
-        o
-        for model in state.values()
-        if model.get("model_name") == "OutputModel"
-        for o in model.get("state", {}).get("outputs", [])
-    ]
+    shown = []
+    for model in state.values():
+        if model.get("model_name") == "OutputModel":
+            shown += model.get("state", {}).get("outputs", [])
+        elif model.get("model_name") == "ImageModel":
+            shown += image_widget_output(model)
+    return shown
+
+
+def image_widget_output(model: dict) -> list[nbformat.NotebookNode]:
+    """A saved ``Image`` widget's PNG as a ``display_data`` output (its value is saved as a base64 buffer), its
+    ``tooltip`` as the picture's alt text; nothing for an empty or non-PNG one."""
+    widget = model.get("state", {})
+    value = next((b["data"] for b in model.get("buffers", []) if b.get("path") == ["value"]), widget.get("value"))
+    if not value or widget.get("format", "png") != "png":
+        return []
+    data = value if isinstance(value, str) else base64.b64encode(bytes(value)).decode()
+    alt = widget.get("tooltip") or "the picture this control shows at its starting value"
+    return [nbformat.v4.new_output("display_data", data={"image/png": data}, metadata={"image/png": {"alt": alt}})]
 
 
 def _poll_shell_in_slices(kc, every: float = 1.0) -> None:

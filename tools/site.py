@@ -37,7 +37,7 @@ import nbformat
 from toolkit.teaching import grading
 from toolkit.teaching.notebook import QUICK_ENV, is_quick
 from tools.executed_notebooks import run_or_reuse
-from tools.notebook_runner import NotebookRun
+from tools.notebook_runner import NotebookRun, image_widget_output
 
 ROOT = Path(__file__).resolve().parents[1]  # the repository (this file is tools/site.py)
 CONFIG = ROOT / "mkdocs.yml"
@@ -196,11 +196,12 @@ def execute(source: Path, target: Path, *, quick: bool, executed: Path) -> tuple
 
 
 def static_widgets(nb: nbformat.NotebookNode) -> nbformat.NotebookNode:
-    """Replace each widget in ``nb`` by a note that it is live only in JupyterLab and what it displayed.
+    """Replace each widget in ``nb`` by what it displayed at its starting values, with a note that it is live only
+    in JupyterLab where it has controls; a progress bar (tqdm's) is dropped.
 
     A page has no kernel to drive a slider, and rendering saved widget state would need the widget
-    manager's scripts from a CDN; the figure an ``interact`` showed at its starting values is kept
-    (it sits in the saved state of its ``Output`` widget), so the page still shows every figure.
+    manager's scripts from a CDN; the figure an ``interact`` showed (in the saved state of its ``Output`` widget)
+    and the picture an ``Image`` widget held are kept, so the page still shows every figure.
     """
     state = nb.metadata.pop("widgets", {}).get(WIDGET_STATE, {}).get("state", {})
     for cell in nb.cells:
@@ -212,19 +213,42 @@ def static_widgets(nb: nbformat.NotebookNode) -> nbformat.NotebookNode:
             if view is None:
                 outputs.append(output)
                 continue
-            outputs.append(nbformat.v4.new_output("display_data", data={"text/html": LIVE_ONLY_IN_JUPYTERLAB}))
+            models = {model.get("model_name") for model in tree(view["model_id"], state)}
+            if models & PROGRESS:
+                continue  # a progress bar: nothing a reader of the page needs
+            if any(name not in DISPLAY_ONLY for name in models):
+                outputs.append(nbformat.v4.new_output("display_data", data={"text/html": LIVE_ONLY_IN_JUPYTERLAB}))
             outputs.extend(shown_by(view["model_id"], state))
         cell.outputs = outputs
     return nb
 
 
+PROGRESS = {"FloatProgressModel", "IntProgressModel"}
+DISPLAY_ONLY = {  # widgets that show something but take no input: no "Live in JupyterLab" note for these alone
+    "OutputModel", "ImageModel", "HTMLModel", "HTMLMathModel", "LabelModel", "BoxModel", "HBoxModel", "VBoxModel",
+    "GridBoxModel", *PROGRESS,
+}  # fmt: skip
+
+
+def tree(model_id: str, state: dict) -> list[dict]:
+    """The widget ``model_id`` and every widget inside it (its ``children``), as saved in ``state``."""
+    model = state.get(model_id)
+    if model is None:
+        return []
+    children = model.get("state", {}).get("children", [])
+    return [model] + [m for child in children for m in tree(str(child).removeprefix("IPY_MODEL_"), state)]
+
+
 def shown_by(model_id: str, state: dict) -> list[nbformat.NotebookNode]:
-    """The outputs the widget ``model_id`` and the widgets inside it displayed (its ``Output`` widgets' outputs)."""
+    """The outputs the widget ``model_id`` and the widgets inside it displayed: its ``Output`` widgets' outputs and
+    its ``Image`` widgets' pictures (their ``tooltip`` as the picture's alt text)."""
     model = state.get(model_id)
     if model is None:
         return []
     if model.get("model_name") == "OutputModel":
         return [nbformat.from_dict(o) for o in model.get("state", {}).get("outputs", [])]
+    if model.get("model_name") == "ImageModel":
+        return image_widget_output(model)
     children = model.get("state", {}).get("children", [])
     return [o for child in children for o in shown_by(str(child).removeprefix("IPY_MODEL_"), state)]
 

@@ -24,7 +24,8 @@ from __future__ import annotations
 
 import dataclasses
 import time
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
+from contextlib import contextmanager
 
 import numpy as np
 import torch
@@ -47,6 +48,7 @@ from toolkit.planning.options import LazyPRMOptions, PRMOptions
 from toolkit.scenarios import Scenario
 
 __all__ = [
+    "cpu_clock",
     "device_calls",
     "edge_checks",
     "edge_checks_at",
@@ -80,6 +82,21 @@ def median_rate(fn, n_items: int, repeats: int = 5) -> float:
     return in_turns({"": (fn, n_items)}, repeats)[""]
 
 
+_CLOCK: list[Callable[[], float] | None] = [None]  # what in_turns times with: None, the wall clock; cpu_clock
+
+
+@contextmanager
+def cpu_clock() -> Iterator[None]:
+    """Within it, :func:`in_turns` (so :func:`throughput` and the crossover) times the calling thread's CPU time, not
+    the wall clock: beside other work a call then costs what it computed, not what it waited for a core. For work
+    on one thread (``queries.one_thread``: torch, numba and python-fcl then run in the caller's)."""
+    _CLOCK.append(time.thread_time)
+    try:
+        yield
+    finally:
+        _CLOCK.pop()
+
+
 def in_turns(calls: dict[str, tuple[Callable[[], object], int]], repeats: int = 5) -> dict[str, float]:
     """Items per second of each ``name: (fn, n_items)``, the medians of ``repeats`` rounds in which every
     ``fn`` is timed once, in turns (after one warm-up call each).
@@ -94,9 +111,10 @@ def in_turns(calls: dict[str, tuple[Callable[[], object], int]], repeats: int = 
     seconds: dict[str, list[float]] = {name: [] for name in calls}
     for _ in range(repeats):
         for name, (fn, _) in calls.items():
-            start = time.perf_counter()
+            clock = _CLOCK[-1] or time.perf_counter
+            start = clock()
             fn()
-            seconds[name].append(time.perf_counter() - start)
+            seconds[name].append(max(clock() - start, 1e-9))
     return {name: n / float(np.median(seconds[name])) for name, (_, n) in calls.items()}
 
 

@@ -1,9 +1,11 @@
-"""The sentences a chapter prints from what it has just computed, so that its prose cannot contradict its figures.
+"""What a chapter prints from what it has just measured: small Markdown tables, a verdict word in each row.
 
-A sentence that states a measured number or a comparison ("saves time", "above 1") is generated here from the
-measurements and printed under the figure (``NOTEBOOKS.md``); the chapters' prose then says only what holds at
-quick and full size and from run to run. One statistic throughout: medians over the queries, their spread as
-quartiles; a single slow query that moves a mean is named.
+The chapters' prose states the verdict a student can repeat (written, and true at quick and full size); the numbers
+behind it are computed here and shown as tables (``NOTEBOOKS.md``). A verdict is read from an *interval*, not from
+one number, so that a busy machine cannot turn "saves" into "costs": the middle half of the per-query ratios (each
+query timed without and with prediction in turn) for planning, a band of :data:`CLOSE` for a checker's cost timed in
+one round. Where the interval crosses the tie band the verdict is "can't tell". One statistic throughout: medians
+over the queries, their spread as quartiles; a single slow query that moves a mean is listed.
 """
 
 from __future__ import annotations
@@ -12,99 +14,164 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
-TIE = 0.05  # a ratio of medians within 5 % of 1 is a tie: a shared machine moves timings that much from run to run
+TIE = 0.10  # planning: a time ratio within 10 % of 1 is a tie (queries timed in turns moved that much run to run)
+CLOSE = 0.25  # a checker's cost per configuration, timed in a few rounds: within 25 % of the other's, too close to call
 OUTLIER = 5.0  # a query at least this many times the other queries' median total is an outlier
 MOVED = 1.5  # ... and it moves the mean when the mean is this many times the other queries' median
 SCORES = ("acc", "tpr", "tnr")  # a classifier's scores, as toolkit.learning.metrics names them (paper, Table 2)
 SCORE_NAMES = {"acc": "accuracy", "tpr": "TPR", "tnr": "TNR"}
 
-
-def verdict(ratio: float, tie: float = TIE) -> str:
-    """``"saves"`` below ``1 - tie`` (a time with / without prediction), ``"costs"`` above ``1 + tie``, else a tie."""
-    if not np.isfinite(ratio) or ratio <= 0:
-        raise ValueError(f"a time ratio must be a positive number, got {ratio!r}")
-    return "saves" if ratio < 1 - tie else "costs" if ratio > 1 + tie else "ties"
+SAVES, COSTS, TIES, UNSURE = "saves time", "costs time", "a tie", "can't tell"  # planning time, with / without
+CHEAPER, DEARER, NEAR = "network cheaper", "network dearer", "close: can't tell"  # a check's cost, network / exact
+POSITIVE, NEGATIVE = (SAVES, CHEAPER), (COSTS, DEARER)  # a verdict never flips between these two from run to run
 
 
-def median_ratios(table: Mapping[str, Mapping], kind: str = "total") -> dict[str, float]:
-    """Per sampler, ``kind`` time (``"total"`` or ``"sampling"``) with / without prediction, of the medians over
-    the queries, from a ``{sampler: {"without": summary, "with": summary}}`` table (``compare_prediction``)."""
-    key = f"{kind}_s_median"
-    return {s: row["with"][key] / max(row["without"][key], 1e-12) for s, row in table.items()}
+def judge(low: float, high: float, tie: float = TIE) -> str:
+    """``"below"`` when the interval ``[low, high]`` of ratios (with / without, or network / exact) lies below
+    ``1 - tie``, ``"above"`` when it lies above ``1 + tie``, ``"inside"`` when inside the band, else ``"across"``."""
+    if not all(np.isfinite(v) and v > 0 for v in (low, high)) or low > high:
+        raise ValueError(f"an interval of ratios must be positive numbers, low <= high, got {low!r}, {high!r}")
+    if high < 1 - tie:
+        return "below"
+    if low > 1 + tie:
+        return "above"
+    return "inside" if 1 - tie <= low and high <= 1 + tie else "across"
 
 
-def describe_ratios(name: str, ratios: Mapping[str, float], against: str, *, kind: str = "total") -> str:
-    """One sentence: for which samplers prediction saves, costs or ties ``kind`` time (ratios with / without)."""
-    groups: dict[str, list[str]] = {"saves": [], "costs": [], "ties": []}
-    for sampler, ratio in ratios.items():
-        groups[verdict(ratio)].append(f"{sampler} ({ratio:.2f})")
-    words = {"saves": "saves time with", "costs": "costs time with", "ties": "ties (within 5 %) with"}
-    everyone = len(ratios) > 1 and any(len(found) == len(ratios) for found in groups.values())
-    parts = [
-        f"{words[v]} {'every sampler: ' if everyone else ''}{_joined(found)}" for v, found in groups.items() if found
+def time_verdict(low: float, high: float | None = None, tie: float = TIE) -> str:
+    """:data:`SAVES`, :data:`COSTS`, :data:`TIES` or :data:`UNSURE` for time ratios with / without prediction (one
+    ratio, or an interval)."""
+    return {"below": SAVES, "above": COSTS, "inside": TIES, "across": UNSURE}[
+        judge(low, low if high is None else high, tie)
     ]
-    return f"{name}, {kind} time with / without prediction against {against}: prediction {'; '.join(parts)}."
 
 
-def describe_medians(name: str, table: Mapping[str, Mapping], against: str, *, kind: str = "total") -> str:
-    """:func:`describe_ratios` of a ``compare_prediction`` table's medians, with how many queries they are over."""
-    n = next(iter(table.values()))["without"]["n_queries"]
-    over = f"medians over {n} {'query' if n == 1 else 'queries'}"
-    return describe_ratios(f"{name} ({over})", median_ratios(table, kind), against, kind=kind)
+def cost_verdict(ratio: float, tie: float = CLOSE) -> str:
+    """:data:`CHEAPER`, :data:`DEARER` or :data:`NEAR` for a cost per configuration, network / exact."""
+    return {"below": CHEAPER, "above": DEARER}.get(judge(ratio, ratio, tie), NEAR)
 
 
-def outliers(name: str, table: Mapping[str, Mapping], factor: float = OUTLIER) -> list[str]:
-    """A sentence for every sampler and mode whose slowest query took at least ``factor`` times the other queries'
-    median total and pulls the mean to ``MOVED`` times that median or more: which query, how long, and where it
-    moves the mean (and the median, with two queries)."""
-    lines = []
-    for sampler, row in table.items():
-        for mode in ("without", "with"):
-            summary = row[mode]
-            totals = np.asarray(summary["total_s_per_query"], dtype=float)  # (queries,)
-            if len(totals) < 2:
-                continue
-            slowest = int(np.argmax(totals))
-            rest = float(np.median(np.delete(totals, slowest)))
-            if totals[slowest] < factor * max(rest, 1e-12) or summary["total_s"] < MOVED * rest:
-                continue  # not an outlier, or one that leaves the mean where the other queries put it
-            line = (
-                f"{name}, {sampler} {mode} prediction: query {slowest} took {totals[slowest]:.3g} s, "
-                f"{totals[slowest] / max(rest, 1e-12):.0f}x the other queries' median ({rest:.3g} s); "
-                f"it pulls the mean up to {summary['total_s']:.3g} s"
+def per_query_ratios(row: Mapping[str, Mapping]) -> np.ndarray:
+    """``(queries,)`` total time with / without prediction of each query, from a ``compare_prediction`` row
+    ``{"without": summary, "with": summary}`` (the two modes solved each query in turn)."""
+    without = np.asarray(row["without"]["total_s_per_query"], dtype=float)  # (queries,)
+    with_ = np.asarray(row["with"]["total_s_per_query"], dtype=float)  # (queries,)
+    return with_ / np.maximum(without, 1e-12)
+
+
+def planning_verdict(row: Mapping[str, Mapping], tie: float = TIE) -> tuple[float, float, float, str]:
+    """The per-query ratios' median and quartiles, and the verdict their quartiles give (:data:`UNSURE` with fewer
+    than two queries: one query is no interval)."""
+    ratios = per_query_ratios(row)
+    q1, median, q3 = (float(v) for v in np.percentile(ratios, (25, 50, 75)))
+    return median, q1, q3, time_verdict(q1, q3, tie) if len(ratios) >= 2 else UNSURE
+
+
+def planning_table(tables: Mapping[str, Mapping[str, Mapping]], tie: float = TIE) -> str:
+    """Markdown: per scenario and sampler of ``{scenario: compare_prediction table}``, the verdict with the per-query
+    ratios' median and middle half, then the median totals without and with prediction (the verdict comes first, so
+    that a narrow page shows it)."""
+    rows = [
+        "| scenario | sampler | with / without: verdict (median; middle half) | median total, ms: without / with "
+        "| queries |",
+        "| --- | --- | --- | --- | --- |",
+    ]
+    for name, table in tables.items():
+        for sampler, row in table.items():
+            median, q1, q3, said = planning_verdict(row, tie)
+            rows.append(
+                f"| {name} | {sampler} | {said} ({median:.2f}; {q1:.2f}–{q3:.2f}) "
+                f"| {_ms(row['without']['total_s_median'])} / {_ms(row['with']['total_s_median'])} "
+                f"| {row['without']['n_queries']} |"
             )
-            if len(totals) == 2:
-                line += f", and with only two queries the median too ({summary['total_s_median']:.3g} s)"
-            else:
-                line += f" (the median: {summary['total_s_median']:.3g} s)"
-            lines.append(line + ".")
-    return lines
+    return "\n".join(rows)
 
 
-def describe_lesson(verdicts: Mapping[str, str], crossover_conclusion: Sequence[str]) -> str:
-    """Markdown: the chapter's conclusion, ``verdicts`` (a :func:`describe_medians` sentence per scenario) then what
-    the crossover study (``toolkit.experiments.crossover.conclusion``) says about where prediction would pay."""
-    lines = ["**What was measured.**", ""]
-    lines += [f"- {sentence}" for sentence in verdicts.values()]
-    lines += ["", "**Where the crossover study says prediction would pay** (`crossover.conclusion`):", ""]
-    lines += [f"- {line}" for line in crossover_conclusion]
-    return "\n".join(lines)
+def ratio_table(series: Mapping[str, Mapping[str, float]], tie: float = TIE) -> str:
+    """Markdown: one row per ``{label: {sampler: time with / without}}`` (recorded figures over many queries), each
+    ratio with its verdict."""
+    samplers = list(next(iter(series.values())))
+    rows = ["| measured | " + " | ".join(samplers) + " |", "| --- |" + " --- |" * len(samplers)]
+    for label, ratios in series.items():
+        rows.append(
+            f"| {label} | "
+            + " | ".join(f"{time_verdict(ratios[s], tie=tie)} ({ratios[s]:.2f})" for s in samplers)
+            + " |"
+        )
+    return "\n".join(rows)
 
 
-def _joined(items: Sequence[str]) -> str:
-    return items[0] if len(items) == 1 else ", ".join(items[:-1]) + " and " + items[-1]
+def throughput_table(measured: Mapping[str, Mapping[str, float]], batch: int, tie: float = CLOSE) -> str:
+    """Markdown: per scenario of ``{scenario: bench.throughput result}``, the network's cost per configuration
+    against each exact checker's (network / exact) with its verdict, then the three checkers' configurations a
+    second."""
+    rows = [
+        f"| scenario, {batch:,} a call | cost, network / default exact | cost, network / python-fcl "
+        "| configurations a second: default exact / python-fcl / network |",
+        "| --- | --- | --- | --- |",
+    ]
+    for name, m in measured.items():
+        exact, fcl = 1 / m["ratio"], m["fcl_cfg_per_s"] / m["learned_cfg_per_s"]  # cost ratios, network / exact
+        rows.append(
+            f"| {name} | {cost_verdict(exact, tie)} ({exact:.2f}) | {cost_verdict(fcl, tie)} ({fcl:.2f}) "
+            f"| {m['exact_cfg_per_s']:,.0f} / {m['fcl_cfg_per_s']:,.0f} / {m['learned_cfg_per_s']:,.0f} |"
+        )
+    return "\n".join(rows)
 
 
-def describe_throughput(name: str, measured: Mapping[str, float], batch: int) -> str:
-    """One sentence from a ``toolkit.experiments.bench.throughput`` result: how many times as many configurations
-    a second the learned checker answered as the default exact checker and as python-fcl, and who led."""
-    words = {"saves": "it leads", "costs": "it trails", "ties": "a tie, within 5 %"}
-    exact, fcl = measured["ratio"], measured["learned_cfg_per_s"] / measured["fcl_cfg_per_s"]  # above 1: it leads
-    return (
-        f"{name}, calls of {batch:,} configurations on one thread: the learned checker answered {exact:.2f}x as many "
-        f"configurations a second as the default exact checker ({words[verdict(1 / exact)]}) and {fcl:.2f}x as "
-        f"many as python-fcl ({words[verdict(1 / fcl)]})."
-    )
+def crossover_table(results: Mapping, tie: float = CLOSE) -> str:
+    """Markdown: every point of a ``toolkit.experiments.crossover`` run (variables by their short names), the
+    network's cost per configuration against the default exact checker's and python-fcl's with verdicts, then the
+    three costs in microseconds."""
+    rows = [
+        "| what grows | value | network / default exact | network / python-fcl "
+        "| µs a configuration: default exact / python-fcl / network |",
+        "| --- | --- | --- | --- | --- |",
+    ]
+    for variable, sweep in results["variables"].items():
+        for value, exact, fcl, learned in zip(sweep["values"], sweep["exact_us"], sweep["fcl_us"], sweep["learned_us"]):
+            against_fcl = (
+                f"{cost_verdict(learned / fcl, tie)} ({learned / fcl:.2f})" if fcl is not None else "not timed"
+            )
+            rows.append(
+                f"| {variable} | {value:,} | {cost_verdict(learned / exact, tie)} ({learned / exact:.2f}) "
+                f"| {against_fcl} | {exact:.3g} / {'–' if fcl is None else f'{fcl:.3g}'} / {learned:.3g} |"
+            )
+    return "\n".join(rows)
+
+
+def outlier_table(tables: Mapping[str, Mapping[str, Mapping]], factor: float = OUTLIER) -> str:
+    """Markdown: every sampler and mode whose slowest query took at least ``factor`` times the other queries'
+    median total and pulls the mean to :data:`MOVED` times that median or more; ``""`` when there is none."""
+    rows = []
+    for name, table in tables.items():
+        for sampler, row in table.items():
+            for mode in ("without", "with"):
+                summary = row[mode]
+                totals = np.asarray(summary["total_s_per_query"], dtype=float)  # (queries,)
+                if len(totals) < 2:
+                    continue
+                slowest = int(np.argmax(totals))
+                rest = max(float(np.median(np.delete(totals, slowest))), 1e-12)
+                if totals[slowest] < factor * rest or summary["total_s"] < MOVED * rest:
+                    continue  # not an outlier, or one that leaves the mean where the other queries put it
+                rows.append(
+                    f"| {name} | {sampler} | {mode} | query {slowest}: {_ms(totals[slowest])} ({_ms(rest)}) "
+                    f"| {_ms(summary['total_s'])} / {_ms(summary['total_s_median'])} |"
+                )
+    if not rows:
+        return ""
+    head = [
+        "| scenario | sampler | prediction | slowest query: ms (the others' median) | mean / median (ms) |",
+        "| --- | --- | --- | --- | --- |",
+    ]
+    return "\n".join(head + rows)
+
+
+def _ms(seconds: float) -> str:
+    """Milliseconds, three significant figures, never in exponent notation: ``"0.0812"``, ``"12.3"``, ``"2,100"``."""
+    ms = 1e3 * seconds
+    return f"{ms:,.0f}" if ms >= 100 else f"{ms:.3g}"
 
 
 def compare_scores(ours: Mapping[str, float], reference: Mapping[str, float], keys: Sequence[str] = SCORES) -> str:

@@ -24,6 +24,8 @@ instead of loading a model made by the old one.
 
 from __future__ import annotations
 
+import dataclasses
+import io
 import json
 import os
 import shutil
@@ -106,6 +108,10 @@ def _count(size: object) -> str:
     """A size as the banner prints it: whole numbers with thousands separators, ranges by their length."""
     if isinstance(size, range):
         return f"{len(size)} ({size.start}..{size.stop - 1})"
+    if dataclasses.is_dataclass(size) and not isinstance(size, type):  # e.g. a crossover's sizes: its fields, briefly
+        return "; ".join(f"{field.name} {_count(getattr(size, field.name))}" for field in dataclasses.fields(size))
+    if isinstance(size, tuple):
+        return "/".join(_count(v) for v in size)
     return f"{size:,}" if isinstance(size, int) else str(size)
 
 
@@ -161,3 +167,22 @@ def _cached_folder(config: RunConfig) -> Path:
     recipe = presets.get(config.preset.name).fingerprint()  # the full recipe's: a quick model changes with it too
     name = f"{config.scenario.name}-{config.preset.name}-seed{config.seed}-{recipe}"
     return cache_dir() / f"{name}{'-quick' if config.quick else ''}"
+
+
+def still(fig, summary: str):
+    """``fig`` as a still picture folded under ``summary`` (HTML ``<details>``), its alt text from the figure: what a
+    browser without WebGL shows in place of a 3D view beside it (the view stays blank there)."""
+    import base64
+    import html
+
+    from IPython.display import HTML
+
+    from toolkit.plots.alt import alt_text
+
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png", dpi=80, bbox_inches="tight")
+    png = base64.b64encode(buffer.getvalue()).decode()
+    return HTML(
+        f"<details><summary>{html.escape(summary)}</summary>"
+        f'<img src="data:image/png;base64,{png}" alt="{html.escape(alt_text(fig))}" style="max-width:100%"></details>'
+    )
