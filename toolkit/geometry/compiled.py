@@ -24,6 +24,8 @@ from toolkit.geometry.box_world import BoxWorldChecker, refuse_mesh
 from toolkit.geometry.robots import AXES, BoxRobot
 from toolkit.geometry.workspace import Workspace
 
+FAR_CELL = 1.5  # the far bits' cells: this many times the smallest link ball's radius wide
+FAR_CELLS = 128  # or a 128th of the region's longest axis, if wider
 BASE_KINDS = {"point2d": 0, "planar": 1, "free": 2}  # a robot's base kind, as the kernels read it
 
 
@@ -40,6 +42,17 @@ class Robot(NamedTuple):
     half_extents: np.ndarray  # (L, 3), zero-padded in 2D
 
 
+class Far(NamedTuple):
+    """Per link ball and cell of a grid over the region, one bit: whether the ball, centred anywhere in the cell,
+    lies in the region and misses every obstacle (:func:`far_bits`)."""
+
+    lower: np.ndarray  # (3,) the grid's corner
+    cell: float  # width of a cell
+    shape: np.ndarray  # (3,) cells per axis
+    bits: np.ndarray  # (B, W) uint64 per ball size: bit c % 64 of word c // 64 is cell c's
+    link_ball: np.ndarray  # (L,) each link's ball size: its row of bits
+
+
 class World(NamedTuple):
     """A box workspace as arrays, with per grid cell the boxes that touch it (cell ``c``'s boxes are
     ``cell_boxes[cell_first[c]:cell_first[c] + cell_count[c]]``; the cells of ``BoxWorldChecker``)."""
@@ -52,6 +65,7 @@ class World(NamedTuple):
     cell_count: np.ndarray  # (C,)
     cell_first: np.ndarray  # (C,)
     cell_boxes: np.ndarray  # (B,)
+    far: Far | None = None  # the validity loop's first test of a link; a mesh's parts and clearances need none
 
 
 class CompiledChecker(BoxWorldChecker):
@@ -66,15 +80,29 @@ class CompiledChecker(BoxWorldChecker):
         refuse_mesh(workspace)
         super().__init__(workspace, robot)
         self._robot = robot_arrays(robot)
-        self._world = world_arrays(self, grow=0.0)
+        self._world = world_arrays(self, grow=0.0)._replace(far=far_grid(workspace, robot))
+        self._validity = None  # the compiled kernel.validity for these arrays, once known
         self._grown: dict[float, World] = {}  # clearances: the world with boxes grown by cap, by cap
 
     def validity(self, Q: np.ndarray) -> np.ndarray:
+        from numba import typeof
+
         from toolkit.geometry import kernels  # numba loads (or compiles) on first use, not on import
 
-        valid = np.empty(len(Q), dtype=bool)
-        kernels.validity(np.ascontiguousarray(Q, dtype=np.float64), self._robot, self._world, valid)
+        Q, valid = np.ascontiguousarray(Q, dtype=np.float64), np.empty(len(Q), dtype=bool)
+        if self._validity is None or not Q.flags.writeable:
+            kernels.validity(Q, self._robot, self._world, valid)
+            if Q.flags.writeable:  # numba's dispatcher picks the compiled version by the arguments' types, every
+                # call (3 us, as long as 30 configurations take): its types are these ones from now on
+                self._validity = kernels.validity.overloads[
+                    tuple(typeof(a) for a in (Q, self._robot, self._world, valid))
+                ].entry_point  # type: ignore[attr-defined]
+        else:
+            self._validity(Q, self._robot, self._world, valid)
         return valid
+
+    def __getstate__(self) -> dict:
+        return self.__dict__ | {"_validity": None}  # a compiled function does not pickle; the copy looks it up again
 
     def clearance_bounds(self, Q: np.ndarray, cap: float) -> np.ndarray:
         """The bound of :meth:`BoxWorldChecker.clearance_bounds`, compiled."""
@@ -112,6 +140,41 @@ def world_arrays(checker: BoxWorldChecker, grow: float) -> World:
         first,
         members,
     )
+
+
+def far_grid(ws: Workspace, robot: BoxRobot) -> Far:
+    """The far bits of a box workspace for ``robot``'s links, on a grid of cells as wide as its smallest link ball's
+    radius (at most ``FAR_CELLS`` along an axis)."""
+    lower, upper, boxes = (np.zeros(3), np.zeros(3), np.zeros((len(ws.boxes), 2, 3)))  # 2D: a third axis of width 0
+    lower[: ws.dim], upper[: ws.dim], boxes[..., : ws.dim] = ws.lower, ws.upper, ws.boxes
+    radii, link_ball = np.unique(np.linalg.norm(robot.half_extents, axis=1), return_inverse=True)  # (B,), (L,)
+    cell = max(float(radii.min()) * FAR_CELL, float(np.max(upper - lower)) / FAR_CELLS)
+    shape = np.ones(3, dtype=np.int64)
+    shape[: ws.dim] = np.ceil((upper - lower)[: ws.dim] / cell).astype(np.int64) + 1
+    bits = far_bits(boxes, lower, upper, cell, shape, radii, ws.dim)
+    return Far(lower, cell, shape, bits, link_ball.astype(np.int64))
+
+
+def far_bits(
+    obstacles: np.ndarray, lower: np.ndarray, upper: np.ndarray, cell: float, shape: np.ndarray, radii, dim: int = 3
+) -> np.ndarray:
+    """``(B, W)`` per ball radius ``radii (B,)``, the cells of a grid (``lower (3,)``, ``cell``, ``shape (3,)``, over
+    the region ``lower`` to ``upper``, its first ``dim`` axes walled) as bits: 1 where the ball round any point of
+    the cell lies in the region and farther than its radius from every box of ``obstacles (K, 2, 3)``. Then so does
+    a link box that the ball holds, and the box's axis-aligned bounds (no wider than the ball along any axis)."""
+    from toolkit.geometry import kernels
+
+    margin = 1e-9 * float(np.max(upper - lower))  # above rounding in the cell a centre falls in
+    cap = float(np.max(radii)) + cell  # nearer cells than this are all the bits need
+    clearance = kernels.cell_distances(obstacles, lower, cell, shape, cap)  # (C,)
+    x, y, z = (  # per axis, each layer of cells' distance to the region's walls
+        np.minimum(i * cell, upper[a] - lower[a] - (i + 1) * cell) if a < dim else np.full(len(i), np.inf)
+        for a, i in enumerate(np.arange(n) for n in shape)
+    )
+    walls = np.minimum.outer(np.minimum.outer(x, y), z).reshape(-1)  # (C,)
+    far = np.minimum(clearance, walls)[None] > np.asarray(radii)[:, None] + margin  # (B, C)
+    far = np.pad(far, ((0, 0), (0, -far.shape[1] % 64)))
+    return np.packbits(far, axis=1, bitorder="little").view("<u8")
 
 
 def robot_arrays(robot: BoxRobot) -> Robot:

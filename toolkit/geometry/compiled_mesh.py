@@ -27,7 +27,7 @@ import numpy as np
 from scipy import ndimage
 
 from toolkit.geometry.box_world import BoxWorldChecker
-from toolkit.geometry.compiled import World, robot_arrays, world_arrays
+from toolkit.geometry.compiled import World, far_bits, robot_arrays, world_arrays
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import MeshWorkspace
 
@@ -129,20 +129,8 @@ class CompiledMeshChecker(BoxWorldChecker):
         cell lies in the region and farther than its radius from every part's bounds ``part_bounds (K, 2, 3)``. Then
         so does the link's box and its axis-aligned bounds (no wider than the ball), the box touches no triangle,
         and its centre lies in no part (where the reference's winding number is 0)."""
-        from toolkit.geometry import mesh_kernels
-
         grid = self._grid
-        margin = 1e-9 * float(np.max(grid.upper - grid.lower))  # above rounding in the cell a centre falls in
-        cap = float(radii.max()) + grid.cell  # nearer cells than this are all the bits need
-        clearance = mesh_kernels.part_clearance(part_bounds, grid.lower, grid.cell, grid.shape, cap)  # (C,)
-        x, y, z = (  # per axis, each layer of cells' distance to the region's walls
-            np.minimum(i * grid.cell, grid.upper[a] - grid.lower[a] - (i + 1) * grid.cell)
-            for a, i in enumerate(np.arange(n) for n in grid.shape)
-        )
-        walls = np.minimum.outer(np.minimum.outer(x, y), z).reshape(-1)  # (C,)
-        far = np.minimum(clearance, walls)[None] > radii[:, None] + margin  # (B, C)
-        far = np.pad(far, ((0, 0), (0, -far.shape[1] % 64)))
-        return np.packbits(far, axis=1, bitorder="little").view("<u8")
+        return far_bits(part_bounds, grid.lower, grid.upper, grid.cell, grid.shape, radii)
 
     def _cell_states(self, solid, *, closed: bool) -> np.ndarray:
         """``(C,)`` each cell's state; cells no triangle touches, by connected region, from one winding number each;

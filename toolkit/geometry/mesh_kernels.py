@@ -38,7 +38,16 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from toolkit.geometry.kernels import boxes_touch, in_bounds, link_bounds, link_frames, listed_boxes
+from toolkit.geometry.kernels import (
+    boxes_touch,
+    far,
+    flat_cell,
+    in_bounds,
+    link_bounds,
+    link_frames,
+    listed_boxes,
+    new_frame,
+)
 
 OUTSIDE, INSIDE, SURFACE = 0, 1, 2  # a grid cell's state: no triangle crosses it (out, in), or some may
 
@@ -131,51 +140,10 @@ def winding_number(point, triangles, faces):
     return total / (4 * np.pi)
 
 
-@njit(cache=True)
-def part_clearance(bounds, lower, cell, shape, cap):
-    """``(C,)`` per cell of a grid (``lower (3,)``, cubes of side ``cell``, ``shape (3,)``), the distance from the cell
-    to the nearest of the boxes ``bounds (K, 2, 3)`` (min / max corners), or ``cap`` where none lies nearer."""
-    clearance = np.full(shape[0] * shape[1] * shape[2], cap)
-    block = np.zeros((2, 3), np.int64)
-    for k in range(len(bounds)):
-        for i in range(3):  # the cells within cap of box k
-            for end, value in enumerate((bounds[k, 0, i] - cap, bounds[k, 1, i] + cap)):
-                block[end, i] = min(max(int(np.floor((value - lower[i]) / cell)), 0), shape[i] - 1)
-        for a in range(block[0, 0], block[1, 0] + 1):
-            for b in range(block[0, 1], block[1, 1] + 1):
-                for c in range(block[0, 2], block[1, 2] + 1):
-                    gap = 0.0
-                    for i, index in enumerate((a, b, c)):
-                        start = lower[i] + index * cell
-                        gap += max(bounds[k, 0, i] - (start + cell), start - bounds[k, 1, i], 0.0) ** 2
-                    flat = (a * shape[1] + b) * shape[2] + c
-                    clearance[flat] = min(clearance[flat], np.sqrt(gap))
-    return clearance
-
-
-@njit(cache=True, inline="always")
-def _flat_cell(point, world):
-    """The index of the grid cell of ``world`` that holds ``point (3,)`` (clipped to the grid)."""
-    flat = 0
-    for i in range(3):
-        cell = min(max(int(np.floor((point[i] - world.lower[i]) / world.cell)), 0), world.shape[i] - 1)
-        flat = flat * world.shape[i] + cell
-    return flat
-
-
 @njit(cache=True, inline="always")
 def _cell_state(point, mesh, world):
     """The state of the grid cell holding ``point (3,)`` (clipped to the grid)."""
-    return mesh.cell_state[_flat_cell(point, world)]
-
-
-@njit(cache=True, inline="always")
-def _far(center, bits, world):
-    """Whether the ball of a link centred at ``center (3,)`` lies in the region and misses every part's bounds
-    wherever in its cell of ``world`` the centre lies: ``bits (W,)``, one a cell, that ball's row of
-    :class:`toolkit.geometry.compiled_mesh.Mesh`'s ``far``."""
-    flat = _flat_cell(center, world)
-    return (bits[flat >> 6] >> (flat & 63)) & 1
+    return mesh.cell_state[flat_cell(point, world)]
 
 
 @njit(cache=True, inline="always")
@@ -271,7 +239,7 @@ def _touches_a_triangle(center, R, half, low, high, cells, world, mesh, seen, ta
 def base_link_inside(Q, robot, world, inside):
     """Fill ``inside (N,)``: whether the base link of each configuration of ``Q (N, dof)`` lies inside ``world``'s
     region (:func:`toolkit.geometry.kernels.link_bounds` of that link alone); false, the configuration is invalid."""
-    frame, centers, rotations = np.zeros((4, 3)), np.zeros((1, 3)), np.zeros((1, 3, 3))
+    frame, centers, rotations = new_frame(Q.shape[1]), np.zeros((1, 3)), np.zeros((1, 3, 3))
     low, high, cells = np.zeros((1, 3)), np.zeros((1, 3)), np.zeros((1, 2, 3), np.int64)
     for n in range(len(Q)):
         link_frames(Q[n], robot, frame, centers, rotations, 1)
@@ -286,7 +254,7 @@ def mesh_validity(Q, robot, parts, world, mesh, valid):
     bounds (a box world's coarse grid), ``world`` one of the triangles' bounds (a finer grid, whose cells the far
     bits follow); ``mesh``: :class:`toolkit.geometry.compiled_mesh.Mesh`."""
     half, n_links = robot.half_extents, len(robot.half_extents)
-    frame, centers, rotations = np.zeros((4, 3)), np.zeros((n_links, 3)), np.zeros((n_links, 3, 3))
+    frame, centers, rotations = new_frame(Q.shape[1]), np.zeros((n_links, 3)), np.zeros((n_links, 3, 3))
     low, high, scratch = np.zeros((1, 3)), np.zeros((1, 3)), np.zeros((9, 3))  # low, high: one link's bounds
     part_cells, cells = np.zeros((1, 2, 3), np.int64), np.zeros((2, 3), np.int64)
     seen = np.full(len(world.boxes), -1)  # per triangle: the last link that tested it
@@ -300,7 +268,7 @@ def mesh_validity(Q, robot, parts, world, mesh, valid):
         for link in range(n_links):
             tag = n * n_links + link
             c, R, h = centers[link], rotations[link], half[link]
-            if _far(c, mesh.far[mesh.link_ball[link]], world):
+            if far(c, mesh.far[mesh.link_ball[link]], world):
                 continue  # its ball, wherever in its cell, lies in the region and meets no part's bounds
             one = slice(link, link + 1)
             if not link_bounds(half[one], parts, centers[one], rotations[one], low, high, part_cells):
