@@ -1,6 +1,6 @@
 """What a reader follows through one PRM query: the toolkit's functions and source lines it runs (issue #33).
 
-    .venv/bin/python docs/scripts/query_reading.py [--list]
+    .venv/bin/python docs/scripts/query_reading.py [--list] [--command]
 
 It measures the ``toolkit`` that Python imports (the first line printed says which); for
 another checkout, run its copy of the script with ``PYTHONPATH=that/checkout``.
@@ -11,7 +11,10 @@ of a quick ``strong`` model (trained here in a few seconds, in a temporary folde
 way, it solves the query once to warm up, then once more as ``toolkit plan --predict`` does
 (the BS sampler, the default planner: ``problems.build(scenario, query, checker=...)``, then
 ``task.solve``) under ``sys.setprofile``, and prints how many distinct functions ran, their
-source lines and their files; ``--list`` adds the functions, file by file.
+source lines and their files; ``--list`` adds the functions, file by file. ``--command``
+counts instead the whole ``toolkit plan --scenario 3dc7 --sampler BS --predict --checkpoint
+DIR --json`` (through ``toolkit.cli.main``, after one warm-up run): argument parsing, loading
+the checkpoint and building the query included; it runs on checkouts older than this script.
 
 What counts (the variant closest to the issue's figures, among those tried: with or
 without comprehensions, lambdas, dataclasses' generated methods, numba's kernels, the
@@ -34,7 +37,9 @@ few. The figures, before and after the layouts of issues #33 and #48, are in ``d
 """
 
 import argparse
+import contextlib
 import inspect
+import io
 import sys
 import tempfile
 from collections import defaultdict
@@ -43,8 +48,8 @@ from pathlib import Path
 import numpy as np
 
 import toolkit
-from toolkit import scenarios
-from toolkit.experiments import pipeline, problems, queries
+from toolkit import cli, scenarios
+from toolkit.experiments import pipeline, queries
 from toolkit.experiments.config import RunConfig
 from toolkit.geometry.collision import exact_checker
 from toolkit.learning.learned import LearnedChecker
@@ -54,6 +59,8 @@ ROOT = Path(toolkit.__file__).resolve().parent
 
 def one_query(scenario, query, checker, exact):
     """Solve ``query`` as ``toolkit plan`` does: BS sampler, the default planner, ``checker`` deciding samples."""
+    from toolkit.experiments import problems  # (issue 48; --command runs on checkouts without it)
+
     task = problems.build(scenario, query, sampler="BS", checker=checker, exact=exact)
     return task.solve(np.random.default_rng(0))
 
@@ -94,14 +101,22 @@ def report(label: str, codes: set, listing: bool) -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--list", action="store_true", help="list the functions, file by file")
+    parser.add_argument("--command", action="store_true", help="count the whole `toolkit plan --predict` command")
     args = parser.parse_args()
     scenario = scenarios.get("3dc7")
     query = queries.make_queries(scenario, seed=0, n_workspaces=1)[0]
+    print(f"toolkit: {ROOT}")
     with tempfile.TemporaryDirectory() as folder:
         config = RunConfig.create(scenario, "strong", quick=True, progress=False, device="cpu")
         models, _, _ = pipeline.train_and_save(config, folder)
+        if args.command:
+            argv = ["plan", "--scenario", "3dc7", "--sampler", "BS", "--predict", "--checkpoint", folder, "--json"]
+            with contextlib.redirect_stdout(io.StringIO()):  # the path printed twice
+                cli.main(argv)  # warm-up
+                codes = functions_run(cli.main, argv)
+            report("toolkit plan --predict (the whole command)", codes, args.list)
+            return
     exact = exact_checker(query.workspace, scenario.robot)
-    print(f"toolkit: {ROOT}")
     for label, checker in (("with prediction", LearnedChecker(query.workspace, models)), ("without", None)):
         one_query(scenario, query, checker, exact)  # warm-up: lazy set-up and first calls' costs
         report(label, functions_run(one_query, scenario, query, checker, exact), args.list)

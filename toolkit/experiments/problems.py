@@ -74,16 +74,13 @@ def build(
     the robot) that builds one; ``planner``: a name, or a planner already made; ``preset``: the recipe whose pairing
     names the planner when none is; ``changes``: to the planner's parameters."""
     scenario = scenarios.get(scenario) if isinstance(scenario, str) else scenario
-    kept = [exact] if isinstance(exact, CollisionChecker) else []  # the query workspace's exact checker
-    factory = exact_checker if exact is None or isinstance(exact, CollisionChecker) else exact
-
-    def exact_of(workspace: Workspace, robot: BoxRobot) -> CollisionChecker:  # built once: it chooses the start and
-        kept[:] = kept or [factory(workspace, robot)]  # goal (make_queries), then checks the plan
-        return kept[0]
-
-    query = query or make_queries(scenario, seed=seed, n_workspaces=1, per_workspace=1, exact=exact_of)[0]
+    if query is None:
+        query, truth = first_query(scenario, seed, exact)
+    else:
+        truth = (
+            exact if isinstance(exact, CollisionChecker) else (exact or exact_checker)(query.workspace, scenario.robot)
+        )
     checker = checker if checker is None or isinstance(checker, CollisionChecker) else checker(query.workspace)
-    truth = exact_of(query.workspace, scenario.robot)
     problem = Problem.create(
         truth, query.start, query.goal, sampler=sampler, checker=checker, resolution=scenario.plan_resolution
     )
@@ -94,6 +91,19 @@ def build(
     else:
         solver = planner
     return Task(scenario, query, solver, problem)
+
+
+def first_query(scenario: Scenario, seed: int, exact: ExactSource) -> tuple[Query, CollisionChecker]:
+    """The first query of the paper's set for ``seed`` and its workspace's exact checker, built once: it accepts the
+    start and goal, then checks the plan."""
+    kept = [exact] if isinstance(exact, CollisionChecker) else []
+    factory = exact_checker if exact is None or isinstance(exact, CollisionChecker) else exact
+
+    def exact_of(workspace: Workspace, robot: BoxRobot) -> CollisionChecker:
+        kept[:] = kept or [factory(workspace, robot)]
+        return kept[0]
+
+    return make_queries(scenario, seed=seed, n_workspaces=1, per_workspace=1, exact=exact_of)[0], kept[0]
 
 
 def make_planner(scenario: Scenario, name: str | None = None, *, preset: Preset | None = None, **changes) -> Planner:
