@@ -262,7 +262,8 @@ SUBCOMMANDS: list[tuple[str, str, str, list[str], Callable[[argparse.ArgumentPar
         "worlds), by the python-fcl reference, and by the learned one (the networks; untrained ones\n"
         "of the preset's sizes unless --checkpoint), timed in turns, their ratios, and exact edge\n"
         "checking. With --checkpoint it also plans a few of the paper's queries with that model and\n"
-        "without (the best exact planner and checker) and prints the time ratios. With --vs-ompl it\n"
+        "without (one planner both ways: --planner, default lazy, the best exact planner, with the\n"
+        "default exact checker) and prints the time ratios and the planner's name. With --vs-ompl it\n"
         "races our planners against OMPL's PRM and RRTConnect on the same queries and checker. With\n"
         "--crossover it sweeps what makes an exact check dear and shows where prediction pays.",
         [
