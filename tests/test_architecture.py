@@ -228,7 +228,7 @@ def test_each_planner_owns_frozen_parameters_and_the_default_is_named_once():
     recipe's pairing name planners too; nothing else under ``toolkit/`` writes a planner's name as a default)."""
     for name in prm.names():
         params = prm.get(name).Params
-        assert dataclasses.is_dataclass(params) and params.__dataclass_params__.frozen  # type: ignore[attr-defined]
+        assert dataclasses.is_dataclass(params) and params.__dataclass_params__.frozen
         assert not any(issubclass(params, prm.get(other).Params) for other in prm.names() if other != name)
     allowed = {"planning/prm.py", "planning/lazy_prm.py", "experiments/planners.py"}
     named = [

@@ -271,7 +271,7 @@ def test_the_planner_is_chosen_by_name_and_owns_its_parameters():
     with pytest.raises(ValueError, match=r"unknown planner option\(s\) \['screen_edges'\]; PaperParams has"):
         PRM(screen_edges=False)
     with pytest.raises(dataclasses.FrozenInstanceError):
-        PaperParams().k = 3  # type: ignore[misc]
+        PaperParams().k = 3
     default = plan(exact, q.start, q.goal, sampler="G", rng=np.random.default_rng(3))  # none named: prm.DEFAULT
     assert prm.DEFAULT == "lazy" and default.planner == "lazy"
     np.testing.assert_array_equal(default.roadmap.edges, lazy.roadmap.edges)
