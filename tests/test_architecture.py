@@ -9,9 +9,13 @@ functions under 60, and no module imports another's private name.
 """
 
 import ast
+import dataclasses
+import re
 from pathlib import Path
 
 import pytest
+
+from toolkit.planning import prm
 
 ROOT = Path(__file__).resolve().parents[1] / "toolkit"
 LAYERS = {  # package (or top-level module) -> layer; a module imports only from lower layers and its own package
@@ -137,7 +141,18 @@ def test_no_module_imports_another_modules_private_names():
     assert private == []
 
 
-PLANNER_WORDS = ("PRMOptions", "planner_options", "screen_edges", "auxiliary", "exact_every", "lazy PRM")
+PLANNER_WORDS = (
+    "PRMOptions",
+    "PaperParams",
+    "LazyParams",
+    "RoadmapParams",
+    "planner_options",
+    "make_planner",
+    "screen_edges",
+    "auxiliary",
+    "exact_every",
+    "lazy PRM",
+)
 
 
 @pytest.mark.parametrize("package", ["geometry", "learning"])
@@ -205,3 +220,21 @@ def test_the_library_imports_no_course_build_tool():
                     continue
                 found.append(f"{path.relative_to(ROOT.parent)}:{node.lineno} imports {root}")
     assert found == []
+
+
+def test_each_planner_owns_frozen_parameters_and_the_default_is_named_once():
+    """Issue 48: a planner's parameters are a frozen dataclass of its own, no planner's a subclass of another's; the
+    planner that runs when none is named is written in one place, ``prm.DEFAULT`` (a planner's own ``name`` and a
+    recipe's pairing name planners too; nothing else under ``toolkit/`` writes a planner's name as a default)."""
+    for name in prm.names():
+        params = prm.get(name).Params
+        assert dataclasses.is_dataclass(params) and params.__dataclass_params__.frozen
+        assert not any(issubclass(params, prm.get(other).Params) for other in prm.names() if other != name)
+    allowed = {"planning/prm.py", "planning/lazy_prm.py", "experiments/planners.py"}
+    named = [
+        f"{path.relative_to(ROOT)}:{n}"
+        for path in sorted(ROOT.rglob("*.py"))
+        for n, line in enumerate(path.read_text().splitlines(), 1)
+        if re.search(r"""["']lazy["']""", line) and str(path.relative_to(ROOT)) not in allowed
+    ]
+    assert named == []

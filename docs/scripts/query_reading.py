@@ -1,6 +1,6 @@
 """What a reader follows through one PRM query: the toolkit's functions and source lines it runs (issue #33).
 
-    .venv/bin/python docs/scripts/query_reading.py [--list]
+    .venv/bin/python docs/scripts/query_reading.py [--list] [--command]
 
 It measures the ``toolkit`` that Python imports (the first line printed says which); for
 another checkout, run its copy of the script with ``PYTHONPATH=that/checkout``.
@@ -8,10 +8,13 @@ another checkout, run its copy of the script with ``PYTHONPATH=that/checkout``.
 Builds 3DC-7's first query (``make_queries(scenario, seed=0, n_workspaces=1)``), its
 default exact checker (``exact_checker``) and, for "with prediction", a learned checker
 of a quick ``strong`` model (trained here in a few seconds, in a temporary folder). Each
-way, it solves the query once to warm up, then once more with the BS sampler and the
-default planner settings (``default_options(scenario, checker)``) under
-``sys.setprofile``, and prints how many distinct functions ran, their source lines and
-their files; ``--list`` adds the functions, file by file.
+way, it solves the query once to warm up, then once more as ``toolkit plan --predict`` does
+(the BS sampler, the default planner: ``problems.build(scenario, query, checker=...)``, then
+``task.solve``) under ``sys.setprofile``, and prints how many distinct functions ran, their
+source lines and their files; ``--list`` adds the functions, file by file. ``--command``
+counts instead the whole ``toolkit plan --scenario 3dc7 --sampler BS --predict --checkpoint
+DIR --json`` (through ``toolkit.cli.main``, after one warm-up run): argument parsing, loading
+the checkpoint and building the query included; it runs on checkouts older than this script.
 
 What counts (the variant closest to the issue's figures, among those tried: with or
 without comprehensions, lambdas, dataclasses' generated methods, numba's kernels, the
@@ -25,22 +28,27 @@ checkers' set-up, decorators and docstrings in the lines):
 - its lines: ``inspect.getsourcelines``, decorators to last line, docstring, comments
   and blank lines inside included;
 - the checkers are built and warmed before: encoding the workspace and the compiled
-  checker's arrays are not part of the query; ``solve_query`` and ``default_options``
-  are.
+  checker's arrays are not part of the query; building the task (``problems.build``: the
+  planner, its parameters and the problem) and solving it are. (Before issue 48 the script
+  called ``default_options`` then ``solve_query``, what ``toolkit plan`` called then.)
 
 Which functions run depends on the query (repairs, bridges): other seeds move the count by a
-few. The figures, before and after the layout of issue #33, are in ``docs/design.md``.
+few. The figures, before and after the layouts of issues #33 and #48, are in ``docs/design.md``.
 """
 
 import argparse
+import contextlib
 import inspect
+import io
 import sys
 import tempfile
 from collections import defaultdict
 from pathlib import Path
 
+import numpy as np
+
 import toolkit
-from toolkit import scenarios
+from toolkit import cli, scenarios
 from toolkit.experiments import pipeline, queries
 from toolkit.experiments.config import RunConfig
 from toolkit.geometry.collision import exact_checker
@@ -50,9 +58,11 @@ ROOT = Path(toolkit.__file__).resolve().parent
 
 
 def one_query(scenario, query, checker, exact):
-    """Solve ``query`` as the toolkit does: BS sampler, the default planner, ``checker``'s settings."""
-    options = queries.default_options(scenario, checker)
-    return queries.solve_query(scenario, query, "BS", checker=checker, options=options, seed=0, exact=exact)
+    """Solve ``query`` as ``toolkit plan`` does: BS sampler, the default planner, ``checker`` deciding samples."""
+    from toolkit.experiments import problems  # (issue 48; --command runs on checkouts without it)
+
+    task = problems.build(scenario, query, sampler="BS", checker=checker, exact=exact)
+    return task.solve(np.random.default_rng(0))
 
 
 def compiled_kernels() -> set:
@@ -91,14 +101,22 @@ def report(label: str, codes: set, listing: bool) -> None:
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--list", action="store_true", help="list the functions, file by file")
+    parser.add_argument("--command", action="store_true", help="count the whole `toolkit plan --predict` command")
     args = parser.parse_args()
     scenario = scenarios.get("3dc7")
     query = queries.make_queries(scenario, seed=0, n_workspaces=1)[0]
+    print(f"toolkit: {ROOT}")
     with tempfile.TemporaryDirectory() as folder:
         config = RunConfig.create(scenario, "strong", quick=True, progress=False, device="cpu")
         models, _, _ = pipeline.train_and_save(config, folder)
+        if args.command:
+            argv = ["plan", "--scenario", "3dc7", "--sampler", "BS", "--predict", "--checkpoint", folder, "--json"]
+            with contextlib.redirect_stdout(io.StringIO()):  # the path printed twice
+                cli.main(argv)  # warm-up
+                codes = functions_run(cli.main, argv)
+            report("toolkit plan --predict (the whole command)", codes, args.list)
+            return
     exact = exact_checker(query.workspace, scenario.robot)
-    print(f"toolkit: {ROOT}")
     for label, checker in (("with prediction", LearnedChecker(query.workspace, models)), ("without", None)):
         one_query(scenario, query, checker, exact)  # warm-up: lazy set-up and first calls' costs
         report(label, functions_run(one_query, scenario, query, checker, exact), args.list)

@@ -2,10 +2,12 @@
 
 Reading order:
 
-1. :mod:`toolkit.experiments.planners` — which planner plans with each training recipe (``paper``: Algorithm 1;
-   ``strong``: the lazy PRM with learned edge screening);
-2. :mod:`toolkit.experiments.queries` — the paper's query sets (§IV-A), a run's planner options, runs over the
-   queries (with and without prediction, in turns) and their summaries;
+1. :mod:`toolkit.experiments.planners` — which planner a training recipe's runs plan with (``paper``: Algorithm 1;
+   ``strong``: the lazy PRM with learned edge screening), with and without its model alike;
+2. :mod:`toolkit.experiments.query_sets` — the paper's query sets (§IV-A); :mod:`~toolkit.experiments.problems` —
+   one query built once (``build``: scenario, query, checkers, the planner and its parameters);
+   :mod:`~toolkit.experiments.queries` — runs over the queries (with and without prediction, in turns) and
+   :mod:`~toolkit.experiments.summaries`, what they report;
 3. :mod:`toolkit.experiments.config` — ``RunConfig``: one run's scenario, preset, seed, sizes (``QUICK``) and
    Table 3's baseline (``BASELINES``);
 4. :mod:`toolkit.experiments.pipeline` — data, training, evaluation and a checkpoint, in one call;

@@ -7,16 +7,20 @@ Reading order:
 1. :mod:`toolkit.planning.sampling` — the four samplers BS, OB, G, BT over any checker (+ register your own);
 2. :mod:`toolkit.planning.local_planner` — straight-line edges checked at a motion resolution;
 3. :mod:`toolkit.planning.roadmap` — nodes, edges, k nearest neighbours, shortest paths;
-4. :mod:`toolkit.planning.options` — each planner's settings: ``PRMOptions`` (Algorithm 1's) and
-   ``LazyPRMOptions`` (those and the lazy planner's own);
-5. :mod:`toolkit.planning.query_roadmap` — what both planners share: one query's roadmap, its
+4. :mod:`toolkit.planning.planner` — the interface: a frozen ``Problem`` (exact checker, start, goal, sampler, the
+   checker that decides samples, resolution), a planner (a ``name``, its own ``Params``, ``solve(problem, rng)``)
+   and its ``PlanResult``;
+5. :mod:`toolkit.planning.options` — the roadmap planners' parameters: ``PaperParams`` (Algorithm 1's) and
+   ``LazyParams`` (the lazy PRM's), neither inheriting the other's;
+6. :mod:`toolkit.planning.query_roadmap` — what both roadmap planners share: one query's roadmap, its
    counters and trace, and the exact verification of a path (repairing what fails);
-6. :mod:`toolkit.planning.paper_prm` — **Algorithm 1**, as the paper has it, on one page;
-7. :mod:`toolkit.planning.lazy_prm` — the lazy PRM: the best exact planner, and prediction beyond the paper;
-8. :mod:`toolkit.planning.prm` — ``plan(exact, start, goal, ...)``: one entry to either planner, chosen by the
-   options' class;
-9. :mod:`toolkit.planning.ompl` — our checkers and samplers inside OMPL, for comparison.
+7. :mod:`toolkit.planning.paper_prm` — **Algorithm 1**, as the paper has it, on one page (planner ``paper``);
+8. :mod:`toolkit.planning.lazy_prm` — the lazy PRM (planner ``lazy``): the best exact planner, and prediction
+   beyond the paper;
+9. :mod:`toolkit.planning.prm` — the planners by name (``register``, ``get``, ``names``; ``DEFAULT``, the rule for
+   which runs) and ``plan(exact, start, goal, ...)``, one entry to any of them;
+10. :mod:`toolkit.planning.ompl` — our checkers and samplers inside OMPL, for comparison.
 
-Which planner plans with which model, and the paper's query sets, are the experiments' business
-(:mod:`toolkit.experiments`).
+The paper's query sets, one query built from a scenario (``toolkit.experiments.problems.build``) and
+which planner a recipe's runs use are the experiments' business (:mod:`toolkit.experiments`).
 """
