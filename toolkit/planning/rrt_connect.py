@@ -1,0 +1,188 @@
+"""RRT-Connect (Kuffner & LaValle 2000): two trees, one from the start and one from the goal, that grow towards
+random configurations and towards each other; a fast exact planner for a single query.
+
+Each iteration draws a configuration uniformly, **extends** one tree towards it by at most ``range`` (of
+``robot.motion_bound``: no robot point moves farther), and then **connects** the other tree to the new node: it
+extends towards it again and again until it reaches it (the trees meet: a path) or is stopped by an obstacle. Then
+the trees swap roles.
+
+An extension is an edge of the tree, checked exactly at the local planner's grid (``local_planner.step_counts``
+steps of ``resolution``, the end included) *coarse to fine*: first every ``coarse``-th point and the end in one
+checker call, then the rest in a second, so that an extension into an obstacle usually stops after the first,
+small call. An extension that meets an obstacle adds nothing (the tree is *trapped*). OMPL's RRTConnect (Şucan,
+Moll, Kavraki 2012) asks its checker one configuration a call; here a call holds a few tens, since a call's fixed
+cost outweighs many configurations' (``docs/benchmarks.md``, "Against OMPL").
+
+Every edge of a path was checked at ``resolution`` as it grew; the path is then verified exactly at
+``resolution / verify_refinement`` with clearance certificates (``local_planner.certify_edges``: the answer of
+checking every point). An edge that fails there is cut from its tree, with the branch beyond it, and the search goes
+on; so a returned path is valid at both resolutions.
+"""
+
+from __future__ import annotations
+
+import time
+from dataclasses import dataclass
+
+import numpy as np
+
+from toolkit.geometry.collision import CollisionChecker
+from toolkit.planning.local_planner import certify_edges, default_resolution
+
+SAMPLES = 64  # random configurations drawn at a time
+
+
+@dataclass(frozen=True)
+class RRTConnectOptions:
+    """RRT-Connect's settings; ``range`` in resolutions, as the edges' length is in checks."""
+
+    range: float = 64.0  # an extension moves no robot point farther than resolution * this
+    coarse: int = 8  # an extension's first call checks every coarse-th point of its grid and its end
+    resolution: float | None = None  # local planner step bound; None: default_resolution(robot)
+    verify_refinement: int = 10  # the returned path's edges are verified exactly at resolution / this
+    certify_spacing: float = 8.0  # verification: intervals of motion resolution * this first (certify_edges)
+    max_iterations: int = 5_000  # samples drawn before reporting failure
+
+    def __post_init__(self):
+        for name in ("range", "certify_spacing"):
+            if not (np.isfinite(getattr(self, name)) and getattr(self, name) > 0):
+                raise ValueError(f"RRTConnectOptions.{name} must be positive and finite, got {getattr(self, name)!r}")
+        for name in ("coarse", "verify_refinement", "max_iterations"):
+            if not (int(getattr(self, name)) == getattr(self, name) and getattr(self, name) >= 1):
+                raise ValueError(f"RRTConnectOptions.{name} must be a positive integer, got {getattr(self, name)!r}")
+        if self.resolution is not None and not (np.isfinite(self.resolution) and self.resolution > 0):
+            raise ValueError(
+                f"RRTConnectOptions.resolution must be positive and finite, or None, got {self.resolution!r}"
+            )
+
+
+class Tree:
+    """Configurations ``nodes[:n] (n, dof)``, each with the index of its ``parent`` (the root's is -1); ``cut`` marks
+    the nodes of branches that failed verification."""
+
+    def __init__(self, root: np.ndarray, capacity: int = 256):
+        self.nodes = np.zeros((capacity, len(root)))
+        self.parent = np.full(capacity, -1)
+        self.cut = np.zeros(capacity, dtype=bool)
+        self.nodes[0], self.n = root, 1
+
+    def add(self, q: np.ndarray, parent: int) -> int:
+        if self.n == len(self.nodes):  # full: twice the room
+            self.nodes = np.concatenate([self.nodes, np.zeros_like(self.nodes)])
+            self.parent = np.concatenate([self.parent, np.full(self.n, -1)])
+            self.cut = np.concatenate([self.cut, np.zeros(self.n, dtype=bool)])
+        self.nodes[self.n], self.parent[self.n] = q, parent
+        self.n += 1
+        return self.n - 1
+
+    def branch(self, i: int) -> list[int]:
+        """Node indices from ``i`` up to the root."""
+        indices = [i]
+        while self.parent[indices[-1]] >= 0:
+            indices.append(int(self.parent[indices[-1]]))
+        return indices
+
+    def cut_below(self, i: int) -> None:
+        """Cut node ``i`` and every node whose branch passes through it."""
+        self.cut[i] = True
+        while True:  # a child of a cut node is cut: spread down the tree until nothing changes
+            spread = self.cut[: self.n] | (self.parent[: self.n] >= 0) & self.cut[np.maximum(self.parent[: self.n], 0)]
+            if (spread == self.cut[: self.n]).all():
+                return
+            self.cut[: self.n] = spread
+
+
+@dataclass
+class RRTConnectResult:
+    """``success``; ``path (P, dof)`` (empty on failure); ``stats`` (counts, seconds); the two ``trees``
+    (start's, goal's)."""
+
+    success: bool
+    path: np.ndarray
+    stats: dict
+    trees: tuple[Tree, Tree]
+
+
+def rrt_connect(
+    exact: CollisionChecker, start, goal, *, rng: np.random.Generator, options: RRTConnectOptions | None = None
+) -> RRTConnectResult:
+    """One query ``start -> goal`` (``(dof,)`` each, valid) with RRT-Connect, ``exact`` deciding validity."""
+    options = RRTConnectOptions() if options is None else options
+    robot, began, checked = exact.robot, time.perf_counter(), exact.n_checked
+    resolution = default_resolution(robot) if options.resolution is None else float(options.resolution)
+    reach = resolution * options.range
+    ends = robot.check_configs(np.stack([np.asarray(start, float), np.asarray(goal, float)]), "start/goal")
+    for name, ok, q in zip(("start", "goal"), exact.are_valid(ends), ends):
+        if not ok:
+            raise ValueError(f"{name} configuration {np.round(q, 4).tolist()} is in collision or out of bounds")
+    trees = (Tree(ends[0]), Tree(ends[1]))
+    stats = {"iterations": 0, "extensions": 0, "cuts": 0, "verify_checks": 0}
+
+    def extend(tree: Tree, target: np.ndarray, near: int | None = None) -> tuple[int, bool]:
+        """Extend ``tree`` from node ``near`` (None: its node nearest ``target``) towards ``target`` by at most
+        ``reach``: (the new node, or -1 if trapped; whether it reached ``target``)."""
+        stats["extensions"] += 1
+        if near is None:
+            steps = robot.difference(tree.nodes[: tree.n], target)  # (n, dof) from each node to target
+            distance = np.abs(steps) @ robot.motion_weights  # (n,) robot.motion_bound of each step
+            near = int(np.argmin(np.where(tree.cut[: tree.n], np.inf, distance)))
+            step, length = steps[near], float(distance[near])
+        else:
+            step = robot.difference(tree.nodes[near], target)  # (dof,)
+            length = float(np.abs(step) @ robot.motion_weights)
+        q0, reached = tree.nodes[near], length <= reach
+        if not reached:
+            step, length = step * (reach / length), reach
+        n = max(int(np.ceil(length / resolution)), 1)  # local_planner.step_counts
+        k = np.arange(1, n + 1)  # the grid's points, the end (k = n) included
+        for part in (k[(k % options.coarse == 0) | (k == n)], k[(k % options.coarse != 0) & (k != n)]):
+            if len(part) and not exact.are_valid(robot.wrap(q0 + (part / n)[:, None] * step)).all():
+                return -1, False
+        return tree.add(target if reached else robot.wrap(q0 + step), near), reached
+
+    for iteration in range(options.max_iterations):
+        stats["iterations"] = iteration + 1
+        if iteration % SAMPLES == 0:
+            samples = robot.sample(rng, SAMPLES)  # (SAMPLES, dof) drawn a block at a time
+        grow, other = (trees[0], trees[1]) if iteration % 2 == 0 else (trees[1], trees[0])
+        new, _ = extend(grow, samples[iteration % SAMPLES])
+        if new < 0:
+            continue
+        met, reached = extend(other, grow.nodes[new])  # connect: extend again and again from the last node added
+        while met >= 0 and not reached:
+            met, reached = extend(other, grow.nodes[new], near=met)
+        if not reached:
+            continue
+        a, b = (new, met) if grow is trees[0] else (met, new)  # the same configuration, in either tree
+        from_start, to_goal = trees[0].branch(a)[::-1], trees[1].branch(b)  # node indices root -> a, b -> root
+        path = np.concatenate([trees[0].nodes[from_start], trees[1].nodes[to_goal[1:]]])  # (P, dof)
+        before = exact.n_checked
+        ok = certify_edges(
+            exact,
+            path[:-1],
+            path[1:],
+            resolution / options.verify_refinement,
+            spacing=resolution * options.certify_spacing,
+        )
+        stats["verify_checks"] += exact.n_checked - before
+        if ok.all():
+            return RRTConnectResult(True, path, _final(stats, trees, exact, checked, began, resolution), trees)
+        for edge in np.flatnonzero(~ok):  # cut each failed edge's end away from its root, and the branch beyond
+            stats["cuts"] += 1
+            if edge + 1 < len(from_start):
+                trees[0].cut_below(from_start[edge + 1])
+            else:
+                trees[1].cut_below(to_goal[edge + 1 - len(from_start)])
+    return RRTConnectResult(
+        False, np.zeros((0, robot.dof)), _final(stats, trees, exact, checked, began, resolution), trees
+    )
+
+
+def _final(stats: dict, trees, exact: CollisionChecker, checked: int, began: float, resolution: float) -> dict:
+    return dict(
+        stats,
+        nodes=trees[0].n + trees[1].n,
+        resolution=resolution,
+        exact_checks=exact.n_checked - checked,
+        total_s=time.perf_counter() - began,
+    )
