@@ -329,7 +329,8 @@ def race_seeds(scenario: Scenario, *, n_queries: int = 30, seeds=(7300, 9300), *
     for seed in seeds:
         loads = [os.getloadavg()[0]]
         planners = versus_ompl(scenario, n_queries=n_queries, seed=seed, loads=loads, **options)
-        load = {"before": loads[0], "highest": max(loads + [os.getloadavg()[0]]), "after": os.getloadavg()[0]}
+        after = os.getloadavg()[0]
+        load = {"before": loads[0], "highest": max(loads + [after]), "after": after}
         runs.append({"seed": seed, "load": load, "idle": load["highest"] <= IDLE_LOAD, "planners": planners})
     return {"scenario": scenario.name, "cores": os.cpu_count(), "runs": runs}
 
