@@ -15,8 +15,9 @@ from toolkit.experiments.queries import make_queries
 from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace
 from toolkit.planning.local_planner import path_is_valid
+from toolkit.planning.planner import Problem
 from toolkit.planning.prm import PRMOptions, plan
-from toolkit.planning.rrt_connect import RRTConnectOptions, rrt_connect
+from toolkit.planning.rrt_connect import RRTConnectParams, rrt_connect
 
 ob = pytest.importorskip("ompl.base")
 og = pytest.importorskip("ompl.geometric")
@@ -105,14 +106,13 @@ def test_ours_and_ompls_prm_solve_every_solvable_2ds_query():
 def test_ours_and_ompls_rrtconnect_solve_every_solvable_2ds_query():
     scenario = scenarios.get("2ds")
     robot = scenario.robot
-    options = RRTConnectOptions(max_iterations=2_000)
+    params = RRTConnectParams(max_iterations=2_000)
     solvable_count = 0
     for i, q in enumerate(make_queries(scenario, seed=0, n_workspaces=3, per_workspace=6)):
         label_of = free_components(q.workspace, robot)
         solvable = label_of(q.start) == label_of(q.goal) != 0
-        ours = rrt_connect(
-            exact_checker(q.workspace, robot), q.start, q.goal, rng=np.random.default_rng(i), options=options
-        )
+        problem = Problem.create(exact_checker(q.workspace, robot), q.start, q.goal)
+        ours = rrt_connect(problem, np.random.default_rng(i), params)
         assert ours.success == solvable, f"query {i}: ours {ours.success}, solvable {solvable}"
         if not solvable:
             continue

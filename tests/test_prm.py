@@ -11,7 +11,7 @@ from threadpoolctl import threadpool_info, threadpool_limits
 from toolkit import cli, scenarios
 from toolkit.experiments import queries as queries_module
 from toolkit.experiments.queries import make_queries, run_queries
-from toolkit.geometry.collision import CollisionChecker, exact_checker
+from toolkit.geometry.collision import CollisionChecker, FCLChecker, exact_checker
 from toolkit.geometry.workspace import Workspace
 from toolkit.planning import local_planner, prm, query_roadmap
 from toolkit.planning.lazy_prm import LazyPRM
@@ -25,8 +25,10 @@ from toolkit.planning.local_planner import (
     refute_at,
     segment_points,
 )
+from toolkit.planning.options import LazyParams, PaperParams
 from toolkit.planning.paper_prm import PRM
-from toolkit.planning.prm import LazyPRMOptions, PRMOptions, plan
+from toolkit.planning.planner import Problem
+from toolkit.planning.prm import plan
 from toolkit.planning.query_roadmap import QueryRoadmap
 from toolkit.planning.roadmap import Roadmap
 from toolkit.planning.sampling import SAMPLERS, make_sampler
@@ -69,10 +71,10 @@ def longest_hidden_overlap(ws, robot, path) -> float:
 
 
 MODES = {  # name -> (flip fraction of the test double or None for exact, the planner's options class)
-    "exact": (None, LazyPRMOptions),  # the best exact planner: lazy edges, growing rounds
-    "exact-paper": (None, PRMOptions),  # Algorithm 1 as the paper has it
-    "noisy-screened": (0.15, LazyPRMOptions),
-    "noisy-paper": (0.15, PRMOptions),
+    "exact": (None, LazyParams),  # the best exact planner: lazy edges, growing rounds
+    "exact-paper": (None, PaperParams),  # Algorithm 1 as the paper has it
+    "noisy-screened": (0.15, LazyParams),
+    "noisy-paper": (0.15, PaperParams),
 }
 
 
@@ -139,7 +141,7 @@ def test_3dc_paths_are_exactly_valid(scenario_name, mode):
         assert all(r.success for _, r in results)
 
 
-@pytest.mark.parametrize("options_class, first_round", [(PRMOptions, 200), (LazyPRMOptions, 50)])
+@pytest.mark.parametrize("options_class, first_round", [(PaperParams, 200), (LazyParams, 50)])
 def test_exact_planners_never_repair_nodes_and_count_checks(options_class, first_round):
     scenario = scenarios.get("2ds")
     q = make_queries(scenario, seed=1, n_workspaces=1, per_workspace=1)[0]
@@ -159,9 +161,9 @@ def test_rounds_double_from_first_samples_up_to_n_samples():
     walls = [[[18, 18], [28, 19]], [[18, 27], [28, 28]], [[18, 18], [19, 28]], [[27, 18], [28, 28]]]
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array(walls, dtype=float), family="2ds")
     for options, attempts in [
-        (LazyPRMOptions(max_rounds=5, first_samples=10, n_samples=50), 10 + 20 + 40 + 50 + 50),
-        (LazyPRMOptions(max_rounds=5, first_samples=None, n_samples=50), 5 * 50),
-        (PRMOptions(max_rounds=5, n_samples=50), 5 * 50),
+        (LazyParams(max_rounds=5, first_samples=10, n_samples=50), 10 + 20 + 40 + 50 + 50),
+        (LazyParams(max_rounds=5, first_samples=None, n_samples=50), 5 * 50),
+        (PaperParams(max_rounds=5, n_samples=50), 5 * 50),
     ]:  # the paper's: |S| a round
         trace = []
         result = plan(
@@ -198,11 +200,11 @@ def test_lazy_screen_rejects_only_edges_with_a_point_in_collision(monkeypatch):
     scenario = scenarios.get("3dc7")
     q = make_queries(scenario, seed=7100, n_workspaces=1, per_workspace=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
-    options = LazyPRMOptions(n_samples=100, first_samples=None, max_rounds=1, rebridge=0)
-    query = QueryRoadmap(exact, exact, options)
+    options = LazyParams(n_samples=100, first_samples=None, max_rounds=1, rebridge=0)
+    query = QueryRoadmap(Problem.create(exact, q.start, q.goal), options)
     nodes = query.roadmap.add_nodes(make_sampler("BS", exact).sample(100, np.random.default_rng(0)), verified=True)
     pairs = query.roadmap.candidate_edges(nodes, options.k)
-    LazyPRM(exact, options=options).decide(query, pairs)
+    LazyPRM(options).decide(query, pairs)
     roadmap = query.roadmap
     assert len(roadmap.edges) + len(roadmap.rejected) == len(pairs) and len(roadmap.rejected) > 0
     assert np.isinf(roadmap.edge_checked_at).all()  # lazy: none confirmed yet
@@ -224,12 +226,13 @@ def test_the_papers_planner_checks_every_edge_exactly_as_it_is_added(flip):
             q.goal,
             sampler="BS",
             checker=checker,
-            options=PRMOptions(),
+            options=PaperParams(),
             rng=np.random.default_rng(i),
             trace=trace,
         )
         assert result.success
         roadmap, coarse = result.roadmap, result.stats["resolution"]
+        assert result.planner == "paper"
         on_path = np.zeros(len(roadmap.edges), bool)
         on_path[roadmap.edge_index(roadmap.shortest_path(prm.START, prm.GOAL))] = True
         np.testing.assert_array_equal(roadmap.edge_checked_at[~on_path], coarse)  # checked as added
@@ -237,65 +240,102 @@ def test_the_papers_planner_checks_every_edge_exactly_as_it_is_added(flip):
         assert check_edges(exact, *roadmap.nodes[roadmap.edges.T], coarse).all()
         assert not check_edges(exact, *roadmap.nodes[roadmap.rejected.T], coarse).any()
         if flip is None:  # rounds of |S| attempts each (BS checks each attempt once)
-            assert result.stats["node_checks"] == result.stats["rounds"] * PRMOptions().n_samples
+            assert result.stats["node_checks"] == result.stats["rounds"] * PaperParams().n_samples
 
 
-def test_the_options_class_says_which_planner_runs():
+def test_the_planner_is_chosen_by_name_and_owns_its_parameters():
     scenario = scenarios.get("3dc7")
     q = make_queries(scenario, seed=0, n_workspaces=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
+    problem = Problem.create(exact, q.start, q.goal, sampler="G")
     runs = {}
-    for name, options, planner in [("paper", PRMOptions(), PRM), ("lazy", LazyPRMOptions(), LazyPRM)]:
-        by_plan = plan(exact, q.start, q.goal, sampler="G", options=options, rng=np.random.default_rng(3))
-        by_class = planner(exact, options=options, sampler="G").solve(q.start, q.goal, rng=np.random.default_rng(3))
+    for name, planner in [("paper", PRM), ("lazy", LazyPRM)]:
+        by_plan = plan(exact, q.start, q.goal, sampler="G", planner=name, rng=np.random.default_rng(3))
+        by_class = planner().solve(problem, np.random.default_rng(3))
         np.testing.assert_array_equal(by_plan.path, by_class.path)
         np.testing.assert_array_equal(by_plan.roadmap.edges, by_class.roadmap.edges)
+        assert by_plan.planner == by_class.planner == name
         runs[name] = by_plan
     paper, lazy = runs["paper"], runs["lazy"]
     assert paper.success and lazy.success
     assert np.isfinite(paper.roadmap.edge_checked_at).all()  # every edge checked exactly ...
     assert np.isinf(lazy.roadmap.edge_checked_at).any()  # ... against edges never confirmed
     assert paper.stats["exact_checks"] > 5 * lazy.stats["exact_checks"]
-    with pytest.raises(TypeError, match=r"LazyPRM reads LazyPRMOptions, got PRMOptions"):
-        LazyPRM(exact, options=PRMOptions())
-    with pytest.raises(TypeError, match=r"PRM reads PRMOptions, got LazyPRMOptions"):  # its fields are another's
-        PRM(exact, options=LazyPRMOptions())
-    assert type(PRM(exact).options) is PRMOptions and type(LazyPRM(exact).options) is LazyPRMOptions
-    # the trap of the single options class: the paper's planner with its own options, made by hand
-    assert PRM(exact, options=PRMOptions(n_samples=100)).options.n_samples == 100
-    default = plan(exact, q.start, q.goal, sampler="G", rng=np.random.default_rng(3))  # no options: the lazy PRM
+    assert not issubclass(LazyParams, PaperParams) and not issubclass(PaperParams, LazyParams)
+    with pytest.raises(TypeError, match=r"LazyPRM reads LazyParams, got PaperParams"):
+        LazyPRM(PaperParams())
+    with pytest.raises(TypeError, match=r"PRM reads PaperParams, got LazyParams"):  # its fields are another's
+        PRM(LazyParams())
+    assert type(PRM().params) is PaperParams and type(LazyPRM().params) is LazyParams
+    assert PRM(k=15).params == PaperParams(k=15) and PaperParams().auxiliary == "exact"
+    with pytest.raises(ValueError, match=r"unknown planner option\(s\) \['screen_edges'\]; PaperParams has"):
+        PRM(screen_edges=False)
+    with pytest.raises(dataclasses.FrozenInstanceError):
+        PaperParams().k = 3  # type: ignore[misc]
+    default = plan(exact, q.start, q.goal, sampler="G", rng=np.random.default_rng(3))  # none named: prm.DEFAULT
+    assert prm.DEFAULT == "lazy" and default.planner == "lazy"
     np.testing.assert_array_equal(default.roadmap.edges, lazy.roadmap.edges)
+    by_params = plan(exact, q.start, q.goal, sampler="G", options=PaperParams(), rng=np.random.default_rng(3))
+    assert by_params.planner == "paper"  # parameters alone: the planner they belong to
+    with pytest.raises(ValueError, match="unknown planner 'nope'; choose one of"):
+        plan(exact, q.start, q.goal, planner="nope", rng=np.random.default_rng(3))
 
 
-def test_the_paper_preset_plans_with_the_papers_planner_and_the_strong_one_with_the_best_exact_planner(monkeypatch):
-    from toolkit.experiments import planners
+def test_prediction_is_a_property_of_the_checker_not_its_identity():
+    """A second exact checker (FCL, same workspace) deciding samples is no prediction: the same roadmap as without
+    one, every node verified, no predicted checks; a checker that is not exact is prediction."""
+    scenario = scenarios.get("2ds")
+    q = make_queries(scenario, seed=0, n_workspaces=1, per_workspace=1)[0]
+    exact = exact_checker(q.workspace, scenario.robot)
+    fcl = FCLChecker(q.workspace, scenario.robot)
+    assert exact.is_exact and fcl.is_exact and not NoisyChecker(exact, 0.1, seed=0).is_exact
+    assert (
+        not Problem.create(exact, q.start, q.goal).predicts
+        and not Problem.create(exact, q.start, q.goal, checker=fcl).predicts
+    )
+    assert Problem.create(exact, q.start, q.goal, checker=NoisyChecker(exact, 0.1, seed=0)).predicts
+    for planner in prm.names():
+        alone = plan(exact, q.start, q.goal, planner=planner, rng=np.random.default_rng(0))
+        second = plan(exact, q.start, q.goal, planner=planner, checker=fcl, rng=np.random.default_rng(0))
+        np.testing.assert_array_equal(alone.roadmap.nodes, second.roadmap.nodes)
+        np.testing.assert_array_equal(alone.roadmap.edges, second.roadmap.edges)
+        assert second.roadmap.node_verified.all() and second.stats["predicted_checks"] == 0
+        noisy = plan(exact, q.start, q.goal, planner=planner, checker=NoisyChecker(exact, 0.1, seed=0),
+                     rng=np.random.default_rng(0))  # fmt: skip
+        assert noisy.stats["predicted_checks"] > 0
+
+
+def test_every_planner_default_comes_from_one_rule(monkeypatch):
+    """Without a recipe the caller's planner, else prm.DEFAULT, with or without prediction; a recipe's runs
+    (reproduce) plan with the planner it is paired with, both ways, with the scenario's |S|."""
+    from toolkit.experiments import planners, problems
     from toolkit.learning import presets
 
     scenario = scenarios.get("3dc7")
-    best = queries_module.default_options(scenario)  # no checker: the best exact planner
-    assert type(best) is LazyPRMOptions and best.first_samples == LazyPRMOptions().first_samples is not None
-    paper = queries_module.planner_options(scenario, presets.get("paper"), predicted=True)
-    assert type(paper) is PRMOptions and paper.auxiliary == "exact"  # rounds of |S|, exact edges, exact later rounds
-    assert paper.n_samples == scenario.plan_samples == 400
-    strong = queries_module.planner_options(scenario, presets.get("strong"), predicted=True)
-    assert type(strong) is LazyPRMOptions
-    assert (strong.first_samples, strong.lazy_screen) == (best.first_samples, best.lazy_screen)
-    assert strong.screen_edges and strong.auxiliary == "confirmed"
+    assert problems.make_planner(scenario).name == prm.DEFAULT == "lazy"
+    assert problems.make_planner(scenario).params == LazyParams(n_samples=scenario.plan_samples) != LazyParams()
+    assert problems.make_planner(scenario, "paper").params == PaperParams(n_samples=400)
+    q = make_queries(scenario, seed=0, n_workspaces=1)[0]
+    exact = exact_checker(q.workspace, scenario.robot)
+    with_ = problems.build(scenario, q, checker=NoisyChecker(exact, 0.1, seed=0))
+    without = problems.build(scenario, q)
+    assert with_.problem.predicts and not without.problem.predicts
+    assert (with_.planner.name, with_.planner.params) == (without.planner.name, without.planner.params)
+    assert problems.make_planner(scenario, preset=presets.get("paper")).name == "paper"
+    assert problems.make_planner(scenario, preset=presets.get("strong")).name == "lazy"
     derived = dataclasses.replace(presets.get("paper"), name="paper-wider", mlp_hidden=(64, 64))
-    assert derived.origin == "paper"  # made from paper: planned as paper is
-    assert type(queries_module.planner_options(scenario, derived, predicted=True)) is PRMOptions
+    assert derived.origin == "paper" and problems.make_planner(scenario, preset=derived).name == "paper"
     own = presets.Preset(**{**dataclasses.asdict(presets.get("strong")), "name": "my-recipe", "origin": ""})
-    mine = queries_module.planner_options(scenario, own, predicted=True)  # made from scratch: the lazy PRM, samples
-    assert type(mine) is LazyPRMOptions and not mine.screen_edges and mine.auxiliary == "exact"
-    with pytest.raises(ValueError, match=r"unknown planner option\(s\) \['screen_edges'\]; PRMOptions has"):
-        queries_module.planner_options(scenario, presets.get("paper"), screen_edges=False)
+    assert problems.make_planner(scenario, preset=own).params == LazyParams(n_samples=400)  # the default planner
     monkeypatch.setattr(planners, "PAIRINGS", dict(planners.PAIRINGS))  # a recipe of yours, paired by name
-    planners.register("my-recipe", planners.Pairing(PRMOptions, {"auxiliary": "confirmed"}))
-    mine = queries_module.planner_options(scenario, own, predicted=True)
-    assert type(mine) is PRMOptions and mine.auxiliary == "confirmed"
-    assert type(queries_module.planner_options(scenario, own)) is PRMOptions  # its planner without the model too
+    planners.register("my-recipe", planners.Pairing("paper", {"auxiliary": "confirmed"}))
+    mine = problems.make_planner(scenario, preset=own)
+    assert mine.name == "paper" and mine.params.auxiliary == "confirmed"
+    assert problems.make_planner(scenario, "lazy", preset=own).params == LazyParams(n_samples=400)  # named wins
     with pytest.raises(ValueError, match="a planner pairing called 'paper' exists"):
         planners.register("paper", planners.OWN_RECIPE)
+    with pytest.raises(ValueError, match=r"unknown planner option\(s\) \['screen_edges'\]"):
+        planners.register("mine-2", planners.Pairing("paper", {"screen_edges": False}))
 
 
 @pytest.mark.parametrize(
@@ -310,17 +350,17 @@ def test_the_paper_preset_plans_with_the_papers_planner_and_the_strong_one_with_
         (dict(auxiliary="predicted"), ["predicted"] * 4),
     ],
 )
-@pytest.mark.parametrize("planner", [LazyPRM, PRM])  # both planners read PRMOptions.auxiliary
+@pytest.mark.parametrize("planner", [LazyPRM, PRM])  # both planners read RoadmapParams.auxiliary
 def test_rounds_after_the_first_sample_as_options_auxiliary_says(options, sources, planner):
     scenario = scenarios.get("2ds")
     q = make_queries(scenario, seed=0, n_workspaces=1, per_workspace=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
     lying = NoisyChecker(exact, 0.3, seed=0)
-    options = planner.Options(n_samples=200, **options)  # Algorithm 1's rounds of |S| (the lazy PRM: first_samples)
+    params = planner.Params(n_samples=200, **options)  # Algorithm 1's rounds of |S| (the lazy PRM: first_samples)
     if planner is LazyPRM:
-        options = dataclasses.replace(options, first_samples=None)
-    planner = planner(exact, lying, options=options)
-    query = QueryRoadmap(exact, lying, options)
+        params = dataclasses.replace(params, first_samples=None)
+    planner = planner(params)
+    query = QueryRoadmap(Problem.create(exact, q.start, q.goal, checker=lying), params)
     rng = np.random.default_rng(0)
     for round_, source in enumerate(sources, start=1):
         query.stats["rounds"] = round_
@@ -337,34 +377,50 @@ def test_rounds_after_the_first_sample_as_options_auxiliary_says(options, source
         assert exact.are_valid(S).all() == vouched  # 30 % lies: predicted samples include invalid ones
 
 
-def test_a_planner_of_your_own_runs_for_its_own_options_class(monkeypatch):
-    """``prm.register_planner``: ``plan`` runs the planner whose ``Options`` class the options are, exactly; options
-    of a class no planner reads are refused by name."""
+class StraightLine:
+    """A planner of another family, no PRM: the straight segment, if the exact checker passes it at both
+    resolutions; its own parameters."""
 
-    @dataclasses.dataclass
-    class WideOptions(LazyPRMOptions):
-        widen: int = 2  # k is multiplied by this
+    name = "straight"
 
-    class WidePRM(LazyPRM):
-        name, Options = "wide", WideOptions
+    @dataclasses.dataclass(frozen=True)
+    class Params:
+        tries: int = 1
 
-        def __init__(self, exact, checker=None, *, options=None, sampler="BS"):
-            super().__init__(exact, checker, options=options, sampler=sampler)
-            self.options = dataclasses.replace(self.options, k=self.options.k * self.options.widen)
+    def __init__(self, params=None):
+        self.params = params or self.Params()
 
+    def solve(self, problem, rng):
+        path = np.stack([problem.start, problem.goal])
+        ok = path_is_valid(problem.exact, path, problem.fine_resolution)
+        return prm.PlanResult(bool(ok), path if ok else path[:0], {"total_s": 0.0}, self.name)
+
+
+def test_a_planner_of_another_family_registers_and_plans(monkeypatch, capsys):
     monkeypatch.setattr(prm, "PLANNERS", dict(prm.PLANNERS))
     scenario = scenarios.get("2ds")
     q = make_queries(scenario, seed=0, n_workspaces=1, per_workspace=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
-    with pytest.raises(TypeError, match="no planner reads WideOptions"):
-        plan(exact, q.start, q.goal, options=WideOptions(), rng=np.random.default_rng(0))
-    prm.register_planner(WidePRM)
-    wide = plan(exact, q.start, q.goal, options=WideOptions(widen=3), rng=np.random.default_rng(0))
-    lazy = plan(exact, q.start, q.goal, options=LazyPRMOptions(k=30), rng=np.random.default_rng(0))
-    np.testing.assert_array_equal(wide.roadmap.edges, lazy.roadmap.edges)  # the same planner with 3 x 10 neighbours
-    assert prm.PLANNERS[WideOptions] is WidePRM
-    with pytest.raises(ValueError, match="planner 'lazy' reads LazyPRMOptions already"):
-        prm.register_planner(type("Copy", (LazyPRM,), {"name": "copy"}))
+    with pytest.raises(ValueError, match="unknown planner 'straight'"):
+        plan(exact, q.start, q.goal, planner="straight", rng=np.random.default_rng(0))
+    prm.register(StraightLine)
+    assert prm.get("straight") is StraightLine and prm.names() == ["paper", "lazy", "straight"]
+    free = Workspace(np.zeros(2), np.full(2, 31.0), np.zeros((0, 2, 2)))
+    start, goal = np.array([2.0, 2.0]), np.array([28.0, 28.0])
+    result = plan(exact_checker(free, scenario.robot), start, goal, planner="straight", rng=np.random.default_rng(0))
+    assert result.success and result.planner == "straight" and len(result.path) == 2
+    blocked = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 10.0], [20.0, 20.0]]]))
+    assert not plan(exact_checker(blocked, scenario.robot), start, goal, planner="straight",
+                    rng=np.random.default_rng(0)).success  # fmt: skip
+    with pytest.raises(ValueError, match="planner 'paper' reads PaperParams already"):
+        prm.register(type("Copy", (PRM,), {"name": "copy"}))
+    with pytest.raises(TypeError, match="needs solve"):
+        prm.register(type("NoSolve", (), {"name": "x", "Params": StraightLine.Params}))
+    from toolkit.cli import main
+
+    assert main(["plan", "--scenario", "2ds", "--planner", "straight", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["planner"] == "straight" and out["params"] == {"tries": 1}
 
 
 def test_same_seed_same_result():
@@ -378,7 +434,7 @@ def test_same_seed_same_result():
             q.goal,
             sampler="G",
             checker=NoisyChecker(exact, 0.1, 7),
-            options=LazyPRMOptions(n_samples=150),
+            options=LazyParams(n_samples=150),
             rng=np.random.default_rng(4),
         )
         for _ in range(2)
@@ -401,7 +457,7 @@ def traced_2ds_queries(flip, n_queries=6):
             q.goal,
             sampler="BS",
             checker=checker,
-            options=LazyPRMOptions(n_samples=150),
+            options=LazyParams(n_samples=150),
             rng=np.random.default_rng(i),
             trace=trace,
         )
@@ -432,7 +488,7 @@ def test_tracing_changes_nothing_but_records():
             q.goal,
             sampler="OB",
             checker=NoisyChecker(exact, 0.2, 3),
-            options=LazyPRMOptions(n_samples=150),
+            options=LazyParams(n_samples=150),
             rng=np.random.default_rng(5),
             trace=trace,
         )
@@ -483,7 +539,6 @@ def test_bad_input_gives_clear_errors():
         (dict(n_samples=0), "n_samples must be a positive integer"),
         (dict(k=2.5), "k must"),
         (dict(screen_spacing=0), "screen_spacing must be positive"),
-        (dict(resolution=np.nan), "resolution must be positive"),
         (dict(screen_reject=1.5), r"screen_reject must be in \[0, 1\]"),
         (dict(screen_penalty=-1), "screen_penalty must be non-negative"),
         (dict(auxiliary="sometimes"), "auxiliary must be one of exact, confirmed, predicted, got 'sometimes'"),
@@ -494,12 +549,16 @@ def test_bad_input_gives_clear_errors():
         (dict(certify_spacing=None), "certify_spacing must be positive and finite, got None"),  # TypeError inside
         (dict(n_samples="many"), "n_samples must be a positive integer, got 'many'"),  # ValueError inside
     ]:
-        with pytest.raises(ValueError, match=f"LazyPRMOptions.{match}"):
-            LazyPRMOptions(**bad)
-    with pytest.raises(ValueError, match=r"PRMOptions\.k must"):
-        PRMOptions(k=0)
+        with pytest.raises(ValueError, match=f"LazyParams.{match}"):
+            LazyParams(**bad)
+    with pytest.raises(ValueError, match=r"PaperParams\.k must"):
+        PaperParams(k=0)
     with pytest.raises(TypeError, match="screen_spacing"):  # the lazy planner's field: not Algorithm 1's
-        PRMOptions(screen_spacing=4.0)
+        PaperParams(screen_spacing=4.0)
+    with pytest.raises(ValueError, match="resolution must be positive and finite, got nan"):  # the problem's
+        plan(exact, q.start, q.goal, resolution=np.nan, rng=np.random.default_rng(0))
+    with pytest.raises(ValueError, match="checker is for a 8-DoF robot, the exact checker for 2"):
+        Problem.create(exact, q.start, q.goal, checker=RecordingChecker(scenarios.get("3do").robot))
 
 
 # -- local planner and roadmap ----------------------------------------------------------------
@@ -630,7 +689,7 @@ def test_screened_path_edges_are_confirmed_coarse_then_fine_each_once(monkeypatc
             q.goal,
             sampler="BS",
             checker=NoisyChecker(exact, 0.15, seed=i),
-            options=LazyPRMOptions(screen_edges=True),
+            options=LazyParams(screen_edges=True),
             rng=np.random.default_rng(i),
         )
         assert result.success
@@ -671,7 +730,7 @@ def test_screened_edges_are_refuted_where_screening_saw_them_fail_and_only_when_
             q.goal,
             sampler="BT",
             checker=NoisyChecker(exact, 0.1, seed=i),
-            options=LazyPRMOptions(n_samples=scenario.plan_samples),
+            options=LazyParams(n_samples=scenario.plan_samples),
             rng=np.random.default_rng(i),
         )
         assert result.success
@@ -826,7 +885,7 @@ def test_the_planner_decides_no_pair_twice(monkeypatch):
                 q.goal,
                 sampler="BT",
                 checker=NoisyChecker(exact, 0.1, seed=i),
-                options=LazyPRMOptions(n_samples=scenario.plan_samples, rebridge=rebridge, first_samples=None),
+                options=LazyParams(n_samples=scenario.plan_samples, rebridge=rebridge, first_samples=None),
                 rng=np.random.default_rng(i),
             )
             assert result.success
@@ -900,13 +959,13 @@ def test_run_interleaved_takes_turns_and_answers_as_separate_runs(monkeypatch):
         return NoisyChecker(exact_checker(ws, scenario.robot), 0.05, seed=1)
 
     separate = {"without": run_queries(scenario, queries, "OB"), "with": run_queries(scenario, queries, "OB", factory)}
-    order, solve = [], queries_module.solve_query
+    order, build = [], queries_module.build
 
-    def recording(scenario, query, sampler, **settings):
+    def recording(scenario, query, **settings):
         order.append("with" if settings["checker"] is not None else "without")
-        return solve(scenario, query, sampler, **settings)
+        return build(scenario, query, **settings)
 
-    monkeypatch.setattr(queries_module, "solve_query", recording)
+    monkeypatch.setattr(queries_module, "build", recording)
     runs = queries_module.run_interleaved(scenario, queries, "OB", {"without": None, "with": factory})
     # an untimed warm-up solve per mode, then the timed queries, who goes first rotating
     assert order == ["without", "with"] + ["without", "with", "with", "without"] * 2
@@ -921,5 +980,12 @@ def test_plan_command_prints_json(capsys):
     out = json.loads(capsys.readouterr().out)
     assert out["success"] is True and len(out["path"]) >= 2
     assert set(out["workspace"]) >= {"lower", "upper", "boxes"} and out["stats"]["nodes"] > 2
+    assert out["planner"] == prm.DEFAULT == "lazy" and out["params"]["n_samples"] == 200 and not out["predict"]
+    assert cli.main(["plan", "--scenario", "2ds", "--planner", "paper", "--option", "k=12", "--json"]) == 0
+    out = json.loads(capsys.readouterr().out)
+    assert out["planner"] == "paper" and out["params"]["k"] == 12 and out["success"]
+    assert cli.main(["plan", "--scenario", "2ds", "--planner", "paper", "--option", "screen_edges=false"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "unknown planner option(s) ['screen_edges']; PaperParams has" in err
     assert cli.main(["plan", "--scenario", "2ds", "--predict"]) == 2
     assert "--checkpoint" in capsys.readouterr().err

@@ -20,7 +20,7 @@ from collections.abc import Callable, Sequence
 
 from toolkit import scenarios
 from toolkit.learning import presets
-from toolkit.planning import sampling
+from toolkit.planning import prm, sampling
 
 SEEDS = 2**32  # seeds are 0 .. 2**32 - 1
 PRESET_WORDS = {
@@ -152,6 +152,27 @@ def seed(parser: argparse.ArgumentParser, what: str) -> None:
 
 def scenario(parser: argparse.ArgumentParser, *, extra: Sequence[str] = (), **kwargs) -> None:
     parser.add_argument("--scenario", choices=scenario_names() + list(extra), **kwargs)
+
+
+def planner(parser: argparse.ArgumentParser, help: str) -> None:
+    """``--planner NAME``, a registered planner (``toolkit.planning.prm.names()``), and ``--option NAME=VALUE``, a
+    parameter of it."""
+    parser.add_argument(
+        "--planner",
+        choices=prm.names(),
+        default=None,
+        help=f"{help}; one of {', '.join(prm.names())} (paper: the paper's Algorithm 1; lazy: the lazy PRM, the "
+        f"best exact planner; or one registered by --import). Default: {prm.DEFAULT}, with or without prediction",
+    )
+    parser.add_argument(
+        "--option",
+        type=planner_option,
+        action="append",
+        default=[],
+        metavar="NAME=VALUE",
+        help="a parameter of the planner (a field of its Params, e.g. PaperParams or LazyParams in "
+        "toolkit/planning/options.py), e.g. rebridge=0; repeat for several",
+    )
 
 
 def preset(parser: argparse.ArgumentParser, help: str) -> None:

@@ -7,8 +7,8 @@ from __future__ import annotations
 
 import argparse
 
-from toolkit.cli.arguments import SCENARIO_HELP, int_in, planner_option, preset, sampler_list, scenario, seed
-from toolkit.planning import prm, sampling
+from toolkit.cli.arguments import SCENARIO_HELP, int_in, planner, preset, sampler_list, scenario, seed
+from toolkit.planning import sampling
 
 CROSSOVER_SCENARIO = "3dc9"  # --crossover without --scenario: the paper's dearest clutter check
 
@@ -16,8 +16,7 @@ CROSSOVER_SCENARIO = "3dc9"  # --crossover without --scenario: the paper's deare
 def bench_options(cmd: argparse.ArgumentParser) -> None:
     """The checkers' speed (a scenario, a seed, the sizes), then the options of ``--checkpoint``
     (:func:`bench_planning_options`), ``--vs-ompl`` (:func:`bench_versus_ompl_options`) and ``--crossover``
-    (:func:`bench_crossover_options`), and ``--option``, a planner setting for ``--checkpoint``'s runs, last, as
-    ``toolkit bench --help`` lists them."""
+    (:func:`bench_crossover_options`)."""
     scenario(cmd, help=SCENARIO_HELP + f"; needed but with --crossover (default {CROSSOVER_SCENARIO})")
     seed(cmd, "the workspace and the configurations timed")
     cmd.add_argument("--json", action="store_true", help="print one JSON object instead of lines")
@@ -32,15 +31,6 @@ def bench_options(cmd: argparse.ArgumentParser) -> None:
     bench_planning_options(cmd)
     bench_versus_ompl_options(cmd)
     bench_crossover_options(cmd)
-    cmd.add_argument(
-        "--option",
-        type=planner_option,
-        action="append",
-        default=[],
-        metavar="NAME=VALUE",
-        help="with --checkpoint: a planner setting (a field of PRMOptions or LazyPRMOptions in "
-        "toolkit/planning/options.py) for both runs where their planner reads it, e.g. rebridge=0; repeat for several",
-    )
 
 
 def bench_planning_options(cmd: argparse.ArgumentParser) -> None:
@@ -49,7 +39,7 @@ def bench_planning_options(cmd: argparse.ArgumentParser) -> None:
         "--checkpoint",
         metavar="DIR",
         help="a trained model (from `toolkit train`, or DIR/cache/checkpoint of `toolkit reproduce`): also "
-        "time PRM with it and without (the best exact planner, the lazy PRM, with the default exact checker)",
+        "time one planner (--planner, default lazy) with it and without, with the default exact checker",
     )
     cmd.add_argument(
         "--workspaces",
@@ -72,12 +62,7 @@ def bench_planning_options(cmd: argparse.ArgumentParser) -> None:
         metavar="LIST",
         help="with --checkpoint: comma-separated samplers to plan with, e.g. BT,OB (default: the paper's four)",
     )
-    cmd.add_argument(
-        "--planner",
-        choices=[planner.name for planner in prm.PLANNERS.values()],
-        help="with --checkpoint: plan with and without the model with this planner (paper: Algorithm 1; lazy: "
-        "the lazy PRM); default: the lazy PRM without it, the planner paired with its recipe with it",
-    )
+    planner(cmd, "with --checkpoint: the planner that plans with and without the model, alike")
 
 
 def bench_versus_ompl_options(cmd: argparse.ArgumentParser) -> None:

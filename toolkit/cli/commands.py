@@ -11,10 +11,13 @@ interrupted run leaves behind.
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import json
 import sys
 from collections.abc import Callable
 from pathlib import Path
+
+import numpy as np
 
 from toolkit import scenarios
 from toolkit.experiments.config import RunConfig
@@ -35,7 +38,6 @@ def _config(args: argparse.Namespace, scenario: str, **settings) -> RunConfig:
 def cmd_bench(args: argparse.Namespace) -> int:
     from toolkit.experiments import bench, versus_ompl
     from toolkit.learning import checkpoints, presets
-    from toolkit.planning import prm
 
     if args.crossover:
         return _bench_crossover(args)
@@ -76,7 +78,7 @@ def cmd_bench(args: argparse.Namespace) -> int:
             seed=args.seed,
             samplers=args.samplers,
             overrides=dict(args.option),
-            options_class=next((o for o, p in prm.PLANNERS.items() if p.name == args.planner), None),
+            planner=args.planner,
         )
         result["planning_options"] = dict(args.option, **({"planner": args.planner} if args.planner else {}))
     print(json.dumps(result) if args.json else "\n".join(f"{k}: {v}" for k, v in result.items()))
@@ -115,36 +117,44 @@ def cmd_train(args: argparse.Namespace) -> int:
 
 
 def cmd_plan(args: argparse.Namespace) -> int:
-    from toolkit.experiments import queries
+    from toolkit.experiments import problems
 
     if args.predict and not args.checkpoint:
         raise ValueError("--predict needs --checkpoint DIR (a folder written by `toolkit train`)")
     scenario = scenarios.get(args.scenario)
-    query = queries.make_queries(scenario, seed=args.seed, n_workspaces=1, per_workspace=1)[0]
     checker = None
     if args.predict:
+        from functools import partial
+
         from toolkit.learning import checkpoints, learned
 
-        checker = learned.LearnedChecker(query.workspace, checkpoints.load_models(args.checkpoint, scenario))
-    result = queries.solve_query(scenario, query, args.sampler, checker=checker, seed=args.seed)
+        checker = partial(learned.LearnedChecker, models=checkpoints.load_models(args.checkpoint, scenario))
+    task = problems.build(
+        scenario, seed=args.seed, sampler=args.sampler, planner=args.planner, checker=checker, **dict(args.option)
+    )
+    result = task.solve(np.random.default_rng(args.seed))
     out = {
         "scenario": scenario.name,
         "sampler": args.sampler,
-        "predict": args.predict,
+        "planner": result.planner,
+        "params": dataclasses.asdict(task.planner.params),
+        "predict": task.problem.predicts,
         "seed": args.seed,
         "success": result.success,
         "path": result.path.tolist(),
         "stats": result.stats,
-        "start": query.start.tolist(),
-        "goal": query.goal.tolist(),
-        "workspace": query.workspace.to_dict(),
+        "start": task.query.start.tolist(),
+        "goal": task.query.goal.tolist(),
+        "workspace": task.query.workspace.to_dict(),
     }
     if args.json:
         print(json.dumps(out))
     else:
         print(
-            f"{'solved' if result.success else 'no path'}: {len(result.path)} configurations, "
-            f"{result.stats['nodes']} nodes, {result.stats['edges']} edges, {result.stats['total_s']:.3f} s"
+            f"{'solved' if result.success else 'no path'} by planner {result.planner!r}"
+            f"{' with prediction' if task.problem.predicts else ''}: {len(result.path)} configurations, "
+            f"{result.stats.get('nodes', 0)} nodes, {result.stats.get('edges', 0)} edges, "
+            f"{result.stats['total_s']:.3f} s"
         )
     return 0
 

@@ -19,6 +19,7 @@ from toolkit.cli.arguments import (
     help_formatter,
     imports_parent,
     int_in,
+    planner,
     positive_float,
     preset,
     sampler_list,
@@ -117,17 +118,18 @@ def plan_options(cmd: argparse.ArgumentParser) -> None:
         default="BS",
         help="how PRM draws its nodes (listed in `toolkit --help`; default BS)",
     )
+    planner(cmd, "the planner that solves the query")
     cmd.add_argument(
         "--predict",
         action="store_true",
-        help="decide which samples are free with the learned checker (needs --checkpoint)",
+        help="decide which samples are free with the learned checker (needs --checkpoint); the planner stays the same",
     )
     cmd.add_argument("--checkpoint", metavar="DIR", help="a checkpoint folder from `toolkit train`")
     seed(cmd, "the workspace, start and goal, and the sampler's draws")
     cmd.add_argument(
         "--json",
         action="store_true",
-        help="print one JSON object (success, path, stats, workspace) instead of a sentence",
+        help="print one JSON object (planner, params, success, path, stats, workspace) instead of a sentence",
     )
 
 
@@ -240,12 +242,14 @@ SUBCOMMANDS: list[tuple[str, str, str, list[str], Callable[[argparse.ArgumentPar
     ),
     (
         "plan",
-        "solve one planning query with PRM, with or without prediction",
-        "Draws a workspace and a start and goal from --seed, builds a PRM roadmap with the sampler\n"
-        "and searches it. With --predict the learned checker decides which samples are free (the\n"
-        "paper's Algorithm 1); the returned path is always checked exactly.",
+        "solve one planning query, with or without prediction",
+        "Draws a workspace and a start and goal from --seed and solves the query with --planner\n"
+        "(default lazy, the best exact planner; paper: the paper's Algorithm 1). With --predict the\n"
+        "learned checker decides which samples are free and nothing else changes: the same planner,\n"
+        "the same parameters. The returned path is always checked exactly; the output names the planner.",
         [
             "toolkit plan --scenario 2ds --sampler OB",
+            "toolkit plan --scenario 3dc7 --planner paper --option k=15   # Algorithm 1, 15 neighbours",
             "toolkit plan --scenario 3dc7 --sampler BT --predict --checkpoint runs/3dc7-strong --json",
             "toolkit plan --import my_samplers --scenario 2ds --sampler MA   # a sampler registered in my_samplers.py",
         ],

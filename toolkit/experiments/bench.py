@@ -9,7 +9,8 @@ save planning time. So three measurements, one function each:
 - :func:`edge_checks` — the exact local planner's edge checks, every point against
   clearance certificates (``local_planner.check_edges`` / ``certify_edges``);
 - :func:`planning_ratios` — PRM with and without prediction, per sampler, on the paper's
-  queries: the time ratios of Table 3, "without" being the strongest exact planner and checker.
+  queries: the time ratios of Table 3, one planner (named; default the lazy PRM) with the default exact
+  checker, the two runs differing in the checker that decides samples only.
 
 Figures are medians over repeats, and a ratio's two figures come from one run, timed
 in turns (:func:`in_turns`), since a shared machine's speed changes while it runs.
@@ -22,27 +23,27 @@ planners against OMPL's (:mod:`toolkit.experiments.versus_ompl`), and ``toolkit 
 
 from __future__ import annotations
 
-import dataclasses
 import time
 from collections.abc import Callable
 
 import numpy as np
 import torch
 
-from toolkit.experiments import planners, queries
+from toolkit.experiments import queries
+from toolkit.experiments.problems import make_planner
 from toolkit.geometry.collision import CollisionChecker, FCLChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.learning.learned import LearnedChecker
 from toolkit.learning.presets import Preset
 from toolkit.learning.training import TrainedModels
-from toolkit.planning import sampling
+from toolkit.planning import prm, sampling
 from toolkit.planning.local_planner import (
     certify_edges,
     check_edges,
     default_resolution,
 )
-from toolkit.planning.options import LazyPRMOptions, PRMOptions
+from toolkit.planning.options import RoadmapParams
 from toolkit.scenarios import Scenario
 
 __all__ = [
@@ -178,7 +179,7 @@ def edge_checks(scenario: Scenario, *, n_segments: int = 300, seed: int = 0, rep
     exact, robot = exact_checker(ws, scenario.robot), scenario.robot
     Q0, Q1 = short_valid_segments(exact, n_segments, np.random.default_rng(seed))  # (E, dof) each
     resolution = scenario.plan_resolution or default_resolution(robot)
-    spacing = resolution * PRMOptions().certify_spacing
+    spacing = resolution * RoadmapParams().certify_spacing
     return {
         name: edge_checks_at(exact, Q0, Q1, r, spacing=spacing, repeats=repeats)
         for name, r in (("resolution", resolution), ("finer", resolution / 10))
@@ -232,48 +233,27 @@ def planning_ratios(
     seed: int = 0,
     samplers: tuple[str, ...] = sampling.PAPER_SAMPLERS,
     overrides: dict | None = None,
-    options_class: type[PRMOptions] | None = None,
+    planner: str | None = None,
 ) -> dict[str, dict]:
-    """Per sampler, PRM on the first queries of the paper's set, with ``models`` and without, in turns:
+    """Per sampler, one planner on the first queries of the paper's set, with ``models`` and without, in turns:
     ``{"sampling_ratio", "total_ratio"}`` (with / without, mean times), the same of the medians, both
-    success rates and the sampling rounds and repairs a query each mode needed (means).
+    success rates and the sampling rounds and repairs a query each mode needed (means), and ``planner``, the name
+    of the planner that ran.
 
-    Without prediction is the strongest exact planner and checker: the lazy PRM with the default exact checker
-    (compiled), whatever the model's recipe plans with; with prediction, the planner the recipe is paired with
-    (:mod:`toolkit.experiments.planners`: the ``paper`` preset's is Algorithm 1). ``options_class`` makes both
-    modes one planner (``PRMOptions``: Algorithm 1). ``overrides`` (planner options) apply to each mode whose
-    planner reads them (an option neither reads is an error): the same queries with one option changed measure
-    what that option does. ``samplers``: the paper's four by default, or any registered ones
-    (``sampling.register_sampler``).
+    Both modes run ``planner`` (a name; None: ``toolkit.planning.prm.DEFAULT``, the lazy PRM) with the same
+    parameters and the default exact checker (compiled): only the checker that decides samples differs.
+    ``overrides`` change the planner's parameters (one it does not read is an error): the same queries with one
+    option changed measure what that option does. ``samplers``: the paper's four by default, or any registered
+    ones (``sampling.register_sampler``).
     """
     samplers = sampling.check_names(samplers)
-    overrides = overrides or {}
-    planner = {
-        "without": options_class or LazyPRMOptions,
-        "with": options_class or planners.pairing(models.preset).options,
-    }
-    reads = {mode: {f.name for f in dataclasses.fields(cls)} for mode, cls in planner.items()}
-    if unread := sorted(set(overrides) - reads["without"] - reads["with"]):
-        raise ValueError(
-            f"unknown planner option(s) {unread}; the planners read {sorted(reads['without'] | reads['with'])}"
-        )
-    options = {
-        mode: queries.planner_options(
-            scenario,
-            preset,
-            predicted=preset is not None,
-            options_class=planner[mode],
-            **{name: value for name, value in overrides.items() if name in reads[mode]},
-        )
-        for mode, preset in (("without", None), ("with", models.preset))
-    }
+    solver = make_planner(scenario, planner or prm.DEFAULT, **(overrides or {}))
     per_workspace = min(per_workspace, scenario.queries_per_workspace)
     query_set = queries.make_queries(scenario, seed=seed, n_workspaces=n_workspaces, per_workspace=per_workspace)
-    learned = queries.Mode(lambda ws: LearnedChecker(ws, models), options=options["with"])
     table = queries.compare_prediction(
-        scenario, query_set, learned, samplers=samplers, options=options["without"], seed=seed
+        scenario, query_set, lambda ws: LearnedChecker(ws, models), samplers=samplers, planner=solver, seed=seed
     )
-    return {sampler: prediction_ratios(row) for sampler, row in table.items()}
+    return {sampler: dict(prediction_ratios(row), planner=solver.name) for sampler, row in table.items()}
 
 
 def prediction_ratios(row: dict) -> dict[str, float]:

@@ -25,7 +25,6 @@ from toolkit.experiments import planners
 from toolkit.learning import presets
 from toolkit.learning.presets import Preset
 from toolkit.planning import sampling
-from toolkit.planning.options import LazyPRMOptions
 from toolkit.scenarios import Scenario
 
 
@@ -95,7 +94,7 @@ def default_baseline(preset: Preset) -> str:
     """Table 3's baseline unless one is chosen: the planner paired with the recipe, without prediction
     (:mod:`toolkit.experiments.planners`; the ``paper`` preset's is Algorithm 1, so its Table 3 compares what the
     paper compares), with the default exact checker."""
-    return "best" if issubclass(planners.pairing(preset).options, LazyPRMOptions) else "paper"
+    return "paper" if planners.pairing(preset).planner == "paper" else "best"
 
 
 @dataclass(frozen=True, kw_only=True)

@@ -31,9 +31,11 @@ from contextlib import contextmanager
 import numpy as np
 
 from toolkit.experiments import queries, versus_ompl
+from toolkit.experiments.problems import build, make_planner
 from toolkit.geometry.collision import exact_checker
+from toolkit.planning import prm
 from toolkit.planning.paper_prm import PRM
-from toolkit.planning.prm import PLANNERS, plan
+from toolkit.planning.prm import PLANNERS
 from toolkit.planning.query_roadmap import QueryRoadmap
 from toolkit.planning.roadmap import Roadmap
 from toolkit.scenarios import Scenario
@@ -109,21 +111,18 @@ def profile(scenario: Scenario, *, n_queries: int = 10, seed: int = 9100, sample
     "checker_ms"}``), after one untimed warm-up solve (numba loads its compiled kernels once a process); and
     :func:`summary` of them."""
     query_set = versus_ompl.race_queries(scenario, n_queries, seed)
-    options = queries.planner_options(scenario)
-    robot, records = scenario.robot, []
+    solver, robot, records = make_planner(scenario, prm.DEFAULT), scenario.robot, []
     with queries.one_thread():
-        first = query_set[0]
-        plan(exact_checker(first.workspace, robot), first.start, first.goal, options=options, sampler=sampler,
-             rng=np.random.default_rng([seed, 0]))  # fmt: skip
+        build(scenario, query_set[0], sampler=sampler, planner=solver).solve(np.random.default_rng([seed, 0]))
         for n, query in enumerate(query_set):
             began = time.perf_counter()
             exact = exact_checker(query.workspace, robot)
             setup = time.perf_counter() - began
+            task = build(scenario, query, sampler=sampler, planner=solver, exact=exact)
             clock = StageClock()
             with clock.patched(type(exact)):
                 began = time.perf_counter()
-                result = plan(exact, query.start, query.goal, options=options, sampler=sampler,
-                              rng=np.random.default_rng([seed, n]))  # fmt: skip
+                result = task.solve(np.random.default_rng([seed, n]))
                 total = time.perf_counter() - began
             stages = dict(clock.seconds)
             stages[AROUND] = total - sum(s for name, s in stages.items() if name != AROUND)

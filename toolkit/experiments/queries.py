@@ -1,131 +1,64 @@
-"""Planning queries as in the paper (§IV-A) and running a sampler over them, with or without prediction.
+"""Running a planner over a query set, with or without prediction, in turns (§IV-A, Table 3).
 
-2DS and 3DO: 10 workspaces x 10 start/goal pairs; 3DC: 100 workspaces x 1 pair
-(``scenario.query_workspaces x scenario.queries_per_workspace``). Workspaces come
-from the ``'query'`` stream of :meth:`toolkit.scenarios.Scenario.workspaces`; starts and goals are
-uniform configurations the exact checker accepts, drawn from a generator derived
-from ``(seed, workspace index)``, and at least a quarter of the region's diagonal
-apart (base positions), so every query means travelling.
-
-:func:`planner_options` gives a query's planner settings (the paper's |S|, the scenario's
-resolution, and the planner the experiments pair with a model's recipe,
-:mod:`~toolkit.experiments.planners`); :func:`default_options` does it for a learned checker.
-``run_queries`` solves each query from scratch (a fresh roadmap, as in the paper),
-with torch and numpy's BLAS on one thread (:func:`one_thread`), and summarizes: mean
-and std of ``sampling_s`` and ``total_s`` (and their medians and quartiles), ``success_rate``, and
-``path_valid_rate``, the fraction of returned paths that a fresh exact checker
-accepts at 10x finer resolution than the local planner's. ``run_interleaved`` does
-the same in several modes (without and with prediction) taking turns query by
-query, so that the ratio of their times is measured under the same conditions; a
-:class:`Mode` names what differs between them: the checker that decides samples,
-the exact checker, the planner's settings.
+The query sets are :mod:`~toolkit.experiments.query_sets` (``make_queries``, also importable from
+here); each query is built by :func:`toolkit.experiments.problems.build`; the records are
+summarized by :mod:`~toolkit.experiments.summaries`. ``run_queries`` solves each query from
+scratch (a fresh roadmap, as in the paper), with torch and numpy's BLAS on one thread
+(:func:`one_thread`); ``path_valid`` is whether a fresh exact checker accepts the returned path at
+the problem's finer resolution. ``run_interleaved`` does the same in several modes (without and
+with prediction) taking turns query by query, so that the ratio of their times is measured under
+the same conditions; a :class:`Mode` names what differs between them: the checker that decides
+samples, the exact checker, the planner (with its parameters). Modes without a planner of their
+own all run the run's ``planner``: "with / without prediction" then differs in the checker only.
 """
 
 from __future__ import annotations
 
 import time
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, fields
-from typing import Any
+from dataclasses import dataclass
 
 import numpy as np
 
-from toolkit.experiments import planners
+from toolkit.experiments.problems import build, make_planner
+from toolkit.experiments.query_sets import Query, make_queries, query_pairs
+from toolkit.experiments.summaries import summarize
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
-from toolkit.learning.learned import LearnedChecker
 from toolkit.learning.presets import Preset
+from toolkit.planning import prm
 from toolkit.planning.local_planner import path_is_valid
-from toolkit.planning.prm import PlanResult, PRMOptions, plan
+from toolkit.planning.planner import Planner, PlanResult
 from toolkit.planning.sampling import PAPER_SAMPLERS
-from toolkit.scenarios import STREAMS, Scenario
+from toolkit.scenarios import Scenario
 from toolkit.util import threads
 
-PAIR_STREAM = 1  # appended to the workspace's seed words: the start/goal pairs of query workspace i
+__all__ = [  # make_queries, query_pairs, Query and summarize are imported by old callers from here too
+    "Mode",
+    "Query",
+    "compare_prediction",
+    "default_options",
+    "make_queries",
+    "one_thread",
+    "planner_options",
+    "query_pairs",
+    "run_interleaved",
+    "run_queries",
+    "solve_query",
+    "summarize",
+]
 
 
 @dataclass(frozen=True)
 class Mode:
     """One way to plan a query set, for :func:`run_interleaved`: which checker decides samples (``checker(workspace)``;
     None: the exact one), which exact checker checks edges and paths (``exact(workspace, robot)``; default: the
-    fastest, :func:`~toolkit.geometry.collision.exact_checker`), with which planner settings (None: the run's)."""
+    fastest, :func:`~toolkit.geometry.collision.exact_checker`), with which planner (None: the run's)."""
 
     checker: Callable[[Workspace], CollisionChecker] | None = None
     exact: Callable[[Workspace, BoxRobot], CollisionChecker] = exact_checker
-    options: PRMOptions | None = None
-
-
-@dataclass(frozen=True)
-class Query:
-    """One start/goal pair in workspace number ``workspace_index`` of the query stream."""
-
-    workspace_index: int
-    workspace: Workspace
-    start: np.ndarray  # (dof,)
-    goal: np.ndarray  # (dof,)
-
-
-def query_pairs(
-    scenario: Scenario, ws: Workspace, count: int, rng: np.random.Generator, *, min_separation: float = 0.25
-) -> list[tuple[np.ndarray, np.ndarray]]:
-    """``count`` (start, goal) pairs valid under the exact checker, base positions ``min_separation`` x diagonal
-    apart."""
-    robot, checker = scenario.robot, exact_checker(ws, scenario.robot)
-    far = min_separation * float(np.linalg.norm(ws.upper - ws.lower))
-    pairs: list[tuple[np.ndarray, np.ndarray]] = []
-    for _ in range(1000):
-        Q = robot.sample(rng, 256)  # (256, dof)
-        Q = Q[checker.are_valid(Q)]
-        for start, goal in zip(Q[0::2], Q[1::2]):
-            if len(pairs) < count and np.linalg.norm(goal[: robot.dim] - start[: robot.dim]) >= far:
-                pairs.append((start, goal))
-        if len(pairs) == count:
-            return pairs
-    raise RuntimeError(f"could not find {count} valid, separated start/goal pairs in this workspace")
-
-
-def default_options(scenario: Scenario, learned: CollisionChecker | None = None, **overrides) -> PRMOptions:
-    """The planner settings of a query in ``scenario``: without a ``learned`` checker, the best exact planner (the lazy
-    PRM) with the paper's |S| and the scenario's resolution; with a :class:`LearnedChecker`, the planner its model's
-    preset is paired with (:mod:`toolkit.experiments.planners`: Algorithm 1 for ``paper``); with a predictor of your
-    own, the lazy PRM. ``overrides``: fields of those options."""
-    preset = learned.models.preset if isinstance(learned, LearnedChecker) else None
-    return planner_options(scenario, preset, predicted=learned is not None, **overrides)
-
-
-def planner_options(
-    scenario: Scenario,
-    preset: Preset | None = None,
-    *,
-    predicted: bool = False,
-    options_class: type[PRMOptions] | None = None,
-    **overrides,
-) -> PRMOptions:
-    """Options of the planner paired with ``preset`` (:mod:`~toolkit.experiments.planners`; None: the lazy PRM) or of
-    ``options_class`` (``PRMOptions``: Algorithm 1): the paper's |S| and the scenario's resolution, the pairing's
-    settings with the model when ``predicted``, then ``overrides`` (one the planner does not read is an error)."""
-    paired = planners.Pairing() if preset is None else planners.pairing(preset)
-    options_class = options_class or paired.options
-    known = {f.name for f in fields(options_class)}
-    settings: dict[str, Any] = {"n_samples": scenario.plan_samples, "resolution": scenario.plan_resolution}
-    settings.update({name: value for name, value in paired.with_model.items() if predicted and name in known})
-    if unknown := sorted(set(overrides) - known):
-        raise ValueError(f"unknown planner option(s) {unknown}; {options_class.__name__} has {sorted(known)}")
-    return options_class(**{**settings, **overrides})
-
-
-def make_queries(
-    scenario: Scenario, *, seed: int = 0, n_workspaces: int | None = None, per_workspace: int | None = None
-) -> list[Query]:
-    """The paper's query set (counts default to the scenario's), reproducible from ``seed``."""
-    n_workspaces = scenario.query_workspaces if n_workspaces is None else n_workspaces
-    per_workspace = scenario.queries_per_workspace if per_workspace is None else per_workspace
-    queries = []
-    for i, ws in enumerate(scenario.workspaces("query", n_workspaces, seed)):
-        rng = np.random.default_rng([int(seed), STREAMS["query"], i, PAIR_STREAM])
-        queries += [Query(i, ws, start, goal) for start, goal in query_pairs(scenario, ws, per_workspace, rng)]
-    return queries
+    planner: Planner | None = None
 
 
 def solve_query(
@@ -134,23 +67,19 @@ def solve_query(
     sampler: str,
     *,
     checker: CollisionChecker | None = None,
-    options: PRMOptions | None = None,
+    planner: str | Planner | None = None,
     seed=0,
     exact: CollisionChecker | None = None,
+    options=None,
 ) -> PlanResult:
-    """One query with ``sampler``; ``checker`` decides samples (None: the exact checker); ``options`` by default
-    :func:`default_options` of the scenario and the checker; ``exact``
-    checks edges and paths (None: :func:`~toolkit.geometry.collision.exact_checker`)."""
-    options = options or default_options(scenario, checker)
-    return plan(
-        exact or exact_checker(query.workspace, scenario.robot),
-        query.start,
-        query.goal,
-        sampler=sampler,
-        checker=checker,
-        options=options,
-        rng=np.random.default_rng(seed),
-    )
+    """One query with ``sampler`` and ``planner`` (a name or one made; None: ``toolkit.planning.prm.DEFAULT``);
+    ``checker`` decides samples (None: the exact checker); ``exact`` checks edges and paths (None:
+    :func:`~toolkit.geometry.collision.exact_checker`); ``options``: the planner's parameters (they name their
+    planner when ``planner`` is None)."""
+    if options is not None:
+        planner = _owner(planner, options)
+    task = build(scenario, query, sampler=sampler, planner=planner, checker=checker, exact=exact)
+    return task.solve(np.random.default_rng(seed))
 
 
 def run_queries(
@@ -159,18 +88,18 @@ def run_queries(
     sampler: str,
     checker_factory: Callable[[Workspace], CollisionChecker] | None = None,
     *,
-    options: PRMOptions | None = None,
+    planner: Planner | None = None,
     seed: int = 0,
 ) -> tuple[list[dict], dict]:
-    """Solve every query with ``sampler``; ``checker_factory(workspace)`` gives the learned checker (None: exact).
+    """Solve every query with ``sampler`` and ``planner`` (None: the default, with the scenario's |S|);
+    ``checker_factory(workspace)`` gives the learned checker (None: exact).
 
     The factory runs once per workspace (it encodes the workspace: Algorithm 1,
     line 1); its time is shared among that workspace's queries and counted in their
-    ``total_s``. ``options`` None: :func:`default_options` for each query's checker.
-    Torch and numpy's BLAS run on one thread meanwhile (:func:`one_thread`). Returns
-    per-query records and the summary.
+    ``total_s``. Torch and numpy's BLAS run on one thread meanwhile (:func:`one_thread`).
+    Returns per-query records and the summary.
     """
-    return run_interleaved(scenario, queries, sampler, {"run": checker_factory}, options=options, seed=seed)["run"]
+    return run_interleaved(scenario, queries, sampler, {"run": checker_factory}, planner=planner, seed=seed)["run"]
 
 
 def run_interleaved(
@@ -179,19 +108,22 @@ def run_interleaved(
     sampler: str,
     factories: Mapping[str, Callable[[Workspace], CollisionChecker] | Mode | None],
     *,
-    options: PRMOptions | None = None,
+    planner: Planner | None = None,
     seed: int = 0,
 ) -> dict[str, tuple[list[dict], dict]]:
     """:func:`run_queries` once per entry of ``factories`` (a name: a checker factory, None for exact, or a
-    :class:`Mode`, whose own options replace ``options``), the entries taking turns query by query (who goes
+    :class:`Mode`, whose own planner replaces ``planner``), the entries taking turns query by query (who goes
     first rotates), each query with the same seed in every entry.
 
     So all entries see the machine alike: a shared machine changes speed for minutes
     at a time, which moves the ratio of two runs made one
     after the other, not that of runs made in turns. Per name: records and summary.
     """
+    planner = planner or make_planner(scenario)
+    modes = {name: entry if isinstance(entry, Mode) else Mode(entry) for name, entry in factories.items()}
+    modes = {name: mode if mode.planner else Mode(mode.checker, mode.exact, planner) for name, mode in modes.items()}
     with one_thread():
-        records = _solve_all(scenario, queries, sampler, factories, options=options, seed=seed)
+        records = _solve_all(scenario, queries, sampler, modes, seed=seed)
     return {name: (runs, summarize(runs)) for name, runs in records.items()}
 
 
@@ -208,13 +140,7 @@ def one_thread():
 
 
 def _solve_all(
-    scenario: Scenario,
-    queries: list[Query],
-    sampler: str,
-    factories: Mapping[str, Callable[[Workspace], CollisionChecker] | Mode | None],
-    *,
-    options: PRMOptions | None,
-    seed: int,
+    scenario: Scenario, queries: list[Query], sampler: str, modes: Mapping[str, Mode], *, seed: int
 ) -> dict[str, list[dict]]:
     """The per-query records of :func:`run_interleaved`, per name.
 
@@ -223,7 +149,6 @@ def _solve_all(
     a median query of 7.5 ms once moved Table 3's mean by +59 to +77 %, issue 51), and torch sets up its first
     call. That solve is discarded; the timed loop starts warm.
     """
-    modes = {name: entry if isinstance(entry, Mode) else Mode(entry) for name, entry in factories.items()}
     names = list(modes)
     records: dict[str, list[dict]] = {name: [] for name in names}
     checkers: dict[str, dict] = {name: {} for name in names}  # per name: workspace index -> checker
@@ -231,7 +156,7 @@ def _solve_all(
     for mode in modes.values():  # the untimed warm-up
         if queries:
             warm = mode.checker(queries[0].workspace) if mode.checker is not None else None
-            _solve_and_verify(scenario, queries[0], sampler, mode, warm, options=options, seed=[int(seed), 0])
+            _solve_and_verify(scenario, queries[0], sampler, mode, warm, seed=[int(seed), 0])
     for n, query in enumerate(queries):
         turn = n % len(names)
         for name in names[turn:] + names[:turn]:
@@ -241,74 +166,24 @@ def _solve_all(
                 built[query.workspace_index] = mode.checker(query.workspace)
                 encode_s = (time.perf_counter() - began) / share[query.workspace_index]
             record = _solve_and_verify(
-                scenario, query, sampler, mode, built.get(query.workspace_index), options=options, seed=[int(seed), n]
+                scenario, query, sampler, mode, built.get(query.workspace_index), seed=[int(seed), n]
             )
             records[name].append(dict(record, encode_s=encode_s, total_s=record["total_s"] + encode_s))
     return records
 
 
 def _solve_and_verify(
-    scenario: Scenario,
-    query: Query,
-    sampler: str,
-    mode: Mode,
-    checker: CollisionChecker | None,
-    *,
-    options: PRMOptions | None,
-    seed: list[int],
+    scenario: Scenario, query: Query, sampler: str, mode: Mode, checker: CollisionChecker | None, *, seed: list[int]
 ) -> dict:
-    """One query solved in ``mode`` with ``checker`` deciding samples: the planner's stats, ``success``, and
-    ``path_valid`` (the path accepted by a fresh exact checker at a tenth of the planner's resolution)."""
-    result = solve_query(
-        scenario,
-        query,
-        sampler,
-        checker=checker,
-        options=mode.options or options,
-        seed=seed,
-        exact=mode.exact(query.workspace, scenario.robot),
+    """One query solved in ``mode`` with ``checker`` deciding samples: the planner's stats, its name, ``success``,
+    and ``path_valid`` (the path accepted by a fresh exact checker at the problem's finer resolution)."""
+    task = build(scenario, query, sampler=sampler, planner=mode.planner, checker=checker, exact=mode.exact)
+    result = task.solve(np.random.default_rng(seed))
+    fresh = exact_checker(query.workspace, scenario.robot)
+    valid = result.success and path_is_valid(fresh, result.path, task.problem.fine_resolution)
+    return dict(
+        result.stats, planner=result.planner, workspace=query.workspace_index, success=result.success, path_valid=valid
     )
-    fine = result.stats["resolution"] / 10
-    valid = result.success and path_is_valid(exact_checker(query.workspace, scenario.robot), result.path, fine)
-    return dict(result.stats, workspace=query.workspace_index, success=result.success, path_valid=bool(valid))
-
-
-TIMES = ("sampling_s", "connection_s", "query_s", "encode_s", "total_s")  # a query's times, in seconds
-STAGES = ("sampling_s", "connection_s", "query_s")  # the parts of total_s the planner times (the rest: set-up)
-
-
-def summarize(records: list[dict]) -> dict:
-    """Means and stds over queries of the times and counts, medians and quartiles (``_q1``, ``_q3``) of the times,
-    each query's total, each stage's mean share of a query's total (``_share``); success and path-validity rates
-    in [0, 1]."""
-
-    def values(key):
-        return np.array([r[key] for r in records], dtype=float)
-
-    summary: dict[str, float] = {"n_queries": len(records)}
-    for key in (
-        "sampling_s",
-        "connection_s",
-        "query_s",
-        "total_s",
-        "encode_s",
-        "exact_checks",
-        "predicted_checks",
-        "rounds",
-        "repairs",
-    ):
-        summary[key] = float(values(key).mean()) if records else 0.0
-        summary[key + "_std"] = float(values(key).std()) if records else 0.0
-    for key in TIMES:  # robust to the odd slow query on a noisy machine: median and quartiles
-        q1, median, q3 = np.percentile(values(key), (25, 50, 75)) if records else (0.0, 0.0, 0.0)
-        summary.update({key + "_median": float(median), key + "_q1": float(q1), key + "_q3": float(q3)})
-    summary["total_s_per_query"] = values("total_s").tolist()  # in the order of the queries: names an outlier
-    for key in STAGES:  # where a typical query's time goes: each stage's share of a query's total, averaged
-        summary[key + "_share"] = float(np.mean(values(key) / np.maximum(values("total_s"), 1e-12))) if records else 0.0
-    solved = [r for r in records if r["success"]]
-    summary["success_rate"] = len(solved) / len(records) if records else 0.0
-    summary["path_valid_rate"] = float(np.mean([r["path_valid"] for r in solved])) if solved else 1.0
-    return summary
 
 
 def compare_prediction(
@@ -317,16 +192,16 @@ def compare_prediction(
     checker_factory: Callable[[Workspace], CollisionChecker] | Mode,
     *,
     samplers=PAPER_SAMPLERS,
-    options: PRMOptions | None = None,
+    planner: Planner | None = None,
     seed: int = 0,
 ) -> dict:
     """Per sampler: ``{"without": summary, "with": summary, "sampling_ratio", "total_ratio"}`` (with / without),
-    the two modes in turns (:func:`run_interleaved`); "without" plans with ``options``, "with" with
-    ``checker_factory`` (a :class:`Mode` brings its own options)."""
+    the two modes in turns (:func:`run_interleaved`), both with ``planner`` (None: the default) unless
+    ``checker_factory`` is a :class:`Mode` with a planner of its own."""
     table = {}
     for sampler in samplers:
         modes = {"without": None, "with": checker_factory}
-        runs = run_interleaved(scenario, queries, sampler, modes, options=options, seed=seed)
+        runs = run_interleaved(scenario, queries, sampler, modes, planner=planner, seed=seed)
         without, with_ = runs["without"][1], runs["with"][1]
         table[sampler] = {
             "without": without,
@@ -335,3 +210,27 @@ def compare_prediction(
             "total_ratio": with_["total_s"] / max(without["total_s"], 1e-12),
         }
     return table
+
+
+# -- the names of before, for notebooks and tutorials that call them ------------------------------
+
+
+def default_options(scenario: Scenario, learned: CollisionChecker | None = None, **changes):
+    """The default planner's parameters for a query of ``scenario`` (``make_planner(scenario).params``), with
+    ``changes``. ``learned`` is accepted as before and changes nothing: the planner does not depend on the checker."""
+    return make_planner(scenario, **changes).params
+
+
+def planner_options(
+    scenario: Scenario, preset: Preset | None = None, *, predicted: bool = False, options_class=None, **changes
+):
+    """The parameters of the planner paired with ``preset`` (or of the planner reading ``options_class``) for a
+    query of ``scenario``: :func:`toolkit.experiments.problems.make_planner`'s; ``predicted`` is accepted as before
+    and changes nothing (with and without prediction, a planner has the same parameters)."""
+    name = _owner(None, options_class()).name if options_class is not None else None
+    return make_planner(scenario, name, preset=preset, **changes).params
+
+
+def _owner(planner, params) -> Planner:
+    """The planner ``planner`` (a name, one made, or None: the one ``params`` belong to) with ``params``."""
+    return prm.make(planner, params)

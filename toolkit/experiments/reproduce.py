@@ -39,6 +39,7 @@ from tqdm.auto import tqdm
 from toolkit import plots
 from toolkit.experiments import bench, pipeline, queries, tables
 from toolkit.experiments.config import RunConfig
+from toolkit.experiments.problems import make_planner
 from toolkit.experiments.stages import Stages, check_out
 from toolkit.experiments.tables import BASELINE
 from toolkit.experiments.workers import processes
@@ -46,7 +47,7 @@ from toolkit.geometry.collision import FCLChecker, exact_checker
 from toolkit.learning import checkpoints, training
 from toolkit.learning.data import SPLITS, CollisionDataset
 from toolkit.learning.learned import LearnedChecker
-from toolkit.planning.options import PRMOptions
+from toolkit.planning import prm
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.util import outputs, plugins
 
@@ -160,19 +161,17 @@ def planning_modes(config: RunConfig, models: training.TrainedModels) -> dict[st
     lazy PRM with the default exact checker); ``with``, the planner paired with the run's recipe
     (:mod:`toolkit.experiments.planners`) with the learned checker deciding samples; and, when Table 3's baseline
     (``config.baseline``) is the paper's, ``baseline``: Algorithm 1 without prediction, with the default exact
-    checker (``paper``) or python-fcl's (``paper-fcl``)."""
+    checker (``paper``) or python-fcl's (``paper-fcl``). Each mode names its planner."""
     scenario, settings = config.scenario, config.planner_settings()
     modes = {
-        "without": queries.Mode(options=queries.planner_options(scenario, **settings)),
+        "without": queries.Mode(planner=make_planner(scenario, prm.DEFAULT, **settings)),
         "with": queries.Mode(
-            partial(LearnedChecker, models=models),
-            options=queries.planner_options(scenario, config.preset, predicted=True, **settings),
+            partial(LearnedChecker, models=models), planner=make_planner(scenario, preset=config.preset, **settings)
         ),
     }
     if config.baseline != "best":
         exact = FCLChecker if config.baseline == "paper-fcl" else exact_checker
-        algorithm_1 = queries.planner_options(scenario, options_class=PRMOptions, **settings)
-        modes[BASELINE] = queries.Mode(exact=exact, options=algorithm_1)
+        modes[BASELINE] = queries.Mode(exact=exact, planner=make_planner(scenario, "paper", **settings))
     return modes
 
 

@@ -58,14 +58,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from toolkit.experiments import queries
+from toolkit.experiments.problems import build, make_planner
 from toolkit.experiments.queries import Query
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.learning.learned import LearnedChecker
 from toolkit.learning.training import TrainedModels
+from toolkit.planning import prm
 from toolkit.planning.local_planner import default_resolution, path_is_valid
-from toolkit.planning.prm import PRMOptions, plan
-from toolkit.planning.rrt_connect import RRTConnectOptions, rrt_connect
+from toolkit.planning.planner import Planner as Solver
 from toolkit.scenarios import Scenario
 
 IDLE_LOAD = 1.5  # a race whose 1-minute load average stayed at or below this ran on an idle machine
@@ -94,33 +95,17 @@ def race_queries(scenario: Scenario, n_queries: int, seed: int) -> list[Query]:
     return queries.make_queries(scenario, seed=seed, n_workspaces=-(-n_queries // per), per_workspace=per)[:n_queries]
 
 
-def our_planner(options: PRMOptions, *, sampler: str, seed: int, models: TrainedModels | None = None) -> Planner:
-    """Our PRM with ``options`` and ``sampler``; with ``models``, a learned checker of the query's workspace decides
-    the samples (built inside the call, so its workspace encoding counts in the time). Query ``n`` draws from
-    ``rng = default_rng([seed, n])``."""
+def our_planner(
+    solver: Solver, scenario: Scenario, *, sampler: str, seed: int, models: TrainedModels | None = None
+) -> Planner:
+    """Our planner ``solver`` (its name and parameters) on queries of ``scenario`` with ``sampler``; with ``models``,
+    a learned checker of the query's workspace decides the samples (built inside the call, so its workspace
+    encoding counts in the time). Query ``n`` draws from ``rng = default_rng([seed, n])``."""
 
     def solve(query: Query, exact: CollisionChecker, n: int):
         checker = LearnedChecker(query.workspace, models) if models is not None else None
-        result = plan(
-            exact,
-            query.start,
-            query.goal,
-            sampler=sampler,
-            checker=checker,
-            options=options,
-            rng=np.random.default_rng([seed, n]),
-        )
-        return Solved(result.success, result.path)
-
-    return solve
-
-
-def our_rrt_connect(options: RRTConnectOptions, *, seed: int) -> Planner:
-    """Our RRT-Connect (:mod:`toolkit.planning.rrt_connect`) with ``options``; query ``n`` draws from
-    ``rng = default_rng([seed, n])``."""
-
-    def solve(query: Query, exact: CollisionChecker, n: int):
-        result = rrt_connect(exact, query.start, query.goal, rng=np.random.default_rng([seed, n]), options=options)
+        task = build(scenario, query, sampler=sampler, planner=solver, checker=checker, exact=exact)
+        result = task.solve(np.random.default_rng([seed, n]))
         return Solved(result.success, result.path)
 
     return solve
@@ -153,23 +138,22 @@ def contenders(
     """The planners of a race, by the name its table gives them, ours first.
 
     Ours: the best exact planner (the lazy PRM), RRT-Connect, the paper's baseline (Algorithm 1,
-    ``PRMOptions``; unless ``paper_baseline`` is False) and, with ``models``, the planner paired with
+    ``paper``; unless ``paper_baseline`` is False) and, with ``models``, the planner paired with
     the model's preset with prediction (:mod:`toolkit.experiments.planners`, as
     ``bench.planning_ratios`` plans). OMPL's: each of ``ompl_planners``.
     """
     resolution = scenario.plan_resolution or default_resolution(scenario.robot)
-    best = queries.planner_options(scenario)
     ours = {
-        "ours, best exact": our_planner(best, sampler=sampler, seed=seed),
-        "ours, RRT-Connect": our_rrt_connect(RRTConnectOptions(resolution=resolution), seed=seed),
+        "ours, best exact": our_planner(make_planner(scenario, prm.DEFAULT), scenario, sampler=sampler, seed=seed),
+        "ours, RRT-Connect": our_planner(make_planner(scenario, "rrt-connect"), scenario, sampler=sampler, seed=seed),
     }
     if paper_baseline:
-        paper = queries.planner_options(scenario, options_class=PRMOptions)  # Algorithm 1
-        ours["ours, paper's baseline"] = our_planner(paper, sampler=sampler, seed=seed)
+        paper = make_planner(scenario, "paper")  # Algorithm 1
+        ours["ours, paper's baseline"] = our_planner(paper, scenario, sampler=sampler, seed=seed)
     if models is not None:
-        predicting = queries.planner_options(scenario, models.preset, predicted=True)
+        predicting = make_planner(scenario, preset=models.preset)
         ours[f"ours, with prediction ({models.preset.name})"] = our_planner(
-            predicting, sampler=sampler, seed=seed, models=models
+            predicting, scenario, sampler=sampler, seed=seed, models=models
         )
     return {**ours, **{f"OMPL {name}": ompl_planner(name, resolution, ompl_seconds) for name in ompl_planners}}
 

@@ -36,6 +36,8 @@ class BoxWorldChecker(CollisionChecker):
     link there can touch (the compiled checker's broadphase) or, grown, come near.
     """
 
+    is_exact = True  # every answer is the geometry's
+
     def __init__(self, workspace: Workspace, robot: BoxRobot):
         if workspace.dim != robot.dim:
             raise ValueError(f"robot {robot.name!r} is {robot.dim}D but the workspace is {workspace.dim}D")

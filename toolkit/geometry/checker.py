@@ -24,12 +24,16 @@ class CollisionChecker:
     call rather than in several dependent ones (same answers, fewer calls).
     ``certificates_pay``: bounding a clearance costs less than the checks it can spare
     (``local_planner.certify_edges``); False where a check is a few comparisons.
-    Both say what the checker *is*, like OMPL's validity-checker specs; how a planner uses
+    ``is_exact``: its answers are the geometry's, the truth (the box-world checkers); False, the
+    default, for a predictor or any checker that does not say so. A planner given a checker that is
+    not exact to decide samples plans "with prediction", whatever other checker it holds.
+    All three say what the checker *is*, like OMPL's validity-checker specs; how a planner uses
     it is the planner's business.
     """
 
     few_calls = False
     certificates_pay = True
+    is_exact = False
 
     def __init__(self, robot: BoxRobot):
         self.robot = robot

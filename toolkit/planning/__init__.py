@@ -13,9 +13,10 @@ Reading order:
    counters and trace, and the exact verification of a path (repairing what fails);
 6. :mod:`toolkit.planning.paper_prm` — **Algorithm 1**, as the paper has it, on one page;
 7. :mod:`toolkit.planning.lazy_prm` — the lazy PRM: the best exact planner, and prediction beyond the paper;
-8. :mod:`toolkit.planning.prm` — ``plan(exact, start, goal, ...)``: one entry to either planner, chosen by the
+8. :mod:`toolkit.planning.rrt_connect` — RRT-Connect: two trees, for a single query the fastest exact planner;
+9. :mod:`toolkit.planning.prm` — ``plan(exact, start, goal, ...)``: one entry to either planner, chosen by the
    options' class;
-9. :mod:`toolkit.planning.ompl` — our checkers and samplers inside OMPL, for comparison.
+10. :mod:`toolkit.planning.ompl` — our checkers and samplers inside OMPL, for comparison.
 
 Which planner plans with which model, and the paper's query sets, are the experiments' business
 (:mod:`toolkit.experiments`).

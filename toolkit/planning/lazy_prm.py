@@ -1,9 +1,10 @@
 """The lazy PRM (Bohlin & Kavraki 2000): the best exact planner, and with prediction the paper's future work.
 
-:class:`LazyPRM` is the paper's :class:`~toolkit.planning.paper_prm.PRM` with two of its steps
-changed; sampling by the chosen checker, connecting to the k nearest, bridging, and the exact
-verification and repair of every candidate path (:mod:`toolkit.planning.query_roadmap`) stay
-as they are, so every returned path is still exactly valid at both resolutions.
+:class:`LazyPRM`, the planner ``lazy``, is the paper's :class:`~toolkit.planning.paper_prm.PRM` with
+two of its steps changed and parameters of its own (:class:`~toolkit.planning.options.LazyParams`);
+sampling by the chosen checker, connecting to the k nearest, bridging, and the exact verification
+and repair of every candidate path (:mod:`toolkit.planning.query_roadmap`) stay as they are, so
+every returned path is still exactly valid at both resolutions.
 
 **Edges are decided lazily** (:meth:`LazyPRM.decide`). Algorithm 1 checks every candidate edge
 exactly, point by point, as it is added; most of those edges are never on the path. A lazy PRM
@@ -45,7 +46,7 @@ from __future__ import annotations
 import numpy as np
 
 from toolkit.planning.local_planner import invalid_fractions
-from toolkit.planning.options import LazyPRMOptions
+from toolkit.planning.options import LazyParams
 from toolkit.planning.paper_prm import PRM
 from toolkit.planning.query_roadmap import QueryRoadmap
 
@@ -54,26 +55,25 @@ class LazyPRM(PRM):
     """Algorithm 1 with lazy edges (exact or screened by prediction) and growing rounds."""
 
     name = "lazy"
-    Options = LazyPRMOptions
-    options: LazyPRMOptions
+    Params = LazyParams  # type: ignore[assignment]  # its own parameters, not Algorithm 1's
 
     def round_size(self, query: QueryRoadmap) -> int:
         """Sampler attempts this round: ``first_samples`` doubled each round up to |S| (None: |S| every round)."""
-        n, first = self.options.n_samples, self.options.first_samples
+        n, first = self.params.n_samples, self.params.first_samples
         return n if first is None else min(n, first << min(int(query.stats["rounds"]) - 1, 30))
 
     def decide(self, query: QueryRoadmap, pairs: np.ndarray) -> None:
         """Add the candidate edges ``pairs (C, 2)`` that screening (with prediction) or a few exact checks accept,
         unconfirmed; remember the others as rejected."""
-        options = self.options
+        options = self.params
         Q0, Q1 = query.roadmap.nodes[pairs.T]  # (C, dof) each
         length = query.roadmap.distance(Q0, Q1)  # (C,)
         if query.predicted and options.screen_edges:  # learned edge screening: one batched prediction for all
-            fraction, suspect = invalid_fractions(self.checker, Q0, Q1, query.resolution * options.screen_spacing)
+            fraction, suspect = invalid_fractions(query.checker, Q0, Q1, query.resolution * options.screen_spacing)
             cost = length * (1 + options.screen_penalty * fraction)  # (C,) the more predicted invalid, the dearer
             query.add_decided(pairs, fraction <= options.screen_reject, cost, suspect=suspect)
             return
         keep = np.ones(len(pairs), dtype=bool)  # exact lazy edges: a few exact checks now, in one call
         if options.lazy_screen is not None:
-            keep = invalid_fractions(self.exact, Q0, Q1, query.resolution * options.lazy_screen)[0] == 0
+            keep = invalid_fractions(query.exact, Q0, Q1, query.resolution * options.lazy_screen)[0] == 0
         query.add_decided(pairs, keep, length)

@@ -1,25 +1,28 @@
-"""The planners' settings, checked when they are made: the options' class says which planner runs.
+"""Each roadmap planner's parameters, frozen and checked when they are made: a planner owns its own.
 
-- :class:`PRMOptions`: Algorithm 1 as the paper has it (§III-B; :mod:`toolkit.planning.paper_prm`):
-  rounds of |S| = ``n_samples`` attempts, every candidate edge checked exactly as it is added;
-- :class:`LazyPRMOptions` (``PRMOptions`` and the fields only the lazy planner reads): the lazy
-  PRM (:mod:`toolkit.planning.lazy_prm`), the best exact planner we have, and with prediction the
-  paper's future work, learned edge screening.
+- :class:`PaperParams`: Algorithm 1 as the paper has it (§III-B; :mod:`toolkit.planning.paper_prm`,
+  planner ``paper``): rounds of |S| = ``n_samples`` attempts, every candidate edge checked exactly as
+  it is added;
+- :class:`LazyParams`: the lazy PRM (:mod:`toolkit.planning.lazy_prm`, planner ``lazy``), the best
+  exact planner we have, and with prediction the paper's future work, learned edge screening.
 
-``plan(exact, start, goal, options=...)`` (:mod:`toolkit.planning.prm`) runs the planner of the
-options' class; without options, the lazy PRM with ``LazyPRMOptions()``.
+Neither inherits the other's: both take the fields every roadmap planner reads from
+:class:`RoadmapParams` (what :mod:`toolkit.planning.query_roadmap` reads), and each adds its own.
+The query's resolution and sampler are the problem's, not a planner's
+(:class:`toolkit.planning.planner.Problem`). ``PRMOptions`` and ``LazyPRMOptions``, the names these
+had, still import.
 """
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
+from dataclasses import dataclass
 from typing import ClassVar
 
 import numpy as np
 
-AUXILIARY = {  # PRMOptions.auxiliary: how rounds after the first sample, with prediction
+AUXILIARY = {  # RoadmapParams.auxiliary: how rounds after the first sample, with prediction
     "exact": "with the exact checker (the paper: 'create additional valid samples using auxiliary samplers')",
-    "confirmed": "with prediction, keeping what the exact checker confirms; every PRMOptions.exact_every-th round "
+    "confirmed": "with prediction, keeping what the exact checker confirms; every exact_every-th round "
     "(counting from the first) with the exact checker",
     "predicted": "with prediction, like the first (nodes are checked when a candidate path uses them)",
 }
@@ -33,29 +36,26 @@ RULES = {  # what a field must be: __post_init__ checks each field against its r
     "positive and finite, or None": lambda v: v is None or (bool(np.isfinite(v)) and v > 0),
     "non-negative and finite": lambda v: bool(np.isfinite(v)) and v >= 0,
     "in [0, 1]": lambda v: 0 <= v <= 1,
+    "True or False": lambda v: isinstance(v, bool),
     f"one of {', '.join(AUXILIARY)}": lambda v: v in AUXILIARY,
 }
 
 
-@dataclass
-class PRMOptions:
-    """Algorithm 1's settings; ``k`` follows OMPL's PRM, ``n_samples`` the paper's |S| (§IV-A)."""
+@dataclass(frozen=True)
+class RoadmapParams:
+    """What every roadmap planner reads; ``k`` follows OMPL's PRM, ``n_samples`` the paper's |S| (§IV-A)."""
 
-    n_samples: int = 200  # sampler attempts per round (|S|)
+    n_samples: int = 200  # sampler attempts per round (|S|; a query of a scenario: its plan_samples)
     k: int = 10  # nearest neighbours tried for each new node
-    resolution: float | None = None  # local planner step bound; None: default_resolution(robot)
-    verify_refinement: int = 10  # the returned path's edges are checked exactly at resolution / this
     max_rounds: int = 20  # sampling rounds before reporting failure
     rebridge: int = 3  # when no path survives verification, bridge again up to this often before sampling again
     auxiliary: str = "exact"  # with prediction, rounds after the first: see AUXILIARY
     exact_every: int = 4  # auxiliary "confirmed": rounds 1 + exact_every, 1 + 2 * exact_every, ... sample exactly
-    certify_spacing: float = 8.0  # path verification: intervals of motion resolution * this first (certify_edges)
-    sampler_options: dict = field(default_factory=dict)  # keyword arguments of the sampler (make_sampler)
+    certify_spacing: float = 8.0  # path verification: intervals of resolution * this first (certify_edges)
 
     rules: ClassVar[dict[str, str]] = {  # field -> its RULES key (not a field: a subclass adds its fields' rules)
-        **dict.fromkeys(("n_samples", "k", "verify_refinement", "max_rounds", "exact_every"), "a positive integer"),
+        **dict.fromkeys(("n_samples", "k", "max_rounds", "exact_every"), "a positive integer"),
         "rebridge": "a non-negative integer",
-        "resolution": "positive and finite, or None",
         "certify_spacing": "positive and finite",
         "auxiliary": f"one of {', '.join(AUXILIARY)}",
     }
@@ -71,11 +71,16 @@ class PRMOptions:
                 raise ValueError(f"{type(self).__name__}.{name} must be {rule}, got {value!r}")
 
 
-@dataclass
-class LazyPRMOptions(PRMOptions):
-    """The lazy PRM's settings: Algorithm 1's, and how it decides edges lazily and grows its rounds."""
+@dataclass(frozen=True)
+class PaperParams(RoadmapParams):
+    """Algorithm 1's parameters: the roadmap planners' and no more (with prediction, later rounds sample exactly)."""
 
-    auxiliary: str = "confirmed"  # (the lazy PRM's default) with prediction, rounds after the first: see AUXILIARY
+
+@dataclass(frozen=True)
+class LazyParams(RoadmapParams):
+    """The lazy PRM's parameters: the roadmap planners', and how it decides edges lazily and grows its rounds."""
+
+    auxiliary: str = "confirmed"  # with prediction, rounds after the first: see AUXILIARY
     first_samples: int | None = 50  # round r samples min(first_samples * 2**(r-1), n_samples); None: n_samples
     lazy_screen: float | None = 32.0  # exact edges: points resolution * this apart checked as added (None: none)
     screen_edges: bool = True  # with prediction: learned edge screening; False: exact lazy edges
@@ -84,10 +89,15 @@ class LazyPRMOptions(PRMOptions):
     screen_spacing: float = 8.0  # screening predicts points resolution * this apart (an estimate of the fraction)
 
     rules: ClassVar[dict[str, str]] = {
-        **PRMOptions.rules,
+        **RoadmapParams.rules,
         "first_samples": "a positive integer or None",
         "lazy_screen": "positive and finite, or None",
+        "screen_edges": "True or False",
         "screen_spacing": "positive and finite",
         "screen_reject": "in [0, 1]",
         "screen_penalty": "non-negative and finite",
     }
+
+
+PRMOptions = PaperParams  # the names of before (notebooks, tutorials)
+LazyPRMOptions = LazyParams

@@ -8,21 +8,23 @@ Read this page beside the paper's Algorithm 1; each of its five lines is marked 
 2. sample a set ``S`` of configurations with the chosen sampler (BS, OB, G, BT:
    :mod:`toolkit.planning.sampling`; |S| = ``n_samples`` attempts);
 3. the checker keeps ``S'``, the samples it calls valid: the learned one ("with prediction"), or
-   the exact one itself ("without"): the two modes differ in the ``checker`` argument only;
+   an exact one ("without"): the two modes differ in the problem's ``checker`` only;
 4. a standard PRM on ``S'``: each node with its ``k`` nearest neighbours by straight-line edges,
    each **checked exactly**, point by point at the local planner's ``resolution``, as it is
    added (:meth:`PRM.decide`). If the roadmap does not join start and goal, "create additional
    valid samples using auxiliary samplers": another round of the same sampler, its samples
-   checked exactly (``PRMOptions.auxiliary``, ``"exact"`` by default);
+   checked exactly (``PaperParams.auxiliary``, ``"exact"`` by default);
 5. extract a path from the roadmap, and (§III-B, "the path is extracted and verified") verify it
    with the exact checker, repairing what fails (:mod:`toolkit.planning.query_roadmap`).
 
 Whatever the checker says about samples, a returned path has passed the exact checker at the
-resolution and 10x finer: a wrong prediction costs time, never a wrong path.
+resolution and 10x finer (``Problem.fine_resolution``): a wrong prediction costs time, never a
+wrong path.
 
-:class:`PRM` keeps the two steps that a variant may change as methods: how many attempts a
-round samples (:meth:`PRM.round_size`) and how a candidate edge is decided
-(:meth:`PRM.decide`); :class:`~toolkit.planning.lazy_prm.LazyPRM` changes both.
+:class:`PRM` is the planner ``paper`` (:mod:`toolkit.planning.planner`: a name, its own parameters,
+:class:`~toolkit.planning.options.PaperParams`, and ``solve(problem, rng)``). It keeps the two steps
+that a variant may change as methods: how many attempts a round samples (:meth:`PRM.round_size`)
+and how a candidate edge is decided (:meth:`PRM.decide`); :class:`~toolkit.planning.lazy_prm.LazyPRM` changes both.
 """
 
 from __future__ import annotations
@@ -31,49 +33,26 @@ from functools import partial
 
 import numpy as np
 
-from toolkit.geometry.collision import CollisionChecker
 from toolkit.planning.local_planner import check_edges
-from toolkit.planning.options import PRMOptions
-from toolkit.planning.query_roadmap import PlanResult, QueryRoadmap
-from toolkit.planning.sampling import make_sampler
+from toolkit.planning.options import PaperParams
+from toolkit.planning.planner import Planner, PlanResult, Problem
+from toolkit.planning.query_roadmap import QueryRoadmap
 
 
-class PRM:
-    """The paper's PRM (Algorithm 1) over ``exact`` and, deciding samples, ``checker`` (default: ``exact``)."""
+class PRM(Planner):
+    """The paper's PRM (Algorithm 1): ``PRM(params).solve(problem, rng)``."""
 
-    name = "paper"  # in toolkit.planning.prm.PLANNERS
-    Options = PRMOptions  # the settings this planner reads, and no other planner
+    name = "paper"
+    Params = PaperParams  # the parameters this planner reads, and no other planner
 
-    def __init__(
-        self,
-        exact: CollisionChecker,
-        checker: CollisionChecker | None = None,
-        *,
-        options: PRMOptions | None = None,
-        sampler: str = "BS",
-    ):
-        self.options = self.Options() if options is None else options
-        if type(self.options) is not self.Options:  # a subclass's fields belong to another planner
-            raise TypeError(
-                f"{type(self).__name__} reads {self.Options.__name__}, got {type(self.options).__name__}; "
-                "toolkit.planning.prm.plan runs the planner of the options' class"
-            )
-        self.exact = exact
+    def solve(self, problem: Problem, rng: np.random.Generator, *, trace: list | None = None) -> PlanResult:
+        """One query; a ``trace`` list receives a ``PlanStep`` at every stage."""
         # Algorithm 1, line 1: a learned checker encoded the workspace (the CAE's z) when it was built
-        self.checker = exact if checker is None else checker
-        self.sampler = make_sampler(sampler, self.checker, **self.options.sampler_options)
-        self.exact_sampler = make_sampler(sampler, exact, **self.options.sampler_options)  # the same, exactly
-
-    def __repr__(self) -> str:
-        return f"{type(self).__name__}({self.sampler!r})"
-
-    def solve(self, start, goal, *, rng: np.random.Generator, trace: list | None = None) -> PlanResult:
-        """One query ``start -> goal`` (``(dof,)`` each); a ``trace`` list receives a ``PlanStep`` at every stage."""
-        query = QueryRoadmap(self.exact, self.checker, self.options, trace)
+        query = QueryRoadmap(problem, self.params, trace)
         decide = partial(self.decide, query)  # this planner's edge rule, for connecting and bridging
-        new = query.add_endpoints(start, goal)  # START, GOAL
+        new = query.add_endpoints()  # START, GOAL
         path = None
-        while path is None and query.stats["rounds"] < self.options.max_rounds:
+        while path is None and query.stats["rounds"] < self.params.max_rounds:
             query.stats["rounds"] += 1
             with query.timed("sampling_s", "node_checks"):
                 kept, verified = self.sample_round(query, rng)  # S' (M, dof): lines 2-3, or line 4's auxiliary
@@ -87,29 +66,29 @@ class PRM:
             # Algorithm 1, line 5: extract the cheapest path and verify it exactly (repairing what fails);
             # no path yet: line 4 again, "create additional valid samples using auxiliary samplers"
             path = query.extract_path(decide)
-        return query.result(path)
+        return query.result(path, self.name)
 
     def round_size(self, query: QueryRoadmap) -> int:
         """Sampler attempts this round: |S| = ``n_samples``, every round."""
-        return self.options.n_samples
+        return self.params.n_samples
 
     def sample_round(self, query: QueryRoadmap, rng: np.random.Generator) -> tuple[np.ndarray, bool]:
-        """This round's ``S' (M, dof)`` and whether the exact checker vouches for them."""
-        n, options, round_ = self.round_size(query), self.options, query.stats["rounds"]
-        if not query.predicted:  # lines 2-3 without prediction: the exact checker keeps S'
-            return self.exact_sampler.sample(n, rng), True
-        if round_ == 1 or options.auxiliary == "predicted":
+        """This round's ``S' (M, dof)`` and whether an exact checker vouches for them."""
+        n, params, round_ = self.round_size(query), self.params, query.stats["rounds"]
+        if not query.predicted:  # lines 2-3 without prediction: an exact checker keeps S'
+            return query.sampler.sample(n, rng), True
+        if round_ == 1 or params.auxiliary == "predicted":
             # Algorithm 1, line 2: the sampler draws S; line 3: the learned checker keeps S' (in batches)
-            return self.sampler.sample(n, rng), False
+            return query.sampler.sample(n, rng), False
         # Algorithm 1, line 4: "additional valid samples" from the auxiliary sampler, checked exactly
-        if options.auxiliary == "exact" or (round_ - 1) % options.exact_every == 0:
-            return self.exact_sampler.sample(n, rng), True
-        S = self.sampler.sample(n, rng)  # "confirmed": prediction proposes, the exact checker confirms
-        return S[self.exact.are_valid(S)], True
+        if params.auxiliary == "exact" or (round_ - 1) % params.exact_every == 0:
+            return query.exact_sampler.sample(n, rng), True
+        S = query.sampler.sample(n, rng)  # "confirmed": prediction proposes, the exact checker confirms
+        return S[query.exact.are_valid(S)], True
 
     def decide(self, query: QueryRoadmap, pairs: np.ndarray) -> None:
         """Algorithm 1, line 4: add the candidate edges ``pairs (C, 2)`` that the exact checker accepts, point by
         point at the resolution, as they are added; remember the others as rejected."""
         Q0, Q1 = query.roadmap.nodes[pairs.T]  # (C, dof) each
-        keep = check_edges(self.exact, Q0, Q1, query.resolution)  # (C,)
+        keep = check_edges(query.exact, Q0, Q1, query.resolution)  # (C,)
         query.add_decided(pairs, keep, query.roadmap.distance(Q0, Q1), checked_at=query.resolution)

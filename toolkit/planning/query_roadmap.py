@@ -1,8 +1,9 @@
 """One query's roadmap: what the paper's PRM and the lazy PRM share (§III-B, Algorithm 1, lines 4-5).
 
-A :class:`QueryRoadmap` holds the state of one query ``start -> goal``: the
-:class:`~toolkit.planning.roadmap.Roadmap`, the exact checker and the checker that decides
-samples (the learned one, or the exact one itself), counters and timers (``stats``) and,
+A :class:`QueryRoadmap` holds the state of one query, a
+:class:`~toolkit.planning.planner.Problem` (its exact checker, the checker that decides samples,
+the sampler drawn through either, the resolution): the
+:class:`~toolkit.planning.roadmap.Roadmap`, counters and timers (``stats``) and,
 when asked, a trace of :class:`PlanStep` snapshots. It does the steps that both planners take
 alike; the planner supplies its *edge rule* (``decide(pairs)``: which candidate edges enter the
 roadmap, and how they were checked):
@@ -12,7 +13,7 @@ roadmap, and how they were checked):
   the rest (:meth:`~toolkit.planning.roadmap.Roadmap.bridge_edges`);
 - **extract and verify** (line 5, "the path is extracted and verified"): the cheapest start-goal
   path, checked by the exact checker: its nodes, then its edges at the roadmap's ``resolution``
-  (unless checked exactly when they were added) and at ``resolution / verify_refinement`` (10x
+  (unless checked exactly when they were added) and at ``problem.fine_resolution`` (10x
   finer: shortest paths hug obstacles, and an edge that grazes a corner between two checks at
   ``resolution`` is caught here). Whatever fails is removed from the roadmap (a *repair*) and the
   next cheapest path is tried. Each edge remembers the finest resolution it passed at
@@ -39,15 +40,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from toolkit.geometry.collision import CollisionChecker
-from toolkit.planning.local_planner import (
-    certify_edges,
-    check_edges,
-    default_resolution,
-    refute_at,
-)
-from toolkit.planning.options import PRMOptions
+from toolkit.planning.local_planner import certify_edges, check_edges, refute_at
+from toolkit.planning.options import RoadmapParams
+from toolkit.planning.planner import PlanResult, Problem
 from toolkit.planning.roadmap import Roadmap
+from toolkit.planning.sampling import make_sampler
 
 START, GOAL = 0, 1  # node indices of the query's endpoints (never removed)
 
@@ -63,16 +60,6 @@ STAGES = {  # PlanStep.stage: what the planner just did (Algorithm 1, §III-B)
 }
 
 EdgeRule = Callable[[np.ndarray], None]  # decide(pairs (C, 2)): add the accepted edges, reject the others
-
-
-@dataclass
-class PlanResult:
-    """``success``; ``path (P, dof)`` (empty on failure); ``stats`` (counts, seconds); the final ``roadmap``."""
-
-    success: bool
-    path: np.ndarray
-    stats: dict
-    roadmap: Roadmap
 
 
 @dataclass(frozen=True)
@@ -95,20 +82,21 @@ class PlanStep:
 
 
 class QueryRoadmap:
-    """The state of one query: roadmap, the exact and the deciding checker, counters and timers, the trace."""
+    """The state of one query: the problem, the planner's parameters, roadmap, counters and timers, the trace."""
 
-    def __init__(
-        self, exact: CollisionChecker, checker: CollisionChecker, options: PRMOptions, trace: list | None = None
-    ):
-        if checker.robot.dof != exact.robot.dof:
-            raise ValueError(f"checker is for a {checker.robot.dof}-DoF robot, the exact checker for {exact.robot.dof}")
-        self.exact, self.checker, self.options, self.trace = exact, checker, options, trace
-        self.predicted = checker is not exact  # samples decided by prediction
-        self.resolution = default_resolution(exact.robot) if options.resolution is None else float(options.resolution)
+    def __init__(self, problem: Problem, params: RoadmapParams, trace: list | None = None):
+        self.problem, self.params, self.trace = problem, params, trace
+        self.exact, self.checker, self.predicted = problem.exact, problem.checker, problem.predicts
+        self.resolution = problem.resolution
         # a path's edges are confirmed at the roadmap's resolution (where most that fail, fail; exactly checked
         # edges already were), then finer
-        self.verify_resolutions = (self.resolution, self.resolution / options.verify_refinement)
-        self.roadmap = Roadmap(exact.robot)
+        self.verify_resolutions = (self.resolution, problem.fine_resolution)
+        # the sampler drawing through the deciding checker, and the same drawing through the exact one
+        self.sampler = make_sampler(problem.sampler, self.checker, **problem.sampler_options)
+        self.exact_sampler = (
+            make_sampler(problem.sampler, self.exact, **problem.sampler_options) if self.predicted else self.sampler
+        )
+        self.roadmap = Roadmap(self.exact.robot)
         self.stats: dict[str, float] = {  # counts (ints) and seconds
             "rounds": 0,
             "repairs": 0,
@@ -123,13 +111,12 @@ class QueryRoadmap:
             "verify_checks": 0,
         }
         self.began = time.perf_counter()
-        self.counts_at_start, self.bounded_at_start = self.counts(), exact.n_bounded
+        self.counts_at_start, self.bounded_at_start = self.counts(), self.exact.n_bounded
 
-    def add_endpoints(self, start, goal) -> np.ndarray:
-        """Add ``start`` and ``goal`` (``(dof,)`` each, checked exactly) as nodes ``START`` and ``GOAL``; returns
+    def add_endpoints(self) -> np.ndarray:
+        """Add the problem's ``start`` and ``goal`` (checked exactly) as nodes ``START`` and ``GOAL``; returns
         their indices."""
-        robot = self.exact.robot
-        endpoints = np.concatenate([_single(robot, start, "start"), _single(robot, goal, "goal")])  # (2, dof)
+        endpoints = np.stack([self.problem.start, self.problem.goal])  # (2, dof)
         for name, ok, q in zip(("start", "goal"), self.exact.are_valid(endpoints), endpoints):
             if not ok:
                 raise ValueError(f"{name} configuration {np.round(q, 4).tolist()} is in collision or out of bounds")
@@ -155,8 +142,10 @@ class QueryRoadmap:
         )
 
     def counts(self) -> tuple[int, int]:
-        """Configurations checked so far: (exact, predicted)."""
-        return self.exact.n_checked, self.checker.n_checked if self.predicted else 0
+        """Configurations checked so far: (exact, predicted); a second exact checker deciding samples counts as
+        exact."""
+        deciding = self.checker.n_checked if self.checker is not self.exact else 0  # (not the same counter twice)
+        return self.exact.n_checked + (0 if self.predicted else deciding), deciding if self.predicted else 0
 
     @contextmanager
     def timed(self, seconds_key: str, checks_key: str):
@@ -169,7 +158,7 @@ class QueryRoadmap:
     def connect(self, new: np.ndarray, decide: EdgeRule) -> None:
         """Edges from the ``new`` nodes to their k nearest; then, while start and goal lie apart, bridges from their
         components; ``decide`` is the planner's edge rule."""
-        decide(self.roadmap.candidate_edges(new, self.options.k))
+        decide(self.roadmap.candidate_edges(new, self.params.k))
         self.bridge(decide)
 
     def bridge(self, decide: EdgeRule) -> int:
@@ -177,7 +166,7 @@ class QueryRoadmap:
         roadmap, before = self.roadmap, len(self.roadmap.edges)
         for end in (START, GOAL):
             if not roadmap.component(START)[GOAL]:
-                decide(roadmap.bridge_edges(end, self.options.k))
+                decide(roadmap.bridge_edges(end, self.params.k))
         return len(roadmap.edges) - before
 
     def add_decided(
@@ -202,7 +191,7 @@ class QueryRoadmap:
         with self.timed("query_s", "verify_checks"):
             path = self.verified_path()
         bridges = 0
-        while path is None and bridges < self.options.rebridge:  # still apart: the next closest pairs
+        while path is None and bridges < self.params.rebridge:  # still apart: the next closest pairs
             bridges += 1
             self.stats["rebridges"] += 1
             with self.timed("connection_s", "edge_checks"):
@@ -236,7 +225,7 @@ class QueryRoadmap:
     def failed_edges(self, path: np.ndarray) -> np.ndarray:
         """Indices of the edges of ``path`` that fail exactly at the first verification resolution that fails any
         (empty: all pass at both); each passed edge remembers it."""
-        roadmap, options = self.roadmap, self.options
+        roadmap = self.roadmap
         steps = roadmap.edge_index(path)
         for resolution in self.verify_resolutions:
             unsure = steps[roadmap.edge_checked_at[steps] > resolution]
@@ -248,7 +237,9 @@ class QueryRoadmap:
                 if refuted.any():
                     return unsure[refuted]
             if self.exact.certificates_pay:
-                ok = certify_edges(self.exact, Q0, Q1, resolution, spacing=self.resolution * options.certify_spacing)
+                ok = certify_edges(
+                    self.exact, Q0, Q1, resolution, spacing=self.resolution * self.params.certify_spacing
+                )
             else:
                 ok = check_edges(self.exact, Q0, Q1, resolution)
             roadmap.edge_checked_at[unsure[ok]] = resolution  # remembered across repairs
@@ -268,8 +259,9 @@ class QueryRoadmap:
         if len(edges):
             self.roadmap.remove_edges(np.asarray(edges, dtype=int))
 
-    def result(self, path: np.ndarray | None) -> PlanResult:
-        """The query's answer: the path's configurations (if any), the final stats and roadmap."""
+    def result(self, path: np.ndarray | None, planner: str) -> PlanResult:
+        """The query's answer by ``planner`` (its name): the path's configurations (if any), the final stats and
+        roadmap."""
         exact, predicted = np.subtract(self.counts(), self.counts_at_start)
         stats = dict(
             self.stats,
@@ -282,12 +274,4 @@ class QueryRoadmap:
             total_s=time.perf_counter() - self.began,
         )
         path_q = self.roadmap.nodes[path] if path is not None else np.zeros((0, self.exact.robot.dof))
-        return PlanResult(path is not None, path_q, stats, self.roadmap)
-
-
-def _single(robot, q, name: str) -> np.ndarray:
-    """``q`` as a ``(1, dof)`` configuration of ``robot``, or a clear error naming ``name``."""
-    q = np.asarray(q, dtype=float)
-    if q.shape != (robot.dof,):
-        raise ValueError(f"{name} must have shape ({robot.dof},) for robot {robot.name!r}, got {q.shape}")
-    return robot.check_configs(q, name)
+        return PlanResult(path is not None, path_q, stats, planner, self.roadmap)

@@ -13,10 +13,14 @@ small call. An extension that meets an obstacle adds nothing (the tree is *trapp
 Moll, Kavraki 2012) asks its checker one configuration a call; here a call holds a few tens, since a call's fixed
 cost outweighs many configurations' (``docs/benchmarks.md``, "Against OMPL").
 
-Every edge of a path was checked at ``resolution`` as it grew; the path is then verified exactly at
-``resolution / verify_refinement`` with clearance certificates (``local_planner.certify_edges``: the answer of
+Every edge of a path was checked at ``resolution`` as it grew; the path is then verified exactly at the problem's
+``fine_resolution`` (10x finer) with clearance certificates (``local_planner.certify_edges``: the answer of
 checking every point). An edge that fails there is cut from its tree, with the branch beyond it, and the search goes
 on; so a returned path is valid at both resolutions.
+
+:func:`rrt_connect` is the planner as one function of a :class:`~toolkit.planning.planner.Problem`;
+:class:`RRTConnect` offers it by name (``rrt-connect``: ``toolkit plan --planner rrt-connect``). Its targets are
+uniform configurations, whatever the problem's sampler, and it plans without prediction.
 """
 
 from __future__ import annotations
@@ -26,34 +30,28 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from toolkit.geometry.collision import CollisionChecker
-from toolkit.planning.local_planner import certify_edges, default_resolution
+from toolkit.planning.local_planner import certify_edges
+from toolkit.planning.planner import Planner, PlanResult, Problem
 
 SAMPLES = 64  # random configurations drawn at a time
 
 
 @dataclass(frozen=True)
-class RRTConnectOptions:
-    """RRT-Connect's settings; ``range`` in resolutions, as the edges' length is in checks."""
+class RRTConnectParams:
+    """RRT-Connect's settings; ``range`` in resolutions, as an edge's length is in checks."""
 
     range: float = 64.0  # an extension moves no robot point farther than resolution * this
     coarse: int = 8  # an extension's first call checks every coarse-th point of its grid and its end
-    resolution: float | None = None  # local planner step bound; None: default_resolution(robot)
-    verify_refinement: int = 10  # the returned path's edges are verified exactly at resolution / this
     certify_spacing: float = 8.0  # verification: intervals of motion resolution * this first (certify_edges)
     max_iterations: int = 5_000  # samples drawn before reporting failure
 
     def __post_init__(self):
         for name in ("range", "certify_spacing"):
             if not (np.isfinite(getattr(self, name)) and getattr(self, name) > 0):
-                raise ValueError(f"RRTConnectOptions.{name} must be positive and finite, got {getattr(self, name)!r}")
-        for name in ("coarse", "verify_refinement", "max_iterations"):
+                raise ValueError(f"RRTConnectParams.{name} must be positive and finite, got {getattr(self, name)!r}")
+        for name in ("coarse", "max_iterations"):
             if not (int(getattr(self, name)) == getattr(self, name) and getattr(self, name) >= 1):
-                raise ValueError(f"RRTConnectOptions.{name} must be a positive integer, got {getattr(self, name)!r}")
-        if self.resolution is not None and not (np.isfinite(self.resolution) and self.resolution > 0):
-            raise ValueError(
-                f"RRTConnectOptions.resolution must be positive and finite, or None, got {self.resolution!r}"
-            )
+                raise ValueError(f"RRTConnectParams.{name} must be a positive integer, got {getattr(self, name)!r}")
 
 
 class Tree:
@@ -92,26 +90,15 @@ class Tree:
             self.cut[: self.n] = spread
 
 
-@dataclass
-class RRTConnectResult:
-    """``success``; ``path (P, dof)`` (empty on failure); ``stats`` (counts, seconds); the two ``trees``
-    (start's, goal's)."""
-
-    success: bool
-    path: np.ndarray
-    stats: dict
-    trees: tuple[Tree, Tree]
-
-
-def rrt_connect(
-    exact: CollisionChecker, start, goal, *, rng: np.random.Generator, options: RRTConnectOptions | None = None
-) -> RRTConnectResult:
-    """One query ``start -> goal`` (``(dof,)`` each, valid) with RRT-Connect, ``exact`` deciding validity."""
-    options = RRTConnectOptions() if options is None else options
-    robot, began, checked = exact.robot, time.perf_counter(), exact.n_checked
-    resolution = default_resolution(robot) if options.resolution is None else float(options.resolution)
-    reach = resolution * options.range
-    ends = robot.check_configs(np.stack([np.asarray(start, float), np.asarray(goal, float)]), "start/goal")
+def rrt_connect(problem: Problem, rng: np.random.Generator, params: RRTConnectParams | None = None) -> PlanResult:
+    """One query ``problem.start -> problem.goal`` with RRT-Connect, ``problem.exact`` deciding validity; the
+    result's ``roadmap`` is the two trees (the start's, the goal's)."""
+    params = RRTConnectParams() if params is None else params
+    if problem.predicts:
+        raise ValueError("RRT-Connect plans without prediction: give it no learned checker")
+    exact, robot, resolution = problem.exact, problem.robot, problem.resolution
+    began, checked, reach = time.perf_counter(), exact.n_checked, resolution * params.range
+    ends = np.stack([problem.start, problem.goal])  # (2, dof)
     for name, ok, q in zip(("start", "goal"), exact.are_valid(ends), ends):
         if not ok:
             raise ValueError(f"{name} configuration {np.round(q, 4).tolist()} is in collision or out of bounds")
@@ -135,12 +122,22 @@ def rrt_connect(
             step, length = step * (reach / length), reach
         n = max(int(np.ceil(length / resolution)), 1)  # local_planner.step_counts
         k = np.arange(1, n + 1)  # the grid's points, the end (k = n) included
-        for part in (k[(k % options.coarse == 0) | (k == n)], k[(k % options.coarse != 0) & (k != n)]):
+        for part in (k[(k % params.coarse == 0) | (k == n)], k[(k % params.coarse != 0) & (k != n)]):
             if len(part) and not exact.are_valid(robot.wrap(q0 + (part / n)[:, None] * step)).all():
                 return -1, False
         return tree.add(target if reached else robot.wrap(q0 + step), near), reached
 
-    for iteration in range(options.max_iterations):
+    def result(path: np.ndarray | None) -> PlanResult:
+        stats.update(
+            nodes=trees[0].n + trees[1].n,
+            exact_checks=exact.n_checked - checked,
+            resolution=resolution,
+            total_s=time.perf_counter() - began,
+        )
+        found = path is not None
+        return PlanResult(found, path if found else np.zeros((0, robot.dof)), stats, RRTConnect.name, trees)
+
+    for iteration in range(params.max_iterations):
         stats["iterations"] = iteration + 1
         if iteration % SAMPLES == 0:
             samples = robot.sample(rng, SAMPLES)  # (SAMPLES, dof) drawn a block at a time
@@ -157,32 +154,26 @@ def rrt_connect(
         from_start, to_goal = trees[0].branch(a)[::-1], trees[1].branch(b)  # node indices root -> a, b -> root
         path = np.concatenate([trees[0].nodes[from_start], trees[1].nodes[to_goal[1:]]])  # (P, dof)
         before = exact.n_checked
-        ok = certify_edges(
-            exact,
-            path[:-1],
-            path[1:],
-            resolution / options.verify_refinement,
-            spacing=resolution * options.certify_spacing,
-        )
+        spacing = resolution * params.certify_spacing
+        ok = certify_edges(exact, path[:-1], path[1:], problem.fine_resolution, spacing=spacing)
         stats["verify_checks"] += exact.n_checked - before
         if ok.all():
-            return RRTConnectResult(True, path, _final(stats, trees, exact, checked, began, resolution), trees)
+            return result(path)
         for edge in np.flatnonzero(~ok):  # cut each failed edge's end away from its root, and the branch beyond
             stats["cuts"] += 1
             if edge + 1 < len(from_start):
                 trees[0].cut_below(from_start[edge + 1])
             else:
                 trees[1].cut_below(to_goal[edge + 1 - len(from_start)])
-    return RRTConnectResult(
-        False, np.zeros((0, robot.dof)), _final(stats, trees, exact, checked, began, resolution), trees
-    )
+    return result(None)
 
 
-def _final(stats: dict, trees, exact: CollisionChecker, checked: int, began: float, resolution: float) -> dict:
-    return dict(
-        stats,
-        nodes=trees[0].n + trees[1].n,
-        resolution=resolution,
-        exact_checks=exact.n_checked - checked,
-        total_s=time.perf_counter() - began,
-    )
+class RRTConnect(Planner):
+    """:func:`rrt_connect` as a planner offered by name (``toolkit.planning.prm.get("rrt-connect")``)."""
+
+    name = "rrt-connect"
+    Params = RRTConnectParams
+    params: RRTConnectParams
+
+    def solve(self, problem: Problem, rng: np.random.Generator) -> PlanResult:
+        return rrt_connect(problem, rng, self.params)

@@ -15,10 +15,9 @@ invalid colours, §III; the panel says which in words). With a learned model (``
 from ``toolkit train``) a wireframe around them shows its predicted probability of validity and a
 label marks disagreements; samples are colored by exact validity and shaped by kind (circles valid,
 diamonds in collision, sparkles where the model is wrong). Planning runs the default
-planner, the lazy PRM of :func:`toolkit.planning.prm.plan`; with a model, the model decides samples
-and the planner is the one the experiments pair with its preset
-(:func:`toolkit.experiments.queries.default_options`: the paper's Algorithm 1, §III-B, for the
-``paper`` preset). For a notebook, :meth:`Viewer.iframe` and :func:`embed` give a static snapshot and
+planner, the lazy PRM (``toolkit.planning.prm.DEFAULT``), on a query built by
+:func:`toolkit.experiments.problems.build`; with a model, the model decides samples and the
+planner stays the same. For a notebook, :meth:`Viewer.iframe` and :func:`embed` give a static snapshot and
 :meth:`Viewer.animation_iframe` the robot moving along the planned path, each a self-contained
 page that needs no server.
 

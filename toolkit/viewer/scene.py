@@ -3,9 +3,9 @@
 The scene answers the paper's §III in colors (:mod:`toolkit.plots.palette`) and words: link boxes take the valid or
 the invalid colour by the exact checker (the panel says which); a learned model's (``checkpoint=`` or ``predictor=``)
 wireframe shows P(valid) (cividis); samples are shaped by kind (:data:`toolkit.viewer.drawing.SAMPLE_SHAPES`).
-:meth:`Viewer.plan` runs the default planner, the lazy PRM (:func:`toolkit.planning.prm.plan`); with a model loaded,
-the model decides samples and the planner is the one its preset is paired with
-(:func:`toolkit.experiments.queries.default_options`: Algorithm 1 for ``paper``).
+:meth:`Viewer.plan` runs the planner named (default: ``toolkit.planning.prm.DEFAULT``, the lazy PRM) on a query
+built by :func:`toolkit.experiments.problems.build`; with a model loaded, the model decides samples, the planner
+the same.
 
 The viewer knows nothing of a GUI. It tells *listeners* what happened (:data:`EVENTS`, :meth:`Viewer.subscribe`);
 the panel (:mod:`toolkit.viewer.panel`) is one listener, a script or a test can be another, and any of them changes
@@ -24,7 +24,7 @@ import numpy as np
 import viser
 
 from toolkit import scenarios
-from toolkit.experiments import queries
+from toolkit.experiments import problems, query_sets
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.geometry.robots import BASES
 from toolkit.geometry.workspace import Workspace
@@ -240,17 +240,15 @@ class Viewer:
         self.show_samples(Q, at=at)
         return Q
 
-    def plan(self, sampler: str = "BS", *, seed: int = 0) -> prm.PlanResult:
-        """Solve a paper-style query (§IV-A: valid start and goal far apart, from ``seed``) with PRM and show it.
-
-        Without a model this is the best exact planner (the lazy PRM); with one, the planner its recipe
-        is paired with (:func:`toolkit.experiments.queries.default_options`: Algorithm 1 for ``paper``). The
-        returned path is verified exactly either way. ``sampler``: any name :meth:`sample` takes but ``'raw'``.
-        """
+    def plan(self, sampler: str = "BS", *, seed: int = 0, planner: str | None = None) -> prm.PlanResult:
+        """Solve a paper-style query (§IV-A: valid start and goal far apart, from ``seed``) with ``planner`` (a name;
+        None: ``toolkit.planning.prm.DEFAULT``), a loaded model deciding samples, and show it (verified exactly).
+        ``sampler``: any name :meth:`sample` takes but ``'raw'``."""
         rng = np.random.default_rng(seed)
-        start, goal = queries.query_pairs(self.scenario, self.workspace, 1, rng)[0]
-        options = queries.default_options(self.scenario, self.model)
-        result = prm.plan(self.exact, start, goal, sampler=sampler, checker=self.model, options=options, rng=rng)
+        query = query_sets.Query(0, self.workspace, *query_sets.query_pairs(self.scenario, self.workspace, 1, rng)[0])
+        result = problems.build(
+            self.scenario, query, sampler=sampler, planner=planner, checker=self.model, exact=self.exact
+        ).solve(rng)
         self.show_plan(result)
         return result
 
