@@ -32,6 +32,7 @@ import numpy as np
 
 from toolkit.planning.local_planner import certify_edges
 from toolkit.planning.planner import Planner, PlanResult, Problem
+from toolkit.planning.roadmap import Roadmap
 
 SAMPLES = 64  # random configurations drawn at a time
 
@@ -92,7 +93,7 @@ class Tree:
 
 def rrt_connect(problem: Problem, rng: np.random.Generator, params: RRTConnectParams | None = None) -> PlanResult:
     """One query ``problem.start -> problem.goal`` with RRT-Connect, ``problem.exact`` deciding validity; the
-    result's ``roadmap`` is the two trees (the start's, the goal's)."""
+    result's ``roadmap`` holds the two trees (:func:`as_roadmap`)."""
     params = RRTConnectParams() if params is None else params
     if problem.predicts:
         raise ValueError("RRT-Connect plans without prediction: give it no learned checker")
@@ -130,12 +131,14 @@ def rrt_connect(problem: Problem, rng: np.random.Generator, params: RRTConnectPa
     def result(path: np.ndarray | None) -> PlanResult:
         stats.update(
             nodes=trees[0].n + trees[1].n,
+            predicted_checks=0,
             exact_checks=exact.n_checked - checked,
             resolution=resolution,
             total_s=time.perf_counter() - began,
         )
         found = path is not None
-        return PlanResult(found, path if found else np.zeros((0, robot.dof)), stats, RRTConnect.name, trees)
+        roadmap = as_roadmap(robot, trees, resolution)
+        return PlanResult(found, path if found else np.zeros((0, robot.dof)), stats, RRTConnect.name, roadmap)
 
     for iteration in range(params.max_iterations):
         stats["iterations"] = iteration + 1
@@ -166,6 +169,19 @@ def rrt_connect(problem: Problem, rng: np.random.Generator, params: RRTConnectPa
             else:
                 trees[1].cut_below(to_goal[edge + 1 - len(from_start)])
     return result(None)
+
+
+def as_roadmap(robot, trees: tuple[Tree, Tree], resolution: float) -> Roadmap:
+    """The ``trees`` as one roadmap, to draw or inspect: the start tree's nodes, then the goal tree's, and an edge
+    from each node to its parent, checked at ``resolution`` (none for a node of a cut branch)."""
+    roadmap = Roadmap(robot)
+    for tree in trees:
+        offset = len(roadmap.nodes)
+        roadmap.add_nodes(tree.nodes[: tree.n], verified=True)
+        child = np.flatnonzero((tree.parent[: tree.n] >= 0) & ~tree.cut[: tree.n])  # (E,)
+        pairs = np.sort(np.stack([child, tree.parent[child]], axis=1), axis=1) + offset  # (E, 2) i < j
+        roadmap.add_edges(pairs, roadmap.distance(*roadmap.nodes[pairs.T]), checked_at=resolution)
+    return roadmap
 
 
 class RRTConnect(Planner):
