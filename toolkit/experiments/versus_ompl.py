@@ -188,12 +188,13 @@ def at_batched_rate(exact: CollisionChecker, solved: Solved, seconds: float, cpu
     ``callback_s`` plus one call of ``exact`` on the configurations they ``asked`` (``batch_s``), and
     ``batched_cpu_s``, its ``cpu_s`` less the callbacks' share of it (``callback_s / seconds``) plus that
     call's CPU time; with ``callbacks`` (their number), ``callback_s`` and ``batch_s``."""
+    asked = np.zeros((0, exact.robot.dof)) if solved.asked is None else solved.asked  # (C, dof)
     began, cpu = time.perf_counter(), time.process_time()
-    exact.are_valid(solved.asked)
+    exact.are_valid(asked)
     batch_s, batch_cpu_s = time.perf_counter() - began, time.process_time() - cpu
     share = solved.callback_s / seconds if seconds > 0 else 0.0
     return {
-        "callbacks": len(solved.asked),
+        "callbacks": len(asked),
         "callback_s": solved.callback_s,
         "batch_s": batch_s,
         "batched_s": seconds - solved.callback_s + batch_s,

@@ -104,7 +104,7 @@ def rrt_connect(problem: Problem, rng: np.random.Generator, params: RRTConnectPa
         if not ok:
             raise ValueError(f"{name} configuration {np.round(q, 4).tolist()} is in collision or out of bounds")
     trees = (Tree(ends[0]), Tree(ends[1]))
-    stats = {"iterations": 0, "extensions": 0, "cuts": 0, "verify_checks": 0}
+    stats: dict[str, float] = {"iterations": 0, "extensions": 0, "cuts": 0, "verify_checks": 0}
 
     def extend(tree: Tree, target: np.ndarray, near: int | None = None) -> tuple[int, bool]:
         """Extend ``tree`` from node ``near`` (None: its node nearest ``target``) towards ``target`` by at most
@@ -136,9 +136,10 @@ def rrt_connect(problem: Problem, rng: np.random.Generator, params: RRTConnectPa
             resolution=resolution,
             total_s=time.perf_counter() - began,
         )
-        found = path is not None
         roadmap = as_roadmap(robot, trees, resolution)
-        return PlanResult(found, path if found else np.zeros((0, robot.dof)), stats, RRTConnect.name, roadmap)
+        if path is None:
+            return PlanResult(False, np.zeros((0, robot.dof)), stats, RRTConnect.name, roadmap)
+        return PlanResult(True, path, stats, RRTConnect.name, roadmap)
 
     for iteration in range(params.max_iterations):
         stats["iterations"] = iteration + 1
