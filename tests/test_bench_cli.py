@@ -427,3 +427,10 @@ def test_bench_vs_ompl_says_how_to_install_ompl(monkeypatch, capsys):
 def test_bench_needs_a_scenario_but_with_crossover(capsys):
     assert cli.main(["bench", "--json"]) == 2
     assert "--scenario is needed (but with --crossover)" in capsys.readouterr().err
+
+
+def test_bench_vs_ompl_names_a_bad_seed(capsys):
+    with pytest.raises(SystemExit) as exit_:
+        cli.main(["bench", "--vs-ompl", "--scenario", "2ds", "--seeds", "7300,x"])
+    assert exit_.value.code == 2
+    assert "argument --seeds: must be a whole number, 0..4294967295; got 'x'" in capsys.readouterr().err

@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import argparse
 
-from toolkit.cli.arguments import SCENARIO_HELP, int_in, planner, preset, sampler_list, scenario, seed
+from toolkit.cli.arguments import SCENARIO_HELP, SEEDS, int_in, planner, preset, sampler_list, scenario, seed
 from toolkit.planning import sampling
 
 CROSSOVER_SCENARIO = "3dc9"  # --crossover without --scenario: the paper's dearest clutter check
@@ -79,11 +79,11 @@ def bench_versus_ompl_options(cmd: argparse.ArgumentParser) -> None:
     )
     cmd.add_argument(
         "--seeds",
-        type=lambda text: tuple(int(seed) for seed in text.split(",")),
+        type=lambda text: tuple(int_in(0, SEEDS - 1)(seed) for seed in text.split(",")),
         default=(7300, 9300),
         metavar="LIST",
-        help="with --vs-ompl: comma-separated seeds of the query sets, ones the planners were not tuned on "
-        "(not 0 or 7100; default 7300,9300)",
+        help="with --vs-ompl: comma-separated seeds of the query sets (--seed does not choose them), ones the "
+        "planners were not tuned on (not 0 or 7100; default 7300,9300)",
     )
     cmd.add_argument(
         "--ompl-planners",
