@@ -18,7 +18,7 @@ from toolkit import cli, scenarios
 from toolkit.experiments import bench, queries, versus_ompl
 from toolkit.learning import checkpoints, presets
 from toolkit.planning import sampling
-from toolkit.planning.options import LazyPRMOptions, PRMOptions
+from toolkit.planning.options import LazyParams, PaperParams
 
 THROUGHPUT_KEYS = {"exact_cfg_per_s", "fcl_cfg_per_s", "learned_cfg_per_s", "ratio", "exact_over_fcl"}
 
@@ -50,13 +50,14 @@ def test_throughput_times_the_compiled_checker_beside_fcl_in_3d():
     assert result["exact_over_fcl"] == pytest.approx(result["exact_cfg_per_s"] / result["fcl_cfg_per_s"])
 
 
-def test_without_prediction_is_the_best_exact_planner_whatever_the_models_recipe(monkeypatch):
-    """`bench --checkpoint`: "without" plans with the lazy PRM (and the default exact checker), "with" with the
-    planner paired with the recipe (the paper preset's: Algorithm 1); an --option reaches both where it applies."""
+def test_with_and_without_prediction_plan_with_one_planner_whatever_the_models_recipe(monkeypatch):
+    """`bench --checkpoint`: both modes run one planner (the lazy PRM unless --planner names another) with the same
+    parameters and the default exact checker; only the checker that decides samples differs; an --option reaches
+    the planner, and one it does not read is refused."""
     seen = {}
 
-    def fake_run(scenario, query_set, sampler, factories, *, options, seed):
-        seen.update(factories, run_options=options)
+    def fake_run(scenario, query_set, sampler, factories, *, planner, seed):
+        seen.update(factories, planner=planner)
         return {
             mode: (
                 [],
@@ -74,24 +75,19 @@ def test_without_prediction_is_the_best_exact_planner_whatever_the_models_recipe
         }
 
     monkeypatch.setattr(queries, "run_interleaved", fake_run)
-    models = SimpleNamespace(preset=presets.get("paper"))
+    models = SimpleNamespace(preset=presets.get("paper"))  # a paper model: still the lazy PRM, both ways
     overrides = {"max_rounds": 3, "screen_spacing": 4.0}  # the second: the lazy PRM's alone
     row = bench.planning_ratios(
         scenarios.get("2ds"), models, n_workspaces=1, per_workspace=1, samplers=("BS",), overrides=overrides
     )
-    assert row["BS"]["total_ratio"] == 1.0
-    assert seen["without"] is None and type(seen["run_options"]) is LazyPRMOptions  # the best exact planner
-    assert seen["run_options"].screen_spacing == 4.0
-    with_ = seen["with"]
-    assert isinstance(with_, queries.Mode) and type(with_.options) is PRMOptions  # Algorithm 1
-    assert with_.exact is queries.exact_checker  # the default exact checker checks the edges
-    assert seen["run_options"].max_rounds == with_.options.max_rounds == 3
+    assert row["BS"]["total_ratio"] == 1.0 and row["BS"]["planner"] == "lazy"
+    assert seen["without"] is None and callable(seen["with"])  # the modes differ in the checker alone
+    assert seen["planner"].name == "lazy" and seen["planner"].params == LazyParams(n_samples=200, **overrides)
     one_planner = {"scenario": scenarios.get("2ds"), "models": models, "samplers": ("BS",)}
-    bench.planning_ratios(**one_planner, options_class=LazyPRMOptions, overrides={"screen_spacing": 4.0})  # --planner
-    assert type(seen["run_options"]) is type(seen["with"].options) is LazyPRMOptions
-    assert seen["with"].options.screen_spacing == 4.0 and seen["with"].options.auxiliary == "exact"  # paper's pairing
-    with pytest.raises(ValueError, match=r"unknown planner option\(s\) \['screen_spacing'\]; the planners read"):
-        bench.planning_ratios(**one_planner, options_class=PRMOptions, overrides={"screen_spacing": 4.0})
+    row = bench.planning_ratios(**one_planner, planner="paper", overrides={"max_rounds": 3})  # --planner paper
+    assert row["BS"]["planner"] == "paper" and seen["planner"].params == PaperParams(n_samples=200, max_rounds=3)
+    with pytest.raises(ValueError, match=r"unknown planner option\(s\) \['screen_spacing'\]; PaperParams has"):
+        bench.planning_ratios(**one_planner, planner="paper", overrides={"screen_spacing": 4.0})
 
 
 def test_bench_at_a_sampler_sized_batch(capsys):
@@ -175,7 +171,7 @@ def test_bench_names_a_bad_planner_option_or_sampler(capsys, checkpoint_2ds):
     assert cli.main(args + ["--option", "rebrige=0"]) == 2
     assert "unknown planner option(s) ['rebrige']" in capsys.readouterr().err
     assert cli.main(args + ["--option", "rebridge=-1"]) == 2
-    assert "PRMOptions.rebridge must be a non-negative integer" in capsys.readouterr().err
+    assert "LazyParams.rebridge must be a non-negative integer" in capsys.readouterr().err
     for bad, message in (
         ("--option=rebridge", "expected NAME=VALUE"),
         ("--samplers=BS,RRT", "unknown sampler(s) ['RRT']"),

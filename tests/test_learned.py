@@ -8,12 +8,12 @@ import pytest
 import torch
 
 from toolkit import cli, scenarios
-from toolkit.experiments import pipeline, queries
+from toolkit.experiments import pipeline, problems, queries
 from toolkit.experiments.config import RunConfig
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.learning import checkpoints, presets
 from toolkit.learning.learned import LearnedChecker, load_checker
-from toolkit.planning.options import LazyPRMOptions, PRMOptions
+from toolkit.planning.options import LazyParams
 
 SCENARIO = scenarios.get("2ds")
 
@@ -127,20 +127,22 @@ def test_weights_with_other_entries_are_refused(models, workspace, tmp_path):
         load_checker(tmp_path, workspace)
 
 
-@pytest.mark.parametrize(
-    "preset, options_class, screened, auxiliary",
-    [("paper", PRMOptions, None, "exact"), ("strong", LazyPRMOptions, True, "confirmed")],
-)
-def test_planning_with_a_learned_checker_uses_the_planner_paired_with_its_preset(
-    models, workspace, preset, options_class, screened, auxiliary
-):
+@pytest.mark.parametrize("preset", ["paper", "strong"])
+def test_a_learned_checker_changes_the_checker_and_never_the_planner(models, workspace, preset):
+    """Issue 48: whatever the model's recipe, a query planned with its learned checker runs the planner the caller
+    names (none: the default, the lazy PRM) with the same parameters as without it; the problem predicts because
+    the checker is not exact."""
     checker = LearnedChecker(workspace, dataclasses.replace(models, preset=presets.get(preset)))
-    options = queries.default_options(SCENARIO, checker)
-    assert type(options) is options_class and options.auxiliary == auxiliary
-    assert getattr(options, "screen_edges", None) is screened  # Algorithm 1 has no learned edge screening
-    assert queries.default_options(SCENARIO, checker, auxiliary="predicted").auxiliary == "predicted"
-    without = queries.default_options(SCENARIO)  # without a model: the best exact planner, its own defaults
-    assert type(without) is LazyPRMOptions and without.auxiliary == LazyPRMOptions().auxiliary
+    assert not checker.is_exact
+    with_ = problems.build(SCENARIO, checker=checker)
+    without = problems.build(SCENARIO)
+    assert with_.problem.predicts and not without.problem.predicts
+    assert with_.planner.name == without.planner.name == "lazy" and with_.planner.params == without.planner.params
+    assert (
+        queries.default_options(SCENARIO, checker)
+        == queries.default_options(SCENARIO)
+        == LazyParams(n_samples=SCENARIO.plan_samples)
+    )
 
 
 def test_a_predictor_is_built_from_a_preset_in_one_place_and_its_initialization_changes_no_loaded_result(

@@ -13,7 +13,8 @@ from toolkit.experiments.config import BASELINES, RunConfig
 from toolkit.experiments.stages import Stages
 from toolkit.geometry.collision import FCLChecker, exact_checker
 from toolkit.learning import presets
-from toolkit.planning.options import LazyPRMOptions, PRMOptions
+from toolkit.planning.options import PaperParams
+from toolkit.planning.paper_prm import PRM
 from toolkit.planning.sampling import PAPER_SAMPLERS
 
 RATE_KEYS = ("success_rate", "path_valid_rate")
@@ -161,19 +162,19 @@ def test_planning_with_prediction_follows_the_presets_edge_rule(preset, screened
     (lazy) with the default exact checker; the paper preset's Table 3 baseline, Algorithm 1, in the same turns."""
     calls = []
 
-    def fake_run(scenario, query_set, sampler, modes, options=None, seed=0):
+    def fake_run(scenario, query_set, sampler, modes, seed=0):
         with_, without = modes["with"], modes["without"]
-        assert with_.options.auxiliary == ("confirmed" if screened else "exact")
+        assert with_.planner.params.auxiliary == ("confirmed" if screened else "exact")
         assert with_.checker is not None and without.checker is None
-        assert type(without.options) is LazyPRMOptions and without.exact is exact_checker
-        paired = {"paper": PRMOptions, "strong": LazyPRMOptions}[preset]
-        assert type(with_.options) is paired and with_.exact is exact_checker
+        assert without.planner.name == "lazy" and without.exact is exact_checker
+        assert with_.planner.name == {"paper": "paper", "strong": "lazy"}[preset] and with_.exact is exact_checker
         baseline = {"paper": ["baseline"], "strong": []}[preset]
         assert list(modes) == ["without", "with", *baseline]  # in turns, one run
-        if baseline:
-            assert type(modes["baseline"].options) is PRMOptions and modes["baseline"].checker is None
-            assert modes["baseline"].exact is exact_checker  # Algorithm 1 with the compiled checker
-        calls.append((sampler, getattr(with_.options, "screen_edges", False)))
+        if baseline:  # Table 3: the same planner as "with", Algorithm 1, with the compiled checker
+            assert modes["baseline"].planner.name == "paper" and modes["baseline"].checker is None
+            assert modes["baseline"].planner.params == with_.planner.params
+            assert modes["baseline"].exact is exact_checker
+        calls.append((sampler, getattr(with_.planner.params, "screen_edges", False)))
         return {mode: ([], {"sampling_s": 1.0, "total_s": 1.0}) for mode in modes}
 
     monkeypatch.setattr(experiments.queries, "run_interleaved", fake_run)
@@ -200,10 +201,10 @@ def test_table_3s_baseline_is_the_recipes_planner_unless_chosen(preset, chosen, 
     config = RunConfig.create("2ds", preset, quick=True, progress=False, baseline=chosen)
     assert config.baseline == baseline and config.settings()["baseline"] == baseline
     modes = experiments.planning_modes(config, SimpleNamespace(preset=config.preset))
-    assert type(modes["without"].options) is LazyPRMOptions  # always the best exact planner
+    assert modes["without"].planner.name == "lazy"  # always the best exact planner
     assert ("baseline" in modes) == (exact is not None)
     if exact is not None:
-        assert modes["baseline"].exact is exact and type(modes["baseline"].options) is PRMOptions
+        assert modes["baseline"].exact is exact and modes["baseline"].planner.name == "paper"
     with pytest.raises(ValueError, match="unknown baseline 'eager'; choose one of best, paper, paper-fcl"):
         RunConfig.create("2ds", preset, baseline="eager")
 
@@ -255,10 +256,11 @@ def test_a_planning_mode_brings_its_own_exact_checker_and_options():
         made.append(FCLChecker(ws, robot))
         return made[-1]
 
-    eager = PRMOptions(n_samples=scenario.plan_samples, max_rounds=1)  # Algorithm 1, one round
+    eager = PRM(PaperParams(n_samples=scenario.plan_samples, max_rounds=1))  # Algorithm 1, one round
     runs = queries.run_interleaved(
-        scenario, query_set, "BS", {"best": None, "paper-fcl": queries.Mode(exact=fcl, options=eager)}
+        scenario, query_set, "BS", {"best": None, "paper-fcl": queries.Mode(exact=fcl, planner=eager)}
     )
     (record,) = runs["paper-fcl"][0]
+    assert record["planner"] == runs["paper-fcl"][1]["planner"] == "paper" and runs["best"][1]["planner"] == "lazy"
     assert len(made) == 2 and made[1].n_checked > 0 and record["rounds"] == 1  # the untimed warm-up's, the query's
     assert runs["best"][1]["success_rate"] == 1.0

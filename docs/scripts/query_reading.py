@@ -8,10 +8,10 @@ another checkout, run its copy of the script with ``PYTHONPATH=that/checkout``.
 Builds 3DC-7's first query (``make_queries(scenario, seed=0, n_workspaces=1)``), its
 default exact checker (``exact_checker``) and, for "with prediction", a learned checker
 of a quick ``strong`` model (trained here in a few seconds, in a temporary folder). Each
-way, it solves the query once to warm up, then once more with the BS sampler and the
-default planner settings (``default_options(scenario, checker)``) under
-``sys.setprofile``, and prints how many distinct functions ran, their source lines and
-their files; ``--list`` adds the functions, file by file.
+way, it solves the query once to warm up, then once more as ``toolkit plan --predict`` does
+(the BS sampler, the default planner: ``problems.build(scenario, query, checker=...)``, then
+``task.solve``) under ``sys.setprofile``, and prints how many distinct functions ran, their
+source lines and their files; ``--list`` adds the functions, file by file.
 
 What counts (the variant closest to the issue's figures, among those tried: with or
 without comprehensions, lambdas, dataclasses' generated methods, numba's kernels, the
@@ -25,11 +25,12 @@ checkers' set-up, decorators and docstrings in the lines):
 - its lines: ``inspect.getsourcelines``, decorators to last line, docstring, comments
   and blank lines inside included;
 - the checkers are built and warmed before: encoding the workspace and the compiled
-  checker's arrays are not part of the query; ``solve_query`` and ``default_options``
-  are.
+  checker's arrays are not part of the query; building the task (``problems.build``: the
+  planner, its parameters and the problem) and solving it are. (Before issue 48 the script
+  called ``default_options`` then ``solve_query``, what ``toolkit plan`` called then.)
 
 Which functions run depends on the query (repairs, bridges): other seeds move the count by a
-few. The figures, before and after the layout of issue #33, are in ``docs/design.md``.
+few. The figures, before and after the layouts of issues #33 and #48, are in ``docs/design.md``.
 """
 
 import argparse
@@ -39,9 +40,11 @@ import tempfile
 from collections import defaultdict
 from pathlib import Path
 
+import numpy as np
+
 import toolkit
 from toolkit import scenarios
-from toolkit.experiments import pipeline, queries
+from toolkit.experiments import pipeline, problems, queries
 from toolkit.experiments.config import RunConfig
 from toolkit.geometry.collision import exact_checker
 from toolkit.learning.learned import LearnedChecker
@@ -50,9 +53,9 @@ ROOT = Path(toolkit.__file__).resolve().parent
 
 
 def one_query(scenario, query, checker, exact):
-    """Solve ``query`` as the toolkit does: BS sampler, the default planner, ``checker``'s settings."""
-    options = queries.default_options(scenario, checker)
-    return queries.solve_query(scenario, query, "BS", checker=checker, options=options, seed=0, exact=exact)
+    """Solve ``query`` as ``toolkit plan`` does: BS sampler, the default planner, ``checker`` deciding samples."""
+    task = problems.build(scenario, query, sampler="BS", checker=checker, exact=exact)
+    return task.solve(np.random.default_rng(0))
 
 
 def compiled_kernels() -> set:

@@ -43,6 +43,10 @@ def cmd_bench(args: argparse.Namespace) -> int:
         return _bench_crossover(args)
     if args.scenario is None:
         raise ValueError("--scenario is needed (but with --crossover): one of the scenarios in `toolkit --help`")
+    if (args.option or args.planner) and not args.checkpoint:
+        raise ValueError(
+            "--planner and --option choose the planner that --checkpoint's runs plan with: add --checkpoint DIR"
+        )
     scenario = scenarios.get(args.scenario)
     if args.profile:
         from toolkit.experiments import profile

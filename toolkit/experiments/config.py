@@ -187,10 +187,10 @@ class RunConfig:
         return QUICK.queries.get(self.scenario.name, QUICK.default_queries)
 
     def planner_settings(self) -> dict:
-        """Planner options of this run (``toolkit.planning.options``): the paper's |S|, and fewer rounds and samples
-        when quick."""
+        """Changes to the planners' parameters in this run: none at full size (each planner's own, with the
+        scenario's |S|: :func:`toolkit.experiments.problems.make_planner`); fewer rounds and samples when quick."""
         if not self.quick:
-            return {"n_samples": self.scenario.plan_samples}
+            return {}
         return {
             "n_samples": QUICK.plan_samples.get(self.scenario.name, self.scenario.plan_samples),
             "max_rounds": QUICK.max_rounds,

@@ -39,6 +39,11 @@ class Pairing:
     planner: str = prm.DEFAULT
     params: Mapping[str, object] = field(default_factory=lambda: MappingProxyType({}))
 
+    @property
+    def options(self) -> type:
+        """The paired planner's parameters class (the name notebook 04 reads)."""
+        return prm.get(self.planner).Params
+
 
 PAIRINGS: dict[str, Pairing] = {  # preset name -> pairing
     "paper": Pairing("paper"),
@@ -54,9 +59,7 @@ def register(preset_name: str, pairing: Pairing, *, replace: bool = False) -> Pa
     return registry.bind(PAIRINGS, preset_name, pairing, kind="planner pairing", replace=replace)
 
 
-def pairing(preset: Preset | None) -> Pairing:
+def pairing(preset: Preset) -> Pairing:
     """The pairing of ``preset``: by its name, else by the recipe it was made from (``Preset.origin``: a copy of
-    ``strong`` with other sizes plans as ``strong`` does), else :data:`OWN_RECIPE`; None: :data:`OWN_RECIPE`."""
-    if preset is None:
-        return OWN_RECIPE
+    ``strong`` with other sizes plans as ``strong`` does), else :data:`OWN_RECIPE`."""
     return PAIRINGS.get(preset.name) or PAIRINGS.get(preset.origin, OWN_RECIPE)

@@ -31,7 +31,7 @@ from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.learning.presets import Preset
-from toolkit.planning import prm, sampling
+from toolkit.planning import prm
 from toolkit.planning.planner import Planner, PlanResult, Problem, replace_fields
 from toolkit.scenarios import Scenario
 
@@ -74,18 +74,18 @@ def build(
     the robot) that builds one; ``planner``: a name, or a planner already made; ``preset``: the recipe whose pairing
     names the planner when none is; ``changes``: to the planner's parameters."""
     scenario = scenarios.get(scenario) if isinstance(scenario, str) else scenario
-    query = query or make_queries(scenario, seed=seed, n_workspaces=1, per_workspace=1)[0]
-    workspace, robot = query.workspace, scenario.robot
-    exact = exact_checker if exact is None else exact
-    truth = exact if isinstance(exact, CollisionChecker) else exact(workspace, robot)
-    checker = checker if checker is None or isinstance(checker, CollisionChecker) else checker(workspace)
+    kept = [exact] if isinstance(exact, CollisionChecker) else []  # the query workspace's exact checker
+    factory = exact_checker if exact is None or isinstance(exact, CollisionChecker) else exact
+
+    def exact_of(workspace: Workspace, robot: BoxRobot) -> CollisionChecker:  # built once: it chooses the start and
+        kept[:] = kept or [factory(workspace, robot)]  # goal (make_queries), then checks the plan
+        return kept[0]
+
+    query = query or make_queries(scenario, seed=seed, n_workspaces=1, per_workspace=1, exact=exact_of)[0]
+    checker = checker if checker is None or isinstance(checker, CollisionChecker) else checker(query.workspace)
+    truth = exact_of(query.workspace, scenario.robot)
     problem = Problem.create(
-        truth,
-        query.start,
-        query.goal,
-        sampler=sampling.check_names([sampler])[0],
-        checker=checker,
-        resolution=scenario.plan_resolution,
+        truth, query.start, query.goal, sampler=sampler, checker=checker, resolution=scenario.plan_resolution
     )
     if planner is None or isinstance(planner, str):
         solver = make_planner(scenario, planner, preset=preset, **changes)
@@ -100,7 +100,7 @@ def make_planner(scenario: Scenario, name: str | None = None, *, preset: Preset 
     """The planner ``name`` (None: the one paired with ``preset``, :func:`toolkit.experiments.planners.pairing`;
     without a preset, ``toolkit.planning.prm.DEFAULT``) with the scenario's |S| (when it reads ``n_samples``),
     the pairing's parameters when it is the paired planner, then ``changes`` (one it does not read is an error)."""
-    paired = planners.pairing(preset)
+    paired = planners.OWN_RECIPE if preset is None else planners.pairing(preset)
     cls = prm.get(name or paired.planner)
     defaults = cls.Params()
     settings: dict[str, object] = {"n_samples": scenario.plan_samples} if hasattr(defaults, "n_samples") else {}

@@ -3,8 +3,9 @@
 A planner's speed is the sum of many small steps; to make one faster, first measure which.
 :func:`profile` solves the first ``n`` queries of the paper's set (as ``toolkit bench --vs-ompl``
 does: the lazy PRM, sampler BS, one thread, query ``n`` drawing from ``default_rng([seed, n])``),
-each with a fresh exact checker, and times, per query, the methods of each stage (:data:`STAGES`)
-while it runs:
+each with a fresh exact checker, and times, per query, the methods of each stage
+(:data:`PROFILE_STAGES`) while it runs, in subclasses of the planner, its query and its roadmap
+made for the purpose (:meth:`StageClock.timed_planner`; no library class is changed):
 
 - ``set-up``: building the exact checker for the query's workspace (``exact_checker``);
 - ``sampling``: a round's samples, checked (``PRM.sample_round``);
@@ -25,43 +26,40 @@ query's time goes".
 from __future__ import annotations
 
 import time
-from collections.abc import Iterator
-from contextlib import contextmanager
 
 import numpy as np
 
 from toolkit.experiments import queries, versus_ompl
 from toolkit.experiments.problems import build, make_planner
-from toolkit.geometry.collision import exact_checker
+from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.planning import prm
-from toolkit.planning.paper_prm import PRM
-from toolkit.planning.prm import PLANNERS
+from toolkit.planning.planner import Planner
 from toolkit.planning.query_roadmap import QueryRoadmap
 from toolkit.planning.roadmap import Roadmap
 from toolkit.scenarios import Scenario
 
-STAGES: dict[str, list[tuple[type, str]]] = {  # stage -> the methods whose time is the stage's
-    "sampling": [(PRM, "sample_round")],
-    "neighbours": [(Roadmap, "candidate_edges"), (Roadmap, "bridge_edges")],
-    "edge checks": [(planner, "decide") for planner in set(PLANNERS.values()) if "decide" in vars(planner)],
-    "search": [(Roadmap, "shortest_path"), (Roadmap, "component")],
-    "verification": [(QueryRoadmap, "verified_path")],
-    "roadmap": [(Roadmap, name) for name in ("add_nodes", "add_edges", "reject", "remove_edges", "remove_nodes")],
+PLANNER_METHODS = {"sample_round": "sampling", "decide": "edge checks"}  # a roadmap planner's, by stage
+QUERY_METHODS = {"verified_path": "verification"}  # QueryRoadmap's
+ROADMAP_METHODS = {
+    "candidate_edges": "neighbours",
+    "bridge_edges": "neighbours",
+    "shortest_path": "search",
+    "component": "search",
+    **dict.fromkeys(("add_nodes", "add_edges", "reject", "remove_edges", "remove_nodes"), "roadmap"),
 }
+PROFILE_STAGES = ("sampling", "neighbours", "edge checks", "search", "verification", "roadmap")  # in this order
 CHECKER_METHODS = ("validity", "clearance_bounds")  # the exact checker's own work
 AROUND = "python around"  # what no stage's methods cover
 
 
 class StageClock:
-    """Exclusive seconds per stage and seconds inside the checker per stage, while :meth:`patched` is active."""
+    """Exclusive seconds per stage and seconds inside the checker per stage, for the planner and checker it times
+    (:meth:`timed_planner`, :meth:`time_checker`): subclasses and instances of its own, no library class changed."""
 
     def __init__(self):
         self.seconds: dict[str, float] = {}
         self.checker: dict[str, float] = {}
         self._stack: list[list] = [[AROUND, 0.0]]  # [stage, seconds of nested stages] per open call
-
-    def reset(self) -> None:
-        self.seconds, self.checker = {}, {}
 
     def _timed(self, stage: str | None, method):
         """``method`` timed into ``stage`` (None: the checker's time, into the enclosing stage)."""
@@ -86,24 +84,22 @@ class StageClock:
 
         return timed
 
-    @contextmanager
-    def patched(self, checker_class: type) -> Iterator[StageClock]:
-        """Every method of :data:`STAGES`, and ``checker_class``'s :data:`CHECKER_METHODS`, timed inside."""
-        targets: list[tuple[type, str, str | None]] = [
-            (owner, name, stage) for stage, methods in STAGES.items() for owner, name in methods
-        ]
-        targets += [(checker_class, name, None) for name in CHECKER_METHODS if hasattr(checker_class, name)]
-        originals = [(owner, name, vars(owner).get(name)) for owner, name, _ in targets]
-        for owner, name, stage in targets:
-            setattr(owner, name, self._timed(stage, getattr(owner, name)))
-        try:
-            yield self
-        finally:
-            for owner, name, original in originals:
-                if original is None:
-                    delattr(owner, name)  # it was inherited
-                else:
-                    setattr(owner, name, original)
+    def timed_class(self, cls: type, methods: dict[str, str], **attributes) -> type:
+        """A subclass of ``cls`` whose ``methods`` (name -> stage) are timed, with ``attributes`` set."""
+        timed = {name: self._timed(stage, getattr(cls, name)) for name, stage in methods.items() if hasattr(cls, name)}
+        return type(f"Timed{cls.__name__}", (cls,), {**timed, **attributes})
+
+    def timed_planner(self, planner: Planner) -> Planner:
+        """A copy of the roadmap ``planner`` (its parameters) whose stages are timed: its class, its query's and its
+        roadmap's, subclassed."""
+        roadmap = self.timed_class(Roadmap, ROADMAP_METHODS)
+        query = self.timed_class(QueryRoadmap, QUERY_METHODS, roadmap_class=roadmap)
+        return self.timed_class(type(planner), PLANNER_METHODS, query_class=query)(planner.params)
+
+    def time_checker(self, checker: CollisionChecker) -> None:
+        """Time this ``checker``'s own work (:data:`CHECKER_METHODS`, instance attributes: its class unchanged)."""
+        for name in CHECKER_METHODS:
+            setattr(checker, name, self._timed(None, getattr(checker, name)))
 
 
 def profile(scenario: Scenario, *, n_queries: int = 10, seed: int = 9100, sampler: str = "BS") -> dict:
@@ -118,12 +114,12 @@ def profile(scenario: Scenario, *, n_queries: int = 10, seed: int = 9100, sample
             began = time.perf_counter()
             exact = exact_checker(query.workspace, robot)
             setup = time.perf_counter() - began
-            task = build(scenario, query, sampler=sampler, planner=solver, exact=exact)
             clock = StageClock()
-            with clock.patched(type(exact)):
-                began = time.perf_counter()
-                result = task.solve(np.random.default_rng([seed, n]))
-                total = time.perf_counter() - began
+            clock.time_checker(exact)
+            task = build(scenario, query, sampler=sampler, planner=clock.timed_planner(solver), exact=exact)
+            began = time.perf_counter()
+            result = task.solve(np.random.default_rng([seed, n]))
+            total = time.perf_counter() - began
             stages = dict(clock.seconds)
             stages[AROUND] = total - sum(s for name, s in stages.items() if name != AROUND)
             records.append(
@@ -142,7 +138,7 @@ def summary(records: list[dict]) -> dict:
     """Medians over queries: ``query_ms`` (the plan call), ``setup_ms``, ``setup_over_query``, and per stage
     (set-up first) ``{"median_ms", "share", "checker_share"}``: its share of the summed time of all queries (set-up
     included) and the part of it spent inside the exact checker."""
-    names = ["set-up", *STAGES, AROUND]
+    names = ["set-up", *PROFILE_STAGES, AROUND]
     per_stage = {name: np.array([r["stages_ms"].get(name, 0.0) for r in records]) for name in names[1:]}
     per_stage["set-up"] = np.array([r["setup_ms"] for r in records])
     checker = {name: sum(r["checker_ms"].get(name, 0.0) for r in records) for name in names}

@@ -10,11 +10,13 @@ apart (base positions), so every query means travelling.
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass
 
 import numpy as np
 
-from toolkit.geometry.collision import exact_checker
+from toolkit.geometry.collision import CollisionChecker, exact_checker
+from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.scenarios import STREAMS, Scenario
 
@@ -33,11 +35,12 @@ class Query:
 
 
 def query_pairs(
-    scenario: Scenario, ws: Workspace, count: int, rng: np.random.Generator, *, min_separation: float = 0.25
+    scenario: Scenario, ws: Workspace, count: int, rng: np.random.Generator, *, min_separation: float = 0.25, exact=None
 ) -> list[tuple[np.ndarray, np.ndarray]]:
-    """``count`` (start, goal) pairs valid under the exact checker, base positions ``min_separation`` x diagonal
-    apart; a workspace too full to hold them is a ``ValueError`` (one line, as the command line shows it)."""
-    robot, checker = scenario.robot, exact_checker(ws, scenario.robot)
+    """``count`` (start, goal) pairs valid under ``exact`` (None: ``exact_checker``), base positions ``min_separation``
+    x diagonal apart; a workspace too full for them is a one-line ``ValueError``."""
+    robot = scenario.robot
+    checker = exact_checker(ws, robot) if exact is None else exact
     far = min_separation * float(np.linalg.norm(ws.upper - ws.lower))
     pairs: list[tuple[np.ndarray, np.ndarray]] = []
     for _ in range(PAIR_ATTEMPTS):
@@ -48,20 +51,24 @@ def query_pairs(
                 pairs.append((start, goal))
         if len(pairs) == count:
             return pairs
-    raise ValueError(
-        f"could not find {count} valid start/goal pairs {min_separation} x the diagonal apart in this "
-        f"{scenario.name} workspace ({PAIR_ATTEMPTS * 256} configurations tried); try another seed"
-    )
+    raise ValueError(f"found no {count} valid start/goal pairs far enough apart in this {scenario.name} workspace")
 
 
 def make_queries(
-    scenario: Scenario, *, seed: int = 0, n_workspaces: int | None = None, per_workspace: int | None = None
+    scenario: Scenario,
+    *,
+    seed: int = 0,
+    n_workspaces: int | None = None,
+    per_workspace: int | None = None,
+    exact: Callable[[Workspace, BoxRobot], CollisionChecker] = exact_checker,
 ) -> list[Query]:
-    """The paper's query set (counts default to the scenario's), reproducible from ``seed``."""
+    """The paper's query set (counts default to the scenario's), reproducible from ``seed``; ``exact(workspace,
+    robot)`` builds the checker that accepts starts and goals (any exact checker gives the same set)."""
     n_workspaces = scenario.query_workspaces if n_workspaces is None else n_workspaces
     per_workspace = scenario.queries_per_workspace if per_workspace is None else per_workspace
     queries = []
     for i, ws in enumerate(scenario.workspaces("query", n_workspaces, seed)):
         rng = np.random.default_rng([int(seed), STREAMS["query"], i, PAIR_STREAM])
-        queries += [Query(i, ws, start, goal) for start, goal in query_pairs(scenario, ws, per_workspace, rng)]
+        pairs = query_pairs(scenario, ws, per_workspace, rng, exact=exact(ws, scenario.robot))
+        queries += [Query(i, ws, start, goal) for start, goal in pairs]
     return queries

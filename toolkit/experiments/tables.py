@@ -63,6 +63,17 @@ def baseline_note(runs: list[dict], name: str | None = None) -> str:
     )
 
 
+def planners_note(runs: list[dict], modes: tuple[str, ...]) -> str:
+    """Which planner ran in each of ``modes``, as the runs' planning summaries record it (``summary["planner"]``;
+    a run cached before they did records none)."""
+    ran = {
+        mode: sorted({p[mode]["planner"] for r in runs for p in r["planning"].values() if "planner" in p.get(mode, {})})
+        for mode in modes
+    }
+    named = [f"{mode}: {', '.join(names)}" for mode, names in ran.items() if names]
+    return f"*Planners* (`toolkit.planning.prm`; paper is Algorithm 1): {'; '.join(named)}." if named else ""
+
+
 def cae_row(run: dict) -> list[str]:
     """Table 1: reconstruction accuracy, seen and unseen, beside the share of free cells ("all free")."""
     cae, paper = run["cae"], paper_numbers.CAE.get(run["scenario"], {})
@@ -159,6 +170,7 @@ def paper_tables(runs: list[dict]) -> list[str]:
             "## Table 3: time improvement ratio (without − with) / without",
             "",
             baseline_note(runs),
+            planners_note(runs, (*MODES, BASELINE)),
             "",
         ]
         + table([""] + by_sampler, [improvement_row(r, samplers) for r in runs])
@@ -190,7 +202,8 @@ def median_ratios(runs: list[dict]) -> list[str]:
         [r["scenario"]] + [ratio(r["planning"][s], key) for key in ("sampling_s", "total_s") for s in samplers]
         for r in runs
     ]
-    return ["## Time with / without prediction, medians over the queries", "", baseline_note(runs, "best"), ""] + table(
+    notes = [baseline_note(runs, "best"), planners_note(runs, MODES)]
+    return ["## Time with / without prediction, medians over the queries", "", *notes, ""] + table(
         [""] + [f"Sampling {s}" for s in samplers] + [f"Total {s}" for s in samplers], rows
     )
 

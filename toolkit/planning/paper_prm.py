@@ -44,11 +44,12 @@ class PRM(Planner):
 
     name = "paper"
     Params = PaperParams  # the parameters this planner reads, and no other planner
+    query_class = QueryRoadmap  # one query's state (a subclass: e.g. timed, toolkit.experiments.profile)
 
     def solve(self, problem: Problem, rng: np.random.Generator, *, trace: list | None = None) -> PlanResult:
         """One query; a ``trace`` list receives a ``PlanStep`` at every stage."""
         # Algorithm 1, line 1: a learned checker encoded the workspace (the CAE's z) when it was built
-        query = QueryRoadmap(problem, self.params, trace)
+        query = self.query_class(problem, self.params, trace)
         decide = partial(self.decide, query)  # this planner's edge rule, for connecting and bridging
         new = query.add_endpoints()  # START, GOAL
         path = None

@@ -20,8 +20,7 @@ of the same workspace) does not. Every returned path has passed the exact checke
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass, field, fields, replace
-from types import MappingProxyType
+from dataclasses import dataclass, fields, replace
 from typing import Any, ClassVar
 
 import numpy as np
@@ -44,42 +43,20 @@ class Problem:
     predicts: bool  # samples are decided by prediction: the checker is not exact (CollisionChecker.is_exact)
     resolution: float  # local planner: no robot point moves farther between two checks
     refinement: int = REFINEMENT  # returned paths are also checked at resolution / refinement
-    sampler_options: Mapping[str, Any] = field(default_factory=lambda: MappingProxyType({}))  # make_sampler's keywords
 
     @classmethod
-    def create(
-        cls,
-        exact: CollisionChecker,
-        start,
-        goal,
-        *,
-        sampler: str = "BS",
-        checker: CollisionChecker | None = None,
-        resolution: float | None = None,
-        refinement: int = REFINEMENT,
-        sampler_options: Mapping[str, Any] | None = None,
-    ) -> Problem:
-        """The problem; ``checker`` None: the exact checker decides samples, no prediction; else ``predicts`` is
-        what the checker says it is (``not checker.is_exact``); ``resolution`` None: ``default_resolution``."""
+    def create(cls, exact, start, goal, *, sampler="BS", checker=None, resolution=None) -> Problem:
+        """``checker`` None: the exact checker decides samples, nothing predicts; else ``predicts`` is what the checker
+        says it is (``not checker.is_exact``). ``resolution`` None: ``default_resolution(robot)``."""
         robot = exact.robot
         if checker is not None and checker.robot.dof != robot.dof:
             raise ValueError(f"checker is for a {checker.robot.dof}-DoF robot, the exact checker for {robot.dof}")
         resolution = default_resolution(robot) if resolution is None else float(resolution)
         if not (np.isfinite(resolution) and resolution > 0):
             raise ValueError(f"resolution must be positive and finite, got {resolution!r}")
-        if int(refinement) != refinement or refinement < 1:
-            raise ValueError(f"refinement must be a positive integer, got {refinement!r}")
-        return cls(
-            exact,
-            _single(robot, start, "start"),
-            _single(robot, goal, "goal"),
-            sampler,
-            exact if checker is None else checker,
-            checker is not None and not checker.is_exact,
-            resolution,
-            int(refinement),
-            MappingProxyType(dict(sampler_options or {})),
-        )
+        start, goal = _single(robot, start, "start"), _single(robot, goal, "goal")
+        predicts = checker is not None and not checker.is_exact
+        return cls(exact, start, goal, sampler, checker or exact, predicts, resolution)
 
     @property
     def robot(self):

@@ -84,6 +84,8 @@ class PlanStep:
 class QueryRoadmap:
     """The state of one query: the problem, the planner's parameters, roadmap, counters and timers, the trace."""
 
+    roadmap_class = Roadmap  # the roadmap (a subclass: e.g. timed, toolkit.experiments.profile)
+
     def __init__(self, problem: Problem, params: RoadmapParams, trace: list | None = None):
         self.problem, self.params, self.trace = problem, params, trace
         self.exact, self.checker, self.predicted = problem.exact, problem.checker, problem.predicts
@@ -92,11 +94,9 @@ class QueryRoadmap:
         # edges already were), then finer
         self.verify_resolutions = (self.resolution, problem.fine_resolution)
         # the sampler drawing through the deciding checker, and the same drawing through the exact one
-        self.sampler = make_sampler(problem.sampler, self.checker, **problem.sampler_options)
-        self.exact_sampler = (
-            make_sampler(problem.sampler, self.exact, **problem.sampler_options) if self.predicted else self.sampler
-        )
-        self.roadmap = Roadmap(self.exact.robot)
+        self.sampler = make_sampler(problem.sampler, self.checker)
+        self.exact_sampler = make_sampler(problem.sampler, self.exact) if self.predicted else self.sampler
+        self.roadmap = self.roadmap_class(self.exact.robot)
         self.stats: dict[str, float] = {  # counts (ints) and seconds
             "rounds": 0,
             "repairs": 0,
