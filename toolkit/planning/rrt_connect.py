@@ -97,8 +97,8 @@ def rrt_connect(problem: Problem, rng: np.random.Generator, params: RRTConnectPa
     params = RRTConnectParams() if params is None else params
     if problem.predicts:
         raise ValueError("RRT-Connect plans without prediction: give it no learned checker")
-    exact, robot, resolution = problem.exact, problem.robot, problem.resolution
-    began, checked, reach = time.perf_counter(), exact.n_checked, resolution * params.range
+    exact, robot = problem.exact, problem.robot
+    began, checked = time.perf_counter(), exact.n_checked
     ends = np.stack([problem.start, problem.goal])  # (2, dof)
     for name, ok, q in zip(("start", "goal"), exact.are_valid(ends), ends):
         if not ok:
@@ -106,70 +106,86 @@ def rrt_connect(problem: Problem, rng: np.random.Generator, params: RRTConnectPa
     trees = (Tree(ends[0]), Tree(ends[1]))
     stats: dict[str, float] = {"iterations": 0, "extensions": 0, "cuts": 0, "verify_checks": 0}
 
-    def extend(tree: Tree, target: np.ndarray, near: int | None = None) -> tuple[int, bool]:
-        """Extend ``tree`` from node ``near`` (None: its node nearest ``target``) towards ``target`` by at most
-        ``reach``: (the new node, or -1 if trapped; whether it reached ``target``)."""
+    def grow_by(tree: Tree, target: np.ndarray, near: int | None = None) -> tuple[int, bool]:
         stats["extensions"] += 1
-        if near is None:
-            steps = robot.difference(tree.nodes[: tree.n], target)  # (n, dof) from each node to target
-            distance = np.abs(steps) @ robot.motion_weights  # (n,) robot.motion_bound of each step
-            near = int(np.argmin(np.where(tree.cut[: tree.n], np.inf, distance)))
-            step, length = steps[near], float(distance[near])
-        else:
-            step = robot.difference(tree.nodes[near], target)  # (dof,)
-            length = float(np.abs(step) @ robot.motion_weights)
-        q0, reached = tree.nodes[near], length <= reach
-        if not reached:
-            step, length = step * (reach / length), reach
-        n = max(int(np.ceil(length / resolution)), 1)  # local_planner.step_counts
-        k = np.arange(1, n + 1)  # the grid's points, the end (k = n) included
-        for part in (k[(k % params.coarse == 0) | (k == n)], k[(k % params.coarse != 0) & (k != n)]):
-            if len(part) and not exact.are_valid(robot.wrap(q0 + (part / n)[:, None] * step)).all():
-                return -1, False
-        return tree.add(target if reached else robot.wrap(q0 + step), near), reached
+        return extend(problem, params, tree, target, near)
 
-    def result(path: np.ndarray | None) -> PlanResult:
-        stats.update(
-            nodes=trees[0].n + trees[1].n,
-            predicted_checks=0,
-            exact_checks=exact.n_checked - checked,
-            resolution=resolution,
-            total_s=time.perf_counter() - began,
-        )
-        roadmap = as_roadmap(robot, trees, resolution)
-        if path is None:
-            return PlanResult(False, np.zeros((0, robot.dof)), stats, RRTConnect.name, roadmap)
-        return PlanResult(True, path, stats, RRTConnect.name, roadmap)
-
+    path = None
     for iteration in range(params.max_iterations):
         stats["iterations"] = iteration + 1
         if iteration % SAMPLES == 0:
             samples = robot.sample(rng, SAMPLES)  # (SAMPLES, dof) drawn a block at a time
         grow, other = (trees[0], trees[1]) if iteration % 2 == 0 else (trees[1], trees[0])
-        new, _ = extend(grow, samples[iteration % SAMPLES])
+        new, _ = grow_by(grow, samples[iteration % SAMPLES])
         if new < 0:
             continue
-        met, reached = extend(other, grow.nodes[new])  # connect: extend again and again from the last node added
+        met, reached = grow_by(other, grow.nodes[new])  # connect: extend again and again from the last node added
         while met >= 0 and not reached:
-            met, reached = extend(other, grow.nodes[new], near=met)
+            met, reached = grow_by(other, grow.nodes[new], near=met)
         if not reached:
             continue
-        a, b = (new, met) if grow is trees[0] else (met, new)  # the same configuration, in either tree
-        from_start, to_goal = trees[0].branch(a)[::-1], trees[1].branch(b)  # node indices root -> a, b -> root
-        path = np.concatenate([trees[0].nodes[from_start], trees[1].nodes[to_goal[1:]]])  # (P, dof)
-        before = exact.n_checked
-        spacing = resolution * params.certify_spacing
-        ok = certify_edges(exact, path[:-1], path[1:], problem.fine_resolution, spacing=spacing)
-        stats["verify_checks"] += exact.n_checked - before
-        if ok.all():
-            return result(path)
-        for edge in np.flatnonzero(~ok):  # cut each failed edge's end away from its root, and the branch beyond
-            stats["cuts"] += 1
-            if edge + 1 < len(from_start):
-                trees[0].cut_below(from_start[edge + 1])
-            else:
-                trees[1].cut_below(to_goal[edge + 1 - len(from_start)])
-    return result(None)
+        meeting = (new, met) if grow is trees[0] else (met, new)  # the same configuration, in either tree
+        if (path := verified_path(problem, trees, meeting, params, stats)) is not None:
+            break
+    stats.update(
+        nodes=trees[0].n + trees[1].n,
+        predicted_checks=0,
+        exact_checks=exact.n_checked - checked,
+        resolution=problem.resolution,
+        total_s=time.perf_counter() - began,
+    )
+    roadmap = as_roadmap(robot, trees, problem.resolution)
+    if path is None:
+        return PlanResult(False, np.zeros((0, robot.dof)), stats, RRTConnect.name, roadmap)
+    return PlanResult(True, path, stats, RRTConnect.name, roadmap)
+
+
+def extend(
+    problem: Problem, params: RRTConnectParams, tree: Tree, target: np.ndarray, near: int | None
+) -> tuple[int, bool]:
+    """Extend ``tree`` from node ``near`` (None: its node nearest ``target``) towards ``target`` by at most
+    ``resolution * range``, the edge checked coarse to fine: (the new node, or -1 if trapped; whether it reached
+    ``target``)."""
+    exact, robot, resolution = problem.exact, problem.robot, problem.resolution
+    reach = resolution * params.range
+    if near is None:
+        steps = robot.difference(tree.nodes[: tree.n], target)  # (n, dof) from each node to target
+        distance = np.abs(steps) @ robot.motion_weights  # (n,) robot.motion_bound of each step
+        near = int(np.argmin(np.where(tree.cut[: tree.n], np.inf, distance)))
+        step, length = steps[near], float(distance[near])
+    else:
+        step = robot.difference(tree.nodes[near], target)  # (dof,)
+        length = float(np.abs(step) @ robot.motion_weights)
+    q0, reached = tree.nodes[near], length <= reach
+    if not reached:
+        step, length = step * (reach / length), reach
+    n = max(int(np.ceil(length / resolution)), 1)  # local_planner.step_counts
+    k = np.arange(1, n + 1)  # the grid's points, the end (k = n) included
+    for part in (k[(k % params.coarse == 0) | (k == n)], k[(k % params.coarse != 0) & (k != n)]):
+        if len(part) and not exact.are_valid(robot.wrap(q0 + (part / n)[:, None] * step)).all():
+            return -1, False
+    return tree.add(target if reached else robot.wrap(q0 + step), near), reached
+
+
+def verified_path(
+    problem: Problem, trees: tuple[Tree, Tree], meeting: tuple[int, int], params: RRTConnectParams, stats: dict
+) -> np.ndarray | None:
+    """The path ``(P, dof)`` from the start tree's root through its node ``meeting[0]``, which is the goal tree's
+    node ``meeting[1]``, to the goal tree's root, if it passes exactly at ``problem.fine_resolution``; else None,
+    each failed edge's end away from its root cut, with the branch beyond it."""
+    exact = problem.exact
+    from_start, to_goal = trees[0].branch(meeting[0])[::-1], trees[1].branch(meeting[1])  # root -> a, b -> root
+    path = np.concatenate([trees[0].nodes[from_start], trees[1].nodes[to_goal[1:]]])  # (P, dof)
+    before, spacing = exact.n_checked, problem.resolution * params.certify_spacing
+    ok = certify_edges(exact, path[:-1], path[1:], problem.fine_resolution, spacing=spacing)
+    stats["verify_checks"] += exact.n_checked - before
+    for edge in np.flatnonzero(~ok):
+        stats["cuts"] += 1
+        if edge + 1 < len(from_start):
+            trees[0].cut_below(from_start[edge + 1])
+        else:
+            trees[1].cut_below(to_goal[edge + 1 - len(from_start)])
+    return path if ok.all() else None
 
 
 def as_roadmap(robot, trees: tuple[Tree, Tree], resolution: float) -> Roadmap:
