@@ -127,14 +127,15 @@ def rrt_connect(problem: Problem, rng: np.random.Generator, params: RRTConnectPa
         meeting = (new, met) if grow is trees[0] else (met, new)  # the same configuration, in either tree
         if (path := verified_path(problem, trees, meeting, params, stats)) is not None:
             break
+    roadmap = as_roadmap(robot, trees, problem.resolution)
     stats.update(
-        nodes=trees[0].n + trees[1].n,
+        nodes=len(roadmap.nodes),
+        edges=len(roadmap.edges),
         predicted_checks=0,
         exact_checks=exact.n_checked - checked,
         resolution=problem.resolution,
         total_s=time.perf_counter() - began,
     )
-    roadmap = as_roadmap(robot, trees, problem.resolution)
     if path is None:
         return PlanResult(False, np.zeros((0, robot.dof)), stats, RRTConnect.name, roadmap)
     return PlanResult(True, path, stats, RRTConnect.name, roadmap)
