@@ -4,6 +4,8 @@ Speed targets are measured by the command, never asserted here (no timed unit te
 """
 
 import json
+import os
+import re
 import subprocess
 import sys
 import time
@@ -213,19 +215,34 @@ def test_the_two_checkers_are_timed_in_turns(monkeypatch):
     assert rates == {"exact": pytest.approx(10_000), "learned": pytest.approx(1_000_000)}
 
 
-def test_bench_vs_ompl_prints_a_markdown_table(capsys):
+def test_bench_vs_ompl_prints_the_load_and_a_markdown_table_per_seed(capsys):
     pytest.importorskip("ompl")
-    assert (
-        cli.main(["bench", "--vs-ompl", "--scenario", "2ds", "--queries", "2", "--seed", "9000", "--ompl-seconds", "5"])
-        == 0
-    )
+    command = ["bench", "--vs-ompl", "--scenario", "2ds", "--queries", "2", "--seeds", "9000", "--ompl-seconds", "5"]
+    assert cli.main(command) == 0
     lines = capsys.readouterr().out.splitlines()
-    assert lines[0].startswith("| 2ds (2 queries) | solved | valid at 10x finer | median s")
-    rows = {line.split("|")[1].strip(): line for line in lines[2:]}
-    assert list(rows) == ["ours, best exact", "ours, paper's baseline", "OMPL PRM", "OMPL RRTConnect"]
-    for name in ("ours, best exact", "ours, paper's baseline"):  # every query solved, paths valid 10x finer
+    assert re.fullmatch(
+        r"Seed 9000: 1-minute load average [\d.]+ before, [\d.]+ at most, [\d.]+ after, on \d+ cores: "
+        r"(idle|loaded \(above 1\.5\))\.",
+        lines[0],
+    )
+    assert lines[2].startswith("| 2ds (2 queries) | solved | valid at 10x finer | median s | CPU median s")
+    assert lines[2].endswith("| median / OMPL RRTConnect's | median / OMPL RRTConnect, checks batched's |")
+    rows = {line.split("|")[1].strip(): line for line in lines[4:] if line.startswith("|")}
+    assert list(rows) == [
+        "ours, best exact",
+        "ours, RRT-Connect",
+        "ours, paper's baseline",
+        "OMPL PRM",
+        "OMPL PRM, checks batched",
+        "OMPL RRTConnect",
+        "OMPL RRTConnect, checks batched",
+    ]
+    for name in ("ours, best exact", "ours, RRT-Connect", "ours, paper's baseline"):  # all solved, valid 10x finer
         assert rows[name].split("|")[2:4] == [" 100% ", " 100% "]
-    assert rows["OMPL PRM"].rstrip().endswith("| 1.00 |")  # the ratios' reference
+    assert rows["OMPL PRM"].split("|")[9].strip() == "1.00 (1.00)"  # the ratios' first reference
+    assert re.search(
+        r"^OMPL RRTConnect: a configuration took [\d.]+ us in its Python callbacks", "\n".join(lines), re.M
+    )
 
 
 def test_versus_ompl_races_the_chosen_planners_only():
@@ -234,15 +251,70 @@ def test_versus_ompl_races_the_chosen_planners_only():
     table = versus_ompl.versus_ompl(
         scenario, n_queries=2, seed=9000, ompl_seconds=5, ompl_planners=("RRTConnect",), paper_baseline=False
     )
-    assert list(table) == ["ours, best exact", "OMPL RRTConnect"]
+    assert list(table) == [
+        "ours, best exact",
+        "ours, RRT-Connect",
+        "OMPL RRTConnect",
+        "OMPL RRTConnect, checks batched",
+    ]
     assert table["ours, best exact"]["success_rate"] == 1.0 and table["ours, best exact"]["valid_rate"] == 1.0
     assert all(len(row["seconds"]) == 2 for row in table.values())
+    raw, batched = table["OMPL RRTConnect"], table["OMPL RRTConnect, checks batched"]
+    assert batched["median_s"] < raw["median_s"] and batched["checks_median"] == raw["checks_median"]
+    assert raw["callback_us"] > raw["batch_us"] > 0  # one Python call a state costs more than a batched check
     lines = versus_ompl.versus_ompl_markdown(scenario, table).splitlines()
-    assert lines[0].endswith("| median / OMPL RRTConnect's |") and lines[-1].endswith("| 1.00 |")
+    assert lines[0].endswith("| median / OMPL RRTConnect's | median / OMPL RRTConnect, checks batched's |")
+    assert lines[5].startswith("| OMPL RRTConnect, checks batched |") and lines[5].endswith("| 1.00 (1.00) |")
     with pytest.raises(ValueError, match=r"no planner\(s\) \['NoSuchPlanner'\]"):
         versus_ompl.versus_ompl(scenario, n_queries=1, ompl_planners=("NoSuchPlanner",))
     with pytest.raises(ValueError, match="n_queries must be a positive integer, got 0"):
         versus_ompl.versus_ompl(scenario, n_queries=0)
+
+
+def test_at_batched_rate_swaps_the_callbacks_time_for_one_batched_call(monkeypatch):
+    """A solve of 1.0 s wall and 0.8 s CPU, 0.6 s of it in callbacks that asked about 50 configurations: a fake clock
+    makes the batched call take 0.01 s (0.008 s CPU); the checker is asked about exactly those 50."""
+    from toolkit.geometry.collision import exact_checker
+
+    scenario = scenarios.get("3dc7")
+    q = versus_ompl.race_queries(scenario, 1, 7300)[0]
+    exact = exact_checker(q.workspace, scenario.robot)
+    asked = scenario.robot.sample(np.random.default_rng(0), 50)
+    wall, cpu = iter([5.0, 5.01]), iter([2.0, 2.008])
+    monkeypatch.setattr(versus_ompl.time, "perf_counter", lambda: next(wall))
+    monkeypatch.setattr(versus_ompl.time, "process_time", lambda: next(cpu))
+    figures = versus_ompl.at_batched_rate(exact, versus_ompl.Solved(True, None, 0.6, asked), 1.0, 0.8)
+    assert exact.n_checked == 50
+    assert figures == pytest.approx(
+        {"callbacks": 50, "callback_s": 0.6, "batch_s": 0.01, "batched_s": 0.41, "batched_cpu_s": 0.8 * 0.4 + 0.008}
+    )
+
+
+def test_race_seeds_records_the_load_around_each_run(monkeypatch):
+    """Loads read in order: before seed 1, before its two queries, after it, and likewise for seed 2."""
+    readings = iter([0.2, 0.4, 1.2, 1.1, 3.0, 3.5, 2.0, 2.5, 2.5])
+    monkeypatch.setattr(versus_ompl.os, "getloadavg", lambda: (next(readings), 0.0, 0.0))
+
+    def fake(scenario, *, n_queries, seed, loads, **options):
+        loads.extend(os.getloadavg()[0] for _ in range(n_queries))  # as race does, before each query
+        return {"OMPL RRTConnect": versus_ompl._row([_run(seed / 1e4)] * n_queries, "seconds", "cpu_s")}
+
+    monkeypatch.setattr(versus_ompl, "versus_ompl", fake)
+    scenario = scenarios.get("2ds")
+    result = versus_ompl.race_seeds(scenario, n_queries=2, seeds=(7300, 9300))
+    assert [run["seed"] for run in result["runs"]] == [7300, 9300]
+    assert [run["load"] for run in result["runs"]] == [
+        {"before": 0.2, "highest": 1.2, "after": 1.1},  # the highest of before, the queries' and after
+        {"before": 3.0, "highest": 3.5, "after": 2.5},
+    ]
+    assert [run["idle"] for run in result["runs"]] == [True, False]
+    text = versus_ompl.race_seeds_markdown(scenario, result)
+    assert "Seed 7300: 1-minute load average 0.20 before, 1.20 at most, 1.10 after" in text
+    assert text.count("| OMPL RRTConnect | 100% |") == 2 and "loaded (above 1.5)." in text
+
+
+def _run(seconds: float) -> dict:
+    return {"seconds": seconds, "cpu_s": seconds, "success": True, "valid": True, "checks": 10}
 
 
 def test_a_race_takes_the_first_queries_of_the_paper_set():
@@ -264,14 +336,16 @@ def test_a_race_rotates_who_goes_first_and_times_every_solve(monkeypatch):
         def solve(query, exact, n):
             order.append((n, name))
             clock[0] += seconds
-            return success, None if not success else np.stack([query.start, query.start])
+            return versus_ompl.Solved(success, None if not success else np.stack([query.start, query.start]))
 
         return solve
 
     monkeypatch.setattr(versus_ompl.time, "perf_counter", lambda: clock[0])
     scenario = scenarios.get("2ds")
     racing = {"a": fake("a", 1.0, True), "b": fake("b", 2.0, False), "c": fake("c", 4.0, True)}
-    solves = versus_ompl.race(scenario, versus_ompl.race_queries(scenario, 3, 9000), racing)
+    loads = []
+    solves = versus_ompl.race(scenario, versus_ompl.race_queries(scenario, 3, 9000), racing, loads)
+    assert len(loads) == 3  # the load before each query
     warm_up = [(0, "a"), (0, "b"), (0, "c")]  # each planner's untimed first solve, then the timed rounds
     assert order == warm_up + [(0, "a"), (0, "b"), (0, "c"), (1, "b"), (1, "c"), (1, "a"), (2, "c"), (2, "a"), (2, "b")]
     table = versus_ompl.summarize(solves)
@@ -283,7 +357,7 @@ def test_a_race_rotates_who_goes_first_and_times_every_solve(monkeypatch):
 
 def test_summarize_counts_failures_times_and_validity_of_found_paths_only():
     runs = [
-        {"seconds": s, "success": ok, "valid": valid, "checks": c}
+        {"seconds": s, "cpu_s": s / 2, "success": ok, "valid": valid, "checks": c}
         for s, ok, valid, c in (
             (1.0, True, True, 10),
             (2.0, True, False, 20),
@@ -295,6 +369,7 @@ def test_summarize_counts_failures_times_and_validity_of_found_paths_only():
     assert row["queries"] == 4 and row["success_rate"] == 0.75
     assert row["valid_rate"] == pytest.approx(2 / 3)  # of the three paths found
     assert row["median_s"] == 2.5 and row["mean_s"] == 4.0 and row["checks_median"] == 25.0
+    assert row["cpu_median_s"] == 1.25
     assert row["p90_s"] == pytest.approx(float(np.percentile([1.0, 2.0, 3.0, 10.0], 90)))
 
 
@@ -357,3 +432,10 @@ def test_cpu_clock_times_what_a_call_computed_not_what_it_waited():
     with bench.cpu_clock():
         assert bench.in_turns({"nap": nap}, repeats=1)["nap"] > 200
     assert bench.in_turns({"nap": nap}, repeats=1)["nap"] < 21
+
+
+def test_bench_vs_ompl_names_a_bad_seed(capsys):
+    with pytest.raises(SystemExit) as exit_:
+        cli.main(["bench", "--vs-ompl", "--scenario", "2ds", "--seeds", "7300,x"])
+    assert exit_.value.code == 2
+    assert "argument --seeds: must be a whole number, 0..4294967295; got 'x'" in capsys.readouterr().err

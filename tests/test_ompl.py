@@ -1,5 +1,5 @@
 """Cross-check against OMPL (PyPI ``ompl``): on the same 2DS problems with the same exact checker, OMPL's PRM
-and ours solve every solvable query, and neither "solves" an unsolvable one.
+and ours, and OMPL's RRTConnect and ours, solve every solvable query, and neither "solves" an unsolvable one.
 
 Solvability is decided exactly: the point robot's configuration-space obstacles are the blocks grown by its
 half extent, with sides on multiples of 0.25, so a grid of 0.25 cells lies either inside or outside them and a
@@ -15,7 +15,9 @@ from toolkit.experiments.queries import make_queries
 from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace
 from toolkit.planning.local_planner import path_is_valid
+from toolkit.planning.planner import Problem
 from toolkit.planning.prm import PRMOptions, plan
+from toolkit.planning.rrt_connect import RRTConnectParams, rrt_connect
 
 ob = pytest.importorskip("ompl.base")
 og = pytest.importorskip("ompl.geometric")
@@ -101,6 +103,29 @@ def test_ours_and_ompls_prm_solve_every_solvable_2ds_query():
     assert solvable_count >= len(queries) // 2
 
 
+def test_ours_and_ompls_rrtconnect_solve_every_solvable_2ds_query():
+    scenario = scenarios.get("2ds")
+    robot = scenario.robot
+    params = RRTConnectParams(max_iterations=2_000)
+    solvable_count = 0
+    for i, q in enumerate(make_queries(scenario, seed=0, n_workspaces=3, per_workspace=6)):
+        label_of = free_components(q.workspace, robot)
+        solvable = label_of(q.start) == label_of(q.goal) != 0
+        problem = Problem.create(exact_checker(q.workspace, robot), q.start, q.goal)
+        ours = rrt_connect(problem, np.random.default_rng(i), params)
+        assert ours.success == solvable, f"query {i}: ours {ours.success}, solvable {solvable}"
+        if not solvable:
+            continue
+        solvable_count += 1
+        resolution = ours.stats["resolution"]
+        assert path_is_valid(exact_checker(q.workspace, robot), ours.path, resolution / 10)
+        theirs = toolkit_ompl.solve(
+            exact_checker(q.workspace, robot), q.start, q.goal, planner="RRTConnect", resolution=resolution, seconds=20
+        )
+        assert theirs.success, f"OMPL's RRTConnect missed solvable query {i}"
+    assert solvable_count >= 9
+
+
 def test_flood_fill_decides_solvability_exactly():
     scenario = scenarios.get("2ds")
     robot = scenario.robot
@@ -170,6 +195,9 @@ def test_rrtconnect_with_our_exact_checker_returns_paths_our_checker_accepts():
         exact = exact_checker(q.workspace, scenario.robot)
         result = toolkit_ompl.solve(exact, q.start, q.goal, planner="RRTConnect", resolution=resolution, seconds=20)
         assert result.success and result.checks > 0
+        assert result.asked.shape == (result.checks, scenario.robot.dof)  # every check was one callback
+        assert 0 < result.callback_s < result.seconds
+        assert len(np.unique(result.asked, axis=0)) > len(result.path)  # states along motions, not the path only
         np.testing.assert_allclose(result.path[0], q.start)
         np.testing.assert_allclose(result.path[-1], q.goal)
         assert path_is_valid(exact_checker(q.workspace, scenario.robot), result.path, resolution)

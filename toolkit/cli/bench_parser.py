@@ -7,7 +7,7 @@ from __future__ import annotations
 
 import argparse
 
-from toolkit.cli.arguments import SCENARIO_HELP, int_in, planner, preset, sampler_list, scenario, seed
+from toolkit.cli.arguments import SCENARIO_HELP, SEEDS, int_in, planner, preset, sampler_list, scenario, seed
 from toolkit.planning import sampling
 
 CROSSOVER_SCENARIO = "3dc9"  # --crossover without --scenario: the paper's dearest clutter check
@@ -77,11 +77,32 @@ def bench_versus_ompl_options(cmd: argparse.ArgumentParser) -> None:
     cmd.add_argument(
         "--vs-ompl",
         action="store_true",
-        help="instead: plan --queries N queries with our planners (best exact, the paper's baseline, "
-        "and with --checkpoint's model) and OMPL's PRM and RRTConnect on the same exact checker, "
-        "in turns, one thread, and print a markdown table (needs the ompl extra: "
-        "pip install 'sample-collision-toolkit[ompl]'); use a --seed the planner was not tuned on "
-        "(not 0 or 7100), e.g. 9000",
+        help="instead: plan --queries N queries of each of --seeds with our planners (best exact, RRT-Connect, "
+        "the paper's baseline, and with --checkpoint's model) and OMPL's on the same exact checker, "
+        "in turns, one thread, and print for each seed the machine's load and a markdown table, OMPL's planners "
+        "also with their checks at our batched rate (needs the ompl extra: "
+        "pip install 'sample-collision-toolkit[ompl]')",
+    )
+    cmd.add_argument(
+        "--seeds",
+        type=lambda text: tuple(int_in(0, SEEDS - 1)(seed) for seed in text.split(",")),
+        default=(7300, 9300),
+        metavar="LIST",
+        help="with --vs-ompl: comma-separated seeds of the query sets (--seed does not choose them), ones the "
+        "planners were not tuned on (not 0 or 7100; default 7300,9300)",
+    )
+    cmd.add_argument(
+        "--ompl-planners",
+        type=lambda text: tuple(text.split(",")),
+        default=("PRM", "RRTConnect"),
+        metavar="LIST",
+        help="with --vs-ompl: comma-separated planners of ompl.geometric to race (default PRM,RRTConnect)",
+    )
+    cmd.add_argument(
+        "--paper-baseline",
+        action=argparse.BooleanOptionalAction,
+        default=True,
+        help="with --vs-ompl: race the paper's Algorithm 1 too (default yes)",
     )
     cmd.add_argument(
         "--profile",
@@ -93,9 +114,9 @@ def bench_versus_ompl_options(cmd: argparse.ArgumentParser) -> None:
     cmd.add_argument(
         "--queries",
         type=int_in(1, 1000),
-        default=10,
         metavar="N",
-        help="with --vs-ompl or --profile: the first N queries of the seed's query set (default 10)",
+        help="with --vs-ompl or --profile: the first N queries of the seed's query set (default 30 with --vs-ompl, "
+        "10 with --profile)",
     )
     cmd.add_argument(
         "--ompl-seconds",

@@ -51,22 +51,24 @@ def cmd_bench(args: argparse.Namespace) -> int:
     if args.profile:
         from toolkit.experiments import profile
 
-        profiled = profile.profile(scenario, n_queries=args.queries, seed=args.seed)
+        profiled = profile.profile(scenario, n_queries=args.queries or 10, seed=args.seed)
         print(json.dumps(profiled) if args.json else profile.markdown(profiled))
         return 0
     models = checkpoints.load_models(args.checkpoint, scenario) if args.checkpoint else None
     if args.vs_ompl:
         try:
-            table = versus_ompl.versus_ompl(
-                scenario, n_queries=args.queries, seed=args.seed, models=models, ompl_seconds=args.ompl_seconds
+            raced = versus_ompl.race_seeds(
+                scenario,
+                n_queries=args.queries or 30,
+                seeds=args.seeds,
+                models=models,
+                ompl_seconds=args.ompl_seconds,
+                ompl_planners=args.ompl_planners,
+                paper_baseline=args.paper_baseline,
             )
         except ImportError as missing:  # ompl is an optional extra
             raise ValueError(str(missing)) from None
-        print(
-            json.dumps({"scenario": scenario.name, "seed": args.seed, "planners": table})
-            if args.json
-            else versus_ompl.versus_ompl_markdown(scenario, table)
-        )
+        print(json.dumps(raced) if args.json else versus_ompl.race_seeds_markdown(scenario, raced))
         return 0
     timed = models or bench.untrained_models(scenario, presets.get(args.preset), seed=args.seed)
     device = bench.usable_device(args.device)

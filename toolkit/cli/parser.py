@@ -272,7 +272,7 @@ SUBCOMMANDS: list[tuple[str, str, str, list[str], Callable[[argparse.ArgumentPar
         [
             "toolkit bench --scenario 3dc7 --json",
             "toolkit bench --scenario 3dc9 --checkpoint runs/3dc9-strong --samplers BT --option rebridge=0",
-            "toolkit bench --vs-ompl --scenario 3dc7 --queries 20 --seed 9000",
+            "toolkit bench --vs-ompl --scenario 3dc7 --queries 30 --seeds 7300,9300",
             "toolkit bench --crossover --scenario 3dc9 --out docs   # docs/crossover.png and .json",
         ],
         bench_options,

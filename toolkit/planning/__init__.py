@@ -15,11 +15,13 @@ Reading order:
 6. :mod:`toolkit.planning.query_roadmap` — what both roadmap planners share: one query's roadmap, its
    counters and trace, and the exact verification of a path (repairing what fails);
 7. :mod:`toolkit.planning.paper_prm` — **Algorithm 1**, as the paper has it, on one page (planner ``paper``);
-8. :mod:`toolkit.planning.lazy_prm` — the lazy PRM (planner ``lazy``): the best exact planner, and prediction
-   beyond the paper;
-9. :mod:`toolkit.planning.prm` — the planners by name (``register``, ``get``, ``names``; ``DEFAULT``, the rule for
-   which runs) and ``plan(exact, start, goal, ...)``, one entry to any of them;
-10. :mod:`toolkit.planning.ompl` — our checkers and samplers inside OMPL, for comparison.
+8. :mod:`toolkit.planning.lazy_prm` — the lazy PRM (planner ``lazy``): the best exact roadmap planner, and
+   prediction beyond the paper;
+9. :mod:`toolkit.planning.rrt_connect` — RRT-Connect (planner ``rrt-connect``): two trees, for a single query the
+   fastest exact planner;
+10. :mod:`toolkit.planning.prm` — the planners by name (``register``, ``get``, ``names``; ``DEFAULT``, the rule for
+    which runs) and ``plan(exact, start, goal, ...)``, one entry to any of them;
+11. :mod:`toolkit.planning.ompl` — our checkers and samplers inside OMPL, for comparison.
 
 The paper's query sets, one query built from a scenario (``toolkit.experiments.problems.build``) and
 which planner a recipe's runs use are the experiments' business (:mod:`toolkit.experiments`).

@@ -22,7 +22,9 @@ samplers (BS, OB, G, BT, §IV-A) can feed OMPL's PRM:
   them.
 - :class:`ValidityChecker`: our checker as OMPL's, one configuration a call (OMPL asks
   about one state at a time, so our batched calls cannot help it; each call costs a
-  whole checker call's fixed overhead).
+  whole checker call's fixed overhead). It keeps the configurations it was asked about
+  and the time it spent answering, so a race can tell what OMPL would take with its
+  checks at our batched rate (:mod:`toolkit.experiments.versus_ompl`).
 - :class:`ToolkitValidStateSampler`: one of our samplers as OMPL's; it draws a batch
   of samples at a time and hands them out one by one.
 - :func:`solve`: one query with an OMPL planner (``RRTConnect``, ``PRM``, ``PRMstar``, ...).
@@ -86,14 +88,25 @@ def set_state(state, q, robot: BoxRobot) -> None:
 
 
 class ValidityChecker(ob.StateValidityChecker):
-    """Our ``checker`` (exact or learned) as OMPL's state validity checker: ``isValid(state)`` asks about one state."""
+    """Our ``checker`` (exact or learned) as OMPL's state validity checker: ``isValid(state)`` asks about one state.
+
+    ``asked``: the configurations asked about, in order; ``seconds``: the wall time spent inside ``isValid``
+    (OMPL's call into Python, before and after, is not in it).
+    """
 
     def __init__(self, si: ob.SpaceInformation, checker: CollisionChecker):
         super().__init__(si)
         self.checker = checker
+        self.asked: list[np.ndarray] = []  # (dof,) each
+        self.seconds = 0.0
 
     def isValid(self, state) -> bool:
-        return self.checker.is_valid(to_array(state, self.checker.robot))
+        began = time.perf_counter()
+        q = to_array(state, self.checker.robot)
+        self.asked.append(q)
+        valid = self.checker.is_valid(q)
+        self.seconds += time.perf_counter() - began
+        return valid
 
 
 class ToolkitValidStateSampler(ob.ValidStateSampler):
@@ -172,12 +185,15 @@ def motion_steps(si: ob.SpaceInformation, robot: BoxRobot, Q0, Q1) -> np.ndarray
 @dataclass
 class OMPLResult:
     """``success`` (an exact solution), ``path (P, dof)`` (empty on failure), ``seconds``, ``checks``
-    (configurations)."""
+    (configurations, our sampler's included); ``callback_s``: the seconds of ``seconds`` spent in our validity
+    checker's Python calls, ``asked (C, dof)``: the configurations they asked about."""
 
     success: bool
     path: np.ndarray
     seconds: float
     checks: int
+    callback_s: float
+    asked: np.ndarray
 
 
 def solve(
@@ -212,15 +228,18 @@ def solve(
         ends.append(state)
     setup.setStartAndGoalStates(*ends)
     setup.setPlanner(getattr(og, planner)(si))
+    validity = si.getStateValidityChecker()
+    validity.asked, validity.seconds = [], 0.0  # the start and goal states' checks above are not the planner's
     before = checker.n_checked
     began = time.perf_counter()
     setup.solve(float(seconds))
     elapsed = time.perf_counter() - began
-    if not setup.haveExactSolutionPath():
-        return OMPLResult(False, np.zeros((0, robot.dof)), elapsed, checker.n_checked - before)
-    path = setup.getSolutionPath()
-    Q = np.array([to_array(path.getState(i), robot) for i in range(path.getStateCount())])
-    return OMPLResult(True, Q, elapsed, checker.n_checked - before)
+    asked = np.array(validity.asked).reshape(-1, robot.dof)  # (checks, dof)
+    Q = np.zeros((0, robot.dof))
+    if success := setup.haveExactSolutionPath():
+        path = setup.getSolutionPath()
+        Q = np.array([to_array(path.getState(i), robot) for i in range(path.getStateCount())])
+    return OMPLResult(success, Q, elapsed, checker.n_checked - before, validity.seconds, asked)
 
 
 def quiet(seed: int | None = None) -> None:

@@ -7,6 +7,8 @@ with its own parameters (:mod:`toolkit.planning.planner`):
   rounds of |S|, every candidate edge checked exactly as it is added;
 - ``lazy`` (:data:`DEFAULT`): the lazy PRM, :mod:`toolkit.planning.lazy_prm`: the best exact
   planner, and with prediction learned edge screening (the paper's future work);
+- ``rrt-connect``: RRT-Connect, :mod:`toolkit.planning.rrt_connect`: two trees, for a single query
+  the fastest exact planner (no prediction);
 - any class with a ``name``, a ``Params`` class and ``solve(problem, rng)``: a tree planner too.
 
 **The rule for which planner runs**, the one place it is applied: the one the caller names;
@@ -27,6 +29,7 @@ from toolkit.planning.options import AUXILIARY, LazyParams, LazyPRMOptions, Pape
 from toolkit.planning.paper_prm import PRM
 from toolkit.planning.planner import Planner, PlanResult, Problem
 from toolkit.planning.query_roadmap import GOAL, STAGES, START, PlanStep
+from toolkit.planning.rrt_connect import RRTConnect
 from toolkit.util import registry
 
 __all__ = [
@@ -54,7 +57,7 @@ __all__ = [
 ]
 
 DEFAULT = "lazy"  # the planner that runs when none is named: the best exact planner, with or without prediction
-PLANNERS: dict[str, type[Planner]] = {PRM.name: PRM, LazyPRM.name: LazyPRM}  # name -> planner class
+PLANNERS: dict[str, type[Planner]] = {p.name: p for p in (PRM, LazyPRM, RRTConnect)}  # name -> planner class
 
 
 def register(planner: type[Planner], *, replace: bool = False) -> type[Planner]:
