@@ -27,6 +27,7 @@ import numpy as np
 
 from toolkit.geometry.checker import CollisionChecker
 from toolkit.teaching import sandbox, wire
+from toolkit.teaching.unavailable import stripped_modules
 
 STARTS = 3  # times a submission's process is started before every further call fails
 INSIDE = "/grading/in"  # where the notebook appears in the sandbox
@@ -72,7 +73,12 @@ class Submission:
         python = [sys.executable, "-m", "toolkit.teaching.submission"]
         if self.isolate:
             inner = [*python, f"{INSIDE}/{self.notebook.name}", self.assignment]
-            command = sandbox.command(inner, {str(self.notebook.parent): INSIDE}, {}, cpu_s=self.cpu_s)
+            shown = {str(self.notebook.parent): INSIDE}  # the notebook; the library's answers stripped
+            shown |= {
+                copy: f"{sandbox.LIBRARY}/toolkit/{inside}"
+                for copy, inside in stripped_modules(self.assignment).items()
+            }
+            command = sandbox.command(inner, shown, {}, cpu_s=self.cpu_s)
             env = None
         else:
             command = [*python, str(self.notebook), self.assignment]
