@@ -269,6 +269,47 @@ def test_a_failed_hidden_test_says_why_on_one_line_and_never_its_source():
     assert grading.run_case(">>> g()\n", _Local(f=len)) == "NameError: name 'g' is not defined"
 
 
+def _hidden_cells(name: str, question: str) -> list[str]:
+    """The source of each hidden test of ``question`` in the master of ``name``."""
+    found, current = [], None
+    for cell in json.loads(grading.master(name).read_text())["cells"]:
+        source = "".join(cell["source"])
+        if source.startswith("# BEGIN QUESTION"):
+            current = source.split("name: ")[1].split()[0]
+        elif cell["cell_type"] == "code" and current == question and source.startswith("# HIDDEN"):
+            found.append(source)
+    return found
+
+
+def _master_function(name: str, function: str):
+    """The master's solution of ``function`` (its solution cell run here)."""
+    cells = json.loads(grading.master(name).read_text())["cells"]
+    source = next(
+        "".join(c["source"]) for c in cells if c["cell_type"] == "code" and f"def {function}(" in "".join(c["source"])
+    )
+    namespace: dict = {"np": __import__("numpy")}
+    exec(source, namespace)
+    return namespace[function]
+
+
+def test_the_hidden_tests_build_only_measurements_the_specification_allows():
+    """evaluating_a_checker Q2: a record's path is valid only where a path was returned; times are positive."""
+    solution, records = _master_function("evaluating_a_checker", "fastest_valid_threshold"), []
+
+    def recording(runs):
+        records.extend(r for measured in runs.values() for r in measured)
+        return solution(runs)
+
+    cells = _hidden_cells("evaluating_a_checker", "q2")
+    assert len(cells) >= 5
+    for source in cells:
+        exec(source, {"fastest_valid_threshold": recording})
+    assert len(records) > 500
+    impossible = [r for r in records if r["path_valid"] and not r["success"]]
+    assert not impossible, f"a hidden test builds records the specification calls impossible: {impossible[:3]}"
+    assert all(set(r) == {"total_s", "success", "path_valid"} and r["total_s"] > 0 for r in records)
+
+
 def test_the_report_ends_with_the_score_and_shows_feedback_where_points_were_lost():
     result = {
         "assignment": "a",

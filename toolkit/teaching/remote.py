@@ -205,19 +205,8 @@ def _apply(value: object, after: object) -> None:
     if kind == "rng" and isinstance(value, np.random.Generator) and isinstance(data, dict):
         with contextlib.suppress(ValueError, TypeError, KeyError):  # not a state of this generator: left as it is
             value.bit_generator.state = data
-    elif kind == "value" and isinstance(value, np.ndarray) and isinstance(data, np.ndarray):
-        floats = data.dtype.kind in "fc" and value.dtype.kind in "fc"
-        if data.shape == value.shape and not np.array_equal(data, value, equal_nan=floats):
-            value[...] = data
-    elif kind == "value" and torch is not None and isinstance(value, torch.Tensor) and isinstance(data, torch.Tensor):
-        if data.shape == value.shape and not torch.equal(data.to(value.dtype), value.detach()):
-            with torch.no_grad():  # only where it changed: a copy would stale the graphs that saved it
-                value.copy_(data)
-    elif kind == "value" and type(value) is type(data) and isinstance(value, list):
-        value[:] = data
-    elif kind == "value" and type(value) is type(data) and isinstance(value, dict):
-        value.clear()
-        value.update(data)
+    elif kind == "value":
+        _update(value, data)
     elif kind == "module" and torch is not None and isinstance(value, torch.nn.Module) and isinstance(data, dict):
         mine = value.state_dict()
         with torch.no_grad():
@@ -230,6 +219,36 @@ def _apply(value: object, after: object) -> None:
             old = vars(value).get(name)
             if (isinstance(old, np.ndarray) and isinstance(new, np.ndarray)) or type(old) is type(new):
                 setattr(value, name, new)
+
+
+def _update(value: object, data: object) -> object:
+    """``value`` made equal to ``data`` in place where it can be (arrays, tensors, lists, dicts, and their items;
+    only what changed: a copy would stale a graph that saved a tensor); returns what to hold in its place."""
+    torch = sys.modules.get("torch")
+    if isinstance(value, np.ndarray) and isinstance(data, np.ndarray) and data.shape == value.shape:
+        floats = data.dtype.kind in "fc" and value.dtype.kind in "fc"
+        if not np.array_equal(data, value, equal_nan=floats):
+            value[...] = data
+        return value
+    if torch is not None and isinstance(value, torch.Tensor) and isinstance(data, torch.Tensor):
+        if data.shape == value.shape and not torch.equal(data.to(value.dtype), value.detach()):
+            with torch.no_grad():
+                value.copy_(data)
+        return value
+    if isinstance(value, tuple) and isinstance(data, tuple) and len(value) == len(data):
+        for item, new in zip(value, data):
+            _update(item, new)
+        return value
+    if type(value) is list and type(data) is list:
+        same = len(value) == len(data)
+        value[:] = [_update(item, new) for item, new in zip(value, data)] if same else data
+        return value
+    if type(value) is dict and type(data) is dict:
+        kept = {key: _update(value[key], new) if key in value else new for key, new in data.items()}
+        value.clear()
+        value.update(kept)
+        return value
+    return data
 
 
 def _with_gradients(result: object, gradients: object, args: tuple, kwargs: dict) -> object:

@@ -120,7 +120,7 @@ def _state(value: object) -> object:
     """What became of an argument, as plain values (None where nothing of it can come back)."""
     if isinstance(value, np.random.Generator):
         return ["rng", value.bit_generator.state]
-    if isinstance(value, np.ndarray | list | dict):
+    if isinstance(value, np.ndarray | list | dict | tuple):
         return ["value", value]
     torch = sys.modules.get("torch")
     if torch is not None and isinstance(value, torch.Tensor):
