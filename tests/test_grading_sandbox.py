@@ -105,8 +105,7 @@ except Exception:
 import toolkit.teaching.grading as _g
 _g.run_case = lambda code, submission: None
 def bridge_test(checker, n_attempts, sigma, rng):
-    empty = np.zeros((0, 2))
-    return empty, empty, empty
+    return None
 """,
     "fakes_the_results_and_exits": """
 def bridge_test(checker, n_attempts, sigma, rng):
