@@ -63,7 +63,7 @@ class Submission:
         self.notebook, self.assignment, self.deadline = Path(notebook), assignment, deadline
         self.isolate, self.cpu_s = isolate, cpu_s
         self.process: subprocess.Popen | None = None
-        self.starts, self.names = 0, []
+        self.starts, self.names = 0, list[str]()
         self.checkers: dict[int, CollisionChecker] = {}
 
     def start(self) -> list[str]:
@@ -147,6 +147,7 @@ class Submission:
         """A question the submission asked a checker: the grader's checker answers it (and counts it)."""
         checker = self.checkers.get(question.get("ask"))  # type: ignore[arg-type]
         Q, method, cap = question.get("Q"), question.get("method"), question.get("cap")
+        reply: dict[str, object]
         try:
             if checker is None or not isinstance(Q, np.ndarray) or Q.ndim != 2 or Q.shape[1] != checker.robot.dof:
                 raise ValueError("a checker is asked about an array (N, dof) of its robot's configurations")
@@ -259,9 +260,9 @@ def _with_gradients(result: object, gradients: object, args: tuple, kwargs: dict
         return result
     for item in gradients:
         where, name, grad = item if isinstance(item, list) and len(item) == 3 else (None, None, None)
-        value = args[where] if isinstance(where, int) and 0 <= where < len(args) else kwargs.get(where)  # type: ignore[arg-type]
+        value = args[where] if isinstance(where, int) and 0 <= where < len(args) else kwargs.get(where)
         if isinstance(value, torch.nn.Module):
-            value = dict(value.named_parameters()).get(name)  # type: ignore[arg-type]
+            value = dict(value.named_parameters()).get(name)
         if isinstance(value, torch.Tensor) and isinstance(grad, torch.Tensor) and grad.shape == value.shape:
             result = result + ((value - value.detach()) * grad.to(value.dtype)).sum()
     return result
