@@ -1294,7 +1294,7 @@ def fastest_valid_threshold(runs):
 """,
         "q2 sentence 5",
     ),
-    "threshold_statistics_median": _correct(
+    "threshold_min_over_pairs": _correct(
         "evaluating_a_checker",
         """
 def fastest_valid_threshold(runs):
