@@ -202,7 +202,7 @@ def _apply(value: object, after: object) -> None:
     if not (isinstance(after, list) and len(after) == 2):
         return
     kind, data = after
-    torch = sys.modules.get("torch")
+    torch = wire.loaded_torch()
     if kind == "rng" and isinstance(value, np.random.Generator) and isinstance(data, dict):
         with contextlib.suppress(ValueError, TypeError, KeyError):  # not a state of this generator: left as it is
             value.bit_generator.state = data
@@ -225,7 +225,7 @@ def _apply(value: object, after: object) -> None:
 def _update(value: object, data: object) -> object:
     """``value`` made equal to ``data`` in place where it can be (arrays, tensors, lists, dicts, and their items;
     only what changed: a copy would stale a graph that saved a tensor); returns what to hold in its place."""
-    torch = sys.modules.get("torch")
+    torch = wire.loaded_torch()
     if isinstance(value, np.ndarray) and isinstance(data, np.ndarray) and data.shape == value.shape:
         floats = data.dtype.kind in "fc" and value.dtype.kind in "fc"
         if not np.array_equal(data, value, equal_nan=floats):
@@ -255,7 +255,7 @@ def _update(value: object, data: object) -> object:
 def _with_gradients(result: object, gradients: object, args: tuple, kwargs: dict) -> object:
     """``result``; a scalar tensor given, for each gradient the submission sent, a term with that gradient with
     respect to the grader's own parameter or tensor (``(p - p.detach()) * g``: zero in value)."""
-    torch = sys.modules.get("torch")
+    torch = wire.loaded_torch()
     if torch is None or not isinstance(result, torch.Tensor) or result.ndim != 0 or not isinstance(gradients, list):
         return result
     for item in gradients:

@@ -122,7 +122,7 @@ def _state(value: object) -> object:
         return ["rng", value.bit_generator.state]
     if isinstance(value, np.ndarray | list | dict | tuple):
         return ["value", value]
-    torch = sys.modules.get("torch")
+    torch = wire.loaded_torch()
     if torch is not None and isinstance(value, torch.Tensor):
         return ["value", value.detach()]
     if torch is not None and isinstance(value, torch.nn.Module):
@@ -135,7 +135,7 @@ def _state(value: object) -> object:
 def _gradients(result: object, args: tuple, kwargs: dict) -> list:
     """``[[argument, parameter name or "", gradient], ...]``: the gradient of a scalar tensor ``result`` with respect
     to every parameter of the arguments that are modules and every argument tensor that requires it."""
-    torch = sys.modules.get("torch")
+    torch = wire.loaded_torch()
     if torch is None or not isinstance(result, torch.Tensor) or result.ndim != 0 or not result.requires_grad:
         return []
     leaves = []

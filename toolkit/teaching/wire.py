@@ -17,6 +17,7 @@ import json
 import os
 import select
 import struct
+import sys
 import time
 
 import numpy as np
@@ -86,6 +87,16 @@ def _key(key: object) -> object:
     if isinstance(key, np.ndarray | list):
         raise NotPlain("a dict key that is an array or a list")
     return key
+
+
+def loaded_torch():
+    """torch where this process has imported it (an import under way in another thread is waited for), else None:
+    only then can a value be a tensor."""
+    if "torch" not in sys.modules:
+        return None
+    import torch
+
+    return torch
 
 
 def send(fd: int, payload: bytes) -> None:
