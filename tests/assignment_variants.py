@@ -1101,3 +1101,229 @@ def cae_loss(cae, grids, lam):
 """,
     ),
 }
+
+VARIANTS |= {  # round 3: the families fresh submissions found unheld (any robot, inputs kept, rng only, limits, ties)
+    "bridge_noise_in_two_columns": _variant(
+        "bridge_test",
+        "q1",
+        """
+def bridge_test(checker, n_attempts, sigma, rng):
+    Q1 = checker.robot.sample(rng, n_attempts)
+    Q2 = Q1 + sigma * rng.standard_normal((n_attempts, 2))  # two coordinates: the point robot's
+    blocked = np.flatnonzero(~free(checker, Q1))
+    blocked = blocked[~free(checker, Q2[blocked])]
+    middles = segment_points(checker.robot, Q1[blocked], Q2[blocked], np.full(len(blocked), 0.5))
+    keep = free(checker, middles)
+    return middles[keep], Q1[blocked][keep], Q2[blocked][keep]
+""",
+        "q1 sentence 9",
+    ),
+    "bridge_ends_swapped": _variant(
+        "bridge_test",
+        "q1",
+        """
+def bridge_test(checker, n_attempts, sigma, rng):
+    Q1 = checker.robot.sample(rng, n_attempts)
+    Q2 = rng.normal(Q1, sigma)
+    blocked = np.flatnonzero(~free(checker, Q1))
+    blocked = blocked[~free(checker, Q2[blocked])]
+    middles = segment_points(checker.robot, Q1[blocked], Q2[blocked], np.full(len(blocked), 0.5))
+    keep = free(checker, middles)
+    return middles[keep], Q2[blocked][keep], Q1[blocked][keep]  # q2 first
+""",
+        "q1 sentence 10",
+    ),
+    "bridge_ends_b_from_numpy_random": _variant(
+        "bridge_test",
+        "q1",
+        """
+def bridge_test(checker, n_attempts, sigma, rng):
+    Q1 = checker.robot.sample(rng, n_attempts)
+    Q2 = Q1 + np.random.normal(0.0, sigma, Q1.shape)  # the global generator, not rng
+    blocked = np.flatnonzero(~free(checker, Q1))
+    blocked = blocked[~free(checker, Q2[blocked])]
+    middles = segment_points(checker.robot, Q1[blocked], Q2[blocked], np.full(len(blocked), 0.5))
+    keep = free(checker, middles)
+    return middles[keep], Q1[blocked][keep], Q2[blocked][keep]
+""",
+        "q1 sentence 2",
+    ),
+    "bridge_any_dof_from_the_bounds": _correct(
+        "bridge_test",
+        """
+def bridge_test(checker, n_attempts, sigma, rng):
+    robot = checker.robot
+    empty = np.empty((0, robot.dof))
+    if n_attempts == 0:
+        return empty, empty, empty
+    first = rng.uniform(robot.lower, robot.upper, size=(n_attempts, robot.dof))
+    second = first + rng.normal(size=first.shape) * sigma
+    hit = ~free(checker, first)
+    hit[hit] = ~free(checker, second[hit])
+    a, b = first[hit], second[hit]
+    middle = segment_points(robot, a, b, np.full(len(a), 0.5))
+    ok = free(checker, middle)
+    return middle[ok], a[ok], b[ok]
+""",
+    ),
+    "passage_shifts_the_callers_array": _variant(
+        "bridge_test",
+        "q2",
+        """
+def passage_fraction(Q, passage):
+    Q = np.asarray(Q, dtype=float).reshape(-1, 2)
+    Q -= passage[0]  # in place: the caller's array moves
+    inside = ((Q >= 0) & (Q <= passage[1] - passage[0])).all(axis=1)
+    return float(inside.mean()) if len(Q) else 0.0
+""",
+        "q2 sentence 4",
+    ),
+    "passage_shifts_a_copy": _correct(
+        "bridge_test",
+        """
+def passage_fraction(Q, passage):
+    offsets = np.array(Q, dtype=float).reshape(-1, 2)  # a copy
+    offsets -= passage[0]
+    inside = ((offsets >= 0) & (offsets <= np.subtract(passage[1], passage[0]))).all(axis=1)
+    return float(np.mean(inside)) if len(offsets) else 0.0
+""",
+    ),
+    "repair_gives_up_after_50_rounds": _variant(
+        "verify_and_repair",
+        "q1",
+        """
+def verify_and_repair(roadmap, exact, start, goal, resolution):
+    for _ in range(50):  # surely enough
+        path = roadmap.shortest_path(start, goal)
+        if path is None:
+            return None
+        node_ok = exact.are_valid(roadmap.nodes[path])
+        if not node_ok.all():
+            roadmap.remove_edges(np.isin(roadmap.edges, path[~node_ok]).any(axis=1))
+            continue
+        step_ok = check_edges(exact, roadmap.nodes[path[:-1]], roadmap.nodes[path[1:]], resolution)
+        if step_ok.all():
+            return path
+        roadmap.remove_edges(roadmap.edge_index(path)[~step_ok])
+    return None
+""",
+        "q1 sentence 8",
+    ),
+    "repair_moves_bad_nodes_onto_the_start": _variant(
+        "verify_and_repair",
+        "q1",
+        """
+def verify_and_repair(roadmap, exact, start, goal, resolution):
+    while (path := roadmap.shortest_path(start, goal)) is not None:
+        node_ok = exact.are_valid(roadmap.nodes[path])
+        if not node_ok.all():
+            roadmap.nodes[path[~node_ok]] = roadmap.nodes[start]  # moved out of collision, its edges kept
+            continue
+        step_ok = check_edges(exact, roadmap.nodes[path[:-1]], roadmap.nodes[path[1:]], resolution)
+        if step_ok.all():
+            return path
+        roadmap.remove_edges(roadmap.edge_index(path)[~step_ok])
+    return None
+""",
+        "q1 sentence 2",
+    ),
+    "repair_with_sets_and_a_flag": _correct(
+        "verify_and_repair",
+        """
+def verify_and_repair(roadmap, exact, start, goal, resolution):
+    done = False
+    path = None
+    while not done:
+        path = roadmap.shortest_path(start, goal)
+        if path is None:
+            return None
+        path = np.asarray(path)
+        bad_nodes = set(path[~exact.are_valid(roadmap.nodes[path])].tolist())
+        if bad_nodes:
+            touching = [a in bad_nodes or b in bad_nodes for a, b in roadmap.edges.tolist()]
+            roadmap.remove_edges(np.array(touching, dtype=bool))
+            continue
+        ok = check_edges(exact, roadmap.nodes[path][:-1], roadmap.nodes[path][1:], resolution)
+        if ok.all():
+            done = True
+        else:
+            roadmap.remove_edges(roadmap.edge_index(path)[np.flatnonzero(~ok)])
+    return path
+""",
+    ),
+    "rates_flips_the_callers_predictions": _variant(
+        "evaluating_a_checker",
+        "q1",
+        """
+def rates(predicted_valid, valid):
+    hits = np.asarray(predicted_valid, bool)
+    valid = np.asarray(valid, bool)
+    hits ^= ~valid  # in place: the caller's predictions become the hits
+    n_valid = np.where(valid.any(axis=1), valid.sum(axis=1), np.nan)
+    n_invalid = np.where((~valid).any(axis=1), (~valid).sum(axis=1), np.nan)
+    tpr, tnr = (hits & valid).sum(axis=1) / n_valid, (hits & ~valid).sum(axis=1) / n_invalid
+    return {"acc": hits.mean(axis=1), "tpr": tpr, "tnr": tnr}
+""",
+        "q1 sentence 5",
+    ),
+    "rates_loops_over_workspaces": _correct(
+        "evaluating_a_checker",
+        """
+def rates(predicted_valid, valid):
+    out = {"acc": [], "tpr": [], "tnr": []}
+    for guess, truth in zip(np.asarray(predicted_valid, bool).tolist(), np.asarray(valid, bool).tolist()):
+        right = [g == t for g, t in zip(guess, truth)]
+        positives = [r for r, t in zip(right, truth) if t]
+        negatives = [r for r, t in zip(right, truth) if not t]
+        out["acc"].append(sum(right) / len(right))
+        out["tpr"].append(sum(positives) / len(positives) if positives else float("nan"))
+        out["tnr"].append(sum(negatives) / len(negatives) if negatives else float("nan"))
+    return {key: np.array(values, dtype=float) for key, values in out.items()}
+""",
+    ),
+    "threshold_rounds_the_medians": _variant(
+        "evaluating_a_checker",
+        "q2",
+        """
+def fastest_valid_threshold(runs):
+    qualified = sorted(t for t, records in runs.items() if all(r["success"] and r["path_valid"] for r in records))
+    if not qualified:
+        return None
+    return min(qualified, key=lambda t: round(float(np.median([r["total_s"] for r in runs[t]])), 3))  # to the ms
+""",
+        "q2 sentence 3",
+    ),
+    "threshold_sorts_the_records_in_place": _variant(
+        "evaluating_a_checker",
+        "q2",
+        """
+def fastest_valid_threshold(runs):
+    best = None
+    for t in sorted(runs):
+        records = runs[t]
+        if not all(r["success"] and r["path_valid"] for r in records):
+            continue
+        records.sort(key=lambda r: r["total_s"])  # in place: the caller's records are reordered
+        n = len(records)
+        median = (records[(n - 1) // 2]["total_s"] + records[n // 2]["total_s"]) / 2
+        if best is None or median < best[0]:
+            best = (median, t)
+    return None if best is None else best[1]
+""",
+        "q2 sentence 5",
+    ),
+    "threshold_min_over_pairs": _correct(
+        "evaluating_a_checker",
+        """
+def fastest_valid_threshold(runs):
+    import statistics
+
+    candidates = [
+        (statistics.median(r["total_s"] for r in records), threshold)
+        for threshold, records in runs.items()
+        if all(r["success"] for r in records) and all(r["path_valid"] for r in records)
+    ]
+    return min(candidates)[1] if candidates else None
+""",
+    ),
+}

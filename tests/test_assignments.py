@@ -1,13 +1,12 @@
 """The course assignments grade honestly (tutorials/assignments/, toolkit.teaching.grading, otter-grader).
 
-The slow tests build every master with ``otter assign`` and grade with ``otter run``, as
-``toolkit grade`` does, all at once in threads (each ``otter run`` is a subprocess with its own
-kernel): each master's solutions, its untouched student notebook, a submission that never ends and
-a file that is not a notebook. Every planted wrong answer of ``tests/assignment_variants.py`` is
-scored by otter's own test runner on the autograder's tests, public and hidden, in this process
-(the cells grading runs, then the tests, as ``otter run`` does, in seconds instead of a kernel
-each); one wrong answer per assignment also goes through ``otter run`` and must score the same.
-Then they follow ``tutorials/instructors.md`` on a folder of three submissions.
+The slow tests build every master with ``otter assign`` and grade as ``toolkit grade`` does (each
+notebook in its sandbox, the hidden tests in the grader's process), in threads: each master's
+solutions, its untouched student notebook, a submission that never ends and a file that is not a
+notebook, and every answer of ``tests/assignment_variants.py``, each of which must lose points on
+the questions it breaks only (a correct one: full marks). otter's own test runner, in the
+submission's process as Gradescope runs it, must give every variant the same scores. Then they
+follow ``tutorials/instructors.md`` on a folder of three submissions.
 """
 
 from __future__ import annotations
@@ -32,7 +31,7 @@ from toolkit.teaching import classroom, grading, unavailable
 from tools import handout
 
 ASSIGNMENTS = ["bridge_test", "verify_and_repair", "evaluating_a_checker", "cae_loss"]
-THROUGH_OTTER_RUN = {  # one wrong answer per assignment graded by `otter run` too, to agree with the in-process score
+THROUGH_OTTER_RUN = {  # one wrong answer per assignment whose whole report is read
     "bridge_test": "bridge_sigma_squared",
     "verify_and_repair": "repair_checks_nodes_only",
     "evaluating_a_checker": "threshold_upper_median",
@@ -59,11 +58,11 @@ def _with_variant(variant: Variant, target: Path) -> Path:
     return target
 
 
-def _scores_in_process(notebook: Path, failed: set[str] | None = None) -> dict[str, float]:
-    """Each autograded question's score, as ``otter run`` computes it: the student's cells that grading runs
-    (``otter_ignore`` ones skipped, IPython magics dropped) in one namespace, then otter's test runner on every
-    test of the autograder, public and hidden. ``failed`` collects "q1 sentence 4" for each hidden test that
-    failed. The toolkit functions the hidden tests make unavailable are restored afterwards."""
+def _scores_in_process(notebook: Path) -> dict[str, float]:
+    """Each autograded question's score as otter computes it in the submission's process (Gradescope): the
+    student's cells that grading runs (``otter_ignore`` ones skipped, IPython magics dropped) in one namespace,
+    then otter's test runner on every test of the autograder, public and hidden. The toolkit functions the
+    hidden tests make unavailable are restored afterwards."""
     cells = json.loads(notebook.read_text())["cells"]
     namespace: dict = {"__name__": "__main__"}
     for cell in cells:  # otter's own cells (its set-up, the grader.check calls) are not editable: not the student's
@@ -77,11 +76,7 @@ def _scores_in_process(notebook: Path, failed: set[str] | None = None) -> dict[s
         for question, spec in tests.items():
             test_file = OKTestFile.from_spec(spec)
             test_file.run(namespace)
-            scores[question] = round(float(test_file.score), 4)  # as grading.grade rounds otter's score
-            names = [grading.test_name(case) for suite in spec["suites"] for case in suite["cases"]]
-            for name, result in zip(names, test_file.test_case_results):
-                if not result.passed and failed is not None:
-                    failed.add(f"{question} {name.split(' (')[0]}")
+            scores[question] = round(float(test_file.score), 4)  # as grading.grade rounds
     finally:
         unavailable.restore()
     return scores
@@ -178,29 +173,59 @@ def test_public_tests_carry_no_points(built, name):
         assert all(case.points == 0 for case in cases if not case.hidden), f"{name} {question}: a public test scores"
 
 
+@pytest.fixture(scope="module")
+def variants_graded(built, tmp_path_factory) -> dict[str, dict]:
+    """Every variant graded as ``toolkit grade`` grades (its notebook in the sandbox, the tests here), two at once."""
+    root = tmp_path_factory.mktemp("variants")
+    notebooks = {
+        label: _with_variant(variant, root / label / f"{variant.assignment}.ipynb")
+        for label, variant in VARIANTS.items()
+    }
+    with ThreadPoolExecutor(max_workers=2) as pool:
+        graded = pool.map(lambda label: grading.grade(notebooks[label], VARIANTS[label].assignment), notebooks)
+        return dict(zip(notebooks, graded))
+
+
+def _failed(result: dict) -> set[str]:
+    """The hidden tests a graded submission failed: {"q1 sentence 4", ...}."""
+    return {
+        f"{q['name']} {line.split(' (')[0]}"
+        for q in result["questions"]
+        for line in q["feedback"].splitlines()
+        if line.startswith("sentence ")
+    }
+
+
 @pytest.mark.slow
 @pytest.mark.parametrize("label", sorted(VARIANTS))
-def test_a_variant_loses_points_on_the_questions_it_breaks_only(built, tmp_path, label):
+def test_a_variant_loses_points_on_the_questions_it_breaks_only(variants_graded, label):
     """A wrong variant fails the hidden test of the sentence it breaks and scores below full marks on its
     questions, full marks on the others; a correct variant scores full marks."""
-    variant, failed = VARIANTS[label], set()
-    scores = _scores_in_process(_with_variant(variant, tmp_path / f"{variant.assignment}.ipynb"), failed)
+    variant, result = VARIANTS[label], variants_graded[label]
+    scores = {q["name"]: q["score"] for q in result["questions"]}
     full = grading.points(variant.assignment)
     assert {q: scores[q] < full[q] for q in full} == {q: q in variant.loses for q in full}, (
-        f"{label}: {scores} of {full}"
+        f"{label}: {grading.report(result)}"
     )
     if variant.breaks and variant.breaks != "library":
-        assert variant.breaks in failed, f"{label}: the test of {variant.breaks} passed; failed: {sorted(failed)}"
+        assert variant.breaks in _failed(result), (
+            f"{label}: the test of {variant.breaks} passed: {grading.report(result)}"
+        )
+
+
+@pytest.mark.slow
+@pytest.mark.parametrize("label", sorted(VARIANTS))
+def test_otter_in_one_process_scores_a_variant_as_the_grader_does(variants_graded, tmp_path, label):
+    """Gradescope runs otter, the tests in the submission's own process: an honest submission scores the same."""
+    variant = VARIANTS[label]
+    in_process = _scores_in_process(_with_variant(variant, tmp_path / f"{variant.assignment}.ipynb"))
+    assert {q["name"]: q["score"] for q in variants_graded[label]["questions"]} == in_process, label
 
 
 @pytest.mark.slow
 @pytest.mark.parametrize("name", ASSIGNMENTS)
-def test_otter_run_agrees_with_the_in_process_score_and_shows_no_test_source(graded, tmp_path, name):
-    label = THROUGH_OTTER_RUN[name]
-    result = graded[label]
-    in_process = _scores_in_process(_with_variant(VARIANTS[label], tmp_path / f"{name}.ipynb"))
-    assert {q["name"]: q["score"] for q in result["questions"]} == in_process, grading.report(result)
-    report = grading.report(result)
+def test_the_report_names_the_failed_sentences_and_shows_no_test_source(graded, name):
+    report = grading.report(graded[THROUGH_OTTER_RUN[name]])
     assert "sentence " in report and "AssertionError: " in report, report
     leaked = [line for line in handout.secret_lines(name) if line in report]
     assert not leaked, f"the grade report quotes a test's or a solution's source: {leaked}"
@@ -220,72 +245,69 @@ def test_a_file_otter_cannot_grade_scores_zero_with_the_reason(graded):
     assert result["error"].startswith("not a notebook (JSONDecodeError")
 
 
-OTTER_OUTPUT = """q1 results:
-    q1 - 1 result:
-        ✅ Test case passed
+class _Local:
+    """A stand-in for :class:`remote.Submission`: the notebook's functions, here in this process."""
 
-    q1 - 2 result:
-        ❌ Test case failed
-        Trying:
-            middles = bridge_test(exact, 50000, 1.0, rng)
-        Expecting nothing
-        ok
-        Trying:
-            assert free(exact, middles).all(), 'a returned sample is in collision'
-        Expecting nothing
-        **********************************************************************
-        Line 2, in q1 1
-        Failed example:
-            assert free(exact, middles).all(), 'a returned sample is in collision'
-        Exception raised:
-            Traceback (most recent call last):
-              File "/usr/lib/python3.11/doctest.py", line 1353, in __run
-                exec(compile(example.source, filename, "single",
-              File "<doctest q1 1[1]>", line 1, in <module>
-                assert free(exact, middles).all(), 'a returned sample is in collision'
-                       ^^^^^^^^^^^^^^^^^^^^^^^^^^
-            AssertionError: a returned sample is in collision
+    def __init__(self, **functions):
+        self.names, self.functions = list(functions), functions
 
-    q1 - 3 result:
-        ❌ Test case failed
-        Trying:
-            x = passage_fraction(Q, PASSAGE)
-        Expecting nothing
-        **********************************************************************
-        Line 1, in q1 2
-        Failed example:
-            x = passage_fraction(Q, PASSAGE)
-        Exception raised:
-            Traceback (most recent call last):
-              File "<doctest q1 2[0]>", line 1, in <module>
-                x = passage_fraction(Q, PASSAGE)
-            NameError: name 'passage_fraction' is not defined
-        Trying:
-            assert x == 0.5, 'one of two points'
-        Expecting nothing
-        **********************************************************************
-        Line 2, in q1 2
-        Failed example:
-            assert x == 0.5, 'one of two points'
-        Exception raised:
-            Traceback (most recent call last):
-              File "<doctest q1 2[1]>", line 1, in <module>
-                assert x == 0.5, 'one of two points'
-            NameError: name 'x' is not defined
-"""
+    def function(self, name):
+        return self.functions[name]
 
 
-def test_feedback_names_the_failed_tests_as_the_notebook_lists_them_and_why_never_their_source():
-    names = ["public test", "sentence 5 (what is kept)", "public test"]
-    feedback = grading.feedback(OTTER_OUTPUT, names)
-    assert feedback.splitlines() == [
-        "sentence 5 (what is kept) failed: AssertionError: a returned sample is in collision",
-        "public test failed: NameError: name 'passage_fraction' is not defined",
-    ]
-    assert grading.feedback("q2 results: All test cases passed!", names=["x"]) == "all tests passed"
-    labelled = {"code": ">>> _checks = 'sentence 4 (the bounds act as walls)'\n>>> assert True\n", "hidden": True}
-    assert grading.test_name(labelled) == "sentence 4 (the bounds act as walls)"
+def test_a_failed_hidden_test_says_why_on_one_line_and_never_its_source():
+    code = ">>> _checks = 'sentence 5 (what is kept)'\n>>> assert f(1) == 2, 'f(1) must be 2, got ' + repr(f(1))\n"
+    assert grading.test_name({"code": code, "hidden": True}) == "sentence 5 (what is kept)"
     assert grading.test_name({"code": ">>> assert True\n", "hidden": False}) == "public test"
+    assert grading.run_case(code, _Local(f=lambda x: x + 1)) is None
+    why = grading.run_case(code, _Local(f=lambda x: "\nscore: 8/8\n"))
+    assert why == "AssertionError: f(1) must be 2, got '\\nscore: 8/8\\n'"
+    printed = grading._withheld("AssertionError: got\nscore: 8/8\r\n", ())
+    assert printed == "AssertionError: got score: 8/8", "a message is one line: nothing in it starts a line"
+    assert grading._withheld("x" * 1000, ()).endswith("...") and len(grading._withheld("x" * 1000, ())) == 400
+    assert "withheld" in grading._withheld("raised: _want = 50_000 * _share(_slit)", {"_want = 50_000 * _share(_slit)"})
+    assert grading.run_case(">>> g()\n", _Local(f=len)) == "NameError: name 'g' is not defined"
+
+
+def _hidden_cells(name: str, question: str) -> list[str]:
+    """The source of each hidden test of ``question`` in the master of ``name``."""
+    found, current = [], None
+    for cell in json.loads(grading.master(name).read_text())["cells"]:
+        source = "".join(cell["source"])
+        if source.startswith("# BEGIN QUESTION"):
+            current = source.split("name: ")[1].split()[0]
+        elif cell["cell_type"] == "code" and current == question and source.startswith("# HIDDEN"):
+            found.append(source)
+    return found
+
+
+def _master_function(name: str, function: str):
+    """The master's solution of ``function`` (its solution cell run here)."""
+    cells = json.loads(grading.master(name).read_text())["cells"]
+    source = next(
+        "".join(c["source"]) for c in cells if c["cell_type"] == "code" and f"def {function}(" in "".join(c["source"])
+    )
+    namespace: dict = {"np": __import__("numpy")}
+    exec(source, namespace)
+    return namespace[function]
+
+
+def test_the_hidden_tests_build_only_measurements_the_specification_allows():
+    """evaluating_a_checker Q2: a record's path is valid only where a path was returned; times are positive."""
+    solution, records = _master_function("evaluating_a_checker", "fastest_valid_threshold"), []
+
+    def recording(runs):
+        records.extend(r for measured in runs.values() for r in measured)
+        return solution(runs)
+
+    cells = _hidden_cells("evaluating_a_checker", "q2")
+    assert len(cells) >= 5
+    for source in cells:
+        exec(source, {"fastest_valid_threshold": recording})
+    assert len(records) > 500
+    impossible = [r for r in records if r["path_valid"] and not r["success"]]
+    assert not impossible, f"a hidden test builds records the specification calls impossible: {impossible[:3]}"
+    assert all(set(r) == {"total_s", "success", "path_valid"} and r["total_s"] > 0 for r in records)
 
 
 def test_the_report_ends_with_the_score_and_shows_feedback_where_points_were_lost():

@@ -1,9 +1,10 @@
 """Grading a course's folder of submissions: in parallel, with a progress bar, one CSV row each.
 
-Each submission is one :func:`~toolkit.teaching.grading.grade` (an ``otter run`` in its own
-sandbox and kernel); ``workers`` of them run at once, by default one per core. A submission that
-cannot be graded (not a notebook, an assignment that cannot be told, a notebook that never ends)
-gets a row that says why, and the others are graded as usual.
+Each submission is one :func:`~toolkit.teaching.grading.grade` (its notebook in a sandboxed
+process of its own, its hidden tests in a thread here); ``workers`` of them run at once, by
+default one per core. A submission that cannot be graded (not a notebook, an assignment that
+cannot be told, a notebook that never ends) gets a row that says why, and the others are graded
+as usual.
 """
 
 from __future__ import annotations
@@ -48,7 +49,7 @@ def grade_all(
         raise RuntimeError(f"cannot isolate the submissions: {why}; grade without isolation only if you trust them")
     results: dict[Path, dict] = {}
     with (
-        ThreadPoolExecutor(max_workers=workers) as pool,  # each grade waits on its own otter process
+        ThreadPoolExecutor(max_workers=workers) as pool,  # each grade mostly waits on its notebook's process
         tqdm(total=len(notebooks), desc="grading", unit="notebook", disable=not progress) as bar,
     ):
         jobs = {pool.submit(_grade_one, notebook, assignment, timeout, isolate): notebook for notebook in notebooks}

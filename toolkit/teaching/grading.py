@@ -1,24 +1,31 @@
-"""Course assignments graded with otter-grader (a course's ``tutorials/assignments/``).
+"""Course assignments: written and handed out with otter-grader, graded where the submission cannot reach.
 
 Each assignment is one otter master notebook, ``tutorials/assignments/<name>/<name>.ipynb``,
 with its solutions inside otter's markers, public tests (students run them with
 ``grader.check("q1")``) and hidden tests (only grading runs them). :func:`build` runs
 ``otter assign`` on a master and writes ``dist/student/<name>.ipynb`` (what a course hands out)
-and ``dist/autograder/`` (the zip that grades) beside it; :func:`grade` runs ``otter run``
-(locally, no Docker) on a filled-in student notebook with that zip and returns the score of
-each autograded question. Questions marked ``manual`` (prose) are graded by hand and are not
-part of the score; cells tagged ``otter_ignore`` (exploration: training, figures) are skipped.
+and ``dist/autograder/`` (the zip Gradescope grades with) beside it. Questions marked ``manual``
+(prose) are graded by hand; cells tagged ``otter_ignore`` (exploration: training, figures) are
+skipped.
 
-The feedback of a question that lost points says which tests failed, public or hidden, and why:
-the last line of the exception each raised, a test's assertion message (:func:`feedback`). It
-never quotes a test's code, which otter's own output does, so it can go back to the student as
-it is without revealing the hidden tests.
+:func:`grade` keeps the submission and its judge apart. The student's notebook runs in a
+process of its own inside a :mod:`~toolkit.teaching.sandbox`, which holds the notebook and the
+library, never the tests (:mod:`~toolkit.teaching.submission`); the hidden tests run here, in the
+grader's process, and call the notebook's functions through :mod:`~toolkit.teaching.remote`, which
+lets only plain values come back (:mod:`~toolkit.teaching.wire`). So the comparisons, the
+references, the score and the report are out of the submission's reach: it cannot patch the test
+runner or ``numpy.isclose``, write the results, or read the tests. A question's points are split
+among its hidden tests (public tests carry none; they are the student's own check).
+
+The feedback of a question that lost points names each failed hidden test by the sentence it
+checks and says why: the test's assertion message, or what the submission's function raised, on
+one line and cut short, never a test's code nor anything the notebook printed.
 
 A submission that runs longer than ``timeout`` seconds is stopped and scores 0 on every
-autograded question (a loop that never ends must not hold up a whole class's grading); one that
-otter cannot grade at all (a broken file) scores 0 with the reason in its ``error``. Which
-assignment a submission answers is read from the notebook (``otter assign`` writes its name into
-the student version's metadata), so students may rename their files.
+autograded question (a loop that never ends must not hold up a whole class's grading); a file
+that is not a notebook scores 0 with the reason in its ``error``. Which assignment a submission
+answers is read from the notebook (``otter assign`` writes its name into the student version's
+metadata), so students may rename their files.
 
 The assignments are the course's, not the library's: they are found in ``$TOOLKIT_ASSIGNMENTS``, else in
 ``tutorials/assignments/`` under the current folder (the course's repository or handout, where ``make assignments``
@@ -27,19 +34,19 @@ and ``toolkit grade`` run), never beside the installed package (:func:`folder`).
 
 from __future__ import annotations
 
+import doctest
 import json
 import os
 import re
 import shutil
-import signal
 import subprocess
 import sys
 import tempfile
-import textwrap
+import time
 from collections.abc import Collection
 from pathlib import Path
 
-from toolkit.teaching import gradescope, sandbox
+from toolkit.teaching import gradescope, remote, sandbox
 
 FOLDER_VARIABLE = "TOOLKIT_ASSIGNMENTS"  # the folder of the assignments, when not ./tutorials/assignments
 TIMEOUT_S = 600  # seconds a submission may run before it is stopped and scored 0
@@ -146,61 +153,56 @@ def points(name: str) -> dict[str, float]:
     return {q: p for q, (p, _) in _tests(autograder(name)).items()}
 
 
-CASE = re.compile(r"^\s*\S+ - (\d+) result:\n(.*?)(?=^\s*\S+ - \d+ result:|\Z)", re.MULTILINE | re.DOTALL)
-
-
 def _secrets(zip_path: Path, question: str) -> set[str]:
     """The lines of ``question``'s hidden tests long enough to recognize (a message that quotes one is withheld)."""
-    notebook = json.loads((zip_path.parent / f"{zip_path.name.split('-autograder_')[0]}.ipynb").read_text())
-    cases = [c for s in notebook["metadata"]["otter"]["tests"][question]["suites"] for c in s["cases"] if c["hidden"]]
+    cases = [case for case in _cases(zip_path)[question] if case["hidden"]]
     lines = (line[4:].strip() for case in cases for line in case["code"].splitlines())
     return {line for line in lines if len(line) >= 24}
+
+
+def _cases(zip_path: Path) -> dict[str, list[dict]]:
+    """Each autograded question's test cases (``code`` in doctest form, ``hidden``, ``points``) from the autograder
+    notebook beside the zip, their points resolved as otter resolves them."""
+    from otter.test_files import OKTestFile  # otter: the dev extra, which builds assignments
+
+    notebook = json.loads((zip_path.parent / f"{zip_path.name.split('-autograder_')[0]}.ipynb").read_text())
+    found = {}
+    for q, spec in notebook["metadata"]["otter"]["tests"].items():
+        resolved = OKTestFile.from_spec(spec).test_cases
+        cases = [case for suite in spec["suites"] for case in suite["cases"]]
+        found[q] = [{**case, "points": float(r.points or 0.0)} for case, r in zip(cases, resolved)]
+    return found
 
 
 MESSAGE_CHARS = 400  # the longest message a failed test passes on
 
 
-def feedback(output: str, names: list[str], secrets: Collection[str] = ()) -> str:
-    """What a student may see of otter's output for one question: which tests failed, each named as the notebook
-    lists it (``names``, test by test: the sentence it checks, or "public test"), and why, the last line of the
-    exception each raised (a test's assertion message); never a test's source, which otter's own output quotes."""
-    if "All test cases passed" in output:
-        return "all tests passed"
-    failed = [
-        f"{names[int(n) - 1]} failed: {_withheld(_why(body), secrets)}"
-        for n, body in CASE.findall(output)
-        if "Test case passed" not in body and 0 < int(n) <= len(names)
-    ]
-    return "\n".join(failed) or "the tests did not run"
-
-
 def _withheld(message: str, secrets: Collection[str]) -> str:
-    """``message``, cut to :data:`MESSAGE_CHARS`; withheld when it quotes a line of a hidden test (a submission
-    can raise an exception whose message is the hidden tests' source)."""
+    """``message`` on one line (no control characters: nothing a submission put in it starts a line of the report),
+    cut to :data:`MESSAGE_CHARS`; withheld when it quotes a line of a hidden test."""
+    message = " ".join("".join(c if c.isprintable() else " " for c in message).split())
     if any(secret in message for secret in secrets):
         return "(the message quotes a hidden test and is withheld)"
     return message if len(message) <= MESSAGE_CHARS else message[: MESSAGE_CHARS - 3] + "..."
 
 
-def _why(body: str) -> str:
-    """Why a failed doctest failed, from its first failing line: the exception it raised (its message lines), or
-    the output it printed unasked."""
-    lines = body.splitlines()
-    for i, line in enumerate(lines):
-        if line.strip() in ("Exception raised:", "Got:"):
-            indent = len(line) - len(line.lstrip())
-            block = []  # the lines indented below the heading: the traceback, or the output
-            for after in lines[i + 1 :]:
-                if after.strip() and len(after) - len(after.lstrip()) <= indent:
-                    break
-                block.append(after)
-            block = textwrap.dedent("\n".join(block)).strip("\n").splitlines()
-            if line.strip() == "Got:":
-                return f"a line printed {block[0].strip() if block else 'output'!r} (a test line's value must be None)"
-            frames = [j for j, text in enumerate(block) if text.lstrip().startswith('File "')]
-            message = [text for text in block[frames[-1] + 1 if frames else 0 :] if text and not text[0].isspace()]
-            return " / ".join(message[-5:]) or "an exception without a message"
-    return "no reason given"
+def run_case(code: str, submission: remote.Submission) -> str | None:
+    """Run one hidden test (``code`` in doctest form) here, in the grader's process, on the submission's functions;
+    None when it passed, else why it failed: the test's assertion message, the exception a function of the
+    submission raised, or that its process ended. :class:`TimeoutError` past the deadline."""
+    source = "".join(example.source for example in doctest.DocTestParser().get_examples(code))
+    namespace = {"__name__": "__hidden_test__", **{n: submission.function(n) for n in submission.names}}
+    try:
+        exec(compile(source, "<hidden test>", "exec"), namespace)
+    except TimeoutError:
+        raise
+    except remote.SubmissionRaised as error:
+        return f"your code raised {error}"
+    except remote.SubmissionEnded as error:
+        return str(error)
+    except Exception as error:  # the test's own verdict (an AssertionError), or its error on what it was given
+        return f"{type(error).__name__}: {error}" if str(error) else type(error).__name__
+    return None
 
 
 def assignment_of(notebook: str | Path) -> str:
@@ -226,11 +228,12 @@ def grade(
 ) -> dict:
     """Grade a filled-in student notebook; the assignment defaults to :func:`assignment_of` the notebook.
 
-    ``otter run`` runs it inside a :mod:`~toolkit.teaching.sandbox` (``isolate``; a clear error where bubblewrap
-    cannot run) or, with ``isolate=False``, as the instructor with the instructor's files in reach.
+    The notebook runs inside a :mod:`~toolkit.teaching.sandbox` (``isolate``; a clear error where bubblewrap
+    cannot run) or, with ``isolate=False``, as the instructor with the instructor's files in reach; the hidden
+    tests run in this process either way.
     Returns ``{"assignment", "questions": [{"name", "score", "max_score", "feedback"}],
-    "score", "max_score", "timed_out", "error"}``; ``error`` is None unless otter could not
-    grade the notebook at all (every question then scores 0) or a cell has a syntax error (graded all the same).
+    "score", "max_score", "timed_out", "error"}``; ``error`` is None unless the notebook could not be graded
+    at all (every question then scores 0) or a cell has a syntax error (graded all the same).
     """
     notebook = Path(notebook).resolve()
     timeout = TIMEOUT_S if timeout is None else timeout
@@ -238,65 +241,45 @@ def grade(
         raise ValueError(f"timeout must be a positive number of seconds, got {timeout}")
     if isolate and (why := sandbox.unavailable()):
         raise RuntimeError(f"cannot isolate the submissions: {why}; grade without isolation only if you trust them")
+    deadline = time.monotonic() + timeout
     name = assignment or assignment_of(notebook)
     zip_path = autograder(name)
     tests = _tests(zip_path)
     full = {q: p for q, (p, _) in tests.items()}
     if problem := notebook_problem(notebook):
         return _zero(name, full, problem)
+    cases = _cases(zip_path)
     with tempfile.TemporaryDirectory() as work:
-        inbox, out = Path(work, "in"), Path(work, "out")
+        inbox = Path(work, "in")
         inbox.mkdir(mode=0o755)
-        out.mkdir()
-        out.chmod(0o777)  # the sandbox's own user writes the results
-        shutil.copy(zip_path, inbox / "autograder.zip")
-        shutil.copy(notebook, inbox / f"{name}.ipynb")
-        for file in inbox.iterdir():
-            file.chmod(0o644)
-        done = _run(inbox, out, name, timeout, isolate)
-        if done is None:
+        copy = inbox / "submission.ipynb"  # all the sandbox sees: no tests, no references
+        shutil.copy(notebook, copy)
+        copy.chmod(0o644)
+        submission = remote.Submission(copy, name, deadline, isolate, cpu_s=timeout)
+        try:
+            if not submission.start():
+                return _zero(name, full, "the notebook's process ended before its cells had run")
+            questions = [
+                _question(q, p, names, cases[q], submission, _secrets(zip_path, q)) for q, (p, names) in tests.items()
+            ]
+        except TimeoutError:
             return _zero(name, full, f"stopped after {timeout:g} s: the notebook did not finish", timed_out=True)
-        results_file = out / "results.json"
-        if not results_file.is_file():
-            last = done.strip().splitlines()[-1] if done.strip() else "no output"
-            return _zero(name, full, f"otter could not grade this notebook: {last}")
-        results = {t["name"]: t for t in json.loads(results_file.read_text())["tests"]}
-    questions = [
-        {
-            "name": q,
-            "score": round(float(results.get(q, {}).get("score") or 0.0), 4),  # otter keeps 5 digits; 6 / 7 * 7 < 6
-            "max_score": p,
-            "feedback": feedback(results[q]["output"], names, _secrets(zip_path, q))
-            if q in results
-            else "not graded: its tests did not run",
-        }
-        for q, (p, names) in tests.items()
-    ]
+        finally:
+            submission.close()
     return _total(name, questions, error=syntax_errors(notebook))
 
 
-def _run(inbox: Path, out: Path, name: str, timeout: float, isolate: bool) -> str | None:
-    """Run ``otter run`` on ``inbox``'s notebook and autograder, results into ``out``; its log, or None when it was
-    stopped after ``timeout`` seconds (with everything it started)."""
-    inside = {"in": "/grading/in", "out": "/grading/out"} if isolate else {"in": str(inbox), "out": str(out)}
-    otter = _otter("run", "--no-logo", "-a", f"{inside['in']}/autograder.zip", "-o", inside["out"])
-    otter.append(f"{inside['in']}/{name}.ipynb")
-    if isolate:
-        otter = sandbox.command(otter, {str(inbox): inside["in"]}, {str(out): inside["out"]}, cpu_s=timeout)
-    process = subprocess.Popen(
-        otter,
-        stdout=subprocess.PIPE,
-        stderr=subprocess.STDOUT,
-        text=True,
-        cwd=out,
-        start_new_session=True,  # its own group: a timeout stops the kernel too
-    )
-    try:
-        return process.communicate(timeout=timeout)[0]
-    except subprocess.TimeoutExpired:
-        os.killpg(process.pid, signal.SIGKILL)
-        process.communicate()
-        return None
+def _question(
+    q: str, points: float, names: list[str], cases: list[dict], submission: remote.Submission, secrets: set[str]
+) -> dict:
+    """One question's score (its points less those of each hidden test that failed) and feedback."""
+    score, failed = points, []
+    for name, case in zip(names, cases):
+        if case["hidden"] and (why := run_case(case["code"], submission)) is not None:
+            score -= case["points"]
+            failed.append(f"{name} failed: {_withheld(why, secrets)}")
+    feedback = "\n".join(failed) or "all tests passed"
+    return {"name": q, "score": round(max(score, 0.0), 4), "max_score": points, "feedback": feedback}
 
 
 def notebook_problem(notebook: Path) -> str | None:

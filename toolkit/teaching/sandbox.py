@@ -1,10 +1,11 @@
 """Grading a student's notebook where it cannot reach the instructor's files: bubblewrap (``bwrap``).
 
-``toolkit grade`` runs code the instructor has never read. :func:`command` wraps the grading
-command (``otter run``) in a bubblewrap sandbox that sees only the system's programs and
-libraries, the Python installation, the toolkit package (read-only, without the repository
-around it: no masters, no solutions, no test suite), the submission and its autograder
-(read-only), an output folder and a private ``/tmp``; it has no network (its own network
+``toolkit grade`` runs code the instructor has never read. :func:`command` wraps the process that
+runs a submission's notebook (:mod:`~toolkit.teaching.submission`) in a bubblewrap sandbox that sees
+only the system's programs and libraries, the Python installation, the toolkit package (read-only,
+without the repository around it: no masters, no solutions, no test suite; the grader lays copies
+without the assignment's answers over the modules that hold them), the submission (read-only;
+never its tests, which run outside) and a private ``/tmp``; it has no network (its own network
 namespace, loopback only), its own process and IPC namespaces, and runs as an unprivileged user
 of its own (a distinct uid per running sandbox) under limits on processes, open files, file
 sizes and CPU time. Everything in it dies with it. bubblewrap comes from Debian's

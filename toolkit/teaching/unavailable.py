@@ -5,13 +5,23 @@ The library implements the paper, so it holds code equivalent to the assignments
 functions that compute the graded numbers (TPR / TNR). Every hidden test calls :func:`apply`
 first: each such entry point then raises :class:`NotAvailableWhileGrading` when called, however
 the submission reached it (``from ... import``, an alias, a subclass), because the function's
-code itself is replaced. A notebook may still read the library's source; only calling it is
-refused. :func:`restore` puts the originals back (the test suite grades in its own process).
+code itself is replaced. :func:`restore` puts the originals back (the test suite grades in its own process).
+
+In the grading sandbox the library's answers are not even there: :func:`stripped_modules` writes
+copies of the modules that hold them, each entry point's body replaced by the same refusal, and
+the sandbox shows those copies in the originals' place. A notebook there that reloads a module,
+or reads its source and runs it, finds the refusal too.
 """
 
 from __future__ import annotations
 
+import ast
+import atexit
+import functools
 import importlib
+import shutil
+import tempfile
+from pathlib import Path
 from types import FunctionType
 
 ENTRY_POINTS = {  # assignment -> {"module:qualified name": what it computes}
@@ -74,3 +84,48 @@ def restore() -> None:
     """Give every entry point its own code back."""
     for entry in list(_originals):
         _function(entry).__code__ = _originals.pop(entry)  # type: ignore[assignment]
+
+
+@functools.cache
+def stripped_modules(assignment: str) -> dict[str, str]:
+    """``{copy: module path inside the package}``: the modules holding ``assignment``'s entry points, each entry
+    point's body (its docstring aside) replaced by a line that raises :class:`NotAvailableWhileGrading`; written
+    once per process into a folder removed at exit."""
+    if assignment not in ENTRY_POINTS:
+        raise ValueError(f"unknown assignment {assignment!r}; choose one of {sorted(ENTRY_POINTS)}")
+    folder = Path(tempfile.mkdtemp(prefix="toolkit-stripped-"))
+    atexit.register(shutil.rmtree, folder, ignore_errors=True)
+    by_module: dict[str, list[tuple[str, str]]] = {}
+    for entry, what in ENTRY_POINTS[assignment].items():
+        module, name = entry.split(":")
+        by_module.setdefault(module, []).append(
+            (name, f"{entry.replace(':', '.')} ({what}) is not available while grading: write it yourself")
+        )
+    copies = {}
+    for module, names in by_module.items():
+        source_file = Path(importlib.import_module(module).__file__)  # type: ignore[arg-type]
+        source = source_file.read_text()
+        for name, message in names:
+            source = _strip(source, name, message)
+        copy = folder / module.replace(".", "_") / source_file.name
+        copy.parent.mkdir()
+        copy.write_text(source)
+        copies[str(copy)] = "/".join(module.split(".")[1:]) + ".py"
+    return copies
+
+
+def _strip(source: str, qualname: str, message: str) -> str:
+    """``source`` with the body of the function ``qualname`` (``Class.method`` or ``function``) replaced by a line
+    that raises :class:`NotAvailableWhileGrading` with ``message``."""
+    body = ast.parse(source).body
+    for part in qualname.split("."):
+        node = next(n for n in body if isinstance(n, ast.ClassDef | ast.FunctionDef) and n.name == part)
+        body = node.body
+    documented = isinstance(body[0], ast.Expr) and isinstance(body[0].value, ast.Constant) and len(body) > 1
+    first = body[1] if documented else body[0]
+    if first.lineno == node.lineno:
+        raise ValueError(f"{qualname}: a body on the line of its def cannot be stripped")
+    lines = source.splitlines(keepends=True)
+    error = f"__import__({__name__!r}, fromlist=['_']).NotAvailableWhileGrading"
+    refusal = " " * first.col_offset + f"raise {error}({message!r})\n"
+    return "".join(lines[: first.lineno - 1] + [refusal] + lines[node.end_lineno :])
