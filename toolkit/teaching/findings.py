@@ -188,9 +188,9 @@ def describe_accuracy(label: str, accuracy: float, always_valid: float) -> str:
 
 
 def describe_threshold_sweep(probability: np.ndarray, valid: np.ndarray) -> str:
-    """What a sweep of the decision threshold over ``probability (N,)`` against the truth ``valid (N,)`` shows: up to
-    which threshold the model calls everything valid ("always valid"), the thresholds over which the middle 80 % of
-    its P(valid) lie (narrow: an abrupt switch), and its best accuracy over all thresholds."""
+    """What a sweep of the decision threshold over ``probability (N,)`` against the truth ``valid (N,)`` shows, in three
+    short sentences: up to which threshold the model calls everything valid ("always valid"), the thresholds over
+    which the middle 80 % of its P(valid) lie (narrow: an abrupt switch), and its best accuracy over all thresholds."""
     p, truth = np.asarray(probability, dtype=float), np.asarray(valid, dtype=bool)
     if p.shape != truth.shape or p.ndim != 1 or len(p) == 0:
         raise ValueError(f"probability {p.shape} and valid {truth.shape} must be equal, non-empty (N,) arrays")
@@ -198,10 +198,9 @@ def describe_threshold_sweep(probability: np.ndarray, valid: np.ndarray) -> str:
     accuracy = np.array([np.mean((p >= t) == truth) for t in cuts])  # (thresholds,)
     best = int(np.argmax(accuracy))
     low, high = np.percentile(p, (10, 90))
-    best_at = "above every P(valid): it calls nothing valid" if np.isinf(cuts[best]) else f"at {cuts[best]:.2f}"
+    best_at = "above every P(valid), where it calls nothing valid" if np.isinf(cuts[best]) else f"at {cuts[best]:.2f}"
     return (
-        f'up to a threshold of {p.min():.2f} the model calls every sample valid (TPR 1, TNR 0: "always valid", '
-        f"{truth.mean():.0%} accuracy); the middle 80 % of its P(valid) lie between {low:.2f} and {high:.2f}, so "
-        f"that is where its answers switch; its best accuracy over all thresholds is {accuracy[best]:.0%}, "
-        f"{best_at}"
+        f'Up to a threshold of {p.min():.2f} the model calls every sample valid: TPR 1, TNR 0, "always valid", '
+        f"{truth.mean():.0%} accuracy. The middle 80 % of its P(valid) lie between {low:.2f} and {high:.2f}: that is "
+        f"where its answers switch. Its best accuracy over all thresholds is {accuracy[best]:.0%}, {best_at}."
     )
