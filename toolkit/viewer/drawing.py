@@ -180,8 +180,8 @@ def animation_summary(
         doubted = frames - int(np.sum(model.are_valid(configurations)))
         words.append(
             f"The model's P(valid), the colour of the wireframe around the links (dark low, light high), goes from "
-            f"{p.min():.2f} to {p.max():.2f} along the path, median {np.median(p):.2f}; below its threshold, calling "
-            f"the robot colliding, at {doubted} of the {frames} frames."
+            f"{p.min():.2f} to {p.max():.2f} along the path, median {np.median(p):.2f}; the model calls the robot "
+            f"colliding (P(valid) below its threshold) at {doubted} of the {frames} frames."
         )
     return " ".join(words + ([] if path is None else [_path_words(path)]))
 
