@@ -119,31 +119,32 @@ def test_crossing_interpolates_log_log_between_the_measured_values():
     assert down == {"value": pytest.approx(10**0.5), "learned_wins_above": False}
 
 
-def test_the_conclusion_says_where_learning_wins_or_by_how_much_it_would_have_to():
-    def sweep(label, exact, fcl, learned):
-        return {"label": label, "values": [10, 100], "exact_us": exact, "fcl_us": fcl, "learned_us": learned}
+def test_the_conclusion_says_cheaper_dearer_or_cant_tell_as_the_numbers_beside_it_show():
+    def sweep(label, exact, fcl, learned, values=(10, 100)):
+        return {"label": label, "values": list(values), "exact_us": exact, "fcl_us": fcl, "learned_us": learned}
 
     lines = crossover.conclusion(
         {
             "variables": {
-                "obstacles": sweep("obstacles", [1.0, 2.0], [10.0, 40.0], [3.0, 3.0]),
-                "triangles": sweep("triangles", [50.0, 200.0], [None, None], [1.0, 1.0]),
-                "links": sweep("links", [1.0, 1.0], [None, None], [1.5, 1.04]),
+                "obstacles": sweep("obstacles", [1.0, 2.0], [10.0, 30.0], [3.0, 3.0]),  # dearer; cheaper than FCL
+                "triangles": sweep("triangles", [4.0, 5.0], [None, None], [1.0, 1.0]),  # cheaper
+                "links": sweep("links", [4.0, 4.0], [None, None], [3.0, 5.0]),  # 0.75, 1.25: the band's edges
+                "batch": sweep("batch", [1.0, 1.0, 1.0], [None] * 3, [0.5, 1.0, 2.0], values=(10, 100, 1000)),
             }
         }
     )
-    assert lines[0].startswith(
-        "obstacles: learning never wins over 10-100: at its best (100) the network costs 1.5x the default exact "
-        "check; it would have to be 1.5x cheaper per configuration, or the check that much dearer; against "
-        "python-fcl it wins at 10, 100"
-    )
-    assert lines[1].startswith(
-        "triangles: learning is cheaper than the default exact check at 10, 100 (0.01-0.02x its cost)"
-    )
-    assert lines[2].startswith(
-        "links: learning never wins over 10-100: at its best (100) the network costs about as much as the default "
-        "exact check (1.04x): a tie, not a saving ("
-    )
+    assert lines == [
+        "obstacles: the network against the default exact check: dearer at every value (1.5-3x its cost); "
+        "against python-fcl: cheaper at every value (0.1-0.3x its cost). "
+        "Cost a configuration, µs: default exact 1-2, python-fcl 10-30, network 3.",
+        "triangles: the network against the default exact check: cheaper at every value (0.2-0.25x its cost). "
+        "Cost a configuration, µs: default exact 4-5, network 1.",
+        "links: the network against the default exact check: can't tell (within 25%) at every value "
+        "(0.75-1.2x its cost). Cost a configuration, µs: default exact 4, network 3-5.",
+        "batch: the network against the default exact check: cheaper at 10 (0.5x its cost), can't tell (within "
+        "25%) at 100 (1x its cost) and dearer at 1,000 (2x its cost). Cost a configuration, µs: default "
+        "exact 1, network 0.5-2.",
+    ]
 
 
 def test_the_figure_has_a_log_log_panel_per_variable(swept):

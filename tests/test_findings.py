@@ -155,9 +155,12 @@ def test_describe_threshold_sweep_finds_the_switch_and_the_best_threshold():
     probability = np.array([0.45, 0.46, 0.47, 0.48, 0.9, 0.91, 0.92, 0.93, 0.94, 0.95])
     valid = np.array([False, False, False, False, True, True, True, True, True, True])
     sentence = findings.describe_threshold_sweep(probability, valid)
-    assert sentence.startswith('up to a threshold of 0.45 the model calls every sample valid (TPR 1, TNR 0: "always')
-    assert "60% accuracy" in sentence and "best accuracy over all thresholds is 100%, at 0.90" in sentence
+    assert sentence == (
+        'Up to a threshold of 0.45 the model calls every sample valid: TPR 1, TNR 0, "always valid", 60% accuracy. '
+        "The middle 80 % of its P(valid) lie between 0.46 and 0.94: that is where its answers switch. "  # 0.459, 0.941
+        "Its best accuracy over all thresholds is 100%, at 0.90."
+    )
     flat = findings.describe_threshold_sweep(np.full(4, 0.5), np.array([True, True, True, False]))
-    assert "lie between 0.50 and 0.50" in flat and "is 75%, at 0.50" in flat
+    assert "lie between 0.50 and 0.50" in flat and flat.endswith("is 75%, at 0.50.")
     with pytest.raises(ValueError, match="must be equal, non-empty"):
         findings.describe_threshold_sweep(np.zeros(3), np.zeros(4, dtype=bool))

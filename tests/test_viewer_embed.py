@@ -171,6 +171,28 @@ def test_animation_iframe_embeds_the_page_escaped(planned):
     assert len(robot_poses(page_of(snippet))) == 3
 
 
+def test_the_animation_is_titled_apart_from_the_scene_and_says_p_valid_in_words(make_viewer):
+    class Doubting:  # a model of P(valid) 0.2 at the path's start rising to 0.8 at its end, threshold 0.5
+        robot = scenarios.get("3dc7").robot
+
+        def probability(self, Q):
+            return np.linspace(0.2, 0.8, len(Q))
+
+        def are_valid(self, Q):
+            return self.probability(Q) >= 0.5
+
+    planned_exactly = make_viewer("3dc7", seed=1).plan("BS", seed=0)  # the path, found without the model
+    v = make_viewer("3dc7", seed=1, predictor=lambda workspace: Doubting())
+    v.show_plan(planned_exactly)
+    scene, animation = v.iframe(200), v.animation_iframe(200, frames=5, seconds=1.0)
+    titles = [found(r'title="([^"]*)"', snippet) for snippet in (scene, animation)]
+    assert titles[0].startswith("3D scene of workspace 3dc") and titles[1].startswith("3D animation of workspace 3dc")
+    said = html.unescape(found(r'<p class="scene-summary">([^<]*)</p>', animation))
+    assert "The exact checker finds the robot valid at 5 of the 5 frames." in said  # a verified path
+    assert "goes from 0.20 to 0.80 along the path, median 0.50" in said  # 0.2, 0.35, 0.5, 0.65, 0.8
+    assert "the model calls the robot colliding (P(valid) below its threshold) at 2 of the 5 frames" in said
+
+
 def test_srcdoc_iframe_quotes_the_document_and_shows_without_a_warning(recwarn):
     snippet = viewer.srcdoc_iframe('<p title="a & b">x</p>', height=120, summary="A scene of <3 blocks. Samples: 4.")
     assert snippet == (

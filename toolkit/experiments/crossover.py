@@ -20,8 +20,8 @@ and of the learned checker (untrained networks of the preset's sizes,
 weights), the three timed in turns (:func:`~toolkit.experiments.bench.in_turns`) on the same
 uniform configurations, on one thread (as planning is timed: ``queries.one_thread``), the
 exact answers held to FCL's. :func:`crossing` finds where
-two cost curves cross, :func:`conclusion` says in words where learning wins on this machine,
-or how much cheaper the network (or dearer the check) would have to be.
+two cost curves cross, :func:`conclusion` says in words where the network is the cheaper check on this machine,
+where the dearer, and where the two are too close to tell.
 
 ``toolkit bench --crossover [--scenario S] [--out DIR]``; the figure is
 :func:`toolkit.plots.crossover`; results and their reading: ``docs/benchmarks.md``.
@@ -48,6 +48,7 @@ from toolkit.learning.learned import LearnedChecker
 from toolkit.learning.presets import Preset
 from toolkit.learning.training import TrainedModels
 from toolkit.scenarios import Scenario
+from toolkit.util.verdicts import CHEAPER, CLOSE, DEARER, NEAR, cost_verdict
 
 VARIABLES = {  # what is varied -> the axis label
     "obstacles": "obstacles per workspace (unit blocks)",
@@ -241,52 +242,44 @@ def crossing(values: list, exact_us: list, learned_us: list) -> dict | None:
     return None
 
 
-TIE = 1.1  # a network within 10 % of the exact check's cost saves nothing worth a model (and timings are noisy)
+COST_WORDS = {CHEAPER: "cheaper", NEAR: f"can't tell (within {CLOSE:.0%})", DEARER: "dearer"}  # cost_verdict's words
 
 
 def conclusion(results: dict) -> list[str]:
-    """In words, per variable, where the network is cheaper per configuration than the default exact checker (and
-    by how much, a tie where within 10 %; and where than FCL); where it never is, how many times cheaper it would
-    have to be at its best value (or, the same, how many times dearer the check)."""
+    """In words, per variable, where the network costs less per configuration than the default exact checker, where
+    more and where the two are too close to tell (:func:`toolkit.util.verdicts.cost_verdict`, the chapters' band),
+    the same against python-fcl where it was timed, then the costs: the words never contradict the numbers."""
     lines = []
     for sweep_ in results["variables"].values():
-        values, exact, learned = sweep_["values"], sweep_["exact_us"], sweep_["learned_us"]
-        ratio = np.asarray(learned) / np.asarray(exact)  # > 1: the exact check is cheaper
-        wins = [v for v, r in zip(values, ratio) if r < 1]
-        if wins:
-            cheaper = ratio[ratio < 1]
-            tie = ", within 10 % somewhere: a tie there" if cheaper.max() > 1 / TIE else ""
-            verdict = (
-                f"learning is cheaper than the default exact check at {_listed(wins)} ({_span(cheaper)}x its cost{tie})"
-            )
-        else:
-            best = int(np.argmin(ratio))
-            verdict = (
-                f"learning never wins over {values[0]:,}-{values[-1]:,}: at its best ({values[best]:,}) the network "
-            )
-            if ratio[best] < TIE:
-                verdict += f"costs about as much as the default exact check ({ratio[best]:.2f}x): a tie, not a saving"
-            else:
-                verdict += (
-                    f"costs {ratio[best]:.1f}x the default exact check; it would have to be {ratio[best]:.1f}x "
-                    "cheaper per configuration, or the check that much dearer"
-                )
-        if all(f is not None for f in sweep_["fcl_us"]):
-            fcl_wins = [v for v, f, c in zip(values, sweep_["fcl_us"], learned) if c < f]
-            verdict += f"; against python-fcl it wins at {_listed(fcl_wins) if fcl_wins else 'none'}"
-        span = f"exact {min(exact):.2g}-{max(exact):.2g} us, learned {min(learned):.2g}-{max(learned):.2g} us"
-        lines.append(f"{sweep_['label']}: {verdict} ({span} a configuration).")
+        values, exact, fcl, learned = (sweep_[key] for key in ("values", "exact_us", "fcl_us", "learned_us"))
+        said = [f"the network against the default exact check: {_compared(values, learned, exact)}"]
+        costs = [f"default exact {_span(exact)}"]
+        if all(f is not None for f in fcl):
+            said.append(f"against python-fcl: {_compared(values, learned, fcl)}")
+            costs.append(f"python-fcl {_span(fcl)}")
+        costs.append(f"network {_span(learned)}")
+        lines.append(f"{sweep_['label']}: {'; '.join(said)}. Cost a configuration, µs: {', '.join(costs)}.")
     return lines
 
 
-def _span(ratios: np.ndarray) -> str:
-    """``"0.27-0.29"``, or one figure where they round alike."""
-    low, high = f"{ratios.min():.2f}", f"{ratios.max():.2f}"
+def _compared(values: list, learned: list, exact: list) -> str:
+    """``"cheaper at 10, 50 (0.54-0.7x its cost) and dearer at 500 (1.3x its cost)"``: the values grouped by
+    :data:`COST_WORDS`, each group with its span of ratios (network / exact)."""
+    ratio = np.asarray(learned, dtype=float) / np.asarray(exact, dtype=float)  # (values,)
+    verdicts = [cost_verdict(float(r)) for r in ratio]
+    groups = []
+    for verdict, word in COST_WORDS.items():
+        picked = [i for i, v in enumerate(verdicts) if v == verdict]
+        if picked:
+            where = "every value" if len(picked) == len(values) else ", ".join(f"{values[i]:,}" for i in picked)
+            groups.append(f"{word} at {where} ({_span(ratio[picked])}x its cost)")
+    return ", ".join(groups[:-1]) + (" and " if len(groups) > 1 else "") + groups[-1]
+
+
+def _span(numbers) -> str:
+    """``"0.27-0.29"``, ``"15-2200"``: the least and the most to two significant figures, one where they round alike."""
+    low, high = (np.format_float_positional(f(numbers), precision=2, fractional=False, trim="-") for f in (min, max))
     return low if low == high else f"{low}-{high}"
-
-
-def _listed(values: list) -> str:
-    return ", ".join(f"{v:,}" for v in values)
 
 
 def markdown(results: dict) -> str:

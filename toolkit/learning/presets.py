@@ -1,4 +1,5 @@
-"""Training presets: ``paper`` (§IV-B3, exactly the paper's settings) and ``strong`` (ours).
+"""Training presets: ``paper`` (§IV-B3: every setting the paper states but one, the CAE's optimizer) and ``strong``
+(ours).
 
 ``paper``: the paper's sizes and data counts; the MLP sees ``[z, q]`` and trains with
 Adagrad at learning rate 0.1 and dropout 0.5; the CAE has lambda = 1e-3 and Eq. (1)'s
@@ -94,7 +95,7 @@ PRESETS: dict[str, Preset] = {
         encoding="raw",
         optimizer="adagrad",
         lr=0.1,
-        cae_optimizer="adamw",
+        cae_optimizer="adamw",  # the one deviation: the paper's Adagrad at 0.1 diverges here (chapter 02 says why)
         cae_lr=1e-4,
         dropout=0.5,
         cae_lambda=1e-3,

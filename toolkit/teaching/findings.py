@@ -4,8 +4,9 @@ The chapters' prose states the verdict a student can repeat (written, and true a
 behind it are computed here and shown as tables (``NOTEBOOKS.md``). A verdict is read from an *interval*, not from
 one number, so that a busy machine cannot turn "saves" into "costs": the middle half of the per-query ratios (each
 query timed without and with prediction in turn) for planning, a band of :data:`CLOSE` for a checker's cost timed in
-one round. Where the interval crosses the tie band the verdict is "can't tell". One statistic throughout: medians
-over the queries, their spread as quartiles; a single slow query that moves a mean is listed.
+one round. Where the interval crosses the tie band the verdict is "can't tell" (the words and bands:
+:mod:`toolkit.util.verdicts`). One statistic throughout: medians over the queries, their spread as quartiles; a single
+slow query that moves a mean is listed.
 """
 
 from __future__ import annotations
@@ -14,41 +15,27 @@ from collections.abc import Mapping, Sequence
 
 import numpy as np
 
-TIE = 0.10  # planning: a time ratio within 10 % of 1 is a tie (queries timed in turns moved that much run to run)
-CLOSE = 0.25  # a checker's cost per configuration, timed in a few rounds: within 25 % of the other's, too close to call
+from toolkit.util.verdicts import (  # noqa: F401 (the words and bands; chapters and tests read them here too)
+    CHEAPER,
+    CLOSE,
+    COSTS,
+    DEARER,
+    NEAR,
+    NEGATIVE,
+    POSITIVE,
+    SAVES,
+    TIE,
+    TIES,
+    UNSURE,
+    cost_verdict,
+    judge,
+    time_verdict,
+)
+
 OUTLIER = 5.0  # a query at least this many times the other queries' median total is an outlier
 MOVED = 1.5  # ... and it moves the mean when the mean is this many times the other queries' median
 SCORES = ("acc", "tpr", "tnr")  # a classifier's scores, as toolkit.learning.metrics names them (paper, Table 2)
 SCORE_NAMES = {"acc": "accuracy", "tpr": "TPR", "tnr": "TNR"}
-
-SAVES, COSTS, TIES, UNSURE = "saves time", "costs time", "a tie", "can't tell"  # planning time, with / without
-CHEAPER, DEARER, NEAR = "network cheaper", "network dearer", "close: can't tell"  # a check's cost, network / exact
-POSITIVE, NEGATIVE = (SAVES, CHEAPER), (COSTS, DEARER)  # a verdict never flips between these two from run to run
-
-
-def judge(low: float, high: float, tie: float = TIE) -> str:
-    """``"below"`` when the interval ``[low, high]`` of ratios (with / without, or network / exact) lies below
-    ``1 - tie``, ``"above"`` when it lies above ``1 + tie``, ``"inside"`` when inside the band, else ``"across"``."""
-    if not all(np.isfinite(v) and v > 0 for v in (low, high)) or low > high:
-        raise ValueError(f"an interval of ratios must be positive numbers, low <= high, got {low!r}, {high!r}")
-    if high < 1 - tie:
-        return "below"
-    if low > 1 + tie:
-        return "above"
-    return "inside" if 1 - tie <= low and high <= 1 + tie else "across"
-
-
-def time_verdict(low: float, high: float | None = None, tie: float = TIE) -> str:
-    """:data:`SAVES`, :data:`COSTS`, :data:`TIES` or :data:`UNSURE` for time ratios with / without prediction (one
-    ratio, or an interval)."""
-    return {"below": SAVES, "above": COSTS, "inside": TIES, "across": UNSURE}[
-        judge(low, low if high is None else high, tie)
-    ]
-
-
-def cost_verdict(ratio: float, tie: float = CLOSE) -> str:
-    """:data:`CHEAPER`, :data:`DEARER` or :data:`NEAR` for a cost per configuration, network / exact."""
-    return {"below": CHEAPER, "above": DEARER}.get(judge(ratio, ratio, tie), NEAR)
 
 
 def per_query_ratios(row: Mapping[str, Mapping]) -> np.ndarray:
@@ -201,9 +188,9 @@ def describe_accuracy(label: str, accuracy: float, always_valid: float) -> str:
 
 
 def describe_threshold_sweep(probability: np.ndarray, valid: np.ndarray) -> str:
-    """What a sweep of the decision threshold over ``probability (N,)`` against the truth ``valid (N,)`` shows: up to
-    which threshold the model calls everything valid ("always valid"), the thresholds over which the middle 80 % of
-    its P(valid) lie (narrow: an abrupt switch), and its best accuracy over all thresholds."""
+    """What a sweep of the decision threshold over ``probability (N,)`` against the truth ``valid (N,)`` shows, in three
+    short sentences: up to which threshold the model calls everything valid ("always valid"), the thresholds over
+    which the middle 80 % of its P(valid) lie (narrow: an abrupt switch), and its best accuracy over all thresholds."""
     p, truth = np.asarray(probability, dtype=float), np.asarray(valid, dtype=bool)
     if p.shape != truth.shape or p.ndim != 1 or len(p) == 0:
         raise ValueError(f"probability {p.shape} and valid {truth.shape} must be equal, non-empty (N,) arrays")
@@ -211,10 +198,9 @@ def describe_threshold_sweep(probability: np.ndarray, valid: np.ndarray) -> str:
     accuracy = np.array([np.mean((p >= t) == truth) for t in cuts])  # (thresholds,)
     best = int(np.argmax(accuracy))
     low, high = np.percentile(p, (10, 90))
-    best_at = "above every P(valid): it calls nothing valid" if np.isinf(cuts[best]) else f"at {cuts[best]:.2f}"
+    best_at = "above every P(valid), where it calls nothing valid" if np.isinf(cuts[best]) else f"at {cuts[best]:.2f}"
     return (
-        f'up to a threshold of {p.min():.2f} the model calls every sample valid (TPR 1, TNR 0: "always valid", '
-        f"{truth.mean():.0%} accuracy); the middle 80 % of its P(valid) lie between {low:.2f} and {high:.2f}, so "
-        f"that is where its answers switch; its best accuracy over all thresholds is {accuracy[best]:.0%}, "
-        f"{best_at}"
+        f'Up to a threshold of {p.min():.2f} the model calls every sample valid: TPR 1, TNR 0, "always valid", '
+        f"{truth.mean():.0%} accuracy. The middle 80 % of its P(valid) lie between {low:.2f} and {high:.2f}: that is "
+        f"where its answers switch. Its best accuracy over all thresholds is {accuracy[best]:.0%}, {best_at}."
     )

@@ -158,9 +158,37 @@ def scene_summary(
         wrong = samples.get("model wrong")
         words[-1] += "." if wrong is None else f", {wrong} the model gets wrong (sparkles)."
     if path is not None:
-        length = float(np.sum(np.linalg.norm(np.diff(path, axis=0), axis=1)))
-        words.append(f"Path: {len(path)} configurations, length {length:.2f} in configuration space.")
+        words.append(_path_words(path))
     return " ".join(words)
+
+
+def animation_summary(
+    workspace: Workspace, robot: BoxRobot, configurations: np.ndarray, exact, model, path: np.ndarray | None
+) -> str:
+    """The animation of the robot along ``path (P, dof)`` in words, the text alternative of its picture (its first
+    sentence titles the page): how many of the frames' ``configurations (F, dof)`` the ``exact`` checker finds valid
+    and, where ``model`` gives ``probability(Q)`` (shown only as the wireframe's colour), its P(valid) along the path
+    and how many frames it calls colliding."""
+    frames, n_valid = len(configurations), int(np.sum(exact.are_valid(configurations)))
+    words = [
+        f"3D animation of workspace {workspace.family} ({len(workspace.boxes)} blocks) with the {robot.name} robot "
+        f"moving along a planned path in {frames} frames.",
+        f"The exact checker finds the robot valid at {n_valid} of the {frames} frames.",
+    ]
+    if hasattr(model, "probability"):
+        p = np.asarray(model.probability(configurations), dtype=float)  # (F,)
+        doubted = frames - int(np.sum(model.are_valid(configurations)))
+        words.append(
+            f"The model's P(valid), the colour of the wireframe around the links (dark low, light high), goes from "
+            f"{p.min():.2f} to {p.max():.2f} along the path, median {np.median(p):.2f}; the model calls the robot "
+            f"colliding (P(valid) below its threshold) at {doubted} of the {frames} frames."
+        )
+    return " ".join(words + ([] if path is None else [_path_words(path)]))
+
+
+def _path_words(path: np.ndarray) -> str:
+    length = float(np.sum(np.linalg.norm(np.diff(path, axis=0), axis=1)))
+    return f"Path: {len(path)} configurations, length {length:.2f} in configuration space."
 
 
 def probability_colors(probability: npt.ArrayLike) -> np.ndarray:

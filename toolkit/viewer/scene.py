@@ -232,11 +232,8 @@ class Viewer:
         to :func:`toolkit.planning.sampling.register_sampler`: validity decided by the model
         when one is loaded (Algorithm 1, lines 2-3), else exactly.
         """
-        rng = np.random.default_rng(seed)
-        if sampler == RAW:
-            Q = self.robot.sample(rng, n)
-        else:
-            Q = make_sampler(sampler, self.model or self.exact).sample(n, rng)
+        rng, checker = np.random.default_rng(seed), self.model or self.exact
+        Q = self.robot.sample(rng, n) if sampler == RAW else make_sampler(sampler, checker).sample(n, rng)
         self.show_samples(Q, at=at)
         return Q
 
@@ -343,8 +340,10 @@ class Viewer:
         return document
 
     def animation_iframe(self, height: int = 480, *, frames: int = 60, seconds: float = 6.0) -> str:
-        """:meth:`animation_html` as an ``<iframe>`` for ``IPython.display.HTML``, with :meth:`summary`."""
-        return srcdoc_iframe(self.animation_html(frames=frames, seconds=seconds), height, summary=self.summary())
+        """:meth:`animation_html` as an ``<iframe>`` for ``IPython.display.HTML``, with its frames in words."""
+        Q = self.path_configurations(np.linspace(0.0, 1.0, int(frames)))  # (F, dof): the frames' configurations
+        told = draw.animation_summary(self.workspace, self.robot, Q, self.exact, self.model, self.path)
+        return srcdoc_iframe(self.animation_html(frames=frames, seconds=seconds), height, summary=told)
 
     def stop(self) -> None:
         """Tell the listeners, then stop the server; the port is free afterwards. Stopping twice is harmless."""

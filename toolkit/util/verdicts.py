@@ -1,0 +1,44 @@
+"""Verdicts read from ratios against a tie band: "saves", "costs", "a tie" or "can't tell" for planning time, "network
+cheaper", "network dearer" or "close: can't tell" for a check's cost per configuration.
+
+A verdict is read from an *interval* of ratios (with / without, or network / exact), not from one number, so that a
+busy machine cannot turn "saves" into "costs": where the interval crosses the tie band the verdict is "can't tell".
+The chapters' tables (:mod:`toolkit.teaching.findings`) and the crossover's conclusion
+(:mod:`toolkit.experiments.crossover`) say them in the same words.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+TIE = 0.10  # planning: a time ratio within 10 % of 1 is a tie (queries timed in turns moved that much run to run)
+CLOSE = 0.25  # a checker's cost per configuration, timed in a few rounds: within 25 % of the other's, too close to call
+
+SAVES, COSTS, TIES, UNSURE = "saves time", "costs time", "a tie", "can't tell"  # planning time, with / without
+CHEAPER, DEARER, NEAR = "network cheaper", "network dearer", "close: can't tell"  # a check's cost, network / exact
+POSITIVE, NEGATIVE = (SAVES, CHEAPER), (COSTS, DEARER)  # a verdict never flips between these two from run to run
+
+
+def judge(low: float, high: float, tie: float = TIE) -> str:
+    """``"below"`` when the interval ``[low, high]`` of ratios (with / without, or network / exact) lies below
+    ``1 - tie``, ``"above"`` when it lies above ``1 + tie``, ``"inside"`` when inside the band, else ``"across"``."""
+    if not all(np.isfinite(v) and v > 0 for v in (low, high)) or low > high:
+        raise ValueError(f"an interval of ratios must be positive numbers, low <= high, got {low!r}, {high!r}")
+    if high < 1 - tie:
+        return "below"
+    if low > 1 + tie:
+        return "above"
+    return "inside" if 1 - tie <= low and high <= 1 + tie else "across"
+
+
+def time_verdict(low: float, high: float | None = None, tie: float = TIE) -> str:
+    """:data:`SAVES`, :data:`COSTS`, :data:`TIES` or :data:`UNSURE` for time ratios with / without prediction (one
+    ratio, or an interval)."""
+    return {"below": SAVES, "above": COSTS, "inside": TIES, "across": UNSURE}[
+        judge(low, low if high is None else high, tie)
+    ]
+
+
+def cost_verdict(ratio: float, tie: float = CLOSE) -> str:
+    """:data:`CHEAPER`, :data:`DEARER` or :data:`NEAR` for a cost per configuration, network / exact."""
+    return {"below": CHEAPER, "above": DEARER}.get(judge(ratio, ratio, tie), NEAR)
