@@ -21,6 +21,7 @@ from matplotlib.collections import Collection, PolyCollection
 from matplotlib.colors import to_hex
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
+from matplotlib.markers import MarkerStyle
 from matplotlib.patches import Patch
 from matplotlib.text import Text
 
@@ -240,7 +241,7 @@ def data_colours(fig: Figure) -> set[str]:
                 colours = [artist.get_color()] if artist.get_linestyle() not in ("None", "", " ") else []
                 if artist.get_marker() not in (None, "None", "", " "):
                     colours.append(artist.get_markeredgecolor())
-                    if artist._marker.is_filled() and artist.get_fillstyle() != "none":
+                    if MarkerStyle(artist.get_marker()).is_filled() and artist.get_fillstyle() != "none":
                         colours.append(artist.get_markerfacecolor())
             elif isinstance(artist, Collection):
                 if artist.get_array() is not None and not hasattr(artist, "levels"):
@@ -268,7 +269,7 @@ def test_every_colour_drawn_comes_from_the_palette(drawn):
 
 
 def visible_texts(fig: Figure) -> list[Text]:
-    renderer = fig.canvas.get_renderer()
+    renderer = fig.canvas.get_renderer()  # type: ignore[attr-defined]  # the Agg canvas's (headless)
     texts = [t for t in fig.findobj(Text) if t.get_visible() and t.get_text().strip()]
     return [t for t in texts if t.get_window_extent(renderer).width > 0 and _shown(t)]
 
@@ -344,7 +345,7 @@ def _tick_labels(axis) -> list[Text]:
 
 def _titles(fig: Figure) -> list[Text]:
     figures = [fig, *fig.subfigs]
-    return [ax.title for ax in fig.axes] + [f._suptitle for f in figures if f._suptitle is not None]
+    return [ax.title for ax in fig.axes] + [t for f in figures if (t := getattr(f, "_suptitle", None)) is not None]
 
 
 def _legends(fig: Figure) -> list:

@@ -144,7 +144,7 @@ def test_the_embedded_scenes_are_titled_and_told_in_words(site):
     page = page_of(site, ROOT / "notebooks" / "05_3d_scenes.ipynb").read_text()
     frames = re.findall(r"<iframe\b[^>]*>", page)
     assert len(frames) >= 3
-    titles = [re.search(r'title="([^"]*)"', f).group(1) for f in frames]  # type: ignore[union-attr]
+    titles = [re.search(r'title="([^"]*)"', f).group(1) for f in frames]
     assert all(re.match(r"3D (scene|animation) of workspace \w+ \(\d+ blocks\) with the \w+ robot", t) for t in titles)
     assert len(set(titles)) == len(titles)  # every view titled apart: the animation from its scene (issue 47)
     summaries = re.findall(r'<p class="scene-summary">([^<]*)</p>', page)
