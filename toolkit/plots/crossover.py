@@ -58,7 +58,7 @@ def _in_words(sweep: dict) -> str:
 
 
 def _panel(ax, sweep: dict) -> None:
-    """One variable: the three curves, the shaded wins, the crossings."""
+    """One variable: the three curves, the values where the network is cheaper shaded, the crossings."""
     x = np.asarray(sweep["values"], dtype=float)
     exact, learned = np.asarray(sweep["exact_us"], float), np.asarray(sweep["learned_us"], float)
     for name in ("exact", "fcl", "learned"):
@@ -73,7 +73,7 @@ def _panel(ax, sweep: dict) -> None:
         interpolate=True,
         color=COLORS["learned"],
         alpha=0.2,
-        label="learning wins",
+        label="network cheaper",
     )
     for name, found in sweep["crossing"].items():
         if found is not None:
