@@ -142,11 +142,9 @@ def test_no_module_imports_another_modules_private_names():
 
 
 PLANNER_WORDS = (
-    "PRMOptions",
     "PaperParams",
     "LazyParams",
     "RoadmapParams",
-    "planner_options",
     "make_planner",
     "screen_edges",
     "auxiliary",

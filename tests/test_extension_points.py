@@ -24,7 +24,8 @@ from toolkit.learning.learned import LearnedChecker
 from toolkit.learning.training import TrainedModels
 from toolkit.planning import sampling
 from toolkit.planning.local_planner import default_resolution, path_is_valid
-from toolkit.planning.prm import PRMOptions, plan
+from toolkit.planning.paper_prm import PRM
+from toolkit.planning.prm import plan
 from toolkit.util import plugins
 
 
@@ -82,7 +83,7 @@ def test_a_registered_sampler_is_built_by_name_and_plans():
         np.array([2.0, 2.0]),
         np.array([12.0, 12.0]),
         sampler="CORNER",
-        options=PRMOptions(n_samples=200),
+        planner=PRM(n_samples=200),
         rng=np.random.default_rng(0),
     )
     assert result.success and np.all(result.path < 15.5)

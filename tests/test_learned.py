@@ -8,7 +8,7 @@ import pytest
 import torch
 
 from toolkit import cli, scenarios
-from toolkit.experiments import pipeline, problems, queries
+from toolkit.experiments import pipeline, problems
 from toolkit.experiments.config import RunConfig
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.learning import checkpoints, presets
@@ -139,11 +139,7 @@ def test_a_learned_checker_changes_the_checker_and_never_the_planner(models, wor
     without = problems.build(SCENARIO)
     assert with_.problem.predicts and not without.problem.predicts
     assert with_.planner.name == without.planner.name == "lazy" and with_.planner.params == without.planner.params
-    assert (
-        queries.default_options(SCENARIO, checker)
-        == queries.default_options(SCENARIO)
-        == LazyParams(n_samples=SCENARIO.plan_samples)
-    )
+    assert with_.planner.params == LazyParams(n_samples=SCENARIO.plan_samples)
 
 
 def test_a_predictor_is_built_from_a_preset_in_one_place_and_its_initialization_changes_no_loaded_result(

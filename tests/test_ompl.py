@@ -15,8 +15,9 @@ from toolkit.experiments.queries import make_queries
 from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace
 from toolkit.planning.local_planner import path_is_valid
+from toolkit.planning.paper_prm import PRM
 from toolkit.planning.planner import Problem
-from toolkit.planning.prm import PRMOptions, plan
+from toolkit.planning.prm import plan
 from toolkit.planning.rrt_connect import RRTConnectParams, rrt_connect
 
 ob = pytest.importorskip("ompl.base")
@@ -88,7 +89,7 @@ def test_ours_and_ompls_prm_solve_every_solvable_2ds_query():
             q.start,
             q.goal,
             sampler="BS",
-            options=PRMOptions(n_samples=200, max_rounds=40),
+            planner=PRM(n_samples=200, max_rounds=40),
             rng=np.random.default_rng(i),
         )
         resolution = ours.stats["resolution"] / 10
@@ -143,7 +144,7 @@ def test_an_enclosed_goal_is_unsolvable_for_both():
     start, goal = np.array([5.0, 5.0]), np.array([23.0, 23.0])
     label_of = free_components(ws, robot)
     assert label_of(start) != label_of(goal)
-    ours = plan(exact_checker(ws, robot), start, goal, options=PRMOptions(max_rounds=5), rng=np.random.default_rng(0))
+    ours = plan(exact_checker(ws, robot), start, goal, planner=PRM(max_rounds=5), rng=np.random.default_rng(0))
     assert not ours.success and len(ours.path) == 0 and ours.stats["rounds"] == 5
     assert ompl_solves(ws, robot, start, goal, ours.stats["resolution"] / 10, seconds=0.3) is None
 

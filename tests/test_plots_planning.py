@@ -9,7 +9,8 @@ from matplotlib.figure import Figure
 from toolkit import scenarios
 from toolkit.experiments.queries import make_queries
 from toolkit.geometry.collision import exact_checker
-from toolkit.planning.prm import PlanStep, PRMOptions, plan
+from toolkit.planning.paper_prm import PRM
+from toolkit.planning.prm import PlanStep, plan
 from toolkit.plots import planning
 
 SCENARIO = scenarios.get("2ds")
@@ -130,7 +131,7 @@ def test_roadmap_of_a_real_plan_draws_as_many_edges_as_the_roadmap_has(exact, qu
         query.start,
         query.goal,
         sampler="G",
-        options=PRMOptions(n_samples=100),
+        planner=PRM(n_samples=100),
         rng=np.random.default_rng(0),
         trace=trace,
     )

@@ -70,21 +70,21 @@ def longest_hidden_overlap(ws, robot, path) -> float:
     )
 
 
-MODES = {  # name -> (flip fraction of the test double or None for exact, the planner's options class)
-    "exact": (None, LazyParams),  # the best exact planner: lazy edges, growing rounds
-    "exact-paper": (None, PaperParams),  # Algorithm 1 as the paper has it
-    "noisy-screened": (0.15, LazyParams),
-    "noisy-paper": (0.15, PaperParams),
+MODES = {  # name -> (flip fraction of the test double or None for exact, the planner's class)
+    "exact": (None, LazyPRM),  # the best exact planner: lazy edges, growing rounds
+    "exact-paper": (None, PRM),  # Algorithm 1 as the paper has it
+    "noisy-screened": (0.15, LazyPRM),
+    "noisy-paper": (0.15, PRM),
 }
 
 
 def solve_all(scenario, queries, sampler, mode, n_samples=None):
-    flip, options_class = MODES[mode]
+    flip, planner_class = MODES[mode]
     results = []
     for i, q in enumerate(queries):
         exact = exact_checker(q.workspace, scenario.robot)
         checker = None if flip is None else NoisyChecker(exact, flip, seed=i)
-        options = options_class(n_samples=n_samples or scenario.plan_samples)
+        planner = planner_class(n_samples=n_samples or scenario.plan_samples)
         results.append(
             (
                 q,
@@ -94,7 +94,7 @@ def solve_all(scenario, queries, sampler, mode, n_samples=None):
                     q.goal,
                     sampler=sampler,
                     checker=checker,
-                    options=options,
+                    planner=planner,
                     rng=np.random.default_rng(i),
                 ),
             )
@@ -141,12 +141,12 @@ def test_3dc_paths_are_exactly_valid(scenario_name, mode):
         assert all(r.success for _, r in results)
 
 
-@pytest.mark.parametrize("options_class, first_round", [(PaperParams, 200), (LazyParams, 50)])
-def test_exact_planners_never_repair_nodes_and_count_checks(options_class, first_round):
+@pytest.mark.parametrize("planner_class, first_round", [(PRM, 200), (LazyPRM, 50)])
+def test_exact_planners_never_repair_nodes_and_count_checks(planner_class, first_round):
     scenario = scenarios.get("2ds")
     q = make_queries(scenario, seed=1, n_workspaces=1, per_workspace=1)[0]
     exact = exact_checker(q.workspace, scenario.robot)
-    result = plan(exact, q.start, q.goal, sampler="BS", options=options_class(), rng=np.random.default_rng(0))
+    result = plan(exact, q.start, q.goal, sampler="BS", planner=planner_class(), rng=np.random.default_rng(0))
     s = result.stats
     assert result.success and s["removed_nodes"] == 0 and s["predicted_checks"] == 0 and s["rounds"] == 1
     assert s["exact_checks"] == exact.n_checked
@@ -160,10 +160,10 @@ def test_rounds_double_from_first_samples_up_to_n_samples():
     robot = scenarios.get("2ds").robot  # the goal walled in: every round is sampled, none solves it
     walls = [[[18, 18], [28, 19]], [[18, 27], [28, 28]], [[18, 18], [19, 28]], [[27, 18], [28, 28]]]
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array(walls, dtype=float), family="2ds")
-    for options, attempts in [
-        (LazyParams(max_rounds=5, first_samples=10, n_samples=50), 10 + 20 + 40 + 50 + 50),
-        (LazyParams(max_rounds=5, first_samples=None, n_samples=50), 5 * 50),
-        (PaperParams(max_rounds=5, n_samples=50), 5 * 50),
+    for planner, attempts in [
+        (LazyPRM(max_rounds=5, first_samples=10, n_samples=50), 10 + 20 + 40 + 50 + 50),
+        (LazyPRM(max_rounds=5, first_samples=None, n_samples=50), 5 * 50),
+        (PRM(max_rounds=5, n_samples=50), 5 * 50),
     ]:  # the paper's: |S| a round
         trace = []
         result = plan(
@@ -171,7 +171,7 @@ def test_rounds_double_from_first_samples_up_to_n_samples():
             np.array([5.0, 5.0]),
             np.array([23.0, 23.0]),
             sampler="BS",
-            options=options,
+            planner=planner,
             rng=np.random.default_rng(0),
             trace=trace,
         )
@@ -226,7 +226,7 @@ def test_the_papers_planner_checks_every_edge_exactly_as_it_is_added(flip):
             q.goal,
             sampler="BS",
             checker=checker,
-            options=PaperParams(),
+            planner=PRM(),
             rng=np.random.default_rng(i),
             trace=trace,
         )
@@ -275,8 +275,9 @@ def test_the_planner_is_chosen_by_name_and_owns_its_parameters():
     default = plan(exact, q.start, q.goal, sampler="G", rng=np.random.default_rng(3))  # none named: prm.DEFAULT
     assert prm.DEFAULT == "lazy" and default.planner == "lazy"
     np.testing.assert_array_equal(default.roadmap.edges, lazy.roadmap.edges)
-    by_params = plan(exact, q.start, q.goal, sampler="G", options=PaperParams(), rng=np.random.default_rng(3))
-    assert by_params.planner == "paper"  # parameters alone: the planner they belong to
+    made = plan(exact, q.start, q.goal, sampler="G", planner=PRM(), rng=np.random.default_rng(3))  # as by name
+    assert made.planner == "paper"
+    np.testing.assert_array_equal(made.roadmap.edges, paper.roadmap.edges)
     with pytest.raises(ValueError, match="unknown planner 'nope'; choose one of"):
         plan(exact, q.start, q.goal, planner="nope", rng=np.random.default_rng(3))
 
@@ -434,7 +435,7 @@ def test_same_seed_same_result():
             q.goal,
             sampler="G",
             checker=NoisyChecker(exact, 0.1, 7),
-            options=LazyParams(n_samples=150),
+            planner=LazyPRM(n_samples=150),
             rng=np.random.default_rng(4),
         )
         for _ in range(2)
@@ -457,7 +458,7 @@ def traced_2ds_queries(flip, n_queries=6):
             q.goal,
             sampler="BS",
             checker=checker,
-            options=LazyParams(n_samples=150),
+            planner=LazyPRM(n_samples=150),
             rng=np.random.default_rng(i),
             trace=trace,
         )
@@ -488,7 +489,7 @@ def test_tracing_changes_nothing_but_records():
             q.goal,
             sampler="OB",
             checker=NoisyChecker(exact, 0.2, 3),
-            options=LazyParams(n_samples=150),
+            planner=LazyPRM(n_samples=150),
             rng=np.random.default_rng(5),
             trace=trace,
         )
@@ -689,7 +690,7 @@ def test_screened_path_edges_are_confirmed_coarse_then_fine_each_once(monkeypatc
             q.goal,
             sampler="BS",
             checker=NoisyChecker(exact, 0.15, seed=i),
-            options=LazyParams(screen_edges=True),
+            planner=LazyPRM(screen_edges=True),
             rng=np.random.default_rng(i),
         )
         assert result.success
@@ -730,7 +731,7 @@ def test_screened_edges_are_refuted_where_screening_saw_them_fail_and_only_when_
             q.goal,
             sampler="BT",
             checker=NoisyChecker(exact, 0.1, seed=i),
-            options=LazyParams(n_samples=scenario.plan_samples),
+            planner=LazyPRM(n_samples=scenario.plan_samples),
             rng=np.random.default_rng(i),
         )
         assert result.success
@@ -885,7 +886,7 @@ def test_the_planner_decides_no_pair_twice(monkeypatch):
                 q.goal,
                 sampler="BT",
                 checker=NoisyChecker(exact, 0.1, seed=i),
-                options=LazyParams(n_samples=scenario.plan_samples, rebridge=rebridge, first_samples=None),
+                planner=LazyPRM(n_samples=scenario.plan_samples, rebridge=rebridge, first_samples=None),
                 rng=np.random.default_rng(i),
             )
             assert result.success

@@ -39,11 +39,6 @@ class Pairing:
     planner: str = prm.DEFAULT
     params: Mapping[str, object] = field(default_factory=lambda: MappingProxyType({}))
 
-    @property
-    def options(self) -> type:
-        """The paired planner's parameters class (the name notebook 04 reads)."""
-        return prm.get(self.planner).Params
-
 
 PAIRINGS: dict[str, Pairing] = {  # preset name -> pairing
     "paper": Pairing("paper"),

@@ -26,8 +26,6 @@ from toolkit.experiments.summaries import summarize
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
-from toolkit.learning.presets import Preset
-from toolkit.planning import prm
 from toolkit.planning.local_planner import path_is_valid
 from toolkit.planning.planner import Planner, PlanResult
 from toolkit.planning.sampling import PAPER_SAMPLERS
@@ -38,10 +36,8 @@ __all__ = [  # make_queries, query_pairs, Query and summarize are imported by ol
     "Mode",
     "Query",
     "compare_prediction",
-    "default_options",
     "make_queries",
     "one_thread",
-    "planner_options",
     "query_pairs",
     "run_interleaved",
     "run_queries",
@@ -70,14 +66,10 @@ def solve_query(
     planner: str | Planner | None = None,
     seed=0,
     exact: CollisionChecker | None = None,
-    options=None,
 ) -> PlanResult:
     """One query with ``sampler`` and ``planner`` (a name or one made; None: ``toolkit.planning.prm.DEFAULT``);
     ``checker`` decides samples (None: the exact checker); ``exact`` checks edges and paths (None:
-    :func:`~toolkit.geometry.collision.exact_checker`); ``options``: the planner's parameters (they name their
-    planner when ``planner`` is None)."""
-    if options is not None:
-        planner = _owner(planner, options)
+    :func:`~toolkit.geometry.collision.exact_checker`)."""
     task = build(scenario, query, sampler=sampler, planner=planner, checker=checker, exact=exact)
     return task.solve(np.random.default_rng(seed))
 
@@ -210,27 +202,3 @@ def compare_prediction(
             "total_ratio": with_["total_s"] / max(without["total_s"], 1e-12),
         }
     return table
-
-
-# -- the names of before, for notebooks and tutorials that call them ------------------------------
-
-
-def default_options(scenario: Scenario, learned: CollisionChecker | None = None, **changes):
-    """The default planner's parameters for a query of ``scenario`` (``make_planner(scenario).params``), with
-    ``changes``. ``learned`` is accepted as before and changes nothing: the planner does not depend on the checker."""
-    return make_planner(scenario, **changes).params
-
-
-def planner_options(
-    scenario: Scenario, preset: Preset | None = None, *, predicted: bool = False, options_class=None, **changes
-):
-    """The parameters of the planner paired with ``preset`` (or of the planner reading ``options_class``) for a
-    query of ``scenario``: :func:`toolkit.experiments.problems.make_planner`'s; ``predicted`` is accepted as before
-    and changes nothing (with and without prediction, a planner has the same parameters)."""
-    name = _owner(None, options_class()).name if options_class is not None else None
-    return make_planner(scenario, name, preset=preset, **changes).params
-
-
-def _owner(planner, params) -> Planner:
-    """The planner ``planner`` (a name, one made, or None: the one ``params`` belong to) with ``params``."""
-    return prm.make(planner, params)

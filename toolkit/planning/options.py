@@ -9,8 +9,7 @@
 Neither inherits the other's: both take the fields every roadmap planner reads from
 :class:`RoadmapParams` (what :mod:`toolkit.planning.query_roadmap` reads), and each adds its own.
 The query's resolution and sampler are the problem's, not a planner's
-(:class:`toolkit.planning.planner.Problem`). ``PRMOptions`` and ``LazyPRMOptions``, the names these
-had, still import.
+(:class:`toolkit.planning.planner.Problem`).
 """
 
 from __future__ import annotations
@@ -97,7 +96,3 @@ class LazyParams(RoadmapParams):
         "screen_reject": "in [0, 1]",
         "screen_penalty": "non-negative and finite",
     }
-
-
-PRMOptions = PaperParams  # the names of before (notebooks, tutorials)
-LazyPRMOptions = LazyParams

@@ -25,7 +25,7 @@ import numpy as np
 
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.planning.lazy_prm import LazyPRM
-from toolkit.planning.options import AUXILIARY, LazyParams, LazyPRMOptions, PaperParams, PRMOptions
+from toolkit.planning.options import AUXILIARY, LazyParams, PaperParams
 from toolkit.planning.paper_prm import PRM
 from toolkit.planning.planner import Planner, PlanResult, Problem
 from toolkit.planning.query_roadmap import GOAL, STAGES, START, PlanStep
@@ -41,9 +41,7 @@ __all__ = [
     "STAGES",
     "START",
     "LazyPRM",
-    "LazyPRMOptions",
     "LazyParams",
-    "PRMOptions",
     "PaperParams",
     "PlanResult",
     "PlanStep",
@@ -90,16 +88,11 @@ def names() -> list[str]:
 
 def make(planner: str | Planner | None = None, params=None, **changes) -> Planner:
     """A planner ready to solve: ``planner`` (a name, None: :data:`DEFAULT`, or one already made) with ``params``
-    (default: its ``Params()``) and ``changes`` to them. ``params`` alone makes the planner they belong to."""
+    (default: its ``Params()``) and ``changes`` to them."""
     if planner is not None and not isinstance(planner, str):
         if params is not None or changes:
             raise ValueError(f"{planner!r} is made already: pass its parameters when you make it")
         return planner
-    if planner is None and params is not None:  # e.g. plan(..., options=PaperParams(...)): its owner runs
-        owner = next((p for p in PLANNERS.values() if p.Params is type(params)), None)
-        if owner is None:
-            raise TypeError(f"no registered planner reads {type(params).__name__}; see toolkit.planning.prm.register")
-        return owner(params, **changes)
     return get(planner or DEFAULT)(params, **changes)
 
 
@@ -111,15 +104,14 @@ def plan(
     sampler: str = "BS",
     checker: CollisionChecker | None = None,
     planner: str | Planner | None = None,
-    options=None,
     resolution: float | None = None,
     rng: np.random.Generator,
     trace: list | None = None,
 ) -> PlanResult:
-    """Solve one query ``start -> goal`` (``(dof,)`` each) with ``planner`` (:func:`make`; None: :data:`DEFAULT`)
-    and its parameters ``options``; ``checker`` decides samples (None: ``exact``: no prediction); ``resolution``:
-    the local planner's (None: ``default_resolution``); a ``trace`` list receives a :class:`PlanStep` at every stage
-    (roadmap planners)."""
+    """Solve one query ``start -> goal`` (``(dof,)`` each) with ``planner`` (a name, None: :data:`DEFAULT`, or one made
+    with its parameters, e.g. ``LazyPRM(n_samples=200)``); ``checker`` decides samples (None: ``exact``: no
+    prediction); ``resolution``: the local planner's (None: ``default_resolution``); a ``trace`` list receives a
+    :class:`PlanStep` at every stage (roadmap planners)."""
     problem = Problem.create(exact, start, goal, sampler=sampler, checker=checker, resolution=resolution)
-    solver = make(planner, options)
+    solver = make(planner)
     return solver.solve(problem, rng) if trace is None else solver.solve(problem, rng, trace=trace)  # type: ignore[call-arg]
