@@ -189,6 +189,8 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     np.testing.assert_array_equal(lines["roadmap node in collision"], nodes[~nodes_valid])
     np.testing.assert_array_equal(lines["roadmap node, valid"], nodes[nodes_valid])
     np.testing.assert_array_equal(ax.images[0].get_array(), probability.T)
+    path_line = next(line for line in ax.get_lines() if line.get_label() == "returned path (checked exactly)")
+    assert path_line.get_linestyle() == "--" and path_line.get_marker() == "D"  # not the boundary's solid line
 
 
 def test_confusion_bars_heights_are_the_counts_and_rates():

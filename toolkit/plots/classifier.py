@@ -173,7 +173,8 @@ def path_map(
     """A planner's roadmap ``nodes (M, dof)`` and returned ``path (P, dof)`` over a P(valid) map of the grid's two DoFs.
 
     Nodes in collision (``nodes_valid`` False, by the exact checker) are the dangerous mistakes the
-    planner accepted: crosses (``COLORS["dangerous"]``). The path, checked exactly, avoids them.
+    planner accepted: crosses (``COLORS["dangerous"]``). The path, checked exactly, avoids them; it is dashed with a
+    diamond per configuration, so that it stands apart from the solid C-obstacle boundary.
     """
     nodes, nodes_valid, path = np.asarray(nodes), np.asarray(nodes_valid, dtype=bool), np.asarray(path)
     fig = Figure(figsize=(5.6, 5.4), layout="constrained")
@@ -201,9 +202,10 @@ def path_map(
     ax.plot(
         path[:, x],
         path[:, y],
-        "-",
+        "--D",  # dashed, a diamond per configuration: apart from the solid C-obstacle boundary, same blue
         color=COLORS["path"],
-        linewidth=2.5,
+        linewidth=3,
+        markersize=4,
         label="returned path (checked exactly)",
         path_effects=halo(2.5),
     )
