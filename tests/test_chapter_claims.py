@@ -161,8 +161,11 @@ def test_the_answer_chapter_04_and_05_state_holds_in_docs_results():
     assert not [s for s, r in strong["2ds"]["total"].items() if findings.time_verdict(r) == findings.SAVES]
     mlp = recorded.table("paper", "MLP accuracy")["3dc7"]
     assert recorded.ours(mlp["Seen TNR"]) == 0 and recorded.ours(mlp["Seen TPR"]) == 1
-    means = {c: 1 - recorded.ours(v) for c, v in recorded.table("paper", "time improvement")["3dc7"].items()}
-    assert any(findings.time_verdict(r) == findings.SAVES for c, r in means.items() if c.startswith("Total"))
+    for key in ("3dc7", "2ds"):  # "saved time ... for one sampler of four" in each scenario, against Algorithm 1
+        means = {c: 1 - recorded.ours(v) for c, v in recorded.table("paper", "time improvement")[key].items()}
+        said = [findings.time_verdict(r) for c, r in means.items() if c.startswith("Total")]
+        assert said.count(findings.SAVES) == 1, (key, said)
+    assert sorted(said) == sorted([findings.SAVES] + [findings.COSTS] * 3), said  # 2DS: a cost for the other three
     paper_medians = recorded.median_ratios("paper")["3dc7"]["total"]
     assert all(findings.time_verdict(r) == findings.COSTS for r in paper_medians.values())
     for name in (CH04, "05_3d_scenes.ipynb"):
