@@ -13,7 +13,7 @@ import numpy as np
 
 TIE = 0.10  # planning: a time ratio within 10 % of 1 is a tie (queries timed in turns moved that much run to run)
 CLOSE = 0.25  # a checker's cost per configuration, timed in a few rounds: within 25 % of the other's, too close to call
-DIGITS = 2  # the tables print a ratio to two decimals; a verdict reads the ratio as printed, so "0.88-0.90" is no "saves"
+DIGITS = 2  # tables print a ratio to two decimals; a verdict reads it as printed: "0.88-0.90" is no "saves"
 
 SAVES, COSTS, TIES, UNSURE = "saves time", "costs time", "a tie", "can't tell"  # planning time, with / without
 CHEAPER, DEARER, NEAR = "network cheaper", "network dearer", "close: can't tell"  # a check's cost, network / exact
