@@ -66,6 +66,13 @@ CONTRADICTED = (  # sentences that executed pages contradicted (issue 37), in th
     "Two directions hold under half",
     "About 88 % of the cells are free",
     "with 20× the labelled data",
+    "is close to the table's median ratio, not equal to it",  # issue 45: opposite sides of 1 in a quick run
+    "exactly — costs about the same in both modes",  # the bars showed connection and query taller with prediction
+    "almost all inside the grown blocks",  # 4 of 9 in a quick run
+    "every curve is piecewise straight, with kinks at the nodes",  # the sampled frames cut the kinks short
+    "the sky-blue trace of its base",
+    "are about three 3D scenarios",  # Tables 2 and 3 include 2DS
+    "over a few queries its range is wide",  # it printed 0.88-0.90
 )
 
 
@@ -171,8 +178,11 @@ def test_the_answer_chapter_04_and_05_state_holds_in_docs_results():
     assert not [s for s, r in strong["2ds"]["total"].items() if findings.time_verdict(r) == findings.SAVES]
     mlp = recorded.table("paper", "MLP accuracy")["3dc7"]
     assert recorded.ours(mlp["Seen TNR"]) == 0 and recorded.ours(mlp["Seen TPR"]) == 1
-    means = {c: 1 - recorded.ours(v) for c, v in recorded.table("paper", "time improvement")["3dc7"].items()}
-    assert any(findings.time_verdict(r) == findings.SAVES for c, r in means.items() if c.startswith("Total"))
+    for key in ("3dc7", "2ds"):  # "saved time ... for one sampler of four" in each scenario, against Algorithm 1
+        means = {c: 1 - recorded.ours(v) for c, v in recorded.table("paper", "time improvement")[key].items()}
+        said = [findings.time_verdict(r) for c, r in means.items() if c.startswith("Total")]
+        assert said.count(findings.SAVES) == 1, (key, said)
+    assert sorted(said) == sorted([findings.SAVES] + [findings.COSTS] * 3), said  # 2DS: a cost for the other three
     paper_medians = recorded.median_ratios("paper")["3dc7"]["total"]
     assert all(findings.time_verdict(r) == findings.COSTS for r in paper_medians.values())
     for name in (CH04, "05_3d_scenes.ipynb"):

@@ -32,6 +32,10 @@ def row(without: list[float], with_: list[float]) -> dict:
         (0.5, 0.95, findings.UNSURE),  # crosses the band's lower edge
         (0.92, 1.08, findings.TIES),  # inside the band
         (0.9, 1.1, findings.TIES),  # the band's edges belong to the tie
+        (0.88, 0.8999, findings.UNSURE),  # printed "0.88-0.90": its upper end is on the edge, not below it
+        (0.88, 0.8949, findings.SAVES),  # printed "0.88-0.89": wholly below
+        (0.8951, 0.95, findings.TIES),  # 0.8951 prints as 0.90, on the edge: inside the band
+        (1.1049, 1.3, findings.UNSURE),  # printed "1.10-1.30": from the edge across it
         (1.05, 1.3, findings.UNSURE),  # crosses the band's upper edge
         (1.2, 3.0, findings.COSTS),
         (0.5, 2.0, findings.UNSURE),  # straddles the whole band

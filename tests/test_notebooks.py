@@ -128,9 +128,9 @@ def test_a_headless_run_switches_progress_bars_off_and_restores_the_variable(mon
     assert seen == ["1"] and "TQDM_DISABLE" not in os.environ
 
 
-def test_a_still_picture_folds_under_its_summary_with_its_figures_alt_text():
+def test_a_still_picture_shows_open_under_its_summary_with_its_figures_alt_text():
     fig = Figure()
     fig.subplots().set_title("the office from above")
     html = still(fig, "No 3D view above?").data
-    assert html.startswith('<details><summary>No 3D view above?</summary><img src="data:image/png;base64,')
+    assert html.startswith('<details open><summary>No 3D view above?</summary><img src="data:image/png;base64,')
     assert 'alt="Figure with 1 panel(s): the office from above"' in html

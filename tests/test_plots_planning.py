@@ -1,5 +1,7 @@
 """Planning figures (notebook 04) draw what they are given: C-obstacles, samples, roadmaps, repairs, bar heights."""
 
+import dataclasses
+
 import numpy as np
 import pytest
 from matplotlib.collections import LineCollection
@@ -230,3 +232,11 @@ def test_throughputs_bar_per_scenario_and_checker():
     np.testing.assert_allclose([p.get_height() for p in learned_bars.patches], [3e6, 2.5e6])
     assert [t.get_text() for t in ax.get_xticklabels()] == ["2DS", "3DC-7"] and ax.get_yscale() == "log"
     assert [t.get_text() for t in ax.texts] == ["90M/s", "200k/s", "3M/s", "2.5M/s"]
+
+
+def test_a_rejected_candidate_and_a_fresh_one_differ_in_line_style_not_only_in_shade(exact):
+    rejected = a_repair_step()
+    fresh = dataclasses.replace(rejected, stage="candidate", removed_nodes=np.zeros(0, int))
+    styles = [planning.roadmap(exact, step).axes[0].lines[0].get_linestyle() for step in (rejected, fresh)]
+    assert styles == ["-.", "--"]
+    assert "dash-dotted path" in planning.step_in_words(rejected) and "dashed path" in planning.step_in_words(fresh)

@@ -38,9 +38,9 @@ STAGE_LABELS = {
 }
 C_OBSTACLE = ListedColormap([COLORS["free"], COLORS["c_obstacle"]])  # valid, invalid
 EDGE_COLOR, NODE_COLOR = COLORS["edge"], COLORS["node"]
-PATH_STYLES = {  # by stage: colour and line style (a path not yet confirmed is dashed, the one returned solid)
+PATH_STYLES = {  # by stage: colour, line style (candidate dashed, one a repair rejected dash-dotted, answer solid)
     "candidate": (COLORS["candidate"], "--"),
-    "repair": (COLORS["candidate"], "--"),
+    "repair": (COLORS["candidate"], "-."),
     "path": (COLORS["path"], "-"),
 }
 REPAIR_COLOR = COLORS["removed"]  # what the exact checker rejected: removed by a repair (drawn as X)
@@ -184,7 +184,8 @@ def step_in_words(step: PlanStep) -> str:
     text = f"Round {step.round}, {step.stage}: a roadmap of {len(step.nodes)} nodes "
     text += f"({int(np.sum(step.node_verified))} confirmed exactly) and {len(step.edges)} edges over the C-obstacles"
     if len(step.path):
-        text += f"; a {'solid' if step.stage == 'path' else 'dashed'} path through {len(step.path)} nodes"
+        line = {"path": "solid", "repair": "dash-dotted"}.get(step.stage, "dashed")
+        text += f"; a {line} path through {len(step.path)} nodes"
     return text + f"; a repair removed {len(step.removed_nodes)} nodes and {len(step.removed_edges)} edges."
 
 

@@ -170,8 +170,8 @@ def _cached_folder(config: RunConfig) -> Path:
 
 
 def still(fig, summary: str):
-    """``fig`` as a still picture folded under ``summary`` (HTML ``<details>``), its alt text from the figure: what a
-    browser without WebGL shows in place of a 3D view beside it (the view stays blank there)."""
+    """``fig`` as a still picture under ``summary`` (HTML ``<details>``, open), its alt text from the figure: what a
+    browser without WebGL shows in place of a 3D view beside it (the view stays blank there, the still does not)."""
     import base64
     import html
 
@@ -183,6 +183,6 @@ def still(fig, summary: str):
     fig.savefig(buffer, format="png", dpi=80, bbox_inches="tight")
     png = base64.b64encode(buffer.getvalue()).decode()
     return HTML(
-        f"<details><summary>{html.escape(summary)}</summary>"
+        f"<details open><summary>{html.escape(summary)}</summary>"
         f'<img src="data:image/png;base64,{png}" alt="{html.escape(alt_text(fig))}" style="max-width:100%"></details>'
     )

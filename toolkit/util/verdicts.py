@@ -13,6 +13,7 @@ import numpy as np
 
 TIE = 0.10  # planning: a time ratio within 10 % of 1 is a tie (queries timed in turns moved that much run to run)
 CLOSE = 0.25  # a checker's cost per configuration, timed in a few rounds: within 25 % of the other's, too close to call
+DIGITS = 2  # tables print a ratio to two decimals; a verdict reads it as printed: "0.88-0.90" is no "saves"
 
 SAVES, COSTS, TIES, UNSURE = "saves time", "costs time", "a tie", "can't tell"  # planning time, with / without
 CHEAPER, DEARER, NEAR = "network cheaper", "network dearer", "close: can't tell"  # a check's cost, network / exact
@@ -21,9 +22,11 @@ POSITIVE, NEGATIVE = (SAVES, CHEAPER), (COSTS, DEARER)  # a verdict never flips 
 
 def judge(low: float, high: float, tie: float = TIE) -> str:
     """``"below"`` when the interval ``[low, high]`` of ratios (with / without, or network / exact) lies below
-    ``1 - tie``, ``"above"`` when it lies above ``1 + tie``, ``"inside"`` when inside the band, else ``"across"``."""
+    ``1 - tie``, ``"above"`` when it lies above ``1 + tie``, ``"inside"`` when inside the band, else ``"across"``.
+    The ends are read as the tables print them (:data:`DIGITS` decimals): the band's edges belong to the tie."""
     if not all(np.isfinite(v) and v > 0 for v in (low, high)) or low > high:
         raise ValueError(f"an interval of ratios must be positive numbers, low <= high, got {low!r}, {high!r}")
+    low, high = round(low, DIGITS), round(high, DIGITS)
     if high < 1 - tie:
         return "below"
     if low > 1 + tie:
