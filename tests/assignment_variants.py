@@ -886,7 +886,7 @@ def rates(predicted_valid, valid):
         "q1",
         """
 def rates(predicted_valid, valid):
-    from toolkit.plots.classifier import confusion_counts
+    from toolkit.plots.answers import confusion_counts
 
     out = {"acc": [], "tpr": [], "tnr": []}
     for p, v in zip(predicted_valid, valid):

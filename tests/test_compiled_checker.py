@@ -278,13 +278,13 @@ def test_the_kernels_sines_and_cosines_are_the_c_librarys_within_two_ulps():
     of numpy's value over the angles a robot takes, and the C library's own beyond ``SIN_COS_LIMIT``."""
     from numba import njit
 
-    from toolkit.geometry import kernels
+    from toolkit.geometry import trig
 
     @njit
     def both(x):
         out = np.empty((2, len(x)))
         for i in range(len(x)):
-            out[0, i], out[1, i] = kernels.any_sin_cos(x[i])
+            out[0, i], out[1, i] = trig.any_sin_cos(x[i])
         return out
 
     rng = np.random.default_rng(15)

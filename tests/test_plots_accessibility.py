@@ -30,10 +30,22 @@ from toolkit.geometry import meshes, robots
 from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace, from_mesh
 from toolkit.planning.prm import PlanStep
-from toolkit.plots import alt, cae, classifier, cspace, palette, planning, reproduction, scenes, tutorials
+from toolkit.plots import (
+    alt,
+    cae,
+    classifier,
+    cspace,
+    palette,
+    planning,
+    reproduction,
+    robot_drawing,
+    scenes,
+    slices,
+    tutorials,
+)
 
 crossover = importlib.import_module("toolkit.plots.crossover")  # the package exports its function by that name
-MODULES = (cae, classifier, crossover, cspace, planning, reproduction, scenes, tutorials)
+MODULES = (cae, classifier, crossover, cspace, planning, reproduction, robot_drawing, scenes, tutorials)
 PALETTE = {to_hex(c) for c in [*palette.COLORS.values(), *palette.OKABE_ITO.values(), *palette.CATEGORICAL]}
 PALETTE |= {to_hex(c) for c in palette.LINE_COLORS}
 DEFAULT_CYCLE = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22"}
@@ -96,7 +108,7 @@ def gallery() -> dict[str, Figure]:
     _, exact = _point_world()
     grids = np.where(rng.random((2, 12, 12)) < 0.3, 1.0, -1.0)
     decoded = grids * np.where(rng.random(grids.shape) < 0.1, -1.0, 1.0)
-    grid = classifier.slice_grid(robots.point_robot(), n=24)
+    grid = slices.slice_grid(robots.point_robot(), n=24)
     valid = grid.image(exact.are_valid(grid.configs))
     probability = np.clip(valid * 0.8 + 0.3 * rng.random(valid.shape) - 0.05, 0, 1)
     office = scenarios.get("3do").make_workspace(np.random.default_rng(1))
@@ -162,7 +174,7 @@ def gallery() -> dict[str, Figure]:
         ),
         "cspace.workspace_figure": cspace.workspace_figure(office),
         "cspace.occupancy_figure": cspace.occupancy_figure(office, layers=[0, 1, 2, 3, 4]),
-        "cspace.robot_figure": cspace.robot_figure(
+        "robot_drawing.robot_figure": robot_drawing.robot_figure(
             chain.robot, Q, clutter, labels=["joint2 low", "joint2 middle", "joint2 high"]
         ),
         "cspace.cspace_image": cspace.cspace_image(exact, resolution=100),

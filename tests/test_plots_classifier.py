@@ -11,6 +11,7 @@ from toolkit.geometry import robots
 from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace
 from toolkit.learning import metrics
+from toolkit.plots import answers, slices
 from toolkit.plots import classifier as pc
 from toolkit.plots.palette import COLORS
 
@@ -19,7 +20,7 @@ N = 24  # grid cells per axis
 
 @pytest.fixture(scope="module")
 def grid():
-    return pc.slice_grid(robots.point_robot(), n=N)
+    return slices.slice_grid(robots.point_robot(), n=N)
 
 
 @pytest.fixture(scope="module")
@@ -49,7 +50,7 @@ def scatter_points(ax, label):
 def test_slice_grid_sweeps_two_dofs_over_cell_centres_and_fixes_the_rest():
     robot = robots.box_chain(1)
     fixed = np.array([5.5, 5.5, 5.5, 0.1, 0.2, 0.3, 0.4])
-    grid = pc.slice_grid(robot, dofs=(0, 6), fixed=fixed, n=5)
+    grid = slices.slice_grid(robot, dofs=(0, 6), fixed=fixed, n=5)
     assert grid.shape == (5, 5) and grid.names == ("x", "joint1") and grid.configs.shape == (25, 7)
     assert grid.extent == (0.0, 11.0, -2.0, 2.0)
     np.testing.assert_allclose(grid.axes[0], [1.1, 3.3, 5.5, 7.7, 9.9])
@@ -60,7 +61,7 @@ def test_slice_grid_sweeps_two_dofs_over_cell_centres_and_fixes_the_rest():
     np.testing.assert_array_equal(row[1:6], fixed[1:6])
     assert grid.image(np.arange(25))[i, j] == i * 5 + j
     with pytest.raises(ValueError):
-        pc.slice_grid(robot, dofs=(0, 0))
+        slices.slice_grid(robot, dofs=(0, 0))
 
 
 def test_mistakes_near_boundary_counts_the_wrong_cells_beside_the_other_truth():
@@ -71,20 +72,21 @@ def test_mistakes_near_boundary_counts_the_wrong_cells_beside_the_other_truth():
     predicted[2, 4] = False  # free, beside it: a boundary mistake
     predicted[5, 6] = False  # free, away from it and from the map's edge
     predicted[6, 7] = False  # free, in the map's corner: where the region's walls are
-    assert pc.mistakes_near_boundary(predicted, truth) == (4, pytest.approx(3 / 4))
-    assert pc.mistakes_near_boundary(predicted, truth, cells=2) == (4, 1.0)  # (5, 6): 2 steps from the wall past (5, 7)
-    assert pc.mistakes_near_boundary(truth, truth) == (0, 0.0)
+    assert answers.mistakes_near_boundary(predicted, truth) == (4, pytest.approx(3 / 4))
+    # (5, 6): 2 steps from the wall past (5, 7)
+    assert answers.mistakes_near_boundary(predicted, truth, cells=2) == (4, 1.0)
+    assert answers.mistakes_near_boundary(truth, truth) == (0, 0.0)
     with pytest.raises(ValueError, match="a map of predictions"):
-        pc.mistakes_near_boundary(predicted.ravel(), truth.ravel())
+        answers.mistakes_near_boundary(predicted.ravel(), truth.ravel())
     with pytest.raises(ValueError, match="cells must be 1 or more"):
-        pc.mistakes_near_boundary(predicted, truth, cells=0)
+        answers.mistakes_near_boundary(predicted, truth, cells=0)
 
 
 def test_answer_codes_and_counts_by_hand():
     predicted = np.array([True, True, False, False, True, True])
     truth = np.array([True, False, True, False, False, True])
-    np.testing.assert_array_equal(pc.answer_codes(predicted, truth), [0, 3, 1, 2, 3, 0])
-    assert pc.confusion_counts(predicted, truth) == {
+    np.testing.assert_array_equal(answers.answer_codes(predicted, truth), [0, 3, 1, 2, 3, 0])
+    assert answers.confusion_counts(predicted, truth) == {
         "valid kept": 2,
         "valid rejected": 1,
         "invalid rejected": 1,
@@ -94,17 +96,17 @@ def test_answer_codes_and_counts_by_hand():
 
 def test_roc_points_are_fpr_and_tpr_at_each_threshold(probability, valid):
     thresholds = [0.0, 0.3, 0.5, 0.71, 1.0]
-    ts, fpr, tpr = pc.roc_points(probability, valid, thresholds)
+    ts, fpr, tpr = answers.roc_points(probability, valid, thresholds)
     np.testing.assert_array_equal(ts, thresholds)
     for t, f, r in zip(thresholds, fpr, tpr):
         rates = metrics.classification((probability >= t).ravel(), valid.ravel())
         assert r == pytest.approx(rates["tpr"]) and f == pytest.approx(1 - rates["tnr"])
-    ts, fpr, tpr = pc.roc_points(probability, valid)  # every distinct probability, then +inf: (1, 1) ... (0, 0)
+    ts, fpr, tpr = answers.roc_points(probability, valid)  # every distinct probability, then +inf: (1, 1) ... (0, 0)
     np.testing.assert_array_equal(ts, np.append(np.unique(probability), np.inf))
     assert (fpr[0], tpr[0], fpr[-1], tpr[-1]) == (1, 1, 0, 0)
     assert np.all(np.diff(fpr) <= 0) and np.all(np.diff(tpr) <= 0)
     with pytest.raises(ValueError):
-        pc.roc_points(probability, np.ones_like(valid))
+        answers.roc_points(probability, np.ones_like(valid))
 
 
 def test_probability_map_shows_the_probabilities_the_boundary_and_exactly_the_mistakes(grid, probability, valid):
@@ -151,7 +153,7 @@ def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, pr
     threshold = 0.55
     ax_map, ax_counts, ax_roc = pc.threshold_view(probability, valid, grid, threshold=threshold).axes
     predicted = probability >= threshold
-    np.testing.assert_array_equal(ax_map.images[0].get_array(), pc.answer_codes(predicted, valid).T)
+    np.testing.assert_array_equal(ax_map.images[0].get_array(), answers.answer_codes(predicted, valid).T)
     heights = [bar.get_height() for bar in ax_counts.patches]
     assert heights == [
         np.sum(predicted & valid),
@@ -171,7 +173,7 @@ def test_roc_curve_draws_every_curve_and_its_operating_point(probability, valid)
     lines = [line for line in ax.get_lines() if line.get_label() != "chance"]
     assert len(lines) == 4
     for (curve, point), (p, truth, t) in zip(zip(lines[::2], lines[1::2]), curves.values()):
-        _, fpr, tpr = pc.roc_points(p, truth)
+        _, fpr, tpr = answers.roc_points(p, truth)
         np.testing.assert_array_equal(curve.get_xdata(), fpr)
         np.testing.assert_array_equal(curve.get_ydata(), tpr)
         kept = p >= t

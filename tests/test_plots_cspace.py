@@ -21,7 +21,7 @@ from toolkit.geometry.collision import (
     SeparatingAxisChecker,
 )
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots import boxes, cspace
+from toolkit.plots import boxes, cspace, robot_drawing, slices
 from toolkit.plots.palette import CATEGORICAL
 
 
@@ -151,14 +151,14 @@ def test_occupancy_figure_3d_draws_one_layer_per_z(clutter):
 
 def test_robot_figure_draws_the_point_robot_square_at_q(square_world):
     robot = robots.point_robot()
-    fig = cspace.robot_figure(robot, [[5.0, 6.0], [9.9, 11.0]], square_world, valid=[True, False])
+    fig = robot_drawing.robot_figure(robot, [[5.0, 6.0], [9.9, 11.0]], square_world, valid=[True, False])
     links = _patches(fig.axes[0], "link")
     assert len(links) == 2 and all(isinstance(p, Polygon) for p in links)
     np.testing.assert_allclose(links[0].get_xy().min(axis=0), [4.75, 5.75])
     np.testing.assert_allclose(links[0].get_xy().max(axis=0), [5.25, 6.25])
     assert links[0].get_facecolor()[:3] != links[1].get_facecolor()[:3]  # green vs red
     assert len(_patches(fig.axes[0], "block")) == 1  # the block at [10, 12]^2; [20, 25] x [3, 9] is far
-    unjudged = cspace.robot_figure(robot, [[5.0, 6.0], [9.9, 11.0]])  # no validity: a colour per configuration
+    unjudged = robot_drawing.robot_figure(robot, [[5.0, 6.0], [9.9, 11.0]])  # no validity: a colour per configuration
     assert [p.get_facecolor()[:3] for p in _patches(unjudged.axes[0], "link")] == [
         to_rgba(c)[:3] for c in CATEGORICAL[:2]
     ]
@@ -169,7 +169,7 @@ def test_robot_figure_overlays_configurations_nearest_the_viewer_last_and_names_
     bending = np.tile([5.0, 5.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0], (3, 1))
     bending[:, 4] = [-1.0, 0.0, 1.0]  # the upper arm back, upright, forward
     labels = ["back", "upright", "forward"]
-    fig = cspace.robot_figure(youbot, bending, views=("xy",), labels=labels)
+    fig = robot_drawing.robot_figure(youbot, bending, views=("xy",), labels=labels)
     links = _patches(fig.axes[0], "link")
     assert len(links) == 3 * youbot.n_links
     top_z = youbot.link_aabbs(bending)[:, :, 1, 2]  # (3, L): how high each link reaches
@@ -181,13 +181,13 @@ def test_robot_figure_overlays_configurations_nearest_the_viewer_last_and_names_
     assert links[-1].get_facecolor()[:3] == to_rgba(CATEGORICAL[1])[:3]
     assert [t.get_text() for t in fig.legends[0].get_texts()] == labels
     with pytest.raises(ValueError, match="2 labels for 3 configurations"):
-        cspace.robot_figure(youbot, bending, labels=labels[:2])
+        robot_drawing.robot_figure(youbot, bending, labels=labels[:2])
 
 
 def test_robot_figure_projects_a_chain_by_forward_kinematics():
     robot = robots.box_chain(1)  # small link 0.1 long, then big link 0.4 long, along x at zero
     q = np.array([5.0, 5.0, 5.0, 0.0, 0.0, 0.0, np.pi / 2])  # the joint turns the big link to +y
-    fig = cspace.robot_figure(robot, q, views=("xy", "xz", "3d"))
+    fig = robot_drawing.robot_figure(robot, q, views=("xy", "xz", "3d"))
     xy = np.concatenate([p.get_xy() for p in _patches(fig.axes[0], "link")])
     np.testing.assert_allclose(xy.min(axis=0), [5.0, 4.95], atol=1e-9)
     np.testing.assert_allclose(xy.max(axis=0), [5.15, 5.4], atol=1e-9)
@@ -201,7 +201,7 @@ def test_draw_robot_in_3d_draws_each_link_box_at_its_pose_and_the_blocks_near_it
     Q = np.array([[5.0, 5.0, 5.0, 0.3, -0.2, 0.1, 0.5, -1.0, 1.5], [2.0, 8.0, 3.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0]])
     fig = Figure()
     ax = fig.add_subplot(projection="3d")
-    cspace.draw_robot(ax, robot, Q, colors=["C3", "C4"], view="3d", workspace=clutter, margin=0.5)
+    robot_drawing.draw_robot(ax, robot, Q, colors=["C3", "C4"], view="3d", workspace=clutter, margin=0.5)
     links = [c for c in ax.collections if c.get_gid() == "link"]
     assert len(links) == 2 * robot.n_links
     centers, rotations, half = robot.link_boxes(Q)  # (2, L, 3), (2, L, 3, 3), (L, 3)
@@ -219,9 +219,9 @@ def test_draw_robot_in_3d_draws_each_link_box_at_its_pose_and_the_blocks_near_it
 def test_draw_robot_rejects_an_unknown_view_and_a_colour_count_off_by_one():
     robot, fig = robots.point_robot(), Figure()
     with pytest.raises(ValueError, match="unknown view 'xw'"):
-        cspace.draw_robot(fig.add_subplot(), robot, [[5.0, 5.0]], colors=["C0"], view="xw")
+        robot_drawing.draw_robot(fig.add_subplot(), robot, [[5.0, 5.0]], colors=["C0"], view="xw")
     with pytest.raises(ValueError, match="2 colours for 1 configurations"):
-        cspace.draw_robot(fig.add_subplot(), robot, [[5.0, 5.0]], colors=["C0", "C1"], view="xy")
+        robot_drawing.draw_robot(fig.add_subplot(), robot, [[5.0, 5.0]], colors=["C0", "C1"], view="xy")
 
 
 # -- configuration space ---------------------------------------------------------------
@@ -230,7 +230,7 @@ def test_draw_robot_rejects_an_unknown_view_and_a_colour_count_off_by_one():
 def test_slice_configs_varies_two_dof_and_fixes_the_rest():
     robot = robots.box_chain(3)
     q = np.linspace(0.1, 0.9, robot.dof)
-    values_i, values_j, Q = cspace.slice_configs(robot, q, (7, 2), resolution=5)
+    values_i, values_j, Q = slices.slice_configs(robot, q, (7, 2), resolution=5)
     assert Q.shape == (5, 5, robot.dof)
     np.testing.assert_allclose(values_i, [-1.6, -0.8, 0.0, 0.8, 1.6])  # cell centres: 5 cells over [-2, 2]
     np.testing.assert_allclose(values_j, 1.1 + 2.2 * np.arange(5))
@@ -239,13 +239,13 @@ def test_slice_configs_varies_two_dof_and_fixes_the_rest():
     others = [k for k in range(robot.dof) if k not in (7, 2)]
     np.testing.assert_allclose(Q[..., others], np.broadcast_to(q[others], (5, 5, len(others))))
     with pytest.raises(ValueError, match="two different"):
-        cspace.slice_configs(robot, q, (3, 3), resolution=5)
+        slices.slice_configs(robot, q, (3, 3), resolution=5)
 
 
 def test_cspace_image_is_dark_exactly_where_fcl_reports_collision(square_world):
     robot = robots.point_robot()
     fig = cspace.cspace_image(PointRobotChecker(square_world, robot), resolution=90)
-    _, _, Q = cspace.slice_configs(robot, robot.lower, (0, 1), resolution=90)
+    _, _, Q = slices.slice_configs(robot, robot.lower, (0, 1), resolution=90)
     by_fcl = FCLChecker(square_world, robot).are_valid(Q.reshape(-1, 2)).reshape(90, 90)
     image = _image(fig)  # (y, x): 1 dark
     np.testing.assert_array_equal(image, (~by_fcl).T.astype(float))
@@ -274,7 +274,7 @@ def test_cspace_slice_equals_the_separating_axis_reference(clutter):
     checker = FCLChecker(clutter, robot)
     q = cspace.configuration_near_blocks(checker, np.random.default_rng(0), n=500)
     fig = cspace.cspace_slice(checker, q, joints=(5, 6), resolution=30)
-    _, _, Q = cspace.slice_configs(robot, q, (5, 6), resolution=30)
+    _, _, Q = slices.slice_configs(robot, q, (5, 6), resolution=30)
     by_sat = SeparatingAxisChecker(clutter, robot).are_valid(Q.reshape(-1, robot.dof)).reshape(30, 30)
     image = _image(fig)
     np.testing.assert_array_equal(image, (~by_sat).T.astype(float))
@@ -283,7 +283,7 @@ def test_cspace_slice_equals_the_separating_axis_reference(clutter):
     assert (ax.get_xlabel(), ax.get_ylabel()) == ("gamma (rad)", "joint1 (rad)")
     star = next(line for line in ax.lines if line.get_gid() == "q")
     np.testing.assert_allclose(np.ravel(star.get_data()), q[[5, 6]])
-    assert star.get_color() == cspace.VALID_COLOR
+    assert star.get_color() == robot_drawing.VALID_COLOR
     assert len(_patches(fig.axes[1], "link")) == robot.n_links
 
 

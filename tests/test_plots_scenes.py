@@ -7,8 +7,8 @@ from matplotlib.colors import to_rgba
 
 from toolkit import scenarios
 from toolkit.geometry.collision import exact_checker
-from toolkit.plots import cspace, scenes
-from toolkit.plots.cspace import INVALID_COLOR, VALID_COLOR
+from toolkit.plots import robot_drawing, scenes
+from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR
 
 FRAMES = 25
 
@@ -40,14 +40,14 @@ def line(ax, gid):
 
 @pytest.mark.parametrize("index", [0, FRAMES - 1])
 def test_the_robot_is_its_link_boxes_at_the_frame_colored_by_validity(crossing, index, monkeypatch):
-    """The frame's configuration goes to ``cspace.draw_robot`` (whose boxes ``tests/test_plots_cspace.py`` holds to
-    forward kinematics) in the colour of its validity, in 3D, with the workspace."""
+    """The frame's configuration goes to ``robot_drawing.draw_robot`` (whose boxes ``tests/test_plots_cspace.py``
+    holds to forward kinematics) in the colour of its validity, in 3D, with the workspace."""
     robot, workspace, _, path, valid = crossing
     drawn_robots = []
 
     def recording(ax, robot, Q, *, colors, view, workspace, margin):
         drawn_robots.append((Q, colors, view, workspace))
-        cspace.draw_robot(ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin)
+        robot_drawing.draw_robot(ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin)
 
     monkeypatch.setattr(scenes, "draw_robot", recording)
     fig = scenes.path_frame(robot, path, index, workspace=workspace, valid=valid)

@@ -6,9 +6,8 @@ the cost is memory traffic, and FCL adds a Python call per pair. Here one loop (
 numba to machine code) takes a block of 64 configurations through every step:
 
 1. forward kinematics of the box chain (:meth:`toolkit.geometry.robots.BoxRobot.link_frames`) for the whole
-   block, each step a loop over its configurations that the compiler turns into vector instructions (8 numbers
-   at once), the sines and cosines included (:func:`sin_cos`: a C library call per angle cost more than the
-   rest of the kinematics);
+   block (:func:`toolkit.geometry.frame_kernels.block_frames`), each step a loop over its configurations that the
+   compiler turns into vector instructions, the sines and cosines included (:mod:`toolkit.geometry.trig`);
 2. then each configuration alone, stopping at its first failure: bounds, ``lower <= q <= upper``;
 3. per link, one bit, looked up in the cell of a fine grid that holds the link's centre
    (:class:`toolkit.geometry.compiled.Far`): whether a ball round the link, centred anywhere in that cell, lies in
@@ -28,8 +27,8 @@ workspace; ``cache=True`` keeps it on disk (in ``NUMBA_CACHE_DIR`` if set, else 
 beside this file, else, where that is read-only, in the user's cache folder, ``~/.cache/numba``),
 so a machine compiles it once. The steps are small functions that numba inlines into the loop
 (``inline="always"``): a call that passes arrays costs more than most of the steps themselves.
-:func:`link_frames` poses one configuration (the clearance bounds and the mesh checker use it), with the same
-sines and cosines.
+:func:`clearance_bounds` poses one configuration at a time
+(:func:`toolkit.geometry.frame_kernels.link_frames`), with the same sines and cosines.
 """
 
 from __future__ import annotations
@@ -37,118 +36,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-# Cephes' sin and cos (S. Moshier, sin.c): pi/4 in three parts (subtracting multiples of it exactly up to
-# |x| ~ 1e9), then polynomials on [-pi/4, pi/4]; within an ulp or two of the C library's, and, unlike a call to
-# it, a loop over many angles of this compiles to vector instructions.
-_PI4 = (7.85398125648498535156e-1, 3.77489470793079817668e-8, 2.69515142907905952645e-15)
-_SIN = (1.58962301576546568060e-10, -2.50507477628578072866e-8, 2.75573136213857245213e-6,
-        -1.98412698295895385996e-4, 8.33333333332211858878e-3, -1.66666666666666307295e-1)  # fmt: skip
-_COS = (-1.13585365213876817300e-11, 2.08757008419747316778e-9, -2.75573141792967388112e-7,
-        2.48015872888517045348e-5, -1.38888888888730564116e-3, 4.16666666666665929218e-2)  # fmt: skip
-SIN_COS_LIMIT = 1e8  # beyond this |angle|, the C library's
-
-
-@njit(cache=True, inline="always")
-def sin_cos(x):
-    """``(sin(x), cos(x))`` for ``|x| <= SIN_COS_LIMIT``, without a branch."""
-    a = abs(x)
-    octant = np.int64(a * (4 / np.pi))
-    octant += octant & 1  # even: the nearest multiple of pi/2 below or above
-    y = np.float64(octant)
-    z = ((a - y * _PI4[0]) - y * _PI4[1]) - y * _PI4[2]  # in [-pi/4, pi/4]
-    zz = z * z
-    p = _SIN[0]
-    for coefficient in _SIN[1:]:
-        p = p * zz + coefficient
-    q = _COS[0]
-    for coefficient in _COS[1:]:
-        q = q * zz + coefficient
-    sin_z, cos_z = z + z * zz * p, 1.0 - 0.5 * zz + zz * zz * q
-    quadrant = (octant >> 1) & 3  # sin a: sin_z, cos_z, -sin_z, -cos_z; cos a: cos_z, -sin_z, -cos_z, sin_z
-    sin_a = cos_z if quadrant & 1 else sin_z
-    cos_a = sin_z if quadrant & 1 else cos_z
-    sin_a = -sin_a if quadrant & 2 else sin_a
-    cos_a = -cos_a if (quadrant + 1) & 2 else cos_a
-    return (-sin_a if x < 0 else sin_a), cos_a
-
-
-@njit(cache=True, inline="always")
-def any_sin_cos(x):
-    """:func:`sin_cos` of any angle (beyond ``SIN_COS_LIMIT``, the C library's)."""
-    return sin_cos(x) if abs(x) <= SIN_COS_LIMIT else (np.sin(x), np.cos(x))
-
-
-@njit(cache=True, inline="always")
-def _turn(rotation, axis, s, c):
-    """``rotation (3, 3) @ (rotation about world axis ``axis`` by the angle of sine ``s``, cosine ``c``)``, in place."""
-    j, k = (axis + 1) % 3, (axis + 2) % 3  # the plane it turns, in right-handed order
-    for row in range(3):
-        a, b = rotation[row, j], rotation[row, k]
-        rotation[row, j] = a * c + b * s
-        rotation[row, k] = b * c - a * s
-
-
-@njit(cache=True, inline="always")
-def first_angle(robot):
-    """The column of a configuration's first angle; the rest follow it (the base's, then the joints')."""
-    return 3 if robot.base == 2 else 2
-
-
-@njit(cache=True, inline="always")
-def pose_base(q, robot, sines, cosines, position, rotation):
-    """Fill the base frame ``position (3,)``, ``rotation (3, 3)`` for configuration ``q``, the sines and cosines of
-    its angles given (``sines, cosines``: indexable from :func:`first_angle`'s column on, as ``q``)."""
-    rotation[:] = 0.0
-    for i in range(3):
-        rotation[i, i] = 1.0
-    if robot.base == 0:  # point2d
-        position[0], position[1], position[2] = q[0], q[1], 0.0
-    elif robot.base == 1:  # planar: x, y, yaw on the floor
-        position[0], position[1], position[2] = q[0], q[1], robot.base_height
-        _turn(rotation, 2, sines[0], cosines[0])
-    else:  # free: x, y, z, then Z-Y-X Euler angles
-        position[0], position[1], position[2] = q[0], q[1], q[2]
-        _turn(rotation, 2, sines[0], cosines[0])
-        _turn(rotation, 1, sines[1], cosines[1])
-        _turn(rotation, 0, sines[2], cosines[2])
-
-
-@njit(cache=True, inline="always")
-def next_link(robot, link, sines, cosines, position, rotation, center):
-    """Move the frame ``position, rotation`` from link ``link - 1``'s to link ``link``'s (none for link 0) and fill
-    the link box's ``center (3,)``; ``sines, cosines`` as in :func:`pose_base`."""
-    if link > 0:  # joint link - 1 carries this link
-        joint = link - 1
-        for i in range(3):
-            for j in range(3):
-                position[i] += rotation[i, j] * robot.joint_origins[joint, j]
-        angle = (3 if robot.base == 2 else robot.base) + joint  # after the base's angles: free 3, planar 1
-        _turn(rotation, robot.joint_axes[joint], sines[angle], cosines[angle])
-    for i in range(3):
-        center[i] = position[i]
-        for j in range(3):
-            center[i] += rotation[i, j] * robot.link_offsets[link, j]
-
-
-@njit(cache=True, inline="always")
-def link_frames(q, robot, frame, centers, rotations, n_links):
-    """Fill ``centers (L, 3)`` and ``rotations (L, 3, 3)`` (columns: the link's axes) of the first ``n_links`` links
-    for configuration ``q`` (:meth:`toolkit.geometry.robots.BoxRobot.link_boxes`); ``frame (4, 3)``: the frame being
-    posed (:func:`new_frame`): position, rotation, then the sines and cosines of ``q``'s angles."""
-    position, rotation, sines, cosines = frame[0, :3], frame[1:4, :3], frame[4], frame[5]
-    start = first_angle(robot)
-    for m in range(len(q) - start):
-        sines[m], cosines[m] = any_sin_cos(q[start + m])
-    pose_base(q, robot, sines, cosines, position, rotation)
-    for link in range(n_links):
-        next_link(robot, link, sines, cosines, position, rotation, centers[link])
-        rotations[link] = rotation
-
-
-@njit(cache=True, inline="always")
-def new_frame(dof):
-    """Scratch for :func:`link_frames` for configurations of ``dof`` numbers."""
-    return np.zeros((6, max(3, dof)))
+from toolkit.geometry.frame_kernels import block_frames, first_angle, link_frames, new_frame
 
 
 @njit(cache=True, inline="always")
@@ -293,67 +181,6 @@ def _link_touches(center, R, half, low, high, box, dim, outer, inner):
     return squared < inner or boxes_touch(center, R, half, low, high, box, dim)
 
 
-@njit(cache=True, inline="always")
-def _turn_block(rotations, axis, sines, cosines, block):
-    """:func:`_turn` for a block of rotations ``(3, 3, B)``, the last axis the configurations (vectorized)."""
-    j, k = (axis + 1) % 3, (axis + 2) % 3
-    for row in range(3):
-        a, b = rotations[row, j], rotations[row, k]
-        for n in range(block):
-            a_n, b_n = a[n], b[n]
-            a[n] = a_n * cosines[n] + b_n * sines[n]
-            b[n] = b_n * cosines[n] - a_n * sines[n]
-
-
-@njit(cache=True, inline="always")
-def _block_frames(Q, first, block, robot, angles, sines, cosines, position, rotation, centers, rotations):
-    """:func:`link_frames` of the ``block`` configurations ``Q[first:first + block]`` at once, every loop over
-    them, so that the compiler turns each into vector instructions: fills ``centers (L, 3, B)`` and
-    ``rotations (L, 3, 3, B)``; ``angles, sines, cosines (A, B)``, ``position (3, B)``, ``rotation (3, 3, B)``:
-    scratch."""
-    start = first_angle(robot)
-    for k in range(len(angles)):
-        for n in range(block):
-            angles[k, n] = Q[first + n, start + k]
-    flat_angles, flat_sines, flat_cosines = angles.reshape(-1), sines.reshape(-1), cosines.reshape(-1)
-    for t in range(len(flat_angles)):
-        flat_sines[t], flat_cosines[t] = sin_cos(flat_angles[t])
-    for t in range(len(flat_angles)):
-        if abs(flat_angles[t]) > SIN_COS_LIMIT:
-            flat_sines[t], flat_cosines[t] = any_sin_cos(flat_angles[t])
-    for i in range(3):
-        for j in range(3):
-            rotation[i, j, :block] = 1.0 if i == j else 0.0
-    for n in range(block):
-        position[0, n], position[1, n] = Q[first + n, 0], Q[first + n, 1]
-    if robot.base == 2:
-        for n in range(block):
-            position[2, n] = Q[first + n, 2]
-    else:
-        position[2, :block] = robot.base_height if robot.base == 1 else 0.0
-    if robot.base == 1:  # planar: yaw
-        _turn_block(rotation, 2, sines[0], cosines[0], block)
-    elif robot.base == 2:  # free: Z-Y-X Euler angles
-        _turn_block(rotation, 2, sines[0], cosines[0], block)
-        _turn_block(rotation, 1, sines[1], cosines[1], block)
-        _turn_block(rotation, 0, sines[2], cosines[2], block)
-    for link in range(len(centers)):
-        if link > 0:  # joint link - 1 carries this link
-            joint, origin = link - 1, robot.joint_origins[link - 1]
-            for i in range(3):
-                p, r0, r1, r2 = position[i], rotation[i, 0], rotation[i, 1], rotation[i, 2]
-                for n in range(block):
-                    p[n] += r0[n] * origin[0] + r1[n] * origin[1] + r2[n] * origin[2]
-            angle = (3 if robot.base == 2 else robot.base) + joint  # after the base's angles: free 3, planar 1
-            _turn_block(rotation, robot.joint_axes[joint], sines[angle], cosines[angle], block)
-        offset = robot.link_offsets[link]
-        for i in range(3):
-            p, r0, r1, r2, center = position[i], rotation[i, 0], rotation[i, 1], rotation[i, 2], centers[link, i]
-            for n in range(block):
-                center[n] = p[n] + r0[n] * offset[0] + r1[n] * offset[1] + r2[n] * offset[2]
-        rotations[link, :, :, :block] = rotation[:, :, :block]
-
-
 BLOCK = 64  # configurations posed together
 
 
@@ -376,7 +203,7 @@ def validity(Q, robot, world, valid):
     seen, found = np.full(len(world.boxes), -1), np.zeros(len(world.boxes), np.int64)  # per box: the last link
     for first in range(0, len(Q), BLOCK):
         block = min(BLOCK, len(Q) - first)
-        _block_frames(Q, first, block, robot, angles, sines, cosines, position, rotation, centers, rotations)
+        block_frames(Q, first, block, robot, angles, sines, cosines, position, rotation, centers, rotations)
         for link in range(n_links):
             flat, x, y, z = cell[link], centers[link, 0], centers[link, 1], centers[link, 2]
             for n in range(block):

@@ -38,16 +38,8 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from toolkit.geometry.kernels import (
-    boxes_touch,
-    far,
-    flat_cell,
-    in_bounds,
-    link_bounds,
-    link_frames,
-    listed_boxes,
-    new_frame,
-)
+from toolkit.geometry.frame_kernels import link_frames, new_frame
+from toolkit.geometry.kernels import boxes_touch, far, flat_cell, in_bounds, link_bounds, listed_boxes
 
 OUTSIDE, INSIDE, SURFACE = 0, 1, 2  # a grid cell's state: no triangle crosses it (out, in), or some may
 

@@ -6,7 +6,7 @@ step one array operation. This module is that port, step for step and formula fo
 
 1. bounds: ``lower <= q <= upper``;
 2. forward kinematics of the box chain, a link's rotation kept as its three columns
-   (``kernels.link_frames``: the same turns, the same sums in the same order);
+   (``frame_kernels.link_frames``: the same turns, the same sums in the same order);
 3. per link, its axis-aligned bounds, which must lie inside the region, and the grid cells
    they cover: at most two per axis, since a cell is wider than any link's bounds;
 4. the obstacle boxes listed in those cells (a table, one row of box numbers per cell) make
@@ -138,7 +138,7 @@ def world_tensors(workspace: Workspace, robot: BoxRobot, device: torch.device | 
 
 def _turn(columns: list[torch.Tensor], axis: int, angle: torch.Tensor) -> None:
     """Rotate the frame whose ``columns`` (3 x ``(N, 3)``) are its axes about its own axis ``axis`` by ``angle
-    (N,)``, in place (``kernels._turn``)."""
+    (N,)``, in place (``frame_kernels._turn``)."""
     c, s = torch.cos(angle)[:, None], torch.sin(angle)[:, None]  # (N, 1) each
     j, k = (axis + 1) % 3, (axis + 2) % 3  # the plane it turns, in right-handed order
     a, b = columns[j], columns[k]
@@ -146,7 +146,7 @@ def _turn(columns: list[torch.Tensor], axis: int, angle: torch.Tensor) -> None:
 
 
 def _moved(position: torch.Tensor, columns: list[torch.Tensor], offset: tuple[float, float, float]) -> torch.Tensor:
-    """``position + rotation @ offset`` ``(N, 3)``, summed in ``kernels.link_frames``' order."""
+    """``position + rotation @ offset`` ``(N, 3)``, summed in ``frame_kernels.link_frames``' order."""
     for j in range(3):
         if offset[j] != 0.0:  # adding 0 * x is adding 0: the same number
             position = position + columns[j] * offset[j]

@@ -4,9 +4,12 @@ Nothing here calls ``show()`` and everything renders headless (Agg): a notebook
 displays the returned figure, a script saves it (``fig.savefig(path)``). One module
 per topic, in the order of the notebooks:
 
-- :mod:`toolkit.plots.cspace` — workspaces, robots, configuration-space obstacles (notebook 01),
-  each box drawn from its corners by :mod:`toolkit.plots.boxes`;
+- :mod:`toolkit.plots.robot_drawing` — a robot's link boxes at configurations, among the blocks near it
+  (notebooks 01, 05), each box drawn from its corners by :mod:`toolkit.plots.boxes`;
+- :mod:`toolkit.plots.slices` — the grid of a 2-DoF slice of configuration space (notebooks 01, 03);
+- :mod:`toolkit.plots.cspace` — workspaces, occupancy grids, configuration-space obstacles (notebook 01);
 - :mod:`toolkit.plots.cae` — the contractive autoencoder's reconstructions and latents (notebook 02);
+- :mod:`toolkit.plots.answers` — the collision MLP's answers against the truth: their kinds, counts, ROC points;
 - :mod:`toolkit.plots.classifier` — the collision MLP's decision boundaries and thresholds (notebook 03);
 - :mod:`toolkit.plots.planning` — samplers, roadmaps and planning times (notebook 04);
 - :mod:`toolkit.plots.scenes` — a planned 3D path, one frame at a time (notebook 05);

@@ -1,7 +1,8 @@
 """Figures of the collision MLP (paper §III-B, Table 2): where it says "valid", and where it is wrong (notebook 03).
 
 The MLP answers P(valid) for a configuration; the learned checker calls it valid when
-P(valid) >= a threshold. Against the exact checker each answer is one of four kinds:
+P(valid) >= a threshold. Against the exact checker each answer is one of four kinds
+(:mod:`toolkit.plots.answers` codes, counts and sweeps them):
 
 - *valid kept* and *invalid rejected*: right (TPR and TNR count them, as
   :func:`toolkit.learning.metrics.classification` does);
@@ -9,7 +10,7 @@ P(valid) >= a threshold. Against the exact checker each answer is one of four ki
 - *invalid kept* (a false valid): a **dangerous** mistake, a configuration in collision
   that the planner would trust, unless it checks its path exactly (``toolkit.planning.prm`` does).
 
-The maps here sweep two degrees of freedom over their bounds (:func:`slice_grid`;
+The maps here sweep two degrees of freedom over their bounds (:func:`toolkit.plots.slices.slice_grid`;
 the point robot's whole C-space, or a 2-DoF slice of a 3D robot with the other joints
 fixed), show P(valid) as an image, draw the true C-obstacle boundary over it and mark
 every mistake at its cell, dangerous ones as squares.
@@ -23,7 +24,6 @@ every mistake at its cell, dangerous ones as squares.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -32,112 +32,15 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
-from toolkit.geometry.robots import BoxRobot
 from toolkit.learning import metrics
 from toolkit.plots.alt import describe
-from toolkit.plots.cspace import slice_configs
+from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
 from toolkit.plots.palette import CATEGORICAL, COLORS, GREY_CMAP, HATCHES, halo, series_style
+from toolkit.plots.slices import CSpaceSlice
 
 DANGEROUS, CONSERVATIVE, BOUNDARY = COLORS["dangerous"], COLORS["conservative"], COLORS["boundary"]
-ANSWERS = ("valid kept", "valid rejected", "invalid rejected", "invalid kept (dangerous)")  # answer_codes 0-3
 ANSWER_COLORS = (COLORS["free"], CONSERVATIVE, COLORS["occupied"], DANGEROUS)  # free white, obstacles dark
 MISTAKE_MARKERS = {1: ".", 3: "s"}  # conservative dots, dangerous squares: the mistakes told without colour
-
-
-@dataclass(frozen=True)
-class CSpaceSlice:
-    """``n x n`` configurations: DoFs ``dofs`` swept over their bounds at cell centres, the others fixed."""
-
-    dofs: tuple[int, int]
-    names: tuple[str, str]
-    axes: tuple[np.ndarray, np.ndarray]  # (nx,), (ny,) cell centres along each swept DoF
-    lower: np.ndarray  # (2,) bounds of the swept DoFs
-    upper: np.ndarray  # (2,)
-    configs: np.ndarray  # (nx * ny, dof), row i * ny + j holds axes[0][i], axes[1][j]
-
-    @property
-    def shape(self) -> tuple[int, int]:
-        return len(self.axes[0]), len(self.axes[1])
-
-    @property
-    def extent(self) -> tuple[float, float, float, float]:
-        """``(left, right, bottom, top)`` for ``imshow``: the swept DoFs' bounds."""
-        return float(self.lower[0]), float(self.upper[0]), float(self.lower[1]), float(self.upper[1])
-
-    def image(self, values) -> np.ndarray:
-        """Values per configuration ``(nx * ny,)`` as a grid ``(nx, ny)``, ``[i, j]`` at ``axes[0][i], axes[1][j]``."""
-        return np.asarray(values).reshape(self.shape)
-
-
-def slice_grid(robot: BoxRobot, dofs: tuple[int, int] = (0, 1), *, fixed=None, n: int = 80) -> CSpaceSlice:
-    """The ``n x n`` grid over DoFs ``dofs`` of ``robot``, the others at ``fixed (dof,)`` (default: mid-bounds).
-
-    The configurations of :func:`toolkit.plots.cspace.slice_configs` (notebook 01's slices), flattened.
-    """
-    fixed = (robot.lower + robot.upper) / 2 if fixed is None else fixed
-    values_i, values_j, Q = slice_configs(robot, fixed, dofs, resolution=n)  # (n,), (n,), (n, n, dof); checks the DoFs
-    i, j = dofs
-    return CSpaceSlice(
-        (i, j),
-        (robot.dof_names[i], robot.dof_names[j]),
-        (values_i, values_j),
-        robot.lower[[i, j]],
-        robot.upper[[i, j]],
-        Q.reshape(-1, robot.dof),
-    )
-
-
-def answer_codes(predicted_valid, valid) -> np.ndarray:
-    """Each answer's index in ``ANSWERS``: 0 valid kept, 1 valid rejected, 2 invalid rejected, 3 invalid kept."""
-    pred, truth = np.asarray(predicted_valid, dtype=bool), np.asarray(valid, dtype=bool)
-    if pred.shape != truth.shape:
-        raise ValueError(f"predictions {pred.shape} and truth {truth.shape} must have the same shape")
-    return np.where(truth, np.where(pred, 0, 1), np.where(pred, 3, 2))
-
-
-def confusion_counts(predicted_valid, valid) -> dict[str, int]:
-    """How many answers of each kind in ``ANSWERS``: valid kept, valid rejected, invalid rejected, invalid kept."""
-    counts = np.bincount(answer_codes(predicted_valid, valid).ravel(), minlength=len(ANSWERS))
-    return dict(zip(ANSWERS, counts.tolist()))
-
-
-def mistakes_near_boundary(predicted_valid, valid, cells: int = 1) -> tuple[int, float]:
-    """Wrong answers on a map ``(nx, ny)``, and the share of them near a boundary of the true C-obstacle: within
-    ``cells`` steps (left, right, down, up) of a cell of the other truth, or of the map's edge (the swept bounds,
-    where a robot placed in the region meets its walls). A model that has learned the obstacles errs there only,
-    where a configuration is a hair's breadth from a block or a wall; mistakes elsewhere mean it has not."""
-    truth = np.asarray(valid, dtype=bool)
-    if truth.ndim != 2 or np.shape(predicted_valid) != truth.shape:
-        raise ValueError(f"a map of predictions {np.shape(predicted_valid)} and one of truth {truth.shape} (nx, ny)")
-    if cells < 1:
-        raise ValueError(f"cells must be 1 or more, got {cells}")
-    wrong = np.asarray(predicted_valid, dtype=bool) != truth  # (nx, ny) valid rejected or invalid kept
-    padded = np.pad(truth, 1, mode="edge")  # (nx + 2, ny + 2): the map's edge counts as a boundary below
-    inside = padded[1:-1, 1:-1]
-    near = (padded[:-2, 1:-1] != inside) | (padded[2:, 1:-1] != inside)
-    near |= (padded[1:-1, :-2] != inside) | (padded[1:-1, 2:] != inside)
-    near[[0, -1], :] = near[:, [0, -1]] = True  # (nx, ny) beside the other truth, or on the map's edge
-    for _ in range(cells - 1):  # grow by one step a round
-        grown = np.pad(near, 1)
-        near = near | grown[:-2, 1:-1] | grown[2:, 1:-1] | grown[1:-1, :-2] | grown[1:-1, 2:]
-    return int(wrong.sum()), float((wrong & near).sum() / max(1, wrong.sum()))
-
-
-def roc_points(probability, valid, thresholds=None) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-    """``(thresholds, FPR, TPR)`` of "valid when P(valid) >= t": FPR = invalid kept share = 1 - TNR.
-
-    Default thresholds: every distinct probability and +inf, so the curve runs from
-    (1, 1) to (0, 0) through every point a threshold can reach.
-    """
-    p, truth = np.asarray(probability, dtype=float).ravel(), np.asarray(valid, dtype=bool).ravel()
-    if not truth.any() or truth.all():
-        raise ValueError("an ROC curve needs both valid and invalid configurations")
-    ts = np.append(np.unique(p), np.inf) if thresholds is None else np.asarray(thresholds, dtype=float)
-
-    def kept(q):  # how many of q are >= each threshold
-        return len(q) - np.searchsorted(np.sort(q), ts, side="left")
-
-    return ts, kept(p[~truth]) / (~truth).sum(), kept(p[truth]) / truth.sum()
 
 
 def probability_map(

@@ -24,8 +24,9 @@ from toolkit.geometry.collision import CollisionChecker
 from toolkit.planning.prm import GOAL, START, PlanStep
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import describe
-from toolkit.plots.cspace import checker_workspace, slice_configs
+from toolkit.plots.cspace import checker_workspace
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, halo
+from toolkit.plots.slices import slice_configs
 
 MODES = ("without", "with")
 STAGE_KEYS = ("sampling_s", "connection_s", "query_s")  # PRM stats, in the order the planner spends them
@@ -230,32 +231,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         table["total_s"] = table["total_s_median"]
         table.update({key: table["total_s"] * table[f"{key}_share"] for key in STAGE_KEYS})
         table["other_s"] = np.maximum(table["total_s"] - sum(table[k] for k in STAGE_KEYS), 0.0)
-        bottom = np.zeros_like(table["total_s"])
-        for k, key in enumerate(STAGE_KEYS + ("other_s",)):
-            ax.bar(
-                x.ravel(),
-                table[key].ravel(),
-                0.38,
-                bottom=bottom.ravel(),
-                label=STAGE_LABELS[key],
-                color=CATEGORICAL[k],
-                hatch=STAGE_HATCHES[k],  # a second cue besides the colour
-                edgecolor=COLORS["ink"],
-                linewidth=0.5,
-            )
-            bottom = bottom + table[key]
-        low, high = table["total_s"] - table["total_s_q1"], table["total_s_q3"] - table["total_s"]
-        ax.errorbar(
-            x.ravel(),
-            table["total_s"].ravel(),
-            yerr=[low.ravel(), high.ravel()],
-            fmt="none",
-            ecolor=COLORS["ink"],
-            capsize=3,
-            linewidth=1,
-            label="total: quartiles",
-        )
-        top = np.maximum(bottom, table["total_s_q3"])
+        top = _draw_stage_bars(ax, x, table)  # (samplers, modes) the bars' and whiskers' tops
         ratio = table["total_s"][:, 1] / np.maximum(table["total_s"][:, 0], 1e-12)
         for i, r in enumerate(ratio):
             ax.annotate(
@@ -277,6 +253,37 @@ def stage_times(panels: dict[str, dict]) -> Figure:
     fig.tight_layout(rect=(0, 0.12, 1, 1))
     text = "Median planning time per query without and with prediction, per sampler, split into the planner's stages"
     return describe(fig, f"{text} (hatched), with the ratio with / without above each pair. {'; '.join(said)}.")
+
+
+def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndarray:
+    """:func:`stage_times`' bars at ``x (samplers, modes)``: the stages of ``table`` (key -> ``(samplers, modes)``)
+    stacked, hatched by stage, and a whisker from the total's first to third quartile; returns their tops."""
+    bottom = np.zeros_like(table["total_s"])
+    for k, key in enumerate(STAGE_KEYS + ("other_s",)):
+        ax.bar(
+            x.ravel(),
+            table[key].ravel(),
+            0.38,
+            bottom=bottom.ravel(),
+            label=STAGE_LABELS[key],
+            color=CATEGORICAL[k],
+            hatch=STAGE_HATCHES[k],  # a second cue besides the colour
+            edgecolor=COLORS["ink"],
+            linewidth=0.5,
+        )
+        bottom = bottom + table[key]
+    low, high = table["total_s"] - table["total_s_q1"], table["total_s_q3"] - table["total_s"]
+    ax.errorbar(
+        x.ravel(),
+        table["total_s"].ravel(),
+        yerr=[low.ravel(), high.ravel()],
+        fmt="none",
+        ecolor=COLORS["ink"],
+        capsize=3,
+        linewidth=1,
+        label="total: quartiles",
+    )
+    return np.maximum(bottom, table["total_s_q3"])
 
 
 def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figure:

@@ -7,7 +7,7 @@ what stays hidden in a 3D picture: every degree of freedom along the path, how m
 room the robot has (the exact checker's clearance bound) and what a learned model
 thinks of each configuration (P(valid), the MLP of §III-B).
 
-The 3D drawing of the robot and its nearby blocks is :mod:`toolkit.plots.cspace`'s.
+The 3D drawing of the robot and its nearby blocks is :mod:`toolkit.plots.robot_drawing`'s.
 Every function returns a matplotlib ``Figure`` and never calls ``show()``.
 """
 
@@ -22,8 +22,8 @@ from matplotlib.gridspec import SubplotSpec
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import describe
-from toolkit.plots.cspace import INVALID_COLOR, VALID_COLOR, draw_robot
 from toolkit.plots.palette import COLORS, halo, series_style
+from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR, draw_robot
 
 TRACE_COLOR = COLORS["trace"]  # the path of the robot's base, as the viewer's path line
 UNCHECKED_COLOR = COLORS["unchecked"]  # the robot when no validity is given

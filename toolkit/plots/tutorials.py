@@ -1,6 +1,6 @@
 """Figures of the tutorials (``tutorials/``): a mesh workspace and its grid, samplers in a narrow passage.
 
-The tutorials reuse the notebooks' figures where they fit (``cspace.robot_figure``,
+The tutorials reuse the notebooks' figures where they fit (``robot_drawing.robot_figure``,
 ``classifier.metrics_bars``, ``scenes.path_frame``, ``cae.training_curves``); the two
 here are what only the tutorials show. Every function returns a matplotlib ``Figure``
 and never calls ``show()``.

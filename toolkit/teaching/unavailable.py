@@ -32,8 +32,8 @@ ENTRY_POINTS = {  # assignment -> {"module:qualified name": what it computes}
     },
     "evaluating_a_checker": {
         "toolkit.learning.metrics:classification": "accuracy, TPR and TNR",
-        "toolkit.plots.classifier:confusion_counts": "a confusion matrix",
-        "toolkit.plots.classifier:roc_points": "TPR and FPR at thresholds",
+        "toolkit.plots.answers:confusion_counts": "a confusion matrix",
+        "toolkit.plots.answers:roc_points": "TPR and FPR at thresholds",
     },
     "cae_loss": {
         "toolkit.learning.models:CAE.loss": "the CAE's loss",

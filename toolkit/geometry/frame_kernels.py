@@ -1,0 +1,156 @@
+"""Forward kinematics of the box chain, compiled (numba): link frames from a configuration (§II-B, §IV-A).
+
+The compiled checkers (:mod:`toolkit.geometry.kernels`, :mod:`toolkit.geometry.mesh_kernels`) pose a robot's
+links as :meth:`toolkit.geometry.robots.BoxRobot.link_frames` does in numpy: the base frame from the
+configuration's position and angles, then, joint by joint, a shift by the joint's origin and a turn about its
+axis; each link box's centre sits at its offset in its frame. Two forms:
+
+- :func:`link_frames`: one configuration (the clearance bounds and the mesh checker use it);
+- :func:`block_frames`: a block of configurations at once, every step a loop over them that the compiler turns
+  into vector instructions (8 numbers at once), the sines and cosines included
+  (:func:`toolkit.geometry.trig.sin_cos`).
+
+The robot arrives as arrays (:class:`toolkit.geometry.compiled.Robot`): ``base`` 0 for the 2D point, 1 for a
+planar base (x, y, yaw on the floor), 2 for a free one (x, y, z, then Z-Y-X Euler angles).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from toolkit.geometry.trig import SIN_COS_LIMIT, any_sin_cos, sin_cos
+
+
+@njit(cache=True, inline="always")
+def _turn(rotation, axis, s, c):
+    """``rotation (3, 3) @ (rotation about world axis ``axis`` by the angle of sine ``s``, cosine ``c``)``, in place."""
+    j, k = (axis + 1) % 3, (axis + 2) % 3  # the plane it turns, in right-handed order
+    for row in range(3):
+        a, b = rotation[row, j], rotation[row, k]
+        rotation[row, j] = a * c + b * s
+        rotation[row, k] = b * c - a * s
+
+
+@njit(cache=True, inline="always")
+def first_angle(robot):
+    """The column of a configuration's first angle; the rest follow it (the base's, then the joints')."""
+    return 3 if robot.base == 2 else 2
+
+
+@njit(cache=True, inline="always")
+def pose_base(q, robot, sines, cosines, position, rotation):
+    """Fill the base frame ``position (3,)``, ``rotation (3, 3)`` for configuration ``q``, the sines and cosines of
+    its angles given (``sines, cosines``: indexable from :func:`first_angle`'s column on, as ``q``)."""
+    rotation[:] = 0.0
+    for i in range(3):
+        rotation[i, i] = 1.0
+    if robot.base == 0:  # point2d
+        position[0], position[1], position[2] = q[0], q[1], 0.0
+    elif robot.base == 1:  # planar: x, y, yaw on the floor
+        position[0], position[1], position[2] = q[0], q[1], robot.base_height
+        _turn(rotation, 2, sines[0], cosines[0])
+    else:  # free: x, y, z, then Z-Y-X Euler angles
+        position[0], position[1], position[2] = q[0], q[1], q[2]
+        _turn(rotation, 2, sines[0], cosines[0])
+        _turn(rotation, 1, sines[1], cosines[1])
+        _turn(rotation, 0, sines[2], cosines[2])
+
+
+@njit(cache=True, inline="always")
+def next_link(robot, link, sines, cosines, position, rotation, center):
+    """Move the frame ``position, rotation`` from link ``link - 1``'s to link ``link``'s (none for link 0) and fill
+    the link box's ``center (3,)``; ``sines, cosines`` as in :func:`pose_base`."""
+    if link > 0:  # joint link - 1 carries this link
+        joint = link - 1
+        for i in range(3):
+            for j in range(3):
+                position[i] += rotation[i, j] * robot.joint_origins[joint, j]
+        angle = (3 if robot.base == 2 else robot.base) + joint  # after the base's angles: free 3, planar 1
+        _turn(rotation, robot.joint_axes[joint], sines[angle], cosines[angle])
+    for i in range(3):
+        center[i] = position[i]
+        for j in range(3):
+            center[i] += rotation[i, j] * robot.link_offsets[link, j]
+
+
+@njit(cache=True, inline="always")
+def link_frames(q, robot, frame, centers, rotations, n_links):
+    """Fill ``centers (L, 3)`` and ``rotations (L, 3, 3)`` (columns: the link's axes) of the first ``n_links`` links
+    for configuration ``q`` (:meth:`toolkit.geometry.robots.BoxRobot.link_boxes`); ``frame (4, 3)``: the frame being
+    posed (:func:`new_frame`): position, rotation, then the sines and cosines of ``q``'s angles."""
+    position, rotation, sines, cosines = frame[0, :3], frame[1:4, :3], frame[4], frame[5]
+    start = first_angle(robot)
+    for m in range(len(q) - start):
+        sines[m], cosines[m] = any_sin_cos(q[start + m])
+    pose_base(q, robot, sines, cosines, position, rotation)
+    for link in range(n_links):
+        next_link(robot, link, sines, cosines, position, rotation, centers[link])
+        rotations[link] = rotation
+
+
+@njit(cache=True, inline="always")
+def new_frame(dof):
+    """Scratch for :func:`link_frames` for configurations of ``dof`` numbers."""
+    return np.zeros((6, max(3, dof)))
+
+
+@njit(cache=True, inline="always")
+def _turn_block(rotations, axis, sines, cosines, block):
+    """:func:`_turn` for a block of rotations ``(3, 3, B)``, the last axis the configurations (vectorized)."""
+    j, k = (axis + 1) % 3, (axis + 2) % 3
+    for row in range(3):
+        a, b = rotations[row, j], rotations[row, k]
+        for n in range(block):
+            a_n, b_n = a[n], b[n]
+            a[n] = a_n * cosines[n] + b_n * sines[n]
+            b[n] = b_n * cosines[n] - a_n * sines[n]
+
+
+@njit(cache=True, inline="always")
+def block_frames(Q, first, block, robot, angles, sines, cosines, position, rotation, centers, rotations):
+    """:func:`link_frames` of the ``block`` configurations ``Q[first:first + block]`` at once, every loop over
+    them, so that the compiler turns each into vector instructions: fills ``centers (L, 3, B)`` and
+    ``rotations (L, 3, 3, B)``; ``angles, sines, cosines (A, B)``, ``position (3, B)``, ``rotation (3, 3, B)``:
+    scratch."""
+    start = first_angle(robot)
+    for k in range(len(angles)):
+        for n in range(block):
+            angles[k, n] = Q[first + n, start + k]
+    flat_angles, flat_sines, flat_cosines = angles.reshape(-1), sines.reshape(-1), cosines.reshape(-1)
+    for t in range(len(flat_angles)):
+        flat_sines[t], flat_cosines[t] = sin_cos(flat_angles[t])
+    for t in range(len(flat_angles)):
+        if abs(flat_angles[t]) > SIN_COS_LIMIT:
+            flat_sines[t], flat_cosines[t] = any_sin_cos(flat_angles[t])
+    for i in range(3):
+        for j in range(3):
+            rotation[i, j, :block] = 1.0 if i == j else 0.0
+    for n in range(block):
+        position[0, n], position[1, n] = Q[first + n, 0], Q[first + n, 1]
+    if robot.base == 2:
+        for n in range(block):
+            position[2, n] = Q[first + n, 2]
+    else:
+        position[2, :block] = robot.base_height if robot.base == 1 else 0.0
+    if robot.base == 1:  # planar: yaw
+        _turn_block(rotation, 2, sines[0], cosines[0], block)
+    elif robot.base == 2:  # free: Z-Y-X Euler angles
+        _turn_block(rotation, 2, sines[0], cosines[0], block)
+        _turn_block(rotation, 1, sines[1], cosines[1], block)
+        _turn_block(rotation, 0, sines[2], cosines[2], block)
+    for link in range(len(centers)):
+        if link > 0:  # joint link - 1 carries this link
+            joint, origin = link - 1, robot.joint_origins[link - 1]
+            for i in range(3):
+                p, r0, r1, r2 = position[i], rotation[i, 0], rotation[i, 1], rotation[i, 2]
+                for n in range(block):
+                    p[n] += r0[n] * origin[0] + r1[n] * origin[1] + r2[n] * origin[2]
+            angle = (3 if robot.base == 2 else robot.base) + joint  # after the base's angles: free 3, planar 1
+            _turn_block(rotation, robot.joint_axes[joint], sines[angle], cosines[angle], block)
+        offset = robot.link_offsets[link]
+        for i in range(3):
+            p, r0, r1, r2, center = position[i], rotation[i, 0], rotation[i, 1], rotation[i, 2], centers[link, i]
+            for n in range(block):
+                center[n] = p[n] + r0[n] * offset[0] + r1[n] * offset[1] + r2[n] * offset[2]
+        rotations[link, :, :, :block] = rotation[:, :, :block]

@@ -1,0 +1,183 @@
+"""Drawing a robot: its link boxes at configurations, among the blocks near it (paper §IV-A; notebooks 01, 05).
+
+Forward kinematics (``robot.link_boxes``) places each link box of a configuration; these functions draw them:
+
+- :func:`draw_robot` draws the link boxes of configurations, and the blocks near them, on an axes of your own, in
+  3D or projected onto a coordinate plane (the building block of :func:`robot_figure`,
+  :func:`toolkit.plots.cspace.cspace_slice` and :mod:`toolkit.plots.scenes`);
+- :func:`robot_figure` draws them in one panel per view, a legend naming the configurations.
+
+A configuration is drawn in the valid colour or, hatched, the invalid one (:func:`link_style`: colour is never the
+only cue), else in a colour and hatch of its own. Each box is drawn from its corners (:mod:`toolkit.plots.boxes`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from typing import Any
+
+import numpy as np
+from matplotlib.figure import Figure
+from matplotlib.patches import Patch, Polygon, Rectangle
+
+from toolkit.geometry.robots import BoxRobot
+from toolkit.geometry.workspace import Workspace
+from toolkit.plots.alt import describe
+from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
+from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES
+
+VALID_COLOR, INVALID_COLOR = COLORS["valid"], COLORS["invalid"]
+BLOCK_STYLE: dict[str, Any] = dict(facecolor=COLORS["block"], edgecolor=COLORS["occupied"], gid="block")
+
+
+def link_style(color: str, hatch: str | None = None) -> dict:
+    """A link's face and edge; a link in collision is hatched too (colour is never the only cue), and so is each
+    configuration a legend names (``hatch``)."""
+    return dict(facecolor=color, edgecolor=COLORS["ink"], hatch="xx" if color == INVALID_COLOR else hatch or None)
+
+
+VIEWS = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
+POSITION_NAMES = ("x", "y", "z")
+
+
+def few_ticks(ax) -> None:
+    """A 3D axes with a few tick labels per axis, at 8 points: they do not run into each other (a flat region, as
+    the office's 41 x 41 x 6, gets its z axis labelled at its ends only)."""
+    ax.locator_params(nbins=4)
+    ax.tick_params(labelsize=8)
+    aspect = ax.get_box_aspect()  # (3,) the drawn lengths of x, y, z
+    if aspect is not None and aspect[2] < 0.3 * max(aspect[:2]):
+        ax.set_zticks(ax.get_zlim())
+        ax.zaxis.labelpad = 2
+
+
+def _nearby_blocks(workspace: Workspace, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """Indices of the blocks that meet the axis-aligned window ``[lo, hi]`` (D,)."""
+    boxes = workspace.boxes
+    return np.flatnonzero(np.all((boxes[:, 0] <= hi) & (boxes[:, 1] >= lo), axis=1))
+
+
+def draw_robot(
+    ax,
+    robot: BoxRobot,
+    Q,
+    *,
+    colors: list[str],
+    view: str = "3d",
+    workspace: Workspace | None = None,
+    margin=1.0,
+    hatches: Sequence[str | None] | None = None,
+) -> None:
+    """Draw the link boxes of configurations ``Q (k, dof)``, one colour each, and the blocks within ``margin`` of them,
+    on one axes (the building block of :func:`robot_figure`, :func:`toolkit.plots.cspace.cspace_slice` and the scene
+    figures).
+
+    ``view``: ``"3d"`` (``ax`` an mplot3d axes) or a plane ``"xy"``, ``"xz"``, ``"yz"`` (the shadow of each box,
+    drawn far to near as seen from the page's front: in ``"xy"`` from above, so the highest link lies on top).
+    Links have gid ``"link"``, blocks gid ``"block"``; the axes' limits frame them. ``hatches``: one hatch per
+    configuration (a second cue where colours tell configurations apart).
+    """
+    Q = robot.check_configs(Q)  # (k, dof)
+    if view != "3d" and view not in VIEWS:
+        raise ValueError(f"unknown view {view!r}; choose '3d' or one of {sorted(VIEWS)}")
+    if len(colors) != len(Q):
+        raise ValueError(f"{len(colors)} colours for {len(Q)} configurations: give one colour a configuration")
+    centers, rotations, half = robot.link_boxes(Q)  # (k, L, D), (k, L, D, D), (L, D)
+    aabbs = robot.link_aabbs(Q)  # (k, L, 2, D)
+    lo, hi = aabbs[:, :, 0].min(axis=(0, 1)) - margin, aabbs[:, :, 1].max(axis=(0, 1)) + margin  # (D,) window
+    if workspace is not None:
+        lo, hi = np.maximum(lo, workspace.lower), np.minimum(hi, workspace.upper)
+        blocks = workspace.boxes[_nearby_blocks(workspace, lo, hi)]
+    else:
+        blocks = np.zeros((0, 2, robot.dim))
+    hatches = hatches if hatches is not None else [None] * len(Q)
+    link_boxes = [
+        (box_corners(c, r, h), color, hatch)
+        for cs, rs, color, hatch in zip(centers, rotations, colors, hatches)
+        for c, r, h in zip(cs, rs, half)
+    ]
+    if view == "3d":
+        for b_lo, b_hi in blocks:
+            add_box_3d(ax, aabb_corners(b_lo, b_hi), linewidth=0.3, alpha=0.25, **BLOCK_STYLE)
+        for corners, color, hatch in link_boxes:
+            add_box_3d(ax, corners, linewidth=0.4, alpha=0.9, **link_style(color, hatch)).set_gid("link")
+        ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), zlim=(lo[2], hi[2]), xlabel="x", ylabel="y", zlabel="z")
+        ax.set_box_aspect(hi - lo)
+        return
+    axes = VIEWS[view]
+    for b_lo, b_hi in blocks:
+        ax.add_patch(Rectangle(b_lo[list(axes)], *(b_hi - b_lo)[list(axes)], alpha=0.5, **BLOCK_STYLE))
+    toward_viewer = np.cross(*np.eye(3)[list(axes)]) if robot.dim == 3 else np.zeros(2)  # (D,) out of the page
+    for corners, color, hatch in sorted(link_boxes, key=lambda box: float((box[0] @ toward_viewer).max())):
+        ax.add_patch(  # nearest the viewer last, on top: from above, a higher link hides what lies under it
+            Polygon(outline(corners, axes), linewidth=0.6, alpha=0.85, gid="link", **link_style(color, hatch))
+        )
+    ax.set_xlim(lo[axes[0]], hi[axes[0]])
+    ax.set_ylim(lo[axes[1]], hi[axes[1]])
+    ax.set_aspect("equal")
+    ax.set_xlabel(POSITION_NAMES[axes[0]])
+    ax.set_ylabel(POSITION_NAMES[axes[1]])
+
+
+def link_colors(n: int, valid: np.ndarray | None) -> list[str]:
+    """One colour per configuration: valid / invalid by ``valid (n,)``, else the categorical colours in turn."""
+    if valid is None:
+        return [CATEGORICAL[k % len(CATEGORICAL)] for k in range(n)]
+    return [VALID_COLOR if v else INVALID_COLOR for v in np.asarray(valid, dtype=bool).reshape(n)]
+
+
+def robot_figure(
+    robot: BoxRobot,
+    Q,
+    workspace: Workspace | None = None,
+    *,
+    valid=None,
+    views: tuple[str, ...] | None = None,
+    margin: float = 1.0,
+    labels: Sequence[str] | None = None,
+) -> Figure:
+    """The robot's link boxes at configurations ``Q (dof,)`` or ``(k, dof)``, by forward kinematics.
+
+    One panel per view: ``"xy"`` (from above), ``"xz"``, ``"yz"`` (from the side; a box's
+    panel shows its shadow, the convex hull of its projected corners) or ``"3d"``.
+    Default: ``("xy",)`` for a 2D robot, ``("3d", "xy", "xz")`` for a 3D one. Blocks of
+    ``workspace`` within ``margin`` of the robot are drawn too; ``valid (k,)`` colors
+    each configuration in the valid colour or, hatched, the invalid one (a legend names them), else each one in a
+    colour of its own, named in a legend by ``labels (k,)`` (where the boxes coincide, the last one's shows).
+    """
+    Q = robot.check_configs(Q)  # (k, dof)
+    views = views or (("xy",) if robot.dim == 2 else ("3d", "xy", "xz"))
+    if labels is not None and len(labels) != len(Q):
+        raise ValueError(f"{len(labels)} labels for {len(Q)} configurations: give one label a configuration")
+    fig = Figure(figsize=(4.2 * len(views), 4.2 + 0.4 * (labels is not None)))
+    colors = link_colors(len(Q), valid)
+    hatches = [HATCHES[k % len(HATCHES)] for k in range(len(Q))] if valid is None else [None] * len(Q)
+    for i, view in enumerate(views):
+        ax = fig.add_subplot(1, len(views), i + 1, **({"projection": "3d"} if view == "3d" else {}))
+        draw_robot(ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin, hatches=hatches)
+        ax.set_title(f"{robot.name}: {view}", fontsize=10)
+        if view == "3d":
+            few_ticks(ax)
+    if labels is None and valid is not None:
+        labels = ["valid" if color == VALID_COLOR else "in collision" for color in colors]
+    if labels is not None:
+        styles = {label: link_style(c, h) for label, c, h in zip(labels, colors, hatches)}
+        handles = [Patch(label=label, **style) for label, style in styles.items()]
+        fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0, 0.08 if labels is not None else 0, 1, 1))
+    text = f"The {robot.name} robot's link boxes at {len(Q)} configuration{'s' if len(Q) > 1 else ''}"
+    seen = ["in 3D" if v == "3d" else f"in the {v} plane" for v in views]
+    text += ", seen " + (", ".join(seen[:-1]) + " and " if len(seen) > 1 else "") + seen[-1]
+    text += ", with the blocks near it" if workspace is not None else ""
+    if valid is not None:
+        n_valid = int(np.sum(np.asarray(valid, dtype=bool)))
+        text += f": {n_valid} valid, {len(Q) - n_valid} in collision (hatched)"
+    elif labels is not None:
+        text += ": " + ", ".join(f"{label} ({_hatch_name(h)})" for label, h in zip(labels, hatches))
+    return describe(fig, text + ".")
+
+
+def _hatch_name(hatch: str | None) -> str:
+    return {"": "plain", "//": "hatched with slashes", "..": "dotted", "xx": "cross-hatched"}.get(
+        hatch or "", "hatched"
+    )
