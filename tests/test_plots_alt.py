@@ -12,7 +12,7 @@ from toolkit.geometry import robots
 from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace
 from toolkit.planning.prm import PlanStep
-from toolkit.plots import alt, cspace, planning
+from toolkit.plots import alt, cspace, planning, slices
 
 
 @pytest.fixture
@@ -36,7 +36,7 @@ def test_a_description_is_kept_and_a_figure_without_one_is_read_from_its_titles(
 
 def test_the_cspace_image_says_what_share_is_in_collision(one_block):
     fig = cspace.cspace_image(one_block, resolution=200)
-    _, _, Q = cspace.slice_configs(one_block.robot, one_block.robot.lower, (0, 1), resolution=200)  # (n, n, 2)
+    _, _, Q = slices.slice_configs(one_block.robot, one_block.robot.lower, (0, 1), resolution=200)  # (n, n, 2)
     share = 1 - one_block.are_valid(Q.reshape(-1, 2)).mean()
     assert 0 < share < 1
     assert alt.alt_text(fig) == (
