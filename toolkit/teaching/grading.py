@@ -99,7 +99,7 @@ def build(name: str) -> Path:
     if done.returncode != 0:
         raise RuntimeError(f"otter assign failed for {name}:\n{done.stdout[-3000:]}\n{done.stderr[-3000:]}")
     zip_path = autograder(name, build_missing=False)
-    gradescope.ship_toolkit(zip_path, source=folder().parents[1])  # the course's repository: the toolkit's source
+    gradescope.ship_toolkit(zip_path, source=folder().parent.parent)  # the course's repository: the toolkit's source
     return zip_path
 
 

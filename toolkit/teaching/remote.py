@@ -25,12 +25,14 @@ from pathlib import Path
 import dill
 import numpy as np
 
+import toolkit
 from toolkit.geometry.checker import CollisionChecker
 from toolkit.teaching import sandbox, wire
 from toolkit.teaching.unavailable import stripped_modules
 
 STARTS = 3  # times a submission's process is started before every further call fails
 INSIDE = "/grading/in"  # where the notebook appears in the sandbox
+IMPORTED_FROM = Path(toolkit.__file__).resolve().parent.parent  # the folder that holds this toolkit package
 
 
 class SubmissionRaised(Exception):
@@ -82,7 +84,7 @@ class Submission:
             env = None
         else:
             command = [*python, str(self.notebook), self.assignment]
-            env = {**os.environ, "PYTHONPATH": str(Path(__file__).resolve().parents[2])}
+            env = {**os.environ, "PYTHONPATH": str(IMPORTED_FROM)}  # this toolkit, wherever it is installed
         self.process = subprocess.Popen(
             command,
             stdin=subprocess.PIPE,
