@@ -1209,24 +1209,6 @@ def verify_and_repair(roadmap, exact, start, goal, resolution):
 """,
         "q1 sentence 8",
     ),
-    "repair_moves_bad_nodes_onto_the_start": _variant(
-        "verify_and_repair",
-        "q1",
-        """
-def verify_and_repair(roadmap, exact, start, goal, resolution):
-    while (path := roadmap.shortest_path(start, goal)) is not None:
-        node_ok = exact.are_valid(roadmap.nodes[path])
-        if not node_ok.all():
-            roadmap.nodes[path[~node_ok]] = roadmap.nodes[start]  # moved out of collision, its edges kept
-            continue
-        step_ok = check_edges(exact, roadmap.nodes[path[:-1]], roadmap.nodes[path[1:]], resolution)
-        if step_ok.all():
-            return path
-        roadmap.remove_edges(roadmap.edge_index(path)[~step_ok])
-    return None
-""",
-        "q1 sentence 2",
-    ),
     "repair_with_sets_and_a_flag": _correct(
         "verify_and_repair",
         """
