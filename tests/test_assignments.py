@@ -444,7 +444,7 @@ def test_the_instructors_guide_grades_a_folder_of_three_submissions_into_a_csv(b
         cwd=tmp_path,
         capture_output=True,
         text=True,
-        env={**os.environ, "PYTHONPATH": str(root)},
+        env={**os.environ, "PYTHONPATH": str(root), grading.FOLDER_VARIABLE: str(grading.folder())},  # as in the course
         timeout=1500,
     )
     assert done.returncode == 0, done.stderr[-3000:]
