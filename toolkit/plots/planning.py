@@ -175,7 +175,7 @@ def roadmap(exact: CollisionChecker, step: PlanStep, title: str = "") -> Figure:
     _draw_roadmap(ax, exact, step)
     _roadmap_legend(fig, [ax])
     if title:
-        fig.suptitle(title, fontsize=10)
+        fig.suptitle(title, fontsize=10, wrap=True)  # a long stage description wraps at the figure width
     fig.tight_layout(rect=(0, 0.1, 1, 1))
     return describe(fig, f"{title + ': ' if title else ''}{step_in_words(step)}")
 
