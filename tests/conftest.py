@@ -55,3 +55,13 @@ def quick_notebooks(monkeypatch, notebook_cache):
     monkeypatch.setenv("TOOLKIT_QUICK", "1")
     monkeypatch.setenv("TOOLKIT_CACHE", str(notebook_cache))
     monkeypatch.setenv("MPLBACKEND", "module://matplotlib_inline.backend_inline")
+
+
+@pytest.fixture(autouse=True)
+def library_restored():
+    """Each test ends with the library whole: grading in this process runs hidden tests that make an assignment's
+    library functions unavailable (``toolkit.teaching.unavailable.apply``), and a later test would meet them so."""
+    yield
+    from toolkit.teaching import unavailable
+
+    unavailable.restore()
