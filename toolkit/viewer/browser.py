@@ -2,7 +2,7 @@
 
 Used by the browser test and to make ``docs/viewer.png``::
 
-    toolkit view --scenario 3do --screenshot docs/viewer.png
+    toolkit view --scenario 3do --samples 300 --screenshot docs/viewer.png
 
 Playwright drives Debian's Chromium (``make browser``). WebGL renders in software
 there (``--disable-gpu``; ``--use-gl=swiftshader`` would turn WebGL off), and on a
@@ -89,6 +89,9 @@ def screenshot(
             browser = playwright.chromium.launch(executable_path=chromium, args=CHROMIUM_ARGS, timeout=left_ms())
             page = browser.new_page(viewport={"width": size[0], "height": size[1]})
             page.goto(url, timeout=left_ms())
+            # viser's pop-up notices (e.g. "Software WebGL rendering detected" in a headless browser) are about the
+            # browser, not the scene: hidden, so that a picture shows what a student's browser shows.
+            page.add_style_tag(content=".mantine-Notifications-root { display: none !important; }")
             while True:
                 page.screenshot(path=str(path), timeout=left_ms())
                 if ready(path):
