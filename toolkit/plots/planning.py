@@ -220,8 +220,8 @@ def stage_times(panels: dict[str, dict]) -> Figure:
     as "other"); a whisker from the total's first to third quartile; above each pair the median of the queries' own
     ratios, time with / without (the summaries' ``total_s_per_query``: each query was solved in both modes in turn),
     the number the chapters' tables read their verdicts from."""
-    fig = Figure(figsize=(5.2 * len(panels), 4.8))
-    axes = fig.subplots(1, len(panels), squeeze=False)[0]
+    fig = Figure(figsize=(6.2, 3.6 * len(panels) + 0.6))  # one panel a row, as wide as a chapter page's column
+    axes = fig.subplots(len(panels), 1, squeeze=False)[:, 0]
     said = []
     for ax, (title, planning) in zip(axes, panels.items()):
         names = list(planning)  # the samplers planned, in their order
@@ -253,7 +253,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
             )
         )
     fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=3, fontsize=8, frameon=False)
-    fig.tight_layout(rect=(0, 0.12, 1, 1))
+    fig.tight_layout(rect=(0, 0.6 / fig.get_figheight(), 1, 1))  # the legend in the 0.6 in below the panels
     text = "Median planning time per query without and with prediction, per sampler, split into the planner's stages"
     text += " (hatched), with the median of the queries' own time ratios, with / without, above each pair"
     return describe(fig, f"{text}. {'; '.join(said)}.")
