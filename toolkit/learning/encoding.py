@@ -29,6 +29,8 @@ from torch import nn
 
 from toolkit.geometry.robots import AXES, BoxRobot
 
+ENCODINGS = ("raw", "local")  # an InputEncoding's kinds: the paper's [z, q], ours with the patch and the pose
+
 
 def reach_cells(robot: BoxRobot, samples: int = 20_000) -> int:
     """How many unit cells from its base cell the robot can reach, along the base's position axes.
@@ -122,8 +124,8 @@ class InputEncoding(nn.Module):
 
     def __init__(self, robot: BoxRobot, grid_shape: tuple[int, ...], latent_dim: int, kind: str, radius: int = 0):
         super().__init__()
-        if kind not in ("raw", "local"):
-            raise ValueError(f"unknown input encoding {kind!r}; choose 'raw' or 'local'")
+        if kind not in ENCODINGS:
+            raise ValueError(f"unknown input encoding {kind!r}; choose one of {ENCODINGS}")
         self.kind, self.radius, self.grid_shape = kind, int(radius), tuple(grid_shape)
         self.dof = robot.dof  # configurations are (N, dof)
         self.n_pos = position_dofs(robot)  # buffers below derive from the robot and grid: not saved in checkpoints
