@@ -53,8 +53,10 @@ __all__ = [
     "device_calls",
     "edge_checks",
     "edge_checks_at",
+    "exact_call",
     "exact_throughput",
     "in_turns",
+    "learned_call",
     "learned_throughput",
     "median_rate",
     "median_seconds",
@@ -140,11 +142,11 @@ def throughput(
     (``learned_resident_cfg_per_s``, ``exact_device_resident_cfg_per_s``); their ``batch`` defaults to 1M on a
     GPU. ``device_ratio`` is learned / exact, both resident on the device."""
     calls = {
-        "exact": _exact_call(scenario, batch or 20_000, seed),
-        "fcl": _exact_call(scenario, batch or 20_000, seed, make=FCLChecker),
+        "exact": exact_call(scenario, batch or 20_000, seed),
+        "fcl": exact_call(scenario, batch or 20_000, seed, make=FCLChecker),
     }
     if device is None:
-        calls["learned"] = _learned_call(scenario, models, batch or 10_000, seed)
+        calls["learned"] = learned_call(scenario, models, batch or 10_000, seed)
     else:
         on_gpu = torch.device(device).type != "cpu"
         calls.update(device_calls(scenario, models, batch or (1 << 20 if on_gpu else 10_000), device, seed))
@@ -216,7 +218,7 @@ def device_calls(
 
 def exact_throughput(scenario: Scenario, *, batch: int = 20_000, seed: int = 0, repeats: int = 5) -> float:
     """Configurations per second of the default exact checker on uniform samples in one workspace."""
-    return median_rate(*_exact_call(scenario, batch, seed), repeats)
+    return median_rate(*exact_call(scenario, batch, seed), repeats)
 
 
 def learned_throughput(
@@ -224,10 +226,10 @@ def learned_throughput(
 ) -> float:
     """Predictions per second of a :class:`~toolkit.learning.learned.LearnedChecker` of ``models`` at ``batch``, the
     workspace encoded once (:func:`untrained_models` time as well as trained ones: the weights do not matter)."""
-    return median_rate(*_learned_call(scenario, models, batch, seed), repeats)
+    return median_rate(*learned_call(scenario, models, batch, seed), repeats)
 
 
-def _exact_call(
+def exact_call(
     scenario: Scenario,
     batch: int = 20_000,
     seed: int = 0,
@@ -241,7 +243,7 @@ def _exact_call(
     return (lambda: checker.are_valid(Q)), batch
 
 
-def _learned_call(
+def learned_call(
     scenario: Scenario, models: TrainedModels, batch: int = 10_000, seed: int = 0
 ) -> tuple[Callable[[], object], int]:
     """A learned checker of ``models`` asked about ``batch`` uniform samples in a query workspace, and ``batch``."""

@@ -60,8 +60,8 @@ def sweep(
             graphs = (batch,) if batch <= GRAPHED_UP_TO else ()
             timed = bench.device_calls(scenario, models, batch, device, seed, graph_sizes=graphs, calls=calls)
             for name, (fn, n) in (
-                ("exact_cpu", bench._exact_call(scenario, batch, seed)),
-                ("learned_cpu", bench._learned_call(scenario, models, batch, seed)),
+                ("exact_cpu", bench.exact_call(scenario, batch, seed)),
+                ("learned_cpu", bench.learned_call(scenario, models, batch, seed)),
             ):
                 timed[name] = _repeated(fn, calls), calls * n
             rates = bench.in_turns(timed, repeats)
