@@ -25,6 +25,7 @@ from toolkit.learning.training import TrainedModels
 from toolkit.planning import sampling
 from toolkit.planning.local_planner import default_resolution, path_is_valid
 from toolkit.planning.paper_prm import PRM
+from toolkit.planning.planner import REFINEMENT
 from toolkit.planning.prm import plan
 from toolkit.util import plugins
 
@@ -219,7 +220,7 @@ def test_the_tutorials_sampler_plans_from_the_command_line(tutorial_sampler, cap
     assert out["sampler"] == "MA" and out["success"]
     assert sampling.SAMPLERS["MA"].__name__ == "ChordMidpointSampler"
     ws, robot = Workspace.from_dict(out["workspace"]), scenarios.get("2ds").robot
-    assert path_is_valid(exact_checker(ws, robot), np.array(out["path"]), default_resolution(robot) / 10)
+    assert path_is_valid(exact_checker(ws, robot), np.array(out["path"]), default_resolution(robot) / REFINEMENT)
 
 
 def test_the_tutorials_sampler_is_offered_in_help_and_refused_without_its_module(tutorial_sampler, capsys):

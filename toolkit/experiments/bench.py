@@ -31,7 +31,7 @@ import numpy as np
 import torch
 
 from toolkit.experiments import queries
-from toolkit.experiments.problems import make_planner
+from toolkit.experiments.problems import make_planner, scenario_resolution
 from toolkit.geometry.collision import CollisionChecker, FCLChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.torch_kernels import TorchChecker
@@ -40,12 +40,9 @@ from toolkit.learning.learned import LearnedChecker
 from toolkit.learning.presets import Preset
 from toolkit.learning.training import TrainedModels
 from toolkit.planning import prm, sampling
-from toolkit.planning.local_planner import (
-    certify_edges,
-    check_edges,
-    default_resolution,
-)
+from toolkit.planning.local_planner import certify_edges, check_edges
 from toolkit.planning.options import RoadmapParams
+from toolkit.planning.planner import REFINEMENT
 from toolkit.scenarios import Scenario
 
 __all__ = [
@@ -261,7 +258,8 @@ def untrained_models(scenario: Scenario, preset: Preset, seed: int = 0) -> Train
 
 
 def edge_checks(scenario: Scenario, *, n_segments: int = 300, seed: int = 0, repeats: int = 5) -> dict[str, dict]:
-    """``check_edges`` against ``certify_edges`` (same answers) at the planner's resolution and 10x finer.
+    """``check_edges`` against ``certify_edges`` (same answers) at the planner's resolution and ``REFINEMENT`` times
+    finer (where returned paths are checked).
 
     On ``n_segments`` segments between valid configurations of a query workspace, 3 %
     of the bounds apart (normal steps: some valid, some grazing, some through a block;
@@ -269,13 +267,13 @@ def edge_checks(scenario: Scenario, *, n_segments: int = 300, seed: int = 0, rep
     configurations each checked (``certify_edges`` also bounds clearances).
     """
     ws = scenario.workspaces("query", 1, seed)[0]
-    exact, robot = exact_checker(ws, scenario.robot), scenario.robot
+    exact = exact_checker(ws, scenario.robot)
     Q0, Q1 = short_valid_segments(exact, n_segments, np.random.default_rng(seed))  # (E, dof) each
-    resolution = scenario.plan_resolution or default_resolution(robot)
+    resolution = scenario_resolution(scenario)
     spacing = resolution * RoadmapParams().certify_spacing
     return {
         name: edge_checks_at(exact, Q0, Q1, r, spacing=spacing, repeats=repeats)
-        for name, r in (("resolution", resolution), ("finer", resolution / 10))
+        for name, r in (("resolution", resolution), ("finer", resolution / REFINEMENT))
     }
 
 
