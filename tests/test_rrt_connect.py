@@ -126,3 +126,5 @@ def test_an_unsolvable_query_fails_after_its_iterations_and_bad_input_is_named(c
         rrt.RRTConnectParams(range=0)
     with pytest.raises(ValueError, match=r"RRTConnectParams\.coarse must be a positive integer, got 1\.5"):
         rrt.RRTConnectParams(coarse=1.5)
+    with pytest.raises(ValueError, match=r"^RRTConnectParams\.range must be positive and finite, got 'far'$"):
+        rrt.RRTConnectParams(range="far")  # as `--option range=far` gives it: a TypeError inside, one line out

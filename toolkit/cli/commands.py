@@ -126,11 +126,12 @@ def _bench_crossover(args: argparse.Namespace) -> int:
 
 def cmd_train(args: argparse.Namespace) -> int:
     from toolkit.experiments import pipeline
+    from toolkit.experiments.bench import usable_device
     from toolkit.learning import checkpoints
 
     checkpoints.check_destination(args.out, overwrite=args.force)  # before minutes of training, not after
     changes = {k: v for k, v in (("cae_epochs", args.cae_epochs), ("mlp_epochs", args.mlp_epochs)) if v is not None}
-    config = _config(args, args.scenario, device=args.device, **changes)
+    config = _config(args, args.scenario, device=usable_device(args.device), **changes)
     models, scores, folder = pipeline.train_and_save(config, args.out, cae=args.cae or None, overwrite=args.force)
     print(json.dumps({"checkpoint": str(folder), "threshold": models.threshold, **scores}))
     return 0
