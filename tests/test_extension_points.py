@@ -116,7 +116,7 @@ def test_position_dofs_come_first_for_every_base():
         3,
         2,
     ]
-    assert encoding.position_dofs(planar_arm()) == 2  # not 5: the arm's joints do not wrap, yet are no positions
+    assert encoding.InputEncoding(planar_arm(), (41, 41, 6), 0, "raw").n_pos == 2  # not 5: joints are no positions
 
 
 def test_a_2d_arm_is_checked_compiled_and_agrees_with_fcl_and_separating_axes():
