@@ -141,6 +141,51 @@ def test_no_module_imports_another_modules_private_names():
     assert private == []
 
 
+def private_names(tree: ast.Module) -> set[str]:
+    """The private names (``_x``, not ``__x__``) a module defines: its functions, classes and methods, the names it
+    assigns and the attributes it sets (``self._x = ...``)."""
+    found = set()
+    for node in ast.walk(tree):
+        if isinstance(node, (ast.FunctionDef, ast.AsyncFunctionDef, ast.ClassDef)):
+            found.add(node.name)
+        elif isinstance(node, ast.Attribute) and isinstance(node.ctx, ast.Store):
+            found.add(node.attr)
+        elif isinstance(node, ast.Name) and isinstance(node.ctx, ast.Store):
+            found.add(node.id)
+    return {name for name in found if name.startswith("_") and not name.endswith("__")}
+
+
+def private_reads(sources: dict[str, str]) -> list[str]:
+    """``module:line: thing._x`` wherever a module of ``sources`` (name -> code) reads an attribute ``_x`` that another
+    of them defines and it does not."""
+    trees = {name: ast.parse(code) for name, code in sources.items()}
+    defined = {name: private_names(tree) for name, tree in trees.items()}
+    anyone = set().union(*defined.values())
+    return [
+        f"{name}:{node.lineno}: {ast.unparse(node.value)}.{node.attr}"
+        for name, tree in trees.items()
+        for node in ast.walk(tree)
+        if isinstance(node, ast.Attribute) and node.attr in anyone - defined[name]
+    ]
+
+
+def test_no_module_reads_another_modules_private_attributes():
+    """Issue 48: ``thing._x`` (``self._x`` too) where ``_x`` is private to another toolkit module (it defines it,
+    this module does not): a function that reads a checker's ``_shape`` from another module, a subclass that
+    reads its base's private state, a module that calls ``other_module._helper``. They ask for a public, documented
+    accessor instead. (Underscored names that no toolkit module defines, ``os._exit`` or a NamedTuple's
+    ``_replace``, are the libraries' business.)"""
+    assert private_reads({name: path.read_text() for name, path in modules().items()}) == []
+
+
+def test_the_private_attribute_check_sees_a_read_across_modules():
+    """The check above on made-up modules: another's private attribute read is found, one's own is not."""
+    grid = "class Grid:\n    def __init__(self):\n        self._shape = (3, 3)\n        self.shape = self._shape\n"
+    arrays = "def arrays(grid):\n    return grid._shape, grid.shape\n"
+    assert private_reads({"grid": grid, "arrays": arrays}) == ["arrays:2: grid._shape"]
+    assert private_reads({"grid": grid, "arrays": arrays.replace("grid._shape", "grid.shape")}) == []
+
+
 PLANNER_WORDS = (
     "PaperParams",
     "LazyParams",

@@ -20,6 +20,7 @@ from toolkit.experiments import bench, queries, versus_ompl
 from toolkit.learning import checkpoints, presets
 from toolkit.planning import sampling
 from toolkit.planning.options import LazyParams, PaperParams
+from toolkit.planning.planner import REFINEMENT
 
 THROUGHPUT_KEYS = {"exact_cfg_per_s", "fcl_cfg_per_s", "learned_cfg_per_s", "ratio", "exact_over_fcl"}
 
@@ -36,7 +37,7 @@ def test_bench_prints_one_json_object(capsys):
     assert result["ratio"] == pytest.approx(result["learned_cfg_per_s"] / result["exact_cfg_per_s"])
     assert result["exact_over_fcl"] == pytest.approx(result["exact_cfg_per_s"] / result["fcl_cfg_per_s"])
     fine, coarse = result["edges"]["finer"], result["edges"]["resolution"]
-    assert fine["resolution"] == pytest.approx(coarse["resolution"] / 10) and fine["segments"] > 100
+    assert fine["resolution"] == pytest.approx(coarse["resolution"] / REFINEMENT) and fine["segments"] > 100
     assert 0 < fine["valid"] <= 1
     assert fine["certify_edges_checked"] < fine["check_edges_checked"] / 5  # clearances vouch for most stretches
     assert fine["check_edges_s"] > 0 and fine["certify_edges_s"] > 0

@@ -15,11 +15,12 @@ import pytest
 import torch
 from threadpoolctl import threadpool_info
 
-from toolkit import cli, viewer
+from toolkit import cli, scenarios, viewer
 from toolkit.experiments import pipeline
 from toolkit.experiments import reproduce as experiments
 from toolkit.experiments.config import RunConfig
 from toolkit.experiments.stages import Stages
+from toolkit.geometry.robots import BoxRobot, Link
 from toolkit.learning import checkpoints, training
 from toolkit.learning.data import SPLITS
 from toolkit.util import threads
@@ -103,6 +104,45 @@ def test_plan_refuses_a_checkpoint_of_another_scenario_by_name(checkpoint_2ds, c
     assert cli.main([*args, "--seed", "0"]) == 2
     err = capsys.readouterr().err
     assert f"checkpoint {checkpoint_2ds} was trained for scenario '2ds', not '3dc7'" in err
+
+
+WALLED_IN = dataclasses.replace(  # a square as wide as the 2DS region: every configuration meets a block
+    scenarios.get("2ds"),
+    name="walled-in",
+    robot=BoxRobot("wide", "point2d", [Link((15.0, 15.0, 0.0))], [], position_bounds=([15.0] * 2, [16.0] * 2)),
+)
+
+
+@pytest.mark.parametrize(
+    "argv, message",
+    [
+        (["plan", "--scenario", "2ds", "--option", "k=abc"], "LazyParams.k must be a positive integer, got 'abc'"),
+        (
+            ["plan", "--scenario", "2ds", "--planner", "rrt-connect", "--option", "range=far"],
+            "RRTConnectParams.range must be positive and finite, got 'far'",
+        ),
+        (
+            ["plan", "--scenario", "walled-in"],
+            "found no 1 valid start/goal pairs far enough apart in this walled-in workspace",
+        ),
+        (
+            ["plan", "--scenario", "2ds", "--predict", "--checkpoint", "{file}"],
+            "checkpoint folder {file} is a file, not a folder",
+        ),
+        (
+            ["train", "--scenario", "2ds", "--quick", "--device", "tpu", "--out", "{tmp}/c"],
+            "--device 'tpu' is not a torch device; use cpu or cuda",
+        ),
+    ],
+)
+def test_foreseeable_errors_end_in_one_line(argv, message, tmp_path, monkeypatch, no_training, capsys):
+    """Issue 48: a bad option value, an unsolvable query set, a checkpoint that is a file, a device the machine has
+    not: one line naming the problem, exit code 2, no traceback (each was a traceback or a wrong message before)."""
+    monkeypatch.setitem(scenarios.SCENARIOS, WALLED_IN.name, WALLED_IN)
+    (tmp_path / "notes.txt").write_text("not a checkpoint")
+    fill = {"file": tmp_path / "notes.txt", "tmp": tmp_path}
+    assert cli.main([arg.format(**fill) for arg in argv]) == 2
+    assert capsys.readouterr().err.splitlines() == [f"toolkit {argv[0]}: error: {message.format(**fill)}"]
 
 
 def test_view_refuses_a_bad_checkpoint_in_the_terminal_before_serving(tmp_path, checkpoint_2ds, capsys, monkeypatch):

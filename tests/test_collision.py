@@ -13,7 +13,7 @@ from hypothesis import strategies as st
 from scipy.optimize import linprog
 
 from toolkit import scenarios
-from toolkit.geometry import robots
+from toolkit.geometry import collision, robots
 from toolkit.geometry.collision import (
     CompiledChecker,
     FCLChecker,
@@ -306,6 +306,30 @@ def test_exact_checker_picks_the_fastest_exact_one():
     assert type(exact_checker(plane, robots.point_robot())) is PointRobotChecker
     room = scenarios.get("3dc9").make_workspace(np.random.default_rng(0))
     assert type(exact_checker(room, robots.box_chain(3))) is CompiledChecker
+    arm = robots.BoxRobot(  # a 2D base with a joint: no longer a lone square
+        "arm2d",
+        "point2d",
+        [robots.Link((0.25, 0.25)), robots.Link((0.5, 0.1))],
+        [robots.Joint((0.5, 0, 0), "z", (-1, 1))],
+        position_bounds=(plane.lower, plane.upper),
+    )
+    assert type(exact_checker(plane, arm)) is CompiledChecker
+
+
+def test_exact_checker_reads_one_table(monkeypatch):
+    """Issue 48: the choice is a table, not an if-chain: a row for a workspace kind of one's own is taken first."""
+
+    class Walled(Workspace):
+        pass
+
+    room = scenarios.get("3dc9").make_workspace(np.random.default_rng(0))
+    walled, robot = Walled(room.lower, room.upper, room.boxes), robots.box_chain(3)
+    monkeypatch.setattr(
+        collision, "EXACT_CHECKERS", [(Walled, collision.any_robot, FCLChecker)] + collision.EXACT_CHECKERS
+    )
+    assert type(exact_checker(walled, robot)) is FCLChecker and type(exact_checker(room, robot)) is CompiledChecker
+    with pytest.raises(ValueError, match=r"^no exact checker for a str and robot 'chain9'$"):
+        exact_checker("room", robot)
 
 
 # -- clearance bounds: below FCL's distances, and not vacuous --------------------------------

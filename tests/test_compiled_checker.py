@@ -18,7 +18,7 @@ from hypothesis import strategies as st
 
 from toolkit import scenarios
 from toolkit.geometry import robots
-from toolkit.geometry.box_world import BoxWorldChecker
+from toolkit.geometry.box_world import BoxGrid, BoxWorldChecker
 from toolkit.geometry.collision import (
     CompiledChecker,
     CompiledMeshChecker,
@@ -325,10 +325,10 @@ def test_each_cell_lists_exactly_the_boxes_that_touch_it_grown(name, grow):
     """The broadphase's cell lists (built without a loop over boxes, issue 36) against every (cell, box) pair."""
     scenario = scenarios.get(name)
     ws = scenario.workspaces("query", 1, 3)[0]
-    checker = BoxWorldChecker(ws, scenario.robot)
-    count, first, members = checker._box_lists(grow)
-    shape = checker._shape
-    lo, hi = checker._cells(ws.boxes[:, 0] - grow), checker._cells(ws.boxes[:, 1] + grow)  # (K, D)
+    grid = BoxGrid(ws, scenario.robot)
+    count, first, members = grid.box_lists(grow)
+    shape = grid.shape
+    lo, hi = grid.cells(ws.boxes[:, 0] - grow), grid.cells(ws.boxes[:, 1] + grow)  # (K, D)
     index = np.stack(np.unravel_index(np.arange(int(np.prod(shape))), shape), axis=-1)  # (C, D) every cell
     touches = np.all((index[:, None] >= lo) & (index[:, None] <= hi), axis=-1)  # (C, K)
     for c in range(len(index)):

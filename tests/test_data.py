@@ -56,7 +56,7 @@ def test_balanced_samples_are_reproducible():
 def test_balanced_samples_give_up_when_no_valid_configuration_exists():
     scenario = scenarios.get("2ds")
     blocked = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[0, 0], [31, 31]]], float))
-    with pytest.raises(RuntimeError, match="only 0 valid"):
+    with pytest.raises(ValueError, match="only 0 valid"):
         balanced_samples(exact_checker(blocked, scenario.robot), np.random.default_rng(0), 10, max_draws=1000)
 
 

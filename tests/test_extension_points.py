@@ -25,6 +25,7 @@ from toolkit.learning.training import TrainedModels
 from toolkit.planning import sampling
 from toolkit.planning.local_planner import default_resolution, path_is_valid
 from toolkit.planning.paper_prm import PRM
+from toolkit.planning.planner import REFINEMENT
 from toolkit.planning.prm import plan
 from toolkit.util import plugins
 
@@ -115,7 +116,7 @@ def test_position_dofs_come_first_for_every_base():
         3,
         2,
     ]
-    assert encoding.position_dofs(planar_arm()) == 2  # not 5: the arm's joints do not wrap, yet are no positions
+    assert encoding.InputEncoding(planar_arm(), (41, 41, 6), 0, "raw").n_pos == 2  # not 5: joints are no positions
 
 
 def test_a_2d_arm_is_checked_compiled_and_agrees_with_fcl_and_separating_axes():
@@ -219,7 +220,7 @@ def test_the_tutorials_sampler_plans_from_the_command_line(tutorial_sampler, cap
     assert out["sampler"] == "MA" and out["success"]
     assert sampling.SAMPLERS["MA"].__name__ == "ChordMidpointSampler"
     ws, robot = Workspace.from_dict(out["workspace"]), scenarios.get("2ds").robot
-    assert path_is_valid(exact_checker(ws, robot), np.array(out["path"]), default_resolution(robot) / 10)
+    assert path_is_valid(exact_checker(ws, robot), np.array(out["path"]), default_resolution(robot) / REFINEMENT)
 
 
 def test_the_tutorials_sampler_is_offered_in_help_and_refused_without_its_module(tutorial_sampler, capsys):

@@ -24,6 +24,7 @@ import pytest
 from assignment_variants import Variant
 from test_assignments import _solved, _with_variant
 
+from toolkit import cli
 from toolkit.teaching import classroom, grading, sandbox
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -258,14 +259,20 @@ def _otter_in_process(notebook: Path) -> dict[str, float]:
     return json.loads(done.stdout.strip().splitlines()[-1])
 
 
-def test_grading_refuses_where_it_cannot_isolate(monkeypatch, tmp_path):
+def test_grading_refuses_where_it_cannot_isolate(monkeypatch, tmp_path, capsys):
     monkeypatch.setattr(sandbox, "unavailable", lambda: "bwrap is not installed")
     notebook = tmp_path / "bridge_test.ipynb"
     notebook.write_text("{}")
-    with pytest.raises(RuntimeError, match="cannot isolate the submissions: bwrap is not installed"):
+    with pytest.raises(sandbox.CannotIsolate, match="cannot isolate the submissions: bwrap is not installed"):
         classroom.grade_all([notebook])
-    with pytest.raises(RuntimeError, match="cannot isolate"):
+    with pytest.raises(sandbox.CannotIsolate, match="cannot isolate"):
         grading.grade(notebook)
+    capsys.readouterr()
+    assert cli.main(["grade", str(notebook)]) == 2
+    assert capsys.readouterr().err.splitlines() == [  # at the command line: one line, no traceback
+        "toolkit grade: error: cannot isolate the submissions: bwrap is not installed; grade without isolation only "
+        "if you trust them"
+    ]
 
 
 def test_the_sandbox_sees_the_toolkit_but_not_the_repository():

@@ -11,7 +11,6 @@ from toolkit.learning import metrics
 from toolkit.learning.encoding import (
     InputEncoding,
     LinkKinematics,
-    position_dofs,
     reach_cells,
 )
 from toolkit.learning.inference import WorkspaceMLP
@@ -191,7 +190,7 @@ def test_local_encoding_of_angles_joints_and_links():
 def test_link_kinematics_match_the_robot(name, rng):
     robot = scenarios.get(name).robot
     Q = robot.sample(rng, 200)
-    n_pos = position_dofs(robot)
+    n_pos = robot.n_positions
     position = np.pad(Q[:, :n_pos], ((0, 0), (0, 3 - n_pos)), constant_values=robot.base_height)  # (N, 3)
     turns = torch.as_tensor(Q[:, n_pos:].T)  # (R, N): base angles, then joints
     centers, axes = LinkKinematics(robot)(torch.as_tensor(position.T), torch.sin(turns), torch.cos(turns))  # (L, 3, N)
@@ -211,7 +210,7 @@ def test_local_pose_is_the_same_in_numpy_and_torch_and_holds_the_link_centres(na
     cell_t, pose_t = enc.configs(torch.as_tensor(Q, dtype=torch.float32))
     np.testing.assert_array_equal(cell, cell_t.numpy())
     np.testing.assert_allclose(pose, pose_t.numpy(), atol=1e-5)
-    n_links, n_pos = s.robot.n_links, position_dofs(s.robot)
+    n_links, n_pos = s.robot.n_links, s.robot.n_positions
     centres = pose[-6 * n_links : -3 * n_links].reshape(n_links, 3, -1).transpose(2, 0, 1)  # (N, L, 3)
     base_cell_centre = np.zeros((len(Q), 1, 3))
     base_cell_centre[:, 0, :n_pos] = np.floor(Q[:, :n_pos]) + 0.5  # the z of a planar base's cell centre: 0

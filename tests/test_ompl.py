@@ -11,12 +11,13 @@ import pytest
 from scipy import ndimage
 
 from toolkit import scenarios
+from toolkit.experiments.problems import scenario_resolution
 from toolkit.experiments.queries import make_queries
 from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace
 from toolkit.planning.local_planner import path_is_valid
 from toolkit.planning.paper_prm import PRM
-from toolkit.planning.planner import Problem
+from toolkit.planning.planner import REFINEMENT, Problem
 from toolkit.planning.prm import plan
 from toolkit.planning.rrt_connect import RRTConnectParams, rrt_connect
 
@@ -92,7 +93,7 @@ def test_ours_and_ompls_prm_solve_every_solvable_2ds_query():
             planner=PRM(n_samples=200, max_rounds=40),
             rng=np.random.default_rng(i),
         )
-        resolution = ours.stats["resolution"] / 10
+        resolution = ours.stats["resolution"] / REFINEMENT
         assert ours.success == solvable, f"query {i}: ours {ours.success}, solvable {solvable}"
         if not solvable:
             continue
@@ -119,7 +120,7 @@ def test_ours_and_ompls_rrtconnect_solve_every_solvable_2ds_query():
             continue
         solvable_count += 1
         resolution = ours.stats["resolution"]
-        assert path_is_valid(exact_checker(q.workspace, robot), ours.path, resolution / 10)
+        assert path_is_valid(exact_checker(q.workspace, robot), ours.path, resolution / REFINEMENT)
         theirs = toolkit_ompl.solve(
             exact_checker(q.workspace, robot), q.start, q.goal, planner="RRTConnect", resolution=resolution, seconds=20
         )
@@ -146,7 +147,7 @@ def test_an_enclosed_goal_is_unsolvable_for_both():
     assert label_of(start) != label_of(goal)
     ours = plan(exact_checker(ws, robot), start, goal, planner=PRM(max_rounds=5), rng=np.random.default_rng(0))
     assert not ours.success and len(ours.path) == 0 and ours.stats["rounds"] == 5
-    assert ompl_solves(ws, robot, start, goal, ours.stats["resolution"] / 10, seconds=0.3) is None
+    assert ompl_solves(ws, robot, start, goal, ours.stats["resolution"] / REFINEMENT, seconds=0.3) is None
 
 
 # -- toolkit.planning.ompl: our checkers and samplers inside OMPL -----------------------------------------------------
@@ -191,7 +192,7 @@ def test_ompls_distance_is_our_motion_bound_and_its_motion_checks_at_least_our_s
 
 def test_rrtconnect_with_our_exact_checker_returns_paths_our_checker_accepts():
     scenario = scenarios.get("3dc7")
-    resolution = scenario.plan_resolution or scenario.robot.half_extents.min()
+    resolution = scenario_resolution(scenario)
     for q in make_queries(scenario, seed=7100, n_workspaces=2, per_workspace=1):
         exact = exact_checker(q.workspace, scenario.robot)
         result = toolkit_ompl.solve(exact, q.start, q.goal, planner="RRTConnect", resolution=resolution, seconds=20)

@@ -19,12 +19,8 @@ SWEEP = {  # network / exact: 0.5 cheaper, 0.9 can't tell, 1.5 dearer, 0.7 cheap
 def shaded_spans(ax) -> list[tuple[float, float]]:
     """The x-extent of each shaded band of a panel (in data units, rounded)."""
     bands = [c for c in ax.collections if isinstance(c, PolyCollection)]
-    return [
-        tuple(
-            round(float(v), 3) for v in (b.get_paths()[0].vertices[:, 0].min(), b.get_paths()[0].vertices[:, 0].max())
-        )
-        for b in bands
-    ]
+    xs = [np.asarray(b.get_paths()[0].vertices)[:, 0] for b in bands]  # each band's outline, x only
+    return [(round(float(x.min()), 3), round(float(x.max()), 3)) for x in xs]
 
 
 def test_only_the_points_whose_verdict_is_network_cheaper_are_shaded():

@@ -10,6 +10,7 @@ from threadpoolctl import threadpool_info, threadpool_limits
 
 from toolkit import cli, scenarios
 from toolkit.experiments import queries as queries_module
+from toolkit.experiments.problems import scenario_resolution
 from toolkit.experiments.queries import make_queries, run_queries
 from toolkit.geometry.collision import CollisionChecker, FCLChecker, exact_checker
 from toolkit.geometry.workspace import Workspace
@@ -27,7 +28,7 @@ from toolkit.planning.local_planner import (
 )
 from toolkit.planning.options import LazyParams, PaperParams
 from toolkit.planning.paper_prm import PRM
-from toolkit.planning.planner import Problem
+from toolkit.planning.planner import REFINEMENT, Problem
 from toolkit.planning.prm import plan
 from toolkit.planning.query_roadmap import QueryRoadmap
 from toolkit.planning.roadmap import Roadmap
@@ -111,7 +112,7 @@ def assert_paths_valid(scenario, results, continuous=False):
         np.testing.assert_array_equal(path[0], q.start)
         np.testing.assert_array_equal(path[-1], q.goal)
         fresh = exact_checker(q.workspace, scenario.robot)
-        fine = result.stats["resolution"] / 10  # the planner's verification resolution
+        fine = result.stats["resolution"] / REFINEMENT  # the planner's verification resolution
         assert path_is_valid(fresh, path, fine)
         if continuous:  # checks every `fine` of motion: a collision it misses is shorter than one step
             assert longest_hidden_overlap(q.workspace, scenario.robot, path) < fine
@@ -236,7 +237,7 @@ def test_the_papers_planner_checks_every_edge_exactly_as_it_is_added(flip):
         on_path = np.zeros(len(roadmap.edges), bool)
         on_path[roadmap.edge_index(roadmap.shortest_path(prm.START, prm.GOAL))] = True
         np.testing.assert_array_equal(roadmap.edge_checked_at[~on_path], coarse)  # checked as added
-        np.testing.assert_array_equal(roadmap.edge_checked_at[on_path], coarse / 10)  # the path: also 10x finer
+        np.testing.assert_array_equal(roadmap.edge_checked_at[on_path], coarse / REFINEMENT)  # the path: also finer
         assert check_edges(exact, *roadmap.nodes[roadmap.edges.T], coarse).all()
         assert not check_edges(exact, *roadmap.nodes[roadmap.rejected.T], coarse).any()
         if flip is None:  # rounds of |S| attempts each (BS checks each attempt once)
@@ -521,7 +522,7 @@ def test_traced_repairs_remove_what_the_exact_checker_rejects_from_the_candidate
             path_edges = {tuple(sorted(pair)) for pair in zip(step.path[:-1], step.path[1:])}
             assert {tuple(step.edges[e]) for e in step.removed_edges} <= path_edges
             Q0, Q1 = step.nodes[step.edges[step.removed_edges].T]
-            assert not check_edges(exact, Q0, Q1, result.stats["resolution"] / 10).any()
+            assert not check_edges(exact, Q0, Q1, result.stats["resolution"] / REFINEMENT).any()
             if after.stage == "candidate":  # not a bridge or a new round, which add edges or nodes
                 assert len(after.nodes) == len(step.nodes) - len(step.removed_nodes)
                 if len(step.removed_nodes) == 0:
@@ -702,16 +703,16 @@ def test_screened_path_edges_are_confirmed_coarse_then_fine_each_once(monkeypatc
         assert result.success
         roadmap, coarse = result.roadmap, result.stats["resolution"]
         steps = roadmap.edge_index(roadmap.shortest_path(0, 1))
-        np.testing.assert_array_equal(roadmap.edge_checked_at[steps], coarse / 10)  # the returned path: all fine
+        np.testing.assert_array_equal(roadmap.edge_checked_at[steps], coarse / REFINEMENT)  # the returned path: fine
         repairs += result.stats["repairs"]
     assert repairs > 0  # paths were abandoned: their confirmed edges were remembered, not checked again
     resolutions = sorted({r for r, _, _ in checked}, reverse=True)
-    assert resolutions == [coarse, coarse / 10]
+    assert resolutions == [coarse, coarse / REFINEMENT]
     for resolution in resolutions:
         edges = [e for r, e, _ in checked if r == resolution]
         assert len(edges) == len(set(edges))
     passed_coarse = {e for r, e, ok in checked if r == coarse and ok}
-    assert {e for r, e, _ in checked if r == coarse / 10} <= passed_coarse
+    assert {e for r, e, _ in checked if r == coarse / REFINEMENT} <= passed_coarse
 
 
 def test_screened_edges_are_refuted_where_screening_saw_them_fail_and_only_when_invalid(monkeypatch):
@@ -777,8 +778,8 @@ def segments_near_obstacles(name, n, scale, seed):
 @pytest.mark.parametrize("name, scale", [("3dc9", 0.05), ("3dc9", 0.1), ("3do", 0.08), ("2ds", 0.1)])
 def test_certify_edges_answers_as_check_edges_with_far_fewer_checks(name, scale):
     scenario, exact, Q0, Q1 = segments_near_obstacles(name, 150, scale, seed=7)
-    resolution = scenario.plan_resolution or local_planner.default_resolution(scenario.robot)
-    for fine in (resolution, resolution / 10):
+    resolution = scenario_resolution(scenario)
+    for fine in (resolution, resolution / REFINEMENT):
         exact.reset_count()
         want = check_edges(exact, Q0, Q1, fine)
         checks = exact.n_checked

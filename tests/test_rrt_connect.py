@@ -8,12 +8,13 @@ import numpy as np
 import pytest
 
 from toolkit import scenarios
+from toolkit.experiments.problems import scenario_resolution
 from toolkit.experiments.queries import make_queries
 from toolkit.geometry.collision import exact_checker
 from toolkit.planning import prm
 from toolkit.planning import rrt_connect as rrt
-from toolkit.planning.local_planner import default_resolution, path_is_valid
-from toolkit.planning.planner import Problem
+from toolkit.planning.local_planner import path_is_valid
+from toolkit.planning.planner import REFINEMENT, Problem
 
 
 def solve(scenario, workspace, start, goal, seed, params=None):
@@ -26,7 +27,7 @@ def solve(scenario, workspace, start, goal, seed, params=None):
 def test_paths_are_valid_at_the_resolution_and_ten_times_finer(name):
     scenario = scenarios.get(name)
     robot = scenario.robot
-    resolution = scenario.plan_resolution or default_resolution(robot)
+    resolution = scenario_resolution(scenario)
     params = rrt.RRTConnectParams()
     for i, q in enumerate(make_queries(scenario, seed=7300, n_workspaces=3, per_workspace=1)):
         result = solve(scenario, q.workspace, q.start, q.goal, i, params)
@@ -35,7 +36,7 @@ def test_paths_are_valid_at_the_resolution_and_ten_times_finer(name):
         np.testing.assert_array_equal(result.path[-1], q.goal)
         fresh = exact_checker(q.workspace, robot)
         assert path_is_valid(fresh, result.path, resolution)
-        assert path_is_valid(fresh, result.path, resolution / 10)
+        assert path_is_valid(fresh, result.path, resolution / REFINEMENT)
         steps = robot.motion_bound(result.path[:-1], result.path[1:])  # (P-1,) no edge longer than an extension
         assert steps.max() <= resolution * params.range * (1 + 1e-9)
         assert result.stats["exact_checks"] > 0 and result.stats["nodes"] >= 2
@@ -66,7 +67,7 @@ def test_rrt_connect_is_offered_by_name_and_plans_from_the_command_line(capsys):
     )
     out = json.loads(capsys.readouterr().out)
     assert out["planner"] == "rrt-connect" and out["success"] and out["params"]["range"] == 64.0
-    assert path_is_valid(exact, np.array(out["path"]), scenario.plan_resolution or default_resolution(scenario.robot))
+    assert path_is_valid(exact, np.array(out["path"]), scenario_resolution(scenario))
 
 
 def test_a_branch_that_fails_verification_is_cut_and_the_search_goes_on(monkeypatch):
@@ -125,3 +126,5 @@ def test_an_unsolvable_query_fails_after_its_iterations_and_bad_input_is_named(c
         rrt.RRTConnectParams(range=0)
     with pytest.raises(ValueError, match=r"RRTConnectParams\.coarse must be a positive integer, got 1\.5"):
         rrt.RRTConnectParams(coarse=1.5)
+    with pytest.raises(ValueError, match=r"^RRTConnectParams\.range must be positive and finite, got 'far'$"):
+        rrt.RRTConnectParams(range="far")  # as `--option range=far` gives it: a TypeError inside, one line out

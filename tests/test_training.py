@@ -47,6 +47,38 @@ def test_unknown_preset():
         presets.get("huge")
 
 
+@pytest.mark.parametrize("setting", sorted(presets.CHOICES))
+def test_a_preset_naming_an_unknown_choice_is_refused_as_it_is_made(setting):
+    """Issue 48: a misspelt optimizer, encoding, initialization or loss is a one-line error when the preset is made
+    (replace() makes one too), naming the setting and what it may be, not a failure minutes into training."""
+    allowed = {
+        "encoding": "raw, local",
+        "optimizer": "adagrad, adamw",
+        "cae_optimizer": "adagrad, adamw",
+        "mlp_init": "torch, he",
+        "cae_loss": "sum, mean",
+    }[setting]
+    with pytest.raises(ValueError, match=rf"^preset 'paper': {setting} must be one of {allowed}; got 'Adam'$"):
+        replace(presets.get("paper"), **{setting: "Adam"})
+    for value in allowed.split(", "):  # every choice offered is one the code that reads it accepts
+        assert getattr(replace(presets.get("paper"), **{setting: value}), setting) == value
+    assert {presets.OPTIMIZERS[n] for n in ("adagrad", "adamw")} == {torch.optim.Adagrad, torch.optim.AdamW}
+
+
+def test_every_choice_a_preset_offers_is_one_training_reads():
+    """The choices come from the code that reads them: each encoding builds, each initialization and loss runs."""
+    scenario = scenarios.get("2ds")
+    for encoding in presets.CHOICES["encoding"]:
+        assert replace(TINY, encoding=encoding).build_predictor(scenario).encoding.kind == encoding
+    for init in presets.CHOICES["mlp_init"]:  # CollisionMLP refuses an initialization it does not know
+        replace(TINY, mlp_init=init).build_predictor(scenario)
+    predictor = TINY.build_predictor(scenario)
+    grids = torch.zeros((2, *scenario.grid_shape))
+    with torch.no_grad():
+        summed, mean = (float(predictor.cae.loss(grids, 0.0, loss)) for loss in presets.CHOICES["cae_loss"])
+    assert summed == pytest.approx(mean * np.prod(scenario.grid_shape), rel=1e-5)
+
+
 def test_splits_follow_the_preset():
     splits = pipeline.make_splits(RunConfig.create("2ds", "paper", quick=True, progress=False))
     assert splits["train"].configs.shape == (8, 100, 2)  # paper: 100 samples per 2DS workspace

@@ -31,7 +31,7 @@ import numpy as np
 import torch
 
 from toolkit.experiments import queries
-from toolkit.experiments.problems import make_planner
+from toolkit.experiments.problems import make_planner, scenario_resolution
 from toolkit.geometry.collision import CollisionChecker, FCLChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.torch_kernels import TorchChecker
@@ -40,12 +40,9 @@ from toolkit.learning.learned import LearnedChecker
 from toolkit.learning.presets import Preset
 from toolkit.learning.training import TrainedModels
 from toolkit.planning import prm, sampling
-from toolkit.planning.local_planner import (
-    certify_edges,
-    check_edges,
-    default_resolution,
-)
+from toolkit.planning.local_planner import certify_edges, check_edges
 from toolkit.planning.options import RoadmapParams
+from toolkit.planning.planner import REFINEMENT
 from toolkit.scenarios import Scenario
 
 __all__ = [
@@ -53,8 +50,10 @@ __all__ = [
     "device_calls",
     "edge_checks",
     "edge_checks_at",
+    "exact_call",
     "exact_throughput",
     "in_turns",
+    "learned_call",
     "learned_throughput",
     "median_rate",
     "median_seconds",
@@ -140,11 +139,11 @@ def throughput(
     (``learned_resident_cfg_per_s``, ``exact_device_resident_cfg_per_s``); their ``batch`` defaults to 1M on a
     GPU. ``device_ratio`` is learned / exact, both resident on the device."""
     calls = {
-        "exact": _exact_call(scenario, batch or 20_000, seed),
-        "fcl": _exact_call(scenario, batch or 20_000, seed, make=FCLChecker),
+        "exact": exact_call(scenario, batch or 20_000, seed),
+        "fcl": exact_call(scenario, batch or 20_000, seed, make=FCLChecker),
     }
     if device is None:
-        calls["learned"] = _learned_call(scenario, models, batch or 10_000, seed)
+        calls["learned"] = learned_call(scenario, models, batch or 10_000, seed)
     else:
         on_gpu = torch.device(device).type != "cpu"
         calls.update(device_calls(scenario, models, batch or (1 << 20 if on_gpu else 10_000), device, seed))
@@ -224,7 +223,7 @@ def device_calls(
 
 def exact_throughput(scenario: Scenario, *, batch: int = 20_000, seed: int = 0, repeats: int = 5) -> float:
     """Configurations per second of the default exact checker on uniform samples in one workspace."""
-    return median_rate(*_exact_call(scenario, batch, seed), repeats)
+    return median_rate(*exact_call(scenario, batch, seed), repeats)
 
 
 def learned_throughput(
@@ -232,10 +231,10 @@ def learned_throughput(
 ) -> float:
     """Predictions per second of a :class:`~toolkit.learning.learned.LearnedChecker` of ``models`` at ``batch``, the
     workspace encoded once (:func:`untrained_models` time as well as trained ones: the weights do not matter)."""
-    return median_rate(*_learned_call(scenario, models, batch, seed), repeats)
+    return median_rate(*learned_call(scenario, models, batch, seed), repeats)
 
 
-def _exact_call(
+def exact_call(
     scenario: Scenario,
     batch: int = 20_000,
     seed: int = 0,
@@ -250,7 +249,7 @@ def _exact_call(
     return (lambda: checker.are_valid(Q)), batch
 
 
-def _learned_call(
+def learned_call(
     scenario: Scenario, models: TrainedModels, batch: int = 10_000, seed: int = 0, workspace: Workspace | None = None
 ) -> tuple[Callable[[], object], int]:
     """A learned checker of ``models`` asked about ``batch`` uniform samples in ``workspace`` (default: a query
@@ -269,7 +268,8 @@ def untrained_models(scenario: Scenario, preset: Preset, seed: int = 0) -> Train
 
 
 def edge_checks(scenario: Scenario, *, n_segments: int = 300, seed: int = 0, repeats: int = 5) -> dict[str, dict]:
-    """``check_edges`` against ``certify_edges`` (same answers) at the planner's resolution and 10x finer.
+    """``check_edges`` against ``certify_edges`` (same answers) at the planner's resolution and ``REFINEMENT`` times
+    finer (where returned paths are checked).
 
     On ``n_segments`` segments between valid configurations of a query workspace, 3 %
     of the bounds apart (normal steps: some valid, some grazing, some through a block;
@@ -277,13 +277,13 @@ def edge_checks(scenario: Scenario, *, n_segments: int = 300, seed: int = 0, rep
     configurations each checked (``certify_edges`` also bounds clearances).
     """
     ws = scenario.workspaces("query", 1, seed)[0]
-    exact, robot = exact_checker(ws, scenario.robot), scenario.robot
+    exact = exact_checker(ws, scenario.robot)
     Q0, Q1 = short_valid_segments(exact, n_segments, np.random.default_rng(seed))  # (E, dof) each
-    resolution = scenario.plan_resolution or default_resolution(robot)
+    resolution = scenario_resolution(scenario)
     spacing = resolution * RoadmapParams().certify_spacing
     return {
         name: edge_checks_at(exact, Q0, Q1, r, spacing=spacing, repeats=repeats)
-        for name, r in (("resolution", resolution), ("finer", resolution / 10))
+        for name, r in (("resolution", resolution), ("finer", resolution / REFINEMENT))
     }
 
 

@@ -102,8 +102,8 @@ def sweep(
                 robot_scenario, model, batch, device, seed, graph_sizes=graphs, calls=calls, workspace=ws
             )
             for name, (fn, n) in (
-                ("exact_cpu", bench._exact_call(robot_scenario, batch, seed, workspace=ws)),
-                ("learned_cpu", bench._learned_call(robot_scenario, model, batch, seed, workspace=ws)),
+                ("exact_cpu", bench.exact_call(robot_scenario, batch, seed, workspace=ws)),
+                ("learned_cpu", bench.learned_call(robot_scenario, model, batch, seed, workspace=ws)),
             ):
                 timed[name] = _repeated(fn, calls), calls * n
             rates = bench.in_turns(timed, repeats)

@@ -11,7 +11,7 @@ viewer and the notebooks build a query here, and nowhere else:
 - the planner (:func:`planner`): the one named, else the one paired with ``preset`` when a run
   trains that recipe (:mod:`toolkit.experiments.planners`), else ``toolkit.planning.prm.DEFAULT``;
   its parameters: its own defaults, the scenario's |S| (``Scenario.plan_samples``), the pairing's,
-  then ``changes``. The local planner's resolution is the scenario's (``Scenario.plan_resolution``).
+  then ``changes``. The local planner's resolution is the scenario's (:func:`scenario_resolution`).
 
 So a reader of one :class:`Task` can say which planner, checkers and parameters a query ran with:
 ``task.planner`` (its ``name`` and ``params``) and ``task.problem``.
@@ -32,6 +32,7 @@ from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.learning.presets import Preset
 from toolkit.planning import prm
+from toolkit.planning.local_planner import default_resolution
 from toolkit.planning.planner import Planner, PlanResult, Problem, replace_fields
 from toolkit.scenarios import Scenario
 
@@ -82,7 +83,7 @@ def build(
         )
     checker = checker if checker is None or isinstance(checker, CollisionChecker) else checker(query.workspace)
     problem = Problem.create(
-        truth, query.start, query.goal, sampler=sampler, checker=checker, resolution=scenario.plan_resolution
+        truth, query.start, query.goal, sampler=sampler, checker=checker, resolution=scenario_resolution(scenario)
     )
     if planner is None or isinstance(planner, str):
         solver = make_planner(scenario, planner, preset=preset, **changes)
@@ -91,6 +92,12 @@ def build(
     else:
         solver = planner
     return Task(scenario, query, solver, problem)
+
+
+def scenario_resolution(scenario: Scenario) -> float:
+    """The local planner's resolution in ``scenario``: its own (``Scenario.plan_resolution``), else
+    ``default_resolution(robot)``; returned paths are also checked ``planner.REFINEMENT`` times finer."""
+    return scenario.plan_resolution or default_resolution(scenario.robot)
 
 
 def first_query(scenario: Scenario, seed: int, exact: ExactSource) -> tuple[Query, CollisionChecker]:

@@ -58,14 +58,15 @@ from dataclasses import dataclass
 import numpy as np
 
 from toolkit.experiments import queries
-from toolkit.experiments.problems import build, make_planner
+from toolkit.experiments.problems import build, make_planner, scenario_resolution
 from toolkit.experiments.queries import Query
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.learning.learned import LearnedChecker
 from toolkit.learning.training import TrainedModels
 from toolkit.planning import prm
-from toolkit.planning.local_planner import default_resolution, path_is_valid
+from toolkit.planning.local_planner import path_is_valid
+from toolkit.planning.planner import REFINEMENT
 from toolkit.planning.planner import Planner as Solver
 from toolkit.scenarios import Scenario
 
@@ -142,7 +143,7 @@ def contenders(
     the model's preset with prediction (:mod:`toolkit.experiments.planners`, as
     ``bench.planning_ratios`` plans). OMPL's: each of ``ompl_planners``.
     """
-    resolution = scenario.plan_resolution or default_resolution(scenario.robot)
+    resolution = scenario_resolution(scenario)
     ours = {
         "ours, best exact": our_planner(make_planner(scenario, prm.DEFAULT), scenario, sampler=sampler, seed=seed),
         "ours, RRT-Connect": our_planner(make_planner(scenario, "rrt-connect"), scenario, sampler=sampler, seed=seed),
@@ -163,14 +164,15 @@ def timed_solve(planner: Planner, query: Query, n: int, *, robot: BoxRobot, reso
     callbacks were timed (OMPL's) :func:`at_batched_rate`'s figures.
 
     ``cpu_s``: the process's CPU time; ``valid``: the path passes a fresh exact checker at
-    ``resolution / 10``; ``checks``: configurations the planner's exact checker was asked about,
+    ``resolution / REFINEMENT``; ``checks``: configurations the planner's exact checker was asked about,
     clearance bounds included.
     """
     exact = exact_checker(query.workspace, robot)
     began, cpu = time.perf_counter(), time.process_time()
     solved = planner(query, exact, n)
     seconds, cpu_s = time.perf_counter() - began, time.process_time() - cpu
-    valid = solved.success and path_is_valid(exact_checker(query.workspace, robot), solved.path, resolution / 10)
+    fresh = exact_checker(query.workspace, robot)  # one the planner never asked
+    valid = solved.success and path_is_valid(fresh, solved.path, resolution / REFINEMENT)
     run = {
         "seconds": seconds,
         "cpu_s": cpu_s,
@@ -212,7 +214,7 @@ def race(
     Each planner first solves the first query once, untimed, so that no timing includes a compiled
     kernel's first call (numba compiling or loading it: seconds) or torch's set-up.
     """
-    resolution = scenario.plan_resolution or default_resolution(scenario.robot)
+    resolution = scenario_resolution(scenario)
     solves: dict[str, list[dict]] = {name: [] for name in racing}
     names = list(racing)
     with queries.one_thread():
@@ -342,7 +344,7 @@ def versus_ompl_markdown(scenario: Scenario, table: dict[str, dict]) -> str:
     if not references:
         raise ValueError(f"the table holds no OMPL planner to compare with: {list(table)}")
     header = (
-        f"| {scenario.name} ({table[references[0]]['queries']} queries) | solved | valid at 10x finer | "
+        f"| {scenario.name} ({table[references[0]]['queries']} queries) | solved | valid at {REFINEMENT}x finer | "
         "median s | CPU median s | mean s | p90 s | configurations checked, median | "
         + " | ".join(f"median / {name}'s" for name in references)
         + " |"

@@ -9,9 +9,9 @@ Reading order:
    occupancy grid, the seeded generators of 2DS, 3DO and 3DC; ``from_mesh`` for a triangle mesh;
 3. :mod:`toolkit.geometry.meshes` — triangle meshes as obstacles (fcl BVH, inside tests, voxels);
 4. :mod:`toolkit.geometry.checker` — the checker interface: ``are_valid(Q)``, clearance bounds;
-5. :mod:`toolkit.geometry.box_world` — what the box-world checkers share (bounds, region, a grid of
-   cells listing the obstacles near each, clearance bounds), the point robot's interval tests and the
-   separating-axis reference in numpy;
+5. :mod:`toolkit.geometry.box_world` — what the box-world checkers share (a grid of cells listing the
+   obstacles near each, clearance bounds), the numpy prefilter of the reference checkers, the point
+   robot's interval tests and the separating-axis reference in numpy;
 6. :mod:`toolkit.geometry.fcl_checker` — python-fcl: ``FCLChecker``, the reference, and
    ``MeshChecker`` for meshes;
 7. :mod:`toolkit.geometry.compiled` and :mod:`toolkit.geometry.kernels` — ``CompiledChecker``:
@@ -20,5 +20,5 @@ Reading order:
 8. :mod:`toolkit.geometry.compiled_mesh` and :mod:`toolkit.geometry.mesh_kernels` — ``CompiledMeshChecker``:
    the same against a triangle mesh (triangle-box separating axes, inside tests from cells classified once);
 9. :mod:`toolkit.geometry.collision` — all of them in one place, and ``exact_checker``, which picks the
-   fastest: compiled for box worlds and meshes, numpy for the point robot.
+   fastest from one table: compiled for box worlds and meshes, numpy for the point robot.
 """

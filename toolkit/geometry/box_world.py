@@ -1,12 +1,17 @@
-"""What every exact checker of a box world shares: bounds, region, a voxel prefilter, clearance bounds.
+"""What every exact checker of a box world shares: the region, a grid of cells listing the obstacles, clearance bounds.
 
 A configuration is valid when it lies within the robot's bounds, every link lies
 inside the workspace region, and no link box touches an obstacle box (boxes are
-closed sets: touching counts as collision, as in FCL). :class:`BoxWorldChecker` runs the
-first two tests and a conservative grid prefilter batched in numpy and leaves the last
-one, for the links the prefilter keeps, to a subclass (:mod:`toolkit.geometry.fcl_checker`);
-it also lists, per grid cell, the obstacles near it (the compiled checker's broadphase,
-:mod:`toolkit.geometry.compiled`) and bounds clearances for the planner's certificates.
+closed sets: touching counts as collision, as in FCL).
+
+- :class:`BoxGrid`: per cell of a grid over the region, the obstacles that touch it (the
+  broadphase of every box-world checker; the compiled checker's arrays are made from it,
+  :mod:`toolkit.geometry.compiled`).
+- :class:`BoxWorldChecker`: the base of the exact checkers: a workspace, its grid, and clearance
+  bounds for the planner's certificates, in numpy.
+- :class:`PrefilteredChecker`: bounds, region and a conservative grid prefilter batched in numpy,
+  leaving the exact test of the links the prefilter keeps to a subclass (:mod:`toolkit.geometry.fcl_checker`,
+  :class:`SeparatingAxisChecker`).
 
 Two exact checkers here need no library:
 
@@ -26,15 +31,69 @@ from toolkit.geometry.workspace import MeshWorkspace, Workspace
 from toolkit.util.ragged import ragged
 
 
-class BoxWorldChecker(CollisionChecker):
-    """Shared exact steps: bounds, region, then a conservative voxel prefilter per link.
+class BoxGrid:
+    """A grid over a box world's region listing, per cell, the obstacle boxes that touch it: the broadphase.
 
-    The prefilter marks every cell of a grid that an obstacle touches; cells are at
-    least as wide as any link's axis-aligned bounds, so a link's bounds cover at most
-    two cells per axis and 2^D look-ups tell whether it may touch an obstacle. The same
-    grid lists, per cell, the obstacles that touch it (:meth:`_box_lists`): the only ones a
-    link there can touch (the compiled checker's broadphase) or, grown, come near.
+    Cells are at least as wide as any link's axis-aligned bounds (``cell``: twice the largest link ball's
+    radius), so a link's bounds cover at most two cells per axis (:meth:`covered_cells`), and the boxes
+    listed there are the only ones it can touch (or, grown by ``grow``, come within ``grow`` of). The
+    numpy prefilter (:class:`PrefilteredChecker`), the numpy clearance bounds and the compiled
+    checker's arrays (:func:`toolkit.geometry.compiled.world_arrays`) read it.
     """
+
+    def __init__(self, workspace: Workspace, robot: BoxRobot):
+        self.workspace, self.dim = workspace, workspace.dim
+        self.cell = 2 * float(np.max(np.linalg.norm(robot.half_extents, axis=1)))  # the widest link bounds
+        self.shape = tuple(np.maximum(np.ceil((workspace.upper - workspace.lower) / self.cell).astype(int), 1) + 1)
+        self._grown: dict[float, tuple] = {}  # box_lists, by grow
+
+    @property
+    def lists(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """The obstacles of each cell: :meth:`box_lists` of the boxes as they are."""
+        return self.box_lists(0.0)
+
+    def box_lists(self, grow: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """Per grid cell, the obstacle boxes that touch it once grown by ``grow`` on every side (built once per
+        ``grow``).
+
+        ``count (C,)`` and ``first (C,)`` per flattened cell, ``members (B,)``: cell c's boxes
+        are ``members[first[c]:first[c] + count[c]]``.
+        """
+        if grow not in self._grown:
+            from toolkit.geometry import kernels  # numba loads (or compiles) on first use, not on import
+
+            boxes, dim = self.workspace.boxes, self.dim  # (K, 2, D)
+            lo, hi = np.zeros((2, len(boxes), 3), dtype=np.int64)  # first and last cell per axis, (K, 3) each
+            lo[:, :dim], hi[:, :dim] = self.cells(boxes[:, 0] - grow), self.cells(boxes[:, 1] + grow)
+            shape = np.ones(3, dtype=np.int64)  # a 2D grid: one cell along the third axis
+            shape[:dim] = self.shape
+            self._grown[grow] = kernels.cell_lists(lo, hi, shape)
+        return self._grown[grow]
+
+    def cells(self, points: np.ndarray) -> np.ndarray:
+        """Integer cell index of each point ``(..., D)``, clipped to the grid."""
+        index = np.floor((points - self.workspace.lower) / self.cell).astype(int)
+        return np.clip(index, 0, np.array(self.shape) - 1)
+
+    def covered_cells(self, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+        """``(2^D, M)`` flat indices of the cells that bounds ``lo, hi (M, D)`` cover (repeats where
+        they span one cell).
+
+        Bounds are no wider than a cell, so they cover at most two cells per axis: their 2^D corners' cells.
+        """
+        lo, hi = self.cells(lo), self.cells(hi)  # (M, D) each
+        return np.stack(
+            [
+                np.ravel_multi_index(tuple(np.where(np.array(corner, dtype=bool), hi, lo).T), self.shape)
+                for corner in np.ndindex(*(2,) * self.dim)
+            ]
+        )
+
+
+class BoxWorldChecker(CollisionChecker):
+    """What every exact checker of a box world (or of a mesh's parts' bounds) has: its ``workspace``, a
+    :class:`BoxGrid` over it (``grid``) and clearance bounds from that grid, in numpy. How a configuration is
+    decided is a subclass's :meth:`validity`."""
 
     is_exact = True  # every answer is the geometry's
 
@@ -43,61 +102,7 @@ class BoxWorldChecker(CollisionChecker):
             raise ValueError(f"robot {robot.name!r} is {robot.dim}D but the workspace is {workspace.dim}D")
         super().__init__(robot)
         self.workspace = workspace
-        self._cell = 2 * float(np.max(np.linalg.norm(robot.half_extents, axis=1)))  # widest link bounds
-        self._shape = tuple(np.maximum(np.ceil((workspace.upper - workspace.lower) / self._cell).astype(int), 1) + 1)
-        self._lists = self._box_lists(grow=0.0)  # the obstacles of each cell
-        self._marked = self._lists[0].reshape(self._shape) > 0  # cells an obstacle touches
-        self._near: dict[float, tuple] = {}  # clearances: _box_lists(cap), by cap
-
-    def _box_lists(self, grow: float) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        """Per grid cell, the obstacle boxes that touch it once grown by ``grow`` on every side.
-
-        ``count (C,)`` and ``first (C,)`` per flattened cell, ``members (B,)``: cell c's boxes
-        are ``members[first[c]:first[c] + count[c]]``.
-        """
-        from toolkit.geometry import kernels  # numba loads (or compiles) on first use, not on import
-
-        boxes, dim = self.workspace.boxes, self.workspace.dim  # (K, 2, D)
-        lo, hi = np.zeros((2, len(boxes), 3), dtype=np.int64)  # first and last cell per axis, (K, 3) each
-        lo[:, :dim], hi[:, :dim] = self._cells(boxes[:, 0] - grow), self._cells(boxes[:, 1] + grow)
-        shape = np.ones(3, dtype=np.int64)  # a 2D grid: one cell along the third axis
-        shape[:dim] = self._shape
-        return kernels.cell_lists(lo, hi, shape)
-
-    def _cells(self, points: np.ndarray) -> np.ndarray:
-        """Integer cell index of each point ``(..., D)``, clipped to the grid."""
-        index = np.floor((points - self.workspace.lower) / self._cell).astype(int)
-        return np.clip(index, 0, np.array(self._shape) - 1)
-
-    def _covered_cells(self, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
-        """``(2^D, M)`` flat indices of the cells that bounds ``lo, hi (M, D)`` cover (repeats where
-        they span one cell).
-
-        Bounds are no wider than a cell, so they cover at most two cells per axis: their 2^D corners' cells.
-        """
-        lo, hi = self._cells(lo), self._cells(hi)  # (M, D) each
-        return np.stack(
-            [
-                np.ravel_multi_index(tuple(np.where(np.array(corner, dtype=bool), hi, lo).T), self._shape)
-                for corner in np.ndindex(*(2,) * self.robot.dim)
-            ]
-        )
-
-    def validity(self, Q: np.ndarray) -> np.ndarray:
-        valid = self.robot.in_bounds(Q)  # (N,)
-        idx = np.flatnonzero(valid)
-        aabbs = self.robot.link_aabbs(Q[idx])  # (n, L, 2, D)
-        inside = np.all(
-            (aabbs[:, :, 0] >= self.workspace.lower) & (aabbs[:, :, 1] <= self.workspace.upper), axis=(1, 2)
-        )
-        valid[idx[~inside]] = False
-        idx, aabbs = idx[inside], aabbs[inside]
-        cells = self._covered_cells(
-            aabbs[:, :, 0].reshape(-1, self.robot.dim), aabbs[:, :, 1].reshape(-1, self.robot.dim)
-        )
-        candidates = self._marked.reshape(-1)[cells].any(axis=0).reshape(aabbs.shape[:2])  # (n, L): may touch a block
-        valid[idx[self._links_collide(Q[idx], aabbs, candidates)]] = False
-        return valid
+        self.grid = BoxGrid(workspace, robot)
 
     def clearance_bounds(self, Q: np.ndarray, cap: float) -> np.ndarray:
         """0 out of bounds; otherwise the smallest over links of a lower bound on its clearance.
@@ -121,10 +126,8 @@ class BoxWorldChecker(CollisionChecker):
         level = walls[:, : self.robot.level_links, -1]  # links that never move vertically: floor and ceiling
         walls[:, : self.robot.level_links, -1] = np.where(level >= 0, np.inf, level)
         link = walls.min(axis=-1).reshape(-1)  # (n * L,)
-        if cap not in self._near:
-            self._near[cap] = self._box_lists(grow=cap)
-        count, first, members = self._near[cap]
-        cell = self._covered_cells(lo, hi).reshape(-1)  # (2^D * n * L,)
+        count, first, members = self.grid.box_lists(grow=cap)
+        cell = self.grid.covered_cells(lo, hi).reshape(-1)  # (2^D * n * L,)
         owner, ordinal = ragged(count[cell])
         # (link, box) pairs from the cells each link's bounds cover; repeats are harmless
         pair_link = owner % len(link)  # (P,)
@@ -148,9 +151,38 @@ class BoxWorldChecker(CollisionChecker):
         clearance[idx] = link.reshape(len(idx), n_links).min(axis=1)
         return np.clip(clearance, 0.0, cap)
 
+
+class PrefilteredChecker(BoxWorldChecker):
+    """Bounds, region, then a conservative voxel prefilter per link, batched in numpy; the exact test of the links
+    the prefilter keeps is a subclass's :meth:`_links_collide` (python-fcl's, the separating axes').
+
+    The prefilter marks every cell of the grid that an obstacle touches; a link's bounds cover at most
+    two cells per axis, so 2^D look-ups tell whether it may touch an obstacle.
+    """
+
+    def __init__(self, workspace: Workspace, robot: BoxRobot):
+        super().__init__(workspace, robot)
+        self._marked = self.grid.lists[0].reshape(self.grid.shape) > 0  # cells an obstacle touches
+
+    def validity(self, Q: np.ndarray) -> np.ndarray:
+        valid = self.robot.in_bounds(Q)  # (N,)
+        idx = np.flatnonzero(valid)
+        aabbs = self.robot.link_aabbs(Q[idx])  # (n, L, 2, D)
+        inside = np.all(
+            (aabbs[:, :, 0] >= self.workspace.lower) & (aabbs[:, :, 1] <= self.workspace.upper), axis=(1, 2)
+        )
+        valid[idx[~inside]] = False
+        idx, aabbs = idx[inside], aabbs[inside]
+        cells = self.grid.covered_cells(
+            aabbs[:, :, 0].reshape(-1, self.robot.dim), aabbs[:, :, 1].reshape(-1, self.robot.dim)
+        )
+        candidates = self._marked.reshape(-1)[cells].any(axis=0).reshape(aabbs.shape[:2])  # (n, L): may touch a block
+        valid[idx[self._links_collide(Q[idx], aabbs, candidates)]] = False
+        return valid
+
     def _links_collide(self, Q: np.ndarray, aabbs: np.ndarray, candidates: np.ndarray) -> np.ndarray:
         """(n,) whether any link of each configuration meets an obstacle; ``candidates (n, L)`` may."""
-        raise NotImplementedError
+        raise NotImplementedError(f"{type(self).__name__} must override _links_collide")
 
 
 class PointRobotChecker(BoxWorldChecker):
@@ -165,7 +197,7 @@ class PointRobotChecker(BoxWorldChecker):
     certificates_pay = False
 
     def __init__(self, workspace: Workspace, robot: BoxRobot):
-        if robot.base != "point2d" or robot.dof != 2:
+        if not is_point_robot(robot):
             raise ValueError(f"PointRobotChecker needs the 2D point robot, got {robot.name!r}")
         super().__init__(workspace, robot)
         half = robot.half_extents[0]  # (2,)
@@ -182,7 +214,12 @@ class PointRobotChecker(BoxWorldChecker):
         return valid
 
 
-class SeparatingAxisChecker(BoxWorldChecker):
+def is_point_robot(robot: BoxRobot) -> bool:
+    """Whether ``robot`` is a lone square moving in the plane (a 2D base, no joints): :class:`PointRobotChecker`'s."""
+    return robot.base == "point2d" and robot.dof == 2
+
+
+class SeparatingAxisChecker(PrefilteredChecker):
     """Reference: separating-axis test of every candidate (link, obstacle) pair, vectorized.
 
     Two convex boxes are disjoint iff some axis separates their projections

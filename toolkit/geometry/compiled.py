@@ -20,13 +20,12 @@ from typing import NamedTuple
 
 import numpy as np
 
-from toolkit.geometry.box_world import BoxWorldChecker, refuse_mesh
-from toolkit.geometry.robots import AXES, BoxRobot
+from toolkit.geometry.box_world import BoxGrid, BoxWorldChecker, refuse_mesh
+from toolkit.geometry.robots import AXES, BASE_KINDS, BoxRobot
 from toolkit.geometry.workspace import Workspace
 
 FAR_CELL = 1.5  # the far bits' cells: this many times the smallest link ball's radius wide
 FAR_CELLS = 128  # or a 128th of the region's longest axis, if wider
-BASE_KINDS = {"point2d": 0, "planar": 1, "free": 2}  # a robot's base kind, as the kernels read it
 
 
 class Robot(NamedTuple):
@@ -34,7 +33,7 @@ class Robot(NamedTuple):
 
     lower: np.ndarray  # (dof,) configuration bounds
     upper: np.ndarray  # (dof,)
-    base: int  # 0 point2d, 1 planar, 2 free
+    base: int  # the base's kind: its number in robots.BASE_KINDS (frame_kernels.POINT2D, PLANAR, FREE)
     base_height: float
     joint_origins: np.ndarray  # (J, 3) in the parent link's frame
     joint_axes: np.ndarray  # (J,) 0, 1, 2 for x, y, z
@@ -55,7 +54,7 @@ class Far(NamedTuple):
 
 class World(NamedTuple):
     """A box workspace as arrays, with per grid cell the boxes that touch it (cell ``c``'s boxes are
-    ``cell_boxes[cell_first[c]:cell_first[c] + cell_count[c]]``; the cells of ``BoxWorldChecker``)."""
+    ``cell_boxes[cell_first[c]:cell_first[c] + cell_count[c]]``; the cells of a ``BoxGrid``)."""
 
     lower: np.ndarray  # (D,) the region
     upper: np.ndarray  # (D,)
@@ -80,7 +79,7 @@ class CompiledChecker(BoxWorldChecker):
         refuse_mesh(workspace)
         super().__init__(workspace, robot)
         self._robot = robot_arrays(robot)
-        self._world = world_arrays(self, grow=0.0)._replace(far=far_grid(workspace, robot))
+        self._world = world_arrays(self.grid, grow=0.0)._replace(far=far_grid(workspace, robot))
         self._validity = None  # the compiled kernel.validity for these arrays, once known
         self._grown: dict[float, World] = {}  # clearances: the world with boxes grown by cap, by cap
 
@@ -109,7 +108,7 @@ class CompiledChecker(BoxWorldChecker):
         from toolkit.geometry import kernels
 
         if cap not in self._grown:
-            self._grown[cap] = world_arrays(self, grow=cap)
+            self._grown[cap] = world_arrays(self.grid, grow=cap)
         clearance = np.empty(len(Q))
         kernels.clearance_bounds(
             np.ascontiguousarray(Q, dtype=np.float64),
@@ -122,19 +121,18 @@ class CompiledChecker(BoxWorldChecker):
         return clearance
 
 
-def world_arrays(checker: BoxWorldChecker, grow: float) -> World:
-    """A checker's workspace as the kernels read it, its cell lists holding the boxes grown by ``grow``."""
-    ws = checker.workspace
+def world_arrays(grid: BoxGrid, grow: float) -> World:
+    """A checker's grid and workspace as the kernels read them, its cell lists holding the boxes grown by ``grow``."""
+    ws = grid.workspace
     shape = np.ones(3, dtype=np.int64)
-    shape[: ws.dim] = checker._shape
+    shape[: ws.dim] = grid.shape
     # int32: the grid stays in cache
-    lists = checker._box_lists(grow) if grow else checker._lists
-    count, first, members = (np.ascontiguousarray(a, dtype=np.int32) for a in lists)
+    count, first, members = (np.ascontiguousarray(a, dtype=np.int32) for a in grid.box_lists(grow))
     return World(
         np.array(ws.lower, dtype=np.float64),  # copies: writable arrays, so one compiled version serves all
         np.array(ws.upper, dtype=np.float64),
         np.array(ws.boxes, dtype=np.float64),
-        float(checker._cell),
+        float(grid.cell),
         shape,
         count,
         first,

@@ -62,7 +62,7 @@ class CompiledMeshChecker(BoxWorldChecker):
         solid = workspace.solid
         self._robot = robot_arrays(robot)
         self._base_first = self._base_mostly_outside()
-        self._parts = world_arrays(self, grow=0.0)  # the parts' bounds on the prefilter's grid
+        self._parts = world_arrays(self.grid, grow=0.0)  # the parts' bounds on the prefilter's grid
         bounds = np.stack([solid.triangles.min(axis=1), solid.triangles.max(axis=1)], axis=1)  # (T, 2, 3)
         self._grid = self._triangle_grid(solid.triangles, bounds)
         mesh = workspace.mesh
@@ -87,7 +87,7 @@ class CompiledMeshChecker(BoxWorldChecker):
         a larger workspace, as 3DO's youBot in a room): then most configurations leave the region with the base link,
         which the loop poses and bounds alone first."""
         ws, robot = self.workspace, self.robot
-        n = 3 if robot.base == "free" else 2  # the base's position coordinates, first in a configuration
+        n = robot.n_positions  # the base's position coordinates, first in a configuration
         lo, hi = robot.lower[:n], robot.upper[:n]
         overlap = np.clip(np.minimum(hi, ws.upper[:n]) - np.maximum(lo, ws.lower[:n]), 0.0, None)
         return bool(np.prod(overlap / np.maximum(hi - lo, 1e-12)) < 0.5)

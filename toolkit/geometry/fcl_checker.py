@@ -1,7 +1,7 @@
 """The python-fcl checkers: the reference for box worlds, and the checker for triangle meshes.
 
 - :class:`FCLChecker`: obstacles in FCL's ``DynamicAABBTreeCollisionManager``; kinematics and
-  the shared prefilter (:class:`~toolkit.geometry.box_world.BoxWorldChecker`) run batched in
+  the shared prefilter (:class:`~toolkit.geometry.box_world.PrefilteredChecker`) run batched in
   numpy, and only links whose bounds meet an obstacle's are handed to FCL, one call per link.
   It is the reference the tests hold every other checker to; for box worlds
   :func:`toolkit.geometry.collision.exact_checker` returns the compiled checker, which gives the
@@ -16,12 +16,12 @@ from __future__ import annotations
 import fcl
 import numpy as np
 
-from toolkit.geometry.box_world import BoxWorldChecker, refuse_mesh
+from toolkit.geometry.box_world import PrefilteredChecker, refuse_mesh
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import MeshWorkspace, Workspace
 
 
-class FCLChecker(BoxWorldChecker):
+class FCLChecker(PrefilteredChecker):
     """The reference exact checker, python-fcl: obstacles in a ``DynamicAABBTreeCollisionManager``.
 
     It is the ground truth the tests hold the other checkers to;
@@ -60,7 +60,7 @@ class FCLChecker(BoxWorldChecker):
         return hit
 
 
-class MeshChecker(BoxWorldChecker):
+class MeshChecker(PrefilteredChecker):
     """Ground truth against a triangle mesh: a :class:`~toolkit.geometry.workspace.MeshWorkspace`'s triangles.
 
     The prefilter and the clearance bounds use the bounds of the mesh's parts (they

@@ -10,8 +10,9 @@ axis; each link box's centre sits at its offset in its frame. Two forms:
   into vector instructions (8 numbers at once), the sines and cosines included
   (:func:`toolkit.geometry.trig.sin_cos`).
 
-The robot arrives as arrays (:class:`toolkit.geometry.compiled.Robot`): ``base`` 0 for the 2D point, 1 for a
-planar base (x, y, yaw on the floor), 2 for a free one (x, y, z, then Z-Y-X Euler angles).
+The robot arrives as arrays (:class:`toolkit.geometry.compiled.Robot`): ``base`` the kind's number
+(:data:`toolkit.geometry.robots.BASE_KINDS`): :data:`POINT2D` for the 2D point, :data:`PLANAR` for a planar base
+(x, y, yaw on the floor), :data:`FREE` for a free one (x, y, z, then Z-Y-X Euler angles).
 """
 
 from __future__ import annotations
@@ -19,7 +20,10 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
+from toolkit.geometry.robots import BASE_KINDS
 from toolkit.geometry.trig import SIN_COS_LIMIT, any_sin_cos, sin_cos
+
+POINT2D, PLANAR, FREE = (BASE_KINDS[kind] for kind in ("point2d", "planar", "free"))  # constants to numba
 
 
 @njit(cache=True, inline="always")
@@ -35,7 +39,13 @@ def _turn(rotation, axis, s, c):
 @njit(cache=True, inline="always")
 def first_angle(robot):
     """The column of a configuration's first angle; the rest follow it (the base's, then the joints')."""
-    return 3 if robot.base == 2 else 2
+    return 3 if robot.base == FREE else 2
+
+
+@njit(cache=True, inline="always")
+def base_angles(robot):
+    """How many angles the base has (the joints' follow them): free 3 (Z-Y-X), planar 1 (yaw), the 2D point 0."""
+    return 3 if robot.base == FREE else (1 if robot.base == PLANAR else 0)
 
 
 @njit(cache=True, inline="always")
@@ -45,9 +55,9 @@ def pose_base(q, robot, sines, cosines, position, rotation):
     rotation[:] = 0.0
     for i in range(3):
         rotation[i, i] = 1.0
-    if robot.base == 0:  # point2d
+    if robot.base == POINT2D:
         position[0], position[1], position[2] = q[0], q[1], 0.0
-    elif robot.base == 1:  # planar: x, y, yaw on the floor
+    elif robot.base == PLANAR:  # x, y, yaw on the floor
         position[0], position[1], position[2] = q[0], q[1], robot.base_height
         _turn(rotation, 2, sines[0], cosines[0])
     else:  # free: x, y, z, then Z-Y-X Euler angles
@@ -66,7 +76,7 @@ def next_link(robot, link, sines, cosines, position, rotation, center):
         for i in range(3):
             for j in range(3):
                 position[i] += rotation[i, j] * robot.joint_origins[joint, j]
-        angle = (3 if robot.base == 2 else robot.base) + joint  # after the base's angles: free 3, planar 1
+        angle = base_angles(robot) + joint
         _turn(rotation, robot.joint_axes[joint], sines[angle], cosines[angle])
     for i in range(3):
         center[i] = position[i]
@@ -128,14 +138,14 @@ def block_frames(Q, first, block, robot, angles, sines, cosines, position, rotat
             rotation[i, j, :block] = 1.0 if i == j else 0.0
     for n in range(block):
         position[0, n], position[1, n] = Q[first + n, 0], Q[first + n, 1]
-    if robot.base == 2:
+    if robot.base == FREE:
         for n in range(block):
             position[2, n] = Q[first + n, 2]
     else:
-        position[2, :block] = robot.base_height if robot.base == 1 else 0.0
-    if robot.base == 1:  # planar: yaw
+        position[2, :block] = robot.base_height if robot.base == PLANAR else 0.0
+    if robot.base == PLANAR:  # yaw
         _turn_block(rotation, 2, sines[0], cosines[0], block)
-    elif robot.base == 2:  # free: Z-Y-X Euler angles
+    elif robot.base == FREE:  # Z-Y-X Euler angles
         _turn_block(rotation, 2, sines[0], cosines[0], block)
         _turn_block(rotation, 1, sines[1], cosines[1], block)
         _turn_block(rotation, 0, sines[2], cosines[2], block)
@@ -146,7 +156,7 @@ def block_frames(Q, first, block, robot, angles, sines, cosines, position, rotat
                 p, r0, r1, r2 = position[i], rotation[i, 0], rotation[i, 1], rotation[i, 2]
                 for n in range(block):
                     p[n] += r0[n] * origin[0] + r1[n] * origin[1] + r2[n] * origin[2]
-            angle = (3 if robot.base == 2 else robot.base) + joint  # after the base's angles: free 3, planar 1
+            angle = base_angles(robot) + joint
             _turn_block(rotation, robot.joint_axes[joint], sines[angle], cosines[angle], block)
         offset = robot.link_offsets[link]
         for i in range(3):

@@ -14,7 +14,7 @@ numba to machine code) takes a block of 64 configurations through every step:
    the region and misses every obstacle. Most links are done here (the idea of the mesh checker,
    :mod:`toolkit.geometry.mesh_kernels`);
 4. else its axis-aligned bounds must lie inside the region, and the obstacle boxes listed in the grid cells
-   they cover (:class:`toolkit.geometry.box_world.BoxWorldChecker`'s cell lists) are tested: a ball round the
+   they cover (:class:`toolkit.geometry.box_world.BoxGrid`'s cell lists) are tested: a ball round the
    link that misses the box, or one inside the link that meets it, settles most pairs; the rest go to the
    separating-axis theorem (Gottschalk et al., OBBTree, 1996): two boxes are disjoint iff
    their projections on some axis are disjoint; it suffices to try the world's axes, the

@@ -53,6 +53,7 @@ BASES = {
     "planar": (("x", "y", "yaw"), (False, False, True)),
     "free": (("x", "y", "z", "alpha", "beta", "gamma"), (False, False, False, True, True, True)),
 }
+BASE_KINDS = {kind: number for number, kind in enumerate(BASES)}  # each kind's number in the compiled kernels
 
 
 class BoxRobot:

@@ -29,7 +29,7 @@ the scenarios' sizes (coordinates up to 41), enough to turn near-contact answers
 GPU (H100, H200) computes float64 at half its float32 rate; this check is bound by memory
 traffic and by the gather, not by arithmetic.
 
-The grid here is a hair wider than :class:`~toolkit.geometry.box_world.BoxWorldChecker`'s
+The grid here is a hair wider than :class:`~toolkit.geometry.box_world.BoxGrid`'s
 (by a factor ``1 + 1e-6``): with exactly the widest link's width, a link's bounds rounded one ulp
 wider could cover three cells along an axis. Any grid gives the same answers: a box whose
 bounds meet a link's shares a cell with it, whatever the cells' width.
@@ -48,7 +48,6 @@ from toolkit.geometry.device import Stager
 from toolkit.geometry.robots import AXES, BoxRobot
 from toolkit.geometry.workspace import Workspace
 
-BASE_KINDS = {"point2d": 0, "planar": 1, "free": 2}  # as kernels.py reads a robot's base
 WIDER = 1 + 1e-6  # this grid's cells over the widest link bounds (the module's docstring says why)
 
 
@@ -57,7 +56,7 @@ class Robot(NamedTuple):
 
     lower: torch.Tensor  # (dof,) configuration bounds
     upper: torch.Tensor  # (dof,)
-    base: int  # 0 point2d, 1 planar, 2 free
+    base: str  # the base's kind, a key of robots.BASES
     base_height: float
     joint_origins: list[tuple[float, float, float]]  # (J, 3) in the parent link's frame
     joint_axes: list[int]  # (J,) 0, 1, 2 for x, y, z
@@ -91,7 +90,7 @@ def robot_tensors(robot: BoxRobot, device: torch.device | str = "cpu") -> Robot:
     return Robot(
         torch.tensor(robot.lower, dtype=torch.float64, device=device),
         torch.tensor(robot.upper, dtype=torch.float64, device=device),
-        BASE_KINDS[robot.base],
+        robot.base,
         float(robot.base_height),
         rows([j.origin for j in robot.joints]),
         [AXES[j.axis] for j in robot.joints],
@@ -161,9 +160,9 @@ def link_frames(Q: torch.Tensor, robot: Robot) -> tuple[torch.Tensor, torch.Tens
     columns = [torch.zeros_like(position) for _ in range(3)]
     for i in range(3):
         columns[i][:, i] = 1.0
-    if robot.base == 0:  # point2d
+    if robot.base == "point2d":
         position[:, :2], first_joint = Q[:, :2], 2
-    elif robot.base == 1:  # planar: x, y, yaw on the floor
+    elif robot.base == "planar":  # x, y, yaw on the floor
         position[:, :2], position[:, 2], first_joint = Q[:, :2], robot.base_height, 3
         _turn(columns, 2, Q[:, 2])
     else:  # free: x, y, z, then Z-Y-X Euler angles

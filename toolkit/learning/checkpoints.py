@@ -122,7 +122,8 @@ def load_models(
     """
     folder = Path(folder)
     if not folder.is_dir():
-        raise FileNotFoundError(f"checkpoint folder {folder} does not exist")
+        what = "is a file, not a folder" if folder.exists() else "does not exist"
+        raise FileNotFoundError(f"checkpoint folder {folder} {what}")
     remedy = remedy or f"write it again with `toolkit train ... --force --out {folder}`, or use another checkpoint"
     try:
         meta = _read_meta(folder)

@@ -51,7 +51,7 @@ def balanced_samples(
 ) -> tuple[np.ndarray, np.ndarray]:
     """``n`` uniform configurations, ``round(n * valid_fraction)`` of them valid: ``(n, dof)``, ``(n,)`` bool.
 
-    Draws batches until both quotas are met; raises if ``max_draws`` are not enough
+    Draws batches until both quotas are met; a one-line ``ValueError`` if ``max_draws`` are not enough
     (a workspace almost entirely free or entirely blocked).
     """
     if not 0.0 <= valid_fraction <= 1.0 or n < 0:
@@ -64,9 +64,9 @@ def balanced_samples(
     while any(sum(map(len, kept[c])) < want[c] for c in (True, False)):
         if drawn >= max_draws:
             have = {c: sum(map(len, kept[c])) for c in kept}
-            raise RuntimeError(
+            raise ValueError(
                 f"after {drawn} draws only {have[True]} valid / {have[False]} invalid "
-                f"configurations of the {want[True]} / {want[False]} wanted"
+                f"configurations of the {want[True]} / {want[False]} wanted: a workspace almost all free or all blocked"
             )
         Q = robot.sample(rng, batch)
         valid = checker.are_valid(Q)

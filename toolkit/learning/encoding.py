@@ -29,6 +29,8 @@ from torch import nn
 
 from toolkit.geometry.robots import AXES, BoxRobot
 
+ENCODINGS = ("raw", "local")  # an InputEncoding's kinds: the paper's [z, q], ours with the patch and the pose
+
 
 def reach_cells(robot: BoxRobot, samples: int = 20_000) -> int:
     """How many unit cells from its base cell the robot can reach, along the base's position axes.
@@ -37,14 +39,9 @@ def reach_cells(robot: BoxRobot, samples: int = 20_000) -> int:
     """
     Q = robot.sample(np.random.default_rng(0), samples)
     aabbs = robot.link_aabbs(Q)  # (N, L, 2, D)
-    n_pos = position_dofs(robot)
+    n_pos = robot.n_positions  # the base's position DoFs come first
     reach = np.abs(aabbs[..., :n_pos] - Q[:, None, None, :n_pos]).max()
     return int(math.ceil(reach))
-
-
-def position_dofs(robot: BoxRobot) -> int:
-    """How many leading DoFs are base positions: 2 for the point robot and the youBot, 3 for the chains."""
-    return robot.n_positions
 
 
 def _namespace(x):
@@ -122,11 +119,11 @@ class InputEncoding(nn.Module):
 
     def __init__(self, robot: BoxRobot, grid_shape: tuple[int, ...], latent_dim: int, kind: str, radius: int = 0):
         super().__init__()
-        if kind not in ("raw", "local"):
-            raise ValueError(f"unknown input encoding {kind!r}; choose 'raw' or 'local'")
+        if kind not in ENCODINGS:
+            raise ValueError(f"unknown input encoding {kind!r}; choose one of {ENCODINGS}")
         self.kind, self.radius, self.grid_shape = kind, int(radius), tuple(grid_shape)
         self.dof = robot.dof  # configurations are (N, dof)
-        self.n_pos = position_dofs(robot)  # buffers below derive from the robot and grid: not saved in checkpoints
+        self.n_pos = robot.n_positions  # buffers below derive from the robot and grid: not saved in checkpoints
         self.n_angles = int(robot.wraps.sum())  # configurations are [positions, angles, joints]
         self.base_height = robot.base_height  # the planar base's z
         lower, upper = (np.array(bound[self.n_pos + self.n_angles :])[:, None] for bound in (robot.lower, robot.upper))

@@ -23,6 +23,9 @@ from torch import nn
 from toolkit.learning.encoding import InputEncoding, reach_cells
 from toolkit.scenarios import Scenario
 
+CAE_LOSSES = ("sum", "mean")  # CAE.loss's readings of the reconstruction error: Eq. (1)'s, §IV-B1's
+MLP_INITS = ("torch", "he")  # CollisionMLP's initial weights: PyTorch's default, He's
+
 VALID = 1  # class index of "valid" in the MLP's two logits
 PRELU_SLOPE = 0.25  # nn.PReLU's initial negative slope
 
@@ -104,7 +107,7 @@ class CAE(nn.Module):
         elif reduction == "mean":
             error = squared.mean()
         else:
-            raise ValueError(f"unknown CAE loss reduction {reduction!r}; choose 'sum' (Eq. (1)) or 'mean' (§IV-B1)")
+            raise ValueError(f"unknown CAE loss reduction {reduction!r}; choose one of {CAE_LOSSES}")
         return error + lam * self.encoder_weight_penalty()
 
 
@@ -118,8 +121,8 @@ class CollisionMLP(nn.Module):
 
     def __init__(self, in_features: int, hidden: tuple[int, ...], dropout: float, init: str = "torch"):
         super().__init__()
-        if init not in ("torch", "he"):
-            raise ValueError(f"unknown MLP initialization {init!r}; choose 'torch' or 'he'")
+        if init not in MLP_INITS:
+            raise ValueError(f"unknown MLP initialization {init!r}; choose one of {MLP_INITS}")
         if not 0.0 <= dropout < 1.0:
             raise ValueError(f"dropout must lie in [0, 1), got {dropout}")
         if not hidden:

@@ -30,11 +30,27 @@ measured one change at a time: ``docs/design.md`` ("The presets") and ``docs/fid
 from __future__ import annotations
 
 import hashlib
+from collections.abc import Callable
 from dataclasses import dataclass
 
-from toolkit.learning.models import CollisionPredictor, build_predictor
+import torch
+
+from toolkit.learning.encoding import ENCODINGS
+from toolkit.learning.models import CAE_LOSSES, MLP_INITS, CollisionPredictor, build_predictor
 from toolkit.scenarios import Scenario
 from toolkit.util import registry
+
+OPTIMIZERS: dict[str, Callable[..., torch.optim.Optimizer]] = {  # the optimizers a preset may name
+    "adagrad": torch.optim.Adagrad,
+    "adamw": torch.optim.AdamW,
+}
+CHOICES = {  # a preset's settings that name something, and the names each may take (checked as a preset is made)
+    "encoding": ENCODINGS,
+    "optimizer": tuple(OPTIMIZERS),
+    "cae_optimizer": tuple(OPTIMIZERS),
+    "mlp_init": MLP_INITS,
+    "cae_loss": CAE_LOSSES,
+}
 
 
 @dataclass(frozen=True)
@@ -43,9 +59,9 @@ class Preset:
 
     name: str
     encoding: str  # MLP input: "raw" = [z, q] (paper), "local" = [z, patch, pose] (see toolkit.learning.encoding)
-    optimizer: str  # "adagrad" or "adamw", for the MLP
+    optimizer: str  # the MLP's: a name of OPTIMIZERS, "adagrad" or "adamw"
     lr: float
-    cae_optimizer: str
+    cae_optimizer: str  # the CAE's, likewise
     cae_lr: float
     dropout: float
     cae_lambda: float  # lambda of Eq. (1)
@@ -69,6 +85,10 @@ class Preset:
     origin: str = ""  # the recipe this one was made from (dataclasses.replace keeps it); "": its own name
 
     def __post_init__(self):
+        """Refuses a setting outside its :data:`CHOICES` at once, in one line, rather than minutes into training."""
+        for setting, allowed in CHOICES.items():
+            if (value := getattr(self, setting)) not in allowed:
+                raise ValueError(f"preset {self.name!r}: {setting} must be one of {', '.join(allowed)}; got {value!r}")
         if not self.origin:
             object.__setattr__(self, "origin", self.name)  # frozen: set once, as it is made
 

@@ -24,8 +24,9 @@ from tqdm.auto import tqdm
 from toolkit.learning import data, metrics
 from toolkit.learning.data import CollisionDataset
 from toolkit.learning.models import CAE, CollisionPredictor
-from toolkit.learning.presets import Preset
+from toolkit.learning.presets import OPTIMIZERS, Preset
 from toolkit.scenarios import Scenario
+from toolkit.util import registry
 
 CALIBRATION_THRESHOLDS = np.linspace(0.05, 0.95, 91)
 
@@ -287,13 +288,7 @@ def fit(
 ) -> list[float]:
     """Minimize ``loss_of(batch indices)`` over the epochs with the named optimizer; mean loss per epoch."""
     params = list(params)
-    optimizer: torch.optim.Optimizer
-    if optimizer_name == "adagrad":
-        optimizer = torch.optim.Adagrad(params, lr=lr, weight_decay=weight_decay)
-    elif optimizer_name == "adamw":
-        optimizer = torch.optim.AdamW(params, lr=lr, weight_decay=weight_decay)
-    else:
-        raise ValueError(f"unknown optimizer {optimizer_name!r}; choose 'adagrad' or 'adamw'")
+    optimizer = registry.lookup(OPTIMIZERS, optimizer_name, kind="optimizer")(params, lr=lr, weight_decay=weight_decay)
     total = sum(map(len, epochs))
     schedule = (lambda step: 0.5 * (1 + math.cos(math.pi * step / total))) if cosine_schedule else (lambda step: 1.0)
     scheduler = torch.optim.lr_scheduler.LambdaLR(optimizer, schedule)

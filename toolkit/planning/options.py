@@ -11,6 +11,8 @@
 No planner's parameters inherit another's: all take the fields every roadmap planner reads from
 :class:`RoadmapParams` (what :mod:`toolkit.planning.query_roadmap` reads), the lazy planners those of
 :class:`LazyEdgeParams`, and each adds its own.
+Each checks its fields as it is made, by a table of rules (:class:`CheckedParams`, which RRT-Connect's
+parameters use too): a bad value, from Python or ``--option NAME=VALUE``, is a one-line error naming the field.
 The query's resolution and sampler are the problem's, not a planner's
 (:class:`toolkit.planning.planner.Problem`).
 """
@@ -43,8 +45,25 @@ RULES = {  # what a field must be: __post_init__ checks each field against its r
 }
 
 
+class CheckedParams:
+    """A base for a planner's frozen parameters: each field named in ``rules`` (field -> a key of :data:`RULES`) is
+    checked as they are made, a one-line ``ValueError`` naming the first that breaks its rule."""
+
+    rules: ClassVar[dict[str, str]] = {}
+
+    def __post_init__(self):
+        for name, rule in self.rules.items():
+            value = getattr(self, name)
+            try:
+                ok = RULES[rule](value)
+            except (TypeError, ValueError):  # e.g. None or a string where a number belongs
+                ok = False
+            if not ok:
+                raise ValueError(f"{type(self).__name__}.{name} must be {rule}, got {value!r}")
+
+
 @dataclass(frozen=True)
-class RoadmapParams:
+class RoadmapParams(CheckedParams):
     """What every roadmap planner reads; ``k`` follows OMPL's PRM, ``n_samples`` the paper's |S| (§IV-A)."""
 
     n_samples: int = 200  # sampler attempts per round (|S|; a query of a scenario: its plan_samples)
@@ -61,16 +80,6 @@ class RoadmapParams:
         "certify_spacing": "positive and finite",
         "auxiliary": f"one of {', '.join(AUXILIARY)}",
     }
-
-    def __post_init__(self):
-        for name, rule in self.rules.items():
-            value = getattr(self, name)
-            try:
-                ok = RULES[rule](value)
-            except (TypeError, ValueError):  # e.g. None or a string where a number belongs
-                ok = False
-            if not ok:
-                raise ValueError(f"{type(self).__name__}.{name} must be {rule}, got {value!r}")
 
 
 @dataclass(frozen=True)

@@ -27,10 +27,12 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass
+from typing import ClassVar
 
 import numpy as np
 
 from toolkit.planning.local_planner import certify_edges
+from toolkit.planning.options import CheckedParams
 from toolkit.planning.planner import Planner, PlanResult, Problem
 from toolkit.planning.roadmap import Roadmap
 
@@ -38,7 +40,7 @@ SAMPLES = 64  # random configurations drawn at a time
 
 
 @dataclass(frozen=True)
-class RRTConnectParams:
+class RRTConnectParams(CheckedParams):
     """RRT-Connect's settings; ``range`` in resolutions, as an edge's length is in checks."""
 
     range: float = 64.0  # an extension moves no robot point farther than resolution * this
@@ -46,13 +48,10 @@ class RRTConnectParams:
     certify_spacing: float = 8.0  # verification: intervals of motion resolution * this first (certify_edges)
     max_iterations: int = 5_000  # samples drawn before reporting failure
 
-    def __post_init__(self):
-        for name in ("range", "certify_spacing"):
-            if not (np.isfinite(getattr(self, name)) and getattr(self, name) > 0):
-                raise ValueError(f"RRTConnectParams.{name} must be positive and finite, got {getattr(self, name)!r}")
-        for name in ("coarse", "max_iterations"):
-            if not (int(getattr(self, name)) == getattr(self, name) and getattr(self, name) >= 1):
-                raise ValueError(f"RRTConnectParams.{name} must be a positive integer, got {getattr(self, name)!r}")
+    rules: ClassVar[dict[str, str]] = {  # field -> what it must be (options.RULES), checked as it is made
+        **dict.fromkeys(("range", "certify_spacing"), "positive and finite"),
+        **dict.fromkeys(("coarse", "max_iterations"), "a positive integer"),
+    }
 
 
 class Tree:

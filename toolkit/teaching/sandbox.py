@@ -128,3 +128,13 @@ def unavailable() -> str | None:
     if trial.returncode != 0:
         return f"bubblewrap cannot run here: {(trial.stderr.strip().splitlines() or ['no message'])[-1]}"
     return None
+
+
+class CannotIsolate(OSError):
+    """Submissions cannot be isolated on this machine (:func:`unavailable` says why): grading refuses to run them."""
+
+
+def require() -> None:
+    """Raise :class:`CannotIsolate` where submissions cannot be isolated (a one-line error at the command line)."""
+    if why := unavailable():
+        raise CannotIsolate(f"cannot isolate the submissions: {why}; grade without isolation only if you trust them")
