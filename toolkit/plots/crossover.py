@@ -12,7 +12,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from toolkit.plots.alt import describe
-from toolkit.plots.palette import COLORS, halo
+from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
 
 STYLES = {  # checker -> (marker and line, colour, legend)
     "exact": ("o-", COLORS["exact"], "exact, default (compiled)"),
@@ -28,18 +28,21 @@ def crossover(results: dict) -> Figure:
     sweeps = results["variables"]
     columns = min(len(sweeps), 2)
     rows = -(-len(sweeps) // columns)
-    fig = Figure(figsize=(5.2 * columns, 3.9 * rows))
+    fig = Figure(figsize=(PAGE_WIDTH, 3.2 * rows + 1.8))  # as wide as the page: its text as large as it is drawn
     axes = fig.subplots(rows, columns, squeeze=False).ravel()
     for ax, sweep in zip(axes, sweeps.values()):
         _panel(ax, sweep)
     for ax in axes[len(sweeps) :]:
         ax.set_visible(False)
     quick = " (quick sizes)" if results.get("quick") else ""
+    cheaper = any(_cheaper(sweep).any() for sweep in sweeps.values())
+    shaded = "shaded: the network is the cheaper check" if cheaper else "the network is nowhere the cheaper check"
     fig.suptitle(
-        f"Where prediction pays: {results['scenario']}, preset {results['preset']}{quick}; "
-        "shaded: the network is the cheaper check"
+        f"Where prediction pays: {results['scenario']}, preset {results['preset']}{quick}\n{shaded}", fontsize=11
     )
-    fig.tight_layout()
+    handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # one legend, below
+    fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=1, fontsize=9, frameon=False)
+    fig.tight_layout(rect=(0, (0.2 * len(handles) + 0.2) / fig.get_figheight(), 1, 1))  # a line an entry
     text = f"Cost per configuration of the exact and the learned check, {results['scenario']}, preset "
     text += f"{results['preset']}{quick}, microseconds on log axes. "
     return describe(fig, text + " ".join(_in_words(sweep) for sweep in sweeps.values()))
@@ -65,16 +68,17 @@ def _panel(ax, sweep: dict) -> None:
         style, colour, label = STYLES[name]
         outline = halo(1.5) if name == "learned" else []  # orange alone is too light on white
         ax.plot(x, np.asarray(sweep[f"{name}_us"], float), style, color=colour, label=label, path_effects=outline)
-    ax.fill_between(
-        x,
-        learned,
-        exact,
-        where=learned < exact,
-        interpolate=True,
-        color=COLORS["learned"],
-        alpha=0.2,
-        label="network cheaper",
-    )
+    if _cheaper(sweep).any():  # the legend names the shading only where there is some
+        ax.fill_between(
+            x,
+            learned,
+            exact,
+            where=_cheaper(sweep),
+            interpolate=True,
+            color=COLORS["learned"],
+            alpha=0.2,
+            label="shaded: network cheaper than the default exact check",
+        )
     for name, found in sweep["crossing"].items():
         if found is not None:
             ax.axvline(found["value"], ls=":", color=STYLES[name][1])
@@ -87,4 +91,9 @@ def _panel(ax, sweep: dict) -> None:
     ax.minorticks_off()
     ax.set_xlabel(sweep["label"])
     ax.set_ylabel("µs per configuration")
-    ax.legend(fontsize=8)
+    ax.tick_params(labelsize=9)
+
+
+def _cheaper(sweep: dict) -> np.ndarray:
+    """``(V,)`` bool: where the network costs less per configuration than the default exact check."""
+    return np.asarray(sweep["learned_us"], float) < np.asarray(sweep["exact_us"], float)
