@@ -40,8 +40,8 @@ STAGE_LABELS = {
 C_OBSTACLE = ListedColormap([COLORS["free"], COLORS["c_obstacle"]])  # valid, invalid
 EDGE_COLOR, NODE_COLOR = COLORS["edge"], COLORS["node"]
 PATH_STYLES = {  # by stage: colour, line style (candidate dashed, one a repair rejected dash-dotted, answer solid)
-    "candidate": (COLORS["candidate"], (0, (4, 2))),
-    "repair": (COLORS["candidate"], (0, (6, 2, 1, 2))),  # long dash, dot: told from the dashes at a glance
+    "candidate": (COLORS["candidate"], "--"),
+    "repair": (COLORS["candidate"], "-."),
     "path": (COLORS["path"], "-"),
 }
 REPAIR_COLOR = COLORS["removed"]  # what the exact checker rejected: removed by a repair (drawn as X)
@@ -308,7 +308,7 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
     means, our eager or lazy exact planner and medians), a series what was timed (e.g. "2DS, sampling"). Ratios
     against different baselines never share a bar group; the panels share one log axis, so heights compare.
     """
-    fig = Figure(figsize=(PAGE_WIDTH, 2.6 * len(baselines) + 0.9))  # one baseline a row, each with its own ticks
+    fig = Figure(figsize=(PAGE_WIDTH, 2.6 * len(baselines) + 0.6))  # one baseline a row, each with its own ticks
     axes = fig.subplots(len(baselines), 1, squeeze=False, sharey=True)[:, 0]
     said = []
     for ax, (title, series) in zip(axes, baselines.items()):
@@ -331,12 +331,15 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
         ax.set_xlabel("sampler")
         ax.set_ylabel("time with / without")
         ax.set_title(textwrap.fill(title, 90), fontsize=10)
+    ratios = [r for series in baselines.values() for by in series.values() for r in by.values()]
+    axes[0].set_yscale("log")
+    axes[0].set_ylim(min(min(ratios), 1.0) / 1.3, max(max(ratios), 1.0) * 1.3)  # every bar's top and the line at 1
     _log_ticks(axes[0])  # shared by every panel
     for ax in axes:
         ax.tick_params(labelsize=9, labelleft=True)  # each row its own numbers
     handles, names = axes[0].get_legend_handles_labels()
     fig.legend(handles, names, loc="lower center", ncol=min(len(names), 4), fontsize=9, frameon=False)
-    fig.tight_layout(rect=(0, 0.9 / fig.get_figheight(), 1, 1))
+    fig.tight_layout(rect=(0, 0.4 / fig.get_figheight(), 1, 1))
     text = "Planning time with prediction divided by the time without, per sampler, log scale; below 1 prediction saves"
     return describe(fig, f"{text} time. {'; '.join(said)}.")
 

@@ -38,6 +38,7 @@ SAMPLE_MARKS = {  # kind of sample -> marker, colour, size: the viewer's shapes 
     "in collision": ("D", INVALID_COLOR, 11),
     "model wrong": ("*", COLORS["ink"], 36),
 }
+SAMPLE_WORDS = {"valid": "circles", "in collision": "diamonds", "model wrong": "stars"}  # SAMPLE_MARKS in words
 POSE_MARKERS = ("s", "P", "*", "^", "v", "X")  # the poses of a still, marked at their base in its overview
 
 
@@ -60,7 +61,7 @@ def scene_still(
         raise ValueError(f"a scene's still is drawn in 3D; the {robot.name} robot moves in {robot.dim}D")
     valid = valid or {}
     rows = -(-(1 + len(poses)) // 2)
-    fig = Figure(figsize=(PAGE_WIDTH, 3.4 * rows + 0.9))  # as wide as the page: its text as large as it is drawn
+    fig = Figure(figsize=(PAGE_WIDTH, 3.7 * rows + 0.9))  # as wide as the page: its text as large as it is drawn
     overview = fig.add_subplot(rows, 2, 1, projection="3d")
     for lo, hi in workspace.boxes:
         add_box_3d(overview, aabb_corners(lo, hi), linewidth=0.2, alpha=0.2, **BLOCK_STYLE)
@@ -90,21 +91,22 @@ def scene_still(
         _draw_points(ax, samples, trace, clip=True)
         few_ticks(ax)
         state = "" if ok is None else ", valid" if ok else ", in collision"
-        ax.set_title(f"{label}: the robot close up{state}", fontsize=10)
+        ax.set_title(f"{label}, close up{state}", fontsize=10)
         said.append(f"{label}{state}")
     handles = {name: h for ax in fig.axes for h, name in zip(*ax.get_legend_handles_labels())}
-    if any(ok is not None for ok in valid.values()):
-        handles |= {
-            text: Patch(label=text, **link_style(c))
-            for text, c in (("robot, valid", VALID_COLOR), ("robot, in collision", INVALID_COLOR))
-        }
+    shown = {ok for ok in valid.values() if ok is not None}  # the robot's states drawn: name those alone
+    handles |= {
+        text: Patch(label=text, **link_style(c))
+        for ok, text, c in ((True, "robot, valid", VALID_COLOR), (False, "robot, in collision", INVALID_COLOR))
+        if ok in shown
+    }
     fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=3, fontsize=9, frameon=False)
     fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1))
     text = f"The {robot.name} robot in workspace {workspace.family} ({len(workspace.boxes)} blocks) as a still: "
     text += "the whole workspace"
     if samples is not None:
         text += ", " + ", ".join(
-            f"{int(m.sum())} samples {kind} ({SAMPLE_MARKS[kind][0]})" for kind, m in samples[1].items() if m.any()
+            f"{int(m.sum())} samples {kind} ({SAMPLE_WORDS[kind]})" for kind, m in samples[1].items() if m.any()
         )
     text += ", the path of the robot's base" if trace is not None else ""
     return describe(fig, text + "; then the robot close up among the blocks near it: " + "; ".join(said) + ".")
@@ -169,7 +171,7 @@ def path_frame(
         for name, values in (("valid", valid), ("clearance", clearance), ("probability", probability))
     }
     fig = Figure(figsize=(PAGE_WIDTH, 5.6))  # as wide as the page: its text as large as it is drawn
-    grid = fig.add_gridspec(1, 2, width_ratios=(0.9, 1.1), wspace=0.3, top=0.74, bottom=0.1, left=0.02, right=0.88)
+    grid = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.45, top=0.74, bottom=0.1, left=0.02, right=0.88)
     valid_now = None if series["valid"] is None else bool(series["valid"][index])
     _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, valid_now, workspace, margin)
     _draw_series(fig, grid[1], robot, Q, index, series, threshold)

@@ -358,7 +358,7 @@ class Viewer:
         """The scene as a still picture (:func:`toolkit.plots.scenes.scene_still`): the whole workspace with the
         shown samples and path, the robot marked, then the robot close up at ``poses`` ``{label: q}`` (default: where
         it stands now). A 3D scene's page shows it in place of the view where the browser has no WebGL."""
-        poses = {"the robot now": self.q} if poses is None else poses
+        poses = {"the robot": self.q} if poses is None else poses
         valid = dict(zip(poses, (bool(v) for v in self.exact.are_valid(np.stack(list(poses.values()))))))
         trace = None
         if self.path is not None:
