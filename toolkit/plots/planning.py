@@ -331,9 +331,9 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
         ax.set_xlabel("sampler")
         ax.set_ylabel("time with / without")
         ax.set_title(textwrap.fill(title, 90), fontsize=10)
-    ratios = [r for series in baselines.values() for by in series.values() for r in by.values()]
+    every = [float(r) for series in baselines.values() for by in series.values() for r in by.values()]
     axes[0].set_yscale("log")
-    axes[0].set_ylim(min(min(ratios), 1.0) / 1.3, max(max(ratios), 1.0) * 1.3)  # every bar's top and the line at 1
+    axes[0].set_ylim(min(*every, 1.0) / 1.3, max(*every, 1.0) * 1.3)  # every bar's top and the line at 1
     _log_ticks(axes[0])  # shared by every panel
     for ax in axes:
         ax.tick_params(labelsize=9, labelleft=True)  # each row its own numbers

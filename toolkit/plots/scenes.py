@@ -116,7 +116,7 @@ def _draw_points(ax, samples, trace, clip: bool = False) -> None:
     """The samples ``(points (N, 3), {kind: mask})`` by kind and the base's ``trace (T, 3)`` on a 3D axes; with
     ``clip``, only what lies inside the axes' window (mplot3d does not clip)."""
     for kind, mask in ({} if samples is None else samples[1]).items():
-        points = samples[0][mask]  # type: ignore[index]
+        points = samples[0][mask]
         points = _inside(ax, points) if clip else points
         if len(points):
             marker, color, size = SAMPLE_MARKS[kind]

@@ -183,7 +183,7 @@ def crossover_counts(results: Mapping, tie: float = CLOSE) -> str:
     """One sentence: at how many of a ``toolkit.experiments.crossover`` run's points the network is the cheaper
     check, the dearer one, or too close to tell, against the default exact checker and against python-fcl (the
     verdicts of :func:`crossover_table`)."""
-    said = []
+    said: list[str] = []
     for key, name in (("exact_us", "the default exact checker"), ("fcl_us", "python-fcl")):
         verdicts = [
             cost_verdict(learned / exact, tie)
