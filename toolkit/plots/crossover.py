@@ -73,7 +73,6 @@ def _in_words(sweep: dict) -> str:
 def _panel(ax, sweep: dict) -> None:
     """One variable: the three curves, the values where the network is cheaper (its verdict) shaded, the crossings."""
     x = np.asarray(sweep["values"], dtype=float)
-    exact, learned = np.asarray(sweep["exact_us"], float), np.asarray(sweep["learned_us"], float)
     cheaper = _cheaper(sweep)  # (V,) beyond the band
     for name in ("exact", "fcl", "learned"):
         style, colour, label = STYLES[name]
