@@ -159,6 +159,13 @@ def chapter_04(nb) -> list[str]:
     )
     if re.search(r"\n {4}\S", printed):  # textwrap's continuation lines: a sentence wrapped before the page wraps it
         problems.append("04: pre-wrapped generated lines")
+    throughput = {
+        row[0]: row[1] for header, rows in found if header[1:2] == ["cost, network / default exact"] for row in rows
+    }
+    if set(throughput) != {"2DS", "3DC-7"} or not all(v.startswith(findings.DEARER) for v in throughput.values()):
+        problems.append(f"04: the prose says a network call costs more than the default exact check: {throughput}")
+    if "Against the default exact checker the network was the cheaper check at" not in " ".join(texts(nb)):
+        problems.append("04: the crossover's counts (findings.crossover_counts) are not displayed")
     return problems
 
 
@@ -169,7 +176,7 @@ def chapter_05(nb) -> list[str]:
     expected = [f"{findings.time_verdict(documented[s])} ({documented[s]:.2f})" for s in SAMPLERS]
     if row is None or row[1:] != expected:
         problems.append(f"05: docs/results.md's 3DC-7 medians are not displayed as findings.ratio_table says: {row}")
-    for needed in ("against the paper's Table 2: accuracy", 'accurate than answering "valid" to all of them'):
+    for needed in ("the paper's MLP (Table 2)", 'accurate than answering "valid" to all of them'):
         if needed not in found:
             problems.append(f"05: '{needed}' is not printed")
     if "model disagrees" not in prose(nb):

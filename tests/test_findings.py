@@ -138,10 +138,25 @@ def test_outlier_table_lists_the_slow_query_and_the_mean_it_moves():
     assert findings.outlier_table({"2DS": {"BS": row([0.1, 0.1], [0.1, 0.1])}}) == ""
 
 
-def test_compare_scores_says_higher_lower_and_equal_at_the_printed_precision():
-    ours, paper = {"acc": 0.77, "tpr": 0.849, "tnr": 0.6}, {"acc": 0.71, "tpr": 0.85, "tnr": 0.61}
-    assert findings.compare_scores(ours, paper) == (
-        "accuracy 77% against 71% (higher), TPR 85% against 85% (equal), TNR 60% against 61% (lower)"
+def test_accuracy_against_says_more_less_and_as_accurate_at_the_printed_precision():
+    said = findings.accuracy_against({"acc": 0.96}, {"acc": 0.71}, {"acc": 0.694}, 0.70)
+    assert said == (
+        "On its balanced unseen test the model is more accurate than the paper's MLP (Table 2); on these uniform "
+        'samples it is less accurate than answering "valid" to all of them.'
+    )
+    assert "is as accurate as the paper's" in findings.accuracy_against({"acc": 0.712}, {"acc": 0.708}, {"acc": 1}, 0)
+
+
+def test_crossover_counts_the_points_where_the_network_is_cheaper_dearer_or_too_close():
+    results = {
+        "variables": {
+            "batch": {"exact_us": [1.0, 1.0, 1.0], "fcl_us": [3.0, 3.0, 3.0], "learned_us": [5.0, 1.1, 0.5]},
+            "links": {"exact_us": [0.2], "fcl_us": [None], "learned_us": [0.4]},
+        }
+    }
+    assert findings.crossover_counts(results) == (
+        "Against the default exact checker the network was the cheaper check at 1 of 4 points and the dearer at 2 "
+        "(1 too close to tell); against python-fcl, the cheaper at 2 of 3 points and the dearer at 1."
     )
 
 

@@ -13,9 +13,7 @@ from pathlib import Path
 
 import nbformat
 import pytest
-from matplotlib.figure import Figure
 
-from toolkit.teaching.notebook import still
 from tools import notebook_runner
 from tools.notebook_runner import NotebookRun, widget_outputs
 from tools.site import LIVE_ONLY_IN_JUPYTERLAB, WIDGET_VIEW, static_widgets
@@ -126,11 +124,3 @@ def test_a_headless_run_switches_progress_bars_off_and_restores_the_variable(mon
     nbformat.write(nbformat.v4.new_notebook(), tmp_path / "empty.ipynb")
     notebook_runner.run_notebook(tmp_path / "empty.ipynb")
     assert seen == ["1"] and "TQDM_DISABLE" not in os.environ
-
-
-def test_a_still_picture_shows_open_under_its_summary_with_its_figures_alt_text():
-    fig = Figure()
-    fig.subplots().set_title("the office from above")
-    html = still(fig, "No 3D view above?").data
-    assert html.startswith('<details open><summary>No 3D view above?</summary><img src="data:image/png;base64,')
-    assert 'alt="Figure with 1 panel(s): the office from above"' in html

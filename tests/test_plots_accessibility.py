@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import importlib
 import inspect
+import io
 import itertools
 
 import numpy as np
@@ -24,6 +25,7 @@ from matplotlib.lines import Line2D
 from matplotlib.markers import MarkerStyle
 from matplotlib.patches import Patch
 from matplotlib.text import Text
+from PIL import Image
 
 from toolkit import plots, scenarios
 from toolkit.geometry import meshes, robots
@@ -215,6 +217,14 @@ def gallery() -> dict[str, Figure]:
             clearance=np.linspace(0.5, 0.1, 12),
             probability=np.linspace(0.9, 0.3, 12),
         ),
+        "scenes.scene_still": scenes.scene_still(
+            chain.robot,
+            clutter,
+            {"start": path[0], "goal": path[-1]},
+            valid={"start": True, "goal": False},
+            samples=(rng.uniform(0, 11, (40, 3)), {"valid": np.arange(40) < 30, "in collision": np.arange(40) >= 30}),
+            trace=chain.robot.link_boxes(path)[0][:, 0],
+        ),
         "tutorials.mesh_and_grid": tutorials.mesh_and_grid(mesh_ws, title="one box"),
         "tutorials.samplers_in_a_passage": tutorials.samplers_in_a_passage(exact, samples, ((9.0, 12.0), (20.0, 20.0))),
     }
@@ -402,3 +412,36 @@ def _mark_colours(artist) -> set[str]:
         return {to_hex(artist.get_color())}
     colours = [*np.atleast_2d(artist.get_facecolor()), *np.atleast_2d(artist.get_edgecolor())]
     return {to_hex(c) for c in colours if len(c) and c[-1] > 0}
+
+
+SITE_PIXELS = 750  # the widest a chapter's figure is shown on the course site (its content column), in pixels
+CHAPTER_FIGURES = (  # the figures chapters 04 and 05 show, read on the site at its width (issue 45)
+    "crossover.crossover",
+    "planning.samplers",
+    "planning.roadmap_steps",
+    "planning.ratio_comparison",
+    "scenes.path_frame",
+    "scenes.scene_still",
+)
+
+
+def test_the_chapters_figures_keep_8_points_at_the_sites_width(drawn):
+    """A figure wider than the site's column shrinks, and its text with it: every text of these figures is at
+    least 8 pt as the site shows it (saved as the notebook saves it: 100 dpi, cropped to what is drawn)."""
+    small = {}
+    for name in CHAPTER_FIGURES:
+        fig = drawn[name]
+        buffer = io.BytesIO()
+        fig.savefig(buffer, format="png", dpi=100, bbox_inches="tight")
+        width = Image.open(buffer).size[0]  # pixels
+        shown = min(1.0, SITE_PIXELS / width)
+        found = sorted(
+            {
+                f"{t.get_text()[:25]!r} {t.get_fontsize() * shown:.1f} pt"
+                for t in visible_texts(fig)
+                if t.get_fontsize() * shown < MIN_POINTS
+            }
+        )
+        if found:
+            small[f"{name} ({width} px)"] = found
+    assert small == {}

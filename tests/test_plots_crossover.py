@@ -31,7 +31,7 @@ def test_only_the_points_whose_verdict_is_network_cheaper_are_shaded():
         (round(10 / np.sqrt(10), 3), round(np.sqrt(1000), 3)),
         (round(np.sqrt(1e7), 3), round(1e4 * np.sqrt(10), 3)),
     ]
-    assert [t.get_text() for t in ax.get_legend().get_texts()][-1] == "network cheaper by > 25%"
+    assert [t.get_text() for t in fig.legends[0].get_texts()][-1] == "network cheaper by > 25%"
     assert "cheaper by more than 25% at 10, 10,000." in alt_text(fig)
 
 

@@ -154,3 +154,28 @@ def test_bad_input(crossing):
         scenes.path_frame(robot, path, 0, probability=np.ones(FRAMES - 1))
     with pytest.raises(ValueError, match="shape"):
         scenes.path_frame(robot, path[:, :3], 0)
+
+
+def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose(crossing):
+    robot, workspace, _, path, valid = crossing
+    points = robot.link_boxes(path)[0][:, 0]  # (T, 3) the base along the path, as sample points
+    kinds = {"valid": valid, "in collision": ~valid}
+    fig = scenes.scene_still(
+        robot,
+        workspace,
+        {"start": path[0], "end": path[-1]},
+        valid={"start": True, "end": False},
+        samples=(points, kinds),
+        trace=points,
+    )
+    overview, start, end = fig.axes
+    assert overview.get_title() == f"the whole workspace: {len(workspace.boxes)} blocks"
+    assert [start.get_title(), end.get_title()] == ["start, close up, valid", "end, close up, in collision"]
+    assert to_rgba(links(start)[0].get_facecolor()[0], None)[:3] == to_rgba(VALID_COLOR)[:3]
+    assert to_rgba(links(end)[0].get_facecolor()[0], None)[:3] == to_rgba(INVALID_COLOR)[:3]
+    drawn = {c.get_label(): len(c.get_offsets()) for c in overview.collections if c.get_label().startswith("sample")}
+    assert drawn == {"sample, valid": int(valid.sum()), "sample, in collision": int((~valid).sum())}
+    names = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "robot: start" in names and "robot, valid" in names and "robot, in collision" in names
+    with pytest.raises(ValueError, match="drawn in 3D"):
+        scenes.scene_still(scenarios.get("2ds").robot, workspace, {})

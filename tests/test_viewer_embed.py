@@ -15,6 +15,7 @@ import zstandard
 from IPython.display import HTML
 
 from toolkit import scenarios, viewer
+from toolkit.geometry.collision import exact_checker
 from toolkit.viewer import drawing as draw
 
 
@@ -228,3 +229,28 @@ def test_a_saved_scene_names_its_player_controls_and_hides_notices():
     assert page.endswith("</script>\n</body></html>") and "display: none !important" in page
     assert all(name in page for name in NAMES.values())
     assert label_controls("<p>no body</p>").startswith("<p>no body</p><style>")
+
+
+def test_a_saved_scene_carries_a_still_of_itself_shown_only_without_webgl(rng):
+    """A browser without WebGL leaves the view blank: the page then shows a still picture of the same scene (the
+    robot, the samples by kind, the path), its alt text saying what it shows."""
+    robot = scenarios.get("3dc7").robot
+    samples = robot.sample(rng, 40)
+    document = page_of(viewer.embed("3dc7", seed=2, samples=samples, height=320))
+    still = found(r'(<div id="toolkit-no-webgl" hidden[\s\S]*?</div>)', document)
+    alt = html.unescape(found(r'alt="([^"]*)"', still))
+    valid = int(
+        exact_checker(scenarios.get("3dc7").make_workspace(np.random.default_rng(2)), robot).are_valid(samples).sum()
+    )
+    assert f"{valid} samples valid (circles), {40 - valid} samples in collision (diamonds)" in alt
+    assert "the robot close up among the blocks near it: the robot, valid" in alt
+    assert base64.b64decode(found(r'base64,([A-Za-z0-9+/=]+)"', still))[:4] == b"\x89PNG"
+    script = document[document.index(still) + len(still) :]
+    assert 'getContext("webgl2") || canvas.getContext("webgl")' in script and ".hidden = false" in script
+
+
+def test_an_animations_still_shows_the_path_and_the_robot_at_its_start_middle_and_goal(planned):
+    document = page_of(planned.animation_iframe(300, frames=3, seconds=1.0))
+    alt = html.unescape(found(r'id="toolkit-no-webgl"[\s\S]*?alt="([^"]*)"', document))
+    assert "the path of the robot's base" in alt
+    assert re.search(r"close up among the blocks near it: start, valid; middle, valid; goal, valid\.$", alt)

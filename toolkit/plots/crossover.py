@@ -15,7 +15,7 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from toolkit.plots.alt import describe
-from toolkit.plots.palette import COLORS, halo
+from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
 from toolkit.util.verdicts import CHEAPER, CLOSE, cost_verdict
 
 STYLES = {  # checker -> (marker and line, colour, legend)
@@ -33,18 +33,25 @@ def crossover(results: dict) -> Figure:
     sweeps = results["variables"]
     columns = min(len(sweeps), 2)
     rows = -(-len(sweeps) // columns)
-    fig = Figure(figsize=(5.2 * columns, 3.9 * rows))
+    fig = Figure(figsize=(PAGE_WIDTH, 3.2 * rows + 1.8))  # as wide as the page: its text as large as it is drawn
     axes = fig.subplots(rows, columns, squeeze=False).ravel()
     for ax, sweep in zip(axes, sweeps.values()):
         _panel(ax, sweep)
     for ax in axes[len(sweeps) :]:
         ax.set_visible(False)
     quick = " (quick sizes)" if results.get("quick") else ""
-    fig.suptitle(
-        f"Where prediction pays: {results['scenario']}, preset {results['preset']}{quick}; "
+    shaded = any(_cheaper(sweep).any() for sweep in sweeps.values())
+    said = (
         f"shaded: the network cheaper by more than {CLOSE:.0%}"
+        if shaded
+        else f"nowhere cheaper by more than {CLOSE:.0%}"
     )
-    fig.tight_layout()
+    fig.suptitle(
+        f"Where prediction pays: {results['scenario']}, preset {results['preset']}{quick}\n{said}", fontsize=11
+    )
+    handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # one legend, below
+    fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=1, fontsize=9, frameon=False)
+    fig.tight_layout(rect=(0, (0.2 * len(handles) + 0.2) / fig.get_figheight(), 1, 1))  # a line an entry
     text = f"Cost per configuration of the exact and the learned check, {results['scenario']}, preset "
     text += f"{results['preset']}{quick}, microseconds on log axes. "
     return describe(fig, text + " ".join(_in_words(sweep) for sweep in sweeps.values()))
@@ -66,8 +73,7 @@ def _in_words(sweep: dict) -> str:
 def _panel(ax, sweep: dict) -> None:
     """One variable: the three curves, the values where the network is cheaper (its verdict) shaded, the crossings."""
     x = np.asarray(sweep["values"], dtype=float)
-    exact, learned = np.asarray(sweep["exact_us"], float), np.asarray(sweep["learned_us"], float)
-    cheaper = np.array([cost_verdict(float(r)) == CHEAPER for r in learned / exact])  # (V,) beyond the band
+    cheaper = _cheaper(sweep)  # (V,) beyond the band
     for name in ("exact", "fcl", "learned"):
         style, colour, label = STYLES[name]
         outline = halo(1.5) if name == "learned" else []  # orange alone is too light on white
@@ -91,7 +97,13 @@ def _panel(ax, sweep: dict) -> None:
     ax.minorticks_off()
     ax.set_xlabel(sweep["label"])
     ax.set_ylabel("µs per configuration")
-    ax.legend(fontsize=8)
+    ax.tick_params(labelsize=9)
+
+
+def _cheaper(sweep: dict) -> np.ndarray:
+    """``(V,)`` bool: where the verdict is "network cheaper" (beyond the band, against the default exact check)."""
+    ratio = np.asarray(sweep["learned_us"], float) / np.asarray(sweep["exact_us"], float)  # (V,)
+    return np.array([cost_verdict(float(r)) == CHEAPER for r in ratio])
 
 
 def _halfway(x: np.ndarray) -> np.ndarray:

@@ -123,6 +123,8 @@ SHOWN_TOGETHER: dict[str, tuple[str, ...]] = {
 }
 """The roles each figure shows side by side: every two of them must stay apart (``tests/test_palette.py``)."""
 
+PAGE_WIDTH = 7.0  # inches: the course site shows a figure at most ~750 px wide (100 dpi); a wider one shrinks,
+# its text with it, so a figure a chapter shows is at most this wide and its text stays at 8 pt or more as shown
 MIN_DISTANCE = 20.0  # CIEDE2000, between two roles shown together, under each simulated dichromacy
 PROBABILITY_CMAP = "cividis"  # P(valid): dark blue (0, in collision) to yellow (1, valid)
 GREYS_CMAP = "gray_r"  # an occupancy grid: free light, occupied dark

@@ -25,7 +25,7 @@ from toolkit.planning.prm import GOAL, START, PlanStep
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import describe
 from toolkit.plots.cspace import checker_workspace
-from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, halo
+from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH, halo
 from toolkit.plots.slices import slice_configs
 from toolkit.util.verdicts import per_query_ratios
 
@@ -88,14 +88,18 @@ def _draw_cspace(ax, exact: CollisionChecker) -> None:
 
 def samplers(exact: CollisionChecker, samples: dict[str, np.ndarray], attempts: int | None = None) -> Figure:
     """One panel per sampler: its samples ``(M, 2)`` over the C-obstacles (§III-B, "Sample Generation")."""
-    fig = Figure(figsize=(3.2 * len(samples), 3.6))
-    axes = fig.subplots(1, len(samples), squeeze=False)[0]
+    columns = min(len(samples), 2)  # two a row: as wide as the page, its text as large as it is drawn
+    rows = -(-len(samples) // columns)
+    fig = Figure(figsize=(PAGE_WIDTH, 3.5 * rows + 0.4))
+    axes = fig.subplots(rows, columns, squeeze=False).ravel()
     for ax, (name, Q) in zip(axes, samples.items()):
         _draw_cspace(ax, exact)
-        ax.scatter(Q[:, 0], Q[:, 1], s=6, color=NODE_COLOR)
+        ax.scatter(Q[:, 0], Q[:, 1], s=8, color=NODE_COLOR)
         count = f"{len(Q)} sample{'' if len(Q) == 1 else 's'}"
-        ax.set_title(f"{name}: {count}" + (f" of {attempts} attempts" if attempts else ""), fontsize=9)
-    fig.suptitle("Samples over the exact checker (grey: C-obstacles)", fontsize=10)
+        ax.set_title(f"{name}: {count}" + (f" of {attempts} attempts" if attempts else ""), fontsize=10)
+    for ax in axes[len(samples) :]:
+        ax.set_axis_off()
+    fig.suptitle("Samples over the exact checker (grey: C-obstacles)", fontsize=11)
     fig.tight_layout()
     counts = "; ".join(f"{name}: {len(Q)}" for name, Q in samples.items())
     of = f" of {attempts} attempts each" if attempts else ""
@@ -136,8 +140,16 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
     removed_edge[step.removed_edges] = True
     ax.add_collection(LineCollection(P[step.edges[~removed_edge]], colors=EDGE_COLOR, linewidths=0.5, zorder=2))
     confirmed = step.node_verified
-    ax.scatter(*P[confirmed].T, s=7, color=NODE_COLOR, zorder=3, label="node, confirmed")
-    ax.scatter(*P[~confirmed].T, s=9, facecolors="none", edgecolors=NODE_COLOR, linewidths=0.7, zorder=3, label="node")
+    ax.scatter(*P[confirmed].T, s=22, color=NODE_COLOR, zorder=3, label="node, confirmed (filled)")
+    ax.scatter(
+        *P[~confirmed].T,
+        s=22,
+        facecolors=COLORS["free"],
+        edgecolors=NODE_COLOR,
+        linewidths=1.0,
+        zorder=3,
+        label="node, not yet confirmed (hollow)",
+    )
     if len(step.path):
         color, style = PATH_STYLES[step.stage]
         outline = halo(2.2) if color != COLORS["path"] else []  # the candidate's light blue needs an outline
@@ -145,9 +157,11 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
             *P[step.path].T,
             color=color,
             linestyle=style,
-            linewidth=2.2,
+            linewidth=2.4,
             zorder=4,
-            label=f"path ({step.stage})",
+            label={"candidate": "candidate path (dashed)", "repair": "rejected candidate (dash-dot)"}.get(
+                step.stage, "path, checked exactly (solid)"
+            ),
             path_effects=outline,
         )
     removed = LineCollection(P[step.edges[removed_edge]], colors=REPAIR_COLOR, linewidths=3, zorder=5)
@@ -166,7 +180,7 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
         ax.scatter(
             *P[node], s=110, marker=marker, color=COLORS["endpoint"], edgecolors=COLORS["free"], zorder=6, label=name
         )
-    ax.set_title(f"round {step.round}, {step.stage}:\n{len(P)} nodes, {len(step.edges)} edges", fontsize=9)
+    ax.set_title(f"round {step.round}, {step.stage}:\n{len(P)} nodes, {len(step.edges)} edges", fontsize=10)
 
 
 def roadmap(exact: CollisionChecker, step: PlanStep, title: str = "") -> Figure:
@@ -191,16 +205,17 @@ def step_in_words(step: PlanStep) -> str:
     return text + f"; a repair removed {len(step.removed_nodes)} nodes and {len(step.removed_edges)} edges."
 
 
-def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int = 3) -> Figure:
-    """Several steps of Algorithm 1 side by side, the roadmap drawn at each (one panel per step)."""
+def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int = 2) -> Figure:
+    """Several steps of Algorithm 1 side by side, the roadmap drawn at each (one panel per step; ``columns`` a row,
+    as wide as the page together)."""
     rows = -(-len(steps) // columns)
-    fig = Figure(figsize=(3.8 * columns, 4.2 * rows + 0.8), layout="constrained")
+    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / columns * 1.1 * rows + 1.2), layout="constrained")
     axes = fig.subplots(rows, columns, squeeze=False).ravel()
     for ax, step in zip(axes, steps):
         _draw_roadmap(ax, exact, step)
     for ax in axes[len(steps) :]:
         ax.set_axis_off()
-    fig.suptitle("Algorithm 1 step by step\n(hollow: not yet confirmed exactly; X: removed by a repair)", fontsize=10)
+    fig.suptitle("Algorithm 1 step by step\n(hollow: not yet confirmed exactly; X: removed by a repair)", fontsize=11)
     _roadmap_legend(fig, axes)
     return describe(fig, "Algorithm 1 step by step. " + " ".join(step_in_words(step) for step in steps))
 
@@ -208,7 +223,7 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
 def _roadmap_legend(fig: Figure, axes) -> None:
     """One legend below the panels naming every kind of mark any of them drew (each name once)."""
     named = {label: handle for ax in axes for handle, label in zip(*ax.get_legend_handles_labels())}
-    style: dict[str, Any] = dict(ncol=min(len(named), 4), fontsize=8, frameon=False)
+    style: dict[str, Any] = dict(ncol=min(len(named), 2), fontsize=9, frameon=False, handlelength=3.5)
     style["loc"] = "outside lower center" if fig.get_layout_engine() is not None else "lower center"
     fig.legend(list(named.values()), list(named), **style)
 
@@ -297,8 +312,8 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
     means, our eager or lazy exact planner and medians), a series what was timed (e.g. "2DS, sampling"). Ratios
     against different baselines never share a bar group; the panels share one log axis, so heights compare.
     """
-    fig = Figure(figsize=(3.8 * len(baselines), 4.2))
-    axes = fig.subplots(1, len(baselines), squeeze=False, sharey=True)[0]
+    fig = Figure(figsize=(PAGE_WIDTH, 2.6 * len(baselines) + 0.6))  # one baseline a row, each with its own ticks
+    axes = fig.subplots(len(baselines), 1, squeeze=False, sharey=True)[:, 0]
     said = []
     for ax, (title, series) in zip(axes, baselines.items()):
         width = 0.8 / len(series)
@@ -318,12 +333,17 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
         ax.axhline(1.0, color=COLORS["ink"], linewidth=0.8)
         ax.set_xticks(np.arange(len(PAPER_SAMPLERS)), PAPER_SAMPLERS)
         ax.set_xlabel("sampler")
-        ax.set_title(textwrap.fill(title, 40), fontsize=9)
+        ax.set_ylabel("time with / without")
+        ax.set_title(textwrap.fill(title, 90), fontsize=10)
+    every = [float(r) for series in baselines.values() for by in series.values() for r in by.values()]
+    axes[0].set_yscale("log")
+    axes[0].set_ylim(min(*every, 1.0) / 1.3, max(*every, 1.0) * 1.3)  # every bar's top and the line at 1
     _log_ticks(axes[0])  # shared by every panel
-    axes[0].set_ylabel("time with / without")
+    for ax in axes:
+        ax.tick_params(labelsize=9, labelleft=True)  # each row its own numbers
     handles, names = axes[0].get_legend_handles_labels()
-    fig.legend(handles, names, loc="lower center", ncol=min(len(names), 3), fontsize=8, frameon=False)
-    fig.tight_layout(rect=(0, 0.1, 1, 1))
+    fig.legend(handles, names, loc="lower center", ncol=min(len(names), 4), fontsize=9, frameon=False)
+    fig.tight_layout(rect=(0, 0.4 / fig.get_figheight(), 1, 1))
     text = "Planning time with prediction divided by the time without, per sampler, log scale; below 1 prediction saves"
     return describe(fig, f"{text} time. {'; '.join(said)}.")
 

@@ -1,8 +1,10 @@
 """Figures of notebook 05: a planned path of a 3D robot, one frame at a time (paper §III-B, Algorithm 1).
 
 A PRM path is a list of configurations joined by straight lines in configuration
-space (the straight-line local planner of §III-B). :func:`path_frame` shows one
-configuration along it in the workspace, among the blocks near the robot, next to
+space (the straight-line local planner of §III-B). :func:`scene_still` draws a viewer's
+scene as a still picture (what a browser without WebGL shows in the 3D view's place): the whole workspace with
+its samples and the path, and the robot close up. :func:`path_frame` shows one
+configuration along a path in the workspace, among the blocks near the robot, next to
 what stays hidden in a 3D picture: every degree of freedom along the path, how much
 room the robot has (the exact checker's clearance bound) and what a learned model
 thinks of each configuration (P(valid), the MLP of §III-B).
@@ -18,16 +20,122 @@ from functools import partial
 import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.gridspec import SubplotSpec
+from matplotlib.patches import Patch
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import describe
-from toolkit.plots.palette import COLORS, halo, series_style
-from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR, draw_robot
+from toolkit.plots.boxes import aabb_corners, add_box_3d
+from toolkit.plots.cspace import frame_region
+from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo, series_style
+from toolkit.plots.robot_drawing import BLOCK_STYLE, INVALID_COLOR, VALID_COLOR, draw_robot, few_ticks, link_style
 
 TRACE_COLOR = COLORS["trace"]  # the path of the robot's base, as the viewer's path line
 UNCHECKED_COLOR = COLORS["unchecked"]  # the robot when no validity is given
 NOW_COLOR = COLORS["occupied"]
+SAMPLE_MARKS = {  # kind of sample -> marker, colour, size: the viewer's shapes (toolkit.viewer.drawing.SAMPLE_SHAPES)
+    "valid": ("o", VALID_COLOR, 9),
+    "in collision": ("D", INVALID_COLOR, 11),
+    "model wrong": ("*", COLORS["ink"], 36),
+}
+SAMPLE_WORDS = {"valid": "circles", "in collision": "diamonds", "model wrong": "stars"}  # SAMPLE_MARKS in words
+POSE_MARKERS = ("s", "P", "*", "^", "v", "X")  # the poses of a still, marked at their base in its overview
+
+
+def scene_still(
+    robot: BoxRobot,
+    workspace: Workspace,
+    poses: dict[str, np.ndarray],
+    *,
+    valid: dict[str, bool] | None = None,
+    samples: tuple[np.ndarray, dict[str, np.ndarray]] | None = None,
+    trace: np.ndarray | None = None,
+    margin: float = 1.0,
+) -> Figure:
+    """A viewer's 3D scene as a still picture: first the whole workspace, its blocks, the ``samples`` at their
+    base (``(points (N, 3), {kind: mask (N,)})``, kinds as :func:`toolkit.viewer.drawing.sample_kinds` names them:
+    circles valid, diamonds in collision, stars where a model is wrong), the ``trace (T, 3)`` of the robot's base
+    along a path and each pose marked at its base; then one close-up per pose ``{label: q (dof,)}``, the robot's
+    link boxes among the blocks within ``margin`` (the valid colour, or the invalid one hatched, by ``valid``)."""
+    if robot.dim != 3:
+        raise ValueError(f"a scene's still is drawn in 3D; the {robot.name} robot moves in {robot.dim}D")
+    valid = valid or {}
+    rows = -(-(1 + len(poses)) // 2)
+    fig = Figure(figsize=(PAGE_WIDTH, 3.7 * rows + 0.9))  # as wide as the page: its text as large as it is drawn
+    overview = fig.add_subplot(rows, 2, 1, projection="3d")
+    for lo, hi in workspace.boxes:
+        add_box_3d(overview, aabb_corners(lo, hi), linewidth=0.2, alpha=0.2, **BLOCK_STYLE)
+    _draw_points(overview, samples, trace)
+    for k, (label, q) in enumerate(poses.items()):
+        base = robot.link_boxes(np.asarray(q)[None])[0][0, 0]  # (3,) the first link's centre
+        overview.scatter(
+            *base,
+            marker=POSE_MARKERS[k % len(POSE_MARKERS)],
+            s=90,
+            color=COLORS["free"],
+            edgecolors=COLORS["ink"],
+            linewidths=1.2,
+            depthshade=False,
+            label=f"robot: {label}",
+        )
+    frame_region(overview, workspace)
+    overview.set_box_aspect(workspace.upper - workspace.lower)
+    few_ticks(overview)
+    overview.set_title(f"the whole workspace: {len(workspace.boxes)} blocks", fontsize=10)
+    said = []
+    for k, (label, q) in enumerate(poses.items()):
+        ax = fig.add_subplot(rows, 2, k + 2, projection="3d")
+        ok = valid.get(label)
+        color = UNCHECKED_COLOR if ok is None else VALID_COLOR if ok else INVALID_COLOR
+        draw_robot(ax, robot, np.asarray(q)[None], colors=[color], view="3d", workspace=workspace, margin=margin)
+        _draw_points(ax, samples, trace, clip=True)
+        few_ticks(ax)
+        state = "" if ok is None else ", valid" if ok else ", in collision"
+        ax.set_title(f"{label}, close up{state}", fontsize=10)
+        said.append(f"{label}{state}")
+    handles = {name: h for ax in fig.axes for h, name in zip(*ax.get_legend_handles_labels())}
+    shown = {ok for ok in valid.values() if ok is not None}  # the robot's states drawn: name those alone
+    handles |= {
+        text: Patch(label=text, **link_style(c))
+        for ok, text, c in ((True, "robot, valid", VALID_COLOR), (False, "robot, in collision", INVALID_COLOR))
+        if ok in shown
+    }
+    fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=3, fontsize=9, frameon=False)
+    fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1))
+    text = f"The {robot.name} robot in workspace {workspace.family} ({len(workspace.boxes)} blocks) as a still: "
+    text += "the whole workspace"
+    if samples is not None:
+        text += ", " + ", ".join(
+            f"{int(m.sum())} samples {kind} ({SAMPLE_WORDS[kind]})" for kind, m in samples[1].items() if m.any()
+        )
+    text += ", the path of the robot's base" if trace is not None else ""
+    return describe(fig, text + "; then the robot close up among the blocks near it: " + "; ".join(said) + ".")
+
+
+def _draw_points(ax, samples, trace, clip: bool = False) -> None:
+    """The samples ``(points (N, 3), {kind: mask})`` by kind and the base's ``trace (T, 3)`` on a 3D axes; with
+    ``clip``, only what lies inside the axes' window (mplot3d does not clip)."""
+    for kind, mask in ({} if samples is None else samples[1]).items():
+        points = samples[0][mask]
+        points = _inside(ax, points) if clip else points
+        if len(points):
+            marker, color, size = SAMPLE_MARKS[kind]
+            ax.scatter(*points.T, marker=marker, s=size, color=color, depthshade=False, label=f"sample, {kind}")
+    if trace is not None:
+        points = trace.copy()
+        if clip:
+            points[~_inside_mask(ax, points)] = np.nan
+        ax.plot(*points.T, color=TRACE_COLOR, linewidth=2.0, path_effects=halo(2.0), label="path of the base")
+
+
+def _inside_mask(ax, points: np.ndarray) -> np.ndarray:
+    """``(N,)`` bool: which ``points (N, 3)`` lie inside the 3D axes' window."""
+    lo, hi = np.array([ax.get_xlim(), ax.get_ylim(), ax.get_zlim()]).T  # (3,) each
+    return np.all((points >= lo) & (points <= hi), axis=1)
+
+
+def _inside(ax, points: np.ndarray) -> np.ndarray:
+    return points[_inside_mask(ax, points)]
 
 
 def path_frame(
@@ -62,12 +170,12 @@ def path_frame(
         name: _per_frame(values, frames, name)
         for name, values in (("valid", valid), ("clearance", clearance), ("probability", probability))
     }
-    fig = Figure(figsize=(11, 5.2))
-    grid = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.3, top=0.78, bottom=0.1, right=0.9)
+    fig = Figure(figsize=(PAGE_WIDTH, 5.6))  # as wide as the page: its text as large as it is drawn
+    grid = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.45, top=0.74, bottom=0.1, left=0.02, right=0.88)
     valid_now = None if series["valid"] is None else bool(series["valid"][index])
     _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, valid_now, workspace, margin)
     _draw_series(fig, grid[1], robot, Q, index, series, threshold)
-    fig.suptitle(_frame_title(index, frames, series, threshold), fontsize=10)
+    fig.suptitle(_frame_title(index, frames, series, threshold), fontsize=10, wrap=True)
     text = f"A path of the {robot.name} robot, {_frame_title(index, frames, series, threshold)}. Left, the robot"
     text += " in 3D among the blocks near it and its base's trace; right, against the fraction of the path travelled, "
     return describe(fig, text + _series_in_words(robot, Q, series, threshold) + ".")
@@ -106,7 +214,7 @@ def _draw_series(
         draw_panel(ax, along)
         ax.axvline(along[index], color=NOW_COLOR, linewidth=1.0, gid="now")
         ax.locator_params(axis="y", nbins=3)
-        ax.tick_params(labelsize=8)
+        ax.tick_params(labelsize=9)
         ax.label_outer()
     axes[-1].set_xlabel("fraction of the path")
 
@@ -117,8 +225,8 @@ def _draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, ax, along: np.ndarra
     scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
     every = max(1, len(Q) // 6)
     for k, name in enumerate(robot.dof_names):
-        style = series_style(k) | dict(markevery=(k % every, every), markersize=4)
-        ax.plot(along, scaled[:, k], linewidth=1.2, label=name, gid="dof", **style)
+        style = series_style(k) | dict(markevery=(k % every, every), markersize=6)
+        ax.plot(along, scaled[:, k], linewidth=1.4, label=name, gid="dof", **style)
     ends = _spread(scaled[-1], gap=0.15)  # (dof,) label heights that do not overlap
     for k, name in enumerate(robot.dof_names):
         ax.annotate(
@@ -135,12 +243,12 @@ def _draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, ax, along: np.ndarra
     ax.set_ylabel("DoF in bounds")
     fig.legend(
         *ax.get_legend_handles_labels(),
-        fontsize=8,
-        ncol=min(robot.dof, 7),
+        fontsize=9,
+        ncol=min(robot.dof, 4),
         loc="upper center",
-        bbox_to_anchor=(0.71, 0.9),  # between the title and the panels
+        bbox_to_anchor=(0.68, 0.9),  # between the title and the panels
         frameon=False,
-        handlelength=2.0,
+        handlelength=3.0,
         columnspacing=0.8,
     )
 
@@ -179,8 +287,7 @@ def _draw_probability(p: np.ndarray, threshold: float, ax, along: np.ndarray) ->
 def _draw_trace(ax, robot: BoxRobot, Q: np.ndarray) -> None:
     """The base's path (first link's centre, ``(T, 3)``), left out where it leaves the 3D axes' window."""
     trace = robot.link_boxes(Q)[0][:, 0].copy()  # (T, 3)
-    lo, hi = np.array([ax.get_xlim(), ax.get_ylim(), ax.get_zlim()]).T  # (3,) each
-    trace[~np.all((trace >= lo) & (trace <= hi), axis=1)] = np.nan  # mplot3d does not clip lines to the axes
+    trace[~_inside_mask(ax, trace)] = np.nan  # mplot3d does not clip lines to the axes
     ax.plot(*trace.T, color=TRACE_COLOR, linewidth=2.0, gid="trace", path_effects=halo(2.0))
 
 

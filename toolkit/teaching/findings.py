@@ -11,7 +11,7 @@ slow query that moves a mean is listed.
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 
 import numpy as np
 
@@ -154,15 +154,44 @@ def _ms(seconds: float) -> str:
     return f"{ms:,.0f}" if ms >= 100 else f"{ms:.3g}"
 
 
-def compare_scores(ours: Mapping[str, float], reference: Mapping[str, float], keys: Sequence[str] = SCORES) -> str:
-    """``"accuracy 77% against 71% (higher), TPR ..."``: classifier scores (fractions) next to a reference's, each
-    said higher, lower or equal at the printed precision."""
-    parts = []
-    for key in keys:
-        mine, theirs = round(100 * ours[key]), round(100 * reference[key])
-        word = "higher" if mine > theirs else "lower" if mine < theirs else "equal"
-        parts.append(f"{SCORE_NAMES[key]} {mine}% against {theirs}% ({word})")
-    return ", ".join(parts)
+def accuracy_against(
+    balanced: Mapping[str, float], paper: Mapping[str, float], uniform: Mapping[str, float], always_valid: float
+) -> str:
+    """Two comparisons in one sentence, each read at the printed precision (whole percent): a model's accuracy on
+    its ``balanced`` unseen test against the ``paper``'s (Table 2), and its accuracy on ``uniform`` samples against
+    answering "valid" to all of them (``always_valid``, the valid share)."""
+    return (
+        f"On its balanced unseen test the model is {_as_accurate(balanced['acc'], paper['acc'])} the paper's MLP "
+        f"(Table 2); on these uniform samples it is {_as_accurate(uniform['acc'], always_valid)} answering "
+        '"valid" to all of them.'
+    )
+
+
+def _as_accurate(mine: float, theirs: float) -> str:
+    a, b = round(100 * mine), round(100 * theirs)
+    return "more accurate than" if a > b else "less accurate than" if a < b else "as accurate as"
+
+
+def crossover_counts(results: Mapping, tie: float = CLOSE) -> str:
+    """One sentence: at how many of a ``toolkit.experiments.crossover`` run's points the network is the cheaper
+    check, the dearer one, or too close to tell, against the default exact checker and against python-fcl (the
+    verdicts of :func:`crossover_table`)."""
+    said: list[str] = []
+    for key, name in (("exact_us", "the default exact checker"), ("fcl_us", "python-fcl")):
+        verdicts = [
+            cost_verdict(learned / exact, tie)
+            for sweep in results["variables"].values()
+            for exact, learned in zip(sweep[key], sweep["learned_us"])
+            if exact is not None
+        ]
+        if verdicts:
+            close = verdicts.count(NEAR)
+            lead = f"Against {name} the network was the cheaper check" if not said else f"against {name}, the cheaper"
+            said.append(
+                f"{lead} at {verdicts.count(CHEAPER)} of {len(verdicts)} points and the dearer at "
+                f"{verdicts.count(DEARER)}" + (f" ({close} too close to tell)" if close else "")
+            )
+    return "; ".join(said) + "."
 
 
 def describe_accuracy(label: str, accuracy: float, always_valid: float) -> str:

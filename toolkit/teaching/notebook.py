@@ -25,7 +25,6 @@ instead of loading a model made by the old one.
 from __future__ import annotations
 
 import dataclasses
-import io
 import json
 import os
 import shutil
@@ -167,22 +166,3 @@ def _cached_folder(config: RunConfig) -> Path:
     recipe = presets.get(config.preset.name).fingerprint()  # the full recipe's: a quick model changes with it too
     name = f"{config.scenario.name}-{config.preset.name}-seed{config.seed}-{recipe}"
     return cache_dir() / f"{name}{'-quick' if config.quick else ''}"
-
-
-def still(fig, summary: str):
-    """``fig`` as a still picture under ``summary`` (HTML ``<details>``, open), its alt text from the figure: what a
-    browser without WebGL shows in place of a 3D view beside it (the view stays blank there, the still does not)."""
-    import base64
-    import html
-
-    from IPython.display import HTML
-
-    from toolkit.plots.alt import alt_text
-
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=80, bbox_inches="tight")
-    png = base64.b64encode(buffer.getvalue()).decode()
-    return HTML(
-        f"<details open><summary>{html.escape(summary)}</summary>"
-        f'<img src="data:image/png;base64,{png}" alt="{html.escape(alt_text(fig))}" style="max-width:100%"></details>'
-    )

@@ -12,6 +12,8 @@ builds it: each control takes the name of the label of its row (:data:`SCRIPT`).
 - :func:`label_controls` adds the script to a saved scene's page (snapshots and animations in notebook 05), and
   hides the notices there (a static page has nothing to notify); the scene's own text alternative is the
   summary beside it (:meth:`toolkit.viewer.Viewer.summary`);
+- :func:`no_webgl_still` puts a still picture of the scene into a saved scene's page, shown in the view's place
+  where the browser has no WebGL (the view would stay blank there);
 - :func:`named_live_page` makes viser's server serve its page with the same script (``toolkit view``): a copy of
   viser's ``client/build/index.html`` with the script in it, served in place of the original.
 
@@ -22,8 +24,11 @@ is announced. ``tests/test_viewer_accessibility.py`` runs axe-core on the live v
 
 from __future__ import annotations
 
+import base64
 import contextlib
 import functools
+import html
+import io
 import json
 import tempfile
 import threading
@@ -32,6 +37,7 @@ from pathlib import Path
 
 import viser
 import viser.infra
+from matplotlib.figure import Figure
 
 from toolkit.plots.palette import COLORS
 
@@ -114,6 +120,32 @@ def label_controls(document: str) -> str:
     before ``</body>``."""
     hidden = f"<style>{HIDDEN} {{ display: none !important; }}</style>\n"
     return _before_body_end(document, hidden + script(NAMES | RECORDING_NAMES))
+
+
+NO_WEBGL = """<div id="toolkit-no-webgl" hidden
+ style="position:fixed;inset:0;overflow:auto;background:#fff;z-index:2147483647">
+<p style="margin:4px 8px;font:14px sans-serif">This browser draws no 3D (no WebGL): the scene as a still picture.</p>
+<img src="data:image/png;base64,%(png)s" alt="%(alt)s" style="width:100%%;height:auto"></div>
+<script>(function () {
+  var canvas = document.createElement("canvas");
+  if (!(canvas.getContext("webgl2") || canvas.getContext("webgl"))) {
+    document.getElementById("toolkit-no-webgl").hidden = false;
+  }
+})();</script>
+"""
+
+
+def no_webgl_still(document: str, fig: Figure | None) -> str:
+    """``document`` (a saved scene's HTML) with ``fig``, a still picture of its scene, over the view where the
+    browser has no WebGL (the picture's alt text from the figure); ``document`` as it is without a figure."""
+    if fig is None:
+        return document
+    from toolkit.plots.alt import alt_text
+
+    buffer = io.BytesIO()
+    fig.savefig(buffer, format="png", dpi=100, bbox_inches="tight")
+    png = base64.b64encode(buffer.getvalue()).decode()
+    return _before_body_end(document, NO_WEBGL % {"png": png, "alt": html.escape(alt_text(fig), quote=True)})
 
 
 @functools.cache

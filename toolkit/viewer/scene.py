@@ -22,6 +22,7 @@ from typing import Protocol, runtime_checkable
 
 import numpy as np
 import viser
+from matplotlib.figure import Figure
 
 from toolkit import scenarios
 from toolkit.experiments import problems, query_sets
@@ -31,8 +32,9 @@ from toolkit.geometry.workspace import Workspace
 from toolkit.planning import prm
 from toolkit.planning.local_planner import path_at
 from toolkit.planning.sampling import make_sampler
+from toolkit.plots import scenes
 from toolkit.viewer import drawing as draw
-from toolkit.viewer.labels import label_controls
+from toolkit.viewer.labels import label_controls, no_webgl_still
 from toolkit.viewer.server import camera_at, page_path, srcdoc_iframe, start_server, stop_server
 
 Predictor = Callable[[Workspace], CollisionChecker]  # workspace -> checker with are_valid(Q), probability(Q)
@@ -93,6 +95,7 @@ class Viewer:
         self.path: np.ndarray | None = None  # (P, dof) the shown solution path
         self.sample_counts: dict[str, int] = {}  # shown samples by kind (drawing.SAMPLE_SHAPES)
         self.sample_clouds: dict[str, viser.PointCloudHandle] = {}  # and their point clouds
+        self.sample_points: tuple[np.ndarray, dict[str, np.ndarray]] | None = None  # (N, 3) and masks by kind
         self.stopped = False
         self.frames = {name: self.server.scene.add_frame(name, show_axes=False) for name in SLIDING}
         try:
@@ -144,7 +147,7 @@ class Viewer:
             self.model, self.model_error = self._load_model()
             for name in ("prediction", "disagreement", "samples", "roadmap", "path"):
                 self._remove(name)
-            self.path, self.sample_counts, self.sample_clouds = None, {}, {}
+            self.path, self.sample_counts, self.sample_clouds, self.sample_points = None, {}, {}, None
             for layer, handle in draw.draw_workspace(self.server.scene, self.workspace).items():
                 self._add(layer, handle)
             self.q = self.valid_configuration(rng, rest=True)
@@ -222,6 +225,7 @@ class Viewer:
             points, size = draw.config_points(self.robot, Q, at), draw.POINT_SIZE[self.workspace.family]  # (N, 3)
             self.sample_clouds = draw.add_samples(self.server.scene, points, kinds, size)
             self.sample_counts = {kind: int(mask.sum()) for kind, mask in kinds.items()}
+            self.sample_points = (points, kinds)
             return draw.validity_colors(valid)
 
     def sample(self, sampler: str = RAW, n: int = 200, *, seed: int = 0, at: str = "base") -> np.ndarray:
@@ -312,7 +316,8 @@ class Viewer:
 
     def iframe(self, height: int = 480) -> str:
         """The scene as a static snapshot ``<iframe>`` for ``IPython.display.HTML``, followed by :meth:`summary`."""
-        return srcdoc_iframe(self.html(), height, summary=self.summary())
+        still = self.still() if self.robot.dim == 3 else None
+        return srcdoc_iframe(no_webgl_still(self.html(), still), height, summary=self.summary())
 
     def animation_html(self, *, frames: int = 60, seconds: float = 6.0) -> str:
         """The robot moving along the shown path, as one self-contained HTML document (no server needed).
@@ -343,7 +348,24 @@ class Viewer:
         """:meth:`animation_html` as an ``<iframe>`` for ``IPython.display.HTML``, with its frames in words."""
         Q = self.path_configurations(np.linspace(0.0, 1.0, int(frames)))  # (F, dof): the frames' configurations
         told = draw.animation_summary(self.workspace, self.robot, Q, self.exact, self.model, self.path)
-        return srcdoc_iframe(self.animation_html(frames=frames, seconds=seconds), height, summary=told)
+        ends = dict(zip(("start", "middle", "goal"), self.path_configurations(np.linspace(0.0, 1.0, 3))))
+        still = self.still(ends) if self.robot.dim == 3 else None
+        return srcdoc_iframe(
+            no_webgl_still(self.animation_html(frames=frames, seconds=seconds), still), height, summary=told
+        )
+
+    def still(self, poses: dict[str, np.ndarray] | None = None) -> Figure:
+        """The scene as a still picture (:func:`toolkit.plots.scenes.scene_still`): the whole workspace with the
+        shown samples and path, the robot marked, then the robot close up at ``poses`` ``{label: q}`` (default: where
+        it stands now). A 3D scene's page shows it in place of the view where the browser has no WebGL."""
+        poses = {"the robot": self.q} if poses is None else poses
+        valid = dict(zip(poses, (bool(v) for v in self.exact.are_valid(np.stack(list(poses.values()))))))
+        trace = None
+        if self.path is not None:
+            dense = self.path_configurations(np.linspace(0.0, 1.0, 20 * len(self.path)))
+            trace = draw.config_points(self.robot, dense, "base")  # (T, 3)
+        samples = self.sample_points if self.visible["samples"] else None
+        return scenes.scene_still(self.robot, self.workspace, poses, valid=valid, samples=samples, trace=trace)
 
     def stop(self) -> None:
         """Tell the listeners, then stop the server; the port is free afterwards. Stopping twice is harmless."""
