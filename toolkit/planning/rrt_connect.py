@@ -187,7 +187,8 @@ def move(
     points = robot.wrap(tree.nodes[near] + (steps / n)[:, None] * step)  # (n, dof) in the order checked
     blocked = first_invalid(exact, points[:c], steps[:c], n + 1)  # the first invalid step (n + 1: none)
     if connect or blocked > n:  # an extension that failed adds nothing: it needs no fine points
-        fine = c + np.flatnonzero(steps[c:] < blocked)  # only points before the first invalid one matter
+        useful = blocked if blocked > n else (blocked - 1) // per * per  # the end of the last edge that may be kept
+        fine = c + np.flatnonzero(steps[c:] < useful)  # only points before it matter
         blocked = first_invalid(exact, points[fine], steps[fine], blocked)
     last = near
     for k in range(per, min(blocked, n), per):  # a connection's edges, each valid up to its end
