@@ -130,7 +130,7 @@ def throughput(
     seed: int = 0,
     repeats: int = 5,
     device: str | None = None,
-) -> dict[str, float | str]:
+) -> dict[str, float | str | dict[str, float]]:
     """Configurations per second of the default exact checker (``exact_cfg_per_s``: ``exact_checker``, compiled
     for box worlds), of the python-fcl reference (``fcl_cfg_per_s``) and of the learned checker of ``models``
     (``learned_cfg_per_s``; trained, or :func:`untrained_models`: the speed does not depend on the weights), the
@@ -155,7 +155,7 @@ def throughput(
         on_gpu = torch.device(device).type != "cpu"
         calls.update(device_calls(scenario, models, batch or (1 << 20 if on_gpu else 10_000), device, seed))
     rates = in_turns(calls, repeats)
-    result: dict[str, float | str] = {
+    result: dict[str, float | str | dict[str, float]] = {
         "exact_cfg_per_s": rates["exact"],
         "fcl_cfg_per_s": rates["fcl"],
         "learned_cfg_per_s": rates["learned"],
