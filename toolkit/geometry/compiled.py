@@ -68,8 +68,9 @@ class Far(NamedTuple):
 
 
 class World(NamedTuple):
-    """A box workspace as arrays, with per grid cell the boxes that touch it (cell ``c``'s boxes are
-    ``cell_boxes[cell_first[c]:cell_first[c] + cell_count[c]]``; the cells of ``BoxWorldChecker``)."""
+    """A box workspace as arrays, with per grid cell the boxes that touch it, grown by some distance
+    (:func:`world_arrays`; cell ``c``'s boxes are ``cell_boxes[cell_first[c]:cell_first[c] + cell_count[c]]``; the
+    cells of ``BoxWorldChecker``)."""
 
     lower: np.ndarray  # (D,) the region
     upper: np.ndarray  # (D,)
@@ -85,9 +86,9 @@ class World(NamedTuple):
 class CompiledChecker(BoxWorldChecker):
     """Exact checker compiled with numba: kinematics and separating axes in one loop over configurations.
 
-    Each link is tested against only the obstacle boxes listed in the grid cells that its
-    axis-aligned bounds cover, so the cost grows with the links and the obstacles near them,
-    not with the workspace.
+    Each link is tested against only the obstacle boxes listed in the grid cell that holds its
+    centre (boxes within the largest link ball's radius of the cell), so the cost grows with the
+    links and the obstacles near them, not with the workspace.
     """
 
     def __init__(self, workspace: Workspace, robot: BoxRobot):

@@ -13,8 +13,9 @@ numba to machine code) takes a block of 64 configurations through every step:
    (:class:`toolkit.geometry.compiled.Far`): whether a ball round the link, centred anywhere in that cell, lies in
    the region and misses every obstacle. Most links are done here (the idea of the mesh checker,
    :mod:`toolkit.geometry.mesh_kernels`);
-4. else its axis-aligned bounds must lie inside the region, and the obstacle boxes listed in the grid cells
-   they cover (:class:`toolkit.geometry.box_world.BoxWorldChecker`'s cell lists) are tested: a ball round the
+4. else its axis-aligned bounds must lie inside the region, and the obstacle boxes listed in the grid cell
+   that holds its centre (:class:`toolkit.geometry.box_world.BoxWorldChecker`'s cell lists, the boxes grown by
+   the largest link ball's radius: all a link centred there can touch) are tested: a ball round the
    link that misses the box, or one inside the link that meets it, settles most pairs; the rest go to the
    separating-axis theorem (Gottschalk et al., OBBTree, 1996): two boxes are disjoint iff
    their projections on some axis are disjoint; it suffices to try the world's axes, the
