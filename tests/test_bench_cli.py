@@ -22,7 +22,14 @@ from toolkit.planning import sampling
 from toolkit.planning.options import LazyParams, PaperParams
 from toolkit.planning.planner import REFINEMENT
 
-THROUGHPUT_KEYS = {"exact_cfg_per_s", "fcl_cfg_per_s", "learned_cfg_per_s", "ratio", "exact_over_fcl"}
+THROUGHPUT_KEYS = {
+    "exact_cfg_per_s",
+    "fcl_cfg_per_s",
+    "learned_cfg_per_s",
+    "ratio",
+    "exact_over_fcl",
+    "exact_small_call_cost",
+}
 
 
 def test_bench_prints_one_json_object(capsys):
@@ -48,8 +55,10 @@ def test_throughput_times_the_compiled_checker_beside_fcl_in_3d():
     scenario = scenarios.get("3dc7")
     result = bench.throughput(scenario, bench.untrained_models(scenario, presets.get("paper")), batch=300, repeats=1)
     assert set(result) == THROUGHPUT_KEYS
-    assert all(result[key] > 0 for key in THROUGHPUT_KEYS)
+    assert all(result[key] > 0 for key in THROUGHPUT_KEYS - {"exact_small_call_cost"})
     assert result["exact_over_fcl"] == pytest.approx(result["exact_cfg_per_s"] / result["fcl_cfg_per_s"])
+    assert set(result["exact_small_call_cost"]) == {"16", "32", "64"}
+    assert all(cost > 0 for cost in result["exact_small_call_cost"].values())
 
 
 def test_with_and_without_prediction_plan_with_one_planner_whatever_the_models_recipe(monkeypatch):

@@ -5,7 +5,8 @@ than the exact checker does (§III-B, "Sample's Validity"), and when those answe
 save planning time. So three measurements, one function each:
 
 - :func:`throughput` — configurations per second of the default exact checker (compiled for box
-  worlds), of the python-fcl reference and of the learned checker;
+  worlds), of the python-fcl reference and of the learned checker, and what a configuration costs the
+  exact checker in the small calls a planner makes;
 - :func:`edge_checks` — the exact local planner's edge checks, every point against
   clearance certificates (``local_planner.check_edges`` / ``certify_edges``);
 - :func:`planning_ratios` — PRM with and without prediction, per sampler, on the paper's
@@ -64,6 +65,8 @@ __all__ = [
     "untrained_models",
     "usable_device",
 ]
+
+SMALL_CALLS = (16, 32, 64)  # configurations a call, as a planner makes them (throughput's exact_small_call_cost)
 
 
 def median_seconds(fn, repeats: int = 5) -> float:
@@ -126,12 +129,14 @@ def throughput(
     seed: int = 0,
     repeats: int = 5,
     device: str | None = None,
-) -> dict[str, float | str]:
+) -> dict[str, float | str | dict[str, float]]:
     """Configurations per second of the default exact checker (``exact_cfg_per_s``: ``exact_checker``, compiled
     for box worlds), of the python-fcl reference (``fcl_cfg_per_s``) and of the learned checker of ``models``
     (``learned_cfg_per_s``; trained, or :func:`untrained_models`: the speed does not depend on the weights), the
     three timed in turns (:func:`in_turns`) at ``batch`` configurations a call (default: 20,000 exact, 10,000
     learned); ``ratio`` is learned / default exact, ``exact_over_fcl`` the compiled checker's speed-up.
+    ``exact_small_call_cost``: per size in ``SMALL_CALLS``, what a configuration costs the default exact checker in
+    calls of that many (the same batch cut in pieces, timed in the same turns) over what it costs in the batch.
 
     With ``device`` (``"cpu"``, ``"cuda"``): the learned checker runs there, and beside it the exact one in torch
     (:class:`~toolkit.geometry.torch_kernels.TorchChecker`), each timed twice: a numpy batch in and out
@@ -141,6 +146,7 @@ def throughput(
     calls = {
         "exact": exact_call(scenario, batch or 20_000, seed),
         "fcl": exact_call(scenario, batch or 20_000, seed, make=FCLChecker),
+        **{f"exact_{size}": exact_call(scenario, batch or 20_000, seed, calls_of=size) for size in SMALL_CALLS},
     }
     if device is None:
         calls["learned"] = learned_call(scenario, models, batch or 10_000, seed)
@@ -148,12 +154,13 @@ def throughput(
         on_gpu = torch.device(device).type != "cpu"
         calls.update(device_calls(scenario, models, batch or (1 << 20 if on_gpu else 10_000), device, seed))
     rates = in_turns(calls, repeats)
-    result: dict[str, float | str] = {
+    result: dict[str, float | str | dict[str, float]] = {
         "exact_cfg_per_s": rates["exact"],
         "fcl_cfg_per_s": rates["fcl"],
         "learned_cfg_per_s": rates["learned"],
         "ratio": rates["learned"] / rates["exact"],
         "exact_over_fcl": rates["exact"] / rates["fcl"],
+        "exact_small_call_cost": {str(size): rates["exact"] / rates[f"exact_{size}"] for size in SMALL_CALLS},
     }
     if device is not None:
         result.update(
@@ -240,13 +247,18 @@ def exact_call(
     seed: int = 0,
     make: Callable[[Workspace, BoxRobot], CollisionChecker] = exact_checker,
     workspace: Workspace | None = None,
+    calls_of: int | None = None,
 ) -> tuple[Callable[[], object], int]:
     """An exact checker (``make(workspace, robot)``, default the fastest) asked about ``batch`` uniform samples in
-    ``workspace`` (default: a query workspace), and ``batch``."""
+    ``workspace`` (default: a query workspace), in one call or (``calls_of``) in calls of that many; and the number
+    asked about."""
     ws = scenario.workspaces("query", 1, seed)[0] if workspace is None else workspace
     checker = make(ws, scenario.robot)
-    Q = scenario.robot.sample(np.random.default_rng(seed), batch)
-    return (lambda: checker.are_valid(Q)), batch
+    Q = scenario.robot.sample(np.random.default_rng(seed), batch)  # (batch, dof)
+    if calls_of is None:
+        return (lambda: checker.are_valid(Q)), batch
+    pieces = [Q[i : i + calls_of] for i in range(0, max(batch - calls_of, 0) + 1, calls_of)]  # (calls_of, dof) each
+    return (lambda: [checker.are_valid(piece) for piece in pieces]), sum(map(len, pieces))
 
 
 def learned_call(

@@ -16,7 +16,7 @@ it; importing this module compiles nothing.
 
 from __future__ import annotations
 
-from typing import NamedTuple
+from typing import Any, NamedTuple
 
 import numpy as np
 
@@ -26,6 +26,20 @@ from toolkit.geometry.workspace import Workspace
 
 FAR_CELL = 1.5  # the far bits' cells: this many times the smallest link ball's radius wide
 FAR_CELLS = 128  # or a 128th of the region's longest axis, if wider
+
+
+ENTRY_POINTS: dict[tuple, Any] = {}  # compiled versions of the kernels, by name and arguments' layout (entry_point)
+
+
+def layout(value) -> object:
+    """What numba's type of an argument depends on: an array's dtype, dimensions, order and writability; a named
+    tuple's class and its fields' layouts; else the Python type. Arguments laid out alike share a compiled version."""
+    if isinstance(value, np.ndarray):
+        flags = value.flags
+        return value.dtype.str, value.ndim, flags.c_contiguous, flags.f_contiguous, flags.writeable, flags.aligned
+    if isinstance(value, tuple):
+        return type(value), *map(layout, value)
+    return type(value)
 
 
 class Robot(NamedTuple):
@@ -53,8 +67,9 @@ class Far(NamedTuple):
 
 
 class World(NamedTuple):
-    """A box workspace as arrays, with per grid cell the boxes that touch it (cell ``c``'s boxes are
-    ``cell_boxes[cell_first[c]:cell_first[c] + cell_count[c]]``; the cells of a ``BoxGrid``)."""
+    """A box workspace as arrays, with per grid cell the boxes that touch it, grown by some distance
+    (:func:`world_arrays`; cell ``c``'s boxes are ``cell_boxes[cell_first[c]:cell_first[c] + cell_count[c]]``; the
+    cells of a ``BoxGrid``)."""
 
     lower: np.ndarray  # (D,) the region
     upper: np.ndarray  # (D,)
@@ -70,38 +85,36 @@ class World(NamedTuple):
 class CompiledChecker(BoxWorldChecker):
     """Exact checker compiled with numba: kinematics and separating axes in one loop over configurations.
 
-    Each link is tested against only the obstacle boxes listed in the grid cells that its
-    axis-aligned bounds cover, so the cost grows with the links and the obstacles near them,
-    not with the workspace.
+    Each link is tested against only the obstacle boxes listed in the grid cell that holds its
+    centre (boxes within the largest link ball's radius of the cell), so the cost grows with the
+    links and the obstacles near them, not with the workspace.
     """
 
     def __init__(self, workspace: Workspace, robot: BoxRobot):
         refuse_mesh(workspace)
         super().__init__(workspace, robot)
         self._robot = robot_arrays(robot)
-        self._world = world_arrays(self.grid, grow=0.0)._replace(far=far_grid(workspace, robot))
-        self._validity = None  # the compiled kernel.validity for these arrays, once known
+        # validity lists per cell the boxes within a link ball's radius of it: the only ones a link centred there meets
+        reach = float(np.max(np.linalg.norm(robot.half_extents, axis=1))) * (1 + 1e-9)
+        self._world = world_arrays(self.grid, grow=reach)._replace(far=far_grid(workspace, robot))
+        self._validity = self._clearance = None  # the compiled kernels for these arrays, once known (entry_point)
         self._grown: dict[float, World] = {}  # clearances: the world with boxes grown by cap, by cap
 
     def validity(self, Q: np.ndarray) -> np.ndarray:
-        from numba import typeof
-
+        Q, valid = np.ascontiguousarray(Q, dtype=np.float64), np.empty(len(Q), dtype=bool)
+        if self._validity is not None and Q.flags.writeable:  # the compiled version itself: no dispatch, no import
+            self._validity(Q, self._robot, self._world, valid)
+            return valid
         from toolkit.geometry import kernels  # numba loads (or compiles) on first use, not on import
 
-        Q, valid = np.ascontiguousarray(Q, dtype=np.float64), np.empty(len(Q), dtype=bool)
-        if self._validity is None or not Q.flags.writeable:
-            kernels.validity(Q, self._robot, self._world, valid)
-            if Q.flags.writeable:  # numba's dispatcher picks the compiled version by the arguments' types, every
-                # call (3 us, as long as 30 configurations take): its types are these ones from now on
-                self._validity = kernels.validity.overloads[
-                    tuple(typeof(a) for a in (Q, self._robot, self._world, valid))
-                ].entry_point  # type: ignore[attr-defined]
-        else:
-            self._validity(Q, self._robot, self._world, valid)
+        kernels.validity(Q, self._robot, self._world, valid)
+        if Q.flags.writeable:
+            self._validity = entry_point(kernels.validity, (Q, self._robot, self._world, valid))
         return valid
 
     def __getstate__(self) -> dict:
-        return self.__dict__ | {"_validity": None}  # a compiled function does not pickle; the copy looks it up again
+        # a compiled function does not pickle; the copy looks it up again
+        return self.__dict__ | {"_validity": None, "_clearance": None}
 
     def clearance_bounds(self, Q: np.ndarray, cap: float) -> np.ndarray:
         """The bound of :meth:`BoxWorldChecker.clearance_bounds`, compiled."""
@@ -109,16 +122,29 @@ class CompiledChecker(BoxWorldChecker):
 
         if cap not in self._grown:
             self._grown[cap] = world_arrays(self.grid, grow=cap)
-        clearance = np.empty(len(Q))
-        kernels.clearance_bounds(
-            np.ascontiguousarray(Q, dtype=np.float64),
-            self._robot,
-            self._grown[cap],
-            int(self.robot.level_links),
-            float(cap),
-            clearance,
-        )
+        Q, clearance = np.ascontiguousarray(Q, dtype=np.float64), np.empty(len(Q))
+        args = (Q, self._robot, self._grown[cap], int(self.robot.level_links), float(cap), clearance)
+        if self._clearance is not None and Q.flags.writeable:
+            self._clearance(*args)
+        else:
+            kernels.clearance_bounds(*args)
+            if Q.flags.writeable:
+                self._clearance = entry_point(kernels.clearance_bounds, args)
         return clearance
+
+
+def entry_point(kernel, args: tuple):
+    """The compiled version of ``kernel`` (a numba function, already called with ``args``) for ``args``' types.
+
+    numba's dispatcher picks it by the arguments' types at every call (3 us, as long as 30 configurations take;
+    more for named tuples); a checker calls it directly instead. Asking numba's ``typeof`` costs about 100 us, so
+    the versions are kept by the arguments' :func:`layout`, which decides their types: one lookup a process."""
+    key = (kernel.__name__, layout(args))
+    if key not in ENTRY_POINTS:
+        from numba import typeof
+
+        ENTRY_POINTS[key] = kernel.overloads[tuple(typeof(a) for a in args)].entry_point
+    return ENTRY_POINTS[key]
 
 
 def world_arrays(grid: BoxGrid, grow: float) -> World:

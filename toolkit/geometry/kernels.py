@@ -13,8 +13,9 @@ numba to machine code) takes a block of 64 configurations through every step:
    (:class:`toolkit.geometry.compiled.Far`): whether a ball round the link, centred anywhere in that cell, lies in
    the region and misses every obstacle. Most links are done here (the idea of the mesh checker,
    :mod:`toolkit.geometry.mesh_kernels`);
-4. else its axis-aligned bounds must lie inside the region, and the obstacle boxes listed in the grid cells
-   they cover (:class:`toolkit.geometry.box_world.BoxGrid`'s cell lists) are tested: a ball round the
+4. else its axis-aligned bounds must lie inside the region, and the obstacle boxes listed in the grid cell
+   that holds its centre (:class:`toolkit.geometry.box_world.BoxGrid`'s cell lists, the boxes grown by
+   the largest link ball's radius: all a link centred there can touch) are tested: a ball round the
    link that misses the box, or one inside the link that meets it, settles most pairs; the rest go to the
    separating-axis theorem (Gottschalk et al., OBBTree, 1996): two boxes are disjoint iff
    their projections on some axis are disjoint; it suffices to try the world's axes, the
@@ -135,12 +136,30 @@ def in_bounds(q, lower, upper):
 
 
 @njit(cache=True, inline="always")
+def row_in_bounds(Q, n, lower, upper):
+    """:func:`in_bounds` of configuration ``Q[n]``, read in place."""
+    for i in range(Q.shape[1]):  # noqa: SIM110 (numba compiles loops, not generators)
+        if not lower[i] <= Q[n, i] <= upper[i]:
+            return False
+    return True
+
+
+@njit(cache=True, inline="always")
 def flat_cell(point, grid):
     """The index of the cell of ``grid`` (``lower (3,)``, ``cell``, ``shape (3,)``) that holds ``point (3,)``,
     clipped to the grid."""
     flat = 0
     for i in range(3):
         flat = flat * grid.shape[i] + _axis_cell(point[i], grid, i)
+    return flat
+
+
+@njit(cache=True, inline="always")
+def world_cell(point, world):
+    """The index of the cell of ``world``'s lists (a 2D world's: one cell deep) that holds ``point (3,)``, clipped."""
+    flat = 0
+    for i in range(3):
+        flat = flat * world.shape[i] + (_axis_cell(point[i], world, i) if i < len(world.lower) else 0)
     return flat
 
 
@@ -161,6 +180,12 @@ def far(center, bits, grid):
 @njit(cache=True, inline="always")
 def _bit(bits, flat):
     return (bits[flat >> 6] >> (flat & 63)) & 1
+
+
+@njit(cache=True, inline="always")
+def _row_bit(bits, row, flat):
+    """:func:`_bit` of row ``row`` of ``bits (B, W)``, read in place."""
+    return (bits[row, flat >> 6] >> (flat & 63)) & 1
 
 
 @njit(cache=True, inline="always")
@@ -200,7 +225,8 @@ def validity(Q, robot, world, valid):
     centers, rotations = np.zeros((n_links, 3, BLOCK)), np.zeros((n_links, 3, 3, BLOCK))
     cell = np.zeros((n_links, BLOCK), np.int64)  # the far grid's cell of each link's centre
     low, high, cells = np.zeros(3), np.zeros(3), np.zeros((2, 3), np.int64)
-    seen, found = np.full(len(world.boxes), -1), np.zeros(len(world.boxes), np.int64)  # per box: the last link
+    # one link's box and one obstacle, copied out: in this loop a view (centers[link, :, b]) costs more than the tests
+    center, R, link_half, box = np.zeros(3), np.zeros((3, 3)), np.zeros(3), np.zeros((2, len(world.lower)))
     for first in range(0, len(Q), BLOCK):
         block = min(BLOCK, len(Q) - first)
         block_frames(Q, first, block, robot, angles, sines, cosines, position, rotation, centers, rotations)
@@ -211,20 +237,25 @@ def validity(Q, robot, world, valid):
                 flat[n] = row * grid.shape[2] + _axis_cell(z[n], grid, 2)
         for b in range(block):
             n = first + b
-            valid[n] = False
-            if not in_bounds(Q[n], robot.lower, robot.upper):
-                continue
-            valid[n] = True
-            for link in range(n_links):
-                if _bit(grid.bits[grid.link_ball[link]], cell[link, b]):
+            valid[n] = row_in_bounds(Q, n, robot.lower, robot.upper)
+            for link in range(n_links if valid[n] else 0):
+                if _row_bit(grid.bits, grid.link_ball[link], cell[link, b]):
                     continue  # its ball, wherever in its cell, lies in the region and touches no obstacle
                 # else its bounds must lie in the region, and its box touch none of the obstacles listed in the
-                # cells they cover (written out here: as a function of its own, numba compiles it slower)
-                center, R = centers[link, :, b], rotations[link, :, :, b]
-                touches = not one_link_bounds(center, R, half[link], world, low, high, cells)
-                for m in range(0 if touches else listed_boxes(cells, world, seen, n * n_links + link, found)):
-                    box = world.boxes[found[m]]
-                    if _link_touches(center, R, half[link], low, high, box, len(world.lower), outer[link], inner[link]):
+                # cell that holds its centre (boxes grown by any link's ball: written out here, as a function of
+                # its own numba compiles it slower)
+                for i in range(3):
+                    center[i], link_half[i] = centers[link, i, b], half[link, i]
+                    for j in range(3):
+                        R[i, j] = rotations[link, i, j, b]
+                touches = not one_link_bounds(center, R, link_half, world, low, high, cells)
+                at = world_cell(center, world)
+                listed = world.cell_first[at] + world.cell_count[at]
+                for m in range(listed if touches else world.cell_first[at], listed):
+                    k = world.cell_boxes[m]
+                    for i in range(len(world.lower)):
+                        box[0, i], box[1, i] = world.boxes[k, 0, i], world.boxes[k, 1, i]
+                    if _link_touches(center, R, link_half, low, high, box, len(world.lower), outer[link], inner[link]):
                         touches = True
                         break
                 if touches:

@@ -154,9 +154,7 @@ class BoxRobot:
     def wrap(self, Q: np.ndarray) -> np.ndarray:
         """``Q (..., dof)``, a float array, with its angles mapped to [-pi, pi) in place; returns it."""
         angles = Q[..., self._angles]  # a view
-        angles += np.pi
-        np.mod(angles, 2 * np.pi, out=angles)
-        angles -= np.pi
+        angles[...] = np.mod(angles + np.pi, 2 * np.pi) - np.pi  # on a contiguous copy: twice as fast as in the view
         return Q
 
     def distance(self, Q0, Q1) -> np.ndarray:

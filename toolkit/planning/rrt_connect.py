@@ -3,15 +3,17 @@ random configurations and towards each other; a fast exact planner for a single 
 
 Each iteration draws a configuration uniformly, **extends** one tree towards it by at most ``range`` (of
 ``robot.motion_bound``: no robot point moves farther), and then **connects** the other tree to the new node: it
-extends towards it again and again until it reaches it (the trees meet: a path) or is stopped by an obstacle. Then
-the trees swap roles.
+extends towards it again and again, a node every ``range``, until it reaches it (the trees meet: a path) or is
+stopped by an obstacle. Then the trees swap roles.
 
-An extension is an edge of the tree, checked exactly at the local planner's grid (``local_planner.step_counts``
-steps of ``resolution``, the end included) *coarse to fine*: first every ``coarse``-th point and the end in one
-checker call, then the rest in a second, so that an extension into an obstacle usually stops after the first,
-small call. An extension that meets an obstacle adds nothing (the tree is *trapped*). OMPL's RRTConnect (Şucan,
-Moll, Kavraki 2012) asks its checker one configuration a call; here a call holds a few tens, since a call's fixed
-cost outweighs many configurations' (``docs/benchmarks.md``, "How do our planners compare with OMPL's?").
+A move, an extension or a whole connection, is a straight segment from the tree's node nearest its target, checked
+exactly at the local planner's grid (``local_planner.step_counts`` steps of ``resolution``, the end included)
+*coarse to fine* in two checker calls: first every ``coarse``-th point and the nodes, then the rest before the first
+point that failed, so that a move into an obstacle usually stops after the first, small call. The nodes before the
+first invalid point join the tree (an extension that meets an obstacle adds nothing: the tree is *trapped*). OMPL's
+RRTConnect (Şucan, Moll, Kavraki 2012) asks its checker one configuration a call and a connection one extension at a
+time; here a call holds tens of configurations, since a call's fixed cost outweighs many configurations'
+(``docs/benchmarks.md``, "How do our planners compare with OMPL's?").
 
 Every edge of a path was checked at ``resolution`` as it grew; the path is then verified exactly at the problem's
 ``fine_resolution`` (10x finer) with clearance certificates (``local_planner.certify_edges``: the answer of
@@ -62,7 +64,7 @@ class Tree:
         self.nodes = np.zeros((capacity, len(root)))
         self.parent = np.full(capacity, -1)
         self.cut = np.zeros(capacity, dtype=bool)
-        self.nodes[0], self.n = root, 1
+        self.nodes[0], self.n, self.n_cut = root, 1, 0
 
     def add(self, q: np.ndarray, parent: int) -> int:
         if self.n == len(self.nodes):  # full: twice the room
@@ -72,6 +74,16 @@ class Tree:
         self.nodes[self.n], self.parent[self.n] = q, parent
         self.n += 1
         return self.n - 1
+
+    def nearest(self, robot, target: np.ndarray) -> tuple[int, np.ndarray, float]:
+        """The uncut node nearest ``target`` by ``robot.motion_bound``: its index, the step from it to ``target``
+        ``(dof,)`` (angles the short way round) and that step's motion bound."""
+        steps = robot.wrap(target - self.nodes[: self.n])  # (n, dof) from each node to target
+        distance = np.abs(steps) @ robot.motion_weights  # (n,)
+        if self.n_cut:
+            distance[self.cut[: self.n]] = np.inf
+        near = int(distance.argmin())
+        return near, steps[near], float(distance[near])
 
     def branch(self, i: int) -> list[int]:
         """Node indices from ``i`` up to the root."""
@@ -86,6 +98,7 @@ class Tree:
         while True:  # a child of a cut node is cut: spread down the tree until nothing changes
             spread = self.cut[: self.n] | (self.parent[: self.n] >= 0) & self.cut[np.maximum(self.parent[: self.n], 0)]
             if (spread == self.cut[: self.n]).all():
+                self.n_cut = int(self.cut[: self.n].sum())
                 return
             self.cut[: self.n] = spread
 
@@ -103,24 +116,18 @@ def rrt_connect(problem: Problem, rng: np.random.Generator, params: RRTConnectPa
         if not ok:
             raise ValueError(f"{name} configuration {np.round(q, 4).tolist()} is in collision or out of bounds")
     trees = (Tree(ends[0]), Tree(ends[1]))
-    stats: dict[str, float] = {"iterations": 0, "extensions": 0, "cuts": 0, "verify_checks": 0}
-
-    def grow_by(tree: Tree, target: np.ndarray, near: int | None = None) -> tuple[int, bool]:
-        stats["extensions"] += 1
-        return extend(problem, params, tree, target, near)
-
+    grids = Grids(params.coarse)
+    stats: dict[str, float] = {"iterations": 0, "cuts": 0, "verify_checks": 0}
     path = None
     for iteration in range(params.max_iterations):
         stats["iterations"] = iteration + 1
         if iteration % SAMPLES == 0:
             samples = robot.sample(rng, SAMPLES)  # (SAMPLES, dof) drawn a block at a time
         grow, other = (trees[0], trees[1]) if iteration % 2 == 0 else (trees[1], trees[0])
-        new, _ = grow_by(grow, samples[iteration % SAMPLES])
+        new, _ = move(problem, params, grids, grow, samples[iteration % SAMPLES], connect=False)
         if new < 0:
             continue
-        met, reached = grow_by(other, grow.nodes[new])  # connect: extend again and again from the last node added
-        while met >= 0 and not reached:
-            met, reached = grow_by(other, grow.nodes[new], near=met)
+        met, reached = move(problem, params, grids, other, grow.nodes[new], connect=True)  # the other tree follows
         if not reached:
             continue
         meeting = (new, met) if grow is trees[0] else (met, new)  # the same configuration, in either tree
@@ -140,31 +147,62 @@ def rrt_connect(problem: Problem, rng: np.random.Generator, params: RRTConnectPa
     return PlanResult(True, path, stats, RRTConnect.name, roadmap)
 
 
-def extend(
-    problem: Problem, params: RRTConnectParams, tree: Tree, target: np.ndarray, near: int | None
+class Grids:
+    """A move's grid, ``segments`` edges of ``per`` steps each, in the order its points are checked: the *coarse*
+    ones first (every ``coarse``-th step and every edge's end), then the rest, each part in step order. Made once per
+    shape and kept: a query asks for few."""
+
+    def __init__(self, coarse: int):
+        self.coarse = coarse
+        self._made: dict[tuple[int, int], tuple[np.ndarray, int]] = {}
+
+    def __call__(self, segments: int, per: int) -> tuple[np.ndarray, int]:
+        """``(steps (n,), c)``: the grid's steps ``1..n`` (``n = segments * per``) in that order, the first ``c`` of
+        them the coarse ones."""
+        if (segments, per) not in self._made:
+            k = np.arange(1, segments * per + 1)  # the grid's steps, the end included
+            coarse = (k % self.coarse == 0) | (k % per == 0)
+            self._made[segments, per] = (np.concatenate([k[coarse], k[~coarse]]), int(coarse.sum()))
+        return self._made[segments, per]
+
+
+def move(
+    problem: Problem, params: RRTConnectParams, grids: Grids, tree: Tree, target: np.ndarray, *, connect: bool
 ) -> tuple[int, bool]:
-    """Extend ``tree`` from node ``near`` (None: its node nearest ``target``) towards ``target`` by at most
-    ``resolution * range``, the edge checked coarse to fine: (the new node, or -1 if trapped; whether it reached
-    ``target``)."""
+    """Move ``tree`` from its node nearest ``target`` towards it: by at most ``resolution * range`` (an extension),
+    or with ``connect`` all the way in edges no longer; the segment's grid is checked coarse to fine, and the edges
+    before its first invalid point join the tree. Returns the last node added (-1: none, trapped) and whether it is
+    ``target``."""
     exact, robot, resolution = problem.exact, problem.robot, problem.resolution
+    near, step, length = tree.nearest(robot, target)
     reach = resolution * params.range
-    if near is None:
-        steps = robot.difference(tree.nodes[: tree.n], target)  # (n, dof) from each node to target
-        distance = np.abs(steps) @ robot.motion_weights  # (n,) robot.motion_bound of each step
-        near = int(np.argmin(np.where(tree.cut[: tree.n], np.inf, distance)))
-        step, length = steps[near], float(distance[near])
-    else:
-        step = robot.difference(tree.nodes[near], target)  # (dof,)
-        length = float(np.abs(step) @ robot.motion_weights)
-    q0, reached = tree.nodes[near], length <= reach
-    if not reached:
+    reached = connect or length <= reach
+    if not reached:  # an extension short of target: one range along the way
         step, length = step * (reach / length), reach
-    n = max(int(np.ceil(length / resolution)), 1)  # local_planner.step_counts
-    k = np.arange(1, n + 1)  # the grid's points, the end (k = n) included
-    for part in (k[(k % params.coarse == 0) | (k == n)], k[(k % params.coarse != 0) & (k != n)]):
-        if len(part) and not exact.are_valid(robot.wrap(q0 + (part / n)[:, None] * step)).all():
-            return -1, False
-    return tree.add(target if reached else robot.wrap(q0 + step), near), reached
+    segments = max(int(np.ceil(length / reach)), 1)  # edges, each no longer than reach: one for an extension
+    per = max(int(np.ceil(length / segments / resolution)), 1)  # grid steps an edge (local_planner.step_counts)
+    steps, c = grids(segments, per)
+    n = segments * per
+    points = robot.wrap(tree.nodes[near] + (steps / n)[:, None] * step)  # (n, dof) in the order checked
+    blocked = first_invalid(exact, points[:c], steps[:c], n + 1)  # the first invalid step (n + 1: none)
+    if connect or blocked > n:  # an extension that failed adds nothing: it needs no fine points
+        useful = blocked if blocked > n else (blocked - 1) // per * per  # the end of the last edge that may be kept
+        fine = c + np.flatnonzero(steps[c:] < useful)  # only points before it matter
+        blocked = first_invalid(exact, points[fine], steps[fine], blocked)
+    last = near
+    for k in range(per, min(blocked, n), per):  # a connection's edges, each valid up to its end
+        last = tree.add(points[np.searchsorted(steps[:c], k)], last)
+    if blocked <= n:
+        return (last if last != near else -1), False
+    return tree.add(target if reached else points[c - 1], last), reached  # steps[c - 1] == n: the end
+
+
+def first_invalid(exact, points: np.ndarray, steps: np.ndarray, blocked: int) -> int:
+    """The least of ``blocked`` and the steps ``(P,)`` of the invalid ones of ``points (P, dof)`` (one call)."""
+    if not len(points):
+        return blocked
+    ok = exact.are_valid(points)
+    return blocked if ok.all() else min(blocked, int(steps[np.argmin(ok)]))
 
 
 def verified_path(

@@ -62,26 +62,7 @@ def scene_still(
     valid = valid or {}
     rows = -(-(1 + len(poses)) // 2)
     fig = Figure(figsize=(PAGE_WIDTH, 3.7 * rows + 0.9))  # as wide as the page: its text as large as it is drawn
-    overview = fig.add_subplot(rows, 2, 1, projection="3d")
-    for lo, hi in workspace.boxes:
-        add_box_3d(overview, aabb_corners(lo, hi), linewidth=0.2, alpha=0.2, **BLOCK_STYLE)
-    _draw_points(overview, samples, trace)
-    for k, (label, q) in enumerate(poses.items()):
-        base = robot.link_boxes(np.asarray(q)[None])[0][0, 0]  # (3,) the first link's centre
-        overview.scatter(
-            *base,
-            marker=POSE_MARKERS[k % len(POSE_MARKERS)],
-            s=90,
-            color=COLORS["free"],
-            edgecolors=COLORS["ink"],
-            linewidths=1.2,
-            depthshade=False,
-            label=f"robot: {label}",
-        )
-    frame_region(overview, workspace)
-    overview.set_box_aspect(workspace.upper - workspace.lower)
-    few_ticks(overview)
-    overview.set_title(f"the whole workspace: {len(workspace.boxes)} blocks", fontsize=10)
+    _overview(fig.add_subplot(rows, 2, 1, projection="3d"), robot, workspace, poses, samples, trace)
     said = []
     for k, (label, q) in enumerate(poses.items()):
         ax = fig.add_subplot(rows, 2, k + 2, projection="3d")
@@ -110,6 +91,29 @@ def scene_still(
         )
     text += ", the path of the robot's base" if trace is not None else ""
     return describe(fig, text + "; then the robot close up among the blocks near it: " + "; ".join(said) + ".")
+
+
+def _overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, np.ndarray], samples, trace) -> None:
+    """A still's first panel: the whole workspace, its samples and path, each pose marked at the robot's base."""
+    for lo, hi in workspace.boxes:
+        add_box_3d(ax, aabb_corners(lo, hi), linewidth=0.2, alpha=0.2, **BLOCK_STYLE)
+    _draw_points(ax, samples, trace)
+    for k, (label, q) in enumerate(poses.items()):
+        base = robot.link_boxes(np.asarray(q)[None])[0][0, 0]  # (3,) the first link's centre
+        ax.scatter(
+            *base,
+            marker=POSE_MARKERS[k % len(POSE_MARKERS)],
+            s=90,
+            color=COLORS["free"],
+            edgecolors=COLORS["ink"],
+            linewidths=1.2,
+            depthshade=False,
+            label=f"robot: {label}",
+        )
+    frame_region(ax, workspace)
+    ax.set_box_aspect(workspace.upper - workspace.lower)
+    few_ticks(ax)
+    ax.set_title(f"the whole workspace: {len(workspace.boxes)} blocks", fontsize=10)
 
 
 def _draw_points(ax, samples, trace, clip: bool = False) -> None:

@@ -1,15 +1,11 @@
 """The live scene: a :class:`Viewer` shows one scenario's workspace, robot, samples, roadmap and path.
 
 The scene answers the paper's §III in colors (:mod:`toolkit.plots.palette`) and words: link boxes take the valid or
-the invalid colour by the exact checker (the panel says which); a learned model's (``checkpoint=`` or ``predictor=``)
-wireframe shows P(valid) (cividis); samples are shaped by kind (:data:`toolkit.viewer.drawing.SAMPLE_SHAPES`).
-:meth:`Viewer.plan` runs the planner named (default: ``toolkit.planning.prm.DEFAULT``, the lazy PRM) on a query
-built by :func:`toolkit.experiments.problems.build`; with a model loaded, the model decides samples, the planner
-the same.
-
-The viewer knows nothing of a GUI. It tells *listeners* what happened (:data:`EVENTS`, :meth:`Viewer.subscribe`);
-the panel (:mod:`toolkit.viewer.panel`) is one listener, a script or a test can be another, and any of them changes
-the scene through the same public methods.
+the invalid colour by the exact checker (the panel says which); a model's (``checkpoint=`` or ``predictor=``)
+wireframe shows P(valid); samples are shaped by kind. :meth:`Viewer.plan` runs the planner named (default the lazy
+PRM) on a query from :func:`toolkit.experiments.problems.build`; with a model loaded, the model decides samples.
+The viewer knows nothing of a GUI: it tells *listeners* what happened (:data:`EVENTS`, :meth:`Viewer.subscribe`),
+the panel (:mod:`toolkit.viewer.panel`) among them, and any of them changes the scene through its public methods.
 """
 
 from __future__ import annotations
@@ -32,10 +28,10 @@ from toolkit.geometry.workspace import Workspace
 from toolkit.planning import prm
 from toolkit.planning.local_planner import path_at
 from toolkit.planning.sampling import make_sampler
-from toolkit.plots import scenes
 from toolkit.viewer import drawing as draw
-from toolkit.viewer.labels import label_controls, no_webgl_still
-from toolkit.viewer.server import camera_at, page_path, srcdoc_iframe, start_server, stop_server
+from toolkit.viewer import snapshot
+from toolkit.viewer.labels import label_controls
+from toolkit.viewer.server import camera_at, page_path, start_server, stop_server
 
 Predictor = Callable[[Workspace], CollisionChecker]  # workspace -> checker with are_valid(Q), probability(Q)
 LAYERS = ("obstacles", "robot", "prediction", "samples", "roadmap", "path")
@@ -315,9 +311,8 @@ class Viewer:
         return draw.scene_summary(self.workspace, self.robot, bool(self.valid), counts, self.path)
 
     def iframe(self, height: int = 480) -> str:
-        """The scene as a static snapshot ``<iframe>`` for ``IPython.display.HTML``, followed by :meth:`summary`."""
-        still = self.still() if self.robot.dim == 3 else None
-        return srcdoc_iframe(no_webgl_still(self.html(), still), height, summary=self.summary())
+        """The scene as a static snapshot ``<iframe>`` for ``IPython.display.HTML``: :func:`snapshot.iframe`."""
+        return snapshot.iframe(self, height)
 
     def animation_html(self, *, frames: int = 60, seconds: float = 6.0) -> str:
         """The robot moving along the shown path, as one self-contained HTML document (no server needed).
@@ -345,27 +340,13 @@ class Viewer:
         return document
 
     def animation_iframe(self, height: int = 480, *, frames: int = 60, seconds: float = 6.0) -> str:
-        """:meth:`animation_html` as an ``<iframe>`` for ``IPython.display.HTML``, with its frames in words."""
-        Q = self.path_configurations(np.linspace(0.0, 1.0, int(frames)))  # (F, dof): the frames' configurations
-        told = draw.animation_summary(self.workspace, self.robot, Q, self.exact, self.model, self.path)
-        ends = dict(zip(("start", "middle", "goal"), self.path_configurations(np.linspace(0.0, 1.0, 3))))
-        still = self.still(ends) if self.robot.dim == 3 else None
-        return srcdoc_iframe(
-            no_webgl_still(self.animation_html(frames=frames, seconds=seconds), still), height, summary=told
-        )
+        """:meth:`animation_html` as an ``<iframe>`` with its frames in words: :func:`snapshot.animation_iframe`."""
+        return snapshot.animation_iframe(self, height, frames=frames, seconds=seconds)
 
     def still(self, poses: dict[str, np.ndarray] | None = None) -> Figure:
-        """The scene as a still picture (:func:`toolkit.plots.scenes.scene_still`): the whole workspace with the
-        shown samples and path, the robot marked, then the robot close up at ``poses`` ``{label: q}`` (default: where
-        it stands now). A 3D scene's page shows it in place of the view where the browser has no WebGL."""
-        poses = {"the robot": self.q} if poses is None else poses
-        valid = dict(zip(poses, (bool(v) for v in self.exact.are_valid(np.stack(list(poses.values()))))))
-        trace = None
-        if self.path is not None:
-            dense = self.path_configurations(np.linspace(0.0, 1.0, 20 * len(self.path)))
-            trace = draw.config_points(self.robot, dense, "base")  # (T, 3)
-        samples = self.sample_points if self.visible["samples"] else None
-        return scenes.scene_still(self.robot, self.workspace, poses, valid=valid, samples=samples, trace=trace)
+        """The scene as a still picture, the robot close up at ``poses`` ``{label: q}`` (default: where it stands):
+        :func:`toolkit.viewer.snapshot.scene_still`, what a 3D scene's page shows where a browser has no WebGL."""
+        return snapshot.scene_still(self, poses)
 
     def stop(self) -> None:
         """Tell the listeners, then stop the server; the port is free afterwards. Stopping twice is harmless."""

@@ -1,0 +1,48 @@
+"""A viewer's scene on a page that needs no server: a snapshot or an animation in an ``<iframe>``, and a still.
+
+``viewer`` is a :class:`toolkit.viewer.scene.Viewer` in every function here (not imported: it imports this).
+
+A saved 3D view needs WebGL to draw; where a browser has none, the page shows a still picture in the view's place
+(:func:`toolkit.viewer.labels.no_webgl_still`): the whole workspace with the samples and the path the viewer
+shows, then the robot close up. Each frame is followed by the scene in words (its text alternative).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from toolkit.plots import scenes
+from toolkit.viewer import drawing as draw
+from toolkit.viewer.labels import no_webgl_still
+from toolkit.viewer.server import srcdoc_iframe
+
+
+def scene_still(viewer, poses: dict[str, np.ndarray] | None = None) -> Figure:
+    """``viewer``'s scene as :func:`toolkit.plots.scenes.scene_still` draws it: the whole workspace with the shown
+    samples and path, the robot marked, then the robot close up at ``poses`` ``{label: q (dof,)}`` (default: where
+    it stands now), each said valid or in collision by the exact checker."""
+    poses = {"the robot": viewer.q} if poses is None else poses
+    valid = dict(zip(poses, (bool(v) for v in viewer.exact.are_valid(np.stack(list(poses.values()))))))
+    trace = None
+    if viewer.path is not None:
+        dense = viewer.path_configurations(np.linspace(0.0, 1.0, 20 * len(viewer.path)))  # (20 P, dof)
+        trace = draw.config_points(viewer.robot, dense, "base")  # (T, 3)
+    samples = viewer.sample_points if viewer.visible["samples"] else None
+    return scenes.scene_still(viewer.robot, viewer.workspace, poses, valid=valid, samples=samples, trace=trace)
+
+
+def iframe(viewer, height: int = 480) -> str:
+    """``viewer``'s scene as a static snapshot ``<iframe>`` for ``IPython.display.HTML``, then its summary."""
+    picture = scene_still(viewer) if viewer.robot.dim == 3 else None
+    return srcdoc_iframe(no_webgl_still(viewer.html(), picture), height, summary=viewer.summary())
+
+
+def animation_iframe(viewer, height: int = 480, *, frames: int = 60, seconds: float = 6.0) -> str:
+    """``viewer``'s animation along its path (``Viewer.animation_html``) as an ``<iframe>``, its frames in words."""
+    Q = viewer.path_configurations(np.linspace(0.0, 1.0, int(frames)))  # (F, dof): the frames' configurations
+    told = draw.animation_summary(viewer.workspace, viewer.robot, Q, viewer.exact, viewer.model, viewer.path)
+    ends = dict(zip(("start", "middle", "goal"), viewer.path_configurations(np.linspace(0.0, 1.0, 3))))
+    picture = scene_still(viewer, ends) if viewer.robot.dim == 3 else None
+    document = viewer.animation_html(frames=frames, seconds=seconds)
+    return srcdoc_iframe(no_webgl_still(document, picture), height, summary=told)
