@@ -149,13 +149,15 @@ def robot_figure(
     views = views or (("xy",) if robot.dim == 2 else ("3d", "xy", "xz"))
     if labels is not None and len(labels) != len(Q):
         raise ValueError(f"{len(labels)} labels for {len(Q)} configurations: give one label a configuration")
-    fig = Figure(figsize=(4.2 * len(views), 4.2 + 0.4 * (labels is not None)))
+    width = min(7.5, 4.2 * len(views))  # at most the page's width, so that its text is drawn at full size
+    fig = Figure(figsize=(width, width / len(views) + 0.5 + 0.4 * (labels is not None)))
     colors = link_colors(len(Q), valid)
     hatches = [HATCHES[k % len(HATCHES)] for k in range(len(Q))] if valid is None else [None] * len(Q)
     for i, view in enumerate(views):
         ax = fig.add_subplot(1, len(views), i + 1, **({"projection": "3d"} if view == "3d" else {}))
         draw_robot(ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin, hatches=hatches)
         ax.set_title(f"{robot.name}: {view}", fontsize=10)
+        ax.tick_params(labelsize=8)
         if view == "3d":
             few_ticks(ax)
     if labels is None and valid is not None:
@@ -163,7 +165,7 @@ def robot_figure(
     if labels is not None:
         styles = {label: link_style(c, h) for label, c, h in zip(labels, colors, hatches)}
         handles = [Patch(label=label, **style) for label, style in styles.items()]
-        fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=8, frameon=False)
+        fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=9, frameon=False)
     fig.tight_layout(rect=(0, 0.08 if labels is not None else 0, 1, 1))
     text = f"The {robot.name} robot's link boxes at {len(Q)} configuration{'s' if len(Q) > 1 else ''}"
     seen = ["in 3D" if v == "3d" else f"in the {v} plane" for v in views]
