@@ -56,7 +56,7 @@ def probability_maps(
     probabilities: Mapping[str, np.ndarray], valid, grid: CSpaceSlice, *, thresholds: float | Mapping[str, float] = 0.5
 ) -> Figure:
     """Several models' P(valid) maps side by side, same grid and truth (e.g. the ``paper`` and ``strong`` presets)."""
-    fig = Figure(figsize=(min(7.5, 3.6 * len(probabilities) + 0.8), 4.4), layout="constrained")  # the page's width
+    fig = Figure(figsize=(min(7.3, 3.6 * len(probabilities) + 0.8), 4.4), layout="constrained")  # the page's width
     axes = fig.subplots(1, len(probabilities), squeeze=False)[0]
     said = []
     for ax, (name, probability) in zip(axes, probabilities.items()):
@@ -123,7 +123,7 @@ def path_map(
 
 def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
     """The four kinds of answer as bars (dangerous ones in the invalid colour, last) and accuracy / TPR / TNR."""
-    fig = Figure(figsize=(7.5, 3.4), layout="constrained")  # the page's width: its text drawn full size
+    fig = Figure(figsize=(7.3, 3.4), layout="constrained")  # the page's width: its text drawn full size
     ax_counts, ax_rates = fig.subplots(1, 2)
     _draw_counts(ax_counts, predicted_valid, valid)
     _draw_rates(ax_rates, {"": metrics.classification(np.ravel(predicted_valid), np.ravel(valid))})
@@ -134,7 +134,7 @@ def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
 
 def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> Figure:
     """Accuracy, TPR and TNR of several models or baselines (``{name: {"acc", "tpr", "tnr"}}``), grouped."""
-    fig = Figure(figsize=(min(7.5, 1.6 + 1.6 * len(scores)), 3.6), layout="constrained")  # at most the page's width
+    fig = Figure(figsize=(min(7.3, 1.6 + 1.6 * len(scores)), 3.6), layout="constrained")  # at most the page's width
     _draw_rates(fig.subplots(), scores)
     fig.suptitle(title or "Accuracy, TPR (valid kept), TNR (invalid rejected)")
     said = "; ".join(
@@ -222,7 +222,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
 
 
 CONSERVATIVE_CELLS: dict[str, Any] = dict(  # a light tint and a dotted hatch in ink: the gray beneath still shows
-    facecolor=to_rgba(CONSERVATIVE, 0.3), hatch="..", hatchcolor=COLORS["ink"], edgecolor="none"
+    facecolor=to_rgba(CONSERVATIVE, 0.15), hatch="..", hatchcolor=COLORS["ink"], edgecolor="none"
 )
 
 
