@@ -26,7 +26,7 @@ from matplotlib.patches import Patch
 
 from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots.alt import describe
-from toolkit.plots.palette import COLORS, GREYS_CMAP, MARKERS, SEQUENTIAL_CMAP, series_style
+from toolkit.plots.palette import COLORS, GREYS_CMAP, MARKERS, PAGE_WIDTH, SEQUENTIAL_CMAP, series_style
 
 ERROR_COLORS = ListedColormap(
     [COLORS["phantom"], COLORS["missed"]]
@@ -78,7 +78,7 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
             f"{decoded.shape}, {len(names)} names"
         )
     accuracy = reconstruction_accuracy(decoded, grids)  # (W,)
-    fig = Figure(figsize=(8.4, 3.0 * len(grids)), layout="constrained")
+    fig = Figure(figsize=(PAGE_WIDTH, 2.7 * len(grids)), layout="constrained")
     rows = fig.subfigures(len(grids), 1, squeeze=False)[:, 0]  # (W,) one row per workspace
     said = []
     for row, grid, out, name, acc in zip(rows, grids, decoded, names, accuracy):
@@ -87,7 +87,7 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
         axes = row.subplots(1, 3)
         _image(axes[0], grid, "input")
         _image(axes[1], np.where(out > 0, 1.0, -1.0), "decoded (sign)")
-        _image(axes[2], grid, f"errors: {missed} missed, {phantom} invented", alpha=0.25)
+        _image(axes[2], grid, f"{missed} missed, {phantom} invented", alpha=0.25)
         axes[2].imshow(np.ma.masked_array(grid, ~errors).T, origin="lower", cmap=ERROR_COLORS, vmin=-1, vmax=1)
         for kind, wrong in (("missed", errors & (grid > 0)), ("phantom", errors & (grid < 0))):
             x, y = np.nonzero(wrong)
@@ -103,7 +103,7 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
         for kind in ("missed", "phantom")
     ]
     labels = ["missed block (x)", "invented block (o)"]
-    fig.legend(handles, labels, loc="outside lower center", ncols=2, fontsize=8, frameon=False)
+    fig.legend(handles, labels, loc="outside lower center", ncols=2, fontsize=9, frameon=False)
     grids_said = f"{len(grids)} occupancy grid{'s' if len(grids) > 1 else ''}"
     text = f"{grids_said}, each beside its reconstruction and its wrong cells. " + "; ".join(said)
     return describe(fig, text + ".")
@@ -222,7 +222,7 @@ def latent_scatter(
     ``highlight``: a group drawn with larger, thick black-edged markers on top of the others (e.g. the few training
     workspaces); the legend lies below the axes, over no point.
     """
-    fig = Figure(figsize=(6.2 if color else 5.6, 5.2), layout="constrained")
+    fig = Figure(figsize=(PAGE_WIDTH if color else 5.6, 5.2), layout="constrained")
     ax = fig.subplots()
     if color:
         low, high = min(np.min(c) for c in color.values()), max(np.max(c) for c in color.values())

@@ -37,7 +37,7 @@ from matplotlib.patches import Patch
 from toolkit.learning import metrics
 from toolkit.plots.alt import describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
-from toolkit.plots.palette import CATEGORICAL, COLORS, GREY_CMAP, HATCHES, halo, series_style
+from toolkit.plots.palette import CATEGORICAL, COLORS, GREY_CMAP, HATCHES, PAGE_WIDTH, halo, series_style
 from toolkit.plots.slices import CSpaceSlice
 
 DANGEROUS, CONSERVATIVE, BOUNDARY = COLORS["dangerous"], COLORS["conservative"], COLORS["boundary"]
@@ -56,7 +56,7 @@ def probability_maps(
     probabilities: Mapping[str, np.ndarray], valid, grid: CSpaceSlice, *, thresholds: float | Mapping[str, float] = 0.5
 ) -> Figure:
     """Several models' P(valid) maps side by side, same grid and truth (e.g. the ``paper`` and ``strong`` presets)."""
-    fig = Figure(figsize=(min(7.3, 3.6 * len(probabilities) + 0.8), 4.4), layout="constrained")  # the page's width
+    fig = Figure(figsize=(min(PAGE_WIDTH, 3.6 * len(probabilities) + 0.8), 4.2), layout="constrained")
     axes = fig.subplots(1, len(probabilities), squeeze=False)[0]
     said = []
     for ax, (name, probability) in zip(axes, probabilities.items()):
@@ -123,8 +123,8 @@ def path_map(
 
 def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
     """The four kinds of answer as bars (dangerous ones in the invalid colour, last) and accuracy / TPR / TNR."""
-    fig = Figure(figsize=(7.3, 3.4), layout="constrained")  # the page's width: its text drawn full size
-    ax_counts, ax_rates = fig.subplots(1, 2)
+    fig = Figure(figsize=(PAGE_WIDTH, 5.6), layout="constrained")
+    ax_counts, ax_rates = fig.subplots(2, 1, height_ratios=(1.2, 1))  # one above the other: the page's width each
     _draw_counts(ax_counts, predicted_valid, valid)
     _draw_rates(ax_rates, {"": metrics.classification(np.ravel(predicted_valid), np.ravel(valid))})
     fig.suptitle(title or "Predictions against the exact checker")
@@ -134,7 +134,7 @@ def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
 
 def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> Figure:
     """Accuracy, TPR and TNR of several models or baselines (``{name: {"acc", "tpr", "tnr"}}``), grouped."""
-    fig = Figure(figsize=(min(7.3, 1.6 + 1.6 * len(scores)), 3.6), layout="constrained")  # at most the page's width
+    fig = Figure(figsize=(min(PAGE_WIDTH, 1.6 + 1.6 * len(scores)), 3.8), layout="constrained")
     _draw_rates(fig.subplots(), scores)
     fig.suptitle(title or "Accuracy, TPR (valid kept), TNR (invalid rejected)")
     said = "; ".join(
@@ -320,10 +320,10 @@ def _draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
             linewidth=0.6,
             label=label,
         )
-        ax.bar_label(bars, fmt="%.2f", fontsize=8)
+        ax.bar_label(bars, fmt="%.2f", fontsize=8, rotation=90 if len(scores) > 3 else 0, padding=2)  # upright: apart
     ax.set_xticks(x, list(scores), fontsize=8)
     ax.set_xlabel("model" if len(scores) > 1 or any(scores) else "")
-    ax.set_ylim(0, 1.35)  # room for the legend above the bars
+    ax.set_ylim(0, 1.35 if len(scores) <= 3 else 1.55)  # room for the labels and the legend above the bars
     ax.set_yticks(np.linspace(0, 1, 6))
     ax.set_ylabel("share")
     ax.legend(fontsize=8, loc="upper center", ncols=2, frameon=False)

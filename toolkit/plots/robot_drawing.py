@@ -24,7 +24,7 @@ from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
-from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES
+from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
 
 VALID_COLOR, INVALID_COLOR = COLORS["valid"], COLORS["invalid"]
 BLOCK_STYLE: dict[str, Any] = dict(facecolor=COLORS["block"], edgecolor=COLORS["occupied"], gid="block")
@@ -149,12 +149,19 @@ def robot_figure(
     views = views or (("xy",) if robot.dim == 2 else ("3d", "xy", "xz"))
     if labels is not None and len(labels) != len(Q):
         raise ValueError(f"{len(labels)} labels for {len(Q)} configurations: give one label a configuration")
-    width = min(7.5, 4.2 * len(views))  # at most the page's width, so that its text is drawn at full size
-    fig = Figure(figsize=(width, width / len(views) + 0.5 + 0.4 * (labels is not None)))
+    # at most two panels a row (the page's width); three views: the first tall on the left, two stacked beside it
+    columns, rows = min(2, len(views)), -(-len(views) // 2)
+    mosaic = [[0, 1], [0, 2]] if len(views) == 3 else [[2 * r, 2 * r + 1][:columns] for r in range(rows)]
+    if len(views) % 2 and len(views) > 3:
+        mosaic[-1][-1] = "."  # an empty place
+    width = min(PAGE_WIDTH, 3.6 * columns)
+    fig = Figure(figsize=(width, width / columns * (1.6 if len(views) == 3 else rows) + 0.4 * (labels is not None)))
+    in_3d = {i: {"projection": "3d"} for i, view in enumerate(views) if view == "3d"}
+    axes = fig.subplot_mosaic(mosaic, per_subplot_kw=in_3d)
     colors = link_colors(len(Q), valid)
     hatches = [HATCHES[k % len(HATCHES)] for k in range(len(Q))] if valid is None else [None] * len(Q)
     for i, view in enumerate(views):
-        ax = fig.add_subplot(1, len(views), i + 1, **({"projection": "3d"} if view == "3d" else {}))
+        ax = axes[i]
         draw_robot(ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin, hatches=hatches)
         ax.set_title(f"{robot.name}: {view}", fontsize=10)
         ax.tick_params(labelsize=8)
