@@ -151,17 +151,20 @@ def robot_figure(
         raise ValueError(f"{len(labels)} labels for {len(Q)} configurations: give one label a configuration")
     # at most two panels a row (the page's width); three views: the first tall on the left, two stacked beside it
     columns, rows = min(2, len(views)), -(-len(views) // 2)
-    mosaic = [[0, 1], [0, 2]] if len(views) == 3 else [[2 * r, 2 * r + 1][:columns] for r in range(rows)]
-    if len(views) % 2 and len(views) > 3:
-        mosaic[-1][-1] = "."  # an empty place
+    names = list(views)  # each view once: a panel's name
+    mosaic: list[list[Any]] = (
+        [[names[0], names[1]], [names[0], names[2]]]
+        if len(names) == 3
+        else [names[2 * r : 2 * r + 2] for r in range(rows)]
+    )
     width = min(PAGE_WIDTH, 3.6 * columns)
     fig = Figure(figsize=(width, width / columns * (1.6 if len(views) == 3 else rows) + 0.4 * (labels is not None)))
-    in_3d = {i: {"projection": "3d"} for i, view in enumerate(views) if view == "3d"}
+    in_3d: dict[str | tuple[str, ...], dict[str, Any]] = {"3d": {"projection": "3d"}} if "3d" in views else {}
     axes = fig.subplot_mosaic(mosaic, per_subplot_kw=in_3d)
     colors = link_colors(len(Q), valid)
     hatches = [HATCHES[k % len(HATCHES)] for k in range(len(Q))] if valid is None else [None] * len(Q)
-    for i, view in enumerate(views):
-        ax = axes[i]
+    for view in views:
+        ax = axes[view]
         draw_robot(ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin, hatches=hatches)
         ax.set_title(f"{robot.name}: {view}", fontsize=10)
         ax.tick_params(labelsize=8)
