@@ -173,20 +173,29 @@ def test_bench_crossover_prints_json_and_writes_the_figure(tmp_path, capsys):
     assert "do not apply to 2ds" in capsys.readouterr().err
 
 
-def test_on_one_device_every_checker_is_timed_at_every_batch_and_the_exact_answers_agree(tmp_path, capsys):
-    """`bench --crossover --device cpu --quick` (on a GPU the same with cuda): the device sweep's columns, the exact
-    check on the device answering as the compiled one, the fastest and the conclusion read from the figures."""
+def test_on_one_device_every_checker_is_timed_at_every_point_and_the_exact_answers_agree(tmp_path, capsys):
+    """`bench --crossover --device cpu --quick` (on a GPU the same with cuda): the batch, obstacles and links swept
+    on one device, every column timed, the exact check on the device answering as the compiled one, the fastest
+    and the conclusion read from the figures; meshes are refused by name."""
     out = tmp_path / "device"
     args = ["bench", "--crossover", "--quick", "--scenario", "3dc7", "--device", "cpu", "--out", str(out), "--json"]
     assert cli.main(args) == 0
     found = json.loads(capsys.readouterr().out)
     assert json.loads((out / "crossover_device.json").read_text()) == found
-    assert found["batch"] == list(on_device.QUICK_BATCHES) and found["device"] == "cpu"
-    for name in on_device.COLUMNS:
-        assert all(us > 0 for us in found[f"{name}_us"])
-    assert found["disagreements"] == [0, 0]
-    for i, fastest in enumerate(found["fastest"]):
-        assert found[f"{fastest}_us"][i] == min(found[f"{n}_us"][i] for n in on_device.COLUMNS)
-    assert len(found["conclusion"]) == 2 and found["conclusion"][0].startswith("256 a call on cpu: cheapest is ")
+    assert found["device"] == "cpu" and list(found["variables"]) == list(on_device.VARIABLES)
+    quick = crossover.CrossoverSizes.quick()
+    expected = {"batch": list(on_device.QUICK_BATCHES), "obstacles": list(quick.obstacles), "links": [2, 4]}
+    for variable, sweep in found["variables"].items():
+        assert sweep["values"] == expected[variable], variable
+        assert sweep["batch"] == (expected["batch"] if variable == "batch" else [quick.batch] * 2)
+        for name in on_device.COLUMNS:
+            assert all(us > 0 for us in sweep[f"{name}_us"])
+        assert sweep["disagreements"] == [0, 0]
+        for i, fastest in enumerate(sweep["fastest"]):
+            assert sweep[f"{fastest}_us"][i] == min(sweep[f"{n}_us"][i] for n in on_device.COLUMNS)
+    assert len(found["conclusion"]) == 6 and found["conclusion"][0].startswith("256 a call on cpu: cheapest is ")
+    assert found["conclusion"][2].startswith("obstacles per workspace (unit blocks) 10 on cpu: cheapest is ")
     table = on_device.markdown(found)
-    assert table.count("\n| 2,048 |") == 1 and "resident" in table
+    assert table.count("\n| 2,048 | 2,048 |") == 1 and "resident" in table and table.count("\n| --- | --- |") == 3
+    assert cli.main(args[:-3] + ["--variables", "triangles"]) == 2
+    assert "meshes stay on the CPU" in capsys.readouterr().err

@@ -87,6 +87,7 @@ PLANNING = {
     s: {
         m: {
             "total_s_median": t,
+            "total_s_per_query": [0.8 * t, t, 1.3 * t],
             "total_s_q1": 0.8 * t,
             "total_s_q3": 1.3 * t,
             "sampling_s_median": t / 3,

@@ -405,7 +405,13 @@ def test_a_planner_of_another_family_registers_and_plans(monkeypatch, capsys):
     with pytest.raises(ValueError, match="unknown planner 'straight'"):
         plan(exact, q.start, q.goal, planner="straight", rng=np.random.default_rng(0))
     prm.register(StraightLine)
-    assert prm.get("straight") is StraightLine and prm.names() == ["paper", "lazy", "rrt-connect", "straight"]
+    assert prm.get("straight") is StraightLine and prm.names() == [
+        "paper",
+        "lazy",
+        "batched",
+        "rrt-connect",
+        "straight",
+    ]
     free = Workspace(np.zeros(2), np.full(2, 31.0), np.zeros((0, 2, 2)))
     start, goal = np.array([2.0, 2.0]), np.array([28.0, 28.0])
     result = plan(exact_checker(free, scenario.robot), start, goal, planner="straight", rng=np.random.default_rng(0))

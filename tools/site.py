@@ -45,7 +45,8 @@ PAGES = ("README.md", "docs/*.md", "docs/*.png", "tutorials/*.md", "tutorials/as
 CHAPTERS = "notebooks/[0-9][0-9]_*.ipynb"
 TUTORIALS = "tutorials/*.ipynb"
 INSTRUCTORS_PAGES = "tutorials/instructors_*.md"  # after the instructors' guide in the sidebar
-DOCS_ORDER = ("results", "fidelity", "benchmarks", "design", "viewer")  # docs/ pages in the nav, then any others
+# docs/ pages in the nav, then any others
+DOCS_ORDER = ("results", "fidelity", "benchmarks", "benchmarks_history", "design", "viewer")
 PACKAGES = (
     "util",
     "geometry",

@@ -1,7 +1,7 @@
 // Keyboard access to what scrolls sideways (WCAG 2.1.1; the axe rule scrollable-region-focusable). Added by
 // mkdocs.yml's extra_javascript.
 // - mkdocs-material wraps each table in a scrolling <div class="md-typeset__scrollwrap"> when the page loads:
-//   each becomes a named region with tabindex 0;
+//   each becomes a named region with tabindex 0, marked data-scrolls while it is too wide for its column;
 // - a display equation wider than the page (at 320 px, or with WCAG text spacing) scrolls: it becomes a
 //   region named "equation" with tabindex 0 while it does, and leaves the tab order when it fits again.
 const makeRegion = (element, name) => {
@@ -19,8 +19,19 @@ const markScrollingMath = () => {
   }
 };
 
+// A table wider than its column scrolls sideways in its wrapper: the wrapper says so in words above the table
+// (notebook-pages.css draws the note, data-scrolls turns it on), since an overlay scroll bar is not always shown.
+const markScrollingTables = () => {
+  for (const wrap of document.querySelectorAll(".md-typeset__scrollwrap")) {
+    const scrolls = wrap.scrollWidth > wrap.clientWidth + 1;
+    wrap.toggleAttribute("data-scrolls", scrolls);
+    wrap.setAttribute("aria-label", scrolls ? "table, scrolls sideways" : "table");
+  }
+};
+
 document$.subscribe(() => {
   for (const wrap of document.querySelectorAll(".md-typeset__scrollwrap:not([tabindex])")) makeRegion(wrap, "table");
+  markScrollingTables();
   markScrollingMath();
 });
 let pending = false; // MathJax typesets after the page loads: look again, once a frame, whenever nodes come
@@ -32,4 +43,7 @@ new MutationObserver(() => {
     markScrollingMath();
   });
 }).observe(document.body, {childList: true, subtree: true});
-window.addEventListener("resize", markScrollingMath);
+window.addEventListener("resize", () => {
+  markScrollingTables();
+  markScrollingMath();
+});

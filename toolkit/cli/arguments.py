@@ -162,7 +162,8 @@ def planner(parser: argparse.ArgumentParser, help: str) -> None:
         choices=prm.names(),
         default=None,
         help=f"{help}; one of {', '.join(prm.names())} (paper: the paper's Algorithm 1; lazy: the lazy PRM, the "
-        f"best exact planner; or one registered by --import). Default: {prm.DEFAULT}, with or without prediction",
+        "best exact planner; batched: the lazy PRM with each round's samples in one checker call, for a GPU; or one "
+        f"registered by --import). Default: {prm.DEFAULT}, with or without prediction",
     )
     parser.add_argument(
         "--option",

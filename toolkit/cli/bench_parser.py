@@ -32,7 +32,8 @@ def bench_options(cmd: argparse.ArgumentParser) -> None:
         "--device",
         metavar="DEVICE",
         help="cpu or cuda: also time the learned checker and the exact one in torch there, a batch in numpy and "
-        "one already on the device (default: neither); with --crossover, sweep the batch on that device instead",
+        "one already on the device (default: neither); with --crossover, sweep the batch, obstacles and links on "
+        "that device instead (meshes stay on the CPU)",
     )
     bench_planning_options(cmd)
     bench_versus_ompl_options(cmd)
@@ -142,7 +143,7 @@ def bench_crossover_options(cmd: argparse.ArgumentParser) -> None:
         default=(),
         metavar="LIST",
         help="with --crossover: comma-separated variables to sweep, of obstacles, triangles, links, batch "
-        "(default: all that apply; 2D: obstacles, batch)",
+        "(default: all that apply; 2D: obstacles, batch; with --device: batch, obstacles, links)",
     )
     cmd.add_argument(
         "--quick", action="store_true", help="with --crossover: two small values a variable, to try the command"

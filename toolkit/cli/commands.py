@@ -104,14 +104,14 @@ def _bench_crossover(args: argparse.Namespace) -> int:
     out = outputs.writable_folder(args.out, "--out") if args.out else None  # before minutes of timing
     scenario = scenarios.get(args.scenario or CROSSOVER_SCENARIO)
     recipe = presets.get(args.preset)
-    if args.device is not None:  # the batch swept on one device
-        from toolkit.experiments import bench
+    if args.device is not None:  # the batch, obstacles and links swept on one device
+        from toolkit.experiments import bench, on_device
 
-        bench.usable_device(args.device)
-        from toolkit.experiments import on_device
-
-        batches = on_device.QUICK_BATCHES if args.quick else on_device.BATCHES
-        found = on_device.sweep(scenario, recipe, device=args.device, batches=batches, seed=args.seed)
+        device = bench.usable_device(args.device)
+        assert device is not None  # (a device named is a device returned)
+        found = on_device.one_device(
+            scenario, recipe, device=device, variables=args.variables, quick=args.quick, seed=args.seed
+        )
         if out is not None:
             outputs.write_json(out / "crossover_device.json", found)
         print(json.dumps(found) if args.json else on_device.markdown(found))
@@ -126,11 +126,12 @@ def _bench_crossover(args: argparse.Namespace) -> int:
 
 def cmd_train(args: argparse.Namespace) -> int:
     from toolkit.experiments import pipeline
+    from toolkit.experiments.bench import usable_device
     from toolkit.learning import checkpoints
 
     checkpoints.check_destination(args.out, overwrite=args.force)  # before minutes of training, not after
     changes = {k: v for k, v in (("cae_epochs", args.cae_epochs), ("mlp_epochs", args.mlp_epochs)) if v is not None}
-    config = _config(args, args.scenario, device=args.device, **changes)
+    config = _config(args, args.scenario, device=usable_device(args.device), **changes)
     models, scores, folder = pipeline.train_and_save(config, args.out, cae=args.cae or None, overwrite=args.force)
     print(json.dumps({"checkpoint": str(folder), "threshold": models.threshold, **scores}))
     return 0
@@ -149,8 +150,9 @@ def cmd_plan(args: argparse.Namespace) -> int:
         from toolkit.experiments.bench import usable_device
         from toolkit.learning import checkpoints, learned
 
+        device = usable_device(args.device)  # before the checkpoint is read
         models = checkpoints.load_models(args.checkpoint, scenario)
-        checker = partial(learned.LearnedChecker, models=models, device=usable_device(args.device))
+        checker = partial(learned.LearnedChecker, models=models, device=device)
     task = problems.build(
         scenario, seed=args.seed, sampler=args.sampler, planner=args.planner, checker=checker, **dict(args.option)
     )
@@ -221,11 +223,12 @@ def cmd_view(args: argparse.Namespace) -> int:
 
 def cmd_reproduce(args: argparse.Namespace) -> int:
     from toolkit.experiments import reproduce
+    from toolkit.experiments.bench import usable_device
 
+    device = usable_device(args.device)  # before anything is made or written
     names = sorted(scenarios.SCENARIOS) if args.scenario == "all" else [args.scenario]
-    configs = [
-        _config(args, name, workers=args.workers, samplers=args.samplers, baseline=args.baseline) for name in names
-    ]
+    settings = dict(workers=args.workers, samplers=args.samplers, baseline=args.baseline, planner=args.planner)
+    configs = [_config(args, name, device=device, **settings) for name in names]
     if len(configs) == 1:
         reproduce.reproduce(configs[0], args.out)
     else:

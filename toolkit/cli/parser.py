@@ -30,7 +30,7 @@ from toolkit.cli.arguments import (
 )
 from toolkit.cli.bench_parser import bench_options
 from toolkit.experiments.config import BASELINES
-from toolkit.planning import sampling
+from toolkit.planning import prm, sampling
 
 # -- the sub-commands' own options ----------------------------------------------------------------
 
@@ -73,6 +73,19 @@ def reproduce_options(cmd: argparse.ArgumentParser) -> None:
         help="what Table 3 compares prediction against (the medians table: always the best): "
         + "; ".join(f"{name}: {words}" for name, words in BASELINES.items())
         + " (default: the preset's own planner, so paper for the paper preset, best for strong)",
+    )
+    cmd.add_argument(
+        "--planner",
+        choices=prm.names(),
+        default=None,
+        help="plan Table 3 with this planner with and without prediction alike, e.g. batched (each round's samples "
+        "in one checker call, a device call with --device cuda); default: the preset's pairing",
+    )
+    cmd.add_argument(
+        "--device",
+        metavar="DEVICE",
+        help="cpu or cuda: where the networks train and the learned checker runs while planning and in the "
+        "throughput stage (default: training on cuda if present; planning where the models are)",
     )
 
 

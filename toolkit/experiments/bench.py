@@ -183,15 +183,23 @@ def usable_device(name: str | None) -> str | None:
 
 
 def device_calls(
-    scenario: Scenario, models: TrainedModels, batch: int, device: str, seed: int = 0, *, graph_sizes=(), calls=1
+    scenario: Scenario,
+    models: TrainedModels,
+    batch: int,
+    device: str,
+    seed: int = 0,
+    *,
+    graph_sizes=(),
+    calls=1,
+    workspace: Workspace | None = None,
 ) -> dict[str, tuple[Callable[[], object], int]]:
     """The learned checker on ``device`` and the exact one in torch there, asked about ``batch`` uniform samples of
-    a query workspace ``calls`` times a round: ``learned`` and ``exact_device`` take and return numpy,
-    ``learned_resident`` and ``exact_device_resident`` a float32 tensor on the device (each call waits for the
-    device's answer, as a caller reading it would). Each numpy batch is in its checker's own type: float32 for the
-    network (a float64 one is converted on the way, a pass over the host's memory), float64 for the exact check.
-    ``graph_sizes``: the learned checker's replayed sizes."""
-    ws = scenario.workspaces("query", 1, seed)[0]
+    ``workspace`` (default: a query workspace) ``calls`` times a round: ``learned`` and ``exact_device`` take and
+    return numpy, ``learned_resident`` and ``exact_device_resident`` a float32 tensor on the device (each call waits
+    for the device's answer, as a caller reading it would). Each numpy batch is in its checker's own type: float32
+    for the network (a float64 one is converted on the way, a pass over the host's memory), float64 for the exact
+    check. ``graph_sizes``: the learned checker's replayed sizes."""
+    ws = scenario.workspaces("query", 1, seed)[0] if workspace is None else workspace
     Q = scenario.robot.sample(np.random.default_rng(seed), batch)  # (batch, dof)
     on_device = torch.as_tensor(Q, dtype=torch.float32, device=device)
     learned = LearnedChecker(ws, models, device=device, graph_sizes=graph_sizes)
@@ -232,20 +240,22 @@ def _exact_call(
     batch: int = 20_000,
     seed: int = 0,
     make: Callable[[Workspace, BoxRobot], CollisionChecker] = exact_checker,
+    workspace: Workspace | None = None,
 ) -> tuple[Callable[[], object], int]:
-    """An exact checker (``make(workspace, robot)``, default the fastest) asked about ``batch`` uniform samples in a
-    query workspace, and ``batch``."""
-    ws = scenario.workspaces("query", 1, seed)[0]
+    """An exact checker (``make(workspace, robot)``, default the fastest) asked about ``batch`` uniform samples in
+    ``workspace`` (default: a query workspace), and ``batch``."""
+    ws = scenario.workspaces("query", 1, seed)[0] if workspace is None else workspace
     checker = make(ws, scenario.robot)
     Q = scenario.robot.sample(np.random.default_rng(seed), batch)
     return (lambda: checker.are_valid(Q)), batch
 
 
 def _learned_call(
-    scenario: Scenario, models: TrainedModels, batch: int = 10_000, seed: int = 0
+    scenario: Scenario, models: TrainedModels, batch: int = 10_000, seed: int = 0, workspace: Workspace | None = None
 ) -> tuple[Callable[[], object], int]:
-    """A learned checker of ``models`` asked about ``batch`` uniform samples in a query workspace, and ``batch``."""
-    ws = scenario.workspaces("query", 1, seed)[0]
+    """A learned checker of ``models`` asked about ``batch`` uniform samples in ``workspace`` (default: a query
+    workspace), and ``batch``."""
+    ws = scenario.workspaces("query", 1, seed)[0] if workspace is None else workspace
     checker = LearnedChecker(ws, models)
     Q = scenario.robot.sample(np.random.default_rng(seed), batch)
     return (lambda: checker.are_valid(Q)), batch

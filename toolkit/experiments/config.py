@@ -24,7 +24,7 @@ from toolkit import scenarios
 from toolkit.experiments import planners
 from toolkit.learning import presets
 from toolkit.learning.presets import Preset
-from toolkit.planning import sampling
+from toolkit.planning import prm, sampling
 from toolkit.scenarios import Scenario
 
 
@@ -110,7 +110,10 @@ class RunConfig:
     quick: bool = False
     workers: int | None = None  # processes for planning (None: one per core; 1: all in this process)
     progress: bool = True  # progress bars
-    device: str | None = None  # torch device for training (None: CUDA when present, else the CPU)
+    device: str | None = None  # torch device for training and for the learned checker in planning and throughput
+    #   (None: training on CUDA when present, else the CPU; the learned checker where the trained models are)
+    planner: str | None = None  # Table 3's planner with and without prediction alike (None: each mode's own,
+    #   planning_modes); a name of toolkit.planning.prm.names(), e.g. "batched"
     samplers: tuple[str, ...] = sampling.PAPER_SAMPLERS  # planned for Table 3: the paper's four, or registered ones
     imports: tuple[str, ...] = ()  # modules that register samplers, presets or scenarios (`toolkit --import`):
     #   a worker process imports them again, since it starts without what the parent registered
@@ -129,11 +132,13 @@ class RunConfig:
         samplers: tuple[str, ...] = sampling.PAPER_SAMPLERS,
         imports: tuple[str, ...] = (),
         baseline: str | None = None,
+        planner: str | None = None,
         **preset_changes,
     ) -> RunConfig:
         """Resolve names (``scenarios.get``, ``presets.get``, the sampler registry) once; ``preset_changes`` replace
         preset fields after quick shrinking (e.g. ``cae_epochs=5``). A seed is a whole number in ``0 .. 2**32 - 1``;
-        ``baseline`` a name of :data:`BASELINES` (None: :func:`default_baseline` of the preset)."""
+        ``baseline`` a name of :data:`BASELINES` (None: :func:`default_baseline` of the preset); ``planner`` a
+        registered planner's name."""
         samplers = sampling.check_names(samplers)
         scenario = scenarios.get(scenario) if isinstance(scenario, str) else scenario
         recipe = presets.get(preset) if isinstance(preset, str) else preset
@@ -144,6 +149,8 @@ class RunConfig:
             raise ValueError(f"seed must be a whole number in 0..{2**32 - 1}, got {seed!r}")
         if workers is not None and workers < 1:
             raise ValueError(f"workers must be 1 or more, got {workers!r}")
+        if planner is not None:
+            prm.get(planner)  # an unknown name: a one-line error listing the known
         if baseline is not None and baseline not in BASELINES:
             raise ValueError(f"unknown baseline {baseline!r}; choose one of {', '.join(BASELINES)}")
         return cls(
@@ -155,6 +162,7 @@ class RunConfig:
             workers=workers,
             progress=progress,
             device=device,
+            planner=planner,
             samplers=tuple(samplers),
             imports=tuple(imports),
         )
@@ -167,6 +175,7 @@ class RunConfig:
             "quick": self.quick,
             "seed": self.seed,
             "baseline": self.baseline,
+            **({"planner": self.planner} if self.planner else {}),  # only when named: older caches stay this run's
         }
 
     def workspace_counts(self) -> dict[str, int]:

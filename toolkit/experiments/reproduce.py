@@ -8,11 +8,13 @@
 3. learning: Table 1 and Table 2 measures, and P(valid) on the unseen test set;
 4. planning: every sampler, without and with prediction in turns query by query, on the paper's queries
    (:mod:`toolkit.experiments.queries`), the samplers spread over one process per core
-   (:mod:`toolkit.experiments.workers`). *Without* is the strongest exact planner and checker (the
-   lazy PRM, the compiled checker); where Table 3's baseline is another (``RunConfig.baseline``:
-   the ``paper`` preset's is Algorithm 1), that one is planned in the same turns too
-   (:func:`planning_modes`);
-5. throughput: the default exact, the python-fcl and the learned checker's speed (:mod:`toolkit.experiments.bench`);
+   (:mod:`toolkit.experiments.workers`; one process when the learned checker is on a GPU). *Without* is the
+   strongest exact planner and checker (the lazy PRM, the compiled checker); where Table 3's baseline is
+   another (``RunConfig.baseline``: the ``paper`` preset's is Algorithm 1), that one is planned in the same
+   turns too (:func:`planning_modes`); a run that names its planner (``--planner batched``) plans with it
+   both ways;
+5. throughput: the default exact, the python-fcl and the learned checker's speed (:mod:`toolkit.experiments.bench`;
+   with ``config.device``, the learned checker and the exact one in torch on it, numpy in/out and resident);
 
 and writes ``out/results.json`` (the contract's keys), ``out/tables.md`` (our value
 next to the published one in every cell, :mod:`toolkit.experiments.tables`) and PNG
@@ -125,7 +127,7 @@ def planning_stage(stages: Stages, config: RunConfig, models: training.TrainedMo
     # built here, so a worker plans them as they are; sent as plain pickled bytes (torch would otherwise share the
     # tensors through file descriptors, and a worker stopped mid-transfer leaves a traceback in the parent)
     job = partial(plan_sampler, config, pickle.dumps(planning_modes(config, models)))
-    workers = config.workers or os.cpu_count() or 1
+    workers = config.workers or (1 if on_gpu(config) else os.cpu_count() or 1)  # one GPU: one process times it
     with (
         tqdm(total=len(todo), desc=f"planning {config.scenario.name}", disable=not stages.progress, leave=False) as bar,
         processes(min(workers, len(todo))) as pool,
@@ -156,18 +158,24 @@ def plan_sampler(config: RunConfig, pickled_modes: bytes, sampler: str) -> tuple
     return sampler, {mode: runs[mode][1] for mode in modes}, time.perf_counter() - began
 
 
+def on_gpu(config: RunConfig) -> bool:
+    """Whether the run's learned checker computes on a GPU (``config.device``)."""
+    return config.device is not None and torch.device(config.device).type == "cuda"
+
+
 def planning_modes(config: RunConfig, models: training.TrainedModels) -> dict[str, queries.Mode]:
     """What the planning stage plans, in turns: ``without`` prediction, the strongest exact planner and checker (the
     lazy PRM with the default exact checker); ``with``, the planner paired with the run's recipe
-    (:mod:`toolkit.experiments.planners`) with the learned checker deciding samples; and, when Table 3's baseline
-    (``config.baseline``) is the paper's, ``baseline``: Algorithm 1 without prediction, with the default exact
-    checker (``paper``) or python-fcl's (``paper-fcl``). Each mode names its planner."""
-    scenario, settings = config.scenario, config.planner_settings()
+    (:mod:`toolkit.experiments.planners`) with the learned checker deciding samples, on ``config.device``; and,
+    when Table 3's baseline (``config.baseline``) is the paper's, ``baseline``: Algorithm 1 without prediction,
+    with the default exact checker (``paper``) or python-fcl's (``paper-fcl``). A run that names its planner
+    (``config.planner``, e.g. ``batched``) plans ``without`` and ``with`` with it alike. Each mode names its
+    planner."""
+    scenario, settings, named = config.scenario, config.planner_settings(), config.planner
+    learned = partial(LearnedChecker, models=models, device=config.device)
     modes = {
-        "without": queries.Mode(planner=make_planner(scenario, prm.DEFAULT, **settings)),
-        "with": queries.Mode(
-            partial(LearnedChecker, models=models), planner=make_planner(scenario, preset=config.preset, **settings)
-        ),
+        "without": queries.Mode(planner=make_planner(scenario, named or prm.DEFAULT, **settings)),
+        "with": queries.Mode(learned, planner=make_planner(scenario, named, preset=config.preset, **settings)),
     }
     if config.baseline != "best":
         exact = FCLChecker if config.baseline == "paper-fcl" else exact_checker
@@ -193,7 +201,9 @@ def reproduce(config: RunConfig, out: str | Path) -> dict:
     planning = planning_stage(stages, config, models)
     throughput = stages.json(
         "throughput",
-        lambda: bench.throughput(config.scenario, models, seed=config.seed, repeats=config.throughput_repeats()),
+        lambda: bench.throughput(
+            config.scenario, models, seed=config.seed, repeats=config.throughput_repeats(), device=config.device
+        ),
     )
     results = dict(
         settings,

@@ -10,18 +10,20 @@ Reading order:
 4. :mod:`toolkit.planning.planner` — the interface: a frozen ``Problem`` (exact checker, start, goal, sampler, the
    checker that decides samples, resolution), a planner (a ``name``, its own ``Params``, ``solve(problem, rng)``)
    and its ``PlanResult``;
-5. :mod:`toolkit.planning.options` — the roadmap planners' parameters: ``PaperParams`` (Algorithm 1's) and
-   ``LazyParams`` (the lazy PRM's), neither inheriting the other's;
+5. :mod:`toolkit.planning.options` — the roadmap planners' parameters: ``PaperParams`` (Algorithm 1's),
+   ``LazyParams`` (the lazy PRM's) and ``BatchedParams`` (the batched PRM's), none inheriting another's;
 6. :mod:`toolkit.planning.query_roadmap` — what both roadmap planners share: one query's roadmap, its
    counters and trace, and the exact verification of a path (repairing what fails);
 7. :mod:`toolkit.planning.paper_prm` — **Algorithm 1**, as the paper has it, on one page (planner ``paper``);
 8. :mod:`toolkit.planning.lazy_prm` — the lazy PRM (planner ``lazy``): the best exact roadmap planner, and
    prediction beyond the paper;
-9. :mod:`toolkit.planning.rrt_connect` — RRT-Connect (planner ``rrt-connect``): two trees, for a single query the
-   fastest exact planner;
-10. :mod:`toolkit.planning.prm` — the planners by name (``register``, ``get``, ``names``; ``DEFAULT``, the rule for
+9. :mod:`toolkit.planning.batched_prm` — the batched PRM (planner ``batched``): the lazy PRM with each round's
+   samples decided in one checker call, a device call when the checker is on a device;
+10. :mod:`toolkit.planning.rrt_connect` — RRT-Connect (planner ``rrt-connect``): two trees, for a single query the
+    fastest exact planner;
+11. :mod:`toolkit.planning.prm` — the planners by name (``register``, ``get``, ``names``; ``DEFAULT``, the rule for
     which runs) and ``plan(exact, start, goal, ...)``, one entry to any of them;
-11. :mod:`toolkit.planning.ompl` — our checkers and samplers inside OMPL, for comparison.
+12. :mod:`toolkit.planning.ompl` — our checkers and samplers inside OMPL, for comparison.
 
 The paper's query sets, one query built from a scenario (``toolkit.experiments.problems.build``) and
 which planner a recipe's runs use are the experiments' business (:mod:`toolkit.experiments`).

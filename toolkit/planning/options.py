@@ -4,10 +4,13 @@
   planner ``paper``): rounds of |S| = ``n_samples`` attempts, every candidate edge checked exactly as
   it is added;
 - :class:`LazyParams`: the lazy PRM (:mod:`toolkit.planning.lazy_prm`, planner ``lazy``), the best
-  exact planner we have, and with prediction the paper's future work, learned edge screening.
+  exact planner we have, and with prediction the paper's future work, learned edge screening;
+- :class:`BatchedParams`: the batched PRM (:mod:`toolkit.planning.batched_prm`, planner ``batched``),
+  the lazy PRM with each round's samples decided in one checker call (a device call on a device).
 
-Neither inherits the other's: both take the fields every roadmap planner reads from
-:class:`RoadmapParams` (what :mod:`toolkit.planning.query_roadmap` reads), and each adds its own.
+No planner's parameters inherit another's: all take the fields every roadmap planner reads from
+:class:`RoadmapParams` (what :mod:`toolkit.planning.query_roadmap` reads), the lazy planners those of
+:class:`LazyEdgeParams`, and each adds its own.
 The query's resolution and sampler are the problem's, not a planner's
 (:class:`toolkit.planning.planner.Problem`).
 """
@@ -76,8 +79,9 @@ class PaperParams(RoadmapParams):
 
 
 @dataclass(frozen=True)
-class LazyParams(RoadmapParams):
-    """The lazy PRM's parameters: the roadmap planners', and how it decides edges lazily and grows its rounds."""
+class LazyEdgeParams(RoadmapParams):
+    """What the lazy planners read (no planner's parameters themselves): the roadmap planners', and how edges are
+    decided lazily and rounds grow."""
 
     auxiliary: str = "confirmed"  # with prediction, rounds after the first: see AUXILIARY
     first_samples: int | None = 50  # round r samples min(first_samples * 2**(r-1), n_samples); None: n_samples
@@ -96,3 +100,16 @@ class LazyParams(RoadmapParams):
         "screen_reject": "in [0, 1]",
         "screen_penalty": "non-negative and finite",
     }
+
+
+@dataclass(frozen=True)
+class LazyParams(LazyEdgeParams):
+    """The lazy PRM's parameters: the roadmap planners', and how it decides edges lazily and grows its rounds."""
+
+
+@dataclass(frozen=True)
+class BatchedParams(LazyEdgeParams):
+    """The batched PRM's parameters: the lazy PRM's fields, every round |S| attempts (on a device a call of |S|
+    costs what one of 50 does, so rounds need not grow)."""
+
+    first_samples: int | None = None  # round r samples min(first_samples * 2**(r-1), n_samples); None: n_samples

@@ -23,8 +23,10 @@ wrong path.
 
 :class:`PRM` is the planner ``paper`` (:mod:`toolkit.planning.planner`: a name, its own parameters,
 :class:`~toolkit.planning.options.PaperParams`, and ``solve(problem, rng)``). It keeps the two steps
-that a variant may change as methods: how many attempts a round samples (:meth:`PRM.round_size`)
-and how a candidate edge is decided (:meth:`PRM.decide`); :class:`~toolkit.planning.lazy_prm.LazyPRM` changes both.
+that a variant may change as methods: how many attempts a round samples (:meth:`PRM.round_size`),
+how a sampler's attempts are drawn (:meth:`PRM.draw`) and how a candidate edge is decided
+(:meth:`PRM.decide`); :class:`~toolkit.planning.lazy_prm.LazyPRM` changes the first and the last,
+:class:`~toolkit.planning.batched_prm.BatchedPRM` the draws too.
 """
 
 from __future__ import annotations
@@ -37,6 +39,7 @@ from toolkit.planning.local_planner import check_edges
 from toolkit.planning.options import PaperParams
 from toolkit.planning.planner import Planner, PlanResult, Problem
 from toolkit.planning.query_roadmap import QueryRoadmap
+from toolkit.planning.sampling import Sampler
 
 
 class PRM(Planner):
@@ -77,15 +80,19 @@ class PRM(Planner):
         """This round's ``S' (M, dof)`` and whether an exact checker vouches for them."""
         n, params, round_ = self.round_size(query), self.params, query.stats["rounds"]
         if not query.predicted:  # lines 2-3 without prediction: an exact checker keeps S'
-            return query.sampler.sample(n, rng), True
+            return self.draw(query.sampler, n, rng), True
         if round_ == 1 or params.auxiliary == "predicted":
             # Algorithm 1, line 2: the sampler draws S; line 3: the learned checker keeps S' (in batches)
-            return query.sampler.sample(n, rng), False
+            return self.draw(query.sampler, n, rng), False
         # Algorithm 1, line 4: "additional valid samples" from the auxiliary sampler, checked exactly
         if params.auxiliary == "exact" or (round_ - 1) % params.exact_every == 0:
-            return query.exact_sampler.sample(n, rng), True
-        S = query.sampler.sample(n, rng)  # "confirmed": prediction proposes, the exact checker confirms
+            return self.draw(query.exact_sampler, n, rng), True
+        S = self.draw(query.sampler, n, rng)  # "confirmed": prediction proposes, the exact checker confirms
         return S[query.exact.are_valid(S)], True
+
+    def draw(self, sampler: Sampler, n: int, rng: np.random.Generator) -> np.ndarray:
+        """``(M, dof)`` the samples of ``n`` attempts of ``sampler``, asking its checker as the sampler does."""
+        return sampler.sample(n, rng)
 
     def decide(self, query: QueryRoadmap, pairs: np.ndarray) -> None:
         """Algorithm 1, line 4: add the candidate edges ``pairs (C, 2)`` that the exact checker accepts, point by

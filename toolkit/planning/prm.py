@@ -7,6 +7,8 @@ with its own parameters (:mod:`toolkit.planning.planner`):
   rounds of |S|, every candidate edge checked exactly as it is added;
 - ``lazy`` (:data:`DEFAULT`): the lazy PRM, :mod:`toolkit.planning.lazy_prm`: the best exact
   planner, and with prediction learned edge screening (the paper's future work);
+- ``batched``: the lazy PRM with each round's samples decided in one checker call (a device call when
+  the checker is on a device), :mod:`toolkit.planning.batched_prm`;
 - ``rrt-connect``: RRT-Connect, :mod:`toolkit.planning.rrt_connect`: two trees, for a single query
   the fastest exact planner (no prediction);
 - any class with a ``name``, a ``Params`` class and ``solve(problem, rng)``: a tree planner too.
@@ -24,8 +26,9 @@ from dataclasses import is_dataclass
 import numpy as np
 
 from toolkit.geometry.collision import CollisionChecker
+from toolkit.planning.batched_prm import BatchedPRM
 from toolkit.planning.lazy_prm import LazyPRM
-from toolkit.planning.options import AUXILIARY, LazyParams, PaperParams
+from toolkit.planning.options import AUXILIARY, BatchedParams, LazyParams, PaperParams
 from toolkit.planning.paper_prm import PRM
 from toolkit.planning.planner import Planner, PlanResult, Problem
 from toolkit.planning.query_roadmap import GOAL, STAGES, START, PlanStep
@@ -40,6 +43,8 @@ __all__ = [
     "PRM",
     "STAGES",
     "START",
+    "BatchedPRM",
+    "BatchedParams",
     "LazyPRM",
     "LazyParams",
     "PaperParams",
@@ -55,7 +60,8 @@ __all__ = [
 ]
 
 DEFAULT = "lazy"  # the planner that runs when none is named: the best exact planner, with or without prediction
-PLANNERS: dict[str, type[Planner]] = {p.name: p for p in (PRM, LazyPRM, RRTConnect)}  # name -> planner class
+# name -> planner class
+PLANNERS: dict[str, type[Planner]] = {p.name: p for p in (PRM, LazyPRM, BatchedPRM, RRTConnect)}
 
 
 def register(planner: type[Planner], *, replace: bool = False) -> type[Planner]:

@@ -11,7 +11,7 @@ steps of ``resolution``, the end included) *coarse to fine*: first every ``coars
 checker call, then the rest in a second, so that an extension into an obstacle usually stops after the first,
 small call. An extension that meets an obstacle adds nothing (the tree is *trapped*). OMPL's RRTConnect (Şucan,
 Moll, Kavraki 2012) asks its checker one configuration a call; here a call holds a few tens, since a call's fixed
-cost outweighs many configurations' (``docs/benchmarks.md``, "Against OMPL").
+cost outweighs many configurations' (``docs/benchmarks.md``, "How do our planners compare with OMPL's?").
 
 Every edge of a path was checked at ``resolution`` as it grew; the path is then verified exactly at the problem's
 ``fine_resolution`` (10x finer) with clearance certificates (``local_planner.certify_edges``: the answer of

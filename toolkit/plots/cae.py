@@ -165,8 +165,9 @@ def contraction(
     the last panel is a perfect copy machine: it changes exactly the flipped cells.
     """
     flips = np.asarray(flips)
-    fig = Figure(figsize=(12, 3.8))
-    ax_j, ax_z, ax_x = fig.subplots(1, 3)
+    fig = Figure(figsize=(6.2, 6.0), layout="constrained")  # as wide as a chapter page's column: text at its size
+    panels = fig.subplot_mosaic([["j", "z"], ["j", "x"]])  # the norms tall on the left, the two responses stacked
+    ax_j, ax_z, ax_x = panels["j"], panels["z"], panels["x"]
     names = list(jacobian_norms)
     ink = dict(color=COLORS["ink"])
     ax_j.boxplot(
@@ -194,7 +195,6 @@ def contraction(
     for ax in (ax_z, ax_x):
         ax.set_xlabel("cells flipped")
         ax.legend(fontsize=8)
-    fig.tight_layout()
     said = "; ".join(
         f"{name}: median Jacobian norm {np.median(jacobian_norms[name]):.3g}; flipping {flips[-1]:g} cells moves z by "
         f"{np.mean(latent_shift[name][-1]):.1%} of its length and changes {np.mean(decoded_change[name][-1]):.3g} "

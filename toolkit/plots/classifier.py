@@ -156,8 +156,9 @@ def roc_curve(curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]], title:
 def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, title: str = "") -> Figure:
     """One threshold three ways: the decision map (each cell coloured by its kind of answer), the counts, the ROC."""
     predicted = np.asarray(probability) >= threshold
-    fig = Figure(figsize=(13, 4.3), layout="constrained")
-    ax_map, ax_counts, ax_roc = fig.subplots(1, 3, width_ratios=(1.1, 1, 1))
+    fig = Figure(figsize=(6.2, 6.8), layout="constrained")  # two rows, as wide as a chapter page's column
+    grid_spec = fig.add_gridspec(2, 2, height_ratios=(1.25, 1))
+    ax_map, ax_counts, ax_roc = (fig.add_subplot(grid_spec[where]) for where in ((0, 0), (1, slice(None)), (0, 1)))
     _draw_decision(ax_map, predicted, valid, grid)
     ax_map.set_title(f"decision at threshold {threshold:.2f}", fontsize=9)
     _draw_counts(ax_counts, predicted, valid)
@@ -172,7 +173,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     ]
     boundary = Line2D([], [], color=BOUNDARY, path_effects=halo(1.2))
     labels = ["true C-obstacle boundary", *ANSWERS]
-    fig.legend([boundary, *handles], labels, loc="outside lower center", ncols=5, fontsize=8, frameon=False)
+    fig.legend([boundary, *handles], labels, loc="outside lower center", ncols=3, fontsize=8, frameon=False)
     text = f"{title + ': ' if title else ''}the model's decision at threshold {threshold:.2f} over {grid.names[0]} and "
     text += f"{grid.names[1]}, each cell by its kind of answer (dangerous ones marked with squares, conservative ones "
     text += f"with dots), their counts, and the ROC curve. {_answers_in_words(predicted, valid)}; {roc}."

@@ -3,7 +3,10 @@
 :func:`crossover` draws the sweeps of :func:`toolkit.experiments.crossover.crossover` (its
 results dict, as ``crossover.json`` holds it): one panel per variable that makes an exact check
 dear, microseconds per configuration on log-log axes, shaded where the network is the cheaper
-check and a dotted line where its curve crosses an exact one. Nothing here calls ``show()``.
+check by more than the band in which a timing moves (the verdict "network cheaper" of
+:func:`toolkit.util.verdicts.cost_verdict`, the words the tables and the conclusion use: a point
+they call "can't tell" is not shaded) and a dotted line where its curve crosses an exact one.
+Nothing here calls ``show()``.
 """
 
 from __future__ import annotations
@@ -13,6 +16,7 @@ from matplotlib.figure import Figure
 
 from toolkit.plots.alt import describe
 from toolkit.plots.palette import COLORS, halo
+from toolkit.util.verdicts import CHEAPER, CLOSE, cost_verdict
 
 STYLES = {  # checker -> (marker and line, colour, legend)
     "exact": ("o-", COLORS["exact"], "exact, default (compiled)"),
@@ -23,8 +27,9 @@ STYLES = {  # checker -> (marker and line, colour, legend)
 
 def crossover(results: dict) -> Figure:
     """One panel per swept variable: cost per configuration of the default exact checker, of python-fcl and of
-    the learned checker against the variable; shaded where learning is cheaper than the default exact check,
-    a dotted vertical line where two curves cross (the crossing's value beside it)."""
+    the learned checker against the variable; shaded where the network is cheaper than the default exact check
+    by more than :data:`~toolkit.util.verdicts.CLOSE` (the verdict "network cheaper"), a dotted vertical line where
+    two curves cross (the crossing's value beside it)."""
     sweeps = results["variables"]
     columns = min(len(sweeps), 2)
     rows = -(-len(sweeps) // columns)
@@ -37,7 +42,7 @@ def crossover(results: dict) -> Figure:
     quick = " (quick sizes)" if results.get("quick") else ""
     fig.suptitle(
         f"Where prediction pays: {results['scenario']}, preset {results['preset']}{quick}; "
-        "shaded: the network is the cheaper check"
+        f"shaded: the network cheaper by more than {CLOSE:.0%}"
     )
     fig.tight_layout()
     text = f"Cost per configuration of the exact and the learned check, {results['scenario']}, preset "
@@ -50,31 +55,30 @@ def _in_words(sweep: dict) -> str:
     x = np.asarray(sweep["values"], dtype=float)
     exact, learned = np.asarray(sweep["exact_us"], float), np.asarray(sweep["learned_us"], float)
     ratio = learned / exact  # (V,) below 1: the network is cheaper
-    wins = [f"{v:,.0f}" for v, r in zip(x, ratio) if r < 1]
+    wins = [f"{v:,.0f}" for v, r in zip(x, ratio) if cost_verdict(float(r)) == CHEAPER]
     low, high = (f"{r:.2f}" if r < 10 else f"{r:,.0f}" for r in (np.nanmin(ratio), np.nanmax(ratio)))
     text = f"{sweep['label']} from {x[0]:,.0f} to {x[-1]:,.0f}: the network costs {low} to {high} times the exact "
     text += "check; "
-    return text + (f"cheaper at {', '.join(wins)}." if wins else "never cheaper.")
+    by = f"cheaper by more than {CLOSE:.0%}"
+    return text + (f"{by} at {', '.join(wins)}." if wins else f"never {by}.")
 
 
 def _panel(ax, sweep: dict) -> None:
-    """One variable: the three curves, the values where the network is cheaper shaded, the crossings."""
+    """One variable: the three curves, the values where the network is cheaper (its verdict) shaded, the crossings."""
     x = np.asarray(sweep["values"], dtype=float)
     exact, learned = np.asarray(sweep["exact_us"], float), np.asarray(sweep["learned_us"], float)
+    cheaper = np.array([cost_verdict(float(r)) == CHEAPER for r in learned / exact])  # (V,) beyond the band
     for name in ("exact", "fcl", "learned"):
         style, colour, label = STYLES[name]
         outline = halo(1.5) if name == "learned" else []  # orange alone is too light on white
         ax.plot(x, np.asarray(sweep[f"{name}_us"], float), style, color=colour, label=label, path_effects=outline)
-    ax.fill_between(
-        x,
-        learned,
-        exact,
-        where=learned < exact,
-        interpolate=True,
-        color=COLORS["learned"],
-        alpha=0.2,
-        label="network cheaper",
-    )
+    bounds = _halfway(x)  # (V+1,)
+    for n, i in enumerate(np.flatnonzero(cheaper)):  # a band round each value the verdict calls "network cheaper"
+        legend = f"network cheaper by > {CLOSE:.0%}" if n == 0 else None
+        span = bounds[i : i + 2]  # (2,) its band: the panel's whole height (a shaded area, not a mark)
+        ax.fill_between(
+            span, 0, 1, transform=ax.get_xaxis_transform(), color=COLORS["learned"], alpha=0.2, lw=0, label=legend
+        )
     for name, found in sweep["crossing"].items():
         if found is not None:
             ax.axvline(found["value"], ls=":", color=STYLES[name][1])
@@ -88,3 +92,12 @@ def _panel(ax, sweep: dict) -> None:
     ax.set_xlabel(sweep["label"])
     ax.set_ylabel("µs per configuration")
     ax.legend(fontsize=8)
+
+
+def _halfway(x: np.ndarray) -> np.ndarray:
+    """``(V+1,)`` the bounds of a band round each of the ``(V,)`` increasing values ``x`` on a log axis: halfway
+    (geometrically) between neighbours, as far beyond the first and the last (a factor 1.5 for a lone value)."""
+    if len(x) == 1:
+        return np.array([x[0] / 1.5, x[0] * 1.5])
+    middle = np.sqrt(x[1:] * x[:-1])  # (V-1,)
+    return np.concatenate([[x[0] ** 2 / middle[0]], middle, [x[-1] ** 2 / middle[-1]]])

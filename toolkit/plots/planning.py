@@ -27,6 +27,7 @@ from toolkit.plots.alt import describe
 from toolkit.plots.cspace import checker_workspace
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, halo
 from toolkit.plots.slices import slice_configs
+from toolkit.util.verdicts import per_query_ratios
 
 MODES = ("without", "with")
 STAGE_KEYS = ("sampling_s", "connection_s", "query_s")  # PRM stats, in the order the planner spends them
@@ -216,10 +217,11 @@ def stage_times(panels: dict[str, dict]) -> Figure:
     """Per panel (e.g. a scenario), a ``planning`` table ``{sampler: {"without": summary, "with": summary}}``
     (``queries.summarize``): one bar per sampler and mode, as tall as the median total over the queries, split
     into the planner's stages in the shares of an average query (``_share``; the rest, encoding and set-up, on top
-    as "other"); a whisker from the total's first to third quartile; the ratio of the median totals above each
-    pair."""
-    fig = Figure(figsize=(5.2 * len(panels), 4.8))
-    axes = fig.subplots(1, len(panels), squeeze=False)[0]
+    as "other"); a whisker from the total's first to third quartile; above each pair the median of the queries' own
+    ratios, time with / without (the summaries' ``total_s_per_query``: each query was solved in both modes in turn),
+    the number the chapters' tables read their verdicts from."""
+    fig = Figure(figsize=(6.2, 3.6 * len(panels) + 0.6))  # one panel a row, as wide as a chapter page's column
+    axes = fig.subplots(len(panels), 1, squeeze=False)[:, 0]
     said = []
     for ax, (title, planning) in zip(axes, panels.items()):
         names = list(planning)  # the samplers planned, in their order
@@ -232,7 +234,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         table.update({key: table["total_s"] * table[f"{key}_share"] for key in STAGE_KEYS})
         table["other_s"] = np.maximum(table["total_s"] - sum(table[k] for k in STAGE_KEYS), 0.0)
         top = _draw_stage_bars(ax, x, table)  # (samplers, modes) the bars' and whiskers' tops
-        ratio = table["total_s"][:, 1] / np.maximum(table["total_s"][:, 0], 1e-12)
+        ratio = [float(np.median(per_query_ratios(planning[s]))) for s in names]  # (samplers,)
         for i, r in enumerate(ratio):
             ax.annotate(
                 f"{r:.2f}x", (i, top[i].max()), xytext=(0, 3), textcoords="offset points", ha="center", fontsize=8
@@ -241,18 +243,20 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         ax.set_xlabel("sampler, without / with prediction")
         ax.set_ylabel("seconds per query (median)")
         ax.set_ylim(0, top.max() * 1.15)
-        ax.set_title(f"{title}: median total with / without prediction", fontsize=9)
+        ax.set_title(f"{title}; above a pair: median per-query with / without", fontsize=9)
         said.append(
             f"{title}: "
             + ", ".join(
-                f"{s} {table['total_s'][i, 0]:.3g} s without, {table['total_s'][i, 1]:.3g} s with ({ratio[i]:.2f}x)"
+                f"{s} {table['total_s'][i, 0]:.3g} s without, {table['total_s'][i, 1]:.3g} s with "
+                f"(per query {ratio[i]:.2f}x)"
                 for i, s in enumerate(names)
             )
         )
     fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=3, fontsize=8, frameon=False)
-    fig.tight_layout(rect=(0, 0.12, 1, 1))
+    fig.tight_layout(rect=(0, 0.6 / fig.get_figheight(), 1, 1))  # the legend in the 0.6 in below the panels
     text = "Median planning time per query without and with prediction, per sampler, split into the planner's stages"
-    return describe(fig, f"{text} (hatched), with the ratio with / without above each pair. {'; '.join(said)}.")
+    text += " (hatched), with the median of the queries' own time ratios, with / without, above each pair"
+    return describe(fig, f"{text}. {'; '.join(said)}.")
 
 
 def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndarray:

@@ -30,6 +30,7 @@ from toolkit.util.verdicts import (  # noqa: F401 (the words and bands; chapters
     UNSURE,
     cost_verdict,
     judge,
+    per_query_ratios,
     time_verdict,
 )
 
@@ -37,14 +38,6 @@ OUTLIER = 5.0  # a query at least this many times the other queries' median tota
 MOVED = 1.5  # ... and it moves the mean when the mean is this many times the other queries' median
 SCORES = ("acc", "tpr", "tnr")  # a classifier's scores, as toolkit.learning.metrics names them (paper, Table 2)
 SCORE_NAMES = {"acc": "accuracy", "tpr": "TPR", "tnr": "TNR"}
-
-
-def per_query_ratios(row: Mapping[str, Mapping]) -> np.ndarray:
-    """``(queries,)`` total time with / without prediction of each query, from a ``compare_prediction`` row
-    ``{"without": summary, "with": summary}`` (the two modes solved each query in turn)."""
-    without = np.asarray(row["without"]["total_s_per_query"], dtype=float)  # (queries,)
-    with_ = np.asarray(row["with"]["total_s_per_query"], dtype=float)  # (queries,)
-    return with_ / np.maximum(without, 1e-12)
 
 
 def planning_verdict(row: Mapping[str, Mapping], tie: float = TIE) -> tuple[float, float, float, str]:

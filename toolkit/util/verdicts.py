@@ -9,6 +9,8 @@ The chapters' tables (:mod:`toolkit.teaching.findings`) and the crossover's conc
 
 from __future__ import annotations
 
+from collections.abc import Mapping
+
 import numpy as np
 
 TIE = 0.10  # planning: a time ratio within 10 % of 1 is a tie (queries timed in turns moved that much run to run)
@@ -45,3 +47,12 @@ def time_verdict(low: float, high: float | None = None, tie: float = TIE) -> str
 def cost_verdict(ratio: float, tie: float = CLOSE) -> str:
     """:data:`CHEAPER`, :data:`DEARER` or :data:`NEAR` for a cost per configuration, network / exact."""
     return {"below": CHEAPER, "above": DEARER}.get(judge(ratio, ratio, tie), NEAR)
+
+
+def per_query_ratios(row: Mapping[str, Mapping]) -> np.ndarray:
+    """``(queries,)`` total time with / without prediction of each query, from a ``compare_prediction`` row
+    ``{"without": summary, "with": summary}`` (the two modes solved each query in turn): the ratios a planning
+    verdict is read from, and the chapters' figures print their median."""
+    without = np.asarray(row["without"]["total_s_per_query"], dtype=float)  # (queries,)
+    with_ = np.asarray(row["with"]["total_s_per_query"], dtype=float)  # (queries,)
+    return with_ / np.maximum(without, 1e-12)
