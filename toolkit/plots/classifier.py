@@ -79,12 +79,20 @@ def path_map(
 
     Nodes in collision (``nodes_valid`` False, by the exact checker) are the dangerous mistakes the
     planner accepted: crosses (``COLORS["dangerous"]``). The path, checked exactly, avoids them; it is dashed with a
-    diamond per configuration, so that it stands apart from the solid C-obstacle boundary.
+    diamond per configuration, so that it stands apart from the solid C-obstacle boundary. The model's threshold is a
+    dotted line (P(valid) = threshold): the roadmap's dots on its dark side are nodes the model rejected, which the
+    exact checker drew; conservative cells are not hatched here, so that no dot is mistaken for a node.
     """
     nodes, nodes_valid, path = np.asarray(nodes), np.asarray(nodes_valid, dtype=bool), np.asarray(path)
     fig = Figure(figsize=(6, 6.2), layout="constrained")
     ax = fig.subplots()
-    fig.colorbar(_draw_probability(ax, probability, valid, grid, threshold), ax=ax, label="P(valid)", shrink=0.8)
+    image = _draw_probability(ax, probability, valid, grid, threshold, conservative=False)
+    fig.colorbar(image, ax=ax, label="P(valid)", shrink=0.8)
+    p = _on_grid(probability, grid, "probability")
+    if p.min() < threshold <= p.max():
+        cut_line = ax.contour(*grid.axes, p.T, levels=[threshold], colors=COLORS["ink"], linestyles=":", linewidths=1.5)
+        cut_line.set_path_effects(halo(1.5, ("free",)))  # a white ring: it shows on the dark side too
+    cut = Line2D([], [], color=COLORS["ink"], linestyle=":", linewidth=1.5, label=f"P(valid) = {threshold:.2f}")
     x, y = grid.dofs
     ax.plot(
         nodes[nodes_valid, x],
@@ -115,7 +123,7 @@ def path_map(
         path_effects=halo(2.5),
     )
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=10, wrap=True)
-    _legend(fig, _mistake_handles() + ax.get_lines())
+    _legend(fig, _mistake_handles()[:1] + [cut] + ax.get_lines())
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
     text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (crosses), and the"
     return describe(fig, text + f" returned path through {len(path)} configurations, checked exactly.")
@@ -191,9 +199,9 @@ def _answers_in_words(predicted_valid, valid) -> str:
 # -- the panels ----------------------------------------------------------------
 
 
-def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float):
+def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float, *, conservative: bool = True):
     """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary, dangerous cells as squares, conservative cells
-    tinted and hatched with dots (:func:`_cells`)."""
+    tinted and hatched with dots (:func:`_cells`; ``conservative=False``: not marked, where other dots are drawn)."""
     probability = _on_grid(probability, grid, "probability")
     image = ax.imshow(
         probability.T,
@@ -207,7 +215,8 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     )
     _draw_boundary(ax, valid, grid)
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
-    ax.add_collection(_cells(grid, codes == 1, label=ANSWERS[1], **CONSERVATIVE_CELLS))
+    if conservative:
+        ax.add_collection(_cells(grid, codes == 1, label=ANSWERS[1], **CONSERVATIVE_CELLS))
     i, j = np.nonzero(codes == 3)
     ax.scatter(
         grid.axes[0][i],
