@@ -61,6 +61,17 @@ def chapter_02(nb) -> list[str]:
     )
     if len(pairs) != 2 or any(int(a) != int(b) + int(c) for a, b, c in pairs):
         problems.append(f"02: the two decoders' counts are missing or do not add up: {pairs}")
+    adagrad = re.search(
+        r"per epoch: first ([\d.,e+]+), last [\d.,e+]+, highest ([\d.,e+]+); .*?: ([\d.]+)% of cells right, "
+        r'"all free": ([\d.]+)%',
+        found,
+    )
+    if adagrad is None:
+        problems.append("02: the Adagrad run's line is not printed")
+    else:  # the prose: the loss explodes by orders of magnitude, and the CAE scores below "all free"
+        first, highest, right, free = (float(v.replace(",", "")) for v in adagrad.groups())
+        if highest < 100 * first or right >= free:
+            problems.append(f"02: Adagrad at 0.1 did not diverge here: {adagrad.group(0)}")
     return problems
 
 
@@ -85,6 +96,33 @@ def chapter_03(nb) -> list[str]:
                 problems.append(f"03: {preset}, {kind}: {acc}% is not {side} {base}%")
     if "the model calls every sample valid" not in found:
         problems.append("03: the threshold sweep's sentence is not printed")
+    elif 'no threshold beats "always valid"' not in found:
+        problems.append('03: section 6 says no threshold beats "always valid"; the sweep\'s sentence says one does')
+    return problems + _chapter_03_verdict(found)
+
+
+def _chapter_03_verdict(found: str) -> list[str]:
+    """The closing verdict's claims, read off the table it stands above: the `paper` preset about a coin flip on
+    balanced samples and worse than chance on validity-blind ones, where "always valid" scores close to the paper's
+    accuracy; the `strong` preset far better on both."""
+    row = {
+        (who, kind): _percent(found, f"| {label} | {kind}")
+        for who, label in (("paper", "`paper` preset, 2DS unseen"), ("strong", "`strong` preset, 2DS unseen"))
+        for kind in ("balanced", "validity-blind")
+    }
+    always = _percent(found, "| always valid | validity-blind")
+    published = _percent(found, "Table 2, 2DS unseen | validity-blind")
+    if not all(row.values()) or not always or not published:
+        return ["03: the closing table lacks a row its verdict reads"]
+    problems = []
+    if not 40 <= row["paper", "balanced"][0] <= 60:
+        problems.append(f"03: the `paper` preset scores {row['paper', 'balanced'][0]}% balanced: not about a coin flip")
+    if not row["paper", "validity-blind"][0] < min(50, always[0]):
+        problems.append("03: the `paper` preset is not worse than chance (and 'always valid') on validity-blind ones")
+    if abs(always[0] - published[0]) > 6:
+        problems.append(f"03: 'always valid' scores {always[0]}%: not close to the paper's {published[0]}%")
+    if any(row["strong", kind][0] < row["paper", kind][0] + 20 for kind in ("balanced", "validity-blind")):
+        problems.append("03: the `strong` preset does not classify far better than the `paper` preset")
     return problems
 
 

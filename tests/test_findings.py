@@ -171,15 +171,17 @@ def test_describe_accuracy_against_always_valid_and_a_coin_flip():
 
 
 def test_describe_threshold_sweep_finds_the_switch_and_the_best_threshold():
+    # the best threshold is read from the figure's sweep, so that the sentence and the figure name the same one
     probability = np.array([0.45, 0.46, 0.47, 0.48, 0.9, 0.91, 0.92, 0.93, 0.94, 0.95])
     valid = np.array([False, False, False, False, True, True, True, True, True, True])
     sentence = findings.describe_threshold_sweep(probability, valid)
     assert sentence == (
         'Up to a threshold of 0.45 the model calls every sample valid: TPR 1, TNR 0, "always valid", 60% accuracy. '
         "The middle 80 % of its P(valid) lie between 0.46 and 0.94: that is where its answers switch. "  # 0.459, 0.941
-        "Its best accuracy over all thresholds is 100%, at 0.90."
-    )
+        'Its best accuracy over the thresholds 0, 0.01, ..., 1 is 100%, at 0.49: 40 points above "always valid".'
+    )  # the lowest threshold of the sweep (toolkit.learning.metrics.SWEEP) that keeps 0.9 and rejects 0.48
     flat = findings.describe_threshold_sweep(np.full(4, 0.5), np.array([True, True, True, False]))
-    assert "lie between 0.50 and 0.50" in flat and flat.endswith("is 75%, at 0.50.")
+    assert "lie between 0.50 and 0.50" in flat
+    assert flat.endswith('is 75%, at 0.00: no threshold beats "always valid".')  # at 0.00 to 0.50 it calls all valid
     with pytest.raises(ValueError, match="must be equal, non-empty"):
         findings.describe_threshold_sweep(np.zeros(3), np.zeros(4, dtype=bool))

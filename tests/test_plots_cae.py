@@ -78,7 +78,9 @@ def test_accuracy_vs_all_free_has_one_point_per_workspace_and_the_diagonal():
         np.testing.assert_allclose(collection.get_offsets(), np.column_stack([all_free, accuracy]))
     (diagonal,) = ax.get_lines()
     np.testing.assert_allclose(diagonal.get_xdata(), diagonal.get_ydata())
-    assert "99.7%" in ax.get_legend().get_texts()[0].get_text()  # the seen group's mean accuracy
+    (legend,) = fig.legends  # below the axes, over no point
+    assert "99.7%" in legend.get_texts()[0].get_text()  # the seen group's mean accuracy
+    assert ax.collections[0].get_zorder() > ax.collections[1].get_zorder()  # the smaller group drawn on top
 
 
 def test_contraction_shows_each_models_norms_and_mean_responses():

@@ -3,7 +3,7 @@ checker's C-obstacles, exactly the dangerous and conservative cells, hand-comput
 
 import numpy as np
 import pytest
-from matplotlib.collections import PathCollection
+from matplotlib.collections import PathCollection, PolyCollection
 from matplotlib.colors import to_rgba
 from matplotlib.contour import ContourSet
 
@@ -45,6 +45,15 @@ def cell_centres(grid, mask):
 def scatter_points(ax, label):
     (collection,) = [c for c in ax.collections if isinstance(c, PathCollection) and c.get_label() == label]
     return {tuple(p) for p in collection.get_offsets()}
+
+
+def hatched_cells(ax, label, grid):
+    """The centres of the cells a hatched collection covers (each one a cell's square: checked)."""
+    (collection,) = [c for c in ax.collections if isinstance(c, PolyCollection) and c.get_label() == label]
+    squares = [p.vertices[:4] for p in collection.get_paths()]
+    cell = (grid.upper - grid.lower) / N  # (2,)
+    assert collection.get_hatch() and all(np.ptp(v, axis=0) == pytest.approx(cell) for v in squares)
+    return {tuple(np.round(v.mean(axis=0), 9)) for v in squares}
 
 
 def test_slice_grid_sweeps_two_dofs_over_cell_centres_and_fixes_the_rest():
@@ -118,7 +127,8 @@ def test_probability_map_shows_the_probabilities_the_boundary_and_exactly_the_mi
     dangerous, conservative = (probability >= threshold) & ~valid, (probability < threshold) & valid
     assert dangerous.sum() > 0 and conservative.sum() > 0  # the test means something
     assert scatter_points(ax, "invalid kept (dangerous)") == cell_centres(grid, dangerous)
-    assert scatter_points(ax, "valid rejected") == cell_centres(grid, conservative)
+    rounded = {tuple(np.round(c, 9)) for c in cell_centres(grid, conservative)}
+    assert hatched_cells(ax, "valid rejected", grid) == rounded
     # the boundary runs midway between the exact checker's free and blocked cells, around the one block
     blocked = np.argwhere(~valid)
     step = grid.axes[0][1] - grid.axes[0][0]

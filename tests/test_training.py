@@ -36,6 +36,19 @@ def test_classification_metrics_reject_bad_shapes():
         metrics.classification(np.ones(3, bool), np.ones(4, bool))
 
 
+def test_threshold_sweep_scores_each_threshold_like_classification():
+    probability = np.array([0.1, 0.4, 0.6, 0.9, 0.3])
+    truth = np.array([True, True, True, False, False])
+    rates = metrics.threshold_sweep(probability, truth, np.array([0.0, 0.5, 1.0]))
+    assert rates["acc"] == pytest.approx([3 / 5, 2 / 5, 2 / 5])  # all valid; only 0.6 and 0.9; none valid
+    assert rates["tpr"] == pytest.approx([1, 1 / 3, 0]) and rates["tnr"] == pytest.approx([0, 1 / 2, 1])
+    at_half = metrics.classification(probability >= 0.5, truth)
+    assert [rates[k][1] for k in ("acc", "tpr", "tnr")] == pytest.approx([at_half[k] for k in ("acc", "tpr", "tnr")])
+    assert len(metrics.threshold_sweep(probability, truth)["acc"]) == len(metrics.SWEEP) == 101
+    with pytest.raises(ValueError, match="must be equal"):
+        metrics.threshold_sweep(probability, truth[:3])
+
+
 def test_reconstruction_accuracy_by_hand():
     grids = np.array([[[1.0, -1.0], [-1.0, -1.0]], [[1.0, 1.0], [-1.0, 1.0]]])
     recon = np.array([[[0.3, -0.2], [0.1, -5.0]], [[-0.1, 2.0], [-1.0, 1.0]]])

@@ -2,7 +2,7 @@
 
 TPR is the share of truly valid configurations predicted valid, TNR the share of
 truly invalid ones predicted invalid (false negative rate = 1 - TPR, false positive
-rate = 1 - TNR).
+rate = 1 - TNR). :func:`threshold_sweep` scores one model's P(valid) at every threshold of :data:`SWEEP`.
 """
 
 from __future__ import annotations
@@ -22,6 +22,24 @@ def classification(predicted_valid, valid) -> dict[str, float]:
         "acc": float(np.mean(pred == truth)),
         "tpr": float(np.mean(pred[truth])) if truth.any() else float("nan"),
         "tnr": float(np.mean(~pred[~truth])) if (~truth).any() else float("nan"),
+    }
+
+
+SWEEP = np.linspace(0.0, 1.0, 101)  # (101,) the thresholds a sweep tries: 0, 0.01, ..., 1
+
+
+def threshold_sweep(probability, valid, thresholds: np.ndarray = SWEEP) -> dict[str, np.ndarray]:
+    """``{"acc", "tpr", "tnr"}``, each ``(T,)``: :func:`classification` of ``probability (N,) >= t`` against ``valid
+    (N,)`` at every threshold ``t`` of ``thresholds (T,)`` (one sweep, drawn and described from the same numbers)."""
+    p, truth = np.asarray(probability, dtype=float), np.asarray(valid, dtype=bool)
+    if p.shape != truth.shape or p.ndim != 1 or len(p) == 0:
+        raise ValueError(f"probability {p.shape} and valid {truth.shape} must be equal, non-empty (N,) arrays")
+    predicted = p[None, :] >= np.asarray(thresholds, dtype=float)[:, None]  # (T, N)
+    nan = np.full(len(predicted), np.nan)
+    return {
+        "acc": (predicted == truth).mean(axis=1),
+        "tpr": predicted[:, truth].mean(axis=1) if truth.any() else nan,
+        "tnr": (~predicted[:, ~truth]).mean(axis=1) if (~truth).any() else nan,
     }
 
 

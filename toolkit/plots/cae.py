@@ -26,7 +26,7 @@ from matplotlib.patches import Patch
 
 from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots.alt import describe
-from toolkit.plots.palette import COLORS, GREYS_CMAP, MARKERS, SEQUENTIAL_CMAP, series_style
+from toolkit.plots.palette import COLORS, GREYS_CMAP, MARKERS, PAGE_WIDTH, SEQUENTIAL_CMAP, series_style
 
 ERROR_COLORS = ListedColormap(
     [COLORS["phantom"], COLORS["missed"]]
@@ -78,7 +78,7 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
             f"{decoded.shape}, {len(names)} names"
         )
     accuracy = reconstruction_accuracy(decoded, grids)  # (W,)
-    fig = Figure(figsize=(8.4, 3.0 * len(grids)), layout="constrained")
+    fig = Figure(figsize=(PAGE_WIDTH, 2.7 * len(grids)), layout="constrained")
     rows = fig.subfigures(len(grids), 1, squeeze=False)[:, 0]  # (W,) one row per workspace
     said = []
     for row, grid, out, name, acc in zip(rows, grids, decoded, names, accuracy):
@@ -87,7 +87,7 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
         axes = row.subplots(1, 3)
         _image(axes[0], grid, "input")
         _image(axes[1], np.where(out > 0, 1.0, -1.0), "decoded (sign)")
-        _image(axes[2], grid, f"errors: {missed} missed, {phantom} invented", alpha=0.25)
+        _image(axes[2], grid, f"{missed} missed, {phantom} invented", alpha=0.25)
         axes[2].imshow(np.ma.masked_array(grid, ~errors).T, origin="lower", cmap=ERROR_COLORS, vmin=-1, vmax=1)
         for kind, wrong in (("missed", errors & (grid > 0)), ("phantom", errors & (grid < 0))):
             x, y = np.nonzero(wrong)
@@ -103,7 +103,7 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
         for kind in ("missed", "phantom")
     ]
     labels = ["missed block (x)", "invented block (o)"]
-    fig.legend(handles, labels, loc="outside lower center", ncols=2, fontsize=8, frameon=False)
+    fig.legend(handles, labels, loc="outside lower center", ncols=2, fontsize=9, frameon=False)
     grids_said = f"{len(grids)} occupancy grid{'s' if len(grids) > 1 else ''}"
     text = f"{grids_said}, each beside its reconstruction and its wrong cells. " + "; ".join(said)
     return describe(fig, text + ".")
@@ -113,23 +113,27 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
     """Reconstruction accuracy (y) against the share of free cells (x), one point per workspace, per named group.
 
     ``groups[name] = (all_free (W,), accuracy (W,))``. Points above the diagonal beat a
-    CAE that answers "all free"; on it, the CAE has learned nothing about that workspace.
+    CAE that answers "all free"; on it, the CAE has learned nothing about that workspace. The first group is drawn on
+    top, and a small group (a few dozen workspaces) with larger markers: it stays visible over hundreds of points.
     """
-    fig = Figure(figsize=(5.2, 4.6))
+    fig = Figure(figsize=(6, 5.2), layout="constrained")
     ax = fig.subplots()
     said = []
     for k, (name, (all_free, accuracy)) in enumerate(groups.items()):
         style = series_style(k)
         above = int(np.sum(np.asarray(accuracy) > np.asarray(all_free)))
+        few = len(accuracy) <= 50
         ax.scatter(
             all_free,
             accuracy,
             label=f"{name} (mean {np.mean(accuracy):.1%} vs {np.mean(all_free):.1%})",
-            alpha=0.8,
+            alpha=0.9 if few else 0.6,
+            s=45 if few else 14,
             c=style["color"],
             marker=style["marker"],
             edgecolors=COLORS["ink"],
-            linewidths=0.4,
+            linewidths=0.9 if few else 0.3,
+            zorder=2 + len(groups) - k,
         )
         said.append(
             f"{name}: {len(accuracy)} workspaces, mean accuracy {np.mean(accuracy):.1%} against {np.mean(all_free):.1%}"
@@ -140,8 +144,7 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
     ax.set_xlabel('share of free cells = accuracy of answering "all free"')
     ax.set_ylabel("reconstruction accuracy")
     ax.set_title("Above the diagonal: better than all free")
-    ax.legend(fontsize=8)
-    fig.tight_layout()
+    fig.legend(loc="outside lower center", fontsize=9, frameon=False)  # below the axes: it covers no point
     text = "Reconstruction accuracy against the accuracy of answering all free, one point per workspace. "
     return describe(fig, text + "; ".join(said) + ".")
 
@@ -216,9 +219,10 @@ def latent_scatter(
 
     ``color[group]`` ``(n,)`` (optional): a value per workspace shown on one shared color
     scale (e.g. its share of occupied cells); the groups then differ by marker.
-    ``highlight``: a group drawn with larger, black-edged markers (e.g. the few training workspaces).
+    ``highlight``: a group drawn with larger, thick black-edged markers on top of the others (e.g. the few training
+    workspaces); the legend lies below the axes, over no point.
     """
-    fig = Figure(figsize=(6.2 if color else 5.6, 4.6))
+    fig = Figure(figsize=(PAGE_WIDTH if color else 5.6, 5.2), layout="constrained")
     ax = fig.subplots()
     if color:
         low, high = min(np.min(c) for c in color.values()), max(np.max(c) for c in color.values())
@@ -226,11 +230,13 @@ def latent_scatter(
     for k, (name, xy) in enumerate(points.items()):
         xy = np.asarray(xy)
         big = name == highlight
-        style: dict[str, Any] = dict(s=40 if big else 16, edgecolors=COLORS["ink"], linewidths=1.0 if big else 0.3)
+        style: dict[str, Any] = dict(
+            s=70 if big else 16, edgecolors=COLORS["ink"], linewidths=1.6 if big else 0.3, zorder=3 if big else 2
+        )
         style.update(marker=MARKERS[k % len(MARKERS)], c=series_style(k)["color"])
         if color:
             style.update(c=color[name], cmap=SEQUENTIAL_CMAP, vmin=low, vmax=high)
-        drawn = ax.scatter(xy[:, 0], xy[:, 1], label=f"{name} ({len(xy)})", alpha=0.75, **style)
+        drawn = ax.scatter(xy[:, 0], xy[:, 1], label=f"{name} ({len(xy)})", alpha=0.95 if big else 0.75, **style)
         where = f"{name}: {len(xy)} workspaces ({style['marker']} markers{', larger' if big else ''}) around "
         where += f"({np.mean(xy[:, 0]):.3g}, {np.mean(xy[:, 1]):.3g})"
         if color:
@@ -241,8 +247,7 @@ def latent_scatter(
     ax.set_xlabel(xlabel)
     ax.set_ylabel(ylabel)
     ax.set_title(title)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
+    fig.legend(loc="outside lower center", ncols=len(points), fontsize=9, frameon=False)
     return describe(fig, f"{title}: {xlabel} across, {ylabel} up. " + "; ".join(said) + ".")
 
 

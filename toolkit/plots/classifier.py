@@ -13,7 +13,8 @@ P(valid) >= a threshold. Against the exact checker each answer is one of four ki
 The maps here sweep two degrees of freedom over their bounds (:func:`toolkit.plots.slices.slice_grid`;
 the point robot's whole C-space, or a 2-DoF slice of a 3D robot with the other joints
 fixed), show P(valid) as an image, draw the true C-obstacle boundary over it and mark
-every mistake at its cell, dangerous ones as squares.
+every mistake at its cell: dangerous ones as squares, conservative ones with a dotted hatch over a light tint
+(a hatch, not a dot per cell, so that the gray levels beneath still show where a model rejects whole regions).
 
 >>> grid = slice_grid(robot, dofs=(0, 1), n=80)  # doctest: +SKIP
 >>> probability = grid.image(checker.probability(grid.configs))  # (80, 80)  # doctest: +SKIP
@@ -27,7 +28,8 @@ from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
-from matplotlib.colors import ListedColormap
+from matplotlib.collections import PolyCollection
+from matplotlib.colors import ListedColormap, to_rgba
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
@@ -35,7 +37,7 @@ from matplotlib.patches import Patch
 from toolkit.learning import metrics
 from toolkit.plots.alt import describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
-from toolkit.plots.palette import CATEGORICAL, COLORS, GREY_CMAP, HATCHES, halo, series_style
+from toolkit.plots.palette import CATEGORICAL, COLORS, GREY_CMAP, HATCHES, PAGE_WIDTH, halo, series_style
 from toolkit.plots.slices import CSpaceSlice
 
 DANGEROUS, CONSERVATIVE, BOUNDARY = COLORS["dangerous"], COLORS["conservative"], COLORS["boundary"]
@@ -54,7 +56,7 @@ def probability_maps(
     probabilities: Mapping[str, np.ndarray], valid, grid: CSpaceSlice, *, thresholds: float | Mapping[str, float] = 0.5
 ) -> Figure:
     """Several models' P(valid) maps side by side, same grid and truth (e.g. the ``paper`` and ``strong`` presets)."""
-    fig = Figure(figsize=(4.3 * len(probabilities) + 0.8, 4.7), layout="constrained")
+    fig = Figure(figsize=(min(PAGE_WIDTH, 3.6 * len(probabilities) + 0.8), 4.2), layout="constrained")
     axes = fig.subplots(1, len(probabilities), squeeze=False)[0]
     said = []
     for ax, (name, probability) in zip(axes, probabilities.items()):
@@ -66,7 +68,7 @@ def probability_maps(
     _legend(fig, _mistake_handles())
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
     text += "configurations; grey, 0 black to 1 white) with the true C-obstacle boundary outlined, dangerous "
-    text += "mistakes as squares and conservative ones as dots. "
+    text += "mistakes as squares and conservative ones hatched with dots. "
     return describe(fig, text + "; ".join(said) + ".")
 
 
@@ -77,12 +79,20 @@ def path_map(
 
     Nodes in collision (``nodes_valid`` False, by the exact checker) are the dangerous mistakes the
     planner accepted: crosses (``COLORS["dangerous"]``). The path, checked exactly, avoids them; it is dashed with a
-    diamond per configuration, so that it stands apart from the solid C-obstacle boundary.
+    diamond per configuration, so that it stands apart from the solid C-obstacle boundary. The model's threshold is a
+    dotted line (P(valid) = threshold): the roadmap's dots on its dark side are nodes the model rejected, which the
+    exact checker drew; conservative cells are not hatched here, so that no dot is mistaken for a node.
     """
     nodes, nodes_valid, path = np.asarray(nodes), np.asarray(nodes_valid, dtype=bool), np.asarray(path)
-    fig = Figure(figsize=(5.6, 5.4), layout="constrained")
+    fig = Figure(figsize=(6, 6.2), layout="constrained")
     ax = fig.subplots()
-    fig.colorbar(_draw_probability(ax, probability, valid, grid, threshold), ax=ax, label="P(valid)", shrink=0.8)
+    image = _draw_probability(ax, probability, valid, grid, threshold, conservative=False)
+    fig.colorbar(image, ax=ax, label="P(valid)", shrink=0.8)
+    p = _on_grid(probability, grid, "probability")
+    if p.min() < threshold <= p.max():
+        cut_line = ax.contour(*grid.axes, p.T, levels=[threshold], colors=COLORS["ink"], linestyles=":", linewidths=1.5)
+        cut_line.set_path_effects(halo(1.5, ("free",)))  # a white ring: it shows on the dark side too
+    cut = Line2D([], [], color=COLORS["ink"], linestyle=":", linewidth=1.5, label=f"P(valid) = {threshold:.2f}")
     x, y = grid.dofs
     ax.plot(
         nodes[nodes_valid, x],
@@ -98,7 +108,7 @@ def path_map(
         nodes[~nodes_valid, y],
         "X",
         color=DANGEROUS,
-        markersize=7,
+        markersize=11,
         label="roadmap node in collision",
         path_effects=halo(),
     )
@@ -108,12 +118,12 @@ def path_map(
         "--D",  # dashed, a diamond per configuration: apart from the solid C-obstacle boundary, same blue
         color=COLORS["path"],
         linewidth=3,
-        markersize=4,
+        markersize=7,
         label="returned path (checked exactly)",
         path_effects=halo(2.5),
     )
-    ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=9)
-    _legend(fig, _mistake_handles() + ax.get_lines())
+    ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=10, wrap=True)
+    _legend(fig, _mistake_handles()[:1] + [cut] + ax.get_lines())
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
     text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (crosses), and the"
     return describe(fig, text + f" returned path through {len(path)} configurations, checked exactly.")
@@ -121,8 +131,8 @@ def path_map(
 
 def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
     """The four kinds of answer as bars (dangerous ones in the invalid colour, last) and accuracy / TPR / TNR."""
-    fig = Figure(figsize=(8, 3.4), layout="constrained")
-    ax_counts, ax_rates = fig.subplots(1, 2)
+    fig = Figure(figsize=(PAGE_WIDTH, 5.6), layout="constrained")
+    ax_counts, ax_rates = fig.subplots(2, 1, height_ratios=(1.2, 1))  # one above the other: the page's width each
     _draw_counts(ax_counts, predicted_valid, valid)
     _draw_rates(ax_rates, {"": metrics.classification(np.ravel(predicted_valid), np.ravel(valid))})
     fig.suptitle(title or "Predictions against the exact checker")
@@ -132,7 +142,7 @@ def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
 
 def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> Figure:
     """Accuracy, TPR and TNR of several models or baselines (``{name: {"acc", "tpr", "tnr"}}``), grouped."""
-    fig = Figure(figsize=(1.6 + 1.6 * len(scores), 3.4), layout="constrained")
+    fig = Figure(figsize=(min(PAGE_WIDTH, 1.6 + 1.6 * len(scores)), 3.8), layout="constrained")
     _draw_rates(fig.subplots(), scores)
     fig.suptitle(title or "Accuracy, TPR (valid kept), TNR (invalid rejected)")
     said = "; ".join(
@@ -189,8 +199,9 @@ def _answers_in_words(predicted_valid, valid) -> str:
 # -- the panels ----------------------------------------------------------------
 
 
-def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float):
-    """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary, dangerous cells as squares, conservative dots."""
+def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float, *, conservative: bool = True):
+    """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary, dangerous cells as squares, conservative cells
+    tinted and hatched with dots (:func:`_cells`; ``conservative=False``: not marked, where other dots are drawn)."""
     probability = _on_grid(probability, grid, "probability")
     image = ax.imshow(
         probability.T,
@@ -204,20 +215,35 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     )
     _draw_boundary(ax, valid, grid)
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
-    area = (160.0 / max(grid.shape)) ** 2  # points^2: a dangerous square about half a cell wide
-    for code, color, marker, size in ((3, DANGEROUS, "s", area), (1, CONSERVATIVE, "o", area / 4)):
-        i, j = np.nonzero(codes == code)
-        ax.scatter(
-            grid.axes[0][i],
-            grid.axes[1][j],
-            s=size,
-            c=color,
-            marker=marker,
-            linewidths=0,
-            label=ANSWERS[code],
-            path_effects=halo(0.0),
-        )
+    if conservative:
+        ax.add_collection(_cells(grid, codes == 1, label=ANSWERS[1], **CONSERVATIVE_CELLS))
+    i, j = np.nonzero(codes == 3)
+    ax.scatter(
+        grid.axes[0][i],
+        grid.axes[1][j],
+        s=(160.0 / max(grid.shape)) ** 2,  # points^2: a dangerous square about half a cell wide
+        c=DANGEROUS,
+        marker="s",
+        linewidths=0,
+        label=ANSWERS[3],
+        path_effects=halo(0.0),
+    )
     return image
+
+
+CONSERVATIVE_CELLS: dict[str, Any] = dict(  # a light tint and a dotted hatch in ink: the gray beneath still shows
+    facecolor=to_rgba(CONSERVATIVE, 0.15), hatch="..", hatchcolor=COLORS["ink"], edgecolor="none"
+)
+
+
+def _cells(grid: CSpaceSlice, mask, **style) -> PolyCollection:
+    """One square per cell of ``grid`` where ``mask (nx, ny)`` holds, drawn as one collection (adjacent cells' hatches
+    join into one pattern)."""
+    i, j = np.nonzero(mask)
+    half = [(axis[1] - axis[0]) / 2 if len(axis) > 1 else 0.5 for axis in grid.axes]
+    corners = np.array([(-1, -1), (1, -1), (1, 1), (-1, 1)]) * half  # (4, 2)
+    centres = np.column_stack([grid.axes[0][i], grid.axes[1][j]])  # (n, 2)
+    return PolyCollection(centres[:, None, :] + corners[None], linewidths=0, **style)  # (n, 4, 2) squares
 
 
 def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):
@@ -269,23 +295,14 @@ def _mistake_handles() -> list:
             linestyle="",
             label="dangerous: kept, in collision (squares)",
         ),
-        Line2D(
-            [],
-            [],
-            color=CONSERVATIVE,
-            marker="o",
-            markersize=4,
-            markeredgecolor=COLORS["ink"],
-            linestyle="",
-            label="conservative: rejected, free (dots)",
-        ),
+        Patch(label="conservative: rejected, free (dotted)", **CONSERVATIVE_CELLS),
     ]
 
 
 def _legend(fig: Figure, handles: list) -> None:
     handles = [Line2D([], [], color=BOUNDARY, label="true C-obstacle boundary", path_effects=halo(1.2)), *handles]
     ncols = len(handles) if fig.get_figwidth() >= 9 else 2
-    fig.legend(handles=handles, loc="outside lower center", ncols=ncols, fontsize=8, frameon=False)
+    fig.legend(handles=handles, loc="outside lower center", ncols=ncols, fontsize=9, frameon=False)
 
 
 def _draw_counts(ax, predicted_valid, valid) -> None:
@@ -313,10 +330,10 @@ def _draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
             linewidth=0.6,
             label=label,
         )
-        ax.bar_label(bars, fmt="%.2f", fontsize=8)
+        ax.bar_label(bars, fmt="%.2f", fontsize=8, rotation=90 if len(scores) > 3 else 0, padding=2)  # upright: apart
     ax.set_xticks(x, list(scores), fontsize=8)
     ax.set_xlabel("model" if len(scores) > 1 or any(scores) else "")
-    ax.set_ylim(0, 1.35)  # room for the legend above the bars
+    ax.set_ylim(0, 1.35 if len(scores) <= 3 else 1.55)  # room for the labels and the legend above the bars
     ax.set_yticks(np.linspace(0, 1, 6))
     ax.set_ylabel("share")
     ax.legend(fontsize=8, loc="upper center", ncols=2, frameon=False)

@@ -20,6 +20,7 @@ matplotlib ``Figure``, described in words (:func:`~toolkit.plots.alt.describe`),
 
 from __future__ import annotations
 
+import textwrap
 from collections.abc import Sequence
 from typing import Any
 
@@ -33,7 +34,7 @@ from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d
-from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES
+from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
 from toolkit.plots.robot_drawing import POSITION_NAMES, draw_robot, few_ticks, link_colors
 from toolkit.plots.slices import joint_bounds, slice_configs
 
@@ -139,7 +140,7 @@ def occupancy_figure(workspace: Workspace, layers: Sequence[int] | None = None, 
         titles = [f"layer z = {workspace.lower[2] + z + 0.5:g}" for z in drawn]
     columns = min(columns, len(images))
     rows = -(-len(images) // columns)
-    panel = 4.5 if len(images) == 1 else 2.6  # inches
+    panel = 4.5 if len(images) == 1 else min(2.6, (PAGE_WIDTH - 0.4) / columns)  # inches
     fig = Figure(figsize=(panel * columns, panel * rows + 0.4))
     axes = fig.subplots(
         rows, columns, squeeze=False, sharex=True, sharey=True, gridspec_kw={"hspace": 0.35, "wspace": 0.15}
@@ -248,24 +249,24 @@ def cspace_slice(
     robot = checker.robot
     q = robot.check_configs(q)[0]  # (dof,)
     q_valid = checker.are_valid(q[None])
-    fig = Figure(figsize=(9.5 if view else 5, 4.4))
+    fig = Figure(figsize=(PAGE_WIDTH if view else 4.5, 4.2))
     ax = fig.add_subplot(1, 2 if view else 1, 1)
     valid = _draw_cspace(ax, checker, q, joints, resolution, None)
     star: dict[str, Any] = dict(
         marker="*", markersize=14, markeredgecolor=COLORS["free"], color=link_colors(1, q_valid)[0]
     )
     ax.plot(q[joints[0]], q[joints[1]], linestyle="none", gid="q", **star)
-    fixed = [f"{robot.dof_names[k]}={q[k]:.2f}" for k in range(robot.dof) if k not in joints]
+    fixed = [f"{robot.dof_names[k]} {q[k]:.2f}" for k in range(robot.dof) if k not in joints]
     ax.set_title(
-        f"{robot.name}: {1 - valid.mean():.0%} of this slice in collision (dark)\nfixed: " + ", ".join(fixed),
-        fontsize=8,
+        f"{robot.name}: {1 - valid.mean():.0%} in collision (dark)\n" + textwrap.fill("fixed: " + ", ".join(fixed), 38),
+        fontsize=9,
     )
     if view:
         robot_ax = fig.add_subplot(1, 2, 2, **({"projection": "3d"} if view == "3d" else {}))
         colors, workspace = link_colors(1, q_valid), checker_workspace(checker)
         draw_robot(robot_ax, robot, q[None], colors=colors, view=view, workspace=workspace, margin=margin)
         verdict = "valid" if q_valid[0] else "in collision"
-        robot_ax.set_title(f"the robot at the star ({view}): {verdict}", fontsize=9)
+        robot_ax.set_title(f"the robot at the star ({view}):\n{verdict}", fontsize=9)
         if view == "3d":
             few_ticks(robot_ax)
     fig.tight_layout()

@@ -20,7 +20,8 @@ the backgrounds and the marks drawn on them; ``tests/test_palette.py`` computes 
   lightness, readable in every colour vision), and :func:`probability_rgb` for the viewer;
 - :func:`rgb` — a role's colour as ``(r, g, b)`` bytes, as the viewer draws it;
 - :data:`LINE_COLORS`, :data:`LINE_STYLES`, :data:`MARKERS`, :data:`HATCHES` — series a legend names;
-- :func:`contrast`, :func:`halo`, :data:`MARKS_ON` — marks that stand out from what they are drawn on.
+- :func:`contrast`, :func:`halo`, :data:`MARKS_ON` — marks that stand out from what they are drawn on;
+- :data:`PAGE_WIDTH` — the widest a chapter's figure may be for its text to render at its size.
 """
 
 from __future__ import annotations
@@ -206,3 +207,6 @@ def probability_rgb(probability: npt.ArrayLike) -> np.ndarray:
     """``(N, 3)`` uint8 colours of probabilities ``(N,)`` on :data:`PROBABILITY_CMAP`."""
     p = np.clip(np.asarray(probability, dtype=float), 0.0, 1.0)  # (N,)
     return np.round(matplotlib.colormaps[PROBABILITY_CMAP](p)[:, :3] * 255).astype(np.uint8)
+
+
+PAGE_WIDTH = 6.1  # inches: a chapter page's output column is 631 px at 1280 px (a tight bounding box adds a little)

@@ -9,6 +9,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
+from toolkit.learning import metrics
 from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots.alt import describe
 from toolkit.plots.palette import CATEGORICAL, COLORS, GREYS_CMAP, HATCHES, series_style
@@ -96,17 +97,23 @@ def planning_times(planning: dict, title: str = "") -> Figure:
     )
 
 
-def threshold_sweep(probability: np.ndarray, valid: np.ndarray, threshold: float | None = None) -> Figure:
-    """Accuracy, TPR and TNR of the MLP as the decision threshold on P(valid) moves; ``(N,)`` arrays."""
-    p, truth = np.asarray(probability).reshape(-1), np.asarray(valid, dtype=bool).reshape(-1)
-    ts = np.linspace(0.0, 1.0, 101)
-    predicted = p[None, :] >= ts[:, None]  # (T, N)
+def threshold_sweep(
+    probability: np.ndarray,
+    valid: np.ndarray,
+    threshold: float | None = None,
+    *,
+    title: str = "MLP on unseen workspaces",
+) -> Figure:
+    """Accuracy, TPR and TNR of the MLP as the decision threshold on P(valid) moves over :data:`metrics.SWEEP`
+    (:func:`toolkit.learning.metrics.threshold_sweep`); ``(N,)`` arrays. ``title`` names the model and samples."""
+    ts = metrics.SWEEP
+    rates = metrics.threshold_sweep(np.asarray(probability).reshape(-1), np.asarray(valid, dtype=bool).reshape(-1))
     fig = Figure(figsize=(5, 3.6))
     ax = fig.subplots()
     curves = {
-        "accuracy": (predicted == truth).mean(axis=1),
-        "TPR (valid kept)": predicted[:, truth].mean(axis=1),
-        "TNR (invalid rejected)": (~predicted[:, ~truth]).mean(axis=1),
+        "accuracy": rates["acc"],
+        "TPR (valid kept)": rates["tpr"],
+        "TNR (invalid rejected)": rates["tnr"],
     }  # name -> (T,)
     for k, (name, curve) in enumerate(curves.items()):
         ax.plot(ts, curve, label=name, **series_style(k) | dict(markevery=10, markersize=4))
@@ -116,7 +123,7 @@ def threshold_sweep(probability: np.ndarray, valid: np.ndarray, threshold: float
     ax.set_ylabel("share")
     ax.set_ylim(0, 1.02)
     ax.legend(fontsize=8)
-    ax.set_title("MLP on unseen workspaces")
+    ax.set_title(title, fontsize=10)
     fig.tight_layout()
     best = int(np.argmax(curves["accuracy"]))
     text = "Accuracy, TPR and TNR of the MLP as the threshold on P(valid) moves from 0 to 1: accuracy is highest, "

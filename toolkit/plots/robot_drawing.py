@@ -24,7 +24,7 @@ from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
-from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES
+from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
 
 VALID_COLOR, INVALID_COLOR = COLORS["valid"], COLORS["invalid"]
 BLOCK_STYLE: dict[str, Any] = dict(facecolor=COLORS["block"], edgecolor=COLORS["occupied"], gid="block")
@@ -149,13 +149,25 @@ def robot_figure(
     views = views or (("xy",) if robot.dim == 2 else ("3d", "xy", "xz"))
     if labels is not None and len(labels) != len(Q):
         raise ValueError(f"{len(labels)} labels for {len(Q)} configurations: give one label a configuration")
-    fig = Figure(figsize=(4.2 * len(views), 4.2 + 0.4 * (labels is not None)))
+    # at most two panels a row (the page's width); three views: the first tall on the left, two stacked beside it
+    columns, rows = min(2, len(views)), -(-len(views) // 2)
+    names = list(views)  # each view once: a panel's name
+    mosaic: list[list[Any]] = (
+        [[names[0], names[1]], [names[0], names[2]]]
+        if len(names) == 3
+        else [names[2 * r : 2 * r + 2] for r in range(rows)]
+    )
+    width = min(PAGE_WIDTH, 3.6 * columns)
+    fig = Figure(figsize=(width, width / columns * (1.6 if len(views) == 3 else rows) + 0.4 * (labels is not None)))
+    in_3d: dict[str | tuple[str, ...], dict[str, Any]] = {"3d": {"projection": "3d"}} if "3d" in views else {}
+    axes = fig.subplot_mosaic(mosaic, per_subplot_kw=in_3d)
     colors = link_colors(len(Q), valid)
     hatches = [HATCHES[k % len(HATCHES)] for k in range(len(Q))] if valid is None else [None] * len(Q)
-    for i, view in enumerate(views):
-        ax = fig.add_subplot(1, len(views), i + 1, **({"projection": "3d"} if view == "3d" else {}))
+    for view in views:
+        ax = axes[view]
         draw_robot(ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin, hatches=hatches)
         ax.set_title(f"{robot.name}: {view}", fontsize=10)
+        ax.tick_params(labelsize=8)
         if view == "3d":
             few_ticks(ax)
     if labels is None and valid is not None:
@@ -163,7 +175,7 @@ def robot_figure(
     if labels is not None:
         styles = {label: link_style(c, h) for label, c, h in zip(labels, colors, hatches)}
         handles = [Patch(label=label, **style) for label, style in styles.items()]
-        fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=8, frameon=False)
+        fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=9, frameon=False)
     fig.tight_layout(rect=(0, 0.08 if labels is not None else 0, 1, 1))
     text = f"The {robot.name} robot's link boxes at {len(Q)} configuration{'s' if len(Q) > 1 else ''}"
     seen = ["in 3D" if v == "3d" else f"in the {v} plane" for v in views]

@@ -15,6 +15,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
+from toolkit.learning import metrics
 from toolkit.util.verdicts import (  # noqa: F401 (the words and bands; chapters and tests read them here too)
     CHEAPER,
     CLOSE,
@@ -212,17 +213,18 @@ def describe_accuracy(label: str, accuracy: float, always_valid: float) -> str:
 def describe_threshold_sweep(probability: np.ndarray, valid: np.ndarray) -> str:
     """What a sweep of the decision threshold over ``probability (N,)`` against the truth ``valid (N,)`` shows, in three
     short sentences: up to which threshold the model calls everything valid ("always valid"), the thresholds over
-    which the middle 80 % of its P(valid) lie (narrow: an abrupt switch), and its best accuracy over all thresholds."""
+    which the middle 80 % of its P(valid) lie (narrow: an abrupt switch), and its best accuracy over the thresholds
+    that :func:`toolkit.plots.reproduction.threshold_sweep` draws (:data:`toolkit.learning.metrics.SWEEP`, the same
+    numbers), next to "always valid"."""
     p, truth = np.asarray(probability, dtype=float), np.asarray(valid, dtype=bool)
-    if p.shape != truth.shape or p.ndim != 1 or len(p) == 0:
-        raise ValueError(f"probability {p.shape} and valid {truth.shape} must be equal, non-empty (N,) arrays")
-    cuts = np.unique(np.concatenate([p, [np.inf]]))  # every distinct decision, from "all valid" to "none valid"
-    accuracy = np.array([np.mean((p >= t) == truth) for t in cuts])  # (thresholds,)
-    best = int(np.argmax(accuracy))
+    accuracy = metrics.threshold_sweep(p, truth)["acc"]  # (T,) over metrics.SWEEP; checks the shapes
+    best = int(np.argmax(accuracy))  # the lowest threshold of the best accuracy
+    always, top = round(100 * truth.mean()), round(100 * accuracy[best])
     low, high = np.percentile(p, (10, 90))
-    best_at = "above every P(valid), where it calls nothing valid" if np.isinf(cuts[best]) else f"at {cuts[best]:.2f}"
+    beats = "no threshold beats" if top <= always else f"{top - always} points above"
     return (
         f'Up to a threshold of {p.min():.2f} the model calls every sample valid: TPR 1, TNR 0, "always valid", '
-        f"{truth.mean():.0%} accuracy. The middle 80 % of its P(valid) lie between {low:.2f} and {high:.2f}: that is "
-        f"where its answers switch. Its best accuracy over all thresholds is {accuracy[best]:.0%}, {best_at}."
+        f"{always}% accuracy. The middle 80 % of its P(valid) lie between {low:.2f} and {high:.2f}: that is where its "
+        f"answers switch. Its best accuracy over the thresholds 0, 0.01, ..., 1 is {top}%, at "
+        f'{metrics.SWEEP[best]:.2f}: {beats} "always valid".'
     )

@@ -28,7 +28,6 @@ import dataclasses
 import json
 import os
 import shutil
-import time
 import uuid
 from collections.abc import Iterable
 from contextlib import suppress
@@ -128,7 +127,7 @@ def trained_models(scenario: str, preset: str, *, seed: int = 0, progress: bool 
     """The CAE and MLP of ``preset`` for ``scenario`` (quick-sized in quick mode), trained once and then loaded.
 
     The first call trains as ``toolkit train --scenario S --preset P`` does (the same
-    :func:`~toolkit.experiments.pipeline.train_and_save`, and prints how long it took) and
+    :func:`~toolkit.experiments.pipeline.train_and_save`, and says so under the cell) and
     saves a checkpoint folder in :func:`cache_dir`; later calls, in any notebook, load it
     in about a second.
     """
@@ -137,7 +136,6 @@ def trained_models(scenario: str, preset: str, *, seed: int = 0, progress: bool 
     if folder.exists():
         return checkpoints.load_models(folder, config.scenario)
     tmp = folder.with_name(f"{folder.name}.{uuid.uuid4().hex}.tmp")  # another notebook may be training the same
-    began = time.perf_counter()
     try:
         with threads.limited(threads.configured()):  # one thread, as the toolkit command: fast on a shared machine
             models, _, _ = pipeline.train_and_save(config, tmp)
@@ -146,7 +144,7 @@ def trained_models(scenario: str, preset: str, *, seed: int = 0, progress: bool 
     finally:
         shutil.rmtree(tmp, ignore_errors=True)  # gone once renamed; also after an error or Ctrl-C
     if progress:
-        print(f"trained the {scenario}/{preset} model in {time.perf_counter() - began:.0f} s; later runs load it")
+        print(f"The {scenario}/{preset} model was trained by this cell and saved; later runs load it in a second.")
     return models
 
 
