@@ -151,11 +151,10 @@ def robot_figure(
         raise ValueError(f"{len(labels)} labels for {len(Q)} configurations: give one label a configuration")
     # at most two panels a row (the page's width); three views: the first tall on the left, two stacked beside it
     columns, rows = min(2, len(views)), -(-len(views) // 2)
-    names = list(views)  # each view once: a panel's name
-    mosaic: list[list[Any]] = (
-        [[names[0], names[1]], [names[0], names[2]]]
-        if len(names) == 3
-        else [names[2 * r : 2 * r + 2] for r in range(rows)]
+    mosaic: list[list[Any]] = (  # each view once: a panel's name
+        [[views[0], views[1]], [views[0], views[2]]]
+        if len(views) == 3
+        else [list(views[2 * r : 2 * r + 2]) for r in range(rows)]
     )
     width = min(PAGE_WIDTH, 3.6 * columns)
     fig = Figure(figsize=(width, width / columns * (1.6 if len(views) == 3 else rows) + 0.4 * (labels is not None)))
