@@ -26,8 +26,8 @@ from typing import Any, ClassVar
 import numpy as np
 
 from toolkit.geometry.collision import CollisionChecker
+from toolkit.planning import sampling
 from toolkit.planning.local_planner import default_resolution
-from toolkit.planning.sampling import SAMPLERS
 from toolkit.util import registry
 
 REFINEMENT = 10  # a returned path's edges are also checked at resolution / this: shortest paths hug obstacles
@@ -51,7 +51,7 @@ class Problem:
         """``checker`` None: the exact checker decides samples, nothing predicts; else ``predicts`` is what the checker
         says it is (``not checker.is_exact``). ``resolution`` None: ``default_resolution(robot)``."""
         robot = exact.robot
-        registry.lookup(SAMPLERS, sampler, kind="sampler")  # an unknown name: a one-line error, before any solve
+        registry.lookup(sampling.SAMPLERS, sampler, kind="sampler")  # an unknown one: a one-line error, now
         if checker is not None and checker.robot.dof != robot.dof:
             raise ValueError(f"checker is for a {checker.robot.dof}-DoF robot, the exact checker for {robot.dof}")
         resolution = default_resolution(robot) if resolution is None else float(resolution)

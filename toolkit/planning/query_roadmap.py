@@ -41,11 +41,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from toolkit.planning import sampling
 from toolkit.planning.local_planner import certify_edges, check_edges, refute_at
 from toolkit.planning.options import RoadmapParams
 from toolkit.planning.planner import PlanResult, Problem
 from toolkit.planning.roadmap import Roadmap
-from toolkit.planning.sampling import SAMPLERS
 
 START, GOAL = 0, 1  # node indices of the query's endpoints (never removed)
 
@@ -95,7 +95,7 @@ class QueryRoadmap:
         # edges already were), then finer
         self.verify_resolutions = (self.resolution, problem.fine_resolution)
         # the sampler (its name checked by Problem.create) drawing through the deciding checker, and the exact one
-        sampler = SAMPLERS[problem.sampler]
+        sampler = sampling.SAMPLERS[problem.sampler]  # the registry as it is now
         self.sampler = sampler(self.checker)
         self.exact_sampler = sampler(self.exact) if self.predicted else self.sampler
         self.roadmap = self.roadmap_class(self.exact.robot)
