@@ -83,8 +83,8 @@ def build(
         )
     checker = checker if checker is None or isinstance(checker, CollisionChecker) else checker(query.workspace)
     problem = Problem.create(
-        truth, query.start, query.goal, sampler=sampler, checker=checker, resolution=scenario_resolution(scenario)
-    )
+        truth, query.start, query.goal, sampler=sampler, checker=checker, resolution=scenario.plan_resolution
+    )  # None: Problem.create's default_resolution(robot), so the resolution is scenario_resolution(scenario)
     if planner is None or isinstance(planner, str):
         solver = make_planner(scenario, planner, preset=preset, **changes)
     elif changes:

@@ -64,7 +64,8 @@ class PRM(Planner):
             query.record("sample", new_nodes=new)
             # Algorithm 1, line 4: a standard PRM on S': k nearest neighbours, edges by this planner's rule
             with query.timed("connection_s", "edge_checks"):
-                query.connect(new, decide)
+                decide(query.roadmap.candidate_edges(new, self.params.k))
+                query.bridge(decide)  # while start and goal lie apart: from their components
             query.record("connect")
             new = new[:0]
             # Algorithm 1, line 5: extract the cheapest path and verify it exactly (repairing what fails);

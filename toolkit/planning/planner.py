@@ -26,7 +26,9 @@ from typing import Any, ClassVar
 import numpy as np
 
 from toolkit.geometry.collision import CollisionChecker
+from toolkit.planning import sampling
 from toolkit.planning.local_planner import default_resolution
+from toolkit.util import registry
 
 REFINEMENT = 10  # a returned path's edges are also checked at resolution / this: shortest paths hug obstacles
 
@@ -38,7 +40,7 @@ class Problem:
     exact: CollisionChecker  # the truth: every edge kept and every returned path is checked by it
     start: np.ndarray  # (dof,)
     goal: np.ndarray  # (dof,)
-    sampler: str  # a name of toolkit.planning.sampling.SAMPLERS
+    sampler: str  # a name of toolkit.planning.sampling.SAMPLERS (checked by create)
     checker: CollisionChecker  # decides samples: the exact checker when nothing predicts
     predicts: bool  # samples are decided by prediction: the checker is not exact (CollisionChecker.is_exact)
     resolution: float  # local planner: no robot point moves farther between two checks
@@ -49,6 +51,7 @@ class Problem:
         """``checker`` None: the exact checker decides samples, nothing predicts; else ``predicts`` is what the checker
         says it is (``not checker.is_exact``). ``resolution`` None: ``default_resolution(robot)``."""
         robot = exact.robot
+        registry.lookup(sampling.SAMPLERS, sampler, kind="sampler")  # an unknown one: a one-line error, now
         if checker is not None and checker.robot.dof != robot.dof:
             raise ValueError(f"checker is for a {checker.robot.dof}-DoF robot, the exact checker for {robot.dof}")
         resolution = default_resolution(robot) if resolution is None else float(resolution)

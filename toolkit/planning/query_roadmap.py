@@ -8,9 +8,10 @@ when asked, a trace of :class:`PlanStep` snapshots. It does the steps that both 
 alike; the planner supplies its *edge rule* (``decide(pairs)``: which candidate edges enter the
 roadmap, and how they were checked):
 
-- **connect** (line 4): each new node with its ``k`` nearest neighbours; then, while start and
-  goal lie in different components, the ``k`` closest pairs between each one's component and
-  the rest (:meth:`~toolkit.planning.roadmap.Roadmap.bridge_edges`);
+- **connect** (line 4, in the planner's ``solve``): each new node with its ``k`` nearest
+  neighbours (``Roadmap.candidate_edges``); then, while start and goal lie in different
+  components, the ``k`` closest pairs between each one's component and the rest
+  (:meth:`bridge`, :meth:`~toolkit.planning.roadmap.Roadmap.bridge_edges`);
 - **extract and verify** (line 5, "the path is extracted and verified"): the cheapest start-goal
   path, checked by the exact checker: its nodes, then its edges at the roadmap's ``resolution``
   (unless checked exactly when they were added) and at ``problem.fine_resolution`` (10x
@@ -40,11 +41,11 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from toolkit.planning import sampling
 from toolkit.planning.local_planner import certify_edges, check_edges, refute_at
 from toolkit.planning.options import RoadmapParams
 from toolkit.planning.planner import PlanResult, Problem
 from toolkit.planning.roadmap import Roadmap
-from toolkit.planning.sampling import make_sampler
 
 START, GOAL = 0, 1  # node indices of the query's endpoints (never removed)
 
@@ -93,9 +94,10 @@ class QueryRoadmap:
         # a path's edges are confirmed at the roadmap's resolution (where most that fail, fail; exactly checked
         # edges already were), then finer
         self.verify_resolutions = (self.resolution, problem.fine_resolution)
-        # the sampler drawing through the deciding checker, and the same drawing through the exact one
-        self.sampler = make_sampler(problem.sampler, self.checker)
-        self.exact_sampler = make_sampler(problem.sampler, self.exact) if self.predicted else self.sampler
+        # the sampler (its name checked by Problem.create) drawing through the deciding checker, and the exact one
+        sampler = sampling.SAMPLERS[problem.sampler]  # the registry as it is now
+        self.sampler = sampler(self.checker)
+        self.exact_sampler = sampler(self.exact) if self.predicted else self.sampler
         self.roadmap = self.roadmap_class(self.exact.robot)
         self.stats: dict[str, float] = {  # counts (ints) and seconds
             "rounds": 0,
@@ -154,12 +156,6 @@ class QueryRoadmap:
         yield
         self.stats[seconds_key] += time.perf_counter() - start
         self.stats[checks_key] += sum(self.counts()) - before
-
-    def connect(self, new: np.ndarray, decide: EdgeRule) -> None:
-        """Edges from the ``new`` nodes to their k nearest; then, while start and goal lie apart, bridges from their
-        components; ``decide`` is the planner's edge rule."""
-        decide(self.roadmap.candidate_edges(new, self.params.k))
-        self.bridge(decide)
 
     def bridge(self, decide: EdgeRule) -> int:
         """While start and goal lie apart, try the closest untried pairs from each one's component; edges added."""

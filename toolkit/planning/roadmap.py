@@ -69,7 +69,8 @@ class Roadmap:
         count = min(k + 1, len(self.nodes))
         _, near = cKDTree(scaled, boxsize=self._box).query(scaled[new], k=count)  # (N, count), nearest first
         pairs = np.stack(np.broadcast_arrays(new[:, None], near.reshape(len(new), count)), axis=-1).reshape(-1, 2)
-        return self._new_pairs(pairs)
+        pairs = np.unique(np.sort(pairs[pairs[:, 0] != pairs[:, 1]], axis=1), axis=0).reshape(-1, 2)  # no self-loops
+        return pairs[self._untried(pairs)]  # nor edges already present, nor rejected pairs
 
     def bridge_edges(self, node: int, k: int) -> np.ndarray:
         """``(C, 2)``: up to ``k`` pairs joining ``node``'s connected component to the rest of the roadmap, closest
@@ -103,11 +104,6 @@ class Roadmap:
         graph = csr_matrix((np.ones(len(self.edges)), (self.edges[:, 0], self.edges[:, 1])), shape=(v, v))
         _, label = connected_components(graph, directed=False)
         return label == label[node]
-
-    def _new_pairs(self, pairs: np.ndarray) -> np.ndarray:
-        """``pairs (C, 2)`` as unique ``i < j`` pairs, without self-loops, edges already present and rejected pairs."""
-        pairs = np.unique(np.sort(pairs[pairs[:, 0] != pairs[:, 1]], axis=1), axis=0).reshape(-1, 2)
-        return pairs[self._untried(pairs)]
 
     def _untried(self, pairs: np.ndarray) -> np.ndarray:
         """``(C,)`` bool: the pairs ``(C, 2)`` (either order) that are neither an edge nor rejected."""
