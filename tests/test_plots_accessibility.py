@@ -13,6 +13,7 @@ from __future__ import annotations
 import importlib
 import inspect
 import itertools
+import re
 
 import numpy as np
 import pytest
@@ -237,6 +238,52 @@ def test_every_figure_is_described_from_its_data_in_plain_words(drawn):
         assert not alt.is_fallback(text), f"{name}: {text}"
         assert not any(mark in text for mark in alt.TEX), f"{name}: TeX in {text}"
         assert any(ch.isdigit() for ch in text) and len(text) > 60, f"{name}: no numbers in {text}"
+
+
+COMPLEX = {  # figures of one panel whose short text cannot carry their data: maps, 3D views, a step, curves
+    "classifier.probability_map",
+    "classifier.path_map",
+    "cspace.cspace_image",
+    "cspace.workspace_figure",
+    "planning.roadmap",
+}
+
+
+def test_every_complex_figure_has_a_longer_description_from_its_data(drawn):
+    for name, fig in drawn.items():
+        parts = alt.details(fig)
+        if alt.panels(fig) > 1 or name in COMPLEX:
+            assert parts, f"{name}: {alt.panels(fig)} panels and no longer description"
+        assert not any(alt.is_fallback(p["name"]) for p in parts), f"{name}: {parts}"
+        tables = [cell for p in parts for row in p["rows"] for cell in row]
+        assert not parts or any(ch.isdigit() for cell in tables for ch in cell), f"{name}: no numbers in {parts}"
+
+
+def test_a_reconstructions_regions_count_every_wrong_cell():
+    rng = np.random.default_rng(3)
+    grids = np.where(rng.random((1, 10, 10)) < 0.3, 1.0, -1.0)  # (1, 10, 10)
+    decoded = grids * np.where(rng.random(grids.shape) < 0.15, -1.0, 1.0)
+    ((part,),) = [alt.details(cae.reconstructions(grids, decoded, ["w"]))]
+    wrong = [re.match(r".*; (\d+) missed, (\d+) invented", cell) for row in part["rows"] for cell in row[1:]]
+    missed = int(np.sum((grids > 0) & (decoded < 0)))
+    invented = int(np.sum((grids < 0) & (decoded > 0)))
+    assert missed + invented > 0
+    assert sum(int(m[1]) for m in wrong) == missed and sum(int(m[2]) for m in wrong) == invented
+    assert len(part["rows"]) == 4 and part["columns"][1] == "x cell 0 to 2"  # 10 cells in 4 regions: 0 2 5 8 10
+
+
+def test_the_crossover_curves_are_in_a_table_at_their_measured_values():
+    sweep = {
+        "label": "blocks",
+        "values": [10, 100],
+        "exact_us": [2.0, 8.0],
+        "fcl_us": [3.0, 30.0],
+        "learned_us": [4.0, 4.0],
+        "crossing": {"exact": {"value": 50.0}, "fcl": None},
+    }
+    (part,) = alt.details(crossover.crossover({"scenario": "3do", "preset": "paper", "variables": {"b": sweep}}))
+    assert part["rows"] == [["10", "2", "3", "4", "2.00"], ["100", "8", "30", "4", "0.50"]]
+    assert part["text"].endswith("cheaper at 100. The network's curve crosses the exact, default (compiled) one at 50.")
 
 
 def test_a_description_refuses_tex():

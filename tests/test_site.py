@@ -139,6 +139,34 @@ def test_every_figure_of_every_chapter_and_tutorial_has_a_text_alternative(site)
     assert {p: n for p, text in pages.items() if (n := len(re.findall(r'<img\b(?![^>]*\balt="[^"]+")', text)))} == {}
 
 
+SHOWN_UNDER = rf'{re.escape(alt.DESCRIBED_BELOW)}"[^>]*>\s*<details class="figure-described">'  # an img, then it
+
+
+@pytest.mark.slow
+def test_every_figure_of_several_panels_is_described_in_full_under_it(site):
+    """A figure of several panels (and a map, a 3D view, Algorithm 1's steps) carries a longer description from its
+    data, never the guard's read from titles (:func:`toolkit.plots.alt.details`), and its page shows it under it:
+    a figure output's (its metadata's ``details``) and a still picture's (:func:`~toolkit.plots.alt.figure_html`)."""
+    guarded, unshown, described = {}, {}, 0
+    for name, run in site.runs.items():
+        outputs = [o for cell in run.notebook.cells if cell.cell_type == "code" for o in cell.outputs]
+        said = [o.get("metadata", {}).get("image/png", {}) for o in outputs if "image/png" in o.get("data", {})]
+        details = [s["details"] for s in said if s.get("details")]
+        html_outputs = ["".join(o["data"]["text/html"]) for o in outputs if "text/html" in o.get("data", {})]
+        in_html = sum(len(re.findall(SHOWN_UNDER, text)) for text in html_outputs)
+        described += len(details) + in_html
+        read_from_titles = [p["name"] for d in details for p in d if alt.is_fallback(p["name"])]
+        read_from_titles += [text[:80] for text in html_outputs if f"<strong>{alt.FALLBACK}" in text]
+        if read_from_titles:
+            guarded[name] = read_from_titles
+        shown = len(re.findall(SHOWN_UNDER, page_of(site, ROOT / name).read_text()))
+        if shown != len(details) + in_html:
+            unshown[name] = f"{shown} of {len(details) + in_html} described under the figure"
+    assert guarded == {}
+    assert unshown == {}
+    assert described >= 20  # the chapters' maps, grids, steps and crossover curves (a test that can fail)
+
+
 @pytest.mark.slow
 def test_the_embedded_scenes_are_titled_and_told_in_words(site):
     page = page_of(site, ROOT / "notebooks" / "05_3d_scenes.ipynb").read_text()
@@ -222,13 +250,19 @@ def test_a_widget_becomes_a_note_followed_by_what_its_output_widget_showed():
         nbformat.v4.new_output("display_data", data={"application/vnd.jupyter.widget-view+json": view})
     ]
     state = {
-        "box": {"model_name": "VBoxModel", "state": {"children": ["IPY_MODEL_slider", "IPY_MODEL_out"]}},
+        "box": {
+            "model_name": "VBoxModel",
+            "state": {"children": ["IPY_MODEL_slider", "IPY_MODEL_out", "IPY_MODEL_told", "IPY_MODEL_empty"]},
+        },
         "slider": {"model_name": "IntSliderModel", "state": {"value": 1}},
         "out": {"model_name": "OutputModel", "state": {"outputs": [dict(figure)]}},
+        "told": {"model_name": "HTMLModel", "state": {"value": "<details>the figure in words</details>"}},
+        "empty": {"model_name": "HTMLModel", "state": {"value": ""}},
     }
     nb.metadata["widgets"] = {"application/vnd.jupyter.widget-state+json": {"state": state}}
     outputs = static_widgets(nb).cells[0].outputs
-    assert [o["data"].get("text/html") for o in outputs] == [LIVE_ONLY_IN_JUPYTERLAB, None]
+    told = "<details>the figure in words</details>"  # an HTML widget's text: a picture's longer description
+    assert [o["data"].get("text/html") for o in outputs] == [LIVE_ONLY_IN_JUPYTERLAB, None, told]
     assert outputs[1]["data"]["image/png"] == "iVBORw0KGgo=" and "widgets" not in nb.metadata
 
 
@@ -344,6 +378,35 @@ def test_a_figure_on_a_page_gets_the_alt_text_of_its_output(tmp_path):
     )
     assert site_hooks.figure_alts(page, tmp_path / "chapter.ipynb") == (
         '<img alt="a &quot;dark&quot; square" class="" src="data:image/png;base64,iVBORw0KGgo=">'
+    )
+
+
+def test_a_complex_figure_is_described_in_full_under_it_and_its_alt_says_so(tmp_path):
+    parts = [
+        {"name": "left <panel>", "text": "3 blocks", "columns": ["block", "x"], "rows": [["1", "2.5"], ["2", "4"]]},
+        {"name": "right", "text": "", "columns": [], "rows": []},
+    ]
+    figure = nbformat.v4.new_output(
+        "display_data",
+        data={"image/png": "iVBORw0KGgo="},
+        metadata={"image/png": {"alt": "two panels", "details": parts}},
+    )
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_code_cell("fig")]
+    nb.cells[0].outputs = [figure]
+    nbformat.write(nb, tmp_path / "chapter.ipynb")
+    page = '<div class="jp-RenderedImage"><img alt="No description" src="data:image/png;base64,iVBORw0KGgo="></div>'
+    assert site_hooks.figure_alts(page, tmp_path / "chapter.ipynb") == (
+        '<div class="jp-RenderedImage">'
+        f'<img alt="two panels {alt.DESCRIBED_BELOW}" src="data:image/png;base64,iVBORw0KGgo=">\n'
+        '<details class="figure-described"><summary>Figure described</summary>\n'
+        "<p><strong>left &lt;panel&gt;</strong>: 3 blocks</p>"
+        '<div class="figure-described-table" role="region" tabindex="0" aria-label="table: left &lt;panel&gt;">'
+        "<table><caption>left &lt;panel&gt;</caption>"
+        '<thead><tr><th scope="col">block</th><th scope="col">x</th></tr></thead>'
+        '<tbody><tr><th scope="row">1</th><td>2.5</td></tr><tr><th scope="row">2</th><td>4</td></tr></tbody>'
+        "</table></div>"
+        "<p><strong>right</strong></p>\n</details></div>"
     )
 
 
@@ -482,6 +545,7 @@ FOCUSABLE = {  # a kind of focusable element: a page that has one, and how to fi
     ),
     "scrolling table": ("docs/accessibility.html", ".md-typeset__scrollwrap[tabindex='0']"),
     "answer disclosure": ("notebooks/01_workspaces_and_collision.html", "details > summary"),
+    "figure described": ("notebooks/02_cae_reconstruction.html", "details.figure-described > summary"),
     "link in text": ("index.html", "article p a[href]"),
 }
 

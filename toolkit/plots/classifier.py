@@ -33,7 +33,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from toolkit.learning import metrics
-from toolkit.plots.alt import describe
+from toolkit.plots.alt import Part, describe, map_part
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
 from toolkit.plots.palette import CATEGORICAL, COLORS, GREY_CMAP, HATCHES, halo, series_style
 from toolkit.plots.slices import CSpaceSlice
@@ -56,18 +56,19 @@ def probability_maps(
     """Several models' P(valid) maps side by side, same grid and truth (e.g. the ``paper`` and ``strong`` presets)."""
     fig = Figure(figsize=(4.3 * len(probabilities) + 0.8, 4.7), layout="constrained")
     axes = fig.subplots(1, len(probabilities), squeeze=False)[0]
-    said = []
+    said, parts = [], []
     for ax, (name, probability) in zip(axes, probabilities.items()):
         t = thresholds[name] if isinstance(thresholds, Mapping) else thresholds
         image = _draw_probability(ax, probability, valid, grid, t)
         ax.set_title(f"{name}: P(valid), threshold {t:.2f}", fontsize=9)
         said.append(f"{name}, threshold {t:.2f}: " + _answers_in_words(np.asarray(probability) >= t, valid))
+        parts.append(_map_in_regions(name, said[-1], probability, valid, grid, t))
     fig.colorbar(image, ax=list(axes), label="P(valid)", shrink=0.8)
     _legend(fig, _mistake_handles())
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
     text += "configurations; grey, 0 black to 1 white) with the true C-obstacle boundary outlined, dangerous "
     text += "mistakes as squares and conservative ones as dots. "
-    return describe(fig, text + "; ".join(said) + ".")
+    return describe(fig, text + "; ".join(said) + ".", parts)
 
 
 def path_map(
@@ -116,7 +117,26 @@ def path_map(
     _legend(fig, _mistake_handles() + ax.get_lines())
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
     text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (crosses), and the"
-    return describe(fig, text + f" returned path through {len(path)} configurations, checked exactly.")
+    text += f" returned path through {len(path)} configurations, checked exactly."
+    per_cell = _per_cell(nodes[:, [x, y]], grid)  # (nx, ny) roadmap nodes in each cell of the map
+    parts = [
+        _map_in_regions(
+            "P(valid) map",
+            f"threshold {threshold:.2f}: " + _answers_in_words(np.asarray(probability) >= threshold, valid),
+            probability,
+            valid,
+            grid,
+            threshold,
+            extra=lambda cells: f"; {int(per_cell[cells].sum())} roadmap nodes",
+        ),
+        Part(
+            "returned path",
+            f"its {len(path)} configurations in order, from start to goal",
+            ("configuration", *grid.names),
+            tuple((str(k), f"{q[x]:.3g}", f"{q[y]:.3g}") for k, q in enumerate(path)),
+        ),
+    ]
+    return describe(fig, text, parts)
 
 
 def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
@@ -127,7 +147,7 @@ def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
     _draw_rates(ax_rates, {"": metrics.classification(np.ravel(predicted_valid), np.ravel(valid))})
     fig.suptitle(title or "Predictions against the exact checker")
     text = f"{title or 'Predictions against the exact checker'}: " + _answers_in_words(predicted_valid, valid)
-    return describe(fig, text + ".")
+    return describe(fig, text + ".", _bars_parts(predicted_valid, valid))
 
 
 def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> Figure:
@@ -174,7 +194,15 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     text = f"{title + ': ' if title else ''}the model's decision at threshold {threshold:.2f} over {grid.names[0]} and "
     text += f"{grid.names[1]}, each cell by its kind of answer (dangerous ones marked with squares, conservative ones "
     text += f"with dots), their counts, and the ROC curve. {_answers_in_words(predicted, valid)}; {roc}."
-    return describe(fig, text)
+    cut, fpr, tpr = roc_points(probability, valid, np.linspace(0.0, 1.0, 11))  # (11,) each
+    curve = Part(
+        "ROC curve",
+        roc,
+        ("threshold", "valid kept (TPR)", "in collision kept (1 - TNR)"),
+        tuple((f"{t:.1f}", f"{a:.2f}", f"{b:.2f}") for t, a, b in zip(cut, tpr, fpr)),
+    )
+    decision = _map_in_regions("decision map", _answers_in_words(predicted, valid), probability, valid, grid, threshold)
+    return describe(fig, text, [decision, *_bars_parts(predicted, valid)[:1], curve])
 
 
 def _answers_in_words(predicted_valid, valid) -> str:
@@ -183,6 +211,53 @@ def _answers_in_words(predicted_valid, valid) -> str:
     rates = metrics.classification(np.ravel(predicted_valid), np.ravel(valid))
     said = ", ".join(f"{kind} {n}" for kind, n in counts.items())
     return f"{said}; accuracy {rates['acc']:.2f}, TPR {rates['tpr']:.2f}, TNR {rates['tnr']:.2f}"
+
+
+def _map_in_regions(name: str, said: str, probability, valid, grid: CSpaceSlice, threshold: float, extra=None) -> Part:
+    """A P(valid) map read region by region (a part of a longer description, after ``said``): mean P(valid), the
+    share truly in collision, the dangerous and conservative mistakes at ``threshold``; ``extra(region)`` adds to
+    each cell."""
+    probability, valid = np.asarray(probability), np.asarray(valid, dtype=bool)  # (nx, ny)
+    codes = answer_codes(probability >= threshold, valid)  # (nx, ny)
+
+    def region(cells: tuple[slice, slice]) -> str:
+        c = codes[cells]
+        text = f"P {np.mean(probability[cells]):.2f}, {np.mean(~valid[cells]):.0%} in collision, "
+        text += f"{int(np.sum(c == 3))} dangerous, {int(np.sum(c == 1))} conservative"
+        return text + (extra(cells) if extra else "")
+
+    x, y = ((name, lo, hi) for name, lo, hi in zip(grid.names, grid.lower, grid.upper))
+    text = f"{said}. The map by region, top row first: mean P(valid), the share truly in collision, the mistakes"
+    return map_part(name, text, grid.shape, x, y, region)
+
+
+def _per_cell(points, grid: CSpaceSlice) -> np.ndarray:
+    """How many of ``points (M, 2)`` (the grid's two DoFs) lie in each cell of its map: ``(nx, ny)``."""
+    edges = [np.linspace(lo, hi, n + 1) for lo, hi, n in zip(grid.lower, grid.upper, grid.shape)]
+    x, y = np.asarray(points, dtype=float).reshape(-1, 2).T  # (M,) each
+    return np.histogram2d(x, y, bins=edges)[0]
+
+
+def _bars_parts(predicted_valid, valid) -> list[Part]:
+    """The counts of the four kinds of answer and the rates, as tables (parts of a longer description)."""
+    counts = confusion_counts(predicted_valid, valid)
+    rates = metrics.classification(np.ravel(predicted_valid), np.ravel(valid))
+    return [
+        Part(
+            "counts",
+            "configurations of each kind of answer",
+            ("answer", "count"),
+            tuple((k, str(n)) for k, n in counts.items()),
+        ),
+        Part(
+            "rates",
+            "accuracy, TPR (valid kept) and TNR (in collision rejected)",
+            ("rate", "value"),
+            tuple(
+                (name.upper() if name != "acc" else "accuracy", f"{rates[name]:.2f}") for name in ("acc", "tpr", "tnr")
+            ),
+        ),
+    ]
 
 
 # -- the panels ----------------------------------------------------------------

@@ -23,7 +23,7 @@ from matplotlib.ticker import NullFormatter
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.planning.prm import GOAL, START, PlanStep
 from toolkit.planning.sampling import PAPER_SAMPLERS
-from toolkit.plots.alt import describe
+from toolkit.plots.alt import Part, describe, map_part
 from toolkit.plots.cspace import checker_workspace
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, halo
 from toolkit.plots.slices import slice_configs
@@ -98,7 +98,22 @@ def samplers(exact: CollisionChecker, samples: dict[str, np.ndarray], attempts: 
     fig.tight_layout()
     counts = "; ".join(f"{name}: {len(Q)}" for name, Q in samples.items())
     of = f" of {attempts} attempts each" if attempts else ""
-    return describe(fig, f"Samples of {len(samples)} samplers{of} over the point robot's C-obstacles (grey). {counts}.")
+    valid, _ = cspace_validity(exact, pixels=4 * 20)  # (H, W): rows are y; 4 x 4 regions of 20 x 20 pixels
+    blocked = 1 - valid.T.reshape(4, 20, 4, 20).mean(axis=(1, 3))  # (4, 4) C-obstacle share per region, [x, y]
+    parts = [_samples_part(exact.robot, name, Q, blocked) for name, Q in samples.items()]
+    text = f"Samples of {len(samples)} samplers{of} over the point robot's C-obstacles (grey). {counts}."
+    return describe(fig, text, parts)
+
+
+def _samples_part(robot, name: str, Q: np.ndarray, blocked: np.ndarray) -> Part:
+    """One sampler's samples ``Q (M, 2)`` counted region by region of the C-space, beside the share of each region
+    that is C-obstacle (``blocked (b, b)``, ``[x, y]``): where a sampler that seeks obstacles puts its samples."""
+    edges = [np.linspace(lo, hi, len(blocked) + 1) for lo, hi in zip(robot.lower, robot.upper)]
+    counts = np.histogram2d(Q[:, 0], Q[:, 1], bins=edges)[0]  # (b, b), [x, y]
+    x, y = ("x", robot.lower[0], robot.upper[0]), ("y", robot.lower[1], robot.upper[1])
+    cell = lambda r: f"{int(counts[r].sum())} samples; {blocked[r].mean():.0%} C-obstacle"
+    text = f"{len(Q)} samples; by region, top row first: how many fell there, and the share of it that is C-obstacle"
+    return map_part(name, text, counts.shape, x, y, cell)
 
 
 def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) -> Figure:
@@ -177,7 +192,7 @@ def roadmap(exact: CollisionChecker, step: PlanStep, title: str = "") -> Figure:
     if title:
         fig.suptitle(title, fontsize=10, wrap=True)  # a long stage description wraps at the figure width
     fig.tight_layout(rect=(0, 0.1, 1, 1))
-    return describe(fig, f"{title + ': ' if title else ''}{step_in_words(step)}")
+    return describe(fig, f"{title + ': ' if title else ''}{step_in_words(step)}", [_step_part(step)])
 
 
 def step_in_words(step: PlanStep) -> str:
@@ -201,7 +216,27 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
         ax.set_axis_off()
     fig.suptitle("Algorithm 1 step by step\n(hollow: not yet confirmed exactly; X: removed by a repair)", fontsize=10)
     _roadmap_legend(fig, axes)
-    return describe(fig, "Algorithm 1 step by step. " + " ".join(step_in_words(step) for step in steps))
+    text = f"Algorithm 1 step by step, one panel per step, {len(steps)} steps. First: {step_in_words(steps[0])}"
+    text += f" Last: {step_in_words(steps[-1])}" if len(steps) > 1 else ""  # every step: the longer description
+    return describe(fig, text, [_step_part(step) for step in steps])
+
+
+def _step_part(step: PlanStep) -> Part:
+    """One step of Algorithm 1 (one panel): in words, and its path's nodes in order with where they lie."""
+    rows = tuple(
+        (str(k + 1), f"{step.nodes[n][0]:.3g}", f"{step.nodes[n][1]:.3g}", _node_state(step, n))
+        for k, n in enumerate(step.path)
+    )
+    columns = ("path node", "x", "y", "node") if rows else ()
+    return Part(f"Round {step.round}, {step.stage}", step_in_words(step), columns, rows)
+
+
+def _node_state(step: PlanStep, n: int) -> str:
+    if n in (START, GOAL):
+        return "start" if n == START else "goal"
+    if n in step.removed_nodes:
+        return "removed by the repair"
+    return "confirmed exactly" if step.node_verified[n] else "not yet confirmed"
 
 
 def _roadmap_legend(fig: Figure, axes) -> None:
@@ -220,7 +255,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
     pair."""
     fig = Figure(figsize=(5.2 * len(panels), 4.8))
     axes = fig.subplots(1, len(panels), squeeze=False)[0]
-    said = []
+    said, parts = [], []
     for ax, (title, planning) in zip(axes, panels.items()):
         names = list(planning)  # the samplers planned, in their order
         x = np.arange(len(names))[:, None] + np.array([-0.2, 0.2])  # (samplers, modes) bar centres
@@ -249,10 +284,19 @@ def stage_times(panels: dict[str, dict]) -> Figure:
                 for i, s in enumerate(names)
             )
         )
+        keys = ("total_s", "total_s_q1", "total_s_q3", *STAGE_KEYS, "other_s")
+        rows = tuple(
+            (f"{s}, {m}", *(f"{table[key][i, j]:.3g}" for key in keys))
+            for i, s in enumerate(names)
+            for j, m in enumerate(MODES)
+        )
+        columns = ("sampler, prediction", "median total", "first quartile", "third quartile", *STAGE_LABELS.values())
+        parts.append(Part(title, f"seconds per query; {said[-1]}", columns, rows))
     fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=3, fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0.12, 1, 1))
     text = "Median planning time per query without and with prediction, per sampler, split into the planner's stages"
-    return describe(fig, f"{text} (hatched), with the ratio with / without above each pair. {'; '.join(said)}.")
+    text += f" (hatched), with the ratio with / without above each pair. {'; '.join(said)}."
+    return describe(fig, text, parts)
 
 
 def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndarray:
@@ -309,8 +353,11 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
                 edgecolor=COLORS["ink"],
                 linewidth=0.5,
             )
-            ratio_words = ", ".join(f"{s} {ratios[s]:.2f}" for s in PAPER_SAMPLERS)
-            said.append(f"{title}, {name}: {ratio_words}")
+        every = np.array([[ratios[s] for s in PAPER_SAMPLERS] for ratios in series.values()])  # (series, samplers)
+        said.append(
+            f"{title}: {len(series)} series, ratios from {every.min():.2f} to {every.max():.2f}, below 1 for "
+            f"{int(np.sum(every < 1))} of {every.size}"
+        )  # each ratio: the longer description
         ax.axhline(1.0, color=COLORS["ink"], linewidth=0.8)
         ax.set_xticks(np.arange(len(PAPER_SAMPLERS)), PAPER_SAMPLERS)
         ax.set_xlabel("sampler")
@@ -321,7 +368,16 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
     fig.legend(handles, names, loc="lower center", ncol=min(len(names), 3), fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0.1, 1, 1))
     text = "Planning time with prediction divided by the time without, per sampler, log scale; below 1 prediction saves"
-    return describe(fig, f"{text} time. {'; '.join(said)}.")
+    parts = [
+        Part(
+            title,
+            "time with prediction / time without; below 1, prediction saves time",
+            ("series", *PAPER_SAMPLERS),
+            tuple((name, *(f"{ratios[s]:.2f}" for s in PAPER_SAMPLERS)) for name, ratios in series.items()),
+        )
+        for title, series in baselines.items()
+    ]
+    return describe(fig, f"{text} time. {'; '.join(said)}.", parts)
 
 
 def _log_ticks(ax) -> None:

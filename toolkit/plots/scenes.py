@@ -21,7 +21,7 @@ from matplotlib.gridspec import SubplotSpec
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots.alt import describe
+from toolkit.plots.alt import ROWS, Part, describe
 from toolkit.plots.palette import COLORS, halo, series_style
 from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR, draw_robot
 
@@ -70,7 +70,28 @@ def path_frame(
     fig.suptitle(_frame_title(index, frames, series, threshold), fontsize=10)
     text = f"A path of the {robot.name} robot, {_frame_title(index, frames, series, threshold)}. Left, the robot"
     text += " in 3D among the blocks near it and its base's trace; right, against the fraction of the path travelled, "
-    return describe(fig, text + _series_in_words(robot, Q, series, threshold) + ".")
+    return describe(fig, text + _series_in_words(robot, Q, series, threshold) + ".", [_series_part(robot, Q, series)])
+
+
+def _series_part(robot: BoxRobot, Q: np.ndarray, series: dict) -> Part:
+    """The right-hand panels as a table: at evenly picked frames (at most :data:`~toolkit.plots.alt.ROWS`), each
+    DoF scaled to its bounds, and the validity, clearance and P(valid) where given."""
+    scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
+    given = {name: values for name, values in series.items() if values is not None}
+    columns = ("frame", "fraction of the path", *robot.dof_names, *given)
+    rows = tuple(
+        (
+            str(t),
+            f"{t / max(len(Q) - 1, 1):.0%}",
+            *(f"{v:.2f}" for v in scaled[t]),
+            *(
+                ("valid" if values[t] else "in collision") if name == "valid" else f"{values[t]:.3g}"
+                for name, values in given.items()
+            ),
+        )
+        for t in np.unique(np.linspace(0, len(Q) - 1, min(ROWS, len(Q))).round().astype(int))
+    )
+    return Part("along the path", "each DoF scaled to its bounds (0 lower, 1 upper)", columns, rows)
 
 
 def _series_in_words(robot: BoxRobot, Q: np.ndarray, series: dict, threshold: float) -> str:

@@ -170,19 +170,18 @@ def _cached_folder(config: RunConfig) -> Path:
 
 
 def still(fig, summary: str):
-    """``fig`` as a still picture under ``summary`` (HTML ``<details>``, open), its alt text from the figure: what a
-    browser without WebGL shows in place of a 3D view beside it (the view stays blank there, the still does not)."""
+    """``fig`` as a still picture under ``summary`` (HTML ``<details>``, open), its alt text and any longer description
+    from the figure (:func:`toolkit.plots.alt.figure_html`): what a browser without WebGL shows in place of a 3D view
+    beside it (the view stays blank there, the still does not)."""
     import base64
     import html
 
     from IPython.display import HTML
 
-    from toolkit.plots.alt import alt_text
+    from toolkit.plots.alt import figure_html
 
     buffer = io.BytesIO()
     fig.savefig(buffer, format="png", dpi=80, bbox_inches="tight")
     png = base64.b64encode(buffer.getvalue()).decode()
-    return HTML(
-        f"<details open><summary>{html.escape(summary)}</summary>"
-        f'<img src="data:image/png;base64,{png}" alt="{html.escape(alt_text(fig))}" style="max-width:100%"></details>'
-    )
+    shown = figure_html(fig, png, style="max-width:100%")
+    return HTML(f"<details open><summary>{html.escape(summary)}</summary>{shown}</details>")
