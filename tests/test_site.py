@@ -547,6 +547,7 @@ FOCUSABLE = {  # a kind of focusable element: a page that has one, and how to fi
     "answer disclosure": ("notebooks/01_workspaces_and_collision.html", "details > summary"),
     "figure described": ("notebooks/02_cae_reconstruction.html", "details.figure-described > summary"),
     "link in text": ("index.html", "article p a[href]"),
+    "navigation link": ("index.html", ".md-sidebar--primary .md-nav__link[href]"),
 }
 
 
@@ -650,6 +651,129 @@ def test_display_math_scrolls_at_320_px_instead_of_being_cut(served, chromium, s
             page.close()
     assert {path: eqs for path, eqs in cut.items() if eqs} == {}
     assert remote == []
+
+
+AUDITED = ["index.html", *(f"notebooks/{c.stem}.html" for c in CHAPTERS)]  # what the manual pass went through
+TAB_STOP = """() => {  // the focused element: what a screen reader names it by, its box, its outline
+    const e = document.activeElement;
+    if (!e || e === document.body) return null;
+    const box = e.getBoundingClientRect(), style = getComputedStyle(e);
+    const labelled = e.getAttribute('aria-labelledby');
+    const name = (e.getAttribute('aria-label') || (labelled && document.getElementById(labelled)?.textContent)
+        || e.getAttribute('title') || e.getAttribute('alt') || e.getAttribute('placeholder')
+        || e.textContent.trim() || e.querySelector('img')?.alt || '').trim();
+    return {tag: e.tagName, cls: String(e.className).slice(0, 40), name: name.slice(0, 60),
+            area: box.width * box.height,
+            outline: style.outlineStyle !== 'none' && parseFloat(style.outlineWidth) >= 2,
+            where: Math.round(box.x) + ',' + Math.round(box.y + scrollY)};
+}"""
+
+
+def tab_stops(page, limit: int = 1000) -> list[dict]:
+    """Every element the Tab key reaches on ``page``, in order, once round (:data:`TAB_STOP` of each)."""
+    stops: list[dict] = []
+    for _ in range(limit):
+        page.keyboard.press("Tab")
+        stop = page.evaluate(TAB_STOP)
+        if stop is None or (stops and stop == stops[0]):
+            break
+        stops.append(stop)
+    return stops
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_every_tab_stop_of_the_home_page_and_the_chapters_is_named_and_outlined(site, served, chromium):
+    """WCAG 2.4.7 and 4.1.2, as the manual pass checked them: Tab through the home page and every chapter; each
+    element that takes the focus has a name and a box, and an outline of 2 px or more (the search box, whose
+    focus material shows by turning it white, and the viewer's frames, where the focus moves inside, aside)."""
+    remote: list[str] = []
+    unnamed, unseen, counted = {}, {}, {}
+    for path in AUDITED:
+        page = open_page(chromium, served + path, remote)
+        try:
+            page.wait_for_timeout(1000)  # MathJax and material's scripts have made their elements focusable
+            stops = tab_stops(page)
+        finally:
+            page.close()
+        counted[path] = len(stops)
+        unnamed[path] = [s for s in stops if not s["name"] and s["tag"] != "IFRAME"]
+        framed = ("IFRAME", "INPUT")
+        unseen[path] = [s for s in stops if s["tag"] not in framed and (not s["outline"] or s["area"] < 4)]
+    assert all(n >= 20 for n in counted.values()), counted
+    assert {p: s for p, s in unnamed.items() if s} == {}
+    assert {p: s for p, s in unseen.items() if s} == {}
+    assert remote == []
+
+
+def accessibility_tree(page) -> list[dict]:
+    """Chromium's accessibility tree of ``page`` (CDP's ``Accessibility.getFullAXTree``): what a screen reader reads,
+    names in full (Playwright's ``aria_snapshot`` leaves out names of about 1000 characters and more)."""
+    session = page.context.new_cdp_session(page)
+    try:
+        return [n for n in session.send("Accessibility.getFullAXTree")["nodes"] if not n.get("ignored")]
+    finally:
+        session.detach()
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_a_screen_reader_hears_every_image_link_and_button_named_and_the_headings_in_order(site, served, chromium):
+    """WCAG 1.1.1, 1.3.1, 2.4.6 and 4.1.2 in Chromium's accessibility tree of the home page and every chapter:
+    every image (material's icons hidden), link and button has a name, no figure says nbconvert's placeholder,
+    one heading of level 1 opens the page and no heading skips a level below the one before it."""
+    remote: list[str] = []
+    found = {}
+    for path in AUDITED:
+        page = open_page(chromium, served + path, remote)
+        try:
+            page.wait_for_timeout(1000)
+            nodes = accessibility_tree(page)
+        finally:
+            page.close()
+        name = lambda n: str(n.get("name", {}).get("value", "")).strip()
+        role = lambda n: n.get("role", {}).get("value")
+        levels = [
+            int(p["value"]["value"])
+            for n in nodes
+            if role(n) == "heading"
+            for p in n.get("properties", [])
+            if p["name"] == "level"
+        ]
+        found[path] = {
+            "unnamed": [role(n) for n in nodes if role(n) in ("image", "img", "link", "button") and not name(n)],
+            "placeholder": [name(n)[:60] for n in nodes if "No description has been provided" in name(n)],
+            "first heading": levels[:1],
+            "skips": [(a, b) for a, b in zip(levels, levels[1:]) if b > a + 1],
+            "level 1": levels.count(1),
+        }
+    expected = {"unnamed": [], "placeholder": [], "first heading": [1], "skips": [], "level 1": 1}
+    assert {p: f for p, f in found.items() if f != expected} == {}
+    assert remote == []
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+@pytest.mark.parametrize("spacing", [False, True], ids=["as styled", "WCAG text spacing"])
+def test_no_page_of_the_manual_pass_scrolls_sideways_at_320_px(served, chromium, spacing):
+    """WCAG 1.4.10 and 1.4.12: at 320 CSS px, with and without text spacing, the home page and every chapter reflow:
+    the page itself never scrolls sideways (wide code, tables, equations and figures scroll or shrink in their
+    own boxes)."""
+    wide = {}
+    for path in AUDITED:
+        page = chromium.new_page(viewport={"width": 320, "height": 640})
+        try:
+            page.goto(served + path, wait_until="load")
+            if spacing:
+                page.add_style_tag(content=TEXT_SPACING + " p { margin-bottom: 2em !important; }")
+            page.wait_for_timeout(1500)
+            wide[path] = page.evaluate("document.documentElement.scrollWidth - document.documentElement.clientWidth")
+        finally:
+            page.close()
+    assert {p: px for p, px in wide.items() if px > 0} == {}
 
 
 def search(page, words: str) -> list[str]:

@@ -13,10 +13,11 @@ hub and the repository its students pull, a link that opens it there through nbg
 
 Accessible (WCAG 2.1 AA, measured by :mod:`tools.accessibility`): every page has one ``h1`` (a heading that
 a notebook's output prints becomes an ``h2``), and every block of code that scrolls sideways can be reached by
-keyboard (``tabindex="0"``) and is named for a screen reader (:func:`focusable_code`); the colours, underlined
-links and focus outline are in ``docs/site/accessibility.css``. Every figure of a notebook page takes the alt text its
-output carries, and a complex figure (several panels, a map, a 3D view) its longer description in a "Figure
-described" disclosure under it (:func:`figure_alts`, from :mod:`toolkit.plots.alt`).
+keyboard (``tabindex="0"``) and is named for a screen reader (:func:`focusable_code`), while a cell's input, which
+nbconvert makes a tab stop of no name (every paragraph of a chapter one more press of Tab), is not; the colours,
+underlined links and focus outline are in ``docs/site/accessibility.css``. Every figure of a notebook page takes
+the alt text its output carries, and a complex figure (several panels, a map, a 3D view) its longer description
+in a "Figure described" disclosure under it (:func:`figure_alts`, from :mod:`toolkit.plots.alt`).
 
 Offline: notebook pages load MathJax from the site's own copy (``assets/mathjax``, at the right depth for
 each page), and nbconvert's loader of mermaid diagrams, which imports its script from a CDN, is dropped
@@ -54,6 +55,10 @@ CODE_BLOCK = re.compile(
     r'<div class="(?P<cls>[^"]*\bhighlight(?P<cell>-ipynb)?\b[^"]*)">(?P<space>\s*)<pre(?![^>]*tabindex)'
 )
 REGION = 'tabindex="0" role="region" aria-label="code"'
+CELL_TAB_STOP, CELL = (
+    '<div class="jp-Cell-inputWrapper" tabindex="0">',
+    '<div class="jp-Cell-inputWrapper">',
+)  # see below
 ROLE_OR_MODULE = re.compile(
     r'doc-object doc-module">\s*<h\d id="(?P<module>[\w.]+)"'  # where a module's entry begins
     r"|:(?:py:)?(?:mod|func|class|meth|attr|data|exc|obj):<code>(?P<tilde>~)?(?P<name>[\w.]+)</code>"
@@ -115,7 +120,7 @@ def on_page_content(html: str, page: Page, config, files: Files) -> str:
         return html
     mathjax = posixpath.relpath(MATHJAX, posixpath.dirname(page.file.dest_uri) or ".")
     html = headings_and_contents(MERMAID_LOADER.sub("", html.replace(MATHJAX_PLACEHOLDER, f'"{mathjax}/')), page)
-    html = figure_alts(one_h1(html), Path(page.file.abs_src_path or ""))
+    html = figure_alts(one_h1(html), Path(page.file.abs_src_path or "")).replace(CELL_TAB_STOP, CELL)
     html = take_away(page, config["extra"].get("jupyterhub") if config else None, files) + html
 
     def resolve(match: re.Match) -> str:
