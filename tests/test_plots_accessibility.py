@@ -14,6 +14,7 @@ import importlib
 import inspect
 import io
 import itertools
+import re
 
 import numpy as np
 import pytest
@@ -43,11 +44,12 @@ from toolkit.plots import (
     robot_drawing,
     scenes,
     slices,
+    timings,
     tutorials,
 )
 
 crossover = importlib.import_module("toolkit.plots.crossover")  # the package exports its function by that name
-MODULES = (cae, classifier, crossover, cspace, planning, reproduction, robot_drawing, scenes, tutorials)
+MODULES = (cae, classifier, crossover, cspace, planning, reproduction, robot_drawing, scenes, timings, tutorials)
 PALETTE = {to_hex(c) for c in [*palette.COLORS.values(), *palette.OKABE_ITO.values(), *palette.CATEGORICAL]}
 PALETTE |= {to_hex(c) for c in palette.LINE_COLORS}
 DEFAULT_CYCLE = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22"}
@@ -193,14 +195,14 @@ def gallery() -> dict[str, Figure]:
             ]
             * 2,
         ),
-        "planning.stage_times": planning.stage_times({"2DS": PLANNING, "3DC-7": PLANNING}),
-        "planning.ratio_comparison": planning.ratio_comparison(
+        "timings.stage_times": timings.stage_times({"2DS": PLANNING, "3DC-7": PLANNING}),
+        "timings.ratio_comparison": timings.ratio_comparison(
             {
                 "the paper's planner, means": {"2DS": {"BS": 0.5, "OB": 0.8, "G": 1.2, "BT": 0.9}},
                 "our lazy planner, medians": {"2DS": {"BS": 1.5, "OB": 1.1, "G": 1.3, "BT": 1.2}},
             }
         ),
-        "planning.throughputs": planning.throughputs(
+        "timings.throughputs": timings.throughputs(
             {"2DS": {"exact": 9e7, "learned": 3e6}, "3DC-7": {"exact": 2e5, "learned": 2.5e6}}
         ),
         "reproduction.cae_reconstruction": reproduction.cae_reconstruction(
@@ -248,6 +250,54 @@ def test_every_figure_is_described_from_its_data_in_plain_words(drawn):
         assert not alt.is_fallback(text), f"{name}: {text}"
         assert not any(mark in text for mark in alt.TEX), f"{name}: TeX in {text}"
         assert any(ch.isdigit() for ch in text) and len(text) > 60, f"{name}: no numbers in {text}"
+
+
+COMPLEX = {  # figures of one panel whose short text cannot carry their data: maps, 3D views, a step, curves
+    "classifier.probability_map",
+    "classifier.path_map",
+    "cspace.cspace_image",
+    "cspace.workspace_figure",
+    "planning.roadmap",
+}
+
+
+def test_every_complex_figure_has_a_longer_description_from_its_data(drawn):
+    for name, fig in drawn.items():
+        parts = alt.details(fig)
+        if alt.panels(fig) > 1 or name in COMPLEX:
+            assert parts, f"{name}: {alt.panels(fig)} panels and no longer description"
+        assert not any(alt.is_fallback(p["name"]) for p in parts), f"{name}: {parts}"
+        tables = [cell for p in parts for row in p["rows"] for cell in row]
+        assert not parts or any(ch.isdigit() for cell in tables for ch in cell), f"{name}: no numbers in {parts}"
+
+
+def test_a_reconstructions_regions_count_every_wrong_cell():
+    rng = np.random.default_rng(3)
+    grids = np.where(rng.random((1, 10, 10)) < 0.3, 1.0, -1.0)  # (1, 10, 10)
+    decoded = grids * np.where(rng.random(grids.shape) < 0.15, -1.0, 1.0)
+    ((part,),) = [alt.details(cae.reconstructions(grids, decoded, ["w"]))]
+    wrong = [re.match(r".*; (\d+) missed, (\d+) invented", cell) for row in part["rows"] for cell in row[1:]]
+    missed = int(np.sum((grids > 0) & (decoded < 0)))
+    invented = int(np.sum((grids < 0) & (decoded > 0)))
+    assert missed + invented > 0
+    assert sum(int(m[1]) for m in wrong) == missed and sum(int(m[2]) for m in wrong) == invented
+    assert len(part["rows"]) == 4 and part["columns"][1] == "x cell 0 to 2"  # 10 cells in 4 regions: 0 2 5 8 10
+
+
+def test_the_crossover_curves_are_in_a_table_at_their_measured_values():
+    sweep = {
+        "label": "blocks",
+        "values": [10, 100],
+        "exact_us": [2.0, 8.0],
+        "fcl_us": [3.0, 30.0],
+        "learned_us": [4.0, 4.0],
+        "crossing": {"exact": {"value": 50.0}, "fcl": None},
+    }
+    (part,) = alt.details(crossover.crossover({"scenario": "3do", "preset": "paper", "variables": {"b": sweep}}))
+    assert part["rows"] == [["10", "2", "3", "4", "2.00"], ["100", "8", "30", "4", "0.50"]]
+    assert part["text"].endswith(
+        "cheaper by more than 25% at 100. The network's curve crosses the exact, default (compiled) one at 50."
+    )
 
 
 def test_a_description_refuses_tex():
@@ -419,7 +469,7 @@ CHAPTER_FIGURES = (  # the figures chapters 04 and 05 show, read on the site at 
     "crossover.crossover",
     "planning.samplers",
     "planning.roadmap_steps",
-    "planning.ratio_comparison",
+    "timings.ratio_comparison",
     "scenes.path_frame",
     "scenes.scene_still",
 )

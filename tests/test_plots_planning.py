@@ -13,7 +13,7 @@ from toolkit.experiments.queries import make_queries
 from toolkit.geometry.collision import exact_checker
 from toolkit.planning.paper_prm import PRM
 from toolkit.planning.prm import PlanStep, plan
-from toolkit.plots import planning
+from toolkit.plots import planning, timings
 
 SCENARIO = scenarios.get("2ds")
 
@@ -180,13 +180,13 @@ PLANNING = {  # as queries.summarize writes it: median totals, quartiles 20 % be
 
 
 def test_stage_times_one_stacked_bar_per_sampler_and_mode_with_the_given_heights():
-    ax = planning.stage_times({"2DS": PLANNING}).axes[0]
+    ax = timings.stage_times({"2DS": PLANNING}).axes[0]
     bars = {c.get_label(): [p.get_height() for p in c.patches] for c in ax.containers if hasattr(c, "patches")}
     assert [t.get_text() for t in ax.figure.legends[0].texts] == [*bars, "total: quartiles"]
-    assert list(bars) == [planning.STAGE_LABELS[k] for k in ("sampling_s", "connection_s", "query_s", "other_s")]
+    assert list(bars) == [timings.STAGE_LABELS[k] for k in ("sampling_s", "connection_s", "query_s", "other_s")]
     order = [(s, m) for s in ("BS", "OB", "G", "BT") for m in ("without", "with")]
     for key in ("sampling_s", "connection_s", "query_s"):
-        np.testing.assert_allclose(bars[planning.STAGE_LABELS[key]], [MEDIANS[s][m][key] for s, m in order])
+        np.testing.assert_allclose(bars[timings.STAGE_LABELS[key]], [MEDIANS[s][m][key] for s, m in order])
     np.testing.assert_allclose(np.sum(list(bars.values()), axis=0), [MEDIANS[s][m]["total_s"] for s, m in order])
     (whiskers,) = ax.collections  # the total's quartiles, one vertical segment a bar: never below zero
     spans = np.array([segment[:, 1] for segment in whiskers.get_segments()])  # (bars, 2): q1, q3
@@ -207,7 +207,7 @@ def test_ratio_comparison_draws_one_baseline_per_panel_on_one_log_scale():
         "2DS sampling": {"BS": 1.2, "OB": 1.1, "G": 1.3, "BT": 0.7},
         "3DC-7 total": {"BS": 1, "OB": 1, "G": 1, "BT": 1},
     }
-    fig = planning.ratio_comparison({"paper, means": series, "ours vs the lazy planner": lazy})
+    fig = timings.ratio_comparison({"paper, means": series, "ours vs the lazy planner": lazy})
     assert len(fig.axes) == 2
     ax, other = fig.axes
     assert (
@@ -223,13 +223,13 @@ def test_ratio_comparison_draws_one_baseline_per_panel_on_one_log_scale():
         for container, (name, ratios) in zip(panel.containers, ratios_by_series.items()):
             assert container.get_label() == name
             np.testing.assert_allclose([p.get_height() for p in container.patches], list(ratios.values()))
-    close = planning.ratio_comparison({"total": {"ours": {"BS": 0.8, "OB": 1.2, "G": 1.6, "BT": 2.1}}}).axes[0]
+    close = timings.ratio_comparison({"total": {"ours": {"BS": 0.8, "OB": 1.2, "G": 1.6, "BT": 2.1}}}).axes[0]
     assert {"1", "1.5", "2"} <= {t.get_text() for t in close.get_yticklabels()}  # finer labels within a decade
 
 
 def test_throughputs_bar_per_scenario_and_checker():
     rates = {"2DS": {"exact": 9e7, "learned": 3e6}, "3DC-7": {"exact": 2e5, "learned": 2.5e6}}
-    ax = planning.throughputs(rates).axes[0]
+    ax = timings.throughputs(rates).axes[0]
     exact_bars, learned_bars = ax.containers
     np.testing.assert_allclose([p.get_height() for p in exact_bars.patches], [9e7, 2e5])
     np.testing.assert_allclose([p.get_height() for p in learned_bars.patches], [3e6, 2.5e6])

@@ -140,6 +140,34 @@ def test_every_figure_of_every_chapter_and_tutorial_has_a_text_alternative(site)
     assert {p: n for p, text in pages.items() if (n := len(re.findall(r'<img\b(?![^>]*\balt="[^"]+")', text)))} == {}
 
 
+SHOWN_UNDER = rf'{re.escape(alt.DESCRIBED_BELOW)}"[^>]*>\s*<details class="figure-described">'  # an img, then it
+
+
+@pytest.mark.slow
+def test_every_figure_of_several_panels_is_described_in_full_under_it(site):
+    """A figure of several panels (and a map, a 3D view, Algorithm 1's steps) carries a longer description from its
+    data, never the guard's read from titles (:func:`toolkit.plots.alt.details`), and its page shows it under it:
+    a figure output's (its metadata's ``details``) and a still picture's (:func:`~toolkit.plots.alt.figure_html`)."""
+    guarded, unshown, described = {}, {}, 0
+    for name, run in site.runs.items():
+        outputs = [o for cell in run.notebook.cells if cell.cell_type == "code" for o in cell.outputs]
+        said = [o.get("metadata", {}).get("image/png", {}) for o in outputs if "image/png" in o.get("data", {})]
+        details = [s["details"] for s in said if s.get("details")]
+        html_outputs = ["".join(o["data"]["text/html"]) for o in outputs if "text/html" in o.get("data", {})]
+        in_html = sum(len(re.findall(SHOWN_UNDER, text)) for text in html_outputs)
+        described += len(details) + in_html
+        read_from_titles = [p["name"] for d in details for p in d if alt.is_fallback(p["name"])]
+        read_from_titles += [text[:80] for text in html_outputs if f"<strong>{alt.FALLBACK}" in text]
+        if read_from_titles:
+            guarded[name] = read_from_titles
+        shown = len(re.findall(SHOWN_UNDER, page_of(site, ROOT / name).read_text()))
+        if shown != len(details) + in_html:
+            unshown[name] = f"{shown} of {len(details) + in_html} described under the figure"
+    assert guarded == {}
+    assert unshown == {}
+    assert described >= 20  # the chapters' maps, grids, steps and crossover curves (a test that can fail)
+
+
 @pytest.mark.slow
 def test_the_embedded_scenes_are_titled_and_told_in_words(site):
     page = page_of(site, ROOT / "notebooks" / "05_3d_scenes.ipynb").read_text()
@@ -223,13 +251,19 @@ def test_a_widget_becomes_a_note_followed_by_what_its_output_widget_showed():
         nbformat.v4.new_output("display_data", data={"application/vnd.jupyter.widget-view+json": view})
     ]
     state = {
-        "box": {"model_name": "VBoxModel", "state": {"children": ["IPY_MODEL_slider", "IPY_MODEL_out"]}},
+        "box": {
+            "model_name": "VBoxModel",
+            "state": {"children": ["IPY_MODEL_slider", "IPY_MODEL_out", "IPY_MODEL_told", "IPY_MODEL_empty"]},
+        },
         "slider": {"model_name": "IntSliderModel", "state": {"value": 1}},
         "out": {"model_name": "OutputModel", "state": {"outputs": [dict(figure)]}},
+        "told": {"model_name": "HTMLModel", "state": {"value": "<details>the figure in words</details>"}},
+        "empty": {"model_name": "HTMLModel", "state": {"value": ""}},
     }
     nb.metadata["widgets"] = {"application/vnd.jupyter.widget-state+json": {"state": state}}
     outputs = static_widgets(nb).cells[0].outputs
-    assert [o["data"].get("text/html") for o in outputs] == [LIVE_ONLY_IN_JUPYTERLAB, None]
+    told = "<details>the figure in words</details>"  # an HTML widget's text: a picture's longer description
+    assert [o["data"].get("text/html") for o in outputs] == [LIVE_ONLY_IN_JUPYTERLAB, None, told]
     assert outputs[1]["data"]["image/png"] == "iVBORw0KGgo=" and "widgets" not in nb.metadata
 
 
@@ -345,6 +379,35 @@ def test_a_figure_on_a_page_gets_the_alt_text_of_its_output(tmp_path):
     )
     assert site_hooks.figure_alts(page, tmp_path / "chapter.ipynb") == (
         '<img alt="a &quot;dark&quot; square" class="" src="data:image/png;base64,iVBORw0KGgo=">'
+    )
+
+
+def test_a_complex_figure_is_described_in_full_under_it_and_its_alt_says_so(tmp_path):
+    parts = [
+        {"name": "left <panel>", "text": "3 blocks", "columns": ["block", "x"], "rows": [["1", "2.5"], ["2", "4"]]},
+        {"name": "right", "text": "", "columns": [], "rows": []},
+    ]
+    figure = nbformat.v4.new_output(
+        "display_data",
+        data={"image/png": "iVBORw0KGgo="},
+        metadata={"image/png": {"alt": "two panels", "details": parts}},
+    )
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [nbformat.v4.new_code_cell("fig")]
+    nb.cells[0].outputs = [figure]
+    nbformat.write(nb, tmp_path / "chapter.ipynb")
+    page = '<div class="jp-RenderedImage"><img alt="No description" src="data:image/png;base64,iVBORw0KGgo="></div>'
+    assert site_hooks.figure_alts(page, tmp_path / "chapter.ipynb") == (
+        '<div class="jp-RenderedImage">'
+        f'<img alt="two panels {alt.DESCRIBED_BELOW}" src="data:image/png;base64,iVBORw0KGgo=">\n'
+        '<details class="figure-described"><summary>Figure described</summary>\n'
+        "<p><strong>left &lt;panel&gt;</strong>: 3 blocks</p>"
+        '<div class="figure-described-table" role="region" tabindex="0" aria-label="table: left &lt;panel&gt;">'
+        "<table><caption>left &lt;panel&gt;</caption>"
+        '<thead><tr><th scope="col">block</th><th scope="col">x</th></tr></thead>'
+        '<tbody><tr><th scope="row">1</th><td>2.5</td></tr><tr><th scope="row">2</th><td>4</td></tr></tbody>'
+        "</table></div>"
+        "<p><strong>right</strong></p>\n</details></div>"
     )
 
 
@@ -483,7 +546,9 @@ FOCUSABLE = {  # a kind of focusable element: a page that has one, and how to fi
     ),
     "scrolling table": ("docs/accessibility.html", ".md-typeset__scrollwrap[tabindex='0']"),
     "answer disclosure": ("notebooks/01_workspaces_and_collision.html", "details > summary"),
+    "figure described": ("notebooks/02_cae_reconstruction.html", "details.figure-described > summary"),
     "link in text": ("index.html", "article p a[href]"),
+    "navigation link": ("index.html", ".md-sidebar--primary .md-nav__link[href]"),
 }
 
 
@@ -636,6 +701,129 @@ def test_display_math_scrolls_at_320_px_instead_of_being_cut(served, chromium, s
             page.close()
     assert {path: eqs for path, eqs in cut.items() if eqs} == {}
     assert remote == []
+
+
+AUDITED = ["index.html", *(f"notebooks/{c.stem}.html" for c in CHAPTERS)]  # what the manual pass went through
+TAB_STOP = """() => {  // the focused element: what a screen reader names it by, its box, its outline
+    const e = document.activeElement;
+    if (!e || e === document.body) return null;
+    const box = e.getBoundingClientRect(), style = getComputedStyle(e);
+    const labelled = e.getAttribute('aria-labelledby');
+    const name = (e.getAttribute('aria-label') || (labelled && document.getElementById(labelled)?.textContent)
+        || e.getAttribute('title') || e.getAttribute('alt') || e.getAttribute('placeholder')
+        || e.textContent.trim() || e.querySelector('img')?.alt || '').trim();
+    return {tag: e.tagName, cls: String(e.className).slice(0, 40), name: name.slice(0, 60),
+            area: box.width * box.height,
+            outline: style.outlineStyle !== 'none' && parseFloat(style.outlineWidth) >= 2,
+            where: Math.round(box.x) + ',' + Math.round(box.y + scrollY)};
+}"""
+
+
+def tab_stops(page, limit: int = 1000) -> list[dict]:
+    """Every element the Tab key reaches on ``page``, in order, once round (:data:`TAB_STOP` of each)."""
+    stops: list[dict] = []
+    for _ in range(limit):
+        page.keyboard.press("Tab")
+        stop = page.evaluate(TAB_STOP)
+        if stop is None or (stops and stop == stops[0]):
+            break
+        stops.append(stop)
+    return stops
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_every_tab_stop_of_the_home_page_and_the_chapters_is_named_and_outlined(site, served, chromium):
+    """WCAG 2.4.7 and 4.1.2, as the manual pass checked them: Tab through the home page and every chapter; each
+    element that takes the focus has a name and a box, and an outline of 2 px or more (the search box, whose
+    focus material shows by turning it white, and the viewer's frames, where the focus moves inside, aside)."""
+    remote: list[str] = []
+    unnamed, unseen, counted = {}, {}, {}
+    for path in AUDITED:
+        page = open_page(chromium, served + path, remote)
+        try:
+            page.wait_for_timeout(1000)  # MathJax and material's scripts have made their elements focusable
+            stops = tab_stops(page)
+        finally:
+            page.close()
+        counted[path] = len(stops)
+        unnamed[path] = [s for s in stops if not s["name"] and s["tag"] != "IFRAME"]
+        framed = ("IFRAME", "INPUT")
+        unseen[path] = [s for s in stops if s["tag"] not in framed and (not s["outline"] or s["area"] < 4)]
+    assert all(n >= 20 for n in counted.values()), counted
+    assert {p: s for p, s in unnamed.items() if s} == {}
+    assert {p: s for p, s in unseen.items() if s} == {}
+    assert remote == []
+
+
+def accessibility_tree(page) -> list[dict]:
+    """Chromium's accessibility tree of ``page`` (CDP's ``Accessibility.getFullAXTree``): what a screen reader reads,
+    names in full (Playwright's ``aria_snapshot`` leaves out names of about 1000 characters and more)."""
+    session = page.context.new_cdp_session(page)
+    try:
+        return [n for n in session.send("Accessibility.getFullAXTree")["nodes"] if not n.get("ignored")]
+    finally:
+        session.detach()
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_a_screen_reader_hears_every_image_link_and_button_named_and_the_headings_in_order(site, served, chromium):
+    """WCAG 1.1.1, 1.3.1, 2.4.6 and 4.1.2 in Chromium's accessibility tree of the home page and every chapter:
+    every image (material's icons hidden), link and button has a name, no figure says nbconvert's placeholder,
+    one heading of level 1 opens the page and no heading skips a level below the one before it."""
+    remote: list[str] = []
+    found = {}
+    for path in AUDITED:
+        page = open_page(chromium, served + path, remote)
+        try:
+            page.wait_for_timeout(1000)
+            nodes = accessibility_tree(page)
+        finally:
+            page.close()
+        name = lambda n: str(n.get("name", {}).get("value", "")).strip()
+        role = lambda n: n.get("role", {}).get("value")
+        levels = [
+            int(p["value"]["value"])
+            for n in nodes
+            if role(n) == "heading"
+            for p in n.get("properties", [])
+            if p["name"] == "level"
+        ]
+        found[path] = {
+            "unnamed": [role(n) for n in nodes if role(n) in ("image", "img", "link", "button") and not name(n)],
+            "placeholder": [name(n)[:60] for n in nodes if "No description has been provided" in name(n)],
+            "first heading": levels[:1],
+            "skips": [(a, b) for a, b in zip(levels, levels[1:]) if b > a + 1],
+            "level 1": levels.count(1),
+        }
+    expected = {"unnamed": [], "placeholder": [], "first heading": [1], "skips": [], "level 1": 1}
+    assert {p: f for p, f in found.items() if f != expected} == {}
+    assert remote == []
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+@pytest.mark.parametrize("spacing", [False, True], ids=["as styled", "WCAG text spacing"])
+def test_no_page_of_the_manual_pass_scrolls_sideways_at_320_px(served, chromium, spacing):
+    """WCAG 1.4.10 and 1.4.12: at 320 CSS px, with and without text spacing, the home page and every chapter reflow:
+    the page itself never scrolls sideways (wide code, tables, equations and figures scroll or shrink in their
+    own boxes)."""
+    wide = {}
+    for path in AUDITED:
+        page = chromium.new_page(viewport={"width": 320, "height": 640})
+        try:
+            page.goto(served + path, wait_until="load")
+            if spacing:
+                page.add_style_tag(content=TEXT_SPACING + " p { margin-bottom: 2em !important; }")
+            page.wait_for_timeout(1500)
+            wide[path] = page.evaluate("document.documentElement.scrollWidth - document.documentElement.clientWidth")
+        finally:
+            page.close()
+    assert {p: px for p, px in wide.items() if px > 0} == {}
 
 
 def search(page, words: str) -> list[str]:

@@ -241,8 +241,9 @@ def tree(model_id: str, state: dict) -> list[dict]:
 
 
 def shown_by(model_id: str, state: dict) -> list[nbformat.NotebookNode]:
-    """The outputs the widget ``model_id`` and the widgets inside it displayed: its ``Output`` widgets' outputs and
-    its ``Image`` widgets' pictures (their ``tooltip`` as the picture's alt text)."""
+    """The outputs the widget ``model_id`` and the widgets inside it displayed: its ``Output`` widgets' outputs, its
+    ``Image`` widgets' pictures (their ``tooltip`` as the picture's alt text) and its ``HTML`` widgets' text (a
+    picture's longer description, :func:`toolkit.plots.alt.details_html`)."""
     model = state.get(model_id)
     if model is None:
         return []
@@ -250,6 +251,8 @@ def shown_by(model_id: str, state: dict) -> list[nbformat.NotebookNode]:
         return [nbformat.from_dict(o) for o in model.get("state", {}).get("outputs", [])]
     if model.get("model_name") == "ImageModel":
         return image_widget_output(model)
+    if model.get("model_name") == "HTMLModel" and model.get("state", {}).get("value"):
+        return [nbformat.v4.new_output("display_data", data={"text/html": model["state"]["value"]})]
     children = model.get("state", {}).get("children", [])
     return [o for child in children for o in shown_by(str(child).removeprefix("IPY_MODEL_"), state)]
 

@@ -13,8 +13,11 @@ hub and the repository its students pull, a link that opens it there through nbg
 
 Accessible (WCAG 2.1 AA, measured by :mod:`tools.accessibility`): every page has one ``h1`` (a heading that
 a notebook's output prints becomes an ``h2``), and every block of code that scrolls sideways can be reached by
-keyboard (``tabindex="0"``) and is named for a screen reader (:func:`focusable_code`); the colours, underlined
-links and focus outline are in ``docs/site/accessibility.css``.
+keyboard (``tabindex="0"``) and is named for a screen reader (:func:`focusable_code`), while a cell's input, which
+nbconvert makes a tab stop of no name (every paragraph of a chapter one more press of Tab), is not; the colours,
+underlined links and focus outline are in ``docs/site/accessibility.css``. Every figure of a notebook page takes
+the alt text its output carries, and a complex figure (several panels, a map, a 3D view) its longer description
+in a "Figure described" disclosure under it (:func:`figure_alts`, from :mod:`toolkit.plots.alt`).
 
 Offline: notebook pages load MathJax from the site's own copy (``assets/mathjax``, at the right depth for
 each page), and nbconvert's loader of mermaid diagrams, which imports its script from a CDN, is dropped
@@ -36,6 +39,8 @@ from mkdocs.structure.files import File, Files
 from mkdocs.structure.pages import Page
 from mkdocs.structure.toc import get_toc
 
+from toolkit.plots import alt as plots_alt
+
 MATHJAX_PLACEHOLDER = '"MATHJAX/'  # how mkdocs.yml's custom_mathjax_url starts; the site's copy replaces it
 MATHJAX = "assets/mathjax"
 DOWNLOADS = "downloads"  # tools.site's folder of notebooks without outputs
@@ -50,6 +55,10 @@ CODE_BLOCK = re.compile(
     r'<div class="(?P<cls>[^"]*\bhighlight(?P<cell>-ipynb)?\b[^"]*)">(?P<space>\s*)<pre(?![^>]*tabindex)'
 )
 REGION = 'tabindex="0" role="region" aria-label="code"'
+CELL_TAB_STOP, CELL = (
+    '<div class="jp-Cell-inputWrapper" tabindex="0">',
+    '<div class="jp-Cell-inputWrapper">',
+)  # see below
 ROLE_OR_MODULE = re.compile(
     r'doc-object doc-module">\s*<h\d id="(?P<module>[\w.]+)"'  # where a module's entry begins
     r"|:(?:py:)?(?:mod|func|class|meth|attr|data|exc|obj):<code>(?P<tilde>~)?(?P<name>[\w.]+)</code>"
@@ -111,7 +120,7 @@ def on_page_content(html: str, page: Page, config, files: Files) -> str:
         return html
     mathjax = posixpath.relpath(MATHJAX, posixpath.dirname(page.file.dest_uri) or ".")
     html = headings_and_contents(MERMAID_LOADER.sub("", html.replace(MATHJAX_PLACEHOLDER, f'"{mathjax}/')), page)
-    html = figure_alts(one_h1(html), Path(page.file.abs_src_path or ""))
+    html = figure_alts(one_h1(html), Path(page.file.abs_src_path or "")).replace(CELL_TAB_STOP, CELL)
     html = take_away(page, config["extra"].get("jupyterhub") if config else None, files) + html
 
     def resolve(match: re.Match) -> str:
@@ -162,22 +171,26 @@ def nbgitpuller_link(hub: Mapping, path: str) -> str:
 
 def figure_alts(html: str, notebook: Path) -> str:
     """Each figure's ``<img>`` gets the alt text its output carries in ``notebook`` (``metadata["image/png"]["alt"]``,
-    :mod:`toolkit.plots.alt`): nbconvert's lab template leaves that metadata out and writes a placeholder."""
+    :mod:`toolkit.plots.alt`): nbconvert's lab template leaves that metadata out and writes a placeholder. A complex
+    figure's longer description (``metadata["image/png"]["details"]``) follows it, and its alt says so (WCAG
+    technique G74)."""
     if not notebook.is_file():  # a page made by hand (the tests')
         return html
     outputs = [o for c in json.loads(notebook.read_text()).get("cells", []) for o in c.get("outputs", [])]
-    alts = {
-        "".join(o["data"]["image/png"].split()): o.get("metadata", {}).get("image/png", {}).get("alt")
+    said = {
+        "".join(o["data"]["image/png"].split()): o.get("metadata", {}).get("image/png", {})
         for o in outputs
         if "image/png" in o.get("data", {})
     }
 
     def put(match: re.Match) -> str:
-        alt = alts.get("".join(match["data"].split()))
+        found = said.get("".join(match["data"].split()), {})
+        alt, parts = found.get("alt"), found.get("details") or []
         if not alt:
             return match[0]
+        alt += f" {plots_alt.DESCRIBED_BELOW}" if parts else ""
         tag = re.sub(r'\s\balt="[^"]*"', "", match[0])
-        return tag.replace("<img", f'<img alt="{html_lib.escape(alt, quote=True)}"', 1)
+        return tag.replace("<img", f'<img alt="{html_lib.escape(alt, quote=True)}"', 1) + plots_alt.details_html(parts)
 
     return IMAGE.sub(put, html)
 

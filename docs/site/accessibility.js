@@ -29,10 +29,21 @@ const markScrollingTables = () => {
   }
 };
 
+// - material's icons (inline SVG in the header, search, navigation, "Back to top" and footer) sit inside named links
+//   and buttons, or beside text that says the same: a screen reader's tree lists each as an unnamed image, so
+//   they are hidden from it (aria-hidden), as GitHub's copy icons already are.
+const ICONS = ".md-header svg, .md-search svg, .md-nav svg, .md-top svg, .md-footer svg, .md-source svg, .md-content__button svg";
+const hideIcons = () => {
+  for (const icon of document.querySelectorAll(ICONS)) {
+    if (!icon.hasAttribute("aria-label") && !icon.querySelector("title")) icon.setAttribute("aria-hidden", "true");
+  }
+};
+
 document$.subscribe(() => {
   for (const wrap of document.querySelectorAll(".md-typeset__scrollwrap:not([tabindex])")) makeRegion(wrap, "table");
   markScrollingTables();
   markScrollingMath();
+  hideIcons();
 });
 let pending = false; // MathJax typesets after the page loads: look again, once a frame, whenever nodes come
 new MutationObserver(() => {

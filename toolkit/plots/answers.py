@@ -1,5 +1,5 @@
 """The collision MLP's answers against the exact checker's: four kinds, their counts, where the mistakes lie and
-the ROC curve (paper §III-B, Table 2; notebook 03).
+the ROC curve, and all of these in words for the figures' descriptions (paper §III-B, Table 2; notebook 03).
 
 The learned checker calls a configuration valid when P(valid) >= a threshold; against the truth each answer is
 one of the four kinds of ``ANSWERS`` (:func:`answer_codes`): valid kept and invalid rejected are right, a valid
@@ -12,6 +12,10 @@ slice, and :func:`roc_points` sweeps the threshold. The figures of :mod:`toolkit
 from __future__ import annotations
 
 import numpy as np
+
+from toolkit.learning import metrics
+from toolkit.plots.alt import Part, map_part
+from toolkit.plots.slices import CSpaceSlice
 
 ANSWERS = ("valid kept", "valid rejected", "invalid rejected", "invalid kept (dangerous)")  # answer_codes 0-3
 
@@ -67,3 +71,61 @@ def roc_points(probability, valid, thresholds=None) -> tuple[np.ndarray, np.ndar
         return len(q) - np.searchsorted(np.sort(q), ts, side="left")
 
     return ts, kept(p[~truth]) / (~truth).sum(), kept(p[truth]) / truth.sum()
+
+
+# -- the answers in words: the figures' longer descriptions ------------------------
+
+
+def answers_in_words(predicted_valid, valid) -> str:
+    """The four kinds of answer and the rates, in words (a figure's text alternative)."""
+    counts = confusion_counts(predicted_valid, valid)
+    rates = metrics.classification(np.ravel(predicted_valid), np.ravel(valid))
+    said = ", ".join(f"{kind} {n}" for kind, n in counts.items())
+    return f"{said}; accuracy {rates['acc']:.2f}, TPR {rates['tpr']:.2f}, TNR {rates['tnr']:.2f}"
+
+
+def map_in_regions(name: str, said: str, probability, valid, grid: CSpaceSlice, threshold: float, extra=None) -> Part:
+    """A P(valid) map read region by region (a part of a longer description, after ``said``): mean P(valid), the
+    share truly in collision, the dangerous and conservative mistakes at ``threshold``; ``extra(region)`` adds to
+    each cell."""
+    probability, valid = np.asarray(probability), np.asarray(valid, dtype=bool)  # (nx, ny)
+    codes = answer_codes(probability >= threshold, valid)  # (nx, ny)
+
+    def region(cells: tuple[slice, slice]) -> str:
+        c = codes[cells]
+        text = f"P {np.mean(probability[cells]):.2f}, {np.mean(~valid[cells]):.0%} in collision, "
+        text += f"{int(np.sum(c == 3))} dangerous, {int(np.sum(c == 1))} conservative"
+        return text + (extra(cells) if extra else "")
+
+    x, y = ((name, lo, hi) for name, lo, hi in zip(grid.names, grid.lower, grid.upper))
+    text = f"{said}. The map by region, top row first: mean P(valid), the share truly in collision, the mistakes"
+    return map_part(name, text, grid.shape, x, y, region)
+
+
+def per_cell(points, grid: CSpaceSlice) -> np.ndarray:
+    """How many of ``points (M, 2)`` (the grid's two DoFs) lie in each cell of its map: ``(nx, ny)``."""
+    edges = [np.linspace(lo, hi, n + 1) for lo, hi, n in zip(grid.lower, grid.upper, grid.shape)]
+    x, y = np.asarray(points, dtype=float).reshape(-1, 2).T  # (M,) each
+    return np.histogram2d(x, y, bins=edges)[0]
+
+
+def answer_tables(predicted_valid, valid) -> list[Part]:
+    """The counts of the four kinds of answer and the rates, as tables (parts of a longer description)."""
+    counts = confusion_counts(predicted_valid, valid)
+    rates = metrics.classification(np.ravel(predicted_valid), np.ravel(valid))
+    return [
+        Part(
+            "counts",
+            "configurations of each kind of answer",
+            ("answer", "count"),
+            tuple((k, str(n)) for k, n in counts.items()),
+        ),
+        Part(
+            "rates",
+            "accuracy, TPR (valid kept) and TNR (in collision rejected)",
+            ("rate", "value"),
+            tuple(
+                (name.upper() if name != "acc" else "accuracy", f"{rates[name]:.2f}") for name in ("acc", "tpr", "tnr")
+            ),
+        ),
+    ]

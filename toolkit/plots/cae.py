@@ -25,7 +25,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from toolkit.learning.metrics import reconstruction_accuracy
-from toolkit.plots.alt import describe
+from toolkit.plots.alt import Part, describe, lines_part, map_part
 from toolkit.plots.palette import COLORS, GREYS_CMAP, MARKERS, PAGE_WIDTH, SEQUENTIAL_CMAP, series_style
 
 ERROR_COLORS = ListedColormap(
@@ -80,7 +80,7 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
     accuracy = reconstruction_accuracy(decoded, grids)  # (W,)
     fig = Figure(figsize=(PAGE_WIDTH, 2.7 * len(grids)), layout="constrained")
     rows = fig.subfigures(len(grids), 1, squeeze=False)[:, 0]  # (W,) one row per workspace
-    said = []
+    said, parts = [], []
     for row, grid, out, name, acc in zip(rows, grids, decoded, names, accuracy):
         errors = error_cells(grid, out)
         missed, phantom = int(np.sum(errors & (grid > 0))), int(np.sum(errors & (grid < 0)))
@@ -98,6 +98,7 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
             f"{name}: {acc:.1%} of cells right against {all_free:.1%} for answering all free; "
             f"{missed} blocked cells missed, {phantom} free cells invented"
         )
+        parts.append(grid_part(name, said[-1], grid, out))
     handles: list[Any] = [  # the cell's colour with its marker on it
         (Patch(facecolor=COLORS[kind]), Line2D([], [], marker=ERROR_MARKERS[kind], color=COLORS["ink"], linestyle=""))
         for kind in ("missed", "phantom")
@@ -106,7 +107,22 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
     fig.legend(handles, labels, loc="outside lower center", ncols=2, fontsize=9, frameon=False)
     grids_said = f"{len(grids)} occupancy grid{'s' if len(grids) > 1 else ''}"
     text = f"{grids_said}, each beside its reconstruction and its wrong cells. " + "; ".join(said)
-    return describe(fig, text + ".")
+    return describe(fig, text + ".", parts)
+
+
+def grid_part(name: str, said: str, grid: np.ndarray, decoded: np.ndarray) -> Part:
+    """One workspace's row of :func:`reconstructions` read region by region: the blocked share of the input and of
+    the decoded grid, and the cells decoded wrong there."""
+    errors = error_cells(grid, decoded)
+
+    def region(cells: tuple[slice, slice]) -> str:
+        g, d, e = grid[cells], decoded[cells], errors[cells]
+        blocked = f"{np.mean(g > 0):.0%} blocked, decoded {np.mean(d > 0):.0%}"
+        return f"{blocked}; {int(np.sum(e & (g > 0)))} missed, {int(np.sum(e & (g < 0)))} invented"
+
+    nx, ny = grid.shape
+    text = f"{said}. The grid by region, top row first: blocked share of the input and of the decoded grid, wrong cells"
+    return map_part(name, text, grid.shape, ("x cell", 0, nx), ("y cell", 0, ny), region)
 
 
 def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
@@ -169,21 +185,7 @@ def contraction(
     panels = fig.subplot_mosaic([["j", "z"], ["j", "x"]])  # the norms tall on the left, the two responses stacked
     ax_j, ax_z, ax_x = panels["j"], panels["z"], panels["x"]
     names = list(jacobian_norms)
-    ink = dict(color=COLORS["ink"])
-    ax_j.boxplot(
-        [np.asarray(jacobian_norms[n]) for n in names],
-        showmeans=True,
-        boxprops=ink,
-        whiskerprops=ink,
-        capprops=ink,
-        medianprops=ink | dict(linewidth=2),
-        meanprops=dict(marker="^", color=COLORS["ink"], markerfacecolor=COLORS["free"], markeredgecolor=COLORS["ink"]),
-        flierprops=dict(marker="o", markeredgecolor=COLORS["ink"], markersize=3),
-    )
-    ax_j.set_xticks(range(1, len(names) + 1), [n.replace(" (", "\n(") for n in names])  # long names on two lines
-    ax_j.set_xlabel("model")
-    ax_j.set_ylabel("Jacobian norm ||dz/dx|| per workspace")
-    ax_j.set_title("Encoder Jacobian norm", fontsize=10)
+    _draw_norms(ax_j, jacobian_norms)
     for k, name in enumerate(names):
         ax_z.plot(flips, np.mean(latent_shift[name], axis=1), label=name, **series_style(k))
         ax_x.plot(flips, np.mean(decoded_change[name], axis=1), label=name, **series_style(k))
@@ -201,8 +203,38 @@ def contraction(
         "decoded cells"
         for name in names
     )
+    norms = Part(
+        "Encoder Jacobian norm",
+        "the Frobenius norm of dz/dx over the workspaces, per model",
+        ("model", "workspaces", "lowest", "median", "mean", "highest"),
+        tuple(
+            (n, str(len(v)), *(f"{f(v):.3g}" for f in (np.min, np.median, np.mean, np.max)))
+            for n, v in ((n, np.asarray(jacobian_norms[n])) for n in names)
+        ),
+    )
+    parts = [norms, lines_part(ax_z, text="mean over the trials"), lines_part(ax_x, text="mean over the trials")]
     text = "How strongly each encoder reacts to its input: the norm of its Jacobian, and how far the latent code and"
-    return describe(fig, f"{text} the reconstruction move when cells of the input are flipped. {said}.")
+    return describe(fig, f"{text} the reconstruction move when cells of the input are flipped. {said}.", parts)
+
+
+def _draw_norms(ax, jacobian_norms: dict[str, np.ndarray]) -> None:
+    """A box per model of its encoder's Jacobian norms over the workspaces, the mean a triangle."""
+    names = list(jacobian_norms)
+    ink = dict(color=COLORS["ink"])
+    ax.boxplot(
+        [np.asarray(jacobian_norms[n]) for n in names],
+        showmeans=True,
+        boxprops=ink,
+        whiskerprops=ink,
+        capprops=ink,
+        medianprops=ink | dict(linewidth=2),
+        meanprops=dict(marker="^", color=COLORS["ink"], markerfacecolor=COLORS["free"], markeredgecolor=COLORS["ink"]),
+        flierprops=dict(marker="o", markeredgecolor=COLORS["ink"], markersize=3),
+    )
+    ax.set_xticks(range(1, len(names) + 1), [n.replace(" (", "\n(") for n in names])  # long names on two lines
+    ax.set_xlabel("model")
+    ax.set_ylabel("Jacobian norm ||dz/dx|| per workspace")
+    ax.set_title("Encoder Jacobian norm", fontsize=10)
 
 
 def latent_scatter(

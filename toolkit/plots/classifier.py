@@ -35,7 +35,8 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from toolkit.learning import metrics
-from toolkit.plots.alt import describe
+from toolkit.plots import answers
+from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
 from toolkit.plots.palette import CATEGORICAL, COLORS, GREY_CMAP, HATCHES, PAGE_WIDTH, halo, series_style
 from toolkit.plots.slices import CSpaceSlice
@@ -58,18 +59,19 @@ def probability_maps(
     """Several models' P(valid) maps side by side, same grid and truth (e.g. the ``paper`` and ``strong`` presets)."""
     fig = Figure(figsize=(min(PAGE_WIDTH, 3.6 * len(probabilities) + 0.8), 4.2), layout="constrained")
     axes = fig.subplots(1, len(probabilities), squeeze=False)[0]
-    said = []
+    said, parts = [], []
     for ax, (name, probability) in zip(axes, probabilities.items()):
         t = thresholds[name] if isinstance(thresholds, Mapping) else thresholds
         image = _draw_probability(ax, probability, valid, grid, t)
         ax.set_title(f"{name}: P(valid), threshold {t:.2f}", fontsize=9)
-        said.append(f"{name}, threshold {t:.2f}: " + _answers_in_words(np.asarray(probability) >= t, valid))
+        said.append(f"{name}, threshold {t:.2f}: " + answers.answers_in_words(np.asarray(probability) >= t, valid))
+        parts.append(answers.map_in_regions(name, said[-1], probability, valid, grid, t))
     fig.colorbar(image, ax=list(axes), label="P(valid)", shrink=0.8)
     _legend(fig, _mistake_handles())
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
     text += "configurations; grey, 0 black to 1 white) with the true C-obstacle boundary outlined, dangerous "
     text += "mistakes as squares and conservative ones hatched with dots. "
-    return describe(fig, text + "; ".join(said) + ".")
+    return describe(fig, text + "; ".join(said) + ".", parts)
 
 
 def path_map(
@@ -94,39 +96,31 @@ def path_map(
         cut_line.set_path_effects(halo(1.5, ("free",)))  # a white ring: it shows on the dark side too
     cut = Line2D([], [], color=COLORS["ink"], linestyle=":", linewidth=1.5, label=f"P(valid) = {threshold:.2f}")
     x, y = grid.dofs
-    ax.plot(
-        nodes[nodes_valid, x],
-        nodes[nodes_valid, y],
-        ".",
-        color=COLORS["node"],
-        markersize=4,
-        label="roadmap node, valid",
-        path_effects=halo(0.5, ("free",)),
-    )
-    ax.plot(
-        nodes[~nodes_valid, x],
-        nodes[~nodes_valid, y],
-        "X",
-        color=DANGEROUS,
-        markersize=11,
-        label="roadmap node in collision",
-        path_effects=halo(),
-    )
-    ax.plot(
-        path[:, x],
-        path[:, y],
-        "--D",  # dashed, a diamond per configuration: apart from the solid C-obstacle boundary, same blue
-        color=COLORS["path"],
-        linewidth=3,
-        markersize=7,
-        label="returned path (checked exactly)",
-        path_effects=halo(2.5),
-    )
+    _draw_roadmap(ax, nodes, nodes_valid, path, (x, y))
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=10, wrap=True)
     _legend(fig, _mistake_handles()[:1] + [cut] + ax.get_lines())
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
     text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (crosses), and the"
-    return describe(fig, text + f" returned path through {len(path)} configurations, checked exactly.")
+    text += f" returned path through {len(path)} configurations, checked exactly."
+    per_cell = answers.per_cell(nodes[:, [x, y]], grid)  # (nx, ny) roadmap nodes in each cell of the map
+    parts = [
+        answers.map_in_regions(
+            "P(valid) map",
+            f"threshold {threshold:.2f}: " + answers.answers_in_words(np.asarray(probability) >= threshold, valid),
+            probability,
+            valid,
+            grid,
+            threshold,
+            extra=lambda cells: f"; {int(per_cell[cells].sum())} roadmap nodes",
+        ),
+        Part(
+            "returned path",
+            f"its {len(path)} configurations in order, from start to goal",
+            ("configuration", *grid.names),
+            tuple((str(k), f"{q[x]:.3g}", f"{q[y]:.3g}") for k, q in enumerate(path)),
+        ),
+    ]
+    return describe(fig, text, parts)
 
 
 def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
@@ -136,8 +130,8 @@ def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
     _draw_counts(ax_counts, predicted_valid, valid)
     _draw_rates(ax_rates, {"": metrics.classification(np.ravel(predicted_valid), np.ravel(valid))})
     fig.suptitle(title or "Predictions against the exact checker")
-    text = f"{title or 'Predictions against the exact checker'}: " + _answers_in_words(predicted_valid, valid)
-    return describe(fig, text + ".")
+    text = f"{title or 'Predictions against the exact checker'}: " + answers.answers_in_words(predicted_valid, valid)
+    return describe(fig, text + ".", answers.answer_tables(predicted_valid, valid))
 
 
 def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> Figure:
@@ -184,16 +178,18 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     fig.legend([boundary, *handles], labels, loc="outside lower center", ncols=3, fontsize=8, frameon=False)
     text = f"{title + ': ' if title else ''}the model's decision at threshold {threshold:.2f} over {grid.names[0]} and "
     text += f"{grid.names[1]}, each cell by its kind of answer (dangerous ones marked with squares, conservative ones "
-    text += f"with dots), their counts, and the ROC curve. {_answers_in_words(predicted, valid)}; {roc}."
-    return describe(fig, text)
-
-
-def _answers_in_words(predicted_valid, valid) -> str:
-    """The four kinds of answer and the rates, in words (a figure's text alternative)."""
-    counts = confusion_counts(predicted_valid, valid)
-    rates = metrics.classification(np.ravel(predicted_valid), np.ravel(valid))
-    said = ", ".join(f"{kind} {n}" for kind, n in counts.items())
-    return f"{said}; accuracy {rates['acc']:.2f}, TPR {rates['tpr']:.2f}, TNR {rates['tnr']:.2f}"
+    text += f"with dots), their counts, and the ROC curve. {answers.answers_in_words(predicted, valid)}; {roc}."
+    cut, fpr, tpr = roc_points(probability, valid, np.linspace(0.0, 1.0, 11))  # (11,) each
+    curve = Part(
+        "ROC curve",
+        roc,
+        ("threshold", "valid kept (TPR)", "in collision kept (1 - TNR)"),
+        tuple((f"{t:.1f}", f"{a:.2f}", f"{b:.2f}") for t, a, b in zip(cut, tpr, fpr)),
+    )
+    decision = answers.map_in_regions(
+        "decision map", answers.answers_in_words(predicted, valid), probability, valid, grid, threshold
+    )
+    return describe(fig, text, [decision, *answers.answer_tables(predicted, valid)[:1], curve])
 
 
 # -- the panels ----------------------------------------------------------------
@@ -244,6 +240,40 @@ def _cells(grid: CSpaceSlice, mask, **style) -> PolyCollection:
     corners = np.array([(-1, -1), (1, -1), (1, 1), (-1, 1)]) * half  # (4, 2)
     centres = np.column_stack([grid.axes[0][i], grid.axes[1][j]])  # (n, 2)
     return PolyCollection(centres[:, None, :] + corners[None], linewidths=0, **style)  # (n, 4, 2) squares
+
+
+def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid: np.ndarray, path: np.ndarray, dofs: tuple[int, int]) -> None:
+    """A roadmap's valid nodes as dots, those in collision as crosses, and the path dashed with diamonds, over a map
+    of the two ``dofs``."""
+    x, y = dofs
+    ax.plot(
+        nodes[nodes_valid, x],
+        nodes[nodes_valid, y],
+        ".",
+        color=COLORS["node"],
+        markersize=4,
+        label="roadmap node, valid",
+        path_effects=halo(0.5, ("free",)),
+    )
+    ax.plot(
+        nodes[~nodes_valid, x],
+        nodes[~nodes_valid, y],
+        "X",
+        color=DANGEROUS,
+        markersize=11,
+        label="roadmap node in collision",
+        path_effects=halo(),
+    )
+    ax.plot(
+        path[:, x],
+        path[:, y],
+        "--D",  # dashed, a diamond per configuration: apart from the solid C-obstacle boundary, same blue
+        color=COLORS["path"],
+        linewidth=3,
+        markersize=7,
+        label="returned path (checked exactly)",
+        path_effects=halo(2.5),
+    )
 
 
 def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):

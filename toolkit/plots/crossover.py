@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.figure import Figure
 
-from toolkit.plots.alt import describe
+from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
 from toolkit.util.verdicts import CHEAPER, CLOSE, cost_verdict
 
@@ -54,7 +54,21 @@ def crossover(results: dict) -> Figure:
     fig.tight_layout(rect=(0, (0.2 * len(handles) + 0.2) / fig.get_figheight(), 1, 1))  # a line an entry
     text = f"Cost per configuration of the exact and the learned check, {results['scenario']}, preset "
     text += f"{results['preset']}{quick}, microseconds on log axes. "
-    return describe(fig, text + " ".join(_in_words(sweep) for sweep in sweeps.values()))
+    parts = [_in_a_table(sweep) for sweep in sweeps.values()]
+    return describe(fig, text + " ".join(_in_words(sweep) for sweep in sweeps.values()), parts)
+
+
+def _in_a_table(sweep: dict) -> Part:
+    """One panel's curves as a table: each checker's cost at each value of the variable, and the network's cost
+    over the default exact checker's (below 1: the network is cheaper)."""
+    columns = (sweep["label"], *(f"{STYLES[name][2]}, µs" for name in STYLES), "learned / exact")
+    rows = tuple(
+        (f"{v:,.0f}", *(f"{sweep[f'{name}_us'][i]:.3g}" for name in STYLES), f"{learned / exact:.2f}")
+        for i, (v, exact, learned) in enumerate(zip(sweep["values"], sweep["exact_us"], sweep["learned_us"]))
+    )
+    crossings = [f"the {STYLES[n][2]} one at {c['value']:,.3g}" for n, c in sweep["crossing"].items() if c is not None]
+    said = _in_words(sweep) + (f" The network's curve crosses {', '.join(crossings)}." if crossings else "")
+    return Part(sweep["label"], said, columns, rows)
 
 
 def _in_words(sweep: dict) -> str:

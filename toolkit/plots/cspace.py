@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import textwrap
 from collections.abc import Sequence
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -32,7 +33,7 @@ from matplotlib.patches import Patch, Rectangle
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots.alt import describe
+from toolkit.plots.alt import Part, describe, map_part
 from toolkit.plots.boxes import aabb_corners, add_box_3d
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
 from toolkit.plots.robot_drawing import POSITION_NAMES, draw_robot, few_ticks, link_colors
@@ -116,7 +117,22 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
     counts = [f"{workspace.labels.count(k)} {k}" for k in kinds] if kinds else []
     text = f"The {workspace.family or 'workspace'} workspace, {size}: {len(workspace.boxes)} blocks"
     text += f" ({', '.join(counts)}, each kind its own colour and hatch)" if counts else ""
-    return describe(fig, text + f", {_occupied_share(workspace):.0%} of the region occupied.")
+    text += f", {_occupied_share(workspace):.0%} of the region occupied."
+    return describe(fig, text, [_blocks_part(workspace)])
+
+
+def _blocks_part(workspace: Workspace) -> Part:
+    """The workspace's blocks as a table (a part of a longer description): each one's kind and corners."""
+    point = lambda p: "(" + ", ".join(f"{v:.3g}" for v in p) + ")"
+    return Part(
+        "blocks",
+        f"each block's lower and upper corner ({', '.join('xyz'[: workspace.dim])})",
+        ("block", "kind", "lower corner", "upper corner"),
+        tuple(
+            (str(k + 1), workspace.labels[k] if workspace.labels else "block", point(lo), point(hi))
+            for k, (lo, hi) in enumerate(workspace.boxes)
+        ),
+    )
 
 
 def _occupied_share(workspace: Workspace) -> float:
@@ -172,7 +188,16 @@ def occupancy_figure(workspace: Workspace, layers: Sequence[int] | None = None, 
     text += f"cells, occupied dark, free white: {np.mean(grid > 0):.0%} of the cells occupied"
     if grid.ndim == 3:
         text += f"; one image per z layer, {len(images)} drawn, occupied per layer from bottom: {', '.join(shares)}"
-    return describe(fig, text + ".")
+    x, y = ("x", extent[0], extent[1]), ("y", extent[2], extent[3])
+    parts = [  # each image by region: what share of its cells is occupied
+        map_part(title, f"{share} occupied; by region, top row first", image.shape, x, y, partial(_occupied, image))
+        for title, share, image in zip(titles, shares, images)
+    ]
+    return describe(fig, text + ".", parts)
+
+
+def _occupied(image: np.ndarray, cells: tuple[slice, slice]) -> str:
+    return f"{np.mean(image[cells] > 0):.0%} occupied"
 
 
 # -- configuration space --------------------------------------------------------------
@@ -227,7 +252,16 @@ def cspace_image(checker: CollisionChecker, resolution: int = 600, window: tuple
     )
     where = f"{checker_workspace(checker).family} workspace" + (" (a window of it)" if window else "")
     text = f"Configuration space of the 2D point robot in the {where}: {1 - valid.mean():.0%} of configurations"
-    return describe(fig, text + " in collision, drawn dark; the workspace's blocks outlined inside them.")
+    parts = [_collision_part("C-space", ax, valid), _blocks_part(checker_workspace(checker))]
+    return describe(fig, text + " in collision, drawn dark; the workspace's blocks outlined inside them.", parts)
+
+
+def _collision_part(name: str, ax, valid: np.ndarray) -> Part:
+    """A C-space image (``valid (n, n)``, drawn on ``ax``) read region by region: the share in collision."""
+    left, right, bottom, top = ax.images[0].get_extent()
+    x, y = (ax.get_xlabel(), left, right), (ax.get_ylabel(), bottom, top)
+    text = f"{1 - valid.mean():.0%} in collision; by region, top row first, the share in collision"
+    return map_part(name, text, valid.shape, x, y, lambda cells: f"{1 - valid[cells].mean():.0%} in collision")
 
 
 def cspace_slice(
@@ -274,7 +308,13 @@ def cspace_slice(
     text = f"Slice of the {robot.name} robot's configuration space over {swept}, the other DoF fixed: "
     text += f"{1 - valid.mean():.0%} in collision (dark). A star marks the fixed configuration, which is "
     text += ("valid." if q_valid[0] else "in collision.") + (" Beside it, the robot there." if view else "")
-    return describe(fig, text)
+    star_at = Part(
+        "the star's configuration",
+        "valid" if q_valid[0] else "in collision",
+        ("DoF", "value", "swept here"),
+        tuple((name, f"{q[k]:.3g}", "yes" if k in joints else "no") for k, name in enumerate(robot.dof_names)),
+    )
+    return describe(fig, text, [_collision_part("slice", ax, valid), star_at])
 
 
 def configuration_near_blocks(checker: CollisionChecker, rng: np.random.Generator, n: int = 2000) -> np.ndarray:

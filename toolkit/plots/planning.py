@@ -4,13 +4,12 @@ The 2D figures draw the point robot's configuration space, where a configuration
 the robot's centre (x, y): C-obstacles (the blocks grown by the robot's half-size, as
 the exact checker sees them) are shaded, the blocks themselves outlined, and the
 bounds of the centre dotted (half a robot inside the region). Samples,
-roadmaps and paths are drawn over it. The other figures compare timings and
-throughputs. Every function returns a matplotlib ``Figure`` and never calls ``show()``.
+roadmaps and paths are drawn over it (the timings: :mod:`toolkit.plots.timings`). Every function returns a
+matplotlib ``Figure`` and never calls ``show()``.
 """
 
 from __future__ import annotations
 
-import textwrap
 from typing import Any
 
 import numpy as np
@@ -18,26 +17,14 @@ from matplotlib.collections import LineCollection
 from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
 from matplotlib.patches import Rectangle
-from matplotlib.ticker import NullFormatter
 
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.planning.prm import GOAL, START, PlanStep
-from toolkit.planning.sampling import PAPER_SAMPLERS
-from toolkit.plots.alt import describe
+from toolkit.plots.alt import Part, describe, map_part
 from toolkit.plots.cspace import checker_workspace
-from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH, halo
+from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
 from toolkit.plots.slices import slice_configs
-from toolkit.util.verdicts import per_query_ratios
 
-MODES = ("without", "with")
-STAGE_KEYS = ("sampling_s", "connection_s", "query_s")  # PRM stats, in the order the planner spends them
-STAGE_HATCHES = ("", "//", "..", "xx")  # sampling, connection, query, other: told apart without colour
-STAGE_LABELS = {
-    "sampling_s": "sampling (S, S')",
-    "connection_s": "connection (edges)",
-    "query_s": "query (path, verification, repair)",
-    "other_s": "other (encoding, set-up)",
-}
 C_OBSTACLE = ListedColormap([COLORS["free"], COLORS["c_obstacle"]])  # valid, invalid
 EDGE_COLOR, NODE_COLOR = COLORS["edge"], COLORS["node"]
 PATH_STYLES = {  # by stage: colour, line style (candidate dashed, one a repair rejected dash-dotted, answer solid)
@@ -103,7 +90,22 @@ def samplers(exact: CollisionChecker, samples: dict[str, np.ndarray], attempts: 
     fig.tight_layout()
     counts = "; ".join(f"{name}: {len(Q)}" for name, Q in samples.items())
     of = f" of {attempts} attempts each" if attempts else ""
-    return describe(fig, f"Samples of {len(samples)} samplers{of} over the point robot's C-obstacles (grey). {counts}.")
+    valid, _ = cspace_validity(exact, pixels=4 * 20)  # (H, W): rows are y; 4 x 4 regions of 20 x 20 pixels
+    blocked = 1 - valid.T.reshape(4, 20, 4, 20).mean(axis=(1, 3))  # (4, 4) C-obstacle share per region, [x, y]
+    parts = [_samples_part(exact.robot, name, Q, blocked) for name, Q in samples.items()]
+    text = f"Samples of {len(samples)} samplers{of} over the point robot's C-obstacles (grey). {counts}."
+    return describe(fig, text, parts)
+
+
+def _samples_part(robot, name: str, Q: np.ndarray, blocked: np.ndarray) -> Part:
+    """One sampler's samples ``Q (M, 2)`` counted region by region of the C-space, beside the share of each region
+    that is C-obstacle (``blocked (b, b)``, ``[x, y]``): where a sampler that seeks obstacles puts its samples."""
+    edges = [np.linspace(lo, hi, len(blocked) + 1) for lo, hi in zip(robot.lower, robot.upper)]
+    counts = np.histogram2d(Q[:, 0], Q[:, 1], bins=edges)[0]  # (b, b), [x, y]
+    x, y = ("x", robot.lower[0], robot.upper[0]), ("y", robot.lower[1], robot.upper[1])
+    cell = lambda r: f"{int(counts[r].sum())} samples; {blocked[r].mean():.0%} C-obstacle"
+    text = f"{len(Q)} samples; by region, top row first: how many fell there, and the share of it that is C-obstacle"
+    return map_part(name, text, counts.shape, x, y, cell)
 
 
 def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) -> Figure:
@@ -192,7 +194,7 @@ def roadmap(exact: CollisionChecker, step: PlanStep, title: str = "") -> Figure:
     if title:
         fig.suptitle(title, fontsize=10, wrap=True)  # a long stage description wraps at the figure width
     fig.tight_layout(rect=(0, 0.1, 1, 1))
-    return describe(fig, f"{title + ': ' if title else ''}{step_in_words(step)}")
+    return describe(fig, f"{title + ': ' if title else ''}{step_in_words(step)}", [_step_part(step)])
 
 
 def step_in_words(step: PlanStep) -> str:
@@ -217,7 +219,27 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
         ax.set_axis_off()
     fig.suptitle("Algorithm 1 step by step\n(hollow: not yet confirmed exactly; X: removed by a repair)", fontsize=11)
     _roadmap_legend(fig, axes)
-    return describe(fig, "Algorithm 1 step by step. " + " ".join(step_in_words(step) for step in steps))
+    text = f"Algorithm 1 step by step, one panel per step, {len(steps)} steps. First: {step_in_words(steps[0])}"
+    text += f" Last: {step_in_words(steps[-1])}" if len(steps) > 1 else ""  # every step: the longer description
+    return describe(fig, text, [_step_part(step) for step in steps])
+
+
+def _step_part(step: PlanStep) -> Part:
+    """One step of Algorithm 1 (one panel): in words, and its path's nodes in order with where they lie."""
+    rows = tuple(
+        (str(k + 1), f"{step.nodes[n][0]:.3g}", f"{step.nodes[n][1]:.3g}", _node_state(step, n))
+        for k, n in enumerate(step.path)
+    )
+    columns = ("path node", "x", "y", "node") if rows else ()
+    return Part(f"Round {step.round}, {step.stage}", step_in_words(step), columns, rows)
+
+
+def _node_state(step: PlanStep, n: int) -> str:
+    if n in (START, GOAL):
+        return "start" if n == START else "goal"
+    if n in step.removed_nodes:
+        return "removed by the repair"
+    return "confirmed exactly" if step.node_verified[n] else "not yet confirmed"
 
 
 def _roadmap_legend(fig: Figure, axes) -> None:
@@ -226,169 +248,3 @@ def _roadmap_legend(fig: Figure, axes) -> None:
     style: dict[str, Any] = dict(ncol=min(len(named), 2), fontsize=9, frameon=False, handlelength=3.5)
     style["loc"] = "outside lower center" if fig.get_layout_engine() is not None else "lower center"
     fig.legend(list(named.values()), list(named), **style)
-
-
-def stage_times(panels: dict[str, dict]) -> Figure:
-    """Per panel (e.g. a scenario), a ``planning`` table ``{sampler: {"without": summary, "with": summary}}``
-    (``queries.summarize``): one bar per sampler and mode, as tall as the median total over the queries, split
-    into the planner's stages in the shares of an average query (``_share``; the rest, encoding and set-up, on top
-    as "other"); a whisker from the total's first to third quartile; above each pair the median of the queries' own
-    ratios, time with / without (the summaries' ``total_s_per_query``: each query was solved in both modes in turn),
-    the number the chapters' tables read their verdicts from."""
-    fig = Figure(figsize=(6.2, 3.6 * len(panels) + 0.6))  # one panel a row, as wide as a chapter page's column
-    axes = fig.subplots(len(panels), 1, squeeze=False)[:, 0]
-    said = []
-    for ax, (title, planning) in zip(axes, panels.items()):
-        names = list(planning)  # the samplers planned, in their order
-        x = np.arange(len(names))[:, None] + np.array([-0.2, 0.2])  # (samplers, modes) bar centres
-        table = {
-            key: np.array([[planning[s][m][key] for m in MODES] for s in names])
-            for key in [f"total_s_{stat}" for stat in ("median", "q1", "q3")] + [f"{k}_share" for k in STAGE_KEYS]
-        }  # key -> (samplers, modes)
-        table["total_s"] = table["total_s_median"]
-        table.update({key: table["total_s"] * table[f"{key}_share"] for key in STAGE_KEYS})
-        table["other_s"] = np.maximum(table["total_s"] - sum(table[k] for k in STAGE_KEYS), 0.0)
-        top = _draw_stage_bars(ax, x, table)  # (samplers, modes) the bars' and whiskers' tops
-        ratio = [float(np.median(per_query_ratios(planning[s]))) for s in names]  # (samplers,)
-        for i, r in enumerate(ratio):
-            ax.annotate(
-                f"{r:.2f}x", (i, top[i].max()), xytext=(0, 3), textcoords="offset points", ha="center", fontsize=8
-            )
-        ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=8)
-        ax.set_xlabel("sampler, without / with prediction")
-        ax.set_ylabel("seconds per query (median)")
-        ax.set_ylim(0, top.max() * 1.15)
-        ax.set_title(f"{title}; above a pair: median per-query with / without", fontsize=9)
-        said.append(
-            f"{title}: "
-            + ", ".join(
-                f"{s} {table['total_s'][i, 0]:.3g} s without, {table['total_s'][i, 1]:.3g} s with "
-                f"(per query {ratio[i]:.2f}x)"
-                for i, s in enumerate(names)
-            )
-        )
-    fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=3, fontsize=8, frameon=False)
-    fig.tight_layout(rect=(0, 0.6 / fig.get_figheight(), 1, 1))  # the legend in the 0.6 in below the panels
-    text = "Median planning time per query without and with prediction, per sampler, split into the planner's stages"
-    text += " (hatched), with the median of the queries' own time ratios, with / without, above each pair"
-    return describe(fig, f"{text}. {'; '.join(said)}.")
-
-
-def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndarray:
-    """:func:`stage_times`' bars at ``x (samplers, modes)``: the stages of ``table`` (key -> ``(samplers, modes)``)
-    stacked, hatched by stage, and a whisker from the total's first to third quartile; returns their tops."""
-    bottom = np.zeros_like(table["total_s"])
-    for k, key in enumerate(STAGE_KEYS + ("other_s",)):
-        ax.bar(
-            x.ravel(),
-            table[key].ravel(),
-            0.38,
-            bottom=bottom.ravel(),
-            label=STAGE_LABELS[key],
-            color=CATEGORICAL[k],
-            hatch=STAGE_HATCHES[k],  # a second cue besides the colour
-            edgecolor=COLORS["ink"],
-            linewidth=0.5,
-        )
-        bottom = bottom + table[key]
-    low, high = table["total_s"] - table["total_s_q1"], table["total_s_q3"] - table["total_s"]
-    ax.errorbar(
-        x.ravel(),
-        table["total_s"].ravel(),
-        yerr=[low.ravel(), high.ravel()],
-        fmt="none",
-        ecolor=COLORS["ink"],
-        capsize=3,
-        linewidth=1,
-        label="total: quartiles",
-    )
-    return np.maximum(bottom, table["total_s_q3"])
-
-
-def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figure:
-    """Time with / without prediction per sampler (below 1: prediction saves time), one panel per baseline.
-
-    ``{baseline: {series: {sampler: ratio}}}``: a baseline is what "without" was (the paper's own planner and
-    means, our eager or lazy exact planner and medians), a series what was timed (e.g. "2DS, sampling"). Ratios
-    against different baselines never share a bar group; the panels share one log axis, so heights compare.
-    """
-    fig = Figure(figsize=(PAGE_WIDTH, 2.6 * len(baselines) + 0.6))  # one baseline a row, each with its own ticks
-    axes = fig.subplots(len(baselines), 1, squeeze=False, sharey=True)[:, 0]
-    said = []
-    for ax, (title, series) in zip(axes, baselines.items()):
-        width = 0.8 / len(series)
-        for i, (name, ratios) in enumerate(series.items()):
-            ax.bar(
-                np.arange(len(PAPER_SAMPLERS)) + (i - (len(series) - 1) / 2) * width,
-                [ratios[s] for s in PAPER_SAMPLERS],
-                width,
-                label=name,
-                color=CATEGORICAL[i % len(CATEGORICAL)],
-                hatch=HATCHES[i % len(HATCHES)],
-                edgecolor=COLORS["ink"],
-                linewidth=0.5,
-            )
-            ratio_words = ", ".join(f"{s} {ratios[s]:.2f}" for s in PAPER_SAMPLERS)
-            said.append(f"{title}, {name}: {ratio_words}")
-        ax.axhline(1.0, color=COLORS["ink"], linewidth=0.8)
-        ax.set_xticks(np.arange(len(PAPER_SAMPLERS)), PAPER_SAMPLERS)
-        ax.set_xlabel("sampler")
-        ax.set_ylabel("time with / without")
-        ax.set_title(textwrap.fill(title, 90), fontsize=10)
-    every = [float(r) for series in baselines.values() for by in series.values() for r in by.values()]
-    axes[0].set_yscale("log")
-    axes[0].set_ylim(min(*every, 1.0) / 1.3, max(*every, 1.0) * 1.3)  # every bar's top and the line at 1
-    _log_ticks(axes[0])  # shared by every panel
-    for ax in axes:
-        ax.tick_params(labelsize=9, labelleft=True)  # each row its own numbers
-    handles, names = axes[0].get_legend_handles_labels()
-    fig.legend(handles, names, loc="lower center", ncol=min(len(names), 4), fontsize=9, frameon=False)
-    fig.tight_layout(rect=(0, 0.4 / fig.get_figheight(), 1, 1))
-    text = "Planning time with prediction divided by the time without, per sampler, log scale; below 1 prediction saves"
-    return describe(fig, f"{text} time. {'; '.join(said)}.")
-
-
-def _log_ticks(ax) -> None:
-    """A log y axis labelled in plain numbers at 1-2-5 steps (0.2, 0.5, 1, 2), finer over less than a decade."""
-    ax.set_yscale("log")
-    lo, hi = ax.get_ylim()
-    steps = (1, 2, 5) if hi / lo >= 10 else (1, 1.5, 2, 3, 5, 7)
-    ticks = [m * 10.0**e for e in range(int(np.floor(np.log10(lo))), int(np.ceil(np.log10(hi))) + 1) for m in steps]
-    ticks = [t for t in ticks if lo <= t <= hi]
-    ax.set_yticks(ticks, [f"{t:g}" for t in ticks])
-    ax.yaxis.set_minor_formatter(NullFormatter())
-
-
-def throughputs(rates: dict[str, dict[str, float]]) -> Figure:
-    """Configurations checked per second, ``{scenario: {checker: rate}}`` (e.g. exact, learned), log scale,
-    each bar labelled with its rate."""
-    fig = Figure(figsize=(5, 3.6))
-    ax = fig.subplots()
-    checkers = list(next(iter(rates.values())))
-    width = 0.8 / len(checkers)
-    for i, checker in enumerate(checkers):
-        bars = ax.bar(
-            np.arange(len(rates)) + (i - (len(checkers) - 1) / 2) * width,
-            [rates[s][checker] for s in rates],
-            width,
-            label=checker,
-            color=CATEGORICAL[i % len(CATEGORICAL)],
-            hatch=HATCHES[i % len(HATCHES)],
-            edgecolor=COLORS["ink"],
-            linewidth=0.5,
-        )
-        ax.bar_label(bars, labels=[_per_second(rates[s][checker]) for s in rates], fontsize=8)
-    ax.set_yscale("log")
-    ax.set_xticks(np.arange(len(rates)), list(rates))
-    ax.set_xlabel("scenario")
-    ax.set_ylabel("configurations checked per second")
-    ax.set_title("Collision checking in batches: exact vs learned", fontsize=9)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
-    said = "; ".join(f"{s}: " + ", ".join(f"{c} {_per_second(r[c])}" for c in checkers) for s, r in rates.items())
-    return describe(fig, f"Configurations checked per second in batches, log scale, per scenario and checker. {said}.")
-
-
-def _per_second(rate: float) -> str:
-    """A rate in thousands or millions: ``'210k/s'``, ``'3.4M/s'``."""
-    return f"{rate / 1e6:.2g}M/s" if rate >= 1e6 else f"{rate / 1e3:.3g}k/s"

@@ -11,7 +11,8 @@ from matplotlib.figure import Figure
 
 from toolkit.learning import metrics
 from toolkit.learning.metrics import reconstruction_accuracy
-from toolkit.plots.alt import describe
+from toolkit.plots.alt import Part, describe
+from toolkit.plots.cae import grid_part
 from toolkit.plots.palette import CATEGORICAL, COLORS, GREYS_CMAP, HATCHES, series_style
 
 MODES = ("without", "with")
@@ -44,7 +45,13 @@ def cae_reconstruction(grids: dict[str, np.ndarray], decoded: dict[str, np.ndarr
         for name in grids
     )
     text = "Occupancy grids (a 3D one as its middle z slice) above their reconstructions, occupied black. "
-    return describe(fig, text + said + ".")
+    parts = [grid_part(name, name, _drawn(grids[name]), _drawn(decoded[name])) for name in grids]
+    return describe(fig, text + said + ".", parts)
+
+
+def _drawn(grid: np.ndarray) -> np.ndarray:
+    """The 2D grid :func:`_show_grid` draws: a 3D one's middle z slice."""
+    return grid[:, :, grid.shape[2] // 2] if grid.ndim == 3 else grid
 
 
 def planning_times(planning: dict, title: str = "") -> Figure:
@@ -92,9 +99,20 @@ def planning_times(planning: dict, title: str = "") -> Figure:
     fig.suptitle(title or "Time with and without prediction")
     fig.tight_layout()
     text = f"{title or 'Time with and without prediction'}: bars of the median over the queries, plain without"
-    return describe(
-        fig, f"{text} prediction and hatched with it, whiskers from quartile to quartile. {'; '.join(said)}."
-    )
+    text += f" prediction and hatched with it, whiskers from quartile to quartile. {'; '.join(said)}."
+    parts = [
+        Part(
+            label,
+            "seconds; the median over the queries, first and third quartile",
+            ("sampler", *(f"{stat}, {mode}" for mode in MODES for stat in STATS)),
+            tuple(
+                (s, *(f"{planning[s][mode][f'{key}_{stat}']:.3g}" for mode in MODES for stat in STATS))
+                for s in samplers
+            ),
+        )
+        for key, label in (("sampling_s", "sampling time"), ("total_s", "total time per query"))
+    ]
+    return describe(fig, text, parts)
 
 
 def threshold_sweep(

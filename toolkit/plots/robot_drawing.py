@@ -22,7 +22,7 @@ from matplotlib.patches import Patch, Polygon, Rectangle
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots.alt import describe
+from toolkit.plots.alt import Part, describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
 
@@ -185,7 +185,22 @@ def robot_figure(
         text += f": {n_valid} valid, {len(Q) - n_valid} in collision (hatched)"
     elif labels is not None:
         text += ": " + ", ".join(f"{label} ({_hatch_name(h)})" for label, h in zip(labels, hatches))
-    return describe(fig, text + ".")
+    return describe(fig, text + ".", [_configurations_part(robot, Q, labels)])
+
+
+def _configurations_part(robot: BoxRobot, Q: np.ndarray, labels: Sequence[str] | None) -> Part:
+    """The drawn configurations ``Q (k, dof)`` as a table: each one's DoF values and where its last link lies."""
+    centers = robot.link_boxes(Q)[0][:, -1]  # (k, D) the last link's centre
+    names = labels or [f"configuration {i + 1}" for i in range(len(Q))]
+    return Part(
+        "configurations",
+        "each configuration's degrees of freedom, and the centre of its last link in the workspace",
+        ("configuration", *robot.dof_names, "last link's centre"),
+        tuple(
+            (name, *(f"{v:.3g}" for v in q), "(" + ", ".join(f"{c:.3g}" for c in centre) + ")")
+            for name, q, centre in zip(names, Q, centers)
+        ),
+    )
 
 
 def _hatch_name(hatch: str | None) -> str:

@@ -24,7 +24,7 @@ from matplotlib.patches import Patch
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots.alt import describe
+from toolkit.plots.alt import ROWS, Part, describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d
 from toolkit.plots.cspace import frame_region
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo, series_style
@@ -83,6 +83,11 @@ def scene_still(
     }
     fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=3, fontsize=9, frameon=False)
     fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1))
+    return describe(fig, *_still_described(robot, workspace, poses, valid, samples, trace, said))
+
+
+def _still_described(robot: BoxRobot, workspace: Workspace, poses, valid, samples, trace, said) -> tuple[str, list]:
+    """A still's text alternative and its longer description (what each panel draws, each pose's values)."""
     text = f"The {robot.name} robot in workspace {workspace.family} ({len(workspace.boxes)} blocks) as a still: "
     text += "the whole workspace"
     if samples is not None:
@@ -90,7 +95,26 @@ def scene_still(
             f"{int(m.sum())} samples {kind} ({SAMPLE_WORDS[kind]})" for kind, m in samples[1].items() if m.any()
         )
     text += ", the path of the robot's base" if trace is not None else ""
-    return describe(fig, text + "; then the robot close up among the blocks near it: " + "; ".join(said) + ".")
+    counted = [("blocks", str(len(workspace.boxes)))]
+    counted += [(f"samples {kind}", str(int(m.sum()))) for kind, m in (samples[1].items() if samples else ())]
+    counted += [("points of the base's path", str(len(trace)))] if trace is not None else []
+    parts = [
+        Part("the whole workspace", "what the first panel draws", ("drawn", "count"), tuple(counted)),
+        Part(
+            "the robot close up",
+            "each pose's joint values, in the robot's order, and what the exact checker says of it",
+            ("pose", "exact checker", "configuration"),
+            tuple(
+                (
+                    label,
+                    {None: "not checked", True: "valid", False: "in collision"}[valid.get(label)],
+                    ", ".join(f"{v:.2f}" for v in np.asarray(q)),
+                )
+                for label, q in poses.items()
+            ),
+        ),
+    ]
+    return text + "; then the robot close up among the blocks near it: " + "; ".join(said) + ".", parts
 
 
 def _overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, np.ndarray], samples, trace) -> None:
@@ -182,7 +206,28 @@ def path_frame(
     fig.suptitle(_frame_title(index, frames, series, threshold), fontsize=10, wrap=True)
     text = f"A path of the {robot.name} robot, {_frame_title(index, frames, series, threshold)}. Left, the robot"
     text += " in 3D among the blocks near it and its base's trace; right, against the fraction of the path travelled, "
-    return describe(fig, text + _series_in_words(robot, Q, series, threshold) + ".")
+    return describe(fig, text + _series_in_words(robot, Q, series, threshold) + ".", [_series_part(robot, Q, series)])
+
+
+def _series_part(robot: BoxRobot, Q: np.ndarray, series: dict) -> Part:
+    """The right-hand panels as a table: at evenly picked frames (at most :data:`~toolkit.plots.alt.ROWS`), each
+    DoF scaled to its bounds, and the validity, clearance and P(valid) where given."""
+    scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
+    given = {name: values for name, values in series.items() if values is not None}
+    columns = ("frame", "fraction of the path", *robot.dof_names, *given)
+    rows = tuple(
+        (
+            str(t),
+            f"{t / max(len(Q) - 1, 1):.0%}",
+            *(f"{v:.2f}" for v in scaled[t]),
+            *(
+                ("valid" if values[t] else "in collision") if name == "valid" else f"{values[t]:.3g}"
+                for name, values in given.items()
+            ),
+        )
+        for t in np.unique(np.linspace(0, len(Q) - 1, min(ROWS, len(Q))).round().astype(int))
+    )
+    return Part("along the path", "each DoF scaled to its bounds (0 lower, 1 upper)", columns, rows)
 
 
 def _series_in_words(robot: BoxRobot, Q: np.ndarray, series: dict, threshold: float) -> str:

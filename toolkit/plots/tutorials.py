@@ -16,7 +16,7 @@ from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.geometry.workspace import MeshWorkspace
 from toolkit.plots import planning
-from toolkit.plots.alt import describe
+from toolkit.plots.alt import Part, describe, parts_of
 from toolkit.plots.cspace import frame_region
 from toolkit.plots.palette import COLORS, halo
 
@@ -57,7 +57,17 @@ def mesh_and_grid(workspace: MeshWorkspace, title: str = "") -> Figure:
     fig.tight_layout()
     text = f"{title + ': ' if title else ''}left, a mesh workspace of {len(workspace.faces)} triangles in "
     text += f"{len(workspace.boxes)} parts, in 3D; right, its occupancy grid, {occupied.sum()} of {occupied.size} "
-    return describe(fig, text + f"cells occupied ({occupied.mean():.1%}), one cube per occupied cell.")
+    text += f"cells occupied ({occupied.mean():.1%}), one cube per occupied cell."
+    layers = Part(
+        "the occupancy grid by z layer",
+        "how many cells of each layer are occupied, bottom first",
+        ("layer z", "occupied cells", "of"),
+        tuple(
+            (f"{workspace.lower[2] + z + 0.5:g}", str(int(occupied[:, :, z].sum())), str(occupied[:, :, z].size))
+            for z in range(occupied.shape[2])
+        ),
+    )
+    return describe(fig, text, [layers])
 
 
 def samplers_in_a_passage(
@@ -81,4 +91,5 @@ def samplers_in_a_passage(
     fig.tight_layout()
     text = f"Samples of {len(samples)} samplers over the point robot's C-obstacles, the narrow passage from "
     text += f"({x0:g}, {y0:g}) to ({x1:g}, {y1:g}) outlined: "
-    return describe(fig, text + "; ".join(said) + (f", of {attempts} attempts each." if attempts else "."))
+    text += "; ".join(said) + (f", of {attempts} attempts each." if attempts else ".")
+    return describe(fig, text, parts_of(fig))
