@@ -333,3 +333,28 @@ def test_each_cell_lists_exactly_the_boxes_that_touch_it_grown(name, grow):
     touches = np.all((index[:, None] >= lo) & (index[:, None] <= hi), axis=-1)  # (C, K)
     for c in range(len(index)):
         assert members[first[c] : first[c] + count[c]].tolist() == np.flatnonzero(touches[c]).tolist()
+
+
+@pytest.mark.parametrize("name", SCENARIOS)
+def test_the_far_bits_are_the_cells_farther_than_each_ball_from_boxes_and_walls(name):
+    """The far bits, packed in one compiled pass, against the same rule written in numpy, cell by cell: a cell's bit
+    for a ball is 1 where its distance to every box and to the region's walls exceeds the ball's radius."""
+    from toolkit.geometry import compiled, kernels
+
+    scenario = scenarios.get(name)
+    ws, robot = scenario.workspaces("query", 1, 5)[0], scenario.robot
+    far = compiled.far_grid(ws, robot)
+    lower, upper, boxes = np.zeros(3), np.zeros(3), np.zeros((len(ws.boxes), 2, 3))
+    lower[: ws.dim], upper[: ws.dim], boxes[..., : ws.dim] = ws.lower, ws.upper, ws.boxes
+    radii = np.unique(np.linalg.norm(robot.half_extents, axis=1))  # (B,)
+    clearance = kernels.cell_distances(boxes, lower, far.cell, far.shape, float(radii.max()) + far.cell)  # (C,)
+    walls = np.full(far.shape, np.inf)  # (nx, ny, nz) each cell's distance to the walls of the first dim axes
+    for axis in range(ws.dim):
+        i = np.arange(far.shape[axis])
+        layer = np.minimum(i * far.cell, upper[axis] - lower[axis] - (i + 1) * far.cell)
+        walls = np.minimum(walls, np.expand_dims(layer, [a for a in range(3) if a != axis]))
+    margin = 1e-9 * float(np.max(upper - lower))
+    expected = np.minimum(clearance, walls.reshape(-1))[None] > radii[:, None] + margin  # (B, C)
+    bits = np.unpackbits(far.bits.view(np.uint8), axis=1, bitorder="little")[:, : expected.shape[1]]  # (B, C)
+    assert bits.shape == expected.shape and 0 < expected.sum() < expected.size
+    np.testing.assert_array_equal(bits.astype(bool), expected)

@@ -191,14 +191,8 @@ def far_bits(
     margin = 1e-9 * float(np.max(upper - lower))  # above rounding in the cell a centre falls in
     cap = float(np.max(radii)) + cell  # nearer cells than this are all the bits need
     clearance = kernels.cell_distances(obstacles, lower, cell, shape, cap)  # (C,)
-    x, y, z = (  # per axis, each layer of cells' distance to the region's walls
-        np.minimum(i * cell, upper[a] - lower[a] - (i + 1) * cell) if a < dim else np.full(len(i), np.inf)
-        for a, i in enumerate(np.arange(n) for n in shape)
-    )
-    walls = np.minimum.outer(np.minimum.outer(x, y), z).reshape(-1)  # (C,)
-    far = np.minimum(clearance, walls)[None] > np.asarray(radii)[:, None] + margin  # (B, C)
-    far = np.pad(far, ((0, 0), (0, -far.shape[1] % 64)))
-    return np.packbits(far, axis=1, bitorder="little").view("<u8")
+    radii = np.ascontiguousarray(radii, dtype=np.float64)  # (B,)
+    return kernels.pack_far_bits(clearance, lower, upper, cell, shape, radii, dim, margin)  # (B, W) uint64
 
 
 def robot_arrays(robot: BoxRobot) -> Robot:
