@@ -61,6 +61,8 @@ PACKAGES = (
 )
 DOWNLOADS = "downloads"  # the notebooks without outputs, one folder (ignored by mkdocs-jupyter in mkdocs.yml)
 MATHJAX = "assets/mathjax"  # MathJax 2.7 from jupyter-server-mathjax, served from the site itself
+# its equations out of the tab order: a focusable equation has no accessible name (WCAG 4.1.2); screen readers
+# read each one from the MathML MathJax hides beside it, and a wide one still scrolls as a named region
 SITE_FILES = {  # the site's own files in docs/site/, and where the site serves them (named in mkdocs.yml)
     "docs/site/iframe-worker-shim.js": "assets/javascripts/iframe-worker-shim.js",  # extra.polyfills
     "docs/site/notebook-pages.css": "assets/stylesheets/notebook-pages.css",  # extra_css
@@ -69,7 +71,8 @@ SITE_FILES = {  # the site's own files in docs/site/, and where the site serves 
 }
 MATHJAX_CONFIG = """MathJax.Hub.Config({
   "HTML-CSS": {availableFonts: [], preferredFont: null, webFont: "STIX-Web", imageFont: null},
-  SVG: {font: "STIX-Web"}
+  SVG: {font: "STIX-Web"},
+  menuSettings: {inTabOrder: false}
 });
 MathJax.Ajax.loadComplete("[MathJax]/config/toolkit.js");
 """
