@@ -125,18 +125,8 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
     axes = fig.subplots(len(baselines), 1, squeeze=False, sharey=True)[:, 0]
     said = []
     for ax, (title, series) in zip(axes, baselines.items()):
-        width = 0.8 / len(series)
         for i, (name, ratios) in enumerate(series.items()):
-            ax.bar(
-                np.arange(len(PAPER_SAMPLERS)) + (i - (len(series) - 1) / 2) * width,
-                [ratios[s] for s in PAPER_SAMPLERS],
-                width,
-                label=name,
-                color=CATEGORICAL[i % len(CATEGORICAL)],
-                hatch=HATCHES[i % len(HATCHES)],
-                edgecolor=COLORS["ink"],
-                linewidth=0.5,
-            )
+            _grouped_bars(ax, i, len(series), [ratios[s] for s in PAPER_SAMPLERS], name)
         every = np.array([[ratios[s] for s in PAPER_SAMPLERS] for ratios in series.values()])  # (series, samplers)
         said.append(
             f"{title}: {len(series)} series, ratios from {every.min():.2f} to {every.max():.2f}, below 1 for "
@@ -186,18 +176,8 @@ def throughputs(rates: dict[str, dict[str, float]]) -> Figure:
     fig = Figure(figsize=(5, 3.6))
     ax = fig.subplots()
     checkers = list(next(iter(rates.values())))
-    width = 0.8 / len(checkers)
     for i, checker in enumerate(checkers):
-        bars = ax.bar(
-            np.arange(len(rates)) + (i - (len(checkers) - 1) / 2) * width,
-            [rates[s][checker] for s in rates],
-            width,
-            label=checker,
-            color=CATEGORICAL[i % len(CATEGORICAL)],
-            hatch=HATCHES[i % len(HATCHES)],
-            edgecolor=COLORS["ink"],
-            linewidth=0.5,
-        )
+        bars = _grouped_bars(ax, i, len(checkers), [rates[s][checker] for s in rates], checker)
         ax.bar_label(bars, labels=[_per_second(rates[s][checker]) for s in rates], fontsize=8)
     ax.set_yscale("log")
     ax.set_xticks(np.arange(len(rates)), list(rates))
@@ -213,3 +193,19 @@ def throughputs(rates: dict[str, dict[str, float]]) -> Figure:
 def _per_second(rate: float) -> str:
     """A rate in thousands or millions: ``'210k/s'``, ``'3.4M/s'``."""
     return f"{rate / 1e6:.2g}M/s" if rate >= 1e6 else f"{rate / 1e3:.3g}k/s"
+
+
+def _grouped_bars(ax, i: int, n: int, heights: list[float], label: str):
+    """Bar ``i`` of ``n`` in each group (one group a tick, groups 0.8 wide), in the ``i``-th palette colour and
+    hatch: the bars of one series, ``heights (groups,)``."""
+    width = 0.8 / n
+    return ax.bar(
+        np.arange(len(heights)) + (i - (n - 1) / 2) * width,
+        heights,
+        width,
+        label=label,
+        color=CATEGORICAL[i % len(CATEGORICAL)],
+        hatch=HATCHES[i % len(HATCHES)],
+        edgecolor=COLORS["ink"],
+        linewidth=0.5,
+    )
