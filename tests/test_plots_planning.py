@@ -243,3 +243,15 @@ def test_a_rejected_candidate_and_a_fresh_one_differ_in_line_style_not_only_in_s
     styles = [planning.roadmap(exact, step).axes[0].lines[0].get_linestyle() for step in (rejected, fresh)]
     assert styles == ["-.", "--"]
     assert "dash-dotted path" in planning.step_in_words(rejected) and "dashed path" in planning.step_in_words(fresh)
+
+
+def test_ratio_comparison_keeps_a_series_colour_in_every_panel_and_names_it_once():
+    """A panel that leaves a series out (chapter 04's own run has totals only) must not pass its colour to the next."""
+    samplers = ("BS", "OB", "G", "BT")
+    full = {"2DS, sampling": dict.fromkeys(samplers, 0.5), "2DS, total": dict.fromkeys(samplers, 1.5)}
+    fig = timings.ratio_comparison({"paper": full, "ours": {"2DS, total": dict.fromkeys(samplers, 2.0)}})
+    total_in_paper = fig.axes[0].containers[1][0].get_facecolor()  # the second series' first bar
+    total_in_ours = fig.axes[1].containers[0][0].get_facecolor()  # the only series' first bar
+    sampling_in_paper = fig.axes[0].containers[0][0].get_facecolor()
+    assert total_in_paper == total_in_ours != sampling_in_paper
+    assert [t.get_text() for t in fig.legends[0].get_texts()] == ["2DS, sampling", "2DS, total"]

@@ -124,9 +124,10 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
     fig = Figure(figsize=(PAGE_WIDTH, 2.6 * len(baselines) + 0.6))  # one baseline a row, each with its own ticks
     axes = fig.subplots(len(baselines), 1, squeeze=False, sharey=True)[:, 0]
     said = []
+    names = list(dict.fromkeys(name for series in baselines.values() for name in series))  # every series, once
     for ax, (title, series) in zip(axes, baselines.items()):
-        for i, (name, ratios) in enumerate(series.items()):
-            _grouped_bars(ax, i, len(series), [ratios[s] for s in PAPER_SAMPLERS], name)
+        for i, (name, ratios) in enumerate(series.items()):  # a series keeps its colour and hatch in every panel
+            _grouped_bars(ax, i, len(series), [ratios[s] for s in PAPER_SAMPLERS], name, style=names.index(name))
         every = np.array([[ratios[s] for s in PAPER_SAMPLERS] for ratios in series.values()])  # (series, samplers)
         said.append(
             f"{title}: {len(series)} series, ratios from {every.min():.2f} to {every.max():.2f}, below 1 for "
@@ -143,8 +144,8 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
     _log_ticks(axes[0])  # shared by every panel
     for ax in axes:
         ax.tick_params(labelsize=9, labelleft=True)  # each row its own numbers
-    handles, names = axes[0].get_legend_handles_labels()
-    fig.legend(handles, names, loc="lower center", ncol=min(len(names), 4), fontsize=9, frameon=False)
+    shown = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # each series once
+    fig.legend(shown.values(), shown.keys(), loc="lower center", ncol=min(len(shown), 4), fontsize=9, frameon=False)
     fig.tight_layout(rect=(0, 0.4 / fig.get_figheight(), 1, 1))
     text = "Planning time with prediction divided by the time without, per sampler, log scale; below 1 prediction saves"
     parts = [
@@ -195,17 +196,17 @@ def _per_second(rate: float) -> str:
     return f"{rate / 1e6:.2g}M/s" if rate >= 1e6 else f"{rate / 1e3:.3g}k/s"
 
 
-def _grouped_bars(ax, i: int, n: int, heights: list[float], label: str):
-    """Bar ``i`` of ``n`` in each group (one group a tick, groups 0.8 wide), in the ``i``-th palette colour and
-    hatch: the bars of one series, ``heights (groups,)``."""
-    width = 0.8 / n
+def _grouped_bars(ax, i: int, n: int, heights: list[float], label: str, style: int | None = None):
+    """Bar ``i`` of ``n`` in each group (one group a tick, groups 0.8 wide), in the palette's ``style``-th colour and
+    hatch (default ``i``): the bars of one series, ``heights (groups,)``."""
+    width, style = 0.8 / n, i if style is None else style
     return ax.bar(
         np.arange(len(heights)) + (i - (n - 1) / 2) * width,
         heights,
         width,
         label=label,
-        color=CATEGORICAL[i % len(CATEGORICAL)],
-        hatch=HATCHES[i % len(HATCHES)],
+        color=CATEGORICAL[style % len(CATEGORICAL)],
+        hatch=HATCHES[style % len(HATCHES)],
         edgecolor=COLORS["ink"],
         linewidth=0.5,
     )
