@@ -30,10 +30,11 @@ Reading order (each module imports only those above it):
    page inline;
 3. :mod:`toolkit.viewer.address` — where a student opens it: the port, or its path through a JupyterHub;
 4. :mod:`toolkit.viewer.labels` — names for a saved scene's player controls, for screen readers;
-5. :mod:`toolkit.viewer.scene` — :class:`Viewer`: the live scene, and the events it tells its listeners;
-6. :mod:`toolkit.viewer.panel` — the GUI panel, one listener: joint sliders, samplers, planning, playback;
-7. :mod:`toolkit.viewer.app` — :func:`launch` (the scene with its panel), :func:`serve_forever`, :func:`embed`;
-8. :mod:`toolkit.viewer.browser` — the page in headless Chromium: screenshots, what they show.
+5. :mod:`toolkit.viewer.snapshot` — a scene on a page without a server: snapshot, animation, a still for no WebGL;
+6. :mod:`toolkit.viewer.scene` — :class:`Viewer`: the live scene, and the events it tells its listeners;
+7. :mod:`toolkit.viewer.panel` — the GUI panel, one listener: joint sliders, samplers, planning, playback;
+8. :mod:`toolkit.viewer.app` — :func:`launch` (the scene with its panel), :func:`serve_forever`, :func:`embed`;
+9. :mod:`toolkit.viewer.browser` — the page in headless Chromium: screenshots, what they show.
 """
 
 from toolkit.viewer.app import embed, launch, serve_forever
