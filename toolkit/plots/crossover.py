@@ -107,7 +107,7 @@ def _panel(ax, sweep: dict) -> None:
             )
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xticks(x, [f"{v:,.0f}" for v in x])  # the measured values, as numbers
+    ax.set_xticks(x, _tick_labels(x))
     ax.minorticks_off()
     ax.set_xlabel(sweep["label"])
     ax.set_ylabel("µs per configuration")
@@ -127,3 +127,18 @@ def _halfway(x: np.ndarray) -> np.ndarray:
         return np.array([x[0] / 1.5, x[0] * 1.5])
     middle = np.sqrt(x[1:] * x[:-1])  # (V-1,)
     return np.concatenate([[x[0] ** 2 / middle[0]], middle, [x[-1] ** 2 / middle[-1]]])
+
+
+def _tick_labels(x: np.ndarray, panel_px: float = 220.0, char_px: float = 7.0) -> list[str]:
+    """The measured values ``x (n,)`` as tick labels on a log axis about ``panel_px`` wide, a label left out where it
+    would touch the one before it (9-pt digits about ``char_px`` wide); the last value is always named."""
+    labels = [f"{v:,.0f}" for v in x]
+    px = np.log10(x / x.min()) * panel_px / max(np.log10(x.max() / x.min()), 1e-9)  # (n,) each tick's place
+    room = [char_px * len(label) / 2 + 2 for label in labels]  # (n,) half a label's width, and a gap
+    shown = [0]
+    for k in range(1, len(x)):
+        if px[k] - px[shown[-1]] >= room[k] + room[shown[-1]]:
+            shown.append(k)
+        elif k == len(x) - 1:  # the last value is named: the one before it gives way
+            shown[-1] = k
+    return [label if k in shown else "" for k, label in enumerate(labels)]
