@@ -19,13 +19,16 @@ const markScrollingMath = () => {
   }
 };
 
-// A table wider than its column scrolls sideways in its wrapper: the wrapper says so in words above the table
-// (notebook-pages.css draws the note, data-scrolls turns it on), since an overlay scroll bar is not always shown.
+// A table wider than its column scrolls sideways in its wrapper (material's, or a figure description's): the wrapper
+// says so in words above the table (notebook-pages.css draws the note, data-scrolls turns it on), since an overlay
+// scroll bar is not always shown.
 const markScrollingTables = () => {
-  for (const wrap of document.querySelectorAll(".md-typeset__scrollwrap")) {
+  for (const wrap of document.querySelectorAll(".md-typeset__scrollwrap, .figure-described-table")) {
     const scrolls = wrap.scrollWidth > wrap.clientWidth + 1;
     wrap.toggleAttribute("data-scrolls", scrolls);
-    wrap.setAttribute("aria-label", scrolls ? "table, scrolls sideways" : "table");
+    if (wrap.classList.contains("md-typeset__scrollwrap")) {  // a description's table keeps its own name
+      wrap.setAttribute("aria-label", scrolls ? "table, scrolls sideways" : "table");
+    }
   }
 };
 
@@ -54,6 +57,8 @@ new MutationObserver(() => {
     markScrollingMath();
   });
 }).observe(document.body, {childList: true, subtree: true});
+// a figure's longer description opens closed: its tables are measured again when a reader opens it
+document.addEventListener("toggle", markScrollingTables, true);
 window.addEventListener("resize", () => {
   markScrollingTables();
   markScrollingMath();
