@@ -65,3 +65,18 @@ def library_restored():
     from toolkit.teaching import unavailable
 
     unavailable.restore()
+
+
+@pytest.fixture(scope="module")
+def chromium():
+    """A headless Chromium (Debian's, driven by Playwright), one for a test module's browser tests."""
+    from playwright.sync_api import sync_playwright
+
+    from toolkit.viewer import browser
+
+    with sync_playwright() as pw:
+        launched = pw.chromium.launch(executable_path=browser.find_chromium(), args=browser.CHROMIUM_ARGS)
+        try:
+            yield launched
+        finally:
+            launched.close()

@@ -451,19 +451,6 @@ def served(site) -> Iterator[str]:
         yield url
 
 
-@pytest.fixture(scope="module")
-def chromium() -> Iterator:
-    """A headless Chromium (Debian's, driven by Playwright) whose pages refuse, and record, requests to other hosts."""
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as pw:
-        browser = pw.chromium.launch(executable_path=viewer_browser.find_chromium(), args=viewer_browser.CHROMIUM_ARGS)
-        try:
-            yield browser
-        finally:
-            browser.close()
-
-
 def open_page(chromium, url: str, remote: list[str]):
     """A new page at ``url``, loaded; every request it makes to a host other than 127.0.0.1 is aborted and listed."""
     page = chromium.new_page(viewport={"width": 1280, "height": 900})

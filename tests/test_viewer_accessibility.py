@@ -37,18 +37,6 @@ def test_a_saved_scene_gets_the_names_of_its_player_too():
     assert "display: none !important" in page and page.endswith("</script>\n</body></html>")
 
 
-@pytest.fixture(scope="module")
-def chromium():
-    from playwright.sync_api import sync_playwright
-
-    with sync_playwright() as pw:
-        browser = pw.chromium.launch(executable_path=viewer_browser.find_chromium(), args=viewer_browser.CHROMIUM_ARGS)
-        try:
-            yield browser
-        finally:
-            browser.close()
-
-
 def audit(chromium, viewer: Viewer) -> tuple[dict, object]:
     """axe's violations on the viewer's page once its panel is built, by rule (impact and node count); the page."""
     page = chromium.new_page(viewport={"width": 1280, "height": 900})
