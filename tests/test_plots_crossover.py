@@ -40,3 +40,10 @@ def test_a_panel_where_the_network_is_never_cheaper_beyond_the_band_has_no_shadi
     fig = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"obstacles": close}})
     assert shaded_spans(fig.axes[0]) == []
     assert "never cheaper by more than 25%." in alt_text(fig)
+
+
+def test_a_tick_label_that_would_touch_its_neighbour_is_left_out_and_the_last_is_always_named():
+    from toolkit.plots.crossover import _tick_labels
+
+    assert _tick_labels(np.array([10, 25, 50, 100, 200, 350, 500.0])) == ["10", "25", "50", "100", "200", "", "500"]
+    assert _tick_labels(np.array([1, 10, 100, 1000, 10000.0])) == ["1", "10", "100", "1,000", "10,000"]
