@@ -13,7 +13,7 @@ from toolkit.experiments.queries import make_queries
 from toolkit.geometry.collision import exact_checker
 from toolkit.planning.paper_prm import PRM
 from toolkit.planning.prm import PlanStep, plan
-from toolkit.plots import planning, timings
+from toolkit.plots import alt, planning, timings
 
 SCENARIO = scenarios.get("2ds")
 
@@ -185,17 +185,39 @@ def test_stage_times_one_stacked_bar_per_sampler_and_mode_with_the_given_heights
     assert [t.get_text() for t in ax.figure.legends[0].texts] == [*bars, "total: quartiles"]
     assert list(bars) == [timings.STAGE_LABELS[k] for k in ("sampling_s", "connection_s", "query_s", "other_s")]
     order = [(s, m) for s in ("BS", "OB", "G", "BT") for m in ("without", "with")]
-    for key in ("sampling_s", "connection_s", "query_s"):
-        np.testing.assert_allclose(bars[timings.STAGE_LABELS[key]], [MEDIANS[s][m][key] for s, m in order])
-    np.testing.assert_allclose(np.sum(list(bars.values()), axis=0), [MEDIANS[s][m]["total_s"] for s, m in order])
+    for key in ("sampling_s", "connection_s", "query_s"):  # in ms
+        np.testing.assert_allclose(bars[timings.STAGE_LABELS[key]], [1e3 * MEDIANS[s][m][key] for s, m in order])
+    np.testing.assert_allclose(np.sum(list(bars.values()), axis=0), [1e3 * MEDIANS[s][m]["total_s"] for s, m in order])
     (whiskers,) = ax.collections  # the total's quartiles, one vertical segment a bar: never below zero
     spans = np.array([segment[:, 1] for segment in whiskers.get_segments()])  # (bars, 2): q1, q3
     np.testing.assert_allclose(
-        spans, [[0.8 * MEDIANS[s][m]["total_s"], 1.5 * MEDIANS[s][m]["total_s"]] for s, m in order]
+        spans, [[800 * MEDIANS[s][m]["total_s"], 1500 * MEDIANS[s][m]["total_s"]] for s, m in order]
     )
     # above each pair the median of the queries' own ratios (0.5, 0.6, 1.2), not the ratio of the median totals (0.5)
     assert [t.get_text() for t in ax.texts] == ["0.60x"] * 4
     assert [t.get_text() for t in ax.get_xticklabels()][:2] == ["BS\nwithout", "BS\nwith"]
+    assert ax.get_ylim()[1] > 1500 * MEDIANS["BT"]["without"]["total_s"]  # every whisker within 2x the bars: whole
+
+
+def test_a_whisker_far_above_the_bars_is_cut_at_the_top_with_its_end_written():
+    """One slow query's spread (OB with: a third quartile 20 times its bar) must not flatten the panel's bars: the
+    axis stops near the tallest bar, the whisker ends there in a triangle and its value, in ms, is written beside it
+    and in the figure's description."""
+    planning = {s: {m: dict(row) for m, row in modes.items()} for s, modes in PLANNING.items()}
+    planning["OB"]["with"]["total_s_q3"] = 20 * planning["OB"]["with"]["total_s_median"]
+    fig = timings.stage_times({"2DS": planning})
+    ax = fig.axes[0]
+    end = 1e3 * planning["OB"]["with"]["total_s_q3"]  # ms
+    tallest = 1e3 * max(row["total_s_median"] for modes in planning.values() for row in modes.values())
+    top = ax.get_ylim()[1]
+    assert tallest < top < 2 * tallest < end  # the bars fill most of the panel
+    (whiskers,) = ax.collections
+    assert np.max([segment[:, 1] for segment in whiskers.get_segments()]) == pytest.approx(top)
+    (triangle,) = [line for line in ax.lines if line.get_marker() == "^"]
+    assert list(triangle.get_xdata()) == [1.2] and list(triangle.get_ydata()) == [top]  # OB, with
+    assert f"{end:.0f}" in [t.get_text() for t in ax.texts]
+    assert f"OB with to {end:.0f} ms" in alt.alt_text(fig)
+    assert "quartile off the scale (its value written)" in [t.get_text() for t in fig.legends[0].texts]
 
 
 def test_ratio_comparison_draws_one_baseline_per_panel_on_one_log_scale():
