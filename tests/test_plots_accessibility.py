@@ -217,7 +217,7 @@ def gallery() -> dict[str, Figure]:
         "reproduction.cae_reconstruction": reproduction.cae_reconstruction(
             {"seen": grids[0], "unseen": grids[1]}, {"seen": decoded[0], "unseen": decoded[1]}
         ),
-        "reproduction.planning_times": reproduction.planning_times(PLANNING),
+        "reproduction.planning_times": reproduction.planning_times(SLOW_QUERY),
         "reproduction.threshold_sweep": reproduction.threshold_sweep(probability, valid, 0.5),
         "scenes.path_frame": scenes.path_frame(
             chain.robot,
@@ -482,6 +482,7 @@ CHAPTER_FIGURES = (  # the figures chapters 02 to 05 show, read on the site at i
     "planning.roadmap_steps",
     "timings.stage_times",
     "timings.ratio_comparison",
+    "reproduction.planning_times",
     "scenes.path_frame",
     "scenes.scene_still",
 )

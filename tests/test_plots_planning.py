@@ -13,7 +13,8 @@ from toolkit.experiments.queries import make_queries
 from toolkit.geometry.collision import exact_checker
 from toolkit.planning.paper_prm import PRM
 from toolkit.planning.prm import PlanStep, plan
-from toolkit.plots import alt, planning, timings
+from toolkit.plots import alt, planning, reproduction, timings
+from toolkit.plots.palette import PAGE_WIDTH
 
 SCENARIO = scenarios.get("2ds")
 
@@ -277,3 +278,24 @@ def test_ratio_comparison_keeps_a_series_colour_in_every_panel_and_names_it_once
     sampling_in_paper = fig.axes[0].containers[0][0].get_facecolor()
     assert total_in_paper == total_in_ours != sampling_in_paper
     assert [t.get_text() for t in fig.legends[0].get_texts()] == ["2DS, sampling", "2DS, total"]
+
+
+def test_the_paper_style_times_stack_their_panels_and_cut_a_far_whisker_too():
+    """reproduction.planning_times (the paper's Figures 5-7 as medians): sampling above the total, as wide as the page,
+    in ms, the bars named as the paper names them; a sampling whisker 20 times its bar is cut at the top, written."""
+    planning = {s: {m: dict(row) for m, row in modes.items()} for s, modes in PLANNING.items()}
+    for s, modes in planning.items():
+        for m, row in modes.items():
+            row |= {f"sampling_s_{k}": f * MEDIANS[s][m]["sampling_s"] for k, f in (("median", 1), ("q1", 0.8))}
+            row["sampling_s_q3"] = (20 if (s, m) == ("BT", "with") else 1.5) * MEDIANS[s][m]["sampling_s"]
+    fig = reproduction.planning_times(planning)
+    sampling, total = fig.axes
+    assert fig.get_figwidth() <= PAGE_WIDTH and sampling.get_position().y0 > total.get_position().y1
+    heights = [p.get_height() for c in sampling.containers if hasattr(c, "patches") for p in c.patches]
+    np.testing.assert_allclose(
+        heights, [1e3 * MEDIANS[s][m]["sampling_s"] for m in ("without", "with") for s in MEDIANS]
+    )
+    assert [t.get_text() for t in sampling.get_xticklabels()][:2] == ["BS", "BSF"]
+    end = 1e3 * planning["BT"]["with"]["sampling_s_q3"]
+    assert sampling.get_ylim()[1] < end and f"{end:.3g}" in [t.get_text() for t in sampling.texts]
+    assert f"BTF to {end:.3g} ms" in alt.alt_text(fig) and not total.texts  # the totals' whiskers all fit

@@ -28,7 +28,7 @@ from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
-from matplotlib.collections import PathCollection, PolyCollection
+from matplotlib.collections import PolyCollection
 from matplotlib.colors import ListedColormap, to_rgba
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
@@ -38,6 +38,7 @@ from toolkit.learning import metrics
 from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
+from toolkit.plots.cell_marks import draw_cell_marks, fit_cell_marks
 from toolkit.plots.palette import CATEGORICAL, COLORS, GREY_CMAP, HATCHES, PAGE_WIDTH, halo, series_style
 from toolkit.plots.slices import CSpaceSlice
 
@@ -68,7 +69,7 @@ def probability_maps(
         parts.append(answers.map_in_regions(name, said[-1], probability, valid, grid, t))
     fig.colorbar(image, ax=list(axes), label="P(valid)", shrink=0.8)
     _legend(fig, _mistake_handles())
-    k = _fit_squares(fig, grid)
+    k = fit_cell_marks(fig, grid)
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
     text += "configurations; grey, 0 black to 1 white) with the true C-obstacle boundary outlined, dangerous "
     text += f"mistakes as squares{f' (one per {k} x {k} cells holding any)' if k > 1 else ''} and conservative ones "
@@ -101,7 +102,7 @@ def path_map(
     _draw_roadmap(ax, nodes, nodes_valid, path, (x, y))
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=10, wrap=True)
     _legend(fig, _mistake_handles()[:1] + [cut] + ax.get_lines())
-    _fit_squares(fig, grid)
+    fit_cell_marks(fig, grid)
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
     text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (crosses), and the"
     text += f" returned path through {len(path)} configurations, checked exactly."
@@ -216,54 +217,9 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
     if conservative:
         ax.add_collection(_cells(grid, codes == 1, label=ANSWERS[1], **CONSERVATIVE_CELLS))
-    i, j = np.nonzero(codes == 3)
-    ax.scatter(
-        grid.axes[0][i],
-        grid.axes[1][j],
-        s=MIN_SQUARE**2,  # points^2: sized to the cells once the figure is laid out (_fit_squares)
-        c=DANGEROUS,
-        marker="s",
-        linewidths=0,
-        label=ANSWERS[3],
-        path_effects=halo(0.0),
-        zorder=3,  # over the boundary: most dangerous cells lie along it
-        gid="dangerous",
-    )
+    style = dict(c=DANGEROUS, marker="s", linewidths=0, label=ANSWERS[3], path_effects=halo(0.0))
+    draw_cell_marks(ax, grid, codes == 3, **style)  # over the boundary: most dangerous cells lie along it
     return image
-
-
-MIN_SQUARE = 5.0  # points: the least side of a dangerous square, however fine the grid (a 100-cell map's cell: ~2 pt)
-SQUARE_SHARE = 0.7  # of its cell (or block of cells) a square covers: the grey beneath shows between two squares
-
-
-def _fit_squares(fig: Figure, grid: CSpaceSlice) -> int:
-    """Size the dangerous squares of ``fig``'s maps to their cells as laid out: ``SQUARE_SHARE`` of a cell. Where
-    that is under :data:`MIN_SQUARE` points (a fine grid), one square marks each block of ``k x k`` cells holding a
-    dangerous cell, at their middle, ``k`` the fewest cells that make it that large: every square one can see.
-    Returns the largest ``k``."""
-    fig.draw_without_rendering()  # lays the figure out: the axes take their final sizes
-    first = np.array([axis[0] for axis in grid.axes])  # (2,) the first cell's centre
-    cell = np.array([abs(axis[1] - axis[0]) if len(axis) > 1 else 1.0 for axis in grid.axes])  # (2,) data units
-    largest = 1
-    for ax in fig.axes:
-        marks = [c for c in ax.collections if isinstance(c, PathCollection) and c.get_gid() == "dangerous"]
-        if not marks:
-            continue
-        x0, x1, y0, y1 = (*ax.get_xlim(), *ax.get_ylim())
-        per_unit = np.array([ax.bbox.width / abs(x1 - x0), ax.bbox.height / abs(y1 - y0)]) * 72 / fig.dpi  # points
-        cell_points = float(np.min(cell * per_unit))
-        k = max(1, int(np.ceil(MIN_SQUARE / (SQUARE_SHARE * cell_points))))  # cells a block, each way
-        largest = max(largest, k)
-        for mark in marks:
-            mark.set_sizes([(SQUARE_SHARE * k * cell_points) ** 2])
-            offsets = np.asarray(mark.get_offsets())  # (n, 2) the dangerous cells' centres
-            if k == 1 or not len(offsets):
-                continue  # one square a cell
-            cells = np.rint((offsets - first) / cell).astype(int)  # (n, 2) cell indices
-            blocks, block_of = np.unique(cells // k, axis=0, return_inverse=True)  # (m, 2), (n,)
-            centres = np.array([cells[block_of.ravel() == b].mean(axis=0) for b in range(len(blocks))])  # (m, 2)
-            mark.set_offsets(first + centres * cell)  # each at its dangerous cells' middle
-    return largest
 
 
 CONSERVATIVE_CELLS: dict[str, Any] = dict(  # a light tint and a dotted hatch in ink: the gray beneath still shows

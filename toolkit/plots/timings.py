@@ -47,27 +47,12 @@ def stage_times(panels: dict[str, dict]) -> Figure:
     for ax, (title, planning) in zip(axes, panels.items()):
         names = list(planning)  # the samplers planned, in their order
         x = np.arange(len(names))[:, None] + np.array([-0.2, 0.2])  # (samplers, modes) bar centres
-        table = {
-            key: MS * np.array([[planning[s][m][key] for m in MODES] for s in names])
-            for key in [f"total_s_{stat}" for stat in ("median", "q1", "q3")]
-        }  # key -> (samplers, modes), in ms
-        shares = {key: np.array([[planning[s][m][f"{key}_share"] for m in MODES] for s in names]) for key in STAGE_KEYS}
-        table["total_s"] = table["total_s_median"]
-        table.update({key: table["total_s"] * shares[key] for key in STAGE_KEYS})
-        table["other_s"] = np.maximum(table["total_s"] - sum(table[k] for k in STAGE_KEYS), 0.0)
+        table = _stage_table(planning, names)  # key -> (samplers, modes), in ms
         cut = _draw_stage_bars(ax, x, table)  # (samplers, modes): which whiskers run past the panel's top
         ratio = [float(np.median(per_query_ratios(planning[s]))) for s in names]  # (samplers,)
         for i, r in enumerate(ratio):  # above the frame, over the pair: never on a bar or a whisker
-            ax.annotate(
-                f"{r:.2f}x",
-                (i, 1.0),
-                xycoords=("data", "axes fraction"),
-                xytext=(0, 2),
-                textcoords="offset points",
-                ha="center",
-                va="bottom",
-                fontsize=8,
-            )
+            where = dict(xycoords=("data", "axes fraction"), xytext=(0, 2), textcoords="offset points")
+            ax.annotate(f"{r:.2f}x", (i, 1.0), ha="center", va="bottom", fontsize=8, **where)
         ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=8)
         ax.set_xlabel("sampler, without / with prediction")
         ax.set_ylabel("ms per query (median)")
@@ -75,15 +60,15 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         said.append(
             f"{title}: "
             + ", ".join(
-                f"{s} {_ms(table['total_s'][i, 0])} ms without, {_ms(table['total_s'][i, 1])} ms with "
+                f"{s} {ms_text(table['total_s'][i, 0])} ms without, {ms_text(table['total_s'][i, 1])} ms with "
                 f"(per query {ratio[i]:.2f}x)"
                 for i, s in enumerate(names)
             )
-            + _cut_in_words(cut, names, table["total_s_q3"], ax.get_ylim()[1])
+            + cut_in_words(cut, [[f"{s} {m}" for m in MODES] for s in names], table["total_s_q3"], ax.get_ylim()[1])
         )
         keys = ("total_s", "total_s_q1", "total_s_q3", *STAGE_KEYS, "other_s")
         rows = tuple(
-            (f"{s}, {m}", *(_ms(table[key][i, j]) for key in keys))
+            (f"{s}, {m}", *(ms_text(table[key][i, j]) for key in keys))
             for i, s in enumerate(names)
             for j, m in enumerate(MODES)
         )
@@ -103,15 +88,30 @@ MS = 1000.0  # the figure's unit, ms, per second
 CUT = 2.0  # a whisker reaching past CUT times a panel's tallest bar is cut at its top, its end written there
 
 
-def _ms(value: float) -> str:
+def ms_text(value: float) -> str:
     """A time in ms as the figure writes it: three digits, whole numbers from 100 on (``'4.35'``, ``'178'``)."""
     return f"{value:.0f}" if value >= 100 else f"{value:.3g}"
 
 
-def _cut_in_words(cut: np.ndarray, names: list[str], q3: np.ndarray, top: float) -> str:
-    """The whiskers cut at a panel's top ``top``, in words (``cut``, ``q3``: ``(samplers, modes)``); "" for none."""
-    ends = [f"{names[i]} {MODES[j]} to {_ms(q3[i, j])} ms" for i, j in zip(*np.nonzero(cut))]
-    return f"; whiskers cut at the top, {_ms(top)} ms: " + ", ".join(ends) if ends else ""
+def _stage_table(planning: dict, names: list[str]) -> dict[str, np.ndarray]:
+    """The bars of :func:`stage_times` in ms, key -> ``(samplers, modes)``: the total's median and quartiles, each
+    stage's time (its share of an average query times the median total) and "other", the rest."""
+    table = {
+        key: MS * np.array([[planning[s][m][key] for m in MODES] for s in names])
+        for key in [f"total_s_{stat}" for stat in ("median", "q1", "q3")]
+    }
+    shares = {key: np.array([[planning[s][m][f"{key}_share"] for m in MODES] for s in names]) for key in STAGE_KEYS}
+    table["total_s"] = table["total_s_median"]
+    table.update({key: table["total_s"] * shares[key] for key in STAGE_KEYS})
+    table["other_s"] = np.maximum(table["total_s"] - sum(table[k] for k in STAGE_KEYS), 0.0)
+    return table
+
+
+def cut_in_words(cut: np.ndarray, labels, q3: np.ndarray, top: float) -> str:
+    """The whiskers cut at a panel's top ``top`` (ms), in words: ``cut``, ``q3`` and the bars' ``labels``, arrays of
+    the bars' shape; "" for none."""
+    ends = [f"{labels[i][j]} to {ms_text(q3[i, j])} ms" for i, j in zip(*np.nonzero(cut))]
+    return f"; whiskers cut at the top, {ms_text(top)} ms: " + ", ".join(ends) if ends else ""
 
 
 def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndarray:
@@ -133,21 +133,29 @@ def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndar
             linewidth=0.5,
         )
         bottom = bottom + table[key]
-    q3 = table["total_s_q3"]
-    tallest = bottom.max()
+    quartiles = (table["total_s_q1"], table["total_s_q3"])
+    return quartile_whiskers(ax, x, table["total_s"], *quartiles, tallest=bottom.max(), label="total: quartiles")
+
+
+def quartile_whiskers(
+    ax, x: np.ndarray, median: np.ndarray, q1: np.ndarray, q3: np.ndarray, *, tallest: float, label: str = "quartiles"
+) -> np.ndarray:
+    """Whiskers at ``x`` from the first to the third quartile ``q1``, ``q3`` (arrays of ``x``'s shape, through the
+    ``median``), the y axis up to the bars (``tallest``) and every whisker within :data:`CUT` times them; a whisker
+    reaching past that is drawn to the top, ends in a triangle there and its end is written beside it. Returns which
+    whiskers were cut (``x``'s shape). Times in ms, as the cut ends are written."""
     top = 1.12 * max(tallest, q3[q3 <= CUT * tallest].max(initial=0.0))  # room above for a cut whisker's label
     ax.set_ylim(0, top)
     cut = q3 > top
-    low, high = table["total_s"] - table["total_s_q1"], np.minimum(q3, top) - table["total_s"]
     ax.errorbar(
         x.ravel(),
-        table["total_s"].ravel(),
-        yerr=[low.ravel(), high.ravel()],
+        median.ravel(),
+        yerr=[(median - q1).ravel(), (np.minimum(q3, top) - median).ravel()],
         fmt="none",
         ecolor=COLORS["ink"],
         capsize=3,
         linewidth=1,
-        label="total: quartiles",
+        label=label,
     )
     if cut.any():
         ax.plot(
@@ -161,7 +169,7 @@ def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndar
         )
         for xc, end in zip(x[cut], q3[cut]):
             ax.annotate(
-                _ms(end), (xc, top), xytext=(5, -1), textcoords="offset points", ha="left", va="top", fontsize=8
+                ms_text(end), (xc, top), xytext=(5, -1), textcoords="offset points", ha="left", va="top", fontsize=8
             )
     return cut
 
