@@ -166,7 +166,7 @@ def test_probability_map_shows_the_probabilities_the_boundary_and_exactly_the_mi
 
 def test_a_fine_maps_dangerous_squares_stay_large_enough_to_see():
     """On a 100-cell map (chapter 03 at full size) a cell is about 2 points wide: one square then marks each block of
-    k x k cells holding a dangerous one, at least MIN_MARK points a side, over the boundary it lies along; every
+    k x k cells holding a dangerous one, at least MIN_MARK points a side, under the boundary (it stays whole); every
     dangerous cell lies in a square's block, every square beside a dangerous cell, and the description says k."""
     fine = slices.slice_grid(robots.point_robot(), n=100)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
@@ -177,7 +177,7 @@ def test_a_fine_maps_dangerous_squares_stay_large_enough_to_see():
     ax = fig.axes[0]
     (squares,) = [c for c in ax.collections if c.get_gid() == cell_marks.GID]
     (boundary,) = [c for c in ax.get_children() if isinstance(c, ContourSet)]
-    assert np.sqrt(squares.get_sizes()[0]) >= cell_marks.MIN_MARK and squares.get_zorder() > boundary.get_zorder()
+    assert np.sqrt(squares.get_sizes()[0]) >= cell_marks.MIN_MARK and squares.get_zorder() < boundary.get_zorder()
     k = block_of_squares(fig)
     assert k > 1 and len(squares.get_offsets()) < ((probability >= 0.5) & ~valid).sum() / k
     assert_squares_mark(ax, fine, (probability >= 0.5) & ~valid, k)

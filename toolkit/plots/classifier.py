@@ -218,7 +218,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     if conservative:
         ax.add_collection(_cells(grid, codes == 1, label=ANSWERS[1], **CONSERVATIVE_CELLS))
     style = dict(c=DANGEROUS, marker="s", linewidths=0, label=ANSWERS[3], path_effects=halo(0.0))
-    draw_cell_marks(ax, grid, codes == 3, **style)  # over the boundary: most dangerous cells lie along it
+    draw_cell_marks(ax, grid, codes == 3, **style)  # squares a cell or a block of cells wide: fit_cell_marks
     return image
 
 
