@@ -107,6 +107,15 @@ PLANNING = {
 }
 
 
+SLOW_QUERY = {
+    s: {
+        m: row | {"total_s_q3": 20 * row["total_s_median"]} if (s, m) == ("OB", "with") else row
+        for m, row in modes.items()
+    }
+    for s, modes in PLANNING.items()
+}  # a whisker cut at the top
+
+
 def gallery() -> dict[str, Figure]:
     """One figure of every figure function, from small made-up or quickly computed data."""
     rng = np.random.default_rng(0)
@@ -195,7 +204,7 @@ def gallery() -> dict[str, Figure]:
             ]
             * 2,
         ),
-        "timings.stage_times": timings.stage_times({"2DS": PLANNING, "3DC-7": PLANNING}),
+        "timings.stage_times": timings.stage_times({"2DS": SLOW_QUERY, "3DC-7": PLANNING}),
         "timings.ratio_comparison": timings.ratio_comparison(
             {
                 "the paper's planner, means": {"2DS": {"BS": 0.5, "OB": 0.8, "G": 1.2, "BT": 0.9}},
@@ -208,7 +217,7 @@ def gallery() -> dict[str, Figure]:
         "reproduction.cae_reconstruction": reproduction.cae_reconstruction(
             {"seen": grids[0], "unseen": grids[1]}, {"seen": decoded[0], "unseen": decoded[1]}
         ),
-        "reproduction.planning_times": reproduction.planning_times(PLANNING),
+        "reproduction.planning_times": reproduction.planning_times(SLOW_QUERY),
         "reproduction.threshold_sweep": reproduction.threshold_sweep(probability, valid, 0.5),
         "scenes.path_frame": scenes.path_frame(
             chain.robot,
@@ -465,11 +474,15 @@ def _mark_colours(artist) -> set[str]:
 
 
 SITE_PIXELS = 750  # the widest a chapter's figure is shown on the course site (its content column), in pixels
-CHAPTER_FIGURES = (  # the figures chapters 04 and 05 show, read on the site at its width (issue 45)
+CHAPTER_FIGURES = (  # the figures chapters 02 to 05 show, read on the site at its width (issue 45)
+    "cae.contraction",
+    "classifier.probability_map",
     "crossover.crossover",
     "planning.samplers",
     "planning.roadmap_steps",
+    "timings.stage_times",
     "timings.ratio_comparison",
+    "reproduction.planning_times",
     "scenes.path_frame",
     "scenes.scene_still",
 )

@@ -2,6 +2,7 @@
 
 import numpy as np
 import pytest
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
 
 from toolkit.learning.metrics import reconstruction_accuracy
@@ -130,3 +131,19 @@ def test_latent_scatter_colors_each_workspace_by_its_value(rng):
             max(occupied["seen"].max(), occupied["unseen"].max()),
         )
     assert bar.get_ylabel() == "occupied share"
+
+
+def test_the_boxes_long_names_wrap_apart():
+    """Chapter 02's three models side by side under their boxes: each name wrapped at its spaces so that no two tick
+    labels touch (once '(paper)(mean reading)' ran together), each line whole words, at 8 points or more."""
+    names = ["λ = 0", "λ = 1e-3 (paper)", "λ = 0.961 (mean reading)"]
+    norms = {n: np.array([2.9, 3.0, 3.2]) for n in names}
+    responses = {n: np.ones((2, 3)) for n in names}
+    fig = plots.contraction(norms, flips=np.array([1, 30]), latent_shift=responses, decoded_change=responses)
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    fig.draw(renderer)
+    labels = fig.axes[0].get_xticklabels()
+    assert [t.get_text().replace("\n", " ") for t in labels] == names and "\n" in labels[-1].get_text()
+    boxes = [t.get_window_extent(renderer) for t in labels]
+    assert all(left.x1 + 2 < right.x0 for left, right in zip(boxes, boxes[1:]))  # pixels apart
+    assert min(t.get_fontsize() for t in labels) >= 8

@@ -1,6 +1,8 @@
 """The collision MLP's figures (notebook 03) show what they claim: the given probabilities, the exact
 checker's C-obstacles, exactly the dangerous and conservative cells, hand-computed counts and ROC points."""
 
+import re
+
 import numpy as np
 import pytest
 from matplotlib.collections import PathCollection, PolyCollection
@@ -11,7 +13,7 @@ from toolkit.geometry import robots
 from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace
 from toolkit.learning import metrics
-from toolkit.plots import answers, slices
+from toolkit.plots import alt, answers, cell_marks, slices
 from toolkit.plots import classifier as pc
 from toolkit.plots.palette import COLORS
 
@@ -45,6 +47,25 @@ def cell_centres(grid, mask):
 def scatter_points(ax, label):
     (collection,) = [c for c in ax.collections if isinstance(c, PathCollection) and c.get_label() == label]
     return {tuple(p) for p in collection.get_offsets()}
+
+
+def block_of_squares(fig) -> int:
+    """How many cells each way one dangerous square marks, as the figure's description says (1: one a cell)."""
+    found = re.search(r"one per (\d+) x \1 cells", alt.alt_text(fig))
+    return int(found[1]) if found else 1
+
+
+def assert_squares_mark(ax, grid, mask, k):
+    """The dangerous squares mark exactly the cells of ``mask``: one a cell (``k`` 1), or one per block of ``k x k``
+    cells, every such cell within its block of a square and every square beside one."""
+    if k == 1:
+        assert scatter_points(ax, "invalid kept (dangerous)") == cell_centres(grid, mask)
+        return
+    cell = grid.axes[0][1] - grid.axes[0][0]
+    dangerous = np.array(sorted(cell_centres(grid, mask)))  # (n, 2)
+    centres = np.array(sorted(scatter_points(ax, "invalid kept (dangerous)")))  # (m, 2)
+    apart = np.max(np.abs(dangerous[:, None] - centres[None]), axis=-1) / cell  # (n, m) in cells, the larger axis
+    assert (apart.min(axis=1) < k).all() and (apart.min(axis=0) < k).all()
 
 
 def hatched_cells(ax, label, grid):
@@ -126,6 +147,7 @@ def test_probability_map_shows_the_probabilities_the_boundary_and_exactly_the_mi
     assert image.origin == "lower" and tuple(image.get_extent()) == grid.extent
     dangerous, conservative = (probability >= threshold) & ~valid, (probability < threshold) & valid
     assert dangerous.sum() > 0 and conservative.sum() > 0  # the test means something
+    assert block_of_squares(ax.figure) == 1  # 24 cells over 3 inches: a square a cell
     assert scatter_points(ax, "invalid kept (dangerous)") == cell_centres(grid, dangerous)
     rounded = {tuple(np.round(c, 9)) for c in cell_centres(grid, conservative)}
     assert hatched_cells(ax, "valid rejected", grid) == rounded
@@ -142,6 +164,25 @@ def test_probability_map_shows_the_probabilities_the_boundary_and_exactly_the_mi
     assert len(vertices) > 4 and on_side.all() and inside.all()
 
 
+def test_a_fine_maps_dangerous_squares_stay_large_enough_to_see():
+    """On a 100-cell map (chapter 03 at full size) a cell is about 2 points wide: one square then marks each block of
+    k x k cells holding a dangerous one, at least MIN_MARK points a side, under the boundary (it stays whole); every
+    dangerous cell lies in a square's block, every square beside a dangerous cell, and the description says k."""
+    fine = slices.slice_grid(robots.point_robot(), n=100)
+    ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
+    valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (100, 100)
+    x = (fine.axes[0] - fine.lower[0]) / (fine.upper[0] - fine.lower[0])  # (100,)
+    probability = np.repeat(x[:, None], 100, axis=1)  # rising along x: the block's right part is kept
+    fig = pc.probability_map(probability, valid, fine, threshold=0.5)
+    ax = fig.axes[0]
+    (squares,) = [c for c in ax.collections if c.get_gid() == cell_marks.GID]
+    (boundary,) = [c for c in ax.get_children() if isinstance(c, ContourSet)]
+    assert np.sqrt(squares.get_sizes()[0]) >= cell_marks.MIN_MARK and squares.get_zorder() < boundary.get_zorder()
+    k = block_of_squares(fig)
+    assert k > 1 and len(squares.get_offsets()) < ((probability >= 0.5) & ~valid).sum() / k
+    assert_squares_mark(ax, fine, (probability >= 0.5) & ~valid, k)
+
+
 def test_blocked_cells_are_the_grown_block(grid, valid):
     """The truth the maps draw is the C-obstacle: the block grown by the robot's half width, 0.25."""
     x, y = grid.configs.T
@@ -156,7 +197,7 @@ def test_probability_maps_side_by_side_each_with_its_own_threshold(grid, probabi
     assert [ax.get_title() for ax in axes] == ["paper: P(valid), threshold 0.30", "strong: P(valid), threshold 0.60"]
     for ax, p, t in zip(axes, maps.values(), (0.3, 0.6)):
         np.testing.assert_array_equal(ax.images[0].get_array(), p.T)
-        assert scatter_points(ax, "invalid kept (dangerous)") == cell_centres(grid, (p >= t) & ~valid)
+        assert_squares_mark(ax, grid, (p >= t) & ~valid, block_of_squares(fig))
 
 
 def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, probability, valid):

@@ -13,7 +13,8 @@ from toolkit.experiments.queries import make_queries
 from toolkit.geometry.collision import exact_checker
 from toolkit.planning.paper_prm import PRM
 from toolkit.planning.prm import PlanStep, plan
-from toolkit.plots import planning, timings
+from toolkit.plots import alt, planning, reproduction, timings
+from toolkit.plots.palette import PAGE_WIDTH
 
 SCENARIO = scenarios.get("2ds")
 
@@ -185,17 +186,39 @@ def test_stage_times_one_stacked_bar_per_sampler_and_mode_with_the_given_heights
     assert [t.get_text() for t in ax.figure.legends[0].texts] == [*bars, "total: quartiles"]
     assert list(bars) == [timings.STAGE_LABELS[k] for k in ("sampling_s", "connection_s", "query_s", "other_s")]
     order = [(s, m) for s in ("BS", "OB", "G", "BT") for m in ("without", "with")]
-    for key in ("sampling_s", "connection_s", "query_s"):
-        np.testing.assert_allclose(bars[timings.STAGE_LABELS[key]], [MEDIANS[s][m][key] for s, m in order])
-    np.testing.assert_allclose(np.sum(list(bars.values()), axis=0), [MEDIANS[s][m]["total_s"] for s, m in order])
+    for key in ("sampling_s", "connection_s", "query_s"):  # in ms
+        np.testing.assert_allclose(bars[timings.STAGE_LABELS[key]], [1e3 * MEDIANS[s][m][key] for s, m in order])
+    np.testing.assert_allclose(np.sum(list(bars.values()), axis=0), [1e3 * MEDIANS[s][m]["total_s"] for s, m in order])
     (whiskers,) = ax.collections  # the total's quartiles, one vertical segment a bar: never below zero
     spans = np.array([segment[:, 1] for segment in whiskers.get_segments()])  # (bars, 2): q1, q3
     np.testing.assert_allclose(
-        spans, [[0.8 * MEDIANS[s][m]["total_s"], 1.5 * MEDIANS[s][m]["total_s"]] for s, m in order]
+        spans, [[800 * MEDIANS[s][m]["total_s"], 1500 * MEDIANS[s][m]["total_s"]] for s, m in order]
     )
     # above each pair the median of the queries' own ratios (0.5, 0.6, 1.2), not the ratio of the median totals (0.5)
     assert [t.get_text() for t in ax.texts] == ["0.60x"] * 4
     assert [t.get_text() for t in ax.get_xticklabels()][:2] == ["BS\nwithout", "BS\nwith"]
+    assert ax.get_ylim()[1] > 1500 * MEDIANS["BT"]["without"]["total_s"]  # every whisker within 2x the bars: whole
+
+
+def test_a_whisker_far_above_the_bars_is_cut_at_the_top_with_its_end_written():
+    """One slow query's spread (OB with: a third quartile 20 times its bar) must not flatten the panel's bars: the
+    axis stops near the tallest bar, the whisker ends there in a triangle and its value, in ms, is written beside it
+    and in the figure's description."""
+    planning = {s: {m: dict(row) for m, row in modes.items()} for s, modes in PLANNING.items()}
+    planning["OB"]["with"]["total_s_q3"] = 20 * planning["OB"]["with"]["total_s_median"]
+    fig = timings.stage_times({"2DS": planning})
+    ax = fig.axes[0]
+    end = 1e3 * planning["OB"]["with"]["total_s_q3"]  # ms
+    tallest = 1e3 * max(row["total_s_median"] for modes in planning.values() for row in modes.values())
+    top = ax.get_ylim()[1]
+    assert tallest < top < 2 * tallest < end  # the bars fill most of the panel
+    (whiskers,) = ax.collections
+    assert np.max([segment[:, 1] for segment in whiskers.get_segments()]) == pytest.approx(top)
+    (triangle,) = [line for line in ax.lines if line.get_marker() == "^"]
+    assert list(triangle.get_xdata()) == [1.2] and list(triangle.get_ydata()) == [top]  # OB, with
+    assert f"{end:.0f}" in [t.get_text() for t in ax.texts]
+    assert f"OB with to {end:.0f} ms" in alt.alt_text(fig)
+    assert "quartile off the scale (its value written)" in [t.get_text() for t in fig.legends[0].texts]
 
 
 def test_ratio_comparison_draws_one_baseline_per_panel_on_one_log_scale():
@@ -255,3 +278,24 @@ def test_ratio_comparison_keeps_a_series_colour_in_every_panel_and_names_it_once
     sampling_in_paper = fig.axes[0].containers[0][0].get_facecolor()
     assert total_in_paper == total_in_ours != sampling_in_paper
     assert [t.get_text() for t in fig.legends[0].get_texts()] == ["2DS, sampling", "2DS, total"]
+
+
+def test_the_paper_style_times_stack_their_panels_and_cut_a_far_whisker_too():
+    """reproduction.planning_times (the paper's Figures 5-7 as medians): sampling above the total, as wide as the page,
+    in ms, the bars named as the paper names them; a sampling whisker 20 times its bar is cut at the top, written."""
+    planning = {s: {m: dict(row) for m, row in modes.items()} for s, modes in PLANNING.items()}
+    for s, modes in planning.items():
+        for m, row in modes.items():
+            row |= {f"sampling_s_{k}": f * MEDIANS[s][m]["sampling_s"] for k, f in (("median", 1), ("q1", 0.8))}
+            row["sampling_s_q3"] = (20 if (s, m) == ("BT", "with") else 1.5) * MEDIANS[s][m]["sampling_s"]
+    fig = reproduction.planning_times(planning)
+    sampling, total = fig.axes
+    assert fig.get_figwidth() <= PAGE_WIDTH and sampling.get_position().y0 > total.get_position().y1
+    heights = [p.get_height() for c in sampling.containers if hasattr(c, "patches") for p in c.patches]
+    np.testing.assert_allclose(
+        heights, [1e3 * MEDIANS[s][m]["sampling_s"] for m in ("without", "with") for s in MEDIANS]
+    )
+    assert [t.get_text() for t in sampling.get_xticklabels()][:2] == ["BS", "BSF"]
+    end = 1e3 * planning["BT"]["with"]["sampling_s_q3"]
+    assert sampling.get_ylim()[1] < end and f"{end:.3g}" in [t.get_text() for t in sampling.texts]
+    assert f"BTF to {end:.3g} ms" in alt.alt_text(fig) and not total.texts  # the totals' whiskers all fit

@@ -1,9 +1,12 @@
 """Notebook 05's path figure: the robot drawn by forward kinematics at the chosen frame, the path's series beside it."""
 
+import itertools
+
 import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.colors import to_rgba
+from matplotlib.text import Text
 
 from toolkit import scenarios
 from toolkit.geometry.collision import exact_checker
@@ -179,3 +182,40 @@ def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose
     assert "robot: start" in names and "robot, valid" in names and "robot, in collision" in names
     with pytest.raises(ValueError, match="drawn in 3D"):
         scenes.scene_still(scenarios.get("2ds").robot, workspace, {})
+
+
+@pytest.mark.parametrize("index", [0, FRAMES // 2])
+def test_no_text_of_a_frame_lies_over_another(crossing, index):
+    """Chapter 05's frame at the site's width: the names at the DoF lines' ends a line of text apart even where every
+    line ends at the same height (here all at mid-bounds), and no text of one panel (the 3D panel's z label, the
+    right panels' axis names) over a text of another."""
+    robot, workspace, _, path, valid = crossing
+    path = path.copy()
+    path[-1] = (robot.lower + robot.upper) / 2  # every DoF ends at 0.5 of its bounds: seven names at one height
+    fig = scenes.path_frame(
+        robot, path, index, workspace=workspace, valid=valid, clearance=np.linspace(0.1, 1, FRAMES), probability=valid
+    )
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    fig.draw(renderer)
+    names = [t for t in fig.axes[1].texts if t.get_text() in robot.dof_names]
+    assert len(names) == robot.dof
+    boxes = [(t, t.get_window_extent(renderer)) for t in drawn_texts(fig)]
+    over = [
+        f"{a.get_text()!r} / {b.get_text()!r}"
+        for (a, box_a), (b, box_b) in itertools.combinations(boxes, 2)
+        if box_a.overlaps(box_b) and min(box_a.intersection(box_a, box_b).size) > 1
+    ]
+    assert over == []
+    heights = sorted(box.y0 for t, box in boxes if t in names)  # pixels, at 100 dpi
+    assert np.min(np.diff(heights)) >= scenes.LABEL_GAP * fig.dpi / 72 - 1
+
+
+def drawn_texts(fig) -> list[Text]:
+    """The texts a figure draws: every visible text but the labels of ticks outside their axis's view."""
+    hidden = set()
+    for ax in fig.axes:
+        for axis in [ax.xaxis, ax.yaxis, *([ax.zaxis] if hasattr(ax, "zaxis") else [])]:
+            low, high = sorted(axis.get_view_interval())
+            hidden |= {t.label1 for t in axis.get_major_ticks() if not low - 1e-9 <= t.get_loc() <= high + 1e-9}
+    texts = [t for t in fig.findobj(Text) if t.get_visible() and t.get_text().strip() and t not in hidden]
+    return [t for t in texts if t.get_window_extent().width > 0]

@@ -16,13 +16,16 @@ as in :func:`toolkit.learning.metrics.reconstruction_accuracy`. Nothing here cal
 
 from __future__ import annotations
 
+import textwrap
 from typing import Any
 
 import numpy as np
 from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
+from matplotlib.font_manager import FontProperties
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
+from matplotlib.textpath import TextToPath
 
 from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots.alt import Part, describe, lines_part, map_part
@@ -231,10 +234,35 @@ def _draw_norms(ax, jacobian_norms: dict[str, np.ndarray]) -> None:
         meanprops=dict(marker="^", color=COLORS["ink"], markerfacecolor=COLORS["free"], markeredgecolor=COLORS["ink"]),
         flierprops=dict(marker="o", markeredgecolor=COLORS["ink"], markersize=3),
     )
-    ax.set_xticks(range(1, len(names) + 1), [n.replace(" (", "\n(") for n in names])  # long names on two lines
+    ax.set_xticks(range(1, len(names) + 1), _fitted(names, _slot_points(ax, len(names)), NAME_POINTS), fontsize=9)
     ax.set_xlabel("model")
     ax.set_ylabel("Jacobian norm ||dz/dx|| per workspace")
     ax.set_title("Encoder Jacobian norm", fontsize=10)
+
+
+NAME_POINTS = 9.0  # the boxes' names, in points
+
+
+def _slot_points(ax, n: int) -> float:
+    """The width in points of one of ``n`` equal slots across ``ax`` once its figure is laid out, less a gap."""
+    ax.figure.draw_without_rendering()  # the axes take their width
+    return 0.85 * ax.bbox.width * 72 / ax.figure.dpi / n
+
+
+def _fitted(names: list[str], width: float, size: float) -> list[str]:
+    """Each name wrapped at its spaces into the fewest lines each at most ``width`` points wide at ``size`` points
+    (a single word wider stays whole): names side by side never run into each other."""
+    measure = TextToPath()
+    font = FontProperties(size=size)
+
+    def fits(lines: list[str]) -> bool:
+        return all(measure.get_text_width_height_descent(line, font, ismath=False)[0] <= width for line in lines)
+
+    wrapped = []
+    for name in names:
+        ways = [textwrap.wrap(name, k, break_long_words=False) for k in range(len(name), 0, -1)]
+        wrapped.append("\n".join(next((lines for lines in ways if fits(lines)), ways[-1])))
+    return wrapped
 
 
 def latent_scatter(

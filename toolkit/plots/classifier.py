@@ -38,6 +38,7 @@ from toolkit.learning import metrics
 from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
+from toolkit.plots.cell_marks import draw_cell_marks, fit_cell_marks
 from toolkit.plots.palette import CATEGORICAL, COLORS, GREY_CMAP, HATCHES, PAGE_WIDTH, halo, series_style
 from toolkit.plots.slices import CSpaceSlice
 
@@ -68,9 +69,11 @@ def probability_maps(
         parts.append(answers.map_in_regions(name, said[-1], probability, valid, grid, t))
     fig.colorbar(image, ax=list(axes), label="P(valid)", shrink=0.8)
     _legend(fig, _mistake_handles())
+    k = fit_cell_marks(fig, grid)
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
     text += "configurations; grey, 0 black to 1 white) with the true C-obstacle boundary outlined, dangerous "
-    text += "mistakes as squares and conservative ones hatched with dots. "
+    text += f"mistakes as squares{f' (one per {k} x {k} cells holding any)' if k > 1 else ''} and conservative ones "
+    text += "hatched with dots. "
     return describe(fig, text + "; ".join(said) + ".", parts)
 
 
@@ -99,6 +102,7 @@ def path_map(
     _draw_roadmap(ax, nodes, nodes_valid, path, (x, y))
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=10, wrap=True)
     _legend(fig, _mistake_handles()[:1] + [cut] + ax.get_lines())
+    fit_cell_marks(fig, grid)
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
     text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (crosses), and the"
     text += f" returned path through {len(path)} configurations, checked exactly."
@@ -213,17 +217,8 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
     if conservative:
         ax.add_collection(_cells(grid, codes == 1, label=ANSWERS[1], **CONSERVATIVE_CELLS))
-    i, j = np.nonzero(codes == 3)
-    ax.scatter(
-        grid.axes[0][i],
-        grid.axes[1][j],
-        s=(160.0 / max(grid.shape)) ** 2,  # points^2: a dangerous square about half a cell wide
-        c=DANGEROUS,
-        marker="s",
-        linewidths=0,
-        label=ANSWERS[3],
-        path_effects=halo(0.0),
-    )
+    style = dict(c=DANGEROUS, marker="s", linewidths=0, label=ANSWERS[3], path_effects=halo(0.0))
+    draw_cell_marks(ax, grid, codes == 3, **style)  # squares a cell or a block of cells wide: fit_cell_marks
     return image
 
 

@@ -13,7 +13,8 @@ from toolkit.learning import metrics
 from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.cae import grid_part
-from toolkit.plots.palette import CATEGORICAL, COLORS, GREYS_CMAP, HATCHES, series_style
+from toolkit.plots.palette import CATEGORICAL, COLORS, GREYS_CMAP, HATCHES, PAGE_WIDTH, series_style
+from toolkit.plots.timings import MS, cut_in_words, ms_text, quartile_whiskers
 
 MODES = ("without", "with")
 STATS = ("median", "q1", "q3")  # a time's summary over the queries (queries.summarize)
@@ -55,58 +56,55 @@ def _drawn(grid: np.ndarray) -> np.ndarray:
 
 
 def planning_times(planning: dict, title: str = "") -> Figure:
-    """Sampling and total time per query, without / with prediction (the paper's Figures 5-7): the median over the
-    queries, a whisker from the first to the third quartile (the paper draws means and stds; a single slow query
-    moves both, and a std bar can reach below zero)."""
-    fig = Figure(figsize=(9, 3.8))
-    axes = fig.subplots(1, 2)
+    """Sampling and total time per query in ms, without / with prediction (the paper's Figures 5-7), one panel a
+    row: the median over the queries, a whisker from the first to the third quartile (the paper draws means and
+    stds; a single slow query moves both, and a std bar can reach below zero). Each panel on its own scale, set by
+    its bars: a whisker past twice the tallest bar is cut at the top, its end written (``timings.quartile_whiskers``).
+    The bars with prediction are named as the paper names them (BSF: BS with the framework)."""
+    fig = Figure(figsize=(PAGE_WIDTH, 6.4))
+    axes = fig.subplots(2, 1)
     samplers = list(planning)  # the paper's four, or the ones the run planned
-    x = np.arange(len(samplers))
+    x = np.arange(len(samplers))[:, None] + np.array([-0.2, 0.2])  # (samplers, modes) bar centres
     said = []
     for ax, key, label in (
-        (axes[0], "sampling_s", "sampling time (s), median"),
-        (axes[1], "total_s", "total time per query (s), median"),
+        (axes[0], "sampling_s", "sampling time (ms), median"),
+        (axes[1], "total_s", "total time per query (ms), median"),
     ):
+        median, q1, q3 = (
+            MS * np.array([[planning[s][mode][f"{key}_{stat}"] for mode in MODES] for s in samplers]) for stat in STATS
+        )  # (samplers, modes) each
         for i, mode in enumerate(MODES):
-            median, q1, q3 = (np.array([planning[s][mode][f"{key}_{stat}"] for s in samplers]) for stat in STATS)
-            names = [s if mode == "without" else s + "F" for s in samplers]
-            spread = [median - q1, q3 - median]  # (2, samplers): whiskers down to q1, up to q3
-            bars = ax.bar(
-                x + (i - 0.5) * 0.38,
-                median,
+            ax.bar(
+                x[:, i],
+                median[:, i],
                 0.38,
-                yerr=spread,
-                capsize=3,
                 color=CATEGORICAL[i],
                 hatch=HATCHES[i],
                 edgecolor=COLORS["ink"],
                 linewidth=0.5,
                 label=f"{mode} prediction",
             )
-            ax.bar_label(bars, labels=names, fontsize=8, padding=2)
-        ax.set_xticks(x, samplers)
-        ax.set_xlabel("sampler")
+        cut = quartile_whiskers(ax, x, median, q1, q3, tallest=median.max())
+        ax.set_xticks(x.ravel(), [name for s in samplers for name in (s, s + "F")], fontsize=9)
+        ax.set_xlabel("sampler (F: with prediction, the paper's name)")
         ax.set_ylabel(label)
-        ax.legend(fontsize=8)
-        said.append(
-            f"{label}: "
-            + ", ".join(
-                f"{s} {planning[s]['without'][key + '_median']:.3g} without, {planning[s]['with'][key + '_median']:.3g}"
-                " with"
-                for s in samplers
-            )
+        bars = ", ".join(
+            f"{s} {ms_text(median[i, 0])} without, {ms_text(median[i, 1])} with" for i, s in enumerate(samplers)
         )
-    fig.suptitle(title or "Time with and without prediction")
-    fig.tight_layout()
-    text = f"{title or 'Time with and without prediction'}: bars of the median over the queries, plain without"
+        said.append(f"{label}: {bars}" + cut_in_words(cut, [[s, s + "F"] for s in samplers], q3, ax.get_ylim()[1]))
+    shown = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # each entry once
+    fig.legend(shown.values(), shown.keys(), loc="lower center", ncol=2, fontsize=8, frameon=False)
+    fig.suptitle(title or "Time with and without prediction", fontsize=10)
+    fig.tight_layout(rect=(0, 0.5 / fig.get_figheight(), 1, 1))  # the legend in the 0.5 in below the panels
+    text = f"{title or 'Time with and without prediction'}: bars of the median over the queries in ms, plain without"
     text += f" prediction and hatched with it, whiskers from quartile to quartile. {'; '.join(said)}."
     parts = [
         Part(
             label,
-            "seconds; the median over the queries, first and third quartile",
+            "ms; the median over the queries, first and third quartile",
             ("sampler", *(f"{stat}, {mode}" for mode in MODES for stat in STATS)),
             tuple(
-                (s, *(f"{planning[s][mode][f'{key}_{stat}']:.3g}" for mode in MODES for stat in STATS))
+                (s, *(ms_text(MS * planning[s][mode][f"{key}_{stat}"]) for mode in MODES for stat in STATS))
                 for s in samplers
             ),
         )

@@ -199,7 +199,7 @@ def path_frame(
         for name, values in (("valid", valid), ("clearance", clearance), ("probability", probability))
     }
     fig = Figure(figsize=(PAGE_WIDTH, 5.6))  # as wide as the page: its text as large as it is drawn
-    grid = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.45, top=0.74, bottom=0.1, left=0.02, right=0.88)
+    grid = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.6, top=0.76, bottom=0.1, left=0.02, right=0.88)
     valid_now = None if series["valid"] is None else bool(series["valid"][index])
     _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, valid_now, workspace, margin)
     _draw_series(fig, grid[1], robot, Q, index, series, threshold)
@@ -258,7 +258,9 @@ def _draw_series(
         panels.append(partial(_draw_clearance, clearance))
     if (probability := series["probability"]) is not None:
         panels.append(partial(_draw_probability, probability, threshold))
-    axes = spec.subgridspec(len(panels), 1, hspace=0.15).subplots(sharex=True, squeeze=False)[:, 0]
+    heights = (1.7, *[1.0] * (len(panels) - 1))  # the DoFs' panel taller: its lines and their names need room
+    axes = spec.subgridspec(len(panels), 1, hspace=0.15, height_ratios=heights).subplots(sharex=True, squeeze=False)
+    axes = axes[:, 0]
     for ax, draw_panel in zip(axes, panels):
         draw_panel(ax, along)
         ax.axvline(along[index], color=NOW_COLOR, linewidth=1.0, gid="now")
@@ -276,7 +278,10 @@ def _draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, ax, along: np.ndarra
     for k, name in enumerate(robot.dof_names):
         style = series_style(k) | dict(markevery=(k % every, every), markersize=6)
         ax.plot(along, scaled[:, k], linewidth=1.4, label=name, gid="dof", **style)
-    ends = _spread(scaled[-1], gap=0.15)  # (dof,) label heights that do not overlap
+    ax.set_ylim(-0.05, 1.05)
+    box = ax.get_position()  # in figure fractions: the gridspec has placed the panel
+    per_unit = box.height * fig.get_figheight() * 72 / 1.1  # points per unit of the y axis (1.1 units tall)
+    ends = _spread(scaled[-1], gap=LABEL_GAP / per_unit)  # (dof,) label heights a line of text apart
     for k, name in enumerate(robot.dof_names):
         ax.annotate(
             name,
@@ -288,7 +293,6 @@ def _draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, ax, along: np.ndarra
             color=series_style(k)["color"],
             annotation_clip=False,
         )
-    ax.set_ylim(-0.05, 1.05)
     ax.set_ylabel("DoF in bounds")
     fig.legend(
         *ax.get_legend_handles_labels(),
@@ -300,6 +304,9 @@ def _draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, ax, along: np.ndarra
         handlelength=3.0,
         columnspacing=0.8,
     )
+
+
+LABEL_GAP = 11.0  # points between two names at the lines' ends: an 8-point line of text (~9.4 pt tall) and air
 
 
 def _spread(heights: np.ndarray, gap: float) -> np.ndarray:

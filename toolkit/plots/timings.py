@@ -12,6 +12,7 @@ import textwrap
 import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.ticker import NullFormatter
+from matplotlib.transforms import offset_copy
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import Part, describe
@@ -31,61 +32,93 @@ STAGE_LABELS = {
 
 def stage_times(panels: dict[str, dict]) -> Figure:
     """Per panel (e.g. a scenario), a ``planning`` table ``{sampler: {"without": summary, "with": summary}}``
-    (``queries.summarize``): one bar per sampler and mode, as tall as the median total over the queries, split
+    (``queries.summarize``): one bar per sampler and mode, as tall as the median total over the queries in ms, split
     into the planner's stages in the shares of an average query (``_share``; the rest, encoding and set-up, on top
     as "other"); a whisker from the total's first to third quartile; above each pair the median of the queries' own
     ratios, time with / without (the summaries' ``total_s_per_query``: each query was solved in both modes in turn),
-    the number the chapters' tables read their verdicts from."""
-    fig = Figure(figsize=(6.2, 3.6 * len(panels) + 0.6))  # one panel a row, as wide as a chapter page's column
+    the number the chapters' tables read their verdicts from.
+
+    Each panel has its own scale, set by its bars: a whisker reaching past :data:`CUT` times the tallest bar (one
+    slow query's spread would flatten every bar) is cut at the panel's top, a triangle there and its end written
+    beside it."""
+    fig = Figure(figsize=(PAGE_WIDTH, 3.7 * len(panels) + 0.7))  # one panel a row, as wide as a chapter's column
     axes = fig.subplots(len(panels), 1, squeeze=False)[:, 0]
     said, parts = [], []
     for ax, (title, planning) in zip(axes, panels.items()):
         names = list(planning)  # the samplers planned, in their order
         x = np.arange(len(names))[:, None] + np.array([-0.2, 0.2])  # (samplers, modes) bar centres
-        table = {
-            key: np.array([[planning[s][m][key] for m in MODES] for s in names])
-            for key in [f"total_s_{stat}" for stat in ("median", "q1", "q3")] + [f"{k}_share" for k in STAGE_KEYS]
-        }  # key -> (samplers, modes)
-        table["total_s"] = table["total_s_median"]
-        table.update({key: table["total_s"] * table[f"{key}_share"] for key in STAGE_KEYS})
-        table["other_s"] = np.maximum(table["total_s"] - sum(table[k] for k in STAGE_KEYS), 0.0)
-        top = _draw_stage_bars(ax, x, table)  # (samplers, modes) the bars' and whiskers' tops
+        table = _stage_table(planning, names)  # key -> (samplers, modes), in ms
+        cut = _draw_stage_bars(ax, x, table)  # (samplers, modes): which whiskers run past the panel's top
         ratio = [float(np.median(per_query_ratios(planning[s]))) for s in names]  # (samplers,)
-        for i, r in enumerate(ratio):
-            ax.annotate(
-                f"{r:.2f}x", (i, top[i].max()), xytext=(0, 3), textcoords="offset points", ha="center", fontsize=8
-            )
+        for i, r in enumerate(ratio):  # above the frame, over the pair: never on a bar or a whisker
+            where = dict(xycoords=("data", "axes fraction"), xytext=(0, 2), textcoords="offset points")
+            ax.annotate(f"{r:.2f}x", (i, 1.0), ha="center", va="bottom", fontsize=8, **where)
         ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=8)
         ax.set_xlabel("sampler, without / with prediction")
-        ax.set_ylabel("seconds per query (median)")
-        ax.set_ylim(0, top.max() * 1.15)
-        ax.set_title(f"{title}; above a pair: median per-query with / without", fontsize=9)
+        ax.set_ylabel("ms per query (median)")
+        ax.set_title(f"{title}; above each pair: median per-query with / without", fontsize=9, pad=14)
         said.append(
             f"{title}: "
             + ", ".join(
-                f"{s} {table['total_s'][i, 0]:.3g} s without, {table['total_s'][i, 1]:.3g} s with "
+                f"{s} {ms_text(table['total_s'][i, 0])} ms without, {ms_text(table['total_s'][i, 1])} ms with "
                 f"(per query {ratio[i]:.2f}x)"
                 for i, s in enumerate(names)
             )
+            + cut_in_words(cut, [[f"{s} {m}" for m in MODES] for s in names], table["total_s_q3"], ax.get_ylim()[1])
         )
         keys = ("total_s", "total_s_q1", "total_s_q3", *STAGE_KEYS, "other_s")
         rows = tuple(
-            (f"{s}, {m}", *(f"{table[key][i, j]:.3g}" for key in keys))
+            (f"{s}, {m}", *(ms_text(table[key][i, j]) for key in keys))
             for i, s in enumerate(names)
             for j, m in enumerate(MODES)
         )
         columns = ("sampler, prediction", "median total", "first quartile", "third quartile", *STAGE_LABELS.values())
-        parts.append(Part(title, f"seconds per query; {said[-1]}", columns, rows))
-    fig.legend(*axes[0].get_legend_handles_labels(), loc="lower center", ncol=3, fontsize=8, frameon=False)
-    fig.tight_layout(rect=(0, 0.6 / fig.get_figheight(), 1, 1))  # the legend in the 0.6 in below the panels
-    text = "Median planning time per query without and with prediction, per sampler, split into the planner's stages"
-    text += " (hatched), with the median of the queries' own time ratios, with / without, above each pair"
+        parts.append(Part(title, f"ms per query; {said[-1]}", columns, rows))
+    shown = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # each entry once
+    order = sorted(shown, key=lambda label: label not in STAGE_LABELS.values())  # the stages first, in their order
+    fig.legend([shown[k] for k in order], order, loc="lower center", ncol=2, fontsize=8, frameon=False)
+    fig.tight_layout(rect=(0, 0.7 / fig.get_figheight(), 1, 1))  # the legend in the 0.7 in below the panels
+    text = "Median planning time per query in ms without and with prediction, per sampler, split into the planner's"
+    text += " stages (hatched), with the median of the queries' own time ratios, with / without, above each pair;"
+    text += " each panel on its own scale"
     return describe(fig, f"{text}. {'; '.join(said)}.", parts)
+
+
+MS = 1000.0  # the figure's unit, ms, per second
+CUT = 2.0  # a whisker reaching past CUT times a panel's tallest bar is cut at its top, its end written there
+
+
+def ms_text(value: float) -> str:
+    """A time in ms as the figure writes it: three digits, whole numbers from 100 on (``'4.35'``, ``'178'``)."""
+    return f"{value:.0f}" if value >= 100 else f"{value:.3g}"
+
+
+def _stage_table(planning: dict, names: list[str]) -> dict[str, np.ndarray]:
+    """The bars of :func:`stage_times` in ms, key -> ``(samplers, modes)``: the total's median and quartiles, each
+    stage's time (its share of an average query times the median total) and "other", the rest."""
+    table = {
+        key: MS * np.array([[planning[s][m][key] for m in MODES] for s in names])
+        for key in [f"total_s_{stat}" for stat in ("median", "q1", "q3")]
+    }
+    shares = {key: np.array([[planning[s][m][f"{key}_share"] for m in MODES] for s in names]) for key in STAGE_KEYS}
+    table["total_s"] = table["total_s_median"]
+    table.update({key: table["total_s"] * shares[key] for key in STAGE_KEYS})
+    table["other_s"] = np.maximum(table["total_s"] - sum(table[k] for k in STAGE_KEYS), 0.0)
+    return table
+
+
+def cut_in_words(cut: np.ndarray, labels, q3: np.ndarray, top: float) -> str:
+    """The whiskers cut at a panel's top ``top`` (ms), in words: ``cut``, ``q3`` and the bars' ``labels``, arrays of
+    the bars' shape; "" for none."""
+    ends = [f"{labels[i][j]} to {ms_text(q3[i, j])} ms" for i, j in zip(*np.nonzero(cut))]
+    return f"; whiskers cut at the top, {ms_text(top)} ms: " + ", ".join(ends) if ends else ""
 
 
 def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndarray:
     """:func:`stage_times`' bars at ``x (samplers, modes)``: the stages of ``table`` (key -> ``(samplers, modes)``)
-    stacked, hatched by stage, and a whisker from the total's first to third quartile; returns their tops."""
+    stacked, hatched by stage, and a whisker from the total's first to third quartile, the y axis up to the bars and
+    the whiskers within :data:`CUT` times the tallest bar; returns which whiskers run past it ``(samplers, modes)``,
+    drawn to the top with a triangle and their end written."""
     bottom = np.zeros_like(table["total_s"])
     for k, key in enumerate(STAGE_KEYS + ("other_s",)):
         ax.bar(
@@ -100,18 +133,45 @@ def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndar
             linewidth=0.5,
         )
         bottom = bottom + table[key]
-    low, high = table["total_s"] - table["total_s_q1"], table["total_s_q3"] - table["total_s"]
+    quartiles = (table["total_s_q1"], table["total_s_q3"])
+    return quartile_whiskers(ax, x, table["total_s"], *quartiles, tallest=bottom.max(), label="total: quartiles")
+
+
+def quartile_whiskers(
+    ax, x: np.ndarray, median: np.ndarray, q1: np.ndarray, q3: np.ndarray, *, tallest: float, label: str = "quartiles"
+) -> np.ndarray:
+    """Whiskers at ``x`` from the first to the third quartile ``q1``, ``q3`` (arrays of ``x``'s shape, through the
+    ``median``), the y axis up to the bars (``tallest``) and every whisker within :data:`CUT` times them; a whisker
+    reaching past that is drawn to the top, ends in a triangle there and its end is written beside it. Returns which
+    whiskers were cut (``x``'s shape). Times in ms, as the cut ends are written."""
+    top = 1.12 * max(tallest, q3[q3 <= CUT * tallest].max(initial=0.0))  # room above for a cut whisker's label
+    ax.set_ylim(0, top)
+    cut = q3 > top
     ax.errorbar(
         x.ravel(),
-        table["total_s"].ravel(),
-        yerr=[low.ravel(), high.ravel()],
+        median.ravel(),
+        yerr=[(median - q1).ravel(), (np.minimum(q3, top) - median).ravel()],
         fmt="none",
         ecolor=COLORS["ink"],
         capsize=3,
         linewidth=1,
-        label="total: quartiles",
+        label=label,
     )
-    return np.maximum(bottom, table["total_s_q3"])
+    if cut.any():
+        ax.plot(
+            x[cut],
+            np.full(cut.sum(), top),
+            "^",
+            color=COLORS["ink"],
+            markersize=6,
+            transform=offset_copy(ax.transData, ax.figure, y=-3.5, units="points"),  # inside the frame, tip at the top
+            label="quartile off the scale (its value written)",
+        )
+        for xc, end in zip(x[cut], q3[cut]):
+            ax.annotate(
+                ms_text(end), (xc, top), xytext=(5, -1), textcoords="offset points", ha="left", va="top", fontsize=8
+            )
+    return cut
 
 
 def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figure:
