@@ -119,15 +119,17 @@ def _clear_near_box(row, box, lower, cell, shape, threshold, limit, squares):
         across = _gap(box, lower, cell, 0, a) ** 2
         if across > limit:
             continue  # every cell of this layer is farther: the other axes only add
+        walked = -1.0  # the last column's squared gap across the last axis, whose run is (low, high)
         for b in range(first[1], last[1] + 1):
             column = across + _gap(box, lower, cell, 1, b) ** 2
             if column > limit:
                 continue
-            low, high = first[2], last[2]  # the run's ends: walk in while the cells are farther
-            while low <= high and column + squares[low] > limit:
-                low += 1
-            while high >= low and column + squares[high] > limit:
-                high -= 1
+            if column != walked:  # else the same sums as the last column's: the same run (most columns near a box)
+                walked, low, high = column, first[2], last[2]  # the run's ends: walk in while the cells are farther
+                while low <= high and column + squares[low] > limit:
+                    low += 1
+                while high >= low and column + squares[high] > limit:
+                    high -= 1
             if low <= high:
                 start = (a * shape[1] + b) * shape[2]
                 _clear(row, start + low, start + high)
