@@ -335,11 +335,33 @@ def test_each_cell_lists_exactly_the_boxes_that_touch_it_grown(name, grow):
         assert members[first[c] : first[c] + count[c]].tolist() == np.flatnonzero(touches[c]).tolist()
 
 
+def room_per_cell(boxes, lower, upper, cell, shape, dim) -> np.ndarray:
+    """``(C,)`` the far bits' rule in numpy, cell by cell: each cell's distance to the nearest of ``boxes (K, 2, 3)``
+    and to the walls of the region's first ``dim`` axes (a cell's gap to a box: per axis, summed squared, rooted)."""
+    start = [lower[i] + np.arange(shape[i]) * cell for i in range(3)]  # each layer's first coordinate, per axis
+    room = np.full(tuple(shape), np.inf)
+    for box in boxes:
+        gaps = [np.maximum(np.maximum(box[0, i] - (start[i] + cell), start[i] - box[1, i]), 0.0) ** 2 for i in range(3)]
+        room = np.minimum(room, np.sqrt(gaps[0][:, None, None] + gaps[1][None, :, None] + gaps[2][None, None, :]))
+    for axis in range(dim):
+        index = np.arange(shape[axis])
+        layer = np.minimum(index * cell, upper[axis] - lower[axis] - (index + 1) * cell)
+        room = np.minimum(room, np.expand_dims(layer, [a for a in range(3) if a != axis]))
+    return room.reshape(-1)
+
+
+def assert_bits_are(bits, expected):
+    """``bits (B, W)`` packed little-endian, as ``expected (B, C)``; the bits past the last cell 0."""
+    unpacked = np.unpackbits(bits.view(np.uint8), axis=1, bitorder="little")  # (B, 64 W)
+    np.testing.assert_array_equal(unpacked[:, : expected.shape[1]].astype(bool), expected)
+    assert not unpacked[:, expected.shape[1] :].any()
+
+
 @pytest.mark.parametrize("name", SCENARIOS)
 def test_the_far_bits_are_the_cells_farther_than_each_ball_from_boxes_and_walls(name):
-    """The far bits, packed in one compiled pass, against the same rule written in numpy, cell by cell: a cell's bit
-    for a ball is 1 where its distance to every box and to the region's walls exceeds the ball's radius."""
-    from toolkit.geometry import compiled, kernels
+    """The far bits, cleared near each wall and box, against the rule written in numpy, cell by cell: a cell's bit for
+    a ball is 1 where its distance to every box and to the region's walls exceeds the ball's radius."""
+    from toolkit.geometry import compiled
 
     scenario = scenarios.get(name)
     ws, robot = scenario.workspaces("query", 1, 5)[0], scenario.robot
@@ -347,14 +369,33 @@ def test_the_far_bits_are_the_cells_farther_than_each_ball_from_boxes_and_walls(
     lower, upper, boxes = np.zeros(3), np.zeros(3), np.zeros((len(ws.boxes), 2, 3))
     lower[: ws.dim], upper[: ws.dim], boxes[..., : ws.dim] = ws.lower, ws.upper, ws.boxes
     radii = np.unique(np.linalg.norm(robot.half_extents, axis=1))  # (B,)
-    clearance = kernels.cell_distances(boxes, lower, far.cell, far.shape, float(radii.max()) + far.cell)  # (C,)
-    walls = np.full(far.shape, np.inf)  # (nx, ny, nz) each cell's distance to the walls of the first dim axes
-    for axis in range(ws.dim):
-        i = np.arange(far.shape[axis])
-        layer = np.minimum(i * far.cell, upper[axis] - lower[axis] - (i + 1) * far.cell)
-        walls = np.minimum(walls, np.expand_dims(layer, [a for a in range(3) if a != axis]))
     margin = 1e-9 * float(np.max(upper - lower))
-    expected = np.minimum(clearance, walls.reshape(-1))[None] > radii[:, None] + margin  # (B, C)
-    bits = np.unpackbits(far.bits.view(np.uint8), axis=1, bitorder="little")[:, : expected.shape[1]]  # (B, C)
-    assert bits.shape == expected.shape and 0 < expected.sum() < expected.size
-    np.testing.assert_array_equal(bits.astype(bool), expected)
+    room = room_per_cell(boxes, lower, upper, far.cell, far.shape, ws.dim)  # (C,)
+    expected = room[None] > radii[:, None] + margin  # (B, C)
+    assert 0 < expected.sum() < expected.size
+    assert_bits_are(far.bits, expected)
+
+
+@pytest.mark.parametrize("seed", range(4))
+def test_the_far_bits_hold_to_the_rule_within_a_rounding_error_of_the_radius(seed):
+    """Balls whose radius (plus the margin) lies within a rounding error of some cell's distance to a box or a wall,
+    in 2D and 3D grids with boxes partly outside the region: the bits compare squared distances with the largest
+    square whose root is at most the radius, and must decide every cell as the rule's square roots do."""
+    from toolkit.geometry import compiled
+
+    rng = np.random.default_rng(seed)
+    dim = 2 + seed % 2
+    lower, upper = np.zeros(3), np.zeros(3)
+    upper[:dim] = rng.uniform(2.0, 4.0, dim)
+    cell = float(rng.uniform(0.1, 0.2))
+    shape = np.ones(3, dtype=np.int64)
+    shape[:dim] = np.ceil(upper[:dim] / cell).astype(np.int64) + 1
+    boxes = np.sort(rng.uniform(-0.5, upper + 0.5, (12, 2, 3)), axis=1)  # (K, 2, 3)
+    boxes[..., dim:] = 0.0
+    room = room_per_cell(boxes, lower, upper, cell, shape, dim)  # (C,)
+    margin = 1e-9 * float(np.max(upper - lower))
+    near = rng.choice(np.unique(room[(room > 0) & (room < 1)]), 8) - margin  # radii that some cell's room matches
+    radii = np.unique(np.concatenate([near, np.nextafter(near, 0.0), np.nextafter(near, 1.0)]))  # (B,)
+    expected = room[None] > radii[:, None] + margin  # (B, C)
+    assert np.any(room[None] == radii[:, None] + margin)  # ties, decided as not far
+    assert_bits_are(compiled.far_bits(boxes, lower, upper, cell, shape, radii, dim), expected)

@@ -16,7 +16,8 @@ Reading order:
    ``MeshChecker`` for meshes;
 7. :mod:`toolkit.geometry.compiled` and :mod:`toolkit.geometry.kernels` — ``CompiledChecker``:
    kinematics and separating axes compiled with numba, one loop over configurations, the default; its
-   kinematics in :mod:`toolkit.geometry.frame_kernels`, their sines and cosines in :mod:`toolkit.geometry.trig`;
+   kinematics in :mod:`toolkit.geometry.frame_kernels`, their sines and cosines in :mod:`toolkit.geometry.trig`,
+   the far bits that settle most links (built with the checker) in :mod:`toolkit.geometry.far_kernels`;
 8. :mod:`toolkit.geometry.compiled_mesh` and :mod:`toolkit.geometry.mesh_kernels` — ``CompiledMeshChecker``:
    the same against a triangle mesh (triangle-box separating axes, inside tests from cells classified once);
 9. :mod:`toolkit.geometry.collision` — all of them in one place, and ``exact_checker``, which picks the

@@ -16,6 +16,7 @@ it; importing this module compiles nothing.
 
 from __future__ import annotations
 
+import math
 from typing import Any, NamedTuple
 
 import numpy as np
@@ -186,13 +187,25 @@ def far_bits(
     the region ``lower`` to ``upper``, its first ``dim`` axes walled) as bits: 1 where the ball round any point of
     the cell lies in the region and farther than its radius from every box of ``obstacles (K, 2, 3)``. Then so does
     a link box that the ball holds, and the box's axis-aligned bounds (no wider than the ball along any axis)."""
-    from toolkit.geometry import kernels
+    from toolkit.geometry import far_kernels  # numba loads (or compiles) on first use, not on import
 
     margin = 1e-9 * float(np.max(upper - lower))  # above rounding in the cell a centre falls in
-    cap = float(np.max(radii)) + cell  # nearer cells than this are all the bits need
-    clearance = kernels.cell_distances(obstacles, lower, cell, shape, cap)  # (C,)
-    radii = np.ascontiguousarray(radii, dtype=np.float64)  # (B,)
-    return kernels.pack_far_bits(clearance, lower, upper, cell, shape, radii, dim, margin)  # (B, W) uint64
+    thresholds = np.asarray(radii, dtype=np.float64) + margin  # (B,)
+    limits = np.array([square_limit(t) for t in thresholds])  # (B,)
+    boxes = np.ascontiguousarray(obstacles, dtype=np.float64)
+    shape = np.ascontiguousarray(shape, dtype=np.int64)
+    return far_kernels.far_bits(boxes, lower, upper, float(cell), shape, thresholds, limits, dim)  # (B, W) uint64
+
+
+def square_limit(threshold: float) -> float:
+    """The largest float whose square root is at most ``threshold``: a distance computed as ``sqrt(gap)`` exceeds
+    ``threshold`` exactly where ``gap`` exceeds it, so the far bits compare squares and take no roots."""
+    limit = threshold * threshold
+    while math.sqrt(limit) > threshold:
+        limit = math.nextafter(limit, -math.inf)
+    while math.sqrt(math.nextafter(limit, math.inf)) <= threshold:
+        limit = math.nextafter(limit, math.inf)
+    return limit
 
 
 def robot_arrays(robot: BoxRobot) -> Robot:

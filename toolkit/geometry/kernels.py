@@ -314,50 +314,6 @@ def clearance_bounds(Q, robot, world, level_links, cap, clearance):
         clearance[n] = max(bound, 0.0)
 
 
-@njit(cache=True)
-def cell_distances(bounds, lower, cell, shape, cap):
-    """``(C,)`` per cell of a grid (``lower (3,)``, cubes of side ``cell``, ``shape (3,)``), the distance from the cell
-    to the nearest of the boxes ``bounds (K, 2, 3)`` (min / max corners), or ``cap`` where none lies nearer."""
-    clearance = np.full(shape[0] * shape[1] * shape[2], cap)
-    block = np.zeros((2, 3), np.int64)
-    for k in range(len(bounds)):
-        for i in range(3):  # the cells within cap of box k
-            for end, value in enumerate((bounds[k, 0, i] - cap, bounds[k, 1, i] + cap)):
-                block[end, i] = min(max(int(np.floor((value - lower[i]) / cell)), 0), shape[i] - 1)
-        for a in range(block[0, 0], block[1, 0] + 1):
-            for b in range(block[0, 1], block[1, 1] + 1):
-                for c in range(block[0, 2], block[1, 2] + 1):
-                    gap = 0.0
-                    for i, index in enumerate((a, b, c)):
-                        start = lower[i] + index * cell
-                        gap += max(bounds[k, 0, i] - (start + cell), start - bounds[k, 1, i], 0.0) ** 2
-                    flat = (a * shape[1] + b) * shape[2] + c
-                    clearance[flat] = min(clearance[flat], np.sqrt(gap))
-    return clearance
-
-
-@njit(cache=True)
-def pack_far_bits(clearance, lower, upper, cell, shape, radii, dim, margin):
-    """``(B, W)`` words of bits, per ball radius ``radii (B,)``: bit ``c`` is 1 where cell ``c`` of the grid (``lower
-    (3,)``, cubes of side ``cell``, ``shape (3,)``; ``clearance (C,)`` its distance to the nearest box) lies farther
-    than the radius (plus ``margin``) from every box and from the walls of its first ``dim`` axes (``upper (3,)``).
-    One pass over the cells, words little-endian: cell ``c`` is bit ``c % 64`` of word ``c // 64``."""
-    n = shape[0] * shape[1] * shape[2]
-    words = np.zeros((len(radii), (n + 63) // 64), np.uint64)
-    for a in range(shape[0]):
-        for b in range(shape[1]):
-            for c in range(shape[2]):
-                flat = (a * shape[1] + b) * shape[2] + c
-                room = clearance[flat]
-                for i, index in enumerate((a, b, c)):  # the walls: the region's bounds along its first dim axes
-                    if i < dim:
-                        room = min(room, index * cell, upper[i] - lower[i] - (index + 1) * cell)
-                for r in range(len(radii)):
-                    if room > radii[r] + margin:
-                        words[r, flat >> 6] |= np.uint64(1) << np.uint64(flat & 63)
-    return words
-
-
 @njit(cache=True, inline="always")
 def _block_cells(lo, hi, shape, cells):
     """Fill ``cells`` with the flat indices of the block of cells from ``lo`` to ``hi (3,)``; returns their number."""
