@@ -163,8 +163,9 @@ def chapter_04() -> dict:
 def eager_counts(with_samples: str = "0", with_connection: str = "122.7") -> str:
     """Section 5's table of Algorithm 1's stages and checks, as the chapter prints it (a quick run's numbers)."""
     return (
-        "| mode | sampling, ms | connection (edges), ms | query, ms | total, ms | roadmap nodes | samples checked exactly "
-        "| samples the network decided | edge points checked exactly |\n| --- |" + " ---: |" * 8 + "\n"
+        "| mode | sampling, ms | connection (edges), ms | query, ms | total, ms | roadmap nodes "
+        "| samples checked exactly | samples the network decided | edge points checked exactly |\n"
+        "| --- |" + " ---: |" * 8 + "\n"
         "| without | 0.2 | 237.6 | 14.8 | 252.8 | 308 | 400 | 0 | 157,612 |\n"
         f"| with | 1.0 | {with_connection} | 2.9 | 135.1 | 305 | {with_samples} | 400 | 135,922 |"
     )
@@ -232,6 +233,7 @@ def test_the_answer_chapter_04_and_05_state_holds_in_docs_results():
     assert not [s for s, r in strong["2ds"]["total"].items() if findings.time_verdict(r) == findings.SAVES]
     mlp = recorded.table("paper", "MLP accuracy")["3dc7"]
     assert recorded.ours(mlp["Seen TNR"]) == 0 and recorded.ours(mlp["Seen TPR"]) == 1
+
     def means(preset, key):  # Table 3's improvement as time with / without, per sampler
         table = recorded.table(preset, "time improvement")[key]
         return {c.split()[1]: 1 - recorded.ours(v) for c, v in table.items() if c.startswith("Total")}
