@@ -135,7 +135,7 @@ def tables(nb) -> list[tuple[list[str], list[list[str]]]]:
                 line for line in output.get("data", {}).get("text/markdown", "").splitlines() if line.startswith("|")
             ]
             rows = [[c.strip() for c in line.strip().strip("|").split("|")] for line in lines]
-            if len(rows) >= 3 and set(rows[1]) <= {"---"}:
+            if len(rows) >= 3 and {c.strip(":") for c in rows[1]} <= {"---"}:  # "---:" aligns a column right
                 found.append((rows[0], rows[2:]))
     return found
 
@@ -204,6 +204,33 @@ def chapter_04(nb) -> list[str]:
         problems.append(f"04: the prose says a network call costs more than the default exact check: {throughput}")
     if "Against the default exact checker the network was the cheaper check at" not in " ".join(texts(nb)):
         problems.append("04: the crossover's counts (findings.crossover_counts) are not displayed")
+    problems += _eager_counts(found)
+    if not re.search(r"This run took \d+ s from the first cell to this one, at a load average of", " ".join(texts(nb))):
+        problems.append("04: the run's time is not printed with its load")
+    return problems
+
+
+EAGER = ("samples checked exactly", "samples the network decided", "edge points checked exactly", "total, ms")
+
+
+def _eager_counts(found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
+    """Section 5's prose: the sample checks prediction takes over are a small fraction (under 5 %) of Algorithm 1's
+    exact checks, nearly all edge points, and the connection stage is most of its time (over half), in both modes."""
+    counted = [(header, rows) for header, rows in found if set(EAGER) <= set(header)]
+    if not counted:
+        return ["04: section 5's counts of Algorithm 1's checks are not displayed"]
+    header, rows = counted[0]
+
+    def number(row, column):
+        return float(row[header.index(column)].replace(",", ""))
+
+    problems = []
+    for row in rows:
+        samples = number(row, "samples checked exactly") + number(row, "samples the network decided")
+        if not samples < 0.05 * number(row, "edge points checked exactly"):
+            problems.append(f"04: Algorithm 1 {row[0]}: the sample checks are no small fraction of the edge points")
+        if not number(row, "connection (edges), ms") > 0.5 * number(row, "total, ms"):
+            problems.append(f"04: Algorithm 1 {row[0]}: the connection stage is not most of its time")
     return problems
 
 

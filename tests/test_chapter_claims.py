@@ -155,6 +155,19 @@ def chapter_04() -> dict:
         "MD:" + findings.planning_table(planning),
         "MD:" + findings.throughput_table({"2DS": rates, "3DC-7": rates}, 10_000),
         "MD:" + findings.crossover_table(crossed) + "\n\n" + findings.crossover_counts(crossed),
+        "MD:" + eager_counts(),
+        "MD:This run took 49 s from the first cell to this one, at a load average of 2.1 on 2 cores.",
+    )
+
+
+def eager_counts(with_samples: str = "0", with_connection: str = "122.7") -> str:
+    """Section 5's table of Algorithm 1's stages and checks, as the chapter prints it (a quick run's numbers)."""
+    return (
+        "| mode | sampling, ms | connection (edges), ms | query, ms | total, ms | roadmap nodes "
+        "| samples checked exactly | samples the network decided | edge points checked exactly |\n"
+        "| --- |" + " ---: |" * 8 + "\n"
+        "| without | 0.2 | 237.6 | 14.8 | 252.8 | 308 | 400 | 0 | 157,612 |\n"
+        f"| with | 1.0 | {with_connection} | 2.9 | 135.1 | 305 | {with_samples} | 400 | 135,922 |"
     )
 
 
@@ -185,7 +198,7 @@ def test_chapter_04_fails_where_the_network_is_the_cheaper_check_its_prose_says_
 
 def test_chapter_04_fails_without_its_tables_or_with_pre_wrapped_lines():
     nb = chapter_04()
-    nb["cells"].pop()
+    nb["cells"].pop(2)  # the crossover's
     nb["cells"].append(
         executed("3DC-7, total time with / without prediction against the lazy exact\n    planner")["cells"][0]
     )
@@ -193,6 +206,21 @@ def test_chapter_04_fails_without_its_tables_or_with_pre_wrapped_lines():
         "04: the crossover's table (findings.crossover_table) is not displayed",
         "04: pre-wrapped generated lines",
         "04: the crossover's counts (findings.crossover_counts) are not displayed",
+    ]
+
+
+def test_chapter_04_fails_where_section_5s_counts_contradict_its_prose():
+    nb = chapter_04()
+    nb["cells"][3] = executed("MD:" + eager_counts(with_samples="9,000", with_connection="50.0"))["cells"][0]
+    assert problems(CH04, nb) == [
+        "04: Algorithm 1 with: the sample checks are no small fraction of the edge points",
+        "04: Algorithm 1 with: the connection stage is not most of its time",
+    ]
+    nb = chapter_04()
+    del nb["cells"][3:]
+    assert problems(CH04, nb) == [
+        "04: section 5's counts of Algorithm 1's checks are not displayed",
+        "04: the run's time is not printed with its load",
     ]
 
 
@@ -205,11 +233,21 @@ def test_the_answer_chapter_04_and_05_state_holds_in_docs_results():
     assert not [s for s, r in strong["2ds"]["total"].items() if findings.time_verdict(r) == findings.SAVES]
     mlp = recorded.table("paper", "MLP accuracy")["3dc7"]
     assert recorded.ours(mlp["Seen TNR"]) == 0 and recorded.ours(mlp["Seen TPR"]) == 1
-    for key in ("3dc7", "2ds"):  # "saved time ... for one sampler of four" in each scenario, against Algorithm 1
-        means = {c: 1 - recorded.ours(v) for c, v in recorded.table("paper", "time improvement")[key].items()}
-        said = [findings.time_verdict(r) for c, r in means.items() if c.startswith("Total")]
-        assert said.count(findings.SAVES) == 1, (key, said)
-    assert sorted(said) == sorted([findings.SAVES] + [findings.COSTS] * 3), said  # 2DS: a cost for the other three
+
+    def means(preset, key):  # Table 3's improvement as time with / without, per sampler
+        table = recorded.table(preset, "time improvement")[key]
+        return {c.split()[1]: 1 - recorded.ours(v) for c, v in table.items() if c.startswith("Total")}
+
+    for key in ("3dc7", "3dc9", "3do"):  # "faster on average for three samplers of four in each 3D scenario"
+        assert [s for s, r in means("paper", key).items() if r < 1] == ["BS", "OB", "G"], (key, means("paper", key))
+    said = [findings.time_verdict(r) for r in means("paper", "3dc7").values()]  # some gains "the table calls a tie"
+    assert findings.TIES in said and findings.SAVES in said, said
+    said = [findings.time_verdict(r) for r in means("paper", "2ds").values()]
+    assert said.count(findings.COSTS) == 3, said  # 2DS: "it costs time for three samplers of four"
+    # "on the same recorded 100 queries, the mean can say prediction saves most of the time while the median says
+    # it is a tie" (and docs/results.md's 2DS OB example)
+    strong_means, strong_medians = means("strong", "2ds"), strong["2ds"]["total"]
+    assert [s for s in SAMPLERS if strong_means[s] < 0.5 and findings.time_verdict(strong_medians[s]) == findings.TIES]
     paper_medians = recorded.median_ratios("paper")["3dc7"]["total"]
     assert all(findings.time_verdict(r) == findings.COSTS for r in paper_medians.values())
     # 04, section 6: the paper's means saved for three 2DS samplers of four and two 3DC-7 ones (five of eight, three
