@@ -50,9 +50,10 @@ RATIO = re.compile(r"(\d[\d,]*)x")  # a ratio as section 3 of chapter 01 prints 
 
 
 def chapter_01(nb) -> list[str]:
-    """Section 3's table of checker speeds against the words the chapter uses for it: in 3D, FCL's time "about ten to
-    several tens of times" the compiled checker's (7 to 99 times); in 2D the point robot's numpy test the fastest, FCL's
-    time "about a hundred times as much or more" (at least 70 times)."""
+    """Section 3's table of checker speeds against the words the chapter uses for it: in 3D, FCL's time "roughly ten to
+    a hundred times" the compiled checker's (6 to 149 times: a busy machine spreads them, review r7b and quick runs
+    beside other work printed 9 to 103); in 2D the point robot's numpy test the fastest, FCL's time "a hundred times as
+    much or more" (at least 80 times)."""
     ratios = {
         row[0]: (row[-2], row[-1])
         for header, rows in tables(nb)
@@ -64,10 +65,14 @@ def chapter_01(nb) -> list[str]:
     problems = []
     for name, (compiled, fastest) in ratios.items():
         times = [int(m.replace(",", "")) for m in RATIO.findall(compiled + " " + fastest)]
-        if name == "2ds" and ("PointRobotChecker" not in fastest or times[1] < 70):
-            problems.append(f"01: 2D, FCL against the fastest: {fastest}, not about a hundred times the point robot's")
-        if name != "2ds" and not 7 <= times[0] < 100:
-            problems.append(f"01: {name}, FCL against the compiled checker: {compiled}, not ten to several tens")
+        if name == "2ds" and ("PointRobotChecker" not in fastest or times[1] < 80):
+            problems.append(
+                f"01: 2D, FCL against the fastest: {fastest}, not a hundred times the point robot's or more"
+            )
+        if name != "2ds" and not 6 <= times[0] < 150:
+            problems.append(
+                f"01: {name}, FCL against the compiled checker: {compiled}, not roughly ten to a hundred times"
+            )
     return problems
 
 
