@@ -85,6 +85,17 @@ CONTRADICTED = (  # sentences that executed pages contradicted (issue 37), in th
     "4.4 units",  # the slider's default is computed: 10 % of the diagonal
     "a quick run's few queries may show",  # on a full-size page
     "even where the model doubts it",  # the model called no frame colliding
+    "tens of times more through python-fcl than",  # issue 45, review r7b: in 2D it printed 218x
+    "a few times to tens of times faster",  # the ratios it printed were 22-34x
+    "costs about as much per configuration as the compiled one",  # chapter 04 measured 2.25x and 18x dearer
+    "orientation and joints matter everywhere",  # the chain9 slice was free over most of joint2's range
+    "identical unit cubes",  # the paper says "same shape and size", never "unit"
+    "rebuild the 2DS (2D simple) rows",  # chapter 03 rebuilds only Table 2's unseen columns
+    "Its CAE memorizes its training grids",  # the `paper` preset's CAE: 89.2 % seen, "all free" 88.6 %
+    "drawn as the paper draws its unseen test",  # a reading, and the paper's own rates imply 60 % valid
+    "The task itself is learnable: our `strong` preset",  # its MLP does not read z
+    "furniture types (desks, shelves",  # the paper names no furniture: "small box, big box, .."
+    "against the best exact planner here, on 3DC-7, with no sampler.",  # chapter 05's closing, a fragment
 )
 
 
@@ -269,8 +280,10 @@ def test_the_answer_chapter_04_and_05_state_holds_in_docs_results():
         assert "prediction saved time with none of them" in text or "did not save planning time" in text, name
 
 
-def chapter_03(paper_blind: float, sentence_blind: float, sweep: str = 'no threshold beats "always valid"') -> dict:
-    rows = ["| the paper's Table 2, 2DS unseen | validity-blind | 88% | 90% | 85% |"]
+def chapter_03(
+    paper_blind: float, sentence_blind: float, sweep: str = 'no threshold beats "always valid"', share: int = 60
+) -> dict:
+    rows = ["| the paper's Table 2, 2DS unseen | not stated | 88% | 90% | 85% |"]
     rows += [
         f"| `{p}` preset, 2DS unseen | {k} | {a:.0%} | 10% | 90% |"
         for p, k, a in (
@@ -289,7 +302,13 @@ def chapter_03(paper_blind: float, sentence_blind: float, sweep: str = 'no thres
     }
     always = {"balanced": 0.5, "validity-blind": 0.86}
     lines = [findings.describe_accuracy(f"{p}, {k}", a, always[k]) for (p, k), a in said.items()]
-    return executed("\n".join(lines), f"the model calls every sample valid ... {sweep}.", "MD:" + "\n".join(rows))
+    implied = f"share of valid samples the paper's accuracy, TPR and TNR imply, if its accuracy pools them: {share}%"
+    return executed(
+        "\n".join(lines),
+        f"the model calls every sample valid ... {sweep}.",
+        "MD:" + "\n".join(rows),
+        f"{implied}; here, validity-blind: 86%",
+    )
 
 
 def test_chapter_03_passes_when_its_sentences_carry_the_tables_accuracies():
@@ -310,6 +329,56 @@ def test_chapter_03_fails_where_its_closing_verdict_or_section_6_would_not_hold(
     ]
     assert problems(CH03, chapter_03(0.25, 0.25, sweep='2 points above "always valid"')) == [
         '03: section 6 says no threshold beats "always valid"; the sweep\'s sentence says one does'
+    ]
+    for share in (90, 50):  # the prose: fewer valid than among validity-blind samples, more than among balanced ones
+        assert problems(CH03, chapter_03(0.25, 0.25, share=share)) == [
+            "03: the paper's implied share of valid samples is not between balanced and validity-blind"
+        ]
+
+
+# ---- chapter 01: the checker-cost words against section 3's ratios ----
+
+
+def chapter_01(ratios: dict[str, float], fastest_2d: str = "PointRobotChecker") -> dict:
+    """A chapter 01 whose section 3 printed FCL's time as ``ratios[name]`` times the fastest checker's; the compiled
+    checker the fastest in 3D."""
+    rows = [
+        "| scenario | FCL checks / s | compiled checks / s | point-robot checks / s | FCL's time / compiled's "
+        "| FCL's time / the fastest's (which) |",
+        "| --- | --- | --- | --- | --- | --- |",
+    ]
+    for name, ratio in ratios.items():
+        fastest = fastest_2d if name == "2ds" else "CompiledChecker"
+        compiled = 30 if name == "2ds" else ratio
+        rows.append(f"| {name} | 1,000 | 2,000 | — | {compiled:.0f}x | {ratio:,.0f}x ({fastest}) |")
+    return executed("MD:" + "\n".join(rows))
+
+
+CH01 = "01_workspaces_and_collision.ipynb"
+MEASURED_01 = {"2ds": 218, "3do": 22, "3dc7": 28, "3dc9": 32}  # the full-size site of review r7b
+
+
+def test_chapter_01_passes_the_ratios_its_words_describe():
+    assert problems(CH01, chapter_01(MEASURED_01)) == []
+    assert problems(CH01, chapter_01({"2ds": 127, "3do": 9, "3dc7": 15, "3dc9": 21})) == []  # quick, beside load
+    assert problems(CH01, chapter_01({"2ds": 132, "3do": 59, "3dc7": 62, "3dc9": 103})) == []  # quick, busier
+
+
+def test_chapter_01_fails_ratios_its_words_do_not_describe():
+    assert problems(CH01, chapter_01({**MEASURED_01, "3do": 5})) == [
+        "01: 3do, FCL against the compiled checker: 5x, not roughly ten to a hundred times"
+    ]
+    assert problems(CH01, chapter_01({**MEASURED_01, "3dc9": 160})) == [
+        "01: 3dc9, FCL against the compiled checker: 160x, not roughly ten to a hundred times"
+    ]
+    assert problems(CH01, chapter_01({**MEASURED_01, "2ds": 60})) == [
+        "01: 2D, FCL against the fastest: 60x (PointRobotChecker), not a hundred times the point robot's or more"
+    ]
+    assert problems(CH01, chapter_01(MEASURED_01, fastest_2d="CompiledChecker")) == [
+        "01: 2D, FCL against the fastest: 218x (CompiledChecker), not a hundred times the point robot's or more"
+    ]
+    assert problems(CH01, chapter_01({"3do": 22})) == [
+        "01: section 3's table of checker speeds lacks a scenario: ['3do']"
     ]
 
 

@@ -188,7 +188,10 @@ def animation_summary(
 
 def _path_words(path: np.ndarray) -> str:
     length = float(np.sum(np.linalg.norm(np.diff(path, axis=0), axis=1)))
-    return f"Path: {len(path)} configurations, length {length:.2f} in configuration space."
+    return (
+        f"Path: {len(path)} configurations, length {length:.2f} in configuration space "
+        "(positions in workspace units and angles in radians, in one Euclidean sum)."
+    )
 
 
 def probability_colors(probability: npt.ArrayLike) -> np.ndarray:
