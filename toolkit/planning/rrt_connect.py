@@ -141,7 +141,14 @@ def rrt_connect(problem: Problem, rng: np.random.Generator, params: RRTConnectPa
 class Steering:
     """What a move reads besides its tree and target, as :func:`toolkit.planning.rrt_kernels.steer` reads it: the
     robot's motion weights and angles, the edge lengths, and the grid's buffers ``points (G, dof)`` and ``steps
-    (G,)``, grown when a connection needs more."""
+    (G,)``, grown when a connection needs more.
+
+    Every argument of ``steer`` is laid out alike in every query (made here, by :class:`Tree` and by
+    :func:`rrt_connect`: float64, int64 and bool arrays, C-ordered and writable), so one compiled version serves
+    them all: found once a process (``compiled.entry_point``) and then called without numba's dispatcher, which
+    costs more than the call."""
+
+    compiled: ClassVar = None  # steer's compiled version, once known
 
     def __init__(self, problem: Problem, params: RRTConnectParams):
         robot = problem.robot
@@ -151,7 +158,6 @@ class Steering:
         self.coarse = int(params.coarse)
         self.points = np.empty((4 * (int(params.range) + 1), robot.dof))  # (G, dof) a few extensions' grids
         self.steps = np.empty(len(self.points), dtype=np.int64)  # (G,)
-        self._steer = None  # the compiled version for these arguments' layout, once known (compiled.entry_point)
 
     def __call__(self, tree: Tree, targets: np.ndarray, row: int, connect: bool) -> tuple[int, int, int, int, bool]:
         """``rrt_kernels.steer`` of ``tree`` towards ``targets[row]``: ``(near, segments, per, c, reached)``, the
@@ -159,14 +165,14 @@ class Steering:
         while True:
             args: tuple = (tree.nodes, tree.n, tree.cut, targets, row, self.weights, self.wraps, self.reach)
             args += (self.resolution, self.coarse, connect, self.points, self.steps)
-            if self._steer is None:
+            if Steering.compiled is None:
                 from toolkit.geometry.compiled import entry_point
                 from toolkit.planning import rrt_kernels  # numba loads (or compiles) on first use, not on import
 
                 near, segments, per, c, reached = rrt_kernels.steer(*args)
-                self._steer = entry_point(rrt_kernels.steer, args)
+                Steering.compiled = entry_point(rrt_kernels.steer, args)
             else:
-                near, segments, per, c, reached = self._steer(*args)
+                near, segments, per, c, reached = Steering.compiled(*args)
             if c >= 0:
                 return near, segments, per, c, reached
             self.points = np.empty((2 * segments * per, len(self.weights)))  # too few rows: room for twice as many

@@ -6,8 +6,8 @@ numpy the same work took about 40 us a move in a dozen small calls (a tree holds
 cost was most of it: ``docs/benchmarks.md``), more than the checker's answer for its points; here it is one call of
 a few microseconds. The arithmetic is numpy's, operation for operation (``robot.wrap``'s ``mod`` bit for bit), but
 for the order in which the motion bound ``sum |step| * weight`` adds up (numpy leaves it to BLAS): a seed plans the
-path it planned in numpy up to rounding (the race's 180 queries in 3D: the same trees and checks, coordinates
-within 1e-14).
+path it planned in numpy up to rounding (the race's 180 queries in 3D: the same paths to 1e-14, and in all but one
+the same checks; that one made one more).
 
 ``cache=True`` keeps the compiled code on disk like the checker's kernels (:mod:`toolkit.geometry.kernels`): a
 process loads it on its first move, which a timed run makes before its clock starts (the untimed warm-up solve of
