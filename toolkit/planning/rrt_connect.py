@@ -10,7 +10,9 @@ A move, an extension or a whole connection, is a straight segment from the tree'
 exactly at the local planner's grid (``local_planner.step_counts`` steps of ``resolution``, the end included)
 *coarse to fine* in two checker calls: first every ``coarse``-th point and the nodes, then the rest before the first
 point that failed, so that a move into an obstacle usually stops after the first, small call. The nodes before the
-first invalid point join the tree (an extension that meets an obstacle adds nothing: the tree is *trapped*). OMPL's
+first invalid point join the tree (an extension that meets an obstacle adds nothing: the tree is *trapped*). The
+move up to its checks (the nearest node, the segment, its grid in that order) is one compiled call
+(:mod:`toolkit.planning.rrt_kernels`), the rest a few lines of Python around the two checker calls. OMPL's
 RRTConnect (Şucan, Moll, Kavraki 2012) asks its checker one configuration a call and a connection one extension at a
 time; here a call holds tens of configurations, since a call's fixed cost outweighs many configurations'
 (``docs/benchmarks.md``, "How do our planners compare with OMPL's?").
@@ -64,7 +66,7 @@ class Tree:
         self.nodes = np.zeros((capacity, len(root)))
         self.parent = np.full(capacity, -1)
         self.cut = np.zeros(capacity, dtype=bool)
-        self.nodes[0], self.n, self.n_cut = root, 1, 0
+        self.nodes[0], self.n = root, 1
 
     def add(self, q: np.ndarray, parent: int) -> int:
         if self.n == len(self.nodes):  # full: twice the room
@@ -74,16 +76,6 @@ class Tree:
         self.nodes[self.n], self.parent[self.n] = q, parent
         self.n += 1
         return self.n - 1
-
-    def nearest(self, robot, target: np.ndarray) -> tuple[int, np.ndarray, float]:
-        """The uncut node nearest ``target`` by ``robot.motion_bound``: its index, the step from it to ``target``
-        ``(dof,)`` (angles the short way round) and that step's motion bound."""
-        steps = robot.wrap(target - self.nodes[: self.n])  # (n, dof) from each node to target
-        distance = np.abs(steps) @ robot.motion_weights  # (n,)
-        if self.n_cut:
-            distance[self.cut[: self.n]] = np.inf
-        near = int(distance.argmin())
-        return near, steps[near], float(distance[near])
 
     def branch(self, i: int) -> list[int]:
         """Node indices from ``i`` up to the root."""
@@ -98,7 +90,6 @@ class Tree:
         while True:  # a child of a cut node is cut: spread down the tree until nothing changes
             spread = self.cut[: self.n] | (self.parent[: self.n] >= 0) & self.cut[np.maximum(self.parent[: self.n], 0)]
             if (spread == self.cut[: self.n]).all():
-                self.n_cut = int(self.cut[: self.n].sum())
                 return
             self.cut[: self.n] = spread
 
@@ -116,18 +107,18 @@ def rrt_connect(problem: Problem, rng: np.random.Generator, params: RRTConnectPa
         if not ok:
             raise ValueError(f"{name} configuration {np.round(q, 4).tolist()} is in collision or out of bounds")
     trees = (Tree(ends[0]), Tree(ends[1]))
-    grids = Grids(params.coarse)
+    steering = Steering(problem, params)
     stats: dict[str, float] = {"iterations": 0, "cuts": 0, "verify_checks": 0}
     path = None
     for iteration in range(params.max_iterations):
         stats["iterations"] = iteration + 1
-        if iteration % SAMPLES == 0:
-            samples = robot.sample(rng, SAMPLES)  # (SAMPLES, dof) drawn a block at a time
+        if iteration % SAMPLES == 0:  # (SAMPLES, dof) drawn a block at a time, as the compiled move reads them
+            samples = np.array(robot.sample(rng, SAMPLES), dtype=np.float64, order="C")
         grow, other = (trees[0], trees[1]) if iteration % 2 == 0 else (trees[1], trees[0])
-        new, _ = move(problem, params, grids, grow, samples[iteration % SAMPLES], connect=False)
+        new, _ = move(problem, steering, grow, samples, iteration % SAMPLES, connect=False)
         if new < 0:
             continue
-        met, reached = move(problem, params, grids, other, grow.nodes[new], connect=True)  # the other tree follows
+        met, reached = move(problem, steering, other, grow.nodes, new, connect=True)  # the other tree follows
         if not reached:
             continue
         meeting = (new, met) if grow is trees[0] else (met, new)  # the same configuration, in either tree
@@ -147,54 +138,69 @@ def rrt_connect(problem: Problem, rng: np.random.Generator, params: RRTConnectPa
     return PlanResult(True, path, stats, RRTConnect.name, roadmap)
 
 
-class Grids:
-    """A move's grid, ``segments`` edges of ``per`` steps each, in the order its points are checked: the *coarse*
-    ones first (every ``coarse``-th step and every edge's end), then the rest, each part in step order. Made once per
-    shape and kept: a query asks for few."""
+class Steering:
+    """What a move reads besides its tree and target, as :func:`toolkit.planning.rrt_kernels.steer` reads it: the
+    robot's motion weights and angles, the edge lengths, and the grid's buffers ``points (G, dof)`` and ``steps
+    (G,)``, grown when a connection needs more.
 
-    def __init__(self, coarse: int):
-        self.coarse = coarse
-        self._made: dict[tuple[int, int], tuple[np.ndarray, int]] = {}
+    Every argument of ``steer`` is laid out alike in every query (made here, by :class:`Tree` and by
+    :func:`rrt_connect`: float64, int64 and bool arrays, C-ordered and writable), so one compiled version serves
+    them all: found once a process (``compiled.entry_point``) and then called without numba's dispatcher, which
+    costs more than the call."""
 
-    def __call__(self, segments: int, per: int) -> tuple[np.ndarray, int]:
-        """``(steps (n,), c)``: the grid's steps ``1..n`` (``n = segments * per``) in that order, the first ``c`` of
-        them the coarse ones."""
-        if (segments, per) not in self._made:
-            k = np.arange(1, segments * per + 1)  # the grid's steps, the end included
-            coarse = (k % self.coarse == 0) | (k % per == 0)
-            self._made[segments, per] = (np.concatenate([k[coarse], k[~coarse]]), int(coarse.sum()))
-        return self._made[segments, per]
+    compiled: ClassVar = None  # steer's compiled version, once known
+
+    def __init__(self, problem: Problem, params: RRTConnectParams):
+        robot = problem.robot
+        self.weights = np.array(robot.motion_weights, dtype=np.float64)  # (dof,) writable copies: one compiled
+        self.wraps = np.array(robot.wraps, dtype=np.bool_)  # (dof,) version serves every robot
+        self.reach, self.resolution = float(problem.resolution * params.range), float(problem.resolution)
+        self.coarse = int(params.coarse)
+        self.points = np.empty((4 * (int(params.range) + 1), robot.dof))  # (G, dof) a few extensions' grids
+        self.steps = np.empty(len(self.points), dtype=np.int64)  # (G,)
+
+    def __call__(self, tree: Tree, targets: np.ndarray, row: int, connect: bool) -> tuple[int, int, int, int, bool]:
+        """``rrt_kernels.steer`` of ``tree`` towards ``targets[row]``: ``(near, segments, per, c, reached)``, the
+        grid in :attr:`points` and :attr:`steps`."""
+        while True:
+            args: tuple = (tree.nodes, tree.n, tree.cut, targets, row, self.weights, self.wraps, self.reach)
+            args += (self.resolution, self.coarse, connect, self.points, self.steps)
+            if Steering.compiled is None:
+                from toolkit.geometry.compiled import entry_point
+                from toolkit.planning import rrt_kernels  # numba loads (or compiles) on first use, not on import
+
+                near, segments, per, c, reached = rrt_kernels.steer(*args)
+                Steering.compiled = entry_point(rrt_kernels.steer, args)
+            else:
+                near, segments, per, c, reached = Steering.compiled(*args)
+            if c >= 0:
+                return near, segments, per, c, reached
+            self.points = np.empty((2 * segments * per, len(self.weights)))  # too few rows: room for twice as many
+            self.steps = np.empty(len(self.points), dtype=np.int64)
 
 
 def move(
-    problem: Problem, params: RRTConnectParams, grids: Grids, tree: Tree, target: np.ndarray, *, connect: bool
+    problem: Problem, steering: Steering, tree: Tree, targets: np.ndarray, row: int, *, connect: bool
 ) -> tuple[int, bool]:
-    """Move ``tree`` from its node nearest ``target`` towards it: by at most ``resolution * range`` (an extension),
-    or with ``connect`` all the way in edges no longer; the segment's grid is checked coarse to fine, and the edges
-    before its first invalid point join the tree. Returns the last node added (-1: none, trapped) and whether it is
-    ``target``."""
-    exact, robot, resolution = problem.exact, problem.robot, problem.resolution
-    near, step, length = tree.nearest(robot, target)
-    reach = resolution * params.range
-    reached = connect or length <= reach
-    if not reached:  # an extension short of target: one range along the way
-        step, length = step * (reach / length), reach
-    segments = max(int(np.ceil(length / reach)), 1)  # edges, each no longer than reach: one for an extension
-    per = max(int(np.ceil(length / segments / resolution)), 1)  # grid steps an edge (local_planner.step_counts)
-    steps, c = grids(segments, per)
+    """Move ``tree`` from its node nearest ``targets[row]`` towards it: by at most ``resolution * range`` (an
+    extension), or with ``connect`` all the way in edges no longer; the segment's grid is checked coarse to fine,
+    and the edges before its first invalid point join the tree. Returns the last node added (-1: none, trapped)
+    and whether it is the target."""
+    exact = problem.exact
+    near, segments, per, c, reached = steering(tree, targets, row, connect)  # one compiled call
     n = segments * per
-    points = robot.wrap(tree.nodes[near] + (steps / n)[:, None] * step)  # (n, dof) in the order checked
+    points, steps = steering.points, steering.steps  # (>= n, dof), (>= n,): the grid, in the order checked
     blocked = first_invalid(exact, points[:c], steps[:c], n + 1)  # the first invalid step (n + 1: none)
     if connect or blocked > n:  # an extension that failed adds nothing: it needs no fine points
         useful = blocked if blocked > n else (blocked - 1) // per * per  # the end of the last edge that may be kept
-        fine = c + np.flatnonzero(steps[c:] < useful)  # only points before it matter
-        blocked = first_invalid(exact, points[fine], steps[fine], blocked)
+        fine = c + int(np.searchsorted(steps[c:n], useful))  # only points before it matter: the rest ascend
+        blocked = first_invalid(exact, points[c:fine], steps[c:fine], blocked)
     last = near
     for k in range(per, min(blocked, n), per):  # a connection's edges, each valid up to its end
         last = tree.add(points[np.searchsorted(steps[:c], k)], last)
     if blocked <= n:
         return (last if last != near else -1), False
-    return tree.add(target if reached else points[c - 1], last), reached  # steps[c - 1] == n: the end
+    return tree.add(targets[row] if reached else points[c - 1], last), reached  # steps[c - 1] == n: the end
 
 
 def first_invalid(exact, points: np.ndarray, steps: np.ndarray, blocked: int) -> int:
