@@ -15,6 +15,7 @@ import inspect
 import io
 import itertools
 import re
+from typing import Any
 
 import numpy as np
 import pytest
@@ -87,7 +88,7 @@ def _step(stage: str, path) -> PlanStep:
     )
 
 
-PLANNING = {
+PLANNING: dict[str, dict[str, dict[str, Any]]] = {
     s: {
         m: {
             "total_s_median": t,
