@@ -53,11 +53,24 @@ def _cell(x, lower, inverse, last):
 
 
 @njit(cache=True, inline="always")
-def _block_needs(Q, first, block, robot, centers, far, world, corner, needs, at):
+def _grid_cells(x, y, z, lower, cell, shape, flat, block):
+    """Fill ``flat (B,)`` with the cell of a grid (corner ``lower (3,)``, cubes ``cell`` wide, ``shape (3,)``) that
+    holds each point ``x, y, z (B,)``, clipped to the grid. The grid arrives as numbers: a loop that reads arrays
+    while it writes another is not turned into vector instructions."""
+    x0, y0, z0, inverse = lower[0], lower[1], lower[2], 1.0 / cell
+    last_x, last_y, last_z, ny, nz = shape[0] - 1, shape[1] - 1, shape[2] - 1, shape[1], shape[2]
+    for n in range(block):
+        a, b = _cell(x[n], x0, inverse, last_x), _cell(y[n], y0, inverse, last_y)
+        flat[n] = (a * ny + b) * nz + _cell(z[n], z0, inverse, last_z)
+
+
+@njit(cache=True, inline="always")
+def _block_needs(Q, first, block, robot, centers, far, world, corner, needs, at, far_at):
     """For the block ``Q[first:first + block]`` posed in ``centers (L, 3, B)``, fill ``needs (B,)``: -1 for a
     configuration out of bounds, else one bit per link whose far bit is 0 (link ``l``: bit ``l``), and ``at (L, B)``:
-    each link's cell of ``world``'s lists (``corner (3,)``: their grid's corner, 0 along a 2D world's third axis).
-    Every loop runs over the block's configurations. Returns whether every number of the block is finite."""
+    each link's cell of ``world``'s lists (``corner (3,)``: their grid's corner, 0 along a 2D world's third axis);
+    ``far_at (B,)``: scratch. Every loop runs over the block's configurations. Returns whether every number of the
+    block is finite."""
     for n in range(block):
         needs[n] = 0
     for i in range(Q.shape[1]):  # bit 0: out of bounds; bit 1: not finite (x - x is NaN for NaN and infinities)
@@ -66,44 +79,13 @@ def _block_needs(Q, first, block, robot, centers, far, world, corner, needs, at)
             x = Q[first + n, i]
             odd = np.int64(x - x != 0.0)
             needs[n] |= np.int64((x < lower) | (x > upper)) | odd | (odd << 1)
-    f0, f1, f2, f_inverse = far.lower[0], far.lower[1], far.lower[2], 1.0 / far.cell  # scalars: a loop that
-    f_last0, f_last1, f_last2, f_row, f_layer = (
-        far.shape[0] - 1,
-        far.shape[1] - 1,
-        far.shape[2] - 1,
-        far.shape[1],
-        far.shape[2],
-    )
-    w0, w1, w2, w_inverse = corner[0], corner[1], corner[2], 1.0 / world.cell  # reads arrays as it writes others
-    w_last0, w_last1, w_last2, w_row, w_layer = (
-        world.shape[0] - 1,
-        world.shape[1] - 1,
-        world.shape[2] - 1,
-        world.shape[1],
-        world.shape[2],
-    )
-    for link in range(len(centers)):  # is not turned into vector instructions
-        x, y, z, cell, bits = (
-            centers[link, 0],
-            centers[link, 1],
-            centers[link, 2],
-            at[link],
-            far.bits[far.link_ball[link]],
-        )
+    for link in range(len(centers)):
+        x, y, z, bits = centers[link, 0], centers[link, 1], centers[link, 2], far.bits[far.link_ball[link]]
+        _grid_cells(x, y, z, far.lower, far.cell, far.shape, far_at, block)
         for n in range(block):
-            a, b, c = (
-                _cell(x[n], f0, f_inverse, f_last0),
-                _cell(y[n], f1, f_inverse, f_last1),
-                _cell(z[n], f2, f_inverse, f_last2),
-            )
-            flat = (a * f_row + b) * f_layer + c
+            flat = far_at[n]
             needs[n] |= np.int64(1 - ((bits[flat >> 6] >> (flat & 63)) & 1)) << (link + 2)
-            a, b, c = (
-                _cell(x[n], w0, w_inverse, w_last0),
-                _cell(y[n], w1, w_inverse, w_last1),
-                _cell(z[n], w2, w_inverse, w_last2),
-            )
-            cell[n] = (a * w_row + b) * w_layer + c
+        _grid_cells(x, y, z, corner, world.cell, world.shape, at[link], block)
     finite = True
     for n in range(block):
         finite &= not needs[n] & 2
@@ -195,14 +177,14 @@ def validity(Q, robot, world, valid):
     sines, cosines = np.empty_like(angles), np.empty_like(angles)
     position, rotation = np.empty((3, width)), np.empty((3, 3, width))
     centers, rotations = np.empty((n_links, 3, width)), np.empty((n_links, 3, 3, width))
-    needs, at = np.empty(width, np.int64), np.empty((n_links, width), np.int64)
+    needs, at, far_at = np.empty(width, np.int64), np.empty((n_links, width), np.int64), np.empty(width, np.int64)
     scratch = np.empty(27)
     first_box, box_count, members = world.cell_first, world.cell_count, world.cell_boxes
     finite = True
     for first in range(0, len(Q), width):
         block = min(width, len(Q) - first)
         block_frames(Q, first, block, robot, angles, sines, cosines, position, rotation, centers, rotations)
-        finite &= _block_needs(Q, first, block, robot, centers, world.far, world, corner, needs, at)
+        finite &= _block_needs(Q, first, block, robot, centers, world.far, world, corner, needs, at, far_at)
         for b in range(block):
             need, link = needs[b], 0
             valid[first + b] = need >= 0
