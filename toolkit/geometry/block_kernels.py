@@ -164,21 +164,21 @@ def validity(Q, robot, world, valid):
     Returns whether every number of ``Q`` is finite (where one is not, ``valid`` means nothing)."""
     half, n_links, dim = robot.half_extents, len(robot.half_extents), len(world.lower)
     width = max(min(BLOCK, len(Q)), 1)  # a small call's arrays: no wider than it
-    balls = np.empty((2, n_links))  # squared radii of a ball holding each link box and of one it holds
-    for link in range(n_links):
-        balls[0, link] = np.sum(half[link] ** 2) * (1 + 1e-9)
-        balls[1, link] = np.min(half[link, :dim]) ** 2 * (1 - 1e-9)
-    walls, corner = np.full(6, np.inf), np.zeros(3)  # the region, padded; its grid's corner
-    walls[:3] = -np.inf
-    walls[:dim] = world.lower
-    walls[3 : 3 + dim] = world.upper
-    corner[:dim] = world.lower
-    angles = np.zeros((Q.shape[1] - first_angle(robot), width))  # (A, W); past a short last block: stale, unread
-    sines, cosines = np.empty_like(angles), np.empty_like(angles)
+    # few allocations (each costs about as much as checking a configuration): numbers, then the block's arrays
+    numbers = np.empty(36 + 2 * n_links)
+    walls, corner, scratch, balls = numbers[:6], numbers[6:9], numbers[9:36], numbers[36:].reshape(2, n_links)
+    for i in range(3):  # the region, padded to 3D with infinities, and its grid's corner, 0 where padded
+        walls[i], walls[3 + i] = (world.lower[i], world.upper[i]) if i < dim else (-np.inf, np.inf)
+        corner[i] = world.lower[i] if i < dim else 0.0
+    for link in range(n_links):  # squared radii of a ball holding each link box and of one it holds
+        balls[0, link] = (half[link, 0] ** 2 + half[link, 1] ** 2 + half[link, 2] ** 2) * (1 + 1e-9)
+        balls[1, link] = min(half[link, 0], half[link, 1], half[link, 2] if dim == 3 else np.inf) ** 2 * (1 - 1e-9)
+    trig = np.zeros((3, Q.shape[1] - first_angle(robot), width))  # (3, A, W); past a short last block: stale
+    angles, sines, cosines = trig[0], trig[1], trig[2]
     position, rotation = np.empty((3, width)), np.empty((3, 3, width))
     centers, rotations = np.empty((n_links, 3, width)), np.empty((n_links, 3, 3, width))
-    needs, at, far_at = np.empty(width, np.int64), np.empty((n_links, width), np.int64), np.empty(width, np.int64)
-    scratch = np.empty(27)
+    cells = np.empty((n_links + 2, width), np.int64)
+    needs, far_at, at = cells[0], cells[1], cells[2:]
     first_box, box_count, members = world.cell_first, world.cell_count, world.cell_boxes
     finite = True
     for first in range(0, len(Q), width):
