@@ -259,7 +259,7 @@ def test_bad_input_gets_the_same_errors_as_the_reference():
 
 def test_one_compiled_version_serves_every_robot_and_workspace():
     """Robots and workspaces are arguments, never constants: checking others compiles nothing new."""
-    from toolkit.geometry import kernels
+    from toolkit.geometry import block_kernels, kernels
 
     rng = np.random.default_rng(14)
     for name in SCENARIOS:
@@ -269,7 +269,7 @@ def test_one_compiled_version_serves_every_robot_and_workspace():
         checker.are_valid(scenario.robot.sample(rng, 10).astype(np.float32))  # any float type
         checker.clearances(scenario.robot.sample(rng, 10), 0.3)
     CompiledChecker(Workspace(np.zeros(2), np.full(2, 31.0), []), planar_arm()).are_valid(np.zeros((3, 5)))
-    assert len(kernels.validity.signatures) == 1
+    assert len(block_kernels.validity.signatures) == 1
     assert len(kernels.clearance_bounds.signatures) == 1
 
 
@@ -399,3 +399,33 @@ def test_the_far_bits_hold_to_the_rule_within_a_rounding_error_of_the_radius(see
     expected = room[None] > radii[:, None] + margin  # (B, C)
     assert np.any(room[None] == radii[:, None] + margin)  # ties, decided as not far
     assert_bits_are(compiled.far_bits(boxes, lower, upper, cell, shape, radii, dim), expected)
+
+
+def test_a_planners_small_calls_answer_as_the_batch_and_refuse_nan_and_infinities():
+    """What a planner passes (float64, C order) goes straight to the compiled loop once it is compiled: calls of 1 to
+    70 configurations (a block and a part) answer as one batch does, and a NaN or an infinity in any row, even within
+    bounds that are themselves infinite, gets the reference's error and counts nothing."""
+    scenario = scenarios.get("3dc9")
+    robot, rng = scenario.robot, np.random.default_rng(16)
+    checker = CompiledChecker(scenario.make_workspace(rng), robot)
+    Q = robot.sample(rng, 2000)
+    batch = checker.are_valid(Q)
+    assert 0.1 < batch.mean() < 0.9
+    pieces, start = [], 0
+    for size in rng.integers(1, 71, size=200):
+        pieces.append(checker.are_valid(Q[start : start + size]))
+        start += size
+    np.testing.assert_array_equal(np.concatenate(pieces), batch[:start])
+    unbounded = BoxRobot(
+        "unbounded", "free", [Link((0.5, 0.25, 0.125))], [], position_bounds=(np.full(3, -np.inf), np.full(3, np.inf))
+    )
+    cube = CompiledChecker(Workspace(np.zeros(3), np.full(3, 4.0), [[[1, 1, 1], [2, 2, 2]]]), unbounded)
+    for compiled, dof in ((checker, robot.dof), (cube, unbounded.dof)):
+        compiled.are_valid(np.full((5, dof), 0.5))  # compiled: later calls take the short way
+        counted = compiled.n_checked
+        for bad in (np.nan, np.inf, -np.inf):
+            Q = np.full((70, dof), 0.5)
+            Q[rng.integers(70), rng.integers(dof)] = bad
+            with pytest.raises(ValueError, match="Q contains NaN or infinite values"):
+                compiled.are_valid(Q)
+        assert compiled.n_checked == counted

@@ -14,9 +14,10 @@ Reading order:
    robot's interval tests and the separating-axis reference in numpy;
 6. :mod:`toolkit.geometry.fcl_checker` — python-fcl: ``FCLChecker``, the reference, and
    ``MeshChecker`` for meshes;
-7. :mod:`toolkit.geometry.compiled` and :mod:`toolkit.geometry.kernels` — ``CompiledChecker``:
-   kinematics and separating axes compiled with numba, one loop over configurations, the default; its
-   kinematics in :mod:`toolkit.geometry.frame_kernels`, their sines and cosines in :mod:`toolkit.geometry.trig`,
+7. :mod:`toolkit.geometry.compiled` and :mod:`toolkit.geometry.block_kernels` — ``CompiledChecker``:
+   kinematics and separating axes compiled with numba, one loop over blocks of configurations, the default; its
+   pieces (link bounds, separating axes, grid cells) in :mod:`toolkit.geometry.kernels`, its kinematics in
+   :mod:`toolkit.geometry.frame_kernels`, their sines and cosines in :mod:`toolkit.geometry.trig`,
    the far bits that settle most links (built with the checker) in :mod:`toolkit.geometry.far_kernels`;
 8. :mod:`toolkit.geometry.compiled_mesh` and :mod:`toolkit.geometry.mesh_kernels` — ``CompiledMeshChecker``:
    the same against a triangle mesh (triangle-box separating axes, inside tests from cells classified once);

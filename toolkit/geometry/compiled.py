@@ -4,7 +4,7 @@
 (:class:`toolkit.geometry.fcl_checker.FCLChecker`; the tests hold it to that and to the
 separating-axis reference) for every :class:`~toolkit.geometry.robots.BoxRobot` and every box
 workspace, many times faster: the whole check of a configuration runs in one compiled loop
-(:mod:`toolkit.geometry.kernels`). This class only turns the robot and the workspace into the
+(:mod:`toolkit.geometry.block_kernels`). This class only turns the robot and the workspace into the
 arrays that loop reads.
 
 That speed is the paper's question turned round: prediction pays only where it is cheaper
@@ -27,6 +27,7 @@ from toolkit.geometry.workspace import Workspace
 
 FAR_CELL = 1.5  # the far bits' cells: this many times the smallest link ball's radius wide
 FAR_CELLS = 128  # or a 128th of the region's longest axis, if wider
+FLOAT64 = np.dtype(np.float64)  # the dtype of configurations the compiled loop takes as they are
 
 
 ENTRY_POINTS: dict[tuple, Any] = {}  # compiled versions of the kernels, by name and arguments' layout (entry_point)
@@ -101,16 +102,35 @@ class CompiledChecker(BoxWorldChecker):
         self._validity = self._clearance = None  # the compiled kernels for these arrays, once known (entry_point)
         self._grown: dict[float, World] = {}  # clearances: the world with boxes grown by cap, by cap
 
+    def are_valid(self, Q):
+        """:meth:`CollisionChecker.are_valid`; what a planner passes, a float64 array ``(N, dof)`` in C order, goes
+        straight to the compiled loop, which also says whether every number was finite (where one is not, the same
+        error as ever): a call of 32 configurations then costs little more than checking them."""
+        if not (
+            self._validity is not None
+            and type(Q) is np.ndarray
+            and Q.dtype is FLOAT64
+            and Q.ndim == 2
+            and Q.shape[1] == self.robot.dof
+            and Q.flags.carray  # C order, aligned, writable: the compiled version's layout
+        ):
+            return super().are_valid(Q)
+        valid = np.empty(len(Q), dtype=bool)
+        if not self._validity(Q, self._robot, self._world, valid):
+            self.robot.check_configs(Q)  # raises: NaN or infinite values
+        self.n_checked += len(Q)
+        return valid
+
     def validity(self, Q: np.ndarray) -> np.ndarray:
         Q, valid = np.ascontiguousarray(Q, dtype=np.float64), np.empty(len(Q), dtype=bool)
         if self._validity is not None and Q.flags.writeable:  # the compiled version itself: no dispatch, no import
             self._validity(Q, self._robot, self._world, valid)
             return valid
-        from toolkit.geometry import kernels  # numba loads (or compiles) on first use, not on import
+        from toolkit.geometry import block_kernels  # numba loads (or compiles) on first use, not on import
 
-        kernels.validity(Q, self._robot, self._world, valid)
+        block_kernels.validity(Q, self._robot, self._world, valid)
         if Q.flags.writeable:
-            self._validity = entry_point(kernels.validity, (Q, self._robot, self._world, valid))
+            self._validity = entry_point(block_kernels.validity, (Q, self._robot, self._world, valid))
         return valid
 
     def __getstate__(self) -> dict:
@@ -209,7 +229,7 @@ def square_limit(threshold: float) -> float:
 
 
 def robot_arrays(robot: BoxRobot) -> Robot:
-    """A :class:`~toolkit.geometry.robots.BoxRobot` as :func:`toolkit.geometry.kernels.validity` reads it."""
+    """A :class:`~toolkit.geometry.robots.BoxRobot` as :func:`toolkit.geometry.block_kernels.validity` reads it."""
     half = np.zeros((robot.n_links, 3))  # (L, 3): zero-padded in 2D
     half[:, : robot.dim] = robot.half_extents
     return Robot(

@@ -135,14 +135,18 @@ def block_frames(Q, first, block, robot, angles, sines, cosines, position, rotat
             flat_sines[t], flat_cosines[t] = any_sin_cos(flat_angles[t])
     for i in range(3):
         for j in range(3):
-            rotation[i, j, :block] = 1.0 if i == j else 0.0
+            row = rotation[i, j]
+            for n in range(block):
+                row[n] = 1.0 if i == j else 0.0
     for n in range(block):
         position[0, n], position[1, n] = Q[first + n, 0], Q[first + n, 1]
     if robot.base == FREE:
         for n in range(block):
             position[2, n] = Q[first + n, 2]
     else:
-        position[2, :block] = robot.base_height if robot.base == PLANAR else 0.0
+        height = robot.base_height if robot.base == PLANAR else 0.0
+        for n in range(block):
+            position[2, n] = height
     if robot.base == PLANAR:  # yaw
         _turn_block(rotation, 2, sines[0], cosines[0], block)
     elif robot.base == FREE:  # Z-Y-X Euler angles
@@ -163,4 +167,8 @@ def block_frames(Q, first, block, robot, angles, sines, cosines, position, rotat
             p, r0, r1, r2, center = position[i], rotation[i, 0], rotation[i, 1], rotation[i, 2], centers[link, i]
             for n in range(block):
                 center[n] = p[n] + r0[n] * offset[0] + r1[n] * offset[1] + r2[n] * offset[2]
-        rotations[link, :, :, :block] = rotation[:, :, :block]
+        for i in range(3):  # loops, not slices: a slice assigned to a slice may be copied first (an allocation)
+            for j in range(3):
+                source, target = rotation[i, j], rotations[link, i, j]
+                for n in range(block):
+                    target[n] = source[n]

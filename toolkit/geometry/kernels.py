@@ -1,35 +1,26 @@
-"""The compiled exact check, a block of configurations at a time: kinematics, then separating axes (numba).
+"""The pieces of the compiled exact checks of box worlds (numba): link bounds, separating axes, grid cells.
 
-Numpy checks a batch one step at a time: kinematics for every configuration, then bounds for
-every link, then the pairs that may touch. Each step writes arrays the next one reads, so
-the cost is memory traffic, and FCL adds a Python call per pair. Here one loop (compiled by
-numba to machine code) takes a block of 64 configurations through every step:
+:mod:`toolkit.geometry.block_kernels` checks a block of configurations at a time, and
+:mod:`toolkit.geometry.mesh_kernels` one configuration at a time against a mesh's parts; both stand on these:
 
-1. forward kinematics of the box chain (:meth:`toolkit.geometry.robots.BoxRobot.link_frames`) for the whole
-   block (:func:`toolkit.geometry.frame_kernels.block_frames`), each step a loop over its configurations that the
-   compiler turns into vector instructions, the sines and cosines included (:mod:`toolkit.geometry.trig`);
-2. then each configuration alone, stopping at its first failure: bounds, ``lower <= q <= upper``;
-3. per link, one bit, looked up in the cell of a fine grid that holds the link's centre
-   (:class:`toolkit.geometry.compiled.Far`): whether a ball round the link, centred anywhere in that cell, lies in
-   the region and misses every obstacle. Most links are done here (the idea of the mesh checker,
-   :mod:`toolkit.geometry.mesh_kernels`);
-4. else its axis-aligned bounds must lie inside the region, and the obstacle boxes listed in the grid cell
-   that holds its centre (:class:`toolkit.geometry.box_world.BoxGrid`'s cell lists, the boxes grown by
-   the largest link ball's radius: all a link centred there can touch) are tested: a ball round the
-   link that misses the box, or one inside the link that meets it, settles most pairs; the rest go to the
-   separating-axis theorem (Gottschalk et al., OBBTree, 1996): two boxes are disjoint iff
-   their projections on some axis are disjoint; it suffices to try the world's axes, the
-   link's axes and, in 3D, their 9 cross products. Touching projections do not separate:
-   boxes are closed, as in FCL.
+- a link's axis-aligned bounds and the cells of a grid they cover (:func:`one_link_bounds`, :func:`link_bounds`),
+  and the obstacle boxes those cells list (:func:`listed_boxes`);
+- the separating-axis theorem (Gottschalk et al., OBBTree, 1996), :func:`boxes_touch`: two boxes are disjoint
+  iff their projections on some axis are disjoint; it suffices to try the world's axes, the
+  link's axes and, in 3D, their 9 cross products. Touching projections do not separate:
+  boxes are closed, as in FCL;
+- one bit per cell of a fine grid (:func:`far`; :class:`toolkit.geometry.compiled.Far`): whether a ball round a
+  link, centred anywhere in the cell, lies in the region and misses every obstacle (the bits are built by
+  :mod:`toolkit.geometry.far_kernels`), and the broadphase's cell lists (:func:`cell_lists`);
+- clearance bounds, one configuration at a time (:func:`clearance_bounds`, posed by
+  :func:`toolkit.geometry.frame_kernels.link_frames` with the same sines and cosines).
 
 The robot and the workspace arrive as arrays (:class:`toolkit.geometry.compiled.CompiledChecker`
 builds them), never as constants, so one compiled version serves every robot and
 workspace; ``cache=True`` keeps it on disk (in ``NUMBA_CACHE_DIR`` if set, else in ``__pycache__``
 beside this file, else, where that is read-only, in the user's cache folder, ``~/.cache/numba``),
-so a machine compiles it once. The steps are small functions that numba inlines into the loop
+so a machine compiles it once. The steps are small functions that numba inlines into the loops
 (``inline="always"``): a call that passes arrays costs more than most of the steps themselves.
-:func:`clearance_bounds` poses one configuration at a time
-(:func:`toolkit.geometry.frame_kernels.link_frames`), with the same sines and cosines.
 """
 
 from __future__ import annotations
@@ -37,7 +28,7 @@ from __future__ import annotations
 import numpy as np
 from numba import njit
 
-from toolkit.geometry.frame_kernels import block_frames, first_angle, link_frames, new_frame
+from toolkit.geometry.frame_kernels import link_frames, new_frame
 
 
 @njit(cache=True, inline="always")
@@ -136,30 +127,12 @@ def in_bounds(q, lower, upper):
 
 
 @njit(cache=True, inline="always")
-def row_in_bounds(Q, n, lower, upper):
-    """:func:`in_bounds` of configuration ``Q[n]``, read in place."""
-    for i in range(Q.shape[1]):  # noqa: SIM110 (numba compiles loops, not generators)
-        if not lower[i] <= Q[n, i] <= upper[i]:
-            return False
-    return True
-
-
-@njit(cache=True, inline="always")
 def flat_cell(point, grid):
     """The index of the cell of ``grid`` (``lower (3,)``, ``cell``, ``shape (3,)``) that holds ``point (3,)``,
     clipped to the grid."""
     flat = 0
     for i in range(3):
         flat = flat * grid.shape[i] + _axis_cell(point[i], grid, i)
-    return flat
-
-
-@njit(cache=True, inline="always")
-def world_cell(point, world):
-    """The index of the cell of ``world``'s lists (a 2D world's: one cell deep) that holds ``point (3,)``, clipped."""
-    flat = 0
-    for i in range(3):
-        flat = flat * world.shape[i] + (_axis_cell(point[i], world, i) if i < len(world.lower) else 0)
     return flat
 
 
@@ -180,87 +153,6 @@ def far(center, bits, grid):
 @njit(cache=True, inline="always")
 def _bit(bits, flat):
     return (bits[flat >> 6] >> (flat & 63)) & 1
-
-
-@njit(cache=True, inline="always")
-def _row_bit(bits, row, flat):
-    """:func:`_bit` of row ``row`` of ``bits (B, W)``, read in place."""
-    return (bits[row, flat >> 6] >> (flat & 63)) & 1
-
-
-@njit(cache=True, inline="always")
-def _link_touches(center, R, half, low, high, box, dim, outer, inner):
-    """:func:`boxes_touch`, settled first by two balls about the link's centre where they can: none of the
-    ``box`` lies within ``outer`` (the squared radius of a ball holding the link box): they do not touch; some lies
-    within ``inner`` (of a ball the link box holds): they do. Both are a billionth inside the truth, far above
-    rounding; nearer contact goes to the separating axes."""
-    for i in range(dim):
-        if low[i] > box[1, i] or high[i] < box[0, i]:
-            return False
-    squared = 0.0  # the squared distance from the centre to the box
-    for i in range(dim):
-        gap = max(box[0, i] - center[i], center[i] - box[1, i], 0.0)
-        squared += gap * gap
-    if squared > outer:
-        return False
-    return squared < inner or boxes_touch(center, R, half, low, high, box, dim)
-
-
-BLOCK = 64  # configurations posed together
-
-
-@njit(cache=True)
-def validity(Q, robot, world, valid):
-    """Fill ``valid (N,)`` for configurations ``Q (N, dof)``: the steps in the module's docstring, each
-    configuration stopping at its first failure. ``robot``, ``world``: arrays
-    (:class:`toolkit.geometry.compiled.Robot`, :class:`~toolkit.geometry.compiled.World`, with its far bits)."""
-    half, n_links, grid = robot.half_extents, len(robot.half_extents), world.far
-    outer = np.sum(half**2, axis=1) * (1 + 1e-9)  # (L,) the squared radii of the balls of _link_touches
-    inner = np.empty(n_links)
-    for link in range(n_links):
-        inner[link] = np.min(half[link, : len(world.lower)]) ** 2 * (1 - 1e-9)
-    angles = np.zeros((Q.shape[1] - first_angle(robot), BLOCK))  # (A, B); past a short last block: stale, unread
-    sines, cosines = np.empty_like(angles), np.empty_like(angles)
-    position, rotation = np.zeros((3, BLOCK)), np.zeros((3, 3, BLOCK))
-    centers, rotations = np.zeros((n_links, 3, BLOCK)), np.zeros((n_links, 3, 3, BLOCK))
-    cell = np.zeros((n_links, BLOCK), np.int64)  # the far grid's cell of each link's centre
-    low, high, cells = np.zeros(3), np.zeros(3), np.zeros((2, 3), np.int64)
-    # one link's box and one obstacle, copied out: in this loop a view (centers[link, :, b]) costs more than the tests
-    center, R, link_half, box = np.zeros(3), np.zeros((3, 3)), np.zeros(3), np.zeros((2, len(world.lower)))
-    for first in range(0, len(Q), BLOCK):
-        block = min(BLOCK, len(Q) - first)
-        block_frames(Q, first, block, robot, angles, sines, cosines, position, rotation, centers, rotations)
-        for link in range(n_links):
-            flat, x, y, z = cell[link], centers[link, 0], centers[link, 1], centers[link, 2]
-            for n in range(block):
-                row = _axis_cell(x[n], grid, 0) * grid.shape[1] + _axis_cell(y[n], grid, 1)
-                flat[n] = row * grid.shape[2] + _axis_cell(z[n], grid, 2)
-        for b in range(block):
-            n = first + b
-            valid[n] = row_in_bounds(Q, n, robot.lower, robot.upper)
-            for link in range(n_links if valid[n] else 0):
-                if _row_bit(grid.bits, grid.link_ball[link], cell[link, b]):
-                    continue  # its ball, wherever in its cell, lies in the region and touches no obstacle
-                # else its bounds must lie in the region, and its box touch none of the obstacles listed in the
-                # cell that holds its centre (boxes grown by any link's ball: written out here, as a function of
-                # its own numba compiles it slower)
-                for i in range(3):
-                    center[i], link_half[i] = centers[link, i, b], half[link, i]
-                    for j in range(3):
-                        R[i, j] = rotations[link, i, j, b]
-                touches = not one_link_bounds(center, R, link_half, world, low, high, cells)
-                at = world_cell(center, world)
-                listed = world.cell_first[at] + world.cell_count[at]
-                for m in range(listed if touches else world.cell_first[at], listed):
-                    k = world.cell_boxes[m]
-                    for i in range(len(world.lower)):
-                        box[0, i], box[1, i] = world.boxes[k, 0, i], world.boxes[k, 1, i]
-                    if _link_touches(center, R, link_half, low, high, box, len(world.lower), outer[link], inner[link]):
-                        touches = True
-                        break
-                if touches:
-                    valid[n] = False
-                    break
 
 
 @njit(cache=True, inline="always")
@@ -288,7 +180,7 @@ def clearance_bounds(Q, robot, world, level_links, cap, clearance):
     the distance to the walls (a floor or ceiling that a level link never moves towards does not count) and to
     each box listed near it: :meth:`toolkit.geometry.box_world.BoxWorldChecker.clearance_bounds`, compiled.
 
-    ``world`` as in :func:`validity`, its cell lists holding the boxes grown by ``cap``.
+    ``world`` as in :func:`toolkit.geometry.block_kernels.validity`, its cell lists holding the boxes grown by ``cap``.
     """
     half, boxes, region_lo, region_hi = robot.half_extents, world.boxes, world.lower, world.upper
     n_links, dim = len(half), len(region_lo)

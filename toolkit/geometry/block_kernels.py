@@ -1,0 +1,210 @@
+"""The compiled exact check of a box world, a block of configurations at a time (numba).
+
+Numpy checks a batch one step at a time: kinematics for every configuration, then bounds for
+every link, then the pairs that may touch. Each step writes arrays the next one reads, so
+the cost is memory traffic, and FCL adds a Python call per pair. Here one loop (compiled by
+numba to machine code) takes a block of 128 configurations through every step:
+
+1. forward kinematics of the box chain (:meth:`toolkit.geometry.robots.BoxRobot.link_frames`) for the whole
+   block (:func:`toolkit.geometry.frame_kernels.block_frames`), each step a loop over its configurations that the
+   compiler turns into vector instructions, the sines and cosines included (:mod:`toolkit.geometry.trig`);
+2. then, still a loop over the block's configurations per step (:func:`_block_needs`): bounds,
+   ``lower <= q <= upper``; and per link one bit, looked up in the cell of a fine grid that holds the link's centre
+   (:class:`toolkit.geometry.compiled.Far`): whether a ball round the link, centred anywhere in that cell, lies in
+   the region and misses every obstacle. Most links are done here (the idea of the mesh checker,
+   :mod:`toolkit.geometry.mesh_kernels`); the rest are marked, one bit a link, with the broadphase cell of their
+   centre;
+3. then each configuration alone, its marked links in order, stopping at the first that touches
+   (:func:`_link_touches`): its axis-aligned bounds must lie inside the region, and the obstacle boxes listed in
+   its cell (:class:`toolkit.geometry.box_world.BoxGrid`'s cell lists, the boxes grown by the largest link ball's
+   radius: all a link centred there can touch) are tested: a ball round the link that misses the box, or one
+   inside the link that meets it, settles most pairs; the rest go to the separating axes
+   (:func:`toolkit.geometry.kernels.boxes_touch`).
+
+A loop that the compiler turns into vector instructions cannot stop early, so steps 1 and 2 do the work of
+every configuration of the block; step 3, where a configuration's answer can come at its first link, is the
+only loop that branches. It reads the block's arrays in place, numbers only, never a view of them (in a loop
+this hot a view costs more than the tests).
+
+The robot and the workspace arrive as arrays (:class:`toolkit.geometry.compiled.CompiledChecker`
+builds them), never as constants, so one compiled version serves every robot and
+workspace; ``cache=True`` keeps it on disk (see :mod:`toolkit.geometry.kernels`).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from numba import njit
+
+from toolkit.geometry.frame_kernels import block_frames, first_angle
+from toolkit.geometry.kernels import boxes_touch
+
+BLOCK = 128  # configurations posed together (64 and 512 measured slower, 256 no faster)
+
+
+@njit(cache=True, inline="always")
+def _cell(x, lower, inverse, last):
+    """The layer of cells (``lower``, ``1 / inverse`` wide, ``0 .. last``) that holds coordinate ``x``, clipped.
+
+    Multiplying by the inverse width rather than dividing may put a point within about 1e-15 of a border into the
+    next cell; the far bits keep a margin of 1e-9 of the region and the cell lists one of 1e-9 of a link's reach,
+    both far above it."""
+    return min(max(int(np.floor((x - lower) * inverse)), 0), last)
+
+
+@njit(cache=True, inline="always")
+def _grid_cells(x, y, z, lower, cell, shape, flat, block):
+    """Fill ``flat (B,)`` with the cell of a grid (corner ``lower (3,)``, cubes ``cell`` wide, ``shape (3,)``) that
+    holds each point ``x, y, z (B,)``, clipped to the grid. The grid arrives as numbers: a loop that reads arrays
+    while it writes another is not turned into vector instructions."""
+    x0, y0, z0, inverse = lower[0], lower[1], lower[2], 1.0 / cell
+    last_x, last_y, last_z, ny, nz = shape[0] - 1, shape[1] - 1, shape[2] - 1, shape[1], shape[2]
+    for n in range(block):
+        a, b = _cell(x[n], x0, inverse, last_x), _cell(y[n], y0, inverse, last_y)
+        flat[n] = (a * ny + b) * nz + _cell(z[n], z0, inverse, last_z)
+
+
+@njit(cache=True, inline="always")
+def _block_needs(Q, first, block, robot, centers, far, world, corner, needs, at, far_at):
+    """For the block ``Q[first:first + block]`` posed in ``centers (L, 3, B)``, fill ``needs (B,)``: -1 for a
+    configuration out of bounds, else one bit per link whose far bit is 0 (link ``l``: bit ``l``), and ``at (L, B)``:
+    each link's cell of ``world``'s lists (``corner (3,)``: their grid's corner, 0 along a 2D world's third axis);
+    ``far_at (B,)``: scratch. Every loop runs over the block's configurations. Returns whether every number of the
+    block is finite."""
+    for n in range(block):
+        needs[n] = 0
+    for i in range(Q.shape[1]):  # bit 0: out of bounds; bit 1: not finite (x - x is NaN for NaN and infinities)
+        lower, upper = robot.lower[i], robot.upper[i]
+        for n in range(block):
+            x = Q[first + n, i]
+            odd = np.int64(x - x != 0.0)
+            needs[n] |= np.int64((x < lower) | (x > upper)) | odd | (odd << 1)
+    for link in range(len(centers)):
+        x, y, z, bits = centers[link, 0], centers[link, 1], centers[link, 2], far.bits[far.link_ball[link]]
+        _grid_cells(x, y, z, far.lower, far.cell, far.shape, far_at, block)
+        for n in range(block):
+            flat = far_at[n]
+            needs[n] |= np.int64(1 - ((bits[flat >> 6] >> (flat & 63)) & 1)) << (link + 2)
+        _grid_cells(x, y, z, corner, world.cell, world.shape, at[link], block)
+    finite = True
+    for n in range(block):
+        finite &= not needs[n] & 2
+        needs[n] = -1 if needs[n] & 3 else needs[n] >> 2
+    return finite
+
+
+@njit(cache=True, inline="always")
+def _reach(rotations, link, i, b, half):
+    """How far link ``link`` of configuration ``b`` reaches from its centre along world axis ``i``."""
+    reach = 0.0
+    for j in range(3):
+        reach += abs(rotations[link, i, j, b]) * half[link, j]
+    return reach
+
+
+@njit(cache=True, inline="always")
+def _link_touches(centers, rotations, link, b, half, walls, first, count, members, boxes, cell, balls, scratch):
+    """Whether link ``link`` of configuration ``b`` of the block (``centers (L, 3, B)``, ``rotations (L, 3, 3, B)``,
+    ``half (L, 3)``) leaves the region (``walls (6,)``: its lower then upper corner, padded to 3D with infinities)
+    or touches an obstacle of ``boxes (K, 2, D)`` listed in its ``cell`` (``first, count, members``: a world's
+    ``cell_first``, ``cell_count``, ``cell_boxes``). ``balls (2, L)``: the squared radii of a ball that holds the
+    link box and of one it holds, a billionth inside the truth (far above rounding; nearer contact goes to the
+    separating axes); ``scratch (27,)``: room for a link box and an obstacle box as :func:`boxes_touch` takes them.
+
+    Every argument is a number or an array: a named tuple of arrays passed to it would cost a reference count
+    per array per call."""
+    c0, c1, c2 = centers[link, 0, b], centers[link, 1, b], centers[link, 2, b]
+    e0, e1, e2 = (
+        _reach(rotations, link, 0, b, half),
+        _reach(rotations, link, 1, b, half),
+        _reach(rotations, link, 2, b, half),
+    )
+    l0, l1, l2, h0, h1, h2 = c0 - e0, c1 - e1, c2 - e2, c0 + e0, c1 + e1, c2 + e2
+    if not (
+        walls[0] <= l0 and walls[1] <= l1 and walls[2] <= l2 and h0 <= walls[3] and h1 <= walls[4] and h2 <= walls[5]
+    ):
+        return True
+    dim = boxes.shape[2]
+    for m in range(first[cell], first[cell] + count[cell]):
+        k = members[m]
+        lo0, lo1, lo2 = boxes[k, 0, 0], boxes[k, 0, 1], boxes[k, 0, 2] if dim == 3 else -np.inf
+        hi0, hi1, hi2 = boxes[k, 1, 0], boxes[k, 1, 1], boxes[k, 1, 2] if dim == 3 else np.inf
+        if l0 > hi0 or h0 < lo0 or l1 > hi1 or h1 < lo1 or l2 > hi2 or h2 < lo2:
+            continue  # a world axis separates them
+        g0, g1, g2 = max(lo0 - c0, c0 - hi0, 0.0), max(lo1 - c1, c1 - hi1, 0.0), max(lo2 - c2, c2 - hi2, 0.0)
+        squared = g0 * g0 + g1 * g1 + g2 * g2  # from the link's centre to the box
+        if squared > balls[0, link]:
+            continue
+        if squared < balls[1, link]:
+            return True
+        center, R, link_half, low, high = (
+            scratch[:3],
+            scratch[3:12].reshape(3, 3),
+            scratch[12:15],
+            scratch[15:18],
+            scratch[18:21],
+        )
+        box = scratch[21 : 21 + 2 * dim].reshape(2, dim)
+        for i in range(3):
+            center[i], link_half[i] = centers[link, i, b], half[link, i]
+            for j in range(3):
+                R[i, j] = rotations[link, i, j, b]
+        low[0], low[1], low[2], high[0], high[1], high[2] = l0, l1, l2, h0, h1, h2
+        box[:] = boxes[k]
+        if boxes_touch(center, R, link_half, low, high, box, dim):
+            return True
+    return False
+
+
+@njit(cache=True)
+def validity(Q, robot, world, valid):
+    """Fill ``valid (N,)`` for configurations ``Q (N, dof)``: the steps in the module's docstring, each
+    configuration stopping at its first failure. ``robot``, ``world``: arrays
+    (:class:`toolkit.geometry.compiled.Robot`, :class:`~toolkit.geometry.compiled.World`, with its far bits).
+    Returns whether every number of ``Q`` is finite (where one is not, ``valid`` means nothing)."""
+    half, n_links, dim = robot.half_extents, len(robot.half_extents), len(world.lower)
+    width = max(min(BLOCK, len(Q)), 1)  # a small call's arrays: no wider than it
+    # few allocations (each costs about as much as checking a configuration): numbers, then the block's arrays
+    numbers = np.empty(36 + 2 * n_links)
+    walls, corner, scratch, balls = numbers[:6], numbers[6:9], numbers[9:36], numbers[36:].reshape(2, n_links)
+    for i in range(3):  # the region, padded to 3D with infinities, and its grid's corner, 0 where padded
+        walls[i], walls[3 + i] = (world.lower[i], world.upper[i]) if i < dim else (-np.inf, np.inf)
+        corner[i] = world.lower[i] if i < dim else 0.0
+    for link in range(n_links):  # squared radii of a ball holding each link box and of one it holds
+        balls[0, link] = (half[link, 0] ** 2 + half[link, 1] ** 2 + half[link, 2] ** 2) * (1 + 1e-9)
+        balls[1, link] = min(half[link, 0], half[link, 1], half[link, 2] if dim == 3 else np.inf) ** 2 * (1 - 1e-9)
+    trig = np.zeros((3, Q.shape[1] - first_angle(robot), width))  # (3, A, W); past a short last block: stale
+    angles, sines, cosines = trig[0], trig[1], trig[2]
+    position, rotation = np.empty((3, width)), np.empty((3, 3, width))
+    centers, rotations = np.empty((n_links, 3, width)), np.empty((n_links, 3, 3, width))
+    cells = np.empty((n_links + 2, width), np.int64)
+    needs, far_at, at = cells[0], cells[1], cells[2:]
+    first_box, box_count, members = world.cell_first, world.cell_count, world.cell_boxes
+    finite = True
+    for first in range(0, len(Q), width):
+        block = min(width, len(Q) - first)
+        block_frames(Q, first, block, robot, angles, sines, cosines, position, rotation, centers, rotations)
+        finite &= _block_needs(Q, first, block, robot, centers, world.far, world, corner, needs, at, far_at)
+        for b in range(block):
+            need, link = needs[b], 0
+            valid[first + b] = need >= 0
+            while need > 0:  # the links whose far bit is 0, in order
+                if need & 1 and _link_touches(
+                    centers,
+                    rotations,
+                    link,
+                    b,
+                    half,
+                    walls,
+                    first_box,
+                    box_count,
+                    members,
+                    world.boxes,
+                    at[link, b],
+                    balls,
+                    scratch,
+                ):
+                    valid[first + b] = False
+                    break
+                need, link = need >> 1, link + 1
+    return finite
