@@ -4,6 +4,7 @@ import dataclasses
 
 import numpy as np
 import pytest
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.collections import LineCollection
 from matplotlib.colors import to_rgba, to_rgba_array
 from matplotlib.figure import Figure
@@ -13,7 +14,7 @@ from toolkit.experiments.queries import make_queries
 from toolkit.geometry.collision import exact_checker
 from toolkit.planning.paper_prm import PRM
 from toolkit.planning.prm import PlanStep, plan
-from toolkit.plots import planning, timings
+from toolkit.plots import palette, planning, timings
 
 SCENARIO = scenarios.get("2ds")
 
@@ -70,7 +71,7 @@ def test_samplers_one_panel_per_sampler_with_its_samples_over_the_blocks(exact, 
     assert isinstance(fig, Figure) and len(fig.axes) == 4
     for ax, (name, Q) in zip(fig.axes, samples.items()):
         np.testing.assert_array_equal(ax.collections[0].get_offsets(), Q)
-        assert ax.get_title() == f"{name}: {len(Q)} sample{'' if len(Q) == 1 else 's'} of 200 attempts"
+        assert ax.get_title() == f"{name}:\n{len(Q)} sample{'' if len(Q) == 1 else 's'} of 200 attempts"
         blocks = [(p.get_xy(), p.get_width(), p.get_height()) for p in ax.patches[:-1]]  # the last: the bounds
         assert [
             (tuple(lo), w, h) for lo, (w, h) in zip(query.workspace.boxes[:, 0], np.ptp(query.workspace.boxes, axis=1))
@@ -87,7 +88,13 @@ def test_sample_sets_marks_accepted_samples_that_are_truly_in_collision(exact, r
     np.testing.assert_array_equal(kept.get_offsets(), S[accepted & truth])
     np.testing.assert_array_equal(wrong.get_offsets(), S[accepted & ~truth])
     assert len(S[accepted & ~truth]) > 0 and is_color(wrong.get_facecolors(), planning.REPAIR_COLOR).all()
-    assert f"S', truly in collision: {(accepted & ~truth).sum()}" in [t.get_text() for t in ax.get_legend().texts]
+    fig = ax.figure
+    assert f"S', truly in collision: {(accepted & ~truth).sum()}" in [t.get_text() for t in fig.legends[0].texts]
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    fig.draw(renderer)
+    assert not fig.legends[0].get_window_extent(renderer).overlaps(ax.get_window_extent(renderer))  # hides no sample
+    assert not any(c.get_clip_on() for c in (rejected, kept, wrong))  # a sample on the C-space's edge drawn whole
+    assert rejected.get_sizes()[0] >= 20 and palette.contrast("rejected", "c_obstacle") >= 4.5  # seen on a block
 
 
 def a_repair_step() -> PlanStep:
@@ -142,6 +149,17 @@ def test_roadmap_of_a_real_plan_draws_as_many_edges_as_the_roadmap_has(exact, qu
     assert len(kept) == len(result.roadmap.edges) > 0 and len(removed) == 0
     assert is_color(ax.lines[0].get_color(), planning.PATH_STYLES["path"][0]).all()
     assert ax.lines[0].get_linestyle() == "-"  # the returned path solid, a candidate dashed
+
+
+def test_roadmap_names_every_mark_and_draws_start_and_goal_whole_and_large(exact):
+    step = a_repair_step()
+    fig = planning.roadmap(exact, step)
+    ax = fig.axes[0]
+    named = [t.get_text() for t in fig.legends[0].texts]
+    assert {"edge removed by a repair", "node removed by a repair", "start", "goal"} <= set(named)
+    nodes, *_, start, goal = [c for c in ax.collections if not isinstance(c, LineCollection)]
+    assert [start.get_clip_on(), goal.get_clip_on()] == [False, False]  # whole where they lie on the edge
+    assert goal.get_sizes()[0] >= 10 * nodes.get_sizes()[0] and start.get_sizes()[0] >= 4 * nodes.get_sizes()[0]
 
 
 def test_roadmap_steps_one_panel_per_step(exact):
@@ -241,8 +259,8 @@ def test_a_rejected_candidate_and_a_fresh_one_differ_in_line_style_not_only_in_s
     rejected = a_repair_step()
     fresh = dataclasses.replace(rejected, stage="candidate", removed_nodes=np.zeros(0, int))
     styles = [planning.roadmap(exact, step).axes[0].lines[0].get_linestyle() for step in (rejected, fresh)]
-    assert styles == ["-.", "--"]
-    assert "dash-dotted path" in planning.step_in_words(rejected) and "dashed path" in planning.step_in_words(fresh)
+    assert styles == [":", "--"]  # dotted against dashed: told apart at the site's width, as dash-dot was not
+    assert "dotted path" in planning.step_in_words(rejected) and "dashed path" in planning.step_in_words(fresh)
 
 
 def test_ratio_comparison_keeps_a_series_colour_in_every_panel_and_names_it_once():
