@@ -237,10 +237,13 @@ def test_ratio_comparison_draws_one_baseline_per_panel_on_one_log_scale():
     assert {"0.2", "0.5", "1", "2"} <= {t.get_text() for t in ax.get_yticklabels()}
     assert [t.get_text() for t in fig.legends[0].texts] == list(series)
     for panel, ratios_by_series in ((ax, series), (other, lazy)):
-        assert len(panel.containers) == len(ratios_by_series)  # a panel holds its own baseline's bars only
-        for container, (name, ratios) in zip(panel.containers, ratios_by_series.items()):
-            assert container.get_label() == name
-            np.testing.assert_allclose([p.get_height() for p in container.patches], list(ratios.values()))
+        points = [line for line in panel.lines if line.get_label() in ratios_by_series]
+        assert len(points) == len(ratios_by_series) and not panel.patches  # points, no bars: a log axis has no 0
+        for line, (name, ratios) in zip(points, ratios_by_series.items()):
+            assert line.get_label() == name and line.get_linestyle() == "None"
+            np.testing.assert_allclose(line.get_ydata(), list(ratios.values()))
+        (one,) = [line for line in panel.lines if line.get_label() not in ratios_by_series]
+        assert list(one.get_ydata()) == [1, 1]  # the line every ratio is read against
     close = timings.ratio_comparison({"total": {"ours": {"BS": 0.8, "OB": 1.2, "G": 1.6, "BT": 2.1}}}).axes[0]
     assert {"1", "1.5", "2"} <= {t.get_text() for t in close.get_yticklabels()}  # finer labels within a decade
 
@@ -268,8 +271,8 @@ def test_ratio_comparison_keeps_a_series_colour_in_every_panel_and_names_it_once
     samplers = ("BS", "OB", "G", "BT")
     full = {"2DS, sampling": dict.fromkeys(samplers, 0.5), "2DS, total": dict.fromkeys(samplers, 1.5)}
     fig = timings.ratio_comparison({"paper": full, "ours": {"2DS, total": dict.fromkeys(samplers, 2.0)}})
-    total_in_paper = fig.axes[0].containers[1][0].get_facecolor()  # the second series' first bar
-    total_in_ours = fig.axes[1].containers[0][0].get_facecolor()  # the only series' first bar
-    sampling_in_paper = fig.axes[0].containers[0][0].get_facecolor()
-    assert total_in_paper == total_in_ours != sampling_in_paper
+    total_in_paper, total_in_ours = (ax.lines[-2 if ax is fig.axes[0] else 0] for ax in fig.axes)  # "2DS, total"
+    sampling_in_paper = fig.axes[0].lines[0]
+    look = [(line.get_color(), line.get_marker(), line.get_xdata()[0]) for line in (total_in_paper, total_in_ours)]
+    assert look[0] == look[1] != (sampling_in_paper.get_color(), sampling_in_paper.get_marker(), look[0][2])
     assert [t.get_text() for t in fig.legends[0].get_texts()] == ["2DS, sampling", "2DS, total"]
