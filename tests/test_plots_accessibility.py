@@ -469,7 +469,9 @@ CHAPTER_FIGURES = (  # the figures chapters 04 and 05 show, read on the site at 
     "crossover.crossover",
     "planning.samplers",
     "planning.roadmap_steps",
+    "planning.sample_sets",
     "timings.ratio_comparison",
+    "reproduction.planning_times",
     "scenes.path_frame",
     "scenes.scene_still",
 )

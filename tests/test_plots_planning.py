@@ -14,7 +14,7 @@ from toolkit.experiments.queries import make_queries
 from toolkit.geometry.collision import exact_checker
 from toolkit.planning.paper_prm import PRM
 from toolkit.planning.prm import PlanStep, plan
-from toolkit.plots import palette, planning, timings
+from toolkit.plots import palette, planning, reproduction, timings
 
 SCENARIO = scenarios.get("2ds")
 
@@ -276,3 +276,26 @@ def test_ratio_comparison_keeps_a_series_colour_in_every_panel_and_names_it_once
     look = [(line.get_color(), line.get_marker(), line.get_xdata()[0]) for line in (total_in_paper, total_in_ours)]
     assert look[0] == look[1] != (sampling_in_paper.get_color(), sampling_in_paper.get_marker(), look[0][2])
     assert [t.get_text() for t in fig.legends[0].get_texts()] == ["2DS, sampling", "2DS, total"]
+
+
+QUARTILES = (("median", 1.0), ("q1", 0.8), ("q3", 1.5))
+
+
+def test_planning_times_names_each_bar_under_it_in_milliseconds():
+    """BS / BSF under their bars, not over them where the quartile whiskers end; times in ms, as the tables."""
+    stats = {  # sampler -> mode -> the median and quartiles of both times, in seconds
+        s: {
+            m: {f"{key}_{stat}": row[key] * f for key in ("sampling_s", "total_s") for stat, f in QUARTILES}
+            for m, row in modes.items()
+        }
+        for s, modes in MEDIANS.items()
+    }
+    fig = reproduction.planning_times(stats)
+    for ax, key in zip(fig.axes, ("sampling_s", "total_s")):
+        assert [t.get_text() for t in ax.get_xticklabels()] == [n for s in MEDIANS for n in (s, s + "F")]
+        bars = sorted(ax.patches, key=lambda p: p.get_x())
+        centres = [p.get_x() + p.get_width() / 2 for p in bars]
+        np.testing.assert_allclose(ax.get_xticks(), centres)  # each name at its own bar
+        heights = [1000 * MEDIANS[s][m][key] for s in MEDIANS for m in ("without", "with")]
+        np.testing.assert_allclose([p.get_height() for p in bars], heights)
+        assert "(ms)" in ax.get_ylabel() and not ax.texts

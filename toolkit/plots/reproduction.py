@@ -13,7 +13,7 @@ from toolkit.learning import metrics
 from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.cae import grid_part
-from toolkit.plots.palette import CATEGORICAL, COLORS, GREYS_CMAP, HATCHES, series_style
+from toolkit.plots.palette import CATEGORICAL, COLORS, GREYS_CMAP, HATCHES, PAGE_WIDTH, series_style
 
 MODES = ("without", "with")
 STATS = ("median", "q1", "q3")  # a time's summary over the queries (queries.summarize)
@@ -57,56 +57,58 @@ def _drawn(grid: np.ndarray) -> np.ndarray:
 def planning_times(planning: dict, title: str = "") -> Figure:
     """Sampling and total time per query, without / with prediction (the paper's Figures 5-7): the median over the
     queries, a whisker from the first to the third quartile (the paper draws means and stds; a single slow query
-    moves both, and a std bar can reach below zero)."""
-    fig = Figure(figsize=(9, 3.8))
-    axes = fig.subplots(1, 2)
+    moves both, and a std bar can reach below zero). Milliseconds, as the chapters' tables; each bar named under it
+    in the paper's way (BS without prediction, BSF with)."""
+    fig = Figure(figsize=(PAGE_WIDTH, 6.2))  # one panel a row, as wide as the page: its text as large as drawn
+    axes = fig.subplots(2, 1)
     samplers = list(planning)  # the paper's four, or the ones the run planned
     x = np.arange(len(samplers))
     said = []
     for ax, key, label in (
-        (axes[0], "sampling_s", "sampling time (s), median"),
-        (axes[1], "total_s", "total time per query (s), median"),
+        (axes[0], "sampling_s", "sampling time (ms), median"),
+        (axes[1], "total_s", "total time per query (ms), median"),
     ):
         for i, mode in enumerate(MODES):
-            median, q1, q3 = (np.array([planning[s][mode][f"{key}_{stat}"] for s in samplers]) for stat in STATS)
-            names = [s if mode == "without" else s + "F" for s in samplers]
-            spread = [median - q1, q3 - median]  # (2, samplers): whiskers down to q1, up to q3
-            bars = ax.bar(
-                x + (i - 0.5) * 0.38,
+            median, q1, q3 = (1000 * np.array([planning[s][mode][f"{key}_{stat}"] for s in samplers]) for stat in STATS)
+            ax.bar(
+                x + (i - 0.5) * 0.4,
                 median,
                 0.38,
-                yerr=spread,
+                yerr=[median - q1, q3 - median],  # (2, samplers): whiskers down to q1, up to q3
                 capsize=3,
                 color=CATEGORICAL[i],
                 hatch=HATCHES[i],
                 edgecolor=COLORS["ink"],
                 linewidth=0.5,
-                label=f"{mode} prediction",
+                label=f"{mode} prediction" + (" (F)" if mode == "with" else ""),
             )
-            ax.bar_label(bars, labels=names, fontsize=8, padding=2)
-        ax.set_xticks(x, samplers)
-        ax.set_xlabel("sampler")
-        ax.set_ylabel(label)
-        ax.legend(fontsize=8)
+        ticks = [(s, s + "F") for s in samplers]  # a name under each bar, where no whisker reaches
+        ax.set_xticks((x[:, None] + [-0.2, 0.2]).ravel(), [name for pair in ticks for name in pair], fontsize=9)
+        ax.set_xlabel("sampler, without and with prediction (F)")
+        ax.set_ylabel(label.replace(", median", ""))
+        ax.set_ylim(0, None)
+        ax.tick_params(axis="y", labelsize=9)
         said.append(
             f"{label}: "
             + ", ".join(
-                f"{s} {planning[s]['without'][key + '_median']:.3g} without, {planning[s]['with'][key + '_median']:.3g}"
-                " with"
+                f"{s} {1000 * planning[s]['without'][key + '_median']:.3g} without, "
+                f"{1000 * planning[s]['with'][key + '_median']:.3g} with"
                 for s in samplers
             )
         )
-    fig.suptitle(title or "Time with and without prediction")
-    fig.tight_layout()
+    fig.suptitle(title or "Time with and without prediction", fontsize=11)
+    handles, names = axes[0].get_legend_handles_labels()
+    fig.legend(handles, names, loc="upper center", bbox_to_anchor=(0.5, 0.955), ncol=2, fontsize=9, frameon=False)
+    fig.tight_layout(rect=(0, 0, 1, 0.92))  # the legend under the title, over no bar
     text = f"{title or 'Time with and without prediction'}: bars of the median over the queries, plain without"
     text += f" prediction and hatched with it, whiskers from quartile to quartile. {'; '.join(said)}."
     parts = [
         Part(
             label,
-            "seconds; the median over the queries, first and third quartile",
+            "milliseconds; the median over the queries, first and third quartile",
             ("sampler", *(f"{stat}, {mode}" for mode in MODES for stat in STATS)),
             tuple(
-                (s, *(f"{planning[s][mode][f'{key}_{stat}']:.3g}" for mode in MODES for stat in STATS))
+                (s, *(f"{1000 * planning[s][mode][f'{key}_{stat}']:.3g}" for mode in MODES for stat in STATS))
                 for s in samplers
             ),
         )
