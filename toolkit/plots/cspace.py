@@ -36,7 +36,7 @@ from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe, map_part
 from toolkit.plots.boxes import aabb_corners, add_box_3d
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
-from toolkit.plots.robot_drawing import POSITION_NAMES, draw_robot, few_ticks, link_colors
+from toolkit.plots.robot_drawing import dof_label, draw_robot, few_ticks, link_colors
 from toolkit.plots.slices import joint_bounds, slice_configs
 
 COLLISION_CMAP = ListedColormap([COLORS["free"], COLORS["occupied"]])  # 0: valid, 1: in collision (dark)
@@ -65,8 +65,7 @@ def checker_workspace(checker: CollisionChecker) -> Workspace:
 
 
 def _dof_label(robot: BoxRobot, index: int) -> str:
-    name = robot.dof_names[index]
-    return f"{name}" if name in POSITION_NAMES else f"{name} (rad)"
+    return dof_label(robot.dof_names[index])
 
 
 # -- workspaces and their grids --------------------------------------------------

@@ -128,7 +128,7 @@ def threshold_sweep(
     (:func:`toolkit.learning.metrics.threshold_sweep`); ``(N,)`` arrays. ``title`` names the model and samples."""
     ts = metrics.SWEEP
     rates = metrics.threshold_sweep(np.asarray(probability).reshape(-1), np.asarray(valid, dtype=bool).reshape(-1))
-    fig = Figure(figsize=(5, 3.6))
+    fig = Figure(figsize=(5, 4.2), layout="constrained")
     ax = fig.subplots()
     curves = {
         "accuracy": rates["acc"],
@@ -142,9 +142,8 @@ def threshold_sweep(
     ax.set_xlabel("threshold on P(valid)")
     ax.set_ylabel("share")
     ax.set_ylim(0, 1.02)
-    ax.legend(fontsize=8)
+    fig.legend(fontsize=9, loc="outside lower center", ncols=2, frameon=False)  # below the axes: it hides no curve
     ax.set_title(title, fontsize=10)
-    fig.tight_layout()
     best = int(np.argmax(curves["accuracy"]))
     text = "Accuracy, TPR and TNR of the MLP as the threshold on P(valid) moves from 0 to 1: accuracy is highest, "
     text += f"{curves['accuracy'][best]:.2f}, at threshold {ts[best]:.2f}"
