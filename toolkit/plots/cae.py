@@ -295,7 +295,24 @@ def latent_scatter(
         fig.colorbar(drawn, ax=list(axes), label=color_label)
     fig.suptitle(title, fontsize=11)
     text = f"{title}: {xlabel} across, {ylabel} up, one panel per group, the other groups grey behind it. "
-    return describe(fig, text + "; ".join(said) + ".")
+    parts = [
+        _cloud_part(name, np.asarray(xy), (xlabel, ylabel), color and (color_label, color[name]))
+        for name, xy in points.items()
+    ]
+    return describe(fig, text + "; ".join(said) + ".", parts)
+
+
+def _cloud_part(name: str, xy: np.ndarray, labels: tuple[str, str], value) -> Part:
+    """One group's panel of :func:`latent_scatter`: where its ``xy (n, 2)`` points lie (quartiles along each axis),
+    and the range of the ``value`` = ``(label, (n,))`` they are coloured by, if any."""
+    stats = ("lowest", "first quartile", "median", "third quartile", "highest")
+    columns = ("along", *stats)
+    rows = [
+        (label, *(f"{v:.3g}" for v in np.quantile(xy[:, k], (0, 0.25, 0.5, 0.75, 1)))) for k, label in enumerate(labels)
+    ]
+    if value:
+        rows.append((value[0] or "value", *(f"{v:.3g}" for v in np.quantile(value[1], (0, 0.25, 0.5, 0.75, 1)))))
+    return Part(f"{name} ({len(xy)})", f"where the {len(xy)} points of {name} lie", columns, tuple(rows))
 
 
 def _image(ax, grid: np.ndarray, title: str, alpha: float = 1.0) -> None:
