@@ -287,6 +287,7 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid: np.ndarray, path: np.ndarr
             label=name,
             clip_on=False,
             zorder=5,
+            path_effects=halo(0.0, ("free",)),  # a white ring: it shows on the map's dark side too
         )
 
 
