@@ -32,7 +32,9 @@ ERROR_COLORS = ListedColormap(
     [COLORS["phantom"], COLORS["missed"]]
 )  # -1: phantom block (free decoded occupied); +1: missed block
 ERROR_MARKERS = {"missed": "x", "phantom": "o"}  # a second cue on each wrong cell, in ink: x missed, o invented
-ERROR_INK = dict(fillstyle="none", mew=1.2)  # a ring, not a dot (in the legend too), and a stroke one sees
+ERROR_INK: dict[str, Any] = dict(
+    fillstyle="none", mew=1.2
+)  # a ring, not a dot (in the legend too), and a stroke one sees
 
 
 def training_curves(
