@@ -482,6 +482,7 @@ CHAPTER_FIGURES = (  # the figures chapters 02 to 05 show, read on the site at i
     "planning.samplers",
     "planning.roadmap_steps",
     "timings.stage_times",
+    "planning.sample_sets",
     "timings.ratio_comparison",
     "reproduction.planning_times",
     "scenes.path_frame",

@@ -4,6 +4,7 @@ import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 
 from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots import cae as plots
@@ -109,21 +110,24 @@ def test_contraction_shows_each_models_norms_and_mean_responses():
 def test_latent_scatter_has_one_point_per_workspace_at_its_coordinates(rng):
     points = {"seen": rng.normal(size=(30, 2)), "generated": rng.normal(size=(200, 2))}
     fig = plots.latent_scatter(points)
-    ax = fig.axes[0]
-    assert len(ax.collections) == 2
-    for collection, (name, xy) in zip(ax.collections, points.items()):
-        np.testing.assert_allclose(collection.get_offsets(), xy)
-        assert collection.get_label() == f"{name} ({len(xy)})"
-    assert (ax.get_xlabel(), ax.get_ylabel()) == ("PC 1", "PC 2")
+    assert len(fig.axes) == 2  # one panel a group, the others grey behind it: one cloud or two, read by eye
+    for ax, (name, xy), other in zip(fig.axes, points.items(), ("generated", "seen")):
+        rest, own = ax.collections
+        np.testing.assert_allclose(own.get_offsets(), xy)
+        np.testing.assert_allclose(rest.get_offsets(), points[other])
+        assert own.get_label() == f"{name} ({len(xy)})" and own.get_zorder() > rest.get_zorder()
+        assert ax.get_xlim() == fig.axes[0].get_xlim() and ax.get_ylim() == fig.axes[0].get_ylim()  # shared axes
+    assert (fig.axes[0].get_xlabel(), fig.axes[0].get_ylabel()) == ("PC 1", "PC 2")
 
 
 def test_latent_scatter_colors_each_workspace_by_its_value(rng):
     points = {"seen": rng.normal(size=(5, 2)), "unseen": rng.normal(size=(7, 2))}
     occupied = {"seen": rng.uniform(0.05, 0.2, 5), "unseen": rng.uniform(0.1, 0.3, 7)}
     fig = plots.latent_scatter(points, color=occupied, color_label="occupied share", highlight="seen")
-    ax, bar = fig.axes
-    assert ax.collections[0].get_sizes()[0] > ax.collections[1].get_sizes()[0]  # the highlighted group stands out
-    for collection, name in zip(ax.collections, points):
+    *panels, bar = fig.axes
+    owns = [ax.collections[-1] for ax in panels]
+    assert owns[0].get_sizes()[0] > owns[1].get_sizes()[0]  # the highlighted group stands out
+    for collection, name in zip(owns, points):
         np.testing.assert_allclose(collection.get_offsets(), points[name])
         np.testing.assert_allclose(collection.get_array(), occupied[name])
         assert collection.get_clim() == (
@@ -147,3 +151,29 @@ def test_the_boxes_long_names_wrap_apart():
     boxes = [t.get_window_extent(renderer) for t in labels]
     assert all(left.x1 + 2 < right.x0 for left, right in zip(boxes, boxes[1:]))  # pixels apart
     assert min(t.get_fontsize() for t in labels) >= 8
+
+
+def test_a_training_curve_under_another_stays_visible():
+    """Two histories that coincide: the one drawn first is wider, and their markers fall on different epochs."""
+    same = list(np.linspace(5.0, 1.0, 40))
+    ax = plots.training_curves({"lambda 0": same, "lambda 1e-3": same}).axes[0]
+    under, over = ax.get_lines()
+    assert under.get_linewidth() >= over.get_linewidth() + 2 and over.get_zorder() > under.get_zorder()
+    marked = [set(np.arange(40)[line.get_markevery()[0] :: line.get_markevery()[1]]) for line in (under, over)]
+    assert marked[0] and marked[1] and not marked[0] & marked[1]
+
+
+def test_reconstructions_wrong_cells_carry_marks_one_can_read_at_the_sites_width():
+    """31 x 31 grids as chapter 02 draws them: x and o at least 5 px across where the site shows the figure (the
+    figure is no wider than the page), rings not dots, in the legend too."""
+    rng = np.random.default_rng(0)
+    grids = np.where(rng.random((2, 31, 31)) < 0.3, 1.0, -1.0)
+    decoded = grids * np.where(rng.random(grids.shape) < 0.05, -1.0, 1.0)
+    fig = plots.reconstructions(grids, decoded, ["seen", "unseen"])
+    assert fig.get_figwidth() <= plots.PAGE_WIDTH
+    for row in fig.subfigs:
+        marks = row.axes[2].get_lines()
+        assert {m.get_marker() for m in marks} == {"x", "o"}
+        assert all(m.get_markersize() * 100 / 72 >= 5 and m.get_fillstyle() == "none" for m in marks)  # px at 100 dpi
+    shown = [m for m in fig.legends[0].findobj(Line2D) if m.get_marker() in ("x", "o")]  # what the legend draws
+    assert sorted(m.get_marker() for m in shown) == ["o", "x"] and {m.get_fillstyle() for m in shown} == {"none"}

@@ -5,6 +5,7 @@ import re
 
 import numpy as np
 import pytest
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.collections import PathCollection, PolyCollection
 from matplotlib.colors import to_rgba
 from matplotlib.contour import ContourSet
@@ -277,3 +278,50 @@ def test_figures_are_never_pyplot_figures(grid, probability, valid):
     before = plt.get_fignums()
     pc.threshold_view(probability, valid, grid, threshold=0.5)
     assert plt.get_fignums() == before
+
+
+def test_path_map_marks_start_and_goal_whole_on_the_maps_edge(grid, probability, valid):
+    path = np.array([[grid.lower[0], 2.0], [5.0, 3.0], [grid.upper[0], 28.0]])  # from the left edge to the right
+    fig = pc.path_map(probability, valid, grid, threshold=0.5, path=path, nodes=path, nodes_valid=np.ones(3, bool))
+    ax = fig.axes[0]
+    ends = {line.get_label(): line for line in ax.get_lines() if line.get_label() in ("start", "goal")}
+    assert [tuple(np.ravel(ends[n].get_xydata())) for n in ("start", "goal")] == [tuple(path[0]), tuple(path[-1])]
+    drawn = [*ends.values(), next(line for line in ax.get_lines() if line.get_marker() == "D")]
+    assert not any(line.get_clip_on() for line in drawn)  # an end's marker drawn whole, not cut by the frame
+    assert {"start", "goal"} <= {t.get_text() for t in fig.legends[0].get_texts()}
+
+
+def test_confusion_bars_keep_their_counts_inside_the_frame_and_name_every_rate():
+    predicted = np.array([True] * 50 + [False] * 3 + [True] * 2)
+    truth = np.array([True] * 51 + [False] * 4)
+    fig = pc.confusion_bars(predicted, truth)
+    ax_counts, ax_rates = fig.axes
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    fig.draw(renderer)
+    frame = ax_counts.get_window_extent(renderer)
+    assert all(frame.y1 - t.get_window_extent(renderer).y1 >= 2 for t in ax_counts.texts)  # "50" below the top edge
+    assert [t.get_text() for t in ax_rates.get_xticklabels()] == [
+        "accuracy",
+        "TPR (valid kept)",
+        "TNR (invalid rejected)",
+    ]
+    np.testing.assert_allclose(ax_rates.get_xticks(), [p.get_x() + p.get_width() / 2 for p in ax_rates.patches])
+    assert ax_rates.get_xlabel() == "measure"
+
+
+def test_an_angle_swept_on_a_map_is_labelled_in_radians(grid, probability, valid):
+    angles = slices.CSpaceSlice((2, 6), ("yaw", "joint1"), grid.axes, grid.lower, grid.upper, grid.configs)
+    ax = pc.probability_map(probability, valid, angles).axes[0]
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("yaw (rad)", "joint1 (rad)")
+    ax = pc.probability_map(probability, valid, grid).axes[0]
+    assert (ax.get_xlabel(), ax.get_ylabel()) == ("x", "y")  # a position: the workspace's units, as the axes say
+
+
+def test_the_threshold_sweeps_legend_lies_below_its_curves(probability, valid):
+    from toolkit.plots.reproduction import threshold_sweep
+
+    fig = threshold_sweep(probability, valid, 0.5)
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    fig.draw(renderer)
+    (legend,) = fig.legends
+    assert legend.get_window_extent(renderer).y1 <= fig.axes[0].get_window_extent(renderer).y0  # over no curve

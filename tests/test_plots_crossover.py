@@ -47,3 +47,15 @@ def test_a_tick_label_that_would_touch_its_neighbour_is_left_out_and_the_last_is
 
     assert _tick_labels(np.array([10, 25, 50, 100, 200, 350, 500.0])) == ["10", "25", "50", "100", "200", "", "500"]
     assert _tick_labels(np.array([1, 10, 100, 1000, 10000.0])) == ["1", "10", "100", "1,000", "10,000"]
+
+
+def test_the_decade_where_curves_cross_has_numbers_and_a_crossing_says_what_it_counts():
+    crossing = {**SWEEP, "exact_us": [0.2, 0.3, 0.5, 0.8], "learned_us": [0.6, 0.5, 0.45, 0.4]}
+    crossing["crossing"] = {"exact": {"value": 243.0}, "fcl": None}
+    fig = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"obstacles": crossing}})
+    ax = fig.axes[0]
+    shown = {t.get_text() for t in ax.get_yticklabels()}
+    assert {"0.2", "0.5", "1"} <= shown  # 0.2 to 0.8: the crossing's decade is labelled in plain numbers
+    assert [t.get_text() for t in ax.texts] == ["243 obstacles"]  # a number with what it counts
+    assert "the curves cross (dotted)" in [t.get_text() for t in fig.legends[0].get_texts()]
+    assert not any(line.get_clip_on() for line in ax.lines if line.get_marker() not in ("None", "")), "edge marks"

@@ -7,7 +7,7 @@ against python-fcl), so a figure that drew the wrong cells would fail.
 
 import numpy as np
 import pytest
-from matplotlib.colors import to_rgba
+from matplotlib.colors import to_hex, to_rgba
 from matplotlib.figure import Figure
 from matplotlib.patches import Polygon, Rectangle
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
@@ -21,7 +21,7 @@ from toolkit.geometry.collision import (
     SeparatingAxisChecker,
 )
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots import boxes, cspace, robot_drawing, slices
+from toolkit.plots import boxes, cspace, palette, robot_drawing, slices
 from toolkit.plots.palette import CATEGORICAL
 
 
@@ -121,7 +121,7 @@ def test_workspace_figure_3d_draws_each_block_at_its_corners(recorded_polys):
         corners = block.faces3d.reshape(-1, 3)  # (6 faces * 4, 3)
         np.testing.assert_allclose(corners.min(axis=0), lo)
         np.testing.assert_allclose(corners.max(axis=0), hi)
-    legend = [t.get_text() for t in fig.axes[0].get_legend().get_texts()]
+    legend = [t.get_text() for t in fig.legends[0].get_texts()]  # below the view, over no block
     assert legend == sorted(set(ws.labels))
 
 
@@ -312,3 +312,17 @@ def test_configuration_near_blocks_is_the_valid_sample_closest_to_a_block(clutte
 
     assert checker.is_valid(q)
     assert block_distance(q) == pytest.approx(min(block_distance(c) for c in Q))
+
+
+def test_the_offices_cabinets_and_desks_differ_in_lightness_and_their_hatches_show():
+    """Boxes of about one size, told apart at the site's width: colours at least 3:1 apart, hatches drawn thick."""
+    office = scenarios.get("3do").make_workspace(np.random.default_rng(1))
+    fig = cspace.workspace_figure(office)
+    ax = fig.axes[0]
+    faces = {}
+    for label, block in zip(office.labels, [c for c in ax.collections if c.get_gid() == "block"]):
+        faces.setdefault(label, block)
+    cabinet, desk = (to_hex(faces[k].get_facecolor()[0][:3]) for k in ("cabinet", "desk"))
+    assert palette.contrast(cabinet, desk) >= 3.0
+    assert all(block.get_hatch() and block.get_hatch_linewidth() >= 1.2 for k, block in faces.items() if k != "cabinet")
+    assert fig.get_figwidth() <= palette.PAGE_WIDTH and fig.legends  # the legend below the view, over no block

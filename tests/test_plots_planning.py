@@ -4,6 +4,7 @@ import dataclasses
 
 import numpy as np
 import pytest
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.collections import LineCollection
 from matplotlib.colors import to_rgba, to_rgba_array
 from matplotlib.figure import Figure
@@ -13,7 +14,7 @@ from toolkit.experiments.queries import make_queries
 from toolkit.geometry.collision import exact_checker
 from toolkit.planning.paper_prm import PRM
 from toolkit.planning.prm import PlanStep, plan
-from toolkit.plots import alt, planning, reproduction, timings
+from toolkit.plots import alt, palette, planning, reproduction, timings
 from toolkit.plots.palette import PAGE_WIDTH
 
 SCENARIO = scenarios.get("2ds")
@@ -71,7 +72,7 @@ def test_samplers_one_panel_per_sampler_with_its_samples_over_the_blocks(exact, 
     assert isinstance(fig, Figure) and len(fig.axes) == 4
     for ax, (name, Q) in zip(fig.axes, samples.items()):
         np.testing.assert_array_equal(ax.collections[0].get_offsets(), Q)
-        assert ax.get_title() == f"{name}: {len(Q)} sample{'' if len(Q) == 1 else 's'} of 200 attempts"
+        assert ax.get_title() == f"{name}:\n{len(Q)} sample{'' if len(Q) == 1 else 's'} of 200 attempts"
         blocks = [(p.get_xy(), p.get_width(), p.get_height()) for p in ax.patches[:-1]]  # the last: the bounds
         assert [
             (tuple(lo), w, h) for lo, (w, h) in zip(query.workspace.boxes[:, 0], np.ptp(query.workspace.boxes, axis=1))
@@ -88,7 +89,13 @@ def test_sample_sets_marks_accepted_samples_that_are_truly_in_collision(exact, r
     np.testing.assert_array_equal(kept.get_offsets(), S[accepted & truth])
     np.testing.assert_array_equal(wrong.get_offsets(), S[accepted & ~truth])
     assert len(S[accepted & ~truth]) > 0 and is_color(wrong.get_facecolors(), planning.REPAIR_COLOR).all()
-    assert f"S', truly in collision: {(accepted & ~truth).sum()}" in [t.get_text() for t in ax.get_legend().texts]
+    fig = ax.figure
+    assert f"S', truly in collision: {(accepted & ~truth).sum()}" in [t.get_text() for t in fig.legends[0].texts]
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    fig.draw(renderer)
+    assert not fig.legends[0].get_window_extent(renderer).overlaps(ax.get_window_extent(renderer))  # hides no sample
+    assert not any(c.get_clip_on() for c in (rejected, kept, wrong))  # a sample on the C-space's edge drawn whole
+    assert rejected.get_sizes()[0] >= 20 and palette.contrast("rejected", "c_obstacle") >= 4.5  # seen on a block
 
 
 def a_repair_step() -> PlanStep:
@@ -143,6 +150,17 @@ def test_roadmap_of_a_real_plan_draws_as_many_edges_as_the_roadmap_has(exact, qu
     assert len(kept) == len(result.roadmap.edges) > 0 and len(removed) == 0
     assert is_color(ax.lines[0].get_color(), planning.PATH_STYLES["path"][0]).all()
     assert ax.lines[0].get_linestyle() == "-"  # the returned path solid, a candidate dashed
+
+
+def test_roadmap_names_every_mark_and_draws_start_and_goal_whole_and_large(exact):
+    step = a_repair_step()
+    fig = planning.roadmap(exact, step)
+    ax = fig.axes[0]
+    named = [t.get_text() for t in fig.legends[0].texts]
+    assert {"edge removed by a repair", "node removed by a repair", "start", "goal"} <= set(named)
+    nodes, *_, start, goal = [c for c in ax.collections if not isinstance(c, LineCollection)]
+    assert [start.get_clip_on(), goal.get_clip_on()] == [False, False]  # whole where they lie on the edge
+    assert goal.get_sizes()[0] >= 10 * nodes.get_sizes()[0] and start.get_sizes()[0] >= 4 * nodes.get_sizes()[0]
 
 
 def test_roadmap_steps_one_panel_per_step(exact):
@@ -242,10 +260,13 @@ def test_ratio_comparison_draws_one_baseline_per_panel_on_one_log_scale():
     assert {"0.2", "0.5", "1", "2"} <= {t.get_text() for t in ax.get_yticklabels()}
     assert [t.get_text() for t in fig.legends[0].texts] == list(series)
     for panel, ratios_by_series in ((ax, series), (other, lazy)):
-        assert len(panel.containers) == len(ratios_by_series)  # a panel holds its own baseline's bars only
-        for container, (name, ratios) in zip(panel.containers, ratios_by_series.items()):
-            assert container.get_label() == name
-            np.testing.assert_allclose([p.get_height() for p in container.patches], list(ratios.values()))
+        points = [line for line in panel.lines if line.get_label() in ratios_by_series]
+        assert len(points) == len(ratios_by_series) and not panel.patches  # points, no bars: a log axis has no 0
+        for line, (name, ratios) in zip(points, ratios_by_series.items()):
+            assert line.get_label() == name and line.get_linestyle() == "None"
+            np.testing.assert_allclose(line.get_ydata(), list(ratios.values()))
+        (one,) = [line for line in panel.lines if line.get_label() not in ratios_by_series]
+        assert list(one.get_ydata()) == [1, 1]  # the line every ratio is read against
     close = timings.ratio_comparison({"total": {"ours": {"BS": 0.8, "OB": 1.2, "G": 1.6, "BT": 2.1}}}).axes[0]
     assert {"1", "1.5", "2"} <= {t.get_text() for t in close.get_yticklabels()}  # finer labels within a decade
 
@@ -264,8 +285,8 @@ def test_a_rejected_candidate_and_a_fresh_one_differ_in_line_style_not_only_in_s
     rejected = a_repair_step()
     fresh = dataclasses.replace(rejected, stage="candidate", removed_nodes=np.zeros(0, int))
     styles = [planning.roadmap(exact, step).axes[0].lines[0].get_linestyle() for step in (rejected, fresh)]
-    assert styles == ["-.", "--"]
-    assert "dash-dotted path" in planning.step_in_words(rejected) and "dashed path" in planning.step_in_words(fresh)
+    assert styles == [":", "--"]  # dotted against dashed: told apart at the site's width, as dash-dot was not
+    assert "dotted path" in planning.step_in_words(rejected) and "dashed path" in planning.step_in_words(fresh)
 
 
 def test_ratio_comparison_keeps_a_series_colour_in_every_panel_and_names_it_once():
@@ -273,10 +294,10 @@ def test_ratio_comparison_keeps_a_series_colour_in_every_panel_and_names_it_once
     samplers = ("BS", "OB", "G", "BT")
     full = {"2DS, sampling": dict.fromkeys(samplers, 0.5), "2DS, total": dict.fromkeys(samplers, 1.5)}
     fig = timings.ratio_comparison({"paper": full, "ours": {"2DS, total": dict.fromkeys(samplers, 2.0)}})
-    total_in_paper = fig.axes[0].containers[1][0].get_facecolor()  # the second series' first bar
-    total_in_ours = fig.axes[1].containers[0][0].get_facecolor()  # the only series' first bar
-    sampling_in_paper = fig.axes[0].containers[0][0].get_facecolor()
-    assert total_in_paper == total_in_ours != sampling_in_paper
+    total_in_paper, total_in_ours = (ax.lines[-2 if ax is fig.axes[0] else 0] for ax in fig.axes)  # "2DS, total"
+    sampling_in_paper = fig.axes[0].lines[0]
+    look = [(line.get_color(), line.get_marker(), line.get_xdata()[0]) for line in (total_in_paper, total_in_ours)]
+    assert look[0] == look[1] != (sampling_in_paper.get_color(), sampling_in_paper.get_marker(), look[0][2])
     assert [t.get_text() for t in fig.legends[0].get_texts()] == ["2DS, sampling", "2DS, total"]
 
 
@@ -299,3 +320,26 @@ def test_the_paper_style_times_stack_their_panels_and_cut_a_far_whisker_too():
     end = 1e3 * planning["BT"]["with"]["sampling_s_q3"]
     assert sampling.get_ylim()[1] < end and f"{end:.3g}" in [t.get_text() for t in sampling.texts]
     assert f"BTF to {end:.3g} ms" in alt.alt_text(fig) and not total.texts  # the totals' whiskers all fit
+
+
+QUARTILES = (("median", 1.0), ("q1", 0.8), ("q3", 1.5))
+
+
+def test_planning_times_names_each_bar_under_it_in_milliseconds():
+    """BS / BSF under their bars, not over them where the quartile whiskers end; times in ms, as the tables."""
+    stats = {  # sampler -> mode -> the median and quartiles of both times, in seconds
+        s: {
+            m: {f"{key}_{stat}": row[key] * f for key in ("sampling_s", "total_s") for stat, f in QUARTILES}
+            for m, row in modes.items()
+        }
+        for s, modes in MEDIANS.items()
+    }
+    fig = reproduction.planning_times(stats)
+    for ax, key in zip(fig.axes, ("sampling_s", "total_s")):
+        assert [t.get_text() for t in ax.get_xticklabels()] == [n for s in MEDIANS for n in (s, s + "F")]
+        bars = sorted(ax.patches, key=lambda p: p.get_x())
+        centres = [p.get_x() + p.get_width() / 2 for p in bars]
+        np.testing.assert_allclose(ax.get_xticks(), centres)  # each name at its own bar
+        heights = [1000 * MEDIANS[s][m][key] for s in MEDIANS for m in ("without", "with")]
+        np.testing.assert_allclose([p.get_height() for p in bars], heights)
+        assert "(ms)" in ax.get_ylabel() and not ax.texts

@@ -180,6 +180,23 @@ def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose
     assert drawn == {"sample, valid": int(valid.sum()), "sample, in collision": int((~valid).sum())}
     names = [t.get_text() for t in fig.legends[0].get_texts()]
     assert "robot: start" in names and "robot, valid" in names and "robot, in collision" in names
+    for close_up in (start, end):  # the robot seen whole: no sample over it, its links told apart, the trace dashed
+        assert not [c for c in close_up.collections if c.get_label().startswith("sample")]
+        parts = links(close_up)
+        assert {float(c.get_linewidth()[0]) for c in parts} == {1.0}
+        assert len(parts) < 2 or parts[0].get_alpha() != parts[1].get_alpha()
+    assert all(line.get_linestyle() == "--" for ax in fig.axes for line in ax.get_lines())
+
+
+def test_a_stills_model_wrong_star_is_hollow_round_the_mark_it_flags(crossing):
+    robot, workspace, _, path, valid = crossing
+    points = robot.link_boxes(path)[0][:, 0]  # (T, 3)
+    wrong = np.arange(len(points)) % 3 == 0
+    kinds = {"valid": valid, "in collision": ~valid, "model wrong": wrong}
+    overview = scenes.scene_still(robot, workspace, {}, samples=(points, kinds)).axes[0]
+    (stars,) = [c for c in overview.collections if c.get_label() == "sample, model wrong"]
+    assert len(stars.get_facecolor()) == 0 or stars.get_facecolor()[0][3] == 0  # the circle or diamond shows inside
+    assert stars.get_sizes()[0] > 4 * scenes.SAMPLE_MARKS["valid"][2]  # round the mark, larger than it
     with pytest.raises(ValueError, match="drawn in 3D"):
         scenes.scene_still(scenarios.get("2ds").robot, workspace, {})
 

@@ -35,23 +35,31 @@ ERROR_COLORS = ListedColormap(
     [COLORS["phantom"], COLORS["missed"]]
 )  # -1: phantom block (free decoded occupied); +1: missed block
 ERROR_MARKERS = {"missed": "x", "phantom": "o"}  # a second cue on each wrong cell, in ink: x missed, o invented
+ERROR_INK: dict[str, Any] = dict(
+    fillstyle="none", mew=1.2
+)  # a ring, not a dot (in the legend too), and a stroke one sees
 
 
 def training_curves(
     histories: dict[str, list[float]], *, ylabel: str = "loss of Eq. (1), mean per epoch", log: bool = True
 ) -> Figure:
-    """One line per named history (e.g. ``TrainedModels.history["cae"]``), epochs 1, 2, ... on x."""
-    fig = Figure(figsize=(6.4, 3.6))
+    """One line per named history (e.g. ``TrainedModels.history["cae"]``), epochs 1, 2, ... on x. Two curves that
+    coincide stay visible: each later line is drawn thinner over the earlier ones, and their markers take turns."""
+    fig = Figure(figsize=(PAGE_WIDTH, 3.6))
     ax = fig.subplots()
+    n = len(histories)
     for k, (name, history) in enumerate(histories.items()):
-        style = series_style(k) | dict(markevery=max(1, len(history) // 8), markersize=4)
-        ax.plot(np.arange(1, len(history) + 1), history, label=name, **style)
+        every = max(1, len(history) // 8)  # about 8 markers a line, each line's shifted: never over each other's
+        style = series_style(k) | dict(
+            markevery=(k * every // n, every), markersize=6, linewidth=1.2 + 3.0 * (n - 1 - k) / max(n - 1, 1)
+        )
+        ax.plot(np.arange(1, len(history) + 1), history, label=name, zorder=2 + k, **style)
     if log:
         ax.set_yscale("log")
     ax.set_xlabel("epoch")
     ax.set_ylabel(ylabel)
-    ax.legend(fontsize=8)
-    ax.set_title("CAE training curves")
+    ax.legend(fontsize=9)
+    ax.set_title("CAE training curves (a line drawn over another is thinner)", fontsize=10)
     fig.tight_layout()
     said = "; ".join(
         f"{name}: {len(h)} epochs, from {h[0]:.3g} to {h[-1]:.3g} (lowest {min(h):.3g})"
@@ -81,20 +89,21 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
             f"{decoded.shape}, {len(names)} names"
         )
     accuracy = reconstruction_accuracy(decoded, grids)  # (W,)
-    fig = Figure(figsize=(PAGE_WIDTH, 2.7 * len(grids)), layout="constrained")
+    fig = Figure(figsize=(PAGE_WIDTH, 3.4 * len(grids) + 0.3), layout="constrained")
     rows = fig.subfigures(len(grids), 1, squeeze=False)[:, 0]  # (W,) one row per workspace
     said, parts = [], []
     for row, grid, out, name, acc in zip(rows, grids, decoded, names, accuracy):
         errors = error_cells(grid, out)
         missed, phantom = int(np.sum(errors & (grid > 0))), int(np.sum(errors & (grid < 0)))
-        axes = row.subplots(1, 3)
+        axes = row.subplots(1, 3, width_ratios=(1, 1, 2))  # the wrong cells twice as large: their x and o legible
         _image(axes[0], grid, "input")
         _image(axes[1], np.where(out > 0, 1.0, -1.0), "decoded (sign)")
         _image(axes[2], grid, f"{missed} missed, {phantom} invented", alpha=0.25)
         axes[2].imshow(np.ma.masked_array(grid, ~errors).T, origin="lower", cmap=ERROR_COLORS, vmin=-1, vmax=1)
+        cell = 72 * 0.45 * fig.get_figwidth() / max(grid.shape)  # points a cell, about: the panel is half the row
         for kind, wrong in (("missed", errors & (grid > 0)), ("phantom", errors & (grid < 0))):
             x, y = np.nonzero(wrong)
-            axes[2].plot(x, y, ERROR_MARKERS[kind], color=COLORS["ink"], markersize=3, fillstyle="none", mew=0.7)
+            axes[2].plot(x, y, ERROR_MARKERS[kind], color=COLORS["ink"], markersize=0.7 * cell, **ERROR_INK)
         all_free = np.mean(grid < 0)
         row.suptitle(f"{name}: {acc:.1%} of cells right (all free: {all_free:.1%})", fontsize=10)
         said.append(
@@ -103,7 +112,10 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
         )
         parts.append(grid_part(name, said[-1], grid, out))
     handles: list[Any] = [  # the cell's colour with its marker on it
-        (Patch(facecolor=COLORS[kind]), Line2D([], [], marker=ERROR_MARKERS[kind], color=COLORS["ink"], linestyle=""))
+        (
+            Patch(facecolor=COLORS[kind]),
+            Line2D([], [], marker=ERROR_MARKERS[kind], color=COLORS["ink"], linestyle="", markersize=7, **ERROR_INK),
+        )
         for kind in ("missed", "phantom")
     ]
     labels = ["missed block (x)", "invented block (o)"]
@@ -277,38 +289,60 @@ def latent_scatter(
 ) -> Figure:
     """One marker per workspace: ``points[group]`` is ``(n, 2)``, e.g. the first two principal components of ``z``.
 
-    ``color[group]`` ``(n,)`` (optional): a value per workspace shown on one shared color
-    scale (e.g. its share of occupied cells); the groups then differ by marker.
-    ``highlight``: a group drawn with larger, thick black-edged markers on top of the others (e.g. the few training
-    workspaces); the legend lies below the axes, over no point.
+    One panel per group on shared axes, the other groups' points grey behind it: whether the groups form one cloud
+    reads from where the colour lies on the grey, not from telling hundreds of small markers apart by shape.
+    ``color[group]`` ``(n,)`` (optional): a value per workspace shown on one shared colour scale (e.g. its share of
+    occupied cells). ``highlight``: a group drawn with larger, thick black-edged markers (e.g. a few training
+    workspaces).
     """
-    fig = Figure(figsize=(PAGE_WIDTH if color else 5.6, 5.2), layout="constrained")
-    ax = fig.subplots()
+    fig = Figure(figsize=(PAGE_WIDTH, 3.6 if len(points) > 1 else 5.2), layout="constrained")
+    axes = fig.subplots(1, len(points), squeeze=False, sharex=True, sharey=True)[0]
     if color:
         low, high = min(np.min(c) for c in color.values()), max(np.max(c) for c in color.values())
     said = []
-    for k, (name, xy) in enumerate(points.items()):
+    for k, (ax, (name, xy)) in enumerate(zip(axes, points.items())):
         xy = np.asarray(xy)
+        others = [np.asarray(v) for other, v in points.items() if other != name]
+        if others:  # the rest, grey and small, behind: where this group lies among them
+            rest = np.concatenate(others)  # (m, 2)
+            ax.scatter(rest[:, 0], rest[:, 1], s=6, color=COLORS["reference"], alpha=0.5, linewidths=0, zorder=1)
         big = name == highlight
-        style: dict[str, Any] = dict(
-            s=70 if big else 16, edgecolors=COLORS["ink"], linewidths=1.6 if big else 0.3, zorder=3 if big else 2
-        )
+        style: dict[str, Any] = dict(s=60 if big else 14, edgecolors=COLORS["ink"], linewidths=1.4 if big else 0.3)
         style.update(marker=MARKERS[k % len(MARKERS)], c=series_style(k)["color"])
         if color:
             style.update(c=color[name], cmap=SEQUENTIAL_CMAP, vmin=low, vmax=high)
-        drawn = ax.scatter(xy[:, 0], xy[:, 1], label=f"{name} ({len(xy)})", alpha=0.95 if big else 0.75, **style)
+        drawn = ax.scatter(xy[:, 0], xy[:, 1], label=f"{name} ({len(xy)})", alpha=0.9, zorder=2, **style)
+        ax.set_title(f"{name} ({len(xy)})" + ("\nthe others grey" if others else ""), fontsize=10)
+        ax.set_xlabel(xlabel)
+        ax.set_ylabel(ylabel if k == 0 else "")
+        ax.tick_params(labelsize=9)
         where = f"{name}: {len(xy)} workspaces ({style['marker']} markers{', larger' if big else ''}) around "
         where += f"({np.mean(xy[:, 0]):.3g}, {np.mean(xy[:, 1]):.3g})"
         if color:
             where += f", {color_label or 'value'} {np.min(color[name]):.3g} to {np.max(color[name]):.3g}"
         said.append(where)
     if color:
-        fig.colorbar(drawn, ax=ax, label=color_label)
-    ax.set_xlabel(xlabel)
-    ax.set_ylabel(ylabel)
-    ax.set_title(title)
-    fig.legend(loc="outside lower center", ncols=len(points), fontsize=9, frameon=False)
-    return describe(fig, f"{title}: {xlabel} across, {ylabel} up. " + "; ".join(said) + ".")
+        fig.colorbar(drawn, ax=list(axes), label=color_label)
+    fig.suptitle(title, fontsize=11)
+    text = f"{title}: {xlabel} across, {ylabel} up, one panel per group, the other groups grey behind it. "
+    parts = [
+        _cloud_part(name, np.asarray(xy), (xlabel, ylabel), color and (color_label, color[name]))
+        for name, xy in points.items()
+    ]
+    return describe(fig, text + "; ".join(said) + ".", parts)
+
+
+def _cloud_part(name: str, xy: np.ndarray, labels: tuple[str, str], value) -> Part:
+    """One group's panel of :func:`latent_scatter`: where its ``xy (n, 2)`` points lie (quartiles along each axis),
+    and the range of the ``value`` = ``(label, (n,))`` they are coloured by, if any."""
+    stats = ("lowest", "first quartile", "median", "third quartile", "highest")
+    columns = ("along", *stats)
+    rows = [
+        (label, *(f"{v:.3g}" for v in np.quantile(xy[:, k], (0, 0.25, 0.5, 0.75, 1)))) for k, label in enumerate(labels)
+    ]
+    if value:
+        rows.append((value[0] or "value", *(f"{v:.3g}" for v in np.quantile(value[1], (0, 0.25, 0.5, 0.75, 1)))))
+    return Part(f"{name} ({len(xy)})", f"where the {len(xy)} points of {name} lie", columns, tuple(rows))
 
 
 def _image(ax, grid: np.ndarray, title: str, alpha: float = 1.0) -> None:

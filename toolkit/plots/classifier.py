@@ -40,6 +40,7 @@ from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
 from toolkit.plots.cell_marks import draw_cell_marks, fit_cell_marks
 from toolkit.plots.palette import CATEGORICAL, COLORS, GREY_CMAP, HATCHES, PAGE_WIDTH, halo, series_style
+from toolkit.plots.robot_drawing import dof_label
 from toolkit.plots.slices import CSpaceSlice
 
 DANGEROUS, CONSERVATIVE, BOUNDARY = COLORS["dangerous"], COLORS["conservative"], COLORS["boundary"]
@@ -268,7 +269,21 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid: np.ndarray, path: np.ndarr
         markersize=7,
         label="returned path (checked exactly)",
         path_effects=halo(2.5),
+        clip_on=False,  # whole where it ends on the map's edge
     )
+    for end, marker, size, name in ((0, "s", 11, "start"), (-1, "*", 20, "goal")):  # as chapter 04's roadmaps
+        ax.plot(
+            path[end, x],
+            path[end, y],
+            marker,
+            color=COLORS["endpoint"],
+            markeredgecolor=COLORS["free"],
+            markersize=size,
+            label=name,
+            clip_on=False,
+            zorder=5,
+            path_effects=halo(0.0, ("free",)),  # a white ring: it shows on the map's dark side too
+        )
 
 
 def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):
@@ -298,8 +313,8 @@ def _draw_boundary(ax, valid, grid: CSpaceSlice) -> None:
     if valid.any() and not valid.all():
         contour = ax.contour(*grid.axes, valid.T.astype(float), levels=[0.5], colors=BOUNDARY, linewidths=1.2)
         contour.set_path_effects(halo(1.2))
-    ax.set_xlabel(grid.names[0])
-    ax.set_ylabel(grid.names[1])
+    ax.set_xlabel(dof_label(grid.names[0]))  # an angle with its unit, radians
+    ax.set_ylabel(dof_label(grid.names[1]))
 
 
 def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
@@ -333,8 +348,9 @@ def _legend(fig: Figure, handles: list) -> None:
 def _draw_counts(ax, predicted_valid, valid) -> None:
     counts = confusion_counts(predicted_valid, valid)
     bars = ax.bar(range(len(counts)), list(counts.values()), color=ANSWER_COLORS, edgecolor=COLORS["ink"])
-    ax.bar_label(bars, fontsize=8)
-    ax.set_xticks(range(len(counts)), [a.replace(" ", "\n", 1) for a in ANSWERS], fontsize=8)
+    ax.bar_label(bars, fontsize=9, padding=2)
+    ax.set_ylim(0, 1.18 * max(max(counts.values()), 1))  # room above the tallest bar for its count, inside the frame
+    ax.set_xticks(range(len(counts)), [a.replace(" ", "\n", 1) for a in ANSWERS], fontsize=9)
     ax.set_xlabel("answer")
     ax.set_ylabel("configurations")
     rates = metrics.classification(np.ravel(predicted_valid), np.ravel(valid))
@@ -356,12 +372,18 @@ def _draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
             label=label,
         )
         ax.bar_label(bars, fmt="%.2f", fontsize=8, rotation=90 if len(scores) > 3 else 0, padding=2)  # upright: apart
-    ax.set_xticks(x, list(scores), fontsize=8)
-    ax.set_xlabel("model" if len(scores) > 1 or any(scores) else "")
+    alone = len(scores) == 1 and not any(scores)  # one unnamed model: each bar named under it, no legend needed
+    if alone:
+        ax.set_xticks(x[0] + (np.arange(len(keys)) - 1) * width, labels, fontsize=9)
+        ax.set_xlabel("measure")
+    else:
+        ax.set_xticks(x, list(scores), fontsize=8)
+        ax.set_xlabel("model")
     ax.set_ylim(0, 1.35 if len(scores) <= 3 else 1.55)  # room for the labels and the legend above the bars
     ax.set_yticks(np.linspace(0, 1, 6))
     ax.set_ylabel("share")
-    ax.legend(fontsize=8, loc="upper center", ncols=2, frameon=False)
+    if not alone:
+        ax.legend(fontsize=8, loc="upper center", ncols=2, frameon=False)
 
 
 def _draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> str:

@@ -91,7 +91,8 @@ def _panel(ax, sweep: dict) -> None:
     for name in ("exact", "fcl", "learned"):
         style, colour, label = STYLES[name]
         outline = halo(1.5) if name == "learned" else []  # orange alone is too light on white
-        ax.plot(x, np.asarray(sweep[f"{name}_us"], float), style, color=colour, label=label, path_effects=outline)
+        y = np.asarray(sweep[f"{name}_us"], float)  # (V,)
+        ax.plot(x, y, style, color=colour, label=label, path_effects=outline, clip_on=False)  # edge markers whole
     bounds = _halfway(x)  # (V+1,)
     for n, i in enumerate(np.flatnonzero(cheaper)):  # a band round each value the verdict calls "network cheaper"
         legend = f"network cheaper by > {CLOSE:.0%}" if n == 0 else None
@@ -99,19 +100,40 @@ def _panel(ax, sweep: dict) -> None:
         ax.fill_between(
             span, 0, 1, transform=ax.get_xaxis_transform(), color=COLORS["learned"], alpha=0.2, lw=0, label=legend
         )
+    unit = sweep["label"].split()[0]  # what the variable counts: "243 obstacles", not a bare "243"
     for name, found in sweep["crossing"].items():
         if found is not None:
-            ax.axvline(found["value"], ls=":", color=STYLES[name][1])
+            ax.axvline(found["value"], ls=":", color=STYLES[name][1], label="the curves cross (dotted)")
+            right = np.log(found["value"] / x[0]) > np.log(x[-1] / x[0]) / 2  # then its words go to the left
             ax.annotate(
-                f"{found['value']:,.3g}", (found["value"], 0.02), xycoords=("data", "axes fraction"), fontsize=8
+                f"{found['value']:,.3g} {unit}",
+                (found["value"], 0.97),
+                xycoords=("data", "axes fraction"),
+                xytext=(-3 if right else 3, 0),
+                ha="right" if right else "left",
+                va="top",
+                textcoords="offset points",
+                fontsize=8,
+                path_effects=halo(0.0, ("free",)),  # readable over a curve, which it does not hide
             )
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xticks(x, _tick_labels(x))
     ax.minorticks_off()
+    _plain_log_ticks(ax)
     ax.set_xlabel(sweep["label"])
     ax.set_ylabel("µs per configuration")
     ax.tick_params(labelsize=9)
+
+
+def _plain_log_ticks(ax) -> None:
+    """The y axis labelled in plain numbers at 1-2-5 steps (0.2, 0.5, 1, 2, ...) where it spans under three decades,
+    at each decade otherwise: the decade where curves cross is never left without a number."""
+    lo, hi = ax.get_ylim()
+    steps = (1, 2, 5) if hi / lo < 10**2.5 else (1,)
+    decades = range(int(np.floor(np.log10(lo))), int(np.ceil(np.log10(hi))) + 1)
+    ticks = [m * 10.0**e for e in decades for m in steps if lo <= m * 10.0**e <= hi]
+    ax.set_yticks(ticks, [f"{t:g}" for t in ticks])
 
 
 def _cheaper(sweep: dict) -> np.ndarray:
@@ -129,7 +151,7 @@ def _halfway(x: np.ndarray) -> np.ndarray:
     return np.concatenate([[x[0] ** 2 / middle[0]], middle, [x[-1] ** 2 / middle[-1]]])
 
 
-def _tick_labels(x: np.ndarray, panel_px: float = 220.0, char_px: float = 7.0) -> list[str]:
+def _tick_labels(x: np.ndarray, panel_px: float = 200.0, char_px: float = 7.0) -> list[str]:
     """The measured values ``x (n,)`` as tick labels on a log axis about ``panel_px`` wide, a label left out where it
     would touch the one before it (9-pt digits about ``char_px`` wide); the last value is always named."""
     labels = [f"{v:,.0f}" for v in x]

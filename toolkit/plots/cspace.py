@@ -36,7 +36,7 @@ from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe, map_part
 from toolkit.plots.boxes import aabb_corners, add_box_3d
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
-from toolkit.plots.robot_drawing import POSITION_NAMES, draw_robot, few_ticks, link_colors
+from toolkit.plots.robot_drawing import dof_label, draw_robot, few_ticks, link_colors
 from toolkit.plots.slices import joint_bounds, slice_configs
 
 COLLISION_CMAP = ListedColormap([COLORS["free"], COLORS["occupied"]])  # 0: valid, 1: in collision (dark)
@@ -65,11 +65,14 @@ def checker_workspace(checker: CollisionChecker) -> Workspace:
 
 
 def _dof_label(robot: BoxRobot, index: int) -> str:
-    name = robot.dof_names[index]
-    return f"{name}" if name in POSITION_NAMES else f"{name} (rad)"
+    return dof_label(robot.dof_names[index])
 
 
 # -- workspaces and their grids --------------------------------------------------
+
+
+KIND_ORDER = (0, 1, 5, 3, 4, 2)  # the office's kinds in CATEGORICAL's colours and hatches: blue and sky blue go to
+# cabinets and walls, tall boxes and long slabs, not to cabinets and desks, boxes of about one size
 
 
 def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
@@ -80,8 +83,8 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
     size = " x ".join(f"{s:g}" for s in workspace.upper - workspace.lower)
     title = title or f"{workspace.family or 'workspace'}: {len(workspace.boxes)} blocks in {size}"
     kinds = sorted(set(workspace.labels))
-    colors = {kind: CATEGORICAL[i % len(CATEGORICAL)] for i, kind in enumerate(kinds)}
-    hatches = {kind: HATCHES[i % len(HATCHES)] for i, kind in enumerate(kinds)}
+    colors = {kind: CATEGORICAL[KIND_ORDER[i % len(KIND_ORDER)]] for i, kind in enumerate(kinds)}
+    hatches = {kind: HATCHES[KIND_ORDER[i % len(KIND_ORDER)]] for i, kind in enumerate(kinds)}
     box_colors = [colors[label] for label in workspace.labels] or [COLORS["block"]] * len(workspace.boxes)
     box_hatches = [hatches[label] for label in workspace.labels] or [""] * len(workspace.boxes)
     if workspace.dim == 2:
@@ -95,7 +98,7 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
         ax.set_xlabel("x")
         ax.set_ylabel("y")
     else:
-        fig = Figure(figsize=(7, 6))
+        fig = Figure(figsize=(PAGE_WIDTH, 5.6))  # as wide as the page: its text as large as it is drawn
         ax = fig.add_subplot(projection="3d")
         for (lo, hi), color, hatch in zip(workspace.boxes, box_colors, box_hatches):
             add_box_3d(
@@ -106,13 +109,15 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
                 linewidth=0.3,
                 alpha=0.8,
                 hatch=hatch,
+                hatch_linewidth=1.3,  # a hatch seen on a small box, at the site's width
             ).set_gid("block")
         frame_region(ax, workspace)
         ax.set_box_aspect(workspace.upper - workspace.lower)
         few_ticks(ax)
     if kinds:
         handles = [Patch(facecolor=colors[k], edgecolor=COLORS["ink"], hatch=hatches[k], label=k) for k in kinds]
-        ax.legend(handles=handles, fontsize=8, loc="upper left")
+        fig.legend(handles=handles, fontsize=9, loc="lower center", ncols=min(len(kinds), 3), frameon=False)
+        fig.subplots_adjust(bottom=0.1)  # the legend below the view, over no block
     ax.set_title(title)
     counts = [f"{workspace.labels.count(k)} {k}" for k in kinds] if kinds else []
     text = f"The {workspace.family or 'workspace'} workspace, {size}: {len(workspace.boxes)} blocks"

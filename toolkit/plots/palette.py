@@ -58,7 +58,7 @@ COLORS: dict[str, str] = {
     "path": OKABE_ITO["blue"],  # solid: the path returned, checked exactly
     "removed": OKABE_ITO["vermillion"],  # what the exact checker rejected during a repair
     "endpoint": OKABE_ITO["black"],  # start (square) and goal (star): roadmap nodes, drawn large
-    "rejected": "#7d7d7d",  # samples a sampler threw away
+    "rejected": "#4d4d4d",  # samples a sampler threw away: 6:1 on the C-obstacles' grey
     # geometry
     "block": "#888888",  # the workspace's blocks in a figure
     "block_outline": OKABE_ITO["orange"],  # blocks outlined over a dark C-space picture

@@ -27,9 +27,9 @@ from toolkit.plots.slices import slice_configs
 
 C_OBSTACLE = ListedColormap([COLORS["free"], COLORS["c_obstacle"]])  # valid, invalid
 EDGE_COLOR, NODE_COLOR = COLORS["edge"], COLORS["node"]
-PATH_STYLES = {  # by stage: colour, line style (candidate dashed, one a repair rejected dash-dotted, answer solid)
+PATH_STYLES = {  # by stage: colour, line style (candidate dashed, one a repair rejected dotted, answer solid)
     "candidate": (COLORS["candidate"], "--"),
-    "repair": (COLORS["candidate"], "-."),
+    "repair": (COLORS["candidate"], ":"),
     "path": (COLORS["path"], "-"),
 }
 REPAIR_COLOR = COLORS["removed"]  # what the exact checker rejected: removed by a repair (drawn as X)
@@ -83,7 +83,8 @@ def samplers(exact: CollisionChecker, samples: dict[str, np.ndarray], attempts: 
         _draw_cspace(ax, exact)
         ax.scatter(Q[:, 0], Q[:, 1], s=8, color=NODE_COLOR)
         count = f"{len(Q)} sample{'' if len(Q) == 1 else 's'}"
-        ax.set_title(f"{name}: {count}" + (f" of {attempts} attempts" if attempts else ""), fontsize=10)
+        of = f" of {attempts} attempts" if attempts else ""
+        ax.set_title(f"{name}:\n{count}{of}", fontsize=10)  # two lines: a long name never runs into its neighbour
     for ax in axes[len(samples) :]:
         ax.set_axis_off()
     fig.suptitle("Samples over the exact checker (grey: C-obstacles)", fontsize=11)
@@ -112,23 +113,22 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
     """Algorithm 1, lines 2-3: the attempts ``S (N, 2)``, the ones a checker accepts (``accepted (N,)`` bool: S'),
     and among those the ones the exact checker rejects (the dangerous mistakes: large X in the invalid colour)."""
     truly_valid = exact.are_valid(S)
-    fig = Figure(figsize=(4.6, 4.6))
+    fig = Figure(figsize=(4.6, 5.4), layout="constrained")
     ax = fig.subplots()
     _draw_cspace(ax, exact)
     groups: list[tuple[np.ndarray, dict[str, Any], str]] = [  # (mask, scatter style, label)
-        (~accepted, dict(marker="x", s=10, color=COLORS["rejected"]), "rejected"),
-        (accepted & truly_valid, dict(s=10, marker="o", color=COLORS["valid"]), "S' (accepted)"),
+        (~accepted, dict(marker="x", s=24, linewidths=1.2, color=COLORS["rejected"]), "rejected"),
+        (accepted & truly_valid, dict(s=16, marker="o", color=COLORS["valid"]), "S' (accepted)"),
         (
             accepted & ~truly_valid,
-            dict(s=30, marker="X", color=COLORS["invalid"], path_effects=halo(0.0)),
+            dict(s=40, marker="X", color=COLORS["invalid"], path_effects=halo(0.0)),
             "S', truly in collision",
         ),
     ]
-    for mask, style, label in groups:
-        ax.scatter(S[mask, 0], S[mask, 1], label=f"{label}: {mask.sum()}", **style)
-    ax.legend(fontsize=8, loc="upper left", framealpha=0.9)
-    ax.set_title(f"S: {len(S)} uniform attempts", fontsize=9)
-    fig.tight_layout()
+    for mask, style, label in groups:  # whole at the edges of the C-space too
+        ax.scatter(S[mask, 0], S[mask, 1], label=f"{label}: {mask.sum()}", clip_on=False, **style)
+    fig.legend(fontsize=9, loc="outside lower center", ncol=2, frameon=False)  # below: never over a sample
+    ax.set_title(f"S: {len(S)} uniform attempts", fontsize=10)
     counts = "; ".join(f"{label}: {mask.sum()} (marker {style['marker']})" for mask, style, label in groups)
     return describe(fig, f"{len(S)} uniform attempts S over the point robot's C-obstacles (grey). {counts}.")
 
@@ -161,12 +161,14 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
             linestyle=style,
             linewidth=2.4,
             zorder=4,
-            label={"candidate": "candidate path (dashed)", "repair": "rejected candidate (dash-dot)"}.get(
+            label={"candidate": "candidate path (dashed)", "repair": "rejected candidate (dotted)"}.get(
                 step.stage, "path, checked exactly (solid)"
             ),
             path_effects=outline,
         )
-    removed = LineCollection(P[step.edges[removed_edge]], colors=REPAIR_COLOR, linewidths=3, zorder=5)
+    removed = LineCollection(
+        P[step.edges[removed_edge]], colors=REPAIR_COLOR, linewidths=3, zorder=5, label="edge removed by a repair"
+    )
     removed.set_path_effects(halo(3))
     ax.add_collection(removed)
     ax.scatter(
@@ -175,12 +177,19 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
         marker="X",
         color=REPAIR_COLOR,
         zorder=5,
-        label="removed by a repair",
+        label="node removed by a repair",
         path_effects=halo(0.0),
     )
-    for node, marker, name in ((START, "s", "start"), (GOAL, "*", "goal")):
+    for node, marker, size, name in ((START, "s", 90, "start"), (GOAL, "*", 320, "goal")):  # a star's ink is thin
         ax.scatter(
-            *P[node], s=110, marker=marker, color=COLORS["endpoint"], edgecolors=COLORS["free"], zorder=6, label=name
+            *P[node],
+            s=size,
+            marker=marker,
+            color=COLORS["endpoint"],
+            edgecolors=COLORS["free"],
+            zorder=6,
+            label=name,
+            clip_on=False,  # whole at the edge of the C-space, where start and goal often lie
         )
     ax.set_title(f"round {step.round}, {step.stage}:\n{len(P)} nodes, {len(step.edges)} edges", fontsize=10)
 
@@ -202,7 +211,7 @@ def step_in_words(step: PlanStep) -> str:
     text = f"Round {step.round}, {step.stage}: a roadmap of {len(step.nodes)} nodes "
     text += f"({int(np.sum(step.node_verified))} confirmed exactly) and {len(step.edges)} edges over the C-obstacles"
     if len(step.path):
-        line = {"path": "solid", "repair": "dash-dotted"}.get(step.stage, "dashed")
+        line = {"path": "solid", "repair": "dotted"}.get(step.stage, "dashed")
         text += f"; a {line} path through {len(step.path)} nodes"
     return text + f"; a repair removed {len(step.removed_nodes)} nodes and {len(step.removed_edges)} edges."
 
@@ -211,7 +220,7 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
     """Several steps of Algorithm 1 side by side, the roadmap drawn at each (one panel per step; ``columns`` a row,
     as wide as the page together)."""
     rows = -(-len(steps) // columns)
-    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / columns * 1.1 * rows + 1.2), layout="constrained")
+    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / columns * 1.2 * rows + 1.6), layout="constrained")
     axes = fig.subplots(rows, columns, squeeze=False).ravel()
     for ax, step in zip(axes, steps):
         _draw_roadmap(ax, exact, step)

@@ -82,7 +82,7 @@ def planning_times(planning: dict, title: str = "") -> Figure:
                 hatch=HATCHES[i],
                 edgecolor=COLORS["ink"],
                 linewidth=0.5,
-                label=f"{mode} prediction",
+                label=f"{mode} prediction" + (" (F)" if mode == "with" else ""),
             )
         cut = quartile_whiskers(ax, x, median, q1, q3, tallest=median.max())
         ax.set_xticks(x.ravel(), [name for s in samplers for name in (s, s + "F")], fontsize=9)
@@ -124,7 +124,7 @@ def threshold_sweep(
     (:func:`toolkit.learning.metrics.threshold_sweep`); ``(N,)`` arrays. ``title`` names the model and samples."""
     ts = metrics.SWEEP
     rates = metrics.threshold_sweep(np.asarray(probability).reshape(-1), np.asarray(valid, dtype=bool).reshape(-1))
-    fig = Figure(figsize=(5, 3.6))
+    fig = Figure(figsize=(5, 4.2), layout="constrained")
     ax = fig.subplots()
     curves = {
         "accuracy": rates["acc"],
@@ -138,9 +138,8 @@ def threshold_sweep(
     ax.set_xlabel("threshold on P(valid)")
     ax.set_ylabel("share")
     ax.set_ylim(0, 1.02)
-    ax.legend(fontsize=8)
+    fig.legend(fontsize=9, loc="outside lower center", ncols=2, frameon=False)  # below the axes: it hides no curve
     ax.set_title(title, fontsize=10)
-    fig.tight_layout()
     best = int(np.argmax(curves["accuracy"]))
     text = "Accuracy, TPR and TNR of the MLP as the threshold on P(valid) moves from 0 to 1: accuracy is highest, "
     text += f"{curves['accuracy'][best]:.2f}, at threshold {ts[best]:.2f}"

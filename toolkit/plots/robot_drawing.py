@@ -40,6 +40,11 @@ VIEWS = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
 POSITION_NAMES = ("x", "y", "z")
 
 
+def dof_label(name: str) -> str:
+    """A DoF's axis label with its unit: a position in the workspace's units as is, an angle with "(rad)"."""
+    return name if name in POSITION_NAMES else f"{name} (rad)"
+
+
 def few_ticks(ax) -> None:
     """A 3D axes with a few tick labels per axis, at 8 points: they do not run into each other (a flat region, as
     the office's 41 x 41 x 6, gets its z axis labelled at its ends only)."""

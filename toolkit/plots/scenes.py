@@ -36,9 +36,15 @@ NOW_COLOR = COLORS["occupied"]
 SAMPLE_MARKS = {  # kind of sample -> marker, colour, size: the viewer's shapes (toolkit.viewer.drawing.SAMPLE_SHAPES)
     "valid": ("o", VALID_COLOR, 9),
     "in collision": ("D", INVALID_COLOR, 11),
-    "model wrong": ("*", COLORS["ink"], 36),
+    "model wrong": ("*", COLORS["ink"], 160),
 }
-SAMPLE_WORDS = {"valid": "circles", "in collision": "diamonds", "model wrong": "stars"}  # SAMPLE_MARKS in words
+WRONG_STYLE = dict(facecolors="none", edgecolors=COLORS["ink"], linewidths=1.0)  # hollow: the mark under it shows
+TRACE_STYLE = dict(color=TRACE_COLOR, linestyle="--")  # dashed: apart from the robot's blue links by more than hue
+SAMPLE_WORDS = {
+    "valid": "circles",
+    "in collision": "diamonds",
+    "model wrong": "hollow stars round their marks",
+}  # SAMPLE_MARKS in words
 POSE_MARKERS = ("s", "P", "*", "^", "v", "X")  # the poses of a still, marked at their base in its overview
 
 
@@ -54,9 +60,10 @@ def scene_still(
 ) -> Figure:
     """A viewer's 3D scene as a still picture: first the whole workspace, its blocks, the ``samples`` at their
     base (``(points (N, 3), {kind: mask (N,)})``, kinds as :func:`toolkit.viewer.drawing.sample_kinds` names them:
-    circles valid, diamonds in collision, stars where a model is wrong), the ``trace (T, 3)`` of the robot's base
-    along a path and each pose marked at its base; then one close-up per pose ``{label: q (dof,)}``, the robot's
-    link boxes among the blocks within ``margin`` (the valid colour, or the invalid one hatched, by ``valid``)."""
+    circles valid, diamonds in collision, hollow stars round them where a model is wrong), the ``trace (T, 3)`` of
+    the robot's base along a path (dashed) and each pose marked at its base; then one close-up per pose
+    ``{label: q (dof,)}``, the robot's link boxes among the blocks within ``margin`` (the valid colour, or the invalid
+    one hatched, by ``valid``; every other link lighter) and the trace, no samples over it."""
     if robot.dim != 3:
         raise ValueError(f"a scene's still is drawn in 3D; the {robot.name} robot moves in {robot.dim}D")
     valid = valid or {}
@@ -69,7 +76,8 @@ def scene_still(
         ok = valid.get(label)
         color = UNCHECKED_COLOR if ok is None else VALID_COLOR if ok else INVALID_COLOR
         draw_robot(ax, robot, np.asarray(q)[None], colors=[color], view="3d", workspace=workspace, margin=margin)
-        _draw_points(ax, samples, trace, clip=True)
+        _tell_links_apart(ax)
+        _draw_points(ax, None, trace, clip=True)  # the samples in the overview only: none hides the robot here
         few_ticks(ax)
         state = "" if ok is None else ", valid" if ok else ", in collision"
         ax.set_title(f"{label}, close up{state}", fontsize=10)
@@ -140,6 +148,13 @@ def _overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, np.nda
     ax.set_title(f"the whole workspace: {len(workspace.boxes)} blocks", fontsize=10)
 
 
+def _tell_links_apart(ax) -> None:
+    """A chain's links, one colour, told apart: each edged in thick ink, every other one lighter."""
+    for k, link in enumerate(c for c in ax.collections if c.get_gid() == "link"):
+        link.set_linewidth(1.0)
+        link.set_alpha(0.9 if k % 2 == 0 else 0.55)
+
+
 def _draw_points(ax, samples, trace, clip: bool = False) -> None:
     """The samples ``(points (N, 3), {kind: mask})`` by kind and the base's ``trace (T, 3)`` on a 3D axes; with
     ``clip``, only what lies inside the axes' window (mplot3d does not clip)."""
@@ -148,12 +163,13 @@ def _draw_points(ax, samples, trace, clip: bool = False) -> None:
         points = _inside(ax, points) if clip else points
         if len(points):
             marker, color, size = SAMPLE_MARKS[kind]
-            ax.scatter(*points.T, marker=marker, s=size, color=color, depthshade=False, label=f"sample, {kind}")
+            style = dict(color=color) if kind != "model wrong" else WRONG_STYLE  # a star round the mark, not over it
+            ax.scatter(*points.T, marker=marker, s=size, depthshade=False, label=f"sample, {kind}", **style)
     if trace is not None:
         points = trace.copy()
         if clip:
             points[~_inside_mask(ax, points)] = np.nan
-        ax.plot(*points.T, color=TRACE_COLOR, linewidth=2.0, path_effects=halo(2.0), label="path of the base")
+        ax.plot(*points.T, linewidth=2.0, path_effects=halo(2.0), label="path of the base (dashed)", **TRACE_STYLE)
 
 
 def _inside_mask(ax, points: np.ndarray) -> np.ndarray:
@@ -344,7 +360,7 @@ def _draw_trace(ax, robot: BoxRobot, Q: np.ndarray) -> None:
     """The base's path (first link's centre, ``(T, 3)``), left out where it leaves the 3D axes' window."""
     trace = robot.link_boxes(Q)[0][:, 0].copy()  # (T, 3)
     trace[~_inside_mask(ax, trace)] = np.nan  # mplot3d does not clip lines to the axes
-    ax.plot(*trace.T, color=TRACE_COLOR, linewidth=2.0, gid="trace", path_effects=halo(2.0))
+    ax.plot(*trace.T, linewidth=2.0, gid="trace", path_effects=halo(2.0), **TRACE_STYLE)
 
 
 def _draw_scene(

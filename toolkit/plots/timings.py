@@ -16,7 +16,7 @@ from matplotlib.transforms import offset_copy
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import Part, describe
-from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
+from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH, series_style
 from toolkit.util.verdicts import per_query_ratios
 
 MODES = ("without", "with")
@@ -178,36 +178,44 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
     """Time with / without prediction per sampler (below 1: prediction saves time), one panel per baseline.
 
     ``{baseline: {series: {sampler: ratio}}}``: a baseline is what "without" was (the paper's own planner and
-    means, our eager or lazy exact planner and medians), a series what was timed (e.g. "2DS, sampling"). Ratios
-    against different baselines never share a bar group; the panels share one log axis, so heights compare.
+    means, our eager or lazy exact planner and medians), a series what was timed (e.g. "2DS, sampling"). Each
+    ratio is a point (a series keeps its colour and marker in every panel), read against the line at 1: on a log
+    axis a bar's length would mean nothing. Ratios against different baselines never share a panel; the panels
+    share one log axis, so positions compare.
     """
-    fig = Figure(figsize=(PAGE_WIDTH, 2.6 * len(baselines) + 0.6))  # one baseline a row, each with its own ticks
+    names = list(dict.fromkeys(name for series in baselines.values() for name in series))  # every series, once
+    height = 2.6 * len(baselines) + 0.1 + 0.2 * -(-len(names) // 2)  # one baseline a row; the legend, two a row
+    fig = Figure(figsize=(PAGE_WIDTH, height))
     axes = fig.subplots(len(baselines), 1, squeeze=False, sharey=True)[:, 0]
     said = []
-    names = list(dict.fromkeys(name for series in baselines.values() for name in series))  # every series, once
     for ax, (title, series) in zip(axes, baselines.items()):
-        for i, (name, ratios) in enumerate(series.items()):  # a series keeps its colour and hatch in every panel
-            _grouped_bars(ax, i, len(series), [ratios[s] for s in PAPER_SAMPLERS], name, style=names.index(name))
+        for name, ratios in series.items():  # a series keeps its place, colour and marker in every panel
+            _points(ax, names.index(name), len(names), [ratios[s] for s in PAPER_SAMPLERS], name)
         every = np.array([[ratios[s] for s in PAPER_SAMPLERS] for ratios in series.values()])  # (series, samplers)
         said.append(
             f"{title}: {len(series)} series, ratios from {every.min():.2f} to {every.max():.2f}, below 1 for "
             f"{int(np.sum(every < 1))} of {every.size}"
         )  # each ratio: the longer description
-        ax.axhline(1.0, color=COLORS["ink"], linewidth=0.8)
+        ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
+        ax.set_xticks(np.arange(len(PAPER_SAMPLERS) - 1) + 0.5, minor=True)  # a sampler's points between two lines
+        ax.grid(True, axis="x", which="minor", color=COLORS["shade"], linewidth=0.8)
+        ax.tick_params(axis="x", which="minor", length=0)
         ax.set_xticks(np.arange(len(PAPER_SAMPLERS)), PAPER_SAMPLERS)
         ax.set_xlabel("sampler")
-        ax.set_ylabel("time with / without")
-        ax.set_title(textwrap.fill(title, 90), fontsize=10)
-    drawn = [float(r) for series in baselines.values() for by in series.values() for r in by.values()]  # every bar
+        ax.set_ylabel("time with / without\n(below 1: saves)")
+        ax.set_xlim(-0.5, len(PAPER_SAMPLERS) - 0.5)
+        ax.set_title(textwrap.fill(title, 80), fontsize=10)
+    drawn = [float(r) for series in baselines.values() for by in series.values() for r in by.values()]  # every point
     axes[0].set_yscale("log")
-    axes[0].set_ylim(min(*drawn, 1.0) / 1.3, max(*drawn, 1.0) * 1.3)  # every bar's top and the line at 1
+    axes[0].set_ylim(min(*drawn, 1.0) / 1.3, max(*drawn, 1.0) * 1.3)  # every point and the line at 1
     _log_ticks(axes[0])  # shared by every panel
     for ax in axes:
         ax.tick_params(labelsize=9, labelleft=True)  # each row its own numbers
     shown = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # each series once
-    fig.legend(shown.values(), shown.keys(), loc="lower center", ncol=min(len(shown), 4), fontsize=9, frameon=False)
-    fig.tight_layout(rect=(0, 0.4 / fig.get_figheight(), 1, 1))
-    text = "Planning time with prediction divided by the time without, per sampler, log scale; below 1 prediction saves"
+    fig.legend(shown.values(), shown.keys(), loc="lower center", ncol=min(len(shown), 2), fontsize=9, frameon=False)
+    fig.tight_layout(rect=(0, (0.1 + 0.2 * -(-len(shown) // 2)) / fig.get_figheight(), 1, 1))
+    text = "Planning time with prediction divided by the time without, a point per sampler and series, log scale, read"
+    text += " against the line at 1; below 1 prediction saves"
     parts = [
         Part(
             title,
@@ -254,6 +262,14 @@ def throughputs(rates: dict[str, dict[str, float]]) -> Figure:
 def _per_second(rate: float) -> str:
     """A rate in thousands or millions: ``'210k/s'``, ``'3.4M/s'``."""
     return f"{rate / 1e6:.2g}M/s" if rate >= 1e6 else f"{rate / 1e3:.3g}k/s"
+
+
+def _points(ax, i: int, n: int, ratios: list[float], label: str) -> None:
+    """Point ``i`` of ``n`` beside each sampler's tick (``ratios (samplers,)``), in the ``i``-th series' colour and
+    marker (:func:`~toolkit.plots.palette.series_style`), without a line: a ratio is read against the line at 1."""
+    look = series_style(i)
+    x = np.arange(len(ratios)) + (i - (n - 1) / 2) * 0.7 / n
+    ax.plot(x, ratios, linestyle="none", marker=look["marker"], color=look["color"], markersize=7, label=label)
 
 
 def _grouped_bars(ax, i: int, n: int, heights: list[float], label: str, style: int | None = None):
