@@ -13,6 +13,7 @@ The fast tests hold the pieces (widgets made static, links resolved) against han
 from __future__ import annotations
 
 import html
+import itertools
 import re
 import time
 from collections.abc import Iterator
@@ -768,6 +769,55 @@ def test_every_tab_stop_of_the_home_page_and_the_chapters_is_named_and_outlined(
     assert all(n >= 20 for n in counted.values()), counted
     assert {p: s for p, s in unnamed.items() if s} == {}
     assert {p: s for p, s in unseen.items() if s} == {}
+    assert remote == []
+
+
+FRAME_STOP = """() => {  // inside an embedded scene: the focused control, its name and whether it is outlined
+    const e = document.activeElement;
+    if (!e || e === document.body) return null;
+    const style = getComputedStyle(e), labelled = e.getAttribute('aria-labelledby');
+    const name = e.getAttribute('aria-label') || (labelled && document.getElementById(labelled)?.textContent)
+        || (e.tagName === 'BUTTON' ? e.textContent.trim() : '') || e.getAttribute('title') || '';
+    return {tag: e.tagName, name: name.trim().slice(0, 40),
+            outline: style.outlineStyle !== 'none' && parseFloat(style.outlineWidth) >= 2};
+}"""
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+@pytest.mark.parametrize("key", ["Tab", "Shift+Tab"])
+def test_the_keyboard_enters_and_leaves_every_embedded_scene_and_sees_where_it_is(site, served, chromium, key):
+    """WCAG 2.1.2, 2.4.3 and 2.4.7 on chapter 05: pressing Tab (or Shift+Tab) round the page enters each scene's frame
+    (each titled apart), meets only named controls there, each outlined when it has the focus, and leaves the frame
+    to the page again after a few presses: no keyboard trap."""
+    remote: list[str] = []
+    page = open_page(chromium, served + "notebooks/05_3d_scenes.html", remote)
+    try:
+        frames = page.locator("iframe")
+        titles = frames.evaluate_all("all => all.map(f => f.title)")
+        assert len(titles) >= 3 and len(set(titles)) == len(titles)
+        for i in range(len(titles)):  # each scene's page built (its controls exist) before the keyboard comes
+            frames.nth(i).content_frame.locator("button").first.wait_for(state="attached")
+        visits: list[int] = []  # per press: the frame that holds the focus (its index), -1 for the page itself
+        stops: dict[int, list[dict]] = {i: [] for i in range(len(titles))}
+        for _ in range(600):
+            page.keyboard.press(key)
+            inside = page.evaluate("[...document.querySelectorAll('iframe')].indexOf(document.activeElement)")
+            visits.append(inside)
+            if inside >= 0:
+                stops[inside].append(frames.nth(inside).element_handle().content_frame().evaluate(FRAME_STOP))
+            if all(stops.values()) and visits[-1] == -1 and visits.count(-1) > 150:
+                break
+    finally:
+        page.close()
+    runs = [(f, len(list(group))) for f, group in itertools.groupby(visits) if f >= 0]  # each stay in a frame
+    assert {f for f, _ in runs} == set(range(len(titles))), visits  # every frame entered ...
+    assert visits[-1] == -1 and max(n for _, n in runs) <= 10, runs  # ... and left after a few presses
+    lacking = [
+        (titles[f][:40], s) for f, found in stops.items() for s in found if not (s and s["name"] and s["outline"])
+    ]
+    assert lacking == []
     assert remote == []
 
 
