@@ -13,8 +13,9 @@ hub and the repository its students pull, a link that opens it there through nbg
 
 Accessible (WCAG 2.1 AA, measured by :mod:`tools.accessibility`): every page has one ``h1`` (a heading that
 a notebook's output prints becomes an ``h2``), and every block of code that scrolls sideways can be reached by
-keyboard (``tabindex="0"``) and is named for a screen reader (:func:`focusable_code`), while a cell's input, which
-nbconvert makes a tab stop of no name (every paragraph of a chapter one more press of Tab), is not; the colours,
+keyboard (``tabindex="0"``) and is named for a screen reader (:func:`focusable_code`), while a cell's input and
+a cell's output, which nbconvert makes tab stops of no name (every paragraph and figure of a chapter one more
+press of Tab), are not (``docs/site/accessibility.js`` makes a region of an output that scrolls); the colours,
 underlined links and focus outline are in ``docs/site/accessibility.css``. Every figure of a notebook page takes
 the alt text its output carries, and a complex figure (several panels, a map, a 3D view) its longer description
 in a "Figure described" disclosure under it (:func:`figure_alts`, from :mod:`toolkit.plots.alt`).
@@ -53,8 +54,11 @@ IMAGE = re.compile(r'<img\b[^>]*?\bsrc="data:image/png;base64,(?P<data>[^"]+)"[^
 H1 = re.compile(r"<h1\b(?P<attrs>[^>]*)>(?P<body>.*?)</h1>", re.DOTALL)
 CODE_BLOCK = re.compile(
     r'<div class="(?P<cls>[^"]*\bhighlight(?P<cell>-ipynb)?\b[^"]*)">(?P<space>\s*)<pre(?![^>]*tabindex)'
+    r"(?P<pre>[^>]*>)(?!(?:<span></span>)?<code)"  # a <pre> around a <code>: BARE_CODE's
 )
+BARE_CODE = re.compile(r"(?P<pre><pre\b(?![^>]*tabindex)[^>]*>(?:<span></span>)?)<code(?![^>]*tabindex)")  # it scrolls
 REGION = 'tabindex="0" role="region" aria-label="code"'
+OUTPUT_TAB_STOP = re.compile(r'(<div class="[^"]*\bjp-OutputArea-output\b[^"]*"[^>]*?)\s+tabindex="0"')
 CELL_TAB_STOP, CELL = (
     '<div class="jp-Cell-inputWrapper" tabindex="0">',
     '<div class="jp-Cell-inputWrapper">',
@@ -208,15 +212,20 @@ def one_h1(html: str) -> str:
 
 
 def focusable_code(html: str) -> str:
-    """Each block of code that scrolls sideways becomes a named region the keyboard can reach (:data:`REGION`):
-    a code cell's ``<div class="highlight-ipynb">`` (it scrolls), else the ``<pre>`` in ``<div class="highlight">``."""
+    """Each block of code that scrolls sideways becomes a named region the keyboard can reach (:data:`REGION`) on the
+    element that scrolls: a code cell's ``<div class="highlight-ipynb">``, the ``<code>`` in a Markdown page's
+    ``<pre>`` (material's stylesheet scrolls it, and its script makes it a tab stop, with no name, when it is too wide;
+    a notebook's Markdown writes a fence without a language so, with no ``<div>``), else the ``<pre>`` in
+    ``<div class="highlight">`` (a notebook's Markdown). A notebook output is no tab stop (nbconvert's ``tabindex``
+    dropped): it does not scroll, and ``accessibility.js`` names one that does."""
 
     def region(m: re.Match) -> str:
         if m["cell"]:
-            return f'<div class="{m["cls"]}" {REGION}>{m["space"]}<pre'
-        return f'<div class="{m["cls"]}">{m["space"]}<pre {REGION}'
+            return f'<div class="{m["cls"]}" {REGION}>{m["space"]}<pre{m["pre"]}'
+        return f'<div class="{m["cls"]}">{m["space"]}<pre {REGION}{m["pre"]}'
 
-    return CODE_BLOCK.sub(region, html)
+    html = BARE_CODE.sub(rf"\g<pre><code {REGION}", CODE_BLOCK.sub(region, html))
+    return OUTPUT_TAB_STOP.sub(r"\1", html)
 
 
 def headings_and_contents(html: str, page: Page) -> str:

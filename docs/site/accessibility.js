@@ -3,7 +3,11 @@
 // - mkdocs-material wraps each table in a scrolling <div class="md-typeset__scrollwrap"> when the page loads:
 //   each becomes a named region with tabindex 0, marked data-scrolls while it is too wide for its column;
 // - a display equation wider than the page (at 320 px, or with WCAG text spacing) scrolls: it becomes a
-//   region named "equation" with tabindex 0 while it does, and leaves the tab order when it fits again.
+//   region named "equation" with tabindex 0 while it does, and leaves the tab order when it fits again;
+// - a block of code (tools/site_hooks.py makes each a region named "code") is a tab stop while it scrolls, named
+//   "code, scrolls sideways", and leaves the tab order when it fits; so is a notebook output that scrolls, named
+//   "output, scrolls sideways" (nbconvert made every output a tab stop of no name; the site hooks drop that);
+// - material's search results box, a tab stop, is named "search results".
 const makeRegion = (element, name) => {
   element.setAttribute("tabindex", "0");
   element.setAttribute("role", "region");
@@ -15,6 +19,25 @@ const markScrollingMath = () => {
     if (math.scrollWidth > math.clientWidth + 1) makeRegion(math, "equation");
     else if (math.getAttribute("aria-label") === "equation") {
       for (const name of ["tabindex", "role", "aria-label"]) math.removeAttribute(name);
+    }
+  }
+};
+
+const scrolls = (element) => element.scrollWidth > element.clientWidth + 1;
+const SCROLLS = ", scrolls sideways";
+const markScrollingBlocks = () => {
+  for (const code of document.querySelectorAll('[role="region"][aria-label^="code"]')) {
+    if (scrolls(code)) makeRegion(code, "code" + SCROLLS);
+    else {
+      code.removeAttribute("tabindex");
+      code.setAttribute("aria-label", "code");
+    }
+  }
+  for (const output of document.querySelectorAll(".jp-OutputArea-output")) {
+    const overflow = getComputedStyle(output).overflowX;
+    if (scrolls(output) && (overflow === "auto" || overflow === "scroll")) makeRegion(output, "output" + SCROLLS);
+    else if (output.getAttribute("aria-label") === "output" + SCROLLS) {
+      for (const name of ["tabindex", "role", "aria-label"]) output.removeAttribute(name);
     }
   }
 };
@@ -44,7 +67,9 @@ const hideIcons = () => {
 
 document$.subscribe(() => {
   for (const wrap of document.querySelectorAll(".md-typeset__scrollwrap:not([tabindex])")) makeRegion(wrap, "table");
+  for (const results of document.querySelectorAll(".md-search__scrollwrap")) makeRegion(results, "search results");
   markScrollingTables();
+  markScrollingBlocks();
   markScrollingMath();
   hideIcons();
 });
@@ -57,9 +82,17 @@ new MutationObserver(() => {
     markScrollingMath();
   });
 }).observe(document.body, {childList: true, subtree: true});
-// a figure's longer description opens closed: its tables are measured again when a reader opens it
-document.addEventListener("toggle", markScrollingTables, true);
+// a figure's longer description and an answer open closed: their tables and code are measured again when opened
+document.addEventListener(
+  "toggle",
+  () => {
+    markScrollingTables();
+    markScrollingBlocks();
+  },
+  true,
+);
 window.addEventListener("resize", () => {
   markScrollingTables();
+  markScrollingBlocks();
   markScrollingMath();
 });

@@ -7,7 +7,8 @@ input), icon buttons (settings, a notice's close button, a recording's play / pa
 has no ``alt``; it may show a notice (e.g. that the browser renders WebGL in software) over the scene. viser has no
 option for any of these (``configure_theme`` can only hide the logo and the share button: the panel hides the
 share button, which would publish the scene), so a small script names them from the page itself, as React
-builds it: each control takes the name of the label of its row (:data:`SCRIPT`).
+builds it: each control takes the name of the label of its row (:data:`SCRIPT`). Its style also outlines a focused
+input as viser outlines a focused button (2 px; viser shows an input's focus only by its 1 px border's colour).
 
 - :func:`label_controls` adds the script to a saved scene's page (snapshots and animations in notebook 05), and
   hides the notices there (a static page has nothing to notify); the scene's own text alternative is the
@@ -56,7 +57,8 @@ LOGO_ALT = "viser"  # the logo in the panel's corner
 HIDDEN = ".mantine-Notifications-root, .mantine-Notification-root"  # notices over a saved scene
 DIMMED = COLORS["panel_text"]  # viser's dimmed label text (3.3:1 on white) made darker
 
-SCRIPT = """<style>:root { --mantine-color-dimmed: %(dimmed)s !important; }</style>
+SCRIPT = """<style>:root { --mantine-color-dimmed: %(dimmed)s !important; }
+input:focus-visible { outline: 2px solid var(--mantine-primary-color-filled) !important; outline-offset: 1px; }</style>
 <script>
 (() => {
   const names = %(names)s;
