@@ -237,7 +237,10 @@ def chapter_04(nb) -> list[str]:
         problems.append(f"04: the prose says a network call costs more than the default exact check: {throughput}")
     if "Against the default exact checker the network was the cheaper check at" not in " ".join(texts(nb)):
         problems.append("04: the crossover's counts (findings.crossover_counts) are not displayed")
-    problems += _eager_counts(found)
+    fcl = {row[0]: row[2] for header, rows in found if header[2:3] == ["cost, network / python-fcl"] for row in rows}
+    if not fcl or not all(v.startswith(findings.CHEAPER) for v in fcl.values()):
+        problems.append(f"04: the prose says the network is the cheaper check against python-fcl: {fcl}")
+    problems += _eager_counts(found) + _recorded_verdicts(found)
     if not re.search(r"This run took \d+ s from the first cell to this one, at a load average of", " ".join(texts(nb))):
         problems.append("04: the run's time is not printed with its load")
     return problems
@@ -264,6 +267,39 @@ def _eager_counts(found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
             problems.append(f"04: Algorithm 1 {row[0]}: the sample checks are no small fraction of the edge points")
         if not number(row, "connection (edges), ms") > 0.5 * number(row, "total, ms"):
             problems.append(f"04: Algorithm 1 {row[0]}: the connection stage is not most of its time")
+    return problems
+
+
+def _recorded_verdicts(found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
+    """Section 6's table of recorded ratios against the answer the chapter states: each row's count column equals
+    its verdicts; the `paper` preset's means against Algorithm 1 save time for one sampler on 2DS and 3DC-7 and three
+    on 3DC-9 and 3DO, where its MLP answers "valid" (3DC-7) or "invalid" (3DC-9, 3DO) to every sample; the `strong`
+    preset's means and medians agree on 3DC-7's every verdict and part on 2DS's OB (mean: saves; median: a tie)."""
+    table = next(((h, rows) for h, rows in found if h[0] == "measured" and h[-1] == findings.COUNT_COLUMN), None)
+    if table is None:
+        return ["04: section 6's table of recorded ratios, with its count column, is not displayed"]
+    rows = table[1]
+    said = {row[0]: [m.group(1) if (m := VERDICT.fullmatch(c)) else c for c in row[1:-1]] for row in rows}
+    problems = [
+        f"04: {row[0]}: counted {row[-1]}, its verdicts {said[row[0]]}"
+        for row in rows
+        if row[-1] != " / ".join(str(said[row[0]].count(v)) for v in findings.COUNTED)
+    ]
+    for name, n in {"2DS": 1, "3DC-7": 1, "3DC-9": 3, "3DO": 3}.items():
+        verdicts = said.get(f"{name}: `paper` preset, means, vs Algorithm 1", [])
+        if verdicts.count(findings.SAVES) != n:
+            problems.append(f"04: the answer says the `paper` preset saves for {n} of 4 on {name}; it shows {verdicts}")
+    answers = {row[0]: row[-1] for h, rows in found if h[-1] == "what it answers" for row in rows}
+    valid, invalid = '"valid" to every sample', '"invalid" to every sample'
+    expected = {"3DC-7": valid, "3DC-9": invalid, "3DO": invalid}
+    if {k: answers.get(k) for k in expected} != expected:
+        problems.append(f"04: the answer says what the `paper` MLP answers; its table says {answers}")
+    strong = {kind: said.get(f"3DC-7: `strong` preset, {kind}, vs lazy PRM", []) for kind in ("means", "medians")}
+    if not strong["means"] or strong["means"] != strong["medians"]:
+        problems.append(f"04: 3DC-7's `strong` means and medians do not agree verdict by verdict: {strong}")
+    ob = [said.get(f"2DS: `strong` preset, {kind}, vs lazy PRM", [None] * 2)[1] for kind in ("means", "medians")]
+    if ob != [findings.SAVES, findings.TIES]:
+        problems.append(f"04: 2DS OB's `strong` mean and median do not part as the prose says: {ob}")
     return problems
 
 

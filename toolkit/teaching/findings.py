@@ -68,18 +68,39 @@ def planning_table(tables: Mapping[str, Mapping[str, Mapping]], tie: float = TIE
     return "\n".join(rows)
 
 
-def ratio_table(series: Mapping[str, Mapping[str, float]], tie: float = TIE) -> str:
+COUNTED = (SAVES, TIES, COSTS)  # the verdicts one recorded ratio can have, in the order a count column gives them
+COUNT_COLUMN = "samplers: saves / a tie / costs"
+
+
+def ratio_table(series: Mapping[str, Mapping[str, float]], tie: float = TIE, counts: bool = False) -> str:
     """Markdown: one row per ``{label: {sampler: time with / without}}`` (recorded figures over many queries), each
-    ratio with its verdict."""
+    ratio with its verdict; with ``counts``, a last column counting the row's verdicts (:data:`COUNT_COLUMN`), so
+    that a sentence need not count them."""
     samplers = list(next(iter(series.values())))
-    rows = ["| measured | " + " | ".join(samplers) + " |", "| --- |" + " --- |" * len(samplers)]
+    extra = [COUNT_COLUMN] if counts else []
+    rows = [
+        "| measured | " + " | ".join([*samplers, *extra]) + " |",
+        "| --- |" + " --- |" * (len(samplers) + len(extra)),
+    ]
     for label, ratios in series.items():
-        rows.append(
-            f"| {label} | "
-            + " | ".join(f"{time_verdict(ratios[s], tie=tie)} ({ratios[s]:.2f})" for s in samplers)
-            + " |"
-        )
+        said = [time_verdict(ratios[s], tie=tie) for s in samplers]
+        cells = [f"{v} ({ratios[s]:.2f})" for v, s in zip(said, samplers)]
+        if counts:
+            cells.append(" / ".join(str(said.count(v)) for v in COUNTED))
+        rows.append(f"| {label} | " + " | ".join(cells) + " |")
     return "\n".join(rows)
+
+
+def what_it_answers(tpr: float, tnr: float) -> str:
+    """What a classifier with these rates on a test amounts to, read at the printed precision (whole percent):
+    '"valid" to every sample' (keeps every valid one, rejects no colliding one), '"invalid" to every sample', or
+    "some of each"."""
+    keeps, rejects = round(100 * tpr), round(100 * tnr)
+    if (keeps, rejects) == (100, 0):
+        return '"valid" to every sample'
+    if (keeps, rejects) == (0, 100):
+        return '"invalid" to every sample'
+    return "some of each"
 
 
 def throughput_table(measured: Mapping[str, Mapping[str, float]], batch: int, tie: float = CLOSE) -> str:

@@ -10,6 +10,7 @@ the ones the docs show, and follow the docs when the reproduction is run again::
     row = recorded.table("paper", "MLP accuracy")["3dc7"]   # {column: cell} of Table 2's 3DC-7 row
     recorded.ours(row["Seen TPR"])                          # 1.0: our figure of the cell "**100%** / 87%"
     recorded.without("strong", "medians")                   # what "without prediction" was, where the docs say
+    recorded.improvements("paper", "3dc7")                  # Table 3's totals: {"BS": 0.09, "OB": 0.04, ...}
 
 The tables travel with the package, in ``recorded.json`` beside this file (an installed toolkit has no ``docs/``):
 ``python -m tools.recorded_results`` writes it from ``docs/results.md``, and a test holds the two equal. Every
@@ -66,6 +67,13 @@ def median_ratios(preset: str, recorded: Tables | None = None) -> dict[str, dict
             kind, sampler = column.split()  # e.g. "Sampling BS"
             ratios.setdefault(scenario, {}).setdefault(kind.lower(), {})[sampler] = ours(cell)
     return ratios
+
+
+def improvements(preset: str, scenario: str, kind: str = "total", recorded: Tables | None = None) -> dict[str, float]:
+    """Table 3's row of ``scenario``: ``{sampler: (t_without - t_with) / t_without}`` of mean times, the ``kind``
+    ("total" or "sampling") columns; ``1 - improvement`` is the time ratio with / without."""
+    cells = table(preset, "time improvement", recorded)[scenario]
+    return {column.split()[1]: ours(cell) for column, cell in cells.items() if column.lower().startswith(kind)}
 
 
 def _under(preset: str, heading: str, recorded: Tables | None) -> dict:
