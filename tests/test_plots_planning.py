@@ -213,6 +213,8 @@ def test_stage_times_one_stacked_bar_per_sampler_and_mode_with_the_given_heights
         np.testing.assert_allclose(bars[timings.STAGE_LABELS[key]], [1e3 * MEDIANS[s][m][key] for s, m in order])
     np.testing.assert_allclose(np.sum(list(bars.values()), axis=0), [1e3 * MEDIANS[s][m]["total_s"] for s, m in order])
     (whiskers,) = ax.collections  # the total's quartiles, one vertical segment a bar: never below zero
+    ring = whiskers.get_path_effects()[0]  # a white ring under the black line: seen on the black "other" segment
+    assert ring._gc["foreground"] == palette.COLORS["free"] and len(whiskers.get_path_effects()) == 2
     spans = np.array([segment[:, 1] for segment in whiskers.get_segments()])  # (bars, 2): q1, q3
     np.testing.assert_allclose(
         spans, [[800 * MEDIANS[s][m]["total_s"], 1500 * MEDIANS[s][m]["total_s"]] for s, m in order]
