@@ -1,17 +1,21 @@
 """Planning figures (notebook 04) draw what they are given: C-obstacles, samples, roadmaps, repairs, bar heights."""
 
 import dataclasses
+import re
 
 import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.collections import LineCollection
 from matplotlib.colors import to_rgba, to_rgba_array
+from matplotlib.contour import ContourSet
 from matplotlib.figure import Figure
 
 from toolkit import scenarios
 from toolkit.experiments.queries import make_queries
+from toolkit.geometry import robots
 from toolkit.geometry.collision import exact_checker
+from toolkit.geometry.workspace import Workspace
 from toolkit.planning.paper_prm import PRM
 from toolkit.planning.prm import PlanStep, plan
 from toolkit.plots import alt, palette, planning, reproduction, timings
@@ -71,8 +75,9 @@ def test_samplers_one_panel_per_sampler_with_its_samples_over_the_blocks(exact, 
     fig = planning.samplers(exact, samples, attempts=200)
     assert isinstance(fig, Figure) and len(fig.axes) == 4
     for ax, (name, Q) in zip(fig.axes, samples.items()):
-        np.testing.assert_array_equal(ax.collections[0].get_offsets(), Q)
-        assert ax.get_title() == f"{name}:\n{len(Q)} sample{'' if len(Q) == 1 else 's'} of 200 attempts"
+        (drawn,) = [c for c in ax.collections if not isinstance(c, ContourSet)]
+        np.testing.assert_array_equal(drawn.get_offsets(), Q)
+        assert ax.get_title().startswith(f"{name}:\n{len(Q)} sample{'' if len(Q) == 1 else 's'} of 200 attempts")
         blocks = [(p.get_xy(), p.get_width(), p.get_height()) for p in ax.patches[:-1]]  # the last: the bounds
         assert [
             (tuple(lo), w, h) for lo, (w, h) in zip(query.workspace.boxes[:, 0], np.ptp(query.workspace.boxes, axis=1))
@@ -208,6 +213,8 @@ def test_stage_times_one_stacked_bar_per_sampler_and_mode_with_the_given_heights
         np.testing.assert_allclose(bars[timings.STAGE_LABELS[key]], [1e3 * MEDIANS[s][m][key] for s, m in order])
     np.testing.assert_allclose(np.sum(list(bars.values()), axis=0), [1e3 * MEDIANS[s][m]["total_s"] for s, m in order])
     (whiskers,) = ax.collections  # the total's quartiles, one vertical segment a bar: never below zero
+    ring = whiskers.get_path_effects()[0]  # a white ring under the black line: seen on the black "other" segment
+    assert ring._gc["foreground"] == palette.COLORS["free"] and len(whiskers.get_path_effects()) == 2
     spans = np.array([segment[:, 1] for segment in whiskers.get_segments()])  # (bars, 2): q1, q3
     np.testing.assert_allclose(
         spans, [[800 * MEDIANS[s][m]["total_s"], 1500 * MEDIANS[s][m]["total_s"]] for s, m in order]
@@ -271,14 +278,22 @@ def test_ratio_comparison_draws_one_baseline_per_panel_on_one_log_scale():
     assert {"1", "1.5", "2"} <= {t.get_text() for t in close.get_yticklabels()}  # finer labels within a decade
 
 
-def test_throughputs_bar_per_scenario_and_checker():
+def test_throughputs_a_point_per_scenario_and_checker_on_a_log_axis_labelled_at_1_2_5():
+    """Points, not bars: on a log axis a bar's length means nothing (a bar from a floor near the slowest rate
+    was a sliver); each rate written beside its point, the axis labelled often enough to read one between two."""
     rates = {"2DS": {"exact": 9e7, "learned": 3e6}, "3DC-7": {"exact": 2e5, "learned": 2.5e6}}
     ax = timings.throughputs(rates).axes[0]
-    exact_bars, learned_bars = ax.containers
-    np.testing.assert_allclose([p.get_height() for p in exact_bars.patches], [9e7, 2e5])
-    np.testing.assert_allclose([p.get_height() for p in learned_bars.patches], [3e6, 2.5e6])
-    assert [t.get_text() for t in ax.get_xticklabels()] == ["2DS", "3DC-7"] and ax.get_yscale() == "log"
+    assert not ax.patches and not ax.containers and ax.get_yscale() == "log"
+    exact, learned = ax.lines
+    np.testing.assert_allclose(exact.get_ydata(), [9e7, 2e5])
+    np.testing.assert_allclose(learned.get_ydata(), [3e6, 2.5e6])
+    assert exact.get_marker() != learned.get_marker() and exact.get_linestyle() == "None"  # not by colour alone
+    assert [t.get_text() for t in ax.get_xticklabels()] == ["2DS", "3DC-7"]
     assert [t.get_text() for t in ax.texts] == ["90M/s", "200k/s", "3M/s", "2.5M/s"]
+    ticks = [t.get_text() for t in ax.get_yticklabels()]
+    assert {"200k", "500k", "1M", "2M", "5M", "10M", "20M", "50M"} <= set(ticks)
+    lo, hi = ax.get_ylim()
+    assert lo < 2e5 and hi > 9e7  # every point inside the frame
 
 
 def test_a_rejected_candidate_and_a_fresh_one_differ_in_line_style_not_only_in_shade(exact):
@@ -302,44 +317,88 @@ def test_ratio_comparison_keeps_a_series_colour_in_every_panel_and_names_it_once
 
 
 def test_the_paper_style_times_stack_their_panels_and_cut_a_far_whisker_too():
-    """reproduction.planning_times (the paper's Figures 5-7 as medians): sampling above the total, as wide as the page,
-    in ms, the bars named as the paper names them; a sampling whisker 20 times its bar is cut at the top, written."""
+    """reproduction.planning_times (the paper's Figures 5-7 as medians): a row of sampling panels above a row of
+    totals, one panel per sampler, as wide as the page, in ms, the bars named as the paper names them; a sampling
+    whisker 20 times its bar is cut at its panel's top, written over it."""
     planning = {s: {m: dict(row) for m, row in modes.items()} for s, modes in PLANNING.items()}
     for s, modes in planning.items():
         for m, row in modes.items():
             row |= {f"sampling_s_{k}": f * MEDIANS[s][m]["sampling_s"] for k, f in (("median", 1), ("q1", 0.8))}
             row["sampling_s_q3"] = (20 if (s, m) == ("BT", "with") else 1.5) * MEDIANS[s][m]["sampling_s"]
     fig = reproduction.planning_times(planning)
-    sampling, total = fig.axes
-    assert fig.get_figwidth() <= PAGE_WIDTH and sampling.get_position().y0 > total.get_position().y1
-    heights = [p.get_height() for c in sampling.containers if hasattr(c, "patches") for p in c.patches]
-    np.testing.assert_allclose(
-        heights, [1e3 * MEDIANS[s][m]["sampling_s"] for m in ("without", "with") for s in MEDIANS]
-    )
-    assert [t.get_text() for t in sampling.get_xticklabels()][:2] == ["BS", "BSF"]
+    FigureCanvasAgg(fig).draw()
+    sampling, total = fig.axes[:4], fig.axes[4:]
+    assert len(fig.axes) == 8 and fig.get_figwidth() <= PAGE_WIDTH
+    assert min(ax.get_window_extent().y0 for ax in sampling) > max(ax.get_window_extent().y1 for ax in total)
+    for ax, s in zip(sampling, MEDIANS):
+        heights = [p.get_height() for p in ax.patches]
+        np.testing.assert_allclose(heights, [1e3 * MEDIANS[s][m]["sampling_s"] for m in ("without", "with")])
+        assert [t.get_text().split()[0] for t in ax.get_xticklabels()] == [s, s + "F"]
+    bt = sampling[3]
     end = 1e3 * planning["BT"]["with"]["sampling_s_q3"]
-    assert sampling.get_ylim()[1] < end and f"{end:.3g}" in [t.get_text() for t in sampling.texts]
-    assert f"BTF to {end:.3g} ms" in alt.alt_text(fig) and not total.texts  # the totals' whiskers all fit
+    assert bt.get_ylim()[1] < end and [t.get_text() for t in bt.texts] == [f"{end:.3g}"]
+    assert f"BTF to {end:.3g} ms" in alt.alt_text(fig) and not any(ax.texts for ax in total)  # the totals all fit
 
 
 QUARTILES = (("median", 1.0), ("q1", 0.8), ("q3", 1.5))
 
 
-def test_planning_times_names_each_bar_under_it_in_milliseconds():
-    """BS / BSF under their bars, not over them where the quartile whiskers end; times in ms, as the tables."""
-    stats = {  # sampler -> mode -> the median and quartiles of both times, in seconds
+def stats_of(medians) -> dict:
+    """sampler -> mode -> the median and quartiles of both times, in seconds, from ``medians`` (as MEDIANS)."""
+    return {
         s: {
             m: {f"{key}_{stat}": row[key] * f for key in ("sampling_s", "total_s") for stat, f in QUARTILES}
             for m, row in modes.items()
         }
-        for s, modes in MEDIANS.items()
+        for s, modes in medians.items()
     }
-    fig = reproduction.planning_times(stats)
-    for ax, key in zip(fig.axes, ("sampling_s", "total_s")):
-        assert [t.get_text() for t in ax.get_xticklabels()] == [n for s in MEDIANS for n in (s, s + "F")]
-        bars = sorted(ax.patches, key=lambda p: p.get_x())
-        centres = [p.get_x() + p.get_width() / 2 for p in bars]
-        np.testing.assert_allclose(ax.get_xticks(), centres)  # each name at its own bar
-        heights = [1000 * MEDIANS[s][m][key] for s in MEDIANS for m in ("without", "with")]
-        np.testing.assert_allclose([p.get_height() for p in bars], heights)
-        assert "(ms)" in ax.get_ylabel() and not ax.texts
+
+
+def test_planning_times_names_each_bar_and_its_median_under_it_in_milliseconds():
+    """BS / BSF and the bar's median under it, not over it where the quartile whiskers end; times in ms."""
+    fig = reproduction.planning_times(stats_of(MEDIANS))
+    for row, key in ((fig.axes[:4], "sampling_s"), (fig.axes[4:], "total_s")):
+        for ax, s in zip(row, MEDIANS):
+            ms = [1000 * MEDIANS[s][m][key] for m in ("without", "with")]
+            names = [f"{name}\n{timings.ms_text(t)}" for name, t in zip((s, s + "F"), ms)]
+            assert [t.get_text() for t in ax.get_xticklabels()] == names
+            bars = sorted(ax.patches, key=lambda p: p.get_x())
+            np.testing.assert_allclose(ax.get_xticks(), [p.get_x() + p.get_width() / 2 for p in bars])
+            np.testing.assert_allclose([p.get_height() for p in bars], ms)
+            assert ax.get_ylabel() == "ms" and not ax.texts
+
+
+def test_planning_times_draws_a_fast_samplers_pair_on_its_own_scale():
+    """A sampler 60 times faster than another still shows its two bars (chapter 04's 3DC-7 sampling: BS and G
+    0.09-0.4 ms beside a few ms): each panel's axis is set by its own pair, from zero."""
+    medians = {s: {m: dict(row) for m, row in modes.items()} for s, modes in MEDIANS.items()}
+    medians["BS"] = {"without": {"sampling_s": 1.2e-4, "total_s": 2e-3}, "with": {"sampling_s": 3e-4, "total_s": 3e-3}}
+    medians["OB"]["with"]["sampling_s"] = 6e-3
+    fig = reproduction.planning_times(stats_of(medians))
+    bs = fig.axes[0]
+    bottom, top = bs.get_ylim()
+    assert bottom == 0 and 0.3 < top < 0.3 * 1.5 * 1.2  # ms: the taller bar, BSF's, and its whisker fill the panel
+    assert min(p.get_height() for p in bs.patches) / top > 0.2  # BS without: a fifth of the panel, not a hair
+
+
+def test_samplers_say_how_many_samples_lie_near_a_c_obstacle_or_a_wall():
+    """The G panel "gathers near obstacles" in numbers: a panel's title counts the samples within ``near`` of a
+    C-obstacle and of a wall, the title above gives the free space's own shares (what a uniform sampler finds), and a
+    dashed line is drawn at that distance; all against the distances worked out by hand for one block (not a square:
+    x and y swapped would give other answers)."""
+    robot = robots.point_robot()  # its centre in [0.25, 30.75]^2, half a side 0.25
+    ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
+    exact = exact_checker(ws, robot)  # the C-obstacle: [9.75, 20.25] x [4.75, 12.25]
+    Q = np.array([[22.25, 8.0], [25.25, 8.0], [15.0, 1.25], [15.0, 30.0]])  # 2, 5, 3.5 and 17.75 from it
+    fig = planning.samplers(exact, {"G": Q}, attempts=10, near=3.0)  # the last two 1 and 0.75 from a wall
+    ax = fig.axes[0]
+    assert ax.get_title() == "G:\n4 samples of 10 attempts\nnear: 25% a C-obstacle, 50% a wall"
+    (w, h), band = (10.5, 7.5), 3.0  # the free space near the C-obstacle: a band round it, its corners rounded
+    free = 30.5**2 - w * h
+    by_hand = ((2 * (w + h) * band + np.pi * band**2) / free, (30.5**2 - (30.5 - 2 * band) ** 2) / free)  # 16, 39 %
+    said = [float(v) for v in re.findall(r"(\d+)% (?:lies )?near a", fig.get_suptitle())]
+    np.testing.assert_allclose(said, 100 * np.array(by_hand), atol=1.0)
+    (dashed,) = [c for c in ax.collections if isinstance(c, ContourSet)]
+    points = np.concatenate([path.vertices for path in dashed.get_paths()])  # (P, 2)
+    outside = np.maximum(np.maximum((9.75, 4.75) - points, points - (20.25, 12.25)), 0.0)  # (P, 2) how far out
+    np.testing.assert_allclose(np.linalg.norm(outside, axis=1), band, atol=0.15)  # within a pixel and a half

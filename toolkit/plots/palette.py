@@ -124,8 +124,9 @@ SHOWN_TOGETHER: dict[str, tuple[str, ...]] = {
 }
 """The roles each figure shows side by side: every two of them must stay apart (``tests/test_palette.py``)."""
 
-PAGE_WIDTH = 7.0  # inches: the course site shows a figure at most ~750 px wide (100 dpi); a wider one shrinks,
-# its text with it, so a figure a chapter shows is at most this wide and its text stays at 8 pt or more as shown
+PAGE_WIDTH = 6.1  # inches: a chapter page's output column is 631 px at 1280 px (100 dpi; a tight bounding box adds a
+# little); a wider figure shrinks, its text with it, so a figure a chapter shows is at most this wide and its text
+# stays at 8 pt or more as shown
 MIN_DISTANCE = 20.0  # CIEDE2000, between two roles shown together, under each simulated dichromacy
 PROBABILITY_CMAP = "cividis"  # P(valid): dark blue (0, in collision) to yellow (1, valid)
 GREYS_CMAP = "gray_r"  # an occupancy grid: free light, occupied dark
@@ -207,6 +208,3 @@ def probability_rgb(probability: npt.ArrayLike) -> np.ndarray:
     """``(N, 3)`` uint8 colours of probabilities ``(N,)`` on :data:`PROBABILITY_CMAP`."""
     p = np.clip(np.asarray(probability, dtype=float), 0.0, 1.0)  # (N,)
     return np.round(matplotlib.colormaps[PROBABILITY_CMAP](p)[:, :3] * 255).astype(np.uint8)
-
-
-PAGE_WIDTH = 6.1  # inches: a chapter page's output column is 631 px at 1280 px (a tight bounding box adds a little)

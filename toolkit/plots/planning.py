@@ -17,6 +17,7 @@ from matplotlib.collections import LineCollection
 from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
 from matplotlib.patches import Rectangle
+from scipy.ndimage import distance_transform_edt
 
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.planning.prm import GOAL, START, PlanStep
@@ -73,29 +74,90 @@ def _draw_cspace(ax, exact: CollisionChecker) -> None:
     ax.set_ylabel("y")
 
 
-def samplers(exact: CollisionChecker, samples: dict[str, np.ndarray], attempts: int | None = None) -> Figure:
-    """One panel per sampler: its samples ``(M, 2)`` over the C-obstacles (§III-B, "Sample Generation")."""
+NEAR = 0.05  # "near" in the sampler figure: within this share of the bounds' diagonal (half G's default sigma)
+
+
+def clearance_map(exact: CollisionChecker, pixels: int = 300) -> tuple[np.ndarray, tuple[float, float, float, float]]:
+    """``(H, W)`` each pixel's distance from the nearest C-obstacle pixel of :func:`cspace_validity`'s picture (0 on
+    one; ``inf`` in a world without any), between pixel centres, so within a pixel of the exact distance; and the
+    picture's extent."""
+    valid, extent = cspace_validity(exact, pixels)  # (H, W)
+    if valid.all():
+        return np.full(valid.shape, np.inf), extent
+    size = ((extent[3] - extent[2]) / valid.shape[0], (extent[1] - extent[0]) / valid.shape[1])  # a pixel's y, x
+    return distance_transform_edt(valid, sampling=size), extent
+
+
+def _at_pixels(field: np.ndarray, extent, Q: np.ndarray) -> np.ndarray:
+    """``(M,)`` the values of ``field (H, W)`` at the pixels that hold ``Q (M, 2)``."""
+    height, width = field.shape
+    col = ((Q[:, 0] - extent[0]) / (extent[1] - extent[0]) * width).astype(int).clip(0, width - 1)
+    row = ((Q[:, 1] - extent[2]) / (extent[3] - extent[2]) * height).astype(int).clip(0, height - 1)
+    return field[row, col]
+
+
+def _to_walls(robot, Q: np.ndarray) -> np.ndarray:
+    """``(M,)`` each configuration's distance from the nearest bound of ``Q (M, 2)``: a wall, to a sampler."""
+    return np.minimum(Q - robot.lower, robot.upper - Q).min(axis=1)
+
+
+def _near_shares(field: np.ndarray, extent, robot, Q: np.ndarray, near: float) -> tuple[float, float]:
+    """The shares of ``Q (M, 2)`` within ``near`` of a C-obstacle (read from ``field``, :func:`clearance_map`) and
+    within ``near`` of a wall (the bounds)."""
+    return float(np.mean(_at_pixels(field, extent, Q) <= near)), float(np.mean(_to_walls(robot, Q) <= near))
+
+
+def samplers(
+    exact: CollisionChecker,
+    samples: dict[str, np.ndarray],
+    attempts: int | None = None,
+    near: float | None = None,
+    *,
+    nearness: bool = True,
+) -> Figure:
+    """One panel per sampler: its samples ``(M, 2)`` over the C-obstacles (§III-B, "Sample Generation"), and (unless
+    not ``nearness``) how many of them lie near a C-obstacle or a wall, within ``near`` (default :data:`NEAR` of the
+    bounds' diagonal; a dashed line at that distance round the C-obstacles), beside the share of the free space that
+    does: where a sampler that seeks obstacles puts its samples, said in numbers."""
+    robot = exact.robot
+    near = NEAR * float(np.linalg.norm(robot.upper - robot.lower)) if near is None else float(near)
+    field, extent = clearance_map(exact)  # (H, W)
+    x, y = (
+        lo + (np.arange(n) + 0.5) * (hi - lo) / n for lo, hi, n in zip(extent[::2], extent[1::2], field.shape[::-1])
+    )
+    free = np.stack(np.meshgrid(x, y), axis=-1)[field > 0]  # (F, 2) the free pixels' centres
+    space = _near_shares(field, extent, robot, free, near)  # what a uniform sampler finds
+    shares = {name: _near_shares(field, extent, robot, Q, near) for name, Q in samples.items() if len(Q) and nearness}
     columns = min(len(samples), 2)  # two a row: as wide as the page, its text as large as it is drawn
     rows = -(-len(samples) // columns)
-    fig = Figure(figsize=(PAGE_WIDTH, 3.5 * rows + 0.4))
+    fig = Figure(figsize=(PAGE_WIDTH, 3.6 * rows + 0.7), layout="constrained")
     axes = fig.subplots(rows, columns, squeeze=False).ravel()
     for ax, (name, Q) in zip(axes, samples.items()):
         _draw_cspace(ax, exact)
-        ax.scatter(Q[:, 0], Q[:, 1], s=8, color=NODE_COLOR)
-        count = f"{len(Q)} sample{'' if len(Q) == 1 else 's'}"
-        of = f" of {attempts} attempts" if attempts else ""
-        ax.set_title(f"{name}:\n{count}{of}", fontsize=10)  # two lines: a long name never runs into its neighbour
+        if nearness and np.isfinite(field).all():
+            ax.contour(x, y, field, levels=[near], colors=COLORS["reference"], linestyles="--", linewidths=1.0)
+        ax.scatter(Q[:, 0], Q[:, 1], s=8, color=NODE_COLOR, zorder=3)
+        count = f"{len(Q)} sample{'' if len(Q) == 1 else 's'}" + (f" of {attempts} attempts" if attempts else "")
+        where = f"\nnear: {shares[name][0]:.0%} a C-obstacle, {shares[name][1]:.0%} a wall" if name in shares else ""
+        ax.set_title(f"{name}:\n{count}{where}", fontsize=9)  # lines: a long name never runs into its neighbour
     for ax in axes[len(samples) :]:
         ax.set_axis_off()
-    fig.suptitle("Samples over the exact checker (grey: C-obstacles)", fontsize=11)
-    fig.tight_layout()
-    counts = "; ".join(f"{name}: {len(Q)}" for name, Q in samples.items())
+    title = "Samples over the exact checker (grey: C-obstacles)"
+    nearby = f"near: within {near:.2g} of a C-obstacle (dashed line) or of a wall (the dotted frame);\nof the free"
+    nearby += f" space, {space[0]:.0%} lies near a C-obstacle, {space[1]:.0%} near a wall"
+    fig.suptitle(f"{title}.\n{nearby[0].upper()}{nearby[1:]}" if nearness else title, fontsize=9)
+    counts = "; ".join(
+        f"{name}: {len(Q)}"
+        + (f", {shares[name][0]:.0%} near a C-obstacle, {shares[name][1]:.0%} near a wall" if name in shares else "")
+        for name, Q in samples.items()
+    )
     of = f" of {attempts} attempts each" if attempts else ""
     valid, _ = cspace_validity(exact, pixels=4 * 20)  # (H, W): rows are y; 4 x 4 regions of 20 x 20 pixels
     blocked = 1 - valid.T.reshape(4, 20, 4, 20).mean(axis=(1, 3))  # (4, 4) C-obstacle share per region, [x, y]
-    parts = [_samples_part(exact.robot, name, Q, blocked) for name, Q in samples.items()]
-    text = f"Samples of {len(samples)} samplers{of} over the point robot's C-obstacles (grey). {counts}."
-    return describe(fig, text, parts)
+    parts = [_samples_part(robot, name, Q, blocked) for name, Q in samples.items()]
+    text = f"Samples of {len(samples)} samplers{of} over the point robot's C-obstacles (grey)"
+    text += f"; {nearby}" if nearness else ""
+    return describe(fig, f"{text}. {counts}.", parts)
 
 
 def _samples_part(robot, name: str, Q: np.ndarray, blocked: np.ndarray) -> Part:

@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.ticker import MaxNLocator
 
 from toolkit.learning import metrics
 from toolkit.learning.metrics import reconstruction_accuracy
@@ -55,49 +56,63 @@ def _drawn(grid: np.ndarray) -> np.ndarray:
     return grid[:, :, grid.shape[2] // 2] if grid.ndim == 3 else grid
 
 
+TIMES = (("sampling_s", "sampling time"), ("total_s", "total time per query"))  # the rows of planning_times
+
+
 def planning_times(planning: dict, title: str = "") -> Figure:
-    """Sampling and total time per query in ms, without / with prediction (the paper's Figures 5-7), one panel a
-    row: the median over the queries, a whisker from the first to the third quartile (the paper draws means and
-    stds; a single slow query moves both, and a std bar can reach below zero). Each panel on its own scale, set by
-    its bars: a whisker past twice the tallest bar is cut at the top, its end written (``timings.quartile_whiskers``).
-    The bars with prediction are named as the paper names them (BSF: BS with the framework)."""
-    fig = Figure(figsize=(PAGE_WIDTH, 6.4))
-    axes = fig.subplots(2, 1)
+    """Sampling and total time per query in ms, without / with prediction (the paper's Figures 5-7): a row per time,
+    a small panel per sampler, each on its own scale from zero so that a sampler's two bars compare even where
+    another sampler takes fifty times as long; the median over the queries, written under its bar, a whisker from
+    the first to the third quartile (the paper draws means and stds; a single slow query moves both, and a std bar
+    can reach below zero). A whisker past twice its panel's taller bar is cut at the top, its end written over it
+    (``timings.quartile_whiskers``). The bars with prediction are named as the paper names them (BSF: BS with the
+    framework)."""
     samplers = list(planning)  # the paper's four, or the ones the run planned
-    x = np.arange(len(samplers))[:, None] + np.array([-0.2, 0.2])  # (samplers, modes) bar centres
+    fig = Figure(figsize=(PAGE_WIDTH, 6.4), layout="constrained")
+    grid = fig.add_gridspec(len(TIMES), 1)
+    rows = [fig.add_subfigure(grid[k, 0]) for k in range(len(TIMES))]  # a row of panels a time
+    x = np.array([[0.0, 1.0]])  # (1, modes) bar centres in a panel
     said = []
-    for ax, key, label in (
-        (axes[0], "sampling_s", "sampling time (ms), median"),
-        (axes[1], "total_s", "total time per query (ms), median"),
-    ):
-        median, q1, q3 = (
-            MS * np.array([[planning[s][mode][f"{key}_{stat}"] for mode in MODES] for s in samplers]) for stat in STATS
-        )  # (samplers, modes) each
-        for i, mode in enumerate(MODES):
-            ax.bar(
-                x[:, i],
-                median[:, i],
-                0.38,
-                color=CATEGORICAL[i],
-                hatch=HATCHES[i],
-                edgecolor=COLORS["ink"],
-                linewidth=0.5,
-                label=f"{mode} prediction" + (" (F)" if mode == "with" else ""),
-            )
-        cut = quartile_whiskers(ax, x, median, q1, q3, tallest=median.max())
-        ax.set_xticks(x.ravel(), [name for s in samplers for name in (s, s + "F")], fontsize=9)
-        ax.set_xlabel("sampler (F: with prediction, the paper's name)")
-        ax.set_ylabel(label)
+    for row, (key, label) in zip(rows, TIMES):
+        panels = row.subplots(1, len(samplers), squeeze=False)[0]
+        cuts = []
+        for ax, s in zip(panels, samplers):
+            median, q1, q3 = (
+                MS * np.array([[planning[s][mode][f"{key}_{stat}"] for mode in MODES]]) for stat in STATS
+            )  # (1, modes) each
+            for i, mode in enumerate(MODES):
+                ax.bar(
+                    x[:, i],
+                    median[:, i],
+                    0.7,
+                    color=CATEGORICAL[i],
+                    hatch=HATCHES[i],
+                    edgecolor=COLORS["ink"],
+                    linewidth=0.5,
+                    label=f"{mode} prediction" + (" (F)" if mode == "with" else ""),
+                )
+            cut = quartile_whiskers(ax, x, median, q1, q3, tallest=median.max(), end_above=True)
+            cuts.append(cut_in_words(cut, [[s, s + "F"]], q3, ax.get_ylim()[1]).removeprefix("; "))
+            ax.set_xticks(x[0], [f"{name}\n{ms_text(t)}" for name, t in zip((s, s + "F"), median[0])])
+            ax.set_xlim(-0.6, 1.6)
+            ax.yaxis.set_major_locator(MaxNLocator(4))
+            ax.tick_params(labelsize=8)
+            ax.set_ylabel("ms", fontsize=8, labelpad=1)
+            ax.set_xlabel("median, ms", fontsize=8)
+        row.suptitle(f"{label} (ms): median under each bar, whiskers from quartile to quartile", fontsize=9)
         bars = ", ".join(
-            f"{s} {ms_text(median[i, 0])} without, {ms_text(median[i, 1])} with" for i, s in enumerate(samplers)
+            f"{s} {ms_text(MS * planning[s]['without'][f'{key}_median'])} without, "
+            f"{ms_text(MS * planning[s]['with'][f'{key}_median'])} with"
+            for s in samplers
         )
-        said.append(f"{label}: {bars}" + cut_in_words(cut, [[s, s + "F"] for s in samplers], q3, ax.get_ylim()[1]))
-    shown = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # each entry once
-    fig.legend(shown.values(), shown.keys(), loc="lower center", ncol=2, fontsize=8, frameon=False)
+        said.append(f"{label}: {bars}" + "".join(f"; {c}" for c in cuts if c))
+    shown = {label: h for ax in fig.axes for h, label in zip(*ax.get_legend_handles_labels())}  # each entry once
+    order = sorted(shown, key=lambda label: not label.endswith(("prediction", "(F)")))  # the bars first
+    fig.legend([shown[label] for label in order], order, loc="outside lower center", ncol=2, fontsize=8, frameon=False)
     fig.suptitle(title or "Time with and without prediction", fontsize=10)
-    fig.tight_layout(rect=(0, 0.5 / fig.get_figheight(), 1, 1))  # the legend in the 0.5 in below the panels
     text = f"{title or 'Time with and without prediction'}: bars of the median over the queries in ms, plain without"
-    text += f" prediction and hatched with it, whiskers from quartile to quartile. {'; '.join(said)}."
+    text += " prediction and hatched with it, whiskers from quartile to quartile, a small panel per sampler, each on"
+    text += f" its own scale. {'; '.join(said)}."
     parts = [
         Part(
             label,
@@ -108,7 +123,7 @@ def planning_times(planning: dict, title: str = "") -> Figure:
                 for s in samplers
             ),
         )
-        for key, label in (("sampling_s", "sampling time"), ("total_s", "total time per query"))
+        for key, label in TIMES
     ]
     return describe(fig, text, parts)
 

@@ -16,7 +16,7 @@ from matplotlib.transforms import offset_copy
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import Part, describe
-from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH, series_style
+from toolkit.plots.palette import CATEGORICAL, COLORS, PAGE_WIDTH, halo, series_style
 from toolkit.util.verdicts import per_query_ratios
 
 MODES = ("without", "with")
@@ -138,16 +138,25 @@ def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndar
 
 
 def quartile_whiskers(
-    ax, x: np.ndarray, median: np.ndarray, q1: np.ndarray, q3: np.ndarray, *, tallest: float, label: str = "quartiles"
+    ax,
+    x: np.ndarray,
+    median: np.ndarray,
+    q1: np.ndarray,
+    q3: np.ndarray,
+    *,
+    tallest: float,
+    label: str = "quartiles",
+    end_above: bool = False,
 ) -> np.ndarray:
     """Whiskers at ``x`` from the first to the third quartile ``q1``, ``q3`` (arrays of ``x``'s shape, through the
     ``median``), the y axis up to the bars (``tallest``) and every whisker within :data:`CUT` times them; a whisker
-    reaching past that is drawn to the top, ends in a triangle there and its end is written beside it. Returns which
-    whiskers were cut (``x``'s shape). Times in ms, as the cut ends are written."""
+    reaching past that is drawn to the top, ends in a triangle there and its end is written beside it (above the
+    frame, over the triangle, if ``end_above``: a narrow panel has no room beside). Returns which whiskers were cut
+    (``x``'s shape). Times in ms, as the cut ends are written."""
     top = 1.12 * max(tallest, q3[q3 <= CUT * tallest].max(initial=0.0))  # room above for a cut whisker's label
     ax.set_ylim(0, top)
     cut = q3 > top
-    ax.errorbar(
+    whiskers = ax.errorbar(
         x.ravel(),
         median.ravel(),
         yerr=[(median - q1).ravel(), (np.minimum(q3, top) - median).ravel()],
@@ -157,6 +166,8 @@ def quartile_whiskers(
         linewidth=1,
         label=label,
     )
+    for line in [*whiskers.lines[1], *whiskers.lines[2]]:  # caps and whiskers: a white ring, seen on a dark bar too
+        line.set_path_effects(halo(1.0, ("free",)))
     if cut.any():
         ax.plot(
             x[cut],
@@ -167,10 +178,11 @@ def quartile_whiskers(
             transform=offset_copy(ax.transData, ax.figure, y=-3.5, units="points"),  # inside the frame, tip at the top
             label="quartile off the scale (its value written)",
         )
+        where = (
+            dict(xytext=(0, 2), ha="center", va="bottom") if end_above else dict(xytext=(5, -1), ha="left", va="top")
+        )
         for xc, end in zip(x[cut], q3[cut]):
-            ax.annotate(
-                ms_text(end), (xc, top), xytext=(5, -1), textcoords="offset points", ha="left", va="top", fontsize=8
-            )
+            ax.annotate(ms_text(end), (xc, top), textcoords="offset points", fontsize=8, **where)
     return cut
 
 
@@ -228,61 +240,70 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
     return describe(fig, f"{text} time. {'; '.join(said)}.", parts)
 
 
-def _log_ticks(ax) -> None:
-    """A log y axis labelled in plain numbers at 1-2-5 steps (0.2, 0.5, 1, 2), finer over less than a decade."""
+def _log_ticks(ax, text=lambda t: f"{t:g}") -> None:
+    """A log y axis labelled at 1-2-5 steps (0.2, 0.5, 1, 2), finer over less than a decade; each label ``text(t)``
+    (default a plain number)."""
     ax.set_yscale("log")
     lo, hi = ax.get_ylim()
     steps = (1, 2, 5) if hi / lo >= 10 else (1, 1.5, 2, 3, 5, 7)
     ticks = [m * 10.0**e for e in range(int(np.floor(np.log10(lo))), int(np.ceil(np.log10(hi))) + 1) for m in steps]
     ticks = [t for t in ticks if lo <= t <= hi]
-    ax.set_yticks(ticks, [f"{t:g}" for t in ticks])
+    ax.set_yticks(ticks, [text(t) for t in ticks])
     ax.yaxis.set_minor_formatter(NullFormatter())
 
 
 def throughputs(rates: dict[str, dict[str, float]]) -> Figure:
-    """Configurations checked per second, ``{scenario: {checker: rate}}`` (e.g. exact, learned), log scale,
-    each bar labelled with its rate."""
-    fig = Figure(figsize=(5, 3.6))
+    """Configurations checked per second, ``{scenario: {checker: rate}}`` (e.g. exact, learned): a point per scenario
+    and checker on a log axis (where a bar's length would mean nothing), a checker's colour and marker the same in
+    every scenario, its rate written beside it and the axis labelled at 1-2-5 steps."""
+    checkers = list(dict.fromkeys(c for by in rates.values() for c in by))  # every checker, once, in its order
+    fig = Figure(figsize=(PAGE_WIDTH, 3.8), layout="constrained")
     ax = fig.subplots()
-    checkers = list(next(iter(rates.values())))
     for i, checker in enumerate(checkers):
-        bars = _grouped_bars(ax, i, len(checkers), [rates[s][checker] for s in rates], checker)
-        ax.bar_label(bars, labels=[_per_second(rates[s][checker]) for s in rates], fontsize=8)
+        x = _points(ax, i, len(checkers), [rates[s][checker] for s in rates], checker)
+        for xi, rate in zip(x, (rates[s][checker] for s in rates)):
+            ax.annotate(
+                _per_second(rate),
+                (xi, rate),
+                xytext=(7, 0),
+                textcoords="offset points",
+                ha="left",
+                va="center",
+                fontsize=8,
+            )
+    drawn = [r for by in rates.values() for r in by.values()]
     ax.set_yscale("log")
+    ax.set_ylim(min(drawn) / 1.6, max(drawn) * 1.6)
+    _log_ticks(ax, _rate_text)
+    ax.grid(True, axis="y", color=COLORS["shade"], linewidth=0.8)
+    ax.set_axisbelow(True)
     ax.set_xticks(np.arange(len(rates)), list(rates))
+    ax.set_xlim(-0.5, len(rates) - 0.5)
+    ax.tick_params(labelsize=9)
     ax.set_xlabel("scenario")
     ax.set_ylabel("configurations checked per second")
-    ax.set_title("Collision checking in batches: exact vs learned", fontsize=9)
-    ax.legend(fontsize=8)
-    fig.tight_layout()
+    ax.set_title("Collision checking in batches: each checker's rate (log scale)", fontsize=10)
+    fig.legend(loc="outside lower center", ncol=len(checkers), fontsize=9, frameon=False)
     said = "; ".join(f"{s}: " + ", ".join(f"{c} {_per_second(r[c])}" for c in checkers) for s, r in rates.items())
-    return describe(fig, f"Configurations checked per second in batches, log scale, per scenario and checker. {said}.")
+    text = "Configurations checked per second in batches, a point per scenario and checker, log scale, the rate written"
+    return describe(fig, f"{text} beside each point. {said}.")
 
 
 def _per_second(rate: float) -> str:
     """A rate in thousands or millions: ``'210k/s'``, ``'3.4M/s'``."""
-    return f"{rate / 1e6:.2g}M/s" if rate >= 1e6 else f"{rate / 1e3:.3g}k/s"
+    return f"{_rate_text(rate)}/s"
 
 
-def _points(ax, i: int, n: int, ratios: list[float], label: str) -> None:
-    """Point ``i`` of ``n`` beside each sampler's tick (``ratios (samplers,)``), in the ``i``-th series' colour and
-    marker (:func:`~toolkit.plots.palette.series_style`), without a line: a ratio is read against the line at 1."""
+def _rate_text(rate: float) -> str:
+    """A rate in thousands or millions, as an axis and a point write it: ``'210k'``, ``'3.4M'``."""
+    return f"{rate / 1e6:.2g}M" if rate >= 999.5e3 else f"{rate / 1e3:.3g}k"
+
+
+def _points(ax, i: int, n: int, values: list[float], label: str) -> np.ndarray:
+    """Point ``i`` of ``n`` beside each tick (``values (ticks,)``: a sampler's ratio, a scenario's rate), in the
+    ``i``-th series' colour and marker (:func:`~toolkit.plots.palette.series_style`), without a line: a value is read
+    against the axis, never along a line between ticks. Returns the points' ``(ticks,)`` x."""
     look = series_style(i)
-    x = np.arange(len(ratios)) + (i - (n - 1) / 2) * 0.7 / n
-    ax.plot(x, ratios, linestyle="none", marker=look["marker"], color=look["color"], markersize=7, label=label)
-
-
-def _grouped_bars(ax, i: int, n: int, heights: list[float], label: str, style: int | None = None):
-    """Bar ``i`` of ``n`` in each group (one group a tick, groups 0.8 wide), in the palette's ``style``-th colour and
-    hatch (default ``i``): the bars of one series, ``heights (groups,)``."""
-    width, style = 0.8 / n, i if style is None else style
-    return ax.bar(
-        np.arange(len(heights)) + (i - (n - 1) / 2) * width,
-        heights,
-        width,
-        label=label,
-        color=CATEGORICAL[style % len(CATEGORICAL)],
-        hatch=HATCHES[style % len(HATCHES)],
-        edgecolor=COLORS["ink"],
-        linewidth=0.5,
-    )
+    x = np.arange(len(values)) + (i - (n - 1) / 2) * 0.7 / n
+    ax.plot(x, values, linestyle="none", marker=look["marker"], color=look["color"], markersize=7, label=label)
+    return x

@@ -75,7 +75,7 @@ def samplers_in_a_passage(
 ) -> Figure:
     """One panel per sampler, its samples ``(M, 2)`` over the point robot's C-obstacles, the ``passage``
     ``((x0, y0), (x1, y1))`` outlined (dashed), with how many samples fell inside it in each panel's title."""
-    fig = planning.samplers(exact, samples, attempts)
+    fig = planning.samplers(exact, samples, attempts, nearness=False)  # one dashed outline: the passage
     (x0, y0), (x1, y1) = passage
     said = []
     for ax, (name, Q) in zip(fig.axes, samples.items()):
@@ -88,7 +88,6 @@ def samplers_in_a_passage(
         ax.set_title(f"{ax.get_title()}\n{inside} in the passage", fontsize=9)
         said.append(f"{name} {len(Q)} samples, {inside} in the passage")
     fig.suptitle(f"{len(samples)} samplers, the same attempts each (dashed: the narrow passage)", fontsize=10)
-    fig.tight_layout()
     text = f"Samples of {len(samples)} samplers over the point robot's C-obstacles, the narrow passage from "
     text += f"({x0:g}, {y0:g}) to ({x1:g}, {y1:g}) outlined: "
     text += "; ".join(said) + (f", of {attempts} attempts each." if attempts else ".")
