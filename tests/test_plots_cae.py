@@ -3,11 +3,13 @@
 import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.colors import to_rgb
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
 from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots import cae as plots
+from toolkit.plots.palette import series_style
 
 
 @pytest.fixture
@@ -105,6 +107,41 @@ def test_contraction_shows_each_models_norms_and_mean_responses():
             np.testing.assert_array_equal(lines[name].get_xdata(), flips)
             np.testing.assert_allclose(lines[name].get_ydata(), values.mean(axis=1))
     np.testing.assert_array_equal({l.get_label(): l for l in ax_x.get_lines()}["copy the input"].get_ydata(), flips)
+
+
+def pixels_of(fig, ax, color: str, tolerance: float = 0.08) -> int:
+    """How many pixels of ``ax``, as ``fig`` renders, are within ``tolerance`` (per channel, 0-1) of ``color``."""
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    image = np.asarray(canvas.buffer_rgba())[..., :3] / 255  # (H, W, 3), the top row first
+    box = ax.get_window_extent()
+    height = image.shape[0]
+    inside = image[int(height - box.y1) : int(height - box.y0), int(box.x0) : int(box.x1)]
+    return int(np.sum(np.all(np.abs(inside - to_rgb(color)) < tolerance, axis=-1)))
+
+
+def test_contraction_shows_a_line_that_another_covers_exactly():
+    """Reader r8b: the lambda = 0 line lay under lambda = 1e-3, hidden. The first line is drawn wider, with larger
+    markers, under the later ones: where two models respond alike, the first still shows at the second's edges."""
+    flips = np.array([1, 3, 10, 30])
+    same = np.array([[0.01], [0.03], [0.1], [0.3]])  # (F, 1): one trial
+    names = ["lambda = 0", "lambda = 1e-3"]
+    fig = plots.contraction(
+        {n: np.array([1.0, 2.0, 3.0]) for n in names},
+        flips=flips,
+        latent_shift=dict.fromkeys(names, same),
+        decoded_change=dict.fromkeys(names, same * 100),
+    )
+    ax_j, ax_z, ax_x = fig.axes
+    first, second = (series_style(k)["color"] for k in range(2))
+    for ax in (ax_z, ax_x):
+        under, over = (line for line in ax.get_lines() if line.get_label() in names)
+        assert under.get_linewidth() > over.get_linewidth() + 2 and under.get_markersize() > over.get_markersize()
+        assert under.get_zorder() < over.get_zorder()
+        assert pixels_of(fig, ax, first) > 0.5 * pixels_of(fig, ax, second) > 0  # the line beneath shows
+    (legend,) = [ax_j.get_legend()]  # the box plot's marks named: the triangle is the mean
+    named = dict(zip([t.get_text() for t in legend.get_texts()], legend.legend_handles))
+    assert named["mean"].get_marker() == "^" and "median" in named
 
 
 def test_latent_scatter_has_one_point_per_workspace_at_its_coordinates(rng):

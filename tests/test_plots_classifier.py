@@ -56,15 +56,15 @@ def block_of_squares(fig) -> int:
     return int(found[1]) if found else 1
 
 
-def assert_squares_mark(ax, grid, mask, k):
-    """The dangerous squares mark exactly the cells of ``mask``: one a cell (``k`` 1), or one per block of ``k x k``
-    cells, every such cell within its block of a square and every square beside one."""
+def assert_squares_mark(ax, grid, mask, k, label="invalid kept (dangerous)"):
+    """The marks named ``label`` (default: the dangerous squares) mark exactly the cells of ``mask``: one a cell (``k``
+    1), or one per block of ``k x k`` cells, every such cell within its block of a mark and every mark beside one."""
     if k == 1:
-        assert scatter_points(ax, "invalid kept (dangerous)") == cell_centres(grid, mask)
+        assert scatter_points(ax, label) == cell_centres(grid, mask)
         return
     cell = grid.axes[0][1] - grid.axes[0][0]
     dangerous = np.array(sorted(cell_centres(grid, mask)))  # (n, 2)
-    centres = np.array(sorted(scatter_points(ax, "invalid kept (dangerous)")))  # (m, 2)
+    centres = np.array(sorted(scatter_points(ax, label)))  # (m, 2)
     apart = np.max(np.abs(dangerous[:, None] - centres[None]), axis=-1) / cell  # (n, m) in cells, the larger axis
     assert (apart.min(axis=1) < k).all() and (apart.min(axis=0) < k).all()
 
@@ -217,6 +217,43 @@ def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, pr
     rates = metrics.classification(predicted.ravel(), valid.ravel())
     assert point.get_xdata()[0] == pytest.approx(1 - rates["tnr"])
     assert point.get_ydata()[0] == pytest.approx(rates["tpr"])
+
+
+@pytest.mark.parametrize("n", [N, 100])  # a mark a cell; a mark per block of cells (chapter 03 at full size)
+def test_threshold_views_mistakes_are_marked_over_the_boundary_at_a_size_one_sees(n):
+    """Reader r8b: the decision map's mistakes lay under the boundary's ringed line, invisible. Each kind has its own
+    mark (dots conservative, squares dangerous) over every cell of that kind, at least ``MIN_MARK`` points wide, drawn
+    above the boundary, in the kind's colour: as many of its pixels show as the marks' area, about."""
+    robot = robots.point_robot()
+    grid = slices.slice_grid(robot, n=n)
+    ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
+    valid = grid.image(exact_checker(ws, robot).are_valid(grid.configs))
+    x = (grid.axes[0] - grid.lower[0]) / (grid.upper[0] - grid.lower[0])
+    probability = np.repeat(x[:, None], n, axis=1) * 0.8 + 0.1 * np.sin(np.arange(n))[None, :] + 0.1
+    fig = pc.threshold_view(probability, valid, grid, threshold=0.55)
+    ax_map = fig.axes[0]
+    k = block_of_squares(fig)
+    assert (k > 1) == (n == 100)
+    codes = answers.answer_codes(probability >= 0.55, valid)
+    (boundary,) = [c for c in ax_map.get_children() if isinstance(c, ContourSet)]
+    canvas = FigureCanvasAgg(fig)
+    canvas.draw()
+    image = np.asarray(canvas.buffer_rgba())[..., :3] / 255  # (H, W, 3), the top row first
+    box = ax_map.get_window_extent()
+    shown = image[int(image.shape[0] - box.y1) : int(image.shape[0] - box.y0), int(box.x0) : int(box.x1)]
+    for code, label, marker in ((1, "valid rejected", "o"), (3, "invalid kept (dangerous)", "s")):
+        assert np.any(codes == code)
+        assert_squares_mark(ax_map, grid, codes == code, k, label=label)
+        (marks,) = [c for c in ax_map.collections if c.get_label() == label]
+        assert marks.get_zorder() > boundary.get_zorder()
+        side = np.sqrt(marks.get_sizes()[0])  # points
+        assert side >= cell_marks.MIN_MARK
+        colour = to_rgba(pc.ANSWER_COLORS[code])[:3]
+        seen = np.sum(np.all(np.abs(shown - colour) < 0.08, axis=-1))  # pixels of the kind's colour on the map
+        area = len(marks.get_offsets()) * (side * fig.dpi / 72) ** 2 * (np.pi / 4 if marker == "o" else 1)
+        assert seen >= 0.5 * area  # at least half of the marks' area, in their colour (their cells add to it)
+    legend = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "valid rejected (dots)" in legend and "invalid kept (dangerous, squares)" in legend
 
 
 def test_roc_curve_draws_every_curve_and_its_operating_point(probability, valid):

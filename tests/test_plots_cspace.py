@@ -133,6 +133,25 @@ def test_occupancy_figure_2d_is_dark_exactly_on_cells_whose_centre_is_in_a_block
     assert image.sum() == 31 * 31 - 2 * (31 * 31 - 2 * 2 - 5 * 6)  # 4 + 30 cells occupied
 
 
+def ticks_in_view(axis) -> list[float]:
+    low, high = sorted(axis.get_view_interval())
+    return [t for t in axis.get_majorticklocs() if low - 1e-9 <= t <= high + 1e-9]
+
+
+def test_occupancy_grids_are_ticked_every_few_cells(square_world, clutter):
+    """Reader r8b: the 2DS grid (0 to 31) was ticked at 0 and 20 only. One grid: a tick every 5 or 10 cells at most,
+    at least 4 each way; each layer of a 3D grid: at least 3 each way."""
+    fig = cspace.occupancy_figure(square_world)
+    fig.draw_without_rendering()
+    ax = fig.axes[0]
+    for axis in (ax.xaxis, ax.yaxis):
+        ticks = ticks_in_view(axis)
+        assert len(ticks) >= 4 and np.max(np.diff(ticks)) <= 10
+    layers = cspace.occupancy_figure(clutter, layers=[2, 7])
+    layers.draw_without_rendering()
+    assert all(len(ticks_in_view(axis)) >= 3 for ax in layers.axes for axis in (ax.xaxis, ax.yaxis))
+
+
 def test_occupancy_figure_3d_draws_one_layer_per_z(clutter):
     fig = cspace.occupancy_figure(clutter)
     images = [ax.images[0] for ax in fig.axes]

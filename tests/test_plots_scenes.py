@@ -107,10 +107,17 @@ def test_the_series_panels_show_each_dof_clearance_and_probability(crossing):
         probability=probability,
         threshold=threshold,
     )
-    dof_ax, clearance_ax, probability_ax = fig.axes[1:]
+    *dof_axes, clearance_ax, probability_ax = fig.axes[1:]
     along = np.linspace(0.0, 1.0, FRAMES)
-    dofs = [artist for artist in dof_ax.lines if artist.get_gid() == "dof"]
-    assert [artist.get_label() for artist in dofs] == list(robot.dof_names)
+    panels = [[artist for artist in ax.lines if artist.get_gid() == "dof"] for ax in dof_axes]
+    # a panel per kind, none with more than three lines (seven in one crossed and hid each other: reader r8b)
+    assert [[artist.get_label() for artist in lines] for lines in panels] == [
+        ["x", "y", "z"],
+        ["alpha", "beta", "gamma"],
+        ["joint1"],
+    ]
+    assert [ax.get_ylabel() for ax in dof_axes] == ["position", "angles", "joints"]
+    dofs = [artist for lines in panels for artist in lines]
     for k, artist in enumerate(dofs):
         np.testing.assert_allclose(artist.get_xdata(), along)
         np.testing.assert_allclose(
@@ -129,8 +136,10 @@ def test_the_series_panels_show_each_dof_clearance_and_probability(crossing):
 
 def test_only_the_given_series_get_panels(crossing):
     robot, workspace, _, path, _ = crossing
-    assert len(scenes.path_frame(robot, path, 0, workspace=workspace).axes) == 2
-    assert len(scenes.path_frame(robot, path, 0, probability=np.ones(FRAMES)).axes) == 3
+    assert len(scenes.path_frame(robot, path, 0, workspace=workspace).axes) == 1 + 3  # the robot, the DoFs by kind
+    assert len(scenes.path_frame(robot, path, 0, probability=np.ones(FRAMES)).axes) == 1 + 3 + 1
+    office = scenarios.get("3do").robot  # x, y on the floor, its heading, five joints
+    assert scenes.dof_groups(office) == {"position": [0, 1], "angles": [2], "joints": [3, 4, 5, 6, 7]}
 
 
 @pytest.mark.parametrize("series", [{}, {"clearance": np.ones(FRAMES), "probability": np.ones(FRAMES)}])
@@ -214,7 +223,7 @@ def test_no_text_of_a_frame_lies_over_another(crossing, index):
     )
     renderer = FigureCanvasAgg(fig).get_renderer()
     fig.draw(renderer)
-    names = [t for t in fig.axes[1].texts if t.get_text() in robot.dof_names]
+    names = [t for ax in fig.axes[1:] for t in ax.texts if t.get_text() in robot.dof_names]
     assert len(names) == robot.dof
     boxes = [(t, t.get_window_extent(renderer)) for t in drawn_texts(fig)]
     over = [
@@ -223,8 +232,9 @@ def test_no_text_of_a_frame_lies_over_another(crossing, index):
         if box_a.overlaps(box_b) and min(box_a.intersection(box_a, box_b).size) > 1
     ]
     assert over == []
-    heights = sorted(box.y0 for t, box in boxes if t in names)  # pixels, at 100 dpi
-    assert np.min(np.diff(heights)) >= scenes.LABEL_GAP * fig.dpi / 72 - 1
+    for ax in fig.axes[1:]:  # in each panel, the names a line of text apart
+        heights = sorted(box.y0 for t, box in boxes if t in names and t in ax.texts)  # pixels, at 100 dpi
+        assert len(heights) < 2 or np.min(np.diff(heights)) >= scenes.LABEL_GAP * fig.dpi / 72 - 1
 
 
 def drawn_texts(fig) -> list[Text]:

@@ -254,3 +254,16 @@ def test_an_animations_still_shows_the_path_and_the_robot_at_its_start_middle_an
     alt = html.unescape(found(r'id="toolkit-no-webgl"[\s\S]*?alt="([^"]*)"', document))
     assert "the path of the robot's base" in alt
     assert re.search(r"close up among the blocks near it: start, valid; middle, valid; goal, valid\.$", alt)
+
+
+def test_the_office_snapshot_shows_the_youbot_larger_than_its_sample_marks_and_near():
+    """Reader r8b: the youBot was about 40 px, smaller than the marks in front of it. Every sample mark but the
+    sparkle (which rings a mark) is at most a fifth of the platform's narrower side, and the camera stands within
+    three and a half robot sizes of it (it stood at 5.2: in a headless Chromium at 800 x 440 px the platform grew
+    from about 60 to about 95 px wide)."""
+    robot = scenarios.get("3do").robot
+    platform = 2 * np.array(robot.links[0].half_extents[:2])  # (2,) its footprint, workspace units
+    for shape, scale in (draw.SAMPLE_SHAPES[kind] for kind in ("valid", "in collision")):
+        assert draw.POINT_SIZE["3do"] * scale <= platform.min() / 5, shape
+    looks, positions = draw.follow_camera(robot, np.clip(np.zeros(robot.dof), robot.lower, robot.upper)[None])
+    assert np.linalg.norm(positions - looks) <= 3.5 * draw._robot_size(robot)

@@ -50,10 +50,8 @@ def training_curves(
     n = len(histories)
     for k, (name, history) in enumerate(histories.items()):
         every = max(1, len(history) // 8)  # about 8 markers a line, each line's shifted: never over each other's
-        style = series_style(k) | dict(
-            markevery=(k * every // n, every), markersize=6, linewidth=1.2 + 3.0 * (n - 1 - k) / max(n - 1, 1)
-        )
-        ax.plot(np.arange(1, len(history) + 1), history, label=name, zorder=2 + k, **style)
+        style = _stacked(k, n) | dict(markevery=(k * every // n, every), markersize=6)
+        ax.plot(np.arange(1, len(history) + 1), history, label=name, **style)
     if log:
         ax.set_yscale("log")
     ax.set_xlabel("epoch")
@@ -66,6 +64,13 @@ def training_curves(
         for name, h in histories.items()
     )
     return describe(fig, f"Training curves, epoch across and {ylabel} up{' on a log scale' if log else ''}. {said}.")
+
+
+def _stacked(k: int, n: int) -> dict[str, Any]:
+    """The style of the ``k``-th of ``n`` lines that may coincide: its series' colour, line style and marker, each
+    later line thinner, its markers smaller, drawn over the earlier ones (a line under another shows at its edges)."""
+    under = (n - 1 - k) / max(n - 1, 1)  # 1 for the first line (the lowest), 0 for the last (on top)
+    return series_style(k) | dict(linewidth=1.2 + 3.0 * under, markersize=5 + 5 * under, zorder=2 + k)
 
 
 def error_cells(grid: np.ndarray, decoded: np.ndarray) -> np.ndarray:
@@ -201,12 +206,12 @@ def contraction(
     ax_j, ax_z, ax_x = panels["j"], panels["z"], panels["x"]
     names = list(jacobian_norms)
     _draw_norms(ax_j, jacobian_norms)
-    for k, name in enumerate(names):
-        ax_z.plot(flips, np.mean(latent_shift[name], axis=1), label=name, **series_style(k))
-        ax_x.plot(flips, np.mean(decoded_change[name], axis=1), label=name, **series_style(k))
-    ax_x.plot(flips, flips, color=COLORS["reference"], linestyle=":", label="copy the input")
+    for k, name in enumerate(names):  # two models that respond alike: the first line wide under the next, thinner
+        ax_z.plot(flips, np.mean(latent_shift[name], axis=1), label=name, **_stacked(k, len(names)))
+        ax_x.plot(flips, np.mean(decoded_change[name], axis=1), label=name, **_stacked(k, len(names)))
+    ax_x.plot(flips, flips, color=COLORS["reference"], linestyle=":", label="copy the input", zorder=1)
     ax_z.set_ylabel("latent move ||z' - z|| / ||z||")
-    ax_z.set_title("Latent code moves", fontsize=10)
+    ax_z.set_title("Latent code moves\n(a line drawn over another is thinner)", fontsize=10)
     ax_x.set_ylabel("decoded cells that change sign")
     ax_x.set_title("Reconstruction changes", fontsize=10)
     for ax in (ax_z, ax_x):
@@ -228,24 +233,40 @@ def contraction(
         ),
     )
     parts = [norms, lines_part(ax_z, text="mean over the trials"), lines_part(ax_x, text="mean over the trials")]
-    text = "How strongly each encoder reacts to its input: the norm of its Jacobian, and how far the latent code and"
+    text = "How strongly each encoder reacts to its input: the norm of its Jacobian (a box per model, the median a"
+    text += " thick line, the mean a triangle), and how far the latent code and"
     return describe(fig, f"{text} the reconstruction move when cells of the input are flipped. {said}.", parts)
 
 
+NORM_MARKS: dict[str, dict[str, Any]] = {  # a box plot's marks, each named in the panel's legend
+    "median": dict(color=COLORS["ink"], linewidth=2),
+    "mean": dict(marker="^", color=COLORS["ink"], markerfacecolor=COLORS["free"], markeredgecolor=COLORS["ink"]),
+    "outlier (beyond 1.5 box heights)": dict(
+        marker="o", markerfacecolor="none", markeredgecolor=COLORS["ink"], markersize=3
+    ),
+}
+
+
 def _draw_norms(ax, jacobian_norms: dict[str, np.ndarray]) -> None:
-    """A box per model of its encoder's Jacobian norms over the workspaces, the mean a triangle."""
+    """A box per model of its encoder's Jacobian norms over the workspaces (the middle half of them, whiskers to the
+    farthest within 1.5 box heights), the median a thick line, the mean a triangle: a legend names each mark."""
     names = list(jacobian_norms)
     ink = dict(color=COLORS["ink"])
+    median, mean, outlier = NORM_MARKS.values()
     ax.boxplot(
         [np.asarray(jacobian_norms[n]) for n in names],
         showmeans=True,
         boxprops=ink,
         whiskerprops=ink,
         capprops=ink,
-        medianprops=ink | dict(linewidth=2),
-        meanprops=dict(marker="^", color=COLORS["ink"], markerfacecolor=COLORS["free"], markeredgecolor=COLORS["ink"]),
-        flierprops=dict(marker="o", markeredgecolor=COLORS["ink"], markersize=3),
+        medianprops=median,
+        meanprops=mean,
+        flierprops=outlier,
     )
+    marks = [Line2D([], [], linestyle="-" if "marker" not in style else "", **style) for style in NORM_MARKS.values()]
+    low, high = ax.get_ylim()
+    ax.set_ylim(low, high + 0.25 * (high - low))  # room above the boxes: the legend covers none
+    ax.legend(marks, list(NORM_MARKS), fontsize=8, loc="upper center")
     ax.set_xticks(range(1, len(names) + 1), _fitted(names, _slot_points(ax, len(names)), NAME_POINTS), fontsize=9)
     ax.set_xlabel("model")
     ax.set_ylabel("Jacobian norm ||dz/dx|| per workspace")

@@ -1,12 +1,13 @@
-"""Marks on a map's cells that one can see however fine the map: notebook 03's dangerous squares.
+"""Marks on a map's cells that one can see however fine the map: notebook 03's mistakes.
 
 A map of a 2-DoF slice (:class:`~toolkit.plots.slices.CSpaceSlice`) marks some of its cells (the classifier's
-dangerous mistakes, :mod:`toolkit.plots.classifier`). On a coarse map a mark covers most of its cell; on a fine one
-(chapter 03 at full size: 100 cells over 3 inches, about 2 points a cell) a mark that size is a speck, and a mark
-made larger would cover its neighbours' marks. :func:`draw_cell_marks` puts a mark on each marked cell, over the map
-and under its outlines; :func:`fit_cell_marks`, once the figure is laid out, sizes each mark to :data:`MARK_SHARE`
-of its cell, and where that is under :data:`MIN_MARK` points, puts one mark on each block of ``k x k`` cells holding
-a marked cell, at their middle, ``k`` the fewest cells that make it that large.
+dangerous mistakes on a P(valid) map, both kinds of mistake on a decision map, :mod:`toolkit.plots.classifier`).
+On a coarse map a mark covers most of its cell; on a fine one (chapter 03 at full size: 100 cells over 3 inches,
+about 2 points a cell) a mark that size is a speck, and a mark made larger would cover its neighbours' marks.
+:func:`draw_cell_marks` puts a mark on each marked cell, over the map and under its outlines (or over them);
+:func:`fit_cell_marks`, once the figure is laid out, sizes each mark to :data:`MARK_SHARE` of its cell, and where
+that is under :data:`MIN_MARK` points, puts one mark on each block of ``k x k`` cells holding a marked cell, at their
+middle, ``k`` the fewest cells that make it that large.
 """
 
 from __future__ import annotations
@@ -24,7 +25,8 @@ GID = "cell marks"  # how fit_cell_marks finds the marks draw_cell_marks drew
 
 def draw_cell_marks(ax, grid: CSpaceSlice, mask, **style) -> PathCollection:
     """A mark (``style``: scatter's options) at the centre of each cell of ``grid`` where ``mask (nx, ny)`` holds,
-    over the map, under the lines on it (a boundary stays whole); :func:`fit_cell_marks` sizes them once laid out."""
+    over the map, under the lines on it (a boundary stays whole) unless ``style`` gives a ``zorder`` above them;
+    :func:`fit_cell_marks` sizes them once laid out."""
     i, j = np.nonzero(mask)
     return ax.scatter(grid.axes[0][i], grid.axes[1][j], s=MIN_MARK**2, gid=GID, **style)
 

@@ -45,7 +45,7 @@ from toolkit.plots.slices import CSpaceSlice
 
 DANGEROUS, CONSERVATIVE, BOUNDARY = COLORS["dangerous"], COLORS["conservative"], COLORS["boundary"]
 ANSWER_COLORS = (COLORS["free"], CONSERVATIVE, COLORS["occupied"], DANGEROUS)  # free white, obstacles dark
-MISTAKE_MARKERS = {1: ".", 3: "s"}  # conservative dots, dangerous squares: the mistakes told without colour
+MISTAKE_MARKERS = {1: "o", 3: "s"}  # conservative dots, dangerous squares: the mistakes told without colour
 
 
 def probability_map(
@@ -167,23 +167,34 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     grid_spec = fig.add_gridspec(2, 2, height_ratios=(1.25, 1))
     ax_map, ax_counts, ax_roc = (fig.add_subplot(grid_spec[where]) for where in ((0, 0), (1, slice(None)), (0, 1)))
     _draw_decision(ax_map, predicted, valid, grid)
-    ax_map.set_title(f"decision at threshold {threshold:.2f}", fontsize=9)
+    ax_map.set_title(f"decision at threshold {threshold:.2f}\na mark per cell holding a mistake", fontsize=9)
     _draw_counts(ax_counts, predicted, valid)
     roc = _draw_roc(ax_roc, {"": (probability, valid, threshold)})
     fig.suptitle(title)
     cells = [Patch(facecolor=c, edgecolor=COLORS["ink"]) for c in ANSWER_COLORS]
-    handles: list[Any] = [  # a mistake's cell with its marker on it
-        (cell, Line2D([], [], linestyle="", marker=MISTAKE_MARKERS[code], color=COLORS["ink"]))
-        if code in MISTAKE_MARKERS
-        else cell
+    handles: list[Any] = [  # a mistake's cell with its mark on it
+        (cell, Line2D([], [], linestyle="", **_mistake_mark(code, legend=True))) if code in MISTAKE_MARKERS else cell
         for code, cell in enumerate(cells)
     ]
     boundary = Line2D([], [], color=BOUNDARY, path_effects=halo(1.2))
-    labels = ["true C-obstacle boundary", *ANSWERS]
+    k = fit_cell_marks(fig, grid)  # the mistakes' marks as large as one sees, over their cells and the boundary
+    block = f" (one per {k} x {k} cells holding any)" if k > 1 else ""
+    if k > 1:  # the marks are fewer than the mistakes the bars count: the map says why (as tall a title: same layout)
+        ax_map.set_title(
+            f"decision at threshold {threshold:.2f}\na mark per {k} x {k} cells holding a mistake", fontsize=9
+        )
+    labels = [
+        "true C-obstacle boundary",
+        ANSWERS[0],
+        f"{ANSWERS[1]} (dots)",
+        ANSWERS[2],
+        "invalid kept (dangerous, squares)",
+    ]
     fig.legend([boundary, *handles], labels, loc="outside lower center", ncols=3, fontsize=8, frameon=False)
     text = f"{title + ': ' if title else ''}the model's decision at threshold {threshold:.2f} over {grid.names[0]} and "
-    text += f"{grid.names[1]}, each cell by its kind of answer (dangerous ones marked with squares, conservative ones "
-    text += f"with dots), their counts, and the ROC curve. {answers.answers_in_words(predicted, valid)}; {roc}."
+    text += f"{grid.names[1]}, each cell by its kind of answer, the mistakes marked over their cells and the boundary"
+    text += f"{block}: dangerous ones with squares, conservative ones with dots; their counts, and the ROC curve. "
+    text += f"{answers.answers_in_words(predicted, valid)}; {roc}."
     cut, fpr, tpr = roc_points(probability, valid, np.linspace(0.0, 1.0, 11))  # (11,) each
     curve = Part(
         "ROC curve",
@@ -218,8 +229,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
     if conservative:
         ax.add_collection(_cells(grid, codes == 1, label=ANSWERS[1], **CONSERVATIVE_CELLS))
-    style = dict(c=DANGEROUS, marker="s", linewidths=0, label=ANSWERS[3], path_effects=halo(0.0))
-    draw_cell_marks(ax, grid, codes == 3, **style)  # squares a cell or a block of cells wide: fit_cell_marks
+    draw_cell_marks(ax, grid, codes == 3, label=ANSWERS[3], **_mistake_mark(3))  # sized by fit_cell_marks
     return image
 
 
@@ -300,11 +310,19 @@ def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):
         interpolation="nearest",
     )
     _draw_boundary(ax, valid, grid)
-    area = (120.0 / max(grid.shape)) ** 2  # points^2
-    for code, marker in MISTAKE_MARKERS.items():  # the mistakes told by shape too, in ink on their cells
-        i, j = np.nonzero(codes == code)
-        ax.scatter(grid.axes[0][i], grid.axes[1][j], s=area, c=COLORS["ink"], marker=marker, linewidths=0)
+    for code in MISTAKE_MARKERS:  # each mistake marked in its colour and shape, over the boundary's ringed line
+        draw_cell_marks(ax, grid, codes == code, label=ANSWERS[code], zorder=3, **_mistake_mark(code))
     return image
+
+
+def _mistake_mark(code: int, *, legend: bool = False) -> dict[str, Any]:
+    """The mark of a mistake of answer ``code`` (1 conservative, 3 dangerous): its colour in a black, then a white
+    ring (it stands out on white, on the obstacles' dark grey and on its own cell's colour); scatter's options, or a
+    legend line's."""
+    color = ANSWER_COLORS[code]
+    if legend:
+        return dict(marker=MISTAKE_MARKERS[code], color=color, markeredgecolor=COLORS["ink"], path_effects=halo(0.0))
+    return dict(c=color, marker=MISTAKE_MARKERS[code], linewidths=0, path_effects=halo(0.0), clip_on=False)
 
 
 def _draw_boundary(ax, valid, grid: CSpaceSlice) -> None:

@@ -169,7 +169,8 @@ def occupancy_figure(workspace: Workspace, layers: Sequence[int] | None = None, 
     for ax, image, title in zip(axes.ravel(), images, titles):
         ax.imshow(image.T, origin="lower", extent=extent, cmap=OCCUPANCY_CMAP, vmin=-1, vmax=1, interpolation="nearest")
         ax.set_title(title, fontsize=9)
-        ax.locator_params(nbins=3)  # few tick labels: drawing text is most of this figure's cost
+        ax.locator_params(nbins=6 if len(images) == 1 else 4)  # a tick every few cells (0..31: every 5), no more:
+        # drawing text is most of a many-layered figure's cost
         ax.tick_params(labelsize=8)
     for row in axes:
         row[0].set_ylabel("y")

@@ -144,7 +144,7 @@ MARKS_ON: dict[str, tuple[tuple[str, ...], dict[str, tuple[str, ...]]]] = {
     ),
     "classifier answers": (
         ("free", "conservative", "occupied", "dangerous"),
-        {"boundary": HALO},
+        {"boundary": HALO, "conservative": HALO, "dangerous": HALO},  # the mistakes' marks over the cells
     ),
     "classifier mistakes": (("dangerous", "conservative"), {"ink": ()}),  # markers on the wrong cells
     "CAE errors": (("phantom", "missed"), {"ink": ()}),  # markers on the wrongly decoded cells

@@ -22,13 +22,20 @@ from matplotlib.figure import Figure
 from matplotlib.gridspec import SubplotSpec
 from matplotlib.patches import Patch
 
-from toolkit.geometry.robots import BoxRobot
+from toolkit.geometry.robots import BASES, BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import ROWS, Part, describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d
 from toolkit.plots.cspace import frame_region
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo, series_style
-from toolkit.plots.robot_drawing import BLOCK_STYLE, INVALID_COLOR, VALID_COLOR, draw_robot, few_ticks, link_style
+from toolkit.plots.robot_drawing import (
+    BLOCK_STYLE,
+    INVALID_COLOR,
+    VALID_COLOR,
+    draw_robot,
+    few_ticks,
+    link_style,
+)
 
 TRACE_COLOR = COLORS["trace"]  # the path of the robot's base, as the viewer's path line
 UNCHECKED_COLOR = COLORS["unchecked"]  # the robot when no validity is given
@@ -202,8 +209,8 @@ def path_frame(
     along the whole path (``COLORS["trace"]``, inside the window).
     Right, against the fraction of the path travelled, a line at this frame in each:
     every DoF scaled to its bounds (0 = lower, 1 = upper; straight segments between
-    roadmap nodes show as straight lines); ``clearance (T,)``, a lower bound on the
-    distance to the nearest block (``checker.clearances``), if given; the model's
+    roadmap nodes show as straight lines), a panel per kind (:func:`dof_groups`); ``clearance (T,)``, a lower
+    bound on the distance to the nearest block (``checker.clearances``), if given; the model's
     ``probability (T,)`` of validity with its ``threshold``, if given.
     """
     Q = robot.check_configs(configurations, "configurations")  # (T, dof)
@@ -214,8 +221,8 @@ def path_frame(
         name: _per_frame(values, frames, name)
         for name, values in (("valid", valid), ("clearance", clearance), ("probability", probability))
     }
-    fig = Figure(figsize=(PAGE_WIDTH, 5.6))  # as wide as the page: its text as large as it is drawn
-    grid = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.6, top=0.76, bottom=0.1, left=0.02, right=0.88)
+    fig = Figure(figsize=(PAGE_WIDTH, 6.6))  # as wide as the page: its text as large as it is drawn
+    grid = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.6, top=0.8, bottom=0.08, left=0.02, right=0.88)
     valid_now = None if series["valid"] is None else bool(series["valid"][index])
     _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, valid_now, workspace, margin)
     _draw_series(fig, grid[1], robot, Q, index, series, threshold)
@@ -250,7 +257,11 @@ def _series_in_words(robot: BoxRobot, Q: np.ndarray, series: dict, threshold: fl
     """The right-hand panels in words: which DoFs move, the clearance and P(valid) along the path."""
     scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
     moves = [f"{name} {scaled[0, k]:.2f} to {scaled[-1, k]:.2f}" for k, name in enumerate(robot.dof_names)]
-    text = "each DoF scaled to its bounds (0 lower, 1 upper), from start to end: " + ", ".join(moves)
+    kinds = "; ".join(
+        f"{kind}: {', '.join(robot.dof_names[k] for k in dofs)}" for kind, dofs in dof_groups(robot).items()
+    )
+    text = f"each DoF scaled to its bounds (0 lower, 1 upper), a panel per kind ({kinds}), from start to end: "
+    text += ", ".join(moves)
     if (valid := series["valid"]) is not None:
         text += f"; {int(np.sum(valid == 0))} of {len(valid)} frames in collision"
     if (clearance := series["clearance"]) is not None:
@@ -269,14 +280,13 @@ def _draw_series(
     """The right of :func:`path_frame`: panels one above the other against the fraction of the path travelled (the
     DoFs, then the clearance and P(valid) where given), a line at frame ``index`` in each."""
     along = np.linspace(0.0, 1.0, len(Q))  # (T,)
-    panels = [partial(_draw_dofs, fig, robot, Q)]
+    groups = dof_groups(robot)
+    panels = [partial(_draw_dofs, fig, robot, Q, dofs, name) for name, dofs in groups.items()]
     if (clearance := series["clearance"]) is not None:
         panels.append(partial(_draw_clearance, clearance))
     if (probability := series["probability"]) is not None:
         panels.append(partial(_draw_probability, probability, threshold))
-    heights = (1.7, *[1.0] * (len(panels) - 1))  # the DoFs' panel taller: its lines and their names need room
-    axes = spec.subgridspec(len(panels), 1, hspace=0.15, height_ratios=heights).subplots(sharex=True, squeeze=False)
-    axes = axes[:, 0]
+    axes = spec.subgridspec(len(panels), 1, hspace=0.2).subplots(sharex=True, squeeze=False)[:, 0]
     for ax, draw_panel in zip(axes, panels):
         draw_panel(ax, along)
         ax.axvline(along[index], color=NOW_COLOR, linewidth=1.0, gid="now")
@@ -284,42 +294,58 @@ def _draw_series(
         ax.tick_params(labelsize=9)
         ax.label_outer()
     axes[-1].set_xlabel("fraction of the path")
+    handles = [h for ax in axes[: len(groups)] for h in ax.get_lines() if h.get_gid() == "dof"]
+    fig.legend(
+        handles,
+        [h.get_label() for h in handles],
+        title="each DoF in its bounds: 0 lower, 1 upper",
+        title_fontsize=9,
+        fontsize=9,
+        ncol=min(robot.dof, 4),
+        loc="upper center",
+        bbox_to_anchor=(0.68, 0.93),  # between the title and the panels
+        frameon=False,
+        handlelength=3.0,
+        columnspacing=0.8,
+    )
 
 
-def _draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, ax, along: np.ndarray) -> None:
-    """Every DoF of ``Q (T, dof)`` scaled to its bounds (0 = lower, 1 = upper), each in its own colour, line style
-    and marker, named in the legend above the panels and directly at the line's end."""
+def dof_groups(robot: BoxRobot) -> dict[str, list[int]]:
+    """The robot's DoFs by kind, each kind a panel of :func:`path_frame` (seven lines in one panel cross and hide
+    each other): ``{"position": [0, 1, 2], "angles": [3, 4, 5], "joints": [6]}`` for a free-flying chain."""
+    _, angular = BASES[robot.base]  # (base DoFs,) whether each is an angle
+    kinds = {
+        "position": [k for k, angle in enumerate(angular) if not angle],
+        "angles": [k for k, angle in enumerate(angular) if angle],
+        "joints": list(range(len(angular), robot.dof)),
+    }
+    return {kind: dofs for kind, dofs in kinds.items() if dofs}
+
+
+def _draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, dofs: list[int], kind: str, ax, along: np.ndarray) -> None:
+    """The DoFs ``dofs`` of ``Q (T, dof)`` scaled to their bounds (0 = lower, 1 = upper), each in its own colour,
+    line style and marker (as the legend above the panels names them), and named directly at the line's end."""
     scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
     every = max(1, len(Q) // 6)
-    for k, name in enumerate(robot.dof_names):
+    for k in dofs:
         style = series_style(k) | dict(markevery=(k % every, every), markersize=6)
-        ax.plot(along, scaled[:, k], linewidth=1.4, label=name, gid="dof", **style)
+        ax.plot(along, scaled[:, k], linewidth=1.4, label=robot.dof_names[k], gid="dof", **style)
     ax.set_ylim(-0.05, 1.05)
     box = ax.get_position()  # in figure fractions: the gridspec has placed the panel
     per_unit = box.height * fig.get_figheight() * 72 / 1.1  # points per unit of the y axis (1.1 units tall)
-    ends = _spread(scaled[-1], gap=LABEL_GAP / per_unit)  # (dof,) label heights a line of text apart
-    for k, name in enumerate(robot.dof_names):
+    ends = _spread(scaled[-1, dofs], gap=LABEL_GAP / per_unit)  # (len(dofs),) label heights a line of text apart
+    for k, end in zip(dofs, ends):
         ax.annotate(
-            name,
+            robot.dof_names[k],
             (1.0, scaled[-1, k]),
-            xytext=(1.02, ends[k]),
+            xytext=(1.02, end),
             textcoords=("axes fraction", "data"),
             fontsize=8,
             va="center",
             color=series_style(k)["color"],
             annotation_clip=False,
         )
-    ax.set_ylabel("DoF in bounds")
-    fig.legend(
-        *ax.get_legend_handles_labels(),
-        fontsize=9,
-        ncol=min(robot.dof, 4),
-        loc="upper center",
-        bbox_to_anchor=(0.68, 0.9),  # between the title and the panels
-        frameon=False,
-        handlelength=3.0,
-        columnspacing=0.8,
-    )
+    ax.set_ylabel(kind, fontsize=9)
 
 
 LABEL_GAP = 11.0  # points between two names at the lines' ends: an 8-point line of text (~9.4 pt tall) and air

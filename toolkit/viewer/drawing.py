@@ -35,7 +35,7 @@ OBSTACLE_OPACITY = {"3dc": 0.45}  # by workspace family: see through the clutter
 VALID = rgb("valid")
 COLLIDING = rgb("invalid")
 MISTAKE = rgb("ink")  # a sample the learned model gets wrong (drawn over its validity colour)
-POINT_SIZE = {"2ds": 0.25, "3do": 0.2, "3dc": 0.12}  # sample markers, by workspace family
+POINT_SIZE = {"2ds": 0.25, "3do": 0.12, "3dc": 0.12}  # sample markers, by workspace family
 SAMPLE_SHAPES: dict[str, tuple[Literal["circle", "diamond", "sparkle"], float]] = {
     "valid": ("circle", 1.0),
     "in collision": ("diamond", 1.6),
@@ -274,7 +274,7 @@ def camera_pose(robot: BoxRobot, workspace: Workspace, q: np.ndarray) -> tuple[n
 
 
 ROBOT_VIEW = (-0.45, -1.0, 0.7)  # a robot camera's direction: from the front-left and above (length ~1.3: it fits)
-ROBOT_SPAN = 4.0  # a robot's camera frames this many robot sizes: the robot, large, and the blocks beside it
+ROBOT_SPAN = 2.5  # a robot's camera frames this many robot sizes: the robot, large, and the blocks beside it
 
 
 def robot_camera(robot: BoxRobot, q) -> tuple[np.ndarray, np.ndarray]:
