@@ -10,7 +10,7 @@ from matplotlib.text import Text
 
 from toolkit import scenarios
 from toolkit.geometry.collision import exact_checker
-from toolkit.plots import robot_drawing, scenes
+from toolkit.plots import dof_panels, robot_drawing, scenes
 from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR
 
 FRAMES = 25
@@ -139,7 +139,7 @@ def test_only_the_given_series_get_panels(crossing):
     assert len(scenes.path_frame(robot, path, 0, workspace=workspace).axes) == 1 + 3  # the robot, the DoFs by kind
     assert len(scenes.path_frame(robot, path, 0, probability=np.ones(FRAMES)).axes) == 1 + 3 + 1
     office = scenarios.get("3do").robot  # x, y on the floor, its heading, five joints
-    assert scenes.dof_groups(office) == {"position": [0, 1], "angles": [2], "joints": [3, 4, 5, 6, 7]}
+    assert dof_panels.dof_groups(office) == {"position": [0, 1], "angles": [2], "joints": [3, 4, 5, 6, 7]}
 
 
 @pytest.mark.parametrize("series", [{}, {"clearance": np.ones(FRAMES), "probability": np.ones(FRAMES)}])
@@ -234,7 +234,7 @@ def test_no_text_of_a_frame_lies_over_another(crossing, index):
     assert over == []
     for ax in fig.axes[1:]:  # in each panel, the names a line of text apart
         heights = sorted(box.y0 for t, box in boxes if t in names and t in ax.texts)  # pixels, at 100 dpi
-        assert len(heights) < 2 or np.min(np.diff(heights)) >= scenes.LABEL_GAP * fig.dpi / 72 - 1
+        assert len(heights) < 2 or np.min(np.diff(heights)) >= dof_panels.LABEL_GAP * fig.dpi / 72 - 1
 
 
 def drawn_texts(fig) -> list[Text]:

@@ -6,15 +6,19 @@ one of the four kinds of ``ANSWERS`` (:func:`answer_codes`): valid kept and inva
 configuration rejected is a conservative mistake (it costs a sample), an invalid one kept a dangerous one (a
 configuration in collision that a planner would trust). :func:`confusion_counts` counts them,
 :func:`mistakes_near_boundary` says how many mistakes lie beside the true C-obstacle's boundary on a map of a
-slice, and :func:`roc_points` sweeps the threshold. The figures of :mod:`toolkit.plots.classifier` draw them.
+slice, and :func:`roc_points` sweeps the threshold. :func:`draw_rates` and :func:`draw_roc` draw the rates and
+the ROC curve on an axes; the figures of :mod:`toolkit.plots.classifier` are made of them.
 """
 
 from __future__ import annotations
+
+from collections.abc import Mapping
 
 import numpy as np
 
 from toolkit.learning import metrics
 from toolkit.plots.alt import Part, map_part
+from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, series_style
 from toolkit.plots.slices import CSpaceSlice
 
 ANSWERS = ("valid kept", "valid rejected", "invalid rejected", "invalid kept (dangerous)")  # answer_codes 0-3
@@ -129,3 +133,65 @@ def answer_tables(predicted_valid, valid) -> list[Part]:
             ),
         ),
     ]
+
+
+def draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
+    """Accuracy, TPR and TNR of each model in ``scores`` (``metrics.classification``'s keys) as bars, each bar's value
+    written on it."""
+    keys, labels = ("acc", "tpr", "tnr"), ("accuracy", "TPR (valid kept)", "TNR (invalid rejected)")
+    x, width = np.arange(len(scores)), 0.8 / len(keys)
+    for k, (key, label) in enumerate(zip(keys, labels)):
+        bars = ax.bar(
+            x + (k - 1) * width,
+            [s[key] for s in scores.values()],
+            width,
+            color=CATEGORICAL[k],
+            hatch=HATCHES[k],
+            edgecolor=COLORS["ink"],
+            linewidth=0.6,
+            label=label,
+        )
+        ax.bar_label(bars, fmt="%.2f", fontsize=8, rotation=90 if len(scores) > 3 else 0, padding=2)  # upright: apart
+    alone = len(scores) == 1 and not any(scores)  # one unnamed model: each bar named under it, no legend needed
+    if alone:
+        ax.set_xticks(x[0] + (np.arange(len(keys)) - 1) * width, labels, fontsize=9)
+        ax.set_xlabel("measure")
+    else:
+        ax.set_xticks(x, list(scores), fontsize=8)
+        ax.set_xlabel("model")
+    ax.set_ylim(0, 1.35 if len(scores) <= 3 else 1.55)  # room for the labels and the legend above the bars
+    ax.set_yticks(np.linspace(0, 1, 6))
+    ax.set_ylabel("share")
+    if not alone:
+        ax.legend(fontsize=8, loc="upper center", ncols=2, frameon=False)
+
+
+def draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> str:
+    """The ROC curves and their operating points; returns them in words."""
+    ax.plot([0, 1], [0, 1], color=COLORS["reference"], linestyle="--", label="chance")
+    said = []
+    for i, (name, (probability, valid, threshold)) in enumerate(curves.items()):
+        _, fpr, tpr = roc_points(probability, valid)
+        auc = np.trapezoid(tpr[::-1], fpr[::-1])  # thresholds rise, so FPR falls: integrate left to right
+        style = series_style(i)
+        (line,) = ax.plot(fpr, tpr, label=f"{name + ': ' if name else ''}AUC {auc:.2f}", **style | dict(marker=""))
+        _, fpr_t, tpr_t = roc_points(probability, valid, [threshold])
+        ax.plot(
+            fpr_t,
+            tpr_t,
+            style["marker"],
+            color=line.get_color(),
+            markeredgecolor=COLORS["ink"],
+            label=f"{name + ' ' if name else ''}threshold {threshold:.2f}",
+        )
+        said.append(
+            f"{name + ': ' if name else ''}area under the curve {auc:.2f}; at threshold {threshold:.2f} it keeps "
+            f"{tpr_t[0]:.0%} of the valid configurations and {fpr_t[0]:.0%} of those in collision"
+        )
+    ax.set_xlabel("FPR: invalid kept (dangerous) = 1 - TNR")
+    ax.set_ylabel("TPR: valid kept")
+    ax.set_xlim(-0.02, 1.02)
+    ax.set_ylim(-0.02, 1.02)
+    ax.set_aspect("equal")
+    ax.legend(fontsize=8, loc="lower right")
+    return "; ".join(said)

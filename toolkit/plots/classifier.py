@@ -39,7 +39,7 @@ from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
 from toolkit.plots.cell_marks import draw_cell_marks, fit_cell_marks
-from toolkit.plots.palette import CATEGORICAL, COLORS, GREY_CMAP, HATCHES, PAGE_WIDTH, halo, series_style
+from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import dof_label
 from toolkit.plots.slices import CSpaceSlice
 
@@ -133,7 +133,7 @@ def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
     fig = Figure(figsize=(PAGE_WIDTH, 5.6), layout="constrained")
     ax_counts, ax_rates = fig.subplots(2, 1, height_ratios=(1.2, 1))  # one above the other: the page's width each
     _draw_counts(ax_counts, predicted_valid, valid)
-    _draw_rates(ax_rates, {"": metrics.classification(np.ravel(predicted_valid), np.ravel(valid))})
+    answers.draw_rates(ax_rates, {"": metrics.classification(np.ravel(predicted_valid), np.ravel(valid))})
     fig.suptitle(title or "Predictions against the exact checker")
     text = f"{title or 'Predictions against the exact checker'}: " + answers.answers_in_words(predicted_valid, valid)
     return describe(fig, text + ".", answers.answer_tables(predicted_valid, valid))
@@ -142,7 +142,7 @@ def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
 def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> Figure:
     """Accuracy, TPR and TNR of several models or baselines (``{name: {"acc", "tpr", "tnr"}}``), grouped."""
     fig = Figure(figsize=(min(PAGE_WIDTH, 1.6 + 1.6 * len(scores)), 3.8), layout="constrained")
-    _draw_rates(fig.subplots(), scores)
+    answers.draw_rates(fig.subplots(), scores)
     fig.suptitle(title or "Accuracy, TPR (valid kept), TNR (invalid rejected)")
     said = "; ".join(
         f"{name}: accuracy {s['acc']:.2f}, TPR {s['tpr']:.2f}, TNR {s['tnr']:.2f}" for name, s in scores.items()
@@ -154,7 +154,7 @@ def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> 
 def roc_curve(curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]], title: str = "") -> Figure:
     """ROC curves of ``{name: (P(valid), valid, threshold)}``, each with its operating point at ``threshold``."""
     fig = Figure(figsize=(4.2, 4.2), layout="constrained")
-    said = _draw_roc(fig.subplots(), curves)
+    said = answers.draw_roc(fig.subplots(), curves)
     fig.suptitle(title or "ROC: valid kept against invalid kept", fontsize=10)
     text = "ROC curves: the share of valid configurations kept against the share in collision kept, as the threshold"
     return describe(fig, f"{text} moves; the diagonal is chance. {said}.")
@@ -169,7 +169,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     _draw_decision(ax_map, predicted, valid, grid)
     ax_map.set_title(f"decision at threshold {threshold:.2f}\na mark per cell holding a mistake", fontsize=9)
     _draw_counts(ax_counts, predicted, valid)
-    roc = _draw_roc(ax_roc, {"": (probability, valid, threshold)})
+    roc = answers.draw_roc(ax_roc, {"": (probability, valid, threshold)})
     fig.suptitle(title)
     cells = [Patch(facecolor=c, edgecolor=COLORS["ink"]) for c in ANSWER_COLORS]
     handles: list[Any] = [  # a mistake's cell with its mark on it
@@ -373,63 +373,3 @@ def _draw_counts(ax, predicted_valid, valid) -> None:
     ax.set_ylabel("configurations")
     rates = metrics.classification(np.ravel(predicted_valid), np.ravel(valid))
     ax.set_title(f"accuracy {rates['acc']:.2f}, TPR {rates['tpr']:.2f}, TNR {rates['tnr']:.2f}", fontsize=9)
-
-
-def _draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
-    keys, labels = ("acc", "tpr", "tnr"), ("accuracy", "TPR (valid kept)", "TNR (invalid rejected)")
-    x, width = np.arange(len(scores)), 0.8 / len(keys)
-    for k, (key, label) in enumerate(zip(keys, labels)):
-        bars = ax.bar(
-            x + (k - 1) * width,
-            [s[key] for s in scores.values()],
-            width,
-            color=CATEGORICAL[k],
-            hatch=HATCHES[k],
-            edgecolor=COLORS["ink"],
-            linewidth=0.6,
-            label=label,
-        )
-        ax.bar_label(bars, fmt="%.2f", fontsize=8, rotation=90 if len(scores) > 3 else 0, padding=2)  # upright: apart
-    alone = len(scores) == 1 and not any(scores)  # one unnamed model: each bar named under it, no legend needed
-    if alone:
-        ax.set_xticks(x[0] + (np.arange(len(keys)) - 1) * width, labels, fontsize=9)
-        ax.set_xlabel("measure")
-    else:
-        ax.set_xticks(x, list(scores), fontsize=8)
-        ax.set_xlabel("model")
-    ax.set_ylim(0, 1.35 if len(scores) <= 3 else 1.55)  # room for the labels and the legend above the bars
-    ax.set_yticks(np.linspace(0, 1, 6))
-    ax.set_ylabel("share")
-    if not alone:
-        ax.legend(fontsize=8, loc="upper center", ncols=2, frameon=False)
-
-
-def _draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> str:
-    """The ROC curves and their operating points; returns them in words."""
-    ax.plot([0, 1], [0, 1], color=COLORS["reference"], linestyle="--", label="chance")
-    said = []
-    for i, (name, (probability, valid, threshold)) in enumerate(curves.items()):
-        _, fpr, tpr = roc_points(probability, valid)
-        auc = np.trapezoid(tpr[::-1], fpr[::-1])  # thresholds rise, so FPR falls: integrate left to right
-        style = series_style(i)
-        (line,) = ax.plot(fpr, tpr, label=f"{name + ': ' if name else ''}AUC {auc:.2f}", **style | dict(marker=""))
-        _, fpr_t, tpr_t = roc_points(probability, valid, [threshold])
-        ax.plot(
-            fpr_t,
-            tpr_t,
-            style["marker"],
-            color=line.get_color(),
-            markeredgecolor=COLORS["ink"],
-            label=f"{name + ' ' if name else ''}threshold {threshold:.2f}",
-        )
-        said.append(
-            f"{name + ': ' if name else ''}area under the curve {auc:.2f}; at threshold {threshold:.2f} it keeps "
-            f"{tpr_t[0]:.0%} of the valid configurations and {fpr_t[0]:.0%} of those in collision"
-        )
-    ax.set_xlabel("FPR: invalid kept (dangerous) = 1 - TNR")
-    ax.set_ylabel("TPR: valid kept")
-    ax.set_xlim(-0.02, 1.02)
-    ax.set_ylim(-0.02, 1.02)
-    ax.set_aspect("equal")
-    ax.legend(fontsize=8, loc="lower right")
-    return "; ".join(said)

@@ -71,34 +71,10 @@ def planning_times(planning: dict, title: str = "") -> Figure:
     fig = Figure(figsize=(PAGE_WIDTH, 6.4), layout="constrained")
     grid = fig.add_gridspec(len(TIMES), 1)
     rows = [fig.add_subfigure(grid[k, 0]) for k in range(len(TIMES))]  # a row of panels a time
-    x = np.array([[0.0, 1.0]])  # (1, modes) bar centres in a panel
     said = []
     for row, (key, label) in zip(rows, TIMES):
         panels = row.subplots(1, len(samplers), squeeze=False)[0]
-        cuts = []
-        for ax, s in zip(panels, samplers):
-            median, q1, q3 = (
-                MS * np.array([[planning[s][mode][f"{key}_{stat}"] for mode in MODES]]) for stat in STATS
-            )  # (1, modes) each
-            for i, mode in enumerate(MODES):
-                ax.bar(
-                    x[:, i],
-                    median[:, i],
-                    0.7,
-                    color=CATEGORICAL[i],
-                    hatch=HATCHES[i],
-                    edgecolor=COLORS["ink"],
-                    linewidth=0.5,
-                    label=f"{mode} prediction" + (" (F)" if mode == "with" else ""),
-                )
-            cut = quartile_whiskers(ax, x, median, q1, q3, tallest=median.max(), end_above=True)
-            cuts.append(cut_in_words(cut, [[s, s + "F"]], q3, ax.get_ylim()[1]).removeprefix("; "))
-            ax.set_xticks(x[0], [f"{name}\n{ms_text(t)}" for name, t in zip((s, s + "F"), median[0])])
-            ax.set_xlim(-0.6, 1.6)
-            ax.yaxis.set_major_locator(MaxNLocator(4))
-            ax.tick_params(labelsize=8)
-            ax.set_ylabel("ms", fontsize=8, labelpad=1)
-            ax.set_xlabel("median, ms", fontsize=8)
+        cuts = [_sampler_panel(ax, planning[s], s, key) for ax, s in zip(panels, samplers)]
         row.suptitle(f"{label} (ms): median under each bar, whiskers from quartile to quartile", fontsize=9)
         bars = ", ".join(
             f"{s} {ms_text(MS * planning[s]['without'][f'{key}_median'])} without, "
@@ -126,6 +102,34 @@ def planning_times(planning: dict, title: str = "") -> Figure:
         for key, label in TIMES
     ]
     return describe(fig, text, parts)
+
+
+def _sampler_panel(ax, times: dict, s: str, key: str) -> str:
+    """One sampler's two bars of ``key`` (``times[mode]``: its median and quartiles in s) on ``ax``, in ms, the
+    median written under each bar; returns the words for a whisker cut at the top ("" if none)."""
+    x = np.array([[0.0, 1.0]])  # (1, modes) bar centres in a panel
+    median, q1, q3 = (
+        MS * np.array([[times[mode][f"{key}_{stat}"] for mode in MODES]]) for stat in STATS
+    )  # (1, modes) each
+    for i, mode in enumerate(MODES):
+        ax.bar(
+            x[:, i],
+            median[:, i],
+            0.7,
+            color=CATEGORICAL[i],
+            hatch=HATCHES[i],
+            edgecolor=COLORS["ink"],
+            linewidth=0.5,
+            label=f"{mode} prediction" + (" (F)" if mode == "with" else ""),
+        )
+    cut = quartile_whiskers(ax, x, median, q1, q3, tallest=median.max(), end_above=True)
+    ax.set_xticks(x[0], [f"{name}\n{ms_text(t)}" for name, t in zip((s, s + "F"), median[0])])
+    ax.set_xlim(-0.6, 1.6)
+    ax.yaxis.set_major_locator(MaxNLocator(4))
+    ax.tick_params(labelsize=8)
+    ax.set_ylabel("ms", fontsize=8, labelpad=1)
+    ax.set_xlabel("median, ms", fontsize=8)
+    return cut_in_words(cut, [[s, s + "F"]], q3, ax.get_ylim()[1]).removeprefix("; ")
 
 
 def threshold_sweep(

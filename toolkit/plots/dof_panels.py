@@ -1,0 +1,69 @@
+"""A path's degrees of freedom over time, a panel per kind (notebook 05, :func:`toolkit.plots.scenes.path_frame`).
+
+Seven lines in one panel cross and hide each other, so the DoFs are grouped by kind (:func:`dof_groups`: the
+base's position, its angles, the joints) and each group drawn in a panel of its own (:func:`draw_dofs`), every
+DoF scaled to its bounds and named at its line's end, the names moved apart just enough to be read.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from toolkit.geometry.robots import BASES, BoxRobot
+from toolkit.plots.palette import series_style
+
+
+def dof_groups(robot: BoxRobot) -> dict[str, list[int]]:
+    """The robot's DoFs by kind, each kind a panel of :func:`toolkit.plots.scenes.path_frame`:
+    ``{"position": [0, 1, 2], "angles": [3, 4, 5], "joints": [6]}`` for a free-flying chain."""
+    _, angular = BASES[robot.base]  # (base DoFs,) whether each is an angle
+    kinds = {
+        "position": [k for k, angle in enumerate(angular) if not angle],
+        "angles": [k for k, angle in enumerate(angular) if angle],
+        "joints": list(range(len(angular), robot.dof)),
+    }
+    return {kind: dofs for kind, dofs in kinds.items() if dofs}
+
+
+def draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, dofs: list[int], kind: str, ax, along: np.ndarray) -> None:
+    """The DoFs ``dofs`` of ``Q (T, dof)`` scaled to their bounds (0 = lower, 1 = upper), each in its own colour,
+    line style and marker (as the legend above the panels names them), and named directly at the line's end."""
+    scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
+    every = max(1, len(Q) // 6)
+    for k in dofs:
+        style = series_style(k) | dict(markevery=(k % every, every), markersize=6)
+        ax.plot(along, scaled[:, k], linewidth=1.4, label=robot.dof_names[k], gid="dof", **style)
+    ax.set_ylim(-0.05, 1.05)
+    box = ax.get_position()  # in figure fractions: the gridspec has placed the panel
+    per_unit = box.height * fig.get_figheight() * 72 / 1.1  # points per unit of the y axis (1.1 units tall)
+    ends = _spread(scaled[-1, dofs], gap=LABEL_GAP / per_unit)  # (len(dofs),) label heights a line of text apart
+    for k, end in zip(dofs, ends):
+        ax.annotate(
+            robot.dof_names[k],
+            (1.0, scaled[-1, k]),
+            xytext=(1.02, end),
+            textcoords=("axes fraction", "data"),
+            fontsize=8,
+            va="center",
+            color=series_style(k)["color"],
+            annotation_clip=False,
+        )
+    ax.set_ylabel(kind, fontsize=9)
+
+
+LABEL_GAP = 11.0  # points between two names at the lines' ends: an 8-point line of text (~9.4 pt tall) and air
+
+
+def _spread(heights: np.ndarray, gap: float) -> np.ndarray:
+    """``heights (n,)`` moved apart as little as keeps every two at least ``gap`` apart (labels at a line's end)."""
+    order = np.argsort(heights)
+    placed = heights[order].astype(float)
+    for i in range(1, len(placed)):
+        placed[i] = max(placed[i], placed[i - 1] + gap)
+    placed -= max(0.0, placed[-1] - 1.05)  # back inside the panel where the top ran over
+    for i in range(len(placed) - 2, -1, -1):
+        placed[i] = min(placed[i], placed[i + 1] - gap)
+    out = np.empty_like(placed)
+    out[order] = placed
+    return out
