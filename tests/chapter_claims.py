@@ -52,8 +52,9 @@ RATIO = re.compile(r"(\d[\d,]*)x")  # a ratio as section 3 of chapter 01 prints 
 def chapter_01(nb) -> list[str]:
     """Section 3's table of checker speeds against the words the chapter uses for it: in 3D, FCL's time "roughly ten to
     a hundred times" the compiled checker's (6 to 149 times: a busy machine spreads them, review r7b and quick runs
-    beside other work printed 9 to 103); in 2D the point robot's numpy test the fastest, FCL's time "a hundred times as
-    much or more" (at least 80 times)."""
+    beside other work printed 9 to 103); in 2D FCL's time "a hundred times or more" the fastest's (at least 80 times),
+    the fastest the point robot's numpy test or, on a busy machine, the compiled checker (a quick run at a load of 10
+    on 2 cores printed it ahead)."""
     ratios = {
         row[0]: (row[-2], row[-1])
         for header, rows in tables(nb)
@@ -65,10 +66,8 @@ def chapter_01(nb) -> list[str]:
     problems = _chapter_01_calls(nb)
     for name, (compiled, fastest) in ratios.items():
         times = [int(m.replace(",", "")) for m in RATIO.findall(compiled + " " + fastest)]
-        if name == "2ds" and ("PointRobotChecker" not in fastest or times[1] < 80):
-            problems.append(
-                f"01: 2D, FCL against the fastest: {fastest}, not a hundred times the point robot's or more"
-            )
+        if name == "2ds" and (not fastest.endswith(("(PointRobotChecker)", "(CompiledChecker)")) or times[1] < 80):
+            problems.append(f"01: 2D, FCL against the fastest: {fastest}, not a hundred times the fastest's or more")
         if name != "2ds" and not 6 <= times[0] < 150:
             problems.append(
                 f"01: {name}, FCL against the compiled checker: {compiled}, not roughly ten to a hundred times"
@@ -77,19 +76,21 @@ def chapter_01(nb) -> list[str]:
 
 
 def _chapter_01_calls(nb) -> list[str]:
-    """Section 3's calls of growing size: a call of ten "little longer" than a call of one (under 1.5 times), and the
-    line under the table, the fixed cost in configurations, what the table's first and last rows give."""
+    """Section 3's calls of growing size: the time per configuration falling "by a factor of ten or more" from calls of
+    one to the largest, and the line under the table, the fixed cost in configurations, what those two rows give."""
     calls = [rows for header, rows in tables(nb) if header[:2] == ["configurations per call", "time per call"]]
     if not calls:
         return ["01: section 3's table of calls of growing size is not displayed"]
     rows = {int(r[0].replace(",", "")): float(r[1].split()[0].replace(",", "")) for r in calls[0]}  # {k: µs a call}
     problems = []
-    one, ten = rows.get(1, 0.0), rows.get(10, float("inf"))
-    if not ten < 1.5 * one:
-        problems.append(f"01: a call of ten is not little longer than a call of one: {one} vs {ten} µs")
-    said = re.search(r"costs as much as checking about \*\*([\d,]+) configurations\*\*", " ".join(texts(nb)))
     largest = max(rows)
-    expected = one / (rows[largest] / largest)
+    one, work = rows.get(1, 0.0), rows[largest] / largest  # µs: a call of one; a configuration in the largest calls
+    if not one >= 10 * work:
+        problems.append(
+            f"01: per configuration, a call of one ({one} µs) is not ten times the largest calls' ({work:.3f})"
+        )
+    said = re.search(r"costs as much as checking about \*\*([\d,]+) configurations\*\*", " ".join(texts(nb)))
+    expected = one / work
     if said is None or abs(int(said.group(1).replace(",", "")) - expected) > 0.05 * expected + 1:
         problems.append(f"01: the fixed cost in configurations is not printed as the table gives it ({expected:.0f})")
     return problems

@@ -564,10 +564,11 @@ def test_chapter_01_fails_ratios_its_words_do_not_describe():
         "01: 3dc9, FCL against the compiled checker: 160x, not roughly ten to a hundred times"
     ]
     assert problems(CH01, chapter_01({**MEASURED_01, "2ds": 60})) == [
-        "01: 2D, FCL against the fastest: 60x (PointRobotChecker), not a hundred times the point robot's or more"
+        "01: 2D, FCL against the fastest: 60x (PointRobotChecker), not a hundred times the fastest's or more"
     ]
-    assert problems(CH01, chapter_01(MEASURED_01, fastest_2d="CompiledChecker")) == [
-        "01: 2D, FCL against the fastest: 218x (CompiledChecker), not a hundred times the point robot's or more"
+    assert problems(CH01, chapter_01(MEASURED_01, fastest_2d="CompiledChecker")) == []  # a busy machine's order
+    assert problems(CH01, chapter_01(MEASURED_01, fastest_2d="FCLChecker")) == [
+        "01: 2D, FCL against the fastest: 218x (FCLChecker), not a hundred times the fastest's or more"
     ]
     assert problems(CH01, chapter_01({"3do": 22})) == [
         "01: section 3's table of checker speeds lacks a scenario: ['3do']"
@@ -575,11 +576,16 @@ def test_chapter_01_fails_ratios_its_words_do_not_describe():
 
 
 def test_chapter_01_holds_the_calls_of_growing_size_to_its_words():
-    """Review r8b: "grows only from about a hundred configurations on" beside 12.6, 15.2, 23.4 µs; the words now: a
-    call of ten little longer than a call of one, and the fixed cost in configurations as the table gives it."""
+    """Review r8b: "grows only from about a hundred configurations on" beside 12.6, 15.2, 23.4 µs; the words now: the
+    time per configuration falls tenfold or more from calls of one to the largest, and the fixed cost in
+    configurations as the table gives it (a quick run beside load printed 7.0 µs for one, 45.4 µs for ten)."""
     nb = chapter_01(MEASURED_01)
-    nb["cells"][1] = executed("MD:" + calls_01({1: 12.6, 10: 20.0, 100: 23.4, 1000: 168.3, 20000: 3257.9}))["cells"][0]
-    assert problems(CH01, nb) == ["01: a call of ten is not little longer than a call of one: 12.6 vs 20.0 µs"]
+    nb["cells"][1] = executed("MD:" + calls_01({1: 7.0, 10: 45.4, 100: 15.2, 1000: 114.5, 2000: 207.2}))["cells"][0]
+    assert problems(CH01, nb) == []
+    nb["cells"][1] = executed("MD:" + calls_01({1: 1.5, 10: 3.0, 100: 23.4, 1000: 168.3, 20000: 3257.9}))["cells"][0]
+    assert problems(CH01, nb) == [
+        "01: per configuration, a call of one (1.5 µs) is not ten times the largest calls' (0.163)"
+    ]
     nb["cells"][1] = executed("MD:" + calls_01(said=300))["cells"][0]
     assert problems(CH01, nb) == ["01: the fixed cost in configurations is not printed as the table gives it (77)"]
     nb["cells"].pop(1)
