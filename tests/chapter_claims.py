@@ -52,7 +52,8 @@ RATIO = re.compile(r"(\d[\d,]*)x")  # a ratio as section 3 of chapter 01 prints 
 def chapter_01(nb) -> list[str]:
     """Section 3's table of checker speeds against the words the chapter uses for it: in 3D, FCL's time "roughly ten to
     a hundred times" the compiled checker's (6 to 149 times: a busy machine spreads them, review r7b and quick runs
-    beside other work printed 9 to 103); in 2D FCL's time "a hundred times or more" the fastest's (at least 80 times),
+    beside other work printed 9 to 103); in 2D FCL's time "tens to hundreds of times" the fastest's (at least 20 times:
+    idle runs print 150-260, a quick run beside a full test suite printed 54),
     the fastest the point robot's numpy test or, in quick mode's batches of 2,000 or on a busy machine, the compiled
     checker (quick runs printed it ahead at 23 and 27 million checks a second against 22 and 25)."""
     ratios = {
@@ -66,8 +67,8 @@ def chapter_01(nb) -> list[str]:
     problems = _chapter_01_calls(nb)
     for name, (compiled, fastest) in ratios.items():
         times = [int(m.replace(",", "")) for m in RATIO.findall(compiled + " " + fastest)]
-        if name == "2ds" and (not fastest.endswith(("(PointRobotChecker)", "(CompiledChecker)")) or times[1] < 80):
-            problems.append(f"01: 2D, FCL against the fastest: {fastest}, not a hundred times the fastest's or more")
+        if name == "2ds" and (not fastest.endswith(("(PointRobotChecker)", "(CompiledChecker)")) or times[1] < 20):
+            problems.append(f"01: 2D, FCL against the fastest: {fastest}, not tens to hundreds of times the fastest's")
         if name != "2ds" and not 6 <= times[0] < 150:
             problems.append(
                 f"01: {name}, FCL against the compiled checker: {compiled}, not roughly ten to a hundred times"
