@@ -281,19 +281,19 @@ def test_ratio_comparison_draws_one_baseline_per_panel_on_one_log_scale():
 def test_throughputs_a_point_per_scenario_and_checker_on_a_log_axis_labelled_at_1_2_5():
     """Points, not bars: on a log axis a bar's length means nothing (a bar from a floor near the slowest rate
     was a sliver); each rate written beside its point, the axis labelled often enough to read one between two."""
-    rates = {"2DS": {"exact": 9e7, "learned": 3e6}, "3DC-7": {"exact": 2e5, "learned": 2.5e6}}
+    rates = {"2DS": {"exact": 1.2e8, "learned": 3e6}, "3DC-7": {"exact": 2e5, "learned": 2.5e6}}
     ax = timings.throughputs(rates).axes[0]
     assert not ax.patches and not ax.containers and ax.get_yscale() == "log"
     exact, learned = ax.lines
-    np.testing.assert_allclose(exact.get_ydata(), [9e7, 2e5])
+    np.testing.assert_allclose(exact.get_ydata(), [1.2e8, 2e5])
     np.testing.assert_allclose(learned.get_ydata(), [3e6, 2.5e6])
     assert exact.get_marker() != learned.get_marker() and exact.get_linestyle() == "None"  # not by colour alone
     assert [t.get_text() for t in ax.get_xticklabels()] == ["2DS", "3DC-7"]
-    assert [t.get_text() for t in ax.texts] == ["90M/s", "200k/s", "3M/s", "2.5M/s"]
+    assert [t.get_text() for t in ax.texts] == ["120M/s", "200k/s", "3M/s", "2.5M/s"]
     ticks = [t.get_text() for t in ax.get_yticklabels()]
-    assert {"200k", "500k", "1M", "2M", "5M", "10M", "20M", "50M"} <= set(ticks)
+    assert {"200k", "500k", "1M", "2M", "5M", "10M", "20M", "50M", "100M"} <= set(ticks)  # 100M, not 1e+02M
     lo, hi = ax.get_ylim()
-    assert lo < 2e5 and hi > 9e7  # every point inside the frame
+    assert lo < 2e5 and hi > 1.2e8  # every point inside the frame
 
 
 def test_a_rejected_candidate_and_a_fresh_one_differ_in_line_style_not_only_in_shade(exact):

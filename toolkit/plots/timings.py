@@ -296,7 +296,7 @@ def _per_second(rate: float) -> str:
 
 def _rate_text(rate: float) -> str:
     """A rate in thousands or millions, as an axis and a point write it: ``'210k'``, ``'3.4M'``."""
-    return f"{rate / 1e6:.2g}M" if rate >= 999.5e3 else f"{rate / 1e3:.3g}k"
+    return f"{rate / 1e6:.3g}M" if rate >= 999.5e3 else f"{rate / 1e3:.3g}k"
 
 
 def _points(ax, i: int, n: int, values: list[float], label: str) -> np.ndarray:
