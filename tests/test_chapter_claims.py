@@ -360,6 +360,13 @@ def test_the_answer_chapter_04_and_05_state_holds_in_docs_results():
     }
     assert (table3["2ds"].count(findings.SAVES), table3["3dc7"].count(findings.SAVES)) == (3, 2), table3
     assert sum(v.count(findings.TIES) for v in table3.values()) == 3, table3
+    # 04's answer: with the same planner and statistic the paper's Table 3 and our `paper` run disagree, so the checker
+    # and the network differ too: 2DS saves for three samplers (paper) and costs for three (ours); 3DC-7's bridge test
+    # takes under half the time with prediction in the paper's, more than without in ours
+    ours_2ds = [findings.time_verdict(r) for r in means("paper", "2ds").values()]
+    assert ours_2ds.count(findings.COSTS) == 3, ours_2ds
+    assert 1 - paper_numbers.IMPROVEMENT["3dc7"]["total"]["BT"] < 0.5 < 1 < means("paper", "3dc7")["BT"]
+
     assert all(1 - paper_numbers.IMPROVEMENT[k]["sampling"][s] < 1 for k in table3 for s in SAMPLERS)
     both = [r for key in ("2ds", "3dc7") for r in recorded.median_ratios("paper")[key]["total"].values()]
     assert sum(findings.time_verdict(r) == findings.COSTS for r in both) == 7, both
