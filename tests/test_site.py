@@ -823,12 +823,24 @@ def test_the_keyboard_enters_and_leaves_every_embedded_scene_and_sees_where_it_i
 
 def accessibility_tree(page) -> list[dict]:
     """Chromium's accessibility tree of ``page`` (CDP's ``Accessibility.getFullAXTree``): what a screen reader reads,
-    names in full (Playwright's ``aria_snapshot`` leaves out names of about 1000 characters and more)."""
+    names in full (Playwright's ``aria_snapshot`` leaves out names of about 1000 characters and more), in reading
+    order: depth first from the root through each node's children (CDP's flat list need not be in that order; it
+    once put chapter 03's title after its first sections)."""
     session = page.context.new_cdp_session(page)
     try:
-        return [n for n in session.send("Accessibility.getFullAXTree")["nodes"] if not n.get("ignored")]
+        nodes = session.send("Accessibility.getFullAXTree")["nodes"]
     finally:
         session.detach()
+    by_id = {n["nodeId"]: n for n in nodes}
+    ordered, stack = [], [nodes[0]["nodeId"]] if nodes else []
+    while stack:
+        node = by_id.get(stack.pop())
+        if node is None:
+            continue
+        if not node.get("ignored"):
+            ordered.append(node)
+        stack.extend(reversed(node.get("childIds", [])))
+    return ordered
 
 
 @pytest.mark.slow
