@@ -600,19 +600,42 @@ def test_every_kind_of_focusable_element_shows_its_focus(site, served, chromium)
             ring[kind] = focus_ring(page, page.locator(selector).first)
         finally:
             page.close()
+    assert remote == []
+    assert {kind: pixels for kind, pixels in ring.items() if pixels < 40} == {}, ring
+
+
+FOCUSED_SEEN = """() => {  // the focused element: its name, and whether a reader sees it (some width, not faded out)
+    const e = document.activeElement, box = e.getBoundingClientRect();
+    let opacity = 1;
+    for (let n = e; n; n = n.parentElement) opacity *= parseFloat(getComputedStyle(n).opacity);
+    return [e.className.toString(), box.width > 0 && box.height > 0 && opacity > 0.5];
+}"""
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_tab_from_the_search_box_never_focuses_something_unseen(site, served, chromium):
+    """WCAG 2.4.7/2.4.3: Tab from the search box closes material's search overlay; the focus then goes on to a tab
+    stop a reader sees, never to the results box faded out with the overlay (its results are reached by the arrow
+    keys), before a query or after one."""
+    remote: list[str] = []
     page = open_page(chromium, served + "index.html", remote)
     try:
-        page.locator("input.md-search__input").click()
-        wrap = page.locator(".md-search__scrollwrap")
-        ring["search results, before a query"] = focus_ring(page, wrap)  # a tab stop of no height until focused
-        page.locator("input.md-search__input").click()
-        page.keyboard.type("bridge")
-        page.locator(".md-search-result__item").first.wait_for()
-        ring["search results"] = focus_ring(page, wrap)
+        focused = []
+        for query in ("", "bridge"):
+            page.locator("input.md-search__input").click()
+            page.keyboard.type(query)
+            if query:
+                page.locator(".md-search-result__item").first.wait_for()
+            for _ in range(2):
+                page.keyboard.press("Tab")
+                focused.append(page.evaluate(FOCUSED_SEEN))
+            page.reload()
     finally:
         page.close()
     assert remote == []
-    assert {kind: pixels for kind, pixels in ring.items() if pixels < 40} == {}, ring
+    assert [name for name, seen in focused if not seen or "md-search" in name] == [], focused
 
 
 TABLES_CUT = r"""() => {
