@@ -732,6 +732,57 @@ def test_display_math_scrolls_at_320_px_instead_of_being_cut(served, chromium, s
     assert remote == []
 
 
+GLYPHS = """() => {  // per equation: how far its glyphs run past its box (px), and how many pairs of them overlap
+    const found = [];
+    for (const math of document.querySelectorAll('.MathJax')) {
+        const box = math.getBoundingClientRect();
+        const glyphs = [...math.querySelectorAll('span.mi, span.mo, span.mn, span.mtext')]
+            .map(g => g.getBoundingClientRect()).filter(r => r.width > 0);
+        let overlaps = 0;
+        for (let i = 0; i < glyphs.length; i++) for (let j = i + 1; j < glyphs.length; j++) {
+            const a = glyphs[i], b = glyphs[j];
+            const wide = Math.min(a.right, b.right) - Math.max(a.left, b.left);
+            const high = Math.min(a.bottom, b.bottom) - Math.max(a.top, b.top);
+            if (wide > 2 && high > 2) overlaps++;
+        }
+        const past = Math.max(0, ...glyphs.map(r => r.right - box.right));
+        found.push({tex: math.nextElementSibling?.textContent.slice(0, 40), past: Math.round(past), overlaps});
+    }
+    return found;
+}"""
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_equations_keep_their_glyphs_apart_under_text_spacing(served, chromium):
+    """WCAG 1.4.12: MathJax places each glyph where its font's metrics put it; with the text spacing of 1.4.12 no
+    glyph runs past its equation's box (02's Eq. (1), 04's inline "t_with / t_without = 1 - improvement", cut by
+    its cell at 320 px) and no two glyphs overlap that did not as styled (02's superscript 2 ran into the "+")."""
+    remote: list[str] = []
+    changed = {}
+    for path in ("notebooks/02_cae_reconstruction.html", "notebooks/04_prm_with_and_without_prediction.html"):
+        page = open_page(chromium, served + path, remote)
+        try:
+            page.set_viewport_size({"width": 320, "height": 640})
+            page.wait_for_function("document.querySelectorAll('.MathJax').length > 3", timeout=120_000)
+            page.wait_for_function(MATHJAX_IDLE, timeout=120_000)
+            styled = page.evaluate(GLYPHS)
+            page.add_style_tag(content=TEXT_SPACING)
+            page.wait_for_timeout(500)
+            spaced = page.evaluate(GLYPHS)
+            assert len(spaced) == len(styled) > 3
+            changed[path] = [
+                f"{after['tex']!r}: {after['past']} px out, overlaps {before['overlaps']} -> {after['overlaps']}"
+                for before, after in zip(styled, spaced)
+                if after["past"] > 1 or after["overlaps"] > before["overlaps"]
+            ]
+        finally:
+            page.close()
+    assert remote == []
+    assert {path: found for path, found in changed.items() if found} == {}
+
+
 AUDITED = ["index.html", *(f"notebooks/{c.stem}.html" for c in CHAPTERS)]  # what the manual pass went through
 TAB_STOP = """() => {  // the focused element: its accessible name as ARIA computes it, its box, its outline
     const e = document.activeElement;
