@@ -9,7 +9,8 @@
 //   "output, scrolls sideways" (nbconvert made every output a tab stop of no name; the site hooks drop that);
 // - material's search results box is a region named "search results" but no tab stop (tabindex -1): material makes it
 //   one, yet Tab from the search box closes the search overlay, so the box would take the focus unseen (WCAG 2.4.7);
-//   its results are reached from the search box by the arrow keys, as material intends.
+//   its results are reached from the search box by the arrow keys, as material intends (accessibility.css hides
+//   the box while the overlay is closed).
 const makeRegion = (element, name) => {
   element.setAttribute("tabindex", "0");
   element.setAttribute("role", "region");
