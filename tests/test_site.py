@@ -591,7 +591,7 @@ def focus_ring(page, element) -> int:
 @needs_chromium
 def test_every_kind_of_focusable_element_shows_its_focus(site, served, chromium):
     """WCAG 2.4.7: focusing each kind of element from the keyboard draws the outline around it, where a reader
-    sees it: not clipped by a scrolling ancestor, not removed by a stylesheet; the search results too."""
+    sees it: not clipped by a scrolling ancestor, not removed by a stylesheet."""
     remote: list[str] = []
     ring = {}
     for kind, (path, selector) in FOCUSABLE.items():
