@@ -5,12 +5,13 @@ import itertools
 import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.colors import to_rgba
+from matplotlib.colors import to_hex, to_rgba
 from matplotlib.text import Text
 
 from toolkit import scenarios
 from toolkit.geometry.collision import exact_checker
 from toolkit.plots import dof_panels, robot_drawing, scenes
+from toolkit.plots.palette import contrast
 from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR
 
 FRAMES = 25
@@ -225,7 +226,7 @@ def test_no_text_of_a_frame_lies_over_another(crossing, index):
     fig.draw(renderer)
     names = [t for ax in fig.axes[1:] for t in ax.texts if t.get_text() in robot.dof_names]
     assert len(names) == robot.dof
-    boxes = [(t, t.get_window_extent(renderer)) for t in drawn_texts(fig)]
+    boxes = [(t, Text.get_window_extent(t, renderer)) for t in drawn_texts(fig)]  # the text's box, not its leader's
     over = [
         f"{a.get_text()!r} / {b.get_text()!r}"
         for (a, box_a), (b, box_b) in itertools.combinations(boxes, 2)
@@ -235,6 +236,23 @@ def test_no_text_of_a_frame_lies_over_another(crossing, index):
     for ax in fig.axes[1:]:  # in each panel, the names a line of text apart
         heights = sorted(box.y0 for t, box in boxes if t in names and t in ax.texts)  # pixels, at 100 dpi
         assert len(heights) < 2 or np.min(np.diff(heights)) >= dof_panels.LABEL_GAP * fig.dpi / 72 - 1
+
+
+def test_the_names_at_the_dof_lines_ends_are_ink_beside_a_stroke_of_the_lines_colour(crossing):
+    """WCAG 1.4.3: a DoF's name at its line's end is 8-point text, so it is drawn in ink (at least 4.5:1 on the
+    panel's white, the palette's line colours reach 3.1 to 3.9:1); a short stroke of the line's own colour leads
+    from the line's end to it, so the colour still ties name and line."""
+    robot, workspace, _, path, valid = crossing
+    fig = scenes.path_frame(robot, path, 0, workspace=workspace, valid=valid, clearance=None, probability=None)
+    names = [t for ax in fig.axes[1:] for t in ax.texts if t.get_text() in robot.dof_names]
+    assert sorted(t.get_text() for t in names) == sorted(robot.dof_names)
+    low = {t.get_text(): round(contrast(to_hex(t.get_color()), "#ffffff"), 2) for t in names}
+    assert {name: ratio for name, ratio in low.items() if ratio < 4.5} == {}
+    for ax in fig.axes[1:]:
+        lines = {line.get_label(): line for line in ax.get_lines() if line.get_gid() == "dof"}
+        for name in (t for t in ax.texts if t.get_text() in lines):
+            stroke = name.arrow_patch
+            assert stroke is not None and to_hex(stroke.get_edgecolor()) == to_hex(lines[name.get_text()].get_color())
 
 
 def drawn_texts(fig) -> list[Text]:

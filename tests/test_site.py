@@ -591,7 +591,7 @@ def focus_ring(page, element) -> int:
 @needs_chromium
 def test_every_kind_of_focusable_element_shows_its_focus(site, served, chromium):
     """WCAG 2.4.7: focusing each kind of element from the keyboard draws the outline around it, where a reader
-    sees it: not clipped by a scrolling ancestor, not removed by a stylesheet; the search results too."""
+    sees it: not clipped by a scrolling ancestor, not removed by a stylesheet."""
     remote: list[str] = []
     ring = {}
     for kind, (path, selector) in FOCUSABLE.items():
@@ -600,19 +600,42 @@ def test_every_kind_of_focusable_element_shows_its_focus(site, served, chromium)
             ring[kind] = focus_ring(page, page.locator(selector).first)
         finally:
             page.close()
+    assert remote == []
+    assert {kind: pixels for kind, pixels in ring.items() if pixels < 40} == {}, ring
+
+
+FOCUSED_SEEN = """() => {  // the focused element: its name, and whether a reader sees it (some width, not faded out)
+    const e = document.activeElement, box = e.getBoundingClientRect();
+    let opacity = 1;
+    for (let n = e; n; n = n.parentElement) opacity *= parseFloat(getComputedStyle(n).opacity);
+    return [e.className.toString(), box.width > 0 && box.height > 0 && opacity > 0.5];
+}"""
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_tab_from_the_search_box_never_focuses_something_unseen(site, served, chromium):
+    """WCAG 2.4.7/2.4.3: Tab from the search box closes material's search overlay; the focus then goes on to a tab
+    stop a reader sees, never to the results box faded out with the overlay (its results are reached by the arrow
+    keys), before a query or after one."""
+    remote: list[str] = []
     page = open_page(chromium, served + "index.html", remote)
     try:
-        page.locator("input.md-search__input").click()
-        wrap = page.locator(".md-search__scrollwrap")
-        ring["search results, before a query"] = focus_ring(page, wrap)  # a tab stop of no height until focused
-        page.locator("input.md-search__input").click()
-        page.keyboard.type("bridge")
-        page.locator(".md-search-result__item").first.wait_for()
-        ring["search results"] = focus_ring(page, wrap)
+        focused = []
+        for query in ("", "bridge"):
+            page.locator("input.md-search__input").click()
+            page.keyboard.type(query)
+            if query:
+                page.locator(".md-search-result__item").first.wait_for()
+            for _ in range(2):
+                page.keyboard.press("Tab")
+                focused.append(page.evaluate(FOCUSED_SEEN))
+            page.reload()
     finally:
         page.close()
     assert remote == []
-    assert {kind: pixels for kind, pixels in ring.items() if pixels < 40} == {}, ring
+    assert [name for name, seen in focused if not seen or "md-search" in name] == [], focused
 
 
 TABLES_CUT = r"""() => {
@@ -707,6 +730,57 @@ def test_display_math_scrolls_at_320_px_instead_of_being_cut(served, chromium, s
             page.close()
     assert {path: eqs for path, eqs in cut.items() if eqs} == {}
     assert remote == []
+
+
+GLYPHS = """() => {  // per equation: how far its glyphs run past its box (px), and how many pairs of them overlap
+    const found = [];
+    for (const math of document.querySelectorAll('.MathJax')) {
+        const box = math.getBoundingClientRect();
+        const glyphs = [...math.querySelectorAll('span.mi, span.mo, span.mn, span.mtext')]
+            .map(g => g.getBoundingClientRect()).filter(r => r.width > 0);
+        let overlaps = 0;
+        for (let i = 0; i < glyphs.length; i++) for (let j = i + 1; j < glyphs.length; j++) {
+            const a = glyphs[i], b = glyphs[j];
+            const wide = Math.min(a.right, b.right) - Math.max(a.left, b.left);
+            const high = Math.min(a.bottom, b.bottom) - Math.max(a.top, b.top);
+            if (wide > 2 && high > 2) overlaps++;
+        }
+        const past = Math.max(0, ...glyphs.map(r => r.right - box.right));
+        found.push({tex: math.nextElementSibling?.textContent.slice(0, 40), past: Math.round(past), overlaps});
+    }
+    return found;
+}"""
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_equations_keep_their_glyphs_apart_under_text_spacing(served, chromium):
+    """WCAG 1.4.12: MathJax places each glyph where its font's metrics put it; with the text spacing of 1.4.12 no
+    glyph runs past its equation's box (02's Eq. (1), 04's inline "t_with / t_without = 1 - improvement", cut by
+    its cell at 320 px) and no two glyphs overlap that did not as styled (02's superscript 2 ran into the "+")."""
+    remote: list[str] = []
+    changed = {}
+    for path in ("notebooks/02_cae_reconstruction.html", "notebooks/04_prm_with_and_without_prediction.html"):
+        page = open_page(chromium, served + path, remote)
+        try:
+            page.set_viewport_size({"width": 320, "height": 640})
+            page.wait_for_function("document.querySelectorAll('.MathJax').length > 3", timeout=120_000)
+            page.wait_for_function(MATHJAX_IDLE, timeout=120_000)
+            styled = page.evaluate(GLYPHS)
+            page.add_style_tag(content=TEXT_SPACING)
+            page.wait_for_timeout(500)
+            spaced = page.evaluate(GLYPHS)
+            assert len(spaced) == len(styled) > 3
+            changed[path] = [
+                f"{after['tex']!r}: {after['past']} px out, overlaps {before['overlaps']} -> {after['overlaps']}"
+                for before, after in zip(styled, spaced)
+                if after["past"] > 1 or after["overlaps"] > before["overlaps"]
+            ]
+        finally:
+            page.close()
+    assert remote == []
+    assert {path: found for path, found in changed.items() if found} == {}
 
 
 AUDITED = ["index.html", *(f"notebooks/{c.stem}.html" for c in CHAPTERS)]  # what the manual pass went through

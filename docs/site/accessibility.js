@@ -7,7 +7,10 @@
 // - a block of code (tools/site_hooks.py makes each a region named "code") is a tab stop while it scrolls, named
 //   "code, scrolls sideways", and leaves the tab order when it fits; so is a notebook output that scrolls, named
 //   "output, scrolls sideways" (nbconvert made every output a tab stop of no name; the site hooks drop that);
-// - material's search results box, a tab stop, is named "search results".
+// - material's search results box is a region named "search results" but no tab stop (tabindex -1): material makes it
+//   one, yet Tab from the search box closes the search overlay, so the box would take the focus unseen (WCAG 2.4.7);
+//   its results are reached from the search box by the arrow keys, as material intends (accessibility.css hides
+//   the box while the overlay is closed).
 const makeRegion = (element, name) => {
   element.setAttribute("tabindex", "0");
   element.setAttribute("role", "region");
@@ -67,7 +70,10 @@ const hideIcons = () => {
 
 document$.subscribe(() => {
   for (const wrap of document.querySelectorAll(".md-typeset__scrollwrap:not([tabindex])")) makeRegion(wrap, "table");
-  for (const results of document.querySelectorAll(".md-search__scrollwrap")) makeRegion(results, "search results");
+  for (const results of document.querySelectorAll(".md-search__scrollwrap")) {
+    makeRegion(results, "search results");
+    results.setAttribute("tabindex", "-1"); // a scrolling box with no tabindex is a tab stop in Chromium too
+  }
   markScrollingTables();
   markScrollingBlocks();
   markScrollingMath();

@@ -16,6 +16,7 @@ with, like the paper's.
 
 from __future__ import annotations
 
+import colorsys
 import threading
 from collections.abc import Callable
 
@@ -23,7 +24,7 @@ import numpy as np
 
 from toolkit import scenarios
 from toolkit.planning import sampling
-from toolkit.plots.palette import rgb
+from toolkit.plots.palette import COLORS
 from toolkit.viewer.scene import RAW, Viewer
 
 PLAY_SECONDS = 8.0  # a whole path plays in this time
@@ -58,9 +59,9 @@ class Panel:
     def _build(self, gui) -> None:
         """The controls, in the panel's order, each wired to a public method of the viewer."""
         viewer = self.viewer
-        # no share button (it would publish the scene through viser's servers); buttons in the palette's dark blue,
-        # their white text at 5.2:1 (viser's default blue gives 3.6:1)
-        gui.configure_theme(show_share_button=False, brand_color=rgb("path"))
+        # no share button (it would publish the scene through viser's servers); buttons, sliders and the focus ring
+        # in the palette's dark blue: white text on it at 5.2:1, the sliders and ring 5.2:1 on white
+        gui.configure_theme(show_share_button=False, brand_color=brand_color(COLORS["path"]))
         planners = sampler_choices()
 
         with gui.add_folder("Workspace"):
@@ -224,3 +225,15 @@ def sampler_choices() -> tuple[str, ...]:
     """The names of the samplers registered now: the paper's four first, then the registered ones (the registry
     keeps the order names were added in)."""
     return tuple(sampling.SAMPLERS)
+
+
+def brand_color(color: str) -> tuple[int, int, int]:
+    """The brand colour to give viser for its controls to draw ``color`` (``#rrggbb``).
+
+    viser makes ten shades of the colour it is given, from lightness 0.9 (shade 0) to the colour's own (shade 8),
+    and its light theme draws shade 6 (Mantine's primary shade): given ``color`` itself, the sliders and the focus
+    ring came out lighter (#009ff8 for the palette's blue, 2.9:1 on white). This is the colour, same hue and
+    saturation, whose shade 6 is ``color``."""
+    hue, lightness, saturation = colorsys.rgb_to_hls(*(int(color[i : i + 2], 16) / 255 for i in (1, 3, 5)))
+    given = 0.9 - (0.9 - lightness) * 8 / 6  # shade 6 lies 6/8 of the way from 0.9 to the given lightness
+    return tuple(round(channel * 255) for channel in colorsys.hls_to_rgb(hue, given, saturation))  # type: ignore[return-value]
