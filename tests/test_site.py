@@ -638,6 +638,39 @@ def test_tab_from_the_search_box_never_focuses_something_unseen(site, served, ch
     assert [name for name, seen in focused if not seen or "md-search" in name] == [], focused
 
 
+FOCUSED_ON_SCREEN = """() => {  // the focused element's name, and whether any of it lies across the viewport's width
+    const e = document.activeElement, box = e.getBoundingClientRect();
+    return [e.tagName + " " + (e.textContent || "").trim().slice(0, 40), box.right > 0 && box.left < innerWidth];
+}"""
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_at_320_px_tab_never_goes_into_the_closed_navigation_drawer(site, served, chromium):
+    """WCAG 2.4.7 at 320 CSS px: below material's breakpoint the navigation is a drawer off the screen's left edge;
+    closed, its links once took 38 of the home page's first 40 tab stops where no one could see them. Now inert while
+    closed: every stop of the first 40 lies on the screen, and opening the drawer makes its links reachable again."""
+    remote: list[str] = []
+    for path in ("index.html", "notebooks/04_prm_with_and_without_prediction.html"):
+        page = open_page(chromium, served + path, remote)
+        try:
+            page.set_viewport_size({"width": 320, "height": 640})
+            page.wait_for_timeout(300)
+            off = []
+            for _ in range(40):
+                page.keyboard.press("Tab")
+                name, on_screen = page.evaluate(FOCUSED_ON_SCREEN)
+                if not on_screen:
+                    off.append(name)
+            page.evaluate("document.getElementById('__drawer').click()")
+            opened = page.evaluate("!document.querySelector('.md-sidebar--primary').inert")
+        finally:
+            page.close()
+        assert off == [] and opened, (path, off, opened)
+    assert remote == []
+
+
 TABLES_CUT = r"""() => {
     // Each table of the page, read as a student at 1280 px sees it: it fits its column, or the region that scrolls it
     // sideways fits the column, says that it scrolls, and is reachable by keyboard; no ancestor cuts it off.

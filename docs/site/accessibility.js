@@ -102,3 +102,17 @@ window.addEventListener("resize", () => {
   markScrollingBlocks();
   markScrollingMath();
 });
+// Below Material's drawer breakpoint the site's navigation is a drawer off the screen's left edge; closed, its links
+// stayed in the tab order, so focus went where no one could see it (WCAG 2.4.7 at 320 px). Inert while it is closed.
+(() => {
+  const drawer = document.getElementById("__drawer");
+  const navigation = document.querySelector(".md-sidebar--primary");
+  if (!drawer || !navigation) return;
+  const narrow = window.matchMedia("(max-width: 76.234375em)"); // Material's own breakpoint for the drawer
+  const update = () => {
+    navigation.inert = narrow.matches && !drawer.checked;
+  };
+  drawer.addEventListener("change", update);
+  narrow.addEventListener("change", update);
+  update();
+})();
