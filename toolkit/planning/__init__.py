@@ -20,7 +20,8 @@ Reading order:
 9. :mod:`toolkit.planning.batched_prm` — the batched PRM (planner ``batched``): the lazy PRM with each round's
    samples decided in one checker call, a device call when the checker is on a device;
 10. :mod:`toolkit.planning.rrt_connect` — RRT-Connect (planner ``rrt-connect``): two trees, for a single query the
-    fastest exact planner;
+    fastest exact planner; each tree-growing move (nearest node, the segment with its angles wrapped, its points in
+    the order checked) one compiled call of :mod:`toolkit.planning.rrt_kernels`;
 11. :mod:`toolkit.planning.prm` — the planners by name (``register``, ``get``, ``names``; ``DEFAULT``, the rule for
     which runs) and ``plan(exact, start, goal, ...)``, one entry to any of them;
 12. :mod:`toolkit.planning.ompl` — our checkers and samplers inside OMPL, for comparison.
