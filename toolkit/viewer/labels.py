@@ -59,7 +59,7 @@ LOGO_ALT = "viser"  # the logo in the panel's corner
 HIDDEN = ".mantine-Notifications-root, .mantine-Notification-root"  # notices over a saved scene
 DIMMED = COLORS["panel_text"]  # viser's dimmed label text (3.3:1 on white) made darker
 
-BORDER = "#868e96"  # an input's border (viser's #ced4da is 1.5:1 on white; this, 3.3:1)
+BORDER = COLORS["input_border"]  # an input's border, darker than viser's
 
 SCRIPT = """<style>:root { --mantine-color-dimmed: %(dimmed)s !important; }
 .mantine-Slider-markLabel, .mantine-Notification-description { color: %(dimmed)s !important; }
