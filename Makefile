@@ -34,7 +34,7 @@ lint: setup
 	$(VENV)/bin/mypy
 
 test: setup browser sandbox lint
-	$(PY) -m pytest -q
+	$(PY) -m pytest -q --durations=40
 
 # JupyterLab on the notebooks, for a student: open the URL it prints, start with 01.
 lab: setup
