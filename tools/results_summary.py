@@ -116,8 +116,8 @@ def lazy_prm(tables: Tables) -> str:
     cells = sum(len(cells) for g in groups.values() for cells in g.values())
     answer = "No" if saved == 0 else "Rarely" if saved < cells / 2 else "Mostly"
     return (
-        f"**Does prediction save planning time against the lazy PRM**, the fastest exact planner a network can "
-        f"drive? {answer}. In the medians tables (a query's time with prediction over its time without), the "
+        f"**Does prediction save planning time against the lazy PRM, the fastest exact planner a network can "
+        f"drive?** {answer}. In the medians tables (a query's time with prediction over its time without), the "
         f"`strong` network's median query took {told(groups['strong'])}; the `paper` network's, "
         f"{told(groups['paper'])}."
     )
@@ -153,7 +153,7 @@ def summary(tables: Tables) -> str:
         mlp(tables),
         lazy_prm(tables),
         algorithm_1(tables),
-        "**Where the details are**: the table after this list says when each run was measured (today's exact "
+        "**Where the details are**: the first table below says when each run was measured (today's exact "
         "checker is faster, which can only weaken prediction's case); “What reproduces and what does not” "
         "explains each finding; each preset's section holds its tables.",
     ]
