@@ -14,6 +14,7 @@ PAGE = " ".join(TEXT.split())  # whitespace made single spaces: a sentence wraps
 TABLES = recorded_results.parse(TEXT)
 HISTORY = recorded_results.parse(re.sub(r"(?m)^## Preset `paper` before issue 25.*$", "## Preset `before25`", TEXT))
 THREE_D = ("3dc7", "3dc9", "3do")
+SUCCESS = "success, ours: without / with"  # the column of Table 3's times that holds the success rates
 
 
 def test_the_summary_is_what_the_tables_give():
@@ -139,3 +140,39 @@ def test_the_typed_sentences_on_table_3_quote_it():
     assert claim(r"its Table 3, of means: −(\d+) % to −(\d+) %") == (str(min(losses)), str(max(losses)))
     old = [round(v * 100) for x, v in saved("before25", HISTORY)["3do"].items() if x != "BT"]
     assert claim(r"Algorithm 1's mean 3DO query (\S+) % shorter for BS, OB and G") == (f"{min(old)}–{max(old)}",)
+
+
+def test_the_typed_sentences_on_tables_1_and_2_and_the_throughput_quote_them():
+    def column(preset: str, heading: str, name: str) -> dict[str, float]:
+        return {s: recorded.ours(row[name]) for s, row in recorded.table(preset, heading, TABLES).items()}
+
+    strong = column("strong", "MLP accuracy", "Unseen Acc")
+    said = claim(r"\*MLP, strong preset\*: 2DS (\d+) %, 3DC7 (\d+) %, 3DC9 (\d+) %, 3DO (\d+) % on unseen workspaces")
+    assert [int(v) for v in said] == [round(strong[s] * 100) for s in ("2ds", *THREE_D)]
+    balanced = column("paper", "MLP accuracy", "Balanced unseen Acc")
+    said = claim(r"at chance on unseen workspaces' balanced samples \(2DS (\d+) %, 3DC-7, 3DC-9 and 3DO (\d+) %\)")
+    assert int(said[0]) == round(balanced["2ds"] * 100) and {round(balanced[s] * 100) for s in THREE_D} == {
+        int(said[1])
+    }
+    planning = column("paper", "Checker throughput", "planning s")
+    said = claim(r"planning took (\d+) s, (\d+) s, (\d+) s and (\d+) s")
+    assert [float(v) for v in said] == [planning[s] for s in ("2ds", *THREE_D)]
+    exact, fcl = (column("strong", "Checker throughput", c) for c in ("exact cfg/s", "FCL cfg/s"))
+    said = claim(r"compiled checker answered (\S+) million 3D configurations a second, (\S+)× python-fcl")
+    assert said == (
+        f"{min(exact[s] for s in THREE_D) / 1e6:.2f}–{max(exact[s] for s in THREE_D) / 1e6:.2g}",
+        _range([exact[s] / fcl[s] for s in THREE_D], 2),
+    )
+
+
+def test_success_rates_differ_by_at_most_the_points_the_page_says():
+    (points,) = claim(r"success rates with and without prediction differ by at most (\d+) points")
+    gaps = [
+        abs(int(without) - int(with_))
+        for tables, preset in ((TABLES, "paper"), (TABLES, "strong"), (HISTORY, "before25"))
+        for heading, table in tables[preset].items()
+        if "Times behind Table 3" in heading  # a row per scenario and sampler
+        for row in table["rows"]
+        for without, with_ in [re.fullmatch(r"(\d+)% / (\d+)%", row[table["columns"].index(SUCCESS)]).groups()]
+    ]
+    assert len(gaps) == 3 * 16 and max(gaps) == int(points)
