@@ -48,6 +48,7 @@ from typing import IO
 from toolkit.viewer.browser import CHROMIUM_ARGS, find_chromium
 
 WINDOW = (1400, 1000)  # (width, height) of the page
+SHOT_WINDOW, SHOT_SCALE = (860, 1000), 2  # the page for one screenshot: narrower, at twice the pixels (see below)
 SETTINGS = {  # JupyterLab settings for the run: no news pop-up; every cell in the page, also those scrolled away;
     # no empty screen below the last cell
     "@jupyterlab/apputils-extension/notification": {"fetchNews": "false", "checkForUpdates": False},
@@ -178,8 +179,9 @@ def run_all(
 ) -> RenderedNotebook:
     """Open ``notebook`` in JupyterLab, run all cells, and count what the page shows.
 
-    With ``screenshot``, save a PNG of the page there; with ``full_page`` too, the whole
-    notebook instead, a screen per PNG named after it (``lab.png``: ``lab_01.png``, ...)."""
+    With ``screenshot``, save a PNG there of the cell that shows the first embedded viewer (of the page where
+    there is none); with ``full_page`` too, the whole notebook instead, a screen per PNG named after it
+    (``lab.png``: ``lab_01.png``, ...)."""
     from playwright.sync_api import sync_playwright
 
     chromium = find_chromium()
@@ -192,7 +194,11 @@ def run_all(
         with jupyterlab(Path(root), env) as url:
             browser = pw.chromium.launch(executable_path=chromium, args=CHROMIUM_ARGS)
             try:
-                page = browser.new_page(viewport={"width": WINDOW[0], "height": WINDOW[1]})
+                one_shot = screenshot is not None and not full_page
+                width, height = SHOT_WINDOW if one_shot else WINDOW
+                page = browser.new_page(
+                    viewport={"width": width, "height": height}, device_scale_factor=SHOT_SCALE if one_shot else 1
+                )
                 page.set_default_timeout(timeout_s * 1000)
                 page.goto(url.format(path=notebook.name))
                 seconds = _run_every_cell(page, n_code)
@@ -249,12 +255,18 @@ def _close_side_panel(page) -> None:
 
 
 def _save_screenshot(page, rendered: RenderedNotebook, path: Path) -> None:
-    """A PNG of the page, scrolled to the first embedded viewer if there is one."""
-    if rendered.iframes:  # the picture shows the first embedded viewer
-        page.locator(".jp-OutputArea-output").locator("iframe").first.scroll_into_view_if_needed()
-        page.wait_for_timeout(3000)  # its WebGL scene draws
+    """A PNG of the cell that shows the first embedded viewer, its code and its output (of the page where there is
+    none). The page is :data:`SHOT_WINDOW` wide, about a web page's column (the course site's home page shows the
+    picture about 700 px wide), at :data:`SHOT_SCALE` times the pixels: a picture of the whole 1400 px window, so
+    shrunk, left its text 6-8 px high."""
     path.parent.mkdir(parents=True, exist_ok=True)
-    page.screenshot(path=str(path))
+    if not rendered.iframes:
+        page.screenshot(path=str(path))
+        return
+    cell = page.locator(".jp-CodeCell", has=page.locator(".jp-OutputArea-output iframe")).first
+    cell.scroll_into_view_if_needed()
+    page.wait_for_timeout(3000)  # its WebGL scene draws
+    page.screenshot(path=str(path), clip=cell.bounding_box())
 
 
 def _save_screens(page, path: Path) -> list[Screen]:
@@ -286,7 +298,11 @@ def main(argv: list[str] | None = None) -> int:
         "the page shows (quick mode: TOOLKIT_QUICK=1)."
     )
     parser.add_argument("notebook")
-    parser.add_argument("--screenshot", metavar="PNG", help="save a PNG of the page here")
+    parser.add_argument(
+        "--screenshot",
+        metavar="PNG",
+        help="save a PNG here of the cell that shows the first embedded viewer (of the page where there is none)",
+    )
     parser.add_argument(
         "--full-page",
         action="store_true",

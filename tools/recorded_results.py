@@ -5,6 +5,7 @@
 ``docs/``, so the tables travel inside the package as JSON, written from the markdown here::
 
     python -m tools.recorded_results        # after editing docs/results.md
+    python -m tools.results_summary         # and the summary at its top, computed from its tables
 
 ``tests/test_teaching_recorded.py`` fails while the packaged copy differs from what ``docs/results.md`` says.
 """

@@ -1,0 +1,102 @@
+"""docs/benchmarks.md's summary against the tables on the same page: each figure it quotes is read from them here, so a
+new measurement that moves a table fails this test until the summary says the same."""
+
+import re
+from pathlib import Path
+
+import pytest
+
+PAGE = (Path(__file__).resolve().parents[1] / "docs" / "benchmarks.md").read_text()
+SUMMARY = " ".join(PAGE.partition("**In short**")[2].partition("\n## ")[0].split())
+NUMBER = re.compile(r"\d+(?:,\d{3})*(?:\.\d+)?")  # "10,000", "0.66"; not the comma of a list
+
+
+def tables() -> list[list[list[str]]]:
+    """Every Markdown table of the page: its rows (header first, the ``| --- |`` line left out) of cells."""
+    found: list[list[list[str]]] = []
+    previous = ""
+    for line in PAGE.splitlines():
+        if line.startswith("|"):
+            if not previous.startswith("|"):
+                found.append([])
+            if not set(line) <= set("|-: "):
+                found[-1].append([cell.strip() for cell in line.strip().strip("|").split("|")])
+        previous = line
+    return found
+
+
+def column(header: str) -> dict[str, str]:
+    """``{row name: cell}`` of the column named ``header`` in the one table that has it."""
+    matches = [t for t in tables() if header in t[0]]
+    assert len(matches) == 1, f"docs/benchmarks.md: {len(matches)} tables have a column {header!r}"
+    index = matches[0][0].index(header)
+    return {row[0]: row[index] for row in matches[0][1:]}
+
+
+def numbers(cell: str) -> list[float]:
+    return [float(n.replace(",", "")) for n in NUMBER.findall(cell)]
+
+
+def span(values: list[float]) -> str:
+    return f"{min(values):g}–{max(values):g}"
+
+
+def said(pattern: str) -> tuple[str, ...]:
+    found = re.search(pattern, SUMMARY)
+    assert found, f"docs/benchmarks.md's summary no longer says {pattern!r}: check the new sentence against its table"
+    return found.groups()
+
+
+def test_the_summary_is_a_short_list_at_the_top():
+    assert PAGE.index("**In short**") < PAGE.index("\n## ")
+    assert 4 <= PAGE.partition("**In short**")[2].partition("\n## ")[0].count("\n- ") <= 6
+
+
+def test_the_checker_figures_are_the_throughput_tables():
+    fcl = column("time, python-fcl / default exact")
+    network = column("time, network / default exact")
+    three_d = [name for name in fcl if name.startswith("3D")]
+    assert said(r"the compiled checker is (\S+) times as fast as python-fcl") == (
+        span([numbers(fcl[n])[0] for n in three_d]),
+    )
+    assert said(r"and (\S+) times as fast as the paper's network") == (
+        span([x for n in three_d for x in numbers(network[n])]),
+    )
+
+
+def test_the_crossover_figures_are_its_table():
+    cheaper, tie = column("network cheaper"), column("can't tell")
+    mesh, chain = (next(v for k, v in cheaper.items() if k.startswith(what)) for what in ("triangles", "links"))
+    assert said(r"against a mesh obstacle \((\S+)") == (span(numbers(mesh)),)
+    assert said(r"for a (\d+)-link chain \((\S+)\)") == tuple(re.fullmatch(r"(\d+) \((\S+)\)", chain).groups())
+    blocks, links, calls = (
+        numbers(next(v for k, v in tie.items() if k.startswith(what)).partition("(")[0])
+        for what in ("obstacles", "links", "configurations")
+    )
+    assert said(r"Among (\S+) blocks, for chains of (\S+) links and in calls of (\S+) configurations") == (
+        span(blocks),
+        span(links),
+        f"{calls[0]:,.0f}",
+    )
+
+
+@pytest.mark.parametrize(
+    "pattern, header",
+    [
+        (r"RRT-Connect answers the median 3D query in (\S+) ms", "ours: RRT-Connect"),
+        (
+            r"(\S+) of the time of OMPL's RRTConnect even with OMPL's checks batched",
+            "RRT-Connect / OMPL RRTConnect, checks batched",
+        ),
+        (r"the lazy PRM takes (\S+) ms", "ours: lazy PRM"),
+    ],
+)
+def test_the_planner_figures_are_the_race_tables(pattern, header):
+    values = [numbers(cell)[0] for cell in column(header).values()]
+    assert said(pattern) == (span(values),)
+
+
+def test_every_number_the_summary_quotes_is_in_a_table_of_the_page():
+    cells = {n for t in tables() for row in t for cell in row for n in NUMBER.findall(cell)}
+    quoted = set(NUMBER.findall(SUMMARY.replace("04", ""))) - {"2"}  # chapter 04's link, "2-core"
+    assert quoted <= cells, f"figures in the summary that no table of the page holds: {sorted(quoted - cells)}"

@@ -1,0 +1,32 @@
+"""The home page's two screenshots (docs/jupyterlab.png, docs/viewer.png) read at the course site's width: each is
+the size its tool makes (tools/lab_browser.py, tools/viewer_picture.py), which the site's column shrinks little.
+Readers of the site found the earlier 1400 and 1280 px pictures, shown at half size, unreadable (text 6-8 px)."""
+
+from pathlib import Path
+
+from PIL import Image
+
+from tools import lab_browser, viewer_picture
+
+DOCS = Path(__file__).resolve().parents[1] / "docs"
+COLUMN = 688  # px: the width at which the site shows a wide picture in a 1280 px window (mkdocs-material's column)
+SHRINK = 0.8  # the least share of its size a picture keeps there: 13 px text stays above 10 px (8 pt)
+
+
+def size(png: str) -> tuple[int, int]:
+    with Image.open(DOCS / png) as image:
+        return image.size
+
+
+def test_the_jupyterlab_picture_is_one_cell_of_a_narrow_window_at_twice_the_pixels():
+    width, height = size("jupyterlab.png")
+    window, scale = lab_browser.SHOT_WINDOW, lab_browser.SHOT_SCALE
+    again = "make it again: TOOLKIT_QUICK=1 python -m tools.lab_browser notebooks/05_3d_scenes.ipynb --screenshot"
+    assert window[0] < width <= window[0] * scale, again  # twice the pixels of a window no wider than SHOT_WINDOW
+    assert (width, height) != lab_browser.WINDOW and height < window[1] * scale, again  # one cell, not the page
+    assert COLUMN / (width / scale) >= SHRINK
+
+
+def test_the_viewer_picture_is_the_narrow_window_its_tool_photographs():
+    assert size("viewer.png") == viewer_picture.WINDOW, "make it again: python -m tools.viewer_picture docs/viewer.png"
+    assert COLUMN / viewer_picture.WINDOW[0] >= SHRINK

@@ -1,0 +1,178 @@
+"""docs/results.md against its own tables: the summary at its top is what tools/results_summary.py computes from them,
+its phrasing follows the numbers both ways and at the tie, and the sentences typed in its prose quote the tables
+(review r11a: "One 3D cell is below 1: ... 0.69x" beside a 3DO bridge-test sampling cell of 0.95)."""
+
+import re
+
+import pytest
+
+from toolkit.teaching import recorded
+from tools import recorded_results, results_summary
+
+TEXT = recorded_results.RESULTS.read_text()
+PAGE = " ".join(TEXT.split())  # whitespace made single spaces: a sentence wraps anywhere
+TABLES = recorded_results.parse(TEXT)
+HISTORY = recorded_results.parse(re.sub(r"(?m)^## Preset `paper` before issue 25.*$", "## Preset `before25`", TEXT))
+THREE_D = ("3dc7", "3dc9", "3do")
+SUCCESS = "success, ours: without / with"  # the column of Table 3's times that holds the success rates
+
+
+def test_the_summary_is_what_the_tables_give():
+    assert TEXT == results_summary.with_summary(TEXT), "docs/results.md changed: run python -m tools.results_summary"
+    assert TEXT.index(results_summary.END) < TEXT.index("## ")  # at the top, before the first section
+    items = TEXT.partition(results_summary.BEGIN)[2].partition(results_summary.END)[0].count("\n- ")
+    assert 4 <= items <= 6
+
+
+def medians(ratios: dict[str, dict[str, float]]) -> dict:
+    """A recorded-tables object whose `paper` and `strong` medians and Table 3 hold ``ratios`` (totals)."""
+    samplers = list(next(iter(ratios.values())))
+    columns = ["", *(f"Total {s}" for s in samplers)]
+    rows = [[name, *(f"{r:.2f}" for r in row.values())] for name, row in ratios.items()]
+    table3 = [[name, *(f"**{round((1 - r) * 100)}%** / 10%" for r in row.values())] for name, row in ratios.items()]
+    section = {
+        "Time with / without prediction, medians over the queries": {"without": None, "columns": columns, "rows": rows},
+        "Table 3: time improvement ratio": {"without": None, "columns": columns, "rows": table3},
+    }
+    return {"paper": section, "strong": section}
+
+
+@pytest.mark.parametrize(
+    "ratio, word",
+    [(0.89, "less time"), (0.90, "less time"), (0.91, "about the same time"), (1.0, "about the same time")]
+    + [(1.09, "about the same time"), (1.10, "more time"), (2.5, "more time")],
+)
+def test_a_time_ratio_is_more_less_or_about_the_same_with_a_tie_under_10_percent(ratio, word):
+    assert results_summary.change(ratio) == word
+
+
+def test_the_planning_answer_follows_the_medians_both_ways():
+    slower = medians({"2ds": {"BS": 1.5, "OB": 1.2}, "3do": {"BS": 2.0, "OB": 1.05}})
+    said = results_summary.lazy_prm(slower)
+    assert "?** No." in said
+    assert (
+        "more time in 3 of 4 scenario–sampler cells (2DS BS 1.50, 2DS OB 1.20, 3DO BS 2.00) and about the same" in said
+    )
+    faster = medians({"2ds": {"BS": 0.5, "OB": 0.6}, "3do": {"BS": 0.7, "OB": 0.8}, "3dc7": {"BS": 0.4, "OB": 1.3}})
+    said = results_summary.lazy_prm(faster)
+    assert "?** Mostly." in said and "less time in 5 of 6 scenario–sampler cells (0.40–0.80 times as much)" in said
+    assert "and more time in 1 (3DC-7 OB 1.30)" in said
+    mixed = medians({"2ds": {"BS": 0.5, "OB": 1.6}, "3do": {"BS": 1.7, "OB": 1.8}})
+    assert "?** Rarely." in results_summary.lazy_prm(mixed)
+    table3 = results_summary.algorithm_1(faster)
+    assert "saved 10 % or more of a query's time in 5 of 6 cells, lost 10 % or more in 1 and tied in 0" in table3
+
+
+def test_the_cae_sentence_says_better_than_all_free_only_where_it_is():
+    def cae(unseen: str) -> str:
+        rows = [["2ds", "**89%** / 100%", f"**{unseen}** / 100%", "89% / 88%"]]
+        columns = ["", "Seen", "Unseen", "all free: Seen / Unseen"]
+        table = {"Table 1: CAE reconstruction accuracy": {"without": None, "columns": columns, "rows": rows}}
+        return results_summary.cae({"paper": table})
+
+    assert "at 86 % of their cells (the paper: 100 %), no better, scenario by scenario, than" in cae("86%")
+    assert "(88 %)" in cae("86%") and "no better" in cae("88%")
+    assert "at most 5 points better than" in cae("93%")
+
+
+def _total(preset: str, tables=TABLES) -> dict[str, dict[str, float]]:
+    return {s: kinds["total"] for s, kinds in recorded.median_ratios(preset, tables).items()}
+
+
+def _range(values, digits: int) -> str:
+    """``"1.3–62"``: a range as the prose writes it, to ``digits`` significant figures."""
+    low, high = (f"{v:.{digits}g}" for v in (min(values), max(values)))
+    return f"{low}–{high}"
+
+
+def claim(pattern: str) -> tuple[str, ...]:
+    found = re.search(pattern, PAGE)
+    assert found, f"docs/results.md no longer says {pattern!r}: check the new sentence against its table, here too"
+    return found.groups()
+
+
+def test_the_typed_sentences_on_the_medians_tables_quote_them():
+    paper, strong = _total("paper"), _total("strong")
+    three_d_below_1 = [(s, r) for s in THREE_D for r in paper[s].values() if r < 1]
+    count, value = claim(
+        r"(One|Two|Three|No) 3D query totals? (?:is|are) below 1: the 3DO bridge test's median query, (\S+)×"
+    )
+    assert (count, float(value)) == ({1: "One"}.get(len(three_d_below_1)), paper["3do"]["BT"])
+    assert three_d_below_1 == [("3do", paper["3do"]["BT"])]
+    below = [
+        (s, kind, r)
+        for s, kinds in recorded.median_ratios("paper", TABLES).items()
+        for kind, row in kinds.items()
+        for sampler, r in row.items()
+        if r < 0.9
+    ]
+    count, *values = claim(
+        r"medians table has (\w+) cells below 0\.9, all the bridge test: 2DS sampling \((\S+)\) and total \((\S+)\), "
+        r"and the 3DO total \((\S+),"
+    )
+    assert count == "three" and len(below) == 3
+    assert [float(v) for v in values] == [r for _, _, r in below]
+    elsewhere = [r for row in paper.values() for r in row.values() if r >= 0.9]
+    assert claim(r"elsewhere a whole query took (\S+)× the time with it") == (_range(elsewhere, 2),)
+    in_3d = [r for s in THREE_D for r in strong[s].values()]
+    assert claim(r"its median 3D query took (\S+)× the time with prediction") == (_range(in_3d, 3),)
+    assert all(r >= 1 for r in strong["2ds"].values())  # "no 2DS sampler's median saved time"
+    dc = [paper[s][x] for s in ("3dc7", "3dc9") for x in ("BS", "OB", "G")]
+    o = [paper["3do"][x] for x in ("BS", "OB", "G")]
+    assert claim(r"a query takes (\S+)× the time with it on 3DC and (\S+)× on 3DO") == (_range(dc, 2), _range(o, 2))
+    before = [r for s in THREE_D for r in _total("before25", HISTORY)[s].values()]
+    assert claim(r"the median 3D query in (\S+)× the time against the lazy planner") == (_range(before, 3),)
+
+
+def test_the_typed_sentences_on_table_3_quote_it():
+    def saved(preset: str, tables=TABLES) -> dict[str, dict[str, float]]:
+        return {s: recorded.improvements(preset, s, recorded=tables) for s in ("2ds", *THREE_D)}
+
+    paper, strong = saved("paper"), saved("strong")
+    wins = [round(paper[s][x] * 100) for s in THREE_D for x in ("BS", "OB", "G") if paper[s][x] >= 0.10]
+    assert claim(r"the paper's model saves (\S+) % of a query's total against Algorithm 1") == (
+        f"{min(wins)}–{max(wins)}",
+    )
+    assert [s for s in THREE_D if paper[s]["G"] >= 0.1 and paper[s]["BS"] < 0.1] == ["3dc7"]
+    bt = [-round(paper[s]["BT"] * 100) for s in THREE_D]
+    assert claim(r"the bridge test loses (\S+) % in every 3D scenario") == (f"{min(bt)}–{max(bt)}",)
+    losses = [-round(strong[s][x] * 100) for s in THREE_D for x in strong[s]]
+    assert claim(r"its Table 3, of means: −(\d+) % to −(\d+) %") == (str(min(losses)), str(max(losses)))
+    old = [round(v * 100) for x, v in saved("before25", HISTORY)["3do"].items() if x != "BT"]
+    assert claim(r"Algorithm 1's mean 3DO query (\S+) % shorter for BS, OB and G") == (f"{min(old)}–{max(old)}",)
+
+
+def test_the_typed_sentences_on_tables_1_and_2_and_the_throughput_quote_them():
+    def column(preset: str, heading: str, name: str) -> dict[str, float]:
+        return {s: recorded.ours(row[name]) for s, row in recorded.table(preset, heading, TABLES).items()}
+
+    strong = column("strong", "MLP accuracy", "Unseen Acc")
+    said = claim(r"\*MLP, strong preset\*: 2DS (\d+) %, 3DC7 (\d+) %, 3DC9 (\d+) %, 3DO (\d+) % on unseen workspaces")
+    assert [int(v) for v in said] == [round(strong[s] * 100) for s in ("2ds", *THREE_D)]
+    balanced = column("paper", "MLP accuracy", "Balanced unseen Acc")
+    said = claim(r"at chance on unseen workspaces' balanced samples \(2DS (\d+) %, 3DC-7, 3DC-9 and 3DO (\d+) %\)")
+    assert int(said[0]) == round(balanced["2ds"] * 100) and {round(balanced[s] * 100) for s in THREE_D} == {
+        int(said[1])
+    }
+    planning = column("paper", "Checker throughput", "planning s")
+    said = claim(r"planning took (\d+) s, (\d+) s, (\d+) s and (\d+) s")
+    assert [float(v) for v in said] == [planning[s] for s in ("2ds", *THREE_D)]
+    exact, fcl = (column("strong", "Checker throughput", c) for c in ("exact cfg/s", "FCL cfg/s"))
+    said = claim(r"compiled checker answered (\S+) million 3D configurations a second, (\S+)× python-fcl")
+    assert said == (
+        f"{min(exact[s] for s in THREE_D) / 1e6:.2f}–{max(exact[s] for s in THREE_D) / 1e6:.2g}",
+        _range([exact[s] / fcl[s] for s in THREE_D], 2),
+    )
+
+
+def test_success_rates_differ_by_at_most_the_points_the_page_says():
+    (points,) = claim(r"success rates with and without prediction differ by at most (\d+) points")
+    gaps = [
+        abs(int(without) - int(with_))
+        for tables, preset in ((TABLES, "paper"), (TABLES, "strong"), (HISTORY, "before25"))
+        for heading, table in tables[preset].items()
+        if "Times behind Table 3" in heading  # a row per scenario and sampler
+        for row in table["rows"]
+        for without, with_ in [re.fullmatch(r"(\d+)% / (\d+)%", row[table["columns"].index(SUCCESS)]).groups()]
+    ]
+    assert len(gaps) == 3 * 16 and max(gaps) == int(points)
