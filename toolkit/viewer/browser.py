@@ -1,8 +1,9 @@
 """Screenshots of the viewer in a real headless Chromium, taken once the page shows the scene.
 
-Used by the browser test and to make ``docs/viewer.png``::
+Used by the browser test, by ``toolkit view --screenshot PNG``, and to make ``docs/viewer.png``
+(in a window narrow enough to read at a web page's width)::
 
-    toolkit view --scenario 3do --samples 300 --screenshot docs/viewer.png
+    python -m tools.viewer_picture docs/viewer.png
 
 Playwright drives Debian's Chromium (``make browser``). WebGL renders in software
 there (``--disable-gpu``; ``--use-gl=swiftshader`` would turn WebGL off), and on a
