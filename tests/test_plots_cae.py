@@ -214,3 +214,55 @@ def test_reconstructions_wrong_cells_carry_marks_one_can_read_at_the_sites_width
         assert all(m.get_markersize() * 100 / 72 >= 5 and m.get_fillstyle() == "none" for m in marks)  # px at 100 dpi
     shown = [m for m in fig.legends[0].findobj(Line2D) if m.get_marker() in ("x", "o")]  # what the legend draws
     assert sorted(m.get_marker() for m in shown) == ["o", "x"] and {m.get_fillstyle() for m in shown} == {"none"}
+
+
+def test_contraction_reads_one_flip_as_well_as_thirty_and_its_legend_covers_no_curve():
+    """Reader r10b: the reconstruction panel ran to 30 on a linear axis, the values at 1 flip squashed at its foot;
+    r11b: the latent panel's legend lay on its curves. Both counts are on log scales (a linear stretch from 0 to 1
+    below, so that a change of 0 cells still shows), ticked in plain numbers at the flips measured; one legend, under
+    the panels, names the lines."""
+    flips = np.array([1, 2, 3, 5, 10, 20, 30])
+    names = ["lambda = 0", "lambda = 1"]
+    change = {names[0]: np.array([[1.1], [1.5], [1.9], [2.4], [3.2], [4.4], [9.6]]), names[1]: np.zeros((7, 1))}
+    fig = plots.contraction(
+        {n: np.array([1.0, 2.0]) for n in names},
+        flips=flips,
+        latent_shift=dict.fromkeys(names, np.linspace(0.02, 0.14, 7)[:, None]),
+        decoded_change=change,
+    )
+    ax_j, ax_z, ax_x = fig.axes
+    assert ax_x.get_yscale() == ax_x.get_xscale() == ax_z.get_xscale() == "symlog"
+    assert [t.get_text() for t in ax_x.get_xticklabels()] == ["1", "2", "3", "5", "10", "20", "30"]
+    assert [t.get_text() for t in ax_x.get_yticklabels()] == ["0", "1", "2", "5", "10", "20"]
+    low, high = ax_x.get_ylim()
+    assert low < 0 and high > 30  # every count drawn, the copy line's 30 too
+    to_px = ax_x.transData.transform
+    one, two, thirty = (to_px((1, v))[1] for v in (1.1, 2.2, 30.0))  # a doubling near 1 as tall as one near 15
+    assert two - one == pytest.approx(to_px((1, 30.0))[1] - to_px((1, 15.0))[1], rel=0.01) and thirty > two
+    assert ax_z.get_legend() is None and ax_x.get_legend() is None
+    (legend,) = fig.legends
+    assert [t.get_text() for t in legend.get_texts()] == [*names, "copy the input"]
+    FigureCanvasAgg(fig).draw()
+    box = legend.get_window_extent()
+    assert all(box.y1 <= ax.get_window_extent().y0 for ax in (ax_j, ax_x))  # below every panel
+
+
+def test_large_groups_interleave_so_that_none_hides_under_another():
+    """Reader r10b: chapter 02's 500 unseen workspaces (triangles) hid under the 500 training grids (squares) drawn over
+    them. Large groups are drawn in turns, a slice of each at a time: every point once, each group's slices spread
+    through the stack (one of each near the top), the small group of a few dozen still over them all."""
+    rng = np.random.default_rng(0)
+    groups = {
+        name: (rng.uniform(0.8, 0.95, n), rng.uniform(0.8, 1.0, n))
+        for name, n in (("seen", 30), ("training grids", 500), ("unseen", 500))
+    }
+    ax = plots.accuracy_vs_all_free(groups).axes[0]
+    for name, (all_free, accuracy) in groups.items():
+        drawn = [c for c in ax.collections if c.get_gid() == name]
+        points = np.concatenate([c.get_offsets() for c in drawn])
+        assert sorted(map(tuple, points)) == sorted(zip(all_free, accuracy))  # each workspace once
+    stack = sorted(ax.collections, key=lambda c: c.get_zorder())  # bottom first
+    assert [c.get_gid() for c in stack[-3:]] == ["training grids", "unseen", "seen"]  # both large groups near the top
+    order = [c.get_gid() for c in stack if c.get_gid() != "seen"]
+    assert order[:4] == ["training grids", "unseen", "training grids", "unseen"]  # in turns
+    assert len([c for c in stack if c.get_gid() == "seen"]) == 1

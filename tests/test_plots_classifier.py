@@ -167,8 +167,9 @@ def test_probability_map_shows_the_probabilities_the_boundary_and_exactly_the_mi
 
 def test_a_fine_maps_dangerous_squares_stay_large_enough_to_see():
     """On a 100-cell map (chapter 03 at full size) a cell is about 2 points wide: one square then marks each block of
-    k x k cells holding a dangerous one, at least MIN_MARK points a side, under the boundary (it stays whole); every
-    dangerous cell lies in a square's block, every square beside a dangerous cell, and the description says k."""
+    k x k cells holding a dangerous one, at least MIN_MARK points a side, over the boundary (readers r10b, r11: under
+    its ringed line a square next to it was cut in two, or hidden); every dangerous cell lies in a square's block,
+    every square beside a dangerous cell, and the description says k."""
     fine = slices.slice_grid(robots.point_robot(), n=100)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
     valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (100, 100)
@@ -178,7 +179,7 @@ def test_a_fine_maps_dangerous_squares_stay_large_enough_to_see():
     ax = fig.axes[0]
     (squares,) = [c for c in ax.collections if c.get_gid() == cell_marks.GID]
     (boundary,) = [c for c in ax.get_children() if isinstance(c, ContourSet)]
-    assert np.sqrt(squares.get_sizes()[0]) >= cell_marks.MIN_MARK and squares.get_zorder() < boundary.get_zorder()
+    assert np.sqrt(squares.get_sizes()[0]) >= cell_marks.MIN_MARK and squares.get_zorder() > boundary.get_zorder()
     k = block_of_squares(fig)
     assert k > 1 and len(squares.get_offsets()) < ((probability >= 0.5) & ~valid).sum() / k
     assert_squares_mark(ax, fine, (probability >= 0.5) & ~valid, k)
@@ -325,6 +326,14 @@ def test_path_map_marks_start_and_goal_whole_on_the_maps_edge(grid, probability,
     assert [tuple(np.ravel(ends[n].get_xydata())) for n in ("start", "goal")] == [tuple(path[0]), tuple(path[-1])]
     drawn = [*ends.values(), next(line for line in ax.get_lines() if line.get_marker() == "D")]
     assert not any(line.get_clip_on() for line in drawn)  # an end's marker drawn whole, not cut by the frame
+    # reader r10b saw the start square cut at the frame: its white edge vanished on the white beyond it, and the path's
+    # diamond peeked out from under it. Each end: a white edge, then a black ring (its shape shows on any side of the
+    # frame); the path's diamonds lie between the ends only
+    for end in ends.values():
+        assert end.get_markeredgecolor() == COLORS["free"]
+        (ring,) = [e for e in end.get_path_effects() if hasattr(e, "_gc")]
+        assert to_rgba(ring._gc["foreground"]) == to_rgba(COLORS["ink"])
+    assert drawn[-1].get_markevery() == slice(1, -1)
     assert {"start", "goal"} <= {t.get_text() for t in fig.legends[0].get_texts()}
 
 

@@ -3,6 +3,7 @@
 import numpy as np
 from matplotlib.collections import PolyCollection
 
+from toolkit.plots import alt
 from toolkit.plots.alt import alt_text
 from toolkit.plots.crossover import crossover
 
@@ -31,7 +32,7 @@ def test_only_the_points_whose_verdict_is_network_cheaper_are_shaded():
         (round(10 / np.sqrt(10), 3), round(np.sqrt(1000), 3)),
         (round(np.sqrt(1e7), 3), round(1e4 * np.sqrt(10), 3)),
     ]
-    assert [t.get_text() for t in fig.legends[0].get_texts()][-1] == "network cheaper by > 25%"
+    assert "network cheaper by > 25%" in [t.get_text() for t in fig.legends[0].get_texts()]
     assert "cheaper by more than 25% at 10, 10,000." in alt_text(fig)
 
 
@@ -43,19 +44,62 @@ def test_a_panel_where_the_network_is_never_cheaper_beyond_the_band_has_no_shadi
 
 
 def test_a_tick_label_that_would_touch_its_neighbour_is_left_out_and_the_last_is_always_named():
+    """Labels at their places in pixels, digits 8 px wide: one kept where a digit and a half of white parts it from the
+    one before (half a label's width each side of its tick), the last always named, its neighbour giving way."""
     from toolkit.plots.crossover import _tick_labels
 
-    assert _tick_labels(np.array([10, 25, 50, 100, 200, 350, 500.0])) == ["10", "25", "50", "100", "200", "", "500"]
-    assert _tick_labels(np.array([1, 10, 100, 1000, 10000.0])) == ["1", "10", "100", "1,000", "10,000"]
+    obstacles = np.array([10, 25, 50, 100, 200, 350, 500.0])
+    at = np.array([0, 50, 90, 130, 160, 180, 200.0])  # 100 and 200 30 px apart: 36 needed for two 3-digit labels
+    assert _tick_labels(obstacles, at, 8.0) == ["10", "25", "50", "100", "", "", "500"]
+    batch = np.array([1, 10, 100, 1000, 10000.0])
+    assert _tick_labels(batch, np.arange(5) * 50.0, 8.0) == ["1", "10", "100", "", "10,000"]  # 1,000: 56 px needed
+    assert _tick_labels(batch, np.arange(5) * 60.0, 8.0) == ["1", "10", "100", "1,000", "10,000"]
+
+
+def test_the_drawn_tick_labels_keep_apart():
+    """docs/crossover.png's obstacle panel: no two named ticks closer than a digit and a half, as drawn (reader
+    r10a: 100, 200 and 500 crowded); every measured value still has a tick, the unnamed ones short."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    values = [10, 25, 50, 100, 200, 350, 500]
+    sweep = {**SWEEP, "values": values, **{k: list(np.linspace(1, 2, 7)) for k in ("exact_us", "fcl_us")}}
+    sweep["learned_us"] = list(np.linspace(1.5, 1.6, 7))
+    fig = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"obstacles": sweep}})
+    fig.set_dpi(110)
+    FigureCanvasAgg(fig).draw()
+    ax = fig.axes[0]
+    boxes = sorted((t.get_window_extent() for t in ax.get_xticklabels() if t.get_text()), key=lambda b: b.x0)
+    digit = 9 * 110 / 72 * 0.6
+    assert len(boxes) >= 4 and all(right.x0 - left.x1 >= 1.5 * digit for left, right in zip(boxes, boxes[1:]))
+    assert sorted([*ax.get_xticks(), *ax.get_xticks(minor=True)]) == values
 
 
 def test_the_decade_where_curves_cross_has_numbers_and_a_crossing_says_what_it_counts():
     crossing = {**SWEEP, "exact_us": [0.2, 0.3, 0.5, 0.8], "learned_us": [0.6, 0.5, 0.45, 0.4]}
-    crossing["crossing"] = {"exact": {"value": 243.0}, "fcl": None}
     fig = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"obstacles": crossing}})
     ax = fig.axes[0]
     shown = {t.get_text() for t in ax.get_yticklabels()}
     assert {"0.2", "0.5", "1"} <= shown  # 0.2 to 0.8: the crossing's decade is labelled in plain numbers
-    assert [t.get_text() for t in ax.texts] == ["243 obstacles"]  # a number with what it counts
+    # log(exact / learned) is log(0.3 / 0.5) at 100 and log(0.5 / 0.45) at 1,000: 0 at 10 ** (2 + 0.8292), log-log
+    t = np.log(0.6) / (np.log(0.6) - np.log(0.5 / 0.45))
+    assert [t.get_text() for t in ax.texts] == [f"{10 ** (2 + t):,.0f} obstacles"] == ["675 obstacles"]
     assert "the curves cross (dotted)" in [t.get_text() for t in fig.legends[0].get_texts()]
     assert not any(line.get_clip_on() for line in ax.lines if line.get_marker() not in ("None", "")), "edge marks"
+
+
+def test_every_crossing_is_marked_and_said_each_label_apart():
+    """Reader r10a: the batch curves cross twice and one dotted line showed. The network's curve crosses the exact
+    one between 10 and 100 (dearer, then cheaper) and again between 1,000 and 10,000: two dotted lines, two labels
+    that do not overlap, both values in the description; python-fcl's curve, never crossed, has none."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    twice = {**SWEEP, "exact_us": [1.0, 1.0, 1.0, 1.0], "learned_us": [2.0, 0.5, 0.5, 2.0]}
+    fig = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"obstacles": twice}})
+    FigureCanvasAgg(fig).draw()
+    ax = fig.axes[0]
+    dotted = [line.get_xdata()[0] for line in ax.lines if line.get_linestyle() == ":"]
+    assert np.allclose(dotted, [10**1.5, 10**3.5])  # halfway, log-log, where log 2 meets log 0.5
+    first, second = (t.get_window_extent() for t in ax.texts)
+    assert [t.get_text() for t in ax.texts] == ["31.6 obstacles", "3,160 obstacles"]
+    assert first.y1 <= second.y0 or second.y1 <= first.y0 or first.x1 <= second.x0 or second.x1 <= first.x0
+    assert "crosses the exact, default (compiled) one at 31.6 and at 3,160." in str(alt.details(fig))

@@ -9,6 +9,7 @@ import numpy as np
 import pytest
 from matplotlib.colors import to_hex, to_rgba
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 from matplotlib.patches import Polygon, Rectangle
 from mpl_toolkits.mplot3d.art3d import Poly3DCollection
 
@@ -22,6 +23,7 @@ from toolkit.geometry.collision import (
 )
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots import boxes, cspace, palette, robot_drawing, slices
+from toolkit.plots.alt import alt_text
 from toolkit.plots.palette import CATEGORICAL
 
 
@@ -201,6 +203,27 @@ def test_robot_figure_overlays_configurations_nearest_the_viewer_last_and_names_
     assert [t.get_text() for t in fig.legends[0].get_texts()] == labels
     with pytest.raises(ValueError, match="2 labels for 3 configurations"):
         robot_drawing.robot_figure(youbot, bending, labels=labels[:2])
+
+
+def test_named_configurations_carry_a_marker_of_their_own_at_their_last_link():
+    """Reader r10b: chapter 01's joint2 = -1 and +1 arms differed by colour only (their links too thin for a hatch).
+    Each named configuration gets a marker of its own (circle, square, triangle) at its last link's centre, in each
+    flat view where that centre projects (and in 3D), the same marker beside its name in the legend, and the
+    description says which; a single configuration needs none."""
+    youbot = scenarios.get("3do").robot
+    bending = np.tile([5.0, 5.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0], (3, 1))
+    bending[:, 4] = [-1.0, 0.0, 1.0]
+    fig = robot_drawing.robot_figure(youbot, bending, views=("xz", "xy"), labels=["back", "upright", "forward"])
+    ends = youbot.link_boxes(bending)[0][:, -1]  # (3, 3) each configuration's last link centre
+    for ax, axes in zip(fig.axes, ((0, 2), (0, 1))):
+        marks = [line for line in ax.get_lines() if line.get_marker() not in ("None", "")]
+        assert [m.get_marker() for m in marks] == ["o", "s", "^"]
+        assert [m.get_color() for m in marks] == [to_hex(c) for c in CATEGORICAL[:3]]
+        np.testing.assert_allclose([m.get_xydata()[0] for m in marks], ends[:, list(axes)])
+    assert [line.get_marker() for line in fig.legends[0].findobj(Line2D)] == ["o", "s", "^"]  # each beside its name
+    assert "forward (dotted, its last link marked with a triangle)" in alt_text(fig)
+    single = robot_drawing.robot_figure(youbot, bending[:1], views=("xz",), labels=["upright"])
+    assert not [line for line in single.axes[0].get_lines() if line.get_marker() not in ("None", "")]
 
 
 def test_robot_figure_projects_a_chain_by_forward_kinematics():

@@ -26,6 +26,7 @@ from matplotlib.font_manager import FontProperties
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from matplotlib.textpath import TextToPath
+from matplotlib.ticker import NullLocator
 
 from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots.alt import Part, describe, lines_part, map_part
@@ -145,32 +146,41 @@ def grid_part(name: str, said: str, grid: np.ndarray, decoded: np.ndarray) -> Pa
     return map_part(name, text, grid.shape, ("x cell", 0, nx), ("y cell", 0, ny), region)
 
 
+LAYERS = 10  # slices of a large group drawn in turns with the other large groups' (accuracy_vs_all_free)
+
+
 def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
     """Reconstruction accuracy (y) against the share of free cells (x), one point per workspace, per named group.
 
     ``groups[name] = (all_free (W,), accuracy (W,))``. Points above the diagonal beat a
-    CAE that answers "all free"; on it, the CAE has learned nothing about that workspace. The first group is drawn on
-    top, and a small group (a few dozen workspaces) with larger markers: it stays visible over hundreds of points.
+    CAE that answers "all free"; on it, the CAE has learned nothing about that workspace. A small group (a few dozen
+    workspaces) has larger markers and is drawn on top, the first over the next: it stays visible over hundreds of
+    points. Large groups are drawn in turns, a slice of each at a time (:data:`LAYERS`), so that where their clouds
+    overlap every group shows on top somewhere, none hidden under another's markers.
     """
     fig = Figure(figsize=(6, 5.2), layout="constrained")
     ax = fig.subplots()
     said = []
     for k, (name, (all_free, accuracy)) in enumerate(groups.items()):
         style = series_style(k)
-        above = int(np.sum(np.asarray(accuracy) > np.asarray(all_free)))
+        all_free, accuracy = np.asarray(all_free), np.asarray(accuracy)
+        above = int(np.sum(accuracy > all_free))
         few = len(accuracy) <= 50
-        ax.scatter(
-            all_free,
-            accuracy,
-            label=f"{name} (mean {np.mean(accuracy):.1%} vs {np.mean(all_free):.1%})",
-            alpha=0.9 if few else 0.6,
-            s=45 if few else 14,
-            c=style["color"],
-            marker=style["marker"],
-            edgecolors=COLORS["ink"],
-            linewidths=0.9 if few else 0.3,
-            zorder=2 + len(groups) - k,
-        )
+        layers = 1 if few else LAYERS
+        for j in range(layers):  # layer j of every large group, then layer j + 1: the groups interleave
+            ax.scatter(
+                all_free[j::layers],
+                accuracy[j::layers],
+                label=f"{name} (mean {np.mean(accuracy):.1%} vs {np.mean(all_free):.1%})" if j == 0 else None,
+                alpha=0.9 if few else 0.7,
+                s=45 if few else 16,
+                c=style["color"],
+                marker=style["marker"],
+                edgecolors=COLORS["ink"],
+                linewidths=0.9 if few else 0.3,
+                zorder=3 + len(groups) - k if few else 2 + (j * len(groups) + k) / (layers * len(groups)),
+                gid=name,
+            )
         said.append(
             f"{name}: {len(accuracy)} workspaces, mean accuracy {np.mean(accuracy):.1%} against {np.mean(all_free):.1%}"
             f" for all free, {above} of them above the diagonal"
@@ -201,7 +211,7 @@ def contraction(
     the last panel is a perfect copy machine: it changes exactly the flipped cells.
     """
     flips = np.asarray(flips)
-    fig = Figure(figsize=(6.2, 6.0), layout="constrained")  # as wide as a chapter page's column: text at its size
+    fig = Figure(figsize=(6.2, 6.6), layout="constrained")  # as wide as a chapter page's column: text at its size
     panels = fig.subplot_mosaic([["j", "z"], ["j", "x"]])  # the norms tall on the left, the two responses stacked
     ax_j, ax_z, ax_x = panels["j"], panels["z"], panels["x"]
     names = list(jacobian_norms)
@@ -212,11 +222,14 @@ def contraction(
     ax_x.plot(flips, flips, color=COLORS["reference"], linestyle=":", label="copy the input", zorder=1)
     ax_z.set_ylabel("latent move ||z' - z|| / ||z||")
     ax_z.set_title("Latent code moves\n(a line drawn over another is thinner)", fontsize=10)
+    ax_x.set_title("Reconstruction changes (log scale)", fontsize=10)
+    changes = np.concatenate([flips, *(np.mean(decoded_change[name], axis=1) for name in names)])  # the counts drawn
+    _counts_axis(ax_x, "y", [t for t in COUNT_TICKS if changes.min() <= t <= changes.max()])  # 1 reads as 30 does
     ax_x.set_ylabel("decoded cells that change sign")
-    ax_x.set_title("Reconstruction changes", fontsize=10)
     for ax in (ax_z, ax_x):
-        ax.set_xlabel("cells flipped")
-        ax.legend(fontsize=8)
+        _counts_axis(ax, "x", flips)  # the numbers of flips measured
+        ax.set_xlabel("cells flipped (log scale)")
+    fig.legend(handles=ax_x.get_lines(), loc="outside lower center", ncols=2, fontsize=8, frameon=False)  # on no curve
     said = "; ".join(
         f"{name}: median Jacobian norm {np.median(jacobian_norms[name]):.3g}; flipping {flips[-1]:g} cells moves z by "
         f"{np.mean(latent_shift[name][-1]):.1%} of its length and changes {np.mean(decoded_change[name][-1]):.3g} "
@@ -234,8 +247,23 @@ def contraction(
     )
     parts = [norms, lines_part(ax_z, text="mean over the trials"), lines_part(ax_x, text="mean over the trials")]
     text = "How strongly each encoder reacts to its input: the norm of its Jacobian (a box per model, the median a"
-    text += " thick line, the mean a triangle), and how far the latent code and"
-    return describe(fig, f"{text} the reconstruction move when cells of the input are flipped. {said}.", parts)
+    text += " thick line, the mean a triangle), and how far the latent code and the reconstruction move when cells of"
+    text += " the input are flipped (the flips, and the decoded cells that change, on log scales)"
+    return describe(fig, f"{text}. {said}.", parts)
+
+
+COUNT_TICKS = (0, 1, 2, 5, 10, 20, 50, 100, 200, 500, 1000)
+
+
+def _counts_axis(ax, which: str, ticks) -> None:
+    """An axis of counts (``which``: "x" or "y") on a log scale from 1 up and a linear stretch from 0 to 1 below it
+    (matplotlib's "symlog"): a count of 1 reads as well as one of 30, and a count of 0 still shows; ``ticks`` in
+    plain numbers, no others."""
+    (ax.set_xscale if which == "x" else ax.set_yscale)("symlog", linthresh=1, linscale=0.4)
+    axis = ax.xaxis if which == "x" else ax.yaxis
+    axis.set_ticks(list(ticks), [f"{t:g}" for t in ticks])
+    axis.set_minor_locator(NullLocator())
+    ax.autoscale_view()  # the limits on the new scale: the data and a margin, no more
 
 
 NORM_MARKS: dict[str, dict[str, Any]] = {  # a box plot's marks, each named in the panel's legend

@@ -4,7 +4,8 @@ A map of a 2-DoF slice (:class:`~toolkit.plots.slices.CSpaceSlice`) marks some o
 dangerous mistakes on a P(valid) map, both kinds of mistake on a decision map, :mod:`toolkit.plots.classifier`).
 On a coarse map a mark covers most of its cell; on a fine one (chapter 03 at full size: 100 cells over 3 inches,
 about 2 points a cell) a mark that size is a speck, and a mark made larger would cover its neighbours' marks.
-:func:`draw_cell_marks` puts a mark on each marked cell, over the map and under its outlines (or over them);
+:func:`draw_cell_marks` puts a mark on each marked cell, over the map and under its outlines (or over them: the
+classifier's maps draw their mistakes over the boundary, which would cut a mark beside it in two);
 :func:`fit_cell_marks`, once the figure is laid out, sizes each mark to :data:`MARK_SHARE` of its cell, and where
 that is under :data:`MIN_MARK` points, puts one mark on each block of ``k x k`` cells holding a marked cell, at their
 middle, ``k`` the fewest cells that make it that large.

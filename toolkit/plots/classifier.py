@@ -229,7 +229,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
     if conservative:
         ax.add_collection(_cells(grid, codes == 1, label=ANSWERS[1], **CONSERVATIVE_CELLS))
-    draw_cell_marks(ax, grid, codes == 3, label=ANSWERS[3], **_mistake_mark(3))  # sized by fit_cell_marks
+    draw_cell_marks(ax, grid, codes == 3, label=ANSWERS[3], zorder=3, **_mistake_mark(3))  # sized by fit_cell_marks
     return image
 
 
@@ -274,6 +274,7 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid: np.ndarray, path: np.ndarr
         path[:, x],
         path[:, y],
         "--D",  # dashed, a diamond per configuration: apart from the solid C-obstacle boundary, same blue
+        markevery=slice(1, -1),  # the ends have marks of their own: no diamond's corners peek out from under them
         color=COLORS["path"],
         linewidth=3,
         markersize=7,
@@ -290,10 +291,10 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid: np.ndarray, path: np.ndarr
             markeredgecolor=COLORS["free"],
             markersize=size,
             label=name,
-            clip_on=False,
+            clip_on=False,  # whole on the map's edge, over the frame
             zorder=5,
-            path_effects=halo(0.0, ("free",)),  # a white ring: it shows on the map's dark side too
-        )
+            path_effects=halo(0.0, ("ink",)),  # black, a white edge, a black ring: its whole shape shows on the
+        )  # map's dark side, on its light side and on the white beyond the frame
 
 
 def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):
@@ -317,12 +318,15 @@ def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):
 
 def _mistake_mark(code: int, *, legend: bool = False) -> dict[str, Any]:
     """The mark of a mistake of answer ``code`` (1 conservative, 3 dangerous): its colour in a black, then a white
-    ring (it stands out on white, on the obstacles' dark grey and on its own cell's colour); scatter's options, or a
-    legend line's."""
+    ring (:data:`MARK_RING`: it stands out on white, on the obstacles' dark grey, on any grey of P(valid) between
+    and on its own cell's colour); scatter's options, or a legend line's."""
     color = ANSWER_COLORS[code]
     if legend:
         return dict(marker=MISTAKE_MARKERS[code], color=color, markeredgecolor=COLORS["ink"], path_effects=halo(0.0))
-    return dict(c=color, marker=MISTAKE_MARKERS[code], linewidths=0, path_effects=halo(0.0), clip_on=False)
+    return dict(c=color, marker=MISTAKE_MARKERS[code], linewidths=0, path_effects=halo(MARK_RING), clip_on=False)
+
+
+MARK_RING = 1.0  # points: a mistake's black ring 1.3 points wide (2 pixels on the site), its white one 0.8 beyond
 
 
 def _draw_boundary(ax, valid, grid: CSpaceSlice) -> None:

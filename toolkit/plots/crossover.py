@@ -5,7 +5,8 @@ results dict, as ``crossover.json`` holds it): one panel per variable that makes
 dear, microseconds per configuration on log-log axes, shaded where the network is the cheaper
 check by more than the band in which a timing moves (the verdict "network cheaper" of
 :func:`toolkit.util.verdicts.cost_verdict`, the words the tables and the conclusion use: a point
-they call "can't tell" is not shaded) and a dotted line where its curve crosses an exact one.
+they call "can't tell" is not shaded) and a dotted line wherever its curve crosses an exact one (twice, where the
+two costs are close: each crossing is marked).
 Nothing here calls ``show()``.
 """
 
@@ -13,6 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.ticker import NullFormatter, NullLocator
 
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
@@ -28,8 +30,8 @@ STYLES = {  # checker -> (marker and line, colour, legend)
 def crossover(results: dict) -> Figure:
     """One panel per swept variable: cost per configuration of the default exact checker, of python-fcl and of
     the learned checker against the variable; shaded where the network is cheaper than the default exact check
-    by more than :data:`~toolkit.util.verdicts.CLOSE` (the verdict "network cheaper"), a dotted vertical line where
-    two curves cross (the crossing's value beside it)."""
+    by more than :data:`~toolkit.util.verdicts.CLOSE` (the verdict "network cheaper"), a dotted vertical line at
+    every value where the network's curve crosses an exact one (its value beside it)."""
     sweeps = results["variables"]
     columns = min(len(sweeps), 2)
     rows = -(-len(sweeps) // columns)
@@ -52,6 +54,8 @@ def crossover(results: dict) -> Figure:
     handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # one legend, below
     fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=1, fontsize=9, frameon=False)
     fig.tight_layout(rect=(0, (0.2 * len(handles) + 0.2) / fig.get_figheight(), 1, 1))  # a line an entry
+    for ax, sweep in zip(axes, sweeps.values()):
+        _name_ticks(ax, np.asarray(sweep["values"], dtype=float))
     text = f"Cost per configuration of the exact and the learned check, {results['scenario']}, preset "
     text += f"{results['preset']}{quick}, microseconds on log axes. "
     parts = [_in_a_table(sweep) for sweep in sweeps.values()]
@@ -66,7 +70,11 @@ def _in_a_table(sweep: dict) -> Part:
         (f"{v:,.0f}", *(f"{sweep[f'{name}_us'][i]:.3g}" for name in STYLES), f"{learned / exact:.2f}")
         for i, (v, exact, learned) in enumerate(zip(sweep["values"], sweep["exact_us"], sweep["learned_us"]))
     )
-    crossings = [f"the {STYLES[n][2]} one at {c['value']:,.3g}" for n, c in sweep["crossing"].items() if c is not None]
+    crossings = [
+        f"the {STYLES[n][2]} one at {' and at '.join(_number(v) for v in found)}"
+        for n in ("exact", "fcl")
+        if (found := _crossings(sweep, n))
+    ]
     said = _in_words(sweep) + (f" The network's curve crosses {', '.join(crossings)}." if crossings else "")
     return Part(sweep["label"], said, columns, rows)
 
@@ -85,14 +93,14 @@ def _in_words(sweep: dict) -> str:
 
 
 def _panel(ax, sweep: dict) -> None:
-    """One variable: the three curves, the values where the network is cheaper (its verdict) shaded, the crossings."""
+    """One variable: the three curves, the values where the network is cheaper (its verdict) shaded, every crossing
+    of the network's curve with an exact one."""
     x = np.asarray(sweep["values"], dtype=float)
     cheaper = _cheaper(sweep)  # (V,) beyond the band
     for name in ("exact", "fcl", "learned"):
         style, colour, label = STYLES[name]
-        outline = halo(1.5) if name == "learned" else []  # orange alone is too light on white
         y = np.asarray(sweep[f"{name}_us"], float)  # (V,)
-        ax.plot(x, y, style, color=colour, label=label, path_effects=outline, clip_on=False)  # edge markers whole
+        ax.plot(x, y, style, color=colour, label=label, clip_on=False, **MARKS[name])  # edge markers whole
     bounds = _halfway(x)  # (V+1,)
     for n, i in enumerate(np.flatnonzero(cheaper)):  # a band round each value the verdict calls "network cheaper"
         legend = f"network cheaper by > {CLOSE:.0%}" if n == 0 else None
@@ -101,29 +109,57 @@ def _panel(ax, sweep: dict) -> None:
             span, 0, 1, transform=ax.get_xaxis_transform(), color=COLORS["learned"], alpha=0.2, lw=0, label=legend
         )
     unit = sweep["label"].split()[0]  # what the variable counts: "243 obstacles", not a bare "243"
-    for name, found in sweep["crossing"].items():
-        if found is not None:
-            ax.axvline(found["value"], ls=":", color=STYLES[name][1], label="the curves cross (dotted)")
-            right = np.log(found["value"] / x[0]) > np.log(x[-1] / x[0]) / 2  # then its words go to the left
-            ax.annotate(
-                f"{found['value']:,.3g} {unit}",
-                (found["value"], 0.97),
-                xycoords=("data", "axes fraction"),
-                xytext=(-3 if right else 3, 0),
-                ha="right" if right else "left",
-                va="top",
-                textcoords="offset points",
-                fontsize=8,
-                path_effects=halo(0.0, ("free",)),  # readable over a curve, which it does not hide
-            )
+    found = sorted((value, name) for name in ("exact", "fcl") for value in _crossings(sweep, name))
+    for k, (value, name) in enumerate(found):  # each one's words a line lower than the last's: never on each other
+        ax.axvline(value, ls=":", color=STYLES[name][1], label="the curves cross (dotted)")
+        right = np.log(value / x[0]) > np.log(x[-1] / x[0]) / 2  # then its words go to the left
+        ax.annotate(
+            f"{_number(value)} {unit}",
+            (value, 0.97 - 0.09 * k),
+            xycoords=("data", "axes fraction"),
+            xytext=(-3 if right else 3, 0),
+            ha="right" if right else "left",
+            va="top",
+            textcoords="offset points",
+            fontsize=8,
+            path_effects=halo(0.0, ("free",)),  # readable over a curve, which it does not hide
+        )
     ax.set_xscale("log")
     ax.set_yscale("log")
-    ax.set_xticks(x, _tick_labels(x))
-    ax.minorticks_off()
+    ax.set_xticks(x, [f"{v:,.0f}" for v in x])  # named once laid out, where they keep apart (_name_ticks)
+    ax.yaxis.set_minor_locator(NullLocator())
     _plain_log_ticks(ax)
     ax.set_xlabel(sweep["label"])
     ax.set_ylabel("µs per configuration")
-    ax.tick_params(labelsize=9)
+    ax.tick_params(labelsize=TICK_POINTS)
+
+
+TICK_POINTS = 9
+MARKS: dict[str, dict] = {  # where two curves meet, the network's triangle beneath, the exact circle inside it
+    "exact": dict(markersize=6, zorder=3),
+    "fcl": dict(markersize=7, zorder=2),
+    "learned": dict(markersize=10, zorder=2.5, path_effects=halo(1.5)),  # orange alone is too light on white
+}
+
+
+def _number(value: float) -> str:
+    """``value`` to three significant digits in plain numbers: 7.92, 243, 1,550 (never 1.55e+03)."""
+    rounded = float(f"{value:.3g}")
+    return f"{rounded:,.0f}" if rounded >= 100 else f"{rounded:g}"
+
+
+def _crossings(sweep: dict, name: str) -> list[float]:
+    """Every value where the network's curve crosses checker ``name``'s, interpolated log-log between the measured
+    values around each change of sign of ``log(exact / learned)`` (a curve may cross twice); none where ``name``
+    was not timed."""
+    if any(e is None for e in sweep[f"{name}_us"]):
+        return []
+    x = np.log(np.asarray(sweep["values"], float))  # (V,)
+    gap = np.log(np.asarray(sweep[f"{name}_us"], float) / np.asarray(sweep["learned_us"], float))  # (V,) > 0: cheaper
+    i = np.flatnonzero(gap[:-1] * gap[1:] < 0)  # the segments whose ends lie on either side
+    t = gap[i] / (gap[i] - gap[i + 1])  # where along each the gap is 0
+    met = x[1:-1][gap[1:-1] == 0]  # a measured value inside the sweep where the two costs are equal
+    return sorted(float(v) for v in np.exp(np.concatenate([x[i] + t * (x[i + 1] - x[i]), met])))
 
 
 def _plain_log_ticks(ax) -> None:
@@ -151,12 +187,12 @@ def _halfway(x: np.ndarray) -> np.ndarray:
     return np.concatenate([[x[0] ** 2 / middle[0]], middle, [x[-1] ** 2 / middle[-1]]])
 
 
-def _tick_labels(x: np.ndarray, panel_px: float = 200.0, char_px: float = 7.0) -> list[str]:
-    """The measured values ``x (n,)`` as tick labels on a log axis about ``panel_px`` wide, a label left out where it
-    would touch the one before it (9-pt digits about ``char_px`` wide); the last value is always named."""
+def _tick_labels(x: np.ndarray, px: np.ndarray, char_px: float) -> list[str]:
+    """The measured values ``x (n,)`` as tick labels at ``px (n,)`` pixels along the axis, a label left out where
+    less than one and a half digits' width (``char_px`` each) would part it from the one before it; the last value
+    is always named."""
     labels = [f"{v:,.0f}" for v in x]
-    px = np.log10(x / x.min()) * panel_px / max(np.log10(x.max() / x.min()), 1e-9)  # (n,) each tick's place
-    room = [char_px * len(label) / 2 + 2 for label in labels]  # (n,) half a label's width, and a gap
+    room = [char_px * (len(label) / 2 + 0.75) for label in labels]  # (n,) half a label's width, and half the gap
     shown = [0]
     for k in range(1, len(x)):
         if px[k] - px[shown[-1]] >= room[k] + room[shown[-1]]:
@@ -164,3 +200,14 @@ def _tick_labels(x: np.ndarray, panel_px: float = 200.0, char_px: float = 7.0) -
         elif k == len(x) - 1:  # the last value is named: the one before it gives way
             shown[-1] = k
     return [label if k in shown else "" for k, label in enumerate(labels)]
+
+
+def _name_ticks(ax, x: np.ndarray) -> None:
+    """Tick every measured value ``x (n,)`` of a laid-out panel, naming those whose labels keep apart as drawn (the
+    others get a short, unnamed tick)."""
+    px = ax.transData.transform(np.column_stack([x, np.ones_like(x)]))[:, 0]  # (n,) where each tick lies, pixels
+    char_px = TICK_POINTS * ax.figure.dpi / 72 * 0.64  # a digit's width at the tick labels' size
+    labels = _tick_labels(x, px, char_px)
+    ax.set_xticks(x[[bool(t) for t in labels]], [t for t in labels if t])  # the values named
+    ax.set_xticks(x[[not t for t in labels]], minor=True)  # the values measured but not named: short ticks
+    ax.xaxis.set_minor_formatter(NullFormatter())

@@ -18,6 +18,7 @@ from typing import Any
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Polygon, Rectangle
 
 from toolkit.geometry.robots import BoxRobot
@@ -167,9 +168,15 @@ def robot_figure(
     axes = fig.subplot_mosaic(mosaic, per_subplot_kw=in_3d)
     colors = link_colors(len(Q), valid)
     hatches = [HATCHES[k % len(HATCHES)] for k in range(len(Q))] if valid is None else [None] * len(Q)
+    named = labels is not None and valid is None and len(Q) > 1  # configurations a legend tells apart
+    ends = robot.link_boxes(Q)[0][:, -1]  # (k, D) the centre of each configuration's last link
     for view in views:
         ax = axes[view]
         draw_robot(ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin, hatches=hatches)
+        if named:  # thin links hide a hatch: each configuration's last link also carries a marker of its own
+            for k, (end, color) in enumerate(zip(ends, colors)):
+                where = end if view == "3d" else end[list(VIEWS[view])]
+                ax.plot(*([c] for c in where), **_end_mark(k, color))
         ax.set_title(f"{robot.name}: {view}", fontsize=10)
         ax.tick_params(labelsize=8)
         if view == "3d":
@@ -177,9 +184,12 @@ def robot_figure(
     if labels is None and valid is not None:
         labels = ["valid" if color == VALID_COLOR else "in collision" for color in colors]
     if labels is not None:
-        styles = {label: link_style(c, h) for label, c, h in zip(labels, colors, hatches)}
-        handles = [Patch(label=label, **style) for label, style in styles.items()]
-        fig.legend(handles=handles, loc="lower center", ncol=len(handles), fontsize=9, frameon=False)
+        styles = {label: (link_style(c, h), k) for k, (label, c, h) in enumerate(zip(labels, colors, hatches))}
+        handles: list[Any] = [
+            (Patch(**style), Line2D([], [], **_end_mark(k, style["facecolor"]))) if named else Patch(**style)
+            for style, k in styles.values()
+        ]
+        fig.legend(handles, list(styles), loc="lower center", ncol=len(handles), fontsize=9, frameon=False)
     fig.tight_layout(rect=(0, 0.08 if labels is not None else 0, 1, 1))
     text = f"The {robot.name} robot's link boxes at {len(Q)} configuration{'s' if len(Q) > 1 else ''}"
     seen = ["in 3D" if v == "3d" else f"in the {v} plane" for v in views]
@@ -189,8 +199,28 @@ def robot_figure(
         n_valid = int(np.sum(np.asarray(valid, dtype=bool)))
         text += f": {n_valid} valid, {len(Q) - n_valid} in collision (hatched)"
     elif labels is not None:
-        text += ": " + ", ".join(f"{label} ({_hatch_name(h)})" for label, h in zip(labels, hatches))
+        ends_said = [f", its last link marked {END_MARKERS[k % len(END_MARKERS)][1]}" for k in range(len(Q))]
+        marked = ends_said if named else [""] * len(Q)
+        text += ": " + ", ".join(f"{label} ({_hatch_name(h)}{m})" for label, h, m in zip(labels, hatches, marked))
     return describe(fig, text + ".", [_configurations_part(robot, Q, labels)])
+
+
+END_MARKERS = (("o", "with a circle"), ("s", "with a square"), ("^", "with a triangle"), ("D", "with a diamond"))
+"""The marker on each named configuration's last link, in turn, and its name in the figure's description."""
+
+
+def _end_mark(k: int, color: str) -> dict:
+    """The marker of the ``k``-th named configuration, in its colour with a black edge (``plot``'s options)."""
+    return dict(
+        marker=END_MARKERS[k % len(END_MARKERS)][0],
+        markersize=8,
+        color=color,
+        markeredgecolor=COLORS["ink"],
+        markeredgewidth=1.2,
+        linestyle="",
+        zorder=5,
+        clip_on=False,
+    )
 
 
 def _configurations_part(robot: BoxRobot, Q: np.ndarray, labels: Sequence[str] | None) -> Part:
