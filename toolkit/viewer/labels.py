@@ -9,8 +9,8 @@ option for any of these (``configure_theme`` can only hide the logo and the shar
 share button, which would publish the scene), so a small script names them from the page itself, as React
 builds it: each control takes the name of the label of its row (:data:`SCRIPT`). Its style also outlines a focused
 input as viser outlines a focused button (2 px; viser shows an input's focus only by its 1 px border's colour),
-darkens the sliders' min/max labels and a notice's text (viser's grey is 3.3:1 on white) to 6.4:1 and the inputs'
-borders (1.5:1) to 3.3:1 (WCAG 1.4.3, 1.4.11).
+darkens the sliders' min/max labels and a notice's text (viser's grey is 3.3:1 on white) to 6.4:1, and the inputs'
+borders (1.5:1) and the sliders' unfilled tracks (2.1:1) to 3.3:1 (WCAG 1.4.3, 1.4.11).
 
 - :func:`label_controls` adds the script to a saved scene's page (snapshots and animations in notebook 05), and
   hides the notices there (a static page has nothing to notify); the scene's own text alternative is the
@@ -60,10 +60,13 @@ HIDDEN = ".mantine-Notifications-root, .mantine-Notification-root"  # notices ov
 DIMMED = COLORS["panel_text"]  # viser's dimmed label text (3.3:1 on white) made darker
 
 BORDER = COLORS["input_border"]  # an input's border, darker than viser's
+TRACK = COLORS["slider_track"]  # a slider's unfilled track, darker than viser's
 
 SCRIPT = """<style>:root { --mantine-color-dimmed: %(dimmed)s !important; }
 .mantine-Slider-markLabel, .mantine-Notification-description { color: %(dimmed)s !important; }
 .mantine-Input-input:not(:focus) { border-color: %(border)s !important; }
+.mantine-Slider-root { --slider-track-bg: %(track)s !important; }
+.mantine-Slider-track::before { background-color: %(track)s !important; }
 input:focus-visible { outline: 2px solid var(--mantine-primary-color-filled) !important; outline-offset: 1px; }</style>
 <script>
 (() => {
@@ -115,7 +118,13 @@ input:focus-visible { outline: 2px solid var(--mantine-primary-color-filled) !im
 def script(names: dict[str, str] = NAMES) -> str:
     """The style and script that name the controls: each by its row's label, else by ``names`` (a CSS selector
     to a name), the logo by :data:`LOGO_ALT`."""
-    return SCRIPT % {"dimmed": DIMMED, "border": BORDER, "names": json.dumps(names), "logo": json.dumps(LOGO_ALT)}
+    return SCRIPT % {
+        "dimmed": DIMMED,
+        "border": BORDER,
+        "track": TRACK,
+        "names": json.dumps(names),
+        "logo": json.dumps(LOGO_ALT),
+    }
 
 
 def _before_body_end(document: str, addition: str) -> str:
