@@ -85,7 +85,7 @@ def test_scene_holds_the_workspace_and_the_robot(make_panel, name):
 
 @pytest.mark.parametrize("name", ["2ds", "3dc7"])
 def test_every_block_is_outlined_by_edges_that_stand_out(make_viewer, name):
-    """WCAG 1.4.11: a block's faces are 1.2:1 on the viewer's white (a see-through 3DC block fainter still), so each
+    """WCAG 1.4.11: a block's faces are 1.3:1 on the viewer's white (a see-through 3DC block fainter still), so each
     block's 12 edges outline it, in a colour at 3:1 or more on the white and on any block face (opaque or see-through
     over the white, lit or in shade); they hide and show with the obstacles."""
     from toolkit.plots.palette import contrast

@@ -255,7 +255,7 @@ def move_boxes(handle: viser.SceneNodeHandle, boxes: Boxes, colors) -> None:
 def draw_workspace(scene: viser.SceneApi, workspace: Workspace) -> dict[str, viser.SceneNodeHandle]:
     """Obstacles (one batched node of ``K`` boxes), their edges, the region's outline and a floor grid, by layer name.
 
-    A block's faces alone hardly stand out: the obstacle's yellow is 1.2:1 on the white and a see-through 3DC
+    A block's faces alone hardly stand out: the obstacle's yellow is 1.3:1 on the white and a see-through 3DC
     block fainter still (WCAG 1.4.11 asks 3:1 of a shape's boundary). Its edges, :data:`OBSTACLE_EDGE` lines
     :data:`OBSTACLE_EDGE_PX` pixels wide, outline it (a node of their own: as the blocks' child, viser would draw
     them see-through like the blocks).
