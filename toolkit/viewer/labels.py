@@ -13,8 +13,8 @@ a button Enter and Space toggle, saying whether it is open (``aria-expanded``); 
 reader's tree (they draw what their control's name says), but the connection's, which :data:`ICONS` names. Its
 style also outlines a focused input (and a folder's title) as viser outlines a focused button (2 px; viser shows an
 input's focus only by its 1 px border's colour), darkens the sliders' min/max labels and a notice's text (viser's
-grey is 3.3:1 on white) to 6.4:1, and the inputs' borders (1.5:1) and the sliders' unfilled tracks (2.1:1) to 3.3:1
-(WCAG 1.4.3, 1.4.11).
+grey is 3.3:1 on white) to 6.4:1, and the inputs' and unticked checkboxes' borders (1.5:1) and the sliders' unfilled
+tracks (2.1:1) to 3.3:1 (WCAG 1.4.3, 1.4.11).
 
 - :func:`label_controls` adds the script to a saved scene's page (snapshots and animations in notebook 05), and
   hides the notices there (a static page has nothing to notify); the scene's own text alternative is the
@@ -72,7 +72,7 @@ TRACK = COLORS["slider_track"]  # a slider's unfilled track, darker than viser's
 
 SCRIPT = """<style>:root { --mantine-color-dimmed: %(dimmed)s !important; }
 .mantine-Slider-markLabel, .mantine-Notification-description { color: %(dimmed)s !important; }
-.mantine-Input-input:not(:focus) { border-color: %(border)s !important; }
+.mantine-Input-input:not(:focus), .mantine-Checkbox-input:not(:checked) { border-color: %(border)s !important; }
 .mantine-Slider-root { --slider-track-bg: %(track)s !important; }
 .mantine-Slider-track::before { background-color: %(track)s !important; }
 input:focus-visible, [role=button][tabindex]:focus-visible {
