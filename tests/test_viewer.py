@@ -83,6 +83,41 @@ def test_scene_holds_the_workspace_and_the_robot(make_panel, name):
     assert "prediction" not in v.nodes and "disagreement" not in v.nodes  # no model loaded
 
 
+@pytest.mark.parametrize("name", ["2ds", "3dc7"])
+def test_every_block_is_outlined_by_edges_that_stand_out(make_viewer, name):
+    """WCAG 1.4.11: a block's faces are 1.3:1 on the viewer's white (a see-through 3DC block fainter still), so each
+    block's 12 edges outline it, in a colour at 3:1 or more on the white and on any block face (opaque or see-through
+    over the white, lit or in shade); they hide and show with the obstacles."""
+    from toolkit.plots.palette import contrast
+
+    v = make_viewer(name, seed=3)
+    blocks = v.workspace.boxes  # (K, 2, D)
+    lo = np.zeros((len(blocks), 3))  # the blocks' corners in 3D; 2D blocks stand on the floor, FLAT_HEIGHT high
+    hi = np.full((len(blocks), 3), draw.FLAT_HEIGHT)
+    lo[:, : v.workspace.dim], hi[:, : v.workspace.dim] = blocks[:, 0], blocks[:, 1]
+    edges = np.asarray(v.nodes["obstacle_edges"].points).reshape(len(blocks), 12, 2, 3)  # per block, in its order
+    at_corner = np.isclose(edges, lo[:, None, None]) | np.isclose(edges, hi[:, None, None])  # (K, 12, 2, 3)
+    assert at_corner.all()  # every end is one of its block's corners
+    moved = ~np.isclose(edges[:, :, 0], edges[:, :, 1])  # (K, 12, 3): the one axis an edge runs along
+    assert (moved.sum(axis=-1) == 1).all() and (moved.sum(axis=1) == 4).all()  # 4 edges along each axis
+    ends = np.sort(edges, axis=2).reshape(len(blocks), 12, 6)
+    assert all(len(np.unique(block, axis=0)) == 12 for block in ends)  # 12 different edges
+
+    def hex_of(rgb) -> str:
+        return "#" + "".join(f"{int(round(c)):02x}" for c in rgb)
+
+    face = np.array(draw.OBSTACLE, dtype=float)
+    opacity = draw.OBSTACLE_OPACITY.get(v.workspace.family, 1.0)
+    faces = [hex_of(shade * face * alpha + 255 * (1 - alpha)) for shade in (0.5, 1.0) for alpha in (opacity, 1.0)]
+    edge = hex_of(np.asarray(v.nodes["obstacle_edges"].colors).reshape(-1, 3)[0])
+    assert min(contrast(edge, background) for background in ["#ffffff", *faces]) >= 3.0
+    assert contrast(hex_of(face), "#ffffff") < 1.5  # the faces alone: why the edges are there
+    v.set_visible("obstacles", False)
+    assert not v.nodes["obstacle_edges"].visible and not v.nodes["obstacles"].visible
+    v.set_visible("obstacles", True)
+    assert v.nodes["obstacle_edges"].visible
+
+
 def test_the_viewer_takes_a_scenario_object_and_keeps_it(make_viewer):
     """Objects flow down: a scenario the caller holds (here an equal copy of 2DS) is shown as it is, not looked up
     again by name (``toolkit view --checkpoint`` passes the checkpoint's scenario)."""

@@ -101,6 +101,8 @@ MARKS = """() => {  // the computed colours of the panel's marks a reader must m
         "slider's min/max label": style(".mantine-Slider-markLabel")?.color,
         "slider's thumb": style(".mantine-Slider-thumb")?.borderColor,
         "slider's filled track": style(".mantine-Slider-bar")?.backgroundColor,
+        "slider's unfilled track": getComputedStyle(document.querySelector(".mantine-Slider-track"), "::before")
+            .backgroundColor,
         "focus ring": ring,
         "number input's border": style(".mantine-NumberInput-input")?.borderTopColor,
         "notice's label": style(".mantine-Notification-description")?.color,  // "Software WebGL rendering detected"
@@ -118,8 +120,8 @@ def hex_of(css: str) -> str:
 @needs_chromium
 def test_the_live_viewers_marks_and_small_text_stand_out_from_its_white(chromium):
     """WCAG 1.4.3 / 1.4.11 where axe only says "incomplete": the sliders' min/max labels at 4.5:1, the slider's
-    thumb and filled track, the focus ring and the number inputs' borders at 3:1 against the panel's white (viser
-    draws its primary colour a shade lighter than the brand colour it is given, and its borders in #ced4da)."""
+    thumb, filled and unfilled track, the focus ring and the number inputs' borders at 3:1 against the panel's white
+    (viser draws its primary colour a shade lighter than the brand colour it is given, its borders in #ced4da)."""
     from toolkit.plots.palette import contrast
 
     viewer = app.launch("3do", port=0, quiet=True)
@@ -134,4 +136,70 @@ def test_the_live_viewers_marks_and_small_text_stand_out_from_its_white(chromium
     needs = {name: 4.5 if "label" in name else 3.0 for name in marks}
     ratios = {name: round(contrast(color, "#ffffff"), 2) for name, color in marks.items()}
     assert {name: ratio for name, ratio in ratios.items() if ratio < needs[name]} == {}, marks
-    assert len(marks) >= 5, marks  # headless Chromium renders WebGL in software: the notice shows there
+    assert len(marks) >= 6, marks  # headless Chromium renders WebGL in software: the notice shows there
+
+
+FOCUSED = """() => {  // the focused element's name: its aria-label, its <label>'s text or its own
+    const e = document.activeElement;
+    return e.getAttribute("aria-label") || [...(e.labels || [])].map(l => l.textContent).join(" ").trim()
+        || e.textContent.trim();
+}"""
+
+
+def unnamed_images(page) -> list[str]:
+    """The images of ``page``'s accessibility tree (Chromium's, through CDP) that have no name."""
+    session = page.context.new_cdp_session(page)
+    try:
+        nodes = session.send("Accessibility.getFullAXTree")["nodes"]
+    finally:
+        session.detach()
+    return [
+        str(n.get("role", {}).get("value"))
+        for n in nodes
+        if not n.get("ignored")
+        and n.get("role", {}).get("value") in ("image", "img")
+        and not str(n.get("name", {}).get("value", "")).strip()
+    ]
+
+
+@pytest.mark.browser
+@needs_chromium
+def test_the_keyboard_opens_the_layers_folder_and_toggles_a_layer(chromium):
+    """WCAG 2.1.1 and 4.1.2: viser opens and closes a folder by a click on its title only, so the Layers folder
+    (closed at start) and its checkboxes were out of the keyboard's reach. Each folder's title is now a button,
+    named by its text and saying whether it is open, that Enter toggles; Space then ticks a layer off, and the
+    unticked box's border stands out from the white at 3:1 (viser's is 1.5:1, WCAG 1.4.11). The panel's icons are
+    hidden from the screen reader's tree, but the connection's, which is named (WCAG 1.1.1)."""
+    from toolkit.plots.palette import contrast
+
+    viewer = app.launch("3do", port=0, quiet=True)
+    try:
+        _, page = audit(chromium, viewer)
+        try:
+            assert unnamed_images(page) == []
+            assert page.get_by_role("img", name="connected to the viewer's server").count() == 1
+            for _ in range(60):
+                page.keyboard.press("Tab")
+                if page.evaluate(FOCUSED) == "Layers":
+                    break
+            folder = page.get_by_role("button", name="Layers")
+            assert folder.get_attribute("aria-expanded") == "false" and page.evaluate(FOCUSED) == "Layers"
+            page.keyboard.press("Enter")
+            page.wait_for_function("() => document.activeElement.getAttribute('aria-expanded') === 'true'")
+            page.keyboard.press("Tab")
+            assert page.evaluate(FOCUSED) == "obstacles", page.evaluate("document.activeElement.outerHTML")
+            page.keyboard.press("Space")
+            deadline = time.monotonic() + 10
+            while viewer.visible["obstacles"] and time.monotonic() < deadline:
+                time.sleep(0.1)
+            assert not viewer.visible["obstacles"]
+            box = page.evaluate_handle("document.activeElement")
+            assert not box.evaluate("box => box.checked")
+            box.evaluate("box => box.blur()")  # focused, its border is the focus colour
+            page.wait_for_timeout(500)  # Mantine's border transition (0.1 s) over
+            unticked = box.evaluate("box => getComputedStyle(box).borderTopColor")
+            assert contrast(hex_of(unticked), "#ffffff") >= 3, unticked  # WCAG 1.4.11
+        finally:
+            page.close()
+    finally:
+        viewer.stop()

@@ -84,6 +84,7 @@ COLORS: dict[str, str] = {
     "c_obstacle": "#e0e0e0",  # the C-obstacles behind a roadmap
     "panel_text": "#5c5f66",  # the viewer panel's label text (viser's is 3.3:1 on white; this, 6.3:1)
     "input_border": "#868e96",  # the viewer's input borders (viser's #ced4da is 1.5:1 on white; this, 3.3:1)
+    "slider_track": "#868e96",  # the viewer's sliders' unfilled track (viser's #adb5bd is 2.1:1 on white; this, 3.3:1)
 }
 
 CATEGORICAL = (OKABE_ITO["blue"], OKABE_ITO["orange"], OKABE_ITO["sky blue"], OKABE_ITO["black"], "#888888", "#ffffff")

@@ -7,10 +7,14 @@ input), icon buttons (settings, a notice's close button, a recording's play / pa
 has no ``alt``; it may show a notice (e.g. that the browser renders WebGL in software) over the scene. viser has no
 option for any of these (``configure_theme`` can only hide the logo and the share button: the panel hides the
 share button, which would publish the scene), so a small script names them from the page itself, as React
-builds it: each control takes the name of the label of its row (:data:`SCRIPT`). Its style also outlines a focused
-input as viser outlines a focused button (2 px; viser shows an input's focus only by its 1 px border's colour),
-darkens the sliders' min/max labels and a notice's text (viser's grey is 3.3:1 on white) to 6.4:1 and the inputs'
-borders (1.5:1) to 3.3:1 (WCAG 1.4.3, 1.4.11).
+builds it: each control takes the name of the label of its row (:data:`SCRIPT`). A folder's title, which viser opens
+and closes on a click only (the Layers folder starts closed: its checkboxes were out of the keyboard's reach), becomes
+a button Enter and Space toggle, saying whether it is open (``aria-expanded``); icons are hidden from the screen
+reader's tree (they draw what their control's name says), but the connection's, which :data:`ICONS` names. Its
+style also outlines a focused input (and a folder's title) as viser outlines a focused button (2 px; viser shows an
+input's focus only by its 1 px border's colour), darkens the sliders' min/max labels and a notice's text (viser's
+grey is 3.3:1 on white) to 6.4:1, and the inputs' and unticked checkboxes' borders (1.5:1) and the sliders' unfilled
+tracks (2.1:1) to 3.3:1 (WCAG 1.4.3, 1.4.11).
 
 - :func:`label_controls` adds the script to a saved scene's page (snapshots and animations in notebook 05), and
   hides the notices there (a static page has nothing to notify); the scene's own text alternative is the
@@ -56,18 +60,27 @@ RECORDING_NAMES = {  # and on a saved scene's player, after those
     "button:not([aria-label]):not([title])": "viewer control",
 }
 LOGO_ALT = "viser"  # the logo in the panel's corner
+ICONS = {  # an icon's class -> its name, for the icons that tell something; every other icon is hidden from the tree
+    "tabler-icon-cloud-check": "connected to the viewer's server",
+    "tabler-icon-cloud-off": "not connected to the viewer's server",
+}
 HIDDEN = ".mantine-Notifications-root, .mantine-Notification-root"  # notices over a saved scene
 DIMMED = COLORS["panel_text"]  # viser's dimmed label text (3.3:1 on white) made darker
 
 BORDER = COLORS["input_border"]  # an input's border, darker than viser's
+TRACK = COLORS["slider_track"]  # a slider's unfilled track, darker than viser's
 
 SCRIPT = """<style>:root { --mantine-color-dimmed: %(dimmed)s !important; }
 .mantine-Slider-markLabel, .mantine-Notification-description { color: %(dimmed)s !important; }
-.mantine-Input-input:not(:focus) { border-color: %(border)s !important; }
-input:focus-visible { outline: 2px solid var(--mantine-primary-color-filled) !important; outline-offset: 1px; }</style>
+.mantine-Input-input:not(:focus), .mantine-Checkbox-input:not(:checked) { border-color: %(border)s !important; }
+.mantine-Slider-root { --slider-track-bg: %(track)s !important; }
+.mantine-Slider-track::before { background-color: %(track)s !important; }
+input:focus-visible, [role=button][tabindex]:focus-visible {
+  outline: 2px solid var(--mantine-primary-color-filled) !important; outline-offset: 1px; }</style>
 <script>
 (() => {
   const names = %(names)s;
+  const icons = %(icons)s;
   const rowLabel = (control) => {  // the text of the one <label> of the nearest row around the control
     for (let node = control.parentElement, depth = 0; node && depth < 8; node = node.parentElement, depth++) {
       const labels = node.querySelectorAll("label");
@@ -97,6 +110,29 @@ input:focus-visible { outline: 2px solid var(--mantine-primary-color-filled) !im
       }
     }
     for (const image of document.querySelectorAll("img:not([alt])")) image.setAttribute("alt", %(logo)s);
+    for (const icon of document.querySelectorAll("svg:not([aria-hidden]):not([aria-label])")) {
+      const status = Object.entries(icons).find(([kind]) => icon.classList.contains(kind));
+      if (status) {  // an icon that tells something: an image with a name
+        icon.setAttribute("role", "img");
+        icon.setAttribute("aria-label", status[1]);
+      } else icon.setAttribute("aria-hidden", "true");  // the rest draw what their control's name says
+    }
+    for (const chevron of document.querySelectorAll("svg.tabler-icon-chevron-up, svg.tabler-icon-chevron-down")) {
+      const header = chevron.parentElement;  // a folder's title: it opens and closes the folder, on a click only
+      if (!header || header.style.cursor !== "pointer") continue;
+      header.setAttribute("role", "button");
+      header.setAttribute("tabindex", "0");
+      header.setAttribute("aria-expanded", String(chevron.classList.contains("tabler-icon-chevron-up")));
+      if (!header.dataset.keys) {
+        header.dataset.keys = "1";
+        header.addEventListener("keydown", (event) => {
+          if (event.key === "Enter" || event.key === " ") {
+            event.preventDefault();
+            header.click();
+          }
+        });
+      }
+    }
     for (const mark of document.querySelectorAll("[data-live-status]")) {  // a status line: announce its changes
       const line = mark.closest("div");
       if (line && !line.getAttribute("role")) {
@@ -115,7 +151,14 @@ input:focus-visible { outline: 2px solid var(--mantine-primary-color-filled) !im
 def script(names: dict[str, str] = NAMES) -> str:
     """The style and script that name the controls: each by its row's label, else by ``names`` (a CSS selector
     to a name), the logo by :data:`LOGO_ALT`."""
-    return SCRIPT % {"dimmed": DIMMED, "border": BORDER, "names": json.dumps(names), "logo": json.dumps(LOGO_ALT)}
+    return SCRIPT % {
+        "dimmed": DIMMED,
+        "border": BORDER,
+        "track": TRACK,
+        "names": json.dumps(names),
+        "icons": json.dumps(ICONS),
+        "logo": json.dumps(LOGO_ALT),
+    }
 
 
 def _before_body_end(document: str, addition: str) -> str:

@@ -35,6 +35,7 @@ from toolkit.viewer.server import camera_at, page_path, start_server, stop_serve
 
 Predictor = Callable[[Workspace], CollisionChecker]  # workspace -> checker with are_valid(Q), probability(Q)
 LAYERS = ("obstacles", "robot", "prediction", "samples", "roadmap", "path")
+ALONG = {"obstacle_edges": "obstacles"}  # a node shown and hidden with a layer (viser would draw a child see-through)
 HALO = 1.15  # the prediction wireframe is this much larger than the links
 SLIDING = ("/workspace", "/robot", "/plan")  # scene frames an animation slides so that the camera follows the robot
 RAW = "raw"  # the "sampler" of uniform configurations, unfiltered: what a model is asked about
@@ -295,8 +296,9 @@ class Viewer:
             raise ValueError(f"unknown layer {layer!r}; choose one of {LAYERS}")
         with self.lock:
             self.visible[layer] = bool(visible)
-            if layer in self.nodes:
-                self.nodes[layer].visible = bool(visible)
+            for name in (layer, *(node for node, along in ALONG.items() if along == layer)):
+                if name in self.nodes:
+                    self.nodes[name].visible = bool(visible)
             if layer == "prediction" and self.model is not None:
                 self._show_disagreement()
 
@@ -391,7 +393,7 @@ class Viewer:
             client.camera.look_at, client.camera.position = look_at, position
 
     def _add(self, layer: str, handle: viser.SceneNodeHandle) -> None:
-        handle.visible = self.visible.get(layer, True)
+        handle.visible = self.visible.get(ALONG.get(layer, layer), True)
         self.nodes[layer] = handle
 
     def _remove(self, name: str) -> None:
