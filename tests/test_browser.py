@@ -28,6 +28,7 @@ def share(png, rgb) -> float:
 
 
 SIZE = (1100, 700)  # window (width, height): smaller renders faster in software WebGL
+FOCUS_OUTLINE = "parseFloat(getComputedStyle(document.activeElement).outlineWidth)"  # px, of the focused element
 
 
 def test_the_office_renders_with_its_samples(make_viewer, tmp_path):
@@ -102,9 +103,12 @@ def test_an_animation_opens_on_its_still_and_plays_at_a_press_without_webgl_only
             page.goto(page_file.as_uri(), timeout=120_000)
             still, play = page.locator("#toolkit-still"), page.get_by_role("button", name="play in 3D")
             assert still.locator("img").is_visible(), webgl
+            assert page.evaluate("document.getElementById('root').inert")  # no focus under the still
             if webgl:
-                play.click()
-                assert still.is_hidden()
+                play.focus()
+                assert page.evaluate(FOCUS_OUTLINE) >= 2
+                play.press("Enter")
+                assert still.is_hidden() and not page.evaluate("document.getElementById('root').inert")
             else:
                 assert play.count() == 0 and page.locator("#toolkit-still-note").inner_text() == NO_WEBGL
             browser.close()

@@ -131,27 +131,28 @@ def label_controls(document: str) -> str:
     return _before_body_end(document, hidden + script(NAMES | RECORDING_NAMES))
 
 
-STILL = """<div id="toolkit-still"%(hidden)s
+STILL = """<style>#toolkit-play:focus-visible { outline: 2px solid %(ink)s; outline-offset: 2px; }</style>
+<div id="toolkit-still"%(hidden)s
  style="position:fixed;inset:0;overflow:auto;background:#fff;z-index:2147483647">
 <p style="position:sticky;top:0;margin:0;padding:4px 8px;background:#fff;font:14px sans-serif">
 <span id="toolkit-still-note">%(note)s</span>%(play)s</p>
 <img src="data:image/png;base64,%(png)s" alt="%(alt)s" style="width:100%%;height:auto"></div>
 <script>(function () {
   var canvas = document.createElement("canvas"), still = document.getElementById("toolkit-still");
-  var play = document.getElementById("toolkit-play");
+  var play = document.getElementById("toolkit-play"), view = document.getElementById("root") || {};
   if (!(canvas.getContext("webgl2") || canvas.getContext("webgl"))) {
     document.getElementById("toolkit-still-note").textContent = %(no_webgl)s;
     if (play) play.remove();
     still.hidden = false;
-  } else if (play) {
-    play.addEventListener("click", function () { still.hidden = true; });
   }
+  view.inert = !still.hidden;  // no focus on controls the still covers
+  if (play) play.addEventListener("click", function () { still.hidden = true; view.inert = false; });
 })();</script>
 """
 NO_WEBGL = "This browser draws no 3D (no WebGL): the scene as a still picture."
 PLAY = (
     ' <button id="toolkit-play" type="button" style="font:inherit;font-weight:bold;margin-left:8px;padding:2px 10px;'
-    'border:2px solid %s;border-radius:4px;background:#fff;color:%s;cursor:pointer">%s</button>'
+    'border:2px solid %(ink)s;border-radius:4px;background:#fff;color:%(ink)s;cursor:pointer">%(play)s</button>'
 )
 
 
@@ -159,8 +160,8 @@ def with_still(document: str, fig: Figure | None, *, first: str | None = None, p
     """``document`` (a saved scene's HTML) with ``fig``, a still picture of its scene, over the view (the picture's
     alt text from the figure): where the browser has no WebGL (the view would stay blank there) and, given
     ``first`` (what the still shows, in words), in every browser until the reader presses ``play``: a screenshot
-    or a printed page then shows the still, not a view that has not drawn yet. ``document`` as it is without a
-    figure."""
+    or a printed page then shows the still, not a view that has not drawn yet. The view's controls take no focus
+    while the still covers them. ``document`` as it is without a figure."""
     if fig is None:
         return document
     from toolkit.plots.alt import alt_text
@@ -172,8 +173,9 @@ def with_still(document: str, fig: Figure | None, *, first: str | None = None, p
         "alt": html.escape(alt_text(fig), quote=True),
         "hidden": " hidden" if first is None else "",
         "note": html.escape(NO_WEBGL if first is None else first),
-        "play": "" if first is None else PLAY % (COLORS["ink"], COLORS["ink"], html.escape(play)),
+        "play": "" if first is None else PLAY % {"ink": COLORS["ink"], "play": html.escape(play)},
         "no_webgl": json.dumps(NO_WEBGL),
+        "ink": COLORS["ink"],
     }
     return _before_body_end(document, STILL % filled)
 
