@@ -28,6 +28,7 @@ def share(png, rgb) -> float:
 
 
 SIZE = (1100, 700)  # window (width, height): smaller renders faster in software WebGL
+FOCUS_OUTLINE = "parseFloat(getComputedStyle(document.activeElement).outlineWidth)"  # px, of the focused element
 
 
 def test_the_office_renders_with_its_samples(make_viewer, tmp_path):
@@ -77,3 +78,37 @@ def test_a_page_that_never_shows_the_scene_times_out(tmp_path):
     page.write_text("<html><body>connecting...</body></html>")
     with pytest.raises(TimeoutError, match="did not show what was expected within 15 s"):
         viewer_browser.screenshot(page.as_uri(), tmp_path / "blank.png", size=SIZE, budget_s=15)
+
+
+def test_an_animation_opens_on_its_still_and_plays_at_a_press_without_webgl_only_the_still(tmp_path):
+    """Reader r11b: screenshots caught the animation blank. Its page shows the still first, over the view, in a
+    browser that draws 3D; the button hides it. Without WebGL the still stays, with no button and a note why."""
+    import html
+    import re
+
+    from playwright.sync_api import sync_playwright
+
+    from toolkit.viewer.labels import NO_WEBGL
+
+    page_file = tmp_path / "animation.html"
+    with viewer.Viewer("3dc7", seed=1, port=0) as v:
+        v.plan("BS", seed=0)
+        snippet = v.animation_iframe(300, frames=3, seconds=1.0)
+    page_file.write_text(html.unescape(re.search(r'srcdoc="([^"]*)"', snippet).group(1)))
+    with sync_playwright() as playwright:
+        for webgl in (True, False):
+            args = viewer_browser.CHROMIUM_ARGS + ([] if webgl else ["--disable-webgl", "--disable-3d-apis"])
+            browser = playwright.chromium.launch(executable_path=viewer_browser.find_chromium(), args=args)
+            page = browser.new_page(viewport={"width": 640, "height": 440})
+            page.goto(page_file.as_uri(), timeout=120_000)
+            still, play = page.locator("#toolkit-still"), page.get_by_role("button", name="play in 3D")
+            assert still.locator("img").is_visible(), webgl
+            assert page.evaluate("document.getElementById('root').inert")  # no focus under the still
+            if webgl:
+                play.focus()
+                assert page.evaluate(FOCUS_OUTLINE) >= 2
+                play.press("Enter")
+                assert still.is_hidden() and not page.evaluate("document.getElementById('root').inert")
+            else:
+                assert play.count() == 0 and page.locator("#toolkit-still-note").inner_text() == NO_WEBGL
+            browser.close()

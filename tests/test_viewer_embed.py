@@ -6,6 +6,7 @@ messages with binary arrays appended), so the tests see the frames a student see
 
 import base64
 import html
+import json
 import re
 
 import msgspec
@@ -17,6 +18,7 @@ from IPython.display import HTML
 from toolkit import scenarios, viewer
 from toolkit.geometry.collision import exact_checker
 from toolkit.viewer import drawing as draw
+from toolkit.viewer.labels import NO_WEBGL
 
 
 def found(pattern: str, text: str) -> str:
@@ -135,13 +137,75 @@ def test_a_snapshot_starts_framing_the_robot_and_leaves_the_live_camera_alone(pl
     v.set_configuration(v.path[len(v.path) // 2])
     live = v.server.initial_camera.look_at.copy(), v.server.initial_camera.position.copy()
     camera = cameras(v.html())
-    look_at, position = draw.robot_camera(v.robot, v.q)
+    look_at, position = draw.robot_camera(v.robot, v.q, workspace=v.workspace)  # no samples shown
     np.testing.assert_allclose(camera["look_at"], look_at)
     np.testing.assert_allclose(camera["position"], position)
     np.testing.assert_allclose(look_at, v.robot.link_boxes(v.q[None])[0][0].mean(axis=0))  # the middle of the robot
     assert np.linalg.norm(position - look_at) < 4  # close: the 0.5-long chain, not the 11-unit cube
     np.testing.assert_allclose(v.server.initial_camera.look_at, live[0])
     np.testing.assert_allclose(v.server.initial_camera.position, live[1])
+
+
+def marks_hiding_the_robot(camera: dict, radius: float, points: np.ndarray, sizes: np.ndarray) -> np.ndarray:
+    """``(N,)`` bool: the marks in front of the robot (a ball of ``radius`` where the camera looks) that overlap it
+    on the picture, by angles: a point at angle ``a`` off the line of sight lands ``tan(a)`` focal lengths from the
+    picture's middle, and viser draws a mark of width ``s`` at depth ``z`` ``s / z`` focal lengths either side of it
+    (``s H / (z tan(fov / 2))`` pixels wide), the robot ``radius / distance`` of them."""
+    sight = camera["look_at"] - camera["position"]
+    distance = np.linalg.norm(sight)
+    rays = points - camera["position"]  # (N, 3)
+    depth = rays @ sight / distance
+    angle = np.arccos(np.clip(depth / np.linalg.norm(rays, axis=1), -1.0, 1.0))  # off the line of sight
+    return (depth > 0) & (depth < distance) & (np.tan(angle) < sizes / depth + radius / distance)
+
+
+def test_a_snapshot_looks_at_the_robot_from_where_no_sample_mark_or_block_hides_it(make_viewer):
+    """Reader r11b: a mark a few tenths of a unit before the camera covered half the view and hid the chain. Here
+    the 3DC-7 scene of chapter 05 with its 2000 uniform samples and, besides, three marks on the default camera's
+    line of sight: the snapshot's camera stands where none of them overlaps the robot and no block is in between."""
+    v = make_viewer("3dc7", seed=0)
+    rest_look, rest_camera = draw.robot_camera(v.robot, v.q)  # where the camera stood before
+    in_the_way = rest_look + np.linspace(0.2, 0.8, 3)[:, None] * (rest_camera - rest_look)  # (3, 3) points
+    extra = v.robot.sample(np.random.default_rng(1), 3)  # (3, 7): moved so that their marks sit on those points
+    extra[:, :3] += in_the_way - draw.config_points(v.robot, extra)
+    v.show_samples(np.concatenate([v.robot.sample(np.random.default_rng(0), 2000), extra]))
+    points, kinds = v.sample_points
+    np.testing.assert_allclose(points[-3:], in_the_way, atol=1e-9)
+    sizes = draw.mark_sizes(kinds, draw.POINT_SIZE["3dc"])
+    radius = np.max(np.ptp(v.robot.link_aabbs(v.q[None])[0].reshape(-1, 3), axis=0)) / 2  # the chain's half size
+    default = {"look_at": rest_look, "position": rest_camera}
+    assert marks_hiding_the_robot(default, radius, points, sizes)[-3:].all()  # they would hide it
+    camera = cameras(v.html())
+    np.testing.assert_allclose(camera["look_at"], rest_look)  # still the robot's middle
+    assert not marks_hiding_the_robot(camera, radius, points, sizes).any()
+    sight = camera["position"] + np.linspace(0, 1, 50)[:, None] * (camera["look_at"] - camera["position"])
+    lo, hi = v.workspace.boxes[:, 0], v.workspace.boxes[:, 1]  # (K, 3) each
+    near_side = np.linalg.norm(sight - camera["look_at"], axis=1) > radius
+    assert not np.any(np.all((sight[near_side, None] > lo) & (sight[near_side, None] < hi), axis=-1))
+    assert np.linalg.norm(camera["position"] - camera["look_at"]) < 4 * draw.robot_size(v.robot)  # still close
+
+
+def test_a_sparkle_is_drawn_before_the_mark_it_rings_so_that_the_marks_shape_shows(make_viewer, rng):
+    """At one depth the point cloud drawn later covers the earlier one (three.js draws opaque clouds in the order
+    their materials were made): the sparkles first, so a circle or a diamond shows inside its sparkle's points."""
+
+    def contrary(workspace):  # a model wrong about every sample
+        exact = exact_checker(workspace, scenarios.get("3dc7").robot)
+        return type(
+            "Contrary",
+            (),
+            {
+                "robot": exact.robot,
+                "are_valid": staticmethod(lambda Q: ~exact.are_valid(Q)),
+                "probability": staticmethod(lambda Q: 1.0 - exact.are_valid(Q)),
+            },
+        )()
+
+    v = make_viewer("3dc7", seed=2, predictor=contrary)
+    v.sample("raw", 60, seed=0)
+    made = [m["name"] for _, m in recording(v.html())[0]["messages"] if m.get("name", "").startswith("/samples/")]
+    first = {name: made.index(name) for name in dict.fromkeys(made)}
+    assert first["/samples/model_wrong"] < min(first["/samples/valid"], first["/samples/in_collision"])
 
 
 def test_the_animation_leaves_the_robot_and_the_camera_where_they_were(planned):
@@ -237,7 +301,7 @@ def test_a_saved_scene_carries_a_still_of_itself_shown_only_without_webgl(rng):
     robot = scenarios.get("3dc7").robot
     samples = robot.sample(rng, 40)
     document = page_of(viewer.embed("3dc7", seed=2, samples=samples, height=320))
-    still = found(r'(<div id="toolkit-no-webgl" hidden[\s\S]*?</div>)', document)
+    still = found(r'(<div id="toolkit-still" hidden[\s\S]*?</div>)', document)
     alt = html.unescape(found(r'alt="([^"]*)"', still))
     valid = int(
         exact_checker(scenarios.get("3dc7").make_workspace(np.random.default_rng(2)), robot).are_valid(samples).sum()
@@ -249,11 +313,20 @@ def test_a_saved_scene_carries_a_still_of_itself_shown_only_without_webgl(rng):
     assert 'getContext("webgl2") || canvas.getContext("webgl")' in script and ".hidden = false" in script
 
 
-def test_an_animations_still_shows_the_path_and_the_robot_at_its_start_middle_and_goal(planned):
+def test_an_animation_opens_on_its_still_of_the_path_and_the_robot_at_its_start_middle_and_goal(planned):
+    """Reader r11b: a screenshot caught the animation blank (software WebGL is slow to draw its first frame). Its
+    page opens on the still in every browser, over the view, and a button plays the 3D view; without WebGL the
+    button goes and the note says why there is only the still."""
     document = page_of(planned.animation_iframe(300, frames=3, seconds=1.0))
-    alt = html.unescape(found(r'id="toolkit-no-webgl"[\s\S]*?alt="([^"]*)"', document))
+    still = found(r'(<div id="toolkit-still"[\s\S]*?</div>)', document)
+    assert 'id="toolkit-still" hidden' not in still and 'id="toolkit-play" type="button"' in still
+    alt = html.unescape(found(r'alt="([^"]*)"', still))
     assert "the path of the robot's base" in alt
     assert re.search(r"close up among the blocks near it: start, valid; middle, valid; goal, valid\.$", alt)
+    script = document[document.index(still) + len(still) :]
+    assert 'play.addEventListener("click", function () { still.hidden = true; view.inert = false; });' in script
+    assert "view.inert = !still.hidden;" in script  # the covered view takes no focus
+    assert "play.remove();" in script and ".textContent = " + json.dumps(NO_WEBGL) in script
 
 
 def test_the_office_snapshot_shows_the_youbot_larger_than_its_sample_marks_and_near():
@@ -266,4 +339,4 @@ def test_the_office_snapshot_shows_the_youbot_larger_than_its_sample_marks_and_n
     for shape, scale in (draw.SAMPLE_SHAPES[kind] for kind in ("valid", "in collision")):
         assert draw.POINT_SIZE["3do"] * scale <= platform.min() / 5, shape
     looks, positions = draw.follow_camera(robot, np.clip(np.zeros(robot.dof), robot.lower, robot.upper)[None])
-    assert np.linalg.norm(positions - looks) <= 3.5 * draw._robot_size(robot)
+    assert np.linalg.norm(positions - looks) <= 3.5 * draw.robot_size(robot)

@@ -7,8 +7,8 @@ square to :data:`FLAT_ROBOT_HEIGHT`, so it pokes out of any block it collides wi
 
 Colors tell validity (§III), from :mod:`toolkit.plots.palette` (Okabe-Ito, apart for colour-blind eyes too):
 the valid colour (blue), the invalid one (vermillion) in collision. Samples carry a second cue, their
-shape (:data:`SAMPLE_SHAPES`): circles valid, diamonds in collision, and a larger sparkle where a learned
-model disagrees with the exact checker. A probability of validity is drawn on cividis (dark: 0, light: 1).
+shape (:data:`SAMPLE_SHAPES`): circles valid, diamonds in collision, and a larger sparkle behind the mark where a
+learned model disagrees with the exact checker. A probability of validity is drawn on cividis (dark: 0, light: 1).
 """
 
 from __future__ import annotations
@@ -37,11 +37,11 @@ OBSTACLE_EDGE_PX = 2.0  # their width on screen, in pixels, near or far
 VALID = rgb("valid")
 COLLIDING = rgb("invalid")
 MISTAKE = rgb("ink")  # a sample the learned model gets wrong (drawn over its validity colour)
-POINT_SIZE = {"2ds": 0.25, "3do": 0.12, "3dc": 0.12}  # sample markers, by workspace family
+POINT_SIZE = {"2ds": 0.25, "3do": 0.12, "3dc": 0.07}  # sample markers, by workspace family (3DC: dense, seen close)
 SAMPLE_SHAPES: dict[str, tuple[Literal["circle", "diamond", "sparkle"], float]] = {
     "valid": ("circle", 1.0),
     "in collision": ("diamond", 1.6),
-    "model wrong": ("sparkle", 2.4),
+    "model wrong": ("sparkle", 3.0),
 }
 # shape and size (times POINT_SIZE) of each kind of sample: a cue besides colour
 REGION = rgb("ink")
@@ -143,15 +143,22 @@ def sample_kinds(valid: np.ndarray, predicted: np.ndarray | None = None) -> dict
     return {"valid": valid, "in collision": ~valid, "model wrong": wrong}
 
 
+def mark_sizes(kinds: dict[str, np.ndarray], size: float) -> np.ndarray:
+    """``(N,)`` the width of the widest mark drawn at each sample (:func:`add_samples`), in workspace units."""
+    widths = [np.where(mask, size * SAMPLE_SHAPES[kind][1], 0.0) for kind, mask in kinds.items()]
+    return np.max(widths, axis=0)
+
+
 def add_samples(
     scene: viser.SceneApi, points: np.ndarray, kinds: dict[str, np.ndarray], size: float
 ) -> dict[str, viser.PointCloudHandle]:
     """One point cloud per kind of sample with any (:func:`sample_kinds`), under ``/samples``: ``points (N, 3)``
-    in their validity colour (a model's mistakes in :data:`MISTAKE`), shaped and sized by :data:`SAMPLE_SHAPES`."""
+    in their validity colour (a model's mistakes in :data:`MISTAKE`), shaped and sized by :data:`SAMPLE_SHAPES`;
+    a sparkle behind the mark it rings, whose shape still says valid or in collision."""
     colors = validity_colors(kinds["valid"])  # (N, 3)
     clouds = {}
-    for kind, mask in kinds.items():
-        if mask.any():
+    for kind, mask in sorted(kinds.items(), key=lambda item: -SAMPLE_SHAPES[item[0]][1]):  # the widest first:
+        if mask.any():  # at one depth the mark drawn later covers the earlier, so a sparkle rings the mark it is on
             shape, scale = SAMPLE_SHAPES[kind]
             shown = np.broadcast_to(MISTAKE, (int(mask.sum()), 3)) if kind == "model wrong" else colors[mask]
             name = f"/samples/{kind.replace(' ', '_')}"
@@ -307,11 +314,91 @@ ROBOT_VIEW = (-0.45, -1.0, 0.7)  # a robot camera's direction: from the front-le
 ROBOT_SPAN = 2.5  # a robot's camera frames this many robot sizes: the robot, large, and the blocks beside it
 
 
-def robot_camera(robot: BoxRobot, q) -> tuple[np.ndarray, np.ndarray]:
+def robot_camera(
+    robot: BoxRobot,
+    q,
+    *,
+    workspace: Workspace | None = None,
+    points: np.ndarray | None = None,
+    sizes: npt.ArrayLike = 0.0,
+) -> tuple[np.ndarray, np.ndarray]:
     """``(look_at, position)`` of a camera that frames the robot at ``q (dof,)`` (a snapshot's), as
-    :func:`follow_camera` does at each configuration of a motion."""
+    :func:`follow_camera` does at each configuration of a motion; given the scene's ``workspace`` and sample marks
+    (``points (N, 3)`` of ``sizes``, one or ``(N,)``, in workspace units), the clearest view of it
+    (:func:`clear_view`)."""
     looks, positions = follow_camera(robot, robot.check_configs(q)[:1])
-    return looks[0], positions[0]
+    if workspace is None and points is None:
+        return looks[0], positions[0]
+    lo, hi = _link_bounds(robot, robot.check_configs(q)[:1])  # (3,) each
+    return looks[0], clear_view(looks[0], positions[0], float(np.max(hi - lo)) / 2, workspace, points, sizes)
+
+
+VIEW_FOV = np.deg2rad(75.0)  # viser's vertical field of view (its default, and the snapshots')
+VIEW_ASPECT = 1.5  # a notebook's view, width / height (the course site's: about 640 x 440 px)
+LARGE_MARK = 0.12  # a mark in front of the robot wider than this share of the view's height crowds it
+VIEW_ELEVATIONS = np.deg2rad([15.0, 30.0, 45.0, 60.0])  # the directions clear_view tries, above the horizon
+VIEW_DISTANCES = (0.7, 0.85, 1.0)  # and its distances, times the default's
+
+
+def clear_view(
+    look_at: np.ndarray,
+    default: np.ndarray,
+    radius: float,
+    workspace: Workspace | None,
+    points: np.ndarray | None,
+    sizes: npt.ArrayLike = 0.0,
+) -> np.ndarray:
+    """The camera position ``(3,)`` looking at ``look_at`` (a subject of ``radius``) that no sample mark hides and
+    no block stands in front of, nearest the ``default`` position's view.
+
+    viser draws a mark of width ``s`` at depth ``z`` ``s / (z tan(fov / 2))`` view heights wide: a mark a few
+    tenths of a unit from the camera covers half the picture. Tried: :data:`VIEW_ELEVATIONS` x 24 headings x
+    :data:`VIEW_DISTANCES`. Each pays for the marks in front of the subject (:func:`_marks_in_the_way`), 10 times
+    the share of its line of sight inside blocks, and half its turn from the default (radians) and its change of
+    distance (a share); a camera inside a block or below the floor is never taken.
+    """
+    look_at, default = np.asarray(look_at, dtype=float), np.asarray(default, dtype=float)
+    d0 = float(np.linalg.norm(default - look_at))
+    heading = np.deg2rad(np.arange(0.0, 360.0, 15.0))
+    elevation, turn, scale = (a.ravel() for a in np.meshgrid(VIEW_ELEVATIONS, heading, VIEW_DISTANCES))
+    away = np.stack([np.cos(elevation) * np.cos(turn), np.cos(elevation) * np.sin(turn), np.sin(elevation)], -1)
+    cameras = look_at + (d0 * scale)[:, None] * away  # (C, 3)
+    cost = 0.5 * np.arccos(np.clip(away @ (default - look_at) / d0, -1.0, 1.0)) + 0.5 * np.abs(scale - 1.0)
+    if points is not None and len(points):
+        cost += _marks_in_the_way(cameras, look_at, radius, np.asarray(points, float), sizes)
+    if workspace is not None:
+        blocks = obstacle_boxes(workspace)
+        lo, hi = blocks.centers - blocks.sizes / 2, blocks.centers + blocks.sizes / 2  # (K, 3) each
+        t = np.linspace(0.0, 1.0, 17)[:, None, None] * (1.0 - radius / (d0 * scale))[None, :, None]  # (S, C, 1)
+        sight = cameras + t * (look_at - cameras)  # (S, C, 3): camera to the subject's near side
+        inside = np.all((sight[..., None, :] > lo) & (sight[..., None, :] < hi), axis=-1).any(axis=-1)  # (S, C)
+        cost += 10.0 * inside.mean(axis=0) + np.where(inside[0], np.inf, 0.0)
+        cost += np.where(cameras[:, 2] < _lift_points(workspace.lower, 0.0)[2], np.inf, 0.0)
+    return cameras[np.argmin(cost)]
+
+
+def _marks_in_the_way(
+    cameras: np.ndarray, look_at: np.ndarray, radius: float, points: np.ndarray, sizes: npt.ArrayLike
+) -> np.ndarray:
+    """What the marks ``points (N, 3)`` of ``sizes`` cost each camera ``(C, 3)`` looking at ``look_at``: 10 per mark
+    in front of the subject overlapping it on the picture, plus 3 times each such mark's width beyond :data:`LARGE_MARK`
+    (a share of it)."""
+    forward = look_at - cameras  # (C, 3)
+    distance = np.linalg.norm(forward, axis=1, keepdims=True)
+    forward /= distance
+    right = np.cross(forward, [0.0, 0.0, 1.0])
+    right /= np.linalg.norm(right, axis=1, keepdims=True)
+    up = np.cross(right, forward)
+    rel = points[None] - cameras[:, None]  # (C, N, 3)
+    z, x, y = (np.einsum("cnk,ck->cn", rel, axis) for axis in (forward, right, up))  # (C, N) each
+    tan = np.tan(VIEW_FOV / 2)
+    depth = np.maximum(z, 1e-6) * tan  # half the view's height at each mark's depth
+    width = np.broadcast_to(np.asarray(sizes, dtype=float), points.shape[:1]) / depth  # (C, N) in view heights
+    # on the picture, in half its height: a mark's centre (x, y) / depth, its radius its width in view heights
+    seen = (z > 0) & (np.abs(y) / depth < 1 + width) & (np.abs(x) / depth < VIEW_ASPECT + width)
+    hides = seen & (z < distance) & (np.hypot(x, y) / depth < width + radius / (distance * tan))
+    crowds = np.where(seen & (z < distance), np.maximum(width - LARGE_MARK, 0.0) / LARGE_MARK, 0.0)
+    return 10.0 * hides.sum(axis=1) + 3.0 * crowds.sum(axis=1)
 
 
 def follow_camera(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
@@ -321,7 +408,7 @@ def follow_camera(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
     part of the picture, with the blocks beside it."""
     centers, _, _ = robot.link_boxes(robot.check_configs(Q))  # (T, L, D)
     look_at = _lift_points(centers, FLAT_ROBOT_HEIGHT / 2).mean(axis=1)  # (T, 3)
-    return look_at, look_at + ROBOT_SPAN * _robot_size(robot) * np.array(ROBOT_VIEW)
+    return look_at, look_at + ROBOT_SPAN * robot_size(robot) * np.array(ROBOT_VIEW)
 
 
 def _link_bounds(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
@@ -332,7 +419,7 @@ def _link_bounds(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
     return lo, hi
 
 
-def _robot_size(robot: BoxRobot) -> float:
+def robot_size(robot: BoxRobot) -> float:
     """The largest extent of the robot at its zero configuration (its joints straight), in workspace units."""
     lo, hi = _link_bounds(robot, np.clip(np.zeros(robot.dof), robot.lower, robot.upper))
     return float(np.max(hi - lo))

@@ -19,8 +19,9 @@ tracks (2.1:1) to 3.3:1 (WCAG 1.4.3, 1.4.11).
 - :func:`label_controls` adds the script to a saved scene's page (snapshots and animations in notebook 05), and
   hides the notices there (a static page has nothing to notify); the scene's own text alternative is the
   summary beside it (:meth:`toolkit.viewer.Viewer.summary`);
-- :func:`no_webgl_still` puts a still picture of the scene into a saved scene's page, shown in the view's place
-  where the browser has no WebGL (the view would stay blank there);
+- :func:`with_still` puts a still picture of the scene into a saved scene's page, shown in the view's place
+  where the browser has no WebGL (the view would stay blank there) and, for an animation, first in every browser,
+  with a button that plays the 3D view;
 - :func:`named_live_page` makes viser's server serve its page with the same script (``toolkit view``): a copy of
   viser's ``client/build/index.html`` with the script in it, served in place of the original.
 
@@ -173,30 +174,53 @@ def label_controls(document: str) -> str:
     return _before_body_end(document, hidden + script(NAMES | RECORDING_NAMES))
 
 
-NO_WEBGL = """<div id="toolkit-no-webgl" hidden
+STILL = """<style>#toolkit-play:focus-visible { outline: 2px solid %(ink)s; outline-offset: 2px; }</style>
+<div id="toolkit-still"%(hidden)s
  style="position:fixed;inset:0;overflow:auto;background:#fff;z-index:2147483647">
-<p style="margin:4px 8px;font:14px sans-serif">This browser draws no 3D (no WebGL): the scene as a still picture.</p>
+<p style="position:sticky;top:0;margin:0;padding:4px 8px;background:#fff;font:14px sans-serif">
+<span id="toolkit-still-note">%(note)s</span>%(play)s</p>
 <img src="data:image/png;base64,%(png)s" alt="%(alt)s" style="width:100%%;height:auto"></div>
 <script>(function () {
-  var canvas = document.createElement("canvas");
+  var canvas = document.createElement("canvas"), still = document.getElementById("toolkit-still");
+  var play = document.getElementById("toolkit-play"), view = document.getElementById("root") || {};
   if (!(canvas.getContext("webgl2") || canvas.getContext("webgl"))) {
-    document.getElementById("toolkit-no-webgl").hidden = false;
+    document.getElementById("toolkit-still-note").textContent = %(no_webgl)s;
+    if (play) play.remove();
+    still.hidden = false;
   }
+  view.inert = !still.hidden;  // no focus on controls the still covers
+  if (play) play.addEventListener("click", function () { still.hidden = true; view.inert = false; });
 })();</script>
 """
+NO_WEBGL = "This browser draws no 3D (no WebGL): the scene as a still picture."
+PLAY = (
+    ' <button id="toolkit-play" type="button" style="font:inherit;font-weight:bold;margin-left:8px;padding:2px 10px;'
+    'border:2px solid %(ink)s;border-radius:4px;background:#fff;color:%(ink)s;cursor:pointer">%(play)s</button>'
+)
 
 
-def no_webgl_still(document: str, fig: Figure | None) -> str:
-    """``document`` (a saved scene's HTML) with ``fig``, a still picture of its scene, over the view where the
-    browser has no WebGL (the picture's alt text from the figure); ``document`` as it is without a figure."""
+def with_still(document: str, fig: Figure | None, *, first: str | None = None, play: str = "play in 3D") -> str:
+    """``document`` (a saved scene's HTML) with ``fig``, a still picture of its scene, over the view (the picture's
+    alt text from the figure): where the browser has no WebGL (the view would stay blank there) and, given
+    ``first`` (what the still shows, in words), in every browser until the reader presses ``play``: a screenshot
+    or a printed page then shows the still, not a view that has not drawn yet. The view's controls take no focus
+    while the still covers them. ``document`` as it is without a figure."""
     if fig is None:
         return document
     from toolkit.plots.alt import alt_text
 
     buffer = io.BytesIO()
     fig.savefig(buffer, format="png", dpi=100, bbox_inches="tight")
-    png = base64.b64encode(buffer.getvalue()).decode()
-    return _before_body_end(document, NO_WEBGL % {"png": png, "alt": html.escape(alt_text(fig), quote=True)})
+    filled = {
+        "png": base64.b64encode(buffer.getvalue()).decode(),
+        "alt": html.escape(alt_text(fig), quote=True),
+        "hidden": " hidden" if first is None else "",
+        "note": html.escape(NO_WEBGL if first is None else first),
+        "play": "" if first is None else PLAY % {"ink": COLORS["ink"], "play": html.escape(play)},
+        "no_webgl": json.dumps(NO_WEBGL),
+        "ink": COLORS["ink"],
+    }
+    return _before_body_end(document, STILL % filled)
 
 
 @functools.cache

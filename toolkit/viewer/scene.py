@@ -186,7 +186,8 @@ class Viewer:
                     boxes.scaled(HALO),
                     np.repeat(draw.probability_colors([self.probability]), len(boxes), axis=0),
                 )
-                self.nodes["disagreement"].position = boxes.centers.max(axis=0) + np.array([0.0, 0.0, 1.0])
+                above = 0.5 * draw.robot_size(self.robot)  # close above: in a snapshot's view, which frames the robot
+                self.nodes["disagreement"].position = boxes.centers.max(axis=0) + np.array([0.0, 0.0, above])
                 self._show_disagreement()
             self._notify("moved")
 
@@ -303,9 +304,16 @@ class Viewer:
                 self._show_disagreement()
 
     def html(self) -> str:
-        """The current scene as one self-contained HTML document (no server needed), its camera framing the robot."""
-        with self.lock, camera_at(self.server, *draw.robot_camera(self.robot, self.q)):
-            return label_controls(self.server.scene.as_html())
+        """The current scene as one self-contained HTML document (no server needed), its camera framing the robot
+        from where no sample mark or block hides it (``drawing.robot_camera``)."""
+        with self.lock:
+            points, sizes = None, np.zeros(0)
+            if self.sample_points is not None and self.visible["samples"]:
+                points, kinds = self.sample_points
+                sizes = draw.mark_sizes(kinds, draw.POINT_SIZE[self.workspace.family])  # (N,)
+            camera = draw.robot_camera(self.robot, self.q, workspace=self.workspace, points=points, sizes=sizes)
+            with camera_at(self.server, *camera):
+                return label_controls(self.server.scene.as_html())
 
     def summary(self) -> str:
         """The scene in words, the text alternative of a snapshot: workspace, robot, samples, path."""

@@ -3,8 +3,10 @@
 ``viewer`` is a :class:`toolkit.viewer.scene.Viewer` in every function here (not imported: it imports this).
 
 A saved 3D view needs WebGL to draw; where a browser has none, the page shows a still picture in the view's place
-(:func:`toolkit.viewer.labels.no_webgl_still`): the whole workspace with the samples and the path the viewer
-shows, then the robot close up. Each frame is followed by the scene in words (its text alternative).
+(:func:`toolkit.viewer.labels.with_still`): the whole workspace with the samples and the path the viewer
+shows, then the robot close up. An animation opens on its still in every browser, with a button that plays it: a
+screenshot, a printed page or a browser that draws 3D slowly (in software) shows a picture, not a view still
+loading. Each frame is followed by the scene in words (its text alternative).
 """
 
 from __future__ import annotations
@@ -14,8 +16,10 @@ from matplotlib.figure import Figure
 
 from toolkit.plots import scenes
 from toolkit.viewer import drawing as draw
-from toolkit.viewer.labels import no_webgl_still
+from toolkit.viewer.labels import with_still
 from toolkit.viewer.server import srcdoc_iframe
+
+ANIMATION_STILL = "The path, then the robot at its start, middle and goal, close up (scroll down)."
 
 
 def scene_still(viewer, poses: dict[str, np.ndarray] | None = None) -> Figure:
@@ -35,14 +39,15 @@ def scene_still(viewer, poses: dict[str, np.ndarray] | None = None) -> Figure:
 def iframe(viewer, height: int = 480) -> str:
     """``viewer``'s scene as a static snapshot ``<iframe>`` for ``IPython.display.HTML``, then its summary."""
     picture = scene_still(viewer) if viewer.robot.dim == 3 else None
-    return srcdoc_iframe(no_webgl_still(viewer.html(), picture), height, summary=viewer.summary())
+    return srcdoc_iframe(with_still(viewer.html(), picture), height, summary=viewer.summary())
 
 
 def animation_iframe(viewer, height: int = 480, *, frames: int = 60, seconds: float = 6.0) -> str:
-    """``viewer``'s animation along its path (``Viewer.animation_html``) as an ``<iframe>``, its frames in words."""
+    """``viewer``'s animation along its path (``Viewer.animation_html``) as an ``<iframe>``, its frames in words; it
+    opens on its still (:data:`ANIMATION_STILL`), over the 3D view until the reader plays it."""
     Q = viewer.path_configurations(np.linspace(0.0, 1.0, int(frames)))  # (F, dof): the frames' configurations
     told = draw.animation_summary(viewer.workspace, viewer.robot, Q, viewer.exact, viewer.model, viewer.path)
     ends = dict(zip(("start", "middle", "goal"), viewer.path_configurations(np.linspace(0.0, 1.0, 3))))
     picture = scene_still(viewer, ends) if viewer.robot.dim == 3 else None
-    document = viewer.animation_html(frames=frames, seconds=seconds)
-    return srcdoc_iframe(no_webgl_still(document, picture), height, summary=told)
+    document = with_still(viewer.animation_html(frames=frames, seconds=seconds), picture, first=ANIMATION_STILL)
+    return srcdoc_iframe(document, height, summary=told)
