@@ -18,6 +18,7 @@ from IPython.display import HTML
 from toolkit import scenarios, viewer
 from toolkit.geometry.collision import exact_checker
 from toolkit.viewer import drawing as draw
+from toolkit.viewer import framing
 from toolkit.viewer.labels import NO_WEBGL
 
 
@@ -118,7 +119,7 @@ def test_the_animation_keeps_the_robot_framed_by_sliding_the_scene_under_the_cam
     v, frames, seconds = planned, 8, 1.0
     document = v.animation_html(frames=frames, seconds=seconds)
     Q = v.path_configurations(np.linspace(0, 1, frames))
-    looks, positions = draw.follow_camera(v.robot, Q)  # (F, 3) each
+    looks, positions = framing.follow_camera(v.robot, Q)  # (F, 3) each
     camera = cameras(document)
     moves = slides(document)
     assert all(len(moves[name]) == 1 for name in ("/lights/key", "/workspace/floor"))  # placed once: the lights stay
@@ -129,7 +130,7 @@ def test_the_animation_keeps_the_robot_framed_by_sliding_the_scene_under_the_cam
     np.testing.assert_allclose(camera["position"] - camera["look_at"], positions[0] - looks[0])
     np.testing.assert_allclose(looks, v.robot.link_boxes(Q)[0].mean(axis=1))  # the middle of the robot's links
     distance = np.linalg.norm(positions - looks, axis=1)
-    np.testing.assert_allclose(distance, draw.ROBOT_SPAN * 0.5 * np.linalg.norm(draw.ROBOT_VIEW))  # the chain: 0.5 long
+    np.testing.assert_allclose(distance, framing.ROBOT_SPAN * 0.5 * np.linalg.norm(framing.ROBOT_VIEW))  # chain: 0.5
 
 
 def test_a_snapshot_starts_framing_the_robot_and_leaves_the_live_camera_alone(planned):
@@ -137,7 +138,7 @@ def test_a_snapshot_starts_framing_the_robot_and_leaves_the_live_camera_alone(pl
     v.set_configuration(v.path[len(v.path) // 2])
     live = v.server.initial_camera.look_at.copy(), v.server.initial_camera.position.copy()
     camera = cameras(v.html())
-    look_at, position = draw.robot_camera(v.robot, v.q, workspace=v.workspace)  # no samples shown
+    look_at, position = framing.robot_camera(v.robot, v.q, workspace=v.workspace)  # no samples shown
     np.testing.assert_allclose(camera["look_at"], look_at)
     np.testing.assert_allclose(camera["position"], position)
     np.testing.assert_allclose(look_at, v.robot.link_boxes(v.q[None])[0][0].mean(axis=0))  # the middle of the robot
@@ -164,7 +165,7 @@ def test_a_snapshot_looks_at_the_robot_from_where_no_sample_mark_or_block_hides_
     the 3DC-7 scene of chapter 05 with its 2000 uniform samples and, besides, three marks on the default camera's
     line of sight: the snapshot's camera stands where none of them overlaps the robot and no block is in between."""
     v = make_viewer("3dc7", seed=0)
-    rest_look, rest_camera = draw.robot_camera(v.robot, v.q)  # where the camera stood before
+    rest_look, rest_camera = framing.robot_camera(v.robot, v.q)  # where the camera stood before
     in_the_way = rest_look + np.linspace(0.2, 0.8, 3)[:, None] * (rest_camera - rest_look)  # (3, 3) points
     extra = v.robot.sample(np.random.default_rng(1), 3)  # (3, 7): moved so that their marks sit on those points
     extra[:, :3] += in_the_way - draw.config_points(v.robot, extra)
@@ -182,7 +183,7 @@ def test_a_snapshot_looks_at_the_robot_from_where_no_sample_mark_or_block_hides_
     lo, hi = v.workspace.boxes[:, 0], v.workspace.boxes[:, 1]  # (K, 3) each
     near_side = np.linalg.norm(sight - camera["look_at"], axis=1) > radius
     assert not np.any(np.all((sight[near_side, None] > lo) & (sight[near_side, None] < hi), axis=-1))
-    assert np.linalg.norm(camera["position"] - camera["look_at"]) < 4 * draw.robot_size(v.robot)  # still close
+    assert np.linalg.norm(camera["position"] - camera["look_at"]) < 4 * framing.robot_size(v.robot)  # still close
 
 
 def test_a_sparkle_is_drawn_before_the_mark_it_rings_so_that_the_marks_shape_shows(make_viewer, rng):
@@ -338,5 +339,5 @@ def test_the_office_snapshot_shows_the_youbot_larger_than_its_sample_marks_and_n
     platform = 2 * np.array(robot.links[0].half_extents[:2])  # (2,) its footprint, workspace units
     for shape, scale in (draw.SAMPLE_SHAPES[kind] for kind in ("valid", "in collision")):
         assert draw.POINT_SIZE["3do"] * scale <= platform.min() / 5, shape
-    looks, positions = draw.follow_camera(robot, np.clip(np.zeros(robot.dof), robot.lower, robot.upper)[None])
-    assert np.linalg.norm(positions - looks) <= 3.5 * draw.robot_size(robot)
+    looks, positions = framing.follow_camera(robot, np.clip(np.zeros(robot.dof), robot.lower, robot.upper)[None])
+    assert np.linalg.norm(positions - looks) <= 3.5 * framing.robot_size(robot)

@@ -281,16 +281,8 @@ def _draw_norms(ax, jacobian_norms: dict[str, np.ndarray]) -> None:
     names = list(jacobian_norms)
     ink = dict(color=COLORS["ink"])
     median, mean, outlier = NORM_MARKS.values()
-    ax.boxplot(
-        [np.asarray(jacobian_norms[n]) for n in names],
-        showmeans=True,
-        boxprops=ink,
-        whiskerprops=ink,
-        capprops=ink,
-        medianprops=median,
-        meanprops=mean,
-        flierprops=outlier,
-    )
+    props = dict(boxprops=ink, whiskerprops=ink, capprops=ink, medianprops=median, meanprops=mean, flierprops=outlier)
+    ax.boxplot([np.asarray(jacobian_norms[n]) for n in names], showmeans=True, **props)
     marks = [Line2D([], [], linestyle="-" if "marker" not in style else "", **style) for style in NORM_MARKS.values()]
     low, high = ax.get_ylim()
     ax.set_ylim(low, high + 0.25 * (high - low))  # room above the boxes: the legend covers none

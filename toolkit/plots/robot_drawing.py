@@ -157,11 +157,9 @@ def robot_figure(
         raise ValueError(f"{len(labels)} labels for {len(Q)} configurations: give one label a configuration")
     # at most two panels a row (the page's width); three views: the first tall on the left, two stacked beside it
     columns, rows = min(2, len(views)), -(-len(views) // 2)
-    mosaic: list[list[Any]] = (  # each view once: a panel's name
-        [[views[0], views[1]], [views[0], views[2]]]
-        if len(views) == 3
-        else [list(views[2 * r : 2 * r + 2]) for r in range(rows)]
-    )
+    mosaic: list[list[Any]] = [list(views[2 * r : 2 * r + 2]) for r in range(rows)]  # each view once: a panel's name
+    if len(views) == 3:
+        mosaic = [[views[0], views[1]], [views[0], views[2]]]
     width = min(PAGE_WIDTH, 3.6 * columns)
     fig = Figure(figsize=(width, width / columns * (1.6 if len(views) == 3 else rows) + 0.4 * (labels is not None)))
     in_3d: dict[str | tuple[str, ...], dict[str, Any]] = {"3d": {"projection": "3d"}} if "3d" in views else {}
@@ -191,18 +189,25 @@ def robot_figure(
         ]
         fig.legend(handles, list(styles), loc="lower center", ncol=len(handles), fontsize=9, frameon=False)
     fig.tight_layout(rect=(0, 0.08 if labels is not None else 0, 1, 1))
-    text = f"The {robot.name} robot's link boxes at {len(Q)} configuration{'s' if len(Q) > 1 else ''}"
+    text = _robot_figure_text(robot, len(Q), views, workspace is not None, valid, labels, hatches, named)
+    return describe(fig, text, [_configurations_part(robot, Q, labels)])
+
+
+def _robot_figure_text(robot, count, views, near, valid, labels, hatches, named) -> str:
+    """:func:`robot_figure`'s description: what it shows, seen from where, and each configuration's cue (its
+    hatch and, when ``named``, the marker on its last link)."""
+    text = f"The {robot.name} robot's link boxes at {count} configuration{'s' if count > 1 else ''}"
     seen = ["in 3D" if v == "3d" else f"in the {v} plane" for v in views]
     text += ", seen " + (", ".join(seen[:-1]) + " and " if len(seen) > 1 else "") + seen[-1]
-    text += ", with the blocks near it" if workspace is not None else ""
+    text += ", with the blocks near it" if near else ""
     if valid is not None:
         n_valid = int(np.sum(np.asarray(valid, dtype=bool)))
-        text += f": {n_valid} valid, {len(Q) - n_valid} in collision (hatched)"
+        text += f": {n_valid} valid, {count - n_valid} in collision (hatched)"
     elif labels is not None:
-        ends_said = [f", its last link marked {END_MARKERS[k % len(END_MARKERS)][1]}" for k in range(len(Q))]
-        marked = ends_said if named else [""] * len(Q)
+        ends_said = [f", its last link marked {END_MARKERS[k % len(END_MARKERS)][1]}" for k in range(count)]
+        marked = ends_said if named else [""] * count
         text += ": " + ", ".join(f"{label} ({_hatch_name(h)}{m})" for label, h, m in zip(labels, hatches, marked))
-    return describe(fig, text + ".", [_configurations_part(robot, Q, labels)])
+    return text + "."
 
 
 END_MARKERS = (("o", "with a circle"), ("s", "with a square"), ("^", "with a triangle"), ("D", "with a diamond"))

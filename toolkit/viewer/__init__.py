@@ -26,15 +26,17 @@ page that needs no server.
 Reading order (each module imports only those above it):
 
 1. :mod:`toolkit.viewer.drawing` — workspaces, robots, samples and paths as Viser meshes and lines;
-2. :mod:`toolkit.viewer.server` — how a scene reaches a browser: a server on a free port under a secret path, or a
+2. :mod:`toolkit.viewer.framing` — where the camera stands: the workspace, a moving robot, the clearest view of it;
+3. :mod:`toolkit.viewer.server` — how a scene reaches a browser: a server on a free port under a secret path, or a
    page inline;
-3. :mod:`toolkit.viewer.address` — where a student opens it: the port, or its path through a JupyterHub;
-4. :mod:`toolkit.viewer.labels` — names for a saved scene's player controls, for screen readers;
-5. :mod:`toolkit.viewer.snapshot` — a scene on a page without a server: snapshot, animation, a still for no WebGL;
-6. :mod:`toolkit.viewer.scene` — :class:`Viewer`: the live scene, and the events it tells its listeners;
-7. :mod:`toolkit.viewer.panel` — the GUI panel, one listener: joint sliders, samplers, planning, playback;
-8. :mod:`toolkit.viewer.app` — :func:`launch` (the scene with its panel), :func:`serve_forever`, :func:`embed`;
-9. :mod:`toolkit.viewer.browser` — the page in headless Chromium: screenshots, what they show.
+4. :mod:`toolkit.viewer.address` — where a student opens it: the port, or its path through a JupyterHub;
+5. :mod:`toolkit.viewer.labels` — names for a saved scene's player controls, for screen readers;
+6. :mod:`toolkit.viewer.snapshot` — a scene on a page without a server: snapshot, animation, a still for no WebGL;
+7. :mod:`toolkit.viewer.models` — which learned model a scene shows, and why one is refused;
+8. :mod:`toolkit.viewer.scene` — :class:`Viewer`: the live scene, and the events it tells its listeners;
+9. :mod:`toolkit.viewer.panel` — the GUI panel, one listener: joint sliders, samplers, planning, playback;
+10. :mod:`toolkit.viewer.app` — :func:`launch` (the scene with its panel), :func:`serve_forever`, :func:`embed`;
+11. :mod:`toolkit.viewer.browser` — the page in headless Chromium: screenshots, what they show.
 """
 
 from toolkit.viewer.app import embed, launch, serve_forever

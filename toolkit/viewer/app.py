@@ -15,8 +15,9 @@ from pathlib import Path
 from toolkit.scenarios import Scenario
 from toolkit.viewer import address
 from toolkit.viewer.labels import named_live_page
+from toolkit.viewer.models import Predictor
 from toolkit.viewer.panel import Panel
-from toolkit.viewer.scene import Predictor, Viewer
+from toolkit.viewer.scene import Viewer
 from toolkit.viewer.server import page_path
 
 

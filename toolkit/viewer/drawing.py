@@ -69,7 +69,7 @@ class Boxes:
 
 def obstacle_boxes(workspace: Workspace) -> Boxes:
     """The workspace's ``K`` axis-aligned blocks; 2D blocks are extruded to ``FLAT_HEIGHT``."""
-    lo, hi = _lift_points(workspace.boxes[:, 0], 0.0), _lift_points(workspace.boxes[:, 1], FLAT_HEIGHT)  # (K, 3)
+    lo, hi = lift_points(workspace.boxes[:, 0], 0.0), lift_points(workspace.boxes[:, 1], FLAT_HEIGHT)  # (K, 3)
     return Boxes((lo + hi) / 2, np.broadcast_to(np.eye(3), (len(lo), 3, 3)), hi - lo)
 
 
@@ -79,11 +79,11 @@ def robot_boxes(robot: BoxRobot, Q) -> Boxes:
     n, links = centers.shape[:2]
     sizes = np.broadcast_to(2 * half, (n, links, robot.dim))  # (N, L, D)
     if robot.dim == 2:
-        centers = _lift_points(centers, FLAT_ROBOT_HEIGHT / 2)
+        centers = lift_points(centers, FLAT_ROBOT_HEIGHT / 2)
         lifted = np.broadcast_to(np.eye(3), (n, links, 3, 3)).copy()
         lifted[..., :2, :2] = rotations
         rotations = lifted
-        sizes = _lift_points(sizes, FLAT_ROBOT_HEIGHT)
+        sizes = lift_points(sizes, FLAT_ROBOT_HEIGHT)
     return Boxes(centers.reshape(-1, 3), rotations.reshape(-1, 3, 3), sizes.reshape(-1, 3))
 
 
@@ -92,7 +92,7 @@ def config_points(robot: BoxRobot, Q, at: str = "base") -> np.ndarray:
     if at not in ("base", "tip"):
         raise ValueError(f"mark configurations at 'base' or 'tip', not {at!r}")
     centers = robot.link_boxes(Q)[0][:, 0 if at == "base" else -1]  # (N, D)
-    return _lift_points(centers, FLAT_ROBOT_HEIGHT) if robot.dim == 2 else centers
+    return lift_points(centers, FLAT_ROBOT_HEIGHT) if robot.dim == 2 else centers
 
 
 _CORNERS = np.array([[(i >> d) & 1 for d in range(3)] for i in range(8)])  # (8, 3) a unit cube's corners, 0 or 1
@@ -108,7 +108,7 @@ def box_edges(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
 
 def region_edges(workspace: Workspace) -> np.ndarray:
     """The 12 edges of the workspace region, ``(12, 2, 3)`` (2D: the extruded region)."""
-    lo, hi = _lift_points(workspace.lower, 0.0), _lift_points(workspace.upper, FLAT_HEIGHT)
+    lo, hi = lift_points(workspace.lower, 0.0), lift_points(workspace.upper, FLAT_HEIGHT)
     return box_edges(lo[None], hi[None])
 
 
@@ -291,140 +291,6 @@ def draw_workspace(scene: viser.SceneApi, workspace: Workspace) -> dict[str, vis
     }
 
 
-# Camera by the robot's base kind: what to look at, and the offset to the camera in workspace extents.
-CAMERA = {
-    "point2d": ("region", (-0.1, -0.75, 0.8)),  # the whole flat scene
-    "planar": ("robot", (-0.05, -0.2, 0.18)),  # near the youBot: it is small in its big office
-    "free": ("region", (-0.6, -1.3, 0.9)),  # the whole clutter, from outside
-}
-
-
-def camera_pose(robot: BoxRobot, workspace: Workspace, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """``(look_at, position)`` of the camera, from the front-left (see :data:`CAMERA`)."""
-    target, offset = CAMERA[robot.base]
-    if target == "robot":
-        look_at = config_points(robot, q[None])[0] * np.array([1.0, 1.0, 0.0])  # its base, on the floor
-    else:
-        look_at = _lift_points((workspace.lower + workspace.upper) / 2, 0.0)
-        look_at[0] += 0.1 * float(workspace.upper[0] - workspace.lower[0])  # to the right: the GUI panel covers it
-    return look_at, look_at + float(np.max(workspace.upper - workspace.lower)) * np.array(offset)
-
-
-ROBOT_VIEW = (-0.45, -1.0, 0.7)  # a robot camera's direction: from the front-left and above (length ~1.3: it fits)
-ROBOT_SPAN = 2.5  # a robot's camera frames this many robot sizes: the robot, large, and the blocks beside it
-
-
-def robot_camera(
-    robot: BoxRobot,
-    q,
-    *,
-    workspace: Workspace | None = None,
-    points: np.ndarray | None = None,
-    sizes: npt.ArrayLike = 0.0,
-) -> tuple[np.ndarray, np.ndarray]:
-    """``(look_at, position)`` of a camera that frames the robot at ``q (dof,)`` (a snapshot's), as
-    :func:`follow_camera` does at each configuration of a motion; given the scene's ``workspace`` and sample marks
-    (``points (N, 3)`` of ``sizes``, one or ``(N,)``, in workspace units), the clearest view of it
-    (:func:`clear_view`)."""
-    looks, positions = follow_camera(robot, robot.check_configs(q)[:1])
-    if workspace is None and points is None:
-        return looks[0], positions[0]
-    lo, hi = _link_bounds(robot, robot.check_configs(q)[:1])  # (3,) each
-    return looks[0], clear_view(looks[0], positions[0], float(np.max(hi - lo)) / 2, workspace, points, sizes)
-
-
-VIEW_FOV = np.deg2rad(75.0)  # viser's vertical field of view (its default, and the snapshots')
-VIEW_ASPECT = 1.5  # a notebook's view, width / height (the course site's: about 640 x 440 px)
-LARGE_MARK = 0.12  # a mark in front of the robot wider than this share of the view's height crowds it
-VIEW_ELEVATIONS = np.deg2rad([15.0, 30.0, 45.0, 60.0])  # the directions clear_view tries, above the horizon
-VIEW_DISTANCES = (0.7, 0.85, 1.0)  # and its distances, times the default's
-
-
-def clear_view(
-    look_at: np.ndarray,
-    default: np.ndarray,
-    radius: float,
-    workspace: Workspace | None,
-    points: np.ndarray | None,
-    sizes: npt.ArrayLike = 0.0,
-) -> np.ndarray:
-    """The camera position ``(3,)`` looking at ``look_at`` (a subject of ``radius``) that no sample mark hides and
-    no block stands in front of, nearest the ``default`` position's view.
-
-    viser draws a mark of width ``s`` at depth ``z`` ``s / (z tan(fov / 2))`` view heights wide: a mark a few
-    tenths of a unit from the camera covers half the picture. Tried: :data:`VIEW_ELEVATIONS` x 24 headings x
-    :data:`VIEW_DISTANCES`. Each pays for the marks in front of the subject (:func:`_marks_in_the_way`), 10 times
-    the share of its line of sight inside blocks, and half its turn from the default (radians) and its change of
-    distance (a share); a camera inside a block or below the floor is never taken.
-    """
-    look_at, default = np.asarray(look_at, dtype=float), np.asarray(default, dtype=float)
-    d0 = float(np.linalg.norm(default - look_at))
-    heading = np.deg2rad(np.arange(0.0, 360.0, 15.0))
-    elevation, turn, scale = (a.ravel() for a in np.meshgrid(VIEW_ELEVATIONS, heading, VIEW_DISTANCES))
-    away = np.stack([np.cos(elevation) * np.cos(turn), np.cos(elevation) * np.sin(turn), np.sin(elevation)], -1)
-    cameras = look_at + (d0 * scale)[:, None] * away  # (C, 3)
-    cost = 0.5 * np.arccos(np.clip(away @ (default - look_at) / d0, -1.0, 1.0)) + 0.5 * np.abs(scale - 1.0)
-    if points is not None and len(points):
-        cost += _marks_in_the_way(cameras, look_at, radius, np.asarray(points, float), sizes)
-    if workspace is not None:
-        blocks = obstacle_boxes(workspace)
-        lo, hi = blocks.centers - blocks.sizes / 2, blocks.centers + blocks.sizes / 2  # (K, 3) each
-        t = np.linspace(0.0, 1.0, 17)[:, None, None] * (1.0 - radius / (d0 * scale))[None, :, None]  # (S, C, 1)
-        sight = cameras + t * (look_at - cameras)  # (S, C, 3): camera to the subject's near side
-        inside = np.all((sight[..., None, :] > lo) & (sight[..., None, :] < hi), axis=-1).any(axis=-1)  # (S, C)
-        cost += 10.0 * inside.mean(axis=0) + np.where(inside[0], np.inf, 0.0)
-        cost += np.where(cameras[:, 2] < _lift_points(workspace.lower, 0.0)[2], np.inf, 0.0)
-    return cameras[np.argmin(cost)]
-
-
-def _marks_in_the_way(
-    cameras: np.ndarray, look_at: np.ndarray, radius: float, points: np.ndarray, sizes: npt.ArrayLike
-) -> np.ndarray:
-    """What the marks ``points (N, 3)`` of ``sizes`` cost each camera ``(C, 3)`` looking at ``look_at``: 10 per mark
-    in front of the subject overlapping it on the picture, plus 3 times each such mark's width beyond :data:`LARGE_MARK`
-    (a share of it)."""
-    forward = look_at - cameras  # (C, 3)
-    distance = np.linalg.norm(forward, axis=1, keepdims=True)
-    forward /= distance
-    right = np.cross(forward, [0.0, 0.0, 1.0])
-    right /= np.linalg.norm(right, axis=1, keepdims=True)
-    up = np.cross(right, forward)
-    rel = points[None] - cameras[:, None]  # (C, N, 3)
-    z, x, y = (np.einsum("cnk,ck->cn", rel, axis) for axis in (forward, right, up))  # (C, N) each
-    tan = np.tan(VIEW_FOV / 2)
-    depth = np.maximum(z, 1e-6) * tan  # half the view's height at each mark's depth
-    width = np.broadcast_to(np.asarray(sizes, dtype=float), points.shape[:1]) / depth  # (C, N) in view heights
-    # on the picture, in half its height: a mark's centre (x, y) / depth, its radius its width in view heights
-    seen = (z > 0) & (np.abs(y) / depth < 1 + width) & (np.abs(x) / depth < VIEW_ASPECT + width)
-    hides = seen & (z < distance) & (np.hypot(x, y) / depth < width + radius / (distance * tan))
-    crowds = np.where(seen & (z < distance), np.maximum(width - LARGE_MARK, 0.0) / LARGE_MARK, 0.0)
-    return 10.0 * hides.sum(axis=1) + 3.0 * crowds.sum(axis=1)
-
-
-def follow_camera(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
-    """``(look_at (T, 3), position (T, 3))``: a camera that keeps the robot framed at each configuration of
-    ``Q (T, dof)``. It looks at the mean of the link centres (it moves smoothly with the configuration), from
-    :data:`ROBOT_VIEW` scaled to :data:`ROBOT_SPAN` robot sizes: a robot small in its workspace fills a good
-    part of the picture, with the blocks beside it."""
-    centers, _, _ = robot.link_boxes(robot.check_configs(Q))  # (T, L, D)
-    look_at = _lift_points(centers, FLAT_ROBOT_HEIGHT / 2).mean(axis=1)  # (T, 3)
-    return look_at, look_at + ROBOT_SPAN * robot_size(robot) * np.array(ROBOT_VIEW)
-
-
-def _link_bounds(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
-    """The 3D min and max corner ``(3,), (3,)`` of the robot's links at the configurations ``Q (T, dof)``."""
-    aabbs = robot.link_aabbs(robot.check_configs(Q))  # (T, L, 2, D)
-    lo = _lift_points(aabbs[:, :, 0].min(axis=(0, 1)), 0.0)  # (3,)
-    hi = _lift_points(aabbs[:, :, 1].max(axis=(0, 1)), FLAT_ROBOT_HEIGHT)
-    return lo, hi
-
-
-def robot_size(robot: BoxRobot) -> float:
-    """The largest extent of the robot at its zero configuration (its joints straight), in workspace units."""
-    lo, hi = _link_bounds(robot, np.clip(np.zeros(robot.dof), robot.lower, robot.upper))
-    return float(np.max(hi - lo))
-
-
 def light(scene: viser.SceneApi) -> None:
     """Soft light from the front-left: viser's default lights wash the tops of boxes out to white."""
     scene.configure_default_lights(enabled=False)
@@ -438,7 +304,7 @@ def _quaternions(rotations: np.ndarray) -> np.ndarray:
     return vtf.SO3.from_matrix(np.asarray(rotations, dtype=float)).wxyz.astype(np.float32)
 
 
-def _lift_points(points: np.ndarray, z: float) -> np.ndarray:
+def lift_points(points: np.ndarray, z: float) -> np.ndarray:
     """``(..., D)`` points as ``(..., 3)``: 2D points get height ``z``, 3D points are unchanged."""
     points = np.asarray(points, dtype=float)
     if points.shape[-1] == 3:

@@ -12,9 +12,7 @@ from __future__ import annotations
 
 import threading
 from collections.abc import Callable
-from functools import partial
 from pathlib import Path
-from typing import Protocol, runtime_checkable
 
 import numpy as np
 import viser
@@ -22,18 +20,17 @@ from matplotlib.figure import Figure
 
 from toolkit import scenarios
 from toolkit.experiments import problems, query_sets
-from toolkit.geometry.collision import CollisionChecker, exact_checker
+from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.robots import BASES
-from toolkit.geometry.workspace import Workspace
 from toolkit.planning import prm
 from toolkit.planning.local_planner import path_at
 from toolkit.planning.sampling import make_sampler
 from toolkit.viewer import drawing as draw
-from toolkit.viewer import snapshot
+from toolkit.viewer import framing, models, snapshot
 from toolkit.viewer.labels import label_controls
+from toolkit.viewer.models import Predictor
 from toolkit.viewer.server import camera_at, page_path, start_server, stop_server
 
-Predictor = Callable[[Workspace], CollisionChecker]  # workspace -> checker with are_valid(Q), probability(Q)
 LAYERS = ("obstacles", "robot", "prediction", "samples", "roadmap", "path")
 ALONG = {"obstacle_edges": "obstacles"}  # a node shown and hidden with a layer (viser would draw a child see-through)
 HALO = 1.15  # the prediction wireframe is this much larger than the links
@@ -47,13 +44,6 @@ EVENTS = {  # what a Viewer tells its listeners, and the arguments a listener's 
     "planned": "a PRM result is drawn (path holds its path, or None); (result,)",
     "stopping": "before the server stops (outside the lock); ()",
 }
-
-
-@runtime_checkable
-class Predicts(Protocol):
-    """What a model's checker has beyond are_valid: P(valid) ``(N,)`` of configurations ``Q (N, dof)``."""
-
-    def probability(self, Q) -> np.ndarray: ...
 
 
 class Viewer:
@@ -74,15 +64,7 @@ class Viewer:
         host: str = "127.0.0.1",
         port: int = 8080,
     ):
-        if checkpoint is not None and predictor is not None:
-            raise ValueError("give a checkpoint or a predictor, not both")
-        if checkpoint is not None:
-            # torch: only when a model is asked for
-            from toolkit.learning.checkpoints import load_models
-            from toolkit.learning.learned import LearnedChecker
-
-            predictor = partial(LearnedChecker, models=load_models(checkpoint))
-        self.predictor = predictor
+        self.predictor = models.predictor(checkpoint, predictor)
         self.server = start_server(host, port)
         draw.light(self.server.scene)
         self.lock = threading.RLock()  # GUI callbacks arrive on viser's threads
@@ -141,14 +123,14 @@ class Viewer:
             rng = np.random.default_rng(self.seed)
             self.workspace = self.scenario.make_workspace(rng)
             self.exact = exact_checker(self.workspace, self.robot)
-            self.model, self.model_error = self._load_model()
+            self.model, self.model_error = models.model_for(self.predictor, self.workspace, self.robot)
             for name in ("prediction", "disagreement", "samples", "roadmap", "path"):
                 self._remove(name)
             self.path, self.sample_counts, self.sample_clouds, self.sample_points = None, {}, {}, None
             for layer, handle in draw.draw_workspace(self.server.scene, self.workspace).items():
                 self._add(layer, handle)
             self.q = self.valid_configuration(rng, rest=True)
-            self._aim_camera(*draw.camera_pose(self.robot, self.workspace, self.q))
+            self._aim_camera(*framing.camera_pose(self.robot, self.workspace, self.q))
             boxes = draw.robot_boxes(self.robot, self.q[None])
             self._add("robot", draw.add_boxes(self.server.scene, "/robot/links", boxes, colors=draw.VALID))
             if self.model is not None:
@@ -178,7 +160,7 @@ class Viewer:
                 np.broadcast_to(draw.VALID if self.valid else draw.COLLIDING, (len(boxes), 3)),
             )
             self.probability = self.predicted_valid = None
-            if isinstance(self.model, Predicts):  # every model _load_model keeps
+            if isinstance(self.model, models.Predicts):  # every model model_for keeps
                 self.probability = float(self.model.probability(q[None])[0])
                 self.predicted_valid = bool(self.model.are_valid(q[None])[0])
                 draw.move_boxes(
@@ -186,7 +168,7 @@ class Viewer:
                     boxes.scaled(HALO),
                     np.repeat(draw.probability_colors([self.probability]), len(boxes), axis=0),
                 )
-                above = 0.5 * draw.robot_size(self.robot)  # close above: in a snapshot's view, which frames the robot
+                above = 0.5 * framing.robot_size(self.robot)  # close above, in a snapshot's view
                 self.nodes["disagreement"].position = boxes.centers.max(axis=0) + np.array([0.0, 0.0, above])
                 self._show_disagreement()
             self._notify("moved")
@@ -305,13 +287,13 @@ class Viewer:
 
     def html(self) -> str:
         """The current scene as one self-contained HTML document (no server needed), its camera framing the robot
-        from where no sample mark or block hides it (``drawing.robot_camera``)."""
+        from where no sample mark or block hides it (``framing.robot_camera``)."""
         with self.lock:
             points, sizes = None, np.zeros(0)
             if self.sample_points is not None and self.visible["samples"]:
                 points, kinds = self.sample_points
                 sizes = draw.mark_sizes(kinds, draw.POINT_SIZE[self.workspace.family])  # (N,)
-            camera = draw.robot_camera(self.robot, self.q, workspace=self.workspace, points=points, sizes=sizes)
+            camera = framing.robot_camera(self.robot, self.q, workspace=self.workspace, points=points, sizes=sizes)
             with camera_at(self.server, *camera):
                 return label_controls(self.server.scene.as_html())
 
@@ -329,14 +311,14 @@ class Viewer:
 
         A recording made with viser's scene serializer: the scene as it is now, then ``frames`` configurations
         evenly spaced along the path (:meth:`path_configurations`), ``seconds / (frames - 1)`` apart, colored as
-        :meth:`set_configuration` colors them. The camera follows the robot (``drawing.follow_camera``): a
+        :meth:`set_configuration` colors them. The camera follows the robot (``framing.follow_camera``): a
         recording cannot move a browser's camera, so the scene (:data:`SLIDING`, the samples) slides under it, and
         a student can still turn the view. The page loops, with a timeline to pause and scrub; all is put back.
         """
         if frames < 2 or not seconds > 0:
             raise ValueError(f"an animation needs frames >= 2 and seconds > 0, got {frames} and {seconds}")
         configurations = self.path_configurations(np.linspace(0.0, 1.0, int(frames)))  # (F, dof)
-        looks, positions = draw.follow_camera(self.robot, configurations)  # (F, 3) each
+        looks, positions = framing.follow_camera(self.robot, configurations)  # (F, 3) each
         middle, before = looks.mean(axis=0), self.q  # the camera looks at the middle; the robot slides there
         with self.lock, camera_at(self.server, middle, middle + positions[0] - looks[0]):
             recording = self.server.get_scene_serializer()  # the scene now, then every scene message
@@ -373,20 +355,6 @@ class Viewer:
         self.stop()
 
     # -- internals ------------------------------------------------------------------------
-    def _load_model(self) -> tuple[CollisionChecker | None, str]:
-        """The predictor's checker for this workspace, or None and why it does not apply."""
-        if self.predictor is None:
-            return None, ""
-        try:
-            model = self.predictor(self.workspace)
-        except (ValueError, FileNotFoundError) as err:  # e.g. a checkpoint of another scenario
-            return None, str(err)
-        if not isinstance(model, Predicts):
-            return None, f"the predictor's {type(model).__name__} gives no probability(Q)"
-        if model.robot.name != self.robot.name:
-            return None, f"the model is for robot {model.robot.name!r}, this scenario's is {self.robot.name!r}"
-        return model, ""
-
     def _show_disagreement(self) -> None:
         self.nodes["disagreement"].visible = self.visible["prediction"] and self.predicted_valid != self.valid
 

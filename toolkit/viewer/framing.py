@@ -1,0 +1,149 @@
+"""Where the camera stands: framing a whole workspace, following a robot, and finding the clearest view of it.
+
+A scene is only as good as its camera. :func:`camera_pose` frames the workspace for the live viewer (§IV-A's
+scenes); :func:`follow_camera` keeps a moving robot framed through a motion; :func:`robot_camera` frames one
+configuration for a snapshot, and given the samples shown, :func:`clear_view` moves it to where no sample mark or
+block hides the robot.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import numpy.typing as npt
+
+from toolkit.geometry.robots import BoxRobot
+from toolkit.geometry.workspace import Workspace
+from toolkit.viewer.drawing import FLAT_ROBOT_HEIGHT, config_points, lift_points, obstacle_boxes
+
+# Camera by the robot's base kind: what to look at, and the offset to the camera in workspace extents.
+CAMERA = {
+    "point2d": ("region", (-0.1, -0.75, 0.8)),  # the whole flat scene
+    "planar": ("robot", (-0.05, -0.2, 0.18)),  # near the youBot: it is small in its big office
+    "free": ("region", (-0.6, -1.3, 0.9)),  # the whole clutter, from outside
+}
+
+
+def camera_pose(robot: BoxRobot, workspace: Workspace, q: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """``(look_at, position)`` of the camera, from the front-left (see :data:`CAMERA`)."""
+    target, offset = CAMERA[robot.base]
+    if target == "robot":
+        look_at = config_points(robot, q[None])[0] * np.array([1.0, 1.0, 0.0])  # its base, on the floor
+    else:
+        look_at = lift_points((workspace.lower + workspace.upper) / 2, 0.0)
+        look_at[0] += 0.1 * float(workspace.upper[0] - workspace.lower[0])  # to the right: the GUI panel covers it
+    return look_at, look_at + float(np.max(workspace.upper - workspace.lower)) * np.array(offset)
+
+
+ROBOT_VIEW = (-0.45, -1.0, 0.7)  # a robot camera's direction: from the front-left and above (length ~1.3: it fits)
+ROBOT_SPAN = 2.5  # a robot's camera frames this many robot sizes: the robot, large, and the blocks beside it
+
+
+def robot_camera(
+    robot: BoxRobot,
+    q,
+    *,
+    workspace: Workspace | None = None,
+    points: np.ndarray | None = None,
+    sizes: npt.ArrayLike = 0.0,
+) -> tuple[np.ndarray, np.ndarray]:
+    """``(look_at, position)`` of a camera that frames the robot at ``q (dof,)`` (a snapshot's), as
+    :func:`follow_camera` does at each configuration of a motion; given the scene's ``workspace`` and sample marks
+    (``points (N, 3)`` of ``sizes``, one or ``(N,)``, in workspace units), the clearest view of it
+    (:func:`clear_view`)."""
+    looks, positions = follow_camera(robot, robot.check_configs(q)[:1])
+    if workspace is None and points is None:
+        return looks[0], positions[0]
+    lo, hi = _link_bounds(robot, robot.check_configs(q)[:1])  # (3,) each
+    return looks[0], clear_view(looks[0], positions[0], float(np.max(hi - lo)) / 2, workspace, points, sizes)
+
+
+VIEW_FOV = np.deg2rad(75.0)  # viser's vertical field of view (its default, and the snapshots')
+VIEW_ASPECT = 1.5  # a notebook's view, width / height (the course site's: about 640 x 440 px)
+LARGE_MARK = 0.12  # a mark in front of the robot wider than this share of the view's height crowds it
+VIEW_ELEVATIONS = np.deg2rad([15.0, 30.0, 45.0, 60.0])  # the directions clear_view tries, above the horizon
+VIEW_DISTANCES = (0.7, 0.85, 1.0)  # and its distances, times the default's
+
+
+def clear_view(
+    look_at: np.ndarray,
+    default: np.ndarray,
+    radius: float,
+    workspace: Workspace | None,
+    points: np.ndarray | None,
+    sizes: npt.ArrayLike = 0.0,
+) -> np.ndarray:
+    """The camera position ``(3,)`` looking at ``look_at`` (a subject of ``radius``) that no sample mark hides and
+    no block stands in front of, nearest the ``default`` position's view.
+
+    viser draws a mark of width ``s`` at depth ``z`` ``s / (z tan(fov / 2))`` view heights wide: a mark a few
+    tenths of a unit from the camera covers half the picture. Tried: :data:`VIEW_ELEVATIONS` x 24 headings x
+    :data:`VIEW_DISTANCES`. Each pays for the marks in front of the subject (:func:`_marks_in_the_way`), 10 times
+    the share of its line of sight inside blocks, and half its turn from the default (radians) and its change of
+    distance (a share); a camera inside a block or below the floor is never taken.
+    """
+    look_at, default = np.asarray(look_at, dtype=float), np.asarray(default, dtype=float)
+    d0 = float(np.linalg.norm(default - look_at))
+    heading = np.deg2rad(np.arange(0.0, 360.0, 15.0))
+    elevation, turn, scale = (a.ravel() for a in np.meshgrid(VIEW_ELEVATIONS, heading, VIEW_DISTANCES))
+    away = np.stack([np.cos(elevation) * np.cos(turn), np.cos(elevation) * np.sin(turn), np.sin(elevation)], -1)
+    cameras = look_at + (d0 * scale)[:, None] * away  # (C, 3)
+    cost = 0.5 * np.arccos(np.clip(away @ (default - look_at) / d0, -1.0, 1.0)) + 0.5 * np.abs(scale - 1.0)
+    if points is not None and len(points):
+        cost += _marks_in_the_way(cameras, look_at, radius, np.asarray(points, float), sizes)
+    if workspace is not None:
+        blocks = obstacle_boxes(workspace)
+        lo, hi = blocks.centers - blocks.sizes / 2, blocks.centers + blocks.sizes / 2  # (K, 3) each
+        t = np.linspace(0.0, 1.0, 17)[:, None, None] * (1.0 - radius / (d0 * scale))[None, :, None]  # (S, C, 1)
+        sight = cameras + t * (look_at - cameras)  # (S, C, 3): camera to the subject's near side
+        inside = np.all((sight[..., None, :] > lo) & (sight[..., None, :] < hi), axis=-1).any(axis=-1)  # (S, C)
+        cost += 10.0 * inside.mean(axis=0) + np.where(inside[0], np.inf, 0.0)
+        cost += np.where(cameras[:, 2] < lift_points(workspace.lower, 0.0)[2], np.inf, 0.0)
+    return cameras[np.argmin(cost)]
+
+
+def _marks_in_the_way(
+    cameras: np.ndarray, look_at: np.ndarray, radius: float, points: np.ndarray, sizes: npt.ArrayLike
+) -> np.ndarray:
+    """What the marks ``points (N, 3)`` of ``sizes`` cost each camera ``(C, 3)`` looking at ``look_at``: 10 per mark
+    in front of the subject overlapping it on the picture, plus 3 times each such mark's width beyond :data:`LARGE_MARK`
+    (a share of it)."""
+    forward = look_at - cameras  # (C, 3)
+    distance = np.linalg.norm(forward, axis=1, keepdims=True)
+    forward /= distance
+    right = np.cross(forward, [0.0, 0.0, 1.0])
+    right /= np.linalg.norm(right, axis=1, keepdims=True)
+    up = np.cross(right, forward)
+    rel = points[None] - cameras[:, None]  # (C, N, 3)
+    z, x, y = (np.einsum("cnk,ck->cn", rel, axis) for axis in (forward, right, up))  # (C, N) each
+    tan = np.tan(VIEW_FOV / 2)
+    depth = np.maximum(z, 1e-6) * tan  # half the view's height at each mark's depth
+    width = np.broadcast_to(np.asarray(sizes, dtype=float), points.shape[:1]) / depth  # (C, N) in view heights
+    # on the picture, in half its height: a mark's centre (x, y) / depth, its radius its width in view heights
+    seen = (z > 0) & (np.abs(y) / depth < 1 + width) & (np.abs(x) / depth < VIEW_ASPECT + width)
+    hides = seen & (z < distance) & (np.hypot(x, y) / depth < width + radius / (distance * tan))
+    crowds = np.where(seen & (z < distance), np.maximum(width - LARGE_MARK, 0.0) / LARGE_MARK, 0.0)
+    return 10.0 * hides.sum(axis=1) + 3.0 * crowds.sum(axis=1)
+
+
+def follow_camera(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
+    """``(look_at (T, 3), position (T, 3))``: a camera that keeps the robot framed at each configuration of
+    ``Q (T, dof)``. It looks at the mean of the link centres (it moves smoothly with the configuration), from
+    :data:`ROBOT_VIEW` scaled to :data:`ROBOT_SPAN` robot sizes: a robot small in its workspace fills a good
+    part of the picture, with the blocks beside it."""
+    centers, _, _ = robot.link_boxes(robot.check_configs(Q))  # (T, L, D)
+    look_at = lift_points(centers, FLAT_ROBOT_HEIGHT / 2).mean(axis=1)  # (T, 3)
+    return look_at, look_at + ROBOT_SPAN * robot_size(robot) * np.array(ROBOT_VIEW)
+
+
+def _link_bounds(robot: BoxRobot, Q) -> tuple[np.ndarray, np.ndarray]:
+    """The 3D min and max corner ``(3,), (3,)`` of the robot's links at the configurations ``Q (T, dof)``."""
+    aabbs = robot.link_aabbs(robot.check_configs(Q))  # (T, L, 2, D)
+    lo = lift_points(aabbs[:, :, 0].min(axis=(0, 1)), 0.0)  # (3,)
+    hi = lift_points(aabbs[:, :, 1].max(axis=(0, 1)), FLAT_ROBOT_HEIGHT)
+    return lo, hi
+
+
+def robot_size(robot: BoxRobot) -> float:
+    """The largest extent of the robot at its zero configuration (its joints straight), in workspace units."""
+    lo, hi = _link_bounds(robot, np.clip(np.zeros(robot.dof), robot.lower, robot.upper))
+    return float(np.max(hi - lo))
