@@ -402,7 +402,19 @@ def test_launch_joins_one_panel_to_the_viewer(capsys):
 
 
 # the order of the modules in toolkit/viewer/__init__.py's docstring
-READING_ORDER = ["drawing", "framing", "server", "address", "labels", "snapshot", "models", "scene", "panel", "app", "browser"]
+READING_ORDER = [
+    "drawing",
+    "framing",
+    "server",
+    "address",
+    "labels",
+    "snapshot",
+    "models",
+    "scene",
+    "panel",
+    "app",
+    "browser",
+]
 
 
 def viewer_imports(source: str) -> set[str]:
