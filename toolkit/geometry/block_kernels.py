@@ -26,20 +26,58 @@ every configuration of the block; step 3, where a configuration's answer can com
 only loop that branches. It reads the block's arrays in place, numbers only, never a view of them (in a loop
 this hot a view costs more than the tests).
 
-The robot and the workspace arrive as arrays (:class:`toolkit.geometry.compiled.CompiledChecker`
-builds them), never as constants, so one compiled version serves every robot and
-workspace; ``cache=True`` keeps it on disk (see :mod:`toolkit.geometry.kernels`).
+The robot and the workspace arrive as arrays, in one object (:class:`Arrays`, from the arrays
+:class:`toolkit.geometry.compiled.CompiledChecker` builds), never as constants, so one compiled version serves
+every robot and workspace; ``cache=True`` keeps it on disk (see :mod:`toolkit.geometry.kernels`).
 """
 
 from __future__ import annotations
 
 import numpy as np
-from numba import njit
+from numba import njit, types
+from numba.experimental import structref
 
 from toolkit.geometry.frame_kernels import block_frames, first_angle
 from toolkit.geometry.kernels import boxes_touch
 
 BLOCK = 128  # configurations posed together (64 and 512 measured slower, 256 no faster)
+
+
+@structref.register
+class ArraysType(types.StructRef):
+    """numba's type of :class:`Arrays`."""
+
+
+class Arrays(structref.StructRefProxy):
+    """What :func:`validity` reads besides the configurations, in one object (made by :func:`arrays`): the robot
+    (:class:`toolkit.geometry.compiled.Robot`), the world (:class:`~toolkit.geometry.compiled.World`), numbers
+    derived from them once rather than at every call (``walls (6,)``, ``corner (3,)``, ``balls (2, L)``, as
+    :func:`_link_touches` reads them).
+
+    It is about a call's fixed cost, which a planner's calls of tens of configurations pay again and again: numba
+    unpacks every argument of a call, about 35 ns an array, and a robot and a world are 17 arrays in named tuples
+    (0.6 us, as long as checking 8 configurations); this object is one pointer (0.1 us). Made by one function from
+    arrays laid out alike, it always has the same numba type: one compiled version serves all."""
+
+
+structref.define_constructor(Arrays, ArraysType, ["robot", "world", "walls", "corner", "balls"])
+structref.define_boxing(ArraysType, Arrays)
+
+
+@njit(cache=True)
+def arrays(robot, world) -> Arrays:
+    """The :class:`Arrays` of ``robot`` and ``world`` (with its far bits): they and, computed once rather than at
+    every call, the region's walls padded to 3D with infinities, its grid's corner (0 where padded) and per link the
+    squared radii of a ball holding its box and of one it holds, a billionth inside the truth."""
+    half, n_links, dim = robot.half_extents, len(robot.half_extents), len(world.lower)
+    walls, corner, balls = np.empty(6), np.empty(3), np.empty((2, n_links))
+    for i in range(3):
+        walls[i], walls[3 + i] = (world.lower[i], world.upper[i]) if i < dim else (-np.inf, np.inf)
+        corner[i] = world.lower[i] if i < dim else 0.0
+    for link in range(n_links):
+        balls[0, link] = (half[link, 0] ** 2 + half[link, 1] ** 2 + half[link, 2] ** 2) * (1 + 1e-9)
+        balls[1, link] = min(half[link, 0], half[link, 1], half[link, 2] if dim == 3 else np.inf) ** 2 * (1 - 1e-9)
+    return Arrays(robot, world, walls, corner, balls)
 
 
 @njit(cache=True, inline="always")
@@ -157,28 +195,24 @@ def _link_touches(centers, rotations, link, b, half, walls, first, count, member
 
 
 @njit(cache=True)
-def validity(Q, robot, world, valid):
+def validity(Q, arrays, valid):
     """Fill ``valid (N,)`` for configurations ``Q (N, dof)``: the steps in the module's docstring, each
-    configuration stopping at its first failure. ``robot``, ``world``: arrays
-    (:class:`toolkit.geometry.compiled.Robot`, :class:`~toolkit.geometry.compiled.World`, with its far bits).
-    Returns whether every number of ``Q`` is finite (where one is not, ``valid`` means nothing)."""
-    half, n_links, dim = robot.half_extents, len(robot.half_extents), len(world.lower)
+    configuration stopping at its first failure; ``arrays``: the robot's and the world's (:class:`Arrays`).
+    Returns whether ``Q`` has the robot's ``dof`` columns and every number of it is finite (else ``valid`` means
+    nothing)."""
+    robot, world, walls, corner, balls = arrays.robot, arrays.world, arrays.walls, arrays.corner, arrays.balls
+    if Q.shape[1] != len(robot.lower):
+        return False
+    half, n_links = robot.half_extents, len(robot.half_extents)
     width = max(min(BLOCK, len(Q)), 1)  # a small call's arrays: no wider than it
-    # few allocations (each costs about as much as checking a configuration): numbers, then the block's arrays
-    numbers = np.empty(36 + 2 * n_links)
-    walls, corner, scratch, balls = numbers[:6], numbers[6:9], numbers[9:36], numbers[36:].reshape(2, n_links)
-    for i in range(3):  # the region, padded to 3D with infinities, and its grid's corner, 0 where padded
-        walls[i], walls[3 + i] = (world.lower[i], world.upper[i]) if i < dim else (-np.inf, np.inf)
-        corner[i] = world.lower[i] if i < dim else 0.0
-    for link in range(n_links):  # squared radii of a ball holding each link box and of one it holds
-        balls[0, link] = (half[link, 0] ** 2 + half[link, 1] ** 2 + half[link, 2] ** 2) * (1 + 1e-9)
-        balls[1, link] = min(half[link, 0], half[link, 1], half[link, 2] if dim == 3 else np.inf) ** 2 * (1 - 1e-9)
+    # few allocations (each costs about as much as checking a configuration)
     trig = np.zeros((3, Q.shape[1] - first_angle(robot), width))  # (3, A, W); past a short last block: stale
     angles, sines, cosines = trig[0], trig[1], trig[2]
     position, rotation = np.empty((3, width)), np.empty((3, 3, width))
     centers, rotations = np.empty((n_links, 3, width)), np.empty((n_links, 3, 3, width))
     cells = np.empty((n_links + 2, width), np.int64)
     needs, far_at, at = cells[0], cells[1], cells[2:]
+    scratch = np.empty(27)  # a link box and an obstacle box, as boxes_touch takes them
     first_box, box_count, members = world.cell_first, world.cell_count, world.cell_boxes
     finite = True
     for first in range(0, len(Q), width):

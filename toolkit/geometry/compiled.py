@@ -28,6 +28,7 @@ from toolkit.geometry.workspace import Workspace
 FAR_CELL = 1.5  # the far bits' cells: this many times the smallest link ball's radius wide
 FAR_CELLS = 128  # or a 128th of the region's longest axis, if wider
 FLOAT64 = np.dtype(np.float64)  # the dtype of configurations the compiled loop takes as they are
+BOOL = np.dtype(np.bool_)  # its answers'
 
 
 ENTRY_POINTS: dict[tuple, Any] = {}  # compiled versions of the kernels, by name and arguments' layout (entry_point)
@@ -100,42 +101,38 @@ class CompiledChecker(BoxWorldChecker):
         reach = float(np.max(np.linalg.norm(robot.half_extents, axis=1))) * (1 + 1e-9)
         self._world = world_arrays(self.grid, grow=reach)._replace(far=far_grid(workspace, robot))
         self._validity = self._clearance = None  # the compiled kernels for these arrays, once known (entry_point)
+        self._arrays: Any = None  # the robot's and the world's arrays in one object (block_kernels.Arrays), once made
         self._grown: dict[float, World] = {}  # clearances: the world with boxes grown by cap, by cap
 
     def are_valid(self, Q):
         """:meth:`CollisionChecker.are_valid`; what a planner passes, a float64 array ``(N, dof)`` in C order, goes
-        straight to the compiled loop, which also says whether every number was finite (where one is not, the same
-        error as ever): a call of 32 configurations then costs little more than checking them."""
-        if not (
-            self._validity is not None
-            and type(Q) is np.ndarray
-            and Q.dtype is FLOAT64
-            and Q.ndim == 2
-            and Q.shape[1] == self.robot.dof
-            and Q.flags.carray  # C order, aligned, writable: the compiled version's layout
-        ):
-            return super().are_valid(Q)
-        valid = np.empty(len(Q), dtype=bool)
-        if not self._validity(Q, self._robot, self._world, valid):
-            self.robot.check_configs(Q)  # raises: NaN or infinite values
-        self.n_checked += len(Q)
-        return valid
+        straight to the compiled loop, which also checks its columns and that every number is finite (where not, the
+        reference's path gives the same error as ever): a call of 32 configurations then costs little more than
+        checking them. Each test here costs about as much as checking a configuration, so there are few."""
+        if type(Q) is np.ndarray and Q.dtype is FLOAT64 and Q.ndim == 2 and Q.flags.carray and self._validity:
+            valid = np.empty(len(Q), BOOL)
+            if self._validity(Q, self._arrays, valid):
+                self.n_checked += len(Q)
+                return valid
+        return super().are_valid(Q)
 
     def validity(self, Q: np.ndarray) -> np.ndarray:
         Q, valid = np.ascontiguousarray(Q, dtype=np.float64), np.empty(len(Q), dtype=bool)
         if self._validity is not None and Q.flags.writeable:  # the compiled version itself: no dispatch, no import
-            self._validity(Q, self._robot, self._world, valid)
+            self._validity(Q, self._arrays, valid)
             return valid
         from toolkit.geometry import block_kernels  # numba loads (or compiles) on first use, not on import
 
-        block_kernels.validity(Q, self._robot, self._world, valid)
+        if self._arrays is None:
+            self._arrays = block_kernels.arrays(self._robot, self._world)
+        block_kernels.validity(Q, self._arrays, valid)
         if Q.flags.writeable:
-            self._validity = entry_point(block_kernels.validity, (Q, self._robot, self._world, valid))
+            self._validity = entry_point(block_kernels.validity, (Q, self._arrays, valid))
         return valid
 
     def __getstate__(self) -> dict:
         # a compiled function does not pickle; the copy looks it up again
-        return self.__dict__ | {"_validity": None, "_clearance": None}
+        return self.__dict__ | {"_validity": None, "_clearance": None, "_arrays": None}
 
     def clearance_bounds(self, Q: np.ndarray, cap: float) -> np.ndarray:
         """The bound of :meth:`BoxWorldChecker.clearance_bounds`, compiled."""
