@@ -6,11 +6,13 @@ import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.colors import to_hex, to_rgba
+from matplotlib.markers import MarkerStyle
 from matplotlib.text import Text
 
 from toolkit import scenarios
 from toolkit.geometry.collision import exact_checker
 from toolkit.plots import dof_panels, robot_drawing, scenes
+from toolkit.plots.alt import alt_text
 from toolkit.plots.palette import contrast
 from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR
 
@@ -36,6 +38,14 @@ def crossing():
 
 def links(ax):
     return [c for c in ax.collections if c.get_gid() == "link"]
+
+
+def shape(mark) -> np.ndarray:
+    """A marker's outline ``(V, 2)`` scaled to unit size: a collection's path or a marker's name."""
+    if isinstance(mark, str):
+        style = MarkerStyle(mark)
+        mark = style.get_path().transformed(style.get_transform())
+    return mark.vertices / np.abs(mark.vertices).max()
 
 
 def line(ax, gid):
@@ -190,12 +200,44 @@ def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose
     assert drawn == {"sample, valid": int(valid.sum()), "sample, in collision": int((~valid).sum())}
     names = [t.get_text() for t in fig.legends[0].get_texts()]
     assert "robot: start" in names and "robot, valid" in names and "robot, in collision" in names
-    for close_up in (start, end):  # the robot seen whole: no sample over it, its links told apart, the trace dashed
-        assert not [c for c in close_up.collections if c.get_label().startswith("sample")]
+    for close_up in (start, end):  # the samples inside its window, shaped by validity; links told apart; trace dashed
+        lo, hi = np.array([close_up.get_xlim(), close_up.get_ylim(), close_up.get_zlim()]).T  # (3,) each
+        inside = np.all((points >= lo) & (points <= hi), axis=1)  # (T,)
+        marks = {c.get_label(): c for c in close_up.collections if c.get_label().startswith("sample")}
+        for kind, mask, marker in (("valid", valid, "o"), ("in collision", ~valid, "D")):
+            expected = points[inside & mask]  # (n, 3)
+            assert (len(marks[f"sample, {kind}"]._offsets3d[0]) if f"sample, {kind}" in marks else 0) == len(expected)
+            assert expected.size == 0 or np.allclose(shape(marks[f"sample, {kind}"].get_paths()[0]), shape(marker))
+        assert inside.any()  # the path passes its own poses: the test sees samples in each close-up
         parts = links(close_up)
         assert {float(c.get_linewidth()[0]) for c in parts} == {1.0}
         assert len(parts) < 2 or parts[0].get_alpha() != parts[1].get_alpha()
     assert all(line.get_linestyle() == "--" for ax in fig.axes for line in ax.get_lines())
+
+
+def test_a_stills_overview_thins_a_dense_cloud_and_its_text_says_so(crossing):
+    robot, workspace, _, _, _ = crossing
+    n = 2 * scenes.OVERVIEW_SAMPLES + 1
+    points = robot.link_boxes(robot.sample(np.random.default_rng(0), n))[0][:, 0]  # (n, 3) bases
+    valid = np.arange(n) % 5 == 0  # (n,) every 5th: 0, 5, 10, ...
+    fig = scenes.scene_still(
+        robot,
+        workspace,
+        {"here": robot.sample(np.random.default_rng(1), 1)[0]},
+        samples=(points, {"valid": valid, "in collision": ~valid}),
+    )
+    overview, close_up = fig.axes
+    drawn = {c.get_label(): c for c in overview.collections if c.get_label().startswith("sample")}
+    kept = np.arange(n) % 3 == 0  # 1 in 3: at most OVERVIEW_SAMPLES of 2 * OVERVIEW_SAMPLES + 1
+    assert len(drawn["sample, valid"].get_offsets()) == int((kept & valid).sum())
+    assert len(drawn["sample, in collision"].get_offsets()) == int((kept & ~valid).sum())
+    assert all(c.get_alpha() < 1 for c in drawn.values())  # lighter: the blocks show through
+    lo, hi = np.array([close_up.get_xlim(), close_up.get_ylim(), close_up.get_zlim()]).T  # (3,) each
+    near = int(np.all((points >= lo) & (points <= hi), axis=1).sum())  # every sample in its window, thinned or not
+    assert f"{int(valid.sum())} samples valid (circles), {int((~valid).sum())} samples in collision" in alt_text(fig)
+    assert "in collision (diamonds), 1 sample in 3 drawn, lighter" in alt_text(fig) and alt_text(fig).endswith(
+        f"here, {near} samples near it."
+    )
 
 
 def test_a_stills_model_wrong_star_is_hollow_round_the_mark_it_flags(crossing):

@@ -53,6 +53,8 @@ SAMPLE_WORDS = {
     "in collision": "diamonds",
     "model wrong": "hollow stars round their marks",
 }  # SAMPLE_MARKS in words
+OVERVIEW_SAMPLES = 500  # at most this many samples in a still's overview: more hide the blocks and the robot
+_STATE = {None: "", True: ", valid", False: ", in collision"}  # a pose's verdict, as a title and its text say it
 POSE_MARKERS = ("s", "P", "*", "^", "v", "X")  # the poses of a still, marked at their base in its overview
 
 
@@ -71,25 +73,24 @@ def scene_still(
     circles valid, diamonds in collision, hollow stars round them where a model is wrong), the ``trace (T, 3)`` of
     the robot's base along a path (dashed) and each pose marked at its base; then one close-up per pose
     ``{label: q (dof,)}``, the robot's link boxes among the blocks within ``margin`` (the valid colour, or the invalid
-    one hatched, by ``valid``; every other link lighter) and the trace, no samples over it."""
+    one hatched, by ``valid``; every other link lighter), the samples inside its window and the trace. Of more than
+    :data:`OVERVIEW_SAMPLES` samples the overview draws every k-th, lighter, so the blocks and the robot show."""
     if robot.dim != 3:
         raise ValueError(f"a scene's still is drawn in 3D; the {robot.name} robot moves in {robot.dim}D")
     valid = valid or {}
     rows = -(-(1 + len(poses)) // 2)
     fig = Figure(figsize=(PAGE_WIDTH, 3.7 * rows + 0.9))  # as wide as the page: its text as large as it is drawn
     _overview(fig.add_subplot(rows, 2, 1, projection="3d"), robot, workspace, poses, samples, trace)
-    said = []
+    near = {}  # pose -> samples drawn in its close-up
     for k, (label, q) in enumerate(poses.items()):
         ax = fig.add_subplot(rows, 2, k + 2, projection="3d")
         ok = valid.get(label)
         color = UNCHECKED_COLOR if ok is None else VALID_COLOR if ok else INVALID_COLOR
         draw_robot(ax, robot, np.asarray(q)[None], colors=[color], view="3d", workspace=workspace, margin=margin)
         _tell_links_apart(ax)
-        _draw_points(ax, None, trace, clip=True)  # the samples in the overview only: none hides the robot here
+        near[label] = _draw_points(ax, samples, trace, clip=True, scale=2.0)  # a small window: larger marks
         few_ticks(ax)
-        state = "" if ok is None else ", valid" if ok else ", in collision"
-        ax.set_title(f"{label}, close up{state}", fontsize=10)
-        said.append(f"{label}{state}")
+        ax.set_title(f"{label}, close up{_STATE[ok]}", fontsize=10)
     handles = {name: h for ax in fig.axes for h, name in zip(*ax.get_legend_handles_labels())}
     shown = {ok for ok in valid.values() if ok is not None}  # the robot's states drawn: name those alone
     handles |= {
@@ -99,17 +100,20 @@ def scene_still(
     }
     fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=3, fontsize=9, frameon=False)
     fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1))
-    return describe(fig, *_still_described(robot, workspace, poses, valid, samples, trace, said))
+    return describe(fig, *_still_described(robot, workspace, poses, valid, samples, trace, near))
 
 
-def _still_described(robot: BoxRobot, workspace: Workspace, poses, valid, samples, trace, said) -> tuple[str, list]:
-    """A still's text alternative and its longer description (what each panel draws, each pose's values)."""
+def _still_described(robot: BoxRobot, workspace: Workspace, poses, valid, samples, trace, near) -> tuple[str, list]:
+    """A still's text alternative and its longer description (what each panel draws, each pose's values and the
+    samples ``near`` it, ``{label: count}``)."""
     text = f"The {robot.name} robot in workspace {workspace.family} ({len(workspace.boxes)} blocks) as a still: "
     text += "the whole workspace"
     if samples is not None:
         text += ", " + ", ".join(
             f"{int(m.sum())} samples {kind} ({SAMPLE_WORDS[kind]})" for kind, m in samples[1].items() if m.any()
         )
+        step = _overview_step(len(samples[0]))
+        text += f", 1 sample in {step} drawn, lighter" if step > 1 else ""
     text += ", the path of the robot's base" if trace is not None else ""
     counted = [("blocks", str(len(workspace.boxes)))]
     counted += [(f"samples {kind}", str(int(m.sum()))) for kind, m in (samples[1].items() if samples else ())]
@@ -119,16 +123,22 @@ def _still_described(robot: BoxRobot, workspace: Workspace, poses, valid, sample
         Part(
             "the robot close up",
             "each pose's joint values, in the robot's order, and what the exact checker says of it",
-            ("pose", "exact checker", "configuration"),
+            ("pose", "exact checker", "samples drawn near it", "configuration"),
             tuple(
                 (
                     label,
                     {None: "not checked", True: "valid", False: "in collision"}[valid.get(label)],
+                    str(near[label]),
                     ", ".join(f"{v:.2f}" for v in np.asarray(q)),
                 )
                 for label, q in poses.items()
             ),
         ),
+    ]
+    said = [
+        f"{label}{_STATE[valid.get(label)]}"
+        + (f", {near[label]} sample{'s' * (near[label] != 1)} near it" if samples else "")
+        for label in poses
     ]
     return text + "; then the robot close up among the blocks near it: " + "; ".join(said) + ".", parts
 
@@ -137,7 +147,11 @@ def _overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, np.nda
     """A still's first panel: the whole workspace, its samples and path, each pose marked at the robot's base."""
     for lo, hi in workspace.boxes:
         add_box_3d(ax, aabb_corners(lo, hi), linewidth=0.2, alpha=0.2, **BLOCK_STYLE)
-    _draw_points(ax, samples, trace)
+    if samples is not None:  # every k-th, lighter, under the poses' marks
+        keep = np.arange(len(samples[0])) % _overview_step(len(samples[0])) == 0  # (N,)
+        samples = (samples[0][keep], {kind: mask[keep] for kind, mask in samples[1].items()})
+    _draw_points(ax, samples, trace, alpha=0.45)
+    ax.computed_zorder = False  # the poses' marks in front of every sample
     for k, (label, q) in enumerate(poses.items()):
         base = robot.link_boxes(np.asarray(q)[None])[0][0, 0]  # (3,) the first link's centre
         ax.scatter(
@@ -148,6 +162,7 @@ def _overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, np.nda
             edgecolors=COLORS["ink"],
             linewidths=1.2,
             depthshade=False,
+            zorder=5,
             label=f"robot: {label}",
         )
     frame_region(ax, workspace)
@@ -163,31 +178,43 @@ def _tell_links_apart(ax) -> None:
         link.set_alpha(0.9 if k % 2 == 0 else 0.55)
 
 
-def _draw_points(ax, samples, trace, clip: bool = False) -> None:
+def _overview_step(n: int) -> int:
+    """k: a still's overview draws every k-th of ``n`` samples, at most :data:`OVERVIEW_SAMPLES`."""
+    return -(-n // OVERVIEW_SAMPLES)
+
+
+def _draw_points(ax, samples, trace, clip: bool = False, alpha: float = 1.0, scale: float = 1.0) -> int:
     """The samples ``(points (N, 3), {kind: mask})`` by kind and the base's ``trace (T, 3)`` on a 3D axes; with
-    ``clip``, only what lies inside the axes' window (mplot3d does not clip)."""
+    ``clip``, only what lies inside the axes' window (mplot3d does not clip); marks ``scale`` times their size, with
+    ``alpha``. Returns how many samples it drew."""
+    drawn = np.zeros(0 if samples is None else len(samples[0]), dtype=bool)  # (N,)
     for kind, mask in ({} if samples is None else samples[1]).items():
-        points = samples[0][mask]
-        points = _inside(ax, points) if clip else points
-        if len(points):
+        mask = mask & _inside_mask(ax, samples[0]) if clip else mask
+        drawn |= mask
+        if mask.any():
             marker, color, size = SAMPLE_MARKS[kind]
             style = dict(color=color) if kind != "model wrong" else WRONG_STYLE  # a star round the mark, not over it
-            ax.scatter(*points.T, marker=marker, s=size, depthshade=False, label=f"sample, {kind}", **style)
+            ax.scatter(
+                *samples[0][mask].T,
+                marker=marker,
+                s=size * scale,
+                depthshade=False,
+                alpha=alpha,
+                label=f"sample, {kind}",
+                **style,
+            )
     if trace is not None:
         points = trace.copy()
         if clip:
             points[~_inside_mask(ax, points)] = np.nan
         ax.plot(*points.T, linewidth=2.0, path_effects=halo(2.0), label="path of the base (dashed)", **TRACE_STYLE)
+    return int(drawn.sum())
 
 
 def _inside_mask(ax, points: np.ndarray) -> np.ndarray:
     """``(N,)`` bool: which ``points (N, 3)`` lie inside the 3D axes' window."""
     lo, hi = np.array([ax.get_xlim(), ax.get_ylim(), ax.get_zlim()]).T  # (3,) each
     return np.all((points >= lo) & (points <= hi), axis=1)
-
-
-def _inside(ax, points: np.ndarray) -> np.ndarray:
-    return points[_inside_mask(ax, points)]
 
 
 def path_frame(
@@ -223,7 +250,7 @@ def path_frame(
         for name, values in (("valid", valid), ("clearance", clearance), ("probability", probability))
     }
     fig = Figure(figsize=(PAGE_WIDTH, 6.6))  # as wide as the page: its text as large as it is drawn
-    grid = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.0), wspace=0.6, top=0.8, bottom=0.08, left=0.02, right=0.88)
+    grid = fig.add_gridspec(1, 2, width_ratios=(1.3, 1.0), wspace=0.75, top=0.8, bottom=0.08, left=0.05, right=0.88)
     valid_now = None if series["valid"] is None else bool(series["valid"][index])
     _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, valid_now, workspace, margin)
     _draw_series(fig, grid[1], robot, Q, index, series, threshold)
@@ -343,7 +370,8 @@ def _draw_scene(
     draw_robot(scene, robot, Q[index : index + 1], colors=[color], view="3d", workspace=workspace, margin=margin)
     _draw_trace(scene, robot, Q)
     verdict = "" if valid is None else ": valid" if valid else ": in collision"
-    scene.set_title(f"the robot and the blocks near it{verdict}", fontsize=9)
+    scene.set_title(f"the robot, blocks near it{verdict}", fontsize=9)
+    scene.set_box_aspect(None, zoom=1.15)  # the robot larger in its panel: mplot3d leaves wide margins
     scene.locator_params(nbins=4)  # few tick labels: drawing text is most of a frame's cost
     scene.tick_params(labelsize=8)
 
