@@ -206,9 +206,8 @@ def validity(Q, arrays, valid):
     half, n_links = robot.half_extents, len(robot.half_extents)
     width = max(min(BLOCK, len(Q)), 1)  # a small call's arrays: no wider than it
     # few allocations (each costs about as much as checking a configuration)
-    trig = np.zeros((3, Q.shape[1] - first_angle(robot), width))  # (3, A, W); past a short last block: stale
-    angles, sines, cosines = trig[0], trig[1], trig[2]
-    position, rotation = np.empty((3, width)), np.empty((3, 3, width))
+    trig = np.empty((3, (Q.shape[1] - first_angle(robot)) * width))  # (3, A * W): angles, sines, cosines
+    position = np.empty((3, width))
     centers, rotations = np.empty((n_links, 3, width)), np.empty((n_links, 3, 3, width))
     cells = np.empty((n_links + 2, width), np.int64)
     needs, far_at, at = cells[0], cells[1], cells[2:]
@@ -217,7 +216,7 @@ def validity(Q, arrays, valid):
     finite = True
     for first in range(0, len(Q), width):
         block = min(width, len(Q) - first)
-        block_frames(Q, first, block, robot, angles, sines, cosines, position, rotation, centers, rotations)
+        block_frames(Q, first, block, robot, trig[0], trig[1], trig[2], position, centers, rotations)
         finite &= _block_needs(Q, first, block, robot, centers, world.far, world, corner, needs, at, far_at)
         for b in range(block):
             need, link = needs[b], 0
