@@ -52,23 +52,29 @@ class Arrays(structref.StructRefProxy):
     """What :func:`validity` reads besides the configurations, in one object (made by :func:`arrays`): the robot
     (:class:`toolkit.geometry.compiled.Robot`), the world (:class:`~toolkit.geometry.compiled.World`), numbers
     derived from them once rather than at every call (``walls (6,)``, ``corner (3,)``, ``balls (2, L)``, as
-    :func:`_link_touches` reads them).
+    :func:`_link_touches` reads them), and the loop's scratch for a block: ``trig (3, A * BLOCK)`` (angles, sines,
+    cosines), ``position (3, BLOCK)``, ``centers (L, 3, BLOCK)``, ``rotations (L, 3, 3, BLOCK)`` as
+    :func:`~toolkit.geometry.frame_kernels.block_frames` fills them, ``cells (L + 2, BLOCK)`` as :func:`_block_needs`
+    fills them, ``box (27,)`` as :func:`_link_touches` uses it.
 
     It is about a call's fixed cost, which a planner's calls of tens of configurations pay again and again: numba
     unpacks every argument of a call, about 35 ns an array, and a robot and a world are 17 arrays in named tuples
-    (0.6 us, as long as checking 8 configurations); this object is one pointer (0.1 us). Made by one function from
+    (0.6 us, as long as checking 8 configurations); this object is one pointer (0.1 us). Allocating the scratch
+    anew cost a call of 16 configurations about 0.15 us more. A checker's scratch is its own, and no two calls use
+    it at once: the loop holds Python's interpreter lock (numba's ``nogil`` is off). Made by one function from
     arrays laid out alike, it always has the same numba type: one compiled version serves all."""
 
 
-structref.define_constructor(Arrays, ArraysType, ["robot", "world", "walls", "corner", "balls"])
+FIELDS = ["robot", "world", "walls", "corner", "balls", "trig", "position", "centers", "rotations", "cells", "box"]
+structref.define_constructor(Arrays, ArraysType, FIELDS)
 structref.define_boxing(ArraysType, Arrays)
 
 
 @njit(cache=True)
 def arrays(robot, world) -> Arrays:
-    """The :class:`Arrays` of ``robot`` and ``world`` (with its far bits): they and, computed once rather than at
-    every call, the region's walls padded to 3D with infinities, its grid's corner (0 where padded) and per link the
-    squared radii of a ball holding its box and of one it holds, a billionth inside the truth."""
+    """The :class:`Arrays` of ``robot`` and ``world`` (with its far bits): they, the loop's scratch and, computed once
+    rather than at every call, the region's walls padded to 3D with infinities, its grid's corner (0 where padded)
+    and per link the squared radii of a ball holding its box and of one it holds, a billionth inside the truth."""
     half, n_links, dim = robot.half_extents, len(robot.half_extents), len(world.lower)
     walls, corner, balls = np.empty(6), np.empty(3), np.empty((2, n_links))
     for i in range(3):
@@ -77,7 +83,10 @@ def arrays(robot, world) -> Arrays:
     for link in range(n_links):
         balls[0, link] = (half[link, 0] ** 2 + half[link, 1] ** 2 + half[link, 2] ** 2) * (1 + 1e-9)
         balls[1, link] = min(half[link, 0], half[link, 1], half[link, 2] if dim == 3 else np.inf) ** 2 * (1 - 1e-9)
-    return Arrays(robot, world, walls, corner, balls)
+    trig = np.empty((3, (len(robot.lower) - first_angle(robot)) * BLOCK))
+    position, centers, rotations = np.empty((3, BLOCK)), np.empty((n_links, 3, BLOCK)), np.empty((n_links, 3, 3, BLOCK))
+    cells = np.empty((n_links + 2, BLOCK), np.int64)
+    return Arrays(robot, world, walls, corner, balls, trig, position, centers, rotations, cells, np.empty(27))
 
 
 @njit(cache=True, inline="always")
@@ -203,21 +212,14 @@ def validity(Q, arrays, valid):
     robot, world, walls, corner, balls = arrays.robot, arrays.world, arrays.walls, arrays.corner, arrays.balls
     if Q.shape[1] != len(robot.lower):
         return False
-    half, n_links = robot.half_extents, len(robot.half_extents)
-    width = max(min(BLOCK, len(Q)), 1)  # a small call's arrays: no wider than it
-    # few allocations (each costs about as much as checking a configuration)
-    trig = np.zeros((3, Q.shape[1] - first_angle(robot), width))  # (3, A, W); past a short last block: stale
-    angles, sines, cosines = trig[0], trig[1], trig[2]
-    position, rotation = np.empty((3, width)), np.empty((3, 3, width))
-    centers, rotations = np.empty((n_links, 3, width)), np.empty((n_links, 3, 3, width))
-    cells = np.empty((n_links + 2, width), np.int64)
+    half, trig, position, cells = robot.half_extents, arrays.trig, arrays.position, arrays.cells  # scratch: Arrays
+    centers, rotations, scratch = arrays.centers, arrays.rotations, arrays.box
     needs, far_at, at = cells[0], cells[1], cells[2:]
-    scratch = np.empty(27)  # a link box and an obstacle box, as boxes_touch takes them
     first_box, box_count, members = world.cell_first, world.cell_count, world.cell_boxes
     finite = True
-    for first in range(0, len(Q), width):
-        block = min(width, len(Q) - first)
-        block_frames(Q, first, block, robot, angles, sines, cosines, position, rotation, centers, rotations)
+    for first in range(0, len(Q), BLOCK):
+        block = min(BLOCK, len(Q) - first)
+        block_frames(Q, first, block, robot, trig[0], trig[1], trig[2], position, centers, rotations)
         finite &= _block_needs(Q, first, block, robot, centers, world.far, world, corner, needs, at, far_at)
         for b in range(block):
             need, link = needs[b], 0

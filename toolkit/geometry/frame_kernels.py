@@ -106,36 +106,44 @@ def new_frame(dof):
 
 
 @njit(cache=True, inline="always")
-def _turn_block(rotations, axis, sines, cosines, block):
-    """:func:`_turn` for a block of rotations ``(3, 3, B)``, the last axis the configurations (vectorized)."""
+def _turn_block(source, target, axis, sines, cosines, at, block):
+    """:func:`_turn` for a block: ``target (3, 3, B)`` becomes ``source (3, 3, B)`` (the last axis the configurations;
+    it may be ``target`` itself) turned about its axis ``axis`` by the angles whose sines and cosines are
+    ``sines[at:at + block]``, ``cosines[at:at + block]``: per row one loop over the block (vectorized)."""
     j, k = (axis + 1) % 3, (axis + 2) % 3
     for row in range(3):
-        a, b = rotations[row, j], rotations[row, k]
+        a, b, keep = source[row, j], source[row, k], source[row, axis]
+        new_a, new_b, kept = target[row, j], target[row, k], target[row, axis]
         for n in range(block):
-            a_n, b_n = a[n], b[n]
-            a[n] = a_n * cosines[n] + b_n * sines[n]
-            b[n] = b_n * cosines[n] - a_n * sines[n]
+            a_n, b_n, s, c = a[n], b[n], sines[at + n], cosines[at + n]
+            new_a[n] = a_n * c + b_n * s
+            new_b[n] = b_n * c - a_n * s
+            kept[n] = keep[n]
 
 
 @njit(cache=True, inline="always")
-def block_frames(Q, first, block, robot, angles, sines, cosines, position, rotation, centers, rotations):
+def block_frames(Q, first, block, robot, angles, sines, cosines, position, centers, rotations):
     """:func:`link_frames` of the ``block`` configurations ``Q[first:first + block]`` at once, every loop over
     them, so that the compiler turns each into vector instructions: fills ``centers (L, 3, B)`` and
-    ``rotations (L, 3, 3, B)``; ``angles, sines, cosines (A, B)``, ``position (3, B)``, ``rotation (3, 3, B)``:
-    scratch."""
-    start = first_angle(robot)
-    for k in range(len(angles)):
+    ``rotations (L, 3, 3, B)`` (``B``: ``block`` or more); ``angles, sines, cosines (A * B,)``, ``position (3, B)``:
+    scratch. The angles lie packed, angle ``k`` of configuration ``n`` at ``k * block + n``, so that one loop of
+    ``A * block`` steps takes every sine and cosine of the block, however short it is.
+
+    A loop costs a few nanoseconds to enter whatever its length, and a planner's calls are short, so each link's
+    frame is turned from the last link's straight into its own (no copy)."""
+    start, count = first_angle(robot), (Q.shape[1] - first_angle(robot)) * block
+    for k in range(Q.shape[1] - start):
         for n in range(block):
-            angles[k, n] = Q[first + n, start + k]
-    flat_angles, flat_sines, flat_cosines = angles.reshape(-1), sines.reshape(-1), cosines.reshape(-1)
-    for t in range(len(flat_angles)):
-        flat_sines[t], flat_cosines[t] = sin_cos(flat_angles[t])
-    for t in range(len(flat_angles)):
-        if abs(flat_angles[t]) > SIN_COS_LIMIT:
-            flat_sines[t], flat_cosines[t] = any_sin_cos(flat_angles[t])
+            angles[k * block + n] = Q[first + n, start + k]
+    for t in range(count):
+        sines[t], cosines[t] = sin_cos(angles[t])
+    for t in range(count):
+        if abs(angles[t]) > SIN_COS_LIMIT:
+            sines[t], cosines[t] = any_sin_cos(angles[t])
+    base = rotations[0]
     for i in range(3):
         for j in range(3):
-            row = rotation[i, j]
+            row = base[i, j]
             for n in range(block):
                 row[n] = 1.0 if i == j else 0.0
     for n in range(block):
@@ -148,27 +156,23 @@ def block_frames(Q, first, block, robot, angles, sines, cosines, position, rotat
         for n in range(block):
             position[2, n] = height
     if robot.base == PLANAR:  # yaw
-        _turn_block(rotation, 2, sines[0], cosines[0], block)
+        _turn_block(base, base, 2, sines, cosines, 0, block)
     elif robot.base == FREE:  # Z-Y-X Euler angles
-        _turn_block(rotation, 2, sines[0], cosines[0], block)
-        _turn_block(rotation, 1, sines[1], cosines[1], block)
-        _turn_block(rotation, 0, sines[2], cosines[2], block)
+        _turn_block(base, base, 2, sines, cosines, 0, block)
+        _turn_block(base, base, 1, sines, cosines, block, block)
+        _turn_block(base, base, 0, sines, cosines, 2 * block, block)
     for link in range(len(centers)):
+        rotation = rotations[link]
         if link > 0:  # joint link - 1 carries this link
-            joint, origin = link - 1, robot.joint_origins[link - 1]
+            joint, origin, last = link - 1, robot.joint_origins[link - 1], rotations[link - 1]
             for i in range(3):
-                p, r0, r1, r2 = position[i], rotation[i, 0], rotation[i, 1], rotation[i, 2]
+                p, r0, r1, r2 = position[i], last[i, 0], last[i, 1], last[i, 2]
                 for n in range(block):
                     p[n] += r0[n] * origin[0] + r1[n] * origin[1] + r2[n] * origin[2]
             angle = base_angles(robot) + joint
-            _turn_block(rotation, robot.joint_axes[joint], sines[angle], cosines[angle], block)
+            _turn_block(last, rotation, robot.joint_axes[joint], sines, cosines, angle * block, block)
         offset = robot.link_offsets[link]
         for i in range(3):
             p, r0, r1, r2, center = position[i], rotation[i, 0], rotation[i, 1], rotation[i, 2], centers[link, i]
             for n in range(block):
                 center[n] = p[n] + r0[n] * offset[0] + r1[n] * offset[1] + r2[n] * offset[2]
-        for i in range(3):  # loops, not slices: a slice assigned to a slice may be copied first (an allocation)
-            for j in range(3):
-                source, target = rotation[i, j], rotations[link, i, j]
-                for n in range(block):
-                    target[n] = source[n]
