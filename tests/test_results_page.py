@@ -7,7 +7,7 @@ import re
 import pytest
 
 from toolkit.teaching import recorded
-from tools import recorded_results, results_summary
+from tools import recorded_results, results_summary, site
 
 TEXT = recorded_results.RESULTS.read_text()
 PAGE = " ".join(TEXT.split())  # whitespace made single spaces: a sentence wraps anywhere
@@ -176,3 +176,15 @@ def test_success_rates_differ_by_at_most_the_points_the_page_says():
         for without, with_ in [re.fullmatch(r"(\d+)% / (\d+)%", row[table["columns"].index(SUCCESS)]).groups()]
     ]
     assert len(gaps) == 3 * 16 and max(gaps) == int(points)
+
+
+def test_every_item_of_the_pages_lists_renders_as_a_list_item():
+    """Review r12a: a paragraph indented two spaces inside an item ended the list, so the six items after it ran
+    together as one paragraph with literal hyphens ("ms). - How queries are timed")."""
+    html = site.page_html(TEXT)
+    items = re.findall(r"(?m)^- \*([^*]+?)\*", TEXT)  # "- *How queries are timed*: ..."
+    assert len(items) >= 12
+    for item in items:
+        assert re.search(rf"<li>\s*(?:<p>)?<em>{re.escape(item)}</em>", html), f"not a list item on the page: {item}"
+    paragraphs = re.findall(r"<p>(.*?)</p>", html, re.S)
+    assert not [p[:60] for p in paragraphs if re.search(r"(?m)^\s*- ", p)], "a paragraph holds a literal list item"
