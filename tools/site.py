@@ -352,7 +352,7 @@ def navigation(docs: Path) -> list:
 def page_html(markdown_text: str) -> str:
     """The HTML that mkdocs makes of one Markdown page's body (``mkdocs.yml``'s Markdown extensions, no theme):
     what a test reads to see a list render as a list without building the site."""
-    import markdown
+    import markdown  # type: ignore[import-untyped]  # no stubs installed; mkdocs renders with it
     import yaml
 
     config = yaml.safe_load(CONFIG.read_text())
