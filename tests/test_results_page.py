@@ -215,3 +215,15 @@ def test_every_item_of_the_pages_lists_renders_as_a_list_item():
         assert re.search(rf"<li>\s*(?:<p>)?<em>{re.escape(item)}</em>", html), f"not a list item on the page: {item}"
     paragraphs = re.findall(r"<p>(.*?)</p>", html, re.S)
     assert not [p[:60] for p in paragraphs if re.search(r"(?m)^\s*- ", p)], "a paragraph holds a literal list item"
+
+
+def test_every_ratio_table_says_which_way_its_ratio_reads():
+    """Review r12a: "learned / exact" here is a throughput ratio, benchmarks.md's "network / default exact" a time
+    ratio; each table of ratios says in words which side of 1 means what."""
+    sections = re.split(r"(?m)^### ", TEXT)[1:]
+    for section in sections:
+        heading = section.partition("\n")[0]
+        if "medians over the queries" in heading:
+            assert "Above 1, prediction cost time; below 1, it saved time." in section, heading
+        if "Checker throughput" in heading:
+            assert "Above 1, the network is the faster check; below 1, the exact checker is." in section, heading
