@@ -1,6 +1,7 @@
 """docs/benchmarks.md's summary against the tables on the same page: each figure it quotes is read from them here, so a
 new measurement that moves a table fails this test until the summary says the same."""
 
+import json
 import re
 from pathlib import Path
 
@@ -100,3 +101,48 @@ def test_every_number_the_summary_quotes_is_in_a_table_of_the_page():
     cells = {n for t in tables() for row in t for cell in row for n in NUMBER.findall(cell)}
     quoted = set(NUMBER.findall(SUMMARY.replace("04", ""))) - {"2"}  # chapter 04's link, "2-core"
     assert quoted <= cells, f"figures in the summary that no table of the page holds: {sorted(quoted - cells)}"
+
+
+ROOT = Path(__file__).resolve().parents[1]
+CROSSOVER = json.loads((ROOT / "docs" / "crossover.json").read_text())
+SAYING = "may now be a tie (not measured again)"
+
+
+def test_the_16_link_chain_is_the_same_figure_and_the_same_caveat_on_every_page():
+    """Review r12a: the index called the 16-link chain a tie (0.92, scaled) where this page called it a network win
+    (0.66); both quote docs/crossover.json (preset `paper`), which must say 0.66, and give the same caveat."""
+    links = CROSSOVER["variables"]["links"]
+    assert CROSSOVER["preset"] == "paper" and links["values"][-1] == 16
+    ratio = f"{links['learned_us'][-1] / links['exact_us'][-1]:.2f}"
+    assert ratio == "0.66"
+    pages = {
+        "README.md": (ROOT / "README.md").read_text(),
+        "docs/benchmarks.md": PAGE,
+        "docs/results.md": (ROOT / "docs" / "results.md").read_text(),
+    }
+    for name, text in pages.items():
+        flat = " ".join(text.split())
+        assert re.search(rf"16-link chain[^.]*\b{ratio}\b", flat), f"{name} does not give the 16-link chain's {ratio}"
+        assert "may now be a tie" in flat, f"{name} does not say the 16-link chain may now be a tie"
+        assert not re.search(r"16-link chain[^.]*0\.92", flat), f"{name} still gives the scaled guess 0.92"
+    assert SAYING in SUMMARY
+
+
+def test_the_2ds_time_ratio_is_explained_against_its_rates():
+    exact, network = column("default exact: configurations a second")["2DS"], column("network: configurations a second")
+    low, high = numbers(network["2DS"])
+    quotient = f"{numbers(exact)[0] / 1e6 / high:.1f}–{numbers(exact)[0] / 1e6 / low:.1f}"
+    assert f"over 11.1–11.5 M gives {quotient}" in " ".join(PAGE.split())
+    assert numbers(column("time, network / default exact")["2DS"])[0] == 10.0
+
+
+def test_every_ratio_column_of_the_small_calls_table_says_it_is_a_ratio():
+    small = next(t for t in tables() if "call of 0, µs" in t[0])
+    assert all("cost / batch cost" in h for h in small[0] if h.startswith("calls of"))
+
+
+def test_the_student_part_leaves_numba_internals_to_the_maintainers_section():
+    student, _, maintainers = PAGE.partition("## For maintainers")
+    for word in ("structref", "views", "counts references", "interpreter lock", "Tried and left out"):
+        assert word not in student.partition("## Where is the network")[0].partition("## How fast")[2], word
+    assert "structref" in maintainers and "35–43" not in PAGE

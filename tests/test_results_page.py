@@ -7,7 +7,7 @@ import re
 import pytest
 
 from toolkit.teaching import recorded
-from tools import recorded_results, results_summary
+from tools import recorded_results, results_summary, site
 
 TEXT = recorded_results.RESULTS.read_text()
 PAGE = " ".join(TEXT.split())  # whitespace made single spaces: a sentence wraps anywhere
@@ -165,6 +165,33 @@ def test_the_typed_sentences_on_tables_1_and_2_and_the_throughput_quote_them():
     )
 
 
+def test_the_paper_runs_learned_over_exact_is_quoted_from_its_throughput_table_and_read_the_right_way():
+    """Review r12a: nothing discussed the `paper` run's learned / exact of 1.1-2.32 (a throughput ratio: above 1 the
+    network is the faster check, the opposite of benchmarks.md's time ratios)."""
+    ratio = {
+        s: float(row["learned / exact"]) for s, row in recorded.table("paper", "Checker throughput", TABLES).items()
+    }
+    said = claim(r"learned / exact was (\S+) on 3DC-7, (\S+) on 3DC-9 and (\S+) on 3DO")
+    assert said == tuple(f"{ratio[s]:g}" for s in THREE_D)
+    (span,) = claim(r"answered (\S+) times as many configurations a second as that day's compiled checker")
+    assert span == f"{min(ratio[s] for s in THREE_D):g}–{max(ratio[s] for s in THREE_D):g}"
+    assert all(ratio[s] > 1 for s in THREE_D) and "network was the faster check" in PAGE
+    (two_d,) = claim(r"\(in 2DS, (\S+): numpy's four comparisons")
+    assert float(two_d) == ratio["2ds"] < 1
+    assert "**Above 1, the network is the faster check; below 1, the exact checker is.**" in PAGE
+    assert "**Above 1, prediction cost time; below 1, it saved time.**" in PAGE
+
+
+def test_the_cae_prose_says_how_far_seen_grids_are_above_all_free():
+    table = recorded.table("paper", "CAE reconstruction", TABLES)
+    above = [
+        recorded.ours(row["Seen"]) - float(row["all free: Seen / Unseen"].split("%")[0]) / 100 for row in table.values()
+    ]
+    (points,) = claim(r"and seen ones at most (\d+) points above it")
+    assert int(points) == round(max(above) * 100)
+    assert "seen and unseen workspaces alike" not in PAGE
+
+
 def test_success_rates_differ_by_at_most_the_points_the_page_says():
     (points,) = claim(r"success rates with and without prediction differ by at most (\d+) points")
     gaps = [
@@ -176,3 +203,27 @@ def test_success_rates_differ_by_at_most_the_points_the_page_says():
         for without, with_ in [re.fullmatch(r"(\d+)% / (\d+)%", row[table["columns"].index(SUCCESS)]).groups()]
     ]
     assert len(gaps) == 3 * 16 and max(gaps) == int(points)
+
+
+def test_every_item_of_the_pages_lists_renders_as_a_list_item():
+    """Review r12a: a paragraph indented two spaces inside an item ended the list, so the six items after it ran
+    together as one paragraph with literal hyphens ("ms). - How queries are timed")."""
+    html = site.page_html(TEXT)
+    items = re.findall(r"(?m)^- \*([^*]+?)\*", TEXT)  # "- *How queries are timed*: ..."
+    assert len(items) >= 12
+    for item in items:
+        assert re.search(rf"<li>\s*(?:<p>)?<em>{re.escape(item)}</em>", html), f"not a list item on the page: {item}"
+    paragraphs = re.findall(r"<p>(.*?)</p>", html, re.S)
+    assert not [p[:60] for p in paragraphs if re.search(r"(?m)^\s*- ", p)], "a paragraph holds a literal list item"
+
+
+def test_every_ratio_table_says_which_way_its_ratio_reads():
+    """Review r12a: "learned / exact" here is a throughput ratio, benchmarks.md's "network / default exact" a time
+    ratio; each table of ratios says in words which side of 1 means what."""
+    sections = re.split(r"(?m)^### ", TEXT)[1:]
+    for section in sections:
+        heading = section.partition("\n")[0]
+        if "medians over the queries" in heading:
+            assert "Above 1, prediction cost time; below 1, it saved time." in section, heading
+        if "Checker throughput" in heading:
+            assert "Above 1, the network is the faster check; below 1, the exact checker is." in section, heading

@@ -32,7 +32,7 @@ from toolkit.plots import alt
 from toolkit.teaching import grading
 from toolkit.viewer import browser as viewer_browser
 from tools import accessibility, handout, site_hooks
-from tools.site import LIVE_ONLY_IN_JUPYTERLAB, Site, build_site, modules, static_widgets
+from tools.site import LIVE_ONLY_IN_JUPYTERLAB, Site, build_site, modules, page_html, static_widgets
 
 ROOT = Path(__file__).resolve().parents[1]
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
@@ -285,6 +285,33 @@ def as_page(file: File, site_dir: str) -> File:
     from mkdocs_jupyter.plugin import NotebookFile  # type: ignore[import-untyped]
 
     return NotebookFile(file, use_directory_urls=False, site_dir=site_dir)
+
+
+CODE_COLUMNS = 78  # what a code block of a prose page shows at 1280 px without scrolling (79 in a screenshot)
+
+
+@pytest.mark.parametrize("source", ["README.md", "docs/benchmarks.md", "docs/results.md"])
+def test_the_index_and_the_docs_pages_render_their_lists_as_lists_and_their_code_within_the_column(source):
+    """Review r12a: the index's code blocks were cut on the right (lines of up to 122 characters), and results' list
+    ran together as one paragraph with literal hyphens."""
+    text = (ROOT / source).read_text()
+    paragraphs = re.findall(r"<p>(.*?)</p>", page_html(text), re.S)
+    assert not [p[:60] for p in paragraphs if re.search(r"(?m)^\s*[-*] ", p)], "a list item rendered as text"
+    blocks = re.findall(r"(?ms)^```[a-z]*\n(.*?)^```", text)
+    wide = [line for block in blocks for line in block.splitlines() if len(line) > CODE_COLUMNS]
+    assert not wide, f"{source}: code lines wider than the page's column: {wide}"
+
+
+def test_the_index_opens_in_short_sentences():
+    opening = readme_opening()
+    sentences = [s for s in re.split(r"(?<=[.?!])\s+(?=[A-Z*])", " ".join(opening.split())) if s]
+    assert len(sentences) >= 8
+    assert max(len(s.split()) for s in sentences) <= 30, max(sentences, key=lambda s: len(s.split()))
+
+
+def readme_opening() -> str:
+    """The index page's text before its first section."""
+    return (ROOT / "README.md").read_text().partition("\n## ")[0].partition("\n")[2]
 
 
 def test_links_between_sources_land_on_pages(tmp_path):

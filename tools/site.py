@@ -349,6 +349,18 @@ def navigation(docs: Path) -> list:
     ]
 
 
+def page_html(markdown_text: str) -> str:
+    """The HTML that mkdocs makes of one Markdown page's body (``mkdocs.yml``'s Markdown extensions, no theme):
+    what a test reads to see a list render as a list without building the site."""
+    import markdown  # type: ignore[import-untyped]  # no stubs installed; mkdocs renders with it
+    import yaml
+
+    config = yaml.safe_load(CONFIG.read_text())
+    names = [e if isinstance(e, str) else next(iter(e)) for e in config["markdown_extensions"]]
+    options = {next(iter(e)): next(iter(e.values())) for e in config["markdown_extensions"] if isinstance(e, dict)}
+    return markdown.markdown(markdown_text, extensions=names, extension_configs=options)
+
+
 def render(docs: Path, out: Path) -> None:
     """Run mkdocs (``mkdocs.yml``) on the source tree ``docs``, writing the site into ``out`` (replaced)."""
     from mkdocs.commands import build
