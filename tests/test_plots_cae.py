@@ -62,6 +62,32 @@ def test_reconstructions_mark_exactly_the_error_cells_and_title_accuracy_vs_all_
         assert f"{int(np.sum(wrong & (grid < 0)))} invented" in errors.get_title()
 
 
+def test_reconstructions_mark_flipped_cells_as_their_own_kind_not_as_missed_or_invented():
+    clean = -np.ones((1, 6, 5))  # an all-free grid with one block cell at (0, 0)
+    clean[0, 0, 0] = 1.0
+    noisy = clean.copy()
+    noisy[0, 2, 2] = noisy[0, 4, 1] = 1.0  # two cells flipped to occupied
+    flipped = noisy != clean
+    decoded = clean.copy()  # the decoder ignores the flip at (2, 2), copies the one at (4, 1) ...
+    decoded[0, 4, 1] = 1.0
+    decoded[0, 0, 0] = -1.0  # ... and misses the real block: one other cell wrong
+    fig = plots.reconstructions(noisy, decoded, ["w"], flipped=flipped)
+    errors = fig.subfigs[0].axes[2]
+    assert errors.get_title() == "1 of 2 flips ignored; other cells: 1 missed, 0 invented"
+    others, ignored = errors.images[1].get_array(), errors.images[2].get_array()
+    assert [tuple(c) for c in np.argwhere(~np.ma.getmaskarray(others).T)] == [(0, 0)]  # the missed block only
+    assert [tuple(c) for c in np.argwhere(~np.ma.getmaskarray(ignored).T)] == [(2, 2)]  # the ignored flip
+    marks = sorted((line.get_marker(), *xy) for line in errors.get_lines() for xy in line.get_xydata().tolist())
+    assert marks == [("s", 2, 2), ("s", 4, 1), ("x", 0, 0)]  # both flips squared, the missed block crossed
+    labels = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert labels == [
+        "missed block (x)",
+        "invented block (o)",
+        "flipped cell, flip ignored (square on orange)",
+        "flipped cell, flip copied (square)",
+    ]
+
+
 def test_reconstructions_refuse_mismatched_inputs(grids_and_decoded):
     grids, decoded = grids_and_decoded
     with pytest.raises(ValueError):
