@@ -103,14 +103,18 @@ def test_accuracy_vs_all_free_has_one_point_per_workspace_and_the_diagonal():
     }
     fig = plots.accuracy_vs_all_free(groups)
     ax = fig.axes[0]
-    assert len(ax.collections) == 2
-    for collection, (all_free, accuracy) in zip(ax.collections, groups.values()):
+    points = [c for c in ax.collections if not c.get_gid().endswith(": mean")]
+    assert len(points) == 2
+    for collection, (all_free, accuracy) in zip(points, groups.values()):
         np.testing.assert_allclose(collection.get_offsets(), np.column_stack([all_free, accuracy]))
+    means = {c.get_gid(): c.get_offsets()[0] for c in ax.collections if c.get_gid().endswith(": mean")}
+    assert means.keys() == {"seen: mean", "unseen: mean"}  # each group's mean drawn large, over every point
+    np.testing.assert_allclose(means["unseen: mean"], [0.89, 0.88])
     (diagonal,) = ax.get_lines()
     np.testing.assert_allclose(diagonal.get_xdata(), diagonal.get_ydata())
     (legend,) = fig.legends  # below the axes, over no point
     assert "99.7%" in legend.get_texts()[0].get_text()  # the seen group's mean accuracy
-    assert ax.collections[0].get_zorder() > ax.collections[1].get_zorder()  # the smaller group drawn on top
+    assert points[0].get_zorder() > points[1].get_zorder()  # the smaller group drawn on top
 
 
 def test_contraction_shows_each_models_norms_and_mean_responses():
@@ -287,7 +291,7 @@ def test_large_groups_interleave_so_that_none_hides_under_another():
         drawn = [c for c in ax.collections if c.get_gid() == name]
         points = np.concatenate([c.get_offsets() for c in drawn])
         assert sorted(map(tuple, points)) == sorted(zip(all_free, accuracy))  # each workspace once
-    stack = sorted(ax.collections, key=lambda c: c.get_zorder())  # bottom first
+    stack = sorted((c for c in ax.collections if ": mean" not in c.get_gid()), key=lambda c: c.get_zorder())
     assert [c.get_gid() for c in stack[-3:]] == ["training grids", "unseen", "seen"]  # both large groups near the top
     order = [c.get_gid() for c in stack if c.get_gid() != "seen"]
     assert order[:4] == ["training grids", "unseen", "training grids", "unseen"]  # in turns

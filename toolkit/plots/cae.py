@@ -28,7 +28,7 @@ from matplotlib.ticker import NullLocator
 
 from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots.alt import Part, describe, lines_part, map_part
-from toolkit.plots.palette import COLORS, GREYS_CMAP, MARKERS, PAGE_WIDTH, SEQUENTIAL_CMAP, series_style
+from toolkit.plots.palette import COLORS, GREYS_CMAP, MARKERS, PAGE_WIDTH, SEQUENTIAL_CMAP, halo, series_style
 from toolkit.plots.wrong_cells import draw_wrong_cells, error_cells, legend_handles, wrong_kinds
 
 
@@ -161,6 +161,18 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
                 zorder=3 + len(groups) - k if few else 2 + (j * len(groups) + k) / (layers * len(groups)),
                 gid=name,
             )
+        ax.scatter(  # the group's mean, large, over every cloud: where each group lies, even inside another's cloud
+            np.mean(all_free),
+            np.mean(accuracy),
+            s=190,
+            c=style["color"],
+            marker=style["marker"],
+            edgecolors=COLORS["free"],
+            linewidths=1.2,
+            zorder=20,
+            path_effects=halo(1.2, ("ink",)),
+            gid=f"{name}: mean",
+        )
         said.append(
             f"{name}: {len(accuracy)} workspaces, mean accuracy {np.mean(accuracy):.1%} against {np.mean(all_free):.1%}"
             f" for all free, {above} of them above the diagonal"
@@ -169,7 +181,7 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
     ax.plot([low, 1], [low, 1], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal)')
     ax.set_xlabel('share of free cells = accuracy of answering "all free"')
     ax.set_ylabel("reconstruction accuracy")
-    ax.set_title("Above the diagonal: better than all free")
+    ax.set_title("Above the diagonal: better than all free (large marks: each group's mean)", fontsize=10)
     fig.legend(loc="outside lower center", fontsize=9, frameon=False)  # below the axes: it covers no point
     text = "Reconstruction accuracy against the accuracy of answering all free, one point per workspace. "
     return describe(fig, text + "; ".join(said) + ".")
