@@ -19,7 +19,7 @@ from toolkit.viewer import drawing as draw
 from toolkit.viewer.labels import with_still
 from toolkit.viewer.server import srcdoc_iframe
 
-ANIMATION_STILL = "The path, then the robot at its start, middle and goal, close up (scroll down)."
+ANIMATION_STILL = "The path, then the robot at its start, middle and goal, close up; a legend under them."
 
 
 def scene_still(viewer, poses: dict[str, np.ndarray] | None = None) -> Figure:
@@ -52,9 +52,9 @@ def animation_iframe(viewer, height: int = 480, *, frames: int = 60, seconds: fl
     picture = scene_still(viewer, ends) if viewer.robot.dim == 3 else None
     document = with_still(viewer.animation_html(frames=frames, seconds=seconds), picture, first=ANIMATION_STILL)
     if picture is not None:  # tall enough for the whole still (every close-up) under its note and play button
-        height = max(height, round(picture.get_figheight() * STILL_DPI) + STILL_CONTROLS)
+        height = max(height, round(COLUMN * picture.get_figheight() / picture.get_figwidth()) + STILL_CONTROLS)
     return srcdoc_iframe(document, height, summary=told)
 
 
-STILL_DPI = 100  # pixels an inch of the still, as toolkit.viewer.labels.with_still saves it
+COLUMN = 700  # pixels: a little more than a chapter page's output column (631 px), across which the still is drawn
 STILL_CONTROLS = 80  # pixels: the still's note and its play button, above it
