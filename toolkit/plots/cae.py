@@ -87,7 +87,8 @@ def reconstructions(
     accuracy = reconstruction_accuracy(decoded, grids)  # (W,)
     fig = Figure(figsize=(PAGE_WIDTH, 3.4 * len(grids) + 0.3), layout="constrained")
     rows = fig.subfigures(len(grids), 1, squeeze=False)[:, 0]  # (W,) one row per workspace
-    said, parts, drawn = [], [], {}
+    said, parts = [], []
+    drawn: dict[str, np.ndarray] = {}  # the kinds of wrong cell drawn in any row, for the legend
     for k, (row, grid, out, name, acc) in enumerate(zip(rows, grids, decoded, names, accuracy)):
         kinds = wrong_kinds(grid, out, None if flipped is None else flipped[k])
         count = {kind: int(mask.sum()) for kind, mask in kinds.items()}
