@@ -362,7 +362,7 @@ def _mistake_handles() -> list:
             linestyle="",
             label="dangerous: kept, in collision (squares)",
         ),
-        Patch(label="conservative: rejected, free (dotted; a right answer has no dots)", **CONSERVATIVE_CELLS),
+        Patch(label="conservative: rejected, free (dotted;\nright answers carry no dots)", **CONSERVATIVE_CELLS),
     ]
 
 
