@@ -62,6 +62,32 @@ def test_reconstructions_mark_exactly_the_error_cells_and_title_accuracy_vs_all_
         assert f"{int(np.sum(wrong & (grid < 0)))} invented" in errors.get_title()
 
 
+def test_reconstructions_mark_flipped_cells_as_their_own_kind_not_as_missed_or_invented():
+    clean = -np.ones((1, 6, 5))  # an all-free grid with one block cell at (0, 0)
+    clean[0, 0, 0] = 1.0
+    noisy = clean.copy()
+    noisy[0, 2, 2] = noisy[0, 4, 1] = 1.0  # two cells flipped to occupied
+    flipped = noisy != clean
+    decoded = clean.copy()  # the decoder ignores the flip at (2, 2), copies the one at (4, 1) ...
+    decoded[0, 4, 1] = 1.0
+    decoded[0, 0, 0] = -1.0  # ... and misses the real block: one other cell wrong
+    fig = plots.reconstructions(noisy, decoded, ["w"], flipped=flipped)
+    errors = fig.subfigs[0].axes[2]
+    assert errors.get_title() == "1 of 2 flips ignored; other cells: 1 missed, 0 invented"
+    others, ignored = errors.images[1].get_array(), errors.images[2].get_array()
+    assert [tuple(c) for c in np.argwhere(~np.ma.getmaskarray(others).T)] == [(0, 0)]  # the missed block only
+    assert [tuple(c) for c in np.argwhere(~np.ma.getmaskarray(ignored).T)] == [(2, 2)]  # the ignored flip
+    marks = sorted((line.get_marker(), *xy) for line in errors.get_lines() for xy in line.get_xydata().tolist())
+    assert marks == [("s", 2, 2), ("s", 4, 1), ("x", 0, 0)]  # both flips squared, the missed block crossed
+    labels = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert labels == [
+        "missed block (x)",
+        "invented block (o)",
+        "flipped cell, flip ignored (square on orange)",
+        "flipped cell, flip copied (square)",
+    ]
+
+
 def test_reconstructions_refuse_mismatched_inputs(grids_and_decoded):
     grids, decoded = grids_and_decoded
     with pytest.raises(ValueError):
@@ -77,14 +103,18 @@ def test_accuracy_vs_all_free_has_one_point_per_workspace_and_the_diagonal():
     }
     fig = plots.accuracy_vs_all_free(groups)
     ax = fig.axes[0]
-    assert len(ax.collections) == 2
-    for collection, (all_free, accuracy) in zip(ax.collections, groups.values()):
+    points = [c for c in ax.collections if not c.get_gid().endswith(": mean")]
+    assert len(points) == 2
+    for collection, (all_free, accuracy) in zip(points, groups.values()):
         np.testing.assert_allclose(collection.get_offsets(), np.column_stack([all_free, accuracy]))
+    means = {c.get_gid(): c.get_offsets()[0] for c in ax.collections if c.get_gid().endswith(": mean")}
+    assert means.keys() == {"seen: mean", "unseen: mean"}  # each group's mean drawn large, over every point
+    np.testing.assert_allclose(means["unseen: mean"], [0.89, 0.88])
     (diagonal,) = ax.get_lines()
     np.testing.assert_allclose(diagonal.get_xdata(), diagonal.get_ydata())
     (legend,) = fig.legends  # below the axes, over no point
     assert "99.7%" in legend.get_texts()[0].get_text()  # the seen group's mean accuracy
-    assert ax.collections[0].get_zorder() > ax.collections[1].get_zorder()  # the smaller group drawn on top
+    assert points[0].get_zorder() > points[1].get_zorder()  # the smaller group drawn on top
 
 
 def test_contraction_shows_each_models_norms_and_mean_responses():
@@ -261,7 +291,7 @@ def test_large_groups_interleave_so_that_none_hides_under_another():
         drawn = [c for c in ax.collections if c.get_gid() == name]
         points = np.concatenate([c.get_offsets() for c in drawn])
         assert sorted(map(tuple, points)) == sorted(zip(all_free, accuracy))  # each workspace once
-    stack = sorted(ax.collections, key=lambda c: c.get_zorder())  # bottom first
+    stack = sorted((c for c in ax.collections if ": mean" not in c.get_gid()), key=lambda c: c.get_zorder())
     assert [c.get_gid() for c in stack[-3:]] == ["training grids", "unseen", "seen"]  # both large groups near the top
     order = [c.get_gid() for c in stack if c.get_gid() != "seen"]
     assert order[:4] == ["training grids", "unseen", "training grids", "unseen"]  # in turns

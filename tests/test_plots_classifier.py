@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.collections import PathCollection, PolyCollection
-from matplotlib.colors import to_rgba
+from matplotlib.colors import to_hex, to_rgba
 from matplotlib.contour import ContourSet
 
 from toolkit.geometry import robots
@@ -16,7 +16,7 @@ from toolkit.geometry.workspace import Workspace
 from toolkit.learning import metrics
 from toolkit.plots import alt, answers, cell_marks, slices
 from toolkit.plots import classifier as pc
-from toolkit.plots.palette import COLORS
+from toolkit.plots.palette import COLORS, contrast
 
 N = 24  # grid cells per axis
 
@@ -283,6 +283,27 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     np.testing.assert_array_equal(ax.images[0].get_array(), probability.T)
     path_line = next(line for line in ax.get_lines() if line.get_label() == "returned path (checked exactly)")
     assert path_line.get_linestyle() == "--" and path_line.get_marker() == "D"  # not the boundary's solid line
+    crosses = next(line for line in ax.get_lines() if line.get_label() == "roadmap node in collision")
+    squares = next(c for c in ax.collections if c.get_label() == "invalid kept (dangerous)")
+    assert crosses.get_zorder() > squares.get_zorder()  # a cross on a dangerous square shows (reader r12b)
+
+
+def test_conservative_dots_show_on_every_grey_in_ink_over_a_white_under_stroke(grid, probability, valid):
+    """Reader r12b: ink dots vanished on the 3DC-7 maps' dark grey. Each dot is ink over a wider white one, drawn
+    first: on any grey one of the two stands at least 3:1 apart (WCAG 1.4.11)."""
+    ax = pc.probability_map(probability, valid, grid, threshold=0.45).axes[0]
+    hatched = [c for c in ax.collections if isinstance(c, PolyCollection) and c.get_hatch()]
+    assert [
+        to_rgba(c.get_hatchcolor()[0] if np.ndim(c.get_hatchcolor()) > 1 else c.get_hatchcolor()) for c in hatched
+    ] == [
+        to_rgba(COLORS["free"]),
+        to_rgba(COLORS["ink"]),
+    ]  # the white under-stroke first, the ink dots over it
+    assert hatched[0].get_hatch_linewidth() > hatched[1].get_hatch_linewidth()  # the white one wider: a ring
+    np.testing.assert_array_equal(hatched[0].get_paths()[0].vertices, hatched[1].get_paths()[0].vertices)
+    for level in np.linspace(0, 1, 101):  # every grey of the map
+        grey = to_hex((level, level, level))
+        assert max(contrast("ink", grey), contrast("free", grey)) >= 3.0
 
 
 def test_confusion_bars_heights_are_the_counts_and_rates():

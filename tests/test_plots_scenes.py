@@ -6,6 +6,7 @@ import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.colors import to_hex, to_rgba
+from matplotlib.figure import Figure
 from matplotlib.markers import MarkerStyle
 from matplotlib.text import Text
 
@@ -142,7 +143,7 @@ def test_the_series_panels_show_each_dof_clearance_and_probability(crossing):
         assert line(ax, "now").get_xdata()[0] == pytest.approx(along[index])
     title = fig.get_suptitle()
     assert f"frame {index} of 0-{FRAMES - 1}" in title and f"P(valid) = {probability[index]:.2f}" in title
-    assert "valid at 0.40" in title  # 0.71 >= 0.4
+    assert "threshold 0.40: valid" in title  # 0.71 >= 0.4
 
 
 def test_only_the_given_series_get_panels(crossing):
@@ -306,3 +307,20 @@ def drawn_texts(fig) -> list[Text]:
             hidden |= {t.label1 for t in axis.get_major_ticks() if not low - 1e-9 <= t.get_loc() <= high + 1e-9}
     texts = [t for t in fig.findobj(Text) if t.get_visible() and t.get_text().strip() and t not in hidden]
     return [t for t in texts if t.get_window_extent().width > 0]
+
+
+def test_an_angle_that_wraps_around_is_broken_where_it_wraps_not_drawn_across_the_panel():
+    robot = scenarios.get("3dc7").robot
+    Q = np.zeros((4, robot.dof))
+    Q[:, 3] = [3.0, 3.1, -3.1, -3.0]  # alpha goes through pi = -pi between frames 1 and 2
+    Q[:, 0] = [1.0, 2.0, 3.0, 4.0]  # x does not wrap
+    fig = Figure()
+    ax = fig.subplots()
+    along = np.linspace(0.0, 1.0, 4)
+    dof_panels.draw_dofs(fig, robot, Q, [3], "angles", ax, along)
+    dof_panels.draw_dofs(fig, robot, Q, [0], "position", ax, along)
+    alpha, x = ax.get_lines()
+    scaled = (Q[:, 3] - robot.lower[3]) / (robot.upper[3] - robot.lower[3])  # (4,) near 1, then near 0
+    np.testing.assert_allclose(alpha.get_ydata(), [scaled[0], scaled[1], np.nan, scaled[2], scaled[3]])
+    np.testing.assert_allclose(alpha.get_xdata(), [along[0], along[1], np.nan, along[2], along[3]])
+    assert len(x.get_xdata()) == 4  # unbroken

@@ -233,8 +233,16 @@ def test_embed_is_a_static_snapshot_of_the_scene(rng):
 
 def test_animation_iframe_embeds_the_page_escaped(planned):
     snippet = planned.animation_iframe(300, frames=3, seconds=1.0)
-    assert snippet.startswith("<div><iframe srcdoc=") and 'height="300"' in snippet
+    assert snippet.startswith("<div><iframe srcdoc=") and 'height="' in snippet
     assert len(robot_poses(page_of(snippet))) == 3
+
+
+def test_the_animation_iframe_is_tall_enough_for_its_whole_still(planned):
+    snippet = planned.animation_iframe(300, frames=3, seconds=1.0)  # asked for less than the still needs
+    png = base64.b64decode(found(r'src="data:image/png;base64,([^"]*)"', page_of(snippet)))
+    still_height = int.from_bytes(png[20:24], "big")  # the PNG header's height, pixels
+    assert still_height > 300  # the overview and three close-ups: more than one row
+    assert int(found(r'height="(\d+)"', snippet)) >= still_height  # every close-up in view, none cut off
 
 
 def test_the_animation_is_titled_apart_from_the_scene_and_says_p_valid_in_words(make_viewer):

@@ -20,25 +20,16 @@ import textwrap
 from typing import Any
 
 import numpy as np
-from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
 from matplotlib.font_manager import FontProperties
 from matplotlib.lines import Line2D
-from matplotlib.patches import Patch
 from matplotlib.textpath import TextToPath
 from matplotlib.ticker import NullLocator
 
 from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots.alt import Part, describe, lines_part, map_part
-from toolkit.plots.palette import COLORS, GREYS_CMAP, MARKERS, PAGE_WIDTH, SEQUENTIAL_CMAP, series_style
-
-ERROR_COLORS = ListedColormap(
-    [COLORS["phantom"], COLORS["missed"]]
-)  # -1: phantom block (free decoded occupied); +1: missed block
-ERROR_MARKERS = {"missed": "x", "phantom": "o"}  # a second cue on each wrong cell, in ink: x missed, o invented
-ERROR_INK: dict[str, Any] = dict(
-    fillstyle="none", mew=1.2
-)  # a ring, not a dot (in the legend too), and a stroke one sees
+from toolkit.plots.palette import COLORS, GREYS_CMAP, MARKERS, PAGE_WIDTH, SEQUENTIAL_CMAP, halo, series_style
+from toolkit.plots.wrong_cells import draw_wrong_cells, error_cells, legend_handles, wrong_kinds
 
 
 def training_curves(
@@ -74,19 +65,16 @@ def _stacked(k: int, n: int) -> dict[str, Any]:
     return series_style(k) | dict(linewidth=1.2 + 3.0 * under, markersize=5 + 5 * under, zorder=2 + k)
 
 
-def error_cells(grid: np.ndarray, decoded: np.ndarray) -> np.ndarray:
-    """Boolean mask of the cells whose decoded sign differs from the input's (what reconstruction accuracy counts)."""
-    return np.sign(decoded) != np.sign(grid)
+def reconstructions(
+    grids: np.ndarray, decoded: np.ndarray, names: list[str], flipped: np.ndarray | None = None
+) -> Figure:
+    """One row per 2D workspace: input, decoded sign, and the wrong cells over the input.
 
-
-def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) -> Figure:
-    """One row per 2D workspace: input, decoded sign, and the error cells over the input.
-
-    ``grids``, ``decoded``: ``(W, nx, ny)``. Error cells are coloured ``COLORS["missed"]`` where a
-    block was missed (input occupied, decoded free: on a dark input cell) and ``COLORS["phantom"]`` where one was
-    invented (on a light one); a legend names them. Each row's
-    title gives the reconstruction accuracy next to the share of free cells, the
-    accuracy of a CAE that ignores its input and answers "all free".
+    ``grids``, ``decoded``: ``(W, nx, ny)``. Wrong cells are marked by kind (:mod:`toolkit.plots.wrong_cells`): a
+    missed block (input occupied, decoded free) or an invented one; given ``flipped (W, nx, ny)``, the cells flipped
+    in a perturbed input, those are a kind of their own (flip ignored, flip copied) and the rest "other wrong".
+    A legend names the kinds. Each row's title gives the reconstruction accuracy next to the share of free cells,
+    the accuracy of a CAE that ignores its input and answers "all free".
     """
     grids, decoded = np.asarray(grids), np.asarray(decoded)
     if grids.ndim != 3 or decoded.shape != grids.shape or len(names) != len(grids):
@@ -94,37 +82,30 @@ def reconstructions(grids: np.ndarray, decoded: np.ndarray, names: list[str]) ->
             f"need grids and decoded of one shape (W, nx, ny) and W names; got {grids.shape}, "
             f"{decoded.shape}, {len(names)} names"
         )
+    if flipped is not None and np.shape(flipped) != grids.shape:
+        raise ValueError(f"flipped has shape {np.shape(flipped)}, the grids {grids.shape}")
     accuracy = reconstruction_accuracy(decoded, grids)  # (W,)
     fig = Figure(figsize=(PAGE_WIDTH, 3.4 * len(grids) + 0.3), layout="constrained")
     rows = fig.subfigures(len(grids), 1, squeeze=False)[:, 0]  # (W,) one row per workspace
     said, parts = [], []
-    for row, grid, out, name, acc in zip(rows, grids, decoded, names, accuracy):
-        errors = error_cells(grid, out)
-        missed, phantom = int(np.sum(errors & (grid > 0))), int(np.sum(errors & (grid < 0)))
-        axes = row.subplots(1, 3, width_ratios=(1, 1, 2))  # the wrong cells twice as large: their x and o legible
+    drawn: dict[str, np.ndarray] = {}  # the kinds of wrong cell drawn in any row, for the legend
+    for k, (row, grid, out, name, acc) in enumerate(zip(rows, grids, decoded, names, accuracy)):
+        kinds = wrong_kinds(grid, out, None if flipped is None else flipped[k])
+        count = {kind: int(mask.sum()) for kind, mask in kinds.items()}
+        drawn |= kinds
+        axes = row.subplots(1, 3, width_ratios=(1, 1, 2))  # the wrong cells twice as large: their marks legible
         _image(axes[0], grid, "input")
         _image(axes[1], np.where(out > 0, 1.0, -1.0), "decoded (sign)")
-        _image(axes[2], grid, f"{missed} missed, {phantom} invented", alpha=0.25)
-        axes[2].imshow(np.ma.masked_array(grid, ~errors).T, origin="lower", cmap=ERROR_COLORS, vmin=-1, vmax=1)
-        cell = 72 * 0.45 * fig.get_figwidth() / max(grid.shape)  # points a cell, about: the panel is half the row
-        for kind, wrong in (("missed", errors & (grid > 0)), ("phantom", errors & (grid < 0))):
-            x, y = np.nonzero(wrong)
-            axes[2].plot(x, y, ERROR_MARKERS[kind], color=COLORS["ink"], markersize=0.7 * cell, **ERROR_INK)
+        wrong = f"{count['missed']} missed, {count['phantom']} invented"
+        if "ignored" in kinds:
+            wrong = f"{count['ignored']} of {count['ignored'] + count['copied']} flips ignored; other cells: {wrong}"
+        _image(axes[2], grid, wrong, alpha=0.25)
+        draw_wrong_cells(axes[2], grid, kinds, cell=72 * 0.45 * fig.get_figwidth() / max(grid.shape))
         all_free = np.mean(grid < 0)
         row.suptitle(f"{name}: {acc:.1%} of cells right (all free: {all_free:.1%})", fontsize=10)
-        said.append(
-            f"{name}: {acc:.1%} of cells right against {all_free:.1%} for answering all free; "
-            f"{missed} blocked cells missed, {phantom} free cells invented"
-        )
+        said.append(f"{name}: {acc:.1%} of cells right against {all_free:.1%} for answering all free; {wrong}")
         parts.append(grid_part(name, said[-1], grid, out))
-    handles: list[Any] = [  # the cell's colour with its marker on it
-        (
-            Patch(facecolor=COLORS[kind]),
-            Line2D([], [], marker=ERROR_MARKERS[kind], color=COLORS["ink"], linestyle="", markersize=7, **ERROR_INK),
-        )
-        for kind in ("missed", "phantom")
-    ]
-    labels = ["missed block (x)", "invented block (o)"]
+    handles, labels = legend_handles(list(drawn))
     fig.legend(handles, labels, loc="outside lower center", ncols=2, fontsize=9, frameon=False)
     grids_said = f"{len(grids)} occupancy grid{'s' if len(grids) > 1 else ''}"
     text = f"{grids_said}, each beside its reconstruction and its wrong cells. " + "; ".join(said)
@@ -181,6 +162,18 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
                 zorder=3 + len(groups) - k if few else 2 + (j * len(groups) + k) / (layers * len(groups)),
                 gid=name,
             )
+        ax.scatter(  # the group's mean, large, over every cloud: where each group lies, even inside another's cloud
+            np.mean(all_free),
+            np.mean(accuracy),
+            s=190,
+            c=style["color"],
+            marker=style["marker"],
+            edgecolors=COLORS["free"],
+            linewidths=1.2,
+            zorder=20,
+            path_effects=halo(1.2, ("ink",)),
+            gid=f"{name}: mean",
+        )
         said.append(
             f"{name}: {len(accuracy)} workspaces, mean accuracy {np.mean(accuracy):.1%} against {np.mean(all_free):.1%}"
             f" for all free, {above} of them above the diagonal"
@@ -189,7 +182,7 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
     ax.plot([low, 1], [low, 1], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal)')
     ax.set_xlabel('share of free cells = accuracy of answering "all free"')
     ax.set_ylabel("reconstruction accuracy")
-    ax.set_title("Above the diagonal: better than all free")
+    ax.set_title("Above the diagonal: better than all free (large marks: each group's mean)", fontsize=10)
     fig.legend(loc="outside lower center", fontsize=9, frameon=False)  # below the axes: it covers no point
     text = "Reconstruction accuracy against the accuracy of answering all free, one point per workspace. "
     return describe(fig, text + "; ".join(said) + ".")

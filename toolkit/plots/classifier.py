@@ -228,6 +228,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     _draw_boundary(ax, valid, grid)
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
     if conservative:
+        ax.add_collection(_cells(grid, codes == 1, **UNDER_HATCH))
         ax.add_collection(_cells(grid, codes == 1, label=ANSWERS[1], **CONSERVATIVE_CELLS))
     draw_cell_marks(ax, grid, codes == 3, label=ANSWERS[3], zorder=3, **_mistake_mark(3))  # sized by fit_cell_marks
     return image
@@ -235,6 +236,9 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
 
 CONSERVATIVE_CELLS: dict[str, Any] = dict(  # a light tint and a dotted hatch in ink: the gray beneath still shows
     facecolor=to_rgba(CONSERVATIVE, 0.15), hatch="..", hatchcolor=COLORS["ink"], edgecolor="none"
+)
+UNDER_HATCH: dict[str, Any] = dict(  # the same dots in white, wider, under the ink ones: they show on the darkest grey
+    facecolor="none", hatch="..", hatchcolor=COLORS["free"], hatch_linewidth=2.0, edgecolor="none"
 )
 
 
@@ -269,6 +273,7 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid: np.ndarray, path: np.ndarr
         markersize=11,
         label="roadmap node in collision",
         path_effects=halo(),
+        zorder=4,  # over the dangerous squares (zorder 3), which it sits on: its black and white rings show it there
     )
     ax.plot(
         path[:, x],
@@ -357,7 +362,7 @@ def _mistake_handles() -> list:
             linestyle="",
             label="dangerous: kept, in collision (squares)",
         ),
-        Patch(label="conservative: rejected, free (dotted)", **CONSERVATIVE_CELLS),
+        Patch(label="conservative: rejected, free (dotted;\nright answers carry no dots)", **CONSERVATIVE_CELLS),
     ]
 
 

@@ -34,7 +34,8 @@ def draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, dofs: list[int], kind
     every = max(1, len(Q) // 6)
     for k in dofs:
         style = series_style(k) | dict(markevery=(k % every, every), markersize=6)
-        ax.plot(along, scaled[:, k], linewidth=1.4, label=robot.dof_names[k], gid="dof", **style)
+        x, y = _broken(along, scaled[:, k]) if kind == "angles" else (along, scaled[:, k])
+        ax.plot(x, y, linewidth=1.4, label=robot.dof_names[k], gid="dof", **style)
     ax.set_ylim(-0.05, 1.05)
     box = ax.get_position()  # in figure fractions: the gridspec has placed the panel
     per_unit = box.height * fig.get_figheight() * 72 / 1.1  # points per unit of the y axis (1.1 units tall)
@@ -58,6 +59,13 @@ def draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, dofs: list[int], kind
             ),
         )
     ax.set_ylabel(kind, fontsize=9)
+
+
+def _broken(along: np.ndarray, scaled: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """An angle's line ``scaled (T,)`` against ``along (T,)`` broken (a NaN between) where it wraps around: where it
+    jumps more than half its range between two frames, it went through -pi = pi, not across the panel."""
+    wraps = np.flatnonzero(np.abs(np.diff(scaled)) > 0.5) + 1  # (w,) the frames after a wrap
+    return np.insert(along, wraps, np.nan), np.insert(scaled, wraps, np.nan)  # (T + w,) each
 
 
 LABEL_GAP = 11.0  # points between two names at the lines' ends: an 8-point line of text (~9.4 pt tall) and air

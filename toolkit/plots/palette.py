@@ -71,6 +71,7 @@ COLORS: dict[str, str] = {
     # the CAE's reconstruction errors (§IV-B)
     "phantom": OKABE_ITO["blue"],  # free cell decoded occupied
     "missed": OKABE_ITO["vermillion"],  # occupied cell decoded free
+    "ignored": OKABE_ITO["orange"],  # a flipped cell decoded as before its flip: the flip ignored
     # lines and shades
     "probability": OKABE_ITO["blue"],  # P(valid) along a path
     "exact": OKABE_ITO["blue"],  # the exact checker's cost (crossover)

@@ -250,7 +250,7 @@ def path_frame(
         for name, values in (("valid", valid), ("clearance", clearance), ("probability", probability))
     }
     fig = Figure(figsize=(PAGE_WIDTH, 6.6))  # as wide as the page: its text as large as it is drawn
-    grid = fig.add_gridspec(1, 2, width_ratios=(1.3, 1.0), wspace=0.75, top=0.8, bottom=0.08, left=0.05, right=0.88)
+    grid = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.2), wspace=0.7, top=0.8, bottom=0.08, left=0.05, right=0.88)
     valid_now = None if series["valid"] is None else bool(series["valid"][index])
     _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, valid_now, workspace, margin)
     _draw_series(fig, grid[1], robot, Q, index, series, threshold)
@@ -394,5 +394,5 @@ def _frame_title(index: int, frames: int, series: dict, threshold: float) -> str
         parts.append(f"clearance ≥ {series['clearance'][index]:.3f}")
     if series["probability"] is not None:
         p = series["probability"][index]
-        parts.append(f"P(valid) = {p:.2f} ({'valid' if p >= threshold else 'colliding'} at {threshold:.2f})")
+        parts.append(f"P(valid) = {p:.2f} (threshold {threshold:.2f}: {'valid' if p >= threshold else 'colliding'})")
     return ", ".join(parts)

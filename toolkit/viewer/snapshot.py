@@ -19,7 +19,7 @@ from toolkit.viewer import drawing as draw
 from toolkit.viewer.labels import with_still
 from toolkit.viewer.server import srcdoc_iframe
 
-ANIMATION_STILL = "The path, then the robot at its start, middle and goal, close up (scroll down)."
+ANIMATION_STILL = "The path, then the robot at its start, middle and goal, close up; a legend under them."
 
 
 def scene_still(viewer, poses: dict[str, np.ndarray] | None = None) -> Figure:
@@ -44,10 +44,17 @@ def iframe(viewer, height: int = 480) -> str:
 
 def animation_iframe(viewer, height: int = 480, *, frames: int = 60, seconds: float = 6.0) -> str:
     """``viewer``'s animation along its path (``Viewer.animation_html``) as an ``<iframe>``, its frames in words; it
-    opens on its still (:data:`ANIMATION_STILL`), over the 3D view until the reader plays it."""
+    opens on its still (:data:`ANIMATION_STILL`), over the 3D view until the reader plays it; ``height`` grows to
+    hold the whole still (its overview and every close-up)."""
     Q = viewer.path_configurations(np.linspace(0.0, 1.0, int(frames)))  # (F, dof): the frames' configurations
     told = draw.animation_summary(viewer.workspace, viewer.robot, Q, viewer.exact, viewer.model, viewer.path)
     ends = dict(zip(("start", "middle", "goal"), viewer.path_configurations(np.linspace(0.0, 1.0, 3))))
     picture = scene_still(viewer, ends) if viewer.robot.dim == 3 else None
     document = with_still(viewer.animation_html(frames=frames, seconds=seconds), picture, first=ANIMATION_STILL)
+    if picture is not None:  # tall enough for the whole still (every close-up) under its note and play button
+        height = max(height, round(COLUMN * picture.get_figheight() / picture.get_figwidth()) + STILL_CONTROLS)
     return srcdoc_iframe(document, height, summary=told)
+
+
+COLUMN = 700  # pixels: a little more than a chapter page's output column (631 px), across which the still is drawn
+STILL_CONTROLS = 80  # pixels: the still's note and its play button, above it

@@ -1,0 +1,71 @@
+"""The wrong cells of a decoded occupancy grid marked on it (notebook 02; :func:`toolkit.plots.cae.reconstructions`).
+
+A decoded cell is wrong where its sign differs from the input's. Each wrong cell is coloured by its kind and carries
+a mark in ink, so that the kind shows without colour: ``x`` a *missed* block (input occupied, decoded free), ``o`` an
+*invented* one (input free, decoded occupied). When the input is a grid with a few cells flipped (section 6 of
+notebook 02), a wrong flipped cell is not a missed or invented block: the decoder drew it as in the clean grid, it
+*ignored* the flip. Flipped cells then get a kind of their own, a hollow square, on an orange cell where the flip was
+ignored; the other wrong cells keep ``x`` and ``o``.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from matplotlib.colors import ListedColormap
+from matplotlib.lines import Line2D
+from matplotlib.patches import Patch
+
+from toolkit.plots.palette import COLORS
+
+ERROR_COLORS = ListedColormap([COLORS["phantom"], COLORS["missed"]])  # -1: invented block; +1: missed block
+ERROR_MARKERS = {"missed": "x", "phantom": "o", "ignored": "s", "copied": "s"}  # a second cue, in ink
+ERROR_INK: dict[str, Any] = dict(fillstyle="none", mew=1.2)  # a ring, not a dot (in the legend too): a visible stroke
+LABELS = {
+    "missed": "missed block (x)",
+    "phantom": "invented block (o)",
+    "ignored": "flipped cell, flip ignored (square on orange)",
+    "copied": "flipped cell, flip copied (square)",
+}
+
+
+def error_cells(grid: np.ndarray, decoded: np.ndarray) -> np.ndarray:
+    """Boolean mask of the cells whose decoded sign differs from the input's (what reconstruction accuracy counts)."""
+    return np.sign(decoded) != np.sign(grid)
+
+
+def wrong_kinds(grid: np.ndarray, decoded: np.ndarray, flipped: np.ndarray | None = None) -> dict[str, np.ndarray]:
+    """``{kind: mask (nx, ny)}`` of one grid's cells: ``missed`` and ``phantom`` (invented) wrong cells, and, given
+    the ``flipped`` cells ``(nx, ny)``, ``ignored`` (flipped, wrong) and ``copied`` (flipped, right) ones, which are
+    then neither missed nor invented."""
+    wrong = error_cells(grid, decoded)
+    flipped = np.zeros_like(wrong) if flipped is None else np.asarray(flipped, dtype=bool)
+    kinds = {"missed": wrong & ~flipped & (grid > 0), "phantom": wrong & ~flipped & (grid < 0)}
+    if flipped.any():
+        kinds |= {"ignored": wrong & flipped, "copied": ~wrong & flipped}
+    return kinds
+
+
+def draw_wrong_cells(ax, grid: np.ndarray, kinds: dict[str, np.ndarray], cell: float) -> None:
+    """The wrong cells of ``kinds`` (:func:`wrong_kinds`) over a faded input already on ``ax``: missed and invented
+    cells in their colours, ignored flips orange, each with its mark in ink ``cell`` points wide."""
+    others = kinds["missed"] | kinds["phantom"]
+    ax.imshow(np.ma.masked_array(grid, ~others).T, origin="lower", cmap=ERROR_COLORS, vmin=-1, vmax=1)
+    if "ignored" in kinds:
+        ignored = np.ma.masked_array(np.ones_like(grid), ~kinds["ignored"])
+        ax.imshow(ignored.T, origin="lower", cmap=ListedColormap([COLORS["ignored"]]), vmin=0, vmax=1)
+    for kind, mask in kinds.items():
+        x, y = np.nonzero(mask)
+        size = (0.9 if ERROR_MARKERS[kind] == "s" else 0.7) * cell  # a square round its cell, x and o inside one
+        ax.plot(x, y, ERROR_MARKERS[kind], color=COLORS["ink"], markersize=size, **ERROR_INK)
+
+
+def legend_handles(kinds: list[str]) -> tuple[list[Any], list[str]]:
+    """Legend handles and labels for the ``kinds`` drawn: each cell's colour with its mark on it."""
+    handles: list[Any] = []
+    for kind in kinds:
+        mark = Line2D([], [], marker=ERROR_MARKERS[kind], color=COLORS["ink"], linestyle="", markersize=7, **ERROR_INK)
+        face = {"missed": COLORS["missed"], "phantom": COLORS["phantom"], "ignored": COLORS["ignored"]}.get(kind)
+        handles.append((Patch(facecolor=face), mark) if face else mark)
+    return handles, [LABELS[kind] for kind in kinds]
