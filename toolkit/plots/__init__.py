@@ -8,7 +8,8 @@ per topic, in the order of the notebooks:
   (notebooks 01, 05), each box drawn from its corners by :mod:`toolkit.plots.boxes`;
 - :mod:`toolkit.plots.slices` — the grid of a 2-DoF slice of configuration space (notebooks 01, 03);
 - :mod:`toolkit.plots.cspace` — workspaces, occupancy grids, configuration-space obstacles (notebook 01);
-- :mod:`toolkit.plots.cae` — the contractive autoencoder's reconstructions and latents (notebook 02);
+- :mod:`toolkit.plots.cae` — the contractive autoencoder's reconstructions and latents (notebook 02), the wrongly
+  decoded cells marked by :mod:`toolkit.plots.wrong_cells`;
 - :mod:`toolkit.plots.answers` — the collision MLP's answers against the truth: their kinds, counts, ROC points;
 - :mod:`toolkit.plots.classifier` — the collision MLP's decision boundaries and thresholds (notebook 03);
 - :mod:`toolkit.plots.cell_marks` — marks on a map's cells sized to be seen however fine the map (notebook 03);
