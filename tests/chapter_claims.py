@@ -254,14 +254,15 @@ def _chapter_03_verdict(found: str) -> list[str]:
 
 
 def tables(nb) -> list[tuple[list[str], list[list[str]]]]:
-    """Every Markdown table the code cells displayed: its header's cells and its rows' cells."""
+    """Every Markdown table the code cells displayed: its header's cells and its rows' cells (a line break in a cell,
+    ``<br>``, read as a space)."""
     found = []
     for cell in nb["cells"]:
         for output in cell.get("outputs", []) if cell["cell_type"] == "code" else []:
             lines = [
                 line for line in output.get("data", {}).get("text/markdown", "").splitlines() if line.startswith("|")
             ]
-            rows = [[c.strip() for c in line.strip().strip("|").split("|")] for line in lines]
+            rows = [[c.replace("<br>", " ").strip() for c in line.strip().strip("|").split("|")] for line in lines]
             if len(rows) >= 3 and {c.strip(":") for c in rows[1]} <= {"---"}:  # "---:" aligns a column right
                 found.append((rows[0], rows[2:]))
     return found
@@ -334,45 +335,83 @@ def chapter_04(nb) -> list[str]:
     fcl = {row[0]: row[2] for header, rows in found if header[2:3] == ["cost, network / python-fcl"] for row in rows}
     if not fcl or not all(v.startswith(findings.CHEAPER) for v in fcl.values()):
         problems.append(f"04: the prose says the network is the cheaper check against python-fcl: {fcl}")
-    problems += _eager_counts(found) + _recorded_verdicts(found)
+    problems += _eager_counts(found) + _recorded_verdicts(found) + _paper_claim(nb, found)
     if not re.search(r"This run took \d+ s from the first cell to this one, at a load average of", " ".join(texts(nb))):
         problems.append("04: the run's time is not printed with its load")
     return problems
 
 
-EAGER = ("samples checked exactly", "samples the network decided", "edge points checked exactly", "total, ms")
+EAGER = ("samples, exact", "samples, network", "edge points, exact")  # section 5's counts, per query
+STAGES = ("connection (edges)", "total")  # ... and its stage times, ms a query
 
 
 def _eager_counts(found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
     """Section 5's prose: the sample checks prediction takes over are a small fraction (under 5 %) of Algorithm 1's
-    exact checks, nearly all edge points, and the connection stage is most of its time (over half), in both modes."""
+    exact checks, nearly all edge points, and the connection stage is most of its time (over half), in both modes
+    (two tables, each narrow enough for the page: the stages' times and the counts)."""
     counted = [(header, rows) for header, rows in found if set(EAGER) <= set(header)]
-    if not counted:
+    timed = [(header, rows) for header, rows in found if header[0] == "mode" and set(STAGES) <= set(header)]
+    if not counted or not timed:
         return ["04: section 5's counts of Algorithm 1's checks are not displayed"]
-    header, rows = counted[0]
 
-    def number(row, column):
-        return float(row[header.index(column)].replace(",", ""))
+    def number(table, mode, column):
+        header, rows = table
+        return next(float(r[header.index(column)].replace(",", "")) for r in rows if r[0] == mode)
 
     problems = []
-    for row in rows:
-        samples = number(row, "samples checked exactly") + number(row, "samples the network decided")
-        if not samples < 0.05 * number(row, "edge points checked exactly"):
-            problems.append(f"04: Algorithm 1 {row[0]}: the sample checks are no small fraction of the edge points")
-        if not number(row, "connection (edges), ms") > 0.5 * number(row, "total, ms"):
-            problems.append(f"04: Algorithm 1 {row[0]}: the connection stage is not most of its time")
+    for mode in (r[0] for r in counted[0][1]):
+        samples = number(counted[0], mode, "samples, exact") + number(counted[0], mode, "samples, network")
+        if not samples < 0.05 * number(counted[0], mode, "edge points, exact"):
+            problems.append(f"04: Algorithm 1 {mode}: the sample checks are no small fraction of the edge points")
+        if not number(timed[0], mode, "connection (edges)") > 0.5 * number(timed[0], mode, "total"):
+            problems.append(f"04: Algorithm 1 {mode}: the connection stage is not most of its time")
     return problems
 
 
+EAGER_ROW = "3DC-7, Algorithm 1"  # section 5's planning row: the paper's claim with an accurate network
+CLAIM = re.compile(
+    r"inside the paper's Algorithm 1, 3DC-7, uniform sampler, (\d+) quer(?:y|ies): time with / without "
+    r"prediction ([\d.]+) \(middle half ([\d.]+)–([\d.]+)\), (prediction saved time|prediction cost time|"
+    r"a tie|can't tell)"
+)
+
+
+def _paper_claim(nb, found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
+    """The opening (the line under the first code cell) and the summary state section 5's verdict, as its planning
+    row gives it: the same queries, median, middle half and verdict (reader r12a: neither gave it)."""
+    rows = [
+        r
+        for h, rows in found
+        if h[0] == "scenario" and len(h) > 2 and h[2].startswith("with / without: verdict")
+        for r in rows
+        if r[0].startswith(EAGER_ROW)
+    ]
+    outputs = texts(nb)
+    said = [
+        m.groups()
+        for m in (CLAIM.search(outputs[0]) if outputs else None, CLAIM.search(" ".join(outputs[1:])))
+        if m is not None
+    ]
+    if not rows or len(said) != 2:
+        return ["04: section 5's verdict is not stated in the opening and the summary"]
+    verdict = VERDICT.fullmatch(rows[0][2])
+    words = {findings.SAVES: "prediction saved time", findings.COSTS: "prediction cost time"}
+    expected = (rows[0][-1], *re.findall(r"[\d.]+", verdict.group(2)), words.get(verdict.group(1), verdict.group(1)))
+    return [f"04: the answer says {s} of section 5, its table {expected}" for s in said if s != expected]
+
+
 def _recorded_verdicts(found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
-    """Section 6's table of recorded ratios against the answer the chapter states: each row's count column equals
+    """Section 6's tables of recorded ratios against the answer the chapter states: each row's count column equals
     its verdicts; the `paper` preset's means against Algorithm 1 save time for one sampler on 2DS and 3DC-7 and three
-    on 3DC-9 and 3DO, where its MLP answers "valid" (3DC-7) or "invalid" (3DC-9, 3DO) to every sample; the `strong`
-    preset's means and medians agree on 3DC-7's every verdict and part on 2DS's OB (mean: saves; median: a tie)."""
-    table = next(((h, rows) for h, rows in found if h[0] == "measured" and h[-1] == findings.COUNT_COLUMN), None)
-    if table is None:
-        return ["04: section 6's table of recorded ratios, with its count column, is not displayed"]
-    rows = table[1]
+    on 3DC-9 and 3DO, where its MLP answers "valid" (3DC-7) or "invalid" (3DC-9, 3DO) to every sample; the paper's
+    Table 3 has a row beside ours in every scenario; the `strong` preset's means and medians agree on 3DC-7's every
+    verdict and part on 2DS's OB (mean: saves; median: a tie)."""
+    under = f" {findings.COUNT_COLUMN}: "  # findings.ratio_table(..., narrow=True): the count under the row's label
+    counted = [rows for h, rows in found if h[0] == "measured" and rows and under in rows[0][0]]
+    if len(counted) < 2:
+        return ["04: section 6's tables of recorded ratios, with their counts, are not displayed"]
+    rows = [[*row[0].split(under), *row[1:]] for table in counted for row in table]  # label, verdicts..., count
+    rows = [[row[0], *row[2:], row[1]] for row in rows]
     said = {row[0]: [m.group(1) if (m := VERDICT.fullmatch(c)) else c for c in row[1:-1]] for row in rows}
     problems = [
         f"04: {row[0]}: counted {row[-1]}, its verdicts {said[row[0]]}"
@@ -380,18 +419,20 @@ def _recorded_verdicts(found: list[tuple[list[str], list[list[str]]]]) -> list[s
         if row[-1] != " / ".join(str(said[row[0]].count(v)) for v in findings.COUNTED)
     ]
     for name, n in {"2DS": 1, "3DC-7": 1, "3DC-9": 3, "3DO": 3}.items():
-        verdicts = said.get(f"{name}: `paper` preset, means, vs Algorithm 1", [])
+        verdicts = said.get(f"{name}, ours (`paper` preset)", [])
         if verdicts.count(findings.SAVES) != n:
             problems.append(f"04: the answer says the `paper` preset saves for {n} of 4 on {name}; it shows {verdicts}")
+        if f"{name}, the paper's Table 3" not in said:
+            problems.append(f"04: {name}: the paper's Table 3 has no row beside ours")
     answers = {row[0]: row[-1] for h, rows in found if h[-1] == "what it answers" for row in rows}
     valid, invalid = '"valid" to every sample', '"invalid" to every sample'
     expected = {"3DC-7": valid, "3DC-9": invalid, "3DO": invalid}
     if {k: answers.get(k) for k in expected} != expected:
         problems.append(f"04: the answer says what the `paper` MLP answers; its table says {answers}")
-    strong = {kind: said.get(f"3DC-7: `strong` preset, {kind}, vs lazy PRM", []) for kind in ("means", "medians")}
+    strong = {kind: said.get(f"3DC-7, `strong` preset, {kind}", []) for kind in ("means", "medians")}
     if not strong["means"] or strong["means"] != strong["medians"]:
         problems.append(f"04: 3DC-7's `strong` means and medians do not agree verdict by verdict: {strong}")
-    ob = [said.get(f"2DS: `strong` preset, {kind}, vs lazy PRM", [None] * 2)[1] for kind in ("means", "medians")]
+    ob = [said.get(f"2DS, `strong` preset, {kind}", [None] * 2)[1] for kind in ("means", "medians")]
     if ob != [findings.SAVES, findings.TIES]:
         problems.append(f"04: 2DS OB's `strong` mean and median do not part as the prose says: {ob}")
     return problems

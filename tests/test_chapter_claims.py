@@ -153,15 +153,21 @@ def test_resolves_tells_a_missing_name():
 # ---- the executed-chapter checks, on crafted outputs ----
 
 
-def executed(*printed: str) -> dict:
-    """A notebook whose code cells printed ``printed`` (one cell each; ``MD:`` starts displayed Markdown)."""
+def executed(*printed: str | tuple[str, ...]) -> dict:
+    """A notebook whose code cells printed ``printed`` (one cell each, a tuple for several outputs of one cell;
+    ``MD:`` starts displayed Markdown)."""
 
     def output(text):
         if text.startswith("MD:"):
             return {"output_type": "display_data", "data": {"text/markdown": text[3:]}, "metadata": {}}
         return {"output_type": "stream", "name": "stdout", "text": text}
 
-    return {"cells": [{"cell_type": "code", "source": [], "outputs": [output(t)]} for t in printed]}
+    return {
+        "cells": [
+            {"cell_type": "code", "source": [], "outputs": [output(t) for t in (p if isinstance(p, tuple) else (p,))]}
+            for p in printed
+        ]
+    }
 
 
 def row(without: list[float], with_: list[float]) -> dict:
@@ -169,6 +175,12 @@ def row(without: list[float], with_: list[float]) -> dict:
         return {"n_queries": len(totals), "total_s_median": float(np.median(totals)), "total_s_per_query": totals}
 
     return {"without": summary(without), "with": summary(with_)}
+
+
+EAGER_RUN = row([1, 1, 1, 1], [1.04, 1.05, 1.05, 1.06])  # section 5: Algorithm 1 with the `strong` network, a tie
+EAGER_SAID = findings.planning_sentence(
+    "An accurate network (the `strong` preset's) inside the paper's Algorithm 1, 3DC-7, uniform sampler", EAGER_RUN
+)
 
 
 def chapter_04() -> dict:
@@ -180,33 +192,36 @@ def chapter_04() -> dict:
     rates = {"ratio": 0.4, "exact_cfg_per_s": 5e6, "fcl_cfg_per_s": 2e5, "learned_cfg_per_s": 2e6}
     crossed = {"variables": {"links": sweep}}
     return executed(
-        "MD:" + findings.planning_table(planning),
+        (f"MD:**The paper's claim, tested in section 5.** {EAGER_SAID}", "MD:" + findings.planning_table(planning)),
         "MD:" + findings.throughput_table({"2DS": rates, "3DC-7": rates}, 10_000),
         "MD:" + findings.crossover_table(crossed) + "\n\n" + findings.crossover_counts(crossed),
-        "MD:" + eager_counts(),
-        "MD:" + recorded_ratios(),
+        eager_counts(),
+        recorded_ratios(),
         "MD:" + paper_mlp(),
-        "MD:This run took 49 s from the first cell to this one, at a load average of 2.1 on 2 cores.",
+        (
+            "MD:This run took 49 s from the first cell to this one, at a load average of 2.1 on 2 cores.",
+            f"MD:- **The paper's claim itself** (section 5): {EAGER_SAID}",
+        ),
     )
 
 
-def recorded_ratios(paper_3dc7: dict[str, float] | None = None) -> str:
-    """Section 6's table of recorded ratios as the chapter builds it from docs/results.md (``paper_3dc7``: other
-    ratios for the `paper` preset's 3DC-7 means)."""
+def recorded_ratios(paper_3dc7: dict[str, float] | None = None) -> tuple[str, str]:
+    """Section 6's two tables of recorded ratios as the chapter builds them from docs/results.md and the paper's
+    Table 3 (``paper_3dc7``: other ratios for the `paper` preset's 3DC-7 means)."""
 
     def means(preset, key):
         return {s: 1 - r for s, r in recorded.improvements(preset, key).items()}
 
-    rows = {}
-    for name, key in (("2DS", "2ds"), ("3DC-7", "3dc7")):
-        rows[f"{name}: `paper` preset, means, vs Algorithm 1"] = means("paper", key)
-        rows[f"{name}: `strong` preset, means, vs lazy PRM"] = means("strong", key)
-        rows[f"{name}: `strong` preset, medians, vs lazy PRM"] = recorded.median_ratios("strong")[key]["total"]
-    for name, key in (("3DC-9", "3dc9"), ("3DO", "3do")):
-        rows[f"{name}: `paper` preset, means, vs Algorithm 1"] = means("paper", key)
+    eager, lazy = {}, {}
+    for name, key in SCENARIOS_4:
+        eager[f"{name}, the paper's Table 3"] = {s: 1 - paper_numbers.IMPROVEMENT[key]["total"][s] for s in SAMPLERS}
+        eager[f"{name}, ours (`paper` preset)"] = means("paper", key)
+    for name, key in SCENARIOS_4[:2]:
+        lazy[f"{name}, `strong` preset, means"] = means("strong", key)
+        lazy[f"{name}, `strong` preset, medians"] = recorded.median_ratios("strong")[key]["total"]
     if paper_3dc7 is not None:
-        rows["3DC-7: `paper` preset, means, vs Algorithm 1"] = paper_3dc7
-    return findings.ratio_table(rows, counts=True)
+        eager["3DC-7, ours (`paper` preset)"] = paper_3dc7
+    return tuple("MD:" + findings.ratio_table(rows, counts=True, narrow=True) for rows in (eager, lazy))
 
 
 def paper_mlp() -> str:
@@ -217,14 +232,17 @@ def paper_mlp() -> str:
     return "| scenario | what it answers |\n| --- | --- |\n" + "\n".join(rows)
 
 
-def eager_counts(with_samples: str = "0", with_connection: str = "122.7") -> str:
-    """Section 5's table of Algorithm 1's stages and checks, as the chapter prints it (a quick run's numbers)."""
+def eager_counts(with_samples: str = "0", with_connection: str = "122.7") -> tuple[str, str, str]:
+    """Section 5's tables: Algorithm 1's verdict, its stages' times and its checks, as the chapter prints them (a
+    quick run's numbers)."""
+    eager = {"3DC-7, Algorithm 1 (prediction for samples; every edge exact) vs itself without": {"BS": EAGER_RUN}}
     return (
-        "| mode | sampling, ms | connection (edges), ms | query, ms | total, ms | roadmap nodes "
-        "| samples checked exactly | samples the network decided | edge points checked exactly |\n"
-        "| --- |" + " ---: |" * 8 + "\n"
-        "| without | 0.2 | 237.6 | 14.8 | 252.8 | 308 | 400 | 0 | 157,612 |\n"
-        f"| with | 1.0 | {with_connection} | 2.9 | 135.1 | 305 | {with_samples} | 400 | 135,922 |"
+        "MD:" + findings.planning_table(eager),
+        "MD:| mode | sampling | connection (edges) | query | total |\n| --- |" + " ---: |" * 4 + "\n"
+        f"| without | 0.2 | 237.6 | 14.8 | 252.8 |\n| with | 1.0 | {with_connection} | 2.9 | 135.1 |",
+        "MD:| mode | roadmap nodes | samples, exact | samples, network | edge points, exact |\n| --- |"
+        + " ---: |" * 4
+        + f"\n| without | 308 | 400 | 0 | 157,612 |\n| with | 305 | {with_samples} | 400 | 135,922 |",
     )
 
 
@@ -234,7 +252,7 @@ def test_chapter_04_passes_when_every_verdict_agrees_with_its_row():
 
 def test_chapter_04_fails_a_verdict_its_numbers_contradict():
     nb = chapter_04()
-    first = nb["cells"][0]["outputs"][0]["data"]
+    first = nb["cells"][0]["outputs"][1]["data"]  # after the line that states section 5's verdict
     first["text/markdown"] = first["text/markdown"].replace("costs time", "saves time", 1)
     assert problems(CH04, nb) == ["04: 2DS BS: says 'saves time (2.00; 2.00–2.25)', its numbers say 'costs time'"]
     nb = chapter_04()
@@ -271,13 +289,13 @@ def test_chapter_04_fails_where_section_6s_recorded_verdicts_contradict_its_answ
     count column that disagrees with its row, or a row whose verdicts the answer does not describe, is a problem."""
     nb = chapter_04()
     cell = nb["cells"][4]["outputs"][0]["data"]
-    cell["text/markdown"] = cell["text/markdown"].replace("| 1 / 2 / 1 |", "| 3 / 0 / 1 |", 1)
+    cell["text/markdown"] = cell["text/markdown"].replace(": 1 / 2 / 1 |", ": 3 / 0 / 1 |", 1)
     assert problems(CH04, nb) == [
-        "04: 3DC-7: `paper` preset, means, vs Algorithm 1: counted 3 / 0 / 1, its verdicts "
+        "04: 3DC-7, ours (`paper` preset): counted 3 / 0 / 1, its verdicts "
         "['a tie', 'a tie', 'saves time', 'costs time']"
     ]
     nb = chapter_04()
-    nb["cells"][4] = executed("MD:" + recorded_ratios({"BS": 0.8, "OB": 0.8, "G": 0.8, "BT": 1.35}))["cells"][0]
+    nb["cells"][4] = executed(recorded_ratios({"BS": 0.8, "OB": 0.8, "G": 0.8, "BT": 1.35}))["cells"][0]
     assert problems(CH04, nb) == [
         "04: the answer says the `paper` preset saves for 1 of 4 on 3DC-7; it shows "
         "['saves time', 'saves time', 'saves time', 'costs time']"
@@ -291,7 +309,10 @@ def test_ratio_table_counts_each_rows_verdicts():
     table = findings.ratio_table({"a": {"BS": 0.5, "OB": 1.0, "G": 1.05, "BT": 1.2}}, counts=True)
     assert table.splitlines()[0].endswith(f"| {findings.COUNT_COLUMN} |")
     assert table.splitlines()[2].endswith("| costs time (1.20) | 1 / 2 / 1 |")
-    assert "samplers" not in findings.ratio_table({"a": {"BS": 0.5}})  # no count column unless asked
+    assert "saves /" not in findings.ratio_table({"a": {"BS": 0.5}})  # no count unless asked
+    narrow = findings.ratio_table({"a": {"BS": 0.5, "OB": 1.2}}, counts=True, narrow=True).splitlines()
+    assert narrow[0] == "| measured | BS | OB |"  # five columns for four samplers fit a page's column; six do not
+    assert narrow[2] == f"| a<br>{findings.COUNT_COLUMN}: 1 / 0 / 1 | saves time<br>(0.50) | costs time<br>(1.20) |"
 
 
 def test_what_it_answers_reads_whole_percents():
@@ -302,7 +323,7 @@ def test_what_it_answers_reads_whole_percents():
 
 def test_chapter_04_fails_where_section_5s_counts_contradict_its_prose():
     nb = chapter_04()
-    nb["cells"][3] = executed("MD:" + eager_counts(with_samples="9,000", with_connection="50.0"))["cells"][0]
+    nb["cells"][3] = executed(eager_counts(with_samples="9,000", with_connection="50.0"))["cells"][0]
     assert problems(CH04, nb) == [
         "04: Algorithm 1 with: the sample checks are no small fraction of the edge points",
         "04: Algorithm 1 with: the connection stage is not most of its time",
@@ -311,9 +332,39 @@ def test_chapter_04_fails_where_section_5s_counts_contradict_its_prose():
     del nb["cells"][3:]
     assert problems(CH04, nb) == [
         "04: section 5's counts of Algorithm 1's checks are not displayed",
-        "04: section 6's table of recorded ratios, with its count column, is not displayed",
+        "04: section 6's tables of recorded ratios, with their counts, are not displayed",
+        "04: section 5's verdict is not stated in the opening and the summary",
         "04: the run's time is not printed with its load",
     ]
+
+
+def test_chapter_04_holds_the_opening_and_summary_to_section_5s_verdict():
+    """Reader r12a: the paper's claim with an accurate network (section 5) was in neither the opening nor the
+    summary. Both print it from the run; a sentence that disagrees with section 5's row, or a missing one, fails."""
+    nb = chapter_04()
+    nb["cells"][0]["outputs"].pop(0)  # the line under the first code cell
+    assert problems(CH04, nb) == ["04: section 5's verdict is not stated in the opening and the summary"]
+    nb = chapter_04()
+    summary = nb["cells"][-1]["outputs"][1]["data"]
+    summary["text/markdown"] = summary["text/markdown"].replace("a tie", "prediction saved time")
+    assert problems(CH04, nb) == [
+        "04: the answer says ('4', '1.05', '1.05', '1.05', 'prediction saved time') of section 5, its table "
+        "('4', '1.05', '1.05', '1.05', 'a tie')"
+    ]
+
+
+@pytest.mark.parametrize(
+    "with_, words",
+    [
+        ([0.5, 0.5, 0.6], "0.50 (middle half 0.50–0.55), prediction saved time."),
+        ([2.0, 2.0, 2.5], "2.00 (middle half 2.00–2.25), prediction cost time."),
+        ([1.0, 1.05, 1.1], "1.05 (middle half 1.02–1.08), a tie: within 10% of 1, neither saved nor cost."),
+        ([0.8, 1.0, 1.3], "1.00 (middle half 0.90–1.15), can't tell: the middle half reaches past 10% of 1."),
+    ],
+)
+def test_the_answers_sentence_says_what_its_interval_says(with_, words):
+    said = findings.planning_sentence("Algorithm 1, 3DC-7, BS", row([1, 1, 1], with_))
+    assert said == f"Algorithm 1, 3DC-7, BS, 3 queries: time with / without prediction {words}"
 
 
 def test_the_answer_chapter_04_and_05_state_holds_in_docs_results():

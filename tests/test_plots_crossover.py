@@ -52,7 +52,8 @@ def test_a_tick_label_that_would_touch_its_neighbour_is_left_out_and_the_last_is
     at = np.array([0, 50, 90, 130, 160, 180, 200.0])  # 100 and 200 30 px apart: 36 needed for two 3-digit labels
     assert _tick_labels(obstacles, at, 8.0) == ["10", "25", "50", "100", "", "", "500"]
     batch = np.array([1, 10, 100, 1000, 10000.0])
-    assert _tick_labels(batch, np.arange(5) * 50.0, 8.0) == ["1", "10", "100", "", "10,000"]  # 1,000: 56 px needed
+    assert _tick_labels(batch, np.arange(5) * 50.0, 8.0) == ["1", "10", "100", "1k", "10k"]  # 1,000: 56 px needed
+    assert _tick_labels(batch, np.arange(5) * 30.0, 8.0) == ["1", "10", "", "", "10k"]  # short, and still crowded
     assert _tick_labels(batch, np.arange(5) * 60.0, 8.0) == ["1", "10", "100", "1,000", "10,000"]
 
 

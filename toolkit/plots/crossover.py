@@ -190,14 +190,29 @@ def _halfway(x: np.ndarray) -> np.ndarray:
 def _tick_labels(x: np.ndarray, px: np.ndarray, char_px: float) -> list[str]:
     """The measured values ``x (n,)`` as tick labels at ``px (n,)`` pixels along the axis, a label left out where
     less than one and a half digits' width (``char_px`` each) would part it from the one before it; the last value
-    is always named."""
-    labels = [f"{v:,.0f}" for v in x]
+    is always named. Where the plain numbers (``1,000``) would leave one out, thousands are written short
+    (``1k``, ``10k``: reader r12a found no 1,000 on the batch panel), and only what still crowds is left out."""
+    for labels in ([f"{v:,.0f}" for v in x], [_short(v) for v in x]):
+        kept = _kept_apart(labels, px, char_px)
+        if all(kept):
+            break
+    return kept
+
+
+def _short(value: float) -> str:
+    """A tick's value in few characters: ``1k`` for 1,000, ``10k`` for 10,000; below 1,000 (or not whole thousands)
+    the plain number."""
+    return f"{value / 1000:g}k" if value >= 1000 and value % 1000 == 0 else f"{value:,.0f}"
+
+
+def _kept_apart(labels: list[str], px: np.ndarray, char_px: float) -> list[str]:
+    """``labels`` with those left out (``""``) that would come within a digit and a half of the one before."""
     room = [char_px * (len(label) / 2 + 0.75) for label in labels]  # (n,) half a label's width, and half the gap
     shown = [0]
-    for k in range(1, len(x)):
+    for k in range(1, len(labels)):
         if px[k] - px[shown[-1]] >= room[k] + room[shown[-1]]:
             shown.append(k)
-        elif k == len(x) - 1:  # the last value is named: the one before it gives way
+        elif k == len(labels) - 1:  # the last value is named: the one before it gives way
             shown[-1] = k
     return [label if k in shown else "" for k, label in enumerate(labels)]
 

@@ -187,13 +187,14 @@ def quartile_whiskers(
 
 
 def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figure:
-    """Time with / without prediction per sampler (below 1: prediction saves time), one panel per baseline.
+    """Time with / without prediction per sampler (below 1: prediction saves time), one panel per source.
 
-    ``{baseline: {series: {sampler: ratio}}}``: a baseline is what "without" was (the paper's own planner and
-    means, our eager or lazy exact planner and medians), a series what was timed (e.g. "2DS, sampling"). Each
-    ratio is a point (a series keeps its colour and marker in every panel), read against the line at 1: on a log
-    axis a bar's length would mean nothing. Ratios against different baselines never share a panel; the panels
-    share one log axis, so positions compare.
+    ``{source: {series: {sampler: ratio}}}``: a source names whose numbers they are and what "without" was (the
+    paper's Table 3 against its own planner, by means; a recorded run of ours against Algorithm 1 or the lazy
+    exact planner), a series what was timed (e.g. "2DS, sampling"). Each ratio is a point (a series keeps its colour
+    and marker in every panel), read against the line at 1: on a log axis a bar's length would mean nothing.
+    Ratios against different baselines never share a panel (two panels may share one); the panels share one log
+    axis, so positions compare.
     """
     names = list(dict.fromkeys(name for series in baselines.values() for name in series))  # every series, once
     height = 2.6 * len(baselines) + 0.1 + 0.2 * -(-len(names) // 2)  # one baseline a row; the legend, two a row

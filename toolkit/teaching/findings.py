@@ -68,25 +68,52 @@ def planning_table(tables: Mapping[str, Mapping[str, Mapping]], tie: float = TIE
     return "\n".join(rows)
 
 
+SAID = {  # a planning verdict at the end of a sentence (its band filled in)
+    SAVES: "prediction saved time",
+    COSTS: "prediction cost time",
+    TIES: "a tie: within {band} of 1, neither saved nor cost",
+    UNSURE: "can't tell: the middle half reaches past {band} of 1",
+}
+
+
+def planning_sentence(what: str, row: Mapping[str, Mapping], tie: float = TIE) -> str:
+    """One sentence a chapter can print where it states its answer: ``what`` was timed, over how many queries, the
+    per-query ratios' median and middle half, and the verdict of :func:`planning_verdict` in words (never "saves"
+    beside ratios above 1: the words are read from the same interval as the table's)."""
+    median, q1, q3, said = planning_verdict(row, tie)
+    n = row["without"]["n_queries"]
+    return (
+        f"{what}, {n} {'query' if n == 1 else 'queries'}: time with / without prediction {median:.2f} (middle half "
+        f"{q1:.2f}–{q3:.2f}), {SAID[said].format(band=f'{tie:.0%}')}."
+    )
+
+
 COUNTED = (SAVES, TIES, COSTS)  # the verdicts one recorded ratio can have, in the order a count column gives them
-COUNT_COLUMN = "samplers: saves / a tie / costs"
+COUNT_COLUMN = "saves / tie / costs"  # short: the table must fit a page's column
 
 
-def ratio_table(series: Mapping[str, Mapping[str, float]], tie: float = TIE, counts: bool = False) -> str:
+def ratio_table(
+    series: Mapping[str, Mapping[str, float]], tie: float = TIE, counts: bool = False, narrow: bool = False
+) -> str:
     """Markdown: one row per ``{label: {sampler: time with / without}}`` (recorded figures over many queries), each
-    ratio with its verdict; with ``counts``, a last column counting the row's verdicts (:data:`COUNT_COLUMN`), so
-    that a sentence need not count them."""
+    ratio with its verdict; with ``counts``, a count of the row's verdicts (:data:`COUNT_COLUMN`), so that a sentence
+    need not count them: a last column, or with ``narrow`` a line under the row's label, each ratio on a line below
+    its verdict (``<br>``). A page's column holds five columns of a rendered table, not six (each at least 5 rem)."""
     samplers = list(next(iter(series.values())))
-    extra = [COUNT_COLUMN] if counts else []
+    apart = "<br>" if narrow else " "
+    extra = [COUNT_COLUMN] if counts and not narrow else []
     rows = [
         "| measured | " + " | ".join([*samplers, *extra]) + " |",
         "| --- |" + " --- |" * (len(samplers) + len(extra)),
     ]
     for label, ratios in series.items():
         said = [time_verdict(ratios[s], tie=tie) for s in samplers]
-        cells = [f"{v} ({ratios[s]:.2f})" for v, s in zip(said, samplers)]
-        if counts:
-            cells.append(" / ".join(str(said.count(v)) for v in COUNTED))
+        cells = [f"{v}{apart}({ratios[s]:.2f})" for v, s in zip(said, samplers)]
+        counted = " / ".join(str(said.count(v)) for v in COUNTED)
+        if counts and narrow:
+            label = f"{label}<br>{COUNT_COLUMN}: {counted}"
+        elif counts:
+            cells.append(counted)
         rows.append(f"| {label} | " + " | ".join(cells) + " |")
     return "\n".join(rows)
 
@@ -117,6 +144,21 @@ def throughput_table(measured: Mapping[str, Mapping[str, float]], batch: int, ti
         rows.append(
             f"| {name} | {cost_verdict(exact, tie)} ({exact:.2f}) | {cost_verdict(fcl, tie)} ({fcl:.2f}) "
             f"| {m['exact_cfg_per_s']:,.0f} / {m['fcl_cfg_per_s']:,.0f} / {m['learned_cfg_per_s']:,.0f} |"
+        )
+    return "\n".join(rows)
+
+
+def cost_table(runs: Mapping[str, Mapping[str, float | None]], tie: float = CLOSE) -> str:
+    """Markdown: one column per run of ``{run: {scenario: cost per configuration, network / default exact}}`` (None:
+    not timed in that run), one row per scenario, each ratio with its verdict (:func:`cost_verdict`)."""
+    scenarios = list(dict.fromkeys(name for ratios in runs.values() for name in ratios))
+    rows = ["| scenario | " + " | ".join(runs) + " |", "| --- |" + " --- |" * len(runs)]
+    for name in scenarios:
+        cells = [ratios.get(name) for ratios in runs.values()]
+        rows.append(
+            f"| {name} | "
+            + " | ".join("not timed" if r is None else f"{cost_verdict(r, tie)} ({r:.2f})" for r in cells)
+            + " |"
         )
     return "\n".join(rows)
 
