@@ -28,7 +28,16 @@ from matplotlib.ticker import NullLocator
 
 from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots.alt import Part, describe, lines_part, map_part
-from toolkit.plots.palette import COLORS, GREYS_CMAP, MARKERS, PAGE_WIDTH, SEQUENTIAL_CMAP, halo, series_style
+from toolkit.plots.palette import (
+    COLORS,
+    GREYS_CMAP,
+    MARKER_NAMES,
+    MARKERS,
+    PAGE_WIDTH,
+    SEQUENTIAL_CMAP,
+    halo,
+    series_style,
+)
 from toolkit.plots.wrong_cells import draw_wrong_cells, error_cells, legend_handles, wrong_kinds
 
 
@@ -350,7 +359,7 @@ def latent_scatter(
         ax.set_xlabel(xlabel)
         ax.set_ylabel(ylabel if k == 0 else "")
         ax.tick_params(labelsize=9)
-        where = f"{name}: {len(xy)} workspaces ({style['marker']} markers{', larger' if big else ''}) around "
+        where = f"{name}: {len(xy)} workspaces ({MARKER_NAMES[style['marker']]}{', larger' if big else ''}) around "
         where += f"({np.mean(xy[:, 0]):.3g}, {np.mean(xy[:, 1]):.3g})"
         if color:
             where += f", {color_label or 'value'} {np.min(color[name]):.3g} to {np.max(color[name]):.3g}"

@@ -49,7 +49,8 @@ def crossover(results: dict) -> Figure:
         else f"nowhere cheaper by more than {CLOSE:.0%}"
     )
     fig.suptitle(
-        f"Where prediction pays: {results['scenario']}, preset {results['preset']}{quick}\n{said}", fontsize=11
+        f"Cost per check, exact and learned: {results['scenario']}, preset {results['preset']}{quick}\n{said}",
+        fontsize=11,
     )
     handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # one legend, below
     fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=1, fontsize=9, frameon=False)

@@ -109,6 +109,17 @@ MARKERS = ("o", "s", "^", "D", "v", "P", "X")
 """Line styles and marker shapes of series, in turn: a series told without its colour (series ``k`` takes
 ``LINE_COLORS[k % 6]``, ``LINE_STYLES[k % 4]``, ``MARKERS[k % 7]``; :func:`series_style`)."""
 
+MARKER_NAMES = {
+    "o": "circles",
+    "s": "squares",
+    "^": "triangles",
+    "D": "diamonds",
+    "v": "downward triangles",
+    "P": "plus signs",
+    "X": "crosses",
+}
+"""Each of :data:`MARKERS` in words, for a figure's description."""
+
 SHOWN_TOGETHER: dict[str, tuple[str, ...]] = {
     "robot and C-space figures": ("valid", "invalid", "block", "ink"),
     "C-space picture": ("free", "occupied", "block_outline"),
