@@ -762,6 +762,31 @@ def test_a_control_of_an_embedded_scene_that_takes_the_focus_is_scrolled_into_vi
     assert remote == []
 
 
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_play_in_3d_puts_the_focus_on_the_players_play_pause_button(site, served, chromium):
+    """WCAG 2.4.3 on chapter 05: the animation shows a still with a "play in 3D" button first; pressed, it took the
+    still away and the focus with it (to the frame's body), so a keyboard user started again from the frame's top.
+    Now the focus goes on to the player's play / pause button."""
+    from toolkit.viewer import labels
+
+    remote: list[str] = []
+    page = open_page(chromium, served + "notebooks/05_3d_scenes.html", remote)
+    try:
+        page.locator("iframe").last.content_frame.locator("button").first.wait_for(state="attached")
+        stills = [f for f in page.frames if f.get_by_role("button", name="play in 3D").count()]
+        assert len(stills) == 1
+        stills[0].get_by_role("button", name="play in 3D").focus()
+        page.keyboard.press("Enter")
+        page.wait_for_timeout(300)
+        named = stills[0].evaluate("document.activeElement.getAttribute('aria-label')")
+    finally:
+        page.close()
+    assert named == labels.PLAY_PAUSE, named
+    assert remote == []
+
+
 TABLES_CUT = r"""() => {
     // Each table of the page, read as a student at 1280 px sees it: it fits its column, or the region that scrolls it
     // sideways fits the column, says that it scrolls, and is reachable by keyboard; no ancestor cuts it off.

@@ -58,8 +58,9 @@ NAMES = {  # CSS selector -> accessible name (aria-label), for the controls with
     ".tabler-icon-share": "share the scene",
     ".mantine-Notification-closeButton": "close this notice",
 }
+PLAY_PAUSE = "play or pause the recording"  # the name of a saved scene's play / pause button
 RECORDING_NAMES = {  # and on a saved scene's player, after those
-    ".mantine-ActionIcon-root:not([aria-label]):not([title])": "play or pause the recording",
+    ".mantine-ActionIcon-root:not([aria-label]):not([title])": PLAY_PAUSE,
     "input[inputmode=decimal]:not([aria-label])": "time in the recording (seconds)",
     "input[role=combobox]:not([aria-label])": "playback speed",
     "button:not([aria-label]):not([title])": "viewer control",
@@ -201,7 +202,12 @@ STILL = """<style>#toolkit-play:focus-visible { outline: 2px solid %(ink)s; outl
     still.hidden = false;
   }
   view.inert = !still.hidden;  // no focus on controls the still covers
-  if (play) play.addEventListener("click", function () { still.hidden = true; view.inert = false; });
+  if (play) play.addEventListener("click", function () {  // the focus goes on to the player's play / pause
+    still.hidden = true;
+    view.inert = false;
+    var control = document.querySelector("[aria-label='" + %(play_pause)s + "']");
+    if (control) control.focus();
+  });
 })();</script>
 """
 NO_WEBGL = "This browser draws no 3D (no WebGL): the scene as a still picture."
@@ -216,7 +222,8 @@ def with_still(document: str, fig: Figure | None, *, first: str | None = None, p
     alt text from the figure): where the browser has no WebGL (the view would stay blank there) and, given
     ``first`` (what the still shows, in words), in every browser until the reader presses ``play``: a screenshot
     or a printed page then shows the still, not a view that has not drawn yet. The view's controls take no focus
-    while the still covers them. ``document`` as it is without a figure."""
+    while the still covers them; pressing ``play`` moves the focus to the player's play / pause button.
+    ``document`` as it is without a figure."""
     if fig is None:
         return document
     from toolkit.plots.alt import alt_text
@@ -231,6 +238,7 @@ def with_still(document: str, fig: Figure | None, *, first: str | None = None, p
         "play": "" if first is None else PLAY % {"ink": COLORS["ink"], "play": html.escape(play)},
         "no_webgl": json.dumps(NO_WEBGL),
         "ink": COLORS["ink"],
+        "play_pause": json.dumps(PLAY_PAUSE),
     }
     return _before_body_end(document, STILL % filled)
 
