@@ -698,6 +698,122 @@ def test_at_320_px_tab_never_goes_into_the_closed_navigation_drawer(site, served
     assert remote == []
 
 
+IN_VIEW = """() => {  // the focused element: its name, and whether all of it is in the window
+    const e = document.activeElement, box = e.getBoundingClientRect();
+    const name = e.getAttribute("aria-label") || (e.textContent || "").trim().slice(0, 40);
+    const inside = box.top >= 0 && box.bottom <= innerHeight && box.left >= 0 && box.right <= innerWidth;
+    return [e.tagName + " " + name, inside];
+}"""
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_at_320_px_the_keyboard_opens_the_navigation_drawer_and_reaches_its_links(site, served, chromium):
+    """WCAG 2.1.1 at 320 CSS px: material opens the navigation drawer by a click on its menu icon only, a label that
+    takes no focus, and the closed drawer is inert, so a keyboard user had no way to the site's navigation. The icon is
+    now a button the Tab key reaches, saying whether the drawer is open; Enter opens the drawer with the focus on a
+    link in it, in view, and Escape closes it and gives the focus back to the button."""
+    remote: list[str] = []
+    page = open_page(chromium, served + "notebooks/04_prm_with_and_without_prediction.html", remote)
+    try:
+        page.set_viewport_size({"width": 320, "height": 640})
+        page.wait_for_timeout(300)
+        menu = page.get_by_role("button", name="The site's navigation")
+        assert menu.count() == 1
+        for _ in range(10):
+            page.keyboard.press("Tab")
+            if menu.evaluate("button => button === document.activeElement"):
+                break
+        assert menu.evaluate("button => button === document.activeElement"), page.evaluate(FOCUSED_ON_SCREEN)
+        assert menu.get_attribute("aria-expanded") == "false"
+        page.keyboard.press("Enter")
+        page.wait_for_timeout(500)  # the drawer slides in (0.25 s)
+        assert menu.get_attribute("aria-expanded") == "true"
+        in_drawer = "() => !!document.activeElement.closest('.md-sidebar--primary')"
+        reached = []
+        for _ in range(3):
+            name, in_view = page.evaluate(IN_VIEW)
+            assert page.evaluate(in_drawer) and name.startswith("A ") and in_view, (name, in_view)
+            reached.append(name)
+            page.keyboard.press("Tab")
+        assert len(set(reached)) == 3, reached
+        page.keyboard.press("Escape")
+        assert menu.get_attribute("aria-expanded") == "false"
+        assert menu.evaluate("button => button === document.activeElement")
+        assert page.evaluate("document.querySelector('.md-sidebar--primary').inert")
+    finally:
+        page.close()
+    assert remote == []
+
+
+FRAME_FOCUS_IN_VIEW = """(frame) => {  // the control focused in ``frame``: its name, whether all of it is in the window
+    const e = frame.contentDocument.activeElement, box = e.getBoundingClientRect(), at = frame.getBoundingClientRect();
+    const top = at.top + box.top, bottom = at.top + box.bottom;
+    const header = document.querySelector(".md-header").getBoundingClientRect().bottom;
+    return [e.tagName + " " + (e.getAttribute("aria-label") || e.textContent.trim().slice(0, 40)),
+            top >= header && bottom <= innerHeight, [Math.round(top), Math.round(bottom), scrollY]];
+}"""
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_a_control_of_an_embedded_scene_that_takes_the_focus_is_scrolled_into_view(site, served, chromium):
+    """WCAG 2.4.7 and 2.4.3 on chapter 05 at 1280 x 900: Tab reached a scene's "Show scene tree" button while only
+    the frame's top edge showed at the window's bottom; the browser scrolled the frame's own page, not the chapter,
+    so the focus was out of sight. Now every control focused in a frame, by Tab or Shift+Tab, lies in the window
+    below the header."""
+    remote: list[str] = []
+    page = open_page(chromium, served + "notebooks/05_3d_scenes.html", remote)
+    try:
+        frames = page.locator("iframe")
+        for i in range(frames.count()):  # each scene's page built (its controls exist) before the keyboard comes
+            frames.nth(i).content_frame.locator("button").first.wait_for(state="attached")
+        unseen, seen = [], 0
+        for key in ("Tab", "Shift+Tab"):
+            page.evaluate("window.scrollTo(0, 0); document.activeElement.blur()")
+            for _ in range(400):
+                page.keyboard.press(key)
+                inside = page.evaluate("[...document.querySelectorAll('iframe')].indexOf(document.activeElement)")
+                if inside < 0:
+                    continue
+                page.wait_for_timeout(100)  # a smooth scroll, were there one, is over
+                name, in_view, where = frames.nth(inside).evaluate(FRAME_FOCUS_IN_VIEW)
+                seen += 1
+                if not in_view:
+                    unseen.append((key, inside, name, where))
+    finally:
+        page.close()
+    assert seen >= 20 and unseen == [], (seen, unseen)
+    assert remote == []
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_play_in_3d_puts_the_focus_on_the_players_play_pause_button(site, served, chromium):
+    """WCAG 2.4.3 on chapter 05: the animation shows a still with a "play in 3D" button first; pressed, it took the
+    still away and the focus with it (to the frame's body), so a keyboard user started again from the frame's top.
+    Now the focus goes on to the player's play / pause button."""
+    from toolkit.viewer import labels
+
+    remote: list[str] = []
+    page = open_page(chromium, served + "notebooks/05_3d_scenes.html", remote)
+    try:
+        page.locator("iframe").last.content_frame.locator("button").first.wait_for(state="attached")
+        stills = [f for f in page.frames if f.get_by_role("button", name="play in 3D").count()]
+        assert len(stills) == 1
+        stills[0].get_by_role("button", name="play in 3D").focus()
+        page.keyboard.press("Enter")
+        page.wait_for_timeout(300)
+        named = stills[0].evaluate("document.activeElement.getAttribute('aria-label')")
+    finally:
+        page.close()
+    assert named == labels.PLAY_PAUSE, named
+    assert remote == []
+
+
 TABLES_CUT = r"""() => {
     // Each table of the page, read as a student at 1280 px sees it: it fits its column, or the region that scrolls it
     // sideways fits the column, says that it scrolls, and is reachable by keyboard; no ancestor cuts it off.

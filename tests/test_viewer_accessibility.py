@@ -203,3 +203,28 @@ def test_the_keyboard_opens_the_layers_folder_and_toggles_a_layer(chromium):
             page.close()
     finally:
         viewer.stop()
+
+
+@pytest.mark.browser
+@needs_chromium
+def test_the_live_viewers_title_says_what_it_shows(chromium):
+    """WCAG 2.4.2: viser titles its page "Viser" whatever it shows; the live viewer's title names the scenario and
+    says it is the paper's viewer."""
+    plain = Viewer("3dc7", port=0)  # viser's page as it comes
+    try:
+        page = chromium.new_page()
+        page.goto(plain.url, wait_until="load")
+        assert page.title() == "Viser"
+        page.close()
+    finally:
+        plain.stop()
+    viewer = app.launch("3dc7", port=0, quiet=True)
+    try:
+        _, page = audit(chromium, viewer)
+        try:
+            expected = f"3D clutter, 7-DoF box chain (3dc7): {labels.PAGE_TITLE}"
+            page.wait_for_function(f"() => document.title === {expected!r}", timeout=10_000)
+        finally:
+            page.close()
+    finally:
+        viewer.stop()

@@ -103,16 +103,69 @@ window.addEventListener("resize", () => {
   markScrollingMath();
 });
 // Below Material's drawer breakpoint the site's navigation is a drawer off the screen's left edge; closed, its links
-// stayed in the tab order, so focus went where no one could see it (WCAG 2.4.7 at 320 px). Inert while it is closed.
+// stayed in the tab order, so focus went where no one could see it (WCAG 2.4.7 at 320 px): it is inert while closed.
+// Material opens it by a click on the menu icon only (a <label> that takes no focus), so that icon becomes a button
+// the keyboard reaches (WCAG 2.1.1), saying whether the drawer is open; Enter or Space opens it and puts the focus on
+// its first link, Escape closes it and gives the focus back to the button.
 (() => {
   const drawer = document.getElementById("__drawer");
   const navigation = document.querySelector(".md-sidebar--primary");
+  const button = document.querySelector('label.md-header__button[for="__drawer"]');
   if (!drawer || !navigation) return;
   const narrow = window.matchMedia("(max-width: 76.234375em)"); // Material's own breakpoint for the drawer
   const update = () => {
     navigation.inert = narrow.matches && !drawer.checked;
+    button?.setAttribute("aria-expanded", String(drawer.checked));
   };
+  const open = (opened) => {
+    drawer.checked = opened;
+    update();
+    if (opened) navigation.querySelector("a[href]")?.focus();
+    else button?.focus();
+  };
+  if (button) {
+    button.setAttribute("tabindex", "0");
+    button.setAttribute("role", "button");
+    button.setAttribute("aria-label", "The site's navigation");
+    button.addEventListener("keydown", (event) => {
+      if (event.key !== "Enter" && event.key !== " ") return;
+      event.preventDefault();
+      open(!drawer.checked);
+    });
+  }
+  document.addEventListener("keydown", (event) => {
+    if (event.key === "Escape" && drawer.checked && narrow.matches) open(false);
+  });
   drawer.addEventListener("change", update);
   narrow.addEventListener("change", update);
   update();
 })();
+// The focus may land on a control of an embedded scene (a same-origin frame: srcdoc) that lies below the window's
+// edge while the frame's top shows: the browser scrolls the frame's own page, not this one, so the focus was out of
+// sight (WCAG 2.4.7, 2.4.3). This page now scrolls the least that brings the control into view, clear of the header.
+const showFocusIn = (frame) => (event) => {
+  const control = event.target.getBoundingClientRect?.();
+  if (!control) return;
+  const box = frame.getBoundingClientRect();
+  const top = box.top + Math.max(control.top, 0), bottom = box.top + Math.min(control.bottom, frame.clientHeight);
+  const header = document.querySelector(".md-header")?.getBoundingClientRect().bottom ?? 0;
+  if (bottom > window.innerHeight) window.scrollBy(0, bottom - window.innerHeight + 8);
+  else if (top < header) window.scrollBy(0, top - header - 8);
+};
+const watchFrames = () => {
+  for (const frame of document.querySelectorAll("iframe")) {
+    const watch = () => {
+      const inner = frame.contentDocument; // null for a frame of another origin: the browser's own scrolling stays
+      if (inner && !inner.toolkitWatched) {
+        inner.toolkitWatched = true;
+        inner.addEventListener("focusin", showFocusIn(frame));
+      }
+    };
+    if (!frame.dataset.watched) {
+      frame.dataset.watched = "1";
+      frame.addEventListener("load", watch);
+    }
+    watch();
+  }
+};
+document$.subscribe(watchFrames);

@@ -25,6 +25,9 @@ tracks (2.1:1) to 3.3:1 (WCAG 1.4.3, 1.4.11).
 - :func:`named_live_page` makes viser's server serve its page with the same script (``toolkit view``): a copy of
   viser's ``client/build/index.html`` with the script in it, served in place of the original.
 
+viser titles every page "Viser": the live page's title (WCAG 2.4.2) says what it is, :data:`PAGE_TITLE`, and the script
+puts the scenario the panel's dropdown shows before it ("3D clutter, 7-DoF box chain (3dc7): live viewer, ...").
+
 The panel's status lines carry a mark (``<span data-live-status hidden>``, :data:`toolkit.viewer.panel.LIVE`; viser's
 markdown keeps raw HTML) by which the script makes each a live region (``role="status"``): a change of validity
 is announced. ``tests/test_viewer_accessibility.py`` runs axe-core on the live viewer.
@@ -47,6 +50,7 @@ import viser
 import viser.infra
 from matplotlib.figure import Figure
 
+from toolkit import scenarios
 from toolkit.plots.palette import COLORS
 
 NAMES = {  # CSS selector -> accessible name (aria-label), for the controls without a visible label
@@ -54,8 +58,9 @@ NAMES = {  # CSS selector -> accessible name (aria-label), for the controls with
     ".tabler-icon-share": "share the scene",
     ".mantine-Notification-closeButton": "close this notice",
 }
+PLAY_PAUSE = "play or pause the recording"  # the name of a saved scene's play / pause button
 RECORDING_NAMES = {  # and on a saved scene's player, after those
-    ".mantine-ActionIcon-root:not([aria-label]):not([title])": "play or pause the recording",
+    ".mantine-ActionIcon-root:not([aria-label]):not([title])": PLAY_PAUSE,
     "input[inputmode=decimal]:not([aria-label])": "time in the recording (seconds)",
     "input[role=combobox]:not([aria-label])": "playback speed",
     "button:not([aria-label]):not([title])": "viewer control",
@@ -66,6 +71,7 @@ ICONS = {  # an icon's class -> its name, for the icons that tell something; eve
     "tabler-icon-cloud-off": "not connected to the viewer's server",
 }
 HIDDEN = ".mantine-Notifications-root, .mantine-Notification-root"  # notices over a saved scene
+PAGE_TITLE = "live viewer, Predicting Sample Collision with Neural Networks"  # the page's title (viser's: "Viser")
 DIMMED = COLORS["panel_text"]  # viser's dimmed label text (3.3:1 on white) made darker
 
 BORDER = COLORS["input_border"]  # an input's border, darker than viser's
@@ -82,6 +88,7 @@ input:focus-visible, [role=button][tabindex]:focus-visible {
 (() => {
   const names = %(names)s;
   const icons = %(icons)s;
+  const titles = %(titles)s;
   const rowLabel = (control) => {  // the text of the one <label> of the nearest row around the control
     for (let node = control.parentElement, depth = 0; node && depth < 8; node = node.parentElement, depth++) {
       const labels = node.querySelectorAll("label");
@@ -134,6 +141,10 @@ input:focus-visible, [role=button][tabindex]:focus-visible {
         });
       }
     }
+    const scenario = [...document.querySelectorAll("input[role=combobox]")]  // the panel's dropdown
+      .find((input) => [...(input.labels || [])].some((label) => label.textContent.trim() === "scenario"))?.value;
+    const title = titles[scenario] && `${titles[scenario]} (${scenario}): ${%(page)s}`;
+    if (title && document.title !== title) document.title = title;  // (a change of title is a mutation too)
     for (const mark of document.querySelectorAll("[data-live-status]")) {  // a status line: announce its changes
       const line = mark.closest("div");
       if (line && !line.getAttribute("role")) {
@@ -159,6 +170,8 @@ def script(names: dict[str, str] = NAMES) -> str:
         "names": json.dumps(names),
         "icons": json.dumps(ICONS),
         "logo": json.dumps(LOGO_ALT),
+        "titles": json.dumps({name: scenario.title for name, scenario in scenarios.SCENARIOS.items()}),
+        "page": json.dumps(PAGE_TITLE),
     }
 
 
@@ -189,7 +202,12 @@ STILL = """<style>#toolkit-play:focus-visible { outline: 2px solid %(ink)s; outl
     still.hidden = false;
   }
   view.inert = !still.hidden;  // no focus on controls the still covers
-  if (play) play.addEventListener("click", function () { still.hidden = true; view.inert = false; });
+  if (play) play.addEventListener("click", function () {  // the focus goes on to the player's play / pause
+    still.hidden = true;
+    view.inert = false;
+    var control = document.querySelector("[aria-label='" + %(play_pause)s + "']");
+    if (control) control.focus();
+  });
 })();</script>
 """
 NO_WEBGL = "This browser draws no 3D (no WebGL): the scene as a still picture."
@@ -204,7 +222,8 @@ def with_still(document: str, fig: Figure | None, *, first: str | None = None, p
     alt text from the figure): where the browser has no WebGL (the view would stay blank there) and, given
     ``first`` (what the still shows, in words), in every browser until the reader presses ``play``: a screenshot
     or a printed page then shows the still, not a view that has not drawn yet. The view's controls take no focus
-    while the still covers them. ``document`` as it is without a figure."""
+    while the still covers them; pressing ``play`` moves the focus to the player's play / pause button.
+    ``document`` as it is without a figure."""
     if fig is None:
         return document
     from toolkit.plots.alt import alt_text
@@ -219,6 +238,7 @@ def with_still(document: str, fig: Figure | None, *, first: str | None = None, p
         "play": "" if first is None else PLAY % {"ink": COLORS["ink"], "play": html.escape(play)},
         "no_webgl": json.dumps(NO_WEBGL),
         "ink": COLORS["ink"],
+        "play_pause": json.dumps(PLAY_PAUSE),
     }
     return _before_body_end(document, STILL % filled)
 
@@ -235,7 +255,9 @@ def _named_client() -> Path:
             if text is None:
                 target.write_bytes(source.read_bytes())
             else:
-                target.write_text(_before_body_end(text, script()), encoding="utf-8")
+                title = html.escape(PAGE_TITLE[0].upper() + PAGE_TITLE[1:])
+                titled = text.replace("<title>Viser</title>", f"<title>{title}</title>")
+                target.write_text(_before_body_end(titled, script()), encoding="utf-8")
     return folder
 
 
