@@ -235,7 +235,7 @@ def test_a_pair_whose_taller_bar_says_the_other_way_is_starred_and_told():
     fig = timings.stage_times({"2DS": planning})
     ax = fig.axes[0]
     assert [t.get_text() for t in ax.texts] == ["0.60x", "0.60x*", "0.60x", "0.60x"]
-    assert "the median of each query's ratio" in ax.get_title() and "*: the taller bar" in ax.get_title()
+    assert "median of each query's ratio" in ax.get_title() and "*: the bars say the other way" in ax.get_title()
     assert "0.60x, though the bar with prediction is the taller" in alt.alt_text(fig)
     assert "*" not in timings.stage_times({"2DS": PLANNING}).axes[0].get_title()
 

@@ -59,9 +59,9 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=8)
         ax.set_xlabel("sampler, without / with prediction")
         ax.set_ylabel("ms per query (median)")
-        note = "; *: the taller bar is the other mode's" if crossed.any() else ""
+        note = "\n*: the bars say the other way (the taller is the other mode's)" if crossed.any() else ""
         ax.set_title(
-            f"{title}\nabove each pair: the median of each query's ratio with / without, not a ratio of the bars{note}",
+            f"{title}\nabove each pair: median of each query's ratio, with / without (not the bars' ratio){note}",
             fontsize=9,
             pad=14,
         )
