@@ -335,7 +335,8 @@ def chapter_04(nb) -> list[str]:
     fcl = {row[0]: row[2] for header, rows in found if header[2:3] == ["cost, network / python-fcl"] for row in rows}
     if not fcl or not all(v.startswith(findings.CHEAPER) for v in fcl.values()):
         problems.append(f"04: the prose says the network is the cheaper check against python-fcl: {fcl}")
-    problems += _eager_counts(found) + _recorded_verdicts(found) + _paper_claim(nb, found)
+    problems += _eager_counts(found) + _recorded_verdicts(found) + _paper_claim(nb, found) + _page_width(nb, found)
+    problems += _recorded_sampling()
     if not re.search(r"This run took \d+ s from the first cell to this one, at a load average of", " ".join(texts(nb))):
         problems.append("04: the run's time is not printed with its load")
     return problems
@@ -368,12 +369,49 @@ def _eager_counts(found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
     return problems
 
 
+COLUMNS = 5  # a table's columns that fit the site's page (review r12a, r13a: the sixth was cut off)
+CODE_WIDTH = 78  # a code block's columns at the site's code font in its ~690 px (review r13a: Algorithm 1's picture)
+
+
+def _page_width(nb, found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
+    """Every table displayed has at most :data:`COLUMNS` columns, and every line of the prose's code blocks (the
+    picture of Algorithm 1) at most :data:`CODE_WIDTH` characters: wider ones are cut off on the site's page."""
+    problems = [f"04: a table of {len(h)} columns, more than {COLUMNS}: {h}" for h, _ in found if len(h) > COLUMNS]
+    for cell in nb["cells"]:
+        if cell["cell_type"] == "markdown":
+            blocks = "".join(cell["source"]).split("```")[1::2]  # inside each fenced block
+            problems += [
+                f"04: a code block's line of {len(line)} characters, more than {CODE_WIDTH}: {line[:40]}..."
+                for block in blocks
+                for line in block.splitlines()
+                if len(line) > CODE_WIDTH
+            ]
+    return problems
+
+
+def _recorded_sampling() -> list[str]:
+    """Section 3's sentence on section 6's figure (review r13a: it spoke of "the recorded 100 queries" and the
+    `paper` panel contradicted it): the `strong` run's medians against the lazy exact planner have sampling with
+    prediction no faster for any sampler; the `paper` run's means against Algorithm 1 save sampling time on 3DC-7
+    for the uniform and Gaussian samplers and on 2DS for the bridge test."""
+    strong = recorded.median_ratios("strong")
+    faster = {key: [s for s in SAMPLERS if strong[key]["sampling"][s] < 1] for key in ("2ds", "3dc7")}
+    problems = [
+        f"04: the `strong` run's sampling is faster with prediction for {v} on {k}" for k, v in faster.items() if v
+    ]
+    means = {key: recorded.improvements("paper", key, "sampling") for key in ("2ds", "3dc7")}  # improvements
+    saved = {key: [s for s in SAMPLERS if findings.time_verdict(1 - means[key][s]) == findings.SAVES] for key in means}
+    if saved != {"2ds": ["BT"], "3dc7": ["BS", "G"]}:
+        problems.append(f"04: the `paper` run's means save sampling time for {saved}, not as the prose says")
+    return problems
+
+
 EAGER_ROW = "3DC-7, Algorithm 1"  # section 5's planning row: the paper's claim with an accurate network
 CLAIM = re.compile(
     r"inside the paper's Algorithm 1, 3DC-7, uniform sampler, (\d+) quer(?:y|ies): time with / without "
     r"prediction ([\d.]+) \(middle half ([\d.]+)–([\d.]+)\), (prediction saved time|prediction cost time|"
-    r"a tie|can't tell)"
-)
+    r"a tie|can't tell)[^.]*\. Only (\d+) queries, one sampler, one scenario"
+)  # ... and how few queries that is (findings.FEW_QUERIES; review r13a)
 
 
 def _paper_claim(nb, found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
@@ -396,7 +434,12 @@ def _paper_claim(nb, found: list[tuple[list[str], list[list[str]]]]) -> list[str
         return ["04: section 5's verdict is not stated in the opening and the summary"]
     verdict = VERDICT.fullmatch(rows[0][2])
     words = {findings.SAVES: "prediction saved time", findings.COSTS: "prediction cost time"}
-    expected = (rows[0][-1], *re.findall(r"[\d.]+", verdict.group(2)), words.get(verdict.group(1), verdict.group(1)))
+    expected = (
+        rows[0][-1],
+        *re.findall(r"[\d.]+", verdict.group(2)),
+        words.get(verdict.group(1), verdict.group(1)),
+        rows[0][-1],
+    )
     return [f"04: the answer says {s} of section 5, its table {expected}" for s in said if s != expected]
 
 
@@ -429,6 +472,13 @@ def _recorded_verdicts(found: list[tuple[list[str], list[list[str]]]]) -> list[s
     expected = {"3DC-7": valid, "3DC-9": invalid, "3DO": invalid}
     if {k: answers.get(k) for k in expected} != expected:
         problems.append(f"04: the answer says what the `paper` MLP answers; its table says {answers}")
+    for name, savers in {"2DS": ["BT"], "3DC-7": []}.items():  # the opening: the `paper` network vs the lazy PRM
+        lazy = said.get(f"{name}, `paper` preset, medians")
+        if lazy is None or [s for s, v in zip(SAMPLERS, lazy) if v == findings.SAVES] != savers:
+            problems.append(f"04: the answer says the `paper` preset's medians save for {savers} on {name}: {lazy}")
+    strong_2ds = said.get("2DS, `strong` preset, medians", [findings.SAVES])
+    if findings.SAVES in strong_2ds:  # "on 2DS no sampler saved time with it"
+        problems.append(f"04: the answer says no 2DS sampler saved time with the `strong` network: {strong_2ds}")
     strong = {kind: said.get(f"3DC-7, `strong` preset, {kind}", []) for kind in ("means", "medians")}
     if not strong["means"] or strong["means"] != strong["medians"]:
         problems.append(f"04: 3DC-7's `strong` means and medians do not agree verdict by verdict: {strong}")

@@ -16,6 +16,7 @@ import subprocess
 import sys
 from pathlib import Path
 
+import chapter_claims
 import numpy as np
 import pytest
 from chapter_claims import problems
@@ -113,6 +114,10 @@ CONTRADICTED = (  # sentences that executed pages contradicted (issue 37), in th
     "costs time (a repair)",  # "repairs: 0": the node was a dead end
     "where its P(valid) is highest",  # the cross sat in a region of mean P 0.54, the highest 0.71
     "count the MLP's dangerous",  # the `strong` model, not the paper's MLP
+    # issue 45, review r13a:
+    "and on 2DS no sampler saved time.",  # which network? The `paper` preset's medians saved with BT (0.88)
+    "the recorded 100 queries of `docs/results.md`, section 6's figure, have",  # its `paper` panel saved sampling
+    "the median of the queries' own ratios, time with / time without.",  # no warning: not a ratio of the bars
 )
 
 
@@ -180,7 +185,7 @@ def row(without: list[float], with_: list[float]) -> dict:
 EAGER_RUN = row([1, 1, 1, 1], [1.04, 1.05, 1.05, 1.06])  # section 5: Algorithm 1 with the `strong` network, a tie
 EAGER_SAID = findings.planning_sentence(
     "An accurate network (the `strong` preset's) inside the paper's Algorithm 1, 3DC-7, uniform sampler", EAGER_RUN
-)
+) + findings.FEW_QUERIES.format(n=4)
 
 
 def chapter_04() -> dict:
@@ -217,6 +222,7 @@ def recorded_ratios(paper_3dc7: dict[str, float] | None = None) -> tuple[str, st
         eager[f"{name}, the paper's Table 3"] = {s: 1 - paper_numbers.IMPROVEMENT[key]["total"][s] for s in SAMPLERS}
         eager[f"{name}, ours (`paper` preset)"] = means("paper", key)
     for name, key in SCENARIOS_4[:2]:
+        lazy[f"{name}, `paper` preset, medians"] = recorded.median_ratios("paper")[key]["total"]
         lazy[f"{name}, `strong` preset, means"] = means("strong", key)
         lazy[f"{name}, `strong` preset, medians"] = recorded.median_ratios("strong")[key]["total"]
     if paper_3dc7 is not None:
@@ -348,8 +354,66 @@ def test_chapter_04_holds_the_opening_and_summary_to_section_5s_verdict():
     summary = nb["cells"][-1]["outputs"][1]["data"]
     summary["text/markdown"] = summary["text/markdown"].replace("a tie", "prediction saved time")
     assert problems(CH04, nb) == [
-        "04: the answer says ('4', '1.05', '1.05', '1.05', 'prediction saved time') of section 5, its table "
-        "('4', '1.05', '1.05', '1.05', 'a tie')"
+        "04: the answer says ('4', '1.05', '1.05', '1.05', 'prediction saved time', '4') of section 5, its table "
+        "('4', '1.05', '1.05', '1.05', 'a tie', '4')"
+    ]
+    nb = chapter_04()  # review r13a: the verdict on 4 queries, without saying how few that is
+    summary = nb["cells"][-1]["outputs"][1]["data"]
+    summary["text/markdown"] = summary["text/markdown"].replace(" Only 4 queries", " Then 4 queries")
+    assert problems(CH04, nb) == ["04: section 5's verdict is not stated in the opening and the summary"]
+
+
+def test_chapter_04_names_the_network_whose_lazy_medians_it_reports():
+    """Review r13a: "on 2DS no sampler saved time" beside the `paper` preset's row "saves time (0.88)" with the bridge
+    test. The opening names the `strong` network for that, and the `paper` network's savers; a row that gives
+    either otherwise fails."""
+    nb = chapter_04()
+    cell = nb["cells"][4]["outputs"][1]["data"]
+    text = cell["text/markdown"].replace(": 1 / 0 / 3 |", ": 0 / 1 / 3 |", 1)
+    cell["text/markdown"] = text.replace("saves time<br>(0.88)", "a tie<br>(0.95)", 1)
+    assert problems(CH04, nb) == [
+        "04: the answer says the `paper` preset's medians save for ['BT'] on 2DS: "
+        "['costs time', 'costs time', 'costs time', 'a tie']"
+    ]
+    nb = chapter_04()
+    cell = nb["cells"][4]["outputs"][1]["data"]
+    cell["text/markdown"] = cell["text/markdown"].replace(
+        "medians<br>saves / tie / costs: 0 / 2 / 2 | a tie<br>(1.07)",
+        "medians<br>saves / tie / costs: 1 / 1 / 2 | saves time<br>(0.70)",
+    )
+    assert problems(CH04, nb) == [
+        "04: the answer says no 2DS sampler saved time with the `strong` network: "
+        "['saves time', 'a tie', 'costs time', 'costs time']"
+    ]
+
+
+def test_chapter_04_holds_section_3s_sampling_sentence_to_the_recorded_runs(monkeypatch):
+    """Review r13a: "the recorded 100 queries ... no faster for any sampler" while the `paper` panel saved sampling
+    time. The sentence now speaks of each run apart; recorded figures that would contradict either half fail."""
+    strong = recorded.median_ratios("strong")
+    faster = {**strong, "2ds": {**strong["2ds"], "sampling": {**strong["2ds"]["sampling"], "OB": 0.8}}}
+    monkeypatch.setattr(recorded, "median_ratios", lambda preset: faster if preset == "strong" else strong)
+    assert chapter_claims._recorded_sampling() == [
+        "04: the `strong` run's sampling is faster with prediction for ['OB'] on 2ds"
+    ]
+    monkeypatch.undo()
+    means = recorded.improvements
+    monkeypatch.setattr(recorded, "improvements", lambda p, k, kind="total": {**means(p, k, kind), "G": 0.0})
+    assert chapter_claims._recorded_sampling() == [
+        "04: the `paper` run's means save sampling time for {'2ds': ['BT'], '3dc7': ['BS']}, not as the prose says"
+    ]
+
+
+def test_chapter_04_fails_a_table_or_a_picture_wider_than_the_page():
+    """Review r13a: Algorithm 1's picture and the stage table's sixth column were cut off at the site's width."""
+    nb = chapter_04()
+    nb["cells"].append({"cell_type": "markdown", "source": ["```\n", "a" * 79 + "\n", "b" * 78 + "\n", "```\n"]})
+    nb["cells"].append(
+        executed("MD:| a | b | c | d | e | f |\n|" + " --- |" * 6 + "\n| 1 | 2 | 3 | 4 | 5 | 6 |")["cells"][0]
+    )
+    assert problems(CH04, nb) == [
+        "04: a table of 6 columns, more than 5: ['a', 'b', 'c', 'd', 'e', 'f']",
+        f"04: a code block's line of 79 characters, more than 78: {'a' * 40}...",
     ]
 
 

@@ -225,6 +225,21 @@ def test_stage_times_one_stacked_bar_per_sampler_and_mode_with_the_given_heights
     assert ax.get_ylim()[1] > 1500 * MEDIANS["BT"]["without"]["total_s"]  # every whisker within 2x the bars: whole
 
 
+def test_a_pair_whose_taller_bar_says_the_other_way_is_starred_and_told():
+    """Review r13a: "0.80x" over a pair whose bar with prediction was the taller (7.64 ms against 7.42). The number
+    is the median of each query's ratio, not the bars' quotient; where the two fall on opposite sides of 1 it
+    carries a "*" that the title explains, and the description says which bar is taller."""
+    planning = {s: {m: dict(row) for m, row in modes.items()} for s, modes in PLANNING.items()}
+    taller = 1.03 * planning["OB"]["without"]["total_s_median"]  # its queries' own ratios still 0.5, 0.6, 1.2
+    planning["OB"]["with"].update(total_s_median=taller, total_s_q1=0.8 * taller, total_s_q3=1.5 * taller)
+    fig = timings.stage_times({"2DS": planning})
+    ax = fig.axes[0]
+    assert [t.get_text() for t in ax.texts] == ["0.60x", "0.60x*", "0.60x", "0.60x"]
+    assert "median of each query's ratio" in ax.get_title() and "*: the bars say the other way" in ax.get_title()
+    assert "0.60x, though the bar with prediction is the taller" in alt.alt_text(fig)
+    assert "*" not in timings.stage_times({"2DS": PLANNING}).axes[0].get_title()
+
+
 def test_a_whisker_far_above_the_bars_is_cut_at_the_top_with_its_end_written():
     """One slow query's spread (OB with: a third quartile 20 times its bar) must not flatten the panel's bars: the
     axis stops near the tallest bar, the whisker ends there in a triangle and its value, in ms, is written beside it

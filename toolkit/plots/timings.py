@@ -36,7 +36,8 @@ def stage_times(panels: dict[str, dict]) -> Figure:
     into the planner's stages in the shares of an average query (``_share``; the rest, encoding and set-up, on top
     as "other"); a whisker from the total's first to third quartile; above each pair the median of the queries' own
     ratios, time with / without (the summaries' ``total_s_per_query``: each query was solved in both modes in turn),
-    the number the chapters' tables read their verdicts from.
+    the number the chapters' tables read their verdicts from. It is not the bars' quotient: where the two fall on
+    opposite sides of 1 (the taller bar is the other mode's) the number carries a "*" that the title explains.
 
     Each panel has its own scale, set by its bars: a whisker reaching past :data:`CUT` times the tallest bar (one
     slow query's spread would flatten every bar) is cut at the panel's top, a triangle there and its end written
@@ -50,18 +51,31 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         table = _stage_table(planning, names)  # key -> (samplers, modes), in ms
         cut = _draw_stage_bars(ax, x, table)  # (samplers, modes): which whiskers run past the panel's top
         ratio = [float(np.median(per_query_ratios(planning[s]))) for s in names]  # (samplers,)
+        bars = table["total_s"][:, 1] / table["total_s"][:, 0]  # (samplers,): the bars' own quotient, with / without
+        crossed = (bars - 1) * (np.asarray(ratio) - 1) < 0  # (samplers,): the taller bar says the other way
         for i, r in enumerate(ratio):  # above the frame, over the pair: never on a bar or a whisker
             where = dict(xycoords=("data", "axes fraction"), xytext=(0, 2), textcoords="offset points")
-            ax.annotate(f"{r:.2f}x", (i, 1.0), ha="center", va="bottom", fontsize=8, **where)
+            ax.annotate(f"{r:.2f}x{'*' if crossed[i] else ''}", (i, 1.0), ha="center", va="bottom", fontsize=8, **where)
         ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=8)
         ax.set_xlabel("sampler, without / with prediction")
         ax.set_ylabel("ms per query (median)")
-        ax.set_title(f"{title}; above each pair: median per-query with / without", fontsize=9, pad=14)
+        note = "\n*: the bars say the other way (the taller is the other mode's)" if crossed.any() else ""
+        ax.set_title(
+            f"{title}\nabove each pair: median of each query's ratio, with / without (not the bars' ratio){note}",
+            fontsize=9,
+            pad=14,
+        )
         said.append(
             f"{title}: "
             + ", ".join(
                 f"{s} {ms_text(table['total_s'][i, 0])} ms without, {ms_text(table['total_s'][i, 1])} ms with "
-                f"(per query {ratio[i]:.2f}x)"
+                f"(the median of each query's ratio {ratio[i]:.2f}x"
+                + (
+                    ", though the bar with prediction is the " + ("shorter" if bars[i] < 1 else "taller")
+                    if crossed[i]
+                    else ""
+                )
+                + ")"
                 for i, s in enumerate(names)
             )
             + cut_in_words(cut, [[f"{s} {m}" for m in MODES] for s in names], table["total_s_q3"], ax.get_ylim()[1])
@@ -79,7 +93,8 @@ def stage_times(panels: dict[str, dict]) -> Figure:
     fig.legend([shown[k] for k in order], order, loc="lower center", ncol=2, fontsize=8, frameon=False)
     fig.tight_layout(rect=(0, 0.7 / fig.get_figheight(), 1, 1))  # the legend in the 0.7 in below the panels
     text = "Median planning time per query in ms without and with prediction, per sampler, split into the planner's"
-    text += " stages (hatched), with the median of the queries' own time ratios, with / without, above each pair;"
+    text += " stages (hatched), with the median of each query's own time ratio, with / without (not a ratio of the"
+    text += " bars), above each pair;"
     text += " each panel on its own scale"
     return describe(fig, f"{text}. {'; '.join(said)}.", parts)
 

@@ -88,6 +88,12 @@ def planning_sentence(what: str, row: Mapping[str, Mapping], tie: float = TIE) -
     )
 
 
+FEW_QUERIES = (  # after a planning_sentence on a handful of queries: how few they are beside the paper's Table 3
+    " Only {n} queries, one sampler, one scenario (the paper's Table 3: 100 queries a scenario, four samplers, four "
+    "scenarios): a first look, too few to settle the claim."
+)
+
+
 COUNTED = (SAVES, TIES, COSTS)  # the verdicts one recorded ratio can have, in the order a count column gives them
 COUNT_COLUMN = "saves / tie / costs"  # short: the table must fit a page's column
 
