@@ -99,7 +99,7 @@ def scene_still(
         if ok in shown
     }
     fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1))
-    low = min(ax.get_tightbbox().y0 for ax in fig.axes) / fig.bbox.height  # the legend right under the lowest label
+    low = min((ax.get_tightbbox() or ax.bbox).y0 for ax in fig.axes) / fig.bbox.height  # the lowest label
     fig.legend(handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, low), ncol=3, frameon=False)
     return describe(fig, *_still_described(robot, workspace, poses, valid, samples, trace, near))
 
