@@ -286,6 +286,8 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     crosses = next(line for line in ax.get_lines() if line.get_label() == "roadmap node in collision")
     squares = next(c for c in ax.collections if c.get_label() == "invalid kept (dangerous)")
     assert crosses.get_zorder() > squares.get_zorder()  # a cross on a dangerous square shows (reader r12b)
+    assert to_rgba(crosses.get_color()) != to_rgba(squares.get_facecolor()[0])  # nor hides among them by colour (r13b)
+    assert [t.xy for t in ax.texts if t.get_text() == "in collision"] == [tuple(n) for n in nodes[~nodes_valid]]
 
 
 def test_conservative_dots_show_on_every_grey_in_ink_over_a_white_under_stroke(grid, probability, valid):

@@ -18,7 +18,7 @@ from IPython.display import HTML
 from toolkit import scenarios, viewer
 from toolkit.geometry.collision import exact_checker
 from toolkit.viewer import drawing as draw
-from toolkit.viewer import framing
+from toolkit.viewer import framing, snapshot
 from toolkit.viewer.labels import NO_WEBGL
 
 
@@ -242,7 +242,10 @@ def test_the_animation_iframe_is_tall_enough_for_its_whole_still(planned):
     png = base64.b64decode(found(r'src="data:image/png;base64,([^"]*)"', page_of(snippet)))
     still_height = int.from_bytes(png[20:24], "big")  # the PNG header's height, pixels
     assert still_height > 300  # the overview and three close-ups: more than one row
-    assert int(found(r'height="(\d+)"', snippet)) >= still_height  # every close-up in view, none cut off
+    height = int(found(r'height="(\d+)"', snippet))
+    assert height >= still_height  # every close-up in view, none cut off
+    still_width = int.from_bytes(png[16:20], "big")  # shown at most COLUMN px wide: no blank band under it (r13b)
+    assert height <= snapshot.COLUMN * still_height / still_width + snapshot.STILL_CONTROLS + 1
 
 
 def test_the_animation_is_titled_apart_from_the_scene_and_says_p_valid_in_words(make_viewer):

@@ -136,6 +136,9 @@ def grid_part(name: str, said: str, grid: np.ndarray, decoded: np.ndarray) -> Pa
     return map_part(name, text, grid.shape, ("x cell", 0, nx), ("y cell", 0, ny), region)
 
 
+FEW = 50  # a group of at most this many workspaces is drawn larger and on top: hundreds of points would bury it
+GREY = {True: dict(s=28, alpha=1.0, linewidths=0.8, zorder=3), False: dict(s=6, alpha=0.5, linewidths=0, zorder=1)}
+AREA = {"^": 1.7, "v": 1.7, "o": 1.2}  # marker area factors: a triangle of the same size looks half a square's
 LAYERS = 10  # slices of a large group drawn in turns with the other large groups' (accuracy_vs_all_free)
 
 
@@ -155,7 +158,7 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
         style = series_style(k)
         all_free, accuracy = np.asarray(all_free), np.asarray(accuracy)
         above = int(np.sum(accuracy > all_free))
-        few = len(accuracy) <= 50
+        few = len(accuracy) <= FEW
         layers = 1 if few else LAYERS
         for j in range(layers):  # layer j of every large group, then layer j + 1: the groups interleave
             ax.scatter(
@@ -163,11 +166,11 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
                 accuracy[j::layers],
                 label=f"{name} (mean {np.mean(accuracy):.1%} vs {np.mean(all_free):.1%})" if j == 0 else None,
                 alpha=0.9 if few else 0.7,
-                s=45 if few else 16,
+                s=(45 if few else 16) * AREA.get(style["marker"], 1.0),
                 c=style["color"],
                 marker=style["marker"],
-                edgecolors=COLORS["ink"],
-                linewidths=0.9 if few else 0.3,
+                edgecolors=COLORS["ink" if few else "free"],  # a white rim parts a large group's marks from another's
+                linewidths=0.9 if few else 0.4,
                 zorder=3 + len(groups) - k if few else 2 + (j * len(groups) + k) / (layers * len(groups)),
                 gid=name,
             )
@@ -332,7 +335,7 @@ def latent_scatter(
 ) -> Figure:
     """One marker per workspace: ``points[group]`` is ``(n, 2)``, e.g. the first two principal components of ``z``.
 
-    One panel per group on shared axes, the other groups' points grey behind it: whether the groups form one cloud
+    One panel per group on shared axes, the others grey (a few dozen larger, on top): whether the groups form one cloud
     reads from where the colour lies on the grey, not from telling hundreds of small markers apart by shape.
     ``color[group]`` ``(n,)`` (optional): a value per workspace shown on one shared colour scale (e.g. its share of
     occupied cells). ``highlight``: a group drawn with larger, thick black-edged markers (e.g. a few training
@@ -346,9 +349,8 @@ def latent_scatter(
     for k, (ax, (name, xy)) in enumerate(zip(axes, points.items())):
         xy = np.asarray(xy)
         others = [np.asarray(v) for other, v in points.items() if other != name]
-        if others:  # the rest, grey and small, behind: where this group lies among them
-            rest = np.concatenate(others)  # (m, 2)
-            ax.scatter(rest[:, 0], rest[:, 1], s=6, color=COLORS["reference"], alpha=0.5, linewidths=0, zorder=1)
+        for rest in others:  # grey: where this group lies among them; a few dozen larger, edged, on top, never buried
+            ax.scatter(*rest.T, color=COLORS["reference"], edgecolors=COLORS["ink"], **GREY[len(rest) <= FEW])
         big = name == highlight
         style: dict[str, Any] = dict(s=60 if big else 14, edgecolors=COLORS["ink"], linewidths=1.4 if big else 0.3)
         style.update(marker=MARKERS[k % len(MARKERS)], c=series_style(k)["color"])

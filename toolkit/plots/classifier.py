@@ -83,8 +83,8 @@ def path_map(
 ) -> Figure:
     """A planner's roadmap ``nodes (M, dof)`` and returned ``path (P, dof)`` over a P(valid) map of the grid's two DoFs.
 
-    Nodes in collision (``nodes_valid`` False, by the exact checker) are the dangerous mistakes the
-    planner accepted: crosses (``COLORS["dangerous"]``). The path, checked exactly, avoids them; it is dashed with a
+    Nodes in collision (``nodes_valid`` False, by the exact checker) are the dangerous mistakes the planner accepted:
+    large ink crosses ringed white, labelled. The path, checked exactly, avoids them; it is dashed with a
     diamond per configuration, so that it stands apart from the solid C-obstacle boundary. The model's threshold is a
     dotted line (P(valid) = threshold): the roadmap's dots on its dark side are nodes the model rejected, which the
     exact checker drew; conservative cells are not hatched here, so that no dot is mistaken for a node.
@@ -269,12 +269,22 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid: np.ndarray, path: np.ndarr
         nodes[~nodes_valid, x],
         nodes[~nodes_valid, y],
         "X",
-        color=DANGEROUS,
-        markersize=11,
+        color=COLORS["ink"],  # not the dangerous squares' colour: it sits among them, and must not hide there
+        markersize=14,
         label="roadmap node in collision",
-        path_effects=halo(),
-        zorder=4,  # over the dangerous squares (zorder 3), which it sits on: its black and white rings show it there
+        path_effects=halo(1.0, ("free",)),  # a white ring: it shows on the dark side of the map too
+        zorder=7,  # over the squares (3) and the path (5): the one mark that must not be missed
     )
+    for node in nodes[~nodes_valid][:3]:  # a few named in words as well
+        ax.annotate(
+            "in collision",
+            node[[x, y]],
+            xytext=(12, 12),
+            textcoords="offset points",
+            fontsize=9,
+            zorder=7,
+            bbox=dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6),
+        )
     ax.plot(
         path[:, x],
         path[:, y],

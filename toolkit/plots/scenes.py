@@ -98,8 +98,9 @@ def scene_still(
         for ok, text, c in ((True, "robot, valid", VALID_COLOR), (False, "robot, in collision", INVALID_COLOR))
         if ok in shown
     }
-    fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=3, fontsize=9, frameon=False)
     fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1))
+    low = min((ax.get_tightbbox() or ax.bbox).y0 for ax in fig.axes) / fig.bbox.height  # the lowest label
+    fig.legend(handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, low), ncol=3, frameon=False)
     return describe(fig, *_still_described(robot, workspace, poses, valid, samples, trace, near))
 
 

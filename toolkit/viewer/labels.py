@@ -192,7 +192,7 @@ STILL = """<style>#toolkit-play:focus-visible { outline: 2px solid %(ink)s; outl
  style="position:fixed;inset:0;overflow:auto;background:#fff;z-index:2147483647">
 <p style="position:sticky;top:0;margin:0;padding:4px 8px;background:#fff;font:14px sans-serif">
 <span id="toolkit-still-note">%(note)s</span>%(play)s</p>
-<img src="data:image/png;base64,%(png)s" alt="%(alt)s" style="width:100%%;height:auto"></div>
+<img src="data:image/png;base64,%(png)s" alt="%(alt)s" style="width:100%%;max-width:640px;height:auto"></div>
 <script>(function () {
   var canvas = document.createElement("canvas"), still = document.getElementById("toolkit-still");
   var play = document.getElementById("toolkit-play"), view = document.getElementById("root") || {};

@@ -52,9 +52,10 @@ def animation_iframe(viewer, height: int = 480, *, frames: int = 60, seconds: fl
     picture = scene_still(viewer, ends) if viewer.robot.dim == 3 else None
     document = with_still(viewer.animation_html(frames=frames, seconds=seconds), picture, first=ANIMATION_STILL)
     if picture is not None:  # tall enough for the whole still (every close-up) under its note and play button
-        height = max(height, round(COLUMN * picture.get_figheight() / picture.get_figwidth()) + STILL_CONTROLS)
+        drawn = picture.get_tightbbox().padded(0.1)  # as the page shows it: saved tight, savefig's pad_inches round
+        height = max(height, round(COLUMN * drawn.height / drawn.width) + STILL_CONTROLS)
     return srcdoc_iframe(document, height, summary=told)
 
 
-COLUMN = 700  # pixels: a little more than a chapter page's output column (631 px), across which the still is drawn
+COLUMN = 640  # pixels: the widest the still is shown (its max-width in labels.STILL), a little over a page's 631
 STILL_CONTROLS = 80  # pixels: the still's note and its play button, above it
