@@ -65,20 +65,9 @@ def stage_times(panels: dict[str, dict]) -> Figure:
             fontsize=9,
             pad=14,
         )
-        said.append(
-            f"{title}: "
-            + ", ".join(
-                f"{s} {ms_text(table['total_s'][i, 0])} ms without, {ms_text(table['total_s'][i, 1])} ms with "
-                f"(the median of each query's ratio {ratio[i]:.2f}x"
-                + (
-                    ", though the bar with prediction is the " + ("shorter" if bars[i] < 1 else "taller")
-                    if crossed[i]
-                    else ""
-                )
-                + ")"
-                for i, s in enumerate(names)
-            )
-            + cut_in_words(cut, [[f"{s} {m}" for m in MODES] for s in names], table["total_s_q3"], ax.get_ylim()[1])
+        said.append(_stage_words(title, names, table, ratio, bars, crossed))
+        said[-1] += cut_in_words(
+            cut, [[f"{s} {m}" for m in MODES] for s in names], table["total_s_q3"], ax.get_ylim()[1]
         )
         keys = ("total_s", "total_s_q1", "total_s_q3", *STAGE_KEYS, "other_s")
         rows = tuple(
@@ -97,6 +86,19 @@ def stage_times(panels: dict[str, dict]) -> Figure:
     text += " bars), above each pair;"
     text += " each panel on its own scale"
     return describe(fig, f"{text}. {'; '.join(said)}.", parts)
+
+
+def _stage_words(title: str, names: list[str], table: dict, ratio: list[float], bars, crossed) -> str:
+    """:func:`stage_times`' words for one panel: each sampler's median totals without and with prediction and the
+    median of its queries' ratios, with which bar is taller where the two say opposite things."""
+    words = []
+    for i, s in enumerate(names):
+        taller = ", though the bar with prediction is the " + ("shorter" if bars[i] < 1 else "taller")
+        words.append(
+            f"{s} {ms_text(table['total_s'][i, 0])} ms without, {ms_text(table['total_s'][i, 1])} ms with "
+            f"(the median of each query's ratio {ratio[i]:.2f}x{taller if crossed[i] else ''})"
+        )
+    return f"{title}: " + ", ".join(words)
 
 
 MS = 1000.0  # the figure's unit, ms, per second
