@@ -433,6 +433,8 @@ def _paper_claim(nb, found: list[tuple[list[str], list[list[str]]]]) -> list[str
     if not rows or len(said) != 2:
         return ["04: section 5's verdict is not stated in the opening and the summary"]
     verdict = VERDICT.fullmatch(rows[0][2])
+    if verdict is None:
+        return [f"04: section 5's verdict cell {rows[0][2]!r} is not a verdict"]
     words = {findings.SAVES: "prediction saved time", findings.COSTS: "prediction cost time"}
     expected = (
         rows[0][-1],

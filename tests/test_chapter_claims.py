@@ -227,7 +227,8 @@ def recorded_ratios(paper_3dc7: dict[str, float] | None = None) -> tuple[str, st
         lazy[f"{name}, `strong` preset, medians"] = recorded.median_ratios("strong")[key]["total"]
     if paper_3dc7 is not None:
         eager["3DC-7, ours (`paper` preset)"] = paper_3dc7
-    return tuple("MD:" + findings.ratio_table(rows, counts=True, narrow=True) for rows in (eager, lazy))
+    eager_table, lazy_table = ("MD:" + findings.ratio_table(rows, counts=True, narrow=True) for rows in (eager, lazy))
+    return eager_table, lazy_table
 
 
 def paper_mlp() -> str:
