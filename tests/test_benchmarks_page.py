@@ -39,7 +39,9 @@ def numbers(cell: str) -> list[float]:
 
 
 def span(values: list[float]) -> str:
-    return f"{min(values):g}–{max(values):g}"
+    """ "0.29–0.39" as a summary writes a range; one value alone, "500"."""
+    low, high = f"{min(values):g}", f"{max(values):g}"
+    return low if low == high else f"{low}–{high}"
 
 
 def said(pattern: str) -> tuple[str, ...]:
@@ -67,17 +69,17 @@ def test_the_checker_figures_are_the_throughput_tables():
 
 def test_the_crossover_figures_are_its_table():
     cheaper, tie = column("network cheaper"), column("can't tell")
-    mesh, chain = (next(v for k, v in cheaper.items() if k.startswith(what)) for what in ("triangles", "links"))
-    assert said(r"against a mesh obstacle \((\S+)") == (span(numbers(mesh)),)
-    assert said(r"for a (\d+)-link chain \((\S+)\)") == tuple(re.fullmatch(r"(\d+) \((\S+)\)", chain).groups())
-    blocks, links, calls = (
-        numbers(next(v for k, v in tie.items() if k.startswith(what)).partition("(")[0])
-        for what in ("obstacles", "links", "configurations")
+    assert [k.split()[0] for k, v in cheaper.items() if v != "nowhere"] == ["triangles"]  # "only against a mesh"
+    assert said(r"only where an exact check is dear\*\*: against a mesh obstacle \((\S+)") == (
+        span(numbers(cheaper["triangles (20–5,120)"])),
     )
-    assert said(r"Among (\S+) blocks, for chains of (\S+) links and in calls of (\S+) configurations") == (
+    blocks, links = (
+        numbers(next(v for k, v in tie.items() if k.startswith(w)).partition("(")[0]) for w in ("obst", "links")
+    )
+    assert tie["configurations a call (1–10,000)"] == "nowhere"  # "in small calls and large ones, ... dearer"
+    assert said(r"Among (\S+) blocks and for chains of (\S+) links the two are too close") == (
         span(blocks),
         span(links),
-        f"{calls[0]:,.0f}",
     )
 
 
@@ -105,27 +107,27 @@ def test_every_number_the_summary_quotes_is_in_a_table_of_the_page():
 
 ROOT = Path(__file__).resolve().parents[1]
 CROSSOVER = json.loads((ROOT / "docs" / "crossover.json").read_text())
-SAYING = "may now be a tie (not measured again)"
 
 
-def test_the_16_link_chain_is_the_same_figure_and_the_same_caveat_on_every_page():
+def test_the_16_link_chain_is_the_same_figure_on_every_page():
     """Review r12a: the index called the 16-link chain a tie (0.92, scaled) where this page called it a network win
-    (0.66); both quote docs/crossover.json (preset `paper`), which must say 0.66, and give the same caveat."""
+    (0.66). The README and the results page quote docs/crossover.json (preset `paper`) and read its ratio with the
+    same 25 % band as this page's table (checked against its summary above)."""
     links = CROSSOVER["variables"]["links"]
     assert CROSSOVER["preset"] == "paper" and links["values"][-1] == 16
-    ratio = f"{links['learned_us'][-1] / links['exact_us'][-1]:.2f}"
-    assert ratio == "0.66"
+    ratio = links["learned_us"][-1] / links["exact_us"][-1]
+    verdict = "too close to tell" if 0.75 <= ratio <= 1.25 else ("cheaper" if ratio < 0.75 else "dearer")
     pages = {
         "README.md": (ROOT / "README.md").read_text(),
-        "docs/benchmarks.md": PAGE,
         "docs/results.md": (ROOT / "docs" / "results.md").read_text(),
     }
     for name, text in pages.items():
         flat = " ".join(text.split())
-        assert re.search(rf"16-link chain[^.]*\b{ratio}\b", flat), f"{name} does not give the 16-link chain's {ratio}"
-        assert "may now be a tie" in flat, f"{name} does not say the 16-link chain may now be a tie"
-        assert not re.search(r"16-link chain[^.]*0\.92", flat), f"{name} still gives the scaled guess 0.92"
-    assert SAYING in SUMMARY
+        said_here = re.search(r"(?:16-link chain|16 links)[^.]*?\b(\d\.\d\d)\b", flat)
+        assert said_here, f"{name} does not give the 16-link chain's ratio"
+        assert said_here.group(1) == f"{ratio:.2f}", f"{name} gives {said_here.group(1)}, the sweep {ratio:.2f}"
+        assert verdict in flat, f"{name} does not say the network is {verdict} on the 16-link chain"
+        assert "may now be a tie" not in flat, f"{name} still hedges on a sweep that was measured again"
 
 
 def test_the_2ds_time_ratio_is_explained_against_its_rates():
