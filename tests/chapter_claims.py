@@ -201,7 +201,7 @@ def chapter_03(nb) -> list[str]:
         problems.append("03: the threshold sweep's sentence is not printed")
     elif 'no threshold beats "always valid"' not in found:
         problems.append('03: section 6 says no threshold beats "always valid"; the sweep\'s sentence says one does')
-    return problems + _chapter_03_verdict(found) + _chapter_03_slices(found)
+    return problems + _chapter_03_verdict(found) + _chapter_03_slices(found) + _page_width(nb, tables(nb), "03")
 
 
 SLICE = re.compile(  # section 5's verdict on a slice (the notebook's slice_verdict), its numbers and words captured
@@ -260,17 +260,19 @@ def _chapter_03_verdict(found: str) -> list[str]:
 
 
 def tables(nb) -> list[tuple[list[str], list[list[str]]]]:
-    """Every Markdown table the code cells displayed: its header's cells and its rows' cells (a line break in a cell,
-    ``<br>``, read as a space)."""
+    """Every Markdown table the code cells displayed, each apart where one output holds several: its header's cells
+    and its rows' cells (a line break in a cell, ``<br>``, read as a space)."""
     found = []
     for cell in nb["cells"]:
         for output in cell.get("outputs", []) if cell["cell_type"] == "code" else []:
-            lines = [
-                line for line in output.get("data", {}).get("text/markdown", "").splitlines() if line.startswith("|")
-            ]
-            rows = [[c.replace("<br>", " ").strip() for c in line.strip().strip("|").split("|")] for line in lines]
-            if len(rows) >= 3 and {c.strip(":") for c in rows[1]} <= {"---"}:  # "---:" aligns a column right
-                found.append((rows[0], rows[2:]))
+            text = output.get("data", {}).get("text/markdown", "")
+            for block in re.findall(r"(?:^\|.*(?:\n|$))+", text, flags=re.MULTILINE):  # consecutive table lines
+                rows = [
+                    [c.replace("<br>", " ").strip() for c in line.strip().strip("|").split("|")]
+                    for line in block.splitlines()
+                ]
+                if len(rows) >= 3 and {c.strip(":") for c in rows[1]} <= {"---"}:  # "---:" aligns a column right
+                    found.append((rows[0], rows[2:]))
     return found
 
 

@@ -454,6 +454,24 @@ def test_chapter_04_fails_a_table_or_a_picture_wider_than_the_page():
     ]
 
 
+def test_a_second_table_in_one_output_is_read_apart_and_held_to_the_page_width():
+    """Chapter 04's path table and, under it in the same output, a six-column table of `result.stats` were read as one
+    table of three columns, and the wide one escaped the width check."""
+    nb = chapter_04()
+    nb["cells"].append(
+        executed(
+            "MD:| a | b |\n| --- | ---: |\n| 1 | 2 |\n\nThe statistics:\n\n| c | d | e | f | g | h |\n|"
+            + " ---: |" * 6
+            + "\n| 1 | 2 | 3 | 4 | 5 | 6 |"
+        )["cells"][0]
+    )
+    assert chapter_claims.tables(nb)[-2:] == [(["a", "b"], [["1", "2"]]), (list("cdefgh"), [list("123456")])]
+    assert problems(CH04, nb) == ["04: a table of 6 columns, more than 5: ['c', 'd', 'e', 'f', 'g', 'h']"]
+    three = chapter_03(0.25, 0.25)
+    three["cells"].append(nb["cells"][-1])
+    assert problems(CH03, three) == ["03: a table of 6 columns, more than 5: ['c', 'd', 'e', 'f', 'g', 'h']"]
+
+
 @pytest.mark.parametrize(
     "with_, words",
     [
