@@ -49,25 +49,32 @@ def _percent(text: str, label: str) -> list[int]:
 RATIO = re.compile(r"(\d[\d,]*)x")  # a ratio as section 3 of chapter 01 prints it: "34x"
 
 
+RATES = ["scenario", "FCL checks / s", "compiled checks / s", "point robot checks / s"]  # section 3's first table
+RATIOS = ["scenario", "FCL's time / compiled's", "FCL's time / the fastest's", "the fastest"]  # ... and its second
+
+
 def chapter_01(nb) -> list[str]:
-    """Section 3's table of checker speeds against the words the chapter uses for it: in 3D, FCL's time "roughly ten to
-    a hundred times" the compiled checker's (6 to 149 times: a busy machine spreads them, review r7b and quick runs
-    beside other work printed 9 to 103); in 2D FCL's time "tens to hundreds of times" the fastest's (at least 20 times:
-    idle runs print 150-260, a quick run beside a full test suite printed 54),
-    the fastest the point robot's numpy test or, in quick mode's batches of 2,000 or on a busy machine, the compiled
-    checker (quick runs printed it ahead at 23 and 27 million checks a second against 22 and 25)."""
-    ratios = {
-        row[0]: (row[-2], row[-1])
-        for header, rows in tables(nb)
-        if header[-1].startswith("FCL's time / the fastest's")
-        for row in rows
-    }
-    if set(ratios) != {"2ds", "3do", "3dc7", "3dc9"}:
-        return [f"01: section 3's table of checker speeds lacks a scenario: {sorted(ratios)}"]
-    problems = _chapter_01_calls(nb) + _chapter_01_in_2d(nb)
-    for name, (compiled, fastest) in ratios.items():
+    """Section 3's tables of checker speeds (the rates, then FCL's time as a multiple of the others', each narrow
+    enough for the page) against the words the chapter uses for them: in 3D, FCL's time "roughly ten to a hundred
+    times" the compiled checker's (6 to 149 times: a busy machine spreads them, review r7b and quick runs beside other
+    work printed 9 to 103); in 2D FCL's time "tens to hundreds of times" the fastest's (at least 20 times: idle runs
+    print 150-260, a quick run beside a full test suite printed 54), the fastest the point robot's numpy test or, in
+    quick mode's batches of 2,000 or on a busy machine, the compiled checker (quick runs printed it ahead at 23 and 27
+    million checks a second against 22 and 25). Each ratio is the one its row's rates give."""
+    found = tables(nb)
+    rates = {row[0]: row for header, rows in found if header == RATES for row in rows}
+    ratios = {row[0]: row for header, rows in found if header == RATIOS for row in rows}
+    if set(rates) != {"2ds", "3do", "3dc7", "3dc9"} or set(ratios) != set(rates):
+        return [f"01: section 3's tables of checker speeds lack a scenario: {sorted(rates)}, {sorted(ratios)}"]
+    problems = _chapter_01_calls(nb) + _chapter_01_in_2d(nb, rates["2ds"]) + _page_width(nb, found, "01")
+    for name, (_, compiled, fastest, which) in ratios.items():
         times = [int(m.replace(",", "")) for m in RATIO.findall(compiled + " " + fastest)]
-        if name == "2ds" and (not fastest.endswith(("(PointRobotChecker)", "(CompiledChecker)")) or times[1] < 20):
+        fcl, *others = (float(v.replace(",", "")) for v in rates[name][1:] if v != "—")  # checks / s
+        if any(abs(r / fcl - t) > 0.51 for r, t in zip((others[0], max(others)), times)):  # printed as rounded
+            problems.append(f"01: {name}: the ratios {compiled}, {fastest} are not its rates' {rates[name][1:]}")
+        if which != ("PointRobotChecker" if len(others) == 2 and others[1] > others[0] else "CompiledChecker"):
+            problems.append(f"01: {name}: the fastest is not {which} by its rates {rates[name][1:]}")
+        if name == "2ds" and (which not in ("PointRobotChecker", "CompiledChecker") or times[1] < 20):
             problems.append(f"01: 2D, FCL against the fastest: {fastest}, not tens to hundreds of times the fastest's")
         if name != "2ds" and not 6 <= times[0] < 150:
             problems.append(
@@ -76,15 +83,14 @@ def chapter_01(nb) -> list[str]:
     return problems
 
 
-def _chapter_01_in_2d(nb) -> list[str]:
-    """The line under section 3's table: the compiled check's time in 2D as a multiple of the point-robot check's, as
-    the table's 2ds rates give it (the prose: a few times in full-size batches, level or below in quick mode's)."""
+def _chapter_01_in_2d(nb, rates: list[str]) -> list[str]:
+    """The line under section 3's second table: the compiled check's time in 2D as a multiple of the point-robot
+    check's, as the first table's 2ds ``rates`` give it (the prose: a few times in full-size batches, level or below
+    in quick mode's)."""
     said = re.search(r"In 2D, the compiled check took \*\*([\d.]+) times\*\*", " ".join(texts(nb)))
-    rates = [row for header, rows in tables(nb) if header[-1].startswith("FCL's time / the fastest's") for row in rows]
-    two_d = [row for row in rates if row[0] == "2ds"]
-    if said is None or not two_d:
+    if said is None:
         return ["01: the line under section 3's table does not give the compiled check's time in 2D"]
-    compiled, point = (float(two_d[0][i].replace(",", "")) for i in (2, 3))
+    compiled, point = (float(rates[i].replace(",", "")) for i in (2, 3))
     if abs(float(said.group(1)) - point / compiled) > 0.051:
         return [
             f"01: the line under section 3's table says {said.group(1)} times, its 2ds rates {point / compiled:.1f}"
@@ -195,7 +201,7 @@ def chapter_03(nb) -> list[str]:
         problems.append("03: the threshold sweep's sentence is not printed")
     elif 'no threshold beats "always valid"' not in found:
         problems.append('03: section 6 says no threshold beats "always valid"; the sweep\'s sentence says one does')
-    return problems + _chapter_03_verdict(found) + _chapter_03_slices(found)
+    return problems + _chapter_03_verdict(found) + _chapter_03_slices(found) + _page_width(nb, tables(nb), "03")
 
 
 SLICE = re.compile(  # section 5's verdict on a slice (the notebook's slice_verdict), its numbers and words captured
@@ -254,17 +260,19 @@ def _chapter_03_verdict(found: str) -> list[str]:
 
 
 def tables(nb) -> list[tuple[list[str], list[list[str]]]]:
-    """Every Markdown table the code cells displayed: its header's cells and its rows' cells (a line break in a cell,
-    ``<br>``, read as a space)."""
+    """Every Markdown table the code cells displayed, each apart where one output holds several: its header's cells
+    and its rows' cells (a line break in a cell, ``<br>``, read as a space)."""
     found = []
     for cell in nb["cells"]:
         for output in cell.get("outputs", []) if cell["cell_type"] == "code" else []:
-            lines = [
-                line for line in output.get("data", {}).get("text/markdown", "").splitlines() if line.startswith("|")
-            ]
-            rows = [[c.replace("<br>", " ").strip() for c in line.strip().strip("|").split("|")] for line in lines]
-            if len(rows) >= 3 and {c.strip(":") for c in rows[1]} <= {"---"}:  # "---:" aligns a column right
-                found.append((rows[0], rows[2:]))
+            text = output.get("data", {}).get("text/markdown", "")
+            for block in re.findall(r"(?:^\|.*(?:\n|$))+", text, flags=re.MULTILINE):  # consecutive table lines
+                rows = [
+                    [c.replace("<br>", " ").strip() for c in line.strip().strip("|").split("|")]
+                    for line in block.splitlines()
+                ]
+                if len(rows) >= 3 and {c.strip(":") for c in rows[1]} <= {"---"}:  # "---:" aligns a column right
+                    found.append((rows[0], rows[2:]))
     return found
 
 
@@ -335,7 +343,7 @@ def chapter_04(nb) -> list[str]:
     fcl = {row[0]: row[2] for header, rows in found if header[2:3] == ["cost, network / python-fcl"] for row in rows}
     if not fcl or not all(v.startswith(findings.CHEAPER) for v in fcl.values()):
         problems.append(f"04: the prose says the network is the cheaper check against python-fcl: {fcl}")
-    problems += _eager_counts(found) + _recorded_verdicts(found) + _paper_claim(nb, found) + _page_width(nb, found)
+    problems += _eager_counts(found) + _recorded_verdicts(nb, found) + _paper_claim(nb, found) + _page_width(nb, found)
     problems += _recorded_sampling()
     if not re.search(r"This run took \d+ s from the first cell to this one, at a load average of", " ".join(texts(nb))):
         problems.append("04: the run's time is not printed with its load")
@@ -373,15 +381,18 @@ COLUMNS = 5  # a table's columns that fit the site's page (review r12a, r13a: th
 CODE_WIDTH = 78  # a code block's columns at the site's code font in its ~690 px (review r13a: Algorithm 1's picture)
 
 
-def _page_width(nb, found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
-    """Every table displayed has at most :data:`COLUMNS` columns, and every line of the prose's code blocks (the
-    picture of Algorithm 1) at most :data:`CODE_WIDTH` characters: wider ones are cut off on the site's page."""
-    problems = [f"04: a table of {len(h)} columns, more than {COLUMNS}: {h}" for h, _ in found if len(h) > COLUMNS]
+def _page_width(nb, found: list[tuple[list[str], list[list[str]]]], chapter: str = "04") -> list[str]:
+    """Every table ``chapter`` displayed has at most :data:`COLUMNS` columns, and every line of its prose's code
+    blocks (04's picture of Algorithm 1, 01's of its pieces) at most :data:`CODE_WIDTH` characters: wider ones are cut
+    off on the site's page (review r13b: 01's speed table, six columns, lost its last)."""
+    problems = [
+        f"{chapter}: a table of {len(h)} columns, more than {COLUMNS}: {h}" for h, _ in found if len(h) > COLUMNS
+    ]
     for cell in nb["cells"]:
         if cell["cell_type"] == "markdown":
             blocks = "".join(cell["source"]).split("```")[1::2]  # inside each fenced block
             problems += [
-                f"04: a code block's line of {len(line)} characters, more than {CODE_WIDTH}: {line[:40]}..."
+                f"{chapter}: a code block's line of {len(line)} characters, more than {CODE_WIDTH}: {line[:40]}..."
                 for block in blocks
                 for line in block.splitlines()
                 if len(line) > CODE_WIDTH
@@ -445,7 +456,7 @@ def _paper_claim(nb, found: list[tuple[list[str], list[list[str]]]]) -> list[str
     return [f"04: the answer says {s} of section 5, its table {expected}" for s in said if s != expected]
 
 
-def _recorded_verdicts(found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
+def _recorded_verdicts(nb, found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
     """Section 6's tables of recorded ratios against the answer the chapter states: each row's count column equals
     its verdicts; the `paper` preset's means against Algorithm 1 save time for one sampler on 2DS and 3DC-7 and three
     on 3DC-9 and 3DO, where its MLP answers "valid" (3DC-7) or "invalid" (3DC-9, 3DO) to every sample; the paper's
@@ -474,19 +485,56 @@ def _recorded_verdicts(found: list[tuple[list[str], list[list[str]]]]) -> list[s
     expected = {"3DC-7": valid, "3DC-9": invalid, "3DO": invalid}
     if {k: answers.get(k) for k in expected} != expected:
         problems.append(f"04: the answer says what the `paper` MLP answers; its table says {answers}")
-    for name, savers in {"2DS": ["BT"], "3DC-7": []}.items():  # the opening: the `paper` network vs the lazy PRM
-        lazy = said.get(f"{name}, `paper` preset, medians")
-        if lazy is None or [s for s, v in zip(SAMPLERS, lazy) if v == findings.SAVES] != savers:
-            problems.append(f"04: the answer says the `paper` preset's medians save for {savers} on {name}: {lazy}")
-    strong_2ds = said.get("2DS, `strong` preset, medians", [findings.SAVES])
-    if findings.SAVES in strong_2ds:  # "on 2DS no sampler saved time with it"
-        problems.append(f"04: the answer says no 2DS sampler saved time with the `strong` network: {strong_2ds}")
+    problems += _opening(prose(nb), said, {row[0]: row[1:-1] for row in rows})
     strong = {kind: said.get(f"3DC-7, `strong` preset, {kind}", []) for kind in ("means", "medians")}
     if not strong["means"] or strong["means"] != strong["medians"]:
         problems.append(f"04: 3DC-7's `strong` means and medians do not agree verdict by verdict: {strong}")
     ob = [said.get(f"2DS, `strong` preset, {kind}", [None] * 2)[1] for kind in ("means", "medians")]
     if ob != [findings.SAVES, findings.TIES]:
         problems.append(f"04: 2DS OB's `strong` mean and median do not part as the prose says: {ob}")
+    return problems
+
+
+OPENING = re.compile(  # the opening's answer against the lazy PRM, its numbers and the samplers it names captured
+    r"our `strong` network did not save planning time\*\*: with it the median 3DC-7 query took ([\d.]+) to ([\d.]+) "
+    r"times as long, by sampler, and on 2DS it saved time for ([^.;:]+)\. .*?The reproduction's `paper` network, "
+    r"against the same lazy PRM, saved time on 2DS for ([^,]+), and on 3DC-7 for ([^(]+?) \(section 6's second table\)"
+)
+NAMED = {"BS": "uniform", "OB": "obstacle-based", "G": "Gaussian", "BT": "bridge test"}  # a sampler, in words
+
+
+def _named(words: str) -> list[str]:
+    """The samplers a phrase of the prose names: "none of the four samplers" (or "no sampler"), "the bridge test
+    alone", "the uniform and Gaussian samplers", "every sampler"."""
+    if words.startswith(("none", "no ")):
+        return []
+    if words.startswith(("every", "all four")):
+        return list(SAMPLERS)
+    return [s for s in SAMPLERS if NAMED[s] in words]
+
+
+def _opening(text: str, said: dict[str, list[str]], cells: dict[str, list[str]]) -> list[str]:
+    """The opening's plain answer against section 6's second table (review r13a, and an awkward "for no sampler"):
+    the `strong` network's 3DC-7 medians between the two ratios it gives (each rounded to one decimal), the 2DS
+    samplers it says the `strong` network saved time for, and those it says the `paper` network did on 2DS and
+    3DC-7, each the samplers its table row marks "saves time"."""
+    found = OPENING.search(text)
+    if found is None:
+        return ["04: the opening does not give its answer against the lazy PRM in the words the check reads"]
+    low, high, strong_2ds, paper_2ds, paper_3dc7 = found.groups()
+    strong_3dc7 = cells.get("3DC-7, `strong` preset, medians", [])
+    ratios = [float(m.group(2)) for c in strong_3dc7 if (m := VERDICT.fullmatch(c)) is not None]
+    problems = []
+    if not ratios or (f"{min(ratios):.1f}", f"{max(ratios):.1f}") != (low, high):
+        problems.append(f"04: the opening says 3DC-7 took {low} to {high} times as long; its medians are {ratios}")
+    for row, words in (
+        ("2DS, `strong` preset, medians", strong_2ds),
+        ("2DS, `paper` preset, medians", paper_2ds),
+        ("3DC-7, `paper` preset, medians", paper_3dc7),
+    ):
+        savers = [s for s, v in zip(SAMPLERS, said.get(row, [])) if v == findings.SAVES]
+        if row not in said or _named(words) != savers:
+            problems.append(f"04: the opening says '{words}' saved time ({row}); its row saves for {savers}")
     return problems
 
 

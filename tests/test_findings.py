@@ -171,17 +171,35 @@ def test_describe_accuracy_against_always_valid_and_a_coin_flip():
 
 
 def test_describe_threshold_sweep_finds_the_switch_and_the_best_threshold():
-    # the best threshold is read from the figure's sweep, so that the sentence and the figure name the same one
-    probability = np.array([0.45, 0.46, 0.47, 0.48, 0.9, 0.91, 0.92, 0.93, 0.94, 0.95])
+    # every threshold is read from the figure's sweep, so that the sentence and the figure name the same ones
+    probability = np.array([0.455, 0.465, 0.475, 0.485, 0.905, 0.915, 0.925, 0.935, 0.945, 0.955])  # off the grid
     valid = np.array([False, False, False, False, True, True, True, True, True, True])
     sentence = findings.describe_threshold_sweep(probability, valid)
     assert sentence == (
         'Up to a threshold of 0.45 the model calls every sample valid: TPR 1, TNR 0, "always valid", 60% accuracy. '
-        "The middle 80 % of its P(valid) lie between 0.46 and 0.94: that is where its answers switch. "  # 0.459, 0.941
+        "At 0.46 it still calls 90 % or more of the samples valid, at 0.95 only 10 % or fewer: between the two, where "
+        "80 % or more of its P(valid) lie, its answers switch. "  # 9 of 10 at 0.46 or more, 1 at 0.95 or more
         'Its best accuracy over the thresholds 0, 0.01, ..., 1 is 100%, at 0.49: 40 points above "always valid".'
-    )  # the lowest threshold of the sweep (toolkit.learning.metrics.SWEEP) that keeps 0.9 and rejects 0.48
+    )  # the lowest threshold of the sweep (toolkit.learning.metrics.SWEEP) that keeps 0.905 and rejects 0.485
     flat = findings.describe_threshold_sweep(np.full(4, 0.5), np.array([True, True, True, False]))
-    assert "lie between 0.50 and 0.50" in flat
+    assert "Up to a threshold of 0.50" in flat and "At 0.50 it still calls 90 % or more" in flat
+    assert "at 0.51 only 10 % or fewer" in flat  # the two ends differ even where every P(valid) is the same
     assert flat.endswith('is 75%, at 0.00: no threshold beats "always valid".')  # at 0.00 to 0.50 it calls all valid
+    sure = findings.describe_threshold_sweep(np.array([0.2, 1.0, 1.0]), np.array([False, True, True]))
+    assert "At 0.20 it still calls 90 % or more of the samples valid, and even at 1 more than 10 %: above 0.20" in sure
+
+
+def test_describe_threshold_sweep_names_the_figures_thresholds_around_a_cliff():
+    """Review r12b: "between 0.48 and 0.63" printed where the figure falls off a cliff between 0.47 and 0.48 (most
+    P(valid) lay just under 0.48, and two decimals rounded them up). The ends are the sweep's own thresholds: the
+    last that still calls 90 % valid lies below the cliff, and the share called valid there and above says so."""
+    rng = np.random.default_rng(0)
+    probability = np.concatenate([rng.uniform(0.4751, 0.4799, 60), rng.uniform(0.48, 0.63, 30), np.full(10, 0.9)])
+    valid = rng.random(100) < 0.8
+    sentence = findings.describe_threshold_sweep(probability, valid)
+    assert "At 0.47 it still calls 90 % or more of the samples valid, at 0.63 only 10 % or fewer" in sentence
+    called = {t: (probability >= t).mean() for t in (0.47, 0.48, 0.63)}  # what the figure's TPR and TNR come from
+    assert called[0.47] >= 0.9 and called[0.48] < 0.5 and called[0.63] <= 0.1
+    assert ((probability >= 0.47) & (probability < 0.63)).mean() >= 0.8  # "where 80 % or more of its P(valid) lie"
     with pytest.raises(ValueError, match="must be equal, non-empty"):
         findings.describe_threshold_sweep(np.zeros(3), np.zeros(4, dtype=bool))

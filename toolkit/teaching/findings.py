@@ -281,19 +281,27 @@ def describe_accuracy(label: str, accuracy: float, always_valid: float) -> str:
 
 def describe_threshold_sweep(probability: np.ndarray, valid: np.ndarray) -> str:
     """What a sweep of the decision threshold over ``probability (N,)`` against the truth ``valid (N,)`` shows, in three
-    short sentences: up to which threshold the model calls everything valid ("always valid"), the thresholds over
-    which the middle 80 % of its P(valid) lie (narrow: an abrupt switch), and its best accuracy over the thresholds
-    that :func:`toolkit.plots.reproduction.threshold_sweep` draws (:data:`toolkit.learning.metrics.SWEEP`, the same
-    numbers), next to "always valid"."""
+    short sentences, each read off the thresholds that :func:`toolkit.plots.reproduction.threshold_sweep` draws
+    (:data:`toolkit.learning.metrics.SWEEP`, the same numbers, so that the sentence names points of the figure): up to
+    which threshold the model calls everything valid ("always valid"), the last threshold at which it still calls 90 %
+    or more of the samples valid and the first at which it calls 10 % or fewer (80 % or more of its P(valid) lie
+    between them: narrow, an abrupt switch), and its best accuracy next to "always valid"."""
     p, truth = np.asarray(probability, dtype=float), np.asarray(valid, dtype=bool)
     accuracy = metrics.threshold_sweep(p, truth)["acc"]  # (T,) over metrics.SWEEP; checks the shapes
+    called = (p[None, :] >= metrics.SWEEP[:, None]).mean(axis=1)  # (T,) the share it calls valid, falling
     best = int(np.argmax(accuracy))  # the lowest threshold of the best accuracy
     always, top = round(100 * truth.mean()), round(100 * accuracy[best])
-    low, high = np.percentile(p, (10, 90))
+    every, most = (metrics.SWEEP[called >= share].max() for share in (1.0, 0.9))  # at 0 it calls every sample valid
+    few = metrics.SWEEP[called <= 0.1]  # (F,) where it calls 10 % or fewer valid: none if a tenth reach P(valid) 1
+    switch = (
+        f"at {few.min():.2f} only 10 % or fewer: between the two, where 80 % or more of its P(valid) lie"
+        if len(few)
+        else f"and even at 1 more than 10 %: above {most:.2f}"
+    )
     beats = "no threshold beats" if top <= always else f"{top - always} points above"
     return (
-        f'Up to a threshold of {p.min():.2f} the model calls every sample valid: TPR 1, TNR 0, "always valid", '
-        f"{always}% accuracy. The middle 80 % of its P(valid) lie between {low:.2f} and {high:.2f}: that is where its "
-        f"answers switch. Its best accuracy over the thresholds 0, 0.01, ..., 1 is {top}%, at "
-        f'{metrics.SWEEP[best]:.2f}: {beats} "always valid".'
+        f'Up to a threshold of {every:.2f} the model calls every sample valid: TPR 1, TNR 0, "always valid", '
+        f"{always}% accuracy. At {most:.2f} it still calls 90 % or more of the samples valid, {switch}, its answers "
+        f"switch. Its best accuracy over the thresholds 0, 0.01, ..., 1 is {top}%, at {metrics.SWEEP[best]:.2f}: "
+        f'{beats} "always valid".'
     )
