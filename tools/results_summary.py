@@ -7,9 +7,10 @@ It rewrites the lines between :data:`BEGIN` and :data:`END` in ``docs/results.md
 fails while they differ from what the tables give, so a new run's tables cannot leave an old summary behind.
 Time ratios are read with the page's rule (chapter 04's): a change under 10 % is a tie.
 
-It also draws the page's figure, :data:`FIGURE`: Table 3's totals, ours beside the paper's, per scenario and sampler
-(:func:`table3_figure`, drawn by :func:`toolkit.plots.timings.ratio_comparison`), and writes its text alternative
-between :data:`FIGURE_BEGIN` and :data:`FIGURE_END`; the PNG carries the same text (its ``Description``), so
+It also draws the page's two figures, :data:`FIGURES`: Table 3's total and sampling columns, ours beside the paper's,
+per scenario and sampler (:func:`table3_figure`, drawn by :func:`toolkit.plots.timings.ratio_comparison`), and writes
+each one's text alternative between its :data:`FIGURE_BEGIN` and :data:`FIGURE_END`; each PNG carries the same text
+(its ``Description``), so
 ``tests/test_results_figure.py`` fails while the picture or its words no longer match the tables.
 """
 
@@ -31,9 +32,9 @@ BEGIN = "<!-- summary: written by `python -m tools.results_summary` from the tab
 END = "<!-- end of the summary -->"
 TIE = 0.10  # a change of the time under 10 % is a tie
 NAMES = {"2ds": "2DS", "3dc7": "3DC-7", "3dc9": "3DC-9", "3do": "3DO"}
-FIGURE = RESULTS.parent / "results_table3.png"
-FIGURE_BEGIN = "<!-- figure: drawn by `python -m tools.results_summary` from the tables below; edit it there -->"
-FIGURE_END = "<!-- end of the figure -->"
+FIGURES = {kind: RESULTS.parent / f"results_table3_{kind}.png" for kind in ("total", "sampling")}  # Table 3's columns
+FIGURE_BEGIN = "<!-- figure of {kind} times: drawn by `python -m tools.results_summary` from the tables below -->"
+FIGURE_END = "<!-- end of the figure of {kind} times -->"
 COLUMNS = 5  # the widest table the page shows: wider ones are cut off, or scroll, at 1280 px (chapter 04's rule)
 KEYS = ("", "sampler")  # a table's leading columns that name its rows: every part of a split table repeats them
 FIGURE_DPI = 110  # as docs/crossover.png: the site's column shows it at about its size
@@ -227,46 +228,47 @@ def parts(rows: list[list[str]]) -> list[list[list[str]]]:
     return [[row[:keys] + [row[c] for c in columns] for row in rows] for columns in packed]
 
 
-def totals(text: str) -> dict[str, dict[str, dict[str, float]]]:
-    """Table 3's totals as time ratios with / without (``1 - improvement``, means, against Algorithm 1), from the
-    paper and from the page ``text``'s runs of the `paper` recipe: ``{scenario: {series: {sampler: ratio}}}``."""
+def ratios(text: str, kind: str = "total") -> dict[str, dict[str, dict[str, float]]]:
+    """Table 3's ``kind`` columns ("total" or "sampling") as time ratios with / without (``1 - improvement``, means,
+    against Algorithm 1), from the paper and from the page ``text``'s runs of the `paper` recipe:
+    ``{scenario: {series: {sampler: ratio}}}``."""
     tables = parse(HISTORY.sub("## Preset `before25`", text))
     found: dict[str, dict[str, dict[str, float]]] = {}
     for scenario in NAMES:  # the paper's order
         for name, preset in SOURCES.items():
             saved = (
-                IMPROVEMENT[scenario]["total"]
+                IMPROVEMENT[scenario][kind]
                 if preset is None
-                else recorded.improvements(preset, scenario, recorded=tables)
+                else recorded.improvements(preset, scenario, kind, recorded=tables)
             )
             found.setdefault(scenario, {})[name] = {s: round(1 - v, 6) for s, v in saved.items()}
     return found
 
 
-def table3_figure(text: str) -> Figure:
-    """The page's figure: per scenario, each sampler's mean query time with / without prediction against Algorithm 1,
-    the paper's beside ours (:func:`totals`)."""
+def table3_figure(text: str, kind: str = "total") -> Figure:
+    """One of the page's figures: per scenario, each sampler's mean ``kind`` time ("total" or "sampling") with /
+    without prediction against Algorithm 1, the paper's beside ours (:func:`ratios`)."""
     return timings.ratio_comparison(
-        {f"{NAMES[s]}: total time, means, against Algorithm 1": series for s, series in totals(text).items()}
+        {f"{NAMES[s]}: {kind} time, means, against Algorithm 1": series for s, series in ratios(text, kind).items()}
     )
 
 
-def figure_markdown(text: str) -> str:
-    """The figure as the page ``text`` shows it: a sentence that counts its points by the tie rule, then the picture
-    with its text alternative and its longer description under it."""
-    fig = table3_figure(text)
+def figure_markdown(text: str, kind: str = "total") -> str:
+    """The figure of ``kind`` as the page ``text`` shows it: a sentence that counts its points by the tie rule, then
+    the picture with its text alternative and its longer description under it."""
+    fig = table3_figure(text, kind)
     counts: dict[str, list[str]] = {}
-    for series in totals(text).values():
-        for name, ratios in series.items():
-            counts.setdefault(name, []).extend(change(r) for r in ratios.values())
+    for series in ratios(text, kind).values():
+        for name, by_sampler in series.items():
+            counts.setdefault(name, []).extend(change(r) for r in by_sampler.values())
     said = "; ".join(
         f"{name} saved 10 % or more in {words.count('less time')} of {len(words)} cells, lost 10 % or more in "
         f"{words.count('more time')} and tied in {words.count('about the same time')}"
         for name, words in counts.items()
     )
     described = alt.details_html(alt.details(fig)).strip()
-    shown = f"![{html.escape(alt.alt_text(fig))}]({FIGURE.name})\n\n{described}"
-    return f"Counted with the page's rule (a change under 10 % is a tie): {said}.\n\n{shown}"
+    shown = f"![{html.escape(alt.alt_text(fig))}]({FIGURES[kind].name})\n\n{described}"
+    return f"{kind.capitalize()} time, counted with the page's rule (a change under 10 % is a tie): {said}.\n\n{shown}"
 
 
 def between(text: str, begin: str, end: str, new: str) -> str:
@@ -282,15 +284,20 @@ def with_summary(text: str) -> str:
     """``text`` (docs/results.md) with its wide tables in parts (:func:`narrow`), the summary between its markers
     made again from its tables (:func:`summary`) and the figure's text between its own (:func:`figure_markdown`)."""
     text = between(narrow(text), BEGIN, END, summary(parse(text)))
-    return between(text, FIGURE_BEGIN, FIGURE_END, figure_markdown(text))
+    for kind in FIGURES:
+        text = between(text, FIGURE_BEGIN.format(kind=kind), FIGURE_END.format(kind=kind), figure_markdown(text, kind))
+    return text
 
 
 def main() -> int:
     text = with_summary(RESULTS.read_text())
     RESULTS.write_text(text)
-    fig = table3_figure(text)
-    fig.savefig(FIGURE, dpi=FIGURE_DPI, bbox_inches="tight", metadata={"Description": alt.alt_text(fig)})
-    print(f"wrote the summary and the figure's text of {RESULTS.name}, and {FIGURE.name}")
+    for kind, path in FIGURES.items():
+        fig = table3_figure(text, kind)
+        fig.savefig(path, dpi=FIGURE_DPI, bbox_inches="tight", metadata={"Description": alt.alt_text(fig)})
+    print(
+        f"wrote the summary and the figures' text of {RESULTS.name}, and {', '.join(p.name for p in FIGURES.values())}"
+    )
     return 0
 
 
