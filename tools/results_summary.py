@@ -254,21 +254,23 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
 
 
 def figure_markdown(text: str, kind: str = "total") -> str:
-    """The figure of ``kind`` as the page ``text`` shows it: a sentence that counts its points by the tie rule, then
-    the picture with its text alternative and its longer description under it."""
+    """The figure of ``kind`` as the page ``text`` shows it: the picture with its text alternative and its longer
+    description under it, then a small table that counts each series' points by the tie rule."""
     fig = table3_figure(text, kind)
     counts: dict[str, list[str]] = {}
     for series in ratios(text, kind).values():
         for name, by_sampler in series.items():
             counts.setdefault(name, []).extend(change(r) for r in by_sampler.values())
-    said = "; ".join(
-        f"{name} saved 10 % or more in {words.count('less time')} of {len(words)} cells, lost 10 % or more in "
-        f"{words.count('more time')} and tied in {words.count('about the same time')}"
+    rows = [
+        f"| {name} | {words.count('less time')} | {words.count('about the same time')} | {words.count('more time')} |"
         for name, words in counts.items()
-    )
+    ]
+    cells = len(next(iter(counts.values())))
+    head = f"| {kind} time, {cells} cells | saved 10 % or more | tied | lost 10 % or more |\n| --- | --- | --- | --- |"
     described = alt.details_html(alt.details(fig)).strip()
     shown = f"![{html.escape(alt.alt_text(fig))}]({FIGURES[kind].name})\n\n{described}"
-    return f"{kind.capitalize()} time, counted with the page's rule (a change under 10 % is a tie): {said}.\n\n{shown}"
+    said = f"*{kind.capitalize()} time*, Table 3's cells counted with the page's rule (a change under 10 % is a tie):"
+    return f"{shown}\n\n{said}\n\n{head}\n" + "\n".join(rows)
 
 
 def between(text: str, begin: str, end: str, new: str) -> str:
