@@ -33,6 +33,10 @@ END = "<!-- end of the summary -->"
 TIE = 0.10  # a change of the time under 10 % is a tie
 NAMES = {"2ds": "2DS", "3dc7": "3DC-7", "3dc9": "3DC-9", "3do": "3DO"}
 FIGURES = {kind: RESULTS.parent / f"results_table3_{kind}.png" for kind in ("total", "sampling")}  # Table 3's columns
+LEADS = {  # what each figure shows, over it
+    "total": "**Figure 1: a whole query's time** (Table 3's *Total* columns), ours beside the paper's.",
+    "sampling": "**Figure 2: the sampling stage's time** (Table 3's *Sampling* columns), ours beside the paper's.",
+}
 FIGURE_BEGIN = "<!-- figure of {kind} times: drawn by `python -m tools.results_summary` from the tables below -->"
 FIGURE_END = "<!-- end of the figure of {kind} times -->"
 COLUMNS = 5  # the widest table the page shows: wider ones are cut off, or scroll, at 1280 px (chapter 04's rule)
@@ -254,8 +258,9 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
 
 
 def figure_markdown(text: str, kind: str = "total") -> str:
-    """The figure of ``kind`` as the page ``text`` shows it: the picture with its text alternative and its longer
-    description under it, then a small table that counts each series' points by the tie rule."""
+    """The figure of ``kind`` as the page ``text`` shows it: a line that names it, the picture with its text
+    alternative and its longer description under it, then a small table that counts each series' points by the tie
+    rule."""
     fig = table3_figure(text, kind)
     counts: dict[str, list[str]] = {}
     for series in ratios(text, kind).values():
@@ -270,7 +275,7 @@ def figure_markdown(text: str, kind: str = "total") -> str:
     described = alt.details_html(alt.details(fig)).strip()
     shown = f"![{html.escape(alt.alt_text(fig))}]({FIGURES[kind].name})\n\n{described}"
     said = f"*{kind.capitalize()} time*, Table 3's cells counted with the page's rule (a change under 10 % is a tie):"
-    return f"{shown}\n\n{said}\n\n{head}\n" + "\n".join(rows)
+    return f"{LEADS[kind]}\n\n{shown}\n\n{said}\n\n{head}\n" + "\n".join(rows)
 
 
 def between(text: str, begin: str, end: str, new: str) -> str:
