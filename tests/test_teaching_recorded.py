@@ -94,7 +94,9 @@ def test_the_packaged_tables_are_what_docs_results_md_says():
 
 
 def test_the_parse_keeps_every_row_and_only_the_first_table_under_a_heading():
-    text = RESULTS.replace("*Seen*: balanced samples.", "|  | other |\n| --- | --- |\n| 2ds | 1 |")
+    text = RESULTS.replace(
+        "*Seen*: balanced samples.", "*Seen*: balanced samples.\n\n|  | other |\n| --- | --- |\n| 2ds | 1 |"
+    )
     parsed = recorded_results.parse(text)
     assert parsed["paper"]["Table 2: MLP accuracy, TPR, TNR"]["rows"] == [
         ["2ds", "**61%** / 92%", "**36%** / 96%"],
@@ -102,3 +104,14 @@ def test_the_parse_keeps_every_row_and_only_the_first_table_under_a_heading():
     ]
     assert list(parsed) == ["paper", "strong"]
     assert recorded_results.parse("## Preset `paper` before issue 25\n\n### T\n\n| a |\n| - |\n| b |\n") == {}
+
+
+def test_a_table_shown_in_parts_is_read_as_one():
+    """docs/results.md shows a wide table in parts of at most five columns, each repeating the key columns."""
+    one = "|  | sampler | a | b |\n| --- | --- | --- | --- |\n| 2ds | BS | 1 | 2 |\n| 2ds | OB | 3 | 4 |\n"
+    parts = "|  | sampler | a |\n| --- | --- | --- |\n| 2ds | BS | 1 |\n| 2ds | OB | 3 |\n\n"
+    parts += "|  | sampler | b |\n| --- | --- | --- |\n| 2ds | BS | 2 |\n| 2ds | OB | 4 |\n"
+    whole, split = (recorded_results.parse(f"## Preset `paper`\n\n### T\n\n{t}\n*Note*\n") for t in (one, parts))
+    assert split == whole and whole["paper"]["T"]["columns"] == ["", "sampler", "a", "b"]
+    with pytest.raises(ValueError, match="does not repeat the rows"):
+        recorded_results.parse(f"## Preset `paper`\n\n### T\n\n{parts.replace('| 2ds | OB | 4 |', '| 3do | OB | 4 |')}")

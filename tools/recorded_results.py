@@ -26,14 +26,18 @@ WITHOUT = "*Without prediction*:"  # how tables.md names, under a heading, what 
 
 def parse(text: str) -> dict[str, dict[str, dict]]:
     """``{preset: {heading: {"without": str | None, "columns": [...], "rows": [[cell, ...], ...]}}}``: the first table
-    under every ``###`` heading of the sections ``## Preset `name` ``, and what its note says "without" was."""
+    under every ``###`` heading of the sections ``## Preset `name` ``, and what its note says "without" was. A table
+    the page shows in parts (tables separated by blank lines only, each repeating the first's leading key columns:
+    the scenario, the sampler) is read as one (:func:`joined`)."""
     recorded: dict[str, dict[str, dict]] = {}
     section: dict[str, dict] | None = None
     heading = ""  # the heading whose table is being read; "" once it is read
     notes: list[str] = []  # the lines between that heading and its table
-    rows: list[list[str]] = []  # (rows, columns) cells
+    parts: list[list[list[str]]] = []  # each part's (rows, columns) cells
+    ended = False  # a blank line ended the last part: another may follow
 
     def close() -> None:
+        rows = joined(parts)
         if section is not None and heading and len(rows) >= 3:
             section[heading] = {
                 "without": next((n.removeprefix(WITHOUT).strip() for n in notes if n.startswith(WITHOUT)), None),
@@ -44,19 +48,39 @@ def parse(text: str) -> dict[str, dict[str, dict]]:
     for line in text.splitlines():
         if line.startswith(("## ", "### ")):
             close()
-            heading, notes, rows = line.removeprefix("### ").strip() if line.startswith("### ") else "", [], []
+            heading, notes, parts = line.removeprefix("### ").strip() if line.startswith("### ") else "", [], []
             if line.startswith("## "):
                 found = PRESET.match(line)
                 section = recorded.setdefault(found[1], {}) if found else None
         elif heading and line.startswith("|"):
-            rows.append([cell.strip() for cell in line.strip().strip("|").split("|")])
-        elif heading and rows:  # the first table under a heading is its table
+            if not parts or ended:
+                parts.append([])
+            parts[-1].append([cell.strip() for cell in line.strip().strip("|").split("|")])
+            ended = False
+        elif heading and parts and not line.strip():
+            ended = True
+        elif heading and parts:  # the first table under a heading, in its parts, is its table
             close()
             heading = ""
         elif heading:
             notes.append(line)
     close()
     return recorded
+
+
+def joined(parts: list[list[list[str]]]) -> list[list[str]]:
+    """The parts of one table as one: each part after the first repeats the first's leading key columns (its header
+    begins as the first's does, its rows name the same rows in the same order) and adds its own columns."""
+    if not parts:
+        return []
+    rows = [list(row) for row in parts[0]]
+    for part in parts[1:]:
+        keys = next(k for k in range(len(part[0]) + 1) if k == len(part[0]) or part[0][k] != rows[0][k])
+        if keys == 0 or len(part) != len(rows) or any(a[:keys] != b[:keys] for a, b in zip(rows[2:], part[2:])):
+            raise ValueError(f"a table's part {part[0]} does not repeat the rows of its first part {rows[0]}")
+        for row, more in zip(rows, part):
+            row += more[keys:]
+    return rows
 
 
 def packaged_text(results: Path = RESULTS) -> str:

@@ -6,12 +6,24 @@ tables the page prints (read as :mod:`tools.recorded_results` reads them)::
 It rewrites the lines between :data:`BEGIN` and :data:`END` in ``docs/results.md``; ``tests/test_results_page.py``
 fails while they differ from what the tables give, so a new run's tables cannot leave an old summary behind.
 Time ratios are read with the page's rule (chapter 04's): a change under 10 % is a tie.
+
+It also draws the page's two figures, :data:`FIGURES`: Table 3's total and sampling columns, ours beside the paper's,
+per scenario and sampler (:func:`table3_figure`, drawn by :func:`toolkit.plots.timings.ratio_comparison`), and writes
+each one's text alternative between its :data:`FIGURE_BEGIN` and :data:`FIGURE_END`; each PNG carries the same text
+(its ``Description``), so
+``tests/test_results_figure.py`` fails while the picture or its words no longer match the tables.
 """
 
 from __future__ import annotations
 
+import html
+import re
 import sys
 
+from matplotlib.figure import Figure
+
+from toolkit.experiments.paper_numbers import IMPROVEMENT
+from toolkit.plots import alt, timings
 from toolkit.teaching import recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
@@ -20,6 +32,22 @@ BEGIN = "<!-- summary: written by `python -m tools.results_summary` from the tab
 END = "<!-- end of the summary -->"
 TIE = 0.10  # a change of the time under 10 % is a tie
 NAMES = {"2ds": "2DS", "3dc7": "3DC-7", "3dc9": "3DC-9", "3do": "3DO"}
+FIGURES = {kind: RESULTS.parent / f"results_table3_{kind}.png" for kind in ("total", "sampling")}  # Table 3's columns
+LEADS = {  # what each figure shows, over it
+    "total": "**Figure 1: a whole query's time** (Table 3's *Total* columns), ours beside the paper's.",
+    "sampling": "**Figure 2: the sampling stage's time** (Table 3's *Sampling* columns), ours beside the paper's.",
+}
+FIGURE_BEGIN = "<!-- figure of {kind} times: drawn by `python -m tools.results_summary` from the tables below -->"
+FIGURE_END = "<!-- end of the figure of {kind} times -->"
+COLUMNS = 5  # the widest table the page shows: wider ones are cut off, or scroll, at 1280 px (chapter 04's rule)
+KEYS = ("", "sampler")  # a table's leading columns that name its rows: every part of a split table repeats them
+FIGURE_DPI = 110  # as docs/crossover.png: the site's column shows it at about its size
+HISTORY = re.compile(r"(?m)^## Preset `paper` before issue 25.*$")  # the section of the run with python-fcl
+SOURCES = {  # a series of the figure: its preset in the tables (None: the paper's own numbers) and its name
+    "the paper (Table 3)": None,
+    "ours, compiled exact checker": "paper",
+    "ours, python-fcl (before issue 25)": "before25",
+}
 
 
 def percent(fraction: float) -> str:
@@ -162,18 +190,121 @@ def summary(tables: Tables) -> str:
     )
 
 
+def narrow(text: str) -> str:
+    """``text`` with every table wider than :data:`COLUMNS` shown in parts (:func:`parts`), a blank line between
+    them: :func:`tools.recorded_results.parse` reads them as one table again."""
+    lines, out, k = text.splitlines(), [], 0
+    while k < len(lines):
+        end = k
+        while end < len(lines) and lines[end].startswith("|"):
+            end += 1
+        if end == k:
+            out.append(lines[k])
+            k += 1
+            continue
+        rows = [[cell.strip() for cell in line.strip().strip("|").split("|")] for line in lines[k:end]]
+        shown = ["\n".join("| " + " | ".join(row) + " |" for row in part) for part in parts(rows)]
+        out.append("\n\n".join(shown))
+        k = end
+    return "\n".join(out) + "\n" * text.endswith("\n")
+
+
+def parts(rows: list[list[str]]) -> list[list[list[str]]]:
+    """A table's ``rows`` (its header first) as parts of at most :data:`COLUMNS` columns, each with its leading
+    :data:`KEYS` columns: the other columns grouped by their first word (``Sampling BS``, ``Sampling OB`` ...),
+    whole groups packed from the right, so a table's last columns, which its prose cites, keep together."""
+    keys = next(k for k, name in enumerate([*rows[0], None]) if name not in KEYS)
+    if len(rows[0]) <= COLUMNS:
+        return [rows]
+    groups: list[list[int]] = []  # column indices, grouped by first word
+    for c in range(keys, len(rows[0])):
+        word = (rows[0][c].split() or [""])[0].strip(",").lower()
+        if groups and word == (rows[0][groups[-1][0]].split() or [""])[0].strip(",").lower():
+            groups[-1].append(c)
+        else:
+            groups.append([c])
+    packed: list[list[int]] = []
+    for group in reversed(groups):
+        if packed and len(packed[0]) + len(group) <= COLUMNS - keys:
+            packed[0][:0] = group
+        else:
+            packed.insert(0, list(group))
+    return [[row[:keys] + [row[c] for c in columns] for row in rows] for columns in packed]
+
+
+def ratios(text: str, kind: str = "total") -> dict[str, dict[str, dict[str, float]]]:
+    """Table 3's ``kind`` columns ("total" or "sampling") as time ratios with / without (``1 - improvement``, means,
+    against Algorithm 1), from the paper and from the page ``text``'s runs of the `paper` recipe:
+    ``{scenario: {series: {sampler: ratio}}}``."""
+    tables = parse(HISTORY.sub("## Preset `before25`", text))
+    found: dict[str, dict[str, dict[str, float]]] = {}
+    for scenario in NAMES:  # the paper's order
+        for name, preset in SOURCES.items():
+            saved = (
+                IMPROVEMENT[scenario][kind]
+                if preset is None
+                else recorded.improvements(preset, scenario, kind, recorded=tables)
+            )
+            found.setdefault(scenario, {})[name] = {s: round(1 - v, 6) for s, v in saved.items()}
+    return found
+
+
+def table3_figure(text: str, kind: str = "total") -> Figure:
+    """One of the page's figures: per scenario, each sampler's mean ``kind`` time ("total" or "sampling") with /
+    without prediction against Algorithm 1, the paper's beside ours (:func:`ratios`)."""
+    return timings.ratio_comparison(
+        {f"{NAMES[s]}: {kind} time, means, against Algorithm 1": series for s, series in ratios(text, kind).items()}
+    )
+
+
+def figure_markdown(text: str, kind: str = "total") -> str:
+    """The figure of ``kind`` as the page ``text`` shows it: a line that names it, the picture with its text
+    alternative and its longer description under it, then a small table that counts each series' points by the tie
+    rule."""
+    fig = table3_figure(text, kind)
+    counts: dict[str, list[str]] = {}
+    for series in ratios(text, kind).values():
+        for name, by_sampler in series.items():
+            counts.setdefault(name, []).extend(change(r) for r in by_sampler.values())
+    rows = [
+        f"| {name} | {words.count('less time')} | {words.count('about the same time')} | {words.count('more time')} |"
+        for name, words in counts.items()
+    ]
+    cells = len(next(iter(counts.values())))
+    head = f"| {kind} time, {cells} cells | saved 10 % or more | tied | lost 10 % or more |\n| --- | --- | --- | --- |"
+    described = alt.details_html(alt.details(fig)).strip()
+    shown = f"![{html.escape(alt.alt_text(fig))}]({FIGURES[kind].name})\n\n{described}"
+    said = f"*{kind.capitalize()} time*, Table 3's cells counted with the page's rule (a change under 10 % is a tie):"
+    return f"{LEADS[kind]}\n\n{shown}\n\n{said}\n\n{head}\n" + "\n".join(rows)
+
+
+def between(text: str, begin: str, end: str, new: str) -> str:
+    """``text`` with the lines between the markers ``begin`` and ``end`` replaced by ``new``."""
+    head, found, rest = text.partition(begin)
+    _, ended, tail = rest.partition(end)
+    if not found or not ended:
+        raise ValueError(f"docs/results.md has no markers: a line {begin!r} and, after it, {end!r}")
+    return f"{head}{begin}\n{new}\n{end}{tail}"
+
+
 def with_summary(text: str) -> str:
-    """``text`` (docs/results.md) with the lines between its markers replaced by :func:`summary` of its tables."""
-    head, found, rest = text.partition(BEGIN)
-    _, end, tail = rest.partition(END)
-    if not found or not end:
-        raise ValueError(f"docs/results.md has no summary markers: a line {BEGIN!r} and, after it, {END!r}")
-    return f"{head}{BEGIN}\n{summary(parse(text))}\n{END}{tail}"
+    """``text`` (docs/results.md) with its wide tables in parts (:func:`narrow`), the summary between its markers
+    made again from its tables (:func:`summary`) and the figure's text between its own (:func:`figure_markdown`)."""
+    text = between(narrow(text), BEGIN, END, summary(parse(text)))
+    for kind in FIGURES:
+        text = between(text, FIGURE_BEGIN.format(kind=kind), FIGURE_END.format(kind=kind), figure_markdown(text, kind))
+    return text
 
 
 def main() -> int:
-    RESULTS.write_text(with_summary(RESULTS.read_text()))
-    print(f"wrote the summary of {RESULTS.name}")
+    text = with_summary(RESULTS.read_text())
+    RESULTS.write_text(text)
+    for kind, path in FIGURES.items():
+        fig = table3_figure(text, kind)
+        fig.savefig(path, dpi=FIGURE_DPI, bbox_inches="tight", metadata={"Description": alt.alt_text(fig)})
+    print(
+        f"wrote the summary and the figures' text of {RESULTS.name}, and {', '.join(p.name for p in FIGURES.values())}"
+    )
     return 0
 
 

@@ -1,0 +1,90 @@
+"""docs/results.md's two figures, Table 3's total and sampling columns ours beside the paper's, against the tables on
+the same page: each picture (docs/results_table3_*.png), its text alternative on the page and the text the PNG carries
+are what tools/results_summary.py draws from the tables now, and its points are the tables' cells, read here on their
+own."""
+
+import re
+
+import pytest
+from matplotlib.backends.backend_agg import FigureCanvasAgg
+from PIL import Image
+
+from toolkit.experiments.paper_numbers import IMPROVEMENT
+from toolkit.plots import alt
+from tools import recorded_results, results_summary
+
+TEXT = recorded_results.RESULTS.read_text()
+AGAIN = "docs/results.md's tables changed: run python -m tools.results_summary"
+COLUMN = 688  # px: the site's column at 1280 px (tests/test_doc_pictures.py): the picture is shown at its size
+KINDS = ("total", "sampling")
+SAMPLERS = ("BS", "OB", "G", "BT")
+
+
+@pytest.fixture(scope="module", params=KINDS)
+def drawn(request):
+    fig = results_summary.table3_figure(TEXT, request.param)
+    FigureCanvasAgg(fig).draw()
+    return request.param, fig
+
+
+def test_each_picture_carries_the_description_of_the_figure_the_tables_give(drawn):
+    kind, fig = drawn
+    with Image.open(results_summary.FIGURES[kind]) as image:
+        said, width = image.info.get("Description"), image.size[0]
+    assert said == alt.alt_text(fig), AGAIN
+    assert width <= COLUMN
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_the_page_shows_each_picture_with_that_description_and_its_table_of_values(kind):
+    begin, end = (marker.format(kind=kind) for marker in (results_summary.FIGURE_BEGIN, results_summary.FIGURE_END))
+    block = TEXT.partition(begin)[2].partition(end)[0].strip()
+    assert block == results_summary.figure_markdown(TEXT, kind), AGAIN
+    assert f"]({results_summary.FIGURES[kind].name})" in block and "Figure described" in block
+
+
+def _cell(table: str, scenario: str, column: str, text: str) -> float:
+    """Our improvement in ``column`` (e.g. ``Total BS``) of the Table 3 under the heading ``table``, read from the
+    page's Markdown: the cell ``**-25%** / 17%`` gives -0.25."""
+    section = text.partition(f"### {table}")[2].partition("\n###")[0]
+    before, _, after = section.partition(f"| {column} |")
+    row = re.search(rf"(?m)^\| {scenario} \| (.*)$", after)
+    assert row, f"no row {scenario} under the column {column} of {table}"
+    cell = re.match(r"\*\*(-?\d+)%\*\*", row[1].split("|")[before.rpartition("\n")[2].count("|") - 1].strip())
+    assert cell, f"{table}, {scenario}, {column}: no **ours** / paper's cell"
+    return int(cell[1]) / 100
+
+
+def test_each_point_is_a_cell_of_table_3_or_the_papers(drawn):
+    kind, fig = drawn
+    tables = {
+        "ours, compiled exact checker": "`paper`, Table 3: time improvement ratio",
+        "ours, python-fcl (before issue 25)": "`paper` before issue 25, Table 3: time improvement ratio",
+    }
+    assert len(fig.axes) == 4
+    for scenario, ax in zip(results_summary.NAMES, fig.axes):
+        assert ax.get_title().startswith(f"{results_summary.NAMES[scenario]}: {kind} time")
+        points = {line.get_label(): list(line.get_ydata()) for line in ax.get_lines() if line.get_marker() != "None"}
+        assert points["the paper (Table 3)"] == pytest.approx([1 - IMPROVEMENT[scenario][kind][s] for s in SAMPLERS])
+        for name, table in tables.items():
+            column = kind.capitalize()
+            ours = [1 - _cell(table, scenario, f"{column} {s}", TEXT) for s in SAMPLERS]
+            assert points[name] == pytest.approx(ours), (name, scenario)
+
+
+def test_a_changed_cell_changes_the_figure_and_its_words():
+    changed = TEXT.replace("| 2ds | **-25%** / 17% |", "| 2ds | **30%** / 17% |", 1)
+    assert changed != TEXT, "the `paper` Table 3's 2DS total BS cell is no longer -25 %: pick another cell here"
+    redrawn = results_summary.table3_figure(changed)
+    assert alt.alt_text(redrawn) != alt.alt_text(results_summary.table3_figure(TEXT))
+    assert results_summary.with_summary(changed) != changed
+
+
+@pytest.mark.parametrize("kind", KINDS)
+def test_the_sentence_over_each_figure_counts_the_papers_cells_by_the_tie_rule(kind):
+    cells = [v for row in IMPROVEMENT.values() for v in row[kind].values()]  # the paper's Table 3, kind's columns
+    saved, lost = sum(v >= 0.10 for v in cells), sum(v <= -0.10 for v in cells)
+    block = TEXT.partition(results_summary.FIGURE_BEGIN.format(kind=kind))[2]
+    said = re.search(r"(?m)^\| the paper \(Table 3\) \| (\d+) \| (\d+) \| (\d+) \|$", block)
+    assert f"| {kind} time, 16 cells | saved 10 % or more | tied | lost 10 % or more |" in block
+    assert said and [int(n) for n in said.groups()] == [saved, 16 - saved - lost, lost]
