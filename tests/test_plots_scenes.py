@@ -242,7 +242,7 @@ def test_a_stills_overview_thins_a_dense_cloud_and_its_text_says_so(crossing):
     near = int(np.all((points >= lo) & (points <= hi), axis=1).sum())  # every sample in its window, thinned or not
     assert f"{int(valid.sum())} samples valid (circles), {int((~valid).sum())} samples in collision" in alt_text(fig)
     assert "in collision (diamonds), 1 sample in 3 drawn" in alt_text(fig)
-    assert near and f"here, {near} sample{'s' * (near != 1)} near it, " in alt_text(fig)
+    assert near and alt_text(fig).endswith(f"here, {near} sample{'s' * (near != 1)} near it.")
 
 
 def test_a_stills_model_wrong_star_is_hollow_round_the_mark_it_flags(crossing):

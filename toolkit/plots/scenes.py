@@ -71,7 +71,7 @@ def scene_still(
     valid = valid or {}
     views = [(label, q, turn) for label, q in poses.items() for turn in ((0.0, TURN) if len(poses) == 1 else (0.0,))]
     rows = -(-(1 + len(views)) // 2)
-    fig = Figure(figsize=(PAGE_WIDTH, 3.6 * rows + 0.9 * (len(poses) != 1)))  # as wide as the page: text as drawn
+    fig = Figure(figsize=(PAGE_WIDTH, 3.2 * rows + 0.9 * (len(poses) != 1)))  # as wide as the page: text as drawn
     panels = [fig.add_subplot(rows, 2, k + 1, projection="3d") for k in range(1 + len(views))]  # reading order
     first = len(views) if len(poses) == 1 else 0  # the overview's panel: after a single pose's two views
     overview(panels.pop(first), robot, workspace, poses, samples, trace)
@@ -146,12 +146,13 @@ def _still_described(robot: BoxRobot, workspace: Workspace, poses, valid, sample
     said = [
         f"{label}{_STATE[valid.get(label)]}"
         + (f", {seen[label][0]} sample{'s' * (seen[label][0] != 1)} near it" if samples else "")
-        + f", {seen[label][1]} block{'s' * (seen[label][1] != 1)} within {NEAR} of a link (darker)"
         for label in poses
     ]
-    how = "seen across the plane it spreads in" + (", and a quarter turn round" if len(poses) == 1 else "")
-    text += f"; then the robot close up, {how}, its links opaque, its joints white dots, among the blocks near it: "
-    return text + "; ".join(said) + ".", parts
+    turned = ", and a quarter turn round" if len(poses) == 1 else ""
+    darker = ", ".join(f"{label}: {seen[label][1]}" for label in poses)
+    text += f"; the robot seen across the plane it spreads in{turned}, its links opaque, its joints white dots, "
+    text += f"the blocks within {NEAR} of a link darker ({darker})"
+    return text + "; then the robot close up among the blocks near it: " + "; ".join(said) + ".", parts
 
 
 def path_frame(
