@@ -69,11 +69,30 @@ def test_the_joints_are_marked_where_two_links_meet_and_drawn_over_the_links_ove
             local = np.abs(rotations[0, link].T @ (point - centres[0, link]))  # (3,) in the link's frame
             assert np.all(local <= half[link] + 1e-9) and np.any(np.isclose(local, half[link]))
     links = [c for c in ax.collections if c.get_gid() == "link"]
-    blocks = [c for c in ax.collections if c.get_gid() == "block"]
-    assert not ax.computed_zorder and len(links) == CHAIN9.n_links and blocks
-    assert max(b.get_zorder() for b in blocks) < min(c.get_zorder() for c in links)
+    assert not ax.computed_zorder and len(links) == CHAIN9.n_links
     assert max(c.get_zorder() for c in links) < joints.get_zorder()
     assert {c.get_alpha() for c in links} == {1.0}
+
+
+def test_a_block_between_the_robot_and_the_camera_is_drawn_over_it_faded_one_behind_under_it():
+    """mplot3d has no depth buffer: drawn always under the robot, a block in front of it made a free robot look
+    inside the block (a quarter-turn view in chapter 05). Each block goes in front of the links or behind them by
+    where it stands: 2 units toward the camera from the robot's middle, or 2 units away."""
+    q = np.array([5.5, 5.5, 5.5, 0.0, 0.0, 0.0, 0.0])  # 3DC-7, straight along x
+    ax = Figure().add_subplot(projection="3d")
+    elevation, azimuth = still_panels.view_angles(CHAIN7, q)
+    e, a = np.deg2rad([elevation, azimuth])
+    toward = np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])  # (3,) to the camera
+    middle = CHAIN7.link_boxes(q[None])[0][0].mean(axis=0)  # (3,)
+    blocks = np.array([[c - 0.25, c + 0.25] for c in (middle + 0.6 * toward, middle - 0.6 * toward)])  # (2, 2, 3)
+    workspace = Workspace(np.zeros(3), np.full(3, 11.0), blocks, family="3dc")
+    still_panels.close_up(ax, CHAIN7, q, workspace, color=VALID_COLOR, margin=1.0)
+    links = [c.get_zorder() for c in ax.collections if c.get_gid() == "link"]
+    front, back = sorted((c for c in ax.collections if c.get_gid() == "block"), key=lambda c: -c.get_zorder())
+    assert back.get_zorder() < min(links) and max(links) < front.get_zorder()
+    corners = front._faces.reshape(-1, 3)  # (24, 3) its faces' corners (mplot3d has no public getter)
+    assert np.allclose(corners.mean(axis=0), middle + 0.6 * toward)  # the one toward the camera is the one in front
+    assert front.get_alpha() < 0.5  # faded: the robot shows through it
 
 
 def test_blocks_near_a_link_are_darker_than_the_rest_of_the_window_and_counted():

@@ -5,12 +5,13 @@ A 3D picture on a page cannot be turned, so each panel is drawn to be read from 
 - :func:`overview` draws the whole workspace, its blocks faint, one mark per sample (a circle valid, a diamond in
   collision, large enough to tell apart, edged in ink) and the robot's poses marked at their base;
 - :func:`close_up` draws the robot at one pose among the blocks near it: its links opaque, edged thick in ink, each
-  joint a white dot ringed in ink, over the blocks, the blocks within :data:`NEAR` of a link drawn darker than the
-  rest of its window. The camera looks across the plane the chain spreads in (:func:`view_angles`), so a bent chain
-  shows its bends; a second panel (``turn``) sees it a quarter turn around.
+  joint a white dot ringed in ink, the blocks faded (a robot behind one shows through it), those within
+  :data:`NEAR` of a link darker than the rest of its window. The camera looks across the plane the chain spreads
+  in (:func:`view_angles`), so a bent chain shows its bends; a second panel (``turn``) sees it a quarter turn round.
 
-mplot3d has no depth buffer: it draws whole collections one after the other. Here the blocks come first, far to
-near, then the samples, then the links far to near, then the joints: the robot is never hidden by a block.
+mplot3d has no depth buffer: it draws whole collections one after the other. Here the blocks behind the robot come
+first, far to near, then the samples, the links far to near, the blocks that stand between a link and the camera
+(faded: the robot shows through them) and last the joints.
 """
 
 from __future__ import annotations
@@ -103,21 +104,33 @@ def close_up(
     blocks = workspace.boxes[np.all((workspace.boxes[:, 0] <= hi) & (workspace.boxes[:, 1] >= lo), axis=1)]
     gaps = np.max(np.maximum(aabbs[None, :, 0] - blocks[:, None, 1], blocks[:, None, 0] - aabbs[None, :, 1]), axis=2)
     near = gaps.min(axis=1, initial=np.inf) <= NEAR  # (K,) a block near a link's box
+    centers = robot.link_boxes(q[None])[0][0]  # (L, 3)
+    before = _in_front(blocks, centers, toward)  # (K,) a block between a link and the camera: drawn over the robot
     for rank, k in enumerate(np.argsort(blocks.mean(axis=1) @ toward)):  # far to near
         style = dict(alpha=0.3, linewidth=0.8) if near[k] else dict(alpha=0.08, linewidth=0.3)
         inside = np.clip(blocks[k], lo, hi)  # (2, 3) the part in the window: mplot3d draws past its axes
-        add_box_3d(ax, aabb_corners(*inside), zorder=1.0 + rank / len(blocks), **style, **BLOCK_STYLE)
+        order = (3.5 if before[k] else 1.0) + rank / len(blocks)
+        add_box_3d(ax, aabb_corners(*inside), zorder=order, **style, **BLOCK_STYLE)
     links = [c for c in ax.collections if c.get_gid() == "link"]  # one per link, in the robot's order
-    centers = robot.link_boxes(q[None])[0][0]  # (L, 3)
     for rank, k in enumerate(np.argsort(centers @ toward)):  # far to near
-        links[k].set(alpha=1.0, linewidth=LINK_EDGE, zorder=3.0 + rank / len(links))
+        links[k].set(alpha=1.0, linewidth=LINK_EDGE, zorder=2.5 + rank / len(links))
     joints = robot.link_frames(q[None])[0][0, 1:]  # (L - 1, 3) where each link turns on the one before
     if len(joints):
-        ax.scatter(*joints.T, depthshade=False, zorder=4.0, label="joint", **JOINT_MARK)
+        ax.scatter(*joints.T, depthshade=False, zorder=5.0, label="joint", **JOINT_MARK)
     few_ticks(ax)
     if hi[2] - lo[2] < 0.5 * np.max(hi - lo):  # a low window, its z axis seen short: ticked at its ends alone
         ax.set_zticks((lo[2], hi[2]))
     return int(near.sum()), (elevation, azimuth)
+
+
+def _in_front(blocks: np.ndarray, points: np.ndarray, toward: np.ndarray) -> np.ndarray:
+    """``(K,)`` bool: which ``blocks (K, 2, 3)`` a ray from one of ``points (P, 3)`` toward the camera (``toward``,
+    a unit vector) passes through: those stand between the robot and the camera (the slab test)."""
+    step = np.where(np.abs(toward) > 1e-12, toward, 1e-12)  # (3,) no division by zero
+    ends = (blocks[:, None] - points[None, :, None]) / step  # (K, P, 2, 3): where the ray crosses each slab
+    enter = np.minimum(ends[:, :, 0], ends[:, :, 1]).max(axis=-1)  # (K, P)
+    leave = np.maximum(ends[:, :, 0], ends[:, :, 1]).min(axis=-1)
+    return np.any((enter <= leave) & (leave > 0), axis=1)
 
 
 def _toward_camera(elevation: float, azimuth: float) -> np.ndarray:
