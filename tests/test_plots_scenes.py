@@ -12,7 +12,7 @@ from matplotlib.text import Text
 
 from toolkit import scenarios
 from toolkit.geometry.collision import exact_checker
-from toolkit.plots import dof_panels, robot_drawing, scenes
+from toolkit.plots import dof_panels, robot_drawing, scenes, still_panels
 from toolkit.plots.alt import alt_text
 from toolkit.plots.palette import contrast
 from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR
@@ -211,14 +211,14 @@ def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose
             assert expected.size == 0 or np.allclose(shape(marks[f"sample, {kind}"].get_paths()[0]), shape(marker))
         assert inside.any()  # the path passes its own poses: the test sees samples in each close-up
         parts = links(close_up)
-        assert {float(c.get_linewidth()[0]) for c in parts} == {1.0}
-        assert len(parts) < 2 or parts[0].get_alpha() != parts[1].get_alpha()
+        assert {float(c.get_linewidth()[0]) for c in parts} == {still_panels.LINK_EDGE}
+        assert {c.get_alpha() for c in parts} == {1.0}  # opaque: the robot reads as one body over the faded blocks
     assert all(line.get_linestyle() == "--" for ax in fig.axes for line in ax.get_lines())
 
 
 def test_a_stills_overview_thins_a_dense_cloud_and_its_text_says_so(crossing):
     robot, workspace, _, _, _ = crossing
-    n = 2 * scenes.OVERVIEW_SAMPLES + 1
+    n = 2 * still_panels.OVERVIEW_SAMPLES + 1
     points = robot.link_boxes(robot.sample(np.random.default_rng(0), n))[0][:, 0]  # (n, 3) bases
     valid = np.arange(n) % 5 == 0  # (n,) every 5th: 0, 5, 10, ...
     fig = scenes.scene_still(
@@ -227,18 +227,22 @@ def test_a_stills_overview_thins_a_dense_cloud_and_its_text_says_so(crossing):
         {"here": robot.sample(np.random.default_rng(1), 1)[0]},
         samples=(points, {"valid": valid, "in collision": ~valid}),
     )
-    overview, close_up = fig.axes
+    close_up, turned, overview = fig.axes  # one pose: seen twice, above the overview
+    assert [close_up.get_title(), turned.get_title()] == ["here, close up", "here, a quarter turn round"]
+    assert (turned.azim - close_up.azim) % 360 == pytest.approx(scenes.TURN)
+    assert turned.elev == pytest.approx(close_up.elev)
     drawn = {c.get_label(): c for c in overview.collections if c.get_label().startswith("sample")}
     kept = np.arange(n) % 3 == 0  # 1 in 3: at most OVERVIEW_SAMPLES of 2 * OVERVIEW_SAMPLES + 1
     assert len(drawn["sample, valid"].get_offsets()) == int((kept & valid).sum())
     assert len(drawn["sample, in collision"].get_offsets()) == int((kept & ~valid).sum())
     assert all(c.get_alpha() < 1 for c in drawn.values())  # lighter: the blocks show through
+    FigureCanvasAgg(fig).draw()  # the legend beside the overview, in the cell a single pose leaves empty
+    assert fig.legends[0].get_window_extent().x0 >= overview.get_position().x1 * fig.bbox.width
     lo, hi = np.array([close_up.get_xlim(), close_up.get_ylim(), close_up.get_zlim()]).T  # (3,) each
     near = int(np.all((points >= lo) & (points <= hi), axis=1).sum())  # every sample in its window, thinned or not
     assert f"{int(valid.sum())} samples valid (circles), {int((~valid).sum())} samples in collision" in alt_text(fig)
-    assert "in collision (diamonds), 1 sample in 3 drawn, lighter" in alt_text(fig) and alt_text(fig).endswith(
-        f"here, {near} samples near it."
-    )
+    assert "in collision (diamonds), 1 sample in 3 drawn" in alt_text(fig)
+    assert near and alt_text(fig).endswith(f"here, {near} sample{'s' * (near != 1)} near it.")
 
 
 def test_a_stills_model_wrong_star_is_hollow_round_the_mark_it_flags(crossing):
@@ -249,7 +253,7 @@ def test_a_stills_model_wrong_star_is_hollow_round_the_mark_it_flags(crossing):
     overview = scenes.scene_still(robot, workspace, {}, samples=(points, kinds)).axes[0]
     (stars,) = [c for c in overview.collections if c.get_label() == "sample, model wrong"]
     assert len(stars.get_facecolor()) == 0 or stars.get_facecolor()[0][3] == 0  # the circle or diamond shows inside
-    assert stars.get_sizes()[0] > 4 * scenes.SAMPLE_MARKS["valid"][2]  # round the mark, larger than it
+    assert stars.get_sizes()[0] > 4 * still_panels.SAMPLE_MARKS["valid"][2]  # round the mark, larger than it
     with pytest.raises(ValueError, match="drawn in 3D"):
         scenes.scene_still(scenarios.get("2ds").robot, workspace, {})
 
@@ -324,3 +328,23 @@ def test_an_angle_that_wraps_around_is_broken_where_it_wraps_not_drawn_across_th
     np.testing.assert_allclose(alpha.get_ydata(), [scaled[0], scaled[1], np.nan, scaled[2], scaled[3]])
     np.testing.assert_allclose(alpha.get_xdata(), [along[0], along[1], np.nan, along[2], along[3]])
     assert len(x.get_xdata()) == 4  # unbroken
+
+
+@pytest.mark.parametrize(("name", "seed", "count"), [("3dc9", 1, 3), ("3do", 2, 1)])
+def test_no_text_of_a_still_lies_over_another(name, seed, count):
+    """The close-ups look from any side (:func:`toolkit.plots.still_panels.view_angles`): an axis' name then lands
+    where it lands, and side by side a panel's z name met its neighbour's tick labels (these two cases did)."""
+    scenario = scenarios.get(name)
+    workspace, robot = scenario.make_workspace(np.random.default_rng(0)), scenario.robot
+    Q = robot.sample(np.random.default_rng(seed), 80)
+    Q = Q[exact_checker(workspace, robot).are_valid(Q)][:count]  # (count, dof) valid poses
+    poses = dict(zip(("start", "middle", "goal"), Q)) if count > 1 else {"the robot": Q[0]}
+    fig = scenes.scene_still(robot, workspace, poses, valid=dict.fromkeys(poses, True))
+    FigureCanvasAgg(fig).draw()
+    boxes = [(t, Text.get_window_extent(t)) for t in drawn_texts(fig)]
+    over = [
+        f"{a.get_text()!r} / {b.get_text()!r}"
+        for (a, box_a), (b, box_b) in itertools.combinations(boxes, 2)
+        if box_a.overlaps(box_b) and min(box_a.intersection(box_a, box_b).size) > 1
+    ]
+    assert over == []

@@ -16,7 +16,8 @@ per topic, in the order of the notebooks:
 - :mod:`toolkit.plots.planning` — samplers, roadmaps, Algorithm 1 step by step (notebook 04);
 - :mod:`toolkit.plots.timings` — planning times with and without prediction, checkers' throughputs (notebook 04);
 - :mod:`toolkit.plots.scenes` — a planned 3D path, one frame at a time (notebook 05), its degrees of freedom a
-  panel per kind by :mod:`toolkit.plots.dof_panels`;
+  panel per kind by :mod:`toolkit.plots.dof_panels`, and a 3D scene as a still, its panels by
+  :mod:`toolkit.plots.still_panels`;
 - :mod:`toolkit.plots.reproduction` — the reproduction's figures (paper Figures 5-7, ``toolkit reproduce``);
 - :mod:`toolkit.plots.crossover` — where prediction pays: exact and learned cost per configuration
   (``toolkit bench --crossover``; notebook 04);

@@ -3,7 +3,8 @@
 A PRM path is a list of configurations joined by straight lines in configuration
 space (the straight-line local planner of §III-B). :func:`scene_still` draws a viewer's
 scene as a still picture (what a browser without WebGL shows in the 3D view's place): the whole workspace with
-its samples and the path, and the robot close up. :func:`path_frame` shows one
+its samples and the path, and the robot close up, its panels drawn by :mod:`toolkit.plots.still_panels`.
+:func:`path_frame` shows one
 configuration along a path in the workspace, among the blocks near the robot, next to
 what stays hidden in a 3D picture: every degree of freedom along the path, how much
 room the robot has (the exact checker's clearance bound) and what a learned model
@@ -25,37 +26,25 @@ from matplotlib.patches import Patch
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import ROWS, Part, describe
-from toolkit.plots.boxes import aabb_corners, add_box_3d
-from toolkit.plots.cspace import frame_region
 from toolkit.plots.dof_panels import dof_groups, draw_dofs
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
-from toolkit.plots.robot_drawing import (
-    BLOCK_STYLE,
-    INVALID_COLOR,
-    VALID_COLOR,
-    draw_robot,
-    few_ticks,
-    link_style,
+from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR, draw_robot, link_style
+from toolkit.plots.still_panels import (
+    CLOSE_UP_SCALE,
+    NEAR,
+    SAMPLE_WORDS,
+    TRACE_STYLE,
+    close_up,
+    draw_points,
+    inside_mask,
+    overview,
+    overview_step,
 )
 
-TRACE_COLOR = COLORS["trace"]  # the path of the robot's base, as the viewer's path line
 UNCHECKED_COLOR = COLORS["unchecked"]  # the robot when no validity is given
 NOW_COLOR = COLORS["occupied"]
-SAMPLE_MARKS = {  # kind of sample -> marker, colour, size: the viewer's shapes (toolkit.viewer.drawing.SAMPLE_SHAPES)
-    "valid": ("o", VALID_COLOR, 9),
-    "in collision": ("D", INVALID_COLOR, 11),
-    "model wrong": ("*", COLORS["ink"], 160),
-}
-WRONG_STYLE = dict(facecolors="none", edgecolors=COLORS["ink"], linewidths=1.0)  # hollow: the mark under it shows
-TRACE_STYLE = dict(color=TRACE_COLOR, linestyle="--")  # dashed: apart from the robot's blue links by more than hue
-SAMPLE_WORDS = {
-    "valid": "circles",
-    "in collision": "diamonds",
-    "model wrong": "hollow stars round their marks",
-}  # SAMPLE_MARKS in words
-OVERVIEW_SAMPLES = 500  # at most this many samples in a still's overview: more hide the blocks and the robot
 _STATE = {None: "", True: ", valid", False: ", in collision"}  # a pose's verdict, as a title and its text say it
-POSE_MARKERS = ("s", "P", "*", "^", "v", "X")  # the poses of a still, marked at their base in its overview
+TURN = 90.0  # degrees about the vertical: a single pose's second close-up, a quarter turn round the first
 
 
 def scene_still(
@@ -66,31 +55,42 @@ def scene_still(
     valid: dict[str, bool] | None = None,
     samples: tuple[np.ndarray, dict[str, np.ndarray]] | None = None,
     trace: np.ndarray | None = None,
-    margin: float = 1.0,
+    margin: float = 0.6,
 ) -> Figure:
-    """A viewer's 3D scene as a still picture: first the whole workspace, its blocks, the ``samples`` at their
-    base (``(points (N, 3), {kind: mask (N,)})``, kinds as :func:`toolkit.viewer.drawing.sample_kinds` names them:
-    circles valid, diamonds in collision, hollow stars round them where a model is wrong), the ``trace (T, 3)`` of
-    the robot's base along a path (dashed) and each pose marked at its base; then one close-up per pose
-    ``{label: q (dof,)}``, the robot's link boxes among the blocks within ``margin`` (the valid colour, or the invalid
-    one hatched, by ``valid``; every other link lighter), the samples inside its window and the trace. Of more than
-    :data:`OVERVIEW_SAMPLES` samples the overview draws every k-th, lighter, so the blocks and the robot show."""
+    """A viewer's 3D scene as a still picture: the whole workspace, its blocks, the ``samples`` at their base
+    (``(points (N, 3), {kind: mask (N,)})``, kinds as :func:`toolkit.viewer.drawing.sample_kinds` names them: circles
+    valid, diamonds in collision, hollow stars round them where a model is wrong), the ``trace (T, 3)`` of the robot's
+    base along a path (dashed) and each pose marked at its base; and the robot close up at each pose
+    ``{label: q (dof,)}`` (:func:`toolkit.plots.still_panels.close_up`: opaque links in the valid colour, or the
+    invalid one hatched, by ``valid``; its joints dotted; the blocks within ``margin``, those near a link darker), with
+    the samples inside its window and the trace. A single pose is seen twice, a quarter turn apart, above the
+    overview; several follow it, one panel each. Of more than :data:`~toolkit.plots.still_panels.OVERVIEW_SAMPLES`
+    samples the overview draws every k-th."""
     if robot.dim != 3:
         raise ValueError(f"a scene's still is drawn in 3D; the {robot.name} robot moves in {robot.dim}D")
     valid = valid or {}
-    rows = -(-(1 + len(poses)) // 2)
-    fig = Figure(figsize=(PAGE_WIDTH, 3.7 * rows + 0.9))  # as wide as the page: its text as large as it is drawn
-    _overview(fig.add_subplot(rows, 2, 1, projection="3d"), robot, workspace, poses, samples, trace)
-    near = {}  # pose -> samples drawn in its close-up
-    for k, (label, q) in enumerate(poses.items()):
-        ax = fig.add_subplot(rows, 2, k + 2, projection="3d")
+    views = [(label, q, turn) for label, q in poses.items() for turn in ((0.0, TURN) if len(poses) == 1 else (0.0,))]
+    rows = -(-(1 + len(views)) // 2)
+    fig = Figure(figsize=(PAGE_WIDTH, 3.2 * rows + 0.9 * (len(poses) != 1)))  # as wide as the page: text as drawn
+    panels = [fig.add_subplot(rows, 2, k + 1, projection="3d") for k in range(1 + len(views))]  # reading order
+    first = len(views) if len(poses) == 1 else 0  # the overview's panel: after a single pose's two views
+    overview(panels.pop(first), robot, workspace, poses, samples, trace)
+    # pose -> (samples drawn in its close-up, blocks near it, the camera's elevation and azimuth)
+    seen: dict[str, tuple[int, int, tuple[float, float]]] = {}
+    for ax, (label, q, turn) in zip(panels, views):
         ok = valid.get(label)
         color = UNCHECKED_COLOR if ok is None else VALID_COLOR if ok else INVALID_COLOR
-        draw_robot(ax, robot, np.asarray(q)[None], colors=[color], view="3d", workspace=workspace, margin=margin)
-        _tell_links_apart(ax)
-        near[label] = _draw_points(ax, samples, trace, clip=True, scale=2.0)  # a small window: larger marks
-        few_ticks(ax)
-        ax.set_title(f"{label}, close up{_STATE[ok]}", fontsize=10)
+        near, angles = close_up(ax, robot, q, workspace, color=color, margin=margin, turn=turn)
+        drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE)
+        seen.setdefault(label, (drawn, near, angles))
+        ax.set_title(f"{label}, close up{_STATE[ok]}" if not turn else f"{label}, a quarter turn round", fontsize=10)
+    _still_legend(fig, valid, under=len(poses) != 1)
+    return describe(fig, *_still_described(robot, workspace, poses, valid, samples, trace, seen))
+
+
+def _still_legend(fig: Figure, valid: dict[str, bool], *, under: bool) -> None:
+    """The still's legend: every mark its panels name and the robot's states drawn; ``under`` the panels, else in
+    the empty cell beside the overview (a single pose's still)."""
     handles = {name: h for ax in fig.axes for h, name in zip(*ax.get_legend_handles_labels())}
     shown = {ok for ok in valid.values() if ok is not None}  # the robot's states drawn: name those alone
     handles |= {
@@ -98,38 +98,45 @@ def scene_still(
         for ok, text, c in ((True, "robot, valid", VALID_COLOR), (False, "robot, in collision", INVALID_COLOR))
         if ok in shown
     }
-    fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1))
+    if not under:
+        fig.tight_layout(w_pad=5.0)
+        fig.legend(handles.values(), handles.keys(), loc="center", bbox_to_anchor=(0.75, 0.25), frameon=False)
+        return
+    fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=5.0)
     low = min((ax.get_tightbbox() or ax.bbox).y0 for ax in fig.axes) / fig.bbox.height  # the lowest label
     fig.legend(handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, low), ncol=3, frameon=False)
-    return describe(fig, *_still_described(robot, workspace, poses, valid, samples, trace, near))
 
 
-def _still_described(robot: BoxRobot, workspace: Workspace, poses, valid, samples, trace, near) -> tuple[str, list]:
-    """A still's text alternative and its longer description (what each panel draws, each pose's values and the
-    samples ``near`` it, ``{label: count}``)."""
+def _still_described(robot: BoxRobot, workspace: Workspace, poses, valid, samples, trace, seen) -> tuple[str, list]:
+    """A still's text alternative and its longer description (what each panel draws, each pose's values, the
+    samples and blocks near it and where the camera stands, ``seen``: ``{label: (samples, blocks, (elev, azim))}``)."""
     text = f"The {robot.name} robot in workspace {workspace.family} ({len(workspace.boxes)} blocks) as a still: "
     text += "the whole workspace"
     if samples is not None:
         text += ", " + ", ".join(
             f"{int(m.sum())} samples {kind} ({SAMPLE_WORDS[kind]})" for kind, m in samples[1].items() if m.any()
         )
-        step = _overview_step(len(samples[0]))
-        text += f", 1 sample in {step} drawn, lighter" if step > 1 else ""
+        step = overview_step(len(samples[0]))
+        text += f", 1 sample in {step} drawn" if step > 1 else ""
     text += ", the path of the robot's base" if trace is not None else ""
     counted = [("blocks", str(len(workspace.boxes)))]
     counted += [(f"samples {kind}", str(int(m.sum()))) for kind, m in (samples[1].items() if samples else ())]
     counted += [("points of the base's path", str(len(trace)))] if trace is not None else []
+    columns = ("pose", "exact checker", "samples drawn near it", f"blocks within {NEAR} of a link", "seen from")
     parts = [
-        Part("the whole workspace", "what the first panel draws", ("drawn", "count"), tuple(counted)),
+        Part("the whole workspace", "what the overview draws", ("drawn", "count"), tuple(counted)),
         Part(
             "the robot close up",
-            "each pose's joint values, in the robot's order, and what the exact checker says of it",
-            ("pose", "exact checker", "samples drawn near it", "configuration"),
+            "each pose's joint values, in the robot's order, what the exact checker says of it, and the camera's "
+            "elevation and azimuth (degrees)",
+            (*columns, "configuration"),
             tuple(
                 (
                     label,
                     {None: "not checked", True: "valid", False: "in collision"}[valid.get(label)],
-                    str(near[label]),
+                    str(seen[label][0]),
+                    str(seen[label][1]),
+                    "{:.0f}, {:.0f}".format(*seen[label][2]),
                     ", ".join(f"{v:.2f}" for v in np.asarray(q)),
                 )
                 for label, q in poses.items()
@@ -138,84 +145,14 @@ def _still_described(robot: BoxRobot, workspace: Workspace, poses, valid, sample
     ]
     said = [
         f"{label}{_STATE[valid.get(label)]}"
-        + (f", {near[label]} sample{'s' * (near[label] != 1)} near it" if samples else "")
+        + (f", {seen[label][0]} sample{'s' * (seen[label][0] != 1)} near it" if samples else "")
         for label in poses
     ]
+    turned = ", and a quarter turn round" if len(poses) == 1 else ""
+    darker = ", ".join(f"{label}: {seen[label][1]}" for label in poses)
+    text += f"; the robot seen across the plane it spreads in{turned}, its links opaque, its joints white dots, "
+    text += f"the blocks within {NEAR} of a link darker ({darker})"
     return text + "; then the robot close up among the blocks near it: " + "; ".join(said) + ".", parts
-
-
-def _overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, np.ndarray], samples, trace) -> None:
-    """A still's first panel: the whole workspace, its samples and path, each pose marked at the robot's base."""
-    for lo, hi in workspace.boxes:
-        add_box_3d(ax, aabb_corners(lo, hi), linewidth=0.2, alpha=0.2, **BLOCK_STYLE)
-    if samples is not None:  # every k-th, lighter, under the poses' marks
-        keep = np.arange(len(samples[0])) % _overview_step(len(samples[0])) == 0  # (N,)
-        samples = (samples[0][keep], {kind: mask[keep] for kind, mask in samples[1].items()})
-    _draw_points(ax, samples, trace, alpha=0.45)
-    ax.computed_zorder = False  # the poses' marks in front of every sample
-    for k, (label, q) in enumerate(poses.items()):
-        base = robot.link_boxes(np.asarray(q)[None])[0][0, 0]  # (3,) the first link's centre
-        ax.scatter(
-            *base,
-            marker=POSE_MARKERS[k % len(POSE_MARKERS)],
-            s=90,
-            color=COLORS["free"],
-            edgecolors=COLORS["ink"],
-            linewidths=1.2,
-            depthshade=False,
-            zorder=5,
-            label=f"robot: {label}",
-        )
-    frame_region(ax, workspace)
-    ax.set_box_aspect(workspace.upper - workspace.lower)
-    few_ticks(ax)
-    ax.set_title(f"the whole workspace: {len(workspace.boxes)} blocks", fontsize=10)
-
-
-def _tell_links_apart(ax) -> None:
-    """A chain's links, one colour, told apart: each edged in thick ink, every other one lighter."""
-    for k, link in enumerate(c for c in ax.collections if c.get_gid() == "link"):
-        link.set_linewidth(1.0)
-        link.set_alpha(0.9 if k % 2 == 0 else 0.55)
-
-
-def _overview_step(n: int) -> int:
-    """k: a still's overview draws every k-th of ``n`` samples, at most :data:`OVERVIEW_SAMPLES`."""
-    return -(-n // OVERVIEW_SAMPLES)
-
-
-def _draw_points(ax, samples, trace, clip: bool = False, alpha: float = 1.0, scale: float = 1.0) -> int:
-    """The samples ``(points (N, 3), {kind: mask})`` by kind and the base's ``trace (T, 3)`` on a 3D axes; with
-    ``clip``, only what lies inside the axes' window (mplot3d does not clip); marks ``scale`` times their size, with
-    ``alpha``. Returns how many samples it drew."""
-    drawn = np.zeros(0 if samples is None else len(samples[0]), dtype=bool)  # (N,)
-    for kind, mask in ({} if samples is None else samples[1]).items():
-        mask = mask & _inside_mask(ax, samples[0]) if clip else mask
-        drawn |= mask
-        if mask.any():
-            marker, color, size = SAMPLE_MARKS[kind]
-            style = dict(color=color) if kind != "model wrong" else WRONG_STYLE  # a star round the mark, not over it
-            ax.scatter(
-                *samples[0][mask].T,
-                marker=marker,
-                s=size * scale,
-                depthshade=False,
-                alpha=alpha,
-                label=f"sample, {kind}",
-                **style,
-            )
-    if trace is not None:
-        points = trace.copy()
-        if clip:
-            points[~_inside_mask(ax, points)] = np.nan
-        ax.plot(*points.T, linewidth=2.0, path_effects=halo(2.0), label="path of the base (dashed)", **TRACE_STYLE)
-    return int(drawn.sum())
-
-
-def _inside_mask(ax, points: np.ndarray) -> np.ndarray:
-    """``(N,)`` bool: which ``points (N, 3)`` lie inside the 3D axes' window."""
-    lo, hi = np.array([ax.get_xlim(), ax.get_ylim(), ax.get_zlim()]).T  # (3,) each
-    return np.all((points >= lo) & (points <= hi), axis=1)
 
 
 def path_frame(
@@ -359,7 +296,7 @@ def _draw_probability(p: np.ndarray, threshold: float, ax, along: np.ndarray) ->
 def _draw_trace(ax, robot: BoxRobot, Q: np.ndarray) -> None:
     """The base's path (first link's centre, ``(T, 3)``), left out where it leaves the 3D axes' window."""
     trace = robot.link_boxes(Q)[0][:, 0].copy()  # (T, 3)
-    trace[~_inside_mask(ax, trace)] = np.nan  # mplot3d does not clip lines to the axes
+    trace[~inside_mask(ax, trace)] = np.nan  # mplot3d does not clip lines to the axes
     ax.plot(*trace.T, linewidth=2.0, gid="trace", path_effects=halo(2.0), **TRACE_STYLE)
 
 

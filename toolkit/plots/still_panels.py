@@ -1,0 +1,196 @@
+"""The panels of a 3D scene's still (notebook 05, :func:`toolkit.plots.scenes.scene_still`; paper §IV-A).
+
+A 3D picture on a page cannot be turned, so each panel is drawn to be read from where it stands:
+
+- :func:`overview` draws the whole workspace, its blocks faint, one mark per sample (a circle valid, a diamond in
+  collision, large enough to tell apart, edged in ink) and the robot's poses marked at their base;
+- :func:`close_up` draws the robot at one pose among the blocks near it: its links opaque, edged thick in ink, each
+  joint a white dot ringed in ink, the blocks faded (a robot behind one shows through it), those within
+  :data:`NEAR` of a link darker than the rest of its window. The camera looks across the plane the chain spreads
+  in (:func:`view_angles`), so a bent chain shows its bends; a second panel (``turn``) sees it a quarter turn round.
+
+mplot3d has no depth buffer: it draws whole collections one after the other. Here the blocks behind the robot come
+first, far to near, then the samples, the links far to near, the blocks that stand between a link and the camera
+(faded: the robot shows through them) and last the joints.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from toolkit.geometry.robots import BoxRobot
+from toolkit.geometry.workspace import Workspace
+from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners
+from toolkit.plots.cspace import frame_region
+from toolkit.plots.palette import COLORS, halo
+from toolkit.plots.robot_drawing import BLOCK_STYLE, INVALID_COLOR, VALID_COLOR, draw_robot, few_ticks
+
+SAMPLE_MARKS = {  # kind of sample -> marker, colour, size (points²): the viewer's shapes (drawing.SAMPLE_SHAPES)
+    "valid": ("o", VALID_COLOR, 36),  # 6 points across: 8 pixels as the site shows the still (100 dpi)
+    "in collision": ("D", INVALID_COLOR, 28),  # as much ink as the circle (a diamond covers s, a circle 0.79 s)
+    "model wrong": ("*", COLORS["ink"], 260),
+}
+SAMPLE_EDGE = dict(edgecolors=COLORS["ink"], linewidths=0.5)  # a thin ink edge: the shape shows on a block too
+WRONG_STYLE = dict(facecolors="none", edgecolors=COLORS["ink"], linewidths=1.0)  # hollow: the mark under it shows
+TRACE_STYLE = dict(color=COLORS["trace"], linestyle="--")  # dashed: apart from the robot's blue links by more than hue
+SAMPLE_WORDS = {
+    "valid": "circles",
+    "in collision": "diamonds",
+    "model wrong": "hollow stars round their marks",
+}  # SAMPLE_MARKS in words
+OVERVIEW_SAMPLES = 300  # at most this many samples in a still's overview: more hide the blocks and the robot
+CLOSE_UP_SCALE = 1.5  # a close-up's marks this many times larger: a small window, seen near
+POSE_MARKERS = ("s", "P", "*", "^", "v", "X")  # the poses of a still, marked at their base in its overview
+NEAR = 0.3  # workspace units: a block this close to a link's bounding box is drawn darker in a close-up
+LINK_EDGE = 1.6  # points: the links' ink edges, thicker than a block's
+JOINT_MARK = dict(marker="o", s=22, color=COLORS["free"], edgecolors=COLORS["ink"], linewidths=1.4)
+ELEVATION = (15.0, 45.0)  # degrees: a close-up's camera stays this far above the horizon, no lower and no higher
+USUAL_VIEW = (30.0, -60.0)  # degrees: mplot3d's camera, elevation and azimuth; a close-up's stays on its side
+OFF_AXIS = 20.0  # degrees: the least a close-up's azimuth keeps from an axis of the workspace
+
+
+def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, np.ndarray], samples, trace) -> None:
+    """A still's first panel: the whole workspace, its samples and path, each pose marked at the robot's base."""
+    for lo, hi in workspace.boxes:
+        add_box_3d(ax, aabb_corners(lo, hi), linewidth=0.2, alpha=0.15, **BLOCK_STYLE)
+    if samples is not None:  # every k-th, under the poses' marks
+        keep = np.arange(len(samples[0])) % overview_step(len(samples[0])) == 0  # (N,)
+        samples = (samples[0][keep], {kind: mask[keep] for kind, mask in samples[1].items()})
+    draw_points(ax, samples, trace, alpha=0.8)
+    ax.computed_zorder = False  # the poses' marks in front of every sample
+    for k, (label, q) in enumerate(poses.items()):
+        base = robot.link_boxes(np.asarray(q)[None])[0][0, 0]  # (3,) the first link's centre
+        ax.scatter(
+            *base,
+            marker=POSE_MARKERS[k % len(POSE_MARKERS)],
+            s=110,
+            color=COLORS["free"],
+            edgecolors=COLORS["ink"],
+            linewidths=1.4,
+            depthshade=False,
+            zorder=5,
+            label=f"robot: {label}" if len(poses) > 1 else "the robot's base",
+        )
+    frame_region(ax, workspace)
+    ax.set_box_aspect(workspace.upper - workspace.lower)
+    few_ticks(ax)
+    ax.set_title(f"the whole workspace: {len(workspace.boxes)} blocks", fontsize=10)
+
+
+def overview_step(n: int) -> int:
+    """k: a still's overview draws every k-th of ``n`` samples, at most :data:`OVERVIEW_SAMPLES`."""
+    return -(-n // OVERVIEW_SAMPLES)
+
+
+def close_up(
+    ax, robot: BoxRobot, q: np.ndarray, workspace: Workspace, *, color: str, margin: float, turn: float = 0.0
+) -> tuple[int, tuple[float, float]]:
+    """The robot at ``q (dof,)`` in ``color`` among the blocks within ``margin`` of it (their parts in that window),
+    seen from :func:`view_angles`
+    turned ``turn`` degrees about the vertical. Returns how many blocks lie within :data:`NEAR` of a link's bounding
+    box, and the camera's ``(elevation, azimuth)`` in degrees."""
+    q = np.asarray(q, dtype=float)
+    draw_robot(ax, robot, q[None], colors=[color], view="3d", margin=margin)  # the links; the blocks below
+    aabbs = robot.link_aabbs(q[None])[0]  # (L, 2, 3)
+    lo = np.maximum(aabbs[:, 0].min(axis=0) - margin, workspace.lower)  # (3,) the window
+    hi = np.minimum(aabbs[:, 1].max(axis=0) + margin, workspace.upper)
+    ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), zlim=(lo[2], hi[2]))
+    ax.set_box_aspect(hi - lo, zoom=1.15)  # the robot larger in its panel: mplot3d leaves wide margins
+    elevation, azimuth = view_angles(robot, q)
+    azimuth += turn
+    ax.view_init(elev=elevation, azim=azimuth)
+    toward = _toward_camera(elevation, azimuth)  # (3,)
+    ax.computed_zorder = False  # drawn in the order set below, not by mplot3d's guess of each collection's depth
+    blocks = workspace.boxes[np.all((workspace.boxes[:, 0] <= hi) & (workspace.boxes[:, 1] >= lo), axis=1)]
+    gaps = np.max(np.maximum(aabbs[None, :, 0] - blocks[:, None, 1], blocks[:, None, 0] - aabbs[None, :, 1]), axis=2)
+    near = gaps.min(axis=1, initial=np.inf) <= NEAR  # (K,) a block near a link's box
+    centers = robot.link_boxes(q[None])[0][0]  # (L, 3)
+    before = _in_front(blocks, centers, toward)  # (K,) a block between a link and the camera: drawn over the robot
+    for rank, k in enumerate(np.argsort(blocks.mean(axis=1) @ toward)):  # far to near
+        style = dict(alpha=0.3, linewidth=0.8) if near[k] else dict(alpha=0.08, linewidth=0.3)
+        inside = np.clip(blocks[k], lo, hi)  # (2, 3) the part in the window: mplot3d draws past its axes
+        order = (3.5 if before[k] else 1.0) + rank / len(blocks)
+        add_box_3d(ax, aabb_corners(*inside), zorder=order, **style, **BLOCK_STYLE)
+    links = [c for c in ax.collections if c.get_gid() == "link"]  # one per link, in the robot's order
+    for rank, k in enumerate(np.argsort(centers @ toward)):  # far to near
+        links[k].set(alpha=1.0, linewidth=LINK_EDGE, zorder=2.5 + rank / len(links))
+    joints = robot.link_frames(q[None])[0][0, 1:]  # (L - 1, 3) where each link turns on the one before
+    if len(joints):
+        ax.scatter(*joints.T, depthshade=False, zorder=5.0, label="joint", **JOINT_MARK)
+    few_ticks(ax)
+    if hi[2] - lo[2] < 0.5 * np.max(hi - lo):  # a low window, its z axis seen short: ticked at its ends alone
+        ax.set_zticks((lo[2], hi[2]))
+    return int(near.sum()), (elevation, azimuth)
+
+
+def _in_front(blocks: np.ndarray, points: np.ndarray, toward: np.ndarray) -> np.ndarray:
+    """``(K,)`` bool: which ``blocks (K, 2, 3)`` a ray from one of ``points (P, 3)`` toward the camera (``toward``,
+    a unit vector) passes through: those stand between the robot and the camera (the slab test)."""
+    step = np.where(np.abs(toward) > 1e-12, toward, 1e-12)  # (3,) no division by zero
+    ends = (blocks[:, None] - points[None, :, None]) / step  # (K, P, 2, 3): where the ray crosses each slab
+    enter = np.minimum(ends[:, :, 0], ends[:, :, 1]).max(axis=-1)  # (K, P)
+    leave = np.maximum(ends[:, :, 0], ends[:, :, 1]).min(axis=-1)
+    return np.any((enter <= leave) & (leave > 0), axis=1)
+
+
+def _toward_camera(elevation: float, azimuth: float) -> np.ndarray:
+    """``(3,)`` the unit direction from the scene to mplot3d's camera at ``elevation``, ``azimuth`` (degrees)."""
+    e, a = np.deg2rad([elevation, azimuth])
+    return np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])
+
+
+def view_angles(robot: BoxRobot, q: np.ndarray) -> tuple[float, float]:
+    """``(elevation, azimuth)`` in degrees of a camera looking across the plane the robot at ``q (dof,)`` spreads in
+    (the least spread of its link boxes' corners, a principal axis), on the side of mplot3d's usual camera
+    (:data:`USUAL_VIEW`), within :data:`ELEVATION`; a robot that spreads along a line (a straight chain) is seen
+    square to it, from 30 degrees up. It never looks within :data:`OFF_AXIS` of an axis of the workspace: seen
+    along one, that axis' tick labels pile onto the others'."""
+    centers, rotations, half = robot.link_boxes(np.asarray(q, dtype=float)[None])  # (1, L, 3), (1, L, 3, 3), (L, 3)
+    corners = np.concatenate([box_corners(c, r, h) for c, r, h in zip(centers[0], rotations[0], half)])  # (8 L, 3)
+    spread, axes = np.linalg.eigh(np.cov(corners.T))  # ascending spread; axes[:, k] its direction
+    usual = _toward_camera(*USUAL_VIEW)  # (3,)
+    if spread[1] < 0.1 * spread[2]:  # a line: seen square to it, horizontally, then lifted
+        flat = np.array([-axes[1, 2], axes[0, 2], 0.0])  # (3,) square to the line, horizontal
+        flat = flat / np.linalg.norm(flat) if np.linalg.norm(flat) > 1e-6 else usual * [1.0, 1.0, 0.0]
+        normal = np.cos(np.pi / 6) * flat * np.sign(flat @ usual or 1.0) + np.array([0.0, 0.0, np.sin(np.pi / 6)])
+    else:
+        normal = axes[:, 0] * np.sign(axes[:, 0] @ usual or 1.0)  # the least spread, on the usual side
+    elevation = float(np.clip(np.rad2deg(np.arcsin(np.clip(normal[2], -1.0, 1.0))), *ELEVATION))
+    azimuth = float(np.rad2deg(np.arctan2(normal[1], normal[0])))
+    within = azimuth % 90.0  # degrees past the last axis
+    return elevation, azimuth + max(OFF_AXIS - within, 0.0) - max(within - (90.0 - OFF_AXIS), 0.0)
+
+
+def draw_points(ax, samples, trace, clip: bool = False, alpha: float = 1.0, scale: float = 1.0) -> int:
+    """The samples ``(points (N, 3), {kind: mask})`` by kind and the base's ``trace (T, 3)`` on a 3D axes; with
+    ``clip``, only what lies inside the axes' window (mplot3d does not clip); marks ``scale`` times their size, with
+    ``alpha``. Returns how many samples it drew."""
+    drawn = np.zeros(0 if samples is None else len(samples[0]), dtype=bool)  # (N,)
+    for kind, mask in ({} if samples is None else samples[1]).items():
+        mask = mask & inside_mask(ax, samples[0]) if clip else mask
+        drawn |= mask
+        if mask.any():
+            marker, color, size = SAMPLE_MARKS[kind]
+            style = dict(color=color, **SAMPLE_EDGE) if kind != "model wrong" else WRONG_STYLE  # round the mark
+            ax.scatter(
+                *samples[0][mask].T,
+                marker=marker,
+                s=size * scale,
+                depthshade=False,
+                alpha=alpha,
+                zorder=2.0,
+                label=f"sample, {kind}",
+                **style,
+            )
+    if trace is not None:
+        points = trace.copy()
+        if clip:
+            points[~inside_mask(ax, points)] = np.nan
+        ax.plot(*points.T, linewidth=2.0, path_effects=halo(2.0), label="path of the base (dashed)", **TRACE_STYLE)
+    return int(drawn.sum())
+
+
+def inside_mask(ax, points: np.ndarray) -> np.ndarray:
+    """``(N,)`` bool: which ``points (N, 3)`` lie inside the 3D axes' window."""
+    lo, hi = np.array([ax.get_xlim(), ax.get_ylim(), ax.get_zlim()]).T  # (3,) each
+    return np.all((points >= lo) & (points <= hi), axis=1)
