@@ -35,7 +35,9 @@ from __future__ import annotations
 
 import numpy as np
 from numba import njit, types
+from numba.core import cgutils
 from numba.experimental import structref
+from numba.extending import intrinsic
 
 from toolkit.geometry.frame_kernels import block_frames, first_angle
 from toolkit.geometry.kernels import boxes_touch
@@ -53,9 +55,10 @@ class Arrays(structref.StructRefProxy):
     (:class:`toolkit.geometry.compiled.Robot`), the world (:class:`~toolkit.geometry.compiled.World`), numbers
     derived from them once rather than at every call (``walls (6,)``, ``corner (3,)``, ``balls (2, L)``, as
     :func:`_link_touches` reads them), and the loop's scratch for a block: ``trig (3, A * BLOCK)`` (angles, sines,
-    cosines), ``position (3, BLOCK)``, ``centers (L, 3, BLOCK)``, ``rotations (L, 3, 3, BLOCK)`` as
+    cosines), ``position (3, BLOCK)``, ``centers (L, 3, BLOCK)``, ``rotations (L + 1, 3, 3, BLOCK)`` as
     :func:`~toolkit.geometry.frame_kernels.block_frames` fills them, ``cells (L + 2, BLOCK)`` as :func:`_block_needs`
-    fills them, ``box (27,)`` as :func:`_link_touches` uses it.
+    fills them, ``box (27,)`` as :func:`_link_touches` uses it. Those fields hold views that count no references
+    (:func:`_borrowed`), to be read by the loop only; ``owners`` holds the arrays themselves, alive as long as this.
 
     It is about a call's fixed cost, which a planner's calls of tens of configurations pay again and again: numba
     unpacks every argument of a call, about 35 ns an array, and a robot and a world are 17 arrays in named tuples
@@ -65,16 +68,45 @@ class Arrays(structref.StructRefProxy):
     arrays laid out alike, it always has the same numba type: one compiled version serves all."""
 
 
-FIELDS = ["robot", "world", "walls", "corner", "balls", "trig", "position", "centers", "rotations", "cells", "box"]
+FIELDS = ["owners", "robot", "world", "walls", "corner", "balls"]  # the arrays themselves, then views of them
+FIELDS += ["trig", "position", "centers", "rotations", "cells", "box"]  # the scratch
 structref.define_constructor(Arrays, ArraysType, FIELDS)
 structref.define_boxing(ArraysType, Arrays)
+
+
+def _borrow_value(context, builder, typ, value):
+    """``value`` of numba type ``typ`` with every array in it (in tuples too) a view that counts no references."""
+    if isinstance(typ, types.Array):
+        view = cgutils.create_struct_proxy(typ)(context, builder, value=value)
+        view.meminfo = cgutils.get_null_value(view.meminfo.type)
+        view.parent = cgutils.get_null_value(view.parent.type)
+        return view._getvalue()
+    if isinstance(typ, types.BaseTuple):
+        items = [_borrow_value(context, builder, t, builder.extract_value(value, i)) for i, t in enumerate(typ)]
+        return context.make_tuple(builder, typ, items)
+    return value
+
+
+@intrinsic
+def _borrowed(typingctx, value):
+    """``value`` (an array, or a tuple holding arrays) with its arrays as views that count no references: no
+    atomic operation when the loop takes them or a view of them, where a counted array costs two (about 2.5 ns a
+    pair here). Whoever holds the views keeps the arrays themselves alive (:attr:`Arrays.owners`)."""
+
+    def codegen(context, builder, signature, args):
+        return _borrow_value(context, builder, signature.args[0], args[0])
+
+    return value(value), codegen
 
 
 @njit(cache=True)
 def arrays(robot, world) -> Arrays:
     """The :class:`Arrays` of ``robot`` and ``world`` (with its far bits): they, the loop's scratch and, computed once
     rather than at every call, the region's walls padded to 3D with infinities, its grid's corner (0 where padded)
-    and per link the squared radii of a ball holding its box and of one it holds, a billionth inside the truth."""
+    and per link the squared radii of a ball holding its box and of one it holds, a billionth inside the truth.
+
+    The fields the loop reads hold views that count no references (:func:`_borrowed`; a call of 16 configurations
+    took and dropped about 140 references, a third of its time); ``owners`` holds the arrays themselves."""
     half, n_links, dim = robot.half_extents, len(robot.half_extents), len(world.lower)
     walls, corner, balls = np.empty(6), np.empty(3), np.empty((2, n_links))
     for i in range(3):
@@ -84,9 +116,13 @@ def arrays(robot, world) -> Arrays:
         balls[0, link] = (half[link, 0] ** 2 + half[link, 1] ** 2 + half[link, 2] ** 2) * (1 + 1e-9)
         balls[1, link] = min(half[link, 0], half[link, 1], half[link, 2] if dim == 3 else np.inf) ** 2 * (1 - 1e-9)
     trig = np.empty((3, (len(robot.lower) - first_angle(robot)) * BLOCK))
-    position, centers, rotations = np.empty((3, BLOCK)), np.empty((n_links, 3, BLOCK)), np.empty((n_links, 3, 3, BLOCK))
+    position, centers = np.empty((3, BLOCK)), np.empty((n_links, 3, BLOCK))
+    rotations = np.zeros((n_links + 1, 3, 3, BLOCK))
+    for i in range(3):  # the identity, where block_frames takes it from
+        rotations[:, i, i] = 1.0
     cells = np.empty((n_links + 2, BLOCK), np.int64)
-    return Arrays(robot, world, walls, corner, balls, trig, position, centers, rotations, cells, np.empty(27))
+    owners = (robot, world, walls, corner, balls, trig, position, centers, rotations, cells, np.empty(27))
+    return Arrays(owners, *_borrowed(owners))  # type: ignore[call-arg]  # numba passes the typing context
 
 
 @njit(cache=True, inline="always")
@@ -100,43 +136,44 @@ def _cell(x, lower, inverse, last):
 
 
 @njit(cache=True, inline="always")
-def _grid_cells(x, y, z, lower, cell, shape, flat, block):
-    """Fill ``flat (B,)`` with the cell of a grid (corner ``lower (3,)``, cubes ``cell`` wide, ``shape (3,)``) that
-    holds each point ``x, y, z (B,)``, clipped to the grid. The grid arrives as numbers: a loop that reads arrays
-    while it writes another is not turned into vector instructions."""
+def _grid_cells(centers, link, lower, cell, shape, cells, row, block):
+    """Fill ``cells[row, :block]`` with the cell of a grid (corner ``lower (3,)``, cubes ``cell`` wide, ``shape (3,)``)
+    that holds each centre of link ``link`` (``centers (L, 3, B)``), clipped to the grid. The grid arrives as
+    numbers: a loop that reads arrays while it writes another is not turned into vector instructions."""
     x0, y0, z0, inverse = lower[0], lower[1], lower[2], 1.0 / cell
     last_x, last_y, last_z, ny, nz = shape[0] - 1, shape[1] - 1, shape[2] - 1, shape[1], shape[2]
     for n in range(block):
-        a, b = _cell(x[n], x0, inverse, last_x), _cell(y[n], y0, inverse, last_y)
-        flat[n] = (a * ny + b) * nz + _cell(z[n], z0, inverse, last_z)
+        a, b = _cell(centers[link, 0, n], x0, inverse, last_x), _cell(centers[link, 1, n], y0, inverse, last_y)
+        cells[row, n] = (a * ny + b) * nz + _cell(centers[link, 2, n], z0, inverse, last_z)
 
 
 @njit(cache=True, inline="always")
-def _block_needs(Q, first, block, robot, centers, far, world, corner, needs, at, far_at):
-    """For the block ``Q[first:first + block]`` posed in ``centers (L, 3, B)``, fill ``needs (B,)``: -1 for a
-    configuration out of bounds, else one bit per link whose far bit is 0 (link ``l``: bit ``l``), and ``at (L, B)``:
-    each link's cell of ``world``'s lists (``corner (3,)``: their grid's corner, 0 along a 2D world's third axis);
-    ``far_at (B,)``: scratch. Every loop runs over the block's configurations. Returns whether every number of the
-    block is finite."""
+def _block_needs(Q, first, block, robot, centers, far, world, corner, cells):
+    """For the block ``Q[first:first + block]`` posed in ``centers (L, 3, B)``, fill ``cells (L + 2, B)``: row 0 -1
+    for a configuration out of bounds, else one bit per link whose far bit is 0 (link ``l``: bit ``l``); row
+    ``2 + l`` link ``l``'s cell of ``world``'s lists (``corner (3,)``: their grid's corner, 0 along a 2D world's third
+    axis); row 1 scratch. Every loop runs over the block's configurations. Returns whether every number of the block
+    is finite."""
     for n in range(block):
-        needs[n] = 0
+        cells[0, n] = 0
     for i in range(Q.shape[1]):  # bit 0: out of bounds; bit 1: not finite (x - x is NaN for NaN and infinities)
         lower, upper = robot.lower[i], robot.upper[i]
         for n in range(block):
             x = Q[first + n, i]
             odd = np.int64(x - x != 0.0)
-            needs[n] |= np.int64((x < lower) | (x > upper)) | odd | (odd << 1)
+            cells[0, n] |= np.int64((x < lower) | (x > upper)) | odd | (odd << 1)
+    bits = far.bits
     for link in range(len(centers)):
-        x, y, z, bits = centers[link, 0], centers[link, 1], centers[link, 2], far.bits[far.link_ball[link]]
-        _grid_cells(x, y, z, far.lower, far.cell, far.shape, far_at, block)
+        ball = far.link_ball[link]
+        _grid_cells(centers, link, far.lower, far.cell, far.shape, cells, 1, block)
         for n in range(block):
-            flat = far_at[n]
-            needs[n] |= np.int64(1 - ((bits[flat >> 6] >> (flat & 63)) & 1)) << (link + 2)
-        _grid_cells(x, y, z, corner, world.cell, world.shape, at[link], block)
+            flat = cells[1, n]
+            cells[0, n] |= np.int64(1 - ((bits[ball, flat >> 6] >> (flat & 63)) & 1)) << (link + 2)
+        _grid_cells(centers, link, corner, world.cell, world.shape, cells, 2 + link, block)
     finite = True
     for n in range(block):
-        finite &= not needs[n] & 2
-        needs[n] = -1 if needs[n] & 3 else needs[n] >> 2
+        finite &= not cells[0, n] & 2
+        cells[0, n] = -1 if cells[0, n] & 3 else cells[0, n] >> 2
     return finite
 
 
@@ -214,15 +251,14 @@ def validity(Q, arrays, valid):
         return False
     half, trig, position, cells = robot.half_extents, arrays.trig, arrays.position, arrays.cells  # scratch: Arrays
     centers, rotations, scratch = arrays.centers, arrays.rotations, arrays.box
-    needs, far_at, at = cells[0], cells[1], cells[2:]
     first_box, box_count, members = world.cell_first, world.cell_count, world.cell_boxes
     finite = True
     for first in range(0, len(Q), BLOCK):
         block = min(BLOCK, len(Q) - first)
-        block_frames(Q, first, block, robot, trig[0], trig[1], trig[2], position, centers, rotations)
-        finite &= _block_needs(Q, first, block, robot, centers, world.far, world, corner, needs, at, far_at)
+        block_frames(Q, first, block, robot, trig, position, centers, rotations)
+        finite &= _block_needs(Q, first, block, robot, centers, world.far, world, corner, cells)
         for b in range(block):
-            need, link = needs[b], 0
+            need, link = cells[0, b], 0
             valid[first + b] = need >= 0
             while need > 0:  # the links whose far bit is 0, in order
                 if need & 1 and _link_touches(
@@ -236,7 +272,7 @@ def validity(Q, arrays, valid):
                     box_count,
                     members,
                     world.boxes,
-                    at[link, b],
+                    cells[2 + link, b],
                     balls,
                     scratch,
                 ):

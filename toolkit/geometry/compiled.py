@@ -27,6 +27,7 @@ from toolkit.geometry.workspace import Workspace
 
 FAR_CELL = 1.5  # the far bits' cells: this many times the smallest link ball's radius wide
 FAR_CELLS = 128  # or a 128th of the region's longest axis, if wider
+NDARRAY = np.ndarray  # what a planner passes (one name to look up, not two, in a call's few tests)
 FLOAT64 = np.dtype(np.float64)  # the dtype of configurations the compiled loop takes as they are
 BOOL = np.dtype(np.bool_)  # its answers'
 
@@ -109,7 +110,7 @@ class CompiledChecker(BoxWorldChecker):
         straight to the compiled loop, which also checks its columns and that every number is finite (where not, the
         reference's path gives the same error as ever): a call of 32 configurations then costs little more than
         checking them. Each test here costs about as much as checking a configuration, so there are few."""
-        if type(Q) is np.ndarray and Q.dtype is FLOAT64 and Q.ndim == 2 and Q.flags.carray and self._validity:
+        if type(Q) is NDARRAY and Q.dtype is FLOAT64 and Q.ndim == 2 and Q.flags.carray and self._validity:
             valid = np.empty(len(Q), BOOL)
             if self._validity(Q, self._arrays, valid):
                 self.n_checked += len(Q)

@@ -106,46 +106,41 @@ def new_frame(dof):
 
 
 @njit(cache=True, inline="always")
-def _turn_block(source, target, axis, sines, cosines, at, block):
-    """:func:`_turn` for a block: ``target (3, 3, B)`` becomes ``source (3, 3, B)`` (the last axis the configurations;
-    it may be ``target`` itself) turned about its axis ``axis`` by the angles whose sines and cosines are
-    ``sines[at:at + block]``, ``cosines[at:at + block]``: per row one loop over the block (vectorized)."""
+def _turn_block(rotations, source, target, axis, trig, at, block):
+    """:func:`_turn` for a block: ``rotations[target] (3, 3, B)`` becomes ``rotations[source]`` (the last axis the
+    configurations; ``target`` may be ``source``) turned about its axis ``axis`` by the angles whose sines and cosines
+    are ``trig[1, at:at + block]``, ``trig[2, at:at + block]``: per row one loop over the block (vectorized)."""
     j, k = (axis + 1) % 3, (axis + 2) % 3
     for row in range(3):
-        a, b, keep = source[row, j], source[row, k], source[row, axis]
-        new_a, new_b, kept = target[row, j], target[row, k], target[row, axis]
         for n in range(block):
-            a_n, b_n, s, c = a[n], b[n], sines[at + n], cosines[at + n]
-            new_a[n] = a_n * c + b_n * s
-            new_b[n] = b_n * c - a_n * s
-            kept[n] = keep[n]
+            a, b, s, c = rotations[source, row, j, n], rotations[source, row, k, n], trig[1, at + n], trig[2, at + n]
+            rotations[target, row, j, n] = a * c + b * s
+            rotations[target, row, k, n] = b * c - a * s
+            rotations[target, row, axis, n] = rotations[source, row, axis, n]
 
 
 @njit(cache=True, inline="always")
-def block_frames(Q, first, block, robot, angles, sines, cosines, position, centers, rotations):
+def block_frames(Q, first, block, robot, trig, position, centers, rotations):
     """:func:`link_frames` of the ``block`` configurations ``Q[first:first + block]`` at once, every loop over
     them, so that the compiler turns each into vector instructions: fills ``centers (L, 3, B)`` and
-    ``rotations (L, 3, 3, B)`` (``B``: ``block`` or more); ``angles, sines, cosines (A * B,)``, ``position (3, B)``:
-    scratch. The angles lie packed, angle ``k`` of configuration ``n`` at ``k * block + n``, so that one loop of
-    ``A * block`` steps takes every sine and cosine of the block, however short it is.
+    ``rotations[:L]`` of ``rotations (L + 1, 3, 3, B)`` (``B``: ``block`` or more), whose last, and first for a
+    base that does not turn, hold the identity, never written (nine loops a block fewer); ``trig (3, A * B)``
+    (angles, sines, cosines), ``position (3, B)``: scratch. The angles lie packed, angle ``k`` of configuration
+    ``n`` at ``k * block + n``, so that one loop of ``A * block`` steps takes every sine and cosine of the block,
+    however short it is.
 
     A loop costs a few nanoseconds to enter whatever its length, and a planner's calls are short, so each link's
-    frame is turned from the last link's straight into its own (no copy)."""
+    frame is turned from the last link's straight into its own (no copy), and the arrays are indexed whole rather
+    than sliced into a view per loop."""
     start, count = first_angle(robot), (Q.shape[1] - first_angle(robot)) * block
     for k in range(Q.shape[1] - start):
         for n in range(block):
-            angles[k * block + n] = Q[first + n, start + k]
+            trig[0, k * block + n] = Q[first + n, start + k]
     for t in range(count):
-        sines[t], cosines[t] = sin_cos(angles[t])
+        trig[1, t], trig[2, t] = sin_cos(trig[0, t])
     for t in range(count):
-        if abs(angles[t]) > SIN_COS_LIMIT:
-            sines[t], cosines[t] = any_sin_cos(angles[t])
-    base = rotations[0]
-    for i in range(3):
-        for j in range(3):
-            row = base[i, j]
-            for n in range(block):
-                row[n] = 1.0 if i == j else 0.0
+        if abs(trig[0, t]) > SIN_COS_LIMIT:
+            trig[1, t], trig[2, t] = any_sin_cos(trig[0, t])
     for n in range(block):
         position[0, n], position[1, n] = Q[first + n, 0], Q[first + n, 1]
     if robot.base == FREE:
@@ -155,24 +150,26 @@ def block_frames(Q, first, block, robot, angles, sines, cosines, position, cente
         height = robot.base_height if robot.base == PLANAR else 0.0
         for n in range(block):
             position[2, n] = height
+    identity = len(centers)  # rotations[identity]: the identity, and rotations[0] too where no angle turns the base
     if robot.base == PLANAR:  # yaw
-        _turn_block(base, base, 2, sines, cosines, 0, block)
+        _turn_block(rotations, identity, 0, 2, trig, 0, block)
     elif robot.base == FREE:  # Z-Y-X Euler angles
-        _turn_block(base, base, 2, sines, cosines, 0, block)
-        _turn_block(base, base, 1, sines, cosines, block, block)
-        _turn_block(base, base, 0, sines, cosines, 2 * block, block)
+        _turn_block(rotations, identity, 0, 2, trig, 0, block)
+        _turn_block(rotations, 0, 0, 1, trig, block, block)
+        _turn_block(rotations, 0, 0, 0, trig, 2 * block, block)
+    origins, offsets = robot.joint_origins, robot.link_offsets
     for link in range(len(centers)):
-        rotation = rotations[link]
         if link > 0:  # joint link - 1 carries this link
-            joint, origin, last = link - 1, robot.joint_origins[link - 1], rotations[link - 1]
+            joint = link - 1
+            o0, o1, o2 = origins[joint, 0], origins[joint, 1], origins[joint, 2]
             for i in range(3):
-                p, r0, r1, r2 = position[i], last[i, 0], last[i, 1], last[i, 2]
                 for n in range(block):
-                    p[n] += r0[n] * origin[0] + r1[n] * origin[1] + r2[n] * origin[2]
+                    r0, r1, r2 = rotations[joint, i, 0, n], rotations[joint, i, 1, n], rotations[joint, i, 2, n]
+                    position[i, n] += r0 * o0 + r1 * o1 + r2 * o2
             angle = base_angles(robot) + joint
-            _turn_block(last, rotation, robot.joint_axes[joint], sines, cosines, angle * block, block)
-        offset = robot.link_offsets[link]
+            _turn_block(rotations, joint, link, robot.joint_axes[joint], trig, angle * block, block)
+        f0, f1, f2 = offsets[link, 0], offsets[link, 1], offsets[link, 2]
         for i in range(3):
-            p, r0, r1, r2, center = position[i], rotation[i, 0], rotation[i, 1], rotation[i, 2], centers[link, i]
             for n in range(block):
-                center[n] = p[n] + r0[n] * offset[0] + r1[n] * offset[1] + r2[n] * offset[2]
+                r0, r1, r2 = rotations[link, i, 0, n], rotations[link, i, 1, n], rotations[link, i, 2, n]
+                centers[link, i, n] = position[i, n] + r0 * f0 + r1 * f1 + r2 * f2
