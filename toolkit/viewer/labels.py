@@ -9,7 +9,12 @@ option for any of these (``configure_theme`` can only hide the logo and the shar
 share button, which would publish the scene), so a small script names them from the page itself, as React
 builds it: each control takes the name of the label of its row (:data:`SCRIPT`). A folder's title, which viser opens
 and closes on a click only (the Layers folder starts closed: its checkboxes were out of the keyboard's reach), becomes
-a button Enter and Space toggle, saying whether it is open (``aria-expanded``); icons are hidden from the screen
+a heading (level 2) over a button, its text, that Enter and Space toggle, saying whether it is open (``aria-expanded``);
+the live page's heading (level 1) is its title, out of sight (viser's page had no heading). The 3D view, a canvas, is an
+image named :data:`VIEW`: on the live page described (``aria-describedby``) by the panel's "The scene in words"
+(:meth:`toolkit.viewer.Viewer.summary`, from the scene's data), in a saved scene by the summary after its frame. viser
+draws the view at 5 % opacity until its environment map has loaded, then fades it in: the style keeps it opaque
+(``toolkit.viewer.drawing.light`` sets no map). Icons are hidden from the screen
 reader's tree (they draw what their control's name says), but the connection's, which :data:`ICONS` names. Its
 style also outlines a focused input (and a folder's title) as viser outlines a focused button (2 px; viser shows an
 input's focus only by its 1 px border's colour), darkens the sliders' min/max labels and a notice's text (viser's
