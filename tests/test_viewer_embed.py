@@ -392,9 +392,9 @@ def test_the_animation_is_never_washed_out(planned, chromium, tmp_path):
     """WCAG 1.4.11: viser drew the view at 5 % opacity until its environment map had loaded and faded it in over
     five drawn frames, again at each loop of a saved animation; under software WebGL (headless Chromium) most frames
     of chapter 05's animation came out washed out, the robot at 1.1:1 against the blocks (no frame sampled here
-    showed it at all). Now the scene is lit without that map and the page keeps the view opaque: the frames sampled
-    show the robot in its colour (3:1 and more on white) and at 2.5:1 or more against the pixels around it (3:1 and
-    more but where see-through blocks lie around it; one frame may catch the player's loop)."""
+    showed it at all). Now the scene is lit without that map, the page keeps the view opaque and 3DC's blocks are
+    fainter (the robot inside one stood at 2.5:1): the frames sampled show the robot at 3:1 or more on white and
+    against the pixels around it (one frame may catch the player's loop)."""
     page_file = tmp_path / "animation.html"
     page_file.write_text(planned.animation_html(frames=20, seconds=2.0), encoding="utf-8")
     page = chromium.new_page(viewport={"width": 640, "height": 480})
@@ -412,4 +412,4 @@ def test_the_animation_is_never_washed_out(planned, chromium, tmp_path):
     finally:
         page.close()
     seen = [frame for frame in frames if frame[0] >= 30]
-    assert len(seen) >= len(frames) - 1 and all(white >= 3 and behind >= 2.5 for _, white, behind in seen), frames
+    assert len(seen) >= len(frames) - 1 and all(white >= 3 and behind >= 3 for _, white, behind in seen), frames

@@ -31,7 +31,7 @@ FLAT_HEIGHT = 1.0  # height of a 2D block in the flat 3D scene
 FLAT_ROBOT_HEIGHT = 1.5  # height of the 2D point robot's square
 
 OBSTACLE = rgb("obstacle")  # a hue of its own: the browser test looks for it
-OBSTACLE_OPACITY = {"3dc": 0.45}  # by workspace family: see through the clutter to the robot inside
+OBSTACLE_OPACITY = {"3dc": 0.3}  # by family: see through the clutter to the robot inside (0.45: it was 2.5:1 there)
 OBSTACLE_EDGE = rgb("ink")  # every block's edges: its outline at 3:1 or more on the white and on other blocks
 OBSTACLE_EDGE_PX = 2.0  # their width on screen, in pixels, near or far
 VALID = rgb("valid")
