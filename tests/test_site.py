@@ -747,6 +747,79 @@ def test_at_320_px_the_keyboard_opens_the_navigation_drawer_and_reaches_its_link
     assert remote == []
 
 
+IN_DRAWER = """() => {  // whether the focus is in the navigation drawer, on the screen; the focused element
+    const e = document.activeElement, box = e.getBoundingClientRect();
+    const inside = !!e.closest(".md-sidebar--primary") && box.width > 0 && box.left >= 0 && box.right <= innerWidth;
+    return [inside, e.tagName + " " + (e.getAttribute("aria-label") || e.textContent || "").trim().slice(0, 40)];
+}"""
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_at_320_px_the_open_navigation_drawer_keeps_the_focus_until_escape(site, served, chromium):
+    """WCAG 2.4.3 at 320 CSS px: the open navigation drawer covers the page, yet Tab went on from its last link into
+    the page behind it (the second outside pass). Tab and Shift+Tab now cycle inside the drawer, every stop on the
+    screen, and Escape closes it and gives the focus back to the menu button."""
+    remote: list[str] = []
+    page = open_page(chromium, served + "notebooks/04_prm_with_and_without_prediction.html", remote)
+    try:
+        page.set_viewport_size({"width": 320, "height": 640})
+        page.wait_for_timeout(300)
+        menu = page.get_by_role("button", name="The site's navigation")
+        menu.focus()
+        page.keyboard.press("Enter")
+        page.wait_for_timeout(500)  # the drawer slides in (0.25 s)
+        forward = []
+        for _ in range(100):
+            forward.append(page.evaluate(IN_DRAWER))
+            page.keyboard.press("Tab")
+        assert forward[0] in forward[1:], [name for inside, name in forward if not inside]  # Tab went round the drawer
+        again = forward.index(forward[0], 1)
+        for _ in range(100 % again):  # back to the first stop with Shift+Tab, then on backwards round the drawer
+            page.keyboard.press("Shift+Tab")
+        assert page.evaluate(IN_DRAWER) == forward[0]
+        page.keyboard.press("Shift+Tab")
+        assert page.evaluate(IN_DRAWER) == forward[again - 1]
+        page.keyboard.press("Escape")
+        closed = menu.get_attribute("aria-expanded"), menu.evaluate("button => button === document.activeElement")
+    finally:
+        page.close()
+    assert all(inside for inside, _ in forward), [name for inside, name in forward if not inside]
+    assert again > 10, forward[:3]
+    assert closed == ("false", True)
+    assert remote == []
+
+
+COPY_BUTTONS = """() => [...document.querySelectorAll(".jupyter-wrapper .zeroclipboard-container")].map(box => {
+    box.scrollIntoView({block: "center"});  // each copy button: how far its code runs under it, whether it shows
+    const button = box.querySelector("[role=button]").getBoundingClientRect();
+    const code = box.parentElement.querySelector(".highlight-ipynb").getBoundingClientRect();
+    const top = document.elementFromPoint(button.left + button.width / 2, button.top + button.height / 2);
+    return [Math.round(code.right - button.left), button.width > 0 && button.right <= innerWidth && box.contains(top)];
+})"""
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_at_320_px_no_copy_button_covers_the_end_of_a_code_line(site, served, chromium):
+    """WCAG 1.4.10 at 320 CSS px: a code cell's "Copy to Clipboard" button sat over the cell's top right corner and
+    hid the end of the line shown there (the second outside pass, chapter 02). Every cell's code now stops short of
+    its button, which still shows, on top, within the window."""
+    remote: list[str] = []
+    for path in ("notebooks/02_cae_reconstruction.html", "notebooks/04_prm_with_and_without_prediction.html"):
+        page = open_page(chromium, served + path, remote)
+        try:
+            page.set_viewport_size({"width": 320, "height": 640})
+            page.wait_for_timeout(300)
+            buttons = page.evaluate(COPY_BUTTONS)
+        finally:
+            page.close()
+        assert buttons and all(under <= 0 and shown for under, shown in buttons), (path, buttons)
+    assert remote == []
+
+
 FRAME_FOCUS_IN_VIEW = """(frame) => {  // the control focused in ``frame``: its name, whether all of it is in the window
     const e = frame.contentDocument.activeElement, box = e.getBoundingClientRect(), at = frame.getBoundingClientRect();
     const top = at.top + box.top, bottom = at.top + box.bottom;

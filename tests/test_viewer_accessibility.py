@@ -228,3 +228,53 @@ def test_the_live_viewers_title_says_what_it_shows(chromium):
             page.close()
     finally:
         viewer.stop()
+
+
+def headings_and_view(page) -> tuple[list[tuple[int, str]], list[tuple[str, str]]]:
+    """``page``'s headings as Chromium's accessibility tree holds them, ``(level, name)``; its images named as the
+    3D view, ``(name, description)``."""
+    session = page.context.new_cdp_session(page)
+    try:
+        nodes = [n for n in session.send("Accessibility.getFullAXTree")["nodes"] if not n.get("ignored")]
+    finally:
+        session.detach()
+    value = lambda node, key: str(node.get(key, {}).get("value", ""))
+    level = lambda node: next(int(p["value"]["value"]) for p in node["properties"] if p["name"] == "level")
+    headings = [(level(n), value(n, "name")) for n in nodes if value(n, "role") == "heading"]
+    views = [(value(n, "name"), value(n, "description")) for n in nodes if value(n, "role") in ("image", "img")]
+    return headings, [view for view in views if view[0] == labels.VIEW["live"]]
+
+
+@pytest.mark.browser
+@needs_chromium
+def test_the_live_viewer_has_headings_and_its_3d_view_a_name_and_a_description_from_the_scene(chromium):
+    """WCAG 1.3.1, 2.4.6 and 1.1.1: viser's page has no heading and its canvas no name. The page's heading says what
+    it shows, each folder of the panel is a heading over the button that opens it, and the 3D view is an image named
+    and described by the scene in words (``Viewer.summary``, from its data), which follows the robot and the
+    samples."""
+    viewer = app.launch("3dc7", port=0, quiet=True)
+    try:
+        _, page = audit(chromium, viewer)
+        try:
+            title = f"{viewer.scenario.title} (3dc7): {labels.PAGE_TITLE}"
+            page.wait_for_function(f"() => document.title === {title!r}", timeout=10_000)
+            headings, views = headings_and_view(page)
+            folders = ["Workspace", "Configuration", "Samples", "Plan", "Layers", "The scene in words"]
+            assert headings == [(1, title)] + [(2, folder) for folder in folders]
+            assert (
+                views == [(labels.VIEW["live"], viewer.summary())]
+                and f"({len(viewer.workspace.boxes)} blocks)" in views[0][1]
+            )
+            assert page.get_by_role("button", name="The scene in words").get_attribute("aria-expanded") == "false"
+            collides = next(
+                q for q in viewer.robot.sample(np.random.default_rng(0), 500) if not viewer.exact.are_valid(q[None])[0]
+            )
+            viewer.set_configuration(collides)
+            viewer.sample("raw", 50, seed=1)
+            page.wait_for_function("() => document.getElementById('toolkit-scene-words').innerText.includes('Samples')")
+            _, views = headings_and_view(page)
+            assert views == [(labels.VIEW["live"], viewer.summary())] and "in collision" in views[0][1], views
+        finally:
+            page.close()
+    finally:
+        viewer.stop()

@@ -8,6 +8,7 @@ import base64
 import html
 import json
 import re
+from time import monotonic
 
 import msgspec
 import numpy as np
@@ -17,6 +18,7 @@ from IPython.display import HTML
 
 from toolkit import scenarios, viewer
 from toolkit.geometry.collision import exact_checker
+from toolkit.viewer import browser as viewer_browser
 from toolkit.viewer import drawing as draw
 from toolkit.viewer import framing, snapshot
 from toolkit.viewer.labels import NO_WEBGL
@@ -354,3 +356,60 @@ def test_the_office_snapshot_shows_the_youbot_larger_than_its_sample_marks_and_n
         assert draw.POINT_SIZE["3do"] * scale <= platform.min() / 5, shape
     looks, positions = framing.follow_camera(robot, np.clip(np.zeros(robot.dof), robot.lower, robot.upper)[None])
     assert np.linalg.norm(positions - looks) <= 3.5 * framing.robot_size(robot)
+
+
+def robot_seen(png: bytes) -> tuple[int, float, float]:
+    """In a screenshot of an animation's view: how many pixels show the robot (the palette's valid hue, saturated:
+    the path's lighter sky blue and the pale blocks are not), the contrast of their median colour with white (the
+    view's background) and with the median of the ring of pixels around them (what the robot is seen against);
+    zeros where no pixel shows it."""
+    from io import BytesIO
+
+    from matplotlib.colors import rgb_to_hsv
+    from PIL import Image
+    from scipy import ndimage
+
+    from toolkit.plots.palette import contrast
+
+    image = np.asarray(Image.open(BytesIO(png)).convert("RGB"))[:-40] / 255.0  # (H, W, 3), above the player's bar
+    hsv = rgb_to_hsv(image)
+    hue = rgb_to_hsv(np.array(draw.VALID) / 255.0)[0]
+    robot = (np.abs(hsv[..., 0] - hue) < 0.04) & (hsv[..., 1] > 0.8)  # (H, W)
+    if robot.sum() == 0:
+        return 0, 0.0, 0.0
+    ring = ndimage.binary_dilation(robot, iterations=8) & ~ndimage.binary_dilation(robot, iterations=2)
+    as_hex = lambda pixels: "#" + "".join(f"{round(c * 255):02x}" for c in np.median(pixels, axis=0))
+    return (
+        int(robot.sum()),
+        contrast(as_hex(image[robot]), "#ffffff"),
+        contrast(as_hex(image[robot]), as_hex(image[ring])),
+    )
+
+
+@pytest.mark.browser
+@pytest.mark.skipif(viewer_browser.find_chromium() is None, reason="no Chromium installed")
+def test_the_animation_is_never_washed_out(planned, chromium, tmp_path):
+    """WCAG 1.4.11: viser drew the view at 5 % opacity until its environment map had loaded and faded it in over
+    five drawn frames, again at each loop of a saved animation; under software WebGL (headless Chromium) most frames
+    of chapter 05's animation came out washed out, the robot at 1.1:1 against the blocks (no frame sampled here
+    showed it at all). Now the scene is lit without that map, the page keeps the view opaque and 3DC's blocks are
+    fainter (the robot inside one stood at 2.5:1): the frames sampled show the robot at 3:1 or more on white and
+    against the pixels around it (one frame may catch the player's loop)."""
+    page_file = tmp_path / "animation.html"
+    page_file.write_text(planned.animation_html(frames=20, seconds=2.0), encoding="utf-8")
+    page = chromium.new_page(viewport={"width": 640, "height": 480})
+    try:
+        page.goto(page_file.as_uri(), wait_until="load")
+        page.wait_for_selector("[data-camera-controls-version] canvas")
+        deadline = monotonic() + 120  # software WebGL on a busy machine is slow to draw the first frame
+        while robot_seen(page.screenshot())[0] < 30:
+            assert monotonic() < deadline, "no frame showed the robot"
+            page.wait_for_timeout(500)
+        frames = []
+        for _ in range(6):
+            frames.append(robot_seen(page.screenshot()))
+            page.wait_for_timeout(400)
+    finally:
+        page.close()
+    seen = [frame for frame in frames if frame[0] >= 30]
+    assert len(seen) >= len(frames) - 1 and all(white >= 3 and behind >= 3 for _, white, behind in seen), frames

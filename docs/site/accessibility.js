@@ -133,8 +133,23 @@ window.addEventListener("resize", () => {
       open(!drawer.checked);
     });
   }
+  // Open, the drawer covers the page: Tab and Shift+Tab cycle through its links (a focus trap, as a dialog's), so the
+  // focus never goes to the page hidden behind it (WCAG 2.4.3); Escape closes it, from anywhere in it.
+  const stops = () =>
+    [...navigation.querySelectorAll("a[href], button, input:not([type=checkbox]), [tabindex]:not([tabindex='-1'])")]
+      .filter((stop) => stop.getClientRects().length && getComputedStyle(stop).visibility !== "hidden");
   document.addEventListener("keydown", (event) => {
-    if (event.key === "Escape" && drawer.checked && narrow.matches) open(false);
+    if (!drawer.checked || !narrow.matches) return;
+    if (event.key === "Escape") open(false);
+    if (event.key !== "Tab") return;
+    const all = stops();
+    if (!all.length) return;
+    const at = all.indexOf(document.activeElement);
+    const next = at < 0 ? 0 : (at + (event.shiftKey ? -1 : 1) + all.length) % all.length;
+    if (at < 0 || (event.shiftKey && at === 0) || (!event.shiftKey && at === all.length - 1)) {
+      event.preventDefault();
+      all[next].focus();
+    }
   });
   drawer.addEventListener("change", update);
   narrow.addEventListener("change", update);

@@ -31,7 +31,7 @@ FLAT_HEIGHT = 1.0  # height of a 2D block in the flat 3D scene
 FLAT_ROBOT_HEIGHT = 1.5  # height of the 2D point robot's square
 
 OBSTACLE = rgb("obstacle")  # a hue of its own: the browser test looks for it
-OBSTACLE_OPACITY = {"3dc": 0.45}  # by workspace family: see through the clutter to the robot inside
+OBSTACLE_OPACITY = {"3dc": 0.3}  # by family: see through the clutter to the robot inside (0.45: it was 2.5:1 there)
 OBSTACLE_EDGE = rgb("ink")  # every block's edges: its outline at 3:1 or more on the white and on other blocks
 OBSTACLE_EDGE_PX = 2.0  # their width on screen, in pixels, near or far
 VALID = rgb("valid")
@@ -292,9 +292,13 @@ def draw_workspace(scene: viser.SceneApi, workspace: Workspace) -> dict[str, vis
 
 
 def light(scene: viser.SceneApi) -> None:
-    """Soft light from the front-left: viser's default lights wash the tops of boxes out to white."""
+    """Soft light from the front-left: viser's default lights wash the tops of boxes out to white.
+
+    No environment map: viser draws the view at 5 % opacity until its map has loaded, then fades it in over five
+    drawn frames, and a saved animation loads it again each loop; under software WebGL the fade seldom ended and
+    about 40 % of chapter 05's frames came out washed out (the robot at 1.1:1 on the blocks)."""
     scene.configure_default_lights(enabled=False)
-    scene.configure_environment_map(environment_intensity=0.2)
+    scene.configure_environment_map(hdri=None)
     scene.add_light_ambient("/lights/ambient", intensity=0.4)
     scene.add_light_directional("/lights/key", intensity=1.2, position=(-1.0, -2.0, 3.0))
 

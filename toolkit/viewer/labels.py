@@ -9,7 +9,12 @@ option for any of these (``configure_theme`` can only hide the logo and the shar
 share button, which would publish the scene), so a small script names them from the page itself, as React
 builds it: each control takes the name of the label of its row (:data:`SCRIPT`). A folder's title, which viser opens
 and closes on a click only (the Layers folder starts closed: its checkboxes were out of the keyboard's reach), becomes
-a button Enter and Space toggle, saying whether it is open (``aria-expanded``); icons are hidden from the screen
+a heading (level 2) over a button, its text, that Enter and Space toggle, saying whether it is open (``aria-expanded``);
+the live page's heading (level 1) is its title, out of sight (viser's page had no heading). The 3D view, a canvas, is an
+image named :data:`VIEW`: on the live page described (``aria-describedby``) by the panel's "The scene in words"
+(:meth:`toolkit.viewer.Viewer.summary`, from the scene's data), in a saved scene by the summary after its frame. viser
+draws the view at 5 % opacity until its environment map has loaded, then fades it in: the style keeps it opaque
+(``toolkit.viewer.drawing.light`` sets no map). Icons are hidden from the screen
 reader's tree (they draw what their control's name says), but the connection's, which :data:`ICONS` names. Its
 style also outlines a focused input (and a folder's title) as viser outlines a focused button (2 px; viser shows an
 input's focus only by its 1 px border's colour), darkens the sliders' min/max labels and a notice's text (viser's
@@ -72,12 +77,17 @@ ICONS = {  # an icon's class -> its name, for the icons that tell something; eve
 }
 HIDDEN = ".mantine-Notifications-root, .mantine-Notification-root"  # notices over a saved scene
 PAGE_TITLE = "live viewer, Predicting Sample Collision with Neural Networks"  # the page's title (viser's: "Viser")
+VIEW = {  # the 3D view's name (its canvas), live (described in the panel) and saved (described beside its frame)
+    "live": "3D view of the scene (described in the panel's folder 'The scene in words')",
+    "saved": "3D view of the scene (described in the text after it)",
+}
 DIMMED = COLORS["panel_text"]  # viser's dimmed label text (3.3:1 on white) made darker
 
 BORDER = COLORS["input_border"]  # an input's border, darker than viser's
 TRACK = COLORS["slider_track"]  # a slider's unfilled track, darker than viser's
 
 SCRIPT = """<style>:root { --mantine-color-dimmed: %(dimmed)s !important; }
+[data-camera-controls-version] canvas { opacity: 1 !important; }
 .mantine-Slider-markLabel, .mantine-Notification-description { color: %(dimmed)s !important; }
 .mantine-Input-input:not(:focus), .mantine-Checkbox-input:not(:checked) { border-color: %(border)s !important; }
 .mantine-Slider-root { --slider-track-bg: %(track)s !important; }
@@ -89,6 +99,7 @@ input:focus-visible, [role=button][tabindex]:focus-visible {
   const names = %(names)s;
   const icons = %(icons)s;
   const titles = %(titles)s;
+  const view = %(view)s;
   const rowLabel = (control) => {  // the text of the one <label> of the nearest row around the control
     for (let node = control.parentElement, depth = 0; node && depth < 8; node = node.parentElement, depth++) {
       const labels = node.querySelectorAll("label");
@@ -128,23 +139,56 @@ input:focus-visible, [role=button][tabindex]:focus-visible {
     for (const chevron of document.querySelectorAll("svg.tabler-icon-chevron-up, svg.tabler-icon-chevron-down")) {
       const header = chevron.parentElement;  // a folder's title: it opens and closes the folder, on a click only
       if (!header || header.style.cursor !== "pointer") continue;
-      header.setAttribute("role", "button");
-      header.setAttribute("tabindex", "0");
-      header.setAttribute("aria-expanded", String(chevron.classList.contains("tabler-icon-chevron-up")));
-      if (!header.dataset.keys) {
-        header.dataset.keys = "1";
-        header.addEventListener("keydown", (event) => {
+      let toggle = header.querySelector(":scope > [data-toggle]");
+      if (!toggle) {  // a heading (level 2) holding a button, the title's text: Enter and Space click the title
+        const text = [...header.childNodes].find((node) => node.nodeType === Node.TEXT_NODE);
+        if (!text) continue;
+        toggle = document.createElement("span");
+        toggle.dataset.toggle = "1";
+        toggle.setAttribute("role", "button");
+        toggle.setAttribute("tabindex", "0");
+        header.insertBefore(toggle, text);
+        toggle.appendChild(text);  // React keeps the node and may change its text; the click reaches the title
+        toggle.addEventListener("keydown", (event) => {
           if (event.key === "Enter" || event.key === " ") {
             event.preventDefault();
-            header.click();
+            toggle.click();
           }
         });
+        header.setAttribute("role", "heading");
+        header.setAttribute("aria-level", "2");
+      }
+      const open = String(chevron.classList.contains("tabler-icon-chevron-up"));
+      if (toggle.getAttribute("aria-expanded") !== open) toggle.setAttribute("aria-expanded", open);
+    }
+    const words = document.querySelector("[data-scene-words]")?.closest("div");  // the scene in words (panel.py)
+    if (words && !words.id) words.id = "toolkit-scene-words";
+    for (const canvas of document.querySelectorAll("canvas")) {  // the 3D view: an image, described by those words
+      if (!canvas.closest("[data-camera-controls-version]")) {  // viser's empty overlay
+        if (!canvas.getAttribute("aria-hidden")) canvas.setAttribute("aria-hidden", "true");
+      } else if (canvas.getAttribute("aria-label") !== view[words ? "live" : "saved"]) {
+        canvas.removeAttribute("aria-hidden");  // (hidden by a run before its container had its mark)
+        canvas.setAttribute("role", "img");
+        canvas.setAttribute("aria-label", view[words ? "live" : "saved"]);
+      }
+      if (canvas.getAttribute("role") === "img" && words && !canvas.getAttribute("aria-describedby")) {
+        canvas.setAttribute("aria-describedby", words.id);
       }
     }
     const scenario = [...document.querySelectorAll("input[role=combobox]")]  // the panel's dropdown
       .find((input) => [...(input.labels || [])].some((label) => label.textContent.trim() === "scenario"))?.value;
     const title = titles[scenario] && `${titles[scenario]} (${scenario}): ${%(page)s}`;
     if (title && document.title !== title) document.title = title;  // (a change of title is a mutation too)
+    if (title) {  // the page's heading: its title, for a screen reader (the panel's own title shows it, shorter)
+      let heading = document.getElementById("toolkit-heading");
+      if (!heading) {
+        heading = document.createElement("h1");
+        heading.id = "toolkit-heading";
+        heading.style.cssText = "position:absolute;width:1px;height:1px;overflow:hidden;clip-path:inset(50%%);margin:0";
+        document.body.prepend(heading);  // outside React's root, before it
+      }
+      if (heading.textContent !== title) heading.textContent = title;
+    }
     for (const mark of document.querySelectorAll("[data-live-status]")) {  // a status line: announce its changes
       const line = mark.closest("div");
       if (line && !line.getAttribute("role")) {
@@ -172,6 +216,7 @@ def script(names: dict[str, str] = NAMES) -> str:
         "logo": json.dumps(LOGO_ALT),
         "titles": json.dumps({name: scenario.title for name, scenario in scenarios.SCENARIOS.items()}),
         "page": json.dumps(PAGE_TITLE),
+        "view": json.dumps(VIEW),
     }
 
 

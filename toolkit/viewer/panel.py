@@ -32,6 +32,7 @@ PLAY_FPS = 20
 
 SAMPLE_LEGEND = "Samples: **circles** valid, **diamonds** in collision, **sparkles** where the model is wrong."
 LIVE = "<span data-live-status hidden></span>"  # a status line's mark: the page announces its changes (labels.py)
+WORDS = "<span data-scene-words hidden></span>"  # the scene in words' mark: it describes the 3D view (labels.py)
 
 
 class Panel:
@@ -51,6 +52,7 @@ class Panel:
                 ("loading", self.stop_playing),
                 ("loaded", self.on_load),
                 ("moved", self.on_configuration),
+                ("sampled", self.on_scene),
                 ("planned", self.on_plan),
                 ("stopping", self.stop_playing),
             ):
@@ -85,6 +87,8 @@ class Panel:
             self.along = gui.add_slider("along path", 0.0, 1.0, 0.001, 0.0, disabled=True)
         with gui.add_folder("Layers", expand_by_default=False):
             self.layers = {layer: gui.add_checkbox(layer, True) for layer in viewer.visible}
+        with gui.add_folder("The scene in words", expand_by_default=False):
+            self.words = gui.add_markdown("")  # the 3D view's description (the page's script points it there)
 
         self.scenario.on_update(self._guarded(self._reload))
         self.seed.on_update(self._guarded(self._reload))
@@ -140,6 +144,11 @@ class Panel:
         elif viewer.model_error:
             text += f"; model not used: {viewer.model_error}"
         self.status.content = text + LIVE
+        self.on_scene()
+
+    def on_scene(self) -> None:
+        """What the 3D view shows changed: its description follows (:meth:`Viewer.summary`, from the scene's data)."""
+        self.words.content = self.viewer.summary() + WORDS
 
     def on_plan(self, result) -> None:
         """A plan is shown: report it and ready the path slider."""
@@ -152,6 +161,7 @@ class Panel:
         self._syncing = True
         self.along.value, self.along.disabled = 0.0, self.viewer.path is None
         self._syncing = False
+        self.on_scene()
 
     def show_error(self, err: Exception) -> None:
         """Show ``err`` in the status line."""

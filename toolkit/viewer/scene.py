@@ -41,6 +41,7 @@ EVENTS = {  # what a Viewer tells its listeners, and the arguments a listener's 
     "loading": "before a new workspace replaces the scene (outside the lock: a listener may wait for its threads); ()",
     "loaded": "a new workspace, robot and checkers are in place; ()",
     "moved": "the robot moved: q, valid, probability, predicted_valid are current; ()",
+    "sampled": "samples are shown: sample_counts is current; ()",
     "planned": "a PRM result is drawn (path holds its path, or None); (result,)",
     "stopping": "before the server stops (outside the lock); ()",
 }
@@ -206,6 +207,7 @@ class Viewer:
             self.sample_clouds = draw.add_samples(self.server.scene, points, kinds, size)
             self.sample_counts = {kind: int(mask.sum()) for kind, mask in kinds.items()}
             self.sample_points = (points, kinds)
+            self._notify("sampled")
             return draw.validity_colors(valid)
 
     def sample(self, sampler: str = RAW, n: int = 200, *, seed: int = 0, at: str = "base") -> np.ndarray:
