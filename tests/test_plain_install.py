@@ -9,9 +9,10 @@ tutorial then runs in quick mode from a copy of ``notebooks/`` and ``tutorials/`
 library reads may come from the repository), and ``toolkit plan`` and ``toolkit grade`` run there too, the latter on
 an assignment folder given by ``$TOOLKIT_ASSIGNMENTS``.
 
-Measured (``pytest -s --durations=0 tests/test_plain_install.py``, the project's 2-core machine at a load of about
-15, pip's cache warm): 22.5 min in all, of which building and installing 11 min, the eleven notebooks 9.5 min in one
-runner process (each one's wall and CPU time printed), ``toolkit grade`` 76 s, ``toolkit plan`` 15 s.
+Measured (``pytest -s --durations=0 tests/test_plain_install.py`` alone, the project's 2-core machine at a load of 5
+to 18): 15 min in all, of which the wheel, the wheelhouse's download and the install about 4 min, the eleven notebooks
+8.4 min in one runner process (kernel CPU 231 s; each one's wall and CPU time printed), ``toolkit grade`` 97 s (with
+building the assignment, which a whole session has done before), ``toolkit plan`` 14 s.
 """
 
 import json
