@@ -83,11 +83,11 @@ def _scores_in_process(notebook: Path) -> dict[str, float]:
 
 
 @pytest.fixture(scope="module")
-def built() -> dict[str, Path]:
-    """Build every assignment (``otter assign`` runs each master's solutions against all its tests first and fails
-    when one fails: a built assignment's solutions pass them all)."""
+def built(assignment_zip) -> dict[str, Path]:
+    """Build every assignment, once a test session (``otter assign`` runs each master's solutions against all its
+    tests first and fails when one fails: a built assignment's solutions pass them all)."""
     with ThreadPoolExecutor() as pool:
-        return dict(zip(grading.assignment_names(), pool.map(grading.build, grading.assignment_names())))
+        return dict(zip(grading.assignment_names(), pool.map(assignment_zip, grading.assignment_names())))
 
 
 @pytest.fixture(scope="module")

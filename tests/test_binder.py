@@ -1,10 +1,10 @@
 """Binder: the repo2docker configuration in binder/ installs a toolkit that runs a chapter.
 
 There is no Docker here, so the test does what repo2docker's Python build does with ``binder/requirements.txt``:
-``pip install -r binder/requirements.txt`` from the repository's root, here into a clean virtual environment,
+``pip install -r binder/requirements.txt`` from the repository's root, here into a clean virtual environment
+(from the test session's wheelhouse, filled from the registries: tests/conftest.py's ``fresh_environment``),
 then adds what repo2docker's base environment brings (a Jupyter kernel) and runs chapter 01 in quick mode under
-``binder/start``, with that environment's kernel. pip's cache and the machine's wheels are used as for any
-install, so a machine that has installed the toolkit before takes about 4 minutes (docs/setup_times.md).
+``binder/start``, with that environment's kernel.
 """
 
 import os
@@ -65,13 +65,9 @@ def test_the_guides_hub_config_runs_each_students_server_from_the_course_environ
 
 @pytest.mark.slow
 @pytest.mark.binder
-def test_an_install_from_the_binder_files_runs_a_chapter(tmp_path):
+def test_an_install_from_the_binder_files_runs_a_chapter(fresh_environment, tmp_path):
     venv, env = tmp_path / "binder-venv", clean_environment()
-    subprocess.run([sys.executable, "-m", "venv", venv], check=True)
-    python = str(venv / "bin" / "python")
-    pip = [python, "-m", "pip", "install", "--quiet", "--retries", "0"]  # no retrying the CPU index where none is
-    subprocess.run([*pip, "-r", "binder/requirements.txt"], cwd=ROOT, env=env, check=True, timeout=1800)
-    subprocess.run([*pip, *KERNEL], cwd=ROOT, env=env, check=True, timeout=600)
+    python = str(fresh_environment(venv, ["-r", "binder/requirements.txt"], KERNEL, cwd=ROOT, env=env))
 
     where = [python, "-c", "import toolkit, torch; print(toolkit.__file__, torch.__version__)"]
     shown = subprocess.run(where, cwd=tmp_path, env=env, capture_output=True, text=True, check=True).stdout.split()

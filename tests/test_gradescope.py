@@ -3,7 +3,8 @@
 There is no Gradescope (nor Docker) here, so the test does what the zip's ``setup.sh`` and ``run_autograder`` do,
 in a clean virtual environment instead of Gradescope's conda one: it installs exactly what the zip's
 ``environment.yml`` lists (its Python is this one; conda's packages and the pip part are installed with pip: the
-toolkit from the wheel inside the zip, the rest from the registry and pip's cache as in tests/test_binder.py),
+toolkit from the wheel inside the zip, the rest from the registries through the test session's wheelhouse, as in
+tests/test_binder.py),
 then grades with ``otter run -a <zip>`` in a network namespace of its own (bubblewrap's ``--unshare-net``): the
 master's solutions score full marks, the blank student notebook nothing. The seconds of the install and of the
 grading are printed (``pytest -s``; tutorials/instructors.md quotes them).
@@ -57,9 +58,9 @@ def _otter_run(python: str, submission: Path, out: Path, env: dict[str, str]) ->
 
 
 @pytest.fixture(scope="module")
-def built() -> Path:
-    """The assignment's autograder zip, as ``make assignments`` builds it."""
-    return grading.build(NAME)
+def built(assignment_zip) -> Path:
+    """The assignment's autograder zip, as ``make assignments`` builds it (once a test session)."""
+    return assignment_zip(NAME)
 
 
 @pytest.mark.slow
@@ -99,7 +100,7 @@ def _hidden_tests(zip_path: Path) -> str:
 
 @pytest.mark.slow
 @pytest.mark.binder
-def test_otter_run_grades_with_the_zip_in_a_clean_environment_without_network(built, tmp_path):
+def test_otter_run_grades_with_the_zip_in_a_clean_environment_without_network(built, fresh_environment, tmp_path):
     if why := sandbox.unavailable():
         pytest.fail(f"bubblewrap must run where the tests run (make sandbox): {why}")
     shutil.copy(built, tmp_path / "autograder.zip")
@@ -107,11 +108,8 @@ def test_otter_run_grades_with_the_zip_in_a_clean_environment_without_network(bu
     with zipfile.ZipFile(tmp_path / "autograder.zip") as archive:
         archive.extractall(source)
     began = time.perf_counter()
-    subprocess.run([sys.executable, "-m", "venv", venv], check=True)
-    python = str(venv / "bin" / "python")
-    pip = [python, "-m", "pip", "install", "--quiet", "--retries", "0"]  # no retrying the CPU index where none is
     (tmp_path / "requirements.txt").write_text("\n".join(_requirements(source)) + "\n")  # as conda hands them to pip
-    subprocess.run([*pip, "-r", "requirements.txt"], cwd=tmp_path, env=env, check=True, timeout=1800)
+    python = str(fresh_environment(venv, ["-r", "requirements.txt"], cwd=tmp_path, env=env))
     installed = time.perf_counter() - began
 
     where = [python, "-c", "import toolkit, torch; print(toolkit.__file__, torch.__version__)"]
@@ -128,6 +126,6 @@ def test_otter_run_grades_with_the_zip_in_a_clean_environment_without_network(bu
     solved = _otter_run(python, _solved(NAME), tmp_path / "solved", env)
     blank = _otter_run(python, grading.student_notebook(NAME), tmp_path / "blank", env)
     graded = time.perf_counter() - began
-    print(f"\n{NAME}: install {installed:.0f} s, otter run on two submissions {graded:.0f} s")
+    print(f"\n{NAME}: install {installed:.0f} s (this session's wheelhouse), otter run on two {graded:.0f} s")
     assert solved == grading.points(NAME) == {"q1": 6.0, "q2": 2.0}
     assert blank == {"q1": 0.0, "q2": 0.0}

@@ -3,20 +3,21 @@ has it, and everything a student and an instructor run there.
 
 The wheel is built from this checkout (:func:`toolkit.teaching.gradescope.build_wheel`) and installed with the one
 command of ``tutorials/instructors_jupyterhub.md`` (the CPU torch, ``-c constraints.txt``, the ``hub``, ``grading``
-and ``ompl`` extras) into a fresh virtual environment, with pip's cache and the machine's registries. Every chapter and
+and ``ompl`` extras) into a fresh virtual environment, from the registries through the test session's wheelhouse
+(tests/conftest.py's ``fresh_environment``). Every chapter and
 tutorial then runs in quick mode from a copy of ``notebooks/`` and ``tutorials/`` outside the checkout (nothing the
 library reads may come from the repository), and ``toolkit plan`` and ``toolkit grade`` run there too, the latter on
 an assignment folder given by ``$TOOLKIT_ASSIGNMENTS``.
 
-Measured (``pytest -s --durations=0 tests/test_plain_install.py``, the project's 2-core machine at a load of about
-15, pip's cache warm): 22.5 min in all, of which building and installing 11 min, the eleven notebooks 9.5 min in one
-runner process (each one's wall and CPU time printed), ``toolkit grade`` 76 s, ``toolkit plan`` 15 s.
+Measured (``pytest -s --durations=0 tests/test_plain_install.py`` alone, the project's 2-core machine at a load of 5
+to 18): 15 min in all, of which the wheel, the wheelhouse's download and the install about 4 min, the eleven notebooks
+8.4 min in one runner process (kernel CPU 231 s; each one's wall and CPU time printed), ``toolkit grade`` 97 s (with
+building the assignment, which a whole session has done before), ``toolkit plan`` 14 s.
 """
 
 import json
 import shutil
 import subprocess
-import sys
 from pathlib import Path
 
 import numpy as np
@@ -37,18 +38,14 @@ pytestmark = [pytest.mark.slow, pytest.mark.binder]
 
 
 @pytest.fixture(scope="module")
-def installed(tmp_path_factory) -> tuple[Path, dict[str, str], Path]:
+def installed(toolkit_wheel, fresh_environment, tmp_path_factory) -> tuple[Path, dict[str, str], Path]:
     """The environment's Python, the environment to run it in (quick mode, a model cache of its own) and a folder
     outside the checkout holding copies of ``notebooks/`` and ``tutorials/``."""
     work = tmp_path_factory.mktemp("plain-install")
-    wheel = gradescope.build_wheel(work / "wheel", ROOT)
-    subprocess.run([sys.executable, "-m", "venv", work / "venv"], check=True)
-    python = work / "venv" / "bin" / "python"
     env = clean_environment() | {"TOOLKIT_QUICK": "1", "TOOLKIT_CACHE": str(work / "cache")}
-    *index, torch, _ = gradescope.requirements(str(wheel), ROOT)  # the CPU index and torch, as the guide's command
-    pip = [python, "-m", "pip", "install", "--quiet", "--retries", "0", "-c", ROOT / "constraints.txt"]
-    pip += [*index[0].split(), torch, f"{wheel}[{EXTRAS}]", "nbclient"]
-    subprocess.run(pip, cwd=work, env=env, check=True, timeout=1800)
+    *index, torch, _ = gradescope.requirements(str(toolkit_wheel), ROOT)  # the CPU index and torch, as the guide's
+    pip = ["-c", ROOT / "constraints.txt", *index[0].split(), torch, f"{toolkit_wheel}[{EXTRAS}]", "nbclient"]
+    python = fresh_environment(work / "venv", pip, cwd=work, env=env)
     course = work / "course"
     for folder in ("notebooks", "tutorials"):
         shutil.copytree(ROOT / folder, course / folder, ignore=shutil.ignore_patterns("dist", ".ipynb_checkpoints"))
@@ -94,10 +91,10 @@ def test_toolkit_plan_from_the_installed_toolkit_returns_an_exactly_valid_path(i
     assert path_is_valid(exact_checker(workspace, robot), path, default_resolution(robot))  # checked here, exactly
 
 
-def test_toolkit_grade_from_the_installed_toolkit_grades_an_assignment_folder(installed, tmp_path):
+def test_toolkit_grade_from_the_installed_toolkit_grades_an_assignment_folder(installed, assignment_zip, tmp_path):
     python, env, _ = installed
     name = "bridge_test"
-    grading.autograder(name)  # built in the checkout (make assignments); the folder a course keeps, dist/ included
+    assignment_zip(name)  # built in the checkout (make assignments); the folder a course keeps, dist/ included
     assignments = tmp_path / "assignments"
     shutil.copytree(grading.master(name).parent, assignments / name)
     submission = tmp_path / "submissions" / f"{name}.ipynb"
