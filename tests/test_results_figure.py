@@ -10,7 +10,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from PIL import Image
 
 from toolkit.experiments.paper_numbers import IMPROVEMENT
-from toolkit.plots import alt
+from toolkit.plots import alt, timings
 from tools import recorded_results, results_summary
 
 TEXT = recorded_results.RESULTS.read_text()
@@ -88,3 +88,31 @@ def test_the_sentence_over_each_figure_counts_the_papers_cells_by_the_tie_rule(k
     said = re.search(r"(?m)^\| the paper \(Table 3\) \| (\d+) \| (\d+) \| (\d+) \|$", block)
     assert f"| {kind} time, 16 cells | saved 10 % or more | tied | lost 10 % or more |" in block
     assert said and [int(n) for n in said.groups()] == [saved, 16 - saved - lost, lost]
+
+
+def test_each_panel_shades_the_tie_band_its_counts_are_read_with(drawn):
+    """Review r14a: without the band from 0.90 to 1.10 drawn, the saved / tied / lost counts under each figure could
+    not be checked from it. Each panel shades it, the legend and the description name it, and the points strictly
+    inside it, as shown to two decimals, are the table's ties."""
+    kind, fig = drawn
+    for ax in fig.axes:
+        (band,) = ax.patches
+        corners = band.get_path().transformed(band.get_patch_transform()).vertices  # axes x, data y
+        assert sorted({round(y, 6) for y in corners[:, 1]}) == [0.9, 1.1]
+    label = "tie band, 0.90 to 1.10 (within 10 % of 1)"
+    assert label in [t.get_text() for t in fig.legends[0].texts]
+    assert f"read against the line at 1 and the shaded {label}" in alt.alt_text(fig)
+    block = TEXT.partition(results_summary.FIGURE_BEGIN.format(kind=kind))[2].partition("<!-- end")[0]
+    for name in results_summary.SOURCES:
+        points = [y for ax in fig.axes for line in ax.get_lines() if line.get_label() == name for y in line.get_ydata()]
+        inside = sum(0.9 < round(float(y), 2) < 1.1 for y in points)
+        said = re.search(rf"(?m)^\| {re.escape(name)} \| (\d+) \| (\d+) \| (\d+) \|$", block)
+        assert said and int(said[2]) == inside, name
+
+
+def test_without_a_tie_the_ratio_figure_draws_no_band_as_chapter_04_shows_it():
+    series = {"ours": {"BS": 0.9, "OB": 1.0, "G": 1.1, "BT": 2.0}}
+    plain, banded = (timings.ratio_comparison({"total": series}, tie=tie) for tie in (None, 0.25))
+    assert not plain.axes[0].patches and [t.get_text() for t in plain.legends[0].texts] == ["ours"]
+    assert "band" not in alt.alt_text(plain)
+    assert [t.get_text() for t in banded.legends[0].texts] == ["ours", "tie band, 0.75 to 1.25 (within 25 % of 1)"]

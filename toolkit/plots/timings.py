@@ -203,7 +203,7 @@ def quartile_whiskers(
     return cut
 
 
-def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figure:
+def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]], *, tie: float | None = None) -> Figure:
     """Time with / without prediction per sampler (below 1: prediction saves time), one panel per source.
 
     ``{source: {series: {sampler: ratio}}}``: a source names whose numbers they are and what "without" was (the
@@ -211,22 +211,28 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
     exact planner), a series what was timed (e.g. "2DS, sampling"). Each ratio is a point (a series keeps its colour
     and marker in every panel), read against the line at 1: on a log axis a bar's length would mean nothing.
     Ratios against different baselines never share a panel (two panels may share one); the panels share one log
-    axis, so positions compare.
+    axis, so positions compare. With ``tie`` (e.g. 0.10) every panel shades the tie band from ``1 - tie`` to
+    ``1 + tie`` (:func:`_tie_band`), named in the legend and the description, so that a reader can count the points
+    on each side of it; without, none is drawn.
     """
     names = list(dict.fromkeys(name for series in baselines.values() for name in series))  # every series, once
-    height = 2.6 * len(baselines) + 0.1 + 0.2 * -(-len(names) // 2)  # one baseline a row; the legend, two a row
+    entries = len(names) + (tie is not None)  # the legend's: every series and the band
+    height = 2.6 * len(baselines) + 0.1 + 0.2 * -(-entries // 2)  # one baseline a row; the legend, two a row
     fig = Figure(figsize=(PAGE_WIDTH, height))
     axes = fig.subplots(len(baselines), 1, squeeze=False, sharey=True)[:, 0]
     said = []
     for ax, (title, series) in zip(axes, baselines.items()):
         for name, ratios in series.items():  # a series keeps its place, colour and marker in every panel
-            _points(ax, names.index(name), len(names), [ratios[s] for s in PAPER_SAMPLERS], name)
+            values = [ratios[s] for s in PAPER_SAMPLERS]
+            _points(ax, names.index(name), len(names), values, name, outlined=tie is not None)  # seen on the band
         every = np.array([[ratios[s] for s in PAPER_SAMPLERS] for ratios in series.values()])  # (series, samplers)
         said.append(
             f"{title}: {len(series)} series, ratios from {every.min():.2f} to {every.max():.2f}, below 1 for "
             f"{int(np.sum(every < 1))} of {every.size}"
         )  # each ratio: the longer description
         ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
+        if tie is not None:
+            _tie_band(ax, tie)
         ax.set_xticks(np.arange(len(PAPER_SAMPLERS) - 1) + 0.5, minor=True)  # a sampler's points between two lines
         ax.grid(True, axis="x", which="minor", color=COLORS["shade"], linewidth=0.8)
         ax.tick_params(axis="x", which="minor", length=0)
@@ -245,7 +251,8 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
     fig.legend(shown.values(), shown.keys(), loc="lower center", ncol=min(len(shown), 2), fontsize=9, frameon=False)
     fig.tight_layout(rect=(0, (0.1 + 0.2 * -(-len(shown) // 2)) / fig.get_figheight(), 1, 1))
     text = "Planning time with prediction divided by the time without, a point per sampler and series, log scale, read"
-    text += " against the line at 1; below 1 prediction saves"
+    text += " against the line at 1" + ("" if tie is None else f" and the shaded {_band_words(tie)}")
+    text += "; below 1 prediction saves"
     parts = [
         Part(
             title,
@@ -256,6 +263,19 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]]) -> Figur
         for title, series in baselines.items()
     ]
     return describe(fig, f"{text} time. {'; '.join(said)}.", parts)
+
+
+def _band_words(tie: float) -> str:
+    """The tie band in words, as the legend and the description name it: ``"tie band, 0.90 to 1.10 (within 10 % of
+    1)"``."""
+    return f"tie band, {1 - tie:.2f} to {1 + tie:.2f} (within {tie * 100:g} % of 1)"
+
+
+def _tie_band(ax, tie: float) -> None:
+    """Shade ``[1 - tie, 1 + tie]`` behind the points of a ratio panel, its edges dotted (seen without the grey)."""
+    ax.axhspan(1 - tie, 1 + tie, facecolor=COLORS["shade"], edgecolor="none", zorder=0, label=_band_words(tie))
+    for edge in (1 - tie, 1 + tie):
+        ax.axhline(edge, color=COLORS["reference"], linestyle=":", linewidth=0.8, zorder=0.5)
 
 
 def _log_ticks(ax, text=lambda t: f"{t:g}") -> None:
@@ -317,11 +337,16 @@ def _rate_text(rate: float) -> str:
     return f"{rate / 1e6:.3g}M" if rate >= 999.5e3 else f"{rate / 1e3:.3g}k"
 
 
-def _points(ax, i: int, n: int, values: list[float], label: str) -> np.ndarray:
+def _points(ax, i: int, n: int, values: list[float], label: str, outlined: bool = False) -> np.ndarray:
     """Point ``i`` of ``n`` beside each tick (``values (ticks,)``: a sampler's ratio, a scenario's rate), in the
     ``i``-th series' colour and marker (:func:`~toolkit.plots.palette.series_style`), without a line: a value is read
-    against the axis, never along a line between ticks. Returns the points' ``(ticks,)`` x."""
+    against the axis, never along a line between ticks; ``outlined`` (:func:`~toolkit.plots.palette.halo`): seen on a
+    grey band too. Returns the points' ``(ticks,)`` x."""
     look = series_style(i)
     x = np.arange(len(values)) + (i - (n - 1) / 2) * 0.7 / n
-    ax.plot(x, values, linestyle="none", marker=look["marker"], color=look["color"], markersize=7, label=label)
+    (line,) = ax.plot(
+        x, values, linestyle="none", marker=look["marker"], color=look["color"], markersize=7, label=label
+    )
+    if outlined:
+        line.set_path_effects(halo(1.0))
     return x
