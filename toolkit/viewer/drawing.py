@@ -8,7 +8,9 @@ square to :data:`FLAT_ROBOT_HEIGHT`, so it pokes out of any block it collides wi
 Colors tell validity (§III), from :mod:`toolkit.plots.palette` (Okabe-Ito, apart for colour-blind eyes too):
 the valid colour (blue), the invalid one (vermillion) in collision. Samples carry a second cue, their
 shape (:data:`SAMPLE_SHAPES`): circles valid, diamonds in collision, and a larger sparkle behind the mark where a
-learned model disagrees with the exact checker. A probability of validity is drawn on cividis (dark: 0, light: 1).
+learned model disagrees with the exact checker; on a page, the far ones grow until their shapes can be told
+(:func:`far_scale`). A probability of validity is drawn on cividis (dark: 0, light: 1). Blocks and links are edged
+in ink (:func:`add_edges`).
 """
 
 from __future__ import annotations
