@@ -32,8 +32,8 @@ from toolkit.viewer.models import Predictor
 from toolkit.viewer.server import camera_at, page_path, start_server, stop_server
 
 LAYERS = ("obstacles", "robot", "prediction", "samples", "roadmap", "path")
-ALONG = {"obstacle_edges": "obstacles", "link_edges": "robot"}  # nodes shown and hidden with a layer (not its children:
-# viser would draw a see-through node's child see-through)
+# nodes shown and hidden with a layer, not its children (viser would draw a see-through node's child see-through)
+ALONG = {"obstacle_edges": "obstacles", "link_edges": "robot"}
 HALO = 1.15  # the prediction wireframe is this much larger than the links
 SLIDING = ("/workspace", "/robot", "/plan")  # scene frames an animation slides so that the camera follows the robot
 RAW = "raw"  # the "sampler" of uniform configurations, unfiltered: what a model is asked about
