@@ -118,6 +118,35 @@ def test_every_block_is_outlined_by_edges_that_stand_out(make_viewer, name):
     assert v.nodes["obstacle_edges"].visible
 
 
+@pytest.mark.parametrize("name", ["3dc9", "3do", "2ds"])
+def test_every_link_is_edged_and_its_edges_move_with_it(make_viewer, name, rng):
+    """Reader r13b: chapter 05's 9-DoF chain read as one thin bar among the blocks. Each link's 12 edges are drawn
+    in the blocks' ink, so each link reads as a box and the joints show: in the link's own frame (the robot's
+    ``link_boxes``) every end of an edge is a corner, at plus or minus half its size on each axis, 4 edges along
+    each axis; they follow the robot to a new configuration and hide and show with it."""
+    v = make_viewer(name, seed=1)
+    for q in (v.q, v.robot.sample(rng, 1)[0]):
+        v.set_configuration(q)
+        centers, rotations, half = v.robot.link_boxes(q[None])  # (1, L, D), (1, L, D, D), (L, D)
+        centers, rotations = centers[0], rotations[0]
+        if v.robot.dim == 2:  # the flat scene: the square stands on the floor, FLAT_ROBOT_HEIGHT high
+            centers = np.column_stack([centers, np.full(len(centers), draw.FLAT_ROBOT_HEIGHT / 2)])
+            rotations = np.stack(
+                [np.block([[r, np.zeros((2, 1))], [np.zeros((1, 2)), np.ones((1, 1))]]) for r in rotations]
+            )
+            half = np.column_stack([half, np.full(len(half), draw.FLAT_ROBOT_HEIGHT / 2)])
+        edges = np.asarray(v.nodes["link_edges"].points, dtype=float).reshape(len(half), 12, 2, 3)
+        local = np.einsum("lji,lkej->lkei", rotations, edges - centers[:, None, None])  # (L, 12, 2, 3) link frames
+        np.testing.assert_allclose(np.abs(local), np.broadcast_to(half[:, None, None], local.shape), atol=1e-5)
+        along = ~np.isclose(local[:, :, 0], local[:, :, 1], atol=1e-5)  # (L, 12, 3): the axis each edge runs along
+        assert (along.sum(axis=-1) == 1).all() and (along.sum(axis=1) == 4).all()
+    assert np.all(np.asarray(v.nodes["link_edges"].colors).reshape(-1, 3) == draw.EDGE)
+    v.set_visible("robot", False)
+    assert not v.nodes["link_edges"].visible and not v.nodes["robot"].visible
+    v.set_visible("robot", True)
+    assert v.nodes["link_edges"].visible
+
+
 def test_the_viewer_takes_a_scenario_object_and_keeps_it(make_viewer):
     """Objects flow down: a scenario the caller holds (here an equal copy of 2DS) is shown as it is, not looked up
     again by name (``toolkit view --checkpoint`` passes the checkpoint's scenario)."""

@@ -207,8 +207,86 @@ def test_a_sparkle_is_drawn_before_the_mark_it_rings_so_that_the_marks_shape_sho
     v = make_viewer("3dc7", seed=2, predictor=contrary)
     v.sample("raw", 60, seed=0)
     made = [m["name"] for _, m in recording(v.html())[0]["messages"] if m.get("name", "").startswith("/samples/")]
-    first = {name: made.index(name) for name in dict.fromkeys(made)}
-    assert first["/samples/model_wrong"] < min(first["/samples/valid"], first["/samples/in_collision"])
+    first = {kind: min(k for k, name in enumerate(made) if name.startswith(f"/samples/{kind}")) for kind in KINDS}
+    assert first["model_wrong"] < min(first["valid"], first["in_collision"])  # its clouds near and far
+
+
+KINDS = ("model_wrong", "valid", "in_collision")  # the samples' clouds on a page: /samples/{kind} and, far, its steps
+
+
+@pytest.fixture(scope="module")
+def chain9():
+    """Chapter 05's 3DC-9 scene (cell "Now 3DC-9"): the rest pose bent at its three joints, 500 uniform samples."""
+    with viewer.Viewer("3dc9", seed=0, port=0) as v:
+        bent = v.q.copy()
+        bent[6:] = (1.2, -1.0, 1.2)
+        v.set_configuration(bent)
+        v.show_samples(v.robot.sample(np.random.default_rng(0), 500))
+        yield v
+
+
+def behind_blocks(camera: np.ndarray, targets: np.ndarray, boxes: np.ndarray) -> np.ndarray:
+    """``(T,)`` bool: a point of the segment from ``camera (3,)`` to each of ``targets (T, 3)`` lies strictly inside
+    one of the blocks ``boxes (K, 2, 3)``, by 2000 points along it (a reference apart from the slab test)."""
+    along = camera + np.linspace(0.0, 1.0, 2000)[:, None, None] * (targets - camera)  # (S, T, 3)
+    inside = (along[:, :, None] > boxes[:, 0]) & (along[:, :, None] < boxes[:, 1])  # (S, T, K, 3)
+    return inside.all(axis=-1).any(axis=(0, 2))
+
+
+def test_links_hidden_agrees_with_points_along_each_line_of_sight(chain9, rng):
+    boxes = chain9.workspace.boxes  # (K, 2, 3)
+    cameras = rng.uniform(0.0, 11.0, (40, 3))  # (C, 3)
+    links = rng.uniform(3.0, 8.0, (6, 3))  # (L, 3)
+    hidden = framing.links_hidden(cameras, links, boxes[:, 0], boxes[:, 1])  # (C, L)
+    reference = np.stack([behind_blocks(camera, links, boxes) for camera in cameras])
+    assert 0.1 < reference.mean() < 0.9 and np.array_equal(hidden, reference)
+
+
+def test_the_3dc9_snapshot_shows_every_link_in_front_of_the_blocks(chain9):
+    """Reader r13b: chapter 05's 3DC-9 view showed the chain behind a block. clear_view looked along one line, to the
+    robot's middle; now it counts, for each camera it tries, the links whose line of sight crosses a block, and
+    takes one with the fewest (none here; the camera it took before hid one), the same camera each time."""
+    document = chain9.html()
+    camera = cameras(document)
+    links = chain9.robot.link_boxes(chain9.q[None])[0][0]  # (L, 3) centres
+    assert not behind_blocks(camera["position"], links, chain9.workspace.boxes).any()
+    np.testing.assert_allclose(cameras(chain9.html())["position"], camera["position"])  # deterministic
+    assert np.linalg.norm(camera["position"] - camera["look_at"]) < 4 * framing.robot_size(chain9.robot)  # close
+
+
+def test_far_marks_on_a_page_are_wide_enough_to_tell_their_shapes_apart(chain9):
+    """Reader r13b: viser sizes marks in workspace units, so the far ones of the 3DC-9 view were dots of 2-4 px
+    (of 440) whose shape could not be told. On the page, a mark is drawn ``point_size / (z tan(fov / 2))`` view
+    heights wide at depth ``z``: every circle before the camera is at least 8 px of a 440 px view, a diamond 1.6
+    times that; only marks that were narrower than 9 px (circles) grew, to at most 13; the live view keeps its marks'
+    sizes in workspace units."""
+    document = chain9.html()
+    record, buffers = recording(document)
+    camera = cameras(document)
+    forward = (camera["look_at"] - camera["position"]) / np.linalg.norm(camera["look_at"] - camera["position"])
+    px = lambda size, depth: 440 * size / (depth * np.tan(np.deg2rad(75.0) / 2))  # (n,) pixels of a 440 px view
+    seen: dict[str, list[np.ndarray]] = {kind: [] for kind in KINDS}
+    for _, message in record["messages"]:
+        if message["type"] == "PointCloudMessage" and message["name"].startswith("/samples/"):
+            props = message["props"]
+            points = np.frombuffer(buffers[props["points"]["__binary_index"]], props["points"]["dtype"])
+            depth = (points.reshape(-1, 3).astype(float) - camera["position"]) @ forward  # (n,)
+            depth = depth[depth > 0.1]  # before the camera
+            kind = next(kind for kind in KINDS if message["name"].startswith(f"/samples/{kind}"))
+            scale = draw.SAMPLE_SHAPES[kind.replace("_", " ")][1]
+            base = draw.POINT_SIZE["3dc"] * scale
+            if props["point_size"] > base * 1.001:  # grown: narrow at their own size, not past 13 px
+                assert px(base, depth).max() < 9 * scale and px(props["point_size"], depth).max() < 13 * scale
+            seen[kind].append(px(props["point_size"], depth))
+    widths = {kind: np.concatenate(found) for kind, found in seen.items() if found}
+    points, kinds = chain9.sample_points
+    assert sum(len(w) for w in widths.values()) >= 0.8 * len(points)  # most marks are before the camera
+    assert widths["valid"].min() >= 8 and widths["in_collision"].min() >= 1.6 * 8, {
+        k: w.min() for k, w in widths.items()
+    }
+    for kind, cloud in chain9.sample_clouds.items():  # the live view as it was
+        assert cloud.point_size == pytest.approx(draw.POINT_SIZE["3dc"] * draw.SAMPLE_SHAPES[kind][1])
+        assert len(cloud.points) == kinds[kind].sum()
 
 
 def test_the_animation_leaves_the_robot_and_the_camera_where_they_were(planned):

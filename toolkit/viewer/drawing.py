@@ -8,7 +8,9 @@ square to :data:`FLAT_ROBOT_HEIGHT`, so it pokes out of any block it collides wi
 Colors tell validity (§III), from :mod:`toolkit.plots.palette` (Okabe-Ito, apart for colour-blind eyes too):
 the valid colour (blue), the invalid one (vermillion) in collision. Samples carry a second cue, their
 shape (:data:`SAMPLE_SHAPES`): circles valid, diamonds in collision, and a larger sparkle behind the mark where a
-learned model disagrees with the exact checker. A probability of validity is drawn on cividis (dark: 0, light: 1).
+learned model disagrees with the exact checker; on a page, the far ones grow until their shapes can be told
+(:func:`far_scale`). A probability of validity is drawn on cividis (dark: 0, light: 1). Blocks and links are edged
+in ink (:func:`add_edges`).
 """
 
 from __future__ import annotations
@@ -32,8 +34,8 @@ FLAT_ROBOT_HEIGHT = 1.5  # height of the 2D point robot's square
 
 OBSTACLE = rgb("obstacle")  # a hue of its own: the browser test looks for it
 OBSTACLE_OPACITY = {"3dc": 0.3}  # by family: see through the clutter to the robot inside (0.45: it was 2.5:1 there)
-OBSTACLE_EDGE = rgb("ink")  # every block's edges: its outline at 3:1 or more on the white and on other blocks
-OBSTACLE_EDGE_PX = 2.0  # their width on screen, in pixels, near or far
+EDGE = rgb("ink")  # every block's and link's edges: an outline at 3:1 or more on the white, the blocks and the links
+EDGE_PX = 2.0  # their width on screen, in pixels, near or far
 VALID = rgb("valid")
 COLLIDING = rgb("invalid")
 MISTAKE = rgb("ink")  # a sample the learned model gets wrong (drawn over its validity colour)
@@ -44,6 +46,9 @@ SAMPLE_SHAPES: dict[str, tuple[Literal["circle", "diamond", "sparkle"], float]] 
     "model wrong": ("sparkle", 3.0),
 }
 # shape and size (times POINT_SIZE) of each kind of sample: a cue besides colour
+VIEW_FOV = np.deg2rad(75.0)  # viser's vertical field of view (its default, and the snapshots')
+FAR_MARK = 0.02  # on a page, a far mark is drawn at least this share of the view's height wide (9 px of 440)
+FAR_STEP = np.sqrt(2.0)  # far marks grow in steps of this factor (one point cloud per step)
 REGION = rgb("ink")
 ROADMAP = rgb("edge")
 PATH = rgb("trace")
@@ -99,23 +104,22 @@ _CORNERS = np.array([[(i >> d) & 1 for d in range(3)] for i in range(8)])  # (8,
 _CUBE_EDGES = np.array([(i, i | (1 << d)) for i in range(8) for d in range(3) if not (i >> d) & 1])  # (12, 2)
 
 
-def box_edges(lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
-    """The 12 edges of each axis-aligned box from ``lo (K, 3)`` to ``hi (K, 3)``, as segments ``(12 K, 2, 3)``."""
-    lo, hi = np.asarray(lo, dtype=float), np.asarray(hi, dtype=float)
-    corners = lo[:, None] + _CORNERS * (hi - lo)[:, None]  # (K, 8, 3)
+def box_edges(boxes: Boxes) -> np.ndarray:
+    """The 12 edges of each of the ``N`` (oriented) ``boxes``, as segments ``(12 N, 2, 3)``."""
+    offsets = (_CORNERS - 0.5) * boxes.sizes[:, None]  # (N, 8, 3) corners about the centre, in the box's frame
+    corners = boxes.centers[:, None] + np.einsum("nij,nkj->nki", boxes.rotations, offsets)  # (N, 8, 3)
     return corners[:, _CUBE_EDGES].reshape(-1, 2, 3)
 
 
 def region_edges(workspace: Workspace) -> np.ndarray:
     """The 12 edges of the workspace region, ``(12, 2, 3)`` (2D: the extruded region)."""
     lo, hi = lift_points(workspace.lower, 0.0), lift_points(workspace.upper, FLAT_HEIGHT)
-    return box_edges(lo[None], hi[None])
+    return box_edges(Boxes(((lo + hi) / 2)[None], np.eye(3)[None], (hi - lo)[None]))
 
 
 def obstacle_edges(workspace: Workspace) -> np.ndarray:
     """The 12 edges of each of the workspace's ``K`` blocks, ``(12 K, 2, 3)`` (2D: the extruded blocks)."""
-    blocks = obstacle_boxes(workspace)
-    return box_edges(blocks.centers - blocks.sizes / 2, blocks.centers + blocks.sizes / 2)
+    return box_edges(obstacle_boxes(workspace))
 
 
 def edge_segments(points: np.ndarray, edges: np.ndarray) -> np.ndarray:
@@ -149,21 +153,39 @@ def mark_sizes(kinds: dict[str, np.ndarray], size: float) -> np.ndarray:
     return np.max(widths, axis=0)
 
 
+def far_scale(depth: npt.ArrayLike, size: float) -> np.ndarray:
+    """``(N,)`` how many times its ``size`` a mark at ``depth (N,)`` before a page's camera is drawn.
+
+    viser sizes a mark in workspace units: of width ``s`` at depth ``z``, it is ``s / (z tan(fov / 2))`` view heights
+    wide, and a far one shrinks to a dot whose shape cannot be told. Near, 1; far, the least power of
+    :data:`FAR_STEP` that draws it :data:`FAR_MARK` view heights wide."""
+    need = FAR_MARK * np.maximum(np.asarray(depth, dtype=float), 0.0) * np.tan(VIEW_FOV / 2) / size  # (N,)
+    return FAR_STEP ** np.ceil(np.log(np.maximum(need, 1.0)) / np.log(FAR_STEP) - 1e-9)
+
+
 def add_samples(
-    scene: viser.SceneApi, points: np.ndarray, kinds: dict[str, np.ndarray], size: float
+    scene: viser.SceneApi, points: np.ndarray, kinds: dict[str, np.ndarray], size: float, scales=1.0
 ) -> dict[str, viser.PointCloudHandle]:
-    """One point cloud per kind of sample with any (:func:`sample_kinds`), under ``/samples``: ``points (N, 3)``
-    in their validity colour (a model's mistakes in :data:`MISTAKE`), shaped and sized by :data:`SAMPLE_SHAPES`;
-    a sparkle behind the mark it rings, whose shape still says valid or in collision."""
+    """Point clouds of the samples under ``/samples``, by kind (:func:`sample_kinds`): ``points (N, 3)`` in their
+    validity colour (a model's mistakes in :data:`MISTAKE`), shaped and sized by :data:`SAMPLE_SHAPES`; a sparkle
+    behind the mark it rings, whose shape still says valid or in collision. ``scales`` (one or ``(N,)``, from
+    :func:`far_scale`) grows marks: one cloud per kind and scale, keyed ``kind`` at scale 1, else ``kind far k``
+    (``FAR_STEP ** k`` times larger)."""
     colors = validity_colors(kinds["valid"])  # (N, 3)
+    steps = np.rint(np.log(np.broadcast_to(scales, kinds["valid"].shape)) / np.log(FAR_STEP)).astype(int)  # (N,)
     clouds = {}
     for kind, mask in sorted(kinds.items(), key=lambda item: -SAMPLE_SHAPES[item[0]][1]):  # the widest first:
-        if mask.any():  # at one depth the mark drawn later covers the earlier, so a sparkle rings the mark it is on
-            shape, scale = SAMPLE_SHAPES[kind]
-            shown = np.broadcast_to(MISTAKE, (int(mask.sum()), 3)) if kind == "model wrong" else colors[mask]
-            name = f"/samples/{kind.replace(' ', '_')}"
-            clouds[kind] = scene.add_point_cloud(
-                name, points[mask].astype(np.float32), shown, point_size=size * scale, point_shape=shape
+        shape, scale = SAMPLE_SHAPES[kind]  # at one depth the mark drawn later covers the earlier: a sparkle rings
+        for step in np.unique(steps[mask]):  # the mark it is on
+            group = mask & (steps == step)
+            shown = np.broadcast_to(MISTAKE, (int(group.sum()), 3)) if kind == "model wrong" else colors[group]
+            key = kind if step == 0 else f"{kind} far {step}"
+            clouds[key] = scene.add_point_cloud(
+                f"/samples/{key.replace(' ', '_')}",
+                points[group].astype(np.float32),
+                shown,
+                point_size=size * scale * FAR_STEP**step,
+                point_shape=shape,
             )
     return clouds
 
@@ -250,22 +272,32 @@ def add_boxes(
     )
 
 
-def move_boxes(handle: viser.SceneNodeHandle, boxes: Boxes, colors) -> None:
-    """Update the poses and colors of a node made by :func:`add_boxes` (same number of boxes)."""
+def add_edges(scene: viser.SceneApi, name: str, boxes: Boxes) -> viser.LineSegmentsHandle:
+    """The edges of ``boxes`` (:func:`box_edges`), :data:`EDGE` lines :data:`EDGE_PX` pixels wide: each box reads as
+    a box, see-through or seen far. A node of its own (as the boxes' child, viser would draw it see-through like
+    see-through boxes); :func:`move_boxes` moves it with them."""
+    return scene.add_line_segments(name, box_edges(boxes), EDGE, thickness=EDGE_PX, thickness_units="screen")
+
+
+def move_boxes(handle: viser.SceneNodeHandle, boxes: Boxes, colors, edges: viser.SceneNodeHandle | None = None) -> None:
+    """Update the poses and colors of a node made by :func:`add_boxes` (same number of boxes), and their ``edges``
+    (a node made by :func:`add_edges`) where given."""
     if not isinstance(handle, viser.BatchedMeshHandle):
         raise TypeError(f"move_boxes moves a node made by add_boxes, got a {type(handle).__name__}")
+    if not isinstance(edges, (viser.LineSegmentsHandle, type(None))):
+        raise TypeError(f"move_boxes moves edges made by add_edges, got a {type(edges).__name__}")
     handle.batched_positions = boxes.centers.astype(np.float32)
     handle.batched_wxyzs = _quaternions(boxes.rotations)
     handle.batched_colors = np.asarray(colors, dtype=np.uint8)
+    if edges is not None:
+        edges.points = box_edges(boxes).astype(np.float32)
 
 
 def draw_workspace(scene: viser.SceneApi, workspace: Workspace) -> dict[str, viser.SceneNodeHandle]:
     """Obstacles (one batched node of ``K`` boxes), their edges, the region's outline and a floor grid, by layer name.
 
     A block's faces alone hardly stand out: the obstacle's yellow is 1.3:1 on the white and a see-through 3DC
-    block fainter still (WCAG 1.4.11 asks 3:1 of a shape's boundary). Its edges, :data:`OBSTACLE_EDGE` lines
-    :data:`OBSTACLE_EDGE_PX` pixels wide, outline it (a node of their own: as the blocks' child, viser would draw
-    them see-through like the blocks).
+    block fainter still (WCAG 1.4.11 asks 3:1 of a shape's boundary). Its edges (:func:`add_edges`) outline it.
     """
     width, depth = (workspace.upper - workspace.lower)[:2]
     center = np.append((workspace.lower + workspace.upper)[:2] / 2, 0.0)
@@ -278,13 +310,7 @@ def draw_workspace(scene: viser.SceneApi, workspace: Workspace) -> dict[str, vis
             opacity=OBSTACLE_OPACITY.get(workspace.family),
         ),
         "region": scene.add_line_segments("/workspace/region", region_edges(workspace), REGION, thickness=0.05),
-        "obstacle_edges": scene.add_line_segments(
-            "/workspace/obstacle_edges",
-            obstacle_edges(workspace),
-            OBSTACLE_EDGE,
-            thickness=OBSTACLE_EDGE_PX,
-            thickness_units="screen",
-        ),
+        "obstacle_edges": add_edges(scene, "/workspace/obstacle_edges", obstacle_boxes(workspace)),
         "floor": scene.add_grid(
             "/workspace/floor", width=width, height=depth, cell_size=1.0, section_size=5.0, position=center
         ),

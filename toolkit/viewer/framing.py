@@ -2,8 +2,8 @@
 
 A scene is only as good as its camera. :func:`camera_pose` frames the workspace for the live viewer (§IV-A's
 scenes); :func:`follow_camera` keeps a moving robot framed through a motion; :func:`robot_camera` frames one
-configuration for a snapshot, and given the samples shown, :func:`clear_view` moves it to where no sample mark or
-block hides the robot.
+configuration for a snapshot, and given the samples shown, :func:`clear_view` moves it to where the fewest of the
+robot's links stand behind blocks and no sample mark hides it.
 """
 
 from __future__ import annotations
@@ -13,7 +13,15 @@ import numpy.typing as npt
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
-from toolkit.viewer.drawing import FLAT_ROBOT_HEIGHT, config_points, lift_points, obstacle_boxes
+from toolkit.viewer.drawing import (
+    FLAT_ROBOT_HEIGHT,
+    VIEW_FOV,
+    config_points,
+    far_scale,
+    lift_points,
+    obstacle_boxes,
+    robot_boxes,
+)
 
 # Camera by the robot's base kind: what to look at, and the offset to the camera in workspace extents.
 CAMERA = {
@@ -45,23 +53,27 @@ def robot_camera(
     workspace: Workspace | None = None,
     points: np.ndarray | None = None,
     sizes: npt.ArrayLike = 0.0,
+    size: float | None = None,
 ) -> tuple[np.ndarray, np.ndarray]:
     """``(look_at, position)`` of a camera that frames the robot at ``q (dof,)`` (a snapshot's), as
     :func:`follow_camera` does at each configuration of a motion; given the scene's ``workspace`` and sample marks
-    (``points (N, 3)`` of ``sizes``, one or ``(N,)``, in workspace units), the clearest view of it
-    (:func:`clear_view`)."""
-    looks, positions = follow_camera(robot, robot.check_configs(q)[:1])
+    (``points (N, 3)`` of ``sizes``, one or ``(N,)``, in workspace units, far ones grown from ``size`` where given),
+    the clearest view of it (:func:`clear_view`)."""
+    Q = robot.check_configs(q)[:1]  # (1, dof)
+    looks, positions = follow_camera(robot, Q)
     if workspace is None and points is None:
         return looks[0], positions[0]
-    lo, hi = _link_bounds(robot, robot.check_configs(q)[:1])  # (3,) each
-    return looks[0], clear_view(looks[0], positions[0], float(np.max(hi - lo)) / 2, workspace, points, sizes)
+    lo, hi = _link_bounds(robot, Q)  # (3,) each
+    links = robot_boxes(robot, Q).centers  # (L, 3)
+    radius = float(np.max(hi - lo)) / 2
+    return looks[0], clear_view(looks[0], positions[0], radius, workspace, points, sizes, links=links, size=size)
 
 
-VIEW_FOV = np.deg2rad(75.0)  # viser's vertical field of view (its default, and the snapshots')
 VIEW_ASPECT = 1.5  # a notebook's view, width / height (the course site's: about 640 x 440 px)
 LARGE_MARK = 0.12  # a mark in front of the robot wider than this share of the view's height crowds it
 VIEW_ELEVATIONS = np.deg2rad([15.0, 30.0, 45.0, 60.0])  # the directions clear_view tries, above the horizon
 VIEW_DISTANCES = (0.7, 0.85, 1.0)  # and its distances, times the default's
+HIDDEN_LINK = 100.0  # what a link behind a block costs a camera: more than anything else (a mark in the way: 10)
 
 
 def clear_view(
@@ -71,29 +83,33 @@ def clear_view(
     workspace: Workspace | None,
     points: np.ndarray | None,
     sizes: npt.ArrayLike = 0.0,
+    *,
+    links: np.ndarray | None = None,
+    size: float | None = None,
 ) -> np.ndarray:
-    """The camera position ``(3,)`` looking at ``look_at`` (a subject of ``radius``) that no sample mark hides and
-    no block stands in front of, nearest the ``default`` position's view.
+    """The camera position ``(3,)`` looking at ``look_at`` (a subject of ``radius``, the robot, its links centred at
+    ``links (L, 3)``) from which the fewest links stand behind blocks and no sample mark hides it, nearest the
+    ``default`` position's view.
 
     viser draws a mark of width ``s`` at depth ``z`` ``s / (z tan(fov / 2))`` view heights wide: a mark a few
     tenths of a unit from the camera covers half the picture. Tried: :data:`VIEW_ELEVATIONS` x 24 headings x
-    :data:`VIEW_DISTANCES`. Each pays for the marks in front of the subject (:func:`_marks_in_the_way`), 10 times
-    the share of its line of sight inside blocks, and half its turn from the default (radians) and its change of
-    distance (a share); a camera inside a block or below the floor is never taken.
+    :data:`VIEW_DISTANCES`, in a fixed order (the first of equal costs wins). Each pays :data:`HIDDEN_LINK` per link
+    whose line of sight from the camera to its centre crosses a block (:func:`links_hidden`), for the marks in front
+    of the subject (:func:`_marks_in_the_way`; far ones grown from ``size`` as a page grows them), 10 times the
+    share of its line of sight to the subject inside blocks, and half its turn from the default (radians) and its
+    change of distance (a share); a camera inside a block or below the floor is never taken.
     """
     look_at, default = np.asarray(look_at, dtype=float), np.asarray(default, dtype=float)
-    d0 = float(np.linalg.norm(default - look_at))
-    heading = np.deg2rad(np.arange(0.0, 360.0, 15.0))
-    elevation, turn, scale = (a.ravel() for a in np.meshgrid(VIEW_ELEVATIONS, heading, VIEW_DISTANCES))
-    away = np.stack([np.cos(elevation) * np.cos(turn), np.cos(elevation) * np.sin(turn), np.sin(elevation)], -1)
-    cameras = look_at + (d0 * scale)[:, None] * away  # (C, 3)
-    cost = 0.5 * np.arccos(np.clip(away @ (default - look_at) / d0, -1.0, 1.0)) + 0.5 * np.abs(scale - 1.0)
+    cameras, cost = _candidates(look_at, default)  # (C, 3), (C,)
+    d = np.linalg.norm(cameras - look_at, axis=1)  # (C,)
     if points is not None and len(points):
-        cost += _marks_in_the_way(cameras, look_at, radius, np.asarray(points, float), sizes)
+        cost += _marks_in_the_way(cameras, look_at, radius, np.asarray(points, float), sizes, size)
     if workspace is not None:
         blocks = obstacle_boxes(workspace)
         lo, hi = blocks.centers - blocks.sizes / 2, blocks.centers + blocks.sizes / 2  # (K, 3) each
-        t = np.linspace(0.0, 1.0, 17)[:, None, None] * (1.0 - radius / (d0 * scale))[None, :, None]  # (S, C, 1)
+        if links is not None:
+            cost += HIDDEN_LINK * links_hidden(cameras, np.asarray(links, dtype=float), lo, hi).sum(axis=1)
+        t = np.linspace(0.0, 1.0, 17)[:, None, None] * (1.0 - radius / d)[None, :, None]  # (S, C, 1)
         sight = cameras + t * (look_at - cameras)  # (S, C, 3): camera to the subject's near side
         inside = np.all((sight[..., None, :] > lo) & (sight[..., None, :] < hi), axis=-1).any(axis=-1)  # (S, C)
         cost += 10.0 * inside.mean(axis=0) + np.where(inside[0], np.inf, 0.0)
@@ -101,12 +117,38 @@ def clear_view(
     return cameras[np.argmin(cost)]
 
 
+def _candidates(look_at: np.ndarray, default: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+    """The cameras :func:`clear_view` tries, ``(C, 3)``, and what each costs for leaving the ``default``'s view."""
+    d0 = float(np.linalg.norm(default - look_at))
+    heading = np.deg2rad(np.arange(0.0, 360.0, 15.0))
+    elevation, turn, scale = (a.ravel() for a in np.meshgrid(VIEW_ELEVATIONS, heading, VIEW_DISTANCES))
+    away = np.stack([np.cos(elevation) * np.cos(turn), np.cos(elevation) * np.sin(turn), np.sin(elevation)], -1)
+    cost = 0.5 * np.arccos(np.clip(away @ (default - look_at) / d0, -1.0, 1.0)) + 0.5 * np.abs(scale - 1.0)
+    return look_at + (d0 * scale)[:, None] * away, cost
+
+
+def links_hidden(cameras: np.ndarray, links: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """``(C, L)`` bool: whether the segment from each camera ``(C, 3)`` to each link centre ``(L, 3)`` crosses one
+    of the blocks from ``lo (K, 3)`` to ``hi (K, 3)`` (the slab test, exact): that link stands behind a block."""
+    ray = links[None] - cameras[:, None]  # (C, L, 3)
+    step = np.where(np.abs(ray) > 1e-12, ray, 1e-12)  # no division by zero
+    near = (lo[:, None, None] - cameras[None, :, None]) / step  # (K, C, L, 3): where it crosses each slab
+    far = (hi[:, None, None] - cameras[None, :, None]) / step
+    enter, leave = np.minimum(near, far).max(axis=-1), np.maximum(near, far).min(axis=-1)  # (K, C, L)
+    return np.any((enter < leave) & (leave > 0.0) & (enter < 1.0), axis=0)
+
+
 def _marks_in_the_way(
-    cameras: np.ndarray, look_at: np.ndarray, radius: float, points: np.ndarray, sizes: npt.ArrayLike
+    cameras: np.ndarray,
+    look_at: np.ndarray,
+    radius: float,
+    points: np.ndarray,
+    sizes: npt.ArrayLike,
+    size: float | None = None,
 ) -> np.ndarray:
-    """What the marks ``points (N, 3)`` of ``sizes`` cost each camera ``(C, 3)`` looking at ``look_at``: 10 per mark
-    in front of the subject overlapping it on the picture, plus 3 times each such mark's width beyond :data:`LARGE_MARK`
-    (a share of it)."""
+    """What the marks ``points (N, 3)`` of ``sizes`` (far ones grown from ``size`` where given: ``far_scale``) cost
+    each camera ``(C, 3)`` looking at ``look_at``: 10 per mark in front of the subject overlapping it on the picture,
+    plus 3 times each such mark's width beyond :data:`LARGE_MARK` (a share of it)."""
     forward = look_at - cameras  # (C, 3)
     distance = np.linalg.norm(forward, axis=1, keepdims=True)
     forward /= distance
@@ -118,6 +160,8 @@ def _marks_in_the_way(
     tan = np.tan(VIEW_FOV / 2)
     depth = np.maximum(z, 1e-6) * tan  # half the view's height at each mark's depth
     width = np.broadcast_to(np.asarray(sizes, dtype=float), points.shape[:1]) / depth  # (C, N) in view heights
+    if size is not None:
+        width = width * far_scale(z, size)
     # on the picture, in half its height: a mark's centre (x, y) / depth, its radius its width in view heights
     seen = (z > 0) & (np.abs(y) / depth < 1 + width) & (np.abs(x) / depth < VIEW_ASPECT + width)
     hides = seen & (z < distance) & (np.hypot(x, y) / depth < width + radius / (distance * tan))

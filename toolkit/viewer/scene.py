@@ -32,7 +32,8 @@ from toolkit.viewer.models import Predictor
 from toolkit.viewer.server import camera_at, page_path, start_server, stop_server
 
 LAYERS = ("obstacles", "robot", "prediction", "samples", "roadmap", "path")
-ALONG = {"obstacle_edges": "obstacles"}  # a node shown and hidden with a layer (viser would draw a child see-through)
+# nodes shown and hidden with a layer, not its children (viser would draw a see-through node's child see-through)
+ALONG = {"obstacle_edges": "obstacles", "link_edges": "robot"}
 HALO = 1.15  # the prediction wireframe is this much larger than the links
 SLIDING = ("/workspace", "/robot", "/plan")  # scene frames an animation slides so that the camera follows the robot
 RAW = "raw"  # the "sampler" of uniform configurations, unfiltered: what a model is asked about
@@ -134,6 +135,7 @@ class Viewer:
             self._aim_camera(*framing.camera_pose(self.robot, self.workspace, self.q))
             boxes = draw.robot_boxes(self.robot, self.q[None])
             self._add("robot", draw.add_boxes(self.server.scene, "/robot/links", boxes, colors=draw.VALID))
+            self._add("link_edges", draw.add_edges(self.server.scene, "/robot/link_edges", boxes))
             if self.model is not None:
                 self._add(
                     "prediction",
@@ -159,6 +161,7 @@ class Viewer:
                 self.nodes["robot"],
                 boxes,
                 np.broadcast_to(draw.VALID if self.valid else draw.COLLIDING, (len(boxes), 3)),
+                self.nodes["link_edges"],
             )
             self.probability = self.predicted_valid = None
             if isinstance(self.model, models.Predicts):  # every model model_for keeps
@@ -289,14 +292,17 @@ class Viewer:
 
     def html(self) -> str:
         """The current scene as one self-contained HTML document (no server needed), its camera framing the robot
-        from where no sample mark or block hides it (``framing.robot_camera``)."""
+        from where the fewest links stand behind blocks and no sample mark hides it (``framing.robot_camera``), the
+        far marks grown to be told apart (:func:`~toolkit.viewer.drawing.far_scale`)."""
         with self.lock:
-            points, sizes = None, np.zeros(0)
+            points, sizes, size = None, np.zeros(0), draw.POINT_SIZE[self.workspace.family]
             if self.sample_points is not None and self.visible["samples"]:
                 points, kinds = self.sample_points
-                sizes = draw.mark_sizes(kinds, draw.POINT_SIZE[self.workspace.family])  # (N,)
-            camera = framing.robot_camera(self.robot, self.q, workspace=self.workspace, points=points, sizes=sizes)
-            with camera_at(self.server, *camera):
+                sizes = draw.mark_sizes(kinds, size)  # (N,)
+            camera = framing.robot_camera(
+                self.robot, self.q, workspace=self.workspace, points=points, sizes=sizes, size=size
+            )
+            with camera_at(self.server, *camera), snapshot.far_marks_grown(self, *camera):
                 return label_controls(self.server.scene.as_html())
 
     def summary(self) -> str:

@@ -11,6 +11,9 @@ loading. Each frame is followed by the scene in words (its text alternative).
 
 from __future__ import annotations
 
+from collections.abc import Iterator
+from contextlib import contextmanager
+
 import numpy as np
 from matplotlib.figure import Figure
 
@@ -34,6 +37,28 @@ def scene_still(viewer, poses: dict[str, np.ndarray] | None = None) -> Figure:
         trace = draw.config_points(viewer.robot, dense, "base")  # (T, 3)
     samples = viewer.sample_points if viewer.visible["samples"] else None
     return scenes.scene_still(viewer.robot, viewer.workspace, poses, valid=valid, samples=samples, trace=trace)
+
+
+@contextmanager
+def far_marks_grown(viewer, look_at: np.ndarray, position: np.ndarray) -> Iterator[None]:
+    """``viewer``'s sample marks grown for a page whose camera stands at ``position`` looking at ``look_at`` (3,) each
+    (:func:`toolkit.viewer.drawing.far_scale`: far ones told apart by shape) while the block runs, then back as the
+    live view draws them (in workspace units: a camera that moves cannot size them for itself)."""
+    if viewer.sample_points is None or not viewer.visible["samples"]:
+        yield
+        return
+    points, kinds = viewer.sample_points  # (N, 3) and (N,) masks
+    size = draw.POINT_SIZE[viewer.workspace.family]
+    depth = (points - position) @ ((look_at - position) / np.linalg.norm(look_at - position))  # (N,)
+    for cloud in viewer.sample_clouds.values():
+        cloud.remove()
+    grown = draw.add_samples(viewer.server.scene, points, kinds, size, draw.far_scale(depth, size))
+    try:
+        yield
+    finally:
+        for cloud in grown.values():
+            cloud.remove()
+        viewer.sample_clouds = draw.add_samples(viewer.server.scene, points, kinds, size)
 
 
 def iframe(viewer, height: int = 480) -> str:
