@@ -472,7 +472,7 @@ def test_the_animation_is_never_washed_out(planned, chromium, tmp_path):
     of chapter 05's animation came out washed out, the robot at 1.1:1 against the blocks (no frame sampled here
     showed it at all). Now the scene is lit without that map, the page keeps the view opaque and 3DC's blocks are
     fainter (the robot inside one stood at 2.5:1): the frames sampled show the robot at 3:1 or more on white and
-    against the pixels around it (one frame may catch the player's loop)."""
+    against the pixels around it (a frame may catch the player's loop, where no robot is drawn)."""
     page_file = tmp_path / "animation.html"
     page_file.write_text(planned.animation_html(frames=20, seconds=2.0), encoding="utf-8")
     page = chromium.new_page(viewport={"width": 640, "height": 480})
@@ -484,10 +484,12 @@ def test_the_animation_is_never_washed_out(planned, chromium, tmp_path):
             assert monotonic() < deadline, "no frame showed the robot"
             page.wait_for_timeout(500)
         frames = []
-        for _ in range(6):
+        for _ in range(12):
             frames.append(robot_seen(page.screenshot()))
             page.wait_for_timeout(400)
     finally:
         page.close()
     seen = [frame for frame in frames if frame[0] >= 30]
-    assert len(seen) >= len(frames) - 1 and all(white >= 3 and behind >= 3 for _, white, behind in seen), frames
+    # a screenshot can catch the player's loop, where the robot is not drawn: on a busy machine up to a quarter of
+    # them (10 of 64 at a load average of 12); what is drawn must never be washed out
+    assert 3 * len(frames) <= 4 * len(seen) and all(white >= 3 and behind >= 3 for _, white, behind in seen), frames
