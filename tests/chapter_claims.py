@@ -576,7 +576,7 @@ def chapter_05(nb) -> list[str]:
             problems.append(f"05: '{needed}' is not printed")
     if "model disagrees" not in prose(nb):
         problems.append("05: the viewer's 'model disagrees' label is not explained")
-    return problems
+    return problems + _page_width(nb, tables(nb), "05")  # review r14b: the valid-share table's sixth column was cut
 
 
 CHECKS: dict[str, Callable] = {"01": chapter_01, "02": chapter_02, "03": chapter_03, "04": chapter_04, "05": chapter_05}

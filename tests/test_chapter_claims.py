@@ -121,6 +121,11 @@ CONTRADICTED = (  # sentences that executed pages contradicted (issue 37), in th
     # issue 45, the lead's reading of r13a and r13b:
     "and on 3DC-7 for no sampler",  # awkward: "on 3DC-7 it saved time for none of the four samplers"
     "Read the last two columns",  # chapter 01's speed table, six columns, was cut at the page's width: two tables
+    # issue 45, review r14b (chapter 05):
+    "Algorithm 1 with the model screening",  # the lazy PRM is ours; Algorithm 1 is the paper's eager PRM
+    "- Algorithm 1 stays safe because",  # said of the path the lazy PRM found
+    "the paper's four samplers keep only valid samples",  # §IV-A: S is drawn "regardless of their validity"
+    "and repair it when a node or edge fails",  # the paper only verifies the path; the repair is ours
 )
 
 

@@ -200,7 +200,12 @@ def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose
     drawn = {c.get_label(): len(c.get_offsets()) for c in overview.collections if c.get_label().startswith("sample")}
     assert drawn == {"sample, valid": int(valid.sum()), "sample, in collision": int((~valid).sum())}
     names = [t.get_text() for t in fig.legends[0].get_texts()]
-    assert "robot: start" in names and "robot, valid" in names and "robot, in collision" in names
+    assert "robot, valid" in names and "robot, in collision" in names
+    labels = [t.get_text() for t in overview.texts if t.get_gid() == "pose label"]
+    assert labels == ["start", "end, in collision"]  # each pose named over it; a collision said in words too
+    robots = [line for line in overview.get_lines() if line.get_gid() == "robot"]
+    assert [to_hex(line.get_color()) for line in robots] == [to_hex(VALID_COLOR), to_hex(INVALID_COLOR)]
+    assert "the path of the robot's base, the robot drawn over them at each pose, labelled;" in alt_text(fig)
     for close_up in (start, end):  # the samples inside its window, shaped by validity; links told apart; trace dashed
         lo, hi = np.array([close_up.get_xlim(), close_up.get_ylim(), close_up.get_zlim()]).T  # (3,) each
         inside = np.all((points >= lo) & (points <= hi), axis=1)  # (T,)
@@ -213,7 +218,8 @@ def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose
         parts = links(close_up)
         assert {float(c.get_linewidth()[0]) for c in parts} == {still_panels.LINK_EDGE}
         assert {c.get_alpha() for c in parts} == {1.0}  # opaque: the robot reads as one body over the faded blocks
-    assert all(line.get_linestyle() == "--" for ax in fig.axes for line in ax.get_lines())
+    traces = [line for ax in fig.axes for line in ax.get_lines() if line.get_gid() != "robot"]
+    assert traces and all(line.get_linestyle() == "--" for line in traces)
 
 
 def test_a_stills_overview_thins_a_dense_cloud_and_its_text_says_so(crossing):

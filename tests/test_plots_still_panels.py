@@ -144,3 +144,32 @@ def test_a_close_ups_text_counts_the_near_blocks_and_says_how_it_is_seen():
     fig = scenes.scene_still(CHAIN7, Workspace(np.zeros(3), np.full(3, 11.0), blocks, family="3dc"), {"here": q})
     assert "seen across the plane it spreads in, and a quarter turn round" in alt_text(fig)
     assert "the blocks within 0.3 of a link darker (here: 1)" in alt_text(fig)
+
+
+def test_an_overview_draws_the_whole_robot_over_light_marks_its_name_above_it():
+    """Reader r14b: the overview marked only the base with a square, under 500 marks, so the chain's place among the
+    blocks was not visible. Now its links are drawn end to end, each along its longest axis, in the robot's colour,
+    ringed, over the samples; the samples light; the blocks near the robot darker; its name above it."""
+    q = np.array([5.0, 5.0, 5.0, 0.3, -0.4, 0.5, 1.2, -1.0, 1.2])
+    centres, rotations, half = CHAIN9.link_boxes(q[None])  # (1, L, 3), (1, L, 3, 3), (L, 3)
+    block = np.array([[[5.2, 4.2, 3.9], [6.2, 4.8, 4.8]], [[0.0, 0.0, 0.0], [1.0, 1.0, 1.0]]])  # near it; far away
+    workspace = Workspace(np.zeros(3), np.full(3, 11.0), block, family="3dc")
+    points = np.array([[2.0, 2.0, 2.0], [8.0, 8.0, 8.0]])
+    samples = (points, {"valid": np.array([True, False]), "in collision": np.array([False, True])})
+    ax = Figure().add_subplot(projection="3d")
+    still_panels.overview(ax, CHAIN9, workspace, {"the robot": (q, VALID_COLOR)}, samples, None)
+    (robot,) = [line for line in ax.get_lines() if line.get_gid() == "robot"]
+    drawn = np.array(robot.get_data_3d()).T  # (2 L, 3): each link's two ends
+    assert len(drawn) == 2 * CHAIN9.n_links
+    for link, (a, b) in enumerate(drawn.reshape(-1, 2, 3)):
+        assert np.allclose((a + b) / 2, centres[0, link])  # through the link's centre
+        assert np.linalg.norm(b - a) == pytest.approx(2 * half[link].max())  # as long as the link
+        local = np.abs(rotations[0, link].T @ (b - a))  # (3,) along the link's longest axis
+        assert local.argmax() == half[link].argmax() and np.allclose(np.delete(local, local.argmax()), 0.0)
+    assert robot.get_color() == VALID_COLOR and robot.get_linewidth() >= 3.0 and robot.get_path_effects()
+    marks = [c for c in ax.collections if (c.get_label() or "").startswith("sample")]
+    assert marks and all(c.get_alpha() <= 0.5 and c.get_zorder() < robot.get_zorder() for c in marks)
+    (label,) = [t for t in ax.texts if t.get_gid() == "pose label"]
+    assert label.get_text() == "the robot" and label.get_position_3d()[2] > CHAIN9.link_aabbs(q[None])[0][:, 1, 2].max()
+    near, far = [c for c in ax.collections if c.get_gid() == "block"]
+    assert near.get_alpha() > far.get_alpha()  # the block by the robot darker than the one in the corner

@@ -44,6 +44,7 @@ from toolkit.plots.still_panels import (
 UNCHECKED_COLOR = COLORS["unchecked"]  # the robot when no validity is given
 NOW_COLOR = COLORS["occupied"]
 _STATE = {None: "", True: ", valid", False: ", in collision"}  # a pose's verdict, as a title and its text say it
+_POSE_COLOR = {None: UNCHECKED_COLOR, True: VALID_COLOR, False: INVALID_COLOR}  # a pose's links, by its verdict
 TURN = 90.0  # degrees about the vertical: a single pose's second close-up, a quarter turn round the first
 
 
@@ -60,7 +61,7 @@ def scene_still(
     """A viewer's 3D scene as a still picture: the whole workspace, its blocks, the ``samples`` at their base
     (``(points (N, 3), {kind: mask (N,)})``, kinds as :func:`toolkit.viewer.drawing.sample_kinds` names them: circles
     valid, diamonds in collision, hollow stars round them where a model is wrong), the ``trace (T, 3)`` of the robot's
-    base along a path (dashed) and each pose marked at its base; and the robot close up at each pose
+    base along a path (dashed) and the robot drawn over them at each pose, labelled; and the robot close up at each pose
     ``{label: q (dof,)}`` (:func:`toolkit.plots.still_panels.close_up`: opaque links in the valid colour, or the
     invalid one hatched, by ``valid``; its joints dotted; the blocks within ``margin``, those near a link darker), with
     the samples inside its window and the trace. A single pose is seen twice, a quarter turn apart, above the
@@ -69,23 +70,30 @@ def scene_still(
     if robot.dim != 3:
         raise ValueError(f"a scene's still is drawn in 3D; the {robot.name} robot moves in {robot.dim}D")
     valid = valid or {}
+    colors = {label: _POSE_COLOR[valid.get(label)] for label in poses}
     views = [(label, q, turn) for label, q in poses.items() for turn in ((0.0, TURN) if len(poses) == 1 else (0.0,))]
     rows = -(-(1 + len(views)) // 2)
     fig = Figure(figsize=(PAGE_WIDTH, 3.2 * rows + 0.9 * (len(poses) != 1)))  # as wide as the page: text as drawn
     panels = [fig.add_subplot(rows, 2, k + 1, projection="3d") for k in range(1 + len(views))]  # reading order
     first = len(views) if len(poses) == 1 else 0  # the overview's panel: after a single pose's two views
-    overview(panels.pop(first), robot, workspace, poses, samples, trace)
+    named = {_overview_name(label, len(poses), valid.get(label)): (q, colors[label]) for label, q in poses.items()}
+    overview(panels.pop(first), robot, workspace, named, samples, trace)
     # pose -> (samples drawn in its close-up, blocks near it, the camera's elevation and azimuth)
     seen: dict[str, tuple[int, int, tuple[float, float]]] = {}
     for ax, (label, q, turn) in zip(panels, views):
         ok = valid.get(label)
-        color = UNCHECKED_COLOR if ok is None else VALID_COLOR if ok else INVALID_COLOR
-        near, angles = close_up(ax, robot, q, workspace, color=color, margin=margin, turn=turn)
+        near, angles = close_up(ax, robot, q, workspace, color=colors[label], margin=margin, turn=turn)
         drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE)
         seen.setdefault(label, (drawn, near, angles))
         ax.set_title(f"{label}, close up{_STATE[ok]}" if not turn else f"{label}, a quarter turn round", fontsize=10)
     _still_legend(fig, valid, under=len(poses) != 1)
     return describe(fig, *_still_described(robot, workspace, poses, valid, samples, trace, seen))
+
+
+def _overview_name(label: str, poses: int, valid: bool | None) -> str:
+    """A pose's name in a still's overview: its label ("the robot" where it is the only one), and where it collides,
+    in words too (a colour is never the only cue)."""
+    return ("the robot" if poses == 1 else label) + (", in collision" if valid is False else "")
 
 
 def _still_legend(fig: Figure, valid: dict[str, bool], *, under: bool) -> None:
@@ -119,6 +127,9 @@ def _still_described(robot: BoxRobot, workspace: Workspace, poses, valid, sample
         step = overview_step(len(samples[0]))
         text += f", 1 sample in {step} drawn" if step > 1 else ""
     text += ", the path of the robot's base" if trace is not None else ""
+    if poses:
+        text += ", the robot drawn " + ("over them" if samples is not None else "in it")
+        text += " at each pose, labelled" if len(poses) > 1 else ""
     counted = [("blocks", str(len(workspace.boxes)))]
     counted += [(f"samples {kind}", str(int(m.sum()))) for kind, m in (samples[1].items() if samples else ())]
     counted += [("points of the base's path", str(len(trace)))] if trace is not None else []

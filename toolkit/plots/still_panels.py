@@ -2,8 +2,10 @@
 
 A 3D picture on a page cannot be turned, so each panel is drawn to be read from where it stands:
 
-- :func:`overview` draws the whole workspace, its blocks faint, one mark per sample (a circle valid, a diamond in
-  collision, large enough to tell apart, edged in ink) and the robot's poses marked at their base;
+- :func:`overview` draws the whole workspace, its blocks faint (those near the robot darker), one mark per sample (a
+  circle valid, a diamond in collision, large enough to tell apart, edged in ink; light, and at most
+  :data:`OVERVIEW_SAMPLES` of them) and, over them, the robot itself at each pose: its links opaque in its colour,
+  edged in ink and ringed in white, a label above it;
 - :func:`close_up` draws the robot at one pose among the blocks near it: its links opaque, edged thick in ink, each
   joint a white dot ringed in ink, the blocks faded (a robot behind one shows through it), those within
   :data:`NEAR` of a link darker than the rest of its window. The camera looks across the plane the chain spreads
@@ -38,43 +40,70 @@ SAMPLE_WORDS = {
     "in collision": "diamonds",
     "model wrong": "hollow stars round their marks",
 }  # SAMPLE_MARKS in words
-OVERVIEW_SAMPLES = 300  # at most this many samples in a still's overview: more hide the blocks and the robot
+OVERVIEW_SAMPLES = 200  # at most this many samples in a still's overview: more hide the blocks and the robot
+OVERVIEW_ALPHA = 0.45  # an overview's marks, light: the robot drawn over them and the blocks under them show
 CLOSE_UP_SCALE = 1.5  # a close-up's marks this many times larger: a small window, seen near
-POSE_MARKERS = ("s", "P", "*", "^", "v", "X")  # the poses of a still, marked at their base in its overview
 NEAR = 0.3  # workspace units: a block this close to a link's bounding box is drawn darker in a close-up
 LINK_EDGE = 1.6  # points: the links' ink edges, thicker than a block's
+OVERVIEW_ROBOT = dict(linewidth=3.0, solid_capstyle="round", path_effects=halo(3.0))  # the robot in an overview:
+#   its links as strokes 3 points thick (a 0.1-thick link is a pixel there), ringed in ink, then in white
 JOINT_MARK = dict(marker="o", s=22, color=COLORS["free"], edgecolors=COLORS["ink"], linewidths=1.4)
 ELEVATION = (15.0, 45.0)  # degrees: a close-up's camera stays this far above the horizon, no lower and no higher
 USUAL_VIEW = (30.0, -60.0)  # degrees: mplot3d's camera, elevation and azimuth; a close-up's stays on its side
 OFF_AXIS = 20.0  # degrees: the least a close-up's azimuth keeps from an axis of the workspace
 
 
-def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, np.ndarray], samples, trace) -> None:
-    """A still's first panel: the whole workspace, its samples and path, each pose marked at the robot's base."""
-    for lo, hi in workspace.boxes:
-        add_box_3d(ax, aabb_corners(lo, hi), linewidth=0.2, alpha=0.15, **BLOCK_STYLE)
-    if samples is not None:  # every k-th, under the poses' marks
+def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[np.ndarray, str]], samples, trace):
+    """A still's first panel: the whole workspace, its samples and path, and the robot at each pose ``{name: (q
+    (dof,), colour)}`` drawn over them (:func:`robot_strokes`), its name above it; the blocks near a pose darker."""
+    aabbs = [robot.link_aabbs(np.asarray(q, dtype=float)[None])[0] for q, _ in poses.values()]  # (L, 2, 3) each
+    near = np.zeros(len(workspace.boxes), dtype=bool)  # (K,) a block near a pose
+    for boxes in aabbs:
+        near |= near_blocks(workspace.boxes, boxes)
+    for (lo, hi), dark in zip(workspace.boxes, near):
+        style = dict(alpha=0.3, linewidth=0.8) if dark else dict(alpha=0.15, linewidth=0.2)
+        add_box_3d(ax, aabb_corners(lo, hi), **style, **BLOCK_STYLE)
+    if samples is not None:  # every k-th, light, under the robot
         keep = np.arange(len(samples[0])) % overview_step(len(samples[0])) == 0  # (N,)
         samples = (samples[0][keep], {kind: mask[keep] for kind, mask in samples[1].items()})
-    draw_points(ax, samples, trace, alpha=0.8)
-    ax.computed_zorder = False  # the poses' marks in front of every sample
-    for k, (label, q) in enumerate(poses.items()):
-        base = robot.link_boxes(np.asarray(q)[None])[0][0, 0]  # (3,) the first link's centre
-        ax.scatter(
-            *base,
-            marker=POSE_MARKERS[k % len(POSE_MARKERS)],
-            s=110,
-            color=COLORS["free"],
-            edgecolors=COLORS["ink"],
-            linewidths=1.4,
-            depthshade=False,
-            zorder=5,
-            label=f"robot: {label}" if len(poses) > 1 else "the robot's base",
+    draw_points(ax, samples, trace, alpha=OVERVIEW_ALPHA)
+    ax.computed_zorder = False  # the robot in front of every sample
+    lift = 0.04 * float(np.max(workspace.upper - workspace.lower))  # a label this far above the robot
+    for (name, (q, color)), boxes in zip(poses.items(), aabbs):
+        ax.plot(*robot_strokes(robot, q).T, color=color, zorder=6.0, gid="robot", **OVERVIEW_ROBOT)
+        x, y = boxes[:, :, :2].mean(axis=(0, 1))
+        ax.text(
+            x,
+            y,
+            boxes[:, 1, 2].max() + lift,
+            name,
+            fontsize=8,
+            ha="center",
+            va="bottom",
+            zorder=7.0,
+            path_effects=halo(1.0, ("free",)),
+            gid="pose label",
         )
     frame_region(ax, workspace)
     ax.set_box_aspect(workspace.upper - workspace.lower)
     few_ticks(ax)
     ax.set_title(f"the whole workspace: {len(workspace.boxes)} blocks", fontsize=10)
+
+
+def robot_strokes(robot: BoxRobot, q: np.ndarray) -> np.ndarray:
+    """``(2 L, 3)``: the robot at ``q (dof,)`` as one line through its links, each from end to end along its longest
+    axis (a link as long as it is, drawn thicker: an overview shows a link 0.1 thick as a pixel)."""
+    centers, rotations, half = robot.link_boxes(np.asarray(q, dtype=float)[None])  # (1, L, 3), (1, L, 3, 3), (L, 3)
+    longest = np.argmax(half, axis=1)  # (L,)
+    along = rotations[0, np.arange(len(half)), :, longest] * half[np.arange(len(half)), longest, None]  # (L, 3)
+    return np.stack([centers[0] - along, centers[0] + along], axis=1).reshape(-1, 3)
+
+
+def near_blocks(blocks: np.ndarray, aabbs: np.ndarray) -> np.ndarray:
+    """``(K,)`` bool: which ``blocks (K, 2, 3)`` lie within :data:`NEAR` of one of the links' bounding boxes
+    ``aabbs (L, 2, 3)``."""
+    gaps = np.max(np.maximum(aabbs[None, :, 0] - blocks[:, None, 1], blocks[:, None, 0] - aabbs[None, :, 1]), axis=2)
+    return gaps.min(axis=1, initial=np.inf) <= NEAR  # (K,) the gap to the nearest link's box
 
 
 def overview_step(n: int) -> int:
@@ -102,8 +131,7 @@ def close_up(
     toward = _toward_camera(elevation, azimuth)  # (3,)
     ax.computed_zorder = False  # drawn in the order set below, not by mplot3d's guess of each collection's depth
     blocks = workspace.boxes[np.all((workspace.boxes[:, 0] <= hi) & (workspace.boxes[:, 1] >= lo), axis=1)]
-    gaps = np.max(np.maximum(aabbs[None, :, 0] - blocks[:, None, 1], blocks[:, None, 0] - aabbs[None, :, 1]), axis=2)
-    near = gaps.min(axis=1, initial=np.inf) <= NEAR  # (K,) a block near a link's box
+    near = near_blocks(blocks, aabbs)  # (K,) a block near a link's box
     centers = robot.link_boxes(q[None])[0][0]  # (L, 3)
     before = _in_front(blocks, centers, toward)  # (K,) a block between a link and the camera: drawn over the robot
     for rank, k in enumerate(np.argsort(blocks.mean(axis=1) @ toward)):  # far to near
