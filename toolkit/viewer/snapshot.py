@@ -27,7 +27,7 @@ ANIMATION_STILL = "The path, then the robot at its start, middle and goal, close
 
 def scene_still(viewer, poses: dict[str, np.ndarray] | None = None) -> Figure:
     """``viewer``'s scene as :func:`toolkit.plots.scenes.scene_still` draws it: the whole workspace with the shown
-    samples and path, the robot marked, then the robot close up at ``poses`` ``{label: q (dof,)}`` (default: where
+    samples and path, the robot drawn, then the robot close up at ``poses`` ``{label: q (dof,)}`` (default: where
     it stands now), each said valid or in collision by the exact checker."""
     poses = {"the robot": viewer.q} if poses is None else poses
     valid = dict(zip(poses, (bool(v) for v in viewer.exact.are_valid(np.stack(list(poses.values()))))))
