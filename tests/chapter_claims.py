@@ -425,16 +425,21 @@ CLAIM = re.compile(
 )  # ... and how few queries that is (findings.FEW_QUERIES; review r13a)
 
 
-def _paper_claim(nb, found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
-    """The opening (the line under the first code cell) and the summary state section 5's verdict, as its planning
-    row gives it: the same queries, median, middle half and verdict (reader r12a: neither gave it)."""
-    rows = [
+def _eager_rows(found: list[tuple[list[str], list[list[str]]]]) -> list[list[str]]:
+    """Section 5's planning row (Algorithm 1 with the `strong` network against itself without), once if displayed."""
+    return [
         r
         for h, rows in found
         if h[0] == "scenario" and len(h) > 2 and h[2].startswith("with / without: verdict")
         for r in rows
         if r[0].startswith(EAGER_ROW)
     ]
+
+
+def _paper_claim(nb, found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
+    """The opening (the line under the first code cell) and the summary state section 5's verdict, as its planning
+    row gives it: the same queries, median, middle half and verdict (reader r12a: neither gave it)."""
+    rows = _eager_rows(found)
     outputs = texts(nb)
     said = [
         m.groups()
@@ -486,12 +491,51 @@ def _recorded_verdicts(nb, found: list[tuple[list[str], list[list[str]]]]) -> li
     if {k: answers.get(k) for k in expected} != expected:
         problems.append(f"04: the answer says what the `paper` MLP answers; its table says {answers}")
     problems += _opening(prose(nb), said, {row[0]: row[1:-1] for row in rows})
+    problems += _claim_status(nb, found, said)
     strong = {kind: said.get(f"3DC-7, `strong` preset, {kind}", []) for kind in ("means", "medians")}
     if not strong["means"] or strong["means"] != strong["medians"]:
         problems.append(f"04: 3DC-7's `strong` means and medians do not agree verdict by verdict: {strong}")
     ob = [said.get(f"2DS, `strong` preset, {kind}", [None] * 2)[1] for kind in ("means", "medians")]
     if ob != [findings.SAVES, findings.TIES]:
         problems.append(f"04: 2DS OB's `strong` mean and median do not part as the prose says: {ob}")
+    return problems
+
+
+STATUS = re.compile(  # findings.claim_status: the two verdicts on the paper's claim in one sentence, its parts captured
+    r"So the paper's claim is (not shown here|shown here only in part): inside the paper's Algorithm 1 ([^,]+), "
+    r"(?:and|but) against the lazy PRM it saved time in (none|\d+) of the (\d+) scenario–sampler pairs"
+)
+INSIDE = {  # the words that say section 5's verdict in that sentence (the tie's first: it holds "cost time" too)
+    findings.TIES: "neither saved nor cost",
+    findings.UNSURE: "cannot tell",
+    findings.SAVES: "saved time",
+    findings.COSTS: "cost time",
+}
+
+
+def _claim_status(nb, found: list[tuple[list[str], list[list[str]]]], said: dict[str, list[str]]) -> list[str]:
+    """The line under the first code cell and the summary put the two verdicts together (review r14a: a student had
+    to join them): the paper's claim "not shown" unless section 5's row says "saves time", section 5's verdict in
+    words, and the `strong` network's recorded medians against the lazy PRM counted as section 6's rows count them."""
+    eager = [m.group(1) for r in _eager_rows(found) if (m := VERDICT.fullmatch(r[2])) is not None]
+    lazy = [v for name in ("2DS", "3DC-7") for v in said.get(f"{name}, `strong` preset, medians", [])]
+    outputs = texts(nb)
+    searched = (STATUS.search(text) for text in (outputs[0] if outputs else "", " ".join(outputs[1:])))
+    stated = [m for m in searched if m is not None]
+    if not eager or len(lazy) != 2 * len(SAMPLERS) or len(stated) != 2:
+        return ["04: the opening and the summary do not put the two verdicts on the paper's claim together"]
+    saved = lazy.count(findings.SAVES)
+    expected = (
+        "shown here only in part" if eager[0] == findings.SAVES else "not shown here",
+        INSIDE[eager[0]],
+        str(saved or "none"),
+        str(len(lazy)),
+    )
+    problems = []
+    for m in stated:
+        got = (m.group(1), next((w for w in INSIDE.values() if w in m.group(2)), m.group(2)), m.group(3), m.group(4))
+        if got != expected:
+            problems.append(f"04: the paper's claim is said to be {got}; section 5 and 6's tables give {expected}")
     return problems
 
 

@@ -194,6 +194,10 @@ EAGER_RUN = row([1, 1, 1, 1], [1.04, 1.05, 1.05, 1.06])  # section 5: Algorithm 
 EAGER_SAID = findings.planning_sentence(
     "An accurate network (the `strong` preset's) inside the paper's Algorithm 1, 3DC-7, uniform sampler", EAGER_RUN
 ) + findings.FEW_QUERIES.format(n=4)
+EAGER_STATUS = findings.claim_status(  # ... and the two verdicts on the paper's claim together: it is not shown
+    {name: recorded.median_ratios("strong")[key]["total"] for name, key in (("2DS", "2ds"), ("3DC-7", "3dc7"))},
+    findings.TIES,
+)
 
 
 def chapter_04() -> dict:
@@ -205,7 +209,10 @@ def chapter_04() -> dict:
     rates = {"ratio": 0.4, "exact_cfg_per_s": 5e6, "fcl_cfg_per_s": 2e5, "learned_cfg_per_s": 2e6}
     crossed = {"variables": {"links": sweep}}
     nb = executed(
-        (f"MD:**The paper's claim, tested in section 5.** {EAGER_SAID}", "MD:" + findings.planning_table(planning)),
+        (
+            f"MD:**The paper's claim, tested in section 5.** {EAGER_SAID} {EAGER_STATUS}",
+            "MD:" + findings.planning_table(planning),
+        ),
         "MD:" + findings.throughput_table({"2DS": rates, "3DC-7": rates}, 10_000),
         "MD:" + findings.crossover_table(crossed) + "\n\n" + findings.crossover_counts(crossed),
         eager_counts(),
@@ -213,7 +220,7 @@ def chapter_04() -> dict:
         "MD:" + paper_mlp(),
         (
             "MD:This run took 49 s from the first cell to this one, at a load average of 2.1 on 2 cores.",
-            f"MD:- **The paper's claim itself** (section 5): {EAGER_SAID}",
+            f"MD:- **The paper's claim itself** (section 5): {EAGER_SAID} {EAGER_STATUS}",
         ),
     )
     nb["cells"].insert(-1, {"cell_type": "markdown", "source": OPENING_04})  # the chapter's own opening, as written
@@ -325,6 +332,51 @@ def test_chapter_04_fails_where_section_6s_recorded_verdicts_contradict_its_answ
     assert problems(CH04, nb)[0].startswith("04: the answer says what the `paper` MLP answers")
 
 
+def test_chapter_04_fails_where_its_two_verdicts_on_the_papers_claim_are_joined_wrongly():
+    """Review r14a: the line under the first code cell and the summary say plainly whether the paper's claim is
+    shown: not while section 5's row is no "saves time"; and they count the `strong` medians that save time as
+    section 6's table does (none of eight: the recorded 2DS and 3DC-7 medians)."""
+    assert EAGER_STATUS == (
+        "So the paper's claim is not shown here: inside the paper's Algorithm 1 our accurate `strong` network "
+        "neither saved nor cost time on these few queries, and against the lazy PRM it saved time in none of the 8 "
+        "scenario–sampler pairs of the recorded runs."
+    )
+    nb = chapter_04()
+    first = nb["cells"][0]["outputs"][0]["data"]
+    first["text/markdown"] = first["text/markdown"].replace("is not shown here", "is shown here only in part")
+    assert problems(CH04, nb) == [
+        "04: the paper's claim is said to be ('shown here only in part', 'neither saved nor cost', 'none', '8'); "
+        "section 5 and 6's tables give ('not shown here', 'neither saved nor cost', 'none', '8')"
+    ]
+    nb = chapter_04()
+    summary = nb["cells"][-1]["outputs"][1]["data"]
+    summary["text/markdown"] = summary["text/markdown"].replace("in none of the 8", "in 2 of the 8")
+    assert problems(CH04, nb) == [
+        "04: the paper's claim is said to be ('not shown here', 'neither saved nor cost', '2', '8'); "
+        "section 5 and 6's tables give ('not shown here', 'neither saved nor cost', 'none', '8')"
+    ]
+    nb = chapter_04()
+    summary = nb["cells"][-1]["outputs"][1]["data"]
+    summary["text/markdown"] = summary["text/markdown"].split(" So the paper's claim")[0]
+    assert problems(CH04, nb) == [
+        "04: the opening and the summary do not put the two verdicts on the paper's claim together"
+    ]
+
+
+def test_claim_status_is_shown_in_part_only_where_algorithm_1_saves():
+    lazy = {"2DS": {"BS": 0.85, "OB": 1.0}, "3DC-7": {"BS": 2.0, "OB": 0.9}}  # 0.90 saves 10 %: it counts
+    said = findings.claim_status(lazy, findings.SAVES)
+    assert said.startswith("So the paper's claim is shown here only in part: inside the paper's Algorithm 1 our")
+    assert said.endswith(
+        ", but against the lazy PRM it saved time in 2 of the 4 scenario–sampler pairs (2DS BS, "
+        "3DC-7 OB) of the recorded runs."
+    )
+    unsure = findings.claim_status(lazy, findings.UNSURE)
+    assert unsure.startswith(
+        "So the paper's claim is not shown here: inside the paper's Algorithm 1 these few queries cannot tell whether"
+    )
+
+
 def test_ratio_table_counts_each_rows_verdicts():
     table = findings.ratio_table({"a": {"BS": 0.5, "OB": 1.0, "G": 1.05, "BT": 1.2}}, counts=True)
     assert table.splitlines()[0].endswith(f"| {findings.COUNT_COLUMN} |")
@@ -363,7 +415,10 @@ def test_chapter_04_holds_the_opening_and_summary_to_section_5s_verdict():
     summary. Both print it from the run; a sentence that disagrees with section 5's row, or a missing one, fails."""
     nb = chapter_04()
     nb["cells"][0]["outputs"].pop(0)  # the line under the first code cell
-    assert problems(CH04, nb) == ["04: section 5's verdict is not stated in the opening and the summary"]
+    assert problems(CH04, nb) == [
+        "04: the opening and the summary do not put the two verdicts on the paper's claim together",
+        "04: section 5's verdict is not stated in the opening and the summary",
+    ]
     nb = chapter_04()
     summary = nb["cells"][-1]["outputs"][1]["data"]
     summary["text/markdown"] = summary["text/markdown"].replace("a tie", "prediction saved time")
@@ -396,7 +451,12 @@ def test_chapter_04_names_the_network_whose_lazy_medians_it_reports():
     )
     assert problems(CH04, nb) == [
         "04: the opening says 'none of the four samplers' saved time (2DS, `strong` preset, medians); its row saves "
-        "for ['BS']"
+        "for ['BS']",
+        *[  # ... and the line under the first code cell and the summary, which count none of eight
+            "04: the paper's claim is said to be ('not shown here', 'neither saved nor cost', 'none', '8'); section 5 "
+            "and 6's tables give ('not shown here', 'neither saved nor cost', '1', '8')"
+        ]
+        * 2,
     ]
 
 
@@ -482,8 +542,12 @@ def test_a_second_table_in_one_output_is_read_apart_and_held_to_the_page_width()
     [
         ([0.5, 0.5, 0.6], "0.50 (middle half 0.50–0.55), prediction saved time."),
         ([2.0, 2.0, 2.5], "2.00 (middle half 2.00–2.25), prediction cost time."),
-        ([1.0, 1.05, 1.1], "1.05 (middle half 1.02–1.08), a tie: within 10% of 1, neither saved nor cost."),
-        ([0.8, 1.0, 1.3], "1.00 (middle half 0.90–1.15), can't tell: the middle half reaches past 10% of 1."),
+        ([1.0, 1.05, 1.1], "1.05 (middle half 1.02–1.08), a tie: less than 10% from 1, neither saved nor cost."),
+        (
+            [0.8, 1.0, 1.3],
+            "1.00 (middle half 0.90–1.15), can't tell: the middle half lies partly inside the band (less than 10% "
+            "from 1), partly outside.",
+        ),
     ],
 )
 def test_the_answers_sentence_says_what_its_interval_says(with_, words):

@@ -71,8 +71,8 @@ def planning_table(tables: Mapping[str, Mapping[str, Mapping]], tie: float = TIE
 SAID = {  # a planning verdict at the end of a sentence (its band filled in)
     SAVES: "prediction saved time",
     COSTS: "prediction cost time",
-    TIES: "a tie: within {band} of 1, neither saved nor cost",
-    UNSURE: "can't tell: the middle half reaches past {band} of 1",
+    TIES: "a tie: less than {band} from 1, neither saved nor cost",
+    UNSURE: "can't tell: the middle half lies partly inside the band (less than {band} from 1), partly outside",
 }
 
 
@@ -92,6 +92,35 @@ FEW_QUERIES = (  # after a planning_sentence on a handful of queries: how few th
     " Only {n} queries, one sampler, one scenario (the paper's Table 3: 100 queries a scenario, four samplers, four "
     "scenarios): a first look, too few to settle the claim."
 )
+
+
+ACCURATE = "our accurate `strong` network"
+INSIDE_ALGORITHM_1 = {  # section 5's verdict on the paper's claim, inside a sentence after "inside Algorithm 1"
+    SAVES: f"{ACCURATE} saved time on these few queries",
+    COSTS: f"{ACCURATE} cost time on these few queries",
+    TIES: f"{ACCURATE} neither saved nor cost time on these few queries",
+    UNSURE: f"these few queries cannot tell whether {ACCURATE} saves time",
+}
+
+
+def claim_status(lazy: Mapping[str, Mapping[str, float]], eager: str) -> str:
+    """One sentence that puts the two verdicts on the paper's claim (an accurate network saves planning time)
+    together: ``eager``, the verdict of the accurate network inside the paper's Algorithm 1 (:func:`planning_verdict`
+    of a chapter's run), and ``lazy``, its recorded time ratios against the lazy PRM, ``{scenario: {sampler: with /
+    without}}``. The claim is "not shown" unless Algorithm 1's verdict is "saves"; then it is shown only in part."""
+    pairs = [(f"{name} {sampler}", ratio) for name, ratios in lazy.items() for sampler, ratio in ratios.items()]
+    saved = [pair for pair, ratio in pairs if time_verdict(ratio) == SAVES]
+    lazy_said = (
+        f"against the lazy PRM it saved time in {len(saved) or 'none'} of the {len(pairs)} scenario–sampler pairs"
+        + (f" ({', '.join(saved)})" if saved else "")
+        + " of the recorded runs"
+    )
+    if eager == SAVES:
+        status, joined = "shown here only in part", "but"
+    else:
+        status, joined = "not shown here", "and"
+    inside = f"inside the paper's Algorithm 1 {INSIDE_ALGORITHM_1[eager]}"
+    return f"So the paper's claim is {status}: {inside}, {joined} {lazy_said}."
 
 
 COUNTED = (SAVES, TIES, COSTS)  # the verdicts one recorded ratio can have, in the order a count column gives them
