@@ -49,7 +49,7 @@ def test_a_time_ratio_is_read_with_chapter_04s_rule_a_gain_of_10_percent_or_more
     a loss) of 10 % or more on the ratio as shown to two decimals; 0.904 is shown 0.90, 1.096 is shown 1.10."""
     assert results_summary.change(ratio) == word
     verdict = {"less time": findings.SAVES, "about the same time": findings.TIES, "more time": findings.COSTS}[word]
-    assert results_summary.findings_rule(ratio) == verdict
+    assert findings.time_verdict(ratio) == verdict
     assert "a gain of 10 % or more" in results_summary.RULE and "a gain of 10 % or more" in PAGE
     assert "under 10 % is a tie" not in PAGE and "change under 10 %" not in PAGE
 

@@ -5,7 +5,7 @@ tables the page prints (read as :mod:`tools.recorded_results` reads them)::
 
 It rewrites the lines between :data:`BEGIN` and :data:`END` in ``docs/results.md``; ``tests/test_results_page.py``
 fails while they differ from what the tables give, so a new run's tables cannot leave an old summary behind.
-Time ratios are read with the page's rule, chapter 04's (:data:`RULE`, :func:`findings_rule`).
+Time ratios are read with the page's rule, chapter 04's (:data:`RULE`, :func:`toolkit.teaching.findings.time_verdict`).
 
 It also draws the page's two figures, :data:`FIGURES`: Table 3's total and sampling columns, ours beside the paper's,
 per scenario and sampler (:func:`table3_figure`, drawn by :func:`toolkit.plots.timings.ratio_comparison`), and writes
@@ -70,24 +70,13 @@ def span(values: list[float], show=percent) -> str:
     return low if low == high else f"{low}–{high}"
 
 
-def findings_rule(ratio: float) -> str:
-    """A time ratio with / without read with chapter 04's one rule (:data:`RULE`), as :mod:`toolkit.teaching.findings`
-    states it: :data:`~toolkit.teaching.findings.SAVES` for a gain of :data:`~toolkit.teaching.findings.TIE` or more
-    on the ratio as shown (two decimals), :data:`~toolkit.teaching.findings.COSTS` for a loss of as much,
-    :data:`~toolkit.teaching.findings.TIES` between. Here until findings carries the rule as a function of its own."""
-    shown = round(ratio, 2)  # as the tables print it
-    if round(1 - shown, 6) >= findings.TIE:
-        return findings.SAVES
-    return findings.COSTS if round(shown - 1, 6) >= findings.TIE else findings.TIES
-
-
 WORDS = {findings.SAVES: "less time", findings.TIES: "about the same time", findings.COSTS: "more time"}
 
 
 def change(ratio: float) -> str:
-    """A time ratio with / without read with :func:`findings_rule`: ``"more time"``, ``"about the same time"`` or
-    ``"less time"``."""
-    return WORDS[findings_rule(ratio)]
+    """A time ratio with / without read with chapter 04's rule (:func:`toolkit.teaching.findings.time_verdict`):
+    ``"more time"``, ``"about the same time"`` or ``"less time"``."""
+    return WORDS[findings.time_verdict(ratio)]
 
 
 def grouped(ratios: dict[str, dict[str, float]]) -> dict[str, list[tuple[str, float]]]:
