@@ -1,5 +1,7 @@
 """The CAE figures (notebook 02) show the numbers they are given: curves, error cells, accuracies, points."""
 
+import re
+
 import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -8,8 +10,10 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
 from toolkit.learning.metrics import reconstruction_accuracy
+from toolkit.plots import alt
 from toolkit.plots import cae as plots
-from toolkit.plots.palette import series_style
+from toolkit.plots.palette import COLORS, series_style
+from toolkit.plots.wrong_cells import error_cells
 
 
 @pytest.fixture
@@ -37,7 +41,7 @@ def test_training_curves_plot_each_history_per_epoch():
 
 def test_error_cells_are_the_cells_whose_sign_differs(grids_and_decoded):
     grids, decoded = grids_and_decoded
-    errors = plots.error_cells(grids, decoded)
+    errors = error_cells(grids, decoded)
     assert errors[1, 0, 0]  # a zero output is an error
     np.testing.assert_allclose(1 - errors.reshape(2, -1).mean(axis=1), reconstruction_accuracy(decoded, grids))
 
@@ -86,6 +90,37 @@ def test_reconstructions_mark_flipped_cells_as_their_own_kind_not_as_missed_or_i
         "flipped cell, flip ignored (square on orange)",
         "flipped cell, flip copied (square)",
     ]
+
+
+def test_a_reconstructions_regions_count_flips_as_its_title_does():
+    """Review r14c: with flipped cells, the title said "3 missed, 0 invented" while the regions of its description
+    summed to 25 and 8: they counted every ignored flip as missed or invented. The regions now sum to the title."""
+    rng = np.random.default_rng(4)
+    clean = np.where(rng.random((1, 12, 12)) < 0.3, 1.0, -1.0)  # (1, 12, 12)
+    flipped = np.zeros_like(clean, dtype=bool)
+    flipped[0].flat[rng.choice(144, 20, replace=False)] = True  # 20 flips
+    noisy = np.where(flipped, -clean, clean)
+    decoded = clean * np.where(rng.random(clean.shape) < 0.1, -1.0, 1.0)  # mostly the clean grid: flips ignored
+    fig = plots.reconstructions(noisy, decoded, ["w"], flipped=flipped)
+    title = fig.subfigs[0].axes[2].get_title()
+    said = [
+        int(v)
+        for v in re.fullmatch(
+            r"(\d+) of (\d+) flips ignored; other cells: (\d+) missed, (\d+) invented", title
+        ).groups()
+    ]
+    (part,) = alt.details(fig)
+    cells = [cell for row in part["rows"] for cell in row[1:]]
+    pattern = r".*; (\d+) of (\d+) flips ignored; other cells: (\d+) missed, (\d+) invented"
+    summed = np.sum([[int(v) for v in re.fullmatch(pattern, cell).groups()] for cell in cells], axis=0).tolist()
+    wrong = (np.sign(decoded) != noisy)[0]
+    expected = [
+        int((wrong & flipped[0]).sum()),
+        20,
+        int((wrong & ~flipped[0] & (noisy[0] > 0)).sum()),
+        int((wrong & ~flipped[0] & (noisy[0] < 0)).sum()),
+    ]
+    assert summed == said == expected and expected[0] > 0 and sum(expected[2:]) > 0
 
 
 def test_reconstructions_refuse_mismatched_inputs(grids_and_decoded):
@@ -298,3 +333,29 @@ def test_large_groups_interleave_so_that_none_hides_under_another():
     order = [c.get_gid() for c in stack if c.get_gid() != "seen"]
     assert order[:4] == ["training grids", "unseen", "training grids", "unseen"]  # in turns
     assert len([c for c in stack if c.get_gid() == "seen"]) == 1
+
+
+def test_large_groups_are_hollow_and_coinciding_means_nest():
+    """Review r14c: chapter 02's 1000-grid clouds (training squares, unseen triangles) buried each other, and their two
+    mean markers lay one over the other. Hundreds of points are outlines in their group's colour (a cloud under
+    another shows through, told by its shape); a few dozen stay filled. Each later mean is smaller and on top."""
+    rng = np.random.default_rng(1)
+    groups = {
+        name: (rng.uniform(0.85, 0.9, n), rng.uniform(0.9, 0.95, n))
+        for name, n in (("few", 20), ("a", 300), ("b", 300))
+    }
+    groups["b"] = groups["a"]  # the same mean as "a"
+    ax = plots.accuracy_vs_all_free(groups).axes[0]
+    for k, name in enumerate(groups):
+        drawn = [c for c in ax.collections if c.get_gid() == name]
+        faces = np.concatenate([c.get_facecolor() for c in drawn])
+        edges = np.concatenate([c.get_edgecolor() for c in drawn])
+        if name == "few":
+            assert np.all(faces[:, 3] > 0) and np.allclose(edges[:, :3], to_rgb(COLORS["ink"]))
+        else:
+            assert faces.size == 0 or np.all(faces[:, 3] == 0)  # hollow
+            assert np.allclose(edges[:, :3], to_rgb(series_style(k)["color"]))
+    means = [next(c for c in ax.collections if c.get_gid() == f"{name}: mean") for name in groups]
+    sizes, orders = [m.get_sizes()[0] for m in means], [m.get_zorder() for m in means]
+    assert sizes == sorted(sizes, reverse=True) and len(set(sizes)) == 3 and orders == sorted(orders)
+    assert sizes[-1] <= 0.6 * sizes[-2]  # the smaller square inside the larger: both edges show

@@ -303,6 +303,10 @@ def test_conservative_dots_show_on_every_grey_in_ink_over_a_white_under_stroke(g
     ]  # the white under-stroke first, the ink dots over it
     assert hatched[0].get_hatch_linewidth() > hatched[1].get_hatch_linewidth()  # the white one wider: a ring
     np.testing.assert_array_equal(hatched[0].get_paths()[0].vertices, hatched[1].get_paths()[0].vertices)
+    # review r14c: a dense hatch ("..", twelve dots an inch) over a tint hid P(valid) where a model rejects most of
+    # the map; six dots an inch on no tint leave the grey between them as it is
+    assert [c.get_hatch() for c in hatched] == [".", "."]
+    assert all(np.all(np.asarray(c.get_facecolor())[..., 3] == 0) for c in hatched)
     for level in np.linspace(0, 1, 101):  # every grey of the map
         grey = to_hex((level, level, level))
         assert max(contrast("ink", grey), contrast("free", grey)) >= 3.0

@@ -27,7 +27,7 @@ from matplotlib.textpath import TextToPath
 from matplotlib.ticker import NullLocator
 
 from toolkit.learning.metrics import reconstruction_accuracy
-from toolkit.plots.alt import Part, describe, lines_part, map_part
+from toolkit.plots.alt import Part, describe, lines_part
 from toolkit.plots.palette import (
     COLORS,
     GREYS_CMAP,
@@ -38,7 +38,7 @@ from toolkit.plots.palette import (
     halo,
     series_style,
 )
-from toolkit.plots.wrong_cells import draw_wrong_cells, error_cells, legend_handles, wrong_kinds
+from toolkit.plots.wrong_cells import draw_wrong_cells, grid_part, legend_handles, wrong_in_words, wrong_kinds
 
 
 def training_curves(
@@ -100,20 +100,17 @@ def reconstructions(
     drawn: dict[str, np.ndarray] = {}  # the kinds of wrong cell drawn in any row, for the legend
     for k, (row, grid, out, name, acc) in enumerate(zip(rows, grids, decoded, names, accuracy)):
         kinds = wrong_kinds(grid, out, None if flipped is None else flipped[k])
-        count = {kind: int(mask.sum()) for kind, mask in kinds.items()}
         drawn |= kinds
         axes = row.subplots(1, 3, width_ratios=(1, 1, 2))  # the wrong cells twice as large: their marks legible
         _image(axes[0], grid, "input")
         _image(axes[1], np.where(out > 0, 1.0, -1.0), "decoded (sign)")
-        wrong = f"{count['missed']} missed, {count['phantom']} invented"
-        if "ignored" in kinds:
-            wrong = f"{count['ignored']} of {count['ignored'] + count['copied']} flips ignored; other cells: {wrong}"
+        wrong = wrong_in_words(kinds)
         _image(axes[2], grid, wrong, alpha=0.25)
         draw_wrong_cells(axes[2], grid, kinds, cell=72 * 0.45 * fig.get_figwidth() / max(grid.shape))
         all_free = np.mean(grid < 0)
         row.suptitle(f"{name}: {acc:.1%} of cells right (all free: {all_free:.1%})", fontsize=10)
         said.append(f"{name}: {acc:.1%} of cells right against {all_free:.1%} for answering all free; {wrong}")
-        parts.append(grid_part(name, said[-1], grid, out))
+        parts.append(grid_part(name, said[-1], grid, out, None if flipped is None else flipped[k]))
     handles, labels = legend_handles(list(drawn))
     fig.legend(handles, labels, loc="outside lower center", ncols=2, fontsize=9, frameon=False)
     grids_said = f"{len(grids)} occupancy grid{'s' if len(grids) > 1 else ''}"
@@ -121,25 +118,11 @@ def reconstructions(
     return describe(fig, text + ".", parts)
 
 
-def grid_part(name: str, said: str, grid: np.ndarray, decoded: np.ndarray) -> Part:
-    """One workspace's row of :func:`reconstructions` read region by region: the blocked share of the input and of
-    the decoded grid, and the cells decoded wrong there."""
-    errors = error_cells(grid, decoded)
-
-    def region(cells: tuple[slice, slice]) -> str:
-        g, d, e = grid[cells], decoded[cells], errors[cells]
-        blocked = f"{np.mean(g > 0):.0%} blocked, decoded {np.mean(d > 0):.0%}"
-        return f"{blocked}; {int(np.sum(e & (g > 0)))} missed, {int(np.sum(e & (g < 0)))} invented"
-
-    nx, ny = grid.shape
-    text = f"{said}. The grid by region, top row first: blocked share of the input and of the decoded grid, wrong cells"
-    return map_part(name, text, grid.shape, ("x cell", 0, nx), ("y cell", 0, ny), region)
-
-
 FEW = 50  # a group of at most this many workspaces is drawn larger and on top: hundreds of points would bury it
 GREY = {True: dict(s=28, alpha=1.0, linewidths=0.8, zorder=3), False: dict(s=6, alpha=0.5, linewidths=0, zorder=1)}
 AREA = {"^": 1.7, "v": 1.7, "o": 1.2}  # marker area factors: a triangle of the same size looks half a square's
 LAYERS = 10  # slices of a large group drawn in turns with the other large groups' (accuracy_vs_all_free)
+MEAN_SIZE = 300  # the first group's mean marker (points squared); each later group's is smaller, drawn over it
 
 
 def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
@@ -147,9 +130,11 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
 
     ``groups[name] = (all_free (W,), accuracy (W,))``. Points above the diagonal beat a
     CAE that answers "all free"; on it, the CAE has learned nothing about that workspace. A small group (a few dozen
-    workspaces) has larger markers and is drawn on top, the first over the next: it stays visible over hundreds of
-    points. Large groups are drawn in turns, a slice of each at a time (:data:`LAYERS`), so that where their clouds
-    overlap every group shows on top somewhere, none hidden under another's markers.
+    workspaces) has larger, filled markers and is drawn on top, the first over the next: it stays visible over
+    hundreds of points. Large groups are hollow markers of their own shapes, drawn in turns, a slice of each at a time
+    (:data:`LAYERS`), so that where their clouds overlap every group shows (review r14c: filled squares and triangles
+    buried each other). Each group's mean is a large marker, each later one smaller and on top: means that coincide
+    show as nested shapes.
     """
     fig = Figure(figsize=(6, 5.2), layout="constrained")
     ax = fig.subplots()
@@ -160,32 +145,26 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
         above = int(np.sum(accuracy > all_free))
         few = len(accuracy) <= FEW
         layers = 1 if few else LAYERS
+        # a few: filled, an ink rim; hundreds: hollow, so that where clouds overlap each shows, by its shape
+        marks = (
+            dict(c=style["color"], edgecolors=COLORS["ink"])
+            if few
+            else dict(facecolors="none", edgecolors=style["color"])
+        )
         for j in range(layers):  # layer j of every large group, then layer j + 1: the groups interleave
             ax.scatter(
                 all_free[j::layers],
                 accuracy[j::layers],
                 label=f"{name} (mean {np.mean(accuracy):.1%} vs {np.mean(all_free):.1%})" if j == 0 else None,
-                alpha=0.9 if few else 0.7,
-                s=(45 if few else 16) * AREA.get(style["marker"], 1.0),
-                c=style["color"],
+                alpha=0.9 if few else 0.8,
+                s=(45 if few else 14) * AREA.get(style["marker"], 1.0),
                 marker=style["marker"],
-                edgecolors=COLORS["ink" if few else "free"],  # a white rim parts a large group's marks from another's
-                linewidths=0.9 if few else 0.4,
+                **marks,
+                linewidths=0.9,
                 zorder=3 + len(groups) - k if few else 2 + (j * len(groups) + k) / (layers * len(groups)),
                 gid=name,
             )
-        ax.scatter(  # the group's mean, large, over every cloud: where each group lies, even inside another's cloud
-            np.mean(all_free),
-            np.mean(accuracy),
-            s=190,
-            c=style["color"],
-            marker=style["marker"],
-            edgecolors=COLORS["free"],
-            linewidths=1.2,
-            zorder=20,
-            path_effects=halo(1.2, ("ink",)),
-            gid=f"{name}: mean",
-        )
+        _draw_mean(ax, name, (np.mean(all_free), np.mean(accuracy)), k, len(groups))
         said.append(
             f"{name}: {len(accuracy)} workspaces, mean accuracy {np.mean(accuracy):.1%} against {np.mean(all_free):.1%}"
             f" for all free, {above} of them above the diagonal"
@@ -198,6 +177,23 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
     fig.legend(loc="outside lower center", fontsize=9, frameon=False)  # below the axes: it covers no point
     text = "Reconstruction accuracy against the accuracy of answering all free, one point per workspace. "
     return describe(fig, text + "; ".join(said) + ".")
+
+
+def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int) -> None:
+    """Group ``k`` of ``n``'s mean, a large marker of its style over every cloud, each later group's smaller and on
+    top: two means at one spot both show."""
+    style = series_style(k)
+    ax.scatter(
+        *mean,
+        s=MEAN_SIZE * (1 - 0.6 * k / max(n - 1, 1)),
+        c=style["color"],
+        marker=style["marker"],
+        edgecolors=COLORS["free"],
+        linewidths=1.2,
+        zorder=20 + k,
+        path_effects=halo(1.2, ("ink",)),
+        gid=f"{name}: mean",
+    )
 
 
 def contraction(

@@ -13,8 +13,9 @@ P(valid) >= a threshold. Against the exact checker each answer is one of four ki
 The maps here sweep two degrees of freedom over their bounds (:func:`toolkit.plots.slices.slice_grid`;
 the point robot's whole C-space, or a 2-DoF slice of a 3D robot with the other joints
 fixed), show P(valid) as an image, draw the true C-obstacle boundary over it and mark
-every mistake at its cell: dangerous ones as squares, conservative ones with a dotted hatch over a light tint
-(a hatch, not a dot per cell, so that the gray levels beneath still show where a model rejects whole regions).
+every mistake at its cell: dangerous ones as squares, conservative ones with a sparse dotted hatch and no tint
+(a hatch, not a dot per cell, so that the gray levels between the dots still show where a model rejects whole
+regions: review r14c found a dense hatch hid P(valid) on most of the `paper` preset's map).
 
 >>> grid = slice_grid(robot, dofs=(0, 1), n=80)  # doctest: +SKIP
 >>> probability = grid.image(checker.probability(grid.configs))  # (80, 80)  # doctest: +SKIP
@@ -29,7 +30,7 @@ from typing import Any
 
 import numpy as np
 from matplotlib.collections import PolyCollection
-from matplotlib.colors import ListedColormap, to_rgba
+from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
@@ -213,7 +214,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
 
 def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float, *, conservative: bool = True):
     """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary, dangerous cells as squares, conservative cells
-    tinted and hatched with dots (:func:`_cells`; ``conservative=False``: not marked, where other dots are drawn)."""
+    hatched with sparse dots (:func:`_cells`; ``conservative=False``: not marked, where other dots are drawn)."""
     probability = _on_grid(probability, grid, "probability")
     image = ax.imshow(
         probability.T,
@@ -234,11 +235,12 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     return image
 
 
-CONSERVATIVE_CELLS: dict[str, Any] = dict(  # a light tint and a dotted hatch in ink: the gray beneath still shows
-    facecolor=to_rgba(CONSERVATIVE, 0.15), hatch="..", hatchcolor=COLORS["ink"], edgecolor="none"
+CONSERVATIVE_CELLS: dict[str, Any] = dict(  # sparse ink dots, no tint: the grey between them is P(valid)
+    facecolor="none", hatch=".", hatchcolor=COLORS["ink"], edgecolor="none"
 )
+LEGEND_DOTS: dict[str, Any] = dict(hatch="..")
 UNDER_HATCH: dict[str, Any] = dict(  # the same dots in white, wider, under the ink ones: they show on the darkest grey
-    facecolor="none", hatch="..", hatchcolor=COLORS["free"], hatch_linewidth=2.0, edgecolor="none"
+    facecolor="none", hatch=".", hatchcolor=COLORS["free"], hatch_linewidth=2.0, edgecolor="none"
 )
 
 
@@ -372,7 +374,10 @@ def _mistake_handles() -> list:
             linestyle="",
             label="dangerous: kept, in collision (squares)",
         ),
-        Patch(label="conservative: rejected, free (dotted;\nright answers carry no dots)", **CONSERVATIVE_CELLS),
+        Patch(  # the map's dots, twice as dense: a legend's small patch then always holds some
+            label="conservative: rejected, free (dotted;\nright answers carry no dots)",
+            **CONSERVATIVE_CELLS | LEGEND_DOTS,
+        ),
     ]
 
 

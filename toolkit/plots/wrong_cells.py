@@ -5,7 +5,8 @@ a mark in ink, so that the kind shows without colour: ``x`` a *missed* block (in
 *invented* one (input free, decoded occupied). When the input is a grid with a few cells flipped (section 6 of
 notebook 02), a wrong flipped cell is not a missed or invented block: the decoder drew it as in the clean grid, it
 *ignored* the flip. Flipped cells then get a kind of their own, a hollow square, on an orange cell where the flip was
-ignored; the other wrong cells keep ``x`` and ``o``.
+ignored; the other wrong cells keep ``x`` and ``o``. A figure's title and its description, region by region
+(:func:`grid_part`), count them in the same words (:func:`wrong_in_words`).
 """
 
 from __future__ import annotations
@@ -17,6 +18,7 @@ from matplotlib.colors import ListedColormap
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
+from toolkit.plots.alt import Part, map_part
 from toolkit.plots.palette import COLORS
 
 ERROR_COLORS = ListedColormap([COLORS["phantom"], COLORS["missed"]])  # -1: invented block; +1: missed block
@@ -47,6 +49,17 @@ def wrong_kinds(grid: np.ndarray, decoded: np.ndarray, flipped: np.ndarray | Non
     return kinds
 
 
+def wrong_in_words(kinds: dict[str, np.ndarray], where: tuple[slice, slice] = (slice(None), slice(None))) -> str:
+    """The wrong cells of ``kinds`` (:func:`wrong_kinds`) inside the region ``where`` (default: all), as a title and a
+    region of a figure's description both count them: "2 missed, 0 invented", or, given flipped cells, "1 of 3 flips
+    ignored; other cells: 2 missed, 0 invented" (an ignored flip is never counted missed or invented)."""
+    count = {kind: int(mask[where].sum()) for kind, mask in kinds.items()}
+    wrong = f"{count['missed']} missed, {count['phantom']} invented"
+    if "ignored" in count:
+        wrong = f"{count['ignored']} of {count['ignored'] + count['copied']} flips ignored; other cells: {wrong}"
+    return wrong
+
+
 def draw_wrong_cells(ax, grid: np.ndarray, kinds: dict[str, np.ndarray], cell: float) -> None:
     """The wrong cells of ``kinds`` (:func:`wrong_kinds`) over a faded input already on ``ax``: missed and invented
     cells in their colours, ignored flips orange, each with its mark in ink ``cell`` points wide."""
@@ -69,3 +82,18 @@ def legend_handles(kinds: list[str]) -> tuple[list[Any], list[str]]:
         face = {"missed": COLORS["missed"], "phantom": COLORS["phantom"], "ignored": COLORS["ignored"]}.get(kind)
         handles.append((Patch(facecolor=face), mark) if face else mark)
     return handles, [LABELS[kind] for kind in kinds]
+
+
+def grid_part(name: str, said: str, grid: np.ndarray, decoded: np.ndarray, flipped: np.ndarray | None = None) -> Part:
+    """One workspace's row of :func:`toolkit.plots.cae.reconstructions` read region by region: the blocked share of
+    the input and of the decoded grid, and the cells decoded wrong there, counted as the row's title counts them
+    (given the ``flipped (nx, ny)`` cells, an ignored flip is neither missed nor invented: :func:`wrong_kinds`)."""
+    kinds = wrong_kinds(grid, decoded, flipped)
+
+    def region(cells: tuple[slice, slice]) -> str:
+        blocked = f"{np.mean(grid[cells] > 0):.0%} blocked, decoded {np.mean(decoded[cells] > 0):.0%}"
+        return f"{blocked}; {wrong_in_words(kinds, cells)}"
+
+    nx, ny = grid.shape
+    text = f"{said}. The grid by region, top row first: blocked share of the input and of the decoded grid, wrong cells"
+    return map_part(name, text + " as the title counts them", grid.shape, ("x cell", 0, nx), ("y cell", 0, ny), region)
