@@ -609,7 +609,7 @@ def chapter_05(nb) -> list[str]:
     )
     if ours != always or not ours > accuracy.get("paper, Table 2", 100.0):
         problems.append(f"05: the paper's recipe is not as accurate as 'always valid' and above Table 2: {accuracy}")
-    tie = f'a ratio within {findings.TIE:.0%} of 1 reads "{findings.TIES}"'
+    tie = f'a ratio less than {findings.TIE:.0%} from 1 reads "{findings.TIES}"'
     if " ".join(texts(nb)).count(tie) < 2:
         problems.append("05: the tie band is not printed beside both time tables")
     frames = [r for header, rows in tables(nb) if header[:2] == ["frames", "valid (exact checker)"] for r in rows]

@@ -785,7 +785,7 @@ def chapter_05(
     recipe_medians: dict[str, float] | None = None,
     frames_valid: int = 90,
     recipe_acc: str = "76%",
-    tie: str = f'a ratio within {findings.TIE:.0%} of 1 reads "{findings.TIES}"',
+    tie: str = f'a ratio less than {findings.TIE:.0%} from 1 reads "{findings.TIES}"',
 ):
     """A chapter 05 that prints docs/results.md's medians and the closing tables (review r8b's numbers), each time
     table after ``tie``; the paper's recipe with ``recipe_acc``, ``recipe_tpr`` and ``recipe_medians``, and
