@@ -112,3 +112,45 @@ def test_an_animation_opens_on_its_still_and_plays_at_a_press_without_webgl_only
             else:
                 assert play.count() == 0 and page.locator("#toolkit-still-note").inner_text() == NO_WEBGL
             browser.close()
+
+
+def test_the_animations_play_pause_button_says_whether_it_plays_and_space_and_enter_toggle_it(tmp_path):
+    """WCAG 4.1.2 and 2.1.1 (a11y10): the saved player's play / pause button kept one name and no state, and Space did
+    not toggle it (the player's own Space handler undid the button's press). It is a toggle now, pressed while the
+    recording plays; Space and Enter each toggle it, and the recording's time stops and moves again with it."""
+    import html
+    import re
+
+    from playwright.sync_api import sync_playwright
+
+    from toolkit.viewer.labels import PLAY_PAUSE
+
+    page_file = tmp_path / "animation.html"
+    with viewer.Viewer("3dc7", seed=1, port=0) as v:
+        v.plan("BS", seed=0)
+        snippet = v.animation_iframe(300, frames=6, seconds=3.0)
+    page_file.write_text(html.unescape(re.search(r'srcdoc="([^"]*)"', snippet).group(1)))
+    time = "document.querySelector('input[aria-label^=time]').value"
+    with sync_playwright() as playwright:
+        browser = playwright.chromium.launch(
+            executable_path=viewer_browser.find_chromium(), args=viewer_browser.CHROMIUM_ARGS
+        )
+        page = browser.new_page(viewport={"width": 640, "height": 440})
+        page.goto(page_file.as_uri(), timeout=120_000)
+        page.get_by_role("button", name="play in 3D").press("Enter")
+        button = page.get_by_role("button", name=PLAY_PAUSE)
+        page.wait_for_function("() => document.activeElement.getAttribute('aria-pressed') === 'true'", timeout=60_000)
+        states = []
+        for key in ("Space", "Space", "Enter", "Enter"):
+            page.keyboard.press(key)
+            page.wait_for_timeout(300)
+            before = page.evaluate(time)
+            page.wait_for_timeout(1200)
+            states.append((key, button.get_attribute("aria-pressed"), page.evaluate(time) != before))
+        browser.close()
+    assert states == [
+        ("Space", "false", False),
+        ("Space", "true", True),
+        ("Enter", "false", False),
+        ("Enter", "true", True),
+    ]

@@ -1,6 +1,6 @@
 """The site's accessibility audit: axe-core on every page, in Chromium, the embedded viewers' frames included.
 
-axe-core (Deque) checks a page against the WCAG 2.0 / 2.1 level A and AA rules; a violation's impact is
+axe-core (Deque) checks a page against the WCAG 2.0 / 2.1 / 2.2 level A and AA rules; a violation's impact is
 minor, moderate, serious or critical. The site must have no serious or critical one (tests/test_site.py).
 axe-core comes from the PyPI package ``axe-playwright-python`` (it ships ``axe.min.js``); the browser is
 Debian's Chromium driven by Playwright (:func:`toolkit.viewer.browser.find_chromium`), never a downloaded one.
@@ -21,7 +21,7 @@ from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
 
-WCAG_AA = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa"]
+WCAG_AA = ["wcag2a", "wcag2aa", "wcag21a", "wcag21aa", "wcag22aa"]  # axe tags: WCAG 2.2 AA adds target size (2.5.8)
 BLOCKING = ("serious", "critical")
 
 
@@ -38,7 +38,7 @@ def pages(site: Path) -> list[str]:
 
 
 def audit_page(page, script: str) -> list[dict]:
-    """axe's WCAG 2.0/2.1 A and AA violations on the loaded ``page``, its frames (the viewers) included: one dict
+    """axe's WCAG 2.0/2.1/2.2 A and AA violations on the loaded ``page``, its frames (the viewers) included: one dict
     per rule with ``id``, ``impact`` and ``nodes`` (each with ``target`` and ``html``)."""
     for frame in page.frames:  # axe reaches a frame only where it runs too
         frame.evaluate(script)

@@ -102,11 +102,83 @@ window.addEventListener("resize", () => {
   markScrollingBlocks();
   markScrollingMath();
 });
+// The drawer's panels. Material's navigation drawer holds each nested section in a panel (a <nav> after a checkbox,
+// input.md-nav__toggle) that slides in over its parent when the box is ticked: a click on the section's label opens
+// it ("Chapters >"), a click on the panel's title closes it ("< Chapters"). Those labels take no focus; below the
+// breakpoint each becomes a button the Tab key reaches (WCAG 2.1.1), named by its text, an opener saying whether its
+// panel is open (aria-expanded); Enter and Space press it, and the focus goes on to the panel then shown: to its
+// title once opened, back to the opener once closed.
+const drawerPanels = (() => {
+  const toggleOf = (nav) => nav.parentElement?.querySelector(":scope > input.md-nav__toggle");
+  const isPanel = (nav) => nav.classList.contains("md-nav--primary") || !!toggleOf(nav);
+  const panelOf = (element) => {
+    let nav = element.closest("nav");
+    while (nav && !isPanel(nav)) nav = nav.parentElement.closest("nav");
+    return nav;
+  };
+  // the panel shown: from the drawer's root, the panel of each ticked box in turn, down to the last one
+  const shown = (navigation) => {
+    let panel = navigation.querySelector(".md-nav--primary");
+    for (;;) {
+      const next = [...panel.querySelectorAll("nav.md-nav")].find(
+        (nav) => toggleOf(nav)?.checked && panelOf(nav.parentElement) === panel,
+      );
+      if (!next) return panel;
+      panel = next;
+    }
+  };
+  const FOCUSABLE = "a[href], button, input:not([type=checkbox]), [tabindex]:not([tabindex='-1']):not([tabindex=''])";
+  const stops = (panel) => (panel ? [...panel.querySelectorAll(FOCUSABLE)].filter((s) => panelOf(s) === panel) : []);
+  const labels = (navigation) =>
+    [...navigation.querySelectorAll("label.md-nav__link[for], label.md-nav__title[for]")].filter((label) =>
+      document.getElementById(label.htmlFor)?.classList.contains("md-nav__toggle"),
+    );
+  const press = (label, navigation) => (event) => {
+    if (event.key !== "Enter" && event.key !== " ") return;
+    event.preventDefault();
+    event.stopPropagation(); // material clicks a focused label at Enter too: the panel would open and close again
+    label.click(); // ticks or unticks the box: material slides the panel
+    const box = document.getElementById(label.htmlFor);
+    const opener = navigation.querySelector(`label.md-nav__link[for="${label.htmlFor}"]`);
+    const title = navigation.querySelector(`label.md-nav__title[for="${label.htmlFor}"]`);
+    (box.checked ? title : opener)?.focus({preventScroll: box.checked});
+  };
+  const expanded = (navigation) => {
+    for (const label of labels(navigation)) {
+      if (label.classList.contains("md-nav__link") && label.hasAttribute("role")) {
+        label.setAttribute("aria-expanded", String(document.getElementById(label.htmlFor).checked));
+      }
+    }
+  };
+  // below the breakpoint (on): every panel's labels are buttons; above it, material's own labels again
+  const toggles = (navigation, on) => {
+    for (const label of labels(navigation)) {
+      if (!label.toolkitPress) {
+        label.toolkitPress = press(label, navigation);
+        document.getElementById(label.htmlFor).addEventListener("change", () => expanded(navigation));
+      }
+      if (on) {
+        label.setAttribute("tabindex", "0");
+        label.setAttribute("role", "button");
+        if (label.classList.contains("md-nav__title")) {
+          label.setAttribute("aria-label", `Back from ${label.textContent.trim()}`);
+        }
+        label.addEventListener("keydown", label.toolkitPress);
+      } else {
+        for (const name of ["role", "aria-label", "aria-expanded"]) label.removeAttribute(name);
+        label.setAttribute("tabindex", "");
+        label.removeEventListener("keydown", label.toolkitPress);
+      }
+    }
+    expanded(navigation);
+  };
+  return {shown, stops, toggles};
+})();
 // Below Material's drawer breakpoint the site's navigation is a drawer off the screen's left edge; closed, its links
 // stayed in the tab order, so focus went where no one could see it (WCAG 2.4.7 at 320 px): it is inert while closed.
 // Material opens it by a click on the menu icon only (a <label> that takes no focus), so that icon becomes a button
 // the keyboard reaches (WCAG 2.1.1), saying whether the drawer is open; Enter or Space opens it and puts the focus on
-// its first link, Escape closes it and gives the focus back to the button.
+// the first stop of the panel it shows, Escape closes it and gives the focus back to the button.
 (() => {
   const drawer = document.getElementById("__drawer");
   const navigation = document.querySelector(".md-sidebar--primary");
@@ -120,7 +192,7 @@ window.addEventListener("resize", () => {
   const open = (opened) => {
     drawer.checked = opened;
     update();
-    if (opened) navigation.querySelector("a[href]")?.focus();
+    if (opened) stops()[0]?.focus();
     else button?.focus();
   };
   if (button) {
@@ -130,27 +202,32 @@ window.addEventListener("resize", () => {
     button.addEventListener("keydown", (event) => {
       if (event.key !== "Enter" && event.key !== " ") return;
       event.preventDefault();
+      event.stopPropagation(); // material's Enter would click the label then focused: a panel's "back" button
       open(!drawer.checked);
     });
   }
-  // Open, the drawer covers the page: Tab and Shift+Tab cycle through its links (a focus trap, as a dialog's), so the
-  // focus never goes to the page hidden behind it (WCAG 2.4.3); Escape closes it, from anywhere in it.
+  // Open, the drawer covers the page: Tab and Shift+Tab cycle through the stops of the panel it shows (a focus trap,
+  // as a dialog's), so the focus never goes to the page hidden behind it (WCAG 2.4.3); Escape closes it, from anywhere
+  // in it. Material draws each nested section ("Chapters", a page's contents) as a panel that slides over its parent:
+  // the links of the panels under it, or beside it off the screen, still took the focus unseen (WCAG 2.4.7), so the
+  // keyboard's stops are those of the panel shown only (drawerPanels).
   const stops = () =>
-    [...navigation.querySelectorAll("a[href], button, input:not([type=checkbox]), [tabindex]:not([tabindex='-1'])")]
-      .filter((stop) => stop.getClientRects().length && getComputedStyle(stop).visibility !== "hidden");
+    drawerPanels.stops(drawerPanels.shown(navigation)).filter(
+      (stop) => stop.getClientRects().length && getComputedStyle(stop).visibility !== "hidden",
+    );
   document.addEventListener("keydown", (event) => {
     if (!drawer.checked || !narrow.matches) return;
     if (event.key === "Escape") open(false);
     if (event.key !== "Tab") return;
     const all = stops();
     if (!all.length) return;
+    event.preventDefault();
     const at = all.indexOf(document.activeElement);
-    const next = at < 0 ? 0 : (at + (event.shiftKey ? -1 : 1) + all.length) % all.length;
-    if (at < 0 || (event.shiftKey && at === 0) || (!event.shiftKey && at === all.length - 1)) {
-      event.preventDefault();
-      all[next].focus();
-    }
+    all[at < 0 ? 0 : (at + (event.shiftKey ? -1 : 1) + all.length) % all.length].focus();
   });
+  const toggles = () => drawerPanels.toggles(navigation, narrow.matches);
+  narrow.addEventListener("change", toggles);
+  toggles();
   drawer.addEventListener("change", update);
   narrow.addEventListener("change", update);
   update();

@@ -19,7 +19,9 @@ reader's tree (they draw what their control's name says), but the connection's, 
 style also outlines a focused input (and a folder's title) as viser outlines a focused button (2 px; viser shows an
 input's focus only by its 1 px border's colour), darkens the sliders' min/max labels and a notice's text (viser's
 grey is 3.3:1 on white) to 6.4:1, and the inputs' and unticked checkboxes' borders (1.5:1) and the sliders' unfilled
-tracks (2.1:1) to 3.3:1 (WCAG 1.4.3, 1.4.11).
+tracks (2.1:1) to 3.3:1 (WCAG 1.4.3, 1.4.11), and makes viser's panel-minimize control and number inputs at
+least 24 px (2.5.8). A saved scene's play / pause button is a toggle, pressed while it plays, that Space presses once
+(viser's own Space handler undid the button's press).
 
 - :func:`label_controls` adds the script to a saved scene's page (snapshots and animations in notebook 05), and
   hides the notices there (a static page has nothing to notify); the scene's own text alternative is the
@@ -63,7 +65,7 @@ NAMES = {  # CSS selector -> accessible name (aria-label), for the controls with
     ".tabler-icon-share": "share the scene",
     ".mantine-Notification-closeButton": "close this notice",
 }
-PLAY_PAUSE = "play or pause the recording"  # the name of a saved scene's play / pause button
+PLAY_PAUSE = "play the recording"  # a saved scene's play / pause button: a toggle, pressed while it plays
 RECORDING_NAMES = {  # and on a saved scene's player, after those
     ".mantine-ActionIcon-root:not([aria-label]):not([title])": PLAY_PAUSE,
     "input[inputmode=decimal]:not([aria-label])": "time in the recording (seconds)",
@@ -93,13 +95,22 @@ SCRIPT = """<style>:root { --mantine-color-dimmed: %(dimmed)s !important; }
 .mantine-Slider-root { --slider-track-bg: %(track)s !important; }
 .mantine-Slider-track::before { background-color: %(track)s !important; }
 input:focus-visible, [role=button][tabindex]:focus-visible {
-  outline: 2px solid var(--mantine-primary-color-filled) !important; outline-offset: 1px; }</style>
+  outline: 2px solid var(--mantine-primary-color-filled) !important; outline-offset: 1px; }
+[data-dock-minimize], .mantine-NumberInput-input { min-width: 24px !important; min-height: 24px !important; }</style>
 <script>
 (() => {
   const names = %(names)s;
   const icons = %(icons)s;
   const titles = %(titles)s;
   const view = %(view)s;
+  const play = (target) => target?.closest?.(`button[aria-label="${%(play)s}"]`);  // a saved scene's play / pause
+  window.addEventListener("keydown", (event) => {  // Space presses it once (the player's own Space undid the press)
+    if (event.key !== " " || !play(event.target)) return;
+    event.preventDefault();
+    event.stopImmediatePropagation();
+    if (!event.repeat) play(event.target).click();
+  }, true);
+  window.addEventListener("keyup", (event) => event.key === " " && play(event.target) && event.preventDefault(), true);
   const rowLabel = (control) => {  // the text of the one <label> of the nearest row around the control
     for (let node = control.parentElement, depth = 0; node && depth < 8; node = node.parentElement, depth++) {
       const labels = node.querySelectorAll("label");
@@ -127,6 +138,10 @@ input:focus-visible, [role=button][tabindex]:focus-visible {
           control.setAttribute("aria-label", label);
         }
       }
+    }
+    for (const button of document.querySelectorAll(`button[aria-label="${%(play)s}"]`)) {  // pressed while playing
+      const playing = String(!!button.querySelector("[class*=tabler-icon-player-pause]"));
+      if (button.getAttribute("aria-pressed") !== playing) button.setAttribute("aria-pressed", playing);
     }
     for (const image of document.querySelectorAll("img:not([alt])")) image.setAttribute("alt", %(logo)s);
     for (const icon of document.querySelectorAll("svg:not([aria-hidden]):not([aria-label])")) {
@@ -217,6 +232,7 @@ def script(names: dict[str, str] = NAMES) -> str:
         "titles": json.dumps({name: scenario.title for name, scenario in scenarios.SCENARIOS.items()}),
         "page": json.dumps(PAGE_TITLE),
         "view": json.dumps(VIEW),
+        "play": json.dumps(PLAY_PAUSE),
     }
 
 
