@@ -747,6 +747,46 @@ def test_at_320_px_the_keyboard_opens_the_navigation_drawer_and_reaches_its_link
     assert remote == []
 
 
+OUTLINE_AND_BACKGROUND = """() => {  // the focused element's outline colour, and the colour of what lies behind it
+    const e = document.activeElement, style = getComputedStyle(e);
+    let behind = e, colour = "rgba(0, 0, 0, 0)";
+    while (behind && colour.startsWith("rgba(0, 0, 0, 0)")) {
+        colour = getComputedStyle(behind).backgroundColor;
+        behind = behind.parentElement;
+    }
+    return [e.getAttribute("aria-label") || e.textContent.trim().slice(0, 40), style.outlineStyle, style.outlineColor,
+            colour];
+}"""
+
+
+@pytest.mark.slow
+@pytest.mark.browser
+@needs_chromium
+def test_at_320_px_the_drawers_first_stop_on_the_home_page_shows_its_focus(site, served, chromium):
+    """Audit a11y11 (WCAG 2.4.7, 1.4.11): opening the drawer on the home page puts the focus on the site's name, a
+    link on the header's blue, and its outline (#1f5f99) stood at 1.03:1 against that blue; now 3:1 or more."""
+    from toolkit.plots.palette import contrast
+
+    as_hex = lambda rgb: "#" + "".join(f"{int(v):02x}" for v in re.findall(r"[\d.]+", rgb)[:3])
+    remote: list[str] = []
+    page = open_page(chromium, served + "index.html", remote)
+    try:
+        page.set_viewport_size({"width": 320, "height": 640})
+        page.wait_for_timeout(300)
+        menu = page.get_by_role("button", name="The site's navigation")
+        for _ in range(10):
+            page.keyboard.press("Tab")
+            if menu.evaluate("button => button === document.activeElement"):
+                break
+        page.keyboard.press("Enter")
+        page.wait_for_timeout(500)  # the drawer slides in (0.25 s)
+        name, style, outline, behind = page.evaluate(OUTLINE_AND_BACKGROUND)
+    finally:
+        page.close()
+    assert style != "none" and contrast(as_hex(outline), as_hex(behind)) >= 3, (name, outline, behind)
+    assert remote == []
+
+
 IN_DRAWER = """() => {  // whether the focus is in the navigation drawer, on the screen; the focused element
     const e = document.activeElement, box = e.getBoundingClientRect();
     const inside = !!e.closest(".md-sidebar--primary") && box.width > 0 && box.left >= 0 && box.right <= innerWidth;
