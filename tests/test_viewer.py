@@ -243,6 +243,7 @@ def test_a_wrong_model_is_marked_everywhere(make_panel, rng):
     assert np.all(
         np.asarray(v.nodes["prediction"].batched_colors) == draw.probability_colors([0.0])
     )  # cividis' dark end
+    assert v.nodes["prediction"].opacity == draw.PREDICTION_OPACITY < 1  # faint: the links' colour shows through
     assert "disagrees" in panel.status.content
     v.sample("raw", 300, seed=1)
     valid = v.exact.are_valid(v.robot.sample(np.random.default_rng(1), 300))
@@ -484,6 +485,23 @@ def test_busy_port_moves_on_and_stop_frees_it(capsys):
     v.stop()  # twice is harmless
     with socket.socket() as again:
         again.bind(("127.0.0.1", v.port))  # free after stop()
+
+
+def test_in_a_crowded_view_far_marks_grow_less_and_near_ones_shrink():
+    """Reader r15b: in the 3DC-7 view of 2000 marks the grown far marks (9 to 13 px of 440) and the near ones (up to
+    60 px) buried the robot. Crowded, a circle is drawn 6.2 to 8.8 px wide far and at most 17.6 near, in steps of
+    sqrt 2 from its own size (those in between keep it); a view of few marks still grows far ones to 8.8 px or more."""
+    size, depth = draw.POINT_SIZE["3dc"], np.geomspace(0.05, 30.0, 400)  # (N,)
+    px = 440 * size / (depth * np.tan(np.deg2rad(75.0) / 2))  # (N,) a circle's width at its own size
+    crowded = px * draw.far_scale(depth, size, crowded=True)
+    assert px.min() < 6 and px.max() > 40  # the depths span far and near
+    assert crowded.max() <= 17.61 and crowded.min() >= 6.2 and crowded[px < 6.2].max() <= 8.81
+    kept = (px >= 6.2) & (px <= 17.6)
+    np.testing.assert_allclose(crowded[kept], px[kept])
+    steps = np.log(crowded / px) / np.log(np.sqrt(2.0))
+    np.testing.assert_allclose(steps, np.rint(steps), atol=1e-9)
+    sparse = px * draw.far_scale(depth, size)
+    assert sparse.min() >= 8.79 and np.array_equal(sparse[px > 9], px[px > 9])
 
 
 def test_color_share_reads_pixels(tmp_path):

@@ -6,11 +6,11 @@ flat scene: its blocks are extruded to :data:`FLAT_HEIGHT` and the point robot's
 square to :data:`FLAT_ROBOT_HEIGHT`, so it pokes out of any block it collides with.
 
 Colors tell validity (§III), from :mod:`toolkit.plots.palette` (Okabe-Ito, apart for colour-blind eyes too):
-the valid colour (blue), the invalid one (vermillion) in collision. Samples carry a second cue, their
-shape (:data:`SAMPLE_SHAPES`): circles valid, diamonds in collision, and a larger sparkle behind the mark where a
-learned model disagrees with the exact checker; on a page, the far ones grow until their shapes can be told
-(:func:`far_scale`). A probability of validity is drawn on cividis (dark: 0, light: 1). Blocks and links are edged
-in ink (:func:`add_edges`).
+the valid colour (blue), the invalid one (vermillion) in collision. Samples carry a second cue, their shape
+(:data:`SAMPLE_SHAPES`): circles valid, diamonds in collision, and a larger sparkle behind the mark where a learned
+model disagrees with the exact checker; on a page, the far ones grow until their shapes can be told, and in a
+crowded view the near ones shrink (:func:`far_scale`). A probability of validity is drawn on cividis (dark: 0,
+light: 1), the model's wireframe faint over the links. Blocks and links are edged in ink (:func:`add_edges`).
 """
 
 from __future__ import annotations
@@ -38,6 +38,7 @@ EDGE = rgb("ink")  # every block's and link's edges: an outline at 3:1 or more o
 EDGE_PX = 2.0  # their width on screen, in pixels, near or far
 VALID = rgb("valid")
 COLLIDING = rgb("invalid")
+PREDICTION_OPACITY = 0.5  # the P(valid) wireframe over the links: faint, so their colour and edges show through
 MISTAKE = rgb("ink")  # a sample the learned model gets wrong (drawn over its validity colour)
 POINT_SIZE = {"2ds": 0.25, "3do": 0.12, "3dc": 0.07}  # sample markers, by workspace family (3DC: dense, seen close)
 SAMPLE_SHAPES: dict[str, tuple[Literal["circle", "diamond", "sparkle"], float]] = {
@@ -49,6 +50,9 @@ SAMPLE_SHAPES: dict[str, tuple[Literal["circle", "diamond", "sparkle"], float]] 
 VIEW_FOV = np.deg2rad(75.0)  # viser's vertical field of view (its default, and the snapshots')
 FAR_MARK = 0.02  # on a page, a far mark is drawn at least this share of the view's height wide (9 px of 440)
 FAR_STEP = np.sqrt(2.0)  # far marks grow in steps of this factor (one point cloud per step)
+CROWDED = 1000  # a page's view of more marks than this is crowded: its far marks grow less, its near ones shrink
+CROWDED_MARK = FAR_MARK / FAR_STEP  # there, a far mark grows to 6 to 9 px of 440 (a circle still told from a diamond)
+NEAR_MARK = 0.04  # and a near one is at most this share of the view's height wide (18 px of 440)
 REGION = rgb("ink")
 ROADMAP = rgb("edge")
 PATH = rgb("trace")
@@ -153,14 +157,19 @@ def mark_sizes(kinds: dict[str, np.ndarray], size: float) -> np.ndarray:
     return np.max(widths, axis=0)
 
 
-def far_scale(depth: npt.ArrayLike, size: float) -> np.ndarray:
-    """``(N,)`` how many times its ``size`` a mark at ``depth (N,)`` before a page's camera is drawn.
+def far_scale(depth: npt.ArrayLike, size: npt.ArrayLike, crowded: bool = False) -> np.ndarray:
+    """``(N,)`` how many times its ``size`` (one or ``(N,)``) a mark at ``depth (N,)`` before a page's camera is drawn.
 
     viser sizes a mark in workspace units: of width ``s`` at depth ``z``, it is ``s / (z tan(fov / 2))`` view heights
     wide, and a far one shrinks to a dot whose shape cannot be told. Near, 1; far, the least power of
-    :data:`FAR_STEP` that draws it :data:`FAR_MARK` view heights wide."""
-    need = FAR_MARK * np.maximum(np.asarray(depth, dtype=float), 0.0) * np.tan(VIEW_FOV / 2) / size  # (N,)
-    return FAR_STEP ** np.ceil(np.log(np.maximum(need, 1.0)) / np.log(FAR_STEP) - 1e-9)
+    :data:`FAR_STEP` that draws it :data:`FAR_MARK` view heights wide. In a ``crowded`` view (:data:`CROWDED`) the
+    grown marks would bury the robot: a far one grows only to :data:`CROWDED_MARK` (its shape just told) and a near
+    one shrinks, by the same steps, to :data:`NEAR_MARK` at most."""
+    unit = np.maximum(np.asarray(depth, dtype=float), 1e-9) * np.tan(VIEW_FOV / 2) / size  # (N,) view heights⁻¹
+    low, high = (CROWDED_MARK, NEAR_MARK) if crowded else (FAR_MARK, np.inf)
+    grow = np.ceil(np.log(np.maximum(low * unit, 1.0)) / np.log(FAR_STEP) - 1e-9)  # (N,) steps, 0 or more
+    shrink = np.floor(np.log(np.minimum(high * unit, 1.0)) / np.log(FAR_STEP) + 1e-9)  # (N,) steps, 0 or fewer
+    return FAR_STEP ** (grow + shrink)
 
 
 def add_samples(
@@ -169,8 +178,8 @@ def add_samples(
     """Point clouds of the samples under ``/samples``, by kind (:func:`sample_kinds`): ``points (N, 3)`` in their
     validity colour (a model's mistakes in :data:`MISTAKE`), shaped and sized by :data:`SAMPLE_SHAPES`; a sparkle
     behind the mark it rings, whose shape still says valid or in collision. ``scales`` (one or ``(N,)``, from
-    :func:`far_scale`) grows marks: one cloud per kind and scale, keyed ``kind`` at scale 1, else ``kind far k``
-    (``FAR_STEP ** k`` times larger)."""
+    :func:`far_scale`) grows or shrinks marks: one cloud per kind and scale, keyed ``kind`` at scale 1, else
+    ``kind far k`` (``FAR_STEP ** k`` times larger; ``k`` below 0: smaller)."""
     colors = validity_colors(kinds["valid"])  # (N, 3)
     steps = np.rint(np.log(np.broadcast_to(scales, kinds["valid"].shape)) / np.log(FAR_STEP)).astype(int)  # (N,)
     clouds = {}

@@ -140,7 +140,12 @@ class Viewer:
                 self._add(
                     "prediction",
                     draw.add_boxes(
-                        self.server.scene, "/robot/prediction", boxes.scaled(HALO), colors=draw.VALID, wireframe=True
+                        self.server.scene,
+                        "/robot/prediction",
+                        boxes.scaled(HALO),
+                        colors=draw.VALID,
+                        opacity=draw.PREDICTION_OPACITY,
+                        wireframe=True,
                     ),
                 )
                 self.nodes["disagreement"] = self.server.scene.add_label(

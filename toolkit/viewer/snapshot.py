@@ -42,8 +42,9 @@ def scene_still(viewer, poses: dict[str, np.ndarray] | None = None) -> Figure:
 @contextmanager
 def far_marks_grown(viewer, look_at: np.ndarray, position: np.ndarray) -> Iterator[None]:
     """``viewer``'s sample marks grown for a page whose camera stands at ``position`` looking at ``look_at`` (3,) each
-    (:func:`toolkit.viewer.drawing.far_scale`: far ones told apart by shape) while the block runs, then back as the
-    live view draws them (in workspace units: a camera that moves cannot size them for itself)."""
+    (:func:`toolkit.viewer.drawing.far_scale`: far ones told apart by shape; in a crowded view, near ones shrunk)
+    while the block runs, then back as the live view draws them (in workspace units: a camera that moves cannot
+    size them for itself)."""
     if viewer.sample_points is None or not viewer.visible["samples"]:
         yield
         return
@@ -52,7 +53,8 @@ def far_marks_grown(viewer, look_at: np.ndarray, position: np.ndarray) -> Iterat
     depth = (points - position) @ ((look_at - position) / np.linalg.norm(look_at - position))  # (N,)
     for cloud in viewer.sample_clouds.values():
         cloud.remove()
-    grown = draw.add_samples(viewer.server.scene, points, kinds, size, draw.far_scale(depth, size))
+    scales = draw.far_scale(depth, size, crowded=len(points) > draw.CROWDED)  # (N,)
+    grown = draw.add_samples(viewer.server.scene, points, kinds, size, scales)
     try:
         yield
     finally:
