@@ -11,7 +11,7 @@ Take-away: each notebook page (chapter, tutorial, assignment) begins with a link
 (``downloads/``, written by :mod:`tools.site`) and, when ``mkdocs.yml``'s ``extra.jupyterhub`` names the course's
 hub and the repository its students pull, a link that opens it there through nbgitpuller.
 
-Accessible (WCAG 2.1 AA, measured by :mod:`tools.accessibility`): every page has one ``h1`` (a heading that
+Accessible (WCAG 2.2 AA, measured by :mod:`tools.accessibility`): every page has one ``h1`` (a heading that
 a notebook's output prints becomes an ``h2``), and every block of code that scrolls sideways can be reached by
 keyboard (``tabindex="0"``) and is named for a screen reader (:func:`focusable_code`), while a cell's input and
 a cell's output, which nbconvert makes tab stops of no name (every paragraph and figure of a chapter one more
