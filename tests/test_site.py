@@ -771,16 +771,23 @@ def test_at_320_px_the_drawers_first_stop_on_the_home_page_shows_its_focus(site,
     remote: list[str] = []
     page = open_page(chromium, served + "index.html", remote)
     try:
-        page.set_viewport_size({"width": 320, "height": 640})
-        page.wait_for_timeout(300)
-        page.get_by_role("button", name="The site's navigation").focus()
-        page.keyboard.press("Enter")
-        page.wait_for_timeout(500)  # the drawer slides in (0.25 s)
+        open_drawer(page)
         name, style, outline, behind = page.evaluate(OUTLINE_AND_BACKGROUND)
     finally:
         page.close()
     assert style != "none" and contrast(as_hex(outline), as_hex(behind)) >= 3, (name, outline, behind)
     assert remote == []
+
+
+def open_drawer(page):
+    """At 320 CSS px, the navigation drawer opened from the keyboard (Enter on the menu button); the button."""
+    page.set_viewport_size({"width": 320, "height": 640})
+    page.wait_for_timeout(300)
+    menu = page.get_by_role("button", name="The site's navigation")
+    menu.focus()
+    page.keyboard.press("Enter")
+    page.wait_for_timeout(500)  # the drawer slides in (0.25 s)
+    return menu
 
 
 IN_DRAWER = """() => {  // whether the focus is in the navigation drawer, on the screen; the focused element
@@ -800,12 +807,7 @@ def test_at_320_px_the_open_navigation_drawer_keeps_the_focus_until_escape(site,
     remote: list[str] = []
     page = open_page(chromium, served + "notebooks/04_prm_with_and_without_prediction.html", remote)
     try:
-        page.set_viewport_size({"width": 320, "height": 640})
-        page.wait_for_timeout(300)
-        menu = page.get_by_role("button", name="The site's navigation")
-        menu.focus()
-        page.keyboard.press("Enter")
-        page.wait_for_timeout(500)  # the drawer slides in (0.25 s)
+        menu = open_drawer(page)
         forward = []
         for _ in range(100):
             forward.append(page.evaluate(IN_DRAWER))
@@ -858,11 +860,7 @@ def test_at_320_px_tab_reaches_only_the_drawers_panel_on_screen_and_its_panel_bu
     remote: list[str] = []
     page = open_page(chromium, served + "notebooks/04_prm_with_and_without_prediction.html", remote)
     try:
-        page.set_viewport_size({"width": 320, "height": 640})
-        page.wait_for_timeout(300)
-        page.get_by_role("button", name="The site's navigation").focus()
-        page.keyboard.press("Enter")
-        page.wait_for_timeout(500)  # the drawer slides in (0.25 s)
+        open_drawer(page)
         chapters = drawer_stops(page, 7)  # the chapters' panel, material's panel for the page's own section
         for _ in range(3):  # back to chapter 04's button, which opens its contents
             page.keyboard.press("Shift+Tab")
