@@ -372,48 +372,36 @@ def test_the_crossover_sentence_names_each_network_and_scenario():
     assert "dearer check than the compiled checker at every point of its sweep" in PAGE
 
 
-def _timed(cell: str) -> tuple[float, float]:
-    """``"**0.034 ± 0.085** / 0.13 ± 0.01"``: our mean and standard deviation."""
-    found = re.match(r"\*\*([\d.e+-]+) ± ([\d.e+-]+)\*\*", cell)
-    assert found, cell
-    return float(found[1]), float(found[2])
-
-
 def test_the_accurate_network_inside_algorithm_1_is_read_as_its_section_says():
     """Review r15a: the paper's claim (an accurate network inside Algorithm 1) had no 100-query record. Its section
     (`toolkit reproduce --preset strong --planner paper --baseline paper`) is read by the preset and the option; its
     tables say that "without" is Algorithm 1 everywhere; the prose's verdict and figures hold by its tables: no
-    sampler's median query saves time, a mean that saves rests on slow queries without prediction (a standard
-    deviation larger than the mean), and timing the same computation twice moved a ratio of medians by up to a
-    fifth and each query's own ratio by under a tenth (as chapter 04 says)."""
+    sampler's median query saves time, where a mean saves the median query is no shorter, and timing the same
+    computation twice moved a ratio of means by up to 24 %, of medians by up to 30 %, and each query's own ratio by
+    under a tenth (the section's prose and chapter 04, section 6)."""
     key = recorded.ALGORITHM_1
     ratios = recorded.query_ratios(key, TABLES)
-    assert {"2ds", "3dc7", "3dc9"} <= set(ratios) and all(
-        set(row) == {"BS", "OB", "G", "BT"} for row in ratios.values()
-    )
+    assert set(ratios) == {"2ds", "3dc7", "3dc9", "3do"}
+    assert all(set(row) == {"BS", "OB", "G", "BT"} for row in ratios.values())
     for heading in ("medians over the queries", "time improvement", "Times behind"):
         assert recorded.without(key, heading, TABLES).startswith("the paper's Algorithm 1"), heading
     said = [findings.time_verdict(r) for row in ratios.values() for r in row.values()]
     assert findings.SAVES not in said  # "saves time for no sampler in any scenario by the median query"
     assert "saves time for no sampler in any scenario by the median query" in PAGE
-    saved = [(s, x) for s in ratios for x, v in recorded.improvements(key, s, recorded=TABLES).items() if v >= 0.10]
-    rows = recorded_results.parse(TEXT)[key]
-    timed = next(t for h, t in rows.items() if "Times behind" in h)
-    by = {(r[0], r[1]): dict(zip(timed["columns"], r)) for r in timed["rows"]}  # {(scenario, sampler): row}
-    assert saved  # the prose speaks of them
-    for scenario, sampler in saved:
-        mean, std = _timed(by[scenario, sampler]["total without"])
-        assert std > mean, (scenario, sampler, mean, std)
-    twice = next(t for h, t in rows.items() if "timed twice" in h)
-    medians = [float(r[2]) for r in twice["rows"]]
-    own = [float(r[3].split()[0]) for r in twice["rows"]]
-    assert claim(r"Timed twice, the ratio of the medians ranged from (\S+) to (\S+),") == (
-        f"{min(medians):.2f}",
-        f"{max(medians):.2f}",
-    )
-    assert claim(
-        r"each query's own ratio \(its two times taken in turn, under the same load\) ranged from (\S+) to "
+    means = {s: recorded.improvements(key, s, recorded=TABLES) for s in ratios}
+    saved = [(s, x) for s in ratios for x, v in means[s].items() if findings.time_verdict(1 - v) == findings.SAVES]
+    assert saved and all(findings.time_verdict(ratios[s][x]) != findings.SAVES for s, x in saved)
+    twice = next(t for h, t in TABLES[key].items() if "timed twice" in h)
+    of_means, of_medians = ([float(r[k]) for r in twice["rows"]] for k in (2, 3))
+    own = [float(r[4].split()[0]) for r in twice["rows"]]
+    for said, values in (("The ratio of the two means ranged", of_means), ("the ratio of the two medians", of_medians)):
+        low, high = claim(rf"{said} from (\S+) to (\S+) ")
+        assert (low, high) == (f"{min(values):.2f}", f"{max(values):.2f}"), said
+    said_own = claim(
+        r"each query's own ratio, its two times taken in turn under the same load, ranged from (\S+) to "
         r"(\S+) at its median"
-    ) == (f"{min(own):.2f}", f"{max(own):.2f}")
-    assert max(abs(r - 1) for r in medians) <= 0.20 + 1e-9  # chapter 04: "moved by up to a fifth"
+    )
+    assert said_own == (f"{min(own):.2f}", f"{max(own):.2f}")
+    assert round(max(abs(r - 1) for r in of_means), 2) == 0.24  # chapter 04: "as much as 24 % apart
+    assert round(max(abs(r - 1) for r in of_medians), 2) == 0.30  # ... and their medians 30 %"
     assert max(abs(r - 1) for r in own) < 0.10  # ... "stayed within a tenth of 1 at its median"
