@@ -194,9 +194,10 @@ EAGER_RUN = row([1, 1, 1, 1], [1.04, 1.05, 1.05, 1.06])  # section 5: Algorithm 
 EAGER_SAID = findings.planning_sentence(
     "An accurate network (the `strong` preset's) inside the paper's Algorithm 1, 3DC-7, uniform sampler", EAGER_RUN
 ) + findings.FEW_QUERIES.format(n=4)
-EAGER_STATUS = findings.claim_status(  # ... and the two verdicts on the paper's claim together: it is not shown
-    {name: recorded.median_ratios("strong")[key]["total"] for name, key in (("2DS", "2ds"), ("3DC-7", "3dc7"))},
-    findings.TIES,
+NAMES = {key: name for name, key in SCENARIOS_4}
+CLAIM_STATUS = findings.claim_status(  # the paper's claim from the recorded runs, as the chapter states it
+    {NAMES[key]: ratios for key, ratios in recorded.query_ratios(recorded.ALGORITHM_1).items()},
+    {NAMES[key]: recorded.median_ratios("strong")[key]["total"] for key in ("2ds", "3dc7")},
 )
 
 
@@ -210,7 +211,7 @@ def chapter_04() -> dict:
     crossed = {"variables": {"links": sweep}}
     nb = executed(
         (
-            f"MD:**The paper's claim, tested in section 5.** {EAGER_SAID} {EAGER_STATUS}",
+            f"MD:**The paper's claim, over the recorded runs** (section 6 has the tables). {CLAIM_STATUS}",
             "MD:" + findings.planning_table(planning),
         ),
         "MD:" + findings.throughput_table({"2DS": rates, "3DC-7": rates}, 10_000),
@@ -220,14 +221,14 @@ def chapter_04() -> dict:
         "MD:" + paper_mlp(),
         (
             "MD:This run took 49 s from the first cell to this one, at a load average of 2.1 on 2 cores.",
-            f"MD:- **The paper's claim itself** (section 5): {EAGER_SAID} {EAGER_STATUS}",
+            f"MD:- **The paper's claim itself** (section 6): {CLAIM_STATUS}",
         ),
     )
-    nb["cells"].insert(-1, {"cell_type": "markdown", "source": OPENING_04})  # the chapter's own opening, as written
+    nb["cells"].insert(-1, {"cell_type": "markdown", "source": PROSE_04})  # the chapter's own prose, as written
     return nb
 
 
-OPENING_04 = "".join(json.loads((ROOT / "notebooks" / CH04).read_text())["cells"][0]["source"])
+PROSE_04 = markdown_of(ROOT / "notebooks" / CH04)  # its opening first
 
 
 def recorded_ratios(paper_3dc7: dict[str, float] | None = None) -> tuple[str, str]:
@@ -238,9 +239,13 @@ def recorded_ratios(paper_3dc7: dict[str, float] | None = None) -> tuple[str, st
         return {s: 1 - r for s, r in recorded.improvements(preset, key).items()}
 
     eager, lazy = {}, {}
+    accurate = recorded.query_ratios(recorded.ALGORITHM_1)
     for name, key in SCENARIOS_4:
         eager[f"{name}, the paper's Table 3"] = {s: 1 - paper_numbers.IMPROVEMENT[key]["total"][s] for s in SAMPLERS}
         eager[f"{name}, ours (`paper` preset)"] = means("paper", key)
+        if key in accurate:
+            eager[f"{name}, ours (`strong` preset), means"] = means(recorded.ALGORITHM_1, key)
+            eager[f"{name}, ours (`strong` preset), medians"] = accurate[key]
     for name, key in SCENARIOS_4[:2]:
         lazy[f"{name}, `paper` preset, medians"] = recorded.median_ratios("paper")[key]["total"]
         lazy[f"{name}, `strong` preset, means"] = means("strong", key)
@@ -259,12 +264,13 @@ def paper_mlp() -> str:
     return "| scenario | what it answers |\n| --- | --- |\n" + "\n".join(rows)
 
 
-def eager_counts(with_samples: str = "0", with_connection: str = "122.7") -> tuple[str, str, str]:
+def eager_counts(with_samples: str = "0", with_connection: str = "122.7") -> tuple[str, ...]:
     """Section 5's tables: Algorithm 1's verdict, its stages' times and its checks, as the chapter prints them (a
     quick run's numbers)."""
     eager = {"3DC-7, Algorithm 1 (prediction for samples; every edge exact) vs itself without": {"BS": EAGER_RUN}}
     return (
         "MD:" + findings.planning_table(eager),
+        "MD:" + EAGER_SAID,
         "MD:| mode | sampling | connection (edges) | query | total |\n| --- |" + " ---: |" * 4 + "\n"
         f"| without | 0.2 | 237.6 | 14.8 | 252.8 |\n| with | 1.0 | {with_connection} | 2.9 | 135.1 |",
         "MD:| mode | roadmap nodes | samples, exact | samples, network | edge points, exact |\n| --- |"
@@ -332,49 +338,87 @@ def test_chapter_04_fails_where_section_6s_recorded_verdicts_contradict_its_answ
     assert problems(CH04, nb)[0].startswith("04: the answer says what the `paper` MLP answers")
 
 
-def test_chapter_04_fails_where_its_two_verdicts_on_the_papers_claim_are_joined_wrongly():
-    """Review r14a: the line under the first code cell and the summary say plainly whether the paper's claim is
-    shown: not while section 5's row is no "saves time"; and they count the `strong` medians that save time as
-    section 6's table does (none of eight: the recorded 2DS and 3DC-7 medians)."""
-    assert EAGER_STATUS == (
-        "So the paper's claim is not shown here: inside the paper's Algorithm 1 our accurate `strong` network "
-        "neither saved nor cost time on these few queries, and against the lazy PRM it saved time in none of the 8 "
-        "scenario–sampler pairs of the recorded runs."
+def _claim_expected() -> tuple[str, ...]:
+    """What the line under the first code cell and the summary must say of the paper's claim, from docs/results.md."""
+    eager = [
+        findings.time_verdict(r) for row in recorded.query_ratios(recorded.ALGORITHM_1).values() for r in row.values()
+    ]
+    lazy = [
+        findings.time_verdict(r) for k in ("2ds", "3dc7") for r in recorded.median_ratios("strong")[k]["total"].values()
+    ]
+    saved = eager.count(findings.SAVES)
+    verdict = findings.HOLDS if saved == len(eager) else findings.IN_PART if saved else findings.DOES_NOT_HOLD
+    return (
+        verdict,
+        str(saved or "none"),
+        str(len(eager)),
+        str(eager.count(findings.TIES)),
+        str(eager.count(findings.COSTS)),
+        str(lazy.count(findings.SAVES) or "none"),
+        str(len(lazy)),
     )
+
+
+def test_chapter_04_fails_where_its_statement_of_the_papers_claim_disagrees_with_the_recorded_runs():
+    """Review r15a: the paper's claim (an accurate network inside Algorithm 1) was tested on 4 queries. The line under
+    the first code cell and the summary state it from the recorded runs of 100 queries a scenario, as section 6's
+    rows count them; a statement that disagrees, or a missing one, fails."""
+    expected = _claim_expected()
+    assert CLAIM_STATUS.startswith(f"So the paper's claim {expected[0]} for an accurate network: inside the paper's")
     nb = chapter_04()
     first = nb["cells"][0]["outputs"][0]["data"]
-    first["text/markdown"] = first["text/markdown"].replace("is not shown here", "is shown here only in part")
+    other = findings.HOLDS if expected[0] != findings.HOLDS else findings.DOES_NOT_HOLD
+    first["text/markdown"] = first["text/markdown"].replace(f"claim {expected[0]} for", f"claim {other} for")
     assert problems(CH04, nb) == [
-        "04: the paper's claim is said to be ('shown here only in part', 'neither saved nor cost', 'none', '8'); "
-        "section 5 and 6's tables give ('not shown here', 'neither saved nor cost', 'none', '8')"
+        f"04: the paper's claim is said to be {(other, *expected[1:])}; section 6's tables give {expected}"
     ]
     nb = chapter_04()
     summary = nb["cells"][-1]["outputs"][1]["data"]
-    summary["text/markdown"] = summary["text/markdown"].replace("in none of the 8", "in 2 of the 8")
+    summary["text/markdown"] = summary["text/markdown"].replace(f"a cost in {expected[4]}", "a cost in 99")
     assert problems(CH04, nb) == [
-        "04: the paper's claim is said to be ('not shown here', 'neither saved nor cost', '2', '8'); "
-        "section 5 and 6's tables give ('not shown here', 'neither saved nor cost', 'none', '8')"
+        f"04: the paper's claim is said to be {(*expected[:4], '99', *expected[5:])}; section 6's tables give "
+        f"{expected}"
     ]
     nb = chapter_04()
     summary = nb["cells"][-1]["outputs"][1]["data"]
     summary["text/markdown"] = summary["text/markdown"].split(" So the paper's claim")[0]
     assert problems(CH04, nb) == [
-        "04: the opening and the summary do not put the two verdicts on the paper's claim together"
+        "04: the opening and the summary do not state the paper's claim from the recorded runs"
     ]
 
 
-def test_claim_status_is_shown_in_part_only_where_algorithm_1_saves():
+def test_chapter_04_fails_prose_that_answers_the_papers_claim_otherwise_than_the_recorded_runs():
+    """The written answer (opening, section 6, summary) says the claim's verdict in fixed words: each time, and
+    never another verdict's."""
+    verdict = _claim_expected()[0]
+    nb = chapter_04()
+    other = next(v for v in chapter_claims.PLAIN if v != verdict)
+    nb["cells"][-2]["source"] += f" So {chapter_claims.PLAIN[other]}."
+    assert problems(CH04, nb) == [f"04: the prose says '{chapter_claims.PLAIN[other]}'; the recorded runs: {verdict}"]
+    nb = chapter_04()
+    phrase = r"\s+".join(map(re.escape, chapter_claims.PLAIN[verdict].split()))  # it may wrap anywhere
+    nb["cells"][-2]["source"] = re.sub(phrase, "it did what it did", nb["cells"][-2]["source"])
+    assert problems(CH04, nb)[0].startswith(f"04: the prose does not say '{chapter_claims.PLAIN[verdict]}'")
+
+
+def test_claim_status_reads_the_accurate_network_inside_algorithm_1():
     lazy = {"2DS": {"BS": 0.85, "OB": 1.0}, "3DC-7": {"BS": 2.0, "OB": 0.9}}  # 0.90 saves 10 %: it counts
-    said = findings.claim_status(lazy, findings.SAVES)
-    assert said.startswith("So the paper's claim is shown here only in part: inside the paper's Algorithm 1 our")
-    assert said.endswith(
-        ", but against the lazy PRM it saved time in 2 of the 4 scenario–sampler pairs (2DS BS, "
-        "3DC-7 OB) of the recorded runs."
+    some = findings.claim_status({"2DS": {"BS": 0.8, "OB": 1.05}, "3DC-9": {"BS": 1.5, "OB": 1.2}}, lazy)
+    assert some == (
+        "So the paper's claim holds here only in part for an accurate network: inside the paper's Algorithm 1 the "
+        "median query of our accurate `strong` network saved time in 1 of the 4 scenario–sampler pairs (2DS BS) (a "
+        "tie in 1, a cost in 2), and against the lazy PRM in 2 of the 4 scenario–sampler pairs (2DS BS, 3DC-7 OB) "
+        "(recorded runs, 100 queries a scenario)."
     )
-    unsure = findings.claim_status(lazy, findings.UNSURE)
-    assert unsure.startswith(
-        "So the paper's claim is not shown here: inside the paper's Algorithm 1 these few queries cannot tell whether"
+    none = findings.claim_status({"2DS": {"BS": 0.91, "OB": 1.1}}, lazy)
+    assert (
+        none.startswith("So the paper's claim does not hold here for an accurate network")
+        and "in none of the 2" in none
     )
+    every = findings.claim_status({"2DS": {"BS": 0.9, "OB": 0.5}}, lazy)
+    assert every.startswith("So the paper's claim holds here for an accurate network")
+    with pytest.raises(ValueError, match="no time ratios"):
+        findings.claim_verdict({})
 
 
 def test_ratio_table_counts_each_rows_verdicts():
@@ -405,31 +449,26 @@ def test_chapter_04_fails_where_section_5s_counts_contradict_its_prose():
     assert problems(CH04, nb) == [
         "04: section 5's counts of Algorithm 1's checks are not displayed",
         "04: section 6's tables of recorded ratios, with their counts, are not displayed",
-        "04: section 5's verdict is not stated in the opening and the summary",
+        "04: section 5's verdict is not stated once under its table",
         "04: the run's time is not printed with its load",
     ]
 
 
-def test_chapter_04_holds_the_opening_and_summary_to_section_5s_verdict():
-    """Reader r12a: the paper's claim with an accurate network (section 5) was in neither the opening nor the
-    summary. Both print it from the run; a sentence that disagrees with section 5's row, or a missing one, fails."""
+def test_chapter_04_holds_section_5s_sentence_to_its_row():
+    """Reader r12a, review r13a: section 5's small run states its verdict in one sentence under its table, with how
+    few queries it is; a sentence that disagrees with its row, or a missing one, fails. (The paper's claim itself is
+    read from the recorded runs: the test above.)"""
     nb = chapter_04()
-    nb["cells"][0]["outputs"].pop(0)  # the line under the first code cell
+    said = nb["cells"][3]["outputs"][1]["data"]
+    said["text/markdown"] = said["text/markdown"].replace("a tie", "prediction saved time")
     assert problems(CH04, nb) == [
-        "04: the opening and the summary do not put the two verdicts on the paper's claim together",
-        "04: section 5's verdict is not stated in the opening and the summary",
-    ]
-    nb = chapter_04()
-    summary = nb["cells"][-1]["outputs"][1]["data"]
-    summary["text/markdown"] = summary["text/markdown"].replace("a tie", "prediction saved time")
-    assert problems(CH04, nb) == [
-        "04: the answer says ('4', '1.05', '1.05', '1.05', 'prediction saved time', '4') of section 5, its table "
+        "04: section 5 says ('4', '1.05', '1.05', '1.05', 'prediction saved time', '4'), its table "
         "('4', '1.05', '1.05', '1.05', 'a tie', '4')"
     ]
-    nb = chapter_04()  # review r13a: the verdict on 4 queries, without saying how few that is
-    summary = nb["cells"][-1]["outputs"][1]["data"]
-    summary["text/markdown"] = summary["text/markdown"].replace(" Only 4 queries", " Then 4 queries")
-    assert problems(CH04, nb) == ["04: section 5's verdict is not stated in the opening and the summary"]
+    nb = chapter_04()
+    said = nb["cells"][3]["outputs"][1]["data"]
+    said["text/markdown"] = said["text/markdown"].replace(" Only 4 queries", " Then 4 queries")
+    assert problems(CH04, nb) == ["04: section 5's verdict is not stated once under its table"]
 
 
 def test_chapter_04_names_the_network_whose_lazy_medians_it_reports():
@@ -449,14 +488,12 @@ def test_chapter_04_names_the_network_whose_lazy_medians_it_reports():
         "medians<br>saves / tie / costs: 0 / 2 / 2 | a tie<br>(1.07)",
         "medians<br>saves / tie / costs: 1 / 1 / 2 | saves time<br>(0.70)",
     )
+    stated = _claim_expected()
+    counted = f"04: the paper's claim is said to be {stated}; section 6's tables give {(*stated[:5], '1', stated[6])}"
     assert problems(CH04, nb) == [
         "04: the opening says 'none of the four samplers' saved time (2DS, `strong` preset, medians); its row saves "
         "for ['BS']",
-        *[  # ... and the line under the first code cell and the summary, which count none of eight
-            "04: the paper's claim is said to be ('not shown here', 'neither saved nor cost', 'none', '8'); section 5 "
-            "and 6's tables give ('not shown here', 'neither saved nor cost', '1', '8')"
-        ]
-        * 2,
+        *[counted] * 2,  # ... and the line under the first code cell and the summary: none of eight, lazy PRM
     ]
 
 
@@ -485,7 +522,9 @@ def test_chapter_04_holds_its_plain_answer_to_the_table_it_summarises():
     nb = chapter_04()
     nb["cells"].pop(-2)
     assert problems(CH04, nb) == [
-        "04: the opening does not give its answer against the lazy PRM in the words the check reads"
+        "04: the opening does not give its answer against the lazy PRM in the words the check reads",
+        f"04: the prose does not say '{chapter_claims.PLAIN[_claim_expected()[0]]}' in the opening, section 6 and the "
+        "summary",
     ]
 
 

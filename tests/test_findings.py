@@ -220,3 +220,14 @@ def test_a_saving_of_exactly_ten_percent_counts_in_a_tables_row():
         "| 3DO | a tie (0.99) | a tie (0.91) | saves time (0.90) | a tie (1.08) | 1 / 3 / 0 |"
     )
     assert findings.time_verdict(1 - 0.10) == findings.SAVES and findings.time_verdict(1 + 0.10) == findings.COSTS
+
+
+def test_per_point_sentence_blames_the_machine_where_an_edge_point_costs_more_in_one_mode():
+    """Review r15a: about as many edge points with and without prediction, yet the connection stage took 102 against
+    50 ms. The same exact checker checks both modes' points: a cost per point that differs is the machine's."""
+    same = findings.per_point_sentence({"without": 500e-9, "with": 520e-9})
+    assert same.startswith("The connection stage took 500 ns an edge point without prediction and 520 ns with it")
+    assert same.endswith("the same cost, as it should be, since the same exact checker checks both modes' edges.")
+    moved = findings.per_point_sentence({"without": 320e-9, "with": 650e-9})
+    assert ": 2.03 times as much with prediction for the same exact check of a point, so the machine's speed" in moved
+    assert "machine" in findings.per_point_sentence({"without": 500e-9, "with": 450e-9})  # 0.90: a change that counts

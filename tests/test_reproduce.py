@@ -226,10 +226,36 @@ def test_each_table_says_what_without_prediction_is():
     row = next(line for line in times.splitlines() if line.startswith("| 2ds | BS |")).split("|")
     assert row[5].startswith(" **4 ± 1** / ") and row[6].startswith(" **1 ± 1** / ")  # total: baseline, with
     medians = text.split("## Time with / without prediction, medians")[1].split("## Checker")[0]
-    assert f"*Without prediction*: {BASELINES['best']}." in medians  # always the strongest
+    assert f"*Without prediction*: {BASELINES['best']}." in medians  # the strongest, unless the run names a planner:
+    assert f"*Without prediction*: {BASELINES['paper']}." in "\n".join(
+        tables.median_ratios([dict(run, planner="paper")])
+    )
     assert "| 2ds | 1.00 | 1.00 | 1.00 | 1.00 | 1.00 | 1.00 | 1.00 | 1.00 |" in medians
     assert experiments.improvement(run["planning"], "total_s") == dict.fromkeys(PAPER_SAMPLERS, 0.75)
     assert "| exact cfg/s | FCL cfg/s | learned cfg/s |" in text and "| 2ds | 4 | 2 | 1 | 0.25 |" in text
+
+
+def test_each_querys_own_ratio_and_algorithm_1_timed_twice():
+    """A run with --planner paper --baseline paper times one computation twice ("without" and the baseline): tables.md
+    gives each query's own ratio (its median and middle half) and how far the two timings' ratios lie from 1."""
+
+    def timed(per_query: list[float]) -> dict:
+        return {
+            **_summary(float(np.mean(per_query))),
+            "total_s_median": float(np.median(per_query)),
+            "total_s_per_query": per_query,
+        }
+
+    row = {
+        "without": timed([1.0, 2.0, 4.0, 8.0]),
+        "with": timed([2.0, 2.0, 4.0, 8.0]),
+        "baseline": timed([1, 2, 4, 16]),
+    }
+    run = {"scenario": "3dc7", "baseline": "paper", "planner": "paper", "planning": {"BS": row}}
+    assert tables.per_query(row) == "1.00 (1.00–1.25)"  # ratios 2, 1, 1, 1
+    assert tables.per_query_ratios([run])[-1] == "| 3dc7 | 1.00 (1.00–1.25) |"
+    assert tables.timed_twice([run])[-1] == "| 3dc7 | BS | 1.53 | 1.00 | 1.00 (1.00–1.25) |"  # means 5.75 / 3.75
+    assert tables.timed_twice([dict(run, planner=None)]) == []  # "without" is the lazy PRM: nothing timed twice
 
 
 def test_stage_times_add_up_the_planned_samplers_stages_only():

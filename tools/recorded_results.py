@@ -20,7 +20,9 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 RESULTS = ROOT / "docs" / "results.md"
 PACKAGED = ROOT / "toolkit" / "teaching" / "recorded.json"
-PRESET = re.compile(r"^## Preset `(\w+)`$")  # a preset's section; "## Preset `paper` before issue 25" is history
+PRESET = re.compile(  # a preset's section, or one planned with a named planner; "## Preset `paper` before issue 25" is
+    r"^## Preset `(\w+)`(?: with `--planner (\w+)`(?:: .*)?)?$"  # history, read by no notebook
+)
 WITHOUT = "*Without prediction*:"  # how tables.md names, under a heading, what "without" was in its table
 
 
@@ -51,7 +53,7 @@ def parse(text: str) -> dict[str, dict[str, dict]]:
             heading, notes, parts = line.removeprefix("### ").strip() if line.startswith("### ") else "", [], []
             if line.startswith("## "):
                 found = PRESET.match(line)
-                section = recorded.setdefault(found[1], {}) if found else None
+                section = recorded.setdefault(section_key(found), {}) if found else None
         elif heading and line.startswith("|"):
             if not parts or ended:
                 parts.append([])
@@ -66,6 +68,12 @@ def parse(text: str) -> dict[str, dict[str, dict]]:
             notes.append(line)
     close()
     return recorded
+
+
+def section_key(found: re.Match) -> str:
+    """The name a section's tables are read by (:mod:`toolkit.teaching.recorded`): its preset, ``"strong"``, or for a
+    run that named its planner the preset and the option, ``"strong --planner paper"``."""
+    return found[1] if found[2] is None else f"{found[1]} --planner {found[2]}"
 
 
 def joined(parts: list[list[list[str]]]) -> list[list[str]]:

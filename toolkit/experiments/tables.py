@@ -17,6 +17,7 @@ import numpy as np
 from toolkit import scenarios
 from toolkit.experiments import paper_numbers
 from toolkit.experiments.config import BASELINES
+from toolkit.util import verdicts
 
 MODES = ("without", "with")  # planning without and with prediction
 BASELINE = "baseline"  # the planning mode of Table 3's baseline, where it is not "without" (the best exact)
@@ -206,9 +207,59 @@ def median_ratios(runs: list[dict]) -> list[str]:
         [r["scenario"]] + [ratio(r["planning"][s], key) for key in ("sampling_s", "total_s") for s in samplers]
         for r in runs
     ]
-    notes = [baseline_note(runs, "best"), planners_note(runs, MODES)]
+    named = {r.get("planner") for r in runs}  # --planner paper plans "without" with Algorithm 1 too, not the lazy PRM
+    notes = [baseline_note(runs, "paper" if named == {"paper"} else "best"), planners_note(runs, MODES)]
     return ["## Time with / without prediction, medians over the queries", "", *notes, ""] + table(
         [""] + [f"Sampling {s}" for s in samplers] + [f"Total {s}" for s in samplers], rows
+    )
+
+
+def per_query(row: dict, mode: str = "with", against: str = "without") -> str:
+    """``"1.03 (0.98–1.10)"``: the median of each query's own total time in ``mode`` over its time in ``against``, and
+    the middle half of those ratios (:func:`toolkit.util.verdicts.per_query_ratios`, the ratios the chapters' verdicts
+    read); "n/a" for a run that kept no per-query times."""
+    if any("total_s_per_query" not in row[m] for m in (mode, against)):
+        return "n/a"
+    q1, median, q3 = np.percentile(
+        verdicts.per_query_ratios({"without": row[against], "with": row[mode]}), (25, 50, 75)
+    )
+    return f"{median:.2f} ({q1:.2f}–{q3:.2f})"
+
+
+def per_query_ratios(runs: list[dict]) -> list[str]:
+    """Per sampler, the median of each query's own total time with / without prediction, with the middle half: a
+    query's two times are taken in turn, under the same load, so their ratio moves less than a ratio of medians,
+    which jumps where the queries' times gather in two groups."""
+    samplers = samplers_of(runs)
+    rows = [[r["scenario"]] + [per_query(r["planning"][s]) for s in samplers] for r in runs]
+    note = "*Each query's own ratio*: total time with / without prediction, its median over the queries (middle half)."
+    return ["## Time with / without prediction, each query's own ratio", "", note, ""] + table(
+        ["", *(f"Total {s}" for s in samplers)], rows
+    )
+
+
+def timed_twice(runs: list[dict]) -> list[str]:
+    """Where a run planned without prediction twice (``--planner paper --baseline paper``: "without" and Table 3's
+    baseline are then one computation, Algorithm 1 with the same checker and seeds), their ratio per sampler: how far
+    timing alone moves a ratio of means, of medians, and each query's own ratio."""
+    rows = [
+        [r["scenario"], s]
+        + [f"{p[BASELINE][key] / p['without'][key]:.2f}" for key in ("total_s", "total_s_median")]
+        + [per_query(p, BASELINE)]
+        for r in runs
+        if r.get("baseline") == "paper" and r.get("planner") == "paper"
+        for s, p in r["planning"].items()
+    ]
+    if not rows:
+        return []
+    note = (
+        "*Timed twice*: without prediction and Table 3's baseline are the same computation (Algorithm 1, the same "
+        "exact checker, the same seeds), each query timed in turn with the other modes; total time, baseline / "
+        "without."
+    )
+    return ["## Without prediction, timed twice", "", note, ""] + table(
+        ["", "sampler", "ratio of the means", "ratio of the medians", "each query's own ratio: median (middle half)"],
+        rows,
     )
 
 
@@ -255,5 +306,14 @@ def summary_markdown(runs: list[dict]) -> str:
 
 def _document(title: str, runs: list[dict]) -> str:
     return "\n".join(
-        [title, "", EVERY_CELL, ""] + paper_tables(runs) + [""] + median_ratios(runs) + [""] + run_costs(runs) + [""]
+        [title, "", EVERY_CELL, ""]
+        + paper_tables(runs)
+        + [""]
+        + median_ratios(runs)
+        + [""]
+        + per_query_ratios(runs)
+        + [""]
+        + [*timed_twice(runs), ""] * bool(timed_twice(runs))
+        + run_costs(runs)
+        + [""]
     )

@@ -217,7 +217,8 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]], *, tie: 
     """
     names = list(dict.fromkeys(name for series in baselines.values() for name in series))  # every series, once
     entries = len(names) + (tie is not None)  # the legend's: every series and the band
-    height = 2.6 * len(baselines) + 0.1 + 0.2 * -(-entries // 2)  # one baseline a row; the legend, two a row
+    columns = 2 if max(map(len, names)) <= 40 else 1  # the legend's: two long names side by side overflow the page
+    height = 2.6 * len(baselines) + 0.1 + 0.2 * -(-entries // columns)  # one baseline a row; then the legend
     fig = Figure(figsize=(PAGE_WIDTH, height))
     axes = fig.subplots(len(baselines), 1, squeeze=False, sharey=True)[:, 0]
     said = []
@@ -247,9 +248,7 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]], *, tie: 
     _log_ticks(axes[0])  # shared by every panel
     for ax in axes:
         ax.tick_params(labelsize=9, labelleft=True)  # each row its own numbers
-    shown = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # each series once
-    fig.legend(shown.values(), shown.keys(), loc="lower center", ncol=min(len(shown), 2), fontsize=9, frameon=False)
-    fig.tight_layout(rect=(0, (0.1 + 0.2 * -(-len(shown) // 2)) / fig.get_figheight(), 1, 1))
+    _legend_above(fig, axes, columns)
     text = "Planning time with prediction divided by the time without, a point per sampler and series, log scale, read"
     text += " against the line at 1" + ("" if tie is None else f" and the shaded {_band_words(tie)}")
     text += "; below 1 prediction saves"
@@ -263,6 +262,16 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]], *, tie: 
         for title, series in baselines.items()
     ]
     return describe(fig, f"{text} time. {'; '.join(said)}.", parts)
+
+
+def _legend_above(fig: Figure, axes, columns: int) -> None:
+    """Each series once in a legend over the first panel, where a reader starts (review r15a: under the last of four
+    panels it was far from the first), ``columns`` entries a row; the panels laid out below it."""
+    shown = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}
+    fig.legend(
+        shown.values(), shown.keys(), loc="upper center", ncol=min(len(shown), columns), fontsize=9, frameon=False
+    )
+    fig.tight_layout(rect=(0, 0, 1, 1 - (0.1 + 0.2 * -(-len(shown) // columns)) / fig.get_figheight()))
 
 
 def _band_words(tie: float) -> str:

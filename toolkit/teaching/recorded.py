@@ -11,6 +11,11 @@ the ones the docs show, and follow the docs when the reproduction is run again::
     recorded.ours(row["Seen TPR"])                          # 1.0: our figure of the cell "**100%** / 87%"
     recorded.without("strong", "medians")                   # what "without prediction" was, where the docs say
     recorded.improvements("paper", "3dc7")                  # Table 3's totals: {"BS": 0.09, "OB": 0.04, ...}
+    recorded.query_ratios(recorded.ALGORITHM_1)             # the `strong` network inside Algorithm 1, each
+                                                            # query's own ratio: {scenario: {sampler: median}}
+
+A section run with a named planner (``## Preset `strong` with `--planner paper` ``) is read by the preset and the
+option, ``"strong --planner paper"`` (:data:`ALGORITHM_1`).
 
 The tables travel with the package, in ``recorded.json`` beside this file (an installed toolkit has no ``docs/``):
 ``python -m tools.recorded_results`` writes it from ``docs/results.md``, and a test holds the two equal. Every
@@ -26,6 +31,8 @@ from functools import cache
 from importlib import resources
 
 Tables = Mapping[str, Mapping[str, dict]]  # {preset: {heading: {"without", "columns", "rows"}}}
+ALGORITHM_1 = "strong --planner paper"  # the section of our accurate network inside the paper's Algorithm 1 (a run of
+# `toolkit reproduce --preset strong --planner paper --baseline paper`): the paper's claim, tested over 100 queries
 
 
 @cache
@@ -67,6 +74,15 @@ def median_ratios(preset: str, recorded: Tables | None = None) -> dict[str, dict
             kind, sampler = column.split()  # e.g. "Sampling BS"
             ratios.setdefault(scenario, {}).setdefault(kind.lower(), {})[sampler] = ours(cell)
     return ratios
+
+
+def query_ratios(preset: str, recorded: Tables | None = None) -> dict[str, dict[str, float]]:
+    """The table "Time with / without prediction, each query's own ratio" of ``preset`` (a run that kept each query's
+    times): ``{scenario: {sampler: the median of each query's total time with / without}}``."""
+    return {
+        scenario: {column.split()[1]: ours(cell) for column, cell in cells.items()}
+        for scenario, cells in table(preset, "each query's own ratio", recorded).items()
+    }
 
 
 def improvements(preset: str, scenario: str, kind: str = "total", recorded: Tables | None = None) -> dict[str, float]:
