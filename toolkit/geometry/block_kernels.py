@@ -188,22 +188,23 @@ def _block_needs(Q, first, block, robot, centers, far, world, corner, cells):
     ``2 + l`` link ``l``'s cell of ``world``'s lists (``corner (3,)``: their grid's corner, 0 along a 2D world's third
     axis); row 1 scratch. Every loop runs over the block's configurations. Returns whether every number of the block
     is finite."""
-    for n in range(block):
-        cells[0, n] = 0
-    for i in range(Q.shape[1]):  # bit 0: out of bounds; bit 1: not finite (x - x is NaN for NaN and infinities)
-        lower, upper = robot.lower[i], robot.upper[i]
-        for n in range(block):
+    lower, upper = robot.lower, robot.upper
+    for n in range(block):  # bit 0: out of bounds; bit 1: not finite (x - x is NaN for NaN and infinities)
+        out = odd = 0
+        for i in range(Q.shape[1]):  # a configuration's numbers lie side by side: one loop, not one per column
             x = Q[first + n, i]
-            odd = np.int64(x - x != 0.0)
-            cells[0, n] |= np.int64((x < lower) | (x > upper)) | odd | (odd << 1)
+            odd |= np.int64(x - x != 0.0)
+            out |= np.int64((x < lower[i]) | (x > upper[i]))
+        cells[0, n] = out | odd | (odd << 1)
     bits = far.bits
+    lanes = min(-(-block // 32) * 32, BLOCK)
     for link in range(len(centers)):
         ball = far.link_ball[link]
-        _grid_cells(centers, link, far.lower, far.cell, far.shape, cells, 1, block)
+        _grid_cells(centers, link, far.lower, far.cell, far.shape, cells, 1, lanes)
         for n in range(block):
             flat = cells[1, n]
             cells[0, n] |= np.int64(1 - ((bits[ball, flat >> 6] >> (flat & 63)) & 1)) << (link + 2)
-        _grid_cells(centers, link, corner, world.cell, world.shape, cells, 2 + link, block)
+        _grid_cells(centers, link, corner, world.cell, world.shape, cells, 2 + link, lanes)
     finite = True
     for n in range(block):
         finite &= not cells[0, n] & 2
