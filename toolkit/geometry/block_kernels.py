@@ -36,8 +36,9 @@ from __future__ import annotations
 import numpy as np
 from numba import njit, types
 from numba.core import cgutils
+from numba.core.datamodel import models
 from numba.experimental import structref
-from numba.extending import intrinsic
+from numba.extending import intrinsic, register_model
 
 from toolkit.geometry.frame_kernels import block_frames, first_angle
 from toolkit.geometry.kernels import boxes_touch
@@ -74,8 +75,41 @@ structref.define_constructor(Arrays, ArraysType, FIELDS)
 structref.define_boxing(ArraysType, Arrays)
 
 
+class BorrowedArray(types.Array):
+    """numba's type of an array that counts no references: numba calls nothing when it is copied or dropped, where
+    for an array it calls the runtime's ``NRT_incref``/``NRT_decref`` at every copy, even of an array whose count is
+    not kept (a call of 16 configurations made 277 such calls). Whoever holds one keeps its array alive
+    (:attr:`Arrays.owners`). A view taken of it is an ordinary array again."""
+
+    def __init__(self, dtype, ndim, layout, readonly=False, aligned=True):
+        name = f"borrowed array({dtype}, {ndim}d, {layout})"
+        super().__init__(dtype, ndim, layout, readonly=readonly, name=name, aligned=aligned)
+
+    def __repr__(self):  # not an Array's: a compiled version's name, made from it, tells the two apart
+        return f"Borrowed{super().__repr__()}"
+
+
+@register_model(BorrowedArray)
+class BorrowedArrayModel(models.ArrayModel):
+    """An array's data, laid out as an array's; it lists no members, so numba finds no reference count in it."""
+
+    def traverse(self, builder):
+        return []
+
+
+def _borrowed_type(typ):
+    """``typ`` with every array in it (in tuples too) a :class:`BorrowedArray`."""
+    if isinstance(typ, types.Array):
+        return BorrowedArray(typ.dtype, typ.ndim, typ.layout, readonly=not typ.mutable, aligned=typ.aligned)
+    if isinstance(typ, types.BaseNamedTuple):
+        return types.NamedTuple([_borrowed_type(t) for t in typ], typ.instance_class)
+    if isinstance(typ, types.BaseTuple):
+        return types.Tuple([_borrowed_type(t) for t in typ])
+    return typ
+
+
 def _borrow_value(context, builder, typ, value):
-    """``value`` of numba type ``typ`` with every array in it (in tuples too) a view that counts no references."""
+    """``value`` of numba type ``typ`` as :func:`_borrowed_type`'s: every array in it with no reference count."""
     if isinstance(typ, types.Array):
         view = cgutils.create_struct_proxy(typ)(context, builder, value=value)
         view.meminfo = cgutils.get_null_value(view.meminfo.type)
@@ -83,20 +117,20 @@ def _borrow_value(context, builder, typ, value):
         return view._getvalue()
     if isinstance(typ, types.BaseTuple):
         items = [_borrow_value(context, builder, t, builder.extract_value(value, i)) for i, t in enumerate(typ)]
-        return context.make_tuple(builder, typ, items)
+        return context.make_tuple(builder, _borrowed_type(typ), items)
     return value
 
 
 @intrinsic
 def _borrowed(typingctx, value):
-    """``value`` (an array, or a tuple holding arrays) with its arrays as views that count no references: no
-    atomic operation when the loop takes them or a view of them, where a counted array costs two (about 2.5 ns a
-    pair here). Whoever holds the views keeps the arrays themselves alive (:attr:`Arrays.owners`)."""
+    """``value`` (an array, or a tuple holding arrays) with its arrays as :class:`BorrowedArray`: the loop takes
+    them, and reads them, with no call to count references. Whoever holds them keeps the arrays themselves alive
+    (:attr:`Arrays.owners`)."""
 
     def codegen(context, builder, signature, args):
         return _borrow_value(context, builder, signature.args[0], args[0])
 
-    return value(value), codegen
+    return _borrowed_type(value)(value), codegen
 
 
 @njit(cache=True)
@@ -105,8 +139,8 @@ def arrays(robot, world) -> Arrays:
     rather than at every call, the region's walls padded to 3D with infinities, its grid's corner (0 where padded)
     and per link the squared radii of a ball holding its box and of one it holds, a billionth inside the truth.
 
-    The fields the loop reads hold views that count no references (:func:`_borrowed`; a call of 16 configurations
-    took and dropped about 140 references, a third of its time); ``owners`` holds the arrays themselves."""
+    The fields the loop reads hold arrays that count no references (:func:`_borrowed`: a call of 16 configurations
+    made 277 calls to count them, 21 now); ``owners`` holds the arrays themselves."""
     half, n_links, dim = robot.half_extents, len(robot.half_extents), len(world.lower)
     walls, corner, balls = np.empty(6), np.empty(3), np.empty((2, n_links))
     for i in range(3):
@@ -154,22 +188,23 @@ def _block_needs(Q, first, block, robot, centers, far, world, corner, cells):
     ``2 + l`` link ``l``'s cell of ``world``'s lists (``corner (3,)``: their grid's corner, 0 along a 2D world's third
     axis); row 1 scratch. Every loop runs over the block's configurations. Returns whether every number of the block
     is finite."""
-    for n in range(block):
-        cells[0, n] = 0
-    for i in range(Q.shape[1]):  # bit 0: out of bounds; bit 1: not finite (x - x is NaN for NaN and infinities)
-        lower, upper = robot.lower[i], robot.upper[i]
-        for n in range(block):
+    lower, upper = robot.lower, robot.upper
+    for n in range(block):  # bit 0: out of bounds; bit 1: not finite (x - x is NaN for NaN and infinities)
+        out = odd = 0
+        for i in range(Q.shape[1]):  # a configuration's numbers lie side by side: one loop, not one per column
             x = Q[first + n, i]
-            odd = np.int64(x - x != 0.0)
-            cells[0, n] |= np.int64((x < lower) | (x > upper)) | odd | (odd << 1)
+            odd |= np.int64(x - x != 0.0)
+            out |= np.int64((x < lower[i]) | (x > upper[i]))
+        cells[0, n] = out | odd | (odd << 1)
     bits = far.bits
+    lanes = min(-(-block // 32) * 32, BLOCK)
     for link in range(len(centers)):
         ball = far.link_ball[link]
-        _grid_cells(centers, link, far.lower, far.cell, far.shape, cells, 1, block)
+        _grid_cells(centers, link, far.lower, far.cell, far.shape, cells, 1, lanes)
         for n in range(block):
             flat = cells[1, n]
             cells[0, n] |= np.int64(1 - ((bits[ball, flat >> 6] >> (flat & 63)) & 1)) << (link + 2)
-        _grid_cells(centers, link, corner, world.cell, world.shape, cells, 2 + link, block)
+        _grid_cells(centers, link, corner, world.cell, world.shape, cells, 2 + link, lanes)
     finite = True
     for n in range(block):
         finite &= not cells[0, n] & 2
