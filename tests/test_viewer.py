@@ -244,6 +244,10 @@ def test_a_wrong_model_is_marked_everywhere(make_panel, rng):
         np.asarray(v.nodes["prediction"].batched_colors) == draw.probability_colors([0.0])
     )  # cividis' dark end
     assert v.nodes["prediction"].opacity == draw.PREDICTION_OPACITY < 1  # faint: the links' colour shows through
+    # reader r15b: at 1.15 times a 0.1-thick link the wireframe lay on the link's edges; it stands half the thinnest
+    # link's thickness clear of every face
+    links = draw.robot_boxes(v.robot, v.q[None])
+    np.testing.assert_allclose(v.nodes["prediction"].batched_scales, links.sizes + 2 * float(np.min(links.sizes)) / 2)
     assert "disagrees" in panel.status.content
     v.sample("raw", 300, seed=1)
     valid = v.exact.are_valid(v.robot.sample(np.random.default_rng(1), 300))

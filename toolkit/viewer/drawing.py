@@ -71,9 +71,9 @@ class Boxes:
     def __len__(self) -> int:
         return len(self.centers)
 
-    def scaled(self, factor: float) -> Boxes:
-        """The same boxes, each ``factor`` times larger about its centre."""
-        return Boxes(self.centers, self.rotations, self.sizes * factor)
+    def grown(self, margin: float) -> Boxes:
+        """The same boxes, ``margin`` larger on every side, about their centres."""
+        return Boxes(self.centers, self.rotations, self.sizes + 2 * margin)
 
 
 def obstacle_boxes(workspace: Workspace) -> Boxes:

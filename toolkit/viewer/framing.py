@@ -43,7 +43,7 @@ def camera_pose(robot: BoxRobot, workspace: Workspace, q: np.ndarray) -> tuple[n
 
 
 ROBOT_VIEW = (-0.45, -1.0, 0.7)  # a robot camera's direction: from the front-left and above (length ~1.3: it fits)
-ROBOT_SPAN = 2.5  # a robot's camera frames this many robot sizes: the robot, large, and the blocks beside it
+ROBOT_SPAN = 1.6  # a robot's camera frames this many robot sizes: the robot, large, and the blocks beside it
 
 
 def robot_camera(
