@@ -80,6 +80,13 @@ def test_scene_holds_the_workspace_and_the_robot(make_panel, name):
     np.testing.assert_allclose([s.min for s in sliders], scenario.robot.lower)
     np.testing.assert_allclose([s.max for s in sliders], scenario.robot.upper)
     np.testing.assert_allclose([s.value for s in sliders], v.q)
+    # reader r15b: the yaw's box showed 2.5128 cut off and its ends read -3.141593: each slider steps by the power of
+    # ten under 1/500 of its range, shows that many decimals, and labels its ends with two
+    range_ = scenario.robot.upper - scenario.robot.lower  # (dof,)
+    steps = np.array([s.step for s in sliders])
+    assert np.all((steps <= range_ / 500) & (steps > range_ / 5000))
+    assert [s.precision for s in sliders] == [round(-np.log10(step)) for step in steps]
+    assert all(s.precision <= 3 for s in sliders), [s.precision for s in sliders]  # viser's covered the ends': 6
     assert "prediction" not in v.nodes and "disagreement" not in v.nodes  # no model loaded
 
 
