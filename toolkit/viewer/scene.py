@@ -140,7 +140,7 @@ class Viewer:
             self._aim_camera(*framing.camera_pose(self.robot, self.workspace, self.q))
             boxes = draw.robot_boxes(self.robot, self.q[None])
             self._add("robot", draw.add_boxes(self.server.scene, "/robot/links", boxes, colors=draw.VALID))
-            self._add("link_edges", draw.add_edges(self.server.scene, "/robot/link_edges", boxes))
+            self._add("link_edges", draw.add_edges(self.server.scene, "/robot/link_edges", boxes, draw.LINK_EDGE_PX))
             if self.model is not None:
                 self._add(
                     "prediction",
