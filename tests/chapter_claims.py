@@ -144,6 +144,11 @@ def chapter_02(nb) -> list[str]:
         first, highest, right, free = (float(v.replace(",", "")) for v in adagrad.groups())
         if highest < 100 * first or right >= free:
             problems.append(f"02: Adagrad at 0.1 did not diverge here: {adagrad.group(0)}")
+    seen = re.search(r"\| seen \| [\d.]+% – [\d.]+% \| [+-][\d.]+ – [+-][\d.]+ \| (\d+) of (\d+) \|", found)
+    if seen is None:
+        problems.append("02: section 5's ranges of the seen and unseen grids are not printed")
+    elif "memorized. Near perfect" in found and seen.group(1) != seen.group(2):  # "sit ... above the diagonal"
+        problems.append(f"02: a memorized CAE's seen grids are not all above the diagonal: {seen.group(0)}")
     return problems + _chapter_02_unseen(nb, found)
 
 

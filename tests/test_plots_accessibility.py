@@ -35,6 +35,7 @@ from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace, from_mesh
 from toolkit.planning.prm import PlanStep
 from toolkit.plots import (
+    accuracy_panels,
     alt,
     cae,
     classifier,
@@ -50,7 +51,19 @@ from toolkit.plots import (
 )
 
 crossover = importlib.import_module("toolkit.plots.crossover")  # the package exports its function by that name
-MODULES = (cae, classifier, crossover, cspace, planning, reproduction, robot_drawing, scenes, timings, tutorials)
+MODULES = (
+    accuracy_panels,
+    cae,
+    classifier,
+    crossover,
+    cspace,
+    planning,
+    reproduction,
+    robot_drawing,
+    scenes,
+    timings,
+    tutorials,
+)
 PALETTE = {to_hex(c) for c in [*palette.COLORS.values(), *palette.OKABE_ITO.values(), *palette.CATEGORICAL]}
 PALETTE |= {to_hex(c) for c in palette.LINE_COLORS}
 DEFAULT_CYCLE = {"#1f77b4", "#ff7f0e", "#2ca02c", "#d62728", "#9467bd", "#8c564b", "#e377c2", "#7f7f7f", "#bcbd22"}
@@ -150,6 +163,9 @@ def gallery() -> dict[str, Figure]:
         "cae.reconstructions": cae.reconstructions(grids, decoded, ["seen 0", "unseen 1"]),
         "cae.accuracy_vs_all_free": cae.accuracy_vs_all_free(
             {"seen": (np.array([0.7, 0.8]), np.array([0.9, 0.85])), "unseen": (np.array([0.75]), np.array([0.7]))}
+        ),
+        "accuracy_panels.accuracy_panels": accuracy_panels.accuracy_panels(
+            {"30 grids: unseen": (np.array([0.7, 0.8]), np.array([0.9, 0.85])), "many": (np.array([0.75]), np.ones(1))}
         ),
         "cae.contraction": cae.contraction(
             {"paper": rng.random(5), "strong": rng.random(5) * 2},
@@ -478,6 +494,7 @@ def _mark_colours(artist) -> set[str]:
 
 SITE_PIXELS = 750  # the widest a chapter's figure is shown on the course site (its content column), in pixels
 CHAPTER_FIGURES = (  # the figures chapters 02 to 05 show, read on the site at its width (issue 45)
+    "accuracy_panels.accuracy_panels",
     "cae.contraction",
     "classifier.probability_map",
     "crossover.crossover",

@@ -359,3 +359,24 @@ def test_large_groups_are_hollow_and_coinciding_means_nest():
     sizes, orders = [m.get_sizes()[0] for m in means], [m.get_zorder() for m in means]
     assert sizes == sorted(sizes, reverse=True) and len(set(sizes)) == 3 and orders == sorted(orders)
     assert sizes[-1] <= 0.6 * sizes[-2]  # the smaller square inside the larger: both edges show
+
+
+def test_accuracy_panels_draw_each_group_alone_on_shared_axes():
+    """Review r15c: in one axes the 1000-grid CAE's unseen workspaces (triangles) buried its training grids (squares),
+    however layered. Each group has a panel of its own, every workspace once, on axes shared with the others, the
+    diagonal and the group's mean in each."""
+    from toolkit.plots.accuracy_panels import accuracy_panels
+
+    rng = np.random.default_rng(2)
+    groups = {name: (rng.uniform(0.7, 0.95, n), rng.uniform(0.7, 1.0, n)) for name, n in (("a", 30), ("b", 500))}
+    fig = accuracy_panels(groups)
+    assert len(fig.axes) == 2 and fig.axes[0].get_shared_y_axes().joined(*fig.axes)
+    for ax, (name, (all_free, accuracy)) in zip(fig.axes, groups.items()):
+        (points,) = [c for c in ax.collections if c.get_gid() == name]
+        np.testing.assert_allclose(points.get_offsets(), np.column_stack([all_free, accuracy]))
+        (mean,) = [c for c in ax.collections if c.get_gid() == f"{name}: mean"]
+        np.testing.assert_allclose(mean.get_offsets()[0], [all_free.mean(), accuracy.mean()])
+        (diagonal,) = ax.get_lines()
+        np.testing.assert_allclose(diagonal.get_xdata(), diagonal.get_ydata())
+        assert f"mean {accuracy.mean():.1%} vs {all_free.mean():.1%}" in ax.get_title()
+    assert "b: 500 workspaces" in alt.alt_text(fig)

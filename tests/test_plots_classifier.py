@@ -284,9 +284,11 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     path_line = next(line for line in ax.get_lines() if line.get_label() == "returned path (checked exactly)")
     assert path_line.get_linestyle() == "--" and path_line.get_marker() == "D"  # not the boundary's solid line
     crosses = next(line for line in ax.get_lines() if line.get_label() == "roadmap node in collision")
-    squares = next(c for c in ax.collections if c.get_label() == "invalid kept (dangerous)")
-    assert crosses.get_zorder() > squares.get_zorder()  # a cross on a dangerous square shows (reader r12b)
-    assert to_rgba(crosses.get_color()) != to_rgba(squares.get_facecolor()[0])  # nor hides among them by colour (r13b)
+    assert crosses.get_zorder() > path_line.get_zorder()
+    # readers r12b, r13b, r15c: a cross among the map's dangerous squares hid there; the map's mistakes go unmarked
+    assert [c.get_label() for c in ax.collections if c.get_label() in answers.ANSWERS] == []
+    (cut,) = [c for c in ax.collections if isinstance(c, ContourSet) and c.get_linestyle()[0][1]]  # the dotted one
+    assert min(cut.get_linewidths()) >= 2.5  # bold: followed across the map (r15c found it faint at 1.5)
     assert [t.xy for t in ax.texts if t.get_text() == "in collision"] == [tuple(n) for n in nodes[~nodes_valid]]
 
 
@@ -304,8 +306,11 @@ def test_conservative_dots_show_on_every_grey_in_ink_over_a_white_under_stroke(g
     assert hatched[0].get_hatch_linewidth() > hatched[1].get_hatch_linewidth()  # the white one wider: a ring
     np.testing.assert_array_equal(hatched[0].get_paths()[0].vertices, hatched[1].get_paths()[0].vertices)
     # review r14c: a dense hatch ("..", twelve dots an inch) over a tint hid P(valid) where a model rejects most of
-    # the map; six dots an inch on no tint leave the grey between them as it is
-    assert [c.get_hatch() for c in hatched] == [".", "."]
+    # the map; six dots an inch on no tint leave the grey between them as it is, beside another map. A map alone is as
+    # wide as the page, and there a one-cell strip of mistakes caught no dot at six an inch (r15c): twelve, no tint
+    assert [c.get_hatch() for c in hatched] == ["..", ".."]
+    pair = pc.probability_maps({"a": probability, "b": probability}, valid, grid, thresholds=0.45).axes[0]
+    assert [c.get_hatch() for c in pair.collections if isinstance(c, PolyCollection) and c.get_hatch()] == [".", "."]
     assert all(np.all(np.asarray(c.get_facecolor())[..., 3] == 0) for c in hatched)
     for level in np.linspace(0, 1, 101):  # every grey of the map
         grey = to_hex((level, level, level))

@@ -80,6 +80,13 @@ def test_scene_holds_the_workspace_and_the_robot(make_panel, name):
     np.testing.assert_allclose([s.min for s in sliders], scenario.robot.lower)
     np.testing.assert_allclose([s.max for s in sliders], scenario.robot.upper)
     np.testing.assert_allclose([s.value for s in sliders], v.q)
+    # reader r15b: the yaw's box showed 2.5128 cut off and its ends read -3.141593: each slider steps by the power of
+    # ten under 1/500 of its range, shows that many decimals, and labels its ends with two
+    range_ = scenario.robot.upper - scenario.robot.lower  # (dof,)
+    steps = np.array([s.step for s in sliders])
+    assert np.all((steps <= range_ / 500) & (steps > range_ / 5000))
+    assert [s.precision for s in sliders] == [round(-np.log10(step)) for step in steps]
+    assert all(s.precision <= 3 for s in sliders), [s.precision for s in sliders]  # viser's covered the ends': 6
     assert "prediction" not in v.nodes and "disagreement" not in v.nodes  # no model loaded
 
 
@@ -244,6 +251,10 @@ def test_a_wrong_model_is_marked_everywhere(make_panel, rng):
         np.asarray(v.nodes["prediction"].batched_colors) == draw.probability_colors([0.0])
     )  # cividis' dark end
     assert v.nodes["prediction"].opacity == draw.PREDICTION_OPACITY < 1  # faint: the links' colour shows through
+    # reader r15b: at 1.15 times a 0.1-thick link the wireframe lay on the link's edges; it stands half the thinnest
+    # link's thickness clear of every face
+    links = draw.robot_boxes(v.robot, v.q[None])
+    np.testing.assert_allclose(v.nodes["prediction"].batched_scales, links.sizes + 2 * float(np.min(links.sizes)) / 2)
     assert "disagrees" in panel.status.content
     v.sample("raw", 300, seed=1)
     valid = v.exact.are_valid(v.robot.sample(np.random.default_rng(1), 300))

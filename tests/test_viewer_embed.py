@@ -145,6 +145,9 @@ def test_a_snapshot_starts_framing_the_robot_and_leaves_the_live_camera_alone(pl
     np.testing.assert_allclose(camera["position"], position)
     np.testing.assert_allclose(look_at, v.robot.link_boxes(v.q[None])[0][0].mean(axis=0))  # the middle of the robot
     assert np.linalg.norm(position - look_at) < 4  # close: the 0.5-long chain, not the 11-unit cube
+    alone = framing.robot_camera(v.robot, v.q)  # no scene to step round: the snapshot's span, nearer the animation's
+    span = np.linalg.norm(alone[1] - alone[0]) / (framing.robot_size(v.robot) * np.linalg.norm(framing.ROBOT_VIEW))
+    assert span == pytest.approx(framing.SNAPSHOT_SPAN) and span < framing.ROBOT_SPAN  # reader r15b: 3DC-9 at 60 px
     np.testing.assert_allclose(v.server.initial_camera.look_at, live[0])
     np.testing.assert_allclose(v.server.initial_camera.position, live[1])
 

@@ -188,7 +188,7 @@ def draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> 
             f"{name + ': ' if name else ''}area under the curve {auc:.2f}; at threshold {threshold:.2f} it keeps "
             f"{tpr_t[0]:.0%} of the valid configurations and {fpr_t[0]:.0%} of those in collision"
         )
-    ax.set_xlabel("FPR: invalid kept (dangerous) = 1 - TNR")
+    ax.set_xlabel("FPR: invalid kept\n(dangerous) = 1 - TNR")
     ax.set_ylabel("TPR: valid kept")
     ax.set_xlim(-0.02, 1.02)
     ax.set_ylim(-0.02, 1.02)

@@ -13,9 +13,8 @@ P(valid) >= a threshold. Against the exact checker each answer is one of four ki
 The maps here sweep two degrees of freedom over their bounds (:func:`toolkit.plots.slices.slice_grid`;
 the point robot's whole C-space, or a 2-DoF slice of a 3D robot with the other joints
 fixed), show P(valid) as an image, draw the true C-obstacle boundary over it and mark
-every mistake at its cell: dangerous ones as squares, conservative ones with a sparse dotted hatch and no tint
-(a hatch, not a dot per cell, so that the gray levels between the dots still show where a model rejects whole
-regions: review r14c found a dense hatch hid P(valid) on most of the `paper` preset's map).
+every mistake at its cell: dangerous ones as squares, conservative ones with a dotted hatch and no tint (sparse beside
+another map: review r14c found a dense one hid P(valid) on the `paper` preset's; twice as dense on a map alone).
 
 >>> grid = slice_grid(robot, dofs=(0, 1), n=80)  # doctest: +SKIP
 >>> probability = grid.image(checker.probability(grid.configs))  # (80, 80)  # doctest: +SKIP
@@ -60,12 +59,14 @@ def probability_maps(
     probabilities: Mapping[str, np.ndarray], valid, grid: CSpaceSlice, *, thresholds: float | Mapping[str, float] = 0.5
 ) -> Figure:
     """Several models' P(valid) maps side by side, same grid and truth (e.g. the ``paper`` and ``strong`` presets)."""
-    fig = Figure(figsize=(min(PAGE_WIDTH, 3.6 * len(probabilities) + 0.8), 4.2), layout="constrained")
+    alone = len(probabilities) == 1  # as wide as the page (review r15c: at 230 px a one-cell strip was a pixel)
+    size = (PAGE_WIDTH, 5.6) if alone else (min(PAGE_WIDTH, 3.6 * len(probabilities) + 0.8), 4.2)
+    fig = Figure(figsize=size, layout="constrained")
     axes = fig.subplots(1, len(probabilities), squeeze=False)[0]
     said, parts = [], []
     for ax, (name, probability) in zip(axes, probabilities.items()):
         t = thresholds[name] if isinstance(thresholds, Mapping) else thresholds
-        image = _draw_probability(ax, probability, valid, grid, t)
+        image = _draw_probability(ax, probability, valid, grid, t, dots=".." if alone else ".")
         ax.set_title(f"{name}: P(valid), threshold {t:.2f}", fontsize=9)
         said.append(f"{name}, threshold {t:.2f}: " + answers.answers_in_words(np.asarray(probability) >= t, valid))
         parts.append(answers.map_in_regions(name, said[-1], probability, valid, grid, t))
@@ -87,23 +88,23 @@ def path_map(
     Nodes in collision (``nodes_valid`` False, by the exact checker) are the dangerous mistakes the planner accepted:
     large ink crosses ringed white, labelled. The path, checked exactly, avoids them; it is dashed with a
     diamond per configuration, so that it stands apart from the solid C-obstacle boundary. The model's threshold is a
-    dotted line (P(valid) = threshold): the roadmap's dots on its dark side are nodes the model rejected, which the
-    exact checker drew; conservative cells are not hatched here, so that no dot is mistaken for a node.
+    bold dotted line (P(valid) = threshold): the roadmap's dots on its dark side are nodes the model rejected, which
+    the exact checker drew. The map's mistakes are not marked: no hatch dot passes for a node, no square buries a cross.
     """
     nodes, nodes_valid, path = np.asarray(nodes), np.asarray(nodes_valid, dtype=bool), np.asarray(path)
     fig = Figure(figsize=(6, 6.2), layout="constrained")
     ax = fig.subplots()
-    image = _draw_probability(ax, probability, valid, grid, threshold, conservative=False)
+    image = _draw_probability(ax, probability, valid, grid, threshold, mistakes=False)
     fig.colorbar(image, ax=ax, label="P(valid)", shrink=0.8)
     p = _on_grid(probability, grid, "probability")
     if p.min() < threshold <= p.max():
-        cut_line = ax.contour(*grid.axes, p.T, levels=[threshold], colors=COLORS["ink"], linestyles=":", linewidths=1.5)
-        cut_line.set_path_effects(halo(1.5, ("free",)))  # a white ring: it shows on the dark side too
-    cut = Line2D([], [], color=COLORS["ink"], linestyle=":", linewidth=1.5, label=f"P(valid) = {threshold:.2f}")
+        cut_line = ax.contour(*grid.axes, p.T, levels=[threshold], colors=COLORS["ink"], linestyles=":", linewidths=CUT)
+        cut_line.set_path_effects(halo(CUT, ("free",)))  # a white ring: it shows on the dark side too
+    cut = Line2D([], [], color=COLORS["ink"], linestyle=":", linewidth=CUT, label=f"P(valid) = {threshold:.2f}")
     x, y = grid.dofs
     _draw_roadmap(ax, nodes, nodes_valid, path, (x, y))
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=10, wrap=True)
-    _legend(fig, _mistake_handles()[:1] + [cut] + ax.get_lines())
+    _legend(fig, [cut] + ax.get_lines())
     fit_cell_marks(fig, grid)
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
     text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (crosses), and the"
@@ -165,7 +166,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     """One threshold three ways: the decision map (each cell coloured by its kind of answer), the counts, the ROC."""
     predicted = np.asarray(probability) >= threshold
     fig = Figure(figsize=(6.2, 6.8), layout="constrained")  # two rows, as wide as a chapter page's column
-    grid_spec = fig.add_gridspec(2, 2, height_ratios=(1.25, 1))
+    grid_spec = fig.add_gridspec(2, 2, height_ratios=(1.4, 1), width_ratios=(1.6, 1))  # the map large: its marks small
     ax_map, ax_counts, ax_roc = (fig.add_subplot(grid_spec[where]) for where in ((0, 0), (1, slice(None)), (0, 1)))
     _draw_decision(ax_map, predicted, valid, grid)
     ax_map.set_title(f"decision at threshold {threshold:.2f}\na mark per cell holding a mistake", fontsize=9)
@@ -212,9 +213,10 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
 # -- the panels ----------------------------------------------------------------
 
 
-def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float, *, conservative: bool = True):
-    """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary, dangerous cells as squares, conservative cells
-    hatched with sparse dots (:func:`_cells`; ``conservative=False``: not marked, where other dots are drawn)."""
+def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float, *, mistakes=True, dots="."):
+    """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary and, with ``mistakes``, dangerous cells as squares
+    and conservative cells hatched with ``dots`` (:func:`_cells`; sparse, ``".."`` twice as dense for a map alone on
+    the page's width: a one-cell strip of mistakes shows)."""
     probability = _on_grid(probability, grid, "probability")
     image = ax.imshow(
         probability.T,
@@ -228,13 +230,14 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     )
     _draw_boundary(ax, valid, grid)
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
-    if conservative:
-        ax.add_collection(_cells(grid, codes == 1, **UNDER_HATCH))
-        ax.add_collection(_cells(grid, codes == 1, label=ANSWERS[1], **CONSERVATIVE_CELLS))
-    draw_cell_marks(ax, grid, codes == 3, label=ANSWERS[3], zorder=3, **_mistake_mark(3))  # sized by fit_cell_marks
+    if mistakes:
+        ax.add_collection(_cells(grid, codes == 1, **UNDER_HATCH | dict(hatch=dots)))
+        ax.add_collection(_cells(grid, codes == 1, label=ANSWERS[1], **CONSERVATIVE_CELLS | dict(hatch=dots)))
+        draw_cell_marks(ax, grid, codes == 3, label=ANSWERS[3], zorder=3, **_mistake_mark(3))  # fit_cell_marks sizes
     return image
 
 
+CUT = 2.5  # points: the path map's dotted line at the model's threshold, bold enough to follow across the map
 CONSERVATIVE_CELLS: dict[str, Any] = dict(  # sparse ink dots, no tint: the grey between them is P(valid)
     facecolor="none", hatch=".", hatchcolor=COLORS["ink"], edgecolor="none"
 )
@@ -258,24 +261,17 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid: np.ndarray, path: np.ndarr
     """A roadmap's valid nodes as dots, those in collision as crosses, and the path dashed with diamonds, over a map
     of the two ``dofs``."""
     x, y = dofs
-    ax.plot(
-        nodes[nodes_valid, x],
-        nodes[nodes_valid, y],
-        ".",
-        color=COLORS["node"],
-        markersize=4,
-        label="roadmap node, valid",
-        path_effects=halo(0.5, ("free",)),
-    )
+    dots = dict(color=COLORS["node"], markersize=4, label="roadmap node, valid", path_effects=halo(0.5, ("free",)))
+    ax.plot(nodes[nodes_valid, x], nodes[nodes_valid, y], ".", **dots)
     ax.plot(
         nodes[~nodes_valid, x],
         nodes[~nodes_valid, y],
         "X",
-        color=COLORS["ink"],  # not the dangerous squares' colour: it sits among them, and must not hide there
+        color=COLORS["ink"],  # not the dangerous squares' colour: on another map it would sit among them
         markersize=14,
         label="roadmap node in collision",
         path_effects=halo(1.0, ("free",)),  # a white ring: it shows on the dark side of the map too
-        zorder=7,  # over the squares (3) and the path (5): the one mark that must not be missed
+        zorder=7,  # over the path (5): the one mark that must not be missed
     )
     for node in nodes[~nodes_valid][:3]:  # a few named in words as well
         ax.annotate(

@@ -47,7 +47,8 @@ NEAR = 0.3  # workspace units: a block this close to a link's bounding box is dr
 LINK_EDGE = 1.6  # points: the links' ink edges, thicker than a block's
 OVERVIEW_ROBOT = dict(linewidth=3.0, solid_capstyle="round", path_effects=halo(3.0))  # the robot in an overview:
 #   its links as strokes 3 points thick (a 0.1-thick link is a pixel there), ringed in ink, then in white
-JOINT_MARK = dict(marker="o", s=22, color=COLORS["free"], edgecolors=COLORS["ink"], linewidths=1.4)
+JOINT_MARK = dict(marker="o", s=8, color=COLORS["free"], edgecolors=COLORS["ink"], linewidths=0.8)  # small: a link's
+#   0.1 cube shows round it (review r15b: at 22 points² the dots hid 3DC-9's cubes)
 ELEVATION = (15.0, 45.0)  # degrees: a close-up's camera stays this far above the horizon, no lower and no higher
 USUAL_VIEW = (30.0, -60.0)  # degrees: mplot3d's camera, elevation and azimuth; a close-up's stays on its side
 OFF_AXIS = 20.0  # degrees: the least a close-up's azimuth keeps from an axis of the workspace

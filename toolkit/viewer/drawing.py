@@ -36,6 +36,7 @@ OBSTACLE = rgb("obstacle")  # a hue of its own: the browser test looks for it
 OBSTACLE_OPACITY = {"3dc": 0.3}  # by family: see through the clutter to the robot inside (0.45: it was 2.5:1 there)
 EDGE = rgb("ink")  # every block's and link's edges: an outline at 3:1 or more on the white, the blocks and the links
 EDGE_PX = 2.0  # their width on screen, in pixels, near or far
+LINK_EDGE_PX = 3.5  # a link's, wider: the robot outlined apart from the sample marks of its colour (they have none)
 VALID = rgb("valid")
 COLLIDING = rgb("invalid")
 PREDICTION_OPACITY = 0.5  # the P(valid) wireframe over the links: faint, so their colour and edges show through
@@ -71,9 +72,9 @@ class Boxes:
     def __len__(self) -> int:
         return len(self.centers)
 
-    def scaled(self, factor: float) -> Boxes:
-        """The same boxes, each ``factor`` times larger about its centre."""
-        return Boxes(self.centers, self.rotations, self.sizes * factor)
+    def grown(self, margin: float) -> Boxes:
+        """The same boxes, ``margin`` larger on every side, about their centres."""
+        return Boxes(self.centers, self.rotations, self.sizes + 2 * margin)
 
 
 def obstacle_boxes(workspace: Workspace) -> Boxes:
@@ -281,11 +282,11 @@ def add_boxes(
     )
 
 
-def add_edges(scene: viser.SceneApi, name: str, boxes: Boxes) -> viser.LineSegmentsHandle:
+def add_edges(scene: viser.SceneApi, name: str, boxes: Boxes, width: float = EDGE_PX) -> viser.LineSegmentsHandle:
     """The edges of ``boxes`` (:func:`box_edges`), :data:`EDGE` lines :data:`EDGE_PX` pixels wide: each box reads as
     a box, see-through or seen far. A node of its own (as the boxes' child, viser would draw it see-through like
     see-through boxes); :func:`move_boxes` moves it with them."""
-    return scene.add_line_segments(name, box_edges(boxes), EDGE, thickness=EDGE_PX, thickness_units="screen")
+    return scene.add_line_segments(name, box_edges(boxes), EDGE, thickness=width, thickness_units="screen")
 
 
 def move_boxes(handle: viser.SceneNodeHandle, boxes: Boxes, colors, edges: viser.SceneNodeHandle | None = None) -> None:

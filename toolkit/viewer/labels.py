@@ -91,6 +91,7 @@ TRACK = COLORS["slider_track"]  # a slider's unfilled track, darker than viser's
 SCRIPT = """<style>:root { --mantine-color-dimmed: %(dimmed)s !important; }
 [data-camera-controls-version] canvas { opacity: 1 !important; }
 .mantine-Slider-markLabel, .mantine-Notification-description { color: %(dimmed)s !important; }
+.mantine-Slider-markLabel { font-size: 12px !important; }
 .mantine-Input-input:not(:focus), .mantine-Checkbox-input:not(:checked) { border-color: %(border)s !important; }
 .mantine-Slider-root { --slider-track-bg: %(track)s !important; }
 .mantine-Slider-track::before { background-color: %(track)s !important; }

@@ -118,11 +118,12 @@ class Panel:
         self.configuration = gui.add_folder("Configuration", order=self.status.order + 0.5)
         with self.configuration:
             self.sliders = [
-                gui.add_slider(name, float(lo), float(hi), float(hi - lo) / 500, float(lo))
+                gui.add_slider(name, float(lo), float(hi), _step(lo, hi), float(lo), marks=_ends(lo, hi))
                 for name, lo, hi in zip(robot.dof_names, robot.lower, robot.upper)
             ]
             self.random = gui.add_button("random valid configuration")
         for slider in self.sliders:
+            slider.precision = max(0, round(-np.log10(slider.step)))  # viser's covered its ends': 2.51284 for a yaw
             slider.on_update(self._guarded(lambda _: self._follow_sliders()))
         self.random.on_click(self._guarded(lambda _: viewer.set_configuration(viewer.valid_configuration(self._rng))))
         self.along.value, self.along.disabled = 0.0, True
@@ -247,3 +248,14 @@ def brand_color(color: str) -> tuple[int, int, int]:
     hue, lightness, saturation = colorsys.rgb_to_hls(*(int(color[i : i + 2], 16) / 255 for i in (1, 3, 5)))
     given = 0.9 - (0.9 - lightness) * 8 / 6  # shade 6 lies 6/8 of the way from 0.9 to the given lightness
     return tuple(round(channel * 255) for channel in colorsys.hls_to_rgb(hue, given, saturation))  # type: ignore[return-value]
+
+
+def _step(lo: float, hi: float) -> float:
+    """A DoF slider's step: the power of ten under 1/500 of its range (0.01 for the youBot's), the decimals its number
+    box shows (a step of 0.0126 and the ends' 3.141593 filled the yaw's box with 2.51284, cut off)."""
+    return float(10 ** np.floor(np.log10((hi - lo) / 500)))
+
+
+def _ends(lo: float, hi: float) -> tuple[tuple[float, str], ...]:
+    """A DoF slider's end marks, labelled with two decimals (viser's labelled the yaw's -3.141593 and 3.141593)."""
+    return tuple((float(v), f"{v:.2f}".rstrip("0").rstrip(".")) for v in (lo, hi))

@@ -34,7 +34,7 @@ from toolkit.viewer.server import camera_at, page_path, start_server, stop_serve
 LAYERS = ("obstacles", "robot", "prediction", "samples", "roadmap", "path")
 # nodes shown and hidden with a layer, not its children (viser would draw a see-through node's child see-through)
 ALONG = {"obstacle_edges": "obstacles", "link_edges": "robot"}
-HALO = 1.15  # the prediction wireframe is this much larger than the links
+HALO = 0.5  # the prediction wireframe stands this share of the thinnest link clear of the links: apart from their edges
 SLIDING = ("/workspace", "/robot", "/plan")  # scene frames an animation slides so that the camera follows the robot
 RAW = "raw"  # the "sampler" of uniform configurations, unfiltered: what a model is asked about
 
@@ -98,6 +98,11 @@ class Viewer:
     def robot(self):
         return self.scenario.robot
 
+    @property
+    def _halo(self) -> float:
+        """How far the prediction wireframe stands clear of the links, in workspace units (:data:`HALO`)."""
+        return HALO * 2 * float(np.min(self.robot.half_extents))
+
     # -- listeners ---------------------------------------------------------------------
     def subscribe(self, event: str, callback: Callable) -> None:
         """Call ``callback`` whenever ``event`` (one of :data:`EVENTS`) happens, with the arguments listed there.
@@ -135,14 +140,14 @@ class Viewer:
             self._aim_camera(*framing.camera_pose(self.robot, self.workspace, self.q))
             boxes = draw.robot_boxes(self.robot, self.q[None])
             self._add("robot", draw.add_boxes(self.server.scene, "/robot/links", boxes, colors=draw.VALID))
-            self._add("link_edges", draw.add_edges(self.server.scene, "/robot/link_edges", boxes))
+            self._add("link_edges", draw.add_edges(self.server.scene, "/robot/link_edges", boxes, draw.LINK_EDGE_PX))
             if self.model is not None:
                 self._add(
                     "prediction",
                     draw.add_boxes(
                         self.server.scene,
                         "/robot/prediction",
-                        boxes.scaled(HALO),
+                        boxes.grown(self._halo),
                         colors=draw.VALID,
                         opacity=draw.PREDICTION_OPACITY,
                         wireframe=True,
@@ -174,7 +179,7 @@ class Viewer:
                 self.predicted_valid = bool(self.model.are_valid(q[None])[0])
                 draw.move_boxes(
                     self.nodes["prediction"],
-                    boxes.scaled(HALO),
+                    boxes.grown(self._halo),
                     np.repeat(draw.probability_colors([self.probability]), len(boxes), axis=0),
                 )
                 above = 0.5 * framing.robot_size(self.robot)  # close above, in a snapshot's view

@@ -1,0 +1,65 @@
+"""Reconstruction accuracy against "all free", one panel per group of workspaces (paper Table 1; notebook 02, §8).
+
+:func:`toolkit.plots.cae.accuracy_vs_all_free` draws every group on one axes; where two groups of hundreds of
+workspaces fall on the same cloud (a CAE's training grids and the unseen ones, once it generalizes), the one drawn
+later hides the other, however the marks are layered (review r15c). :func:`accuracy_panels` draws each group in a
+panel of its own, on the same axes, the diagonal ("all free") and the group's mean in each: the clouds compare side
+by side, none under another.
+"""
+
+from __future__ import annotations
+
+import textwrap
+
+import numpy as np
+from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
+
+from toolkit.plots.alt import Part, describe
+from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo, series_style
+
+
+def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
+    """One panel per group ``{name: (all_free (W,), accuracy (W,))}``: each workspace a point, its reconstruction
+    accuracy (y) against its share of free cells (x, the accuracy of answering "all free"), above the dashed
+    diagonal when the CAE beats that answer; the group's mean a large mark. The panels share both axes."""
+    fig = Figure(figsize=(PAGE_WIDTH, 3.0), layout="constrained")
+    axes = np.atleast_1d(fig.subplots(1, len(groups), sharex=True, sharey=True))
+    values = [np.asarray(v, dtype=float) for pair in groups.values() for v in pair]
+    low = min(float(v.min()) for v in values)
+    said, rows = [], []
+    for k, (ax, (name, (all_free, accuracy))) in enumerate(zip(axes, groups.items())):
+        style = series_style(k)
+        all_free, accuracy = np.asarray(all_free, dtype=float), np.asarray(accuracy, dtype=float)  # (W,) each
+        ax.plot([low, 1], [low, 1], color=COLORS["reference"], linestyle="--")
+        ax.scatter(all_free, accuracy, s=10, marker=style["marker"], c=style["color"], alpha=0.6, lw=0, gid=name)
+        mean = (float(np.mean(all_free)), float(np.mean(accuracy)))
+        ax.scatter(
+            *mean,
+            s=120,
+            c=style["color"],
+            marker=style["marker"],
+            edgecolors=COLORS["free"],
+            linewidths=1.2,
+            zorder=5,
+            path_effects=halo(1.2, ("ink",)),
+            gid=f"{name}: mean",
+        )
+        ax.set_title("\n".join(textwrap.wrap(name, 26)) + f"\nmean {mean[1]:.1%} vs {mean[0]:.1%}", fontsize=9)
+        ax.set_xlabel("share of free cells")
+        ax.tick_params(labelsize=8)
+        above = int(np.sum(accuracy > all_free))
+        said.append(
+            f"{name}: {len(accuracy)} workspaces, mean accuracy {mean[1]:.1%} against {mean[0]:.1%} for all free, "
+            f"{above} of them above the diagonal"
+        )
+        rows.append((name, str(len(accuracy)), f"{mean[1]:.1%}", f"{mean[0]:.1%}", f"{above} of {len(accuracy)}"))
+    axes[0].set_ylabel("reconstruction accuracy")
+    handles = [
+        Line2D([], [], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal): above it, better'),
+        Line2D([], [], color=COLORS["ink"], marker="o", linestyle="", markersize=9, label="large mark: the mean"),
+    ]
+    fig.legend(handles=handles, loc="outside lower center", ncols=2, fontsize=9, frameon=False)
+    text = "Reconstruction accuracy against the accuracy of answering all free, one panel per group, one point per "
+    columns = ("panel", "workspaces", "mean accuracy", "mean all free", "above the diagonal")
+    return describe(fig, text + "workspace. " + "; ".join(said) + ".", [Part("the panels", "", columns, tuple(rows))])
