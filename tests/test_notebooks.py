@@ -55,6 +55,30 @@ def test_the_first_code_cell_says_the_size_it_runs_at(path):
 # Running each one in quick mode (no error, its figures shown) is tests/test_site.py's build: one execution serves both.
 
 
+SIZED = re.compile(r"^([A-Z][A-Z0-9_]*) = sized\(\s*full=([\d_]+), quick=([\d_]+)", re.M)
+MENTION = re.compile(r"`([A-Z][A-Z0-9_]*)`([^`]{0,80})")  # a constant named in prose, and what follows it
+SAID = {"full": re.compile(r"([\d,]+) at full size"), "quick": re.compile(r"([\d,]+) in quick mode")}
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: p.stem)
+def test_a_size_the_prose_gives_by_value_is_the_one_the_code_sets(path):
+    """Prose that names a size, e.g. "`N_WORKSPACES` workspaces (200 at full size, 20 in quick mode)", gives the
+    values of ``sized(full=..., quick=...)`` in the same notebook: typed numbers go stale when a size changes."""
+    nb = nbformat.read(path, as_version=4)
+    code = "\n".join(c.source for c in nb.cells if c.cell_type == "code")
+    sizes = {name: {"full": int(full), "quick": int(quick)} for name, full, quick in SIZED.findall(code)}
+    checked = 0
+    for cell in (c for c in nb.cells if c.cell_type == "markdown"):
+        for name, after in MENTION.findall(cell.source):
+            for mode, pattern in SAID.items():
+                said = pattern.search(after.split(".")[0])
+                if name in sizes and said:
+                    assert int(said.group(1).replace(",", "")) == sizes[name][mode], (name, mode, after)
+                    checked += 1
+    if path.stem.startswith(("01", "02", "03")):
+        assert checked, "no size given by value was found: the pattern no longer matches the prose"
+
+
 def test_every_mention_of_a_notebook_names_one_that_exists():
     documents = [ROOT / "README.md"] + [
         p
