@@ -455,5 +455,6 @@ def _the_ratio_of_medians_is_told_apart_where_it_reads_saves(ratios: dict, twice
     shown, own = f"{medians['3dc7']['total']['BS']:.2f}", f"{ratios['3dc7']['BS']:.2f}"
     assert f"(3DC-7 BS: {shown}, where its queries' own ratios have a median of {own})" in PAGE
     assert f"3DC-7 BS is {shown} here, a saving by this statistic, and {own} by each query's own ratio, a tie" in PAGE
+    assert f"of the medians from {min(float(r[3]) for r in twice['rows']):.2f} to" in PAGE
     assert f"{moved} on 3DC-7 BS itself" in PAGE and f"moved this statistic to {moved} on that very cell" in PAGE
     assert f"(3DC-7 BS, {shown} against {own})" in PAGE
