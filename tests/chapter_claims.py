@@ -506,6 +506,9 @@ def _recorded_verdicts(nb, found: list[tuple[list[str], list[list[str]]]]) -> li
             problems.append(f"04: the answer says the `paper` preset saves for {n} of 4 on {name}; it shows {verdicts}")
         if f"{name}, the paper's Table 3" not in said:
             problems.append(f"04: {name}: the paper's Table 3 has no row beside ours")
+    papers, ours = (said.get(f"2DS, {row}", []) for row in ("the paper's Table 3", "ours (`paper` preset)"))
+    if papers != [findings.SAVES] * 3 + [findings.TIES] or ours != [findings.COSTS] * 3 + [findings.SAVES]:
+        problems.append(f"04: the summary says how the paper's 2DS row and ours disagree; they read {papers}, {ours}")
     answers = {row[0]: row[-1] for h, rows in found if h[-1] == "what it answers" for row in rows}
     valid, invalid = '"valid" to every sample', '"invalid" to every sample'
     expected = {"3DC-7": valid, "3DC-9": invalid, "3DO": invalid}
