@@ -231,9 +231,11 @@ def chapter_04() -> dict:
 PROSE_04 = markdown_of(ROOT / "notebooks" / CH04)  # its opening first
 
 
-def recorded_ratios(paper_3dc7: dict[str, float] | None = None) -> tuple[str, str]:
+def recorded_ratios(
+    paper_3dc7: dict[str, float] | None = None, paper_2ds: dict[str, float] | None = None
+) -> tuple[str, str]:
     """Section 6's two tables of recorded ratios as the chapter builds them from docs/results.md and the paper's
-    Table 3 (``paper_3dc7``: other ratios for the `paper` preset's 3DC-7 means)."""
+    Table 3 (``paper_3dc7``, ``paper_2ds``: other ratios for the `paper` preset's means in that scenario)."""
 
     def means(preset, key):
         return {s: 1 - r for s, r in recorded.improvements(preset, key).items()}
@@ -252,6 +254,8 @@ def recorded_ratios(paper_3dc7: dict[str, float] | None = None) -> tuple[str, st
         lazy[f"{name}, `strong` preset, medians"] = recorded.median_ratios("strong")[key]["total"]
     if paper_3dc7 is not None:
         eager["3DC-7, ours (`paper` preset)"] = paper_3dc7
+    if paper_2ds is not None:
+        eager["2DS, ours (`paper` preset)"] = paper_2ds
     eager_table, lazy_table = ("MD:" + findings.ratio_table(rows, counts=True, narrow=True) for rows in (eager, lazy))
     return eager_table, lazy_table
 
@@ -315,6 +319,15 @@ def test_chapter_04_fails_without_its_tables_or_with_pre_wrapped_lines():
         "04: pre-wrapped generated lines",
         "04: the crossover's counts (findings.crossover_counts) are not displayed",
     ]
+
+
+def test_chapter_04_fails_where_the_2ds_rows_do_not_disagree_as_its_summary_says():
+    """Review r16a: the summary said the paper's 2DS row and ours "give opposite verdicts" where the bridge test is a
+    tie in one and a saving in the other. It now says how they disagree; a recorded row that reads otherwise fails."""
+    nb = chapter_04()
+    nb["cells"][4] = executed(recorded_ratios(paper_2ds={"BS": 1.05, "OB": 1.51, "G": 1.27, "BT": 0.81}))["cells"][0]
+    (said,) = problems(CH04, nb)
+    assert said.startswith("04: the summary says how the paper's 2DS row and ours disagree")
 
 
 def test_chapter_04_fails_where_section_6s_recorded_verdicts_contradict_its_answer():
@@ -531,9 +544,9 @@ def test_chapter_04_holds_its_plain_answer_to_the_table_it_summarises():
 def test_chapter_04_holds_section_3s_sampling_sentence_to_the_recorded_runs(monkeypatch):
     """Review r13a: "the recorded 100 queries ... no faster for any sampler" while the `paper` panel saved sampling
     time. The sentence now speaks of each run apart; recorded figures that would contradict either half fail."""
-    strong = recorded.median_ratios("strong")
+    strong, medians = recorded.median_ratios("strong"), recorded.median_ratios
     faster = {**strong, "2ds": {**strong["2ds"], "sampling": {**strong["2ds"]["sampling"], "OB": 0.8}}}
-    monkeypatch.setattr(recorded, "median_ratios", lambda preset: faster if preset == "strong" else strong)
+    monkeypatch.setattr(recorded, "median_ratios", lambda preset: faster if preset == "strong" else medians(preset))
     assert chapter_claims._recorded_sampling() == [
         "04: the `strong` run's sampling is faster with prediction for ['OB'] on 2ds"
     ]
@@ -543,6 +556,29 @@ def test_chapter_04_holds_section_3s_sampling_sentence_to_the_recorded_runs(monk
     assert chapter_claims._recorded_sampling() == [
         "04: the `paper` run's means save sampling time for {'2ds': ['BT'], '3dc7': ['BS']}, not as the prose says"
     ]
+
+
+def test_chapter_04_holds_its_sampling_inside_algorithm_1_to_the_recorded_run(monkeypatch):
+    """Review r16a: the chapter says the accurate network's median sampling time inside Algorithm 1 was longer in
+    every cell, because the network was the dearer check in every scenario of that run; a recorded tie, or a network
+    too close to tell, fails."""
+    assert chapter_claims._sampling_in_algorithm_1() == []
+    medians, table = recorded.median_ratios, recorded.table
+    inside = medians(recorded.ALGORITHM_1)
+    tied = {**inside, "3do": {**inside["3do"], "sampling": {**inside["3do"]["sampling"], "BT": 1.05}}}
+    monkeypatch.setattr(recorded, "median_ratios", lambda p: tied if p == recorded.ALGORITHM_1 else medians(p))
+    (said,) = chapter_claims._sampling_in_algorithm_1()
+    assert said.startswith("04: Algorithm 1's sampling with the network reads") and findings.TIES in said
+    monkeypatch.undo()
+    rates = table(recorded.ALGORITHM_1, "Checker throughput")
+    close = {**rates, "3do": {**rates["3do"], "learned / exact": "0.9"}}
+
+    def patched(preset, heading, recorded_tables=None):
+        return close if preset == recorded.ALGORITHM_1 and "throughput" in heading else table(preset, heading)
+
+    monkeypatch.setattr(recorded, "table", patched)
+    (said,) = chapter_claims._sampling_in_algorithm_1()
+    assert said.startswith("04: in the Algorithm 1 run the network was not the dearer check everywhere")
 
 
 def test_chapter_04_fails_a_table_or_a_picture_wider_than_the_page():

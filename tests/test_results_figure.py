@@ -134,3 +134,20 @@ def test_the_legend_stands_over_the_first_panel(drawn):
     legend = fig.legends[0].get_window_extent(renderer)
     assert legend.y0 >= fig.axes[0].get_tightbbox(renderer).y1 - 1
     assert legend.y1 <= fig.bbox.y1 + 1
+
+
+def test_a_figure_of_many_panels_repeats_its_legend_under_the_last():
+    """Review r16a: chapter 04's five panels had one legend, over the first, far from the last panels. With more than
+    three panels the same legend stands under the last panel too, and no legend covers a panel."""
+    series = {"ours": {"BS": 0.8, "OB": 1.2, "G": 1.0, "BT": 2.0}, "theirs": {"BS": 0.5, "OB": 0.6, "G": 0.7, "BT": 1}}
+    for panels, legends in ((3, 1), (5, 2)):
+        fig = timings.ratio_comparison({f"source {k}": series for k in range(panels)}, tie=0.1)
+        assert len(fig.legends) == legends
+        texts = [[t.get_text() for t in legend.texts] for legend in fig.legends]
+        assert all(t == texts[0] for t in texts) and "ours" in texts[0]
+        renderer = FigureCanvasAgg(fig).get_renderer()
+        boxes = [legend.get_window_extent(renderer) for legend in fig.legends]
+        panels_box = [ax.get_tightbbox(renderer) for ax in fig.axes]
+        assert boxes[0].y0 >= panels_box[0].y1 - 1
+        if legends == 2:
+            assert boxes[1].y1 <= panels_box[-1].y0 + 1 and boxes[1].y0 >= fig.bbox.y0 - 1

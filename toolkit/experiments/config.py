@@ -83,10 +83,10 @@ QUICK = QuickSizes()
 
 BASELINES = {  # what "without prediction" is in a reproduction's Table 3 (RunConfig.baseline; --baseline)
     "best": "the best exact planner (the lazy PRM) with the fastest exact checker (`exact_checker`: compiled)",
-    "paper": "the paper's Algorithm 1 (every candidate edge checked as it is added) with the fastest exact checker "
-    "(`exact_checker`: compiled)",
-    "paper-fcl": "the paper's Algorithm 1 with the python-fcl checker, the paper's own baseline (with prediction, "
-    "exact checks still use the fastest checker)",
+    "paper": "the paper's Algorithm 1 (as we read it, every candidate edge checked as it is added) with the fastest "
+    "exact checker (`exact_checker`: compiled)",
+    "paper-fcl": "the paper's Algorithm 1 with the python-fcl checker, a checker called from Python (the paper names "
+    "none; with prediction, exact checks still use the fastest checker)",
 }
 
 

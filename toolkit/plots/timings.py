@@ -218,7 +218,8 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]], *, tie: 
     names = list(dict.fromkeys(name for series in baselines.values() for name in series))  # every series, once
     entries = len(names) + (tie is not None)  # the legend's: every series and the band
     columns = 2 if max(map(len, names)) <= 40 else 1  # the legend's: two long names side by side overflow the page
-    height = 2.6 * len(baselines) + 0.1 + 0.2 * -(-entries // columns)  # one baseline a row; then the legend
+    legends = 1 + (len(baselines) > REPEATED_LEGEND)  # over the first panel, and under the last of many
+    height = 2.6 * len(baselines) + legends * (0.1 + 0.2 * -(-entries // columns))  # one baseline a row; the legends
     fig = Figure(figsize=(PAGE_WIDTH, height))
     axes = fig.subplots(len(baselines), 1, squeeze=False, sharey=True)[:, 0]
     said = []
@@ -264,14 +265,22 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]], *, tie: 
     return describe(fig, f"{text} time. {'; '.join(said)}.", parts)
 
 
+REPEATED_LEGEND = 3  # more panels than this: the legend also stands under the last one
+
+
 def _legend_above(fig: Figure, axes, columns: int) -> None:
     """Each series once in a legend over the first panel, where a reader starts (review r15a: under the last of four
-    panels it was far from the first), ``columns`` entries a row; the panels laid out below it."""
+    panels it was far from the first), ``columns`` entries a row, and with more than :data:`REPEATED_LEGEND` panels
+    the same legend again under the last (review r16a: over the first of five it was far from the last); the panels
+    laid out between them."""
     shown = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}
-    fig.legend(
-        shown.values(), shown.keys(), loc="upper center", ncol=min(len(shown), columns), fontsize=9, frameon=False
-    )
-    fig.tight_layout(rect=(0, 0, 1, 1 - (0.1 + 0.2 * -(-len(shown) // columns)) / fig.get_figheight()))
+    room = (0.1 + 0.2 * -(-len(shown) // columns)) / fig.get_figheight()  # a legend's share of the height
+    below = len(axes) > REPEATED_LEGEND
+    ncol = min(len(shown), columns)
+    fig.legend(shown.values(), shown.keys(), loc="upper center", ncol=ncol, fontsize=9, frameon=False)
+    if below:
+        fig.legend(shown.values(), shown.keys(), loc="lower center", ncol=ncol, fontsize=9, frameon=False)
+    fig.tight_layout(rect=(0, room if below else 0, 1, 1 - room))
 
 
 def _band_words(tie: float) -> str:
