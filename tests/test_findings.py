@@ -166,14 +166,22 @@ def test_crossover_counts_the_points_where_the_network_is_cheaper_dearer_or_too_
     )
 
 
-def test_describe_accuracy_against_always_valid_and_a_coin_flip():
-    assert findings.describe_accuracy("paper", 0.38, 0.86) == (
-        'paper: accuracy 38%, below "always valid" (86%) and below a coin flip (50%) (worse than chance)'
+def test_describe_accuracy_against_always_valid_by_accuracy_and_a_coin_flip_by_balanced_accuracy():
+    # review r16b's full-size `paper` row: 38 % on samples 86 % valid is below "always valid", not below chance
+    paper = {"acc": 0.38, "tpr": 0.31, "tnr": 0.77}
+    assert findings.describe_accuracy("paper", paper, 0.86) == (
+        'paper: accuracy 38%, below "always valid" (86%); balanced accuracy 54%, about a coin flip (50%)'
     )
-    assert findings.describe_accuracy("strong", 0.97, 0.86).endswith(
-        'above "always valid" (86%) and above a coin flip (50%)'
+    assert findings.describe_accuracy("strong", {"acc": 0.97, "tpr": 0.97, "tnr": 0.95}, 0.86).endswith(
+        'above "always valid" (86%); balanced accuracy 96%, above a coin flip (50%)'
     )
-    assert "level with a coin flip" in findings.describe_accuracy("x", 0.5, 0.5)
+    # below chance only where TPR + TNR < 1 by more than the band: keeping more collisions than free configurations
+    assert findings.describe_accuracy("x", {"acc": 0.6, "tpr": 0.6, "tnr": 0.2}, 0.86).endswith(
+        "balanced accuracy 40%, below a coin flip (50%) (worse than chance)"
+    )
+    for tpr, word in ((0.55, "about"), (0.56, "above"), (0.45, "about"), (0.44, "below")):  # the band's two edges
+        said = findings.describe_accuracy("x", {"acc": 0.5, "tpr": tpr, "tnr": tpr}, 0.5)
+        assert f"{word} a coin flip" in said and 'level with "always valid" (50%)' in said, said
 
 
 def test_describe_threshold_sweep_finds_the_switch_and_the_best_threshold():

@@ -202,6 +202,44 @@ def test_probability_maps_side_by_side_each_with_its_own_threshold(grid, probabi
         assert_squares_mark(ax, grid, (p >= t) & ~valid, block_of_squares(fig))
 
 
+def test_each_map_has_its_own_colour_bar_with_its_threshold_drawn_across_it(grid, probability, valid):
+    """Review r16b: side by side, the one colour bar beside the strong map read as that map's alone; each map now has
+    its own, and a line on it at its threshold tells a grey just below it from one just above."""
+    fig = pc.probability_maps(
+        {"paper": probability, "strong": 1 - probability}, valid, grid, thresholds={"paper": 0.3, "strong": 0.6}
+    )
+    bars = [ax for ax in fig.axes if ax.get_label() == "<colorbar>"]
+    assert len(bars) == 2
+    for bar, t in zip(bars, (0.3, 0.6)):
+        assert bar.get_ylabel() == f"P(valid); the line: threshold {t:.2f}"
+        assert [tuple(line.get_ydata()) for line in bar.get_lines()] == [(t, t)]
+    maps = [ax for ax in fig.axes if ax.images and ax.get_label() != "<colorbar>"]
+    assert maps[0].get_position().y0 > maps[1].get_position().y1  # one above the other, each as wide as the page
+
+
+def test_a_strip_of_conservative_cells_too_narrow_for_the_dots_is_circled():
+    """Review r16b: the strong map's 35 conservative cells, in one-cell strips along the blocks, caught no dot of the
+    hatch. Cells in strips narrower than 1.5 dot spacings are circled as well; a wide region keeps its dots alone."""
+    mask = np.zeros((12, 12), dtype=bool)
+    mask[0, :] = True  # a strip one cell wide along the map's edge: narrow, whatever it touches
+    mask[4:12, 4:12] = True  # an 8 x 8 region: wide for a width of 3, its border too
+    np.testing.assert_array_equal(cell_marks.narrow_cells(mask, 3), np.eye(12, dtype=bool)[0][:, None] & mask)
+    assert not cell_marks.narrow_cells(mask, 1).any()  # every strip holds a dot
+    fine = slices.slice_grid(robots.point_robot(), n=100)
+    ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
+    valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (100, 100)
+    strip = np.zeros_like(valid)
+    strip[:, np.nonzero(~valid.all(axis=0))[0].max() + 1] = True  # the row of cells just above the block
+    probability = np.where(strip, 0.2, 0.9)  # right everywhere but that one-cell strip, rejected though free
+    fig = pc.probability_map(probability, valid, fine, threshold=0.5)
+    circles = [c for c in fig.axes[0].collections if c.get_label() == "valid rejected, narrow"]
+    assert len(circles) == 1 and len(circles[0].get_offsets()) > 0
+    k = block_of_squares(fig)
+    assert_squares_mark(fig.axes[0], fine, strip & valid, k, label="valid rejected, narrow")
+    assert "circled in strips too narrow for the dots" in alt.alt_text(fig)
+    assert "circled" not in alt.alt_text(pc.probability_map(np.where(valid, 0.9, 0.1), valid, fine, threshold=0.5))
+
+
 def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, probability, valid):
     threshold = 0.55
     ax_map, ax_counts, ax_roc = pc.threshold_view(probability, valid, grid, threshold=threshold).axes
@@ -305,12 +343,11 @@ def test_conservative_dots_show_on_every_grey_in_ink_over_a_white_under_stroke(g
     ]  # the white under-stroke first, the ink dots over it
     assert hatched[0].get_hatch_linewidth() > hatched[1].get_hatch_linewidth()  # the white one wider: a ring
     np.testing.assert_array_equal(hatched[0].get_paths()[0].vertices, hatched[1].get_paths()[0].vertices)
-    # review r14c: a dense hatch ("..", twelve dots an inch) over a tint hid P(valid) where a model rejects most of
-    # the map; six dots an inch on no tint leave the grey between them as it is, beside another map. A map alone is as
-    # wide as the page, and there a one-cell strip of mistakes caught no dot at six an inch (r15c): twelve, no tint
-    assert [c.get_hatch() for c in hatched] == ["..", ".."]
+    # review r14c: a dense hatch over a tint hid P(valid) where a model rejects most of the map; twelve dots an inch
+    # on no tint leave the grey between them as it is, on a map as wide as the page, alone or one above another (r16b)
+    assert [c.get_hatch() for c in hatched] == ["..", ".."] and pc.DOTS_PER_INCH == 12
     pair = pc.probability_maps({"a": probability, "b": probability}, valid, grid, thresholds=0.45).axes[0]
-    assert [c.get_hatch() for c in pair.collections if isinstance(c, PolyCollection) and c.get_hatch()] == [".", "."]
+    assert [c.get_hatch() for c in pair.collections if isinstance(c, PolyCollection) and c.get_hatch()] == ["..", ".."]
     assert all(np.all(np.asarray(c.get_facecolor())[..., 3] == 0) for c in hatched)
     for level in np.linspace(0, 1, 101):  # every grey of the map
         grey = to_hex((level, level, level))

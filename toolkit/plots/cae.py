@@ -212,7 +212,7 @@ def contraction(
     the last panel is a perfect copy machine: it changes exactly the flipped cells.
     """
     flips = np.asarray(flips)
-    fig = Figure(figsize=(6.2, 6.6), layout="constrained")  # as wide as a chapter page's column: text at its size
+    fig = Figure(figsize=(PAGE_WIDTH, 7.0), layout="constrained")  # the page's width: text at its size, 9 pt or more
     panels = fig.subplot_mosaic([["j", "z"], ["j", "x"]])  # the norms tall on the left, the two responses stacked
     ax_j, ax_z, ax_x = panels["j"], panels["z"], panels["x"]
     names = list(jacobian_norms)
@@ -230,7 +230,9 @@ def contraction(
     for ax in (ax_z, ax_x):
         _counts_axis(ax, "x", flips)  # the numbers of flips measured
         ax.set_xlabel("cells flipped (log scale)")
-    fig.legend(handles=ax_x.get_lines(), loc="outside lower center", ncols=2, fontsize=8, frameon=False)  # on no curve
+    fig.legend(handles=ax_x.get_lines(), loc="outside lower center", ncols=2, fontsize=9, frameon=False)  # on no curve
+    for ax in (ax_j, ax_z, ax_x):  # review r16b: the legends and ticks at 8 pt, shrunk to the page, read as 8 px
+        ax.tick_params(labelsize=9)
     said = "; ".join(
         f"{name}: median Jacobian norm {np.median(jacobian_norms[name]):.3g}; flipping {flips[-1]:g} cells moves z by "
         f"{np.mean(latent_shift[name][-1]):.1%} of its length and changes {np.mean(decoded_change[name][-1]):.3g} "
@@ -270,7 +272,7 @@ def _counts_axis(ax, which: str, ticks) -> None:
 NORM_MARKS: dict[str, dict[str, Any]] = {  # a box plot's marks, each named in the panel's legend
     "median": dict(color=COLORS["ink"], linewidth=2),
     "mean": dict(marker="^", color=COLORS["ink"], markerfacecolor=COLORS["free"], markeredgecolor=COLORS["ink"]),
-    "outlier (beyond 1.5 box heights)": dict(
+    "outlier (beyond\n1.5 box heights)": dict(
         marker="o", markerfacecolor="none", markeredgecolor=COLORS["ink"], markersize=3
     ),
 }
@@ -286,8 +288,8 @@ def _draw_norms(ax, jacobian_norms: dict[str, np.ndarray]) -> None:
     ax.boxplot([np.asarray(jacobian_norms[n]) for n in names], showmeans=True, **props)
     marks = [Line2D([], [], linestyle="-" if "marker" not in style else "", **style) for style in NORM_MARKS.values()]
     low, high = ax.get_ylim()
-    ax.set_ylim(low, high + 0.25 * (high - low))  # room above the boxes: the legend covers none
-    ax.legend(marks, list(NORM_MARKS), fontsize=8, loc="upper center")
+    ax.set_ylim(low, high + 0.35 * (high - low))  # room above the boxes: the legend covers none
+    ax.legend(marks, list(NORM_MARKS), fontsize=9, loc="upper center")
     ax.set_xticks(range(1, len(names) + 1), _fitted(names, _slot_points(ax, len(names)), NAME_POINTS), fontsize=9)
     ax.set_xlabel("model")
     ax.set_ylabel("Jacobian norm ||dz/dx|| per workspace")

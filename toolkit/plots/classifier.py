@@ -13,8 +13,8 @@ P(valid) >= a threshold. Against the exact checker each answer is one of four ki
 The maps here sweep two degrees of freedom over their bounds (:func:`toolkit.plots.slices.slice_grid`;
 the point robot's whole C-space, or a 2-DoF slice of a 3D robot with the other joints
 fixed), show P(valid) as an image, draw the true C-obstacle boundary over it and mark
-every mistake at its cell: dangerous ones as squares, conservative ones with a dotted hatch and no tint (sparse beside
-another map: review r14c found a dense one hid P(valid) on the `paper` preset's; twice as dense on a map alone).
+every mistake at its cell: dangerous ones as squares, conservative ones with a dotted hatch and no tint (review r14c:
+a denser one hid P(valid) on the `paper` preset's map), circled where they lie in a strip too narrow for its dots.
 
 >>> grid = slice_grid(robot, dofs=(0, 1), n=80)  # doctest: +SKIP
 >>> probability = grid.image(checker.probability(grid.configs))  # (80, 80)  # doctest: +SKIP
@@ -38,7 +38,7 @@ from toolkit.learning import metrics
 from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
-from toolkit.plots.cell_marks import draw_cell_marks, fit_cell_marks
+from toolkit.plots.cell_marks import draw_cell_marks, draw_narrow_cells, fit_cell_marks
 from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import dof_label
 from toolkit.plots.slices import CSpaceSlice
@@ -51,32 +51,38 @@ MISTAKE_MARKERS = {1: "o", 3: "s"}  # conservative dots, dangerous squares: the 
 def probability_map(
     probability, valid, grid: CSpaceSlice, *, threshold: float = 0.5, title: str = "P(valid)"
 ) -> Figure:
-    """P(valid) over a 2-DoF grid ``(nx, ny)``, the true C-obstacle boundary, the mistakes at ``threshold`` marked."""
+    """P(valid) over a 2-DoF grid ``(nx, ny)``, the true C-obstacle boundary, the mistakes at ``threshold`` marked
+    (:func:`probability_maps` of one map)."""
     return probability_maps({title: probability}, valid, grid, thresholds=threshold)
 
 
 def probability_maps(
     probabilities: Mapping[str, np.ndarray], valid, grid: CSpaceSlice, *, thresholds: float | Mapping[str, float] = 0.5
 ) -> Figure:
-    """Several models' P(valid) maps side by side, same grid and truth (e.g. the ``paper`` and ``strong`` presets)."""
-    alone = len(probabilities) == 1  # as wide as the page (review r15c: at 230 px a one-cell strip was a pixel)
-    size = (PAGE_WIDTH, 5.6) if alone else (min(PAGE_WIDTH, 3.6 * len(probabilities) + 0.8), 4.2)
-    fig = Figure(figsize=size, layout="constrained")
-    axes = fig.subplots(1, len(probabilities), squeeze=False)[0]
+    """Several models' P(valid) maps, same grid and truth (e.g. the ``paper`` and ``strong`` presets), one above the
+    other, each as wide as the page with a colour bar of its own, its threshold a line across it (review r16b: side by
+    side, the one bar read as the right map's, and a one-cell strip of mistakes showed no dot)."""
+    cut = {name: thresholds[name] if isinstance(thresholds, Mapping) else thresholds for name in probabilities}
+    fig = Figure(figsize=(PAGE_WIDTH, 4.7 * len(cut) + 0.9), layout="constrained")  # r15c: at 230 px, a strip a pixel
+    axes = fig.subplots(len(cut), 1, squeeze=False)[:, 0]
     said, parts = [], []
-    for ax, (name, probability) in zip(axes, probabilities.items()):
-        t = thresholds[name] if isinstance(thresholds, Mapping) else thresholds
-        image = _draw_probability(ax, probability, valid, grid, t, dots=".." if alone else ".")
-        ax.set_title(f"{name}: P(valid), threshold {t:.2f}", fontsize=9)
+    for ax, (name, probability), t in zip(axes, probabilities.items(), cut.values()):
+        image = _draw_probability(ax, probability, valid, grid, t)
+        bar = fig.colorbar(image, ax=ax, label=f"P(valid); the line: threshold {t:.2f}", shrink=0.9)
+        bar.ax.axhline(t, color=COLORS["ink"], linewidth=2.5, path_effects=halo(2.5, ("free",)))
+        ax.set_title(f"{name}: P(valid), threshold {t:.2f}", fontsize=10)
         said.append(f"{name}, threshold {t:.2f}: " + answers.answers_in_words(np.asarray(probability) >= t, valid))
         parts.append(answers.map_in_regions(name, said[-1], probability, valid, grid, t))
-    fig.colorbar(image, ax=list(axes), label="P(valid)", shrink=0.8)
     _legend(fig, _mistake_handles())
+    fig.draw_without_rendering()  # laid out: a cell's size on the page, for the strips the dots would miss
+    spacing, style = 72 / DOTS_PER_INCH, dict(label=f"{ANSWERS[1]}, narrow", zorder=3, **_mistake_mark(1))
+    rejected = [(np.asarray(p) < cut[name]) & np.asarray(valid) for name, p in probabilities.items()]  # (nx, ny) each
+    narrow = [draw_narrow_cells(ax, grid, mask, spacing, **style) for ax, mask in zip(axes, rejected)]
     k = fit_cell_marks(fig, grid)
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
     text += "configurations; grey, 0 black to 1 white) with the true C-obstacle boundary outlined, dangerous "
     text += f"mistakes as squares{f' (one per {k} x {k} cells holding any)' if k > 1 else ''} and conservative ones "
-    text += "hatched with dots. "
+    text += "hatched with dots" + (", circled in strips too narrow for the dots. " if any(narrow) else ". ")
     return describe(fig, text + "; ".join(said) + ".", parts)
 
 
@@ -213,10 +219,10 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
 # -- the panels ----------------------------------------------------------------
 
 
-def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float, *, mistakes=True, dots="."):
+def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float, *, mistakes=True):
     """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary and, with ``mistakes``, dangerous cells as squares
-    and conservative cells hatched with ``dots`` (:func:`_cells`; sparse, ``".."`` twice as dense for a map alone on
-    the page's width: a one-cell strip of mistakes shows)."""
+    and conservative cells hatched with dots (:func:`_cells`; :data:`DOTS_PER_INCH`, on a map as wide as the page: a
+    strip narrower than their spacing :func:`probability_maps` circles)."""
     probability = _on_grid(probability, grid, "probability")
     image = ax.imshow(
         probability.T,
@@ -231,19 +237,19 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     _draw_boundary(ax, valid, grid)
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
     if mistakes:
-        ax.add_collection(_cells(grid, codes == 1, **UNDER_HATCH | dict(hatch=dots)))
-        ax.add_collection(_cells(grid, codes == 1, label=ANSWERS[1], **CONSERVATIVE_CELLS | dict(hatch=dots)))
+        ax.add_collection(_cells(grid, codes == 1, **UNDER_HATCH))
+        ax.add_collection(_cells(grid, codes == 1, label=ANSWERS[1], **CONSERVATIVE_CELLS))
         draw_cell_marks(ax, grid, codes == 3, label=ANSWERS[3], zorder=3, **_mistake_mark(3))  # fit_cell_marks sizes
     return image
 
 
 CUT = 2.5  # points: the path map's dotted line at the model's threshold, bold enough to follow across the map
-CONSERVATIVE_CELLS: dict[str, Any] = dict(  # sparse ink dots, no tint: the grey between them is P(valid)
-    facecolor="none", hatch=".", hatchcolor=COLORS["ink"], edgecolor="none"
+DOTS_PER_INCH = 12  # the conservative hatch "..": sparse enough that the grey between the dots is P(valid) (r14c)
+CONSERVATIVE_CELLS: dict[str, Any] = dict(  # ink dots, no tint: the grey between them is P(valid)
+    facecolor="none", hatch="..", hatchcolor=COLORS["ink"], edgecolor="none"
 )
-LEGEND_DOTS: dict[str, Any] = dict(hatch="..")
 UNDER_HATCH: dict[str, Any] = dict(  # the same dots in white, wider, under the ink ones: they show on the darkest grey
-    facecolor="none", hatch=".", hatchcolor=COLORS["free"], hatch_linewidth=2.0, edgecolor="none"
+    facecolor="none", hatch="..", hatchcolor=COLORS["free"], hatch_linewidth=2.0, edgecolor="none"
 )
 
 
@@ -360,19 +366,16 @@ def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
 
 
 def _mistake_handles() -> list:
+    dangerous: dict[str, Any] = dict(color=DANGEROUS, marker="s", markeredgecolor=COLORS["ink"], linestyle="")
     return [
+        Line2D([], [], label="dangerous: kept, in collision (squares)", **dangerous),
+        Patch(label="conservative: rejected, free (dotted;\nright answers carry no dots)", **CONSERVATIVE_CELLS),
         Line2D(
             [],
             [],
-            color=DANGEROUS,
-            marker="s",
-            markeredgecolor=COLORS["ink"],
             linestyle="",
-            label="dangerous: kept, in collision (squares)",
-        ),
-        Patch(  # the map's dots, twice as dense: a legend's small patch then always holds some
-            label="conservative: rejected, free (dotted;\nright answers carry no dots)",
-            **CONSERVATIVE_CELLS | LEGEND_DOTS,
+            label="conservative, in a strip too\nnarrow for dots (circles)",
+            **_mistake_mark(1, legend=True),
         ),
     ]
 

@@ -207,6 +207,7 @@ def _robot_figure_text(robot, count, views, near, valid, labels, hatches, named)
         ends_said = [f", its last link marked {END_MARKERS[k % len(END_MARKERS)][1]}" for k in range(count)]
         marked = ends_said if named else [""] * count
         text += ": " + ", ".join(f"{label} ({_hatch_name(h)}{m})" for label, h, m in zip(labels, hatches, marked))
+        text += ". A thin link has no room to show a hatch: its marker tells the configurations apart" if named else ""
     return text + "."
 
 
