@@ -242,8 +242,10 @@ def test_a_stills_overview_thins_a_dense_cloud_and_its_text_says_so(crossing):
     assert len(drawn["sample, valid"].get_offsets()) == int((kept & valid).sum())
     assert len(drawn["sample, in collision"].get_offsets()) == int((kept & ~valid).sum())
     assert all(c.get_alpha() < 1 for c in drawn.values())  # lighter: the blocks show through
-    FigureCanvasAgg(fig).draw()  # the legend beside the overview, in the cell a single pose leaves empty
-    assert fig.legends[0].get_window_extent().x0 >= overview.get_position().x1 * fig.bbox.width
+    FigureCanvasAgg(fig).draw()  # the overview a whole row under the close-ups (review r16c), the legend under it
+    assert overview.get_position().y1 <= min(close_up.get_position().y0, turned.get_position().y0)
+    assert overview.get_position().width > 1.5 * close_up.get_position().width
+    assert fig.legends[0].get_window_extent().y1 <= overview.get_position().y0 * fig.bbox.height
     lo, hi = np.array([close_up.get_xlim(), close_up.get_ylim(), close_up.get_zlim()]).T  # (3,) each
     near = int(np.all((points >= lo) & (points <= hi), axis=1).sum())  # every sample in its window, thinned or not
     assert f"{int(valid.sum())} samples valid (circles), {int((~valid).sum())} samples in collision" in alt_text(fig)

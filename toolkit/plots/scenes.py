@@ -46,6 +46,8 @@ NOW_COLOR = COLORS["occupied"]
 _STATE = {None: "", True: ", valid", False: ", in collision"}  # a pose's verdict, as a title and its text say it
 _POSE_COLOR = {None: UNCHECKED_COLOR, True: VALID_COLOR, False: INVALID_COLOR}  # a pose's links, by its verdict
 TURN = 90.0  # degrees about the vertical: a single pose's second close-up, a quarter turn round the first
+CLOSE_UP_HEIGHT = 3.2  # inches: a row of two close-ups
+OVERVIEW_HEIGHT = 5.0  # inches: the overview, a row of its own (review r16c: in half a row, 230 px, its stars were lost)
 
 
 def scene_still(
@@ -72,12 +74,16 @@ def scene_still(
     valid = valid or {}
     colors = {label: _POSE_COLOR[valid.get(label)] for label in poses}
     views = [(label, q, turn) for label, q in poses.items() for turn in ((0.0, TURN) if len(poses) == 1 else (0.0,))]
-    rows = -(-(1 + len(views)) // 2)
-    fig = Figure(figsize=(PAGE_WIDTH, 3.2 * rows + 0.9 * (len(poses) != 1)))  # as wide as the page: text as drawn
-    panels = [fig.add_subplot(rows, 2, k + 1, projection="3d") for k in range(1 + len(views))]  # reading order
-    first = len(views) if len(poses) == 1 else 0  # the overview's panel: after a single pose's two views
+    heights = [CLOSE_UP_HEIGHT] * -(-len(views) // 2)  # inches: the close-ups, two a row
+    first = len(heights) if len(poses) == 1 else 0  # the overview's row: after a single pose's two views
+    heights.insert(first, OVERVIEW_HEIGHT)
+    fig = Figure(figsize=(PAGE_WIDTH, sum(heights) + 0.9))  # as wide as the page: text as drawn
+    grid = fig.add_gridspec(len(heights), 2, height_ratios=heights)
+    cells = [grid[row, :] if row == first else grid[row, column] for row in range(len(heights)) for column in (0, 1)]
+    cells = [cell for k, cell in enumerate(cells) if k % 2 == 0 or k // 2 != first][: 1 + len(views)]  # reading order
+    panels = [fig.add_subplot(cell, projection="3d") for cell in cells]  # the overview's a whole row: stars show
     named = {_overview_name(label, len(poses), valid.get(label)): (q, colors[label]) for label, q in poses.items()}
-    overview(panels.pop(first), robot, workspace, named, samples, trace)
+    overview(panels.pop(2 * first), robot, workspace, named, samples, trace)  # two close-ups a row before it
     # pose -> (samples drawn in its close-up, blocks near it, the camera's elevation and azimuth)
     seen: dict[str, tuple[int, int, tuple[float, float]]] = {}
     for ax, (label, q, turn) in zip(panels, views):
@@ -86,7 +92,7 @@ def scene_still(
         drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE)
         seen.setdefault(label, (drawn, near, angles))
         ax.set_title(f"{label}, close up{_STATE[ok]}" if not turn else f"{label}, a quarter turn round", fontsize=10)
-    _still_legend(fig, valid, under=len(poses) != 1)
+    _still_legend(fig, valid)
     return describe(fig, *_still_described(robot, workspace, poses, valid, samples, trace, seen))
 
 
@@ -96,9 +102,8 @@ def _overview_name(label: str, poses: int, valid: bool | None) -> str:
     return ("the robot" if poses == 1 else label) + (", in collision" if valid is False else "")
 
 
-def _still_legend(fig: Figure, valid: dict[str, bool], *, under: bool) -> None:
-    """The still's legend: every mark its panels name and the robot's states drawn; ``under`` the panels, else in
-    the empty cell beside the overview (a single pose's still)."""
+def _still_legend(fig: Figure, valid: dict[str, bool]) -> None:
+    """The still's legend, under its panels: every mark they name and the robot's states drawn."""
     handles = {name: h for ax in fig.axes for h, name in zip(*ax.get_legend_handles_labels())}
     shown = {ok for ok in valid.values() if ok is not None}  # the robot's states drawn: name those alone
     handles |= {
@@ -106,10 +111,6 @@ def _still_legend(fig: Figure, valid: dict[str, bool], *, under: bool) -> None:
         for ok, text, c in ((True, "robot, valid", VALID_COLOR), (False, "robot, in collision", INVALID_COLOR))
         if ok in shown
     }
-    if not under:
-        fig.tight_layout(w_pad=5.0)
-        fig.legend(handles.values(), handles.keys(), loc="center", bbox_to_anchor=(0.75, 0.25), frameon=False)
-        return
     fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=5.0)
     low = min((ax.get_tightbbox() or ax.bbox).y0 for ax in fig.axes) / fig.bbox.height  # the lowest label
     fig.legend(handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, low), ncol=3, frameon=False)
