@@ -336,6 +336,9 @@ def test_an_angle_that_wraps_around_is_broken_where_it_wraps_not_drawn_across_th
     np.testing.assert_allclose(alpha.get_ydata(), [scaled[0], scaled[1], np.nan, scaled[2], scaled[3]])
     np.testing.assert_allclose(alpha.get_xdata(), [along[0], along[1], np.nan, along[2], along[3]])
     assert len(x.get_xdata()) == 4  # unbroken
+    text = alt_text(scenes.path_frame(robot, Q, 0))  # review r16c: the description said nothing of the jump
+    assert "alpha wraps round (crosses ±π, its line jumping from one edge of its panel to the other) at 50%" in text
+    assert "x wraps" not in text
 
 
 @pytest.mark.parametrize(("name", "seed", "count"), [("3dc9", 1, 3), ("3do", 2, 1)])

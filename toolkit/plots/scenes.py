@@ -244,6 +244,14 @@ def _series_in_words(robot: BoxRobot, Q: np.ndarray, series: dict, threshold: fl
     )
     text = f"each DoF scaled to its bounds (0 lower, 1 upper), a panel per kind ({kinds}), from start to end: "
     text += ", ".join(moves)
+    for k, name in enumerate(robot.dof_names):  # an angle across ±π: its line jumps from one edge to the other
+        wraps = np.flatnonzero(np.abs(np.diff(scaled[:, k])) > 0.5)  # (w,) the frames before each wrap, as drawn
+        if len(wraps):
+            at = ", ".join(f"{(t + 0.5) / (len(Q) - 1):.0%}" for t in wraps)
+            text += (
+                f"; {name} wraps round (crosses ±π, its line jumping from one edge of its panel to the other) at {at}"
+            )
+            text += " of the path"
     if (valid := series["valid"]) is not None:
         text += f"; {int(np.sum(valid == 0))} of {len(valid)} frames in collision"
     if (clearance := series["clearance"]) is not None:
