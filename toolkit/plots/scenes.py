@@ -210,7 +210,8 @@ def path_frame(
     _draw_series(fig, grid[1], robot, Q, index, series, threshold)
     fig.suptitle(_frame_title(index, frames, series, threshold), fontsize=10, wrap=True)
     text = f"A path of the {robot.name} robot, {_frame_title(index, frames, series, threshold)}. At the top, the robot"
-    text += " in 3D among the blocks near it (the nearest edged in ink and named) and its base's trace; below, against the fraction of the path travelled, "
+    text += " in 3D among the blocks near it (the nearest edged in ink and named) and its base's trace; below,"
+    text += " against the fraction of the path travelled, "
     return describe(fig, text + _series_in_words(robot, Q, series, threshold) + ".", [_series_part(robot, Q, series)])
 
 
@@ -346,7 +347,7 @@ def _mark_nearest(scene, links: np.ndarray, blocks: np.ndarray) -> None:
     gaps = np.maximum(0.0, np.maximum(blocks[:, None, 0] - links[None, :, 1], links[None, :, 0] - blocks[:, None, 1]))
     lo, hi = blocks[int(np.argmin(np.linalg.norm(gaps, axis=-1).min(axis=1)))]  # (K, L, 3) gaps -> the nearest
     add_box_3d(scene, aabb_corners(lo, hi), facecolor="none", edgecolor=COLORS["ink"], linewidth=1.6, gid="nearest")
-    x, y, z = (lo + hi) / 2
+    x, y, _ = (lo + hi) / 2
     scene.text(
         x,
         y,
