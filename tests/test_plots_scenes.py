@@ -242,8 +242,10 @@ def test_a_stills_overview_thins_a_dense_cloud_and_its_text_says_so(crossing):
     assert len(drawn["sample, valid"].get_offsets()) == int((kept & valid).sum())
     assert len(drawn["sample, in collision"].get_offsets()) == int((kept & ~valid).sum())
     assert all(c.get_alpha() < 1 for c in drawn.values())  # lighter: the blocks show through
-    FigureCanvasAgg(fig).draw()  # the legend beside the overview, in the cell a single pose leaves empty
-    assert fig.legends[0].get_window_extent().x0 >= overview.get_position().x1 * fig.bbox.width
+    FigureCanvasAgg(fig).draw()  # the overview a whole row under the close-ups (review r16c), the legend under it
+    assert overview.get_position().y1 <= min(close_up.get_position().y0, turned.get_position().y0)
+    assert overview.get_position().width > 1.5 * close_up.get_position().width
+    assert fig.legends[0].get_window_extent().y1 <= overview.get_position().y0 * fig.bbox.height
     lo, hi = np.array([close_up.get_xlim(), close_up.get_ylim(), close_up.get_zlim()]).T  # (3,) each
     near = int(np.all((points >= lo) & (points <= hi), axis=1).sum())  # every sample in its window, thinned or not
     assert f"{int(valid.sum())} samples valid (circles), {int((~valid).sum())} samples in collision" in alt_text(fig)
@@ -334,6 +336,9 @@ def test_an_angle_that_wraps_around_is_broken_where_it_wraps_not_drawn_across_th
     np.testing.assert_allclose(alpha.get_ydata(), [scaled[0], scaled[1], np.nan, scaled[2], scaled[3]])
     np.testing.assert_allclose(alpha.get_xdata(), [along[0], along[1], np.nan, along[2], along[3]])
     assert len(x.get_xdata()) == 4  # unbroken
+    text = alt_text(scenes.path_frame(robot, Q, 0))  # review r16c: the description said nothing of the jump
+    assert "alpha wraps round (crosses ±π, its line jumping from one edge of its panel to the other) at 50%" in text
+    assert "x wraps" not in text
 
 
 @pytest.mark.parametrize(("name", "seed", "count"), [("3dc9", 1, 3), ("3do", 2, 1)])

@@ -26,6 +26,7 @@ from matplotlib.patches import Patch
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import ROWS, Part, describe
+from toolkit.plots.boxes import aabb_corners, add_box_3d
 from toolkit.plots.dof_panels import dof_groups, draw_dofs
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR, draw_robot, link_style
@@ -46,6 +47,10 @@ NOW_COLOR = COLORS["occupied"]
 _STATE = {None: "", True: ", valid", False: ", in collision"}  # a pose's verdict, as a title and its text say it
 _POSE_COLOR = {None: UNCHECKED_COLOR, True: VALID_COLOR, False: INVALID_COLOR}  # a pose's links, by its verdict
 TURN = 90.0  # degrees about the vertical: a single pose's second close-up, a quarter turn round the first
+CLOSE_UP_HEIGHT = 3.2  # inches: a row of two close-ups
+OVERVIEW_HEIGHT = (
+    5.0  # inches: the overview, a row of its own (review r16c: in half a row, 230 px, its stars were lost)
+)
 
 
 def scene_still(
@@ -72,12 +77,16 @@ def scene_still(
     valid = valid or {}
     colors = {label: _POSE_COLOR[valid.get(label)] for label in poses}
     views = [(label, q, turn) for label, q in poses.items() for turn in ((0.0, TURN) if len(poses) == 1 else (0.0,))]
-    rows = -(-(1 + len(views)) // 2)
-    fig = Figure(figsize=(PAGE_WIDTH, 3.2 * rows + 0.9 * (len(poses) != 1)))  # as wide as the page: text as drawn
-    panels = [fig.add_subplot(rows, 2, k + 1, projection="3d") for k in range(1 + len(views))]  # reading order
-    first = len(views) if len(poses) == 1 else 0  # the overview's panel: after a single pose's two views
+    heights = [CLOSE_UP_HEIGHT] * -(-len(views) // 2)  # inches: the close-ups, two a row
+    first = len(heights) if len(poses) == 1 else 0  # the overview's row: after a single pose's two views
+    heights.insert(first, OVERVIEW_HEIGHT)
+    fig = Figure(figsize=(PAGE_WIDTH, sum(heights) + 0.9))  # as wide as the page: text as drawn
+    grid = fig.add_gridspec(len(heights), 2, height_ratios=heights)
+    cells = [grid[row, :] if row == first else grid[row, column] for row in range(len(heights)) for column in (0, 1)]
+    cells = [cell for k, cell in enumerate(cells) if k % 2 == 0 or k // 2 != first][: 1 + len(views)]  # reading order
+    panels = [fig.add_subplot(cell, projection="3d") for cell in cells]  # the overview's a whole row: stars show
     named = {_overview_name(label, len(poses), valid.get(label)): (q, colors[label]) for label, q in poses.items()}
-    overview(panels.pop(first), robot, workspace, named, samples, trace)
+    overview(panels.pop(2 * first), robot, workspace, named, samples, trace)  # two close-ups a row before it
     # pose -> (samples drawn in its close-up, blocks near it, the camera's elevation and azimuth)
     seen: dict[str, tuple[int, int, tuple[float, float]]] = {}
     for ax, (label, q, turn) in zip(panels, views):
@@ -86,7 +95,7 @@ def scene_still(
         drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE)
         seen.setdefault(label, (drawn, near, angles))
         ax.set_title(f"{label}, close up{_STATE[ok]}" if not turn else f"{label}, a quarter turn round", fontsize=10)
-    _still_legend(fig, valid, under=len(poses) != 1)
+    _still_legend(fig, valid)
     return describe(fig, *_still_described(robot, workspace, poses, valid, samples, trace, seen))
 
 
@@ -96,9 +105,8 @@ def _overview_name(label: str, poses: int, valid: bool | None) -> str:
     return ("the robot" if poses == 1 else label) + (", in collision" if valid is False else "")
 
 
-def _still_legend(fig: Figure, valid: dict[str, bool], *, under: bool) -> None:
-    """The still's legend: every mark its panels name and the robot's states drawn; ``under`` the panels, else in
-    the empty cell beside the overview (a single pose's still)."""
+def _still_legend(fig: Figure, valid: dict[str, bool]) -> None:
+    """The still's legend, under its panels: every mark they name and the robot's states drawn."""
     handles = {name: h for ax in fig.axes for h, name in zip(*ax.get_legend_handles_labels())}
     shown = {ok for ok in valid.values() if ok is not None}  # the robot's states drawn: name those alone
     handles |= {
@@ -106,10 +114,6 @@ def _still_legend(fig: Figure, valid: dict[str, bool], *, under: bool) -> None:
         for ok, text, c in ((True, "robot, valid", VALID_COLOR), (False, "robot, in collision", INVALID_COLOR))
         if ok in shown
     }
-    if not under:
-        fig.tight_layout(w_pad=5.0)
-        fig.legend(handles.values(), handles.keys(), loc="center", bbox_to_anchor=(0.75, 0.25), frameon=False)
-        return
     fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=5.0)
     low = min((ax.get_tightbbox() or ax.bbox).y0 for ax in fig.axes) / fig.bbox.height  # the lowest label
     fig.legend(handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, low), ncol=3, frameon=False)
@@ -198,14 +202,16 @@ def path_frame(
         name: _per_frame(values, frames, name)
         for name, values in (("valid", valid), ("clearance", clearance), ("probability", probability))
     }
-    fig = Figure(figsize=(PAGE_WIDTH, 6.6))  # as wide as the page: its text as large as it is drawn
-    grid = fig.add_gridspec(1, 2, width_ratios=(1.0, 1.2), wspace=0.7, top=0.8, bottom=0.08, left=0.05, right=0.88)
+    fig = Figure(figsize=(PAGE_WIDTH, 10.4))  # as wide as the page: its text as large as it is drawn
+    # the robot a whole row above the series (review r16c: beside them its panel was 200 px wide)
+    grid = fig.add_gridspec(2, 1, height_ratios=(4.4, 5.0), hspace=0.32, top=0.9, bottom=0.05, left=0.12, right=0.86)
     valid_now = None if series["valid"] is None else bool(series["valid"][index])
     _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, valid_now, workspace, margin)
     _draw_series(fig, grid[1], robot, Q, index, series, threshold)
     fig.suptitle(_frame_title(index, frames, series, threshold), fontsize=10, wrap=True)
-    text = f"A path of the {robot.name} robot, {_frame_title(index, frames, series, threshold)}. Left, the robot"
-    text += " in 3D among the blocks near it and its base's trace; right, against the fraction of the path travelled, "
+    text = f"A path of the {robot.name} robot, {_frame_title(index, frames, series, threshold)}. At the top, the robot"
+    text += " in 3D among the blocks near it (the nearest edged in ink and named) and its base's trace; below,"
+    text += " against the fraction of the path travelled, "
     return describe(fig, text + _series_in_words(robot, Q, series, threshold) + ".", [_series_part(robot, Q, series)])
 
 
@@ -239,6 +245,14 @@ def _series_in_words(robot: BoxRobot, Q: np.ndarray, series: dict, threshold: fl
     )
     text = f"each DoF scaled to its bounds (0 lower, 1 upper), a panel per kind ({kinds}), from start to end: "
     text += ", ".join(moves)
+    for k, name in enumerate(robot.dof_names):  # an angle across ±π: its line jumps from one edge to the other
+        wraps = np.flatnonzero(np.abs(np.diff(scaled[:, k])) > 0.5)  # (w,) the frames before each wrap, as drawn
+        if len(wraps):
+            at = ", ".join(f"{(t + 0.5) / (len(Q) - 1):.0%}" for t in wraps)
+            text += (
+                f"; {name} wraps round (crosses ±π, its line jumping from one edge of its panel to the other) at {at}"
+            )
+            text += " of the path"
     if (valid := series["valid"]) is not None:
         text += f"; {int(np.sum(valid == 0))} of {len(valid)} frames in collision"
     if (clearance := series["clearance"]) is not None:
@@ -268,7 +282,7 @@ def _draw_series(
         draw_panel(ax, along)
         ax.axvline(along[index], color=NOW_COLOR, linewidth=1.0, gid="now")
         ax.locator_params(axis="y", nbins=3)
-        ax.tick_params(labelsize=9)
+        ax.tick_params(labelsize=10)
         ax.label_outer()
     axes[-1].set_xlabel("fraction of the path")
     handles = [h for ax in axes[: len(groups)] for h in ax.get_lines() if h.get_gid() == "dof"]
@@ -279,8 +293,8 @@ def _draw_series(
         title_fontsize=9,
         fontsize=9,
         ncol=min(robot.dof, 4),
-        loc="upper center",
-        bbox_to_anchor=(0.68, 0.93),  # between the title and the panels
+        bbox_to_anchor=(0.5, spec.get_position(fig).y1 + 0.005),  # between the robot's panel and the series
+        loc="lower center",
         frameon=False,
         handlelength=3.0,
         columnspacing=0.8,
@@ -318,11 +332,34 @@ def _draw_scene(
     color = UNCHECKED_COLOR if valid is None else VALID_COLOR if valid else INVALID_COLOR
     draw_robot(scene, robot, Q[index : index + 1], colors=[color], view="3d", workspace=workspace, margin=margin)
     _draw_trace(scene, robot, Q)
+    if workspace is not None and len(workspace.boxes):
+        _mark_nearest(scene, robot.link_aabbs(Q[index : index + 1])[0], workspace.boxes)
     verdict = "" if valid is None else ": valid" if valid else ": in collision"
     scene.set_title(f"the robot, blocks near it{verdict}", fontsize=9)
     scene.set_box_aspect(None, zoom=1.15)  # the robot larger in its panel: mplot3d leaves wide margins
     scene.locator_params(nbins=4)  # few tick labels: drawing text is most of a frame's cost
-    scene.tick_params(labelsize=8)
+    scene.tick_params(labelsize=9)
+
+
+def _mark_nearest(scene, links: np.ndarray, blocks: np.ndarray) -> None:
+    """Edge in ink, and name, the block nearest the robot's links ``(L, 2, 3)`` among ``blocks (K, 2, 3)`` (box to
+    box, min/max corners): the one a low clearance is about (review r16c: the block grazed was not marked)."""
+    gaps = np.maximum(0.0, np.maximum(blocks[:, None, 0] - links[None, :, 1], links[None, :, 0] - blocks[:, None, 1]))
+    lo, hi = blocks[int(np.argmin(np.linalg.norm(gaps, axis=-1).min(axis=1)))]  # (K, L, 3) gaps -> the nearest
+    add_box_3d(scene, aabb_corners(lo, hi), facecolor="none", edgecolor=COLORS["ink"], linewidth=1.6, gid="nearest")
+    x, y, _ = (lo + hi) / 2
+    scene.text(
+        x,
+        y,
+        hi[2],
+        "nearest block",
+        fontsize=9,
+        ha="center",
+        va="bottom",
+        zorder=10.0,
+        color=COLORS["ink"],
+        path_effects=halo(1.0, ("free",)),
+    )
 
 
 def _per_frame(values, frames: int, name: str) -> np.ndarray | None:

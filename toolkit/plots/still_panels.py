@@ -30,10 +30,10 @@ from toolkit.plots.robot_drawing import BLOCK_STYLE, INVALID_COLOR, VALID_COLOR,
 SAMPLE_MARKS = {  # kind of sample -> marker, colour, size (points²): the viewer's shapes (drawing.SAMPLE_SHAPES)
     "valid": ("o", VALID_COLOR, 36),  # 6 points across: 8 pixels as the site shows the still (100 dpi)
     "in collision": ("D", INVALID_COLOR, 28),  # as much ink as the circle (a diamond covers s, a circle 0.79 s)
-    "model wrong": ("*", COLORS["ink"], 260),
+    "model wrong": ("*", COLORS["ink"], 300),
 }
 SAMPLE_EDGE = dict(edgecolors=COLORS["ink"], linewidths=0.5)  # a thin ink edge: the shape shows on a block too
-WRONG_STYLE = dict(facecolors="none", edgecolors=COLORS["ink"], linewidths=1.0)  # hollow: the mark under it shows
+WRONG_STYLE = dict(facecolors="none", edgecolors=COLORS["ink"], linewidths=1.2)  # hollow: the mark under it shows
 TRACE_STYLE = dict(color=COLORS["trace"], linestyle="--")  # dashed: apart from the robot's blue links by more than hue
 SAMPLE_WORDS = {
     "valid": "circles",
@@ -206,7 +206,7 @@ def draw_points(ax, samples, trace, clip: bool = False, alpha: float = 1.0, scal
                 marker=marker,
                 s=size * scale,
                 depthshade=False,
-                alpha=alpha,
+                alpha=alpha if kind != "model wrong" else 1.0,  # a star in ink, never faded: it flags a mistake
                 zorder=2.0,
                 label=f"sample, {kind}",
                 **style,
