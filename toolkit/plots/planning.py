@@ -288,9 +288,10 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
         _draw_roadmap(ax, exact, step)
     for ax in axes[len(steps) :]:
         ax.set_axis_off()
-    fig.suptitle("Algorithm 1 step by step\n(hollow: not yet confirmed exactly; X: removed by a repair)", fontsize=11)
+    title = "The planner step by step, by the lines of Algorithm 1"
+    fig.suptitle(f"{title}\n(hollow: not yet confirmed exactly; X: removed by a repair)", fontsize=11)
     _roadmap_legend(fig, axes)
-    text = f"Algorithm 1 step by step, one panel per step, {len(steps)} steps. First: {step_in_words(steps[0])}"
+    text = f"{title}, one panel per step, {len(steps)} steps. First: {step_in_words(steps[0])}"
     text += f" Last: {step_in_words(steps[-1])}" if len(steps) > 1 else ""  # every step: the longer description
     return describe(fig, text, [_step_part(step) for step in steps])
 
