@@ -94,19 +94,19 @@ def reconstructions(
     if flipped is not None and np.shape(flipped) != grids.shape:
         raise ValueError(f"flipped has shape {np.shape(flipped)}, the grids {grids.shape}")
     accuracy = reconstruction_accuracy(decoded, grids)  # (W,)
-    fig = Figure(figsize=(PAGE_WIDTH, 3.4 * len(grids) + 0.3), layout="constrained")
+    fig = Figure(figsize=(PAGE_WIDTH, 3.0 * len(grids) + 0.3), layout="constrained")
     rows = fig.subfigures(len(grids), 1, squeeze=False)[:, 0]  # (W,) one row per workspace
     said, parts = [], []
     drawn: dict[str, np.ndarray] = {}  # the kinds of wrong cell drawn in any row, for the legend
     for k, (row, grid, out, name, acc) in enumerate(zip(rows, grids, decoded, names, accuracy)):
         kinds = wrong_kinds(grid, out, None if flipped is None else flipped[k])
         drawn |= kinds
-        axes = row.subplots(1, 3, width_ratios=(1, 1, 2))  # the wrong cells twice as large: their marks legible
+        axes = row.subplots(1, 3, width_ratios=(1, 1, 1.5))  # wrong cells larger, for their marks; r17b: input wider
         _image(axes[0], grid, "input")
         _image(axes[1], np.where(out > 0, 1.0, -1.0), "decoded (sign)")
         wrong = wrong_in_words(kinds)
         _image(axes[2], grid, wrong, alpha=0.25)
-        draw_wrong_cells(axes[2], grid, kinds, cell=72 * 0.45 * fig.get_figwidth() / max(grid.shape))
+        draw_wrong_cells(axes[2], grid, kinds, cell=72 * 0.4 * fig.get_figwidth() / max(grid.shape))
         all_free = np.mean(grid < 0)
         row.suptitle(f"{name}: {acc:.1%} of cells right (all free: {all_free:.1%})", fontsize=10)
         said.append(f"{name}: {acc:.1%} of cells right against {all_free:.1%} for answering all free; {wrong}")
