@@ -41,7 +41,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
 
     Each panel has its own scale, set by its bars: a whisker reaching past :data:`CUT` times the tallest bar (one
     slow query's spread would flatten every bar) is cut at the panel's top, a triangle there and its end written
-    beside it."""
+    over it, above the frame (the pair's ratio a line higher)."""
     fig = Figure(figsize=(PAGE_WIDTH, 3.7 * len(panels) + 0.8))  # one panel a row, as wide as a chapter's column
     axes = fig.subplots(len(panels), 1, squeeze=False)[:, 0]
     said, parts = [], []
@@ -53,8 +53,8 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         ratio = [float(np.median(per_query_ratios(planning[s]))) for s in names]  # (samplers,)
         bars = table["total_s"][:, 1] / table["total_s"][:, 0]  # (samplers,): the bars' own quotient, with / without
         crossed = (bars - 1) * (np.asarray(ratio) - 1) < 0  # (samplers,): the taller bar says the other way
-        for i, r in enumerate(ratio):  # above the frame, over the pair: never on a bar or a whisker
-            where = dict(xycoords=("data", "axes fraction"), xytext=(0, 2), textcoords="offset points")
+        for i, r in enumerate(ratio):  # above the frame, over the pair and a cut whisker's end: never on a bar
+            where = dict(xycoords=("data", "axes fraction"), xytext=(0, 13), textcoords="offset points")
             ax.annotate(
                 f"{r:.2f}x{'*' if crossed[i] else ''}", (i, 1.0), ha="center", va="bottom", fontsize=10, **where
             )
@@ -65,7 +65,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         ax.set_title(
             f"{title}\nabove each pair: median of each query's ratio, with / without (not the bars' ratio){note}",
             fontsize=9,
-            pad=16,
+            pad=27,
         )
         said.append(_stage_words(title, names, table, ratio, bars, crossed))
         said[-1] += cut_in_words(
@@ -156,7 +156,9 @@ def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndar
         bottom = bottom + table[key]
     quartiles = (table["total_s_q1"], table["total_s_q3"])
     beside = x + np.array([-1, 1]) * (BAR / 2 + 0.03)  # (samplers, modes): left of "without", right of "with"
-    return quartile_whiskers(ax, beside, table["total_s"], *quartiles, tallest=bottom.max(), label="total: quartiles")
+    return quartile_whiskers(
+        ax, beside, table["total_s"], *quartiles, tallest=bottom.max(), label="total: quartiles", end_above=True
+    )
 
 
 def quartile_whiskers(
