@@ -118,6 +118,10 @@ CONTRADICTED = (  # sentences that executed pages contradicted (issue 37), in th
     "and on 2DS no sampler saved time.",  # which network? The `paper` preset's medians saved with BT (0.88)
     "the recorded 100 queries of `docs/results.md`, section 6's figure, have",  # its `paper` panel saved sampling
     "the median of the queries' own ratios, time with / time without.",  # no warning: not a ratio of the bars
+    # issue 45, review r17a (chapter 04):
+    "roadmap sometimes never joins start and goal, with or without prediction",  # 2DS BT 100 % / 100 %
+    "The paper says the same of its bridge test",  # the paper: BT "perform the worst", and BT saves most in 3DC
+    "means, the paper's statistic,",  # the paper says "Average"; means are our reading
     # issue 45, the lead's reading of r13a and r13b:
     "and on 3DC-7 for no sampler",  # awkward: "on 3DC-7 it saved time for none of the four samplers"
     "Read the last two columns",  # chapter 01's speed table, six columns, was cut at the page's width: two tables

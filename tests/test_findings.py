@@ -239,3 +239,15 @@ def test_per_point_sentence_blames_the_machine_where_an_edge_point_costs_more_in
     moved = findings.per_point_sentence({"without": 320e-9, "with": 650e-9})
     assert ": 2.03 times as much with prediction for the same exact check of a point, so the machine's speed" in moved
     assert "machine" in findings.per_point_sentence({"without": 500e-9, "with": 450e-9})  # 0.90: a change that counts
+
+
+def test_table_3_against_the_papers_text_names_the_cells_its_means_do_not_give():
+    """Review r17a, by hand from §V's means: 3DO BT total 40.40 -> 43.13 is -6.8 % (Table 3: -8 %), 3DO OB sampling
+    1.13 -> 0.56 is 50 % (58 %), 2DS BT sampling 0.26 -> 0.11 is 58 % (74 %); 3DC-7 total BT 0.95 -> 0.44 is 54 % as
+    printed, and 2DS G total 0.09 -> 0.09 allows up to 10.5 %, Table 3's 11 % within its own rounding."""
+    differ = findings.table3_against_text()
+    assert differ["3DO total BT"] == pytest.approx((1 - 43.13 / 40.40, -0.08))
+    assert differ["3DO sampling OB"] == pytest.approx((1 - 0.56 / 1.13, 0.58))
+    assert differ["2DS sampling BT"] == pytest.approx((1 - 0.11 / 0.26, 0.74))
+    assert not {"3DC-7 total BT", "2DS total G", "3DO total OB"} & set(differ)
+    assert "in 25 of its 32 cells, and not in 7 (" in findings.table3_sentence()

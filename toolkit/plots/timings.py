@@ -41,8 +41,8 @@ def stage_times(panels: dict[str, dict]) -> Figure:
 
     Each panel has its own scale, set by its bars: a whisker reaching past :data:`CUT` times the tallest bar (one
     slow query's spread would flatten every bar) is cut at the panel's top, a triangle there and its end written
-    beside it."""
-    fig = Figure(figsize=(PAGE_WIDTH, 3.7 * len(panels) + 0.7))  # one panel a row, as wide as a chapter's column
+    over it, above the frame (the pair's ratio a line higher)."""
+    fig = Figure(figsize=(PAGE_WIDTH, 3.7 * len(panels) + 0.8))  # one panel a row, as wide as a chapter's column
     axes = fig.subplots(len(panels), 1, squeeze=False)[:, 0]
     said, parts = [], []
     for ax, (title, planning) in zip(axes, panels.items()):
@@ -53,17 +53,19 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         ratio = [float(np.median(per_query_ratios(planning[s]))) for s in names]  # (samplers,)
         bars = table["total_s"][:, 1] / table["total_s"][:, 0]  # (samplers,): the bars' own quotient, with / without
         crossed = (bars - 1) * (np.asarray(ratio) - 1) < 0  # (samplers,): the taller bar says the other way
-        for i, r in enumerate(ratio):  # above the frame, over the pair: never on a bar or a whisker
-            where = dict(xycoords=("data", "axes fraction"), xytext=(0, 2), textcoords="offset points")
-            ax.annotate(f"{r:.2f}x{'*' if crossed[i] else ''}", (i, 1.0), ha="center", va="bottom", fontsize=8, **where)
-        ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=8)
+        for i, r in enumerate(ratio):  # above the frame, over the pair and a cut whisker's end: never on a bar
+            where = dict(xycoords=("data", "axes fraction"), xytext=(0, 13), textcoords="offset points")
+            ax.annotate(
+                f"{r:.2f}x{'*' if crossed[i] else ''}", (i, 1.0), ha="center", va="bottom", fontsize=10, **where
+            )
+        ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=9)
         ax.set_xlabel("sampler, without / with prediction")
         ax.set_ylabel("ms per query (median)")
         note = "\n*: the bars say the other way (the taller is the other mode's)" if crossed.any() else ""
         ax.set_title(
             f"{title}\nabove each pair: median of each query's ratio, with / without (not the bars' ratio){note}",
             fontsize=9,
-            pad=14,
+            pad=27,
         )
         said.append(_stage_words(title, names, table, ratio, bars, crossed))
         said[-1] += cut_in_words(
@@ -79,8 +81,8 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         parts.append(Part(title, f"ms per query; {said[-1]}", columns, rows))
     shown = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # each entry once
     order = sorted(shown, key=lambda label: label not in STAGE_LABELS.values())  # the stages first, in their order
-    fig.legend([shown[k] for k in order], order, loc="lower center", ncol=2, fontsize=8, frameon=False)
-    fig.tight_layout(rect=(0, 0.7 / fig.get_figheight(), 1, 1))  # the legend in the 0.7 in below the panels
+    fig.legend([shown[k] for k in order], order, loc="upper center", ncol=2, fontsize=9, frameon=False)
+    fig.tight_layout(rect=(0, 0, 1, 1 - 0.8 / fig.get_figheight()))  # the legend over the panels, where a reader starts
     text = "Median planning time per query in ms without and with prediction, per sampler, split into the planner's"
     text += " stages (hatched), with the median of each query's own time ratio, with / without (not a ratio of the"
     text += " bars), above each pair;"
@@ -102,6 +104,7 @@ def _stage_words(title: str, names: list[str], table: dict, ratio: list[float], 
 
 
 MS = 1000.0  # the figure's unit, ms, per second
+BAR = 0.32  # a stage bar's width; a pair's centres are 0.4 apart, its whiskers stand beside it
 CUT = 2.0  # a whisker reaching past CUT times a panel's tallest bar is cut at its top, its end written there
 
 
@@ -133,7 +136,8 @@ def cut_in_words(cut: np.ndarray, labels, q3: np.ndarray, top: float) -> str:
 
 def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndarray:
     """:func:`stage_times`' bars at ``x (samplers, modes)``: the stages of ``table`` (key -> ``(samplers, modes)``)
-    stacked, hatched by stage, and a whisker from the total's first to third quartile, the y axis up to the bars and
+    stacked, hatched by stage, and a whisker from the total's first to third quartile beside the bar, on the pair's
+    outer side and off its segments (review r17a), the y axis up to the bars and
     the whiskers within :data:`CUT` times the tallest bar; returns which whiskers run past it ``(samplers, modes)``,
     drawn to the top with a triangle and their end written."""
     bottom = np.zeros_like(table["total_s"])
@@ -141,7 +145,7 @@ def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndar
         ax.bar(
             x.ravel(),
             table[key].ravel(),
-            0.38,
+            BAR,
             bottom=bottom.ravel(),
             label=STAGE_LABELS[key],
             color=CATEGORICAL[k],
@@ -151,7 +155,10 @@ def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndar
         )
         bottom = bottom + table[key]
     quartiles = (table["total_s_q1"], table["total_s_q3"])
-    return quartile_whiskers(ax, x, table["total_s"], *quartiles, tallest=bottom.max(), label="total: quartiles")
+    beside = x + np.array([-1, 1]) * (BAR / 2 + 0.03)  # (samplers, modes): left of "without", right of "with"
+    return quartile_whiskers(
+        ax, beside, table["total_s"], *quartiles, tallest=bottom.max(), label="total: quartiles", end_above=True
+    )
 
 
 def quartile_whiskers(
