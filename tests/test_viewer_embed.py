@@ -500,4 +500,4 @@ def test_the_animation_is_never_washed_out(planned, chromium, tmp_path):
             page.wait_for_timeout(400)
     finally:
         page.close()
-    assert all(seen >= 30 and white >= 3 and behind >= 3 for seen, white, behind in frames), frames
+    assert all(seen >= 30 and white >= 3 and behind >= 3 for seen, white, behind in frames), str(frames)
