@@ -465,7 +465,8 @@ def robot_seen(png: bytes) -> tuple[int, float, float]:
     robot = (np.abs(hsv[..., 0] - hue) < 0.04) & (hsv[..., 1] > 0.8)  # (H, W)
     if robot.sum() == 0:
         return 0, 0.0, 0.0
-    ring = ndimage.binary_dilation(robot, iterations=8) & ~ndimage.binary_dilation(robot, iterations=2)
+    outline = int(np.ceil(draw.LINK_EDGE_PX))  # the links' own ink edges: the robot, not what it is seen against
+    ring = ndimage.binary_dilation(robot, iterations=outline + 6) & ~ndimage.binary_dilation(robot, iterations=outline)
     as_hex = lambda pixels: "#" + "".join(f"{round(c * 255):02x}" for c in np.median(pixels, axis=0))
     return (
         int(robot.sum()),
