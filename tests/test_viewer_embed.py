@@ -77,15 +77,15 @@ def test_the_animation_holds_one_robot_pose_per_frame_along_the_path(planned):
     record, _ = recording(document)
     assert record["durationSeconds"] == pytest.approx(seconds)
     poses = robot_poses(document)
-    expected = draw.robot_boxes(v.robot, v.path_configurations(np.linspace(0, 1, frames))).centers.reshape(
-        frames, -1, 3
-    )
+    Q = v.path_configurations(np.linspace(0, 1, frames))  # (F, dof)
+    expected = draw.robot_boxes(v.robot, Q).centers.reshape(frames, -1, 3)  # (F, L, 3) where the links stand
+    looks = framing.follow_camera(v.robot, Q)[0]  # (F, 3)
     assert len(poses) == frames  # the scene as the recording starts, then one move per frame
     times = np.array([time for time, _ in poses])
     np.testing.assert_allclose(times, np.linspace(0.0, seconds, frames), atol=1e-9)
-    for (_, centers), want in zip(poses, expected):
-        np.testing.assert_allclose(centers, want, atol=1e-5)
-    assert not np.allclose(poses[0][1], poses[-1][1], atol=0.1)  # the robot really travels
+    for (_, centers), want, look_at in zip(poses, expected, looks):  # drawn slid with the scene (the camera follows)
+        np.testing.assert_allclose(centers - (looks.mean(axis=0) - look_at), want, atol=1e-5)
+    assert not np.allclose(expected[0], expected[-1], atol=0.1)  # the robot really travels
 
 
 def test_the_animation_page_is_self_contained(planned):
@@ -118,6 +118,9 @@ def cameras(document: str) -> dict[str, np.ndarray]:
 
 
 def test_the_animation_keeps_the_robot_framed_by_sliding_the_scene_under_the_camera(planned):
+    """The scene slides by its frames' poses, the robot's links are drawn where the camera looks: viser's player
+    poses a node a drawn frame or more before it reshapes one, and a robot slid by its frame (its links reshaped
+    later) left the view for those frames, a quarter of the screenshots under load."""
     v, frames, seconds = planned, 8, 1.0
     document = v.animation_html(frames=frames, seconds=seconds)
     Q = v.path_configurations(np.linspace(0, 1, frames))
@@ -125,10 +128,13 @@ def test_the_animation_keeps_the_robot_framed_by_sliding_the_scene_under_the_cam
     camera = cameras(document)
     moves = slides(document)
     assert all(len(moves[name]) == 1 for name in ("/lights/key", "/workspace/floor"))  # placed once: the lights stay
-    for name, steps in ((name, moves[name]) for name in ("/workspace", "/robot", "/plan")):
+    for name, steps in ((name, moves[name]) for name in ("/workspace", "/plan")):
         assert [t for t, _ in steps] == pytest.approx(np.linspace(0.0, seconds, frames)), name  # frame 0's too
         for (_, offset), look_at in zip(steps, looks):
             np.testing.assert_allclose(look_at + offset, camera["look_at"], atol=1e-9)  # the robot, where it looks
+    assert "/robot" not in moves  # never posed: whatever the player draws first, the links stay in view
+    for _, centers in robot_poses(document):
+        np.testing.assert_allclose(centers.mean(axis=0), camera["look_at"], atol=1e-5)
     np.testing.assert_allclose(camera["position"] - camera["look_at"], positions[0] - looks[0])
     np.testing.assert_allclose(looks, v.robot.link_boxes(Q)[0].mean(axis=1))  # the middle of the robot's links
     distance = np.linalg.norm(positions - looks, axis=1)
@@ -304,6 +310,7 @@ def test_the_animation_leaves_the_robot_and_the_camera_where_they_were(planned):
     np.testing.assert_allclose(v.server.initial_camera.look_at, camera[0])
     np.testing.assert_allclose(v.server.initial_camera.position, camera[1])
     assert all(np.allclose(frame.position, 0.0) for frame in v.frames.values())  # the scene back where it belongs
+    np.testing.assert_allclose(v.shift, 0.0)  # and the robot drawn where it stands
 
 
 def test_embed_is_a_static_snapshot_of_the_scene(rng):
@@ -458,7 +465,8 @@ def robot_seen(png: bytes) -> tuple[int, float, float]:
     robot = (np.abs(hsv[..., 0] - hue) < 0.04) & (hsv[..., 1] > 0.8)  # (H, W)
     if robot.sum() == 0:
         return 0, 0.0, 0.0
-    ring = ndimage.binary_dilation(robot, iterations=8) & ~ndimage.binary_dilation(robot, iterations=2)
+    outline = int(np.ceil(draw.LINK_EDGE_PX))  # the links' own ink edges: the robot, not what it is seen against
+    ring = ndimage.binary_dilation(robot, iterations=outline + 6) & ~ndimage.binary_dilation(robot, iterations=outline)
     as_hex = lambda pixels: "#" + "".join(f"{round(c * 255):02x}" for c in np.median(pixels, axis=0))
     return (
         int(robot.sum()),
@@ -475,7 +483,8 @@ def test_the_animation_is_never_washed_out(planned, chromium, tmp_path):
     of chapter 05's animation came out washed out, the robot at 1.1:1 against the blocks (no frame sampled here
     showed it at all). Now the scene is lit without that map, the page keeps the view opaque and 3DC's blocks are
     fainter (the robot inside one stood at 2.5:1): the frames sampled show the robot at 3:1 or more on white and
-    against the pixels around it (a frame may catch the player's loop, where no robot is drawn)."""
+    against the pixels around it. Every one shows it: a robot slid by its frame used to leave the view for the drawn
+    frames between its pose and its links' new shape (up to 4 of these 12 screenshots at a load of 4-5)."""
     page_file = tmp_path / "animation.html"
     page_file.write_text(planned.animation_html(frames=20, seconds=2.0), encoding="utf-8")
     page = chromium.new_page(viewport={"width": 640, "height": 480})
@@ -492,7 +501,4 @@ def test_the_animation_is_never_washed_out(planned, chromium, tmp_path):
             page.wait_for_timeout(400)
     finally:
         page.close()
-    seen = [frame for frame in frames if frame[0] >= 30]
-    # a screenshot can catch the player's loop, where the robot is not drawn: on a busy machine up to a quarter of
-    # them (10 of 64 at a load average of 12); what is drawn must never be washed out
-    assert 3 * len(frames) <= 4 * len(seen) and all(white >= 3 and behind >= 3 for _, white, behind in seen), frames
+    assert all(seen >= 30 and white >= 3 and behind >= 3 for seen, white, behind in frames), str(frames)

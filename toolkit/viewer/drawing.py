@@ -76,6 +76,10 @@ class Boxes:
         """The same boxes, ``margin`` larger on every side, about their centres."""
         return Boxes(self.centers, self.rotations, self.sizes + 2 * margin)
 
+    def moved(self, offset: npt.ArrayLike) -> Boxes:
+        """The same boxes, their centres moved by ``offset (3,)``."""
+        return Boxes(self.centers + np.asarray(offset, dtype=float), self.rotations, self.sizes)
+
 
 def obstacle_boxes(workspace: Workspace) -> Boxes:
     """The workspace's ``K`` axis-aligned blocks; 2D blocks are extruded to ``FLAT_HEIGHT``."""

@@ -35,7 +35,7 @@ LAYERS = ("obstacles", "robot", "prediction", "samples", "roadmap", "path")
 # nodes shown and hidden with a layer, not its children (viser would draw a see-through node's child see-through)
 ALONG = {"obstacle_edges": "obstacles", "link_edges": "robot"}
 HALO = 0.5  # the prediction wireframe stands this share of the thinnest link clear of the links: apart from their edges
-SLIDING = ("/workspace", "/robot", "/plan")  # scene frames an animation slides so that the camera follows the robot
+SLIDING = ("/workspace", "/plan")  # frames an animation slides so the camera follows the robot; it is drawn moved
 RAW = "raw"  # the "sampler" of uniform configurations, unfiltered: what a model is asked about
 
 EVENTS = {  # what a Viewer tells its listeners, and the arguments a listener's callback receives
@@ -78,7 +78,8 @@ class Viewer:
         self.sample_clouds: dict[str, viser.PointCloudHandle] = {}  # and their point clouds
         self.sample_points: tuple[np.ndarray, dict[str, np.ndarray]] | None = None  # (N, 3) and masks by kind
         self.stopped = False
-        self.frames = {name: self.server.scene.add_frame(name, show_axes=False) for name in SLIDING}
+        self.frames = {name: self.server.scene.add_frame(name, show_axes=False) for name in (*SLIDING, "/robot")}
+        self.shift = np.zeros(3)  # the robot is drawn this far from where it stands (an animation's slide)
         try:
             self.load(scenario, seed)
         except BaseException:  # e.g. an unknown scenario: leave no server behind
@@ -165,7 +166,7 @@ class Viewer:
         q = self.robot.check_configs(q, "q")[0]
         with self.lock:
             self.q = q
-            boxes = draw.robot_boxes(self.robot, q[None])
+            boxes = draw.robot_boxes(self.robot, q[None]).moved(self.shift)
             self.valid = bool(self.exact.are_valid(q[None])[0])
             draw.move_boxes(
                 self.nodes["robot"],
@@ -329,9 +330,9 @@ class Viewer:
 
         A recording made with viser's scene serializer: the scene as it is now, then ``frames`` configurations
         evenly spaced along the path (:meth:`path_configurations`), ``seconds / (frames - 1)`` apart, colored as
-        :meth:`set_configuration` colors them. The camera follows the robot (``framing.follow_camera``): a
-        recording cannot move a browser's camera, so the scene (:data:`SLIDING`, the samples) slides under it, and
-        a student can still turn the view. The page loops, with a timeline to pause and scrub; all is put back.
+        :meth:`set_configuration` colors them. The camera follows the robot (``framing.follow_camera``): a recording
+        cannot move a browser's camera, so the scene slides under it (:meth:`_slide`), and a student can still turn
+        the view. The page loops, with a timeline to pause and scrub; all is put back.
         """
         if frames < 2 or not seconds > 0:
             raise ValueError(f"an animation needs frames >= 2 and seconds > 0, got {frames} and {seconds}")
@@ -377,9 +378,12 @@ class Viewer:
         self.nodes["disagreement"].visible = self.visible["prediction"] and self.predicted_valid != self.valid
 
     def _slide(self, offset: np.ndarray) -> None:
-        """Move the whole scene but the lights by ``offset (3,)`` (zero: where it belongs)."""
-        for handle in [*self.frames.values(), *([self.nodes["samples"]] if "samples" in self.nodes else [])]:
+        """Move all but the lights by ``offset (3,)`` (zero: where it belongs): :data:`SLIDING` and the samples by pose,
+        the robot drawn moved (a page's player poses before it reshapes: a robot slid by its frame left the view)."""
+        moving = [self.frames[name] for name in SLIDING] + [self.nodes[n] for n in ("samples",) if n in self.nodes]
+        for handle in moving:
             handle.position = offset
+        self.shift = np.asarray(offset, dtype=float)
 
     def _aim_camera(self, look_at: np.ndarray, position: np.ndarray) -> None:
         self.server.initial_camera.look_at, self.server.initial_camera.position = look_at, position
