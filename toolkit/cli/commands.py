@@ -216,6 +216,9 @@ def cmd_view(args: argparse.Namespace) -> int:
             print(f"toolkit view: wrote {screenshot(v.url, args.screenshot)}")
         else:
             viewer.serve_forever(v)
+    except KeyboardInterrupt:  # Ctrl-C once the address is printed is how a served viewer stops, even while it
+        if args.screenshot:  # still samples or has not yet begun to wait; a screenshot cut short is interrupted
+            raise
     finally:
         v.stop()
     return 0
