@@ -266,6 +266,24 @@ def test_a_stills_model_wrong_star_is_hollow_round_the_mark_it_flags(crossing):
         scenes.scene_still(scenarios.get("2ds").robot, workspace, {})
 
 
+def test_a_stills_overview_stars_every_mistake_of_a_thinned_cloud(crossing):
+    """Review r17c: the overview showed about 6 stars for 103 wrong samples. Thinned to every k-th, it still draws
+    each sample the model gets wrong, its mark under its star, and its text says so."""
+    robot, workspace, _, _, _ = crossing
+    n = 2 * still_panels.OVERVIEW_SAMPLES + 1
+    points = robot.link_boxes(robot.sample(np.random.default_rng(0), n))[0][:, 0]  # (n, 3) bases
+    valid = np.arange(n) % 5 == 0  # (n,)
+    wrong = np.arange(n) % 7 == 1  # (n,) 58 of 401, none of them among the every-3rd kept: 1, 8, 15, ...
+    kinds = {"valid": valid, "in collision": ~valid, "model wrong": wrong}
+    fig = scenes.scene_still(robot, workspace, {}, samples=(points, kinds))
+    drawn = {c.get_label(): len(c.get_offsets()) for c in fig.axes[0].collections}
+    kept = (np.arange(n) % 3 == 0) | wrong
+    assert drawn["sample, model wrong"] == int(wrong.sum())
+    assert drawn["sample, valid"] == int((kept & valid).sum())
+    assert drawn["sample, in collision"] == int((kept & ~valid).sum())
+    assert "1 sample in 3 drawn, and every one the model gets wrong" in alt_text(fig)
+
+
 @pytest.mark.parametrize("index", [0, FRAMES // 2])
 def test_no_text_of_a_frame_lies_over_another(crossing, index):
     """Chapter 05's frame at the site's width: the names at the DoF lines' ends a line of text apart even where every

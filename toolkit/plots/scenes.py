@@ -71,7 +71,7 @@ def scene_still(
     invalid one hatched, by ``valid``; its joints dotted; the blocks within ``margin``, those near a link darker), with
     the samples inside its window and the trace. A single pose is seen twice, a quarter turn apart, above the
     overview; several follow it, one panel each. Of more than :data:`~toolkit.plots.still_panels.OVERVIEW_SAMPLES`
-    samples the overview draws every k-th."""
+    samples the overview draws every k-th, and every one a model gets wrong."""
     if robot.dim != 3:
         raise ValueError(f"a scene's still is drawn in 3D; the {robot.name} robot moves in {robot.dim}D")
     valid = valid or {}
@@ -114,7 +114,7 @@ def _still_legend(fig: Figure, valid: dict[str, bool]) -> None:
         for ok, text, c in ((True, "robot, valid", VALID_COLOR), (False, "robot, in collision", INVALID_COLOR))
         if ok in shown
     }
-    fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=5.0)
+    fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=5.0, h_pad=2.5)  # r17c: "y" met a title
     low = min((ax.get_tightbbox() or ax.bbox).y0 for ax in fig.axes) / fig.bbox.height  # the lowest label
     fig.legend(handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, low), ncol=3, frameon=False)
 
@@ -130,6 +130,7 @@ def _still_described(robot: BoxRobot, workspace: Workspace, poses, valid, sample
         )
         step = overview_step(len(samples[0]))
         text += f", 1 sample in {step} drawn" if step > 1 else ""
+        text += ", and every one the model gets wrong" if step > 1 and "model wrong" in samples[1] else ""
     text += ", the path of the robot's base" if trace is not None else ""
     if poses:
         text += ", the robot drawn " + ("over them" if samples is not None else "in it")

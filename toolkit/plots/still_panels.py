@@ -4,8 +4,8 @@ A 3D picture on a page cannot be turned, so each panel is drawn to be read from 
 
 - :func:`overview` draws the whole workspace, its blocks faint (those near the robot darker), one mark per sample (a
   circle valid, a diamond in collision, large enough to tell apart, edged in ink; light, and at most
-  :data:`OVERVIEW_SAMPLES` of them) and, over them, the robot itself at each pose: its links opaque in its colour,
-  edged in ink and ringed in white, a label above it;
+  :data:`OVERVIEW_SAMPLES` of them besides every one a model gets wrong, starred) and, over them, the robot itself
+  at each pose: its links opaque in its colour, edged in ink and ringed in white, a label above it;
 - :func:`close_up` draws the robot at one pose among the blocks near it: its links opaque, edged thick in ink, each
   joint a white dot ringed in ink, the blocks faded (a robot behind one shows through it), those within
   :data:`NEAR` of a link darker than the rest of its window. The camera looks across the plane the chain spreads
@@ -41,6 +41,7 @@ SAMPLE_WORDS = {
     "model wrong": "hollow stars round their marks",
 }  # SAMPLE_MARKS in words
 OVERVIEW_SAMPLES = 200  # at most this many samples in a still's overview: more hide the blocks and the robot
+OVERVIEW_STAR = 150  # points²: an overview's star round a mistake (a close-up's: SAMPLE_MARKS' 300, scaled)
 OVERVIEW_ALPHA = 0.45  # an overview's marks, light: the robot drawn over them and the blocks under them show
 CLOSE_UP_SCALE = 1.5  # a close-up's marks this many times larger: a small window, seen near
 NEAR = 0.3  # workspace units: a block this close to a link's bounding box is drawn darker in a close-up
@@ -64,10 +65,14 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
     for (lo, hi), dark in zip(workspace.boxes, near):
         style = dict(alpha=0.3, linewidth=0.8) if dark else dict(alpha=0.15, linewidth=0.2)
         add_box_3d(ax, aabb_corners(lo, hi), **style, **BLOCK_STYLE)
-    if samples is not None:  # every k-th, light, under the robot
+    if samples is not None:  # every k-th, and every one a model gets wrong (review r17c: 6 stars for 103), light
         keep = np.arange(len(samples[0])) % overview_step(len(samples[0])) == 0  # (N,)
+        keep |= samples[1].get("model wrong", np.zeros_like(keep))
         samples = (samples[0][keep], {kind: mask[keep] for kind, mask in samples[1].items()})
     draw_points(ax, samples, trace, alpha=OVERVIEW_ALPHA)
+    for marks in ax.collections:  # every mistake starred, each star smaller than a close-up's: a hundred fit
+        if marks.get_label() == "sample, model wrong":
+            marks.set(sizes=[OVERVIEW_STAR], linewidth=0.9)
     ax.computed_zorder = False  # the robot in front of every sample
     lift = 0.04 * float(np.max(workspace.upper - workspace.lower))  # a label this far above the robot
     for (name, (q, color)), boxes in zip(poses.items(), aabbs):
