@@ -266,6 +266,23 @@ def test_a_stills_model_wrong_star_is_hollow_round_the_mark_it_flags(crossing):
         scenes.scene_still(scenarios.get("2ds").robot, workspace, {})
 
 
+def test_a_stills_close_up_says_what_the_model_answers(crossing):
+    """Review r17c: nothing on the still marked that the model rejects the valid robot (P = 0.08). The close-up's
+    title says it, and the text; the quarter-turn view and a still without a model say nothing of a model."""
+    robot, workspace, _, path, _ = crossing
+    q = path[0]
+    fig = scenes.scene_still(
+        robot, workspace, {"the robot": q}, valid={"the robot": True}, model={"the robot": (0.08, False)}
+    )
+    close_up, turned, _ = fig.axes
+    assert close_up.get_title() == "the robot, close up, valid\nthe model: P(valid) 0.08, rejects it"
+    assert turned.get_title() == "the robot, a quarter turn round"
+    assert "the robot, valid, the model: P(valid) 0.08, rejects it" in alt_text(fig)
+    accepted = scenes.scene_still(robot, workspace, {"start": q}, model={"start": (0.914, True)})
+    assert accepted.axes[0].get_title().endswith("the model: P(valid) 0.91, accepts it")
+    assert "model" not in scenes.scene_still(robot, workspace, {"start": q}).axes[0].get_title()
+
+
 def test_a_stills_overview_stars_every_mistake_of_a_thinned_cloud(crossing):
     """Review r17c: the overview showed about 6 stars for 103 wrong samples. Thinned to every k-th, it still draws
     each sample the model gets wrong, its mark under its star, and its text says so."""

@@ -62,6 +62,7 @@ def scene_still(
     samples: tuple[np.ndarray, dict[str, np.ndarray]] | None = None,
     trace: np.ndarray | None = None,
     margin: float = 0.6,
+    model: dict[str, tuple[float, bool]] | None = None,
 ) -> Figure:
     """A viewer's 3D scene as a still picture: the whole workspace, its blocks, the ``samples`` at their base
     (``(points (N, 3), {kind: mask (N,)})``, kinds as :func:`toolkit.viewer.drawing.sample_kinds` names them: circles
@@ -69,7 +70,9 @@ def scene_still(
     base along a path (dashed) and the robot drawn over them at each pose, labelled; and the robot close up at each pose
     ``{label: q (dof,)}`` (:func:`toolkit.plots.still_panels.close_up`: opaque links in the valid colour, or the
     invalid one hatched, by ``valid``; its joints dotted; the blocks within ``margin``, those near a link darker), with
-    the samples inside its window and the trace. A single pose is seen twice, a quarter turn apart, above the
+    the samples inside its window and the trace; where a ``model`` gives a pose's ``(P(valid), predicted valid)``,
+    its close-up's title says what the model answers (review r17c: nothing marked that it rejects a valid pose).
+    A single pose is seen twice, a quarter turn apart, above the
     overview; several follow it, one panel each. Of more than :data:`~toolkit.plots.still_panels.OVERVIEW_SAMPLES`
     samples the overview draws every k-th, and every one a model gets wrong."""
     if robot.dim != 3:
@@ -94,9 +97,19 @@ def scene_still(
         near, angles = close_up(ax, robot, q, workspace, color=colors[label], margin=margin, turn=turn)
         drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE)
         seen.setdefault(label, (drawn, near, angles))
-        ax.set_title(f"{label}, close up{_STATE[ok]}" if not turn else f"{label}, a quarter turn round", fontsize=10)
+        verdict = _model_verdict((model or {}).get(label))
+        ax.set_title(
+            f"{label}, close up{_STATE[ok]}{verdict}" if not turn else f"{label}, a quarter turn round", fontsize=10
+        )
     _still_legend(fig, valid)
-    return describe(fig, *_still_described(robot, workspace, poses, valid, samples, trace, seen))
+    return describe(fig, *_still_described(robot, workspace, poses, valid, samples, trace, seen, model or {}))
+
+
+def _model_verdict(answer: tuple[float, bool] | None) -> str:
+    """A close-up title's second line: what a model answers for the pose, ``(P(valid), predicted valid)``."""
+    if answer is None:
+        return ""
+    return f"\nthe model: P(valid) {answer[0]:.2f}, {'accepts' if answer[1] else 'rejects'} it"
 
 
 def _overview_name(label: str, poses: int, valid: bool | None) -> str:
@@ -119,9 +132,12 @@ def _still_legend(fig: Figure, valid: dict[str, bool]) -> None:
     fig.legend(handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, low), ncol=3, frameon=False)
 
 
-def _still_described(robot: BoxRobot, workspace: Workspace, poses, valid, samples, trace, seen) -> tuple[str, list]:
+def _still_described(
+    robot: BoxRobot, workspace: Workspace, poses, valid, samples, trace, seen, model
+) -> tuple[str, list]:
     """A still's text alternative and its longer description (what each panel draws, each pose's values, the
-    samples and blocks near it and where the camera stands, ``seen``: ``{label: (samples, blocks, (elev, azim))}``)."""
+    samples and blocks near it and where the camera stands, ``seen``: ``{label: (samples, blocks, (elev, azim))}``,
+    and what the ``model`` answers for it)."""
     text = f"The {robot.name} robot in workspace {workspace.family} ({len(workspace.boxes)} blocks) as a still: "
     text += "the whole workspace"
     if samples is not None:
@@ -161,6 +177,7 @@ def _still_described(robot: BoxRobot, workspace: Workspace, poses, valid, sample
     ]
     said = [
         f"{label}{_STATE[valid.get(label)]}"
+        + _model_verdict(model.get(label)).replace("\n", ", ")
         + (f", {seen[label][0]} sample{'s' * (seen[label][0] != 1)} near it" if samples else "")
         for label in poses
     ]
