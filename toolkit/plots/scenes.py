@@ -48,9 +48,7 @@ _STATE = {None: "", True: ", valid", False: ", in collision"}  # a pose's verdic
 _POSE_COLOR = {None: UNCHECKED_COLOR, True: VALID_COLOR, False: INVALID_COLOR}  # a pose's links, by its verdict
 TURN = 90.0  # degrees about the vertical: a single pose's second close-up, a quarter turn round the first
 CLOSE_UP_HEIGHT = 3.2  # inches: a row of two close-ups
-OVERVIEW_HEIGHT = (
-    5.0  # inches: the overview, a row of its own (review r16c: in half a row, 230 px, its stars were lost)
-)
+OVERVIEW_HEIGHT = 5.0  # inches: the overview, a row of its own (review r16c: in half a row, 230 px, stars were lost)
 
 
 def scene_still(
@@ -107,9 +105,7 @@ def scene_still(
 
 def _model_verdict(answer: tuple[float, bool] | None) -> str:
     """A close-up title's second line: what a model answers for the pose, ``(P(valid), predicted valid)``."""
-    if answer is None:
-        return ""
-    return f"\nthe model: P(valid) {answer[0]:.2f}, {'accepts' if answer[1] else 'rejects'} it"
+    return "" if answer is None else f"\nthe model: P(valid) {answer[0]:.2f}, {('rejects', 'accepts')[answer[1]]} it"
 
 
 def _overview_name(label: str, poses: int, valid: bool | None) -> str:

@@ -38,9 +38,10 @@ def scene_still(viewer, poses: dict[str, np.ndarray] | None = None) -> Figure:
         trace = draw.config_points(viewer.robot, dense, "base")  # (T, 3)
     samples = viewer.sample_points if viewer.visible["samples"] else None
     model = None
-    if isinstance(viewer.model, models.Predicts):  # what the model answers for each pose, in its close-up's title
+    checker = viewer.model
+    if isinstance(checker, models.Predicts):  # what the model answers for each pose, in its close-up's title
         Q = np.stack(list(poses.values()))  # (P, dof)
-        answers = zip(viewer.model.probability(Q), viewer.model.are_valid(Q))
+        answers = zip(checker.probability(Q), viewer.model.are_valid(Q))
         model = {label: (float(p), bool(ok)) for label, (p, ok) in zip(poses, answers)}
     return scenes.scene_still(
         viewer.robot, viewer.workspace, poses, valid=valid, samples=samples, trace=trace, model=model
