@@ -230,12 +230,13 @@ def test_a_stills_overview_thins_a_dense_cloud_and_its_text_says_so(crossing):
     fig = scenes.scene_still(
         robot,
         workspace,
-        {"here": robot.sample(np.random.default_rng(1), 1)[0]},
+        {"here": (pose := robot.sample(np.random.default_rng(1), 1)[0])},
         samples=(points, {"valid": valid, "in collision": ~valid}),
     )
     close_up, turned, overview = fig.axes  # one pose: seen twice, above the overview
-    assert [close_up.get_title(), turned.get_title()] == ["here, close up", "here, a quarter turn round"]
-    assert (turned.azim - close_up.azim) % 360 == pytest.approx(scenes.TURN)
+    turn = still_panels.second_turn(robot, np.asarray(pose), workspace, 0.6)  # a quarter turn, or a third or a sixth
+    assert [close_up.get_title(), turned.get_title()] == ["here, close up", f"here, {still_panels.turn_words(turn)}"]
+    assert (turned.azim - close_up.azim) % 360 == pytest.approx(turn % 360)
     assert turned.elev == pytest.approx(close_up.elev)
     drawn = {c.get_label(): c for c in overview.collections if c.get_label().startswith("sample")}
     kept = np.arange(n) % 3 == 0  # 1 in 3: at most OVERVIEW_SAMPLES of 2 * OVERVIEW_SAMPLES + 1

@@ -38,15 +38,17 @@ from toolkit.plots.still_panels import (
     close_up,
     draw_points,
     inside_mask,
+    model_words,
     overview,
     overview_step,
+    second_turn,
+    turn_words,
 )
 
 UNCHECKED_COLOR = COLORS["unchecked"]  # the robot when no validity is given
 NOW_COLOR = COLORS["occupied"]
 _STATE = {None: "", True: ", valid", False: ", in collision"}  # a pose's verdict, as a title and its text say it
 _POSE_COLOR = {None: UNCHECKED_COLOR, True: VALID_COLOR, False: INVALID_COLOR}  # a pose's links, by its verdict
-TURN = 90.0  # degrees about the vertical: a single pose's second close-up, a quarter turn round the first
 CLOSE_UP_HEIGHT = 3.2  # inches: a row of two close-ups
 OVERVIEW_HEIGHT = 5.0  # inches: the overview, a row of its own (review r16c: in half a row, 230 px, stars were lost)
 
@@ -70,14 +72,17 @@ def scene_still(
     invalid one hatched, by ``valid``; its joints dotted; the blocks within ``margin``, those near a link darker), with
     the samples inside its window and the trace; where a ``model`` gives a pose's ``(P(valid), predicted valid)``,
     its close-up's title says what the model answers (review r17c: nothing marked that it rejects a valid pose).
-    A single pose is seen twice, a quarter turn apart, above the
+    A single pose is seen twice (the second view a quarter turn round, or a third or a sixth where a block then
+    stands on a line of sight through the robot: :func:`~toolkit.plots.still_panels.second_turn`), above the
     overview; several follow it, one panel each. Of more than :data:`~toolkit.plots.still_panels.OVERVIEW_SAMPLES`
     samples the overview draws every k-th, and every one a model gets wrong."""
     if robot.dim != 3:
         raise ValueError(f"a scene's still is drawn in 3D; the {robot.name} robot moves in {robot.dim}D")
     valid = valid or {}
     colors = {label: _POSE_COLOR[valid.get(label)] for label in poses}
-    views = [(label, q, turn) for label, q in poses.items() for turn in ((0.0, TURN) if len(poses) == 1 else (0.0,))]
+    views = [(label, np.asarray(q, dtype=float), 0.0) for label, q in poses.items()]
+    if len(views) == 1:  # a single pose: seen twice, a quarter turn apart
+        views.append((*views[0][:2], second_turn(robot, views[0][1], workspace, margin)))
     heights = [CLOSE_UP_HEIGHT] * -(-len(views) // 2)  # inches: the close-ups, two a row
     first = len(heights) if len(poses) == 1 else 0  # the overview's row: after a single pose's two views
     heights.insert(first, OVERVIEW_HEIGHT)
@@ -95,17 +100,15 @@ def scene_still(
         near, angles = close_up(ax, robot, q, workspace, color=colors[label], margin=margin, turn=turn)
         drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE)
         seen.setdefault(label, (drawn, near, angles))
-        verdict = _model_verdict((model or {}).get(label))
+        verdict = model_words((model or {}).get(label))
         ax.set_title(
-            f"{label}, close up{_STATE[ok]}{verdict}" if not turn else f"{label}, a quarter turn round", fontsize=10
+            f"{label}, close up{_STATE[ok]}{verdict}" if not turn else f"{label}, {turn_words(turn)}", fontsize=10
         )
     _still_legend(fig, valid)
-    return describe(fig, *_still_described(robot, workspace, poses, valid, samples, trace, seen, model or {}))
-
-
-def _model_verdict(answer: tuple[float, bool] | None) -> str:
-    """A close-up title's second line: what a model answers for the pose, ``(P(valid), predicted valid)``."""
-    return "" if answer is None else f"\nthe model: P(valid) {answer[0]:.2f}, {('rejects', 'accepts')[answer[1]]} it"
+    described = _still_described(
+        robot, workspace, poses, valid, samples, trace, seen, model or {}, views[-1][2] if views else 0.0
+    )
+    return describe(fig, *described)
 
 
 def _overview_name(label: str, poses: int, valid: bool | None) -> str:
@@ -128,12 +131,10 @@ def _still_legend(fig: Figure, valid: dict[str, bool]) -> None:
     fig.legend(handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, low), ncol=3, frameon=False)
 
 
-def _still_described(
-    robot: BoxRobot, workspace: Workspace, poses, valid, samples, trace, seen, model
-) -> tuple[str, list]:
+def _still_described(robot, workspace, poses, valid, samples, trace, seen, model, turn) -> tuple[str, list]:
     """A still's text alternative and its longer description (what each panel draws, each pose's values, the
     samples and blocks near it and where the camera stands, ``seen``: ``{label: (samples, blocks, (elev, azim))}``,
-    and what the ``model`` answers for it)."""
+    what the ``model`` answers for it, and how far round the ``turn`` of a single pose's second close-up is)."""
     text = f"The {robot.name} robot in workspace {workspace.family} ({len(workspace.boxes)} blocks) as a still: "
     text += "the whole workspace"
     if samples is not None:
@@ -173,11 +174,11 @@ def _still_described(
     ]
     said = [
         f"{label}{_STATE[valid.get(label)]}"
-        + _model_verdict(model.get(label)).replace("\n", ", ")
+        + model_words(model.get(label)).replace("\n", ", ")
         + (f", {seen[label][0]} sample{'s' * (seen[label][0] != 1)} near it" if samples else "")
         for label in poses
     ]
-    turned = ", and a quarter turn round" if len(poses) == 1 else ""
+    turned = f", and {turn_words(turn)}" if len(poses) == 1 else ""
     darker = ", ".join(f"{label}: {seen[label][1]}" for label in poses)
     text += f"; the robot seen across the plane it spreads in{turned}, its links opaque, its joints white dots, "
     text += f"the blocks within {NEAR} of a link darker ({darker})"

@@ -157,6 +157,34 @@ def close_up(
     return int(near.sum()), (elevation, azimuth)
 
 
+TURNS = (90.0, -90.0, 120.0, -120.0, 60.0, -60.0)  # degrees about the vertical a second close-up tries, in turn
+
+
+def second_turn(robot: BoxRobot, q: np.ndarray, workspace: Workspace, margin: float) -> float:
+    """The first of :data:`TURNS` (a quarter turn, either way, then a third or a sixth) that puts the fewest of the
+    close-up's blocks (those within ``margin`` of the robot at ``q (dof,)``) on a line of sight through a link,
+    behind it or before it (review r17c: seen so, the robot next to a block looked inside it)."""
+    q = np.asarray(q, dtype=float)
+    elevation, azimuth = view_angles(robot, q)
+    aabbs = robot.link_aabbs(q[None])[0]  # (L, 2, 3)
+    lo, hi = aabbs[:, 0].min(axis=0) - margin, aabbs[:, 1].max(axis=0) + margin  # (3,) the window
+    blocks = workspace.boxes[np.all((workspace.boxes[:, 0] <= hi) & (workspace.boxes[:, 1] >= lo), axis=1)]
+    centers = robot.link_boxes(q[None])[0][0]  # (L, 3)
+    sights = [_toward_camera(elevation, azimuth + t) for t in TURNS]  # (3,) each
+    crossed = [(_in_front(blocks, centers, v) | _in_front(blocks, centers, -v)).sum() for v in sights]
+    return TURNS[int(np.argmin(crossed))]
+
+
+def turn_words(turn: float) -> str:
+    """A second close-up's title: how far round the first it is seen (:data:`TURNS`)."""
+    return "a quarter turn round" if abs(turn) == 90 else f"turned {abs(turn):.0f}° round"
+
+
+def model_words(answer: tuple[float, bool] | None) -> str:
+    """A close-up title's second line: what a model answers for the pose, ``(P(valid), predicted valid)``."""
+    return "" if answer is None else f"\nthe model: P(valid) {answer[0]:.2f}, {('rejects', 'accepts')[answer[1]]} it"
+
+
 def _in_front(blocks: np.ndarray, points: np.ndarray, toward: np.ndarray) -> np.ndarray:
     """``(K,)`` bool: which ``blocks (K, 2, 3)`` a ray from one of ``points (P, 3)`` toward the camera (``toward``,
     a unit vector) passes through: those stand between the robot and the camera (the slab test)."""
