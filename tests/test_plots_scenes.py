@@ -12,6 +12,7 @@ from matplotlib.text import Text
 
 from toolkit import scenarios
 from toolkit.geometry.collision import exact_checker
+from toolkit.geometry.workspace import Workspace
 from toolkit.plots import dof_panels, robot_drawing, scenes, still_panels
 from toolkit.plots.alt import alt_text
 from toolkit.plots.palette import contrast
@@ -395,3 +396,19 @@ def test_no_text_of_a_still_lies_over_another(name, seed, count):
         if box_a.overlaps(box_b) and min(box_a.intersection(box_a, box_b).size) > 1
     ]
     assert over == []
+
+
+def test_a_path_frames_camera_turns_off_a_block_straight_behind_the_robot():
+    """Review r17c: at frame 39 the valid robot (clearance 0.030) looked inside the "nearest block" box standing
+    behind it. A unit block 1.5 units behind the robot as mplot3d's usual camera (30, -60) sees it turns the camera
+    (the least of scenes.FRAME_TURNS that misses it); with no block on that line the camera stays."""
+    robot = scenarios.get("3dc7").robot
+    path = np.array([[5.0, 5.0, 5.0, 0.7, 0.0, 0.0, 0.0], [5.5, 5.0, 5.0, 0.7, 0.0, 0.0, 0.0]])  # (2, 7)
+    toward = np.array([np.cos(np.pi / 6) * np.cos(-np.pi / 3), np.cos(np.pi / 6) * np.sin(-np.pi / 3), 0.5])  # (3,)
+    centre = robot.link_boxes(path[:1])[0][0].mean(axis=0) - 1.5 * toward  # (3,) behind the robot, seen so
+    behind = Workspace(np.zeros(3), np.full(3, 11.0), np.array([[centre - 0.5, centre + 0.5]]), family="3dc")
+    aside = Workspace(np.zeros(3), np.full(3, 11.0), np.array([[[8.0, 8.0, 8.0], [9.0, 9.0, 9.0]]]), family="3dc")
+    turned = scenes.path_frame(robot, path, 0, workspace=behind).axes[0]
+    kept = scenes.path_frame(robot, path, 0, workspace=aside).axes[0]
+    assert (kept.elev, kept.azim) == (30.0, -60.0)
+    assert turned.elev == 30.0 and (turned.azim + 60.0) in scenes.FRAME_TURNS[1:]

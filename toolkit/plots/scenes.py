@@ -26,7 +26,6 @@ from matplotlib.patches import Patch
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import ROWS, Part, describe
-from toolkit.plots.boxes import aabb_corners, add_box_3d
 from toolkit.plots.dof_panels import dof_groups, draw_dofs
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR, draw_robot, link_style
@@ -35,9 +34,11 @@ from toolkit.plots.still_panels import (
     NEAR,
     SAMPLE_WORDS,
     TRACE_STYLE,
+    clear_turn,
     close_up,
     draw_points,
     inside_mask,
+    mark_nearest,
     model_words,
     overview,
     overview_step,
@@ -49,6 +50,7 @@ UNCHECKED_COLOR = COLORS["unchecked"]  # the robot when no validity is given
 NOW_COLOR = COLORS["occupied"]
 _STATE = {None: "", True: ", valid", False: ", in collision"}  # a pose's verdict, as a title and its text say it
 _POSE_COLOR = {None: UNCHECKED_COLOR, True: VALID_COLOR, False: INVALID_COLOR}  # a pose's links, by its verdict
+FRAME_TURNS = (0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0)  # degrees: a path frame's camera, turned the least it can
 CLOSE_UP_HEIGHT = 3.2  # inches: a row of two close-ups
 OVERVIEW_HEIGHT = 5.0  # inches: the overview, a row of its own (review r16c: in half a row, 230 px, stars were lost)
 
@@ -346,35 +348,18 @@ def _draw_scene(
     """The 3D panel of :func:`path_frame`: the robot at frame ``index`` among the blocks near it, its base's trace."""
     color = UNCHECKED_COLOR if valid is None else VALID_COLOR if valid else INVALID_COLOR
     draw_robot(scene, robot, Q[index : index + 1], colors=[color], view="3d", workspace=workspace, margin=margin)
+    if (
+        workspace is not None
+    ):  # mplot3d's usual camera, turned where a block stands on a line of sight through the robot
+        scene.view_init(30.0, -60.0 + clear_turn(robot, Q[index], workspace, margin, FRAME_TURNS, (30.0, -60.0)))
     _draw_trace(scene, robot, Q)
     if workspace is not None and len(workspace.boxes):
-        _mark_nearest(scene, robot.link_aabbs(Q[index : index + 1])[0], workspace.boxes)
+        mark_nearest(scene, robot.link_aabbs(Q[index : index + 1])[0], workspace.boxes)
     verdict = "" if valid is None else ": valid" if valid else ": in collision"
     scene.set_title(f"the robot, blocks near it{verdict}", fontsize=9)
     scene.set_box_aspect(None, zoom=1.15)  # the robot larger in its panel: mplot3d leaves wide margins
     scene.locator_params(nbins=4)  # few tick labels: drawing text is most of a frame's cost
     scene.tick_params(labelsize=9)
-
-
-def _mark_nearest(scene, links: np.ndarray, blocks: np.ndarray) -> None:
-    """Edge in ink, and name, the block nearest the robot's links ``(L, 2, 3)`` among ``blocks (K, 2, 3)`` (box to
-    box, min/max corners): the one a low clearance is about (review r16c: the block grazed was not marked)."""
-    gaps = np.maximum(0.0, np.maximum(blocks[:, None, 0] - links[None, :, 1], links[None, :, 0] - blocks[:, None, 1]))
-    lo, hi = blocks[int(np.argmin(np.linalg.norm(gaps, axis=-1).min(axis=1)))]  # (K, L, 3) gaps -> the nearest
-    add_box_3d(scene, aabb_corners(lo, hi), facecolor="none", edgecolor=COLORS["ink"], linewidth=1.6, gid="nearest")
-    x, y, _ = (lo + hi) / 2
-    scene.text(
-        x,
-        y,
-        hi[2],
-        "nearest block",
-        fontsize=9,
-        ha="center",
-        va="bottom",
-        zorder=10.0,
-        color=COLORS["ink"],
-        path_effects=halo(1.0, ("free",)),
-    )
 
 
 def _per_frame(values, frames: int, name: str) -> np.ndarray | None:

@@ -161,18 +161,27 @@ TURNS = (90.0, -90.0, 120.0, -120.0, 60.0, -60.0)  # degrees about the vertical 
 
 
 def second_turn(robot: BoxRobot, q: np.ndarray, workspace: Workspace, margin: float) -> float:
-    """The first of :data:`TURNS` (a quarter turn, either way, then a third or a sixth) that puts the fewest of the
-    close-up's blocks (those within ``margin`` of the robot at ``q (dof,)``) on a line of sight through a link,
-    behind it or before it (review r17c: seen so, the robot next to a block looked inside it)."""
+    """A single pose's second close-up: the first of :data:`TURNS` (a quarter turn, either way, then a third or a
+    sixth) with the fewest blocks on a line of sight through the robot (:func:`clear_turn`)."""
+    return clear_turn(robot, q, workspace, margin, TURNS)
+
+
+def clear_turn(
+    robot: BoxRobot, q: np.ndarray, workspace: Workspace, margin: float, turns, view: tuple[float, float] | None = None
+) -> float:
+    """The first of ``turns`` (degrees about the vertical, from the camera ``view``, ``(elevation, azimuth)``, by
+    default :func:`view_angles`') that puts the fewest of the blocks within ``margin`` of the robot at ``q (dof,)``
+    on a line of sight through a link, behind it or before it (review r17c: seen so, a robot beside a block looked
+    inside it)."""
     q = np.asarray(q, dtype=float)
-    elevation, azimuth = view_angles(robot, q)
+    elevation, azimuth = view or view_angles(robot, q)
     aabbs = robot.link_aabbs(q[None])[0]  # (L, 2, 3)
     lo, hi = aabbs[:, 0].min(axis=0) - margin, aabbs[:, 1].max(axis=0) + margin  # (3,) the window
     blocks = workspace.boxes[np.all((workspace.boxes[:, 0] <= hi) & (workspace.boxes[:, 1] >= lo), axis=1)]
     centers = robot.link_boxes(q[None])[0][0]  # (L, 3)
-    sights = [_toward_camera(elevation, azimuth + t) for t in TURNS]  # (3,) each
+    sights = [_toward_camera(elevation, azimuth + t) for t in turns]  # (3,) each
     crossed = [(_in_front(blocks, centers, v) | _in_front(blocks, centers, -v)).sum() for v in sights]
-    return TURNS[int(np.argmin(crossed))]
+    return float(turns[int(np.argmin(crossed))])
 
 
 def turn_words(turn: float) -> str:
@@ -183,6 +192,27 @@ def turn_words(turn: float) -> str:
 def model_words(answer: tuple[float, bool] | None) -> str:
     """A close-up title's second line: what a model answers for the pose, ``(P(valid), predicted valid)``."""
     return "" if answer is None else f"\nthe model: P(valid) {answer[0]:.2f}, {('rejects', 'accepts')[answer[1]]} it"
+
+
+def mark_nearest(scene, links: np.ndarray, blocks: np.ndarray) -> None:
+    """Edge in ink, and name, the block nearest the robot's links ``(L, 2, 3)`` among ``blocks (K, 2, 3)`` (box to
+    box, min/max corners): the one a low clearance is about (review r16c: the block grazed was not marked)."""
+    gaps = np.maximum(0.0, np.maximum(blocks[:, None, 0] - links[None, :, 1], links[None, :, 0] - blocks[:, None, 1]))
+    lo, hi = blocks[int(np.argmin(np.linalg.norm(gaps, axis=-1).min(axis=1)))]  # (K, L, 3) gaps -> the nearest
+    add_box_3d(scene, aabb_corners(lo, hi), facecolor="none", edgecolor=COLORS["ink"], linewidth=1.6, gid="nearest")
+    x, y, _ = (lo + hi) / 2
+    scene.text(
+        x,
+        y,
+        hi[2],
+        "nearest block",
+        fontsize=9,
+        ha="center",
+        va="bottom",
+        zorder=10.0,
+        color=COLORS["ink"],
+        path_effects=halo(1.0, ("free",)),
+    )
 
 
 def _in_front(blocks: np.ndarray, points: np.ndarray, toward: np.ndarray) -> np.ndarray:
