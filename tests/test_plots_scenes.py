@@ -12,6 +12,7 @@ from matplotlib.text import Text
 
 from toolkit import scenarios
 from toolkit.geometry.collision import exact_checker
+from toolkit.geometry.workspace import Workspace
 from toolkit.plots import dof_panels, robot_drawing, scenes, still_panels
 from toolkit.plots.alt import alt_text
 from toolkit.plots.palette import contrast
@@ -230,12 +231,13 @@ def test_a_stills_overview_thins_a_dense_cloud_and_its_text_says_so(crossing):
     fig = scenes.scene_still(
         robot,
         workspace,
-        {"here": robot.sample(np.random.default_rng(1), 1)[0]},
+        {"here": (pose := robot.sample(np.random.default_rng(1), 1)[0])},
         samples=(points, {"valid": valid, "in collision": ~valid}),
     )
     close_up, turned, overview = fig.axes  # one pose: seen twice, above the overview
-    assert [close_up.get_title(), turned.get_title()] == ["here, close up", "here, a quarter turn round"]
-    assert (turned.azim - close_up.azim) % 360 == pytest.approx(scenes.TURN)
+    turn = still_panels.second_turn(robot, np.asarray(pose), workspace, 0.6)  # a quarter turn, or a third or a sixth
+    assert [close_up.get_title(), turned.get_title()] == ["here, close up", f"here, {still_panels.turn_words(turn)}"]
+    assert (turned.azim - close_up.azim) % 360 == pytest.approx(turn % 360)
     assert turned.elev == pytest.approx(close_up.elev)
     drawn = {c.get_label(): c for c in overview.collections if c.get_label().startswith("sample")}
     kept = np.arange(n) % 3 == 0  # 1 in 3: at most OVERVIEW_SAMPLES of 2 * OVERVIEW_SAMPLES + 1
@@ -264,6 +266,41 @@ def test_a_stills_model_wrong_star_is_hollow_round_the_mark_it_flags(crossing):
     assert stars.get_sizes()[0] > 4 * still_panels.SAMPLE_MARKS["valid"][2]  # round the mark, larger than it
     with pytest.raises(ValueError, match="drawn in 3D"):
         scenes.scene_still(scenarios.get("2ds").robot, workspace, {})
+
+
+def test_a_stills_close_up_says_what_the_model_answers(crossing):
+    """Review r17c: nothing on the still marked that the model rejects the valid robot (P = 0.08). The close-up's
+    title says it, and the text; the quarter-turn view and a still without a model say nothing of a model."""
+    robot, workspace, _, path, _ = crossing
+    q = path[0]
+    fig = scenes.scene_still(
+        robot, workspace, {"the robot": q}, valid={"the robot": True}, model={"the robot": (0.08, False)}
+    )
+    close_up, turned, _ = fig.axes
+    assert close_up.get_title() == "the robot, close up, valid\nthe model: P(valid) 0.08, rejects it"
+    assert turned.get_title() == "the robot, a quarter turn round"
+    assert "the robot, valid, the model: P(valid) 0.08, rejects it" in alt_text(fig)
+    accepted = scenes.scene_still(robot, workspace, {"start": q}, model={"start": (0.914, True)})
+    assert accepted.axes[0].get_title().endswith("the model: P(valid) 0.91, accepts it")
+    assert "model" not in scenes.scene_still(robot, workspace, {"start": q}).axes[0].get_title()
+
+
+def test_a_stills_overview_stars_every_mistake_of_a_thinned_cloud(crossing):
+    """Review r17c: the overview showed about 6 stars for 103 wrong samples. Thinned to every k-th, it still draws
+    each sample the model gets wrong, its mark under its star, and its text says so."""
+    robot, workspace, _, _, _ = crossing
+    n = 2 * still_panels.OVERVIEW_SAMPLES + 1
+    points = robot.link_boxes(robot.sample(np.random.default_rng(0), n))[0][:, 0]  # (n, 3) bases
+    valid = np.arange(n) % 5 == 0  # (n,)
+    wrong = np.arange(n) % 7 == 1  # (n,) 58 of 401, none of them among the every-3rd kept: 1, 8, 15, ...
+    kinds = {"valid": valid, "in collision": ~valid, "model wrong": wrong}
+    fig = scenes.scene_still(robot, workspace, {}, samples=(points, kinds))
+    drawn = {c.get_label(): len(c.get_offsets()) for c in fig.axes[0].collections}
+    kept = (np.arange(n) % 3 == 0) | wrong
+    assert drawn["sample, model wrong"] == int(wrong.sum())
+    assert drawn["sample, valid"] == int((kept & valid).sum())
+    assert drawn["sample, in collision"] == int((kept & ~valid).sum())
+    assert "1 sample in 3 drawn, and every one the model gets wrong" in alt_text(fig)
 
 
 @pytest.mark.parametrize("index", [0, FRAMES // 2])
@@ -359,3 +396,19 @@ def test_no_text_of_a_still_lies_over_another(name, seed, count):
         if box_a.overlaps(box_b) and min(box_a.intersection(box_a, box_b).size) > 1
     ]
     assert over == []
+
+
+def test_a_path_frames_camera_turns_off_a_block_straight_behind_the_robot():
+    """Review r17c: at frame 39 the valid robot (clearance 0.030) looked inside the "nearest block" box standing
+    behind it. A unit block 1.5 units behind the robot as mplot3d's usual camera (30, -60) sees it turns the camera
+    (the least of scenes.FRAME_TURNS that misses it); with no block on that line the camera stays."""
+    robot = scenarios.get("3dc7").robot
+    path = np.array([[5.0, 5.0, 5.0, 0.7, 0.0, 0.0, 0.0], [5.5, 5.0, 5.0, 0.7, 0.0, 0.0, 0.0]])  # (2, 7)
+    toward = np.array([np.cos(np.pi / 6) * np.cos(-np.pi / 3), np.cos(np.pi / 6) * np.sin(-np.pi / 3), 0.5])  # (3,)
+    centre = robot.link_boxes(path[:1])[0][0].mean(axis=0) - 1.5 * toward  # (3,) behind the robot, seen so
+    behind = Workspace(np.zeros(3), np.full(3, 11.0), np.array([[centre - 0.5, centre + 0.5]]), family="3dc")
+    aside = Workspace(np.zeros(3), np.full(3, 11.0), np.array([[[8.0, 8.0, 8.0], [9.0, 9.0, 9.0]]]), family="3dc")
+    turned = scenes.path_frame(robot, path, 0, workspace=behind).axes[0]
+    kept = scenes.path_frame(robot, path, 0, workspace=aside).axes[0]
+    assert (kept.elev, kept.azim) == (30.0, -60.0)
+    assert turned.elev == 30.0 and (turned.azim + 60.0) in scenes.FRAME_TURNS[1:]

@@ -173,3 +173,24 @@ def test_an_overview_draws_the_whole_robot_over_light_marks_its_name_above_it():
     assert label.get_text() == "the robot" and label.get_position_3d()[2] > CHAIN9.link_aabbs(q[None])[0][:, 1, 2].max()
     near, far = [c for c in ax.collections if c.get_gid() == "block"]
     assert near.get_alpha() > far.get_alpha()  # the block by the robot darker than the one in the corner
+
+
+@pytest.mark.parametrize("behind_of", [90.0, -90.0])
+def test_the_second_close_up_turns_the_way_whose_line_of_sight_through_the_robot_misses_the_blocks(behind_of):
+    """Review r17c: a quarter turn round, the robot stood in front of a block and looked inside it. A unit block 1.5
+    units behind the robot as one turn's view sees it sends the turn to the next of TURNS; none: a quarter turn."""
+    q = np.array([5.0, 5.0, 5.0, 0.7, 0.0, 0.0, 0.0])
+    elevation, azimuth = still_panels.view_angles(CHAIN7, q)
+    e, a = np.deg2rad([elevation, azimuth + behind_of])
+    toward = np.array([np.cos(e) * np.cos(a), np.cos(e) * np.sin(a), np.sin(e)])  # (3,) to that view's camera
+    middle = CHAIN7.link_boxes(q[None])[0][0].mean(axis=0)  # (3,)
+    centre = middle - 1.5 * toward  # (3,) straight behind the robot, seen from there
+    block = Workspace(np.zeros(3), np.full(3, 11.0), np.array([[centre - 0.5, centre + 0.5]]), family="3dc")
+    expected = {90.0: -90.0, -90.0: 90.0}[behind_of]
+    assert still_panels.second_turn(CHAIN7, q, block, 2.0) == expected
+    assert still_panels.second_turn(CHAIN7, q, EMPTY, 2.0) == 90.0
+    assert [still_panels.turn_words(t) for t in (90.0, -90.0, -120.0)] == [
+        "a quarter turn round",
+        "a quarter turn round",
+        "turned 120° round",
+    ]

@@ -26,7 +26,6 @@ from matplotlib.patches import Patch
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import ROWS, Part, describe
-from toolkit.plots.boxes import aabb_corners, add_box_3d
 from toolkit.plots.dof_panels import dof_groups, draw_dofs
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR, draw_robot, link_style
@@ -35,22 +34,25 @@ from toolkit.plots.still_panels import (
     NEAR,
     SAMPLE_WORDS,
     TRACE_STYLE,
+    clear_turn,
     close_up,
     draw_points,
     inside_mask,
+    mark_nearest,
+    model_words,
     overview,
     overview_step,
+    second_turn,
+    turn_words,
 )
 
 UNCHECKED_COLOR = COLORS["unchecked"]  # the robot when no validity is given
 NOW_COLOR = COLORS["occupied"]
 _STATE = {None: "", True: ", valid", False: ", in collision"}  # a pose's verdict, as a title and its text say it
 _POSE_COLOR = {None: UNCHECKED_COLOR, True: VALID_COLOR, False: INVALID_COLOR}  # a pose's links, by its verdict
-TURN = 90.0  # degrees about the vertical: a single pose's second close-up, a quarter turn round the first
+FRAME_TURNS = (0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0)  # degrees: a path frame's camera, turned the least it can
 CLOSE_UP_HEIGHT = 3.2  # inches: a row of two close-ups
-OVERVIEW_HEIGHT = (
-    5.0  # inches: the overview, a row of its own (review r16c: in half a row, 230 px, its stars were lost)
-)
+OVERVIEW_HEIGHT = 5.0  # inches: the overview, a row of its own (review r16c: in half a row, 230 px, stars were lost)
 
 
 def scene_still(
@@ -62,6 +64,7 @@ def scene_still(
     samples: tuple[np.ndarray, dict[str, np.ndarray]] | None = None,
     trace: np.ndarray | None = None,
     margin: float = 0.6,
+    model: dict[str, tuple[float, bool]] | None = None,
 ) -> Figure:
     """A viewer's 3D scene as a still picture: the whole workspace, its blocks, the ``samples`` at their base
     (``(points (N, 3), {kind: mask (N,)})``, kinds as :func:`toolkit.viewer.drawing.sample_kinds` names them: circles
@@ -69,14 +72,19 @@ def scene_still(
     base along a path (dashed) and the robot drawn over them at each pose, labelled; and the robot close up at each pose
     ``{label: q (dof,)}`` (:func:`toolkit.plots.still_panels.close_up`: opaque links in the valid colour, or the
     invalid one hatched, by ``valid``; its joints dotted; the blocks within ``margin``, those near a link darker), with
-    the samples inside its window and the trace. A single pose is seen twice, a quarter turn apart, above the
+    the samples inside its window and the trace; where a ``model`` gives a pose's ``(P(valid), predicted valid)``,
+    its close-up's title says what the model answers (review r17c: nothing marked that it rejects a valid pose).
+    A single pose is seen twice (the second view a quarter turn round, or a third or a sixth where a block then
+    stands on a line of sight through the robot: :func:`~toolkit.plots.still_panels.second_turn`), above the
     overview; several follow it, one panel each. Of more than :data:`~toolkit.plots.still_panels.OVERVIEW_SAMPLES`
-    samples the overview draws every k-th."""
+    samples the overview draws every k-th, and every one a model gets wrong."""
     if robot.dim != 3:
         raise ValueError(f"a scene's still is drawn in 3D; the {robot.name} robot moves in {robot.dim}D")
     valid = valid or {}
     colors = {label: _POSE_COLOR[valid.get(label)] for label in poses}
-    views = [(label, q, turn) for label, q in poses.items() for turn in ((0.0, TURN) if len(poses) == 1 else (0.0,))]
+    views = [(label, np.asarray(q, dtype=float), 0.0) for label, q in poses.items()]
+    if len(views) == 1:  # a single pose: seen twice, a quarter turn apart
+        views.append((*views[0][:2], second_turn(robot, views[0][1], workspace, margin)))
     heights = [CLOSE_UP_HEIGHT] * -(-len(views) // 2)  # inches: the close-ups, two a row
     first = len(heights) if len(poses) == 1 else 0  # the overview's row: after a single pose's two views
     heights.insert(first, OVERVIEW_HEIGHT)
@@ -94,9 +102,15 @@ def scene_still(
         near, angles = close_up(ax, robot, q, workspace, color=colors[label], margin=margin, turn=turn)
         drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE)
         seen.setdefault(label, (drawn, near, angles))
-        ax.set_title(f"{label}, close up{_STATE[ok]}" if not turn else f"{label}, a quarter turn round", fontsize=10)
+        verdict = model_words((model or {}).get(label))
+        ax.set_title(
+            f"{label}, close up{_STATE[ok]}{verdict}" if not turn else f"{label}, {turn_words(turn)}", fontsize=10
+        )
     _still_legend(fig, valid)
-    return describe(fig, *_still_described(robot, workspace, poses, valid, samples, trace, seen))
+    described = _still_described(
+        robot, workspace, poses, valid, samples, trace, seen, model or {}, views[-1][2] if views else 0.0
+    )
+    return describe(fig, *described)
 
 
 def _overview_name(label: str, poses: int, valid: bool | None) -> str:
@@ -114,14 +128,15 @@ def _still_legend(fig: Figure, valid: dict[str, bool]) -> None:
         for ok, text, c in ((True, "robot, valid", VALID_COLOR), (False, "robot, in collision", INVALID_COLOR))
         if ok in shown
     }
-    fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=5.0)
+    fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=5.0, h_pad=2.5)  # r17c: "y" met a title
     low = min((ax.get_tightbbox() or ax.bbox).y0 for ax in fig.axes) / fig.bbox.height  # the lowest label
     fig.legend(handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, low), ncol=3, frameon=False)
 
 
-def _still_described(robot: BoxRobot, workspace: Workspace, poses, valid, samples, trace, seen) -> tuple[str, list]:
+def _still_described(robot, workspace, poses, valid, samples, trace, seen, model, turn) -> tuple[str, list]:
     """A still's text alternative and its longer description (what each panel draws, each pose's values, the
-    samples and blocks near it and where the camera stands, ``seen``: ``{label: (samples, blocks, (elev, azim))}``)."""
+    samples and blocks near it and where the camera stands, ``seen``: ``{label: (samples, blocks, (elev, azim))}``,
+    what the ``model`` answers for it, and how far round the ``turn`` of a single pose's second close-up is)."""
     text = f"The {robot.name} robot in workspace {workspace.family} ({len(workspace.boxes)} blocks) as a still: "
     text += "the whole workspace"
     if samples is not None:
@@ -130,6 +145,7 @@ def _still_described(robot: BoxRobot, workspace: Workspace, poses, valid, sample
         )
         step = overview_step(len(samples[0]))
         text += f", 1 sample in {step} drawn" if step > 1 else ""
+        text += ", and every one the model gets wrong" if step > 1 and "model wrong" in samples[1] else ""
     text += ", the path of the robot's base" if trace is not None else ""
     if poses:
         text += ", the robot drawn " + ("over them" if samples is not None else "in it")
@@ -160,10 +176,11 @@ def _still_described(robot: BoxRobot, workspace: Workspace, poses, valid, sample
     ]
     said = [
         f"{label}{_STATE[valid.get(label)]}"
+        + model_words(model.get(label)).replace("\n", ", ")
         + (f", {seen[label][0]} sample{'s' * (seen[label][0] != 1)} near it" if samples else "")
         for label in poses
     ]
-    turned = ", and a quarter turn round" if len(poses) == 1 else ""
+    turned = f", and {turn_words(turn)}" if len(poses) == 1 else ""
     darker = ", ".join(f"{label}: {seen[label][1]}" for label in poses)
     text += f"; the robot seen across the plane it spreads in{turned}, its links opaque, its joints white dots, "
     text += f"the blocks within {NEAR} of a link darker ({darker})"
@@ -331,35 +348,18 @@ def _draw_scene(
     """The 3D panel of :func:`path_frame`: the robot at frame ``index`` among the blocks near it, its base's trace."""
     color = UNCHECKED_COLOR if valid is None else VALID_COLOR if valid else INVALID_COLOR
     draw_robot(scene, robot, Q[index : index + 1], colors=[color], view="3d", workspace=workspace, margin=margin)
+    if (
+        workspace is not None
+    ):  # mplot3d's usual camera, turned where a block stands on a line of sight through the robot
+        scene.view_init(30.0, -60.0 + clear_turn(robot, Q[index], workspace, margin, FRAME_TURNS, (30.0, -60.0)))
     _draw_trace(scene, robot, Q)
     if workspace is not None and len(workspace.boxes):
-        _mark_nearest(scene, robot.link_aabbs(Q[index : index + 1])[0], workspace.boxes)
+        mark_nearest(scene, robot.link_aabbs(Q[index : index + 1])[0], workspace.boxes)
     verdict = "" if valid is None else ": valid" if valid else ": in collision"
     scene.set_title(f"the robot, blocks near it{verdict}", fontsize=9)
     scene.set_box_aspect(None, zoom=1.15)  # the robot larger in its panel: mplot3d leaves wide margins
     scene.locator_params(nbins=4)  # few tick labels: drawing text is most of a frame's cost
     scene.tick_params(labelsize=9)
-
-
-def _mark_nearest(scene, links: np.ndarray, blocks: np.ndarray) -> None:
-    """Edge in ink, and name, the block nearest the robot's links ``(L, 2, 3)`` among ``blocks (K, 2, 3)`` (box to
-    box, min/max corners): the one a low clearance is about (review r16c: the block grazed was not marked)."""
-    gaps = np.maximum(0.0, np.maximum(blocks[:, None, 0] - links[None, :, 1], links[None, :, 0] - blocks[:, None, 1]))
-    lo, hi = blocks[int(np.argmin(np.linalg.norm(gaps, axis=-1).min(axis=1)))]  # (K, L, 3) gaps -> the nearest
-    add_box_3d(scene, aabb_corners(lo, hi), facecolor="none", edgecolor=COLORS["ink"], linewidth=1.6, gid="nearest")
-    x, y, _ = (lo + hi) / 2
-    scene.text(
-        x,
-        y,
-        hi[2],
-        "nearest block",
-        fontsize=9,
-        ha="center",
-        va="bottom",
-        zorder=10.0,
-        color=COLORS["ink"],
-        path_effects=halo(1.0, ("free",)),
-    )
 
 
 def _per_frame(values, frames: int, name: str) -> np.ndarray | None:

@@ -4,8 +4,8 @@ A 3D picture on a page cannot be turned, so each panel is drawn to be read from 
 
 - :func:`overview` draws the whole workspace, its blocks faint (those near the robot darker), one mark per sample (a
   circle valid, a diamond in collision, large enough to tell apart, edged in ink; light, and at most
-  :data:`OVERVIEW_SAMPLES` of them) and, over them, the robot itself at each pose: its links opaque in its colour,
-  edged in ink and ringed in white, a label above it;
+  :data:`OVERVIEW_SAMPLES` of them besides every one a model gets wrong, starred) and, over them, the robot itself
+  at each pose: its links opaque in its colour, edged in ink and ringed in white, a label above it;
 - :func:`close_up` draws the robot at one pose among the blocks near it: its links opaque, edged thick in ink, each
   joint a white dot ringed in ink, the blocks faded (a robot behind one shows through it), those within
   :data:`NEAR` of a link darker than the rest of its window. The camera looks across the plane the chain spreads
@@ -41,6 +41,7 @@ SAMPLE_WORDS = {
     "model wrong": "hollow stars round their marks",
 }  # SAMPLE_MARKS in words
 OVERVIEW_SAMPLES = 200  # at most this many samples in a still's overview: more hide the blocks and the robot
+OVERVIEW_STAR = 150  # points²: an overview's star round a mistake (a close-up's: SAMPLE_MARKS' 300, scaled)
 OVERVIEW_ALPHA = 0.45  # an overview's marks, light: the robot drawn over them and the blocks under them show
 CLOSE_UP_SCALE = 1.5  # a close-up's marks this many times larger: a small window, seen near
 NEAR = 0.3  # workspace units: a block this close to a link's bounding box is drawn darker in a close-up
@@ -64,10 +65,14 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
     for (lo, hi), dark in zip(workspace.boxes, near):
         style = dict(alpha=0.3, linewidth=0.8) if dark else dict(alpha=0.15, linewidth=0.2)
         add_box_3d(ax, aabb_corners(lo, hi), **style, **BLOCK_STYLE)
-    if samples is not None:  # every k-th, light, under the robot
+    if samples is not None:  # every k-th, and every one a model gets wrong (review r17c: 6 stars for 103), light
         keep = np.arange(len(samples[0])) % overview_step(len(samples[0])) == 0  # (N,)
+        keep |= samples[1].get("model wrong", np.zeros_like(keep))
         samples = (samples[0][keep], {kind: mask[keep] for kind, mask in samples[1].items()})
     draw_points(ax, samples, trace, alpha=OVERVIEW_ALPHA)
+    for marks in ax.collections:  # every mistake starred, each star smaller than a close-up's: a hundred fit
+        if marks.get_label() == "sample, model wrong":
+            marks.set(sizes=[OVERVIEW_STAR], linewidth=0.9)
     ax.computed_zorder = False  # the robot in front of every sample
     lift = 0.04 * float(np.max(workspace.upper - workspace.lower))  # a label this far above the robot
     for (name, (q, color)), boxes in zip(poses.items(), aabbs):
@@ -150,6 +155,64 @@ def close_up(
     if hi[2] - lo[2] < 0.5 * np.max(hi - lo):  # a low window, its z axis seen short: ticked at its ends alone
         ax.set_zticks((lo[2], hi[2]))
     return int(near.sum()), (elevation, azimuth)
+
+
+TURNS = (90.0, -90.0, 120.0, -120.0, 60.0, -60.0)  # degrees about the vertical a second close-up tries, in turn
+
+
+def second_turn(robot: BoxRobot, q: np.ndarray, workspace: Workspace, margin: float) -> float:
+    """A single pose's second close-up: the first of :data:`TURNS` (a quarter turn, either way, then a third or a
+    sixth) with the fewest blocks on a line of sight through the robot (:func:`clear_turn`)."""
+    return clear_turn(robot, q, workspace, margin, TURNS)
+
+
+def clear_turn(
+    robot: BoxRobot, q: np.ndarray, workspace: Workspace, margin: float, turns, view: tuple[float, float] | None = None
+) -> float:
+    """The first of ``turns`` (degrees about the vertical, from the camera ``view``, ``(elevation, azimuth)``, by
+    default :func:`view_angles`') that puts the fewest of the blocks within ``margin`` of the robot at ``q (dof,)``
+    on a line of sight through a link, behind it or before it (review r17c: seen so, a robot beside a block looked
+    inside it)."""
+    q = np.asarray(q, dtype=float)
+    elevation, azimuth = view or view_angles(robot, q)
+    aabbs = robot.link_aabbs(q[None])[0]  # (L, 2, 3)
+    lo, hi = aabbs[:, 0].min(axis=0) - margin, aabbs[:, 1].max(axis=0) + margin  # (3,) the window
+    blocks = workspace.boxes[np.all((workspace.boxes[:, 0] <= hi) & (workspace.boxes[:, 1] >= lo), axis=1)]
+    centers = robot.link_boxes(q[None])[0][0]  # (L, 3)
+    sights = [_toward_camera(elevation, azimuth + t) for t in turns]  # (3,) each
+    crossed = [(_in_front(blocks, centers, v) | _in_front(blocks, centers, -v)).sum() for v in sights]
+    return float(turns[int(np.argmin(crossed))])
+
+
+def turn_words(turn: float) -> str:
+    """A second close-up's title: how far round the first it is seen (:data:`TURNS`)."""
+    return "a quarter turn round" if abs(turn) == 90 else f"turned {abs(turn):.0f}° round"
+
+
+def model_words(answer: tuple[float, bool] | None) -> str:
+    """A close-up title's second line: what a model answers for the pose, ``(P(valid), predicted valid)``."""
+    return "" if answer is None else f"\nthe model: P(valid) {answer[0]:.2f}, {('rejects', 'accepts')[answer[1]]} it"
+
+
+def mark_nearest(scene, links: np.ndarray, blocks: np.ndarray) -> None:
+    """Edge in ink, and name, the block nearest the robot's links ``(L, 2, 3)`` among ``blocks (K, 2, 3)`` (box to
+    box, min/max corners): the one a low clearance is about (review r16c: the block grazed was not marked)."""
+    gaps = np.maximum(0.0, np.maximum(blocks[:, None, 0] - links[None, :, 1], links[None, :, 0] - blocks[:, None, 1]))
+    lo, hi = blocks[int(np.argmin(np.linalg.norm(gaps, axis=-1).min(axis=1)))]  # (K, L, 3) gaps -> the nearest
+    add_box_3d(scene, aabb_corners(lo, hi), facecolor="none", edgecolor=COLORS["ink"], linewidth=1.6, gid="nearest")
+    x, y, _ = (lo + hi) / 2
+    scene.text(
+        x,
+        y,
+        hi[2],
+        "nearest block",
+        fontsize=9,
+        ha="center",
+        va="bottom",
+        zorder=10.0,
+        color=COLORS["ink"],
+        path_effects=halo(1.0, ("free",)),
+    )
 
 
 def _in_front(blocks: np.ndarray, points: np.ndarray, toward: np.ndarray) -> np.ndarray:

@@ -19,6 +19,7 @@ from matplotlib.figure import Figure
 
 from toolkit.plots import scenes
 from toolkit.viewer import drawing as draw
+from toolkit.viewer import models
 from toolkit.viewer.labels import with_still
 from toolkit.viewer.server import srcdoc_iframe
 
@@ -36,7 +37,15 @@ def scene_still(viewer, poses: dict[str, np.ndarray] | None = None) -> Figure:
         dense = viewer.path_configurations(np.linspace(0.0, 1.0, 20 * len(viewer.path)))  # (20 P, dof)
         trace = draw.config_points(viewer.robot, dense, "base")  # (T, 3)
     samples = viewer.sample_points if viewer.visible["samples"] else None
-    return scenes.scene_still(viewer.robot, viewer.workspace, poses, valid=valid, samples=samples, trace=trace)
+    model = None
+    checker = viewer.model
+    if isinstance(checker, models.Predicts):  # what the model answers for each pose, in its close-up's title
+        Q = np.stack(list(poses.values()))  # (P, dof)
+        answers = zip(checker.probability(Q), viewer.model.are_valid(Q))
+        model = {label: (float(p), bool(ok)) for label, (p, ok) in zip(poses, answers)}
+    return scenes.scene_still(
+        viewer.robot, viewer.workspace, poses, valid=valid, samples=samples, trace=trace, model=model
+    )
 
 
 @contextmanager
