@@ -36,7 +36,9 @@ OBSTACLE = rgb("obstacle")  # a hue of its own: the browser test looks for it
 OBSTACLE_OPACITY = {"3dc": 0.3}  # by family: see through the clutter to the robot inside (0.45: it was 2.5:1 there)
 EDGE = rgb("ink")  # every block's and link's edges: an outline at 3:1 or more on the white, the blocks and the links
 EDGE_PX = 2.0  # their width on screen, in pixels, near or far
-LINK_EDGE_PX = 1.5  # a link's: an ink outline sets the robot apart from its colour's edgeless marks (3.5 blackened it)
+# A link's ink outline sets the robot apart from its colour's edgeless marks: 3.5 px blackened a 0.1-thick link;
+# at 1.5 px the robot fell under 3:1 against a see-through block in 2 of 4 runs of the animation's washed-out test.
+LINK_EDGE_PX = 2.5
 VALID = rgb("valid")
 COLLIDING = rgb("invalid")
 PREDICTION_OPACITY = 0.5  # the P(valid) wireframe over the links: faint, so their colour and edges show through
