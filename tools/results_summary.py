@@ -157,8 +157,8 @@ def above_always_valid(scores: dict[str, float], rounded: float = 0.005) -> Impl
 
 
 def papers_tests(tables: Tables) -> str:
-    """The paper's 3D accuracies (Table 2, unseen) against "always valid" on the tests its Table 2 implies, and the
-    share of valid samples in ours (the `paper` section's column "Unseen always valid")."""
+    """The paper's 3D accuracies (Table 2, unseen) against "always valid" on the tests we infer from its Table 2, and
+    the share of valid samples in ours (the `paper` section's column "Unseen always valid")."""
     three_d = [s for s in NAMES if s != "2ds"]
     found = {s: above_always_valid(MLP[s]["unseen"]) for s in three_d}
     least = min(f.least_gap for f in found.values())
