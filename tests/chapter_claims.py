@@ -566,7 +566,8 @@ def _recorded_verdicts(nb, found: list[tuple[list[str], list[list[str]]]]) -> li
 STATUS = re.compile(  # findings.claim_status: the paper's claim from the recorded runs, its parts captured
     r"So the paper's claim (holds here|holds here only in part|does not hold here) for an accurate network: inside "
     r"the paper's Algorithm 1 the median query of our accurate `strong` network saved time in (none|\d+) of the (\d+) "
-    r"scenario–sampler pairs(?: \([^)]*\))? \(a tie in (\d+), a cost in (\d+)\), and against the lazy PRM in "
+    r"scenario–sampler pairs(?: \([^)]*\))? \(a tie in (\d+), a cost in (\d+)\), and against the lazy PRM "
+    r"(?:\([^)]*\) )?in "
     r"(none|\d+) of the (\d+) scenario–sampler pairs"
 )
 ACCURATE_ROW = re.compile(r"(.+), ours \(`strong` preset\), medians")  # section 6: the `strong` network in Algorithm 1
