@@ -31,8 +31,8 @@ Reading order (each module imports only those above it):
    page inline;
 4. :mod:`toolkit.viewer.address` — where a student opens it: the port, or its path through a JupyterHub;
 5. :mod:`toolkit.viewer.labels` — names for a saved scene's player controls, for screen readers;
-6. :mod:`toolkit.viewer.snapshot` — a scene on a page without a server: snapshot, animation, a still for no WebGL;
-7. :mod:`toolkit.viewer.models` — which learned model a scene shows, and why one is refused;
+6. :mod:`toolkit.viewer.models` — which learned model a scene shows, and why one is refused;
+7. :mod:`toolkit.viewer.snapshot` — a scene on a page without a server: snapshot, animation, a still for no WebGL;
 8. :mod:`toolkit.viewer.scene` — :class:`Viewer`: the live scene, and the events it tells its listeners;
 9. :mod:`toolkit.viewer.panel` — the GUI panel, one listener: joint sliders, samplers, planning, playback;
 10. :mod:`toolkit.viewer.app` — :func:`launch` (the scene with its panel), :func:`serve_forever`, :func:`embed`;
