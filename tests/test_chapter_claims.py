@@ -356,24 +356,10 @@ def test_chapter_04_fails_where_section_6s_recorded_verdicts_contradict_its_answ
 
 
 def _claim_expected() -> tuple[str, ...]:
-    """What the line under the first code cell and the summary must say of the paper's claim, from docs/results.md."""
-    eager = [
-        findings.time_verdict(r) for row in recorded.query_ratios(recorded.ALGORITHM_1).values() for r in row.values()
-    ]
-    lazy = [
-        findings.time_verdict(r) for k in ("2ds", "3dc7") for r in recorded.median_ratios("strong")[k]["total"].values()
-    ]
-    saved = eager.count(findings.SAVES)
-    verdict = findings.HOLDS if saved == len(eager) else findings.IN_PART if saved else findings.DOES_NOT_HOLD
-    return (
-        verdict,
-        str(saved or "none"),
-        str(len(eager)),
-        str(eager.count(findings.TIES)),
-        str(eager.count(findings.COSTS)),
-        str(lazy.count(findings.SAVES) or "none"),
-        str(len(lazy)),
-    )
+    """What the line under the first code cell and the summary must say of the paper's claim: docs/results.md's
+    counts, read by hand (inside Algorithm 1 the accurate network saves in none of 16 cells, ties in 7, costs in 9;
+    against the lazy PRM, on 2DS and 3DC-7, it saves in none of 8)."""
+    return (findings.DOES_NOT_HOLD, "none", "16", "7", "9", "none", "8")
 
 
 def test_chapter_04_fails_where_its_statement_of_the_papers_claim_disagrees_with_the_recorded_runs():
