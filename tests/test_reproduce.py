@@ -194,6 +194,7 @@ def test_planning_with_prediction_follows_the_presets_edge_rule(preset, screened
         ("paper", None, "paper", exact_checker),
         ("strong", None, "best", None),
         ("strong", "paper-fcl", "paper-fcl", FCLChecker),
+        ("strong", "paper-fcl-alike", "paper-fcl-alike", FCLChecker),
         ("paper", "best", "best", None),
     ],
 )
@@ -205,7 +206,9 @@ def test_table_3s_baseline_is_the_recipes_planner_unless_chosen(preset, chosen, 
     assert ("baseline" in modes) == (exact is not None)
     if exact is not None:
         assert modes["baseline"].exact is exact and modes["baseline"].planner.name == "paper"
-    with pytest.raises(ValueError, match="unknown baseline 'eager'; choose one of best, paper, paper-fcl"):
+    # prediction's own exact checks: python-fcl only where the baseline asks for one checker on both sides
+    assert modes["with"].exact is (FCLChecker if baseline == "paper-fcl-alike" else exact_checker)
+    with pytest.raises(ValueError, match="unknown baseline 'eager'; choose one of best, paper, paper-fcl,"):
         RunConfig.create("2ds", preset, baseline="eager")
 
 
