@@ -242,6 +242,10 @@ def test_a_fine_maps_marks_stand_apart_and_a_one_cell_strip_of_mistakes_is_marke
         mask = answers.answer_codes(probability >= 0.5, valid) == code
         assert_squares_mark(ax, fine, mask, k, label=label)
     assert block_of_squares(fig, "circles") > block_of_squares(fig, "squares")  # the circles sparser
+    (squares,) = [c for c in cell_marks.cell_marks(ax) if c.get_label() == "invalid kept (dangerous)"]
+    at = ax.transData.transform(squares.get_offsets()) * 72 / fig.dpi  # (m, 2) points
+    apart = np.max(np.abs(at[:, None] - at[None]), axis=-1) + np.diag(np.full(len(at), np.inf))  # (m, m)
+    assert apart.min() >= np.sqrt(squares.get_sizes()[0]) + cell_marks.CLEAR - 1e-6  # their rings never touch
     cell = fine.axes[0][1] - fine.axes[0][0]
     strip_cells = np.array(sorted(cell_centres(fine, strip & valid)))  # (n, 2)
     circles = np.array(sorted(scatter_points(ax, "valid rejected")))  # (m, 2)

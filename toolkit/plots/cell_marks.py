@@ -9,7 +9,8 @@ classifier's maps draw their mistakes over the boundary, which would cut a mark 
 :func:`fit_cell_marks`, once the figure is laid out, puts one mark on each block of ``k x k`` cells holding a marked
 cell, at their middle: ``k`` the fewest cells that make a mark :data:`MIN_MARK` points wide at :data:`MARK_SHARE` of
 its block, and that keep two marks' centres at least the ``pitch`` the marks were drawn with apart (review r18b: on
-chapter 03's `paper` map a pile of squares a block apart merged into one shape that could not be counted).
+chapter 03's `paper` map a pile of squares a block apart merged into one shape that could not be counted); a mark
+drawn with a pitch stays near its block's middle, so that two in neighbouring blocks keep :data:`CLEAR` between them.
 """
 
 from __future__ import annotations
@@ -24,6 +25,7 @@ from toolkit.plots.slices import CSpaceSlice
 MIN_MARK = 5.0  # points: the least side of a mark, however fine the map
 MAX_MARK = 7.0  # points: the largest, however coarse: a mark, not a tile hiding its cell's grey
 MARK_SHARE = 0.7  # of its cell (or block of cells) a mark covers: the map beneath shows between two marks
+CLEAR = 6.0  # points between two marks' sides, at least, where drawn with a pitch: their rings (4.2) and a gap
 GID = "cell marks"  # how fit_cell_marks finds the marks draw_cell_marks drew ("cell marks:PITCH")
 
 
@@ -55,15 +57,20 @@ def fit_cell_marks(fig: Figure, grid: CSpaceSlice) -> dict[str, int]:
             k = max(1, int(np.ceil(MIN_MARK / (MARK_SHARE * side))), int(np.ceil(pitch / side - 1e-9)))
             label = str(mark.get_label())
             blocks[label] = max(blocks.get(label, 1), k)
-            mark.set_sizes([min(MARK_SHARE * k * side, MAX_MARK) ** 2])
+            size = min(MARK_SHARE * k * side, MAX_MARK)
+            mark.set_sizes([size**2])
             offsets = np.asarray(mark.get_offsets())  # (n, 2) the marked cells' centres
             if k == 1 or not len(offsets):
                 continue  # one mark a cell
             cells = np.rint((offsets - first) / cell).astype(int)  # (n, 2) cell indices
-            _, block_of = np.unique(cells // k, axis=0, return_inverse=True)  # (n,) the block of each
+            block, block_of = np.unique(cells // k, axis=0, return_inverse=True)  # (m, 2), (n,) the block of each
             block_of = block_of.ravel()
-            centres = np.array([cells[block_of == b].mean(axis=0) for b in range(block_of.max() + 1)])  # (m, 2)
-            mark.set_offsets(first + centres * cell)  # each at its marked cells' middle
+            means = np.array([cells[block_of == b].mean(axis=0) for b in range(len(block))])  # (m, 2)
+            middle = block * k + (k - 1) / 2  # (m, 2) each block's middle cell
+            spread = max(0.0, (k * side - size - CLEAR) / (2 * side)) if pitch else k  # cells off the middle, at most
+            centres = np.clip(means, middle - spread, middle + spread)  # at its cells' middle, a mark's width apart
+            centres = np.clip(centres, 0, np.array(grid.shape) - 1)  # on the map: a last block may stick out of it
+            mark.set_offsets(first + centres * cell)
     return blocks
 
 
