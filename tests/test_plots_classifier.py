@@ -274,8 +274,8 @@ def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, pr
 @pytest.mark.parametrize("n", [N, 100])  # a mark a cell; a mark per block of cells (chapter 03 at full size)
 def test_threshold_views_mistakes_are_marked_over_the_boundary_at_a_size_one_sees(n):
     """Reader r8b: the decision map's mistakes lay under the boundary's ringed line, invisible. Each kind has its own
-    mark (circles conservative, squares dangerous) over every cell of that kind, at least ``MIN_MARK`` points wide, drawn
-    above the boundary, in the kind's colour: as many of its pixels show as the marks' area, about."""
+    mark (circles conservative, squares dangerous) over every cell of that kind, at least ``MIN_MARK`` points wide,
+    drawn above the boundary, in the kind's colour: as many of its pixels show as the marks' area, about."""
     robot = robots.point_robot()
     grid = slices.slice_grid(robot, n=n)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
