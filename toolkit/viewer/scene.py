@@ -36,7 +36,6 @@ LAYERS = ("obstacles", "robot", "prediction", "samples", "roadmap", "path")
 ALONG = {"obstacle_edges": "obstacles", "link_edges": "robot"}
 HALO = 0.5  # the prediction wireframe stands this share of the thinnest link clear of the links: apart from their edges
 SLIDING = ("/workspace", "/plan")  # frames an animation slides so the camera follows the robot; it is drawn moved
-LABEL_ABOVE = 0.8  # robot sizes: the "model disagrees" label stands this far above the robot's top (0.5 touched it)
 RAW = "raw"  # the "sampler" of uniform configurations, unfiltered: what a model is asked about
 
 EVENTS = {  # what a Viewer tells its listeners, and the arguments a listener's callback receives
@@ -184,7 +183,7 @@ class Viewer:
                     boxes.grown(self._halo),
                     np.repeat(draw.probability_colors([self.probability]), len(boxes), axis=0),
                 )
-                above = LABEL_ABOVE * framing.robot_size(self.robot)  # above, clear of the robot in a snapshot
+                above = 0.8 * framing.robot_size(self.robot)  # robot sizes above its top: clear of it (0.5 touched)
                 self.nodes["disagreement"].position = boxes.centers.max(axis=0) + np.array([0.0, 0.0, above])
                 self._show_disagreement()
             self._notify("moved")
