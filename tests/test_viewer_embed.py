@@ -432,6 +432,8 @@ def test_an_animation_opens_on_its_still_of_the_path_and_the_robot_at_its_start_
     document = page_of(planned.animation_iframe(300, frames=3, seconds=1.0))
     still = found(r'(<div id="toolkit-still"[\s\S]*?</div>)', document)
     assert 'id="toolkit-still" hidden' not in still and 'id="toolkit-play" type="button"' in still
+    note = html.unescape(found(r'id="toolkit-still-note"[^>]*>([^<]*)<', still))  # r18c took it for the animation
+    assert note.startswith("A still picture, not the animation") and "Press play in 3D to watch the robot move" in note
     alt = html.unescape(found(r'alt="([^"]*)"', still))
     assert "the path of the robot's base" in alt
     assert re.search(r"close up among the blocks near it: start, valid; middle, valid; goal, valid\.$", alt)

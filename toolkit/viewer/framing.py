@@ -3,7 +3,8 @@
 A scene is only as good as its camera. :func:`camera_pose` frames the workspace for the live viewer (§IV-A's
 scenes); :func:`follow_camera` keeps a moving robot framed through a motion; :func:`robot_camera` frames one
 configuration for a snapshot, and given the samples shown, :func:`clear_view` moves it to where the fewest of the
-robot's links stand behind blocks and no sample mark hides it.
+robot's links stand behind blocks and no sample mark hides it; :func:`marks_over_robot` names the marks that would
+still sit over the robot on that picture, which a page leaves out.
 """
 
 from __future__ import annotations
