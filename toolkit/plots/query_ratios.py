@@ -95,7 +95,7 @@ def _words(cells: Mapping[str, Mapping[str, tuple[float, float, float]]], title:
     """The text alternative: what is drawn, then how many medians read as each verdict and their range."""
     medians = [value[0] for by in cells.values() for value in by.values()]
     said = [time_verdict(m, tie=tie) for m in medians]
-    counts = ", ".join(f"{said.count(r)} {r}" for r in READS)
+    counts = ", ".join(f"{said.count(r)} read as “{r}”" for r in READS)
     return (
         f"{title}: the median of each query's own time ratio with prediction over without, a point per scenario and "
         f"sampler, a whisker over the middle half of the ratios, log scale, read against the line at 1 and the shaded "
