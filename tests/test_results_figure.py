@@ -1,7 +1,8 @@
-"""docs/results.md's two figures, Table 3's total and sampling columns ours beside the paper's, against the tables on
-the same page: each picture (docs/results_table3_*.png), its text alternative on the page and the text the PNG carries
-are what tools/results_summary.py draws from the tables now, and its points are the tables' cells, read here on their
-own."""
+"""docs/results.md's three figures against the tables on the same page: Figure 1, the verdict's statistic (the `strong`
+network inside Algorithm 1, the median of each query's own ratio with its middle half: docs/results_claim.png), then
+Figures 2 and 3, Table 3's total and sampling columns by means, ours beside the paper's (docs/results_table3_*.png).
+Each picture, its text alternative on the page and the text the PNG carries are what tools/results_summary.py draws
+from the tables now, and its points are the tables' cells, read here on their own."""
 
 import re
 

@@ -7,9 +7,12 @@ It rewrites the lines between :data:`BEGIN` and :data:`END` in ``docs/results.md
 fails while they differ from what the tables give, so a new run's tables cannot leave an old summary behind.
 Time ratios are read with the page's rule, chapter 04's (:data:`RULE`, :func:`toolkit.teaching.findings.time_verdict`).
 
-It also draws the page's two figures, :data:`FIGURES`: Table 3's total and sampling columns, ours beside the paper's,
-per scenario and sampler (:func:`table3_figure`, drawn by :func:`toolkit.plots.timings.ratio_comparison`), and writes
-each one's text alternative between its :data:`FIGURE_BEGIN` and :data:`FIGURE_END`; each PNG carries the same text
+It also draws the page's three figures. Figure 1, :data:`CLAIM_FIGURE`, is the statistic the verdict on the paper's
+claim reads: the `strong` network inside Algorithm 1, the median of each query's own ratio with its middle half
+(:func:`claim_figure`, drawn by :func:`toolkit.plots.query_ratios.own_ratios`). Figures 2 and 3, :data:`FIGURES`, are
+Table 3's total and sampling columns by means, ours beside the paper's, per scenario and sampler
+(:func:`table3_figure`, drawn by :func:`toolkit.plots.timings.ratio_comparison`). Each one's text alternative is
+written between its markers (:data:`CLAIM_BEGIN`, :data:`FIGURE_BEGIN` and their ends); each PNG carries the same text
 (its ``Description``), so
 ``tests/test_results_figure.py`` fails while the picture or its words no longer match the tables.
 
