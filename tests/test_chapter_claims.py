@@ -295,7 +295,9 @@ def test_chapter_04_fails_a_verdict_its_numbers_contradict():
     nb = chapter_04()
     first = nb["cells"][0]["outputs"][1]["data"]  # after the line that states section 5's verdict
     first["text/markdown"] = first["text/markdown"].replace("costs time", "saves time", 1)
-    assert problems(CH04, nb) == ["04: 2DS BS: says 'saves time (2.00; 2.00–2.25)', its numbers say 'costs time'"]
+    assert problems(CH04, nb) == [
+        "04: 2DS BS: says 'saves time (median 2.00; middle half 2.00–2.25)', its numbers say 'costs time'"
+    ]
     nb = chapter_04()
     last = nb["cells"][2]["outputs"][0]["data"]
     last["text/markdown"] = last["text/markdown"].replace("network dearer", "network cheaper", 1)

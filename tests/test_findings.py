@@ -91,8 +91,8 @@ def test_planning_table_is_a_markdown_table_with_a_verdict_per_row():
     )
     lines = table.splitlines()
     assert lines[0].startswith("| scenario | sampler | with / without: verdict")  # the verdict before the numbers
-    assert lines[2] == "| 3DC-7 | BS | costs time (2.00; 2.00–2.00) | 100 / 200 | 3 |"
-    assert lines[3] == "| 3DC-7 | OB | saves time (0.50; 0.50–0.50) | 100 / 50 | 3 |"
+    assert lines[2] == "| 3DC-7 | BS | costs time<br>(median 2.00; middle half 2.00–2.00) | 100 / 200 | 3 |"
+    assert lines[3] == "| 3DC-7 | OB | saves time<br>(median 0.50; middle half 0.50–0.50) | 100 / 50 | 3 |"
     assert "\n    " not in table  # never pre-wrapped
 
 

@@ -42,6 +42,7 @@ from toolkit.plots import (
     cspace,
     palette,
     planning,
+    query_ratios,
     reproduction,
     robot_drawing,
     scenes,
@@ -58,6 +59,7 @@ MODULES = (
     crossover,
     cspace,
     planning,
+    query_ratios,
     reproduction,
     robot_drawing,
     scenes,
@@ -227,6 +229,13 @@ def gallery() -> dict[str, Figure]:
                 "the paper's planner, means": {"2DS": {"BS": 0.5, "OB": 0.8, "G": 1.2, "BT": 0.9}},
                 "our lazy planner, medians": {"2DS": {"BS": 1.5, "OB": 1.1, "G": 1.3, "BT": 1.2}},
             }
+        ),
+        "query_ratios.own_ratios": query_ratios.own_ratios(
+            {
+                "2DS": {"BS": (1.13, 0.77, 1.59), "OB": (0.85, 0.7, 0.95)},
+                "3DC-7": {"BS": (1.03, 0.98, 1.1), "OB": (1.5, 1.2, 1.7)},
+            },
+            title="each query's own ratio",
         ),
         "timings.throughputs": timings.throughputs(
             {"2DS": {"exact": 9e7, "learned": 3e6}, "3DC-7": {"exact": 2e5, "learned": 2.5e6}}

@@ -1,7 +1,8 @@
-"""docs/results.md's two figures, Table 3's total and sampling columns ours beside the paper's, against the tables on
-the same page: each picture (docs/results_table3_*.png), its text alternative on the page and the text the PNG carries
-are what tools/results_summary.py draws from the tables now, and its points are the tables' cells, read here on their
-own."""
+"""docs/results.md's three figures against the tables on the same page: Figure 1, the verdict's statistic (the `strong`
+network inside Algorithm 1, the median of each query's own ratio with its middle half: docs/results_claim.png), then
+Figures 2 and 3, Table 3's total and sampling columns by means, ours beside the paper's (docs/results_table3_*.png).
+Each picture, its text alternative on the page and the text the PNG carries are what tools/results_summary.py draws
+from the tables now, and its points are the tables' cells, read here on their own."""
 
 import re
 
@@ -151,3 +152,63 @@ def test_a_figure_of_many_panels_repeats_its_legend_under_the_last():
         assert boxes[0].y0 >= panels_box[0].y1 - 1
         if legends == 2:
             assert boxes[1].y1 <= panels_box[-1].y0 + 1 and boxes[1].y0 >= fig.bbox.y0 - 1
+
+
+def test_no_two_points_of_a_panel_overlap_at_the_pages_width(drawn):
+    """Reader r18a: markers nearly overlapped (2DS BT, 3DC-7 BS). Neighbouring points stand apart, centre to centre,
+    by more than 2.5 markers' widths as saved for the page: a marker with its outline rings (about 1.6 widths) and
+    a clear gap of more than a marker's width between two (at the old spread, 0.7 of a tick's space, 2.3)."""
+    _, fig = drawn
+    for ax in fig.axes:
+        lines = [line for line in ax.get_lines() if line.get_marker() != "None"]
+        width = max(line.get_markersize() for line in lines) * results_summary.FIGURE_DPI / 72  # px
+        x = sorted({round(float(v), 6) for line in lines for v in line.get_xdata()})
+        gaps = [b - a for a, b in zip(x, x[1:])]
+        scale = ax.transData.transform((1, 1))[0] - ax.transData.transform((0, 1))[0]  # px per unit, at fig's dpi
+        assert min(gaps) * scale * results_summary.FIGURE_DPI / fig.dpi > 2.5 * width
+
+
+CLAIM = TEXT.partition(results_summary.CLAIM_BEGIN)[2].partition(results_summary.CLAIM_END)[0].strip()
+
+
+def _own_ratios(text: str) -> dict[tuple[str, str], tuple[float, ...]]:
+    """The `strong --planner paper` table "each query's own ratio", read from the page's Markdown on its own:
+    ``{(scenario, sampler): (median, q1, q3)}``."""
+    section = text.partition("each query's own ratio\n")[2].partition("\n###")[0]
+    found = {}
+    for scenario, cells in re.findall(r"(?m)^\| (\w+) \| (\d.*) \|$", section):
+        for sampler, cell in zip(SAMPLERS, cells.split(" | ")):
+            found[scenario, sampler] = tuple(float(v) for v in re.findall(r"\d+\.\d+", cell))
+    return found
+
+
+def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
+    """Reader r18a: the first figure plotted the `strong` network by means (3DC-9 OB 0.72, a saving) while the verdict
+    reads each query's own ratio (1.24, a cost). Figure 1 is the verdict's statistic: each point a median of that
+    table, its whisker the middle half, its marker what the median reads as; it comes before the figures of means,
+    its picture carries its description and the page says so."""
+    fig = results_summary.claim_figure(TEXT)
+    FigureCanvasAgg(fig).draw()
+    (ax,) = fig.axes
+    table = _own_ratios(TEXT)
+    assert len(table) == 16 and table["3dc9", "OB"] == (1.24, 1.12, 1.36)
+    points = [line for line in ax.get_lines() if len(line.get_ydata()) == 1]
+    medians = sorted(float(line.get_ydata()[0]) for line in points)
+    assert medians == pytest.approx(sorted(m for m, _, _ in table.values()))
+    marker = {"costs": "o", "tie": "s", "saves": "^"}
+    for line in points:
+        median = float(line.get_ydata()[0])
+        read = "costs" if median >= 1.1 - 1e-9 else "saves" if median <= 0.9 + 1e-9 else "tie"
+        assert line.get_marker() == marker[read], median
+    segments = [s for c in ax.collections if hasattr(c, "get_segments") for s in c.get_segments()]  # the whiskers
+    ends = sorted((round(s[:, 1].min(), 6), round(s[:, 1].max(), 6)) for s in segments)
+    assert ends == sorted((q1, q3) for _, q1, q3 in table.values())
+    legend = fig.legends[0].get_window_extent(fig.canvas.get_renderer())
+    assert legend.y0 >= ax.get_tightbbox(fig.canvas.get_renderer()).y1 - 1
+    with Image.open(results_summary.CLAIM_FIGURE) as image:
+        assert image.info.get("Description") == alt.alt_text(fig), AGAIN
+        assert image.size[0] <= COLUMN
+    assert CLAIM == results_summary.claim_markdown(TEXT), AGAIN
+    costs = sum(m >= 1.1 for m, _, _ in table.values())
+    assert f"{costs} costs, {16 - costs} ties and 0 savings" in CLAIM
+    assert TEXT.index(results_summary.CLAIM_BEGIN) < TEXT.index(results_summary.FIGURE_BEGIN.format(kind="total"))

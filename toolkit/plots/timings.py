@@ -219,7 +219,7 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]], *, tie: 
     and marker in every panel), read against the line at 1: on a log axis a bar's length would mean nothing.
     Ratios against different baselines never share a panel (two panels may share one); the panels share one log
     axis, so positions compare. With ``tie`` (e.g. 0.10) every panel shades the tie band from ``1 - tie`` to
-    ``1 + tie`` (:func:`_tie_band`), named in the legend and the description, so that a reader can count the points
+    ``1 + tie`` (:func:`tie_band`), named in the legend and the description, so that a reader can count the points
     on each side of it; without, none is drawn.
     """
     names = list(dict.fromkeys(name for series in baselines.values() for name in series))  # every series, once
@@ -241,7 +241,7 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]], *, tie: 
         )  # each ratio: the longer description
         ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
         if tie is not None:
-            _tie_band(ax, tie)
+            tie_band(ax, tie)
         ax.set_xticks(np.arange(len(PAPER_SAMPLERS) - 1) + 0.5, minor=True)  # a sampler's points between two lines
         ax.grid(True, axis="x", which="minor", color=COLORS["shade"], linewidth=0.8)
         ax.tick_params(axis="x", which="minor", length=0)
@@ -253,12 +253,12 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]], *, tie: 
     drawn = [float(r) for series in baselines.values() for by in series.values() for r in by.values()]  # every point
     axes[0].set_yscale("log")
     axes[0].set_ylim(min(*drawn, 1.0) / 1.3, max(*drawn, 1.0) * 1.3)  # every point and the line at 1
-    _log_ticks(axes[0])  # shared by every panel
+    log_ticks(axes[0])  # shared by every panel
     for ax in axes:
         ax.tick_params(labelsize=9, labelleft=True)  # each row its own numbers
-    _legend_above(fig, axes, columns)
+    legend_above(fig, axes, columns)
     text = "Planning time with prediction divided by the time without, a point per sampler and series, log scale, read"
-    text += " against the line at 1" + ("" if tie is None else f" and the shaded {_band_words(tie)}")
+    text += " against the line at 1" + ("" if tie is None else f" and the shaded {band_words(tie)}")
     text += "; below 1 prediction saves"
     parts = [
         Part(
@@ -272,10 +272,11 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]], *, tie: 
     return describe(fig, f"{text} time. {'; '.join(said)}.", parts)
 
 
+SPREAD = 0.84  # of the space between two ticks, what a tick's points spread over: no two touch at the page's width
 REPEATED_LEGEND = 3  # more panels than this: the legend also stands under the last one
 
 
-def _legend_above(fig: Figure, axes, columns: int) -> None:
+def legend_above(fig: Figure, axes, columns: int) -> None:
     """Each series once in a legend over the first panel, where a reader starts (review r15a: under the last of four
     panels it was far from the first), ``columns`` entries a row, and with more than :data:`REPEATED_LEGEND` panels
     the same legend again under the last (review r16a: over the first of five it was far from the last); the panels
@@ -290,20 +291,20 @@ def _legend_above(fig: Figure, axes, columns: int) -> None:
     fig.tight_layout(rect=(0, room if below else 0, 1, 1 - room))
 
 
-def _band_words(tie: float) -> str:
+def band_words(tie: float) -> str:
     """The tie band in words, as the legend and the description name it: ``"tie band, 0.90 to 1.10 (within 10 % of
     1)"``."""
     return f"tie band, {1 - tie:.2f} to {1 + tie:.2f} (within {tie * 100:g} % of 1)"
 
 
-def _tie_band(ax, tie: float) -> None:
+def tie_band(ax, tie: float) -> None:
     """Shade ``[1 - tie, 1 + tie]`` behind the points of a ratio panel, its edges dotted (seen without the grey)."""
-    ax.axhspan(1 - tie, 1 + tie, facecolor=COLORS["shade"], edgecolor="none", zorder=0, label=_band_words(tie))
+    ax.axhspan(1 - tie, 1 + tie, facecolor=COLORS["shade"], edgecolor="none", zorder=0, label=band_words(tie))
     for edge in (1 - tie, 1 + tie):
         ax.axhline(edge, color=COLORS["reference"], linestyle=":", linewidth=0.8, zorder=0.5)
 
 
-def _log_ticks(ax, text=lambda t: f"{t:g}") -> None:
+def log_ticks(ax, text=lambda t: f"{t:g}") -> None:
     """A log y axis labelled at 1-2-5 steps (0.2, 0.5, 1, 2), finer over less than a decade; each label ``text(t)``
     (default a plain number)."""
     ax.set_yscale("log")
@@ -337,7 +338,7 @@ def throughputs(rates: dict[str, dict[str, float]]) -> Figure:
     drawn = [r for by in rates.values() for r in by.values()]
     ax.set_yscale("log")
     ax.set_ylim(min(drawn) / 1.6, max(drawn) * 1.6)
-    _log_ticks(ax, _rate_text)
+    log_ticks(ax, _rate_text)
     ax.grid(True, axis="y", color=COLORS["shade"], linewidth=0.8)
     ax.set_axisbelow(True)
     ax.set_xticks(np.arange(len(rates)), list(rates))
@@ -368,7 +369,7 @@ def _points(ax, i: int, n: int, values: list[float], label: str, outlined: bool 
     against the axis, never along a line between ticks; ``outlined`` (:func:`~toolkit.plots.palette.halo`): seen on a
     grey band too. Returns the points' ``(ticks,)`` x."""
     look = series_style(i)
-    x = np.arange(len(values)) + (i - (n - 1) / 2) * 0.7 / n
+    x = np.arange(len(values)) + (i - (n - 1) / 2) * SPREAD / n
     (line,) = ax.plot(
         x, values, linestyle="none", marker=look["marker"], color=look["color"], markersize=7, label=label
     )

@@ -55,7 +55,7 @@ def planning_verdict(row: Mapping[str, Mapping], tie: float = TIE) -> tuple[floa
 def planning_table(tables: Mapping[str, Mapping[str, Mapping]], tie: float = TIE) -> str:
     """Markdown: per scenario and sampler of ``{scenario: compare_prediction table}``, the verdict with the per-query
     ratios' median and middle half, then the median totals without and with prediction (the verdict comes first, so
-    that a narrow page shows it)."""
+    that a narrow page shows it, on a line of its own above its named numbers: reader r18a)."""
     rows = [
         "| scenario | sampler | with / without: verdict (median; middle half) | median total, ms: without / with "
         "| queries |",
@@ -65,7 +65,7 @@ def planning_table(tables: Mapping[str, Mapping[str, Mapping]], tie: float = TIE
         for sampler, row in table.items():
             median, q1, q3, said = planning_verdict(row, tie)
             rows.append(
-                f"| {name} | {sampler} | {said} ({median:.2f}; {q1:.2f}–{q3:.2f}) "
+                f"| {name} | {sampler} | {said}<br>(median {median:.2f}; middle half {q1:.2f}–{q3:.2f}) "
                 f"| {_ms(row['without']['total_s_median'])} / {_ms(row['with']['total_s_median'])} "
                 f"| {row['without']['n_queries']} |"
             )

@@ -1,0 +1,118 @@
+"""Each query's own time ratio with / without prediction, read as a verdict reads it (paper §V, Table 3's claim).
+
+A planning verdict over many queries reads the median of each query's own ratio (its time with prediction over its
+own time without), not a ratio of means: a few slow queries move a mean. :func:`own_ratios` draws that median for
+every scenario and sampler in one panel, the middle half of the ratios as a whisker, against the line at 1 and the
+tie band; each point's colour and marker say what its median reads as (saves, a tie, costs). ``docs/results.md``
+shows it first, for the accurate network inside Algorithm 1. Returns a matplotlib ``Figure``; never calls ``show()``.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from toolkit.plots.alt import Part, describe
+from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo, series_style
+from toolkit.plots.timings import band_words, legend_above, log_ticks, tie_band
+from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
+
+READS = (COSTS, TIES, SAVES)  # what a median reads as, in the legend's order; each its own colour and marker
+GAP = 1  # an empty slot between two scenarios' groups of samplers
+
+
+def own_ratios(
+    cells: Mapping[str, Mapping[str, tuple[float, float, float]]], *, title: str, tie: float = TIE
+) -> Figure:
+    """``{scenario: {sampler: (median, q1, q3)}}`` of each query's own ratio, with / without prediction: a point per
+    scenario and sampler at its median, a whisker over its middle half (``q1`` to ``q3``), on a log axis with the
+    line at 1 and the shaded tie band from ``1 - tie`` to ``1 + tie``. A point's colour and marker give the verdict
+    its median reads as (:func:`toolkit.util.verdicts.time_verdict`), named in a legend over the panel; each point's
+    sampler is written under it, each scenario under its samplers."""
+    fig = Figure(figsize=(PAGE_WIDTH, 3.9))
+    ax = fig.subplots()
+    names: list[str] = []  # tick labels: the samplers
+    ticks: list[float] = []  # their x
+    centres: list[float] = []  # each scenario's middle
+    for k, by_sampler in enumerate(cells.values()):
+        start = len(names) + k * GAP
+        x = start + np.arange(len(by_sampler))  # (samplers,)
+        values = np.array(list(by_sampler.values()))  # (samplers, 3): median, q1, q3
+        ax.errorbar(
+            x,
+            values[:, 0],
+            yerr=[values[:, 0] - values[:, 1], values[:, 2] - values[:, 0]],
+            fmt="none",
+            ecolor=COLORS["ink"],
+            capsize=3,
+            linewidth=1,
+            zorder=2,
+        )
+        for xi, median in zip(x, values[:, 0]):
+            look = series_style(READS.index(time_verdict(median, tie=tie)))
+            (point,) = ax.plot(
+                [xi], [median], linestyle="none", marker=look["marker"], color=look["color"], markersize=7, zorder=3
+            )
+            point.set_path_effects(halo(1.0))
+        names += list(by_sampler)
+        ticks += list(x)
+        centres.append(float(x.mean()))
+    for k, reads in enumerate(READS):  # the legend's entries, each verdict once, whether drawn or not
+        look = series_style(k)
+        ax.plot([], [], linestyle="none", marker=look["marker"], color=look["color"], markersize=7, label=_read(reads))
+    ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
+    tie_band(ax, tie)
+    ax.set_xticks(ticks, names)
+    ax.set_xticks([c + (len(cells[s]) + GAP) / 2 for c, s in zip(centres[:-1], cells)], minor=True)
+    ax.grid(True, axis="x", which="minor", color=COLORS["shade"], linewidth=0.8)
+    ax.tick_params(axis="x", which="minor", length=0)
+    ax.tick_params(labelsize=9)
+    groups = ax.secondary_xaxis("bottom")
+    groups.set_xticks(centres, list(cells))
+    groups.tick_params(length=0, pad=16, labelsize=10)
+    ax.set_xlabel("sampler, by scenario", labelpad=16)  # under the scenarios' names
+    ax.set_xlim(-0.7, ticks[-1] + 0.7)
+    drawn = [v for by in cells.values() for value in by.values() for v in value]
+    ax.set_yscale("log")
+    ax.set_ylim(min(*drawn, 1 - tie) / 1.15, max(*drawn, 1 + tie) * 1.15)
+    log_ticks(ax)
+    ax.set_ylabel("time with / without\n(below 1: saves)")
+    ax.set_title(title, fontsize=10)
+    legend_above(fig, [ax], 2)
+    return describe(fig, _words(cells, title, tie), [_part(cells, title)])
+
+
+def _read(reads: str) -> str:
+    """A legend's entry: what a median that reads as ``reads`` is."""
+    return {COSTS: "median costs time (1.10 or more)", TIES: "median a tie", SAVES: "median saves time (0.90 or less)"}[
+        reads
+    ]
+
+
+def _words(cells: Mapping[str, Mapping[str, tuple[float, float, float]]], title: str, tie: float) -> str:
+    """The text alternative: what is drawn, then how many medians read as each verdict and their range."""
+    medians = [value[0] for by in cells.values() for value in by.values()]
+    said = [time_verdict(m, tie=tie) for m in medians]
+    counts = ", ".join(f"{said.count(r)} read as “{r}”" for r in READS)
+    return (
+        f"{title}: the median of each query's own time ratio with prediction over without, a point per scenario and "
+        f"sampler, a whisker over the middle half of the ratios, log scale, read against the line at 1 and the shaded "
+        f"{band_words(tie)}. Of {len(medians)} medians, from {min(medians):.2f} to {max(medians):.2f}: {counts}."
+    )
+
+
+def _part(cells: Mapping[str, Mapping[str, tuple[float, float, float]]], title: str) -> Part:
+    """The longer description: each scenario's row, each sampler's median and middle half."""
+    samplers = tuple(dict.fromkeys(s for by in cells.values() for s in by))
+    rows = tuple(
+        (scenario, *(f"{by[s][0]:.2f} ({by[s][1]:.2f}–{by[s][2]:.2f})" for s in samplers))
+        for scenario, by in cells.items()
+    )
+    return Part(
+        title,
+        "median of each query's own ratio (middle half); below 1, prediction saves time",
+        ("scenario", *samplers),
+        rows,
+    )
