@@ -20,9 +20,9 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 RESULTS = ROOT / "docs" / "results.md"
 PACKAGED = ROOT / "toolkit" / "teaching" / "recorded.json"
-PRESET = re.compile(  # a preset's section, or one planned with a named planner; "## Preset `paper` before issue 25" is
-    r"^## Preset `(\w+)`(?: with `--planner (\w+)`(?:: .*)?)?$"  # history, read by no notebook
-)
+# a preset's section, or one planned with a named planner (and baseline); "## Preset `paper` before issue 25" is
+# history, read by no notebook
+PRESET = re.compile(r"^## Preset `(\w+)`(?: with `--planner (\w+)(?: --baseline ([\w-]+))?`(?:: .*)?)?$")
 WITHOUT = "*Without prediction*:"  # how tables.md names, under a heading, what "without" was in its table
 
 
@@ -72,8 +72,10 @@ def parse(text: str) -> dict[str, dict[str, dict]]:
 
 def section_key(found: re.Match) -> str:
     """The name a section's tables are read by (:mod:`toolkit.teaching.recorded`): its preset, ``"strong"``, or for a
-    run that named its planner the preset and the option, ``"strong --planner paper"``."""
-    return found[1] if found[2] is None else f"{found[1]} --planner {found[2]}"
+    run that named its planner (and baseline) the preset and the options, ``"strong --planner paper"``."""
+    options = zip(("planner", "baseline"), found.groups()[1:])
+    named = "".join(f" --{option} {value}" for option, value in options if value)
+    return found[1] + named
 
 
 def joined(parts: list[list[list[str]]]) -> list[list[str]]:
