@@ -351,6 +351,19 @@ def test_the_index_table_counts_the_recorded_cells():
     assert all(sum(counts) == 16 for counts in expected.values())
 
 
+def test_the_index_gives_each_scenarios_training_grids():
+    """Review r18c: the index said the paper's CAE learns nothing from "30 training grids", true of 2DS alone."""
+    from toolkit import scenarios
+
+    said = re.search(r"on (\d+) grids in 2DS, (\d+) in 3DO and (\d+) in 3DC", " ".join(README.read_text().split()))
+    assert said, "the index no longer gives the CAE's training grids per scenario"
+    assert said.groups() == tuple(str(scenarios.get(s).n_seen) for s in ("2ds", "3do", "3dc7"))
+    assert scenarios.get("3dc9").n_seen == scenarios.get("3dc7").n_seen
+
+
+README = ROOT / "README.md"
+
+
 def readme_opening() -> str:
     """The index page's text before its first section."""
     return (ROOT / "README.md").read_text().partition("\n## ")[0].partition("\n")[2]
