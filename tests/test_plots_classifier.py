@@ -6,7 +6,7 @@ import re
 import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.collections import PathCollection, PolyCollection
+from matplotlib.collections import PathCollection
 from matplotlib.colors import to_hex, to_rgba
 from matplotlib.contour import ContourSet
 
@@ -50,10 +50,17 @@ def scatter_points(ax, label):
     return {tuple(p) for p in collection.get_offsets()}
 
 
-def block_of_squares(fig) -> int:
-    """How many cells each way one dangerous square marks, as the figure's description says (1: one a cell)."""
-    found = re.search(r"one per (\d+) x \1 cells", alt.alt_text(fig))
+def block_of_squares(fig, kind="squares") -> int:
+    """How many cells each way one mark of ``kind`` (dangerous squares, conservative circles) stands for, as the
+    figure's description says (1: one a cell)."""
+    found = re.search(kind + r" \(one per (\d+) x \1 cells", alt.alt_text(fig))
     return int(found[1]) if found else 1
+
+
+def boundary_of(ax) -> ContourSet:
+    """The true C-obstacle boundary on a map: its one solid contour (the threshold's is dotted)."""
+    (boundary,) = [c for c in ax.get_children() if isinstance(c, ContourSet) and c.get_linestyle()[0][1] is None]  # type: ignore[index]
+    return boundary
 
 
 def assert_squares_mark(ax, grid, mask, k, label="invalid kept (dangerous)"):
@@ -67,15 +74,6 @@ def assert_squares_mark(ax, grid, mask, k, label="invalid kept (dangerous)"):
     centres = np.array(sorted(scatter_points(ax, label)))  # (m, 2)
     apart = np.max(np.abs(dangerous[:, None] - centres[None]), axis=-1) / cell  # (n, m) in cells, the larger axis
     assert (apart.min(axis=1) < k).all() and (apart.min(axis=0) < k).all()
-
-
-def hatched_cells(ax, label, grid):
-    """The centres of the cells a hatched collection covers (each one a cell's square: checked)."""
-    (collection,) = [c for c in ax.collections if isinstance(c, PolyCollection) and c.get_label() == label]
-    squares = [p.vertices[:4] for p in collection.get_paths()]
-    cell = (grid.upper - grid.lower) / N  # (2,)
-    assert collection.get_hatch() and all(np.ptp(v, axis=0) == pytest.approx(cell) for v in squares)
-    return {tuple(np.round(v.mean(axis=0), 9)) for v in squares}
 
 
 def test_slice_grid_sweeps_two_dofs_over_cell_centres_and_fixes_the_rest():
@@ -148,16 +146,17 @@ def test_probability_map_shows_the_probabilities_the_boundary_and_exactly_the_mi
     assert image.origin == "lower" and tuple(image.get_extent()) == grid.extent
     dangerous, conservative = (probability >= threshold) & ~valid, (probability < threshold) & valid
     assert dangerous.sum() > 0 and conservative.sum() > 0  # the test means something
-    assert block_of_squares(ax.figure) == 1  # 24 cells over 3 inches: a square a cell
-    assert scatter_points(ax, "invalid kept (dangerous)") == cell_centres(grid, dangerous)
-    rounded = {tuple(np.round(c, 9)) for c in cell_centres(grid, conservative)}
-    assert hatched_cells(ax, "valid rejected", grid) == rounded
+    assert_squares_mark(ax, grid, dangerous, block_of_squares(ax.figure))
+    assert_squares_mark(ax, grid, conservative, block_of_squares(ax.figure, "circles"), label="valid rejected")
+    assert ax.get_title().endswith(
+        f"{dangerous.sum()} dangerous cells (squares), {conservative.sum()} conservative (circles)"
+    )
     # the boundary runs midway between the exact checker's free and blocked cells, around the one block
     blocked = np.argwhere(~valid)
     step = grid.axes[0][1] - grid.axes[0][0]
     x0, x1 = grid.axes[0][blocked[:, 0].min()] - step / 2, grid.axes[0][blocked[:, 0].max()] + step / 2
     y0, y1 = grid.axes[1][blocked[:, 1].min()] - step / 2, grid.axes[1][blocked[:, 1].max()] + step / 2
-    (contour,) = [c for c in ax.get_children() if isinstance(c, ContourSet)]
+    contour = boundary_of(ax)
     vertices = np.concatenate([p.vertices for p in contour.get_paths()])
     x, y = vertices.T
     on_side = np.isclose(x, x0) | np.isclose(x, x1) | np.isclose(y, y0) | np.isclose(y, y1)
@@ -177,8 +176,8 @@ def test_a_fine_maps_dangerous_squares_stay_large_enough_to_see():
     probability = np.repeat(x[:, None], 100, axis=1)  # rising along x: the block's right part is kept
     fig = pc.probability_map(probability, valid, fine, threshold=0.5)
     ax = fig.axes[0]
-    (squares,) = [c for c in ax.collections if c.get_gid() == cell_marks.GID]
-    (boundary,) = [c for c in ax.get_children() if isinstance(c, ContourSet)]
+    (squares,) = [c for c in cell_marks.cell_marks(ax) if c.get_label() == "invalid kept (dangerous)"]
+    boundary = boundary_of(ax)
     assert np.sqrt(squares.get_sizes()[0]) >= cell_marks.MIN_MARK and squares.get_zorder() > boundary.get_zorder()
     k = block_of_squares(fig)
     assert k > 1 and len(squares.get_offsets()) < ((probability >= 0.5) & ~valid).sum() / k
@@ -196,7 +195,10 @@ def test_probability_maps_side_by_side_each_with_its_own_threshold(grid, probabi
     maps = {"paper": probability, "strong": 1 - probability}
     fig = pc.probability_maps(maps, valid, grid, thresholds={"paper": 0.3, "strong": 0.6})
     axes = [ax for ax in fig.axes if ax.images and ax.get_label() != "<colorbar>"]
-    assert [ax.get_title() for ax in axes] == ["paper: P(valid), threshold 0.30", "strong: P(valid), threshold 0.60"]
+    assert [ax.get_title().split("\n")[0] for ax in axes] == [
+        "paper: P(valid), threshold 0.30",
+        "strong: P(valid), threshold 0.60",
+    ]
     for ax, p, t in zip(axes, maps.values(), (0.3, 0.6)):
         np.testing.assert_array_equal(ax.images[0].get_array(), p.T)
         assert_squares_mark(ax, grid, (p >= t) & ~valid, block_of_squares(fig))
@@ -217,27 +219,38 @@ def test_each_map_has_its_own_colour_bar_with_its_threshold_drawn_across_it(grid
     assert maps[0].get_position().y0 > maps[1].get_position().y1  # one above the other, each as wide as the page
 
 
-def test_a_strip_of_conservative_cells_too_narrow_for_the_dots_is_circled():
-    """Review r16b: the strong map's 35 conservative cells, in one-cell strips along the blocks, caught no dot of the
-    hatch. Cells in strips narrower than 1.5 dot spacings are circled as well; a wide region keeps its dots alone."""
-    mask = np.zeros((12, 12), dtype=bool)
-    mask[0, :] = True  # a strip one cell wide along the map's edge: narrow, whatever it touches
-    mask[4:12, 4:12] = True  # an 8 x 8 region: wide for a width of 3, its border too
-    np.testing.assert_array_equal(cell_marks.narrow_cells(mask, 3), np.eye(12, dtype=bool)[0][:, None] & mask)
-    assert not cell_marks.narrow_cells(mask, 1).any()  # every strip holds a dot
+def test_a_fine_maps_marks_stand_apart_and_a_one_cell_strip_of_mistakes_is_marked():
+    """Review r18b, chapter 03 at full size: the dangerous squares, one per block of a few cells, merged into a pile
+    that could not be counted, and the conservative cells' hatch hid the grey of P(valid). Each kind's marks are now
+    at least its pitch apart (a block of ``k`` cells is that wide), the conservative circles sparser than the squares,
+    and a strip of conservative cells one cell wide (review r16b: it caught no dot of the old hatch) still carries
+    circles: every cell of it within a block of one."""
     fine = slices.slice_grid(robots.point_robot(), n=100)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
     valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (100, 100)
     strip = np.zeros_like(valid)
     strip[:, np.nonzero(~valid.all(axis=0))[0].max() + 1] = True  # the row of cells just above the block
     probability = np.where(strip, 0.2, 0.9)  # right everywhere but that one-cell strip, rejected though free
+    probability[:30, :20] = 0.2  # and a corner of free space rejected, obstacle cells there kept
+    probability[40:60, 40:60] = 0.9  # and the block's middle kept: dangerous
     fig = pc.probability_map(probability, valid, fine, threshold=0.5)
-    circles = [c for c in fig.axes[0].collections if c.get_label() == "valid rejected, narrow"]
-    assert len(circles) == 1 and len(circles[0].get_offsets()) > 0
-    k = block_of_squares(fig)
-    assert_squares_mark(fig.axes[0], fine, strip & valid, k, label="valid rejected, narrow")
-    assert "circled in strips too narrow for the dots" in alt.alt_text(fig)
-    assert "circled" not in alt.alt_text(pc.probability_map(np.where(valid, 0.9, 0.1), valid, fine, threshold=0.5))
+    ax = fig.axes[0]
+    side = cell_marks.cell_points(ax, fine)  # points
+    for label, kind, code in (("valid rejected", "circles", 1), ("invalid kept (dangerous)", "squares", 3)):
+        k = block_of_squares(fig, kind)
+        assert k * side >= pc.PITCH[code] and (k - 1) * side < pc.PITCH[code]  # the fewest cells that far apart
+        mask = answers.answer_codes(probability >= 0.5, valid) == code
+        assert_squares_mark(ax, fine, mask, k, label=label)
+    assert block_of_squares(fig, "circles") > block_of_squares(fig, "squares")  # the circles sparser
+    (squares,) = [c for c in cell_marks.cell_marks(ax) if c.get_label() == "invalid kept (dangerous)"]
+    at = ax.transData.transform(squares.get_offsets()) * 72 / fig.dpi  # (m, 2) points
+    apart = np.max(np.abs(at[:, None] - at[None]), axis=-1) + np.diag(np.full(len(at), np.inf))  # (m, m)
+    assert apart.min() >= np.sqrt(squares.get_sizes()[0]) + cell_marks.CLEAR - 1e-6  # their rings never touch
+    cell = fine.axes[0][1] - fine.axes[0][0]
+    strip_cells = np.array(sorted(cell_centres(fine, strip & valid)))  # (n, 2)
+    circles = np.array(sorted(scatter_points(ax, "valid rejected")))  # (m, 2)
+    apart = np.max(np.abs(strip_cells[:, None] - circles[None]), axis=-1) / cell  # (n, m) in cells
+    assert (apart.min(axis=1) < block_of_squares(fig, "circles")).all()  # every cell of the strip beside a circle
 
 
 def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, probability, valid):
@@ -261,8 +274,8 @@ def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, pr
 @pytest.mark.parametrize("n", [N, 100])  # a mark a cell; a mark per block of cells (chapter 03 at full size)
 def test_threshold_views_mistakes_are_marked_over_the_boundary_at_a_size_one_sees(n):
     """Reader r8b: the decision map's mistakes lay under the boundary's ringed line, invisible. Each kind has its own
-    mark (dots conservative, squares dangerous) over every cell of that kind, at least ``MIN_MARK`` points wide, drawn
-    above the boundary, in the kind's colour: as many of its pixels show as the marks' area, about."""
+    mark (circles conservative, squares dangerous) over every cell of that kind, at least ``MIN_MARK`` points wide,
+    drawn above the boundary, in the kind's colour: as many of its pixels show as the marks' area, about."""
     robot = robots.point_robot()
     grid = slices.slice_grid(robot, n=n)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
@@ -271,10 +284,10 @@ def test_threshold_views_mistakes_are_marked_over_the_boundary_at_a_size_one_see
     probability = np.repeat(x[:, None], n, axis=1) * 0.8 + 0.1 * np.sin(np.arange(n))[None, :] + 0.1
     fig = pc.threshold_view(probability, valid, grid, threshold=0.55)
     ax_map = fig.axes[0]
-    k = block_of_squares(fig)
+    k = block_of_squares(fig, "boundary")
     assert (k > 1) == (n == 100)
     codes = answers.answer_codes(probability >= 0.55, valid)
-    (boundary,) = [c for c in ax_map.get_children() if isinstance(c, ContourSet)]
+    boundary = boundary_of(ax_map)
     canvas = FigureCanvasAgg(fig)
     canvas.draw()
     image = np.asarray(canvas.buffer_rgba())[..., :3] / 255  # (H, W, 3), the top row first
@@ -292,7 +305,7 @@ def test_threshold_views_mistakes_are_marked_over_the_boundary_at_a_size_one_see
         area = len(marks.get_offsets()) * (side * fig.dpi / 72) ** 2 * (np.pi / 4 if marker == "o" else 1)
         assert seen >= 0.5 * area  # at least half of the marks' area, in their colour (their cells add to it)
     legend = [t.get_text() for t in fig.legends[0].get_texts()]
-    assert "valid rejected (dots)" in legend and "invalid kept (dangerous, squares)" in legend
+    assert "valid rejected (circles)" in legend and "invalid kept (dangerous, squares)" in legend
 
 
 def test_roc_curve_draws_every_curve_and_its_operating_point(probability, valid):
@@ -330,28 +343,31 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     assert [t.xy for t in ax.texts if t.get_text() == "in collision"] == [tuple(n) for n in nodes[~nodes_valid]]
 
 
-def test_conservative_dots_show_on_every_grey_in_ink_over_a_white_under_stroke(grid, probability, valid):
-    """Reader r12b: ink dots vanished on the 3DC-7 maps' dark grey. Each dot is ink over a wider white one, drawn
-    first: on any grey one of the two stands at least 3:1 apart (WCAG 1.4.11)."""
-    ax = pc.probability_map(probability, valid, grid, threshold=0.45).axes[0]
-    hatched = [c for c in ax.collections if isinstance(c, PolyCollection) and c.get_hatch()]
-    assert [
-        to_rgba(c.get_hatchcolor()[0] if np.ndim(c.get_hatchcolor()) > 1 else c.get_hatchcolor()) for c in hatched
-    ] == [
-        to_rgba(COLORS["free"]),
-        to_rgba(COLORS["ink"]),
-    ]  # the white under-stroke first, the ink dots over it
-    assert hatched[0].get_hatch_linewidth() > hatched[1].get_hatch_linewidth()  # the white one wider: a ring
-    np.testing.assert_array_equal(hatched[0].get_paths()[0].vertices, hatched[1].get_paths()[0].vertices)
-    # review r14c: a dense hatch over a tint hid P(valid) where a model rejects most of the map; twelve dots an inch
-    # on no tint leave the grey between them as it is, on a map as wide as the page, alone or one above another (r16b)
-    assert [c.get_hatch() for c in hatched] == ["..", ".."] and pc.DOTS_PER_INCH == 12
-    pair = pc.probability_maps({"a": probability, "b": probability}, valid, grid, thresholds=0.45).axes[0]
-    assert [c.get_hatch() for c in pair.collections if isinstance(c, PolyCollection) and c.get_hatch()] == ["..", ".."]
-    assert all(np.all(np.asarray(c.get_facecolor())[..., 3] == 0) for c in hatched)
+def test_conservative_circles_leave_the_grey_of_p_valid_to_read_and_show_on_every_grey():
+    """Review r18b: where the `paper` model rejects most of the free space, a hatch of dots over it hid the grey the
+    text asks the reader to read. Marked with sparse circles, a map whose every cell is a conservative mistake keeps
+    most of its area bare; each circle is ringed ink, then white (on any grey one of the two stands 3:1 apart), and the
+    threshold's dotted contour bounds the region the circles mark."""
+    fine = slices.slice_grid(robots.point_robot(), n=100)
+    valid = np.ones(fine.shape, dtype=bool)
+    probability = np.tile(np.linspace(0.0, 0.4, 100)[:, None], (1, 100))  # below the threshold everywhere: all rejected
+    probability[-10:] = 0.9  # but a band on the right, kept: the threshold's contour runs between
+    fig = pc.probability_map(probability, valid, fine, threshold=0.5)
+    ax = fig.axes[0]
+    (circles,) = cell_marks.cell_marks(ax)[:1]
+    assert circles.get_label() == "valid rejected" and circles.get_paths()[0] is not None
+    box = ax.get_window_extent()  # pixels
+    outer = np.sqrt(circles.get_sizes()[0]) + 2 * (pc.MARK_RING + 3.2) / 2  # points: the circle and its rings
+    covered = len(circles.get_offsets()) * np.pi / 4 * (outer * fig.dpi / 72) ** 2
+    assert covered < 0.25 * box.width * box.height  # three quarters of the map's grey, bare
+    rings = [e._gc["foreground"] for e in circles.get_path_effects() if "foreground" in getattr(e, "_gc", {})]
+    assert [to_hex(r) for r in rings] == [COLORS["free"], COLORS["ink"]]  # the white ring outside, then the ink one
     for level in np.linspace(0, 1, 101):  # every grey of the map
         grey = to_hex((level, level, level))
         assert max(contrast("ink", grey), contrast("free", grey)) >= 3.0
+    (cut,) = [c for c in ax.collections if isinstance(c, ContourSet) and c.get_linestyle()[0][1]]  # the dotted one
+    x = np.concatenate([p.vertices for p in cut.get_paths()])[:, 0]
+    assert np.allclose(x, x.mean(), atol=fine.axes[0][1] - fine.axes[0][0])  # between the rejected and the kept band
 
 
 def test_confusion_bars_heights_are_the_counts_and_rates():

@@ -194,6 +194,7 @@ def test_planning_with_prediction_follows_the_presets_edge_rule(preset, screened
         ("paper", None, "paper", exact_checker),
         ("strong", None, "best", None),
         ("strong", "paper-fcl", "paper-fcl", FCLChecker),
+        ("strong", "paper-fcl-alike", "paper-fcl-alike", FCLChecker),
         ("paper", "best", "best", None),
     ],
 )
@@ -205,7 +206,9 @@ def test_table_3s_baseline_is_the_recipes_planner_unless_chosen(preset, chosen, 
     assert ("baseline" in modes) == (exact is not None)
     if exact is not None:
         assert modes["baseline"].exact is exact and modes["baseline"].planner.name == "paper"
-    with pytest.raises(ValueError, match="unknown baseline 'eager'; choose one of best, paper, paper-fcl"):
+    # prediction's own exact checks: python-fcl only where the baseline asks for one checker on both sides
+    assert modes["with"].exact is (FCLChecker if baseline == "paper-fcl-alike" else exact_checker)
+    with pytest.raises(ValueError, match="unknown baseline 'eager'; choose one of best, paper, paper-fcl,"):
         RunConfig.create("2ds", preset, baseline="eager")
 
 
@@ -253,7 +256,13 @@ def test_each_querys_own_ratio_and_algorithm_1_timed_twice():
     }
     run = {"scenario": "3dc7", "baseline": "paper", "planner": "paper", "planning": {"BS": row}}
     assert tables.per_query(row) == "1.00 (1.00–1.25)"  # ratios 2, 1, 1, 1
-    assert tables.per_query_ratios([run])[-1] == "| 3dc7 | 1.00 (1.00–1.25) |"
+    lines = tables.per_query_ratios([run])
+    assert lines[lines.index("## Time with prediction / Table 3's baseline, each query's own ratio") - 2] == (
+        "| 3dc7 | 1.00 (1.00–1.25) |"
+    )
+    assert lines[-1] == "| 3dc7 | 1.00 (0.88–1.25) |"  # against the baseline: ratios 2, 1, 1, 0.5
+    best = dict(run, baseline="best", planning={"BS": {m: row[m] for m in ("without", "with")}})
+    assert tables.per_query_ratios([best])[-1] == "| 3dc7 | 1.00 (1.00–1.25) |"  # no baseline planned: one table
     assert tables.timed_twice([run])[-1] == "| 3dc7 | BS | 1.53 | 1.00 | 1.00 (1.00–1.25) |"  # means 5.75 / 3.75
     assert tables.timed_twice([dict(run, planner=None)]) == []  # "without" is the lazy PRM: nothing timed twice
 

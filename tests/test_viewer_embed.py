@@ -187,9 +187,16 @@ def test_a_snapshot_looks_at_the_robot_from_where_no_sample_mark_or_block_hides_
     radius = np.max(np.ptp(v.robot.link_aabbs(v.q[None])[0].reshape(-1, 3), axis=0)) / 2  # the chain's half size
     default = {"look_at": rest_look, "position": rest_camera}
     assert marks_hiding_the_robot(default, radius, points, sizes)[-3:].all()  # they would hide it
-    camera = cameras(v.html())
+    document = v.html()
+    camera = cameras(document)
     np.testing.assert_allclose(camera["look_at"], rest_look)  # still the robot's middle
     assert not marks_hiding_the_robot(camera, radius, points, sizes).any()
+    record, buffers = recording(document)  # and none of the marks the page draws, at the size it draws them
+    for _, message in record["messages"]:
+        if message["type"] == "PointCloudMessage" and message["name"].startswith("/samples/"):
+            props = message["props"]
+            drawn = np.frombuffer(buffers[props["points"]["__binary_index"]], props["points"]["dtype"]).reshape(-1, 3)
+            assert not marks_hiding_the_robot(camera, radius, drawn.astype(float), props["point_size"]).any()
     sight = camera["position"] + np.linspace(0, 1, 50)[:, None] * (camera["look_at"] - camera["position"])
     lo, hi = v.workspace.boxes[:, 0], v.workspace.boxes[:, 1]  # (K, 3) each
     near_side = np.linalg.norm(sight - camera["look_at"], axis=1) > radius
@@ -275,10 +282,12 @@ def test_far_marks_on_a_page_are_wide_enough_to_tell_their_shapes_apart(chain9):
     forward = (camera["look_at"] - camera["position"]) / np.linalg.norm(camera["look_at"] - camera["position"])
     px = lambda size, depth: 440 * size / (depth * np.tan(np.deg2rad(75.0) / 2))  # (n,) pixels of a 440 px view
     seen: dict[str, list[np.ndarray]] = {kind: [] for kind in KINDS}
+    drawn = 0  # marks on the page, before the camera or not
     for _, message in record["messages"]:
         if message["type"] == "PointCloudMessage" and message["name"].startswith("/samples/"):
             props = message["props"]
             points = np.frombuffer(buffers[props["points"]["__binary_index"]], props["points"]["dtype"])
+            drawn += 0 if message["name"].startswith("/samples/model_wrong") else len(points) // 3
             depth = (points.reshape(-1, 3).astype(float) - camera["position"]) @ forward  # (n,)
             depth = depth[depth > 0.1]  # before the camera
             kind = next(kind for kind in KINDS if message["name"].startswith(f"/samples/{kind}"))
@@ -289,7 +298,8 @@ def test_far_marks_on_a_page_are_wide_enough_to_tell_their_shapes_apart(chain9):
             seen[kind].append(px(props["point_size"], depth))
     widths = {kind: np.concatenate(found) for kind, found in seen.items() if found}
     points, kinds = chain9.sample_points
-    assert sum(len(w) for w in widths.values()) >= 0.8 * len(points)  # most marks are before the camera
+    assert 0.9 * len(points) <= drawn < len(points)  # a few marks, those over the robot, are left out
+    assert sum(len(w) for w in widths.values()) >= 0.75 * drawn  # most marks are before the camera (389 of 488)
     assert widths["valid"].min() >= 8 and widths["in_collision"].min() >= 1.6 * 8, {
         k: w.min() for k, w in widths.items()
     }
@@ -422,6 +432,8 @@ def test_an_animation_opens_on_its_still_of_the_path_and_the_robot_at_its_start_
     document = page_of(planned.animation_iframe(300, frames=3, seconds=1.0))
     still = found(r'(<div id="toolkit-still"[\s\S]*?</div>)', document)
     assert 'id="toolkit-still" hidden' not in still and 'id="toolkit-play" type="button"' in still
+    note = html.unescape(found(r'id="toolkit-still-note"[^>]*>([^<]*)<', still))  # r18c took it for the animation
+    assert note.startswith("A still picture, not the animation") and "Press play in 3D to watch the robot move" in note
     alt = html.unescape(found(r'alt="([^"]*)"', still))
     assert "the path of the robot's base" in alt
     assert re.search(r"close up among the blocks near it: start, valid; middle, valid; goal, valid\.$", alt)

@@ -87,7 +87,11 @@ BASELINES = {  # what "without prediction" is in a reproduction's Table 3 (RunCo
     "exact checker (`exact_checker`: compiled)",
     "paper-fcl": "the paper's Algorithm 1 with the python-fcl checker, a checker called from Python (the paper names "
     "none; with prediction, exact checks still use the fastest checker)",
+    "paper-fcl-alike": "the paper's Algorithm 1 with the python-fcl checker, and prediction's exact checks with "
+    "python-fcl too: one slow exact checker on both sides, as the paper's may have been (it names none)",
 }
+FCL_BASELINES = ("paper-fcl", "paper-fcl-alike")  # Table 3's baseline checks with python-fcl
+FCL_ALIKE = "paper-fcl-alike"  # ... and so do prediction's exact checks (edges, paths)
 
 
 def default_baseline(preset: Preset) -> str:

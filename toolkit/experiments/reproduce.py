@@ -40,7 +40,7 @@ from tqdm.auto import tqdm
 
 from toolkit import plots
 from toolkit.experiments import bench, pipeline, queries, tables
-from toolkit.experiments.config import RunConfig
+from toolkit.experiments.config import FCL_ALIKE, FCL_BASELINES, RunConfig
 from toolkit.experiments.problems import make_planner
 from toolkit.experiments.stages import Stages, check_out
 from toolkit.experiments.tables import BASELINE
@@ -168,17 +168,21 @@ def planning_modes(config: RunConfig, models: training.TrainedModels) -> dict[st
     lazy PRM with the default exact checker); ``with``, the planner paired with the run's recipe
     (:mod:`toolkit.experiments.planners`) with the learned checker deciding samples, on ``config.device``; and,
     when Table 3's baseline (``config.baseline``) is the paper's, ``baseline``: Algorithm 1 without prediction,
-    with the default exact checker (``paper``) or python-fcl's (``paper-fcl``). A run that names its planner
+    with the default exact checker (``paper``) or python-fcl's (``paper-fcl``; ``paper-fcl-alike``: ``with`` checks its
+    edges and paths with python-fcl too, so only prediction differs between them). A run that names its planner
     (``config.planner``, e.g. ``batched``) plans ``without`` and ``with`` with it alike. Each mode names its
     planner."""
     scenario, settings, named = config.scenario, config.planner_settings(), config.planner
     learned = partial(LearnedChecker, models=models, device=config.device)
+    with_exact = FCLChecker if config.baseline == FCL_ALIKE else exact_checker
     modes = {
         "without": queries.Mode(planner=make_planner(scenario, named or prm.DEFAULT, **settings)),
-        "with": queries.Mode(learned, planner=make_planner(scenario, named, preset=config.preset, **settings)),
+        "with": queries.Mode(
+            learned, exact=with_exact, planner=make_planner(scenario, named, preset=config.preset, **settings)
+        ),
     }
     if config.baseline != "best":
-        exact = FCLChecker if config.baseline == "paper-fcl" else exact_checker
+        exact = FCLChecker if config.baseline in FCL_BASELINES else exact_checker
         modes[BASELINE] = queries.Mode(exact=exact, planner=make_planner(scenario, "paper", **settings))
     return modes
 

@@ -235,8 +235,18 @@ def per_query_ratios(runs: list[dict]) -> list[str]:
     samplers = samplers_of(runs)
     rows = [[r["scenario"]] + [per_query(r["planning"][s]) for s in samplers] for r in runs]
     note = "*Each query's own ratio*: total time with / without prediction, its median over the queries (middle half)."
-    return ["## Time with / without prediction, each query's own ratio", "", note, ""] + table(
+    lines = ["## Time with / without prediction, each query's own ratio", "", note, ""] + table(
         ["", *(f"Total {s}" for s in samplers)], rows
+    )
+    against = [r for r in runs if all(BASELINE in r["planning"][s] for s in samplers)]
+    if not against:
+        return lines
+    rows = [[r["scenario"]] + [per_query(r["planning"][s], against=BASELINE) for s in samplers] for r in against]
+    note = "*Against Table 3's baseline*: total time with prediction / Table 3's without, each query's own ratio."
+    return (
+        lines
+        + ["", "## Time with prediction / Table 3's baseline, each query's own ratio", "", note, ""]
+        + table(["", *(f"Total {s}" for s in samplers)], rows)
     )
 
 

@@ -28,7 +28,10 @@ this hot a view costs more than the tests).
 
 The robot and the workspace arrive as arrays, in one object (:class:`Arrays`, from the arrays
 :class:`toolkit.geometry.compiled.CompiledChecker` builds), never as constants, so one compiled version serves
-every robot and workspace; ``cache=True`` keeps it on disk (see :mod:`toolkit.geometry.kernels`).
+every robot and workspace; ``cache=True`` keeps it on disk (see :mod:`toolkit.geometry.kernels`). numba dates that
+copy by this file alone: a change to what the loop inlines from another module (:mod:`~toolkit.geometry.frame_kernels`,
+:mod:`~toolkit.geometry.kernels`, :mod:`~toolkit.geometry.trig`) needs a change here too, or a cached copy runs the
+old code.
 """
 
 from __future__ import annotations

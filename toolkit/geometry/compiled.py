@@ -30,6 +30,7 @@ FAR_CELLS = 128  # or a 128th of the region's longest axis, if wider
 NDARRAY = np.ndarray  # what a planner passes (one name to look up, not two, in a call's few tests)
 FLOAT64 = np.dtype(np.float64)  # the dtype of configurations the compiled loop takes as they are
 BOOL = np.dtype(np.bool_)  # its answers'
+EMPTY = np.empty  # one name to look up in a call, not two
 
 
 ENTRY_POINTS: dict[tuple, Any] = {}  # compiled versions of the kernels, by name and arguments' layout (entry_point)
@@ -101,7 +102,8 @@ class CompiledChecker(BoxWorldChecker):
         # validity lists per cell the boxes within a link ball's radius of it: the only ones a link centred there meets
         reach = float(np.max(np.linalg.norm(robot.half_extents, axis=1))) * (1 + 1e-9)
         self._world = world_arrays(self.grid, grow=reach)._replace(far=far_grid(workspace, robot))
-        self._validity = self._clearance = None  # the compiled kernels for these arrays, once known (entry_point)
+        self._validity: Any = not_compiled  # the compiled kernel for these arrays, once known (entry_point)
+        self._clearance: Any = None  # likewise
         self._arrays: Any = None  # the robot's and the world's arrays in one object (block_kernels.Arrays), once made
         self._grown: dict[float, World] = {}  # clearances: the world with boxes grown by cap, by cap
 
@@ -110,16 +112,16 @@ class CompiledChecker(BoxWorldChecker):
         straight to the compiled loop, which also checks its columns and that every number is finite (where not, the
         reference's path gives the same error as ever): a call of 32 configurations then costs little more than
         checking them. Each test here costs about as much as checking a configuration, so there are few."""
-        if type(Q) is NDARRAY and Q.dtype is FLOAT64 and Q.ndim == 2 and Q.flags.carray and self._validity:
-            valid = np.empty(len(Q), BOOL)
-            if self._validity(Q, self._arrays, valid):
-                self.n_checked += len(Q)
+        if type(Q) is NDARRAY and Q.dtype is FLOAT64 and Q.ndim == 2 and Q.flags.carray:
+            valid = EMPTY(len(Q), BOOL)
+            if self._validity(Q, self._arrays, valid):  # False until compiled: the path below compiles it
+                self.n_checked += len(valid)
                 return valid
         return super().are_valid(Q)
 
     def validity(self, Q: np.ndarray) -> np.ndarray:
         Q, valid = np.ascontiguousarray(Q, dtype=np.float64), np.empty(len(Q), dtype=bool)
-        if self._validity is not None and Q.flags.writeable:  # the compiled version itself: no dispatch, no import
+        if self._validity is not not_compiled and Q.flags.writeable:  # the compiled version: no dispatch, no import
             self._validity(Q, self._arrays, valid)
             return valid
         from toolkit.geometry import block_kernels  # numba loads (or compiles) on first use, not on import
@@ -133,7 +135,7 @@ class CompiledChecker(BoxWorldChecker):
 
     def __getstate__(self) -> dict:
         # a compiled function does not pickle; the copy looks it up again
-        return self.__dict__ | {"_validity": None, "_clearance": None, "_arrays": None}
+        return self.__dict__ | {"_validity": not_compiled, "_clearance": None, "_arrays": None}
 
     def clearance_bounds(self, Q: np.ndarray, cap: float) -> np.ndarray:
         """The bound of :meth:`BoxWorldChecker.clearance_bounds`, compiled."""
@@ -150,6 +152,11 @@ class CompiledChecker(BoxWorldChecker):
             if Q.flags.writeable:
                 self._clearance = entry_point(kernels.clearance_bounds, args)
         return clearance
+
+
+def not_compiled(Q, arrays, valid) -> bool:
+    """What a checker calls before its kernel is compiled: False, "not checked", so it takes the path that compiles."""
+    return False
 
 
 def entry_point(kernel, args: tuple):

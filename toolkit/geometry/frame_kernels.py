@@ -130,8 +130,8 @@ def block_frames(Q, first, block, robot, trig, position, centers, rotations):
     however short it is.
 
     A loop costs a few nanoseconds to enter whatever its length, and a planner's calls are short, so each link's
-    frame is turned from the last link's straight into its own (no copy), and the arrays are indexed whole rather
-    than sliced into a view per loop."""
+    frame is turned from the last link's straight into its own (no copy), a link's centre and the shift to the next
+    joint are one loop, and the arrays are indexed whole rather than sliced into a view per loop."""
     start, count = first_angle(robot), (Q.shape[1] - first_angle(robot)) * block
     for k in range(Q.shape[1] - start):
         for n in range(block):
@@ -157,19 +157,23 @@ def block_frames(Q, first, block, robot, trig, position, centers, rotations):
         _turn_block(rotations, identity, 0, 2, trig, 0, block)
         _turn_block(rotations, 0, 0, 1, trig, block, block)
         _turn_block(rotations, 0, 0, 0, trig, 2 * block, block)
-    origins, offsets = robot.joint_origins, robot.link_offsets
-    for link in range(len(centers)):
+    origins, offsets, n_links = robot.joint_origins, robot.link_offsets, len(centers)
+    for link in range(n_links):
         if link > 0:  # joint link - 1 carries this link
             joint = link - 1
-            o0, o1, o2 = origins[joint, 0], origins[joint, 1], origins[joint, 2]
-            for i in range(3):
-                for n in range(block):
-                    r0, r1, r2 = rotations[joint, i, 0, n], rotations[joint, i, 1, n], rotations[joint, i, 2, n]
-                    position[i, n] += r0 * o0 + r1 * o1 + r2 * o2
             angle = base_angles(robot) + joint
             _turn_block(rotations, joint, link, robot.joint_axes[joint], trig, angle * block, block)
         f0, f1, f2 = offsets[link, 0], offsets[link, 1], offsets[link, 2]
-        for i in range(3):
+        o0 = o1 = o2 = 0.0  # the origin of joint ``link`` (which carries the next link) in this link's frame
+        if link + 1 < n_links:
+            o0, o1, o2 = origins[link, 0], origins[link, 1], origins[link, 2]
+        for i in range(3):  # the box's centre, then the frame moved to the next joint: one loop, not two
             for n in range(block):
-                r0, r1, r2 = rotations[link, i, 0, n], rotations[link, i, 1, n], rotations[link, i, 2, n]
-                centers[link, i, n] = position[i, n] + r0 * f0 + r1 * f1 + r2 * f2
+                r0, r1, r2, p = (
+                    rotations[link, i, 0, n],
+                    rotations[link, i, 1, n],
+                    rotations[link, i, 2, n],
+                    position[i, n],
+                )
+                centers[link, i, n] = p + r0 * f0 + r1 * f1 + r2 * f2
+                position[i, n] = p + (r0 * o0 + r1 * o1 + r2 * o2)

@@ -1,14 +1,16 @@
 """Marks on a map's cells that one can see however fine the map: notebook 03's mistakes.
 
 A map of a 2-DoF slice (:class:`~toolkit.plots.slices.CSpaceSlice`) marks some of its cells (the classifier's
-dangerous mistakes on a P(valid) map, both kinds of mistake on a decision map, :mod:`toolkit.plots.classifier`).
-On a coarse map a mark covers most of its cell; on a fine one (chapter 03 at full size: 100 cells over 3 inches,
-about 2 points a cell) a mark that size is a speck, and a mark made larger would cover its neighbours' marks.
+mistakes on a P(valid) map and on a decision map, :mod:`toolkit.plots.classifier`). On a coarse map a mark covers
+most of its cell; on a fine one (chapter 03 at full size: 100 cells over 4.4 inches, about 3 points a cell) a mark
+that size is a speck, and a mark made larger would cover its neighbours' marks.
 :func:`draw_cell_marks` puts a mark on each marked cell, over the map and under its outlines (or over them: the
 classifier's maps draw their mistakes over the boundary, which would cut a mark beside it in two);
-:func:`fit_cell_marks`, once the figure is laid out, sizes each mark to :data:`MARK_SHARE` of its cell, and where
-that is under :data:`MIN_MARK` points, puts one mark on each block of ``k x k`` cells holding a marked cell, at their
-middle, ``k`` the fewest cells that make it that large.
+:func:`fit_cell_marks`, once the figure is laid out, puts one mark on each block of ``k x k`` cells holding a marked
+cell, at their middle: ``k`` the fewest cells that make a mark :data:`MIN_MARK` points wide at :data:`MARK_SHARE` of
+its block, and that keep two marks' centres at least the ``pitch`` the marks were drawn with apart (review r18b: on
+chapter 03's `paper` map a pile of squares a block apart merged into one shape that could not be counted); a mark
+drawn with a pitch stays near its block's middle, so that two in neighbouring blocks keep :data:`CLEAR` between them.
 """
 
 from __future__ import annotations
@@ -17,59 +19,59 @@ import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.collections import PathCollection
 from matplotlib.figure import Figure
-from scipy import ndimage
 
 from toolkit.plots.slices import CSpaceSlice
 
 MIN_MARK = 5.0  # points: the least side of a mark, however fine the map
+MAX_MARK = 7.0  # points: the largest, however coarse: a mark, not a tile hiding its cell's grey
 MARK_SHARE = 0.7  # of its cell (or block of cells) a mark covers: the map beneath shows between two marks
-GID = "cell marks"  # how fit_cell_marks finds the marks draw_cell_marks drew
+CLEAR = 6.0  # points between two marks' sides, at least, where drawn with a pitch: their rings (4.2) and a gap
+GID = "cell marks"  # how fit_cell_marks finds the marks draw_cell_marks drew ("cell marks:PITCH")
 
 
-def draw_cell_marks(ax, grid: CSpaceSlice, mask, **style) -> PathCollection:
+def draw_cell_marks(ax, grid: CSpaceSlice, mask, *, pitch: float = 0.0, **style) -> PathCollection:
     """A mark (``style``: scatter's options) at the centre of each cell of ``grid`` where ``mask (nx, ny)`` holds,
     over the map, under the lines on it (a boundary stays whole) unless ``style`` gives a ``zorder`` above them;
-    :func:`fit_cell_marks` sizes them once laid out."""
+    :func:`fit_cell_marks` sizes them once laid out, no two closer than ``pitch`` points (0: a block's width)."""
     i, j = np.nonzero(mask)
-    return ax.scatter(grid.axes[0][i], grid.axes[1][j], s=MIN_MARK**2, gid=GID, **style)
+    return ax.scatter(grid.axes[0][i], grid.axes[1][j], s=MIN_MARK**2, gid=f"{GID}:{pitch:g}", **style)
 
 
-def fit_cell_marks(fig: Figure, grid: CSpaceSlice) -> int:
+def cell_marks(ax: Axes) -> list[PathCollection]:
+    """The marks :func:`draw_cell_marks` drew on ``ax``."""
+    return [c for c in ax.collections if isinstance(c, PathCollection) and str(c.get_gid()).startswith(GID)]
+
+
+def fit_cell_marks(fig: Figure, grid: CSpaceSlice) -> dict[str, int]:
     """Size the marks :func:`draw_cell_marks` drew on ``fig``'s maps of ``grid`` to their cells as laid out,
-    merging them into blocks of ``k x k`` cells where a cell is too small; returns the largest ``k`` (1: a mark a
-    cell), for the figure's description to say."""
+    merging them into blocks of ``k x k`` cells where a cell is too small or the marks' pitch too wide; returns, per
+    label of marks, the largest ``k`` (1: a mark a cell), for the figure's description and legend to say."""
     fig.draw_without_rendering()  # lays the figure out: the axes take their final sizes
     first = np.array([axis[0] for axis in grid.axes])  # (2,) the first cell's centre
     cell = np.array([abs(axis[1] - axis[0]) if len(axis) > 1 else 1.0 for axis in grid.axes])  # (2,) data units
-    largest = 1
+    blocks: dict[str, int] = {}
     for ax in fig.axes:
-        marks = [c for c in ax.collections if isinstance(c, PathCollection) and c.get_gid() == GID]
-        if not marks:
-            continue
-        side = cell_points(ax, grid)
-        k = max(1, int(np.ceil(MIN_MARK / (MARK_SHARE * side))))  # cells a block, each way
-        largest = max(largest, k)
-        for mark in marks:
-            mark.set_sizes([(MARK_SHARE * k * side) ** 2])
+        side = cell_points(ax, grid) if cell_marks(ax) else 0.0
+        for mark in cell_marks(ax):
+            pitch = float(str(mark.get_gid()).partition(":")[2] or 0)
+            k = max(1, int(np.ceil(MIN_MARK / (MARK_SHARE * side))), int(np.ceil(pitch / side - 1e-9)))
+            label = str(mark.get_label())
+            blocks[label] = max(blocks.get(label, 1), k)
+            size = min(MARK_SHARE * k * side, MAX_MARK)
+            mark.set_sizes([size**2])
             offsets = np.asarray(mark.get_offsets())  # (n, 2) the marked cells' centres
             if k == 1 or not len(offsets):
                 continue  # one mark a cell
             cells = np.rint((offsets - first) / cell).astype(int)  # (n, 2) cell indices
-            blocks, block_of = np.unique(cells // k, axis=0, return_inverse=True)  # (m, 2), (n,)
-            centres = np.array([cells[block_of.ravel() == b].mean(axis=0) for b in range(len(blocks))])  # (m, 2)
-            mark.set_offsets(first + centres * cell)  # each at its marked cells' middle
-    return largest
-
-
-def narrow_cells(mask, width: int) -> np.ndarray:
-    """The cells of ``mask (nx, ny)`` in parts of it narrower than ``width`` cells each way (what an opening by a
-    ``width x width`` square removes): a strip a hatch's dots, spaced wider than it, may miss (review r16b: a one-cell
-    strip of conservative mistakes on chapter 03's strong map showed no dot). Same shape, bool."""
-    mask = np.asarray(mask, dtype=bool)
-    if width <= 1:
-        return np.zeros_like(mask)
-    wide = ndimage.binary_opening(mask, structure=np.ones((width, width), dtype=bool), border_value=0)
-    return mask & ~wide
+            block, block_of = np.unique(cells // k, axis=0, return_inverse=True)  # (m, 2), (n,) the block of each
+            block_of = block_of.ravel()
+            means = np.array([cells[block_of == b].mean(axis=0) for b in range(len(block))])  # (m, 2)
+            middle = block * k + (k - 1) / 2  # (m, 2) each block's middle cell
+            spread = max(0.0, (k * side - size - CLEAR) / (2 * side)) if pitch else k  # cells off the middle, at most
+            centres = np.clip(means, middle - spread, middle + spread)  # at its cells' middle, a mark's width apart
+            centres = np.clip(centres, 0, np.array(grid.shape) - 1)  # on the map: a last block may stick out of it
+            mark.set_offsets(first + centres * cell)
+    return blocks
 
 
 def cell_points(ax: Axes, grid: CSpaceSlice) -> float:
@@ -78,13 +80,3 @@ def cell_points(ax: Axes, grid: CSpaceSlice) -> float:
     per_unit = np.array([ax.bbox.width / abs(x1 - x0), ax.bbox.height / abs(y1 - y0)]) * 72 / ax.figure.dpi
     cell = np.array([abs(axis[1] - axis[0]) if len(axis) > 1 else 1.0 for axis in grid.axes])  # (2,) data units
     return float(np.min(cell * per_unit))
-
-
-def draw_narrow_cells(ax, grid: CSpaceSlice, mask, spacing: float, **style) -> int:
-    """Mark (:func:`draw_cell_marks`, ``style``) the cells of ``mask (nx, ny)`` on ``ax``, laid out, that lie in strips
-    narrower than 1.5 times ``spacing`` points, a hatch's distance between two dots: a square that wide always holds
-    one, a narrower strip may hold none. How many cells it marked."""
-    narrow = narrow_cells(mask, int(np.ceil(1.5 * spacing / cell_points(ax, grid))))
-    if narrow.any():
-        draw_cell_marks(ax, grid, narrow, **style)
-    return int(narrow.sum())

@@ -13,8 +13,9 @@ P(valid) >= a threshold. Against the exact checker each answer is one of four ki
 The maps here sweep two degrees of freedom over their bounds (:func:`toolkit.plots.slices.slice_grid`;
 the point robot's whole C-space, or a 2-DoF slice of a 3D robot with the other joints
 fixed), show P(valid) as an image, draw the true C-obstacle boundary over it and mark
-every mistake at its cell: dangerous ones as squares, conservative ones with a dotted hatch and no tint (review r14c:
-a denser one hid P(valid) on the `paper` preset's map), circled where they lie in a strip too narrow for its dots.
+every mistake at its cell: dangerous ones as squares, conservative ones as circles, a mark per block of cells
+holding any where the map is fine, spaced so that the grey between them is P(valid) (review r18b: a hatch of dots
+hid it on the `paper` preset's map) and the squares can be counted; each map's title counts both kinds.
 
 >>> grid = slice_grid(robot, dofs=(0, 1), n=80)  # doctest: +SKIP
 >>> probability = grid.image(checker.probability(grid.configs))  # (80, 80)  # doctest: +SKIP
@@ -28,7 +29,6 @@ from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
-from matplotlib.collections import PolyCollection
 from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
@@ -38,14 +38,18 @@ from toolkit.learning import metrics
 from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
-from toolkit.plots.cell_marks import draw_cell_marks, draw_narrow_cells, fit_cell_marks
+from toolkit.plots.cell_marks import draw_cell_marks, fit_cell_marks
 from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import dof_label
 from toolkit.plots.slices import CSpaceSlice
 
 DANGEROUS, CONSERVATIVE, BOUNDARY = COLORS["dangerous"], COLORS["conservative"], COLORS["boundary"]
 ANSWER_COLORS = (COLORS["free"], CONSERVATIVE, COLORS["occupied"], DANGEROUS)  # free white, obstacles dark
-MISTAKE_MARKERS = {1: "o", 3: "s"}  # conservative dots, dangerous squares: the mistakes told without colour
+MISTAKE_MARKERS = {1: "o", 3: "s"}  # conservative circles, dangerous squares: the mistakes told without colour
+CUT = 2.5  # points: the path map's dotted line at the model's threshold, bold enough to follow across the map (r15c)
+CUT_MAP = 1.5  # points: the same line on a map of mistakes, whose marks it must not bury
+PITCH = {1: 26.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
+# them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
 
 
 def probability_map(
@@ -61,29 +65,35 @@ def probability_maps(
 ) -> Figure:
     """Several models' P(valid) maps, same grid and truth (e.g. the ``paper`` and ``strong`` presets), one above the
     other, each as wide as the page with a colour bar of its own, its threshold a line across it (review r16b: side by
-    side, the one bar read as the right map's, and a one-cell strip of mistakes showed no dot)."""
+    side, the one bar read as the right map's), its mistakes counted in its title."""
     cut = {name: thresholds[name] if isinstance(thresholds, Mapping) else thresholds for name in probabilities}
-    fig = Figure(figsize=(PAGE_WIDTH, 4.7 * len(cut) + 0.9), layout="constrained")  # r15c: at 230 px, a strip a pixel
+    fig = Figure(figsize=(PAGE_WIDTH, 4.8 * len(cut) + 1.0), layout="constrained")  # r15c: at 230 px, a strip a pixel
     axes = fig.subplots(len(cut), 1, squeeze=False)[:, 0]
     said, parts = [], []
     for ax, (name, probability), t in zip(axes, probabilities.items(), cut.values()):
         image = _draw_probability(ax, probability, valid, grid, t)
         bar = fig.colorbar(image, ax=ax, label=f"P(valid); the line: threshold {t:.2f}", shrink=0.9)
         bar.ax.axhline(t, color=COLORS["ink"], linewidth=2.5, path_effects=halo(2.5, ("free",)))
-        ax.set_title(f"{name}: P(valid), threshold {t:.2f}", fontsize=10)
+        counts = confusion_counts(np.asarray(probability) >= t, valid)
+        ax.set_title(f"{name}: P(valid), threshold {t:.2f}\n{_mistakes_counted(counts)}", fontsize=10)
         said.append(f"{name}, threshold {t:.2f}: " + answers.answers_in_words(np.asarray(probability) >= t, valid))
         parts.append(answers.map_in_regions(name, said[-1], probability, valid, grid, t))
-    _legend(fig, _mistake_handles())
-    fig.draw_without_rendering()  # laid out: a cell's size on the page, for the strips the dots would miss
-    spacing, style = 72 / DOTS_PER_INCH, dict(label=f"{ANSWERS[1]}, narrow", zorder=3, **_mistake_mark(1))
-    rejected = [(np.asarray(p) < cut[name]) & np.asarray(valid) for name, p in probabilities.items()]  # (nx, ny) each
-    narrow = [draw_narrow_cells(ax, grid, mask, spacing, **style) for ax, mask in zip(axes, rejected)]
-    k = fit_cell_marks(fig, grid)
+    blocks = fit_cell_marks(fig, grid)  # laid out: each kind's marks one per k x k cells holding any
+    k = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
+    _legend(fig, _mistake_handles(k))
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
-    text += "configurations; grey, 0 black to 1 white) with the true C-obstacle boundary outlined, dangerous "
-    text += f"mistakes as squares{f' (one per {k} x {k} cells holding any)' if k > 1 else ''} and conservative ones "
-    text += "hatched with dots" + (", circled in strips too narrow for the dots. " if any(narrow) else ". ")
-    return describe(fig, text + "; ".join(said) + ".", parts)
+    text += "configurations; grey, 0 black to 1 white) with the true C-obstacle boundary outlined, the threshold's "
+    text += f"contour dotted, dangerous mistakes as squares{_per_block(k[3])} and conservative ones as circles"
+    return describe(fig, text + f"{_per_block(k[1])}. " + "; ".join(said) + ".", parts)
+
+
+def _mistakes_counted(counts: Mapping[str, int]) -> str:
+    """A map's title line: how many cells of each kind of mistake, by their marks."""
+    return f"{counts[ANSWERS[3]]:,} dangerous cells (squares), {counts[ANSWERS[1]]:,} conservative (circles)"
+
+
+def _per_block(k: int) -> str:
+    return f" (one per {k} x {k} cells holding any)" if k > 1 else ""
 
 
 def path_map(
@@ -100,17 +110,13 @@ def path_map(
     nodes, nodes_valid, path = np.asarray(nodes), np.asarray(nodes_valid, dtype=bool), np.asarray(path)
     fig = Figure(figsize=(6, 6.2), layout="constrained")
     ax = fig.subplots()
-    image = _draw_probability(ax, probability, valid, grid, threshold, mistakes=False)
+    image = _draw_probability(ax, probability, valid, grid, threshold, mistakes=False, cut=CUT)
     fig.colorbar(image, ax=ax, label="P(valid)", shrink=0.8)
-    p = _on_grid(probability, grid, "probability")
-    if p.min() < threshold <= p.max():
-        cut_line = ax.contour(*grid.axes, p.T, levels=[threshold], colors=COLORS["ink"], linestyles=":", linewidths=CUT)
-        cut_line.set_path_effects(halo(CUT, ("free",)))  # a white ring: it shows on the dark side too
     cut = Line2D([], [], color=COLORS["ink"], linestyle=":", linewidth=CUT, label=f"P(valid) = {threshold:.2f}")
     x, y = grid.dofs
     _draw_roadmap(ax, nodes, nodes_valid, path, (x, y))
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=10, wrap=True)
-    _legend(fig, [cut] + ax.get_lines())
+    _legend(fig, [(line, line.get_label()) for line in [cut, *ax.get_lines()]])
     fit_cell_marks(fig, grid)
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
     text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (crosses), and the"
@@ -185,7 +191,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
         for code, cell in enumerate(cells)
     ]
     boundary = Line2D([], [], color=BOUNDARY, path_effects=halo(1.2))
-    k = fit_cell_marks(fig, grid)  # the mistakes' marks as large as one sees, over their cells and the boundary
+    k = max(fit_cell_marks(fig, grid).values(), default=1)  # the mistakes' marks as large as one sees, over all
     block = f" (one per {k} x {k} cells holding any)" if k > 1 else ""
     if k > 1:  # the marks are fewer than the mistakes the bars count: the map says why (as tall a title: same layout)
         ax_map.set_title(
@@ -194,14 +200,14 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     labels = [
         "true C-obstacle boundary",
         ANSWERS[0],
-        f"{ANSWERS[1]} (dots)",
+        f"{ANSWERS[1]} (circles)",
         ANSWERS[2],
         "invalid kept (dangerous, squares)",
     ]
     fig.legend([boundary, *handles], labels, loc="outside lower center", ncols=3, fontsize=8, frameon=False)
     text = f"{title + ': ' if title else ''}the model's decision at threshold {threshold:.2f} over {grid.names[0]} and "
     text += f"{grid.names[1]}, each cell by its kind of answer, the mistakes marked over their cells and the boundary"
-    text += f"{block}: dangerous ones with squares, conservative ones with dots; their counts, and the ROC curve. "
+    text += f"{block}: dangerous ones with squares, conservative ones with circles; their counts, and the ROC curve. "
     text += f"{answers.answers_in_words(predicted, valid)}; {roc}."
     cut, fpr, tpr = roc_points(probability, valid, np.linspace(0.0, 1.0, 11))  # (11,) each
     curve = Part(
@@ -219,10 +225,11 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
 # -- the panels ----------------------------------------------------------------
 
 
-def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float, *, mistakes=True):
-    """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary and, with ``mistakes``, dangerous cells as squares
-    and conservative cells hatched with dots (:func:`_cells`; :data:`DOTS_PER_INCH`, on a map as wide as the page: a
-    strip narrower than their spacing :func:`probability_maps` circles)."""
+def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float, *, mistakes=True, cut=CUT_MAP):
+    """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary, the threshold's contour dotted ``cut`` points
+    wide (under the boundary: where the model is sharp, the boundary covers it) and, with ``mistakes``, dangerous
+    cells as squares and conservative ones as circles, sparse enough that the grey between them is P(valid)
+    (review r18b: a hatch of dots over the `paper` map's rejected free space hid its grey)."""
     probability = _on_grid(probability, grid, "probability")
     image = ax.imshow(
         probability.T,
@@ -234,33 +241,16 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
         aspect="auto",
         interpolation="nearest",
     )
+    if probability.min() < threshold <= probability.max():
+        line = ax.contour(*grid.axes, probability.T, levels=[threshold], colors=COLORS["ink"], linestyles=":")
+        line.set_linewidth(cut)
+        line.set_path_effects(halo(cut, ("free",)))  # a white ring: it shows on the dark side too
     _draw_boundary(ax, valid, grid)
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
-    if mistakes:
-        ax.add_collection(_cells(grid, codes == 1, **UNDER_HATCH))
-        ax.add_collection(_cells(grid, codes == 1, label=ANSWERS[1], **CONSERVATIVE_CELLS))
-        draw_cell_marks(ax, grid, codes == 3, label=ANSWERS[3], zorder=3, **_mistake_mark(3))  # fit_cell_marks sizes
+    if mistakes:  # fit_cell_marks sizes them, no two closer than their pitch
+        draw_cell_marks(ax, grid, codes == 1, label=ANSWERS[1], zorder=3, pitch=PITCH[1], **_mistake_mark(1))
+        draw_cell_marks(ax, grid, codes == 3, label=ANSWERS[3], zorder=3, pitch=PITCH[3], **_mistake_mark(3))
     return image
-
-
-CUT = 2.5  # points: the path map's dotted line at the model's threshold, bold enough to follow across the map
-DOTS_PER_INCH = 12  # the conservative hatch "..": sparse enough that the grey between the dots is P(valid) (r14c)
-CONSERVATIVE_CELLS: dict[str, Any] = dict(  # ink dots, no tint: the grey between them is P(valid)
-    facecolor="none", hatch="..", hatchcolor=COLORS["ink"], edgecolor="none"
-)
-UNDER_HATCH: dict[str, Any] = dict(  # the same dots in white, wider, under the ink ones: they show on the darkest grey
-    facecolor="none", hatch="..", hatchcolor=COLORS["free"], hatch_linewidth=2.0, edgecolor="none"
-)
-
-
-def _cells(grid: CSpaceSlice, mask, **style) -> PolyCollection:
-    """One square per cell of ``grid`` where ``mask (nx, ny)`` holds, drawn as one collection (adjacent cells' hatches
-    join into one pattern)."""
-    i, j = np.nonzero(mask)
-    half = [(axis[1] - axis[0]) / 2 if len(axis) > 1 else 0.5 for axis in grid.axes]
-    corners = np.array([(-1, -1), (1, -1), (1, 1), (-1, 1)]) * half  # (4, 2)
-    centres = np.column_stack([grid.axes[0][i], grid.axes[1][j]])  # (n, 2)
-    return PolyCollection(centres[:, None, :] + corners[None], linewidths=0, **style)  # (n, 4, 2) squares
 
 
 def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid: np.ndarray, path: np.ndarray, dofs: tuple[int, int]) -> None:
@@ -365,25 +355,28 @@ def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
     return values
 
 
-def _mistake_handles() -> list:
-    dangerous: dict[str, Any] = dict(color=DANGEROUS, marker="s", markeredgecolor=COLORS["ink"], linestyle="")
+def _mistake_handles(blocks: Mapping[int, int]) -> list:
+    """The P(valid) maps' legend: the threshold's line, and each mistake's mark, said to be one (``blocks[code]`` 1) or
+    one per ``k x k`` cells holding any (review r18b: the conservative circles along the blocks read as a border)."""
+    cut = Line2D([], [], color=COLORS["ink"], linestyle=":", linewidth=CUT_MAP, path_effects=halo(CUT_MAP, ("free",)))
+    per = {code: f"\none per {k} x {k} cells holding any" if k > 1 else "" for code, k in blocks.items()}
     return [
-        Line2D([], [], label="dangerous: kept, in collision (squares)", **dangerous),
-        Patch(label="conservative: rejected, free (dotted;\nright answers carry no dots)", **CONSERVATIVE_CELLS),
-        Line2D(
-            [],
-            [],
-            linestyle="",
-            label="conservative, in a strip too\nnarrow for dots (circles)",
-            **_mistake_mark(1, legend=True),
-        ),
+        (cut, "P(valid) = threshold (dotted):\nthe lighter side is kept"),
+        (_mistake_line(3), f"dangerous mistake: kept, in\ncollision (squares){per[3]}"),
+        (_mistake_line(1), f"conservative mistake: rejected,\nfree (circles){per[1]}"),
     ]
 
 
+def _mistake_line(code: int) -> Line2D:
+    return Line2D([], [], linestyle="", markersize=7, **_mistake_mark(code, legend=True))
+
+
 def _legend(fig: Figure, handles: list) -> None:
-    handles = [Line2D([], [], color=BOUNDARY, label="true C-obstacle boundary", path_effects=halo(1.2)), *handles]
-    ncols = len(handles) if fig.get_figwidth() >= 9 else 2
-    fig.legend(handles=handles, loc="outside lower center", ncols=ncols, fontsize=9, frameon=False)
+    """The boundary, then ``handles`` (``(handle, label)`` pairs), under the figure."""
+    boundary = Line2D([], [], color=BOUNDARY, path_effects=halo(1.2))
+    pairs = [(boundary, "true C-obstacle boundary"), *handles]
+    ncols = len(pairs) if fig.get_figwidth() >= 9 else 2
+    fig.legend(*zip(*pairs), loc="outside lower center", ncols=ncols, fontsize=9, frameon=False)
 
 
 def _draw_counts(ax, predicted_valid, valid) -> None:

@@ -219,9 +219,10 @@ def path_frame(
         name: _per_frame(values, frames, name)
         for name, values in (("valid", valid), ("clearance", clearance), ("probability", probability))
     }
-    fig = Figure(figsize=(PAGE_WIDTH, 10.4))  # as wide as the page: its text as large as it is drawn
-    # the robot a whole row above the series (review r16c: beside them its panel was 200 px wide)
-    grid = fig.add_gridspec(2, 1, height_ratios=(4.4, 5.0), hspace=0.32, top=0.9, bottom=0.05, left=0.12, right=0.86)
+    fig = Figure(figsize=(PAGE_WIDTH, 11.4))  # as wide as the page: its text as large as it is drawn
+    # the robot a whole row above the series (review r16c: beside them its panel was 200 px wide); the series the
+    # larger share (reader r18c: five panels of 70 px were too small to read at the site's width)
+    grid = fig.add_gridspec(2, 1, height_ratios=(3.9, 6.1), hspace=0.4, top=0.92, bottom=0.05, left=0.12, right=0.86)
     valid_now = None if series["valid"] is None else bool(series["valid"][index])
     _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, valid_now, workspace, margin)
     _draw_series(fig, grid[1], robot, Q, index, series, threshold)
@@ -307,8 +308,8 @@ def _draw_series(
         handles,
         [h.get_label() for h in handles],
         title="each DoF in its bounds: 0 lower, 1 upper",
-        title_fontsize=9,
-        fontsize=9,
+        title_fontsize=10,
+        fontsize=10,
         ncol=min(robot.dof, 4),
         bbox_to_anchor=(0.5, spec.get_position(fig).y1 + 0.005),  # between the robot's panel and the series
         loc="lower center",

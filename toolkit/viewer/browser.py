@@ -58,11 +58,13 @@ def screenshot(
     path: str | Path,
     *,
     size: tuple[int, int] = (1280, 800),
+    scale: float = 1.0,
     ready: Callable[[Path], bool] = shows_obstacles,
     budget_s: float = 300.0,
     every_s: float = 1.0,
 ) -> Path:
-    """Load ``url`` in headless Chromium and save a PNG of ``size`` (width, height) to ``path`` once
+    """Load ``url`` in headless Chromium and save a PNG of ``size`` (width, height; ``scale`` times as many pixels,
+    the page's text as sharp as a high-density screen shows it) to ``path`` once
     ``ready(path)`` holds, photographing the page every ``every_s`` seconds for at most ``budget_s``."""
     chromium = find_chromium()
     if chromium is None:
@@ -88,7 +90,7 @@ def screenshot(
     with sync_playwright() as playwright:
         try:
             browser = playwright.chromium.launch(executable_path=chromium, args=CHROMIUM_ARGS, timeout=left_ms())
-            page = browser.new_page(viewport={"width": size[0], "height": size[1]})
+            page = browser.new_page(viewport={"width": size[0], "height": size[1]}, device_scale_factor=scale)
             page.goto(url, timeout=left_ms())
             # viser's pop-up notices (e.g. "Software WebGL rendering detected" in a headless browser) are about the
             # browser, not the scene: hidden, so that a picture shows what a student's browser shows.

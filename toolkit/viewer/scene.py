@@ -183,7 +183,7 @@ class Viewer:
                     boxes.grown(self._halo),
                     np.repeat(draw.probability_colors([self.probability]), len(boxes), axis=0),
                 )
-                above = 0.5 * framing.robot_size(self.robot)  # close above, in a snapshot's view
+                above = 0.8 * framing.robot_size(self.robot)  # robot sizes above its top: clear of it (0.5 touched)
                 self.nodes["disagreement"].position = boxes.centers.max(axis=0) + np.array([0.0, 0.0, above])
                 self._show_disagreement()
             self._notify("moved")

@@ -19,11 +19,14 @@ from matplotlib.figure import Figure
 
 from toolkit.plots import scenes
 from toolkit.viewer import drawing as draw
-from toolkit.viewer import models
+from toolkit.viewer import framing, models
 from toolkit.viewer.labels import with_still
 from toolkit.viewer.server import srcdoc_iframe
 
-ANIMATION_STILL = "The path, then the robot at its start, middle and goal, close up; a legend under them."
+ANIMATION_STILL = (  # what the still is, and where the moving robot is: a reader took the still for the animation
+    "A still picture, not the animation: the path, then the robot at its start, middle and goal, close up. "
+    "Press play in 3D to watch the robot move along the path (in a browser that draws 3D)."
+)
 
 
 def scene_still(viewer, poses: dict[str, np.ndarray] | None = None) -> Figure:
@@ -51,9 +54,10 @@ def scene_still(viewer, poses: dict[str, np.ndarray] | None = None) -> Figure:
 @contextmanager
 def far_marks_grown(viewer, look_at: np.ndarray, position: np.ndarray) -> Iterator[None]:
     """``viewer``'s sample marks grown for a page whose camera stands at ``position`` looking at ``look_at`` (3,) each
-    (:func:`toolkit.viewer.drawing.far_scale`: far ones told apart by shape; in a crowded view, near ones shrunk)
-    while the block runs, then back as the live view draws them (in workspace units: a camera that moves cannot
-    size them for itself)."""
+    (:func:`toolkit.viewer.drawing.far_scale`: far ones told apart by shape; in a crowded view, near ones shrunk),
+    less those that would stand over the robot on its picture (:func:`toolkit.viewer.framing.marks_over_robot`; the
+    summary still counts them), while the block runs, then back as the live view draws them (in workspace units: a
+    camera that moves cannot size them for itself)."""
     if viewer.sample_points is None or not viewer.visible["samples"]:
         yield
         return
@@ -63,7 +67,12 @@ def far_marks_grown(viewer, look_at: np.ndarray, position: np.ndarray) -> Iterat
     for cloud in viewer.sample_clouds.values():
         cloud.remove()
     scales = draw.far_scale(depth, size, crowded=len(points) > draw.CROWDED)  # (N,)
-    grown = draw.add_samples(viewer.server.scene, points, kinds, size, scales)
+    shown = ~framing.marks_over_robot(
+        viewer.robot, viewer.q, look_at, position, points, draw.mark_sizes(kinds, size) * scales
+    )  # (N,) all but the marks that would cover the robot
+    grown = draw.add_samples(
+        viewer.server.scene, points[shown], {kind: mask[shown] for kind, mask in kinds.items()}, size, scales[shown]
+    )
     try:
         yield
     finally:
@@ -94,4 +103,4 @@ def animation_iframe(viewer, height: int = 480, *, frames: int = 60, seconds: fl
 
 
 COLUMN = 640  # pixels: the widest the still is shown (its max-width in labels.STILL), a little over a page's 631
-STILL_CONTROLS = 80  # pixels: the still's note and its play button, above it
+STILL_CONTROLS = 100  # pixels: the still's note (two lines) and its play button, above it
