@@ -55,6 +55,45 @@ def test_the_summary_is_a_short_list_at_the_top():
     assert 4 <= PAGE.partition("**In short**")[2].partition("\n## ")[0].count("\n- ") <= 6
 
 
+OPENING = " ".join(PAGE.partition("**In short**")[0].split())
+
+
+def test_the_opening_says_what_a_check_costs_as_the_checker_table_measured_it():
+    """Review r18c: the page's point about the paper sat in one long paragraph at its end. It now opens with what a
+    check costs each way per 3D configuration, µs read from the checker table's rates (the network's as a range)."""
+    rates = {
+        header: {n: numbers(cell) for n, cell in column(header).items() if n.startswith("3D")}
+        for header in (
+            "python-fcl: configurations a second",
+            "network: configurations a second",
+            "default exact: configurations a second",
+        )
+    }
+    per_config = ({n: [1e6 / (r * 1e6 if r < 1000 else r) for r in v] for n, v in c.items()} for c in rates.values())
+    fcl, network, exact = per_config  # µs a configuration; a rate under 1,000 is written in millions ("2.5–4.1 M")
+
+    def µs(costs: dict[str, list[float]], digits: int) -> str:
+        values = [x for v in costs.values() for x in v]
+        return f"{min(values):.{digits}f}–{max(values):.{digits}f}"
+
+    times_less = [f / n for s in fcl for f in fcl[s] for n in network[s]]
+    assert said_at_top(r"once per link costs (\S+) µs") == µs(fcl, 1)
+    assert said_at_top(r"at the paper's sizes, costs (\S+) µs: (\S+) times less") == (
+        µs(network, 2),
+        f"{min(times_less):.0f}–{max(times_less):.0f}",
+    )
+    assert said_at_top(r"exact checker costs (\S+) µs") == µs(exact, 2)
+    assert said_at_top(r"the network costs (\S+) times as much as it") == span(
+        [x for n, cell in column("time, network / default exact").items() if n.startswith("3D") for x in numbers(cell)]
+    )
+
+
+def said_at_top(pattern: str) -> str | tuple[str, ...]:
+    found = re.search(pattern, OPENING)
+    assert found, f"docs/benchmarks.md's opening no longer says {pattern!r}"
+    return found.group(1) if len(found.groups()) == 1 else found.groups()
+
+
 def test_the_checker_figures_are_the_throughput_tables():
     fcl = column("time, python-fcl / default exact")
     network = column("time, network / default exact")
