@@ -275,7 +275,8 @@ def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, pr
 def test_threshold_views_mistakes_are_marked_over_the_boundary_at_a_size_one_sees(n):
     """Reader r8b: the decision map's mistakes lay under the boundary's ringed line, invisible. Each kind has its own
     mark (circles conservative, squares dangerous) over every cell of that kind, at least ``MIN_MARK`` points wide,
-    drawn above the boundary, in the kind's colour: as many of its pixels show as the marks' area, about."""
+    in the kind's colour: as many of its pixels show as the marks' area, about. The squares lie over the boundary;
+    the circles under it, which crosses them without hiding them (reader r19b: circles on it hid the outlines)."""
     robot = robots.point_robot()
     grid = slices.slice_grid(robot, n=n)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
@@ -297,7 +298,7 @@ def test_threshold_views_mistakes_are_marked_over_the_boundary_at_a_size_one_see
         assert np.any(codes == code)
         assert_squares_mark(ax_map, grid, codes == code, k, label=label)
         (marks,) = [c for c in ax_map.collections if c.get_label() == label]
-        assert marks.get_zorder() > boundary.get_zorder()
+        assert (marks.get_zorder() > boundary.get_zorder()) == (code == 3)
         side = np.sqrt(marks.get_sizes()[0])  # points
         assert side >= cell_marks.MIN_MARK
         colour = to_rgba(pc.ANSWER_COLORS[code])[:3]

@@ -48,6 +48,8 @@ ANSWER_COLORS = (COLORS["free"], CONSERVATIVE, COLORS["occupied"], DANGEROUS)  #
 MISTAKE_MARKERS = {1: "o", 3: "s"}  # conservative circles, dangerous squares: the mistakes told without colour
 CUT = 2.5  # points: the path map's dotted line at the model's threshold, bold enough to follow across the map (r15c)
 CUT_MAP = 1.5  # points: the same line on a map of mistakes, whose marks it must not bury
+ZORDER = {1: 1.5, 3: 3.0}  # conservative circles under the lines (2: the boundary and the threshold's contour), which
+# many of them sit on (r19b: they hid the outlines); the few dangerous squares over them, never cut in two (r10b, r11)
 PITCH = {1: 26.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
 
@@ -248,8 +250,8 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     _draw_boundary(ax, valid, grid)
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
     if mistakes:  # fit_cell_marks sizes them, no two closer than their pitch
-        draw_cell_marks(ax, grid, codes == 1, label=ANSWERS[1], zorder=3, pitch=PITCH[1], **_mistake_mark(1))
-        draw_cell_marks(ax, grid, codes == 3, label=ANSWERS[3], zorder=3, pitch=PITCH[3], **_mistake_mark(3))
+        draw_cell_marks(ax, grid, codes == 1, label=ANSWERS[1], zorder=ZORDER[1], pitch=PITCH[1], **_mistake_mark(1))
+        draw_cell_marks(ax, grid, codes == 3, label=ANSWERS[3], zorder=ZORDER[3], pitch=PITCH[3], **_mistake_mark(3))
     return image
 
 
@@ -320,8 +322,8 @@ def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):
         interpolation="nearest",
     )
     _draw_boundary(ax, valid, grid)
-    for code in MISTAKE_MARKERS:  # each mistake marked in its colour and shape, over the boundary's ringed line
-        draw_cell_marks(ax, grid, codes == code, label=ANSWERS[code], zorder=3, **_mistake_mark(code))
+    for code in MISTAKE_MARKERS:  # each mistake marked in its colour and shape, the squares over the boundary
+        draw_cell_marks(ax, grid, codes == code, label=ANSWERS[code], zorder=ZORDER[code], **_mistake_mark(code))
     return image
 
 

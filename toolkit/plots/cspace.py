@@ -296,9 +296,10 @@ def cspace_slice(
         marker="*", markersize=14, markeredgecolor=COLORS["free"], color=link_colors(1, q_valid)[0]
     )
     ax.plot(q[joints[0]], q[joints[1]], linestyle="none", gid="q", **star)
-    fixed = [f"{robot.dof_names[k]} {q[k]:.2f}" for k in range(robot.dof) if k not in joints]
+    fixed = [f"{robot.dof_names[k]}\N{NO-BREAK SPACE}{q[k]:.2f}" for k in range(robot.dof) if k not in joints]
+    lines = textwrap.fill("fixed: " + ", ".join(fixed), 38)  # a line breaks between two DoF, never in one (r19b)
     ax.set_title(
-        f"{robot.name}: {1 - valid.mean():.0%} in collision (dark)\n" + textwrap.fill("fixed: " + ", ".join(fixed), 38),
+        f"{robot.name}: {1 - valid.mean():.0%} in collision (dark)\n" + lines.replace("\N{NO-BREAK SPACE}", " "),
         fontsize=9,
     )
     if view:
