@@ -330,6 +330,11 @@ def test_cspace_slice_equals_the_separating_axis_reference(clutter):
     np.testing.assert_allclose(np.ravel(star.get_data()), q[[5, 6]])
     assert star.get_color() == robot_drawing.VALID_COLOR
     assert len(_patches(fig.axes[1], "link")) == robot.n_links
+    fixed = ax.get_title().split("\n", 1)[1].removeprefix("fixed: ").replace("\n", " ").split(", ")
+    names = [n for k, n in enumerate(robot.dof_names) if k not in (5, 6)]  # r19b: "gamma" on a line, "2.93" the next
+    assert [f"{n} {q[robot.dof_names.index(n)]:.2f}" for n in names] == fixed
+    lines = ax.get_title().replace("fixed: ", "").split("\n")[1:]  # each line whole items: "name value, name value,"
+    assert len(lines) > 1 and all(len(item.split()) == 2 for line in lines for item in line.strip(", ").split(", "))
 
 
 def test_a_checker_that_knows_no_workspace_is_a_clear_error():
