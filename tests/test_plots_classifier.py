@@ -253,6 +253,26 @@ def test_a_fine_maps_marks_stand_apart_and_a_one_cell_strip_of_mistakes_is_marke
     assert (apart.min(axis=1) < block_of_squares(fig, "circles")).all()  # every cell of the strip beside a circle
 
 
+def test_a_maps_circles_lie_under_its_outlines_and_every_mark_inside_its_frame():
+    """Reader r19b, chapter 03's 3DC-7 slices at full size: circles drawn over the C-obstacle's outlines hid them, and
+    a top row of marks sat on the map's frame, half outside it. On a P(valid) map the circles now lie under the
+    outlines, the few squares still over them, and every mark, its rings included, lies inside the frame."""
+    fine = slices.slice_grid(robots.point_robot(), n=100)
+    ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
+    valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (100, 100)
+    probability = np.where(valid, 0.2, 0.9)  # every answer wrong: circles out to the map's edges, squares in the block
+    fig = pc.probability_map(probability, valid, fine, threshold=0.5)
+    ax = fig.axes[0]
+    marks = {c.get_label(): c for c in cell_marks.cell_marks(ax)}
+    circles, squares = marks["valid rejected"], marks["invalid kept (dangerous)"]
+    assert circles.get_zorder() < boundary_of(ax).get_zorder() < squares.get_zorder()
+    frame = np.array(ax.bbox.extents) * 72 / fig.dpi  # (4,) x0, y0, x1, y1 in points
+    for mark in (circles, squares):
+        at = ax.transData.transform(mark.get_offsets()) * 72 / fig.dpi  # (m, 2) points
+        inside = np.minimum(at - frame[:2], frame[2:] - at).min()  # the least distance from a centre to the frame
+        assert inside >= np.sqrt(mark.get_sizes()[0]) / 2 + cell_marks.RING - 1e-6
+
+
 def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, probability, valid):
     threshold = 0.55
     ax_map, ax_counts, ax_roc = pc.threshold_view(probability, valid, grid, threshold=threshold).axes
@@ -265,6 +285,8 @@ def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, pr
         np.sum(~predicted & ~valid),
         np.sum(predicted & ~valid),
     ]
+    on_bars = {line.get_marker(): (line.get_xdata()[0], line.get_ydata()[0]) for line in ax_counts.get_lines()}
+    assert on_bars == {"o": (1, heights[1]), "s": (3, heights[3])}  # r19b: a bar of a few cells showed nothing
     (point,) = [line for line in ax_roc.get_lines() if line.get_marker() == "o"]
     rates = metrics.classification(predicted.ravel(), valid.ravel())
     assert point.get_xdata()[0] == pytest.approx(1 - rates["tnr"])

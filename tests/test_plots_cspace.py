@@ -125,6 +125,11 @@ def test_workspace_figure_3d_draws_each_block_at_its_corners(recorded_polys):
         np.testing.assert_allclose(corners.max(axis=0), hi)
     legend = [t.get_text() for t in fig.legends[0].get_texts()]  # below the view, over no block
     assert legend == sorted(set(ws.labels))
+    x, _, z = fig.axes[0].get_box_aspect()  # reader r19b: drawn to scale, the office's 6 high could not be read
+    assert z / x == pytest.approx(3 * 6 / 41) and fig.axes[0].get_zlabel() == "z (drawn 3x)"
+    assert "heights drawn 3 times taller than widths" in alt_text(fig)
+    clutter = cspace.workspace_figure(scenarios.get("3dc7").make_workspace(np.random.default_rng(1)))
+    assert np.ptp(clutter.axes[0].get_box_aspect()) == pytest.approx(0) and clutter.axes[0].get_zlabel() == "z"
 
 
 def test_occupancy_figure_2d_is_dark_exactly_on_cells_whose_centre_is_in_a_block(square_world):
@@ -330,6 +335,11 @@ def test_cspace_slice_equals_the_separating_axis_reference(clutter):
     np.testing.assert_allclose(np.ravel(star.get_data()), q[[5, 6]])
     assert star.get_color() == robot_drawing.VALID_COLOR
     assert len(_patches(fig.axes[1], "link")) == robot.n_links
+    fixed = ax.get_title().split("\n", 1)[1].removeprefix("fixed: ").replace("\n", " ").split(", ")
+    names = [n for k, n in enumerate(robot.dof_names) if k not in (5, 6)]  # r19b: "gamma" on a line, "2.93" the next
+    assert [f"{n} {q[robot.dof_names.index(n)]:.2f}" for n in names] == fixed
+    lines = ax.get_title().replace("fixed: ", "").split("\n")[1:]  # each line whole items: "name value, name value,"
+    assert len(lines) > 1 and all(len(item.split()) == 2 for line in lines for item in line.strip(", ").split(", "))
 
 
 def test_a_checker_that_knows_no_workspace_is_a_clear_error():

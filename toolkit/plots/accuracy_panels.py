@@ -32,7 +32,9 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
         style = series_style(k)
         all_free, accuracy = np.asarray(all_free, dtype=float), np.asarray(accuracy, dtype=float)  # (W,) each
         ax.plot([low, 1], [low, 1], color=COLORS["reference"], linestyle="--")
-        ax.scatter(all_free, accuracy, s=10, marker=style["marker"], c=style["color"], alpha=0.6, lw=0, gid=name)
+        ax.scatter(
+            all_free, accuracy, s=22, marker=style["marker"], c=style["color"], alpha=0.5, lw=0, gid=name
+        )  # r19b
         mean = (float(np.mean(all_free)), float(np.mean(accuracy)))
         ax.scatter(
             *mean,

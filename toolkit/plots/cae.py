@@ -94,19 +94,20 @@ def reconstructions(
     if flipped is not None and np.shape(flipped) != grids.shape:
         raise ValueError(f"flipped has shape {np.shape(flipped)}, the grids {grids.shape}")
     accuracy = reconstruction_accuracy(decoded, grids)  # (W,)
-    fig = Figure(figsize=(PAGE_WIDTH, 3.0 * len(grids) + 0.3), layout="constrained")
+    fig = Figure(figsize=(PAGE_WIDTH, 4.3 * len(grids) + 0.3), layout="constrained")
     rows = fig.subfigures(len(grids), 1, squeeze=False)[:, 0]  # (W,) one row per workspace
     said, parts = [], []
     drawn: dict[str, np.ndarray] = {}  # the kinds of wrong cell drawn in any row, for the legend
     for k, (row, grid, out, name, acc) in enumerate(zip(rows, grids, decoded, names, accuracy)):
         kinds = wrong_kinds(grid, out, None if flipped is None else flipped[k])
         drawn |= kinds
-        axes = row.subplots(1, 3, width_ratios=(1, 1, 1.5))  # wrong cells larger, for their marks; r17b: input wider
+        layout = row.add_gridspec(2, 2, width_ratios=(1, WRONG))  # input over decoded; r19b: marks 8 px wide
+        axes = [row.add_subplot(layout[0, 0]), row.add_subplot(layout[1, 0]), row.add_subplot(layout[:, 1])]
         _image(axes[0], grid, "input")
         _image(axes[1], np.where(out > 0, 1.0, -1.0), "decoded (sign)")
         wrong = wrong_in_words(kinds)
-        _image(axes[2], grid, wrong, alpha=0.25)
-        draw_wrong_cells(axes[2], grid, kinds, cell=72 * 0.4 * fig.get_figwidth() / max(grid.shape))
+        _image(axes[2], grid, wrong, alpha=0.25, axes=True)  # the thumbnails on its left: the same x and y
+        draw_wrong_cells(axes[2], grid, kinds, cell=72 * 0.62 * fig.get_figwidth() / max(grid.shape))
         all_free = np.mean(grid < 0)
         row.suptitle(f"{name}: {acc:.1%} of cells right (all free: {all_free:.1%})", fontsize=10)
         said.append(f"{name}: {acc:.1%} of cells right against {all_free:.1%} for answering all free; {wrong}")
@@ -118,8 +119,9 @@ def reconstructions(
     return describe(fig, text + ".", parts)
 
 
+WRONG = 2.2  # the wrong cells' panel's width against the input's column: 0.62 of the figure's, laid out
 FEW = 50  # a group of at most this many workspaces is drawn larger and on top: hundreds of points would bury it
-GREY = {True: dict(s=28, alpha=1.0, linewidths=0.8, zorder=3), False: dict(s=6, alpha=0.5, linewidths=0, zorder=1)}
+GREY = {True: dict(s=28, alpha=1.0, linewidths=0.8, zorder=3), False: dict(s=10, alpha=0.5, linewidths=0, zorder=1)}
 AREA = {"^": 1.7, "v": 1.7, "o": 1.2}  # marker area factors: a triangle of the same size looks half a square's
 LAYERS = 10  # slices of a large group drawn in turns with the other large groups' (accuracy_vs_all_free)
 MEAN_SIZE = 300  # the first group's mean marker (points squared); each later group's is smaller, drawn over it
@@ -350,7 +352,7 @@ def latent_scatter(
         for rest in others:  # grey: where this group lies among them; a few dozen larger, edged, on top, never buried
             ax.scatter(*rest.T, color=COLORS["reference"], edgecolors=COLORS["ink"], **GREY[len(rest) <= FEW])
         big = name == highlight
-        style: dict[str, Any] = dict(s=60 if big else 14, edgecolors=COLORS["ink"], linewidths=1.4 if big else 0.3)
+        style: dict[str, Any] = dict(s=60 if big else 22, edgecolors=COLORS["ink"], linewidths=1.4 if big else 0.3)
         style.update(marker=MARKERS[k % len(MARKERS)], c=series_style(k)["color"])
         if color:
             style.update(c=color[name], cmap=SEQUENTIAL_CMAP, vmin=low, vmax=high)
@@ -367,7 +369,7 @@ def latent_scatter(
     if color:
         fig.colorbar(drawn, ax=list(axes), label=color_label)
     fig.suptitle(title, fontsize=11)
-    text = f"{title}: {xlabel} across, {ylabel} up, one panel per group, the other groups grey behind it. "
+    text = f"{title}: {xlabel} across, {ylabel} up, one panel per group, the others grey (over it if {FEW} or fewer). "
     parts = [
         _cloud_part(name, np.asarray(xy), (xlabel, ylabel), color and (color_label, color[name]))
         for name, xy in points.items()
@@ -388,9 +390,11 @@ def _cloud_part(name: str, xy: np.ndarray, labels: tuple[str, str], value) -> Pa
     return Part(f"{name} ({len(xy)})", f"where the {len(xy)} points of {name} lie", columns, tuple(rows))
 
 
-def _image(ax, grid: np.ndarray, title: str, alpha: float = 1.0) -> None:
-    """A 2D grid of -1 / +1, x to the right and y up, occupied black."""
+def _image(ax, grid: np.ndarray, title: str, alpha: float = 1.0, axes: bool = False) -> None:
+    """A 2D grid of -1 / +1, x right and y up, occupied black; ``axes``: named, in workspace units (r19b: none)."""
     ax.imshow(grid.T, origin="lower", cmap=GREYS_CMAP, vmin=-1, vmax=1, alpha=alpha)
     ax.set_title(title, fontsize=9)
-    ax.set_xticks([])
-    ax.set_yticks([])
+    for axis, n, name in zip((ax.xaxis, ax.yaxis), grid.shape, "xy"):
+        at = np.arange(0, n + 1, 10) if axes else np.array([], dtype=int)  # workspace units
+        axis.set_ticks(at - 0.5, [f"{v}" for v in at])  # the image's pixel i is centred on i
+        axis.set_label_text(name if axes else "")

@@ -5,12 +5,13 @@ mistakes on a P(valid) map and on a decision map, :mod:`toolkit.plots.classifier
 most of its cell; on a fine one (chapter 03 at full size: 100 cells over 4.4 inches, about 3 points a cell) a mark
 that size is a speck, and a mark made larger would cover its neighbours' marks.
 :func:`draw_cell_marks` puts a mark on each marked cell, over the map and under its outlines (or over them: the
-classifier's maps draw their mistakes over the boundary, which would cut a mark beside it in two);
+classifier's maps draw their dangerous squares over the boundary, which would cut one beside it in two);
 :func:`fit_cell_marks`, once the figure is laid out, puts one mark on each block of ``k x k`` cells holding a marked
 cell, at their middle: ``k`` the fewest cells that make a mark :data:`MIN_MARK` points wide at :data:`MARK_SHARE` of
 its block, and that keep two marks' centres at least the ``pitch`` the marks were drawn with apart (review r18b: on
 chapter 03's `paper` map a pile of squares a block apart merged into one shape that could not be counted); a mark
-drawn with a pitch stays near its block's middle, so that two in neighbouring blocks keep :data:`CLEAR` between them.
+drawn with a pitch stays near its block's middle, so that two in neighbouring blocks keep :data:`CLEAR` between them,
+and inside the map's frame.
 """
 
 from __future__ import annotations
@@ -26,6 +27,8 @@ MIN_MARK = 5.0  # points: the least side of a mark, however fine the map
 MAX_MARK = 7.0  # points: the largest, however coarse: a mark, not a tile hiding its cell's grey
 MARK_SHARE = 0.7  # of its cell (or block of cells) a mark covers: the map beneath shows between two marks
 CLEAR = 6.0  # points between two marks' sides, at least, where drawn with a pitch: their rings (4.2) and a gap
+RING = 2.1  # points: a mark's rings beyond its side, kept inside the map's frame with it (r19b: a top row of marks
+# sat on the frame, half outside the map)
 GID = "cell marks"  # how fit_cell_marks finds the marks draw_cell_marks drew ("cell marks:PITCH")
 
 
@@ -69,7 +72,8 @@ def fit_cell_marks(fig: Figure, grid: CSpaceSlice) -> dict[str, int]:
             middle = block * k + (k - 1) / 2  # (m, 2) each block's middle cell
             spread = max(0.0, (k * side - size - CLEAR) / (2 * side)) if pitch else k  # cells off the middle, at most
             centres = np.clip(means, middle - spread, middle + spread)  # at its cells' middle, a mark's width apart
-            centres = np.clip(centres, 0, np.array(grid.shape) - 1)  # on the map: a last block may stick out of it
+            inset = max(0.0, (size / 2 + RING) / side - 0.5)  # cells: from the edge cells' centres to a whole mark
+            centres = np.clip(centres, inset, np.array(grid.shape) - 1 - inset)  # inside the map, rings and all
             mark.set_offsets(first + centres * cell)
     return blocks
 

@@ -48,6 +48,8 @@ ANSWER_COLORS = (COLORS["free"], CONSERVATIVE, COLORS["occupied"], DANGEROUS)  #
 MISTAKE_MARKERS = {1: "o", 3: "s"}  # conservative circles, dangerous squares: the mistakes told without colour
 CUT = 2.5  # points: the path map's dotted line at the model's threshold, bold enough to follow across the map (r15c)
 CUT_MAP = 1.5  # points: the same line on a map of mistakes, whose marks it must not bury
+ZORDER = {1: 1.5, 3: 3.0}  # on a P(valid) map: conservative circles under the lines (2: the boundary, the threshold's
+# contour), where many sit (r19b: they hid the outlines); the few dangerous squares over them, never cut (r10b, r11)
 PITCH = {1: 26.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
 
@@ -248,8 +250,8 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     _draw_boundary(ax, valid, grid)
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
     if mistakes:  # fit_cell_marks sizes them, no two closer than their pitch
-        draw_cell_marks(ax, grid, codes == 1, label=ANSWERS[1], zorder=3, pitch=PITCH[1], **_mistake_mark(1))
-        draw_cell_marks(ax, grid, codes == 3, label=ANSWERS[3], zorder=3, pitch=PITCH[3], **_mistake_mark(3))
+        draw_cell_marks(ax, grid, codes == 1, label=ANSWERS[1], zorder=ZORDER[1], pitch=PITCH[1], **_mistake_mark(1))
+        draw_cell_marks(ax, grid, codes == 3, label=ANSWERS[3], zorder=ZORDER[3], pitch=PITCH[3], **_mistake_mark(3))
     return image
 
 
@@ -382,7 +384,9 @@ def _legend(fig: Figure, handles: list) -> None:
 def _draw_counts(ax, predicted_valid, valid) -> None:
     counts = confusion_counts(predicted_valid, valid)
     bars = ax.bar(range(len(counts)), list(counts.values()), color=ANSWER_COLORS, edgecolor=COLORS["ink"])
-    ax.bar_label(bars, fontsize=9, padding=2)
+    for code in MISTAKE_MARKERS:  # a mistake's mark on its bar: a bar of a few cells shows (r19b: 35 and 4 did not)
+        ax.plot(code, counts[ANSWERS[code]], linestyle="", clip_on=False, **_mistake_mark(code, legend=True))
+    ax.bar_label(bars, fontsize=9, padding=6)
     ax.set_ylim(0, 1.18 * max(max(counts.values()), 1))  # room above the tallest bar for its count, inside the frame
     ax.set_xticks(range(len(counts)), [a.replace(" ", "\n", 1) for a in ANSWERS], fontsize=9)
     ax.set_xlabel("answer")

@@ -87,6 +87,7 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
     hatches = {kind: HATCHES[KIND_ORDER[i % len(KIND_ORDER)]] for i, kind in enumerate(kinds)}
     box_colors = [colors[label] for label in workspace.labels] or [COLORS["block"]] * len(workspace.boxes)
     box_hatches = [hatches[label] for label in workspace.labels] or [""] * len(workspace.boxes)
+    stretch = 1  # how much taller than its widths a region's height is drawn
     if workspace.dim == 2:
         fig = Figure(figsize=(5, 5))
         ax = fig.subplots()
@@ -112,8 +113,12 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
                 hatch_linewidth=1.3,  # a hatch seen on a small box, at the site's width
             ).set_gid("block")
         frame_region(ax, workspace)
-        ax.set_box_aspect(workspace.upper - workspace.lower)
+        extent = workspace.upper - workspace.lower  # (3,)
+        stretch = max(1, int(np.ceil(max(extent[:2]) / (3 * extent[2]))))  # r19b: the office's heights unreadable
+        ax.set_box_aspect(extent * [1, 1, stretch])  # a flat region drawn taller, by a whole factor its z label gives
         few_ticks(ax)
+        if stretch > 1:
+            ax.set_zlabel(f"z (drawn {stretch}x)")
     if kinds:
         handles = [Patch(facecolor=colors[k], edgecolor=COLORS["ink"], hatch=hatches[k], label=k) for k in kinds]
         fig.legend(handles=handles, fontsize=9, loc="lower center", ncols=min(len(kinds), 3), frameon=False)
@@ -122,7 +127,8 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
     counts = [f"{workspace.labels.count(k)} {k}" for k in kinds] if kinds else []
     text = f"The {workspace.family or 'workspace'} workspace, {size}: {len(workspace.boxes)} blocks"
     text += f" ({', '.join(counts)}, each kind its own colour and hatch)" if counts else ""
-    text += f", {_occupied_share(workspace):.0%} of the region occupied."
+    text += f", {_occupied_share(workspace):.0%} of the region occupied"
+    text += f"; heights drawn {stretch} times taller than widths." if stretch > 1 else "."
     return describe(fig, text, [_blocks_part(workspace)])
 
 
@@ -296,9 +302,10 @@ def cspace_slice(
         marker="*", markersize=14, markeredgecolor=COLORS["free"], color=link_colors(1, q_valid)[0]
     )
     ax.plot(q[joints[0]], q[joints[1]], linestyle="none", gid="q", **star)
-    fixed = [f"{robot.dof_names[k]} {q[k]:.2f}" for k in range(robot.dof) if k not in joints]
+    fixed = [f"{robot.dof_names[k]}\N{NO-BREAK SPACE}{q[k]:.2f}" for k in range(robot.dof) if k not in joints]
+    lines = textwrap.fill("fixed: " + ", ".join(fixed), 38)  # a line breaks between two DoF, never in one (r19b)
     ax.set_title(
-        f"{robot.name}: {1 - valid.mean():.0%} in collision (dark)\n" + textwrap.fill("fixed: " + ", ".join(fixed), 38),
+        f"{robot.name}: {1 - valid.mean():.0%} in collision (dark)\n" + lines.replace("\N{NO-BREAK SPACE}", " "),
         fontsize=9,
     )
     if view:
