@@ -130,6 +130,13 @@ CONTRADICTED = (  # sentences that executed pages contradicted (issue 37), in th
     "- Algorithm 1 stays safe because",  # said of the path the lazy PRM found
     "the paper's four samplers keep only valid samples",  # §IV-A: S is drawn "regardless of their validity"
     "and repair it when a node or edge fails",  # the paper only verifies the path; the repair is ours
+    # issue 45, reader r19c (chapter 05):
+    "both verify a path exactly",  # the paper: "the path is extracted and verified", no checker named
+    "(unit cubes here)",  # the paper gives no size; the reader took "unit" for the paper's
+    "A mark far from the camera is drawn larger than a near one",  # a far mark is grown to 9 px, not larger
+    "arm are six boxes",  # six boxes: the platform, a turret and four arm links
+    "pokes through a wall counts",  # no wall in view: the office's collisions are counted by kind instead
+    "We read that as Table 2's unseen test",  # Table 2's own rates imply a set 42 % valid, uniform gives 76 %
 )
 
 
