@@ -700,6 +700,14 @@ def chapter_05(nb) -> list[str]:
             problems.append(f"05: '{needed}' is not printed")
     if "model disagrees" not in prose(nb):
         problems.append("05: the viewer's 'model disagrees' label is not explained")
+    # reader r19c: the prose reads Table 2's set as closer to half valid than uniform samples, from its own numbers
+    share = re.search(r"valid share of about (\d+)%\. On uniform samples, (\d+)% valid", found)
+    if share is None or not abs(int(share.group(1)) - 50) < abs(int(share.group(2)) - 50):
+        problems.append(f"05: Table 2's set is not nearer half valid than uniform samples: {share and share.groups()}")
+    # and the office's collisions are the two kinds its prose names, both present
+    office = [r for header, rows in tables(nb) if header[:2] == ["uniform samples", "in collision"] for r in rows]
+    if len(office) != 1 or int(office[0][1]) != int(office[0][2]) + int(office[0][3]) or "0" in office[0][2:]:
+        problems.append(f"05: the office's collisions are not the two kinds the prose names: {office}")
     return problems + _page_width(nb, tables(nb), "05")  # review r14b: the valid-share table's sixth column was cut
 
 

@@ -130,6 +130,13 @@ CONTRADICTED = (  # sentences that executed pages contradicted (issue 37), in th
     "- Algorithm 1 stays safe because",  # said of the path the lazy PRM found
     "the paper's four samplers keep only valid samples",  # §IV-A: S is drawn "regardless of their validity"
     "and repair it when a node or edge fails",  # the paper only verifies the path; the repair is ours
+    # issue 45, reader r19c (chapter 05):
+    "both verify a path exactly",  # the paper: "the path is extracted and verified", no checker named
+    "(unit cubes here)",  # the paper gives no size; the reader took "unit" for the paper's
+    "A mark far from the camera is drawn larger than a near one",  # a far mark is grown to 9 px, not larger
+    "arm are six boxes",  # six boxes: the platform, a turret and four arm links
+    "pokes through a wall counts",  # no wall in view: the office's collisions are counted by kind instead
+    "We read that as Table 2's unseen test",  # Table 2's own rates imply a set 42 % valid, uniform gives 76 %
 )
 
 
@@ -914,6 +921,8 @@ def chapter_05(
     frames_valid: int = 90,
     recipe_acc: str = "76%",
     tie: str = f'a ratio less than {findings.TIE:.0%} from 1 reads "{findings.TIES}"',
+    shares: tuple[str, str] = ("42%", "76%"),
+    office: str = "| 2000 | 631 | 186 | 445 |",
 ):
     """A chapter 05 that prints docs/results.md's medians and the closing tables (review r8b's numbers), each time
     table after ``tie``; the paper's recipe with ``recipe_acc``, ``recipe_tpr`` and ``recipe_medians``, and
@@ -931,12 +940,17 @@ def chapter_05(
         ]
     )
     nb = executed(
+        "MD:| uniform samples | in collision | of those: poking out of the office | only with furniture, inside it |\n"
+        "| ---: | ---: | ---: | ---: |\n" + office,
         f"MD:Total time, against the lazy exact planner; {tie}:\n\n"
         + findings.ratio_table({"3DC-7, `strong` preset, medians, vs lazy PRM": strong}),
         "MD:| frames | valid (exact checker) | least clearance (frame) | P(valid): lowest / threshold "
         "| frames below the threshold |\n| ---: | ---: | ---: | ---: | ---: |\n"
         f"| 90 | {frames_valid} | 0.012 (41) | 0.61 / 0.54 | 0 |",
         "MD:" + scored,
+        "MD:The paper's row: 71% = 85% × share + 61% × (1 − share) gives a valid share of about "
+        f"{shares[0]}. On uniform samples, {shares[1]} valid, the same TPR and TNR would give an accuracy of 79%, "
+        "not 71%.",
         "MD:On its balanced unseen test the model is more accurate than the paper's MLP (Table 2); on these uniform "
         'samples it is more accurate than answering "valid" to all of them.',
         f"MD:Total time with / without prediction on 3DC-7 ({tie}):\n\n"
@@ -978,6 +992,20 @@ def test_chapter_05_holds_the_recipe_row_and_the_tie_band_to_its_closing():
     ]
     assert problems(CH05, chapter_05(tie="a ratio near 1 is a tie")) == [
         "05: the tie band is not printed beside both time tables"
+    ]
+
+
+def test_chapter_05_holds_table_2s_valid_share_and_the_offices_collisions_to_its_prose():
+    """Reader r19c: TPR 85 % and TNR 61 % at 74 % valid give 78 %, not Table 2's 71 %; the prose says the paper's set
+    was nearer half valid than uniform samples, and that the office's collisions are of two kinds, both shown."""
+    assert problems(CH05, chapter_05(shares=("80%", "76%"))) == [
+        "05: Table 2's set is not nearer half valid than uniform samples: ('80', '76')"
+    ]
+    assert problems(CH05, chapter_05(office="| 2000 | 631 | 0 | 631 |")) == [
+        "05: the office's collisions are not the two kinds the prose names: [['2000', '631', '0', '631']]"
+    ]
+    assert problems(CH05, chapter_05(office="| 2000 | 631 | 186 | 440 |")) == [
+        "05: the office's collisions are not the two kinds the prose names: [['2000', '631', '186', '440']]"
     ]
 
 

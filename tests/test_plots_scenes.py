@@ -13,8 +13,9 @@ from matplotlib.text import Text
 from toolkit import scenarios
 from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots import dof_panels, robot_drawing, scenes, still_panels
+from toolkit.plots import dof_panels, palette, robot_drawing, scenes, still_panels
 from toolkit.plots.alt import alt_text
+from toolkit.plots.boxes import add_box_3d
 from toolkit.plots.palette import contrast
 from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR
 
@@ -61,16 +62,16 @@ def test_the_robot_is_its_link_boxes_at_the_frame_colored_by_validity(crossing, 
     robot, workspace, _, path, valid = crossing
     drawn_robots = []
 
-    def recording(ax, robot, Q, *, colors, view, workspace, margin):
-        drawn_robots.append((Q, colors, view, workspace))
-        robot_drawing.draw_robot(ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin)
+    def recording(ax, robot, Q, *, colors, view, workspace, margin, clip):
+        drawn_robots.append((Q, colors, view, workspace, clip))
+        robot_drawing.draw_robot(ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin, clip=clip)
 
     monkeypatch.setattr(scenes, "draw_robot", recording)
     fig = scenes.path_frame(robot, path, index, workspace=workspace, valid=valid)
     want = VALID_COLOR if valid[index] else INVALID_COLOR
-    [(Q, colors, view, drawn_in)] = drawn_robots
+    [(Q, colors, view, drawn_in, clip)] = drawn_robots
     np.testing.assert_array_equal(Q, path[index : index + 1])
-    assert (colors, view, drawn_in) == ([want], "3d", workspace)
+    assert (colors, view, drawn_in, clip) == ([want], "3d", workspace, True)  # blocks clipped: none over the ticks
     drawn = links(fig.axes[0])
     assert len(drawn) == robot.n_links
     for box in drawn:
@@ -87,9 +88,24 @@ def test_without_validity_the_robot_is_neutral(crossing):
     assert "exact" not in fig.get_suptitle()
 
 
-def test_the_blocks_near_the_robot_are_drawn_and_the_trace_stays_in_the_window(crossing):
+def test_the_blocks_near_the_robot_are_drawn_and_the_trace_stays_in_the_window(crossing, monkeypatch):
+    """The blocks that meet the window are drawn, each only as far as it lies inside it (reader r19c: mplot3d drew a
+    block past its axes, over their tick labels), the nearest one too; the base's trace only inside it."""
     robot, workspace, _, path, valid = crossing
     index = FRAMES - 1  # the base inside a block: that block is drawn
+    boxes = []  # (8, 3) corners of every box drawn
+
+    def recording(ax, corners, **style):
+        boxes.append(corners)
+        return add_box_3d(ax, corners, **style)
+
+    monkeypatch.setattr(robot_drawing, "add_box_3d", recording)
+    monkeypatch.setattr(still_panels, "add_box_3d", recording)
+    wide = scenes.path_frame(robot, path, index, workspace=workspace, margin=1.5).axes[0]  # 8 of 9 blocks cross it
+    lo, hi = np.array([wide.get_xlim(), wide.get_ylim(), wide.get_zlim()]).T
+    corners = np.array(boxes)  # (boxes, 8, 3): the blocks, the links, the nearest block
+    assert len(corners) == 9 + robot.n_links + 1
+    assert np.all((corners >= lo - 1e-9) & (corners <= hi + 1e-9))
     scene = scenes.path_frame(robot, path, index, workspace=workspace, valid=valid, margin=1.0).axes[0]
     lo, hi = np.array([scene.get_xlim(), scene.get_ylim(), scene.get_zlim()]).T
     aabbs = robot.link_aabbs(path[index])[0]  # (L, 2, 3)
@@ -251,7 +267,7 @@ def test_a_stills_overview_thins_a_dense_cloud_and_its_text_says_so(crossing):
     lo, hi = np.array([close_up.get_xlim(), close_up.get_ylim(), close_up.get_zlim()]).T  # (3,) each
     near = int(np.all((points >= lo) & (points <= hi), axis=1).sum())  # every sample in its window, thinned or not
     assert f"{int(valid.sum())} samples valid (circles), {int((~valid).sum())} samples in collision" in alt_text(fig)
-    assert "in collision (diamonds), 1 sample in 3 drawn" in alt_text(fig)
+    assert "in collision (diamonds), 1 sample in 3 of every kind drawn" in alt_text(fig)
     assert near and alt_text(fig).endswith(f"here, {near} sample{'s' * (near != 1)} near it.")
 
 
@@ -285,22 +301,27 @@ def test_a_stills_close_up_says_what_the_model_answers(crossing):
     assert "model" not in scenes.scene_still(robot, workspace, {"start": q}).axes[0].get_title()
 
 
-def test_a_stills_overview_stars_every_mistake_of_a_thinned_cloud(crossing):
-    """Review r17c: the overview showed about 6 stars for 103 wrong samples. Thinned to every k-th, it still draws
-    each sample the model gets wrong, its mark under its star, and its text says so."""
+def test_a_stills_overview_stars_mistakes_as_often_as_the_model_makes_them(crossing):
+    """Reader r19c: every mistake drawn beside every k-th right answer made stars look like 40 % of the marks where the
+    model erred on 5 %. Thinned to every k-th of every kind alike, the overview stars the mistakes among them, so
+    its share of stars is the model's error rate, and its title and text say which k."""
     robot, workspace, _, _, _ = crossing
     n = 2 * still_panels.OVERVIEW_SAMPLES + 1
     points = robot.link_boxes(robot.sample(np.random.default_rng(0), n))[0][:, 0]  # (n, 3) bases
     valid = np.arange(n) % 5 == 0  # (n,)
-    wrong = np.arange(n) % 7 == 1  # (n,) 58 of 401, none of them among the every-3rd kept: 1, 8, 15, ...
+    wrong = np.arange(n) % 7 == 1  # (n,) 58 of 401: 14 %
     kinds = {"valid": valid, "in collision": ~valid, "model wrong": wrong}
     fig = scenes.scene_still(robot, workspace, {}, samples=(points, kinds))
-    drawn = {c.get_label(): len(c.get_offsets()) for c in fig.axes[0].collections}
-    kept = (np.arange(n) % 3 == 0) | wrong
-    assert drawn["sample, model wrong"] == int(wrong.sum())
+    overview = fig.axes[0]
+    drawn = {c.get_label(): len(c.get_offsets()) for c in overview.collections}
+    kept = np.arange(n) % 3 == 0  # (n,) 1 in 3, whatever its kind
+    assert drawn["sample, model wrong"] == int((kept & wrong).sum()) == 19  # 15, 36, 57, ...: 19 of 134
     assert drawn["sample, valid"] == int((kept & valid).sum())
     assert drawn["sample, in collision"] == int((kept & ~valid).sum())
-    assert "1 sample in 3 drawn, and every one the model gets wrong" in alt_text(fig)
+    stars = drawn["sample, model wrong"] / (drawn["sample, valid"] + drawn["sample, in collision"])
+    assert stars == pytest.approx(wrong.mean(), abs=0.01)
+    assert overview.get_title().endswith("1 sample in 3 drawn")
+    assert "1 sample in 3 of every kind drawn" in alt_text(fig)
 
 
 @pytest.mark.parametrize("index", [0, FRAMES // 2])
@@ -330,21 +351,26 @@ def test_no_text_of_a_frame_lies_over_another(crossing, index):
         assert len(heights) < 2 or np.min(np.diff(heights)) >= dof_panels.LABEL_GAP * fig.dpi / 72 - 1
 
 
-def test_the_names_at_the_dof_lines_ends_are_ink_beside_a_stroke_of_the_lines_colour(crossing):
+def test_the_names_at_the_dof_lines_ends_are_ink_and_their_leaders_stay_outside_the_panel(crossing):
     """WCAG 1.4.3: a DoF's name at its line's end is 8-point text, so it is drawn in ink (at least 4.5:1 on the
-    panel's white, the palette's line colours reach 3.1 to 3.9:1); a short stroke of the line's own colour leads
-    from the line's end to it, so the colour still ties name and line."""
+    panel's white, the palette's line colours reach 3.1 to 3.9:1). Its leader is thin, grey and wholly right of the
+    panel (reader r19c: a solid stroke in the line's colour inside the panel, past the path's end, read as data)."""
     robot, workspace, _, path, valid = crossing
     fig = scenes.path_frame(robot, path, 0, workspace=workspace, valid=valid, clearance=None, probability=None)
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    fig.draw(renderer)
     names = [t for ax in fig.axes[1:] for t in ax.texts if t.get_text() in robot.dof_names]
     assert sorted(t.get_text() for t in names) == sorted(robot.dof_names)
     low = {t.get_text(): round(contrast(to_hex(t.get_color()), "#ffffff"), 2) for t in names}
     assert {name: ratio for name, ratio in low.items() if ratio < 4.5} == {}
+    line_colors = {to_hex(c) for c in palette.LINE_COLORS}
     for ax in fig.axes[1:]:
-        lines = {line.get_label(): line for line in ax.get_lines() if line.get_gid() == "dof"}
-        for name in (t for t in ax.texts if t.get_text() in lines):
+        right = ax.get_window_extent(renderer).x1  # pixels: the panel's right edge
+        for name in (t for t in ax.texts if t.get_text() in robot.dof_names):
             stroke = name.arrow_patch
-            assert stroke is not None and to_hex(stroke.get_edgecolor()) == to_hex(lines[name.get_text()].get_color())
+            assert stroke is not None and to_hex(stroke.get_edgecolor()) == dof_panels.LEADER_COLOR
+            assert dof_panels.LEADER_COLOR not in line_colors and stroke.get_linewidth() < 1.0
+            assert stroke.get_window_extent(renderer).x0 >= right - 0.5, name.get_text()
 
 
 def drawn_texts(fig) -> list[Text]:
@@ -412,3 +438,11 @@ def test_a_path_frames_camera_turns_off_a_block_straight_behind_the_robot():
     kept = scenes.path_frame(robot, path, 0, workspace=aside).axes[0]
     assert (kept.elev, kept.azim) == (30.0, -60.0)
     assert turned.elev == 30.0 and (turned.azim + 60.0) in scenes.FRAME_TURNS[1:]
+
+
+def test_a_path_frames_camera_never_looks_along_an_axis():
+    """Reader r19c: a frame turned to look along x piled its tick labels onto its name ("5 x"). Every turn a path
+    frame's camera may take keeps it at least 20 degrees from every axis of the workspace, as a close-up's does."""
+    azimuths = (-60.0 + np.array(scenes.FRAME_TURNS)) % 90.0  # (turns,) degrees past the last axis
+    assert np.all((azimuths >= still_panels.OFF_AXIS) & (azimuths <= 90.0 - still_panels.OFF_AXIS))
+    assert scenes.FRAME_TURNS[0] == 0.0  # mplot3d's usual camera first

@@ -247,14 +247,15 @@ def test_a_wrong_model_is_marked_everywhere(make_panel, rng):
     v = panel.viewer
     assert v.valid and v.probability == 0.0 and not v.predicted_valid
     assert v.nodes["disagreement"].visible
-    assert np.all(
-        np.asarray(v.nodes["prediction"].batched_colors) == draw.probability_colors([0.0])
-    )  # cividis' dark end
-    assert v.nodes["prediction"].opacity == draw.PREDICTION_OPACITY < 1  # faint: the links' colour shows through
+    wireframe = v.nodes["prediction"]
+    assert np.all(np.asarray(wireframe.colors) == draw.probability_colors([0.0])[0])  # cividis' dark end
+    # reader r19c: a 1-pixel wireframe with its faces' diagonals read as hair lines: now each box's 12 edges, 3 px wide
+    assert wireframe.thickness == draw.PREDICTION_PX >= 3 and wireframe.thickness_units == "screen"
     # reader r15b: at 1.15 times a 0.1-thick link the wireframe lay on the link's edges; it stands half the thinnest
     # link's thickness clear of every face
     links = draw.robot_boxes(v.robot, v.q[None])
-    np.testing.assert_allclose(v.nodes["prediction"].batched_scales, links.sizes + 2 * float(np.min(links.sizes)) / 2)
+    grown = draw.Boxes(links.centers, links.rotations, links.sizes + 2 * float(np.min(links.sizes)) / 2)
+    np.testing.assert_allclose(np.asarray(wireframe.points), draw.box_edges(grown), atol=1e-6)
     assert "disagrees" in panel.status.content
     v.sample("raw", 300, seed=1)
     valid = v.exact.are_valid(v.robot.sample(np.random.default_rng(1), 300))
@@ -283,9 +284,7 @@ def test_a_trained_checkpoint_colors_the_robot_and_samples(make_viewer, checkpoi
     v = make_viewer("2ds", checkpoint=checkpoint_2ds)
     model = learned.load_checker(checkpoint_2ds, v.workspace)
     assert v.probability == pytest.approx(float(model.probability(v.q[None])[0]))
-    np.testing.assert_array_equal(
-        np.asarray(v.nodes["prediction"].batched_colors)[0], draw.probability_colors([v.probability])[0]
-    )
+    np.testing.assert_array_equal(np.asarray(v.nodes["prediction"].colors), draw.probability_colors([v.probability])[0])
     Q = v.robot.sample(rng, 500)
     colors = v.show_samples(Q)
     valid, predicted = v.exact.are_valid(Q), model.are_valid(Q)

@@ -2,7 +2,8 @@
 
 Seven lines in one panel cross and hide each other, so the DoFs are grouped by kind (:func:`dof_groups`: the
 base's position, its angles, the joints) and each group drawn in a panel of its own (:func:`draw_dofs`), every
-DoF scaled to its bounds and named at its line's end, the names moved apart just enough to be read.
+DoF scaled to its bounds and named beside the panel at the height its line ends, the names moved apart just enough to
+be read.
 """
 
 from __future__ import annotations
@@ -28,8 +29,8 @@ def dof_groups(robot: BoxRobot) -> dict[str, list[int]]:
 
 def draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, dofs: list[int], kind: str, ax, along: np.ndarray) -> None:
     """The DoFs ``dofs`` of ``Q (T, dof)`` scaled to their bounds (0 = lower, 1 = upper), each in its own colour,
-    line style and marker (as the legend above the panels names them), and named directly at the line's end (the name
-    in ink, a stroke of the line's colour leading to it)."""
+    line style and marker (as the legend above the panels names them), and named in ink beside the panel, at the height
+    where its line ends, a thin grey leader from the panel's edge to the name (outside the panel: it is no data)."""
     scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
     every = max(1, len(Q) // 6)
     for k in dofs:
@@ -43,17 +44,18 @@ def draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, dofs: list[int], kind
     for k, end in zip(dofs, ends):
         ax.annotate(
             robot.dof_names[k],
-            (1.0, scaled[-1, k]),
+            (1.0, scaled[-1, k]),  # the axes' right edge, at the height where the line ends
+            xycoords=("axes fraction", "data"),
             xytext=(1.02, end),
             textcoords=("axes fraction", "data"),
             fontsize=8,
             va="center",
             color=COLORS["ink"],  # 8-point text in a line's colour is 3.1 to 3.9:1 on white (WCAG 1.4.3 asks 4.5)
             annotation_clip=False,
-            arrowprops=dict(  # a short stroke in the line's colour leads from its end to its name
-                arrowstyle="-",
-                color=series_style(k)["color"],
-                linewidth=1.4,
+            arrowprops=dict(  # a thin grey leader, wholly outside the axes (reader r19c: a solid stroke in the line's
+                arrowstyle="-",  # colour past x = 1 read as data, the line still rising after the path's end)
+                color=LEADER_COLOR,
+                linewidth=0.6,
                 shrinkA=0,
                 shrinkB=1,
             ),
@@ -68,6 +70,7 @@ def _broken(along: np.ndarray, scaled: np.ndarray) -> tuple[np.ndarray, np.ndarr
     return np.insert(along, wraps, np.nan), np.insert(scaled, wraps, np.nan)  # (T + w,) each
 
 
+LEADER_COLOR = COLORS["reference"]  # a name's leader: a grey no DoF's line is drawn in
 LABEL_GAP = 11.0  # points between two names at the lines' ends: an 8-point line of text (~9.4 pt tall) and air
 
 

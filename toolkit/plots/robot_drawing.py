@@ -73,16 +73,16 @@ def draw_robot(
     workspace: Workspace | None = None,
     margin=1.0,
     hatches: Sequence[str | None] | None = None,
+    clip: bool = False,
 ) -> None:
     """Draw the link boxes of configurations ``Q (k, dof)``, one colour each, and the blocks within ``margin`` of them,
-    on one axes (the building block of :func:`robot_figure`, :func:`toolkit.plots.cspace.cspace_slice` and the scene
-    figures).
+    on one axes (building :func:`robot_figure`, :func:`toolkit.plots.cspace.cspace_slice` and the scene figures).
 
     ``view``: ``"3d"`` (``ax`` an mplot3d axes) or a plane ``"xy"``, ``"xz"``, ``"yz"`` (the shadow of each box,
     drawn far to near as seen from the page's front: in ``"xy"`` from above, so the highest link lies on top).
     Links have gid ``"link"``, blocks gid ``"block"``; the axes' limits frame them. ``hatches``: one hatch per
-    configuration (a second cue where colours tell configurations apart).
-    """
+    configuration (a second cue where colours tell configurations apart). ``clip``: in 3D, only each block's part
+    inside the window (mplot3d draws past its axes, over their tick labels)."""
     Q = robot.check_configs(Q)  # (k, dof)
     if view != "3d" and view not in VIEWS:
         raise ValueError(f"unknown view {view!r}; choose '3d' or one of {sorted(VIEWS)}")
@@ -103,7 +103,7 @@ def draw_robot(
         for c, r, h in zip(cs, rs, half)
     ]
     if view == "3d":
-        for b_lo, b_hi in blocks:
+        for b_lo, b_hi in np.clip(blocks, lo, hi) if clip else blocks:
             add_box_3d(ax, aabb_corners(b_lo, b_hi), linewidth=0.3, alpha=0.25, **BLOCK_STYLE)
         for corners, color, hatch in link_boxes:
             add_box_3d(ax, corners, linewidth=0.4, alpha=0.9, **link_style(color, hatch)).set_gid("link")

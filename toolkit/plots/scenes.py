@@ -50,7 +50,8 @@ UNCHECKED_COLOR = COLORS["unchecked"]  # the robot when no validity is given
 NOW_COLOR = COLORS["occupied"]
 _STATE = {None: "", True: ", valid", False: ", in collision"}  # a pose's verdict, as a title and its text say it
 _POSE_COLOR = {None: UNCHECKED_COLOR, True: VALID_COLOR, False: INVALID_COLOR}  # a pose's links, by its verdict
-FRAME_TURNS = (0.0, 30.0, -30.0, 60.0, -60.0, 90.0, -90.0)  # degrees: a path frame's camera, turned the least it can
+FRAME_TURNS = (0.0, 30.0, -60.0, 90.0, -90.0, 180.0)  # degrees: a path frame's camera, turned the least it can from
+#   mplot3d's azimuth of -60, never to within 20 degrees of an axis (reader r19c: seen along x, its ticks crowded "5 x")
 CLOSE_UP_HEIGHT = 3.2  # inches: a row of two close-ups
 OVERVIEW_HEIGHT = 5.0  # inches: the overview, a row of its own (review r16c: in half a row, 230 px, stars were lost)
 
@@ -77,7 +78,7 @@ def scene_still(
     A single pose is seen twice (the second view a quarter turn round, or a third or a sixth where a block then
     stands on a line of sight through the robot: :func:`~toolkit.plots.still_panels.second_turn`), above the
     overview; several follow it, one panel each. Of more than :data:`~toolkit.plots.still_panels.OVERVIEW_SAMPLES`
-    samples the overview draws every k-th, and every one a model gets wrong."""
+    samples the overview draws every k-th (its title says which k), of every kind alike."""
     if robot.dim != 3:
         raise ValueError(f"a scene's still is drawn in 3D; the {robot.name} robot moves in {robot.dim}D")
     valid = valid or {}
@@ -144,8 +145,7 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
             f"{int(m.sum())} samples {kind} ({SAMPLE_WORDS[kind]})" for kind, m in samples[1].items() if m.any()
         )
         step = overview_step(len(samples[0]))
-        text += f", 1 sample in {step} drawn" if step > 1 else ""
-        text += ", and every one the model gets wrong" if step > 1 and "model wrong" in samples[1] else ""
+        text += f", 1 sample in {step} of every kind drawn" if step > 1 else ""
     text += ", the path of the robot's base" if trace is not None else ""
     if poses:
         text += ", the robot drawn " + ("over them" if samples is not None else "in it")
@@ -348,7 +348,9 @@ def _draw_scene(
 ) -> None:
     """The 3D panel of :func:`path_frame`: the robot at frame ``index`` among the blocks near it, its base's trace."""
     color = UNCHECKED_COLOR if valid is None else VALID_COLOR if valid else INVALID_COLOR
-    draw_robot(scene, robot, Q[index : index + 1], colors=[color], view="3d", workspace=workspace, margin=margin)
+    draw_robot(
+        scene, robot, Q[index : index + 1], colors=[color], view="3d", workspace=workspace, margin=margin, clip=True
+    )  # the blocks clipped to the window (reader r19c: a block past it hid the tick labels and the y axis' name)
     if (
         workspace is not None
     ):  # mplot3d's usual camera, turned where a block stands on a line of sight through the robot

@@ -3,9 +3,9 @@
 A 3D picture on a page cannot be turned, so each panel is drawn to be read from where it stands:
 
 - :func:`overview` draws the whole workspace, its blocks faint (those near the robot darker), one mark per sample (a
-  circle valid, a diamond in collision, large enough to tell apart, edged in ink; light, and at most
-  :data:`OVERVIEW_SAMPLES` of them besides every one a model gets wrong, starred) and, over them, the robot itself
-  at each pose: its links opaque in its colour, edged in ink and ringed in white, a label above it;
+  circle valid, a diamond in collision, large enough to tell apart, edged in ink; light; every k-th of them, at most
+  :data:`OVERVIEW_SAMPLES`, a star round each one a model gets wrong: stars as common as its mistakes) and, over
+  them, the robot itself at each pose: its links opaque in its colour, edged in ink, ringed in white, labelled;
 - :func:`close_up` draws the robot at one pose among the blocks near it: its links opaque, edged thick in ink, each
   joint a white dot ringed in ink, the blocks faded (a robot behind one shows through it), those within
   :data:`NEAR` of a link darker than the rest of its window. The camera looks across the plane the chain spreads
@@ -65,9 +65,9 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
     for (lo, hi), dark in zip(workspace.boxes, near):
         style = dict(alpha=0.3, linewidth=0.8) if dark else dict(alpha=0.15, linewidth=0.2)
         add_box_3d(ax, aabb_corners(lo, hi), **style, **BLOCK_STYLE)
-    if samples is not None:  # every k-th, and every one a model gets wrong (review r17c: 6 stars for 103), light
-        keep = np.arange(len(samples[0])) % overview_step(len(samples[0])) == 0  # (N,)
-        keep |= samples[1].get("model wrong", np.zeros_like(keep))
+    step = 1 if samples is None else overview_step(len(samples[0]))
+    if samples is not None:  # every k-th of every kind alike, light: a fair share (reader r19c: every mistake added
+        keep = np.arange(len(samples[0])) % step == 0  # (N,) to every k-th right one made stars look 40 % of marks)
         samples = (samples[0][keep], {kind: mask[keep] for kind, mask in samples[1].items()})
     draw_points(ax, samples, trace, alpha=OVERVIEW_ALPHA)
     for marks in ax.collections:  # every mistake starred, each star smaller than a close-up's: a hundred fit
@@ -93,7 +93,8 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
     frame_region(ax, workspace)
     ax.set_box_aspect(workspace.upper - workspace.lower)
     few_ticks(ax)
-    ax.set_title(f"the whole workspace: {len(workspace.boxes)} blocks", fontsize=10)
+    drawn = f", 1 sample in {step} drawn" if step > 1 else ""
+    ax.set_title(f"the whole workspace: {len(workspace.boxes)} blocks{drawn}", fontsize=10)
 
 
 def robot_strokes(robot: BoxRobot, q: np.ndarray) -> np.ndarray:
@@ -196,9 +197,12 @@ def model_words(answer: tuple[float, bool] | None) -> str:
 
 def mark_nearest(scene, links: np.ndarray, blocks: np.ndarray) -> None:
     """Edge in ink, and name, the block nearest the robot's links ``(L, 2, 3)`` among ``blocks (K, 2, 3)`` (box to
-    box, min/max corners): the one a low clearance is about (review r16c: the block grazed was not marked)."""
+    box, min/max corners), its part inside the axes' window: the one a low clearance is about (review r16c: the
+    block grazed was not marked)."""
     gaps = np.maximum(0.0, np.maximum(blocks[:, None, 0] - links[None, :, 1], links[None, :, 0] - blocks[:, None, 1]))
     lo, hi = blocks[int(np.argmin(np.linalg.norm(gaps, axis=-1).min(axis=1)))]  # (K, L, 3) gaps -> the nearest
+    window = np.array([scene.get_xlim(), scene.get_ylim(), scene.get_zlim()]).T  # (2, 3) the axes' window
+    lo, hi = np.clip(lo, *window), np.clip(hi, *window)  # its part inside: mplot3d draws past the axes
     add_box_3d(scene, aabb_corners(lo, hi), facecolor="none", edgecolor=COLORS["ink"], linewidth=1.6, gid="nearest")
     x, y, _ = (lo + hi) / 2
     scene.text(

@@ -10,7 +10,8 @@ the valid colour (blue), the invalid one (vermillion) in collision. Samples carr
 (:data:`SAMPLE_SHAPES`): circles valid, diamonds in collision, and a larger sparkle behind the mark where a learned
 model disagrees with the exact checker; on a page, the far ones grow until their shapes can be told, and in a
 crowded view the near ones shrink (:func:`far_scale`). A probability of validity is drawn on cividis (dark: 0,
-light: 1), the model's wireframe faint over the links. Blocks and links are edged in ink (:func:`add_edges`).
+light: 1), the model's wireframe a box's 12 edges around each link (:func:`add_wireframe`). Blocks and links are
+edged in ink (:func:`add_edges`).
 """
 
 from __future__ import annotations
@@ -41,7 +42,8 @@ EDGE_PX = 2.0  # their width on screen, in pixels, near or far
 LINK_EDGE_PX = 2.5
 VALID = rgb("valid")
 COLLIDING = rgb("invalid")
-PREDICTION_OPACITY = 0.5  # the P(valid) wireframe over the links: faint, so their colour and edges show through
+PREDICTION_PX = 3.0  # the P(valid) wireframe's lines, in pixels: a box's 12 edges around each link (reader r19c: a
+#   1-pixel, half see-through wireframe with its faces' diagonals read as a few hair lines against the robot)
 MISTAKE = rgb("ink")  # a sample the learned model gets wrong (drawn over its validity colour)
 POINT_SIZE = {"2ds": 0.25, "3do": 0.12, "3dc": 0.07}  # sample markers, by workspace family (3DC: dense, seen close)
 SAMPLE_SHAPES: dict[str, tuple[Literal["circle", "diamond", "sparkle"], float]] = {
@@ -271,7 +273,6 @@ def add_boxes(
     *,
     colors,
     opacity: float | None = None,
-    wireframe: bool = False,
     visible: bool = True,
 ) -> viser.BatchedMeshHandle:
     """One batched-mesh node drawing ``boxes``; ``colors`` is one RGB or ``(N, 3)``."""
@@ -284,8 +285,7 @@ def add_boxes(
         batched_scales=boxes.sizes,
         batched_colors=np.asarray(colors, dtype=np.uint8),
         opacity=opacity,
-        wireframe=wireframe,
-        flat_shading=not wireframe,
+        flat_shading=True,
         lod="off",
         visible=visible,
     )
@@ -296,6 +296,22 @@ def add_edges(scene: viser.SceneApi, name: str, boxes: Boxes, width: float = EDG
     a box, see-through or seen far. A node of its own (as the boxes' child, viser would draw it see-through like
     see-through boxes); :func:`move_boxes` moves it with them."""
     return scene.add_line_segments(name, box_edges(boxes), EDGE, thickness=width, thickness_units="screen")
+
+
+def add_wireframe(scene: viser.SceneApi, name: str, boxes: Boxes, color) -> viser.LineSegmentsHandle:
+    """The 12 edges of each of ``boxes`` as lines :data:`PREDICTION_PX` pixels wide in one ``color`` (a model's
+    P(valid) on cividis, :func:`probability_colors`): no face, no diagonal; :func:`move_wireframe` moves it."""
+    return scene.add_line_segments(
+        name, box_edges(boxes), np.asarray(color, dtype=np.uint8), thickness=PREDICTION_PX, thickness_units="screen"
+    )
+
+
+def move_wireframe(handle: viser.SceneNodeHandle, boxes: Boxes, color) -> None:
+    """Move a wireframe made by :func:`add_wireframe` to ``boxes`` (as many as before) and colour it ``color``."""
+    if not isinstance(handle, viser.LineSegmentsHandle):
+        raise TypeError(f"move_wireframe moves a node made by add_wireframe, got a {type(handle).__name__}")
+    handle.points = box_edges(boxes).astype(np.float32)
+    handle.colors = np.asarray(color, dtype=np.uint8)
 
 
 def move_boxes(handle: viser.SceneNodeHandle, boxes: Boxes, colors, edges: viser.SceneNodeHandle | None = None) -> None:

@@ -143,17 +143,8 @@ class Viewer:
             self._add("robot", draw.add_boxes(self.server.scene, "/robot/links", boxes, colors=draw.VALID))
             self._add("link_edges", draw.add_edges(self.server.scene, "/robot/link_edges", boxes, draw.LINK_EDGE_PX))
             if self.model is not None:
-                self._add(
-                    "prediction",
-                    draw.add_boxes(
-                        self.server.scene,
-                        "/robot/prediction",
-                        boxes.grown(self._halo),
-                        colors=draw.VALID,
-                        opacity=draw.PREDICTION_OPACITY,
-                        wireframe=True,
-                    ),
-                )
+                grown = boxes.grown(self._halo)  # the wireframe clear of the links' edges
+                self._add("prediction", draw.add_wireframe(self.server.scene, "/robot/prediction", grown, draw.VALID))
                 self.nodes["disagreement"] = self.server.scene.add_label(
                     "/robot/disagreement", "model disagrees", visible=False
                 )
@@ -178,10 +169,8 @@ class Viewer:
             if isinstance(self.model, models.Predicts):  # every model model_for keeps
                 self.probability = float(self.model.probability(q[None])[0])
                 self.predicted_valid = bool(self.model.are_valid(q[None])[0])
-                draw.move_boxes(
-                    self.nodes["prediction"],
-                    boxes.grown(self._halo),
-                    np.repeat(draw.probability_colors([self.probability]), len(boxes), axis=0),
+                draw.move_wireframe(
+                    self.nodes["prediction"], boxes.grown(self._halo), draw.probability_colors([self.probability])[0]
                 )
                 above = 0.8 * framing.robot_size(self.robot)  # robot sizes above its top: clear of it (0.5 touched)
                 self.nodes["disagreement"].position = boxes.centers.max(axis=0) + np.array([0.0, 0.0, above])
