@@ -360,6 +360,7 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     """The lead's run with python-fcl doing every exact check of Algorithm 1, with and without the network: the home
     page's answer quotes its sampling savings, its total time's own ratios and sampling's share of a query, read from
     the record, so the page cannot drift from it."""
+    from toolkit.experiments.paper_numbers import IMPROVEMENT
     from toolkit.teaching import recorded
     from tools.recorded_results import RESULTS, parse
 
@@ -380,6 +381,9 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     rates = recorded.table(FCL_ALIKE, "Checker throughput", tables)["3dc7"]
     ratio = recorded.ours(rates["learned cfg/s"]) / recorded.ours(rates["FCL cfg/s"])
     assert f"the network answers {ratio:.1f} times as many configurations a second as python-fcl" in flat_readme()
+    paper = list(IMPROVEMENT["3dc7"]["sampling"].values())
+    assert f"sampling stage by {percents(saved)} of its mean time, the paper's direction and size" in flat_readme()
+    assert f"(its Table 3: {percents(paper)})" in flat_readme()
 
 
 def test_the_index_says_the_paper_network_gives_one_answer_to_every_3d_sample():
