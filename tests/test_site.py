@@ -314,41 +314,100 @@ def test_the_index_opens_in_short_sentences():
     assert opening.index("**The answer") < opening.index("\n|")
 
 
+FCL_ALIKE = "strong --planner paper --baseline paper-fcl-alike"  # results.md: python-fcl on both sides of Algorithm 1
+
+
 def test_the_index_table_counts_the_recorded_cells():
     """Each row of the home page's table counted again, with the results page's rule (a change of 10 % or more either
     way), from the paper's Table 3 and from docs/results.md's tables: the `paper` section's Table 3, each query's own
-    ratio of `strong` inside Algorithm 1, and the `strong` medians table against the lazy PRM."""
+    ratio of `strong` inside Algorithm 1 with the compiled checker and with python-fcl on both sides, and the `strong`
+    medians table against the lazy PRM. The cells column names the scenarios where a run has fewer than four."""
     from toolkit.experiments.paper_numbers import IMPROVEMENT
     from toolkit.teaching import recorded
     from tools.recorded_results import RESULTS, parse
-    from tools.results_summary import change
+    from tools.results_summary import NAMES, change
 
     tables = parse(RESULTS.read_text())
 
-    def counted(ratios: list[float]) -> list[int]:
-        verdicts = [change(r) for r in ratios]
-        return [verdicts.count(v) for v in ("less time", "about the same time", "more time")]
+    def counted(ratios: dict[str, list[float]]) -> list[int | str]:
+        verdicts = [change(r) for row in ratios.values() for r in row]
+        cells = str(len(verdicts)) if len(ratios) == 4 else f"{len(verdicts)} ({', '.join(NAMES[s] for s in ratios)})"
+        return [cells, *(verdicts.count(v) for v in ("less time", "about the same time", "more time"))]
 
+    def own_ratios(key: str) -> dict[str, list[float]]:
+        return {s: list(row.values()) for s, row in recorded.query_ratios(key, tables).items()}
+
+    table3 = recorded.table("paper", "time improvement", tables)
     expected = {
-        "the paper's Table 3": counted([1 - v for row in IMPROVEMENT.values() for v in row["total"].values()]),
+        "the paper's Table 3": counted({s: [1 - v for v in row["total"].values()] for s, row in IMPROVEMENT.items()}),
         "the paper's recipe": counted(
-            [
-                1 - v
-                for s in recorded.table("paper", "time improvement", tables)
-                for v in recorded.improvements("paper", s, recorded=tables).values()
-            ]
+            {s: [1 - v for v in recorded.improvements("paper", s, recorded=tables).values()] for s in table3}
         ),
-        "each query's own ratio": counted(
-            [r for row in recorded.query_ratios(recorded.ALGORITHM_1, tables).values() for r in row.values()]
-        ),
+        "compiled checker (the median of each query's own ratio)": counted(own_ratios(recorded.ALGORITHM_1)),
+        "python-fcl on both sides": counted(own_ratios(FCL_ALIKE)),
         "in our lazy PRM": counted(
-            [r for row in recorded.median_ratios("strong", tables).values() for r in row["total"].values()]
+            {s: list(row["total"].values()) for s, row in recorded.median_ratios("strong", tables).items()}
         ),
     }
-    rows = [line.strip("|").split("|") for line in readme_opening().splitlines() if line.startswith("| ")][1:]
-    shown = {key: [int(cell) for cell in row[1:]] for key in expected for row in rows if key in row[0]}
+    rows = [
+        [c.strip() for c in line.strip("|").split("|")] for line in readme_opening().splitlines() if line[:2] == "| "
+    ]
+    shown = {key: [row[1], *map(int, row[2:])] for key in expected for row in rows[1:] if key in row[0]}
     assert shown == expected
-    assert all(sum(counts) == 16 for counts in expected.values())
+
+
+def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not():
+    """The lead's run with python-fcl doing every exact check of Algorithm 1, with and without the network: the home
+    page's answer quotes its sampling savings, its total time's own ratios and sampling's share of a query, read from
+    the record, so the page cannot drift from it."""
+    from toolkit.experiments.paper_numbers import IMPROVEMENT
+    from toolkit.teaching import recorded
+    from tools.recorded_results import RESULTS, parse
+
+    tables = parse(RESULTS.read_text())
+    scenarios = list(recorded.table(FCL_ALIKE, "time improvement", tables))
+    saved = [v for s in scenarios for v in recorded.improvements(FCL_ALIKE, s, "sampling", tables).values()]
+    own = [r for row in recorded.query_ratios(FCL_ALIKE, tables).values() for r in row.values()]
+    times = next(v for k, v in tables[FCL_ALIKE].items() if "Times behind Table 3" in k)  # a row per sampler
+    column = times["columns"].index
+    shares = [
+        recorded.ours(row[column("sampling without")]) / recorded.ours(row[column("total without")])
+        for row in times["rows"]
+    ]
+    answer = " ".join(readme_opening().split())
+    assert f"sampling stage by {percents(saved)}" in answer
+    assert f"({min(own):.2f}–{max(own):.2f} times, each query's own ratio)" in answer
+    assert f"Sampling was only {percents(shares, digits=1)} of a query's time" in answer
+    rates = recorded.table(FCL_ALIKE, "Checker throughput", tables)["3dc7"]
+    ratio = recorded.ours(rates["learned cfg/s"]) / recorded.ours(rates["FCL cfg/s"])
+    assert f"the network answers {ratio:.1f} times as many configurations a second as python-fcl" in flat_readme()
+    paper = list(IMPROVEMENT["3dc7"]["sampling"].values())
+    assert f"sampling stage by {percents(saved)} of its mean time, the paper's direction and size" in flat_readme()
+    assert f"(its Table 3: {percents(paper)})" in flat_readme()
+
+
+def test_the_index_says_the_paper_network_gives_one_answer_to_every_3d_sample():
+    """Review r19c: the index said "nearly every sample" where Table 2 (TPR 100 %, TNR 0 %) says every."""
+    from toolkit.teaching import recorded
+
+    rows = recorded.table("paper", "MLP accuracy")
+    for scenario in ("3dc7", "3dc9", "3do"):
+        for tpr, tnr in (("Seen TPR", "Seen TNR"), ("Unseen TPR", "Unseen TNR"), ("TPR", "TNR")):
+            assert sorted((recorded.ours(rows[scenario][tpr]), recorded.ours(rows[scenario][tnr]))) == [0, 1]
+    assert 'one answer, "valid" or "invalid", to every sample' in flat_readme() and "nearly every" not in flat_readme()
+    accuracy = [recorded.ours(row["Balanced unseen Acc"]) for row in rows.values()]
+    strong = [recorded.ours(row["Balanced unseen Acc"]) for row in recorded.table("strong", "MLP accuracy").values()]
+    assert f"right on {percents(accuracy)} of unseen samples" in flat_readme()
+    assert f"{percents(strong)} accurate on unseen workspaces" in flat_readme()
+
+
+def percents(fractions: list[float], digits: int = 0) -> str:
+    """ "67–78 %" as the pages write a range of fractions (the low end to ``digits`` decimals)."""
+    return f"{100 * min(fractions):.{digits}f}–{100 * max(fractions):.0f} %"
+
+
+def flat_readme() -> str:
+    return " ".join(README.read_text().split())
 
 
 def test_the_index_gives_each_scenarios_training_grids():

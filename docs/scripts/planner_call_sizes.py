@@ -1,5 +1,5 @@
 """The calls our planners make to the exact checker, and what they cost against one batch (docs/benchmarks.md,
-"For maintainers: inside the compiled checker").
+"For maintainers", "Inside the compiled checker").
 
     python docs/scripts/planner_call_sizes.py [N_QUERIES [SEED]]
 

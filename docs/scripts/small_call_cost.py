@@ -1,5 +1,5 @@
 """What a small call costs the compiled box checker per configuration, against one batch (docs/benchmarks.md,
-"For maintainers: inside the compiled checker").
+"For maintainers", "Inside the compiled checker").
 
     python docs/scripts/small_call_cost.py [SCENARIOS [ROUNDS]]
 
