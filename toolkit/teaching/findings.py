@@ -146,7 +146,8 @@ def per_point_sentence(per_point: Mapping[str, float], tie: float = TIE) -> str:
     without, with_ = per_point["without"], per_point["with"]
     said = (
         f"The connection stage took {1e9 * without:,.0f} ns an edge point without prediction and "
-        f"{1e9 * with_:,.0f} ns with it (medians over the queries)"
+        f"{1e9 * with_:,.0f} ns with it (each the median of the queries' own times per point, not the table's median "
+        "time over its median count)"
     )
     if time_verdict(with_ / without, tie=tie) == TIES:
         return f"{said}: the same cost, as it should be, since the same exact checker checks both modes' edges."
