@@ -234,8 +234,7 @@ def chapter_04() -> dict:
         "MD:" + paper_mlp(),
         (
             "MD:This run took 49 s from the first cell to this one, at a load average of 2.1 on 2 cores.",
-            f"MD:- **The paper's claim itself** (section 6): {CLAIM_STATUS}\n"
-            f"- {SLOW}",
+            f"MD:- **The paper's claim itself** (section 6): {CLAIM_STATUS}\n- {SLOW}",
         ),
     )
     nb["cells"].insert(-1, {"cell_type": "markdown", "source": PROSE_04})  # the chapter's own prose, as written
