@@ -138,7 +138,8 @@ def cae(tables: Tables) -> str:
 
 def implied_valid_share(acc: float, tpr: float, tnr: float) -> float:
     """The share ``p`` of valid samples in a test that a classifier's accuracy, TPR and TNR on it imply:
-    Acc = TPR·p + TNR·(1 − p). The paper reports no share for its tests; its Table 2 gives the three scores."""
+    Acc = TPR·p + TNR·(1 − p). The paper gives no share for its unseen tests (its seen ones: "approximately
+    distributed 50/50"); its Table 2 gives the three scores."""
     if tpr == tnr:
         raise ValueError(f"TPR and TNR are equal ({tpr}): the accuracy is the same for every share of valid samples")
     return (acc - tnr) / (tpr - tnr)
