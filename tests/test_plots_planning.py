@@ -166,6 +166,9 @@ def test_roadmap_names_every_mark_and_draws_start_and_goal_whole_and_large(exact
     nodes, *_, start, goal = [c for c in ax.collections if not isinstance(c, LineCollection)]
     assert [start.get_clip_on(), goal.get_clip_on()] == [False, False]  # whole where they lie on the edge
     assert goal.get_sizes()[0] >= 10 * nodes.get_sizes()[0] and start.get_sizes()[0] >= 4 * nodes.get_sizes()[0]
+    lower, upper = exact.workspace.lower, exact.workspace.upper  # review r19a: a start square half outside the frame
+    for (low, high), lo, hi in zip((ax.get_xlim(), ax.get_ylim()), lower, upper):
+        assert low <= lo - 0.03 * (hi - lo) and high >= hi + 0.03 * (hi - lo)  # a margin round the C-space
 
 
 def test_roadmap_steps_one_panel_per_step(exact):

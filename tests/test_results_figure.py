@@ -12,6 +12,7 @@ from PIL import Image
 
 from toolkit.experiments.paper_numbers import IMPROVEMENT
 from toolkit.plots import alt, timings
+from toolkit.teaching import checker_scope
 from tools import recorded_results, results_summary
 
 TEXT = recorded_results.RESULTS.read_text()
@@ -171,10 +172,12 @@ def test_no_two_points_of_a_panel_overlap_at_the_pages_width(drawn):
 CLAIM = TEXT.partition(results_summary.CLAIM_BEGIN)[2].partition(results_summary.CLAIM_END)[0].strip()
 
 
-def _own_ratios(text: str) -> dict[tuple[str, str], tuple[float, ...]]:
-    """The `strong --planner paper` table "each query's own ratio", read from the page's Markdown on its own:
-    ``{(scenario, sampler): (median, q1, q3)}``."""
-    section = text.partition("each query's own ratio\n")[2].partition("\n###")[0]
+def _own_ratios(text: str, key: str = "strong --planner paper") -> dict[tuple[str, str], tuple[float, ...]]:
+    """The table "each query's own ratio" of the section ``key`` (`strong --planner paper`, or python-fcl on both
+    sides), read from the page's Markdown on its own: ``{(scenario, sampler): (median, q1, q3)}``."""
+    heading = re.search(rf"(?m)^### `{re.escape(key)}`, [^\n]*each query's own ratio\n", text)
+    assert heading is not None, key
+    section = text[heading.end() :].partition("\n###")[0]
     found = {}
     for scenario, cells in re.findall(r"(?m)^\| (\w+) \| (\d.*) \|$", section):
         for sampler, cell in zip(SAMPLERS, cells.split(" | ")):
@@ -193,8 +196,18 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
     table = _own_ratios(TEXT)
     assert len(table) == 16 and table["3dc9", "OB"] == (1.24, 1.12, 1.36)
     points = [line for line in ax.get_lines() if len(line.get_ydata()) == 1]
-    medians = sorted(float(line.get_ydata()[0]) for line in points)
+    filled = [line for line in points if line.get_markerfacecolor() != "white"]  # the compiled checker's
+    medians = sorted(float(line.get_ydata()[0]) for line in filled)
     assert medians == pytest.approx(sorted(m for m, _, _ in table.values()))
+    slow = _own_ratios(TEXT, checker_scope.SLOW)  # review r19a: python-fcl on both sides, hollow beside them
+    hollow = sorted(float(line.get_ydata()[0]) for line in points if line.get_markerfacecolor() == "white")
+    assert slow and hollow == pytest.approx(sorted(m for m, _, _ in slow.values()))
+    left = {float(p.get_xdata()[0]) for p in filled}
+    for point in points:  # each hollow point just right of a filled one: its sampler's, with our compiled checker
+        if point not in filled:
+            assert any(0.2 < point.get_xdata()[0] - x < 0.5 for x in left)
+    both = [*table.values(), *slow.values()]  # the whiskers: both series'
+    assert f"{len(slow)} medians so far" in CLAIM and "The hollow points beside them" in CLAIM
     marker = {"costs": "o", "tie": "s", "saves": "^"}
     for line in points:
         median = float(line.get_ydata()[0])
@@ -202,7 +215,7 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
         assert line.get_marker() == marker[read], median
     segments = [s for c in ax.collections if hasattr(c, "get_segments") for s in c.get_segments()]  # the whiskers
     ends = sorted((round(s[:, 1].min(), 6), round(s[:, 1].max(), 6)) for s in segments)
-    assert ends == sorted((q1, q3) for _, q1, q3 in table.values())
+    assert ends == sorted((q1, q3) for _, q1, q3 in both)
     legend = fig.legends[0].get_window_extent(fig.canvas.get_renderer())
     assert legend.y0 >= ax.get_tightbbox(fig.canvas.get_renderer()).y1 - 1
     with Image.open(results_summary.CLAIM_FIGURE) as image:

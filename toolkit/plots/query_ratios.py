@@ -3,8 +3,11 @@
 A planning verdict over many queries reads the median of each query's own ratio (its time with prediction over its
 own time without), not a ratio of means: a few slow queries move a mean. :func:`own_ratios` draws that median for
 every scenario and sampler in one panel, the middle half of the ratios as a whisker, against the line at 1 and the
-tie band; each point's colour and marker say what its median reads as (saves, a tie, costs). ``docs/results.md``
-shows it first, for the accurate network inside Algorithm 1. Returns a matplotlib ``Figure``; never calls ``show()``.
+tie band; each point's colour and marker say what its median reads as (saves, a tie, costs). A second series (the same
+network with another exact checker, ``slow``) sits beside the first in each sampler's slot, its markers hollow, so the
+two are told apart without colour. ``docs/results.md`` shows it first, for the accurate network inside Algorithm 1,
+with our compiled checker (filled) and with python-fcl on both sides (hollow). Returns a matplotlib ``Figure``; never
+calls ``show()``.
 """
 
 from __future__ import annotations
@@ -21,47 +24,36 @@ from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 
 READS = (COSTS, TIES, SAVES)  # what a median reads as, in the legend's order; each its own colour and marker
 GAP = 1  # an empty slot between two scenarios' groups of samplers
+APART = 0.17  # where a scenario has two series: each point this far from its sampler's tick, the first to the left
+Cells = Mapping[str, Mapping[str, tuple[float, float, float]]]  # {scenario: {sampler: (median, q1, q3)}}
 
 
 def own_ratios(
-    cells: Mapping[str, Mapping[str, tuple[float, float, float]]], *, title: str, tie: float = TIE
+    cells: Cells, *, title: str, tie: float = TIE, slow: Cells | None = None, series: tuple[str, str] = ("", "")
 ) -> Figure:
     """``{scenario: {sampler: (median, q1, q3)}}`` of each query's own ratio, with / without prediction: a point per
     scenario and sampler at its median, a whisker over its middle half (``q1`` to ``q3``), on a log axis with the
     line at 1 and the shaded tie band from ``1 - tie`` to ``1 + tie``. A point's colour and marker give the verdict
     its median reads as (:func:`toolkit.util.verdicts.time_verdict`), named in a legend over the panel; each point's
-    sampler is written under it, each scenario under its samplers."""
+    sampler is written under it, each scenario under its samplers. ``slow``, where given, is a second series of the
+    same form (any of the scenarios), drawn hollow beside the first; ``series`` names the two in the legend."""
+    slow = {} if slow is None else slow
     fig = Figure(figsize=(PAGE_WIDTH, 3.9))
     ax = fig.subplots()
     names: list[str] = []  # tick labels: the samplers
     ticks: list[float] = []  # their x
     centres: list[float] = []  # each scenario's middle
-    for k, by_sampler in enumerate(cells.values()):
+    for k, (scenario, by_sampler) in enumerate(cells.items()):
         start = len(names) + k * GAP
         x = start + np.arange(len(by_sampler))  # (samplers,)
-        values = np.array(list(by_sampler.values()))  # (samplers, 3): median, q1, q3
-        ax.errorbar(
-            x,
-            values[:, 0],
-            yerr=[values[:, 0] - values[:, 1], values[:, 2] - values[:, 0]],
-            fmt="none",
-            ecolor=COLORS["ink"],
-            capsize=3,
-            linewidth=1,
-            zorder=2,
-        )
-        for xi, median in zip(x, values[:, 0]):
-            look = series_style(READS.index(time_verdict(median, tie=tie)))
-            (point,) = ax.plot(
-                [xi], [median], linestyle="none", marker=look["marker"], color=look["color"], markersize=7, zorder=3
-            )
-            point.set_path_effects(halo(1.0))
+        second = slow.get(scenario, {})
+        _points(ax, x - APART * bool(second), by_sampler, tie, hollow=False)
+        at = [i for i, sampler in enumerate(by_sampler) if sampler in second]
+        _points(ax, x[at] + APART, {s: second[s] for s in by_sampler if s in second}, tie, hollow=True)
         names += list(by_sampler)
         ticks += list(x)
         centres.append(float(x.mean()))
-    for k, reads in enumerate(READS):  # the legend's entries, each verdict once, whether drawn or not
-        look = series_style(k)
-        ax.plot([], [], linestyle="none", marker=look["marker"], color=look["color"], markersize=7, label=_read(reads))
+    _legend_entries(ax, series if slow else None)
     ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
     tie_band(ax, tie)
     ax.set_xticks(ticks, names)
@@ -74,14 +66,68 @@ def own_ratios(
     groups.tick_params(length=0, pad=16, labelsize=10)
     ax.set_xlabel("sampler, by scenario", labelpad=16)  # under the scenarios' names
     ax.set_xlim(-0.7, ticks[-1] + 0.7)
-    drawn = [v for by in cells.values() for value in by.values() for v in value]
+    drawn = [v for table in (cells, slow) for by in table.values() for value in by.values() for v in value]
     ax.set_yscale("log")
     ax.set_ylim(min(*drawn, 1 - tie) / 1.15, max(*drawn, 1 + tie) * 1.15)
     log_ticks(ax)
     ax.set_ylabel("time with / without\n(below 1: saves)")
     ax.set_title(title, fontsize=10)
     legend_above(fig, [ax], 2)
-    return describe(fig, _words(cells, title, tie), [_part(cells, title)])
+    words = _words(cells, title, tie, series[0] if slow else "")
+    words += f" Hollow points beside them, {series[1]}. {_counts(slow, tie)}" if slow else ""
+    if not slow:
+        return describe(fig, words, [_part(cells, title)])
+    return describe(
+        fig, words, [_part(cells, f"{title}, {series[0]} (filled)"), _part(slow, f"{title}, {series[1]} (hollow)")]
+    )
+
+
+def _legend_entries(ax, series: tuple[str, str] | None) -> None:
+    """The legend's entries: each verdict once, whether drawn or not, and where there are two ``series``, which a
+    point's fill names."""
+    for k, reads in enumerate(READS):
+        look = series_style(k)
+        ax.plot([], [], linestyle="none", marker=look["marker"], color=look["color"], markersize=7, label=_read(reads))
+    for hollow, name in zip((False, True), series or ()):
+        label = f"{'hollow' if hollow else 'filled'}: {name}"
+        ax.plot([], [], linestyle="none", marker="D", markersize=6, label=label, **_fill(COLORS["ink"], hollow))
+
+
+def _points(ax, x: np.ndarray, by_sampler: Mapping[str, tuple[float, float, float]], tie: float, hollow: bool) -> None:
+    """One series' points of a scenario at ``x`` (samplers,): a whisker over each middle half, a marker at each median
+    in the colour and shape of what it reads as, hollow for the second series."""
+    if not by_sampler:
+        return
+    values = np.array(list(by_sampler.values()))  # (samplers, 3): median, q1, q3
+    ax.errorbar(
+        x,
+        values[:, 0],
+        yerr=[values[:, 0] - values[:, 1], values[:, 2] - values[:, 0]],
+        fmt="none",
+        ecolor=COLORS["ink"],
+        capsize=3,
+        linewidth=1,
+        zorder=2,
+    )
+    for xi, median in zip(x, values[:, 0]):
+        look = series_style(READS.index(time_verdict(median, tie=tie)))
+        (point,) = ax.plot(
+            [xi],
+            [median],
+            linestyle="none",
+            marker=look["marker"],
+            markersize=7,
+            zorder=3,
+            **_fill(look["color"], hollow),
+        )
+        point.set_path_effects(halo(1.0))
+
+
+def _fill(colour: str, hollow: bool) -> dict:
+    """A marker's colours: filled in ``colour``, or hollow (white inside, ``colour`` round it, a thicker edge)."""
+    if hollow:
+        return dict(color=colour, markerfacecolor="white", markeredgecolor=colour, markeredgewidth=1.8)
+    return dict(color=colour)
 
 
 def _read(reads: str) -> str:
@@ -91,19 +137,25 @@ def _read(reads: str) -> str:
     ]
 
 
-def _words(cells: Mapping[str, Mapping[str, tuple[float, float, float]]], title: str, tie: float) -> str:
-    """The text alternative: what is drawn, then how many medians read as each verdict and their range."""
-    medians = [value[0] for by in cells.values() for value in by.values()]
-    said = [time_verdict(m, tie=tie) for m in medians]
-    counts = ", ".join(f"{said.count(r)} read as “{r}”" for r in READS)
+def _words(cells: Cells, title: str, tie: float, label: str = "") -> str:
+    """The text alternative: what is drawn (``label``: the series, where there are two), then :func:`_counts`."""
+    which = f" ({label}: filled)" if label else ""
     return (
         f"{title}: the median of each query's own time ratio with prediction over without, a point per scenario and "
-        f"sampler, a whisker over the middle half of the ratios, log scale, read against the line at 1 and the shaded "
-        f"{band_words(tie)}. Of {len(medians)} medians, from {min(medians):.2f} to {max(medians):.2f}: {counts}."
+        f"sampler{which}, a whisker over the middle half of the ratios, log scale, read against the line at 1 and the "
+        f"shaded {band_words(tie)}. {_counts(cells, tie)}"
     )
 
 
-def _part(cells: Mapping[str, Mapping[str, tuple[float, float, float]]], title: str) -> Part:
+def _counts(cells: Cells, tie: float) -> str:
+    """How many medians read as each verdict, and their range."""
+    medians = [value[0] for by in cells.values() for value in by.values()]
+    said = [time_verdict(m, tie=tie) for m in medians]
+    counts = ", ".join(f"{said.count(r)} read as “{r}”" for r in READS)
+    return f"Of {len(medians)} medians, from {min(medians):.2f} to {max(medians):.2f}: {counts}."
+
+
+def _part(cells: Cells, title: str) -> Part:
     """The longer description: each scenario's row, each sampler's median and middle half."""
     samplers = tuple(dict.fromkeys(s for by in cells.values() for s in by))
     rows = tuple(
