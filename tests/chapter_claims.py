@@ -626,6 +626,7 @@ SLOW_TOTAL = {  # ... and each query's total time, by the verdict every recorded
     findings.SAVES: ("each query's total time was shorter for every sampler measured",),
     findings.COSTS: ("each query's total time was longer for every sampler measured",),
 }
+SLOW_MOSTLY_TIES = "each query's total time was mostly a tie"  # no one verdict everywhere, ties in most pairs
 
 
 def _slow_checker(nb, facts: checker_scope.SlowChecker | None = None) -> list[str]:
@@ -652,6 +653,11 @@ def _slow_checker(nb, facts: checker_scope.SlowChecker | None = None) -> list[st
         problems += [
             f"04: the prose says '{p}'; the record: {dict(totals)}" for p in phrases if v != verdict and p in written
         ]
+    mostly = verdict is None and 2 * totals[findings.TIES] > len(facts.own)
+    if (written.count(SLOW_MOSTLY_TIES) >= 3) != mostly:
+        problems.append(
+            f"04: the prose on '{SLOW_MOSTLY_TIES}' (opening, section 6, summary); the record: {dict(totals)}"
+        )
     return problems
 
 
