@@ -1,5 +1,7 @@
 """The crossover figure shades what its verdicts call "network cheaper", and nothing the list calls "can't tell"."""
 
+from pathlib import Path
+
 import numpy as np
 from matplotlib.collections import PolyCollection
 
@@ -58,8 +60,8 @@ def test_a_tick_label_that_would_touch_its_neighbour_is_left_out_and_the_last_is
 
 
 def test_the_drawn_tick_labels_keep_apart():
-    """docs/crossover.png's obstacle panel: no two named ticks closer than a digit and a half, as drawn (reader
-    r10a: 100, 200 and 500 crowded); every measured value still has a tick, the unnamed ones short."""
+    """docs/crossover.png's obstacle panel: every measured value named (reader r20d), slanted where level labels
+    would crowd (reader r10a: 100, 200 and 500 crowded), each a line's height or more from the next."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     values = [10, 25, 50, 100, 200, 350, 500]
@@ -69,9 +71,16 @@ def test_the_drawn_tick_labels_keep_apart():
     fig.set_dpi(110)
     FigureCanvasAgg(fig).draw()
     ax = fig.axes[0]
-    boxes = sorted((t.get_window_extent() for t in ax.get_xticklabels() if t.get_text()), key=lambda b: b.x0)
-    digit = 9 * 110 / 72 * 0.6
-    assert len(boxes) >= 4 and all(right.x0 - left.x1 >= 1.5 * digit for left, right in zip(boxes, boxes[1:]))
+    named = [t for t in ax.get_xticklabels() if t.get_text()]
+    assert [t.get_text() for t in named] == [f"{v}" for v in values]  # reader r20d: 350 had no number
+    if named[0].get_rotation() == 0:  # level: no two closer than a digit and a half
+        boxes = [t.get_window_extent() for t in named]
+        digit = 9 * 110 / 72 * 0.6
+        assert all(right.x0 - left.x1 >= 1.5 * digit for left, right in zip(boxes, boxes[1:]))
+    else:  # slanted at 45°, where level labels would crowd: a line's height apart along the axis or more
+        line = named[0].get_fontsize() * 110 / 72
+        at = sorted(ax.transData.transform([(v, 1) for v in values])[:, 0])
+        assert all(right - left >= line for left, right in zip(at, at[1:]))
     assert sorted([*ax.get_xticks(), *ax.get_xticks(minor=True)]) == values
 
 
@@ -104,3 +113,22 @@ def test_every_crossing_is_marked_and_said_each_label_apart():
     assert [t.get_text() for t in ax.texts] == ["31.6 obstacles", "3,160 obstacles"]
     assert first.y1 <= second.y0 or second.y1 <= first.y0 or first.x1 <= second.x0 or second.x1 <= first.x0
     assert "crosses the exact, default (compiled) one at 31.6 and at 3,160." in str(alt.details(fig))
+
+
+def test_the_recorded_crossover_names_every_measured_value():
+    """docs/crossover.json drawn as docs/crossover.png: every panel names every value it measured (reader r20d: the
+    350-block and 1,280-triangle points had no number), slanted where level labels would crowd."""
+    import json
+
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
+    recorded = json.loads((Path(__file__).resolve().parents[1] / "docs" / "crossover.json").read_text())
+    fig = crossover(recorded)
+    fig.set_dpi(110)
+    FigureCanvasAgg(fig).draw()
+    slanted = 0
+    for ax, sweep in zip(fig.axes, recorded["variables"].values()):
+        named = [t for t in ax.get_xticklabels() if t.get_text()]
+        assert len(named) == len(sweep["values"]), sweep["label"]
+        slanted += named[0].get_rotation() == 45
+    assert slanted >= 1  # the obstacles' 200, 350 and 500 would crowd level

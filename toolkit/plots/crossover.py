@@ -54,9 +54,11 @@ def crossover(results: dict) -> Figure:
     )
     handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # one legend, below
     fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=1, fontsize=9, frameon=False)
-    fig.tight_layout(rect=(0, (0.2 * len(handles) + 0.2) / fig.get_figheight(), 1, 1))  # a line an entry
+    room = (0, (0.2 * len(handles) + 0.2) / fig.get_figheight(), 1, 1)  # below: a line a legend entry
+    fig.tight_layout(rect=room)
     for ax, sweep in zip(axes, sweeps.values()):
         _name_ticks(ax, np.asarray(sweep["values"], dtype=float))
+    fig.tight_layout(rect=room)  # again, for the slanted labels' height
     text = f"Cost per configuration of the exact and the learned check, {results['scenario']}, preset "
     text += f"{results['preset']}{quick}, microseconds on log axes. "
     parts = [_in_a_table(sweep) for sweep in sweeps.values()]
@@ -194,7 +196,7 @@ def _tick_labels(x: np.ndarray, px: np.ndarray, char_px: float) -> list[str]:
     is always named. Where the plain numbers (``1,000``) would leave one out, thousands are written short
     (``1k``, ``10k``: reader r12a found no 1,000 on the batch panel), and only what still crowds is left out."""
     for labels in ([f"{v:,.0f}" for v in x], [_short(v) for v in x]):
-        kept = _kept_apart(labels, px, char_px)
+        kept = _kept_apart(labels, px, [char_px * (len(label) / 2 + 0.75) for label in labels])
         if all(kept):
             break
     return kept
@@ -206,9 +208,9 @@ def _short(value: float) -> str:
     return f"{value / 1000:g}k" if value >= 1000 and value % 1000 == 0 else f"{value:,.0f}"
 
 
-def _kept_apart(labels: list[str], px: np.ndarray, char_px: float) -> list[str]:
-    """``labels`` with those left out (``""``) that would come within a digit and a half of the one before."""
-    room = [char_px * (len(label) / 2 + 0.75) for label in labels]  # (n,) half a label's width, and half the gap
+def _kept_apart(labels: list[str], px: np.ndarray, room: list[float]) -> list[str]:
+    """``labels`` with those left out (``""``) that would come closer to the one before than their ``room`` (n,)
+    pixels each allows (half a label's width, and half the gap wanted between two)."""
     shown = [0]
     for k in range(1, len(labels)):
         if px[k] - px[shown[-1]] >= room[k] + room[shown[-1]]:
@@ -219,11 +221,19 @@ def _kept_apart(labels: list[str], px: np.ndarray, char_px: float) -> list[str]:
 
 
 def _name_ticks(ax, x: np.ndarray) -> None:
-    """Tick every measured value ``x (n,)`` of a laid-out panel, naming those whose labels keep apart as drawn (the
-    others get a short, unnamed tick)."""
+    """Name every measured value ``x (n,)`` of a laid-out panel under its tick: level where the labels keep apart as
+    drawn, slanted where level ones would crowd (reader r20d: 350 blocks and 1,280 triangles had no number), and
+    only what still crowds slanted gets a short, unnamed tick."""
     px = ax.transData.transform(np.column_stack([x, np.ones_like(x)]))[:, 0]  # (n,) where each tick lies, pixels
     char_px = TICK_POINTS * ax.figure.dpi / 72 * 0.64  # a digit's width at the tick labels' size
     labels = _tick_labels(x, px, char_px)
+    slanted = not all(labels)
+    if slanted:  # at 45°, neighbours part by a line's height, not a label's width
+        labels = _kept_apart([f"{v:,.0f}" for v in x], px, [0.6 * char_px / 0.64] * len(x))
     ax.set_xticks(x[[bool(t) for t in labels]], [t for t in labels if t])  # the values named
     ax.set_xticks(x[[not t for t in labels]], minor=True)  # the values measured but not named: short ticks
     ax.xaxis.set_minor_formatter(NullFormatter())
+    if slanted:
+        ax.tick_params(axis="x", labelrotation=45)
+        for label in ax.get_xticklabels():
+            label.set_horizontalalignment("right")
