@@ -273,6 +273,19 @@ def test_a_maps_circles_lie_under_its_outlines_and_every_mark_inside_its_frame()
         assert inside >= np.sqrt(mark.get_sizes()[0]) / 2 + cell_marks.RING - 1e-6
 
 
+def test_the_threshold_line_lies_over_the_outlines_and_under_the_squares():
+    """Reader r20b, chapter 03's `strong` map: where the model is sharp its dotted threshold line runs along the
+    C-obstacle's outlines, and drawn under them it could not be seen. It is drawn over them, the squares over both."""
+    fine = slices.slice_grid(robots.point_robot(), n=60)
+    ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
+    valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (60, 60)
+    ax = pc.probability_map(np.where(valid, 0.9, 0.1), valid, fine, threshold=0.5).axes[0]
+    contours = [c for c in ax.get_children() if isinstance(c, ContourSet)]
+    (cut,) = [c for c in contours if c is not boundary_of(ax)]
+    (squares,) = [c for c in cell_marks.cell_marks(ax) if c.get_label() == "invalid kept (dangerous)"]
+    assert boundary_of(ax).get_zorder() < cut.get_zorder() < squares.get_zorder()
+
+
 def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, probability, valid):
     threshold = 0.55
     ax_map, ax_counts, ax_roc = pc.threshold_view(probability, valid, grid, threshold=threshold).axes

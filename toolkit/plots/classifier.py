@@ -50,7 +50,8 @@ CUT = 2.5  # points: the path map's dotted line at the model's threshold, bold e
 CUT_MAP = 1.5  # points: the same line on a map of mistakes, whose marks it must not bury
 ZORDER = {1: 1.5, 3: 3.0}  # on a P(valid) map: conservative circles under the lines (2: the boundary, the threshold's
 # contour), where many sit (r19b: they hid the outlines); the few dangerous squares over them, never cut (r10b, r11)
-PITCH = {1: 26.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
+CUT_ZORDER = 2.5  # the threshold's contour over the boundary (2), under the squares (r20b: it hid under the outlines)
+PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
 
 
@@ -229,7 +230,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
 
 def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float, *, mistakes=True, cut=CUT_MAP):
     """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary, the threshold's contour dotted ``cut`` points
-    wide (under the boundary: where the model is sharp, the boundary covers it) and, with ``mistakes``, dangerous
+    wide (over the boundary: where the model is sharp, the two run together) and, with ``mistakes``, dangerous
     cells as squares and conservative ones as circles, sparse enough that the grey between them is P(valid)
     (review r18b: a hatch of dots over the `paper` map's rejected free space hid its grey)."""
     probability = _on_grid(probability, grid, "probability")
@@ -247,6 +248,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
         line = ax.contour(*grid.axes, probability.T, levels=[threshold], colors=COLORS["ink"], linestyles=":")
         line.set_linewidth(cut)
         line.set_path_effects(halo(cut, ("free",)))  # a white ring: it shows on the dark side too
+        line.set_zorder(CUT_ZORDER)  # over the boundary: where the model is sharp the two run together (r20b)
     _draw_boundary(ax, valid, grid)
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
     if mistakes:  # fit_cell_marks sizes them, no two closer than their pitch
