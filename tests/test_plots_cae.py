@@ -145,6 +145,8 @@ def test_accuracy_vs_all_free_has_one_point_per_workspace_and_the_diagonal():
     means = {c.get_gid(): c.get_offsets()[0] for c in ax.collections if c.get_gid().endswith(": mean")}
     assert means.keys() == {"seen: mean", "unseen: mean"}  # each group's mean drawn large, over every point
     np.testing.assert_allclose(means["unseen: mean"], [0.89, 0.88])
+    hollow = [c for c in ax.collections if c.get_gid().endswith(": mean")]  # r20b: a filled mean hid points at 1.00
+    assert all(c.get_facecolor().size == 0 or np.all(c.get_facecolor()[:, 3] == 0) for c in hollow)
     (diagonal,) = ax.get_lines()
     np.testing.assert_allclose(diagonal.get_xdata(), diagonal.get_ydata())
     (legend,) = fig.legends  # below the axes, over no point

@@ -273,6 +273,19 @@ def test_a_maps_circles_lie_under_its_outlines_and_every_mark_inside_its_frame()
         assert inside >= np.sqrt(mark.get_sizes()[0]) / 2 + cell_marks.RING - 1e-6
 
 
+def test_the_threshold_line_lies_over_the_outlines_and_under_the_squares():
+    """Reader r20b, chapter 03's `strong` map: where the model is sharp its dotted threshold line runs along the
+    C-obstacle's outlines, and drawn under them it could not be seen. It is drawn over them, the squares over both."""
+    fine = slices.slice_grid(robots.point_robot(), n=60)
+    ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
+    valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (60, 60)
+    ax = pc.probability_map(np.where(valid, 0.9, 0.1), valid, fine, threshold=0.5).axes[0]
+    contours = [c for c in ax.get_children() if isinstance(c, ContourSet)]
+    (cut,) = [c for c in contours if c is not boundary_of(ax)]
+    (squares,) = [c for c in cell_marks.cell_marks(ax) if c.get_label() == "invalid kept (dangerous)"]
+    assert boundary_of(ax).get_zorder() < cut.get_zorder() < squares.get_zorder()
+
+
 def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, probability, valid):
     threshold = 0.55
     ax_map, ax_counts, ax_roc = pc.threshold_view(probability, valid, grid, threshold=threshold).axes
@@ -440,8 +453,21 @@ def test_path_map_marks_start_and_goal_whole_on_the_maps_edge(grid, probability,
         assert end.get_markeredgecolor() == COLORS["free"]
         (ring,) = [e for e in end.get_path_effects() if hasattr(e, "_gc")]
         assert to_rgba(ring._gc["foreground"]) == to_rgba(COLORS["ink"])
-    assert drawn[-1].get_markevery() == slice(1, -1)
+    assert drawn[-1].get_markevery() == [1]
     assert {"start", "goal"} <= {t.get_text() for t in fig.legends[0].get_texts()}
+
+
+def test_path_map_leaves_out_a_diamond_that_would_touch_an_end(grid, probability, valid):
+    """Reader r20b: the path's second configuration, 1.6 of 30 above the start at the map's edge, sat its diamond on
+    the start square. A configuration within END_CLEAR of the map's width of an end has no diamond; the rest do."""
+    start = np.array([30.2, 24.2])
+    path = np.array([start, start + [0.0, 1.6], [20.0, 27.0], [12.0, 14.0], [10.5, 10.2], [9.0, 9.0]])  # (6, 2)
+    ax = pc.path_map(probability, valid, grid, threshold=0.5, path=path, nodes=path, nodes_valid=np.ones(6, bool)).axes[
+        0
+    ]
+    (line,) = [line for line in ax.get_lines() if line.get_marker() == "D"]
+    assert line.get_markevery() == [2, 3]  # not 1 (beside the start) nor 4 (beside the goal)
+    np.testing.assert_array_equal(line.get_xydata(), path)  # the dashed line passes through every one
 
 
 def test_confusion_bars_keep_their_counts_inside_the_frame_and_name_every_rate():

@@ -175,23 +175,23 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
     ax.plot([low, 1], [low, 1], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal)')
     ax.set_xlabel('share of free cells = accuracy of answering "all free"')
     ax.set_ylabel("reconstruction accuracy")
-    ax.set_title("Above the diagonal: better than all free (large marks: each group's mean)", fontsize=10)
+    ax.set_title("Above the diagonal: better than all free (large hollow marks: each group's mean)", fontsize=10)
     fig.legend(loc="outside lower center", fontsize=9, frameon=False)  # below the axes: it covers no point
     text = "Reconstruction accuracy against the accuracy of answering all free, one point per workspace. "
     return describe(fig, text + "; ".join(said) + ".")
 
 
 def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int) -> None:
-    """Group ``k`` of ``n``'s mean, a large marker of its style over every cloud, each later group's smaller and on
-    top: two means at one spot both show."""
+    """Group ``k`` of ``n``'s mean, a large hollow marker of its style over every cloud, each later group's smaller
+    and on top: two means at one spot both show, and the points under them too."""
     style = series_style(k)
     ax.scatter(
         *mean,
         s=MEAN_SIZE * (1 - 0.6 * k / max(n - 1, 1)),
-        c=style["color"],
+        facecolors="none",  # hollow: the points under it show (r20b: a filled mean hid the seen grids at 1.00)
+        edgecolors=style["color"],
         marker=style["marker"],
-        edgecolors=COLORS["free"],
-        linewidths=1.2,
+        linewidths=2.2,
         zorder=20 + k,
         path_effects=halo(1.2, ("ink",)),
         gid=f"{name}: mean",

@@ -47,10 +47,11 @@ DANGEROUS, CONSERVATIVE, BOUNDARY = COLORS["dangerous"], COLORS["conservative"],
 ANSWER_COLORS = (COLORS["free"], CONSERVATIVE, COLORS["occupied"], DANGEROUS)  # free white, obstacles dark
 MISTAKE_MARKERS = {1: "o", 3: "s"}  # conservative circles, dangerous squares: the mistakes told without colour
 CUT = 2.5  # points: the path map's dotted line at the model's threshold, bold enough to follow across the map (r15c)
+END_CLEAR = 0.06  # of a map's width: a path's diamond nearer an end than this is left out, the end's mark beside it
 CUT_MAP = 1.5  # points: the same line on a map of mistakes, whose marks it must not bury
 ZORDER = {1: 1.5, 3: 3.0}  # on a P(valid) map: conservative circles under the lines (2: the boundary, the threshold's
 # contour), where many sit (r19b: they hid the outlines); the few dangerous squares over them, never cut (r10b, r11)
-PITCH = {1: 26.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
+PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
 
 
@@ -104,8 +105,8 @@ def path_map(
     """A planner's roadmap ``nodes (M, dof)`` and returned ``path (P, dof)`` over a P(valid) map of the grid's two DoFs.
 
     Nodes in collision (``nodes_valid`` False, by the exact checker) are the dangerous mistakes the planner accepted:
-    large ink crosses ringed white, labelled. The path, checked exactly, avoids them; it is dashed with a
-    diamond per configuration, so that it stands apart from the solid C-obstacle boundary. The model's threshold is a
+    large ink crosses ringed white, labelled. The path, checked exactly, avoids them; it is dashed with a diamond per
+    configuration (none beside an end), to stand apart from the solid C-obstacle boundary. The model's threshold is a
     bold dotted line (P(valid) = threshold): the roadmap's dots on its dark side are nodes the model rejected, which
     the exact checker drew. The map's mistakes are not marked: no hatch dot passes for a node, no square buries a cross.
     """
@@ -229,7 +230,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
 
 def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float, *, mistakes=True, cut=CUT_MAP):
     """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary, the threshold's contour dotted ``cut`` points
-    wide (under the boundary: where the model is sharp, the boundary covers it) and, with ``mistakes``, dangerous
+    wide (over the boundary: where the model is sharp, the two run together) and, with ``mistakes``, dangerous
     cells as squares and conservative ones as circles, sparse enough that the grey between them is P(valid)
     (review r18b: a hatch of dots over the `paper` map's rejected free space hid its grey)."""
     probability = _on_grid(probability, grid, "probability")
@@ -247,6 +248,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
         line = ax.contour(*grid.axes, probability.T, levels=[threshold], colors=COLORS["ink"], linestyles=":")
         line.set_linewidth(cut)
         line.set_path_effects(halo(cut, ("free",)))  # a white ring: it shows on the dark side too
+        line.set_zorder(2.5)  # over the boundary (2), under the squares: r20b could not see it under the outlines
     _draw_boundary(ax, valid, grid)
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
     if mistakes:  # fit_cell_marks sizes them, no two closer than their pitch
@@ -259,6 +261,9 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid: np.ndarray, path: np.ndarr
     """A roadmap's valid nodes as dots, those in collision as crosses, and the path dashed with diamonds, over a map
     of the two ``dofs``."""
     x, y = dofs
+    scale = np.abs(np.diff([ax.get_xlim(), ax.get_ylim()]).ravel())  # (2,) the map's width and height
+    apart = np.abs(path[:, None, [x, y]] - path[None, [0, -1]][..., [x, y]]) / scale  # (P, 2 ends, 2) map widths
+    near = apart.max(axis=2).min(axis=1) < END_CLEAR  # (P,) beside an end: no diamond (r20b: one sat on the start)
     dots = dict(color=COLORS["node"], markersize=4, label="roadmap node, valid", path_effects=halo(0.5, ("free",)))
     ax.plot(nodes[nodes_valid, x], nodes[nodes_valid, y], ".", **dots)
     ax.plot(
@@ -285,7 +290,7 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid: np.ndarray, path: np.ndarr
         path[:, x],
         path[:, y],
         "--D",  # dashed, a diamond per configuration: apart from the solid C-obstacle boundary, same blue
-        markevery=slice(1, -1),  # the ends have marks of their own: no diamond's corners peek out from under them
+        markevery=[k for k in range(1, len(path) - 1) if not near[k]],  # the ends have marks, and room around them
         color=COLORS["path"],
         linewidth=3,
         markersize=7,

@@ -167,7 +167,7 @@ def occupancy_figure(workspace: Workspace, layers: Sequence[int] | None = None, 
         titles = [f"layer z = {workspace.lower[2] + z + 0.5:g}" for z in drawn]
     columns = min(columns, len(images))
     rows = -(-len(images) // columns)
-    panel = 4.5 if len(images) == 1 else min(2.6, (PAGE_WIDTH - 0.4) / columns)  # inches
+    panel = 4.5 if len(images) == 1 else min(3.0, (PAGE_WIDTH - 0.4) / columns)  # inches: two a row fill the page
     fig = Figure(figsize=(panel * columns, panel * rows + 0.4))
     axes = fig.subplots(
         rows, columns, squeeze=False, sharex=True, sharey=True, gridspec_kw={"hspace": 0.35, "wspace": 0.15}
