@@ -355,7 +355,11 @@ def test_the_index_table_counts_the_recorded_cells():
             counted(by_means(recorded.ALGORITHM_1)),
             own_ratios(recorded.ALGORITHM_1),
         ],
-        "python-fcl on both sides": [cells(list(by_means(FCL_ALIKE))), counted(by_means(FCL_ALIKE)), own_ratios(FCL_ALIKE)],
+        "python-fcl on both sides": [
+            cells(list(by_means(FCL_ALIKE))),
+            counted(by_means(FCL_ALIKE)),
+            own_ratios(FCL_ALIKE),
+        ],
         "in our lazy PRM": [cells(list(by_means("strong"))), counted(by_means("strong")), "not recorded"],
     }
     rows = [
@@ -366,7 +370,9 @@ def test_the_index_table_counts_the_recorded_cells():
     assert len(rows) == 2 + len(expected)  # the header, the `| --- |` line and a row each
     answer = " ".join(readme_opening().split())  # the answer above the table quotes the means' counts
     saved, _, lost = counted(by_means(recorded.ALGORITHM_1)).split(" / ")
-    assert f"Table 3's statistic, it saved 10 % or more in {saved} of 16 cells and lost 10 % or more in {lost}." in answer
+    assert f"Table 3's statistic, it saved 10 % or more in {saved} of 16 cells and lost 10 % or more in {lost}." in (
+        answer
+    )
     lazy = [change(r) for row in recorded.median_ratios("strong", tables).values() for r in row["total"].values()]
     assert counted(by_means("strong")).endswith(f" / {lazy.count('more time')}")  # both statistics agree
     assert f"In our faster lazy PRM it took longer in {lazy.count('more time')} of {len(lazy)} cells." in answer
