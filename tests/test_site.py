@@ -92,7 +92,7 @@ def test_widgets_are_a_visible_note_and_no_widget_state_is_left(site):
 @pytest.mark.slow
 def test_the_site_has_every_page_a_student_needs(site):
     expected = ["index.html", "docs/results.html", "docs/fidelity.html", "docs/benchmarks.html", "docs/design.html"]
-    expected += ["docs/benchmarks_history.html"]
+    expected += ["docs/benchmarks_history.html", "docs/checker_engineering.html"]
     expected += ["docs/viewer.html", "tutorials/index.html", "tutorials/instructors.html", "reference/index.html"]
     expected += ["tutorials/instructors_jupyterhub.html"]
     expected += [f"tutorials/assignments/{name}/{name}.html" for name in grading.assignment_names()]
