@@ -180,6 +180,7 @@ def test_the_2ds_time_ratio_is_explained_against_its_rates():
 def test_every_ratio_column_of_the_small_calls_table_says_it_is_a_ratio():
     small = next(t for t in tables() if "call of 0, µs" in t[0])
     assert all("cost / batch cost" in h for h in small[0] if h.startswith("calls of"))
+    assert len(small[0]) <= 6, "seven columns of at least 5 rem overflow the page's column (review r20d)"
 
 
 def test_the_page_leaves_numba_internals_to_the_maintainers_page():
