@@ -933,9 +933,9 @@ def chapter_05(
         [
             "| 3DC-7, unseen | accuracy | TPR | TNR |",
             "| --- | ---: | ---: | ---: |",
-            f"| ours: the paper's recipe (`paper` preset), `docs/results.md` | **{recipe_acc}** | **{recipe_tpr}** "
-            "| **0%** |",
-            '| answering "valid" to all of its samples | 76% | 100% | 0% |',
+            "| ours: the paper's recipe (`paper` preset), uniform unseen samples, `docs/results.md` "
+            f"| **{recipe_acc}** | **{recipe_tpr}** | **0%** |",
+            '| answering "valid" to those same samples | 76% | 100% | 0% |',
             "| paper, Table 2 | 71% | 85% | 61% |",
         ]
     )
@@ -971,7 +971,8 @@ def test_chapter_05_fails_where_its_closing_answer_would_not_hold():
     valid and costs time with every sampler; the path found is valid at every frame."""
     assert problems(CH05, chapter_05(recipe_tpr="93%")) == [
         "05: the paper's recipe does not call every 3DC-7 sample valid: "
-        "[[\"ours: the paper's recipe (`paper` preset), `docs/results.md`\", '**76%**', '**93%**', '**0%**']]"
+        '[["ours: the paper\'s recipe (`paper` preset), uniform unseen samples, `docs/results.md`", '
+        "'**76%**', '**93%**', '**0%**']]"
     ]
     assert problems(CH05, chapter_05(recipe_medians={"BS": 2.0, "OB": 0.5, "G": 2.0, "BT": 2.0})) == [
         "05: the paper's recipe did not cost time with every sampler on 3DC-7: [['3DC-7, `paper` preset, medians', "
@@ -987,7 +988,8 @@ def test_chapter_05_holds_the_recipe_row_and_the_tie_band_to_its_closing():
     and a ratio labelled "a tie" needs its band printed."""
     assert problems(CH05, chapter_05(recipe_acc="80%")) == [
         "05: the paper's recipe is not as accurate as 'always valid' and above Table 2: {\"ours: the paper's recipe "
-        '(`paper` preset), `docs/results.md`": 80.0, \'answering "valid" to all of its samples\': 76.0, '
+        '(`paper` preset), uniform unseen samples, `docs/results.md`": 80.0, '
+        "'answering \"valid\" to those same samples': 76.0, "
         "'paper, Table 2': 71.0}"
     ]
     assert problems(CH05, chapter_05(tie="a ratio near 1 is a tie")) == [
