@@ -26,7 +26,7 @@ from matplotlib.patches import Patch
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import ROWS, Part, describe
-from toolkit.plots.dof_panels import dof_groups, draw_dofs
+from toolkit.plots.dof_panels import dof_groups, draw_dofs, wrap_frames
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR, draw_robot, link_style
 from toolkit.plots.still_panels import (
@@ -264,7 +264,7 @@ def _series_in_words(robot: BoxRobot, Q: np.ndarray, series: dict, threshold: fl
     text = f"each DoF scaled to its bounds (0 lower, 1 upper), a panel per kind ({kinds}), from start to end: "
     text += ", ".join(moves)
     for k, name in enumerate(robot.dof_names):  # an angle across ±π: its line jumps from one edge to the other
-        wraps = np.flatnonzero(np.abs(np.diff(scaled[:, k])) > 0.5)  # (w,) the frames before each wrap, as drawn
+        wraps = wrap_frames(scaled[:, k])  # (w,) the frames before each wrap, as drawn
         if len(wraps):
             at = ", ".join(f"{(t + 0.5) / (len(Q) - 1):.0%}" for t in wraps)
             text += (
@@ -307,7 +307,7 @@ def _draw_series(
     fig.legend(
         handles,
         [h.get_label() for h in handles],
-        title="each DoF in its bounds: 0 lower, 1 upper",
+        title="each DoF in its bounds: 0 lower, 1 upper" + _wrap_note(robot, Q, groups.get("angles", [])),
         title_fontsize=10,
         fontsize=10,
         ncol=min(robot.dof, 4),
@@ -317,6 +317,13 @@ def _draw_series(
         handlelength=3.0,
         columnspacing=0.8,
     )
+
+
+def _wrap_note(robot: BoxRobot, Q: np.ndarray, angles: list[int]) -> str:
+    """The legend title's second line where an angle wraps round ±π: its broken line is no missing data (r20c)."""
+    scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
+    names = [robot.dof_names[k] for k in angles if len(wrap_frames(scaled[:, k]))]
+    return f"\n{' and '.join(names)}: a gap where it wraps round ±π, no data missing" if names else ""
 
 
 def _draw_clearance(clearance: np.ndarray, ax, along: np.ndarray) -> None:
@@ -356,11 +363,11 @@ def _draw_scene(
     ):  # mplot3d's usual camera, turned where a block stands on a line of sight through the robot
         scene.view_init(30.0, -60.0 + clear_turn(robot, Q[index], workspace, margin, FRAME_TURNS, (30.0, -60.0)))
     _draw_trace(scene, robot, Q)
-    if workspace is not None and len(workspace.boxes):
-        mark_nearest(scene, robot.link_aabbs(Q[index : index + 1])[0], workspace.boxes)
     verdict = "" if valid is None else ": valid" if valid else ": in collision"
     scene.set_title(f"the robot, blocks near it{verdict}", fontsize=9)
     scene.set_box_aspect(None, zoom=1.15)  # the robot larger in its panel: mplot3d leaves wide margins
+    if workspace is not None and len(workspace.boxes):  # after the view and the zoom: it places its name on them
+        mark_nearest(scene, robot.link_aabbs(Q[index : index + 1])[0], workspace.boxes)
     scene.locator_params(nbins=4)  # few tick labels: drawing text is most of a frame's cost
     scene.tick_params(labelsize=9)
 

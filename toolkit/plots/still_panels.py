@@ -19,6 +19,7 @@ first, far to near, then the samples, the links far to near, the blocks that sta
 from __future__ import annotations
 
 import numpy as np
+from mpl_toolkits.mplot3d import proj3d
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
@@ -203,18 +204,20 @@ def mark_nearest(scene, links: np.ndarray, blocks: np.ndarray) -> None:
     lo, hi = blocks[int(np.argmin(np.linalg.norm(gaps, axis=-1).min(axis=1)))]  # (K, L, 3) gaps -> the nearest
     window = np.array([scene.get_xlim(), scene.get_ylim(), scene.get_zlim()]).T  # (2, 3) the axes' window
     lo, hi = np.clip(lo, *window), np.clip(hi, *window)  # its part inside: mplot3d draws past the axes
-    add_box_3d(scene, aabb_corners(lo, hi), facecolor="none", edgecolor=COLORS["ink"], linewidth=1.6, gid="nearest")
-    x, y, _ = (lo + hi) / 2
-    scene.text(
-        x,
-        y,
-        hi[2],
+    corners = aabb_corners(lo, hi)  # (8, 3)
+    add_box_3d(scene, corners, facecolor="none", edgecolor=COLORS["ink"], linewidth=1.6, gid="nearest")
+    x, y, _ = proj3d.proj_transform(*corners.T, scene.get_proj())  # (8,) each: the corners on the picture
+    scene.annotate(  # above the block's highest corner on the picture, clear of its edges (reader r20c)
         "nearest block",
+        (float(np.mean(x)), float(np.max(y))),
+        xytext=(0, 4),
+        textcoords="offset points",
         fontsize=9,
         ha="center",
         va="bottom",
         zorder=10.0,
         color=COLORS["ink"],
+        annotation_clip=False,
         path_effects=halo(1.0, ("free",)),
     )
 
