@@ -76,6 +76,14 @@ def wrap_frames(scaled: np.ndarray) -> np.ndarray:
     return np.flatnonzero(np.abs(np.diff(scaled)) > 0.5)
 
 
+def wrap_note(robot: BoxRobot, Q: np.ndarray, angles: list[int]) -> str:
+    """A legend title's second line where an angle wraps round ±π: its broken line is no missing data (r20c)."""
+    scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
+    names = [robot.dof_names[k] for k in angles if len(wrap_frames(scaled[:, k]))]
+    named = ", ".join(names[:-1]) + " and " * (len(names) > 1) + "".join(names[-1:])  # "alpha, beta and gamma"
+    return f"\n{named}: a gap where the angle wraps round ±π, no data missing" if names else ""
+
+
 LEADER_COLOR = COLORS["reference"]  # a name's leader: a grey no DoF's line is drawn in
 LABEL_GAP = 14.0  # points between two names at the lines' ends: an 8-point line of text (~9.4 pt tall) and air
 # enough that two names never read as one (reader r20c: "y" and "z" 11 points apart nearly touched)

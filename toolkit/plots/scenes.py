@@ -26,7 +26,7 @@ from matplotlib.patches import Patch
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import ROWS, Part, describe
-from toolkit.plots.dof_panels import dof_groups, draw_dofs, wrap_frames
+from toolkit.plots.dof_panels import dof_groups, draw_dofs, wrap_frames, wrap_note
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR, draw_robot, link_style
 from toolkit.plots.still_panels import (
@@ -40,6 +40,7 @@ from toolkit.plots.still_panels import (
     inside_mask,
     mark_nearest,
     model_words,
+    over_robot,
     overview,
     overview_step,
     second_turn,
@@ -75,7 +76,7 @@ def scene_still(
     invalid one hatched, by ``valid``; its joints dotted; the blocks within ``margin``, those near a link darker), with
     the samples inside its window and the trace; where a ``model`` gives a pose's ``(P(valid), predicted valid)``,
     its close-up's title says what the model answers (review r17c: nothing marked that it rejects a valid pose).
-    A single pose is seen twice (the second view a quarter turn round, or a third or a sixth where a block then
+    A single pose is seen twice (the second view a sixth of a turn round, or a third or a quarter where a block then
     stands on a line of sight through the robot: :func:`~toolkit.plots.still_panels.second_turn`), above the
     overview; several follow it, one panel each. Of more than :data:`~toolkit.plots.still_panels.OVERVIEW_SAMPLES`
     samples the overview draws every k-th (its title says which k), of every kind alike."""
@@ -84,7 +85,7 @@ def scene_still(
     valid = valid or {}
     colors = {label: _POSE_COLOR[valid.get(label)] for label in poses}
     views = [(label, np.asarray(q, dtype=float), 0.0) for label, q in poses.items()]
-    if len(views) == 1:  # a single pose: seen twice, a quarter turn apart
+    if len(views) == 1:  # a single pose: seen twice, a sixth of a turn apart
         views.append((*views[0][:2], second_turn(robot, views[0][1], workspace, margin)))
     heights = [CLOSE_UP_HEIGHT] * -(-len(views) // 2)  # inches: the close-ups, two a row
     first = len(heights) if len(poses) == 1 else 0  # the overview's row: after a single pose's two views
@@ -101,7 +102,8 @@ def scene_still(
     for ax, (label, q, turn) in zip(panels, views):
         ok = valid.get(label)
         near, angles = close_up(ax, robot, q, workspace, color=colors[label], margin=margin, turn=turn)
-        drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE)
+        hide = None if samples is None else over_robot(ax, robot, q, samples[0])  # (N,) marks over the robot
+        drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE, hide=hide)
         seen.setdefault(label, (drawn, near, angles))
         verdict = model_words((model or {}).get(label))
         ax.set_title(
@@ -153,7 +155,13 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
     counted = [("blocks", str(len(workspace.boxes)))]
     counted += [(f"samples {kind}", str(int(m.sum()))) for kind, m in (samples[1].items() if samples else ())]
     counted += [("points of the base's path", str(len(trace)))] if trace is not None else []
-    columns = ("pose", "exact checker", "samples drawn near it", f"blocks within {NEAR} of a link", "seen from")
+    columns = (
+        "pose",
+        "exact checker",
+        "samples drawn near it (none over it)",
+        f"blocks within {NEAR} of a link",
+        "seen from",
+    )
     parts = [
         Part("the whole workspace", "what the overview draws", ("drawn", "count"), tuple(counted)),
         Part(
@@ -307,7 +315,7 @@ def _draw_series(
     fig.legend(
         handles,
         [h.get_label() for h in handles],
-        title="each DoF in its bounds: 0 lower, 1 upper" + _wrap_note(robot, Q, groups.get("angles", [])),
+        title="each DoF in its bounds: 0 lower, 1 upper" + wrap_note(robot, Q, groups.get("angles", [])),
         title_fontsize=10,
         fontsize=10,
         ncol=min(robot.dof, 4),
@@ -316,14 +324,7 @@ def _draw_series(
         frameon=False,
         handlelength=3.0,
         columnspacing=0.8,
-    )
-
-
-def _wrap_note(robot: BoxRobot, Q: np.ndarray, angles: list[int]) -> str:
-    """The legend title's second line where an angle wraps round ±π: its broken line is no missing data (r20c)."""
-    scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
-    names = [robot.dof_names[k] for k in angles if len(wrap_frames(scaled[:, k]))]
-    return f"\n{' and '.join(names)}: a gap where it wraps round ±π, no data missing" if names else ""
+    ).get_title().set_multialignment("center")
 
 
 def _draw_clearance(clearance: np.ndarray, ax, along: np.ndarray) -> None:

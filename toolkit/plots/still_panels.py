@@ -9,7 +9,7 @@ A 3D picture on a page cannot be turned, so each panel is drawn to be read from 
 - :func:`close_up` draws the robot at one pose among the blocks near it: its links opaque, edged thick in ink, each
   joint a white dot ringed in ink, the blocks faded (a robot behind one shows through it), those within
   :data:`NEAR` of a link darker than the rest of its window. The camera looks across the plane the chain spreads
-  in (:func:`view_angles`), so a bent chain shows its bends; a second panel (``turn``) sees it a quarter turn round.
+  in (:func:`view_angles`), so a bent chain shows its bends; a second panel (``turn``) sees it a sixth of a turn round.
 
 mplot3d has no depth buffer: it draws whole collections one after the other. Here the blocks behind the robot come
 first, far to near, then the samples, the links far to near, the blocks that stand between a link and the camera
@@ -19,11 +19,12 @@ first, far to near, then the samples, the links far to near, the blocks that sta
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.path import Path
 from mpl_toolkits.mplot3d import proj3d
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners
+from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
 from toolkit.plots.cspace import frame_region
 from toolkit.plots.palette import COLORS, halo
 from toolkit.plots.robot_drawing import BLOCK_STYLE, INVALID_COLOR, VALID_COLOR, draw_robot, few_ticks
@@ -159,12 +160,14 @@ def close_up(
     return int(near.sum()), (elevation, azimuth)
 
 
-TURNS = (90.0, -90.0, 120.0, -120.0, 60.0, -60.0)  # degrees about the vertical a second close-up tries, in turn
+TURNS = (60.0, -60.0, 120.0, -120.0, 90.0, -90.0)  # degrees about the vertical a second close-up tries, in turn
+# (reader r20c: a quarter turn saw a chain's plane edge-on, its links end-on over each other; a sixth still shows the
+# bend, foreshortened by half, and which link is nearer)
 
 
 def second_turn(robot: BoxRobot, q: np.ndarray, workspace: Workspace, margin: float) -> float:
-    """A single pose's second close-up: the first of :data:`TURNS` (a quarter turn, either way, then a third or a
-    sixth) with the fewest blocks on a line of sight through the robot (:func:`clear_turn`)."""
+    """A single pose's second close-up: the first of :data:`TURNS` (a sixth of a turn, either way, then a third or a
+    quarter) with the fewest blocks on a line of sight through the robot (:func:`clear_turn`)."""
     return clear_turn(robot, q, workspace, margin, TURNS)
 
 
@@ -188,7 +191,9 @@ def clear_turn(
 
 def turn_words(turn: float) -> str:
     """A second close-up's title: how far round the first it is seen (:data:`TURNS`)."""
-    return "a quarter turn round" if abs(turn) == 90 else f"turned {abs(turn):.0f}° round"
+    return {60: "a sixth of a turn round", 90: "a quarter turn round", 120: "a third of a turn round"}.get(
+        round(abs(turn)), f"turned {abs(turn):.0f}° round"
+    )
 
 
 def model_words(answer: tuple[float, bool] | None) -> str:
@@ -260,13 +265,16 @@ def view_angles(robot: BoxRobot, q: np.ndarray) -> tuple[float, float]:
     return elevation, azimuth + max(OFF_AXIS - within, 0.0) - max(within - (90.0 - OFF_AXIS), 0.0)
 
 
-def draw_points(ax, samples, trace, clip: bool = False, alpha: float = 1.0, scale: float = 1.0) -> int:
+def draw_points(
+    ax, samples, trace, clip: bool = False, alpha: float = 1.0, scale: float = 1.0, hide: np.ndarray | None = None
+) -> int:
     """The samples ``(points (N, 3), {kind: mask})`` by kind and the base's ``trace (T, 3)`` on a 3D axes; with
     ``clip``, only what lies inside the axes' window (mplot3d does not clip); marks ``scale`` times their size, with
-    ``alpha``. Returns how many samples it drew."""
+    ``alpha``; none where ``hide (N,)`` is true. Returns how many samples it drew."""
     drawn = np.zeros(0 if samples is None else len(samples[0]), dtype=bool)  # (N,)
     for kind, mask in ({} if samples is None else samples[1]).items():
         mask = mask & inside_mask(ax, samples[0]) if clip else mask
+        mask = mask & ~hide if hide is not None else mask
         drawn |= mask
         if mask.any():
             marker, color, size = SAMPLE_MARKS[kind]
@@ -287,6 +295,28 @@ def draw_points(ax, samples, trace, clip: bool = False, alpha: float = 1.0, scal
             points[~inside_mask(ax, points)] = np.nan
         ax.plot(*points.T, linewidth=2.0, path_effects=halo(2.0), label="path of the base (dashed)", **TRACE_STYLE)
     return int(drawn.sum())
+
+
+OVER = 6.0  # pixels: a close-up's mark nearer than this to a link's picture is left out (about half a mark)
+
+
+def over_robot(ax, robot: BoxRobot, q: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """``(N,)`` bool: which ``points (N, 3)`` the 3D axes, its view and window set, pictures within :data:`OVER`
+    pixels of a link of the robot at ``q (dof,)``, in front of it or behind (reader r20c: a diamond half behind a
+    bar read as part of the robot); a close-up leaves them out, as the 3D views do."""
+    proj = ax.get_proj()
+
+    def on_screen(p: np.ndarray) -> np.ndarray:  # (n, 3) -> (n, 2) display pixels
+        x, y, _ = proj3d.proj_transform(*p.T, proj)
+        return ax.transData.transform(np.column_stack([x, y]))
+
+    marks = on_screen(points)  # (N, 2)
+    centers, rotations, half = robot.link_boxes(np.asarray(q, dtype=float)[None])  # (1, L, 3), (1, L, 3, 3), (L, 3)
+    over = np.zeros(len(points), dtype=bool)
+    for c, r, h in zip(centers[0], rotations[0], half):
+        link = Path(outline(on_screen(box_corners(c, r, h)), (0, 1)))  # the link's picture, a convex polygon
+        over |= link.contains_points(marks, radius=OVER) | link.contains_points(marks, radius=-OVER)  # grown: the sign
+    return over  # of the radius that grows a polygon depends on its orientation, so both
 
 
 def inside_mask(ax, points: np.ndarray) -> np.ndarray:
