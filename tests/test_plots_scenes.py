@@ -227,7 +227,15 @@ def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose
     assert labels == ["start", "end, in collision"]  # each pose named over it; a collision said in words too
     robots = [line for line in overview.get_lines() if line.get_gid() == "robot"]
     assert [to_hex(line.get_color()) for line in robots] == [to_hex(VALID_COLOR), to_hex(INVALID_COLOR)]
-    assert "the path of the robot's base, the robot drawn over them at each pose, labelled;" in alt_text(fig)
+    assert (
+        "the path of the robot's base and its shadow on the floor, dotted, a thin line from each pose straight down to "
+        "the floor, the robot drawn over them at each pose, labelled;" in alt_text(fig)
+    )
+    (shadow,) = [line for line in overview.get_lines() if line.get_gid() == "shadow"]  # reader r20c: depth cues
+    np.testing.assert_allclose(np.array(shadow.get_data_3d()).T, np.c_[points[:, :2], np.zeros(len(points))])
+    drops = [np.array(line.get_data_3d()).T for line in overview.get_lines() if line.get_gid() == "drop"]  # (2, 3)
+    bases = robot.link_boxes(path[[0, -1]])[0][:, 0]  # (2, 3) each pose's first link's centre
+    np.testing.assert_allclose(drops, [[base, [*base[:2], 0.0]] for base in bases])
     for close_up, at in ((start, 0), (end, -1)):  # the samples inside its window but off the robot's
         lo, hi = np.array([close_up.get_xlim(), close_up.get_ylim(), close_up.get_zlim()]).T  # picture, shaped by
         inside = np.all((points >= lo) & (points <= hi), axis=1)  # (T,) validity; links told apart; trace dashed
@@ -242,7 +250,7 @@ def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose
         parts = links(close_up)
         assert {float(c.get_linewidth()[0]) for c in parts} == {still_panels.LINK_EDGE}
         assert {c.get_alpha() for c in parts} == {1.0}  # opaque: the robot reads as one body over the faded blocks
-    traces = [line for ax in fig.axes for line in ax.get_lines() if line.get_gid() != "robot"]
+    traces = [line for ax in fig.axes for line in ax.get_lines() if line.get_gid() not in ("robot", "shadow", "drop")]
     assert traces and all(line.get_linestyle() == "--" for line in traces)
 
 

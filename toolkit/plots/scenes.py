@@ -148,7 +148,8 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
         )
         step = overview_step(len(samples[0]))
         text += f", 1 sample in {step} of every kind drawn" if step > 1 else ""
-    text += ", the path of the robot's base" if trace is not None else ""
+    text += ", the path of the robot's base and its shadow on the floor, dotted" if trace is not None else ""
+    text += ", a thin line from each pose straight down to the floor" if poses else ""
     if poses:
         text += ", the robot drawn " + ("over them" if samples is not None else "in it")
         text += " at each pose, labelled" if len(poses) > 1 else ""

@@ -76,6 +76,7 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
         if marks.get_label() == "sample, model wrong":
             marks.set(sizes=[OVERVIEW_STAR], linewidth=0.9)
     ax.computed_zorder = False  # the robot in front of every sample
+    _floor_cues(ax, robot, [q for q, _ in poses.values()], trace, workspace.lower[2])
     lift = 0.04 * float(np.max(workspace.upper - workspace.lower))  # a label this far above the robot
     for (name, (q, color)), boxes in zip(poses.items(), aabbs):
         ax.plot(*robot_strokes(robot, q).T, color=color, zorder=6.0, gid="robot", **OVERVIEW_ROBOT)
@@ -97,6 +98,19 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
     few_ticks(ax)
     drawn = f", 1 sample in {step} drawn" if step > 1 else ""
     ax.set_title(f"the whole workspace: {len(workspace.boxes)} blocks{drawn}", fontsize=10)
+
+
+def _floor_cues(ax, robot: BoxRobot, poses: list[np.ndarray], trace, floor: float) -> None:
+    """Depth on a flat picture (reader r20c: the path seemed to dive): the base's ``trace (T, 3)`` cast on the floor
+    at height ``floor``, and a line from the base of each pose ``(dof,)`` straight down to it."""
+    if trace is not None:
+        shadow = np.array(trace, dtype=float)  # (T, 3)
+        shadow[:, 2] = floor
+        ax.plot(*shadow.T, zorder=2.5, gid="shadow", label="shadow on the floor", **SHADOW_STYLE)
+    for k, q in enumerate(poses):
+        base = robot.link_boxes(np.asarray(q, dtype=float)[None])[0][0, 0]  # (3,) the first link's centre
+        down = np.array([base, [base[0], base[1], floor]])  # (2, 3)
+        ax.plot(*down.T, zorder=2.5, gid="drop", label="" if k else "drop to the floor", **DROP_STYLE)
 
 
 def robot_strokes(robot: BoxRobot, q: np.ndarray) -> np.ndarray:
@@ -297,6 +311,8 @@ def draw_points(
     return int(drawn.sum())
 
 
+SHADOW_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=1.2, linestyle=":")  # the path's shadow on the floor
+DROP_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=0.9, linestyle="-")  # a pose's base, straight down
 OVER = 6.0  # pixels: a close-up's mark nearer than this to a link's picture is left out (about half a mark)
 
 
