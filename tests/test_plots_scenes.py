@@ -9,6 +9,7 @@ from matplotlib.colors import to_hex, to_rgba
 from matplotlib.figure import Figure
 from matplotlib.markers import MarkerStyle
 from matplotlib.text import Text
+from mpl_toolkits.mplot3d import proj3d
 
 from toolkit import scenarios
 from toolkit.geometry.collision import exact_checker
@@ -119,6 +120,10 @@ def test_the_blocks_near_the_robot_are_drawn_and_the_trace_stays_in_the_window(c
     assert inside[index] and inside.sum() > 0
     np.testing.assert_allclose(trace[inside], bases[inside])
     assert np.isnan(trace[~inside]).all()
+    (name,) = [t for t in scene.texts if t.get_text() == "nearest block"]  # reader r20c: it crossed the block's edges
+    x, y, _ = proj3d.proj_transform(*boxes[-1].T, scene.get_proj())  # (8,) each: the last box drawn, the nearest's
+    assert name.xy == pytest.approx((np.mean(x), np.max(y)))  # over its highest corner on the picture
+    assert name.get_va() == "bottom" and name.anncoords == "offset points" and name.xyann[1] > 0  # above its picture
 
 
 def test_the_series_panels_show_each_dof_clearance_and_probability(crossing):
@@ -222,20 +227,30 @@ def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose
     assert labels == ["start", "end, in collision"]  # each pose named over it; a collision said in words too
     robots = [line for line in overview.get_lines() if line.get_gid() == "robot"]
     assert [to_hex(line.get_color()) for line in robots] == [to_hex(VALID_COLOR), to_hex(INVALID_COLOR)]
-    assert "the path of the robot's base, the robot drawn over them at each pose, labelled;" in alt_text(fig)
-    for close_up in (start, end):  # the samples inside its window, shaped by validity; links told apart; trace dashed
-        lo, hi = np.array([close_up.get_xlim(), close_up.get_ylim(), close_up.get_zlim()]).T  # (3,) each
-        inside = np.all((points >= lo) & (points <= hi), axis=1)  # (T,)
+    assert (
+        "the path of the robot's base and its shadow on the floor, dotted, a thin line from each pose straight down to "
+        "the floor, the robot drawn over them at each pose, labelled;" in alt_text(fig)
+    )
+    (shadow,) = [line for line in overview.get_lines() if line.get_gid() == "shadow"]  # reader r20c: depth cues
+    np.testing.assert_allclose(np.array(shadow.get_data_3d()).T, np.c_[points[:, :2], np.zeros(len(points))])
+    drops = [np.array(line.get_data_3d()).T for line in overview.get_lines() if line.get_gid() == "drop"]  # (2, 3)
+    bases = robot.link_boxes(path[[0, -1]])[0][:, 0]  # (2, 3) each pose's first link's centre
+    np.testing.assert_allclose(drops, [[base, [*base[:2], 0.0]] for base in bases])
+    for close_up, at in ((start, 0), (end, -1)):  # the samples inside its window but off the robot's
+        lo, hi = np.array([close_up.get_xlim(), close_up.get_ylim(), close_up.get_zlim()]).T  # picture, shaped by
+        inside = np.all((points >= lo) & (points <= hi), axis=1)  # (T,) validity; links told apart; trace dashed
+        over = still_panels.over_robot(close_up, robot, path[at], points)  # (T,) pictured on or beside a link
+        assert over[at] and (inside & ~over).any()  # its own base is; others are not
+        inside &= ~over
         marks = {c.get_label(): c for c in close_up.collections if c.get_label().startswith("sample")}
         for kind, mask, marker in (("valid", valid, "o"), ("in collision", ~valid, "D")):
             expected = points[inside & mask]  # (n, 3)
             assert (len(marks[f"sample, {kind}"]._offsets3d[0]) if f"sample, {kind}" in marks else 0) == len(expected)
             assert expected.size == 0 or np.allclose(shape(marks[f"sample, {kind}"].get_paths()[0]), shape(marker))
-        assert inside.any()  # the path passes its own poses: the test sees samples in each close-up
         parts = links(close_up)
         assert {float(c.get_linewidth()[0]) for c in parts} == {still_panels.LINK_EDGE}
         assert {c.get_alpha() for c in parts} == {1.0}  # opaque: the robot reads as one body over the faded blocks
-    traces = [line for ax in fig.axes for line in ax.get_lines() if line.get_gid() != "robot"]
+    traces = [line for ax in fig.axes for line in ax.get_lines() if line.get_gid() not in ("robot", "shadow", "drop")]
     assert traces and all(line.get_linestyle() == "--" for line in traces)
 
 
@@ -251,7 +266,7 @@ def test_a_stills_overview_thins_a_dense_cloud_and_its_text_says_so(crossing):
         samples=(points, {"valid": valid, "in collision": ~valid}),
     )
     close_up, turned, overview = fig.axes  # one pose: seen twice, above the overview
-    turn = still_panels.second_turn(robot, np.asarray(pose), workspace, 0.6)  # a quarter turn, or a third or a sixth
+    turn = still_panels.second_turn(robot, np.asarray(pose), workspace, 0.6)  # a sixth of a turn, or more
     assert [close_up.get_title(), turned.get_title()] == ["here, close up", f"here, {still_panels.turn_words(turn)}"]
     assert (turned.azim - close_up.azim) % 360 == pytest.approx(turn % 360)
     assert turned.elev == pytest.approx(close_up.elev)
@@ -286,7 +301,7 @@ def test_a_stills_model_wrong_star_is_hollow_round_the_mark_it_flags(crossing):
 
 def test_a_stills_close_up_says_what_the_model_answers(crossing):
     """Review r17c: nothing on the still marked that the model rejects the valid robot (P = 0.08). The close-up's
-    title says it, and the text; the quarter-turn view and a still without a model say nothing of a model."""
+    title says it, and the text; the turned view and a still without a model say nothing of a model."""
     robot, workspace, _, path, _ = crossing
     q = path[0]
     fig = scenes.scene_still(
@@ -294,7 +309,7 @@ def test_a_stills_close_up_says_what_the_model_answers(crossing):
     )
     close_up, turned, _ = fig.axes
     assert close_up.get_title() == "the robot, close up, valid\nthe model: P(valid) 0.08, rejects it"
-    assert turned.get_title() == "the robot, a quarter turn round"
+    assert turned.get_title() == "the robot, a sixth of a turn round"
     assert "the robot, valid, the model: P(valid) 0.08, rejects it" in alt_text(fig)
     accepted = scenes.scene_still(robot, workspace, {"start": q}, model={"start": (0.914, True)})
     assert accepted.axes[0].get_title().endswith("the model: P(valid) 0.91, accepts it")
@@ -402,6 +417,14 @@ def test_an_angle_that_wraps_around_is_broken_where_it_wraps_not_drawn_across_th
     text = alt_text(scenes.path_frame(robot, Q, 0))  # review r16c: the description said nothing of the jump
     assert "alpha wraps round (crosses ±π, its line jumping from one edge of its panel to the other) at 50%" in text
     assert "x wraps" not in text
+    title = scenes.path_frame(robot, Q, 0).legends[0].get_title().get_text()  # reader r20c: a gap read as data lost
+    assert (
+        title
+        == "each DoF in its bounds: 0 lower, 1 upper\nalpha: a gap where the angle wraps round ±π, no data missing"
+    )
+    Q[:, 5] = [3.0, -3.1, -3.0, -2.9]  # gamma too
+    assert dof_panels.wrap_note(robot, Q, [3, 4, 5]).startswith("\nalpha and gamma: a gap")
+    assert dof_panels.wrap_note(robot, Q[:, [0, 1, 2, 4, 4, 4, 6]], [3, 4, 5]) == ""  # beta alone: no wrap
 
 
 @pytest.mark.parametrize(("name", "seed", "count"), [("3dc9", 1, 3), ("3do", 2, 1)])

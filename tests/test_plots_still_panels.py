@@ -142,7 +142,7 @@ def test_a_close_ups_text_counts_the_near_blocks_and_says_how_it_is_seen():
     q = np.array([5.0, 5.0, 5.0, 0.0, 0.0, 0.0, 0.0])
     blocks = np.array([[[5.0, 5.25, 4.9], [5.4, 5.65, 5.1]]])
     fig = scenes.scene_still(CHAIN7, Workspace(np.zeros(3), np.full(3, 11.0), blocks, family="3dc"), {"here": q})
-    assert "seen across the plane it spreads in, and a quarter turn round" in alt_text(fig)
+    assert "seen across the plane it spreads in, and a sixth of a turn round" in alt_text(fig)
     assert "the blocks within 0.3 of a link darker (here: 1)" in alt_text(fig)
 
 
@@ -175,10 +175,11 @@ def test_an_overview_draws_the_whole_robot_over_light_marks_its_name_above_it():
     assert near.get_alpha() > far.get_alpha()  # the block by the robot darker than the one in the corner
 
 
-@pytest.mark.parametrize("behind_of", [90.0, -90.0])
+@pytest.mark.parametrize("behind_of", [60.0, -60.0])
 def test_the_second_close_up_turns_the_way_whose_line_of_sight_through_the_robot_misses_the_blocks(behind_of):
-    """Review r17c: a quarter turn round, the robot stood in front of a block and looked inside it. A unit block 1.5
-    units behind the robot as one turn's view sees it sends the turn to the next of TURNS; none: a quarter turn."""
+    """Review r17c: turned round, the robot stood in front of a block and looked inside it. A unit block 1.5 units
+    behind the robot as one turn's view sees it sends the turn to the next of TURNS; none: a sixth of a turn (reader
+    r20c: a quarter turn saw a bent chain's plane edge-on)."""
     q = np.array([5.0, 5.0, 5.0, 0.7, 0.0, 0.0, 0.0])
     elevation, azimuth = still_panels.view_angles(CHAIN7, q)
     e, a = np.deg2rad([elevation, azimuth + behind_of])
@@ -186,11 +187,12 @@ def test_the_second_close_up_turns_the_way_whose_line_of_sight_through_the_robot
     middle = CHAIN7.link_boxes(q[None])[0][0].mean(axis=0)  # (3,)
     centre = middle - 1.5 * toward  # (3,) straight behind the robot, seen from there
     block = Workspace(np.zeros(3), np.full(3, 11.0), np.array([[centre - 0.5, centre + 0.5]]), family="3dc")
-    expected = {90.0: -90.0, -90.0: 90.0}[behind_of]
+    expected = {60.0: -60.0, -60.0: 60.0}[behind_of]
     assert still_panels.second_turn(CHAIN7, q, block, 2.0) == expected
-    assert still_panels.second_turn(CHAIN7, q, EMPTY, 2.0) == 90.0
-    assert [still_panels.turn_words(t) for t in (90.0, -90.0, -120.0)] == [
+    assert still_panels.second_turn(CHAIN7, q, EMPTY, 2.0) == 60.0
+    assert [still_panels.turn_words(t) for t in (60.0, -90.0, -120.0, 45.0)] == [
+        "a sixth of a turn round",
         "a quarter turn round",
-        "a quarter turn round",
-        "turned 120° round",
+        "a third of a turn round",
+        "turned 45° round",
     ]

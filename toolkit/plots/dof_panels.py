@@ -66,12 +66,27 @@ def draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, dofs: list[int], kind
 def _broken(along: np.ndarray, scaled: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     """An angle's line ``scaled (T,)`` against ``along (T,)`` broken (a NaN between) where it wraps around: where it
     jumps more than half its range between two frames, it went through -pi = pi, not across the panel."""
-    wraps = np.flatnonzero(np.abs(np.diff(scaled)) > 0.5) + 1  # (w,) the frames after a wrap
+    wraps = wrap_frames(scaled) + 1  # (w,) the frames after a wrap
     return np.insert(along, wraps, np.nan), np.insert(scaled, wraps, np.nan)  # (T + w,) each
 
 
+def wrap_frames(scaled: np.ndarray) -> np.ndarray:
+    """The frames ``(w,)`` after which an angle ``scaled (T,)`` to its bounds wraps round ±π: where it jumps more
+    than half its range between two frames (a path moves in small steps, so it went through -π = π)."""
+    return np.flatnonzero(np.abs(np.diff(scaled)) > 0.5)
+
+
+def wrap_note(robot: BoxRobot, Q: np.ndarray, angles: list[int]) -> str:
+    """A legend title's second line where an angle wraps round ±π: its broken line is no missing data (r20c)."""
+    scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
+    names = [robot.dof_names[k] for k in angles if len(wrap_frames(scaled[:, k]))]
+    named = ", ".join(names[:-1]) + " and " * (len(names) > 1) + "".join(names[-1:])  # "alpha, beta and gamma"
+    return f"\n{named}: a gap where the angle wraps round ±π, no data missing" if names else ""
+
+
 LEADER_COLOR = COLORS["reference"]  # a name's leader: a grey no DoF's line is drawn in
-LABEL_GAP = 11.0  # points between two names at the lines' ends: an 8-point line of text (~9.4 pt tall) and air
+LABEL_GAP = 14.0  # points between two names at the lines' ends: an 8-point line of text (~9.4 pt tall) and air
+# enough that two names never read as one (reader r20c: "y" and "z" 11 points apart nearly touched)
 
 
 def _spread(heights: np.ndarray, gap: float) -> np.ndarray:

@@ -26,7 +26,7 @@ from matplotlib.patches import Patch
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import ROWS, Part, describe
-from toolkit.plots.dof_panels import dof_groups, draw_dofs
+from toolkit.plots.dof_panels import dof_groups, draw_dofs, wrap_frames, wrap_note
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR, draw_robot, link_style
 from toolkit.plots.still_panels import (
@@ -40,6 +40,7 @@ from toolkit.plots.still_panels import (
     inside_mask,
     mark_nearest,
     model_words,
+    over_robot,
     overview,
     overview_step,
     second_turn,
@@ -75,7 +76,7 @@ def scene_still(
     invalid one hatched, by ``valid``; its joints dotted; the blocks within ``margin``, those near a link darker), with
     the samples inside its window and the trace; where a ``model`` gives a pose's ``(P(valid), predicted valid)``,
     its close-up's title says what the model answers (review r17c: nothing marked that it rejects a valid pose).
-    A single pose is seen twice (the second view a quarter turn round, or a third or a sixth where a block then
+    A single pose is seen twice (the second view a sixth of a turn round, or a third or a quarter where a block then
     stands on a line of sight through the robot: :func:`~toolkit.plots.still_panels.second_turn`), above the
     overview; several follow it, one panel each. Of more than :data:`~toolkit.plots.still_panels.OVERVIEW_SAMPLES`
     samples the overview draws every k-th (its title says which k), of every kind alike."""
@@ -84,7 +85,7 @@ def scene_still(
     valid = valid or {}
     colors = {label: _POSE_COLOR[valid.get(label)] for label in poses}
     views = [(label, np.asarray(q, dtype=float), 0.0) for label, q in poses.items()]
-    if len(views) == 1:  # a single pose: seen twice, a quarter turn apart
+    if len(views) == 1:  # a single pose: seen twice, a sixth of a turn apart
         views.append((*views[0][:2], second_turn(robot, views[0][1], workspace, margin)))
     heights = [CLOSE_UP_HEIGHT] * -(-len(views) // 2)  # inches: the close-ups, two a row
     first = len(heights) if len(poses) == 1 else 0  # the overview's row: after a single pose's two views
@@ -101,7 +102,8 @@ def scene_still(
     for ax, (label, q, turn) in zip(panels, views):
         ok = valid.get(label)
         near, angles = close_up(ax, robot, q, workspace, color=colors[label], margin=margin, turn=turn)
-        drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE)
+        hide = None if samples is None else over_robot(ax, robot, q, samples[0])  # (N,) marks over the robot
+        drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE, hide=hide)
         seen.setdefault(label, (drawn, near, angles))
         verdict = model_words((model or {}).get(label))
         ax.set_title(
@@ -146,14 +148,21 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
         )
         step = overview_step(len(samples[0]))
         text += f", 1 sample in {step} of every kind drawn" if step > 1 else ""
-    text += ", the path of the robot's base" if trace is not None else ""
+    text += ", the path of the robot's base and its shadow on the floor, dotted" if trace is not None else ""
+    text += ", a thin line from each pose straight down to the floor" if poses else ""
     if poses:
         text += ", the robot drawn " + ("over them" if samples is not None else "in it")
         text += " at each pose, labelled" if len(poses) > 1 else ""
     counted = [("blocks", str(len(workspace.boxes)))]
     counted += [(f"samples {kind}", str(int(m.sum()))) for kind, m in (samples[1].items() if samples else ())]
     counted += [("points of the base's path", str(len(trace)))] if trace is not None else []
-    columns = ("pose", "exact checker", "samples drawn near it", f"blocks within {NEAR} of a link", "seen from")
+    columns = (
+        "pose",
+        "exact checker",
+        "samples drawn near it (none over it)",
+        f"blocks within {NEAR} of a link",
+        "seen from",
+    )
     parts = [
         Part("the whole workspace", "what the overview draws", ("drawn", "count"), tuple(counted)),
         Part(
@@ -264,7 +273,7 @@ def _series_in_words(robot: BoxRobot, Q: np.ndarray, series: dict, threshold: fl
     text = f"each DoF scaled to its bounds (0 lower, 1 upper), a panel per kind ({kinds}), from start to end: "
     text += ", ".join(moves)
     for k, name in enumerate(robot.dof_names):  # an angle across ±π: its line jumps from one edge to the other
-        wraps = np.flatnonzero(np.abs(np.diff(scaled[:, k])) > 0.5)  # (w,) the frames before each wrap, as drawn
+        wraps = wrap_frames(scaled[:, k])  # (w,) the frames before each wrap, as drawn
         if len(wraps):
             at = ", ".join(f"{(t + 0.5) / (len(Q) - 1):.0%}" for t in wraps)
             text += (
@@ -307,7 +316,7 @@ def _draw_series(
     fig.legend(
         handles,
         [h.get_label() for h in handles],
-        title="each DoF in its bounds: 0 lower, 1 upper",
+        title="each DoF in its bounds: 0 lower, 1 upper" + wrap_note(robot, Q, groups.get("angles", [])),
         title_fontsize=10,
         fontsize=10,
         ncol=min(robot.dof, 4),
@@ -316,7 +325,7 @@ def _draw_series(
         frameon=False,
         handlelength=3.0,
         columnspacing=0.8,
-    )
+    ).get_title().set_multialignment("center")
 
 
 def _draw_clearance(clearance: np.ndarray, ax, along: np.ndarray) -> None:
@@ -356,11 +365,11 @@ def _draw_scene(
     ):  # mplot3d's usual camera, turned where a block stands on a line of sight through the robot
         scene.view_init(30.0, -60.0 + clear_turn(robot, Q[index], workspace, margin, FRAME_TURNS, (30.0, -60.0)))
     _draw_trace(scene, robot, Q)
-    if workspace is not None and len(workspace.boxes):
-        mark_nearest(scene, robot.link_aabbs(Q[index : index + 1])[0], workspace.boxes)
     verdict = "" if valid is None else ": valid" if valid else ": in collision"
     scene.set_title(f"the robot, blocks near it{verdict}", fontsize=9)
     scene.set_box_aspect(None, zoom=1.15)  # the robot larger in its panel: mplot3d leaves wide margins
+    if workspace is not None and len(workspace.boxes):  # after the view and the zoom: it places its name on them
+        mark_nearest(scene, robot.link_aabbs(Q[index : index + 1])[0], workspace.boxes)
     scene.locator_params(nbins=4)  # few tick labels: drawing text is most of a frame's cost
     scene.tick_params(labelsize=9)
 

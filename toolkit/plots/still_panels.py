@@ -9,7 +9,7 @@ A 3D picture on a page cannot be turned, so each panel is drawn to be read from 
 - :func:`close_up` draws the robot at one pose among the blocks near it: its links opaque, edged thick in ink, each
   joint a white dot ringed in ink, the blocks faded (a robot behind one shows through it), those within
   :data:`NEAR` of a link darker than the rest of its window. The camera looks across the plane the chain spreads
-  in (:func:`view_angles`), so a bent chain shows its bends; a second panel (``turn``) sees it a quarter turn round.
+  in (:func:`view_angles`), so a bent chain shows its bends; a second panel (``turn``) sees it a sixth of a turn round.
 
 mplot3d has no depth buffer: it draws whole collections one after the other. Here the blocks behind the robot come
 first, far to near, then the samples, the links far to near, the blocks that stand between a link and the camera
@@ -19,10 +19,12 @@ first, far to near, then the samples, the links far to near, the blocks that sta
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.path import Path
+from mpl_toolkits.mplot3d import proj3d
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners
+from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
 from toolkit.plots.cspace import frame_region
 from toolkit.plots.palette import COLORS, halo
 from toolkit.plots.robot_drawing import BLOCK_STYLE, INVALID_COLOR, VALID_COLOR, draw_robot, few_ticks
@@ -74,6 +76,7 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
         if marks.get_label() == "sample, model wrong":
             marks.set(sizes=[OVERVIEW_STAR], linewidth=0.9)
     ax.computed_zorder = False  # the robot in front of every sample
+    _floor_cues(ax, robot, [q for q, _ in poses.values()], trace, workspace.lower[2])
     lift = 0.04 * float(np.max(workspace.upper - workspace.lower))  # a label this far above the robot
     for (name, (q, color)), boxes in zip(poses.items(), aabbs):
         ax.plot(*robot_strokes(robot, q).T, color=color, zorder=6.0, gid="robot", **OVERVIEW_ROBOT)
@@ -95,6 +98,19 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
     few_ticks(ax)
     drawn = f", 1 sample in {step} drawn" if step > 1 else ""
     ax.set_title(f"the whole workspace: {len(workspace.boxes)} blocks{drawn}", fontsize=10)
+
+
+def _floor_cues(ax, robot: BoxRobot, poses: list[np.ndarray], trace, floor: float) -> None:
+    """Depth on a flat picture (reader r20c: the path seemed to dive): the base's ``trace (T, 3)`` cast on the floor
+    at height ``floor``, and a line from the base of each pose ``(dof,)`` straight down to it."""
+    if trace is not None:
+        shadow = np.array(trace, dtype=float)  # (T, 3)
+        shadow[:, 2] = floor
+        ax.plot(*shadow.T, zorder=2.5, gid="shadow", label="shadow on the floor", **SHADOW_STYLE)
+    for k, q in enumerate(poses):
+        base = robot.link_boxes(np.asarray(q, dtype=float)[None])[0][0, 0]  # (3,) the first link's centre
+        down = np.array([base, [base[0], base[1], floor]])  # (2, 3)
+        ax.plot(*down.T, zorder=2.5, gid="drop", label="" if k else "drop to the floor", **DROP_STYLE)
 
 
 def robot_strokes(robot: BoxRobot, q: np.ndarray) -> np.ndarray:
@@ -158,12 +174,14 @@ def close_up(
     return int(near.sum()), (elevation, azimuth)
 
 
-TURNS = (90.0, -90.0, 120.0, -120.0, 60.0, -60.0)  # degrees about the vertical a second close-up tries, in turn
+TURNS = (60.0, -60.0, 120.0, -120.0, 90.0, -90.0)  # degrees about the vertical a second close-up tries, in turn
+# (reader r20c: a quarter turn saw a chain's plane edge-on, its links end-on over each other; a sixth still shows the
+# bend, foreshortened by half, and which link is nearer)
 
 
 def second_turn(robot: BoxRobot, q: np.ndarray, workspace: Workspace, margin: float) -> float:
-    """A single pose's second close-up: the first of :data:`TURNS` (a quarter turn, either way, then a third or a
-    sixth) with the fewest blocks on a line of sight through the robot (:func:`clear_turn`)."""
+    """A single pose's second close-up: the first of :data:`TURNS` (a sixth of a turn, either way, then a third or a
+    quarter) with the fewest blocks on a line of sight through the robot (:func:`clear_turn`)."""
     return clear_turn(robot, q, workspace, margin, TURNS)
 
 
@@ -187,7 +205,9 @@ def clear_turn(
 
 def turn_words(turn: float) -> str:
     """A second close-up's title: how far round the first it is seen (:data:`TURNS`)."""
-    return "a quarter turn round" if abs(turn) == 90 else f"turned {abs(turn):.0f}° round"
+    return {60: "a sixth of a turn round", 90: "a quarter turn round", 120: "a third of a turn round"}.get(
+        round(abs(turn)), f"turned {abs(turn):.0f}° round"
+    )
 
 
 def model_words(answer: tuple[float, bool] | None) -> str:
@@ -203,18 +223,20 @@ def mark_nearest(scene, links: np.ndarray, blocks: np.ndarray) -> None:
     lo, hi = blocks[int(np.argmin(np.linalg.norm(gaps, axis=-1).min(axis=1)))]  # (K, L, 3) gaps -> the nearest
     window = np.array([scene.get_xlim(), scene.get_ylim(), scene.get_zlim()]).T  # (2, 3) the axes' window
     lo, hi = np.clip(lo, *window), np.clip(hi, *window)  # its part inside: mplot3d draws past the axes
-    add_box_3d(scene, aabb_corners(lo, hi), facecolor="none", edgecolor=COLORS["ink"], linewidth=1.6, gid="nearest")
-    x, y, _ = (lo + hi) / 2
-    scene.text(
-        x,
-        y,
-        hi[2],
+    corners = aabb_corners(lo, hi)  # (8, 3)
+    add_box_3d(scene, corners, facecolor="none", edgecolor=COLORS["ink"], linewidth=1.6, gid="nearest")
+    x, y, _ = proj3d.proj_transform(*corners.T, scene.get_proj())  # (8,) each: the corners on the picture
+    scene.annotate(  # above the block's highest corner on the picture, clear of its edges (reader r20c)
         "nearest block",
+        (float(np.mean(x)), float(np.max(y))),
+        xytext=(0, 4),
+        textcoords="offset points",
         fontsize=9,
         ha="center",
         va="bottom",
         zorder=10.0,
         color=COLORS["ink"],
+        annotation_clip=False,
         path_effects=halo(1.0, ("free",)),
     )
 
@@ -257,13 +279,16 @@ def view_angles(robot: BoxRobot, q: np.ndarray) -> tuple[float, float]:
     return elevation, azimuth + max(OFF_AXIS - within, 0.0) - max(within - (90.0 - OFF_AXIS), 0.0)
 
 
-def draw_points(ax, samples, trace, clip: bool = False, alpha: float = 1.0, scale: float = 1.0) -> int:
+def draw_points(
+    ax, samples, trace, clip: bool = False, alpha: float = 1.0, scale: float = 1.0, hide: np.ndarray | None = None
+) -> int:
     """The samples ``(points (N, 3), {kind: mask})`` by kind and the base's ``trace (T, 3)`` on a 3D axes; with
     ``clip``, only what lies inside the axes' window (mplot3d does not clip); marks ``scale`` times their size, with
-    ``alpha``. Returns how many samples it drew."""
+    ``alpha``; none where ``hide (N,)`` is true. Returns how many samples it drew."""
     drawn = np.zeros(0 if samples is None else len(samples[0]), dtype=bool)  # (N,)
     for kind, mask in ({} if samples is None else samples[1]).items():
         mask = mask & inside_mask(ax, samples[0]) if clip else mask
+        mask = mask & ~hide if hide is not None else mask
         drawn |= mask
         if mask.any():
             marker, color, size = SAMPLE_MARKS[kind]
@@ -284,6 +309,30 @@ def draw_points(ax, samples, trace, clip: bool = False, alpha: float = 1.0, scal
             points[~inside_mask(ax, points)] = np.nan
         ax.plot(*points.T, linewidth=2.0, path_effects=halo(2.0), label="path of the base (dashed)", **TRACE_STYLE)
     return int(drawn.sum())
+
+
+SHADOW_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=1.2, linestyle=":")  # the path's shadow on the floor
+DROP_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=0.9, linestyle="-")  # a pose's base, straight down
+OVER = 6.0  # pixels: a close-up's mark nearer than this to a link's picture is left out (about half a mark)
+
+
+def over_robot(ax, robot: BoxRobot, q: np.ndarray, points: np.ndarray) -> np.ndarray:
+    """``(N,)`` bool: which ``points (N, 3)`` the 3D axes, its view and window set, pictures within :data:`OVER`
+    pixels of a link of the robot at ``q (dof,)``, in front of it or behind (reader r20c: a diamond half behind a
+    bar read as part of the robot); a close-up leaves them out, as the 3D views do."""
+    proj = ax.get_proj()
+
+    def on_screen(p: np.ndarray) -> np.ndarray:  # (n, 3) -> (n, 2) display pixels
+        x, y, _ = proj3d.proj_transform(*p.T, proj)
+        return ax.transData.transform(np.column_stack([x, y]))
+
+    marks = on_screen(points)  # (N, 2)
+    centers, rotations, half = robot.link_boxes(np.asarray(q, dtype=float)[None])  # (1, L, 3), (1, L, 3, 3), (L, 3)
+    over = np.zeros(len(points), dtype=bool)
+    for c, r, h in zip(centers[0], rotations[0], half):
+        link = Path(outline(on_screen(box_corners(c, r, h)), (0, 1)))  # the link's picture, a convex polygon
+        over |= link.contains_points(marks, radius=OVER) | link.contains_points(marks, radius=-OVER)  # grown: the sign
+    return over  # of the radius that grows a polygon depends on its orientation, so both
 
 
 def inside_mask(ax, points: np.ndarray) -> np.ndarray:
