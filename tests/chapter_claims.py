@@ -627,6 +627,7 @@ SLOW_TOTAL = {  # ... and each query's total time, by the verdict every recorded
     findings.COSTS: ("each query's total time was longer for every sampler measured",),
 }
 SLOW_MOSTLY_TIES = "each query's total time was mostly a tie"  # no one verdict everywhere, ties in most pairs
+SLOW_ONLY_SAMPLING = "(python-fcl): only the sampling stage"  # untrue where any pair's total was shorter (r21a)
 
 
 def _slow_checker(nb, facts: checker_scope.SlowChecker | None = None) -> list[str]:
@@ -653,6 +654,8 @@ def _slow_checker(nb, facts: checker_scope.SlowChecker | None = None) -> list[st
         problems += [
             f"04: the prose says '{p}'; the record: {dict(totals)}" for p in phrases if v != verdict and p in written
         ]
+    if totals[findings.SAVES] and SLOW_ONLY_SAMPLING in written:
+        problems.append(f"04: the prose says '{SLOW_ONLY_SAMPLING}'; the record: {dict(totals)}")
     mostly = verdict is None and 2 * totals[findings.TIES] > len(facts.own)
     if (written.count(SLOW_MOSTLY_TIES) >= 3) != mostly:
         problems.append(

@@ -296,8 +296,12 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
         _draw_roadmap(ax, exact, step)
     for ax in axes[len(steps) :]:
         ax.set_axis_off()
-    title = "The planner step by step, by the lines of Algorithm 1"
-    fig.suptitle(f"{title}\n(hollow: not yet confirmed exactly; X: removed by a repair)", fontsize=11)
+    title = "The lazy PRM with edge screening, step by step"  # not Algorithm 1: its edges are predicted, not checked
+    fig.suptitle(
+        f"{title}\n(thin edges: kept by prediction, checked exactly only on a candidate, so some cross C-obstacles;"
+        "\nhollow: not yet confirmed exactly; X: removed by a repair)",
+        fontsize=11,
+    )
     _roadmap_legend(fig, axes)
     text = f"{title}, one panel per step, {len(steps)} steps. First: {step_in_words(steps[0])}"
     text += f" Last: {step_in_words(steps[-1])}" if len(steps) > 1 else ""  # every step: the longer description
