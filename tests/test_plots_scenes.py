@@ -291,8 +291,14 @@ def test_a_stills_model_wrong_star_is_hollow_round_the_mark_it_flags(crossing):
     points = robot.link_boxes(path)[0][:, 0]  # (T, 3)
     wrong = np.arange(len(points)) % 3 == 0
     kinds = {"valid": valid, "in collision": ~valid, "model wrong": wrong}
-    overview = scenes.scene_still(robot, workspace, {}, samples=(points, kinds)).axes[0]
+    fig = scenes.scene_still(robot, workspace, {}, samples=(points, kinds))
+    overview = fig.axes[0]
     (stars,) = [c for c in overview.collections if c.get_label() == "sample, model wrong"]
+    legend = dict(zip([t.get_text() for t in fig.legends[0].get_texts()], fig.legends[0].legend_handles))
+    assert "sample, model wrong" in legend  # reader r21c: its star drawn round a mark, as in the panels, not empty
+    (circle,) = [c for c in overview.collections if c.get_label() == "sample, valid"]
+    entry = still_panels.star_on_mark({"sample, valid": circle, "sample, model wrong": stars})["sample, model wrong"]
+    assert entry == (circle, stars)
     assert len(stars.get_facecolor()) == 0 or stars.get_facecolor()[0][3] == 0  # the circle or diamond shows inside
     assert stars.get_sizes()[0] > 4 * still_panels.SAMPLE_MARKS["valid"][2]  # round the mark, larger than it
     with pytest.raises(ValueError, match="drawn in 3D"):
@@ -422,9 +428,31 @@ def test_an_angle_that_wraps_around_is_broken_where_it_wraps_not_drawn_across_th
         title
         == "each DoF in its bounds: 0 lower, 1 upper\nalpha: a gap where the angle wraps round ±π, no data missing"
     )
+    assert f"at 50% (from {scaled[1]:.2f} to {scaled[2]:.2f})" in text  # the edges its line leaves and comes back at
     Q[:, 5] = [3.0, -3.1, -3.0, -2.9]  # gamma too
     assert dof_panels.wrap_note(robot, Q, [3, 4, 5]).startswith("\nalpha and gamma: a gap")
     assert dof_panels.wrap_note(robot, Q[:, [0, 1, 2, 4, 4, 4, 6]], [3, 4, 5]) == ""  # beta alone: no wrap
+
+
+def test_an_angle_that_wraps_after_its_first_frame_shows_that_frame_as_a_marker():
+    """Reader r21c: beta "0.00 to 0.38" in words, but its line began near 1.00: frame 0 alone, before a wrap, drew
+    nothing. Now a marker shows it, and the words name both edges of the wrap."""
+    robot = scenarios.get("3dc7").robot
+    Q = np.zeros((4, robot.dof))
+    Q[:, 4] = [-3.14, 3.1, 3.0, 2.9]  # beta wraps between frames 0 and 1
+    fig = Figure()
+    ax = fig.subplots()
+    dof_panels.draw_dofs(fig, robot, Q, [4], "angles", ax, np.linspace(0.0, 1.0, 4))
+    line, lone = ax.get_lines()
+    scaled = (Q[:, 4] - robot.lower[4]) / (robot.upper[4] - robot.lower[4])
+    assert np.isnan(line.get_ydata()[1]) and lone.get_marker() == line.get_marker() != "None"
+    np.testing.assert_allclose(lone.get_ydata(), scaled[:1])
+    assert lone.get_color() == line.get_color() and lone.get_linestyle() == "None"
+    text = alt_text(scenes.path_frame(robot, Q, 0))
+    assert "beta wraps round (crosses ±π, its line jumping from one edge of its panel to the other) at 17% (from " in (
+        text
+    )
+    assert f"(from {scaled[0]:.2f} to {scaled[1]:.2f})" in text
 
 
 @pytest.mark.parametrize(("name", "seed", "count"), [("3dc9", 1, 3), ("3do", 2, 1)])

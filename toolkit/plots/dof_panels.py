@@ -37,6 +37,9 @@ def draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, dofs: list[int], kind
         style = series_style(k) | dict(markevery=(k % every, every), markersize=6)
         x, y = _broken(along, scaled[:, k]) if kind == "angles" else (along, scaled[:, k])
         ax.plot(x, y, linewidth=1.4, label=robot.dof_names[k], gid="dof", **style)
+        lone = _lone_frames(scaled[:, k]) if kind == "angles" else np.zeros(0, dtype=int)  # (l,) one-frame pieces
+        if len(lone):  # draw no line: a marker shows each
+            ax.plot(along[lone], scaled[lone, k], **(style | dict(linestyle="none", markevery=None)), gid="dof-lone")
     ax.set_ylim(-0.05, 1.05)
     box = ax.get_position()  # in figure fractions: the gridspec has placed the panel
     per_unit = box.height * fig.get_figheight() * 72 / 1.1  # points per unit of the y axis (1.1 units tall)
@@ -68,6 +71,13 @@ def _broken(along: np.ndarray, scaled: np.ndarray) -> tuple[np.ndarray, np.ndarr
     jumps more than half its range between two frames, it went through -pi = pi, not across the panel."""
     wraps = wrap_frames(scaled) + 1  # (w,) the frames after a wrap
     return np.insert(along, wraps, np.nan), np.insert(scaled, wraps, np.nan)  # (T + w,) each
+
+
+def _lone_frames(scaled: np.ndarray) -> np.ndarray:
+    """The frames ``(l,)`` of an angle ``scaled (T,)`` that wraps both before and after them (or at the path's end):
+    drawn broken, each is a piece of one point, which a line cannot show (reader r21c: beta's start at 0.00)."""
+    edges = np.concatenate(([0], wrap_frames(scaled) + 1, [len(scaled)]))  # (w + 2,) where each piece starts
+    return edges[:-1][np.diff(edges) == 1]
 
 
 def wrap_frames(scaled: np.ndarray) -> np.ndarray:

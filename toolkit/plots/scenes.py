@@ -44,6 +44,7 @@ from toolkit.plots.still_panels import (
     overview,
     overview_step,
     second_turn,
+    star_on_mark,
     turn_words,
 )
 
@@ -124,7 +125,7 @@ def _overview_name(label: str, poses: int, valid: bool | None) -> str:
 
 def _still_legend(fig: Figure, valid: dict[str, bool]) -> None:
     """The still's legend, under its panels: every mark they name and the robot's states drawn."""
-    handles = {name: h for ax in fig.axes for h, name in zip(*ax.get_legend_handles_labels())}
+    handles = star_on_mark({name: h for ax in fig.axes for h, name in zip(*ax.get_legend_handles_labels())})
     shown = {ok for ok in valid.values() if ok is not None}  # the robot's states drawn: name those alone
     handles |= {
         text: Patch(label=text, **link_style(c))
@@ -275,7 +276,9 @@ def _series_in_words(robot: BoxRobot, Q: np.ndarray, series: dict, threshold: fl
     for k, name in enumerate(robot.dof_names):  # an angle across ±π: its line jumps from one edge to the other
         wraps = wrap_frames(scaled[:, k])  # (w,) the frames before each wrap, as drawn
         if len(wraps):
-            at = ", ".join(f"{(t + 0.5) / (len(Q) - 1):.0%}" for t in wraps)
+            at = ", ".join(  # where, and the two edges: a wrap after the first frame leaves a lone point (r21c)
+                f"{(t + 0.5) / (len(Q) - 1):.0%} (from {scaled[t, k]:.2f} to {scaled[t + 1, k]:.2f})" for t in wraps
+            )
             text += (
                 f"; {name} wraps round (crosses ±π, its line jumping from one edge of its panel to the other) at {at}"
             )

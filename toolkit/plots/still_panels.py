@@ -311,6 +311,15 @@ def draw_points(
     return int(drawn.sum())
 
 
+def star_on_mark(handles: dict) -> dict:
+    """A still's legend ``handles {label: artist}`` with the mistakes' hollow star drawn round a sample's mark, as the
+    panels draw it (reader r21c: a hollow star alone in the legend, stars filled by their marks in the panels)."""
+    star, mark = handles.get("sample, model wrong"), handles.get("sample, valid", handles.get("sample, in collision"))
+    if star is None or mark is None:
+        return handles
+    return handles | {"sample, model wrong": (mark, star)}  # a tuple: both drawn, overlaid, in the star's place
+
+
 SHADOW_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=1.2, linestyle=":")  # the path's shadow on the floor
 DROP_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=0.9, linestyle="-")  # a pose's base, straight down
 OVER = 6.0  # pixels: a close-up's mark nearer than this to a link's picture is left out (about half a mark)
