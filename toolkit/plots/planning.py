@@ -298,8 +298,8 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
         ax.set_axis_off()
     title = "The lazy PRM with edge screening, step by step"  # not Algorithm 1: its edges are predicted, not checked
     fig.suptitle(
-        f"{title}\n(thin edges: kept by prediction, checked exactly only on a candidate, so some cross C-obstacles;"
-        "\nhollow: not yet confirmed exactly; X: removed by a repair)",
+        f"{title}\n(thin edges: kept by prediction, checked exactly only on a candidate,"
+        "\nso some cross C-obstacles; hollow: not yet confirmed exactly; X: removed by a repair)",
         fontsize=11,
     )
     _roadmap_legend(fig, axes)
