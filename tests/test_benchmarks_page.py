@@ -7,6 +7,8 @@ from pathlib import Path
 
 import pytest
 
+from toolkit.teaching import checker_scope
+
 PAGE = (Path(__file__).resolve().parents[1] / "docs" / "benchmarks.md").read_text()
 SUMMARY = " ".join(PAGE.partition("**In short**")[2].partition("\n## ")[0].split())
 NUMBER = re.compile(r"\d+(?:,\d{3})*(?:\.\d+)?")  # "10,000", "0.66"; not the comma of a list
@@ -236,7 +238,7 @@ def test_what_it_means_quotes_the_run_with_python_fcl_on_both_sides():
     saving = f"{100 * min(saved):.0f}–{100 * max(saved):.0f} %"
     ratios = f"{min(own):.2f}–{max(own):.2f}"
     flat, opening = " ".join(PAGE.split()), " ".join(OPENING.split())
-    names = [{"2ds": "2DS", "3dc7": "3DC-7", "3dc9": "3DC-9", "3do": "3DO"}[s] for s in scenarios]
+    names = [checker_scope.NAMES[s] for s in scenarios]
     assert f"cut the sampling stage by {saving} ({', '.join(names)})" in opening
     assert f"({ratios} times, each query's own ratio)" in opening
     assert f"({' and '.join(', '.join(names).rsplit(', ', 1))}, 100 queries a sampler)" in flat
@@ -258,7 +260,7 @@ def beside_table3(scenarios: list[str]) -> str:
     three_d = [(s, k) for s in scenarios if s != "2ds" for k in ours[s]]
     more = sum(ours[s][k] > paper[s][k] for s, k in three_d)
     less = {s: [k for k in ours[s] if ours[s][k] < paper[s][k]] for s in scenarios}
-    names = {"2ds": "2DS", "3dc7": "3DC-7", "3dc9": "3DC-9", "3do": "3DO"}
+    names = checker_scope.NAMES
 
     def pct(values: list[float]) -> str:
         return f"{100 * min(values):.0f}–{100 * max(values):.0f} %"

@@ -444,7 +444,9 @@ def test_the_index_says_the_paper_network_gives_one_answer_to_every_3d_sample():
 
 def scenarios_named(keys: list[str]) -> list[str]:
     """The pages' names of scenarios ("2DS", "3DC-7") from the record's keys ("2ds", "3dc7")."""
-    return [{"2ds": "2DS", "3dc7": "3DC-7", "3dc9": "3DC-9", "3do": "3DO"}[k] for k in keys]
+    from toolkit.teaching.checker_scope import NAMES
+
+    return [NAMES[k] for k in keys]
 
 
 def percents(fractions: list[float], digits: int = 0) -> str:
