@@ -140,7 +140,7 @@ def _panel(ax, sweep: dict) -> None:
 TICK_POINTS = 9
 MARKS: dict[str, dict] = {  # where two curves meet, the network's triangle beneath, the exact circle and python-fcl's
     "exact": dict(markersize=6, zorder=3),  # square inside it, each ringed in white (review r19a: at a batch of one the
-    "fcl": dict(markersize=7, zorder=3, markeredgecolor="white"),  # triangle nearly covered the square)
+    "fcl": dict(markersize=7, zorder=3, markeredgecolor=COLORS["free"]),  # triangle nearly covered the square)
     "learned": dict(markersize=10, zorder=2.5, path_effects=halo(1.5)),  # orange alone is too light on white
 }
 

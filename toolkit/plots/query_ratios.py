@@ -126,7 +126,7 @@ def _points(ax, x: np.ndarray, by_sampler: Mapping[str, tuple[float, float, floa
 def _fill(colour: str, hollow: bool) -> dict:
     """A marker's colours: filled in ``colour``, or hollow (white inside, ``colour`` round it, a thicker edge)."""
     if hollow:
-        return dict(color=colour, markerfacecolor="white", markeredgecolor=colour, markeredgewidth=1.8)
+        return dict(color=colour, markerfacecolor=COLORS["free"], markeredgecolor=colour, markeredgewidth=1.8)
     return dict(color=colour)
 
 
