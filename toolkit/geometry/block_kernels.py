@@ -154,13 +154,17 @@ def arrays(robot, world) -> Arrays:
     for link in range(n_links):
         balls[0, link] = (half[link, 0] ** 2 + half[link, 1] ** 2 + half[link, 2] ** 2) * (1 + 1e-9)
         balls[1, link] = min(half[link, 0], half[link, 1], half[link, 2] if dim == 3 else np.inf) ** 2 * (1 - 1e-9)
-    trig = np.empty((3, (len(robot.lower) - first_angle(robot)) * BLOCK))
-    position, centers = np.empty((3, BLOCK)), np.empty((n_links, 3, BLOCK))
+    # zeros, not np.empty: a short block's vector loops also read lanes it did not write (_grid_cells runs over a
+    # multiple of 32), and memory never written may hold subnormal numbers or NaN, on which the processor takes a
+    # slow path an operation: a checker whose first calls were small paid that at every small call (3DC-9, 4 to 10
+    # checkers in 60 made afresh: calls of 16 at 2.8x the cost of the others')
+    trig = np.zeros((3, (len(robot.lower) - first_angle(robot)) * BLOCK))
+    position, centers = np.zeros((3, BLOCK)), np.zeros((n_links, 3, BLOCK))
     rotations = np.zeros((n_links + 1, 3, 3, BLOCK))
     for i in range(3):  # the identity, where block_frames takes it from
         rotations[:, i, i] = 1.0
-    cells = np.empty((n_links + 2, BLOCK), np.int64)
-    owners = (robot, world, walls, corner, balls, trig, position, centers, rotations, cells, np.empty(27))
+    cells = np.zeros((n_links + 2, BLOCK), np.int64)
+    owners = (robot, world, walls, corner, balls, trig, position, centers, rotations, cells, np.zeros(27))
     return Arrays(owners, *_borrowed(owners))  # type: ignore[call-arg]  # numba passes the typing context
 
 
