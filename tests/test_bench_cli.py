@@ -61,6 +61,28 @@ def test_throughput_times_the_compiled_checker_beside_fcl_in_3d():
     assert all(cost > 0 for cost in result["exact_small_call_cost"].values())
 
 
+def test_bench_and_the_small_call_script_measure_small_calls_with_one_function(monkeypatch, capsys):
+    """``toolkit bench``'s ``exact_small_call_cost`` and ``docs/scripts/small_call_cost.py`` print
+    :func:`bench.small_call_cost`, so the two cannot measure small calls two ways; its figures are consistent."""
+    import runpy
+
+    scenario = scenarios.get("3dc7")
+    cost = bench.small_call_cost(scenario, batch=40, repeats=1)  # a call of each size at least
+    assert set(cost["ratios"]) == set(cost["call_ns"]) == {"16", "32", "64"}
+    assert cost["ratios"]["16"] == pytest.approx(cost["call_ns"]["16"] / cost["batch_ns"])
+    assert cost["fixed_16_ns"] == pytest.approx(16 * (cost["call_ns"]["16"] - cost["batch_ns"]))
+    assert cost["batch_ns"] > 0 and cost["empty_ns"] > 0
+    calls = []
+    canned = dict(cost, ratios={"16": 2.5, "32": 1.5, "64": 1.25})
+    monkeypatch.setattr(bench, "small_call_cost", lambda *args, **kwargs: calls.append(kwargs) or canned)
+    result = bench.throughput(scenario, bench.untrained_models(scenario, presets.get("paper")), batch=300, repeats=1)
+    assert result["exact_small_call_cost"] == canned["ratios"]
+    monkeypatch.setattr("sys.argv", ["small_call_cost.py", "3dc7", "3"])
+    runpy.run_path("docs/scripts/small_call_cost.py", run_name="__main__")
+    assert "16: 2.50x  32: 1.50x  64: 1.25x" in capsys.readouterr().out
+    assert calls[1]["repeats"] == 3
+
+
 def test_with_and_without_prediction_plan_with_one_planner_whatever_the_models_recipe(monkeypatch):
     """`bench --checkpoint`: both modes run one planner (the lazy PRM unless --planner names another) with the same
     parameters and the default exact checker; only the checker that decides samples differs; an --option reaches

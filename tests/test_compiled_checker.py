@@ -269,7 +269,7 @@ def test_one_compiled_version_serves_every_robot_and_workspace():
         checker.are_valid(scenario.robot.sample(rng, 10).astype(np.float32))  # any float type
         checker.clearances(scenario.robot.sample(rng, 10), 0.3)
     CompiledChecker(Workspace(np.zeros(2), np.full(2, 31.0), []), planar_arm()).are_valid(np.zeros((3, 5)))
-    assert len(block_kernels.validity.signatures) == 1
+    assert len(block_kernels.validity_at.signatures) == 1
     assert len(kernels.clearance_bounds.signatures) == 1
 
 
@@ -416,6 +416,13 @@ def test_a_planners_small_calls_answer_as_the_batch_and_refuse_nan_and_infinitie
         pieces.append(checker.are_valid(Q[start : start + size]))
         start += size
     np.testing.assert_array_equal(np.concatenate(pieces), batch[:start])
+    # the loop, not Python, tests the order (by the strides): any other order gets the batch's answers too
+    wide = np.concatenate([Q, Q], axis=1)  # (2000, 2 dof)
+    for size in (1, 2, 16, 130):
+        strided = Q[: 2 * size : 2]
+        np.testing.assert_array_equal(checker.are_valid(strided), batch[: 2 * size : 2])
+        for other in (np.asfortranarray(Q[:size]), wide[:size, : robot.dof], wide[:size, 1::2]):
+            np.testing.assert_array_equal(checker.are_valid(other), checker.are_valid(np.ascontiguousarray(other)))
     unbounded = BoxRobot(
         "unbounded", "free", [Link((0.5, 0.25, 0.125))], [], position_bounds=(np.full(3, -np.inf), np.full(3, np.inf))
     )

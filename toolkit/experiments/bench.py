@@ -6,7 +6,7 @@ save planning time. So three measurements, one function each:
 
 - :func:`throughput` — configurations per second of the default exact checker (compiled for box
   worlds), of the python-fcl reference and of the learned checker, and what a configuration costs the
-  exact checker in the small calls a planner makes;
+  exact checker in the small calls a planner makes (:func:`small_call_cost`);
 - :func:`edge_checks` — the exact local planner's edge checks, every point against
   clearance certificates (``local_planner.check_edges`` / ``certify_edges``);
 - :func:`planning_ratios` — PRM with and without prediction, per sampler, on the paper's
@@ -61,6 +61,7 @@ __all__ = [
     "planning_ratios",
     "prediction_ratios",
     "short_valid_segments",
+    "small_call_cost",
     "throughput",
     "untrained_models",
     "usable_device",
@@ -136,7 +137,8 @@ def throughput(
     three timed in turns (:func:`in_turns`) at ``batch`` configurations a call (default: 20,000 exact, 10,000
     learned); ``ratio`` is learned / default exact, ``exact_over_fcl`` the compiled checker's speed-up.
     ``exact_small_call_cost``: per size in ``SMALL_CALLS``, what a configuration costs the default exact checker in
-    calls of that many (the same batch cut in pieces, timed in the same turns) over what it costs in the batch.
+    calls of that many over what it costs in the batch (:func:`small_call_cost`'s ``ratios``, timed apart, by the
+    thread's CPU clock: what ``docs/scripts/small_call_cost.py`` prints).
 
     With ``device`` (``"cpu"``, ``"cuda"``): the learned checker runs there, and beside it the exact one in torch
     (:class:`~toolkit.geometry.torch_kernels.TorchChecker`), each timed twice: a numpy batch in and out
@@ -146,7 +148,6 @@ def throughput(
     calls = {
         "exact": exact_call(scenario, batch or 20_000, seed),
         "fcl": exact_call(scenario, batch or 20_000, seed, make=FCLChecker),
-        **{f"exact_{size}": exact_call(scenario, batch or 20_000, seed, calls_of=size) for size in SMALL_CALLS},
     }
     if device is None:
         calls["learned"] = learned_call(scenario, models, batch or 10_000, seed)
@@ -160,7 +161,7 @@ def throughput(
         "learned_cfg_per_s": rates["learned"],
         "ratio": rates["learned"] / rates["exact"],
         "exact_over_fcl": rates["exact"] / rates["fcl"],
-        "exact_small_call_cost": {str(size): rates["exact"] / rates[f"exact_{size}"] for size in SMALL_CALLS},
+        "exact_small_call_cost": small_call_cost(scenario, batch=batch or 20_000, seed=seed)["ratios"],
     }
     if device is not None:
         result.update(
@@ -247,18 +248,55 @@ def exact_call(
     seed: int = 0,
     make: Callable[[Workspace, BoxRobot], CollisionChecker] = exact_checker,
     workspace: Workspace | None = None,
-    calls_of: int | None = None,
 ) -> tuple[Callable[[], object], int]:
     """An exact checker (``make(workspace, robot)``, default the fastest) asked about ``batch`` uniform samples in
-    ``workspace`` (default: a query workspace), in one call or (``calls_of``) in calls of that many; and the number
-    asked about."""
+    ``workspace`` (default: a query workspace) in one call; and ``batch``."""
     ws = scenario.workspaces("query", 1, seed)[0] if workspace is None else workspace
     checker = make(ws, scenario.robot)
     Q = scenario.robot.sample(np.random.default_rng(seed), batch)  # (batch, dof)
-    if calls_of is None:
-        return (lambda: checker.are_valid(Q)), batch
-    pieces = [Q[i : i + calls_of] for i in range(0, max(batch - calls_of, 0) + 1, calls_of)]  # (calls_of, dof) each
-    return (lambda: [checker.are_valid(piece) for piece in pieces]), sum(map(len, pieces))
+    return (lambda: checker.are_valid(Q)), batch
+
+
+def small_call_cost(
+    scenario: Scenario, *, batch: int = 20_000, seed: int = 0, repeats: int = 7, sizes: tuple[int, ...] = SMALL_CALLS
+) -> dict:
+    """What the default exact checker's calls cost by their size, on ``batch`` uniform configurations in a query
+    workspace: each of ``repeats`` rounds times, by the thread's CPU clock, one call of all of them, ``batch`` calls
+    of none, and the same configurations cut in calls of each of ``sizes``, every call's answers dropped as a
+    planner drops them; medians over the rounds, in ns: ``batch_ns`` (a configuration in the batch), ``empty_ns``
+    (a call of none), per size ``call_ns`` (a configuration in calls of that size) and ``ratios`` (that over
+    ``batch_ns``, keyed by the size as a string), and ``fixed_16_ns``: what a call of 16 costs beyond checking 16
+    configurations at the batch's rate (below 16 ``batch_ns``, calls of 16 cost under twice the batch's).
+
+    ``toolkit bench`` (:func:`throughput`'s ``exact_small_call_cost``) and ``docs/scripts/small_call_cost.py``
+    both print this. The CPU clock counts what the call computed, not a wait for a core beside other work."""
+    ws = scenario.workspaces("query", 1, seed)[0]
+    checker, batch = exact_checker(ws, scenario.robot), max(batch, *sizes)  # a call of each size at least
+    Q = scenario.robot.sample(np.random.default_rng(seed), batch)  # (batch, dof)
+    checker.are_valid(Q)  # compiled, or loaded from the cache, before anything is timed
+    empty, pieces = Q[:0], {size: [Q[i : i + size] for i in range(0, batch - size + 1, size)] for size in sizes}
+    times: dict = {key: [] for key in ("batch", 0, *sizes)}
+    for _ in range(repeats):
+        start = time.thread_time_ns()
+        checker.are_valid(Q)
+        times["batch"].append((time.thread_time_ns() - start) / batch)
+        start = time.thread_time_ns()
+        for _ in range(batch):
+            checker.are_valid(empty)
+        times[0].append((time.thread_time_ns() - start) / batch)
+        for size in sizes:
+            start = time.thread_time_ns()
+            for piece in pieces[size]:
+                checker.are_valid(piece)
+            times[size].append((time.thread_time_ns() - start) / (len(pieces[size]) * size))
+    cost = {key: float(np.median(values)) for key, values in times.items()}
+    return {
+        "batch_ns": cost["batch"],
+        "empty_ns": cost[0],
+        "call_ns": {str(size): cost[size] for size in sizes},
+        "ratios": {str(size): cost[size] / cost["batch"] for size in sizes},
+        "fixed_16_ns": 16 * (cost[16] - cost["batch"]) if 16 in sizes else None,
+    }
 
 
 def learned_call(

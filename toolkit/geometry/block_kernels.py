@@ -66,10 +66,12 @@ class Arrays(structref.StructRefProxy):
 
     It is about a call's fixed cost, which a planner's calls of tens of configurations pay again and again: numba
     unpacks every argument of a call, about 35 ns an array, and a robot and a world are 17 arrays in named tuples
-    (0.6 us, as long as checking 8 configurations); this object is one pointer (0.1 us). Allocating the scratch
-    anew cost a call of 16 configurations about 0.15 us more. A checker's scratch is its own, and no two calls use
-    it at once: the loop holds Python's interpreter lock (numba's ``nogil`` is off). Made by one function from
-    arrays laid out alike, it always has the same numba type: one compiled version serves all."""
+    (0.6 us, as long as checking 8 configurations); this object is one pointer (0.09 us: numba looks it up by
+    attribute name and counts a reference), and its address, an integer, with its type (:func:`validity_at`) a few
+    nanoseconds. Allocating the scratch anew cost a call of 16 configurations about 0.15 us more. A checker's
+    scratch is its own, and no two calls use it at once: the loop holds Python's interpreter lock (numba's ``nogil``
+    is off). Made by one function from arrays laid out alike, it always has the same numba type: one compiled version
+    serves all."""
 
 
 FIELDS = ["owners", "robot", "world", "walls", "corner", "balls"]  # the arrays themselves, then views of them
@@ -152,13 +154,17 @@ def arrays(robot, world) -> Arrays:
     for link in range(n_links):
         balls[0, link] = (half[link, 0] ** 2 + half[link, 1] ** 2 + half[link, 2] ** 2) * (1 + 1e-9)
         balls[1, link] = min(half[link, 0], half[link, 1], half[link, 2] if dim == 3 else np.inf) ** 2 * (1 - 1e-9)
-    trig = np.empty((3, (len(robot.lower) - first_angle(robot)) * BLOCK))
-    position, centers = np.empty((3, BLOCK)), np.empty((n_links, 3, BLOCK))
+    # zeros, not np.empty: a short block's vector loops also read lanes it did not write (_grid_cells runs over a
+    # multiple of 32), and memory never written may hold subnormal numbers or NaN, on which the processor takes a
+    # slow path an operation: a checker whose first calls were small paid that at every small call (3DC-9, 4 to 10
+    # checkers in 60 made afresh: calls of 16 at 2.8x the cost of the others')
+    trig = np.zeros((3, (len(robot.lower) - first_angle(robot)) * BLOCK))
+    position, centers = np.zeros((3, BLOCK)), np.zeros((n_links, 3, BLOCK))
     rotations = np.zeros((n_links + 1, 3, 3, BLOCK))
     for i in range(3):  # the identity, where block_frames takes it from
         rotations[:, i, i] = 1.0
-    cells = np.empty((n_links + 2, BLOCK), np.int64)
-    owners = (robot, world, walls, corner, balls, trig, position, centers, rotations, cells, np.empty(27))
+    cells = np.zeros((n_links + 2, BLOCK), np.int64)
+    owners = (robot, world, walls, corner, balls, trig, position, centers, rotations, cells, np.zeros(27))
     return Arrays(owners, *_borrowed(owners))  # type: ignore[call-arg]  # numba passes the typing context
 
 
@@ -278,14 +284,57 @@ def _link_touches(centers, rotations, link, b, half, walls, first, count, member
     return False
 
 
+@intrinsic
+def _address(typingctx, arrays):
+    """Where ``arrays`` (an :class:`Arrays`) lies in memory: the address of its numba record (its meminfo)."""
+
+    def codegen(context, builder, signature, args):
+        ref = cgutils.create_struct_proxy(signature.args[0])(context, builder, value=args[0])
+        return builder.ptrtoint(ref.meminfo, context.get_value_type(types.intp))
+
+    return types.intp(arrays), codegen
+
+
+@njit(cache=True)
+def address(arrays) -> int:
+    """The address of ``arrays``' record (:func:`validity_at` takes it): valid as long as ``arrays`` lives."""
+    return _address(arrays)
+
+
+@intrinsic
+def _arrays_at(typingctx, address, kind):
+    """The :class:`Arrays` of numba type ``kind`` (a type reference) whose record lies at ``address``
+    (:func:`address`), with a reference of its own (numba drops it when done)."""
+    arrays_type = kind.instance_type
+
+    def codegen(context, builder, signature, args):
+        ref = cgutils.create_struct_proxy(arrays_type)(context, builder)
+        ref.meminfo = builder.inttoptr(args[0], ref.meminfo.type)
+        value = ref._getvalue()
+        context.nrt.incref(builder, arrays_type, value)
+        return value
+
+    return arrays_type(address, kind), codegen
+
+
+@njit(cache=True)
+def validity_at(Q, address, valid, kind):
+    """:func:`validity` with the :class:`Arrays` given by the address of its record (:func:`address`) and its numba
+    type ``kind``: numba takes an integer and a type from Python in a few nanoseconds, an :class:`Arrays` in about
+    85 (it looks the record up by attribute name and counts a reference). The caller keeps the :class:`Arrays`
+    alive."""
+    return validity(Q, _arrays_at(address, kind), valid)
+
+
 @njit(cache=True)
 def validity(Q, arrays, valid):
     """Fill ``valid (N,)`` for configurations ``Q (N, dof)``: the steps in the module's docstring, each
     configuration stopping at its first failure; ``arrays``: the robot's and the world's (:class:`Arrays`).
-    Returns whether ``Q`` has the robot's ``dof`` columns and every number of it is finite (else ``valid`` means
-    nothing)."""
+    Returns whether ``Q`` has the robot's ``dof`` columns, lies in C order (its strides tested here: numba takes an
+    array of another order as it is) and every number of it is finite (else ``valid`` means nothing)."""
     robot, world, walls, corner, balls = arrays.robot, arrays.world, arrays.walls, arrays.corner, arrays.balls
-    if Q.shape[1] != len(robot.lower):
+    n, dof = Q.shape
+    if dof != len(robot.lower) or (n > 1 and Q.strides[0] != 8 * dof) or (dof > 1 and Q.strides[1] != 8):
         return False
     half, trig, position, cells = robot.half_extents, arrays.trig, arrays.position, arrays.cells  # scratch: Arrays
     centers, rotations, scratch = arrays.centers, arrays.rotations, arrays.box

@@ -105,16 +105,18 @@ class CompiledChecker(BoxWorldChecker):
         self._validity: Any = not_compiled  # the compiled kernel for these arrays, once known (entry_point)
         self._clearance: Any = None  # likewise
         self._arrays: Any = None  # the robot's and the world's arrays in one object (block_kernels.Arrays), once made
+        self._address, self._kind = 0, None  # where it lies and its numba type, as the kernel takes it (validity_at)
         self._grown: dict[float, World] = {}  # clearances: the world with boxes grown by cap, by cap
 
     def are_valid(self, Q):
         """:meth:`CollisionChecker.are_valid`; what a planner passes, a float64 array ``(N, dof)`` in C order, goes
-        straight to the compiled loop, which also checks its columns and that every number is finite (where not, the
-        reference's path gives the same error as ever): a call of 32 configurations then costs little more than
-        checking them. Each test here costs about as much as checking a configuration, so there are few."""
-        if type(Q) is NDARRAY and Q.dtype is FLOAT64 and Q.ndim == 2 and Q.flags.carray:
+        straight to the compiled loop, which also checks its columns, its order and that every number is finite
+        (where not, the reference's path gives the same error as ever, or, in another order, a copy the answers):
+        a call of 32 configurations then costs little more than checking them. Each test here costs about as much as
+        checking a configuration, so there are few; the checker's arrays go as an address (``validity_at``)."""
+        if type(Q) is NDARRAY and Q.dtype is FLOAT64 and Q.ndim == 2:  # the loop tests the order
             valid = EMPTY(len(Q), BOOL)
-            if self._validity(Q, self._arrays, valid):  # False until compiled: the path below compiles it
+            if self._validity(Q, self._address, valid, self._kind):  # False until compiled: the path below compiles
                 self.n_checked += len(valid)
                 return valid
         return super().are_valid(Q)
@@ -122,20 +124,24 @@ class CompiledChecker(BoxWorldChecker):
     def validity(self, Q: np.ndarray) -> np.ndarray:
         Q, valid = np.ascontiguousarray(Q, dtype=np.float64), np.empty(len(Q), dtype=bool)
         if self._validity is not not_compiled and Q.flags.writeable:  # the compiled version: no dispatch, no import
-            self._validity(Q, self._arrays, valid)
+            self._validity(Q, self._address, valid, self._kind)
             return valid
+        from numba import typeof
+
         from toolkit.geometry import block_kernels  # numba loads (or compiles) on first use, not on import
 
         if self._arrays is None:
             self._arrays = block_kernels.arrays(self._robot, self._world)
-        block_kernels.validity(Q, self._arrays, valid)
+            self._address, self._kind = block_kernels.address(self._arrays), typeof(self._arrays)
+        args = (Q, self._address, valid, self._kind)
+        block_kernels.validity_at(*args)
         if Q.flags.writeable:
-            self._validity = entry_point(block_kernels.validity, (Q, self._arrays, valid))
+            self._validity = entry_point(block_kernels.validity_at, args)
         return valid
 
     def __getstate__(self) -> dict:
-        # a compiled function does not pickle; the copy looks it up again
-        return self.__dict__ | {"_validity": not_compiled, "_clearance": None, "_arrays": None}
+        # a compiled function, and where the arrays lie, do not pickle: the copy looks them up again
+        return self.__dict__ | dict(_validity=not_compiled, _clearance=None, _arrays=None, _address=0, _kind=None)
 
     def clearance_bounds(self, Q: np.ndarray, cap: float) -> np.ndarray:
         """The bound of :meth:`BoxWorldChecker.clearance_bounds`, compiled."""
@@ -154,7 +160,7 @@ class CompiledChecker(BoxWorldChecker):
         return clearance
 
 
-def not_compiled(Q, arrays, valid) -> bool:
+def not_compiled(Q, address, valid, kind) -> bool:
     """What a checker calls before its kernel is compiled: False, "not checked", so it takes the path that compiles."""
     return False
 
