@@ -168,6 +168,20 @@ def test_the_series_panels_show_each_dof_clearance_and_probability(crossing):
     assert "threshold 0.40: valid" in title  # 0.71 >= 0.4
 
 
+def test_a_single_frame_below_the_threshold_gets_a_band_of_its_own(crossing):
+    """Reader r23b: P(valid) dipped below the threshold at one frame and no band showed (a fill between points
+    needs two). Each run of frames below it gets one band, half a step either side and at least scenes.BAND."""
+    robot, workspace, _, path, _ = crossing
+    probability = np.ones(FRAMES)
+    probability[[3, 9, 10]] = 0.1  # one frame alone, then a run of two
+    fig = scenes.path_frame(robot, path, 0, workspace=workspace, probability=probability, threshold=0.5)
+    bands = [p for p in fig.axes[-1].patches if p.get_gid() == "below threshold"]
+    along, half = np.linspace(0.0, 1.0, FRAMES), max(0.5 / (FRAMES - 1), scenes.BAND)
+    spans = [(p.get_x(), p.get_x() + p.get_width()) for p in bands]
+    np.testing.assert_allclose(spans, [(along[3] - half, along[3] + half), (along[9] - half, along[10] + half)])
+    assert scenes.below_threshold(np.zeros(FRAMES, bool), along) == []
+
+
 def test_only_the_given_series_get_panels(crossing):
     robot, workspace, _, path, _ = crossing
     assert len(scenes.path_frame(robot, path, 0, workspace=workspace).axes) == 1 + 3  # the robot, the DoFs by kind

@@ -71,7 +71,7 @@ def scene_still(
 ) -> Figure:
     """A viewer's 3D scene as a still picture: the whole workspace, its blocks, the ``samples`` at their base
     (``(points (N, 3), {kind: mask (N,)})``, kinds as :func:`toolkit.viewer.drawing.sample_kinds` names them: circles
-    valid, diamonds in collision, hollow stars round them where a model is wrong), the ``trace (T, 3)`` of the robot's
+    valid, diamonds in collision, sparkles round them where a model is wrong), the ``trace (T, 3)`` of the robot's
     base along a path (dashed) and the robot drawn over them at each pose, labelled; and the robot close up at each pose
     ``{label: q (dof,)}`` (:func:`toolkit.plots.still_panels.close_up`: opaque links in the valid colour, or the
     invalid one hatched, by ``valid``; its joints dotted; the blocks within ``margin``, those near a link darker), with
@@ -92,7 +92,7 @@ def scene_still(
     first = len(heights) if len(poses) == 1 else 0  # the overview's row: after a single pose's two views
     heights.insert(first, OVERVIEW_HEIGHT)
     fig = Figure(figsize=(PAGE_WIDTH, sum(heights) + 0.9))  # as wide as the page: text as drawn
-    grid = fig.add_gridspec(len(heights), 2, height_ratios=heights)
+    grid = fig.add_gridspec(len(heights), 2, height_ratios=heights, hspace=0.35)  # r23b: an x label met a title
     cells = [grid[row, :] if row == first else grid[row, column] for row in range(len(heights)) for column in (0, 1)]
     cells = [cell for k, cell in enumerate(cells) if k % 2 == 0 or k // 2 != first][: 1 + len(views)]  # reading order
     panels = [fig.add_subplot(cell, projection="3d") for cell in cells]  # the overview's a whole row: stars show
@@ -343,9 +343,28 @@ def _draw_probability(p: np.ndarray, threshold: float, ax, along: np.ndarray) ->
     """The model's P(valid) ``p (T,)`` with its ``threshold``, shaded where the model calls the path colliding."""
     ax.plot(along, p, color=COLORS["probability"], linewidth=1.2, gid="probability")
     ax.axhline(threshold, color=COLORS["ink"], linestyle="--", linewidth=0.8, gid="threshold")
-    ax.fill_between(along, 0.0, 1.0, where=p < threshold, color=INVALID_COLOR, alpha=0.15, linewidth=0)
+    for start, stop in below_threshold(p < threshold, along):  # a band per run of frames, one frame's as wide
+        ax.axvspan(start, stop, color=INVALID_COLOR, alpha=0.15, linewidth=0, gid="below threshold")
     ax.set_ylim(-0.02, 1.02)
     ax.set_ylabel("P(valid)")
+
+
+BAND = 0.01  # fraction of the path: the least half-width of a band of frames below the threshold (one frame's shows)
+
+
+def below_threshold(below: np.ndarray, along: np.ndarray) -> list[tuple[float, float]]:
+    """The spans ``[(start, stop)]`` of ``along (T,)`` round each run of frames where ``below (T,)``: half a frame's
+    step either side, and at least :data:`BAND` either side (reader r23b: a one-frame dip drew no band at all)."""
+    half = max((along[-1] - along[0]) / max(len(along) - 1, 1) / 2, BAND) if len(along) else BAND
+    spans, run = [], None
+    for index, flag in enumerate(below):
+        if flag and run is None:
+            run = index
+        if run is not None and (not flag or index == len(below) - 1):
+            last = index if flag else index - 1
+            spans.append((float(along[run]) - half, float(along[last]) + half))
+            run = None
+    return spans
 
 
 def _draw_trace(ax, robot: BoxRobot, Q: np.ndarray) -> None:

@@ -32,7 +32,7 @@ from toolkit.plots.robot_drawing import BLOCK_STYLE, INVALID_COLOR, VALID_COLOR,
 SAMPLE_MARKS = {  # kind of sample -> marker, colour, size (points²): the viewer's shapes (drawing.SAMPLE_SHAPES)
     "valid": ("o", VALID_COLOR, 36),  # 6 points across: 8 pixels as the site shows the still (100 dpi)
     "in collision": ("D", INVALID_COLOR, 28),  # as much ink as the circle (a diamond covers s, a circle 0.79 s)
-    "model wrong": ("*", COLORS["ink"], 300),
+    "model wrong": ((4, 1, 0), COLORS["ink"], 300),  # a four-pointed star: the 3D view's sparkle (one name, r23b)
 }
 SAMPLE_EDGE = dict(edgecolors=COLORS["ink"], linewidths=0.5)  # a thin ink edge: the shape shows on a block too
 WRONG_STYLE = dict(facecolors="none", edgecolors=COLORS["ink"], linewidths=1.2)  # hollow: the mark under it shows
@@ -40,7 +40,7 @@ TRACE_STYLE = dict(color=COLORS["trace"], linestyle="--")  # dashed: apart from 
 SAMPLE_WORDS = {
     "valid": "circles",
     "in collision": "diamonds",
-    "model wrong": "hollow stars round their marks",
+    "model wrong": "hollow sparkles round their marks",
 }  # SAMPLE_MARKS in words
 OVERVIEW_SAMPLES = 200  # at most this many samples in a still's overview: more hide the blocks and the robot
 OVERVIEW_STAR = 150  # points²: an overview's star round a mistake (a close-up's: SAMPLE_MARKS' 300, scaled)
@@ -312,8 +312,8 @@ def draw_points(
 
 
 def star_on_mark(handles: dict) -> dict:
-    """A still's legend ``handles {label: artist}`` with the mistakes' hollow star drawn round a sample's mark, as the
-    panels draw it (reader r21c: a hollow star alone in the legend, stars filled by their marks in the panels)."""
+    """A still's legend ``handles {label: artist}`` with the mistakes' hollow sparkle drawn round a sample's mark, as
+    the panels draw it (reader r21c: a hollow star alone in the legend, stars filled by their marks in the panels)."""
     star, mark = handles.get("sample, model wrong"), handles.get("sample, valid", handles.get("sample, in collision"))
     if star is None or mark is None:
         return handles

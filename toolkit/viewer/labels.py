@@ -262,6 +262,17 @@ STILL = """<style>#toolkit-play:focus-visible { outline: 2px solid %(ink)s; outl
     document.getElementById("toolkit-still-note").textContent = %(no_webgl)s;
     if (play) play.remove();
     still.hidden = false;
+  } else if (!play && window.IntersectionObserver) {  // a snapshot: the still until the view has been on screen
+    var drawing = null;  // a while (a view off screen is never drawn: a page's screenshot showed blank boxes)
+    new IntersectionObserver(function (entries) {
+      clearTimeout(drawing);
+      if (entries[entries.length - 1].isIntersecting) drawing = setTimeout(function () {
+        still.hidden = true;
+        view.inert = false;
+      }, %(on_screen_ms)d);
+    }).observe(document.documentElement);
+  } else if (!play) {
+    still.hidden = true;
   }
   view.inert = !still.hidden;  // no focus on controls the still covers
   if (play) play.addEventListener("click", function () {  // the focus goes on to the player's play / pause
@@ -273,6 +284,8 @@ STILL = """<style>#toolkit-play:focus-visible { outline: 2px solid %(ink)s; outl
 })();</script>
 """
 NO_WEBGL = "This browser draws no 3D (no WebGL): the scene as a still picture."
+DRAWING = "A still picture of the scene: the 3D view replaces it once it has been on screen a moment."
+ON_SCREEN_MS = 1500  # milliseconds a snapshot's view is on screen before it replaces its still (it draws by then)
 PLAY = (
     ' <button id="toolkit-play" type="button" style="font:inherit;font-weight:bold;margin-left:8px;padding:2px 10px;'
     'border:2px solid %(ink)s;border-radius:4px;background:#fff;color:%(ink)s;cursor:pointer">%(play)s</button>'
@@ -283,7 +296,9 @@ def with_still(document: str, fig: Figure | None, *, first: str | None = None, p
     """``document`` (a saved scene's HTML) with ``fig``, a still picture of its scene, over the view (the picture's
     alt text from the figure): where the browser has no WebGL (the view would stay blank there) and, given
     ``first`` (what the still shows, in words), in every browser until the reader presses ``play``: a screenshot
-    or a printed page then shows the still, not a view that has not drawn yet. The view's controls take no focus
+    or a printed page then shows the still, not a view that has not drawn yet. Without ``first`` (a snapshot) the
+    still stays until the view has been on screen :data:`ON_SCREEN_MS`: a browser draws no view off screen, so a
+    page's screenshot showed blank boxes there (reader r23b). The view's controls take no focus
     while the still covers them; pressing ``play`` moves the focus to the player's play / pause button.
     ``document`` as it is without a figure."""
     if fig is None:
@@ -295,8 +310,9 @@ def with_still(document: str, fig: Figure | None, *, first: str | None = None, p
     filled = {
         "png": base64.b64encode(buffer.getvalue()).decode(),
         "alt": html.escape(alt_text(fig), quote=True),
-        "hidden": " hidden" if first is None else "",
-        "note": html.escape(NO_WEBGL if first is None else first),
+        "hidden": "",  # shown until the view draws (a snapshot) or the reader plays it (``first``)
+        "note": html.escape(DRAWING if first is None else first),
+        "on_screen_ms": ON_SCREEN_MS,
         "play": "" if first is None else PLAY % {"ink": COLORS["ink"], "play": html.escape(play)},
         "no_webgl": json.dumps(NO_WEBGL),
         "ink": COLORS["ink"],
