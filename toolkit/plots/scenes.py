@@ -92,7 +92,7 @@ def scene_still(
     first = len(heights) if len(poses) == 1 else 0  # the overview's row: after a single pose's two views
     heights.insert(first, OVERVIEW_HEIGHT)
     fig = Figure(figsize=(PAGE_WIDTH, sum(heights) + 0.9))  # as wide as the page: text as drawn
-    grid = fig.add_gridspec(len(heights), 2, height_ratios=heights, hspace=0.35)  # r23b: an x label met a title
+    grid = fig.add_gridspec(len(heights), 2, height_ratios=heights)
     cells = [grid[row, :] if row == first else grid[row, column] for row in range(len(heights)) for column in (0, 1)]
     cells = [cell for k, cell in enumerate(cells) if k % 2 == 0 or k // 2 != first][: 1 + len(views)]  # reading order
     panels = [fig.add_subplot(cell, projection="3d") for cell in cells]  # the overview's a whole row: stars show
@@ -132,7 +132,8 @@ def _still_legend(fig: Figure, valid: dict[str, bool]) -> None:
         for ok, text, c in ((True, "robot, valid", VALID_COLOR), (False, "robot, in collision", INVALID_COLOR))
         if ok in shown
     }
-    fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=5.0, h_pad=2.5)  # r17c: "y" met a title
+    fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=5.0, h_pad=4.0)  # r17c: "y" met a title;
+    #   r23b: a close-up's "x" touched the overview's title at h_pad 2.5
     low = min((ax.get_tightbbox() or ax.bbox).y0 for ax in fig.axes) / fig.bbox.height  # the lowest label
     fig.legend(handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, low), ncol=3, frameon=False)
 
