@@ -27,8 +27,9 @@ least 24 px (2.5.8). A saved scene's play / pause button is a toggle, pressed wh
   hides the notices there (a static page has nothing to notify); the scene's own text alternative is the
   summary beside it (:meth:`toolkit.viewer.Viewer.summary`);
 - :func:`with_still` puts a still picture of the scene into a saved scene's page, shown in the view's place
-  where the browser has no WebGL (the view would stay blank there) and, for an animation, first in every browser,
-  with a button that plays the 3D view;
+  where the browser has no WebGL (the view would stay blank there), in a snapshot until its view has been on
+  screen a moment (a view off screen is not drawn), and, for an animation, first in every browser, with a button
+  that plays the 3D view;
 - :func:`named_live_page` makes viser's server serve its page with the same script (``toolkit view``): a copy of
   viser's ``client/build/index.html`` with the script in it, served in place of the original.
 
