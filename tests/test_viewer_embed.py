@@ -431,6 +431,8 @@ def test_a_saved_scene_carries_a_still_of_itself_shown_until_its_view_has_been_o
     assert 'getContext("webgl2") || canvas.getContext("webgl")' in script and ".hidden = false" in script
     assert ".textContent = " + json.dumps(NO_WEBGL) in script
     assert re.search(r"isIntersecting\) drawing = setTimeout\(function \(\) \{\s*still\.hidden = true;", script)
+    assert 'addEventListener("focusin", function () { still.hidden = true; })' in script  # the keyboard goes in
+    assert "if (waiting) view.inert = false;" in script  # at once, not only after the view was on screen a while
     assert f"}}, {ON_SCREEN_MS});" in script and ".observe(document.documentElement)" in script
 
 

@@ -258,24 +258,26 @@ STILL = """<style>#toolkit-play:focus-visible { outline: 2px solid %(ink)s; outl
 <img src="data:image/png;base64,%(png)s" alt="%(alt)s" style="width:100%%;max-width:640px;height:auto"></div>
 <script>(function () {
   var canvas = document.createElement("canvas"), still = document.getElementById("toolkit-still");
-  var play = document.getElementById("toolkit-play"), view = document.getElementById("root") || {};
+  var play = document.getElementById("toolkit-play"), view = document.getElementById("root") || {}, waiting = false;
   if (!(canvas.getContext("webgl2") || canvas.getContext("webgl"))) {
     document.getElementById("toolkit-still-note").textContent = %(no_webgl)s;
     if (play) play.remove();
     still.hidden = false;
   } else if (!play && window.IntersectionObserver) {  // a snapshot: the still until the view has been on screen
-    var drawing = null;  // a while (a view off screen is never drawn: a page's screenshot showed blank boxes)
+    waiting = true;
+    var drawing = null;  // a while (a view off screen is not drawn: a screenshot showed blank boxes)
     new IntersectionObserver(function (entries) {
       clearTimeout(drawing);
       if (entries[entries.length - 1].isIntersecting) drawing = setTimeout(function () {
         still.hidden = true;
-        view.inert = false;
       }, %(on_screen_ms)d);
     }).observe(document.documentElement);
+    document.addEventListener("focusin", function () { still.hidden = true; });  // the keyboard in: the view at once
   } else if (!play) {
     still.hidden = true;
   }
   view.inert = !still.hidden;  // no focus on controls the still covers
+  if (waiting) view.inert = false;  // unless it only waits for the view to draw: the keyboard may go in at once
   if (play) play.addEventListener("click", function () {  // the focus goes on to the player's play / pause
     still.hidden = true;
     view.inert = false;
