@@ -392,7 +392,9 @@ def _draw_scene(
     scene.set_title(f"the robot, blocks near it{verdict}", fontsize=9)
     scene.set_box_aspect(None, zoom=1.15)  # the robot larger in its panel: mplot3d leaves wide margins
     if workspace is not None and len(workspace.boxes):  # after the view and the zoom: it places its name on them
-        mark_nearest(scene, robot.link_aabbs(Q[index : index + 1])[0], workspace.boxes)
+        mark_nearest(
+            scene, robot.link_aabbs(Q[index : index + 1])[0], workspace.boxes, (workspace.lower, workspace.upper)
+        )
     scene.locator_params(nbins=4)  # few tick labels: drawing text is most of a frame's cost
     scene.tick_params(labelsize=9)
 

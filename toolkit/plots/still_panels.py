@@ -215,19 +215,24 @@ def model_words(answer: tuple[float, bool] | None) -> str:
     return "" if answer is None else f"\nthe model: P(valid) {answer[0]:.2f}, {('rejects', 'accepts')[answer[1]]} it"
 
 
-def mark_nearest(scene, links: np.ndarray, blocks: np.ndarray) -> None:
+def mark_nearest(scene, links: np.ndarray, blocks: np.ndarray, bounds: tuple | None = None) -> None:
     """Edge in ink, and name, the block nearest the robot's links ``(L, 2, 3)`` among ``blocks (K, 2, 3)`` (box to
     box, min/max corners), its part inside the axes' window: the one a low clearance is about (review r16c: the
-    block grazed was not marked)."""
+    block grazed was not marked). Where a wall of the workspace, ``bounds (lower (3,), upper (3,))``, is nearer the
+    links than that block, the name says so (reader r23b: the clearance was the wall's, the block looked far)."""
     gaps = np.maximum(0.0, np.maximum(blocks[:, None, 0] - links[None, :, 1], links[None, :, 0] - blocks[:, None, 1]))
-    lo, hi = blocks[int(np.argmin(np.linalg.norm(gaps, axis=-1).min(axis=1)))]  # (K, L, 3) gaps -> the nearest
+    distances = np.linalg.norm(gaps, axis=-1).min(axis=1)  # (K,) each block's distance to the nearest link
+    nearest = int(np.argmin(distances))
+    wall = np.inf if bounds is None else min((links[:, 0] - bounds[0]).min(), (bounds[1] - links[:, 1]).min())
+    name = "nearest block" if wall >= distances[nearest] else "nearest block\n(a wall of the workspace is nearer)"
+    lo, hi = blocks[nearest]
     window = np.array([scene.get_xlim(), scene.get_ylim(), scene.get_zlim()]).T  # (2, 3) the axes' window
     lo, hi = np.clip(lo, *window), np.clip(hi, *window)  # its part inside: mplot3d draws past the axes
     corners = aabb_corners(lo, hi)  # (8, 3)
     add_box_3d(scene, corners, facecolor="none", edgecolor=COLORS["ink"], linewidth=1.6, gid="nearest")
     x, y, _ = proj3d.proj_transform(*corners.T, scene.get_proj())  # (8,) each: the corners on the picture
     scene.annotate(  # above the block's highest corner on the picture, clear of its edges (reader r20c)
-        "nearest block",
+        name,
         (float(np.mean(x)), float(np.max(y))),
         xytext=(0, 4),
         textcoords="offset points",
