@@ -168,6 +168,42 @@ def test_the_series_panels_show_each_dof_clearance_and_probability(crossing):
     assert "threshold 0.40: valid" in title  # 0.71 >= 0.4
 
 
+def test_the_nearest_blocks_name_says_where_a_wall_of_the_workspace_is_nearer():
+    """Reader r23b: at clearance 0.372 the block named "nearest block" stood 1-2 units off; the cube's top wall was
+    the nearer. A chain flying just under the top wall, its nearest block further off, says so on the picture."""
+    scenario = scenarios.get("3dc7")
+    robot = scenario.robot
+    q = np.zeros(robot.dof)
+    q[:3] = (5.0, 5.0, 10.7)  # the base 0.3 under the top wall (z = 11)
+    top = robot.link_aabbs(q[None])[0][:, 1, 2].max()  # the links' highest point
+    assert top < 11.0
+    far = Workspace(np.zeros(3), np.full(3, 11.0), np.array([[[5.0, 5.0, 7.0], [6.0, 6.0, 8.0]]]), family="3dc")
+    near = Workspace(far.lower, far.upper, np.array([[[5.0, 5.0, top + 0.01], [6.0, 6.0, 11.0]]]), family="3dc")
+    names = [
+        [
+            t.get_text()
+            for t in scenes.path_frame(robot, q[None], 0, workspace=w).axes[0].texts
+            if "nearest" in t.get_text()
+        ]
+        for w in (far, near)
+    ]
+    assert names == [["nearest block\n(a wall of the workspace is nearer)"], ["nearest block"]]
+
+
+def test_a_single_frame_below_the_threshold_gets_a_band_of_its_own(crossing):
+    """Reader r23b: P(valid) dipped below the threshold at one frame and no band showed (a fill between points
+    needs two). Each run of frames below it gets one band, half a step either side and at least scenes.BAND."""
+    robot, workspace, _, path, _ = crossing
+    probability = np.ones(FRAMES)
+    probability[[3, 9, 10]] = 0.1  # one frame alone, then a run of two
+    fig = scenes.path_frame(robot, path, 0, workspace=workspace, probability=probability, threshold=0.5)
+    bands = [p for p in fig.axes[-1].patches if p.get_gid() == "below threshold"]
+    along, half = np.linspace(0.0, 1.0, FRAMES), max(0.5 / (FRAMES - 1), scenes.BAND)
+    spans = [(p.get_x(), p.get_x() + p.get_width()) for p in bands]
+    np.testing.assert_allclose(spans, [(along[3] - half, along[3] + half), (along[9] - half, along[10] + half)])
+    assert scenes.below_threshold(np.zeros(FRAMES, bool), along) == []
+
+
 def test_only_the_given_series_get_panels(crossing):
     robot, workspace, _, path, _ = crossing
     assert len(scenes.path_frame(robot, path, 0, workspace=workspace).axes) == 1 + 3  # the robot, the DoFs by kind

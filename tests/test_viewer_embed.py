@@ -407,13 +407,19 @@ def test_a_saved_scene_names_its_player_controls_and_hides_notices():
     assert label_controls("<p>no body</p>").startswith("<p>no body</p><style>")
 
 
-def test_a_saved_scene_carries_a_still_of_itself_shown_only_without_webgl(rng):
-    """A browser without WebGL leaves the view blank: the page then shows a still picture of the same scene (the
-    robot, the samples by kind, the path), its alt text saying what it shows."""
+def test_a_saved_scene_carries_a_still_of_itself_shown_until_its_view_has_been_on_screen(rng):
+    """A browser without WebGL leaves the view blank, and one draws no view off screen (reader r23b: a page's
+    screenshot showed three blank boxes): the page shows a still picture of the same scene (the robot, the samples
+    by kind, the path), its alt text saying what it shows, until the view has been on screen a moment; without
+    WebGL for good, its note saying why."""
+    from toolkit.viewer.labels import DRAWING, ON_SCREEN_MS
+
     robot = scenarios.get("3dc7").robot
     samples = robot.sample(rng, 40)
     document = page_of(viewer.embed("3dc7", seed=2, samples=samples, height=320))
-    still = found(r'(<div id="toolkit-still" hidden[\s\S]*?</div>)', document)
+    still = found(r'(<div id="toolkit-still"[\s\S]*?</div>)', document)
+    assert 'id="toolkit-still" hidden' not in still and "toolkit-play" not in still
+    assert html.unescape(found(r'id="toolkit-still-note"[^>]*>([^<]*)<', still)) == DRAWING
     alt = html.unescape(found(r'alt="([^"]*)"', still))
     valid = int(
         exact_checker(scenarios.get("3dc7").make_workspace(np.random.default_rng(2)), robot).are_valid(samples).sum()
@@ -423,6 +429,11 @@ def test_a_saved_scene_carries_a_still_of_itself_shown_only_without_webgl(rng):
     assert base64.b64decode(found(r'base64,([A-Za-z0-9+/=]+)"', still))[:4] == b"\x89PNG"
     script = document[document.index(still) + len(still) :]
     assert 'getContext("webgl2") || canvas.getContext("webgl")' in script and ".hidden = false" in script
+    assert ".textContent = " + json.dumps(NO_WEBGL) in script
+    assert re.search(r"isIntersecting\) drawing = setTimeout\(function \(\) \{\s*still\.hidden = true;", script)
+    assert 'addEventListener("focusin", function () { still.hidden = true; })' in script  # the keyboard goes in
+    assert "if (waiting) view.inert = false;" in script  # at once, not only after the view was on screen a while
+    assert f"}}, {ON_SCREEN_MS});" in script and ".observe(document.documentElement)" in script
 
 
 def test_an_animation_opens_on_its_still_of_the_path_and_the_robot_at_its_start_middle_and_goal(planned):

@@ -71,7 +71,7 @@ def scene_still(
 ) -> Figure:
     """A viewer's 3D scene as a still picture: the whole workspace, its blocks, the ``samples`` at their base
     (``(points (N, 3), {kind: mask (N,)})``, kinds as :func:`toolkit.viewer.drawing.sample_kinds` names them: circles
-    valid, diamonds in collision, hollow stars round them where a model is wrong), the ``trace (T, 3)`` of the robot's
+    valid, diamonds in collision, sparkles round them where a model is wrong), the ``trace (T, 3)`` of the robot's
     base along a path (dashed) and the robot drawn over them at each pose, labelled; and the robot close up at each pose
     ``{label: q (dof,)}`` (:func:`toolkit.plots.still_panels.close_up`: opaque links in the valid colour, or the
     invalid one hatched, by ``valid``; its joints dotted; the blocks within ``margin``, those near a link darker), with
@@ -132,7 +132,8 @@ def _still_legend(fig: Figure, valid: dict[str, bool]) -> None:
         for ok, text, c in ((True, "robot, valid", VALID_COLOR), (False, "robot, in collision", INVALID_COLOR))
         if ok in shown
     }
-    fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=5.0, h_pad=2.5)  # r17c: "y" met a title
+    fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=5.0, h_pad=4.0)  # r17c: "y" met a title;
+    #   r23b: a close-up's "x" touched the overview's title at h_pad 2.5
     low = min((ax.get_tightbbox() or ax.bbox).y0 for ax in fig.axes) / fig.bbox.height  # the lowest label
     fig.legend(handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, low), ncol=3, frameon=False)
 
@@ -343,9 +344,28 @@ def _draw_probability(p: np.ndarray, threshold: float, ax, along: np.ndarray) ->
     """The model's P(valid) ``p (T,)`` with its ``threshold``, shaded where the model calls the path colliding."""
     ax.plot(along, p, color=COLORS["probability"], linewidth=1.2, gid="probability")
     ax.axhline(threshold, color=COLORS["ink"], linestyle="--", linewidth=0.8, gid="threshold")
-    ax.fill_between(along, 0.0, 1.0, where=p < threshold, color=INVALID_COLOR, alpha=0.15, linewidth=0)
+    for start, stop in below_threshold(p < threshold, along):  # a band per run of frames, one frame's as wide
+        ax.axvspan(start, stop, color=INVALID_COLOR, alpha=0.15, linewidth=0, gid="below threshold")
     ax.set_ylim(-0.02, 1.02)
     ax.set_ylabel("P(valid)")
+
+
+BAND = 0.01  # fraction of the path: the least half-width of a band of frames below the threshold (one frame's shows)
+
+
+def below_threshold(below: np.ndarray, along: np.ndarray) -> list[tuple[float, float]]:
+    """The spans ``[(start, stop)]`` of ``along (T,)`` round each run of frames where ``below (T,)``: half a frame's
+    step either side, and at least :data:`BAND` either side (reader r23b: a one-frame dip drew no band at all)."""
+    half = max((along[-1] - along[0]) / max(len(along) - 1, 1) / 2, BAND) if len(along) else BAND
+    spans, run = [], None
+    for index, flag in enumerate(below):
+        if flag and run is None:
+            run = index
+        if run is not None and (not flag or index == len(below) - 1):
+            last = index if flag else index - 1
+            spans.append((float(along[run]) - half, float(along[last]) + half))
+            run = None
+    return spans
 
 
 def _draw_trace(ax, robot: BoxRobot, Q: np.ndarray) -> None:
@@ -372,7 +392,9 @@ def _draw_scene(
     scene.set_title(f"the robot, blocks near it{verdict}", fontsize=9)
     scene.set_box_aspect(None, zoom=1.15)  # the robot larger in its panel: mplot3d leaves wide margins
     if workspace is not None and len(workspace.boxes):  # after the view and the zoom: it places its name on them
-        mark_nearest(scene, robot.link_aabbs(Q[index : index + 1])[0], workspace.boxes)
+        mark_nearest(
+            scene, robot.link_aabbs(Q[index : index + 1])[0], workspace.boxes, (workspace.lower, workspace.upper)
+        )
     scene.locator_params(nbins=4)  # few tick labels: drawing text is most of a frame's cost
     scene.tick_params(labelsize=9)
 

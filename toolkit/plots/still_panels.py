@@ -32,7 +32,7 @@ from toolkit.plots.robot_drawing import BLOCK_STYLE, INVALID_COLOR, VALID_COLOR,
 SAMPLE_MARKS = {  # kind of sample -> marker, colour, size (points²): the viewer's shapes (drawing.SAMPLE_SHAPES)
     "valid": ("o", VALID_COLOR, 36),  # 6 points across: 8 pixels as the site shows the still (100 dpi)
     "in collision": ("D", INVALID_COLOR, 28),  # as much ink as the circle (a diamond covers s, a circle 0.79 s)
-    "model wrong": ("*", COLORS["ink"], 300),
+    "model wrong": ((4, 1, 0), COLORS["ink"], 300),  # a four-pointed star: the 3D view's sparkle (one name, r23b)
 }
 SAMPLE_EDGE = dict(edgecolors=COLORS["ink"], linewidths=0.5)  # a thin ink edge: the shape shows on a block too
 WRONG_STYLE = dict(facecolors="none", edgecolors=COLORS["ink"], linewidths=1.2)  # hollow: the mark under it shows
@@ -40,7 +40,7 @@ TRACE_STYLE = dict(color=COLORS["trace"], linestyle="--")  # dashed: apart from 
 SAMPLE_WORDS = {
     "valid": "circles",
     "in collision": "diamonds",
-    "model wrong": "hollow stars round their marks",
+    "model wrong": "hollow sparkles round their marks",
 }  # SAMPLE_MARKS in words
 OVERVIEW_SAMPLES = 200  # at most this many samples in a still's overview: more hide the blocks and the robot
 OVERVIEW_STAR = 150  # points²: an overview's star round a mistake (a close-up's: SAMPLE_MARKS' 300, scaled)
@@ -215,19 +215,24 @@ def model_words(answer: tuple[float, bool] | None) -> str:
     return "" if answer is None else f"\nthe model: P(valid) {answer[0]:.2f}, {('rejects', 'accepts')[answer[1]]} it"
 
 
-def mark_nearest(scene, links: np.ndarray, blocks: np.ndarray) -> None:
+def mark_nearest(scene, links: np.ndarray, blocks: np.ndarray, bounds: tuple | None = None) -> None:
     """Edge in ink, and name, the block nearest the robot's links ``(L, 2, 3)`` among ``blocks (K, 2, 3)`` (box to
     box, min/max corners), its part inside the axes' window: the one a low clearance is about (review r16c: the
-    block grazed was not marked)."""
+    block grazed was not marked). Where a wall of the workspace, ``bounds (lower (3,), upper (3,))``, is nearer the
+    links than that block, the name says so (reader r23b: the clearance was the wall's, the block looked far)."""
     gaps = np.maximum(0.0, np.maximum(blocks[:, None, 0] - links[None, :, 1], links[None, :, 0] - blocks[:, None, 1]))
-    lo, hi = blocks[int(np.argmin(np.linalg.norm(gaps, axis=-1).min(axis=1)))]  # (K, L, 3) gaps -> the nearest
+    distances = np.linalg.norm(gaps, axis=-1).min(axis=1)  # (K,) each block's distance to the nearest link
+    nearest = int(np.argmin(distances))
+    wall = np.inf if bounds is None else min((links[:, 0] - bounds[0]).min(), (bounds[1] - links[:, 1]).min())
+    name = "nearest block" if wall >= distances[nearest] else "nearest block\n(a wall of the workspace is nearer)"
+    lo, hi = blocks[nearest]
     window = np.array([scene.get_xlim(), scene.get_ylim(), scene.get_zlim()]).T  # (2, 3) the axes' window
     lo, hi = np.clip(lo, *window), np.clip(hi, *window)  # its part inside: mplot3d draws past the axes
     corners = aabb_corners(lo, hi)  # (8, 3)
     add_box_3d(scene, corners, facecolor="none", edgecolor=COLORS["ink"], linewidth=1.6, gid="nearest")
     x, y, _ = proj3d.proj_transform(*corners.T, scene.get_proj())  # (8,) each: the corners on the picture
     scene.annotate(  # above the block's highest corner on the picture, clear of its edges (reader r20c)
-        "nearest block",
+        name,
         (float(np.mean(x)), float(np.max(y))),
         xytext=(0, 4),
         textcoords="offset points",
@@ -312,8 +317,8 @@ def draw_points(
 
 
 def star_on_mark(handles: dict) -> dict:
-    """A still's legend ``handles {label: artist}`` with the mistakes' hollow star drawn round a sample's mark, as the
-    panels draw it (reader r21c: a hollow star alone in the legend, stars filled by their marks in the panels)."""
+    """A still's legend ``handles {label: artist}`` with the mistakes' hollow sparkle drawn round a sample's mark, as
+    the panels draw it (reader r21c: a hollow star alone in the legend, stars filled by their marks in the panels)."""
     star, mark = handles.get("sample, model wrong"), handles.get("sample, valid", handles.get("sample, in collision"))
     if star is None or mark is None:
         return handles

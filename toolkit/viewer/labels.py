@@ -27,8 +27,9 @@ least 24 px (2.5.8). A saved scene's play / pause button is a toggle, pressed wh
   hides the notices there (a static page has nothing to notify); the scene's own text alternative is the
   summary beside it (:meth:`toolkit.viewer.Viewer.summary`);
 - :func:`with_still` puts a still picture of the scene into a saved scene's page, shown in the view's place
-  where the browser has no WebGL (the view would stay blank there) and, for an animation, first in every browser,
-  with a button that plays the 3D view;
+  where the browser has no WebGL (the view would stay blank there), in a snapshot until its view has been on
+  screen a moment (a view off screen is not drawn), and, for an animation, first in every browser, with a button
+  that plays the 3D view;
 - :func:`named_live_page` makes viser's server serve its page with the same script (``toolkit view``): a copy of
   viser's ``client/build/index.html`` with the script in it, served in place of the original.
 
@@ -257,13 +258,26 @@ STILL = """<style>#toolkit-play:focus-visible { outline: 2px solid %(ink)s; outl
 <img src="data:image/png;base64,%(png)s" alt="%(alt)s" style="width:100%%;max-width:640px;height:auto"></div>
 <script>(function () {
   var canvas = document.createElement("canvas"), still = document.getElementById("toolkit-still");
-  var play = document.getElementById("toolkit-play"), view = document.getElementById("root") || {};
+  var play = document.getElementById("toolkit-play"), view = document.getElementById("root") || {}, waiting = false;
   if (!(canvas.getContext("webgl2") || canvas.getContext("webgl"))) {
     document.getElementById("toolkit-still-note").textContent = %(no_webgl)s;
     if (play) play.remove();
     still.hidden = false;
+  } else if (!play && window.IntersectionObserver) {  // a snapshot: the still until the view has been on screen
+    waiting = true;
+    var drawing = null;  // a while (a view off screen is not drawn: a screenshot showed blank boxes)
+    new IntersectionObserver(function (entries) {
+      clearTimeout(drawing);
+      if (entries[entries.length - 1].isIntersecting) drawing = setTimeout(function () {
+        still.hidden = true;
+      }, %(on_screen_ms)d);
+    }).observe(document.documentElement);
+    document.addEventListener("focusin", function () { still.hidden = true; });  // the keyboard in: the view at once
+  } else if (!play) {
+    still.hidden = true;
   }
   view.inert = !still.hidden;  // no focus on controls the still covers
+  if (waiting) view.inert = false;  // unless it only waits for the view to draw: the keyboard may go in at once
   if (play) play.addEventListener("click", function () {  // the focus goes on to the player's play / pause
     still.hidden = true;
     view.inert = false;
@@ -273,6 +287,8 @@ STILL = """<style>#toolkit-play:focus-visible { outline: 2px solid %(ink)s; outl
 })();</script>
 """
 NO_WEBGL = "This browser draws no 3D (no WebGL): the scene as a still picture."
+DRAWING = "A still picture of the scene: the 3D view replaces it once it has been on screen a moment."
+ON_SCREEN_MS = 1500  # milliseconds a snapshot's view is on screen before it replaces its still (it draws by then)
 PLAY = (
     ' <button id="toolkit-play" type="button" style="font:inherit;font-weight:bold;margin-left:8px;padding:2px 10px;'
     'border:2px solid %(ink)s;border-radius:4px;background:#fff;color:%(ink)s;cursor:pointer">%(play)s</button>'
@@ -283,7 +299,9 @@ def with_still(document: str, fig: Figure | None, *, first: str | None = None, p
     """``document`` (a saved scene's HTML) with ``fig``, a still picture of its scene, over the view (the picture's
     alt text from the figure): where the browser has no WebGL (the view would stay blank there) and, given
     ``first`` (what the still shows, in words), in every browser until the reader presses ``play``: a screenshot
-    or a printed page then shows the still, not a view that has not drawn yet. The view's controls take no focus
+    or a printed page then shows the still, not a view that has not drawn yet. Without ``first`` (a snapshot) the
+    still stays until the view has been on screen :data:`ON_SCREEN_MS`: a browser draws no view off screen, so a
+    page's screenshot showed blank boxes there (reader r23b). The view's controls take no focus
     while the still covers them; pressing ``play`` moves the focus to the player's play / pause button.
     ``document`` as it is without a figure."""
     if fig is None:
@@ -295,8 +313,9 @@ def with_still(document: str, fig: Figure | None, *, first: str | None = None, p
     filled = {
         "png": base64.b64encode(buffer.getvalue()).decode(),
         "alt": html.escape(alt_text(fig), quote=True),
-        "hidden": " hidden" if first is None else "",
-        "note": html.escape(NO_WEBGL if first is None else first),
+        "hidden": "",  # shown until the view draws (a snapshot) or the reader plays it (``first``)
+        "note": html.escape(DRAWING if first is None else first),
+        "on_screen_ms": ON_SCREEN_MS,
         "play": "" if first is None else PLAY % {"ink": COLORS["ink"], "play": html.escape(play)},
         "no_webgl": json.dumps(NO_WEBGL),
         "ink": COLORS["ink"],

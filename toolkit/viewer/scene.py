@@ -345,7 +345,8 @@ class Viewer:
 
     def still(self, poses: dict[str, np.ndarray] | None = None) -> Figure:
         """The scene as a still picture, the robot close up at ``poses`` ``{label: q}`` (default: where it stands):
-        :func:`toolkit.viewer.snapshot.scene_still`, what a 3D scene's page shows where a browser has no WebGL."""
+        :func:`toolkit.viewer.snapshot.scene_still`, what a 3D scene's page shows where a browser has no WebGL or
+        has not drawn the view yet."""
         return snapshot.scene_still(self, poses)
 
     def stop(self) -> None:

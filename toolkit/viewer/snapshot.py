@@ -2,7 +2,8 @@
 
 ``viewer`` is a :class:`toolkit.viewer.scene.Viewer` in every function here (not imported: it imports this).
 
-A saved 3D view needs WebGL to draw; where a browser has none, the page shows a still picture in the view's place
+A saved 3D view needs WebGL to draw, and is not drawn off screen; where a browser has none, and in a snapshot until
+its view has been on screen a moment, the page shows a still picture in the view's place
 (:func:`toolkit.viewer.labels.with_still`): the whole workspace with the samples and the path the viewer
 shows, then the robot close up. An animation opens on its still in every browser, with a button that plays it: a
 screenshot, a printed page or a browser that draws 3D slowly (in software) shows a picture, not a view still
