@@ -34,7 +34,11 @@ def test_only_the_points_whose_verdict_is_network_cheaper_are_shaded():
         (round(10 / np.sqrt(10), 3), round(np.sqrt(1000), 3)),
         (round(np.sqrt(1e7), 3), round(1e4 * np.sqrt(10), 3)),
     ]
-    assert "network cheaper by > 25%" in [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "shaded: network cheaper by > 25%" in [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "shaded where the network is cheaper by > 25%" in fig.get_suptitle()  # reader r23a: the rule, on the figure
+    assert "3DC-9" in fig.get_suptitle()  # the site's name of the scenario, not its key
+    zorder = {line.get_label(): line.get_zorder() for line in ax.lines}
+    assert zorder["exact, default (compiled)"] > zorder["learned (the network)"]  # reader r23a: drawn over the network
     assert "cheaper by more than 25% at 10, 10,000." in alt_text(fig)
 
 
@@ -43,6 +47,9 @@ def test_a_panel_where_the_network_is_never_cheaper_beyond_the_band_has_no_shadi
     fig = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"obstacles": close}})
     assert shaded_spans(fig.axes[0]) == []
     assert "never cheaper by more than 25%." in alt_text(fig)
+    legend = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "shaded: network cheaper by > 25% (nowhere here)" in legend  # reader r23a: the rule, where nothing meets it
+    assert fig.get_suptitle().endswith("by > 25%: nowhere here")
 
 
 def test_a_tick_label_that_would_touch_its_neighbour_is_left_out_and_the_last_is_always_named():
@@ -92,7 +99,7 @@ def test_the_decade_where_curves_cross_has_numbers_and_a_crossing_says_what_it_c
     assert {"0.2", "0.5", "1"} <= shown  # 0.2 to 0.8: the crossing's decade is labelled in plain numbers
     # log(exact / learned) is log(0.3 / 0.5) at 100 and log(0.5 / 0.45) at 1,000: 0 at 10 ** (2 + 0.8292), log-log
     t = np.log(0.6) / (np.log(0.6) - np.log(0.5 / 0.45))
-    assert [t.get_text() for t in ax.texts] == [f"{10 ** (2 + t):,.0f} obstacles"] == ["675 obstacles"]
+    assert [t.get_text() for t in ax.texts] == [f"about {10 ** (2 + t):,.0f} obstacles"] == ["about 675 obstacles"]
     assert "the curves cross (dotted)" in [t.get_text() for t in fig.legends[0].get_texts()]
     assert not any(line.get_clip_on() for line in ax.lines if line.get_marker() not in ("None", "")), "edge marks"
 
@@ -110,7 +117,7 @@ def test_every_crossing_is_marked_and_said_each_label_apart():
     dotted = [line.get_xdata()[0] for line in ax.lines if line.get_linestyle() == ":"]
     assert np.allclose(dotted, [10**1.5, 10**3.5])  # halfway, log-log, where log 2 meets log 0.5
     first, second = (t.get_window_extent() for t in ax.texts)
-    assert [t.get_text() for t in ax.texts] == ["31.6 obstacles", "3,160 obstacles"]
+    assert [t.get_text() for t in ax.texts] == ["about 32 obstacles", "about 3,162 obstacles"]  # a count: whole
     assert first.y1 <= second.y0 or second.y1 <= first.y0 or first.x1 <= second.x0 or second.x1 <= first.x0
     assert "crosses the exact, default (compiled) one at 31.6 and at 3,160." in str(alt.details(fig))
 

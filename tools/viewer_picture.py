@@ -6,8 +6,9 @@ width::
 It is what ``toolkit view --scenario 3do --samples 300 --screenshot PNG`` photographs (the office, seed 0, 300 uniform
 samples marked at the robot's base), in a narrower window at twice the pixels: the course site shows a picture in a
 column of about 690 px, where an 800 px window left the panel's slider labels about 8 px high (reader r18c). In a
-window :data:`WINDOW` wide the panel keeps its 340 px and the site shows the whole at about 1.15 times its size; the
-camera is moved sideways (:data:`SHIFT`) so that the youBot stands in the scene's part of the window, left of the panel.
+window :data:`WINDOW` wide the panel keeps its 340 px and the site shows the whole at about its own size; the
+camera is moved sideways (:data:`SHIFT`) so that the scene and the youBot stand in the window's left half, beside the
+panel, not under it (reader r23b: the panel covered the right half of the scene).
 """
 
 from __future__ import annotations
@@ -20,10 +21,10 @@ import numpy as np
 from toolkit import viewer
 from toolkit.viewer.browser import screenshot
 
-WINDOW = (600, 760)  # (width, height) in CSS px: the panel down to its "Samples" section (viser docks it at
-#   the bottom of a window under 576 px)
+WINDOW = (680, 760)  # (width, height) in CSS px: the panel down to its "Samples" section (viser docks it at
+#   the bottom of a window under 576 px), and beside it a scene as wide; under the site's 688 px column
 SCALE = 2.0  # pixels per CSS px: sharp where the page shows the picture larger than its window
-SHIFT = np.array([4.0, 0.0, 0.0])  # workspace units the camera moves to the robot's right: the robot left of the panel
+SHIFT = np.array([4.8, 0.0, 0.0])  # workspace units the camera moves to the robot's right: the robot left of the panel
 SCENARIO, SEED, SAMPLES = "3do", 0, 300
 
 

@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.patches import Patch
 from matplotlib.ticker import NullFormatter, NullLocator
 
 from toolkit.plots.alt import Part, describe
@@ -43,16 +44,15 @@ def crossover(results: dict) -> Figure:
         ax.set_visible(False)
     quick = " (quick sizes)" if results.get("quick") else ""
     shaded = any(_cheaper(sweep).any() for sweep in sweeps.values())
-    said = (
-        f"shaded: the network cheaper by more than {CLOSE:.0%}"
-        if shaded
-        else f"nowhere cheaper by more than {CLOSE:.0%}"
-    )
+    said = f"shaded where the network is cheaper by > {CLOSE:.0%}"
     fig.suptitle(
-        f"Cost per check, exact and learned: {results['scenario']}, preset {results['preset']}{quick}\n{said}",
+        f"Cost per check, exact and learned: {scenario_name(results['scenario'])}, preset {results['preset']}{quick}"
+        f"\n{said}{'' if shaded else ': nowhere here'}",
         fontsize=11,
     )
     handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # one legend, below
+    if not shaded:  # the rule stays in the legend where nothing meets it (reader r23a: no shading, no rule)
+        handles[f"{SHADED} (nowhere here)"] = Patch(color=COLORS["learned"], alpha=0.2, lw=0)
     fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=1, fontsize=9, frameon=False)
     room = (0, (0.2 * len(handles) + 0.2) / fig.get_figheight(), 1, 1)  # below: a line a legend entry
     fig.tight_layout(rect=room)
@@ -63,6 +63,16 @@ def crossover(results: dict) -> Figure:
     text += f"{results['preset']}{quick}, microseconds on log axes. "
     parts = [_in_a_table(sweep) for sweep in sweeps.values()]
     return describe(fig, text + " ".join(_in_words(sweep) for sweep in sweeps.values()), parts)
+
+
+SHADED = f"shaded: network cheaper by > {CLOSE:.0%}"  # the legend's words for a shaded band
+
+
+def scenario_name(key: str) -> str:
+    """The site's name of a scenario from its key: ``3dc7`` -> ``3DC-7``, ``2ds`` -> ``2DS``; any other key as it is
+    given, upper case."""
+    name = key.upper()
+    return f"3DC-{name[3:]}" if name.startswith("3DC") and name[3:].isdigit() else name
 
 
 def _in_a_table(sweep: dict) -> Part:
@@ -106,7 +116,7 @@ def _panel(ax, sweep: dict) -> None:
         ax.plot(x, y, style, color=colour, label=label, clip_on=False, **MARKS[name])  # edge markers whole
     bounds = _halfway(x)  # (V+1,)
     for n, i in enumerate(np.flatnonzero(cheaper)):  # a band round each value the verdict calls "network cheaper"
-        legend = f"network cheaper by > {CLOSE:.0%}" if n == 0 else None
+        legend = SHADED if n == 0 else None
         span = bounds[i : i + 2]  # (2,) its band: the panel's whole height (a shaded area, not a mark)
         ax.fill_between(
             span, 0, 1, transform=ax.get_xaxis_transform(), color=COLORS["learned"], alpha=0.2, lw=0, label=legend
@@ -116,15 +126,15 @@ def _panel(ax, sweep: dict) -> None:
     for k, (value, name) in enumerate(found):  # each one's words a line lower than the last's: never on each other
         ax.axvline(value, ls=":", color=STYLES[name][1], label="the curves cross (dotted)")
         right = np.log(value / x[0]) > np.log(x[-1] / x[0]) / 2  # then its words go to the left
-        ax.annotate(
-            f"{_number(value)} {unit}",
-            (value, 0.97 - 0.09 * k),
+        ax.annotate(  # a count in whole units, clear of its dotted line (reader r23a: "62.6 triangles" on the line)
+            f"about {value:,.0f} {unit}",
+            (value, 0.97 - 0.11 * k),
             xycoords=("data", "axes fraction"),
-            xytext=(-3 if right else 3, 0),
+            xytext=(-6 if right else 6, 0),
             ha="right" if right else "left",
             va="top",
             textcoords="offset points",
-            fontsize=8,
+            fontsize=TICK_POINTS + 1,
             path_effects=halo(0.0, ("free",)),  # readable over a curve, which it does not hide
         )
     ax.set_xscale("log")
@@ -139,9 +149,9 @@ def _panel(ax, sweep: dict) -> None:
 
 TICK_POINTS = 9
 MARKS: dict[str, dict] = {  # where two curves meet, the network's triangle beneath, the exact circle and python-fcl's
-    "exact": dict(markersize=6, zorder=3),  # square inside it, each ringed in white (review r19a: at a batch of one the
-    "fcl": dict(markersize=7, zorder=3, markeredgecolor=COLORS["free"]),  # triangle nearly covered the square)
-    "learned": dict(markersize=10, zorder=2.5, path_effects=halo(1.5)),  # orange alone is too light on white
+    "exact": dict(markersize=6, zorder=3.5),  # square above it, each ringed in white (review r19a: at a batch of one
+    "fcl": dict(markersize=7, zorder=3, markeredgecolor=COLORS["free"]),  # the triangle nearly covered the square;
+    "learned": dict(markersize=8, zorder=2.5, alpha=0.8, path_effects=halo(1.5)),  # r23a/c: it hid the exact curve)
 }
 
 
