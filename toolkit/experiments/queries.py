@@ -126,7 +126,7 @@ def one_thread():
     The exact checker's own work runs on one thread; the learned checker's calls are
     small (a few hundred to a few ten thousand configurations), where intra-op threads
     cost more than they give and, when the other core is busy, stall (measured in
-    ``docs/benchmarks.md``, "On a busy machine").
+    ``tutorials/instructors.md``, "On a busy machine").
     """
     return threads.limited(1)
 

@@ -5,7 +5,7 @@ to a few ten thousand configurations, a 2D or 3D-clutter model trains on batches
 a few hundred. Split over several threads, each piece waits for its slowest thread,
 and when another program keeps a core busy (a browser, a notebook, a second run: a
 student's laptop) that wait is most of the time: one thread is several times faster
-then (measured in docs/benchmarks.md, "On a busy machine").
+then (measured in tutorials/instructors.md, "On a busy machine").
 
 So every ``toolkit`` command runs on :func:`configured` threads: 1 by default;
 ``TOOLKIT_THREADS=N`` for N, ``TOOLKIT_THREADS=0`` for the libraries' own defaults
