@@ -270,7 +270,7 @@ def algorithm_1(tables: Tables) -> str:
         f"saved 10 % or more of a query's time in {verdicts.count('less time')} of {len(verdicts)} cells, "
         f"lost 10 % or more in {verdicts.count('more time')} and tied in {verdicts.count('about the same time')} "
         f"(the paper: savings of up to {percent(max(papers))} %). With the MLP above, those savings are not the "
-        "method working: the first part of this page says why."
+        "method working: “What reproduces and what does not” says why."
     )
 
 
@@ -380,10 +380,11 @@ def short(tables: Tables) -> str:
     totals = facts.total_verdicts()
     sampling = facts.sampling_verdicts()
     stage = (
-        f"cuts sampling time by {checker_scope._percents(facts.sampling)}"
+        f"cuts sampling time by {span(list(facts.sampling))} %"
         if sampling[findings.SAVES] == len(facts.sampling)
         else f"cuts sampling time in {sampling[findings.SAVES]} of {len(facts.sampling)} cells"
     )
+    costs = f", costing time in {totals[findings.COSTS]}" if totals[findings.COSTS] else ""
     items = [
         f"**The `paper` CAE** is {cae_said}: it gets {span(ours)} % of unseen workspaces' cells right, “all free” "
         f"{span(free)} %.",
@@ -392,9 +393,9 @@ def short(tables: Tables) -> str:
         f"**With our compiled checker**, an accurate network (`strong`) inside the paper's Algorithm 1 saves time in "
         f"{own.count('less time')} of {len(own)} cells, ties in {own.count('about the same time')} and costs time in "
         f"{own.count('more time')} (Figure 1).",
-        f"**With python-fcl on both sides**, it {stage} (the paper: {checker_scope._percents(facts.papers_sampling)}), "
+        f"**With python-fcl on both sides**, it {stage} (the paper: {span(list(facts.papers_sampling))} %), "
         f"but the whole query ties in {totals[findings.TIES]} of {len(facts.own)} cells and saves in "
-        f"{totals[findings.SAVES]}" + (f", costing time in {totals[findings.COSTS]}." if totals[findings.COSTS] else "."),
+        f"{totals[findings.SAVES]}{costs}.",
         "**So** the savings in the paper's Table 3 depend on how slow its unnamed exact checker was.",
     ]
     return "**In short**\n\n" + "\n".join(f"- {item}" for item in items)

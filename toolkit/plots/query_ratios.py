@@ -37,7 +37,7 @@ MEANS_STYLES = (  # :func:`means_grid`'s series in turn: colour, marker, hollow;
     (LINE_COLORS[3], "v", True),  # the same colour hollow: the same network with python-fcl
     (LINE_COLORS[4], "P", False),  # reddish purple pluses: another network
 )
-MEANS_SPREAD = 0.8  # of the space between two samplers, what a sampler's points spread over
+MEANS_SPREAD = 0.88  # of the space between two samplers, what a sampler's points spread over
 
 
 def own_ratios(
@@ -212,7 +212,7 @@ def means_grid(
                 [ratios[s] for s in samplers],
                 linestyle="none",
                 marker=marker,
-                markersize=6,
+                markersize=5.5,
                 label=name,
                 zorder=3,
                 **_fill(colour, hollow),
