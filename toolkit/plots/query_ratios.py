@@ -29,7 +29,7 @@ from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 
 READS = (COSTS, TIES, SAVES)  # what a median reads as, in the legend's order; each its own colour and marker
 GAP = 1  # an empty slot between two scenarios' groups of samplers
-APART = 0.17  # where a scenario has two series: each point this far from its sampler's tick, the first to the left
+APART = 0.22  # where a scenario has two series: each point this far from its sampler's tick, the first to the left
 Cells = Mapping[str, Mapping[str, tuple[float, float, float]]]  # {scenario: {sampler: (median, q1, q3)}}
 MEANS_STYLES = (  # :func:`means_grid`'s series in turn: colour, marker, hollow; no verdict look of own_ratios
     (LINE_COLORS[5], "X", False),  # grey crosses: the paper's own numbers
