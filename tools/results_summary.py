@@ -419,7 +419,7 @@ def summary(tables: Tables) -> str:
     ]
     return (
         "**The findings, with their numbers** (every number in this list is computed from this page's tables; the "
-        "table under “When each run was measured” says when each run was measured, and each preset's section holds "
+        "table under “How these results were made” says when each run was measured, and each preset's section holds "
         "its tables):\n\n" + "\n".join(f"- {item}" for item in items)
     )
 
