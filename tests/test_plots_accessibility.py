@@ -237,6 +237,15 @@ def gallery() -> dict[str, Figure]:
             },
             title="each query's own ratio",
         ),
+        "query_ratios.means_grid": query_ratios.means_grid(
+            {
+                "2DS: total time, means": {
+                    "the paper": {"BS": 0.8, "OB": 0.8, "G": 0.9, "BT": 0.9},
+                    "ours": {"BS": 1.3, "OB": 1.5, "G": 1.3, "BT": 0.8},
+                },
+                "3DC-7: total time, means": {"the paper": {"BS": 1.0, "OB": 0.9, "G": 1.1, "BT": 0.5}},
+            }
+        ),
         "timings.throughputs": timings.throughputs(
             {"2DS": {"exact": 9e7, "learned": 3e6}, "3DC-7": {"exact": 2e5, "learned": 2.5e6}}
         ),

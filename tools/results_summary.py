@@ -12,7 +12,7 @@ claim reads: the `strong` network inside Algorithm 1, the median of each query's
 with our compiled checker (filled) and, beside it, with python-fcl on both sides (hollow; :data:`CLAIM_SERIES`)
 (:func:`claim_figure`, drawn by :func:`toolkit.plots.query_ratios.own_ratios`). Figures 2 and 3, :data:`FIGURES`, are
 Table 3's total and sampling columns by means, ours beside the paper's, per scenario and sampler
-(:func:`table3_figure`, drawn by :func:`toolkit.plots.timings.ratio_comparison`). Each one's text alternative is
+(:func:`table3_figure`, drawn by :func:`toolkit.plots.query_ratios.means_grid`). Each one's text alternative is
 written between its markers (:data:`CLAIM_BEGIN`, :data:`FIGURE_BEGIN` and their ends); each PNG carries the same text
 (its ``Description``), so
 ``tests/test_results_figure.py`` fails while the picture or its words no longer match the tables.
@@ -33,13 +33,15 @@ from typing import NamedTuple
 from matplotlib.figure import Figure
 
 from toolkit.experiments.paper_numbers import IMPROVEMENT, MLP
-from toolkit.plots import alt, query_ratios, timings
+from toolkit.plots import alt, query_ratios
 from toolkit.teaching import checker_scope, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
 
 BEGIN = "<!-- summary: written by `python -m tools.results_summary` from the tables below; edit it there -->"
 END = "<!-- end of the summary -->"
+DETAIL_BEGIN = "<!-- findings: written by `python -m tools.results_summary` from the tables below; edit them there -->"
+DETAIL_END = "<!-- end of the findings -->"
 RULE = (  # chapter 04's rule for a time ratio with / without, in the page's words
     "a gain of 10 % or more, on the ratio as shown to two decimals (0.90 or less), is a saving, a loss of 10 % or "
     "more (1.10 or more) a loss, anything between a tie"
@@ -48,14 +50,15 @@ CHAPTER_04 = ("2ds", "3dc7")  # the scenarios whose lazy-PRM cells chapter 04 sh
 NAMES = {"2ds": "2DS", "3dc7": "3DC-7", "3dc9": "3DC-9", "3do": "3DO"}
 FIGURES = {kind: RESULTS.parent / f"results_table3_{kind}.png" for kind in ("total", "sampling")}  # Table 3's columns
 LEADS = {  # what each figure shows, over it
-    "total": "**Figure 2: a whole query's time, by means** (Table 3's *Total* columns), ours beside the paper's.",
-    "sampling": "**Figure 3: the sampling stage's time, by means** (Table 3's *Sampling* columns), ours beside the "
-    "paper's.",
+    "total": "**Figure 2: a whole query's time, by means** (Table 3's *Total* columns), each against Algorithm 1 "
+    "without prediction, ours beside the paper's.",
+    "sampling": "**Figure 3: the sampling stage's time, by means** (Table 3's *Sampling* columns), each against "
+    "Algorithm 1 without prediction, ours beside the paper's, on Figure 2's scale.",
 }
 CLAIM_FIGURE = RESULTS.parent / "results_claim.png"  # Figure 1: the statistic the verdict on the paper's claim reads
 CLAIM_BEGIN = "<!-- figure of the claim: drawn by `python -m tools.results_summary` from the tables below -->"
 CLAIM_END = "<!-- end of the figure of the claim -->"
-CLAIM_TITLE = "`strong` network inside Algorithm 1: total time, each query's own ratio"
+CLAIM_TITLE = "strong network inside Algorithm 1: total time, each query's own ratio"
 CLAIM_SERIES = ("our compiled checker on both sides", "python-fcl on both sides")  # Figure 1's filled and hollow points
 INTERVAL = re.compile(r"(\d+\.\d+) \((\d+\.\d+)–(\d+\.\d+)\)")  # "1.24 (1.12–1.36)": a median (middle half)
 FIGURE_BEGIN = "<!-- figure of {kind} times: drawn by `python -m tools.results_summary` from the tables below -->"
@@ -66,9 +69,9 @@ FIGURE_DPI = 110  # as docs/crossover.png: the site's column shows it at about i
 HISTORY = re.compile(r"(?m)^## Preset `paper` before issue 25.*$")  # the section of the run with python-fcl
 SOURCES = {  # a series of the figure: its preset in the tables (None: the paper's own numbers) and its name
     "the paper (Table 3)": None,
-    "ours, `paper` network, compiled checker": "paper",
-    "ours, `paper` network, python-fcl (before issue 25)": "before25",
-    "ours, accurate `strong` network, compiled checker": recorded.ALGORITHM_1,
+    "ours, paper network, compiled checker": "paper",
+    "ours, paper network, python-fcl (before issue 25)": "before25",
+    "ours, accurate strong network, compiled checker": recorded.ALGORITHM_1,
 }
 
 
@@ -267,7 +270,7 @@ def algorithm_1(tables: Tables) -> str:
         f"saved 10 % or more of a query's time in {verdicts.count('less time')} of {len(verdicts)} cells, "
         f"lost 10 % or more in {verdicts.count('more time')} and tied in {verdicts.count('about the same time')} "
         f"(the paper: savings of up to {percent(max(papers))} %). With the MLP above, those savings are not the "
-        "method working: the first part of this page says why."
+        "method working: “What reproduces and what does not” says why."
     )
 
 
@@ -344,20 +347,64 @@ def slow_checker(tables: Tables) -> str:
     checker named first; what the paper's Table 3 shows depends on how slow its checker was."""
     facts = checker_scope.slow_checker(tables)
     tied = facts.total_verdicts()[findings.TIES] == len(facts.own)
-    rates = recorded.table(checker_scope.SLOW, "Checker throughput", tables).values()
-    slower = [recorded.ours(row["exact cfg/s"]) / recorded.ours(row["FCL cfg/s"]) for row in rates]
     return (
-        "**And with a slow exact checker?** The paper names none. In the run of the section “Preset `strong` with "
-        f"`--planner paper --baseline paper-fcl-alike`” python-fcl was {span(slower, round)} times slower than our "
-        "compiled checker (its throughput table). "
+        "**And with a slow exact checker?** The paper names none. python-fcl answers a 3D configuration tens of "
+        "times slower than our compiled checker ([benchmarks.md](benchmarks.md) measures by how much). "
         f"{checker_scope.slow_sentence(facts)} "
         "So what the paper's Table 3 shows depends on how slow its checker was"
         + (", and in total time even this favourable case is a tie here." if tied else ".")
     )
 
 
+def short(tables: Tables) -> str:
+    """The summary's Markdown, without its markers: five one-sentence answers a student can repeat (reader r23c, item
+    1), every number computed from the tables; the statistics they count and the tables they read are defined in the
+    findings under Figure 1 (:func:`summary`)."""
+    rows = recorded.table("paper", "CAE reconstruction", tables)
+    ours = [recorded.ours(row["Unseen"]) for row in rows.values()]
+    free = [recorded.ours(row["all free: Seen / Unseen"].split("/")[-1]) for row in rows.values()]
+    better = max(o - f for o, f in zip(ours, free))
+    cae_said = (
+        "no better than answering “all free”"
+        if round(better * 100) <= 0
+        else f"at most {percent(better)} points better than answering “all free”"
+    )
+
+    def balanced(preset: str) -> list[float]:
+        return [
+            recorded.ours(row["Balanced unseen Acc"]) for row in recorded.table(preset, "MLP accuracy", tables).values()
+        ]
+
+    own = [change(r) for row in recorded.query_ratios(recorded.ALGORITHM_1, tables).values() for r in row.values()]
+    facts = checker_scope.slow_checker(tables)
+    totals = facts.total_verdicts()
+    sampling = facts.sampling_verdicts()
+    stage = (
+        f"cuts sampling time by {span(list(facts.sampling))} %"
+        if sampling[findings.SAVES] == len(facts.sampling)
+        else f"cuts sampling time in {sampling[findings.SAVES]} of {len(facts.sampling)} cells"
+    )
+    costs = f", costing time in {totals[findings.COSTS]}" if totals[findings.COSTS] else ""
+    items = [
+        f"**The `paper` CAE** is {cae_said}: it gets {span(ours)} % of unseen workspaces' cells right, “all free” "
+        f"{span(free)} %.",
+        f"**The `paper` MLP** is at chance on balanced unseen samples ({span(balanced('paper'))} %); the `strong` MLP "
+        f"scores {span(balanced('strong'))} %.",
+        f"**With our compiled checker**, an accurate network (`strong`) inside the paper's Algorithm 1 saves time in "
+        f"{own.count('less time')} of {len(own)} cells, ties in {own.count('about the same time')} and costs time in "
+        f"{own.count('more time')} (Figure 1).",
+        f"**With python-fcl on both sides**, it {stage} (the paper: {span(list(facts.papers_sampling))} %), "
+        f"but the whole query ties in {totals[findings.TIES]} of {len(facts.own)} cells and saves in "
+        f"{totals[findings.SAVES]}{costs}.",
+        "**So** the savings in the paper's Table 3 depend on how slow its unnamed exact checker was.",
+    ]
+    return "**In short**\n\n" + "\n".join(f"- {item}" for item in items)
+
+
 def summary(tables: Tables) -> str:
-    """The summary's Markdown, without its markers."""
+    """The findings under Figure 1, without their markers: each answer of :func:`short` with its numbers, the
+    statistic it reads and the tables it comes from, and the answers against the lazy PRM and against Algorithm 1
+    with the `paper` network."""
     items = [
         "**What was measured**: full-size runs of `toolkit reproduce` that set our figures beside the paper's "
         "Tables 1–3, for two recipes: `paper` (the paper's settings) and `strong` (ours), the second also inside "
@@ -371,9 +418,9 @@ def summary(tables: Tables) -> str:
         algorithm_1(tables),
     ]
     return (
-        "**In short** (every number in this list is computed from this page's tables; the first table below says "
-        "when each run was measured, “What reproduces and what does not” explains each finding, and each preset's "
-        "section holds its tables):\n\n" + "\n".join(f"- {item}" for item in items)
+        "**The findings, with their numbers** (every number in this list is computed from this page's tables; the "
+        "table under “How these results were made” says when each run was measured, and each preset's section holds "
+        "its tables):\n\n" + "\n".join(f"- {item}" for item in items)
     )
 
 
@@ -441,10 +488,14 @@ def ratios(text: str, kind: str = "total") -> dict[str, dict[str, dict[str, floa
 def table3_figure(text: str, kind: str = "total") -> Figure:
     """One of the page's figures: per scenario, each sampler's mean ``kind`` time ("total" or "sampling") with /
     without prediction against Algorithm 1, the paper's beside ours (:func:`ratios`), the tie band of :data:`RULE`
-    shaded."""
-    return timings.ratio_comparison(
-        {f"{NAMES[s]}: {kind} time, means, against Algorithm 1": series for s, series in ratios(text, kind).items()},
+    shaded; a grid of two columns, one legend, and one log axis for Figures 2 and 3 alike, so the same ratio stands
+    at the same height in every panel of both (:func:`toolkit.plots.query_ratios.means_grid`)."""
+    every = [r for k in FIGURES for series in ratios(text, k).values() for by in series.values() for r in by.values()]
+    ylim = (min(*every, 1 - findings.TIE) / 1.2, max(*every, 1 + findings.TIE) * 1.2)
+    return query_ratios.means_grid(
+        {f"{NAMES[s]}: {kind} time, means": series for s, series in ratios(text, kind).items()},
         tie=findings.TIE,
+        ylim=ylim,
     )
 
 
@@ -492,11 +543,11 @@ def claim_markdown(text: str) -> str:
         "Algorithm 1, against Algorithm 1 without prediction, 100 queries a scenario (the section “Preset `strong` "
         "with `--planner paper`”). Each point is the median of each query's own ratio, its total time with "
         "prediction over its own time without; the whisker spans the middle half of those ratios; the shaded band, "
-        f"0.90 to 1.10, holds the ties. This is the statistic the summary's verdict counts: {len(medians)} medians, "
+        f"0.90 to 1.10, holds the ties. This is the statistic the verdicts above count: {len(medians)} medians, "
         f"{said.count('more time')} costs, {said.count('about the same time')} ties and "
         f"{said.count('less time')} savings. The hollow points beside them are the same network with python-fcl "
         "doing every exact check on both sides (the section “Preset `strong` with `--planner paper --baseline "
-        f"paper-fcl-alike`”, {len(slow)} medians so far): {slow_said.count('more time')} costs, "
+        f"paper-fcl-alike`”, {len(slow)} medians): {slow_said.count('more time')} costs, "
         f"{slow_said.count('about the same time')} ties and {slow_said.count('less time')} savings. Figures 2 and 3 "
         "show means, Table 3's statistic, to set ours beside the paper's; a few slow queries move a mean, so they are "
         "not the verdict."
@@ -559,7 +610,8 @@ def between(text: str, begin: str, end: str, new: str) -> str:
 def with_summary(text: str) -> str:
     """``text`` (docs/results.md) with its wide tables in parts (:func:`narrow`), the summary between its markers
     made again from its tables (:func:`summary`) and the figure's text between its own (:func:`figure_markdown`)."""
-    text = between(narrow(text), BEGIN, END, summary(parse(text)))
+    text = between(narrow(text), BEGIN, END, short(parse(text)))
+    text = between(text, DETAIL_BEGIN, DETAIL_END, summary(parse(text)))
     text = between(text, CLAIM_BEGIN, CLAIM_END, claim_markdown(text))
     for kind in FIGURES:
         text = between(text, FIGURE_BEGIN.format(kind=kind), FIGURE_END.format(kind=kind), figure_markdown(text, kind))

@@ -6,8 +6,13 @@ every scenario and sampler in one panel, the middle half of the ratios as a whis
 tie band; each point's colour and marker say what its median reads as (saves, a tie, costs). A second series (the same
 network with another exact checker, ``slow``) sits beside the first in each sampler's slot, its markers hollow, so the
 two are told apart without colour. ``docs/results.md`` shows it first, for the accurate network inside Algorithm 1,
-with our compiled checker (filled) and with python-fcl on both sides (hollow). Returns a matplotlib ``Figure``; never
-calls ``show()``.
+with our compiled checker (filled) and with python-fcl on both sides (hollow).
+
+:func:`means_grid` draws the page's Figures 2 and 3: mean time ratios (Table 3's statistic) of several series, one
+panel per scenario in a grid of two columns, one legend over them all, one log axis shared by every panel. Its series
+take colours and markers of their own (:data:`MEANS_STYLES`), none of the three verdict looks of :func:`own_ratios`, so
+a reader who carries Figure 1's key into Figure 2 cannot misread it. Each returns a matplotlib ``Figure``; never calls
+``show()``.
 """
 
 from __future__ import annotations
@@ -18,14 +23,21 @@ import numpy as np
 from matplotlib.figure import Figure
 
 from toolkit.plots.alt import Part, describe
-from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo, series_style
+from toolkit.plots.palette import COLORS, LINE_COLORS, PAGE_WIDTH, halo, series_style
 from toolkit.plots.timings import band_words, legend_above, log_ticks, tie_band
 from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 
 READS = (COSTS, TIES, SAVES)  # what a median reads as, in the legend's order; each its own colour and marker
 GAP = 1  # an empty slot between two scenarios' groups of samplers
-APART = 0.17  # where a scenario has two series: each point this far from its sampler's tick, the first to the left
+APART = 0.22  # where a scenario has two series: each point this far from its sampler's tick, the first to the left
 Cells = Mapping[str, Mapping[str, tuple[float, float, float]]]  # {scenario: {sampler: (median, q1, q3)}}
+MEANS_STYLES = (  # :func:`means_grid`'s series in turn: colour, marker, hollow; no verdict look of own_ratios
+    (LINE_COLORS[5], "X", False),  # grey crosses: the paper's own numbers
+    (LINE_COLORS[3], "D", False),  # bluish green diamonds: a network with our compiled checker
+    (LINE_COLORS[3], "v", True),  # the same colour hollow: the same network with python-fcl
+    (LINE_COLORS[4], "P", False),  # reddish purple pluses: another network
+)
+MEANS_SPREAD = 0.88  # of the space between two samplers, what a sampler's points spread over
 
 
 def own_ratios(
@@ -90,7 +102,7 @@ def _legend_entries(ax, series: tuple[str, str] | None) -> None:
         ax.plot([], [], linestyle="none", marker=look["marker"], color=look["color"], markersize=7, label=_read(reads))
     for hollow, name in zip((False, True), series or ()):
         label = f"{'hollow' if hollow else 'filled'}: {name}"
-        ax.plot([], [], linestyle="none", marker="D", markersize=6, label=label, **_fill(COLORS["ink"], hollow))
+        ax.plot([], [], linestyle="none", marker="o", markersize=7, label=label, **_fill(COLORS["ink"], hollow))
 
 
 def _points(ax, x: np.ndarray, by_sampler: Mapping[str, tuple[float, float, float]], tie: float, hollow: bool) -> None:
@@ -168,3 +180,82 @@ def _part(cells: Cells, title: str) -> Part:
         ("scenario", *samplers),
         rows,
     )
+
+
+def means_grid(
+    panels: Mapping[str, Mapping[str, Mapping[str, float]]],
+    *,
+    tie: float = TIE,
+    ylim: tuple[float, float] | None = None,
+    samplers: tuple[str, ...] = ("BS", "OB", "G", "BT"),
+) -> Figure:
+    """``{panel title: {series: {sampler: ratio}}}`` of time ratios with / without prediction (below 1: saves), one
+    panel per title in a grid of two columns: a point per series and sampler (a series keeps its place, colour and
+    marker in every panel, :data:`MEANS_STYLES`), read against the line at 1 and the shaded tie band, on one log axis
+    shared by every panel (``ylim``, where given, e.g. to share it with another figure; else every point's range), the
+    legend once, over the grid."""
+    names = list(dict.fromkeys(name for series in panels.values() for name in series))
+    if len(names) > len(MEANS_STYLES):
+        raise ValueError(f"{len(names)} series: means_grid has looks for {len(MEANS_STYLES)}")
+    rows = -(-len(panels) // 2)
+    fig = Figure(figsize=(PAGE_WIDTH, 2.3 * rows + 1.1))
+    grid = fig.subplots(rows, 2, squeeze=False, sharey=True)
+    axes = list(grid.flat)
+    said = []
+    for ax, (title, series) in zip(axes, panels.items()):
+        for name, ratios in series.items():
+            k = names.index(name)
+            colour, marker, hollow = MEANS_STYLES[k]
+            x = np.arange(len(samplers)) + (k - (len(names) - 1) / 2) * MEANS_SPREAD / len(names)
+            (line,) = ax.plot(
+                x,
+                [ratios[s] for s in samplers],
+                linestyle="none",
+                marker=marker,
+                markersize=5.5,
+                label=name,
+                zorder=3,
+                **_fill(colour, hollow),
+            )
+            line.set_path_effects(halo(1.0))
+        every = np.array([[ratios[s] for s in samplers] for ratios in series.values()])  # (series, samplers)
+        said.append(
+            f"{title}: {len(series)} series, ratios from {every.min():.2f} to {every.max():.2f}, below 1 for "
+            f"{int(np.sum(every < 1))} of {every.size}"
+        )
+        ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
+        tie_band(ax, tie)
+        ax.set_xticks(np.arange(len(samplers) - 1) + 0.5, minor=True)  # a sampler's points between two lines
+        ax.grid(True, axis="x", which="minor", color=COLORS["shade"], linewidth=0.8)
+        ax.tick_params(axis="x", which="minor", length=0)
+        ax.set_xticks(np.arange(len(samplers)), samplers)
+        ax.set_xlim(-0.5, len(samplers) - 0.5)
+        ax.set_title(title, fontsize=10)
+        ax.tick_params(labelsize=9)
+    for ax in axes[len(panels) :]:
+        ax.set_visible(False)
+    for ax in grid[:, 0]:
+        ax.set_ylabel("time with / without\n(below 1: saves)", fontsize=9)
+    for ax in grid[-1, :]:
+        ax.set_xlabel("sampler", fontsize=9)
+    drawn = [float(r) for series in panels.values() for by in series.values() for r in by.values()]
+    low, high = ylim if ylim is not None else (min(*drawn, 1 - tie) / 1.3, max(*drawn, 1 + tie) * 1.3)
+    axes[0].set_yscale("log")
+    axes[0].set_ylim(low, high)
+    log_ticks(axes[0])  # shared by every panel
+    legend_above(fig, axes[:1], 1)  # one column: two of these names side by side overflow the page
+    text = (
+        "Mean planning time with prediction divided by the mean without, a point per sampler and series, one panel "
+        f"per scenario on one log scale, read against the line at 1 and the shaded {band_words(tie)}; below 1 "
+        f"prediction saves time. {'; '.join(said)}."
+    )
+    parts = [
+        Part(
+            title,
+            "time with prediction / time without; below 1, prediction saves time",
+            ("series", *samplers),
+            tuple((name, *(f"{ratios[s]:.2f}" for s in samplers)) for name, ratios in series.items()),
+        )
+        for title, series in panels.items()
+    ]
+    return describe(fig, text, parts)
