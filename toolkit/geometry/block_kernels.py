@@ -298,7 +298,7 @@ def _address(typingctx, arrays):
 @njit(cache=True)
 def address(arrays) -> int:
     """The address of ``arrays``' record (:func:`validity_at` takes it): valid as long as ``arrays`` lives."""
-    return _address(arrays)
+    return _address(arrays)  # type: ignore[call-arg]  # numba supplies the typing context
 
 
 @intrinsic
