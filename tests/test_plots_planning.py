@@ -432,3 +432,12 @@ def test_ratio_comparison_of_many_panels_has_one_legend():
     series = {"2DS, total": dict.fromkeys(("BS", "OB", "G", "BT"), 1.0)}
     fig = timings.ratio_comparison({f"source {k}": series for k in range(5)}, tie=0.1, repeat_legend=False)
     assert len(fig.legends) == 1
+
+
+def test_segment_table_gives_the_bars_segments_in_ms():
+    """Review r23a: the chapter's code cell that built this table moved here; its rows are the figure's segments."""
+    lines = timings.segment_table({"2DS": PLANNING}).splitlines()
+    assert lines[0] == "| scenario, sampler | sampling | connection | query | other |"
+    assert len(lines) == 2 + len(PLANNING) and lines[2].startswith(f"| 2DS, {next(iter(PLANNING))} | ")
+    bars = timings._stage_table(PLANNING, list(PLANNING))
+    assert lines[2].split(" | ")[1] == f"{bars['sampling_s'][0, 0]:.1f} / {bars['sampling_s'][0, 1]:.1f}"

@@ -380,3 +380,17 @@ def _points(ax, i: int, n: int, values: list[float], label: str, outlined: bool 
     if outlined:
         line.set_path_effects(halo(1.0))
     return x
+
+
+def segment_table(panels: dict[str, dict]) -> str:
+    """:func:`stage_times`' bars as a Markdown table, segment by segment, in ms a query, without / with prediction:
+    one row per scenario and sampler, a column per stage and "other" (five columns: the page's width)."""
+    columns = [STAGE_LABELS[k].split(" (")[0] for k in (*STAGE_KEYS, "other_s")]  # short headers
+    rows = ["| scenario, sampler | " + " | ".join(columns) + " |", "| --- |" + " ---: |" * len(columns)]
+    for name, planning in panels.items():
+        names = list(planning)
+        table = _stage_table(planning, names)
+        for i, sampler in enumerate(names):
+            cells = (f"{table[k][i, 0]:.1f} / {table[k][i, 1]:.1f}" for k in (*STAGE_KEYS, "other_s"))
+            rows.append(f"| {name}, {sampler} | " + " | ".join(cells) + " |")
+    return "\n".join(rows)
