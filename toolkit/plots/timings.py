@@ -220,12 +220,9 @@ def ratio_comparison(
     paper's Table 3 against its own planner, by means; a recorded run of ours against Algorithm 1 or the lazy
     exact planner), a series what was timed (e.g. "2DS, sampling"). Each ratio is a point (a series keeps its colour
     and marker in every panel), read against the line at 1: on a log axis a bar's length would mean nothing.
-    Ratios against different baselines never share a panel (two panels may share one); the panels share one log
-    axis, so positions compare. With ``tie`` (e.g. 0.10) every panel shades the tie band from ``1 - tie`` to
-    ``1 + tie`` (:func:`tie_band`), named in the legend and the description, so that a reader can count the points
-    on each side of it; without, none is drawn. With ``repeat_legend`` (the default) a figure of many panels
-    repeats its legend under the last (review r16a); chapter 04 turns it off (review r23a: it read as a second).
-    """
+    Ratios against different baselines never share a panel; the panels share one log axis. With ``tie`` (0.10)
+    every panel shades the tie band ``1 ± tie`` (:func:`tie_band`), named in the legend and the description, so that
+    a reader can count the points on each side; ``repeat_legend``: :func:`legend_above`'s ``repeat``."""
     names = list(dict.fromkeys(name for series in baselines.values() for name in series))  # every series, once
     entries = len(names) + (tie is not None)  # the legend's: every series and the band
     columns = 2 if max(map(len, names)) <= 40 else 1  # the legend's: two long names side by side overflow the page

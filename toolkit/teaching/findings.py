@@ -40,7 +40,6 @@ from toolkit.util.verdicts import (  # noqa: F401 (the words and bands; chapters
 OUTLIER = 5.0  # a query at least this many times the other queries' median total is an outlier
 MOVED = 1.5  # ... and it moves the mean when the mean is this many times the other queries' median
 SCORES = ("acc", "tpr", "tnr")  # a classifier's scores, as toolkit.learning.metrics names them (paper, Table 2)
-SCENARIO_NAMES = {"2ds": "2DS", "3dc7": "3DC-7", "3dc9": "3DC-9", "3do": "3DO"}  # as the pages name them
 SCORE_NAMES = {"acc": "accuracy", "tpr": "TPR", "tnr": "TNR"}
 CHANCE_BAND = 0.05  # a balanced accuracy this close to 50 % is "about a coin flip" (describe_accuracy)
 
@@ -398,42 +397,3 @@ def table3_sentence() -> str:
         f"The improvement of the mean times in the paper's text gives Table 3's percentage, within the rounding "
         f"of both, in {cells - len(differ)} of its {cells} cells, and not in {len(differ)} ({listed})."
     )
-
-
-def papers_longer_sentence() -> str:
-    """The cells of the paper's Table 3 whose total time is longer with prediction, read by the one rule every page
-    counts with (:func:`time_verdict`), and what the paper's own text calls its 3DO bridge test (review r23a)."""
-    longer = {
-        f"{SCENARIO_NAMES[key]} {sampler}": 1 - saved
-        for key, row in IMPROVEMENT.items()
-        for sampler, saved in row["total"].items()
-        if saved < 0
-    }
-    band = {time_verdict(ratio) for ratio in longer.values()}
-    cells = sum(len(row["total"]) for row in IMPROVEMENT.values())
-    listed = ", ".join(f"{cell} {ratio:.2f}×" for cell, ratio in longer.items())
-    said = f"The paper's own Table 3 has total time longer with prediction in {len(longer)} of {cells} cells ({listed})"
-    if band == {TIES}:
-        return (
-            f"{said}: each within 10 %, a tie by the rule this chapter and `docs/results.md` count with, though the "
-            "paper's text calls 3DO's bridge test \"a slow-down (8%)\": the rule reads the paper's cells and ours "
-            "alike."
-        )
-    return f"{said}: by the 10 % rule this chapter counts with, {', '.join(sorted(band))}."
-
-
-def sampling_line(name: str, planning: Mapping[str, Mapping[str, Mapping]]) -> str:
-    """One line under a run's sampling bars (review r23a: "one sampler may come out a little faster" hedged where
-    every sampler was slower): each sampler's median sampling time with prediction over its median without, and the
-    samplers whose sampling was shorter, a tie or longer by :func:`time_verdict`."""
-    ratios = {s: row["with"]["sampling_s_median"] / row["without"]["sampling_s_median"] for s, row in planning.items()}
-    said = Counter(time_verdict(r) for r in ratios.values())
-    listed = ", ".join(f"{s} {r:.2f}" for s, r in ratios.items())
-    counted = "; ".join(
-        f"{words} for all {len(ratios)} samplers"
-        if said[verdict] == len(ratios)
-        else f"{words} for {said[verdict]} of the {len(ratios)} samplers"
-        for verdict, words in ((COSTS, "longer with prediction"), (TIES, "a tie"), (SAVES, "shorter"))
-        if said[verdict]
-    )
-    return f"This run's sampling stage on {name}, median time with prediction / median without: {listed}: {counted}."
