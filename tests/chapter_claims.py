@@ -582,10 +582,11 @@ PLAIN = {  # the chapter's written answer on the paper's claim (opening, section
 
 def _claim_status(nb, found: list[tuple[list[str], list[list[str]]]], said: dict[str, list[str]]) -> list[str]:
     """The paper's claim with an accurate network, from the recorded runs of 100 queries a scenario (review r15a: 4
-    queries and one sampler were its only test). The line under the first code cell and the summary state it
-    (:func:`toolkit.teaching.findings.claim_status`) as section 6's rows give it: the `strong` network's medians
-    inside Algorithm 1 (every scenario recorded) decide it, its medians against the lazy PRM are counted beside; and
-    the prose says it in the same words three times (opening, section 6, summary), never in another verdict's."""
+    queries and one sampler were its only test). The first code cell states it once (review r23a: the summary's
+    reprint went; :func:`toolkit.teaching.findings.claim_status`) as section 6's rows give it: the `strong` network's
+    medians inside Algorithm 1 (every scenario recorded) decide it, its medians against the lazy PRM are counted
+    beside; and the prose says it in the same words three times (opening, section 6, summary), never in another
+    verdict's."""
     eager = [v for label, verdicts in said.items() if ACCURATE_ROW.fullmatch(label) for v in verdicts]
     lazy = [v for name in ("2DS", "3DC-7") for v in said.get(f"{name}, `strong` preset, ratio of medians", [])]
     outputs = texts(nb)
@@ -632,8 +633,10 @@ SLOW_FEWER = "saved total time in far fewer cells than the paper's Table 3"  # a
 
 def _slow_checker(nb, facts: checker_scope.SlowChecker | None = None) -> list[str]:
     """The answer with python-fcl on both sides (review r19a: "no, against a fast compiled checker"), against the
-    recorded run (``docs/results.md``, :data:`toolkit.teaching.checker_scope.SLOW`): the line under the first code cell
-    and the summary print :func:`~toolkit.teaching.checker_scope.slow_sentence`; the prose (opening, section 6,
+    recorded run (``docs/results.md``, :data:`toolkit.teaching.checker_scope.SLOW`): the first code cell prints
+    :func:`~toolkit.teaching.checker_scope.slow_sentence` and the paper's own count beside ours
+    (:func:`~toolkit.teaching.checker_scope.like_for_like`; "far fewer cells" only where ours is at most half); the
+    prose (opening, section 6,
     summary) says the sampling stage saved time only where every recorded cell did, and says each query's total
     time was a tie (or shorter, or longer) only where every recorded median says so, never another verdict's words."""
     facts = checker_scope.slow_checker() if facts is None else facts

@@ -399,15 +399,15 @@ def test_chapter_04_fails_where_section_6s_recorded_verdicts_contradict_its_answ
 
 
 def _claim_expected() -> tuple[str, ...]:
-    """What the line under the first code cell and the summary must say of the paper's claim: docs/results.md's
+    """What the first code cell must say of the paper's claim: docs/results.md's
     counts, read by hand (inside Algorithm 1 the accurate network saves in none of 16 cells, ties in 7, costs in 9;
     against the lazy PRM, on 2DS and 3DC-7, it saves in none of 8)."""
     return (findings.DOES_NOT_HOLD, "none", "16", "7", "9", "none", "8")
 
 
 def test_chapter_04_fails_where_its_statement_of_the_papers_claim_disagrees_with_the_recorded_runs():
-    """Review r15a: the paper's claim (an accurate network inside Algorithm 1) was tested on 4 queries. The line under
-    the first code cell and the summary state it from the recorded runs of 100 queries a scenario, as section 6's
+    """Review r15a: the paper's claim (an accurate network inside Algorithm 1) was tested on 4 queries. The first code
+    cell states it from the recorded runs of 100 queries a scenario, as section 6's
     rows count them; a statement that disagrees, or a missing one, fails."""
     expected = _claim_expected()
     assert CLAIM_STATUS.startswith(
