@@ -82,3 +82,25 @@ def test_mixed_verdicts_are_counted_never_called_a_tie():
 def test_each_unanimous_verdict_has_its_words(own, words):
     said = checker_scope.slow_sentence(dataclasses.replace(ONE, own=own))
     assert f"each query's total time was {words} for every sampler (the median of each query's own ratio" in said
+
+
+def test_like_for_like_counts_savings_of_ten_percent_or_more_by_means_as_the_paper_does():
+    """Review r23a: the page printed Table 3's range of totals, never the count the paper's own reader makes."""
+    assert checker_scope.like_for_like(ONE) == (
+        "Counted as the paper counts (Table 3's means, a saving of 10 % or more), that run saved total time in none "
+        "of its 4 cells, the paper's Table 3 in 2 of the same 4."
+    )
+    edge = dataclasses.replace(ONE, totals=(0.10, 0.09, 0.5, -0.2))  # 10 % is a saving (0.90 as printed)
+    assert "saved total time in 2 of its 4 cells" in checker_scope.like_for_like(edge)
+
+
+def test_the_answer_lists_the_claim_python_fcl_and_why_from_the_record():
+    said = checker_scope.answer().splitlines()
+    assert [line[:3] for line in said] == ["1. ", "2. ", "3. "]
+    assert said[0].startswith("1. Against our compiled exact checker, the paper's claim ")
+    assert checker_scope.slow_sentence(checker_scope.slow_checker()) in said[1]
+    assert checker_scope.like_for_like(checker_scope.slow_checker()) in said[1]
+    rates = recorded.table(recorded.ALGORITHM_1, "Checker throughput")
+    costs = [1 / recorded.ours(row["learned / exact"]) for row in rates.values()]
+    assert said[2].startswith("3. Why: the network decides only the samples")
+    assert f"a network call cost {min(costs):.1f} to {max(costs):.0f} times as much per configuration" in said[2]

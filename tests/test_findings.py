@@ -4,7 +4,7 @@ read from intervals, saving, costing, tying and "can't tell"; tables that never 
 import numpy as np
 import pytest
 
-from toolkit.teaching import findings
+from toolkit.teaching import checker_scope, findings
 
 
 def summary(totals: list[float]) -> dict:
@@ -251,3 +251,27 @@ def test_table_3_against_the_papers_text_names_the_cells_its_means_do_not_give()
     assert differ["2DS sampling BT"] == pytest.approx((1 - 0.11 / 0.26, 0.74))
     assert not {"3DC-7 total BT", "2DS total G", "3DO total OB"} & set(differ)
     assert "in 25 of its 32 cells, and not in 7 (" in findings.table3_sentence()
+
+
+def test_the_papers_longer_cells_are_ties_by_the_rule_and_the_paper_says_slow_down():
+    """Review r23a: the page called the paper's 3DO bridge test (8 % longer) a tie without saying that the paper's
+    own text calls it "a slow-down (8%)"."""
+    said = checker_scope.papers_longer_sentence()
+    assert said.startswith("The paper's own Table 3 has total time longer with prediction in 3 of 16 cells (")
+    assert "3DO BT 1.08×" in said and "a tie by the rule" in said and '"a slow-down (8%)"' in said
+
+
+def test_the_sampling_line_counts_each_samplers_verdict():
+    def row(without, with_):
+        return {"without": {"sampling_s_median": without}, "with": {"sampling_s_median": with_}}
+
+    slower = {"BS": row(1.0, 2.3), "OB": row(1.0, 4.2)}
+    assert checker_scope.sampling_line("3DC-7", slower) == (
+        "This run's sampling stage on 3DC-7, median time with prediction / median without: BS 2.30, OB 4.20: longer "
+        "with prediction for all 2 samplers."
+    )
+    mixed = {"BS": row(1.0, 2.0), "OB": row(1.0, 1.0), "G": row(1.0, 0.5)}
+    assert checker_scope.sampling_line("2DS", mixed).endswith(
+        ": longer with prediction for 1 of the 3 samplers; a tie for 1 of the 3 samplers; shorter for 1 of the 3 "
+        "samplers."
+    )

@@ -222,9 +222,11 @@ def test_stage_times_one_stacked_bar_per_sampler_and_mode_with_the_given_heights
     np.testing.assert_allclose(
         spans, [[800 * MEDIANS[s][m]["total_s"], 1500 * MEDIANS[s][m]["total_s"]] for s, m in order]
     )
-    stacks = ax.containers[0].patches  # review r17a: a whisker stands beside its bar, never over the stages
-    for segment, bar in zip(whiskers.get_segments(), stacks):
+    stacks = ax.containers[0].patches  # review r17a: a whisker stands beside its bar, never over the stages;
+    for segment, bar in zip(whiskers.get_segments(), stacks):  # r23a: on its right, nearer its own bar than any other
         assert not bar.get_x() <= segment[0, 0] <= bar.get_x() + bar.get_width()
+        gaps = [min(abs(segment[0, 0] - b.get_x()), abs(segment[0, 0] - b.get_x() - b.get_width())) for b in stacks]
+        assert segment[0, 0] > bar.get_x() + bar.get_width() and min(gaps) == gaps[stacks.index(bar)]
     # above each pair the median of the queries' own ratios (0.5, 0.6, 1.2), not the ratio of the median totals (0.5)
     assert [t.get_text() for t in ax.texts] == ["0.60x"] * 4
     assert [t.get_text() for t in ax.get_xticklabels()][:2] == ["BS\nwithout", "BS\nwith"]
@@ -261,7 +263,7 @@ def test_a_whisker_far_above_the_bars_is_cut_at_the_top_with_its_end_written():
     (whiskers,) = ax.collections
     assert np.max([segment[:, 1] for segment in whiskers.get_segments()]) == pytest.approx(top)
     (triangle,) = [line for line in ax.lines if line.get_marker() == "^"]
-    assert list(triangle.get_xdata()) == [pytest.approx(1.39)] and list(triangle.get_ydata()) == [top]  # OB, with
+    assert list(triangle.get_xdata()) == [pytest.approx(1.405)] and list(triangle.get_ydata()) == [top]  # OB, with
     assert f"{end:.0f}" in [t.get_text() for t in ax.texts]
     assert f"OB with to {end:.0f} ms" in alt.alt_text(fig)
     assert "quartile off the scale (its value written)" in [t.get_text() for t in fig.legends[0].texts]
@@ -423,3 +425,19 @@ def test_samplers_say_how_many_samples_lie_near_a_c_obstacle_or_a_wall():
     points = np.concatenate([path.vertices for path in dashed.get_paths()])  # (P, 2)
     outside = np.maximum(np.maximum((9.75, 4.75) - points, points - (20.25, 12.25)), 0.0)  # (P, 2) how far out
     np.testing.assert_allclose(np.linalg.norm(outside, axis=1), band, atol=0.15)  # within a pixel and a half
+
+
+def test_ratio_comparison_of_many_panels_has_one_legend():
+    """Review r23a: the legend over the first of five panels, repeated under the last, read as two."""
+    series = {"2DS, total": dict.fromkeys(("BS", "OB", "G", "BT"), 1.0)}
+    fig = timings.ratio_comparison({f"source {k}": series for k in range(5)}, tie=0.1, repeat_legend=False)
+    assert len(fig.legends) == 1
+
+
+def test_segment_table_gives_the_bars_segments_in_ms():
+    """Review r23a: the chapter's code cell that built this table moved here; its rows are the figure's segments."""
+    lines = timings.segment_table({"2DS": PLANNING}).splitlines()
+    assert lines[0] == "| scenario, sampler | sampling | connection | query | other |"
+    assert len(lines) == 2 + len(PLANNING) and lines[2].startswith(f"| 2DS, {next(iter(PLANNING))} | ")
+    bars = timings._stage_table(PLANNING, list(PLANNING))
+    assert lines[2].split(" | ")[1] == f"{bars['sampling_s'][0, 0]:.1f} / {bars['sampling_s'][0, 1]:.1f}"

@@ -47,7 +47,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
     said, parts = [], []
     for ax, (title, planning) in zip(axes, panels.items()):
         names = list(planning)  # the samplers planned, in their order
-        x = np.arange(len(names))[:, None] + np.array([-0.2, 0.2])  # (samplers, modes) bar centres
+        x = np.arange(len(names))[:, None] + np.array([-0.22, 0.22])  # (samplers, modes) bar centres
         table = _stage_table(planning, names)  # key -> (samplers, modes), in ms
         cut = _draw_stage_bars(ax, x, table)  # (samplers, modes): which whiskers run past the panel's top
         ratio = [float(np.median(per_query_ratios(planning[s]))) for s in names]  # (samplers,)
@@ -104,7 +104,7 @@ def _stage_words(title: str, names: list[str], table: dict, ratio: list[float], 
 
 
 MS = 1000.0  # the figure's unit, ms, per second
-BAR = 0.32  # a stage bar's width; a pair's centres are 0.4 apart, its whiskers stand beside it
+BAR = 0.3  # a stage bar's width; a pair's centres are 0.44 apart, each bar's whisker stands on its right
 CUT = 2.0  # a whisker reaching past CUT times a panel's tallest bar is cut at its top, its end written there
 
 
@@ -136,8 +136,8 @@ def cut_in_words(cut: np.ndarray, labels, q3: np.ndarray, top: float) -> str:
 
 def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndarray:
     """:func:`stage_times`' bars at ``x (samplers, modes)``: the stages of ``table`` (key -> ``(samplers, modes)``)
-    stacked, hatched by stage, and a whisker from the total's first to third quartile beside the bar, on the pair's
-    outer side and off its segments (review r17a), the y axis up to the bars and
+    stacked, hatched by stage, and a whisker from the total's first to third quartile beside the bar, on its right
+    and off its segments (review r17a; r23a: the same side for every bar), the y axis up to the bars and
     the whiskers within :data:`CUT` times the tallest bar; returns which whiskers run past it ``(samplers, modes)``,
     drawn to the top with a triangle and their end written."""
     bottom = np.zeros_like(table["total_s"])
@@ -155,7 +155,8 @@ def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndar
         )
         bottom = bottom + table[key]
     quartiles = (table["total_s_q1"], table["total_s_q3"])
-    beside = x + np.array([-1, 1]) * (BAR / 2 + 0.03)  # (samplers, modes): left of "without", right of "with"
+    beside = x + BAR / 2 + 0.035  # (samplers, modes): right of every bar, its own (review r23a: one pair's two
+    # whiskers on its outer sides sat next to the neighbouring pair's and were pinned on the wrong bar)
     return quartile_whiskers(
         ax, beside, table["total_s"], *quartiles, tallest=bottom.max(), label="total: quartiles", end_above=True
     )
@@ -206,26 +207,26 @@ def quartile_whiskers(
             dict(xytext=(0, 2), ha="center", va="bottom") if end_above else dict(xytext=(5, -1), ha="left", va="top")
         )
         for xc, end in zip(x[cut], q3[cut]):
-            ax.annotate(ms_text(end), (xc, top), textcoords="offset points", fontsize=8, **where)
+            ax.annotate(ms_text(end), (xc, top), textcoords="offset points", fontsize=10, **where)  # r23a: 8 was small
     return cut
 
 
-def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]], *, tie: float | None = None) -> Figure:
+def ratio_comparison(
+    baselines: dict[str, dict[str, dict[str, float]]], *, tie: float | None = None, repeat_legend: bool = True
+) -> Figure:
     """Time with / without prediction per sampler (below 1: prediction saves time), one panel per source.
 
     ``{source: {series: {sampler: ratio}}}``: a source names whose numbers they are and what "without" was (the
     paper's Table 3 against its own planner, by means; a recorded run of ours against Algorithm 1 or the lazy
     exact planner), a series what was timed (e.g. "2DS, sampling"). Each ratio is a point (a series keeps its colour
     and marker in every panel), read against the line at 1: on a log axis a bar's length would mean nothing.
-    Ratios against different baselines never share a panel (two panels may share one); the panels share one log
-    axis, so positions compare. With ``tie`` (e.g. 0.10) every panel shades the tie band from ``1 - tie`` to
-    ``1 + tie`` (:func:`tie_band`), named in the legend and the description, so that a reader can count the points
-    on each side of it; without, none is drawn.
-    """
+    Ratios against different baselines never share a panel; the panels share one log axis. With ``tie`` (0.10)
+    every panel shades the tie band ``1 ± tie`` (:func:`tie_band`), named in the legend and the description, so that
+    a reader can count the points on each side; ``repeat_legend``: :func:`legend_above`'s ``repeat``."""
     names = list(dict.fromkeys(name for series in baselines.values() for name in series))  # every series, once
     entries = len(names) + (tie is not None)  # the legend's: every series and the band
     columns = 2 if max(map(len, names)) <= 40 else 1  # the legend's: two long names side by side overflow the page
-    legends = 1 + (len(baselines) > REPEATED_LEGEND)  # over the first panel, and under the last of many
+    legends = 1 + (repeat_legend and len(baselines) > REPEATED_LEGEND)  # over the first panel, and under the last
     height = 2.6 * len(baselines) + legends * (0.1 + 0.2 * -(-entries // columns))  # one baseline a row; the legends
     fig = Figure(figsize=(PAGE_WIDTH, height))
     axes = fig.subplots(len(baselines), 1, squeeze=False, sharey=True)[:, 0]
@@ -256,7 +257,7 @@ def ratio_comparison(baselines: dict[str, dict[str, dict[str, float]]], *, tie: 
     log_ticks(axes[0])  # shared by every panel
     for ax in axes:
         ax.tick_params(labelsize=9, labelleft=True)  # each row its own numbers
-    legend_above(fig, axes, columns)
+    legend_above(fig, axes, columns, repeat=repeat_legend)
     text = "Planning time with prediction divided by the time without, a point per sampler and series, log scale, read"
     text += " against the line at 1" + ("" if tie is None else f" and the shaded {band_words(tie)}")
     text += "; below 1 prediction saves"
@@ -276,14 +277,14 @@ SPREAD = 0.84  # of the space between two ticks, what a tick's points spread ove
 REPEATED_LEGEND = 3  # more panels than this: the legend also stands under the last one
 
 
-def legend_above(fig: Figure, axes, columns: int) -> None:
+def legend_above(fig: Figure, axes, columns: int, *, repeat: bool = True) -> None:
     """Each series once in a legend over the first panel, where a reader starts (review r15a: under the last of four
     panels it was far from the first), ``columns`` entries a row, and with more than :data:`REPEATED_LEGEND` panels
     the same legend again under the last (review r16a: over the first of five it was far from the last); the panels
     laid out between them."""
     shown = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}
     room = (0.1 + 0.2 * -(-len(shown) // columns)) / fig.get_figheight()  # a legend's share of the height
-    below = len(axes) > REPEATED_LEGEND
+    below = repeat and len(axes) > REPEATED_LEGEND
     ncol = min(len(shown), columns)
     fig.legend(shown.values(), shown.keys(), loc="upper center", ncol=ncol, fontsize=9, frameon=False)
     if below:
@@ -376,3 +377,17 @@ def _points(ax, i: int, n: int, values: list[float], label: str, outlined: bool 
     if outlined:
         line.set_path_effects(halo(1.0))
     return x
+
+
+def segment_table(panels: dict[str, dict]) -> str:
+    """:func:`stage_times`' bars as a Markdown table, segment by segment, in ms a query, without / with prediction:
+    one row per scenario and sampler, a column per stage and "other" (five columns: the page's width)."""
+    columns = [STAGE_LABELS[k].split(" (")[0] for k in (*STAGE_KEYS, "other_s")]  # short headers
+    rows = ["| scenario, sampler | " + " | ".join(columns) + " |", "| --- |" + " ---: |" * len(columns)]
+    for name, planning in panels.items():
+        names = list(planning)
+        table = _stage_table(planning, names)
+        for i, sampler in enumerate(names):
+            cells = (f"{table[k][i, 0]:.1f} / {table[k][i, 1]:.1f}" for k in (*STAGE_KEYS, "other_s"))
+            rows.append(f"| {name}, {sampler} | " + " | ".join(cells) + " |")
+    return "\n".join(rows)

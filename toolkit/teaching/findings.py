@@ -130,7 +130,7 @@ def claim_status(eager: Mapping[str, Mapping[str, float]], lazy: Mapping[str, Ma
     counted = Counter(time_verdict(r) for row in eager.values() for r in row.values())
     rest = f"a tie in {counted[TIES]}, a cost in {counted[COSTS]}"
     return (
-        f"So, against our compiled exact checker, the paper's claim {status} for an accurate network: inside the "
+        f"Against our compiled exact checker, the paper's claim {status} for an accurate network: inside the "
         "paper's Algorithm 1 the median query of "
         f"our accurate `strong` network saved time in {_saved_in(eager)} ({rest}), and against the lazy PRM (on "
         f"{' and '.join(lazy)}; docs/results.md counts every scenario recorded and both networks) in "
