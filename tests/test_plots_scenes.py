@@ -535,3 +535,27 @@ def test_a_path_frames_camera_never_looks_along_an_axis():
     azimuths = (-60.0 + np.array(scenes.FRAME_TURNS)) % 90.0  # (turns,) degrees past the last axis
     assert np.all((azimuths >= still_panels.OFF_AXIS) & (azimuths <= 90.0 - still_panels.OFF_AXIS))
     assert scenes.FRAME_TURNS[0] == 0.0  # mplot3d's usual camera first
+
+
+@pytest.mark.parametrize("valid", [True, False])
+def test_a_single_robot_in_a_still_overview_is_ringed_and_named_left_of_every_mark(valid):
+    """Reader r23b: in chapter 05's cube of 123 blocks the robot, about 10 px tall, was hard to find and its name, above
+    it, sat on marks. Now a ring round it, and its name beside the region, left of every sample and block, a leader
+    from the name to the ring."""
+    scenario = scenarios.get("3dc9")
+    workspace, robot = scenario.make_workspace(np.random.default_rng(0)), scenario.robot
+    Q = robot.sample(np.random.default_rng(0), 300)
+    q = Q[exact_checker(workspace, robot).are_valid(Q) == valid][0]
+    kinds = {"valid": np.arange(300) % 2 == 0, "in collision": np.arange(300) % 2 == 1}
+    fig = scenes.scene_still(robot, workspace, {"the robot": q}, valid={"the robot": valid}, samples=(Q[:, :3], kinds))
+    FigureCanvasAgg(fig).draw()
+    overview = fig.axes[2]
+    (ring,) = [c for c in overview.collections if c.get_gid() == "robot ring"]
+    (name,) = [t for t in overview.texts if t.get_gid() == "pose label"]
+    assert name.get_text() == ("the robot" if valid else "the robot,\nin collision") and name.arrow_patch is not None
+    marks = [c for c in overview.collections if c.get_gid() != "robot ring" and len(c.get_offsets())]
+    lefts = [overview.transData.transform(c.get_offsets())[:, 0].min() for c in marks]  # px: each kind's leftmost
+    assert marks and Text.get_window_extent(name).x1 < min(lefts)
+    centre = robot.link_aabbs(q[None])[0].mean(axis=(0, 1))  # (3,) where the ring is
+    np.testing.assert_allclose(np.ravel(ring._offsets3d), centre)
+    assert "the robot drawn over them, ringed, its name beside the workspace" in alt_text(fig)
