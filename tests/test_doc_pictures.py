@@ -23,7 +23,8 @@ def test_the_jupyterlab_picture_is_one_cell_of_a_narrow_window_at_twice_the_pixe
     window, scale = lab_browser.SHOT_WINDOW, lab_browser.SHOT_SCALE
     again = "make it again: TOOLKIT_QUICK=1 python -m tools.lab_browser notebooks/05_3d_scenes.ipynb --screenshot"
     assert window[0] < width <= window[0] * scale, again  # twice the pixels of a window no wider than SHOT_WINDOW
-    assert (width, height) != lab_browser.WINDOW and height < window[1] * scale, again  # one cell, not the page
+    assert (width, height) != lab_browser.WINDOW, again  # one cell, not the page
+    assert height <= lab_browser.SHOT_HEIGHT * scale, again  # the cell whole (reader r23b: a tall one was cut off)
     assert COLUMN / (width / scale) >= SHRINK
 
 
@@ -34,3 +35,18 @@ def test_the_viewer_picture_is_the_narrow_window_its_tool_photographs_at_twice_t
     shot = (round(window[0] * scale), round(window[1] * scale))
     assert size("viewer.png") == shot, "make it again: python -m tools.viewer_picture docs/viewer.png"
     assert COLUMN / window[0] > 1 and scale >= 2
+
+
+def test_the_viewer_picture_outlines_the_office_on_its_floor_alone():
+    """Reader r23b: a stray stroke poked out above the panel, an upright edge of the office's outline (6 units tall)
+    whose foot the panel hides. The picture keeps the outline's four floor edges."""
+    import numpy as np
+
+    from toolkit import scenarios
+    from toolkit.viewer import drawing
+
+    workspace = scenarios.get(viewer_picture.SCENARIO).make_workspace(np.random.default_rng(viewer_picture.SEED))
+    edges = drawing.region_edges(workspace)  # (12, 2, 3)
+    floor = viewer_picture.floor_outline(edges)
+    assert floor.shape == (4, 2, 3) and np.all(floor[..., 2] == workspace.lower[2])
+    assert np.ptp(edges[..., 2]) > 0  # the whole outline has height: the upright edges are what the picture leaves out

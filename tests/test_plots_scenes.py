@@ -441,7 +441,7 @@ def drawn_texts(fig) -> list[Text]:
     return [t for t in texts if t.get_window_extent().width > 0]
 
 
-def test_an_angle_that_wraps_around_is_broken_where_it_wraps_not_drawn_across_the_panel():
+def test_an_angle_that_wraps_around_runs_out_at_one_edge_and_comes_back_at_the_other_not_across_the_panel():
     robot = scenarios.get("3dc7").robot
     Q = np.zeros((4, robot.dof))
     Q[:, 3] = [3.0, 3.1, -3.1, -3.0]  # alpha goes through pi = -pi between frames 1 and 2
@@ -453,8 +453,10 @@ def test_an_angle_that_wraps_around_is_broken_where_it_wraps_not_drawn_across_th
     dof_panels.draw_dofs(fig, robot, Q, [0], "position", ax, along)
     alpha, x = ax.get_lines()
     scaled = (Q[:, 3] - robot.lower[3]) / (robot.upper[3] - robot.lower[3])  # (4,) near 1, then near 0
-    np.testing.assert_allclose(alpha.get_ydata(), [scaled[0], scaled[1], np.nan, scaled[2], scaled[3]])
-    np.testing.assert_allclose(alpha.get_xdata(), [along[0], along[1], np.nan, along[2], along[3]])
+    np.testing.assert_allclose(alpha.get_ydata(), [scaled[0], scaled[1], 1.0, np.nan, 0.0, scaled[2], scaled[3]])
+    edge = along[1] + (along[2] - along[1]) / 2  # 3.1 to pi is halfway from 3.1 to -3.1 (= 2 pi - 3.1)
+    np.testing.assert_allclose(alpha.get_xdata(), [along[0], along[1], edge, np.nan, edge, along[2], along[3]])
+    assert set(alpha.get_markevery()) <= {0, 1, 5, 6}  # markers on frames only, none at the edges
     assert len(x.get_xdata()) == 4  # unbroken
     text = alt_text(scenes.path_frame(robot, Q, 0))  # review r16c: the description said nothing of the jump
     assert "alpha wraps round (crosses ±π, its line jumping from one edge of its panel to the other) at 50%" in text
@@ -462,28 +464,28 @@ def test_an_angle_that_wraps_around_is_broken_where_it_wraps_not_drawn_across_th
     title = scenes.path_frame(robot, Q, 0).legends[0].get_title().get_text()  # reader r20c: a gap read as data lost
     assert (
         title
-        == "each DoF in its bounds: 0 lower, 1 upper\nalpha: a gap where the angle wraps round ±π, no data missing"
+        == "each DoF in its bounds: 0 lower, 1 upper\nalpha: at ±π a line leaves one edge and comes back at the other"
     )
     assert f"at 50% (from {scaled[1]:.2f} to {scaled[2]:.2f})" in text  # the edges its line leaves and comes back at
     Q[:, 5] = [3.0, -3.1, -3.0, -2.9]  # gamma too
-    assert dof_panels.wrap_note(robot, Q, [3, 4, 5]).startswith("\nalpha and gamma: a gap")
+    assert dof_panels.wrap_note(robot, Q, [3, 4, 5]).startswith("\nalpha and gamma: at ±π")
     assert dof_panels.wrap_note(robot, Q[:, [0, 1, 2, 4, 4, 4, 6]], [3, 4, 5]) == ""  # beta alone: no wrap
 
 
-def test_an_angle_that_wraps_after_its_first_frame_shows_that_frame_as_a_marker():
+def test_an_angle_that_wraps_after_its_first_frame_runs_that_frame_to_the_edge_no_lone_marker():
     """Reader r21c: beta "0.00 to 0.38" in words, but its line began near 1.00: frame 0 alone, before a wrap, drew
-    nothing. Now a marker shows it, and the words name both edges of the wrap."""
+    nothing. Reader r23b: a lone marker for it read as an outlier. Now frame 0's piece is a line to the edge it
+    crosses (the bottom, -π), the line coming back at the top; no marker of its own, and the words name both edges."""
     robot = scenarios.get("3dc7").robot
     Q = np.zeros((4, robot.dof))
     Q[:, 4] = [-3.14, 3.1, 3.0, 2.9]  # beta wraps between frames 0 and 1
     fig = Figure()
     ax = fig.subplots()
     dof_panels.draw_dofs(fig, robot, Q, [4], "angles", ax, np.linspace(0.0, 1.0, 4))
-    line, lone = ax.get_lines()
+    (line,) = ax.get_lines()  # one line, no lone marker beside it
     scaled = (Q[:, 4] - robot.lower[4]) / (robot.upper[4] - robot.lower[4])
-    assert np.isnan(line.get_ydata()[1]) and lone.get_marker() == line.get_marker() != "None"
-    np.testing.assert_allclose(lone.get_ydata(), scaled[:1])
-    assert lone.get_color() == line.get_color() and lone.get_linestyle() == "None"
+    np.testing.assert_allclose(line.get_ydata(), [scaled[0], 0.0, np.nan, 1.0, *scaled[1:]])
+    assert line.get_xdata()[1] == line.get_xdata()[3] > 0.0  # out at the bottom and in at the top, where it wraps
     text = alt_text(scenes.path_frame(robot, Q, 0))
     assert "beta wraps round (crosses ±π, its line jumping from one edge of its panel to the other) at 17% (from " in (
         text
@@ -533,3 +535,27 @@ def test_a_path_frames_camera_never_looks_along_an_axis():
     azimuths = (-60.0 + np.array(scenes.FRAME_TURNS)) % 90.0  # (turns,) degrees past the last axis
     assert np.all((azimuths >= still_panels.OFF_AXIS) & (azimuths <= 90.0 - still_panels.OFF_AXIS))
     assert scenes.FRAME_TURNS[0] == 0.0  # mplot3d's usual camera first
+
+
+@pytest.mark.parametrize("valid", [True, False])
+def test_a_single_robot_in_a_still_overview_is_ringed_and_named_left_of_every_mark(valid):
+    """Reader r23b: in chapter 05's cube of 123 blocks the robot, about 10 px tall, was hard to find and its name, above
+    it, sat on marks. Now a ring round it, and its name beside the region, left of every sample and block, a leader
+    from the name to the ring."""
+    scenario = scenarios.get("3dc9")
+    workspace, robot = scenario.make_workspace(np.random.default_rng(0)), scenario.robot
+    Q = robot.sample(np.random.default_rng(0), 300)
+    q = Q[exact_checker(workspace, robot).are_valid(Q) == valid][0]
+    kinds = {"valid": np.arange(300) % 2 == 0, "in collision": np.arange(300) % 2 == 1}
+    fig = scenes.scene_still(robot, workspace, {"the robot": q}, valid={"the robot": valid}, samples=(Q[:, :3], kinds))
+    FigureCanvasAgg(fig).draw()
+    overview = fig.axes[2]
+    (ring,) = [c for c in overview.collections if c.get_gid() == "robot ring"]
+    (name,) = [t for t in overview.texts if t.get_gid() == "pose label"]
+    assert name.get_text() == ("the robot" if valid else "the robot,\nin collision") and name.arrow_patch is not None
+    marks = [c for c in overview.collections if c.get_gid() != "robot ring" and len(c.get_offsets())]
+    lefts = [overview.transData.transform(c.get_offsets())[:, 0].min() for c in marks]  # px: each kind's leftmost
+    assert marks and Text.get_window_extent(name).x1 < min(lefts)
+    centre = robot.link_aabbs(q[None])[0].mean(axis=(0, 1))  # (3,) where the ring is
+    np.testing.assert_allclose(np.ravel(ring._offsets3d), centre)
+    assert "the robot drawn over them, ringed, its name beside the workspace" in alt_text(fig)

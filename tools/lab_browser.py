@@ -49,10 +49,16 @@ from toolkit.viewer.browser import CHROMIUM_ARGS, find_chromium
 
 WINDOW = (1400, 1000)  # (width, height) of the page
 SHOT_WINDOW, SHOT_SCALE = (860, 1000), 2  # the page for one screenshot: narrower, at twice the pixels (see below)
+SHOT_HEIGHT = 2400  # CSS px: the tallest cell a screenshot shows whole (the page grows to hold it)
 SETTINGS = {  # JupyterLab settings for the run: no news pop-up; every cell in the page, also those scrolled away;
-    # no empty screen below the last cell
+    # no empty screen below the last cell; a code line longer than the cell is wide wraps (reader r23b: a comment
+    # ran off the screenshot's right edge)
     "@jupyterlab/apputils-extension/notification": {"fetchNews": "false", "checkForUpdates": False},
-    "@jupyterlab/notebook-extension/tracker": {"windowingMode": "none", "scrollPastEnd": False},
+    "@jupyterlab/notebook-extension/tracker": {
+        "windowingMode": "none",
+        "scrollPastEnd": False,
+        "codeCellConfig": {"lineNumbers": False, "lineWrap": True},
+    },
 }
 STDERR = '.jp-OutputArea-output[data-mime-type="application/vnd.jupyter.stderr"]'  # errors and warnings render so
 PROMPTS = "[...document.querySelectorAll('.jp-CodeCell .jp-InputArea-prompt')]"  # JavaScript: each code cell's prompt
@@ -258,12 +264,17 @@ def _save_screenshot(page, rendered: RenderedNotebook, path: Path) -> None:
     """A PNG of the cell that shows the first embedded viewer, its code and its output (of the page where there is
     none). The page is :data:`SHOT_WINDOW` wide, about a web page's column (the course site's home page shows the
     picture about 700 px wide), at :data:`SHOT_SCALE` times the pixels: a picture of the whole 1400 px window, so
-    shrunk, left its text 6-8 px high."""
+    shrunk, left its text 6-8 px high. A cell taller than the window is shown whole, the window made as tall (up to
+    :data:`SHOT_HEIGHT`)."""
     path.parent.mkdir(parents=True, exist_ok=True)
     if not rendered.iframes:
         page.screenshot(path=str(path))
         return
     cell = page.locator(".jp-CodeCell", has=page.locator(".jp-OutputArea-output iframe")).first
+    tall = cell.bounding_box()["height"]  # a cell taller than the window: the window grows to hold it whole
+    if tall + 40 > page.viewport_size["height"]:  # (a clip past the window's edge is cut off there)
+        page.set_viewport_size({"width": page.viewport_size["width"], "height": min(int(tall) + 120, SHOT_HEIGHT)})
+        page.wait_for_timeout(1000)  # the notebook reflows
     cell.scroll_into_view_if_needed()
     page.wait_for_timeout(3000)  # its WebGL scene draws
     page.screenshot(path=str(path), clip=cell.bounding_box())

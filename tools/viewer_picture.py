@@ -8,7 +8,9 @@ samples marked at the robot's base), in a narrower window at twice the pixels: t
 column of about 690 px, where an 800 px window left the panel's slider labels about 8 px high (reader r18c). In a
 window :data:`WINDOW` wide the panel keeps its 340 px and the site shows the whole at about its own size; the
 camera is moved sideways (:data:`SHIFT`) so that the scene and the youBot stand in the window's left half, beside the
-panel, not under it (reader r23b: the panel covered the right half of the scene).
+panel, not under it (reader r23b: the panel covered the right half of the scene). The workspace's outline keeps its
+floor's four edges (:func:`floor_outline`): an upright edge of the office's far corner, its foot behind the panel,
+poked out above it as a stray stroke (reader r23b).
 """
 
 from __future__ import annotations
@@ -19,6 +21,7 @@ import sys
 import numpy as np
 
 from toolkit import viewer
+from toolkit.viewer import drawing
 from toolkit.viewer.browser import screenshot
 
 WINDOW = (680, 760)  # (width, height) in CSS px: the panel down to its "Samples" section (viser docks it at
@@ -28,6 +31,13 @@ SHIFT = np.array([4.8, 0.0, 0.0])  # workspace units the camera moves to the rob
 SCENARIO, SEED, SAMPLES = "3do", 0, 300
 
 
+def floor_outline(edges: np.ndarray) -> np.ndarray:
+    """Of the region's outline ``edges (12, 2, 3)`` (:func:`toolkit.viewer.drawing.region_edges`), the ``(4, 2, 3)``
+    that lie on its floor (both ends at its lowest height)."""
+    floor = edges[..., 2].min()
+    return edges[np.all(edges[..., 2] == floor, axis=1)]
+
+
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description="Photograph the viewer on the 3D office for the docs.")
     parser.add_argument("png", help="where the picture goes (docs/viewer.png)")
@@ -35,6 +45,8 @@ def main(argv: list[str] | None = None) -> int:
     shown = viewer.launch(SCENARIO, seed=SEED, quiet=True)
     try:
         shown.sample("raw", SAMPLES, seed=SEED)
+        region = floor_outline(drawing.region_edges(shown.workspace))  # the node of the same name, replaced
+        shown.server.scene.add_line_segments("/workspace/region", region, drawing.REGION, thickness=0.05)
         camera = shown.server.initial_camera
         camera.look_at, camera.position = camera.look_at + SHIFT, camera.position + SHIFT
         print(f"wrote {screenshot(shown.url, args.png, size=WINDOW, scale=SCALE)}")

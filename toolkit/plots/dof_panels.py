@@ -3,7 +3,7 @@
 Seven lines in one panel cross and hide each other, so the DoFs are grouped by kind (:func:`dof_groups`: the
 base's position, its angles, the joints) and each group drawn in a panel of its own (:func:`draw_dofs`), every
 DoF scaled to its bounds and named beside the panel at the height its line ends, the names moved apart just enough to
-be read.
+be read. An angle that goes round ±π runs out at one edge of its panel and comes back at the other (:func:`_broken`).
 """
 
 from __future__ import annotations
@@ -36,10 +36,9 @@ def draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, dofs: list[int], kind
     for k in dofs:
         style = series_style(k) | dict(markevery=(k % every, every), markersize=6)
         x, y = _broken(along, scaled[:, k]) if kind == "angles" else (along, scaled[:, k])
+        frames = _frame_points(scaled[:, k]) if kind == "angles" else np.arange(len(x))  # (T,) where each frame is
+        style["markevery"] = frames[k % every :: every].tolist()  # markers on frames, none where a wrap meets an edge
         ax.plot(x, y, linewidth=1.4, label=robot.dof_names[k], gid="dof", **style)
-        lone = _lone_frames(scaled[:, k]) if kind == "angles" else np.zeros(0, dtype=int)  # (l,) one-frame pieces
-        if len(lone):  # draw no line: a marker shows each
-            ax.plot(along[lone], scaled[lone, k], **(style | dict(linestyle="none", markevery=None)), gid="dof-lone")
     ax.set_ylim(-0.05, 1.05)
     box = ax.get_position()  # in figure fractions: the gridspec has placed the panel
     per_unit = box.height * fig.get_figheight() * 72 / 1.1  # points per unit of the y axis (1.1 units tall)
@@ -67,17 +66,31 @@ def draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, dofs: list[int], kind
 
 
 def _broken(along: np.ndarray, scaled: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """An angle's line ``scaled (T,)`` against ``along (T,)`` broken (a NaN between) where it wraps around: where it
-    jumps more than half its range between two frames, it went through -pi = pi, not across the panel."""
-    wraps = wrap_frames(scaled) + 1  # (w,) the frames after a wrap
-    return np.insert(along, wraps, np.nan), np.insert(scaled, wraps, np.nan)  # (T + w,) each
+    """An angle's line ``scaled (T,)`` against ``along (T,)`` run out at one edge of the panel and on from the other
+    where it wraps around (where it jumps more than half its range between two frames it went through -π = π, not
+    across the panel): the line goes on to the edge it crosses, where the angle reaches ±π, breaks (a NaN) and comes
+    back in at the other edge. Each piece is a line, the one frame before or after a wrap too (reader r23b: a lone
+    marker for it read as an outlier)."""
+    x, y = [along[:1]], [scaled[:1]]
+    for t in range(len(scaled) - 1):
+        a, b = scaled[t], scaled[t + 1]
+        if abs(b - a) > 0.5:  # through the top edge (1 = π, on from 0) or the bottom one
+            top = b < a
+            share = (1.0 - a) / (1.0 - a + b) if top else a / (a + 1.0 - b)  # of the step, to the edge
+            at = along[t] + share * (along[t + 1] - along[t])
+            x.append([at, np.nan, at])
+            y.append([1.0, np.nan, 0.0] if top else [0.0, np.nan, 1.0])
+        x.append(along[t + 1 : t + 2])
+        y.append(scaled[t + 1 : t + 2])
+    return np.concatenate(x), np.concatenate(y)  # (T + 3 w,) each
 
 
-def _lone_frames(scaled: np.ndarray) -> np.ndarray:
-    """The frames ``(l,)`` of an angle ``scaled (T,)`` that wraps both before and after them (or at the path's end):
-    drawn broken, each is a piece of one point, which a line cannot show (reader r21c: beta's start at 0.00)."""
-    edges = np.concatenate(([0], wrap_frames(scaled) + 1, [len(scaled)]))  # (w + 2,) where each piece starts
-    return edges[:-1][np.diff(edges) == 1]
+def _frame_points(scaled: np.ndarray) -> np.ndarray:
+    """Where in the line :func:`_broken` draws of ``scaled (T,)`` each frame lies, ``(T,)``: after each wrap three
+    points more (the edge, the break, the other edge)."""
+    added = np.zeros(len(scaled), dtype=int)
+    added[wrap_frames(scaled) + 1] = 3
+    return np.arange(len(scaled)) + np.cumsum(added)
 
 
 def wrap_frames(scaled: np.ndarray) -> np.ndarray:
@@ -87,16 +100,18 @@ def wrap_frames(scaled: np.ndarray) -> np.ndarray:
 
 
 def wrap_note(robot: BoxRobot, Q: np.ndarray, angles: list[int]) -> str:
-    """A legend title's second line where an angle wraps round ±π: its broken line is no missing data (r20c)."""
+    """A legend title's second line where an angle wraps round ±π: its line runs out at one edge and comes back at
+    the other (:func:`_broken`), no data missing (reader r20c)."""
     scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
     names = [robot.dof_names[k] for k in angles if len(wrap_frames(scaled[:, k]))]
     named = ", ".join(names[:-1]) + " and " * (len(names) > 1) + "".join(names[-1:])  # "alpha, beta and gamma"
-    return f"\n{named}: a gap where the angle wraps round ±π, no data missing" if names else ""
+    return f"\n{named}: at ±π a line leaves one edge and comes back at the other" if names else ""
 
 
 LEADER_COLOR = COLORS["reference"]  # a name's leader: a grey no DoF's line is drawn in
-LABEL_GAP = 14.0  # points between two names at the lines' ends: an 8-point line of text (~9.4 pt tall) and air
-# enough that two names never read as one (reader r20c: "y" and "z" 11 points apart nearly touched)
+LABEL_GAP = 18.0  # points between two names at the lines' ends: an 8-point line of text (~9.4 pt tall) and air
+# enough that two names never read as one (reader r20c: "y" and "z" 11 points apart nearly touched; r23b: at 14 they
+#   still crowded each other, their leaders meeting)
 
 
 def _spread(heights: np.ndarray, gap: float) -> np.ndarray:

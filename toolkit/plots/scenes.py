@@ -22,6 +22,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.gridspec import SubplotSpec
 from matplotlib.patches import Patch
+from mpl_toolkits.mplot3d import proj3d
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
@@ -72,7 +73,8 @@ def scene_still(
     """A viewer's 3D scene as a still picture: the whole workspace, its blocks, the ``samples`` at their base
     (``(points (N, 3), {kind: mask (N,)})``, kinds as :func:`toolkit.viewer.drawing.sample_kinds` names them: circles
     valid, diamonds in collision, sparkles round them where a model is wrong), the ``trace (T, 3)`` of the robot's
-    base along a path (dashed) and the robot drawn over them at each pose, labelled; and the robot close up at each pose
+    base along a path (dashed) and the robot drawn over them at each pose, labelled (a single pose ringed, its name
+    beside the region: :func:`_ring_the_robot`); and the robot close up at each pose
     ``{label: q (dof,)}`` (:func:`toolkit.plots.still_panels.close_up`: opaque links in the valid colour, or the
     invalid one hatched, by ``valid``; its joints dotted; the blocks within ``margin``, those near a link darker), with
     the samples inside its window and the trace; where a ``model`` gives a pose's ``(P(valid), predicted valid)``,
@@ -98,6 +100,8 @@ def scene_still(
     panels = [fig.add_subplot(cell, projection="3d") for cell in cells]  # the overview's a whole row: stars show
     named = {_overview_name(label, len(poses), valid.get(label)): (q, colors[label]) for label, q in poses.items()}
     overview(panels.pop(2 * first), robot, workspace, named, samples, trace)  # two close-ups a row before it
+    if len(poses) == 1:
+        _ring_the_robot(fig.axes[2 * first], robot, workspace, views[0][1])
     # pose -> (samples drawn in its close-up, blocks near it, the camera's elevation and azimuth)
     seen: dict[str, tuple[int, int, tuple[float, float]]] = {}
     for ax, (label, q, turn) in zip(panels, views):
@@ -115,6 +119,36 @@ def scene_still(
         robot, workspace, poses, valid, samples, trace, seen, model or {}, views[-1][2] if views else 0.0
     )
     return describe(fig, *described)
+
+
+def _ring_the_robot(ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray) -> None:
+    """A single pose's overview: a ring round the robot at ``q (dof,)`` and its name moved out of the region, left
+    of it at the robot's height (the right holds the y and z axes' ticks), a leader from the name to the ring (reader
+    r23b: in a cube of 123 blocks the robot, about 10 px tall, was hard to find, and its name over it sat on marks)."""
+    (label,) = [text for text in ax.texts if text.get_gid() == "pose label"]
+    centre = robot.link_aabbs(np.asarray(q, dtype=float)[None])[0].mean(axis=(0, 1))  # (3,) the links' boxes' middle
+    ax.scatter(*centre[:, None], s=(2 * RING_PT) ** 2, depthshade=False, zorder=8.0, gid="robot ring", **RING_STYLE)
+    x, y, _ = proj3d.proj_transform(*centre, ax.get_proj())  # where the robot is drawn, in the panel's 2D data
+    corners = np.array(np.meshgrid(*np.stack([workspace.lower, workspace.upper], axis=1))).reshape(3, -1)  # (3, 8)
+    sides, _, _ = proj3d.proj_transform(*corners, ax.get_proj())  # (8,) the region's corners, across the panel
+    ax.annotate(
+        label.get_text().replace(", ", ",\n"),  # "the robot,\nin collision": narrow, in the margin
+        (x, y),
+        xytext=(sides.min() - RING_PAD * np.ptp(sides), y),
+        ha="right",
+        va="center",
+        fontsize=9,
+        zorder=8.0,
+        path_effects=halo(1.0, ("free",)),
+        arrowprops=dict(arrowstyle="-", color=COLORS["ink"], linewidth=0.8, shrinkA=2.0, shrinkB=RING_PT),
+        gid="pose label",
+    ).set_in_layout(False)  # beside the region, maybe past the panel's side: the layout leaves the panels be
+    label.remove()
+
+
+RING_PT = 14.0  # points: the radius of the ring round a single robot in its still's overview
+RING_STYLE = dict(marker="o", facecolors="none", edgecolors=COLORS["ink"], linewidths=1.6)
+RING_PAD = 0.02  # of the region's width as drawn: the robot's name this far out from its side
 
 
 def _overview_name(label: str, poses: int, valid: bool | None) -> str:
@@ -154,7 +188,7 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
     text += ", a thin line from each pose straight down to the floor" if poses else ""
     if poses:
         text += ", the robot drawn " + ("over them" if samples is not None else "in it")
-        text += " at each pose, labelled" if len(poses) > 1 else ""
+        text += " at each pose, labelled" if len(poses) > 1 else ", ringed, its name beside the workspace"
     counted = [("blocks", str(len(workspace.boxes)))]
     counted += [(f"samples {kind}", str(int(m.sum()))) for kind, m in (samples[1].items() if samples else ())]
     counted += [("points of the base's path", str(len(trace)))] if trace is not None else []
