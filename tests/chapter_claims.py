@@ -669,7 +669,7 @@ def _slow_checker(nb, facts: checker_scope.SlowChecker | None = None) -> list[st
     summary) says the sampling stage saved time only where every recorded cell did, and says each query's total
     time was a tie (or shorter, or longer) only where every recorded median says so, never another verdict's words."""
     facts = checker_scope.slow_checker() if facts is None else facts
-    said = " ".join(checker_scope.slow_sentence(facts).split())
+    said = " ".join(checker_scope.slow_sentence(facts, ranges=False).split())
     outputs = texts(nb)
     problems = []
     if not outputs or said not in outputs[0]:

@@ -212,7 +212,9 @@ CLAIM_STATUS = findings.claim_status(  # the paper's claim from the recorded run
     {NAMES[key]: recorded.median_ratios("strong")[key]["total"] for key in ("2ds", "3dc7")},
 )
 
-SLOW = checker_scope.slow_sentence(checker_scope.slow_checker())  # python-fcl on both sides, as the chapter prints it
+SLOW = checker_scope.slow_sentence(
+    checker_scope.slow_checker(), ranges=False
+)  # python-fcl on both sides, as the chapter prints it
 
 
 def slow_unsaid(facts: checker_scope.SlowChecker) -> list[str]:

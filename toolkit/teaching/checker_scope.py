@@ -90,9 +90,10 @@ def _counted(verdicts: Counter) -> str:
     )
 
 
-def slow_sentence(facts: SlowChecker) -> str:
+def slow_sentence(facts: SlowChecker, ranges: bool = True) -> str:
     """One sentence, the checker named first: what the accurate network did inside Algorithm 1 with python-fcl on
-    both sides, the sampling stage by Table 3's means beside the paper's, the total by each query's own ratio."""
+    both sides, the sampling stage by Table 3's means beside the paper's, the total by each query's own ratio;
+    ``ranges``: the ranges of the totals in parentheses (chapter 04's answer leaves them out, review r24a)."""
     where = " and ".join(facts.scenarios) if len(facts.scenarios) < 3 else ", ".join(facts.scenarios)
     sampling = facts.sampling_verdicts()
     if sampling[SAVES] == len(facts.sampling):
@@ -101,11 +102,15 @@ def slow_sentence(facts: SlowChecker) -> str:
         stage = f"saved sampling time (Table 3's means) in {sampling[SAVES]} of {len(facts.sampling)} cells"
     own = facts.own
     total = _counted(facts.total_verdicts())
-    return (
+    said = (
         f"With a slow exact checker on both sides (python-fcl, {where}; 100 recorded queries a scenario), our accurate "
-        f"network {stage} (the paper's Table 3: {_percents(facts.papers_sampling)}), but {total} (the median of each "
-        f"query's own ratio {min(own):.2f}–{max(own):.2f}; Table 3's totals {_percents(facts.totals)}, the paper's "
-        f"{_percents(facts.papers_totals)})."
+        f"network {stage} (the paper's Table 3: {_percents(facts.papers_sampling)}), but {total}"
+    )
+    if not ranges:
+        return said + "."
+    return (
+        f"{said} (the median of each query's own ratio {min(own):.2f}–{max(own):.2f}; Table 3's totals "
+        f"{_percents(facts.totals)}, the paper's {_percents(facts.papers_totals)})."
     )
 
 
@@ -150,7 +155,7 @@ def answer(tables: Tables | None = None) -> str:
     facts = slow_checker(tables)
     return (
         f"1. {findings.claim_status(eager, lazy)}\n"
-        f"2. {slow_sentence(facts)} {like_for_like(facts)}\n"
+        f"2. {slow_sentence(facts, ranges=False)} {like_for_like(facts)}\n"
         f"3. {why_sentence(tables)}"
     )
 
