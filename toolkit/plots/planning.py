@@ -208,7 +208,14 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
         ax.scatter(S[mask, 0], S[mask, 1], label=f"{label}: {mask.sum()}", clip_on=False, **style)
         within = OVERLAP * float(np.linalg.norm(exact.robot.upper - exact.robot.lower))
         for (x, y), n in overlapping(S[mask], within):
-            ax.annotate(f"{n}×", (x, y), xytext=(4, 3), textcoords="offset points", fontsize=8, path_effects=halo(1.5))
+            ax.annotate(
+                f"{n}×",
+                (x, y),
+                xytext=(4, 3),
+                textcoords="offset points",
+                fontsize=9,
+                path_effects=halo(1.0, ("free",)),
+            )
     fig.legend(fontsize=9, loc="outside lower center", ncol=2, frameon=False)  # below: never over a sample
     ax.set_title(f"S: {len(S)} uniform attempts", fontsize=10)
     counts = "; ".join(f"{label}: {mask.sum()} (marker {style['marker']})" for mask, style, label in groups)
