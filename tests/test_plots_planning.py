@@ -103,6 +103,16 @@ def test_sample_sets_marks_accepted_samples_that_are_truly_in_collision(exact, r
     assert rejected.get_sizes()[0] >= 20 and palette.contrast("rejected", "c_obstacle") >= 4.5  # seen on a block
 
 
+def test_sample_sets_counts_markers_that_lie_on_one_another(exact):
+    """Review r24a: two rejected attempts at one spot read as one cross beside the legend's count."""
+    assert [(list(p), n) for p, n in planning.overlapping(np.array([[1.0, 1.0], [5.0, 5.0], [1.1, 1.0]]), 0.5)] == [
+        ([1.0, 1.0], 2)
+    ]
+    S = np.array([[20.0, 20.0], [20.1, 20.05], [5.0, 25.0]])
+    ax = planning.sample_sets(exact, S, np.zeros(3, bool)).axes[0]
+    assert [t.get_text() for t in ax.texts] == ["2×"]
+
+
 def a_repair_step() -> PlanStep:
     """Five nodes in a row from start (0) to goal (1); the path 0-2-3-4-1; the repair removes node 3 and edge 1."""
     nodes = np.array([[2.0, 2.0], [12.0, 2.0], [4.0, 3.0], [6.0, 3.0], [9.0, 3.0]])

@@ -171,9 +171,26 @@ def _samples_part(robot, name: str, Q: np.ndarray, blocked: np.ndarray) -> Part:
     return map_part(name, text, counts.shape, x, y, cell)
 
 
+OVERLAP = 0.015  # two markers closer than this share of the C-space's diagonal are drawn as one (review r24a)
+
+
+def overlapping(points: np.ndarray, within: float) -> list[tuple[np.ndarray, int]]:
+    """Groups of ``points (N, 2)`` closer than ``within`` to one another, each as (its first point, how many): the
+    markers a reader would count as one (review r24a: 4 crosses seen beside the legend's "rejected: 5")."""
+    left, groups = list(range(len(points))), []
+    while left:
+        first = left.pop(0)
+        near = [i for i in left if np.linalg.norm(points[i] - points[first]) < within]
+        left = [i for i in left if i not in near]
+        if near:
+            groups.append((points[first], 1 + len(near)))
+    return groups
+
+
 def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) -> Figure:
     """Algorithm 1, lines 2-3: the attempts ``S (N, 2)``, the ones a checker accepts (``accepted (N,)`` bool: S'),
-    and among those the ones the exact checker rejects (the dangerous mistakes: large X in the invalid colour)."""
+    and among those the ones the exact checker rejects (the dangerous mistakes: large X in the invalid colour);
+    markers that lie on one another (:func:`overlapping`) carry their count ("2×")."""
     truly_valid = exact.are_valid(S)
     fig = Figure(figsize=(4.6, 5.4), layout="constrained")
     ax = fig.subplots()
@@ -189,6 +206,16 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
     ]
     for mask, style, label in groups:  # whole at the edges of the C-space too
         ax.scatter(S[mask, 0], S[mask, 1], label=f"{label}: {mask.sum()}", clip_on=False, **style)
+        within = OVERLAP * float(np.linalg.norm(exact.robot.upper - exact.robot.lower))
+        for (x, y), n in overlapping(S[mask], within):
+            ax.annotate(
+                f"{n}×",
+                (x, y),
+                xytext=(4, 3),
+                textcoords="offset points",
+                fontsize=9,
+                path_effects=halo(1.0, ("free",)),
+            )
     fig.legend(fontsize=9, loc="outside lower center", ncol=2, frameon=False)  # below: never over a sample
     ax.set_title(f"S: {len(S)} uniform attempts", fontsize=10)
     counts = "; ".join(f"{label}: {mask.sum()} (marker {style['marker']})" for mask, style, label in groups)

@@ -41,7 +41,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
 
     Each panel has its own scale, set by its bars: a whisker reaching past :data:`CUT` times the tallest bar (one
     slow query's spread would flatten every bar) is cut at the panel's top, a triangle there and its end written
-    over it, above the frame (the pair's ratio a line higher)."""
+    beside it, inside the frame (the pair's ratio above the frame)."""
     fig = Figure(figsize=(PAGE_WIDTH, 3.7 * len(panels) + 0.8))  # one panel a row, as wide as a chapter's column
     axes = fig.subplots(len(panels), 1, squeeze=False)[:, 0]
     said, parts = [], []
@@ -158,8 +158,8 @@ def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndar
     beside = x + BAR / 2 + 0.035  # (samplers, modes): right of every bar, its own (review r23a: one pair's two
     # whiskers on its outer sides sat next to the neighbouring pair's and were pinned on the wrong bar)
     return quartile_whiskers(
-        ax, beside, table["total_s"], *quartiles, tallest=bottom.max(), label="total: quartiles", end_above=True
-    )
+        ax, beside, table["total_s"], *quartiles, tallest=bottom.max(), label="total: quartiles"
+    )  # a cut whisker's end beside its triangle, inside the frame (review r24a: above it, it read as the ratio's)
 
 
 def quartile_whiskers(
