@@ -4,6 +4,7 @@ read from intervals, saving, costing, tying and "can't tell"; tables that never 
 import numpy as np
 import pytest
 
+from toolkit.experiments import paper_numbers
 from toolkit.teaching import checker_scope, findings
 
 
@@ -245,7 +246,7 @@ def test_table_3_against_the_papers_text_names_the_cells_its_means_do_not_give()
     """Review r17a, by hand from §V's means: 3DO BT total 40.40 -> 43.13 is -6.8 % (Table 3: -8 %), 3DO OB sampling
     1.13 -> 0.56 is 50 % (58 %), 2DS BT sampling 0.26 -> 0.11 is 58 % (74 %); 3DC-7 total BT 0.95 -> 0.44 is 54 % as
     printed, and 2DS G total 0.09 -> 0.09 allows up to 10.5 %, Table 3's 11 % within its own rounding."""
-    differ = findings.table3_against_text()
+    differ = paper_numbers.table3_against_text()
     assert differ["3DO total BT"] == pytest.approx((1 - 43.13 / 40.40, -0.08))
     assert differ["3DO sampling OB"] == pytest.approx((1 - 0.56 / 1.13, 0.58))
     assert differ["2DS sampling BT"] == pytest.approx((1 - 0.11 / 0.26, 0.74))

@@ -6,7 +6,7 @@ save planning time. So three measurements, one function each:
 
 - :func:`throughput` — configurations per second of the default exact checker (compiled for box
   worlds), of the python-fcl reference and of the learned checker, and what a configuration costs the
-  exact checker in the small calls a planner makes (:func:`small_call_cost`);
+  exact checker in the small calls a planner makes (:mod:`toolkit.experiments.small_calls`);
 - :func:`edge_checks` — the exact local planner's edge checks, every point against
   clearance certificates (``local_planner.check_edges`` / ``certify_edges``);
 - :func:`planning_ratios` — PRM with and without prediction, per sampler, on the paper's
@@ -33,6 +33,7 @@ import torch
 
 from toolkit.experiments import queries
 from toolkit.experiments.problems import make_planner, scenario_resolution
+from toolkit.experiments.small_calls import small_call_cost
 from toolkit.geometry.collision import CollisionChecker, FCLChecker, exact_checker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.torch_kernels import TorchChecker
@@ -66,8 +67,6 @@ __all__ = [
     "untrained_models",
     "usable_device",
 ]
-
-SMALL_CALLS = (16, 32, 64)  # configurations a call, as a planner makes them (throughput's exact_small_call_cost)
 
 
 def median_seconds(fn, repeats: int = 5) -> float:
@@ -136,9 +135,9 @@ def throughput(
     (``learned_cfg_per_s``; trained, or :func:`untrained_models`: the speed does not depend on the weights), the
     three timed in turns (:func:`in_turns`) at ``batch`` configurations a call (default: 20,000 exact, 10,000
     learned); ``ratio`` is learned / default exact, ``exact_over_fcl`` the compiled checker's speed-up.
-    ``exact_small_call_cost``: per size in ``SMALL_CALLS``, what a configuration costs the default exact checker in
-    calls of that many over what it costs in the batch (:func:`small_call_cost`'s ``ratios``, timed apart, by the
-    thread's CPU clock: what ``docs/scripts/small_call_cost.py`` prints).
+    ``exact_small_call_cost``: per size in ``small_calls.SMALL_CALLS``, what a configuration costs the default exact
+    checker in calls of that many over what it costs in the batch (:func:`small_call_cost`'s ``ratios``, timed
+    apart, by the thread's CPU clock: what ``docs/scripts/small_call_cost.py`` prints).
 
     With ``device`` (``"cpu"``, ``"cuda"``): the learned checker runs there, and beside it the exact one in torch
     (:class:`~toolkit.geometry.torch_kernels.TorchChecker`), each timed twice: a numpy batch in and out
@@ -255,48 +254,6 @@ def exact_call(
     checker = make(ws, scenario.robot)
     Q = scenario.robot.sample(np.random.default_rng(seed), batch)  # (batch, dof)
     return (lambda: checker.are_valid(Q)), batch
-
-
-def small_call_cost(
-    scenario: Scenario, *, batch: int = 20_000, seed: int = 0, repeats: int = 7, sizes: tuple[int, ...] = SMALL_CALLS
-) -> dict:
-    """What the default exact checker's calls cost by their size, on ``batch`` uniform configurations in a query
-    workspace: each of ``repeats`` rounds times, by the thread's CPU clock, one call of all of them, ``batch`` calls
-    of none, and the same configurations cut in calls of each of ``sizes``, every call's answers dropped as a
-    planner drops them; medians over the rounds, in ns: ``batch_ns`` (a configuration in the batch), ``empty_ns``
-    (a call of none), per size ``call_ns`` (a configuration in calls of that size) and ``ratios`` (that over
-    ``batch_ns``, keyed by the size as a string), and ``fixed_16_ns``: what a call of 16 costs beyond checking 16
-    configurations at the batch's rate (below 16 ``batch_ns``, calls of 16 cost under twice the batch's).
-
-    ``toolkit bench`` (:func:`throughput`'s ``exact_small_call_cost``) and ``docs/scripts/small_call_cost.py``
-    both print this. The CPU clock counts what the call computed, not a wait for a core beside other work."""
-    ws = scenario.workspaces("query", 1, seed)[0]
-    checker, batch = exact_checker(ws, scenario.robot), max(batch, *sizes)  # a call of each size at least
-    Q = scenario.robot.sample(np.random.default_rng(seed), batch)  # (batch, dof)
-    checker.are_valid(Q)  # compiled, or loaded from the cache, before anything is timed
-    empty, pieces = Q[:0], {size: [Q[i : i + size] for i in range(0, batch - size + 1, size)] for size in sizes}
-    times: dict = {key: [] for key in ("batch", 0, *sizes)}
-    for _ in range(repeats):
-        start = time.thread_time_ns()
-        checker.are_valid(Q)
-        times["batch"].append((time.thread_time_ns() - start) / batch)
-        start = time.thread_time_ns()
-        for _ in range(batch):
-            checker.are_valid(empty)
-        times[0].append((time.thread_time_ns() - start) / batch)
-        for size in sizes:
-            start = time.thread_time_ns()
-            for piece in pieces[size]:
-                checker.are_valid(piece)
-            times[size].append((time.thread_time_ns() - start) / (len(pieces[size]) * size))
-    cost = {key: float(np.median(values)) for key, values in times.items()}
-    return {
-        "batch_ns": cost["batch"],
-        "empty_ns": cost[0],
-        "call_ns": {str(size): cost[size] for size in sizes},
-        "ratios": {str(size): cost[size] / cost["batch"] for size in sizes},
-        "fixed_16_ns": 16 * (cost[16] - cost["batch"]) if 16 in sizes else None,
-    }
 
 
 def learned_call(

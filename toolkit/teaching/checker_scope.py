@@ -253,18 +253,6 @@ def section_6(this_run: dict[str, float], tables: Tables | None = None) -> list[
     inside = recorded.median_ratios(recorded.ALGORITHM_1, tables)
     ours_sampling = [r for key in inside for r in inside[key]["sampling"].values()]
     papers_saved = [IMPROVEMENT[key]["sampling"][s] for _, key in SCENARIOS_4 for s in IMPROVEMENT[key]["sampling"]]
-    mlp = recorded.table("paper", "MLP accuracy", tables)  # docs/results.md, Table 2: the paper preset's MLP
-    columns = ("Unseen TPR", "Unseen TNR", "Unseen Acc", "Unseen always valid")
-    rates = {name: {c: recorded.ours(mlp[key][c]) for c in columns} for name, key in SCENARIOS_4}
-    balanced = [recorded.ours(mlp[key]["Balanced unseen Acc"]) for _, key in SCENARIOS_4]  # half the samples valid
-    throughput = {p: recorded.table(p, "Checker throughput", tables) for p in ("paper", "strong", recorded.ALGORITHM_1)}
-    costs = {
-        **{
-            f"`{preset}` run": {name: 1 / recorded.ours(rows[key]["learned / exact"]) for name, key in SCENARIOS_4}
-            for preset, rows in throughput.items()
-        },
-        "this run (section 4)": this_run,
-    }
     more = [
         "**Against Algorithm 1, by means.** Total time with / without prediction, 100 queries a scenario, by means "
         "(Table 3's statistic as we read it): the paper's Table 3, the reproduction's `paper` preset and our accurate "
@@ -284,20 +272,8 @@ def section_6(this_run: dict[str, float], tables: Tables | None = None) -> list[
         + f"\n\nThe paper's Table 3 has sampling {min(papers_saved):.0%} to {max(papers_saved):.0%} shorter with "
         "prediction; in our run with the fast checker the median sampling time with the accurate network was "
         f"{min(ours_sampling):.2f} to {max(ours_sampling):.2f} times the median without.",
-        "The `paper` preset's MLP on unseen workspaces, on the validity-blind samples the paper describes "
-        "(`docs/results.md`, Table 2's *Unseen* columns; on balanced samples, half of them valid, the same MLP is "
-        f"right {min(balanced):.0%} to {max(balanced):.0%} of the time, its *Balanced unseen* column):\n\n"
-        '| scenario | keeps valid<br>(TPR) | rejects colliding<br>(TNR) | accuracy / "valid" to all '
-        "| what it<br>answers |\n| --- | ---: | ---: | ---: | --- |\n"
-        + "\n".join(
-            f"| {name} | {r['Unseen TPR']:.0%} | {r['Unseen TNR']:.0%} | {r['Unseen Acc']:.0%} / "
-            f"{r['Unseen always valid']:.0%} | {_answers(r['Unseen TPR'], r['Unseen TNR'])} |"
-            for name, r in rates.items()
-        ),
-        "A network call's cost per configuration over the default exact check's (below 1 the network is the cheaper "
-        "check; within 25 % of 1, too close to tell): the recorded runs (`docs/results.md`'s throughput tables; the "
-        "network's cost, and so this ratio, moves from run to run and machine to machine) and this run's section "
-        "4:\n\n" + findings.cost_table(costs),
+        _paper_mlp(tables),
+        _call_costs(this_run, tables),
     ]
     return [
         "**The answer's table.** Total time with / without prediction inside the paper's Algorithm 1, 100 queries a "
@@ -308,6 +284,44 @@ def section_6(this_run: dict[str, float], tables: Tables | None = None) -> list[
         "<details><summary>More tables: the same runs by means, the `paper` preset, the lazy PRM, the sampling stage, "
         "the `paper` MLP's accuracy, and what a network call cost</summary>\n\n" + "\n\n".join(more) + "\n\n</details>",
     ]
+
+
+def _paper_mlp(tables: Tables | None = None) -> str:
+    """The `paper` preset's MLP on unseen workspaces (docs/results.md, Table 2), a Markdown block."""
+    mlp = recorded.table("paper", "MLP accuracy", tables)
+    columns = ("Unseen TPR", "Unseen TNR", "Unseen Acc", "Unseen always valid")
+    rates = {name: {c: recorded.ours(mlp[key][c]) for c in columns} for name, key in SCENARIOS_4}
+    balanced = [recorded.ours(mlp[key]["Balanced unseen Acc"]) for _, key in SCENARIOS_4]  # half the samples valid
+    return (
+        "The `paper` preset's MLP on unseen workspaces, on the validity-blind samples the paper describes "
+        "(`docs/results.md`, Table 2's *Unseen* columns; on balanced samples, half of them valid, the same MLP is "
+        f"right {min(balanced):.0%} to {max(balanced):.0%} of the time, its *Balanced unseen* column):\n\n"
+        '| scenario | keeps valid<br>(TPR) | rejects colliding<br>(TNR) | accuracy / "valid" to all '
+        "| what it<br>answers |\n| --- | ---: | ---: | ---: | --- |\n"
+        + "\n".join(
+            f"| {name} | {r['Unseen TPR']:.0%} | {r['Unseen TNR']:.0%} | {r['Unseen Acc']:.0%} / "
+            f"{r['Unseen always valid']:.0%} | {_answers(r['Unseen TPR'], r['Unseen TNR'])} |"
+            for name, r in rates.items()
+        )
+    )
+
+
+def _call_costs(this_run: dict[str, float], tables: Tables | None = None) -> str:
+    """A network call's cost over the exact check's, per recorded run and ``this_run``, a Markdown block."""
+    throughput = {p: recorded.table(p, "Checker throughput", tables) for p in ("paper", "strong", recorded.ALGORITHM_1)}
+    costs = {
+        **{
+            f"`{preset}` run": {name: 1 / recorded.ours(rows[key]["learned / exact"]) for name, key in SCENARIOS_4}
+            for preset, rows in throughput.items()
+        },
+        "this run (section 4)": this_run,
+    }
+    return (
+        "A network call's cost per configuration over the default exact check's (below 1 the network is the cheaper "
+        "check; within 25 % of 1, too close to tell): the recorded runs (`docs/results.md`'s throughput tables; the "
+        "network's cost, and so this ratio, moves from run to run and machine to machine) and this run's section "
+        "4:\n\n" + findings.cost_table(costs)
+    )
 
 
 def ratio_panels(this_run: dict[str, dict], tables: Tables | None = None) -> dict[str, dict[str, dict[str, float]]]:

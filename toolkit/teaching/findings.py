@@ -13,11 +13,10 @@ from __future__ import annotations
 
 from collections import Counter
 from collections.abc import Mapping
-from decimal import Decimal
 
 import numpy as np
 
-from toolkit.experiments.paper_numbers import IMPROVEMENT, TIMES
+from toolkit.experiments.paper_numbers import IMPROVEMENT, table3_against_text
 from toolkit.learning import metrics
 from toolkit.util.verdicts import (  # noqa: F401 (the words and bands; chapters and tests read them here too)
     CHEAPER,
@@ -377,24 +376,9 @@ def describe_threshold_sweep(probability: np.ndarray, valid: np.ndarray) -> str:
     )
 
 
-def table3_against_text() -> dict[str, tuple[float, float]]:
-    """Table 3's cells that the mean times of the paper's text (§V, printed to two decimals or more) do not give
-    within rounding (of either): ``{"3DO total BT": (-0.068, -0.08)}``, the improvement they give and Table 3's."""
-    names, differ = {"2ds": "2DS", "3do": "3DO", "3dc7": "3DC-7", "3dc9": "3DC-9"}, {}
-    for scenario, kind, (sampler, printed) in (
-        (s, k, c) for s in IMPROVEMENT for k in IMPROVEMENT[s] for c in IMPROVEMENT[s][k].items()
-    ):
-        (without, _), (with_, _) = TIMES[scenario][f"{kind}_s"][sampler]
-        a, b = (0.5 * 10.0 ** -max(2, -int(Decimal(repr(t)).as_tuple().exponent)) for t in (without, with_))
-        low, high = 1 - (with_ + b) / (without - a), 1 - (with_ - b) / (without + a)  # a, b: half the last digit
-        if high < printed - 0.005 or low > printed + 0.005:  # Table 3 prints whole percent
-            differ[f"{names[scenario]} {kind} {sampler}"] = (1 - with_ / without, printed)
-    return differ
-
-
 def table3_sentence() -> str:
     """In how many of Table 3's cells the text's mean times give its percentage, and what they give in the others
-    (:func:`table3_against_text`)."""
+    (:func:`~toolkit.experiments.paper_numbers.table3_against_text`)."""
     differ, cells = table3_against_text(), sum(len(row) for kinds in IMPROVEMENT.values() for row in kinds.values())
     listed = "; ".join(f"{cell}: {given:.0%}, Table 3 {printed:.0%}" for cell, (given, printed) in differ.items())
     return (
