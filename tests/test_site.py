@@ -419,6 +419,9 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     said = f"Yet it tied a whole query's time in {ties} of {len(own)} cells and saved it in {len(fell)} {spread}, by "
     assert said + "each query's own ratio." in answer
     assert ties + len(fell) == len(own)  # none lost, as the table's row says
+    assert min(saved) > 0 and f"saved sampling time in every cell, a whole query's in only {len(fell)} of 16" in (
+        flat_readme()
+    )  # "What we found"
     assert f"Sampling was only {percents(shares, digits=1)} of a query's time without the network" in answer
     # its throughput against python-fcl and each cell beside Table 3: docs/benchmarks.md (tests/test_benchmarks_page)
 
