@@ -1,4 +1,4 @@
-"""The crossover figure shades what its verdicts call "network cheaper", and nothing the list calls "can't tell"."""
+"""The crossover figure shades what its verdicts call "network cheaper" and hatches what they call "can't tell"."""
 
 from pathlib import Path
 
@@ -8,6 +8,7 @@ from matplotlib.collections import PolyCollection
 from toolkit.plots import alt
 from toolkit.plots.alt import alt_text
 from toolkit.plots.crossover import crossover
+from toolkit.util.verdicts import CHEAPER, NEAR
 
 SWEEP = {  # network / exact: 0.5 cheaper, 0.9 can't tell, 1.5 dearer, 0.7 cheaper (the band is 25 %)
     "label": "obstacles per workspace (unit blocks)",
@@ -19,9 +20,10 @@ SWEEP = {  # network / exact: 0.5 cheaper, 0.9 can't tell, 1.5 dearer, 0.7 cheap
 }
 
 
-def shaded_spans(ax) -> list[tuple[float, float]]:
-    """The x-extent of each shaded band of a panel (in data units, rounded)."""
-    bands = [c for c in ax.collections if isinstance(c, PolyCollection)]
+def shaded_spans(ax, verdict: str = CHEAPER) -> list[tuple[float, float]]:
+    """The x-extent of each band of a panel drawn for ``verdict`` (shaded: "network cheaper"; hatched: "can't
+    tell"), in data units, rounded."""
+    bands = [c for c in ax.collections if isinstance(c, PolyCollection) and c.get_gid() == verdict]
     xs = [np.asarray(b.get_paths()[0].vertices)[:, 0] for b in bands]  # each band's outline, x only
     return [(round(float(x.min()), 3), round(float(x.max()), 3)) for x in xs]
 
@@ -35,10 +37,15 @@ def test_only_the_points_whose_verdict_is_network_cheaper_are_shaded():
         (round(np.sqrt(1e7), 3), round(1e4 * np.sqrt(10), 3)),
     ]
     assert "shaded: network cheaper by > 25%" in [t.get_text() for t in fig.legends[0].get_texts()]
-    assert "shaded where the network is cheaper by > 25%" in fig.get_suptitle()  # reader r23a: the rule, on the figure
+    assert "shaded: network cheaper by > 25%;" in fig.get_suptitle()  # reader r23a: the rule, on the figure
+    assert shaded_spans(ax, NEAR) == [(round(np.sqrt(10 * 100), 3), round(np.sqrt(100 * 1000), 3))]  # 0.9 at 100
+    assert "hatched: within 25% of the exact check, can't tell" in [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "hatched: within 25%, can't tell" in fig.get_suptitle()  # reader r24c: the can't-tell band drawn
     assert "3DC-9" in fig.get_suptitle()  # the site's name of the scenario, not its key
     zorder = {line.get_label(): line.get_zorder() for line in ax.lines}
-    assert zorder["exact, default (compiled)"] > zorder["learned (the network)"]  # reader r23a: drawn over the network
+    exact, learned = (next(k for k in zorder if k.startswith(w)) for w in ("exact, compiled", "learned"))
+    assert zorder[exact] > zorder[learned]  # reader r23a: drawn over the network
+    assert "on triangles: the compiled mesh checker" in exact  # reader r24c: the mesh panel's checker named
     assert "cheaper by more than 25% at 10, 10,000." in alt_text(fig)
 
 
@@ -46,10 +53,23 @@ def test_a_panel_where_the_network_is_never_cheaper_beyond_the_band_has_no_shadi
     close = {**SWEEP, "learned_us": [1.8, 0.9, 1.2, 1.1]}  # 0.9, 0.9, 1.2, 1.1: all within 25 %
     fig = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"obstacles": close}})
     assert shaded_spans(fig.axes[0]) == []
+    assert len(shaded_spans(fig.axes[0], NEAR)) == 4  # each point within the band, hatched
     assert "never cheaper by more than 25%." in alt_text(fig)
     legend = [t.get_text() for t in fig.legends[0].get_texts()]
     assert "shaded: network cheaper by > 25% (nowhere here)" in legend  # reader r23a: the rule, where nothing meets it
-    assert fig.get_suptitle().endswith("by > 25%: nowhere here")
+    assert "shaded: network cheaper by > 25% (nowhere here);" in fig.get_suptitle()
+
+
+def test_the_title_says_when_the_sweep_was_measured_and_ticks_name_tenths_of_a_microsecond():
+    """Reader r24c: the figure's date was in the caption alone, and no tick named the network's 0.27-0.43 µs."""
+    fig = crossover(
+        {"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"obstacles": SWEEP}},
+        measured="5 December 2026, 15:37 UTC",
+    )
+    assert "measured 5 December 2026, 15:37 UTC" in fig.get_suptitle()
+    low = {**SWEEP, "exact_us": [0.09, 0.1, 0.12, 0.14], "learned_us": [0.3] * 4, "fcl_us": [5, 50, 500, 900]}
+    ax = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"obstacles": low}}).axes[0]
+    assert {"0.1", "0.2", "0.5"} <= {t.get_text() for t in ax.get_yticklabels()}  # four decades: 1-2-5 below 1
 
 
 def test_a_tick_label_that_would_touch_its_neighbour_is_left_out_and_the_last_is_always_named():
@@ -119,7 +139,7 @@ def test_every_crossing_is_marked_and_said_each_label_apart():
     first, second = (t.get_window_extent() for t in ax.texts)
     assert [t.get_text() for t in ax.texts] == ["about 32 obstacles", "about 3,162 obstacles"]  # a count: whole
     assert first.y1 <= second.y0 or second.y1 <= first.y0 or first.x1 <= second.x0 or second.x1 <= first.x0
-    assert "crosses the exact, default (compiled) one at 31.6 and at 3,160." in str(alt.details(fig))
+    assert "crosses the exact, default (compiled) one at 31.6 and at 3,160." in str(alt.details(fig))  # short names
 
 
 def test_the_recorded_crossover_names_every_measured_value():

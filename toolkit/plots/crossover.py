@@ -12,6 +12,8 @@ Nothing here calls ``show()``.
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch
@@ -19,20 +21,27 @@ from matplotlib.ticker import NullFormatter, NullLocator
 
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
-from toolkit.util.verdicts import CHEAPER, CLOSE, cost_verdict
+from toolkit.util.verdicts import CHEAPER, CLOSE, NEAR, cost_verdict
 
-STYLES = {  # checker -> (marker and line, colour, legend)
+STYLES = {  # checker -> (marker and line, colour, name)
     "exact": ("o-", COLORS["exact"], "exact, default (compiled)"),
-    "fcl": ("s--", COLORS["fcl"], "exact, python-fcl (a mesh: + numpy inside test)"),
+    "fcl": ("s--", COLORS["fcl"], "exact, python-fcl"),
     "learned": ("^-", COLORS["learned"], "learned (the network)"),
+}
+LEGEND = {  # checker -> its legend's words; reader r24c: which checker the mesh panel times is said
+    "exact": "exact, compiled (on triangles: the compiled mesh checker)",
+    "fcl": "exact, python-fcl (on triangles: FCL's mesh tree + a numpy inside test)",
+    "learned": "learned: the network (untrained, of the preset's sizes)",
 }
 
 
-def crossover(results: dict) -> Figure:
+def crossover(results: dict, measured: str | None = None) -> Figure:
     """One panel per swept variable: cost per configuration of the default exact checker, of python-fcl and of
     the learned checker against the variable; shaded where the network is cheaper than the default exact check
-    by more than :data:`~toolkit.util.verdicts.CLOSE` (the verdict "network cheaper"), a dotted vertical line at
-    every value where the network's curve crosses an exact one (its value beside it)."""
+    by more than :data:`~toolkit.util.verdicts.CLOSE` (the verdict "network cheaper"), hatched where the two are
+    within it ("can't tell"), a dotted vertical line at every value where the network's curve crosses an exact one
+    (its value beside it). ``measured`` (else ``results["measured"]``, if any), when the sweep was timed, goes in the
+    title, so that a figure read beside later measurements says its date."""
     sweeps = results["variables"]
     columns = min(len(sweeps), 2)
     rows = -(-len(sweeps) // columns)
@@ -43,16 +52,20 @@ def crossover(results: dict) -> Figure:
     for ax in axes[len(sweeps) :]:
         ax.set_visible(False)
     quick = " (quick sizes)" if results.get("quick") else ""
+    measured = measured or results.get("measured")
+    when = f", measured {measured}" if measured else ""
     shaded = any(_cheaper(sweep).any() for sweep in sweeps.values())
-    said = f"shaded where the network is cheaper by > {CLOSE:.0%}"
+    said = f"shaded: network cheaper by > {CLOSE:.0%}"
     fig.suptitle(
-        f"Cost per check, exact and learned: {scenario_name(results['scenario'])}, preset {results['preset']}{quick}"
-        f"\n{said}{'' if shaded else ': nowhere here'}",
+        f"Cost per check: {scenario_name(results['scenario'])}, preset {results['preset']}{quick}{when}"
+        f"\n{said}{' (nowhere here)' if not shaded else ''}; hatched: within {CLOSE:.0%}, can't tell",
         fontsize=11,
     )
     handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # one legend, below
     if not shaded:  # the rule stays in the legend where nothing meets it (reader r23a: no shading, no rule)
         handles[f"{SHADED} (nowhere here)"] = Patch(color=COLORS["learned"], alpha=0.2, lw=0)
+    if HATCHED not in handles:  # reader r24c: the can't-tell band is a verdict too, drawn or said to be nowhere
+        handles[f"{HATCHED} (nowhere here)"] = Patch(**HATCH)
     fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=1, fontsize=9, frameon=False)
     room = (0, (0.2 * len(handles) + 0.2) / fig.get_figheight(), 1, 1)  # below: a line a legend entry
     fig.tight_layout(rect=room)
@@ -66,6 +79,8 @@ def crossover(results: dict) -> Figure:
 
 
 SHADED = f"shaded: network cheaper by > {CLOSE:.0%}"  # the legend's words for a shaded band
+HATCHED = f"hatched: within {CLOSE:.0%} of the exact check, can't tell"  # and for a band where the two are too close
+HATCH: dict[str, Any] = dict(facecolor="none", edgecolor=COLORS["exact"], hatch="//", alpha=0.35, lw=0)  # its look
 
 
 def scenario_name(key: str) -> str:
@@ -111,16 +126,22 @@ def _panel(ax, sweep: dict) -> None:
     x = np.asarray(sweep["values"], dtype=float)
     cheaper = _cheaper(sweep)  # (V,) beyond the band
     for name in ("exact", "fcl", "learned"):
-        style, colour, label = STYLES[name]
+        style, colour, _ = STYLES[name]
         y = np.asarray(sweep[f"{name}_us"], float)  # (V,)
-        ax.plot(x, y, style, color=colour, label=label, clip_on=False, **MARKS[name])  # edge markers whole
+        ax.plot(x, y, style, color=colour, label=LEGEND[name], clip_on=False, **MARKS[name])  # edge markers whole
     bounds = _halfway(x)  # (V+1,)
     for n, i in enumerate(np.flatnonzero(cheaper)):  # a band round each value the verdict calls "network cheaper"
         legend = SHADED if n == 0 else None
         span = bounds[i : i + 2]  # (2,) its band: the panel's whole height (a shaded area, not a mark)
-        ax.fill_between(
+        band = ax.fill_between(
             span, 0, 1, transform=ax.get_xaxis_transform(), color=COLORS["learned"], alpha=0.2, lw=0, label=legend
         )
+        band.set_gid(CHEAPER)
+    for n, i in enumerate(np.flatnonzero(_close(sweep))):  # reader r24c: and each value it calls "can't tell"
+        band = ax.fill_between(
+            bounds[i : i + 2], 0, 1, transform=ax.get_xaxis_transform(), label=HATCHED if n == 0 else None, **HATCH
+        )
+        band.set_gid(NEAR)
     unit = sweep["label"].split()[0]  # what the variable counts: "243 obstacles", not a bare "243"
     found = sorted((value, name) for name in ("exact", "fcl") for value in _crossings(sweep, name))
     for k, (value, name) in enumerate(found):  # each one's words a line lower than the last's: never on each other
@@ -177,11 +198,12 @@ def _crossings(sweep: dict, name: str) -> list[float]:
 
 def _plain_log_ticks(ax) -> None:
     """The y axis labelled in plain numbers at 1-2-5 steps (0.2, 0.5, 1, 2, ...) where it spans under three decades,
-    at each decade otherwise: the decade where curves cross is never left without a number."""
+    at each decade otherwise, and at 1-2-5 steps below 1 µs always: the decade where curves cross is never left
+    without a number, nor the network's and the compiled check's few tenths of a µs (reader r24c)."""
     lo, hi = ax.get_ylim()
     steps = (1, 2, 5) if hi / lo < 10**2.5 else (1,)
     decades = range(int(np.floor(np.log10(lo))), int(np.ceil(np.log10(hi))) + 1)
-    ticks = [m * 10.0**e for e in decades for m in steps if lo <= m * 10.0**e <= hi]
+    ticks = [m * 10.0**e for e in decades for m in (steps if e >= 0 else (1, 2, 5)) if lo <= m * 10.0**e <= hi]
     ax.set_yticks(ticks, [f"{t:g}" for t in ticks])
 
 
@@ -189,6 +211,12 @@ def _cheaper(sweep: dict) -> np.ndarray:
     """``(V,)`` bool: where the verdict is "network cheaper" (beyond the band, against the default exact check)."""
     ratio = np.asarray(sweep["learned_us"], float) / np.asarray(sweep["exact_us"], float)  # (V,)
     return np.array([cost_verdict(float(r)) == CHEAPER for r in ratio])
+
+
+def _close(sweep: dict) -> np.ndarray:
+    """``(V,)`` bool: where the verdict is "can't tell" (within the band of the default exact check's cost)."""
+    ratio = np.asarray(sweep["learned_us"], float) / np.asarray(sweep["exact_us"], float)  # (V,)
+    return np.array([cost_verdict(float(r)) == NEAR for r in ratio])
 
 
 def _halfway(x: np.ndarray) -> np.ndarray:
