@@ -71,15 +71,16 @@ def _broken(along: np.ndarray, scaled: np.ndarray) -> tuple[np.ndarray, np.ndarr
     across the panel): the line goes on to the edge it crosses, where the angle reaches ±π, breaks (a NaN) and comes
     back in at the other edge. Each piece is a line, the one frame before or after a wrap too (reader r23b: a lone
     marker for it read as an outlier)."""
-    x, y = [along[:1]], [scaled[:1]]
+    x: list[np.ndarray] = [along[:1]]
+    y: list[np.ndarray] = [scaled[:1]]
     for t in range(len(scaled) - 1):
         a, b = scaled[t], scaled[t + 1]
         if abs(b - a) > 0.5:  # through the top edge (1 = π, on from 0) or the bottom one
             top = b < a
             share = (1.0 - a) / (1.0 - a + b) if top else a / (a + 1.0 - b)  # of the step, to the edge
             at = along[t] + share * (along[t + 1] - along[t])
-            x.append([at, np.nan, at])
-            y.append([1.0, np.nan, 0.0] if top else [0.0, np.nan, 1.0])
+            x.append(np.array([at, np.nan, at]))
+            y.append(np.array([1.0, np.nan, 0.0] if top else [0.0, np.nan, 1.0]))
         x.append(along[t + 1 : t + 2])
         y.append(scaled[t + 1 : t + 2])
     return np.concatenate(x), np.concatenate(y)  # (T + 3 w,) each
