@@ -135,8 +135,9 @@ def time_tables() -> str:
 
 
 def _row(label: str, scores: Mapping[str, float], bold: bool = False, digits: int = 0) -> str:
-    """A table row: label, then accuracy, TPR and TNR of ``scores`` to ``digits`` (bold when ``bold``)."""
-    cells = [f"{scores[key]:.{digits}%}" for key in ("acc", "tpr", "tnr")]
+    """A table row: label, then accuracy, TPR and TNR of ``scores`` to ``digits`` (bold when ``bold``); a TPR or TNR
+    of exactly 0 or 1 (answering "valid" to all) as a whole percent."""
+    cells = [f"{scores[key]:.{0 if scores[key] in (0, 1) else digits}%}" for key in ("acc", "tpr", "tnr")]
     return f"| {label} | " + " | ".join(f"**{c}**" if bold else c for c in cells) + " |"
 
 
@@ -249,3 +250,20 @@ def truth_vs_prediction(
 def paper_table2() -> dict[str, float]:
     """The paper's Table 2 row for 3DC-7, unseen: its MLP's accuracy, TPR and TNR."""
     return dict(paper_numbers.MLP[SCENARIO]["unseen"])
+
+
+def plan_tables(result) -> str:
+    """§6's counts of a planned query (a ``PlanResult``): the path and the roadmap, then who answered how often."""
+    stats = result.stats
+    exactly = stats["exact_checks"] + stats["exact_clearances"]  # point checks and clearance bounds
+    return (
+        "| path found | configurations on the path | rounds | samples drawn | roadmap: nodes / edges |\n"
+        "| --- | ---: | ---: | ---: | ---: |\n"
+        f"| {'yes' if result.success else 'no'} | {len(result.path)} | {stats['rounds']} | {stats['node_checks']} "
+        f"| {stats['nodes']} / {stats['edges']} |\n\n"
+        "| model's answers | exact: checks + bounds | model / exact | repairs | removed: nodes / edges |\n"
+        "| ---: | ---: | ---: | ---: | ---: |\n"
+        f"| {stats['predicted_checks']} | {stats['exact_checks']} + {stats['exact_clearances']} "
+        f"| {stats['predicted_checks'] / max(exactly, 1):.0f}x | {stats['repairs']} "
+        f"| {stats['removed_nodes']} / {stats['removed_edges']} |"
+    )
