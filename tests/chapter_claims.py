@@ -799,7 +799,49 @@ def chapter_05(nb) -> list[str]:
     office = [r for header, rows in tables(nb) if header[:2] == ["uniform samples", "in collision"] for r in rows]
     if len(office) != 1 or int(office[0][1]) != int(office[0][2]) + int(office[0][3]) or "0" in office[0][2:]:
         problems.append(f"05: the office's collisions are not the two kinds the prose names: {office}")
+    problems += _chapter_05_answer(found, measured, scored)
     return problems + _page_width(nb, tables(nb), "05")  # review r14b: the valid-share table's sixth column was cut
+
+
+def _chapter_05_answer(found: str, measured: list[list[str]], scored: list[list[str]]) -> list[str]:
+    """Reader r24b: the answer says "No" where no total-time row of the closing table saves time, and each of its
+    numbers is in a table on the page: the sampling cut beside the paper's, the accuracy pair as a row; a ratio of two
+    medians within timing noise reads "within noise", not a verdict."""
+    problems = []
+    totals = [r for r in measured if "median of each query's own ratio (100 queries)" in r[0]]
+    saves = any(cell.startswith(findings.SAVES) for r in totals for cell in r[1:])
+    if len(totals) != 2 or saves or "**No.** On 3DC-7 prediction never shortened a whole query" not in found:
+        problems.append(f"05: the answer's 'No' does not match the closing's total-time rows: {totals}")
+    cut = re.search(r"cut sampling time by (\d+)–(\d+) % \(means\)", found)
+    sampling = [
+        r for r in measured if r[0].startswith("`strong` network, python-fcl on both sides: ") and "less" in r[0]
+    ]
+    shown = [int(v) for r in sampling for v in re.findall(r"(\d+)%", r[0])]
+    if cut is None or not shown or [int(cut.group(1)), int(cut.group(2))] != [min(shown), max(shown)]:
+        problems.append(f"05: the answer's sampling cut is not the sampling table's: {cut and cut.groups()}, {shown}")
+    paper = [r for r in measured if r[0].startswith("the paper's Table 3: ") and r[0].endswith(" less")]
+    expected = " / ".join(f"{paper_numbers.IMPROVEMENT['3dc7']['sampling'][s]:.0%}" for s in SAMPLERS)
+    if len(paper) != 1 or expected not in paper[0][0]:
+        problems.append(f"05: the paper's 3DC-7 sampling figures are not beside ours: {paper}")
+    pair = re.search(r'right on (\d+)% of them, where answering "valid" to all is right on (\d+)%', found)
+    row = [r for r in scored if r[0] == "ours: `strong` model, uniform unseen samples, `docs/results.md`"]
+    always = [r for r in scored if r[0] == 'answering "valid" to the `strong` model\'s samples']
+    if (
+        pair is None
+        or not row
+        or not always
+        or [row[0][1].strip("*"), always[0][1]] != [f"{v}%" for v in pair.groups()]
+    ):
+        problems.append(f"05: the answer's accuracy pair is not a row of the accuracy table: {pair and pair.groups()}")
+    medians = [r for r in measured if r[0] == "3DC-7, `strong` network in Algorithm 1, ratio of the two medians"]
+    twice = recorded.table("strong --planner paper", "timed twice")
+    moved = max(abs(float(row["ratio of the medians"]) - 1) for row in twice.values())
+    for r in medians[:1] or [["missing"]]:
+        for cell in r[1:] or ["missing"]:
+            ratio = re.search(r"\((\d+\.\d+)\)", cell)
+            if ratio is None or (abs(float(ratio.group(1)) - 1) <= moved) != cell.startswith("within noise"):
+                problems.append(f"05: a ratio of two medians is read against timing noise wrongly: {cell}")
+    return problems
 
 
 CHECKS: dict[str, Callable] = {"01": chapter_01, "02": chapter_02, "03": chapter_03, "04": chapter_04, "05": chapter_05}

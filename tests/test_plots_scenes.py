@@ -331,8 +331,18 @@ def test_a_stills_model_wrong_star_is_hollow_round_the_mark_it_flags(crossing):
     overview = fig.axes[0]
     (stars,) = [c for c in overview.collections if c.get_label() == "sample, model wrong"]
     legend = dict(zip([t.get_text() for t in fig.legends[0].get_texts()], fig.legends[0].legend_handles))
-    assert "sample, model wrong" in legend  # reader r21c: its star drawn round a mark, as in the panels, not empty
+    # reader r21c: its star drawn round a mark, as in the panels, not empty; r24b: one entry per kind of mistake
+    assert still_panels.DANGEROUS_ENTRY in legend and still_panels.CONSERVATIVE_ENTRY in legend
+    assert "sample, model wrong" not in legend
     (circle,) = [c for c in overview.collections if c.get_label() == "sample, valid"]
+    (diamond,) = [c for c in overview.collections if c.get_label() == "sample, in collision"]
+    both = still_panels.star_on_mark(
+        {"sample, valid": circle, "sample, in collision": diamond, "sample, model wrong": stars}
+    )
+    assert both[still_panels.DANGEROUS_ENTRY] == (diamond, stars) and both[still_panels.CONSERVATIVE_ENTRY] == (
+        circle,
+        stars,
+    )
     entry = still_panels.star_on_mark({"sample, valid": circle, "sample, model wrong": stars})["sample, model wrong"]
     assert entry == (circle, stars)
     assert len(stars.get_facecolor()) == 0 or stars.get_facecolor()[0][3] == 0  # the circle or diamond shows inside

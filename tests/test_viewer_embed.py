@@ -525,3 +525,16 @@ def test_the_animation_is_never_washed_out(planned, chromium, tmp_path):
     finally:
         page.close()
     assert all(seen >= 30 and white >= 3 and behind >= 3 for seen, white, behind in frames), str(frames)
+
+
+def test_a_snapshot_under_its_still_shows_a_one_line_note_not_a_second_still(planned):
+    """Reader r24b: each still showed twice in a browser without WebGL, once on the page and once, cut at the view's
+    height, in the view's place. With ``still_above`` the view's stand-in is one line that points to the still."""
+    from toolkit.viewer.labels import ABOVE, NO_WEBGL_ABOVE
+
+    document = page_of(planned.iframe(200, still_above=True))
+    still = found(r'(<div id="toolkit-still"[\s\S]*?</div>)', document)
+    assert "<img" not in still and "base64," not in still
+    assert html.unescape(found(r'id="toolkit-still-note"[^>]*>([^<]*)<', still)) == ABOVE
+    assert ".textContent = " + json.dumps(NO_WEBGL_ABOVE) in document[document.index(still) :]
+    assert "<img" in page_of(planned.iframe(200))  # by default the still itself stands in

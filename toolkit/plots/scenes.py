@@ -379,12 +379,13 @@ def _draw_probability(p: np.ndarray, threshold: float, ax, along: np.ndarray) ->
     ax.plot(along, p, color=COLORS["probability"], linewidth=1.2, gid="probability")
     ax.axhline(threshold, color=COLORS["ink"], linestyle="--", linewidth=0.8, gid="threshold")
     for start, stop in below_threshold(p < threshold, along):  # a band per run of frames, one frame's as wide
-        ax.axvspan(start, stop, color=INVALID_COLOR, alpha=0.15, linewidth=0, gid="below threshold")
+        ax.axvspan(start, stop, color=INVALID_COLOR, alpha=0.2, linewidth=0, gid="below threshold")
     ax.set_ylim(-0.02, 1.02)
     ax.set_ylabel("P(valid)")
 
 
-BAND = 0.01  # fraction of the path: the least half-width of a band of frames below the threshold (one frame's shows)
+BAND = 0.02  # fraction of the path: the least half-width of a band of frames below the threshold (r24b: at 0.01
+#   one frame's band was 4 pixels wide)
 
 
 def below_threshold(below: np.ndarray, along: np.ndarray) -> list[tuple[float, float]]:

@@ -318,11 +318,21 @@ def draw_points(
 
 def star_on_mark(handles: dict) -> dict:
     """A still's legend ``handles {label: artist}`` with the mistakes' hollow sparkle drawn round a sample's mark, as
-    the panels draw it (reader r21c: a hollow star alone in the legend, stars filled by their marks in the panels)."""
-    star, mark = handles.get("sample, model wrong"), handles.get("sample, valid", handles.get("sample, in collision"))
-    if star is None or mark is None:
+    the panels draw it (reader r21c: a hollow star alone in the legend, stars filled by their marks in the panels):
+    where both marks are drawn, one entry per kind of mistake, the sparkle on a diamond (dangerous) and on a circle
+    (conservative) (reader r24b: the dangerous kind had no entry)."""
+    star = handles.get("sample, model wrong")
+    circle, diamond = handles.get("sample, valid"), handles.get("sample, in collision")
+    if star is None or (circle is None and diamond is None):
         return handles
-    return handles | {"sample, model wrong": (mark, star)}  # a tuple: both drawn, overlaid, in the star's place
+    if circle is None or diamond is None:
+        return handles | {"sample, model wrong": (circle or diamond, star)}  # a tuple: both drawn, overlaid
+    kinds = {key: value for key, value in handles.items() if key != "sample, model wrong"}
+    return kinds | {DANGEROUS_ENTRY: (diamond, star), CONSERVATIVE_ENTRY: (circle, star)}
+
+
+DANGEROUS_ENTRY = "sparkle on a diamond: model wrong, dangerous"  # in collision, predicted valid
+CONSERVATIVE_ENTRY = "sparkle on a circle: model wrong, conservative"  # valid, predicted in collision
 
 
 SHADOW_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=1.2, linestyle=":")  # the path's shadow on the floor

@@ -255,7 +255,7 @@ STILL = """<style>#toolkit-play:focus-visible { outline: 2px solid %(ink)s; outl
  style="position:fixed;inset:0;overflow:auto;background:#fff;z-index:2147483647">
 <p style="position:sticky;top:0;margin:0;padding:4px 8px;background:#fff;font:14px sans-serif">
 <span id="toolkit-still-note">%(note)s</span>%(play)s</p>
-<img src="data:image/png;base64,%(png)s" alt="%(alt)s" style="width:100%%;max-width:640px;height:auto"></div>
+%(picture)s</div>
 <script>(function () {
   var canvas = document.createElement("canvas"), still = document.getElementById("toolkit-still");
   var play = document.getElementById("toolkit-play"), view = document.getElementById("root") || {}, waiting = false;
@@ -287,6 +287,9 @@ STILL = """<style>#toolkit-play:focus-visible { outline: 2px solid %(ink)s; outl
 })();</script>
 """
 NO_WEBGL = "This browser draws no 3D (no WebGL): the scene as a still picture."
+NO_WEBGL_ABOVE = "3D view: this browser draws no 3D (no WebGL); the still picture above shows this scene."
+ABOVE = "3D view of the still picture above: it draws here once it has been on screen a moment."
+PICTURE = '<img src="data:image/png;base64,%(png)s" alt="%(alt)s" style="width:100%%;max-width:640px;height:auto">'
 DRAWING = "A still picture of the scene: the 3D view replaces it once it has been on screen a moment."
 ON_SCREEN_MS = 1500  # milliseconds a snapshot's view is on screen before it replaces its still (it draws by then)
 PLAY = (
@@ -295,7 +298,9 @@ PLAY = (
 )
 
 
-def with_still(document: str, fig: Figure | None, *, first: str | None = None, play: str = "play in 3D") -> str:
+def with_still(
+    document: str, fig: Figure | None, *, first: str | None = None, play: str = "play in 3D", above: bool = False
+) -> str:
     """``document`` (a saved scene's HTML) with ``fig``, a still picture of its scene, over the view (the picture's
     alt text from the figure): where the browser has no WebGL (the view would stay blank there) and, given
     ``first`` (what the still shows, in words), in every browser until the reader presses ``play``: a screenshot
@@ -303,21 +308,29 @@ def with_still(document: str, fig: Figure | None, *, first: str | None = None, p
     still stays until the view has been on screen :data:`ON_SCREEN_MS`: a browser draws no view off screen, so a
     page's screenshot showed blank boxes there (reader r23b). The view's controls take no focus
     while the still covers them; pressing ``play`` moves the focus to the player's play / pause button.
-    ``document`` as it is without a figure."""
-    if fig is None:
+    With ``above`` (the page shows the same still just above the view), a one-line note stands in for the picture
+    (:data:`ABOVE`, :data:`NO_WEBGL_ABOVE`): reader r24b saw the still twice, the second copy cut at the view's height.
+    ``document`` as it is without a figure, unless ``above`` (which needs none)."""
+    if fig is None and not above:
         return document
     from toolkit.plots.alt import alt_text
 
-    buffer = io.BytesIO()
-    fig.savefig(buffer, format="png", dpi=100, bbox_inches="tight")
+    if above or fig is None:
+        picture = ""
+    else:
+        buffer = io.BytesIO()
+        fig.savefig(buffer, format="png", dpi=100, bbox_inches="tight")
+        picture = PICTURE % {
+            "png": base64.b64encode(buffer.getvalue()).decode(),
+            "alt": html.escape(alt_text(fig), quote=True),
+        }
     filled = {
-        "png": base64.b64encode(buffer.getvalue()).decode(),
-        "alt": html.escape(alt_text(fig), quote=True),
+        "picture": picture,
         "hidden": "",  # shown until the view draws (a snapshot) or the reader plays it (``first``)
-        "note": html.escape(DRAWING if first is None else first),
+        "note": html.escape(ABOVE if above else DRAWING if first is None else first),
         "on_screen_ms": ON_SCREEN_MS,
         "play": "" if first is None else PLAY % {"ink": COLORS["ink"], "play": html.escape(play)},
-        "no_webgl": json.dumps(NO_WEBGL),
+        "no_webgl": json.dumps(NO_WEBGL_ABOVE if above else NO_WEBGL),
         "ink": COLORS["ink"],
         "play_pause": json.dumps(PLAY_PAUSE),
     }

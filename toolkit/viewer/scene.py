@@ -310,9 +310,10 @@ class Viewer:
         counts = {**self.sample_counts, **({} if self.model else {"model wrong": None})}  # None: no model judged
         return draw.scene_summary(self.workspace, self.robot, bool(self.valid), counts, self.path)
 
-    def iframe(self, height: int = 480) -> str:
-        """The scene as a static snapshot ``<iframe>`` for ``IPython.display.HTML``: :func:`snapshot.iframe`."""
-        return snapshot.iframe(self, height)
+    def iframe(self, height: int = 480, *, still_above: bool = False) -> str:
+        """The scene as a static snapshot ``<iframe>`` for ``IPython.display.HTML``: :func:`snapshot.iframe`; with
+        ``still_above`` (the page shows :meth:`still` just above it), a one-line note in place of a second still."""
+        return snapshot.iframe(self, height, still_above=still_above)
 
     def animation_html(self, *, frames: int = 60, seconds: float = 6.0) -> str:
         """The robot moving along the shown path, as one self-contained HTML document (no server needed).

@@ -82,10 +82,14 @@ def far_marks_grown(viewer, look_at: np.ndarray, position: np.ndarray) -> Iterat
         viewer.sample_clouds = draw.add_samples(viewer.server.scene, points, kinds, size)
 
 
-def iframe(viewer, height: int = 480) -> str:
-    """``viewer``'s scene as a static snapshot ``<iframe>`` for ``IPython.display.HTML``, then its summary."""
-    picture = scene_still(viewer) if viewer.robot.dim == 3 else None
-    return srcdoc_iframe(with_still(viewer.html(), picture), height, summary=viewer.summary())
+def iframe(viewer, height: int = 480, *, still_above: bool = False) -> str:
+    """``viewer``'s scene as a static snapshot ``<iframe>`` for ``IPython.display.HTML``, then its summary. Its
+    stand-in until the view draws is the scene's still, or with ``still_above`` (the page shows that still just
+    above, ``Viewer.still``) a one-line note that points to it (``labels.with_still``)."""
+    drawn = viewer.robot.dim == 3  # a 3D scene: a still stands in for its view
+    picture = scene_still(viewer) if drawn and not still_above else None
+    document = with_still(viewer.html(), picture, above=drawn and still_above)
+    return srcdoc_iframe(document, height, summary=viewer.summary())
 
 
 def animation_iframe(viewer, height: int = 480, *, frames: int = 60, seconds: float = 6.0) -> str:

@@ -1,0 +1,55 @@
+"""Chapter 05's printed answer and tables (toolkit.teaching.chapter05), read from the record: reader r24b."""
+
+import re
+
+import numpy as np
+
+from toolkit.teaching import chapter05, findings, recorded
+
+
+def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
+    answer, tables = chapter05.answer(), chapter05.time_tables()
+    compiled = recorded.query_ratios(chapter05.COMPILED)["3dc7"]
+    fcl = recorded.query_ratios(chapter05.FCL)["3dc7"]
+    assert all(findings.time_verdict(r) != findings.SAVES for r in [*compiled.values(), *fcl.values()])
+    assert answer.startswith("**No.** On 3DC-7 prediction never shortened a whole query.")
+    assert "It depends" not in answer
+    for low, high in re.findall(r"\((\d\.\d\d)–(\d\.\d\d)", answer):  # each span's ends are cells of the tables
+        assert f"({low})" in tables and f"({high})" in tables
+    low, high = re.search(r"cut sampling time by (\d+)–(\d+) %", answer).groups()
+    assert f"{low}%" in tables and f"{high}%" in tables
+    assert "49% / 58% / 51% / 61% less" in tables  # the paper's 3DC-7 sampling (Table 3) beside ours
+
+
+def test_a_ratio_of_two_medians_within_timing_noise_reads_within_noise():
+    row = chapter05._noise_row("r", {"BS": 0.83, "OB": 1.5, "G": 1.07, "BT": 0.69}, moved=0.30)
+    assert row == "| r | within noise (0.83) | costs time (1.50) | within noise (1.07) | saves time (0.69) |"
+    assert "within noise (0.83)" in chapter05.time_tables()
+
+
+def test_the_accuracy_table_has_the_answers_pair_as_a_row():
+    answer = chapter05.answer()
+    acc, always = re.search(
+        r'right on (\d+)% of them, where answering "valid" to all is right on (\d+)%', answer
+    ).groups()
+    scores = {"acc": 0.945, "tpr": 0.935, "tnr": 0.975}
+    table = chapter05.accuracy_table(scores, 0.745, 2000, 0, {"acc": 0.96, "tpr": 0.95, "tnr": 0.96})
+    assert f"| ours: `strong` model, uniform unseen samples, `docs/results.md` | **{acc}%** |" in table
+    assert f'| answering "valid" to the `strong` model\'s samples | {always}% | 100% | 0% |' in table
+    assert "| ours: `strong` model, §5's 2000 uniform samples, workspace of seed 0 | **94.5%** |" in table
+
+
+def test_truth_vs_prediction_counts_each_kind_once():
+    valid = np.array([True, True, False, False, True])
+    predicted = np.array([True, False, True, False, True])
+    room, freed = np.array([0.5, 0.1, 0.0, 0.0, 0.4]), np.array([False, False, True, False, False])
+    text = chapter05.truth_vs_prediction(
+        valid, predicted, {"acc": 0.6, "tpr": 2 / 3, "tnr": 0.5}, 0.5, room, freed, 0.2
+    )
+    assert "| circle: valid, predicted valid | 2 | 40.0% |" in text
+    assert "| diamond + sparkle: in collision, predicted valid (dangerous) | 1 | 20.0% |" in text
+    assert "accuracy **60.0%**, TPR 66.7%, TNR 50.0%" in text
+    assert text.endswith(
+        "Read: the conservative mistakes lie nearer to the blocks than the circles it gets right, and a nudge frees "
+        "more of the dangerous mistakes than of the diamonds it gets right."
+    )
