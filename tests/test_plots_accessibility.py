@@ -342,7 +342,7 @@ def test_the_crossover_curves_are_in_a_table_at_their_measured_values():
     # read from the curves, log-log: exact 2 to 8 meets 4 at 10 ** 1.5; python-fcl 3 to 30 at 10 ** (1 + log10(4 / 3))
     assert part["text"].endswith(
         "cheaper by more than 25% at 100. The network's curve crosses the exact, default (compiled) one at 31.6, "
-        "the exact, python-fcl (a mesh: + numpy inside test) one at 13.3."
+        "the exact, python-fcl one at 13.3."
     )
 
 

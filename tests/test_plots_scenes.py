@@ -14,7 +14,7 @@ from mpl_toolkits.mplot3d import proj3d
 from toolkit import scenarios
 from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots import dof_panels, palette, robot_drawing, scenes, still_panels
+from toolkit.plots import dof_panels, palette, path_series, robot_drawing, scenes, still_panels
 from toolkit.plots.alt import alt_text
 from toolkit.plots.boxes import add_box_3d
 from toolkit.plots.palette import contrast
@@ -192,16 +192,16 @@ def test_the_nearest_blocks_name_says_where_a_wall_of_the_workspace_is_nearer():
 
 def test_a_single_frame_below_the_threshold_gets_a_band_of_its_own(crossing):
     """Reader r23b: P(valid) dipped below the threshold at one frame and no band showed (a fill between points
-    needs two). Each run of frames below it gets one band, half a step either side and at least scenes.BAND."""
+    needs two). Each run of frames below it gets one band, half a step either side and at least path_series.BAND."""
     robot, workspace, _, path, _ = crossing
     probability = np.ones(FRAMES)
     probability[[3, 9, 10]] = 0.1  # one frame alone, then a run of two
     fig = scenes.path_frame(robot, path, 0, workspace=workspace, probability=probability, threshold=0.5)
     bands = [p for p in fig.axes[-1].patches if p.get_gid() == "below threshold"]
-    along, half = np.linspace(0.0, 1.0, FRAMES), max(0.5 / (FRAMES - 1), scenes.BAND)
+    along, half = np.linspace(0.0, 1.0, FRAMES), max(0.5 / (FRAMES - 1), path_series.BAND)
     spans = [(p.get_x(), p.get_x() + p.get_width()) for p in bands]
     np.testing.assert_allclose(spans, [(along[3] - half, along[3] + half), (along[9] - half, along[10] + half)])
-    assert scenes.below_threshold(np.zeros(FRAMES, bool), along) == []
+    assert path_series.below_threshold(np.zeros(FRAMES, bool), along) == []
 
 
 def test_only_the_given_series_get_panels(crossing):
