@@ -231,12 +231,11 @@ def lazy_prm(tables: Tables) -> str:
         f"drive?** For the accurate `strong` network, {answer(len(saved['strong']), cells['strong'])}: it saved time "
         f"in {len(saved['strong']) or 'none'} of its {cells['strong']} scenario–sampler cells "
         f"(chapter 04 shows {chapter} of them, 2DS and 3DC-7). "
-        "Counting the `paper` network's cells too (the medians tables of the sections “Preset `strong`” and “Preset "
-        "`paper`”; the section “Preset `paper` before issue 25” is history, measured against Algorithm 1 and not the "
-        f"lazy PRM, and not counted), {answer(both, sum(cells.values()))}: {both or 'none'} of "
-        f"{sum(cells.values())}{whose}. "
-        "In the medians tables (the median time with prediction over the median without), "
-        f"the `strong` network took {told(groups['strong'])}. The `paper` network took {told(groups['paper'])}."
+        f"Counting the `paper` network's cells too, {answer(both, sum(cells.values()))}: {both or 'none'} of "
+        f"{sum(cells.values())}{whose}. These counts read the medians tables (the median time with prediction over "
+        "the median without) of the sections “Preset `strong`” and “Preset `paper`”; the section “Preset `paper` "
+        "before issue 25” is history, measured against Algorithm 1, and not counted. "
+        f"The `strong` network took {told(groups['strong'])}. The `paper` network took {told(groups['paper'])}."
     )
 
 

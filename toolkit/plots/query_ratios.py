@@ -66,7 +66,11 @@ def own_ratios(
         names += list(by_sampler)
         ticks += list(x)
         centres.append(float(x.mean()))
-    _legend_entries(ax, series if slow else None)
+    drawn_as = {  # each verdict: whether a filled point, a hollow one, reads as it
+        hollow: {time_verdict(v[0], tie=tie) for by in table.values() for v in by.values()}
+        for hollow, table in ((False, cells), (True, slow))
+    }
+    _legend_entries(ax, series if slow else None, drawn_as)
     ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
     tie_band(ax, tie)
     ax.set_xticks(ticks, names)
@@ -95,12 +99,23 @@ def own_ratios(
     )
 
 
-def _legend_entries(ax, series: tuple[str, str] | None) -> None:
-    """The legend's entries: each verdict once, whether drawn or not, and where there are two ``series``, which a
-    point's fill names."""
+def _legend_entries(ax, series: tuple[str, str] | None, drawn_as: Mapping[bool, set[str]] | None = None) -> None:
+    """The legend's entries: each verdict once, drawn filled where a filled point reads as it, hollow where only a
+    hollow one does (review r24c: a filled triangle in the legend that no point showed), and where there are two
+    ``series``, which a point's fill names."""
+    drawn_as = drawn_as or {False: set(READS), True: set()}
     for k, reads in enumerate(READS):
         look = series_style(k)
-        ax.plot([], [], linestyle="none", marker=look["marker"], color=look["color"], markersize=7, label=_read(reads))
+        hollow = reads not in drawn_as[False] and reads in drawn_as.get(True, set())
+        ax.plot(
+            [],
+            [],
+            linestyle="none",
+            marker=look["marker"],
+            markersize=7,
+            label=_read(reads),
+            **_fill(look["color"], hollow),
+        )
     for hollow, name in zip((False, True), series or ()):
         label = f"{'hollow' if hollow else 'filled'}: {name}"
         ax.plot([], [], linestyle="none", marker="o", markersize=7, label=label, **_fill(COLORS["ink"], hollow))
