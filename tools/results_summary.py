@@ -585,7 +585,8 @@ def claim_markdown(text: str) -> str:
     ]
     lead = (
         "**Figure 1: the paper's claim, as the verdict reads it.** The accurate `strong` network inside Algorithm 1, "
-        "against Algorithm 1 without prediction, 100 queries a scenario. Each point is the median of each query's "
+        "against Algorithm 1 without prediction, 100 queries a scenario (the same for each sampler). Each point is the "
+        "median of each query's "
         "own ratio: its total time with prediction over its own time without. The whisker spans the middle half of "
         "those ratios. The shaded band, 0.90 to 1.10, holds the ties. "
         f"Filled, our compiled checker: {said.count('more time')} costs, {said.count('about the same time')} ties, "
