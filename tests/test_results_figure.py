@@ -210,8 +210,10 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
         if point not in filled:
             assert any(0.2 < point.get_xdata()[0] - x < 0.5 for x in left)
     both = [*table.values(), *slow.values()]  # the whiskers: both series'
-    assert f"{len(slow)} medians)" in CLAIM and "so far" not in CLAIM  # review r23c, item 7
-    assert "The hollow points beside them" in CLAIM
+    slow_costs = sum(m >= 1.1 for m, _, _ in slow.values())
+    slow_saves = sum(m <= 0.9 for m, _, _ in slow.values())
+    said = f"{slow_costs} costs, {len(slow) - slow_costs - slow_saves} ties, {slow_saves} savings."
+    assert f"Hollow, python-fcl on both sides: {said}" in CLAIM and "so far" not in CLAIM  # review r23c, item 7
     marker = {"costs": "o", "tie": "s", "saves": "^"}
     for line in points:
         median = float(line.get_ydata()[0])
@@ -227,5 +229,32 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
         assert image.size[0] <= COLUMN
     assert CLAIM == results_summary.claim_markdown(TEXT), AGAIN
     costs = sum(m >= 1.1 for m, _, _ in table.values())
-    assert f"{costs} costs, {16 - costs} ties and 0 savings" in CLAIM
+    assert f"Filled, our compiled checker: {costs} costs, {16 - costs} ties, 0 savings." in CLAIM
     assert TEXT.index(results_summary.CLAIM_BEGIN) < TEXT.index(results_summary.FIGURE_BEGIN.format(kind="total"))
+
+
+def test_each_figure_of_means_has_its_own_range_the_slow_run_and_counts_by_the_pages_rule(drawn):
+    """Review r24c: Figure 2 borrowed Figure 3's log scale (its tie band 3 px tall), neither showed the run with
+    python-fcl on both sides, and the text alternative counted "below 1" where the page counts with 0.90 / 1.10."""
+    kind, fig = drawn
+    every = [r for series in results_summary.ratios(TEXT, kind).values() for by in series.values() for r in by.values()]
+    low, high = fig.axes[0].get_ylim()
+    assert low < min(every) and high > max(every)  # no point on the frame
+    assert high / low < (12 if kind == "total" else 60)  # the total's own range, not the sampling stage's
+    labels = {t.get_text() for t in fig.axes[0].get_yticklabels()}
+    assert {"0.9", "1.1"} <= labels if kind == "total" else "3" in labels
+    names = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert "ours, accurate strong network, python-fcl on both sides" in names
+    block = TEXT.partition(results_summary.FIGURE_BEGIN.format(kind=kind))[2]
+    rows = re.findall(
+        r"(?m)^\| (ours[^|]*|the paper[^|]*) \| 16 \| (\d+) \| (\d+) \| (\d+) \|$", block.split("<!--")[0]
+    )
+    said = alt.alt_text(fig)
+    assert len(rows) == 5 and "below 1 for" not in said
+    for name, saved, tied, lost in rows:  # the text alternative tallies as the count table does
+        assert f"{name}: {saved} of 16 save time (0.90 or less), {tied} tie, {lost} cost time (1.10 or more)" in said
+    renderer = fig.canvas.get_renderer()  # the labels 0.9, 1 and 1.1 stand apart (tests/test_plots_accessibility.py)
+    boxes = [t.get_window_extent(renderer) for t in fig.axes[0].get_yticklabels() if t.get_text()]
+    low, high = fig.axes[0].get_window_extent(renderer).y0, fig.axes[0].get_window_extent(renderer).y1
+    shown = sorted((b for b in boxes if low - 1 <= (b.y0 + b.y1) / 2 <= high + 1), key=lambda b: b.y0)
+    assert all(a.y1 <= b.y0 + 1 for a, b in zip(shown, shown[1:]))

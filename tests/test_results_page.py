@@ -15,6 +15,7 @@ PAGE = " ".join(TEXT.split())  # whitespace made single spaces: a sentence wraps
 TABLES = recorded_results.parse(TEXT)
 HISTORY = recorded_results.parse(re.sub(r"(?m)^## Preset `paper` before issue 25.*$", "## Preset `before25`", TEXT))
 THREE_D = ("3dc7", "3dc9", "3do")
+FIDELITY = " ".join((recorded_results.RESULTS.parent / "fidelity.md").read_text().split())  # review r24c, item 2
 SUCCESS = "success, ours: without / with"  # the column of Table 3's times that holds the success rates
 
 
@@ -58,22 +59,22 @@ def test_the_planning_answer_follows_the_medians_both_ways():
     slower = medians({"2ds": {"BS": 1.5, "OB": 1.2}, "3do": {"BS": 2.0, "OB": 1.05}})
     said = results_summary.lazy_prm(slower)
     assert "?** For the accurate `strong` network, no: it saved time in none of its 4 scenario–sampler cells" in said
-    assert "(chapter 04 shows 2 of them, 2DS and 3DC-7). Counting the `paper` network's cells too (the medians" in (
+    assert "(chapter 04 shows 2 of them, 2DS and 3DC-7). Counting the `paper` network's cells too, no: none of 8." in (
         said  # review r18a: each answer names its scope
     )
     scope = "sections “Preset `strong`” and “Preset `paper`”; the section “Preset `paper` before issue 25” is history"
-    assert scope in said and "not counted), no: none of 8." in said  # review r21a: which tables the count reads
+    assert scope in said and "measured against Algorithm 1, and not counted." in said  # review r21a: which tables
     assert (
         "more time in 3 of 4 scenario–sampler cells (2DS BS 1.50, 2DS OB 1.20, 3DO BS 2.00) and about the same" in said
     )
     faster = medians({"2ds": {"BS": 0.5, "OB": 0.6}, "3do": {"BS": 0.7, "OB": 0.8}, "3dc7": {"BS": 0.4, "OB": 1.3}})
     said = results_summary.lazy_prm(faster)
-    assert "network, mostly: it saved time in 5 of its 6" in said and "counted), mostly: 10 of 12." in said
+    assert "network, mostly: it saved time in 5 of its 6" in said and "cells too, mostly: 10 of 12." in said
     assert "less time in 5 of 6 scenario–sampler cells (0.40–0.80 times as much)" in said
     assert "and more time in 1 (3DC-7 OB 1.30)" in said
     mixed = medians({"2ds": {"BS": 0.5, "OB": 1.6}, "3do": {"BS": 1.7, "OB": 1.8}})
     said = results_summary.lazy_prm(mixed)
-    assert "network, rarely: it saved time in 1 of its 4" in said and "counted), rarely: 2 of 8." in said
+    assert "network, rarely: it saved time in 1 of its 4" in said and "cells too, rarely: 2 of 8." in said
     table3 = results_summary.algorithm_1(faster)
     assert "saved 10 % or more of a query's time in 5 of 6 cells, lost 10 % or more in 1 and tied in 0" in table3
 
@@ -100,9 +101,9 @@ def _range(values, digits: int) -> str:
     return f"{low}–{high}"
 
 
-def claim(pattern: str) -> tuple[str, ...]:
-    found = re.search(pattern, PAGE)
-    assert found, f"docs/results.md no longer says {pattern!r}: check the new sentence against its table, here too"
+def claim(pattern: str, page: str = PAGE) -> tuple[str, ...]:
+    found = re.search(pattern, page)
+    assert found, f"the page no longer says {pattern!r}: check the new sentence against its table, here too"
     return found.groups()
 
 
@@ -309,7 +310,7 @@ def test_the_valid_share_the_papers_table_2_implies_is_solved_from_its_scores():
 def test_the_papers_mlp_figures_are_set_against_always_valid_on_the_samples_its_table_2_implies():
     """Review r14a: the page set the paper's accuracies against *our* samples' valid share (85/76/68/72 %), which the
     paper does not report, and called them at most 4 points above "always valid"; on the shares its Table 2 implies
-    they lie 21-29 points above."""
+    they lie 21-29 points above. Review r24c (item 2) moved that inference to docs/fidelity.md, §7."""
     ours = {s: recorded.ours(row["Unseen always valid"]) for s, row in recorded.table("paper", "MLP", TABLES).items()}
     order = ("2ds", *THREE_D)
     said = claim(
@@ -321,12 +322,15 @@ def test_the_papers_mlp_figures_are_set_against_always_valid_on_the_samples_its_
     found = {s: results_summary.above_always_valid(paper_numbers.MLP[s]["unseen"]) for s in order}
     said = claim(
         r"share p gives about (\d+) % \(2DS\), (\d+) % \(3DC-7\), (\d+) % \(3DC-9\) and (\d+) % \(3DO\), so on its "
-        r"own samples its MLP's (\d+) %, (\d+) %, (\d+) % and (\d+) % lie (\d+), (\d+), (\d+) and (\d+) points above"
+        r"own samples its MLP's (\d+) %, (\d+) %, (\d+) % and (\d+) % lie (\d+), (\d+), (\d+) and (\d+) points above",
+        FIDELITY,
     )
     assert [int(v) for v in said[:4]] == [round(found[s].share * 100) for s in order]
     assert [int(v) for v in said[4:8]] == [round(paper_numbers.MLP[s]["unseen"]["acc"] * 100) for s in order]
     assert [int(v) for v in said[8:]] == [round(found[s].gap * 100) for s in order]
-    least, low, high = claim(r"its MLP at least (\d+) points above, and anywhere from (\d+) % to (\d+) % on 2DS")
+    least, low, high = claim(
+        r"its MLP at least (\d+) points above, and anywhere from (\d+) % to (\d+) % on 2DS", FIDELITY
+    )
     assert int(least) == int(min(found[s].least_gap for s in THREE_D) * 100 + 1e-6)
     spread = [max(found[s].high - found[s].share, found[s].share - found[s].low) for s in THREE_D]
     assert max(spread) == pytest.approx(0.05)  # "a few points either way in 3D"
@@ -452,11 +456,11 @@ def _the_ratio_of_medians_is_told_apart_where_it_reads_saves(ratios: dict, twice
     assert apart == [("3dc7", "BS")]
     moved = {(r[0], r[1]): r[3] for r in twice["rows"]}[("3dc7", "BS")]  # its ratio of the medians, timed twice
     shown, own = f"{medians['3dc7']['total']['BS']:.2f}", f"{ratios['3dc7']['BS']:.2f}"
-    assert f"(3DC-7 BS: {shown}, where its queries' own ratios have a median of {own})" in PAGE
     assert f"3DC-7 BS is {shown} here, a saving by this statistic, and {own} by each query's own ratio, a tie" in PAGE
-    assert f"of the medians from {min(float(r[3]) for r in twice['rows']):.2f} to" in PAGE
-    assert f"{moved} on 3DC-7 BS itself" in PAGE and f"moved this statistic to {moved} on that very cell" in PAGE
+    assert f"moved this statistic to {moved} on that very cell" in PAGE
     assert f"(3DC-7 BS, {shown} against {own})" in PAGE
+    of_means = [float(r[2]) for r in twice["rows"]]  # review r24c, item 5: the noise floor beside Figure 1
+    assert f"a ratio of means to {min(of_means):.2f}–{max(of_means):.2f}" in PAGE
 
 
 def test_the_figures_of_means_say_the_verdict_reads_figure_1():
@@ -481,12 +485,14 @@ def test_the_verdict_names_its_checker_first():
     assert said.startswith("**And with a slow exact checker?** The paper names none.")
     assert said in PAGE
     facts = checker_scope.slow_checker(tables)
-    tied = set(facts.total_verdicts()) == {findings.TIES}
-    assert said.endswith("even this favourable case is a tie here.") == tied
+    whole = results_summary.whole_query(facts)  # review r24c, item 1: the whole query reproduces with neither checker
+    assert (whole.means, whole.papers) == (2, 10) and facts.total_verdicts()[findings.SAVES] == 3
+    assert said.endswith(f"So {whole.verdict}.") and "reproduce with neither checker" in whole.verdict
+    assert "tens of times slower than today's compiled checker" in said  # review r24c, contradiction 4
+    assert "in 2 of 16 cells by means and in 3 by the median query; the paper's Table 3 saves in 10." in PAGE
     slow = dict(tables[checker_scope.SLOW])
     own = next(heading for heading in slow if "each query's own ratio" in heading)
     rows = [[row[0], "1.25 (1.1–1.4)", *row[2:]] for row in slow[own]["rows"]]  # one sampler now costs time
     costs = {**tables, checker_scope.SLOW: {**slow, own: {**slow[own], "rows": rows}}}
     said = results_summary.slow_checker(costs)
-    assert "for every sampler" not in said and said.endswith("depends on how slow its checker was.")
-    assert "the median query's total time was shorter in" in said
+    assert "it saved time in 3, tied in 9 and cost time in 4 (" in said  # every scenario's BS now costs time

@@ -35,9 +35,10 @@ MEANS_STYLES = (  # :func:`means_grid`'s series in turn: colour, marker, hollow;
     (LINE_COLORS[5], "X", False),  # grey crosses: the paper's own numbers
     (LINE_COLORS[3], "D", False),  # bluish green diamonds: a network with our compiled checker
     (LINE_COLORS[3], "v", True),  # the same colour hollow: the same network with python-fcl
-    (LINE_COLORS[4], "P", False),  # reddish purple pluses: another network
+    (LINE_COLORS[4], "P", False),  # reddish purple pluses: another network with our compiled checker
+    (LINE_COLORS[4], "h", True),  # the same colour, hollow hexagons: that network with python-fcl
 )
-MEANS_SPREAD = 0.88  # of the space between two samplers, what a sampler's points spread over
+MEANS_SPREAD = 0.95  # of the space between two samplers, what a sampler's points spread over
 
 
 def own_ratios(
@@ -65,7 +66,11 @@ def own_ratios(
         names += list(by_sampler)
         ticks += list(x)
         centres.append(float(x.mean()))
-    _legend_entries(ax, series if slow else None)
+    drawn_as = {  # each verdict: whether a filled point, a hollow one, reads as it
+        hollow: {time_verdict(v[0], tie=tie) for by in table.values() for v in by.values()}
+        for hollow, table in ((False, cells), (True, slow))
+    }
+    _legend_entries(ax, series if slow else None, drawn_as)
     ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
     tie_band(ax, tie)
     ax.set_xticks(ticks, names)
@@ -94,12 +99,23 @@ def own_ratios(
     )
 
 
-def _legend_entries(ax, series: tuple[str, str] | None) -> None:
-    """The legend's entries: each verdict once, whether drawn or not, and where there are two ``series``, which a
-    point's fill names."""
+def _legend_entries(ax, series: tuple[str, str] | None, drawn_as: Mapping[bool, set[str]] | None = None) -> None:
+    """The legend's entries: each verdict once, drawn filled where a filled point reads as it, hollow where only a
+    hollow one does (review r24c: a filled triangle in the legend that no point showed), and where there are two
+    ``series``, which a point's fill names."""
+    drawn_as = drawn_as or {False: set(READS), True: set()}
     for k, reads in enumerate(READS):
         look = series_style(k)
-        ax.plot([], [], linestyle="none", marker=look["marker"], color=look["color"], markersize=7, label=_read(reads))
+        hollow = reads not in drawn_as[False] and reads in drawn_as.get(True, set())
+        ax.plot(
+            [],
+            [],
+            linestyle="none",
+            marker=look["marker"],
+            markersize=7,
+            label=_read(reads),
+            **_fill(look["color"], hollow),
+        )
     for hollow, name in zip((False, True), series or ()):
         label = f"{'hollow' if hollow else 'filled'}: {name}"
         ax.plot([], [], linestyle="none", marker="o", markersize=7, label=label, **_fill(COLORS["ink"], hollow))
@@ -187,18 +203,22 @@ def means_grid(
     *,
     tie: float = TIE,
     ylim: tuple[float, float] | None = None,
+    ticks: tuple[float, ...] = (),
+    row_height: float = 2.3,
     samplers: tuple[str, ...] = ("BS", "OB", "G", "BT"),
 ) -> Figure:
     """``{panel title: {series: {sampler: ratio}}}`` of time ratios with / without prediction (below 1: saves), one
     panel per title in a grid of two columns: a point per series and sampler (a series keeps its place, colour and
     marker in every panel, :data:`MEANS_STYLES`), read against the line at 1 and the shaded tie band, on one log axis
-    shared by every panel (``ylim``, where given, e.g. to share it with another figure; else every point's range), the
-    legend once, over the grid."""
+    shared by every panel (``ylim``, where given; else every point's range; ``ticks`` labelled beside its 1-2-5 steps,
+    e.g. the tie band's edges; ``row_height`` inches a row of panels), the legend once, over the grid. The text
+    alternative counts each series' points as the page's rule reads them (:func:`toolkit.util.verdicts.time_verdict`
+    on the ratio shown to two decimals)."""
     names = list(dict.fromkeys(name for series in panels.values() for name in series))
     if len(names) > len(MEANS_STYLES):
         raise ValueError(f"{len(names)} series: means_grid has looks for {len(MEANS_STYLES)}")
     rows = -(-len(panels) // 2)
-    fig = Figure(figsize=(PAGE_WIDTH, 2.3 * rows + 1.1))
+    fig = Figure(figsize=(PAGE_WIDTH, row_height * rows + 1.1))
     grid = fig.subplots(rows, 2, squeeze=False, sharey=True)
     axes = list(grid.flat)
     said = []
@@ -212,17 +232,14 @@ def means_grid(
                 [ratios[s] for s in samplers],
                 linestyle="none",
                 marker=marker,
-                markersize=5.5,
+                markersize=5,
                 label=name,
                 zorder=3,
                 **_fill(colour, hollow),
             )
             line.set_path_effects(halo(1.0))
         every = np.array([[ratios[s] for s in samplers] for ratios in series.values()])  # (series, samplers)
-        said.append(
-            f"{title}: {len(series)} series, ratios from {every.min():.2f} to {every.max():.2f}, below 1 for "
-            f"{int(np.sum(every < 1))} of {every.size}"
-        )
+        said.append(f"{title}: ratios from {every.min():.2f} to {every.max():.2f}")
         ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
         tie_band(ax, tie)
         ax.set_xticks(np.arange(len(samplers) - 1) + 0.5, minor=True)  # a sampler's points between two lines
@@ -232,6 +249,7 @@ def means_grid(
         ax.set_xlim(-0.5, len(samplers) - 0.5)
         ax.set_title(title, fontsize=10)
         ax.tick_params(labelsize=9)
+        ax.tick_params(axis="y", labelsize=8)
     for ax in axes[len(panels) :]:
         ax.set_visible(False)
     for ax in grid[:, 0]:
@@ -243,11 +261,23 @@ def means_grid(
     axes[0].set_yscale("log")
     axes[0].set_ylim(low, high)
     log_ticks(axes[0])  # shared by every panel
+    if ticks:
+        shown = sorted({*axes[0].get_yticks(), *(t for t in ticks if low <= t <= high)})
+        axes[0].set_yticks(shown, [f"{t:g}" for t in shown])
     legend_above(fig, axes[:1], 1)  # one column: two of these names side by side overflow the page
+    read: dict[str, list[str]] = {name: [] for name in names}  # each series' points, as the page's rule reads them
+    for series in panels.values():
+        for name, ratios in series.items():
+            read[name] += [time_verdict(round(float(ratios[s]), 2), tie=tie) for s in samplers]
+    counted = "; ".join(
+        f"{name}: {said.count(SAVES)} of {len(said)} save time ({1 - tie:.2f} or less), {said.count(TIES)} tie, "
+        f"{said.count(COSTS)} cost time ({1 + tie:.2f} or more)"
+        for name, said in read.items()
+    )
     text = (
         "Mean planning time with prediction divided by the mean without, a point per sampler and series, one panel "
         f"per scenario on one log scale, read against the line at 1 and the shaded {band_words(tie)}; below 1 "
-        f"prediction saves time. {'; '.join(said)}."
+        f"prediction saves time. {'; '.join(said)}. Counted by series: {counted}."
     )
     parts = [
         Part(
