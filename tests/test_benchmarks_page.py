@@ -259,7 +259,8 @@ def test_what_it_means_quotes_the_run_with_python_fcl_on_both_sides():
     rates = recorded.table(FCL_ALIKE, "Checker throughput")
     faster = [recorded.ours(r["learned cfg/s"]) / recorded.ours(r["FCL cfg/s"]) for r in rates.values()]
     assert f"the `strong` network answers {min(faster):.1f}–{max(faster):.1f} times as many configurations" in flat
-    assert f"({' and '.join(', '.join(names).rsplit(', ', 1))}, 100 queries a sampler)" in flat
+    listed = " and ".join(", ".join(names).rsplit(", ", 1))
+    assert f"({listed}, 100 queries a scenario, the same for each sampler)" in flat
     assert f"mean time by {saving}, the paper's direction. {beside_table3(scenarios)}" in flat
     ties = sum(0.9 < r < 1.1 for r in own)  # chapter 04's tie band: within 10 % of 1
     tied = f"total time tied in {ties} of {len(own)} cells: the median of its own ratio, with / without, was {ratios}"

@@ -221,35 +221,7 @@ def means_grid(
     fig = Figure(figsize=(PAGE_WIDTH, row_height * rows + 1.1))
     grid = fig.subplots(rows, 2, squeeze=False, sharey=True)
     axes = list(grid.flat)
-    said = []
-    for ax, (title, series) in zip(axes, panels.items()):
-        for name, ratios in series.items():
-            k = names.index(name)
-            colour, marker, hollow = MEANS_STYLES[k]
-            x = np.arange(len(samplers)) + (k - (len(names) - 1) / 2) * MEANS_SPREAD / len(names)
-            (line,) = ax.plot(
-                x,
-                [ratios[s] for s in samplers],
-                linestyle="none",
-                marker=marker,
-                markersize=5,
-                label=name,
-                zorder=3,
-                **_fill(colour, hollow),
-            )
-            line.set_path_effects(halo(1.0))
-        every = np.array([[ratios[s] for s in samplers] for ratios in series.values()])  # (series, samplers)
-        said.append(f"{title}: ratios from {every.min():.2f} to {every.max():.2f}")
-        ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
-        tie_band(ax, tie)
-        ax.set_xticks(np.arange(len(samplers) - 1) + 0.5, minor=True)  # a sampler's points between two lines
-        ax.grid(True, axis="x", which="minor", color=COLORS["shade"], linewidth=0.8)
-        ax.tick_params(axis="x", which="minor", length=0)
-        ax.set_xticks(np.arange(len(samplers)), samplers)
-        ax.set_xlim(-0.5, len(samplers) - 0.5)
-        ax.set_title(title, fontsize=10)
-        ax.tick_params(labelsize=9)
-        ax.tick_params(axis="y", labelsize=8)
+    said = [_means_panel(ax, title, series, names, samplers, tie) for ax, (title, series) in zip(axes, panels.items())]
     for ax in axes[len(panels) :]:
         ax.set_visible(False)
     for ax in grid[:, 0]:
@@ -265,14 +237,52 @@ def means_grid(
         shown = sorted({*axes[0].get_yticks(), *(t for t in ticks if low <= t <= high)})
         axes[0].set_yticks(shown, [f"{t:g}" for t in shown])
     legend_above(fig, axes[:1], 1)  # one column: two of these names side by side overflow the page
+    return _means_described(fig, panels, names, samplers, tie, said)
+
+
+def _means_panel(ax, title: str, series: Mapping[str, Mapping[str, float]], names, samplers, tie: float) -> str:
+    """One panel of :func:`means_grid`: a point per series and sampler, the line at 1 and the tie band; its range in
+    words."""
+    for name, ratios in series.items():
+        k = names.index(name)
+        colour, marker, hollow = MEANS_STYLES[k]
+        x = np.arange(len(samplers)) + (k - (len(names) - 1) / 2) * MEANS_SPREAD / len(names)
+        (line,) = ax.plot(
+            x,
+            [ratios[s] for s in samplers],
+            linestyle="none",
+            marker=marker,
+            markersize=5,
+            label=name,
+            zorder=3,
+            **_fill(colour, hollow),
+        )
+        line.set_path_effects(halo(1.0))
+    every = np.array([[ratios[s] for s in samplers] for ratios in series.values()])  # (series, samplers)
+    ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
+    tie_band(ax, tie)
+    ax.set_xticks(np.arange(len(samplers) - 1) + 0.5, minor=True)  # a sampler's points between two lines
+    ax.grid(True, axis="x", which="minor", color=COLORS["shade"], linewidth=0.8)
+    ax.tick_params(axis="x", which="minor", length=0)
+    ax.set_xticks(np.arange(len(samplers)), samplers)
+    ax.set_xlim(-0.5, len(samplers) - 0.5)
+    ax.set_title(title, fontsize=10)
+    ax.tick_params(labelsize=9)
+    ax.tick_params(axis="y", labelsize=8)
+    return f"{title}: ratios from {every.min():.2f} to {every.max():.2f}"
+
+
+def _means_described(fig: Figure, panels, names, samplers, tie: float, said: list[str]) -> Figure:
+    """:func:`means_grid`'s text alternative: each panel's range, each series' points counted as the page's rule
+    reads them, and a table per panel."""
     read: dict[str, list[str]] = {name: [] for name in names}  # each series' points, as the page's rule reads them
     for series in panels.values():
         for name, ratios in series.items():
             read[name] += [time_verdict(round(float(ratios[s]), 2), tie=tie) for s in samplers]
     counted = "; ".join(
-        f"{name}: {said.count(SAVES)} of {len(said)} save time ({1 - tie:.2f} or less), {said.count(TIES)} tie, "
-        f"{said.count(COSTS)} cost time ({1 + tie:.2f} or more)"
-        for name, said in read.items()
+        f"{name}: {verdicts.count(SAVES)} of {len(verdicts)} save time ({1 - tie:.2f} or less), "
+        f"{verdicts.count(TIES)} tie, {verdicts.count(COSTS)} cost time ({1 + tie:.2f} or more)"
+        for name, verdicts in read.items()
     )
     text = (
         "Mean planning time with prediction divided by the mean without, a point per sampler and series, one panel "
