@@ -810,8 +810,14 @@ def _chapter_05_answer(found: str, measured: list[list[str]], scored: list[list[
     problems = []
     totals = [r for r in measured if "median of each query's own ratio (100 queries)" in r[0]]
     saves = any(cell.startswith(findings.SAVES) for r in totals for cell in r[1:])
-    if len(totals) != 2 or saves or "**No.** On 3DC-7 prediction never shortened a whole query" not in found:
+    if len(totals) != 2 or saves or "**No.** On 3DC-7 no sampler's whole query saved 10 % or more" not in found:
         problems.append(f"05: the answer's 'No' does not match the closing's total-time rows: {totals}")
+    # reader r25b: the answer gives the paper's side, the samplers its Table 3 row in the closing table saves for
+    table3 = [r for r in measured if r[0].startswith("the paper's Table 3: ratio of the means")]
+    said = re.search(r"The paper's Table 3 says yes for ([A-Z]+(?: and [A-Z]+)*) \(", found)
+    paper_saves = [s for r in table3[:1] for s, cell in zip(SAMPLERS, r[1:]) if cell.startswith(findings.SAVES)]
+    if said is None or said.group(1).split(" and ") != paper_saves:
+        problems.append(f"05: the answer's paper side is not its Table 3 row: {said and said.group(1)}, {paper_saves}")
     cut = re.search(r"cut sampling time by (\d+)–(\d+) % \(means\)", found)
     sampling = [
         r for r in measured if r[0].startswith("`strong` network, python-fcl on both sides: ") and "less" in r[0]
