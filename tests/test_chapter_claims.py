@@ -347,6 +347,29 @@ def test_chapter_04_fails_a_verdict_its_numbers_contradict():
     assert problems(CH04, nb) == ["04: links 2: says 'network cheaper (3.33)', its numbers say 'network dearer'"]
 
 
+def test_chapter_04_section_5_says_cant_tell_where_the_machines_speed_moved():
+    """Review r25a: section 5's verdict read "prediction cost time" while the line under it said the same exact check
+    of an edge point took 1.59 times as long with prediction. Where that line blames the machine, the verdict says
+    "can't tell"; where it does not, the verdict is the table's."""
+    what = "An accurate network (the `strong` preset's) inside the paper's Algorithm 1, 3DC-7, uniform sampler"
+    moved = findings.planning_sentence(what, EAGER_RUN, moved=2.03) + findings.FEW_QUERIES.format(n=4)
+    blamed = findings.per_point_sentence({"without": 320e-9, "with": 650e-9})
+    same = findings.per_point_sentence({"without": 500e-9, "with": 520e-9})
+
+    def section_5(said: str, per_point: str) -> dict:
+        nb = chapter_04()
+        outputs = [o["data"] for c in nb["cells"] for o in c.get("outputs", []) if "data" in o]
+        [data] = [d for d in outputs if d.get("text/markdown") == EAGER_SAID]
+        data["text/markdown"] = said + "\n\n" + per_point
+        return nb
+
+    assert problems(CH04, section_5(moved, blamed)) == []
+    assert problems(CH04, section_5(EAGER_SAID, same)) == []
+    wrong = problems(CH04, section_5(EAGER_SAID, blamed))
+    assert len(wrong) == 1 and wrong[0].startswith("04: section 5 says") and "can't tell" in wrong[0]
+    assert len(problems(CH04, section_5(moved, same))) == 1
+
+
 def test_chapter_04_fails_where_the_network_is_the_cheaper_check_its_prose_says_it_is_not():
     nb = chapter_04()
     rates = {"ratio": 1.5, "exact_cfg_per_s": 1e6, "fcl_cfg_per_s": 2e5, "learned_cfg_per_s": 1.5e6}

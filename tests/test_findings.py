@@ -242,6 +242,21 @@ def test_per_point_sentence_blames_the_machine_where_an_edge_point_costs_more_in
     assert "machine" in findings.per_point_sentence({"without": 500e-9, "with": 450e-9})  # 0.90: a change that counts
 
 
+def test_planning_sentence_says_cant_tell_where_the_same_exact_check_moved():
+    """Review r25a: "prediction cost time" beside a line saying the same exact check took 1.59 times as long with
+    prediction. speed_moved gives the ratio only outside the tie band; planning_sentence then says "can't tell"."""
+    slower = {"without": summary([1.0, 1.0, 1.0]), "with": summary([2.0, 2.0, 2.0])}
+    assert findings.speed_moved({"without": 500e-9, "with": 520e-9}) is None
+    ratio = findings.speed_moved({"without": 400e-9, "with": 636e-9})
+    assert ratio == pytest.approx(1.59)
+    said = findings.planning_sentence("Algorithm 1", slower, moved=ratio)
+    assert said.endswith(
+        "2.00 (middle half 2.00–2.00), can't tell: the machine's speed moved (the same exact check of an edge point "
+        "took 1.59 times as long with prediction)."
+    )
+    assert findings.planning_sentence("Algorithm 1", slower).endswith("prediction cost time.")
+
+
 def test_table_3_against_the_papers_text_names_the_cells_its_means_do_not_give():
     """Review r17a, by hand from §V's means: 3DO BT total 40.40 -> 43.13 is -6.8 % (Table 3: -8 %), 3DO OB sampling
     1.13 -> 0.56 is 50 % (58 %), 2DS BT sampling 0.26 -> 0.11 is 58 % (74 %); 3DC-7 total BT 0.95 -> 0.44 is 54 % as

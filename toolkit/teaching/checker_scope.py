@@ -140,8 +140,8 @@ def why_sentence(tables: Tables | None = None) -> str:
         "Why: the network decides only the samples, a small part of Algorithm 1's work (section 5 counts the checks: "
         "nearly all are points along the roadmap's edges, which both sides check exactly), and in the run with the "
         f"fast checker a network call cost {min(costs):.1f} to {max(costs):.0f} times as much per configuration "
-        f"as the exact check it replaced ({per}; `docs/results.md`'s throughput table); and in the lazy PRM, "
-        "screening edges with the network costs more than the exact edge check it replaces."
+        f"as the exact check it replaced ({per}; `docs/results.md`'s throughput table); in the lazy PRM the network "
+        "screens edges too, and section 3's stage table shows what that did to each sampler's connection time."
     )
 
 

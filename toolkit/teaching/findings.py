@@ -79,15 +79,31 @@ SAID = {  # a planning verdict at the end of a sentence (its band filled in)
 }
 
 
-def planning_sentence(what: str, row: Mapping[str, Mapping], tie: float = TIE) -> str:
+SPEED_MOVED = (  # a planning sentence's verdict where the same exact check's cost moved between the modes (review r25a)
+    "can't tell: the machine's speed moved (the same exact check of an edge point took {ratio:.2f} times as long "
+    "with prediction)"
+)
+
+
+def speed_moved(per_point: Mapping[str, float], tie: float = TIE) -> float | None:
+    """The time per exact edge point with / without prediction, ``{"without": s, "with": s}``, where it lies outside
+    the tie band (the machine's speed moved between the two modes' runs, :func:`per_point_sentence`), else ``None``."""
+    ratio = per_point["with"] / per_point["without"]
+    return None if time_verdict(ratio, tie=tie) == TIES else ratio
+
+
+def planning_sentence(what: str, row: Mapping[str, Mapping], tie: float = TIE, moved: float | None = None) -> str:
     """One sentence a chapter can print where it states its answer: ``what`` was timed, over how many queries, the
     per-query ratios' median and middle half, and the verdict of :func:`planning_verdict` in words (never "saves"
-    beside ratios above 1: the words are read from the same interval as the table's)."""
+    beside ratios above 1: the words are read from the same interval as the table's); with ``moved``
+    (:func:`speed_moved`), "can't tell" instead: the same exact check cost that much more or less in one mode, so the
+    time ratio measures the machine, not prediction (review r25a)."""
     median, q1, q3, said = planning_verdict(row, tie)
     n = row["without"]["n_queries"]
+    verdict = SAID[said].format(band=f"{tie:.0%}") if moved is None else SPEED_MOVED.format(ratio=moved)
     return (
         f"{what}, {n} {'query' if n == 1 else 'queries'}: time with / without prediction {median:.2f} (middle half "
-        f"{q1:.2f}–{q3:.2f}), {SAID[said].format(band=f'{tie:.0%}')}."
+        f"{q1:.2f}–{q3:.2f}), {verdict}."
     )
 
 
