@@ -23,6 +23,7 @@ import pytest
 from chapter_claims import problems
 
 from toolkit.experiments import paper_numbers
+from toolkit.learning import metrics
 from toolkit.teaching import chapter05, checker_scope, findings, recorded
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -311,7 +312,7 @@ def paper_mlp() -> str:
     """Section 6's table of what the `paper` preset's MLP answers on unseen workspaces (docs/results.md, Table 2)."""
     table = recorded.table("paper", "MLP accuracy")
     rates = {name: [recorded.ours(table[key][f"Unseen {r}"]) for r in ("TPR", "TNR")] for name, key in SCENARIOS_4}
-    rows = [f"| {name} | {findings.what_it_answers(*rate)} |" for name, rate in rates.items()]
+    rows = [f"| {name} | {metrics.what_it_answers(*rate)} |" for name, rate in rates.items()]
     return "| scenario | what it answers |\n| --- | --- |\n" + "\n".join(rows)
 
 
@@ -512,9 +513,9 @@ def test_ratio_table_counts_each_rows_verdicts():
 
 
 def test_what_it_answers_reads_whole_percents():
-    assert findings.what_it_answers(1.0, 0.0) == '"valid" to every sample'
-    assert findings.what_it_answers(0.004, 0.996) == '"invalid" to every sample'
-    assert findings.what_it_answers(0.28, 0.83) == findings.what_it_answers(0.99, 0.0) == "some of each"
+    assert metrics.what_it_answers(1.0, 0.0) == '"valid" to every sample'
+    assert metrics.what_it_answers(0.004, 0.996) == '"invalid" to every sample'
+    assert metrics.what_it_answers(0.28, 0.83) == metrics.what_it_answers(0.99, 0.0) == "some of each"
 
 
 def test_chapter_04_fails_where_section_5s_counts_contradict_its_prose():

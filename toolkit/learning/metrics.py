@@ -50,3 +50,15 @@ def reconstruction_accuracy(reconstructed, grids) -> np.ndarray:
         raise ValueError(f"reconstructions {rec.shape} and grids {x.shape} must be equal arrays (W, *grid)")
     match = np.sign(rec) == np.sign(x)
     return match.reshape(len(x), -1).mean(axis=1)
+
+
+def what_it_answers(tpr: float, tnr: float) -> str:
+    """What a classifier with these rates on a test amounts to, read at the printed precision (whole percent):
+    '"valid" to every sample' (keeps every valid one, rejects no colliding one), '"invalid" to every sample', or
+    "some of each"."""
+    keeps, rejects = round(100 * tpr), round(100 * tnr)
+    if (keeps, rejects) == (100, 0):
+        return '"valid" to every sample'
+    if (keeps, rejects) == (0, 100):
+        return '"invalid" to every sample'
+    return "some of each"

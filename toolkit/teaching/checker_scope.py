@@ -17,6 +17,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from toolkit.experiments.paper_numbers import IMPROVEMENT
+from toolkit.learning import metrics
 from toolkit.teaching import findings, recorded
 from toolkit.teaching.recorded import Tables
 from toolkit.util.verdicts import COSTS, SAVES, TIES, per_query_ratios, time_verdict
@@ -240,7 +241,7 @@ def sampling_inside(tables: Tables | None = None) -> dict[str, dict[str, float]]
 
 def _answers(tpr: float, tnr: float) -> str:
     """What a classifier with these rates answers, on two lines (the table fits the page)."""
-    return findings.what_it_answers(tpr, tnr).replace(" to ", " to<br>")
+    return metrics.what_it_answers(tpr, tnr).replace(" to ", " to<br>")
 
 
 def section_6(this_run: dict[str, float], tables: Tables | None = None) -> list[str]:

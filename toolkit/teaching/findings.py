@@ -1,12 +1,11 @@
 """What a chapter prints from what it has just measured: small Markdown tables, a verdict word in each row.
 
-The chapters' prose states the verdict a student can repeat (written, and true at quick and full size); the numbers
-behind it are computed here and shown as tables (``NOTEBOOKS.md``). A verdict is read from an *interval*, not from
-one number, so that a busy machine cannot turn "saves" into "costs": the middle half of the per-query ratios (each
-query timed without and with prediction in turn) for planning, a band of :data:`CLOSE` for a checker's cost timed in
-one round. Where the interval crosses the tie band the verdict is "can't tell" (the words and bands:
-:mod:`toolkit.util.verdicts`). One statistic throughout: medians over the queries, their spread as quartiles; a single
-slow query that moves a mean is listed.
+The chapters' prose states the verdict a student can repeat; the numbers behind it are computed here and shown as
+tables (``NOTEBOOKS.md``). A verdict is read from an *interval*, not from one number, so that a busy machine cannot
+turn "saves" into "costs": the middle half of the per-query ratios (each query timed without and with prediction in
+turn) for planning, a band of :data:`CLOSE` for a checker's cost timed in one round. Where the interval crosses the
+tie band the verdict is "can't tell" (the words and bands: :mod:`toolkit.util.verdicts`). One statistic throughout:
+medians over the queries, their spread as quartiles; a single slow query that moves a mean is listed.
 """
 
 from __future__ import annotations
@@ -205,18 +204,6 @@ def ratio_table(
             cells.append(counted)
         rows.append(f"| {label} | " + " | ".join(cells) + " |")
     return "\n".join(rows)
-
-
-def what_it_answers(tpr: float, tnr: float) -> str:
-    """What a classifier with these rates on a test amounts to, read at the printed precision (whole percent):
-    '"valid" to every sample' (keeps every valid one, rejects no colliding one), '"invalid" to every sample', or
-    "some of each"."""
-    keeps, rejects = round(100 * tpr), round(100 * tnr)
-    if (keeps, rejects) == (100, 0):
-        return '"valid" to every sample'
-    if (keeps, rejects) == (0, 100):
-        return '"invalid" to every sample'
-    return "some of each"
 
 
 def throughput_table(measured: Mapping[str, Mapping[str, float]], batch: int, tie: float = CLOSE) -> str:
