@@ -15,7 +15,8 @@ it is compared with, and take the median of the runs: on a shared machine one ru
 
 import sys
 
-from toolkit.experiments.bench import SMALL_CALLS, small_call_cost
+from toolkit.experiments.bench import small_call_cost
+from toolkit.experiments.small_calls import SMALL_CALLS
 from toolkit.scenarios import get
 
 if __name__ == "__main__":
