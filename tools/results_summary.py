@@ -128,12 +128,19 @@ def told(groups: dict[str, list[tuple[str, float]]]) -> str:
     return ", ".join(parts[:-1]) + (" and " if len(parts) > 1 else "") + parts[-1]
 
 
-def cae(tables: Tables) -> str:
+def _cae_unseen(tables: Tables) -> tuple[list[float], list[float], float]:
+    """The `paper` CAE's accuracy on unseen grids and a CAE answering "free" everywhere's, per scenario (Table 1),
+    and the most the first beats the second by (0 or less: no better)."""
     rows = recorded.table("paper", "CAE reconstruction", tables)
     ours = [recorded.ours(row["Unseen"]) for row in rows.values()]
-    papers = [recorded.ours(row["Unseen"].split("/")[-1]) for row in rows.values()]
     free = [recorded.ours(row["all free: Seen / Unseen"].split("/")[-1]) for row in rows.values()]
-    gain = max(o - f for o, f in zip(ours, free))
+    return ours, free, max(o - f for o, f in zip(ours, free))
+
+
+def cae(tables: Tables) -> str:
+    rows = recorded.table("paper", "CAE reconstruction", tables)
+    papers = [recorded.ours(row["Unseen"].split("/")[-1]) for row in rows.values()]
+    ours, free, gain = _cae_unseen(tables)
     than_free = (
         "no better, scenario by scenario, than a CAE that answers “free” everywhere"
         if round(gain * 100) <= 0
@@ -366,10 +373,7 @@ def short(tables: Tables) -> str:
     """The summary's Markdown, without its markers: five one-sentence answers a student can repeat (reader r23c, item
     1), every number computed from the tables; the statistics they count and the tables they read are defined in the
     findings under Figure 1 (:func:`summary`)."""
-    rows = recorded.table("paper", "CAE reconstruction", tables)
-    ours = [recorded.ours(row["Unseen"]) for row in rows.values()]
-    free = [recorded.ours(row["all free: Seen / Unseen"].split("/")[-1]) for row in rows.values()]
-    better = max(o - f for o, f in zip(ours, free))
+    ours, free, better = _cae_unseen(tables)
     cae_said = (
         "no better than answering “all free”"
         if round(better * 100) <= 0
