@@ -24,7 +24,7 @@ from matplotlib.figure import Figure
 
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import COLORS, LINE_COLORS, PAGE_WIDTH, halo, series_style
-from toolkit.plots.timings import band_words, legend_above, log_ticks, tie_band
+from toolkit.plots.timings import band_words, legend_above, log_ticks, ratio_parts, tie_band
 from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 
 READS = (COSTS, TIES, SAVES)  # what a median reads as, in the legend's order; each its own colour and marker
@@ -289,13 +289,4 @@ def _means_described(fig: Figure, panels, names, samplers, tie: float, said: lis
         f"per scenario on one log scale, read against the line at 1 and the shaded {band_words(tie)}; below 1 "
         f"prediction saves time. {'; '.join(said)}. Counted by series: {counted}."
     )
-    parts = [
-        Part(
-            title,
-            "time with prediction / time without; below 1, prediction saves time",
-            ("series", *samplers),
-            tuple((name, *(f"{ratios[s]:.2f}" for s in samplers)) for name, ratios in series.items()),
-        )
-        for title, series in panels.items()
-    ]
-    return describe(fig, text, parts)
+    return describe(fig, text, ratio_parts(panels, samplers))

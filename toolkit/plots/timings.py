@@ -8,6 +8,7 @@ against several baselines on one log scale (:func:`ratio_comparison`), and check
 from __future__ import annotations
 
 import textwrap
+from collections.abc import Mapping, Sequence
 
 import numpy as np
 from matplotlib.figure import Figure
@@ -261,15 +262,7 @@ def ratio_comparison(
     text = "Planning time with prediction divided by the time without, a point per sampler and series, log scale, read"
     text += " against the line at 1" + ("" if tie is None else f" and the shaded {band_words(tie)}")
     text += "; below 1 prediction saves"
-    parts = [
-        Part(
-            title,
-            "time with prediction / time without; below 1, prediction saves time",
-            ("series", *PAPER_SAMPLERS),
-            tuple((name, *(f"{ratios[s]:.2f}" for s in PAPER_SAMPLERS)) for name, ratios in series.items()),
-        )
-        for title, series in baselines.items()
-    ]
+    parts = ratio_parts(baselines, PAPER_SAMPLERS)
     return describe(fig, f"{text} time. {'; '.join(said)}.", parts)
 
 
@@ -391,3 +384,17 @@ def segment_table(panels: dict[str, dict]) -> str:
             cells = (f"{table[k][i, 0]:.1f} / {table[k][i, 1]:.1f}" for k in (*STAGE_KEYS, "other_s"))
             rows.append(f"| {name}, {sampler} | " + " | ".join(cells) + " |")
     return "\n".join(rows)
+
+
+def ratio_parts(panels: Mapping[str, Mapping[str, Mapping[str, float]]], samplers: Sequence[str]) -> list[Part]:
+    """A ratio figure's tables for its text alternative: per panel, a row per series, a column per sampler, each
+    time with / without prediction to two decimals."""
+    return [
+        Part(
+            title,
+            "time with prediction / time without; below 1, prediction saves time",
+            ("series", *samplers),
+            tuple((name, *(f"{ratios[s]:.2f}" for s in samplers)) for name, ratios in series.items()),
+        )
+        for title, series in panels.items()
+    ]
