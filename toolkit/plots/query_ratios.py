@@ -10,9 +10,9 @@ with our compiled checker (filled) and with python-fcl on both sides (hollow).
 
 :func:`means_grid` draws the page's Figures 2 and 3: mean time ratios (Table 3's statistic) of several series, one
 panel per scenario in a grid of two columns, one legend over them all, one log axis shared by every panel. Its series
-take colours and markers of their own (:data:`MEANS_STYLES`), none of the three verdict looks of :func:`own_ratios`, so
-a reader who carries Figure 1's key into Figure 2 cannot misread it. Each returns a matplotlib ``Figure``; never calls
-``show()``.
+take a hue and a marker each (:data:`MEANS_STYLES`), no pair of them one of the three verdict looks of
+:func:`own_ratios`, so a reader who carries Figure 1's key into Figure 2 cannot misread it. Each returns a
+matplotlib ``Figure``; never calls ``show()``.
 """
 
 from __future__ import annotations
@@ -21,6 +21,7 @@ from collections.abc import Mapping
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.ticker import NullLocator
 
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import COLORS, LINE_COLORS, PAGE_WIDTH, halo, series_style
@@ -30,14 +31,17 @@ from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 READS = (COSTS, TIES, SAVES)  # what a median reads as, in the legend's order; each its own colour and marker
 GAP = 1  # an empty slot between two scenarios' groups of samplers
 APART = 0.22  # where a scenario has two series: each point this far from its sampler's tick, the first to the left
+BELOW_1 = (0.7, 0.8, 0.9)  # labelled on :func:`own_ratios`' axis, where the savings lie, beside its 1-2-5 steps
+NEAR_1 = 1.25  # :func:`means_grid`'s extra ticks this close to 1 are labelled on the right, away from the "1"
 Cells = Mapping[str, Mapping[str, tuple[float, float, float]]]  # {scenario: {sampler: (median, q1, q3)}}
 MEANS_STYLES = (  # :func:`means_grid`'s series in turn: colour, marker, hollow; no verdict look of own_ratios
     (LINE_COLORS[5], "X", False),  # grey crosses: the paper's own numbers
     (LINE_COLORS[3], "D", False),  # bluish green diamonds: a network with our compiled checker
-    (LINE_COLORS[3], "v", True),  # the same colour hollow: the same network with python-fcl
+    (LINE_COLORS[0], "v", True),  # blue, hollow triangles: the same network with python-fcl
     (LINE_COLORS[4], "P", False),  # reddish purple pluses: another network with our compiled checker
-    (LINE_COLORS[4], "h", True),  # the same colour, hollow hexagons: that network with python-fcl
+    (LINE_COLORS[1], "h", True),  # vermillion, hollow hexagons: that network with python-fcl
 )
+"""Each series a hue of its own, its marker a second cue (review r25c: two pinks and two greens alike at 1280 px)."""
 MEANS_SPREAD = 0.95  # of the space between two samplers, what a sampler's points spread over
 
 
@@ -66,11 +70,7 @@ def own_ratios(
         names += list(by_sampler)
         ticks += list(x)
         centres.append(float(x.mean()))
-    drawn_as = {  # each verdict: whether a filled point, a hollow one, reads as it
-        hollow: {time_verdict(v[0], tie=tie) for by in table.values() for v in by.values()}
-        for hollow, table in ((False, cells), (True, slow))
-    }
-    _legend_entries(ax, series if slow else None, drawn_as)
+    _legend_entries(ax, series if slow else None)
     ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
     tie_band(ax, tie)
     ax.set_xticks(ticks, names)
@@ -87,6 +87,9 @@ def own_ratios(
     ax.set_yscale("log")
     ax.set_ylim(min(*drawn, 1 - tie) / 1.15, max(*drawn, 1 + tie) * 1.15)
     log_ticks(ax)
+    low, high = ax.get_ylim()
+    shown = sorted({round(s, 6) for s in (*ax.get_yticks(), *BELOW_1) if low <= s <= high})  # r25c: 0.7 alone below 1
+    ax.set_yticks(shown, [f"{s:g}" for s in shown])
     ax.set_ylabel("time with / without\n(below 1: saves)")
     ax.set_title(title, fontsize=10)
     legend_above(fig, [ax], 2)
@@ -99,23 +102,14 @@ def own_ratios(
     )
 
 
-def _legend_entries(ax, series: tuple[str, str] | None, drawn_as: Mapping[bool, set[str]] | None = None) -> None:
-    """The legend's entries: each verdict once, drawn filled where a filled point reads as it, hollow where only a
-    hollow one does (review r24c: a filled triangle in the legend that no point showed), and where there are two
-    ``series``, which a point's fill names."""
-    drawn_as = drawn_as or {False: set(READS), True: set()}
+def _legend_entries(ax, series: tuple[str, str] | None) -> None:
+    """The legend's entries: each verdict once, by its colour and shape, always filled; and where there are two
+    ``series``, which a point's fill names, on a plain circle. Fill is the checker's cue alone (review r25c: a hollow
+    "saves time" in the legend read as python-fcl's, where hollow meant python-fcl); the caption counts which
+    checker's points read as each verdict."""
     for k, reads in enumerate(READS):
         look = series_style(k)
-        hollow = reads not in drawn_as[False] and reads in drawn_as.get(True, set())
-        ax.plot(
-            [],
-            [],
-            linestyle="none",
-            marker=look["marker"],
-            markersize=7,
-            label=_read(reads),
-            **_fill(look["color"], hollow),
-        )
+        ax.plot([], [], linestyle="none", marker=look["marker"], markersize=7, label=_read(reads), color=look["color"])
     for hollow, name in zip((False, True), series or ()):
         label = f"{'hollow' if hollow else 'filled'}: {name}"
         ax.plot([], [], linestyle="none", marker="o", markersize=7, label=label, **_fill(COLORS["ink"], hollow))
@@ -211,9 +205,9 @@ def means_grid(
     panel per title in a grid of two columns: a point per series and sampler (a series keeps its place, colour and
     marker in every panel, :data:`MEANS_STYLES`), read against the line at 1 and the shaded tie band, on one log axis
     shared by every panel (``ylim``, where given; else every point's range; ``ticks`` labelled beside its 1-2-5 steps,
-    e.g. the tie band's edges; ``row_height`` inches a row of panels), the legend once, over the grid. The text
-    alternative counts each series' points as the page's rule reads them (:func:`toolkit.util.verdicts.time_verdict`
-    on the ratio shown to two decimals)."""
+    those within 25 % of 1, e.g. the tie band's edges, on the right of each row, apart from the "1"; ``row_height``
+    inches a row of panels), the legend once, over the grid. The text alternative counts each series' points as the
+    page's rule reads them (:func:`toolkit.util.verdicts.time_verdict` on the ratio shown to two decimals)."""
     names = list(dict.fromkeys(name for series in panels.values() for name in series))
     if len(names) > len(MEANS_STYLES):
         raise ValueError(f"{len(names)} series: means_grid has looks for {len(MEANS_STYLES)}")
@@ -233,9 +227,15 @@ def means_grid(
     axes[0].set_yscale("log")
     axes[0].set_ylim(low, high)
     log_ticks(axes[0])  # shared by every panel
+    beside = [t for t in ticks if low <= t <= high and 1 / NEAR_1 < t < NEAR_1]  # would crowd the "1"
     if ticks:
-        shown = sorted({*axes[0].get_yticks(), *(t for t in ticks if low <= t <= high)})
+        shown = sorted({round(t, 6) for t in (*axes[0].get_yticks(), *ticks) if low <= t <= high and t not in beside})
         axes[0].set_yticks(shown, [f"{t:g}" for t in shown])
+    for ax in grid[:, -1] if beside else ():  # review r25c: 0.9, 1 and 1.1 crammed into 20 px on the left
+        edges = ax.secondary_yaxis("right")
+        edges.set_yticks(beside, [f"{t:g}" for t in beside])
+        edges.yaxis.set_minor_locator(NullLocator())
+        edges.tick_params(labelsize=8, length=2, pad=1)
     legend_above(fig, axes[:1], 1)  # one column: two of these names side by side overflow the page
     return _means_described(fig, panels, names, samplers, tie, said)
 
