@@ -37,6 +37,15 @@ def test_the_viewer_picture_is_the_narrow_window_its_tool_photographs_at_twice_t
     assert COLUMN / window[0] > 1 and scale >= 2
 
 
+def test_the_viewer_picture_leaves_most_of_the_scene_clear_of_its_panel():
+    """Reader r25b: the panel, 340 px of a 680 px window and cut off at "Layers", hid the blocks behind it. Narrowed,
+    with two folders folded, it ends above the window's foot and covers under a third of the picture."""
+    from toolkit.viewer import browser
+
+    assert viewer_picture.PANEL_WIDTH / viewer_picture.WINDOW[0] < 0.4 < browser.PANEL_PX / viewer_picture.WINDOW[0]
+    assert set(viewer_picture.FOLD) == {"Workspace", "Samples"}
+
+
 def test_the_viewer_picture_outlines_the_office_on_its_floor_alone():
     """Reader r23b: a stray stroke poked out above the panel, an upright edge of the office's outline (6 units tall)
     whose foot the panel hides. The picture keeps the outline's four floor edges."""
