@@ -19,9 +19,11 @@ def size(png: str) -> tuple[int, int]:
 
 
 def test_the_jupyterlab_picture_is_one_cell_of_a_narrow_window_at_twice_the_pixels():
+    """Since review r25b, the cell from its 3D view down: its code filled a third of the picture, and the still
+    above the view repeated it small."""
     width, height = size("jupyterlab.png")
     window, scale = lab_browser.SHOT_WINDOW, lab_browser.SHOT_SCALE
-    again = "make it again: TOOLKIT_QUICK=1 python -m tools.lab_browser notebooks/05_3d_scenes.ipynb --screenshot"
+    again = "again: TOOLKIT_QUICK=1 python -m tools.lab_browser notebooks/05_3d_scenes.ipynb --view-only --screenshot"
     assert window[0] < width <= window[0] * scale, again  # twice the pixels of a window no wider than SHOT_WINDOW
     assert (width, height) != lab_browser.WINDOW, again  # one cell, not the page
     assert height <= lab_browser.SHOT_HEIGHT * scale, again  # the cell whole (reader r23b: a tall one was cut off)
