@@ -19,9 +19,11 @@ def size(png: str) -> tuple[int, int]:
 
 
 def test_the_jupyterlab_picture_is_one_cell_of_a_narrow_window_at_twice_the_pixels():
+    """Since review r25b, the cell from its 3D view down: its code filled a third of the picture, and the still
+    above the view repeated it small."""
     width, height = size("jupyterlab.png")
     window, scale = lab_browser.SHOT_WINDOW, lab_browser.SHOT_SCALE
-    again = "make it again: TOOLKIT_QUICK=1 python -m tools.lab_browser notebooks/05_3d_scenes.ipynb --screenshot"
+    again = "again: TOOLKIT_QUICK=1 python -m tools.lab_browser notebooks/05_3d_scenes.ipynb --view-only --screenshot"
     assert window[0] < width <= window[0] * scale, again  # twice the pixels of a window no wider than SHOT_WINDOW
     assert (width, height) != lab_browser.WINDOW, again  # one cell, not the page
     assert height <= lab_browser.SHOT_HEIGHT * scale, again  # the cell whole (reader r23b: a tall one was cut off)
@@ -35,6 +37,15 @@ def test_the_viewer_picture_is_the_narrow_window_its_tool_photographs_at_twice_t
     shot = (round(window[0] * scale), round(window[1] * scale))
     assert size("viewer.png") == shot, "make it again: python -m tools.viewer_picture docs/viewer.png"
     assert COLUMN / window[0] > 1 and scale >= 2
+
+
+def test_the_viewer_picture_leaves_most_of_the_scene_clear_of_its_panel():
+    """Reader r25b: the panel, 340 px of a 680 px window and cut off at "Layers", hid the blocks behind it. Narrowed,
+    with two folders folded, it ends above the window's foot and covers under a third of the picture."""
+    from toolkit.viewer import browser
+
+    assert viewer_picture.PANEL_WIDTH / viewer_picture.WINDOW[0] < 0.4 < browser.PANEL_PX / viewer_picture.WINDOW[0]
+    assert set(viewer_picture.FOLD) == {"Workspace", "Samples"}
 
 
 def test_the_viewer_picture_outlines_the_office_on_its_floor_alone():

@@ -3,7 +3,8 @@
 Used by ``tests/test_jupyterlab.py``, to make the README's screenshot, and to look at a
 whole rendered notebook, screen by screen (``--full-page``: ``lab_01.png``, ``lab_02.png``, ...)::
 
-    python -m tools.lab_browser notebooks/05_3d_scenes.ipynb --screenshot docs/jupyterlab.png
+    TOOLKIT_QUICK=1 python -m tools.lab_browser notebooks/05_3d_scenes.ipynb \\
+        --view-only --screenshot docs/jupyterlab.png
     TOOLKIT_QUICK=1 python -m tools.lab_browser notebooks/02_cae_reconstruction.ipynb \\
         --screenshot lab.png --full-page
 
@@ -181,12 +182,14 @@ def run_all(
     env: dict[str, str] | None = None,
     screenshot: str | Path | None = None,
     full_page: bool = False,
+    view_only: bool = False,
     timeout_s: float = 900.0,
 ) -> RenderedNotebook:
     """Open ``notebook`` in JupyterLab, run all cells, and count what the page shows.
 
     With ``screenshot``, save a PNG there of the cell that shows the first embedded viewer (of the page where
-    there is none); with ``full_page`` too, the whole notebook instead, a screen per PNG named after it
+    there is none); with ``view_only``, of that cell from the viewer down (the 3D view, its caption and what the
+    cell prints below); with ``full_page`` too, the whole notebook instead, a screen per PNG named after it
     (``lab.png``: ``lab_01.png``, ...)."""
     from playwright.sync_api import sync_playwright
 
@@ -215,7 +218,7 @@ def run_all(
                     if full_page:
                         rendered.screens = _save_screens(page, Path(screenshot))
                     else:
-                        _save_screenshot(page, rendered, Path(screenshot))
+                        _save_screenshot(page, rendered, Path(screenshot), view_only=view_only)
             finally:
                 browser.close()
     return rendered
@@ -260,12 +263,13 @@ def _close_side_panel(page) -> None:
         page.wait_for_timeout(500)  # the notebook widens, its outputs reflow
 
 
-def _save_screenshot(page, rendered: RenderedNotebook, path: Path) -> None:
+def _save_screenshot(page, rendered: RenderedNotebook, path: Path, *, view_only: bool = False) -> None:
     """A PNG of the cell that shows the first embedded viewer, its code and its output (of the page where there is
     none). The page is :data:`SHOT_WINDOW` wide, about a web page's column (the course site's home page shows the
     picture about 700 px wide), at :data:`SHOT_SCALE` times the pixels: a picture of the whole 1400 px window, so
     shrunk, left its text 6-8 px high. A cell taller than the window is shown whole, the window made as tall (up to
-    :data:`SHOT_HEIGHT`)."""
+    :data:`SHOT_HEIGHT`). ``view_only`` leaves out the cell's code and the outputs above the viewer's (reader r25b:
+    on the home page the code filled a third of the picture and the still repeated, small, what the view shows)."""
     path.parent.mkdir(parents=True, exist_ok=True)
     if not rendered.iframes:
         page.screenshot(path=str(path))
@@ -277,7 +281,13 @@ def _save_screenshot(page, rendered: RenderedNotebook, path: Path) -> None:
         page.wait_for_timeout(1000)  # the notebook reflows
     cell.scroll_into_view_if_needed()
     page.wait_for_timeout(3000)  # its WebGL scene draws
-    page.screenshot(path=str(path), clip=cell.bounding_box())
+    clip = cell.bounding_box()
+    if view_only:  # from the top left of the output holding the viewer (its empty prompt left out) to the cell's foot
+        view = cell.locator(".jp-OutputArea-output", has=page.locator("iframe")).first.bounding_box()
+        right, bottom = clip["x"] + clip["width"], clip["y"] + clip["height"]
+        left = view["x"] - 12  # a margin, so that the caption's text does not touch the picture's edge
+        clip = {"x": left, "y": view["y"], "width": right - left, "height": bottom - view["y"]}
+    page.screenshot(path=str(path), clip=clip)
 
 
 def _save_screens(page, path: Path) -> list[Screen]:
@@ -315,6 +325,11 @@ def main(argv: list[str] | None = None) -> int:
         help="save a PNG here of the cell that shows the first embedded viewer (of the page where there is none)",
     )
     parser.add_argument(
+        "--view-only",
+        action="store_true",
+        help="with --screenshot: that cell from the embedded viewer down (the view, its caption, what follows)",
+    )
+    parser.add_argument(
         "--full-page",
         action="store_true",
         help="with --screenshot: the whole notebook, a screen per PNG (PNG's name + _01, _02, ...)",
@@ -322,7 +337,8 @@ def main(argv: list[str] | None = None) -> int:
     args = parser.parse_args(argv)
     if args.full_page and not args.screenshot:
         parser.error("--full-page needs --screenshot PNG (the series is named after it)")
-    print(asdict(run_all(args.notebook, screenshot=args.screenshot, full_page=args.full_page)))
+    shown = run_all(args.notebook, screenshot=args.screenshot, full_page=args.full_page, view_only=args.view_only)
+    print(asdict(shown))
     return 0
 
 

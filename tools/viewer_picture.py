@@ -5,12 +5,13 @@ width::
 
 It is what ``toolkit view --scenario 3do --samples 300 --screenshot PNG`` photographs (the office, seed 0, 300 uniform
 samples marked at the robot's base), in a narrower window at twice the pixels: the course site shows a picture in a
-column of about 690 px, where an 800 px window left the panel's slider labels about 8 px high (reader r18c). In a
-window :data:`WINDOW` wide the panel keeps its 340 px and the site shows the whole at about its own size; the
-camera is moved sideways (:data:`SHIFT`) so that the scene and the youBot stand in the window's left half, beside the
-panel, not under it (reader r23b: the panel covered the right half of the scene). The workspace's outline keeps its
-floor's four edges (:func:`floor_outline`): an upright edge of the office's far corner, its foot behind the panel,
-poked out above it as a stray stroke (reader r23b).
+column of about 690 px, where an 800 px window left the panel's slider labels about 8 px high (reader r18c). The
+panel is narrowed to :data:`PANEL_WIDTH` and two of its folders are folded (:data:`FOLD`), so that it ends above the
+window's foot and covers under a third of the scene (reader r25b: at its full 340 px, cut off at "Layers", it hid the
+blocks behind it); the camera is moved sideways (:data:`SHIFT`) so that the scene and the youBot stand in the window's
+left part, beside the panel, not under it (reader r23b). The workspace's outline keeps its floor's four edges
+(:func:`floor_outline`): an upright edge of the office's far corner, its foot behind the panel, poked out above it as
+a stray stroke (reader r23b).
 """
 
 from __future__ import annotations
@@ -24,12 +25,12 @@ from toolkit import viewer
 from toolkit.viewer import drawing
 from toolkit.viewer.browser import screenshot
 
-WINDOW = (680, 1000)  # (width, height) in CSS px: the panel down to its "Plan" section, whole (reader r24b: the
-#   picture stopped at "Samples", under the section the home page's next paragraph describes; viser docks the panel
-#   at the bottom of a window under 576 px), and beside it a scene as wide; under the site's 688 px column
+WINDOW = (680, 860)  # (width, height) in CSS px: the panel whole, its "Plan" section included (reader r24b; viser
+#   docks the panel at the bottom of a window under 576 px), and beside it a wider scene; under the site's 688 px column
 SCALE = 2.0  # pixels per CSS px: sharp where the page shows the picture larger than its window
-SHIFT = np.array([3.6, 0.0, 0.0])  # workspace units the camera moves to the robot's right: the robot left of the
-#   panel (less than in a shorter window, whose wider view kept it in sight from farther)
+PANEL_WIDTH = 250  # CSS px (viser's own: 340): the sliders' labels and ends still whole
+FOLD = ("Workspace", "Samples")  # folded, as a click on their titles folds them: the panel ends above the window's foot
+SHIFT = np.array([2.8, 0.0, 0.0])  # workspace units the camera moves to the robot's right: the robot left of the panel
 SCENARIO, SEED, SAMPLES = "3do", 0, 300
 
 
@@ -51,7 +52,8 @@ def main(argv: list[str] | None = None) -> int:
         shown.server.scene.add_line_segments("/workspace/region", region, drawing.REGION, thickness=0.05)
         camera = shown.server.initial_camera
         camera.look_at, camera.position = camera.look_at + SHIFT, camera.position + SHIFT
-        print(f"wrote {screenshot(shown.url, args.png, size=WINDOW, scale=SCALE)}")
+        shown.server.gui.main_panel.set_width(PANEL_WIDTH)
+        print(f"wrote {screenshot(shown.url, args.png, size=WINDOW, scale=SCALE, fold=FOLD)}")
     finally:
         shown.stop()
     return 0

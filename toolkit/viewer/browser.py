@@ -62,10 +62,12 @@ def screenshot(
     ready: Callable[[Path], bool] = shows_obstacles,
     budget_s: float = 300.0,
     every_s: float = 1.0,
+    fold: tuple[str, ...] = (),
 ) -> Path:
     """Load ``url`` in headless Chromium and save a PNG of ``size`` (width, height; ``scale`` times as many pixels,
     the page's text as sharp as a high-density screen shows it) to ``path`` once
-    ``ready(path)`` holds, photographing the page every ``every_s`` seconds for at most ``budget_s``."""
+    ``ready(path)`` holds, photographing the page every ``every_s`` seconds for at most ``budget_s``. ``fold`` names
+    folders of the panel to fold first (their titles clicked, as a student would), so that the scene shows below."""
     chromium = find_chromium()
     if chromium is None:
         raise FileNotFoundError(
@@ -95,6 +97,9 @@ def screenshot(
             # viser's pop-up notices (e.g. "Software WebGL rendering detected" in a headless browser) are about the
             # browser, not the scene: hidden, so that a picture shows what a student's browser shows.
             page.add_style_tag(content=".mantine-Notifications-root { display: none !important; }")
+            for title in fold:
+                page.get_by_text(title, exact=True).first.click(timeout=left_ms())
+                page.wait_for_timeout(1000)  # the folder's closing animation, over before the picture
             while True:
                 page.screenshot(path=str(path), timeout=left_ms())
                 if ready(path):
