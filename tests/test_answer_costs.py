@@ -2,9 +2,10 @@
 
 from __future__ import annotations
 
+from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import alt_text
 from toolkit.plots.answer import answer_ratios
-from toolkit.teaching import checker_scope, costs, findings
+from toolkit.teaching import chapter04, checker_scope, costs, findings
 
 
 def test_answer_ratios_draws_every_scenario_sampler_and_series_in_one_panel():
@@ -30,3 +31,29 @@ def test_after_share_is_the_part_of_the_extra_time_after_sampling():
     cell = costs.Cost("X", "BS", 1.5, (0.001, 0.003), (0.010, 0.016))  # extra 6 ms: 2 sampling, 4 after
     assert all(abs(a - b) < 1e-12 for a, b in zip(cell.after, (0.009, 0.013)))
     assert abs(cell.after_share - 4 / 6) < 1e-12
+
+
+def test_chapter04_tables_name_every_sampler_and_each_failure():
+    summary = {"success_rate": 1.0, "path_valid_rate": 1.0, "rounds": 1.5, "repairs": 0.25}
+    failing = dict(summary, success_rate=0.5)
+    tables = {"2DS": {s: {"without": summary, "with": failing if s == "BT" else summary} for s in PAPER_SAMPLERS}}
+    said = chapter04.success_table(tables)
+    assert said.count("\n| 2DS |") == 4 and "| 2DS | BT | 100% / 50% | 100% / 100% | 1.50 / 0.25 |" in said
+    assert said.endswith("Queries that found no path, in this run: 2DS BT with prediction (50% found a path).")
+    records = {
+        "without": [
+            {
+                "connection_s": 0.004,
+                "edge_checks": 2000,
+                "sampling_s": 0.001,
+                "query_s": 0.0,
+                "total_s": 0.005,
+                "nodes": 10,
+                "samples_exact": 20,
+                "predicted_checks": 0,
+            }
+        ]
+    }
+    stages, checks = chapter04.eager_tables(records)
+    assert "| without | 1.0 | 4.0 | 0.0 | 5.0 |" in stages and "| without | 10 | 20 | 0 | 2,000 |" in checks
+    assert chapter04.per_point(records) == {"without": 2e-6}

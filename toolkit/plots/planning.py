@@ -257,12 +257,7 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
             ),
             path_effects=outline,
         )
-    removed = LineCollection(
-        P[step.edges[removed_edge]], colors=REPAIR_COLOR, linewidths=3, zorder=5, label="edge removed by a repair"
-    )
-    removed.set_path_effects(halo(3))
-    ax.add_collection(removed)
-    _first_collisions(ax, exact, P[step.edges[removed_edge]])
+    _removed_edges(ax, exact, P[step.edges[removed_edge]])
     ax.scatter(
         *P[step.removed_nodes].T,
         s=70,
@@ -287,9 +282,15 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
     ax.set_title(f"round {step.round}, {step.stage}:\n{len(P)} nodes, {len(step.edges)} edges", fontsize=10)
 
 
-def _first_collisions(ax, exact: CollisionChecker, segments: np.ndarray, points: int = 201) -> None:
-    """Where each removed edge ``segments (R, 2, 2)`` first enters a C-obstacle, a ring and its coordinates written
-    beside it (review r25a: at the page's size one could not see whether the edge cut the block or grazed it)."""
+def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: int = 201) -> None:
+    """The edges a repair removes, ``segments (R, 2, 2)``, thick, and where each first enters a C-obstacle, a ring and
+    its coordinates written beside it (review r25a: at the page's size one could not see whether the edge cut the
+    block or grazed it)."""
+    removed = LineCollection(
+        list(segments), colors=REPAIR_COLOR, linewidths=3, zorder=5, label="edge removed by a repair"
+    )
+    removed.set_path_effects(halo(3))
+    ax.add_collection(removed)
     for a, b in segments:
         Q = a + np.linspace(0.0, 1.0, points)[:, None] * (b - a)
         hit = np.flatnonzero(~exact.are_valid(Q))
