@@ -30,7 +30,8 @@ STYLES = {  # checker -> (marker and line, colour, name)
 LEGEND = {  # checker -> its legend's words; reader r24c: which checker the mesh panel times is said
     "exact": "exact, compiled (on triangles: the compiled mesh checker)",
     "fcl": "exact, python-fcl (on triangles: FCL's mesh tree + a numpy inside test)",
-    "learned": "learned: the network (untrained, of the preset's sizes)",
+    "learned": "learned: a network of the preset's sizes (its speed does not depend on its weights)",  # r25a: not
+    # "untrained", which read as a fault
 }
 
 
@@ -148,16 +149,16 @@ def _panel(ax, sweep: dict) -> None:
         band.set_gid(NEAR)
     unit = sweep["label"].split()[0]  # what the variable counts: "243 obstacles", not a bare "243"
     found = sorted((value, name) for name in ("exact", "fcl") for value in _crossings(sweep, name))
-    for k, (value, name) in enumerate(found):  # each one's words a line lower than the last's: never on each other
+    for k, (value, name) in enumerate(found):  # each one's words a line higher than the last's: never on each other
         ax.axvline(value, ls=":", color=STYLES[name][1], label="the curves cross (dotted)")
         right = np.log(value / x[0]) > np.log(x[-1] / x[0]) / 2  # then its words go to the left
         ax.annotate(  # a count in whole units, clear of its dotted line (reader r23a: "62.6 triangles" on the line)
             f"about {value:,.0f} {unit}",
-            (value, 0.97 - 0.11 * k),
+            (value, 0.03 + 0.11 * k),  # at the panel's foot, under the curves (review r25a: on them at the top)
             xycoords=("data", "axes fraction"),
             xytext=(-6 if right else 6, 0),
             ha="right" if right else "left",
-            va="top",
+            va="bottom",
             textcoords="offset points",
             fontsize=TICK_POINTS + 1,
             path_effects=halo(0.0, ("free",)),  # readable over a curve, which it does not hide

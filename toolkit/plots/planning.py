@@ -211,8 +211,10 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
             ax.annotate(
                 f"{n}×",
                 (x, y),
-                xytext=(4, 3),
+                xytext=(0, 7),  # above its markers, off them and their neighbours' (review r25a: it sat on them)
                 textcoords="offset points",
+                ha="center",
+                va="bottom",
                 fontsize=9,
                 path_effects=halo(1.0, ("free",)),
             )
@@ -255,11 +257,7 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
             ),
             path_effects=outline,
         )
-    removed = LineCollection(
-        P[step.edges[removed_edge]], colors=REPAIR_COLOR, linewidths=3, zorder=5, label="edge removed by a repair"
-    )
-    removed.set_path_effects(halo(3))
-    ax.add_collection(removed)
+    _removed_edges(ax, exact, P[step.edges[removed_edge]])
     ax.scatter(
         *P[step.removed_nodes].T,
         s=70,
@@ -282,6 +280,34 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
         )
     _margin(ax)
     ax.set_title(f"round {step.round}, {step.stage}:\n{len(P)} nodes, {len(step.edges)} edges", fontsize=10)
+
+
+def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: int = 201) -> None:
+    """The edges a repair removes, ``segments (R, 2, 2)``, thick, and where each first enters a C-obstacle, a ring and
+    its coordinates written beside it (review r25a: at the page's size one could not see whether the edge cut the
+    block or grazed it)."""
+    removed = LineCollection(
+        list(segments), colors=REPAIR_COLOR, linewidths=3, zorder=5, label="edge removed by a repair"
+    )
+    removed.set_path_effects(halo(3))
+    ax.add_collection(removed)
+    for a, b in segments:
+        Q = a + np.linspace(0.0, 1.0, points)[:, None] * (b - a)
+        hit = np.flatnonzero(~exact.are_valid(Q))
+        if hit.size:
+            x, y = Q[hit[0]]
+            ax.scatter([x], [y], s=60, facecolors="none", edgecolors=COLORS["ink"], linewidths=1.5, zorder=7)
+            ax.annotate(
+                f"hits ({x:.1f}, {y:.1f})",
+                (x, y),
+                xytext=(-6, -10),
+                textcoords="offset points",
+                ha="right",
+                va="top",
+                fontsize=8,
+                zorder=7,
+                path_effects=halo(1.0, ("free",)),
+            )
 
 
 def _margin(ax, share: float = 0.04) -> None:

@@ -137,8 +137,8 @@ def cut_in_words(cut: np.ndarray, labels, q3: np.ndarray, top: float) -> str:
 
 def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndarray:
     """:func:`stage_times`' bars at ``x (samplers, modes)``: the stages of ``table`` (key -> ``(samplers, modes)``)
-    stacked, hatched by stage, and a whisker from the total's first to third quartile beside the bar, on its right
-    and off its segments (review r17a; r23a: the same side for every bar), the y axis up to the bars and
+    stacked, hatched by stage, and a whisker from the total's first to third quartile on the bar's centre (review
+    r25a: beside it, it read as the next bar's), with a white ring over the segments, the y axis up to the bars and
     the whiskers within :data:`CUT` times the tallest bar; returns which whiskers run past it ``(samplers, modes)``,
     drawn to the top with a triangle and their end written."""
     bottom = np.zeros_like(table["total_s"])
@@ -156,10 +156,8 @@ def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndar
         )
         bottom = bottom + table[key]
     quartiles = (table["total_s_q1"], table["total_s_q3"])
-    beside = x + BAR / 2 + 0.035  # (samplers, modes): right of every bar, its own (review r23a: one pair's two
-    # whiskers on its outer sides sat next to the neighbouring pair's and were pinned on the wrong bar)
-    return quartile_whiskers(
-        ax, beside, table["total_s"], *quartiles, tallest=bottom.max(), label="total: quartiles"
+    return quartile_whiskers(  # on its own bar's centre (review r25a: beside it, it read as the next bar's)
+        ax, x, table["total_s"], *quartiles, tallest=bottom.max(), label="total: quartiles"
     )  # a cut whisker's end beside its triangle, inside the frame (review r24a: above it, it read as the ratio's)
 
 
@@ -205,10 +203,11 @@ def quartile_whiskers(
             label="quartile off the scale (its value written)",
         )
         where = (
-            dict(xytext=(0, 2), ha="center", va="bottom") if end_above else dict(xytext=(5, -1), ha="left", va="top")
+            dict(xytext=(0, 2), ha="center", va="bottom") if end_above else dict(xytext=(5, -9), ha="left", va="top")
         )
         for xc, end in zip(x[cut], q3[cut]):
-            ax.annotate(ms_text(end), (xc, top), textcoords="offset points", fontsize=10, **where)  # r23a: 8 was small
+            written = ax.annotate(ms_text(end), (xc, top), textcoords="offset points", fontsize=10, **where)  # r23a: 8
+            written.set_path_effects(halo(2.0, ("free",)))  # below the ratio labels, readable over a bar (r25a)
     return cut
 
 
@@ -336,7 +335,7 @@ def throughputs(rates: dict[str, dict[str, float]]) -> Figure:
     ax.grid(True, axis="y", color=COLORS["shade"], linewidth=0.8)
     ax.set_axisbelow(True)
     ax.set_xticks(np.arange(len(rates)), list(rates))
-    ax.set_xlim(-0.5, len(rates) - 0.5)
+    ax.set_xlim(-0.5, len(rates) - 0.5 + 0.15)  # room for the last point's rate inside the frame (review r25a)
     ax.tick_params(labelsize=9)
     ax.set_xlabel("scenario")
     ax.set_ylabel("configurations checked per second")

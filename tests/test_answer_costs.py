@@ -1,0 +1,59 @@
+"""Chapter 04's answer figure (one panel, review r25a) and the split of the recorded costs (toolkit.teaching.costs)."""
+
+from __future__ import annotations
+
+from toolkit.planning.sampling import PAPER_SAMPLERS
+from toolkit.plots.alt import alt_text
+from toolkit.plots.answer import answer_ratios
+from toolkit.teaching import chapter04, checker_scope, costs, findings
+
+
+def test_answer_ratios_draws_every_scenario_sampler_and_series_in_one_panel():
+    rows = checker_scope.compact()
+    fig = answer_ratios(rows, tie=findings.TIE)
+    assert len(fig.axes) == 1
+    drawn = sum(len(line.get_xdata()) for line in fig.axes[0].lines if line.get_marker() not in ("None", None, ""))
+    assert drawn == sum(len(r) for r in rows.values()) == 48  # 4 scenarios x 4 samplers x 3 series
+    assert "tie band, 0.90 to 1.10" in alt_text(fig)
+
+
+def test_cost_table_splits_the_cells_where_prediction_cost_a_quarter_or_more():
+    cells = costs.dear_cells()
+    assert {f"{c.scenario} {c.sampler}" for c in cells} == {"3DC-7 OB", "3DC-7 BT", "3DC-9 BT", "3DO OB"}
+    for c in cells:
+        assert c.ratio >= costs.DEAR
+        assert abs(sum(c.after) + sum(c.sampling) - sum(c.total)) < 1e-12  # the two parts make the total
+    table = costs.cost_table()
+    assert table.count("\n| 3D") == len(cells) and f"in 3 of these {len(cells)} cells" in table
+
+
+def test_after_share_is_the_part_of_the_extra_time_after_sampling():
+    cell = costs.Cost("X", "BS", 1.5, (0.001, 0.003), (0.010, 0.016))  # extra 6 ms: 2 sampling, 4 after
+    assert all(abs(a - b) < 1e-12 for a, b in zip(cell.after, (0.009, 0.013)))
+    assert abs(cell.after_share - 4 / 6) < 1e-12
+
+
+def test_chapter04_tables_name_every_sampler_and_each_failure():
+    summary = {"success_rate": 1.0, "path_valid_rate": 1.0, "rounds": 1.5, "repairs": 0.25}
+    failing = dict(summary, success_rate=0.5)
+    tables = {"2DS": {s: {"without": summary, "with": failing if s == "BT" else summary} for s in PAPER_SAMPLERS}}
+    said = chapter04.success_table(tables)
+    assert said.count("\n| 2DS |") == 4 and "| 2DS | BT | 100% / 50% | 100% / 100% | 1.50 / 0.25 |" in said
+    assert said.endswith("Queries that found no path, in this run: 2DS BT with prediction (50% found a path).")
+    records = {
+        "without": [
+            {
+                "connection_s": 0.004,
+                "edge_checks": 2000,
+                "sampling_s": 0.001,
+                "query_s": 0.0,
+                "total_s": 0.005,
+                "nodes": 10,
+                "samples_exact": 20,
+                "predicted_checks": 0,
+            }
+        ]
+    }
+    stages, checks = chapter04.eager_tables(records)
+    assert "| without | 1.0 | 4.0 | 0.0 | 5.0 |" in stages and "| without | 10 | 20 | 0 | 2,000 |" in checks
+    assert chapter04.per_point(records) == {"without": 2e-6}

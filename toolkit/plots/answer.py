@@ -1,0 +1,102 @@
+"""Chapter 04's answer in one panel (review r25a: the panel that carried it was third of five, and half the answer,
+the python-fcl runs, and two of four scenarios were not drawn).
+
+:func:`answer_ratios` draws, for every scenario and sampler, total time with / without prediction inside the paper's
+Algorithm 1 for each series of ``{"<scenario>, <series>": {sampler: ratio}}`` (the rows of
+:func:`toolkit.teaching.checker_scope.compact`: the paper's Table 3, our accurate network with our compiled checker,
+and with python-fcl on both sides), on a log axis against the line at 1 and the tie band.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from toolkit.planning.sampling import PAPER_SAMPLERS
+from toolkit.plots.alt import Part, describe
+from toolkit.plots.palette import COLORS, PAGE_WIDTH, series_style
+from toolkit.plots.timings import band_words, log_ticks
+
+MARKERS = ("s", "o", "^")  # a series' marker, beside its colour
+
+
+def answer_ratios(rows: dict[str, dict[str, float]], *, tie: float, names: dict[str, str] | None = None) -> Figure:
+    """One panel: a group of four samplers per scenario, one point per series in each, the tie band ``1 ± tie``
+    shaded darker than the page's other bands, and the series named in a legend above (``names`` renames them)."""
+    scenarios = list(dict.fromkeys(label.split(", ", 1)[0] for label in rows))
+    series = list(dict.fromkeys(label.split(", ", 1)[1] for label in rows))
+    names = names or {}
+    fig = Figure(figsize=(PAGE_WIDTH, 3.9), layout="constrained")
+    ax = fig.subplots()
+    width = len(PAPER_SAMPLERS) + 1  # a scenario's samplers, and a gap
+    ax.axhspan(
+        1 - tie,
+        1 + tie,
+        facecolor=COLORS["shade"],
+        edgecolor=COLORS["reference"],
+        alpha=0.9,
+        zorder=0,
+        label=band_words(tie),
+    )
+    ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
+    drawn, parts = _series(ax, rows, scenarios, series, names)
+    for i in range(1, len(scenarios)):
+        ax.axvline(i * width - 1, color=COLORS["shade"], linewidth=1.0, zorder=0)
+    ticks = [i * width + j for i in range(len(scenarios)) for j in range(len(PAPER_SAMPLERS))]
+    ax.set_xticks(ticks, list(PAPER_SAMPLERS) * len(scenarios), fontsize=9)
+    ax.set_xlim(-0.7, len(scenarios) * width - 1.3)
+    for i, scenario in enumerate(scenarios):  # each group's name under its samplers' names
+        ax.text(
+            i * width + 1.5,
+            -0.13,
+            scenario,
+            transform=ax.get_xaxis_transform(),
+            ha="center",
+            va="top",
+            fontsize=10,
+            weight="bold",
+        )
+    ax.set_ylim(min(*drawn, 1 - tie) / 1.25, max(*drawn, 1 + tie) * 1.25)
+    log_ticks(ax)
+    ax.set_ylabel("total time with / without\n(below 1: saves)")
+    fig.legend(loc="outside upper center", ncol=2, fontsize=9, frameon=False)  # over the panel, the page's width
+    below = int(np.sum(np.array(drawn) <= 1 - tie))
+    text = (
+        "Inside the paper's Algorithm 1, total time with prediction over time without, per scenario and sampler, "
+        f"log scale, against the line at 1 and the shaded {band_words(tie)}: {len(drawn)} points in "
+        f"{len(series)} series, {below} of them at or below {1 - tie:.2f}."
+    )
+    return describe(fig, text, parts)
+
+
+def _series(ax, rows, scenarios: list[str], series: list[str], names: dict[str, str]) -> tuple[list[float], list[Part]]:
+    """Each series' points, its scenarios in groups of :data:`PAPER_SAMPLERS` and a series a little left or right of
+    a sampler's tick; returns every ratio drawn and one :class:`Part` a series (its numbers, for the text
+    alternative)."""
+    width = len(PAPER_SAMPLERS) + 1
+    drawn: list[float] = []
+    parts = []
+    for k, name in enumerate(series):
+        cells = []
+        for i, scenario in enumerate(scenarios):
+            ratios = rows.get(f"{scenario}, {name}", {})
+            x = [i * width + j + (k - 1) * 0.22 for j, s in enumerate(PAPER_SAMPLERS) if s in ratios]
+            y = [ratios[s] for s in PAPER_SAMPLERS if s in ratios]
+            ax.plot(
+                x,
+                y,
+                linestyle="none",
+                marker=MARKERS[k % len(MARKERS)],
+                color=series_style(k)["color"],
+                markersize=7,
+                markeredgecolor=COLORS["ink"],
+                markeredgewidth=0.6,
+                zorder=3,
+                label=names.get(name, name) if i == 0 else None,
+            )
+            drawn += y
+            cells.append((scenario, *(f"{ratios[s]:.2f}" if s in ratios else "" for s in PAPER_SAMPLERS)))
+        parts.append(
+            Part(names.get(name, name), "total time with / without", ("scenario", *PAPER_SAMPLERS), tuple(cells))
+        )
+    return drawn, parts

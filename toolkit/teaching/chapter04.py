@@ -1,0 +1,101 @@
+"""Chapter 04's tables of its own small runs, built here so that the page shows the tables, not their formatting
+(review r25a: the page ran to 25 screens).
+
+- :func:`success_table`: section 3's success, valid paths, rounds and repairs per query, and the queries that found no
+  path;
+- :func:`audited_table`: section 3's returned paths that a fresh exact checker accepts at 10x finer resolution;
+- :func:`eager_tables`: section 5's stage times and counts of Algorithm 1 with and without the network, medians over
+  the queries.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+import numpy as np
+
+from toolkit.planning.sampling import PAPER_SAMPLERS
+
+STAGE_MS = {"sampling_s": "sampling", "connection_s": "connection (edges)", "query_s": "query", "total_s": "total"}
+COUNTS = {  # what each mode checked, per query
+    "nodes": "roadmap nodes",
+    "samples_exact": "samples, exact",
+    "predicted_checks": "samples, network",
+    "edge_checks": "edge points, exact",
+}
+
+
+def success_table(tables: Mapping[str, Mapping[str, Mapping[str, Mapping]]]) -> str:
+    """``{scenario: {sampler: {"without" | "with": summary}}}`` (``compare_prediction``'s) as a five-column Markdown
+    table, and a line naming each sampler, scenario and mode whose success was below 100 %."""
+    rows = [
+        "| scenario | sampler | success<br>without / with | paths valid<br>without / with "
+        "| rounds / repairs per query, with prediction (means) |",
+        "| --- | --- | --- | --- | --- |",
+    ]
+    failed = []
+    for name, table in tables.items():
+        for s in PAPER_SAMPLERS:
+            without, with_ = table[s]["without"], table[s]["with"]
+            rows.append(
+                f"| {name} | {s} | {without['success_rate']:.0%} / {with_['success_rate']:.0%} "
+                f"| {without['path_valid_rate']:.0%} / {with_['path_valid_rate']:.0%} "
+                f"| {with_['rounds']:.2f} / {with_['repairs']:.2f} |"
+            )
+            failed += [
+                f"{name} {s} {mode} prediction ({table[s][mode]['success_rate']:.0%} found a path)"
+                for mode in ("without", "with")
+                if table[s][mode]["success_rate"] < 1
+            ]
+    said = "; ".join(failed) if failed else "none, in either mode"
+    return "\n".join(rows) + f"\n\nQueries that found no path, in this run: {said}."
+
+
+def audited_table(audited: Mapping[str, Mapping[str, str]]) -> str:
+    """``{scenario: {sampler: "valid of returned"}}`` as a Markdown table under its title."""
+    head = "| scenario | " + " | ".join(PAPER_SAMPLERS) + " |\n| --- |" + " ---: |" * len(PAPER_SAMPLERS)
+    body = "\n".join(f"| {name} | " + " | ".join(c[s] for s in PAPER_SAMPLERS) + " |" for name, c in audited.items())
+    return (
+        f"Returned paths with prediction that a fresh exact checker accepts at 10× finer resolution:\n\n{head}\n{body}"
+    )
+
+
+def counted(runs: Mapping[str, tuple[list[dict], dict]]) -> dict[str, list[dict]]:
+    """Each mode's per-query records of ``run_interleaved`` with ``samples_exact``: the samples the exact checker
+    decided (the nodes checked less those the network decided)."""
+    return {
+        mode: [dict(r, samples_exact=r["node_checks"] - r["predicted_checks"]) for r in records]
+        for mode, (records, _) in runs.items()
+    }
+
+
+def per_point(records: Mapping[str, list[dict]]) -> dict[str, float]:
+    """Each mode's median connection time per exact edge point, in seconds: the same exact check in both modes."""
+    return {
+        m: float(np.median([r["connection_s"] / max(r["edge_checks"], 1) for r in rs])) for m, rs in records.items()
+    }
+
+
+def _median_of(records: list[dict], key: str) -> str:
+    value = float(np.median([r[key] for r in records]))
+    return f"{1000 * value:.1f}" if key.endswith("_s") else f"{value:,.0f}"
+
+
+def eager_tables(records: Mapping[str, list[dict]]) -> list[str]:
+    """Section 5's two tables, each under its title: each stage's time (ms a query) and what each mode checked per
+    query, medians over the queries (``records``: :func:`counted`'s)."""
+    blocks = []
+    for title, columns in (
+        ("Algorithm 1, 3DC-7, BS: each stage's time, ms a query (medians over the queries):", STAGE_MS),
+        (
+            "What each mode checked, per query (medians): the roadmap's nodes, the samples the exact checker and the "
+            "network decided, and the edge points the exact checker checked:",
+            COUNTS,
+        ),
+    ):
+        head = "| mode | " + " | ".join(columns.values()) + " |\n| --- |" + " ---: |" * len(columns)
+        body = "\n".join(
+            f"| {m} | " + " | ".join(_median_of(rs, k) for k in columns) + " |" for m, rs in records.items()
+        )
+        blocks.append(f"{title}\n\n{head}\n{body}")
+    return blocks
