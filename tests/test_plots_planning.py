@@ -278,38 +278,6 @@ def test_a_whisker_far_above_the_bars_is_cut_at_the_top_with_its_end_written():
     assert "quartile off the scale (its value written)" in [t.get_text() for t in fig.legends[0].texts]
 
 
-def test_ratio_comparison_draws_one_baseline_per_panel_on_one_log_scale():
-    series = {
-        "2DS sampling": {"BS": 0.5, "OB": 0.4, "G": 0.3, "BT": 0.2},
-        "3DC-7 total": {"BS": 2.0, "OB": 1.5, "G": 1.1, "BT": 0.9},
-    }
-    lazy = {
-        "2DS sampling": {"BS": 1.2, "OB": 1.1, "G": 1.3, "BT": 0.7},
-        "3DC-7 total": {"BS": 1, "OB": 1, "G": 1, "BT": 1},
-    }
-    fig = timings.ratio_comparison({"paper, means": series, "ours vs the lazy planner": lazy})
-    assert len(fig.axes) == 2
-    ax, other = fig.axes
-    assert (
-        ax.get_yscale() == "log"
-        and ax.get_title() == "paper, means"
-        and other.get_title() == "ours vs the lazy planner"
-    )
-    assert ax.get_ylim() == other.get_ylim()  # one scale: heights compare across baselines
-    assert {"0.2", "0.5", "1", "2"} <= {t.get_text() for t in ax.get_yticklabels()}
-    assert [t.get_text() for t in fig.legends[0].texts] == list(series)
-    for panel, ratios_by_series in ((ax, series), (other, lazy)):
-        points = [line for line in panel.lines if line.get_label() in ratios_by_series]
-        assert len(points) == len(ratios_by_series) and not panel.patches  # points, no bars: a log axis has no 0
-        for line, (name, ratios) in zip(points, ratios_by_series.items()):
-            assert line.get_label() == name and line.get_linestyle() == "None"
-            np.testing.assert_allclose(line.get_ydata(), list(ratios.values()))
-        (one,) = [line for line in panel.lines if line.get_label() not in ratios_by_series]
-        assert list(one.get_ydata()) == [1, 1]  # the line every ratio is read against
-    close = timings.ratio_comparison({"total": {"ours": {"BS": 0.8, "OB": 1.2, "G": 1.6, "BT": 2.1}}}).axes[0]
-    assert {"1", "1.5", "2"} <= {t.get_text() for t in close.get_yticklabels()}  # finer labels within a decade
-
-
 def test_throughputs_a_point_per_scenario_and_checker_on_a_log_axis_labelled_at_1_2_5():
     """Points, not bars: on a log axis a bar's length means nothing (a bar from a floor near the slowest rate
     was a sliver); each rate written beside its point, the axis labelled often enough to read one between two."""
@@ -334,18 +302,6 @@ def test_a_rejected_candidate_and_a_fresh_one_differ_in_line_style_not_only_in_s
     styles = [planning.roadmap(exact, step).axes[0].lines[0].get_linestyle() for step in (rejected, fresh)]
     assert styles == [":", "--"]  # dotted against dashed: told apart at the site's width, as dash-dot was not
     assert "dotted path" in planning.step_in_words(rejected) and "dashed path" in planning.step_in_words(fresh)
-
-
-def test_ratio_comparison_keeps_a_series_colour_in_every_panel_and_names_it_once():
-    """A panel that leaves a series out (chapter 04's own run has totals only) must not pass its colour to the next."""
-    samplers = ("BS", "OB", "G", "BT")
-    full = {"2DS, sampling": dict.fromkeys(samplers, 0.5), "2DS, total": dict.fromkeys(samplers, 1.5)}
-    fig = timings.ratio_comparison({"paper": full, "ours": {"2DS, total": dict.fromkeys(samplers, 2.0)}})
-    total_in_paper, total_in_ours = (ax.lines[-2 if ax is fig.axes[0] else 0] for ax in fig.axes)  # "2DS, total"
-    sampling_in_paper = fig.axes[0].lines[0]
-    look = [(line.get_color(), line.get_marker(), line.get_xdata()[0]) for line in (total_in_paper, total_in_ours)]
-    assert look[0] == look[1] != (sampling_in_paper.get_color(), sampling_in_paper.get_marker(), look[0][2])
-    assert [t.get_text() for t in fig.legends[0].get_texts()] == ["2DS, sampling", "2DS, total"]
 
 
 def test_the_paper_style_times_stack_their_panels_and_cut_a_far_whisker_too():
@@ -434,13 +390,6 @@ def test_samplers_say_how_many_samples_lie_near_a_c_obstacle_or_a_wall():
     points = np.concatenate([path.vertices for path in dashed.get_paths()])  # (P, 2)
     outside = np.maximum(np.maximum((9.75, 4.75) - points, points - (20.25, 12.25)), 0.0)  # (P, 2) how far out
     np.testing.assert_allclose(np.linalg.norm(outside, axis=1), band, atol=0.15)  # within a pixel and a half
-
-
-def test_ratio_comparison_of_many_panels_has_one_legend():
-    """Review r23a: the legend over the first of five panels, repeated under the last, read as two."""
-    series = {"2DS, total": dict.fromkeys(("BS", "OB", "G", "BT"), 1.0)}
-    fig = timings.ratio_comparison({f"source {k}": series for k in range(5)}, tie=0.1, repeat_legend=False)
-    assert len(fig.legends) == 1
 
 
 def test_segment_table_gives_the_bars_segments_in_ms():

@@ -11,7 +11,7 @@ from matplotlib.backends.backend_agg import FigureCanvasAgg
 from PIL import Image
 
 from toolkit.experiments.paper_numbers import IMPROVEMENT
-from toolkit.plots import alt, timings
+from toolkit.plots import alt
 from toolkit.plots.palette import COLORS
 from toolkit.teaching import checker_scope
 from tools import recorded_results, results_summary
@@ -121,14 +121,6 @@ def test_each_panel_shades_the_tie_band_its_counts_are_read_with(drawn):
         assert said and int(said[3]) == inside and int(said[1]) == len(points), name
 
 
-def test_without_a_tie_the_ratio_figure_draws_no_band_as_chapter_04_shows_it():
-    series = {"ours": {"BS": 0.9, "OB": 1.0, "G": 1.1, "BT": 2.0}}
-    plain, banded = (timings.ratio_comparison({"total": series}, tie=tie) for tie in (None, 0.25))
-    assert not plain.axes[0].patches and [t.get_text() for t in plain.legends[0].texts] == ["ours"]
-    assert "band" not in alt.alt_text(plain)
-    assert [t.get_text() for t in banded.legends[0].texts] == ["ours", "tie band, 0.75 to 1.25 (within 25 % of 1)"]
-
-
 def test_the_legend_stands_over_the_first_panel(drawn):
     """Review r15a: under the last of four panels the legend was far from the first; it stands over the first panel
     (its title included), where a reader starts, and overlaps none."""
@@ -137,23 +129,6 @@ def test_the_legend_stands_over_the_first_panel(drawn):
     legend = fig.legends[0].get_window_extent(renderer)
     assert legend.y0 >= fig.axes[0].get_tightbbox(renderer).y1 - 1
     assert legend.y1 <= fig.bbox.y1 + 1
-
-
-def test_a_figure_of_many_panels_repeats_its_legend_under_the_last():
-    """Review r16a: chapter 04's five panels had one legend, over the first, far from the last panels. With more than
-    three panels the same legend stands under the last panel too, and no legend covers a panel."""
-    series = {"ours": {"BS": 0.8, "OB": 1.2, "G": 1.0, "BT": 2.0}, "theirs": {"BS": 0.5, "OB": 0.6, "G": 0.7, "BT": 1}}
-    for panels, legends in ((3, 1), (5, 2)):
-        fig = timings.ratio_comparison({f"source {k}": series for k in range(panels)}, tie=0.1)
-        assert len(fig.legends) == legends
-        texts = [[t.get_text() for t in legend.texts] for legend in fig.legends]
-        assert all(t == texts[0] for t in texts) and "ours" in texts[0]
-        renderer = FigureCanvasAgg(fig).get_renderer()
-        boxes = [legend.get_window_extent(renderer) for legend in fig.legends]
-        panels_box = [ax.get_tightbbox(renderer) for ax in fig.axes]
-        assert boxes[0].y0 >= panels_box[0].y1 - 1
-        if legends == 2:
-            assert boxes[1].y1 <= panels_box[-1].y0 + 1 and boxes[1].y0 >= fig.bbox.y0 - 1
 
 
 def test_no_two_points_of_a_panel_overlap_at_the_pages_width(drawn):

@@ -59,6 +59,7 @@ def answer_ratios(rows: dict[str, dict[str, float]], *, tie: float, names: dict[
     ax.set_ylim(min(*drawn, 1 - tie) / 1.25, max(*drawn, 1 + tie) * 1.25)
     log_ticks(ax)
     ax.set_ylabel("total time with / without\n(below 1: saves)")
+    ax.set_xlabel("sampler, grouped by scenario", labelpad=24)  # under the scenarios' names
     fig.legend(loc="outside upper center", ncol=2, fontsize=9, frameon=False)  # over the panel, the page's width
     below = int(np.sum(np.array(drawn) <= 1 - tie))
     text = (

@@ -1,13 +1,12 @@
 """How long planning and checking take, with and without prediction (paper §V, Table 3): notebook 04.
 
-A planner's time per query split into its stages (:func:`stage_times`), the ratios with / without prediction
-against several baselines on one log scale (:func:`ratio_comparison`), and checkers' throughputs
-(:func:`throughputs`). Every function returns a matplotlib ``Figure`` and never calls ``show()``.
+A planner's time per query split into its stages (:func:`stage_times`), checkers' throughputs
+(:func:`throughputs`), and the pieces every ratio figure shares (the tie band, log ticks, a legend above). Every
+function returns a matplotlib ``Figure`` and never calls ``show()``.
 """
 
 from __future__ import annotations
 
-import textwrap
 from collections.abc import Mapping, Sequence
 
 import numpy as np
@@ -15,7 +14,6 @@ from matplotlib.figure import Figure
 from matplotlib.ticker import NullFormatter
 from matplotlib.transforms import offset_copy
 
-from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import CATEGORICAL, COLORS, PAGE_WIDTH, halo, series_style
 from toolkit.util.verdicts import per_query_ratios
@@ -211,77 +209,18 @@ def quartile_whiskers(
     return cut
 
 
-def ratio_comparison(
-    baselines: dict[str, dict[str, dict[str, float]]], *, tie: float | None = None, repeat_legend: bool = True
-) -> Figure:
-    """Time with / without prediction per sampler (below 1: prediction saves time), one panel per source.
-
-    ``{source: {series: {sampler: ratio}}}``: a source names whose numbers they are and what "without" was (the
-    paper's Table 3 against its own planner, by means; a recorded run of ours against Algorithm 1 or the lazy
-    exact planner), a series what was timed (e.g. "2DS, sampling"). Each ratio is a point (a series keeps its colour
-    and marker in every panel), read against the line at 1: on a log axis a bar's length would mean nothing.
-    Ratios against different baselines never share a panel; the panels share one log axis. With ``tie`` (0.10)
-    every panel shades the tie band ``1 ± tie`` (:func:`tie_band`), named in the legend and the description, so that
-    a reader can count the points on each side; ``repeat_legend``: :func:`legend_above`'s ``repeat``."""
-    names = list(dict.fromkeys(name for series in baselines.values() for name in series))  # every series, once
-    entries = len(names) + (tie is not None)  # the legend's: every series and the band
-    columns = 2 if max(map(len, names)) <= 40 else 1  # the legend's: two long names side by side overflow the page
-    legends = 1 + (repeat_legend and len(baselines) > REPEATED_LEGEND)  # over the first panel, and under the last
-    height = 2.6 * len(baselines) + legends * (0.1 + 0.2 * -(-entries // columns))  # one baseline a row; the legends
-    fig = Figure(figsize=(PAGE_WIDTH, height))
-    axes = fig.subplots(len(baselines), 1, squeeze=False, sharey=True)[:, 0]
-    said = []
-    for ax, (title, series) in zip(axes, baselines.items()):
-        for name, ratios in series.items():  # a series keeps its place, colour and marker in every panel
-            values = [ratios[s] for s in PAPER_SAMPLERS]
-            _points(ax, names.index(name), len(names), values, name, outlined=tie is not None)  # seen on the band
-        every = np.array([[ratios[s] for s in PAPER_SAMPLERS] for ratios in series.values()])  # (series, samplers)
-        said.append(
-            f"{title}: {len(series)} series, ratios from {every.min():.2f} to {every.max():.2f}, below 1 for "
-            f"{int(np.sum(every < 1))} of {every.size}"
-        )  # each ratio: the longer description
-        ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
-        if tie is not None:
-            tie_band(ax, tie)
-        ax.set_xticks(np.arange(len(PAPER_SAMPLERS) - 1) + 0.5, minor=True)  # a sampler's points between two lines
-        ax.grid(True, axis="x", which="minor", color=COLORS["shade"], linewidth=0.8)
-        ax.tick_params(axis="x", which="minor", length=0)
-        ax.set_xticks(np.arange(len(PAPER_SAMPLERS)), PAPER_SAMPLERS)
-        ax.set_xlabel("sampler")
-        ax.set_ylabel("time with / without\n(below 1: saves)")
-        ax.set_xlim(-0.5, len(PAPER_SAMPLERS) - 0.5)
-        ax.set_title(textwrap.fill(title, 80), fontsize=10)
-    drawn = [float(r) for series in baselines.values() for by in series.values() for r in by.values()]  # every point
-    axes[0].set_yscale("log")
-    axes[0].set_ylim(min(*drawn, 1.0) / 1.3, max(*drawn, 1.0) * 1.3)  # every point and the line at 1
-    log_ticks(axes[0])  # shared by every panel
-    for ax in axes:
-        ax.tick_params(labelsize=9, labelleft=True)  # each row its own numbers
-    legend_above(fig, axes, columns, repeat=repeat_legend)
-    text = "Planning time with prediction divided by the time without, a point per sampler and series, log scale, read"
-    text += " against the line at 1" + ("" if tie is None else f" and the shaded {band_words(tie)}")
-    text += "; below 1 prediction saves"
-    parts = ratio_parts(baselines, PAPER_SAMPLERS)
-    return describe(fig, f"{text} time. {'; '.join(said)}.", parts)
-
-
 SPREAD = 0.84  # of the space between two ticks, what a tick's points spread over: no two touch at the page's width
-REPEATED_LEGEND = 3  # more panels than this: the legend also stands under the last one
 
 
-def legend_above(fig: Figure, axes, columns: int, *, repeat: bool = True) -> None:
+def legend_above(fig: Figure, axes, columns: int) -> None:
     """Each series once in a legend over the first panel, where a reader starts (review r15a: under the last of four
-    panels it was far from the first), ``columns`` entries a row, and with more than :data:`REPEATED_LEGEND` panels
-    the same legend again under the last (review r16a: over the first of five it was far from the last); the panels
-    laid out between them."""
+    panels it was far from the first), ``columns`` entries a row; the panels laid out under it."""
     shown = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}
-    room = (0.1 + 0.2 * -(-len(shown) // columns)) / fig.get_figheight()  # a legend's share of the height
-    below = repeat and len(axes) > REPEATED_LEGEND
-    ncol = min(len(shown), columns)
-    fig.legend(shown.values(), shown.keys(), loc="upper center", ncol=ncol, fontsize=9, frameon=False)
-    if below:
-        fig.legend(shown.values(), shown.keys(), loc="lower center", ncol=ncol, fontsize=9, frameon=False)
-    fig.tight_layout(rect=(0, room if below else 0, 1, 1 - room))
+    room = (0.1 + 0.2 * -(-len(shown) // columns)) / fig.get_figheight()  # the legend's share of the height
+    fig.legend(
+        shown.values(), shown.keys(), loc="upper center", ncol=min(len(shown), columns), fontsize=9, frameon=False
+    )
+    fig.tight_layout(rect=(0, 0, 1, 1 - room))
 
 
 def band_words(tie: float) -> str:
@@ -356,18 +295,13 @@ def _rate_text(rate: float) -> str:
     return f"{rate / 1e6:.3g}M" if rate >= 999.5e3 else f"{rate / 1e3:.3g}k"
 
 
-def _points(ax, i: int, n: int, values: list[float], label: str, outlined: bool = False) -> np.ndarray:
-    """Point ``i`` of ``n`` beside each tick (``values (ticks,)``: a sampler's ratio, a scenario's rate), in the
-    ``i``-th series' colour and marker (:func:`~toolkit.plots.palette.series_style`), without a line: a value is read
-    against the axis, never along a line between ticks; ``outlined`` (:func:`~toolkit.plots.palette.halo`): seen on a
-    grey band too. Returns the points' ``(ticks,)`` x."""
+def _points(ax, i: int, n: int, values: list[float], label: str) -> np.ndarray:
+    """Point ``i`` of ``n`` beside each tick (``values (ticks,)``: a scenario's rate), in the ``i``-th series' colour
+    and marker (:func:`~toolkit.plots.palette.series_style`), without a line: a value is read against the axis,
+    never along a line between ticks. Returns the points' ``(ticks,)`` x."""
     look = series_style(i)
     x = np.arange(len(values)) + (i - (n - 1) / 2) * SPREAD / n
-    (line,) = ax.plot(
-        x, values, linestyle="none", marker=look["marker"], color=look["color"], markersize=7, label=label
-    )
-    if outlined:
-        line.set_path_effects(halo(1.0))
+    ax.plot(x, values, linestyle="none", marker=look["marker"], color=look["color"], markersize=7, label=label)
     return x
 
 

@@ -14,13 +14,11 @@ from collections import Counter
 from collections.abc import Mapping
 from dataclasses import dataclass
 
-import numpy as np
-
 from toolkit.experiments.paper_numbers import IMPROVEMENT
 from toolkit.learning import metrics
 from toolkit.teaching import findings, recorded
 from toolkit.teaching.recorded import Tables
-from toolkit.util.verdicts import COSTS, SAVES, TIES, per_query_ratios, time_verdict
+from toolkit.util.verdicts import COSTS, SAVES, TIES, time_verdict
 
 SLOW = "strong --planner paper --baseline paper-fcl-alike"  # the section of docs/results.md: python-fcl on both sides
 NAMES = {"2ds": "2DS", "3dc7": "3DC-7", "3dc9": "3DC-9", "3do": "3DO"}
@@ -323,32 +321,6 @@ def _call_costs(this_run: dict[str, float], tables: Tables | None = None) -> str
         "network's cost, and so this ratio, moves from run to run and machine to machine) and this run's section "
         "4:\n\n" + findings.cost_table(costs)
     )
-
-
-def ratio_panels(this_run: dict[str, dict], tables: Tables | None = None) -> dict[str, dict[str, dict[str, float]]]:
-    """Section 6's figure (:func:`toolkit.plots.timings.ratio_comparison`): one panel per source of numbers, 2DS and
-    3DC-7, sampling and total; ``this_run``: {"2DS" | "3DC-7": the chapter's own planning summaries, by sampler}."""
-    strong = recorded.median_ratios("strong", tables)
-    accurate = recorded.query_ratios(recorded.ALGORITHM_1, tables)
-    kinds = ("sampling", "total")
-    n = " and ".join(f"{next(iter(rows.values()))['without']['n_queries']} {name}" for name, rows in this_run.items())
-    return {
-        'the paper, Table 3 (its "average", read as means of 100 queries; vs its Algorithm 1)': {
-            f"{name}, {kind}": table_3(key, kind) for name, key in SCENARIOS_2 for kind in kinds
-        },
-        "docs/results.md, paper preset (means of 100 queries; vs Algorithm 1)": {
-            f"{name}, {kind}": means("paper", key, kind, tables) for name, key in SCENARIOS_2 for kind in kinds
-        },
-        "docs/results.md, strong preset inside Algorithm 1 (totals only: medians of each query's own ratio, 100 "
-        "queries; vs Algorithm 1)": {f"{name}, total": accurate[key] for name, key in SCENARIOS_2},
-        "docs/results.md, strong preset (ratio of medians, 100 queries; vs the lazy exact planner)": {
-            f"{name}, {kind}": strong[key][kind] for name, key in SCENARIOS_2 for kind in kinds
-        },
-        f"this notebook (totals only: medians of each query's own ratio, {n} queries; vs the lazy exact planner)": {
-            f"{name}, total": {s: float(np.median(per_query_ratios(row))) for s, row in rows.items()}
-            for name, rows in this_run.items()
-        },
-    }
 
 
 def papers_longer_sentence() -> str:
