@@ -189,6 +189,17 @@ def _chapter_02_unseen(nb, found: str) -> list[str]:
     for row in against if memorized else []:
         if abs(float(row[-1].split()[0])) > COUPLE:
             problems.append(f"02: {row[0]} scores {row[-1]} against 'all free' on unseen grids: not within a couple")
+    answer = re.search(
+        r'\*\*The answer\.\*\* .*? On unseen grids it gets ([\d.]+)%, where answering "all free" gets '
+        r'([\d.]+)% .*?\*\*no better than answering "all free"\*\*',
+        found,
+    )
+    if answer is None:  # review r26b: the closing answer in this run's numbers, beside the paper's
+        problems.append("02: the closing answer with this run's unseen score and 'all free' is not printed")
+    elif float(answer.group(1)) - float(answer.group(2)) > COUPLE:
+        problems.append(
+            f"02: the answer says 'no better than all free' of {answer.group(1)}% against {answer.group(2)}%"
+        )
     closing = [row for header, rows in tables(nb) if header[0] == "2DS reconstruction accuracy" for row in rows]
     if len(closing) < 4:
         problems.append("02: the closing table lacks rows")

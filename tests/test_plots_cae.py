@@ -285,6 +285,12 @@ def test_reconstructions_wrong_cells_carry_marks_one_can_read_at_the_sites_width
     assert sorted(m.get_marker() for m in shown) == ["o", "x"] and {m.get_fillstyle() for m in shown} == {"none"}
 
 
+def test_a_count_axis_has_a_tick_below_its_lowest_count_and_at_the_copy_lines_end():
+    """Review r26b: a mean of 0.61 decoded cells sat below the lowest tick (1); the copy line's end (30) had none."""
+    assert plots._count_ticks(0.61, 30.0, end=30) == [0, 1, 2, 5, 10, 30]
+    assert plots._count_ticks(1.0, 120.0, end=30) == [1, 2, 5, 10, 30, 100]
+
+
 def test_contraction_reads_one_flip_as_well_as_thirty_and_its_legend_covers_no_curve():
     """Reader r10b: the reconstruction panel ran to 30 on a linear axis, the values at 1 flip squashed at its foot;
     r11b: the latent panel's legend lay on its curves. Both counts are on log scales (a linear stretch from 0 to 1
@@ -302,7 +308,8 @@ def test_contraction_reads_one_flip_as_well_as_thirty_and_its_legend_covers_no_c
     ax_j, ax_z, ax_x = fig.axes
     assert ax_x.get_yscale() == ax_x.get_xscale() == ax_z.get_xscale() == "symlog"
     assert [t.get_text() for t in ax_x.get_xticklabels()] == ["1", "2", "3", "5", "10", "20", "30"]
-    assert [t.get_text() for t in ax_x.get_yticklabels()] == ["0", "1", "2", "5", "10", "20"]
+    # r26b: the copy line's end, 30, is a tick (20 too close beside it)
+    assert [t.get_text() for t in ax_x.get_yticklabels()] == ["0", "1", "2", "5", "10", "30"]
     low, high = ax_x.get_ylim()
     assert low < 0 and high > 30  # every count drawn, the copy line's 30 too
     to_px = ax_x.transData.transform

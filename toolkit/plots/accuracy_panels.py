@@ -23,8 +23,13 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
     """One panel per group ``{name: (all_free (W,), accuracy (W,))}``: each workspace a point, its reconstruction
     accuracy (y) against its share of free cells (x, the accuracy of answering "all free"), above the dashed
     diagonal when the CAE beats that answer; the group's mean a large mark. The panels share both axes."""
-    fig = Figure(figsize=(PAGE_WIDTH, 3.0), layout="constrained")
-    axes = np.atleast_1d(fig.subplots(1, len(groups), sharex=True, sharey=True))
+    across = min(len(groups), 2)  # review r26b: three panels in a row were 170 px wide each; at most two a row
+    rows_of_panels = -(-len(groups) // across)
+    fig = Figure(figsize=(PAGE_WIDTH, 2.9 * rows_of_panels + 0.5), layout="constrained")
+    grid = np.atleast_2d(fig.subplots(rows_of_panels, across, sharex=True, sharey=True, squeeze=False))
+    axes, spare = grid.flat[: len(groups)], grid.flat[len(groups) :]  # spare: the empty slot of an odd count
+    for ax in axes:  # sharing x hides the tick labels above the last row, but a panel over an empty slot needs its own
+        ax.tick_params(labelbottom=True)
     values = [np.asarray(v, dtype=float) for pair in groups.values() for v in pair]
     low = min(float(v.min()) for v in values)
     said, rows = [], []
@@ -47,7 +52,7 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
             path_effects=halo(1.2, ("ink",)),
             gid=f"{name}: mean",
         )
-        ax.set_title("\n".join(textwrap.wrap(name, 26)) + f"\nmean {mean[1]:.1%} vs {mean[0]:.1%}", fontsize=9)
+        ax.set_title("\n".join(textwrap.wrap(name, 40)) + f"\nmean {mean[1]:.1%} vs {mean[0]:.1%}", fontsize=9)
         ax.set_xlabel("share of free cells")
         ax.tick_params(labelsize=8)
         above = int(np.sum(accuracy > all_free))
@@ -56,12 +61,29 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
             f"{above} of them above the diagonal"
         )
         rows.append((name, str(len(accuracy)), f"{mean[1]:.1%}", f"{mean[0]:.1%}", f"{above} of {len(accuracy)}"))
-    axes[0].set_ylabel("reconstruction accuracy")
+    for ax in grid[:, 0]:
+        ax.set_ylabel("reconstruction accuracy")
     handles = [
         Line2D([], [], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal): above it, better'),
-        Line2D([], [], color=COLORS["ink"], marker="o", linestyle="", markersize=9, label="large mark: the mean"),
+        Line2D(  # drawn as the means are: the group's colour (here a neutral grey), a light ring, a dark edge
+            [],
+            [],
+            marker="o",
+            linestyle="",
+            markersize=11,
+            markerfacecolor=COLORS["reference"],
+            markeredgecolor=COLORS["free"],
+            markeredgewidth=1.2,
+            path_effects=halo(1.2, ("ink",)),
+            label="large ringed mark: the panel's mean",
+        ),
     ]
-    fig.legend(handles=handles, loc="outside lower center", ncols=2, fontsize=9, frameon=False)
+    for ax in spare:  # the legend in the empty slot, where it covers nothing
+        ax.set_axis_off()
+    if len(spare):
+        spare[0].legend(handles=handles, loc="center", fontsize=9, frameon=False)
+    else:
+        fig.legend(handles=handles, loc="outside lower center", ncols=2, fontsize=9, frameon=False)
     text = "Reconstruction accuracy against the accuracy of answering all free, one panel per group, one point per "
     columns = ("panel", "workspaces", "mean accuracy", "mean all free", "above the diagonal")
     return describe(fig, text + "workspace. " + "; ".join(said) + ".", [Part("the panels", "", columns, tuple(rows))])
