@@ -218,12 +218,20 @@ def chapter_03(nb) -> list[str]:
     same samples, its balanced accuracy, (TPR + TNR) / 2, against a coin flip, "worse than chance" only below it (review
     r16b: 38 % on samples 86 % valid, balanced accuracy 54 %, was called worse than chance); section 6's sweep."""
     found, problems = " ".join(texts(nb)), []
-    rows = {
-        (row[0], row[1]): [int(v.rstrip("%")) for v in row[2:5]]
+    rows = {  # the closing table's rows: accuracy, TPR and TNR ("TPR / TNR" one cell), balanced accuracy last
+        (row[0], row[1]): [int(v) for v in re.findall(r"(\d+)%", " ".join(row[2:4]))]
         for _, rs in tables(nb)
-        for row in rs[:]
-        if len(row) == 5 and row[2].endswith("%")
+        for row in rs
+        if len(row) == 5 and row[2].endswith("%") and " / " in row[3]
     }
+    problems += [
+        f"03: the closing table's balanced accuracy for {who} is not (TPR + TNR) / 2"
+        for _, rs in tables(nb)
+        for row in rs
+        if len(row) == 5 and row[2].endswith("%") and " / " in row[3]
+        for who, (tpr, tnr, balanced) in [(row[0], [int(v) for v in re.findall(r"(\d+)%", " ".join(row[3:]))])]
+        if abs(balanced - (tpr + tnr) / 2) > 1
+    ]
     for kind in ("balanced", "validity-blind"):
         always = rows.get(("always valid", kind))
         for preset in ("paper", "strong"):
@@ -237,7 +245,32 @@ def chapter_03(nb) -> list[str]:
         problems.append("03: the threshold sweep's sentence is not printed")
     elif 'no threshold beats "always valid"' not in found:
         problems.append('03: section 6 says no threshold beats "always valid"; the sweep\'s sentence says one does')
-    return problems + _chapter_03_verdict(nb, found) + _chapter_03_slices(found) + _page_width(nb, tables(nb), "03")
+    return (
+        problems
+        + _chapter_03_opening(nb)
+        + _chapter_03_verdict(nb, found)
+        + _chapter_03_slices(found)
+        + _page_width(nb, tables(nb), "03")
+    )
+
+
+def _chapter_03_opening(nb) -> list[str]:
+    """The verdict under the title against the recorded table beside it (review r26c: a verdict with numbers): the
+    `paper` preset about a coin flip by balanced accuracy on 2DS, the `strong` preset "almost perfectly" (90 % or more)
+    on 2DS and 3DC-7."""
+    said = {
+        row[0]: int(row[1].rstrip("%"))
+        for header, rs in tables(nb)
+        if header and header[0] == "model, unseen workspaces"
+        for row in rs
+    }
+    want = {"our `paper` preset, 2DS": (40, 60), "our `strong` preset, 2DS": (90, 100)}
+    want["our `strong` preset, 3DC-7"] = (90, 100)
+    return [
+        f"03: the opening verdict's table gives {who} {said.get(who)}%, not within {low}-{high}%"
+        for who, (low, high) in want.items()
+        if not low <= said.get(who, -1) <= high
+    ]
 
 
 def _chapter_03_accuracy(who: str, said: tuple, table: list[int], always: int) -> list[str]:

@@ -253,6 +253,30 @@ def test_a_fine_maps_marks_stand_apart_and_a_one_cell_strip_of_mistakes_is_marke
     assert (apart.min(axis=1) < block_of_squares(fig, "circles")).all()  # every cell of the strip beside a circle
 
 
+def test_each_mark_sits_on_a_mistake_of_its_kind():
+    """Reader r26c, chapter 03: a block's mistakes on two edges of a C-obstacle averaged into its inside, so that a
+    circle ("rejected, free") sat in the obstacle and others on the kept side of the threshold. Each mark now sits on
+    one of its block's mistakes of its kind: here a ring of free cells rejected around the block, and the block's left
+    and right edges kept (dangerous), at both pitches."""
+    fine = slices.slice_grid(robots.point_robot(), n=100)
+    ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
+    valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (100, 100)
+    i, j = np.nonzero(~valid)
+    ring = np.zeros_like(valid)
+    ring[i.min() - 2 : i.max() + 3, j.min() - 2 : j.max() + 3] = True
+    probability = np.where(valid & ~ring, 0.9, 0.1)  # a ring two cells wide of free cells rejected
+    probability[[i.min(), i.max()], j.min() : j.max() + 1] = 0.9  # the block's left and right edges kept
+    fig = pc.probability_map(probability, valid, fine, threshold=0.5)
+    ax = fig.axes[0]
+    codes = answers.answer_codes(probability >= 0.5, valid)
+    first, cell = np.array([fine.axes[0][0], fine.axes[1][0]]), fine.axes[0][1] - fine.axes[0][0]
+    for label, code in (("valid rejected", 1), ("invalid kept (dangerous)", 3)):
+        (mark,) = [c for c in cell_marks.cell_marks(ax) if c.get_label() == label]
+        at = np.rint((np.asarray(mark.get_offsets()) - first) / cell).astype(int)  # (m, 2) the cells under the marks
+        assert len(at) and (codes[at[:, 0], at[:, 1]] == code).all(), label
+    assert block_of_squares(fig, "circles") > 1 and block_of_squares(fig, "squares") > 1  # merged into blocks
+
+
 def test_a_maps_circles_lie_under_its_outlines_and_every_mark_inside_its_frame():
     """Reader r19b, chapter 03's 3DC-7 slices at full size: circles drawn over the C-obstacle's outlines hid them, and
     a top row of marks sat on the map's frame, half outside it. On a P(valid) map the circles now lie under the

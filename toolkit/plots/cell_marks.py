@@ -7,11 +7,12 @@ that size is a speck, and a mark made larger would cover its neighbours' marks.
 :func:`draw_cell_marks` puts a mark on each marked cell, over the map and under its outlines (or over them: the
 classifier's maps draw their dangerous squares over the boundary, which would cut one beside it in two);
 :func:`fit_cell_marks`, once the figure is laid out, puts one mark on each block of ``k x k`` cells holding a marked
-cell, at their middle: ``k`` the fewest cells that make a mark :data:`MIN_MARK` points wide at :data:`MARK_SHARE` of
-its block, and that keep two marks' centres at least the ``pitch`` the marks were drawn with apart (review r18b: on
-chapter 03's `paper` map a pile of squares a block apart merged into one shape that could not be counted); a mark
-drawn with a pitch stays near its block's middle, so that two in neighbouring blocks keep :data:`CLEAR` between them,
-and inside the map's frame.
+cell, on one of those cells (the nearest their mean): ``k`` the fewest cells that make a mark :data:`MIN_MARK` points
+wide at :data:`MARK_SHARE` of its block, and that keep two marks' centres at least the ``pitch`` the marks were drawn
+with apart (review r18b: on chapter 03's `paper` map a pile of squares a block apart merged into one shape that could
+not be counted); a mark drawn with a pitch sits on a cell near its block's middle where it can, so that two in
+neighbouring blocks keep :data:`CLEAR` between them, and inside the map's frame (a mark on an edge cell moves in by
+its rings' width).
 """
 
 from __future__ import annotations
@@ -68,14 +69,37 @@ def fit_cell_marks(fig: Figure, grid: CSpaceSlice) -> dict[str, int]:
             cells = np.rint((offsets - first) / cell).astype(int)  # (n, 2) cell indices
             block, block_of = np.unique(cells // k, axis=0, return_inverse=True)  # (m, 2), (n,) the block of each
             block_of = block_of.ravel()
-            means = np.array([cells[block_of == b].mean(axis=0) for b in range(len(block))])  # (m, 2)
             middle = block * k + (k - 1) / 2  # (m, 2) each block's middle cell
             spread = max(0.0, (k * side - size - CLEAR) / (2 * side)) if pitch else k  # cells off the middle, at most
-            centres = np.clip(means, middle - spread, middle + spread)  # at its cells' middle, a mark's width apart
+            apart = (size + CLEAR) / side if pitch else 0.0  # cells between two marks' centres, at least
+            centres = np.empty((len(block), 2))  # (m, 2) each on one of its block's marked cells
+            for b in range(len(block)):
+                centres[b] = _on_a_cell(
+                    cells[block_of == b], middle[b], spread, centres[:b][~np.isnan(centres[:b, 0])], apart
+                )
+            centres = centres[~np.isnan(centres[:, 0])]
             inset = max(0.0, (size / 2 + RING) / side - 0.5)  # cells: from the edge cells' centres to a whole mark
             centres = np.clip(centres, inset, np.array(grid.shape) - 1 - inset)  # inside the map, rings and all
             mark.set_offsets(first + centres * cell)
     return blocks
+
+
+def _on_a_cell(cells: np.ndarray, middle: np.ndarray, spread: float, placed: np.ndarray, apart: float) -> np.ndarray:
+    """The one of a block's marked ``cells (n, 2)`` its mark sits on: the nearest their mean (clipped to ``spread``
+    cells of the block's ``middle``) of those at least ``apart`` cells from every mark ``placed (p, 2)``, the window's
+    first; where none is that far, none (NaN: they lie beside that mark, less than a block from it). Never the mean
+    itself (review r26c: a block's mistakes on two of an obstacle's edges averaged into its inside, where a circle then
+    claimed a free cell rejected)."""
+    mean = np.clip(cells.mean(axis=0), middle - spread, middle + spread)  # (2,) where the mark would best sit
+    near = np.max(np.abs(cells - mean), axis=1) + 1e6 * (np.max(np.abs(cells - middle), axis=1) > spread + 1e-9)
+    clear = (
+        np.max(np.abs(cells[:, None] - placed[None]), axis=2).min(axis=1)
+        if len(placed)
+        else np.full(len(cells), np.inf)
+    )
+    if (clear >= apart - 1e-9).any():
+        return cells[np.argmin(np.where(clear >= apart - 1e-9, near, np.inf))].astype(float)
+    return np.full(2, np.nan)  # every one of them beside a mark already: that mark stands for them too
 
 
 def cell_points(ax: Axes, grid: CSpaceSlice) -> float:

@@ -70,7 +70,8 @@ def probability_maps(
     other, each as wide as the page with a colour bar of its own, its threshold a line across it (review r16b: side by
     side, the one bar read as the right map's), its mistakes counted in its title."""
     cut = {name: thresholds[name] if isinstance(thresholds, Mapping) else thresholds for name in probabilities}
-    fig = Figure(figsize=(PAGE_WIDTH, 4.8 * len(cut) + 1.0), layout="constrained")  # r15c: at 230 px, a strip a pixel
+    fig = Figure(figsize=(PAGE_WIDTH, 4.8 * len(cut) + 1.0))  # r15c: at 230 px, a strip a pixel
+    fig.set_layout_engine("constrained", h_pad=0.25)  # r26c: the first map's "x" met the second's title
     axes = fig.subplots(len(cut), 1, squeeze=False)[:, 0]
     said, parts = [], []
     for ax, (name, probability), t in zip(axes, probabilities.items(), cut.values()):
@@ -83,7 +84,7 @@ def probability_maps(
         parts.append(answers.map_in_regions(name, said[-1], probability, valid, grid, t))
     blocks = fit_cell_marks(fig, grid)  # laid out: each kind's marks one per k x k cells holding any
     k = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
-    _legend(fig, _mistake_handles(k))
+    _legend(fig, _mistake_handles(k), above=len(cut) > 1)  # r26c: under the second map, a screen below the first
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
     text += "configurations; grey, 0 black to 1 white) with the true C-obstacle boundary outlined, the threshold's "
     text += f"contour dotted, dangerous mistakes as squares{_per_block(k[3])} and conservative ones as circles"
@@ -378,12 +379,14 @@ def _mistake_line(code: int) -> Line2D:
     return Line2D([], [], linestyle="", markersize=7, **_mistake_mark(code, legend=True))
 
 
-def _legend(fig: Figure, handles: list) -> None:
-    """The boundary, then ``handles`` (``(handle, label)`` pairs), under the figure."""
+def _legend(fig: Figure, handles: list, *, above: bool = False) -> None:
+    """The boundary, then ``handles`` (``(handle, label)`` pairs), under the figure (``above``: over it, where the
+    figure's maps lie one above the other and the first must be read with it)."""
     boundary = Line2D([], [], color=BOUNDARY, path_effects=halo(1.2))
     pairs = [(boundary, "true C-obstacle boundary"), *handles]
     ncols = len(pairs) if fig.get_figwidth() >= 9 else 2
-    fig.legend(*zip(*pairs), loc="outside lower center", ncols=ncols, fontsize=9, frameon=False)
+    where = "outside upper center" if above else "outside lower center"
+    fig.legend(*zip(*pairs), loc=where, ncols=ncols, fontsize=9, frameon=False)  # type: ignore[call-overload]
 
 
 def _draw_counts(ax, predicted_valid, valid) -> None:
