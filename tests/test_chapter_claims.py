@@ -1217,7 +1217,7 @@ def chapter_01(
         )
     in_3d = sorted(r for name, r in ratios.items() if name != "2ds") or [1.0]
     parts = {
-        "about": f"{float(f'{in_3d[len(in_3d) // 2]:.1g}'):g}",
+        "about": f"{in_3d[len(in_3d) // 2]:.0f}",
         "low": f"{min(in_3d):.0f}",
         "high": f"{max(in_3d):.0f}",
         "in_2d": f"{ratios.get('2ds', 1):.0f}",
@@ -1247,12 +1247,12 @@ def test_chapter_01_passes_the_ratios_its_words_describe():
 
 def test_chapter_01_fails_words_its_ratios_do_not_give():
     """Review r26a: "roughly ten to a hundred times" beside 46, 53 and 54 times; the line under the table now gives
-    "about 50x (46–54x in this run)", held to the table's rates."""
+    "about 53x (46–54x in this run)", held to the table's rates."""
     assert problems(CH01, chapter_01(MEASURED_01, said={"about": "10"})) == [
         "01: the line says about 10x (46–54x), the 3D rates give [46.0, 53.0, 54.0]"
     ]
     assert problems(CH01, chapter_01(MEASURED_01, said={"low": "10", "high": "100"})) == [
-        "01: the line says about 50x (10–100x), the 3D rates give [46.0, 53.0, 54.0]"
+        "01: the line says about 53x (10–100x), the 3D rates give [46.0, 53.0, 54.0]"
     ]
     assert problems(CH01, chapter_01(MEASURED_01, said={"in_2d": "50"})) == [
         "01: the line says 50x the point robot check's in 2D, the rates 139.0x the point robot"
