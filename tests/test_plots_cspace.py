@@ -429,3 +429,17 @@ def test_a_slice_over_positions_shows_a_pixel_beyond_the_bounds_dark(square_worl
     lo, hi = robot.lower[0], robot.upper[0]
     np.testing.assert_allclose(ax.get_xlim(), (lo - (hi - lo) / 31, hi + (hi - lo) / 31))
     assert to_hex(ax.get_facecolor()) == palette.COLORS["occupied"]
+
+
+def test_the_slice_explorer_starts_at_a_valid_configuration_and_redraws_when_a_slider_moves(capsys):
+    """Chapter 01, section 5: one slider per DoF at a start near a block, the scenario's two DoF swept first."""
+    box = cspace.slice_explorer({"3dc7": (5, 6)}, start="3dc7", seed=0, resolution=8)
+    controls, _ = box.children
+    scenario, _, sweep_i, sweep_j, _, fixed = controls.children
+    robot = scenarios.get("3dc7").robot
+    assert (scenario.value, sweep_i.value, sweep_j.value, len(fixed.children)) == ("3dc7", 5, 6, robot.dof)
+    start = np.array([s.value for s in fixed.children])
+    assert FCLChecker(scenarios.get("3dc7").make_workspace(np.random.default_rng(0)), robot).is_valid(start)
+    capsys.readouterr()  # outside a kernel, the Output widget's content goes to stdout
+    sweep_j.value = 5  # the same DoF twice: a message, not a figure
+    assert "choose two different DoF" in capsys.readouterr().out

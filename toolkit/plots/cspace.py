@@ -378,3 +378,67 @@ def nudged_into_a_block(checker: CollisionChecker, q, dofs: tuple[int, ...] = (0
             if robot.in_bounds(moved[None])[0] and not checker.is_valid(moved) and touching(robot, workspace, moved):
                 return moved
     return None
+
+
+def slice_explorer(sweeps: dict[str, tuple[int, int]], start: str, seed: int = 0, resolution: int = 60):
+    """Widgets to explore 2-DoF slices (chapter 01, section 5): a scenario (``sweeps``: name -> the two DoF it
+    starts sweeping; ``start`` first), a workspace seed, the two DoF to sweep, the robot panel's view, and one slider
+    per DoF at the values of a valid configuration near a block (:func:`configuration_near_blocks`). Each redraw is
+    one :func:`cspace_slice` at ``resolution``; a workspace's checker and start are computed once per scenario and
+    seed. Returns the ``HBox`` to display."""
+    from functools import lru_cache
+
+    import ipywidgets as widgets
+    from IPython.display import display
+
+    from toolkit import scenarios
+    from toolkit.geometry.collision import exact_checker
+
+    @lru_cache(maxsize=32)
+    def checker_and_start(name: str, seed: int):
+        s = scenarios.get(name)
+        checker = exact_checker(s.make_workspace(np.random.default_rng(seed)), s.robot)
+        return checker, configuration_near_blocks(checker, np.random.default_rng(seed))
+
+    scenario_w = widgets.Dropdown(options=list(sweeps), value=start, description="scenario")
+    seed_w = widgets.IntSlider(seed, 0, 20, description="seed", continuous_update=False)
+    view_w = widgets.Dropdown(options=["xy", "xz", "3d"], description="robot view")
+    joint_i_w, joint_j_w = widgets.Dropdown(description="sweep i"), widgets.Dropdown(description="sweep j")
+    fixed_box, out = widgets.VBox(), widgets.Output()
+    redrawing = {"paused": False}  # resetting several widgets at once draws once, not per widget
+
+    def redraw(_=None):
+        if redrawing["paused"]:
+            return
+        checker, _ = checker_and_start(scenario_w.value, seed_w.value)
+        q = np.array([slider.value for slider in fixed_box.children])
+        joints = (joint_i_w.value, joint_j_w.value)
+        out.clear_output(wait=True)
+        with out:
+            if joints[0] == joints[1]:
+                print("choose two different DoF to sweep")
+            else:
+                display(cspace_slice(checker, q, joints, resolution=resolution, view=view_w.value))
+
+    def reset(_=None):
+        checker, first = checker_and_start(scenario_w.value, seed_w.value)
+        robot = checker.robot
+        redrawing["paused"] = True
+        sliders = [
+            widgets.FloatSlider(value=v, min=lo, max=hi, step=0.01, description=name, continuous_update=False)
+            for v, lo, hi, name in zip(first, robot.lower, robot.upper, robot.dof_names)
+        ]
+        for slider in sliders:
+            slider.observe(redraw, "value")
+        fixed_box.children = sliders
+        joint_i_w.options = joint_j_w.options = [(name, k) for k, name in enumerate(robot.dof_names)]
+        joint_i_w.value, joint_j_w.value = sweeps[scenario_w.value]
+        redrawing["paused"] = False
+        redraw()
+
+    for w in (scenario_w, seed_w):
+        w.observe(reset, "value")
+    for w in (view_w, joint_i_w, joint_j_w):
+        w.observe(redraw, "value")
+    reset()
+    return widgets.HBox([widgets.VBox([scenario_w, seed_w, joint_i_w, joint_j_w, view_w, fixed_box]), out])
