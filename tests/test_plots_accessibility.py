@@ -148,6 +148,8 @@ def gallery() -> dict[str, Figure]:
     clutter = chain.make_workspace(np.random.default_rng(2))
     chain_exact = exact_checker(clutter, chain.robot)
     Q = chain.robot.sample(rng, 3)
+    near = cspace.configuration_near_blocks(chain_exact, np.random.default_rng(0), n=500)  # valid, and moved into a
+    touching = cspace.nudged_into_a_block(chain_exact, near)  # block: chapter 01's figure of one check
     path = chain.robot.interpolate(Q[0], Q[1], np.linspace(0, 1, 12))
     samples = {"BS": rng.uniform(0, 31, (30, 2)), "G": rng.uniform(0, 31, (20, 2))}
     S = rng.uniform(0, 31, (60, 2))
@@ -212,6 +214,7 @@ def gallery() -> dict[str, Figure]:
         "robot_drawing.robot_figure": robot_drawing.robot_figure(
             chain.robot, Q, clutter, labels=["joint2 low", "joint2 middle", "joint2 high"]
         ),
+        "robot_drawing.verdict_figure": robot_drawing.verdict_figure(chain_exact, np.stack([near, touching])),
         "cspace.cspace_image": cspace.cspace_image(exact, resolution=100),
         "cspace.cspace_slice": cspace.cspace_slice(chain_exact, Q[0], (3, 4), resolution=20),
         "planning.samplers": planning.samplers(exact, samples, attempts=60),

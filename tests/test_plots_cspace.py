@@ -20,6 +20,7 @@ from toolkit.geometry.collision import (
     FCLChecker,
     PointRobotChecker,
     SeparatingAxisChecker,
+    exact_checker,
 )
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots import boxes, cspace, palette, robot_drawing, slices
@@ -381,3 +382,64 @@ def test_the_offices_cabinets_and_desks_differ_in_lightness_and_their_hatches_sh
     assert palette.contrast(cabinet, desk) >= 3.0
     assert all(block.get_hatch() and block.get_hatch_linewidth() >= 1.2 for k, block in faces.items() if k != "cabinet")
     assert fig.get_figwidth() <= palette.PAGE_WIDTH and fig.legends  # the legend below the view, over no block
+
+
+def test_touching_names_exactly_the_link_and_block_pairs_the_separating_axis_reference_finds(clutter):
+    """Review r26a: the figure of one check marks the link box and the block that touch; each pair it names must be
+    one the reference checker finds in collision alone, and a valid configuration names none."""
+    robot = robots.box_chain(1)
+    checker = SeparatingAxisChecker(clutter, robot)
+    Q = robot.sample(np.random.default_rng(3), 200)
+    inside = Q[robot.in_bounds(Q)]
+    for q in inside[:80]:
+        pairs = robot_drawing.touching(robot, clutter, q)
+        for _, block in pairs:
+            alone = Workspace(clutter.lower, clutter.upper, clutter.boxes[block : block + 1])
+            assert not SeparatingAxisChecker(alone, robot).is_valid(q)
+        if checker.is_valid(q):
+            assert pairs == []
+    hits = [q for q in inside if not checker.is_valid(q) and robot_drawing.touching(robot, clutter, q)]
+    assert hits  # some configurations touch a block
+
+
+def test_verdict_figure_titles_each_panel_with_the_checkers_verdict_and_marks_what_touches(clutter):
+    robot = robots.box_chain(1)
+    checker = FCLChecker(clutter, robot)
+    q = cspace.configuration_near_blocks(checker, np.random.default_rng(0), n=500)
+    hit = cspace.nudged_into_a_block(checker, q, step=0.05)
+    assert hit is not None and not checker.is_valid(hit)
+    moved = np.flatnonzero(hit != q)
+    assert len(moved) == 1 and moved[0] in (0, 1)  # one of x, y, by whole steps
+    assert abs(hit[moved[0]] - q[moved[0]]) / 0.05 == pytest.approx(round(abs(hit[moved[0]] - q[moved[0]]) / 0.05))
+    fig = robot_drawing.verdict_figure(checker, np.stack([q, hit]))
+    left, right = fig.axes
+    assert left.get_title() == "valid" and right.get_title().startswith("in collision: link ")
+    assert not _patches(left, "touching link") and not _patches(left, "touched block")
+    pairs = robot_drawing.touching(robot, clutter, hit)
+    assert len(_patches(right, "touching link")) == len(_patches(right, "touched block")) == len(pairs) > 0
+    assert f"block {pairs[0][1] + 1}" in right.get_title() and "configuration 2, in collision" in alt_text(fig)
+
+
+def test_a_slice_over_positions_shows_a_pixel_beyond_the_bounds_dark(square_world):
+    """Review r26a: the wall's bar at x = 0 merged with the axis's spine; a pixel's width beyond the bounds is drawn
+    dark (out of bounds is invalid), and an angle's axis is not padded."""
+    robot = robots.point_robot()
+    fig = cspace.cspace_slice(exact_checker(square_world, robot), [5.0, 6.0], joints=(0, 1), resolution=31)
+    ax = fig.axes[0]
+    lo, hi = robot.lower[0], robot.upper[0]
+    np.testing.assert_allclose(ax.get_xlim(), (lo - (hi - lo) / 31, hi + (hi - lo) / 31))
+    assert to_hex(ax.get_facecolor()) == palette.COLORS["occupied"]
+
+
+def test_the_slice_explorer_starts_at_a_valid_configuration_and_redraws_when_a_slider_moves(capsys):
+    """Chapter 01, section 5: one slider per DoF at a start near a block, the scenario's two DoF swept first."""
+    box = cspace.slice_explorer({"3dc7": (5, 6)}, start="3dc7", seed=0, resolution=8)
+    controls, _ = box.children
+    scenario, _, sweep_i, sweep_j, _, fixed = controls.children
+    robot = scenarios.get("3dc7").robot
+    assert (scenario.value, sweep_i.value, sweep_j.value, len(fixed.children)) == ("3dc7", 5, 6, robot.dof)
+    start = np.array([s.value for s in fixed.children])
+    assert FCLChecker(scenarios.get("3dc7").make_workspace(np.random.default_rng(0)), robot).is_valid(start)
+    capsys.readouterr()  # outside a kernel, the Output widget's content goes to stdout
+    sweep_j.value = 5  # the same DoF twice: a message, not a figure
+    assert "choose two different DoF" in capsys.readouterr().out

@@ -20,6 +20,7 @@ matplotlib ``Figure``, described in words (:func:`~toolkit.plots.alt.describe`),
 
 from __future__ import annotations
 
+import itertools
 import textwrap
 from collections.abc import Sequence
 from functools import partial
@@ -36,7 +37,7 @@ from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe, map_part
 from toolkit.plots.boxes import aabb_corners, add_box_3d
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
-from toolkit.plots.robot_drawing import dof_label, draw_robot, few_ticks, link_colors
+from toolkit.plots.robot_drawing import POSITION_NAMES, dof_label, draw_robot, few_ticks, link_colors, touching
 from toolkit.plots.slices import joint_bounds, slice_configs
 
 COLLISION_CMAP = ListedColormap([COLORS["free"], COLORS["occupied"]])  # 0: valid, 1: in collision (dark)
@@ -71,8 +72,15 @@ def _dof_label(robot: BoxRobot, index: int) -> str:
 # -- workspaces and their grids --------------------------------------------------
 
 
-KIND_ORDER = (0, 1, 5, 3, 4, 2)  # the office's kinds in CATEGORICAL's colours and hatches: blue and sky blue go to
-# cabinets and walls, tall boxes and long slabs, not to cabinets and desks, boxes of about one size
+KIND_ORDER = (
+    0,
+    1,
+    5,
+    3,
+    2,
+    4,
+)  # the office's kinds in CATEGORICAL's colours and hatches: cabinets blue, walls grey (r26a:
+# a blue cabinet and a sky-blue wall looked alike), desks white: cabinets and desks, of about one size, 3:1 apart
 
 
 def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
@@ -119,6 +127,7 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
         few_ticks(ax)
         if stretch > 1:
             ax.set_zlabel(f"z (drawn {stretch}x)")
+            ax.view_init(elev=55, azim=-60)  # a flat region seen steeply: low blocks (chairs) less hidden (r26a)
     if kinds:
         handles = [Patch(facecolor=colors[k], edgecolor=COLORS["ink"], hatch=hatches[k], label=k) for k in kinds]
         fig.legend(handles=handles, fontsize=9, loc="lower center", ncols=min(len(kinds), 3), frameon=False)
@@ -296,8 +305,15 @@ def cspace_slice(
     q = robot.check_configs(q)[0]  # (dof,)
     q_valid = checker.are_valid(q[None])
     fig = Figure(figsize=(PAGE_WIDTH if view else 4.5, 4.2))
-    ax = fig.add_subplot(1, 2 if view else 1, 1)
+    side = view in ("xz", "yz")  # a side view of a flat robot: its panel wider, the robot drawn larger (r26a)
+    grid = fig.add_gridspec(1, 2 if view else 1, width_ratios=(1, 1.5) if side else None)
+    ax = fig.add_subplot(grid[0, 0])
     valid = _draw_cspace(ax, checker, q, joints, resolution, None)
+    for k, limits, set_limits in ((joints[0], ax.get_xlim(), ax.set_xlim), (joints[1], ax.get_ylim(), ax.set_ylim)):
+        if robot.dof_names[k] in POSITION_NAMES:  # a pixel's width beyond the bounds, dark: out of bounds is
+            pad = (limits[1] - limits[0]) / resolution  # invalid, and a bar at the edge stands off the axis's spine
+            set_limits(limits[0] - pad, limits[1] + pad)
+    ax.set_facecolor(COLORS["occupied"])
     star: dict[str, Any] = dict(
         marker="*", markersize=14, markeredgecolor=COLORS["free"], color=link_colors(1, q_valid)[0]
     )
@@ -309,7 +325,7 @@ def cspace_slice(
         fontsize=9,
     )
     if view:
-        robot_ax = fig.add_subplot(1, 2, 2, **({"projection": "3d"} if view == "3d" else {}))
+        robot_ax = fig.add_subplot(grid[0, 1], **({"projection": "3d"} if view == "3d" else {}))
         colors, workspace = link_colors(1, q_valid), checker_workspace(checker)
         draw_robot(robot_ax, robot, q[None], colors=colors, view=view, workspace=workspace, margin=margin)
         verdict = "valid" if q_valid[0] else "in collision"
@@ -347,3 +363,82 @@ def configuration_near_blocks(checker: CollisionChecker, rng: np.random.Generato
     aabbs = robot.link_aabbs(Q)[:, :, None]  # (M, L, 1, 2, D)
     gap = np.maximum(np.maximum(boxes[:, 0] - aabbs[..., 1, :], aabbs[..., 0, :] - boxes[:, 1]), 0)  # (M, L, K, D)
     return Q[np.argmin(np.linalg.norm(gap, axis=-1).min(axis=(1, 2)))]
+
+
+def nudged_into_a_block(checker: CollisionChecker, q, dofs: tuple[int, ...] = (0, 1), step: float = 0.05):
+    """The configuration nearest ``q (dof,)`` that a block makes invalid, moving one of ``dofs`` at a time up or down
+    in steps of ``step`` (within the robot's bounds): the same robot, a little further, touching (a figure's
+    colliding twin of a valid :func:`configuration_near_blocks`). ``None`` if none is within the bounds."""
+    robot, workspace = checker.robot, checker_workspace(checker)
+    q = robot.check_configs(q)[0]
+    for k in range(1, int(np.ceil(np.max(robot.upper - robot.lower) / step)) + 1):
+        for dof, sign in itertools.product(dofs, (1, -1)):
+            moved = q.copy()
+            moved[dof] += sign * k * step
+            if robot.in_bounds(moved[None])[0] and not checker.is_valid(moved) and touching(robot, workspace, moved):
+                return moved
+    return None
+
+
+def slice_explorer(sweeps: dict[str, tuple[int, int]], start: str, seed: int = 0, resolution: int = 60):
+    """Widgets to explore 2-DoF slices (chapter 01, section 5): a scenario (``sweeps``: name -> the two DoF it
+    starts sweeping; ``start`` first), a workspace seed, the two DoF to sweep, the robot panel's view, and one slider
+    per DoF at the values of a valid configuration near a block (:func:`configuration_near_blocks`). Each redraw is
+    one :func:`cspace_slice` at ``resolution``; a workspace's checker and start are computed once per scenario and
+    seed. Returns the ``HBox`` to display."""
+    from functools import lru_cache
+
+    import ipywidgets as widgets
+    from IPython.display import display
+
+    from toolkit import scenarios
+    from toolkit.geometry.collision import exact_checker
+
+    @lru_cache(maxsize=32)
+    def checker_and_start(name: str, seed: int):
+        s = scenarios.get(name)
+        checker = exact_checker(s.make_workspace(np.random.default_rng(seed)), s.robot)
+        return checker, configuration_near_blocks(checker, np.random.default_rng(seed))
+
+    scenario_w = widgets.Dropdown(options=list(sweeps), value=start, description="scenario")
+    seed_w = widgets.IntSlider(seed, 0, 20, description="seed", continuous_update=False)
+    view_w = widgets.Dropdown(options=["xy", "xz", "3d"], description="robot view")
+    joint_i_w, joint_j_w = widgets.Dropdown(description="sweep i"), widgets.Dropdown(description="sweep j")
+    fixed_box, out = widgets.VBox(), widgets.Output()
+    redrawing = {"paused": False}  # resetting several widgets at once draws once, not per widget
+
+    def redraw(_=None):
+        if redrawing["paused"]:
+            return
+        checker, _ = checker_and_start(scenario_w.value, seed_w.value)
+        q = np.array([slider.value for slider in fixed_box.children])
+        joints = (joint_i_w.value, joint_j_w.value)
+        out.clear_output(wait=True)
+        with out:
+            if joints[0] == joints[1]:
+                print("choose two different DoF to sweep")
+            else:
+                display(cspace_slice(checker, q, joints, resolution=resolution, view=view_w.value))
+
+    def reset(_=None):
+        checker, first = checker_and_start(scenario_w.value, seed_w.value)
+        robot = checker.robot
+        redrawing["paused"] = True
+        sliders = [
+            widgets.FloatSlider(value=v, min=lo, max=hi, step=0.01, description=name, continuous_update=False)
+            for v, lo, hi, name in zip(first, robot.lower, robot.upper, robot.dof_names)
+        ]
+        for slider in sliders:
+            slider.observe(redraw, "value")
+        fixed_box.children = sliders
+        joint_i_w.options = joint_j_w.options = [(name, k) for k, name in enumerate(robot.dof_names)]
+        joint_i_w.value, joint_j_w.value = sweeps[scenario_w.value]
+        redrawing["paused"] = False
+        redraw()
+
+    for w in (scenario_w, seed_w):
+        w.observe(reset, "value")
+    for w in (view_w, joint_i_w, joint_j_w):
+        w.observe(redraw, "value")
+    reset()
+    return widgets.HBox([widgets.VBox([scenario_w, seed_w, joint_i_w, joint_j_w, view_w, fixed_box]), out])

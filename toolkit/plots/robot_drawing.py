@@ -5,7 +5,9 @@ Forward kinematics (``robot.link_boxes``) places each link box of a configuratio
 - :func:`draw_robot` draws the link boxes of configurations, and the blocks near them, on an axes of your own, in
   3D or projected onto a coordinate plane (the building block of :func:`robot_figure`,
   :func:`toolkit.plots.cspace.cspace_slice` and :mod:`toolkit.plots.scenes`);
-- :func:`robot_figure` draws them in one panel per view, a legend naming the configurations.
+- :func:`robot_figure` draws them in one panel per view, a legend naming the configurations;
+- :func:`verdict_figure` draws configurations side by side with a checker's verdict on each, and marks the link
+  boxes and blocks that touch (:func:`touching`).
 
 A configuration is drawn in the valid colour or, hatched, the invalid one (:func:`link_style`: colour is never the
 only cue), else in a colour and hatch of its own. Each box is drawn from its corners (:mod:`toolkit.plots.boxes`).
@@ -21,6 +23,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Polygon, Rectangle
 
+from toolkit.geometry.checker import CollisionChecker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe
@@ -248,3 +251,91 @@ def _hatch_name(hatch: str | None) -> str:
     return {"": "plain", "//": "hatched with slashes", "..": "dotted", "xx": "cross-hatched"}.get(
         hatch or "", "hatched"
     )
+
+
+def touching(robot: BoxRobot, workspace: Workspace, q) -> list[tuple[int, int]]:
+    """The (link, block) pairs whose boxes touch at configuration ``q (dof,)``: closed boxes, so touching counts.
+
+    Separating axes (as ``SeparatingAxisChecker``): two boxes are apart exactly when some axis separates their
+    shadows, among the world's axes, the link's and, in 3D, their cross products."""
+    centers, rotations, half = robot.link_boxes(robot.check_configs(q)[:1])  # (1, L, D), (1, L, D, D), (L, D)
+    aabbs = robot.link_aabbs(robot.check_configs(q)[:1])[0]  # (L, 2, D)
+    pairs = []
+    for link, (center, rotation, h, (lo, hi)) in enumerate(zip(centers[0], rotations[0], half, aabbs)):
+        own = rotation.T  # (D, D) rows: the link's axes
+        axes = [np.eye(robot.dim), own]
+        if robot.dim == 3:
+            axes.append(np.cross(np.eye(3)[:, None, :], own[None, :, :]).reshape(9, 3))
+        axis = np.concatenate(axes)  # (A, D)
+        for block in _nearby_blocks(workspace, lo, hi):
+            b_lo, b_hi = workspace.boxes[block]
+            gap = np.abs(axis @ (center - (b_lo + b_hi) / 2))  # (A,)
+            reach = np.abs(axis @ own.T) @ h + np.abs(axis) @ ((b_hi - b_lo) / 2)  # (A,)
+            if not np.any(gap > reach + 1e-12 * (1 + reach)):
+                pairs.append((link, int(block)))
+    return pairs
+
+
+def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: float = 1.0) -> Figure:
+    """Configurations ``Q (k, dof)`` side by side, one panel each, drawn in ``view`` with the blocks near them and
+    the checker's verdict in each title. In a configuration in collision, each link box that touches a block and
+    that block are outlined thick (the block dashed) and named in the title: "link 1 touches block 12 (desk)"."""
+    robot, workspace = checker.robot, getattr(checker, "workspace", None)
+    if not isinstance(workspace, Workspace):
+        raise TypeError(f"this figure draws the checker's workspace, and a {type(checker).__name__} knows none")
+    Q = robot.check_configs(Q)  # (k, dof)
+    valid = checker.are_valid(Q)  # (k,)
+    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / len(Q) + 0.3))
+    axes = fig.subplots(1, len(Q), squeeze=False)[0]
+    said = []
+    for ax, q, ok in zip(axes, Q, valid):
+        draw_robot(ax, robot, q[None], colors=link_colors(1, ok), view=view, workspace=workspace, margin=margin)
+        pairs = [] if ok else touching(robot, workspace, q)
+        plane = VIEWS[view] if robot.dim == 3 else (0, 1)
+        centers, rotations, half = robot.link_boxes(q[None])
+        for link, block in pairs:
+            b_lo, b_hi = workspace.boxes[block]
+            ax.add_patch(
+                Rectangle(
+                    b_lo[list(plane)],
+                    *(b_hi - b_lo)[list(plane)],
+                    fill=False,
+                    edgecolor=COLORS["ink"],
+                    linewidth=2.5,
+                    linestyle="--",
+                    gid="touched block",
+                    zorder=4,
+                )
+            )
+            corners = box_corners(centers[0, link], rotations[0, link], half[link])
+            ax.add_patch(
+                Polygon(
+                    outline(corners, plane),
+                    fill=False,
+                    edgecolor=COLORS["ink"],
+                    linewidth=2.5,
+                    gid="touching link",
+                    zorder=5,
+                )
+            )
+        named = [f"link {link + 1} touches block {block + 1}{_kind(workspace, block)}" for link, block in pairs]
+        verdict = "valid" if ok else "in collision" + (": " + "; ".join(named) if named else ": leaves the region")
+        said.append(verdict)
+        ax.set_title(verdict, fontsize=10, wrap=True)
+        ax.tick_params(labelsize=8)
+    fig.tight_layout()
+    marked = (
+        " Each link that touches a block is outlined thick, and the block it touches dashed." if not all(valid) else ""
+    )
+    text = f"The {robot.name} robot at {len(Q)} configurations side by side, seen in the {view} plane with the blocks "
+    text += "near it, each titled with the exact checker's verdict: " + "; ".join(
+        f"configuration {i + 1}, {v}" for i, v in enumerate(said)
+    )
+    return describe(
+        fig, text + "." + marked, [_configurations_part(robot, Q, [f"configuration {i + 1}" for i in range(len(Q))])]
+    )
+
+
+def _kind(workspace: Workspace, block: int) -> str:
+    """A block's kind in brackets where the workspace names kinds (the office's furniture), else nothing."""
+    return f" ({workspace.labels[block]})" if workspace.labels else ""
