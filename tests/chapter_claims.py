@@ -80,12 +80,13 @@ def chapter_01(nb) -> list[str]:
     if set(rates) != {"2ds", "3do", "3dc7", "3dc9"}:
         return [f"01: section 3's table of checker speeds lacks a scenario: {sorted(rates)}"]
     problems = _page_width(nb, found, "01")
-    numbers = {}  # scenario: (FCL, compiled, point robot or None) checks a second
-    for name, (_, *cells, ratio) in rates.items():
-        fcl, compiled, point = (None if c == "—" else float(c.replace(",", "")) for c in cells)
+    numbers: dict[str, tuple[float, float, float | None]] = {}  # scenario: FCL, compiled, point robot checks a second
+    for name, (_, fcl_text, compiled_text, point_text, ratio) in rates.items():
+        fcl, compiled = (float(c.replace(",", "")) for c in (fcl_text, compiled_text))
+        point = None if point_text == "—" else float(point_text.replace(",", ""))
         numbers[name] = (fcl, compiled, point)
         if abs(compiled / fcl - float(ratio.rstrip("x").replace(",", ""))) > 0.51:  # printed as rounded
-            problems.append(f"01: {name}: the ratio {ratio} is not its rates' {cells}")
+            problems.append(f"01: {name}: the ratio {ratio} is not its rates' {fcl_text}, {compiled_text}")
     in_3d = [numbers[n][1] / numbers[n][0] for n in ("3do", "3dc7", "3dc9")]
     said = SPEEDS.search(" ".join(texts(nb)))
     if said is None:

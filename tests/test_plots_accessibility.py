@@ -41,6 +41,8 @@ from toolkit.plots import (
     cae,
     classifier,
     cspace,
+    latent,
+    near_blocks,
     palette,
     planning,
     query_ratios,
@@ -60,6 +62,8 @@ MODULES = (
     classifier,
     crossover,
     cspace,
+    latent,
+    near_blocks,
     planning,
     query_ratios,
     reproduction,
@@ -148,8 +152,8 @@ def gallery() -> dict[str, Figure]:
     clutter = chain.make_workspace(np.random.default_rng(2))
     chain_exact = exact_checker(clutter, chain.robot)
     Q = chain.robot.sample(rng, 3)
-    near = cspace.configuration_near_blocks(chain_exact, np.random.default_rng(0), n=500)  # valid, and moved into a
-    touching = cspace.nudged_into_a_block(chain_exact, near)  # block: chapter 01's figure of one check
+    near = near_blocks.configuration_near_blocks(chain_exact, np.random.default_rng(0), n=500)  # valid; moved into
+    touching = near_blocks.nudged_into_a_block(chain_exact, near)  # block: chapter 01's figure of one check
     path = chain.robot.interpolate(Q[0], Q[1], np.linspace(0, 1, 12))
     samples = {"BS": rng.uniform(0, 31, (30, 2)), "G": rng.uniform(0, 31, (20, 2))}
     S = rng.uniform(0, 31, (60, 2))
@@ -179,7 +183,7 @@ def gallery() -> dict[str, Figure]:
             latent_shift={"paper": rng.random((3, 4)), "strong": rng.random((3, 4))},
             decoded_change={"paper": rng.random((3, 4)) * 10, "strong": rng.random((3, 4)) * 10},
         ),
-        "cae.latent_scatter": cae.latent_scatter(
+        "latent.latent_scatter": latent.latent_scatter(
             {"seen": rng.random((5, 2)), "unseen": rng.random((8, 2))},
             color={"seen": rng.random(5), "unseen": rng.random(8)},
             color_label="occupied share",
@@ -198,7 +202,6 @@ def gallery() -> dict[str, Figure]:
             nodes=np.array([[1.0, 1.0], [25.0, 15.0], [29.0, 29.0], [15.0, 8.0]]),
             nodes_valid=np.array([True, True, True, False]),
         ),
-        "classifier.confusion_bars": classifier.confusion_bars(probability >= 0.5, valid),
         "classifier.metrics_bars": classifier.metrics_bars(
             {"paper": {"acc": 0.8, "tpr": 0.9, "tnr": 0.6}, "always valid": {"acc": 0.7, "tpr": 1.0, "tnr": 0.0}}
         ),

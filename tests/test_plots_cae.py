@@ -10,7 +10,7 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 
 from toolkit.learning.metrics import reconstruction_accuracy
-from toolkit.plots import alt
+from toolkit.plots import alt, latent
 from toolkit.plots import cae as plots
 from toolkit.plots.palette import COLORS, series_style
 from toolkit.plots.wrong_cells import error_cells
@@ -213,7 +213,7 @@ def test_contraction_shows_a_line_that_another_covers_exactly():
 
 def test_latent_scatter_has_one_point_per_workspace_at_its_coordinates(rng):
     points = {"seen": rng.normal(size=(30, 2)), "generated": rng.normal(size=(200, 2))}
-    fig = plots.latent_scatter(points)
+    fig = latent.latent_scatter(points)
     assert len(fig.axes) == 2  # one panel a group, the others grey behind it: one cloud or two, read by eye
     for ax, (name, xy), other in zip(fig.axes, points.items(), ("generated", "seen")):
         rest, own = ax.collections
@@ -229,7 +229,7 @@ def test_latent_scatter_has_one_point_per_workspace_at_its_coordinates(rng):
 def test_latent_scatter_colors_each_workspace_by_its_value(rng):
     points = {"seen": rng.normal(size=(5, 2)), "unseen": rng.normal(size=(7, 2))}
     occupied = {"seen": rng.uniform(0.05, 0.2, 5), "unseen": rng.uniform(0.1, 0.3, 7)}
-    fig = plots.latent_scatter(points, color=occupied, color_label="occupied share", highlight="seen")
+    fig = latent.latent_scatter(points, color=occupied, color_label="occupied share", highlight="seen")
     *panels, bar = fig.axes
     owns = [ax.collections[-1] for ax in panels]
     assert owns[0].get_sizes()[0] > owns[1].get_sizes()[0]  # the highlighted group stands out

@@ -16,6 +16,7 @@ from toolkit.geometry.workspace import Workspace
 from toolkit.learning import metrics
 from toolkit.plots import alt, answers, cell_marks, slices
 from toolkit.plots import classifier as pc
+from toolkit.plots.answers import confusion_counts
 from toolkit.plots.palette import COLORS, contrast
 
 N = 24  # grid cells per axis
@@ -429,14 +430,19 @@ def test_conservative_circles_leave_the_grey_of_p_valid_to_read_and_show_on_ever
     assert np.allclose(x, x.mean(), atol=fine.axes[0][1] - fine.axes[0][0])  # between the rejected and the kept band
 
 
-def test_confusion_bars_heights_are_the_counts_and_rates():
-    predicted = np.array([True] * 5 + [False] * 3 + [True] * 2)
-    truth = np.array([True] * 6 + [False] * 4)
-    ax_counts, ax_rates = pc.confusion_bars(predicted, truth).axes
-    assert [bar.get_height() for bar in ax_counts.patches] == [5, 1, 2, 2]
+def test_threshold_views_count_bars_are_the_counts_and_keep_them_inside_the_frame(grid, probability, valid):
+    """The counts panel: a bar per kind of answer, its height the count (the dangerous one in its own colour, last),
+    each count written below the frame's top edge."""
+    predicted = probability >= 0.5
+    fig = pc.threshold_view(probability, valid, grid, threshold=0.5)
+    ax_counts = fig.axes[1]  # the map, the counts, the ROC
+    expected = list(confusion_counts(predicted, valid).values())
+    assert [bar.get_height() for bar in ax_counts.patches] == expected and sum(expected) == valid.size
     assert ax_counts.patches[3].get_facecolor()[:3] == to_rgba(COLORS["dangerous"])[:3]
-    rates = metrics.classification(predicted, truth)
-    assert [bar.get_height() for bar in ax_rates.patches] == pytest.approx([rates["acc"], rates["tpr"], rates["tnr"]])
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    fig.draw(renderer)
+    frame = ax_counts.get_window_extent(renderer)
+    assert all(frame.y1 - t.get_window_extent(renderer).y1 >= 2 for t in ax_counts.texts)
 
 
 def test_metrics_bars_one_group_per_model():
@@ -492,24 +498,6 @@ def test_path_map_leaves_out_a_diamond_that_would_touch_an_end(grid, probability
     (line,) = [line for line in ax.get_lines() if line.get_marker() == "D"]
     assert line.get_markevery() == [2, 3]  # not 1 (beside the start) nor 4 (beside the goal)
     np.testing.assert_array_equal(line.get_xydata(), path)  # the dashed line passes through every one
-
-
-def test_confusion_bars_keep_their_counts_inside_the_frame_and_name_every_rate():
-    predicted = np.array([True] * 50 + [False] * 3 + [True] * 2)
-    truth = np.array([True] * 51 + [False] * 4)
-    fig = pc.confusion_bars(predicted, truth)
-    ax_counts, ax_rates = fig.axes
-    renderer = FigureCanvasAgg(fig).get_renderer()
-    fig.draw(renderer)
-    frame = ax_counts.get_window_extent(renderer)
-    assert all(frame.y1 - t.get_window_extent(renderer).y1 >= 2 for t in ax_counts.texts)  # "50" below the top edge
-    assert [t.get_text() for t in ax_rates.get_xticklabels()] == [
-        "accuracy",
-        "TPR (valid kept)",
-        "TNR (invalid rejected)",
-    ]
-    np.testing.assert_allclose(ax_rates.get_xticks(), [p.get_x() + p.get_width() / 2 for p in ax_rates.patches])
-    assert ax_rates.get_xlabel() == "measure"
 
 
 def test_an_angle_swept_on_a_map_is_labelled_in_radians(grid, probability, valid):

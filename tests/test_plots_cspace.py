@@ -23,7 +23,7 @@ from toolkit.geometry.collision import (
     exact_checker,
 )
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots import boxes, cspace, palette, robot_drawing, slices
+from toolkit.plots import boxes, cspace, near_blocks, palette, robot_drawing, slices
 from toolkit.plots.alt import alt_text
 from toolkit.plots.palette import CATEGORICAL
 
@@ -323,7 +323,7 @@ def test_cspace_image_grows_each_block_by_the_robots_half_width(square_world):
 def test_cspace_slice_equals_the_separating_axis_reference(clutter):
     robot = robots.box_chain(1)
     checker = FCLChecker(clutter, robot)
-    q = cspace.configuration_near_blocks(checker, np.random.default_rng(0), n=500)
+    q = near_blocks.configuration_near_blocks(checker, np.random.default_rng(0), n=500)
     fig = cspace.cspace_slice(checker, q, joints=(5, 6), resolution=30)
     _, _, Q = slices.slice_configs(robot, q, (5, 6), resolution=30)
     by_sat = SeparatingAxisChecker(clutter, robot).are_valid(Q.reshape(-1, robot.dof)).reshape(30, 30)
@@ -355,7 +355,7 @@ def test_a_checker_that_knows_no_workspace_is_a_clear_error():
 def test_configuration_near_blocks_is_the_valid_sample_closest_to_a_block(clutter):
     robot = robots.box_chain(1)
     checker = FCLChecker(clutter, robot)
-    q = cspace.configuration_near_blocks(checker, np.random.default_rng(5), n=300)
+    q = near_blocks.configuration_near_blocks(checker, np.random.default_rng(5), n=300)
     Q = robot.sample(np.random.default_rng(5), 300)
     Q = Q[checker.are_valid(Q)]
 
@@ -405,8 +405,8 @@ def test_touching_names_exactly_the_link_and_block_pairs_the_separating_axis_ref
 def test_verdict_figure_titles_each_panel_with_the_checkers_verdict_and_marks_what_touches(clutter):
     robot = robots.box_chain(1)
     checker = FCLChecker(clutter, robot)
-    q = cspace.configuration_near_blocks(checker, np.random.default_rng(0), n=500)
-    hit = cspace.nudged_into_a_block(checker, q, step=0.05)
+    q = near_blocks.configuration_near_blocks(checker, np.random.default_rng(0), n=500)
+    hit = near_blocks.nudged_into_a_block(checker, q, step=0.05)
     assert hit is not None and not checker.is_valid(hit)
     moved = np.flatnonzero(hit != q)
     assert len(moved) == 1 and moved[0] in (0, 1)  # one of x, y, by whole steps
@@ -433,7 +433,7 @@ def test_a_slice_over_positions_shows_a_pixel_beyond_the_bounds_dark(square_worl
 
 def test_the_slice_explorer_starts_at_a_valid_configuration_and_redraws_when_a_slider_moves(capsys):
     """Chapter 01, section 5: one slider per DoF at a start near a block, the scenario's two DoF swept first."""
-    box = cspace.slice_explorer({"3dc7": (5, 6)}, start="3dc7", seed=0, resolution=8)
+    box = near_blocks.slice_explorer({"3dc7": (5, 6)}, start="3dc7", seed=0, resolution=8)
     controls, _ = box.children
     scenario, _, sweep_i, sweep_j, _, fixed = controls.children
     robot = scenarios.get("3dc7").robot

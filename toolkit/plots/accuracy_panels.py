@@ -63,6 +63,15 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
         rows.append((name, str(len(accuracy)), f"{mean[1]:.1%}", f"{mean[0]:.1%}", f"{above} of {len(accuracy)}"))
     for ax in grid[:, 0]:
         ax.set_ylabel("reconstruction accuracy")
+    _legend(fig, spare)
+    text = "Reconstruction accuracy against the accuracy of answering all free, one panel per group, one point per "
+    columns = ("panel", "workspaces", "mean accuracy", "mean all free", "above the diagonal")
+    return describe(fig, text + "workspace. " + "; ".join(said) + ".", [Part("the panels", "", columns, tuple(rows))])
+
+
+def _legend(fig: Figure, spare) -> None:
+    """The diagonal and the mean marker named, in the empty slot of an odd count (``spare``), where it covers
+    nothing, else under the panels."""
     handles = [
         Line2D([], [], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal): above it, better'),
         Line2D(  # drawn as the means are: the group's colour (here a neutral grey), a light ring, a dark edge
@@ -84,6 +93,3 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
         spare[0].legend(handles=handles, loc="center", fontsize=9, frameon=False)
     else:
         fig.legend(handles=handles, loc="outside lower center", ncols=2, fontsize=9, frameon=False)
-    text = "Reconstruction accuracy against the accuracy of answering all free, one panel per group, one point per "
-    columns = ("panel", "workspaces", "mean accuracy", "mean all free", "above the diagonal")
-    return describe(fig, text + "workspace. " + "; ".join(said) + ".", [Part("the panels", "", columns, tuple(rows))])

@@ -6,8 +6,8 @@
 - :func:`accuracy_vs_all_free` — every workspace's reconstruction accuracy against
   the accuracy of answering "all free" (Table 1, one point per workspace);
 - :func:`contraction` — what the contractive penalty does: the encoder Jacobian's
-  norm, and how far ``z`` and the decoded grid move when a few cells are flipped;
-- :func:`latent_scatter` — latent codes projected to 2D, one point per workspace.
+  norm, and how far ``z`` and the decoded grid move when a few cells are flipped
+  (the latent codes themselves: :mod:`toolkit.plots.latent`).
 
 Grids hold -1 (free) and +1 (occupied), as :meth:`toolkit.geometry.workspace.Workspace.occupancy`
 returns them; a decoded cell counts as occupied where the decoder's output is positive,
@@ -31,10 +31,7 @@ from toolkit.plots.alt import Part, describe, lines_part
 from toolkit.plots.palette import (
     COLORS,
     GREYS_CMAP,
-    MARKER_NAMES,
-    MARKERS,
     PAGE_WIDTH,
-    SEQUENTIAL_CMAP,
     halo,
     series_style,
 )
@@ -330,73 +327,6 @@ def _fitted(names: list[str], width: float, size: float) -> list[str]:
         ways = [textwrap.wrap(name, k, break_long_words=False) for k in range(len(name), 0, -1)]
         wrapped.append("\n".join(next((lines for lines in ways if fits(lines)), ways[-1])))
     return wrapped
-
-
-def latent_scatter(
-    points: dict[str, np.ndarray],
-    *,
-    color: dict[str, np.ndarray] | None = None,
-    color_label: str = "",
-    highlight: str | None = None,
-    xlabel: str = "PC 1",
-    ylabel: str = "PC 2",
-    title: str = "Latent codes, projected to 2D",
-) -> Figure:
-    """One marker per workspace: ``points[group]`` is ``(n, 2)``, e.g. the first two principal components of ``z``.
-
-    One panel per group on shared axes, the others grey (a few dozen larger, on top): whether the groups form one cloud
-    reads from where the colour lies on the grey, not from telling hundreds of small markers apart by shape.
-    ``color[group]`` ``(n,)`` (optional): a value per workspace shown on one shared colour scale (e.g. its share of
-    occupied cells). ``highlight``: a group drawn with larger, thick black-edged markers (e.g. a few training
-    workspaces).
-    """
-    fig = Figure(figsize=(PAGE_WIDTH, 3.6 if len(points) > 1 else 5.2), layout="constrained")
-    axes = fig.subplots(1, len(points), squeeze=False, sharex=True, sharey=True)[0]
-    if color:
-        low, high = min(np.min(c) for c in color.values()), max(np.max(c) for c in color.values())
-    said = []
-    for k, (ax, (name, xy)) in enumerate(zip(axes, points.items())):
-        xy = np.asarray(xy)
-        others = [np.asarray(v) for other, v in points.items() if other != name]
-        for rest in others:  # grey: where this group lies among them; a few dozen larger, edged, on top, never buried
-            ax.scatter(*rest.T, color=COLORS["reference"], edgecolors=COLORS["ink"], **GREY[len(rest) <= FEW])
-        big = name == highlight
-        style: dict[str, Any] = dict(s=60 if big else 22, edgecolors=COLORS["ink"], linewidths=1.4 if big else 0.3)
-        style.update(marker=MARKERS[k % len(MARKERS)], c=series_style(k)["color"])
-        if color:
-            style.update(c=color[name], cmap=SEQUENTIAL_CMAP, vmin=low, vmax=high)
-        drawn = ax.scatter(xy[:, 0], xy[:, 1], label=f"{name} ({len(xy)})", alpha=0.9, zorder=2, **style)
-        ax.set_title(f"{name} ({len(xy)})" + ("\nthe others grey" if others else ""), fontsize=10)
-        ax.set_xlabel(xlabel)
-        ax.set_ylabel(ylabel if k == 0 else "")
-        ax.tick_params(labelsize=9)
-        where = f"{name}: {len(xy)} workspaces ({MARKER_NAMES[style['marker']]}{', larger' if big else ''}) around "
-        where += f"({np.mean(xy[:, 0]):.3g}, {np.mean(xy[:, 1]):.3g})"
-        if color:
-            where += f", {color_label or 'value'} {np.min(color[name]):.3g} to {np.max(color[name]):.3g}"
-        said.append(where)
-    if color:
-        fig.colorbar(drawn, ax=list(axes), label=color_label)
-    fig.suptitle(title, fontsize=11)
-    text = f"{title}: {xlabel} across, {ylabel} up, one panel per group, the others grey (over it if {FEW} or fewer). "
-    parts = [
-        _cloud_part(name, np.asarray(xy), (xlabel, ylabel), color and (color_label, color[name]))
-        for name, xy in points.items()
-    ]
-    return describe(fig, text + "; ".join(said) + ".", parts)
-
-
-def _cloud_part(name: str, xy: np.ndarray, labels: tuple[str, str], value) -> Part:
-    """One group's panel of :func:`latent_scatter`: where its ``xy (n, 2)`` points lie (quartiles along each axis),
-    and the range of the ``value`` = ``(label, (n,))`` they are coloured by, if any."""
-    stats = ("lowest", "first quartile", "median", "third quartile", "highest")
-    columns = ("along", *stats)
-    rows = [
-        (label, *(f"{v:.3g}" for v in np.quantile(xy[:, k], (0, 0.25, 0.5, 0.75, 1)))) for k, label in enumerate(labels)
-    ]
-    if value:
-        rows.append((value[0] or "value", *(f"{v:.3g}" for v in np.quantile(value[1], (0, 0.25, 0.5, 0.75, 1)))))
-    return Part(f"{name} ({len(xy)})", f"where the {len(xy)} points of {name} lie", columns, tuple(rows))
 
 
 def _image(ax, grid: np.ndarray, title: str, alpha: float = 1.0, axes: bool = False) -> None:

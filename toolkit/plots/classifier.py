@@ -146,17 +146,6 @@ def path_map(
     return describe(fig, text, parts)
 
 
-def confusion_bars(predicted_valid, valid, title: str = "") -> Figure:
-    """The four kinds of answer as bars (dangerous ones in the invalid colour, last) and accuracy / TPR / TNR."""
-    fig = Figure(figsize=(PAGE_WIDTH, 5.6), layout="constrained")
-    ax_counts, ax_rates = fig.subplots(2, 1, height_ratios=(1.2, 1))  # one above the other: the page's width each
-    _draw_counts(ax_counts, predicted_valid, valid)
-    answers.draw_rates(ax_rates, {"": metrics.classification(np.ravel(predicted_valid), np.ravel(valid))})
-    fig.suptitle(title or "Predictions against the exact checker")
-    text = f"{title or 'Predictions against the exact checker'}: " + answers.answers_in_words(predicted_valid, valid)
-    return describe(fig, text + ".", answers.answer_tables(predicted_valid, valid))
-
-
 def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> Figure:
     """Accuracy, TPR and TNR of several models or baselines (``{name: {"acc", "tpr", "tnr"}}``), grouped."""
     fig = Figure(figsize=(min(PAGE_WIDTH, 1.6 + 1.6 * len(scores)), 3.8), layout="constrained")
