@@ -165,7 +165,13 @@ def _still_legend(fig: Figure, valid: dict[str, bool]) -> None:
     fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=5.0, h_pad=4.0)  # r17c: "y" met a title;
     #   r23b: a close-up's "x" touched the overview's title at h_pad 2.5
     low = min((ax.get_tightbbox() or ax.bbox).y0 for ax in fig.axes) / fig.bbox.height  # the lowest label
-    fig.legend(handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, low), ncol=3, frameon=False)
+    for ncol in (3, 2, 1):  # reader r25b: a three-column legend wider than the panels widened the PNG to 1008 px
+        legend = fig.legend(
+            handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, low), ncol=ncol, frameon=False
+        )
+        if legend.get_window_extent().width <= fig.bbox.width or ncol == 1:
+            break
+        legend.remove()
 
 
 def _still_described(robot, workspace, poses, valid, samples, trace, seen, model, turn) -> tuple[str, list]:
@@ -222,7 +228,10 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
         for label in poses
     ]
     turned = f", and {turn_words(turn)}" if len(poses) == 1 else ""
-    darker = ", ".join(f"{label}: {seen[label][1]}" for label in poses)
+    darker = ", ".join(  # reader r25b: "(the robot: 0)" was unreadable; "(0 blocks near the robot)"
+        f"{seen[label][1]} block{'s' * (seen[label][1] != 1)} near {label if label.startswith('the ') else 'the ' + label}"
+        for label in poses
+    )
     text += f"; the robot seen across the plane it spreads in{turned}, its links opaque, its joints white dots, "
     text += f"the blocks within {NEAR} of a link darker ({darker})"
     return text + "; then the robot close up among the blocks near it: " + "; ".join(said) + ".", parts
