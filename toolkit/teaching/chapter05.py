@@ -175,8 +175,9 @@ KEYS_BALANCED = (("acc", "Balanced unseen Acc"), ("tpr", "TPR"), ("tnr", "TNR"))
 
 def accuracy_table(scores: Mapping[str, float], valid_share: float, samples: int, seed: int, balanced: Mapping) -> str:
     """The closing's accuracy table: the paper's recipe and the `strong` model as the record has them, each beside
-    answering "valid" to the same samples, the recipe also on balanced samples (reader r25b); the paper's Table 2; §5's ``scores`` on its ``samples`` (``valid_share``
-    of them valid) in the workspace of ``seed``; the model's ``balanced`` unseen test."""
+    answering "valid" to the same samples, the recipe also on balanced samples (reader r25b); the paper's Table 2;
+    §5's ``scores`` on its ``samples`` (``valid_share`` of them valid) in the workspace of ``seed``; the model's
+    ``balanced`` unseen test."""
     recipe, recipe_share = _recorded_scores("paper")
     cells = recorded.table("paper", "MLP accuracy")[SCENARIO]  # its balanced unseen test: half valid (the home page's)
     recipe_balanced = {key: recorded.ours(cells[column]) for key, column in KEYS_BALANCED}
