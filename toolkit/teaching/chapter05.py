@@ -293,3 +293,29 @@ def plan_tables(result) -> str:
         f"| {stats['predicted_checks'] / max(exactly, 1):.0f}x | {stats['repairs']} "
         f"| {stats['removed_nodes']} / {stats['removed_edges']} |"
     )
+
+
+ROBOTS = {"3do": "youBot-like", "3dc7": "box chain", "3dc9": "box chain"}  # §1's robots, in two words
+
+
+def valid_shares(samples: int, seed: int) -> str:
+    """§1's table: in each 3D scenario's workspace of ``seed``, the share of ``samples`` uniform configurations
+    (drawn from ``seed`` too) that the exact checker finds valid, with the robot's links and DoFs and the blocks."""
+    from toolkit import scenarios
+    from toolkit.geometry.collision import exact_checker
+
+    rows = []
+    for name, robot_words in ROBOTS.items():
+        scenario = scenarios.get(name)
+        workspace = scenario.make_workspace(np.random.default_rng(seed))
+        Q = scenario.robot.sample(np.random.default_rng(seed), samples)  # (N, dof) uniform
+        share = exact_checker(workspace, scenario.robot).are_valid(Q).mean()
+        robot = scenario.robot
+        rows.append(
+            f"| {name} | {robot_words} | {robot.n_links} / {robot.dof} | {len(workspace.boxes)} | {share:.0%} |"
+        )
+    return (
+        f"The share of {samples} uniform samples that is valid, in the workspace of seed {seed}:\n\n"
+        "| scenario | robot | links / DoF | blocks | valid share |\n"
+        "| --- | --- | ---: | ---: | ---: |\n" + "\n".join(rows)
+    )
