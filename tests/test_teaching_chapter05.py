@@ -77,3 +77,12 @@ def test_valid_shares_gives_each_3d_scenario_a_row():
     rows = [line for line in table.splitlines() if line.startswith("| 3d")]
     assert [r.split(" | ")[0] for r in rows] == ["| 3do", "| 3dc7", "| 3dc9"]
     assert all(r.endswith("% |") for r in rows) and "| 3dc9 | box chain | 4 / 9 |" in table
+
+
+def test_office_collisions_splits_the_collisions_into_the_two_kinds():
+    from toolkit import scenarios
+
+    samples = scenarios.get("3do").robot.sample(np.random.default_rng(0), 200)
+    row = chapter05.office_collisions(samples, 0).splitlines()[-1]
+    total, colliding, out, inside = (int(v) for v in row.strip("| ").split(" | "))
+    assert total == 200 and colliding == out + inside and out > 0 and inside > 0
