@@ -35,6 +35,7 @@ from toolkit.plots.still_panels import (
     clear_turn,
     close_up,
     draw_points,
+    flat,
     inside_mask,
     mark_nearest,
     model_words,
@@ -52,6 +53,7 @@ _POSE_COLOR = {None: UNCHECKED_COLOR, True: VALID_COLOR, False: INVALID_COLOR}  
 FRAME_TURNS = (0.0, 30.0, -60.0, 90.0, -90.0, 180.0)  # degrees: a path frame's camera, turned the least it can from
 #   mplot3d's azimuth of -60, never to within 20 degrees of an axis (reader r19c: seen along x, its ticks crowded "5 x")
 CLOSE_UP_HEIGHT = 3.2  # inches: a row of two close-ups
+FLAT_OVERVIEW_HEIGHT = 4.0  # inches: the overview of a flat workspace (still_panels.flat), drawn larger
 OVERVIEW_HEIGHT = 5.0  # inches: the overview, a row of its own (review r16c: in half a row, 230 px, stars were lost)
 
 
@@ -91,7 +93,8 @@ def scene_still(
         views.append((*views[0][:2], second_turn(robot, views[0][1], workspace, margin)))
     heights = [CLOSE_UP_HEIGHT] * -(-len(views) // 2)  # inches: the close-ups, two a row
     first = len(heights) if len(poses) == 1 else 0  # the overview's row: after a single pose's two views
-    heights.insert(first, OVERVIEW_HEIGHT)
+    heights.insert(first, FLAT_OVERVIEW_HEIGHT if flat(workspace) else OVERVIEW_HEIGHT)  # r25b: the office's box,
+    #   flat, left half its panel blank
     fig = Figure(figsize=(PAGE_WIDTH, sum(heights) + 0.9))  # as wide as the page: text as drawn
     grid = fig.add_gridspec(len(heights), 2, height_ratios=heights)
     cells = [grid[row, :] if row == first else grid[row, column] for row in range(len(heights)) for column in (0, 1)]
