@@ -717,8 +717,8 @@ def test_the_chapter_shows_the_embedded_viewer_and_typeset_math(served, chromium
     page = open_page(chromium, served + "notebooks/05_3d_scenes.html", remote)
     try:
         frame = page.locator(".jp-OutputArea-output iframe").first
-        frame.scroll_into_view_if_needed()
-        assert frame.bounding_box()["height"] > 100
+        frame.scroll_into_view_if_needed()  # under its still, a view is one line tall until it draws (reader r25b)
+        page.wait_for_function("f => f.getBoundingClientRect().height > 100", arg=frame.element_handle())
         frame.content_frame.locator("canvas").first.wait_for(state="attached")  # the viewer's WebGL scene
     finally:
         page.close()

@@ -58,3 +58,31 @@ def test_truth_vs_prediction_counts_each_kind_once():
         "Read: the conservative mistakes lie nearer to the blocks than the circles it gets right, and a nudge frees "
         "more of the dangerous mistakes than of the diamonds it gets right."
     )
+
+
+def test_the_accuracy_table_gives_the_paper_recipes_balanced_score_from_the_record():
+    """Reader r25b: the home page's argument rests on the recipe's balanced unseen score (a coin's); the chapter's
+    accuracy table shows it, from docs/results.md, under the recipe's uniform row."""
+    cells = recorded.table("paper", "MLP accuracy")["3dc7"]
+    table = chapter05.accuracy_table(
+        {"acc": 0.9, "tpr": 0.9, "tnr": 0.9}, 0.7, 400, 0, {"acc": 0.9, "tpr": 0.9, "tnr": 0.9}
+    )
+    acc, tpr, tnr = (cells[column].strip("*") for column in ("Balanced unseen Acc", "TPR", "TNR"))
+    label = "ours: the same recipe, balanced unseen samples (half valid), `docs/results.md`"
+    assert f"| {label} | {acc} | {tpr} | {tnr} |" in table.splitlines()
+
+
+def test_valid_shares_gives_each_3d_scenario_a_row():
+    table = chapter05.valid_shares(20, 0)
+    rows = [line for line in table.splitlines() if line.startswith("| 3d")]
+    assert [r.split(" | ")[0] for r in rows] == ["| 3do", "| 3dc7", "| 3dc9"]
+    assert all(r.endswith("% |") for r in rows) and "| 3dc9 | box chain | 4 / 9 |" in table
+
+
+def test_office_collisions_splits_the_collisions_into_the_two_kinds():
+    from toolkit import scenarios
+
+    samples = scenarios.get("3do").robot.sample(np.random.default_rng(0), 200)
+    row = chapter05.office_collisions(samples, 0).splitlines()[-1]
+    total, colliding, out, inside = (int(v) for v in row.strip("| ").split(" | "))
+    assert total == 200 and colliding == out + inside and out > 0 and inside > 0

@@ -35,6 +35,7 @@ from toolkit.plots.still_panels import (
     clear_turn,
     close_up,
     draw_points,
+    flat,
     inside_mask,
     mark_nearest,
     model_words,
@@ -52,6 +53,7 @@ _POSE_COLOR = {None: UNCHECKED_COLOR, True: VALID_COLOR, False: INVALID_COLOR}  
 FRAME_TURNS = (0.0, 30.0, -60.0, 90.0, -90.0, 180.0)  # degrees: a path frame's camera, turned the least it can from
 #   mplot3d's azimuth of -60, never to within 20 degrees of an axis (reader r19c: seen along x, its ticks crowded "5 x")
 CLOSE_UP_HEIGHT = 3.2  # inches: a row of two close-ups
+FLAT_OVERVIEW_HEIGHT = 4.0  # inches: the overview of a flat workspace (still_panels.flat), drawn larger
 OVERVIEW_HEIGHT = 5.0  # inches: the overview, a row of its own (review r16c: in half a row, 230 px, stars were lost)
 
 
@@ -65,6 +67,7 @@ def scene_still(
     trace: np.ndarray | None = None,
     margin: float = 0.6,
     model: dict[str, tuple[float, bool]] | None = None,
+    close: tuple[str, ...] | None = None,
 ) -> Figure:
     """A viewer's 3D scene as a still picture: the whole workspace, its blocks, the ``samples`` at their base
     (``(points (N, 3), {kind: mask (N,)})``, kinds as :func:`toolkit.viewer.drawing.sample_kinds` names them: circles
@@ -75,6 +78,8 @@ def scene_still(
     invalid one hatched, by ``valid``; its joints dotted; the blocks within ``margin``, those near a link darker), with
     the samples inside its window and the trace; where a ``model`` gives a pose's ``(P(valid), predicted valid)``,
     its close-up's title says what the model answers (review r17c: nothing marked that it rejects a valid pose).
+    ``close`` names the poses seen close up (default: every one; a path's start and goal, reader r25b: its "goal"
+    close-up sat alone in a third row).
     A single pose is seen twice (the second view a sixth of a turn round, or a third or a quarter where a block then
     stands on a line of sight through the robot: :func:`~toolkit.plots.still_panels.second_turn`), above the
     overview; several follow it, one panel each. Of more than :data:`~toolkit.plots.still_panels.OVERVIEW_SAMPLES`
@@ -83,12 +88,13 @@ def scene_still(
         raise ValueError(f"a scene's still is drawn in 3D; the {robot.name} robot moves in {robot.dim}D")
     valid = valid or {}
     colors = {label: _POSE_COLOR[valid.get(label)] for label in poses}
-    views = [(label, np.asarray(q, dtype=float), 0.0) for label, q in poses.items()]
+    views = [(label, np.asarray(q, dtype=float), 0.0) for label, q in poses.items() if close is None or label in close]
     if len(views) == 1:  # a single pose: seen twice, a sixth of a turn apart
         views.append((*views[0][:2], second_turn(robot, views[0][1], workspace, margin)))
     heights = [CLOSE_UP_HEIGHT] * -(-len(views) // 2)  # inches: the close-ups, two a row
     first = len(heights) if len(poses) == 1 else 0  # the overview's row: after a single pose's two views
-    heights.insert(first, OVERVIEW_HEIGHT)
+    heights.insert(first, FLAT_OVERVIEW_HEIGHT if flat(workspace) else OVERVIEW_HEIGHT)  # r25b: the office's box,
+    #   flat, left half its panel blank
     fig = Figure(figsize=(PAGE_WIDTH, sum(heights) + 0.9))  # as wide as the page: text as drawn
     grid = fig.add_gridspec(len(heights), 2, height_ratios=heights)
     cells = [grid[row, :] if row == first else grid[row, column] for row in range(len(heights)) for column in (0, 1)]
@@ -110,7 +116,7 @@ def scene_still(
         ax.set_title(
             f"{label}, close up{_STATE[ok]}{verdict}" if not turn else f"{label}, {turn_words(turn)}", fontsize=10
         )
-    _still_legend(fig, valid)
+    _still_legend(fig, valid, h_pad=4.0 if first else 1.5)  # r25b: 80 px between a path's overview and close-ups
     described = _still_described(
         robot, workspace, poses, valid, samples, trace, seen, model or {}, views[-1][2] if views else 0.0
     )
@@ -153,8 +159,9 @@ def _overview_name(label: str, poses: int, valid: bool | None) -> str:
     return ("the robot" if poses == 1 else label) + (", in collision" if valid is False else "")
 
 
-def _still_legend(fig: Figure, valid: dict[str, bool]) -> None:
-    """The still's legend, under its panels: every mark they name and the robot's states drawn."""
+def _still_legend(fig: Figure, valid: dict[str, bool], h_pad: float = 4.0) -> None:
+    """The still's legend, under its panels: every mark they name and the robot's states drawn; ``h_pad`` between
+    the rows of panels (font sizes: a close-up's "x" over the overview's title needs 4)."""
     handles = star_on_mark({name: h for ax in fig.axes for h, name in zip(*ax.get_legend_handles_labels())})
     shown = {ok for ok in valid.values() if ok is not None}  # the robot's states drawn: name those alone
     handles |= {
@@ -162,10 +169,16 @@ def _still_legend(fig: Figure, valid: dict[str, bool]) -> None:
         for ok, text, c in ((True, "robot, valid", VALID_COLOR), (False, "robot, in collision", INVALID_COLOR))
         if ok in shown
     }
-    fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=5.0, h_pad=4.0)  # r17c: "y" met a title;
+    fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=5.0, h_pad=h_pad)  # r17c: "y" met a title;
     #   r23b: a close-up's "x" touched the overview's title at h_pad 2.5
     low = min((ax.get_tightbbox() or ax.bbox).y0 for ax in fig.axes) / fig.bbox.height  # the lowest label
-    fig.legend(handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, low), ncol=3, frameon=False)
+    for ncol in (3, 2, 1):  # reader r25b: a three-column legend wider than the panels widened the PNG to 1008 px
+        legend = fig.legend(
+            handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, low), ncol=ncol, frameon=False
+        )
+        if legend.get_window_extent().width <= fig.bbox.width or ncol == 1:
+            break
+        legend.remove()
 
 
 def _still_described(robot, workspace, poses, valid, samples, trace, seen, model, turn) -> tuple[str, list]:
@@ -212,6 +225,7 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
                     ", ".join(f"{v:.2f}" for v in np.asarray(q)),
                 )
                 for label, q in poses.items()
+                if label in seen
             ),
         ),
     ]
@@ -219,10 +233,13 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
         f"{label}{_STATE[valid.get(label)]}"
         + model_words(model.get(label)).replace("\n", ", ")
         + (f", {seen[label][0]} sample{'s' * (seen[label][0] != 1)} near it" if samples else "")
-        for label in poses
+        for label in seen
     ]
     turned = f", and {turn_words(turn)}" if len(poses) == 1 else ""
-    darker = ", ".join(f"{label}: {seen[label][1]}" for label in poses)
+    named = {label: label if label.startswith("the ") else f"the {label}" for label in seen}  # "the start"
+    darker = ", ".join(  # reader r25b: "(the robot: 0)" was unreadable; "(0 blocks near the robot)"
+        f"{seen[label][1]} block{'s' * (seen[label][1] != 1)} near {named[label]}" for label in seen
+    )
     text += f"; the robot seen across the plane it spreads in{turned}, its links opaque, its joints white dots, "
     text += f"the blocks within {NEAR} of a link darker ({darker})"
     return text + "; then the robot close up among the blocks near it: " + "; ".join(said) + ".", parts

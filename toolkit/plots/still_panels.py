@@ -94,7 +94,8 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
             gid="pose label",
         )
     frame_region(ax, workspace)
-    ax.set_box_aspect(workspace.upper - workspace.lower)
+    extent = workspace.upper - workspace.lower  # (3,)
+    ax.set_box_aspect(extent, zoom=FLAT_ZOOM if flat(workspace) else 1.0)  # a flat office: wider, less blank above
     few_ticks(ax)
     drawn = f", 1 sample in {step} drawn" if step > 1 else ""
     ax.set_title(f"the whole workspace: {len(workspace.boxes)} blocks{drawn}", fontsize=10)
@@ -127,6 +128,15 @@ def near_blocks(blocks: np.ndarray, aabbs: np.ndarray) -> np.ndarray:
     ``aabbs (L, 2, 3)``."""
     gaps = np.max(np.maximum(aabbs[None, :, 0] - blocks[:, None, 1], blocks[:, None, 0] - aabbs[None, :, 1]), axis=2)
     return gaps.min(axis=1, initial=np.inf) <= NEAR  # (K,) the gap to the nearest link's box
+
+
+FLAT_ZOOM = 1.25  # a flat workspace's overview drawn this much larger: mplot3d leaves its box wide margins
+
+
+def flat(workspace: Workspace) -> bool:
+    """Whether ``workspace`` is far lower than it is wide (the office, 41 x 41 x 6): its overview needs less height."""
+    extent = workspace.upper - workspace.lower  # (3,)
+    return bool(extent[2] < 0.5 * extent[:2].max())
 
 
 def overview_step(n: int) -> int:

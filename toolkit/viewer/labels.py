@@ -259,6 +259,13 @@ STILL = """<style>#toolkit-play:focus-visible { outline: 2px solid %(ink)s; outl
 <script>(function () {
   var canvas = document.createElement("canvas"), still = document.getElementById("toolkit-still");
   var play = document.getElementById("toolkit-play"), view = document.getElementById("root") || {}, waiting = false;
+  var frame = null;  // the page's <iframe>, where this page may reach it (a srcdoc frame, not sandboxed)
+  try { frame = window.frameElement; } catch (error) {}
+  function fit() {  // a one-line note only: the frame as tall as the note until the view draws (reader r25b: a
+    if (!%(collapse)s || !frame) return;  // 300 px blank box under it), then as tall as the page made it
+    frame.style.height = still.hidden ? "" : still.firstElementChild.offsetHeight + "px";
+  }
+  function hide() { still.hidden = true; fit(); }
   if (!(canvas.getContext("webgl2") || canvas.getContext("webgl"))) {
     document.getElementById("toolkit-still-note").textContent = %(no_webgl)s;
     if (play) play.remove();
@@ -268,14 +275,13 @@ STILL = """<style>#toolkit-play:focus-visible { outline: 2px solid %(ink)s; outl
     var drawing = null;  // a while (a view off screen is not drawn: a screenshot showed blank boxes)
     new IntersectionObserver(function (entries) {
       clearTimeout(drawing);
-      if (entries[entries.length - 1].isIntersecting) drawing = setTimeout(function () {
-        still.hidden = true;
-      }, %(on_screen_ms)d);
+      if (entries[entries.length - 1].isIntersecting) drawing = setTimeout(hide, %(on_screen_ms)d);
     }).observe(document.documentElement);
-    document.addEventListener("focusin", function () { still.hidden = true; });  // the keyboard in: the view at once
+    document.addEventListener("focusin", hide);  // the keyboard in: the view at once
   } else if (!play) {
     still.hidden = true;
   }
+  fit();
   view.inert = !still.hidden;  // no focus on controls the still covers
   if (waiting) view.inert = false;  // unless it only waits for the view to draw: the keyboard may go in at once
   if (play) play.addEventListener("click", function () {  // the focus goes on to the player's play / pause
@@ -309,7 +315,8 @@ def with_still(
     page's screenshot showed blank boxes there (reader r23b). The view's controls take no focus
     while the still covers them; pressing ``play`` moves the focus to the player's play / pause button.
     With ``above`` (the page shows the same still just above the view), a one-line note stands in for the picture
-    (:data:`ABOVE`, :data:`NO_WEBGL_ABOVE`): reader r24b saw the still twice, the second copy cut at the view's height.
+    (:data:`ABOVE`, :data:`NO_WEBGL_ABOVE`): reader r24b saw the still twice, the second copy cut at the view's height;
+    the frame is then as tall as that line until the view draws (reader r25b: a 300 px blank box under the note).
     ``document`` as it is without a figure, unless ``above`` (which needs none)."""
     if fig is None and not above:
         return document
@@ -333,6 +340,7 @@ def with_still(
         "no_webgl": json.dumps(NO_WEBGL_ABOVE if above else NO_WEBGL),
         "ink": COLORS["ink"],
         "play_pause": json.dumps(PLAY_PAUSE),
+        "collapse": json.dumps(above),  # a one-line note: the frame that tall until its view draws
     }
     return _before_body_end(document, STILL % filled)
 

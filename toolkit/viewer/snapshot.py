@@ -25,15 +25,16 @@ from toolkit.viewer.labels import with_still
 from toolkit.viewer.server import srcdoc_iframe
 
 ANIMATION_STILL = (  # what the still is, and where the moving robot is: a reader took the still for the animation
-    "A still picture, not the animation: the path, then the robot at its start, middle and goal, close up. "
+    "A still picture, not the animation: the path, then the robot at its start and goal, close up. "
     "Press play in 3D to watch the robot move along the path (in a browser that draws 3D)."
 )
 
 
-def scene_still(viewer, poses: dict[str, np.ndarray] | None = None) -> Figure:
+def scene_still(viewer, poses: dict[str, np.ndarray] | None = None, close: tuple[str, ...] | None = None) -> Figure:
     """``viewer``'s scene as :func:`toolkit.plots.scenes.scene_still` draws it: the whole workspace with the shown
     samples and path, the robot drawn, then the robot close up at ``poses`` ``{label: q (dof,)}`` (default: where
-    it stands now), each said valid or in collision by the exact checker."""
+    it stands now), each said valid or in collision by the exact checker; ``close`` names those seen close up
+    (default: every one)."""
     poses = {"the robot": viewer.q} if poses is None else poses
     valid = dict(zip(poses, (bool(v) for v in viewer.exact.are_valid(np.stack(list(poses.values()))))))
     trace = None
@@ -48,7 +49,7 @@ def scene_still(viewer, poses: dict[str, np.ndarray] | None = None) -> Figure:
         answers = zip(checker.probability(Q), viewer.model.are_valid(Q))
         model = {label: (float(p), bool(ok)) for label, (p, ok) in zip(poses, answers)}
     return scenes.scene_still(
-        viewer.robot, viewer.workspace, poses, valid=valid, samples=samples, trace=trace, model=model
+        viewer.robot, viewer.workspace, poses, valid=valid, samples=samples, trace=trace, model=model, close=close
     )
 
 
@@ -99,7 +100,7 @@ def animation_iframe(viewer, height: int = 480, *, frames: int = 60, seconds: fl
     Q = viewer.path_configurations(np.linspace(0.0, 1.0, int(frames)))  # (F, dof): the frames' configurations
     told = draw.animation_summary(viewer.workspace, viewer.robot, Q, viewer.exact, viewer.model, viewer.path)
     ends = dict(zip(("start", "middle", "goal"), viewer.path_configurations(np.linspace(0.0, 1.0, 3))))
-    picture = scene_still(viewer, ends) if viewer.robot.dim == 3 else None
+    picture = scene_still(viewer, ends, close=("start", "goal")) if viewer.robot.dim == 3 else None  # one row
     document = with_still(viewer.animation_html(frames=frames, seconds=seconds), picture, first=ANIMATION_STILL)
     if picture is not None:  # tall enough for the whole still (every close-up) under its note and play button
         drawn = picture.get_tightbbox().padded(0.1)  # as the page shows it: saved tight, savefig's pad_inches round
