@@ -91,15 +91,8 @@ def scene_still(
     views = [(label, np.asarray(q, dtype=float), 0.0) for label, q in poses.items() if close is None or label in close]
     if len(views) == 1:  # a single pose: seen twice, a sixth of a turn apart
         views.append((*views[0][:2], second_turn(robot, views[0][1], workspace, margin)))
-    heights = [CLOSE_UP_HEIGHT] * -(-len(views) // 2)  # inches: the close-ups, two a row
-    first = len(heights) if len(poses) == 1 else 0  # the overview's row: after a single pose's two views
-    heights.insert(first, FLAT_OVERVIEW_HEIGHT if flat(workspace) else OVERVIEW_HEIGHT)  # r25b: the office's box,
-    #   flat, left half its panel blank
-    fig = Figure(figsize=(PAGE_WIDTH, sum(heights) + 0.9))  # as wide as the page: text as drawn
-    grid = fig.add_gridspec(len(heights), 2, height_ratios=heights)
-    cells = [grid[row, :] if row == first else grid[row, column] for row in range(len(heights)) for column in (0, 1)]
-    cells = [cell for k, cell in enumerate(cells) if k % 2 == 0 or k // 2 != first][: 1 + len(views)]  # reading order
-    panels = [fig.add_subplot(cell, projection="3d") for cell in cells]  # the overview's a whole row: stars show
+    first = -(-len(views) // 2) if len(poses) == 1 else 0  # the overview's row: after a single pose's two views
+    fig, panels = _still_panels(len(views), first, flat(workspace))
     named = {_overview_name(label, len(poses), valid.get(label)): (q, colors[label]) for label, q in poses.items()}
     overview(panels.pop(2 * first), robot, workspace, named, samples, trace)  # two close-ups a row before it
     if len(poses) == 1:
@@ -121,6 +114,19 @@ def scene_still(
         robot, workspace, poses, valid, samples, trace, seen, model or {}, views[-1][2] if views else 0.0
     )
     return describe(fig, *described)
+
+
+def _still_panels(views: int, first: int, is_flat: bool) -> tuple[Figure, list]:
+    """A still's figure and its 3D panels in reading order: the close-ups of ``views`` poses two a row, and the
+    overview a whole row of its own (its stars show) at row ``first``, shorter for a flat workspace (r25b: the
+    office's flat box left half its panel blank)."""
+    heights = [CLOSE_UP_HEIGHT] * -(-views // 2)  # inches: the close-ups, two a row
+    heights.insert(first, FLAT_OVERVIEW_HEIGHT if is_flat else OVERVIEW_HEIGHT)
+    fig = Figure(figsize=(PAGE_WIDTH, sum(heights) + 0.9))  # as wide as the page: text as drawn
+    grid = fig.add_gridspec(len(heights), 2, height_ratios=heights)
+    cells = [grid[row, :] if row == first else grid[row, column] for row in range(len(heights)) for column in (0, 1)]
+    cells = [cell for k, cell in enumerate(cells) if k % 2 == 0 or k // 2 != first][: 1 + views]  # reading order
+    return fig, [fig.add_subplot(cell, projection="3d") for cell in cells]
 
 
 def _ring_the_robot(ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray) -> None:
@@ -185,19 +191,7 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
     """A still's text alternative and its longer description (what each panel draws, each pose's values, the
     samples and blocks near it and where the camera stands, ``seen``: ``{label: (samples, blocks, (elev, azim))}``,
     what the ``model`` answers for it, and how far round the ``turn`` of a single pose's second close-up is)."""
-    text = f"The {robot.name} robot in workspace {workspace.family} ({len(workspace.boxes)} blocks) as a still: "
-    text += "the whole workspace"
-    if samples is not None:
-        text += ", " + ", ".join(
-            f"{int(m.sum())} samples {kind} ({SAMPLE_WORDS[kind]})" for kind, m in samples[1].items() if m.any()
-        )
-        step = overview_step(len(samples[0]))
-        text += f", 1 sample in {step} of every kind drawn" if step > 1 else ""
-    text += ", the path of the robot's base and its shadow on the floor, dotted" if trace is not None else ""
-    text += ", a thin line from each pose straight down to the floor" if poses else ""
-    if poses:
-        text += ", the robot drawn " + ("over them" if samples is not None else "in it")
-        text += " at each pose, labelled" if len(poses) > 1 else ", ringed, its name beside the workspace"
+    text = _overview_words(robot, workspace, poses, samples, trace)
     counted = [("blocks", str(len(workspace.boxes)))]
     counted += [(f"samples {kind}", str(int(m.sum()))) for kind, m in (samples[1].items() if samples else ())]
     counted += [("points of the base's path", str(len(trace)))] if trace is not None else []
@@ -243,6 +237,25 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
     text += f"; the robot seen across the plane it spreads in{turned}, its links opaque, its joints white dots, "
     text += f"the blocks within {NEAR} of a link darker ({darker})"
     return text + "; then the robot close up among the blocks near it: " + "; ".join(said) + ".", parts
+
+
+def _overview_words(robot, workspace, poses, samples, trace) -> str:
+    """What a still's overview draws, in words: the workspace, its samples by kind, the path, the robot at each
+    pose."""
+    text = f"The {robot.name} robot in workspace {workspace.family} ({len(workspace.boxes)} blocks) as a still: "
+    text += "the whole workspace"
+    if samples is not None:
+        text += ", " + ", ".join(
+            f"{int(m.sum())} samples {kind} ({SAMPLE_WORDS[kind]})" for kind, m in samples[1].items() if m.any()
+        )
+        step = overview_step(len(samples[0]))
+        text += f", 1 sample in {step} of every kind drawn" if step > 1 else ""
+    text += ", the path of the robot's base and its shadow on the floor, dotted" if trace is not None else ""
+    text += ", a thin line from each pose straight down to the floor" if poses else ""
+    if poses:
+        text += ", the robot drawn " + ("over them" if samples is not None else "in it")
+        text += " at each pose, labelled" if len(poses) > 1 else ", ringed, its name beside the workspace"
+    return text
 
 
 def path_frame(
