@@ -414,6 +414,7 @@ def test_verdict_figure_titles_each_panel_with_the_checkers_verdict_and_marks_wh
     fig = robot_drawing.verdict_figure(checker, np.stack([q, hit]))
     left, right = fig.axes
     assert left.get_title() == "valid" and right.get_title().startswith("in collision: link ")
+    assert left.get_xlim() == right.get_xlim() and left.get_ylim() == right.get_ylim()  # review r27a: one window
     assert not _patches(left, "touching link") and not _patches(left, "touched block")
     pairs = robot_drawing.touching(robot, clutter, hit)
     assert len(_patches(right, "touching link")) == len(_patches(right, "touched block")) == len(pairs) > 0

@@ -278,8 +278,10 @@ def touching(robot: BoxRobot, workspace: Workspace, q) -> list[tuple[int, int]]:
 
 def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: float = 1.0) -> Figure:
     """Configurations ``Q (k, dof)`` side by side, one panel each, drawn in ``view`` with the blocks near them and
-    the checker's verdict in each title. In a configuration in collision, each link box that touches a block and
-    that block are outlined thick (the block dashed) and named in the title: "link 1 touches block 12 (desk)"."""
+    the checker's verdict in each title. Every panel frames the same window (all of ``Q`` within ``margin``,
+    review r27a: a move hidden by shifted axes), so a block reaching past it is drawn clipped. In a configuration
+    in collision, each link box that touches a block and that block are outlined thick (the block dashed) and named
+    in the title: "link 1 touches block 12 (desk)"."""
     robot, workspace = checker.robot, getattr(checker, "workspace", None)
     if not isinstance(workspace, Workspace):
         raise TypeError(f"this figure draws the checker's workspace, and a {type(checker).__name__} knows none")
@@ -287,37 +289,19 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
     valid = checker.are_valid(Q)  # (k,)
     fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / len(Q) + 0.3))
     axes = fig.subplots(1, len(Q), squeeze=False)[0]
+    plane = VIEWS[view] if robot.dim == 3 else (0, 1)
+    at = list(plane)
+    aabbs = robot.link_aabbs(Q)  # (k, L, 2, D): one window for every panel
+    lo = np.maximum(aabbs[:, :, 0].min(axis=(0, 1)) - margin, workspace.lower)
+    hi = np.minimum(aabbs[:, :, 1].max(axis=(0, 1)) + margin, workspace.upper)
     said = []
     for ax, q, ok in zip(axes, Q, valid):
-        draw_robot(ax, robot, q[None], colors=link_colors(1, ok), view=view, workspace=workspace, margin=margin)
+        draw_robot(ax, robot, q[None], colors=link_colors(1, ok), view=view, margin=margin)
+        for b_lo, b_hi in workspace.boxes[_nearby_blocks(workspace, lo, hi)]:
+            ax.add_patch(Rectangle(b_lo[at], *(b_hi - b_lo)[at], alpha=0.5, zorder=0.9, **BLOCK_STYLE))
+        ax.set(xlim=(lo[at[0]], hi[at[0]]), ylim=(lo[at[1]], hi[at[1]]))
         pairs = [] if ok else touching(robot, workspace, q)
-        plane = VIEWS[view] if robot.dim == 3 else (0, 1)
-        centers, rotations, half = robot.link_boxes(q[None])
-        for link, block in pairs:
-            b_lo, b_hi = workspace.boxes[block]
-            ax.add_patch(
-                Rectangle(
-                    b_lo[list(plane)],
-                    *(b_hi - b_lo)[list(plane)],
-                    fill=False,
-                    edgecolor=COLORS["ink"],
-                    linewidth=2.5,
-                    linestyle="--",
-                    gid="touched block",
-                    zorder=4,
-                )
-            )
-            corners = box_corners(centers[0, link], rotations[0, link], half[link])
-            ax.add_patch(
-                Polygon(
-                    outline(corners, plane),
-                    fill=False,
-                    edgecolor=COLORS["ink"],
-                    linewidth=2.5,
-                    gid="touching link",
-                    zorder=5,
-                )
-            )
+        _outline_touching(ax, robot, workspace, q, pairs, plane)
         named = [f"link {link + 1} touches block {block + 1}{_kind(workspace, block)}" for link, block in pairs]
         verdict = "valid" if ok else "in collision" + (": " + "; ".join(named) if named else ": leaves the region")
         said.append(verdict)
@@ -328,12 +312,42 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
         " Each link that touches a block is outlined thick, and the block it touches dashed." if not all(valid) else ""
     )
     text = f"The {robot.name} robot at {len(Q)} configurations side by side, seen in the {view} plane with the blocks "
-    text += "near it, each titled with the exact checker's verdict: " + "; ".join(
+    text += "near it, each panel framing the same window, each titled with the exact checker's verdict: " + "; ".join(
         f"configuration {i + 1}, {v}" for i, v in enumerate(said)
     )
     return describe(
         fig, text + "." + marked, [_configurations_part(robot, Q, [f"configuration {i + 1}" for i in range(len(Q))])]
     )
+
+
+def _outline_touching(ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray, pairs, plane: tuple[int, int]) -> None:
+    """Outline thick each link box of ``pairs`` (link, block) at ``q`` and, dashed, the block it touches."""
+    centers, rotations, half = robot.link_boxes(q[None])
+    for link, block in pairs:
+        b_lo, b_hi = workspace.boxes[block]
+        ax.add_patch(
+            Rectangle(
+                b_lo[list(plane)],
+                *(b_hi - b_lo)[list(plane)],
+                fill=False,
+                edgecolor=COLORS["ink"],
+                linewidth=2.5,
+                linestyle="--",
+                gid="touched block",
+                zorder=4,
+            )
+        )
+        corners = box_corners(centers[0, link], rotations[0, link], half[link])
+        ax.add_patch(
+            Polygon(
+                outline(corners, plane),
+                fill=False,
+                edgecolor=COLORS["ink"],
+                linewidth=2.5,
+                gid="touching link",
+                zorder=5,
+            )
+        )
 
 
 def _kind(workspace: Workspace, block: int) -> str:
