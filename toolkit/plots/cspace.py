@@ -128,6 +128,8 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
         if stretch > 1:
             ax.set_zlabel(f"z (drawn {stretch}x)")
             ax.view_init(elev=55, azim=-60)  # a flat region seen steeply: low blocks (chairs) less hidden (r26a)
+            y_ticks = [t for t in ax.get_yticks() if workspace.lower[1] < t <= workspace.upper[1]]
+            ax.set_yticks(y_ticks)  # no y tick at the corner where x's last tick stands (r27a: "40" over "0")
     if kinds:
         handles = [Patch(facecolor=colors[k], edgecolor=COLORS["ink"], hatch=hatches[k], label=k) for k in kinds]
         fig.legend(handles=handles, fontsize=9, loc="lower center", ncols=min(len(kinds), 3), frameon=False)
