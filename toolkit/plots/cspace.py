@@ -307,8 +307,9 @@ def cspace_slice(
     q = robot.check_configs(q)[0]  # (dof,)
     q_valid = checker.are_valid(q[None])
     fig = Figure(figsize=(PAGE_WIDTH if view else 4.5, 4.2))
-    side = view in ("xz", "yz")  # a side view of a flat robot: its panel wider, the robot drawn larger (r26a)
-    grid = fig.add_gridspec(1, 2 if view else 1, width_ratios=(1, 1.5) if side else None)
+    side = view in ("xz", "yz")  # a side view of a flat robot: its panel wider (r26a), not so wide as to squeeze the
+    # slice beside it into a strip (r27a)
+    grid = fig.add_gridspec(1, 2 if view else 1, width_ratios=(1, 1.1) if side else None)
     ax = fig.add_subplot(grid[0, 0])
     valid = _draw_cspace(ax, checker, q, joints, resolution, None)
     for k, limits, set_limits in ((joints[0], ax.get_xlim(), ax.set_xlim), (joints[1], ax.get_ylim(), ax.set_ylim)):
