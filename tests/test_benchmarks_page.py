@@ -62,7 +62,7 @@ CHECKED_ELSEWHERE = (
     "**What a check costs.**",
     "**Against our compiled checker, planning got no faster.**",
     "**Against python-fcl on both sides**",
-    "**The most prediction could save is small.**",
+    "**Sampling is a small part of a query.**",
 )
 
 
