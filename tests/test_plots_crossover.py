@@ -7,7 +7,7 @@ from matplotlib.collections import PolyCollection
 
 from toolkit.plots import alt
 from toolkit.plots.alt import alt_text
-from toolkit.plots.crossover import crossover
+from toolkit.plots.crossover import SLANT, crossover
 from toolkit.util.verdicts import CHEAPER, NEAR
 
 SWEEP = {  # network / exact: 0.5 cheaper, 0.9 can't tell, 1.5 dearer, 0.7 cheaper (the band is 25 %)
@@ -105,7 +105,7 @@ def test_the_drawn_tick_labels_keep_apart():
         boxes = [t.get_window_extent() for t in named]
         digit = 9 * 110 / 72 * 0.6
         assert all(right.x0 - left.x1 >= 1.5 * digit for left, right in zip(boxes, boxes[1:]))
-    else:  # slanted at 45°, where level labels would crowd: a line's height apart along the axis or more
+    else:  # slanted, where level labels would crowd: a line's height apart along the axis or more
         line = named[0].get_fontsize() * 110 / 72
         at = sorted(ax.transData.transform([(v, 1) for v in values])[:, 0])
         assert all(right - left >= line for left, right in zip(at, at[1:]))
@@ -158,5 +158,10 @@ def test_the_recorded_crossover_names_every_measured_value():
     for ax, sweep in zip(fig.axes, recorded["variables"].values()):
         named = [t for t in ax.get_xticklabels() if t.get_text()]
         assert len(named) == len(sweep["values"]), sweep["label"]
-        slanted += named[0].get_rotation() == 45
+        slanted += named[0].get_rotation() == SLANT
+        low, high = np.log10(ax.get_ylim())  # reader r27f: the 20-triangle network point sat half on the lower frame
+        costs = np.log10([v for k in ("exact_us", "fcl_us", "learned_us") for v in sweep[k]])
+        assert low + 0.1 <= costs.min() and costs.max() <= high - 0.1, sweep["label"]
     assert slanted >= 1  # the obstacles' 200, 350 and 500 would crowd level
+    title = fig.get_suptitle()  # reader r27f: no hatching named where none is drawn; the network's size named
+    assert "hatched" not in title and "the network of preset paper's sizes" in title

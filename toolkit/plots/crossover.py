@@ -54,14 +54,14 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
         ax.set_visible(False)
     quick = " (quick sizes)" if results.get("quick") else ""
     measured = measured or results.get("measured")
-    when = f", measured {measured}" if measured else ""
+    when = f"measured {measured}; " if measured else ""
     shaded = any(_cheaper(sweep).any() for sweep in sweeps.values())
     hatched = any(_close(sweep).any() for sweep in sweeps.values())
-    said = f"shaded: network cheaper by > {CLOSE:.0%}"
-    fig.suptitle(  # each rule said here, drawn or not (reader r23a); the legend keys only what is drawn (r25c)
-        f"Cost per check: {scenario_name(results['scenario'])}, preset {results['preset']}{quick}{when}"
-        f"\n{said}{' (nowhere here)' if not shaded else ''}; "
-        + (f"hatched: within {CLOSE:.0%}, can't tell" if hatched else f"hatched, within {CLOSE:.0%}: none here"),
+    said = f"shaded: network cheaper by > {CLOSE:.0%}{' (nowhere here)' if not shaded else ''}"
+    said += f"; hatched: within {CLOSE:.0%}, can't tell" if hatched else ""  # reader r27f: no hatching named undrawn
+    fig.suptitle(  # the network's size said on the figure (reader r27f: "preset paper" alone was easy to miss)
+        f"Cost per check: {scenario_name(results['scenario'])}, the network of preset {results['preset']}'s sizes"
+        f"{quick}\n{when}{said}",
         fontsize=11,
     )
     handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # one legend, below
@@ -165,6 +165,7 @@ def _panel(ax, sweep: dict) -> None:
         )
     ax.set_xscale("log")
     ax.set_yscale("log")
+    _room_for_marks(ax, sweep)
     ax.set_xticks(x, [f"{v:,.0f}" for v in x])  # named once laid out, where they keep apart (_name_ticks)
     ax.yaxis.set_minor_locator(NullLocator())
     _plain_log_ticks(ax)
@@ -179,6 +180,16 @@ MARKS: dict[str, dict] = {  # where two curves meet, the network's triangle bene
     "fcl": dict(markersize=7, zorder=3, markeredgecolor=COLORS["free"]),  # the triangle nearly covered the square;
     "learned": dict(markersize=8, zorder=2.5, alpha=0.8, path_effects=halo(1.5)),  # r23a/c: it hid the exact curve)
 }
+
+
+def _room_for_marks(ax, sweep: dict) -> None:
+    """The y axis from a tenth of the curves' span in decades, and a tenth of a decade more, below the lowest value
+    to as far above the highest: a mark at either end lies whole inside the frame (reader r27f: the 20-triangle
+    network point sat half on the lower frame)."""
+    y = np.asarray([v for name in STYLES for v in sweep[f"{name}_us"] if v is not None], float)  # every cost, µs
+    low, high = np.log10(y.min()), np.log10(y.max())
+    pad = 0.1 * (high - low) + 0.1  # decades
+    ax.set_ylim(10 ** (low - pad), 10 ** (high + pad))
 
 
 def _number(value: float) -> str:
@@ -271,12 +282,17 @@ def _name_ticks(ax, x: np.ndarray) -> None:
     char_px = TICK_POINTS * ax.figure.dpi / 72 * 0.64  # a digit's width at the tick labels' size
     labels = _tick_labels(x, px, char_px)
     slanted = not all(labels)
-    if slanted:  # at 45°, neighbours part by a line's height, not a label's width
+    if slanted:  # steep, neighbours part by a line's height, not a label's width
         labels = _kept_apart([f"{v:,.0f}" for v in x], px, [0.6 * char_px / 0.64] * len(x))
     ax.set_xticks(x[[bool(t) for t in labels]], [t for t in labels if t])  # the values named
     ax.set_xticks(x[[not t for t in labels]], minor=True)  # the values measured but not named: short ticks
     ax.xaxis.set_minor_formatter(NullFormatter())
     if slanted:
-        ax.tick_params(axis="x", labelrotation=45)
+        ax.tick_params(axis="x", labelrotation=SLANT)
         for label in ax.get_xticklabels():
             label.set_horizontalalignment("right")
+            label.set_rotation_mode("anchor")  # the label's end at its tick, whatever the angle
+
+
+SLANT = 60  # degrees: two labels a line's height apart along the axis lie a line's height apart across their slant
+# times sin 60° (reader r27f: at 45° the obstacles' 350 and 500 nearly touched)
