@@ -154,10 +154,34 @@ def chapter_02(nb) -> list[str]:
         problems.append("02: section 5's ranges of the seen and unseen grids are not printed")
     elif "memorized. Near perfect" in found and seen.group(1) != seen.group(2):  # "sit ... above the diagonal"
         problems.append(f"02: a memorized CAE's seen grids are not all above the diagonal: {seen.group(0)}")
-    return problems + _chapter_02_unseen(nb, found)
+    return problems + _chapter_02_unseen(nb, found) + _chapter_02_gaps(nb, found)
 
 
 COUPLE = 2.5  # points: "within a couple of points of 'all free'"
+
+
+def _chapter_02_gaps(nb, found: str) -> list[str]:
+    """Review r27b: "86.7%, where 'all free' gets 87.6% (0.8 points below)": a reader subtracts the printed values
+    and gets 0.9. Every gap the page prints beside its two values is their difference as printed."""
+    said = [  # (score, all free, the gap printed beside them), signed
+        (float(a), float(b), float(c))
+        for a, b, c in re.findall(r"([\d.]+)% \(all free ([\d.]+)%: ([+-][\d.]+) points", found)
+    ]
+    for header, rows in tables(nb):
+        if header[-1:] == ['unseen against "all free"']:
+            said += [
+                (float(r[2].rstrip("%")), float(r[3].split("/")[1].strip().rstrip("%")), float(r[-1].split()[0]))
+                for r in rows
+            ]
+    answer = re.search(
+        r'it gets ([\d.]+)%, where answering "all free" gets ([\d.]+)% \(([\d.]+) points (below|above)\)', found
+    )
+    if answer:
+        gap = float(answer.group(3)) * (-1 if answer.group(4) == "below" else 1)
+        said.append((float(answer.group(1)), float(answer.group(2)), gap))
+    return [
+        f"02: {a}% against 'all free' {b}% is printed as {c:+.1f} points" for a, b, c in said if abs(a - b - c) > 0.05
+    ]
 
 
 def _chapter_02_unseen(nb, found: str) -> list[str]:

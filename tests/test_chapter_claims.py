@@ -991,7 +991,8 @@ def chapter_02(
         "| unseen | 80.1% – 94.0% | -5.2 – +1.1 | 3 of 10 |",
         "MD:**The answer.** The paper reports 100% on seen and 100% on unseen 2DS grids (Table 1). This page's CAE "
         f"reproduces the seen column by memorizing its 30 grids: 99.6%. On unseen grids it gets {unseen[1]:.1f}%, "
-        'where answering "all free" gets 87.6% (0.8 points below): trained on 30 grids, the CAE rebuilds a new '
+        f'where answering "all free" gets 87.6% ({abs(unseen[1] - 87.6):.1f} points '
+        f"{'below' if unseen[1] < 87.6 else 'above'}): trained on 30 grids, the CAE rebuilds a new "
         'workspace **no better than answering "all free"**, and the paper\'s unseen column does not reproduce.',
     )
 
@@ -1039,6 +1040,23 @@ def test_chapter_02_holds_its_closing_answer_to_its_numbers():
     assert "02: the answer says 'no better than all free' of 91.0% against 87.6%" in problems(CH02, nb)
     answer["text/markdown"] = "**The answer.** the CAE does better."
     assert problems(CH02, nb) == ["02: the closing answer with this run's unseen score and 'all free' is not printed"]
+
+
+def test_chapter_02_prints_each_gap_as_the_difference_of_the_values_printed_beside_it():
+    """Review r27b: "86.7%, where answering 'all free' gets 87.6% (0.8 points below)", and -0.8 in section 5's table:
+    a reader subtracts and gets 0.9. The gaps are now taken from the values as printed; one that is not fails."""
+    nb = chapter_02()
+    answer = nb["cells"][-1]["outputs"][0]["data"]
+    answer["text/markdown"] = answer["text/markdown"].replace("gets 86.8%", "gets 86.7%")
+    assert problems(CH02, nb) == ["02: 86.7% against 'all free' 87.6% is printed as -0.8 points"]
+    nb = chapter_02()
+    table = nb["cells"][4]["outputs"][0]["data"]
+    table["text/markdown"] = table["text/markdown"].replace("-0.9 points", "-0.8 points")
+    assert problems(CH02, nb) == ["02: 86.7% against 'all free' 87.6% is printed as -0.8 points"]
+    nb["cells"][5]["outputs"][0]["text"] += (
+        " The `paper` preset's CAE: seen 89.2% (all free 88.6%: +0.7 points, above it)"
+    )
+    assert "02: 89.2% against 'all free' 88.6% is printed as +0.7 points" in problems(CH02, nb)
 
 
 def test_chapter_02_holds_the_many_grids_cae_between_all_free_and_the_papers_100_percent():

@@ -49,7 +49,7 @@ def test_error_cells_are_the_cells_whose_sign_differs(grids_and_decoded):
 def test_reconstructions_mark_exactly_the_error_cells_and_title_accuracy_vs_all_free(grids_and_decoded):
     grids, decoded = grids_and_decoded
     fig = plots.reconstructions(grids, decoded, ["seen 0", "unseen 3"])
-    rows = fig.subfigs
+    _key, *rows = fig.subfigs  # the legend's strip, then one row per workspace
     assert len(rows) == 2
     accuracy = reconstruction_accuracy(decoded, grids)
     for row, grid, out, acc, name in zip(rows, grids, decoded, accuracy, ["seen 0", "unseen 3"]):
@@ -76,14 +76,14 @@ def test_reconstructions_mark_flipped_cells_as_their_own_kind_not_as_missed_or_i
     decoded[0, 4, 1] = 1.0
     decoded[0, 0, 0] = -1.0  # ... and misses the real block: one other cell wrong
     fig = plots.reconstructions(noisy, decoded, ["w"], flipped=flipped)
-    errors = fig.subfigs[0].axes[2]
+    errors = fig.subfigs[1].axes[2]
     assert errors.get_title() == "1 of 2 flips ignored; other cells: 1 missed, 0 invented"
     others, ignored = errors.images[1].get_array(), errors.images[2].get_array()
     assert [tuple(c) for c in np.argwhere(~np.ma.getmaskarray(others).T)] == [(0, 0)]  # the missed block only
     assert [tuple(c) for c in np.argwhere(~np.ma.getmaskarray(ignored).T)] == [(2, 2)]  # the ignored flip
     marks = sorted((line.get_marker(), *xy) for line in errors.get_lines() for xy in line.get_xydata().tolist())
     assert marks == [("s", 2, 2), ("s", 4, 1), ("x", 0, 0)]  # both flips squared, the missed block crossed
-    labels = [t.get_text() for t in fig.legends[0].get_texts()]
+    labels = [t.get_text() for t in fig.subfigs[0].legends[0].get_texts()]
     assert labels == [
         "missed block (x)",
         "invented block (o)",
@@ -102,7 +102,7 @@ def test_a_reconstructions_regions_count_flips_as_its_title_does():
     noisy = np.where(flipped, -clean, clean)
     decoded = clean * np.where(rng.random(clean.shape) < 0.1, -1.0, 1.0)  # mostly the clean grid: flips ignored
     fig = plots.reconstructions(noisy, decoded, ["w"], flipped=flipped)
-    title = fig.subfigs[0].axes[2].get_title()
+    title = fig.subfigs[1].axes[2].get_title()
     said = [
         int(v)
         for v in re.fullmatch(
@@ -143,7 +143,7 @@ def test_accuracy_vs_all_free_has_one_point_per_workspace_and_the_diagonal():
     for collection, (all_free, accuracy) in zip(points, groups.values()):
         np.testing.assert_allclose(collection.get_offsets(), np.column_stack([all_free, accuracy]))
     means = {c.get_gid(): c.get_offsets()[0] for c in ax.collections if c.get_gid().endswith(": mean")}
-    assert means.keys() == {"seen: mean", "unseen: mean"}  # each group's mean drawn large, over every point
+    assert means.keys() == {"seen: mean", "unseen: mean"}  # each group's mean drawn large, behind every point
     np.testing.assert_allclose(means["unseen: mean"], [0.89, 0.88])
     hollow = [c for c in ax.collections if c.get_gid().endswith(": mean")]  # r20b: a filled mean hid points at 1.00
     assert all(c.get_facecolor().size == 0 or np.all(c.get_facecolor()[:, 3] == 0) for c in hollow)
@@ -152,6 +152,8 @@ def test_accuracy_vs_all_free_has_one_point_per_workspace_and_the_diagonal():
     (legend,) = fig.legends  # below the axes, over no point
     assert "99.7%" in legend.get_texts()[0].get_text()  # the seen group's mean accuracy
     assert points[0].get_zorder() > points[1].get_zorder()  # the smaller group drawn on top
+    assert max(m.get_zorder() for m in hollow) < min(p.get_zorder() for p in points)  # r27b: a mean hid a grid
+    assert legend.get_texts()[0].get_text() == "seen: mean 99.7% vs 87.7%"  # r27b: once "seen (trained on) (mean"
 
 
 def test_contraction_shows_each_models_norms_and_mean_responses():
@@ -277,12 +279,16 @@ def test_reconstructions_wrong_cells_carry_marks_one_can_read_at_the_sites_width
     decoded = grids * np.where(rng.random(grids.shape) < 0.05, -1.0, 1.0)
     fig = plots.reconstructions(grids, decoded, ["seen", "unseen"])
     assert fig.get_figwidth() <= plots.PAGE_WIDTH
-    for row in fig.subfigs:
+    for row in fig.subfigs[1:]:  # the first, the legend's strip
         marks = row.axes[2].get_lines()
         assert {m.get_marker() for m in marks} == {"x", "o"}
         assert all(m.get_markersize() * 100 / 72 >= 5 and m.get_fillstyle() == "none" for m in marks)  # px at 100 dpi
-    shown = [m for m in fig.legends[0].findobj(Line2D) if m.get_marker() in ("x", "o")]  # what the legend draws
+    (legend,) = fig.subfigs[0].legends
+    shown = [m for m in legend.findobj(Line2D) if m.get_marker() in ("x", "o")]  # what the legend draws
     assert sorted(m.get_marker() for m in shown) == ["o", "x"] and {m.get_fillstyle() for m in shown} == {"none"}
+    fig.canvas.draw()  # r27b: the legend above the first grid, not a screen below it under the last
+    first = fig.subfigs[1]._suptitle.get_window_extent()  # the first workspace's title
+    assert legend.get_window_extent().y0 >= first.y1 and not fig.legends
 
 
 def test_a_count_axis_has_a_tick_below_its_lowest_count_and_at_the_copy_lines_end():

@@ -84,7 +84,7 @@ def _legend(fig: Figure, spare) -> None:
             markeredgecolor=COLORS["free"],
             markeredgewidth=1.2,
             path_effects=halo(1.2, ("ink",)),
-            label="large ringed mark: the panel's mean",
+            label="large ringed mark, in the panel's own shape: its mean",
         ),
     ]
     for ax in spare:  # the legend in the empty slot, where it covers nothing

@@ -79,7 +79,9 @@ def reconstructions(
     ``grids``, ``decoded``: ``(W, nx, ny)``. Wrong cells are marked by kind (:mod:`toolkit.plots.wrong_cells`): a
     missed block (input occupied, decoded free) or an invented one; given ``flipped (W, nx, ny)``, the cells flipped
     in a perturbed input, those are a kind of their own (flip ignored, flip copied) and the rest "other wrong".
-    A legend names the kinds. Each row's title gives the reconstruction accuracy next to the share of free cells,
+    A legend above the first row names the kinds (review r27b: under the last, it lay a screen below the first), in
+    the figure's first subfigure; the rows are the others.
+    Each row's title gives the reconstruction accuracy next to the share of free cells,
     the accuracy of a CAE that ignores its input and answers "all free".
     """
     grids, decoded = np.asarray(grids), np.asarray(decoded)
@@ -91,8 +93,9 @@ def reconstructions(
     if flipped is not None and np.shape(flipped) != grids.shape:
         raise ValueError(f"flipped has shape {np.shape(flipped)}, the grids {grids.shape}")
     accuracy = reconstruction_accuracy(decoded, grids)  # (W,)
-    fig = Figure(figsize=(PAGE_WIDTH, 4.3 * len(grids) + 0.3), layout="constrained")
-    rows = fig.subfigures(len(grids), 1, squeeze=False)[:, 0]  # (W,) one row per workspace
+    fig = Figure(figsize=(PAGE_WIDTH, 4.3 * len(grids) + 0.4), layout="constrained")
+    # a strip for the legend, then one row per workspace: a figure's "outside" legend would overlap the rows' titles
+    key, *rows = fig.subfigures(len(grids) + 1, 1, height_ratios=(0.4, *[4.3] * len(grids)), squeeze=False)[:, 0]
     said, parts = [], []
     drawn: dict[str, np.ndarray] = {}  # the kinds of wrong cell drawn in any row, for the legend
     for k, (row, grid, out, name, acc) in enumerate(zip(rows, grids, decoded, names, accuracy)):
@@ -110,7 +113,7 @@ def reconstructions(
         said.append(f"{name}: {acc:.1%} of cells right against {all_free:.1%} for answering all free; {wrong}")
         parts.append(grid_part(name, said[-1], grid, out, None if flipped is None else flipped[k]))
     handles, labels = legend_handles(list(drawn))
-    fig.legend(handles, labels, loc="outside lower center", ncols=2, fontsize=9, frameon=False)
+    key.legend(handles, labels, loc="center", ncols=2, fontsize=9, frameon=False)
     grids_said = f"{len(grids)} occupancy grid{'s' if len(grids) > 1 else ''}"
     text = f"{grids_said}, each beside its reconstruction and its wrong cells. " + "; ".join(said)
     return describe(fig, text + ".", parts)
@@ -132,8 +135,9 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
     workspaces) has larger, filled markers and is drawn on top, the first over the next: it stays visible over
     hundreds of points. Large groups are hollow markers of their own shapes, drawn in turns, a slice of each at a time
     (:data:`LAYERS`), so that where their clouds overlap every group shows (review r14c: filled squares and triangles
-    buried each other). Each group's mean is a large marker, each later one smaller and on top: means that coincide
-    show as nested shapes.
+    buried each other). Each group's mean is a large hollow marker behind every point (review r27b: over them, it hid
+    the grid at its centre), each later one smaller and on top of the earlier: means that coincide show as nested
+    shapes.
     """
     fig = Figure(figsize=(6, 5.2), layout="constrained")
     ax = fig.subplots()
@@ -154,7 +158,7 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
             ax.scatter(
                 all_free[j::layers],
                 accuracy[j::layers],
-                label=f"{name} (mean {np.mean(accuracy):.1%} vs {np.mean(all_free):.1%})" if j == 0 else None,
+                label=f"{name}: mean {np.mean(accuracy):.1%} vs {np.mean(all_free):.1%}" if j == 0 else None,
                 alpha=0.9 if few else 0.8,
                 s=(45 if few else 14) * AREA.get(style["marker"], 1.0),
                 marker=style["marker"],
@@ -172,15 +176,15 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
     ax.plot([low, 1], [low, 1], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal)')
     ax.set_xlabel('share of free cells = accuracy of answering "all free"')
     ax.set_ylabel("reconstruction accuracy")
-    ax.set_title("Above the diagonal: better than all free (large hollow marks: each group's mean)", fontsize=10)
+    ax.set_title("Above the diagonal: better than all free; large hollow marks: group means", fontsize=10)
     fig.legend(loc="outside lower center", fontsize=9, frameon=False)  # below the axes: it covers no point
     text = "Reconstruction accuracy against the accuracy of answering all free, one point per workspace. "
     return describe(fig, text + "; ".join(said) + ".")
 
 
 def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int) -> None:
-    """Group ``k`` of ``n``'s mean, a large hollow marker of its style over every cloud, each later group's smaller
-    and on top: two means at one spot both show, and the points under them too."""
+    """Group ``k`` of ``n``'s mean, a large hollow marker of its style behind every cloud (points zorder 2 and up),
+    each later group's smaller and on top of the earlier: two means at one spot both show, and every point too."""
     style = series_style(k)
     ax.scatter(
         *mean,
@@ -189,7 +193,7 @@ def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int) -> None
         edgecolors=style["color"],
         marker=style["marker"],
         linewidths=2.2,
-        zorder=20 + k,
+        zorder=1 + k / (n + 1),
         path_effects=halo(1.2, ("ink",)),
         gid=f"{name}: mean",
     )
