@@ -71,7 +71,8 @@ def probability_maps(
     side, the one bar read as the right map's), its mistakes counted in its title."""
     cut = {name: thresholds[name] if isinstance(thresholds, Mapping) else thresholds for name in probabilities}
     fig = Figure(figsize=(PAGE_WIDTH, 4.8 * len(cut) + 1.0))  # r15c: at 230 px, a strip a pixel
-    fig.set_layout_engine("constrained", h_pad=0.25)  # r26c: the first map's "x" met the second's title
+    fig.set_layout_engine("constrained", hspace=0.12)  # r26c: the first map's "x" met the second's title; r27c: an
+    # h_pad that kept them apart left a blank band between a map and its legend
     axes = fig.subplots(len(cut), 1, squeeze=False)[:, 0]
     said, parts = [], []
     for ax, (name, probability), t in zip(axes, probabilities.items(), cut.values()):
