@@ -29,7 +29,7 @@ def test_the_closing_table_names_this_pages_models_and_the_recorded_runs_apart()
     table = chapter03.closing_table(scores, (kept, valid), lambda scenario, preset: evaluation)
     rows = [line.split(" | ")[0].lstrip("| ") for line in table.splitlines()[2:]]
     assert rows[1:3] == ["`paper` preset, 2DS unseen", "`strong` preset, 3DC-7 slice of section 5"]
-    assert sum("this page's model as trained" in row for row in rows) == 3
+    assert sum("this page's model (`trained_scores`)" in row for row in rows) == 3
     assert [row for row in rows if "recorded run" in row] == [
         "`strong` preset, 3DC-7 unseen, recorded run (the opening table's)",
         '`paper` preset, 2DS unseen, recorded run (chapter 04\'s; "always valid" 85%)',

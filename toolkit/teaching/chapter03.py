@@ -125,7 +125,7 @@ def closing_table(
     for scenario, preset in (("2ds", "paper"), ("2ds", "strong"), ("3dc7", "strong")):
         s = trained(scenario, preset)["mlp"]["unseen"]
         rows.append(
-            f"| `{preset}` preset, {NAMES[scenario]} unseen, this page's model as trained (`trained_scores`) "
+            f"| `{preset}` preset, {NAMES[scenario]} unseen, this page's model (`trained_scores`) "
             f"| balanced | {rates(s)} |"
         )
     strong7, paper2 = recorded.table("strong", "MLP accuracy")["3dc7"], recorded.table("paper", "MLP accuracy")["2ds"]
