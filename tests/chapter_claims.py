@@ -269,7 +269,7 @@ def _chapter_03_opening(nb) -> list[str]:
     `paper` preset about a coin flip by balanced accuracy on 2DS, the `strong` preset "almost perfectly" (90 % or more)
     on 2DS and 3DC-7."""
     said = {
-        row[0]: int(row[1].rstrip("%"))
+        row[0]: float(row[1].rstrip("%"))  # the paper's 87.5 %, (TPR + TNR) / 2, to a tenth
         for header, rs in tables(nb)
         if header and header[0] == "model, unseen workspaces"
         for row in rs
@@ -277,7 +277,7 @@ def _chapter_03_opening(nb) -> list[str]:
     want = {"our `paper` preset, 2DS": (40, 60), "our `strong` preset, 2DS": (90, 100)}
     want["our `strong` preset, 3DC-7"] = (90, 100)
     return [
-        f"03: the opening verdict's table gives {who} {said.get(who)}%, not within {low}-{high}%"
+        f"03: the opening verdict's table gives {who} {said.get(who, float('nan')):g}%, not within {low}-{high}%"
         for who, (low, high) in want.items()
         if not low <= said.get(who, -1) <= high
     ]

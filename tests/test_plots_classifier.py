@@ -332,10 +332,12 @@ def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, pr
 
 
 @pytest.mark.parametrize("n", [N, 100])  # a mark a cell; a mark per block of cells (chapter 03 at full size)
-def test_threshold_views_mistakes_are_marked_over_the_boundary_at_a_size_one_sees(n):
+def test_threshold_views_mistakes_are_marked_at_a_size_one_sees_circles_sparse_under_the_boundary(n):
     """Reader r8b: the decision map's mistakes lay under the boundary's ringed line, invisible. Each kind has its own
-    mark (circles conservative, squares dangerous) over every cell of that kind, at least ``MIN_MARK`` points wide,
-    drawn above the boundary, in the kind's colour: as many of its pixels show as the marks' area, about."""
+    mark (circles conservative, squares dangerous) over every cell of that kind, at least ``MIN_MARK`` points wide, in
+    the kind's colour: as many of its pixels show as the marks' area, about. Reader r27c: a circle a block of cells
+    made a carpet that hid the cells' colour and the outlines; the circles are now as sparse as on a P(valid) map and
+    under the outlines, the squares over them."""
     robot = robots.point_robot()
     grid = slices.slice_grid(robot, n=n)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
@@ -344,8 +346,8 @@ def test_threshold_views_mistakes_are_marked_over_the_boundary_at_a_size_one_see
     probability = np.repeat(x[:, None], n, axis=1) * 0.8 + 0.1 * np.sin(np.arange(n))[None, :] + 0.1
     fig = pc.threshold_view(probability, valid, grid, threshold=0.55)
     ax_map = fig.axes[0]
-    k = block_of_squares(fig, "boundary")
-    assert (k > 1) == (n == 100)
+    k = {"valid rejected": block_of_squares(fig, "circles"), "invalid kept (dangerous)": block_of_squares(fig)}
+    assert 1 < k["valid rejected"] >= k["invalid kept (dangerous)"]  # the circles sparse at every size
     codes = answers.answer_codes(probability >= 0.55, valid)
     boundary = boundary_of(ax_map)
     canvas = FigureCanvasAgg(fig)
@@ -355,9 +357,9 @@ def test_threshold_views_mistakes_are_marked_over_the_boundary_at_a_size_one_see
     shown = image[int(image.shape[0] - box.y1) : int(image.shape[0] - box.y0), int(box.x0) : int(box.x1)]
     for code, label, marker in ((1, "valid rejected", "o"), (3, "invalid kept (dangerous)", "s")):
         assert np.any(codes == code)
-        assert_squares_mark(ax_map, grid, codes == code, k, label=label)
+        assert_squares_mark(ax_map, grid, codes == code, k[label], label=label)
         (marks,) = [c for c in ax_map.collections if c.get_label() == label]
-        assert marks.get_zorder() > boundary.get_zorder()
+        assert (marks.get_zorder() > boundary.get_zorder()) == (marker == "s")
         side = np.sqrt(marks.get_sizes()[0])  # points
         assert side >= cell_marks.MIN_MARK
         colour = to_rgba(pc.ANSWER_COLORS[code])[:3]
@@ -516,3 +518,16 @@ def test_the_threshold_sweeps_legend_lies_below_its_curves(probability, valid):
     fig.draw(renderer)
     (legend,) = fig.legends
     assert legend.get_window_extent(renderer).y1 <= fig.axes[0].get_window_extent(renderer).y0  # over no curve
+
+
+def test_the_outline_runs_on_the_cells_edges_so_a_corner_cells_mark_lies_inside_it():
+    """Reader r27c, chapter 03's `strong` maps: the outline, a contour through the cells' centres, rounded off a block's
+    corner cells, and a dangerous square on one seemed to lie in free space. It runs on the cells' edges now: every
+    obstacle cell's centre, the corners' included, lies inside it, every free cell's outside."""
+    fine = slices.slice_grid(robots.point_robot(), n=31)
+    ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
+    valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (31, 31)
+    ax = pc.probability_map(np.where(valid, 0.9, 0.1), valid, fine, threshold=0.5).axes[0]
+    (path,) = [p for p in boundary_of(ax).get_paths() if len(p.vertices)]
+    centres = np.stack(np.meshgrid(*fine.axes, indexing="ij"), axis=-1).reshape(-1, 2)  # (31 * 31, 2)
+    np.testing.assert_array_equal(path.contains_points(centres), ~valid.ravel())

@@ -174,7 +174,9 @@ def draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> 
         _, fpr, tpr = roc_points(probability, valid)
         auc = np.trapezoid(tpr[::-1], fpr[::-1])  # thresholds rise, so FPR falls: integrate left to right
         style = series_style(i)
-        (line,) = ax.plot(fpr, tpr, label=f"{name + ': ' if name else ''}AUC {auc:.2f}", **style | dict(marker=""))
+        label = f"{name + ': ' if name else ''}AUC {auc:.2f}"
+        (line,) = ax.plot(fpr, tpr, label=label, **style | dict(marker="", linewidth=2.5))  # r27c: thin, a curve
+        # along the frame (FPR 0, then TPR 1: a near-perfect model) could not be seen
         _, fpr_t, tpr_t = roc_points(probability, valid, [threshold])
         ax.plot(
             fpr_t,
@@ -190,8 +192,8 @@ def draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> 
         )
     ax.set_xlabel("FPR: invalid kept\n(dangerous) = 1 - TNR")
     ax.set_ylabel("TPR: valid kept")
-    ax.set_xlim(-0.02, 1.02)
-    ax.set_ylim(-0.02, 1.02)
+    ax.set_xlim(-0.06, 1.02)  # the frame inset from FPR 0 and TPR 1: a curve along them shows apart from it
+    ax.set_ylim(-0.02, 1.06)
     ax.set_aspect("equal")
     ax.legend(fontsize=8, loc="lower right")
     return "; ".join(said)

@@ -20,6 +20,7 @@ from __future__ import annotations
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.collections import PathCollection
+from matplotlib.contour import QuadContourSet
 from matplotlib.figure import Figure
 
 from toolkit.plots.slices import CSpaceSlice
@@ -108,3 +109,19 @@ def cell_points(ax: Axes, grid: CSpaceSlice) -> float:
     per_unit = np.array([ax.bbox.width / abs(x1 - x0), ax.bbox.height / abs(y1 - y0)]) * 72 / ax.figure.dpi
     cell = np.array([abs(axis[1] - axis[0]) if len(axis) > 1 else 1.0 for axis in grid.axes])  # (2,) data units
     return float(np.min(cell * per_unit))
+
+
+EDGE = 4  # sub-cells a side: an outline's contour runs between their centres, on the cells' edges, its corners cut by
+# an eighth of a cell (reader r27c: drawn through the cells' centres it rounded off the corner cells, and a dangerous
+# square on one seemed to lie in free space)
+
+
+def draw_cell_outline(ax: Axes, grid: CSpaceSlice, mask, **style) -> QuadContourSet:
+    """The outline of the cells of ``grid`` where ``mask (nx, ny)`` holds, drawn along the cells' edges (``style``:
+    contour's options): a mark on a cell of either side lies on its side of the line."""
+    subs = []  # per axis, the centres of EDGE sub-cells a side of each cell: (n * EDGE,)
+    for axis in grid.axes:
+        width = abs(axis[1] - axis[0]) if len(axis) > 1 else 1.0
+        subs.append((axis[:, None] + width * ((np.arange(EDGE) + 0.5) / EDGE - 0.5)[None]).ravel())
+    fine = np.repeat(np.repeat(np.asarray(mask, dtype=float), EDGE, axis=0), EDGE, axis=1)  # each cell EDGE x EDGE
+    return ax.contour(*subs, fine.T, levels=[0.5], **style)

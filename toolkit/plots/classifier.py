@@ -38,7 +38,7 @@ from toolkit.learning import metrics
 from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
-from toolkit.plots.cell_marks import draw_cell_marks, fit_cell_marks
+from toolkit.plots.cell_marks import draw_cell_marks, draw_cell_outline, fit_cell_marks
 from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import dof_label
 from toolkit.plots.slices import CSpaceSlice
@@ -71,7 +71,8 @@ def probability_maps(
     side, the one bar read as the right map's), its mistakes counted in its title."""
     cut = {name: thresholds[name] if isinstance(thresholds, Mapping) else thresholds for name in probabilities}
     fig = Figure(figsize=(PAGE_WIDTH, 4.8 * len(cut) + 1.0))  # r15c: at 230 px, a strip a pixel
-    fig.set_layout_engine("constrained", h_pad=0.25)  # r26c: the first map's "x" met the second's title
+    fig.set_layout_engine("constrained", hspace=0.12)  # r26c: the first map's "x" met the second's title; r27c: an
+    # h_pad that kept them apart left a blank band between a map and its legend
     axes = fig.subplots(len(cut), 1, squeeze=False)[:, 0]
     said, parts = [], []
     for ax, (name, probability), t in zip(axes, probabilities.items(), cut.values()):
@@ -174,7 +175,6 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     grid_spec = fig.add_gridspec(2, 2, height_ratios=(1.4, 1), width_ratios=(1.6, 1))  # the map large: its marks small
     ax_map, ax_counts, ax_roc = (fig.add_subplot(grid_spec[where]) for where in ((0, 0), (1, slice(None)), (0, 1)))
     _draw_decision(ax_map, predicted, valid, grid)
-    ax_map.set_title(f"decision at threshold {threshold:.2f}\na mark per cell holding a mistake", fontsize=9)
     _draw_counts(ax_counts, predicted, valid)
     roc = answers.draw_roc(ax_roc, {"": (probability, valid, threshold)})
     fig.suptitle(title)
@@ -184,12 +184,13 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
         for code, cell in enumerate(cells)
     ]
     boundary = Line2D([], [], color=BOUNDARY, path_effects=halo(1.2))
-    k = max(fit_cell_marks(fig, grid).values(), default=1)  # the mistakes' marks as large as one sees, over all
-    block = f" (one per {k} x {k} cells holding any)" if k > 1 else ""
-    if k > 1:  # the marks are fewer than the mistakes the bars count: the map says why (as tall a title: same layout)
-        ax_map.set_title(
-            f"decision at threshold {threshold:.2f}\na mark per {k} x {k} cells holding a mistake", fontsize=9
-        )
+    blocks = fit_cell_marks(fig, grid)  # the mistakes' marks as large as one sees, the circles sparse
+    per = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
+    block = {code: f" (one per {k} x {k} cells holding any)" if k > 1 else "" for code, k in per.items()}
+    per_block = f"\nsquares 1 per {per[3]} x {per[3]} cells, circles 1 per {per[1]} x {per[1]}"  # marks < mistakes
+    ax_map.set_title(
+        f"decision at threshold {threshold:.2f}" + (per_block if max(per.values()) > 1 else ""), fontsize=9
+    )
     labels = [
         "true C-obstacle boundary",
         ANSWERS[0],
@@ -199,8 +200,11 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     ]
     fig.legend([boundary, *handles], labels, loc="outside lower center", ncols=3, fontsize=8, frameon=False)
     text = f"{title + ': ' if title else ''}the model's decision at threshold {threshold:.2f} over {grid.names[0]} and "
-    text += f"{grid.names[1]}, each cell by its kind of answer, the mistakes marked over their cells and the boundary"
-    text += f"{block}: dangerous ones with squares, conservative ones with circles; their counts, and the ROC curve. "
+    text += f"{grid.names[1]}, each cell by its kind of answer, the mistakes marked on their cells: dangerous ones "
+    text += (
+        f"with squares{block[3]} over the boundary, conservative ones with sparse circles{block[1]} under it; their "
+    )
+    text += "counts, and the ROC curve. "
     text += f"{answers.answers_in_words(predicted, valid)}; {roc}."
     cut, fpr, tpr = roc_points(probability, valid, np.linspace(0.0, 1.0, 11))  # (11,) each
     curve = Part(
@@ -317,8 +321,11 @@ def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):
         interpolation="nearest",
     )
     _draw_boundary(ax, valid, grid)
-    for code in MISTAKE_MARKERS:  # each mistake marked in its colour and shape, over the boundary's ringed line
-        draw_cell_marks(ax, grid, codes == code, label=ANSWERS[code], zorder=3, **_mistake_mark(code))
+    for code in MISTAKE_MARKERS:  # as on a P(valid) map: sparse circles under the outlines, squares over them (r27c:
+        # a circle a block of cells hid the cells' sky blue, the small block and the outlines under a carpet)
+        draw_cell_marks(
+            ax, grid, codes == code, label=ANSWERS[code], zorder=ZORDER[code], pitch=PITCH[code], **_mistake_mark(code)
+        )
     return image
 
 
@@ -339,8 +346,7 @@ def _draw_boundary(ax, valid, grid: CSpaceSlice) -> None:
     """The true C-obstacle boundary: the 0.5 contour of the exact checker's answers; axis names."""
     valid = _on_grid(valid, grid, "valid")
     if valid.any() and not valid.all():
-        contour = ax.contour(*grid.axes, valid.T.astype(float), levels=[0.5], colors=BOUNDARY, linewidths=1.2)
-        contour.set_path_effects(halo(1.2))
+        draw_cell_outline(ax, grid, valid, colors=BOUNDARY, linewidths=1.2).set_path_effects(halo(1.2))
     ax.set_xlabel(dof_label(grid.names[0]))  # an angle with its unit, radians
     ax.set_ylabel(dof_label(grid.names[1]))
 

@@ -1,0 +1,48 @@
+"""Chapter 03's tables (toolkit.teaching.chapter03): each row names the run it is (reader r27c: two rows for the same
+model gave two sets of numbers, and the paper's 88 % accuracy sat in a column of balanced accuracy)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from toolkit.experiments import paper_numbers
+from toolkit.teaching import chapter03, recorded
+
+
+def test_the_opening_table_gives_the_papers_accuracy_as_reported_and_its_balanced_accuracy_apart():
+    published = paper_numbers.MLP["2ds"]["unseen"]
+    lines = chapter03.opening_table().splitlines()
+    paper = next(line for line in lines if line.startswith("| the paper's MLP"))
+    assert f"as reported: {published['acc']:.0%})" in paper
+    assert f"| {(published['tpr'] + published['tnr']) / 2:.1%} |" in paper  # 87.5 %, not the reported 88 %
+    strong7 = recorded.table("strong", "MLP accuracy")["3dc7"]
+    assert any(
+        line.startswith(f"| our `strong` preset, 3DC-7 | {recorded.ours(strong7['Balanced unseen Acc']):.0%} |")
+        for line in lines
+    )
+
+
+def test_the_closing_table_names_this_pages_models_and_the_recorded_runs_apart():
+    scores = {"paper\nbalanced": {"acc": 0.5, "tpr": 0.3, "tnr": 0.7}}
+    evaluation = {"mlp": {"unseen": {"acc": 0.9, "tpr": 0.8, "tnr": 1.0}}}
+    kept, valid = np.array([True, False, True, True]), np.array([True, False, False, True])
+    table = chapter03.closing_table(scores, (kept, valid), lambda scenario, preset: evaluation)
+    rows = [line.split(" | ")[0].lstrip("| ") for line in table.splitlines()[2:]]
+    assert rows[1:3] == ["`paper` preset, 2DS unseen", "`strong` preset, 3DC-7 slice of section 5"]
+    assert sum("this page's model (`trained_scores`)" in row for row in rows) == 3
+    assert [row for row in rows if "recorded run" in row] == [
+        "`strong` preset, 3DC-7 unseen, recorded run (the opening table's)",
+        '`paper` preset, 2DS unseen, recorded run (chapter 04\'s; "always valid" 85%)',
+    ]
+    assert "| its 4 cells | 75% | 100% / 50% | 75% |" in table
+
+
+def test_a_slice_verdict_counts_its_mistakes_by_where_they_lie():
+    truth = np.ones((20, 20), dtype=bool)
+    truth[5:10, 5:10] = False  # one C-obstacle
+    p = truth.astype(float)
+    assert chapter03.slice_verdict(p, truth, 0.5, 1).endswith("it finds the obstacles, and errs only at their edges")
+    p[15, 15] = 0.0  # a free cell far from the obstacle rejected
+    said = chapter03.slice_verdict(p, truth, 0.5, 1)
+    assert said.startswith("1 of 400 cells wrong, 0% of them near a boundary")
+    assert said.endswith("away from any boundary it makes 1 conservative and 0 dangerous mistakes")

@@ -1,0 +1,156 @@
+"""Chapter 03's tables and verdicts, built here so that the page shows them, not their formatting (reader r27c: a
+17-line code cell stood between the verdict and its table).
+
+- :func:`opening_table`: the verdict's table, the paper's Table 2 and the full-size runs recorded in
+  ``docs/results.md``;
+- :func:`mistakes_table`: section 3's mistakes on the P(valid) maps, how many lie near a boundary, where the
+  dangerous ones are;
+- :func:`slice_verdict`: section 5's verdict on a slice, its counts and words;
+- :func:`closing_table` and :func:`implied_shares`: the closing section's table and the lines under it.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Mapping
+
+import numpy as np
+
+from toolkit.experiments import paper_numbers
+from toolkit.learning import metrics
+from toolkit.plots import answers
+from toolkit.plots.slices import CSpaceSlice
+from toolkit.teaching import recorded
+
+NAMES = {"2ds": "2DS", "3dc7": "3DC-7"}
+
+
+def opening_table() -> str:
+    """The paper's unseen 2DS row (its reported accuracy, and the balanced accuracy its TPR and TNR give) and the
+    recorded runs' balanced accuracy, TPR and TNR on unseen workspaces' balanced samples, as a Markdown table."""
+    published = paper_numbers.MLP["2ds"]["unseen"]
+    balanced = (published["tpr"] + published["tnr"]) / 2
+    rows = [
+        "| model, unseen workspaces | balanced accuracy, (TPR + TNR) / 2 | TPR (free kept) "
+        "| TNR (collisions rejected) |",
+        "| --- | ---: | ---: | ---: |",
+        f"| the paper's MLP, its Table 2, 2DS (its accuracy, as reported: {published['acc']:.0%}) | {balanced:.1%} "
+        f"| {published['tpr']:.0%} | {published['tnr']:.0%} |",
+    ]
+    for preset, scenario in (("paper", "2ds"), ("strong", "2ds"), ("strong", "3dc7")):
+        row = recorded.table(preset, "MLP accuracy")[scenario]  # scored on balanced samples of unseen workspaces
+        rows.append(
+            f"| our `{preset}` preset, {NAMES[scenario]} | {recorded.ours(row['Balanced unseen Acc']):.0%} "
+            f"| {recorded.ours(row['TPR']):.0%} | {recorded.ours(row['TNR']):.0%} |"
+        )
+    return "\n".join(rows)
+
+
+def mistakes_table(
+    probability: Mapping[str, np.ndarray], thresholds: Mapping[str, float], valid, grid: CSpaceSlice, near: int
+) -> str:
+    """Per model (``probability[name] (nx, ny)`` against ``valid (nx, ny)`` at ``thresholds[name]``): the cells wrong
+    and the share within ``near`` cells of a boundary, the conservative and dangerous cells, and the box that holds the
+    dangerous ones, as a Markdown table."""
+    rows = [
+        "| model | cells wrong (share of all cells); share of them near a boundary | conservative "
+        "| dangerous; share of them near a boundary | the dangerous cells lie within |",
+        "| --- | ---: | ---: | ---: | --- |",
+    ]
+    for preset, p in probability.items():
+        kept = p >= thresholds[preset]  # (nx, ny) bool
+        wrong, near_all = answers.mistakes_near_boundary(kept, valid, cells=near)
+        dangerous, near_d = answers.mistakes_near_boundary(kept | valid, valid, cells=near)  # obstacle cells kept only
+        i, j = np.nonzero(kept & ~valid)  # the dangerous cells' indices
+        box = (
+            f"x {grid.axes[0][i].min():.1f} to {grid.axes[0][i].max():.1f}, "
+            f"y {grid.axes[1][j].min():.1f} to {grid.axes[1][j].max():.1f}"
+            if len(i)
+            else "none"
+        )
+        share_d = f"{dangerous:,}; {near_d:.0%} near a boundary" if dangerous else "0"
+        rows.append(
+            f"| `{preset}` | {wrong:,} of {valid.size:,} ({wrong / valid.size:.0%}); {near_all:.0%} near a boundary "
+            f"| {np.sum(~kept & valid):,} | {share_d} | {box} |"
+        )
+    return "\n".join(rows)
+
+
+def slice_verdict(p, truth, threshold: float, near: int) -> str:
+    """What a map of P(valid) ``p (nx, ny)`` says against ``truth (nx, ny)``: how much obstacle it misses, and where
+    its mistakes lie (within ``near`` cells of a boundary or away from any)."""
+    kept = p >= threshold
+    wrong, near_all = answers.mistakes_near_boundary(kept, truth, cells=near)
+    # each kind alone: counted as wrong only where that kind of mistake is made
+    conservative, near_c = answers.mistakes_near_boundary(kept & truth, truth, cells=near)  # free cells rejected
+    dangerous, near_d = answers.mistakes_near_boundary(kept | truth, truth, cells=near)  # obstacle cells kept
+    far_c, far_d = round(conservative * (1 - near_c)), round(dangerous * (1 - near_d))
+    missed, rejected = np.mean(kept[~truth]), np.mean(~kept[truth])  # obstacle cells called valid; free ones rejected
+    counts = (
+        f"{wrong} of {truth.size} cells wrong, {int(100 * near_all)}% of them near a boundary; {missed:.0%} of the "
+        f"C-obstacle's cells called valid, {rejected:.0%} of the free ones rejected: "
+    )
+    if missed > 0.05:
+        return counts + "it misses parts of the obstacles"
+    if far_c + far_d == 0:
+        return counts + "it finds the obstacles, and errs only at their edges"
+    where = "mostly at their edges" if near_all >= 0.5 else "more often away from their edges than at them"
+    return (
+        counts + f"it finds the obstacles and errs {where}; away from any boundary it makes {far_c} "
+        f"conservative and {far_d} dangerous mistakes"
+    )
+
+
+def rates(s: Mapping[str, float]) -> str:
+    """Accuracy, TPR / TNR, balanced accuracy: a closing table row's last three cells."""
+    return f"{s['acc']:.0%} | {s['tpr']:.0%} / {s['tnr']:.0%} | {(s['tpr'] + s['tnr']) / 2:.0%}"
+
+
+def closing_table(
+    scores: Mapping[str, Mapping[str, float]],
+    slice7: tuple[np.ndarray, np.ndarray],
+    trained: Callable[[str, str], dict],
+) -> str:
+    """The paper's unseen 2DS row; section 4's ``scores`` (``"preset\\nkind"``); the 3DC-7 slice ``(kept, valid)``;
+    the page's own models as ``trained`` (``trained_scores``) scores them; and the two recorded rows the page and
+    chapter 04 quote, each named as the run it is."""
+    rows = ["| | samples | accuracy | TPR / TNR | balanced accuracy |", "| --- | --- | --- | --- | --- |"]
+    rows.append(f"| the paper's Table 2, 2DS unseen | unclear (§IV-A) | {rates(paper_numbers.MLP['2ds']['unseen'])} |")
+    for name, s in scores.items():
+        label, kind = name.split("\n")
+        label = label if label == "always valid" else f"`{label}` preset, 2DS unseen"
+        rows.append(f"| {label} | {kind} | {rates(s)} |")
+    kept7, valid7 = slice7
+    s7 = metrics.classification(np.ravel(kept7), np.ravel(valid7))
+    rows.append(f"| `strong` preset, 3DC-7 slice of section 5 | its {np.size(valid7)} cells | {rates(s7)} |")
+    for scenario, preset in (("2ds", "paper"), ("2ds", "strong"), ("3dc7", "strong")):
+        s = trained(scenario, preset)["mlp"]["unseen"]
+        rows.append(
+            f"| `{preset}` preset, {NAMES[scenario]} unseen, this page's model (`trained_scores`) "
+            f"| balanced | {rates(s)} |"
+        )
+    strong7, paper2 = recorded.table("strong", "MLP accuracy")["3dc7"], recorded.table("paper", "MLP accuracy")["2ds"]
+    s = {"acc": recorded.ours(strong7["Balanced unseen Acc"])}
+    s |= {"tpr": recorded.ours(strong7["TPR"]), "tnr": recorded.ours(strong7["TNR"])}
+    rows.append(f"| `strong` preset, 3DC-7 unseen, recorded run (the opening table's) | balanced | {rates(s)} |")
+    s = {k: recorded.ours(paper2[f"Unseen {c}"]) for k, c in (("acc", "Acc"), ("tpr", "TPR"), ("tnr", "TNR"))}
+    always = recorded.ours(paper2["Unseen always valid"])
+    rows.append(
+        f'| `paper` preset, 2DS unseen, recorded run (chapter 04\'s; "always valid" {always:.0%}) '
+        f"| validity-blind | {rates(s)} |"
+    )
+    return "\n".join(rows)
+
+
+def implied_shares(blind_share: float) -> str:
+    """The share of valid samples the paper's unseen and seen accuracy, TPR and TNR imply, if each accuracy pools
+    them (``acc = s TPR + (1 - s) TNR``), beside ``blind_share``, this page's validity-blind samples' share."""
+
+    def implied(r: Mapping[str, float]) -> float:
+        return (r["acc"] - r["tnr"]) / (r["tpr"] - r["tnr"])
+
+    unseen, seen = implied(paper_numbers.MLP["2ds"]["unseen"]), implied(paper_numbers.MLP["2ds"]["seen"])
+    return (
+        "unseen column: share of valid samples the paper's accuracy, TPR and TNR imply, if its accuracy pools them: "
+        f"{unseen:.0%}; here, validity-blind: {blind_share:.0%}\n"
+        f'seen column, the same arithmetic: {seen:.0%} valid (§IV-A: "approximately distributed 50/50")'
+    )
