@@ -30,7 +30,21 @@ def test_cost_table_splits_the_cells_where_prediction_cost_a_quarter_or_more():
 def test_after_share_is_the_part_of_the_extra_time_after_sampling():
     cell = costs.Cost("X", "BS", 1.5, (0.001, 0.003), (0.010, 0.016))  # extra 6 ms: 2 sampling, 4 after
     assert all(abs(a - b) < 1e-12 for a, b in zip(cell.after, (0.009, 0.013)))
-    assert abs(cell.after_share - 4 / 6) < 1e-12
+    assert abs(cell.after_share - 4 / 6) < 1e-12 and abs(cell.sampling_share - 2 / 6) < 1e-12
+
+
+def test_split_sentence_gives_the_sampling_shares_of_the_dear_cells():
+    shares = [round(100 * c.sampling_share) for c in costs.dear_cells()]
+    said = costs.split_sentence()
+    assert f"explains {min(shares)}–{max(shares)} % of the extra mean time" in said
+    assert "grew with prediction, which the record does not break down" in said  # after sampling grew in each
+
+
+def test_middle_halves_count_the_costs_and_savings_at_the_noise_edge():
+    halves = costs.middle_halves("strong --planner paper")
+    assert halves["2ds"]["BS"] == (1.13, 0.77, 1.59)
+    assert costs.at_edge("strong --planner paper") == {findings.COSTS: 5}  # 2DS BS, OB, BT; 3DO OB, BT
+    assert costs.at_edge(checker_scope.SLOW) == {findings.SAVES: 2}  # 2DS OB, 3DC-9 OB
 
 
 def test_chapter04_tables_name_every_sampler_and_each_failure():
@@ -51,9 +65,12 @@ def test_chapter04_tables_name_every_sampler_and_each_failure():
                 "nodes": 10,
                 "samples_exact": 20,
                 "predicted_checks": 0,
+                "other_s": 0.0,
             }
         ]
     }
     stages, checks = chapter04.eager_tables(records)
-    assert "| without | 1.0 | 4.0 | 0.0 | 5.0 |" in stages and "| without | 10 | 20 | 0 | 2,000 |" in checks
+    assert "| sampling | 1.0 |" in stages and "| other (encoding, set-up) | 0.0 |" in stages
+    assert "| total | 5.0 |" in stages and "| without | 10 | 20 | 0 | 2,000 |" in checks
+    assert "encoding the workspace for the network. Each row" in stages  # no encoding time: none said
     assert chapter04.per_point(records) == {"without": 2e-6}

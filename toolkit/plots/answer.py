@@ -18,15 +18,23 @@ from toolkit.plots.palette import COLORS, PAGE_WIDTH, series_style
 from toolkit.plots.timings import band_words, log_ticks
 
 MARKERS = ("s", "o", "^")  # a series' marker, beside its colour
+SPREAD = 0.3  # a series' offset from its sampler's tick: three series side by side, none hiding another
 
 
-def answer_ratios(rows: dict[str, dict[str, float]], *, tie: float, names: dict[str, str] | None = None) -> Figure:
+def answer_ratios(
+    rows: dict[str, dict[str, float]],
+    *,
+    tie: float,
+    names: dict[str, str] | None = None,
+    spans: dict[str, dict[str, tuple[float, float]]] | None = None,
+) -> Figure:
     """One panel: a group of four samplers per scenario, one point per series in each, the tie band ``1 ± tie``
-    shaded darker than the page's other bands, and the series named in a legend above (``names`` renames them)."""
+    shaded darker than the page's other bands, and the series named in a legend above (``names`` renames them);
+    ``spans``: a whisker per point of the rows it names (the middle half of the queries' ratios)."""
     scenarios = list(dict.fromkeys(label.split(", ", 1)[0] for label in rows))
     series = list(dict.fromkeys(label.split(", ", 1)[1] for label in rows))
     names = names or {}
-    fig = Figure(figsize=(PAGE_WIDTH, 3.9), layout="constrained")
+    fig = Figure(figsize=(PAGE_WIDTH, 4.6), layout="constrained")
     ax = fig.subplots()
     width = len(PAPER_SAMPLERS) + 1  # a scenario's samplers, and a gap
     ax.axhspan(
@@ -39,7 +47,7 @@ def answer_ratios(rows: dict[str, dict[str, float]], *, tie: float, names: dict[
         label=band_words(tie),
     )
     ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
-    drawn, parts = _series(ax, rows, scenarios, series, names)
+    drawn, parts = _series(ax, rows, scenarios, series, names, spans or {})
     for i in range(1, len(scenarios)):
         ax.axvline(i * width - 1, color=COLORS["shade"], linewidth=1.0, zorder=0)
     ticks = [i * width + j for i in range(len(scenarios)) for j in range(len(PAPER_SAMPLERS))]
@@ -60,20 +68,22 @@ def answer_ratios(rows: dict[str, dict[str, float]], *, tie: float, names: dict[
     log_ticks(ax)
     ax.set_ylabel("total time with / without\n(below 1: saves)")
     ax.set_xlabel("sampler, grouped by scenario", labelpad=24)  # under the scenarios' names
-    fig.legend(loc="outside upper center", ncol=2, fontsize=9, frameon=False)  # over the panel, the page's width
-    below = int(np.sum(np.array(drawn) <= 1 - tie))
+    fig.legend(loc="outside upper center", ncol=1, fontsize=9, frameon=False)  # over the panel: long names, a row each
+    points = [v for row in rows.values() for v in row.values()]
+    below = int(np.sum(np.array(points) <= 1 - tie))
     text = (
         "Inside the paper's Algorithm 1, total time with prediction over time without, per scenario and sampler, "
-        f"log scale, against the line at 1 and the shaded {band_words(tie)}: {len(drawn)} points in "
-        f"{len(series)} series, {below} of them at or below {1 - tie:.2f}."
+        f"log scale, against the line at 1 and the shaded {band_words(tie)}: {len(points)} points in "
+        f"{len(series)} series, {below} of them at or below {1 - tie:.2f}"
+        + (", whiskers spanning the middle half of the queries' ratios where a series has them." if spans else ".")
     )
     return describe(fig, text, parts)
 
 
-def _series(ax, rows, scenarios: list[str], series: list[str], names: dict[str, str]) -> tuple[list[float], list[Part]]:
+def _series(ax, rows, scenarios: list[str], series: list[str], names: dict[str, str], spans) -> tuple[list, list]:
     """Each series' points, its scenarios in groups of :data:`PAPER_SAMPLERS` and a series a little left or right of
-    a sampler's tick; returns every ratio drawn and one :class:`Part` a series (its numbers, for the text
-    alternative)."""
+    a sampler's tick, with a whisker where ``spans`` gives one; returns every value drawn and one :class:`Part` a
+    series (its numbers, for the text alternative)."""
     width = len(PAPER_SAMPLERS) + 1
     drawn: list[float] = []
     parts = []
@@ -81,23 +91,35 @@ def _series(ax, rows, scenarios: list[str], series: list[str], names: dict[str, 
         cells = []
         for i, scenario in enumerate(scenarios):
             ratios = rows.get(f"{scenario}, {name}", {})
-            x = [i * width + j + (k - 1) * 0.22 for j, s in enumerate(PAPER_SAMPLERS) if s in ratios]
+            x = [i * width + j + (k - 1) * SPREAD for j, s in enumerate(PAPER_SAMPLERS) if s in ratios]
             y = [ratios[s] for s in PAPER_SAMPLERS if s in ratios]
+            whiskers = spans.get(f"{scenario}, {name}", {})
+            for xi, s in zip(x, (s for s in PAPER_SAMPLERS if s in ratios)):
+                if s in whiskers:
+                    ax.vlines(xi, *whiskers[s], color=series_style(k)["color"], linewidth=1.4, zorder=2)
+                    drawn += list(whiskers[s])
             ax.plot(
                 x,
                 y,
                 linestyle="none",
                 marker=MARKERS[k % len(MARKERS)],
                 color=series_style(k)["color"],
-                markersize=7,
+                markersize=6,
                 markeredgecolor=COLORS["ink"],
                 markeredgewidth=0.6,
                 zorder=3,
                 label=names.get(name, name) if i == 0 else None,
             )
             drawn += y
-            cells.append((scenario, *(f"{ratios[s]:.2f}" if s in ratios else "" for s in PAPER_SAMPLERS)))
+            cells.append((scenario, *(_cell(ratios.get(s), whiskers.get(s)) for s in PAPER_SAMPLERS)))
         parts.append(
             Part(names.get(name, name), "total time with / without", ("scenario", *PAPER_SAMPLERS), tuple(cells))
         )
     return drawn, parts
+
+
+def _cell(ratio: float | None, whisker: tuple[float, float] | None) -> str:
+    """A point's number for the text alternative: "1.13", or "1.13 (0.77–1.59)" with its whisker."""
+    if ratio is None:
+        return ""
+    return f"{ratio:.2f}" + (f" ({whisker[0]:.2f}–{whisker[1]:.2f})" if whisker else "")

@@ -287,9 +287,9 @@ def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: in
     its coordinates written beside it (review r25a: at the page's size one could not see whether the edge cut the
     block or grazed it)."""
     removed = LineCollection(
-        list(segments), colors=REPAIR_COLOR, linewidths=3, zorder=5, label="edge removed by a repair"
+        list(segments), colors=REPAIR_COLOR, linewidths=4.5, zorder=5, label="edge removed by a repair"
     )
-    removed.set_path_effects(halo(3))
+    removed.set_path_effects(halo(4.5))
     ax.add_collection(removed)
     for a, b in segments:
         Q = a + np.linspace(0.0, 1.0, points)[:, None] * (b - a)
@@ -300,13 +300,14 @@ def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: in
             ax.annotate(
                 f"hits ({x:.1f}, {y:.1f})",
                 (x, y),
-                xytext=(-6, -10),
+                xytext=(-34, -30),  # off the edges, on a leader (review r27d: the label sat on the roadmap)
                 textcoords="offset points",
                 ha="right",
                 va="top",
-                fontsize=8,
+                fontsize=9,
                 zorder=7,
-                path_effects=halo(1.0, ("free",)),
+                arrowprops={"arrowstyle": "-", "color": COLORS["ink"], "linewidth": 0.8},
+                bbox={"boxstyle": "round,pad=0.2", "facecolor": COLORS["free"], "edgecolor": COLORS["ink"]},
             )
 
 
@@ -343,19 +344,19 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
     """Several steps of Algorithm 1 side by side, the roadmap drawn at each (one panel per step; ``columns`` a row,
     as wide as the page together)."""
     rows = -(-len(steps) // columns)
-    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / columns * 1.2 * rows + 1.6), layout="constrained")
+    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / columns * 1.1 * rows + 1.2), layout="constrained")
     axes = fig.subplots(rows, columns, squeeze=False).ravel()
     for ax, step in zip(axes, steps):
         _draw_roadmap(ax, exact, step)
     for ax in axes[len(steps) :]:
-        ax.set_axis_off()
+        ax.set_axis_off()  # an empty slot: the legend goes there
     title = "The lazy PRM with edge screening, step by step"  # not Algorithm 1: its edges are predicted, not checked
     fig.suptitle(
         f"{title}\n(thin edges: kept by prediction, checked exactly only on a candidate,"
         "\nso some cross C-obstacles; hollow: not yet confirmed exactly; X: removed by a repair)",
         fontsize=11,
     )
-    _roadmap_legend(fig, axes)
+    _roadmap_legend(fig, axes, axes[len(steps)] if len(steps) < len(axes) else None)
     text = f"{title}, one panel per step, {len(steps)} steps. First: {step_in_words(steps[0])}"
     text += f" Last: {step_in_words(steps[-1])}" if len(steps) > 1 else ""  # every step: the longer description
     return describe(fig, text, [_step_part(step) for step in steps])
@@ -379,9 +380,13 @@ def _node_state(step: PlanStep, n: int) -> str:
     return "confirmed exactly" if step.node_verified[n] else "not yet confirmed"
 
 
-def _roadmap_legend(fig: Figure, axes) -> None:
-    """One legend below the panels naming every kind of mark any of them drew (each name once)."""
+def _roadmap_legend(fig: Figure, axes, empty=None) -> None:
+    """One legend naming every kind of mark any panel drew (each name once): in the ``empty`` slot of the grid where
+    there is one, else below the panels."""
     named = {label: handle for ax in axes for handle, label in zip(*ax.get_legend_handles_labels())}
     style: dict[str, Any] = dict(ncol=min(len(named), 2), fontsize=9, frameon=False, handlelength=3.5)
+    if empty is not None:
+        empty.legend(list(named.values()), list(named), loc="center", fontsize=9, frameon=False, handlelength=3.5)
+        return
     style["loc"] = "outside lower center" if fig.get_layout_engine() is not None else "lower center"
     fig.legend(list(named.values()), list(named), **style)

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 from toolkit.experiments.paper_numbers import IMPROVEMENT
 from toolkit.learning import metrics
-from toolkit.teaching import findings, recorded
+from toolkit.teaching import costs, findings, recorded
 from toolkit.teaching.recorded import Tables
 from toolkit.util.verdicts import COSTS, SAVES, TIES, time_verdict
 
@@ -34,6 +34,7 @@ class SlowChecker:
     totals: tuple[float, ...]  # Table 3's total improvements, ours
     papers_totals: tuple[float, ...]  # ... and the paper's
     own: tuple[float, ...]  # per scenario and sampler: the median of each query's own total-time ratio with / without
+    edge: int = 0  # the savings of ``own`` whose middle half reaches into the tie band
 
     def sampling_verdicts(self) -> Counter:
         """How many sampling cells saved time, tied or cost (chapter 04's rule on the ratio 1 - improvement)."""
@@ -64,6 +65,7 @@ def slow_checker(tables: Tables | None = None) -> SlowChecker:
         totals=cells("total", False),
         papers_totals=cells("total", True),
         own=tuple(ratio for row in own.values() for ratio in row.values()),
+        edge=costs.at_edge(SLOW, tables)[SAVES],
     )
 
 
@@ -101,6 +103,8 @@ def slow_sentence(facts: SlowChecker, ranges: bool = True) -> str:
         stage = f"saved sampling time (Table 3's means) in {sampling[SAVES]} of {len(facts.sampling)} cells"
     own = facts.own
     total = _counted(facts.total_verdicts())
+    if facts.edge:
+        total += f" ({facts.edge} of the {facts.total_verdicts()[SAVES]} savings only at the median)"
     said = (
         f"With a slow exact checker on both sides (python-fcl, {where}; 100 recorded queries a scenario), our accurate "
         f"network {stage} (the paper's Table 3: {_percents(facts.papers_sampling)}), but {total}"
@@ -127,20 +131,20 @@ def like_for_like(facts: SlowChecker) -> str:
 
 def why_sentence(tables: Tables | None = None) -> str:
     """Why the accurate network saved no time inside Algorithm 1 with the compiled checker: what it decides (the
-    samples; section 5 of chapter 04 counts the checks) and what a call cost in that run, per configuration, over the
-    compiled exact check (``docs/results.md``'s throughput table of :data:`toolkit.teaching.recorded.ALGORITHM_1`)."""
+    samples; section 5 of chapter 04 counts the checks), what a call cost in that run, per configuration, over the
+    compiled exact check (``docs/results.md``'s throughput table of :data:`toolkit.teaching.recorded.ALGORITHM_1`),
+    and how far the slower sampling explains the dearest cells (:func:`toolkit.teaching.costs.split_sentence`)."""
     rates = recorded.table(recorded.ALGORITHM_1, "Checker throughput", tables)
-    costs = [1 / recorded.ours(row["learned / exact"]) for row in rates.values()]
+    costly = [1 / recorded.ours(row["learned / exact"]) for row in rates.values()]
     per = ", ".join(
         f"{NAMES.get(key, key)} {1 / recorded.ours(row['learned / exact']):.1f}" for key, row in rates.items()
     )
-    per += " (2DS against numpy interval tests, 3D against the compiled check)"
     return (
         "Why: the network decides only the samples, a small part of Algorithm 1's work (section 5 counts the checks: "
-        "nearly all are points along the roadmap's edges, which both sides check exactly), and in the run with the "
-        f"fast checker a network call cost {min(costs):.1f} to {max(costs):.0f} times as much per configuration "
-        f"as the exact check it replaced ({per}; `docs/results.md`'s throughput table); in the lazy PRM the network "
-        "screens edges too, and section 3's stage table shows what that did to each sampler's connection time."
+        "nearly all are points along the roadmap's edges, which prediction never checks, though it changes how many "
+        f"there are), and in the run with the fast checker a network call cost {min(costly):.1f} to "
+        f"{max(costly):.0f} times as much per configuration as the exact check it replaced ({per}). "
+        + costs.split_sentence(tables)
     )
 
 
@@ -153,7 +157,7 @@ def answer(tables: Tables | None = None) -> str:
     lazy = {NAMES[key]: strong[key]["total"] for key in ("2ds", "3dc7") if key in strong}
     facts = slow_checker(tables)
     return (
-        f"1. {findings.claim_status(eager, lazy)}\n"
+        f"1. {findings.claim_status(eager, lazy, costs.at_edge(recorded.ALGORITHM_1, tables)[COSTS])}\n"
         f"2. {slow_sentence(facts, ranges=False)} {like_for_like(facts)}\n"
         f"3. {why_sentence(tables)}"
     )
@@ -203,6 +207,19 @@ def compact(tables: Tables | None = None) -> dict[str, dict[str, float]]:
         for label, row in against_algorithm_1(tables).items()
         if label.endswith(("the paper's Table 3", "medians"))
     }
+
+
+def spans(tables: Tables | None = None) -> dict[str, dict[str, tuple[float, float]]]:
+    """The middle half of each query's own ratio behind :func:`compact`'s medians, by the same labels: the answer
+    figure's whiskers (review r27d: without them 1.13 looked like a solid cost)."""
+    out = {}
+    for preset, series in (
+        (recorded.ALGORITHM_1, "ours (`strong` preset), medians"),
+        (SLOW, "ours (`strong`, python-fcl), medians"),
+    ):
+        for key, cells in costs.middle_halves(preset, tables).items():
+            out[f"{NAMES.get(key, key)}, {series}"] = {s: (low, high) for s, (_, low, high) in cells.items()}
+    return out
 
 
 def _others(tables: Tables | None = None) -> dict[str, dict[str, float]]:

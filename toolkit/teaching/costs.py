@@ -12,10 +12,13 @@ edge points) for these runs; chapter 04's section 5 counts them live for one sam
 
 from __future__ import annotations
 
+import re
+from collections import Counter
 from dataclasses import dataclass
 
 from toolkit.teaching import recorded
 from toolkit.teaching.recorded import Tables
+from toolkit.util.verdicts import COSTS, SAVES, time_verdict
 
 DEAR = 1.25  # a median ratio at or above this: prediction cost a quarter or more of the query's time
 NAMES = {"2ds": "2DS", "3dc7": "3DC-7", "3dc9": "3DC-9", "3do": "3DO"}
@@ -35,6 +38,12 @@ class Cost:
     def after(self) -> tuple[float, float]:
         """The mean time after sampling (the total less sampling), without and with."""
         return self.total[0] - self.sampling[0], self.total[1] - self.sampling[1]
+
+    @property
+    def sampling_share(self) -> float:
+        """The share of the extra mean time (with less without) that the slower sampling stage explains."""
+        extra = self.total[1] - self.total[0]
+        return (self.sampling[1] - self.sampling[0]) / extra if extra else 0.0
 
     @property
     def after_share(self) -> float:
@@ -73,13 +82,13 @@ def cost_table(tables: Tables | None = None) -> str:
     in how many the larger part of the extra mean time came after sampling."""
     cells = dear_cells(tables)
     rows = [
-        "| cell | median ratio | sampling, ms | after sampling, ms | share of the extra after sampling |",
+        "| cell | median ratio | sampling, ms | after sampling, ms | share of the extra from sampling |",
         "| --- | ---: | ---: | ---: | ---: |",
     ]
     for c in cells:
         rows.append(
             f"| {c.scenario} {c.sampler} | {c.ratio:.2f} | {1000 * c.sampling[0]:.1f} → {1000 * c.sampling[1]:.1f} "
-            f"| {1000 * c.after[0]:.1f} → {1000 * c.after[1]:.1f} | {c.after_share:.0%} |"
+            f"| {1000 * c.after[0]:.1f} → {1000 * c.after[1]:.1f} | {c.sampling_share:.0%} |"
         )
     mostly = [c for c in cells if c.after_share > 0.5]
     others = ", ".join(f"{c.scenario} {c.sampler}" for c in cells if c not in mostly) or "none"
@@ -87,3 +96,50 @@ def cost_table(tables: Tables | None = None) -> str:
         "\n".join(rows) + f"\n\nThe larger part of the extra mean time came after sampling in {len(mostly)} of these "
         f"{len(cells)} cells (the others: {others})."
     )
+
+
+def split_sentence(tables: Tables | None = None) -> str:
+    """One sentence on the dear cells (review r27d: the "why" must cover the costs the page records): how much of the
+    extra mean time the slower sampling stage explains, and where the rest came from, said only as far as the record
+    splits it."""
+    cells = dear_cells(tables)
+    if not cells:
+        return ""
+    shares = [c.sampling_share for c in cells]
+    low, high = round(100 * min(shares)), round(100 * max(shares))
+    span = f"{low} %" if low == high else f"{low}–{high} %"
+    if all(c.after[1] > c.after[0] for c in cells):
+        rest = (
+            "the rest is work after sampling (connecting and checking the roadmap's edges, extracting and verifying "
+            "the path) that grew with prediction, which the record does not break down"
+        )
+    else:
+        rest = "the rest came after sampling, which the record does not break down"
+    return (
+        f"In the {len(cells)} recorded cells where prediction cost a quarter or more of the query's time (section 6's "
+        f"last table), slower sampling explains {span} of the extra mean time; {rest}."
+    )
+
+
+def middle_halves(preset: str, tables: Tables | None = None) -> dict[str, dict[str, tuple[float, float, float]]]:
+    """The table "each query's own ratio" of ``preset`` with its middle halves: ``{scenario: {sampler: (median, lower
+    quartile, upper quartile)}}``, from cells like "1.13 (0.77–1.59)"."""
+    found = recorded.table(preset, "each query's own ratio", tables)
+    out: dict[str, dict[str, tuple[float, float, float]]] = {}
+    for scenario, cells in found.items():
+        for column, cell in cells.items():
+            median, low, high = (float(v) for v in re.findall(r"\d+(?:\.\d+)?", cell)[:3])
+            out.setdefault(scenario, {})[column.split()[1]] = (median, low, high)
+    return out
+
+
+def at_edge(preset: str, tables: Tables | None = None) -> Counter:
+    """How many of ``preset``'s saves and costs (by the median of each query's own ratio) have a middle half that
+    reaches into the tie band: a saving or a cost only at the median, "can't tell" by section 3's rule."""
+    edge: Counter = Counter()
+    for by_sampler in middle_halves(preset, tables).values():
+        for median, low, high in by_sampler.values():
+            verdict = time_verdict(median)
+            if (verdict == COSTS and time_verdict(low) != COSTS) or (verdict == SAVES and time_verdict(high) != SAVES):
+                edge[verdict] += 1
+    return edge
