@@ -93,3 +93,30 @@ def test_office_collisions_splits_the_collisions_into_the_two_kinds():
     row = chapter05.office_collisions(samples, 0).splitlines()[-1]
     total, colliding, out, inside = (int(v) for v in row.strip("| ").split(" | "))
     assert total == 200 and colliding == out + inside and out > 0 and inside > 0
+
+
+def test_screening_counts_the_points_the_lazy_prm_asked_the_model_about_on_the_path():
+    """Reader r27e: the model called a frame colliding, yet the lazy PRM kept that edge. The table says what
+    screening saw there (its points are sparser than the frames) and the share above which it drops an edge."""
+    from types import SimpleNamespace
+
+    from toolkit import scenarios
+
+    robot = scenarios.get("3dc7").robot
+    path = robot.interpolate(
+        robot.sample(np.random.default_rng(0), 1)[0], robot.sample(np.random.default_rng(1), 1)[0], np.linspace(0, 1, 3)
+    )
+
+    class Model:  # calls a point colliding where its base's x is below `cut`
+        def __init__(self, cut):
+            self.robot, self.cut = robot, cut
+
+        def are_valid(self, Q):
+            return Q[:, 0] >= self.cut
+
+    result = SimpleNamespace(path=path)
+    rows = [line.split("|")[1:-1] for line in chapter05.screening(result, Model(-np.inf)).splitlines()[2:]]
+    edges, points, called, most, drops = (cell.strip() for cell in rows[0])
+    assert (edges, called, most, drops) == ("2", "0", "0%", "90%") and int(points) > 0
+    rows = [line.split("|")[1:-1] for line in chapter05.screening(result, Model(np.inf)).splitlines()[2:]]
+    assert [cell.strip() for cell in rows[0]] == ["2", points, points, "100%", "90%"]  # every point called colliding
