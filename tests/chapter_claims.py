@@ -897,6 +897,8 @@ def chapter_05(nb) -> list[str]:
     if len(office) != 1 or int(office[0][1]) != int(office[0][2]) + int(office[0][3]) or "0" in office[0][2:]:
         problems.append(f"05: the office's collisions are not the two kinds the prose names: {office}")
     problems += _chapter_05_answer(found, measured, scored)
+    if ("**No.**" in found) != bool(re.search(r"\*\*The question\.\*\*[^*]{0,200}\*\*No\*\*", opening(nb))):
+        problems.append("05: the question paragraph does not give the answer's 'No' (reader r27e)")
     return problems + _page_width(nb, tables(nb), "05")  # review r14b: the valid-share table's sixth column was cut
 
 
@@ -905,10 +907,22 @@ def _chapter_05_answer(found: str, measured: list[list[str]], scored: list[list[
     numbers is in a table on the page: the sampling cut beside the paper's, the accuracy pair as a row; a ratio of two
     medians within timing noise reads "within noise", not a verdict."""
     problems = []
-    totals = [r for r in measured if "median of each query's own ratio (100 queries)" in r[0]]
+    totals = [
+        r
+        for r in measured
+        if r[0].startswith("`strong` network")
+        and r[0].endswith(("median of each query's own ratio (100 queries)", ": ratio of the means"))
+    ]
     saves = any(cell.startswith(findings.SAVES) for r in totals for cell in r[1:])
-    if len(totals) != 2 or saves or "**No.** On 3DC-7 no sampler's whole query saved 10 % or more" not in found:
+    if len(totals) != 4 or saves or "**No.** On 3DC-7 no sampler's whole query saved 10 % or more" not in found:
         problems.append(f"05: the answer's 'No' does not match the closing's total-time rows: {totals}")
+    # reader r27e: the answer's ratios of the means are the closing table's rows of that statistic
+    said_means = re.search(r"ours were ([\d. /]+) with the compiled checker and ([\d. /]+) with python-fcl", found)
+    by_means = [" / ".join(re.sub(r".*\((.*)\)", r"\1", c) for c in r[1:]) for r in totals if "means" in r[0]]
+    if said_means is None or list(said_means.groups()) != by_means:
+        problems.append(
+            f"05: the answer's means are not the closing's: {said_means and said_means.groups()}, {by_means}"
+        )
     # reader r25b: the answer gives the paper's side, the samplers its Table 3 row in the closing table saves for
     table3 = [r for r in measured if r[0].startswith("the paper's Table 3: ratio of the means")]
     said = re.search(r"The paper's Table 3 says yes for ([A-Z]+(?: and [A-Z]+)*) \(", found)

@@ -322,7 +322,7 @@ def test_a_stills_overview_thins_a_dense_cloud_and_its_text_says_so(crossing):
     assert near and alt_text(fig).endswith(f"here, {near} sample{'s' * (near != 1)} near it.")
 
 
-def test_a_stills_model_wrong_star_is_hollow_round_the_mark_it_flags(crossing):
+def test_a_stills_model_wrong_star_is_hollow_round_the_mark_it_flags_larger_round_a_diamond(crossing):
     robot, workspace, _, path, valid = crossing
     points = robot.link_boxes(path)[0][:, 0]  # (T, 3)
     wrong = np.arange(len(points)) % 3 == 0
@@ -330,21 +330,26 @@ def test_a_stills_model_wrong_star_is_hollow_round_the_mark_it_flags(crossing):
     fig = scenes.scene_still(robot, workspace, {}, samples=(points, kinds))
     overview = fig.axes[0]
     (stars,) = [c for c in overview.collections if c.get_label() == "sample, model wrong"]
+    (large,) = [c for c in overview.collections if c.get_label() == still_panels.DANGEROUS_LABEL]
+    assert len(stars.get_offsets()) == int((wrong & valid).sum()) and len(large.get_offsets()) == int(
+        (wrong & ~valid).sum()
+    )
+    # reader r27e: a dangerous mistake's star told apart from a conservative one's: larger, its line thicker
+    assert large.get_sizes()[0] > 1.5 * stars.get_sizes()[0] and large.get_linewidth()[0] > stars.get_linewidth()[0]
     legend = dict(zip([t.get_text() for t in fig.legends[0].get_texts()], fig.legends[0].legend_handles))
     # reader r21c: its star drawn round a mark, as in the panels, not empty; r24b: one entry per kind of mistake
     assert still_panels.DANGEROUS_ENTRY in legend and still_panels.CONSERVATIVE_ENTRY in legend
-    assert "sample, model wrong" not in legend
+    assert "sample, model wrong" not in legend and still_panels.DANGEROUS_LABEL not in legend
     (circle,) = [c for c in overview.collections if c.get_label() == "sample, valid"]
     (diamond,) = [c for c in overview.collections if c.get_label() == "sample, in collision"]
-    both = still_panels.star_on_mark(
-        {"sample, valid": circle, "sample, in collision": diamond, "sample, model wrong": stars}
-    )
-    assert both[still_panels.DANGEROUS_ENTRY] == (diamond, stars) and both[still_panels.CONSERVATIVE_ENTRY] == (
+    kinds = {"sample, valid": circle, "sample, in collision": diamond, "sample, model wrong": stars}
+    both = still_panels.star_on_mark(kinds | {still_panels.DANGEROUS_LABEL: large})
+    assert both[still_panels.DANGEROUS_ENTRY] == (diamond, large) and both[still_panels.CONSERVATIVE_ENTRY] == (
         circle,
         stars,
     )
-    entry = still_panels.star_on_mark({"sample, valid": circle, "sample, model wrong": stars})["sample, model wrong"]
-    assert entry == (circle, stars)
+    entry = still_panels.star_on_mark({"sample, valid": circle, "sample, model wrong": stars})
+    assert entry == {"sample, valid": circle, still_panels.CONSERVATIVE_ENTRY: (circle, stars)}
     assert len(stars.get_facecolor()) == 0 or stars.get_facecolor()[0][3] == 0  # the circle or diamond shows inside
     assert stars.get_sizes()[0] > 4 * still_panels.SAMPLE_MARKS["valid"][2]  # round the mark, larger than it
     with pytest.raises(ValueError, match="drawn in 3D"):
@@ -370,8 +375,9 @@ def test_a_stills_close_up_says_what_the_model_answers(crossing):
 
 def test_a_stills_overview_stars_mistakes_as_often_as_the_model_makes_them(crossing):
     """Reader r19c: every mistake drawn beside every k-th right answer made stars look like 40 % of the marks where the
-    model erred on 5 %. Thinned to every k-th of every kind alike, the overview stars the mistakes among them, so
-    its share of stars is the model's error rate, and its title and text say which k."""
+    model erred on 5 %. Thinned to every k-th of every kind alike, the overview stars the conservative mistakes among
+    them, so its share of those stars is the model's rate of them; reader r27e: every dangerous mistake drawn, thinned
+    or not (the rare kind: thinning left one of 13). Its title and text say which k, and the dangerous ones added."""
     robot, workspace, _, _, _ = crossing
     n = 2 * still_panels.OVERVIEW_SAMPLES + 1
     points = robot.link_boxes(robot.sample(np.random.default_rng(0), n))[0][:, 0]  # (n, 3) bases
@@ -382,13 +388,16 @@ def test_a_stills_overview_stars_mistakes_as_often_as_the_model_makes_them(cross
     overview = fig.axes[0]
     drawn = {c.get_label(): len(c.get_offsets()) for c in overview.collections}
     kept = np.arange(n) % 3 == 0  # (n,) 1 in 3, whatever its kind
-    assert drawn["sample, model wrong"] == int((kept & wrong).sum()) == 19  # 15, 36, 57, ...: 19 of 134
+    dangerous = wrong & ~valid  # (n,) every one drawn
+    assert drawn["sample, model wrong"] == int((kept & wrong & valid).sum())  # conservative: thinned alike
+    assert drawn[still_panels.DANGEROUS_LABEL] == int(dangerous.sum()) == 46
     assert drawn["sample, valid"] == int((kept & valid).sum())
-    assert drawn["sample, in collision"] == int((kept & ~valid).sum())
-    stars = drawn["sample, model wrong"] / (drawn["sample, valid"] + drawn["sample, in collision"])
-    assert stars == pytest.approx(wrong.mean(), abs=0.01)
-    assert overview.get_title().endswith("1 sample in 3 drawn")
-    assert "1 sample in 3 of every kind drawn" in alt_text(fig)
+    assert drawn["sample, in collision"] == int(((kept | dangerous) & ~valid).sum())
+    stars = drawn["sample, model wrong"] / drawn["sample, valid"]
+    assert stars == pytest.approx((wrong & valid).sum() / valid.sum(), abs=0.05)
+    extra = int((dangerous & ~kept).sum())
+    assert overview.get_title().endswith(f"1 sample in 3 drawn\nand every dangerous mistake ({extra} more)")
+    assert "1 sample in 3 of every kind drawn, and every dangerous mistake" in alt_text(fig)
 
 
 @pytest.mark.parametrize("index", [0, FRAMES // 2])

@@ -34,6 +34,7 @@ from toolkit.plots.still_panels import (
     TRACE_STYLE,
     clear_turn,
     close_up,
+    dangerous_mask,
     draw_points,
     flat,
     inside_mask,
@@ -250,6 +251,7 @@ def _overview_words(robot, workspace, poses, samples, trace) -> str:
         )
         step = overview_step(len(samples[0]))
         text += f", 1 sample in {step} of every kind drawn" if step > 1 else ""
+        text += ", and every dangerous mistake" if step > 1 and dangerous_mask(samples[1]).any() else ""
     text += ", the path of the robot's base and its shadow on the floor, dotted" if trace is not None else ""
     text += ", a thin line from each pose straight down to the floor" if poses else ""
     if poses:

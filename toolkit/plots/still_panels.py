@@ -4,7 +4,8 @@ A 3D picture on a page cannot be turned, so each panel is drawn to be read from 
 
 - :func:`overview` draws the whole workspace, its blocks faint (those near the robot darker), one mark per sample (a
   circle valid, a diamond in collision, large enough to tell apart, edged in ink; light; every k-th of them, at most
-  :data:`OVERVIEW_SAMPLES`, a star round each one a model gets wrong: stars as common as its mistakes) and, over
+  :data:`OVERVIEW_SAMPLES`, a star round each one a model gets wrong: stars as common as its mistakes; every
+  dangerous one drawn, thinned or not, its star larger, :data:`DANGEROUS_STAR`) and, over
   them, the robot itself at each pose: its links opaque in its colour, edged in ink, ringed in white, labelled;
 - :func:`close_up` draws the robot at one pose among the blocks near it: its links opaque, edged thick in ink, each
   joint a white dot ringed in ink, the blocks faded (a robot behind one shows through it), those within
@@ -34,14 +35,18 @@ SAMPLE_MARKS = {  # kind of sample -> marker, colour, size (points²): the viewe
     "in collision": ("D", INVALID_COLOR, 28),  # as much ink as the circle (a diamond covers s, a circle 0.79 s)
     "model wrong": ((4, 1, 0), COLORS["ink"], 300),  # a four-pointed star: the 3D view's sparkle (one name, r23b)
 }
-SAMPLE_EDGE = dict(edgecolors=COLORS["ink"], linewidths=0.5)  # a thin ink edge: the shape shows on a block too
-WRONG_STYLE = dict(facecolors="none", edgecolors=COLORS["ink"], linewidths=1.2)  # hollow: the mark under it shows
+EDGE_LINE, WRONG_LINE = 0.5, 1.2  # points: a sample's ink edge, a star's line
+SAMPLE_EDGE = dict(edgecolors=COLORS["ink"], linewidths=EDGE_LINE)  # a thin ink edge: the shape shows on a block too
+WRONG_STYLE = dict(facecolors="none", edgecolors=COLORS["ink"], linewidths=WRONG_LINE)  # hollow: the mark shows
 TRACE_STYLE = dict(color=COLORS["trace"], linestyle="--")  # dashed: apart from the robot's blue links by more than hue
 SAMPLE_WORDS = {
     "valid": "circles",
     "in collision": "diamonds",
-    "model wrong": "hollow sparkles round their marks",
+    "model wrong": "black sparkles round their marks, larger on a diamond",
 }  # SAMPLE_MARKS in words
+DANGEROUS_STAR = 1.8  # a star round a dangerous mistake (a diamond) this many times the area of a conservative one's,
+#   its line thicker (reader r27e: at 10 px the one dangerous star read as the conservative ones)
+DANGEROUS_LABEL = "sample, model wrong, dangerous"  # a collection of the larger stars, round diamonds
 OVERVIEW_SAMPLES = 200  # at most this many samples in a still's overview: more hide the blocks and the robot
 OVERVIEW_STAR = 150  # points²: an overview's star round a mistake (a close-up's: SAMPLE_MARKS' 300, scaled)
 OVERVIEW_ALPHA = 0.45  # an overview's marks, light: the robot drawn over them and the blocks under them show
@@ -68,13 +73,19 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
         style = dict(alpha=0.3, linewidth=0.8) if dark else dict(alpha=0.15, linewidth=0.2)
         add_box_3d(ax, aabb_corners(lo, hi), **style, **BLOCK_STYLE)
     step = 1 if samples is None else overview_step(len(samples[0]))
+    extra = 0  # dangerous mistakes drawn beyond the every k-th
     if samples is not None:  # every k-th of every kind alike, light: a fair share (reader r19c: every mistake added
         keep = np.arange(len(samples[0])) % step == 0  # (N,) to every k-th right one made stars look 40 % of marks)
+        dangerous = dangerous_mask(samples[1])  # (N,) and every dangerous one, the rare kind (reader r27e)
+        extra = int((dangerous & ~keep).sum())
+        keep |= dangerous
         samples = (samples[0][keep], {kind: mask[keep] for kind, mask in samples[1].items()})
     draw_points(ax, samples, trace, alpha=OVERVIEW_ALPHA)
     for marks in ax.collections:  # every mistake starred, each star smaller than a close-up's: a hundred fit
         if marks.get_label() == "sample, model wrong":
             marks.set(sizes=[OVERVIEW_STAR], linewidth=0.9)
+        elif marks.get_label() == DANGEROUS_LABEL:
+            marks.set(sizes=[OVERVIEW_STAR * DANGEROUS_STAR], linewidth=1.6)
     ax.computed_zorder = False  # the robot in front of every sample
     _floor_cues(ax, robot, [q for q, _ in poses.values()], trace, workspace.lower[2])
     lift = 0.04 * float(np.max(workspace.upper - workspace.lower))  # a label this far above the robot
@@ -98,6 +109,7 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
     ax.set_box_aspect(extent, zoom=FLAT_ZOOM if flat(workspace) else 1.0)  # a flat office: wider, less blank above
     few_ticks(ax)
     drawn = f", 1 sample in {step} drawn" if step > 1 else ""
+    drawn += f"\nand every dangerous mistake ({extra} more)" if extra else ""
     ax.set_title(f"the whole workspace: {len(workspace.boxes)} blocks{drawn}", fontsize=10)
 
 
@@ -294,6 +306,12 @@ def view_angles(robot: BoxRobot, q: np.ndarray) -> tuple[float, float]:
     return elevation, azimuth + max(OFF_AXIS - within, 0.0) - max(within - (90.0 - OFF_AXIS), 0.0)
 
 
+def dangerous_mask(kinds: dict) -> np.ndarray:
+    """``(N,)`` bool: the samples of ``kinds {kind: (N,) mask}`` that a model calls valid although they collide."""
+    wrong = kinds.get("model wrong")
+    return np.zeros_like(kinds["valid"]) if wrong is None else wrong & kinds["in collision"]
+
+
 def draw_points(
     ax, samples, trace, clip: bool = False, alpha: float = 1.0, scale: float = 1.0, hide: np.ndarray | None = None
 ) -> int:
@@ -305,19 +323,21 @@ def draw_points(
         mask = mask & inside_mask(ax, samples[0]) if clip else mask
         mask = mask & ~hide if hide is not None else mask
         drawn |= mask
-        if mask.any():
-            marker, color, size = SAMPLE_MARKS[kind]
-            style = dict(color=color, **SAMPLE_EDGE) if kind != "model wrong" else WRONG_STYLE  # round the mark
-            ax.scatter(
-                *samples[0][mask].T,
-                marker=marker,
-                s=size * scale,
-                depthshade=False,
-                alpha=alpha if kind != "model wrong" else 1.0,  # a star in ink, never faded: it flags a mistake
-                zorder=2.0,
-                label=f"sample, {kind}",
-                **style,
-            )
+        marker, color, size = SAMPLE_MARKS[kind]
+        style = dict(color=color, **SAMPLE_EDGE) if kind != "model wrong" else WRONG_STYLE  # round the mark
+        large = mask & samples[1]["in collision"] if kind == "model wrong" else np.zeros_like(mask)  # dangerous ones
+        for part, label, grow in ((mask & ~large, f"sample, {kind}", 1.0), (large, DANGEROUS_LABEL, DANGEROUS_STAR)):
+            if part.any():  # a dangerous mistake's star larger, its line thicker: told apart (reader r27e)
+                ax.scatter(
+                    *samples[0][part].T,
+                    marker=marker,
+                    s=size * scale * grow,
+                    depthshade=False,
+                    alpha=alpha if kind != "model wrong" else 1.0,  # a star in ink, never faded: it flags a mistake
+                    zorder=2.0,
+                    label=label,
+                    **(style | {"linewidths": (WRONG_LINE if kind == "model wrong" else EDGE_LINE) * grow}),
+                )
     if trace is not None:
         points = trace.copy()
         if clip:
@@ -327,22 +347,23 @@ def draw_points(
 
 
 def star_on_mark(handles: dict) -> dict:
-    """A still's legend ``handles {label: artist}`` with the mistakes' hollow sparkle drawn round a sample's mark, as
-    the panels draw it (reader r21c: a hollow star alone in the legend, stars filled by their marks in the panels):
-    where both marks are drawn, one entry per kind of mistake, the sparkle on a diamond (dangerous) and on a circle
-    (conservative) (reader r24b: the dangerous kind had no entry)."""
-    star = handles.get("sample, model wrong")
+    """A still's legend ``handles {label: artist}`` with the mistakes' sparkle drawn round a sample's mark, as the
+    panels draw it (reader r21c: a hollow star alone in the legend): one entry per kind of mistake drawn, the larger
+    sparkle round a diamond (dangerous) and the sparkle round a circle (conservative) (reader r24b, r27e)."""
+    star, large = handles.get("sample, model wrong"), handles.get(DANGEROUS_LABEL)
     circle, diamond = handles.get("sample, valid"), handles.get("sample, in collision")
-    if star is None or (circle is None and diamond is None):
+    if (star is None and large is None) or (circle is None and diamond is None):
         return handles
-    if circle is None or diamond is None:
-        return handles | {"sample, model wrong": (circle or diamond, star)}  # a tuple: both drawn, overlaid
-    kinds = {key: value for key, value in handles.items() if key != "sample, model wrong"}
-    return kinds | {DANGEROUS_ENTRY: (diamond, star), CONSERVATIVE_ENTRY: (circle, star)}
+    kinds = {key: value for key, value in handles.items() if key not in ("sample, model wrong", DANGEROUS_LABEL)}
+    if diamond is not None and large is not None:
+        kinds[DANGEROUS_ENTRY] = (diamond, large)  # a tuple: both drawn, overlaid
+    if circle is not None and star is not None:
+        kinds[CONSERVATIVE_ENTRY] = (circle, star)
+    return kinds
 
 
-DANGEROUS_ENTRY = "sparkle on a diamond: model wrong, dangerous"  # in collision, predicted valid
-CONSERVATIVE_ENTRY = "sparkle on a circle: model wrong, conservative"  # valid, predicted in collision
+DANGEROUS_ENTRY = "diamond in a large sparkle: model wrong, dangerous"  # in collision, predicted valid
+CONSERVATIVE_ENTRY = "circle in a sparkle: model wrong, conservative"  # valid, predicted in collision
 
 
 SHADOW_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=1.2, linestyle=":")  # the path's shadow on the floor
