@@ -13,7 +13,7 @@ from tools import recorded_results, results_summary, site
 TEXT = recorded_results.RESULTS.read_text()
 PAGE = " ".join(TEXT.split())  # whitespace made single spaces: a sentence wraps anywhere
 TABLES = recorded_results.parse(TEXT)
-HISTORY = recorded_results.parse(re.sub(r"(?m)^## Preset `paper` before issue 25.*$", "## Preset `before25`", TEXT))
+HISTORY = recorded_results.parse(re.sub(r"(?m)^## Preset `paper` on 1–2 December.*$", "## Preset `before25`", TEXT))
 THREE_D = ("3dc7", "3dc9", "3do")
 FIDELITY = " ".join((recorded_results.RESULTS.parent / "fidelity.md").read_text().split())  # review r24c, item 2
 SUCCESS = "success, ours: without / with"  # the column of Table 3's times that holds the success rates
@@ -66,8 +66,8 @@ def test_the_planning_answer_follows_the_medians_both_ways():
     both = "whose planner with prediction is Algorithm 1 (so planner and prediction both change), no: none of 8."
     assert both in said  # review r25c, item 1: the `paper` network's cells change the planner too
     assert "The `paper` network, with Algorithm 1 against the lazy PRM (planner and prediction both change)" in said
-    scope = "sections “Preset `strong`” and “Preset `paper`”; the section “Preset `paper` before issue 25”, the 1–2 "
-    scope += "December run with python-fcl, is history"
+    scope = "sections “Preset `strong`” and “Preset `paper`”; the section “Preset `paper` on 1–2 December”, with "
+    scope += "python-fcl, is history"
     assert scope in said and "measured against Algorithm 1, and not counted." in said  # review r21a: which tables
     assert (
         "more time in 3 of 4 scenario–sampler cells (2DS BS 1.50, 2DS OB 1.20, 3DO BS 2.00) and about the same" in said
@@ -362,7 +362,7 @@ def test_the_exact_planners_times_name_the_tables_they_come_from():
     runs = {
         "the `paper` section's times behind Table 3": _times(TABLES, "paper", "total without"),
         "the `strong` section's": _times(TABLES, "strong", "total without"),
-        'the section "Preset `paper` before issue 25"': _times(HISTORY, "before25", "total without"),
+        'the section "Preset `paper` on 1–2 December"': _times(HISTORY, "before25", "total without"),
     }
     for source, times in runs.items():
         (o_low, o_high, c_low, c_high) = claim(

@@ -250,8 +250,7 @@ def lazy_prm(tables: Tables) -> str:
         f"prediction both change), {answer(both, sum(cells.values()))}: {both or 'none'} of "
         f"{sum(cells.values())}{whose}. These counts read the medians tables (the median time with prediction over "
         "the median without) of the sections “Preset `strong`” and “Preset `paper`”; the section “Preset `paper` "
-        "before issue 25”, the 1–2 December run with python-fcl, is history, measured against Algorithm 1, and not "
-        "counted. "
+        "on 1–2 December”, with python-fcl, is history, measured against Algorithm 1, and not counted. "
         f"The `strong` network took {told(groups['strong'])}. The `paper` network, with Algorithm 1 against the "
         f"lazy PRM (planner and prediction both change), took {told(groups['paper'])}."
     )
