@@ -135,9 +135,10 @@ def test_the_typed_sentences_on_the_medians_tables_quote_them():
     assert [float(v) for v in values] == [r for _, _, r in below]
     elsewhere = [r for row in paper.values() for r in row.values() if r >= 0.9]
     assert claim(r"elsewhere a whole query took (\S+)× the time with it") == (_range(elsewhere, 2),)
-    in_3d = [r for s in THREE_D for r in strong[s].values()]
-    assert claim(r"its median 3D query took (\S+)× the time with prediction") == (_range(in_3d, 3),)
-    assert all(r >= 1 for r in strong["2ds"].values())  # "no 2DS sampler's median saved time"
+    costs = [r for row in strong.values() for r in row.values() if findings.time_verdict(r) == findings.COSTS]
+    said = f"The `strong` network took more time in {len(costs)} of 16 scenario–sampler cells ({min(costs):.2f}–"
+    assert f"{said}{max(costs):.2f} times as much)" in PAGE  # review r27f, item 2: counted once, in the findings
+    assert "its median 3D query took" not in PAGE
     dc = [paper[s][x] for s in ("3dc7", "3dc9") for x in ("BS", "OB", "G")]
     o = [paper["3do"][x] for x in ("BS", "OB", "G")]
     assert claim(r"a query takes (\S+)× the time with it on 3DC and (\S+)× on 3DO") == (_range(dc, 2), _range(o, 2))
