@@ -63,10 +63,11 @@ def test_each_point_is_a_cell_of_table_3_or_the_papers(drawn):
     table3 = "Table 3: time improvement ratio"
     tables = {
         "ours, paper network, compiled checker": f"`paper`, {table3}",
-        "ours, paper network, python-fcl (before issue 25)": f"`paper` before issue 25, {table3}",
         "ours, accurate strong network, compiled checker": f"`strong --planner paper`, {table3}",
     }
     assert len(fig.axes) == 4
+    names = {line.get_label() for ax in fig.axes for line in ax.get_lines() if line.get_marker() != "None"}
+    assert not any("issue 25" in name or "python-fcl (before" in name for name in names)  # r27f, item 5: history out
     for scenario, ax in zip(results_summary.NAMES, fig.axes):
         assert ax.get_title().startswith(f"{results_summary.NAMES[scenario]}: {kind} time")
         points = {line.get_label(): list(line.get_ydata()) for line in ax.get_lines() if line.get_marker() != "None"}
@@ -110,7 +111,7 @@ def test_each_panel_shades_the_tie_band_its_counts_are_read_with(drawn):
         (band,) = ax.patches
         corners = band.get_path().transformed(band.get_patch_transform()).vertices  # axes x, data y
         assert sorted({round(y, 6) for y in corners[:, 1]}) == [0.9, 1.1]
-    label = "tie band, 0.90 to 1.10 (within 10 % of 1)"
+    label = "tie band, above 0.90 and below 1.10"  # review r27f, contradiction 1: as the page counts its edges
     assert label in [t.get_text() for t in fig.legends[0].texts]
     assert f"read against the line at 1 and the shaded {label}" in alt.alt_text(fig)
     block = TEXT.partition(results_summary.FIGURE_BEGIN.format(kind=kind))[2].partition("<!-- end")[0]
@@ -187,8 +188,9 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
     both = [*table.values(), *slow.values()]  # the whiskers: both series'
     slow_costs = sum(m >= 1.1 for m, _, _ in slow.values())
     slow_saves = sum(m <= 0.9 for m, _, _ in slow.values())
-    said = f"{slow_costs} costs, {len(slow) - slow_costs - slow_saves} ties, {slow_saves} savings."
-    assert f"Hollow, python-fcl on both sides: {said}" in CLAIM and "so far" not in CLAIM  # review r23c, item 7
+    said = f"{slow_costs} read as “costs time”, {len(slow) - slow_costs - slow_saves} read as “a tie”"
+    assert said in alt.alt_text(fig).partition("Hollow points beside them")[2]  # review r23c, item 7: python-fcl's
+    assert "so far" not in CLAIM and "Shape and colour = verdict, fill = checker" in CLAIM  # review r27f, item 5
     marker = {"costs": "o", "tie": "s", "saves": "^"}
     for line in points:
         median = float(line.get_ydata()[0])
@@ -203,8 +205,9 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
         assert image.info.get("Description") == alt.alt_text(fig), AGAIN
         assert image.size[0] <= COLUMN
     assert CLAIM == results_summary.claim_markdown(TEXT), AGAIN
-    costs = sum(m >= 1.1 for m, _, _ in table.values())
-    assert f"Filled, our compiled checker: {costs} costs, {16 - costs} ties, 0 savings." in CLAIM
+    costs = sum(m >= 1.1 for m, _, _ in table.values())  # review r27f, item 2: counted once, in the summary
+    assert f"saved time in 0 of 16 cells, tied in {16 - costs} and cost time in {costs}." in TEXT
+    assert "The summary above counts the points." in CLAIM and "costs," not in CLAIM.partition("![")[0]
     assert TEXT.index(results_summary.CLAIM_BEGIN) < TEXT.index(results_summary.FIGURE_BEGIN.format(kind="total"))
 
 
@@ -217,11 +220,12 @@ def test_each_figure_of_means_has_its_own_range_the_slow_run_and_counts_by_the_p
     assert low < min(every) and high > max(every)  # no point on the frame
     assert high / low < (12 if kind == "total" else 60)  # the total's own range, not the sampling stage's
     labels = {t.get_text() for t in fig.axes[0].get_yticklabels()}
-    assert "1" in labels and ("3" in labels if kind == "sampling" else not {"0.9", "1.1"} & labels)
-    if kind == "total":  # review r25c: 0.9, 1 and 1.1 crammed into 20 px; the band's edges on the right of each row
-        for ax in fig.axes[1::2]:
-            (edges,) = ax.child_axes
-            assert [t.get_text() for t in edges.get_yticklabels()] == ["0.9", "1.1"]
+    assert "1" in labels and not {"0.9", "1.1"} & labels and (kind == "total" or "3" in labels)
+    # review r25c: 0.9, 1 and 1.1 crammed into 20 px, the band's edges on the right of each row; r27f (item 5): in
+    # Figure 3 too, whose band was a sliver without its labels
+    for ax in fig.axes[1::2]:
+        (edges,) = ax.child_axes
+        assert [t.get_text() for t in edges.get_yticklabels()] == ["0.9", "1.1"]
     names = [t.get_text() for t in fig.legends[0].get_texts()]
     assert "ours, accurate strong network, python-fcl on both sides" in names
     block = TEXT.partition(results_summary.FIGURE_BEGIN.format(kind=kind))[2]
@@ -229,7 +233,7 @@ def test_each_figure_of_means_has_its_own_range_the_slow_run_and_counts_by_the_p
         r"(?m)^\| (ours[^|]*|the paper[^|]*) \| 16 \| (\d+) \| (\d+) \| (\d+) \|$", block.split("<!--")[0]
     )
     said = alt.alt_text(fig)
-    assert len(rows) == 5 and "below 1 for" not in said
+    assert len(rows) == 4 and "below 1 for" not in said
     for name, saved, tied, lost in rows:  # the text alternative tallies as the count table does
         assert f"{name}: {saved} of 16 save time (0.90 or less), {tied} tie, {lost} cost time (1.10 or more)" in said
     renderer = fig.canvas.get_renderer()  # the labels 0.9, 1 and 1.1 stand apart (tests/test_plots_accessibility.py)

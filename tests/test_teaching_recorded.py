@@ -103,7 +103,7 @@ def test_the_parse_keeps_every_row_and_only_the_first_table_under_a_heading():
         ["3dc7", "**50%** / 75%", "**100%** / 87%"],
     ]
     assert list(parsed) == ["paper", "strong"]
-    assert recorded_results.parse("## Preset `paper` before issue 25\n\n### T\n\n| a |\n| - |\n| b |\n") == {}
+    assert recorded_results.parse("## Preset `paper` on 1–2 December\n\n### T\n\n| a |\n| - |\n| b |\n") == {}
 
 
 def test_a_table_shown_in_parts_is_read_as_one():

@@ -20,7 +20,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 RESULTS = ROOT / "docs" / "results.md"
 PACKAGED = ROOT / "toolkit" / "teaching" / "recorded.json"
-# a preset's section, or one planned with a named planner (and baseline); "## Preset `paper` before issue 25" is
+# a preset's section, or one planned with a named planner (and baseline); "## Preset `paper` on 1–2 December" is
 # history, read by no notebook
 PRESET = re.compile(r"^## Preset `(\w+)`(?: with `--planner (\w+)(?: --baseline ([\w-]+))?`(?:: .*)?)?$")
 WITHOUT = "*Without prediction*:"  # how tables.md names, under a heading, what "without" was in its table

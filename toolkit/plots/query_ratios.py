@@ -25,13 +25,13 @@ from matplotlib.ticker import NullLocator
 
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import COLORS, LINE_COLORS, PAGE_WIDTH, halo, series_style
-from toolkit.plots.timings import band_words, legend_above, log_ticks, ratio_parts, tie_band
+from toolkit.plots.timings import legend_above, log_ticks, ratio_parts, tie_band
 from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 
 READS = (COSTS, TIES, SAVES)  # what a median reads as, in the legend's order; each its own colour and marker
 GAP = 1  # an empty slot between two scenarios' groups of samplers
 APART = 0.22  # where a scenario has two series: each point this far from its sampler's tick, the first to the left
-BELOW_1 = (0.7, 0.8, 0.9)  # labelled on :func:`own_ratios`' axis, where the savings lie, beside its 1-2-5 steps
+BELOW_1 = (0.7, 0.9)  # labelled on :func:`own_ratios`' axis, where savings lie, beside its 1-2-5 steps (r27f: no 0.8)
 NEAR_1 = 1.25  # :func:`means_grid`'s extra ticks this close to 1 are labelled on the right, away from the "1"
 Cells = Mapping[str, Mapping[str, tuple[float, float, float]]]  # {scenario: {sampler: (median, q1, q3)}}
 MEANS_STYLES = (  # :func:`means_grid`'s series in turn: colour, marker, hollow; no verdict look of own_ratios
@@ -72,7 +72,7 @@ def own_ratios(
         centres.append(float(x.mean()))
     _legend_entries(ax, series if slow else None)
     ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
-    tie_band(ax, tie)
+    _tie_band(ax, tie)
     ax.set_xticks(ticks, names)
     ax.set_xticks([c + (len(cells[s]) + GAP) / 2 for c, s in zip(centres[:-1], cells)], minor=True)
     ax.grid(True, axis="x", which="minor", color=COLORS["shade"], linewidth=0.8)
@@ -90,6 +90,7 @@ def own_ratios(
     low, high = ax.get_ylim()
     shown = sorted({round(s, 6) for s in (*ax.get_yticks(), *BELOW_1) if low <= s <= high})  # r25c: 0.7 alone below 1
     ax.set_yticks(shown, [f"{s:g}" for s in shown])
+    ax.yaxis.set_minor_locator(NullLocator())  # review r27f: an unlabelled tick under 0.7 read as a missing label
     ax.set_ylabel("time with / without\n(below 1: saves)")
     ax.set_title(title, fontsize=10)
     legend_above(fig, [ax], 2)
@@ -159,13 +160,25 @@ def _read(reads: str) -> str:
     ]
 
 
+def band_said(tie: float) -> str:
+    """The tie band as the legend and the text alternative name it, its edges as the page counts them (review r27f,
+    contradiction 1: "0.90 to 1.10" beside a 1.10 counted a cost): ``"tie band, above 0.90 and below 1.10"``."""
+    return f"tie band, above {1 - tie:.2f} and below {1 + tie:.2f}"
+
+
+def _tie_band(ax, tie: float) -> None:
+    """:func:`toolkit.plots.timings.tie_band`, its legend entry in this module's words (:func:`band_said`)."""
+    tie_band(ax, tie)
+    ax.patches[-1].set_label(band_said(tie))
+
+
 def _words(cells: Cells, title: str, tie: float, label: str = "") -> str:
     """The text alternative: what is drawn (``label``: the series, where there are two), then :func:`_counts`."""
     which = f" ({label}: filled)" if label else ""
     return (
         f"{title}: the median of each query's own time ratio with prediction over without, a point per scenario and "
         f"sampler{which}, a whisker over the middle half of the ratios, log scale, read against the line at 1 and the "
-        f"shaded {band_words(tie)}. {_counts(cells, tie)}"
+        f"shaded {band_said(tie)}. {_counts(cells, tie)}"
     )
 
 
@@ -260,7 +273,7 @@ def _means_panel(ax, title: str, series: Mapping[str, Mapping[str, float]], name
         line.set_path_effects(halo(1.0))
     every = np.array([[ratios[s] for s in samplers] for ratios in series.values()])  # (series, samplers)
     ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
-    tie_band(ax, tie)
+    _tie_band(ax, tie)
     ax.set_xticks(np.arange(len(samplers) - 1) + 0.5, minor=True)  # a sampler's points between two lines
     ax.grid(True, axis="x", which="minor", color=COLORS["shade"], linewidth=0.8)
     ax.tick_params(axis="x", which="minor", length=0)
@@ -286,7 +299,7 @@ def _means_described(fig: Figure, panels, names, samplers, tie: float, said: lis
     )
     text = (
         "Mean planning time with prediction divided by the mean without, a point per sampler and series, one panel "
-        f"per scenario on one log scale, read against the line at 1 and the shaded {band_words(tie)}; below 1 "
+        f"per scenario on one log scale, read against the line at 1 and the shaded {band_said(tie)}; below 1 "
         f"prediction saves time. {'; '.join(said)}. Counted by series: {counted}."
     )
     return describe(fig, text, ratio_parts(panels, samplers))
