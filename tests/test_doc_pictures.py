@@ -1,14 +1,17 @@
-"""The home page's two screenshots (docs/jupyterlab.png, docs/viewer.png) read at the course site's width: each is
-the size its tool makes (tools/lab_browser.py, tools/viewer_picture.py), which the site's column shrinks little.
-Readers of the site found the earlier 1400 and 1280 px pictures, shown at half size, unreadable (text 6-8 px)."""
+"""The docs' pictures read at the course site's width: the home page's office (docs/office.png) and viewer
+(docs/viewer.png), and docs/viewer.md's JupyterLab screenshot (docs/jupyterlab.png). Each is the size its tool makes
+(tools/viewer_picture.py, tools/lab_browser.py), which the site's column shrinks little. Readers of the site found the
+earlier 1400 and 1280 px pictures, shown at half size, unreadable (text 6-8 px)."""
 
+import re
 from pathlib import Path
 
 from PIL import Image
 
 from tools import lab_browser, viewer_picture
 
-DOCS = Path(__file__).resolve().parents[1] / "docs"
+ROOT = Path(__file__).resolve().parents[1]
+DOCS = ROOT / "docs"
 COLUMN = 688  # px: the width at which the site shows a wide picture in a 1280 px window (mkdocs-material's column)
 SHRINK = 0.8  # the least share of its size a picture keeps there: 13 px text stays above 10 px (8 pt)
 
@@ -61,3 +64,42 @@ def test_the_viewer_picture_outlines_the_office_on_its_floor_alone():
     floor = viewer_picture.floor_outline(edges)
     assert floor.shape == (4, 2, 3) and np.all(floor[..., 2] == workspace.lower[2])
     assert np.ptp(edges[..., 2]) > 0  # the whole outline has height: the upright edges are what the picture leaves out
+
+
+def test_the_home_pages_office_is_chapter_05s_and_its_caption_counts_its_samples():
+    """Reader r27e: the home page's first picture, a JupyterLab screenshot close to the robot, showed a dozen marks
+    and no outline, and its caption put 34 diamonds "outside the office", where each mark sits at the platform's
+    centre, inside it. docs/office.png is chapter 05's section 2 still, its overview alone; the caption's counts are
+    the chapter's table, counted again here, and "most of them the platform at its edge" is checked too."""
+    import numpy as np
+
+    from toolkit import scenarios
+    from toolkit.geometry.collision import exact_checker
+    from toolkit.geometry.workspace import Workspace
+    from toolkit.plots.still_panels import overview_step
+
+    width, height = size("office.png")
+    assert COLUMN / width >= 0.7 and width > COLUMN and height < width, "python -m tools.viewer_picture --office"
+    office = scenarios.get(viewer_picture.SCENARIO)
+    workspace = office.make_workspace(np.random.default_rng(viewer_picture.SEED))
+    Q = viewer_picture.office_samples()  # chapter 05's: its N_SAMPLES at full size, from its SEED
+    assert overview_step(len(Q)) == 10  # "one in ten drawn"
+    chapter = (ROOT / "notebooks" / "05_3d_scenes.ipynb").read_text()
+    assert f"N_SAMPLES = sized(full={len(Q)}," in chapter and f"SEED = {viewer_picture.SEED} " in chapter
+    colliding = ~exact_checker(workspace, office.robot).are_valid(Q)
+    empty = Workspace(workspace.lower, workspace.upper, np.zeros((0, 2, 3)), family=workspace.family)
+    outside = colliding & ~exact_checker(empty, office.robot).are_valid(Q)
+    platform = office.robot.link_aabbs(Q)[:, 0]  # (N, 2, 3): the platform's box, the first link
+    off = np.any((platform[:, 0, :2] < workspace.lower[:2]) | (platform[:, 1, :2] > workspace.upper[:2]), axis=1)
+    assert 2 * (outside & off).sum() > outside.sum()  # "most of them the platform at its edge"
+    readme = " ".join((ROOT / "README.md").read_text().split())
+    caption = re.search(r"\*Chapter 05's office \(section 2, full size\): (.*?)\*", readme)
+    assert caption, "the home page's first caption is gone"
+    said = (
+        f"among {len(workspace.boxes)} blocks, and {len(Q)} uniform samples, one in ten drawn, each a mark at its "
+        f"platform's centre. Of the {len(Q)}, {(~colliding).sum()} are valid (circles) and {colliding.sum()} in "
+        f"collision (diamonds): {(colliding & ~outside).sum()} only against furniture, {outside.sum()} with a link "
+        "outside the office, most of them the platform at its edge."
+    )
+    assert said in caption.group(1)
+    assert "](docs/office.png)" in readme and "docs/jupyterlab.png" not in readme

@@ -12,6 +12,12 @@ blocks behind it); the camera is moved sideways (:data:`SHIFT`) so that the scen
 left part, beside the panel, not under it (reader r23b). The workspace's outline keeps its floor's four edges
 (:func:`floor_outline`): an upright edge of the office's far corner, its foot behind the panel, poked out above it as
 a stray stroke (reader r23b).
+
+The home page's first picture, ``docs/office.png``, is chapter 05's office as section 2 draws it (seed 0, 2000 uniform
+samples), the overview of its still alone (:func:`office_still`): the whole office, every kind of mark and a legend
+(reader r27e: the JupyterLab screenshot there showed a dozen marks close to the robot and no outline)::
+
+    python -m tools.viewer_picture --office docs/office.png
 """
 
 from __future__ import annotations
@@ -32,6 +38,35 @@ PANEL_WIDTH = 250  # CSS px (viser's own: 340): the sliders' labels and ends sti
 FOLD = ("Workspace", "Samples")  # folded, as a click on their titles folds them: the panel ends above the window's foot
 SHIFT = np.array([2.8, 0.0, 0.0])  # workspace units the camera moves to the robot's right: the robot left of the panel
 SCENARIO, SEED, SAMPLES = "3do", 0, 300
+OFFICE_SAMPLES = 2000  # chapter 05's N_SAMPLES at full size: its section 2's scene, drawn from the same seed
+OFFICE_DPI = 150  # about 820 px wide: the site's 688 px column shows its 10 pt text at about 17 px
+
+
+def office_samples() -> np.ndarray:
+    """``(OFFICE_SAMPLES, 8)``: chapter 05's uniform configurations of the youBot (its ``office_samples``)."""
+    from toolkit import scenarios
+
+    return scenarios.get(SCENARIO).robot.sample(np.random.default_rng(SEED), OFFICE_SAMPLES)
+
+
+def office_still(png: str) -> str:
+    """Write ``png``: the overview of chapter 05's office still (:meth:`toolkit.viewer.Viewer.still`), its close-ups
+    cropped off, its title, the robot's name and the legend kept."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+    from matplotlib.transforms import Bbox
+
+    with viewer.Viewer(SCENARIO, seed=SEED, port=0) as shown:
+        shown.show_samples(office_samples())
+        fig = shown.still()
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    fig.canvas.draw()
+    overview = next(ax for ax in fig.axes if ax.get_title().startswith("the whole workspace"))
+    parts = [overview.get_tightbbox(renderer) or overview.bbox]
+    parts += [text.get_window_extent(renderer) for text in overview.texts]
+    parts += [legend.get_window_extent(renderer) for legend in fig.legends]  # the robot's name lies outside the layout
+    crop = Bbox.union(parts).transformed(fig.dpi_scale_trans.inverted()).padded(0.1)
+    fig.savefig(png, dpi=OFFICE_DPI, bbox_inches=crop)
+    return png
 
 
 def floor_outline(edges: np.ndarray) -> np.ndarray:
@@ -43,8 +78,12 @@ def floor_outline(edges: np.ndarray) -> np.ndarray:
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description="Photograph the viewer on the 3D office for the docs.")
-    parser.add_argument("png", help="where the picture goes (docs/viewer.png)")
+    parser.add_argument("png", help="where the picture goes (docs/viewer.png, or docs/office.png with --office)")
+    parser.add_argument("--office", action="store_true", help="chapter 05's still of the office instead")
     args = parser.parse_args(argv)
+    if args.office:
+        print(f"wrote {office_still(args.png)}")
+        return 0
     shown = viewer.launch(SCENARIO, seed=SEED, quiet=True)
     try:
         shown.sample("raw", SAMPLES, seed=SEED)
