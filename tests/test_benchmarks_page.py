@@ -416,7 +416,7 @@ def test_the_only_is_qualified_and_the_other_pages_figures_are_reconciled():
     )
     results = " ".join((ROOT / "docs" / "results.md").read_text().split())
     flat = " ".join(PAGE.split())
-    rate = re.search(r"\| `strong --planner paper` \| 5 December \| (\S+)× \|", results)
+    rate = re.search(r"\| `strong --planner paper` \| 5 December[^|]* \| (\S+)× \|", results)  # ", loaded (...)"
     assert rate and f"python-fcl at {rate.group(1)} times the compiled check for its Algorithm 1 run" in flat
     lazy = re.search(r"with our lazy PRM and the compiled checker \(the `strong` section's\), (\S+ s) in 3DO", results)
     assert lazy and f"The Results page's lazy PRM takes {lazy.group(1)} a mean 3DO query" in flat
@@ -434,3 +434,31 @@ def test_rrt_connect_s_lead_over_ompl_is_the_first_table_s_medians():
     lead = [numbers(row[ompl])[0] / numbers(row[ours])[0] for row in first[1:]]
     flat = " ".join(PAGE.split())
     assert f"is {min(lead):.0f}–{max(lead):.3g} times as fast as OMPL's RRTConnect as used from Python" in flat
+
+
+def test_the_crossover_text_describes_only_marks_the_figure_draws():
+    """Review r28f, contradiction 4: the text said the figure hatches "can't tell" and draws a dotted line where two
+    curves cross; in this sweep it does neither, so the text says it would, and that there is none here."""
+    from toolkit.plots.crossover import _close, _crossings
+
+    sweeps = CROSSOVER["variables"].values()
+    hatched = any(_close(sweep).any() for sweep in sweeps)
+    crossed = any(_crossings(sweep, name) for sweep in sweeps for name in ("exact", "fcl"))
+    flat = " ".join(PAGE.split())
+    would = 'it would hatch those it calls "can\'t tell" and draw a dotted line where two curves cross'
+    assert not hatched and not crossed and would in flat and "inside the band decides nothing (none here)" in flat
+    assert "hatches those it calls" not in flat and "a dotted line marks" not in flat
+
+
+def test_the_2d_robot_is_named_one_way():
+    """Review r28f, contradiction 1: "the 2D point robot" in the Key, "a square that does not turn" later; the paper:
+    "The point robot is (0.5x0.5)"."""
+    flat = " ".join(PAGE.split())
+    named = "the 2D point robot, the paper's 0.5 × 0.5 square that does not turn, among blocks"
+    assert named in flat and "In 2DS the 2D point robot is the paper's 0.5 × 0.5 square that does not turn" in flat
+    assert "the robot is a square" not in flat
+
+
+def test_the_small_calls_table_says_what_a_call_of_0_is():
+    """Review r28f: the column "call of 0, µs" was never explained."""
+    assert "The second column is what a call that checks no configuration costs" in " ".join(PAGE.split())
