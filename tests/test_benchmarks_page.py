@@ -509,7 +509,7 @@ def test_the_cells_whose_mean_moved_more_than_sampling_could_move_it_are_named()
     assert beyond == ["3DC-9 OB"]  # 3DO BT fell 17 % where sampling saved 16 %: sampling's doing
     sampled, moved = fcl["3DC-9 OB"]
     assert (
-        f"So did the 3 cells above whose mean fell by 10 % or more with our compiled checker, where the network saved "
+        f"Such are the 3 cells above whose mean fell by 10 % or more with our compiled checker, where the network saved "
         f"at most {100 * most:.1f} % of a query in sampling, and 3DC-9 OB with python-fcl on both sides, "
         f"{100 * moved:.0f} % shorter where it saved {100 * sampled:.0f} %"
     ) in SUMMARY
