@@ -106,7 +106,28 @@ def chapter_01(nb) -> list[str]:
         )
     if min(in_3d) < MANY:
         problems.append(f"01: FCL took {min(in_3d):.1f}x the compiled checker's time: not many times")
-    return problems + _closing_speeds(found, numbers)
+    return problems + _closing_speeds(found, numbers) + _arm_against_base(found)
+
+
+FEWER = 5  # "far fewer": re-drawing the youBot's arm changes at most a fifth as many verdicts as its base (review r28a)
+
+
+def _arm_against_base(found) -> list[str]:
+    """Section 4's table of verdicts changed by re-drawing the youBot's arm joints or its base (review r28a: the
+    prose's "the arm joints decide the verdict in few configurations", once inferred from one slice): the arm's
+    share at most 1/:data:`FEWER` of the base's (seeds 0-2, quick and full size, printed 1.6-1.9% and 41-42%)."""
+    changed = {
+        row[0].split(" ")[0]: row[1]
+        for header, rows in found
+        if header == ["DoF re-drawn", "verdicts changed"]
+        for row in rows
+    }
+    if not changed:
+        return []
+    arm, base = (float(changed.get(k, "nan").rstrip("%")) for k in ("arm", "base"))
+    if not arm * FEWER <= base:
+        return [f"01: re-drawing the arm changed {arm}% of verdicts, the base {base}%: not far fewer"]
+    return []
 
 
 def _closing_speeds(found, numbers: dict[str, tuple[float, float, float | None]]) -> list[str]:

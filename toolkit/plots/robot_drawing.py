@@ -94,6 +94,8 @@ def draw_robot(
     centers, rotations, half = robot.link_boxes(Q)  # (k, L, D), (k, L, D, D), (L, D)
     aabbs = robot.link_aabbs(Q)  # (k, L, 2, D)
     lo, hi = aabbs[:, :, 0].min(axis=(0, 1)) - margin, aabbs[:, :, 1].max(axis=(0, 1)) + margin  # (D,) window
+    if robot.dim == 3:  # every region's floor is z = 0: no window reaches below it unless a link does (review r28a)
+        lo[2] = max(lo[2], min(0.0, aabbs[:, :, 0, 2].min()))
     if workspace is not None:
         lo, hi = np.maximum(lo, workspace.lower), np.minimum(hi, workspace.upper)
         blocks = workspace.boxes[_nearby_blocks(workspace, lo, hi)]
