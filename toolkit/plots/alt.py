@@ -141,6 +141,7 @@ def map_part(
     ``y``: each axis's name and range."""
     edges = [np.linspace(0, n, min(blocks, n) + 1).round().astype(int) for n in shape]  # cell edges per axis
     spans = [lo + (hi - lo) * e / n for e, n, (_, lo, hi) in zip(edges, shape, (x, y))]  # the same edges in units
+    spans = [np.round(span, 12) + 0.0 for span in spans]  # r28a: -pi + pi/2 * 2 read '-4.44e-16', not 0
     columns = [f"rows: {y[0]}, top first; columns: {x[0]}"]
     columns += [f"{x[0]} {a:.3g} to {b:.3g}" for a, b in zip(spans[0][:-1], spans[0][1:])]
     rows = []
