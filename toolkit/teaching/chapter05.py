@@ -367,8 +367,8 @@ def valid_shares(samples: int, seed: int) -> str:
 
 def office_collisions(samples: np.ndarray, seed: int) -> str:
     """§2's table: of the 3DO configurations ``samples (N, 8)`` in the office of ``seed``, how many collide, and of
-    those how many poke out of the office (an office without furniture finds them too) and how many collide only
-    with furniture, inside it."""
+    those how many poke out of the office (an office without furniture finds them too) and how many are in collision
+    with furniture only, inside the office (reader r28e's header)."""
     from toolkit import scenarios
     from toolkit.geometry.collision import exact_checker
     from toolkit.geometry.workspace import Workspace
@@ -379,7 +379,8 @@ def office_collisions(samples: np.ndarray, seed: int) -> str:
     empty = Workspace(workspace.lower, workspace.upper, np.zeros((0, 2, 3)), family="3do")  # no furniture
     outside = ~exact_checker(empty, office.robot).are_valid(samples)  # (N,) out of the office
     return (
-        "| uniform samples | in collision | of those: poking out of the office | only with furniture, inside it |\n"
+        "| uniform samples | in collision | of those: poking out of the office "
+        "| in collision with furniture only (inside the office) |\n"
         "| ---: | ---: | ---: | ---: |\n"
         f"| {len(samples)} | {colliding.sum()} | {(colliding & outside).sum()} | {(colliding & ~outside).sum()} |"
     )
