@@ -1131,7 +1131,8 @@ def chapter_05(
     )
     nb = executed(
         "MD:" + (chapter05.answer() if answer is None else answer),
-        "MD:| uniform samples | in collision | of those: poking out of the office | only with furniture, inside it |\n"
+        "MD:| uniform samples | in collision | of those: poking out of the office "
+        "| in collision with furniture only (inside the office) |\n"
         "| ---: | ---: | ---: | ---: |\n" + office,
         "MD:| samples | count | share |\n| --- | ---: | ---: |\n| circle | 1392 | 69.6% |\n\n"
         'accuracy **94.5%**, TPR 93.5%, TNR 97.5% (threshold 0.57); answering "valid" to all 2000 of these: 74.5%',

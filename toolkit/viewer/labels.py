@@ -294,9 +294,11 @@ STILL = """<style>#toolkit-play:focus-visible { outline: 2px solid %(ink)s; outl
 """
 NO_WEBGL = "This browser draws no 3D (no WebGL): the scene as a still picture."
 NO_WEBGL_ABOVE = "3D view: this browser draws no 3D (no WebGL); the still picture above shows this scene."
-ABOVE = "3D view of the still picture above: it draws here once it has been on screen a moment."
+ABOVE = "3D view of the still picture above: in a browser with WebGL it draws here once it has been on screen a moment."
 PICTURE = '<img src="data:image/png;base64,%(png)s" alt="%(alt)s" style="width:100%%;max-width:640px;height:auto">'
-DRAWING = "A still picture of the scene: the 3D view replaces it once it has been on screen a moment."
+DRAWING = (
+    "A still picture of the scene: in a browser with WebGL the 3D view replaces it once it has been on screen a moment."
+)
 ON_SCREEN_MS = 1500  # milliseconds a snapshot's view is on screen before it replaces its still (it draws by then)
 PLAY = (
     ' <button id="toolkit-play" type="button" style="font:inherit;font-weight:bold;margin-left:8px;padding:2px 10px;'
