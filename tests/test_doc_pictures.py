@@ -51,6 +51,18 @@ def test_the_viewer_picture_leaves_most_of_the_scene_clear_of_its_panel():
     assert set(viewer_picture.FOLD) == {"Workspace", "Samples"}
 
 
+def test_the_home_pages_viewer_caption_says_which_folders_start_folded_and_which_the_picture_folds():
+    """Reader r28e: the caption called four folders folded where chapter 05 says two; both were true of different
+    things. The panel's folded folders (toolkit/viewer/panel.py) and the picture's (:data:`FOLD`) are named apart."""
+    panel = (ROOT / "toolkit" / "viewer" / "panel.py").read_text()
+    folded = re.findall(r'add_folder\("([^"]+)", expand_by_default=False\)', panel)
+    assert folded == ["Layers", "The scene in words"]
+    readme = " ".join((ROOT / "README.md").read_text().split())
+    assert (
+        f"{' and '.join(folded)} start folded; for this picture {' and '.join(viewer_picture.FOLD)} are folded too"
+    ) in readme
+
+
 def test_the_viewer_picture_outlines_the_office_on_its_floor_alone():
     """Reader r23b: a stray stroke poked out above the panel, an upright edge of the office's outline (6 units tall)
     whose foot the panel hides. The picture keeps the outline's four floor edges."""
@@ -99,7 +111,7 @@ def test_the_home_pages_office_is_chapter_05s_and_its_caption_counts_its_samples
         f"among {len(workspace.boxes)} blocks, and {len(Q)} uniform samples, one in ten drawn, each a mark at its "
         f"platform's centre. Of the {len(Q)}, {(~colliding).sum()} are valid (circles) and {colliding.sum()} in "
         f"collision (diamonds): {(colliding & ~outside).sum()} only against furniture, {outside.sum()} with a link "
-        "outside the office, most of them the platform at its edge."
-    )
+        "outside the office, most of them the platform at its edge; the picture draws both kinds alike."
+    )  # reader r28e: both are diamonds, so the caption says the split is not drawn
     assert said in caption.group(1)
     assert "](docs/office.png)" in readme and "docs/jupyterlab.png" not in readme
