@@ -260,7 +260,9 @@ def chapter_03(nb) -> list[str]:
         for _, rs in tables(nb)
         for row in rs
         if len(row) == 5 and row[2].endswith("%") and " / " in row[3]
-        for who, (tpr, tnr, balanced) in [(row[0], [int(v) for v in re.findall(r"(\d+)%", " ".join(row[3:]))])]
+        for who, (tpr, tnr, balanced) in [
+            (row[0], [float(v) for v in re.findall(r"(\d+(?:\.\d+)?)%", " ".join(row[3:]))])
+        ]
         if abs(balanced - (tpr + tnr) / 2) > 1
     ]
     for kind in ("balanced", "validity-blind"):

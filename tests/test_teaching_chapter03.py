@@ -35,6 +35,11 @@ def test_the_closing_table_names_this_pages_models_and_the_recorded_runs_apart()
         '`paper` preset, 2DS unseen, recorded run (chapter 04\'s; "always valid" 85%)',
     ]
     assert "| its 4 cells | 75% | 100% / 50% | 75% |" in table
+    assert "| unclear (§IV-A) | 88% | 90% / 85% | 87.5% |" in table  # the paper's, as the opening table prints it
+
+
+def test_the_mistakes_table_prints_a_share_below_1_percent_with_a_decimal():
+    assert [chapter03.share(f) for f in (0, 0.0004, 0.0039, 0.01, 0.64)] == ["0%", "under 0.1%", "0.4%", "1%", "64%"]
 
 
 def test_a_slice_verdict_counts_its_mistakes_by_where_they_lie():
