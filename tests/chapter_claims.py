@@ -175,6 +175,10 @@ def chapter_02(nb) -> list[str]:
         problems.append("02: section 5's ranges of the seen and unseen grids are not printed")
     elif "memorized. Near perfect" in found and seen.group(1) != seen.group(2):  # "sit ... above the diagonal"
         problems.append(f"02: a memorized CAE's seen grids are not all above the diagonal: {seen.group(0)}")
+    # review r28b: sections 7 and 8 compare the two latent maps by the size of their printed PC 1 correlations
+    corr = re.findall(r"correlation of PC 1 with the share of occupied cells: ([+-][\d.]+)", found)
+    if len(corr) == 2 and abs(float(corr[0])) >= abs(float(corr[1])):  # both printed: the first the weaker
+        problems.append(f"02: the 30-grid CAE's PC 1 correlation is not the smaller of the two in size: {corr}")
     return problems + _chapter_02_unseen(nb, found) + _chapter_02_gaps(nb, found)
 
 

@@ -36,7 +36,8 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
     for k, (ax, (name, (all_free, accuracy))) in enumerate(zip(axes, groups.items())):
         style = series_style(k)
         all_free, accuracy = np.asarray(all_free, dtype=float), np.asarray(accuracy, dtype=float)  # (W,) each
-        ax.plot([low, 1], [low, 1], color=COLORS["reference"], linestyle="--")
+        # review r28b: the diagonal over the points (a dense cloud hid it), under the mean
+        ax.plot([low, 1], [low, 1], color=COLORS["reference"], linestyle="--", zorder=4)
         ax.scatter(
             all_free, accuracy, s=22, marker=style["marker"], c=style["color"], alpha=0.5, lw=0, gid=name
         )  # r19b
@@ -52,10 +53,14 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
             path_effects=halo(1.2, ("ink",)),
             gid=f"{name}: mean",
         )
-        ax.set_title("\n".join(textwrap.wrap(name, 40)) + f"\nmean {mean[1]:.1%} vs {mean[0]:.1%}", fontsize=9)
+        above = int(np.sum(accuracy > all_free))
+        ax.set_title(  # review r28b: the count the text reads, in the title, not only in "Figure described"
+            "\n".join(textwrap.wrap(name, 40))
+            + f"\nmean {mean[1]:.1%} vs {mean[0]:.1%}; {above} of {len(accuracy)} above",
+            fontsize=9,
+        )
         ax.set_xlabel("share of free cells")
         ax.tick_params(labelsize=8)
-        above = int(np.sum(accuracy > all_free))
         said.append(
             f"{name}: {len(accuracy)} workspaces, mean accuracy {mean[1]:.1%} against {mean[0]:.1%} for all free, "
             f"{above} of them above the diagonal"
