@@ -448,7 +448,8 @@ def not_from_sampling(tables: Tables) -> str:
 
     def said(cell: Apart) -> str:
         verb = "saved" if cell.total >= 0 else "lost"
-        return f"{cell.name} {verb} {percent(abs(cell.total))} % of a mean query, its sampling saving {percent(cell.sampling)} %"
+        share = percent(abs(cell.total))
+        return f"{cell.name} {verb} {share} % of a mean query, its sampling saving {percent(cell.sampling)} %"
 
     return (
         f" By means, python-fcl's whole query moved 10 points or more further than its sampling saving could move it "
