@@ -248,12 +248,56 @@ def lazy_prm(tables: Tables) -> str:
         f"{sum(strong_means)}{' (“Means and medians” below shows one)' if strong_means[0] else ''}. "
         "Counting the `paper` network's cells too, whose planner with prediction is Algorithm 1 (so planner and "
         f"prediction both change), {answer(both, sum(cells.values()))}: {both or 'none'} of "
-        f"{sum(cells.values())}{whose}. These counts read the medians tables (the median time with prediction over "
+        f"{sum(cells.values())}{whose}{beyond_floor(groups, tables)}. These counts read the medians tables (the median "
+        "time with prediction over "
         "the median without) of the sections “Preset `strong`” and “Preset `paper`”; the section “Preset `paper` "
         "on 1–2 December”, with python-fcl, is history, measured against Algorithm 1, and not counted. "
         f"The `strong` network took {told(groups['strong'])}. The `paper` network, with Algorithm 1 against the "
-        f"lazy PRM (planner and prediction both change), took {told(groups['paper'])}."
+        f"lazy PRM (planner and prediction both change), took {told(groups['paper'])}.{inside_floor(groups, tables)}"
     )
+
+
+def medians_floor(tables: Tables) -> tuple[float, float] | None:
+    """How far timing alone moved a ratio of the two medians (:func:`noise`); ``None`` where ``tables`` hold no run
+    timed twice."""
+    try:
+        return noise(tables).medians
+    except (KeyError, StopIteration):
+        return None
+
+
+def beyond_floor(groups: dict[str, dict[str, list[tuple[str, float]]]], tables: Tables) -> str:
+    """Review r28f, contradiction 1: the lazy-PRM savings counted again, only those beyond the noise floor of a ratio of
+    the two medians (:func:`medians_floor`), so a saving timing alone could give is not counted as evidence."""
+    floor = medians_floor(tables)
+    if floor is None:
+        return ""
+    cells = sum(len(cells) for g in groups.values() for cells in g.values())
+    beyond = [(name, r) for g in groups.values() for name, r in g["less time"] if r < floor[0]]
+    named = f" ({', '.join(f'{name} {r:.2f}' for name, r in beyond)})" if beyond else ""
+    return (
+        f"; beyond the noise floor of a ratio of the two medians (timing alone moved one to {floor[0]:.2f}–"
+        f"{floor[1]:.2f}: the table “timed twice” of the section on `strong --planner paper`), {len(beyond) or 'none'} "
+        f"of {cells}{named}"
+    )
+
+
+def inside_floor(groups: dict[str, dict[str, list[tuple[str, float]]]], tables: Tables) -> str:
+    """The lazy-PRM cells read as savings or costs whose ratio of the two medians lies inside timing's own reach
+    (:func:`medians_floor`): no evidence either way (review r28f, contradiction 1)."""
+    floor = medians_floor(tables)
+    if floor is None:
+        return ""
+    inside = [
+        f"{name} {r:.2f}"
+        for g in groups.values()
+        for word in ("less time", "more time")
+        for name, r in g[word]
+        if floor[0] <= r <= floor[1]
+    ]
+    if not inside:
+        return ""
+    return f" Inside that noise floor, and so no evidence either way: {', '.join(inside)}."
 
 
 def algorithm_1(tables: Tables) -> str:
@@ -368,7 +412,50 @@ def why_no_saving(tables: Tables) -> str:
         "slower than today's compiled checker ([Benchmarks](benchmarks.md)), so there the network is the cheaper "
         "check and sampling shrank (In short); yet the sampling time it saved came to "
         f"{span(saved, lambda f: f'{f * 100:.2g}')} % of a mean query's time, 10 % or more in {big} of {len(saved)} "
-        "cells. The paper names no checker."
+        f"cells.{not_from_sampling(tables)} The paper names no checker."
+    )
+
+
+class Apart(NamedTuple):
+    """A cell of the run with python-fcl on both sides whose whole query, by means, moved further than the sampling
+    time prediction saved there could move it (review r28f, contradiction 2)."""
+
+    name: str  # "3DC-9 OB"
+    total: float  # Table 3's total improvement (negative: a loss)
+    sampling: float  # the sampling time saved, as a share of a mean query without prediction
+
+
+def apart(tables: Tables) -> list[Apart]:
+    """The cells of the run with python-fcl on both sides whose total improvement by means lies 10 points or more from
+    the sampling time saved as a share of the query (:func:`stage_shares`): the rest of the query, which prediction
+    does not shorten, moved them."""
+    _, saved = stage_shares(tables, checker_scope.SLOW)
+    times = next(t for heading, t in tables[checker_scope.SLOW].items() if "Times behind Table 3" in heading)
+    cells = [(row[0], row[1]) for row in times["rows"]]  # scenario, sampler, in the order of ``saved``
+    found = []
+    for (scenario, sampler), share in zip(cells, saved):
+        total = recorded.improvements(checker_scope.SLOW, scenario, recorded=tables)[sampler]
+        if round(abs(total - share) * 100) >= round(findings.TIE * 100):
+            found.append(Apart(f"{NAMES.get(scenario, scenario)} {sampler}", total, share))
+    return found
+
+
+def not_from_sampling(tables: Tables) -> str:
+    """One sentence on :func:`apart`'s cells, each with its two shares; empty where there are none."""
+    cells, floor = apart(tables), noise(tables).means
+    if not cells:
+        return ""
+
+    def said(cell: Apart) -> str:
+        verb = "saved" if cell.total >= 0 else "lost"
+        share = percent(abs(cell.total))
+        return f"{cell.name} {verb} {share} % of a mean query, its sampling saving {percent(cell.sampling)} %"
+
+    return (
+        f" By means, python-fcl's whole query moved 10 points or more further than its sampling saving could move it "
+        f"in {len(cells)} of {len(stage_shares(tables, checker_scope.SLOW)[1])} cells ({'; '.join(map(said, cells))}): "
+        "the rest of the query, which prediction does not shorten, moved those totals, not the sampling it saved "
+        f"(timing alone moved a ratio of means to {floor[0]:.2f}–{floor[1]:.2f})."
     )
 
 
@@ -397,30 +484,63 @@ def short(tables: Tables) -> str:
     )
     _, _, better = _cae_unseen(tables)
     cae_said = (
-        "no better than answering “all free”"
+        "no better than answering “all free” on unseen workspaces"
         if round(better * 100) <= 0
-        else f"at most {percent(better)} points better than answering “all free”"
+        else f"at most {percent(better)} points better than answering “all free” on unseen workspaces"
+    )
+    fast_edge, slow_edge = (
+        edges(own_intervals(tables, key), tables) for key in (recorded.ALGORITHM_1, checker_scope.SLOW)
     )
     lead = (
         "**In short: does an accurate network inside the paper's Algorithm 1 save planning time? "
         f"{ANSWERS[findings.claim_verdict(ratios)]}, against our fast compiled checker.** By the median of each "
         f"query's own ratio (Figure 1) the `strong` network's whole query saved time in {own[0]} of {sum(own)} "
-        f"cells, tied in {own[1]} and cost time in {own[2]}."
+        f"cells{robust(own[0], fast_edge[0], 'savings')}, tied in {own[1]} and cost time in "
+        f"{own[2]}{robust(own[2], fast_edge[1], 'costs')}."
     )
     items = [
         f"**With python-fcl, a slow exact checker, on both sides**, the same network {stage} (the paper: "
         f"{span(list(facts.papers_sampling))} %), and its whole query saved time in {slow[findings.SAVES]} of "
-        f"{len(facts.own)} cells by the median query ({slow[findings.TIES]} tied, {slow[findings.COSTS]} cost time). "
-        f"By Table 3's means: {slow_means[0]} saved / {slow_means[1]} tied / {slow_means[2]} lost, where the paper's "
-        f"Table 3 saves in {whole.papers} of {len(facts.papers_totals)}.",
+        f"{len(facts.own)} cells by the median query{robust(slow[findings.SAVES], slow_edge[0], 'savings')}, "
+        f"tied in {slow[findings.TIES]} and cost time in {slow[findings.COSTS]}"
+        f"{robust(slow[findings.COSTS], slow_edge[1], 'costs')}. By Table 3's means: {slow_means[0]} saved / "
+        f"{slow_means[1]} tied / {slow_means[2]} lost, where the paper's Table 3 saves in {whole.papers} of "
+        f"{len(facts.papers_totals)}{more_than_sampling(tables)}.",
         f"**By Table 3's means**, the paper's statistic, the compiled checker's run gives {means[0]} saved / "
         f"{means[1]} tied / {means[2]} lost; timing alone moves a mean further than the tie band (the noise floor "
         "under Figure 1), so the verdict reads the medians.",
-        f"**The paper's own network** tests nothing: its CAE is {cae_said} and its MLP is at chance on balanced "
-        "unseen samples (the findings under Figure 1 give the figures).",
+        f"**The paper's own network** cannot test the claim: its CAE is {cae_said} and its MLP is at chance on "
+        "balanced unseen samples (the findings under Figure 1 give the figures).",
         f"**So** {whole.verdict}.",
     ]
     return lead + "\n\n" + "\n".join(f"- {item}" for item in items)
+
+
+def edges(medians: dict[str, dict[str, tuple[float, float, float]]], tables: Tables) -> tuple[int, int]:
+    """How many of the savings and of the costs among ``medians`` lie at the noise edge (:func:`at_noise_edge`)."""
+    cells = [float(cell.split()[-1]) for cell in at_noise_edge(medians, tables)]
+    return sum(r < 1 for r in cells), sum(r > 1 for r in cells)
+
+
+def robust(count: int, edge: int, what: str) -> str:
+    """Review r28f, contradiction 3: ``" (5 clear costs, 4 at the noise edge)"``, the cells of a count that lie at the
+    noise edge (:func:`edges`) told apart from those clear of it; empty for none."""
+    if not count:
+        return ""
+    return f" ({count - edge} clear {what}, {edge} at the noise edge)" if edge else " (all clear of the noise edge)"
+
+
+def more_than_sampling(tables: Tables) -> str:
+    """Review r28f, contradiction 2: of the run with python-fcl, the savings by means larger than the sampling time it
+    saved could give (:func:`apart`), named with both shares; empty for none."""
+    cells = [c for c in apart(tables) if change(1 - c.total) == "less time" and c.total > c.sampling]
+    if not cells:
+        return ""
+    named = "; ".join(f"{c.name}, {percent(c.total)} % against {percent(c.sampling)} %" for c in cells)
+    return (
+        f"; {len(cells)} of those savings is more than the sampling time prediction saved there could give ({named}; "
+        "the findings under Figure 1 say why)"
+    )
 
 
 def summary(tables: Tables) -> str:

@@ -35,13 +35,14 @@ BELOW_1 = (0.7, 0.9)  # labelled on :func:`own_ratios`' axis, where savings lie,
 NEAR_1 = 1.25  # :func:`means_grid`'s extra ticks this close to 1 are labelled on the right, away from the "1"
 Cells = Mapping[str, Mapping[str, tuple[float, float, float]]]  # {scenario: {sampler: (median, q1, q3)}}
 MEANS_STYLES = (  # :func:`means_grid`'s series in turn: colour, marker, hollow; no verdict look of own_ratios
-    (LINE_COLORS[5], "X", False),  # grey crosses: the paper's own numbers
+    (LINE_COLORS[5], "o", True),  # grey, hollow circles: the paper's own numbers (r28f: its cross read as the pluses)
     (LINE_COLORS[3], "D", False),  # bluish green diamonds: a network with our compiled checker
     (LINE_COLORS[0], "v", True),  # blue, hollow triangles: the same network with python-fcl
     (LINE_COLORS[4], "P", False),  # reddish purple pluses: another network with our compiled checker
     (LINE_COLORS[1], "h", True),  # vermillion, hollow hexagons: that network with python-fcl
 )
 """Each series a hue of its own, its marker a second cue (review r25c: two pinks and two greens alike at 1280 px)."""
+MEANS_SIZE = 5.5  # points (r28f asked 1.5 times 5; no two markers of a panel may touch at the page width)
 MEANS_SPREAD = 0.95  # of the space between two samplers, what a sampler's points spread over
 
 
@@ -244,7 +245,7 @@ def means_grid(
     if ticks:
         shown = sorted({round(t, 6) for t in (*axes[0].get_yticks(), *ticks) if low <= t <= high and t not in beside})
         axes[0].set_yticks(shown, [f"{t:g}" for t in shown])
-    for ax in grid[:, -1] if beside else ():  # review r25c: 0.9, 1 and 1.1 crammed into 20 px on the left
+    for ax in axes[: len(panels)] if beside else ():  # r25c: 0.9, 1 and 1.1 crammed on the left; r28f: every panel
         edges = ax.secondary_yaxis("right")
         edges.set_yticks(beside, [f"{t:g}" for t in beside])
         edges.yaxis.set_minor_locator(NullLocator())
@@ -265,7 +266,7 @@ def _means_panel(ax, title: str, series: Mapping[str, Mapping[str, float]], name
             [ratios[s] for s in samplers],
             linestyle="none",
             marker=marker,
-            markersize=5,
+            markersize=MEANS_SIZE,
             label=name,
             zorder=3,
             **_fill(colour, hollow),
