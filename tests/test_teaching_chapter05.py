@@ -4,7 +4,7 @@ import re
 
 import numpy as np
 
-from toolkit.teaching import chapter05, findings, recorded
+from toolkit.teaching import chapter05, chapter05_runs, findings, recorded
 
 
 def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
@@ -80,7 +80,7 @@ def test_the_accuracy_table_gives_the_paper_recipes_balanced_score_from_the_reco
 
 
 def test_valid_shares_gives_each_3d_scenario_a_row():
-    table = chapter05.valid_shares(20, 0)
+    table = chapter05_runs.valid_shares(20, 0)
     rows = [line for line in table.splitlines() if line.startswith("| 3d")]
     assert [r.split(" | ")[0] for r in rows] == ["| 3do", "| 3dc7", "| 3dc9"]
     assert all(r.endswith("% |") for r in rows) and "| 3dc9 | box chain | 4 / 9 |" in table
@@ -90,7 +90,7 @@ def test_office_collisions_splits_the_collisions_into_the_two_kinds():
     from toolkit import scenarios
 
     samples = scenarios.get("3do").robot.sample(np.random.default_rng(0), 200)
-    row = chapter05.office_collisions(samples, 0).splitlines()[-1]
+    row = chapter05_runs.office_collisions(samples, 0).splitlines()[-1]
     total, colliding, out, inside = (int(v) for v in row.strip("| ").split(" | "))
     assert total == 200 and colliding == out + inside and out > 0 and inside > 0
 
@@ -115,8 +115,8 @@ def test_screening_counts_the_points_the_lazy_prm_asked_the_model_about_on_the_p
             return Q[:, 0] >= self.cut
 
     result = SimpleNamespace(path=path)
-    rows = [line.split("|")[1:-1] for line in chapter05.screening(result, Model(-np.inf)).splitlines()[2:]]
+    rows = [line.split("|")[1:-1] for line in chapter05_runs.screening(result, Model(-np.inf)).splitlines()[2:]]
     edges, points, called, most, drops = (cell.strip() for cell in rows[0])
     assert (edges, called, most, drops) == ("2", "0", "0%", "90%") and int(points) > 0
-    rows = [line.split("|")[1:-1] for line in chapter05.screening(result, Model(np.inf)).splitlines()[2:]]
+    rows = [line.split("|")[1:-1] for line in chapter05_runs.screening(result, Model(np.inf)).splitlines()[2:]]
     assert [cell.strip() for cell in rows[0]] == ["2", points, points, "100%", "90%"]  # every point called colliding

@@ -92,15 +92,7 @@ def draw_robot(
     if len(colors) != len(Q):
         raise ValueError(f"{len(colors)} colours for {len(Q)} configurations: give one colour a configuration")
     centers, rotations, half = robot.link_boxes(Q)  # (k, L, D), (k, L, D, D), (L, D)
-    aabbs = robot.link_aabbs(Q)  # (k, L, 2, D)
-    lo, hi = aabbs[:, :, 0].min(axis=(0, 1)) - margin, aabbs[:, :, 1].max(axis=(0, 1)) + margin  # (D,) window
-    if robot.dim == 3:  # every region's floor is z = 0: no window reaches below it unless a link does (review r28a)
-        lo[2] = max(lo[2], min(0.0, aabbs[:, :, 0, 2].min()))
-    if workspace is not None:
-        lo, hi = np.maximum(lo, workspace.lower), np.minimum(hi, workspace.upper)
-        blocks = workspace.boxes[_nearby_blocks(workspace, lo, hi)]
-    else:
-        blocks = np.zeros((0, 2, robot.dim))
+    lo, hi, blocks = _window(robot.link_aabbs(Q), workspace, margin)  # (D,), (D,), (K, 2, D)
     hatches = hatches if hatches is not None else [None] * len(Q)
     link_boxes = [
         (box_corners(c, r, h), color, hatch)
@@ -128,6 +120,18 @@ def draw_robot(
     ax.set_aspect("equal")
     ax.set_xlabel(POSITION_NAMES[axes[0]])
     ax.set_ylabel(POSITION_NAMES[axes[1]])
+
+
+def _window(aabbs: np.ndarray, workspace: Workspace | None, margin: float):
+    """The window round the links' bounds ``aabbs (k, L, 2, D)``, ``margin`` beyond them, inside the workspace, and
+    the workspace's blocks in it: ``lo (D,)``, ``hi (D,)``, ``blocks (K, 2, D)``."""
+    lo, hi = aabbs[:, :, 0].min(axis=(0, 1)) - margin, aabbs[:, :, 1].max(axis=(0, 1)) + margin  # (D,) window
+    if aabbs.shape[-1] == 3:  # every region's floor is z = 0: no window reaches below it unless a link does (r28a)
+        lo[2] = max(lo[2], min(0.0, aabbs[:, :, 0, 2].min()))
+    if workspace is None:
+        return lo, hi, np.zeros((0, 2, aabbs.shape[-1]))
+    lo, hi = np.maximum(lo, workspace.lower), np.minimum(hi, workspace.upper)
+    return lo, hi, workspace.boxes[_nearby_blocks(workspace, lo, hi)]
 
 
 def link_colors(n: int, valid: np.ndarray | None) -> list[str]:

@@ -1,0 +1,97 @@
+"""What chapter 05 (3D scenes) prints about its own runs: §1's valid shares, §2's office collisions, §6's counts of a
+planned query and §7's view of the lazy PRM's edge screening, each a Markdown table built from the arrays a cell
+has just computed (the record's tables are :mod:`toolkit.teaching.chapter05`'s).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from toolkit.teaching.chapter05 import SCENARIO
+
+
+def plan_tables(result) -> str:
+    """§6's counts of a planned query (a ``PlanResult``): the path and the roadmap, then who answered how often."""
+    stats = result.stats
+    exactly = stats["exact_checks"] + stats["exact_clearances"]  # point checks and clearance bounds
+    return (
+        "| path found | configurations on the path | rounds | samples drawn | roadmap: nodes / edges |\n"
+        "| --- | ---: | ---: | ---: | ---: |\n"
+        f"| {'yes' if result.success else 'no'} | {len(result.path)} | {stats['rounds']} | {stats['node_checks']} "
+        f"| {stats['nodes']} / {stats['edges']} |\n\n"
+        "| model's answers | exact: checks + bounds | model / exact | repairs | removed: nodes / edges |\n"
+        "| ---: | ---: | ---: | ---: | ---: |\n"
+        f"| {stats['predicted_checks']} | {stats['exact_checks']} + {stats['exact_clearances']} "
+        f"| {stats['predicted_checks'] / max(exactly, 1):.0f}x | {stats['repairs']} "
+        f"| {stats['removed_nodes']} / {stats['removed_edges']} |"
+    )
+
+
+ROBOTS = {"3do": "youBot-like", "3dc7": "box chain", "3dc9": "box chain"}  # §1's robots, in two words
+
+
+def valid_shares(samples: int, seed: int) -> str:
+    """§1's table: in each 3D scenario's workspace of ``seed``, the share of ``samples`` uniform configurations
+    (drawn from ``seed`` too) that the exact checker finds valid, with the robot's links and DoFs and the blocks."""
+    from toolkit import scenarios
+    from toolkit.geometry.collision import exact_checker
+
+    rows = []
+    for name, robot_words in ROBOTS.items():
+        scenario = scenarios.get(name)
+        workspace = scenario.make_workspace(np.random.default_rng(seed))
+        Q = scenario.robot.sample(np.random.default_rng(seed), samples)  # (N, dof) uniform
+        share = exact_checker(workspace, scenario.robot).are_valid(Q).mean()
+        robot = scenario.robot
+        rows.append(
+            f"| {name} | {robot_words} | {robot.n_links} / {robot.dof} | {len(workspace.boxes)} | {share:.0%} |"
+        )
+    return (
+        f"The share of {samples} uniform samples that is valid, in the workspace of seed {seed}:\n\n"
+        "| scenario | robot | links / DoF | blocks | valid share |\n"
+        "| --- | --- | ---: | ---: | ---: |\n" + "\n".join(rows)
+    )
+
+
+def office_collisions(samples: np.ndarray, seed: int) -> str:
+    """§2's table: of the 3DO configurations ``samples (N, 8)`` in the office of ``seed``, how many collide, and of
+    those how many poke out of the office (an office without furniture finds them too) and how many are in collision
+    with furniture only, inside the office (reader r28e's header)."""
+    from toolkit import scenarios
+    from toolkit.geometry.collision import exact_checker
+    from toolkit.geometry.workspace import Workspace
+
+    office = scenarios.get("3do")
+    workspace = office.make_workspace(np.random.default_rng(seed))  # the workspace the view draws
+    colliding = ~exact_checker(workspace, office.robot).are_valid(samples)  # (N,)
+    empty = Workspace(workspace.lower, workspace.upper, np.zeros((0, 2, 3)), family="3do")  # no furniture
+    outside = ~exact_checker(empty, office.robot).are_valid(samples)  # (N,) out of the office
+    return (
+        "| uniform samples | in collision | of those: poking out of the office "
+        "| in collision with furniture only (inside the office) |\n"
+        "| ---: | ---: | ---: | ---: |\n"
+        f"| {len(samples)} | {colliding.sum()} | {(colliding & outside).sum()} | {(colliding & ~outside).sum()} |"
+    )
+
+
+def screening(result, model) -> str:
+    """§7's reading of a kept edge: how the lazy PRM's learned edge screening saw the edges of ``result``'s path (a
+    ``PlanResult``): the points it asked ``model`` about, how many the model called colliding, and the most on one
+    edge, against the share above which screening drops an edge (``LazyParams.screen_reject``)."""
+    from toolkit import scenarios
+    from toolkit.experiments.problems import make_planner, scenario_resolution
+    from toolkit.planning.local_planner import invalid_fractions, step_counts
+
+    scenario = scenarios.get(SCENARIO)
+    params = make_planner(scenario).params  # the planner clutter.plan ran: the default, with the scenario's |S|
+    spacing = scenario_resolution(scenario) * params.screen_spacing
+    Q0, Q1 = result.path[:-1], result.path[1:]  # (E, dof) each: the path's edges, roadmap edges
+    fraction, _ = invalid_fractions(model, Q0, Q1, spacing)  # (E,) share of each edge's screened points
+    points = np.maximum(step_counts(model.robot, Q0, Q1, spacing) - 1, 0)  # (E,) screened points per edge
+    called = np.rint(fraction * points).astype(int)  # (E,) of those, called colliding by the model
+    return (
+        "| path edges | points screening asked the model about | called colliding | most on one edge "
+        "| screening drops an edge above |\n| ---: | ---: | ---: | ---: | ---: |\n"
+        f"| {len(Q0)} | {points.sum()} | {called.sum()} | {fraction.max(initial=0.0):.0%} "
+        f"| {params.screen_reject:.0%} |"
+    )
