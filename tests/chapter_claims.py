@@ -486,7 +486,7 @@ DEAR_SAID = (  # section 6's written reading of the cells where prediction cost 
 
 
 def _dear_cells(nb, cells: list[costs.Cost] | None = None) -> list[str]:
-    """Section 6 shows :func:`toolkit.teaching.costs.cost_table` (the recorded cells where prediction cost a quarter
+    """Section 6 shows :func:`toolkit.teaching.costs.cost_table` (the recorded cells where prediction cost 25 %
     or more), and its prose says both parts of their mean time grew with prediction only where every such cell's did."""
     cells = costs.dear_cells() if cells is None else cells
     problems = (

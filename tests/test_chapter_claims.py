@@ -401,7 +401,7 @@ def test_chapter_04_fails_without_its_tables_or_with_pre_wrapped_lines():
 
 def test_chapter_04_says_where_the_recorded_costs_went_only_as_the_record_has_it():
     """Review r25a: the recorded costs of 1.5-1.75x were never explained. Section 6 says both the sampling stage and
-    the time after it grew with prediction in every cell where it cost a quarter or more; a record where the time
+    the time after it grew with prediction in every cell where it cost 25 % or more; a record where the time
     after sampling fell in one such cell fails the sentence, and the cells the record has pass it."""
     nb = chapter_04()
     assert chapter_claims._dear_cells(nb) == []
