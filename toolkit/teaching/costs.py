@@ -91,10 +91,11 @@ def cost_table(tables: Tables | None = None) -> str:
             f"| {1000 * c.after[0]:.1f} → {1000 * c.after[1]:.1f} | {c.sampling_share:.0%} |"
         )
     mostly = [c for c in cells if c.after_share > 0.5]
-    others = ", ".join(f"{c.scenario} {c.sampler}" for c in cells if c not in mostly) or "none"
+    rest = [f"{c.scenario} {c.sampler}" for c in cells if c not in mostly]
+    others = f"the other: {rest[0]}" if len(rest) == 1 else f"the others: {', '.join(rest) or 'none'}"
     return (
         "\n".join(rows) + f"\n\nThe larger part of the extra mean time came after sampling in {len(mostly)} of these "
-        f"{len(cells)} cells (the others: {others})."
+        f"{len(cells)} cells ({others})."
     )
 
 
