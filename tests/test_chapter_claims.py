@@ -341,6 +341,16 @@ def test_chapter_04_passes_when_every_verdict_agrees_with_its_row():
     assert problems(CH04, chapter_04()) == []
 
 
+def test_chapter_04_names_the_recorded_runs_3dc7_call_costs_as_the_record_has_them():
+    """Review r28d: section 4 says the network's cost per call moved between the recorded runs, 3DC-7's figures read
+    from docs/results.md; another figure in the prose fails."""
+    nb = chapter_04()
+    for cell in nb["cells"]:
+        if cell["cell_type"] == "markdown":
+            cell["source"] = "".join(cell["source"]).replace("at 1.32 and 6.90", "at 1.32 and 6.9")
+    assert problems(CH04, nb) == ["04: section 4 on the recorded runs' 3DC-7 costs; the record: ('1.32', '6.90')"]
+
+
 def test_chapter_04_fails_a_verdict_its_numbers_contradict():
     nb = chapter_04()
     first = nb["cells"][0]["outputs"][1]["data"]  # after the line that states section 5's verdict
@@ -552,6 +562,7 @@ def test_chapter_04_fails_where_section_5s_counts_contradict_its_prose():
         "04: section 5's verdict is not stated once under its table",
         *SLOW_UNSAID,
         *(f"04: section 6 does not say '{words}'" for words in chapter_claims.DEAR_SAID),
+        "04: section 4 on the recorded runs' 3DC-7 costs; the record: ('1.32', '6.90')",
         "04: the run's time is not printed with its load",
     ]
 
@@ -631,6 +642,7 @@ def test_chapter_04_holds_its_plain_answer_to_the_table_it_summarises():
         f"04: the opening does not say '{chapter_claims.PLAIN[_claim_expected()[0]]}'",
         *SLOW_UNSAID,
         *(f"04: section 6 does not say '{words}'" for words in chapter_claims.DEAR_SAID),
+        "04: section 4 on the recorded runs' 3DC-7 costs; the record: ('1.32', '6.90')",
     ]
 
 
