@@ -3,8 +3,9 @@ the python-fcl runs, and two of four scenarios were not drawn).
 
 :func:`answer_ratios` draws, for every scenario and sampler, total time with / without prediction inside the paper's
 Algorithm 1 for each series of ``{"<scenario>, <series>": {sampler: ratio}}`` (the rows of
-:func:`toolkit.teaching.checker_scope.compact`: the paper's Table 3, our accurate network with our compiled checker,
-and with python-fcl on both sides), on a log axis against the line at 1 and the tie band.
+:func:`toolkit.teaching.checker_scope.compact`: the paper's Table 3, our accurate network with our fast checker
+(compiled in 3D, numpy in 2DS) and with python-fcl on both sides), on a log axis against the line at 1 and the tie
+band.
 """
 
 from __future__ import annotations
