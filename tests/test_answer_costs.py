@@ -14,7 +14,7 @@ def test_answer_ratios_draws_every_scenario_sampler_and_series_in_one_panel():
     assert len(fig.axes) == 1
     drawn = sum(len(line.get_xdata()) for line in fig.axes[0].lines if line.get_marker() not in ("None", None, ""))
     assert drawn == sum(len(r) for r in rows.values()) == 48  # 4 scenarios x 4 samplers x 3 series
-    assert "tie band, 0.90 to 1.10" in alt_text(fig)
+    assert "tie band, above 0.90 and below 1.10" in alt_text(fig)
 
 
 def test_cost_table_splits_the_cells_where_prediction_cost_25_percent_or_more():

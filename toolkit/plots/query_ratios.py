@@ -25,7 +25,7 @@ from matplotlib.ticker import NullLocator
 
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import COLORS, LINE_COLORS, PAGE_WIDTH, halo, series_style
-from toolkit.plots.timings import legend_above, log_ticks, ratio_parts, tie_band
+from toolkit.plots.timings import band_words, legend_above, log_ticks, ratio_parts, tie_band
 from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 
 READS = (COSTS, TIES, SAVES)  # what a median reads as, in the legend's order; each its own colour and marker
@@ -73,7 +73,7 @@ def own_ratios(
         centres.append(float(x.mean()))
     _legend_entries(ax, series if slow else None)
     ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
-    _tie_band(ax, tie)
+    tie_band(ax, tie)
     ax.set_xticks(ticks, names)
     ax.set_xticks([c + (len(cells[s]) + GAP) / 2 for c, s in zip(centres[:-1], cells)], minor=True)
     ax.grid(True, axis="x", which="minor", color=COLORS["shade"], linewidth=0.8)
@@ -161,25 +161,13 @@ def _read(reads: str) -> str:
     ]
 
 
-def band_said(tie: float) -> str:
-    """The tie band as the legend and the text alternative name it, its edges as the page counts them (review r27f,
-    contradiction 1: "0.90 to 1.10" beside a 1.10 counted a cost): ``"tie band, above 0.90 and below 1.10"``."""
-    return f"tie band, above {1 - tie:.2f} and below {1 + tie:.2f}"
-
-
-def _tie_band(ax, tie: float) -> None:
-    """:func:`toolkit.plots.timings.tie_band`, its legend entry in this module's words (:func:`band_said`)."""
-    tie_band(ax, tie)
-    ax.patches[-1].set_label(band_said(tie))
-
-
 def _words(cells: Cells, title: str, tie: float, label: str = "") -> str:
     """The text alternative: what is drawn (``label``: the series, where there are two), then :func:`_counts`."""
     which = f" ({label}: filled)" if label else ""
     return (
         f"{title}: the median of each query's own time ratio with prediction over without, a point per scenario and "
         f"sampler{which}, a whisker over the middle half of the ratios, log scale, read against the line at 1 and the "
-        f"shaded {band_said(tie)}. {_counts(cells, tie)}"
+        f"shaded {band_words(tie)}. {_counts(cells, tie)}"
     )
 
 
@@ -274,7 +262,7 @@ def _means_panel(ax, title: str, series: Mapping[str, Mapping[str, float]], name
         line.set_path_effects(halo(1.0))
     every = np.array([[ratios[s] for s in samplers] for ratios in series.values()])  # (series, samplers)
     ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
-    _tie_band(ax, tie)
+    tie_band(ax, tie)
     ax.set_xticks(np.arange(len(samplers) - 1) + 0.5, minor=True)  # a sampler's points between two lines
     ax.grid(True, axis="x", which="minor", color=COLORS["shade"], linewidth=0.8)
     ax.tick_params(axis="x", which="minor", length=0)
@@ -300,7 +288,7 @@ def _means_described(fig: Figure, panels, names, samplers, tie: float, said: lis
     )
     text = (
         "Mean planning time with prediction divided by the mean without, a point per sampler and series, one panel "
-        f"per scenario on one log scale, read against the line at 1 and the shaded {band_said(tie)}; below 1 "
+        f"per scenario on one log scale, read against the line at 1 and the shaded {band_words(tie)}; below 1 "
         f"prediction saves time. {'; '.join(said)}. Counted by series: {counted}."
     )
     return describe(fig, text, ratio_parts(panels, samplers))
