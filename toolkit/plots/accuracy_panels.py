@@ -14,6 +14,7 @@ import textwrap
 import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
+from matplotlib.ticker import MaxNLocator
 
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo, series_style
@@ -23,13 +24,12 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
     """One panel per group ``{name: (all_free (W,), accuracy (W,))}``: each workspace a point, its reconstruction
     accuracy (y) against its share of free cells (x, the accuracy of answering "all free"), above the dashed
     diagonal when the CAE beats that answer; the group's mean a large mark. The panels share both axes."""
-    across = min(len(groups), 2)  # review r26b: three panels in a row were 170 px wide each; at most two a row
-    rows_of_panels = -(-len(groups) // across)
-    fig = Figure(figsize=(PAGE_WIDTH, 2.9 * rows_of_panels + 0.5), layout="constrained")
-    grid = np.atleast_2d(fig.subplots(rows_of_panels, across, sharex=True, sharey=True, squeeze=False))
-    axes, spare = grid.flat[: len(groups)], grid.flat[len(groups) :]  # spare: the empty slot of an odd count
-    for ax in axes:  # sharing x hides the tick labels above the last row, but a panel over an empty slot needs its own
-        ax.tick_params(labelbottom=True)
+    # review r29b: two a row left the two unseen clouds one above the other and the legend in a spare slot, half out
+    # of it; one row, the groups side by side in the order given, the legend below them (r26b: narrow panels read
+    # poorly, so the figure is as tall as a panel is wide and its ticks stay few)
+    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / len(groups) + 1.3), layout="constrained")
+    grid = np.atleast_2d(fig.subplots(1, len(groups), sharex=True, sharey=True, squeeze=False))
+    axes = grid.flat
     values = [np.asarray(v, dtype=float) for pair in groups.values() for v in pair]
     low = min(float(v.min()) for v in values)
     said, rows = [], []
@@ -55,12 +55,13 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
         )
         above = int(np.sum(accuracy > all_free))
         ax.set_title(  # review r28b: the count the text reads, in the title, not only in "Figure described"
-            "\n".join(textwrap.wrap(name, 40))
+            "\n".join(textwrap.wrap(name, 26))
             + f"\nmean {mean[1]:.1%} vs {mean[0]:.1%}; {above} of {len(accuracy)} above",
             fontsize=9,
         )
         ax.set_xlabel("share of free cells")
-        ax.tick_params(labelsize=8)
+        ax.xaxis.set_major_locator(MaxNLocator(4))  # a third of the page wide: four ticks, never touching
+        ax.tick_params(labelsize=9)
         said.append(
             f"{name}: {len(accuracy)} workspaces, mean accuracy {mean[1]:.1%} against {mean[0]:.1%} for all free, "
             f"{above} of them above the diagonal"
@@ -68,15 +69,14 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
         rows.append((name, str(len(accuracy)), f"{mean[1]:.1%}", f"{mean[0]:.1%}", f"{above} of {len(accuracy)}"))
     for ax in grid[:, 0]:
         ax.set_ylabel("reconstruction accuracy")
-    _legend(fig, spare)
+    _legend(fig)
     text = "Reconstruction accuracy against the accuracy of answering all free, one panel per group, one point per "
     columns = ("panel", "workspaces", "mean accuracy", "mean all free", "above the diagonal")
     return describe(fig, text + "workspace. " + "; ".join(said) + ".", [Part("the panels", "", columns, tuple(rows))])
 
 
-def _legend(fig: Figure, spare) -> None:
-    """The diagonal and the mean marker named, in the empty slot of an odd count (``spare``), where it covers
-    nothing, else under the panels."""
+def _legend(fig: Figure) -> None:
+    """The diagonal and the mean marker named, under the panels, where it covers nothing."""
     handles = [
         Line2D([], [], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal): above it, better'),
         Line2D(  # drawn as the means are: the group's colour (here a neutral grey), a light ring, a dark edge
@@ -92,9 +92,4 @@ def _legend(fig: Figure, spare) -> None:
             label="large ringed mark, in the panel's own shape: its mean",
         ),
     ]
-    for ax in spare:  # the legend in the empty slot, where it covers nothing
-        ax.set_axis_off()
-    if len(spare):
-        spare[0].legend(handles=handles, loc="center", fontsize=9, frameon=False)
-    else:
-        fig.legend(handles=handles, loc="outside lower center", ncols=2, fontsize=9, frameon=False)
+    fig.legend(handles=handles, loc="outside lower center", ncols=2, fontsize=9, frameon=False)

@@ -77,12 +77,14 @@ def reconstructions(
     """One row per 2D workspace: input, decoded sign, and the wrong cells over the input.
 
     ``grids``, ``decoded``: ``(W, nx, ny)``. Wrong cells are marked by kind (:mod:`toolkit.plots.wrong_cells`): a
-    missed block (input occupied, decoded free) or an invented one; given ``flipped (W, nx, ny)``, the cells flipped
+    missed cell (input occupied, decoded free) or an invented one; given ``flipped (W, nx, ny)``, the cells flipped
     in a perturbed input, those are a kind of their own (flip ignored, flip copied) and the rest "other wrong".
     A legend above the first row names the kinds (review r27b: under the last, it lay a screen below the first), in
     the figure's first subfigure; the rows are the others.
     Each row's title gives the reconstruction accuracy next to the share of free cells,
-    the accuracy of a CAE that ignores its input and answers "all free".
+    the accuracy of a CAE that ignores its input and answers "all free". Given ``flipped``, both are of the *clean*
+    grid, the input with its flips undone (review r29b: scored against the noisy input, a decoder that ignored
+    every flip, a perfect denoise, read as 30 cells wrong).
     """
     grids, decoded = np.asarray(grids), np.asarray(decoded)
     if grids.ndim != 3 or decoded.shape != grids.shape or len(names) != len(grids):
@@ -92,13 +94,15 @@ def reconstructions(
         )
     if flipped is not None and np.shape(flipped) != grids.shape:
         raise ValueError(f"flipped has shape {np.shape(flipped)}, the grids {grids.shape}")
-    accuracy = reconstruction_accuracy(decoded, grids)  # (W,)
+    clean = grids if flipped is None else np.where(flipped, -grids, grids)  # the flips undone
+    accuracy = reconstruction_accuracy(decoded, clean)  # (W,)
+    right = "of cells right" if flipped is None else "of cells as in the clean grid"
     fig = Figure(figsize=(PAGE_WIDTH, 4.3 * len(grids) + 0.4), layout="constrained")
     # a strip for the legend, then one row per workspace: a figure's "outside" legend would overlap the rows' titles
     key, *rows = fig.subfigures(len(grids) + 1, 1, height_ratios=(0.4, *[4.3] * len(grids)), squeeze=False)[:, 0]
     said, parts = [], []
     drawn: dict[str, np.ndarray] = {}  # the kinds of wrong cell drawn in any row, for the legend
-    for k, (row, grid, out, name, acc) in enumerate(zip(rows, grids, decoded, names, accuracy)):
+    for k, (row, grid, out, name, acc, target) in enumerate(zip(rows, grids, decoded, names, accuracy, clean)):
         kinds = wrong_kinds(grid, out, None if flipped is None else flipped[k])
         drawn |= kinds
         layout = row.add_gridspec(2, 2, width_ratios=(1, WRONG))  # input over decoded; r19b: marks 8 px wide
@@ -108,17 +112,19 @@ def reconstructions(
         wrong = wrong_in_words(kinds)
         _image(axes[2], grid, wrong, alpha=0.25, axes=True)  # the thumbnails on its left: the same x and y
         draw_wrong_cells(axes[2], grid, kinds, cell=72 * 0.62 * fig.get_figwidth() / max(grid.shape))
-        all_free = np.mean(grid < 0)
-        row.suptitle(f"{name}: {acc:.1%} of cells right (all free: {all_free:.1%})", fontsize=10)
-        said.append(f"{name}: {acc:.1%} of cells right against {all_free:.1%} for answering all free; {wrong}")
+        all_free = np.mean(target < 0)
+        row.suptitle(f"{name}: {acc:.1%} {right} (all free: {all_free:.1%})", fontsize=10)
+        said.append(f"{name}: {acc:.1%} {right} against {all_free:.1%} for answering all free; {wrong}")
         parts.append(grid_part(name, said[-1], grid, out, None if flipped is None else flipped[k]))
     handles, labels = legend_handles(list(drawn))
+    labels = [CELL_LABELS.get(kind, label) for kind, label in zip(drawn, labels)]  # r29b: mostly single cells
     key.legend(handles, labels, loc="center", ncols=2, fontsize=9, frameon=False)
     grids_said = f"{len(grids)} occupancy grid{'s' if len(grids) > 1 else ''}"
     text = f"{grids_said}, each beside its reconstruction and its wrong cells. " + "; ".join(said)
     return describe(fig, text + ".", parts)
 
 
+CELL_LABELS = {"missed": "missed cell (x)", "phantom": "invented cell (o)"}  # wrong_cells.LABELS says "block"
 WRONG = 2.2  # the wrong cells' panel's width against the input's column: 0.62 of the figure's, laid out
 FEW = 50  # a group of at most this many workspaces is drawn larger and on top: hundreds of points would bury it
 GREY = {True: dict(s=28, alpha=1.0, linewidths=0.8, zorder=3), False: dict(s=10, alpha=0.5, linewidths=0, zorder=1)}
@@ -211,8 +217,10 @@ def contraction(
     For each named model: ``jacobian_norms (W,)``, the Frobenius norm of dz/dx at each
     workspace; ``latent_shift (F, T)``, ``||z' - z|| / ||z||`` after flipping
     ``flips[f]`` random cells, in ``T`` trials; ``decoded_change (F, T)``, how many
-    decoded cells change sign then. Lines are the means over trials. The dotted line of
-    the last panel is a perfect copy machine: it changes exactly the flipped cells.
+    decoded cells change sign then, anywhere in the grid. Lines are the means over trials. The
+    dotted line of the last panel marks as many changed cells as flipped ones (review r29b: not "a copy machine",
+    the counts say how many cells changed, not which): a curve below it left at least the difference of the flips
+    unchanged, one above it changed at least the difference of cells that were not flipped.
     """
     flips = np.asarray(flips)
     fig = Figure(figsize=(PAGE_WIDTH, 7.0), layout="constrained")  # the page's width: text at its size, 9 pt or more
@@ -223,13 +231,13 @@ def contraction(
     for k, name in enumerate(names):  # two models that respond alike: the first line wide under the next, thinner
         ax_z.plot(flips, np.mean(latent_shift[name], axis=1), label=name, **_stacked(k, len(names)))
         ax_x.plot(flips, np.mean(decoded_change[name], axis=1), label=name, **_stacked(k, len(names)))
-    ax_x.plot(flips, flips, color=COLORS["reference"], linestyle=":", label="copy the input", zorder=1)
+    ax_x.plot(flips, flips, color=COLORS["reference"], linestyle=":", label="as many as flipped", zorder=1)
     ax_z.set_ylabel("latent move ||z' - z|| / ||z||")
     ax_z.set_title("Latent code moves", fontsize=10)
     ax_x.set_title("Reconstruction changes (log scale)", fontsize=10)
     changes = np.concatenate([flips, *(np.mean(decoded_change[name], axis=1) for name in names)])  # the counts drawn
     _counts_axis(ax_x, "y", _count_ticks(changes.min(), changes.max(), end=flips[-1]))  # 1 reads as 30 does
-    ax_x.set_ylabel("decoded cells that change sign")
+    ax_x.set_ylabel("decoded cells that change sign, anywhere")
     for ax in (ax_z, ax_x):
         _counts_axis(ax, "x", flips)  # the numbers of flips measured
         ax.set_xlabel("cells flipped (log scale)")
