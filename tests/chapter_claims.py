@@ -154,11 +154,15 @@ def chapter_02(nb) -> list[str]:
             problems.append(f"02: 'z moves {fewest} ... {most}' is not {ratio}x")
     if "least sensitive in this run:" not in found:
         problems.append("02: the least sensitive model of each panel is not printed")
+    # review r29b: against the clean workspace, an ignored flip is right; a copied one and any other change are not
     pairs = re.findall(
-        r"(\d+) cells differ from the noisy input .*?: (\d+) of the 30 flips ignored, (\d+) other", found
+        r"(\d+) of the 30 flips ignored, (\d+) copied, (\d+) other cells wrong: (\d+) cells differ from the clean",
+        found,
     )
-    if len(pairs) != 2 or any(int(a) != int(b) + int(c) for a, b, c in pairs):
+    if len(pairs) != 2 or any(int(a) + int(b) != 30 or int(d) != int(b) + int(c) for a, b, c, d in pairs):
         problems.append(f"02: the two decoders' counts are missing or do not add up: {pairs}")
+    if "This run's numbers appear here" in found:  # the answer at the top, filled in by the last cell (update_display)
+        problems.append("02: the table and answer at the top of the page were not filled in")
     adagrad = re.search(
         r"per epoch: first ([\d.,e+]+), last [\d.,e+]+, highest ([\d.,e+]+); .*?: ([\d.]+)% of cells right, "
         r'"all free": ([\d.]+)%',

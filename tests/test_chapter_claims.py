@@ -1015,9 +1015,10 @@ def chapter_02(
     return executed(
         "\n".join(f"{n}: z moves 0.024 at 1 flip, 0.143 at 30 flips: 6.0x as far for 30x the flips" for n in names),
         "least sensitive in this run: the smallest mean Jacobian norm: λ = 0.961 (mean reading)",
-        "λ = 0: 33 cells differ from the noisy input (96.6% right): 30 of the 30 flips ignored, 3 other cells wrong\n"
-        "λ = 0.961 (mean reading): 30 cells differ from the noisy input (96.9% right): 30 of the 30 flips ignored, 0 "
-        "other cells wrong",
+        "λ = 0: 30 of the 30 flips ignored, 0 copied, 3 other cells wrong: 3 cells differ from the clean workspace "
+        "(99.7% right)\n"
+        "λ = 0.961 (mean reading): 30 of the 30 flips ignored, 0 copied, 0 other cells wrong: 0 cells differ from the "
+        "clean workspace (100.0% right)",
         "loss of Eq. (1) per epoch: first 4.64e+18, last 3.81e+17, highest 1.39e+22; training grids reconstructed: "
         '56.0% of cells right, "all free": 88.6%',
         "MD:" + "\n".join(section_5),
