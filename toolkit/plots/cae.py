@@ -182,8 +182,11 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
     ax.plot([low, 1], [low, 1], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal)')
     ax.set_xlabel('share of free cells = accuracy of answering "all free"')
     ax.set_ylabel("reconstruction accuracy")
-    ax.set_title("Above the diagonal: better than all free; large hollow marks: group means", fontsize=10)
-    fig.legend(loc="outside lower center", fontsize=9, frameon=False)  # below the axes: it covers no point
+    ax.set_title("Above the diagonal: better than all free", fontsize=10)
+    handles, labels = ax.get_legend_handles_labels()
+    mean = Line2D([], [], marker="o", linestyle="", markersize=13, fillstyle="none", color=COLORS["reference"], mew=2.2)
+    handles, labels = [*handles, mean], [*labels, "large hollow mark, in the group's shape: its mean"]  # r29b: not in
+    fig.legend(handles, labels, loc="outside lower center", fontsize=9, frameon=False)  # the title; below: on no point
     text = "Reconstruction accuracy against the accuracy of answering all free, one point per workspace. "
     return describe(fig, text + "; ".join(said) + ".")
 
