@@ -27,7 +27,7 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
     # review r29b: two a row left the two unseen clouds one above the other and the legend in a spare slot, half out
     # of it; one row, the groups side by side in the order given, the legend below them (r26b: narrow panels read
     # poorly, so the figure is as tall as a panel is wide and its ticks stay few)
-    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / len(groups) + 1.3), layout="constrained")
+    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / len(groups) + 2.0), layout="constrained")
     grid = np.atleast_2d(fig.subplots(1, len(groups), sharex=True, sharey=True, squeeze=False))
     axes = grid.flat
     values = [np.asarray(v, dtype=float) for pair in groups.values() for v in pair]
@@ -55,8 +55,8 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
         )
         above = int(np.sum(accuracy > all_free))
         ax.set_title(  # review r28b: the count the text reads, in the title, not only in "Figure described"
-            "\n".join(textwrap.wrap(name, 26))
-            + f"\nmean {mean[1]:.1%} vs {mean[0]:.1%}; {above} of {len(accuracy)} above",
+            "\n".join(textwrap.wrap(name, 24))  # a third of the page wide: the counts on lines of their own
+            + f"\nmean {mean[1]:.1%} vs {mean[0]:.1%}\n{above} of {len(accuracy)} above",
             fontsize=9,
         )
         ax.set_xlabel("share of free cells")
