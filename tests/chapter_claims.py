@@ -183,7 +183,26 @@ def chapter_02(nb) -> list[str]:
     corr = re.findall(r"correlation of PC 1 with the share of occupied cells: ([+-][\d.]+)", found)
     if len(corr) == 2 and abs(float(corr[0])) >= abs(float(corr[1])):  # both printed: the first the weaker
         problems.append(f"02: the 30-grid CAE's PC 1 correlation is not the smaller of the two in size: {corr}")
-    return problems + _chapter_02_unseen(nb, found) + _chapter_02_gaps(nb, found)
+    return problems + _chapter_02_unseen(nb, found) + _chapter_02_gaps(nb, found) + _chapter_02_contracts(nb, found)
+
+
+def _chapter_02_contracts(nb, found: str) -> list[str]:
+    """Review r29b: section 6 states that λ = 0.961's Jacobian norm is smaller (it once hedged "if the penalty
+    works"), and the closing that all three 30-grid CAEs reproduce the seen column (it once named one)."""
+    problems = []
+    norms = re.search(
+        r"median Jacobian norm: λ = 0 ([\d.]+), λ = 1e-3 \(paper\) ([\d.]+), λ = 0.961 \S+ \S+ ([\d.]+)", found
+    )
+    if norms is None:
+        problems.append("02: section 6 does not print the three median Jacobian norms")
+    elif float(norms.group(3)) >= min(float(norms.group(1)), float(norms.group(2))):
+        problems.append(f"02: λ = 0.961's median Jacobian norm is not the smallest: {norms.group(0)}")
+    if "memorized. Near perfect on its training grids" in found:  # full size: "all three reproduce the seen column"
+        against = [row for header, rows in tables(nb) if header[-1:] == ['unseen against "all free"'] for row in rows]
+        problems += [
+            f"02: {row[0]} scores {row[1]} on its training grids" for row in against if float(row[1][:-1]) < 98
+        ]
+    return problems
 
 
 COUPLE = 2.5  # points: "within a couple of points of 'all free'"
