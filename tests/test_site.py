@@ -376,35 +376,30 @@ def test_the_index_table_counts_the_recorded_cells():
     assert shown == expected
     assert len(rows) == 2 + len(expected)  # the header, the `| --- |` line and a row each
     answer = " ".join(readme_opening().split())
-    # review r28e: a median needs each query's time; what the two runs lack is a pair of times per query
-    footnote = "— : the paper reports means only, and the other two runs kept no paired times per query, only each"
-    assert f"{footnote} mode's median." in answer
+    # review r28e: a median needs each query's time; the two runs kept no pair of times per query (reader r29e: the
+    # footnote says so in four words, the results page the rest)
+    assert "— : not recorded (the paper reports means only)." in answer
     assert not [h for key in ("paper", "strong") for h in tables[key] if "each query's own ratio" in h]
     assert recorded.median_ratios("paper", tables) and recorded.median_ratios("strong", tables)
     lazy = [change(r) for row in recorded.median_ratios("strong", tables).values() for r in row["total"].values()]
     longer = lazy.count("more time")
-    assert counted(by_means("strong")).endswith(f" / {longer}")  # both statistics agree
-    took = f"In our lazy PRM it took longer in {longer} of {len(lazy)} cells by the ratio of median times too."
-    assert took in answer  # review r21c: not "either statistic", its per-query column is unrecorded
+    assert counted(by_means("strong")).endswith(f" / {longer}")  # both statistics agree: the row's count holds
     assert own_ratios(recorded.ALGORITHM_1).startswith("0 / ")  # the answer: "seldom where it is fast"
     # review r28e: "What we found" no longer repeats the numbered list and this table (its Algorithm 1 bullets cut)
     assert "saved no cell's time" not in flat_readme() and "**With python-fcl on both sides**" not in flat_readme()
     assert "savings in the table's `paper` row are not the method working" in answer  # review r23b: a row named
-    # review r28e: by means the compiled checker "saved" 3 cells to python-fcl's 2, against the answer; said why
+    # review r28e: by means the compiled checker "saved" 3 cells to python-fcl's 2, against the answer; said why, in
+    # one sentence (reader r29e: each cell's figures are the results page's)
     from tools.results_summary import noise
 
     floor = noise(tables).means
     own = recorded.query_ratios(recorded.ALGORITHM_1, tables)
     means = {s: recorded.improvements(recorded.ALGORITHM_1, s, recorded=tables) for s in own}
-    saves = sorted((1 - v, s, k) for s, row in means.items() for k, v in row.items() if change(1 - v) == "less time")
-    inside = [r for r, _, _ in saves if floor[0] <= round(r, 2) <= floor[1]]
-    (outside, scenario, sampler), *_ = [c for c in saves if c[0] < floor[0]]
-    assert len(saves) == 3 and len(inside) == 2 and own[scenario][sampler] >= 1.1  # the third cost time, query by query
+    saves = [1 - v for row in means.values() for v in row.values() if change(1 - v) == "less time"]
+    assert not [r for row in own.values() for r in row.values() if change(r) == "less time"]  # "it saved none"
     said = (
-        f"The compiled checker's three savings by mean times are no evidence of a saving. Two of them "
-        f"({', '.join(f'{r:.2f}' for r in sorted(inside))}) lie inside the {floor[0]:.2f}–{floor[1]:.2f} that timing "
-        f"alone moved a ratio of means. The third, {NAMES[scenario]} {sampler} at {outside:.2f}, took longer query by "
-        f"query (its own ratio {own[scenario][sampler]:.2f})."
+        f'By mean times our network "saved" {len(saves)} cells with the compiled checker, but timing alone moved a '
+        f"ratio of means to {floor[0]:.2f}–{floor[1]:.2f}, and query by query it saved none."
     )
     assert said in answer
 
@@ -437,7 +432,7 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     )
     assert said in answer  # review r24c: not "as the paper's Table 3 does", whose range differs
     fell = [r for r in own if r <= 0.9]
-    assert min(saved) > 0 and f"our network saved in {len(fell)} of 16 cells with python-fcl" in answer  # item 3
+    assert min(saved) > 0 and f"Our network saved in {len(fell)} of 16 cells with python-fcl" in answer  # item 3
     assert f"sampling was only {percents(shares, digits=1)} of a query's time without the network" in answer
     # its throughput against python-fcl and each cell beside Table 3: docs/benchmarks.md (tests/test_benchmarks_page)
 
@@ -473,11 +468,12 @@ def test_the_index_gives_one_statistic_a_line_behind_its_answer():
         "with the compiled checker.",
         f"2. A whole query, by mean times: the paper saved in {paper('total')} of 16 cells, our network in "
         f"{by_means(fcl, 'total')} with python-fcl and in {by_means(compiled, 'total')} with the compiled checker.",
-        f"3. A whole query, query by query: our network saved in {own(fcl)} of 16 cells with python-fcl and in "
-        f"{own(compiled)} with the compiled checker. Here a cell's figure is the median of each query's *own ratio*, "
-        "its time with the network over its own time without.",
+        # reader r29e: "own ratio" defined where it is first used, before its count
+        "3. A whole query, by each query's *own ratio*: its time with the network over its own time without, read by "
+        f"the median over a cell's queries. Our network saved in {own(fcl)} of 16 cells with python-fcl and in "
+        f"{own(compiled)} with the compiled checker.",
     ]
-    listed = re.search(r"\*\*The numbers behind the answer\*\*.*?\n\n((?:\d\. .*?(?:\n\n|$))+)", readme_opening(), re.S)
+    listed = re.search(r"where the network saved 10 % or more:\n\n((?:\d\. .*?(?:\n\n|$))+)", readme_opening(), re.S)
     assert listed, "the home page no longer lists the numbers behind its answer"
     shown = [" ".join(item.split()) for item in re.split(r"\n(?=\d\. )", listed.group(1).strip())]
     assert shown == lines
@@ -501,7 +497,11 @@ def test_the_index_says_the_paper_network_gives_one_answer_to_every_3d_sample():
     accuracy = [recorded.ours(row["Balanced unseen Acc"]) for row in rows.values()]
     strong = [recorded.ours(row["Balanced unseen Acc"]) for row in recorded.table("strong", "MLP accuracy").values()]
     assert f"right on {percents(accuracy)} of unseen samples in a balanced test" in flat_readme()  # not 05's uniform
-    assert f"{percents(strong)} accurate on unseen workspaces" in flat_readme()
+    # reader r29e: the runs trained the network more than once (the lazy PRM's, Algorithm 1's); the range holds for each
+    trainings = [recorded.table(key, "MLP accuracy").values() for key in ("strong", recorded.ALGORITHM_1)]
+    each = [[recorded.ours(row["Balanced unseen Acc"]) for row in rows] for rows in trainings]
+    assert all(min(strong) <= a <= max(strong) for scores in each for a in scores)
+    assert f"Every recorded training of it was {percents(strong)} accurate on unseen workspaces" in flat_readme()
     uniform = rows["3dc7"]  # chapter 05's test: uniform samples, where one answer scores what "always valid" does
     assert recorded.ours(uniform["Unseen Acc"]) == recorded.ours(uniform["Unseen always valid"]) > 0.5
 
@@ -536,8 +536,12 @@ README = ROOT / "README.md"
 
 
 def readme_opening() -> str:
-    """The index page's text before its first section."""
-    return (ROOT / "README.md").read_text().partition("\n## ")[0].partition("\n")[2]
+    """The index page's answer and the numbers behind it: its text before the first section, then its section "The
+    numbers behind the answer" (reader r29e: set-up and the notebooks now come between them)."""
+    text = (ROOT / "README.md").read_text()
+    numbers = text.partition("\n## The numbers behind the answer\n")[2].partition("\n## ")[0]
+    assert numbers, "the home page has no section 'The numbers behind the answer'"
+    return text.partition("\n## ")[0].partition("\n")[2] + "\n" + numbers
 
 
 def test_links_between_sources_land_on_pages(tmp_path):
