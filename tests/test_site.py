@@ -1627,3 +1627,24 @@ def read(url: str) -> Links | None:
 def test_no_internal_link_is_broken(site, served):
     pages, broken = crawl(served)
     assert pages >= 30 and broken == []
+
+
+def test_folded_headings_stay_out_of_the_table_of_contents():
+    """Review r28f, item 7: the results page's table of contents listed every table folded inside a ``<details>``.
+    Headings in a fold, at any depth of folds, leave the contents; the ones outside stay, with their children."""
+    from mkdocs.structure.toc import get_toc
+
+    page = (
+        '<h2 id="run">Run</h2><details><summary>tables</summary><h3 id="t1">T1</h3>'
+        '<details><summary>more</summary><h3 id="t2">T2</h3></details><h3 id="t3">T3</h3></details>'
+        '<h3 id="shown">Shown</h3><h2 id="next">Next</h2>'
+    )
+    assert site_hooks.folded(page) == {"t1", "t2", "t3"}
+    tokens = [
+        {"level": 2, "id": "run", "name": "Run", "children": []},
+        {"level": 3, "id": "t1", "name": "T1", "children": []},
+        {"level": 3, "id": "shown", "name": "Shown", "children": []},
+        {"level": 2, "id": "next", "name": "Next", "children": []},
+    ]
+    toc = site_hooks.unfolded(list(get_toc(site_hooks.nested(tokens))), site_hooks.folded(page))
+    assert [(e.id, [c.id for c in e.children]) for e in toc] == [("run", ["shown"]), ("next", [])]
