@@ -203,12 +203,10 @@ def mlp(tables: Tables) -> str:
     blind = [recorded.ours(row["Unseen Acc"]) for row in rows.values()]
     always = [recorded.ours(row["Unseen always valid"]) for row in rows.values()]
     return (
-        f"**The MLP (Table 2).** On unseen workspaces' balanced samples (half of them valid; the columns “Balanced "
-        f"unseen”), the `paper` MLP is right {span(balanced('paper'))} % of the time, where a coin flip is right 50 %; "
-        f"the `strong` MLP {span(balanced('strong'))} %. On the validity-blind samples the paper describes (the "
-        f"columns “Unseen”, which chapter 04 quotes) the `paper` MLP is right {span(blind)} %, where answering “valid” "
-        f"to every sample is right {span(always)} %.{trivial} The paper's own tests were more balanced (our "
-        "inference from its Table 2: [Fidelity](fidelity.md#the-share-of-valid-samples-the-papers-table-2-implies))."
+        f"**The MLP (Table 2).** On unseen workspaces' balanced samples (half of them valid) the `paper` MLP is right "
+        f"{span(balanced('paper'))} % of the time, where a coin flip is right 50 %; the `strong` MLP "
+        f"{span(balanced('strong'))} %. On the validity-blind samples the paper describes, which chapter 04 quotes, "
+        f"the `paper` MLP is right {span(blind)} %, answering “valid” to every sample {span(always)} %.{trivial}"
     )
 
 
@@ -221,39 +219,23 @@ def lazy_prm(tables: Tables) -> str:
     }
     cells = {preset: sum(map(len, g.values())) for preset, g in groups.items()}
     saved = {preset: g["less time"] for preset, g in groups.items()}
-    both = len(saved["strong"]) + len(saved["paper"])
     chapter = sum(len(row["total"]) for s, row in recorded.median_ratios("strong", tables).items() if s in CHAPTER_04)
 
     def answer(count: int, total: int) -> str:
         return "no" if count == 0 else "rarely" if count < total / 2 else "mostly"
 
-    strong_means = counted(
-        [
-            change(1 - saved)
-            for s in recorded.table("strong", "time improvement", tables)
-            for saved in recorded.improvements("strong", s, recorded=tables).values()
-        ]
-    )
-    whose = (
-        f", each the `paper` network's ({', '.join(f'{name} {r:.2f}' for name, r in saved['paper'])})"
-        if saved["paper"] and not saved["strong"]
-        else ""
-    )
-    return (
+    floor = medians_floor(tables)
+    beyond = [(name, r) for g in groups.values() for name, r in g["less time"] if floor is None or r < floor[0]]
+    named = f" ({', '.join(f'{name} {r:.2f}' for name, r in beyond)})" if beyond else ""
+    floor_said = f" beyond this ratio's noise floor ({floor[0]:.2f}–{floor[1]:.2f})," if floor else ""
+    return (  # review r28f, items 2 and 3: four lines, the count read by its own noise floor
         "**Does prediction save planning time against the lazy PRM, the fastest exact planner a network can "
-        f"drive?** For the accurate `strong` network, by the median query (the ratio of the two modes' median "
-        f"times), {answer(len(saved['strong']), cells['strong'])}: it saved time in {len(saved['strong']) or 'none'} "
-        f"of its {cells['strong']} scenario–sampler cells (chapter 04 shows {chapter} of them, 2DS and 3DC-7); by "
-        f"Table 3's means, which a few slow queries pull, it saved 10 % or more in {strong_means[0]} of "
-        f"{sum(strong_means)}{' (“Means and medians” below shows one)' if strong_means[0] else ''}. "
-        "Counting the `paper` network's cells too, whose planner with prediction is Algorithm 1 (so planner and "
-        f"prediction both change), {answer(both, sum(cells.values()))}: {both or 'none'} of "
-        f"{sum(cells.values())}{whose}{beyond_floor(groups, tables)}. These counts read the medians tables (the median "
-        "time with prediction over "
-        "the median without) of the sections “Preset `strong`” and “Preset `paper`”; the section “Preset `paper` "
-        "on 1–2 December”, with python-fcl, is history, measured against Algorithm 1, and not counted. "
-        f"The `strong` network took {told(groups['strong'])}. The `paper` network, with Algorithm 1 against the "
-        f"lazy PRM (planner and prediction both change), took {told(groups['paper'])}.{inside_floor(groups, tables)}"
+        "drive?** By the ratio of the two modes' median times (the medians tables of “Preset `strong`” and “Preset "
+        f"`paper`”), for the accurate `strong` network {answer(len(saved['strong']), cells['strong'])} (chapter 04 "
+        f"shows {chapter} of its cells): it took {told(groups['strong'])}. Counting the `paper` network's cells too "
+        f"(its planner with prediction is Algorithm 1, so planner and prediction both change), "
+        f"{answer(len(beyond), sum(cells.values()))}:{floor_said} {len(beyond) or 'none'} of {sum(cells.values())}"
+        f"{named}."
     )
 
 
@@ -264,40 +246,6 @@ def medians_floor(tables: Tables) -> tuple[float, float] | None:
         return noise(tables).medians
     except (KeyError, StopIteration):
         return None
-
-
-def beyond_floor(groups: dict[str, dict[str, list[tuple[str, float]]]], tables: Tables) -> str:
-    """Review r28f, contradiction 1: the lazy-PRM savings counted again, only those beyond the noise floor of a ratio of
-    the two medians (:func:`medians_floor`), so a saving timing alone could give is not counted as evidence."""
-    floor = medians_floor(tables)
-    if floor is None:
-        return ""
-    cells = sum(len(cells) for g in groups.values() for cells in g.values())
-    beyond = [(name, r) for g in groups.values() for name, r in g["less time"] if r < floor[0]]
-    named = f" ({', '.join(f'{name} {r:.2f}' for name, r in beyond)})" if beyond else ""
-    return (
-        f"; beyond the noise floor of a ratio of the two medians (timing alone moved one to {floor[0]:.2f}–"
-        f"{floor[1]:.2f}: the table “timed twice” of the section on `strong --planner paper`), {len(beyond) or 'none'} "
-        f"of {cells}{named}"
-    )
-
-
-def inside_floor(groups: dict[str, dict[str, list[tuple[str, float]]]], tables: Tables) -> str:
-    """The lazy-PRM cells read as savings or costs whose ratio of the two medians lies inside timing's own reach
-    (:func:`medians_floor`): no evidence either way (review r28f, contradiction 1)."""
-    floor = medians_floor(tables)
-    if floor is None:
-        return ""
-    inside = [
-        f"{name} {r:.2f}"
-        for g in groups.values()
-        for word in ("less time", "more time")
-        for name, r in g[word]
-        if floor[0] <= r <= floor[1]
-    ]
-    if not inside:
-        return ""
-    return f" Inside that noise floor, and so no evidence either way: {', '.join(inside)}."
 
 
 def algorithm_1(tables: Tables) -> str:
@@ -319,7 +267,7 @@ def algorithm_1(tables: Tables) -> str:
         f"saved 10 % or more of a query's time in {verdicts.count('less time')} of {len(verdicts)} cells, "
         f"lost 10 % or more in {verdicts.count('more time')} and tied in {verdicts.count('about the same time')} "
         f"(the paper: savings of up to {percent(max(papers))} %). With the MLP above, those savings are not the "
-        "method working: “What reproduces and what does not” says why."
+        "method working (below: “Savings against Algorithm 1 that are not the method”)."
     )
 
 
@@ -396,23 +344,14 @@ def why_no_saving(tables: Tables) -> str:
             for s in recorded.improvements(recorded.ALGORITHM_1, scenario, "sampling", recorded=tables).values()
         ]
     )
-    medians = grouped({s: row["sampling"] for s, row in recorded.median_ratios(recorded.ALGORITHM_1, tables).items()})
-    papers = [v for row in IMPROVEMENT.values() for v in row["sampling"].values()]
-    big = sum(s >= findings.TIE for s in saved)
-    return (
-        "**Why a fast checker erases the saving.** Prediction shortens only the sampling stage: Algorithm 1 checks "
-        "every candidate edge exactly, with prediction or without. Without prediction, sampling took "
-        f"{span(fast, lambda f: f'{f * 100:.2g}')} % of a mean query with our compiled checker and "
-        f"{span(slow, lambda f: f'{f * 100:.2g}')} % with python-fcl (each run's times behind Table 3), so even a "
-        "network that cost nothing could save no more than that share. The network is not free: in the compiled "
-        f"checker's run it cost {span(costs, lambda c: f'{c:.2g}')} times an exact check per configuration (its "
-        f"throughput table), so sampling grew. By means it saved 10 % or more in {means[0]} of {sum(means)} sampling "
-        f"cells, tied in {means[1]} and lost 10 % or more in {means[2]}, where the paper saved {span(papers)} %; by "
-        f"the ratio of the two medians it took {told(medians)}. python-fcl answers a 3D configuration tens of times "
-        "slower than today's compiled checker ([Benchmarks](benchmarks.md)), so there the network is the cheaper "
-        "check and sampling shrank (In short); yet the sampling time it saved came to "
-        f"{span(saved, lambda f: f'{f * 100:.2g}')} % of a mean query's time, 10 % or more in {big} of {len(saved)} "
-        f"cells.{not_from_sampling(tables)} The paper names no checker."
+    return (  # review r28f, item 2: three sentences
+        "**Why a fast checker erases the saving.** Prediction shortens only sampling, which took "
+        f"{span(fast, lambda f: f'{f * 100:.2g}')} % of a mean query without it with our compiled checker "
+        f"({span(slow, lambda f: f'{f * 100:.2g}')} % with python-fcl), and there the network cost "
+        f"{span(costs, lambda c: f'{c:.2g}')} times an exact check per configuration, so by means sampling lost 10 % "
+        f"or more in {means[2]} of {sum(means)} cells. python-fcl is tens of times slower than today's compiled "
+        "checker ([Benchmarks](benchmarks.md)), so with it the network is the cheaper check, yet the sampling time it "
+        f"saved came to {span(saved, lambda f: f'{f * 100:.2g}')} % of a mean query's time.{not_from_sampling(tables)}"
     )
 
 
@@ -441,21 +380,20 @@ def apart(tables: Tables) -> list[Apart]:
 
 
 def not_from_sampling(tables: Tables) -> str:
-    """One sentence on :func:`apart`'s cells, each with its two shares; empty where there are none."""
-    cells, floor = apart(tables), noise(tables).means
+    """One sentence on :func:`apart`'s cells, a saving larger than its sampling saving with both shares (review r28f,
+    item 4); empty where there are none."""
+    cells = apart(tables)
     if not cells:
         return ""
 
     def said(cell: Apart) -> str:
-        verb = "saved" if cell.total >= 0 else "lost"
-        share = percent(abs(cell.total))
-        return f"{cell.name} {verb} {share} % of a mean query, its sampling saving {percent(cell.sampling)} %"
+        if cell.total > cell.sampling and change(1 - cell.total) == "less time":
+            return f"{cell.name}, {percent(cell.total)} % saved against {percent(cell.sampling)} %"
+        return cell.name
 
     return (
-        f" By means, python-fcl's whole query moved 10 points or more further than its sampling saving could move it "
-        f"in {len(cells)} of {len(stage_shares(tables, checker_scope.SLOW)[1])} cells ({'; '.join(map(said, cells))}): "
-        "the rest of the query, which prediction does not shorten, moved those totals, not the sampling it saved "
-        f"(timing alone moved a ratio of means to {floor[0]:.2f}–{floor[1]:.2f})."
+        f" The totals that moved 10 points or more further ({'; '.join(map(said, cells))}) moved with the rest of "
+        "the query, which prediction does not shorten."
     )
 
 
@@ -510,7 +448,7 @@ def short(tables: Tables) -> str:
         f"{means[1]} tied / {means[2]} lost; timing alone moves a mean further than the tie band (the noise floor "
         "under Figure 1), so the verdict reads the medians.",
         f"**The paper's own network** cannot test the claim: its CAE is {cae_said} and its MLP is at chance on "
-        "balanced unseen samples (the findings under Figure 1 give the figures).",
+        "balanced unseen samples (“What reproduces” below gives the figures).",
         f"**So** {whole.verdict}.",
     ]
     return lead + "\n\n" + "\n".join(f"- {item}" for item in items)
@@ -539,7 +477,7 @@ def more_than_sampling(tables: Tables) -> str:
     named = "; ".join(f"{c.name}, {percent(c.total)} % against {percent(c.sampling)} %" for c in cells)
     return (
         f"; {len(cells)} of those savings is more than the sampling time prediction saved there could give ({named}; "
-        "the findings under Figure 1 say why)"
+        "“What reproduces” below says why)"
     )
 
 
@@ -554,9 +492,7 @@ def summary(tables: Tables) -> str:
         lazy_prm(tables),
         algorithm_1(tables),
     ]
-    return "**Why, and the other findings** (computed from this page's tables; each run's section holds them):\n\n" + (
-        "\n".join(f"- {item}" for item in items)
-    )
+    return "\n".join(f"- {item}" for item in items)
 
 
 def narrow(text: str) -> str:
