@@ -332,7 +332,7 @@ def test_the_index_table_counts_the_recorded_cells():
     from toolkit.experiments.paper_numbers import IMPROVEMENT
     from toolkit.teaching import recorded
     from tools.recorded_results import RESULTS, parse
-    from tools.results_summary import NAMES, change
+    from tools.results_words import NAMES, change
 
     tables = parse(RESULTS.read_text())
 
@@ -391,7 +391,7 @@ def test_the_index_table_counts_the_recorded_cells():
     assert "saved no cell's time" not in flat_readme() and "**With python-fcl on both sides**" not in flat_readme()
     assert "savings in the table's `paper` row are not the method working" in answer  # review r23b: a row named
     # review r28e: by means the compiled checker "saved" 3 cells to python-fcl's 2, against the answer; said why
-    from tools.results_summary import noise
+    from tools.results_noise import noise
 
     floor = noise(tables).means
     own = recorded.query_ratios(recorded.ALGORITHM_1, tables)
