@@ -62,8 +62,8 @@ def test_each_point_is_a_cell_of_table_3_or_the_papers(drawn):
     kind, fig = drawn
     table3 = "Table 3: time improvement ratio"
     tables = {
-        "ours, paper network, compiled checker": f"`paper`, {table3}",
-        "ours, accurate strong network, compiled checker": f"`strong --planner paper`, {table3}",
+        "ours, paper network, compiled checker of 2 December": f"`paper`, {table3}",
+        "ours, accurate strong network, compiled checker of 5 December": f"`strong --planner paper`, {table3}",
     }
     assert len(fig.axes) == 4
     names = {line.get_label() for ax in fig.axes for line in ax.get_lines() if line.get_marker() != "None"}

@@ -507,6 +507,7 @@ def test_the_verdict_names_its_checker_first():
     whole = results_summary.whole_query(facts)  # review r24c, item 1: the whole query reproduces with neither checker
     assert (whole.means, whole.papers) == (2, 10) and facts.total_verdicts()[findings.SAVES] == 3
     assert said.endswith(f"**So** {whole.verdict}.") and "reproduce with neither checker" in whole.verdict
+    assert "every cell, as in the paper's Table 3 (more than the paper's saving in 13 of 16 cells, less in 3)" in said
     assert "By Table 3's means: 2 saved / 12 tied / 2 lost, where the paper's Table 3 saves in 10 of 16" in said
     assert (
         "its whole query saved time in 3 of 16 cells by the median query (2 clear savings, 1 at the noise edge), "

@@ -42,8 +42,8 @@ FIGURE_DPI = 110  # as docs/crossover.png: the site's column shows it at about i
 SOURCES = {  # a series of the figure: its preset in the tables (None: the paper's own numbers) and its name; the
     # 1-2 December run with python-fcl is history, left out (review r27f, item 5: five series were 80 markers)
     "the paper (Table 3)": None,
-    "ours, paper network, compiled checker": "paper",
-    "ours, accurate strong network, compiled checker": recorded.ALGORITHM_1,
+    "ours, paper network, compiled checker of 2 December": "paper",
+    "ours, accurate strong network, compiled checker of 5 December": recorded.ALGORITHM_1,
     "ours, accurate strong network, python-fcl on both sides": checker_scope.SLOW,
 }
 
