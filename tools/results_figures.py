@@ -110,11 +110,10 @@ def claim_markdown(text: str) -> str:
         "**Figure 1: the paper's claim, as the verdict reads it**: the accurate `strong` network inside Algorithm 1, "
         "each query's total time with prediction over its own time without."
     )
-    caption = (
-        "Each point is the median of those ratios over 100 queries a scenario (the same for each sampler); the "
-        "whisker spans their middle half. *Shape and colour = verdict, fill = checker*: filled, our compiled "
-        "checker; hollow, python-fcl on both sides. The shaded band holds the ties, above 0.90 and below 1.10; a "
-        "median of 0.90 or less is a saving, 1.10 or more a cost. The summary above counts the points."
+    caption = (  # review r29f, item 1: the caption and the noise floor one paragraph under the plot
+        "Each point is the median of those ratios over 100 queries a scenario (the same for each sampler), its whisker "
+        "their middle half. *Shape and colour = verdict, fill = checker*: filled, our compiled checker; hollow, "
+        "python-fcl on both sides. The summary above counts the points."
     )
     edge_said = (
         f" Cells that read as costs or savings but lie within {NOISE_EDGE * reach_of(tables):.2f} of 1 (twice "
@@ -124,7 +123,7 @@ def claim_markdown(text: str) -> str:
     )
     described = alt.details_html(alt.details(fig)).strip()
     picture = f"![{html.escape(alt.alt_text(fig))}]({CLAIM_FIGURE.name})"
-    return f"{lead}\n\n{picture}\n\n{caption}\n\n{noise_line(tables)}{edge_said}\n\n{described}"
+    return f"{lead}\n\n{picture}\n\n{caption} {noise_line(tables)}{edge_said}\n\n{described}"
 
 
 def means_not_verdict(tables: Tables) -> str:
