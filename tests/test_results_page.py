@@ -514,7 +514,7 @@ def test_the_verdict_names_its_checker_first():
         "tied in 13 and cost time in 0." in said
     )
     assert "where the paper's Table 3 saves in 10 of 16; 1 of those savings is more than the sampling time" in said
-    assert "(3DC-9 OB, 34 % against 8 %; “What reproduces” below says why)." in said  # review r28f, c. 2
+    assert "(3DC-9 OB, 34 % against 8 %; [What reproduces](#what-reproduces-and-what-does-not) says why)." in said  # review r28f, c. 2
     assert "its CAE is no better than answering “all free” on unseen workspaces and its MLP" in said  # r28f, c. 4
     assert "**The paper's own network** cannot test the claim: its CAE" in said and "tests nothing" not in said
     why = results_findings.why_no_saving(tables)

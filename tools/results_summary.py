@@ -129,7 +129,7 @@ def short(tables: Tables) -> str:
         f"{means[1]} tied / {means[2]} lost; timing alone moves a mean further than the tie band (the noise floor "
         "under Figure 1), so the verdict reads the medians.",
         f"**The paper's own network** cannot test the claim: its CAE is {cae_said} and its MLP is at chance on "
-        "balanced unseen samples (“What reproduces” below gives the figures).",
+        "balanced unseen samples ([What reproduces](#what-reproduces-and-what-does-not) gives the figures).",
         f"**So** {whole.verdict}.",
     ]
     return lead + "\n\n" + "\n".join(f"- {item}" for item in items)
@@ -158,7 +158,7 @@ def more_than_sampling(tables: Tables) -> str:
     named = "; ".join(f"{c.name}, {percent(c.total)} % against {percent(c.sampling)} %" for c in cells)
     return (
         f"; {len(cells)} of those savings is more than the sampling time prediction saved there could give ({named}; "
-        "“What reproduces” below says why)"
+        "[What reproduces](#what-reproduces-and-what-does-not) says why)"
     )
 
 
