@@ -514,7 +514,8 @@ def test_the_verdict_names_its_checker_first():
         "tied in 13 and cost time in 0." in said
     )
     assert "where the paper's Table 3 saves in 10 of 16; 1 of those savings is more than the sampling time" in said
-    assert "(3DC-9 OB, 34 % against 8 %; [What reproduces](#what-reproduces-and-what-does-not) says why)." in said  # review r28f, c. 2
+    link = "[What reproduces](#what-reproduces-and-what-does-not)"
+    assert f"(3DC-9 OB, 34 % against 8 %; {link} says why)." in said  # review r28f, c. 2
     assert "its CAE is no better than answering “all free” on unseen workspaces and its MLP" in said  # r28f, c. 4
     assert "**The paper's own network** cannot test the claim: its CAE" in said and "tests nothing" not in said
     why = results_findings.why_no_saving(tables)
@@ -575,3 +576,15 @@ def test_the_counts_a_noise_floor_undercuts_are_told_apart():
     why = results_findings.why_no_saving(TABLES)
     assert why in PAGE and "further (3DC-7 OB; 3DC-9 OB, 34 % saved against 8 %; 3DC-9 BT) moved with" in why
     assert len(saved) == 16
+
+
+def test_tables_1_and_2_on_unseen_workspaces_are_shown_as_the_runs_tables_give_them():
+    """Review r29f, item 3: the title promised the paper's tables, and Tables 1 and 2 were prose only. One small table
+    sets ours beside the paper's and beside the trivial answer, each cell read from the runs' own tables."""
+    said = results_findings.unseen_table(TABLES)
+    assert said in TEXT and said.count("\n| ") == 7  # a header, its rule and five rows
+    cae = recorded.table("paper", "CAE reconstruction", TABLES)["2ds"]["Unseen"]  # "**86%** / 100%"
+    ours, paper = (round(recorded.ours(part) * 100) for part in cae.split("/"))
+    assert f"| CAE, `paper` preset / the paper | {ours} / {paper} |" in said
+    coin = recorded.table("strong", "MLP accuracy", TABLES)["3dc9"]["Balanced unseen Acc"]
+    assert said.endswith(f"/ {round(recorded.ours(coin) * 100)} | 50 / 98 |")
