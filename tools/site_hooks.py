@@ -119,8 +119,9 @@ def on_page_content(html: str, page: Page, config, files: Files) -> str:
     """Notebook pages: links go to pages, MathJax comes from the site, no mermaid loader. API reference:
     Sphinx roles become cross-references. Every page: its code blocks can be reached by keyboard."""
     html = focusable_code(html)
-    if page.toc is not None:
-        page.toc.items = unfolded(list(page.toc), folded(html))
+    toc = getattr(page, "toc", None)  # a Markdown page's, made by mkdocs before this hook
+    if toc is not None:
+        toc.items = unfolded(list(toc), folded(html))
     if page.file.src_uri.startswith("reference/"):
         return cross_references(html)
     if not page.file.src_uri.endswith(".ipynb"):
