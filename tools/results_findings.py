@@ -191,8 +191,8 @@ def why_no_saving(tables: Tables) -> str:
         ]
     )
     return (  # review r28f, item 2: three sentences
-        "**Why a fast checker erases the saving.** Prediction shortens only sampling, which took "
-        f"{span(fast, lambda f: f'{f * 100:.2g}')} % of a mean query without it with our compiled checker "
+        "**Why a fast checker erases the saving.** Prediction shortens only sampling, which, without prediction, "
+        f"took {span(fast, lambda f: f'{f * 100:.2g}')} % of a mean query with our compiled checker "
         f"({span(slow, lambda f: f'{f * 100:.2g}')} % with python-fcl), and there the network cost "
         f"{span(costs, lambda c: f'{c:.2g}')} times an exact check per configuration, so by means sampling lost 10 % "
         f"or more in {means[2]} of {sum(means)} cells. python-fcl is tens of times slower than today's compiled "
@@ -250,11 +250,14 @@ def summary(tables: Tables) -> str:
     items = [
         why_no_saving(tables),
         cae(tables),
-        mlp(tables),
+        mlp(tables)  # the table under the MLP's bullet, a blank line after it so the next bullet is not a row
+        + "\n\n"
+        + "\n".join(f"    {line}" if line else "" for line in unseen_table(tables).splitlines())
+        + "\n",
         lazy_prm(tables),
         algorithm_1(tables),
     ]
-    return "\n".join(f"- {item}" for item in items) + "\n\n" + unseen_table(tables)
+    return "\n".join(f"- {item}" for item in items)
 
 
 def unseen_table(tables: Tables) -> str:
