@@ -167,7 +167,7 @@ def test_the_typed_sentences_on_table_3_quote_it():
         r"(\d+) and tied in (\d+)"
     )
     assert tuple(map(int, said)) == (counts[0], counts[2], counts[1])  # review r25c, item 3: row counts
-    assert "the findings under Figure 1 (“Against the paper's Algorithm 1”) count its cells" in PAGE  # r27f, item 2
+    assert "“What reproduces and what does not” (“Against the paper's Algorithm 1”) counts its cells" in PAGE  # r27f
     bt = [-round(paper[s]["BT"] * 100) for s in THREE_D]
     assert claim(r"the bridge test loses (\S+) % in every 3D scenario") == (f"{min(bt)}–{max(bt)}",)
     losses = [-round(strong[s][x] * 100) for s in THREE_D for x in strong[s]]

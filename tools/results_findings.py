@@ -244,9 +244,10 @@ def not_from_sampling(tables: Tables) -> str:
 
 
 def summary(tables: Tables) -> str:
-    """The findings under Figure 1, without their markers: why the summary's verdict comes out as it does
-    (:func:`why_no_saving`), the paper's networks (Tables 1 and 2), and the answers against the lazy PRM and against
-    Algorithm 1 with the `paper` network; no count the summary gives is said again (review r27f, item 2)."""
+    """The findings ("What reproduces and what does not"), without their markers: why the summary's verdict comes out
+    as it does (:func:`why_no_saving`), the paper's networks (Tables 1 and 2, with :func:`unseen_table`), and the
+    answers against the lazy PRM and against Algorithm 1 with the `paper` network; no count the summary gives is said
+    again (review r27f, item 2)."""
     items = [
         why_no_saving(tables),
         cae(tables),

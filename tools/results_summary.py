@@ -3,12 +3,13 @@ computed from the tables the page prints (read as :mod:`tools.recorded_results` 
 
     python -m tools.results_summary        # after editing docs/results.md's tables
 
-It rewrites the lines between :data:`BEGIN` and :data:`END` in ``docs/results.md``, the findings under Figure 1
-(:mod:`tools.results_findings`) and the three figures' text (:mod:`tools.results_figures`), and draws the figures;
-``tests/test_results_page.py`` fails while the page differs from what the tables give, so a new run's tables cannot
-leave an old summary behind. Time ratios are read with the page's rule, chapter 04's (:mod:`tools.results_words`),
-and single cells against the noise floor (:mod:`tools.results_noise`). It also shows the page's wide tables in parts
-of at most :data:`COLUMNS` columns (:func:`narrow`).
+It rewrites the lines between :data:`BEGIN` and :data:`END` in ``docs/results.md``, the findings ("What
+reproduces and what does not", :mod:`tools.results_findings`) and the three figures' text
+(:mod:`tools.results_figures`), and draws the figures; ``tests/test_results_page.py`` fails while the page differs
+from what the tables give, so a new run's tables cannot leave an old summary behind. Time ratios are read with the
+page's rule, chapter 04's (:mod:`tools.results_words`), and single cells against the noise floor
+(:mod:`tools.results_noise`). It also shows the page's wide tables in parts of at most :data:`COLUMNS` columns
+(:func:`narrow`).
 """
 
 from __future__ import annotations
@@ -81,7 +82,7 @@ ANSWERS = {findings.HOLDS: "Yes", findings.IN_PART: "In part", findings.DOES_NOT
 def short(tables: Tables) -> str:
     """The summary's Markdown, without its markers: the verdict on the paper's claim in one sentence, with the counts
     Figure 1 draws (review r27f, item 1), then the same network with python-fcl, the paper's statistic and the paper's
-    own network, each count said here only (item 2); the findings under Figure 1 say why."""
+    own network, each count said here only (item 2); the findings say why."""
     ratios = recorded.query_ratios(recorded.ALGORITHM_1, tables)
     own = counted([change(r) for row in ratios.values() for r in row.values()])
     means = counted(
