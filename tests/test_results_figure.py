@@ -14,7 +14,7 @@ from toolkit.experiments.paper_numbers import IMPROVEMENT
 from toolkit.plots import alt
 from toolkit.plots.palette import COLORS
 from toolkit.teaching import checker_scope
-from tools import recorded_results, results_summary
+from tools import recorded_results, results_figures, results_noise, results_summary, results_words
 
 TEXT = recorded_results.RESULTS.read_text()
 AGAIN = "docs/results.md's tables changed: run python -m tools.results_summary"
@@ -25,14 +25,14 @@ SAMPLERS = ("BS", "OB", "G", "BT")
 
 @pytest.fixture(scope="module", params=KINDS)
 def drawn(request):
-    fig = results_summary.table3_figure(TEXT, request.param)
+    fig = results_figures.table3_figure(TEXT, request.param)
     FigureCanvasAgg(fig).draw()
     return request.param, fig
 
 
 def test_each_picture_carries_the_description_of_the_figure_the_tables_give(drawn):
     kind, fig = drawn
-    with Image.open(results_summary.FIGURES[kind]) as image:
+    with Image.open(results_figures.FIGURES[kind]) as image:
         said, width = image.info.get("Description"), image.size[0]
     assert said == alt.alt_text(fig), AGAIN
     assert width <= COLUMN
@@ -40,10 +40,10 @@ def test_each_picture_carries_the_description_of_the_figure_the_tables_give(draw
 
 @pytest.mark.parametrize("kind", KINDS)
 def test_the_page_shows_each_picture_with_that_description_and_its_table_of_values(kind):
-    begin, end = (marker.format(kind=kind) for marker in (results_summary.FIGURE_BEGIN, results_summary.FIGURE_END))
+    begin, end = (marker.format(kind=kind) for marker in (results_figures.FIGURE_BEGIN, results_figures.FIGURE_END))
     block = TEXT.partition(begin)[2].partition(end)[0].strip()
-    assert block == results_summary.figure_markdown(TEXT, kind), AGAIN
-    assert f"]({results_summary.FIGURES[kind].name})" in block and "Figure described" in block
+    assert block == results_figures.figure_markdown(TEXT, kind), AGAIN
+    assert f"]({results_figures.FIGURES[kind].name})" in block and "Figure described" in block
 
 
 def _cell(table: str, scenario: str, column: str, text: str) -> float:
@@ -62,14 +62,14 @@ def test_each_point_is_a_cell_of_table_3_or_the_papers(drawn):
     kind, fig = drawn
     table3 = "Table 3: time improvement ratio"
     tables = {
-        "ours, paper network, compiled checker": f"`paper`, {table3}",
-        "ours, accurate strong network, compiled checker": f"`strong --planner paper`, {table3}",
+        "ours, paper network, compiled checker of 2 December": f"`paper`, {table3}",
+        "ours, accurate strong network, compiled checker of 5 December": f"`strong --planner paper`, {table3}",
     }
     assert len(fig.axes) == 4
     names = {line.get_label() for ax in fig.axes for line in ax.get_lines() if line.get_marker() != "None"}
     assert not any("issue 25" in name or "python-fcl (before" in name for name in names)  # r27f, item 5: history out
-    for scenario, ax in zip(results_summary.NAMES, fig.axes):
-        assert ax.get_title().startswith(f"{results_summary.NAMES[scenario]}: {kind} time")
+    for scenario, ax in zip(results_words.NAMES, fig.axes):
+        assert ax.get_title().startswith(f"{results_words.NAMES[scenario]}: {kind} time")
         points = {line.get_label(): list(line.get_ydata()) for line in ax.get_lines() if line.get_marker() != "None"}
         assert points["the paper (Table 3)"] == pytest.approx([1 - IMPROVEMENT[scenario][kind][s] for s in SAMPLERS])
         for name, table in tables.items():
@@ -87,8 +87,8 @@ def test_each_point_is_a_cell_of_table_3_or_the_papers(drawn):
 def test_a_changed_cell_changes_the_figure_and_its_words():
     changed = TEXT.replace("| 2ds | **-25%** / 17% |", "| 2ds | **30%** / 17% |", 1)
     assert changed != TEXT, "the `paper` Table 3's 2DS total BS cell is no longer -25 %: pick another cell here"
-    redrawn = results_summary.table3_figure(changed)
-    assert alt.alt_text(redrawn) != alt.alt_text(results_summary.table3_figure(TEXT))
+    redrawn = results_figures.table3_figure(changed)
+    assert alt.alt_text(redrawn) != alt.alt_text(results_figures.table3_figure(TEXT))
     assert results_summary.with_summary(changed) != changed
 
 
@@ -96,7 +96,7 @@ def test_a_changed_cell_changes_the_figure_and_its_words():
 def test_the_sentence_over_each_figure_counts_the_papers_cells_by_the_tie_rule(kind):
     cells = [v for row in IMPROVEMENT.values() for v in row[kind].values()]  # the paper's Table 3, kind's columns
     saved, lost = sum(v >= 0.10 for v in cells), sum(v <= -0.10 for v in cells)
-    block = TEXT.partition(results_summary.FIGURE_BEGIN.format(kind=kind))[2]
+    block = TEXT.partition(results_figures.FIGURE_BEGIN.format(kind=kind))[2]
     said = re.search(r"(?m)^\| the paper \(Table 3\) \| 16 \| (\d+) \| (\d+) \| (\d+) \|$", block)
     assert f"| {kind} time | cells | saved 10 % or more | tied | lost 10 % or more |" in block
     assert said and [int(n) for n in said.groups()] == [saved, 16 - saved - lost, lost]
@@ -114,8 +114,8 @@ def test_each_panel_shades_the_tie_band_its_counts_are_read_with(drawn):
     label = "tie band, above 0.90 and below 1.10"  # review r27f, contradiction 1: as the page counts its edges
     assert label in [t.get_text() for t in fig.legends[0].texts]
     assert f"read against the line at 1 and the shaded {label}" in alt.alt_text(fig)
-    block = TEXT.partition(results_summary.FIGURE_BEGIN.format(kind=kind))[2].partition("<!-- end")[0]
-    for name in results_summary.SOURCES:
+    block = TEXT.partition(results_figures.FIGURE_BEGIN.format(kind=kind))[2].partition("<!-- end")[0]
+    for name in results_figures.SOURCES:
         points = [y for ax in fig.axes for line in ax.get_lines() if line.get_label() == name for y in line.get_ydata()]
         inside = sum(0.9 < round(float(y), 2) < 1.1 for y in points)
         said = re.search(rf"(?m)^\| {re.escape(name)} \| (\d+) \| (\d+) \| (\d+) \| (\d+) \|$", block)
@@ -141,14 +141,14 @@ def test_no_two_points_of_a_panel_overlap_at_the_pages_width(drawn):
     _, fig = drawn
     for ax in fig.axes:
         lines = [line for line in ax.get_lines() if line.get_marker() != "None"]
-        width = max(line.get_markersize() for line in lines) * results_summary.FIGURE_DPI / 72  # px
+        width = max(line.get_markersize() for line in lines) * results_figures.FIGURE_DPI / 72  # px
         x = sorted({round(float(v), 6) for line in lines for v in line.get_xdata()})
         gaps = [b - a for a, b in zip(x, x[1:])]
         scale = ax.transData.transform((1, 1))[0] - ax.transData.transform((0, 1))[0]  # px per unit, at fig's dpi
-        assert min(gaps) * scale * results_summary.FIGURE_DPI / fig.dpi > 1.6 * width
+        assert min(gaps) * scale * results_figures.FIGURE_DPI / fig.dpi > 1.6 * width
 
 
-CLAIM = TEXT.partition(results_summary.CLAIM_BEGIN)[2].partition(results_summary.CLAIM_END)[0].strip()
+CLAIM = TEXT.partition(results_figures.CLAIM_BEGIN)[2].partition(results_figures.CLAIM_END)[0].strip()
 
 
 def _own_ratios(text: str, key: str = "strong --planner paper") -> dict[tuple[str, str], tuple[float, ...]]:
@@ -169,7 +169,7 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
     reads each query's own ratio (1.24, a cost). Figure 1 is the verdict's statistic: each point a median of that
     table, its whisker the middle half, its marker what the median reads as; it comes before the figures of means,
     its picture carries its description and the page says so."""
-    fig = results_summary.claim_figure(TEXT)
+    fig = results_figures.claim_figure(TEXT)
     FigureCanvasAgg(fig).draw()
     (ax,) = fig.axes
     table = _own_ratios(TEXT)
@@ -201,24 +201,24 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
     assert ends == sorted((q1, q3) for _, q1, q3 in both)
     legend = fig.legends[0].get_window_extent(fig.canvas.get_renderer())
     assert legend.y0 >= ax.get_tightbbox(fig.canvas.get_renderer()).y1 - 1
-    with Image.open(results_summary.CLAIM_FIGURE) as image:
+    with Image.open(results_figures.CLAIM_FIGURE) as image:
         assert image.info.get("Description") == alt.alt_text(fig), AGAIN
         assert image.size[0] <= COLUMN
-    assert CLAIM == results_summary.claim_markdown(TEXT), AGAIN
+    assert CLAIM == results_figures.claim_markdown(TEXT), AGAIN
     costs = sum(m >= 1.1 for m, _, _ in table.values())  # review r27f, item 2: counted once, in the summary
-    reach = results_summary.reach_of(results_summary.parse(TEXT))  # how far timing alone moved a median query
-    edge = sum(abs(m - 1) < results_summary.NOISE_EDGE * reach and m >= 1.1 for m, _, _ in table.values())
+    reach = results_noise.reach_of(recorded_results.parse(TEXT))  # how far timing alone moved a median query
+    edge = sum(abs(m - 1) < results_noise.NOISE_EDGE * reach and m >= 1.1 for m, _, _ in table.values())
     said = f"saved time in 0 of 16 cells, tied in {16 - costs} and cost time in {costs} ({costs - edge} clear costs, "
     assert said + f"{edge} at the noise edge)." in TEXT  # review r28f, contradiction 3: the robust count
     assert "The summary above counts the points." in CLAIM and "costs," not in CLAIM.partition("![")[0]
-    assert TEXT.index(results_summary.CLAIM_BEGIN) < TEXT.index(results_summary.FIGURE_BEGIN.format(kind="total"))
+    assert TEXT.index(results_figures.CLAIM_BEGIN) < TEXT.index(results_figures.FIGURE_BEGIN.format(kind="total"))
 
 
 def test_each_figure_of_means_has_its_own_range_the_slow_run_and_counts_by_the_pages_rule(drawn):
     """Review r24c: Figure 2 borrowed Figure 3's log scale (its tie band 3 px tall), neither showed the run with
     python-fcl on both sides, and the text alternative counted "below 1" where the page counts with 0.90 / 1.10."""
     kind, fig = drawn
-    every = [r for series in results_summary.ratios(TEXT, kind).values() for by in series.values() for r in by.values()]
+    every = [r for series in results_figures.ratios(TEXT, kind).values() for by in series.values() for r in by.values()]
     low, high = fig.axes[0].get_ylim()
     assert low < min(every) and high > max(every)  # no point on the frame
     assert high / low < (12 if kind == "total" else 60)  # the total's own range, not the sampling stage's
@@ -231,7 +231,7 @@ def test_each_figure_of_means_has_its_own_range_the_slow_run_and_counts_by_the_p
         assert [t.get_text() for t in edges.get_yticklabels()] == ["0.9", "1.1"]
     names = [t.get_text() for t in fig.legends[0].get_texts()]
     assert "ours, accurate strong network, python-fcl on both sides" in names
-    block = TEXT.partition(results_summary.FIGURE_BEGIN.format(kind=kind))[2]
+    block = TEXT.partition(results_figures.FIGURE_BEGIN.format(kind=kind))[2]
     rows = re.findall(
         r"(?m)^\| (ours[^|]*|the paper[^|]*) \| 16 \| (\d+) \| (\d+) \| (\d+) \|$", block.split("<!--")[0]
     )

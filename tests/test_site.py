@@ -332,7 +332,7 @@ def test_the_index_table_counts_the_recorded_cells():
     from toolkit.experiments.paper_numbers import IMPROVEMENT
     from toolkit.teaching import recorded
     from tools.recorded_results import RESULTS, parse
-    from tools.results_summary import NAMES, change
+    from tools.results_words import NAMES, change
 
     tables = parse(RESULTS.read_text())
 
@@ -390,7 +390,7 @@ def test_the_index_table_counts_the_recorded_cells():
     assert "savings in the table's `paper` row are not the method working" in answer  # review r23b: a row named
     # review r28e: by means the compiled checker "saved" 3 cells to python-fcl's 2, against the answer; said why, in
     # one sentence (reader r29e: each cell's figures are the results page's)
-    from tools.results_summary import noise
+    from tools.results_noise import noise
 
     floor = noise(tables).means
     own = recorded.query_ratios(recorded.ALGORITHM_1, tables)
@@ -1631,3 +1631,24 @@ def read(url: str) -> Links | None:
 def test_no_internal_link_is_broken(site, served):
     pages, broken = crawl(served)
     assert pages >= 30 and broken == []
+
+
+def test_folded_headings_stay_out_of_the_table_of_contents():
+    """Review r28f, item 7: the results page's table of contents listed every table folded inside a ``<details>``.
+    Headings in a fold, at any depth of folds, leave the contents; the ones outside stay, with their children."""
+    from mkdocs.structure.toc import get_toc
+
+    page = (
+        '<h2 id="run">Run</h2><details><summary>tables</summary><h3 id="t1">T1</h3>'
+        '<details><summary>more</summary><h3 id="t2">T2</h3></details><h3 id="t3">T3</h3></details>'
+        '<h3 id="shown">Shown</h3><h2 id="next">Next</h2>'
+    )
+    assert site_hooks.folded(page) == {"t1", "t2", "t3"}
+    tokens = [
+        {"level": 2, "id": "run", "name": "Run", "children": []},
+        {"level": 3, "id": "t1", "name": "T1", "children": []},
+        {"level": 3, "id": "shown", "name": "Shown", "children": []},
+        {"level": 2, "id": "next", "name": "Next", "children": []},
+    ]
+    toc = site_hooks.unfolded(list(get_toc(site_hooks.nested(tokens))), site_hooks.folded(page))
+    assert [(e.id, [c.id for c in e.children]) for e in toc] == [("run", ["shown"]), ("next", [])]

@@ -58,6 +58,7 @@ CODE_BLOCK = re.compile(
 )
 BARE_CODE = re.compile(r"(?P<pre><pre\b(?![^>]*tabindex)[^>]*>(?:<span></span>)?)<code(?![^>]*tabindex)")  # it scrolls
 REGION = 'tabindex="0" role="region" aria-label="code"'
+FOLD_OR_HEADING = re.compile(r'<(?P<close>/?)details\b|<h[1-6] id="(?P<id>[^"]+)"')  # a fold's edges and headings
 OUTPUT_TAB_STOP = re.compile(r'(<div class="[^"]*\bjp-OutputArea-output\b[^"]*"[^>]*?)\s+tabindex="0"')
 CELL_TAB_STOP, CELL = (
     '<div class="jp-Cell-inputWrapper" tabindex="0">',
@@ -118,6 +119,9 @@ def on_page_content(html: str, page: Page, config, files: Files) -> str:
     """Notebook pages: links go to pages, MathJax comes from the site, no mermaid loader. API reference:
     Sphinx roles become cross-references. Every page: its code blocks can be reached by keyboard."""
     html = focusable_code(html)
+    toc = getattr(page, "toc", None)  # a Markdown page's, made by mkdocs before this hook
+    if toc is not None:
+        toc.items = unfolded(list(toc), folded(html))
     if page.file.src_uri.startswith("reference/"):
         return cross_references(html)
     if not page.file.src_uri.endswith(".ipynb"):
@@ -246,6 +250,26 @@ def headings_and_contents(html: str, page: Page) -> str:
     html = HEADING.sub(unique, html)
     page.toc = get_toc(nested(tokens))
     return html
+
+
+def folded(html: str) -> set[str]:
+    """The ids of the headings inside a ``<details>`` fold of ``html``, at any depth of folds."""
+    depth, ids = 0, set()
+    for match in FOLD_OR_HEADING.finditer(html):
+        if match["id"] is None:
+            depth += -1 if match["close"] else 1
+        elif depth > 0:
+            ids.add(match["id"])
+    return ids
+
+
+def unfolded(entries: list, hidden: set[str]) -> list:
+    """A table of contents' ``entries`` without those whose heading is folded away (review r28f, item 7: the results
+    page's contents listed each of its twenty folded tables); their anchors still work."""
+    kept = [entry for entry in entries if entry.id not in hidden]
+    for entry in kept:
+        entry.children = unfolded(list(entry.children), hidden)
+    return kept
 
 
 def nested(tokens: list[Heading]) -> list[Heading]:

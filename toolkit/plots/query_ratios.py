@@ -37,8 +37,8 @@ Cells = Mapping[str, Mapping[str, tuple[float, float, float]]]  # {scenario: {sa
 MEANS_STYLES = (  # :func:`means_grid`'s series in turn: colour, marker, hollow; no verdict look of own_ratios
     (LINE_COLORS[5], "o", True),  # grey, hollow circles: the paper's own numbers (r28f: its cross read as the pluses)
     (LINE_COLORS[3], "D", False),  # bluish green diamonds: a network with our compiled checker
-    (LINE_COLORS[0], "v", True),  # blue, hollow triangles: the same network with python-fcl
-    (LINE_COLORS[4], "P", False),  # reddish purple pluses: another network with our compiled checker
+    (LINE_COLORS[0], "v", False),  # blue triangles: another network with our compiled checker
+    (LINE_COLORS[4], "P", True),  # reddish purple, hollow pluses: that network with python-fcl (hollow, as Figure 1's)
     (LINE_COLORS[1], "h", True),  # vermillion, hollow hexagons: that network with python-fcl
 )
 """Each series a hue of its own, its marker a second cue (review r25c: two pinks and two greens alike at 1280 px)."""

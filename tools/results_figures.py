@@ -1,0 +1,170 @@
+"""The results page's three figures and their text. Figure 1, :data:`CLAIM_FIGURE`, is the statistic the verdict on
+the paper's claim reads: the `strong` network inside Algorithm 1, the median of each query's own ratio with its middle
+half, with our compiled checker (filled) and with python-fcl on both sides (hollow; :data:`CLAIM_SERIES`), drawn by
+:func:`toolkit.plots.query_ratios.own_ratios`. Figures 2 and 3, :data:`FIGURES`, are Table 3's total and sampling
+columns by means, ours beside the paper's (:func:`table3_figure`, :func:`toolkit.plots.query_ratios.means_grid`).
+Each one's text alternative is written between its markers; each PNG carries the same text (its ``Description``), so
+``tests/test_results_figure.py`` fails while the picture or its words no longer match the tables."""
+
+from __future__ import annotations
+
+import html
+import math
+
+from matplotlib.figure import Figure
+
+from toolkit.experiments.paper_numbers import IMPROVEMENT
+from toolkit.plots import alt, query_ratios
+from toolkit.teaching import checker_scope, findings, recorded
+from toolkit.teaching.recorded import Tables
+from tools.recorded_results import RESULTS, parse
+from tools.results_noise import NOISE_EDGE, at_noise_edge, noise, noise_line, own_intervals, reach_of
+from tools.results_words import NAMES, change
+
+FIGURES = {kind: RESULTS.parent / f"results_table3_{kind}.png" for kind in ("total", "sampling")}  # Table 3's columns
+LEADS = {  # what each figure shows, over it
+    "total": "**Figure 2: a whole query's time, by means** (Table 3's *Total* columns), each against Algorithm 1 "
+    "without prediction, ours beside the paper's.",
+    "sampling": "**Figure 3: the sampling stage's time, by means** (Table 3's *Sampling* columns), each against "
+    "Algorithm 1 without prediction, ours beside the paper's.",
+}
+TICKS = {"total": (0.9, 1.1), "sampling": (0.9, 1.1, 3.0)}  # labelled beside each figure's 1-2-5 steps
+MARGINS = {"total": 1.15, "sampling": 1.25}  # each figure's range: its points', widened by this factor
+ROW_HEIGHTS = {"total": 2.9, "sampling": 3.2}  # inches a row of panels: each band is read to 0.9 and 1.1 (r27f)
+CLAIM_FIGURE = RESULTS.parent / "results_claim.png"  # Figure 1: the statistic the verdict on the paper's claim reads
+CLAIM_BEGIN = "<!-- figure of the claim: drawn by `python -m tools.results_summary` from the tables below -->"
+CLAIM_END = "<!-- end of the figure of the claim -->"
+CLAIM_TITLE = "strong network inside Algorithm 1: total time, each query's own ratio"
+CLAIM_SERIES = ("our compiled checker on both sides", "python-fcl on both sides")  # Figure 1's filled and hollow points
+FIGURE_BEGIN = "<!-- figure of {kind} times: drawn by `python -m tools.results_summary` from the tables below -->"
+FIGURE_END = "<!-- end of the figure of {kind} times -->"
+FIGURE_DPI = 110  # as docs/crossover.png: the site's column shows it at about its size
+SOURCES = {  # a series of the figure: its preset in the tables (None: the paper's own numbers) and its name; the
+    # 1-2 December run with python-fcl is history, left out (review r27f, item 5: five series were 80 markers)
+    "the paper (Table 3)": None,
+    "ours, paper network, compiled checker of 2 December": "paper",
+    "ours, accurate strong network, compiled checker of 5 December": recorded.ALGORITHM_1,
+    "ours, accurate strong network, python-fcl on both sides": checker_scope.SLOW,
+}
+
+
+def ratios(text: str, kind: str = "total") -> dict[str, dict[str, dict[str, float]]]:
+    """Table 3's ``kind`` columns ("total" or "sampling") as time ratios with / without (``1 - improvement``, means,
+    against Algorithm 1), from the paper and from the page ``text``'s runs of the `paper` recipe:
+    ``{scenario: {series: {sampler: ratio}}}``."""
+    tables = parse(text)
+    found: dict[str, dict[str, dict[str, float]]] = {}
+    for scenario in NAMES:  # the paper's order
+        for name, preset in SOURCES.items():
+            if preset is not None and scenario not in recorded.table(preset, "time improvement", tables):
+                continue  # a run that did not plan this scenario
+            saved = (
+                IMPROVEMENT[scenario][kind]
+                if preset is None
+                else recorded.improvements(preset, scenario, kind, recorded=tables)
+            )
+            found.setdefault(scenario, {})[name] = {s: round(1 - v, 6) for s, v in saved.items()}
+    return found
+
+
+def table3_figure(text: str, kind: str = "total") -> Figure:
+    """One of the page's figures: per scenario, each sampler's mean ``kind`` time ("total" or "sampling") with /
+    without prediction against Algorithm 1, the paper's beside ours (:func:`ratios`), the tie band of :data:`RULE`
+    shaded; a grid of two columns, one legend, and one log axis for its panels, so the same ratio stands at the same
+    height in every panel (:func:`toolkit.plots.query_ratios.means_grid`); each figure its own range, so the tie band of
+    the total times is not squeezed by the sampling stage's wider one, the band's edges labelled (:data:`TICKS`)."""
+    every = [r for series in ratios(text, kind).values() for by in series.values() for r in by.values()]
+    margin = MARGINS[kind]  # room between the outermost points and the frame
+    ylim = (min(*every, 1 - findings.TIE) / margin, max(*every, 1 + findings.TIE) * margin)
+    return query_ratios.means_grid(
+        {f"{NAMES[s]}: {kind} time, means": series for s, series in ratios(text, kind).items()},
+        tie=findings.TIE,
+        ylim=ylim,
+        ticks=TICKS[kind],
+        row_height=ROW_HEIGHTS[kind],
+    )
+
+
+def claim_figure(text: str) -> Figure:
+    """Figure 1: what the verdict on the paper's claim reads (:func:`accurate_in_algorithm_1`), the median of each
+    query's own ratio with its middle half, per scenario and sampler (:func:`toolkit.plots.query_ratios.own_ratios`)."""
+    tables = parse(text)
+    return query_ratios.own_ratios(
+        own_intervals(tables),
+        title=CLAIM_TITLE,
+        tie=findings.TIE,
+        slow=own_intervals(tables, checker_scope.SLOW),
+        series=CLAIM_SERIES,
+    )
+
+
+def claim_markdown(text: str) -> str:
+    """Figure 1 as the page ``text`` shows it: what it shows and that it is the verdict's statistic, then the picture
+    with its text alternative and its longer description; its counts are the summary's (review r27f, item 2)."""
+    fig = claim_figure(text)
+    tables = parse(text)
+    edge = at_noise_edge(own_intervals(tables), tables) + [
+        f"{cell} (hollow)" for cell in at_noise_edge(own_intervals(tables, checker_scope.SLOW), tables)
+    ]
+    lead = (  # review r28f, item 1: the title over the plot, the caption under it, so the figure fits one screen
+        "**Figure 1: the paper's claim, as the verdict reads it**: the accurate `strong` network inside Algorithm 1, "
+        "each query's total time with prediction over its own time without."
+    )
+    caption = (  # review r29f, item 1: the caption and the noise floor one paragraph under the plot
+        "Each point is the median of those ratios over 100 queries a scenario (the same for each sampler), its whisker "
+        "their middle half. *Shape and colour = verdict, fill = checker*: filled, our compiled checker; hollow, "
+        "python-fcl on both sides. The summary above counts the points."
+    )
+    edge_said = (
+        f" Cells that read as costs or savings but lie within {NOISE_EDGE * reach_of(tables):.2f} of 1 (twice "
+        f"that reach) are at the noise edge: {', '.join(edge)}."
+        if edge
+        else ""
+    )
+    described = alt.details_html(alt.details(fig)).strip()
+    picture = f"![{html.escape(alt.alt_text(fig))}]({CLAIM_FIGURE.name})"
+    return f"{lead}\n\n{picture}\n\n{caption} {noise_line(tables)}{edge_said}\n\n{described}"
+
+
+def means_not_verdict(tables: Tables) -> str:
+    """Over Figure 2: its points are means, while the page's verdict on the paper's claim reads each query's own ratio
+    (:func:`accurate_in_algorithm_1`); the `strong` cell where the two statistics lie furthest apart shows it."""
+    medians = recorded.query_ratios(recorded.ALGORITHM_1, tables)
+    cells = [
+        (NAMES.get(s, s), sampler, 1 - saved, medians[s][sampler])
+        for s in medians
+        for sampler, saved in recorded.improvements(recorded.ALGORITHM_1, s, recorded=tables).items()
+    ]
+    name, sampler, mean, median = max(cells, key=lambda c: abs(math.log(c[2] / c[3])))
+    return (
+        " Figures 2 and 3 show means, Table 3's statistic; the verdict on the paper's claim reads each query's own "
+        f"ratio (Figure 1): the `strong` network's {name} {sampler}, for one, is {mean:.2f} by means here and "
+        f"{median:.2f} by its median query there."
+    )
+
+
+def figure_markdown(text: str, kind: str = "total") -> str:
+    """The figure of ``kind`` as the page ``text`` shows it: a line that names it, the picture with its text
+    alternative and its longer description under it, then a small table that counts each series' points by the tie
+    rule."""
+    fig = table3_figure(text, kind)
+    counts: dict[str, list[str]] = {}
+    for series in ratios(text, kind).values():
+        for name, by_sampler in series.items():
+            counts.setdefault(name, []).extend(change(r) for r in by_sampler.values())
+    rows = [
+        f"| {name} | {len(words)} | {words.count('less time')} | {words.count('about the same time')} "
+        f"| {words.count('more time')} |"
+        for name, words in counts.items()
+    ]
+    head = f"| {kind} time | cells | saved 10 % or more | tied | lost 10 % or more |\n| --- | --- | --- | --- | --- |"
+    described = alt.details_html(alt.details(fig)).strip()
+    shown = f"![{html.escape(alt.alt_text(fig))}]({FIGURES[kind].name})\n\n{described}"
+    floor = noise(parse(text))
+    said = (
+        f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule (0.90 or less: saved; 1.10 or "
+        f"more: lost). Timing alone moved a ratio of means to {floor.means[0]:.2f}–{floor.means[1]:.2f}, wider than "
+        "the band: read a row's counts together, never one cell."
+    )
+    lead = LEADS[kind] + (means_not_verdict(parse(text)) if kind == "total" else "")
+    return f"{lead}\n\n{shown}\n\n{said}\n\n{head}\n" + "\n".join(rows)

@@ -1,0 +1,90 @@
+"""The results page's noise floor: how far timing one computation twice moved each of its ratios (the `strong
+--planner paper` run's table "timed twice", :func:`noise`), and the cells of Figure 1 that lie at its edge
+(:func:`at_noise_edge`), so no single cell inside timing's own reach is read as evidence (review r28f)."""
+
+from __future__ import annotations
+
+import re
+from typing import NamedTuple
+
+from toolkit.teaching import recorded
+from toolkit.teaching.recorded import Tables
+from tools.results_words import NAMES, change
+
+NOISE_EDGE = 2  # a median within this many times timing's own reach of 1 reads "at the noise edge"
+INTERVAL = re.compile(r"(\d+\.\d+) \((\d+\.\d+)–(\d+\.\d+)\)")  # "1.24 (1.12–1.36)": a median (middle half)
+
+
+def medians_floor(tables: Tables) -> tuple[float, float] | None:
+    """How far timing alone moved a ratio of the two medians (:func:`noise`); ``None`` where ``tables`` hold no run
+    timed twice."""
+    try:
+        return noise(tables).medians
+    except (KeyError, StopIteration):
+        return None
+
+
+def own_intervals(tables: Tables, key: str = recorded.ALGORITHM_1) -> dict[str, dict[str, tuple[float, float, float]]]:
+    """The `strong` network inside Algorithm 1 (``key``: with our compiled checker, or :data:`checker_scope.SLOW`), its
+    table "each query's own ratio": ``{scenario name: {sampler: (median, q1, q3)}}`` of each query's total time with /
+    without prediction."""
+    found: dict[str, dict[str, tuple[float, float, float]]] = {}
+    for scenario, cells in recorded.table(key, "each query's own ratio", tables).items():
+        for column, cell in cells.items():  # "Total BS": "1.13 (0.77–1.59)"
+            read = INTERVAL.fullmatch(cell)
+            if read is None:
+                raise ValueError(f"each query's own ratio, {scenario} {column}: {cell!r} is no 'median (q1–q3)'")
+            found.setdefault(NAMES.get(scenario, scenario), {})[column.split()[1]] = (
+                float(read[1]),
+                float(read[2]),
+                float(read[3]),
+            )
+    return found
+
+
+class Noise(NamedTuple):
+    """How far timing alone moved each statistic: the table "timed twice" (one computation, Algorithm 1 without
+    prediction, timed twice in turn), its lowest and highest ratio per column."""
+
+    own: tuple[float, float]  # the median of each query's own ratio
+    means: tuple[float, float]  # the ratio of the means
+    medians: tuple[float, float]  # the ratio of the two medians
+
+
+def noise(tables: Tables) -> Noise:
+    """The noise floor of the `strong --planner paper` run (:class:`Noise`)."""
+    twice = next(t for heading, t in tables[recorded.ALGORITHM_1].items() if "timed twice" in heading)
+    rows = twice["rows"]  # scenario, sampler, ratio of the means, ratio of the medians, each query's own ratio
+
+    def reach(column: int) -> tuple[float, float]:
+        values = [float(row[column].split()[0]) for row in rows]
+        return min(values), max(values)
+
+    return Noise(own=reach(4), means=reach(2), medians=reach(3))
+
+
+def noise_line(tables: Tables) -> str:
+    """One line: how far timing alone moved a median query and a ratio of means."""
+    floor = noise(tables)
+    return (
+        f"*Noise floor* (the table “timed twice”: one computation timed twice): timing alone moved a median of each "
+        f"query's own ratio to {floor.own[0]:.2f}–{floor.own[1]:.2f} and a ratio of means to "
+        f"{floor.means[0]:.2f}–{floor.means[1]:.2f}."
+    )
+
+
+def reach_of(tables: Tables) -> float:
+    """How far from 1 timing alone moved a median of each query's own ratio (:func:`noise`)."""
+    return max(abs(v - 1) for v in noise(tables).own)
+
+
+def at_noise_edge(medians: dict[str, dict[str, tuple[float, float, float]]], tables: Tables) -> list[str]:
+    """The cells read as saving or costing time whose median lies less than :data:`NOISE_EDGE` times timing's own
+    reach from 1 (:func:`noise`): ``["2DS BS 1.13", ...]``."""
+    reach = reach_of(tables)
+    return [
+        f"{scenario} {sampler} {m:.2f}"
+        for scenario, by in medians.items()
+        for sampler, (m, _, _) in by.items()
+        if change(m) != "about the same time" and abs(m - 1) < NOISE_EDGE * reach
+    ]
