@@ -106,7 +106,7 @@ def scene_still(
         hide = None if samples is None else over_robot(ax, robot, q, samples[0])  # (N,) marks over the robot
         drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE, hide=hide)
         seen.setdefault(label, (drawn, near, angles))
-        verdict = model_words((model or {}).get(label))
+        verdict = model_words((model or {}).get(label), ok)
         ax.set_title(
             f"{label}, close up{_STATE[ok]}{verdict}" if not turn else f"{label}, {turn_words(turn)}", fontsize=10
         )
@@ -226,7 +226,7 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
     ]
     said = [
         f"{label}{_STATE[valid.get(label)]}"
-        + model_words(model.get(label)).replace("\n", ", ")
+        + model_words(model.get(label), valid.get(label)).replace("\n", ", ")
         + (f", {seen[label][0]} sample{'s' * (seen[label][0] != 1)} near it" if samples else "")
         for label in seen
     ]
@@ -240,10 +240,25 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
     return text + "; then the robot close up among the blocks near it: " + "; ".join(said) + ".", parts
 
 
+SCENE_NAMES = {  # robot -> the scenario and the robot as the pages name them (reader r28e: not "3do", "youbot")
+    "youbot": ("3DO", "youBot"),
+    "chain7": ("3DC-7", "box chain"),
+    "chain9": ("3DC-9", "box chain"),
+    "point2d": ("2DS", "point robot"),
+}
+
+
+def scene_words(workspace: Workspace, robot: BoxRobot) -> str:
+    """A scene's workspace and robot by the pages' names, for the captions of its 3D views and stills: "3DO (28
+    blocks) with the youBot (8 DoF)"."""
+    scenario, name = SCENE_NAMES.get(robot.name, (f"workspace {workspace.family}", f"{robot.name} robot"))
+    return f"{scenario} ({len(workspace.boxes)} blocks) with the {name} ({robot.dof} DoF)"
+
+
 def _overview_words(robot, workspace, poses, samples, trace) -> str:
     """What a still's overview draws, in words: the workspace, its samples by kind, the path, the robot at each
     pose."""
-    text = f"The {robot.name} robot in workspace {workspace.family} ({len(workspace.boxes)} blocks) as a still: "
+    text = f"{scene_words(workspace, robot)} as a still: "
     text += "the whole workspace"
     if samples is not None:
         text += ", " + ", ".join(
@@ -251,9 +266,13 @@ def _overview_words(robot, workspace, poses, samples, trace) -> str:
         )
         step = overview_step(len(samples[0]))
         text += f", 1 sample in {step} of every kind drawn" if step > 1 else ""
-        text += ", and every dangerous mistake" if step > 1 and dangerous_mask(samples[1]).any() else ""
+        text += ", and all the dangerous mistakes" if step > 1 and dangerous_mask(samples[1]).any() else ""
     text += ", the path of the robot's base and its shadow on the floor, dotted" if trace is not None else ""
-    text += ", a thin line from each pose straight down to the floor" if poses else ""
+    text += (
+        f", a thin line from the robot's base straight down to the floor{' at each pose' * (len(poses) > 1)}"
+        if poses
+        else ""
+    )
     if poses:
         text += ", the robot drawn " + ("over them" if samples is not None else "in it")
         text += " at each pose, labelled" if len(poses) > 1 else ", ringed, its name beside the workspace"
