@@ -368,7 +368,7 @@ def test_a_stills_close_up_says_what_the_model_answers(crossing):
     # readers r28e, r29e: and says the robot is itself a mistake, the conservative kind
     assert (
         close_up.get_title()
-        == "the robot, close up, valid\nthe model: P(valid) 0.08, rejects it: a conservative mistake"
+        == "the robot, close up, valid\nthe model: P(valid) 0.08, rejects it:\na conservative mistake"
     )
     assert turned.get_title() == "the robot, a sixth of a turn round"
     assert "the robot, valid, the model: P(valid) 0.08, rejects it: a conservative mistake" in alt_text(fig)

@@ -236,7 +236,7 @@ def model_words(answer: tuple[float, bool] | None, valid: bool | None = None) ->
     the exact checker's ``valid`` differs, which mistake that is (readers r28e, r29e: the robot is itself one)."""
     if answer is None:
         return ""
-    wrong = "" if valid is None or answer[1] == valid else f": a {('dangerous', 'conservative')[valid]} mistake"
+    wrong = "" if valid is None or answer[1] == valid else f":\na {('dangerous', 'conservative')[valid]} mistake"
     return f"\nthe model: P(valid) {answer[0]:.2f}, {('rejects', 'accepts')[answer[1]]} it{wrong}"
 
 
