@@ -107,8 +107,7 @@ def closest_above(probability: np.ndarray, threshold: float) -> str:
     frame = int(above[np.argmin(probability[above])])
     return (
         f"The frame that comes nearest the threshold from above: frame {frame}, P(valid) {probability[frame]:.3f} "
-        f"against {threshold:.3f}; it is called valid, so no band marks it, however close its dip comes to the dashed "
-        "line."
+        f"against {threshold:.3f}: called valid, so no band marks it, however near the dashed line it comes."
     )
 
 
