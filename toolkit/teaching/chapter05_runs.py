@@ -46,8 +46,8 @@ def networks(threshold: float) -> str:
     record's two, each with the threshold it chose."""
     return (
         f"Three trainings of the `strong` recipe appear on this page, each with its own threshold: this notebook's "
-        f"model here (threshold {threshold:.2f}), the lazy-PRM run's ({run_name('strong')}) and the one the answer at the top "
-        f"times in Algorithm 1 ({run_name(COMPILED)})."
+        f"model here (threshold {threshold:.2f}), the lazy-PRM run's ({run_name('strong')}) and the one the answer at "
+        f"the top times in Algorithm 1 ({run_name(COMPILED)})."
     )
 
 
