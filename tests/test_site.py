@@ -175,7 +175,8 @@ def test_the_embedded_scenes_are_titled_and_told_in_words(site):
     frames = re.findall(r"<iframe\b[^>]*>", page)
     assert len(frames) >= 3
     titles = [re.search(r'title="([^"]*)"', f).group(1) for f in frames]
-    assert all(re.match(r"3D (scene|animation) of workspace \w+ \(\d+ blocks\) with the \w+ robot", t) for t in titles)
+    named = r"3D (scene|animation) of (3DO|3DC-7|3DC-9) \(\d+ blocks\) with the (youBot|box chain) \(\d DoF\)"  # r28e
+    assert all(re.match(named, t) for t in titles)
     assert len(set(titles)) == len(titles)  # every view titled apart: the animation from its scene (issue 47)
     summaries = re.findall(r'<p class="scene-summary">([^<]*)</p>', page)
     assert len(summaries) == len(frames) and all("valid" in s for s in summaries)

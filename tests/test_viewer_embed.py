@@ -363,7 +363,8 @@ def test_the_animation_is_titled_apart_from_the_scene_and_says_p_valid_in_words(
     v.show_plan(planned_exactly)
     scene, animation = v.iframe(200), v.animation_iframe(200, frames=5, seconds=1.0)
     titles = [found(r'title="([^"]*)"', snippet) for snippet in (scene, animation)]
-    assert titles[0].startswith("3D scene of workspace 3dc") and titles[1].startswith("3D animation of workspace 3dc")
+    assert titles[0].startswith("3D scene of 3DC-7 (") and titles[1].startswith("3D animation of 3DC-7 (")  # r28e
+    assert "with the box chain (7 DoF)" in titles[0]  # the pages' names, not the code's "chain7 robot"
     said = html.unescape(found(r'<p class="scene-summary">([^<]*)</p>', animation))
     assert "The exact checker finds the robot valid at 5 of the 5 frames." in said  # a verified path
     assert "goes from 0.20 to 0.80 along the path, median 0.50" in said  # 0.2, 0.35, 0.5, 0.65, 0.8

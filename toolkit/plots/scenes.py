@@ -100,21 +100,39 @@ def scene_still(
         _ring_the_robot(fig.axes[2 * first], robot, workspace, views[0][1])
     # pose -> (samples drawn in its close-up, blocks near it, the camera's elevation and azimuth)
     seen: dict[str, tuple[int, int, tuple[float, float]]] = {}
+    moved = False  # a z axis moved, maybe beside the other view's: the panels further apart
     for ax, (label, q, turn) in zip(panels, views):
         ok = valid.get(label)
         near, angles = close_up(ax, robot, q, workspace, color=colors[label], margin=margin, turn=turn)
         hide = None if samples is None else over_robot(ax, robot, q, samples[0])  # (N,) marks over the robot
         drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE, hide=hide)
         seen.setdefault(label, (drawn, near, angles))
-        verdict = model_words((model or {}).get(label))
+        moved |= _z_apart(ax)  # reader r29e: the turned view's z ticks stood over its y ticks
+        verdict = model_words((model or {}).get(label), ok)
         ax.set_title(
             f"{label}, close up{_STATE[ok]}{verdict}" if not turn else f"{label}, {turn_words(turn)}", fontsize=10
         )
-    _still_legend(fig, valid, h_pad=4.0 if first else 1.5)  # r25b: 80 px between a path's overview and close-ups
+    _still_legend(fig, valid, h_pad=4.0 if first else 1.5, w_pad=8.0 if moved else 5.0, close_ups=panels)  # r25b
     described = _still_described(
         robot, workspace, poses, valid, samples, trace, seen, model or {}, views[-1][2] if views else 0.0
     )
     return describe(fig, *described)
+
+
+def _z_apart(ax) -> bool:
+    """A close-up's z axis moved to the panel's other side where its ticks stand over the y axis' on one edge
+    (readers r28e, r29e: stacked there, the z and y ticks read as one axis); whether it moved."""
+
+    def stacked() -> bool:
+        z, y = ax.zaxis.get_tightbbox(), ax.yaxis.get_tightbbox()
+        return z is not None and y is not None and z.x0 < y.x1 and y.x0 < z.x1  # sharing a strip of the panel
+
+    for position in ("lower", "upper", "default"):  # the default last: where neither other side helps
+        if not stacked():
+            return position != "lower"
+        ax.zaxis.set_ticks_position(position)
+        ax.zaxis.set_label_position(position)
+    return False
 
 
 def _still_panels(views: int, first: int, is_flat: bool) -> tuple[Figure, list]:
@@ -166,9 +184,11 @@ def _overview_name(label: str, poses: int, valid: bool | None) -> str:
     return ("the robot" if poses == 1 else label) + (", in collision" if valid is False else "")
 
 
-def _still_legend(fig: Figure, valid: dict[str, bool], h_pad: float = 4.0) -> None:
+def _still_legend(
+    fig: Figure, valid: dict[str, bool], h_pad: float = 4.0, w_pad: float = 5.0, close_ups: list | tuple = ()
+) -> None:
     """The still's legend, under its panels: every mark they name and the robot's states drawn; ``h_pad`` between
-    the rows of panels (font sizes: a close-up's "x" over the overview's title needs 4)."""
+    rows of panels (a close-up's "x" over the overview's title needs 4), ``w_pad`` between ``close_ups``."""
     handles = star_on_mark({name: h for ax in fig.axes for h, name in zip(*ax.get_legend_handles_labels())})
     shown = {ok for ok in valid.values() if ok is not None}  # the robot's states drawn: name those alone
     handles |= {
@@ -176,8 +196,10 @@ def _still_legend(fig: Figure, valid: dict[str, bool], h_pad: float = 4.0) -> No
         for ok, text, c in ((True, "robot, valid", VALID_COLOR), (False, "robot, in collision", INVALID_COLOR))
         if ok in shown
     }
-    fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=5.0, h_pad=h_pad)  # r17c: "y" met a title;
+    fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=w_pad, h_pad=h_pad)  # r17c: "y" met a title;
     #   r23b: a close-up's "x" touched the overview's title at h_pad 2.5
+    for ax in close_ups:  # the layout reshapes each panel, and mplot3d may then draw its z axis on the other side
+        _z_apart(ax)
     low = min((ax.get_tightbbox() or ax.bbox).y0 for ax in fig.axes) / fig.bbox.height  # the lowest label
     for ncol in (3, 2, 1):  # reader r25b: a three-column legend wider than the panels widened the PNG to 1008 px
         legend = fig.legend(
@@ -226,7 +248,7 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
     ]
     said = [
         f"{label}{_STATE[valid.get(label)]}"
-        + model_words(model.get(label)).replace("\n", ", ")
+        + model_words(model.get(label), valid.get(label)).replace(":\n", ": ").replace("\n", ", ")
         + (f", {seen[label][0]} sample{'s' * (seen[label][0] != 1)} near it" if samples else "")
         for label in seen
     ]
@@ -240,10 +262,25 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
     return text + "; then the robot close up among the blocks near it: " + "; ".join(said) + ".", parts
 
 
+SCENE_NAMES = {  # robot -> the scenario and the robot as the pages name them (reader r28e: not "3do", "youbot")
+    "youbot": ("3DO", "youBot"),
+    "chain7": ("3DC-7", "box chain"),
+    "chain9": ("3DC-9", "box chain"),
+    "point2d": ("2DS", "point robot"),
+}
+
+
+def scene_words(workspace: Workspace, robot: BoxRobot) -> str:
+    """A scene's workspace and robot by the pages' names, for the captions of its 3D views and stills: "3DO (28
+    blocks) with the youBot (8 DoF)"."""
+    scenario, name = SCENE_NAMES.get(robot.name, (f"workspace {workspace.family}", f"{robot.name} robot"))
+    return f"{scenario} ({len(workspace.boxes)} blocks) with the {name} ({robot.dof} DoF)"
+
+
 def _overview_words(robot, workspace, poses, samples, trace) -> str:
     """What a still's overview draws, in words: the workspace, its samples by kind, the path, the robot at each
     pose."""
-    text = f"The {robot.name} robot in workspace {workspace.family} ({len(workspace.boxes)} blocks) as a still: "
+    text = f"{scene_words(workspace, robot)} as a still: "
     text += "the whole workspace"
     if samples is not None:
         text += ", " + ", ".join(
@@ -251,9 +288,13 @@ def _overview_words(robot, workspace, poses, samples, trace) -> str:
         )
         step = overview_step(len(samples[0]))
         text += f", 1 sample in {step} of every kind drawn" if step > 1 else ""
-        text += ", and every dangerous mistake" if step > 1 and dangerous_mask(samples[1]).any() else ""
+        text += ", and all the dangerous mistakes" if step > 1 and dangerous_mask(samples[1]).any() else ""
     text += ", the path of the robot's base and its shadow on the floor, dotted" if trace is not None else ""
-    text += ", a thin line from each pose straight down to the floor" if poses else ""
+    text += (
+        f", a thin line from the robot's base straight down to the floor{' at each pose' * (len(poses) > 1)}"
+        if poses
+        else ""
+    )
     if poses:
         text += ", the robot drawn " + ("over them" if samples is not None else "in it")
         text += " at each pose, labelled" if len(poses) > 1 else ", ringed, its name beside the workspace"

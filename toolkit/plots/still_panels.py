@@ -44,8 +44,7 @@ SAMPLE_WORDS = {
     "in collision": "diamonds",
     "model wrong": "black sparkles round their marks, larger on a diamond",
 }  # SAMPLE_MARKS in words
-DANGEROUS_STAR = 1.8  # a star round a dangerous mistake (a diamond) this many times the area of a conservative one's,
-#   its line thicker (reader r27e: at 10 px the one dangerous star read as the conservative ones)
+DANGEROUS_STAR = 1.8  # a dangerous mistake's star this many times a conservative one's area, its line thicker (r27e)
 DANGEROUS_LABEL = "sample, model wrong, dangerous"  # a collection of the larger stars, round diamonds
 OVERVIEW_SAMPLES = 200  # at most this many samples in a still's overview: more hide the blocks and the robot
 OVERVIEW_STAR = 150  # points²: an overview's star round a mistake (a close-up's: SAMPLE_MARKS' 300, scaled)
@@ -109,7 +108,8 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
     ax.set_box_aspect(extent, zoom=FLAT_ZOOM if flat(workspace) else 1.0)  # a flat office: wider, less blank above
     few_ticks(ax)
     drawn = f", 1 sample in {step} drawn" if step > 1 else ""
-    drawn += f"\nand every dangerous mistake ({extra} more)" if extra else ""
+    every = 0 if samples is None else int(dangerous_mask(samples[1]).sum())  # reader r29e: "(11 more)" was cryptic
+    drawn += f"\nand all {every} dangerous mistakes ({extra} added to the 1-in-{step} draw)" if extra else ""
     ax.set_title(f"the whole workspace: {len(workspace.boxes)} blocks{drawn}", fontsize=10)
 
 
@@ -123,7 +123,7 @@ def _floor_cues(ax, robot: BoxRobot, poses: list[np.ndarray], trace, floor: floa
     for k, q in enumerate(poses):
         base = robot.link_boxes(np.asarray(q, dtype=float)[None])[0][0, 0]  # (3,) the first link's centre
         down = np.array([base, [base[0], base[1], floor]])  # (2, 3)
-        ax.plot(*down.T, zorder=2.5, gid="drop", label="" if k else "drop to the floor", **DROP_STYLE)
+        ax.plot(*down.T, zorder=2.5, gid="drop", label="" if k else DROP_LABEL, **DROP_STYLE)
 
 
 def robot_strokes(robot: BoxRobot, q: np.ndarray) -> np.ndarray:
@@ -197,8 +197,7 @@ def close_up(
 
 
 TURNS = (60.0, -60.0, 120.0, -120.0, 90.0, -90.0)  # degrees about the vertical a second close-up tries, in turn
-# (reader r20c: a quarter turn saw a chain's plane edge-on, its links end-on over each other; a sixth still shows the
-# bend, foreshortened by half, and which link is nearer)
+# (reader r20c: a quarter turn saw a chain's plane edge-on; a sixth still shows the bend and which link is nearer)
 
 
 def second_turn(robot: BoxRobot, q: np.ndarray, workspace: Workspace, margin: float) -> float:
@@ -232,9 +231,13 @@ def turn_words(turn: float) -> str:
     )
 
 
-def model_words(answer: tuple[float, bool] | None) -> str:
-    """A close-up title's second line: what a model answers for the pose, ``(P(valid), predicted valid)``."""
-    return "" if answer is None else f"\nthe model: P(valid) {answer[0]:.2f}, {('rejects', 'accepts')[answer[1]]} it"
+def model_words(answer: tuple[float, bool] | None, valid: bool | None = None) -> str:
+    """A close-up title's second line: what a model answers for the pose, ``(P(valid), predicted valid)``, and where
+    the exact checker's ``valid`` differs, which mistake that is (readers r28e, r29e: the robot is itself one)."""
+    if answer is None:
+        return ""
+    wrong = "" if valid is None or answer[1] == valid else f":\na {('dangerous', 'conservative')[valid]} mistake"
+    return f"\nthe model: P(valid) {answer[0]:.2f}, {('rejects', 'accepts')[answer[1]]} it{wrong}"
 
 
 def mark_nearest(scene, links: np.ndarray, blocks: np.ndarray, bounds: tuple | None = None) -> None:
@@ -367,6 +370,7 @@ CONSERVATIVE_ENTRY = "circle in a sparkle: model wrong, conservative"  # valid, 
 
 
 SHADOW_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=1.2, linestyle=":")  # the path's shadow on the floor
+DROP_LABEL = "the robot's base, straight down to the floor"  # reader r29e: no sample has one
 DROP_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=0.9, linestyle="-")  # a pose's base, straight down
 OVER = 6.0  # pixels: a close-up's mark nearer than this to a link's picture is left out (about half a mark)
 

@@ -7,7 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from toolkit.teaching.chapter05 import SCENARIO
+from toolkit.teaching import recorded
+from toolkit.teaching.chapter05 import COMPILED, SCENARIO, run_name
 
 
 def plan_tables(result) -> str:
@@ -24,6 +25,29 @@ def plan_tables(result) -> str:
         f"| {stats['predicted_checks']} | {stats['exact_checks']} + {stats['exact_clearances']} "
         f"| {stats['predicted_checks'] / max(exactly, 1):.0f}x | {stats['repairs']} "
         f"| {stats['removed_nodes']} / {stats['removed_edges']} |"
+    )
+
+
+def check_costs() -> str:
+    """§6's link to the timing question (readers r28e, r29e): what one network answer costs on 3DC-7 against one exact
+    check of either checker, from the timed run's throughput table (configurations a second, ``docs/results.md``)."""
+    rates = {k: recorded.ours(v) for k, v in recorded.table(COMPILED, "Checker throughput")[SCENARIO].items()}
+    compiled = rates["exact cfg/s"] / rates["learned cfg/s"]  # compiled checks in the time of one network answer
+    fcl = rates["learned cfg/s"] / rates["FCL cfg/s"]  # network answers in the time of one python-fcl check
+    return (
+        f"On 3DC-7 one answer of the timed `strong` network takes as long as {compiled:.1f} compiled exact checks, "
+        f"and one python-fcl check as long as {fcl:.1f} network answers (`docs/results.md`, the timed run's "
+        "configurations a second)."
+    )
+
+
+def networks(threshold: float) -> str:
+    """§5's line naming the three `strong` trainings (reader r29e): this notebook's, at ``threshold``, and the
+    record's two, each with the threshold it chose."""
+    return (
+        f"Three trainings of the `strong` recipe appear on this page, each with its own threshold: this notebook's "
+        f"model here (threshold {threshold:.2f}), the lazy-PRM run's ({run_name('strong')}) and the one the answer at "
+        f"the top times in Algorithm 1 ({run_name(COMPILED)})."
     )
 
 
@@ -71,6 +95,19 @@ def office_collisions(samples: np.ndarray, seed: int) -> str:
         "| in collision with furniture only (inside the office) |\n"
         "| ---: | ---: | ---: | ---: |\n"
         f"| {len(samples)} | {colliding.sum()} | {(colliding & outside).sum()} | {(colliding & ~outside).sum()} |"
+    )
+
+
+def closest_above(probability: np.ndarray, threshold: float) -> str:
+    """§7's line on the P(valid) panel's near misses (reader r29e: a dip to the dashed line read as a second frame
+    below it): the lowest P(valid) of ``probability (F,)`` among the frames at or above ``threshold``, and where."""
+    above = np.flatnonzero(probability >= threshold)  # frames the model calls valid: no band
+    if not len(above):
+        return "Every frame lies below the threshold."
+    frame = int(above[np.argmin(probability[above])])
+    return (
+        f"The frame that comes nearest the threshold from above: frame {frame}, P(valid) {probability[frame]:.3f} "
+        f"against {threshold:.3f}: called valid, so no band marks it, however near the dashed line it comes."
     )
 
 

@@ -29,6 +29,7 @@ import viser.transforms as vtf
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.palette import probability_rgb, rgb
+from toolkit.plots.scenes import scene_words
 
 FLAT_HEIGHT = 1.0  # height of a 2D block in the flat 3D scene
 FLAT_ROBOT_HEIGHT = 1.5  # height of the 2D point robot's square
@@ -217,8 +218,8 @@ def scene_summary(
     """The scene in words, the text alternative of its picture: workspace, robot and its validity, ``samples`` by
     kind (:func:`sample_kinds`; ``"model wrong": None`` when no model judged them) and the ``path (P, dof)``."""
     words = [
-        f"3D scene of workspace {workspace.family} ({len(workspace.boxes)} blocks) with the {robot.name} robot "
-        f"({robot.dof} DoF) at a configuration that is {'valid' if valid else 'in collision'}."
+        f"3D scene of {scene_words(workspace, robot)} at a configuration that is "
+        f"{'valid' if valid else 'in collision'}."
     ]
     if samples.get("valid") is not None:
         words.append(f"Samples: {samples['valid']} valid (circles), {samples['in collision']} in collision (diamonds)")
@@ -238,8 +239,7 @@ def animation_summary(
     and how many frames it calls colliding."""
     frames, n_valid = len(configurations), int(np.sum(exact.are_valid(configurations)))
     words = [
-        f"3D animation of workspace {workspace.family} ({len(workspace.boxes)} blocks) with the {robot.name} robot "
-        f"moving along a planned path in {frames} frames.",
+        f"3D animation of {scene_words(workspace, robot)} moving along a planned path in {frames} frames.",
         f"The exact checker finds the robot valid at {n_valid} of the {frames} frames.",
     ]
     if hasattr(model, "probability"):
