@@ -115,3 +115,14 @@ def test_a_table_shown_in_parts_is_read_as_one():
     assert split == whole and whole["paper"]["T"]["columns"] == ["", "sampler", "a", "b"]
     with pytest.raises(ValueError, match="does not repeat the rows"):
         recorded_results.parse(f"## Preset `paper`\n\n### T\n\n{parts.replace('| 2ds | OB | 4 |', '| 3do | OB | 4 |')}")
+
+
+def test_a_runs_decision_thresholds_travel_with_its_table_2():
+    """Chapter 05 names each `strong` training by its threshold (reader r29e); an installed toolkit has no docs/, so
+    the line under Table 2 is carried in the packaged record, and a line that follows a table directly ends it."""
+    table = "| a | b |\n| - | - |\n| 3dc7 | 1 |\n"
+    text = f"## Preset `paper`\n\n### MLP accuracy\n\n{table}Decision threshold on P(valid): 2ds 0.41, 3dc7 0.63.\n"
+    parsed = recorded_results.parse(text)
+    assert recorded.thresholds("paper", parsed) == {"2ds": 0.41, "3dc7": 0.63}
+    assert recorded.thresholds("strong --planner paper")["3dc7"] == 0.63  # the record's timed run (docs/results.md)
+    assert recorded.thresholds("strong")["3dc7"] != recorded.thresholds("strong --planner paper")["3dc7"]

@@ -24,34 +24,45 @@ PACKAGED = ROOT / "toolkit" / "teaching" / "recorded.json"
 # history, read by no notebook
 PRESET = re.compile(r"^## Preset `(\w+)`(?: with `--planner (\w+)(?: --baseline ([\w-]+))?`(?:: .*)?)?$")
 WITHOUT = "*Without prediction*:"  # how tables.md names, under a heading, what "without" was in its table
+THRESHOLDS = "Decision threshold on P(valid):"  # the line under a run's Table 2: "2ds 0.41, 3dc7 0.63, ..."
 
 
 def parse(text: str) -> dict[str, dict[str, dict]]:
     """``{preset: {heading: {"without": str | None, "columns": [...], "rows": [[cell, ...], ...]}}}``: the first table
     under every ``###`` heading of the sections ``## Preset `name` ``, and what its note says "without" was. A table
     the page shows in parts (tables separated by blank lines only, each repeating the first's leading key columns:
-    the scenario, the sampler) is read as one (:func:`joined`)."""
+    the scenario, the sampler) is read as one (:func:`joined`). The line of decision thresholds under a table is kept
+    with it, as ``"thresholds": {scenario: threshold}`` (chapter 05 names each training by its threshold)."""
     recorded: dict[str, dict[str, dict]] = {}
     section: dict[str, dict] | None = None
     heading = ""  # the heading whose table is being read; "" once it is read
     notes: list[str] = []  # the lines between that heading and its table
     parts: list[list[list[str]]] = []  # each part's (rows, columns) cells
     ended = False  # a blank line ended the last part: another may follow
+    last: dict = {}  # the table read last in this section
 
     def close() -> None:
+        nonlocal last
         rows = joined(parts)
         if section is not None and heading and len(rows) >= 3:
-            section[heading] = {
+            last = section[heading] = {
                 "without": next((n.removeprefix(WITHOUT).strip() for n in notes if n.startswith(WITHOUT)), None),
                 "columns": rows[0],
                 "rows": rows[2:],  # rows[1]: the | --- | line
             }
 
     for line in text.splitlines():
-        if line.startswith(("## ", "### ")):
+        if line.startswith(THRESHOLDS) and section is not None:
+            if heading and parts:  # the line ends the table it follows
+                close()
+                heading = ""
+            said = re.findall(r"(\w+) (\d\.\d+)", line.removeprefix(THRESHOLDS))
+            last["thresholds"] = {scenario: float(value) for scenario, value in said}
+        elif line.startswith(("## ", "### ")):
             close()
             heading, notes, parts = line.removeprefix("### ").strip() if line.startswith("### ") else "", [], []
             if line.startswith("## "):
+                last = {}
                 found = PRESET.match(line)
                 section = recorded.setdefault(section_key(found), {}) if found else None
         elif heading and line.startswith("|"):

@@ -7,9 +7,7 @@ the page shows one call where it showed a screen of f-strings (reader r24b). Eve
 
 from __future__ import annotations
 
-import re
 from collections.abc import Mapping
-from pathlib import Path
 
 import numpy as np
 
@@ -26,22 +24,10 @@ TIE_WORDS = f'a ratio less than {TIE:.0%} from 1 reads "{TIES}"'  # the band, pr
 DID = {SAVES: "saved time", TIES: "tied", COSTS: "cost time"}  # a verdict, as a past verb
 
 
-RESULTS = Path(__file__).resolve().parents[2] / "docs" / "results.md"  # the record as written, beside the package
-
-
 def recorded_threshold(preset: str) -> float | None:
     """The 3DC-7 decision threshold on P(valid) of a run of the record (the line under its Table 2 in
-    ``docs/results.md``, a line the packaged tables do not carry); None without ``docs/`` at hand."""
-    name, *options = preset.split(" ", 1)
-    head = f"## Preset `{name}`" + (f" with `{options[0]}`" if options else "")
-    section = False
-    for line in RESULTS.read_text(encoding="utf-8").splitlines() if RESULTS.exists() else []:
-        if line.startswith("## "):
-            section = line == head or line.startswith(head + ":")
-        elif section and line.startswith("Decision threshold on P(valid):"):
-            found = re.search(rf"{SCENARIO} (\d\.\d+)", line)
-            return float(found.group(1)) if found else None
-    return None
+    ``docs/results.md``, carried in the package's record); None where the record gives none."""
+    return recorded.thresholds(preset).get(SCENARIO)
 
 
 def run_name(preset: str) -> str:

@@ -92,6 +92,12 @@ def improvements(preset: str, scenario: str, kind: str = "total", recorded: Tabl
     return {column.split()[1]: ours(cell) for column, cell in cells.items() if column.lower().startswith(kind)}
 
 
+def thresholds(preset: str, recorded: Tables | None = None) -> dict[str, float]:
+    """``{scenario: threshold}``: the decision threshold on P(valid) each scenario's MLP of that run used, as the
+    line under its Table 2 says (``{"3dc7": 0.63, ...}``); a run's trainings told apart by it (chapter 05)."""
+    return dict(_under(preset, "MLP accuracy", recorded).get("thresholds", {}))
+
+
 def _under(preset: str, heading: str, recorded: Tables | None) -> dict:
     """The table under the first heading of ``preset`` containing ``heading``: ``{"without", "columns", "rows"}``."""
     tables = packaged() if recorded is None else recorded
