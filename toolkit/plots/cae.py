@@ -116,15 +116,13 @@ def reconstructions(
         row.suptitle(f"{name}: {acc:.1%} {right} (all free: {all_free:.1%})", fontsize=10)
         said.append(f"{name}: {acc:.1%} {right} against {all_free:.1%} for answering all free; {wrong}")
         parts.append(grid_part(name, said[-1], grid, out, None if flipped is None else flipped[k]))
-    handles, labels = legend_handles(list(drawn))
-    labels = [CELL_LABELS.get(kind, label) for kind, label in zip(drawn, labels)]  # r29b: mostly single cells
+    handles, labels = legend_handles(list(drawn))  # "missed cell", not "block": mostly single cells (r29b)
     key.legend(handles, labels, loc="center", ncols=2, fontsize=9, frameon=False)
     grids_said = f"{len(grids)} occupancy grid{'s' if len(grids) > 1 else ''}"
     text = f"{grids_said}, each beside its reconstruction and its wrong cells. " + "; ".join(said)
     return describe(fig, text + ".", parts)
 
 
-CELL_LABELS = {"missed": "missed cell (x)", "phantom": "invented cell (o)"}  # wrong_cells.LABELS says "block"
 WRONG = 2.2  # the wrong cells' panel's width against the input's column: 0.62 of the figure's, laid out
 FEW = 50  # a group of at most this many workspaces is drawn larger and on top: hundreds of points would bury it
 GREY = {True: dict(s=28, alpha=1.0, linewidths=0.8, zorder=3), False: dict(s=10, alpha=0.5, linewidths=0, zorder=1)}

@@ -1,9 +1,9 @@
 """The wrong cells of a decoded occupancy grid marked on it (notebook 02; :func:`toolkit.plots.cae.reconstructions`).
 
 A decoded cell is wrong where its sign differs from the input's. Each wrong cell is coloured by its kind and carries
-a mark in ink, so that the kind shows without colour: ``x`` a *missed* block (input occupied, decoded free), ``o`` an
+a mark in ink, so that the kind shows without colour: ``x`` a *missed* cell (input occupied, decoded free), ``o`` an
 *invented* one (input free, decoded occupied). When the input is a grid with a few cells flipped (section 6 of
-notebook 02), a wrong flipped cell is not a missed or invented block: the decoder drew it as in the clean grid, it
+notebook 02), a wrong flipped cell is not a missed or invented cell: the decoder drew it as in the clean grid, it
 *ignored* the flip. Flipped cells then get a kind of their own, a hollow square, on an orange cell where the flip was
 ignored; the other wrong cells keep ``x`` and ``o``. A figure's title and its description, region by region
 (:func:`grid_part`), count them in the same words (:func:`wrong_in_words`).
@@ -21,12 +21,12 @@ from matplotlib.patches import Patch
 from toolkit.plots.alt import Part, map_part
 from toolkit.plots.palette import COLORS
 
-ERROR_COLORS = ListedColormap([COLORS["phantom"], COLORS["missed"]])  # -1: invented block; +1: missed block
+ERROR_COLORS = ListedColormap([COLORS["phantom"], COLORS["missed"]])  # -1: invented cell; +1: missed cell
 ERROR_MARKERS = {"missed": "x", "phantom": "o", "ignored": "s", "copied": "s"}  # a second cue, in ink
 ERROR_INK: dict[str, Any] = dict(fillstyle="none", mew=1.2)  # a ring, not a dot (in the legend too): a visible stroke
 LABELS = {
-    "missed": "missed block (x)",
-    "phantom": "invented block (o)",
+    "missed": "missed cell (x)",
+    "phantom": "invented cell (o)",
     "ignored": "flipped cell, flip ignored (square on orange)",
     "copied": "flipped cell, flip copied (square)",
 }
