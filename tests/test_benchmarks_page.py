@@ -1,5 +1,6 @@
 """docs/benchmarks.md's summary against the tables on the same page: each figure it quotes is read from them here, so a
-new measurement that moves a table fails this test until the summary says the same."""
+new measurement that moves a table fails this test until the summary says the same. The race against OMPL, once a
+section of it, is docs/planner_race.md ("Our planners against OMPL's"), held to its own tables the same way."""
 
 import json
 import re
@@ -12,14 +13,17 @@ from toolkit.teaching import checker_scope
 
 PAGE = (Path(__file__).resolve().parents[1] / "docs" / "benchmarks.md").read_text()
 SUMMARY = " ".join(PAGE.partition("**In short**")[2].partition("\n## ")[0].split())
+RACE = (Path(__file__).resolve().parents[1] / "docs" / "planner_race.md").read_text()  # review r28f, item 1: its page
+RACE_SUMMARY = " ".join(RACE.partition("**In short**")[2].partition("\n\n")[0].split())
 NUMBER = re.compile(r"\d+(?:,\d{3})*(?:\.\d+)?")  # "10,000", "0.66"; not the comma of a list
 
 
-def tables() -> list[list[list[str]]]:
-    """Every Markdown table of the page: its rows (header first, the ``| --- |`` line left out) of cells."""
+def tables(page: str = PAGE) -> list[list[list[str]]]:
+    """Every Markdown table of ``page`` (the benchmarks page unless named): its rows (header first, the ``| --- |``
+    line left out) of cells."""
     found: list[list[list[str]]] = []
     previous = ""
-    for line in PAGE.splitlines():
+    for line in page.splitlines():
         if line.startswith("|"):
             if not previous.startswith("|"):
                 found.append([])
@@ -29,10 +33,10 @@ def tables() -> list[list[list[str]]]:
     return found
 
 
-def column(header: str) -> dict[str, str]:
-    """``{row name: cell}`` of the column named ``header`` in the one table that has it."""
-    matches = [t for t in tables() if header in t[0]]
-    assert len(matches) == 1, f"docs/benchmarks.md: {len(matches)} tables have a column {header!r}"
+def column(header: str, page: str = PAGE) -> dict[str, str]:
+    """``{row name: cell}`` of the column named ``header`` in the one table of ``page`` that has it."""
+    matches = [t for t in tables(page) if header in t[0]]
+    assert len(matches) == 1, f"{len(matches)} tables have a column {header!r}"
     index = matches[0][0].index(header)
     return {row[0]: row[index] for row in matches[0][1:]}
 
@@ -54,8 +58,10 @@ def said(pattern: str) -> tuple[str, ...]:
 
 
 def test_the_summary_is_a_short_list_at_the_top():
+    """Review r29f, item 4: three or four bullets (what a check costs, prediction with each checker, sampling's share,
+    our planners in one line that links their page)."""
     assert PAGE.index("**In short**") < PAGE.index("\n## ")
-    assert 4 <= PAGE.partition("**In short**")[2].partition("\n## ")[0].count("\n- ") <= 6
+    assert 3 <= PAGE.partition("**In short**")[2].partition("\n## ")[0].count("\n- ") <= 4
 
 
 OPENING = SUMMARY  # review r23c: the four opening paragraphs and "In short" said the same twice; one list now
@@ -158,11 +164,14 @@ def test_the_crossover_figures_are_its_table():
     grown = {k.split()[0]: numbers(k.partition("(")[2]) for k in dearer}  # "obstacles (10–500 blocks)": 10, 500
     for key in ("obstacles", "links", "configurations"):  # "Among 10–500 blocks, on chains of 2–16 links, in small
         assert dearer[next(k for k in dearer if k.startswith(key))].startswith("every size")  # calls and large ..."
-    dearer_everywhere = r"Among (\S+) blocks, on chains of (\S+) links, in small calls and large ones, the network is"
+    dearer_everywhere = r"among (\S+) blocks, on chains of (\S+) links, in small calls and large ones, the network is"
     assert said(dearer_everywhere) == (
         span(grown["obstacles"]),
         span(grown["links"]),
     )
+    # review r29f, contradiction 2: the sweep ran under load, and the summary says so beside "an idle" machine's table
+    assert "In a sweep timed by the CPU clock beside other work (load average 2.3–3.8), among" in SUMMARY
+    assert "other work kept the load average at 2.3–3.8" in " ".join(PAGE.split())
 
 
 @pytest.mark.parametrize(
@@ -173,15 +182,32 @@ def test_the_crossover_figures_are_its_table():
             r"(\S+) of the time of OMPL's RRTConnect even with OMPL's checks batched",
             "RRT-Connect / OMPL RRTConnect, checks batched",
         ),
-        (r"the lazy PRM takes (\S+) ms", "ours: lazy PRM"),
+        (r"the lazy PRM, the planner a network drives, takes (\S+) ms", "ours: lazy PRM"),
     ],
 )
 def test_the_planner_figures_are_the_race_tables(pattern, header):
-    """Review r27f, item 6: RRT-Connect was tuned on seed 7300, so the summary quotes the held-out seed 9300's rows."""
-    held_out = [c for row, c in column(header).items() if row.endswith(", 9300")]
+    """Review r27f, item 6: RRT-Connect was tuned on seed 7300, so the summary quotes the held-out seed 9300's rows.
+    Review r28f, item 1: the race has its own page, whose summary quotes them."""
+    held_out = [c for row, c in column(header, RACE).items() if row.endswith(", 9300")]
     cells = sorted((c.split(" (")[0] for c in held_out), key=float)  # as written: "4.0", not "(1,552)"
-    assert len(cells) == 3 and "on the held-out queries of seed 9300" in SUMMARY
-    assert said(pattern) == (cells[0] if cells[0] == cells[-1] else f"{cells[0]}–{cells[-1]}",)
+    assert len(cells) == 3 and "On the held-out queries of seed 9300" in RACE_SUMMARY
+    found = re.search(pattern, RACE_SUMMARY)
+    assert found, f"docs/planner_race.md's summary no longer says {pattern!r}"
+    assert found.groups() == (cells[0] if cells[0] == cells[-1] else f"{cells[0]}–{cells[-1]}",)
+
+
+def test_the_race_has_its_own_page_linked_from_the_benchmarks_page_and_in_the_site_s_order():
+    """Review r28f, item 1: the race was two of seven screens of a page whose question is what a check costs."""
+    from tools.site import DOCS_ORDER
+
+    assert "## How do our planners compare with OMPL's?" not in PAGE and "OMPL RRTConnect |" not in PAGE
+    assert RACE.startswith("# Our planners against OMPL's\n")
+    items = PAGE.partition("**In short**")[2].partition("\n## ")[0].split("\n- ")[1:]
+    assert [i for i in items if "[Our planners against OMPL's](planner_race.md)" in " ".join(i.split())]
+    assert DOCS_ORDER.index("planner_race") == DOCS_ORDER.index("benchmarks") + 1
+    for module in ("toolkit/planning/rrt_connect.py", "toolkit/experiments/versus_ompl.py"):
+        source = (ROOT / module).read_text()
+        assert "How do our planners compare" not in source and "docs/planner_race.md" in source, module
 
 
 def test_every_number_the_summary_quotes_is_in_a_table_of_the_page():
@@ -194,6 +220,9 @@ def test_every_number_the_summary_quotes_is_in_a_table_of_the_page():
     rest = re.sub(r"`[0-9a-f]{7}`", "", rest)  # a commit that dates a figure (review r25c, item 2), not a figure
     quoted = set(NUMBER.findall(rest.replace("04", ""))) - {"2"}  # chapter 04's link, "2-core"
     assert quoted <= cells, f"figures in the summary that no table of the page holds: {sorted(quoted - cells)}"
+    race = {n for t in tables(RACE) for row in t for cell in row for n in NUMBER.findall(cell)}
+    quoted = set(NUMBER.findall(RACE_SUMMARY))
+    assert quoted <= race, f"figures in the race's summary that no table of its page holds: {sorted(quoted - race)}"
 
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -234,26 +263,27 @@ def test_the_mesh_table_is_dated_where_the_crossover_is_set_beside_it():
     warning = "older than the crossover on the benchmarks page and was measured on the other machine, under load"
     assert warning in history
     assert (
-        f"from {gap[0]:.1f} times at {triangles['values'][0]:,} to {gap[-1]:.0f} times at {triangles['values'][-1]:,}."
+        f"from {gap[0]:.1f} times the compiled one's cost at {triangles['values'][0]:,} to {gap[-1]:.0f} times at "
+        f"{triangles['values'][-1]:,}."
     ) in flat
 
 
 def test_the_race_prints_the_states_and_means_its_prose_quotes():
     """Review r25c, item 5: "590–1,262 a query" and "mean is 1.1–2.9 times its median" stood in no table. The first
     race table, shown open, prints each planner's configurations checked; the last, the two roadmap planners' means."""
-    first = next(t for t in tables() if "ours: RRT-Connect" in t[0])
+    first = next(t for t in tables(RACE) if "ours: RRT-Connect" in t[0])
     checked = {h: [numbers(row[i])[1] for row in first[1:]] for i, h in enumerate(first[0]) if i}
     medians = {h: [numbers(row[i])[0] for row in first[1:]] for i, h in enumerate(first[0]) if i}
-    flat = " ".join(PAGE.split())
+    flat = " ".join(RACE.split())
     rrt = checked["ours: RRT-Connect"]
     assert f"ours checks fewer states ({min(rrt):,.0f}–{max(rrt):,.0f} a query, the first table)" in flat
-    means = column("mean time a query, ms: lazy PRM / OMPL PRM").values()
+    means = column("mean time a query, ms: lazy PRM / OMPL PRM", RACE).values()
     lazy, ompl = zip(*(numbers(cell) for cell in means), strict=True)
     tail = [m / d for m, d in zip(ompl, medians["OMPL PRM"], strict=True)]
     own = [m / d for m, d in zip(lazy, medians["ours: lazy PRM"], strict=True)]
     long_tail = f"its mean is {min(tail):.1f}–{max(tail):.1f} times its median, the lazy PRM's {min(own):.1f}–"
     assert f"{long_tail}{max(own):.1f} times (the last table's means over the first table's medians)" in flat
-    opened = PAGE.partition("## How do our planners compare with OMPL's?")[2]
+    opened = RACE.partition("## What it measured")[2]
     assert opened.index("| scenario, seed | ours: RRT-Connect") < opened.index("<details")  # review r25c: shown open
 
 
@@ -312,6 +342,8 @@ def test_what_it_means_quotes_the_run_with_python_fcl_on_both_sides():
         f"it in {len(fell)}:" in opening
     )
     assert "[the Results page](results.md) gives the verdicts cell by cell" in opening
+    plain = f"sampling fell by {saving} yet a query's time tied in {ties} of {len(own)} cells"  # review r29f, item 1
+    assert plain in " ".join(PAGE.partition("## Does prediction make a planner faster?")[2].split())
     results = " ".join((ROOT / "docs" / "results.md").read_text().split())
     edge = (
         results.partition("*Noise floor*")[2].partition("are at the noise edge:")[2].partition(". ")[0]
@@ -398,7 +430,7 @@ def test_the_ceiling_is_sampling_s_share_of_an_algorithm_1_query_from_the_record
             recorded.ours(row[column("sampling without")]) / recorded.ours(row[column("total without")])
             for row in times["rows"]
         ]
-        return f"{100 * min(found):.1f}–{100 * max(found):.0f} %"
+        return f"{100 * min(found):.2g}–{100 * max(found):.0f} %"  # r29f: 0.35, as the Results page prints it
 
     compiled, fcl = shares("strong --planner paper"), shares(FCL_ALIKE)
     share = r"sampling, the one stage the network answers in, took (\S+ %) of a query's mean time"
@@ -416,8 +448,37 @@ def test_the_page_keeps_no_archaeology_and_names_pages_by_title():
     """Review r27f, items 3 and 7: `git show` recipes, the older races and tables, the stub section went to the history;
     a link reads as the page's title, not its file's name."""
     assert "git show" not in PAGE and "## Notebook running times" not in PAGE
-    assert not re.findall(r"\[[^\]]*\.md\]", PAGE), "a link named by its file"
+    for page in (PAGE, RACE):
+        assert not re.findall(r"\[[^\]]*\.md\]", page), "a link named by its file"
     assert PAGE.count("\n## ") <= 6
+
+
+def test_every_ratio_against_ompl_says_its_direction_in_its_sentence():
+    """Review r29f, contradiction 4: "(1.28–1.68)" and "(0.15–0.27)" stood bare; which time is over which is said
+    where each range is, and the ranges are the ratio tables' (both seeds)."""
+    flat = " ".join(RACE.split())
+
+    def both_seeds(header: str) -> str:
+        return span([x for cell in column(header, RACE).values() for x in numbers(cell)])
+
+    rrt = both_seeds("lazy PRM / OMPL RRTConnect, checks batched")
+    prm = both_seeds("lazy PRM / OMPL PRM, checks batched")
+    assert f"faster than the lazy PRM (the lazy PRM takes {rrt} times its time)" in flat
+    assert f"PRM is slower (the lazy PRM takes {prm} of its time)" in flat
+    assert f"({rrt})" not in flat and f"({prm})" not in flat
+    assert "in time over OMPL's RRTConnect's: our RRT-Connect" in flat
+
+
+def test_the_crossover_names_the_checker_it_measured_and_the_speed_ups_before_it():
+    """Review r29f, contradictions 1 and 3: the sweep was said to measure "the box checker as the tables above
+    measured it", but the checker table's commit came before that afternoon's change to a call's fixed cost, the
+    small-calls table's after it; and "the checker's two later speed-ups" named none."""
+    flat = " ".join(PAGE.split())
+    assert "the box checker as the tables above measured it" not in flat and "two later speed-ups" not in flat
+    assert "whose box checker is the one the small-calls table above measured" in flat
+    assert "came before rounds 5 and 6 of the compiled checker (05:52 and 08:52 UTC), which cut" in flat
+    history = " ".join((ROOT / "docs" / "benchmarks_history.md").read_text().split())
+    assert "**Round 5 (5 December, 05:52 UTC)" in history and "**Round 6 (5 December, 08:52 UTC)" in history
 
 
 def test_the_only_is_qualified_and_the_other_pages_figures_are_reconciled():
@@ -432,7 +493,8 @@ def test_the_only_is_qualified_and_the_other_pages_figures_are_reconciled():
     rate = re.search(r"\| `strong --planner paper` \| 5 December[^|]* \| (\S+)× \|", results)  # ", loaded (...)"
     assert rate and f"python-fcl at {rate.group(1)} times the compiled check for its Algorithm 1 run" in flat
     lazy = re.search(r"with our lazy PRM and the compiled checker \(the `strong` section's\), (\S+ s) in 3DO", results)
-    assert lazy and f"The Results page's lazy PRM takes {lazy.group(1)} a mean 3DO query" in flat
+    race = " ".join(RACE.split())
+    assert lazy and f"The Results page's lazy PRM takes {lazy.group(1)} a mean 3DO query" in race
     # the checker run of 5 December 2 and 3 December: one cell cheaper, four too close of the other five
     cells = re.findall(r"\| `(?:paper|strong)` \| [23] December \| [^|]+\| ([^|]+) \|", results)
     verdicts = " ".join(cells)
@@ -449,13 +511,13 @@ def ratio(top: str, bottom: str) -> Decimal:
 def test_rrt_connect_s_lead_over_ompl_is_the_first_table_s_medians():
     """Review r27f, contradiction 7: "7–10 times" where 12.6 / 1.2 gives 10.5; r28f, contradiction 2: the page quotes
     the held-out seed 9300 alone, so its range comes first and the tuning seed's is named as such."""
-    first = next(t for t in tables() if "ours: RRT-Connect" in t[0])
+    first = next(t for t in tables(RACE) if "ours: RRT-Connect" in t[0])
     ours, ompl = (first[0].index(h) for h in ("ours: RRT-Connect", "OMPL RRTConnect"))
     lead = {  # in decimals, rounded half up: 11.1 / 1.2 is 9.25, which binary floats print as 9.2
         seed: [ratio(row[ompl], row[ours]) for row in first[1:] if row[0].endswith(seed)] for seed in ("9300", "7300")
     }
     held, tuned = (f"{min(lead[s])}–{max(lead[s])}" for s in ("9300", "7300"))
-    flat = " ".join(PAGE.split())
+    flat = " ".join(RACE.split())
     assert f"is {held} times as fast as OMPL's RRTConnect as used from Python on the held-out seed 9300, " in flat
     assert f", {tuned} times on its tuning seed 7300 (the first table's medians)" in flat
     assert "What these say, from both seeds' rows where no seed is named" in flat
@@ -515,7 +577,8 @@ def test_the_cells_whose_mean_moved_more_than_sampling_could_move_it_are_named()
     assert beyond == ["3DC-9 OB"]  # 3DO BT fell 17 % where sampling saved 16 %: sampling's doing
     sampled, moved = fcl["3DC-9 OB"]
     assert f"of the lazy PRM; in those 3 the network saved at most {100 * most:.1f} % of a query in sampling" in flat
-    assert (
-        f"a cell whose mean moved more, as 3DC-9 OB's did with python-fcl on both sides ({100 * moved:.0f} % shorter "
-        f"where the network saved {100 * sampled:.0f} % of it in sampling), moved for other reasons"
-    ) in SUMMARY
+    assert (  # review r29f, item 4: out of the summary, into the section's numbers
+        f"A cell whose mean moved more than that share allows moved for other reasons, a roadmap grown from other "
+        f"samples or timing noise in the means: 3DC-9 OB's mean query was {100 * moved:.0f} % shorter where the "
+        f"network saved {100 * sampled:.0f} % of it in sampling."
+    ) in flat

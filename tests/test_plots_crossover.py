@@ -7,7 +7,7 @@ from matplotlib.collections import PolyCollection
 
 from toolkit.plots import alt
 from toolkit.plots.alt import alt_text
-from toolkit.plots.crossover import SLANT, crossover
+from toolkit.plots.crossover import PAPER_LEGEND, SLANT, TICKS, crossover
 from toolkit.util.verdicts import CHEAPER, NEAR
 
 SWEEP = {  # network / exact: 0.5 cheaper, 0.9 can't tell, 1.5 dearer, 0.7 cheaper (the band is 25 %)
@@ -61,13 +61,16 @@ def test_a_panel_where_the_network_is_never_cheaper_beyond_the_band_has_no_shadi
     assert fig.axes[0].get_title() == "Obstacles"  # reader r25c: each panel titled
 
 
-def test_the_title_says_when_the_sweep_was_measured_and_ticks_name_tenths_of_a_microsecond():
-    """Reader r24c: the figure's date was in the caption alone, and no tick named the network's 0.27-0.43 µs."""
+def test_the_text_alternative_says_when_the_sweep_was_measured_and_ticks_name_tenths_of_a_microsecond():
+    """Reader r24c: the figure's date was in the caption alone, and no tick named the network's 0.27-0.43 µs. Readers
+    r28f and r29f: the date in the title competed with the panels' titles; the caption says it, and so does the text
+    alternative, and the title names the network's size in plain words."""
     fig = crossover(
         {"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"obstacles": SWEEP}},
         measured="5 December 2026, 15:37 UTC",
     )
-    assert "measured 5 December 2026, 15:37 UTC" in fig.get_suptitle()
+    assert "Measured 5 December 2026, 15:37 UTC." in alt_text(fig) and "measured" not in fig.get_suptitle().lower()
+    assert '3DC-9, the network at the "paper" preset\'s sizes' in fig.get_suptitle()
     low = {**SWEEP, "exact_us": [0.09, 0.1, 0.12, 0.14], "learned_us": [0.3] * 4, "fcl_us": [5, 50, 500, 900]}
     ax = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"obstacles": low}}).axes[0]
     assert {"0.1", "0.2", "0.5"} <= {t.get_text() for t in ax.get_yticklabels()}  # four decades: 1-2-5 below 1
@@ -88,8 +91,9 @@ def test_a_tick_label_that_would_touch_its_neighbour_is_left_out_and_the_last_is
 
 
 def test_the_drawn_tick_labels_keep_apart():
-    """docs/crossover.png's obstacle panel: every measured value named (reader r20d), slanted where level labels
-    would crowd (reader r10a: 100, 200 and 500 crowded), each a line's height or more from the next."""
+    """docs/crossover.png's obstacle panel: the chosen values named (reader r29f: 350 and 500 touched; 10, 50, 100,
+    200 and 500), the others measured marked by short ticks (reader r20d: a measured value unmarked), slanted where
+    level labels would crowd (reader r10a: 100, 200 and 500 crowded), each a line's height or more from the next."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     values = [10, 25, 50, 100, 200, 350, 500]
@@ -100,14 +104,14 @@ def test_the_drawn_tick_labels_keep_apart():
     FigureCanvasAgg(fig).draw()
     ax = fig.axes[0]
     named = [t for t in ax.get_xticklabels() if t.get_text()]
-    assert [t.get_text() for t in named] == [f"{v}" for v in values]  # reader r20d: 350 had no number
+    assert [t.get_text() for t in named] == [f"{v}" for v in TICKS["obstacles"]]  # r29f: 350 unnamed, 500 apart
     if named[0].get_rotation() == 0:  # level: no two closer than a digit and a half
         boxes = [t.get_window_extent() for t in named]
         digit = 9 * 110 / 72 * 0.6
         assert all(right.x0 - left.x1 >= 1.5 * digit for left, right in zip(boxes, boxes[1:]))
     else:  # slanted, where level labels would crowd: a line's height apart along the axis or more
         line = named[0].get_fontsize() * 110 / 72
-        at = sorted(ax.transData.transform([(v, 1) for v in values])[:, 0])
+        at = sorted(ax.transData.transform([(v, 1) for v in TICKS["obstacles"]])[:, 0])
         assert all(right - left >= line for left, right in zip(at, at[1:]))
     assert sorted([*ax.get_xticks(), *ax.get_xticks(minor=True)]) == values
 
@@ -145,7 +149,8 @@ def test_every_crossing_is_marked_and_said_each_label_apart():
 
 def test_the_recorded_crossover_names_every_measured_value():
     """docs/crossover.json drawn as docs/crossover.png: every panel names every value it measured (reader r20d: the
-    350-block and 1,280-triangle points had no number), slanted where level labels would crowd."""
+    1,280-triangle point had no number), but the obstacles' its chosen ones (reader r29f: 350 touched 500), the rest
+    short ticks, slanted where level labels would crowd."""
     import json
 
     from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -155,13 +160,31 @@ def test_the_recorded_crossover_names_every_measured_value():
     fig.set_dpi(110)
     FigureCanvasAgg(fig).draw()
     slanted = 0
-    for ax, sweep in zip(fig.axes, recorded["variables"].values()):
+    for ax, (key, sweep) in zip(fig.axes, recorded["variables"].items()):
         named = [t for t in ax.get_xticklabels() if t.get_text()]
-        assert len(named) == len(sweep["values"]), sweep["label"]
+        assert len(named) == len(TICKS.get(key, sweep["values"])), sweep["label"]
+        assert len(ax.get_xticks()) + len(ax.get_xticks(minor=True)) == len(sweep["values"])  # each one marked
         slanted += named[0].get_rotation() == SLANT
         low, high = np.log10(ax.get_ylim())  # reader r27f: the 20-triangle network point sat half on the lower frame
         costs = np.log10([v for k in ("exact_us", "fcl_us", "learned_us") for v in sweep[k]])
         assert low + 0.1 <= costs.min() and costs.max() <= high - 0.1, sweep["label"]
-    assert slanted >= 1  # the obstacles' 200, 350 and 500 would crowd level
+    assert slanted >= 1  # the triangles' 1,280 and 5,120 would crowd level
     title = fig.get_suptitle()  # reader r27f: no hatching named where none is drawn; the network's size named
-    assert "hatched" not in title and "the network of preset paper's sizes" in title
+    assert "hatched" not in title and 'the network at the "paper" preset\'s sizes' in title
+
+
+def test_a_3dc_sweep_marks_where_the_paper_s_scenes_sit():
+    """Reader r29f: nothing marked the paper's 110-125 blocks or its chains of 2 and 4 links; a grey strip now does,
+    on a 3DC scenario's obstacle and link panels, and only where the sweep reaches them."""
+    links = {**SWEEP, "label": "links of the robot (box chain)", "values": [2, 4, 6, 10]}
+    sweeps = {"obstacles": {**SWEEP, "values": [10, 100, 200, 500]}, "links": links}
+
+    fig = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": sweeps})
+    legend = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert PAPER_LEGEND in legend and "Grey strips mark the paper's scenes" in alt_text(fig)
+    spans = [(p.get_x(), p.get_x() + p.get_width()) for ax in fig.axes for p in ax.patches]  # each strip's x-extent
+    assert [(round(low * 1.05), round(high / 1.05)) for low, high in spans] == [(110, 125), (2, 2), (4, 4)]
+    plain = crossover({"scenario": "2ds", "preset": "paper", "quick": False, "variables": sweeps})
+    assert not [p for ax in plain.axes for p in ax.patches] and "Grey strips" not in alt_text(plain)
+    short = crossover({"scenario": "3dc7", "preset": "paper", "quick": False, "variables": {"obstacles": SWEEP}})
+    assert len([p for ax in short.axes for p in ax.patches]) == 1  # 10 to 10,000 blocks: the strip inside

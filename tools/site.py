@@ -46,7 +46,16 @@ CHAPTERS = "notebooks/[0-9][0-9]_*.ipynb"
 TUTORIALS = "tutorials/*.ipynb"
 INSTRUCTORS_PAGES = "tutorials/instructors_*.md"  # after the instructors' guide in the sidebar
 # docs/ pages in the nav, then any others
-DOCS_ORDER = ("results", "fidelity", "benchmarks", "benchmarks_history", "checker_engineering", "design", "viewer")
+DOCS_ORDER = (
+    "results",
+    "fidelity",
+    "benchmarks",
+    "planner_race",
+    "benchmarks_history",
+    "checker_engineering",
+    "design",
+    "viewer",
+)
 PACKAGES = (
     "util",
     "geometry",

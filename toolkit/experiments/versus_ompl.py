@@ -45,7 +45,7 @@ What keeps the race fair:
   during (the highest, read before each query) and after each race; a race whose load stayed
   at or below ``IDLE_LOAD`` ran on an idle machine (its own thread is a load of 1).
 
-Results and what they say: ``docs/benchmarks.md``, "How do our planners compare with OMPL's?".
+Results and what they say: ``docs/planner_race.md``, "Our planners against OMPL's".
 """
 
 from __future__ import annotations

@@ -15,7 +15,7 @@ move up to its checks (the nearest node, the segment, its grid in that order) is
 (:mod:`toolkit.planning.rrt_kernels`), the rest a few lines of Python around the two checker calls. OMPL's
 RRTConnect (Şucan, Moll, Kavraki 2012) asks its checker one configuration a call and a connection one extension at a
 time; here a call holds tens of configurations, since a call's fixed cost outweighs many configurations'
-(``docs/benchmarks.md``, "How do our planners compare with OMPL's?").
+(``docs/planner_race.md``, "Our planners against OMPL's").
 
 Every edge of a path was checked at ``resolution`` as it grew; the path is then verified exactly at the problem's
 ``fine_resolution`` (10x finer) with clearance certificates (``local_planner.certify_edges``: the answer of

@@ -6,7 +6,8 @@ dear, microseconds per configuration on log-log axes, shaded where the network i
 check by more than the band in which a timing moves (the verdict "network cheaper" of
 :func:`toolkit.util.verdicts.cost_verdict`, the words the tables and the conclusion use: a point
 they call "can't tell" is not shaded) and a dotted line wherever its curve crosses an exact one (twice, where the
-two costs are close: each crossing is marked).
+two costs are close: each crossing is marked). On a 3DC scenario's panels a grey strip marks where the paper's own
+scenes sit (:data:`PAPER_SCENES`: 110-125 blocks, chains of 2 and 4 links).
 Nothing here calls ``show()``.
 """
 
@@ -40,41 +41,63 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
     the learned checker against the variable; shaded where the network is cheaper than the default exact check
     by more than :data:`~toolkit.util.verdicts.CLOSE` (the verdict "network cheaper"), hatched where the two are
     within it ("can't tell"), a dotted vertical line at every value where the network's curve crosses an exact one
-    (its value beside it). ``measured`` (else ``results["measured"]``, if any), when the sweep was timed, goes in the
-    title, so that a figure read beside later measurements says its date."""
+    (its value beside it), a grey strip where the paper's scenes sit (3DC only). ``measured`` (else
+    ``results["measured"]``, if any), when the sweep was timed, goes in the text alternative; the page's caption says
+    it (reader r28f: the date in the title competed with the panels' titles)."""
     sweeps = results["variables"]
     columns = min(len(sweeps), 2)
     rows = -(-len(sweeps) // columns)
     fig = Figure(figsize=(PAGE_WIDTH, 3.2 * rows + 1.8))  # as wide as the page: its text as large as it is drawn
     axes = fig.subplots(rows, columns, squeeze=False).ravel()
+    paper = results["scenario"].lower().startswith("3dc")  # the paper's 3DC scenes: where they sit, marked
     for ax, (key, sweep) in zip(axes, sweeps.items()):
         _panel(ax, sweep)
+        if paper:
+            _paper_scenes(ax, key, sweep)
         ax.set_title(TITLES.get(key, key.capitalize()), fontsize=10)  # reader r25c: which panel is which, on top
     for ax in axes[len(sweeps) :]:
         ax.set_visible(False)
     quick = " (quick sizes)" if results.get("quick") else ""
     measured = measured or results.get("measured")
-    when = f"measured {measured}; " if measured else ""
+    when = f"Measured {measured}. " if measured else ""
     shaded = any(_cheaper(sweep).any() for sweep in sweeps.values())
     hatched = any(_close(sweep).any() for sweep in sweeps.values())
     said = f"shaded: network cheaper by > {CLOSE:.0%}{' (nowhere here)' if not shaded else ''}"
     said += f"; hatched: within {CLOSE:.0%}, can't tell" if hatched else ""  # reader r27f: no hatching named undrawn
     fig.suptitle(  # the network's size said on the figure (reader r27f: "preset paper" alone was easy to miss)
-        f"Cost per check: {scenario_name(results['scenario'])}, the network of preset {results['preset']}'s sizes"
-        f"{quick}\n{when}{said}",
+        f'Cost per check: {scenario_name(results["scenario"])}, the network at the "{results["preset"]}" preset\'s '
+        f"sizes{quick}\n{said}",  # reader r29f: "the network of preset paper's sizes" read garbled
         fontsize=11,
     )
     handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # one legend, below
-    fig.legend(handles.values(), handles.keys(), loc="lower center", ncol=1, fontsize=9, frameon=False)
-    room = (0, (0.2 * len(handles) + 0.2) / fig.get_figheight(), 1, 1)  # below: a line a legend entry
+    room = (0, (0.22 * len(handles) + 0.1) / fig.get_figheight(), 1, 1)  # below: a line a legend entry
+    fig.legend(  # its top at the panels' foot (reader r29f: it sat far below them)
+        handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, room[1]), fontsize=9, frameon=False
+    )
     fig.tight_layout(rect=room)
-    for ax, sweep in zip(axes, sweeps.values()):
-        _name_ticks(ax, np.asarray(sweep["values"], dtype=float))
+    for ax, (key, sweep) in zip(axes, sweeps.items()):
+        _name_ticks(ax, np.asarray(sweep["values"], dtype=float), TICKS.get(key))
     fig.tight_layout(rect=room)  # again, for the slanted labels' height
     text = f"Cost per configuration of the exact and the learned check, {results['scenario']}, preset "
-    text += f"{results['preset']}{quick}, microseconds on log axes. "
+    text += f"{results['preset']}{quick}, microseconds on log axes. {when}"
+    text += PAPER_SAID if paper and set(PAPER_SCENES) & set(sweeps) else ""
     parts = [_in_a_table(sweep) for sweep in sweeps.values()]
     return describe(fig, text + " ".join(_in_words(sweep) for sweep in sweeps.values()), parts)
+
+
+PAPER_SCENES = {"obstacles": ((110, 125),), "links": ((2, 2), (4, 4))}  # the paper's 3DC: 110-125 blocks; 2, 4 links
+PAPER_LEGEND = "grey strip: the paper's scenes (110–125 blocks; chains of 2 and 4 links)"
+PAPER_SAID = "Grey strips mark the paper's scenes: 110 to 125 blocks, chains of 2 and 4 links. "
+TICKS = {"obstacles": (10, 50, 100, 200, 500)}  # the values named, the rest short ticks (reader r29f: 350 met 500)
+
+
+def _paper_scenes(ax, key: str, sweep: dict) -> None:
+    """A grey strip over each range of ``key`` where the paper's 3DC scenes sit (:data:`PAPER_SCENES`), a lone value
+    widened by 5 % each way on the log axis; none outside the values swept."""
+    x = np.asarray(sweep["values"], dtype=float)
+    for n, (low, high) in enumerate(r for r in PAPER_SCENES.get(key, ()) if x[0] <= r[0] and r[1] <= x[-1]):
+        label = PAPER_LEGEND if n == 0 else None  # a light grey, under the curves
+        ax.axvspan(low / 1.05, high * 1.05, color=COLORS["block"], alpha=0.3, zorder=0.5, lw=0, label=label)
 
 
 TITLES = {  # a swept variable's key -> its panel's title (reader r25c: only the x-labels told the panels apart)
@@ -274,18 +297,22 @@ def _kept_apart(labels: list[str], px: np.ndarray, room: list[float]) -> list[st
     return [label if k in shown else "" for k, label in enumerate(labels)]
 
 
-def _name_ticks(ax, x: np.ndarray) -> None:
-    """Name every measured value ``x (n,)`` of a laid-out panel under its tick: level where the labels keep apart as
-    drawn, slanted where level ones would crowd (reader r20d: 350 blocks and 1,280 triangles had no number), and
-    only what still crowds slanted gets a short, unnamed tick."""
-    px = ax.transData.transform(np.column_stack([x, np.ones_like(x)]))[:, 0]  # (n,) where each tick lies, pixels
+def _name_ticks(ax, measured: np.ndarray, chosen: tuple[float, ...] | None = None) -> None:
+    """Name the measured values ``measured (n,)`` of a laid-out panel under their ticks, or of them only those in
+    ``chosen`` (reader r29f: the obstacles' 350 touched 500; the others get short, unnamed ticks): level where the
+    labels keep apart as drawn, slanted where level ones would crowd (reader r20d: 1,280 triangles had no number),
+    and only what still crowds slanted gets a short, unnamed tick."""
+    picked = measured[np.isin(measured, chosen)] if chosen else measured
+    x = picked if len(picked) >= 2 else measured  # (m,) the values to name
+    px = ax.transData.transform(np.column_stack([x, np.ones_like(x)]))[:, 0]  # (m,) where each tick lies, pixels
     char_px = TICK_POINTS * ax.figure.dpi / 72 * 0.64  # a digit's width at the tick labels' size
     labels = _tick_labels(x, px, char_px)
     slanted = not all(labels)
     if slanted:  # steep, neighbours part by a line's height, not a label's width
         labels = _kept_apart([f"{v:,.0f}" for v in x], px, [0.6 * char_px / 0.64] * len(x))
-    ax.set_xticks(x[[bool(t) for t in labels]], [t for t in labels if t])  # the values named
-    ax.set_xticks(x[[not t for t in labels]], minor=True)  # the values measured but not named: short ticks
+    named = x[[bool(t) for t in labels]]
+    ax.set_xticks(named, [t for t in labels if t])  # the values named
+    ax.set_xticks(measured[~np.isin(measured, named)], minor=True)  # the values measured but not named: short ticks
     ax.xaxis.set_minor_formatter(NullFormatter())
     if slanted:
         ax.tick_params(axis="x", labelrotation=SLANT)
