@@ -92,7 +92,7 @@ def test_widgets_are_a_visible_note_and_no_widget_state_is_left(site):
 @pytest.mark.slow
 def test_the_site_has_every_page_a_student_needs(site):
     expected = ["index.html", "docs/results.html", "docs/fidelity.html", "docs/benchmarks.html", "docs/design.html"]
-    expected += ["docs/benchmarks_history.html", "docs/checker_engineering.html"]
+    expected += ["docs/benchmarks_history.html", "docs/checker_engineering.html", "docs/planner_race.html"]
     expected += ["docs/viewer.html", "tutorials/index.html", "tutorials/instructors.html", "reference/index.html"]
     expected += ["tutorials/instructors_jupyterhub.html"]
     expected += [f"tutorials/assignments/{name}/{name}.html" for name in grading.assignment_names()]
@@ -291,7 +291,7 @@ def as_page(file: File, site_dir: str) -> File:
 CODE_COLUMNS = 78  # what a code block of a prose page shows at 1280 px without scrolling (79 in a screenshot)
 
 
-@pytest.mark.parametrize("source", ["README.md", "docs/benchmarks.md", "docs/results.md"])
+@pytest.mark.parametrize("source", ["README.md", "docs/benchmarks.md", "docs/planner_race.md", "docs/results.md"])
 def test_the_index_and_the_docs_pages_render_their_lists_as_lists_and_their_code_within_the_column(source):
     """Review r12a: the index's code blocks were cut on the right (lines of up to 122 characters), and results' list
     ran together as one paragraph with literal hyphens."""
