@@ -750,7 +750,7 @@ STATUS = re.compile(  # findings.claim_status: the paper's claim from the record
     r"(?:\([^)]*\) )?in "
     r"(none|\d+) of the (\d+) scenario–sampler pairs"
 )
-ANSWER_NO = "**The answer: no.**"  # the opening's plain answer (review r28d: said once, the numbers in bullets under it)
+ANSWER_NO = "**The answer: no.**"  # the opening's plain answer (review r28d: said once, numbers in bullets under it)
 FAST_BULLET = re.compile(  # checker_scope.answer's first bullet, its counts captured
     r"\*\*Our fast exact checker\*\* \([^)]*\): prediction saved the median query's time in (none|\d+) of the (\d+) "
     r"scenario–sampler pairs; (\d+) tied, (\d+) took longer\."
@@ -860,7 +860,9 @@ def _slow_checker(nb, facts: checker_scope.SlowChecker | None = None) -> list[st
         problems.append(f"04: the first code cell's bullet on python-fcl says {bullet}; the record: {expected}")
     written = prose(nb)
     if ANSWER_NO in opening(nb) and 2 * ours > papers:
-        problems.append(f"04: the opening says '{ANSWER_NO}'; counted the paper's way: ours {ours}, the paper's {papers}")
+        problems.append(
+            f"04: the opening says '{ANSWER_NO}'; counted the paper's way: ours {ours}, the paper's {papers}"
+        )
     if SLOW_SAMPLING in written and facts.sampling_verdicts()[findings.SAVES] != len(facts.sampling):
         problems.append(f"04: the prose says '{SLOW_SAMPLING}'; the record: {dict(facts.sampling_verdicts())}")
     verdict = next((v for v in SLOW_TOTAL if totals[v] == len(facts.own)), None)
@@ -874,7 +876,9 @@ def _slow_checker(nb, facts: checker_scope.SlowChecker | None = None) -> list[st
     if SLOW_MOSTLY_TIES in written and not mostly:
         problems.append(f"04: the prose says '{SLOW_MOSTLY_TIES}'; the record: {dict(totals)}")
     if SLOW_FEWER in written and 2 * ours > papers:
-        problems.append(f"04: the prose says '{SLOW_FEWER}'; counted the paper's way: ours {ours}, the paper's {papers}")
+        problems.append(
+            f"04: the prose says '{SLOW_FEWER}'; counted the paper's way: ours {ours}, the paper's {papers}"
+        )
     return problems
 
 

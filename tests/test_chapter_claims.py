@@ -1478,9 +1478,13 @@ def test_chapter_04_holds_its_answer_with_python_fcl_on_both_sides_to_the_record
     assert said[2:] == [f"04: the prose says '{mostly}'; the record: {{'a tie': {len(facts.own)}}}"]
     tied = dataclasses.replace(facts, sampling=(*facts.sampling[:-1], 0.05))
     said = chapter_claims._slow_checker(nb, tied)
-    assert said[1].endswith(f"the record: ('shorter in {len(facts.sampling) - 1} of the {len(facts.sampling)} cells', "
-                            f"'{checker_scope.percents(facts.papers_sampling)}', '3', '16', '2', '10')")
-    assert said[2:] == [f"04: the prose says '{chapter_claims.SLOW_SAMPLING}'; the record: {dict(tied.sampling_verdicts())}"]
+    assert said[1].endswith(
+        f"the record: ('shorter in {len(facts.sampling) - 1} of the {len(facts.sampling)} cells', "
+        f"'{checker_scope.percents(facts.papers_sampling)}', '3', '16', '2', '10')"
+    )
+    assert said[2:] == [
+        f"04: the prose says '{chapter_claims.SLOW_SAMPLING}'; the record: {dict(tied.sampling_verdicts())}"
+    ]
     saving = dataclasses.replace(facts, totals=(0.5,) * len(facts.totals))  # every cell saves, by means
     assert (
         f"04: the opening says '{chapter_claims.ANSWER_NO}'; counted the paper's way: ours {len(facts.totals)}, the "

@@ -133,4 +133,3 @@ def test_our_means_are_the_means_rows_by_the_medians_labels():
     assert set(means) == {label for label in checker_scope.compact() if "ours" in label}
     rows = checker_scope.against_algorithm_1()
     assert means["3DC-9, ours (`strong` preset), medians"] == rows["3DC-9, ours (`strong` preset), means"]
-
