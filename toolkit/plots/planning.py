@@ -231,7 +231,7 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
     P = step.nodes  # (V, 2)
     removed_edge = np.zeros(len(step.edges), dtype=bool)
     removed_edge[step.removed_edges] = True
-    ax.add_collection(LineCollection(P[step.edges[~removed_edge]], colors=EDGE_COLOR, linewidths=0.5, zorder=2))
+    ax.add_collection(LineCollection(P[step.edges[~removed_edge]], colors=EDGE_COLOR, linewidths=0.4, zorder=2))
     confirmed = step.node_verified
     ax.scatter(*P[confirmed].T, s=22, color=NODE_COLOR, zorder=3, label="node, confirmed (filled)")
     ax.scatter(
@@ -357,8 +357,9 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
         fontsize=11,
     )
     _roadmap_legend(fig, axes, axes[len(steps)] if len(steps) < len(axes) else None)
-    text = f"{title}, one panel per step, {len(steps)} steps. First: {step_in_words(steps[0])}"
-    text += f" Last: {step_in_words(steps[-1])}" if len(steps) > 1 else ""  # every step: the longer description
+    text = f"{title}, one panel per step, {len(steps)} steps." + "".join(  # review r28d: the repair's panel too
+        f" Panel {k}: {step_in_words(step)}" for k, step in enumerate(steps, start=1)
+    )
     return describe(fig, text, [_step_part(step) for step in steps])
 
 
