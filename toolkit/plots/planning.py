@@ -211,9 +211,9 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
             ax.annotate(
                 f"{n}×",
                 (x, y),
-                xytext=(0, 7),  # above its markers, off them and their neighbours' (review r25a: it sat on them)
+                xytext=(6, 6),  # above and right of its markers (reviews r25a, r28d: it sat on them and a block's edge)
                 textcoords="offset points",
-                ha="center",
+                ha="left",
                 va="bottom",
                 fontsize=9,
                 path_effects=halo(1.0, ("free",)),
