@@ -9,6 +9,7 @@ build executes every chapter once in quick mode (``tests/test_site.py`` checks i
 from __future__ import annotations
 
 import re
+from collections import Counter
 from collections.abc import Callable
 
 from toolkit.experiments import paper_numbers
@@ -751,15 +752,17 @@ STATUS = re.compile(  # findings.claim_status: the paper's claim from the record
     r"(none|\d+) of the (\d+) scenario–sampler pairs"
 )
 ANSWER_NO = "**The answer: no.**"  # the opening's plain answer (review r28d: said once, numbers in bullets under it)
-FAST_BULLET = re.compile(  # checker_scope.answer's first bullet, its counts captured
-    r"\*\*Our fast exact checker\*\* \([^)]*\): prediction saved the median query's time in (none|\d+) of the (\d+) "
-    r"scenario–sampler pairs; (\d+) tied, (\d+) took longer\."
+FAST_BULLET = re.compile(  # checker_scope.answer's first bullet, its counts by medians and by means captured
+    r"\*\*Our fast exact checker\*\* \([^)]*\): prediction saved time in (none|\d+) of the (\d+) scenario–sampler "
+    r"pairs by the median query \((\d+) tied, (\d+) longer\), in (none|\d+) by mean times, the paper's statistic "
+    r"\((\d+) tied, (\d+) longer\)\."
 )
 SLOW_BULLET = re.compile(  # ... and its second, on python-fcl on both sides
     r"\*\*python-fcl on both sides\*\*: prediction made sampling (.+?) \(the paper's Table 3: (.+?)\), yet saved the "
-    r"whole query's time in (none|\d+) of the (\d+) pairs \(counted by means, as the paper counts: (none|\d+), "
-    r"against its Table 3's (\d+)\)\."
+    r"whole query's time in (none|\d+) of the (\d+) pairs by the median query \((\d+) tied, (\d+) longer\), in "
+    r"(none|\d+) by mean times \((\d+) tied, (\d+) longer\), against the paper's Table 3's (\d+)\."
 )
+MEANS_ROW = re.compile(r"(.+), ours \(`strong` preset\), means")  # section 6: the same run by means
 ACCURATE_ROW = re.compile(r"(.+), ours \(`strong` preset\), medians")  # section 6: the `strong` network in Algorithm 1
 PLAIN = {  # the chapter's written answer on the paper's claim (opening, section 6, summary), by findings.claim_verdict
     findings.DOES_NOT_HOLD: "inside the paper's Algorithm 1 our accurate network did not save planning time",
@@ -801,7 +804,13 @@ def _claim_status(nb, found: list[tuple[list[str], list[list[str]]]], said: dict
         if m.groups() != expected
     ]
     bullet = [m.groups() for m in FAST_BULLET.finditer(outputs[0] if outputs else "")]
-    counted = (expected[1], expected[2], expected[3], expected[4])
+    by_means = [v for label, verdicts in said.items() if MEANS_ROW.fullmatch(label) for v in verdicts]
+    counted = (
+        *expected[1:5],
+        str(by_means.count(findings.SAVES) or "none"),
+        str(by_means.count(findings.TIES)),
+        str(by_means.count(findings.COSTS)),
+    )
     if bullet != [counted]:
         problems.append(f"04: the first code cell's bullet on our fast checker says {bullet}; section 6's: {counted}")
     written = prose(nb)
@@ -848,12 +857,17 @@ def _slow_checker(nb, facts: checker_scope.SlowChecker | None = None) -> list[st
     ours = sum(findings.time_verdict(1 - t) == findings.SAVES for t in facts.totals)
     papers = sum(findings.time_verdict(1 - t) == findings.SAVES for t in facts.papers_totals)
     bullet = [m.groups() for m in SLOW_BULLET.finditer(outputs[0] if outputs else "")]
+    means = Counter(findings.time_verdict(1 - t) for t in facts.totals)
     expected = (
         checker_scope.sampling_words(facts),
         checker_scope.percents(facts.papers_sampling),
         str(totals[findings.SAVES] or "none"),
         str(len(facts.own)),
+        str(totals[findings.TIES]),
+        str(totals[findings.COSTS]),
         str(ours or "none"),
+        str(means[findings.TIES]),
+        str(means[findings.COSTS]),
         str(papers),
     )
     if bullet != [expected]:
