@@ -752,7 +752,7 @@ STATUS = re.compile(  # findings.claim_status: the paper's claim from the record
     r"(none|\d+) of the (\d+) scenario–sampler pairs"
 )
 ANSWER_NO = "**The answer: no.**"  # the opening's plain answer (review r28d: said once, numbers in bullets under it)
-FAST_BULLET = re.compile(  # checker_scope.answer's first bullet, its counts by medians and by means captured
+FAST_BULLET = re.compile(  # chapter04.answer's first bullet, its counts by medians and by means captured
     r"\*\*Our fast exact checker\*\* \([^)]*\): prediction saved time in (none|\d+) of the (\d+) scenario–sampler "
     r"pairs by the median query \((\d+) tied, (\d+) longer\), in (none|\d+) by mean times, the paper's statistic "
     r"\((\d+) tied, (\d+) longer\)\."
@@ -776,7 +776,7 @@ def _claim_status(nb, found: list[tuple[list[str], list[list[str]]]], said: dict
     queries and one sampler were its only test). Section 6 states it once in full, folded
     (:func:`toolkit.teaching.findings.claim_status`), as section 6's rows give it: the `strong` network's medians
     inside Algorithm 1 (every scenario recorded) decide it, its medians against the lazy PRM are counted beside; the
-    first code cell's bullet (:func:`toolkit.teaching.checker_scope.answer`) gives the same counts; the opening says
+    first code cell's bullet (:func:`toolkit.teaching.chapter04.answer`) gives the same counts; the opening says
     "The answer: no." only where none of those medians saves time (review r28d: the answer said once, at the top), and
     the prose never says the claim in another verdict's words."""
     eager = [v for label, verdicts in said.items() if ACCURATE_ROW.fullmatch(label) for v in verdicts]

@@ -24,7 +24,7 @@ from chapter_claims import problems
 
 from toolkit.experiments import paper_numbers
 from toolkit.learning import metrics
-from toolkit.teaching import chapter05, checker_scope, costs, findings, recorded
+from toolkit.teaching import chapter04, chapter05, checker_scope, costs, findings, recorded
 
 ROOT = Path(__file__).resolve().parents[1]
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
@@ -243,9 +243,9 @@ def chapter_04() -> dict:
     crossed = {"variables": {"links": sweep}}
     nb = executed(
         (
-            "MD:" + checker_scope.answer(),  # the answer in three bullets: our fast checker, python-fcl, why
+            "MD:" + chapter04.answer(),  # the answer in three bullets: our fast checker, python-fcl, why
             "MD:" + findings.planning_table(planning),
-            "MD:" + checker_scope.full_answer(),  # ... in full, as section 6 folds it
+            "MD:" + chapter04.full_answer(),  # ... in full, as section 6 folds it
         ),
         "MD:" + findings.throughput_table({"2DS": rates, "3DC-7": rates}, 10_000),
         (

@@ -6,7 +6,7 @@ import dataclasses
 
 import pytest
 
-from toolkit.teaching import checker_scope, recorded
+from toolkit.teaching import chapter04, checker_scope, recorded
 
 TABLE3 = (
     "`strong --planner paper --baseline paper-fcl-alike`, Table 3: time improvement ratio (without − with) / without"
@@ -103,15 +103,15 @@ def test_like_for_like_counts_savings_of_ten_percent_or_more_by_means_as_the_pap
 
 def test_the_answer_gives_three_short_bullets_read_from_the_record():
     """Review r28d: the answer said once, three short bullets (our fast checker, python-fcl on both sides, why), the
-    same counts as the full sentences section 6 folds (:func:`checker_scope.full_answer`)."""
-    said = checker_scope.answer().splitlines()
+    same counts as the full sentences section 6 folds (:func:`chapter04.full_answer`)."""
+    said = chapter04.answer().splitlines()
     assert [line[:4] for line in said] == ["- **"] * 3
     assert said[0].startswith("- **Our fast exact checker** (compiled in 3D, numpy interval tests in 2DS): ")
     assert (
         "saved time in none of the 16 scenario–sampler pairs by the median query (7 tied, 9 longer), in 3 by mean "
         "times, the paper's statistic (7 tied, 6 longer)." in said[0]
     )
-    assert "(a tie in 7, a cost in 9, " in checker_scope.full_answer()  # the same counts, in full
+    assert "(a tie in 7, a cost in 9, " in chapter04.full_answer()  # the same counts, in full
     facts = checker_scope.slow_checker()
     assert f"prediction made sampling {checker_scope.percents(facts.sampling)} shorter" in said[1]
     assert (
@@ -119,7 +119,7 @@ def test_the_answer_gives_three_short_bullets_read_from_the_record():
         "times (12 tied, 2 longer), against the paper's Table 3's 10." in said[1]
     )
     assert said[2].startswith("- **Why**: ") and "(section 5 counts both)" in said[2]
-    full = checker_scope.full_answer()
+    full = chapter04.full_answer()
     assert checker_scope.slow_sentence(facts, ranges=False) in full and checker_scope.like_for_like(facts) in full
     assert all(len(line) < 330 for line in said)  # short: each about three lines of the page
 

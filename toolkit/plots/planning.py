@@ -264,7 +264,7 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
         marker="X",
         color=REPAIR_COLOR,
         zorder=5,
-        label="node removed by a repair",
+        label="node removed by a repair" if len(step.removed_nodes) else None,  # review r29d: none removed, none named
         path_effects=halo(0.0),
     )
     for node, marker, size, name in ((START, "s", 90, "start"), (GOAL, "*", 320, "goal")):  # a star's ink is thin
@@ -296,7 +296,8 @@ def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: in
         hit = np.flatnonzero(~exact.are_valid(Q))
         if hit.size:
             x, y = Q[hit[0]]
-            ax.scatter([x], [y], s=60, facecolors="none", edgecolors=COLORS["ink"], linewidths=1.5, zorder=7)
+            ring = dict(s=60, facecolors="none", edgecolors=COLORS["ink"], linewidths=1.5, zorder=7)
+            ax.scatter([x], [y], **ring, label="where a removed edge enters a C-obstacle")  # review r29d: named
             ax.annotate(
                 f"hits ({x:.1f}, {y:.1f})",
                 (x, y),
