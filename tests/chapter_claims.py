@@ -504,7 +504,7 @@ FIGURES_04 = (  # the figures chapter 04's prose promises, by the call that draw
     "timings.stage_times(",
     "planning_times(",
     "timings.throughputs(",
-    "answer_ratios(",  # section 6's one panel (review r25a); the crossover moved to docs/benchmarks.md
+    "answer_figure(",  # the answer's one panel, under it (reviews r25a, r28d)
 )
 
 

@@ -6,8 +6,8 @@
 - :func:`audited_table`: section 3's returned paths that a fresh exact checker accepts at 10x finer resolution;
 - :func:`eager_tables`: section 5's stage times and counts of Algorithm 1 with and without the network, medians over
   the queries;
-- :func:`answer`: the answer at the top, three short bullets read from ``docs/results.md``, and :func:`full_answer`,
-  the same counts in full sentences for section 6.
+- :func:`answer`: the answer at the top, three short bullets read from ``docs/results.md``, :func:`answer_figure`,
+  its evidence under it, and :func:`full_answer`, the same counts in full sentences for section 6.
 """
 
 from __future__ import annotations
@@ -16,8 +16,10 @@ from collections import Counter
 from collections.abc import Mapping
 
 import numpy as np
+from matplotlib.figure import Figure
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
+from toolkit.plots.answer import answer_ratios
 from toolkit.teaching import checker_scope, costs, findings, recorded
 from toolkit.teaching.recorded import Tables
 from toolkit.util.verdicts import COSTS, SAVES, TIES, time_verdict
@@ -190,4 +192,25 @@ def full_answer(tables: Tables | None = None) -> str:
     return (
         f"{findings.claim_status(eager, lazy, costs.at_edge(recorded.ALGORITHM_1, tables)[COSTS])}\n\n"
         f"{checker_scope.slow_sentence(facts, ranges=False)} {checker_scope.like_for_like(facts)}"
+    )
+
+
+SERIES = {  # the answer figure's legend (review r28d: the circles are our fast checker, compiled in 3D only)
+    "the paper's Table 3": "the paper's Table 3: its means",
+    "ours (`strong` preset), medians": "our fast checker (compiled in 3D, numpy in 2DS): median ratio, middle half",
+    "ours (`strong`, python-fcl), medians": "python-fcl on both sides: the same",
+}
+
+
+def answer_figure(tables: Tables | None = None) -> Figure:
+    """The answer's evidence, under it (review r28d: it came at screen 15 of 18): the paper's Table 3 beside our
+    accurate network inside Algorithm 1, with the fast checker and with python-fcl on both sides, by the median of
+    each query's own ratio with its middle half, our ratio of mean times as a ring
+    (:func:`toolkit.plots.answer.answer_ratios` of :func:`toolkit.teaching.checker_scope.compact`)."""
+    return answer_ratios(
+        checker_scope.compact(tables),
+        tie=findings.TIE,
+        spans=checker_scope.spans(tables),
+        means=checker_scope.our_means(tables),
+        names=SERIES,
     )
