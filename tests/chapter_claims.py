@@ -9,6 +9,7 @@ build executes every chapter once in quick mode (``tests/test_site.py`` checks i
 from __future__ import annotations
 
 import re
+from collections import Counter
 from collections.abc import Callable
 
 from toolkit.experiments import paper_numbers
@@ -526,7 +527,7 @@ FIGURES_04 = (  # the figures chapter 04's prose promises, by the call that draw
     "timings.stage_times(",
     "planning_times(",
     "timings.throughputs(",
-    "answer_ratios(",  # section 6's one panel (review r25a); the crossover moved to docs/benchmarks.md
+    "answer_figure(",  # the answer's one panel, under it (reviews r25a, r28d)
 )
 
 
@@ -773,6 +774,18 @@ STATUS = re.compile(  # findings.claim_status: the paper's claim from the record
     r"(?:\([^)]*\) )?in "
     r"(none|\d+) of the (\d+) scenario–sampler pairs"
 )
+ANSWER_NO = "**The answer: no.**"  # the opening's plain answer (review r28d: said once, numbers in bullets under it)
+FAST_BULLET = re.compile(  # chapter04.answer's first bullet, its counts by medians and by means captured
+    r"\*\*Our fast exact checker\*\* \([^)]*\): prediction saved time in (none|\d+) of the (\d+) scenario–sampler "
+    r"pairs by the median query \((\d+) tied, (\d+) longer\), in (none|\d+) by mean times, the paper's statistic "
+    r"\((\d+) tied, (\d+) longer\)\."
+)
+SLOW_BULLET = re.compile(  # ... and its second, on python-fcl on both sides
+    r"\*\*python-fcl on both sides\*\*: prediction made sampling (.+?) \(the paper's Table 3: (.+?)\), yet saved the "
+    r"whole query's time in (none|\d+) of the (\d+) pairs by the median query \((\d+) tied, (\d+) longer\), in "
+    r"(none|\d+) by mean times \((\d+) tied, (\d+) longer\), against the paper's Table 3's (\d+)\."
+)
+MEANS_ROW = re.compile(r"(.+), ours \(`strong` preset\), means")  # section 6: the same run by means
 ACCURATE_ROW = re.compile(r"(.+), ours \(`strong` preset\), medians")  # section 6: the `strong` network in Algorithm 1
 PLAIN = {  # the chapter's written answer on the paper's claim (opening, section 6, summary), by findings.claim_verdict
     findings.DOES_NOT_HOLD: "inside the paper's Algorithm 1 our accurate network did not save planning time",
@@ -783,17 +796,18 @@ PLAIN = {  # the chapter's written answer on the paper's claim (opening, section
 
 def _claim_status(nb, found: list[tuple[list[str], list[list[str]]]], said: dict[str, list[str]]) -> list[str]:
     """The paper's claim with an accurate network, from the recorded runs of 100 queries a scenario (review r15a: 4
-    queries and one sampler were its only test). The first code cell states it once (review r23a: the summary's
-    reprint went; :func:`toolkit.teaching.findings.claim_status`) as section 6's rows give it: the `strong` network's
-    medians inside Algorithm 1 (every scenario recorded) decide it, its medians against the lazy PRM are counted
-    beside; and the prose says it in the same words three times (opening, section 6, summary), never in another
-    verdict's."""
+    queries and one sampler were its only test). Section 6 states it once in full, folded
+    (:func:`toolkit.teaching.findings.claim_status`), as section 6's rows give it: the `strong` network's medians
+    inside Algorithm 1 (every scenario recorded) decide it, its medians against the lazy PRM are counted beside; the
+    first code cell's bullet (:func:`toolkit.teaching.chapter04.answer`) gives the same counts; the opening says
+    "The answer: no." only where none of those medians saves time (review r28d: the answer said once, at the top), and
+    the prose never says the claim in another verdict's words."""
     eager = [v for label, verdicts in said.items() if ACCURATE_ROW.fullmatch(label) for v in verdicts]
     lazy = [v for name in ("2DS", "3DC-7") for v in said.get(f"{name}, `strong` preset, ratio of medians", [])]
     outputs = texts(nb)
-    stated = list(STATUS.finditer(" ".join(outputs)))  # once, in section 6 (review r25a: the answer stated once)
+    stated = list(STATUS.finditer(" ".join(outputs)))  # once, folded in section 6 (review r28d: the top has bullets)
     if not eager or len(lazy) != 2 * len(SAMPLERS) or len(stated) != 1:
-        return ["04: the first code cell does not state the paper's claim from the recorded runs"]
+        return ["04: section 6 does not state the paper's claim from the recorded runs"]
     saved = eager.count(findings.SAVES)
     verdict = findings.HOLDS if saved == len(eager) else findings.IN_PART if saved else findings.DOES_NOT_HOLD
     edge = costs.at_edge(recorded.ALGORITHM_1)[findings.COSTS]  # costs whose middle half reaches into the band
@@ -812,9 +826,19 @@ def _claim_status(nb, found: list[tuple[list[str], list[list[str]]]], said: dict
         for m in stated
         if m.groups() != expected
     ]
+    bullet = [m.groups() for m in FAST_BULLET.finditer(outputs[0] if outputs else "")]
+    by_means = [v for label, verdicts in said.items() if MEANS_ROW.fullmatch(label) for v in verdicts]
+    counted = (
+        *expected[1:5],
+        str(by_means.count(findings.SAVES) or "none"),
+        str(by_means.count(findings.TIES)),
+        str(by_means.count(findings.COSTS)),
+    )
+    if bullet != [counted]:
+        problems.append(f"04: the first code cell's bullet on our fast checker says {bullet}; section 6's: {counted}")
     written = prose(nb)
-    if PLAIN[verdict] not in opening(nb):
-        problems.append(f"04: the opening does not say '{PLAIN[verdict]}'")
+    if (ANSWER_NO in opening(nb)) != (verdict == findings.DOES_NOT_HOLD):
+        problems.append(f"04: the opening on '{ANSWER_NO}'; the recorded runs: {verdict}")
     problems += [
         f"04: the prose says '{words}'; the recorded runs: {verdict}"
         for v, words in PLAIN.items()
@@ -836,42 +860,62 @@ SLOW_FEWER = "saved total time in far fewer cells than the paper's Table 3"  # a
 
 def _slow_checker(nb, facts: checker_scope.SlowChecker | None = None) -> list[str]:
     """The answer with python-fcl on both sides (review r19a: "no, against a fast compiled checker"), against the
-    recorded run (``docs/results.md``, :data:`toolkit.teaching.checker_scope.SLOW`): the first code cell prints
-    :func:`~toolkit.teaching.checker_scope.slow_sentence` and the paper's own count beside ours
-    (:func:`~toolkit.teaching.checker_scope.like_for_like`; "far fewer cells" only where ours is at most half); the
-    prose (opening, section 6,
-    summary) says the sampling stage saved time only where every recorded cell did, and says each query's total
-    time was a tie (or shorter, or longer) only where every recorded median says so, never another verdict's words."""
+    recorded run (``docs/results.md``, :data:`toolkit.teaching.checker_scope.SLOW`): the first code cell's bullet
+    gives its sampling stage, its savings of total time and the paper's own count beside ours as the record has them
+    (review r28d: three short bullets), and section 6 prints them in full
+    (:func:`~toolkit.teaching.checker_scope.slow_sentence`, :func:`~toolkit.teaching.checker_scope.like_for_like`);
+    the prose says "The answer: no." only where that run saved at most half the paper's count, says each query's
+    total time was a tie (or shorter, or longer) only where every recorded median says so, "mostly a tie" only where
+    most do, and "far fewer cells" only where ours is at most half the paper's."""
     facts = checker_scope.slow_checker() if facts is None else facts
     said = " ".join(checker_scope.slow_sentence(facts, ranges=False).split())
     outputs = texts(nb)
     problems = []
     if said not in " ".join(outputs):
-        problems.append(f"04: the first code cell does not print the slow checker's record: {said}")
+        problems.append(f"04: section 6 does not print the slow checker's record: {said}")
     counted = " ".join(checker_scope.like_for_like(facts).split())
     if counted not in " ".join(outputs):
-        problems.append(f"04: the first code cell does not count the slow checker's cells as the paper does: {counted}")
-    written = prose(nb)
-    saved = facts.sampling_verdicts()[findings.SAVES] == len(facts.sampling)
-    if (SLOW_SAMPLING in opening(nb)) != saved:
-        problems.append(f"04: the opening on '{SLOW_SAMPLING}'; the record: {saved}")
+        problems.append(f"04: section 6 does not count the slow checker's cells as the paper does: {counted}")
     totals = facts.total_verdicts()
+    ours = sum(findings.time_verdict(1 - t) == findings.SAVES for t in facts.totals)
+    papers = sum(findings.time_verdict(1 - t) == findings.SAVES for t in facts.papers_totals)
+    bullet = [m.groups() for m in SLOW_BULLET.finditer(outputs[0] if outputs else "")]
+    means = Counter(findings.time_verdict(1 - t) for t in facts.totals)
+    expected = (
+        checker_scope.sampling_words(facts),
+        checker_scope.percents(facts.papers_sampling),
+        str(totals[findings.SAVES] or "none"),
+        str(len(facts.own)),
+        str(totals[findings.TIES]),
+        str(totals[findings.COSTS]),
+        str(ours or "none"),
+        str(means[findings.TIES]),
+        str(means[findings.COSTS]),
+        str(papers),
+    )
+    if bullet != [expected]:
+        problems.append(f"04: the first code cell's bullet on python-fcl says {bullet}; the record: {expected}")
+    written = prose(nb)
+    if ANSWER_NO in opening(nb) and 2 * ours > papers:
+        problems.append(
+            f"04: the opening says '{ANSWER_NO}'; counted the paper's way: ours {ours}, the paper's {papers}"
+        )
+    if SLOW_SAMPLING in written and facts.sampling_verdicts()[findings.SAVES] != len(facts.sampling):
+        problems.append(f"04: the prose says '{SLOW_SAMPLING}'; the record: {dict(facts.sampling_verdicts())}")
     verdict = next((v for v in SLOW_TOTAL if totals[v] == len(facts.own)), None)
     for v, phrases in SLOW_TOTAL.items():
-        if v == verdict and phrases[0] not in opening(nb):
-            problems.append(f"04: the opening does not say '{phrases[0]}'; the record: {dict(totals)}")
         problems += [
             f"04: the prose says '{p}'; the record: {dict(totals)}" for p in phrases if v != verdict and p in written
         ]
     if totals[findings.SAVES] and SLOW_ONLY_SAMPLING in written:
         problems.append(f"04: the prose says '{SLOW_ONLY_SAMPLING}'; the record: {dict(totals)}")
     mostly = verdict is None and 2 * totals[findings.TIES] > len(facts.own)
-    if (SLOW_MOSTLY_TIES in opening(nb)) != mostly:
-        problems.append(f"04: the opening on '{SLOW_MOSTLY_TIES}'; the record: {dict(totals)}")
-    ours = sum(findings.time_verdict(1 - t) == findings.SAVES for t in facts.totals)
-    papers = sum(findings.time_verdict(1 - t) == findings.SAVES for t in facts.papers_totals)
-    if (SLOW_FEWER in prose(nb)) != (2 * ours <= papers):
-        problems.append(f"04: the prose on '{SLOW_FEWER}'; counted the paper's way: ours {ours}, the paper's {papers}")
+    if SLOW_MOSTLY_TIES in written and not mostly:
+        problems.append(f"04: the prose says '{SLOW_MOSTLY_TIES}'; the record: {dict(totals)}")
+    if SLOW_FEWER in written and 2 * ours > papers:
+        problems.append(
+            f"04: the prose says '{SLOW_FEWER}'; counted the paper's way: ours {ours}, the paper's {papers}"
+        )
     return problems
 
 

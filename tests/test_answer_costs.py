@@ -4,7 +4,7 @@ from __future__ import annotations
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import alt_text
-from toolkit.plots.answer import answer_ratios
+from toolkit.plots.answer import MEAN_WORDS, answer_ratios
 from toolkit.teaching import chapter04, checker_scope, costs, findings
 
 
@@ -15,6 +15,23 @@ def test_answer_ratios_draws_every_scenario_sampler_and_series_in_one_panel():
     drawn = sum(len(line.get_xdata()) for line in fig.axes[0].lines if line.get_marker() not in ("None", None, ""))
     assert drawn == sum(len(r) for r in rows.values()) == 48  # 4 scenarios x 4 samplers x 3 series
     assert "tie band, above 0.90 and below 1.10" in alt_text(fig)
+
+
+def test_answer_ratios_rings_our_means_around_our_medians():
+    """Review r28d: the paper's squares are means and our filled markers medians; our means are drawn as rings at the
+    same x as the medians of the same series, one legend entry for them all."""
+    rows, means = checker_scope.compact(), checker_scope.our_means()
+    fig = answer_ratios(rows, tie=findings.TIE, means=means)
+    rings = [c for c in fig.axes[0].collections if len(c.get_offsets())]
+    assert len(rings) == 1 and len(rings[0].get_offsets()) == sum(len(r) for r in means.values()) == 32
+    filled = {
+        (round(x, 6), y) for line in fig.axes[0].lines for x, y in zip(line.get_xdata(), line.get_ydata(), strict=True)
+    }
+    medians_x = {x for x, _ in filled}
+    assert all(round(x, 6) in medians_x for x, _ in rings[0].get_offsets())
+    assert "a ring at our series' ratio of mean times" in alt_text(fig)
+    labels = [t.get_text() for legend in fig.legends for t in legend.get_texts()]
+    assert labels.count(MEAN_WORDS) == 1
 
 
 def test_cost_table_splits_the_cells_where_prediction_cost_25_percent_or_more():

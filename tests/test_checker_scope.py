@@ -6,7 +6,7 @@ import dataclasses
 
 import pytest
 
-from toolkit.teaching import checker_scope, recorded
+from toolkit.teaching import chapter04, checker_scope, recorded
 
 TABLE3 = (
     "`strong --planner paper --baseline paper-fcl-alike`, Table 3: time improvement ratio (without − with) / without"
@@ -101,15 +101,38 @@ def test_like_for_like_counts_savings_of_ten_percent_or_more_by_means_as_the_pap
     assert "saved total time in 2 of its 4 cells" in checker_scope.like_for_like(edge)
 
 
-def test_the_answer_lists_the_claim_python_fcl_and_why_from_the_record():
-    said = checker_scope.answer().splitlines()
-    assert [line[:3] for line in said] == ["1. ", "2. ", "3. "]
-    assert said[0].startswith(
-        "1. Against our fast exact checker (compiled in 3D, numpy interval tests in 2DS), the paper's claim "
+def test_the_answer_gives_three_short_bullets_read_from_the_record():
+    """Review r28d: the answer said once, three short bullets (our fast checker, python-fcl on both sides, why), the
+    same counts as the full sentences section 6 folds (:func:`chapter04.full_answer`)."""
+    said = chapter04.answer().splitlines()
+    assert [line[:4] for line in said] == ["- **"] * 3
+    assert said[0].startswith("- **Our fast exact checker** (compiled in 3D, numpy interval tests in 2DS): ")
+    assert (
+        "saved time in none of the 16 scenario–sampler pairs by the median query (7 tied, 9 longer), in 3 by mean "
+        "times, the paper's statistic (7 tied, 6 longer)." in said[0]
     )
-    assert checker_scope.slow_sentence(checker_scope.slow_checker(), ranges=False) in said[1]
-    assert checker_scope.like_for_like(checker_scope.slow_checker()) in said[1]
-    rates = recorded.table(recorded.ALGORITHM_1, "Checker throughput")
-    costs = [1 / recorded.ours(row["learned / exact"]) for row in rates.values()]
-    assert said[2].startswith("3. Why: the network decides only the samples")
-    assert f"a network call cost {min(costs):.1f} to {max(costs):.0f} times as much per configuration" in said[2]
+    assert "(a tie in 7, a cost in 9, " in chapter04.full_answer()  # the same counts, in full
+    facts = checker_scope.slow_checker()
+    assert f"prediction made sampling {checker_scope.percents(facts.sampling)} shorter" in said[1]
+    assert (
+        "saved the whole query's time in 3 of the 16 pairs by the median query (13 tied, 0 longer), in 2 by mean "
+        "times (12 tied, 2 longer), against the paper's Table 3's 10." in said[1]
+    )
+    assert said[2].startswith("- **Why**: ") and "(section 5 counts both)" in said[2]
+    full = chapter04.full_answer()
+    assert checker_scope.slow_sentence(facts, ranges=False) in full and checker_scope.like_for_like(facts) in full
+    assert all(len(line) < 330 for line in said)  # short: each about three lines of the page
+
+
+def test_sampling_words_counts_the_cells_where_not_every_one_saved():
+    tied = dataclasses.replace(ONE, sampling=(0.5, 0.05, 0.3, 0.2))  # 5 % saved: a tie
+    assert checker_scope.sampling_words(tied) == "shorter in 3 of the 4 cells"
+    every = dataclasses.replace(ONE, sampling=(0.5, 0.4, 0.3, 0.2))
+    assert checker_scope.sampling_words(every) == "20–50 % shorter"
+
+
+def test_our_means_are_the_means_rows_by_the_medians_labels():
+    means = checker_scope.our_means()
+    assert set(means) == {label for label in checker_scope.compact() if "ours" in label}
+    rows = checker_scope.against_algorithm_1()
+    assert means["3DC-9, ours (`strong` preset), medians"] == rows["3DC-9, ours (`strong` preset), means"]

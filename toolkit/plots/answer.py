@@ -5,7 +5,7 @@ the python-fcl runs, and two of four scenarios were not drawn).
 Algorithm 1 for each series of ``{"<scenario>, <series>": {sampler: ratio}}`` (the rows of
 :func:`toolkit.teaching.checker_scope.compact`: the paper's Table 3, our accurate network with our fast checker
 (compiled in 3D, numpy in 2DS) and with python-fcl on both sides), on a log axis against the line at 1 and the tie
-band.
+band; with ``means``, each of our series' mean-based ratio (Table 3's statistic) as a ring around its median.
 """
 
 from __future__ import annotations
@@ -19,7 +19,9 @@ from toolkit.plots.palette import COLORS, PAGE_WIDTH, series_style
 from toolkit.plots.timings import band_words, log_ticks
 
 MARKERS = ("s", "o", "^")  # a series' marker, beside its colour
-SPREAD = 0.3  # a series' offset from its sampler's tick: three series side by side, none hiding another
+SPREAD = 0.25  # a series' offset from its sampler's tick: a sampler's three series side by side, nearer each other
+# than a neighbour's (review r29d: at 0.32 a triangle sat nearer the next sampler's square), a faint line between
+MEAN_WORDS = "ring: our ratio of mean times (Table 3's statistic)"  # the legend's entry for ``means``
 
 
 def answer_ratios(
@@ -28,16 +30,18 @@ def answer_ratios(
     tie: float,
     names: dict[str, str] | None = None,
     spans: dict[str, dict[str, tuple[float, float]]] | None = None,
+    means: dict[str, dict[str, float]] | None = None,
 ) -> Figure:
     """One panel: a group of four samplers per scenario, one point per series in each, the tie band ``1 ± tie``
     shaded darker than the page's other bands, and the series named in a legend above (``names`` renames them);
-    ``spans``: a whisker per point of the rows it names (the middle half of the queries' ratios)."""
+    ``spans``: a whisker per point of the rows it names (the middle half of the queries' ratios); ``means``: a ring
+    (a hollow marker) around each point of the rows it names, at that series' ratio of mean times (review r28d: the
+    paper's squares are means, our filled markers medians, and our means were not drawn)."""
     scenarios = list(dict.fromkeys(label.split(", ", 1)[0] for label in rows))
     series = list(dict.fromkeys(label.split(", ", 1)[1] for label in rows))
     names = names or {}
     fig = Figure(figsize=(PAGE_WIDTH, 4.6), layout="constrained")
     ax = fig.subplots()
-    width = len(PAPER_SAMPLERS) + 1  # a scenario's samplers, and a gap
     ax.axhspan(
         1 - tie,
         1 + tie,
@@ -49,8 +53,34 @@ def answer_ratios(
     )
     ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
     drawn, parts = _series(ax, rows, scenarios, series, names, spans or {})
+    drawn += _rings(ax, means or {}, scenarios, series)
+    _groups(ax, scenarios)
+    ax.set_ylim(min(*drawn, 1 - tie) / 1.25, max(*drawn, 1 + tie) * 1.25)
+    log_ticks(ax)
+    ax.set_ylabel("total time with / without\n(log scale; below 1: saves)")
+    ax.set_xlabel("sampler, grouped by scenario", labelpad=24)  # under the scenarios' names
+    fig.legend(loc="outside upper center", ncol=1, fontsize=9, frameon=False)  # over the panel: long names, a row each
+    points = [v for row in rows.values() for v in row.values()]
+    below = int(np.sum(np.array(points) <= 1 - tie))
+    text = (
+        "Inside the paper's Algorithm 1, total time with prediction over time without, per scenario and sampler, "
+        f"log scale, against the line at 1 and the shaded {band_words(tie)}: {len(points)} points in "
+        f"{len(series)} series, {below} of them at or below {1 - tie:.2f}"
+        + (", whiskers spanning the middle half of the queries' ratios where a series has them" if spans else "")
+        + (", a ring at our series' ratio of mean times." if means else ".")
+    )
+    return describe(fig, text, parts)
+
+
+def _groups(ax, scenarios: list[str]) -> None:
+    """The x axis: a group of :data:`PAPER_SAMPLERS` per scenario, a line between groups, a faint dotted one between a
+    group's samplers (which three points belong together), the samplers' names as ticks, the scenario's under them."""
+    width = len(PAPER_SAMPLERS) + 1  # a scenario's samplers, and a gap
     for i in range(1, len(scenarios)):
         ax.axvline(i * width - 1, color=COLORS["shade"], linewidth=1.0, zorder=0)
+    for i in range(len(scenarios)):
+        for j in range(1, len(PAPER_SAMPLERS)):
+            ax.axvline(i * width + j - 0.5, color=COLORS["shade"], linewidth=0.6, linestyle=":", zorder=0)
     ticks = [i * width + j for i in range(len(scenarios)) for j in range(len(PAPER_SAMPLERS))]
     ax.set_xticks(ticks, list(PAPER_SAMPLERS) * len(scenarios), fontsize=9)
     ax.set_xlim(-0.7, len(scenarios) * width - 1.3)
@@ -65,20 +95,6 @@ def answer_ratios(
             fontsize=10,
             weight="bold",
         )
-    ax.set_ylim(min(*drawn, 1 - tie) / 1.25, max(*drawn, 1 + tie) * 1.25)
-    log_ticks(ax)
-    ax.set_ylabel("total time with / without\n(below 1: saves)")
-    ax.set_xlabel("sampler, grouped by scenario", labelpad=24)  # under the scenarios' names
-    fig.legend(loc="outside upper center", ncol=1, fontsize=9, frameon=False)  # over the panel: long names, a row each
-    points = [v for row in rows.values() for v in row.values()]
-    below = int(np.sum(np.array(points) <= 1 - tie))
-    text = (
-        "Inside the paper's Algorithm 1, total time with prediction over time without, per scenario and sampler, "
-        f"log scale, against the line at 1 and the shaded {band_words(tie)}: {len(points)} points in "
-        f"{len(series)} series, {below} of them at or below {1 - tie:.2f}"
-        + (", whiskers spanning the middle half of the queries' ratios where a series has them." if spans else ".")
-    )
-    return describe(fig, text, parts)
 
 
 def _series(ax, rows, scenarios: list[str], series: list[str], names: dict[str, str], spans) -> tuple[list, list]:
@@ -117,6 +133,25 @@ def _series(ax, rows, scenarios: list[str], series: list[str], names: dict[str, 
             Part(names.get(name, name), "total time with / without", ("scenario", *PAPER_SAMPLERS), tuple(cells))
         )
     return drawn, parts
+
+
+def _rings(ax, means: dict[str, dict[str, float]], scenarios: list[str], series: list[str]) -> list[float]:
+    """A ring (a hollow marker, larger than the filled one) at each ratio of ``means``, at the x of the filled point
+    of the same label and sampler; one legend entry for them all. Returns the values drawn."""
+    width = len(PAPER_SAMPLERS) + 1
+    x, y, colors = [], [], []
+    for k, name in enumerate(series):
+        for i, scenario in enumerate(scenarios):
+            ratios = means.get(f"{scenario}, {name}", {})
+            for j, s in enumerate(PAPER_SAMPLERS):
+                if s in ratios:
+                    x.append(i * width + j + (k - 1) * SPREAD)
+                    y.append(ratios[s])
+                    colors.append(series_style(k)["color"])
+    if x:
+        ax.scatter(x, y, s=70, facecolors="none", edgecolors=colors, linewidths=1.1, zorder=4)
+        ax.scatter([], [], s=70, facecolors="none", edgecolors=COLORS["ink"], linewidths=1.1, label=MEAN_WORDS)
+    return y
 
 
 def _cell(ratio: float | None, whisker: tuple[float, float] | None) -> str:

@@ -211,9 +211,9 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
             ax.annotate(
                 f"{n}×",
                 (x, y),
-                xytext=(0, 7),  # above its markers, off them and their neighbours' (review r25a: it sat on them)
+                xytext=(6, 6),  # above and right of its markers (reviews r25a, r28d: it sat on them and a block's edge)
                 textcoords="offset points",
-                ha="center",
+                ha="left",
                 va="bottom",
                 fontsize=9,
                 path_effects=halo(1.0, ("free",)),
@@ -231,7 +231,7 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
     P = step.nodes  # (V, 2)
     removed_edge = np.zeros(len(step.edges), dtype=bool)
     removed_edge[step.removed_edges] = True
-    ax.add_collection(LineCollection(P[step.edges[~removed_edge]], colors=EDGE_COLOR, linewidths=0.5, zorder=2))
+    ax.add_collection(LineCollection(P[step.edges[~removed_edge]], colors=EDGE_COLOR, linewidths=0.4, zorder=2))
     confirmed = step.node_verified
     ax.scatter(*P[confirmed].T, s=22, color=NODE_COLOR, zorder=3, label="node, confirmed (filled)")
     ax.scatter(
@@ -264,7 +264,7 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
         marker="X",
         color=REPAIR_COLOR,
         zorder=5,
-        label="node removed by a repair",
+        label="node removed by a repair" if len(step.removed_nodes) else None,  # review r29d: none removed, none named
         path_effects=halo(0.0),
     )
     for node, marker, size, name in ((START, "s", 90, "start"), (GOAL, "*", 320, "goal")):  # a star's ink is thin
@@ -296,7 +296,8 @@ def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: in
         hit = np.flatnonzero(~exact.are_valid(Q))
         if hit.size:
             x, y = Q[hit[0]]
-            ax.scatter([x], [y], s=60, facecolors="none", edgecolors=COLORS["ink"], linewidths=1.5, zorder=7)
+            ring = dict(s=60, facecolors="none", edgecolors=COLORS["ink"], linewidths=1.5, zorder=7)
+            ax.scatter([x], [y], **ring, label="where a removed edge enters a C-obstacle")  # review r29d: named
             ax.annotate(
                 f"hits ({x:.1f}, {y:.1f})",
                 (x, y),
@@ -357,8 +358,9 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
         fontsize=11,
     )
     _roadmap_legend(fig, axes, axes[len(steps)] if len(steps) < len(axes) else None)
-    text = f"{title}, one panel per step, {len(steps)} steps. First: {step_in_words(steps[0])}"
-    text += f" Last: {step_in_words(steps[-1])}" if len(steps) > 1 else ""  # every step: the longer description
+    text = f"{title}, one panel per step, {len(steps)} steps." + "".join(  # review r28d: the repair's panel too
+        f" Panel {k}: {step_in_words(step)}" for k, step in enumerate(steps, start=1)
+    )
     return describe(fig, text, [_step_part(step) for step in steps])
 
 

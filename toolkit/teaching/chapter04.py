@@ -5,16 +5,24 @@
   path;
 - :func:`audited_table`: section 3's returned paths that a fresh exact checker accepts at 10x finer resolution;
 - :func:`eager_tables`: section 5's stage times and counts of Algorithm 1 with and without the network, medians over
-  the queries.
+  the queries;
+- :func:`answer`: the answer at the top, three short bullets read from ``docs/results.md``, :func:`answer_figure`,
+  its evidence under it, and :func:`full_answer`, the same counts in full sentences for section 6.
 """
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Mapping
 
 import numpy as np
+from matplotlib.figure import Figure
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
+from toolkit.plots.answer import answer_ratios
+from toolkit.teaching import checker_scope, costs, findings, recorded
+from toolkit.teaching.recorded import Tables
+from toolkit.util.verdicts import COSTS, SAVES, TIES, time_verdict
 
 STAGE_MS = {
     "sampling_s": "sampling",
@@ -127,3 +135,82 @@ def other_line(records: Mapping[str, list[dict]]) -> str:
     if encoded and max(encoded) > 0:
         said += f" ({1000 * float(np.median(encoded)):.1f} ms a query, median)"
     return said + ". Each row is its own median over the queries, so the rows add up to the total only roughly."
+
+
+def answer(tables: Tables | None = None) -> str:
+    """Chapter 04's answer in numbers, three short bullets read from ``docs/results.md`` (100 recorded queries a
+    scenario; review r28d: the answer was said twice at the top, the second time in 80-word sentences): our accurate
+    network inside Algorithm 1 with our fast checker, with python-fcl on both sides, each counted by the median query
+    and by mean times, the paper's statistic (review r29d: the means' losses were only in a folded table), and why.
+    :func:`full_answer` gives the same counts in full sentences, folded."""
+    facts = checker_scope.slow_checker(tables)
+    fast, fast_means = _counts(recorded.ALGORITHM_1, tables), _counts(recorded.ALGORITHM_1, tables, means=True)
+    slow, slow_means = facts.total_verdicts(), _counts(checker_scope.SLOW, tables, means=True)
+    papers = sum(time_verdict(1 - saved) == SAVES for saved in facts.papers_totals)
+    return (
+        f"- **Our fast exact checker** ({findings.FAST_CHECKER}): prediction saved time in {fast[SAVES] or 'none'} "
+        f"of the {fast.total()} scenario–sampler pairs by the median query ({_rest(fast)}), in "
+        f"{fast_means[SAVES] or 'none'} by mean times, the paper's statistic ({_rest(fast_means)}).\n"
+        f"- **python-fcl on both sides**: prediction made sampling {checker_scope.sampling_words(facts)} (the paper's "
+        f"Table 3: {checker_scope.percents(facts.papers_sampling)}), yet saved the whole query's time in "
+        f"{slow[SAVES] or 'none'} of the "
+        f"{len(facts.own)} pairs by the median query ({_rest(slow)}), in {slow_means[SAVES] or 'none'} by mean times "
+        f"({_rest(slow_means)}), against the paper's Table 3's {papers}.\n"
+        "- **Why**: a query's time goes into exact checks of points along the roadmap's edges, which the network "
+        "never makes: it decides only the samples (section 5 counts both)."
+    )
+
+
+def _counts(preset: str, tables: Tables | None = None, means: bool = False) -> Counter:
+    """The verdicts of a recorded run inside Algorithm 1, every scenario and sampler: of the median of each query's own
+    ratio, or with ``means`` of the ratio of mean times (Table 3's statistic as we read it)."""
+    if means:
+        keys = recorded.query_ratios(preset, tables)
+        return Counter(
+            time_verdict(1 - saved)
+            for key in keys
+            for saved in recorded.improvements(preset, key, "total", tables).values()
+        )
+    return Counter(time_verdict(r) for row in recorded.query_ratios(preset, tables).values() for r in row.values())
+
+
+def _rest(counted: Counter) -> str:
+    """``"7 tied, 9 longer"``."""
+    return f"{counted[TIES]} tied, {counted[COSTS]} longer"
+
+
+def full_answer(tables: Tables | None = None) -> str:
+    """:func:`answer`'s counts in full sentences, for the fold under it: the compiled checker
+    (:func:`toolkit.teaching.findings.claim_status`, with the lazy PRM beside it) and python-fcl on both sides
+    (:func:`~toolkit.teaching.checker_scope.slow_sentence`, :func:`~toolkit.teaching.checker_scope.like_for_like`)."""
+    eager = {
+        checker_scope.NAMES[key]: ratios for key, ratios in recorded.query_ratios(recorded.ALGORITHM_1, tables).items()
+    }
+    strong = recorded.median_ratios("strong", tables)
+    lazy = {checker_scope.NAMES[key]: strong[key]["total"] for key in ("2ds", "3dc7") if key in strong}
+    facts = checker_scope.slow_checker(tables)
+    return (
+        f"{findings.claim_status(eager, lazy, costs.at_edge(recorded.ALGORITHM_1, tables)[COSTS])}\n\n"
+        f"{checker_scope.slow_sentence(facts, ranges=False)} {checker_scope.like_for_like(facts)}"
+    )
+
+
+SERIES = {  # the answer figure's legend (review r28d: the circles are our fast checker, compiled in 3D only)
+    "the paper's Table 3": "the paper's Table 3: its means",
+    "ours (`strong` preset), medians": "our fast checker (compiled in 3D, numpy in 2DS): median ratio, middle half",
+    "ours (`strong`, python-fcl), medians": "python-fcl on both sides: the same",
+}
+
+
+def answer_figure(tables: Tables | None = None) -> Figure:
+    """The answer's evidence, under it (review r28d: it came at screen 15 of 18): the paper's Table 3 beside our
+    accurate network inside Algorithm 1, with the fast checker and with python-fcl on both sides, by the median of
+    each query's own ratio with its middle half, our ratio of mean times as a ring
+    (:func:`toolkit.plots.answer.answer_ratios` of :func:`toolkit.teaching.checker_scope.compact`)."""
+    return answer_ratios(
+        checker_scope.compact(tables),
+        tie=findings.TIE,
+        spans=checker_scope.spans(tables),
+        means=checker_scope.our_means(tables),
+        names=SERIES,
+    )
