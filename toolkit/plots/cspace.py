@@ -133,7 +133,7 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
     if kinds:
         handles = [Patch(facecolor=colors[k], edgecolor=COLORS["ink"], hatch=hatches[k], label=k) for k in kinds]
         fig.legend(handles=handles, fontsize=9, loc="lower center", ncols=min(len(kinds), 3), frameon=False)
-        fig.subplots_adjust(bottom=0.1)  # the legend below the view, over no block
+        fig.subplots_adjust(bottom=0.16)  # the legend below the view, over no block and clear of its ticks (r29a)
     ax.set_title(title)
     counts = [f"{workspace.labels.count(k)} {k}" for k in kinds] if kinds else []
     text = f"The {workspace.family or 'workspace'} workspace, {size}: {len(workspace.boxes)} blocks"
