@@ -162,25 +162,14 @@ def robot_figure(
     Default: ``("xy",)`` for a 2D robot, ``("3d", "xy", "xz")`` for a 3D one. Blocks of
     ``workspace`` within ``margin`` of the robot are drawn too; ``valid (k,)`` colors
     each configuration in the valid colour or, hatched, the invalid one (a legend names them), else each one in a
-    colour of its own, named in a legend by ``labels (k,)``; links the same in every named configuration (a base
-    that does not move) are drawn in a neutral grey, the legend's "the same in each" (review r29a). ``parts``: the
-    robot's pieces named instead: the base marked with a black dot, each link size in a colour and hatch of its own
-    (review r29a: the chain's small cubes could not be told from its long links).
+    colour of its own, named in a legend by ``labels (k,)``, links the same in all of them grey ("the same in each").
+    ``parts``: the base marked with a dot, each link size in a shade of its own (review r29a).
     """
     Q = robot.check_configs(Q)  # (k, dof)
     views = views or (("xy",) if robot.dim == 2 else ("3d", "xy", "xz"))
     if labels is not None and len(labels) != len(Q):
         raise ValueError(f"{len(labels)} labels for {len(Q)} configurations: give one label a configuration")
-    # at most two panels a row (the page's width); three views: the first tall on the left, two stacked beside it
-    columns, rows = min(2, len(views)), -(-len(views) // 2)
-    mosaic: list[list[Any]] = [list(views[2 * r : 2 * r + 2]) for r in range(rows)]  # each view once: a panel's name
-    if len(views) == 3:
-        mosaic = [[views[0], views[1]], [views[0], views[2]]]
-    width = min(PAGE_WIDTH, 3.6 * columns)
-    legend = labels is not None or parts
-    fig = Figure(figsize=(width, width / columns * (1.6 if len(views) == 3 else rows) + 0.4 * legend))
-    in_3d: dict[str | tuple[str, ...], dict[str, Any]] = {"3d": {"projection": "3d"}} if "3d" in views else {}
-    axes = fig.subplot_mosaic(mosaic, per_subplot_kw=in_3d)
+    fig, axes = _panels(views, legend=labels is not None or parts)
     colors = link_colors(len(Q), valid)
     hatches = [HATCHES[k % len(HATCHES)] for k in range(len(Q))] if valid is None else [None] * len(Q)
     named = labels is not None and valid is None and len(Q) > 1  # configurations a legend tells apart
@@ -223,6 +212,18 @@ def _legend(labels, colors, hatches, named: bool, shade_names: dict, parts: bool
         )
     handles |= {name: Patch(**link_style(*shade)) for name, shade in shade_names.items()}
     return handles | ({"base": Line2D([], [], **BASE_MARK)} if parts else {})
+
+
+def _panels(views: tuple[str, ...], legend: bool) -> tuple[Figure, dict]:
+    """:func:`robot_figure`'s figure and axes by view: two panels a row; of three, the first tall on the left."""
+    columns, rows = min(2, len(views)), -(-len(views) // 2)
+    mosaic: list[list[Any]] = [list(views[2 * r : 2 * r + 2]) for r in range(rows)]  # each view once: a panel's name
+    if len(views) == 3:
+        mosaic = [[views[0], views[1]], [views[0], views[2]]]
+    width = min(PAGE_WIDTH, 3.6 * columns)
+    fig = Figure(figsize=(width, width / columns * (1.6 if len(views) == 3 else rows) + 0.4 * legend))
+    in_3d: dict[str | tuple[str, ...], dict[str, Any]] = {"3d": {"projection": "3d"}} if "3d" in views else {}
+    return fig, fig.subplot_mosaic(mosaic, per_subplot_kw=in_3d)
 
 
 SHARED_SHADE = (COLORS["shade"], None)  # links the same in every configuration drawn (the youBot's platform, turret)
@@ -385,7 +386,7 @@ def _valid_title(checker: CollisionChecker, q: np.ndarray) -> str:
 def _outline_touching(ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray, pairs, plane: tuple[int, int]) -> None:
     """Outline thick each link box of ``pairs`` (link, block) at ``q`` and, dashed, the block it touches."""
     centers, rotations, half = robot.link_boxes(q[None])
-    thick = dict(fill=False, edgecolor=COLORS["ink"], linewidth=2.5)
+    thick: dict[str, Any] = dict(fill=False, edgecolor=COLORS["ink"], linewidth=2.5)
     for link, block in pairs:
         b_lo, b_hi = workspace.boxes[block]
         at = list(plane)
