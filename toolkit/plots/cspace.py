@@ -185,7 +185,7 @@ def occupancy_figure(workspace: Workspace, layers: Sequence[int] | None = None, 
     )
     for ax, image, title in zip(axes.ravel(), images, titles):
         ax.imshow(image.T, origin="lower", extent=extent, cmap=OCCUPANCY_CMAP, vmin=-1, vmax=1, interpolation="nearest")
-        ax.set_title(title, fontsize=9)
+        ax.set_title(title if len(images) > 1 else "", fontsize=9)  # one image: the figure's title names it (r29a)
         ax.locator_params(nbins=6 if len(images) == 1 else 4)  # a tick every few cells (0..31: every 5), no more:
         # drawing text is most of a many-layered figure's cost
         ax.tick_params(labelsize=8)
