@@ -200,13 +200,12 @@ def test_robot_figure_overlays_configurations_nearest_the_viewer_last_and_names_
     links = _patches(fig.axes[0], "link")
     assert len(links) == 3 * youbot.n_links
     top_z = youbot.link_aabbs(bending)[:, :, 1, 2]  # (3, L): how high each link reaches
-    drawn = [
-        to_rgba(CATEGORICAL[k])[:3]
-        for k in np.unravel_index(np.argsort(top_z, axis=None, kind="stable"), top_z.shape)[0]
-    ]
+    k, link = np.unravel_index(np.argsort(top_z, axis=None, kind="stable"), top_z.shape)
+    shared = to_rgba(palette.COLORS["shade"])[:3]  # review r29a: the platform and turret, the same in all three
+    drawn = [shared if j < 2 else to_rgba(CATEGORICAL[i])[:3] for i, j in zip(k, link)]
     assert [p.get_facecolor()[:3] for p in links] == drawn  # from above: lowest first, the upright gripper last
     assert links[-1].get_facecolor()[:3] == to_rgba(CATEGORICAL[1])[:3]
-    assert [t.get_text() for t in fig.legends[0].get_texts()] == labels
+    assert [t.get_text() for t in fig.legends[0].get_texts()] == labels + ["the same in each"]
     with pytest.raises(ValueError, match="2 labels for 3 configurations"):
         robot_drawing.robot_figure(youbot, bending, labels=labels[:2])
 
@@ -233,6 +232,23 @@ def test_named_configurations_carry_a_marker_of_their_own_at_their_last_link():
     )  # review r16b: the hatches vanish on thin links
     single = robot_drawing.robot_figure(youbot, bending[:1], views=("xz",), labels=["upright"])
     assert not [line for line in single.axes[0].get_lines() if line.get_marker() not in ("None", "")]
+
+
+def test_a_figure_of_the_robots_parts_marks_its_base_and_shades_each_link_size():
+    """Review r29a: the 9-DoF chain's base was unmarked and its small cubes drawn as its long links."""
+    robot = robots.box_chain(3)
+    q = np.array([5.0, 5.0, 5.0, 0.3, 0.2, 0.0, 1.0, -1.0, 0.8])
+    fig = robot_drawing.robot_figure(robot, q, views=("xy",), parts=True)
+    faces = [to_hex(p.get_facecolor()[:3]) for p in _patches(fig.axes[0], "link")]
+    assert len(set(faces)) == 2 and faces.count(faces[0]) == 2  # two small cubes, two long links
+    (dot,) = [line for line in fig.axes[0].get_lines() if line.get_marker() == "o"]
+    np.testing.assert_allclose(dot.get_xydata()[0], [5.0, 5.0])
+    assert [t.get_text() for t in fig.legends[0].get_texts()] == [
+        "link 0.1 \N{MULTIPLICATION SIGN} 0.1 \N{MULTIPLICATION SIGN} 0.1",
+        "link 0.4 \N{MULTIPLICATION SIGN} 0.1 \N{MULTIPLICATION SIGN} 0.1",
+        "base",
+    ]
+    assert "Its base is marked with a black dot" in alt_text(fig)
 
 
 def test_robot_figure_projects_a_chain_by_forward_kinematics():
@@ -413,12 +429,22 @@ def test_verdict_figure_titles_each_panel_with_the_checkers_verdict_and_marks_wh
     assert abs(hit[moved[0]] - q[moved[0]]) / 0.05 == pytest.approx(round(abs(hit[moved[0]] - q[moved[0]]) / 0.05))
     fig = robot_drawing.verdict_figure(checker, np.stack([q, hit]))
     left, right = fig.axes
-    assert left.get_title() == "valid" and right.get_title().startswith("in collision: link ")
+    assert left.get_title() == "valid" and right.get_title().startswith("in collision: link ")  # FCL proves no gap
     assert left.get_xlim() == right.get_xlim() and left.get_ylim() == right.get_ylim()  # review r27a: one window
     assert not _patches(left, "touching link") and not _patches(left, "touched block")
     pairs = robot_drawing.touching(robot, clutter, hit)
     assert len(_patches(right, "touching link")) == len(_patches(right, "touched block")) == len(pairs) > 0
     assert f"block {pairs[0][1] + 1}" in right.get_title() and "configuration 2, in collision" in alt_text(fig)
+
+
+def test_a_valid_panel_says_the_gap_its_checker_proves(square_world):
+    """Review r29a: chapter 01's valid youBot looked as if it touched a block, its gap (0.007) said four screens on."""
+    exact = exact_checker(square_world, robots.point_robot())
+    Q = np.array([[9.5, 11.0], [9.9, 11.0]])  # 0.25 left of the block at [10, 12]^2, then overlapping it
+    gap = exact.clearances(Q[:1], cap=1.0)[0]
+    left, right = robot_drawing.verdict_figure(exact, Q).axes
+    assert gap > 0 and left.get_title() == f"valid: at least {gap:.2g} clear\nof every block and wall"
+    assert right.get_title().startswith("in collision")
 
 
 def test_a_slice_over_positions_shows_a_pixel_beyond_the_bounds_dark(square_world):

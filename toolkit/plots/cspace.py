@@ -97,7 +97,7 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
     box_hatches = [hatches[label] for label in workspace.labels] or [""] * len(workspace.boxes)
     stretch = 1  # how much taller than its widths a region's height is drawn
     if workspace.dim == 2:
-        fig = Figure(figsize=(5, 5))
+        fig = Figure(figsize=(4.3, 4.3))
         ax = fig.subplots()
         for (lo, hi), color, hatch in zip(workspace.boxes, box_colors, box_hatches):
             ax.add_patch(Rectangle(lo, *(hi - lo), facecolor=color, edgecolor=COLORS["ink"], hatch=hatch, gid="block"))
@@ -133,7 +133,7 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
     if kinds:
         handles = [Patch(facecolor=colors[k], edgecolor=COLORS["ink"], hatch=hatches[k], label=k) for k in kinds]
         fig.legend(handles=handles, fontsize=9, loc="lower center", ncols=min(len(kinds), 3), frameon=False)
-        fig.subplots_adjust(bottom=0.1)  # the legend below the view, over no block
+        fig.subplots_adjust(bottom=0.16)  # the legend below the view, over no block and clear of its ticks (r29a)
     ax.set_title(title)
     counts = [f"{workspace.labels.count(k)} {k}" for k in kinds] if kinds else []
     text = f"The {workspace.family or 'workspace'} workspace, {size}: {len(workspace.boxes)} blocks"
@@ -178,14 +178,14 @@ def occupancy_figure(workspace: Workspace, layers: Sequence[int] | None = None, 
         titles = [f"layer z = {workspace.lower[2] + z + 0.5:g}" for z in drawn]
     columns = min(columns, len(images))
     rows = -(-len(images) // columns)
-    panel = 4.5 if len(images) == 1 else min(3.0, (PAGE_WIDTH - 0.4) / columns)  # inches: two a row fill the page
+    panel = 4.2 if len(images) == 1 else min(3.0, (PAGE_WIDTH - 0.4) / columns)  # inches: two a row fill the page
     fig = Figure(figsize=(panel * columns, panel * rows + 0.4))
     axes = fig.subplots(
         rows, columns, squeeze=False, sharex=True, sharey=True, gridspec_kw={"hspace": 0.35, "wspace": 0.15}
     )
     for ax, image, title in zip(axes.ravel(), images, titles):
         ax.imshow(image.T, origin="lower", extent=extent, cmap=OCCUPANCY_CMAP, vmin=-1, vmax=1, interpolation="nearest")
-        ax.set_title(title, fontsize=9)
+        ax.set_title(title if len(images) > 1 else "", fontsize=9)  # one image: the figure's title names it (r29a)
         ax.locator_params(nbins=6 if len(images) == 1 else 4)  # a tick every few cells (0..31: every 5), no more:
         # drawing text is most of a many-layered figure's cost
         ax.tick_params(labelsize=8)
@@ -259,7 +259,7 @@ def cspace_image(checker: CollisionChecker, resolution: int = 600, window: tuple
     robot = checker.robot
     if robot.dof != 2:
         raise ValueError(f"cspace_image draws a 2-DoF C-space; {robot.name!r} has {robot.dof} DoF: use cspace_slice")
-    fig = Figure(figsize=(5.5, 5.2))
+    fig = Figure(figsize=(4.7, 4.4))
     ax = fig.subplots()
     valid = _draw_cspace(ax, checker, robot.lower, (0, 1), resolution, window)
     for lo, hi in checker_workspace(checker).boxes:

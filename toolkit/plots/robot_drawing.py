@@ -77,6 +77,7 @@ def draw_robot(
     margin=1.0,
     hatches: Sequence[str | None] | None = None,
     clip: bool = False,
+    shades: Sequence[tuple[str, str | None] | None] | None = None,
 ) -> None:
     """Draw the link boxes of configurations ``Q (k, dof)``, one colour each, and the blocks within ``margin`` of them,
     on one axes (building :func:`robot_figure`, :func:`toolkit.plots.cspace.cspace_slice` and the scene figures).
@@ -85,7 +86,8 @@ def draw_robot(
     drawn far to near as seen from the page's front: in ``"xy"`` from above, so the highest link lies on top).
     Links have gid ``"link"``, blocks gid ``"block"``; the axes' limits frame them. ``hatches``: one hatch per
     configuration (a second cue where colours tell configurations apart). ``clip``: in 3D, only each block's part
-    inside the window (mplot3d draws past its axes, over their tick labels)."""
+    inside the window (mplot3d draws past its axes, over their tick labels). ``shades``: per link, a face colour and
+    hatch that replace the configuration's (a link the same in every configuration, a link of one size)."""
     Q = robot.check_configs(Q)  # (k, dof)
     if view != "3d" and view not in VIEWS:
         raise ValueError(f"unknown view {view!r}; choose '3d' or one of {sorted(VIEWS)}")
@@ -94,10 +96,11 @@ def draw_robot(
     centers, rotations, half = robot.link_boxes(Q)  # (k, L, D), (k, L, D, D), (L, D)
     lo, hi, blocks = _window(robot.link_aabbs(Q), workspace, margin)  # (D,), (D,), (K, 2, D)
     hatches = hatches if hatches is not None else [None] * len(Q)
+    shades = shades if shades is not None else [None] * robot.n_links
     link_boxes = [
-        (box_corners(c, r, h), color, hatch)
+        (box_corners(c, r, h), *(shade or (color, hatch)))
         for cs, rs, color, hatch in zip(centers, rotations, colors, hatches)
-        for c, r, h in zip(cs, rs, half)
+        for c, r, h, shade in zip(cs, rs, half, shades)
     ]
     if view == "3d":
         for b_lo, b_hi in np.clip(blocks, lo, hi) if clip else blocks:
@@ -150,6 +153,7 @@ def robot_figure(
     views: tuple[str, ...] | None = None,
     margin: float = 1.0,
     labels: Sequence[str] | None = None,
+    parts: bool = False,
 ) -> Figure:
     """The robot's link boxes at configurations ``Q (dof,)`` or ``(k, dof)``, by forward kinematics.
 
@@ -158,48 +162,101 @@ def robot_figure(
     Default: ``("xy",)`` for a 2D robot, ``("3d", "xy", "xz")`` for a 3D one. Blocks of
     ``workspace`` within ``margin`` of the robot are drawn too; ``valid (k,)`` colors
     each configuration in the valid colour or, hatched, the invalid one (a legend names them), else each one in a
-    colour of its own, named in a legend by ``labels (k,)`` (where the boxes coincide, the last one's shows).
+    colour of its own, named in a legend by ``labels (k,)``, links the same in all of them grey ("the same in each").
+    ``parts``: the base marked with a dot, each link size in a shade of its own (review r29a).
     """
     Q = robot.check_configs(Q)  # (k, dof)
     views = views or (("xy",) if robot.dim == 2 else ("3d", "xy", "xz"))
     if labels is not None and len(labels) != len(Q):
         raise ValueError(f"{len(labels)} labels for {len(Q)} configurations: give one label a configuration")
-    # at most two panels a row (the page's width); three views: the first tall on the left, two stacked beside it
-    columns, rows = min(2, len(views)), -(-len(views) // 2)
-    mosaic: list[list[Any]] = [list(views[2 * r : 2 * r + 2]) for r in range(rows)]  # each view once: a panel's name
-    if len(views) == 3:
-        mosaic = [[views[0], views[1]], [views[0], views[2]]]
-    width = min(PAGE_WIDTH, 3.6 * columns)
-    fig = Figure(figsize=(width, width / columns * (1.6 if len(views) == 3 else rows) + 0.4 * (labels is not None)))
-    in_3d: dict[str | tuple[str, ...], dict[str, Any]] = {"3d": {"projection": "3d"}} if "3d" in views else {}
-    axes = fig.subplot_mosaic(mosaic, per_subplot_kw=in_3d)
+    fig, axes = _panels(views, legend=labels is not None or parts)
     colors = link_colors(len(Q), valid)
     hatches = [HATCHES[k % len(HATCHES)] for k in range(len(Q))] if valid is None else [None] * len(Q)
     named = labels is not None and valid is None and len(Q) > 1  # configurations a legend tells apart
+    shades, shade_names = _link_shades(robot, Q, named, parts and valid is None)
     ends = robot.link_boxes(Q)[0][:, -1]  # (k, D) the centre of each configuration's last link
+    bases = robot.link_frames(Q)[0][:, 0, : robot.dim]  # (k, D) each base's position
     for view in views:
         ax = axes[view]
-        draw_robot(ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin, hatches=hatches)
-        if named:  # thin links hide a hatch: each configuration's last link also carries a marker of its own
-            for k, (end, color) in enumerate(zip(ends, colors)):
-                where = end if view == "3d" else end[list(VIEWS[view])]
-                ax.plot(*([c] for c in where), **_end_mark(k, color))
+        draw_robot(
+            ax, robot, Q, colors=colors, view=view, workspace=workspace, margin=margin, hatches=hatches, shades=shades
+        )
+        marks = [(end, _end_mark(k, color)) for k, (end, color) in enumerate(zip(ends, colors))] if named else []
+        marks += [(base, BASE_MARK) for base in bases] if parts else []  # thin links hide a hatch: a marker instead
+        for where, style in marks:
+            ax.plot(*([c] for c in (where if view == "3d" else where[list(VIEWS[view])])), **style)
         ax.set_title(f"{robot.name}: {view}", fontsize=10)
         ax.tick_params(labelsize=8)
         if view == "3d":
             few_ticks(ax)
     if labels is None and valid is not None:
         labels = ["valid" if color == VALID_COLOR else "in collision" for color in colors]
-    if labels is not None:
-        styles = {label: (link_style(c, h), k) for k, (label, c, h) in enumerate(zip(labels, colors, hatches))}
-        handles: list[Any] = [
-            (Patch(**style), Line2D([], [], **_end_mark(k, style["facecolor"]))) if named else Patch(**style)
-            for style, k in styles.values()
-        ]
-        fig.legend(handles, list(styles), loc="lower center", ncol=len(handles), fontsize=9, frameon=False)
-    fig.tight_layout(rect=(0, 0.08 if labels is not None else 0, 1, 1))
+    handles = _legend(labels if not parts else None, colors, hatches, named, shade_names, parts)
+    if handles:
+        fig.legend(
+            list(handles.values()), list(handles), loc="lower center", ncol=len(handles), fontsize=9, frameon=False
+        )
+    fig.tight_layout(rect=(0, 0.08 if handles else 0, 1, 1))
     text = _robot_figure_text(robot, len(Q), views, workspace is not None, valid, labels, hatches, named)
+    text += _shades_text(shade_names, parts)
     return describe(fig, text, [_configurations_part(robot, Q, labels)])
+
+
+def _legend(labels, colors, hatches, named: bool, shade_names: dict, parts: bool) -> dict[str, Any]:
+    """:func:`robot_figure`'s legend, name to handle: each labelled configuration (with its end marker where
+    ``named``), each shade of :func:`_link_shades`, the base's dot where ``parts``."""
+    handles: dict[str, Any] = {}
+    for k, (label, c, h) in enumerate(zip(labels or [], colors, hatches)):
+        handles[label] = (
+            (Patch(**link_style(c, h)), Line2D([], [], **_end_mark(k, c))) if named else Patch(**link_style(c, h))
+        )
+    handles |= {name: Patch(**link_style(*shade)) for name, shade in shade_names.items()}
+    return handles | ({"base": Line2D([], [], **BASE_MARK)} if parts else {})
+
+
+def _panels(views: tuple[str, ...], legend: bool) -> tuple[Figure, dict]:
+    """:func:`robot_figure`'s figure and axes by view: two panels a row; of three, the first tall on the left."""
+    columns, rows = min(2, len(views)), -(-len(views) // 2)
+    mosaic: list[list[Any]] = [list(views[2 * r : 2 * r + 2]) for r in range(rows)]  # each view once: a panel's name
+    if len(views) == 3:
+        mosaic = [[views[0], views[1]], [views[0], views[2]]]
+    width = min(PAGE_WIDTH, 3.6 * columns)
+    fig = Figure(figsize=(width, width / columns * (1.6 if len(views) == 3 else rows) + 0.4 * legend))
+    in_3d: dict[str | tuple[str, ...], dict[str, Any]] = {"3d": {"projection": "3d"}} if "3d" in views else {}
+    return fig, fig.subplot_mosaic(mosaic, per_subplot_kw=in_3d)
+
+
+SHARED_SHADE = (COLORS["shade"], None)  # links the same in every configuration drawn (the youBot's platform, turret)
+BASE_MARK: dict[str, Any] = dict(marker="o", markersize=7, color="k", markeredgecolor="w", linestyle="", zorder=99)
+
+
+def _link_shades(robot: BoxRobot, Q: np.ndarray, named: bool, parts: bool):
+    """Per link, the colour and hatch replacing its configuration's (or None), and the legend's name of each: links
+    the same in every named configuration grey ("the same in each"), or with ``parts`` one shade per link size."""
+    if parts:
+        sizes = [tuple(float(v) for v in 2 * h) for h in robot.half_extents]
+        order = list(dict.fromkeys(sizes))  # each size once, in the chain's order
+        shade = {size: (CATEGORICAL[i % len(CATEGORICAL)], HATCHES[i % len(HATCHES)]) for i, size in enumerate(order)}
+        names = {"link " + " \N{MULTIPLICATION SIGN} ".join(f"{v:g}" for v in size): shade[size] for size in order}
+        return [shade[size] for size in sizes], names
+    if not named:
+        return None, {}
+    centers, rotations, _ = robot.link_boxes(Q)  # (k, L, D), (k, L, D, D)
+    same = np.all(np.isclose(centers, centers[:1]), axis=(0, 2)) & np.all(
+        np.isclose(rotations, rotations[:1]), axis=(0, 2, 3)
+    )  # (L,)
+    if not same.any():
+        return None, {}
+    return [SHARED_SHADE if s else None for s in same], {"the same in each": SHARED_SHADE}
+
+
+def _shades_text(shade_names: dict, parts: bool) -> str:
+    """What :func:`_link_shades` changed, for the figure's description."""
+    if parts:
+        return (
+            f" Its base is marked with a black dot; its links by size ({', '.join(shade_names)}), each its own shade."
+        )
+    return " Links the same in every configuration are drawn in light grey ('the same in each')." * bool(shade_names)
 
 
 def _robot_figure_text(robot, count, views, near, valid, labels, hatches, named) -> str:
@@ -226,16 +283,8 @@ END_MARKERS = (("o", "with a circle"), ("s", "with a square"), ("^", "with a tri
 
 def _end_mark(k: int, color: str) -> dict:
     """The marker of the ``k``-th named configuration, in its colour with a black edge (``plot``'s options)."""
-    return dict(
-        marker=END_MARKERS[k % len(END_MARKERS)][0],
-        markersize=8,
-        color=color,
-        markeredgecolor=COLORS["ink"],
-        markeredgewidth=1.2,
-        linestyle="",
-        zorder=5,
-        clip_on=False,
-    )
+    edge = dict(markeredgecolor=COLORS["ink"], markeredgewidth=1.2, linestyle="", zorder=5, clip_on=False)
+    return dict(marker=END_MARKERS[k % len(END_MARKERS)][0], markersize=8, color=color, **edge)
 
 
 def _configurations_part(robot: BoxRobot, Q: np.ndarray, labels: Sequence[str] | None) -> Part:
@@ -287,7 +336,8 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
     the checker's verdict in each title. Every panel frames the same window (all of ``Q`` within ``margin``,
     review r27a: a move hidden by shifted axes), so a block reaching past it is drawn clipped. In a configuration
     in collision, each link box that touches a block and that block are outlined thick (the block dashed) and named
-    in the title: "link 1 touches block 12 (desk)"."""
+    in the title: "link 1 touches block 12 (desk)"; a valid one's title gives its clearance where the checker proves
+    one ("valid: at least 0.007 clear of every block and wall")."""
     robot, workspace = checker.robot, getattr(checker, "workspace", None)
     if not isinstance(workspace, Workspace):
         raise TypeError(f"this figure draws the checker's workspace, and a {type(checker).__name__} knows none")
@@ -309,7 +359,7 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
         pairs = [] if ok else touching(robot, workspace, q)
         _outline_touching(ax, robot, workspace, q, pairs, plane)
         named = [f"link {link + 1} touches block {block + 1}{_kind(workspace, block)}" for link, block in pairs]
-        verdict = "valid" if ok else "in collision" + (": " + "; ".join(named) if named else ": leaves the region")
+        verdict = _valid_title(checker, q) if ok else "in collision: " + ("; ".join(named) or "leaves the region")
         said.append(verdict)
         ax.set_title(verdict, fontsize=10, wrap=True)
         ax.tick_params(labelsize=8)
@@ -326,34 +376,23 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
     )
 
 
+def _valid_title(checker: CollisionChecker, q: np.ndarray) -> str:
+    """A valid panel's title, with the checker's clearance where it proves one: a hairline gap is invisible at the
+    page's width, and a panel titled "valid" that looks touching needs its gap said (review r29a)."""
+    gap = float(checker.clearances(q[None], cap=1.0)[0])
+    return f"valid: at least {gap:.2g} clear\nof every block and wall" if gap > 0 else "valid"
+
+
 def _outline_touching(ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray, pairs, plane: tuple[int, int]) -> None:
     """Outline thick each link box of ``pairs`` (link, block) at ``q`` and, dashed, the block it touches."""
     centers, rotations, half = robot.link_boxes(q[None])
+    thick: dict[str, Any] = dict(fill=False, edgecolor=COLORS["ink"], linewidth=2.5)
     for link, block in pairs:
         b_lo, b_hi = workspace.boxes[block]
-        ax.add_patch(
-            Rectangle(
-                b_lo[list(plane)],
-                *(b_hi - b_lo)[list(plane)],
-                fill=False,
-                edgecolor=COLORS["ink"],
-                linewidth=2.5,
-                linestyle="--",
-                gid="touched block",
-                zorder=4,
-            )
-        )
+        at = list(plane)
+        ax.add_patch(Rectangle(b_lo[at], *(b_hi - b_lo)[at], linestyle="--", gid="touched block", zorder=4, **thick))
         corners = box_corners(centers[0, link], rotations[0, link], half[link])
-        ax.add_patch(
-            Polygon(
-                outline(corners, plane),
-                fill=False,
-                edgecolor=COLORS["ink"],
-                linewidth=2.5,
-                gid="touching link",
-                zorder=5,
-            )
-        )
+        ax.add_patch(Polygon(outline(corners, plane), gid="touching link", zorder=5, **thick))
 
 
 def _kind(workspace: Workspace, block: int) -> str:
