@@ -6,7 +6,7 @@ import re
 import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.collections import PathCollection
+from matplotlib.collections import LineCollection, PathCollection
 from matplotlib.colors import to_hex, to_rgba
 from matplotlib.contour import ContourSet
 
@@ -239,7 +239,8 @@ def test_a_fine_maps_marks_stand_apart_and_a_one_cell_strip_of_mistakes_is_marke
     side = cell_marks.cell_points(ax, fine)  # points
     for label, kind, code in (("valid rejected", "circles", 1), ("invalid kept (dangerous)", "squares", 3)):
         k = block_of_squares(fig, kind)
-        assert k * side >= pc.PITCH[code] and (k - 1) * side < pc.PITCH[code]  # the fewest cells that far apart
+        assert k * side >= pc.PITCH[code] and 100 % k == 0  # that far apart, and a block divides the map (r29c)
+        assert k == cell_marks.block_side(int(np.ceil(pc.PITCH[code] / side - 1e-9)), pc.BLOCKS[code], (100, 100))
         mask = answers.answer_codes(probability >= 0.5, valid) == code
         assert_squares_mark(ax, fine, mask, k, label=label)
     assert block_of_squares(fig, "circles") > block_of_squares(fig, "squares")  # the circles sparser
@@ -278,10 +279,10 @@ def test_each_mark_sits_on_a_mistake_of_its_kind():
     assert block_of_squares(fig, "circles") > 1 and block_of_squares(fig, "squares") > 1  # merged into blocks
 
 
-def test_a_maps_circles_lie_under_its_outlines_and_every_mark_inside_its_frame():
-    """Reader r19b, chapter 03's 3DC-7 slices at full size: circles drawn over the C-obstacle's outlines hid them, and
-    a top row of marks sat on the map's frame, half outside it. On a P(valid) map the circles now lie under the
-    outlines, the few squares still over them, and every mark, its rings included, lies inside the frame."""
+def test_a_maps_circles_lie_over_its_outlines_and_every_mark_inside_its_frame():
+    """Reader r19b, chapter 03's 3DC-7 slices at full size: a top row of marks sat on the map's frame, half outside it;
+    reader r29c: circles under the outlines were half hidden. On a P(valid) map the circles lie over the outlines, the
+    squares over both, and every mark, its rings included, lies inside the frame."""
     fine = slices.slice_grid(robots.point_robot(), n=100)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
     valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (100, 100)
@@ -290,7 +291,7 @@ def test_a_maps_circles_lie_under_its_outlines_and_every_mark_inside_its_frame()
     ax = fig.axes[0]
     marks = {c.get_label(): c for c in cell_marks.cell_marks(ax)}
     circles, squares = marks["valid rejected"], marks["invalid kept (dangerous)"]
-    assert circles.get_zorder() < boundary_of(ax).get_zorder() < squares.get_zorder()
+    assert boundary_of(ax).get_zorder() < circles.get_zorder() < squares.get_zorder()
     frame = np.array(ax.bbox.extents) * 72 / fig.dpi  # (4,) x0, y0, x1, y1 in points
     for mark in (circles, squares):
         at = ax.transData.transform(mark.get_offsets()) * 72 / fig.dpi  # (m, 2) points
@@ -332,12 +333,12 @@ def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, pr
 
 
 @pytest.mark.parametrize("n", [N, 100])  # a mark a cell; a mark per block of cells (chapter 03 at full size)
-def test_threshold_views_mistakes_are_marked_at_a_size_one_sees_circles_sparse_under_the_boundary(n):
+def test_threshold_views_mistakes_are_marked_at_a_size_one_sees_circles_sparse_over_the_boundary(n):
     """Reader r8b: the decision map's mistakes lay under the boundary's ringed line, invisible. Each kind has its own
     mark (circles conservative, squares dangerous) over every cell of that kind, at least ``MIN_MARK`` points wide, in
     the kind's colour: as many of its pixels show as the marks' area, about. Reader r27c: a circle a block of cells
-    made a carpet that hid the cells' colour and the outlines; the circles are now as sparse as on a P(valid) map and
-    under the outlines, the squares over them."""
+    made a carpet that hid the cells' colour and the outlines; the circles are now as sparse as on a P(valid) map, and
+    (reader r29c: half hidden under the outlines) over them, the squares over both."""
     robot = robots.point_robot()
     grid = slices.slice_grid(robot, n=n)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
@@ -359,7 +360,7 @@ def test_threshold_views_mistakes_are_marked_at_a_size_one_sees_circles_sparse_u
         assert np.any(codes == code)
         assert_squares_mark(ax_map, grid, codes == code, k[label], label=label)
         (marks,) = [c for c in ax_map.collections if c.get_label() == label]
-        assert (marks.get_zorder() > boundary.get_zorder()) == (marker == "s")
+        assert marks.get_zorder() > boundary.get_zorder()  # r29c: circles too, not half hidden under the outlines
         side = np.sqrt(marks.get_sizes()[0])  # points
         assert side >= cell_marks.MIN_MARK
         colour = to_rgba(pc.ANSWER_COLORS[code])[:3]
@@ -388,7 +389,12 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     path = np.array([[1.0, 2.0], [5.0, 3.0], [25.0, 28.0]])
     nodes = np.array([[1.0, 1.0], [15.0, 8.0], [3.0, 4.0], [12.0, 6.0]])
     nodes_valid = np.array([True, False, True, False])
-    ax = pc.path_map(probability, valid, grid, threshold=0.5, path=path, nodes=nodes, nodes_valid=nodes_valid).axes[0]
+    edges = np.array([[0, 2]])  # reader r29c: drawn, so that a node in collision visibly has none
+    ax = pc.path_map(
+        probability, valid, grid, threshold=0.5, path=path, nodes=nodes, nodes_valid=nodes_valid, edges=edges
+    ).axes[0]
+    (drawn,) = [c for c in ax.collections if isinstance(c, LineCollection) and not isinstance(c, ContourSet)]
+    np.testing.assert_array_equal(drawn.get_segments()[0], nodes[[0, 2]])
     lines = {line.get_label(): np.column_stack([line.get_xdata(), line.get_ydata()]) for line in ax.get_lines()}
     np.testing.assert_array_equal(lines["returned path (checked exactly)"], path)
     np.testing.assert_array_equal(lines["roadmap node in collision"], nodes[~nodes_valid])

@@ -29,6 +29,7 @@ from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
+from matplotlib.collections import LineCollection
 from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
@@ -49,10 +50,14 @@ MISTAKE_MARKERS = {1: "o", 3: "s"}  # conservative circles, dangerous squares: t
 CUT = 2.5  # points: the path map's dotted line at the model's threshold, bold enough to follow across the map (r15c)
 END_CLEAR = 0.06  # of a map's width: a path's diamond nearer an end than this is left out, the end's mark beside it
 CUT_MAP = 1.5  # points: the same line on a map of mistakes, whose marks it must not bury
-ZORDER = {1: 1.5, 3: 3.0}  # on a P(valid) map: conservative circles under the lines (2: the boundary, the threshold's
-# contour), where many sit (r19b: they hid the outlines); the few dangerous squares over them, never cut (r10b, r11)
+ZORDER = {
+    1: 2.8,
+    3: 3.0,
+}  # over the lines (2: the boundary, 2.5: the threshold's contour), the squares over the circles
+# (r29c: circles under the outlines were half hidden; r10b, r11: a square under its ringed line was cut in two)
 PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
+BLOCKS = {1: 5, 3: 10}  # blocks a side on every map: a 100-cell map's circles one per 20 x 20 cells, squares 10 x 10
 
 
 def probability_map(
@@ -102,7 +107,7 @@ def _per_block(k: int) -> str:
 
 
 def path_map(
-    probability, valid, grid: CSpaceSlice, *, threshold: float, path, nodes, nodes_valid, title: str = ""
+    probability, valid, grid: CSpaceSlice, *, threshold: float, path, nodes, nodes_valid, title: str = "", edges=None
 ) -> Figure:
     """A planner's roadmap ``nodes (M, dof)`` and returned ``path (P, dof)`` over a P(valid) map of the grid's two DoFs.
 
@@ -111,6 +116,7 @@ def path_map(
     configuration (none beside an end), to stand apart from the solid C-obstacle boundary. The model's threshold is a
     bold dotted line (P(valid) = threshold): the roadmap's dots on its dark side are nodes the model rejected, which
     the exact checker drew. The map's mistakes are not marked: no hatch dot passes for a node, no square buries a cross.
+    ``edges (E, 2)``, node indices: the roadmap's edges, drawn faint.
     """
     nodes, nodes_valid, path = np.asarray(nodes), np.asarray(nodes_valid, dtype=bool), np.asarray(path)
     fig = Figure(figsize=(6, 6.2), layout="constrained")
@@ -119,7 +125,7 @@ def path_map(
     fig.colorbar(image, ax=ax, label="P(valid)", shrink=0.8)
     cut = Line2D([], [], color=COLORS["ink"], linestyle=":", linewidth=CUT, label=f"P(valid) = {threshold:.2f}")
     x, y = grid.dofs
-    _draw_roadmap(ax, nodes, nodes_valid, path, (x, y))
+    _draw_roadmap(ax, nodes, nodes_valid, path, (x, y), edges)
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=10, wrap=True)
     _legend(fig, [(line, line.get_label()) for line in [cut, *ax.get_lines()]])
     fit_cell_marks(fig, grid)
@@ -201,9 +207,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     fig.legend([boundary, *handles], labels, loc="outside lower center", ncols=3, fontsize=8, frameon=False)
     text = f"{title + ': ' if title else ''}the model's decision at threshold {threshold:.2f} over {grid.names[0]} and "
     text += f"{grid.names[1]}, each cell by its kind of answer, the mistakes marked on their cells: dangerous ones "
-    text += (
-        f"with squares{block[3]} over the boundary, conservative ones with sparse circles{block[1]} under it; their "
-    )
+    text += f"with squares{block[3]} and conservative ones with sparse circles{block[1]}, over the boundary; their "
     text += "counts, and the ROC curve. "
     text += f"{answers.answers_in_words(predicted, valid)}; {roc}."
     cut, fpr, tpr = roc_points(probability, valid, np.linspace(0.0, 1.0, 11))  # (11,) each
@@ -246,39 +250,35 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     _draw_boundary(ax, valid, grid)
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
     if mistakes:  # fit_cell_marks sizes them, no two closer than their pitch
-        draw_cell_marks(ax, grid, codes == 1, label=ANSWERS[1], zorder=ZORDER[1], pitch=PITCH[1], **_mistake_mark(1))
-        draw_cell_marks(ax, grid, codes == 3, label=ANSWERS[3], zorder=ZORDER[3], pitch=PITCH[3], **_mistake_mark(3))
+        _draw_mistakes(ax, grid, codes)
     return image
 
 
-def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid: np.ndarray, path: np.ndarray, dofs: tuple[int, int]) -> None:
-    """A roadmap's valid nodes as dots, those in collision as crosses, and the path dashed with diamonds, over a map
-    of the two ``dofs``."""
+def _draw_mistakes(ax, grid: CSpaceSlice, codes) -> None:
+    """Every map's mistakes alike: circles, then squares over them, one per block of ``BLOCKS`` a side."""
+    for code in MISTAKE_MARKERS:
+        style = dict(label=ANSWERS[code], zorder=ZORDER[code], **_mistake_mark(code))
+        draw_cell_marks(ax, grid, codes == code, pitch=PITCH[code], blocks=BLOCKS[code], **style)
+
+
+def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tuple[int, int], edges=None) -> None:
+    """A roadmap's valid nodes as dots, those in collision as crosses, its ``edges (E, 2)`` (node indices) as faint
+    lines, and the path dashed with diamonds, over a map of the two ``dofs``."""
     x, y = dofs
     scale = np.abs(np.diff([ax.get_xlim(), ax.get_ylim()]).ravel())  # (2,) the map's width and height
     apart = np.abs(path[:, None, [x, y]] - path[None, [0, -1]][..., [x, y]]) / scale  # (P, 2 ends, 2) map widths
     near = apart.max(axis=2).min(axis=1) < END_CLEAR  # (P,) beside an end: no diamond (r20b: one sat on the start)
     dots = dict(color=COLORS["node"], markersize=4, label="roadmap node, valid", path_effects=halo(0.5, ("free",)))
     ax.plot(nodes[nodes_valid, x], nodes[nodes_valid, y], ".", **dots)
-    ax.plot(
-        nodes[~nodes_valid, x],
-        nodes[~nodes_valid, y],
-        "X",
-        color=COLORS["ink"],  # not the dangerous squares' colour: on another map it would sit among them
-        markersize=14,
-        label="roadmap node in collision",
-        path_effects=halo(1.0, ("free",)),  # a white ring: it shows on the dark side of the map too
-        zorder=7,  # over the path (5): the one mark that must not be missed
-    )
+    if edges is not None and len(edges):  # faint, under the nodes: a node in collision visibly has none (r29c)
+        ends = nodes[np.asarray(edges)][..., [x, y]]  # (E, 2, 2)
+        ax.add_collection(LineCollection(ends, colors=COLORS["node"], linewidths=0.5, alpha=0.5, zorder=2.2))
+    cross = dict(color=COLORS["ink"], markersize=14, label="roadmap node in collision", zorder=7)  # over the path (5)
+    ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], "X", path_effects=halo(1.0, ("free",)), **cross)  # ringed
+    box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
     for node in nodes[~nodes_valid][:3]:  # a few named in words as well
         ax.annotate(
-            "in collision",
-            node[[x, y]],
-            xytext=(12, 12),
-            textcoords="offset points",
-            fontsize=9,
-            zorder=7,
-            bbox=dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6),
+            "in collision", node[[x, y]], xytext=(12, 12), textcoords="offset points", fontsize=9, zorder=7, bbox=box
         )
     ax.plot(
         path[:, x],
@@ -321,11 +321,7 @@ def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):
         interpolation="nearest",
     )
     _draw_boundary(ax, valid, grid)
-    for code in MISTAKE_MARKERS:  # as on a P(valid) map: sparse circles under the outlines, squares over them (r27c:
-        # a circle a block of cells hid the cells' sky blue, the small block and the outlines under a carpet)
-        draw_cell_marks(
-            ax, grid, codes == code, label=ANSWERS[code], zorder=ZORDER[code], pitch=PITCH[code], **_mistake_mark(code)
-        )
+    _draw_mistakes(ax, grid, codes)  # as on a P(valid) map (r27c: a circle a cell hid the sky blue under a carpet)
     return image
 
 
