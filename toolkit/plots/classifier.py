@@ -154,15 +154,21 @@ def path_map(
 
 
 def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> Figure:
-    """Accuracy, TPR and TNR of several models or baselines (``{name: {"acc", "tpr", "tnr"}}``), grouped."""
+    """Accuracy, TPR and TNR of several models or baselines (``{name: {"acc", "tpr", "tnr"}}``), grouped, and across
+    each group a dashed line at its balanced accuracy, (TPR + TNR) / 2 (reader r29c: the measure to read, not drawn)."""
     fig = Figure(figsize=(min(PAGE_WIDTH, 1.6 + 1.6 * len(scores)), 3.8), layout="constrained")
-    answers.draw_rates(fig.subplots(), scores)
+    answers.draw_rates(ax := fig.subplots(), scores)
+    balanced = [(s["tpr"] + s["tnr"]) / 2 for s in scores.values()]
+    x, line = np.arange(len(scores)), dict(linestyles="--", linewidth=1.5, zorder=4, label="balanced accuracy")
+    ax.hlines(balanced, x - 0.42, x + 0.42, colors=COLORS["ink"], path_effects=halo(1.5, ("free",)), **line)  # type: ignore[arg-type]
+    ax.legend(fontsize=8, loc="upper center", ncols=2, frameon=False)  # the rates' legend, and the line's
     fig.suptitle(title or "Accuracy, TPR (valid kept), TNR (invalid rejected)")
     said = "; ".join(
-        f"{name}: accuracy {s['acc']:.2f}, TPR {s['tpr']:.2f}, TNR {s['tnr']:.2f}" for name, s in scores.items()
+        f"{name}: accuracy {s['acc']:.2f}, TPR {s['tpr']:.2f}, TNR {s['tnr']:.2f}, balanced accuracy {b:.2f}"
+        for (name, s), b in zip(scores.items(), balanced)
     )
     text = f"{title + '. ' if title else ''}Bars of accuracy, TPR (the share of valid configurations kept) and TNR"
-    return describe(fig, f"{text} (the share in collision rejected). {said}.")
+    return describe(fig, f"{text} (the share in collision rejected), a dashed line at balanced accuracy. {said}.")
 
 
 def roc_curve(curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]], title: str = "") -> Figure:
@@ -197,13 +203,8 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     ax_map.set_title(
         f"decision at threshold {threshold:.2f}" + (per_block if max(per.values()) > 1 else ""), fontsize=9
     )
-    labels = [
-        "true C-obstacle boundary",
-        ANSWERS[0],
-        f"{ANSWERS[1]} (circles)",
-        ANSWERS[2],
-        "invalid kept (dangerous, squares)",
-    ]
+    labels = ["true C-obstacle boundary", ANSWERS[0], f"{ANSWERS[1]} (circles)", ANSWERS[2]]
+    labels.append("invalid kept (dangerous, squares)")
     fig.legend([boundary, *handles], labels, loc="outside lower center", ncols=3, fontsize=8, frameon=False)
     text = f"{title + ': ' if title else ''}the model's decision at threshold {threshold:.2f} over {grid.names[0]} and "
     text += f"{grid.names[1]}, each cell by its kind of answer, the mistakes marked on their cells: dangerous ones "
