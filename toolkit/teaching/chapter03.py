@@ -176,9 +176,9 @@ OTHER_RUNS = (  # what the folded table's rows are, and why some match the openi
     "recorded run's: the same recipe, seed and size train the same network on a CPU, so its numbers are the opening "
     "table's. The `strong` models are not: `toolkit reproduce`, which made the recorded runs, trains a CAE before "
     "the MLP (Table 1 reports it), and that draws on the same seeded random stream, so the MLP sees its batches in "
-    "another order; this page skips the CAE, which the `strong` MLP never reads. On 2DS both runs round to 100 %; on "
-    "3DC-7 they differ a little. The last row is another draw of section 4's validity-blind measurement, with the "
-    'same verdict: below "always valid".'
+    "another order; this page skips the CAE, which the `strong` MLP never reads. At full size both runs round to "
+    "100 % on 2DS and differ a little on 3DC-7. The last row is another draw of section 4's validity-blind "
+    'measurement, with the same verdict: below "always valid".'
 )
 
 
