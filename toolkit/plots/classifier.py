@@ -273,7 +273,7 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     ax.plot(nodes[nodes_valid, x], nodes[nodes_valid, y], ".", **dots)
     if edges is not None and len(edges):  # faint, under the nodes: a node in collision visibly has none (r29c)
         ends = nodes[np.asarray(edges)][..., [x, y]]  # (E, 2, 2)
-        ax.add_collection(LineCollection(ends, colors=COLORS["node"], linewidths=0.5, alpha=0.5, zorder=2.2))
+        ax.add_collection(LineCollection(ends, colors=COLORS["node"], linewidths=0.4, alpha=0.25, zorder=2.2))
     cross = dict(color=COLORS["ink"], markersize=14, label="roadmap node in collision", zorder=7)  # over the path (5)
     ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], "X", path_effects=halo(1.0, ("free",)), **cross)  # ringed
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
