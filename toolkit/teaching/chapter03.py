@@ -5,6 +5,7 @@
   ``docs/results.md``;
 - :func:`mistakes_table`: section 3's mistakes on the P(valid) maps, how many lie near a boundary, where the
   dangerous ones are;
+- :func:`score_unseen`: section 4's scores of each model and of "always valid" on unseen workspaces' samples;
 - :func:`slice_verdict`: section 5's verdict on a slice, its counts and words;
 - :func:`closing_table`, :func:`other_runs` and :func:`implied_shares`: the closing section's table, its folded box of
   other runs, and the lines under it.
@@ -17,7 +18,9 @@ from collections.abc import Callable, Mapping
 import numpy as np
 
 from toolkit.experiments import paper_numbers
-from toolkit.learning import metrics
+from toolkit.geometry.collision import exact_checker
+from toolkit.learning import data, metrics
+from toolkit.learning.learned import LearnedChecker
 from toolkit.plots import answers
 from toolkit.plots.slices import CSpaceSlice
 from toolkit.teaching import recorded
@@ -90,6 +93,35 @@ def share(fraction: float) -> str:
     if 0 < fraction < 0.001:
         return "under 0.1%"
     return f"{fraction:.1%}" if 0 < fraction < 0.01 else f"{fraction:.0%}"
+
+
+def score_unseen(scenario, models: Mapping, thresholds: Mapping[str, float], n: int, per_workspace: int, seed: int):
+    """Section 4's measurement: on ``n`` unseen workspaces of ``scenario``, ``per_workspace`` balanced samples (half
+    valid, as training uses) and as many validity-blind ones (uniform: one reading of the paper's unseen test), each
+    of ``models`` (``{preset: TrainedModels}``) answering at ``thresholds[preset]``. Returns ``truth[kind] (N,)``
+    bool, ``predicted_p[preset, kind] (N,)`` P(valid), and ``scores["preset\\nkind"]`` (and ``"always valid\\nkind"``)
+    as :func:`toolkit.learning.metrics.classification` gives them."""
+    truth: dict[str, list] = {"balanced": [], "validity-blind": []}  # per workspace: (per_workspace,) bool
+    predicted: dict[tuple[str, str], list] = {(preset, kind): [] for preset in models for kind in truth}
+    for i, ws in enumerate(scenario.workspaces("unseen", n, seed)):
+        exact = exact_checker(ws, scenario.robot)
+        rng = np.random.default_rng([seed, i])
+        q_balanced, valid_balanced = data.balanced_samples(exact, rng, per_workspace)  # 50 % valid
+        q_blind = scenario.robot.sample(rng, per_workspace)  # uniform (validity-blind)
+        truth["balanced"].append(valid_balanced)
+        truth["validity-blind"].append(exact.are_valid(q_blind))
+        for preset, m in models.items():
+            checker = LearnedChecker(ws, m)
+            for kind, q in (("balanced", q_balanced), ("validity-blind", q_blind)):
+                predicted[preset, kind].append(checker.probability(q))
+    valid = {kind: np.concatenate(v) for kind, v in truth.items()}
+    predicted_p = {key: np.concatenate(v) for key, v in predicted.items()}
+    scores = {}
+    for kind, v in valid.items():
+        for preset in models:
+            scores[f"{preset}\n{kind}"] = metrics.classification(predicted_p[preset, kind] >= thresholds[preset], v)
+        scores[f"always valid\n{kind}"] = metrics.classification(np.ones_like(v), v)
+    return valid, predicted_p, scores
 
 
 def slice_verdict(p, truth, threshold: float, near: int) -> str:
