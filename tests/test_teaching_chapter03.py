@@ -57,3 +57,23 @@ def test_a_slice_verdict_counts_its_mistakes_by_where_they_lie():
     said = chapter03.slice_verdict(p, truth, 0.5, 1)
     assert said.startswith("1 of 400 cells wrong, 0% of them near a boundary")
     assert said.endswith("away from any boundary it makes 1 conservative and 0 dangerous mistakes")
+
+
+def test_score_unseen_scores_each_model_and_always_valid_on_the_same_balanced_and_blind_samples(checkpoint_2ds):
+    """Section 4's measurement, moved off the page (reader r29c: a screen of loop code): per kind of sample, the truth,
+    each model's P(valid) and its scores, "always valid" scoring the share of valid samples."""
+    from toolkit import scenarios
+    from toolkit.learning import checkpoints, metrics
+
+    scenario = scenarios.get("2ds")
+    models = {"strong": checkpoints.load_models(checkpoint_2ds, scenario)}
+    t = {"strong": models["strong"].threshold}
+    truth, predicted_p, scores = chapter03.score_unseen(scenario, models, t, 2, 20, 0)
+    assert {kind: v.shape for kind, v in truth.items()} == {"balanced": (40,), "validity-blind": (40,)}
+    assert truth["balanced"].mean() == 0.5 and set(predicted_p) == {
+        ("strong", "balanced"),
+        ("strong", "validity-blind"),
+    }
+    for kind, v in truth.items():
+        assert scores[f"always valid\n{kind}"]["acc"] == v.mean()
+        assert scores[f"strong\n{kind}"] == metrics.classification(predicted_p["strong", kind] >= t["strong"], v)
