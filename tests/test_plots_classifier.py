@@ -60,8 +60,26 @@ def block_of_squares(fig, kind="squares") -> int:
 
 def boundary_of(ax) -> ContourSet:
     """The true C-obstacle boundary on a map: its one solid contour (the threshold's is dotted)."""
-    (boundary,) = [c for c in ax.get_children() if isinstance(c, ContourSet) and c.get_linestyle()[0][1] is None]  # type: ignore[index]
+    (boundary,) = [
+        c
+        for c in ax.get_children()
+        if isinstance(c, ContourSet) and not c.filled and c.get_linestyle()[0][1] is None  # type: ignore[index]
+    ]
     return boundary
+
+
+def test_a_probability_maps_c_obstacles_are_hatched_inside_their_outline(grid, probability, valid):
+    """Reader r29c, chapter 03's yaw x joint slice: free corners the model calls colliding were as dark as the
+    C-obstacle beside them. The true C-obstacles are hatched, nothing filled: the truth reads without the grey."""
+    ax = pc.probability_map(probability, valid, grid, threshold=0.5).axes[0]
+    (hatched,) = [c for c in ax.get_children() if isinstance(c, ContourSet) and c.filled]
+    assert list(hatched.hatches) == ["//"] and list(hatched.levels) == [0.5, 1.5]
+    inside = np.concatenate([p.vertices for p in hatched.get_paths()])  # (n, 2) the hatched region's outline
+    x, y = inside.T
+    i, j = np.nonzero(~valid)
+    cell = grid.axes[0][1] - grid.axes[0][0]
+    assert x.min() >= grid.axes[0][i.min()] - cell and x.max() <= grid.axes[0][i.max()] + cell
+    assert y.min() >= grid.axes[1][j.min()] - cell and y.max() <= grid.axes[1][j.max()] + cell
 
 
 def assert_squares_mark(ax, grid, mask, k, label="invalid kept (dangerous)"):
@@ -306,7 +324,7 @@ def test_the_threshold_line_lies_over_the_outlines_and_under_the_squares():
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
     valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (60, 60)
     ax = pc.probability_map(np.where(valid, 0.9, 0.1), valid, fine, threshold=0.5).axes[0]
-    contours = [c for c in ax.get_children() if isinstance(c, ContourSet)]
+    contours = [c for c in ax.get_children() if isinstance(c, ContourSet) and not c.filled]
     (cut,) = [c for c in contours if c is not boundary_of(ax)]
     (squares,) = [c for c in cell_marks.cell_marks(ax) if c.get_label() == "invalid kept (dangerous)"]
     assert boundary_of(ax).get_zorder() < cut.get_zorder() < squares.get_zorder()
@@ -406,7 +424,9 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     assert crosses.get_zorder() > path_line.get_zorder()
     # readers r12b, r13b, r15c: a cross among the map's dangerous squares hid there; the map's mistakes go unmarked
     assert [c.get_label() for c in ax.collections if c.get_label() in answers.ANSWERS] == []
-    (cut,) = [c for c in ax.collections if isinstance(c, ContourSet) and c.get_linestyle()[0][1]]  # the dotted one
+    (cut,) = [
+        c for c in ax.collections if isinstance(c, ContourSet) and not c.filled and c.get_linestyle()[0][1]
+    ]  # the dotted one
     assert min(cut.get_linewidths()) >= 2.5  # bold: followed across the map (r15c found it faint at 1.5)
     assert [t.xy for t in ax.texts if t.get_text() == "in collision"] == [tuple(n) for n in nodes[~nodes_valid]]
 
@@ -433,7 +453,9 @@ def test_conservative_circles_leave_the_grey_of_p_valid_to_read_and_show_on_ever
     for level in np.linspace(0, 1, 101):  # every grey of the map
         grey = to_hex((level, level, level))
         assert max(contrast("ink", grey), contrast("free", grey)) >= 3.0
-    (cut,) = [c for c in ax.collections if isinstance(c, ContourSet) and c.get_linestyle()[0][1]]  # the dotted one
+    (cut,) = [
+        c for c in ax.collections if isinstance(c, ContourSet) and not c.filled and c.get_linestyle()[0][1]
+    ]  # the dotted one
     x = np.concatenate([p.vertices for p in cut.get_paths()])[:, 0]
     assert np.allclose(x, x.mean(), atol=fine.axes[0][1] - fine.axes[0][0])  # between the rejected and the kept band
 

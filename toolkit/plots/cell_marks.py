@@ -131,9 +131,25 @@ EDGE = 4  # sub-cells a side: an outline's contour runs between their centres, o
 def draw_cell_outline(ax: Axes, grid: CSpaceSlice, mask, **style) -> QuadContourSet:
     """The outline of the cells of ``grid`` where ``mask (nx, ny)`` holds, drawn along the cells' edges (``style``:
     contour's options): a mark on a cell of either side lies on its side of the line."""
-    subs = []  # per axis, the centres of EDGE sub-cells a side of each cell: (n * EDGE,)
+    return ax.contour(*_sub_cells(grid, mask), levels=[0.5], **style)
+
+
+def draw_cell_hatch(ax: Axes, grid: CSpaceSlice, mask, *, color: str, hatch: str = "//") -> QuadContourSet:
+    """A hatch in ``color`` over the cells of ``grid`` where ``mask (nx, ny)`` holds, inside :func:`draw_cell_outline`'s
+    line, nothing filled (reader r29c: on a dark map a free region the model calls colliding looked like the
+    C-obstacle beside it; the hatch says which is which without the grey)."""
+    hatched = ax.contourf(*_sub_cells(grid, mask), levels=[0.5, 1.5], colors="none", hatches=[hatch], zorder=1.2)
+    hatched.set_edgecolor(color)
+    hatched.set_linewidth(0)
+    return hatched
+
+
+def _sub_cells(grid: CSpaceSlice, mask) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The centres of EDGE x EDGE sub-cells of each cell, per axis ``(n * EDGE,)``, and ``mask`` on them, transposed
+    for contour: ``(ny * EDGE, nx * EDGE)``."""
+    subs = []
     for axis in grid.axes:
         width = abs(axis[1] - axis[0]) if len(axis) > 1 else 1.0
         subs.append((axis[:, None] + width * ((np.arange(EDGE) + 0.5) / EDGE - 0.5)[None]).ravel())
     fine = np.repeat(np.repeat(np.asarray(mask, dtype=float), EDGE, axis=0), EDGE, axis=1)  # each cell EDGE x EDGE
-    return ax.contour(*subs, fine.T, levels=[0.5], **style)
+    return subs[0], subs[1], fine.T

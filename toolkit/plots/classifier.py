@@ -39,7 +39,7 @@ from toolkit.learning import metrics
 from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
-from toolkit.plots.cell_marks import draw_cell_marks, draw_cell_outline, fit_cell_marks
+from toolkit.plots.cell_marks import draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
 from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import dof_label
 from toolkit.plots.slices import CSpaceSlice
@@ -57,6 +57,7 @@ ZORDER = {
 # (r29c: circles under the outlines were half hidden; r10b, r11: a square under its ringed line was cut in two)
 PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
+HATCH = COLORS["c_obstacle"]  # the C-obstacles' hatch on a P(valid) map: light, seen on its black and its greys
 BLOCKS = {1: 5, 3: 10}  # blocks a side on every map: a 100-cell map's circles one per 20 x 20 cells, squares 10 x 10
 
 
@@ -92,7 +93,7 @@ def probability_maps(
     k = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
     _legend(fig, _mistake_handles(k), above=len(cut) > 1)  # r26c: under the second map, a screen below the first
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
-    text += "configurations; grey, 0 black to 1 white) with the true C-obstacle boundary outlined, the threshold's "
+    text += "configurations; grey, 0 black to 1 white) with the true C-obstacles outlined and hatched, the threshold's "
     text += f"contour dotted, dangerous mistakes as squares{_per_block(k[3])} and conservative ones as circles"
     return describe(fig, text + f"{_per_block(k[1])}. " + "; ".join(said) + ".", parts)
 
@@ -249,6 +250,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
         line.set_path_effects(halo(cut, ("free",)))  # a white ring: it shows on the dark side too
         line.set_zorder(2.5)  # over the boundary (2), under the squares: r20b could not see it under the outlines
     _draw_boundary(ax, valid, grid)
+    draw_cell_hatch(ax, grid, ~_on_grid(valid, grid, "valid"), color=HATCH)  # the truth without reading the grey
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
     if mistakes:  # fit_cell_marks sizes them, no two closer than their pitch
         _draw_mistakes(ax, grid, codes)
@@ -273,7 +275,7 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     ax.plot(nodes[nodes_valid, x], nodes[nodes_valid, y], ".", **dots)
     if edges is not None and len(edges):  # faint, under the nodes: a node in collision visibly has none (r29c)
         ends = nodes[np.asarray(edges)][..., [x, y]]  # (E, 2, 2)
-        ax.add_collection(LineCollection(ends, colors=COLORS["node"], linewidths=0.4, alpha=0.25, zorder=2.2))
+        ax.add_collection(LineCollection(ends, colors=COLORS["edge"], linewidths=0.4, alpha=0.5, zorder=2.2))
     cross = dict(color=COLORS["ink"], markersize=14, label="roadmap node in collision", zorder=7)  # over the path (5)
     ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], "X", path_effects=halo(1.0, ("free",)), **cross)  # ringed
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
@@ -374,8 +376,8 @@ def _mistake_line(code: int) -> Line2D:
 def _legend(fig: Figure, handles: list, *, above: bool = False) -> None:
     """The boundary, then ``handles`` (``(handle, label)`` pairs), under the figure (``above``: over it, where the
     figure's maps lie one above the other and the first must be read with it)."""
-    boundary = Line2D([], [], color=BOUNDARY, path_effects=halo(1.2))
-    pairs = [(boundary, "true C-obstacle boundary"), *handles]
+    boundary = Patch(facecolor=COLORS["occupied"], edgecolor=BOUNDARY, hatch="//", hatchcolor=HATCH, linewidth=1.5)
+    pairs = [(boundary, "true C-obstacle (outlined, hatched)"), *handles]
     ncols = len(pairs) if fig.get_figwidth() >= 9 else 2
     where = "outside upper center" if above else "outside lower center"
     fig.legend(*zip(*pairs), loc=where, ncols=ncols, fontsize=9, frameon=False)  # type: ignore[call-overload]
