@@ -77,3 +77,21 @@ def test_score_unseen_scores_each_model_and_always_valid_on_the_same_balanced_an
     for kind, v in truth.items():
         assert scores[f"always valid\n{kind}"]["acc"] == v.mean()
         assert scores[f"strong\n{kind}"] == metrics.classification(predicted_p["strong", kind] >= t["strong"], v)
+
+
+def test_the_threshold_explorer_starts_at_the_models_own_threshold_and_moves_to_anothers():
+    """Section 6's slider, off the page (reader r29c): its picture is the decision map with its alt text as tooltip,
+    and picking a model moves the threshold to that model's own."""
+    from toolkit.geometry import robots
+    from toolkit.plots import slices
+
+    grid = slices.slice_grid(robots.point_robot(), n=8)
+    valid = np.ones(grid.shape, dtype=bool)
+    valid[2:4, 2:4] = False
+    p = np.where(valid, 0.8, 0.3)
+    box = chapter03.threshold_explorer({"a": (p, valid, grid, 0.6), "b": (p, valid, grid, 0.25)}, start="a")
+    (model, threshold), picture = box.children[0].children, box.children[1]
+    assert threshold.value == 0.6 and bytes(picture.value).startswith(b"\x89PNG")
+    assert "threshold 0.60" in picture.tooltip
+    model.value = "b"
+    assert threshold.value == 0.25 and "threshold 0.25" in picture.tooltip

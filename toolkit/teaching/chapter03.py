@@ -7,6 +7,7 @@
   dangerous ones are;
 - :func:`score_unseen`: section 4's scores of each model and of "always valid" on unseen workspaces' samples;
 - :func:`slice_verdict`: section 5's verdict on a slice, its counts and words;
+- :func:`threshold_explorer`: section 6's slider over the decision maps;
 - :func:`closing_table`, :func:`other_runs` and :func:`implied_shares`: the closing section's table, its folded box of
   other runs, and the lines under it.
 """
@@ -147,6 +148,42 @@ def slice_verdict(p, truth, threshold: float, near: int) -> str:
         counts + f"it finds the obstacles and errs {where}; away from any boundary it makes {far_c} "
         f"conservative and {far_d} dangerous mistakes"
     )
+
+
+def threshold_explorer(maps: Mapping[str, tuple], start: str):
+    """Section 6's slider (reader r29c: its code filled a screen of the page): a model, ``maps[name] = (P(valid),
+    truth, grid, its own threshold)``, and a threshold; the decision map redrawn as a picture (it changes in place, no
+    flicker), its alt text the picture's tooltip. Picking a model moves the threshold to that model's own."""
+    import io
+
+    import ipywidgets as widgets
+
+    from toolkit.plots import classifier
+    from toolkit.plots.alt import alt_text
+
+    model = widgets.Dropdown(options=list(maps), value=start, description="model")
+    own = round(maps[start][3], 2)
+    threshold = widgets.FloatSlider(own, min=0.0, max=1.0, step=0.01, description="threshold", continuous_update=False)
+    picture = widgets.Image(format="png")
+
+    def redraw(change=None) -> None:
+        p, truth, cells, _ = maps[model.value]
+        png = io.BytesIO()
+        fig = classifier.threshold_view(p, truth, cells, threshold=threshold.value, title=model.value)
+        fig.savefig(png, format="png", dpi=96)  # one pixel a CSS pixel: the text at its size on the page
+        picture.value, picture.tooltip = png.getvalue(), alt_text(fig)  # the picture, and what it shows in words
+
+    def pick_model(change) -> None:
+        own = round(maps[model.value][3], 2)  # a new model starts at its own threshold
+        if threshold.value != own:
+            threshold.value = own  # redraws
+        else:
+            redraw()
+
+    model.observe(pick_model, "value")
+    threshold.observe(redraw, "value")
+    redraw()
+    return widgets.VBox([widgets.HBox([model, threshold]), picture])
 
 
 def rates(s: Mapping[str, float], balanced: str = ".0%") -> str:
