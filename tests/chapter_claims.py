@@ -319,8 +319,8 @@ def _chapter_03_opening(nb) -> list[str]:
     """The verdict under the title against the recorded table beside it (review r26c: a verdict with numbers): the
     `paper` preset about a coin flip by balanced accuracy on 2DS, the `strong` preset "almost perfectly" (90 % or more)
     on 2DS and 3DC-7."""
-    said = {
-        row[0]: float(row[1].rstrip("%"))  # the paper's 87.5 %, (TPR + TNR) / 2, to a tenth
+    said = {  # a row's label without what it explains in brackets (r29c: "preset" and "3DC-7" defined in the rows)
+        re.sub(r" \([^()]*\)", "", row[0]): float(row[1].rstrip("%"))  # the paper's 87.5 %, to a tenth
         for header, rs in tables(nb)
         if header and header[0] == "model, unseen workspaces"
         for row in rs

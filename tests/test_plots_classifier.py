@@ -6,7 +6,7 @@ import re
 import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
-from matplotlib.collections import PathCollection
+from matplotlib.collections import LineCollection, PathCollection
 from matplotlib.colors import to_hex, to_rgba
 from matplotlib.contour import ContourSet
 
@@ -60,8 +60,26 @@ def block_of_squares(fig, kind="squares") -> int:
 
 def boundary_of(ax) -> ContourSet:
     """The true C-obstacle boundary on a map: its one solid contour (the threshold's is dotted)."""
-    (boundary,) = [c for c in ax.get_children() if isinstance(c, ContourSet) and c.get_linestyle()[0][1] is None]  # type: ignore[index]
+    (boundary,) = [
+        c
+        for c in ax.get_children()
+        if isinstance(c, ContourSet) and not c.filled and c.get_linestyle()[0][1] is None  # type: ignore[index]
+    ]
     return boundary
+
+
+def test_a_probability_maps_c_obstacles_are_hatched_inside_their_outline(grid, probability, valid):
+    """Reader r29c, chapter 03's yaw x joint slice: free corners the model calls colliding were as dark as the
+    C-obstacle beside them. The true C-obstacles are hatched, nothing filled: the truth reads without the grey."""
+    ax = pc.probability_map(probability, valid, grid, threshold=0.5).axes[0]
+    (hatched,) = [c for c in ax.get_children() if isinstance(c, ContourSet) and c.filled]
+    assert list(hatched.hatches) == ["//"] and list(hatched.levels) == [0.5, 1.5]
+    inside = np.concatenate([p.vertices for p in hatched.get_paths()])  # (n, 2) the hatched region's outline
+    x, y = inside.T
+    i, j = np.nonzero(~valid)
+    cell = grid.axes[0][1] - grid.axes[0][0]
+    assert x.min() >= grid.axes[0][i.min()] - cell and x.max() <= grid.axes[0][i.max()] + cell
+    assert y.min() >= grid.axes[1][j.min()] - cell and y.max() <= grid.axes[1][j.max()] + cell
 
 
 def assert_squares_mark(ax, grid, mask, k, label="invalid kept (dangerous)"):
@@ -239,7 +257,8 @@ def test_a_fine_maps_marks_stand_apart_and_a_one_cell_strip_of_mistakes_is_marke
     side = cell_marks.cell_points(ax, fine)  # points
     for label, kind, code in (("valid rejected", "circles", 1), ("invalid kept (dangerous)", "squares", 3)):
         k = block_of_squares(fig, kind)
-        assert k * side >= pc.PITCH[code] and (k - 1) * side < pc.PITCH[code]  # the fewest cells that far apart
+        assert k * side >= pc.PITCH[code] and 100 % k == 0  # that far apart, and a block divides the map (r29c)
+        assert k == cell_marks.block_side(int(np.ceil(pc.PITCH[code] / side - 1e-9)), pc.BLOCKS[code], (100, 100))
         mask = answers.answer_codes(probability >= 0.5, valid) == code
         assert_squares_mark(ax, fine, mask, k, label=label)
     assert block_of_squares(fig, "circles") > block_of_squares(fig, "squares")  # the circles sparser
@@ -278,10 +297,10 @@ def test_each_mark_sits_on_a_mistake_of_its_kind():
     assert block_of_squares(fig, "circles") > 1 and block_of_squares(fig, "squares") > 1  # merged into blocks
 
 
-def test_a_maps_circles_lie_under_its_outlines_and_every_mark_inside_its_frame():
-    """Reader r19b, chapter 03's 3DC-7 slices at full size: circles drawn over the C-obstacle's outlines hid them, and
-    a top row of marks sat on the map's frame, half outside it. On a P(valid) map the circles now lie under the
-    outlines, the few squares still over them, and every mark, its rings included, lies inside the frame."""
+def test_a_maps_circles_lie_over_its_outlines_and_every_mark_inside_its_frame():
+    """Reader r19b, chapter 03's 3DC-7 slices at full size: a top row of marks sat on the map's frame, half outside it;
+    reader r29c: circles under the outlines were half hidden. On a P(valid) map the circles lie over the outlines, the
+    squares over both, and every mark, its rings included, lies inside the frame."""
     fine = slices.slice_grid(robots.point_robot(), n=100)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
     valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (100, 100)
@@ -290,7 +309,7 @@ def test_a_maps_circles_lie_under_its_outlines_and_every_mark_inside_its_frame()
     ax = fig.axes[0]
     marks = {c.get_label(): c for c in cell_marks.cell_marks(ax)}
     circles, squares = marks["valid rejected"], marks["invalid kept (dangerous)"]
-    assert circles.get_zorder() < boundary_of(ax).get_zorder() < squares.get_zorder()
+    assert boundary_of(ax).get_zorder() < circles.get_zorder() < squares.get_zorder()
     frame = np.array(ax.bbox.extents) * 72 / fig.dpi  # (4,) x0, y0, x1, y1 in points
     for mark in (circles, squares):
         at = ax.transData.transform(mark.get_offsets()) * 72 / fig.dpi  # (m, 2) points
@@ -305,7 +324,7 @@ def test_the_threshold_line_lies_over_the_outlines_and_under_the_squares():
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
     valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (60, 60)
     ax = pc.probability_map(np.where(valid, 0.9, 0.1), valid, fine, threshold=0.5).axes[0]
-    contours = [c for c in ax.get_children() if isinstance(c, ContourSet)]
+    contours = [c for c in ax.get_children() if isinstance(c, ContourSet) and not c.filled]
     (cut,) = [c for c in contours if c is not boundary_of(ax)]
     (squares,) = [c for c in cell_marks.cell_marks(ax) if c.get_label() == "invalid kept (dangerous)"]
     assert boundary_of(ax).get_zorder() < cut.get_zorder() < squares.get_zorder()
@@ -332,12 +351,12 @@ def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, pr
 
 
 @pytest.mark.parametrize("n", [N, 100])  # a mark a cell; a mark per block of cells (chapter 03 at full size)
-def test_threshold_views_mistakes_are_marked_at_a_size_one_sees_circles_sparse_under_the_boundary(n):
+def test_threshold_views_mistakes_are_marked_at_a_size_one_sees_circles_sparse_over_the_boundary(n):
     """Reader r8b: the decision map's mistakes lay under the boundary's ringed line, invisible. Each kind has its own
     mark (circles conservative, squares dangerous) over every cell of that kind, at least ``MIN_MARK`` points wide, in
     the kind's colour: as many of its pixels show as the marks' area, about. Reader r27c: a circle a block of cells
-    made a carpet that hid the cells' colour and the outlines; the circles are now as sparse as on a P(valid) map and
-    under the outlines, the squares over them."""
+    made a carpet that hid the cells' colour and the outlines; the circles are now as sparse as on a P(valid) map, and
+    (reader r29c: half hidden under the outlines) over them, the squares over both."""
     robot = robots.point_robot()
     grid = slices.slice_grid(robot, n=n)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
@@ -359,7 +378,7 @@ def test_threshold_views_mistakes_are_marked_at_a_size_one_sees_circles_sparse_u
         assert np.any(codes == code)
         assert_squares_mark(ax_map, grid, codes == code, k[label], label=label)
         (marks,) = [c for c in ax_map.collections if c.get_label() == label]
-        assert (marks.get_zorder() > boundary.get_zorder()) == (marker == "s")
+        assert marks.get_zorder() > boundary.get_zorder()  # r29c: circles too, not half hidden under the outlines
         side = np.sqrt(marks.get_sizes()[0])  # points
         assert side >= cell_marks.MIN_MARK
         colour = to_rgba(pc.ANSWER_COLORS[code])[:3]
@@ -388,7 +407,12 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     path = np.array([[1.0, 2.0], [5.0, 3.0], [25.0, 28.0]])
     nodes = np.array([[1.0, 1.0], [15.0, 8.0], [3.0, 4.0], [12.0, 6.0]])
     nodes_valid = np.array([True, False, True, False])
-    ax = pc.path_map(probability, valid, grid, threshold=0.5, path=path, nodes=nodes, nodes_valid=nodes_valid).axes[0]
+    edges = np.array([[0, 2]])  # reader r29c: drawn, so that a node in collision visibly has none
+    ax = pc.path_map(
+        probability, valid, grid, threshold=0.5, path=path, nodes=nodes, nodes_valid=nodes_valid, edges=edges
+    ).axes[0]
+    (drawn,) = [c for c in ax.collections if isinstance(c, LineCollection) and not isinstance(c, ContourSet)]
+    np.testing.assert_array_equal(drawn.get_segments()[0], nodes[[0, 2]])
     lines = {line.get_label(): np.column_stack([line.get_xdata(), line.get_ydata()]) for line in ax.get_lines()}
     np.testing.assert_array_equal(lines["returned path (checked exactly)"], path)
     np.testing.assert_array_equal(lines["roadmap node in collision"], nodes[~nodes_valid])
@@ -400,7 +424,9 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     assert crosses.get_zorder() > path_line.get_zorder()
     # readers r12b, r13b, r15c: a cross among the map's dangerous squares hid there; the map's mistakes go unmarked
     assert [c.get_label() for c in ax.collections if c.get_label() in answers.ANSWERS] == []
-    (cut,) = [c for c in ax.collections if isinstance(c, ContourSet) and c.get_linestyle()[0][1]]  # the dotted one
+    (cut,) = [
+        c for c in ax.collections if isinstance(c, ContourSet) and not c.filled and c.get_linestyle()[0][1]
+    ]  # the dotted one
     assert min(cut.get_linewidths()) >= 2.5  # bold: followed across the map (r15c found it faint at 1.5)
     assert [t.xy for t in ax.texts if t.get_text() == "in collision"] == [tuple(n) for n in nodes[~nodes_valid]]
 
@@ -427,7 +453,9 @@ def test_conservative_circles_leave_the_grey_of_p_valid_to_read_and_show_on_ever
     for level in np.linspace(0, 1, 101):  # every grey of the map
         grey = to_hex((level, level, level))
         assert max(contrast("ink", grey), contrast("free", grey)) >= 3.0
-    (cut,) = [c for c in ax.collections if isinstance(c, ContourSet) and c.get_linestyle()[0][1]]  # the dotted one
+    (cut,) = [
+        c for c in ax.collections if isinstance(c, ContourSet) and not c.filled and c.get_linestyle()[0][1]
+    ]  # the dotted one
     x = np.concatenate([p.vertices for p in cut.get_paths()])[:, 0]
     assert np.allclose(x, x.mean(), atol=fine.axes[0][1] - fine.axes[0][0])  # between the rejected and the kept band
 

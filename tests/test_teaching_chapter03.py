@@ -16,26 +16,32 @@ def test_the_opening_table_gives_the_papers_accuracy_as_reported_and_its_balance
     assert f"as reported: {published['acc']:.0%})" in paper
     assert f"| {(published['tpr'] + published['tnr']) / 2:.1%} |" in paper  # 87.5 %, not the reported 88 %
     strong7 = recorded.table("strong", "MLP accuracy")["3dc7"]
-    assert any(
-        line.startswith(f"| our `strong` preset, 3DC-7 | {recorded.ours(strong7['Balanced unseen Acc']):.0%} |")
-        for line in lines
-    )
+    label = "our `strong` preset, 3DC-7 (a 7-DoF chain of two boxes in 3D, section 5)"  # r29c: says what it is
+    assert any(line.startswith(f"| {label} | {recorded.ours(strong7['Balanced unseen Acc']):.0%} |") for line in lines)
+    assert "preset (the toolkit's training recipe" in lines[3]
 
 
-def test_the_closing_table_names_this_pages_models_and_the_recorded_runs_apart():
-    scores = {"paper\nbalanced": {"acc": 0.5, "tpr": 0.3, "tnr": 0.7}}
+def test_the_closing_table_holds_the_paper_and_section_4_and_a_box_the_other_runs_each_named():
+    """Reader r29c: thirteen rows; the closing table keeps the paper's row and section 4's, the others folded."""
+    scores = {"paper\nbalanced": {"acc": 0.5, "tpr": 0.3, "tnr": 0.7}, "always valid\nbalanced": {"acc": 0.5}}
+    scores["always valid\nbalanced"] |= {"tpr": 1.0, "tnr": 0.0}
+    table = chapter03.closing_table(scores)
+    rows = [line.split(" | ")[0].lstrip("| ") for line in table.splitlines()[2:]]
+    assert rows == ["the paper's Table 2, 2DS unseen", "`paper` preset, 2DS unseen", "always valid"]
+    assert "| unclear (§IV-A) | 88% | 90% / 85% | 87.5% |" in table  # the paper's, as the opening table prints it
     evaluation = {"mlp": {"unseen": {"acc": 0.9, "tpr": 0.8, "tnr": 1.0}}}
     kept, valid = np.array([True, False, True, True]), np.array([True, False, False, True])
-    table = chapter03.closing_table(scores, (kept, valid), lambda scenario, preset: evaluation)
-    rows = [line.split(" | ")[0].lstrip("| ") for line in table.splitlines()[2:]]
-    assert rows[1:3] == ["`paper` preset, 2DS unseen", "`strong` preset, 3DC-7 slice of section 5"]
+    box = chapter03.other_runs((kept, valid), lambda scenario, preset: evaluation)
+    assert box.startswith("<details><summary>") and box.endswith("</details>")
+    rows = [line.split(" | ")[0].lstrip("| ") for line in box.splitlines() if line.startswith("| `")]
+    assert rows[0] == "`strong` preset, 3DC-7 slice of section 5"
     assert sum("this page's model (`trained_scores`)" in row for row in rows) == 3
     assert [row for row in rows if "recorded run" in row] == [
         "`strong` preset, 3DC-7 unseen, recorded run (the opening table's)",
         '`paper` preset, 2DS unseen, recorded run (chapter 04\'s; "always valid" 85%)',
     ]
-    assert "| its 4 cells | 75% | 100% / 50% | 75% |" in table
-    assert "| unclear (§IV-A) | 88% | 90% / 85% | 87.5% |" in table  # the paper's, as the opening table prints it
+    assert "| its 4 cells | 75% | 100% / 50% | 75% |" in box
+    assert "trains a CAE before the MLP" in box  # why the `strong` rows are not the recorded runs'
 
 
 def test_the_mistakes_table_prints_a_share_below_1_percent_with_a_decimal():
@@ -51,3 +57,41 @@ def test_a_slice_verdict_counts_its_mistakes_by_where_they_lie():
     said = chapter03.slice_verdict(p, truth, 0.5, 1)
     assert said.startswith("1 of 400 cells wrong, 0% of them near a boundary")
     assert said.endswith("away from any boundary it makes 1 conservative and 0 dangerous mistakes")
+
+
+def test_score_unseen_scores_each_model_and_always_valid_on_the_same_balanced_and_blind_samples(checkpoint_2ds):
+    """Section 4's measurement, moved off the page (reader r29c: a screen of loop code): per kind of sample, the truth,
+    each model's P(valid) and its scores, "always valid" scoring the share of valid samples."""
+    from toolkit import scenarios
+    from toolkit.learning import checkpoints, metrics
+
+    scenario = scenarios.get("2ds")
+    models = {"strong": checkpoints.load_models(checkpoint_2ds, scenario)}
+    t = {"strong": models["strong"].threshold}
+    truth, predicted_p, scores = chapter03.score_unseen(scenario, models, t, 2, 20, 0)
+    assert {kind: v.shape for kind, v in truth.items()} == {"balanced": (40,), "validity-blind": (40,)}
+    assert truth["balanced"].mean() == 0.5 and set(predicted_p) == {
+        ("strong", "balanced"),
+        ("strong", "validity-blind"),
+    }
+    for kind, v in truth.items():
+        assert scores[f"always valid\n{kind}"]["acc"] == v.mean()
+        assert scores[f"strong\n{kind}"] == metrics.classification(predicted_p["strong", kind] >= t["strong"], v)
+
+
+def test_the_threshold_explorer_starts_at_the_models_own_threshold_and_moves_to_anothers():
+    """Section 6's slider, off the page (reader r29c): its picture is the decision map with its alt text as tooltip,
+    and picking a model moves the threshold to that model's own."""
+    from toolkit.geometry import robots
+    from toolkit.plots import slices
+
+    grid = slices.slice_grid(robots.point_robot(), n=8)
+    valid = np.ones(grid.shape, dtype=bool)
+    valid[2:4, 2:4] = False
+    p = np.where(valid, 0.8, 0.3)
+    box = chapter03.threshold_explorer({"a": (p, valid, grid, 0.6), "b": (p, valid, grid, 0.25)}, start="a")
+    (model, threshold), picture = box.children[0].children, box.children[1]
+    assert threshold.value == 0.6 and bytes(picture.value).startswith(b"\x89PNG")
+    assert "threshold 0.60" in picture.tooltip
+    model.value = "b"
+    assert threshold.value == 0.25 and "threshold 0.25" in picture.tooltip

@@ -8,11 +8,11 @@ that size is a speck, and a mark made larger would cover its neighbours' marks.
 classifier's maps draw their dangerous squares over the boundary, which would cut one beside it in two);
 :func:`fit_cell_marks`, once the figure is laid out, puts one mark on each block of ``k x k`` cells holding a marked
 cell, on one of those cells (the nearest their mean): ``k`` the fewest cells that make a mark :data:`MIN_MARK` points
-wide at :data:`MARK_SHARE` of its block, and that keep two marks' centres at least the ``pitch`` the marks were drawn
+wide at :data:`MARK_SHARE` of its block, that keep two marks' centres at least the ``pitch`` the marks were drawn
 with apart (review r18b: on chapter 03's `paper` map a pile of squares a block apart merged into one shape that could
-not be counted); a mark drawn with a pitch sits on a cell near its block's middle where it can, so that two in
-neighbouring blocks keep :data:`CLEAR` between them, and inside the map's frame (a mark on an edge cell moves in by
-its rings' width).
+not be counted), and that make the ``blocks`` a side they asked for, rounded up to divide the map's side; a mark
+drawn with a pitch sits on a cell near its block's middle where it can, so that two in neighbouring blocks keep
+:data:`CLEAR` between them, and inside the map's frame (a mark on an edge cell moves in by its rings' width).
 """
 
 from __future__ import annotations
@@ -34,12 +34,22 @@ RING = 2.1  # points: a mark's rings beyond its side, kept inside the map's fram
 GID = "cell marks"  # how fit_cell_marks finds the marks draw_cell_marks drew ("cell marks:PITCH")
 
 
-def draw_cell_marks(ax, grid: CSpaceSlice, mask, *, pitch: float = 0.0, **style) -> PathCollection:
+def draw_cell_marks(ax, grid: CSpaceSlice, mask, *, pitch: float = 0.0, blocks: int = 0, **style) -> PathCollection:
     """A mark (``style``: scatter's options) at the centre of each cell of ``grid`` where ``mask (nx, ny)`` holds,
     over the map, under the lines on it (a boundary stays whole) unless ``style`` gives a ``zorder`` above them;
-    :func:`fit_cell_marks` sizes them once laid out, no two closer than ``pitch`` points (0: a block's width)."""
+    :func:`fit_cell_marks` sizes them once laid out, no two closer than ``pitch`` points (0: a block's width), one per
+    block of at least ``n / blocks`` cells a side (0: as small as they fit), so that every map of a figure, and of a
+    page that asks the same ``blocks``, marks the same cells alike (reader r29c: 5, 7 and 14 cells on three maps)."""
     i, j = np.nonzero(mask)
-    return ax.scatter(grid.axes[0][i], grid.axes[1][j], s=MIN_MARK**2, gid=f"{GID}:{pitch:g}", **style)
+    return ax.scatter(grid.axes[0][i], grid.axes[1][j], s=MIN_MARK**2, gid=f"{GID}:{pitch:g}:{blocks}", **style)
+
+
+def block_side(needed: int, blocks: int, shape: tuple[int, ...]) -> int:
+    """The cells a side of one mark's block: at least ``needed`` and ``n / blocks`` (``blocks`` 0: none asked), and
+    a divisor of each side of a map of ``shape`` where one is that large, so that no sliver of a block at the map's
+    edge doubles a row of marks (reader r29c: blocks of 14 of 100 cells left 2 at the top and right)."""
+    k = max(1, needed, -(-min(shape) // blocks) if blocks else 1)
+    return next((d for d in range(k, min(shape) + 1) if all(n % d == 0 for n in shape)), k)
 
 
 def cell_marks(ax: Axes) -> list[PathCollection]:
@@ -58,8 +68,10 @@ def fit_cell_marks(fig: Figure, grid: CSpaceSlice) -> dict[str, int]:
     for ax in fig.axes:
         side = cell_points(ax, grid) if cell_marks(ax) else 0.0
         for mark in cell_marks(ax):
-            pitch = float(str(mark.get_gid()).partition(":")[2] or 0)
-            k = max(1, int(np.ceil(MIN_MARK / (MARK_SHARE * side))), int(np.ceil(pitch / side - 1e-9)))
+            _, pitch_said, blocks_said = (str(mark.get_gid()).split(":") + ["", ""])[:3]
+            pitch = float(pitch_said or 0)
+            needed = max(int(np.ceil(MIN_MARK / (MARK_SHARE * side))), int(np.ceil(pitch / side - 1e-9)))
+            k = block_side(needed, int(blocks_said or 0), grid.shape)
             label = str(mark.get_label())
             blocks[label] = max(blocks.get(label, 1), k)
             size = min(MARK_SHARE * k * side, MAX_MARK)
@@ -119,9 +131,25 @@ EDGE = 4  # sub-cells a side: an outline's contour runs between their centres, o
 def draw_cell_outline(ax: Axes, grid: CSpaceSlice, mask, **style) -> QuadContourSet:
     """The outline of the cells of ``grid`` where ``mask (nx, ny)`` holds, drawn along the cells' edges (``style``:
     contour's options): a mark on a cell of either side lies on its side of the line."""
-    subs = []  # per axis, the centres of EDGE sub-cells a side of each cell: (n * EDGE,)
+    return ax.contour(*_sub_cells(grid, mask), levels=[0.5], **style)
+
+
+def draw_cell_hatch(ax: Axes, grid: CSpaceSlice, mask, *, color: str, hatch: str = "//") -> QuadContourSet:
+    """A hatch in ``color`` over the cells of ``grid`` where ``mask (nx, ny)`` holds, inside :func:`draw_cell_outline`'s
+    line, nothing filled (reader r29c: on a dark map a free region the model calls colliding looked like the
+    C-obstacle beside it; the hatch says which is which without the grey)."""
+    hatched = ax.contourf(*_sub_cells(grid, mask), levels=[0.5, 1.5], colors="none", hatches=[hatch], zorder=1.2)
+    hatched.set_edgecolor(color)
+    hatched.set_linewidth(0)
+    return hatched
+
+
+def _sub_cells(grid: CSpaceSlice, mask) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+    """The centres of EDGE x EDGE sub-cells of each cell, per axis ``(n * EDGE,)``, and ``mask`` on them, transposed
+    for contour: ``(ny * EDGE, nx * EDGE)``."""
+    subs = []
     for axis in grid.axes:
         width = abs(axis[1] - axis[0]) if len(axis) > 1 else 1.0
         subs.append((axis[:, None] + width * ((np.arange(EDGE) + 0.5) / EDGE - 0.5)[None]).ravel())
     fine = np.repeat(np.repeat(np.asarray(mask, dtype=float), EDGE, axis=0), EDGE, axis=1)  # each cell EDGE x EDGE
-    return ax.contour(*subs, fine.T, levels=[0.5], **style)
+    return subs[0], subs[1], fine.T

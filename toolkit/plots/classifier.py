@@ -29,6 +29,7 @@ from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
+from matplotlib.collections import LineCollection
 from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
@@ -38,7 +39,7 @@ from toolkit.learning import metrics
 from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
-from toolkit.plots.cell_marks import draw_cell_marks, draw_cell_outline, fit_cell_marks
+from toolkit.plots.cell_marks import draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
 from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import dof_label
 from toolkit.plots.slices import CSpaceSlice
@@ -49,10 +50,15 @@ MISTAKE_MARKERS = {1: "o", 3: "s"}  # conservative circles, dangerous squares: t
 CUT = 2.5  # points: the path map's dotted line at the model's threshold, bold enough to follow across the map (r15c)
 END_CLEAR = 0.06  # of a map's width: a path's diamond nearer an end than this is left out, the end's mark beside it
 CUT_MAP = 1.5  # points: the same line on a map of mistakes, whose marks it must not bury
-ZORDER = {1: 1.5, 3: 3.0}  # on a P(valid) map: conservative circles under the lines (2: the boundary, the threshold's
-# contour), where many sit (r19b: they hid the outlines); the few dangerous squares over them, never cut (r10b, r11)
+ZORDER = {
+    1: 2.8,
+    3: 3.0,
+}  # over the lines (2: the boundary, 2.5: the threshold's contour), the squares over the circles
+# (r29c: circles under the outlines were half hidden; r10b, r11: a square under its ringed line was cut in two)
 PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
+HATCH = COLORS["c_obstacle"]  # the C-obstacles' hatch on a P(valid) map: light, seen on its black and its greys
+BLOCKS = {1: 5, 3: 10}  # blocks a side on every map: a 100-cell map's circles one per 20 x 20 cells, squares 10 x 10
 
 
 def probability_map(
@@ -87,7 +93,7 @@ def probability_maps(
     k = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
     _legend(fig, _mistake_handles(k), above=len(cut) > 1)  # r26c: under the second map, a screen below the first
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
-    text += "configurations; grey, 0 black to 1 white) with the true C-obstacle boundary outlined, the threshold's "
+    text += "configurations; grey, 0 black to 1 white) with the true C-obstacles outlined and hatched, the threshold's "
     text += f"contour dotted, dangerous mistakes as squares{_per_block(k[3])} and conservative ones as circles"
     return describe(fig, text + f"{_per_block(k[1])}. " + "; ".join(said) + ".", parts)
 
@@ -102,7 +108,7 @@ def _per_block(k: int) -> str:
 
 
 def path_map(
-    probability, valid, grid: CSpaceSlice, *, threshold: float, path, nodes, nodes_valid, title: str = ""
+    probability, valid, grid: CSpaceSlice, *, threshold: float, path, nodes, nodes_valid, title: str = "", edges=None
 ) -> Figure:
     """A planner's roadmap ``nodes (M, dof)`` and returned ``path (P, dof)`` over a P(valid) map of the grid's two DoFs.
 
@@ -111,6 +117,7 @@ def path_map(
     configuration (none beside an end), to stand apart from the solid C-obstacle boundary. The model's threshold is a
     bold dotted line (P(valid) = threshold): the roadmap's dots on its dark side are nodes the model rejected, which
     the exact checker drew. The map's mistakes are not marked: no hatch dot passes for a node, no square buries a cross.
+    ``edges (E, 2)``, node indices: the roadmap's edges, drawn faint.
     """
     nodes, nodes_valid, path = np.asarray(nodes), np.asarray(nodes_valid, dtype=bool), np.asarray(path)
     fig = Figure(figsize=(6, 6.2), layout="constrained")
@@ -119,7 +126,7 @@ def path_map(
     fig.colorbar(image, ax=ax, label="P(valid)", shrink=0.8)
     cut = Line2D([], [], color=COLORS["ink"], linestyle=":", linewidth=CUT, label=f"P(valid) = {threshold:.2f}")
     x, y = grid.dofs
-    _draw_roadmap(ax, nodes, nodes_valid, path, (x, y))
+    _draw_roadmap(ax, nodes, nodes_valid, path, (x, y), edges)
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=10, wrap=True)
     _legend(fig, [(line, line.get_label()) for line in [cut, *ax.get_lines()]])
     fit_cell_marks(fig, grid)
@@ -148,15 +155,21 @@ def path_map(
 
 
 def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> Figure:
-    """Accuracy, TPR and TNR of several models or baselines (``{name: {"acc", "tpr", "tnr"}}``), grouped."""
+    """Accuracy, TPR and TNR of several models or baselines (``{name: {"acc", "tpr", "tnr"}}``), grouped, and across
+    each group a dashed line at its balanced accuracy, (TPR + TNR) / 2 (reader r29c: the measure to read, not drawn)."""
     fig = Figure(figsize=(min(PAGE_WIDTH, 1.6 + 1.6 * len(scores)), 3.8), layout="constrained")
-    answers.draw_rates(fig.subplots(), scores)
+    answers.draw_rates(ax := fig.subplots(), scores)
+    balanced = [(s["tpr"] + s["tnr"]) / 2 for s in scores.values()]
+    x, line = np.arange(len(scores)), dict(linestyles="--", linewidth=1.5, zorder=4, label="balanced accuracy")
+    ax.hlines(balanced, x - 0.42, x + 0.42, colors=COLORS["ink"], path_effects=halo(1.5, ("free",)), **line)  # type: ignore[arg-type]
+    ax.legend(fontsize=8, loc="upper center", ncols=2, frameon=False)  # the rates' legend, and the line's
     fig.suptitle(title or "Accuracy, TPR (valid kept), TNR (invalid rejected)")
     said = "; ".join(
-        f"{name}: accuracy {s['acc']:.2f}, TPR {s['tpr']:.2f}, TNR {s['tnr']:.2f}" for name, s in scores.items()
+        f"{name}: accuracy {s['acc']:.2f}, TPR {s['tpr']:.2f}, TNR {s['tnr']:.2f}, balanced accuracy {b:.2f}"
+        for (name, s), b in zip(scores.items(), balanced)
     )
     text = f"{title + '. ' if title else ''}Bars of accuracy, TPR (the share of valid configurations kept) and TNR"
-    return describe(fig, f"{text} (the share in collision rejected). {said}.")
+    return describe(fig, f"{text} (the share in collision rejected), a dashed line at balanced accuracy. {said}.")
 
 
 def roc_curve(curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]], title: str = "") -> Figure:
@@ -191,19 +204,12 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     ax_map.set_title(
         f"decision at threshold {threshold:.2f}" + (per_block if max(per.values()) > 1 else ""), fontsize=9
     )
-    labels = [
-        "true C-obstacle boundary",
-        ANSWERS[0],
-        f"{ANSWERS[1]} (circles)",
-        ANSWERS[2],
-        "invalid kept (dangerous, squares)",
-    ]
+    labels = ["true C-obstacle boundary", ANSWERS[0], f"{ANSWERS[1]} (circles)", ANSWERS[2]]
+    labels.append("invalid kept (dangerous, squares)")
     fig.legend([boundary, *handles], labels, loc="outside lower center", ncols=3, fontsize=8, frameon=False)
     text = f"{title + ': ' if title else ''}the model's decision at threshold {threshold:.2f} over {grid.names[0]} and "
     text += f"{grid.names[1]}, each cell by its kind of answer, the mistakes marked on their cells: dangerous ones "
-    text += (
-        f"with squares{block[3]} over the boundary, conservative ones with sparse circles{block[1]} under it; their "
-    )
+    text += f"with squares{block[3]} and conservative ones with sparse circles{block[1]}, over the boundary; their "
     text += "counts, and the ROC curve. "
     text += f"{answers.answers_in_words(predicted, valid)}; {roc}."
     cut, fpr, tpr = roc_points(probability, valid, np.linspace(0.0, 1.0, 11))  # (11,) each
@@ -244,41 +250,38 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
         line.set_path_effects(halo(cut, ("free",)))  # a white ring: it shows on the dark side too
         line.set_zorder(2.5)  # over the boundary (2), under the squares: r20b could not see it under the outlines
     _draw_boundary(ax, valid, grid)
+    draw_cell_hatch(ax, grid, ~_on_grid(valid, grid, "valid"), color=HATCH)  # the truth without reading the grey
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
     if mistakes:  # fit_cell_marks sizes them, no two closer than their pitch
-        draw_cell_marks(ax, grid, codes == 1, label=ANSWERS[1], zorder=ZORDER[1], pitch=PITCH[1], **_mistake_mark(1))
-        draw_cell_marks(ax, grid, codes == 3, label=ANSWERS[3], zorder=ZORDER[3], pitch=PITCH[3], **_mistake_mark(3))
+        _draw_mistakes(ax, grid, codes)
     return image
 
 
-def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid: np.ndarray, path: np.ndarray, dofs: tuple[int, int]) -> None:
-    """A roadmap's valid nodes as dots, those in collision as crosses, and the path dashed with diamonds, over a map
-    of the two ``dofs``."""
+def _draw_mistakes(ax, grid: CSpaceSlice, codes) -> None:
+    """Every map's mistakes alike: circles, then squares over them, one per block of ``BLOCKS`` a side."""
+    for code in MISTAKE_MARKERS:
+        style = dict(label=ANSWERS[code], zorder=ZORDER[code], **_mistake_mark(code))
+        draw_cell_marks(ax, grid, codes == code, pitch=PITCH[code], blocks=BLOCKS[code], **style)
+
+
+def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tuple[int, int], edges=None) -> None:
+    """A roadmap's valid nodes as dots, those in collision as crosses, its ``edges (E, 2)`` (node indices) as faint
+    lines, and the path dashed with diamonds, over a map of the two ``dofs``."""
     x, y = dofs
     scale = np.abs(np.diff([ax.get_xlim(), ax.get_ylim()]).ravel())  # (2,) the map's width and height
     apart = np.abs(path[:, None, [x, y]] - path[None, [0, -1]][..., [x, y]]) / scale  # (P, 2 ends, 2) map widths
     near = apart.max(axis=2).min(axis=1) < END_CLEAR  # (P,) beside an end: no diamond (r20b: one sat on the start)
     dots = dict(color=COLORS["node"], markersize=4, label="roadmap node, valid", path_effects=halo(0.5, ("free",)))
     ax.plot(nodes[nodes_valid, x], nodes[nodes_valid, y], ".", **dots)
-    ax.plot(
-        nodes[~nodes_valid, x],
-        nodes[~nodes_valid, y],
-        "X",
-        color=COLORS["ink"],  # not the dangerous squares' colour: on another map it would sit among them
-        markersize=14,
-        label="roadmap node in collision",
-        path_effects=halo(1.0, ("free",)),  # a white ring: it shows on the dark side of the map too
-        zorder=7,  # over the path (5): the one mark that must not be missed
-    )
+    if edges is not None and len(edges):  # faint, under the nodes: a node in collision visibly has none (r29c)
+        ends = nodes[np.asarray(edges)][..., [x, y]]  # (E, 2, 2)
+        ax.add_collection(LineCollection(ends, colors=COLORS["edge"], linewidths=0.4, alpha=0.5, zorder=2.2))
+    cross = dict(color=COLORS["ink"], markersize=14, label="roadmap node in collision", zorder=7)  # over the path (5)
+    ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], "X", path_effects=halo(1.0, ("free",)), **cross)  # ringed
+    box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
     for node in nodes[~nodes_valid][:3]:  # a few named in words as well
         ax.annotate(
-            "in collision",
-            node[[x, y]],
-            xytext=(12, 12),
-            textcoords="offset points",
-            fontsize=9,
-            zorder=7,
-            bbox=dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6),
+            "in collision", node[[x, y]], xytext=(12, 12), textcoords="offset points", fontsize=9, zorder=7, bbox=box
         )
     ax.plot(
         path[:, x],
@@ -321,11 +324,7 @@ def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):
         interpolation="nearest",
     )
     _draw_boundary(ax, valid, grid)
-    for code in MISTAKE_MARKERS:  # as on a P(valid) map: sparse circles under the outlines, squares over them (r27c:
-        # a circle a block of cells hid the cells' sky blue, the small block and the outlines under a carpet)
-        draw_cell_marks(
-            ax, grid, codes == code, label=ANSWERS[code], zorder=ZORDER[code], pitch=PITCH[code], **_mistake_mark(code)
-        )
+    _draw_mistakes(ax, grid, codes)  # as on a P(valid) map (r27c: a circle a cell hid the sky blue under a carpet)
     return image
 
 
@@ -377,8 +376,8 @@ def _mistake_line(code: int) -> Line2D:
 def _legend(fig: Figure, handles: list, *, above: bool = False) -> None:
     """The boundary, then ``handles`` (``(handle, label)`` pairs), under the figure (``above``: over it, where the
     figure's maps lie one above the other and the first must be read with it)."""
-    boundary = Line2D([], [], color=BOUNDARY, path_effects=halo(1.2))
-    pairs = [(boundary, "true C-obstacle boundary"), *handles]
+    boundary = Patch(facecolor=COLORS["occupied"], edgecolor=BOUNDARY, hatch="//", hatchcolor=HATCH, linewidth=1.5)
+    pairs = [(boundary, "true C-obstacle (outlined, hatched)"), *handles]
     ncols = len(pairs) if fig.get_figwidth() >= 9 else 2
     where = "outside upper center" if above else "outside lower center"
     fig.legend(*zip(*pairs), loc=where, ncols=ncols, fontsize=9, frameon=False)  # type: ignore[call-overload]
