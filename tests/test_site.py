@@ -803,7 +803,7 @@ FOCUS = (0x1F, 0x5F, 0x99)  # docs/site/accessibility.css's focus outline
 FOCUSABLE = {  # a kind of focusable element: a page that has one, and how to find it
     "scrolling code cell": (
         "notebooks/01_workspaces_and_collision.html",
-        ".jupyter-wrapper [role=region][tabindex='0']",
+        ".jupyter-wrapper [role=region][tabindex='0']:visible",  # not one inside a closed fold (an answer's code)
     ),
     "scrolling table": ("docs/accessibility.html", ".md-typeset__scrollwrap[tabindex='0']"),
     "answer disclosure": ("notebooks/01_workspaces_and_collision.html", "details > summary"),
