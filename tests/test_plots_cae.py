@@ -89,7 +89,7 @@ def test_reconstructions_mark_flipped_cells_as_their_own_kind_not_as_missed_or_i
     assert labels == [
         "missed cell (x)",
         "invented cell (o)",
-        "flipped cell, flip ignored (square on orange)",
+        "flipped cell, flip ignored (square on green)",
         "flipped cell, flip copied (square)",
     ]
 
