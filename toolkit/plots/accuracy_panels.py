@@ -99,7 +99,9 @@ def _legend(fig: Figure, spare=None) -> None:
             label="large ringed mark, in the panel's own shape: its mean",
         ),
     ]
-    if spare is not None:
-        spare.legend(handles=handles, loc="center", fontsize=9, frameon=False)
+    if spare is not None:  # wrapped to the slot, and out of the layout: a wide legend there squeezed every column
+        for handle in handles:
+            handle.set_label("\n".join(textwrap.wrap(str(handle.get_label()), 26)))
+        spare.legend(handles=handles, loc="center", fontsize=9, frameon=False).set_in_layout(False)
     else:
         fig.legend(handles=handles, loc="outside lower center", ncols=2, fontsize=9, frameon=False)
