@@ -1011,7 +1011,7 @@ def chapter_02(
         '| 2DS reconstruction accuracy | seen | unseen | "all free" (seen / unseen) |',
         "| --- | --- | --- | --- |",
         "| paper, Table 1 | 100% | 100% | not reported |",
-        f"| reproduction, `paper` preset, {'quick-sized' if quick else '100 epochs'} | 89.2% | 85.9% | 88.6% / 87.6% |",
+        f"| reproduction, CAE-preset, {'quick-sized' if quick else '100 epochs'} | 89.2% | 85.9% | 88.6% / 87.6% |",
     ]
     for n, u in zip(names[1:], unseen[1:]):
         closing.append(f"| this notebook, {n}, 30 grids | 99.6% | {u:.1f}% | 88.6% / 87.6% |")
@@ -1033,12 +1033,12 @@ def chapter_02(
         "loss of Eq. (1) per epoch: first 4.64e+18, last 3.81e+17, highest 1.39e+22; training grids reconstructed: "
         '56.0% of cells right, "all free": 88.6%',
         "MD:" + "\n".join(section_5),
-        "The paper's CAE (λ = 1e-3): " + verdict,
+        "CAE-long (λ = 1e-3): " + verdict,
         "MD:" + "\n".join(closing),
         'MD:| grids | accuracy, lowest – highest | points above "all free", fewest – most | above the diagonal |\n'
         f"| --- | ---: | ---: | ---: |\n| seen | 98.9% – 100.0% | +0.8 – +21.6 | {seen_above} of 30 |\n"
         "| unseen | 80.1% – 94.0% | -5.2 – +1.1 | 3 of 10 |",
-        "MD:**The answer.** Trained on 30 grids, this page's CAE memorizes them: 99.6% of their cells right. On "
+        "MD:**The answer.** Trained on 30 grids, CAE-long memorizes them: 99.6% of their cells right. On "
         f'unseen grids it gets {unseen[1]:.1f}%, where answering "all free" gets 87.6% ({abs(unseen[1] - 87.6):.1f} '
         f"points {'below' if unseen[1] < 87.6 else 'above'}): it rebuilds a new workspace **no better than "
         'answering "all free"**, and the paper\'s unseen column does not reproduce.',

@@ -175,7 +175,11 @@ def gallery() -> dict[str, Figure]:
             {"seen": (np.array([0.7, 0.8]), np.array([0.9, 0.85])), "unseen": (np.array([0.75]), np.array([0.7]))}
         ),
         "accuracy_panels.accuracy_panels": accuracy_panels.accuracy_panels(
-            {"30 grids: unseen": (np.array([0.7, 0.8]), np.array([0.9, 0.85])), "many": (np.array([0.75]), np.ones(1))}
+            {  # three groups, as chapter 02 draws: two a row, the legend in the fourth slot (reader r30b)
+                "30 grids: unseen": (np.array([0.7, 0.8]), np.array([0.9, 0.85])),
+                "many": (np.array([0.75]), np.ones(1)),
+                "many: training": (np.array([0.8]), np.array([0.9])),
+            }
         ),
         "cae.contraction": cae.contraction(
             {"paper": rng.random(5), "strong": rng.random(5) * 2},

@@ -89,7 +89,7 @@ def test_reconstructions_mark_flipped_cells_as_their_own_kind_not_as_missed_or_i
     assert labels == [
         "missed cell (x)",
         "invented cell (o)",
-        "flipped cell, flip ignored (square on orange)",
+        "flipped cell, flip ignored (square on green)",
         "flipped cell, flip copied (square)",
     ]
 
@@ -397,3 +397,19 @@ def test_accuracy_panels_draw_each_group_alone_on_shared_axes():
         np.testing.assert_allclose(diagonal.get_xdata(), diagonal.get_ydata())
         assert f"mean {accuracy.mean():.1%} vs {all_free.mean():.1%}" in ax.get_title()
     assert "b: 500 workspaces" in alt.alt_text(fig)
+
+
+def test_accuracy_panels_of_three_groups_go_two_a_row_the_legend_in_the_spare_slot():
+    """Reader r30b: three panels a row were 150 px wide at the site's width, 500 points one blob. Two a row, the
+    points light enough to show where they crowd, the legend whole in the fourth slot."""
+    from toolkit.plots.accuracy_panels import accuracy_panels
+
+    rng = np.random.default_rng(3)
+    groups = {name: (rng.uniform(0.7, 0.95, 50), rng.uniform(0.7, 1.0, 50)) for name in "abc"}
+    fig = accuracy_panels(groups)
+    drawn, spare = fig.axes[:3], fig.axes[3]
+    assert len(fig.axes) == 4 and not spare.axison and spare.get_legend() is not None and not fig.legends
+    assert drawn[0].get_position().y0 == drawn[1].get_position().y0 > drawn[2].get_position().y0  # two, then one
+    for ax, name in zip(drawn, groups):
+        (points,) = [c for c in ax.collections if c.get_gid() == name]
+        assert points.get_alpha() <= 0.3

@@ -24,11 +24,15 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
     """One panel per group ``{name: (all_free (W,), accuracy (W,))}``: each workspace a point, its reconstruction
     accuracy (y) against its share of free cells (x, the accuracy of answering "all free"), above the dashed
     diagonal when the CAE beats that answer; the group's mean a large mark. The panels share both axes."""
-    # review r29b: two a row left the two unseen clouds one above the other and the legend in a spare slot, half out
-    # of it; one row, the groups side by side in the order given, the legend below them (r26b: narrow panels read
-    # poorly, so the figure is as tall as a panel is wide and its ticks stay few)
-    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / len(groups) + 2.0), layout="constrained")
-    grid = np.atleast_2d(fig.subplots(1, len(groups), sharex=True, sharey=True, squeeze=False))
+    # review r29b: two a row left the legend in a spare slot, half out of it; r30b: three a row left each panel 150 px
+    # wide at the site's width, its 500 points one blob. Two a row, as tall as wide, the legend filling the spare slot
+    # (centred in it, whole); two groups or fewer side by side, the legend below them
+    cols = 2 if len(groups) > 2 else len(groups)
+    rows_of = -(-len(groups) // cols)
+    fig = Figure(figsize=(PAGE_WIDTH, rows_of * PAGE_WIDTH / cols + 0.8), layout="constrained")
+    grid = np.atleast_2d(fig.subplots(rows_of, cols, sharex=True, sharey=True, squeeze=False))
+    for spare in grid.flat[len(groups) :]:
+        spare.set_axis_off()
     axes = grid.flat
     values = [np.asarray(v, dtype=float) for pair in groups.values() for v in pair]
     low = min(float(v.min()) for v in values)
@@ -39,8 +43,8 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
         # review r28b: the diagonal over the points (a dense cloud hid it), under the mean
         ax.plot([low, 1], [low, 1], color=COLORS["reference"], linestyle="--", zorder=4)
         ax.scatter(
-            all_free, accuracy, s=22, marker=style["marker"], c=style["color"], alpha=0.5, lw=0, gid=name
-        )  # r19b
+            all_free, accuracy, s=16, marker=style["marker"], c=style["color"], alpha=0.3, lw=0, gid=name
+        )  # r19b; r30b: light enough that 500 points show where they crowd
         mean = (float(np.mean(all_free)), float(np.mean(accuracy)))
         ax.scatter(
             *mean,
@@ -55,12 +59,13 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
         )
         above = int(np.sum(accuracy > all_free))
         ax.set_title(  # review r28b: the count the text reads, in the title, not only in "Figure described"
-            "\n".join(textwrap.wrap(name, 24))  # a third of the page wide: the counts on lines of their own
-            + f"\nmean {mean[1]:.1%} vs {mean[0]:.1%}\n{above} of {len(accuracy)} above",
+            "\n".join(textwrap.wrap(name, 40))  # half the page wide: the counts on a line of their own
+            + f"\nmean {mean[1]:.1%} vs {mean[0]:.1%}; {above} of {len(accuracy)} above",
             fontsize=9,
         )
         ax.set_xlabel("share of free cells")
-        ax.xaxis.set_major_locator(MaxNLocator(4))  # a third of the page wide: four ticks, never touching
+        ax.xaxis.set_major_locator(MaxNLocator(5))  # half the page wide: five ticks, never touching
+        ax.xaxis.set_tick_params(labelbottom=True)  # every panel's own x axis read, the one over the spare slot too
         ax.tick_params(labelsize=9)
         said.append(
             f"{name}: {len(accuracy)} workspaces, mean accuracy {mean[1]:.1%} against {mean[0]:.1%} for all free, "
@@ -69,14 +74,16 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
         rows.append((name, str(len(accuracy)), f"{mean[1]:.1%}", f"{mean[0]:.1%}", f"{above} of {len(accuracy)}"))
     for ax in grid[:, 0]:
         ax.set_ylabel("reconstruction accuracy")
-    _legend(fig)
+    spare = grid.flat[len(groups) :]
+    _legend(fig, spare[0] if len(spare) else None)
     text = "Reconstruction accuracy against the accuracy of answering all free, one panel per group, one point per "
     columns = ("panel", "workspaces", "mean accuracy", "mean all free", "above the diagonal")
     return describe(fig, text + "workspace. " + "; ".join(said) + ".", [Part("the panels", "", columns, tuple(rows))])
 
 
-def _legend(fig: Figure) -> None:
-    """The diagonal and the mean marker named, under the panels, where it covers nothing."""
+def _legend(fig: Figure, spare=None) -> None:
+    """The diagonal and the mean marker named, in the ``spare`` (empty) axes if given, else under the panels: where it
+    covers nothing."""
     handles = [
         Line2D([], [], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal): above it, better'),
         Line2D(  # drawn as the means are: the group's colour (here a neutral grey), a light ring, a dark edge
@@ -92,4 +99,9 @@ def _legend(fig: Figure) -> None:
             label="large ringed mark, in the panel's own shape: its mean",
         ),
     ]
-    fig.legend(handles=handles, loc="outside lower center", ncols=2, fontsize=9, frameon=False)
+    if spare is not None:  # wrapped to the slot, and out of the layout: a wide legend there squeezed every column
+        for handle in handles:
+            handle.set_label("\n".join(textwrap.wrap(str(handle.get_label()), 26)))
+        spare.legend(handles=handles, loc="center", fontsize=9, frameon=False).set_in_layout(False)
+    else:
+        fig.legend(handles=handles, loc="outside lower center", ncols=2, fontsize=9, frameon=False)

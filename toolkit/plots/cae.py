@@ -224,8 +224,9 @@ def contraction(
     unchanged, one above it changed at least the difference of cells that were not flipped.
     """
     flips = np.asarray(flips)
-    fig = Figure(figsize=(PAGE_WIDTH, 7.0), layout="constrained")  # the page's width: text at its size, 9 pt or more
-    panels = fig.subplot_mosaic([["j", "z"], ["j", "x"]])  # the norms tall on the left, the two responses stacked
+    fig = Figure(figsize=(PAGE_WIDTH, 8.0), layout="constrained")  # the page's width: text at its size, 9 pt or more
+    # the norms tall on the left, the two responses stacked on the right, the wider (review r30b: they were small)
+    panels = fig.subplot_mosaic([["j", "z"], ["j", "x"]], width_ratios=[2, 3])
     ax_j, ax_z, ax_x = panels["j"], panels["z"], panels["x"]
     names = list(jacobian_norms)
     _draw_norms(ax_j, jacobian_norms)
@@ -233,8 +234,8 @@ def contraction(
         ax_z.plot(flips, np.mean(latent_shift[name], axis=1), label=name, **_stacked(k, len(names)))
         ax_x.plot(flips, np.mean(decoded_change[name], axis=1), label=name, **_stacked(k, len(names)))
     ax_x.plot(flips, flips, color=COLORS["reference"], linestyle=":", label="as many as flipped", zorder=1)
-    ax_z.set_ylabel("latent move ||z' - z|| / ||z||")
-    ax_z.set_title("Latent code moves", fontsize=10)
+    ax_z.set_ylabel("||z' - z|| / ||z||")  # review r30b: the long label was cramped; the title says what it is
+    ax_z.set_title("Latent code moves (relative to ||z||)", fontsize=10)
     ax_x.set_title("Reconstruction changes (log scale)", fontsize=10)
     changes = np.concatenate([flips, *(np.mean(decoded_change[name], axis=1) for name in names)])  # the counts drawn
     _counts_axis(ax_x, "y", _count_ticks(changes.min(), changes.max(), end=flips[-1]))  # 1 reads as 30 does
@@ -293,7 +294,7 @@ def _counts_axis(ax, which: str, ticks) -> None:
 NORM_MARKS: dict[str, dict[str, Any]] = {  # a box plot's marks, each named in the panel's legend
     "median": dict(color=COLORS["ink"], linewidth=2),
     "mean": dict(marker="^", color=COLORS["ink"], markerfacecolor=COLORS["free"], markeredgecolor=COLORS["ink"]),
-    "outlier (beyond\n1.5 box heights)": dict(
+    "outlier (beyond\n1.5 × IQR)": dict(
         marker="o", markerfacecolor="none", markeredgecolor=COLORS["ink"], markersize=3
     ),
 }
@@ -301,7 +302,8 @@ NORM_MARKS: dict[str, dict[str, Any]] = {  # a box plot's marks, each named in t
 
 def _draw_norms(ax, jacobian_norms: dict[str, np.ndarray]) -> None:
     """A box per model of its encoder's Jacobian norms over the workspaces (the middle half of them, whiskers to the
-    farthest within 1.5 box heights), the median a thick line, the mean a triangle: a legend names each mark."""
+    farthest within 1.5 interquartile ranges, IQR), the median a thick line, the mean a triangle: a legend names
+    each mark."""
     names = list(jacobian_norms)
     ink = dict(color=COLORS["ink"])
     median, mean, outlier = NORM_MARKS.values()

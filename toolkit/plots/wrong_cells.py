@@ -4,7 +4,7 @@ A decoded cell is wrong where its sign differs from the input's. Each wrong cell
 a mark in ink, so that the kind shows without colour: ``x`` a *missed* cell (input occupied, decoded free), ``o`` an
 *invented* one (input free, decoded occupied). When the input is a grid with a few cells flipped (section 6 of
 notebook 02), a wrong flipped cell is not a missed or invented cell: the decoder drew it as in the clean grid, it
-*ignored* the flip. Flipped cells then get a kind of their own, a hollow square, on an orange cell where the flip was
+*ignored* the flip. Flipped cells then get a kind of their own, a hollow square, on a green cell where the flip was
 ignored; the other wrong cells keep ``x`` and ``o``. A figure's title and its description, region by region
 (:func:`grid_part`), count them in the same words (:func:`wrong_in_words`).
 """
@@ -19,15 +19,17 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from toolkit.plots.alt import Part, map_part
-from toolkit.plots.palette import COLORS
+from toolkit.plots.palette import COLORS, OKABE_ITO
 
+# review r30b: palette's "ignored" orange read as the missed cells' vermillion; green is a hue apart from both
+IGNORED = OKABE_ITO["bluish green"]
 ERROR_COLORS = ListedColormap([COLORS["phantom"], COLORS["missed"]])  # -1: invented cell; +1: missed cell
 ERROR_MARKERS = {"missed": "x", "phantom": "o", "ignored": "s", "copied": "s"}  # a second cue, in ink
 ERROR_INK: dict[str, Any] = dict(fillstyle="none", mew=1.2)  # a ring, not a dot (in the legend too): a visible stroke
 LABELS = {
     "missed": "missed cell (x)",
     "phantom": "invented cell (o)",
-    "ignored": "flipped cell, flip ignored (square on orange)",
+    "ignored": "flipped cell, flip ignored (square on green)",
     "copied": "flipped cell, flip copied (square)",
 }
 
@@ -62,12 +64,12 @@ def wrong_in_words(kinds: dict[str, np.ndarray], where: tuple[slice, slice] = (s
 
 def draw_wrong_cells(ax, grid: np.ndarray, kinds: dict[str, np.ndarray], cell: float) -> None:
     """The wrong cells of ``kinds`` (:func:`wrong_kinds`) over a faded input already on ``ax``: missed and invented
-    cells in their colours, ignored flips orange, each with its mark in ink ``cell`` points wide."""
+    cells in their colours, ignored flips green, each with its mark in ink ``cell`` points wide."""
     others = kinds["missed"] | kinds["phantom"]
     ax.imshow(np.ma.masked_array(grid, ~others).T, origin="lower", cmap=ERROR_COLORS, vmin=-1, vmax=1)
     if "ignored" in kinds:
         ignored = np.ma.masked_array(np.ones_like(grid), ~kinds["ignored"])
-        ax.imshow(ignored.T, origin="lower", cmap=ListedColormap([COLORS["ignored"]]), vmin=0, vmax=1)
+        ax.imshow(ignored.T, origin="lower", cmap=ListedColormap([IGNORED]), vmin=0, vmax=1)
     for kind, mask in kinds.items():
         x, y = np.nonzero(mask)
         size = (0.9 if ERROR_MARKERS[kind] == "s" else 0.7) * cell  # a square round its cell, x and o inside one
@@ -79,7 +81,7 @@ def legend_handles(kinds: list[str]) -> tuple[list[Any], list[str]]:
     handles: list[Any] = []
     for kind in kinds:
         mark = Line2D([], [], marker=ERROR_MARKERS[kind], color=COLORS["ink"], linestyle="", markersize=7, **ERROR_INK)
-        face = {"missed": COLORS["missed"], "phantom": COLORS["phantom"], "ignored": COLORS["ignored"]}.get(kind)
+        face = {"missed": COLORS["missed"], "phantom": COLORS["phantom"], "ignored": IGNORED}.get(kind)
         handles.append((Patch(facecolor=face), mark) if face else mark)
     return handles, [LABELS[kind] for kind in kinds]
 
