@@ -71,7 +71,8 @@ COLORS: dict[str, str] = {
     # the CAE's reconstruction errors (§IV-B)
     "phantom": OKABE_ITO["blue"],  # free cell decoded occupied
     "missed": OKABE_ITO["vermillion"],  # occupied cell decoded free
-    "ignored": OKABE_ITO["orange"],  # a flipped cell decoded as before its flip: the flip ignored
+    "ignored": OKABE_ITO["bluish green"],  # a flipped cell decoded as before its flip (review r30b: orange read as
+    # the missed cells' vermillion; green is a hue apart from both)
     # lines and shades
     "probability": OKABE_ITO["blue"],  # P(valid) along a path
     "exact": OKABE_ITO["blue"],  # the exact checker's cost (crossover)

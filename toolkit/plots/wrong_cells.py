@@ -19,10 +19,8 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from toolkit.plots.alt import Part, map_part
-from toolkit.plots.palette import COLORS, OKABE_ITO
+from toolkit.plots.palette import COLORS
 
-# review r30b: palette's "ignored" orange read as the missed cells' vermillion; green is a hue apart from both
-IGNORED = OKABE_ITO["bluish green"]
 ERROR_COLORS = ListedColormap([COLORS["phantom"], COLORS["missed"]])  # -1: invented cell; +1: missed cell
 ERROR_MARKERS = {"missed": "x", "phantom": "o", "ignored": "s", "copied": "s"}  # a second cue, in ink
 ERROR_INK: dict[str, Any] = dict(fillstyle="none", mew=1.2)  # a ring, not a dot (in the legend too): a visible stroke
@@ -69,7 +67,7 @@ def draw_wrong_cells(ax, grid: np.ndarray, kinds: dict[str, np.ndarray], cell: f
     ax.imshow(np.ma.masked_array(grid, ~others).T, origin="lower", cmap=ERROR_COLORS, vmin=-1, vmax=1)
     if "ignored" in kinds:
         ignored = np.ma.masked_array(np.ones_like(grid), ~kinds["ignored"])
-        ax.imshow(ignored.T, origin="lower", cmap=ListedColormap([IGNORED]), vmin=0, vmax=1)
+        ax.imshow(ignored.T, origin="lower", cmap=ListedColormap([COLORS["ignored"]]), vmin=0, vmax=1)
     for kind, mask in kinds.items():
         x, y = np.nonzero(mask)
         size = (0.9 if ERROR_MARKERS[kind] == "s" else 0.7) * cell  # a square round its cell, x and o inside one
@@ -81,7 +79,7 @@ def legend_handles(kinds: list[str]) -> tuple[list[Any], list[str]]:
     handles: list[Any] = []
     for kind in kinds:
         mark = Line2D([], [], marker=ERROR_MARKERS[kind], color=COLORS["ink"], linestyle="", markersize=7, **ERROR_INK)
-        face = {"missed": COLORS["missed"], "phantom": COLORS["phantom"], "ignored": IGNORED}.get(kind)
+        face = {"missed": COLORS["missed"], "phantom": COLORS["phantom"], "ignored": COLORS["ignored"]}.get(kind)
         handles.append((Patch(facecolor=face), mark) if face else mark)
     return handles, [LABELS[kind] for kind in kinds]
 
