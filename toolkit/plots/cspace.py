@@ -336,21 +336,13 @@ def cspace_slice(
         fontsize=9,
     )
     if view:
-        robot_ax = fig.add_subplot(grid[0, 1], **({"projection": "3d"} if view == "3d" else {}))
-        colors, workspace = link_colors(1, q_valid), checker_workspace(checker)
-        draw_robot(robot_ax, robot, q[None], colors=colors, view=view, workspace=workspace, margin=margin)
-        base = robot.link_frames(q[None])[0][0, 0, : robot.dim]  # (D,) the base's position: a black dot (r30a)
-        robot_ax.plot(*([c] for c in (base if view == "3d" else base[list(VIEWS[view])])), gid="base", **BASE_MARK)
-        verdict = "valid" if q_valid[0] else "in collision"
-        robot_ax.set_title(f"the robot at the star ({view}):\n{verdict}; black dot: its base", fontsize=9)
-        if view == "3d":
-            few_ticks(robot_ax)
+        _robot_panel(fig, grid[0, 1], checker, q, q_valid, view, margin)
     fig.tight_layout()
     swept = " and ".join(robot.dof_names[k] for k in joints)
     text = f"Slice of the {robot.name} robot's configuration space over {swept}, the other DoF fixed: "
     text += f"{1 - valid.mean():.0%} in collision (dark). A star marks the fixed configuration, which is "
     text += ("valid." if q_valid[0] else "in collision.") + (
-        " Beside it, the robot there, its base a black dot." if view else ""
+        " Beside it, the robot there, its base a dot." * bool(view)
     )
     star_at = Part(
         "the star's configuration",
@@ -359,3 +351,18 @@ def cspace_slice(
         tuple((name, f"{q[k]:.3g}", "yes" if k in joints else "no") for k, name in enumerate(robot.dof_names)),
     )
     return describe(fig, text, [_collision_part("slice", ax, valid), star_at])
+
+
+def _robot_panel(fig: Figure, cell, checker: CollisionChecker, q: np.ndarray, q_valid: np.ndarray, view: str, margin):
+    """The robot at ``q (dof,)`` among the nearby blocks in ``fig``'s grid ``cell``, its base a black dot, its
+    verdict titled."""
+    robot_ax = fig.add_subplot(cell, **({"projection": "3d"} if view == "3d" else {}))
+    robot = checker.robot
+    colors, workspace = link_colors(1, q_valid), checker_workspace(checker)
+    draw_robot(robot_ax, robot, q[None], colors=colors, view=view, workspace=workspace, margin=margin)
+    base = robot.link_frames(q[None])[0][0, 0, : robot.dim]  # (D,) the base's position: a black dot (r30a)
+    robot_ax.plot(*([c] for c in (base if view == "3d" else base[list(VIEWS[view])])), gid="base", **BASE_MARK)
+    verdict = "valid" if q_valid[0] else "in collision"
+    robot_ax.set_title(f"the robot at the star ({view}):\n{verdict}; black dot: its base", fontsize=9)
+    if view == "3d":
+        few_ticks(robot_ax)
