@@ -1368,8 +1368,8 @@ def chapter_01(
     the fastest's in 2D, in one table as the chapter prints it (in 2D ``rates_2d``, compiled and point-robot checks
     a second: review r10b's full-size site; in 3D the compiled checker at 1,000 times the ratio), and the line under
     it, its parts as the rates give them unless ``said`` names one (``about``, ``low``, ``high``, ``in_2d``,
-    ``fastest``), and the closing table of speeds, its first column section 3's default checker's rate unless
-    ``closing`` gives a scenario's."""
+    ``fastest``), and the closing table, its last column the free share, 80% unless ``closing`` gives a
+    scenario's."""
     rows = [
         "| scenario | FCL<br>checks / s | compiled<br>checks / s | point robot<br>checks / s "
         "| FCL's time /<br>compiled's |",
@@ -1397,13 +1397,13 @@ def chapter_01(
         "check's, the fastest there."
     )
     closed = [
-        "| scenario | free | checks / s: section 3,<br>in turns with FCL | section 3's workspace,<br>alone "
-        "| first 5 workspaces,<br>alone (median) |",
-        "| --- | ---: | ---: | ---: | ---: |",
+        "| scenario | blocks: **ours** / paper | occupied | robot size at q = 0: **ours** / paper | free |",
+        "| --- | --- | --- | --- | ---: |",
     ]
-    for name, ratio in ratios.items():
-        rate = rates_2d[1] if name == "2ds" else 1_000 * ratio  # the point robot's in 2D, the compiled checker's
-        closed.append(f"| {name} | 80% | {(closing or {}).get(name, f'{rate:,.0f}')} | 1 | 1 |")
+    for name in ratios:
+        closed.append(
+            f"| {name} | **3–5** / 3–5 | 10% | **0.5×0.5** / 0.5 × 0.5 | {(closing or {}).get(name, '80%')} |"
+        )
     return executed("MD:" + "\n".join(rows) + "\n\n" + line + "\n\n" + "\n".join(closed))
 
 
@@ -1441,9 +1441,9 @@ def test_chapter_01_fails_words_its_ratios_do_not_give():
     assert problems(CH01, chapter_01({"3do": 22})) == [
         "01: section 3's table of checker speeds lacks a scenario: ['3do']"
     ]
-    assert problems(CH01, chapter_01(MEASURED_01, closing={"3do": "60,000"})) == [
-        "01: 3do: the closing table gives 60,000 as section 3's rate, not its own"
-    ]  # review r27a: the closing table's speeds disagreed with section 3's, unexplained
+    assert problems(CH01, chapter_01(MEASURED_01, closing={"3do": "40%"})) == [
+        "01: 3do: 40% of uniform configurations free, not most"
+    ]  # the prose: "Uniform samples are mostly valid (the **free** column)"
 
 
 def test_chapter_01_holds_each_ratio_to_its_rows_rates_and_the_page_width():

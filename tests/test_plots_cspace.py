@@ -429,12 +429,14 @@ def test_verdict_figure_titles_each_panel_with_the_checkers_verdict_and_marks_wh
     assert abs(hit[moved[0]] - q[moved[0]]) / 0.05 == pytest.approx(round(abs(hit[moved[0]] - q[moved[0]]) / 0.05))
     fig = robot_drawing.verdict_figure(checker, np.stack([q, hit]))
     left, right = fig.axes
-    assert left.get_title() == "valid" and right.get_title().startswith("in collision: link ")  # FCL proves no gap
+    assert left.get_title() == "valid" and right.get_title().startswith("in collision:\nlink ")  # FCL proves no gap
     assert left.get_xlim() == right.get_xlim() and left.get_ylim() == right.get_ylim()  # review r27a: one window
     assert not _patches(left, "touching link") and not _patches(left, "touched block")
     pairs = robot_drawing.touching(robot, clutter, hit)
     assert len(_patches(right, "touching link")) == len(_patches(right, "touched block")) == len(pairs) > 0
-    assert f"block {pairs[0][1] + 1}" in right.get_title() and "configuration 2, in collision" in alt_text(fig)
+    link, block = pairs[0]  # numbered as the arrays are (review r30a)
+    assert f"link {link} touches block {block}" in right.get_title()
+    assert "configuration 2, in collision" in alt_text(fig)
 
 
 def test_a_valid_panel_says_the_gap_its_checker_proves(square_world):
@@ -444,7 +446,7 @@ def test_a_valid_panel_says_the_gap_its_checker_proves(square_world):
     gap = exact.clearances(Q[:1], cap=1.0)[0]
     left, right = robot_drawing.verdict_figure(exact, Q).axes
     assert gap > 0 and left.get_title() == f"valid: at least {gap:.2g} clear\nof every block and wall"
-    assert right.get_title().startswith("in collision")
+    assert right.get_title() == "in collision:\nsquare touches block 0"  # the point robot's one link, by name
 
 
 def test_a_slice_over_positions_shows_a_pixel_beyond_the_bounds_dark(square_world):

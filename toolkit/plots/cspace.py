@@ -37,7 +37,15 @@ from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe, map_part
 from toolkit.plots.boxes import aabb_corners, add_box_3d
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
-from toolkit.plots.robot_drawing import POSITION_NAMES, dof_label, draw_robot, few_ticks, link_colors
+from toolkit.plots.robot_drawing import (
+    BASE_MARK,
+    POSITION_NAMES,
+    VIEWS,
+    dof_label,
+    draw_robot,
+    few_ticks,
+    link_colors,
+)
 from toolkit.plots.slices import joint_bounds, slice_configs
 
 COLLISION_CMAP = ListedColormap([COLORS["free"], COLORS["occupied"]])  # 0: valid, 1: in collision (dark)
@@ -300,7 +308,7 @@ def cspace_slice(
 
     Left: dark where ``checker`` reports a collision, with a star at ``q`` itself. Right
     (unless ``view`` is None): the robot at ``q`` among the nearby blocks, in the valid colour if ``q``
-    is valid, in the invalid colour and hatched if not, the title saying which
+    is valid, in the invalid colour and hatched if not, its base a black dot, the title saying which
     (see :func:`toolkit.plots.robot_drawing.robot_figure`).
     """
     robot = checker.robot
@@ -328,18 +336,14 @@ def cspace_slice(
         fontsize=9,
     )
     if view:
-        robot_ax = fig.add_subplot(grid[0, 1], **({"projection": "3d"} if view == "3d" else {}))
-        colors, workspace = link_colors(1, q_valid), checker_workspace(checker)
-        draw_robot(robot_ax, robot, q[None], colors=colors, view=view, workspace=workspace, margin=margin)
-        verdict = "valid" if q_valid[0] else "in collision"
-        robot_ax.set_title(f"the robot at the star ({view}):\n{verdict}", fontsize=9)
-        if view == "3d":
-            few_ticks(robot_ax)
+        _robot_panel(fig, grid[0, 1], checker, q, q_valid, view, margin)
     fig.tight_layout()
     swept = " and ".join(robot.dof_names[k] for k in joints)
     text = f"Slice of the {robot.name} robot's configuration space over {swept}, the other DoF fixed: "
     text += f"{1 - valid.mean():.0%} in collision (dark). A star marks the fixed configuration, which is "
-    text += ("valid." if q_valid[0] else "in collision.") + (" Beside it, the robot there." if view else "")
+    text += ("valid." if q_valid[0] else "in collision.") + (
+        " Beside it, the robot there, its base a dot." * bool(view)
+    )
     star_at = Part(
         "the star's configuration",
         "valid" if q_valid[0] else "in collision",
@@ -347,3 +351,18 @@ def cspace_slice(
         tuple((name, f"{q[k]:.3g}", "yes" if k in joints else "no") for k, name in enumerate(robot.dof_names)),
     )
     return describe(fig, text, [_collision_part("slice", ax, valid), star_at])
+
+
+def _robot_panel(fig: Figure, cell, checker: CollisionChecker, q: np.ndarray, q_valid: np.ndarray, view: str, margin):
+    """The robot at ``q (dof,)`` among the nearby blocks in ``fig``'s grid ``cell``, its base a black dot, its
+    verdict titled."""
+    robot_ax = fig.add_subplot(cell, **({"projection": "3d"} if view == "3d" else {}))
+    robot = checker.robot
+    colors, workspace = link_colors(1, q_valid), checker_workspace(checker)
+    draw_robot(robot_ax, robot, q[None], colors=colors, view=view, workspace=workspace, margin=margin)
+    base = robot.link_frames(q[None])[0][0, 0, : robot.dim]  # (D,) the base's position: a black dot (r30a)
+    robot_ax.plot(*([c] for c in (base if view == "3d" else base[list(VIEWS[view])])), gid="base", **BASE_MARK)
+    verdict = "valid" if q_valid[0] else "in collision"
+    robot_ax.set_title(f"the robot at the star ({view}):\n{verdict}; black dot: its base", fontsize=9)
+    if view == "3d":
+        few_ticks(robot_ax)

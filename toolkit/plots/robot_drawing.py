@@ -1,13 +1,10 @@
 """Drawing a robot: its link boxes at configurations, among the blocks near it (paper §IV-A; notebooks 01, 05).
 
-Forward kinematics (``robot.link_boxes``) places each link box of a configuration; these functions draw them:
-
-- :func:`draw_robot` draws the link boxes of configurations, and the blocks near them, on an axes of your own, in
-  3D or projected onto a coordinate plane (the building block of :func:`robot_figure`,
-  :func:`toolkit.plots.cspace.cspace_slice` and :mod:`toolkit.plots.scenes`);
-- :func:`robot_figure` draws them in one panel per view, a legend naming the configurations;
-- :func:`verdict_figure` draws configurations side by side with a checker's verdict on each, and marks the link
-  boxes and blocks that touch (:func:`touching`).
+Forward kinematics (``robot.link_boxes``) places each link box; :func:`draw_robot` draws them, and the blocks near
+them, on an axes of your own, in 3D or projected onto a plane (the building block of :func:`robot_figure`, one panel
+per view with a legend naming the configurations, of :func:`toolkit.plots.cspace.cspace_slice` and
+:mod:`toolkit.plots.scenes`); :func:`verdict_figure` draws configurations side by side with a checker's verdict on
+each, and marks the link boxes and blocks that touch (:func:`touching`).
 
 A configuration is drawn in the valid colour or, hatched, the invalid one (:func:`link_style`: colour is never the
 only cue), else in a colour and hatch of its own. Each box is drawn from its corners (:mod:`toolkit.plots.boxes`).
@@ -32,6 +29,7 @@ from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
 
 VALID_COLOR, INVALID_COLOR = COLORS["valid"], COLORS["invalid"]
 BLOCK_STYLE: dict[str, Any] = dict(facecolor=COLORS["block"], edgecolor=COLORS["occupied"], gid="block")
+PARTS = {"youbot": ("platform", "turret", "upper arm", "forearm", "wrist", "gripper"), "point2d": ("square",)}
 
 
 def link_style(color: str, hatch: str | None = None) -> dict:
@@ -62,8 +60,7 @@ def few_ticks(ax) -> None:
 
 def _nearby_blocks(workspace: Workspace, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
     """Indices of the blocks that meet the axis-aligned window ``[lo, hi]`` (D,)."""
-    boxes = workspace.boxes
-    return np.flatnonzero(np.all((boxes[:, 0] <= hi) & (boxes[:, 1] >= lo), axis=1))
+    return np.flatnonzero(np.all((workspace.boxes[:, 0] <= hi) & (workspace.boxes[:, 1] >= lo), axis=1))
 
 
 def draw_robot(
@@ -336,8 +333,8 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
     the checker's verdict in each title. Every panel frames the same window (all of ``Q`` within ``margin``,
     review r27a: a move hidden by shifted axes), so a block reaching past it is drawn clipped. In a configuration
     in collision, each link box that touches a block and that block are outlined thick (the block dashed) and named
-    in the title: "link 1 touches block 12 (desk)"; a valid one's title gives its clearance where the checker proves
-    one ("valid: at least 0.007 clear of every block and wall")."""
+    in the title, numbered as the arrays are: "platform touches block 11 (desk)" (review r30a); a valid one's title
+    gives its clearance where the checker proves one ("valid: at least 0.15 clear of every block and wall")."""
     robot, workspace = checker.robot, getattr(checker, "workspace", None)
     if not isinstance(workspace, Workspace):
         raise TypeError(f"this figure draws the checker's workspace, and a {type(checker).__name__} knows none")
@@ -358,15 +355,13 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
         ax.set(xlim=(lo[at[0]], hi[at[0]]), ylim=(lo[at[1]], hi[at[1]]))
         pairs = [] if ok else touching(robot, workspace, q)
         _outline_touching(ax, robot, workspace, q, pairs, plane)
-        named = [f"link {link + 1} touches block {block + 1}{_kind(workspace, block)}" for link, block in pairs]
-        verdict = _valid_title(checker, q) if ok else "in collision: " + ("; ".join(named) or "leaves the region")
-        said.append(verdict)
-        ax.set_title(verdict, fontsize=10, wrap=True)
+        named = [f"{_part(robot, link)} touches block {block}{_kind(workspace, block)}" for link, block in pairs]
+        verdict = _valid_title(checker, q) if ok else "in collision:\n" + ("; ".join(named) or "leaves the region")
+        said.append(verdict.replace("\n", " "))
+        ax.set_title(verdict, fontsize=10 if len(Q) < 3 else 9, wrap=True)
         ax.tick_params(labelsize=8)
     fig.tight_layout()
-    marked = (
-        " Each link that touches a block is outlined thick, and the block it touches dashed." if not all(valid) else ""
-    )
+    marked = " Each link that touches a block is outlined thick, and the block it touches dashed." * (not all(valid))
     text = f"The {robot.name} robot at {len(Q)} configurations side by side, seen in the {view} plane with the blocks "
     text += "near it, each panel framing the same window, each titled with the exact checker's verdict: " + "; ".join(
         f"configuration {i + 1}, {v}" for i, v in enumerate(said)
@@ -398,3 +393,8 @@ def _outline_touching(ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray, 
 def _kind(workspace: Workspace, block: int) -> str:
     """A block's kind in brackets where the workspace names kinds (the office's furniture), else nothing."""
     return f" ({workspace.labels[block]})" if workspace.labels else ""
+
+
+def _part(robot: BoxRobot, link: int) -> str:
+    """A link in a title: the youBot's and the point robot's by name, a chain's numbered from 0 as ``link_boxes``."""
+    return PARTS[robot.name][link] if robot.name in PARTS else f"link {link}"
