@@ -278,7 +278,7 @@ def throughputs(rates: dict[str, dict[str, float]]) -> Figure:
     ax.set_xlim(-0.5, len(rates) - 0.5 + 0.15)  # room for the last point's rate inside the frame (review r25a)
     ax.tick_params(labelsize=9)
     ax.set_xlabel("scenario")
-    ax.set_ylabel("configurations checked per second")
+    ax.set_ylabel("configurations checked\nper second", fontsize=9)  # whole at the page's width (review r30d)
     ax.set_title("Collision checking in batches: each checker's rate (log scale)", fontsize=10)
     fig.legend(loc="outside lower center", ncol=len(checkers), fontsize=9, frameon=False)
     said = "; ".join(f"{s}: " + ", ".join(f"{c} {_per_second(r[c])}" for c in checkers) for s, r in rates.items())
