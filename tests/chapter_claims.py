@@ -549,7 +549,7 @@ def figures_shown(nb, calls: tuple[str, ...], chapter: str) -> list[str]:
 
 DEAR_SAID = (  # section 6's written reading of the cells where prediction cost the most (review r25a: never explained)
     "Sampling took longer with prediction in each of these cells",
-    "the time after sampling, work the network never does, grew too",
+    "the time after sampling grew too",  # review r30d: it holds the encoding, which is the network's work
 )
 
 
