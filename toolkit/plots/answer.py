@@ -62,7 +62,8 @@ def answer_ratios(
     log_ticks(ax)
     ax.set_ylabel("total time with / without\n(log scale; below 1: saves)")
     ax.set_xlabel("sampler, grouped by scenario", labelpad=24)  # under the scenarios' names
-    handles, labels = ax.get_legend_handles_labels()
+    handles: list = ax.get_legend_handles_labels()[0]
+    labels = ax.get_legend_handles_labels()[1]
     if ring_handles:  # one entry, a ring in each ringed series' colour (review r30d: the orange ring was not shown)
         handles, labels = [*handles, tuple(ring_handles)], [*labels, MEAN_WORDS]
     fig.legend(  # over the panel: long names, a row each
