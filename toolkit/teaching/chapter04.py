@@ -3,6 +3,7 @@
 
 - :func:`success_table`: section 3's success, valid paths, rounds and repairs per query, and the queries that found no
   path;
+- :func:`repairs_table`: section 2's repairs per query and sampler, with prediction;
 - :func:`audited_table`: section 3's returned paths that a fresh exact checker accepts at 10x finer resolution;
 - :func:`eager_tables`: section 5's stage times and counts of Algorithm 1 with and without the network, medians over
   the queries;
@@ -63,6 +64,23 @@ def success_table(tables: Mapping[str, Mapping[str, Mapping[str, Mapping]]]) -> 
             ]
     said = "; ".join(failed) if failed else "none, in either mode"
     return "\n".join(rows) + f"\n\nQueries that found no path, in this run: {said}."
+
+
+def repairs_table(repairs: Mapping[tuple[int, str], int]) -> str:
+    """Section 2's repairs with prediction, ``{(query, sampler): repairs}``, as a Markdown table (a row a query, a
+    column a sampler) under its title, and a line: how many runs needed none, and the samplers with the most and the
+    fewest in all (review r30d: the table's code was on the page)."""
+    queries = sorted({i for i, _ in repairs})
+    rows = ["| query | " + " | ".join(PAPER_SAMPLERS) + " |", "| --- |" + " --- |" * len(PAPER_SAMPLERS)]
+    rows += [f"| {i} | " + " | ".join(str(repairs[i, s]) for s in PAPER_SAMPLERS) + " |" for i in queries]
+    total = {s: sum(repairs[i, s] for i in queries) for s in PAPER_SAMPLERS}
+    most, fewest = max(total.values()), min(total.values())
+    named = {n: ", ".join(s for s, m in total.items() if m == n) for n in (most, fewest)}
+    return (
+        "Repairs per query and sampler, with prediction:\n\n" + "\n".join(rows) + f"\n\n"
+        f"{sum(n == 0 for n in repairs.values())} of {len(repairs)} runs needed no repair; the most repairs in all: "
+        f"{named[most]} ({most}), the fewest: {named[fewest]} ({fewest})."
+    )
 
 
 def audited_table(audited: Mapping[str, Mapping[str, str]]) -> str:
