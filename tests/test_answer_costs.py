@@ -91,3 +91,20 @@ def test_chapter04_tables_name_every_sampler_and_each_failure():
     assert "| total | 5.0 |" in stages and "| without | 10 | 20 | 0 | 2,000 |" in checks
     assert "encoding the workspace for the network. Each row" in stages  # no encoding time: none said
     assert chapter04.per_point(records) == {"without": 2e-6}
+
+
+def test_repairs_table_gives_a_row_a_query_and_counts_the_runs_without_repairs():
+    """Review r30d: section 2's repairs table built in chapter04, not on the page."""
+    repairs = {
+        (0, "BS"): 0,
+        (0, "OB"): 3,
+        (0, "G"): 0,
+        (0, "BT"): 1,
+        (1, "BS"): 0,
+        (1, "OB"): 2,
+        (1, "G"): 0,
+        (1, "BT"): 0,
+    }
+    said = chapter04.repairs_table(repairs)
+    assert "| 0 | 0 | 3 | 0 | 1 |\n| 1 | 0 | 2 | 0 | 0 |" in said
+    assert said.endswith("5 of 8 runs needed no repair; the most repairs in all: OB (5), the fewest: BS, G (0).")

@@ -12,6 +12,8 @@ from __future__ import annotations
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.legend_handler import HandlerTuple
+from matplotlib.lines import Line2D
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import Part, describe
@@ -19,9 +21,9 @@ from toolkit.plots.palette import COLORS, PAGE_WIDTH, series_style
 from toolkit.plots.timings import band_words, log_ticks
 
 MARKERS = ("s", "o", "^")  # a series' marker, beside its colour
-SPREAD = 0.25  # a series' offset from its sampler's tick: a sampler's three series side by side, nearer each other
+SPREAD = 0.28  # a series' offset from its sampler's tick: a sampler's three series side by side, nearer each other
 # than a neighbour's (review r29d: at 0.32 a triangle sat nearer the next sampler's square), a faint line between
-MEAN_WORDS = "ring: our ratio of mean times (Table 3's statistic)"  # the legend's entry for ``means``
+MEAN_WORDS = "rings, each in its series' colour: our ratios of mean times (Table 3's statistic)"  # for ``means``
 
 
 def answer_ratios(
@@ -40,7 +42,7 @@ def answer_ratios(
     scenarios = list(dict.fromkeys(label.split(", ", 1)[0] for label in rows))
     series = list(dict.fromkeys(label.split(", ", 1)[1] for label in rows))
     names = names or {}
-    fig = Figure(figsize=(PAGE_WIDTH, 4.6), layout="constrained")
+    fig = Figure(figsize=(PAGE_WIDTH, 5.5), layout="constrained")  # review r30d: 20 % taller, the groups apart
     ax = fig.subplots()
     ax.axhspan(
         1 - tie,
@@ -53,13 +55,26 @@ def answer_ratios(
     )
     ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
     drawn, parts = _series(ax, rows, scenarios, series, names, spans or {})
-    drawn += _rings(ax, means or {}, scenarios, series)
+    rings, ring_handles = _rings(ax, means or {}, scenarios, series)
+    drawn += rings
     _groups(ax, scenarios)
     ax.set_ylim(min(*drawn, 1 - tie) / 1.25, max(*drawn, 1 + tie) * 1.25)
     log_ticks(ax)
     ax.set_ylabel("total time with / without\n(log scale; below 1: saves)")
     ax.set_xlabel("sampler, grouped by scenario", labelpad=24)  # under the scenarios' names
-    fig.legend(loc="outside upper center", ncol=1, fontsize=9, frameon=False)  # over the panel: long names, a row each
+    handles: list = ax.get_legend_handles_labels()[0]
+    labels = ax.get_legend_handles_labels()[1]
+    if ring_handles:  # one entry, a ring in each ringed series' colour (review r30d: the orange ring was not shown)
+        handles, labels = [*handles, tuple(ring_handles)], [*labels, MEAN_WORDS]
+    fig.legend(  # over the panel: long names, a row each
+        handles,
+        labels,
+        loc="outside upper center",
+        ncol=1,
+        fontsize=9,
+        frameon=False,
+        handler_map={tuple: HandlerTuple(ndivide=None, pad=0.6)},
+    )
     points = [v for row in rows.values() for v in row.values()]
     below = int(np.sum(np.array(points) <= 1 - tie))
     text = (
@@ -84,12 +99,13 @@ def _groups(ax, scenarios: list[str]) -> None:
     ticks = [i * width + j for i in range(len(scenarios)) for j in range(len(PAPER_SAMPLERS))]
     ax.set_xticks(ticks, list(PAPER_SAMPLERS) * len(scenarios), fontsize=9)
     ax.set_xlim(-0.7, len(scenarios) * width - 1.3)
-    for i, scenario in enumerate(scenarios):  # each group's name under its samplers' names
-        ax.text(
-            i * width + 1.5,
-            -0.13,
+    for i, scenario in enumerate(scenarios):  # each group's name under its samplers' names, a fixed distance below
+        ax.annotate(
             scenario,
-            transform=ax.get_xaxis_transform(),
+            (i * width + 1.5, 0),
+            xycoords=ax.get_xaxis_transform(),
+            xytext=(0, -17),
+            textcoords="offset points",
             ha="center",
             va="top",
             fontsize=10,
@@ -135,9 +151,9 @@ def _series(ax, rows, scenarios: list[str], series: list[str], names: dict[str, 
     return drawn, parts
 
 
-def _rings(ax, means: dict[str, dict[str, float]], scenarios: list[str], series: list[str]) -> list[float]:
+def _rings(ax, means: dict[str, dict[str, float]], scenarios: list[str], series: list[str]) -> tuple[list, list]:
     """A ring (a hollow marker, larger than the filled one) at each ratio of ``means``, at the x of the filled point
-    of the same label and sampler; one legend entry for them all. Returns the values drawn."""
+    of the same label and sampler. Returns the values drawn, and a ring per colour drawn for the legend's one entry."""
     width = len(PAPER_SAMPLERS) + 1
     x, y, colors = [], [], []
     for k, name in enumerate(series):
@@ -150,8 +166,11 @@ def _rings(ax, means: dict[str, dict[str, float]], scenarios: list[str], series:
                     colors.append(series_style(k)["color"])
     if x:
         ax.scatter(x, y, s=70, facecolors="none", edgecolors=colors, linewidths=1.1, zorder=4)
-        ax.scatter([], [], s=70, facecolors="none", edgecolors=COLORS["ink"], linewidths=1.1, label=MEAN_WORDS)
-    return y
+    handles = [
+        Line2D([], [], linestyle="none", marker="o", markersize=8, markerfacecolor="none", markeredgecolor=c)
+        for c in dict.fromkeys(colors)
+    ]
+    return y, handles
 
 
 def _cell(ratio: float | None, whisker: tuple[float, float] | None) -> str:

@@ -60,7 +60,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=9)
         ax.set_xlabel("sampler, without / with prediction")
         ax.set_ylabel("ms per query (median)")
-        note = "\n*: the bars say the other way (the taller is the other mode's)" if crossed.any() else ""
+        note = STARRED[bool(crossed.any())]  # review r30d: "none here", not a promised mark missing
         ax.set_title(
             f"{title}\nabove each pair: median of each query's ratio, with / without (not the bars' ratio){note}",
             fontsize=9,
@@ -103,6 +103,10 @@ def _stage_words(title: str, names: list[str], table: dict, ratio: list[float], 
 
 
 MS = 1000.0  # the figure's unit, ms, per second
+STARRED = {  # a stage panel's title's last line, where a pair is starred and where none is
+    True: "\n*: the bars say the other way (the taller is the other mode's)",
+    False: "\nno pair here where the bars say the other way",
+}
 BAR = 0.3  # a stage bar's width; a pair's centres are 0.44 apart, each bar's whisker stands on its right
 CUT = 2.0  # a whisker reaching past CUT times a panel's tallest bar is cut at its top, its end written there
 
@@ -278,7 +282,7 @@ def throughputs(rates: dict[str, dict[str, float]]) -> Figure:
     ax.set_xlim(-0.5, len(rates) - 0.5 + 0.15)  # room for the last point's rate inside the frame (review r25a)
     ax.tick_params(labelsize=9)
     ax.set_xlabel("scenario")
-    ax.set_ylabel("configurations checked per second")
+    ax.set_ylabel("configurations checked\nper second", fontsize=9)  # whole at the page's width (review r30d)
     ax.set_title("Collision checking in batches: each checker's rate (log scale)", fontsize=10)
     fig.legend(loc="outside lower center", ncol=len(checkers), fontsize=9, frameon=False)
     said = "; ".join(f"{s}: " + ", ".join(f"{c} {_per_second(r[c])}" for c in checkers) for s, r in rates.items())

@@ -52,13 +52,27 @@ class Cost:
         return (self.after[1] - self.after[0]) / extra if extra else 0.0
 
 
+def _mean_times(preset: str, tables: Tables | None = None) -> dict[tuple[str, str], dict[str, str]]:
+    """``preset``'s table "Times behind Table 3": ``{(scenario, sampler): {column: cell}}``."""
+    times = recorded.packaged() if tables is None else tables
+    heading = next(name for name in times[preset] if "times behind table 3" in name.lower())
+    found = times[preset][heading]
+    return {(row[0], row[1]): dict(zip(found["columns"], row)) for row in found["rows"]}
+
+
+def sampling_shares(preset: str, tables: Tables | None = None) -> list[float]:
+    """Per recorded cell of ``preset``, the sampling stage's share of a mean query without prediction: at most this
+    share of the query can prediction save, since it shortens only sampling (review r30d: the "why" in a number)."""
+    return [
+        recorded.ours(row["sampling without"]) / recorded.ours(row["total without"])
+        for row in _mean_times(preset, tables).values()
+    ]
+
+
 def dear_cells(tables: Tables | None = None) -> list[Cost]:
     """The cells whose median ratio is :data:`DEAR` or more, with their mean times from "Times behind Table 3"."""
     ratios = recorded.query_ratios(recorded.ALGORITHM_1, tables)
-    times = recorded.packaged() if tables is None else tables
-    heading = next(name for name in times[recorded.ALGORITHM_1] if "times behind table 3" in name.lower())
-    found = times[recorded.ALGORITHM_1][heading]
-    rows = {(row[0], row[1]): dict(zip(found["columns"], row)) for row in found["rows"]}
+    rows = _mean_times(recorded.ALGORITHM_1, tables)
     cells = []
     for scenario, by_sampler in ratios.items():
         for sampler, ratio in by_sampler.items():
