@@ -224,7 +224,7 @@ def _panels(views: tuple[str, ...], legend: bool) -> tuple[Figure, dict]:
 
 
 SHARED_SHADE = (COLORS["shade"], None)  # links the same in every configuration drawn (the youBot's platform, turret)
-BASE_MARK: dict[str, Any] = dict(marker="o", markersize=7, color="k", markeredgecolor="w", linestyle="", zorder=99)
+BASE_MARK: dict[str, Any] = dict(marker="o", ms=7, color=COLORS["ink"], mec=COLORS["free"], ls="", zorder=99)
 
 
 def _link_shades(robot: BoxRobot, Q: np.ndarray, named: bool, parts: bool):
