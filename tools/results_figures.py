@@ -121,6 +121,11 @@ def claim_markdown(text: str) -> str:
         if edge
         else ""
     )
+    if not any("timed twice" in heading for heading in tables[checker_scope.SLOW]):  # review r30f, contradiction 5
+        edge_said += (
+            " The floor was measured on the run with our compiled checker; the run with python-fcl was not timed "
+            "twice, so its hollow points borrow that floor."
+        )
     described = alt.details_html(alt.details(fig)).strip()
     picture = f"![{html.escape(alt.alt_text(fig))}]({CLAIM_FIGURE.name})"
     return f"{lead}\n\n{picture}\n\n{caption} {noise_line(tables)}{edge_said}\n\n{described}"
