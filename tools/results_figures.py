@@ -95,6 +95,7 @@ def claim_figure(text: str) -> Figure:
         tie=findings.TIE,
         slow=own_intervals(tables, checker_scope.SLOW),
         series=CLAIM_SERIES,
+        edge=NOISE_EDGE * reach_of(tables),  # review r30f, item 2: the noise edge drawn, not only named
     )
 
 
@@ -117,7 +118,7 @@ def claim_markdown(text: str) -> str:
     )
     edge_said = (
         f" Cells that read as costs or savings but lie within {NOISE_EDGE * reach_of(tables):.2f} of 1 (twice "
-        f"that reach) are at the noise edge: {', '.join(edge)}."
+        f"that reach: the hatched band) are at the noise edge: {', '.join(edge)}."
         if edge
         else ""
     )
