@@ -94,15 +94,7 @@ def own_ratios(
     ax.set_xlabel("sampler, by scenario", labelpad=16)  # under the scenarios' names
     ax.set_xlim(-0.7, ticks[-1] + 0.7)
     drawn = [v for table in (cells, slow) for by in table.values() for value in by.values() for v in value]
-    drawn += [1 - edge, 1 + edge] if edge is not None else []
-    ax.set_yscale("log")
-    ax.set_ylim(min(*drawn, 1 - tie) / 1.15, max(*drawn, 1 + tie) * 1.15)
-    log_ticks(ax)
-    low, high = ax.get_ylim()
-    shown = sorted({round(s, 6) for s in (*ax.get_yticks(), *BELOW_1) if low <= s <= high})  # r25c: 0.7 alone below 1
-    ax.set_yticks(shown, [f"{s:g}" for s in shown])
-    ax.yaxis.set_minor_locator(NullLocator())  # review r27f: an unlabelled tick under 0.7 read as a missing label
-    _band_edges(ax, [1 - tie, 1 + tie])
+    _own_axis(ax, [*drawn, *([1 - edge, 1 + edge] if edge is not None else [])], tie)
     ax.set_ylabel("time with / without\n(below 1: saves)", fontsize=9)  # room for the band's edges on the right
     ax.set_title(title, fontsize=10)
     legend_above(fig, [ax], 2)
@@ -114,6 +106,19 @@ def own_ratios(
     return describe(
         fig, words, [_part(cells, f"{title}, {series[0]} (filled)"), _part(slow, f"{title}, {series[1]} (hollow)")]
     )
+
+
+def _own_axis(ax, drawn: list[float], tie: float) -> None:
+    """:func:`own_ratios`' log axis over every ``drawn`` value and the tie band, labelled at its 1-2-5 steps and
+    :data:`BELOW_1`, the band's edges on the right (:func:`_band_edges`)."""
+    ax.set_yscale("log")
+    ax.set_ylim(min(*drawn, 1 - tie) / 1.15, max(*drawn, 1 + tie) * 1.15)
+    log_ticks(ax)
+    low, high = ax.get_ylim()
+    shown = sorted({round(s, 6) for s in (*ax.get_yticks(), *BELOW_1) if low <= s <= high})  # r25c: 0.7 alone below 1
+    ax.set_yticks(shown, [f"{s:g}" for s in shown])
+    ax.yaxis.set_minor_locator(NullLocator())  # review r27f: an unlabelled tick under 0.7 read as a missing label
+    _band_edges(ax, [1 - tie, 1 + tie])
 
 
 EDGE_WORDS = "the noise edge, {low:.2f}–{high:.2f}: a cost or saving there is no clear evidence"
