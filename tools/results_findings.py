@@ -185,7 +185,7 @@ def why_no_saving(tables: Tables) -> str:
     rates = recorded.table(recorded.ALGORITHM_1, "Checker throughput", tables)
     costs = {s: 1 / recorded.ours(row["learned / exact"]) for s, row in rates.items()}
     cost_3d = [c for s, c in costs.items() if s != "2ds"]
-    cost_2d = f" ({NAMES['2ds']}: {costs['2ds']:.2g})" if "2ds" in costs else ""
+    cost_2d = f"{costs['2ds']:.2g} in {NAMES['2ds']}; " if "2ds" in costs else ""
     means = counted(
         [
             change(1 - s)
@@ -196,10 +196,10 @@ def why_no_saving(tables: Tables) -> str:
     return (  # review r28f, item 2: three sentences
         "**Why a fast checker erases the saving.** Prediction shortens only sampling, which, without prediction, "
         f"took {span(fast, lambda f: f'{f * 100:.2g}')} % of a mean query with our compiled checker "
-        f"({slow_share(tables, slow)}, with python-fcl), and there the network cost "
-        f"{span(cost_3d, lambda c: f'{c:.2g}')} times an exact check per configuration in 3D{cost_2d}, measured in "
-        "this run, beside other work ([Benchmarks](benchmarks.md) times the checker on an idle machine), so by means "
-        f"sampling lost 10 % or more in {means[2]} of {sum(means)} cells. python-fcl is tens of times slower than "
+        f"({slow_share(tables, slow)}, with python-fcl), and in that run, timed beside other work, the network cost "
+        f"{span(cost_3d, lambda c: f'{c:.2g}')} times an exact check per configuration in 3D ({cost_2d}"
+        "[Benchmarks](benchmarks.md) times the checker on an idle machine), so by means sampling lost 10 % or more "
+        f"in {means[2]} of {sum(means)} cells. python-fcl is tens of times slower than "
         "today's compiled checker ([Benchmarks](benchmarks.md)), so with it the network is the cheaper check, yet the "
         f"sampling time it saved came to {span(saved, lambda f: f'{f * 100:.2g}')} % of a mean query's time."
         + not_from_sampling(tables)
