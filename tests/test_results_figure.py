@@ -244,3 +244,27 @@ def test_each_figure_of_means_has_its_own_range_the_slow_run_and_counts_by_the_p
     low, high = fig.axes[0].get_window_extent(renderer).y0, fig.axes[0].get_window_extent(renderer).y1
     shown = sorted((b for b in boxes if low - 1 <= (b.y0 + b.y1) / 2 <= high + 1), key=lambda b: b.y0)
     assert all(a.y1 <= b.y0 + 1 for a, b in zip(shown, shown[1:]))
+
+
+def test_figure_1_hatches_the_noise_edge_and_labels_the_band_apart_from_the_1():
+    """Review r30f, figures: Figure 1's four costs at the noise edge looked like its five clear ones, and its "0.9"
+    crowded the "1". The noise edge is hatched round the tie band, from twice timing's reach on each side, named in
+    the legend and the text alternative; the band's edges are labelled on the right, apart from each other."""
+    fig = results_figures.claim_figure(TEXT)
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    fig.draw(renderer)
+    (ax,) = fig.axes
+    edge = results_noise.NOISE_EDGE * results_noise.reach_of(recorded_results.parse(TEXT))
+    hatched = [p for p in ax.patches if p.get_hatch()]
+    spans = sorted(
+        tuple(sorted({round(y, 6) for y in p.get_path().transformed(p.get_patch_transform()).vertices[:, 1]}))
+        for p in hatched
+    )
+    assert spans == [(round(1 - edge, 6), 0.9), (1.1, round(1 + edge, 6))]
+    named = f"the noise edge, {1 - edge:.2f}–{1 + edge:.2f}"
+    assert named in [t.get_text() for t in fig.legends[0].texts] and named in alt.alt_text(fig)
+    assert "0.9" not in {t.get_text() for t in ax.get_yticklabels()}
+    shown = [t for child in ax.child_axes for t in child.get_yticklabels() if t.get_text()]  # the right-hand axis
+    low, high = sorted(shown, key=lambda t: t.get_window_extent(renderer).y0)
+    assert [low.get_text(), high.get_text()] == ["0.9", "1.1"]
+    assert low.get_window_extent(renderer).y1 <= high.get_window_extent(renderer).y0

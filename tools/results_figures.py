@@ -95,6 +95,7 @@ def claim_figure(text: str) -> Figure:
         tie=findings.TIE,
         slow=own_intervals(tables, checker_scope.SLOW),
         series=CLAIM_SERIES,
+        edge=NOISE_EDGE * reach_of(tables),  # review r30f, item 2: the noise edge drawn, not only named
     )
 
 
@@ -117,10 +118,15 @@ def claim_markdown(text: str) -> str:
     )
     edge_said = (
         f" Cells that read as costs or savings but lie within {NOISE_EDGE * reach_of(tables):.2f} of 1 (twice "
-        f"that reach) are at the noise edge: {', '.join(edge)}."
+        f"that reach: the hatched band) are at the noise edge: {', '.join(edge)}."
         if edge
         else ""
     )
+    if not any("timed twice" in heading for heading in tables[checker_scope.SLOW]):  # review r30f, contradiction 5
+        edge_said += (
+            " The floor was measured on the run with our compiled checker; the run with python-fcl was not timed "
+            "twice, so its hollow points borrow that floor."
+        )
     described = alt.details_html(alt.details(fig)).strip()
     picture = f"![{html.escape(alt.alt_text(fig))}]({CLAIM_FIGURE.name})"
     return f"{lead}\n\n{picture}\n\n{caption} {noise_line(tables)}{edge_said}\n\n{described}"

@@ -31,7 +31,8 @@ from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 READS = (COSTS, TIES, SAVES)  # what a median reads as, in the legend's order; each its own colour and marker
 GAP = 1  # an empty slot between two scenarios' groups of samplers
 APART = 0.22  # where a scenario has two series: each point this far from its sampler's tick, the first to the left
-BELOW_1 = (0.7, 0.9)  # labelled on :func:`own_ratios`' axis, where savings lie, beside its 1-2-5 steps (r27f: no 0.8)
+BELOW_1 = (0.7,)  # labelled on :func:`own_ratios`' axis, where savings lie, beside its 1-2-5 steps (r27f: no 0.8); the
+# tie band's edges on the right (:func:`_band_edges`; r30f: "0.9" crowded the "1")
 NEAR_1 = 1.25  # :func:`means_grid`'s extra ticks this close to 1 are labelled on the right, away from the "1"
 Cells = Mapping[str, Mapping[str, tuple[float, float, float]]]  # {scenario: {sampler: (median, q1, q3)}}
 MEANS_STYLES = (  # :func:`means_grid`'s series in turn: colour, marker, hollow; no verdict look of own_ratios
@@ -47,14 +48,22 @@ MEANS_SPREAD = 0.95  # of the space between two samplers, what a sampler's point
 
 
 def own_ratios(
-    cells: Cells, *, title: str, tie: float = TIE, slow: Cells | None = None, series: tuple[str, str] = ("", "")
+    cells: Cells,
+    *,
+    title: str,
+    tie: float = TIE,
+    slow: Cells | None = None,
+    series: tuple[str, str] = ("", ""),
+    edge: float | None = None,
 ) -> Figure:
     """``{scenario: {sampler: (median, q1, q3)}}`` of each query's own ratio, with / without prediction: a point per
     scenario and sampler at its median, a whisker over its middle half (``q1`` to ``q3``), on a log axis with the
     line at 1 and the shaded tie band from ``1 - tie`` to ``1 + tie``. A point's colour and marker give the verdict
     its median reads as (:func:`toolkit.util.verdicts.time_verdict`), named in a legend over the panel; each point's
     sampler is written under it, each scenario under its samplers. ``slow``, where given, is a second series of the
-    same form (any of the scenarios), drawn hollow beside the first; ``series`` names the two in the legend."""
+    same form (any of the scenarios), drawn hollow beside the first; ``series`` names the two in the legend. ``edge``,
+    where given, hatches the band from ``1 - edge`` to ``1 + edge`` round the tie band (:func:`_edge_band`): a cost or
+    saving there lies at the noise edge (review r30f, item 2)."""
     slow = {} if slow is None else slow
     fig = Figure(figsize=(PAGE_WIDTH, 3.9))
     ax = fig.subplots()
@@ -71,7 +80,7 @@ def own_ratios(
         names += list(by_sampler)
         ticks += list(x)
         centres.append(float(x.mean()))
-    _legend_entries(ax, series if slow else None)
+    _legend_entries(ax, series if slow else None, None if edge is None else (edge, tie))
     ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
     tie_band(ax, tie)
     ax.set_xticks(ticks, names)
@@ -85,18 +94,13 @@ def own_ratios(
     ax.set_xlabel("sampler, by scenario", labelpad=16)  # under the scenarios' names
     ax.set_xlim(-0.7, ticks[-1] + 0.7)
     drawn = [v for table in (cells, slow) for by in table.values() for value in by.values() for v in value]
-    ax.set_yscale("log")
-    ax.set_ylim(min(*drawn, 1 - tie) / 1.15, max(*drawn, 1 + tie) * 1.15)
-    log_ticks(ax)
-    low, high = ax.get_ylim()
-    shown = sorted({round(s, 6) for s in (*ax.get_yticks(), *BELOW_1) if low <= s <= high})  # r25c: 0.7 alone below 1
-    ax.set_yticks(shown, [f"{s:g}" for s in shown])
-    ax.yaxis.set_minor_locator(NullLocator())  # review r27f: an unlabelled tick under 0.7 read as a missing label
-    ax.set_ylabel("time with / without\n(below 1: saves)")
+    _own_axis(ax, [*drawn, *([1 - edge, 1 + edge] if edge is not None else [])], tie)
+    ax.set_ylabel("time with / without\n(below 1: saves)", fontsize=9)  # room for the band's edges on the right
     ax.set_title(title, fontsize=10)
     legend_above(fig, [ax], 2)
     words = _words(cells, title, tie, series[0] if slow else "")
     words += f" Hollow points beside them, {series[1]}. {_counts(slow, tie)}" if slow else ""
+    words += f" Hatched round the tie band, {EDGE_WORDS.format(low=1 - edge, high=1 + edge)}." if edge else ""
     if not slow:
         return describe(fig, words, [_part(cells, title)])
     return describe(
@@ -104,7 +108,39 @@ def own_ratios(
     )
 
 
-def _legend_entries(ax, series: tuple[str, str] | None) -> None:
+def _own_axis(ax, drawn: list[float], tie: float) -> None:
+    """:func:`own_ratios`' log axis over every ``drawn`` value and the tie band, labelled at its 1-2-5 steps and
+    :data:`BELOW_1`, the band's edges on the right (:func:`_band_edges`)."""
+    ax.set_yscale("log")
+    ax.set_ylim(min(*drawn, 1 - tie) / 1.15, max(*drawn, 1 + tie) * 1.15)
+    log_ticks(ax)
+    low, high = ax.get_ylim()
+    shown = sorted({round(s, 6) for s in (*ax.get_yticks(), *BELOW_1) if low <= s <= high})  # r25c: 0.7 alone below 1
+    ax.set_yticks(shown, [f"{s:g}" for s in shown])
+    ax.yaxis.set_minor_locator(NullLocator())  # review r27f: an unlabelled tick under 0.7 read as a missing label
+    _band_edges(ax, [1 - tie, 1 + tie])
+
+
+EDGE_WORDS = "the noise edge, {low:.2f}–{high:.2f}: a cost or saving there is no clear evidence"
+
+
+def _edge_band(ax, edge: float, tie: float) -> None:
+    """Hatch ``[1 - edge, 1 + edge]`` round the tie band (``tie``): the noise edge, where a median read as a cost or a
+    saving lies within twice timing's own reach of 1, told apart from the clear ones by where it stands."""
+    for k, (low, high) in enumerate(((1 - edge, 1 - tie), (1 + tie, 1 + edge))):
+        ax.axhspan(
+            low,
+            high,
+            facecolor="none",
+            edgecolor=COLORS["reference"],
+            hatch="////",
+            linewidth=0,
+            zorder=0,
+            label=EDGE_WORDS.format(low=1 - edge, high=1 + edge).split(":")[0] if k == 0 else None,
+        )
+
+
+def _legend_entries(ax, series: tuple[str, str] | None, edge: tuple[float, float] | None = None) -> None:
     """The legend's entries: each verdict once, by its colour and shape, always filled; and where there are two
     ``series``, which a point's fill names, on a plain circle. Fill is the checker's cue alone (review r25c: a hollow
     "saves time" in the legend read as python-fcl's, where hollow meant python-fcl); the caption counts which
@@ -112,6 +148,8 @@ def _legend_entries(ax, series: tuple[str, str] | None) -> None:
     for k, reads in enumerate(READS):
         look = series_style(k)
         ax.plot([], [], linestyle="none", marker=look["marker"], markersize=7, label=_read(reads), color=look["color"])
+    if edge:  # drawn here, so the legend lists it under the verdicts (:func:`_edge_band`, ``(edge, tie)``)
+        _edge_band(ax, *edge)
     for hollow, name in zip((False, True), series or ()):
         label = f"{'hollow' if hollow else 'filled'}: {name}"
         ax.plot([], [], linestyle="none", marker="o", markersize=7, label=label, **_fill(COLORS["ink"], hollow))
@@ -234,12 +272,21 @@ def means_grid(
         shown = sorted({round(t, 6) for t in (*axes[0].get_yticks(), *ticks) if low <= t <= high and t not in beside})
         axes[0].set_yticks(shown, [f"{t:g}" for t in shown])
     for ax in axes[: len(panels)] if beside else ():  # r25c: 0.9, 1 and 1.1 crammed on the left; r28f: every panel
-        edges = ax.secondary_yaxis("right")
-        edges.set_yticks(beside, [f"{t:g}" for t in beside])
-        edges.yaxis.set_minor_locator(NullLocator())
-        edges.tick_params(labelsize=8, length=2, pad=1)
+        _band_edges(ax, beside)
     legend_above(fig, axes[:1], 1)  # one column: two of these names side by side overflow the page
     return _means_described(fig, panels, names, samplers, tie, said)
+
+
+def _band_edges(ax, ticks: list[float]) -> None:
+    """``ticks`` near 1 (the tie band's edges) labelled on the right of ``ax``, apart from the "1" on the left; those
+    above 1 written above their tick, those below under it, so two edges never touch (review r30f: Figure 3's "1.1"
+    and "0.9" did)."""
+    edges = ax.secondary_yaxis("right")
+    edges.set_yticks(ticks, [f"{t:g}" for t in ticks])
+    edges.yaxis.set_minor_locator(NullLocator())
+    edges.tick_params(labelsize=8, length=2, pad=1)
+    for label, t in zip(edges.get_yticklabels(), ticks):
+        label.set_verticalalignment("bottom" if t > 1 else "top")
 
 
 def _means_panel(ax, title: str, series: Mapping[str, Mapping[str, float]], names, samplers, tie: float) -> str:
