@@ -599,3 +599,26 @@ def test_the_cells_whose_mean_moved_more_than_sampling_could_move_it_are_named()
         f"samples or timing noise in the means: 3DC-9 OB's mean query was {100 * moved:.0f} % shorter where the "
         f"network saved {100 * sampled:.0f} % of it in sampling."
     ) in flat
+
+
+def test_the_race_s_summary_says_where_ompl_wins_what_algorithm_1_takes_and_its_scope():
+    """Review r30f, race items 1, 3 and 4: the one comparison OMPL wins (its RRTConnect with checks batched against
+    the lazy PRM), Algorithm 1's time and the race's scope, in "In short", from the held-out seed 9300's rows; why the
+    page matters before it; the Results page's lazy PRM set against this page's 3DO medians in a bullet apart."""
+
+    def held_out(header: str) -> list[str]:
+        return sorted((c.split(" (")[0] for r, c in column(header, RACE).items() if r.endswith(", 9300")), key=float)
+
+    beaten = held_out("lazy PRM / OMPL RRTConnect, checks batched")
+    assert f"OMPL's RRTConnect beats it (the lazy PRM takes {beaten[0]}–{beaten[-1]} times its time)" in RACE_SUMMARY
+    eager = held_out("ours: the paper's Algorithm 1")
+    assert f"The paper's Algorithm 1, as we read it, takes {eager[0]}–{eager[-1]} ms" in RACE_SUMMARY
+    assert (
+        "Scope: the sampler BS alone, thirty queries a seed, the three 3D scenarios only, on one idle" in RACE_SUMMARY
+    )
+    assert "--queries 30 --seeds 7300,9300" in RACE and "idle throughout" in RACE  # what the scope says
+    assert RACE.index("**Why this page.**") < RACE.index("**In short**")
+    office = sorted(numbers(c)[0] for r, c in column("ours: lazy PRM", RACE).items() if r.startswith("3DO"))
+    flat = " ".join(RACE.split())
+    assert "- **Against the Results page's timings.** The Results page's lazy PRM takes" in flat
+    assert f"a mean 3DO query, against {office[0]}–{office[-1]} ms a median one here" in flat
