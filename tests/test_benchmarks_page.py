@@ -622,3 +622,19 @@ def test_the_race_s_summary_says_where_ompl_wins_what_algorithm_1_takes_and_its_
     flat = " ".join(RACE.split())
     assert "- **Against the Results page's timings.** The Results page's lazy PRM takes" in flat
     assert f"a mean 3DO query, against {office[0]}–{office[-1]} ms a median one here" in flat
+
+
+def test_the_race_s_chart_is_its_table_s_held_out_rows():
+    """Review r30f, race item 2: a dot chart of each planner's median per scenario, seed 9300, OMPL batched as a
+    second marker, drawn from the page's own tables; its text alternative on the page is the figure's."""
+    from toolkit.plots import race
+    from toolkit.plots.alt import alt_text
+
+    medians, batched = race.from_tables(RACE, 9300)
+    first = column("ours: RRT-Connect", RACE)
+    assert medians["3DO"]["ours: RRT-Connect"] == numbers(first["3DO, 9300"])[0] and len(medians) == 3
+    ratio = column("RRT-Connect / OMPL RRTConnect, checks batched", RACE)["3DC-9, 9300"]
+    assert batched["3DC-9"]["OMPL RRTConnect"] == pytest.approx(numbers(first["3DC-9, 9300"])[0] / float(ratio))
+    fig = race.race_medians(medians, batched, seed=9300)
+    assert f"![{alt_text(fig)}](planner_race.png)" in RACE
+    assert (ROOT / "docs" / "planner_race.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
