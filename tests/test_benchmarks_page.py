@@ -132,8 +132,12 @@ def test_the_opening_names_the_statistic_of_no_saving_and_counts_the_means():
     flat = " ".join(PAGE.split())  # review r28f, item 2: the counts by means in the section, the summary one sentence
     found = re.search(r"it saved 10 % or more in (\d+) of 16 cells of Algorithm 1 and in (\d+) of 16 of the lazy", flat)
     assert found and found.groups() == tuple(str(n) for n in saved)
-    assert "our accurate `strong` network saved time for no sampler in any scenario by the median query" in OPENING
-    assert "in any scenario, by the median of each query's own ratio; in our lazy PRM its median query took" in flat
+    # review r30f, contradiction 3: the lazy PRM's statistic is the ratio of median times, not each query's own
+    assert (
+        "our accurate `strong` network saved time for no sampler in any scenario (by the median query in Algorithm 1, "
+        "by the ratio of median times in our lazy PRM)"
+    ) in OPENING
+    assert "in any scenario, by the median of each query's own ratio; in our lazy PRM its median time (the" in flat
 
 
 def said_at_top(pattern: str) -> str | tuple[str, ...]:
@@ -500,6 +504,18 @@ def test_the_only_is_qualified_and_the_other_pages_figures_are_reconciled():
     verdicts = " ".join(cells)
     assert verdicts.count("(the network cheaper)") == 1 and len(cells) == 2
     assert "a network was the cheaper check once, the paper-size one on 3DO, and too close to tell in four" in SUMMARY
+    # review r30f, contradiction 2: the network's cost in the Results page's loaded run, set against this table's
+    three = r"([\d.]+), ([\d.]+), ([\d.]+) \("
+    loaded = re.search(r"\| `strong --planner paper` \| 5 December[^|]* \| \S+× \| " + three, results)
+    idle = [span(numbers(c)) for n, c in column("time, network / default exact").items() if n.startswith("3D")]
+    assert (
+        loaded
+        and (
+            f"that loaded run gives it at {loaded[1]}, {loaded[2]} and {loaded[3]} times the compiled check on 3DC-7, "
+            f"3DC-9 and 3DO, this idle table at {idle[0]}, {idle[1]} and {idle[2]}; either way the network"
+        )
+        in flat
+    )
 
 
 def ratio(top: str, bottom: str) -> Decimal:
@@ -575,6 +591,7 @@ def test_the_cells_whose_mean_moved_more_than_sampling_could_move_it_are_named()
     most = max(sampled for sampled, _ in fell.values())
     beyond = [c for c, (sampled, moved) in fcl.items() if moved >= 0.1 and moved > sampled + 0.05]
     assert beyond == ["3DC-9 OB"]  # 3DO BT fell 17 % where sampling saved 16 %: sampling's doing
+    assert f"one cell's mean moved more, the Results page's {beyond[0]} with python-fcl" in SUMMARY  # review r30f, 1
     sampled, moved = fcl["3DC-9 OB"]
     assert f"of the lazy PRM; in those 3 the network saved at most {100 * most:.1f} % of a query in sampling" in flat
     assert (  # review r29f, item 4: out of the summary, into the section's numbers
@@ -582,3 +599,42 @@ def test_the_cells_whose_mean_moved_more_than_sampling_could_move_it_are_named()
         f"samples or timing noise in the means: 3DC-9 OB's mean query was {100 * moved:.0f} % shorter where the "
         f"network saved {100 * sampled:.0f} % of it in sampling."
     ) in flat
+
+
+def test_the_race_s_summary_says_where_ompl_wins_what_algorithm_1_takes_and_its_scope():
+    """Review r30f, race items 1, 3 and 4: the one comparison OMPL wins (its RRTConnect with checks batched against
+    the lazy PRM), Algorithm 1's time and the race's scope, in "In short", from the held-out seed 9300's rows; why the
+    page matters before it; the Results page's lazy PRM set against this page's 3DO medians in a bullet apart."""
+
+    def held_out(header: str) -> list[str]:
+        return sorted((c.split(" (")[0] for r, c in column(header, RACE).items() if r.endswith(", 9300")), key=float)
+
+    beaten = held_out("lazy PRM / OMPL RRTConnect, checks batched")
+    assert f"OMPL's RRTConnect beats it (the lazy PRM takes {beaten[0]}–{beaten[-1]} times its time)" in RACE_SUMMARY
+    eager = held_out("ours: the paper's Algorithm 1")
+    assert f"The paper's Algorithm 1, as we read it, takes {eager[0]}–{eager[-1]} ms" in RACE_SUMMARY
+    assert (
+        "Scope: the sampler BS alone, thirty queries a seed, the three 3D scenarios only, on one idle" in RACE_SUMMARY
+    )
+    assert "--queries 30 --seeds 7300,9300" in RACE and "idle throughout" in RACE  # what the scope says
+    assert RACE.index("**Why this page.**") < RACE.index("**In short**")
+    office = sorted(numbers(c)[0] for r, c in column("ours: lazy PRM", RACE).items() if r.startswith("3DO"))
+    flat = " ".join(RACE.split())
+    assert "- **Against the Results page's timings.** The Results page's lazy PRM takes" in flat
+    assert f"a mean 3DO query, against {office[0]}–{office[-1]} ms a median one here" in flat
+
+
+def test_the_race_s_chart_is_its_table_s_held_out_rows():
+    """Review r30f, race item 2: a dot chart of each planner's median per scenario, seed 9300, OMPL batched as a
+    second marker, drawn from the page's own tables; its text alternative on the page is the figure's."""
+    from toolkit.plots import race
+    from toolkit.plots.alt import alt_text
+
+    medians, batched = race.from_tables(RACE, 9300)
+    first = column("ours: RRT-Connect", RACE)
+    assert medians["3DO"]["ours: RRT-Connect"] == numbers(first["3DO, 9300"])[0] and len(medians) == 3
+    ratio = column("RRT-Connect / OMPL RRTConnect, checks batched", RACE)["3DC-9, 9300"]
+    assert batched["3DC-9"]["OMPL RRTConnect"] == pytest.approx(numbers(first["3DC-9, 9300"])[0] / float(ratio))
+    fig = race.race_medians(medians, batched, seed=9300)
+    assert f"![{alt_text(fig)}](planner_race.png)" in RACE
+    assert (ROOT / "docs" / "planner_race.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"

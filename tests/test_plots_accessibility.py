@@ -46,6 +46,7 @@ from toolkit.plots import (
     palette,
     planning,
     query_ratios,
+    race,
     reproduction,
     robot_drawing,
     scenes,
@@ -66,6 +67,7 @@ MODULES = (
     near_blocks,
     planning,
     query_ratios,
+    race,
     reproduction,
     robot_drawing,
     scenes,
@@ -217,6 +219,14 @@ def gallery() -> dict[str, Figure]:
             {"scenario": "2ds", "preset": "paper", "quick": True, "variables": {"batch": sweep, "other": sweep}}
         ),
         "cspace.workspace_figure": cspace.workspace_figure(office),
+        "race.race_medians": race.race_medians(
+            {
+                s: {"ours: RRT-Connect": 1.3 * (i + 1), "OMPL RRTConnect": 9.3, "OMPL PRM": 130.0}
+                for i, s in enumerate("AB")
+            },
+            {s: {"OMPL RRTConnect": 2.2, "OMPL PRM": 19.0} for s in "AB"},
+            seed=9300,
+        ),
         "cspace.occupancy_figure": cspace.occupancy_figure(office, layers=[0, 1, 2, 3, 4]),
         "robot_drawing.robot_figure": robot_drawing.robot_figure(
             chain.robot, Q, clutter, labels=["joint2 low", "joint2 middle", "joint2 high"]

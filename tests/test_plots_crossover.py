@@ -7,7 +7,7 @@ from matplotlib.collections import PolyCollection
 
 from toolkit.plots import alt
 from toolkit.plots.alt import alt_text
-from toolkit.plots.crossover import PAPER_LEGEND, SLANT, TICKS, crossover
+from toolkit.plots.crossover import CALLS_LEGEND, PAPER_LEGEND, PLANNER_CALLS, SLANT, TICKS, crossover
 from toolkit.util.verdicts import CHEAPER, NEAR
 
 SWEEP = {  # network / exact: 0.5 cheaper, 0.9 can't tell, 1.5 dearer, 0.7 cheaper (the band is 25 %)
@@ -70,7 +70,9 @@ def test_the_text_alternative_says_when_the_sweep_was_measured_and_ticks_name_te
         measured="5 December 2026, 15:37 UTC",
     )
     assert "Measured 5 December 2026, 15:37 UTC." in alt_text(fig) and "measured" not in fig.get_suptitle().lower()
-    assert '3DC-9, the network at the "paper" preset\'s sizes' in fig.get_suptitle()
+    assert "3DC-9, a paper-size network" in fig.get_suptitle()  # reader r30f: "paper-size network" in the title
+    strong = crossover({"scenario": "3dc7", "preset": "strong", "quick": False, "variables": {"obstacles": SWEEP}})
+    assert '3DC-7, the network at the "strong" preset\'s sizes' in strong.get_suptitle()
     low = {**SWEEP, "exact_us": [0.09, 0.1, 0.12, 0.14], "learned_us": [0.3] * 4, "fcl_us": [5, 50, 500, 900]}
     ax = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"obstacles": low}}).axes[0]
     assert {"0.1", "0.2", "0.5"} <= {t.get_text() for t in ax.get_yticklabels()}  # four decades: 1-2-5 below 1
@@ -92,8 +94,9 @@ def test_a_tick_label_that_would_touch_its_neighbour_is_left_out_and_the_last_is
 
 def test_the_drawn_tick_labels_keep_apart():
     """docs/crossover.png's obstacle panel: the chosen values named (reader r29f: 350 and 500 touched; 10, 50, 100,
-    200 and 500), the others measured marked by short ticks (reader r20d: a measured value unmarked), slanted where
-    level labels would crowd (reader r10a: 100, 200 and 500 crowded), each a line's height or more from the next."""
+    200 and 500), the others measured left without a tick (reader r30f: unlabelled ticks near 20 and 300; the curve's
+    marks show them), slanted where level labels would crowd (reader r10a: 100, 200 and 500 crowded), each a line's
+    height or more from the next."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     values = [10, 25, 50, 100, 200, 350, 500]
@@ -113,7 +116,7 @@ def test_the_drawn_tick_labels_keep_apart():
         line = named[0].get_fontsize() * 110 / 72
         at = sorted(ax.transData.transform([(v, 1) for v in TICKS["obstacles"]])[:, 0])
         assert all(right - left >= line for left, right in zip(at, at[1:]))
-    assert sorted([*ax.get_xticks(), *ax.get_xticks(minor=True)]) == values
+    assert sorted(ax.get_xticks()) == list(TICKS["obstacles"]) and not len(ax.get_xticks(minor=True))
 
 
 def test_the_decade_where_curves_cross_has_numbers_and_a_crossing_says_what_it_counts():
@@ -150,7 +153,7 @@ def test_every_crossing_is_marked_and_said_each_label_apart():
 def test_the_recorded_crossover_names_every_measured_value():
     """docs/crossover.json drawn as docs/crossover.png: every panel names every value it measured (reader r20d: the
     1,280-triangle point had no number), but the obstacles' its chosen ones (reader r29f: 350 touched 500), the rest
-    short ticks, slanted where level labels would crowd."""
+    no tick (reader r30f), slanted where level labels would crowd."""
     import json
 
     from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -163,14 +166,14 @@ def test_the_recorded_crossover_names_every_measured_value():
     for ax, (key, sweep) in zip(fig.axes, recorded["variables"].items()):
         named = [t for t in ax.get_xticklabels() if t.get_text()]
         assert len(named) == len(TICKS.get(key, sweep["values"])), sweep["label"]
-        assert len(ax.get_xticks()) + len(ax.get_xticks(minor=True)) == len(sweep["values"])  # each one marked
+        assert len(ax.get_xticks()) + len(ax.get_xticks(minor=True)) == len(named)  # no tick without a name
         slanted += named[0].get_rotation() == SLANT
         low, high = np.log10(ax.get_ylim())  # reader r27f: the 20-triangle network point sat half on the lower frame
         costs = np.log10([v for k in ("exact_us", "fcl_us", "learned_us") for v in sweep[k]])
         assert low + 0.1 <= costs.min() and costs.max() <= high - 0.1, sweep["label"]
     assert slanted >= 1  # the triangles' 1,280 and 5,120 would crowd level
     title = fig.get_suptitle()  # reader r27f: no hatching named where none is drawn; the network's size named
-    assert "hatched" not in title and 'the network at the "paper" preset\'s sizes' in title
+    assert "hatched" not in title and "a paper-size network" in title
 
 
 def test_a_3dc_sweep_marks_where_the_paper_s_scenes_sit():
@@ -188,3 +191,19 @@ def test_a_3dc_sweep_marks_where_the_paper_s_scenes_sit():
     assert not [p for ax in plain.axes for p in ax.patches] and "Grey strips" not in alt_text(plain)
     short = crossover({"scenario": "3dc7", "preset": "paper", "quick": False, "variables": {"obstacles": SWEEP}})
     assert len([p for ax in short.axes for p in ax.patches]) == 1  # 10 to 10,000 blocks: the strip inside
+
+
+def test_the_call_size_panel_marks_our_planners_calls():
+    """Reader r30f: the text says a planner asks for tens to a few hundred configurations a call; the call-size panel
+    of a 3DC sweep now shows where (:data:`PLANNER_CALLS`, a grey strip named at its top), and says it in words."""
+    batch = {**SWEEP, "label": "configurations per call", "values": [1, 10, 100, 1000, 10000]}
+    batch.update({k: [1.0, 1.0, 1.0, 1.0, 1.0] for k in ("exact_us", "fcl_us")}, learned_us=[2.0] * 5)
+    fig = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"batch": batch}})
+    ax = fig.axes[0]
+    assert [(p.get_x(), p.get_x() + p.get_width()) for p in ax.patches] == [PLANNER_CALLS]
+    assert "planner calls" in [t.get_text() for t in ax.texts]
+    assert CALLS_LEGEND in [t.get_text() for t in fig.legends[0].get_texts()]
+    low, high = PLANNER_CALLS
+    assert f"the planner calls a network could answer, {low} to {high} configurations" in alt_text(fig)
+    plain = crossover({"scenario": "2ds", "preset": "paper", "quick": False, "variables": {"batch": batch}})
+    assert not plain.axes[0].patches and "planner calls" not in alt_text(plain)

@@ -7,7 +7,8 @@ check by more than the band in which a timing moves (the verdict "network cheape
 :func:`toolkit.util.verdicts.cost_verdict`, the words the tables and the conclusion use: a point
 they call "can't tell" is not shaded) and a dotted line wherever its curve crosses an exact one (twice, where the
 two costs are close: each crossing is marked). On a 3DC scenario's panels a grey strip marks where the paper's own
-scenes sit (:data:`PAPER_SCENES`: 110-125 blocks, chains of 2 and 4 links).
+scenes sit (:data:`PAPER_SCENES`: 110-125 blocks, chains of 2 and 4 links) and, on the call-size panel, the sizes
+of our planners' calls (:data:`PLANNER_CALLS`).
 Nothing here calls ``show()``.
 """
 
@@ -54,6 +55,7 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
         _panel(ax, sweep)
         if paper:
             _paper_scenes(ax, key, sweep)
+            _planner_calls(ax, key, sweep)
         ax.set_title(TITLES.get(key, key.capitalize()), fontsize=10)  # reader r25c: which panel is which, on top
     for ax in axes[len(sweeps) :]:
         ax.set_visible(False)
@@ -64,10 +66,13 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
     hatched = any(_close(sweep).any() for sweep in sweeps.values())
     said = f"shaded: network cheaper by > {CLOSE:.0%}{' (nowhere here)' if not shaded else ''}"
     said += f"; hatched: within {CLOSE:.0%}, can't tell" if hatched else ""  # reader r27f: no hatching named undrawn
+    network = (  # reader r30f: the paper's sizes named in the title, not only in the caption
+        "a paper-size network"
+        if results["preset"] == "paper"
+        else f'the network at the "{results["preset"]}" preset\'s sizes'
+    )
     fig.suptitle(  # the network's size said on the figure (reader r27f: "preset paper" alone was easy to miss)
-        f'Cost per check: {scenario_name(results["scenario"])}, the network at the "{results["preset"]}" preset\'s '
-        f"sizes{quick}\n{said}",  # reader r29f: "the network of preset paper's sizes" read garbled
-        fontsize=11,
+        f"Cost per check: {scenario_name(results['scenario'])}, {network}{quick}\n{said}", fontsize=11
     )
     handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # one legend, below
     room = (0, (0.22 * len(handles) + 0.1) / fig.get_figheight(), 1, 1)  # below: a line a legend entry
@@ -81,6 +86,7 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
     text = f"Cost per configuration of the exact and the learned check, {results['scenario']}, preset "
     text += f"{results['preset']}{quick}, microseconds on log axes. {when}"
     text += PAPER_SAID if paper and set(PAPER_SCENES) & set(sweeps) else ""
+    text += CALLS_SAID if paper and "batch" in sweeps else ""
     parts = [_in_a_table(sweep) for sweep in sweeps.values()]
     return describe(fig, text + " ".join(_in_words(sweep) for sweep in sweeps.values()), parts)
 
@@ -88,7 +94,14 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
 PAPER_SCENES = {"obstacles": ((110, 125),), "links": ((2, 2), (4, 4))}  # the paper's 3DC: 110-125 blocks; 2, 4 links
 PAPER_LEGEND = "grey strip: the paper's scenes (110–125 blocks; chains of 2 and 4 links)"
 PAPER_SAID = "Grey strips mark the paper's scenes: 110 to 125 blocks, chains of 2 and 4 links. "
-TICKS = {"obstacles": (10, 50, 100, 200, 500)}  # the values named, the rest short ticks (reader r29f: 350 met 500)
+TICKS = {"obstacles": (10, 50, 100, 200, 500)}  # the values named, the rest unticked (r29f: 350 met 500; r30f)
+PLANNER_CALLS = (8, 400)  # the planner calls a network could answer on a 3DC scene: RRT-Connect's 8-56 configurations
+# (docs/benchmarks_history.md, its profile), a round's samples (the lazy PRM's 50 doubling to |S| = plan_samples = 400)
+CALLS_LEGEND = "grey strip on call size: planner calls a network could answer (8–400)"
+CALLS_SAID = (
+    "On the call-size panel a grey strip marks the planner calls a network could answer, 8 to 400 configurations: "
+    "RRT-Connect's calls of 8 to 56, a round's 50 to 400 samples. "
+)
 
 
 def _paper_scenes(ax, key: str, sweep: dict) -> None:
@@ -98,6 +111,26 @@ def _paper_scenes(ax, key: str, sweep: dict) -> None:
     for n, (low, high) in enumerate(r for r in PAPER_SCENES.get(key, ()) if x[0] <= r[0] and r[1] <= x[-1]):
         label = PAPER_LEGEND if n == 0 else None  # a light grey, under the curves
         ax.axvspan(low / 1.05, high * 1.05, color=COLORS["block"], alpha=0.3, zorder=0.5, lw=0, label=label)
+
+
+def _planner_calls(ax, key: str, sweep: dict) -> None:
+    """On the call-size panel (``batch``), a grey strip over :data:`PLANNER_CALLS` and its name at the panel's top
+    (reader r30f: the text said "tens to a few hundred", the figure did not show it)."""
+    x = np.asarray(sweep["values"], dtype=float)
+    low, high = PLANNER_CALLS
+    if key != "batch" or not (x[0] <= low and high <= x[-1]):
+        return
+    ax.axvspan(low, high, color=COLORS["block"], alpha=0.3, zorder=0.5, lw=0, label=CALLS_LEGEND)
+    ax.text(
+        np.sqrt(low * high),
+        0.97,
+        "planner calls",
+        transform=ax.get_xaxis_transform(),
+        ha="center",
+        va="top",
+        fontsize=TICK_POINTS,
+        path_effects=halo(0.0, ("free",)),
+    )
 
 
 TITLES = {  # a swept variable's key -> its panel's title (reader r25c: only the x-labels told the panels apart)
@@ -299,7 +332,7 @@ def _kept_apart(labels: list[str], px: np.ndarray, room: list[float]) -> list[st
 
 def _name_ticks(ax, measured: np.ndarray, chosen: tuple[float, ...] | None = None) -> None:
     """Name the measured values ``measured (n,)`` of a laid-out panel under their ticks, or of them only those in
-    ``chosen`` (reader r29f: the obstacles' 350 touched 500; the others get short, unnamed ticks): level where the
+    ``chosen`` (reader r29f: the obstacles' 350 touched 500; reader r30f: the others get no tick): level where the
     labels keep apart as drawn, slanted where level ones would crowd (reader r20d: 1,280 triangles had no number),
     and only what still crowds slanted gets a short, unnamed tick."""
     picked = measured[np.isin(measured, chosen)] if chosen else measured
@@ -312,7 +345,7 @@ def _name_ticks(ax, measured: np.ndarray, chosen: tuple[float, ...] | None = Non
         labels = _kept_apart([f"{v:,.0f}" for v in x], px, [0.6 * char_px / 0.64] * len(x))
     named = x[[bool(t) for t in labels]]
     ax.set_xticks(named, [t for t in labels if t])  # the values named
-    ax.set_xticks(measured[~np.isin(measured, named)], minor=True)  # the values measured but not named: short ticks
+    ax.set_xticks(x[~np.isin(x, named)], minor=True)  # crowded out of a name: a short tick; not chosen: none (r30f)
     ax.xaxis.set_minor_formatter(NullFormatter())
     if slanted:
         ax.tick_params(axis="x", labelrotation=SLANT)

@@ -1,0 +1,120 @@
+"""Our planners against OMPL's (``toolkit bench --vs-ompl``): each planner's median time a query, per scenario.
+
+:func:`race_medians` draws one row per scenario and one dot per planner on a log axis of milliseconds, OMPL's
+planners with their checks batched as a second, hollow marker of the same colour and shape (docs/planner_race.md,
+its first table and its ratio tables). :func:`from_tables` reads those figures from the page's Markdown tables, so
+the figure is drawn from what the page prints. Nothing here calls ``show()``.
+"""
+
+from __future__ import annotations
+
+import re
+
+import numpy as np
+from matplotlib.figure import Figure
+from matplotlib.ticker import NullLocator
+
+from toolkit.plots.alt import Part, describe
+from toolkit.plots.palette import COLORS, LINE_COLORS, MARKERS, PAGE_WIDTH
+
+OURS = ("ours: RRT-Connect", "ours: lazy PRM", "ours: the paper's Algorithm 1")
+OMPL = ("OMPL RRTConnect", "OMPL PRM")
+BATCHED = {  # OMPL's planner -> (the ratio table's batched column, the planner of ours over it)
+    "OMPL RRTConnect": ("RRT-Connect / OMPL RRTConnect, checks batched", "ours: RRT-Connect"),
+    "OMPL PRM": ("lazy PRM / OMPL PRM, checks batched", "ours: lazy PRM"),
+}
+POINTS = 9  # the tick labels' and the legend's size
+
+
+def from_tables(markdown: str, seed: int) -> tuple[dict[str, dict[str, float]], dict[str, dict[str, float]]]:
+    """From the race page's Markdown: ``{scenario: {planner: median ms}}`` of the rows of ``seed``, and
+    ``{scenario: {OMPL planner: ms with its checks batched}}``, our planner's median over its batched ratio (as
+    the page computes it)."""
+    cells: dict[str, dict[str, str]] = {}
+    header: list[str] = []
+    for line in markdown.splitlines():
+        if not line.startswith("|") or set(line) <= set("|-: "):
+            header = [] if not line.startswith("|") else header
+            continue
+        row = [c.strip() for c in line.strip().strip("|").split("|")]
+        if not header:
+            header = row
+            continue
+        name, _, row_seed = row[0].partition(", ")
+        if row_seed == str(seed):
+            cells.setdefault(name, {}).update(zip(header[1:], row[1:]))
+    number = re.compile(r"\d+(?:,\d{3})*(?:\.\d+)?")
+
+    def first(cell: str) -> float:
+        return float(number.findall(cell)[0].replace(",", ""))
+
+    medians = {s: {p: first(row[p]) for p in (*OURS, *OMPL)} for s, row in cells.items()}
+    batched = {
+        s: {p: medians[s][ours] / first(cells[s][column]) for p, (column, ours) in BATCHED.items()} for s in cells
+    }
+    return medians, batched
+
+
+def race_medians(
+    medians: dict[str, dict[str, float]], batched: dict[str, dict[str, float]] | None = None, seed: int | None = None
+) -> Figure:
+    """One row per scenario of ``medians`` (``{scenario: {planner: median ms}}``), one filled dot per planner on a
+    log axis; ``batched`` (``{scenario: {OMPL planner: ms}}``) as a hollow dot of the planner's colour and shape.
+    Ours sit a little below each scenario's name, OMPL's a little above, so that near values do not cover each other."""
+    scenarios = list(medians)
+    planners = list(next(iter(medians.values())))
+    fig = Figure(figsize=(PAGE_WIDTH, 1.0 + 0.75 * len(scenarios) + 0.25 * (len(planners) + 2)))
+    ax = fig.subplots()
+    for k, planner in enumerate(planners):
+        colour, marker = LINE_COLORS[k % len(LINE_COLORS)], MARKERS[k % len(MARKERS)]
+        y = np.arange(len(scenarios)) + (0.15 if planner.startswith("ours") else -0.15)  # (S,)
+        x = [medians[s][planner] for s in scenarios]  # (S,) ms
+        ax.plot(x, y, marker, color=colour, markersize=8, ls="none", label=planner, clip_on=False)
+        if batched and all(planner in batched[s] for s in scenarios):
+            x = [batched[s][planner] for s in scenarios]
+            ax.plot(x, y, marker, color=colour, markersize=8, ls="none", mfc=COLORS["free"], mew=1.8,
+                    label=f"{planner}, checks batched (hollow)", clip_on=False)  # fmt: skip
+    ax.set_xscale("log")
+    low, high = ax.get_xlim()
+    ticks = [m * 10.0**e for e in range(-1, 5) for m in (1, 2, 5) if low <= m * 10.0**e <= high]
+    ax.set_xticks(ticks, [f"{v:g}" for v in ticks])  # plain numbers, not 10^2
+    ax.xaxis.set_minor_locator(NullLocator())
+    ax.set_yticks(range(len(scenarios)), scenarios)
+    ax.set_ylim(len(scenarios) - 0.5, -0.5)  # the first scenario on top
+    ax.grid(axis="x", color=COLORS["block"], lw=0.6, zorder=0)
+    ax.set_xlabel("median time a query, ms (log axis)")
+    ax.set_ylabel("scenario")
+    ax.tick_params(labelsize=POINTS)
+    held = f", seed {seed}" if seed is not None else ""
+    ax.set_title(f"Median time a query by planner{held}: further left is faster", fontsize=10)
+    rows = (len(planners) + (2 if batched else 0) + 1) // 2
+    room = (0, (0.24 * rows + 0.15) / fig.get_figheight(), 1, 1)
+    handles, labels = ax.get_legend_handles_labels()
+    fig.legend(handles, labels, loc="upper center", bbox_to_anchor=(0.5, room[1]), ncol=2, fontsize=POINTS - 1,
+               frameon=False)  # fmt: skip
+    fig.tight_layout(rect=room)
+    return describe(fig, _in_words(medians, batched, held), [_in_a_table(medians, batched)])
+
+
+def _ms(value: float) -> str:
+    return f"{value:.1f}" if value < 100 else f"{value:.0f}"
+
+
+def _in_words(medians: dict[str, dict[str, float]], batched: dict[str, dict[str, float]] | None, held: str) -> str:
+    """The figure in words: per scenario, the fastest and the slowest planner and their times."""
+    text = f"Dot chart of each planner's median time a query in milliseconds on a log axis{held}, a row a scenario"
+    text += "; hollow dots: OMPL's planners with their checks batched. " if batched else ". "
+    for s, row in medians.items():
+        fast, slow = min(row, key=row.get), max(row, key=row.get)  # type: ignore[arg-type]
+        text += f"{s}: fastest {fast}, {_ms(row[fast])} ms; slowest {slow}, {_ms(row[slow])} ms. "
+    return text
+
+
+def _in_a_table(medians: dict[str, dict[str, float]], batched: dict[str, dict[str, float]] | None) -> Part:
+    planners = list(next(iter(medians.values())))
+    extra = list(next(iter(batched.values()))) if batched else []
+    columns = ("scenario", *(f"{p}, ms" for p in planners), *(f"{p}, checks batched, ms" for p in extra))
+    rows = tuple(
+        (s, *(_ms(medians[s][p]) for p in planners), *(_ms(batched[s][p]) for p in extra if batched)) for s in medians
+    )
+    return Part("median time a query", "Each planner's median time a query, ms, per scenario.", columns, rows)
