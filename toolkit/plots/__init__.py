@@ -21,6 +21,7 @@ per topic, in the order of the notebooks:
 - :mod:`toolkit.plots.reproduction` — the reproduction's figures (paper Figures 5-7, ``toolkit reproduce``);
 - :mod:`toolkit.plots.crossover` — where prediction pays: exact and learned cost per configuration
   (``toolkit bench --crossover``; notebook 04);
+- :mod:`toolkit.plots.race` — our planners against OMPL's, median time a query (``docs/planner_race.md``);
 - :mod:`toolkit.plots.tutorials` — what only the tutorials show: a mesh workspace, samplers in a narrow passage.
 
 Every figure's colours come from :mod:`toolkit.plots.palette` (told apart by colour-blind readers too) and
