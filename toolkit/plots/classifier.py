@@ -39,7 +39,7 @@ from toolkit.learning import metrics
 from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
-from toolkit.plots.cell_marks import draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
+from toolkit.plots.cell_marks import depth_inside, draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
 from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import dof_label
 from toolkit.plots.slices import CSpaceSlice
@@ -50,10 +50,7 @@ MISTAKE_MARKERS = {1: "o", 3: "s"}  # conservative circles, dangerous squares: t
 CUT = 2.5  # points: the path map's dotted line at the model's threshold, bold enough to follow across the map (r15c)
 END_CLEAR = 0.06  # of a map's width: a path's diamond nearer an end than this is left out, the end's mark beside it
 CUT_MAP = 1.5  # points: the same line on a map of mistakes, whose marks it must not bury
-ZORDER = {
-    1: 2.8,
-    3: 3.0,
-}  # over the lines (2: the boundary, 2.5: the threshold's contour), the squares over the circles
+ZORDER = {1: 2.8, 3: 3.0}  # over the lines (2: the boundary, 2.5: the threshold's contour), squares over circles
 # (r29c: circles under the outlines were half hidden; r10b, r11: a square under its ringed line was cut in two)
 PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
@@ -258,10 +255,14 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
 
 
 def _draw_mistakes(ax, grid: CSpaceSlice, codes) -> None:
-    """Every map's mistakes alike: circles, then squares over them, one per block of ``BLOCKS`` a side."""
+    """Every map's mistakes alike: circles, then squares over them, one per block of ``BLOCKS`` a side, each on its
+    block's cell deepest inside its side of the outline (r30c: the squares on outline corners lay half in free space),
+    the squares inside the C-obstacle, the circles outside it."""
+    valid = codes <= 1  # (nx, ny) the truth: valid kept or rejected
     for code in MISTAKE_MARKERS:
         style = dict(label=ANSWERS[code], zorder=ZORDER[code], **_mistake_mark(code))
-        draw_cell_marks(ax, grid, codes == code, pitch=PITCH[code], blocks=BLOCKS[code], **style)
+        depth = depth_inside(valid if code == 1 else ~valid)
+        draw_cell_marks(ax, grid, codes == code, pitch=PITCH[code], blocks=BLOCKS[code], depth=depth, **style)
 
 
 def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tuple[int, int], edges=None) -> None:
