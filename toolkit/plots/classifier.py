@@ -110,11 +110,12 @@ def path_map(
     """A planner's roadmap ``nodes (M, dof)`` and returned ``path (P, dof)`` over a P(valid) map of the grid's two DoFs.
 
     Nodes in collision (``nodes_valid`` False, by the exact checker) are the dangerous mistakes the planner accepted:
-    large ink crosses ringed white, labelled. The path, checked exactly, avoids them; it is dashed with a diamond per
-    configuration (none beside an end), to stand apart from the solid C-obstacle boundary. The model's threshold is a
-    bold dotted line (P(valid) = threshold): the roadmap's dots on its dark side are nodes the model rejected, which
-    the exact checker drew. The map's mistakes are not marked: no hatch dot passes for a node, no square buries a cross.
-    ``edges (E, 2)``, node indices: the roadmap's edges, drawn faint.
+    vermillion squares ringed as the maps' dangerous squares, labelled; the start a triangle (r30c: a square there read
+    as one). The path, checked exactly, avoids them; it is dashed with a diamond per configuration (none beside an
+    end), to stand apart from the solid C-obstacle boundary. The model's threshold is a bold dotted line (P(valid) =
+    threshold): the roadmap's dots on its dark side are nodes the model rejected, which the exact checker drew. The
+    map's mistakes are not marked: no square of theirs passes for a node. ``edges (E, 2)``, node indices: the roadmap's
+    edges, thin ink lines.
     """
     nodes, nodes_valid, path = np.asarray(nodes), np.asarray(nodes_valid, dtype=bool), np.asarray(path)
     fig = Figure(figsize=(6, 6.2), layout="constrained")
@@ -128,7 +129,7 @@ def path_map(
     _legend(fig, [(line, line.get_label()) for line in [cut, *ax.get_lines()]])
     fit_cell_marks(fig, grid)
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
-    text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (crosses), and the"
+    text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (squares), and the"
     text += f" returned path through {len(path)} configurations, checked exactly."
     per_cell = answers.per_cell(nodes[:, [x, y]], grid)  # (nx, ny) roadmap nodes in each cell of the map
     parts = [
@@ -266,7 +267,7 @@ def _draw_mistakes(ax, grid: CSpaceSlice, codes) -> None:
 
 
 def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tuple[int, int], edges=None) -> None:
-    """A roadmap's valid nodes as dots, those in collision as crosses, its ``edges (E, 2)`` (node indices) as faint
+    """A roadmap's valid nodes as dots, those in collision as squares, its ``edges (E, 2)`` (node indices) as faint
     lines, and the path dashed with diamonds, over a map of the two ``dofs``."""
     x, y = dofs
     scale = np.abs(np.diff([ax.get_xlim(), ax.get_ylim()]).ravel())  # (2,) the map's width and height
@@ -274,11 +275,11 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     near = apart.max(axis=2).min(axis=1) < END_CLEAR  # (P,) beside an end: no diamond (r20b: one sat on the start)
     dots = dict(color=COLORS["node"], markersize=4, label="roadmap node, valid", path_effects=halo(0.5, ("free",)))
     ax.plot(nodes[nodes_valid, x], nodes[nodes_valid, y], ".", **dots)
-    if edges is not None and len(edges):  # faint, under the nodes: a node in collision visibly has none (r29c)
-        ends = nodes[np.asarray(edges)][..., [x, y]]  # (E, 2, 2)
-        ax.add_collection(LineCollection(ends, colors=COLORS["edge"], linewidths=0.4, alpha=0.5, zorder=2.2))
-    cross = dict(color=COLORS["ink"], markersize=14, label="roadmap node in collision", zorder=7)  # over the path (5)
-    ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], "X", path_effects=halo(1.0, ("free",)), **cross)  # ringed
+    if edges is not None and len(edges):  # thin, under the nodes: a node in collision visibly has none (r29c); ink,
+        ends = nodes[np.asarray(edges)][..., [x, y]]  # (E, 2, 2)  seen on the light and the mid greys (r30c)
+        ax.add_collection(LineCollection(ends, colors=COLORS["ink"], linewidths=0.5, alpha=0.6, zorder=2.2))
+    cross = dict(markersize=10, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True))  # over the path (5)
+    ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **cross)  # as the maps' squares (r30c)
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
     for node in nodes[~nodes_valid][:3]:  # a few named in words as well
         ax.annotate(
@@ -296,7 +297,7 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
         path_effects=halo(2.5),
         clip_on=False,  # whole where it ends on the map's edge
     )
-    for end, marker, size, name in ((0, "s", 11, "start"), (-1, "*", 20, "goal")):  # as chapter 04's roadmaps
+    for end, marker, size, name in ((0, "^", 12, "start"), (-1, "*", 20, "goal")):  # no square: that is a mistake
         ax.plot(
             path[end, x],
             path[end, y],
@@ -339,6 +340,7 @@ def _mistake_mark(code: int, *, legend: bool = False) -> dict[str, Any]:
     return dict(c=color, marker=MISTAKE_MARKERS[code], linewidths=0, path_effects=halo(MARK_RING), clip_on=False)
 
 
+COLLIDING = "roadmap node in collision\n(a dangerous mistake kept)"  # the path map's mark of one, a map's square
 MARK_RING = 1.0  # points: a mistake's black ring 1.3 points wide (2 pixels on the site), its white one 0.8 beyond
 
 
