@@ -513,7 +513,10 @@ def test_threshold_views_count_bars_are_the_counts_and_keep_them_inside_the_fram
 def test_metrics_bars_one_group_per_model():
     scores = {"paper": {"acc": 0.57, "tpr": 0.29, "tnr": 0.85}, "always valid": {"acc": 0.85, "tpr": 1.0, "tnr": 0.0}}
     ax = pc.metrics_bars(scores).axes[0]
-    assert [t.get_text() for t in ax.get_xticklabels()] == ["paper", "always valid"]
+    # reader r30c: each group's balanced accuracy printed under it, and a bar's value on the dashed line lifted off it
+    assert [t.get_text() for t in ax.get_xticklabels()] == ["paper\nbal. acc. 0.57", "always valid\nbal. acc. 0.50"]
+    offset = {(round(t.xy[0]), t.xy[1]): t.xyann[1] for t in ax.texts}  # (group, the bar's top): points above it
+    assert offset[0, 0.57] >= 5 and offset[1, 0.85] <= 2  # paper's accuracy on its line: lifted; one above: not
     heights = [bar.get_height() for bar in ax.patches]  # drawn measure by measure: acc of each, then tpr, then tnr
     assert heights == [0.57, 0.85, 0.29, 1.0, 0.85, 0.0]
 
@@ -581,6 +584,10 @@ def test_the_threshold_sweeps_legend_lies_below_its_curves(probability, valid):
     fig.draw(renderer)
     (legend,) = fig.legends
     assert legend.get_window_extent(renderer).y1 <= fig.axes[0].get_window_extent(renderer).y0  # over no curve
+    # reader r30c: TPR was a vermillion line of squares, chapter 03's mark of "invalid kept"; no curve is now
+    assert not any(
+        to_hex(line.get_color()) == COLORS["dangerous"] or line.get_marker() == "s" for line in fig.axes[0].get_lines()
+    )
 
 
 def test_the_outline_runs_on_the_cells_edges_so_a_corner_cells_mark_lies_inside_it():

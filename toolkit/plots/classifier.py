@@ -1,26 +1,23 @@
 """Figures of the collision MLP (paper §III-B, Table 2): where it says "valid", and where it is wrong (notebook 03).
 
-The MLP answers P(valid) for a configuration; the learned checker calls it valid when
-P(valid) >= a threshold. Against the exact checker each answer is one of four kinds
-(:mod:`toolkit.plots.answers` codes, counts and sweeps them):
+The MLP answers P(valid) for a configuration; the learned checker calls it valid when P(valid) >= a threshold.
+Against the exact checker each answer is one of four kinds (:mod:`toolkit.plots.answers` codes, counts and sweeps them):
 
-- *valid kept* and *invalid rejected*: right (TPR and TNR count them, as
-  :func:`toolkit.learning.metrics.classification` does);
+- *valid kept* and *invalid rejected*: right (TPR and TNR count them: :func:`toolkit.learning.metrics.classification`);
 - *valid rejected* (a false invalid): a **conservative** mistake, it only costs a sample;
-- *invalid kept* (a false valid): a **dangerous** mistake, a configuration in collision
-  that the planner would trust, unless it checks its path exactly (``toolkit.planning.prm`` does).
+- *invalid kept* (a false valid): a **dangerous** mistake, a configuration in collision that the planner would trust,
+  unless it checks its path exactly (``toolkit.planning.prm`` does).
 
-The maps here sweep two degrees of freedom over their bounds (:func:`toolkit.plots.slices.slice_grid`;
-the point robot's whole C-space, or a 2-DoF slice of a 3D robot with the other joints
-fixed), show P(valid) as an image, draw the true C-obstacle boundary over it and mark
-every mistake at its cell: dangerous ones as squares, conservative ones as circles, a mark per block of cells
-holding any where the map is fine, spaced so that the grey between them is P(valid) (review r18b: a hatch of dots
-hid it on the `paper` preset's map) and the squares can be counted; each map's title counts both kinds.
+The maps here sweep two degrees of freedom over their bounds (:func:`toolkit.plots.slices.slice_grid`; the point
+robot's whole C-space, or a 2-DoF slice of a 3D robot with the other joints fixed), show P(valid) as an image, draw the
+true C-obstacle boundary over it and mark every mistake at its cell: dangerous ones as squares, conservative ones as
+circles, a mark per block of cells holding any where the map is fine, spaced so that the grey between them is P(valid)
+(review r18b: a hatch of dots hid it on the `paper` preset's map) and the squares can be counted; each map's title
+counts both kinds.
 
 >>> grid = slice_grid(robot, dofs=(0, 1), n=80)  # doctest: +SKIP
 >>> probability = grid.image(checker.probability(grid.configs))  # (80, 80)  # doctest: +SKIP
->>> valid = grid.image(exact.are_valid(grid.configs))  # (80, 80)  # doctest: +SKIP
->>> probability_map(probability, valid, grid, threshold=checker.threshold)  # doctest: +SKIP
+>>> probability_map(probability, grid.image(exact.are_valid(grid.configs)), grid, threshold=0.5)  # doctest: +SKIP
 """
 
 from __future__ import annotations
@@ -34,6 +31,7 @@ from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
+from matplotlib.text import Annotation
 
 from toolkit.learning import metrics
 from toolkit.plots import answers
@@ -160,8 +158,16 @@ def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> 
     balanced = [(s["tpr"] + s["tnr"]) / 2 for s in scores.values()]
     x, line = np.arange(len(scores)), dict(linestyles="--", linewidth=1.5, zorder=4, label="balanced accuracy")
     ax.hlines(balanced, x - 0.42, x + 0.42, colors=COLORS["ink"], path_effects=halo(1.5, ("free",)), **line)  # type: ignore[arg-type]
+    if any(scores):  # each group's balanced accuracy named under it; a bar's value on the line lifted off it (r30c)
+        ax.set_xticks(x, [f"{name}\nbal. acc. {b:.2f}" for name, b in zip(scores, balanced)], fontsize=8)
     ax.legend(fontsize=8, loc="upper center", ncols=2, frameon=False)  # the rates' legend, and the line's
     fig.suptitle(title or "Accuracy, TPR (valid kept), TNR (invalid rejected)")
+    fig.draw_without_rendering()  # laid out: a share's height in points
+    per = ax.bbox.height / np.diff(ax.get_ylim())[0] * 72 / fig.dpi
+    for value in [t for t in ax.texts if isinstance(t, Annotation)]:  # bar_label's: at (a bar's middle, its top)
+        below = balanced[round(value.xy[0])] - value.xy[1]  # the dashed line above the bar; the value ~20 points long
+        if -0.03 < below < 24 / per:
+            value.xyann = (value.xyann[0], max(value.xyann[1], below * per + 5))  # starts above the dashed line
     said = "; ".join(
         f"{name}: accuracy {s['acc']:.2f}, TPR {s['tpr']:.2f}, TNR {s['tnr']:.2f}, balanced accuracy {b:.2f}"
         for (name, s), b in zip(scores.items(), balanced)
@@ -297,19 +303,11 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
         path_effects=halo(2.5),
         clip_on=False,  # whole where it ends on the map's edge
     )
-    for end, marker, size, name in ((0, "^", 12, "start"), (-1, "*", 20, "goal")):  # no square: that is a mistake
-        ax.plot(
-            path[end, x],
-            path[end, y],
-            marker,
-            color=COLORS["endpoint"],
-            markeredgecolor=COLORS["free"],
-            markersize=size,
-            label=name,
-            clip_on=False,  # whole on the map's edge, over the frame
-            zorder=5,
-            path_effects=halo(0.0, ("ink",)),  # black, a white edge, a black ring: its whole shape shows on the
-        )  # map's dark side, on its light side and on the white beyond the frame
+    # the ends black, a white edge, a black ring: their whole shape shows on the map's dark side, on its light side
+    # and, drawn whole on the map's edge over the frame, on the white beyond it
+    end = dict(color=COLORS["endpoint"], markeredgecolor=COLORS["free"], clip_on=False, zorder=5)
+    for at, marker, size, name in ((0, "^", 12, "start"), (-1, "*", 20, "goal")):  # no square: that is a mistake
+        ax.plot(*path[at, [x, y]], marker, markersize=size, label=name, path_effects=halo(0.0, ("ink",)), **end)
 
 
 def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):
