@@ -188,9 +188,10 @@ def roc_curve(curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]], title:
 def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, title: str = "") -> Figure:
     """One threshold three ways: the decision map (each cell coloured by its kind of answer), the counts, the ROC."""
     predicted = np.asarray(probability) >= threshold
-    fig = Figure(figsize=(6.2, 6.8), layout="constrained")  # two rows, as wide as a chapter page's column
-    grid_spec = fig.add_gridspec(2, 2, height_ratios=(1.4, 1), width_ratios=(1.6, 1))  # the map large: its marks small
-    ax_map, ax_counts, ax_roc = (fig.add_subplot(grid_spec[where]) for where in ((0, 0), (1, slice(None)), (0, 1)))
+    fig = Figure(figsize=(6.2, 8.4), layout="constrained")  # two rows, as wide as a chapter page's column
+    grid_spec = fig.add_gridspec(2, 2, height_ratios=(2, 1), width_ratios=(1.5, 1))  # the map the page's width (r30c:
+    ax_map, ax_counts, ax_roc = (fig.add_subplot(grid_spec[where]) for where in ((0, slice(None)), (1, 0), (1, 1)))
+    ax_map.set_box_aspect(1)  # a third of it, its vermillion patch hid under its two squares), the ROC by the counts
     _draw_decision(ax_map, predicted, valid, grid)
     _draw_counts(ax_counts, predicted, valid)
     roc = answers.draw_roc(ax_roc, {"": (probability, valid, threshold)})
@@ -391,7 +392,7 @@ def _draw_counts(ax, predicted_valid, valid) -> None:
         ax.plot(code, counts[ANSWERS[code]], linestyle="", clip_on=False, **_mistake_mark(code, legend=True))
     ax.bar_label(bars, fontsize=9, padding=6)
     ax.set_ylim(0, 1.18 * max(max(counts.values()), 1))  # room above the tallest bar for its count, inside the frame
-    ax.set_xticks(range(len(counts)), [a.replace(" ", "\n", 1) for a in ANSWERS], fontsize=9)
+    ax.set_xticks(range(len(counts)), [a.replace(" ", "\n") for a in ANSWERS], fontsize=9)
     ax.set_xlabel("answer")
     ax.set_ylabel("configurations")
     rates = metrics.classification(np.ravel(predicted_valid), np.ravel(valid))
