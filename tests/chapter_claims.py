@@ -390,7 +390,8 @@ def _chapter_03_verdict(nb, found: str) -> list[str]:
     chance only where its sentence does (review r16b: "worse than chance" beside a balanced accuracy of 54 %)."""
     row = {
         (who, kind): _percent(found, f"| {label} | {kind}")
-        for who, label in (("paper", "`paper` preset, 2DS unseen"), ("strong", "`strong` preset, 2DS unseen"))
+        for who in ("paper", "strong")  # this page's draw, not the recorded run above it (r30c)
+        for label in [f"`{who}` preset, 2DS unseen, this page's draw (section 4)"]
         for kind in ("balanced", "validity-blind")
     }
     always = _percent(found, "| always valid | validity-blind")
