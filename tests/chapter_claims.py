@@ -282,7 +282,9 @@ def chapter_03(nb) -> list[str]:
     r16b: 38 % on samples 86 % valid, balanced accuracy 54 %, was called worse than chance); section 6's sweep."""
     found, problems = " ".join(texts(nb)), []
     rows = {  # the closing table's rows: accuracy, TPR and TNR ("TPR / TNR" one cell), balanced accuracy last
-        (row[0], row[1]): [int(v) for v in re.findall(r"(\d+)%", " ".join(row[2:4]))]
+        (row[0].removesuffix(", this page's draw (section 4)"), row[1]): [  # r30c: beside the recorded run's
+            int(v) for v in re.findall(r"(\d+)%", " ".join(row[2:4]))
+        ]
         for _, rs in tables(nb)
         for row in rs
         if len(row) == 5 and row[2].endswith("%") and " / " in row[3]
@@ -324,7 +326,7 @@ def _chapter_03_opening(nb) -> list[str]:
     `paper` preset about a coin flip by balanced accuracy on 2DS, the `strong` preset "almost perfectly" (90 % or more)
     on 2DS and 3DC-7."""
     said = {  # a row's label without what it explains in brackets (r29c: "preset" and "3DC-7" defined in the rows)
-        re.sub(r" \([^()]*\)", "", row[0]): float(row[1].rstrip("%"))  # the paper's 87.5 %, to a tenth
+        re.sub(r" \([^()]*\)", "", row[0]).removesuffix(", recorded run"): float(row[1].rstrip("%"))  # 87.5 %
         for header, rs in tables(nb)
         if header and header[0] == "model, unseen workspaces"
         for row in rs
@@ -392,7 +394,8 @@ def _chapter_03_verdict(nb, found: str) -> list[str]:
     chance only where its sentence does (review r16b: "worse than chance" beside a balanced accuracy of 54 %)."""
     row = {
         (who, kind): _percent(found, f"| {label} | {kind}")
-        for who, label in (("paper", "`paper` preset, 2DS unseen"), ("strong", "`strong` preset, 2DS unseen"))
+        for who in ("paper", "strong")  # this page's draw, not the recorded run above it (r30c)
+        for label in [f"`{who}` preset, 2DS unseen, this page's draw (section 4)"]
         for kind in ("balanced", "validity-blind")
     }
     always = _percent(found, "| always valid | validity-blind")

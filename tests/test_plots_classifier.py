@@ -297,6 +297,37 @@ def test_each_mark_sits_on_a_mistake_of_its_kind():
     assert block_of_squares(fig, "circles") > 1 and block_of_squares(fig, "squares") > 1  # merged into blocks
 
 
+def test_each_mark_sits_on_its_blocks_cell_deepest_inside_its_side():
+    """Reader r30c, chapter 03: squares centred on an outline's corner cell lay half in the free space beside it, and
+    the page had to say "its shape, not its place, tells the side". A square now sits on a cell with no free cell
+    beside it wherever its block holds such a dangerous cell, and a circle on a cell with no obstacle cell beside it
+    wherever its block holds such a conservative one."""
+    fine = slices.slice_grid(robots.point_robot(), n=100)
+    ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
+    valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (100, 100)
+    i, j = np.nonzero(~valid)
+    ring = np.zeros_like(valid)
+    ring[i.min() - 2 : i.max() + 3, j.min() - 2 : j.max() + 3] = True  # the block and two cells around it
+    ring[i.min() + 2 : i.max() - 1, j.min() + 2 : j.max() - 1] = False  # less all but its two outer cells
+    probability = np.where(valid != ring, 0.9, 0.1)  # wrong on a band four cells wide along the block's outline
+    fig = pc.probability_map(probability, valid, fine, threshold=0.5)
+    ax = fig.axes[0]
+    codes = answers.answer_codes(probability >= 0.5, valid)
+    first, cell = np.array([fine.axes[0][0], fine.axes[1][0]]), fine.axes[0][1] - fine.axes[0][0]
+    for label, kind, code in (("invalid kept (dangerous)", "squares", 3), ("valid rejected", "circles", 1)):
+        side = ~valid if code == 3 else valid  # (100, 100) the side the mark names
+        padded = np.pad(side, 1, constant_values=True)  # the map's edge is no cell of the other side
+        inside = np.all([padded[1 + a : 101 + a, 1 + b : 101 + b] for a in (-1, 0, 1) for b in (-1, 0, 1)], axis=0)
+        k = block_of_squares(fig, kind)
+        (mark,) = [c for c in cell_marks.cell_marks(ax) if c.get_label() == label]
+        at = np.rint((np.asarray(mark.get_offsets()) - first) / cell).astype(int)  # (m, 2) the cells under the marks
+        assert len(at) and k > 1, label
+        for i, j in at:
+            block = (slice(i // k * k, i // k * k + k), slice(j // k * k, j // k * k + k))
+            if (inside[block] & (codes[block] == code)).any():
+                assert inside[i, j], (label, i, j)
+
+
 def test_a_maps_circles_lie_over_its_outlines_and_every_mark_inside_its_frame():
     """Reader r19b, chapter 03's 3DC-7 slices at full size: a top row of marks sat on the map's frame, half outside it;
     reader r29c: circles under the outlines were half hidden. On a P(valid) map the circles lie over the outlines, the
@@ -415,13 +446,17 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     np.testing.assert_array_equal(drawn.get_segments()[0], nodes[[0, 2]])
     lines = {line.get_label(): np.column_stack([line.get_xdata(), line.get_ydata()]) for line in ax.get_lines()}
     np.testing.assert_array_equal(lines["returned path (checked exactly)"], path)
-    np.testing.assert_array_equal(lines["roadmap node in collision"], nodes[~nodes_valid])
+    np.testing.assert_array_equal(lines[pc.COLLIDING], nodes[~nodes_valid])
     np.testing.assert_array_equal(lines["roadmap node, valid"], nodes[nodes_valid])
     np.testing.assert_array_equal(ax.images[0].get_array(), probability.T)
     path_line = next(line for line in ax.get_lines() if line.get_label() == "returned path (checked exactly)")
     assert path_line.get_linestyle() == "--" and path_line.get_marker() == "D"  # not the boundary's solid line
-    crosses = next(line for line in ax.get_lines() if line.get_label() == "roadmap node in collision")
-    assert crosses.get_zorder() > path_line.get_zorder()
+    squares = next(line for line in ax.get_lines() if line.get_label() == pc.COLLIDING)
+    assert squares.get_zorder() > path_line.get_zorder()
+    # reader r30c: a node in collision is marked as the maps' dangerous squares, and the start is no square
+    assert (squares.get_marker(), to_hex(squares.get_color())) == ("s", COLORS["dangerous"])
+    assert next(line for line in ax.get_lines() if line.get_label() == "start").get_marker() != "s"
+    assert to_hex(drawn.get_colors()[0]) == COLORS["ink"]  # the edges: ink, seen on the light and the mid greys
     # readers r12b, r13b, r15c: a cross among the map's dangerous squares hid there; the map's mistakes go unmarked
     assert [c.get_label() for c in ax.collections if c.get_label() in answers.ANSWERS] == []
     (cut,) = [
@@ -478,7 +513,10 @@ def test_threshold_views_count_bars_are_the_counts_and_keep_them_inside_the_fram
 def test_metrics_bars_one_group_per_model():
     scores = {"paper": {"acc": 0.57, "tpr": 0.29, "tnr": 0.85}, "always valid": {"acc": 0.85, "tpr": 1.0, "tnr": 0.0}}
     ax = pc.metrics_bars(scores).axes[0]
-    assert [t.get_text() for t in ax.get_xticklabels()] == ["paper", "always valid"]
+    # reader r30c: each group's balanced accuracy printed under it, and a bar's value on the dashed line lifted off it
+    assert [t.get_text() for t in ax.get_xticklabels()] == ["paper\nbal. acc. 0.57", "always valid\nbal. acc. 0.50"]
+    offset = {(round(t.xy[0]), t.xy[1]): t.xyann[1] for t in ax.texts}  # (group, the bar's top): points above it
+    assert offset[0, 0.57] >= 5 and offset[1, 0.85] <= 2  # paper's accuracy on its line: lifted; one above: not
     heights = [bar.get_height() for bar in ax.patches]  # drawn measure by measure: acc of each, then tpr, then tnr
     assert heights == [0.57, 0.85, 0.29, 1.0, 0.85, 0.0]
 
@@ -546,6 +584,10 @@ def test_the_threshold_sweeps_legend_lies_below_its_curves(probability, valid):
     fig.draw(renderer)
     (legend,) = fig.legends
     assert legend.get_window_extent(renderer).y1 <= fig.axes[0].get_window_extent(renderer).y0  # over no curve
+    # reader r30c: TPR was a vermillion line of squares, chapter 03's mark of "invalid kept"; no curve is now
+    assert not any(
+        to_hex(line.get_color()) == COLORS["dangerous"] or line.get_marker() == "s" for line in fig.axes[0].get_lines()
+    )
 
 
 def test_the_outline_runs_on_the_cells_edges_so_a_corner_cells_mark_lies_inside_it():

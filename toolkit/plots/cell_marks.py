@@ -12,16 +12,22 @@ wide at :data:`MARK_SHARE` of its block, that keep two marks' centres at least t
 with apart (review r18b: on chapter 03's `paper` map a pile of squares a block apart merged into one shape that could
 not be counted), and that make the ``blocks`` a side they asked for, rounded up to divide the map's side; a mark
 drawn with a pitch sits on a cell near its block's middle where it can, so that two in neighbouring blocks keep
-:data:`CLEAR` between them, and inside the map's frame (a mark on an edge cell moves in by its rings' width).
+:data:`CLEAR` between them, and inside the map's frame (a mark on an edge cell moves in by its rings' width). Marks
+drawn with a ``depth`` (:func:`depth_inside`: how far each cell lies inside its side of a line) sit first on their
+block's cell deepest inside, up to the depth that holds the whole mark (reader r30c: squares centred on an outline's
+corner cell lay half in the free space beside it).
 """
 
 from __future__ import annotations
+
+from weakref import WeakKeyDictionary
 
 import numpy as np
 from matplotlib.axes import Axes
 from matplotlib.collections import PathCollection
 from matplotlib.contour import QuadContourSet
 from matplotlib.figure import Figure
+from scipy.ndimage import distance_transform_edt
 
 from toolkit.plots.slices import CSpaceSlice
 
@@ -32,16 +38,30 @@ CLEAR = 6.0  # points between two marks' sides, at least, where drawn with a pit
 RING = 2.1  # points: a mark's rings beyond its side, kept inside the map's frame with it (r19b: a top row of marks
 # sat on the frame, half outside the map)
 GID = "cell marks"  # how fit_cell_marks finds the marks draw_cell_marks drew ("cell marks:PITCH")
+_DEPTH: WeakKeyDictionary[PathCollection, np.ndarray] = WeakKeyDictionary()  # marks' cells' depth (n,), where given
 
 
-def draw_cell_marks(ax, grid: CSpaceSlice, mask, *, pitch: float = 0.0, blocks: int = 0, **style) -> PathCollection:
+def depth_inside(region) -> np.ndarray:
+    """Each cell's distance, in cells, from the nearest cell outside ``region (nx, ny)`` (a cell of it beside one: 1;
+    outside it: 0): how far inside its side of the region's outline a cell lies."""
+    region = np.asarray(region, dtype=bool)
+    return np.asarray(distance_transform_edt(region), dtype=float) if (~region).any() else np.full(region.shape, 1e9)
+
+
+def draw_cell_marks(
+    ax, grid: CSpaceSlice, mask, *, pitch: float = 0.0, blocks: int = 0, depth=None, **style
+) -> PathCollection:
     """A mark (``style``: scatter's options) at the centre of each cell of ``grid`` where ``mask (nx, ny)`` holds,
     over the map, under the lines on it (a boundary stays whole) unless ``style`` gives a ``zorder`` above them;
     :func:`fit_cell_marks` sizes them once laid out, no two closer than ``pitch`` points (0: a block's width), one per
     block of at least ``n / blocks`` cells a side (0: as small as they fit), so that every map of a figure, and of a
-    page that asks the same ``blocks``, marks the same cells alike (reader r29c: 5, 7 and 14 cells on three maps)."""
+    page that asks the same ``blocks``, marks the same cells alike (reader r29c: 5, 7 and 14 cells on three maps);
+    ``depth (nx, ny)`` (:func:`depth_inside`), where given, puts a block's mark on its cell deepest inside."""
     i, j = np.nonzero(mask)
-    return ax.scatter(grid.axes[0][i], grid.axes[1][j], s=MIN_MARK**2, gid=f"{GID}:{pitch:g}:{blocks}", **style)
+    marks = ax.scatter(grid.axes[0][i], grid.axes[1][j], s=MIN_MARK**2, gid=f"{GID}:{pitch:g}:{blocks}", **style)
+    if depth is not None:
+        _DEPTH[marks] = np.asarray(depth, dtype=float)[i, j]
+    return marks
 
 
 def block_side(needed: int, blocks: int, shape: tuple[int, ...]) -> int:
@@ -86,9 +106,16 @@ def fit_cell_marks(fig: Figure, grid: CSpaceSlice) -> dict[str, int]:
             spread = max(0.0, (k * side - size - CLEAR) / (2 * side)) if pitch else k  # cells off the middle, at most
             apart = (size + CLEAR) / side if pitch else 0.0  # cells between two marks' centres, at least
             centres = np.empty((len(block), 2))  # (m, 2) each on one of its block's marked cells
+            depth = _DEPTH.get(mark, np.zeros(len(cells)))  # (n,) each cell's depth inside its side
+            depth = np.minimum(depth, np.ceil((size / 2 + RING) / side) + 1)  # deeper holds the mark no better
             for b in range(len(block)):
                 centres[b] = _on_a_cell(
-                    cells[block_of == b], middle[b], spread, centres[:b][~np.isnan(centres[:b, 0])], apart
+                    cells[block_of == b],
+                    middle[b],
+                    spread,
+                    centres[:b][~np.isnan(centres[:b, 0])],
+                    apart,
+                    depth[block_of == b],
                 )
             centres = centres[~np.isnan(centres[:, 0])]
             inset = max(0.0, (size / 2 + RING) / side - 0.5)  # cells: from the edge cells' centres to a whole mark
@@ -97,12 +124,14 @@ def fit_cell_marks(fig: Figure, grid: CSpaceSlice) -> dict[str, int]:
     return blocks
 
 
-def _on_a_cell(cells: np.ndarray, middle: np.ndarray, spread: float, placed: np.ndarray, apart: float) -> np.ndarray:
-    """The one of a block's marked ``cells (n, 2)`` its mark sits on: the nearest their mean (clipped to ``spread``
-    cells of the block's ``middle``) of those at least ``apart`` cells from every mark ``placed (p, 2)``, the window's
-    first; where none is that far, none (NaN: they lie beside that mark, less than a block from it). Never the mean
-    itself (review r26c: a block's mistakes on two of an obstacle's edges averaged into its inside, where a circle then
-    claimed a free cell rejected)."""
+def _on_a_cell(
+    cells: np.ndarray, middle: np.ndarray, spread: float, placed: np.ndarray, apart: float, depth: np.ndarray
+) -> np.ndarray:
+    """The one of a block's marked ``cells (n, 2)`` its mark sits on: of those at least ``apart`` cells from every
+    mark ``placed (p, 2)``, the deepest inside its side (``depth (n,)``, r30c), then the nearest their mean (clipped to
+    ``spread`` cells of the block's ``middle``), the window's first; where none is that far, none (NaN: they lie beside
+    that mark, less than a block from it). Never the mean itself (review r26c: a block's mistakes on two of an
+    obstacle's edges averaged into its inside, where a circle then claimed a free cell rejected)."""
     mean = np.clip(cells.mean(axis=0), middle - spread, middle + spread)  # (2,) where the mark would best sit
     near = np.max(np.abs(cells - mean), axis=1) + 1e6 * (np.max(np.abs(cells - middle), axis=1) > spread + 1e-9)
     clear = (
@@ -111,7 +140,8 @@ def _on_a_cell(cells: np.ndarray, middle: np.ndarray, spread: float, placed: np.
         else np.full(len(cells), np.inf)
     )
     if (clear >= apart - 1e-9).any():
-        return cells[np.argmin(np.where(clear >= apart - 1e-9, near, np.inf))].astype(float)
+        shallow = np.max(depth) - depth  # (n,) 0 for the deepest
+        return cells[np.argmin(np.where(clear >= apart - 1e-9, near + 1e9 * shallow, np.inf))].astype(float)
     return np.full(2, np.nan)  # every one of them beside a mark already: that mark stands for them too
 
 

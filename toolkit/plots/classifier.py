@@ -1,26 +1,23 @@
 """Figures of the collision MLP (paper §III-B, Table 2): where it says "valid", and where it is wrong (notebook 03).
 
-The MLP answers P(valid) for a configuration; the learned checker calls it valid when
-P(valid) >= a threshold. Against the exact checker each answer is one of four kinds
-(:mod:`toolkit.plots.answers` codes, counts and sweeps them):
+The MLP answers P(valid) for a configuration; the learned checker calls it valid when P(valid) >= a threshold.
+Against the exact checker each answer is one of four kinds (:mod:`toolkit.plots.answers` codes, counts and sweeps them):
 
-- *valid kept* and *invalid rejected*: right (TPR and TNR count them, as
-  :func:`toolkit.learning.metrics.classification` does);
+- *valid kept* and *invalid rejected*: right (TPR and TNR count them: :func:`toolkit.learning.metrics.classification`);
 - *valid rejected* (a false invalid): a **conservative** mistake, it only costs a sample;
-- *invalid kept* (a false valid): a **dangerous** mistake, a configuration in collision
-  that the planner would trust, unless it checks its path exactly (``toolkit.planning.prm`` does).
+- *invalid kept* (a false valid): a **dangerous** mistake, a configuration in collision that the planner would trust,
+  unless it checks its path exactly (``toolkit.planning.prm`` does).
 
-The maps here sweep two degrees of freedom over their bounds (:func:`toolkit.plots.slices.slice_grid`;
-the point robot's whole C-space, or a 2-DoF slice of a 3D robot with the other joints
-fixed), show P(valid) as an image, draw the true C-obstacle boundary over it and mark
-every mistake at its cell: dangerous ones as squares, conservative ones as circles, a mark per block of cells
-holding any where the map is fine, spaced so that the grey between them is P(valid) (review r18b: a hatch of dots
-hid it on the `paper` preset's map) and the squares can be counted; each map's title counts both kinds.
+The maps here sweep two degrees of freedom over their bounds (:func:`toolkit.plots.slices.slice_grid`; the point
+robot's whole C-space, or a 2-DoF slice of a 3D robot with the other joints fixed), show P(valid) as an image, draw the
+true C-obstacle boundary over it and mark every mistake at its cell: dangerous ones as squares, conservative ones as
+circles, a mark per block of cells holding any where the map is fine, spaced so that the grey between them is P(valid)
+(review r18b: a hatch of dots hid it on the `paper` preset's map) and the squares can be counted; each map's title
+counts both kinds.
 
 >>> grid = slice_grid(robot, dofs=(0, 1), n=80)  # doctest: +SKIP
 >>> probability = grid.image(checker.probability(grid.configs))  # (80, 80)  # doctest: +SKIP
->>> valid = grid.image(exact.are_valid(grid.configs))  # (80, 80)  # doctest: +SKIP
->>> probability_map(probability, valid, grid, threshold=checker.threshold)  # doctest: +SKIP
+>>> probability_map(probability, grid.image(exact.are_valid(grid.configs)), grid, threshold=0.5)  # doctest: +SKIP
 """
 
 from __future__ import annotations
@@ -34,12 +31,13 @@ from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
+from matplotlib.text import Annotation
 
 from toolkit.learning import metrics
 from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
-from toolkit.plots.cell_marks import draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
+from toolkit.plots.cell_marks import depth_inside, draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
 from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import dof_label
 from toolkit.plots.slices import CSpaceSlice
@@ -50,10 +48,7 @@ MISTAKE_MARKERS = {1: "o", 3: "s"}  # conservative circles, dangerous squares: t
 CUT = 2.5  # points: the path map's dotted line at the model's threshold, bold enough to follow across the map (r15c)
 END_CLEAR = 0.06  # of a map's width: a path's diamond nearer an end than this is left out, the end's mark beside it
 CUT_MAP = 1.5  # points: the same line on a map of mistakes, whose marks it must not bury
-ZORDER = {
-    1: 2.8,
-    3: 3.0,
-}  # over the lines (2: the boundary, 2.5: the threshold's contour), the squares over the circles
+ZORDER = {1: 2.8, 3: 3.0}  # over the lines (2: the boundary, 2.5: the threshold's contour), squares over circles
 # (r29c: circles under the outlines were half hidden; r10b, r11: a square under its ringed line was cut in two)
 PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
@@ -113,11 +108,12 @@ def path_map(
     """A planner's roadmap ``nodes (M, dof)`` and returned ``path (P, dof)`` over a P(valid) map of the grid's two DoFs.
 
     Nodes in collision (``nodes_valid`` False, by the exact checker) are the dangerous mistakes the planner accepted:
-    large ink crosses ringed white, labelled. The path, checked exactly, avoids them; it is dashed with a diamond per
-    configuration (none beside an end), to stand apart from the solid C-obstacle boundary. The model's threshold is a
-    bold dotted line (P(valid) = threshold): the roadmap's dots on its dark side are nodes the model rejected, which
-    the exact checker drew. The map's mistakes are not marked: no hatch dot passes for a node, no square buries a cross.
-    ``edges (E, 2)``, node indices: the roadmap's edges, drawn faint.
+    vermillion squares ringed as the maps' dangerous squares, labelled; the start a triangle (r30c: a square there read
+    as one). The path, checked exactly, avoids them; it is dashed with a diamond per configuration (none beside an
+    end), to stand apart from the solid C-obstacle boundary. The model's threshold is a bold dotted line (P(valid) =
+    threshold): the roadmap's dots on its dark side are nodes the model rejected, which the exact checker drew. The
+    map's mistakes are not marked: no square of theirs passes for a node. ``edges (E, 2)``, node indices: the roadmap's
+    edges, thin ink lines.
     """
     nodes, nodes_valid, path = np.asarray(nodes), np.asarray(nodes_valid, dtype=bool), np.asarray(path)
     fig = Figure(figsize=(6, 6.2), layout="constrained")
@@ -131,7 +127,7 @@ def path_map(
     _legend(fig, [(line, line.get_label()) for line in [cut, *ax.get_lines()]])
     fit_cell_marks(fig, grid)
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
-    text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (crosses), and the"
+    text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (squares), and the"
     text += f" returned path through {len(path)} configurations, checked exactly."
     per_cell = answers.per_cell(nodes[:, [x, y]], grid)  # (nx, ny) roadmap nodes in each cell of the map
     parts = [
@@ -162,8 +158,16 @@ def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> 
     balanced = [(s["tpr"] + s["tnr"]) / 2 for s in scores.values()]
     x, line = np.arange(len(scores)), dict(linestyles="--", linewidth=1.5, zorder=4, label="balanced accuracy")
     ax.hlines(balanced, x - 0.42, x + 0.42, colors=COLORS["ink"], path_effects=halo(1.5, ("free",)), **line)  # type: ignore[arg-type]
+    if any(scores):  # each group's balanced accuracy named under it; a bar's value on the line lifted off it (r30c)
+        ax.set_xticks(x, [f"{name}\nbal. acc. {b:.2f}" for name, b in zip(scores, balanced)], fontsize=8)
     ax.legend(fontsize=8, loc="upper center", ncols=2, frameon=False)  # the rates' legend, and the line's
     fig.suptitle(title or "Accuracy, TPR (valid kept), TNR (invalid rejected)")
+    fig.draw_without_rendering()  # laid out: a share's height in points
+    per = ax.bbox.height / np.diff(ax.get_ylim())[0] * 72 / fig.dpi
+    for value in [t for t in ax.texts if isinstance(t, Annotation)]:  # bar_label's: at (a bar's middle, its top)
+        below = balanced[round(value.xy[0])] - value.xy[1]  # the dashed line above the bar; the value ~20 points long
+        if -0.03 < below < 24 / per:
+            value.xyann = (value.xyann[0], max(value.xyann[1], below * per + 5))  # starts above the dashed line
     said = "; ".join(
         f"{name}: accuracy {s['acc']:.2f}, TPR {s['tpr']:.2f}, TNR {s['tnr']:.2f}, balanced accuracy {b:.2f}"
         for (name, s), b in zip(scores.items(), balanced)
@@ -184,9 +188,10 @@ def roc_curve(curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]], title:
 def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, title: str = "") -> Figure:
     """One threshold three ways: the decision map (each cell coloured by its kind of answer), the counts, the ROC."""
     predicted = np.asarray(probability) >= threshold
-    fig = Figure(figsize=(6.2, 6.8), layout="constrained")  # two rows, as wide as a chapter page's column
-    grid_spec = fig.add_gridspec(2, 2, height_ratios=(1.4, 1), width_ratios=(1.6, 1))  # the map large: its marks small
-    ax_map, ax_counts, ax_roc = (fig.add_subplot(grid_spec[where]) for where in ((0, 0), (1, slice(None)), (0, 1)))
+    fig = Figure(figsize=(6.2, 8.4), layout="constrained")  # two rows, as wide as a chapter page's column
+    grid_spec = fig.add_gridspec(2, 2, height_ratios=(2, 1), width_ratios=(1.5, 1))  # the map the page's width (r30c:
+    ax_map, ax_counts, ax_roc = (fig.add_subplot(grid_spec[where]) for where in ((0, slice(None)), (1, 0), (1, 1)))
+    ax_map.set_box_aspect(1)  # a third of it, its vermillion patch hid under its two squares), the ROC by the counts
     _draw_decision(ax_map, predicted, valid, grid)
     _draw_counts(ax_counts, predicted, valid)
     roc = answers.draw_roc(ax_roc, {"": (probability, valid, threshold)})
@@ -258,14 +263,18 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
 
 
 def _draw_mistakes(ax, grid: CSpaceSlice, codes) -> None:
-    """Every map's mistakes alike: circles, then squares over them, one per block of ``BLOCKS`` a side."""
+    """Every map's mistakes alike: circles, then squares over them, one per block of ``BLOCKS`` a side, each on its
+    block's cell deepest inside its side of the outline (r30c: the squares on outline corners lay half in free space),
+    the squares inside the C-obstacle, the circles outside it."""
+    valid = codes <= 1  # (nx, ny) the truth: valid kept or rejected
     for code in MISTAKE_MARKERS:
         style = dict(label=ANSWERS[code], zorder=ZORDER[code], **_mistake_mark(code))
-        draw_cell_marks(ax, grid, codes == code, pitch=PITCH[code], blocks=BLOCKS[code], **style)
+        depth = depth_inside(valid if code == 1 else ~valid)
+        draw_cell_marks(ax, grid, codes == code, pitch=PITCH[code], blocks=BLOCKS[code], depth=depth, **style)
 
 
 def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tuple[int, int], edges=None) -> None:
-    """A roadmap's valid nodes as dots, those in collision as crosses, its ``edges (E, 2)`` (node indices) as faint
+    """A roadmap's valid nodes as dots, those in collision as squares, its ``edges (E, 2)`` (node indices) as faint
     lines, and the path dashed with diamonds, over a map of the two ``dofs``."""
     x, y = dofs
     scale = np.abs(np.diff([ax.get_xlim(), ax.get_ylim()]).ravel())  # (2,) the map's width and height
@@ -273,11 +282,11 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     near = apart.max(axis=2).min(axis=1) < END_CLEAR  # (P,) beside an end: no diamond (r20b: one sat on the start)
     dots = dict(color=COLORS["node"], markersize=4, label="roadmap node, valid", path_effects=halo(0.5, ("free",)))
     ax.plot(nodes[nodes_valid, x], nodes[nodes_valid, y], ".", **dots)
-    if edges is not None and len(edges):  # faint, under the nodes: a node in collision visibly has none (r29c)
-        ends = nodes[np.asarray(edges)][..., [x, y]]  # (E, 2, 2)
-        ax.add_collection(LineCollection(ends, colors=COLORS["edge"], linewidths=0.4, alpha=0.5, zorder=2.2))
-    cross = dict(color=COLORS["ink"], markersize=14, label="roadmap node in collision", zorder=7)  # over the path (5)
-    ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], "X", path_effects=halo(1.0, ("free",)), **cross)  # ringed
+    if edges is not None and len(edges):  # thin, under the nodes: a node in collision visibly has none (r29c); ink,
+        ends = nodes[np.asarray(edges)][..., [x, y]]  # (E, 2, 2)  seen on the light and the mid greys (r30c)
+        ax.add_collection(LineCollection(ends, colors=COLORS["ink"], linewidths=0.5, alpha=0.6, zorder=2.2))
+    cross = dict(markersize=10, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True))  # over the path (5)
+    ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **cross)  # as the maps' squares (r30c)
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
     for node in nodes[~nodes_valid][:3]:  # a few named in words as well
         ax.annotate(
@@ -295,19 +304,11 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
         path_effects=halo(2.5),
         clip_on=False,  # whole where it ends on the map's edge
     )
-    for end, marker, size, name in ((0, "s", 11, "start"), (-1, "*", 20, "goal")):  # as chapter 04's roadmaps
-        ax.plot(
-            path[end, x],
-            path[end, y],
-            marker,
-            color=COLORS["endpoint"],
-            markeredgecolor=COLORS["free"],
-            markersize=size,
-            label=name,
-            clip_on=False,  # whole on the map's edge, over the frame
-            zorder=5,
-            path_effects=halo(0.0, ("ink",)),  # black, a white edge, a black ring: its whole shape shows on the
-        )  # map's dark side, on its light side and on the white beyond the frame
+    # the ends black, a white edge, a black ring: their whole shape shows on the map's dark side, on its light side
+    # and, drawn whole on the map's edge over the frame, on the white beyond it
+    end = dict(color=COLORS["endpoint"], markeredgecolor=COLORS["free"], clip_on=False, zorder=5)
+    for at, marker, size, name in ((0, "^", 12, "start"), (-1, "*", 20, "goal")):  # no square: that is a mistake
+        ax.plot(*path[at, [x, y]], marker, markersize=size, label=name, path_effects=halo(0.0, ("ink",)), **end)
 
 
 def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):
@@ -338,6 +339,7 @@ def _mistake_mark(code: int, *, legend: bool = False) -> dict[str, Any]:
     return dict(c=color, marker=MISTAKE_MARKERS[code], linewidths=0, path_effects=halo(MARK_RING), clip_on=False)
 
 
+COLLIDING = "roadmap node in collision\n(a dangerous mistake kept)"  # the path map's mark of one, a map's square
 MARK_RING = 1.0  # points: a mistake's black ring 1.3 points wide (2 pixels on the site), its white one 0.8 beyond
 
 
@@ -390,7 +392,7 @@ def _draw_counts(ax, predicted_valid, valid) -> None:
         ax.plot(code, counts[ANSWERS[code]], linestyle="", clip_on=False, **_mistake_mark(code, legend=True))
     ax.bar_label(bars, fontsize=9, padding=6)
     ax.set_ylim(0, 1.18 * max(max(counts.values()), 1))  # room above the tallest bar for its count, inside the frame
-    ax.set_xticks(range(len(counts)), [a.replace(" ", "\n", 1) for a in ANSWERS], fontsize=9)
+    ax.set_xticks(range(len(counts)), [a.replace(" ", "\n") for a in ANSWERS], fontsize=9)
     ax.set_xlabel("answer")
     ax.set_ylabel("configurations")
     rates = metrics.classification(np.ravel(predicted_valid), np.ravel(valid))

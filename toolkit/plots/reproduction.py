@@ -150,7 +150,7 @@ def threshold_sweep(
         "TPR (valid kept)": rates["tpr"],
         "TNR (invalid rejected)": rates["tnr"],
     }  # name -> (T,)
-    for k, (name, curve) in enumerate(curves.items()):
+    for k, (name, curve) in zip((0, 3, 2), curves.items()):  # no vermillion square: chapter 03's "invalid kept" (r30c)
         ax.plot(ts, curve, label=name, **series_style(k) | dict(markevery=10, markersize=4))
     if threshold is not None:
         ax.axvline(threshold, color=COLORS["reference"], linestyle=":", label=f"threshold {threshold:.2f}")
