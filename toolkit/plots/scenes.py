@@ -315,13 +315,12 @@ def path_frame(
 ) -> Figure:
     """Frame ``index`` of a path ``configurations (T, dof)`` evenly spaced along it.
 
-    Left (3D): the robot's link boxes at that frame among the blocks of ``workspace``
-    within ``margin`` of it (in the valid colour if ``valid[index]``, the invalid
-    colour if not, the title saying which; ``COLORS["unchecked"]`` if ``valid`` is None) and the trace of its base
-    along the whole path (``COLORS["trace"]``, inside the window).
-    Right, against the fraction of the path travelled, a line at this frame in each:
-    every DoF scaled to its bounds (0 = lower, 1 = upper; straight segments between
-    roadmap nodes show as straight lines), a panel per kind (:func:`toolkit.plots.dof_panels.dof_groups`);
+    Top (3D): the robot's link boxes at that frame among the blocks of ``workspace`` within ``margin`` of it (in the
+    valid colour if ``valid[index]``, the invalid colour if not, the title saying which; ``COLORS["unchecked"]`` if
+    ``valid`` is None) and the trace of its base along the whole path (``COLORS["trace"]``, inside the window).
+    Below, against the fraction of the path travelled, a line at this frame in each: every DoF scaled to its bounds
+    (0 = lower, 1 = upper; straight segments between roadmap nodes show as straight lines), a panel per kind
+    (:func:`toolkit.plots.dof_panels.dof_groups`);
     ``clearance (T,)``, a lower bound on the distance to the nearest block (``checker.clearances``), if given;
     the model's ``probability (T,)`` of validity with its ``threshold``, if given.
     """
@@ -341,9 +340,10 @@ def path_frame(
     _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, valid_now, workspace, margin)
     draw_series(fig, grid[1], robot, Q, index, series, threshold)
     fig.suptitle(_frame_title(index, frames, series, threshold), fontsize=10, wrap=True)
-    text = f"A path of the {robot.name} robot, {_frame_title(index, frames, series, threshold)}. At the top, the robot"
-    text += " in 3D among the blocks near it (the nearest edged in ink and named) and its base's trace; below,"
-    text += " against the fraction of the path travelled, "
+    named = " ".join(SCENE_NAMES.get(robot.name, (robot.name, "robot")))  # "3DC-7 box chain" (reader r30e)
+    text = f"A path of the {named}, {_frame_title(index, frames, series, threshold)}. At the top, the robot in 3D among"
+    text += " the blocks near it (the nearest edged in ink and named) and its base's trace; below, against the path's"
+    text += " fraction travelled, "
     return describe(fig, text + series_in_words(robot, Q, series, threshold) + ".", [series_part(robot, Q, series)])
 
 
