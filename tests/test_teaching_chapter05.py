@@ -182,6 +182,6 @@ def test_the_answer_gives_the_share_of_a_query_sampling_takes_without_the_networ
     shares = chapter05.sampling_shares(chapter05.FCL)
     assert sorted(shares) == sorted(chapter05.SAMPLERS) and max(shares.values()) < 0.5
     answer = chapter05.answer()
-    assert f"sampling was only {chapter05.span(shares, 100, 1)} % of a query's mean time" in answer
+    assert f"sampling had been only {chapter05.span(shares, 100, 1)} % of a query's mean time" in answer
     assert f"the rest of a query (at least {1 - max(shares.values()):.0%} of it)" in answer
     assert chapter05.check_costs() in answer
