@@ -1032,13 +1032,14 @@ def chapter_05(nb) -> list[str]:
     if len(office) != 1 or int(office[0][1]) != int(office[0][2]) + int(office[0][3]) or "0" in office[0][2:]:
         problems.append(f"05: the office's collisions are not the two kinds the prose names: {office}")
     problems += _chapter_05_answer(found, measured, scored)
-    # readers r28e, r29e: §6's "why" calls a network answer dearer than a compiled check, cheaper than python-fcl's
+    # readers r28e, r29e, r30e: the answer's "why" calls a network answer dearer than a compiled check, cheaper than
+    # python-fcl's
     costs = re.search(
         r"as long as (\d+\.\d) compiled exact checks, and one python-fcl check as long as (\d+\.\d)", found
     )
     if costs is None or not min(float(v) for v in costs.groups()) > 1:
         problems.append(
-            f"05: §6's costs do not make the network dearer than a compiled check, cheaper than python-fcl: "
+            f"05: the answer's costs do not make the network dearer than a compiled check, cheaper than python-fcl: "
             f"{costs and costs.groups()}"
         )
     if ("**No.**" in found) != bool(re.search(r"\*\*The question\.\*\*[^*]{0,200}\*\*No\*\*", opening(nb))):

@@ -24,7 +24,7 @@ from chapter_claims import problems
 
 from toolkit.experiments import paper_numbers
 from toolkit.learning import metrics
-from toolkit.teaching import chapter04, chapter05, chapter05_runs, checker_scope, costs, findings, recorded
+from toolkit.teaching import chapter04, chapter05, checker_scope, costs, findings, recorded
 
 ROOT = Path(__file__).resolve().parents[1]
 CHAPTERS = sorted((ROOT / "notebooks").glob("[0-9][0-9]_*.ipynb"))
@@ -1161,7 +1161,7 @@ def chapter_05(
     table after ``tie``; the paper's recipe with ``recipe_acc``, ``recipe_tpr`` and ``recipe_medians``, and
     ``frames_valid`` of 90 frames valid; its ``answer`` (``chapter05.answer()``) and the ratio of two medians
     ``of_medians`` in Algorithm 1 read against timing noise (reader r24b); the closing's ``paper_side``
-    (``chapter05._paper_side()``) and §6's ``costs`` (``chapter05_runs.check_costs()``), reader r29e."""
+    (``chapter05._paper_side()``) and the answer's ``costs`` (``chapter05.check_costs()``), readers r29e, r30e."""
     strong = recorded.median_ratios("strong")["3dc7"]["total"]
     of_medians = of_medians or recorded.median_ratios("strong --planner paper")["3dc7"]["total"]
     moved = max(
@@ -1188,7 +1188,10 @@ def chapter_05(
         ]
     )
     nb = executed(
-        "MD:" + (chapter05.answer() if answer is None else answer),
+        "MD:"
+        + (chapter05.answer() if answer is None else answer).replace(
+            chapter05.check_costs(), costs or chapter05.check_costs()
+        ),
         "MD:| uniform samples | in collision | of those: poking out of the office "
         "| in collision with furniture only (inside the office) |\n"
         "| ---: | ---: | ---: | ---: |\n" + office,
@@ -1197,7 +1200,6 @@ def chapter_05(
         "MD:| frames | valid (exact checker) | least clearance (frame) | P(valid): lowest / threshold "
         "| frames below the threshold |\n| ---: | ---: | ---: | ---: | ---: |\n"
         f"| 90 | {frames_valid} | 0.012 (41) | 0.61 / 0.54 | 0 |",
-        "MD:" + (chapter05_runs.check_costs() if costs is None else costs),
         "MD:" + scored,
         "MD:The paper's row: 71% = 85% × share + 61% × (1 − share) gives a valid share of about "
         f"{shares[0]}. On uniform samples, {shares[1]} valid, the same TPR and TNR would give an accuracy of 79%, "
@@ -1553,9 +1555,10 @@ def test_a_cell_that_draws_a_promised_figure_must_show_one():
 
 
 def test_chapter_05_holds_section_6s_why_to_the_records_costs():
-    """Readers r28e, r29e: §6 says why prediction did not pay, a network answer dearer than a compiled check and
-    cheaper than a python-fcl one; the record's line under §6's tables must say so."""
+    """Readers r28e, r29e, r30e: the answer says why prediction did not pay, a network answer dearer than a compiled
+    check and cheaper than a python-fcl one; the record's line in the answer must say so."""
     cheaper = "takes as long as 0.5 compiled exact checks, and one python-fcl check as long as 6.0 network answers"
     assert problems(CH05, chapter_05(costs=cheaper)) == [
-        "05: §6's costs do not make the network dearer than a compiled check, cheaper than python-fcl: ('0.5', '6.0')"
+        "05: the answer's costs do not make the network dearer than a compiled check, cheaper than python-fcl: "
+        "('0.5', '6.0')"
     ]

@@ -14,7 +14,7 @@ from mpl_toolkits.mplot3d import proj3d
 from toolkit import scenarios
 from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots import dof_panels, palette, path_series, robot_drawing, scenes, still_panels
+from toolkit.plots import closest_pair, dof_panels, palette, path_series, robot_drawing, scenes, still_panels
 from toolkit.plots.alt import alt_text
 from toolkit.plots.boxes import add_box_3d
 from toolkit.plots.palette import contrast
@@ -584,3 +584,24 @@ def test_a_single_robot_in_a_still_overview_is_ringed_and_named_left_of_every_ma
     centre = robot.link_aabbs(q[None])[0].mean(axis=(0, 1))  # (3,) where the ring is
     np.testing.assert_allclose(np.ravel(ring._offsets3d), centre)
     assert "the robot drawn over them, ringed, its name beside the workspace" in alt_text(fig)
+
+
+def test_a_path_frame_draws_the_closest_pair_labelled_with_the_gap_and_the_bound():
+    """Reader r30e: at frame 48 the title said "clearance ≥ 0.028" while the chain stood well away from the nearest
+    block; the frame draws the gap itself, an ink line between the closest points, labelled with its length and the
+    bound, the length never below the exact checker's bound."""
+    scenario = scenarios.get("3dc7")
+    robot = scenario.robot
+    q = np.zeros(robot.dof)
+    q[:3] = (5.0, 5.0, 5.0)  # at rest: the links axis-aligned, so the top face's grid holds the closest point
+    top = robot.link_aabbs(q[None])[0][:, 1, 2].max()
+    blocks = np.array([[[4.0, 4.0, top + 0.25], [6.0, 6.0, top + 1.25]]])
+    workspace = Workspace(np.zeros(3), np.full(3, 11.0), blocks, family="3dc")
+    bound = float(exact_checker(workspace, robot).clearances(q[None], cap=1.0)[0])
+    robot_point, block_point, gap = closest_pair.closest_pair(robot, q, blocks)
+    assert gap == pytest.approx(0.25) and gap >= bound - 1e-9
+    assert block_point[2] == pytest.approx(top + 0.25) and robot_point[2] == pytest.approx(top)
+    fig = scenes.path_frame(robot, np.stack([q, q]), 0, workspace=workspace, clearance=[bound, bound])
+    scene = fig.axes[0]
+    assert [line.get_gid() for line in scene.get_lines()].count("closest") == 1
+    assert [t.get_text() for t in scene.texts if "apart" in t.get_text()] == [f"0.250 apart\n(bound ≥ {bound:.3f})"]

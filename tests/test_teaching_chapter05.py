@@ -152,17 +152,19 @@ def test_the_three_strong_trainings_are_named_each_with_its_threshold():
     }
     assert written == {p: chapter05.recorded_threshold(p) for p in ("strong", chapter05.COMPILED)}
     assert written["strong"] != written[chapter05.COMPILED]  # two trainings, two thresholds
-    said = chapter05_runs.networks(0.57)
-    assert "this notebook's model here (threshold 0.57)" in said
-    assert f"(`strong` in `docs/results.md`, threshold {written['strong']:.2f})" in said
-    assert f"(`strong --planner paper` in `docs/results.md`, threshold {written[chapter05.COMPILED]:.2f})" in said
+    said = chapter05_runs.networks(0.57)  # reader r30e: a box under the answer, a row per training
+    assert "| this notebook (trained or loaded by `trained_models`) | 0.57 | sections 5–7 |" in said
+    assert f"| the lazy-PRM runs (`strong` in `docs/results.md`) | {written['strong']:.2f} |" in said
+    timed = "| the timed Algorithm 1 runs (`strong --planner paper` in `docs/results.md`) | "
+    timed += f"{written[chapter05.COMPILED]:.2f} |"
+    assert timed in said
 
 
 def test_check_costs_reads_one_answer_against_one_check_from_the_record():
-    """Readers r28e, r29e: §6 ties its counts to the timing question with the record's cost per check."""
+    """Readers r28e, r29e, r30e: the answer's "why" gives the record's cost of one answer against one check."""
     rates = recorded.table(chapter05.COMPILED, "Checker throughput")["3dc7"]
     learned = recorded.ours(rates["learned cfg/s"])
-    said = chapter05_runs.check_costs()
+    said = chapter05.check_costs()
     assert f"as long as {recorded.ours(rates['exact cfg/s']) / learned:.1f} compiled exact checks" in said
     assert f"as long as {learned / recorded.ours(rates['FCL cfg/s']):.1f} network answers" in said
 
@@ -172,3 +174,14 @@ def test_closest_above_names_the_frame_nearest_the_threshold_that_gets_no_band()
     said = chapter05_runs.closest_above(np.array([0.9, 0.4975, 0.8, 0.5752, 0.7]), 0.57)
     assert said.startswith("The frame that comes nearest the threshold from above: frame 3, P(valid) 0.575 against")
     assert chapter05_runs.closest_above(np.array([0.1, 0.2]), 0.5) == "Every frame lies below the threshold."
+
+
+def test_the_answer_gives_the_share_of_a_query_sampling_takes_without_the_network():
+    """Reader r30e: the 3DC-7 number that answers "why": sampling's share of a python-fcl query without prediction,
+    from the record's "Times behind Table 3" (mean sampling time over mean total time)."""
+    shares = chapter05.sampling_shares(chapter05.FCL)
+    assert sorted(shares) == sorted(chapter05.SAMPLERS) and max(shares.values()) < 0.5
+    answer = chapter05.answer()
+    assert f"sampling had been only {chapter05.span(shares, 100, 1)} % of a query's mean time" in answer
+    assert f"the rest of a query (at least {1 - max(shares.values()):.0%} of it)" in answer
+    assert chapter05.check_costs() in answer

@@ -84,7 +84,9 @@ def draw_series(
         panels.append(partial(draw_clearance, clearance))
     if (probability := series["probability"]) is not None:
         panels.append(partial(draw_probability, probability, threshold))
-    axes = spec.subgridspec(len(panels), 1, hspace=0.2).subplots(sharex=True, squeeze=False)[:, 0]
+    ratios = [1.0] * len(groups) + [1.6] * (len(panels) - len(groups))  # reader r30e: clearance and P(valid) taller
+    grid = spec.subgridspec(len(panels), 1, hspace=0.2, height_ratios=ratios)
+    axes = grid.subplots(sharex=True, squeeze=False)[:, 0]
     for ax, draw_panel in zip(axes, panels):
         draw_panel(ax, along)
         ax.axvline(along[index], color=NOW_COLOR, linewidth=1.0, gid="now")

@@ -1,14 +1,12 @@
 """Figures of notebook 05: a planned path of a 3D robot, one frame at a time (paper §III-B, Algorithm 1).
 
-A PRM path is a list of configurations joined by straight lines in configuration
-space (the straight-line local planner of §III-B). :func:`scene_still` draws a viewer's
-scene as a still picture (what a browser without WebGL shows in the 3D view's place): the whole workspace with
-its samples and the path, and the robot close up, its panels drawn by :mod:`toolkit.plots.still_panels`.
-:func:`path_frame` shows one
-configuration along a path in the workspace, among the blocks near the robot, next to
-what stays hidden in a 3D picture, drawn by :mod:`toolkit.plots.path_series`: every degree of freedom along the
-path, how much room the robot has (the exact checker's clearance bound) and what a learned model
-thinks of each configuration (P(valid), the MLP of §III-B).
+A PRM path is a list of configurations joined by straight lines in configuration space (the straight-line local
+planner of §III-B). :func:`scene_still` draws a viewer's scene as a still picture (what a browser without WebGL shows
+in the 3D view's place): the whole workspace with its samples and the path, and the robot close up, its panels drawn
+by :mod:`toolkit.plots.still_panels`. :func:`path_frame` shows one configuration along a path in the workspace, among
+the blocks near the robot (the closest pair marked by :mod:`toolkit.plots.closest_pair`), next to what stays hidden
+in a 3D picture, drawn by :mod:`toolkit.plots.path_series`: every degree of freedom along the path, how much room the
+robot has (the exact checker's clearance bound) and what a learned model thinks of each configuration (P(valid)).
 
 The 3D drawing of the robot and its nearby blocks is :mod:`toolkit.plots.robot_drawing`'s.
 Every function returns a matplotlib ``Figure`` and never calls ``show()``.
@@ -24,6 +22,7 @@ from mpl_toolkits.mplot3d import proj3d
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe
+from toolkit.plots.closest_pair import mark_closest
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
 from toolkit.plots.path_series import draw_series, series_in_words, series_part
 from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR, draw_robot, link_style
@@ -315,13 +314,12 @@ def path_frame(
 ) -> Figure:
     """Frame ``index`` of a path ``configurations (T, dof)`` evenly spaced along it.
 
-    Left (3D): the robot's link boxes at that frame among the blocks of ``workspace``
-    within ``margin`` of it (in the valid colour if ``valid[index]``, the invalid
-    colour if not, the title saying which; ``COLORS["unchecked"]`` if ``valid`` is None) and the trace of its base
-    along the whole path (``COLORS["trace"]``, inside the window).
-    Right, against the fraction of the path travelled, a line at this frame in each:
-    every DoF scaled to its bounds (0 = lower, 1 = upper; straight segments between
-    roadmap nodes show as straight lines), a panel per kind (:func:`toolkit.plots.dof_panels.dof_groups`);
+    Top (3D): the robot's link boxes at that frame among the blocks of ``workspace`` within ``margin`` of it (in the
+    valid colour if ``valid[index]``, the invalid colour if not, the title saying which; ``COLORS["unchecked"]`` if
+    ``valid`` is None) and the trace of its base along the whole path (``COLORS["trace"]``, inside the window).
+    Below, against the fraction of the path travelled, a line at this frame in each: every DoF scaled to its bounds
+    (0 = lower, 1 = upper; straight segments between roadmap nodes show as straight lines), a panel per kind
+    (:func:`toolkit.plots.dof_panels.dof_groups`);
     ``clearance (T,)``, a lower bound on the distance to the nearest block (``checker.clearances``), if given;
     the model's ``probability (T,)`` of validity with its ``threshold``, if given.
     """
@@ -338,12 +336,14 @@ def path_frame(
     # larger share (reader r18c: five panels of 70 px were too small to read at the site's width)
     grid = fig.add_gridspec(2, 1, height_ratios=(3.9, 6.1), hspace=0.4, top=0.92, bottom=0.05, left=0.12, right=0.86)
     valid_now = None if series["valid"] is None else bool(series["valid"][index])
-    _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, valid_now, workspace, margin)
+    bound = None if series["clearance"] is None else float(series["clearance"][index])
+    _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, (valid_now, bound), workspace, margin)
     draw_series(fig, grid[1], robot, Q, index, series, threshold)
     fig.suptitle(_frame_title(index, frames, series, threshold), fontsize=10, wrap=True)
-    text = f"A path of the {robot.name} robot, {_frame_title(index, frames, series, threshold)}. At the top, the robot"
-    text += " in 3D among the blocks near it (the nearest edged in ink and named) and its base's trace; below,"
-    text += " against the fraction of the path travelled, "
+    named = " ".join(SCENE_NAMES.get(robot.name, (robot.name, "robot")))  # "3DC-7 box chain" (reader r30e)
+    text = f"A path of the {named}, {_frame_title(index, frames, series, threshold)}. At the top, the robot in 3D among"
+    text += " the blocks near it (the nearest edged in ink and named, an ink line between the closest points labelled"
+    text += " with the gap and the bound) and its base's trace; below, against the path's fraction travelled, "
     return describe(fig, text + series_in_words(robot, Q, series, threshold) + ".", [series_part(robot, Q, series)])
 
 
@@ -354,26 +354,24 @@ def _draw_trace(ax, robot: BoxRobot, Q: np.ndarray) -> None:
     ax.plot(*trace.T, linewidth=2.0, gid="trace", path_effects=halo(2.0), **TRACE_STYLE)
 
 
-def _draw_scene(
-    scene, robot: BoxRobot, Q: np.ndarray, index: int, valid: bool | None, workspace, margin: float
-) -> None:
-    """The 3D panel of :func:`path_frame`: the robot at frame ``index`` among the blocks near it, its base's trace."""
+def _draw_scene(scene, robot: BoxRobot, Q: np.ndarray, index: int, checked: tuple, workspace, margin: float) -> None:
+    """The 3D panel of :func:`path_frame`: the robot at frame ``index`` among the blocks near it, its base's trace;
+    ``checked``: the frame's ``(valid, clearance bound)``, each None if not given."""
+    valid, bound = checked
     color = UNCHECKED_COLOR if valid is None else VALID_COLOR if valid else INVALID_COLOR
     draw_robot(
         scene, robot, Q[index : index + 1], colors=[color], view="3d", workspace=workspace, margin=margin, clip=True
     )  # the blocks clipped to the window (reader r19c: a block past it hid the tick labels and the y axis' name)
-    if (
-        workspace is not None
-    ):  # mplot3d's usual camera, turned where a block stands on a line of sight through the robot
+    if workspace is not None:  # mplot3d's usual camera, turned where a block stands on a line of sight through it
         scene.view_init(30.0, -60.0 + clear_turn(robot, Q[index], workspace, margin, FRAME_TURNS, (30.0, -60.0)))
     _draw_trace(scene, robot, Q)
     verdict = "" if valid is None else ": valid" if valid else ": in collision"
     scene.set_title(f"the robot, blocks near it{verdict}", fontsize=9)
     scene.set_box_aspect(None, zoom=1.15)  # the robot larger in its panel: mplot3d leaves wide margins
     if workspace is not None and len(workspace.boxes):  # after the view and the zoom: it places its name on them
-        mark_nearest(
-            scene, robot.link_aabbs(Q[index : index + 1])[0], workspace.boxes, (workspace.lower, workspace.upper)
-        )
+        links, bounds = robot.link_aabbs(Q[index : index + 1])[0], (workspace.lower, workspace.upper)
+        mark_nearest(scene, links, workspace.boxes, bounds)
+        mark_closest(scene, robot, Q[index], workspace.boxes, bound)  # reader r30e: the gap the bound is about
     scene.locator_params(nbins=4)  # few tick labels: drawing text is most of a frame's cost
     scene.tick_params(labelsize=9)
 

@@ -52,8 +52,7 @@ OVERVIEW_ALPHA = 0.45  # an overview's marks, light: the robot drawn over them a
 CLOSE_UP_SCALE = 1.5  # a close-up's marks this many times larger: a small window, seen near
 NEAR = 0.3  # workspace units: a block this close to a link's bounding box is drawn darker in a close-up
 LINK_EDGE = 1.6  # points: the links' ink edges, thicker than a block's
-OVERVIEW_ROBOT = dict(linewidth=3.0, solid_capstyle="round", path_effects=halo(3.0))  # the robot in an overview:
-#   its links as strokes 3 points thick (a 0.1-thick link is a pixel there), ringed in ink, then in white
+OVERVIEW_ROBOT = dict(linewidth=3.0, solid_capstyle="round", path_effects=halo(3.0))  # 3-point strokes, ringed
 JOINT_MARK = dict(marker="o", s=8, color=COLORS["free"], edgecolors=COLORS["ink"], linewidths=0.8)  # small: a link's
 #   0.1 cube shows round it (review r15b: at 22 points² the dots hid 3DC-9's cubes)
 ELEVATION = (15.0, 45.0)  # degrees: a close-up's camera stays this far above the horizon, no lower and no higher
@@ -159,15 +158,17 @@ def overview_step(n: int) -> int:
 def close_up(
     ax, robot: BoxRobot, q: np.ndarray, workspace: Workspace, *, color: str, margin: float, turn: float = 0.0
 ) -> tuple[int, tuple[float, float]]:
-    """The robot at ``q (dof,)`` in ``color`` among the blocks within ``margin`` of it (their parts in that window),
-    seen from :func:`view_angles`
-    turned ``turn`` degrees about the vertical. Returns how many blocks lie within :data:`NEAR` of a link's bounding
-    box, and the camera's ``(elevation, azimuth)`` in degrees."""
+    """The robot at ``q (dof,)`` in ``color`` among the blocks within ``margin`` of it (their parts in that window, one
+    within :data:`NEAR` up to ``margin`` taller), seen from :func:`view_angles` turned ``turn`` degrees about the
+    vertical. Returns how many blocks lie within :data:`NEAR` of a link's box, and the camera's (elevation, azimuth)."""
     q = np.asarray(q, dtype=float)
     draw_robot(ax, robot, q[None], colors=[color], view="3d", margin=margin)  # the links; the blocks below
     aabbs = robot.link_aabbs(q[None])[0]  # (L, 2, 3)
     lo = np.maximum(aabbs[:, 0].min(axis=0) - margin, workspace.lower)  # (3,) the window
     hi = np.minimum(aabbs[:, 1].max(axis=0) + margin, workspace.upper)
+    z = workspace.boxes[near_blocks(workspace.boxes, aabbs)][:, :, 2]  # (K', 2) reader r30e: a block under the chain
+    lo[2] = max(z[:, 0].min(initial=lo[2]), lo[2] - margin, workspace.lower[2])  # cut by the window's floor looked
+    hi[2] = min(z[:, 1].max(initial=hi[2]), hi[2] + margin, workspace.upper[2])  # like a thin slab: more of it
     ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), zlim=(lo[2], hi[2]))
     ax.set_box_aspect(hi - lo, zoom=1.15)  # the robot larger in its panel: mplot3d leaves wide margins
     elevation, azimuth = view_angles(robot, q)
@@ -196,8 +197,7 @@ def close_up(
     return int(near.sum()), (elevation, azimuth)
 
 
-TURNS = (60.0, -60.0, 120.0, -120.0, 90.0, -90.0)  # degrees about the vertical a second close-up tries, in turn
-# (reader r20c: a quarter turn saw a chain's plane edge-on; a sixth still shows the bend and which link is nearer)
+TURNS = (60.0, -60.0, 120.0, -120.0, 90.0, -90.0)  # degrees round a second close-up tries (r20c: not edge-on)
 
 
 def second_turn(robot: BoxRobot, q: np.ndarray, workspace: Workspace, margin: float) -> float:

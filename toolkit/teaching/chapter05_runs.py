@@ -7,8 +7,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from toolkit.teaching import recorded
-from toolkit.teaching.chapter05 import COMPILED, SCENARIO, run_name
+from toolkit.teaching import chapter05
+from toolkit.teaching.chapter05 import COMPILED, SCENARIO
 
 
 def plan_tables(result) -> str:
@@ -28,26 +28,19 @@ def plan_tables(result) -> str:
     )
 
 
-def check_costs() -> str:
-    """§6's link to the timing question (readers r28e, r29e): what one network answer costs on 3DC-7 against one exact
-    check of either checker, from the timed run's throughput table (configurations a second, ``docs/results.md``)."""
-    rates = {k: recorded.ours(v) for k, v in recorded.table(COMPILED, "Checker throughput")[SCENARIO].items()}
-    compiled = rates["exact cfg/s"] / rates["learned cfg/s"]  # compiled checks in the time of one network answer
-    fcl = rates["learned cfg/s"] / rates["FCL cfg/s"]  # network answers in the time of one python-fcl check
-    return (
-        f"On 3DC-7 one answer of the timed `strong` network takes as long as {compiled:.1f} compiled exact checks, "
-        f"and one python-fcl check as long as {fcl:.1f} network answers (`docs/results.md`, the timed run's "
-        "configurations a second)."
-    )
-
-
 def networks(threshold: float) -> str:
-    """§5's line naming the three `strong` trainings (reader r29e): this notebook's, at ``threshold``, and the
-    record's two, each with the threshold it chose."""
+    """The box under the answer naming the three `strong` trainings on the page (readers r29e, r30e): the timed
+    Algorithm 1 run's, this notebook's (at ``threshold``) and the lazy-PRM run's, each with its threshold and where
+    the page uses it."""
+    said = {p: chapter05.recorded_threshold(p) for p in (COMPILED, "strong")}
+    cell = {p: "none recorded" if t is None else f"{t:.2f}" for p, t in said.items()}
     return (
-        f"Three trainings of the `strong` recipe appear on this page, each with its own threshold: this notebook's "
-        f"model here (threshold {threshold:.2f}), the lazy-PRM run's ({run_name('strong')}) and the one the answer at "
-        f"the top times in Algorithm 1 ({run_name(COMPILED)})."
+        "Three trainings of the `strong` recipe appear on this page, each with its own threshold on P(valid):\n\n"
+        "| the `strong` network of | threshold | where this page uses it |\n| --- | ---: | --- |\n"
+        f"| the timed Algorithm 1 runs (`{COMPILED}` in `docs/results.md`) | {cell[COMPILED]} "
+        "| the answer above, the closing tables |\n"
+        f"| this notebook (trained or loaded by `trained_models`) | {threshold:.2f} | sections 5–7 |\n"
+        f"| the lazy-PRM runs (`strong` in `docs/results.md`) | {cell['strong']} | the closing section's folded note |"
     )
 
 
