@@ -260,9 +260,10 @@ def _answers(tpr: float, tnr: float) -> str:
     return metrics.what_it_answers(tpr, tnr).replace(" to ", " to<br>")
 
 
-def section_6(this_run: dict[str, float], tables: Tables | None = None) -> list[str]:
+def section_6(this_run: dict[str, float], tables: Tables | None = None, first: str = "") -> list[str]:
     """Chapter 04's section 6 as two Markdown blocks: the answer's table (:func:`compact`), then, folded in a
-    ``<details>`` box (review r24a: section 6 ran to 8 screens), the other tables from the recorded runs: against
+    ``<details>`` box (review r24a: section 6 ran to 8 screens), ``first`` (the answer's counts in full sentences)
+    and the other tables from the recorded runs: against
     Algorithm 1 by means, against the lazy PRM, the sampling stage inside Algorithm 1, what the `paper` preset's MLP
     answers, and a network call's cost per configuration over the exact check's (``this_run``: {scenario: cost} of
     the chapter's own section 4, beside the recorded runs')."""
@@ -298,8 +299,9 @@ def section_6(this_run: dict[str, float], tables: Tables | None = None) -> list[
         "exact checker), and our accurate `strong` network by the median of each query's own ratio, with our fast "
         "exact checker (compiled in 3D, numpy interval tests in 2DS) and with python-fcl on both sides "
         "(`docs/results.md`):\n\n" + table(compact(tables), counts=True, narrow=True),
-        "<details><summary>More tables: the same runs by means, the `paper` preset, the lazy PRM, the sampling stage, "
-        "the `paper` MLP's accuracy, and what a network call cost</summary>\n\n" + "\n\n".join(more) + "\n\n</details>",
+        "<details><summary>The counts in full sentences and by means, and more tables: the same runs by means, the "
+        "`paper` preset, the lazy PRM, the sampling stage, the `paper` MLP's accuracy, and what a network call "
+        "cost</summary>\n\n" + "\n\n".join([first, *more] if first else more) + "\n\n</details>",
     ]
 
 
