@@ -452,7 +452,7 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     assert len(edge) == 1 and len([r for r in own if r <= 0.9]) == len(fell)
     floor = noise(tables).own
     assert (
-        f"Our network saved a whole query's time in {len(fell)} of 16 cells with python-fcl, one of them at the noise "
+        f"Our network saved a whole query's time in {len(fell)} of 16 cells with python-fcl, one at the noise "
         f"edge ({edge[0]}), and in 0 with the compiled checker. Timing alone moved this median to "
         f"{floor[0]:.2f}–{floor[1]:.2f}, so a cell within twice that reach of 1 is no evidence alone."
     ) in answer
