@@ -111,7 +111,7 @@ def test_the_home_pages_office_is_chapter_05s_and_its_caption_counts_its_samples
         f"among {len(workspace.boxes)} blocks, and {len(Q)} uniform samples, one in ten drawn, each a mark at its "
         f"platform's centre. Of the {len(Q)}, {(~colliding).sum()} are valid (circles) and {colliding.sum()} in "
         f"collision (diamonds): {(colliding & ~outside).sum()} only against furniture, {outside.sum()} with a link "
-        "outside the office, most of them the platform at its edge; the picture draws both kinds alike."
-    )  # reader r28e: both are diamonds, so the caption says the split is not drawn
+        "outside the office, most of them the platform at its edge; both kinds get the same diamond."
+    )  # reader r28e: both are diamonds, so the caption says the split is not drawn (r30e: in those words)
     assert said in caption.group(1)
     assert "](docs/office.png)" in readme and "docs/jupyterlab.png" not in readme
