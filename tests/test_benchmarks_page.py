@@ -638,3 +638,13 @@ def test_the_race_s_chart_is_its_table_s_held_out_rows():
     fig = race.race_medians(medians, batched, seed=9300)
     assert f"![{alt_text(fig)}](planner_race.png)" in RACE
     assert (ROOT / "docs" / "planner_race.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_the_home_page_quotes_the_planning_runs_gap_to_python_fcl_as_the_results_page_prints_it():
+    """Reader r30e: the home page's idle 43–57× sits beside the loaded planning run's figure, read here from the
+    results page's checkers table (its `strong --planner paper` row), so a new run cannot leave the home page behind."""
+    results = (ROOT / "docs" / "results.md").read_text()
+    row = next(line for line in results.splitlines() if line.strip().startswith("| `strong --planner paper` |"))
+    gap = [cell.strip() for cell in row.strip().strip("|").split("|")][2]
+    readme = " ".join((ROOT / "README.md").read_text().split())
+    assert gap.endswith("×") and f"{gap} in the loaded planning run" in readme
