@@ -783,12 +783,13 @@ STATUS = re.compile(  # findings.claim_status: the paper's claim from the record
 )
 ANSWER_NO = "**The answer: no.**"  # the opening's plain answer (review r28d: said once, numbers in bullets under it)
 FAST_BULLET = re.compile(  # chapter04.answer's first bullet: our fast checker's counts by medians (review r30d)
-    r"Our accurate network, inside the same Algorithm 1, saved time in (none|\d+) of the (\d+) with our fast exact "
+    r"By the median query, our accurate network, inside the same Algorithm 1, saved time in (none|\d+) of the (\d+) "
+    r"with our fast exact "
     r"checker \((\d+) tied, (\d+) longer(?:, (\d+) of those only at the median)?\)"
 )
 SLOW_BULLET = re.compile(  # ... the same bullet on python-fcl on both sides, and the paper's count before it
     r"The paper's Table 3 saves time in (\d+) of the \d+ scenario–sampler pairs\. .*? and in (none|\d+) with "
-    r"python-fcl on both sides \((\d+) tied, (\d+) longer\), though with python-fcl sampling itself was (.+?) \(the "
+    r"python-fcl on both sides \((\d+) tied, (\d+) longer\), though with python-fcl its sampling was (.+?) \(the "
     r"paper's Table 3: (.+?)\)\."
 )
 BY_MEANS = re.compile(  # chapter04.full_answer, folded in section 6: both runs' counts by mean times

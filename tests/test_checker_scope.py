@@ -113,7 +113,7 @@ def test_the_answer_gives_three_short_bullets_read_from_the_record():
         "and in 3 with python-fcl on both sides (13 tied, 0 longer)" in said[0]
     )
     facts = checker_scope.slow_checker()
-    assert f"sampling itself was {checker_scope.percents(facts.sampling)} shorter" in said[0]
+    assert f"its sampling was {checker_scope.percents(facts.sampling)} shorter" in said[0]
     assert "sampling took 0.29–18 % of a mean query with our fast checker (0.35–34 % with python-fcl)" in said[1]
     assert said[1].startswith("- **Why**: ") and "(section 5 counts both)" in said[1]
     assert "a network call cost 2.6–23 times an exact check per configuration" in said[2]
