@@ -412,8 +412,8 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     from toolkit.experiments.paper_numbers import IMPROVEMENT
     from toolkit.teaching import recorded
     from tools.recorded_results import RESULTS, parse
+    from tools.results_findings import apart
     from tools.results_noise import at_noise_edge, noise, own_intervals, reach_of
-    from tools.results_summary import apart
     from tools.results_words import change
 
     tables = parse(RESULTS.read_text())
