@@ -12,7 +12,7 @@ import numpy as np
 from mpl_toolkits.mplot3d import proj3d
 
 from toolkit.geometry.robots import BoxRobot
-from toolkit.plots.palette import COLORS, halo
+from toolkit.plots.palette import COLORS, halo, scene_label
 
 GRID = 9  # points along each edge of a link box's surface grid, an eighth of the edge apart
 
@@ -50,16 +50,6 @@ def mark_closest(scene, robot: BoxRobot, q: np.ndarray, blocks: np.ndarray, boun
     said = f"{gap:.3f} apart" + ("" if bound is None else f"\n(bound ≥ {bound:.3f})")  # gap ≥ bound, both to 3
     x, y, _ = proj3d.proj_transform(*ends.mean(axis=0), scene.get_proj())  # the line's middle on the picture
     scene.annotate(
-        said,
-        (float(x), float(y)),
-        xytext=(8, -6),
-        textcoords="offset points",
-        fontsize=9,
-        ha="left",
-        va="top",
-        zorder=10.0,
-        color=COLORS["ink"],
-        annotation_clip=False,
-        path_effects=halo(1.0, ("free",)),
+        said, (float(x), float(y)), xytext=(8, -6), textcoords="offset points", ha="left", va="top", **scene_label()
     )
     return gap

@@ -202,6 +202,12 @@ def halo(linewidth: float = 1.0, rings: tuple[str, ...] = HALO) -> list:
     return effects[::-1] + [patheffects.Normal()]  # the outer ring first, the mark on top
 
 
+def scene_label() -> dict:
+    """Keyword arguments of ``annotate`` for a label on a 3D scene's picture (a block's name, a gap's length): ink
+    9-point text, ringed in white so it reads over edges, never clipped by the axes, above the drawing."""
+    return dict(fontsize=9, color=COLORS["ink"], zorder=10.0, annotation_clip=False, path_effects=halo(1.0, ("free",)))
+
+
 def series_style(k: int) -> dict:
     """Colour, line style and marker of the ``k``-th series a legend names (``plot(..., **series_style(k))``)."""
     return dict(

@@ -27,7 +27,7 @@ from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
 from toolkit.plots.cspace import frame_region
-from toolkit.plots.palette import COLORS, halo
+from toolkit.plots.palette import COLORS, halo, scene_label
 from toolkit.plots.robot_drawing import BLOCK_STYLE, INVALID_COLOR, VALID_COLOR, draw_robot, few_ticks
 
 SAMPLE_MARKS = {  # kind of sample -> marker, colour, size (points²): the viewer's shapes (drawing.SAMPLE_SHAPES)
@@ -256,19 +256,8 @@ def mark_nearest(scene, links: np.ndarray, blocks: np.ndarray, bounds: tuple | N
     corners = aabb_corners(lo, hi)  # (8, 3)
     add_box_3d(scene, corners, facecolor="none", edgecolor=COLORS["ink"], linewidth=1.6, gid="nearest")
     x, y, _ = proj3d.proj_transform(*corners.T, scene.get_proj())  # (8,) each: the corners on the picture
-    scene.annotate(  # above the block's highest corner on the picture, clear of its edges (reader r20c)
-        name,
-        (float(np.mean(x)), float(np.max(y))),
-        xytext=(0, 4),
-        textcoords="offset points",
-        fontsize=9,
-        ha="center",
-        va="bottom",
-        zorder=10.0,
-        color=COLORS["ink"],
-        annotation_clip=False,
-        path_effects=halo(1.0, ("free",)),
-    )
+    top = (float(np.mean(x)), float(np.max(y)))  # above the block's highest corner on the picture (reader r20c)
+    scene.annotate(name, top, xytext=(0, 4), textcoords="offset points", ha="center", va="bottom", **scene_label())
 
 
 def _in_front(blocks: np.ndarray, points: np.ndarray, toward: np.ndarray) -> np.ndarray:
