@@ -123,6 +123,35 @@ def test_the_assignments_exist():
     assert set(ASSIGNMENTS) <= set(grading.assignment_names())
 
 
+@pytest.mark.parametrize(
+    ("printed", "runs", "built"),
+    [
+        ([grading.KERNEL_LOST_PORT, ""], 2, True),  # a kernel lost its ports once: the second run builds
+        ([grading.KERNEL_LOST_PORT] * 3, 3, False),  # every time: the error, after three runs
+        (["NameError: name 'x' is not defined"], 1, False),  # a master's own fault: not run again
+    ],
+)
+def test_otter_assign_runs_again_only_when_its_kernel_lost_its_ports(monkeypatch, printed, runs, built):
+    outcomes = iter(printed)
+    calls = []
+
+    def otter_assign(command, **kwargs):
+        calls.append(command)
+        message = next(outcomes)
+        return subprocess.CompletedProcess(command, 1 if message else 0, stdout="", stderr=message)
+
+    monkeypatch.setattr(grading.subprocess, "run", otter_assign)
+    monkeypatch.setattr(grading, "autograder", lambda name, build_missing: Path("made.zip"))
+    monkeypatch.setattr(grading.gradescope, "ship_toolkit", lambda zip_path, source: None)
+    monkeypatch.setattr(grading.shutil, "rmtree", lambda path, ignore_errors: None)  # the real dist/ stays
+    if built:
+        assert grading.build("bridge_test") == Path("made.zip")
+    else:
+        with pytest.raises(RuntimeError, match=f"otter assign failed for bridge_test:\n\n{re.escape(printed[-1])}"):
+            grading.build("bridge_test")
+    assert len(calls) == runs
+
+
 def _sentences(name: str) -> set[str]:
     """Every sentence of the master's specifications that a hidden test checks: "q1 sentence 4", ..."""
     found, question = set(), None

@@ -77,6 +77,13 @@ def master(name: str) -> Path:
     return path
 
 
+# A kernel that dies before it answers has usually lost a race for its ports: Jupyter picks free ports, closes them
+# and starts the kernel, and a kernel starting beside it may take one first (jupyter_client issue 154). Builds run
+# side by side (the test suite builds every assignment at once) meet it now and then; the same build then passes.
+KERNEL_LOST_PORT = "Kernel died before replying to kernel_info"
+ASSIGN_ATTEMPTS = 3
+
+
 def _otter(*args: str) -> list[str]:
     return [sys.executable, "-m", "otter", *args]
 
@@ -84,18 +91,20 @@ def _otter(*args: str) -> list[str]:
 def build(name: str) -> Path:
     """Run ``otter assign`` on the master (which also checks that its solutions pass every test);
     return the autograder zip, which carries the toolkit (:func:`gradescope.ship_toolkit`). Replaces ``dist/``
-    beside the master."""
+    beside the master; runs it again when its kernel lost a race for its ports (:data:`KERNEL_LOST_PORT`)."""
     source = master(name)
     if "# ASSIGNMENT CONFIG" not in source.read_text():
         raise ValueError(
             f"{source} is a student version, not a master (it has no ASSIGNMENT CONFIG cell): a handout cannot build "
             "the autograder, which holds the hidden tests; the instructor grades with the masters"
         )
-    dist = source.parent / "dist"
-    shutil.rmtree(dist, ignore_errors=True)
-    done = subprocess.run(
-        _otter("assign", "--no-pdfs", source.name, "dist"), cwd=source.parent, capture_output=True, text=True
-    )
+    for attempt in range(1, ASSIGN_ATTEMPTS + 1):
+        shutil.rmtree(source.parent / "dist", ignore_errors=True)
+        done = subprocess.run(
+            _otter("assign", "--no-pdfs", source.name, "dist"), cwd=source.parent, capture_output=True, text=True
+        )
+        if done.returncode == 0 or KERNEL_LOST_PORT not in done.stdout + done.stderr or attempt == ASSIGN_ATTEMPTS:
+            break
     if done.returncode != 0:
         raise RuntimeError(f"otter assign failed for {name}:\n{done.stdout[-3000:]}\n{done.stderr[-3000:]}")
     zip_path = autograder(name, build_missing=False)
