@@ -23,8 +23,8 @@ from toolkit.geometry.collision import (
     exact_checker,
 )
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots import boxes, cspace, near_blocks, palette, robot_drawing, slices
-from toolkit.plots.alt import alt_text
+from toolkit.plots import boxes, contact, cspace, near_blocks, palette, robot_drawing, slices
+from toolkit.plots.alt import alt_text, parts_of
 from toolkit.plots.palette import CATEGORICAL
 
 
@@ -113,6 +113,8 @@ def test_workspace_figure_2d_draws_one_rectangle_per_block(square_world):
         np.testing.assert_allclose(rect.get_xy(), lo)
         np.testing.assert_allclose([rect.get_width(), rect.get_height()], hi - lo)
     assert fig.axes[0].get_xlim() == (0.0, 31.0)
+    (blocks,) = [part for part in parts_of(fig) if part.name == "blocks"]  # review r31a: one numbering, from 0
+    assert [row[0] for row in blocks.rows] == ["0", "1"] and blocks.rows[0][2] == "(10, 10)"
 
 
 def test_workspace_figure_3d_draws_each_block_at_its_corners(recorded_polys):
@@ -352,11 +354,11 @@ def test_cspace_slice_equals_the_separating_axis_reference(clutter):
     np.testing.assert_allclose(np.ravel(star.get_data()), q[[5, 6]])
     assert star.get_color() == robot_drawing.VALID_COLOR
     assert len(_patches(fig.axes[1], "link")) == robot.n_links
-    fixed = ax.get_title().split("\n", 1)[1].removeprefix("fixed: ").replace("\n", " ").split(", ")
-    names = [n for k, n in enumerate(robot.dof_names) if k not in (5, 6)]  # r19b: "gamma" on a line, "2.93" the next
-    assert [f"{n} {q[robot.dof_names.index(n)]:.2f}" for n in names] == fixed
-    lines = ax.get_title().replace("fixed: ", "").split("\n")[1:]  # each line whole items: "name value, name value,"
-    assert len(lines) > 1 and all(len(item.split()) == 2 for line in lines for item in line.strip(", ").split(", "))
+    assert ax.get_title().split("\n")[1] == "the other DoF fixed at the star's"  # review r31a: not four lines
+    (star_at,) = [part for part in parts_of(fig) if part.name == "the star's configuration"]  # the values: its table
+    assert [tuple(row) for row in star_at.rows] == [
+        (name, f"{q[k]:.3g}", "yes" if k in (5, 6) else "no") for k, name in enumerate(robot.dof_names)
+    ]
 
 
 def test_a_checker_that_knows_no_workspace_is_a_clear_error():
@@ -408,13 +410,13 @@ def test_touching_names_exactly_the_link_and_block_pairs_the_separating_axis_ref
     Q = robot.sample(np.random.default_rng(3), 200)
     inside = Q[robot.in_bounds(Q)]
     for q in inside[:80]:
-        pairs = robot_drawing.touching(robot, clutter, q)
+        pairs = contact.touching(robot, clutter, q)
         for _, block in pairs:
             alone = Workspace(clutter.lower, clutter.upper, clutter.boxes[block : block + 1])
             assert not SeparatingAxisChecker(alone, robot).is_valid(q)
         if checker.is_valid(q):
             assert pairs == []
-    hits = [q for q in inside if not checker.is_valid(q) and robot_drawing.touching(robot, clutter, q)]
+    hits = [q for q in inside if not checker.is_valid(q) and contact.touching(robot, clutter, q)]
     assert hits  # some configurations touch a block
 
 
@@ -432,10 +434,10 @@ def test_verdict_figure_titles_each_panel_with_the_checkers_verdict_and_marks_wh
     assert left.get_title() == "valid" and right.get_title().startswith("in collision:\nlink ")  # FCL proves no gap
     assert left.get_xlim() == right.get_xlim() and left.get_ylim() == right.get_ylim()  # review r27a: one window
     assert not _patches(left, "touching link") and not _patches(left, "touched block")
-    pairs = robot_drawing.touching(robot, clutter, hit)
+    pairs = contact.touching(robot, clutter, hit)
     assert len(_patches(right, "touching link")) == len(_patches(right, "touched block")) == len(pairs) > 0
-    link, block = pairs[0]  # numbered as the arrays are (review r30a)
-    assert f"link {link} touches block {block}" in right.get_title()
+    link, block, depth = contact.contacts(robot, clutter, hit)[0]  # numbered as the arrays are (review r30a)
+    assert f"link {link} overlaps block {block} by {depth:.2g}" in right.get_title() and depth > 0
     assert "configuration 2, in collision" in alt_text(fig)
 
 
@@ -446,7 +448,20 @@ def test_a_valid_panel_says_the_gap_its_checker_proves(square_world):
     gap = exact.clearances(Q[:1], cap=1.0)[0]
     left, right = robot_drawing.verdict_figure(exact, Q).axes
     assert gap > 0 and left.get_title() == f"valid: at least {gap:.2g} clear\nof every block and wall"
-    assert right.get_title() == "in collision:\nsquare touches block 0"  # the point robot's one link, by name
+    assert right.get_title() == "in collision:\nsquare overlaps block 0 by 0.15"  # the point robot's link, by name
+
+
+def test_a_panel_tells_touching_from_overlapping_and_fills_the_overlap(square_world):
+    """Review r31a: chapter 01's squares touching and 0.2 into the block bore one title, the overlap hidden under
+    the outlines. The title says how deep; the part of a 2D link inside the block is filled."""
+    exact = exact_checker(square_world, robots.point_robot())
+    Q = np.array([[9.75, 11.0], [9.95, 11.0]])  # touching the block at [10, 12]^2, then 0.2 into it
+    touching, overlapping = robot_drawing.verdict_figure(exact, Q).axes
+    assert touching.get_title() == "in collision:\nsquare touches block 0" and not _patches(touching, "overlap")
+    assert overlapping.get_title() == "in collision:\nsquare overlaps block 0 by 0.2"
+    (fill,) = _patches(overlapping, "overlap")
+    np.testing.assert_allclose(np.sort(fill.get_xy()[:, 0])[[0, -1]], (10.0, 10.2))  # the square's part inside
+    assert contact.contacts(robots.point_robot(), square_world, Q[1]) == [(0, 0, pytest.approx(0.2))]
 
 
 def test_a_slice_over_positions_shows_a_pixel_beyond_the_bounds_dark(square_world):

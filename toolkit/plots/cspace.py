@@ -21,7 +21,6 @@ matplotlib ``Figure``, described in words (:func:`~toolkit.plots.alt.describe`),
 
 from __future__ import annotations
 
-import textwrap
 from collections.abc import Sequence
 from functools import partial
 from typing import Any
@@ -157,9 +156,9 @@ def _blocks_part(workspace: Workspace) -> Part:
     return Part(
         "blocks",
         f"each block's lower and upper corner ({', '.join('xyz'[: workspace.dim])})",
-        ("block", "kind", "lower corner", "upper corner"),
-        tuple(
-            (str(k + 1), workspace.labels[k] if workspace.labels else "block", point(lo), point(hi))
+        ("block (its index in boxes)", "kind", "lower corner", "upper corner"),
+        tuple(  # numbered from 0, as the arrays and the figure titles number them (review r31a)
+            (str(k), workspace.labels[k] if workspace.labels else "block", point(lo), point(hi))
             for k, (lo, hi) in enumerate(workspace.boxes)
         ),
     )
@@ -329,11 +328,8 @@ def cspace_slice(
         marker="*", markersize=14, markeredgecolor=COLORS["free"], color=link_colors(1, q_valid)[0]
     )
     ax.plot(q[joints[0]], q[joints[1]], linestyle="none", gid="q", **star)
-    fixed = [f"{robot.dof_names[k]}\N{NO-BREAK SPACE}{q[k]:.2f}" for k in range(robot.dof) if k not in joints]
-    lines = textwrap.fill("fixed: " + ", ".join(fixed), 38)  # a line breaks between two DoF, never in one (r19b)
-    ax.set_title(
-        f"{robot.name}: {1 - valid.mean():.0%} in collision (dark)\n" + lines.replace("\N{NO-BREAK SPACE}", " "),
-        fontsize=9,
+    ax.set_title(  # the fixed values are the description's table: four-line titles were the page's hardest (r31a)
+        f"{robot.name}: {1 - valid.mean():.0%} in collision (dark)\nthe other DoF fixed at the star's", fontsize=9
     )
     if view:
         _robot_panel(fig, grid[0, 1], checker, q, q_valid, view, margin)

@@ -15,8 +15,8 @@ from functools import lru_cache
 import numpy as np
 
 from toolkit.geometry.collision import CollisionChecker, exact_checker
+from toolkit.plots.contact import touching
 from toolkit.plots.cspace import checker_workspace, cspace_slice
-from toolkit.plots.robot_drawing import touching
 
 
 def configuration_near_blocks(checker: CollisionChecker, rng: np.random.Generator, n: int = 2000) -> np.ndarray:

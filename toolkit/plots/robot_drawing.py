@@ -4,7 +4,7 @@ Forward kinematics (``robot.link_boxes``) places each link box; :func:`draw_robo
 them, on an axes of your own, in 3D or projected onto a plane (the building block of :func:`robot_figure`, one panel
 per view with a legend naming the configurations, of :func:`toolkit.plots.cspace.cspace_slice` and
 :mod:`toolkit.plots.scenes`); :func:`verdict_figure` draws configurations side by side with a checker's verdict on
-each, and marks the link boxes and blocks that touch (:func:`touching`).
+each, and marks the link boxes and blocks that touch (:mod:`toolkit.plots.contact`).
 
 A configuration is drawn in the valid colour or, hatched, the invalid one (:func:`link_style`: colour is never the
 only cue), else in a colour and hatch of its own. Each box is drawn from its corners (:mod:`toolkit.plots.boxes`).
@@ -25,6 +25,7 @@ from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
+from toolkit.plots.contact import clip_to_box, contacts, nearby_blocks
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
 
 VALID_COLOR, INVALID_COLOR = COLORS["valid"], COLORS["invalid"]
@@ -56,11 +57,6 @@ def few_ticks(ax) -> None:
     if aspect is not None and aspect[2] < 0.3 * max(aspect[:2]):
         ax.set_zticks(ax.get_zlim())
         ax.zaxis.labelpad = 2
-
-
-def _nearby_blocks(workspace: Workspace, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
-    """Indices of the blocks that meet the axis-aligned window ``[lo, hi]`` (D,)."""
-    return np.flatnonzero(np.all((workspace.boxes[:, 0] <= hi) & (workspace.boxes[:, 1] >= lo), axis=1))
 
 
 def draw_robot(
@@ -131,7 +127,7 @@ def _window(aabbs: np.ndarray, workspace: Workspace | None, margin: float):
     if workspace is None:
         return lo, hi, np.zeros((0, 2, aabbs.shape[-1]))
     lo, hi = np.maximum(lo, workspace.lower), np.minimum(hi, workspace.upper)
-    return lo, hi, workspace.boxes[_nearby_blocks(workspace, lo, hi)]
+    return lo, hi, workspace.boxes[nearby_blocks(workspace, lo, hi)]
 
 
 def link_colors(n: int, valid: np.ndarray | None) -> list[str]:
@@ -305,35 +301,13 @@ def _hatch_name(hatch: str | None) -> str:
     )
 
 
-def touching(robot: BoxRobot, workspace: Workspace, q) -> list[tuple[int, int]]:
-    """The (link, block) pairs whose boxes touch at configuration ``q (dof,)``: closed boxes, so touching counts.
-
-    Separating axes (as ``SeparatingAxisChecker``): two boxes are apart exactly when some axis separates their
-    shadows, among the world's axes, the link's and, in 3D, their cross products."""
-    centers, rotations, half = robot.link_boxes(robot.check_configs(q)[:1])  # (1, L, D), (1, L, D, D), (L, D)
-    aabbs = robot.link_aabbs(robot.check_configs(q)[:1])[0]  # (L, 2, D)
-    pairs = []
-    for link, (center, rotation, h, (lo, hi)) in enumerate(zip(centers[0], rotations[0], half, aabbs)):
-        own = rotation.T  # (D, D) rows: the link's axes
-        axes = [np.eye(robot.dim), own]
-        if robot.dim == 3:
-            axes.append(np.cross(np.eye(3)[:, None, :], own[None, :, :]).reshape(9, 3))
-        axis = np.concatenate(axes)  # (A, D)
-        for block in _nearby_blocks(workspace, lo, hi):
-            b_lo, b_hi = workspace.boxes[block]
-            gap = np.abs(axis @ (center - (b_lo + b_hi) / 2))  # (A,)
-            reach = np.abs(axis @ own.T) @ h + np.abs(axis) @ ((b_hi - b_lo) / 2)  # (A,)
-            if not np.any(gap > reach + 1e-12 * (1 + reach)):
-                pairs.append((link, int(block)))
-    return pairs
-
-
 def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: float = 1.0) -> Figure:
     """Configurations ``Q (k, dof)`` side by side, one panel each, drawn in ``view`` with the blocks near them and
     the checker's verdict in each title. Every panel frames the same window (all of ``Q`` within ``margin``,
     review r27a: a move hidden by shifted axes), so a block reaching past it is drawn clipped. In a configuration
     in collision, each link box that touches a block and that block are outlined thick (the block dashed) and named
-    in the title, numbered as the arrays are: "platform touches block 11 (desk)" (review r30a); a valid one's title
+    in the title, numbered as the arrays are: "platform touches block 11 (desk)" (review r30a), or "square overlaps
+    block 0 by 0.2" with a 2D link's part inside the block filled dark (review r31a); a valid one's title
     gives its clearance where the checker proves one ("valid: at least 0.15 clear of every block and wall")."""
     robot, workspace = checker.robot, getattr(checker, "workspace", None)
     if not isinstance(workspace, Workspace):
@@ -350,18 +324,20 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
     said = []
     for ax, q, ok in zip(axes, Q, valid):
         draw_robot(ax, robot, q[None], colors=link_colors(1, ok), view=view, margin=margin)
-        for b_lo, b_hi in workspace.boxes[_nearby_blocks(workspace, lo, hi)]:
+        for b_lo, b_hi in workspace.boxes[nearby_blocks(workspace, lo, hi)]:
             ax.add_patch(Rectangle(b_lo[at], *(b_hi - b_lo)[at], alpha=0.5, zorder=0.9, **BLOCK_STYLE))
         ax.set(xlim=(lo[at[0]], hi[at[0]]), ylim=(lo[at[1]], hi[at[1]]))
-        pairs = [] if ok else touching(robot, workspace, q)
-        _outline_touching(ax, robot, workspace, q, pairs, plane)
-        named = [f"{_part(robot, link)} touches block {block}{_kind(workspace, block)}" for link, block in pairs]
+        found = [] if ok else contacts(robot, workspace, q)  # (link, block, depth) of each pair that touches
+        _outline_touching(ax, robot, workspace, q, found, plane)
+        named = [f"{_part(robot, link)} {_met(workspace, block, depth)}" for link, block, depth in found]
         verdict = _valid_title(checker, q) if ok else "in collision:\n" + ("; ".join(named) or "leaves the region")
         said.append(verdict.replace("\n", " "))
         ax.set_title(verdict, fontsize=10 if len(Q) < 3 else 9, wrap=True)
         ax.tick_params(labelsize=8)
     fig.tight_layout()
     marked = " Each link that touches a block is outlined thick, and the block it touches dashed." * (not all(valid))
+    filled = any(p.get_gid() == "overlap" for ax in axes for p in ax.patches)
+    marked += " The part of the robot inside a block is filled dark." * filled
     text = f"The {robot.name} robot at {len(Q)} configurations side by side, seen in the {view} plane with the blocks "
     text += "near it, each panel framing the same window, each titled with the exact checker's verdict: " + "; ".join(
         f"configuration {i + 1}, {v}" for i, v in enumerate(said)
@@ -378,16 +354,27 @@ def _valid_title(checker: CollisionChecker, q: np.ndarray) -> str:
     return f"valid: at least {gap:.2g} clear\nof every block and wall" if gap > 0 else "valid"
 
 
-def _outline_touching(ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray, pairs, plane: tuple[int, int]) -> None:
-    """Outline thick each link box of ``pairs`` (link, block) at ``q`` and, dashed, the block it touches."""
+def _outline_touching(ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray, found, plane: tuple[int, int]) -> None:
+    """Outline thick each link box of ``found`` (link, block, depth) at ``q`` and, dashed, the block it touches; a 2D
+    link's part inside the block filled (review r31a: "0.2 into the block" looked as if it touched)."""
     centers, rotations, half = robot.link_boxes(q[None])
     thick: dict[str, Any] = dict(fill=False, edgecolor=COLORS["ink"], linewidth=2.5)
-    for link, block in pairs:
+    at = list(plane)
+    for link, block, depth in found:
         b_lo, b_hi = workspace.boxes[block]
-        at = list(plane)
         ax.add_patch(Rectangle(b_lo[at], *(b_hi - b_lo)[at], linestyle="--", gid="touched block", zorder=4, **thick))
-        corners = box_corners(centers[0, link], rotations[0, link], half[link])
-        ax.add_patch(Polygon(outline(corners, plane), gid="touching link", zorder=5, **thick))
+        corners = outline(box_corners(centers[0, link], rotations[0, link], half[link]), plane)
+        ax.add_patch(Polygon(corners, gid="touching link", zorder=5, **thick))
+        inside = clip_to_box(corners, b_lo[at], b_hi[at]) if robot.dim == 2 and depth > 0 else np.zeros((0, 2))
+        if len(inside) > 2:  # in 3D a shadow's overlap need not be the boxes' own: nothing filled
+            ax.add_patch(Polygon(inside, facecolor=COLORS["occupied"], edgecolor="none", gid="overlap", zorder=4.5))
+
+
+def _met(workspace: Workspace, block: int, depth: float) -> str:
+    """How a link meets a block in a title: "touches block 0" at depth 0, else "overlaps block 0 by 0.2"."""
+    return f"{'overlaps' if depth > 1e-9 else 'touches'} block {block}{_kind(workspace, block)}" + (
+        f" by {depth:.2g}" if depth > 1e-9 else ""
+    )
 
 
 def _kind(workspace: Workspace, block: int) -> str:

@@ -1,0 +1,66 @@
+"""Where a drawn robot meets a block: which link boxes touch which blocks, how deep they overlap, and the part of a
+flat shape inside a block (the figure of one check, :func:`toolkit.plots.robot_drawing.verdict_figure`).
+
+Separating axes, as ``SeparatingAxisChecker``: two boxes are apart exactly when some axis separates their shadows,
+among the world's axes, the link's and, in 3D, their cross products; the least overlap of the shadows along those
+axes is how far the link must move to clear the block (closed boxes: touching counts, at depth 0).
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from toolkit.geometry.robots import BoxRobot
+from toolkit.geometry.workspace import Workspace
+
+
+def nearby_blocks(workspace: Workspace, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """Indices of the blocks that meet the axis-aligned window ``[lo, hi]`` (D,)."""
+    return np.flatnonzero(np.all((workspace.boxes[:, 0] <= hi) & (workspace.boxes[:, 1] >= lo), axis=1))
+
+
+def contacts(robot: BoxRobot, workspace: Workspace, q) -> list[tuple[int, int, float]]:
+    """The (link, block, depth) of each link box and block that touch at configuration ``q (dof,)``: ``depth`` is
+    how far the link must move to clear the block, 0 where they only touch."""
+    Q = robot.check_configs(q)[:1]  # (1, dof)
+    centers, rotations, half = robot.link_boxes(Q)  # (1, L, D), (1, L, D, D), (L, D)
+    found = []
+    for link, (center, rotation, h, (lo, hi)) in enumerate(zip(centers[0], rotations[0], half, robot.link_aabbs(Q)[0])):
+        own = rotation.T  # (D, D) rows: the link's axes
+        axes = [np.eye(robot.dim), own]
+        if robot.dim == 3:
+            axes.append(np.cross(np.eye(3)[:, None, :], own[None, :, :]).reshape(9, 3))
+        axis = np.concatenate(axes)  # (A, D)
+        length = np.linalg.norm(axis, axis=1)  # (A,) a cross product of parallel axes is 0: no axis
+        axis = axis[length > 1e-9] / length[length > 1e-9, None]
+        for block in nearby_blocks(workspace, lo, hi):
+            b_lo, b_hi = workspace.boxes[block]
+            gap = np.abs(axis @ (center - (b_lo + b_hi) / 2))  # (A,)
+            reach = np.abs(axis @ own.T) @ h + np.abs(axis) @ ((b_hi - b_lo) / 2)  # (A,)
+            if not np.any(gap > reach + 1e-12 * (1 + reach)):
+                found.append((link, int(block), float(max(0.0, (reach - gap).min()))))
+    return found
+
+
+def touching(robot: BoxRobot, workspace: Workspace, q) -> list[tuple[int, int]]:
+    """The (link, block) pairs whose boxes touch at configuration ``q (dof,)``: closed boxes, so touching counts."""
+    return [(link, block) for link, block, _ in contacts(robot, workspace, q)]
+
+
+def clip_to_box(polygon: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
+    """The part of a convex ``polygon (n, 2)`` inside the rectangle ``[lo, hi]`` (2,), as a polygon ``(m, 2)``
+    (empty where they do not overlap): each side of the rectangle cuts away what lies beyond it."""
+    for k in range(2):
+        for sign, bound in ((1.0, hi[k]), (-1.0, lo[k])):
+            inside = sign * (polygon[:, k] - bound) <= 0  # (n,)
+            kept = []
+            for i in range(len(polygon)):
+                a, b = polygon[i], polygon[(i + 1) % len(polygon)]
+                if inside[i]:
+                    kept.append(a)
+                if inside[i] != inside[(i + 1) % len(polygon)]:  # the side crosses the bound: keep the crossing
+                    kept.append(a + (b - a) * (bound - a[k]) / (b[k] - a[k]))
+            polygon = np.array(kept).reshape(-1, 2)
+            if not len(polygon):
+                return polygon
+    return polygon
