@@ -236,18 +236,20 @@ def test_named_configurations_carry_a_marker_of_their_own_at_their_last_link():
     assert not [line for line in single.axes[0].get_lines() if line.get_marker() not in ("None", "")]
 
 
-def test_a_figure_of_the_robots_parts_marks_its_base_and_shades_each_link_size():
+def test_a_figure_of_the_robots_parts_marks_its_base_and_shades_each_link():
     """Review r29a: the 9-DoF chain's base was unmarked and its small cubes drawn as its long links."""
     robot = robots.box_chain(3)
     q = np.array([5.0, 5.0, 5.0, 0.3, 0.2, 0.0, 1.0, -1.0, 0.8])
     fig = robot_drawing.robot_figure(robot, q, views=("xy",), parts=True)
     faces = [to_hex(p.get_facecolor()[:3]) for p in _patches(fig.axes[0], "link")]
-    assert len(set(faces)) == 2 and faces.count(faces[0]) == 2  # two small cubes, two long links
+    assert len(set(faces)) == 4  # review r31a: the two long links, one shade, could not be told apart
     (dot,) = [line for line in fig.axes[0].get_lines() if line.get_marker() == "o"]
     np.testing.assert_allclose(dot.get_xydata()[0], [5.0, 5.0])
     assert [t.get_text() for t in fig.legends[0].get_texts()] == [
-        "link 0.1 \N{MULTIPLICATION SIGN} 0.1 \N{MULTIPLICATION SIGN} 0.1",
-        "link 0.4 \N{MULTIPLICATION SIGN} 0.1 \N{MULTIPLICATION SIGN} 0.1",
+        "link 0: 0.1 long",
+        "link 1: 0.4 long",
+        "link 2: 0.1 long",
+        "link 3: 0.4 long",
         "base",
     ]
     assert "Its base is marked with a black dot" in alt_text(fig)
@@ -487,3 +489,19 @@ def test_the_slice_explorer_starts_at_a_valid_configuration_and_redraws_when_a_s
     capsys.readouterr()  # outside a kernel, the Output widget's content goes to stdout
     sweep_j.value = 5  # the same DoF twice: a message, not a figure
     assert "choose two different DoF" in capsys.readouterr().out
+
+
+def test_the_youbots_arm_is_labelled_in_its_flat_views():
+    """Review r31a: the arm, a few pixels on the platform, went unseen in chapter 01's robot panels."""
+    youbot = scenarios.get("3do").robot
+    world = Workspace(np.zeros(3), np.array([41.0, 41.0, 6.0]), np.array([[[20, 20, 0], [22, 22, 1]]], dtype=float))
+    checker = exact_checker(world, youbot)
+    q = np.array([10.0, 10.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0])
+    panels = [
+        robot_drawing.verdict_figure(checker, q[None]).axes[0],
+        cspace.cspace_slice(checker, q, resolution=4).axes[1],
+    ]
+    assert [[t.get_text() for t in ax.texts] for ax in panels] == [["arm"], ["arm"]]
+    assert (
+        not robot_drawing.verdict_figure(exact_checker(world, robots.box_chain(1)), [5.0] * 3 + [0.0] * 4).axes[0].texts
+    )

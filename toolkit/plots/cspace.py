@@ -44,6 +44,7 @@ from toolkit.plots.robot_drawing import (
     draw_robot,
     few_ticks,
     link_colors,
+    mark_arm,
 )
 from toolkit.plots.slices import joint_bounds, slice_configs
 
@@ -358,6 +359,7 @@ def _robot_panel(fig: Figure, cell, checker: CollisionChecker, q: np.ndarray, q_
     draw_robot(robot_ax, robot, q[None], colors=colors, view=view, workspace=workspace, margin=margin)
     base = robot.link_frames(q[None])[0][0, 0, : robot.dim]  # (D,) the base's position: a black dot (r30a)
     robot_ax.plot(*([c] for c in (base if view == "3d" else base[list(VIEWS[view])])), gid="base", **BASE_MARK)
+    mark_arm(robot_ax, robot, q, view)
     verdict = "valid" if q_valid[0] else "in collision"
     robot_ax.set_title(f"the robot at the star ({view}):\n{verdict}; black dot: its base", fontsize=9)
     if view == "3d":

@@ -26,7 +26,7 @@ from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
 from toolkit.plots.contact import clip_to_box, contacts, nearby_blocks
-from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
+from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, OKABE_ITO, PAGE_WIDTH
 
 VALID_COLOR, INVALID_COLOR = COLORS["valid"], COLORS["invalid"]
 BLOCK_STYLE: dict[str, Any] = dict(facecolor=COLORS["block"], edgecolor=COLORS["occupied"], gid="block")
@@ -156,7 +156,7 @@ def robot_figure(
     ``workspace`` within ``margin`` of the robot are drawn too; ``valid (k,)`` colors
     each configuration in the valid colour or, hatched, the invalid one (a legend names them), else each one in a
     colour of its own, named in a legend by ``labels (k,)``, links the same in all of them grey ("the same in each").
-    ``parts``: the base marked with a dot, each link size in a shade of its own (review r29a).
+    ``parts``: the base marked with a dot, each link in a shade of its own, numbered from the base (r29a, r31a).
     """
     Q = robot.check_configs(Q)  # (k, dof)
     views = views or (("xy",) if robot.dim == 2 else ("3d", "xy", "xz"))
@@ -225,13 +225,13 @@ BASE_MARK: dict[str, Any] = dict(marker="o", ms=7, color=COLORS["ink"], mec=COLO
 
 def _link_shades(robot: BoxRobot, Q: np.ndarray, named: bool, parts: bool):
     """Per link, the colour and hatch replacing its configuration's (or None), and the legend's name of each: links
-    the same in every named configuration grey ("the same in each"), or with ``parts`` one shade per link size."""
-    if parts:
-        sizes = [tuple(float(v) for v in 2 * h) for h in robot.half_extents]
-        order = list(dict.fromkeys(sizes))  # each size once, in the chain's order
-        shade = {size: (CATEGORICAL[i % len(CATEGORICAL)], HATCHES[i % len(HATCHES)]) for i, size in enumerate(order)}
-        names = {"link " + " \N{MULTIPLICATION SIGN} ".join(f"{v:g}" for v in size): shade[size] for size in order}
-        return [shade[size] for size in sizes], names
+    the same in every named configuration grey ("the same in each"), or with ``parts`` one shade per link."""
+    if parts:  # one shade per link, numbered from 0 as link_boxes: two links of one size told apart (r31a)
+        shades = [(CATEGORICAL[i % len(CATEGORICAL)], HATCHES[i % len(HATCHES)]) for i in range(robot.n_links)]
+        names = {
+            f"link {i}: {2 * h.max():g} long": shade for i, (h, shade) in enumerate(zip(robot.half_extents, shades))
+        }
+        return shades, names
     if not named:
         return None, {}
     centers, rotations, _ = robot.link_boxes(Q)  # (k, L, D), (k, L, D, D)
@@ -246,9 +246,7 @@ def _link_shades(robot: BoxRobot, Q: np.ndarray, named: bool, parts: bool):
 def _shades_text(shade_names: dict, parts: bool) -> str:
     """What :func:`_link_shades` changed, for the figure's description."""
     if parts:
-        return (
-            f" Its base is marked with a black dot; its links by size ({', '.join(shade_names)}), each its own shade."
-        )
+        return f" Its base is marked with a black dot; its links from the base ({', '.join(shade_names)}), each shaded."
     return " Links the same in every configuration are drawn in light grey ('the same in each')." * bool(shade_names)
 
 
@@ -307,7 +305,7 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
     review r27a: a move hidden by shifted axes), so a block reaching past it is drawn clipped. In a configuration
     in collision, each link box that touches a block and that block are outlined thick (the block dashed) and named
     in the title, numbered as the arrays are: "platform touches block 11 (desk)" (review r30a), or "square overlaps
-    block 0 by 0.2" with a 2D link's part inside the block filled dark (review r31a); a valid one's title
+    block 0 by 0.2" with a 2D link's part inside the block filled light (review r31a); a valid one's title
     gives its clearance where the checker proves one ("valid: at least 0.15 clear of every block and wall")."""
     robot, workspace = checker.robot, getattr(checker, "workspace", None)
     if not isinstance(workspace, Workspace):
@@ -329,6 +327,7 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
         ax.set(xlim=(lo[at[0]], hi[at[0]]), ylim=(lo[at[1]], hi[at[1]]))
         found = [] if ok else contacts(robot, workspace, q)  # (link, block, depth) of each pair that touches
         _outline_touching(ax, robot, workspace, q, found, plane)
+        mark_arm(ax, robot, q, view)
         named = [f"{_part(robot, link)} {_met(workspace, block, depth)}" for link, block, depth in found]
         verdict = _valid_title(checker, q) if ok else "in collision:\n" + ("; ".join(named) or "leaves the region")
         said.append(verdict.replace("\n", " "))
@@ -337,7 +336,7 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
     fig.tight_layout()
     marked = " Each link that touches a block is outlined thick, and the block it touches dashed." * (not all(valid))
     filled = any(p.get_gid() == "overlap" for ax in axes for p in ax.patches)
-    marked += " The part of the robot inside a block is filled dark." * filled
+    marked += " The part of the robot inside a block is filled light." * filled
     text = f"The {robot.name} robot at {len(Q)} configurations side by side, seen in the {view} plane with the blocks "
     text += "near it, each panel framing the same window, each titled with the exact checker's verdict: " + "; ".join(
         f"configuration {i + 1}, {v}" for i, v in enumerate(said)
@@ -367,7 +366,20 @@ def _outline_touching(ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray, 
         ax.add_patch(Polygon(corners, gid="touching link", zorder=5, **thick))
         inside = clip_to_box(corners, b_lo[at], b_hi[at]) if robot.dim == 2 and depth > 0 else np.zeros((0, 2))
         if len(inside) > 2:  # in 3D a shadow's overlap need not be the boxes' own: nothing filled
-            ax.add_patch(Polygon(inside, facecolor=COLORS["occupied"], edgecolor="none", gid="overlap", zorder=4.5))
+            light: dict[str, Any] = dict(
+                facecolor=OKABE_ITO["yellow"], edgecolor=COLORS["ink"], linewidth=1
+            )  # over the outlines
+            ax.add_patch(Polygon(inside, gid="overlap", zorder=6, **light))
+
+
+def mark_arm(ax, robot: BoxRobot, q: np.ndarray, view: str) -> None:
+    """Label the youBot's arm in a flat view: a few pixels on its platform, it went unseen (review r31a)."""
+    if robot.name != "youbot" or view not in VIEWS:
+        return
+    at = robot.link_boxes(q[None])[0][0, 1:][:, list(VIEWS[view])].mean(axis=0)  # (2,) the arm links' mean centre
+    box = dict(boxstyle="round,pad=0.15", facecolor=COLORS["free"], edgecolor=COLORS["ink"], linewidth=0.6)
+    arrow = dict(arrowstyle="-", color=COLORS["ink"], linewidth=0.8)
+    ax.annotate("arm", at, xytext=(14, 14), textcoords="offset points", fontsize=8, bbox=box, arrowprops=arrow)
 
 
 def _met(workspace: Workspace, block: int, depth: float) -> str:
