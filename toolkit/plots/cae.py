@@ -16,6 +16,7 @@ as in :func:`toolkit.learning.metrics.reconstruction_accuracy`. Nothing here cal
 
 from __future__ import annotations
 
+import re
 import textwrap
 from typing import Any
 
@@ -243,7 +244,8 @@ def contraction(
     for ax in (ax_z, ax_x):
         _counts_axis(ax, "x", flips)  # the numbers of flips measured
         ax.set_xlabel("cells flipped (log scale)")
-    fig.legend(handles=ax_x.get_lines(), loc="outside lower center", ncols=2, fontsize=9, frameon=False)  # on no curve
+    # on no curve, and above the panels (reader r31b: under the boxes it lay a screen below the top right panel)
+    fig.legend(handles=ax_x.get_lines(), loc="outside upper center", ncols=2, fontsize=9, frameon=False)
     for ax in (ax_j, ax_z, ax_x):  # review r16b: the legends and ticks at 8 pt, shrunk to the page, read as 8 px
         ax.tick_params(labelsize=9)
     said = "; ".join(
@@ -313,13 +315,23 @@ def _draw_norms(ax, jacobian_norms: dict[str, np.ndarray]) -> None:
     low, high = ax.get_ylim()
     ax.set_ylim(low, high + 0.35 * (high - low))  # room above the boxes: the legend covers none
     ax.legend(marks, list(NORM_MARKS), fontsize=9, loc="upper center")
-    ax.set_xticks(range(1, len(names) + 1), _fitted(names, _slot_points(ax, len(names)), NAME_POINTS), fontsize=9)
-    ax.set_xlabel("model")
+    ticks, axis_name = _tick_names(names)
+    ax.set_xticks(range(1, len(names) + 1), _fitted(ticks, _slot_points(ax, len(names)), NAME_POINTS), fontsize=9)
+    ax.set_xlabel(axis_name)
     ax.set_ylabel("Jacobian norm ||dz/dx|| per workspace")
     ax.set_title("Encoder Jacobian norm", fontsize=10)
 
 
 NAME_POINTS = 9.0  # the boxes' names, in points
+
+
+def _tick_names(names: list[str]) -> tuple[list[str], str]:
+    """The boxes' tick labels and the axis's name: models all named "λ = ..." ticked by their λ alone, a trailing
+    "(...)" left to the legend (reader r31b: "λ = 0.961 (mean reading)" wrapped to four lines under its box); other
+    names whole, under "model"."""
+    if not all(name.startswith("λ = ") for name in names):
+        return names, "model"
+    return [re.sub(r" \(.*\)$", "", name.removeprefix("λ = ")) for name in names], "λ"
 
 
 def _slot_points(ax, n: int) -> float:
