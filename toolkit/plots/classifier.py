@@ -205,7 +205,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     blocks = fit_cell_marks(fig, grid)  # the mistakes' marks as large as one sees, the circles sparse
     per = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
     block = {code: f" (one per {k} x {k} cells holding any)" if k > 1 else "" for code, k in per.items()}
-    per_block = f"\nsquares 1 per {per[3]} x {per[3]} cells, circles 1 per {per[1]} x {per[1]}"  # marks < mistakes
+    per_block = f"\nsquares 1 per {per[3]} x {per[3]}-cell tile, circles 1 per {per[1]} x {per[1]}"  # marks < mistakes
     ax_map.set_title(
         f"decision at threshold {threshold:.2f}" + (per_block if max(per.values()) > 1 else ""), fontsize=9
     )
@@ -363,7 +363,7 @@ def _mistake_handles(blocks: Mapping[int, int]) -> list:
     """The P(valid) maps' legend: the threshold's line, and each mistake's mark, said to be one (``blocks[code]`` 1) or
     one per ``k x k`` cells holding any (review r18b: the conservative circles along the blocks read as a border)."""
     cut = Line2D([], [], color=COLORS["ink"], linestyle=":", linewidth=CUT_MAP, path_effects=halo(CUT_MAP, ("free",)))
-    per = {code: f"\none per {k} x {k} cells holding any" if k > 1 else "" for code, k in blocks.items()}
+    per = {code: f"\none per {k} x {k}-cell tile holding any" if k > 1 else "" for code, k in blocks.items()}
     return [
         (cut, "P(valid) = threshold (dotted):\nthe lighter side is kept"),
         (_mistake_line(3), f"dangerous mistake: kept, in\ncollision (squares){per[3]}"),
