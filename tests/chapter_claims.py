@@ -253,7 +253,7 @@ def _chapter_02_unseen(nb, found: str) -> list[str]:
         if abs(float(row[-1].split()[0])) > COUPLE:
             problems.append(f"02: {row[0]} scores {row[-1]} against 'all free' on unseen grids: not within a couple")
     answer = re.search(
-        r'\*\*The answer\.\*\* .*? On unseen grids it gets ([\d.]+)%, where answering "all free" gets '
+        r'\*\*In numbers\.\*\* .*? On unseen grids it gets ([\d.]+)%, where answering "all free" gets '
         r'([\d.]+)% .*?\*\*no better than answering "all free"\*\*',
         found,
     )

@@ -1039,7 +1039,7 @@ def chapter_02(
         'MD:| grids | accuracy, lowest – highest | points above "all free", fewest – most | above the diagonal |\n'
         f"| --- | ---: | ---: | ---: |\n| seen | 98.9% – 100.0% | +0.8 – +21.6 | {seen_above} of 30 |\n"
         "| unseen | 80.1% – 94.0% | -5.2 – +1.1 | 3 of 10 |",
-        "MD:**The answer.** Trained on 30 grids, CAE-long memorizes them: 99.6% of their cells right. On "
+        "MD:**In numbers.** Trained on 30 grids, CAE-long memorizes them: 99.6% of their cells right. On "
         f'unseen grids it gets {unseen[1]:.1f}%, where answering "all free" gets 87.6% ({abs(unseen[1] - 87.6):.1f} '
         f"points {'below' if unseen[1] < 87.6 else 'above'}): it rebuilds a new workspace **no better than "
         'answering "all free"**, and the paper\'s unseen column does not reproduce.',
@@ -1102,7 +1102,7 @@ def test_chapter_02_holds_its_closing_answer_to_its_numbers():
     answer = nb["cells"][-1]["outputs"][0]["data"]
     answer["text/markdown"] = answer["text/markdown"].replace("gets 86.8%", "gets 91.0%")
     assert "02: the answer says 'no better than all free' of 91.0% against 87.6%" in problems(CH02, nb)
-    answer["text/markdown"] = "**The answer.** the CAE does better."
+    answer["text/markdown"] = "**In numbers.** the CAE does better."
     assert problems(CH02, nb) == ["02: the closing answer with this run's unseen score and 'all free' is not printed"]
 
 
