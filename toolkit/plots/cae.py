@@ -249,8 +249,7 @@ def contraction(
     for ax in (ax_z, ax_x):
         _counts_axis(ax, "x", flips)  # the numbers of flips measured
         ax.set_xlabel("cells flipped (log scale)")
-    # on no curve, and above the panels (reader r31b: under the boxes it lay a screen below the top right panel)
-    fig.legend(handles=ax_x.get_lines(), loc="outside upper center", ncols=2, fontsize=9, frameon=False)
+    fig.legend(handles=ax_x.get_lines(), loc="outside upper center", ncols=2, fontsize=9, frameon=False)  # r31b: above
     for ax in (ax_j, ax_z, ax_x):  # review r16b: the legends and ticks at 8 pt, shrunk to the page, read as 8 px
         ax.tick_params(labelsize=9)
     said = "; ".join(
