@@ -196,7 +196,7 @@ def _chapter_02_contracts(nb, found: str) -> list[str]:
     works"), and the closing that all three 30-grid CAEs reproduce the seen column (it once named one)."""
     problems = []
     norms = re.search(
-        r"median Jacobian norm: λ = 0 ([\d.]+), λ = 1e-3 \(paper\) ([\d.]+), λ = 0.961 \S+ \S+ ([\d.]+)", found
+        r"median Jacobian norm: λ = 0 ([\d.]+), λ = 1e-3, CAE-long ([\d.]+), λ = 0.961 \S+ \S+ ([\d.]+)", found
     )
     if norms is None:
         problems.append("02: section 6 does not print the three median Jacobian norms")
@@ -253,7 +253,7 @@ def _chapter_02_unseen(nb, found: str) -> list[str]:
         if abs(float(row[-1].split()[0])) > COUPLE:
             problems.append(f"02: {row[0]} scores {row[-1]} against 'all free' on unseen grids: not within a couple")
     answer = re.search(
-        r'\*\*The answer\.\*\* .*? On unseen grids it gets ([\d.]+)%, where answering "all free" gets '
+        r'\*\*In numbers\.\*\* .*? On unseen grids it gets ([\d.]+)%, where answering "all free" gets '
         r'([\d.]+)% .*?\*\*no better than answering "all free"\*\*',
         found,
     )

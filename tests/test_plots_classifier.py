@@ -348,9 +348,10 @@ def test_a_maps_circles_lie_over_its_outlines_and_every_mark_inside_its_frame():
         assert inside >= np.sqrt(mark.get_sizes()[0]) / 2 + cell_marks.RING - 1e-6
 
 
-def test_the_threshold_line_lies_over_the_outlines_and_under_the_squares():
+def test_the_threshold_line_lies_under_the_outlines_and_shows_on_both_sides_of_them():
     """Reader r20b, chapter 03's `strong` map: where the model is sharp its dotted threshold line runs along the
-    C-obstacle's outlines, and drawn under them it could not be seen. It is drawn over them, the squares over both."""
+    C-obstacle's outlines, and drawn under them it could not be seen; r31c: drawn over them it made the outline look
+    beaded, and neither read. It is drawn under them, wider than the ringed outline, the squares over both."""
     fine = slices.slice_grid(robots.point_robot(), n=60)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
     valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (60, 60)
@@ -358,7 +359,9 @@ def test_the_threshold_line_lies_over_the_outlines_and_under_the_squares():
     contours = [c for c in ax.get_children() if isinstance(c, ContourSet) and not c.filled]
     (cut,) = [c for c in contours if c is not boundary_of(ax)]
     (squares,) = [c for c in cell_marks.cell_marks(ax) if c.get_label() == "invalid kept (dangerous)"]
-    assert boundary_of(ax).get_zorder() < cut.get_zorder() < squares.get_zorder()
+    assert cut.get_zorder() < boundary_of(ax).get_zorder() < squares.get_zorder()
+    ringed = boundary_of(ax).get_linewidths()[0] + 2 * 1.6  # the outline with its black and white rings
+    assert min(cut.get_linewidths()) >= ringed + 1.0  # its dots stick out on both sides
 
 
 def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, probability, valid):

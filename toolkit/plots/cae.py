@@ -16,13 +16,16 @@ as in :func:`toolkit.learning.metrics.reconstruction_accuracy`. Nothing here cal
 
 from __future__ import annotations
 
+import re
 import textwrap
 from typing import Any
 
 import numpy as np
+from matplotlib import colormaps
 from matplotlib.figure import Figure
 from matplotlib.font_manager import FontProperties
 from matplotlib.lines import Line2D
+from matplotlib.patches import Patch
 from matplotlib.textpath import TextToPath
 from matplotlib.ticker import NullLocator
 
@@ -110,19 +113,22 @@ def reconstructions(
         _image(axes[0], grid, "input")
         _image(axes[1], np.where(out > 0, 1.0, -1.0), "decoded (sign)")
         wrong = wrong_in_words(kinds)
-        _image(axes[2], grid, wrong, alpha=0.25, axes=True)  # the thumbnails on its left: the same x and y
+        _image(axes[2], grid, wrong, alpha=FADED, axes=True)  # the thumbnails on its left: the same x and y
         draw_wrong_cells(axes[2], grid, kinds, cell=72 * 0.62 * fig.get_figwidth() / max(grid.shape))
         all_free = np.mean(target < 0)
         row.suptitle(f"{name}: {acc:.1%} {right} (all free: {all_free:.1%})", fontsize=10)
         said.append(f"{name}: {acc:.1%} {right} against {all_free:.1%} for answering all free; {wrong}")
         parts.append(grid_part(name, said[-1], grid, out, None if flipped is None else flipped[k]))
     handles, labels = legend_handles(list(drawn))  # "missed cell", not "block": mostly single cells (r29b)
+    handles.append(Patch(facecolor=colormaps[GREYS_CMAP](1.0), alpha=FADED, edgecolor=COLORS["ink"], linewidth=0.5))
+    labels.append("occupied in the input (faded)")  # reader r31b: a seen grid's panel, all grey, read as empty
     key.legend(handles, labels, loc="center", ncols=2, fontsize=9, frameon=False)
     grids_said = f"{len(grids)} occupancy grid{'s' if len(grids) > 1 else ''}"
     text = f"{grids_said}, each beside its reconstruction and its wrong cells. " + "; ".join(said)
     return describe(fig, text + ".", parts)
 
 
+FADED = 0.25  # the input's opacity under the wrong cells' marks: its obstacles light grey
 WRONG = 2.2  # the wrong cells' panel's width against the input's column: 0.62 of the figure's, laid out
 FEW = 50  # a group of at most this many workspaces is drawn larger and on top: hundreds of points would bury it
 GREY = {True: dict(s=28, alpha=1.0, linewidths=0.8, zorder=3), False: dict(s=10, alpha=0.5, linewidths=0, zorder=1)}
@@ -243,7 +249,7 @@ def contraction(
     for ax in (ax_z, ax_x):
         _counts_axis(ax, "x", flips)  # the numbers of flips measured
         ax.set_xlabel("cells flipped (log scale)")
-    fig.legend(handles=ax_x.get_lines(), loc="outside lower center", ncols=2, fontsize=9, frameon=False)  # on no curve
+    fig.legend(handles=ax_x.get_lines(), loc="outside upper center", ncols=2, fontsize=9, frameon=False)  # r31b: above
     for ax in (ax_j, ax_z, ax_x):  # review r16b: the legends and ticks at 8 pt, shrunk to the page, read as 8 px
         ax.tick_params(labelsize=9)
     said = "; ".join(
@@ -313,13 +319,23 @@ def _draw_norms(ax, jacobian_norms: dict[str, np.ndarray]) -> None:
     low, high = ax.get_ylim()
     ax.set_ylim(low, high + 0.35 * (high - low))  # room above the boxes: the legend covers none
     ax.legend(marks, list(NORM_MARKS), fontsize=9, loc="upper center")
-    ax.set_xticks(range(1, len(names) + 1), _fitted(names, _slot_points(ax, len(names)), NAME_POINTS), fontsize=9)
-    ax.set_xlabel("model")
+    ticks, axis_name = _tick_names(names)
+    ax.set_xticks(range(1, len(names) + 1), _fitted(ticks, _slot_points(ax, len(names)), NAME_POINTS), fontsize=9)
+    ax.set_xlabel(axis_name)
     ax.set_ylabel("Jacobian norm ||dz/dx|| per workspace")
     ax.set_title("Encoder Jacobian norm", fontsize=10)
 
 
 NAME_POINTS = 9.0  # the boxes' names, in points
+
+
+def _tick_names(names: list[str]) -> tuple[list[str], str]:
+    """The boxes' tick labels and the axis's name: models all named "λ = ..." ticked by their λ alone, a trailing
+    "(...)" left to the legend (reader r31b: "λ = 0.961 (mean reading)" wrapped to four lines under its box); other
+    names whole, under "model"."""
+    if not all(name.startswith("λ = ") for name in names):
+        return names, "model"
+    return [re.sub(r" \(.*\)$", "", name.removeprefix("λ = ")) for name in names], "λ"
 
 
 def _slot_points(ax, n: int) -> float:

@@ -47,13 +47,14 @@ ANSWER_COLORS = (COLORS["free"], CONSERVATIVE, COLORS["occupied"], DANGEROUS)  #
 MISTAKE_MARKERS = {1: "o", 3: "s"}  # conservative circles, dangerous squares: the mistakes told without colour
 CUT = 2.5  # points: the path map's dotted line at the model's threshold, bold enough to follow across the map (r15c)
 END_CLEAR = 0.06  # of a map's width: a path's diamond nearer an end than this is left out, the end's mark beside it
-CUT_MAP = 1.5  # points: the same line on a map of mistakes, whose marks it must not bury
-ZORDER = {1: 2.8, 3: 3.0}  # over the lines (2: the boundary, 2.5: the threshold's contour), squares over circles
-# (r29c: circles under the outlines were half hidden; r10b, r11: a square under its ringed line was cut in two)
+OUTLINE = 1.2  # points: the true C-obstacle boundary's line, its black and white rings 1.6 points wider each
+CUT_MAP = OUTLINE + 3 * 1.6  # a map's line: under the ringed outline, wider, dots both sides (r31c: over, it beaded)
+ZORDER = {1: 2.8, 3: 3.0}  # over the lines (2: the boundary), squares over circles (r29c: circles under the outlines
+# were half hidden; r10b, r11: a square under its ringed line was cut in two)
 PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
 HATCH = COLORS["c_obstacle"]  # the C-obstacles' hatch on a P(valid) map: light, seen on its black and its greys
-BLOCKS = {1: 5, 3: 10}  # blocks a side on every map: a 100-cell map's circles one per 20 x 20 cells, squares 10 x 10
+BLOCKS = {1: 5, 3: 10}  # tiles a side on every map: a 100-cell map's circles one per 20 x 20 cells, squares 10 x 10
 
 
 def probability_map(
@@ -205,7 +206,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     blocks = fit_cell_marks(fig, grid)  # the mistakes' marks as large as one sees, the circles sparse
     per = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
     block = {code: f" (one per {k} x {k} cells holding any)" if k > 1 else "" for code, k in per.items()}
-    per_block = f"\nsquares 1 per {per[3]} x {per[3]} cells, circles 1 per {per[1]} x {per[1]}"  # marks < mistakes
+    per_block = f"\nsquares 1 per {per[3]} x {per[3]}-cell tile, circles 1 per {per[1]} x {per[1]}"  # marks < mistakes
     ax_map.set_title(
         f"decision at threshold {threshold:.2f}" + (per_block if max(per.values()) > 1 else ""), fontsize=9
     )
@@ -235,9 +236,9 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
 
 def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float, *, mistakes=True, cut=CUT_MAP):
     """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary, the threshold's contour dotted ``cut`` points
-    wide (over the boundary: where the model is sharp, the two run together) and, with ``mistakes``, dangerous
-    cells as squares and conservative ones as circles, sparse enough that the grey between them is P(valid)
-    (review r18b: a hatch of dots over the `paper` map's rejected free space hid its grey)."""
+    wide (:data:`CUT_MAP`: under the boundary and wider, both show where they meet; the path map's over it) and, with
+    ``mistakes``, dangerous cells as squares and conservative ones as circles, sparse enough that the grey between
+    them is P(valid) (review r18b: a hatch of dots over the `paper` map's rejected free space hid its grey)."""
     probability = _on_grid(probability, grid, "probability")
     image = ax.imshow(
         probability.T,
@@ -253,7 +254,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
         line = ax.contour(*grid.axes, probability.T, levels=[threshold], colors=COLORS["ink"], linestyles=":")
         line.set_linewidth(cut)
         line.set_path_effects(halo(cut, ("free",)))  # a white ring: it shows on the dark side too
-        line.set_zorder(2.5)  # over the boundary (2), under the squares: r20b could not see it under the outlines
+        line.set_zorder(1.9 if cut >= CUT_MAP else 2.5)  # a map's wide line under the boundary (2), the path map's over
     _draw_boundary(ax, valid, grid)
     draw_cell_hatch(ax, grid, ~_on_grid(valid, grid, "valid"), color=HATCH)  # the truth without reading the grey
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
@@ -347,7 +348,7 @@ def _draw_boundary(ax, valid, grid: CSpaceSlice) -> None:
     """The true C-obstacle boundary: the 0.5 contour of the exact checker's answers; axis names."""
     valid = _on_grid(valid, grid, "valid")
     if valid.any() and not valid.all():
-        draw_cell_outline(ax, grid, valid, colors=BOUNDARY, linewidths=1.2).set_path_effects(halo(1.2))
+        draw_cell_outline(ax, grid, valid, colors=BOUNDARY, linewidths=OUTLINE).set_path_effects(halo(OUTLINE))
     ax.set_xlabel(dof_label(grid.names[0]))  # an angle with its unit, radians
     ax.set_ylabel(dof_label(grid.names[1]))
 
@@ -363,7 +364,7 @@ def _mistake_handles(blocks: Mapping[int, int]) -> list:
     """The P(valid) maps' legend: the threshold's line, and each mistake's mark, said to be one (``blocks[code]`` 1) or
     one per ``k x k`` cells holding any (review r18b: the conservative circles along the blocks read as a border)."""
     cut = Line2D([], [], color=COLORS["ink"], linestyle=":", linewidth=CUT_MAP, path_effects=halo(CUT_MAP, ("free",)))
-    per = {code: f"\none per {k} x {k} cells holding any" if k > 1 else "" for code, k in blocks.items()}
+    per = {code: f"\none per {k} x {k}-cell tile holding any" if k > 1 else "" for code, k in blocks.items()}
     return [
         (cut, "P(valid) = threshold (dotted):\nthe lighter side is kept"),
         (_mistake_line(3), f"dangerous mistake: kept, in\ncollision (squares){per[3]}"),

@@ -95,7 +95,7 @@ def answer(
         else f'{many_unseen:.1%} on unseen grids ("all free" {many_free:.1%}): in this quick run, not better yet'
     )
     return "\n".join(table) + (
-        f"\n\n**The answer.** Trained on {n_seen} grids, CAE-long {seen_said}. On unseen grids it gets "
+        f"\n\n**In numbers.** Trained on {n_seen} grids, CAE-long {seen_said}. On unseen grids it gets "
         f'{long["unseen_acc"]:.1%}, where answering "all free" gets {long["unseen_all_free"]:.1%} ({abs(below):.1f} '
         f"points {'below' if below < 0 else 'above'}): it rebuilds a new workspace **no better than answering "
         f'"all free"**, and the paper\'s unseen column does not reproduce. {preset_said[0].upper()}{preset_said[1:]}: '
