@@ -17,7 +17,7 @@ from toolkit.teaching import chapter05, checker_scope, costs, findings, recorded
 
 SAMPLERS = ("BS", "OB", "G", "BT")
 SENTENCE = (  # the rest of a findings.describe_accuracy sentence, its numbers and words captured
-    r"(\d+)%, (above|below|level with) \"always valid\" \((\d+)%\); balanced accuracy (\d+)%, (about|above|below) a "
+    r"(\d+)%, (above|below|about) \"always valid\" \((\d+)%\); balanced accuracy (\d+)%, (about|above|below) a "
     r"coin flip \(50%\)( \(worse than chance\))?"
 )
 
@@ -350,14 +350,16 @@ def _chapter_03_accuracy(who: str, said: tuple, table: list[int], always: int) -
         problems.append(
             f"03: {who}: the sentence says {acc}% vs {base}% (balanced {balanced}%), the table {table} vs {always}"
         )
-    if side != ("above" if acc > base else "below" if acc < base else "level with"):
+    if side != _beside(acc - base):
         problems.append(f"03: {who}: {acc}% is not {side} {base}%")
-    off = balanced - 50
-    if chance != ("about" if abs(off) <= 100 * findings.CHANCE_BAND else "above" if off > 0 else "below") or (
-        (worse is not None) != (chance == "below")
-    ):
+    if chance != _beside(balanced - 50) or (worse is not None) != (chance == "below"):
         problems.append(f"03: {who}: balanced accuracy {balanced}% is not '{chance}' a coin flip{worse or ''}")
     return problems
+
+
+def _beside(points: int) -> str:
+    """The word a score ``points`` percentage points from its baseline calls for (the band findings states)."""
+    return "about" if abs(points) <= 100 * findings.CHANCE_BAND else "above" if points > 0 else "below"
 
 
 SLICE = re.compile(  # section 5's verdict on a slice (the notebook's slice_verdict), its numbers and words captured

@@ -181,8 +181,8 @@ def test_describe_accuracy_against_always_valid_by_accuracy_and_a_coin_flip_by_b
         "balanced accuracy 40%, below a coin flip (50%) (worse than chance)"
     )
     for tpr, word in ((0.55, "about"), (0.56, "above"), (0.45, "about"), (0.44, "below")):  # the band's two edges
-        said = findings.describe_accuracy("x", {"acc": 0.5, "tpr": tpr, "tnr": tpr}, 0.5)
-        assert f"{word} a coin flip" in said and 'level with "always valid" (50%)' in said, said
+        said = findings.describe_accuracy("x", {"acc": tpr, "tpr": tpr, "tnr": tpr}, 0.5)
+        assert f'{word} "always valid" (50%)' in said and f"{word} a coin flip" in said, said  # one word for both
 
 
 def test_describe_threshold_sweep_finds_the_switch_and_the_best_threshold():

@@ -342,19 +342,24 @@ def crossover_counts(results: Mapping, tie: float = CLOSE) -> str:
 
 def describe_accuracy(label: str, scores: Mapping[str, float], always_valid: float) -> str:
     """``label``'s accuracy (``scores``: :func:`toolkit.learning.metrics.classification`'s) next to answering "valid"
-    to everything on the same samples (above, below or level at the printed precision), then its balanced accuracy,
-    (TPR + TNR) / 2, next to a coin flip: 50 % whatever the share of valid samples, "about" it within
-    :data:`CHANCE_BAND`, worse than chance only below that. Plain accuracy below "always valid" is not below chance:
+    to everything on the same samples, then its balanced accuracy, (TPR + TNR) / 2, next to a coin flip: 50 % whatever
+    the share of valid samples. Both comparisons say "about" within :data:`CHANCE_BAND` (on balanced samples "always
+    valid" scores 50 % too, and one model cannot be above the one and about the other); worse than chance only below
+    that band. Plain accuracy below "always valid" is not below chance:
     on samples mostly valid, a model that rejects most of them is often wrong, yet may tell the two kinds apart a
     little (review r16b: 38 % on samples 86 % valid, balanced accuracy 54 %)."""
     balanced = (scores["tpr"] + scores["tnr"]) / 2
     mine, theirs, even = round(100 * scores["acc"]), round(100 * always_valid), round(100 * balanced)
-    side = "above" if mine > theirs else "below" if mine < theirs else "level with"
-    off = even - 50
-    chance = "about" if abs(off) <= 100 * CHANCE_BAND else "above" if off > 0 else "below"
+    side, chance = (_beside(difference) for difference in (mine - theirs, even - 50))
     worse = " (worse than chance)" if chance == "below" else ""
     accuracy = f'{label}: accuracy {scores["acc"]:.0%}, {side} "always valid" ({always_valid:.0%})'
     return f"{accuracy}; balanced accuracy {even}%, {chance} a coin flip (50%){worse}"
+
+
+def _beside(points: int) -> str:
+    """A score ``points`` percentage points from its baseline: "about" it within :data:`CHANCE_BAND`, else above or
+    below."""
+    return "about" if abs(points) <= 100 * CHANCE_BAND else "above" if points > 0 else "below"
 
 
 def describe_threshold_sweep(probability: np.ndarray, valid: np.ndarray) -> str:
