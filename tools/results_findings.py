@@ -215,8 +215,12 @@ def slow_share(tables: Tables, shares: list[float]) -> str:
     times = next(t for heading, t in tables[checker_scope.SLOW].items() if "Times behind Table 3" in heading)
     top = max(range(len(shares)), key=shares.__getitem__)
     scenario, sampler = times["rows"][top][0], times["rows"][top][1]
-    _, word = min(SHARES, key=lambda s: abs(s[0] - shares[top]))
-    return f"{min(shares) * 100:.2g} % to about {word} in {NAMES.get(scenario, scenario)} {sampler}"
+    return f"{min(shares) * 100:.2g} % to about {share_word(shares[top])} in {NAMES.get(scenario, scenario)} {sampler}"
+
+
+def share_word(share: float) -> str:
+    """``0.31`` as ``"a third"``: a share said in words, the nearest of :data:`SHARES`."""
+    return min(SHARES, key=lambda s: abs(s[0] - share))[1]
 
 
 class Apart(NamedTuple):
