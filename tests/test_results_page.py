@@ -615,3 +615,18 @@ def test_tables_1_and_2_on_unseen_workspaces_are_shown_as_the_runs_tables_give_t
     # review r30f, contradiction 1: the `strong` row is Figure 1's network (5 December), labelled so
     figure_1 = recorded.table(recorded.ALGORITHM_1, "MLP accuracy", TABLES)["3do"]["Balanced unseen Acc"]
     assert "`strong` preset of Figure 1 (5 December" in said and round(recorded.ours(figure_1) * 100) == 99
+
+
+def test_the_paper_networks_savings_are_explained_at_table_3_and_the_slash_at_tables_1_and_2():
+    """Reader r31f, item 2: the `paper` network's 8 of 16 savings against Algorithm 1 explained in one sentence where
+    Table 3's figure shows them, from its Table 2; contradiction 3: the last row of Tables 1 and 2's "A / B" is two
+    presets, not ours / the paper's, said at the table."""
+    said = results_findings.not_the_method(TABLES)
+    table3 = {s: recorded.improvements("paper", s, recorded=TABLES) for s in ("2ds", *THREE_D)}
+    counts = [results_words.change(1 - v) for row in table3.values() for v in row.values()]
+    assert said.startswith(f"The `paper` network saved time against Algorithm 1 in {counts.count('less time')} of 16")
+    assert "gives one answer to every sample in 3DC-7, 3DC-9 and 3DO," in said and "2DS (a TPR of 28 %)" in said
+    assert said in TEXT.partition("**Figure 2")[2].partition("![")[0]
+    table = results_findings.unseen_table(TABLES)
+    assert "A cell “A / B” is ours / the paper's, except in the last row" in table
+    assert table.splitlines()[-1].startswith("| MLP on balanced samples, `paper` / `strong` preset")

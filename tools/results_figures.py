@@ -18,6 +18,7 @@ from toolkit.plots import alt, query_ratios
 from toolkit.teaching import checker_scope, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
+from tools.results_findings import not_the_method
 from tools.results_noise import NOISE_EDGE, at_noise_edge, noise, noise_line, own_intervals, reach_of
 from tools.results_words import NAMES, change
 
@@ -172,5 +173,6 @@ def figure_markdown(text: str, kind: str = "total") -> str:
         f"more: lost). Timing alone moved a ratio of means to {floor.means[0]:.2f}–{floor.means[1]:.2f}, wider than "
         "the band: read a row's counts together, never one cell."
     )
-    lead = LEADS[kind] + (means_not_verdict(parse(text)) if kind == "total" else "")
+    tables = parse(text)
+    lead = LEADS[kind] + (f"{means_not_verdict(tables)} {not_the_method(tables)}" if kind == "total" else "")
     return f"{lead}\n\n{shown}\n\n{said}\n\n{head}\n" + "\n".join(rows)
