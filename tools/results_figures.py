@@ -18,6 +18,7 @@ from toolkit.plots import alt, query_ratios
 from toolkit.teaching import checker_scope, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
+from tools.results_findings import not_the_method
 from tools.results_noise import NOISE_EDGE, at_noise_edge, noise, noise_line, own_intervals, reach_of
 from tools.results_words import NAMES, change
 
@@ -31,6 +32,10 @@ LEADS = {  # what each figure shows, over it
 TICKS = {"total": (0.9, 1.1), "sampling": (0.9, 1.1, 3.0)}  # labelled beside each figure's 1-2-5 steps
 MARGINS = {"total": 1.15, "sampling": 1.25}  # each figure's range: its points', widened by this factor
 ROW_HEIGHTS = {"total": 2.9, "sampling": 3.2}  # inches a row of panels: each band is read to 0.9 and 1.1 (r27f)
+KEY = (  # under Figure 2 (reader r31f, item 3): its marks are not Figure 1's verdicts
+    " Here colour and shape name a series, not a verdict as in Figure 1 (none takes its circle, square or triangle); "
+    "hollow is python-fcl on both sides, as there."
+)
 CLAIM_FIGURE = RESULTS.parent / "results_claim.png"  # Figure 1: the statistic the verdict on the paper's claim reads
 CLAIM_BEGIN = "<!-- figure of the claim: drawn by `python -m tools.results_summary` from the tables below -->"
 CLAIM_END = "<!-- end of the figure of the claim -->"
@@ -73,15 +78,17 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
     shaded; a grid of two columns, one legend, and one log axis for its panels, so the same ratio stands at the same
     height in every panel (:func:`toolkit.plots.query_ratios.means_grid`); each figure its own range, so the tie band of
     the total times is not squeezed by the sampling stage's wider one, the band's edges labelled (:data:`TICKS`)."""
+    floor = noise(parse(text)).means  # reader r31f, item 3: the noise band the text under the figure reads by
     every = [r for series in ratios(text, kind).values() for by in series.values() for r in by.values()]
     margin = MARGINS[kind]  # room between the outermost points and the frame
-    ylim = (min(*every, 1 - findings.TIE) / margin, max(*every, 1 + findings.TIE) * margin)
+    ylim = (min(*every, *floor) / margin, max(*every, *floor) * margin)
     return query_ratios.means_grid(
         {f"{NAMES[s]}: {kind} time, means": series for s, series in ratios(text, kind).items()},
         tie=findings.TIE,
         ylim=ylim,
         ticks=TICKS[kind],
         row_height=ROW_HEIGHTS[kind],
+        noise=floor,
     )
 
 
@@ -169,8 +176,9 @@ def figure_markdown(text: str, kind: str = "total") -> str:
     floor = noise(parse(text))
     said = (
         f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule (0.90 or less: saved; 1.10 or "
-        f"more: lost). Timing alone moved a ratio of means to {floor.means[0]:.2f}–{floor.means[1]:.2f}, wider than "
-        "the band: read a row's counts together, never one cell."
+        f"more: lost). Timing alone moved a ratio of means to {floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched), "
+        "wider than the band: read a row's counts together, never one cell." + KEY * (kind == "total")
     )
-    lead = LEADS[kind] + (means_not_verdict(parse(text)) if kind == "total" else "")
+    tables = parse(text)
+    lead = LEADS[kind] + (f"{means_not_verdict(tables)} {not_the_method(tables)}" if kind == "total" else "")
     return f"{lead}\n\n{shown}\n\n{said}\n\n{head}\n" + "\n".join(rows)

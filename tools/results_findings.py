@@ -135,6 +135,34 @@ def lazy_prm(tables: Tables) -> str:
     )
 
 
+def not_the_method(tables: Tables) -> str:
+    """Reader r31f, item 2: why the `paper` network saves time against Algorithm 1 in some cells, in one sentence read
+    from its Table 2 (unseen workspaces): where its MLP gives one answer to every sample, and how few valid samples it
+    keeps elsewhere."""
+    rows = recorded.table("paper", "MLP accuracy", tables)
+    rates = {NAMES.get(s, s): (recorded.ours(r["Unseen TPR"]), recorded.ours(r["Unseen TNR"])) for s, r in rows.items()}
+    one = [name for name, (tpr, tnr) in rates.items() if min(tpr, tnr) == 0]
+    rest = [f"{name} (a TPR of {percent(tpr)} %)" for name, (tpr, tnr) in rates.items() if name not in one]
+    listed = ", ".join(one[:-1]) + " and " * (len(one) > 1) + "".join(one[-1:])
+    read = [
+        change(1 - v)
+        for scenario in recorded.table("paper", "time improvement", tables)
+        for v in recorded.improvements("paper", scenario, recorded=tables).values()
+    ]
+    return (
+        f"The `paper` network saved time against Algorithm 1 in {read.count('less time')} of {len(read)} cells, but "
+        "not by the method: its MLP gives one answer to "
+        f"every sample in {listed or 'no scenario'}, so Algorithm 1 either skips every sample's check or starts from "
+        "an empty roadmap and first tries the straight edge from start to goal"
+        + (
+            f", and it keeps few valid samples in {', '.join(rest)}, a smaller roadmap, not a better one"
+            if rest
+            else ""
+        )
+        + "."
+    )
+
+
 def algorithm_1(tables: Tables) -> str:
     """The `paper` network against the paper's Algorithm 1, Table 3's means counted (the page's section on the
     `paper` preset points here rather than count again)."""
@@ -215,8 +243,12 @@ def slow_share(tables: Tables, shares: list[float]) -> str:
     times = next(t for heading, t in tables[checker_scope.SLOW].items() if "Times behind Table 3" in heading)
     top = max(range(len(shares)), key=shares.__getitem__)
     scenario, sampler = times["rows"][top][0], times["rows"][top][1]
-    _, word = min(SHARES, key=lambda s: abs(s[0] - shares[top]))
-    return f"{min(shares) * 100:.2g} % to about {word} in {NAMES.get(scenario, scenario)} {sampler}"
+    return f"{min(shares) * 100:.2g} % to about {share_word(shares[top])} in {NAMES.get(scenario, scenario)} {sampler}"
+
+
+def share_word(share: float) -> str:
+    """``0.31`` as ``"a third"``: a share said in words, the nearest of :data:`SHARES`."""
+    return min(SHARES, key=lambda s: abs(s[0] - share))[1]
 
 
 class Apart(NamedTuple):
@@ -318,7 +350,9 @@ def unseen_table(tables: Tables) -> str:
             ],
         ),
     ]
-    return (
-        "*Tables 1 and 2 on unseen workspaces*, ours beside the paper's and beside the answer each is read against "
-        "(each run's section holds the full tables; the paper gives no balanced figures):\n\n" + "\n".join(lines)
+    return (  # reader r31f, contradiction 3: what "/" means, said at the table
+        "*Tables 1 and 2 on unseen workspaces*, each network's row read against the answer in the row under it, the "
+        "last against a coin flip's 50 % (each run's section holds the full tables). A cell “A / B” is ours / the "
+        "paper's, except in the last row, where it is the `paper` preset's / the `strong` preset's: the paper gives "
+        "no balanced figures.\n\n" + "\n".join(lines)
     )

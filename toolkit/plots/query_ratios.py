@@ -36,14 +36,22 @@ BELOW_1 = (0.7,)  # labelled on :func:`own_ratios`' axis, where savings lie, bes
 NEAR_1 = 1.25  # :func:`means_grid`'s extra ticks this close to 1 are labelled on the right, away from the "1"
 Cells = Mapping[str, Mapping[str, tuple[float, float, float]]]  # {scenario: {sampler: (median, q1, q3)}}
 MEANS_STYLES = (  # :func:`means_grid`'s series in turn: colour, marker, hollow; no verdict look of own_ratios
-    (LINE_COLORS[5], "o", True),  # grey, hollow circles: the paper's own numbers (r28f: its cross read as the pluses)
-    (LINE_COLORS[3], "D", False),  # bluish green diamonds: a network with our compiled checker
-    (LINE_COLORS[0], "v", False),  # blue triangles: another network with our compiled checker
-    (LINE_COLORS[4], "P", True),  # reddish purple, hollow pluses: that network with python-fcl (hollow, as Figure 1's)
-    (LINE_COLORS[1], "h", True),  # vermillion, hollow hexagons: that network with python-fcl
+    (LINE_COLORS[5], "D", False),  # grey diamonds: the paper's own numbers (r28f: its cross read as the pluses)
+    (LINE_COLORS[3], "X", False),  # bluish green crosses: a network with our compiled checker
+    (LINE_COLORS[4], "*", False),  # reddish purple stars: another network with our compiled checker
+    (
+        LINE_COLORS[4],
+        "h",
+        True,
+    ),  # reddish purple, hollow hexagons: that network with python-fcl (hollow, as Figure 1's;
+    # r31f: a hollow plus read as filled)
+    (LINE_COLORS[3], "P", True),  # bluish green, hollow pluses: the first network with python-fcl
 )
-"""Each series a hue of its own, its marker a second cue (review r25c: two pinks and two greens alike at 1280 px)."""
+"""Reader r31f: Figure 1's blue, vermillion and black are its verdicts, its circle, square and triangle too, so no
+series here takes any of them; a network keeps its hue, and hollow is python-fcl on both sides, as in Figure 1."""
+Y_LABEL = "time with / without\n(log axis; below 1: saves)"  # reader r31f: the axis is log, and says so
 MEANS_SIZE = 5.5  # points (r28f asked 1.5 times 5; no two markers of a panel may touch at the page width)
+STAR_SCALE = 1.35  # a star fills less of its box than the other markers: drawn this much larger, it reads as large
 MEANS_SPREAD = 0.95  # of the space between two samplers, what a sampler's points spread over
 
 
@@ -95,7 +103,7 @@ def own_ratios(
     ax.set_xlim(-0.7, ticks[-1] + 0.7)
     drawn = [v for table in (cells, slow) for by in table.values() for value in by.values() for v in value]
     _own_axis(ax, [*drawn, *([1 - edge, 1 + edge] if edge is not None else [])], tie)
-    ax.set_ylabel("time with / without\n(below 1: saves)", fontsize=9)  # room for the band's edges on the right
+    ax.set_ylabel(Y_LABEL, fontsize=9)  # room for the band's edges on the right
     ax.set_title(title, fontsize=10)
     legend_above(fig, [ax], 2)
     words = _words(cells, title, tie, series[0] if slow else "")
@@ -121,23 +129,32 @@ def _own_axis(ax, drawn: list[float], tie: float) -> None:
     _band_edges(ax, [1 - tie, 1 + tie])
 
 
+NOISE_WORDS = "timing alone moved a ratio of means to {low:.2f}–{high:.2f}"  # means_grid's hatching
 EDGE_WORDS = "the noise edge, {low:.2f}–{high:.2f}: a cost or saving there is no clear evidence"
 
 
 def _edge_band(ax, edge: float, tie: float) -> None:
     """Hatch ``[1 - edge, 1 + edge]`` round the tie band (``tie``): the noise edge, where a median read as a cost or a
     saving lies within twice timing's own reach of 1, told apart from the clear ones by where it stands."""
-    for k, (low, high) in enumerate(((1 - edge, 1 - tie), (1 + tie, 1 + edge))):
+    _hatch_round(ax, (1 - edge, 1 + edge), tie, EDGE_WORDS.format(low=1 - edge, high=1 + edge).split(":")[0])
+
+
+def _hatch_round(ax, reach: tuple[float, float], tie: float, label: str | None) -> None:
+    """Hatch from ``reach[0]`` to the tie band and from it to ``reach[1]``, each outer edge a dashed line, so the
+    hatching reads at the page's width (reader r31f: it was faint); ``label`` names it once in the legend."""
+    for k, (low, high) in enumerate(((reach[0], 1 - tie), (1 + tie, reach[1]))):
         ax.axhspan(
             low,
             high,
             facecolor="none",
             edgecolor=COLORS["reference"],
-            hatch="////",
+            hatch="///",
             linewidth=0,
             zorder=0,
-            label=EDGE_WORDS.format(low=1 - edge, high=1 + edge).split(":")[0] if k == 0 else None,
+            label=label if k == 0 else None,
         )
+    for y in reach:
+        ax.axhline(y, color=COLORS["reference"], linestyle="--", linewidth=0.8, zorder=0.5)
 
 
 def _legend_entries(ax, series: tuple[str, str] | None, edge: tuple[float, float] | None = None) -> None:
@@ -240,14 +257,17 @@ def means_grid(
     ticks: tuple[float, ...] = (),
     row_height: float = 2.3,
     samplers: tuple[str, ...] = ("BS", "OB", "G", "BT"),
+    noise: tuple[float, float] | None = None,
 ) -> Figure:
     """``{panel title: {series: {sampler: ratio}}}`` of time ratios with / without prediction (below 1: saves), one
     panel per title in a grid of two columns: a point per series and sampler (a series keeps its place, colour and
     marker in every panel, :data:`MEANS_STYLES`), read against the line at 1 and the shaded tie band, on one log axis
     shared by every panel (``ylim``, where given; else every point's range; ``ticks`` labelled beside its 1-2-5 steps,
     those within 25 % of 1, e.g. the tie band's edges, on the right of each row, apart from the "1"; ``row_height``
-    inches a row of panels), the legend once, over the grid. The text alternative counts each series' points as the
-    page's rule reads them (:func:`toolkit.util.verdicts.time_verdict` on the ratio shown to two decimals)."""
+    inches a row of panels), the legend once, over the grid. ``noise``, where given, is how far timing alone moved a
+    ratio of means: hatched round the tie band in every panel (:func:`_hatch_round`; reader r31f: the text forbade
+    single-cell readings the figure invited). The text alternative counts each series' points as the page's rule
+    reads them (:func:`toolkit.util.verdicts.time_verdict` on the ratio shown to two decimals)."""
     names = list(dict.fromkeys(name for series in panels.values() for name in series))
     if len(names) > len(MEANS_STYLES):
         raise ValueError(f"{len(names)} series: means_grid has looks for {len(MEANS_STYLES)}")
@@ -258,11 +278,13 @@ def means_grid(
     said = [_means_panel(ax, title, series, names, samplers, tie) for ax, (title, series) in zip(axes, panels.items())]
     for ax in axes[len(panels) :]:
         ax.set_visible(False)
+    said += _noise_bands(axes[: len(panels)], noise, tie)
     for ax in grid[:, 0]:
-        ax.set_ylabel("time with / without\n(below 1: saves)", fontsize=9)
+        ax.set_ylabel(Y_LABEL, fontsize=9)
     for ax in grid[-1, :]:
         ax.set_xlabel("sampler", fontsize=9)
     drawn = [float(r) for series in panels.values() for by in series.values() for r in by.values()]
+    drawn += list(noise or ())
     low, high = ylim if ylim is not None else (min(*drawn, 1 - tie) / 1.3, max(*drawn, 1 + tie) * 1.3)
     axes[0].set_yscale("log")
     axes[0].set_ylim(low, high)
@@ -275,6 +297,17 @@ def means_grid(
         _band_edges(ax, beside)
     legend_above(fig, axes[:1], 1)  # one column: two of these names side by side overflow the page
     return _means_described(fig, panels, names, samplers, tie, said)
+
+
+def _noise_bands(axes, noise: tuple[float, float] | None, tie: float) -> list[str]:
+    """``noise`` (how far timing alone moved a ratio of means) hatched round the tie band of every panel of ``axes``,
+    named once in the legend; what the text alternative says of it (nothing where ``noise`` is ``None``)."""
+    if noise is None:
+        return []
+    words = NOISE_WORDS.format(low=noise[0], high=noise[1])
+    for k, ax in enumerate(axes):
+        _hatch_round(ax, noise, tie, words if k == 0 else None)
+    return [f"hatched round the tie band, {words}"]
 
 
 def _band_edges(ax, ticks: list[float]) -> None:
@@ -301,7 +334,7 @@ def _means_panel(ax, title: str, series: Mapping[str, Mapping[str, float]], name
             [ratios[s] for s in samplers],
             linestyle="none",
             marker=marker,
-            markersize=MEANS_SIZE,
+            markersize=MEANS_SIZE * STAR_SCALE ** (marker == "*"),
             label=name,
             zorder=3,
             **_fill(colour, hollow),
