@@ -20,8 +20,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parents[1]
 RESULTS = ROOT / "docs" / "results.md"
 PACKAGED = ROOT / "toolkit" / "teaching" / "recorded.json"
-# a preset's section, or one planned with a named planner (and baseline); "## Preset `paper` on 1–2 December" is
-# history, read by no notebook
+# a preset's section, or one planned with a named planner (and baseline)
 PRESET = re.compile(r"^## Preset `(\w+)`(?: with `--planner (\w+)(?: --baseline ([\w-]+))?`(?:: .*)?)?$")
 WITHOUT = "*Without prediction*:"  # how tables.md names, under a heading, what "without" was in its table
 THRESHOLDS = "Decision threshold on P(valid):"  # the line under a run's Table 2: "2ds 0.41, 3dc7 0.63, ..."
