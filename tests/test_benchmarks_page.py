@@ -691,6 +691,10 @@ def test_the_race_s_chart_is_its_table_s_held_out_rows():
     assert batched["3DC-9"]["OMPL RRTConnect"] == pytest.approx(numbers(first["3DC-9, 9300"])[0] / float(ratio))
     fig = race.race_medians(medians, batched, seed=9300)
     assert f"![{alt_text(fig)}](planner_race.png)" in RACE
+    labels = [t.get_text() for t in fig.legends[0].get_texts()]  # reader r31f: an "ours" column, an "OMPL" column
+    left, right = labels[: len(labels) // 2], labels[len(labels) // 2 :]
+    assert len(labels) % 2 == 0 and all(x.startswith("ours") or not x for x in left) and left[0].startswith("ours")
+    assert all(x.startswith("OMPL") or not x for x in right) and right[0].startswith("OMPL")
     assert (ROOT / "docs" / "planner_race.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
 
 
