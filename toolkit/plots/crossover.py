@@ -92,14 +92,14 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
 
 
 PAPER_SCENES = {"obstacles": ((110, 125),), "links": ((2, 2), (4, 4))}  # the paper's 3DC: 110-125 blocks; 2, 4 links
-PAPER_LEGEND = "grey strip: the paper's scenes (110–125 blocks; chains of 2 and 4 links)"
-PAPER_SAID = "Grey strips mark the paper's scenes: 110 to 125 blocks, chains of 2 and 4 links. "
+PAPER_LEGEND = "plain grey strip: the paper's scenes (110–125 blocks; chains of 2 and 4 links)"
+PAPER_SAID = "Plain grey strips mark the paper's scenes: 110 to 125 blocks, chains of 2 and 4 links. "
 TICKS = {"obstacles": (10, 50, 100, 200, 500)}  # the values named, the rest unticked (r29f: 350 met 500; r30f)
 PLANNER_CALLS = (8, 400)  # the planner calls a network could answer on a 3DC scene: RRT-Connect's 8-56 configurations
 # (docs/benchmarks_history.md, its profile), a round's samples (the lazy PRM's 50 doubling to |S| = plan_samples = 400)
-CALLS_LEGEND = "grey strip on call size: planner calls a network could answer (8–400)"
+CALLS_LEGEND = "dotted strip (call size): planner calls a network could answer (8–400)"
 CALLS_SAID = (
-    "On the call-size panel a grey strip marks the planner calls a network could answer, 8 to 400 configurations: "
+    "On the call-size panel a dotted strip marks the planner calls a network could answer, 8 to 400 configurations: "
     "RRT-Connect's calls of 8 to 56, a round's 50 to 400 samples. "
 )
 
@@ -113,14 +113,18 @@ def _paper_scenes(ax, key: str, sweep: dict) -> None:
         ax.axvspan(low / 1.05, high * 1.05, color=COLORS["block"], alpha=0.3, zorder=0.5, lw=0, label=label)
 
 
+CALLS_LOOK: dict[str, Any] = dict(facecolor=(0.53, 0.53, 0.53, 0.12), edgecolor=COLORS["block"], hatch="..", lw=0,
+                                  zorder=0.5)  # fmt: skip
+
+
 def _planner_calls(ax, key: str, sweep: dict) -> None:
-    """On the call-size panel (``batch``), a grey strip over :data:`PLANNER_CALLS` and its name at the panel's top
+    """On the call-size panel (``batch``), a dotted strip over :data:`PLANNER_CALLS` and its name at the panel's top
     (reader r30f: the text said "tens to a few hundred", the figure did not show it)."""
     x = np.asarray(sweep["values"], dtype=float)
     low, high = PLANNER_CALLS
     if key != "batch" or not (x[0] <= low and high <= x[-1]):
         return
-    ax.axvspan(low, high, color=COLORS["block"], alpha=0.3, zorder=0.5, lw=0, label=CALLS_LEGEND)
+    ax.axvspan(low, high, label=CALLS_LEGEND, **CALLS_LOOK)  # dotted: apart from the paper's plain strips (r31f)
     ax.text(
         np.sqrt(low * high),
         0.97,

@@ -12,6 +12,7 @@ import re
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 from matplotlib.ticker import NullLocator
 
 from toolkit.plots.alt import Part, describe
@@ -82,18 +83,31 @@ def race_medians(
     ax.set_yticks(range(len(scenarios)), scenarios)
     ax.set_ylim(len(scenarios) - 0.5, -0.5)  # the first scenario on top
     ax.grid(axis="x", color=COLORS["block"], lw=0.6, zorder=0)
+    for between in np.arange(len(scenarios) - 1) + 0.5:  # reader r31f: a line between scenarios, the dots in rows
+        ax.axhline(between, color=COLORS["block"], lw=0.6, ls=":", zorder=0)
     ax.set_xlabel("median time a query, ms (log axis)")
     ax.set_ylabel("scenario")
     ax.tick_params(labelsize=POINTS)
     held = f", seed {seed}" if seed is not None else ""
     ax.set_title(f"Median time a query by planner{held}: further left is faster", fontsize=10)
-    rows = (len(planners) + (2 if batched else 0) + 1) // 2
+    handles, labels = _columns(*ax.get_legend_handles_labels())
+    rows = len(labels) // 2
     room = (0, (0.24 * rows + 0.15) / fig.get_figheight(), 1, 1)
-    handles, labels = ax.get_legend_handles_labels()
     fig.legend(handles, labels, loc="upper center", bbox_to_anchor=(0.5, room[1]), ncol=2, fontsize=POINTS - 1,
                frameon=False)  # fmt: skip
     fig.tight_layout(rect=room)
     return describe(fig, _in_words(medians, batched, held), [_in_a_table(medians, batched)])
+
+
+def _columns(handles: list, labels: list[str]) -> tuple[list, list[str]]:
+    """The legend's entries as two columns, ours on the left and OMPL's on the right (reader r31f: "ours" and "OMPL"
+    were mixed in the left one), the shorter padded with blank entries; a legend of ``ncol=2`` fills by columns."""
+    ours = [(h, label) for h, label in zip(handles, labels, strict=True) if label.startswith("ours")]
+    theirs = [(h, label) for h, label in zip(handles, labels, strict=True) if not label.startswith("ours")]
+    rows = max(len(ours), len(theirs))
+    blank = (Line2D([], [], ls="none"), "")
+    entries = ours + [blank] * (rows - len(ours)) + theirs + [blank] * (rows - len(theirs))
+    return [h for h, _ in entries], [label for _, label in entries]
 
 
 def _ms(value: float) -> str:
