@@ -276,23 +276,25 @@ def apart(tables: Tables) -> list[Apart]:
 
 
 def not_from_sampling(tables: Tables) -> str:
-    """One sentence on :func:`apart`'s cells, a saving larger than its sampling saving with both shares (review r28f,
-    item 4); empty where there are none."""
+    """One sentence on :func:`apart`'s cells, each with its whole query's change beside the sampling time saved
+    there, both as shares of a mean query (review r28f, item 4; r31f: which way each moved); empty where there are
+    none."""
     cells = apart(tables)
     if not cells:
         return ""
 
     def said(cell: Apart) -> str:
-        if cell.total > cell.sampling and change(1 - cell.total) == "less time":
-            return f"{cell.name}, {percent(cell.total)} % saved against {percent(cell.sampling)} %"
-        return cell.name
+        moved = f"{percent(cell.total)} % saved" if cell.total >= 0 else f"{percent(-cell.total)} % longer"
+        return f"{cell.name}, {moved} where sampling saved {percent(cell.sampling)} %"
 
     timed = any("timed twice" in heading for heading in tables[checker_scope.SLOW])
     noise = "" if timed else ", and this run was not timed twice, so timing noise in its means may add to it"
     return (  # review r30f, contradiction 4: the cause said here, where the summary points
-        f" The totals that moved 10 points or more further ({'; '.join(map(said, cells))}) moved with the rest of "
-        "the query, which prediction does not shorten: with other samples the planner grows another roadmap, with "
-        f"other edges to check and other repairs{noise}."
+        f" In {len(cells)} cells the whole query moved 10 points or more away from what sampling saved there "
+        f"(as shares of a mean query without prediction: {'; '.join(map(said, cells))}): the rest of the query, "
+        "which prediction does not shorten, moved them; with other samples the planner grows another roadmap, "
+        "with other edges to check and other repairs"
+        f"{noise}."
     )
 
 
