@@ -29,7 +29,7 @@ def test_answer_ratios_rings_our_means_around_our_medians():
     }
     medians_x = {x for x, _ in filled}
     assert all(round(x, 6) in medians_x for x, _ in rings[0].get_offsets())
-    assert "a ring at our series' ratio of mean times" in alt_text(fig)
+    assert "a bar across each of our points at its series' ratio of mean times" in alt_text(fig)
     labels = [t.get_text() for legend in fig.legends for t in legend.get_texts()]
     assert labels.count(MEAN_WORDS) == 1
 
