@@ -385,8 +385,13 @@ def _roadmap_legend(fig: Figure, axes, empty=None) -> None:
     style: dict[str, Any] = dict(ncol=min(len(named), 2), fontsize=9, frameon=False, handlelength=3.5)
     if empty is not None:
         legend = empty.legend(
-            list(named.values()), list(named), loc="center left", bbox_to_anchor=(-0.2, 0.5), fontsize=8.5,
-            frameon=False, handlelength=2.5,
+            list(named.values()),
+            list(named),
+            loc="center left",
+            bbox_to_anchor=(-0.2, 0.5),
+            fontsize=8.5,
+            frameon=False,
+            handlelength=2.5,
         )
         legend.set_in_layout(False)  # reader r31d: a wide legend shrank every panel; it fits its slot
         return
