@@ -224,6 +224,9 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
     return describe(fig, f"{len(S)} uniform attempts S over the point robot's C-obstacles (grey). {counts}.")
 
 
+EDGE_WORDS = "edge: predicted free, not yet checked"  # reader r31d: the thin edges named in the legend
+
+
 def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
     """One planner step: edges, nodes (hollow: not yet confirmed exactly), start and goal, the candidate path,
     and what a repair removes (thick, and X at removed nodes); a legend names them."""
@@ -231,15 +234,8 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
     P = step.nodes  # (V, 2)
     removed_edge = np.zeros(len(step.edges), dtype=bool)
     removed_edge[step.removed_edges] = True
-    ax.add_collection(
-        LineCollection(
-            P[step.edges[~removed_edge]],
-            colors=EDGE_COLOR,
-            linewidths=0.4,
-            zorder=2,
-            label="edge: predicted free, not yet checked",  # reader r31d: in the legend
-        )
-    )
+    edges = P[step.edges[~removed_edge]]
+    ax.add_collection(LineCollection(edges, colors=EDGE_COLOR, linewidths=0.4, zorder=2, label=EDGE_WORDS))
     confirmed = step.node_verified
     ax.scatter(*P[confirmed].T, s=22, color=NODE_COLOR, zorder=3, label="node, confirmed (filled)")
     ax.scatter(
