@@ -150,4 +150,4 @@ def test_beyond_sampling_sets_the_papers_own_arithmetic_beside_ours():
     assert "exceeds all the sampling time without prediction in 10 of its 16 cells" in said
     assert "3DO G saves 4.10 s while its sampling took 0.21 s, 3DC-9 BT 2.60 s against 0.10 s." in said
     assert "in 7 of those 10 cells the paper's standard deviation of a query's time exceeds the saving" in said
-    assert "has 1 such saving (3DC-9 OB saved 34% of the mean query, its sampling 8%)" in said
+    assert "has 1 such saving (3DC-9 OB saved 34 % of the mean query, its sampling 8 %)" in said

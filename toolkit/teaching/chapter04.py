@@ -278,7 +278,7 @@ def beyond_sampling(tables: Tables | None = None) -> str:
         )
         if time_verdict(1 - saved) == SAVES and saved > shares[key, s] * sampled
     ]
-    named = "; ".join(f"{cell} saved {saved:.0%} of the mean query, its sampling {by:.0%}" for cell, saved, by in ours)
+    named = "; ".join(f"{c} saved {100 * a:.0f} % of the mean query, its sampling {100 * b:.0f} %" for c, a, b in ours)
 
     def cell(c: tuple[str, str]) -> str:
         return f"{checker_scope.NAMES[c[0]]} {c[1]}"
