@@ -51,6 +51,7 @@ def test_it_reads_whatever_scenarios_the_section_holds():
         totals=(0.09, -0.12, 0.20, -0.30),
         papers_totals=(-0.02, 0.14, 0.18, 0.20),
         own=(0.94, 1.06, 0.85, 1.30),
+        edge=1,  # 0.85 saves, within the record's noise edge (0.18) of 1
     )
     packaged = checker_scope.slow_checker()  # docs/results.md, as the package carries it: a row per scenario
     ratios = recorded.query_ratios(checker_scope.SLOW)
@@ -109,17 +110,19 @@ def test_the_answer_gives_three_short_bullets_read_from_the_record():
     assert [line[:2] for line in said] == ["- "] * 3
     assert said[0].startswith("- The paper's Table 3 saves time in 10 of the 16 scenario–sampler pairs. ")
     assert (
-        "saved time in none of the 16 with our fast exact checker (7 tied, 9 longer, 5 of those only at the median) "
-        "and in 3 with python-fcl on both sides (13 tied, 0 longer)" in said[0]
+        "saved time in none of the 16 with our fast exact checker (7 tied, 9 longer, 4 of those at the noise edge) "
+        "and in 3 with python-fcl on both sides (13 tied, 0 longer, 1 of the savings at the noise edge)" in said[0]
     )
     facts = checker_scope.slow_checker()
-    assert f"its sampling was {checker_scope.percents(facts.sampling)} shorter" in said[0]
-    assert "sampling took 0.29–18 % of a mean query with our fast checker (0.35–34 % with python-fcl)" in said[1]
+    assert (
+        "sampling took 0.29–18 % of a mean query with our fast checker (0.35–34 % with python-fcl, where prediction "
+        f"made it {checker_scope.percents(facts.sampling)} shorter; the paper's Table 3: 39–74 %)" in said[1]
+    )
     assert said[1].startswith("- **Why**: ") and "(section 5 counts both)" in said[1]
-    assert "a network call cost 2.6–23 times an exact check per configuration" in said[2]
+    assert "in that recorded run a network call cost 2.6–23 times an exact check per configuration" in said[2]
     assert "in 3 of the 4 costliest cells most of the extra time came after sampling" in said[2]
     full = chapter04.full_answer()
-    assert "(a tie in 7, a cost in 9, " in full  # the same counts, in full
+    assert "(a tie in 7, a cost in 9)" in full  # the same counts, in full; the noise edge's in the bullet
     assert checker_scope.slow_sentence(facts, ranges=False) in full and checker_scope.like_for_like(facts) in full
     assert "saved time in 3 of the 16 pairs with our fast checker (7 tied, 6 longer) and in 2 with python-fcl" in full
     assert all(len(line) < 400 for line in said)  # short: each about three lines of the page
@@ -137,3 +140,14 @@ def test_our_means_are_the_means_rows_by_the_medians_labels():
     assert set(means) == {label for label in checker_scope.compact() if "ours" in label}
     rows = checker_scope.against_algorithm_1()
     assert means["3DC-9, ours (`strong` preset), medians"] == rows["3DC-9, ours (`strong` preset), means"]
+
+
+def test_beyond_sampling_sets_the_papers_own_arithmetic_beside_ours():
+    """Review r31d, item 3: the paper's savings exceed its whole sampling time (3DO G 4.1 s against 0.21 s, 3DC-9 BT
+    2.6 s against 0.10 s, from its §V mean times), which skipping the samples' checks cannot explain; ours with
+    python-fcl has one such cell (3DC-9 OB, 34 % against 8 %, as docs/results.md says)."""
+    said = chapter04.beyond_sampling()
+    assert "exceeds all the sampling time without prediction in 10 of its 16 cells" in said
+    assert "3DO G saves 4.10 s while its sampling took 0.21 s, 3DC-9 BT 2.60 s against 0.10 s." in said
+    assert "in 7 of those 10 cells the paper's standard deviation of a query's time exceeds the saving" in said
+    assert "has 1 such saving (3DC-9 OB saved 34 % of the mean query, its sampling 8 %)" in said

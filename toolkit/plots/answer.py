@@ -5,7 +5,8 @@ the python-fcl runs, and two of four scenarios were not drawn).
 Algorithm 1 for each series of ``{"<scenario>, <series>": {sampler: ratio}}`` (the rows of
 :func:`toolkit.teaching.checker_scope.compact`: the paper's Table 3, our accurate network with our fast checker
 (compiled in 3D, numpy in 2DS) and with python-fcl on both sides), on a log axis against the line at 1 and the tie
-band; with ``means``, each of our series' mean-based ratio (Table 3's statistic) as a ring around its median.
+band; with ``means``, each of our series' mean-based ratio (Table 3's statistic) as a short bar across its median's
+x (reader r31d: rings around the points overlapped them).
 """
 
 from __future__ import annotations
@@ -23,7 +24,7 @@ from toolkit.plots.timings import band_words, log_ticks
 MARKERS = ("s", "o", "^")  # a series' marker, beside its colour
 SPREAD = 0.28  # a series' offset from its sampler's tick: a sampler's three series side by side, nearer each other
 # than a neighbour's (review r29d: at 0.32 a triangle sat nearer the next sampler's square), a faint line between
-MEAN_WORDS = "rings, each in its series' colour: our ratios of mean times (Table 3's statistic)"  # for ``means``
+MEAN_WORDS = "bars, in each series' colour: our ratios of mean times (Table 3's statistic)"
 
 
 def answer_ratios(
@@ -36,8 +37,8 @@ def answer_ratios(
 ) -> Figure:
     """One panel: a group of four samplers per scenario, one point per series in each, the tie band ``1 ± tie``
     shaded darker than the page's other bands, and the series named in a legend above (``names`` renames them);
-    ``spans``: a whisker per point of the rows it names (the middle half of the queries' ratios); ``means``: a ring
-    (a hollow marker) around each point of the rows it names, at that series' ratio of mean times (review r28d: the
+    ``spans``: a whisker per point of the rows it names (the middle half of the queries' ratios); ``means``: a short
+    bar across each point of the rows it names, at that series' ratio of mean times (review r28d: the
     paper's squares are means, our filled markers medians, and our means were not drawn)."""
     scenarios = list(dict.fromkeys(label.split(", ", 1)[0] for label in rows))
     series = list(dict.fromkeys(label.split(", ", 1)[1] for label in rows))
@@ -64,7 +65,7 @@ def answer_ratios(
     ax.set_xlabel("sampler, grouped by scenario", labelpad=24)  # under the scenarios' names
     handles: list = ax.get_legend_handles_labels()[0]
     labels = ax.get_legend_handles_labels()[1]
-    if ring_handles:  # one entry, a ring in each ringed series' colour (review r30d: the orange ring was not shown)
+    if ring_handles:  # one entry, a bar in each series' colour (review r30d: the orange one was not shown)
         handles, labels = [*handles, tuple(ring_handles)], [*labels, MEAN_WORDS]
     fig.legend(  # over the panel: long names, a row each
         handles,
@@ -82,7 +83,7 @@ def answer_ratios(
         f"log scale, against the line at 1 and the shaded {band_words(tie)}: {len(points)} points in "
         f"{len(series)} series, {below} of them at or below {1 - tie:.2f}"
         + (", whiskers spanning the middle half of the queries' ratios where a series has them" if spans else "")
-        + (", a ring at our series' ratio of mean times." if means else ".")
+        + (", a bar across each of our points at its series' ratio of mean times." if means else ".")
     )
     return describe(fig, text, parts)
 
@@ -152,8 +153,8 @@ def _series(ax, rows, scenarios: list[str], series: list[str], names: dict[str, 
 
 
 def _rings(ax, means: dict[str, dict[str, float]], scenarios: list[str], series: list[str]) -> tuple[list, list]:
-    """A ring (a hollow marker, larger than the filled one) at each ratio of ``means``, at the x of the filled point
-    of the same label and sampler. Returns the values drawn, and a ring per colour drawn for the legend's one entry."""
+    """A short bar at each ratio of ``means``, across the x of the filled point of the same label and sampler (reader
+    r31d: rings overlapped the points). Returns the values drawn, and a bar per colour for the legend's one entry."""
     width = len(PAPER_SAMPLERS) + 1
     x, y, colors = [], [], []
     for k, name in enumerate(series):
@@ -165,9 +166,9 @@ def _rings(ax, means: dict[str, dict[str, float]], scenarios: list[str], series:
                     y.append(ratios[s])
                     colors.append(series_style(k)["color"])
     if x:
-        ax.scatter(x, y, s=70, facecolors="none", edgecolors=colors, linewidths=1.1, zorder=4)
+        ax.scatter(x, y, s=190, marker="_", color=colors, linewidths=2.6, zorder=4)  # reader r31d: rings hid dots
     handles = [
-        Line2D([], [], linestyle="none", marker="o", markersize=8, markerfacecolor="none", markeredgecolor=c)
+        Line2D([], [], linestyle="none", marker="_", markersize=13, markeredgewidth=2.6, markeredgecolor=c)
         for c in dict.fromkeys(colors)
     ]
     return y, handles

@@ -224,6 +224,9 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
     return describe(fig, f"{len(S)} uniform attempts S over the point robot's C-obstacles (grey). {counts}.")
 
 
+EDGE_WORDS = "edge: predicted free, not yet checked"  # reader r31d: the thin edges named in the legend
+
+
 def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
     """One planner step: edges, nodes (hollow: not yet confirmed exactly), start and goal, the candidate path,
     and what a repair removes (thick, and X at removed nodes); a legend names them."""
@@ -231,7 +234,8 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
     P = step.nodes  # (V, 2)
     removed_edge = np.zeros(len(step.edges), dtype=bool)
     removed_edge[step.removed_edges] = True
-    ax.add_collection(LineCollection(P[step.edges[~removed_edge]], colors=EDGE_COLOR, linewidths=0.4, zorder=2))
+    edges = P[step.edges[~removed_edge]]
+    ax.add_collection(LineCollection(edges, colors=EDGE_COLOR, linewidths=0.4, zorder=2, label=EDGE_WORDS))
     confirmed = step.node_verified
     ax.scatter(*P[confirmed].T, s=22, color=NODE_COLOR, zorder=3, label="node, confirmed (filled)")
     ax.scatter(
@@ -257,7 +261,7 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
             ),
             path_effects=outline,
         )
-    _removed_edges(ax, exact, P[step.edges[removed_edge]])
+    hits = _removed_edges(ax, exact, P[step.edges[removed_edge]])
     ax.scatter(
         *P[step.removed_nodes].T,
         s=70,
@@ -279,18 +283,20 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
             clip_on=False,  # whole at the edge of the C-space, where start and goal often lie
         )
     _margin(ax)
-    ax.set_title(f"round {step.round}, {step.stage}:\n{len(P)} nodes, {len(step.edges)} edges", fontsize=10)
+    where = "".join(f"\nring: hits ({x:.1f}, {y:.1f})" for x, y in hits)  # reader r31d: off the roadmap, above it
+    ax.set_title(f"round {step.round}, {step.stage}:\n{len(P)} nodes, {len(step.edges)} edges{where}", fontsize=10)
 
 
-def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: int = 201) -> None:
-    """The edges a repair removes, ``segments (R, 2, 2)``, thick, and where each first enters a C-obstacle, a ring and
-    its coordinates written beside it (review r25a: at the page's size one could not see whether the edge cut the
-    block or grazed it)."""
+def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: int = 201) -> list[tuple[float, float]]:
+    """The edges a repair removes, ``segments (R, 2, 2)``, thick, and where each first enters a C-obstacle, a ring
+    (review r25a: at the page's size one could not see whether the edge cut the block or grazed it); returns those
+    points, which the panel's title writes (reader r31d: a box beside the ring sat on the roadmap)."""
     removed = LineCollection(
         list(segments), colors=REPAIR_COLOR, linewidths=4.5, zorder=5, label="edge removed by a repair"
     )
     removed.set_path_effects(halo(4.5))
     ax.add_collection(removed)
+    hits = []
     for a, b in segments:
         Q = a + np.linspace(0.0, 1.0, points)[:, None] * (b - a)
         hit = np.flatnonzero(~exact.are_valid(Q))
@@ -298,18 +304,8 @@ def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: in
             x, y = Q[hit[0]]
             ring = dict(s=60, facecolors="none", edgecolors=COLORS["ink"], linewidths=1.5, zorder=7)
             ax.scatter([x], [y], **ring, label="where a removed edge enters a C-obstacle")  # review r29d: named
-            ax.annotate(
-                f"hits ({x:.1f}, {y:.1f})",
-                (x, y),
-                xytext=(-34, -30),  # off the edges, on a leader (review r27d: the label sat on the roadmap)
-                textcoords="offset points",
-                ha="right",
-                va="top",
-                fontsize=9,
-                zorder=7,
-                arrowprops={"arrowstyle": "-", "color": COLORS["ink"], "linewidth": 0.8},
-                bbox={"boxstyle": "round,pad=0.2", "facecolor": COLORS["free"], "edgecolor": COLORS["ink"]},
-            )
+            hits.append((float(x), float(y)))
+    return hits
 
 
 def _margin(ax, share: float = 0.04) -> None:
@@ -345,18 +341,14 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
     """Several steps of Algorithm 1 side by side, the roadmap drawn at each (one panel per step; ``columns`` a row,
     as wide as the page together)."""
     rows = -(-len(steps) // columns)
-    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / columns * 1.1 * rows + 1.2), layout="constrained")
+    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / columns * 1.08 * rows + 0.4), layout="constrained")
     axes = fig.subplots(rows, columns, squeeze=False).ravel()
     for ax, step in zip(axes, steps):
         _draw_roadmap(ax, exact, step)
     for ax in axes[len(steps) :]:
         ax.set_axis_off()  # an empty slot: the legend goes there
     title = "The lazy PRM with edge screening, step by step"  # not Algorithm 1: its edges are predicted, not checked
-    fig.suptitle(
-        f"{title}\n(thin edges: kept by prediction, checked exactly only on a candidate,"
-        "\nso some cross C-obstacles; hollow: not yet confirmed exactly; X: removed by a repair)",
-        fontsize=11,
-    )
+    fig.suptitle(title, fontsize=11)  # reader r31d: one line; the legend names every mark
     _roadmap_legend(fig, axes, axes[len(steps)] if len(steps) < len(axes) else None)
     text = f"{title}, one panel per step, {len(steps)} steps." + "".join(  # review r28d: the repair's panel too
         f" Panel {k}: {step_in_words(step)}" for k, step in enumerate(steps, start=1)
@@ -388,7 +380,16 @@ def _roadmap_legend(fig: Figure, axes, empty=None) -> None:
     named = {label: handle for ax in axes for handle, label in zip(*ax.get_legend_handles_labels())}
     style: dict[str, Any] = dict(ncol=min(len(named), 2), fontsize=9, frameon=False, handlelength=3.5)
     if empty is not None:
-        empty.legend(list(named.values()), list(named), loc="center", fontsize=9, frameon=False, handlelength=3.5)
+        legend = empty.legend(
+            list(named.values()),
+            list(named),
+            loc="center left",
+            bbox_to_anchor=(-0.2, 0.5),
+            fontsize=8.5,
+            frameon=False,
+            handlelength=2.5,
+        )
+        legend.set_in_layout(False)  # reader r31d: a wide legend shrank every panel; it fits its slot
         return
     style["loc"] = "outside lower center" if fig.get_layout_engine() is not None else "lower center"
     fig.legend(list(named.values()), list(named), **style)

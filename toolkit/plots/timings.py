@@ -62,7 +62,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         ax.set_ylabel("ms per query (median)")
         note = STARRED[bool(crossed.any())]  # review r30d: "none here", not a promised mark missing
         ax.set_title(
-            f"{title}\nabove each pair: median of each query's ratio, with / without (not the bars' ratio){note}",
+            f"{title}: above a pair, the median of each query's ratio{note}",  # reader r31d: one line, not three
             fontsize=9,
             pad=27,
         )
@@ -103,9 +103,9 @@ def _stage_words(title: str, names: list[str], table: dict, ratio: list[float], 
 
 
 MS = 1000.0  # the figure's unit, ms, per second
-STARRED = {  # a stage panel's title's last line, where a pair is starred and where none is
-    True: "\n*: the bars say the other way (the taller is the other mode's)",
-    False: "\nno pair here where the bars say the other way",
+STARRED = {  # a stage panel's title's end, where a pair is starred; none where none is (no mark promised)
+    True: " (*: the bars say the other way)",
+    False: "",
 }
 BAR = 0.3  # a stage bar's width; a pair's centres are 0.44 apart, each bar's whisker stands on its right
 CUT = 2.0  # a whisker reaching past CUT times a panel's tallest bar is cut at its top, its end written there

@@ -34,7 +34,7 @@ class SlowChecker:
     totals: tuple[float, ...]  # Table 3's total improvements, ours
     papers_totals: tuple[float, ...]  # ... and the paper's
     own: tuple[float, ...]  # per scenario and sampler: the median of each query's own total-time ratio with / without
-    edge: int = 0  # the savings of ``own`` whose middle half reaches into the tie band
+    edge: int = 0  # the savings of ``own`` at the noise edge (:func:`toolkit.teaching.costs.at_edge`)
 
     def sampling_verdicts(self) -> Counter:
         """How many sampling cells saved time, tied or cost (chapter 04's rule on the ratio 1 - improvement)."""
@@ -104,7 +104,7 @@ def slow_sentence(facts: SlowChecker, ranges: bool = True) -> str:
     own = facts.own
     total = _counted(facts.total_verdicts())
     if facts.edge:
-        total += f" ({facts.edge} of the {facts.total_verdicts()[SAVES]} savings only at the median)"
+        total += f" ({facts.edge} of the {facts.total_verdicts()[SAVES]} savings at the noise edge)"
     said = (
         f"With a slow exact checker on both sides (python-fcl, {where}; 100 recorded queries a scenario), our accurate "
         f"network {stage} (the paper's Table 3: {percents(facts.papers_sampling)}), but {total}"

@@ -61,12 +61,17 @@ def _mean_times(preset: str, tables: Tables | None = None) -> dict[tuple[str, st
 
 
 def sampling_shares(preset: str, tables: Tables | None = None) -> list[float]:
-    """Per recorded cell of ``preset``, the sampling stage's share of a mean query without prediction: at most this
-    share of the query can prediction save, since it shortens only sampling (review r30d: the "why" in a number)."""
-    return [
-        recorded.ours(row["sampling without"]) / recorded.ours(row["total without"])
-        for row in _mean_times(preset, tables).values()
-    ]
+    """Per recorded cell of ``preset``, the sampling stage's share of a mean query without prediction: the most that
+    skipping the samples' checks can save (review r30d: the "why" in a number)."""
+    return list(shares_by_cell(preset, tables).values())
+
+
+def shares_by_cell(preset: str, tables: Tables | None = None) -> dict[tuple[str, str], float]:
+    """:func:`sampling_shares` by cell: ``{(scenario, sampler): share}``."""
+    return {
+        key: recorded.ours(row["sampling without"]) / recorded.ours(row["total without"])
+        for key, row in _mean_times(preset, tables).items()
+    }
 
 
 def dear_cells(tables: Tables | None = None) -> list[Cost]:
@@ -148,13 +153,27 @@ def middle_halves(preset: str, tables: Tables | None = None) -> dict[str, dict[s
     return out
 
 
+NOISE_EDGE = 2  # a median within this many times timing's own reach of 1 is "at the noise edge" (docs/results.md)
+
+
+def noise_edge(tables: Tables | None = None) -> float:
+    """How far from 1 the noise edge reaches: :data:`NOISE_EDGE` times the furthest that timing one computation twice
+    moved a median of each query's own ratio (the table "timed twice" of :data:`toolkit.teaching.recorded.ALGORITHM_1`;
+    the results page's rule, ``tools/results_noise.py``)."""
+    runs = [found for found in (tables or {}, recorded.packaged()) if recorded.ALGORITHM_1 in found]  # as the page,
+    run = runs[0][recorded.ALGORITHM_1]  # tables without that run borrow the record's floor
+    rows = next(found for heading, found in run.items() if "timed twice" in heading.lower())["rows"]
+    return NOISE_EDGE * max(abs(float(row[4].split()[0]) - 1) for row in rows)
+
+
 def at_edge(preset: str, tables: Tables | None = None) -> Counter:
-    """How many of ``preset``'s saves and costs (by the median of each query's own ratio) have a middle half that
-    reaches into the tie band: a saving or a cost only at the median, "can't tell" by section 3's rule."""
+    """How many of ``preset``'s saves and costs (by the median of each query's own ratio) lie at the noise edge, less
+    than :func:`noise_edge` from 1: the results page's count (review r31d: one rule for the page and the record)."""
+    reach = noise_edge(tables)
     edge: Counter = Counter()
     for by_sampler in middle_halves(preset, tables).values():
-        for median, low, high in by_sampler.values():
+        for median, _, _ in by_sampler.values():
             verdict = time_verdict(median)
-            if (verdict == COSTS and time_verdict(low) != COSTS) or (verdict == SAVES and time_verdict(high) != SAVES):
+            if verdict in (COSTS, SAVES) and abs(median - 1) < reach:
                 edge[verdict] += 1
     return edge
