@@ -8,10 +8,11 @@ import re
 from typing import NamedTuple
 
 from toolkit.teaching import recorded
+from toolkit.teaching.costs import NOISE_EDGE
+from toolkit.teaching.costs import timing_reach as reach_of  # chapter 04 reads the same rule
 from toolkit.teaching.recorded import Tables
 from tools.results_words import NAMES, change
 
-NOISE_EDGE = 2  # a median within this many times timing's own reach of 1 reads "at the noise edge"
 INTERVAL = re.compile(r"(\d+\.\d+) \((\d+\.\d+)–(\d+\.\d+)\)")  # "1.24 (1.12–1.36)": a median (middle half)
 
 
@@ -71,11 +72,6 @@ def noise_line(tables: Tables) -> str:
         f"query's own ratio to {floor.own[0]:.2f}–{floor.own[1]:.2f} and a ratio of means to "
         f"{floor.means[0]:.2f}–{floor.means[1]:.2f}."
     )
-
-
-def reach_of(tables: Tables) -> float:
-    """How far from 1 timing alone moved a median of each query's own ratio (:func:`noise`)."""
-    return max(abs(v - 1) for v in noise(tables).own)
 
 
 def at_noise_edge(medians: dict[str, dict[str, tuple[float, float, float]]], tables: Tables) -> list[str]:

@@ -156,14 +156,19 @@ def middle_halves(preset: str, tables: Tables | None = None) -> dict[str, dict[s
 NOISE_EDGE = 2  # a median within this many times timing's own reach of 1 is "at the noise edge" (docs/results.md)
 
 
-def noise_edge(tables: Tables | None = None) -> float:
-    """How far from 1 the noise edge reaches: :data:`NOISE_EDGE` times the furthest that timing one computation twice
-    moved a median of each query's own ratio (the table "timed twice" of :data:`toolkit.teaching.recorded.ALGORITHM_1`;
-    the results page's rule, ``tools/results_noise.py``)."""
-    runs = [found for found in (tables or {}, recorded.packaged()) if recorded.ALGORITHM_1 in found]  # as the page,
-    run = runs[0][recorded.ALGORITHM_1]  # tables without that run borrow the record's floor
+def timing_reach(tables: Tables | None = None) -> float:
+    """The furthest that timing one computation twice moved a median of each query's own ratio from 1 (the table
+    "timed twice" of :data:`toolkit.teaching.recorded.ALGORITHM_1`; ``tables`` without that run borrow the record's,
+    as the results page does)."""
+    runs = [found for found in (tables or {}, recorded.packaged()) if recorded.ALGORITHM_1 in found]
+    run = runs[0][recorded.ALGORITHM_1]
     rows = next(found for heading, found in run.items() if "timed twice" in heading.lower())["rows"]
-    return NOISE_EDGE * max(abs(float(row[4].split()[0]) - 1) for row in rows)
+    return max(abs(float(row[4].split()[0]) - 1) for row in rows)
+
+
+def noise_edge(tables: Tables | None = None) -> float:
+    """How far from 1 the noise edge reaches: :data:`NOISE_EDGE` times :func:`timing_reach` (the results page's)."""
+    return NOISE_EDGE * timing_reach(tables)
 
 
 def at_edge(preset: str, tables: Tables | None = None) -> Counter:
