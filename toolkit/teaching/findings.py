@@ -357,8 +357,7 @@ def describe_accuracy(label: str, scores: Mapping[str, float], always_valid: flo
 
 
 def _beside(points: int) -> str:
-    """A score ``points`` percentage points from its baseline: "about" it within :data:`CHANCE_BAND`, else above or
-    below."""
+    """A score ``points`` percentage points from its baseline: "about" within :data:`CHANCE_BAND`, else the side."""
     return "about" if abs(points) <= 100 * CHANCE_BAND else "above" if points > 0 else "below"
 
 
