@@ -138,20 +138,15 @@ def _saved_in(ratios: Mapping[str, Mapping[str, float]]) -> str:
 FAST_CHECKER = "compiled in 3D, numpy interval tests in 2DS"  # what "our fast exact checker" is (review r24a)
 
 
-def claim_status(
-    eager: Mapping[str, Mapping[str, float]], lazy: Mapping[str, Mapping[str, float]], edge: int = 0
-) -> str:
+def claim_status(eager: Mapping[str, Mapping[str, float]], lazy: Mapping[str, Mapping[str, float]]) -> str:
     """One sentence on the paper's claim with an accurate network, from recorded runs of 100 queries a scenario (each
     query timed without and with prediction in turn), ``{scenario: {sampler: median time with / without}}``:
     ``eager``, our accurate network inside the paper's Algorithm 1 against Algorithm 1 without prediction, which
     decides whether the claim holds (:func:`claim_verdict`); ``lazy``, the same network against the lazy PRM, by the
-    ratio of the two median times; ``edge``: how many of ``eager``'s costs have a middle half that reaches into the
-    tie band (review r27d: one verdict rule)."""
+    ratio of the two median times (which of them lie at the noise edge: :func:`toolkit.teaching.costs.at_edge`)."""
     status = claim_verdict(eager)
     counted = Counter(time_verdict(r) for row in eager.values() for r in row.values())
     rest = f"a tie in {counted[TIES]}, a cost in {counted[COSTS]}"
-    if edge:
-        rest += f", {edge} of those only at the median: their middle half reaches into the tie band"
     return (
         f"Against our fast exact checker ({FAST_CHECKER}), the paper's claim {status} for an accurate network: inside "
         "the "
