@@ -29,18 +29,21 @@ def plan_tables(result) -> str:
 
 
 def networks(threshold: float) -> str:
-    """The box under the answer naming the three `strong` trainings on the page (readers r29e, r30e): the timed
+    """The fold under the answer naming the three `strong` trainings on the page (readers r29e, r30e, r31e): the timed
     Algorithm 1 run's, this notebook's (at ``threshold``) and the lazy-PRM run's, each with its threshold and where
     the page uses it."""
     said = {p: chapter05.recorded_threshold(p) for p in (COMPILED, "strong")}
     cell = {p: "none recorded" if t is None else f"{t:.2f}" for p, t in said.items()}
     return (
-        "Three trainings of the `strong` recipe appear on this page, each with its own threshold on P(valid):\n\n"
+        "<details><summary>Three trainings of the `strong` recipe on this page, each with its own threshold"
+        "</summary>\n\n"
+        "Each training chose its threshold on P(valid) on held-out data:\n\n"
         "| the `strong` network of | threshold | where this page uses it |\n| --- | ---: | --- |\n"
         f"| the timed Algorithm 1 runs (`{COMPILED}` in `docs/results.md`) | {cell[COMPILED]} "
         "| the answer above, the closing tables |\n"
         f"| this notebook (trained or loaded by `trained_models`) | {threshold:.2f} | sections 5–7 |\n"
         f"| the lazy-PRM runs (`strong` in `docs/results.md`) | {cell['strong']} | the closing section's folded note |"
+        "\n\n</details>"
     )
 
 
