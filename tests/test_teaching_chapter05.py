@@ -179,6 +179,13 @@ def test_closest_above_names_the_frame_nearest_the_threshold_that_gets_no_band()
     said = chapter05_runs.closest_above(np.array([0.9, 0.4975, 0.8, 0.5752, 0.7]), 0.57)
     assert said.startswith("The frame that comes nearest the threshold from above: frame 3, P(valid) 0.575 against")
     assert chapter05_runs.closest_above(np.array([0.1, 0.2]), 0.5) == "Every frame lies below the threshold."
+    # reader r31e: where that frame lies from the slider's first frame, the least clearance bound's
+    near = chapter05_runs.closest_above(np.array([0.9, 0.4975, 0.8, 0.5752, 0.7]), 0.57, tightest=4)
+    assert near.endswith(
+        "It lies 1 frame before the least clearance bound (frame 4, where the slider starts): on the P(valid) panel, "
+        "a dip left of the vertical line."
+    )
+    assert chapter05_runs.closest_above(np.array([0.9, 0.6]), 0.57, tightest=1).endswith("where the slider starts.")
 
 
 def test_the_answer_gives_the_share_of_a_query_sampling_takes_without_the_network():

@@ -94,16 +94,31 @@ def office_collisions(samples: np.ndarray, seed: int) -> str:
     )
 
 
-def closest_above(probability: np.ndarray, threshold: float) -> str:
+def closest_above(probability: np.ndarray, threshold: float, tightest: int | None = None) -> str:
     """§7's line on the P(valid) panel's near misses (reader r29e: a dip to the dashed line read as a second frame
-    below it): the lowest P(valid) of ``probability (F,)`` among the frames at or above ``threshold``, and where."""
+    below it): the lowest P(valid) of ``probability (F,)`` among the frames at or above ``threshold``, and where;
+    given the frame of the least clearance bound, ``tightest``, how far from it (reader r31e: the dip sat just left
+    of the slider's line, and the page never said so)."""
     above = np.flatnonzero(probability >= threshold)  # frames the model calls valid: no band
     if not len(above):
         return "Every frame lies below the threshold."
     frame = int(above[np.argmin(probability[above])])
+    apart = "" if tightest is None else _frames_from(frame, tightest)
     return (
         f"The frame that comes nearest the threshold from above: frame {frame}, P(valid) {probability[frame]:.3f} "
-        f"against {threshold:.3f}: called valid, so no band marks it, however near the dashed line it comes."
+        f"against {threshold:.3f}: called valid, so no band marks it, however near the dashed line it comes.{apart}"
+    )
+
+
+def _frames_from(frame: int, tightest: int) -> str:
+    """Where ``frame`` lies from the frame of the least clearance bound, the slider's first, as a sentence."""
+    if frame == tightest:
+        return " It is the frame of the least clearance bound, where the slider starts."
+    n = abs(frame - tightest)
+    side = "before" if frame < tightest else "after"
+    return (
+        f" It lies {n} frame{'s' * (n != 1)} {side} the least clearance bound (frame {tightest}, where the slider "
+        f"starts): on the P(valid) panel, a dip {'left' if side == 'before' else 'right'} of the vertical line."
     )
 
 
