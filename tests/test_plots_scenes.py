@@ -264,9 +264,10 @@ def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose
     robots = [line for line in overview.get_lines() if line.get_gid() == "robot"]
     assert [to_hex(line.get_color()) for line in robots] == [to_hex(VALID_COLOR), to_hex(INVALID_COLOR)]
     assert (
-        "the path of the robot's base and its shadow on the floor, dotted, a thin line from the robot's base straight "
-        "down to the floor at each pose, the robot drawn over them at each pose, labelled;" in alt_text(fig)
+        "the path of the robot's base and its shadow on the floor, dotted, a thin dash-dot line from the robot's base "
+        "straight down to the floor at each pose, the robot drawn over them at each pose, labelled;" in alt_text(fig)
     )
+    assert {line.get_linestyle() for line in overview.get_lines() if line.get_gid() == "drop"} == {"-."}  # r31e
     (shadow,) = [line for line in overview.get_lines() if line.get_gid() == "shadow"]  # reader r20c: depth cues
     np.testing.assert_allclose(np.array(shadow.get_data_3d()).T, np.c_[points[:, :2], np.zeros(len(points))])
     drops = [np.array(line.get_data_3d()).T for line in overview.get_lines() if line.get_gid() == "drop"]  # (2, 3)

@@ -290,7 +290,7 @@ def _overview_words(robot, workspace, poses, samples, trace) -> str:
         text += ", and all the dangerous mistakes" if step > 1 and dangerous_mask(samples[1]).any() else ""
     text += ", the path of the robot's base and its shadow on the floor, dotted" if trace is not None else ""
     text += (
-        f", a thin line from the robot's base straight down to the floor{' at each pose' * (len(poses) > 1)}"
+        f", a thin dash-dot line from the robot's base straight down to the floor{' at each pose' * (len(poses) > 1)}"
         if poses
         else ""
     )

@@ -360,7 +360,7 @@ CONSERVATIVE_ENTRY = "circle in a sparkle: model wrong, conservative"  # valid, 
 
 SHADOW_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=1.2, linestyle=":")  # the path's shadow on the floor
 DROP_LABEL = "the robot's base, straight down to the floor"  # reader r29e: no sample has one
-DROP_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=0.9, linestyle="-")  # a pose's base, straight down
+DROP_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=0.9, linestyle="-.")  # a base, straight down: r31e
 OVER = 6.0  # pixels: a close-up's mark nearer than this to a link's picture is left out (about half a mark)
 
 
