@@ -182,7 +182,7 @@ def test_closest_above_names_the_frame_nearest_the_threshold_that_gets_no_band()
     # reader r31e: where that frame lies from the slider's first frame, the least clearance bound's
     near = chapter05_runs.closest_above(np.array([0.9, 0.4975, 0.8, 0.5752, 0.7]), 0.57, tightest=4)
     assert near.endswith(
-        "It lies 1 frame before the least clearance bound (frame 4, where the slider starts): on the P(valid) panel, "
+        "It lies 1 frame before the least clearance bound (frame 4, where the slider starts): on the P(valid) panel "
         "it lies left of the vertical line."
     )
     assert chapter05_runs.closest_above(np.array([0.9, 0.6]), 0.57, tightest=1).endswith("where the slider starts.")
