@@ -264,9 +264,10 @@ def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose
     robots = [line for line in overview.get_lines() if line.get_gid() == "robot"]
     assert [to_hex(line.get_color()) for line in robots] == [to_hex(VALID_COLOR), to_hex(INVALID_COLOR)]
     assert (
-        "the path of the robot's base and its shadow on the floor, dotted, a thin line from the robot's base straight "
-        "down to the floor at each pose, the robot drawn over them at each pose, labelled;" in alt_text(fig)
+        "the path of the robot's base and its shadow on the floor, dotted, a thin dash-dot line from the robot's base "
+        "straight down to the floor at each pose, the robot drawn over them at each pose, labelled;" in alt_text(fig)
     )
+    assert {line.get_linestyle() for line in overview.get_lines() if line.get_gid() == "drop"} == {"-."}  # r31e
     (shadow,) = [line for line in overview.get_lines() if line.get_gid() == "shadow"]  # reader r20c: depth cues
     np.testing.assert_allclose(np.array(shadow.get_data_3d()).T, np.c_[points[:, :2], np.zeros(len(points))])
     drops = [np.array(line.get_data_3d()).T for line in overview.get_lines() if line.get_gid() == "drop"]  # (2, 3)
@@ -298,22 +299,19 @@ def test_a_stills_overview_thins_a_dense_cloud_and_its_text_says_so(crossing):
     fig = scenes.scene_still(
         robot,
         workspace,
-        {"here": (pose := robot.sample(np.random.default_rng(1), 1)[0])},
+        {"here": robot.sample(np.random.default_rng(1), 1)[0]},
         samples=(points, {"valid": valid, "in collision": ~valid}),
     )
-    close_up, turned, overview = fig.axes  # one pose: seen twice, above the overview
-    turn = still_panels.second_turn(robot, np.asarray(pose), workspace, 0.6)  # a sixth of a turn, or more
-    assert [close_up.get_title(), turned.get_title()] == ["here, close up", f"here, {still_panels.turn_words(turn)}"]
-    assert (turned.azim - close_up.azim) % 360 == pytest.approx(turn % 360)
-    assert turned.elev == pytest.approx(close_up.elev)
+    close_up, overview = fig.axes  # one pose: seen once, a whole row wide, above the overview (reader r31e)
+    assert close_up.get_title() == "here, close up"
     drawn = {c.get_label(): c for c in overview.collections if c.get_label().startswith("sample")}
     kept = np.arange(n) % 3 == 0  # 1 in 3: at most OVERVIEW_SAMPLES of 2 * OVERVIEW_SAMPLES + 1
     assert len(drawn["sample, valid"].get_offsets()) == int((kept & valid).sum())
     assert len(drawn["sample, in collision"].get_offsets()) == int((kept & ~valid).sum())
     assert all(c.get_alpha() < 1 for c in drawn.values())  # lighter: the blocks show through
     FigureCanvasAgg(fig).draw()  # the overview a whole row under the close-ups (review r16c), the legend under it
-    assert overview.get_position().y1 <= min(close_up.get_position().y0, turned.get_position().y0)
-    assert overview.get_position().width > 1.5 * close_up.get_position().width
+    assert overview.get_position().y1 <= close_up.get_position().y0
+    assert overview.get_position().width > 0.6 and close_up.get_position().width > 0.4  # each a row (r16c, r31e)
     assert fig.legends[0].get_window_extent().y1 <= overview.get_position().y0 * fig.bbox.height
     lo, hi = np.array([close_up.get_xlim(), close_up.get_ylim(), close_up.get_zlim()]).T  # (3,) each
     near = int(np.all((points >= lo) & (points <= hi), axis=1).sum())  # every sample in its window, thinned or not
@@ -364,13 +362,12 @@ def test_a_stills_close_up_says_what_the_model_answers(crossing):
     fig = scenes.scene_still(
         robot, workspace, {"the robot": q}, valid={"the robot": True}, model={"the robot": (0.08, False)}
     )
-    close_up, turned, _ = fig.axes
+    close_up, _ = fig.axes
     # readers r28e, r29e: and says the robot is itself a mistake, the conservative kind
     assert (
         close_up.get_title()
         == "the robot, close up, valid\nthe model: P(valid) 0.08, rejects it:\na conservative mistake"
     )
-    assert turned.get_title() == "the robot, a sixth of a turn round"
     assert "the robot, valid, the model: P(valid) 0.08, rejects it: a conservative mistake" in alt_text(fig)
     accepted = scenes.scene_still(robot, workspace, {"start": q}, model={"start": (0.914, True)})
     assert accepted.axes[0].get_title().endswith("the model: P(valid) 0.91, accepts it")
@@ -574,7 +571,7 @@ def test_a_single_robot_in_a_still_overview_is_ringed_and_named_left_of_every_ma
     kinds = {"valid": np.arange(300) % 2 == 0, "in collision": np.arange(300) % 2 == 1}
     fig = scenes.scene_still(robot, workspace, {"the robot": q}, valid={"the robot": valid}, samples=(Q[:, :3], kinds))
     FigureCanvasAgg(fig).draw()
-    overview = fig.axes[2]
+    overview = fig.axes[1]  # after the one close-up (reader r31e)
     (ring,) = [c for c in overview.collections if c.get_gid() == "robot ring"]
     (name,) = [t for t in overview.texts if t.get_gid() == "pose label"]
     assert name.get_text() == ("the robot" if valid else "the robot,\nin collision") and name.arrow_patch is not None

@@ -142,7 +142,8 @@ def test_a_close_ups_text_counts_the_near_blocks_and_says_how_it_is_seen():
     q = np.array([5.0, 5.0, 5.0, 0.0, 0.0, 0.0, 0.0])
     blocks = np.array([[[5.0, 5.25, 4.9], [5.4, 5.65, 5.1]]])
     fig = scenes.scene_still(CHAIN7, Workspace(np.zeros(3), np.full(3, 11.0), blocks, family="3dc"), {"the chain": q})
-    assert "seen across the plane it spreads in, and a sixth of a turn round" in alt_text(fig)
+    assert "seen across the plane it spreads in, its links opaque" in alt_text(fig)  # reader r31e: seen once
+    assert "turn round" not in alt_text(fig)
     assert "the blocks within 0.3 of a link darker (1 block near the chain)" in alt_text(fig)
 
 

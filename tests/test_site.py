@@ -513,6 +513,12 @@ def test_the_index_gives_one_statistic_a_line_behind_its_answer():
     )
     assert answer.index("*own ratio*: its time") < answer.index(f"saved a whole query's time in {own(fcl)} of 16")
     assert f"and in {own(compiled)} with the compiled checker. Timing alone" in answer
+    # reader r31e: the finding's figure under the answer, its caption counting the same cells
+    assert README.read_text().index("](docs/results_claim.png)") < README.read_text().index("\n## ")
+    assert (
+        f"Below the grey band a cell saved time: with python-fcl (hollow) in {own(fcl)} of 16 cells, with our "
+        f"compiled checker (filled) in {own(compiled)}."
+    ) in answer
     # the answer: sampling saves where the check is slow (every cell), seldom where it is fast, a whole query rarely
     assert by_means(fcl, "sampling") == 16 and by_means(compiled, "sampling") <= 2
     assert max(by_means(fcl, "total"), by_means(compiled, "total"), own(fcl), own(compiled)) <= 3

@@ -22,7 +22,12 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
         cells = " | ".join(f"{findings.time_verdict(means[s])} ({means[s]:.2f})" for s in chapter05.SAMPLERS)
         assert f"| `strong` network, {name}: ratio of the means | {cells} |" in tables
         assert " / ".join(f"{means[s]:.2f}" for s in chapter05.SAMPLERS) not in answer
-    assert "only the sampling stage's verdict changes with the checker" in tables  # not its time alone (r27e)
+    assert "What the tables add to the answer is the paper's side." in tables  # reader r31e: not the answer again
+    assert "only the sampling stage's verdict changes with the checker" not in tables
+    # reader r31e: three sentences above a fold; the "why" bounds the saving by sampling's share times its cut
+    shown = answer.split("<details>")[0]
+    assert shown.count("\n\n") == 2 and "at most 9 %" in shown and "worth at most 11 % of a query (OB's" in shown
+    assert "| OB | 14.2% | 78% | 11.1% | 1.06 |" in answer
     assert "never" not in answer  # reader r25b: python-fcl's medians 0.94 and 0.99 are shorter, only not by 10 %
     # reader r25b: the paper's side, Table 3's 3DC-7 total times (-2 %, 14 %, -9 %, 54 %)
     assert "The paper's Table 3 says yes for OB and BT (14% and 54% less total time)" in tables
@@ -174,6 +179,13 @@ def test_closest_above_names_the_frame_nearest_the_threshold_that_gets_no_band()
     said = chapter05_runs.closest_above(np.array([0.9, 0.4975, 0.8, 0.5752, 0.7]), 0.57)
     assert said.startswith("The frame that comes nearest the threshold from above: frame 3, P(valid) 0.575 against")
     assert chapter05_runs.closest_above(np.array([0.1, 0.2]), 0.5) == "Every frame lies below the threshold."
+    # reader r31e: where that frame lies from the slider's first frame, the least clearance bound's
+    near = chapter05_runs.closest_above(np.array([0.9, 0.4975, 0.8, 0.5752, 0.7]), 0.57, tightest=4)
+    assert near.endswith(
+        "It lies 1 frame before the least clearance bound (frame 4, where the slider starts): on the P(valid) panel "
+        "it lies left of the vertical line."
+    )
+    assert chapter05_runs.closest_above(np.array([0.9, 0.6]), 0.57, tightest=1).endswith("where the slider starts.")
 
 
 def test_the_answer_gives_the_share_of_a_query_sampling_takes_without_the_network():
@@ -183,5 +195,6 @@ def test_the_answer_gives_the_share_of_a_query_sampling_takes_without_the_networ
     assert sorted(shares) == sorted(chapter05.SAMPLERS) and max(shares.values()) < 0.5
     answer = chapter05.answer()
     assert f"sampling had been only {chapter05.span(shares, 100, 1)} % of a query's mean time" in answer
-    assert f"the rest of a query (at least {1 - max(shares.values()):.0%} of it)" in answer
+    cut = recorded.improvements(chapter05.FCL, "3dc7", "sampling")  # reader r31e: share times cut, per sampler
+    assert all(f"| {s} | {shares[s]:.1%} | {cut[s]:.0%} | {shares[s] * cut[s]:.1%} |" in answer for s in shares)
     assert chapter05.check_costs() in answer

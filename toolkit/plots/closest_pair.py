@@ -49,7 +49,30 @@ def mark_closest(scene, robot: BoxRobot, q: np.ndarray, blocks: np.ndarray, boun
     scene.scatter(*ends.T, s=10, color=COLORS["ink"], depthshade=False, gid="closest ends")
     said = f"{gap:.3f} apart" + ("" if bound is None else f"\n(bound ≥ {bound:.3f})")  # gap ≥ bound, both to 3
     x, y, _ = proj3d.proj_transform(*ends.mean(axis=0), scene.get_proj())  # the line's middle on the picture
+    away = _away_from(scene, ends.mean(axis=0), blocks)  # (2,) on the picture, from the nearest block's middle
     scene.annotate(
-        said, (float(x), float(y)), xytext=(8, -6), textcoords="offset points", ha="left", va="top", **scene_label()
+        said,
+        (float(x), float(y)),
+        xytext=tuple(LABEL_OUT * away),
+        textcoords="offset points",
+        ha="right" if away[0] < 0 else "left",
+        va="top" if away[1] < 0 else "bottom",
+        arrowprops=dict(arrowstyle="-", color=COLORS["ink"], linewidth=0.6, shrinkA=1.0, shrinkB=2.0),
+        **scene_label(),
     )
     return gap
+
+
+LABEL_OUT = 36.0  # points: the gap's label this far from the line's middle, away from the block (reader r31e)
+
+
+def _away_from(scene, point: np.ndarray, blocks: np.ndarray) -> np.ndarray:
+    """A unit direction on the 3D axes' picture, sideways away from the middle of the block nearest ``point (3,)``
+    and a little down (reader r31e: a label set below and right of the gap lay over the block's edges)."""
+    nearest = blocks[np.argmin(np.linalg.norm(np.clip(point, blocks[:, 0], blocks[:, 1]) - point, axis=1))]
+    on_screen = [
+        scene.transData.transform(proj3d.proj_transform(*p, scene.get_proj())[:2])
+        for p in (nearest.mean(axis=0), point)
+    ]
+    side = -1.0 if on_screen[1][0] < on_screen[0][0] else 1.0  # left or right of the block, as the gap is
+    return np.array([side, -0.45]) / np.hypot(1.0, 0.45)  # and down: the block's name stands above it

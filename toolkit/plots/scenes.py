@@ -42,7 +42,6 @@ from toolkit.plots.still_panels import (
     over_robot,
     overview,
     overview_step,
-    second_turn,
     star_on_mark,
     turn_words,
 )
@@ -53,6 +52,7 @@ _POSE_COLOR = {None: UNCHECKED_COLOR, True: VALID_COLOR, False: INVALID_COLOR}  
 FRAME_TURNS = (0.0, 30.0, -60.0, 90.0, -90.0, 180.0)  # degrees: a path frame's camera, turned the least it can from
 #   mplot3d's azimuth of -60, never to within 20 degrees of an axis (reader r19c: seen along x, its ticks crowded "5 x")
 CLOSE_UP_HEIGHT = 3.2  # inches: a row of two close-ups
+SINGLE_CLOSE_UP_HEIGHT = 3.6  # inches: a single pose's close-up, a row of its own (reader r31e)
 FLAT_OVERVIEW_HEIGHT = 4.0  # inches: the overview of a flat workspace (still_panels.flat), drawn larger
 OVERVIEW_HEIGHT = 5.0  # inches: the overview, a row of its own (review r16c: in half a row, 230 px, stars were lost)
 
@@ -80,23 +80,22 @@ def scene_still(
     its close-up's title says what the model answers (review r17c: nothing marked that it rejects a valid pose).
     ``close`` names the poses seen close up (default: every one; a path's start and goal, reader r25b: its "goal"
     close-up sat alone in a third row).
-    A single pose is seen twice (the second view a sixth of a turn round, or a third or a quarter where a block then
-    stands on a line of sight through the robot: :func:`~toolkit.plots.still_panels.second_turn`), above the
-    overview; several follow it, one panel each. Of more than :data:`~toolkit.plots.still_panels.OVERVIEW_SAMPLES`
-    samples the overview draws every k-th (its title says which k), of every kind alike."""
+    A single pose is seen once, a whole row wide, above the overview (reader r31e: two views side by side were about
+    200 px each, the robot a few pixels tall); several follow it, two a row. Of more than
+    :data:`~toolkit.plots.still_panels.OVERVIEW_SAMPLES` samples the overview draws every k-th (its title says which
+    k), of every kind alike."""
     if robot.dim != 3:
         raise ValueError(f"a scene's still is drawn in 3D; the {robot.name} robot moves in {robot.dim}D")
     valid = valid or {}
     colors = {label: _POSE_COLOR[valid.get(label)] for label in poses}
     views = [(label, np.asarray(q, dtype=float), 0.0) for label, q in poses.items() if close is None or label in close]
-    if len(views) == 1:  # a single pose: seen twice, a sixth of a turn apart
-        views.append((*views[0][:2], second_turn(robot, views[0][1], workspace, margin)))
-    first = -(-len(views) // 2) if len(poses) == 1 else 0  # the overview's row: after a single pose's two views
+    first = -(-len(views) // 2) if len(poses) == 1 else 0  # the overview's row: after a single pose's view
     fig, panels = _still_panels(len(views), first, flat(workspace))
+    at = min(2 * first, len(views))  # the overview's panel: after the close-ups of the rows before it
     named = {_overview_name(label, len(poses), valid.get(label)): (q, colors[label]) for label, q in poses.items()}
-    overview(panels.pop(2 * first), robot, workspace, named, samples, trace)  # two close-ups a row before it
+    overview(panels.pop(at), robot, workspace, named, samples, trace)
     if len(poses) == 1:
-        _ring_the_robot(fig.axes[2 * first], robot, workspace, views[0][1])
+        _ring_the_robot(fig.axes[at], robot, workspace, views[0][1])
     # pose -> (samples drawn in its close-up, blocks near it, the camera's elevation and azimuth)
     seen: dict[str, tuple[int, int, tuple[float, float]]] = {}
     moved = False  # a z axis moved, maybe beside the other view's: the panels further apart
@@ -137,13 +136,14 @@ def _z_apart(ax) -> bool:
 def _still_panels(views: int, first: int, is_flat: bool) -> tuple[Figure, list]:
     """A still's figure and its 3D panels in reading order: the close-ups of ``views`` poses two a row, and the
     overview a whole row of its own (its stars show) at row ``first``, shorter for a flat workspace (r25b: the
-    office's flat box left half its panel blank)."""
-    heights = [CLOSE_UP_HEIGHT] * -(-views // 2)  # inches: the close-ups, two a row
+    office's flat box left half its panel blank); a single close-up a whole row too (reader r31e)."""
+    heights = [SINGLE_CLOSE_UP_HEIGHT if views == 1 else CLOSE_UP_HEIGHT] * -(-views // 2)  # inches: two a row
     heights.insert(first, FLAT_OVERVIEW_HEIGHT if is_flat else OVERVIEW_HEIGHT)
     fig = Figure(figsize=(PAGE_WIDTH, sum(heights) + 0.9))  # as wide as the page: text as drawn
     grid = fig.add_gridspec(len(heights), 2, height_ratios=heights)
-    cells = [grid[row, :] if row == first else grid[row, column] for row in range(len(heights)) for column in (0, 1)]
-    cells = [cell for k, cell in enumerate(cells) if k % 2 == 0 or k // 2 != first][: 1 + views]  # reading order
+    whole = {first} | (set(range(len(heights))) if views == 1 else set())  # the rows of a single panel
+    cells = [grid[row, :] if row in whole else grid[row, column] for row in range(len(heights)) for column in (0, 1)]
+    cells = [cell for k, cell in enumerate(cells) if k % 2 == 0 or k // 2 not in whole][: 1 + views]  # reading order
     return fig, [fig.add_subplot(cell, projection="3d") for cell in cells]
 
 
@@ -251,7 +251,7 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
         + (f", {seen[label][0]} sample{'s' * (seen[label][0] != 1)} near it" if samples else "")
         for label in seen
     ]
-    turned = f", and {turn_words(turn)}" if len(poses) == 1 else ""
+    turned = f", and {turn_words(turn)}" if len(poses) == 1 and turn else ""
     named = {label: label if label.startswith("the ") else f"the {label}" for label in seen}  # "the start"
     darker = ", ".join(  # reader r25b: "(the robot: 0)" was unreadable; "(0 blocks near the robot)"
         f"{seen[label][1]} block{'s' * (seen[label][1] != 1)} near {named[label]}" for label in seen
@@ -290,7 +290,7 @@ def _overview_words(robot, workspace, poses, samples, trace) -> str:
         text += ", and all the dangerous mistakes" if step > 1 and dangerous_mask(samples[1]).any() else ""
     text += ", the path of the robot's base and its shadow on the floor, dotted" if trace is not None else ""
     text += (
-        f", a thin line from the robot's base straight down to the floor{' at each pose' * (len(poses) > 1)}"
+        f", a thin dash-dot line from the robot's base straight down to the floor{' at each pose' * (len(poses) > 1)}"
         if poses
         else ""
     )
@@ -331,10 +331,10 @@ def path_frame(
         name: _per_frame(values, frames, name)
         for name, values in (("valid", valid), ("clearance", clearance), ("probability", probability))
     }
-    fig = Figure(figsize=(PAGE_WIDTH, 11.4))  # as wide as the page: its text as large as it is drawn
+    fig = Figure(figsize=(PAGE_WIDTH, 13.6))  # as wide as the page: its text as large as it is drawn
     # the robot a whole row above the series (review r16c: beside them its panel was 200 px wide); the series the
-    # larger share (reader r18c: five panels of 70 px were too small to read at the site's width)
-    grid = fig.add_gridspec(2, 1, height_ratios=(3.9, 6.1), hspace=0.4, top=0.92, bottom=0.05, left=0.12, right=0.86)
+    # larger share (readers r18c, r31e: five panels of 70, then 90 px were too small to read at the site's width)
+    grid = fig.add_gridspec(2, 1, height_ratios=(3.5, 6.5), hspace=0.3, top=0.93, bottom=0.05, left=0.12, right=0.86)
     valid_now = None if series["valid"] is None else bool(series["valid"][index])
     bound = None if series["clearance"] is None else float(series["clearance"][index])
     _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, (valid_now, bound), workspace, margin)

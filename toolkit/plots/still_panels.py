@@ -10,7 +10,7 @@ A 3D picture on a page cannot be turned, so each panel is drawn to be read from 
 - :func:`close_up` draws the robot at one pose among the blocks near it: its links opaque, edged thick in ink, each
   joint a white dot ringed in ink, the blocks faded (a robot behind one shows through it), those within
   :data:`NEAR` of a link darker than the rest of its window. The camera looks across the plane the chain spreads
-  in (:func:`view_angles`), so a bent chain shows its bends; a second panel (``turn``) sees it a sixth of a turn round.
+  in (:func:`view_angles`), so a bent chain shows its bends; ``turn`` turns that camera (:func:`second_turn`).
 
 mplot3d has no depth buffer: it draws whole collections one after the other. Here the blocks behind the robot come
 first, far to near, then the samples, the links far to near, the blocks that stand between a link and the camera
@@ -360,7 +360,7 @@ CONSERVATIVE_ENTRY = "circle in a sparkle: model wrong, conservative"  # valid, 
 
 SHADOW_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=1.2, linestyle=":")  # the path's shadow on the floor
 DROP_LABEL = "the robot's base, straight down to the floor"  # reader r29e: no sample has one
-DROP_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=0.9, linestyle="-")  # a pose's base, straight down
+DROP_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=0.9, linestyle="-.")  # a base, straight down: r31e
 OVER = 6.0  # pixels: a close-up's mark nearer than this to a link's picture is left out (about half a mark)
 
 

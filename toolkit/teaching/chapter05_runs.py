@@ -29,18 +29,21 @@ def plan_tables(result) -> str:
 
 
 def networks(threshold: float) -> str:
-    """The box under the answer naming the three `strong` trainings on the page (readers r29e, r30e): the timed
+    """The fold under the answer naming the three `strong` trainings on the page (readers r29e, r30e, r31e): the timed
     Algorithm 1 run's, this notebook's (at ``threshold``) and the lazy-PRM run's, each with its threshold and where
     the page uses it."""
     said = {p: chapter05.recorded_threshold(p) for p in (COMPILED, "strong")}
     cell = {p: "none recorded" if t is None else f"{t:.2f}" for p, t in said.items()}
     return (
-        "Three trainings of the `strong` recipe appear on this page, each with its own threshold on P(valid):\n\n"
+        "<details><summary>Three trainings of the `strong` recipe on this page, each with its own threshold"
+        "</summary>\n\n"
+        "Each training chose its threshold on P(valid) on held-out data:\n\n"
         "| the `strong` network of | threshold | where this page uses it |\n| --- | ---: | --- |\n"
         f"| the timed Algorithm 1 runs (`{COMPILED}` in `docs/results.md`) | {cell[COMPILED]} "
         "| the answer above, the closing tables |\n"
         f"| this notebook (trained or loaded by `trained_models`) | {threshold:.2f} | sections 5–7 |\n"
         f"| the lazy-PRM runs (`strong` in `docs/results.md`) | {cell['strong']} | the closing section's folded note |"
+        "\n\n</details>"
     )
 
 
@@ -91,16 +94,31 @@ def office_collisions(samples: np.ndarray, seed: int) -> str:
     )
 
 
-def closest_above(probability: np.ndarray, threshold: float) -> str:
+def closest_above(probability: np.ndarray, threshold: float, tightest: int | None = None) -> str:
     """§7's line on the P(valid) panel's near misses (reader r29e: a dip to the dashed line read as a second frame
-    below it): the lowest P(valid) of ``probability (F,)`` among the frames at or above ``threshold``, and where."""
+    below it): the lowest P(valid) of ``probability (F,)`` among the frames at or above ``threshold``, and where;
+    given the frame of the least clearance bound, ``tightest``, how far from it (reader r31e: the dip sat just left
+    of the slider's line, and the page never said so)."""
     above = np.flatnonzero(probability >= threshold)  # frames the model calls valid: no band
     if not len(above):
         return "Every frame lies below the threshold."
     frame = int(above[np.argmin(probability[above])])
+    apart = "" if tightest is None else _frames_from(frame, tightest)
     return (
         f"The frame that comes nearest the threshold from above: frame {frame}, P(valid) {probability[frame]:.3f} "
-        f"against {threshold:.3f}: called valid, so no band marks it, however near the dashed line it comes."
+        f"against {threshold:.3f}: called valid, so no band marks it, however near the dashed line it comes.{apart}"
+    )
+
+
+def _frames_from(frame: int, tightest: int) -> str:
+    """Where ``frame`` lies from the frame of the least clearance bound, the slider's first, as a sentence."""
+    if frame == tightest:
+        return " It is the frame of the least clearance bound, where the slider starts."
+    n = abs(frame - tightest)
+    side = "before" if frame < tightest else "after"
+    return (
+        f" It lies {n} frame{'s' * (n != 1)} {side} the least clearance bound (frame {tightest}, where the slider "
+        f"starts): on the P(valid) panel it lies {'left' if side == 'before' else 'right'} of the vertical line."
     )
 
 
