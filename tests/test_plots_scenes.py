@@ -356,7 +356,7 @@ def test_a_stills_model_wrong_star_is_hollow_round_the_mark_it_flags_larger_roun
 
 def test_a_stills_close_up_says_what_the_model_answers(crossing):
     """Review r17c: nothing on the still marked that the model rejects the valid robot (P = 0.08). The close-up's
-    title says it, and the text; the turned view and a still without a model say nothing of a model."""
+    title says it, and the text; a still without a model says nothing of a model."""
     robot, workspace, _, path, _ = crossing
     q = path[0]
     fig = scenes.scene_still(

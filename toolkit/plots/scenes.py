@@ -43,7 +43,6 @@ from toolkit.plots.still_panels import (
     overview,
     overview_step,
     star_on_mark,
-    turn_words,
 )
 
 UNCHECKED_COLOR = COLORS["unchecked"]  # the robot when no validity is given
@@ -88,7 +87,7 @@ def scene_still(
         raise ValueError(f"a scene's still is drawn in 3D; the {robot.name} robot moves in {robot.dim}D")
     valid = valid or {}
     colors = {label: _POSE_COLOR[valid.get(label)] for label in poses}
-    views = [(label, np.asarray(q, dtype=float), 0.0) for label, q in poses.items() if close is None or label in close]
+    views = [(label, np.asarray(q, dtype=float)) for label, q in poses.items() if close is None or label in close]
     first = -(-len(views) // 2) if len(poses) == 1 else 0  # the overview's row: after a single pose's view
     fig, panels = _still_panels(len(views), first, flat(workspace))
     at = min(2 * first, len(views))  # the overview's panel: after the close-ups of the rows before it
@@ -99,21 +98,17 @@ def scene_still(
     # pose -> (samples drawn in its close-up, blocks near it, the camera's elevation and azimuth)
     seen: dict[str, tuple[int, int, tuple[float, float]]] = {}
     moved = False  # a z axis moved, maybe beside the other view's: the panels further apart
-    for ax, (label, q, turn) in zip(panels, views):
+    for ax, (label, q) in zip(panels, views):
         ok = valid.get(label)
-        near, angles = close_up(ax, robot, q, workspace, color=colors[label], margin=margin, turn=turn)
+        near, angles = close_up(ax, robot, q, workspace, color=colors[label], margin=margin)
         hide = None if samples is None else over_robot(ax, robot, q, samples[0])  # (N,) marks over the robot
         drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE, hide=hide)
         seen.setdefault(label, (drawn, near, angles))
-        moved |= _z_apart(ax)  # reader r29e: the turned view's z ticks stood over its y ticks
+        moved |= _z_apart(ax)  # reader r29e: a close-up's z ticks stood over its y ticks
         verdict = model_words((model or {}).get(label), ok)
-        ax.set_title(
-            f"{label}, close up{_STATE[ok]}{verdict}" if not turn else f"{label}, {turn_words(turn)}", fontsize=10
-        )
+        ax.set_title(f"{label}, close up{_STATE[ok]}{verdict}", fontsize=10)
     _still_legend(fig, valid, h_pad=4.0 if first else 1.5, w_pad=8.0 if moved else 5.0, close_ups=panels)  # r25b
-    described = _still_described(
-        robot, workspace, poses, valid, samples, trace, seen, model or {}, views[-1][2] if views else 0.0
-    )
+    described = _still_described(robot, workspace, poses, valid, samples, trace, seen, model or {})
     return describe(fig, *described)
 
 
@@ -209,10 +204,10 @@ def _still_legend(
         legend.remove()
 
 
-def _still_described(robot, workspace, poses, valid, samples, trace, seen, model, turn) -> tuple[str, list]:
+def _still_described(robot, workspace, poses, valid, samples, trace, seen, model) -> tuple[str, list]:
     """A still's text alternative and its longer description (what each panel draws, each pose's values, the
     samples and blocks near it and where the camera stands, ``seen``: ``{label: (samples, blocks, (elev, azim))}``,
-    what the ``model`` answers for it, and how far round the ``turn`` of a single pose's second close-up is)."""
+    and what the ``model`` answers for it)."""
     text = _overview_words(robot, workspace, poses, samples, trace)
     counted = [("blocks", str(len(workspace.boxes)))]
     counted += [(f"samples {kind}", str(int(m.sum()))) for kind, m in (samples[1].items() if samples else ())]
@@ -251,12 +246,11 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
         + (f", {seen[label][0]} sample{'s' * (seen[label][0] != 1)} near it" if samples else "")
         for label in seen
     ]
-    turned = f", and {turn_words(turn)}" if len(poses) == 1 and turn else ""
     named = {label: label if label.startswith("the ") else f"the {label}" for label in seen}  # "the start"
     darker = ", ".join(  # reader r25b: "(the robot: 0)" was unreadable; "(0 blocks near the robot)"
         f"{seen[label][1]} block{'s' * (seen[label][1] != 1)} near {named[label]}" for label in seen
     )
-    text += f"; the robot seen across the plane it spreads in{turned}, its links opaque, its joints white dots, "
+    text += "; the robot seen across the plane it spreads in, its links opaque, its joints white dots, "
     text += f"the blocks within {NEAR} of a link darker ({darker})"
     return text + "; then the robot close up among the blocks near it: " + "; ".join(said) + ".", parts
 

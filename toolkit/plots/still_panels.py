@@ -10,7 +10,7 @@ A 3D picture on a page cannot be turned, so each panel is drawn to be read from 
 - :func:`close_up` draws the robot at one pose among the blocks near it: its links opaque, edged thick in ink, each
   joint a white dot ringed in ink, the blocks faded (a robot behind one shows through it), those within
   :data:`NEAR` of a link darker than the rest of its window. The camera looks across the plane the chain spreads
-  in (:func:`view_angles`), so a bent chain shows its bends; ``turn`` turns that camera (:func:`second_turn`).
+  in (:func:`view_angles`), so a bent chain shows its bends.
 
 mplot3d has no depth buffer: it draws whole collections one after the other. Here the blocks behind the robot come
 first, far to near, then the samples, the links far to near, the blocks that stand between a link and the camera
@@ -156,11 +156,11 @@ def overview_step(n: int) -> int:
 
 
 def close_up(
-    ax, robot: BoxRobot, q: np.ndarray, workspace: Workspace, *, color: str, margin: float, turn: float = 0.0
+    ax, robot: BoxRobot, q: np.ndarray, workspace: Workspace, *, color: str, margin: float
 ) -> tuple[int, tuple[float, float]]:
     """The robot at ``q (dof,)`` in ``color`` among the blocks within ``margin`` of it (their parts in that window, one
-    within :data:`NEAR` up to ``margin`` taller), seen from :func:`view_angles` turned ``turn`` degrees about the
-    vertical. Returns how many blocks lie within :data:`NEAR` of a link's box, and the camera's (elevation, azimuth)."""
+    within :data:`NEAR` up to ``margin`` taller), seen from :func:`view_angles`. Returns how many blocks lie within
+    :data:`NEAR` of a link's box, and the camera's (elevation, azimuth)."""
     q = np.asarray(q, dtype=float)
     draw_robot(ax, robot, q[None], colors=[color], view="3d", margin=margin)  # the links; the blocks below
     aabbs = robot.link_aabbs(q[None])[0]  # (L, 2, 3)
@@ -172,7 +172,6 @@ def close_up(
     ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), zlim=(lo[2], hi[2]))
     ax.set_box_aspect(hi - lo, zoom=1.15)  # the robot larger in its panel: mplot3d leaves wide margins
     elevation, azimuth = view_angles(robot, q)
-    azimuth += turn
     ax.view_init(elev=elevation, azim=azimuth)
     toward = _toward_camera(elevation, azimuth)  # (3,)
     ax.computed_zorder = False  # drawn in the order set below, not by mplot3d's guess of each collection's depth
@@ -197,15 +196,6 @@ def close_up(
     return int(near.sum()), (elevation, azimuth)
 
 
-TURNS = (60.0, -60.0, 120.0, -120.0, 90.0, -90.0)  # degrees round a second close-up tries (r20c: not edge-on)
-
-
-def second_turn(robot: BoxRobot, q: np.ndarray, workspace: Workspace, margin: float) -> float:
-    """A single pose's second close-up: the first of :data:`TURNS` (a sixth of a turn, either way, then a third or a
-    quarter) with the fewest blocks on a line of sight through the robot (:func:`clear_turn`)."""
-    return clear_turn(robot, q, workspace, margin, TURNS)
-
-
 def clear_turn(
     robot: BoxRobot, q: np.ndarray, workspace: Workspace, margin: float, turns, view: tuple[float, float] | None = None
 ) -> float:
@@ -222,13 +212,6 @@ def clear_turn(
     sights = [_toward_camera(elevation, azimuth + t) for t in turns]  # (3,) each
     crossed = [(_in_front(blocks, centers, v) | _in_front(blocks, centers, -v)).sum() for v in sights]
     return float(turns[int(np.argmin(crossed))])
-
-
-def turn_words(turn: float) -> str:
-    """A second close-up's title: how far round the first it is seen (:data:`TURNS`)."""
-    return {60: "a sixth of a turn round", 90: "a quarter turn round", 120: "a third of a turn round"}.get(
-        round(abs(turn)), f"turned {abs(turn):.0f}° round"
-    )
 
 
 def model_words(answer: tuple[float, bool] | None, valid: bool | None = None) -> str:
