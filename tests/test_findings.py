@@ -95,6 +95,13 @@ def test_planning_table_is_a_markdown_table_with_a_verdict_per_row():
     assert lines[2] == "| 3DC-7 | BS | costs time<br>(median 2.00; middle half 2.00–2.00) | 100 / 200 | 3 |"
     assert lines[3] == "| 3DC-7 | OB | saves time<br>(median 0.50; middle half 0.50–0.50) | 100 / 50 | 3 |"
     assert "\n    " not in table  # never pre-wrapped
+    # reader r31d: where the same exact check's cost moved between the modes, the table says "can't tell" as the
+    # sentence under it does, not "costs time"
+    moved = findings.planning_table({"3DC-7": {"BS": row([0.1] * 3, [0.2] * 3)}}, moved={"3DC-7": 1.8, "2DS": None})
+    assert moved.splitlines()[2].startswith("| 3DC-7 | BS | can't tell<br>(median 2.00;")
+    assert findings.planning_table({"3DC-7": {"BS": row([0.1] * 3, [0.2] * 3)}}, moved={"3DC-7": None}) == "\n".join(
+        lines[:3]
+    )
 
 
 def test_ratio_table_gives_each_recorded_ratio_its_verdict():

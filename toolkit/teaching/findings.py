@@ -50,10 +50,13 @@ def planning_verdict(row: Mapping[str, Mapping], tie: float = TIE) -> tuple[floa
     return median, q1, q3, time_verdict(q1, q3, tie) if len(ratios) >= 2 else UNSURE
 
 
-def planning_table(tables: Mapping[str, Mapping[str, Mapping]], tie: float = TIE) -> str:
+def planning_table(
+    tables: Mapping[str, Mapping[str, Mapping]], tie: float = TIE, moved: Mapping[str, float | None] | None = None
+) -> str:
     """Markdown: per scenario and sampler of ``{scenario: compare_prediction table}``, the verdict with the per-query
     ratios' median and middle half, then the median totals without and with prediction (the verdict comes first, so
-    that a narrow page shows it, on a line of its own above its named numbers: reader r18a)."""
+    that a narrow page shows it, on a line of its own above its named numbers: reader r18a); a scenario whose
+    :func:`speed_moved` ratio ``moved`` holds reads "can't tell", as :func:`planning_sentence` does (reader r31d)."""
     rows = [
         "| scenario | sampler | with / without: verdict (median; middle half) | median total, ms: without / with "
         "| queries |",
@@ -62,6 +65,7 @@ def planning_table(tables: Mapping[str, Mapping[str, Mapping]], tie: float = TIE
     for name, table in tables.items():
         for sampler, row in table.items():
             median, q1, q3, said = planning_verdict(row, tie)
+            said = UNSURE if (moved or {}).get(name) is not None else said
             rows.append(
                 f"| {name} | {sampler} | {said}<br>(median {median:.2f}; middle half {q1:.2f}–{q3:.2f}) "
                 f"| {_ms(row['without']['total_s_median'])} / {_ms(row['with']['total_s_median'])} "
