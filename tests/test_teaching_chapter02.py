@@ -36,7 +36,9 @@ def test_a_correlations_size_in_a_word():
 
 
 def test_the_answer_names_both_30_grid_caes_and_gives_each_a_row():
-    text = chapter02.answer(PAPER, LONG, PRESET, MANY, n_seen=30, steps=1500, many_name="1000 grids", quick=False)
+    text = chapter02.answer(
+        PAPER, LONG, PRESET, MANY, n_seen=30, steps=1500, many_name="1000 grids", many_seen=500, quick=False
+    )
     rows = [line.split(" | ")[0].lstrip("| ") for line in text.splitlines() if line.startswith("| ")][2:]
     assert [row.split(":")[0] for row in rows] == ["paper, Table 1", "CAE-long", "CAE-preset", rows[3].split(":")[0]]
     assert "the paper's layer sizes" in rows[1] and "1,500 steps" in rows[1]
@@ -50,7 +52,15 @@ def test_the_answer_names_both_30_grid_caes_and_gives_each_a_row():
 def test_the_answer_in_a_quick_run_says_it_has_not_memorized():
     short = LONG | {"seen_acc": 0.80}
     text = chapter02.answer(
-        PAPER, short, PRESET, MANY | {"unseen_acc": 0.5}, n_seen=8, steps=100, many_name="200 grids", quick=True
+        PAPER,
+        short,
+        PRESET,
+        MANY | {"unseen_acc": 0.5},
+        n_seen=8,
+        steps=100,
+        many_name="200 grids",
+        many_seen=100,
+        quick=True,
     )
     assert "has trained too briefly in this quick run to memorize them (80.0%)" in text
     assert "in this quick run, not better yet" in text and "In this quick run, CAE-preset has trained" in text

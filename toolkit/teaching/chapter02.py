@@ -62,19 +62,33 @@ def correlation_in_words(r: float) -> str:
 
 
 def answer(
-    paper: Scores, long: Scores, preset: Scores, many: Scores, *, n_seen: int, steps: int, many_name: str, quick: bool
+    paper: Scores,
+    long: Scores,
+    preset: Scores,
+    many: Scores,
+    *,
+    n_seen: int,
+    steps: int,
+    many_name: str,
+    many_seen: int,
+    quick: bool,
 ) -> str:
     """The table and the answer at the top of the page, as Markdown: Table 1's 2DS row (``paper``'s ``seen_acc`` and
     ``unseen_acc``), then CAE-long (this page's, ``steps`` steps on ``n_seen`` grids), CAE-preset (the `paper`
     preset's, recorded) and the CAE on ``many_name``, each beside "all free" (reader r30b: one sentence each, and the
-    preset's row in the table the answer points to)."""
+    preset's row in the table the answer points to). The last row's "seen" is ``many_seen`` of its own training grids,
+    not the 30 above it, and its label says so (reader r32b)."""
     table = [
         '| CAE (2DS) | seen | unseen | "all free": seen / unseen |',
         "| --- | --- | --- | --- |",
         f"| paper, Table 1 | {paper['seen_acc']:.0%} | {paper['unseen_acc']:.0%} | not reported |",
         _row(f"CAE-long: the paper's layer sizes and loss, {n_seen} grids, {steps:,} steps (this page)", long),
         _row("CAE-preset: the same, stopped early by the `paper` preset (chapters 03–04 load it)", preset),
-        _row(f"the same layer sizes on {many_name} (not the paper's recipe), section 8", many),
+        _row(
+            f"the same layer sizes on {many_name} (not the paper's recipe), section 8; seen: {many_seen} of its "
+            "training grids, unseen: other grids",
+            many,
+        ),
     ]
     seen_said = (
         f"memorizes them: {long['seen_acc']:.1%} of their cells right"
