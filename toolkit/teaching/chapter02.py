@@ -85,9 +85,7 @@ def answer(
         _row(f"CAE-long: the paper's layer sizes and loss, {n_seen} grids, {steps:,} steps (this page)", long),
         _row("CAE-preset: the same, stopped early by the `paper` preset (chapters 03–04 load it)", preset),
         _row(
-            f"the same layer sizes on {many_name} (not the paper's recipe), section 8; seen: {many_seen} of its "
-            "training grids, unseen: other grids",
-            many,
+            f"the same layer sizes on {many_name} (not the paper's recipe, section 8); seen: {many_seen} of them", many
         ),
     ]
     seen_said = (
