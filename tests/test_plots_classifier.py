@@ -275,9 +275,10 @@ def test_a_fine_maps_marks_stand_apart_and_a_one_cell_strip_of_mistakes_is_marke
 
 def test_each_mark_sits_on_a_mistake_of_its_kind():
     """Reader r26c, chapter 03: a block's mistakes on two edges of a C-obstacle averaged into its inside, so that a
-    circle ("rejected, free") sat in the obstacle and others on the kept side of the threshold. Each mark now sits on
-    one of its block's mistakes of its kind: here a ring of free cells rejected around the block, and the block's left
-    and right edges kept (dangerous), at both pitches."""
+    circle ("rejected, free") sat in the obstacle and others on the kept side of the threshold. Each mark now covers
+    one of its block's mistakes of its kind, the whole cell under the mark, rings included (reader r32c: moved onto its
+    side of the outline, a mark need not be centred on it): here a ring of free cells rejected around the block, and
+    the block's left and right edges kept (dangerous), at both pitches."""
     fine = slices.slice_grid(robots.point_robot(), n=100)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
     valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (100, 100)
@@ -292,8 +293,11 @@ def test_each_mark_sits_on_a_mistake_of_its_kind():
     first, cell = np.array([fine.axes[0][0], fine.axes[1][0]]), fine.axes[0][1] - fine.axes[0][0]
     for label, code in (("valid rejected", 1), ("invalid kept (dangerous)", 3)):
         (mark,) = [c for c in cell_marks.cell_marks(ax) if c.get_label() == label]
-        at = np.rint((np.asarray(mark.get_offsets()) - first) / cell).astype(int)  # (m, 2) the cells under the marks
-        assert len(at) and (codes[at[:, 0], at[:, 1]] == code).all(), label
+        at = (np.asarray(mark.get_offsets()) - first) / cell  # (m, 2) the marks' centres, in cells
+        half = (np.sqrt(mark.get_sizes()[0]) / 2 + cell_marks.RING) / cell_marks.cell_points(ax, fine)  # cells
+        kind = np.argwhere(codes == code)  # (n, 2) the mistakes of its kind
+        under = np.max(np.abs(at[:, None] - kind[None]), axis=2) + 0.5 <= half + 1e-9  # (m, n) whole under a mark
+        assert len(at) and under.any(axis=1).all(), label
     assert block_of_squares(fig, "circles") > 1 and block_of_squares(fig, "squares") > 1  # merged into blocks
 
 
