@@ -275,9 +275,10 @@ def test_a_fine_maps_marks_stand_apart_and_a_one_cell_strip_of_mistakes_is_marke
 
 def test_each_mark_sits_on_a_mistake_of_its_kind():
     """Reader r26c, chapter 03: a block's mistakes on two edges of a C-obstacle averaged into its inside, so that a
-    circle ("rejected, free") sat in the obstacle and others on the kept side of the threshold. Each mark now sits on
-    one of its block's mistakes of its kind: here a ring of free cells rejected around the block, and the block's left
-    and right edges kept (dangerous), at both pitches."""
+    circle ("rejected, free") sat in the obstacle and others on the kept side of the threshold. Each mark now covers
+    one of its block's mistakes of its kind, the whole cell under the mark, rings included (reader r32c: moved onto its
+    side of the outline, a mark need not be centred on it): here a ring of free cells rejected around the block, and
+    the block's left and right edges kept (dangerous), at both pitches."""
     fine = slices.slice_grid(robots.point_robot(), n=100)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
     valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (100, 100)
@@ -292,8 +293,11 @@ def test_each_mark_sits_on_a_mistake_of_its_kind():
     first, cell = np.array([fine.axes[0][0], fine.axes[1][0]]), fine.axes[0][1] - fine.axes[0][0]
     for label, code in (("valid rejected", 1), ("invalid kept (dangerous)", 3)):
         (mark,) = [c for c in cell_marks.cell_marks(ax) if c.get_label() == label]
-        at = np.rint((np.asarray(mark.get_offsets()) - first) / cell).astype(int)  # (m, 2) the cells under the marks
-        assert len(at) and (codes[at[:, 0], at[:, 1]] == code).all(), label
+        at = (np.asarray(mark.get_offsets()) - first) / cell  # (m, 2) the marks' centres, in cells
+        half = (np.sqrt(mark.get_sizes()[0]) / 2 + cell_marks.RING) / cell_marks.cell_points(ax, fine)  # cells
+        kind = np.argwhere(codes == code)  # (n, 2) the mistakes of its kind
+        under = np.max(np.abs(at[:, None] - kind[None]), axis=2) + 0.5 <= half + 1e-9  # (m, n) whole under a mark
+        assert len(at) and under.any(axis=1).all(), label
     assert block_of_squares(fig, "circles") > 1 and block_of_squares(fig, "squares") > 1  # merged into blocks
 
 
@@ -604,3 +608,24 @@ def test_the_outline_runs_on_the_cells_edges_so_a_corner_cells_mark_lies_inside_
     (path,) = [p for p in boundary_of(ax).get_paths() if len(p.vertices)]
     centres = np.stack(np.meshgrid(*fine.axes, indexing="ij"), axis=-1).reshape(-1, 2)  # (31 * 31, 2)
     np.testing.assert_array_equal(path.contains_points(centres), ~valid.ravel())
+
+
+def test_a_threshold_sweeps_zoom_draws_the_span_of_p_valid_beside_the_whole_range():
+    """Reader r32c, chapter 03 section 6: the `paper` model's rates all change between 0.36 and 0.63, on an axis from
+    0 to 1, and its drop met the dotted line. ``zoom`` adds a panel over the span of P(valid), rounded out to 0.05;
+    where P(valid) spans most of 0 to 1, or without ``zoom`` (``toolkit reproduce``'s call), the one panel."""
+    from toolkit.plots.reproduction import threshold_sweep
+
+    rng = np.random.default_rng(0)
+    probability = 0.36 + 0.27 * rng.random(400)  # (400,) squeezed round 0.5
+    valid = rng.random(400) < probability
+    fig = threshold_sweep(probability, valid, 0.5, zoom=True, title="paper")
+    whole, zoomed = fig.axes
+    assert zoomed.get_xlim() == pytest.approx((0.35, 0.65)) and whole.get_xlim()[1] >= 1
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    fig.draw(renderer)
+    (legend,) = fig.legends
+    assert all(legend.get_window_extent(renderer).y1 <= ax.get_window_extent(renderer).y0 for ax in fig.axes)
+    assert "from 0.35 to 0.65" in alt.alt_text(fig)
+    assert len(threshold_sweep(probability, valid, 0.5).axes) == 1  # reproduce's figure unchanged
+    assert len(threshold_sweep(np.linspace(0, 1, 400), valid, 0.5, zoom=True).axes) == 1  # nothing to zoom into

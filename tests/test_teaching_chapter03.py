@@ -16,8 +16,11 @@ def test_the_opening_table_gives_the_papers_accuracy_as_reported_and_its_balance
     assert f"as reported: {published['acc']:.0%})" in paper
     assert f"| {(published['tpr'] + published['tnr']) / 2:.1%} |" in paper  # 87.5 %, not the reported 88 %
     strong7 = recorded.table("strong", "MLP accuracy")["3dc7"]
-    label = "our `strong` preset, 3DC-7 (a 7-DoF chain of two boxes in 3D, section 5), recorded run"  # r29c, r30c
+    label = "our `strong` preset, 3DC-7, recorded run"  # r29c, r30c
     assert any(line.startswith(f"| {label} | {recorded.ours(strong7['Balanced unseen Acc']):.0%} |") for line in lines)
+    paper7 = "| the paper's MLP, its Table 2, 3DC-7 (a 7-DoF chain of two boxes in 3D, section 5; its accuracy, as "
+    assert lines[5].startswith(paper7 + "reported: 71%) | 73.0% | 85% | 61% |")  # r32c: 3DC-7 defined, beside ours
+    assert lines[6].startswith(f"| {label} |") and "| TPR (valid kept) |" in lines[0]  # r32c: "free kept" elsewhere
     assert "preset (the toolkit's training recipe" in lines[3]
 
 
@@ -34,11 +37,13 @@ def test_the_closing_table_holds_the_paper_and_each_recorded_run_above_this_page
         "`paper` preset, 2DS unseen, recorded run (docs/results.md)",
         "`paper` preset, 2DS unseen, this page's draw (section 4)",
         "always valid",
+        "the paper's Table 2, 3DC-7 unseen",  # reader r32c
         "`strong` preset, 3DC-7 unseen, recorded run (docs/results.md)",
         "`strong` preset, 3DC-7 unseen, this page's model (`trained_scores`)",
     ]
     paper_row = "| validity-blind by §IV-A; its rates imply 60% valid | 88% | 90% / 85% | 87.5% |"  # r31c
     assert paper_row in table  # the paper's, as the opening table prints it
+    assert "| validity-blind by §IV-A; its rates imply 42% valid | 71% | 85% / 61% | 73.0% |" in table  # r32c
     paper2, strong7 = (recorded.table(p, "MLP accuracy")[s] for p, s in (("paper", "2ds"), ("strong", "3dc7")))
     opening = chapter03.opening_table()
     for row in (paper2, strong7):  # the recorded rows carry the opening table's numbers, rounded alike

@@ -38,6 +38,7 @@ from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
 from toolkit.plots.cell_marks import depth_inside, draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
+from toolkit.plots.mark_sides import fit_on_side, on_side
 from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import dof_label
 from toolkit.plots.slices import CSpaceSlice
@@ -85,7 +86,7 @@ def probability_maps(
         ax.set_title(f"{name}: P(valid), threshold {t:.2f}\n{_mistakes_counted(counts)}", fontsize=10)
         said.append(f"{name}, threshold {t:.2f}: " + answers.answers_in_words(np.asarray(probability) >= t, valid))
         parts.append(answers.map_in_regions(name, said[-1], probability, valid, grid, t))
-    blocks = fit_cell_marks(fig, grid)  # laid out: each kind's marks one per k x k cells holding any
+    blocks = fit_on_side(fig, grid)  # laid out: each kind's marks one per k x k cells holding any, on their side
     k = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
     _legend(fig, _mistake_handles(k), above=len(cut) > 1)  # r26c: under the second map, a screen below the first
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
@@ -203,7 +204,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
         for code, cell in enumerate(cells)
     ]
     boundary = Line2D([], [], color=BOUNDARY, path_effects=halo(1.2))
-    blocks = fit_cell_marks(fig, grid)  # the mistakes' marks as large as one sees, the circles sparse
+    blocks = fit_on_side(fig, grid)  # the mistakes' marks as large as one sees, the circles sparse, on their side
     per = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
     block = {code: f" (one per {k} x {k} cells holding any)" if k > 1 else "" for code, k in per.items()}
     per_block = f"\nsquares 1 per {per[3]} x {per[3]}-cell tile, circles 1 per {per[1]} x {per[1]}"  # marks < mistakes
@@ -229,9 +230,6 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
         "decision map", answers.answers_in_words(predicted, valid), probability, valid, grid, threshold
     )
     return describe(fig, text, [decision, *answers.answer_tables(predicted, valid)[:1], curve])
-
-
-# -- the panels ----------------------------------------------------------------
 
 
 def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float, *, mistakes=True, cut=CUT_MAP):
@@ -265,13 +263,13 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
 
 def _draw_mistakes(ax, grid: CSpaceSlice, codes) -> None:
     """Every map's mistakes alike: circles, then squares over them, one per block of ``BLOCKS`` a side, each on its
-    block's cell deepest inside its side of the outline (r30c: the squares on outline corners lay half in free space),
-    the squares inside the C-obstacle, the circles outside it."""
+    block's cell deepest inside its side of the outline (r30c), then moved wholly onto that side (r32c: fit_on_side)."""
     valid = codes <= 1  # (nx, ny) the truth: valid kept or rejected
     for code in MISTAKE_MARKERS:
-        style = dict(label=ANSWERS[code], zorder=ZORDER[code], **_mistake_mark(code))
-        depth = depth_inside(valid if code == 1 else ~valid)
-        draw_cell_marks(ax, grid, codes == code, pitch=PITCH[code], blocks=BLOCKS[code], depth=depth, **style)
+        side = valid if code == 1 else ~valid  # squares inside the C-obstacle, circles outside it
+        style: dict[str, Any] = dict(pitch=PITCH[code], blocks=BLOCKS[code], label=ANSWERS[code], zorder=ZORDER[code])
+        marks = draw_cell_marks(ax, grid, codes == code, depth=depth_inside(side), **style, **_mistake_mark(code))
+        on_side(marks, side)
 
 
 def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tuple[int, int], edges=None) -> None:
@@ -285,7 +283,7 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     ax.plot(nodes[nodes_valid, x], nodes[nodes_valid, y], ".", **dots)
     if edges is not None and len(edges):  # thin, under the nodes: a node in collision visibly has none (r29c); ink,
         ends = nodes[np.asarray(edges)][..., [x, y]]  # (E, 2, 2)  seen on the light and the mid greys (r30c)
-        ax.add_collection(LineCollection(ends, colors=COLORS["ink"], linewidths=0.5, alpha=0.6, zorder=2.2))
+        ax.add_collection(LineCollection(ends, colors=COLORS["ink"], linewidths=0.5, alpha=0.35, zorder=2.2))  # r32c
     cross = dict(markersize=10, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True))  # over the path (5)
     ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **cross)  # as the maps' squares (r30c)
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)

@@ -138,28 +138,29 @@ def threshold_sweep(
     threshold: float | None = None,
     *,
     title: str = "MLP on unseen workspaces",
+    zoom: bool = False,
 ) -> Figure:
     """Accuracy, TPR and TNR of the MLP as the decision threshold on P(valid) moves over :data:`metrics.SWEEP`
-    (:func:`toolkit.learning.metrics.threshold_sweep`); ``(N,)`` arrays. ``title`` names the model and samples."""
-    ts = metrics.SWEEP
-    rates = metrics.threshold_sweep(np.asarray(probability).reshape(-1), np.asarray(valid, dtype=bool).reshape(-1))
-    fig = Figure(figsize=(5, 4.2), layout="constrained")
-    ax = fig.subplots()
-    curves = {
-        "accuracy": rates["acc"],
-        "TPR (valid kept)": rates["tpr"],
-        "TNR (invalid rejected)": rates["tnr"],
-    }  # name -> (T,)
-    for k, (name, curve) in zip((0, 3, 2), curves.items()):  # no vermillion square: chapter 03's "invalid kept" (r30c)
-        ax.plot(ts, curve, label=name, **series_style(k) | dict(markevery=10, markersize=4))
-    if threshold is not None:
-        ax.axvline(threshold, color=COLORS["reference"], linestyle=":", label=f"threshold {threshold:.2f}")
-    ax.set_xlabel("threshold on P(valid)")
-    ax.set_ylabel("share")
-    ax.set_ylim(0, 1.02)
-    fig.legend(fontsize=9, loc="outside lower center", ncols=2, frameon=False)  # below the axes: it hides no curve
-    ax.set_title(title, fontsize=10)
-    best = int(np.argmax(curves["accuracy"]))
+    (:func:`toolkit.learning.metrics.threshold_sweep`); ``(N,)`` arrays. ``title`` names the model and samples.
+    ``zoom``: a second panel, beside it, over the span of P(valid) the model gives (rounded out to :data:`ZOOM_STEP`),
+    at a finer step, where the model's P(valid) is squeezed into a narrow band (reader r32c: chapter 03's `paper`
+    model changes everything between 0.36 and 0.63, and its drop met the dotted line at 0.50 on an axis from 0 to 1)."""
+    p, truth = np.asarray(probability).reshape(-1), np.asarray(valid, dtype=bool).reshape(-1)
+    window = _zoom_window(p) if zoom else None
+    fig = Figure(figsize=(PAGE_WIDTH if window else 5, 4.2), layout="constrained")
+    axes = fig.subplots(1, 2 if window else 1, squeeze=False)[0]
+    curves = _draw_sweep(axes[0], metrics.SWEEP, p, truth, threshold)
+    if window:
+        axes[0].axvspan(*window, color=COLORS["reference"], alpha=0.15, lw=0, label="the right panel's range")
+        _draw_sweep(axes[1], np.linspace(*window, 121), p, truth, threshold)
+        axes[1].set_xlim(*window)
+        axes[1].set_title(f"thresholds {window[0]:.2f} to {window[1]:.2f}, finer", fontsize=10)
+        axes[0].set_title("thresholds 0 to 1", fontsize=10)
+        fig.suptitle(title, fontsize=10)
+    else:
+        axes[0].set_title(title, fontsize=10)
+    fig.legend(*axes[0].get_legend_handles_labels(), fontsize=9, loc="outside lower center", ncols=2, frameon=False)
+    ts, best = metrics.SWEEP, int(np.argmax(curves["accuracy"]))  # below the axes: the legend hides no curve
     text = "Accuracy, TPR and TNR of the MLP as the threshold on P(valid) moves from 0 to 1: accuracy is highest, "
     text += f"{curves['accuracy'][best]:.2f}, at threshold {ts[best]:.2f}"
     if threshold is not None:
@@ -167,4 +168,31 @@ def threshold_sweep(
         text += f"; at the chosen threshold {threshold:.2f}: " + ", ".join(
             f"{name} {curve[at]:.2f}" for name, curve in curves.items()
         )
+    if window:
+        text += f"; a second panel draws the same from {window[0]:.2f} to {window[1]:.2f}, the span of P(valid)"
     return describe(fig, text + ".")
+
+
+ZOOM_STEP = 0.05  # a zoomed sweep's ends: the span of P(valid) rounded out to this step
+
+
+def _zoom_window(p: np.ndarray) -> tuple[float, float] | None:
+    """The span of P(valid) ``p (N,)`` rounded out to :data:`ZOOM_STEP`, or None where it is most of 0 to 1."""
+    lo = np.floor(np.min(p) / ZOOM_STEP) * ZOOM_STEP
+    hi = np.ceil(np.max(p) / ZOOM_STEP) * ZOOM_STEP
+    return (float(lo), float(hi)) if hi - lo <= 0.5 else None
+
+
+def _draw_sweep(ax, ts: np.ndarray, p: np.ndarray, truth: np.ndarray, threshold: float | None) -> dict:
+    """Accuracy, TPR and TNR over thresholds ``ts (T,)``, the chosen ``threshold`` dotted; returns the curves."""
+    rates = metrics.threshold_sweep(p, truth, ts)
+    curves = {"accuracy": rates["acc"], "TPR (valid kept)": rates["tpr"], "TNR (invalid rejected)": rates["tnr"]}
+    every = max(1, len(ts) // 10)
+    for k, (name, curve) in zip((0, 3, 2), curves.items()):  # no vermillion square: chapter 03's "invalid kept" (r30c)
+        ax.plot(ts, curve, label=name, **series_style(k) | dict(markevery=every, markersize=4))
+    if threshold is not None:
+        ax.axvline(threshold, color=COLORS["reference"], linestyle=":", label=f"threshold {threshold:.2f}")
+    ax.set_xlabel("threshold on P(valid)")
+    ax.set_ylabel("share")
+    ax.set_ylim(0, 1.02)
+    return curves

@@ -1,0 +1,86 @@
+"""Marks kept wholly on their side of an outline: notebook 03's mistakes (reader r32c).
+
+:func:`toolkit.plots.cell_marks.fit_cell_marks` puts one mark per tile of cells on one of the tile's marked cells, the
+deepest inside its side of the outline. A mark is wider than a cell on a fine map (chapter 03 at full size: a square
+with its rings about 3.5 cells wide), so that a mark centred on a C-obstacle's corner cell, where all of a `strong`
+model's dangerous mistakes lie, covered mostly the free space beside it (reader r32c: "the squares appear to sit in
+free space just outside the block they are said to be inside"). A mark given its side (:func:`on_side`) moves, once
+fitted (:func:`fit_on_side`), by less than its own half side, so that it still covers its whole cell, to where the
+least of it, rings included, lies on the other side: inside the outline wherever the region is wide enough to hold
+it, and never nearer another mark of its kind than the marks' pitch keeps them.
+"""
+
+from __future__ import annotations
+
+from weakref import WeakKeyDictionary
+
+import numpy as np
+from matplotlib.collections import PathCollection
+from matplotlib.figure import Figure
+
+from toolkit.plots.cell_marks import CLEAR, RING, cell_marks, cell_points, fit_cell_marks
+from toolkit.plots.slices import CSpaceSlice
+
+STEP = 0.25  # cells: the largest step between two places a mark may move to
+_SIDE: WeakKeyDictionary[PathCollection, np.ndarray] = WeakKeyDictionary()  # marks' side of the outline (nx, ny)
+
+
+def on_side(marks: PathCollection, side) -> PathCollection:
+    """Give ``marks`` (:func:`~toolkit.plots.cell_marks.draw_cell_marks`'s) the cells ``side (nx, ny)`` they name
+    (dangerous squares: the C-obstacle's), for :func:`fit_on_side` to keep them inside it."""
+    _SIDE[marks] = np.asarray(side, dtype=bool)
+    return marks
+
+
+def fit_on_side(fig: Figure, grid: CSpaceSlice) -> dict[str, int]:
+    """:func:`~toolkit.plots.cell_marks.fit_cell_marks`, then each mark given a side moved onto it (its blocks)."""
+    blocks = fit_cell_marks(fig, grid)
+    first = np.array([axis[0] for axis in grid.axes])  # (2,) the first cell's centre
+    cell = np.array([abs(axis[1] - axis[0]) if len(axis) > 1 else 1.0 for axis in grid.axes])  # (2,) data units
+    for ax in fig.axes:
+        for mark in cell_marks(ax):
+            side = _SIDE.get(mark)
+            if side is None or not len(np.asarray(mark.get_offsets())):
+                continue
+            points = cell_points(ax, grid)  # one cell, in points
+            size = float(np.sqrt(mark.get_sizes()[0]))  # points
+            half = (size / 2 + RING) / points  # cells: the mark's half side, rings included
+            pitch = float((str(mark.get_gid()).split(":") + ["0"])[1] or 0)
+            apart = (size + CLEAR) / points if pitch else 0.0  # cells between two marks' centres, at least
+            at = (np.asarray(mark.get_offsets()) - first) / cell  # (m, 2) in cells
+            for n in range(len(at)):
+                others = np.delete(at, n, axis=0)
+                at[n] = inward(at[n], side, half, max(size / 2 / points, half - 0.5), others, apart)
+            inset = max(0.0, half - 0.5)  # inside the map's frame, rings and all
+            mark.set_offsets(first + np.clip(at, inset, np.array(side.shape) - 1 - inset) * cell)
+    return blocks
+
+
+def inward(at: np.ndarray, side: np.ndarray, half: float, reach: float, others: np.ndarray, apart: float):
+    """Where a mark of half side ``half`` (cells) centred at ``at (2,)`` (cell indices) moves: of the centres within
+    ``reach`` cells of it (:func:`fit_on_side`'s: the mark, rings included, still covers that whole cell) and at least
+    ``apart`` from each of ``others (p, 2)``, the one whose square lies least outside ``side (nx, ny)``, then the
+    nearest ``at``."""
+    steps = np.linspace(-reach, reach, 2 * int(np.ceil(reach / STEP)) + 1)  # (s,) 0 and both ends among them
+    moves = np.stack(np.meshgrid(steps, steps, indexing="ij"), axis=-1).reshape(-1, 2)  # (c, 2) the centre (0, 0)
+    centres = at + moves
+    if len(others):
+        clear = np.max(np.abs(centres[:, None] - others[None]), axis=2).min(axis=1)  # (c,) cells to the nearest
+        allowed = (clear >= apart - 1e-9) | (np.abs(moves).max(axis=1) == 0)
+        centres, moves = centres[allowed], moves[allowed]
+    outside = np.round([outside_area(c, side, half) for c in centres], 6)  # (c,) cells' area
+    return centres[np.lexsort((np.abs(moves).max(axis=1), outside))[0]]
+
+
+def outside_area(at: np.ndarray, side: np.ndarray, half: float) -> float:
+    """The area, in cells, of the square of half side ``half`` centred at ``at (2,)`` that lies on the map's cells
+    outside ``side (nx, ny)`` (beyond the map's edge counts as neither)."""
+    overlaps = []
+    for axis in range(2):
+        lo, hi = at[axis] - half, at[axis] + half
+        k = np.arange(max(0, int(np.floor(lo + 0.5))), min(side.shape[axis] - 1, int(np.ceil(hi - 0.5))) + 1)
+        overlaps.append((k, np.clip(np.minimum(k + 0.5, hi) - np.maximum(k - 0.5, lo), 0.0, None)))
+    (i, wi), (j, wj) = overlaps
+    if not len(i) or not len(j):
+        return 0.0
+    return float(np.sum(np.outer(wi, wj) * ~side[np.ix_(i, j)]))
