@@ -25,7 +25,7 @@ from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
-from toolkit.plots.contact import clip_to_box, contacts, nearby_blocks
+from toolkit.plots.contact import clip_to_box, contacts, name_blocks, nearby_blocks
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, OKABE_ITO, PAGE_WIDTH
 
 VALID_COLOR, INVALID_COLOR = COLORS["valid"], COLORS["invalid"]
@@ -325,6 +325,7 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
         for b_lo, b_hi in workspace.boxes[nearby_blocks(workspace, lo, hi)]:
             ax.add_patch(Rectangle(b_lo[at], *(b_hi - b_lo)[at], alpha=0.5, zorder=0.9, **BLOCK_STYLE))
         ax.set(xlim=(lo[at[0]], hi[at[0]]), ylim=(lo[at[1]], hi[at[1]]))
+        name_blocks(ax, workspace, nearby_blocks(workspace, lo, hi), at)  # "18 shelf" (r32a)
         found = [] if ok else contacts(robot, workspace, q)  # (link, block, depth) of each pair that touches
         _outline_touching(ax, robot, workspace, q, found, plane)
         mark_arm(ax, robot, q, view)
