@@ -226,8 +226,8 @@ BASE_MARK: dict[str, Any] = dict(marker="o", ms=7, color=COLORS["ink"], mec=COLO
 def _link_shades(robot: BoxRobot, Q: np.ndarray, named: bool, parts: bool):
     """Per link, the colour and hatch replacing its configuration's (or None), and the legend's name of each: links
     the same in every named configuration grey ("the same in each"), or with ``parts`` one shade per link."""
-    if parts:  # one shade per link, numbered from 0 as link_boxes: two links of one size told apart (r31a)
-        shades = [(CATEGORICAL[i % len(CATEGORICAL)], HATCHES[i % len(HATCHES)]) for i in range(robot.n_links)]
+    if parts:  # a shade per link, numbered as link_boxes: two of one size told apart (r31a), link 2 white (r32a)
+        shades = [(CATEGORICAL[i], HATCHES[i]) for i in ((0, 1, 5, 3, 2, 4) * robot.n_links)[: robot.n_links]]
         names = {
             f"link {i}: {2 * h.max():g} long": shade for i, (h, shade) in enumerate(zip(robot.half_extents, shades))
         }
