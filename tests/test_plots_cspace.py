@@ -505,3 +505,38 @@ def test_the_youbots_arm_is_labelled_in_its_flat_views():
     assert (
         not robot_drawing.verdict_figure(exact_checker(world, robots.box_chain(1)), [5.0] * 3 + [0.0] * 4).axes[0].texts
     )
+
+
+def test_a_slice_outlines_the_blocks_a_flat_view_draws_across_links_they_cannot_reach():
+    """Review r32a: the 9-DoF chain's panel drew its valid robot inside a filled block lying wholly above it. A block
+    drawn across the links but wholly above or below every link over it (in front or behind, from the side) is a
+    dotted outline; a block beside the links, whatever its height, stays filled."""
+    robot = robots.box_chain(1)  # along +x from (5, 5, 5): x 5.0 to 5.5, z 4.95 to 5.05
+    boxes = [[[4, 4, 6], [6, 6, 7]], [[5.25, 5.25, 4], [5.5, 5.5, 6]], [[7, 7, 6], [8, 8, 7]]]  # above, beside, far
+    world = Workspace(np.zeros(3), np.full(3, 11.0), np.array(boxes, dtype=float), family="3dc")
+    q = np.array([5.0, 5.0, 5.0, 0.0, 0.0, 0.0, 0.0])
+    fig = cspace.cspace_slice(exact_checker(world, robot), q, joints=(5, 6), resolution=8, margin=3.0)
+    ax = fig.axes[1]
+    (above,) = _patches(ax, "beyond")
+    assert (above.get_xy(), above.get_width(), above.get_height(), above.get_fill()) == ((4, 4), 2, 2, False)
+    assert above.get_linestyle() == ":"
+    assert len(_patches(ax, "block")) == 2  # the block beside the links, and the far one
+    assert "A block drawn across the links but wholly above or below them is a dotted outline." in alt_text(fig)
+    side = cspace.cspace_slice(exact_checker(world, robot), q, joints=(5, 6), resolution=8, view="xz", margin=3.0)
+    (behind,) = _patches(side.axes[1], "beyond")  # from the side: the second block, behind the links
+    assert (behind.get_xy(), behind.get_width(), behind.get_height()) == ((5.25, 4), 0.25, 2)
+
+
+def test_the_figure_of_one_check_names_each_office_block_inside_it():
+    """Review r32a: the title named "block 18 (shelf)", but the shelf, drawn grey and clipped, bore no name in the
+    left panel. Where the workspace names kinds, each block drawn carries its number and kind at the middle of its
+    part inside the window; unnamed blocks carry none."""
+    youbot = scenarios.get("3do").robot
+    boxes = np.array([[[20, 20, 0], [22, 22, 1]], [[9, 11, 0], [30, 12, 3]]], dtype=float)
+    world = Workspace(np.zeros(3), np.array([41.0, 41.0, 6.0]), boxes, labels=("desk", "shelf"))
+    q = np.array([10.0, 10.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0])
+    ax = robot_drawing.verdict_figure(exact_checker(world, youbot), q[None]).axes[0]
+    (name,) = [t for t in ax.texts if t.get_gid() == "name"]  # the desk lies far outside the window
+    assert name.get_text() == "1 shelf"
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    np.testing.assert_allclose(name.get_position(), [(max(9, x0) + min(30, x1)) / 2, (max(11, y0) + min(12, y1)) / 2])

@@ -332,8 +332,7 @@ def cspace_slice(
     ax.set_title(  # the fixed values are the description's table: four-line titles were the page's hardest (r31a)
         f"{robot.name}: {1 - valid.mean():.0%} in collision (dark)\nthe other DoF fixed at the star's", fontsize=9
     )
-    if view:
-        _robot_panel(fig, grid[0, 1], checker, q, q_valid, view, margin)
+    outlined = _robot_panel(fig, grid[0, 1], checker, q, q_valid, view, margin) if view else 0
     fig.tight_layout()
     swept = " and ".join(robot.dof_names[k] for k in joints)
     text = f"Slice of the {robot.name} robot's configuration space over {swept}, the other DoF fixed: "
@@ -341,6 +340,7 @@ def cspace_slice(
     text += ("valid." if q_valid[0] else "in collision.") + (
         " Beside it, the robot there, its base a dot." * bool(view)
     )
+    text += " A block drawn across the links but wholly above or below them is a dotted outline." * bool(outlined)
     star_at = Part(
         "the star's configuration",
         "valid" if q_valid[0] else "in collision",
@@ -350,13 +350,45 @@ def cspace_slice(
     return describe(fig, text, [_collision_part("slice", ax, valid), star_at])
 
 
-def _robot_panel(fig: Figure, cell, checker: CollisionChecker, q: np.ndarray, q_valid: np.ndarray, view: str, margin):
+OUT_OF_REACH: dict[str, Any] = dict(edgecolor=COLORS["occupied"], linewidth=0.8, zorder=0.5)
+
+
+def _beyond_reach(robot: BoxRobot, workspace: Workspace, q: np.ndarray, view: str) -> np.ndarray:
+    """Which blocks a flat ``view`` of a 3D robot at ``q (dof,)`` draws across its links although they lie wholly
+    above or below (in front of or behind) every link drawn over them (review r32a: a valid robot drawn inside a
+    block read as a collision). Judged by the links' bounding boxes, so a block it keeps may still clear a link."""
+    if robot.dim != 3 or view not in VIEWS:
+        return np.zeros(len(workspace.boxes), dtype=bool)
+    plane = list(VIEWS[view])
+    (depth,) = set(range(3)) - set(plane)
+    links, boxes = robot.link_aabbs(q[None])[0], workspace.boxes  # (L, 2, 3), (K, 2, 3)
+    across = np.all(  # (K, L): the block's and the link's shadows meet in the view
+        (boxes[:, None, 0, plane] <= links[None, :, 1, plane]) & (boxes[:, None, 1, plane] >= links[None, :, 0, plane]),
+        axis=2,
+    )
+    level = (boxes[:, None, 0, depth] <= links[None, :, 1, depth]) & (
+        boxes[:, None, 1, depth] >= links[None, :, 0, depth]
+    )
+    return across.any(axis=1) & ~(across & level).any(axis=1)
+
+
+def _robot_panel(
+    fig: Figure, cell, checker: CollisionChecker, q: np.ndarray, q_valid: np.ndarray, view: str, margin
+) -> int:
     """The robot at ``q (dof,)`` among the nearby blocks in ``fig``'s grid ``cell``, its base a black dot, its
-    verdict titled."""
+    verdict titled; blocks wholly above or below every link (in front or behind, from the side) outlined dotted,
+    not filled. Returns how many blocks were outlined."""
     robot_ax = fig.add_subplot(cell, **({"projection": "3d"} if view == "3d" else {}))
     robot = checker.robot
     colors, workspace = link_colors(1, q_valid), checker_workspace(checker)
-    draw_robot(robot_ax, robot, q[None], colors=colors, view=view, workspace=workspace, margin=margin)
+    beyond = _beyond_reach(robot, workspace, q, view)  # (K,) bool: wholly in front of or behind every link
+    near = Workspace(workspace.lower, workspace.upper, workspace.boxes[~beyond])
+    draw_robot(robot_ax, robot, q[None], colors=colors, view=view, workspace=near, margin=margin)
+    flat = workspace.boxes[beyond][:, :, list(VIEWS.get(view, (0, 1)))]  # (B, 2, 2) in the view's plane
+    window = np.array([robot_ax.get_xlim(), robot_ax.get_ylim()])  # (2, 2): each axis's low, high
+    flat = flat[np.all((flat[:, 0] <= window[:, 1]) & (flat[:, 1] >= window[:, 0]), axis=1)]  # those in the panel
+    for b_lo, b_hi in flat:  # outlined only: no link can reach them
+        robot_ax.add_patch(Rectangle(b_lo, *(b_hi - b_lo), fill=False, linestyle=":", gid="beyond", **OUT_OF_REACH))
     base = robot.link_frames(q[None])[0][0, 0, : robot.dim]  # (D,) the base's position: a black dot (r30a)
     robot_ax.plot(*([c] for c in (base if view == "3d" else base[list(VIEWS[view])])), gid="base", **BASE_MARK)
     mark_arm(robot_ax, robot, q, view)
@@ -364,3 +396,4 @@ def _robot_panel(fig: Figure, cell, checker: CollisionChecker, q: np.ndarray, q_
     robot_ax.set_title(f"the robot at the star ({view}):\n{verdict}; black dot: its base", fontsize=9)
     if view == "3d":
         few_ticks(robot_ax)
+    return len(flat)

@@ -25,7 +25,7 @@ from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
-from toolkit.plots.contact import clip_to_box, contacts, nearby_blocks
+from toolkit.plots.contact import clip_to_box, contacts, name_blocks, nearby_blocks
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, OKABE_ITO, PAGE_WIDTH
 
 VALID_COLOR, INVALID_COLOR = COLORS["valid"], COLORS["invalid"]
@@ -226,8 +226,8 @@ BASE_MARK: dict[str, Any] = dict(marker="o", ms=7, color=COLORS["ink"], mec=COLO
 def _link_shades(robot: BoxRobot, Q: np.ndarray, named: bool, parts: bool):
     """Per link, the colour and hatch replacing its configuration's (or None), and the legend's name of each: links
     the same in every named configuration grey ("the same in each"), or with ``parts`` one shade per link."""
-    if parts:  # one shade per link, numbered from 0 as link_boxes: two links of one size told apart (r31a)
-        shades = [(CATEGORICAL[i % len(CATEGORICAL)], HATCHES[i % len(HATCHES)]) for i in range(robot.n_links)]
+    if parts:  # a shade per link, numbered as link_boxes: two of one size told apart (r31a), link 2 white (r32a)
+        shades = [(CATEGORICAL[i], HATCHES[i]) for i in ((0, 1, 5, 3, 2, 4) * robot.n_links)[: robot.n_links]]
         names = {
             f"link {i}: {2 * h.max():g} long": shade for i, (h, shade) in enumerate(zip(robot.half_extents, shades))
         }
@@ -325,6 +325,7 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
         for b_lo, b_hi in workspace.boxes[nearby_blocks(workspace, lo, hi)]:
             ax.add_patch(Rectangle(b_lo[at], *(b_hi - b_lo)[at], alpha=0.5, zorder=0.9, **BLOCK_STYLE))
         ax.set(xlim=(lo[at[0]], hi[at[0]]), ylim=(lo[at[1]], hi[at[1]]))
+        name_blocks(ax, workspace, nearby_blocks(workspace, lo, hi), at)  # "18 shelf" (r32a)
         found = [] if ok else contacts(robot, workspace, q)  # (link, block, depth) of each pair that touches
         _outline_touching(ax, robot, workspace, q, found, plane)
         mark_arm(ax, robot, q, view)
