@@ -5,14 +5,16 @@ displays the returned figure, a script saves it (``fig.savefig(path)``). One mod
 per topic, in the order of the notebooks:
 
 - :mod:`toolkit.plots.robot_drawing` — a robot's link boxes at configurations, among the blocks near it
-  (notebooks 01, 05), each box drawn from its corners by :mod:`toolkit.plots.boxes`;
+  (notebooks 01, 05), each box drawn from its corners by :mod:`toolkit.plots.boxes`, where it touches or overlaps a
+  block found by :mod:`toolkit.plots.contact`;
 - :mod:`toolkit.plots.slices` — the grid of a 2-DoF slice of configuration space (notebooks 01, 03);
 - :mod:`toolkit.plots.cspace` — workspaces, occupancy grids, configuration-space obstacles (notebook 01);
 - :mod:`toolkit.plots.cae` — the contractive autoencoder's reconstructions and latents (notebook 02), the wrongly
   decoded cells marked by :mod:`toolkit.plots.wrong_cells`;
 - :mod:`toolkit.plots.answers` — the collision MLP's answers against the truth: their kinds, counts, ROC points;
 - :mod:`toolkit.plots.classifier` — the collision MLP's decision boundaries and thresholds (notebook 03);
-- :mod:`toolkit.plots.cell_marks` — marks on a map's cells sized to be seen however fine the map (notebook 03);
+- :mod:`toolkit.plots.cell_marks` — marks on a map's cells sized to be seen however fine the map (notebook 03),
+  each kept wholly on its side of an outline by :mod:`toolkit.plots.mark_sides`;
 - :mod:`toolkit.plots.planning` — samplers, roadmaps, a planner step by step (notebook 04);
 - :mod:`toolkit.plots.timings` — planning times with and without prediction, checkers' throughputs (notebook 04);
 - :mod:`toolkit.plots.scenes` — a planned 3D path, one frame at a time (notebook 05), its degrees of freedom a
