@@ -93,10 +93,9 @@ def test_a_tick_label_that_would_touch_its_neighbour_is_left_out_and_the_last_is
 
 
 def test_the_drawn_tick_labels_keep_apart():
-    """docs/crossover.png's obstacle panel: the chosen values named (reader r29f: 350 and 500 touched; 10, 50, 100,
-    200 and 500), the others measured left without a tick (reader r30f: unlabelled ticks near 20 and 300; the curve's
-    marks show them), slanted where level labels would crowd (reader r10a: 100, 200 and 500 crowded), each a line's
-    height or more from the next."""
+    """docs/crossover.png's obstacle panel: every measured count named (reader r32g: the points near 20-25 and 300-350
+    had no value; reader r29f: 350 and 500 touched level, so slanted they part), slanted where level labels would
+    crowd (reader r10a: 100, 200 and 500 crowded), each a line's height or more from the next."""
     from matplotlib.backends.backend_agg import FigureCanvasAgg
 
     values = [10, 25, 50, 100, 200, 350, 500]
@@ -107,16 +106,16 @@ def test_the_drawn_tick_labels_keep_apart():
     FigureCanvasAgg(fig).draw()
     ax = fig.axes[0]
     named = [t for t in ax.get_xticklabels() if t.get_text()]
-    assert [t.get_text() for t in named] == [f"{v}" for v in TICKS["obstacles"]]  # r29f: 350 unnamed, 500 apart
+    assert TICKS.get("obstacles") is None and [t.get_text() for t in named] == [f"{v}" for v in values]
     if named[0].get_rotation() == 0:  # level: no two closer than a digit and a half
         boxes = [t.get_window_extent() for t in named]
         digit = 9 * 110 / 72 * 0.6
         assert all(right.x0 - left.x1 >= 1.5 * digit for left, right in zip(boxes, boxes[1:]))
     else:  # slanted, where level labels would crowd: a line's height apart along the axis or more
         line = named[0].get_fontsize() * 110 / 72
-        at = sorted(ax.transData.transform([(v, 1) for v in TICKS["obstacles"]])[:, 0])
+        at = sorted(ax.transData.transform([(v, 1) for v in values])[:, 0])
         assert all(right - left >= line for left, right in zip(at, at[1:]))
-    assert sorted(ax.get_xticks()) == list(TICKS["obstacles"]) and not len(ax.get_xticks(minor=True))
+    assert sorted(ax.get_xticks()) == values and not len(ax.get_xticks(minor=True))
 
 
 def test_the_decade_where_curves_cross_has_numbers_and_a_crossing_says_what_it_counts():
@@ -193,9 +192,21 @@ def test_a_3dc_sweep_marks_where_the_paper_s_scenes_sit():
     assert len([p for ax in short.axes for p in ax.patches]) == 1  # 10 to 10,000 blocks: the strip inside
 
 
+def test_the_mesh_panel_of_a_3dc_sweep_says_the_paper_s_scenes_hold_no_mesh():
+    """Reader r32g: the whole mesh panel is shaded and nothing said the paper's scenes hold no mesh."""
+    mesh = {**SWEEP, "label": "triangles of the mesh obstacle"}
+    both = {"obstacles": {**SWEEP, "values": [10, 100, 200, 500]}, "triangles": mesh}
+    fig = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": both})
+    assert fig.axes[1].get_title() == "Mesh (paper scenes: no mesh)" and "they hold no mesh" in alt_text(fig)
+    plain = crossover({"scenario": "2ds", "preset": "paper", "quick": False, "variables": {"triangles": mesh}})
+    assert "paper scenes" not in plain.axes[0].get_title()
+
+
 def test_the_call_size_panel_marks_our_planners_calls():
     """Reader r30f: the text says a planner asks for tens to a few hundred configurations a call; the call-size panel
     of a 3DC sweep now shows where (:data:`PLANNER_CALLS`, a grey strip named at its top), and says it in words."""
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
+
     batch = {**SWEEP, "label": "configurations per call", "values": [1, 10, 100, 1000, 10000]}
     batch.update({k: [1.0, 1.0, 1.0, 1.0, 1.0] for k in ("exact_us", "fcl_us")}, learned_us=[2.0] * 5)
     fig = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"batch": batch}})
@@ -205,6 +216,10 @@ def test_the_call_size_panel_marks_our_planners_calls():
     assert CALLS_LEGEND in [t.get_text() for t in fig.legends[0].get_texts()]
     # reader r31f: two grey strips of one colour meant two things; the planner calls' is dotted, said in its legend
     assert ax.patches[0].get_hatch() == ".." and CALLS_LEGEND.startswith("dotted strip")
+    # reader r32g: the strip's name sat on its dots; the strip stops below the name now
+    FigureCanvasAgg(fig).draw()
+    name = next(t for t in ax.texts if t.get_text() == "planner calls").get_window_extent()
+    assert name.y0 >= ax.patches[0].get_window_extent().y1
     assert PAPER_LEGEND.startswith("plain grey strip") and "a dotted strip marks the planner calls" in alt_text(fig)
     low, high = PLANNER_CALLS
     assert f"the planner calls a network could answer, {low} to {high} configurations" in alt_text(fig)

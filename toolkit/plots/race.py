@@ -74,7 +74,7 @@ def race_medians(
         if batched and all(planner in batched[s] for s in scenarios):
             x = [batched[s][planner] for s in scenarios]
             ax.plot(x, y, marker, color=colour, markersize=8, ls="none", mfc=COLORS["free"], mew=1.8,
-                    label=f"{planner}, checks batched (hollow)", clip_on=False)  # fmt: skip
+                    label=f"{planner}, checks batched (hollow: estimated)", clip_on=False)  # fmt: skip
     ax.set_xscale("log")
     low, high = ax.get_xlim()
     ticks = [m * 10.0**e for e in range(-1, 5) for m in (1, 2, 5) if low <= m * 10.0**e <= high]
@@ -86,7 +86,7 @@ def race_medians(
     for between in np.arange(len(scenarios) - 1) + 0.5:  # reader r31f: a line between scenarios, the dots in rows
         ax.axhline(between, color=COLORS["block"], lw=0.6, ls=":", zorder=0)
     ax.set_xlabel("median time a query, ms (log axis)")
-    ax.set_ylabel("scenario")
+    ax.set_ylabel("scenario: OMPL's row above, ours below")  # reader r32g: the offset is no second variable
     ax.tick_params(labelsize=POINTS)
     held = f", seed {seed}" if seed is not None else ""
     ax.set_title(f"Median time a query by planner{held}: further left is faster", fontsize=10)
@@ -117,7 +117,8 @@ def _ms(value: float) -> str:
 def _in_words(medians: dict[str, dict[str, float]], batched: dict[str, dict[str, float]] | None, held: str) -> str:
     """The figure in words: per scenario, the fastest and the slowest planner and their times."""
     text = f"Dot chart of each planner's median time a query in milliseconds on a log axis{held}, a row a scenario"
-    text += "; hollow dots: OMPL's planners with their checks batched. " if batched else ". "
+    text += ", OMPL's planners a little above the scenario's name and ours a little below"
+    text += "; hollow dots: OMPL's planners with their checks batched, estimated, not timed. " if batched else ". "
     for s, row in medians.items():
         fast, slow = min(row, key=row.get), max(row, key=row.get)  # type: ignore[arg-type]
         text += f"{s}: fastest {fast}, {_ms(row[fast])} ms; slowest {slow}, {_ms(row[slow])} ms. "
