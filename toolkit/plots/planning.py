@@ -174,23 +174,24 @@ def _samples_part(robot, name: str, Q: np.ndarray, blocked: np.ndarray) -> Part:
 OVERLAP = 0.015  # two markers closer than this share of the C-space's diagonal are drawn as one (review r24a)
 
 
-def overlapping(points: np.ndarray, within: float) -> list[tuple[np.ndarray, int]]:
-    """Groups of ``points (N, 2)`` closer than ``within`` to one another, each as (its first point, how many): the
-    markers a reader would count as one (review r24a: 4 crosses seen beside the legend's "rejected: 5")."""
-    left, groups = list(range(len(points))), []
+def merged(points: np.ndarray, within: float) -> tuple[np.ndarray, list[int]]:
+    """``points (N, 2)`` with each group closer than ``within`` to its first point drawn once, at the group's centre:
+    the points to draw and how many each stands for (review r24a: 4 crosses seen beside the legend's "rejected: 5";
+    review r32d: a "2×" beside two crosses still apart read as 3)."""
+    left, shown, counts = list(range(len(points))), [], []
     while left:
         first = left.pop(0)
         near = [i for i in left if np.linalg.norm(points[i] - points[first]) < within]
         left = [i for i in left if i not in near]
-        if near:
-            groups.append((points[first], 1 + len(near)))
-    return groups
+        shown.append(points[[first, *near]].mean(axis=0))
+        counts.append(1 + len(near))
+    return np.array(shown).reshape(-1, 2), counts
 
 
 def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) -> Figure:
     """Algorithm 1, lines 2-3: the attempts ``S (N, 2)``, the ones a checker accepts (``accepted (N,)`` bool: S'),
     and among those the ones the exact checker rejects (the dangerous mistakes: large X in the invalid colour);
-    markers that lie on one another (:func:`overlapping`) carry their count ("2×")."""
+    markers that lie on one another are drawn once (:func:`merged`) with their count ("2×")."""
     truly_valid = exact.are_valid(S)
     fig = Figure(figsize=(4.6, 5.4), layout="constrained")
     ax = fig.subplots()
@@ -204,10 +205,13 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
             "S', truly in collision",
         ),
     ]
+    within = OVERLAP * float(np.linalg.norm(exact.robot.upper - exact.robot.lower))
     for mask, style, label in groups:  # whole at the edges of the C-space too
-        ax.scatter(S[mask, 0], S[mask, 1], label=f"{label}: {mask.sum()}", clip_on=False, **style)
-        within = OVERLAP * float(np.linalg.norm(exact.robot.upper - exact.robot.lower))
-        for (x, y), n in overlapping(S[mask], within):
+        shown, counts = merged(S[mask], within)  # markers on one another drawn once, with their count
+        ax.scatter(shown[:, 0], shown[:, 1], label=f"{label}: {mask.sum()}", clip_on=False, **style)
+        for (x, y), n in zip(shown, counts):
+            if n == 1:
+                continue
             ax.annotate(
                 f"{n}×",
                 (x, y),
