@@ -207,9 +207,9 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
     ]
     within = OVERLAP * float(np.linalg.norm(exact.robot.upper - exact.robot.lower))
     for mask, style, label in groups:  # whole at the edges of the C-space too
-        shown, counts = merged(S[mask], within)  # markers on one another drawn once, with their count
+        shown, many = merged(S[mask], within)  # markers on one another drawn once, with their count
         ax.scatter(shown[:, 0], shown[:, 1], label=f"{label}: {mask.sum()}", clip_on=False, **style)
-        for (x, y), n in zip(shown, counts):
+        for (x, y), n in zip(shown, many):
             if n == 1:
                 continue
             ax.annotate(
