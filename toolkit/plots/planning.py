@@ -1,11 +1,10 @@
 """Figures of PRM with and without prediction (paper §III-B, Algorithm 1; §V, Table 3): notebook 04.
 
-The 2D figures draw the point robot's configuration space, where a configuration is
-the robot's centre (x, y): C-obstacles (the blocks grown by the robot's half-size, as
-the exact checker sees them) are shaded, the blocks themselves outlined, and the
-bounds of the centre dotted (half a robot inside the region). Samples,
-roadmaps and paths are drawn over it (the timings: :mod:`toolkit.plots.timings`). Every function returns a
-matplotlib ``Figure`` and never calls ``show()``.
+The 2D figures draw the point robot's configuration space, where a configuration is the robot's centre (x, y):
+C-obstacles (the blocks grown by the robot's half-size, as the exact checker sees them) are shaded, the blocks
+themselves outlined, and the bounds of the centre dotted (half a robot inside the region). Samples, roadmaps and paths
+are drawn over it (the timings: :mod:`toolkit.plots.timings`). Every function returns a matplotlib ``Figure`` and
+never calls ``show()``.
 """
 
 from __future__ import annotations
@@ -172,12 +171,12 @@ def _samples_part(robot, name: str, Q: np.ndarray, blocked: np.ndarray) -> Part:
 
 
 OVERLAP = 0.015  # two markers closer than this share of the C-space's diagonal are drawn as one (review r24a)
+SIDES = ((1, 1), (-1, 1), (1, -1), (-1, -1))  # where a "2×" may sit beside its marker, up and right first
 
 
 def merged(points: np.ndarray, within: float) -> tuple[np.ndarray, list[int]]:
-    """``points (N, 2)`` with each group closer than ``within`` to its first point drawn once, at the group's centre:
-    the points to draw and how many each stands for (review r24a: 4 crosses seen beside the legend's "rejected: 5";
-    review r32d: a "2×" beside two crosses still apart read as 3)."""
+    """``points (N, 2)``, each group closer than ``within`` to its first point once, at its centre, and how many each
+    stands for (r24a: 4 crosses seen beside the legend's "rejected: 5"; r32d: "2×" beside two crosses read as 3)."""
     left, shown, counts = list(range(len(points))), [], []
     while left:
         first = left.pop(0)
@@ -209,16 +208,17 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
     for mask, style, label in groups:  # whole at the edges of the C-space too
         shown, many = merged(S[mask], within)  # markers on one another drawn once, with their count
         ax.scatter(shown[:, 0], shown[:, 1], label=f"{label}: {mask.sum()}", clip_on=False, **style)
-        for (x, y), n in zip(shown, many):
-            if n == 1:
-                continue
-            ax.annotate(
+        for (x, y), n in ((p, n) for p, n in zip(shown, many) if n > 1):
+            others = S[np.linalg.norm(S - (x, y), axis=1) > within]  # the markers it must not sit beside
+            far = [min(6 * within, *np.linalg.norm(others - (x, y) - 3 * within * np.array(d), axis=1)) for d in SIDES]
+            dx, dy = SIDES[int(np.argmax(far))]  # the first side as far as any: up and right where all are free
+            ax.annotate(  # beside its marker, on the side farthest from any other (reviews r25a, r28d, r32d)
                 f"{n}×",
                 (x, y),
-                xytext=(6, 6),  # above and right of its markers (reviews r25a, r28d: it sat on them and a block's edge)
+                xytext=(6 * dx, 6 * dy),
                 textcoords="offset points",
-                ha="left",
-                va="bottom",
+                ha=("left" if dx > 0 else "right"),
+                va=("bottom" if dy > 0 else "top"),
                 fontsize=9,
                 path_effects=halo(1.0, ("free",)),
             )
