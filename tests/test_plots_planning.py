@@ -112,12 +112,12 @@ def test_sample_sets_counts_markers_that_lie_on_one_another(exact):
     assert counts == [2, 1]
     S = np.array([[20.0, 20.0], [20.1, 20.05], [5.0, 25.0]])
     ax = planning.sample_sets(exact, S, np.zeros(3, bool)).axes[0]
-    assert [t.get_text() for t in ax.texts] == ["2×"]
-    assert len(ax.collections[0].get_offsets()) == 2  # two crosses drawn: one of them the "2×"
+    assert [t.get_text() for t in ax.texts] == ["(2)"]
+    assert len(ax.collections[0].get_offsets()) == 2  # two crosses drawn: one of them the "(2)"
     assert ax.texts[0].xyann == (6, 6)  # up and right, where no other marker is
     beside = np.vstack([S, [[21.5, 21.2]]])  # a third cross up and right of the two: the count moves aside
     ax = planning.sample_sets(exact, beside, np.zeros(4, bool)).axes[0]
-    assert [t.get_text() for t in ax.texts] == ["2×"] and ax.texts[0].xyann != (6, 6)
+    assert [t.get_text() for t in ax.texts] == ["(2)"] and ax.texts[0].xyann != (6, 6)
 
 
 def a_repair_step() -> PlanStep:

@@ -171,7 +171,7 @@ def _samples_part(robot, name: str, Q: np.ndarray, blocked: np.ndarray) -> Part:
 
 
 OVERLAP = 0.015  # two markers closer than this share of the C-space's diagonal are drawn as one (review r24a)
-SIDES = ((1, 1), (-1, 1), (1, -1), (-1, -1))  # where a "2×" may sit beside its marker, up and right first
+SIDES = ((1, 1), (-1, 1), (1, -1), (-1, -1))  # where a count "(2)" may sit beside its marker, up and right first
 
 
 def merged(points: np.ndarray, within: float) -> tuple[np.ndarray, list[int]]:
@@ -190,7 +190,7 @@ def merged(points: np.ndarray, within: float) -> tuple[np.ndarray, list[int]]:
 def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) -> Figure:
     """Algorithm 1, lines 2-3: the attempts ``S (N, 2)``, the ones a checker accepts (``accepted (N,)`` bool: S'),
     and among those the ones the exact checker rejects (the dangerous mistakes: large X in the invalid colour);
-    markers that lie on one another are drawn once (:func:`merged`) with their count ("2×")."""
+    markers on one another are drawn once (:func:`merged`) with their count, "(2)" (r32d: "2×" read as a cross more)."""
     truly_valid = exact.are_valid(S)
     fig = Figure(figsize=(4.6, 5.4), layout="constrained")
     ax = fig.subplots()
@@ -213,7 +213,7 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
             far = [min(6 * within, *np.linalg.norm(others - (x, y) - 3 * within * np.array(d), axis=1)) for d in SIDES]
             dx, dy = SIDES[int(np.argmax(far))]  # the first side as far as any: up and right where all are free
             ax.annotate(  # beside its marker, on the side farthest from any other (reviews r25a, r28d, r32d)
-                f"{n}×",
+                f"({n})",
                 (x, y),
                 xytext=(6 * dx, 6 * dy),
                 textcoords="offset points",
