@@ -484,10 +484,13 @@ def chapter_04(nb) -> list[str]:
     planned = [rows for header, rows in found if "with / without: verdict (median; middle half)" in header]
     if not planned or {r[0] for r in planned[0]} != {"2DS", "3DC-7"}:
         problems.append("04: no verdict table for 2DS and 3DC-7 (findings.planning_table)")
+    moved = MOVED in " ".join(texts(nb))  # section 5's row says "can't tell" where the line under it says so
     for header, rows in found:
         for row in rows:
             for j, cell in enumerate(row):
                 allowed, said = _checked_verdicts(header, row, j), VERDICT.fullmatch(cell)
+                if allowed is not None and moved and row[0].startswith(EAGER_ROW):
+                    allowed |= {findings.UNSURE}
                 if allowed is not None and said is not None and said.group(1) not in allowed:
                     problems.append(
                         f"04: {row[0]} {row[1]}: says '{cell}', its numbers say '{' or '.join(sorted(allowed))}'"
@@ -689,6 +692,7 @@ def _sampling_in_algorithm_1() -> list[str]:
 
 
 EAGER_ROW = "3DC-7, Algorithm 1"  # section 5's planning row: the paper's claim with an accurate network
+MOVED = "so the machine's speed moved between the two modes' runs"  # findings.per_point_sentence, where it did
 CLAIM = re.compile(
     r"inside the paper's Algorithm 1, 3DC-7, uniform sampler, (\d+) quer(?:y|ies): time with / without "
     r"prediction ([\d.]+) \(middle half ([\d.]+)–([\d.]+)\), (prediction saved time|prediction cost time|"
@@ -720,7 +724,7 @@ def _paper_claim(nb, found: list[tuple[list[str], list[list[str]]]]) -> list[str
     if verdict is None:
         return [f"04: section 5's verdict cell {rows[0][2]!r} is not a verdict"]
     words = {findings.SAVES: "prediction saved time", findings.COSTS: "prediction cost time"}
-    moved = "so the machine's speed moved between the two modes' runs" in " ".join(texts(nb))  # per_point_sentence
+    moved = MOVED in " ".join(texts(nb))  # per_point_sentence
     expected = (
         rows[0][-1],
         *re.findall(r"[\d.]+", verdict.group(2)),
