@@ -34,6 +34,19 @@ def test_answer_ratios_rings_our_means_around_our_medians():
     assert labels.count(MEAN_WORDS) == 1
 
 
+def test_a_means_bar_lies_under_every_marker_and_shows_on_both_sides_of_one():
+    """Review r32d: at 3DC-7 G the paper's square (1.09) and our circle's mean bar (1.08) met, and the bar, drawn over
+    the square, hid which mark was which. Every marker is drawn whole over the bars, which are wider than a marker."""
+    from toolkit.plots import answer
+
+    fig = answer_ratios(checker_scope.compact(), tie=findings.TIE, means=checker_scope.our_means())
+    ax = fig.axes[0]
+    bars = [c for c in ax.collections if len(c.get_offsets())]
+    marks = [line for line in ax.lines if line.get_marker() in answer.MARKERS]
+    assert all(bar.get_zorder() < line.get_zorder() for bar in bars for line in marks)
+    assert answer.BAR**0.5 > max(line.get_markersize() for line in marks) + 4  # 2 points a side at least
+
+
 def test_cost_table_splits_the_cells_where_prediction_cost_25_percent_or_more():
     cells = costs.dear_cells()
     assert {f"{c.scenario} {c.sampler}" for c in cells} == {"3DC-7 OB", "3DC-7 BT", "3DC-9 BT", "3DO OB"}

@@ -90,9 +90,10 @@ def test_sample_sets_marks_accepted_samples_that_are_truly_in_collision(exact, r
     truth = exact.are_valid(S)
     ax = planning.sample_sets(exact, S, accepted).axes[0]
     rejected, kept, wrong = ax.collections
-    np.testing.assert_array_equal(rejected.get_offsets(), S[~accepted])
-    np.testing.assert_array_equal(kept.get_offsets(), S[accepted & truth])
-    np.testing.assert_array_equal(wrong.get_offsets(), S[accepted & ~truth])
+    within = planning.OVERLAP * float(np.linalg.norm(SCENARIO.robot.upper - SCENARIO.robot.lower))
+    for drawn, mask in ((rejected, ~accepted), (kept, accepted & truth), (wrong, accepted & ~truth)):
+        np.testing.assert_array_equal(drawn.get_offsets(), planning.merged(S[mask], within)[0])
+        assert sum(planning.merged(S[mask], within)[1]) == mask.sum()
     assert len(S[accepted & ~truth]) > 0 and is_color(wrong.get_facecolors(), planning.REPAIR_COLOR).all()
     fig = ax.figure
     assert f"S', truly in collision: {(accepted & ~truth).sum()}" in [t.get_text() for t in fig.legends[0].texts]
@@ -104,13 +105,19 @@ def test_sample_sets_marks_accepted_samples_that_are_truly_in_collision(exact, r
 
 
 def test_sample_sets_counts_markers_that_lie_on_one_another(exact):
-    """Review r24a: two rejected attempts at one spot read as one cross beside the legend's count."""
-    assert [(list(p), n) for p, n in planning.overlapping(np.array([[1.0, 1.0], [5.0, 5.0], [1.1, 1.0]]), 0.5)] == [
-        ([1.0, 1.0], 2)
-    ]
+    """Review r24a: two rejected attempts at one spot read as one cross beside the legend's count; review r32d: a "2×"
+    beside two crosses still apart read as three, so the two are drawn once, at their centre, with their count."""
+    shown, counts = planning.merged(np.array([[1.0, 1.0], [5.0, 5.0], [1.1, 1.0]]), 0.5)
+    np.testing.assert_allclose(shown, [[1.05, 1.0], [5.0, 5.0]])
+    assert counts == [2, 1]
     S = np.array([[20.0, 20.0], [20.1, 20.05], [5.0, 25.0]])
     ax = planning.sample_sets(exact, S, np.zeros(3, bool)).axes[0]
-    assert [t.get_text() for t in ax.texts] == ["2×"]
+    assert [t.get_text() for t in ax.texts] == ["(2)"]
+    assert len(ax.collections[0].get_offsets()) == 2  # two crosses drawn: one of them the "(2)"
+    assert ax.texts[0].xyann == (6, 6)  # up and right, where no other marker is
+    beside = np.vstack([S, [[21.5, 21.2]]])  # a third cross up and right of the two: the count moves aside
+    ax = planning.sample_sets(exact, beside, np.zeros(4, bool)).axes[0]
+    assert [t.get_text() for t in ax.texts] == ["(2)"] and ax.texts[0].xyann != (6, 6)
 
 
 def a_repair_step() -> PlanStep:

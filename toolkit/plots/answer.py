@@ -24,7 +24,8 @@ from toolkit.plots.timings import band_words, log_ticks
 MARKERS = ("s", "o", "^")  # a series' marker, beside its colour
 SPREAD = 0.28  # a series' offset from its sampler's tick: a sampler's three series side by side, nearer each other
 # than a neighbour's (review r29d: at 0.32 a triangle sat nearer the next sampler's square), a faint line between
-MEAN_WORDS = "bars, in each series' colour: our ratios of mean times (Table 3's statistic)"
+MEAN_WORDS = "short level bars, in each series' colour: our ratios of mean times (Table 3's statistic)"
+BAR = 190  # a mean's bar, its scatter size (points squared): wider than a marker, so it shows on both sides of one
 
 
 def answer_ratios(
@@ -166,9 +167,11 @@ def _rings(ax, means: dict[str, dict[str, float]], scenarios: list[str], series:
                     y.append(ratios[s])
                     colors.append(series_style(k)["color"])
     if x:
-        ax.scatter(x, y, s=190, marker="_", color=colors, linewidths=2.6, zorder=4)  # reader r31d: rings hid dots
+        # under the markers (reader r32d: a bar over the next series' square hid which mark was which), each marker
+        # whole, the bar's ends on both sides of it (reader r31d: rings hid dots)
+        ax.scatter(x, y, s=BAR, marker="_", color=colors, linewidths=2.6, zorder=2.5)
     handles = [
-        Line2D([], [], linestyle="none", marker="_", markersize=13, markeredgewidth=2.6, markeredgecolor=c)
+        Line2D([], [], linestyle="none", marker="_", markersize=BAR**0.5, markeredgewidth=2.6, markeredgecolor=c)
         for c in dict.fromkeys(colors)
     ]
     return y, handles

@@ -1,11 +1,10 @@
 """Figures of PRM with and without prediction (paper §III-B, Algorithm 1; §V, Table 3): notebook 04.
 
-The 2D figures draw the point robot's configuration space, where a configuration is
-the robot's centre (x, y): C-obstacles (the blocks grown by the robot's half-size, as
-the exact checker sees them) are shaded, the blocks themselves outlined, and the
-bounds of the centre dotted (half a robot inside the region). Samples,
-roadmaps and paths are drawn over it (the timings: :mod:`toolkit.plots.timings`). Every function returns a
-matplotlib ``Figure`` and never calls ``show()``.
+The 2D figures draw the point robot's configuration space, where a configuration is the robot's centre (x, y):
+C-obstacles (the blocks grown by the robot's half-size, as the exact checker sees them) are shaded, the blocks
+themselves outlined, and the bounds of the centre dotted (half a robot inside the region). Samples, roadmaps and paths
+are drawn over it (the timings: :mod:`toolkit.plots.timings`). Every function returns a matplotlib ``Figure`` and
+never calls ``show()``.
 """
 
 from __future__ import annotations
@@ -172,25 +171,26 @@ def _samples_part(robot, name: str, Q: np.ndarray, blocked: np.ndarray) -> Part:
 
 
 OVERLAP = 0.015  # two markers closer than this share of the C-space's diagonal are drawn as one (review r24a)
+SIDES = ((1, 1), (-1, 1), (1, -1), (-1, -1))  # where a count "(2)" may sit beside its marker, up and right first
 
 
-def overlapping(points: np.ndarray, within: float) -> list[tuple[np.ndarray, int]]:
-    """Groups of ``points (N, 2)`` closer than ``within`` to one another, each as (its first point, how many): the
-    markers a reader would count as one (review r24a: 4 crosses seen beside the legend's "rejected: 5")."""
-    left, groups = list(range(len(points))), []
+def merged(points: np.ndarray, within: float) -> tuple[np.ndarray, list[int]]:
+    """``points (N, 2)``, each group closer than ``within`` to its first point once, at its centre, and how many each
+    stands for (r24a: 4 crosses seen beside the legend's "rejected: 5"; r32d: "2×" beside two crosses read as 3)."""
+    left, shown, counts = list(range(len(points))), [], []
     while left:
         first = left.pop(0)
         near = [i for i in left if np.linalg.norm(points[i] - points[first]) < within]
         left = [i for i in left if i not in near]
-        if near:
-            groups.append((points[first], 1 + len(near)))
-    return groups
+        shown.append(points[[first, *near]].mean(axis=0))
+        counts.append(1 + len(near))
+    return np.array(shown).reshape(-1, 2), counts
 
 
 def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) -> Figure:
     """Algorithm 1, lines 2-3: the attempts ``S (N, 2)``, the ones a checker accepts (``accepted (N,)`` bool: S'),
     and among those the ones the exact checker rejects (the dangerous mistakes: large X in the invalid colour);
-    markers that lie on one another (:func:`overlapping`) carry their count ("2×")."""
+    markers on one another are drawn once (:func:`merged`) with their count, "(2)" (r32d: "2×" read as a cross more)."""
     truly_valid = exact.are_valid(S)
     fig = Figure(figsize=(4.6, 5.4), layout="constrained")
     ax = fig.subplots()
@@ -204,17 +204,21 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
             "S', truly in collision",
         ),
     ]
+    within = OVERLAP * float(np.linalg.norm(exact.robot.upper - exact.robot.lower))
     for mask, style, label in groups:  # whole at the edges of the C-space too
-        ax.scatter(S[mask, 0], S[mask, 1], label=f"{label}: {mask.sum()}", clip_on=False, **style)
-        within = OVERLAP * float(np.linalg.norm(exact.robot.upper - exact.robot.lower))
-        for (x, y), n in overlapping(S[mask], within):
-            ax.annotate(
-                f"{n}×",
+        shown, many = merged(S[mask], within)  # markers on one another drawn once, with their count
+        ax.scatter(shown[:, 0], shown[:, 1], label=f"{label}: {mask.sum()}", clip_on=False, **style)
+        for (x, y), n in ((p, n) for p, n in zip(shown, many) if n > 1):
+            others = S[np.linalg.norm(S - (x, y), axis=1) > within]  # the markers it must not sit beside
+            far = [min(6 * within, *np.linalg.norm(others - (x, y) - 3 * within * np.array(d), axis=1)) for d in SIDES]
+            dx, dy = SIDES[int(np.argmax(far))]  # the first side as far as any: up and right where all are free
+            ax.annotate(  # beside its marker, on the side farthest from any other (reviews r25a, r28d, r32d)
+                f"({n})",
                 (x, y),
-                xytext=(6, 6),  # above and right of its markers (reviews r25a, r28d: it sat on them and a block's edge)
+                xytext=(6 * dx, 6 * dy),
                 textcoords="offset points",
-                ha="left",
-                va="bottom",
+                ha=("left" if dx > 0 else "right"),
+                va=("bottom" if dy > 0 else "top"),
                 fontsize=9,
                 path_effects=halo(1.0, ("free",)),
             )

@@ -13,6 +13,7 @@
 
 from __future__ import annotations
 
+import os
 from collections import Counter
 from collections.abc import Mapping
 
@@ -158,33 +159,75 @@ def other_line(records: Mapping[str, list[dict]]) -> str:
 
 def answer(tables: Tables | None = None) -> str:
     """Chapter 04's answer in numbers, three short bullets read from ``docs/results.md`` (100 recorded queries a
-    scenario; review r30d: the paper's count first, then ours with each checker by the median query; why, in one
-    number; and what prediction adds with the fast checker). The counts by mean times, the paper's statistic, are in
-    :func:`full_answer`, folded in section 6."""
+    scenario; review r32d: like for like first, the paper's count and ours by Table 3's statistic, the ratio of mean
+    times, then ours by the median query; why, in one number; and what prediction adds with the fast checker). The
+    ties, the costs and the noise edge are section 6's (:func:`edge_line`, :func:`full_answer`)."""
     facts = checker_scope.slow_checker(tables)
     fast, slow = _counts(recorded.ALGORITHM_1, tables), facts.total_verdicts()
-    edge = costs.at_edge(recorded.ALGORITHM_1, tables)[COSTS]
+    fast_means, slow_means = (_counts(p, tables, means=True) for p in (recorded.ALGORITHM_1, checker_scope.SLOW))
     papers = sum(time_verdict(1 - saved) == SAVES for saved in facts.papers_totals)
     return (
-        f"- The paper's Table 3 saves time in {papers} of the {len(facts.own)} scenario–sampler pairs. By the median "
-        f"query, our accurate network, inside the same Algorithm 1, saved time in {fast[SAVES] or 'none'} of the "
-        f"{fast.total()} with our fast exact checker ({_rest(fast)}{_edge(edge, COSTS)}) and in "
-        f"{slow[SAVES] or 'none'} with python-fcl on both sides ({_rest(slow)}{_edge(facts.edge, SAVES)}).\n"
+        f"- By Table 3's own statistic, the ratio of mean times, the paper saves time in {papers} of its "
+        f"{len(facts.own)} scenario–sampler pairs; our accurate network, inside the same Algorithm 1, in "
+        f"{fast_means[SAVES] or 'none'} with our fast exact checker and {slow_means[SAVES] or 'none'} with python-fcl "
+        f"on both sides. By the median query it saved time in {fast[SAVES] or 'none'} of the {fast.total()} with our "
+        f"fast checker and in {slow[SAVES] or 'none'} with python-fcl (section 6 counts the ties and the costs).\n"
         f"- **Why**: prediction replaces only the checks of samples; without it sampling took "
         f"{_span(costs.sampling_shares(recorded.ALGORITHM_1, tables))} % of a mean query with our fast checker "
         f"({_span(costs.sampling_shares(checker_scope.SLOW, tables))} % with python-fcl, where prediction made it "
         f"{checker_scope.sampling_words(facts)}; the paper's Table 3: {checker_scope.percents(facts.papers_sampling)}"
-        "). The rest is exact checks along the roadmap's edges, which the network never makes and, accurate, changes "
-        "only slightly (section 5 counts both).\n"
+        "). The rest is exact edge checks, which Algorithm 1 never asks the network about (sections 2–3's lazy "
+        "planner does) and an accurate network changes little (section 5).\n"
         f"- With our fast checker prediction also adds time: {_adds(tables)}."
     )
 
 
-def _edge(count: int, verdict: str) -> str:
-    """``", 4 of those at the noise edge"``: how many of the costs (or savings) lie at the results page's noise edge
-    (:func:`toolkit.teaching.costs.at_edge`); empty for none."""
-    what = "those" if verdict == COSTS else "the savings"
-    return f", {count} of {what} at the noise edge" if count else ""
+def edge_line(tables: Tables | None = None) -> str:
+    """Section 6's noise edge in numbers (review r32d: the page never printed it): how far timing one computation
+    twice moved a median (:func:`toolkit.teaching.costs.timing_reach`), the band twice that spans, and the cells of
+    the answer's table whose saving or cost lies inside it (:func:`toolkit.teaching.costs.at_edge`'s rule)."""
+    reach = costs.noise_edge(tables)
+    named = []
+    for preset, who in ((recorded.ALGORITHM_1, "our fast checker"), (checker_scope.SLOW, "python-fcl")):
+        cells = [
+            f"{checker_scope.NAMES[key]} {s} {median:.2f}"
+            for key, by_sampler in costs.middle_halves(preset, tables).items()
+            for s, (median, _, _) in by_sampler.items()
+            if time_verdict(median) in (COSTS, SAVES) and abs(median - 1) < reach
+        ]
+        count = costs.at_edge(preset, tables)
+        said = f"{who}, {count[COSTS]} of its costs and {count[SAVES]} of its savings"
+        named.append(said + (f": {', '.join(cells)}" if cells else ""))
+    return (
+        "**At the noise edge.** Timing one computation twice moved a median ratio up to "
+        f"{costs.timing_reach(tables):.2f} from 1 (`docs/results.md`, under its Figure 1), so a saving or a cost "
+        f"between {1 - reach:.2f} and {1 + reach:.2f}, twice that reach, is no clear evidence either way. In the "
+        "table above these are, for " + "; for ".join(named) + "."
+    )
+
+
+def means_apart(tables: Tables | None = None) -> str:
+    """Of the pairs where the ratio of mean times saves (the answer figure's bars below the band), those where the
+    median query did not save and those where it did (review r32d: "while the median query did not save" was false
+    for two of them)."""
+    cells: dict[bool, dict[str, list[str]]] = {False: {}, True: {}}
+    for preset, who in ((recorded.ALGORITHM_1, "fast checker"), (checker_scope.SLOW, "python-fcl")):
+        medians = costs.middle_halves(preset, tables)
+        for key in medians:
+            for s, saved in recorded.improvements(preset, key, "total", tables).items():
+                if time_verdict(1 - saved) == SAVES:
+                    both = time_verdict(medians[key][s][0]) == SAVES
+                    cells[both].setdefault(who, []).append(f"{checker_scope.NAMES[key]} {s}")
+
+    def named(group: dict[str, list[str]]) -> str:
+        count = sum(len(c) for c in group.values())
+        return f"in {count or 'none'}" + (
+            " (" + "; ".join(f"{w} {', '.join(c)}" for w, c in group.items()) + ")" if count else ""
+        )
+
+    total = sum(len(c) for group in cells.values() for c in group.values())
+    said = f"of the {total} pairs where a mean saved, the median query did not {named(cells[False])}"
+    return f"{said} and did {named(cells[True])}"
 
 
 def _span(values: list[float]) -> str:
@@ -248,8 +291,8 @@ def full_answer(tables: Tables | None = None) -> str:
         f"{checker_scope.slow_sentence(facts, ranges=False)} {checker_scope.like_for_like(facts)}\n\n"
         f"By mean times, the paper's statistic, prediction saved time in {fast[SAVES] or 'none'} of the "
         f"{fast.total()} pairs with our fast checker ({_rest(fast)}) and in {slow[SAVES] or 'none'} with python-fcl "
-        f"on both sides ({_rest(slow)}): a few very short queries pull a mean down (*The statistic*, below), so a "
-        "mean can save where the median query does not."
+        f"on both sides ({_rest(slow)}). A mean follows the few slowest queries (*The statistic*, below): where those "
+        f"saved, a mean can save while most queries did not; {means_apart(tables)}."
     )
 
 
@@ -319,4 +362,13 @@ def answer_figure(tables: Tables | None = None) -> Figure:
         spans=checker_scope.spans(tables),
         means=checker_scope.our_means(tables),
         names=SERIES,
+    )
+
+
+def load_line() -> str:
+    """The machine's load as a live table was timed (review r32d: the load was printed only at the end, and section
+    3's and section 5's live verdicts come from wall-clock times): the last minute's load average and the cores."""
+    return (
+        f"Timed at a load average of {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (the last minute's, as this "
+        "table was finished)."
     )
