@@ -250,9 +250,13 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
     darker = ", ".join(  # reader r25b: "(the robot: 0)" was unreadable; "(0 blocks near the robot)"
         f"{seen[label][1]} block{'s' * (seen[label][1] != 1)} near {named[label]}" for label in seen
     )
-    text += "; the robot seen across the plane it spreads in, its links opaque, its joints white dots, "
-    text += f"the blocks within {NEAR} of a link darker ({darker})"
-    return text + "; then the robot close up among the blocks near it: " + "; ".join(said) + ".", parts
+    seen_as = "the robot seen across the plane it spreads in, its links opaque, its joints white dots, "
+    seen_as += f"the blocks within {NEAR} of a link darker ({darker})"
+    close = "the robot close up among the blocks near it: " + "; ".join(said)
+    if len(poses) == 1:  # reader r32e: a single pose's close-up stands above the overview, and is told first
+        head, _, whole = text.partition(" as a still: ")
+        return f"{head} as a still: first {close}, {seen_as}; then {whole}.", parts
+    return f"{text}; {seen_as}; then {close}.", parts
 
 
 SCENE_NAMES = {  # robot -> the scenario and the robot as the pages name them (reader r28e: not "3do", "youbot")
