@@ -385,12 +385,14 @@ def _per_frame(values, frames: int, name: str) -> np.ndarray | None:
 
 
 def _frame_title(index: int, frames: int, series: dict, threshold: float) -> str:
-    parts = [f"frame {index} of 0-{frames - 1}"]
+    """The title, such as "frame 48/89: valid (exact checker), clearance ≥ 0.028, P(valid) 0.92 ≥ threshold 0.57" (reader r32e: the
+    old title wrapped inside its threshold's brackets)."""
+    parts = []
     if series["valid"] is not None:
         parts.append("valid (exact checker)" if series["valid"][index] else "IN COLLISION (exact checker)")
     if series["clearance"] is not None:
         parts.append(f"clearance ≥ {series['clearance'][index]:.3f}")
     if series["probability"] is not None:
         p = series["probability"][index]
-        parts.append(f"P(valid) = {p:.2f} (threshold {threshold:.2f}: {'valid' if p >= threshold else 'colliding'})")
-    return ", ".join(parts)
+        parts.append(f"P(valid) {p:.2f} {'≥' if p >= threshold else '<'} threshold {threshold:.2f}")
+    return f"frame {index}/{frames - 1}" + (": " + ", ".join(parts) if parts else "")
