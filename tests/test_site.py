@@ -463,7 +463,7 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
         f"Our network saved a query's time with python-fcl in {len(clear)} of 16 cells clearly "
         f"({clear[0]}, {clear[1]}), a third inside the noise edge ({edge[0]}). With the compiled checker it "
         f"saved in 0. Timing alone moved this median to {floor[0]:.2f}–{floor[1]:.2f}, so the noise edge is 1 ± "
-        f"twice its larger drift ({reach:.2f}), {1 - NOISE_EDGE * reach:.2f}–{1 + NOISE_EDGE * reach:.2f}."
+        f"twice the larger reach from 1 ({reach:.2f}), {1 - NOISE_EDGE * reach:.2f}–{1 + NOISE_EDGE * reach:.2f}."
     ) in answer
     assert reach == max(1 - floor[0], floor[1] - 1) and NOISE_EDGE == 2
     # reader r30e, item 3: the saving by means larger than its sampling cut could give, said with the explanation
