@@ -259,7 +259,7 @@ def _more(moved: float) -> str:
         + "\n"
         + _noise_row("3DC-7, `strong` network in Algorithm 1, ratio of the two medians", of_medians, moved)
         + "\n\nThat last row is not a statistic of the answer at the top (each query's own ratio, the ratio of the "
-        "means): within noise, it neither adds a saving to the answer's nor takes one away."
+        "means), and a ratio in it within noise, below 1 or above, is no saving or cost beside the answer's."
         + '\n\nOn 3DC-7 the `paper` preset\'s MLP answers "valid" to every sample, so Algorithm 1 skips the sample '
         'checks: that, not learning, is its one saving by means. On 3DC-9 and 3DO the same recipe answers "invalid" '
         "to every sample; there its savings by means come from the queries whose straight edge from start to goal is "
