@@ -385,8 +385,8 @@ def _per_frame(values, frames: int, name: str) -> np.ndarray | None:
 
 
 def _frame_title(index: int, frames: int, series: dict, threshold: float) -> str:
-    """The title, such as "frame 48/89: valid (exact checker), clearance ≥ 0.028, P(valid) 0.92 ≥ threshold 0.57" (reader r32e: the
-    old title wrapped inside its threshold's brackets)."""
+    """The title: "frame 48/89: valid (exact checker), clearance ≥ 0.028, P(valid) 0.92 ≥ threshold 0.57" (reader
+    r32e: the old title wrapped inside its threshold's brackets)."""
     parts = []
     if series["valid"] is not None:
         parts.append("valid (exact checker)" if series["valid"][index] else "IN COLLISION (exact checker)")
