@@ -427,6 +427,7 @@ def test_a_saved_scene_carries_a_still_of_itself_shown_until_its_view_has_been_o
     )
     assert f"{valid} samples valid (circles), {40 - valid} samples in collision (diamonds)" in alt
     assert "the robot close up among the blocks near it: the robot, valid" in alt
+    assert alt.index("as a still: first the robot close up") < alt.index("; then the whole workspace")  # r32e: as drawn
     assert base64.b64decode(found(r'base64,([A-Za-z0-9+/=]+)"', still))[:4] == b"\x89PNG"
     script = document[document.index(still) + len(still) :]
     assert 'getContext("webgl2") || canvas.getContext("webgl")' in script and ".hidden = false" in script

@@ -250,9 +250,13 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
     darker = ", ".join(  # reader r25b: "(the robot: 0)" was unreadable; "(0 blocks near the robot)"
         f"{seen[label][1]} block{'s' * (seen[label][1] != 1)} near {named[label]}" for label in seen
     )
-    text += "; the robot seen across the plane it spreads in, its links opaque, its joints white dots, "
-    text += f"the blocks within {NEAR} of a link darker ({darker})"
-    return text + "; then the robot close up among the blocks near it: " + "; ".join(said) + ".", parts
+    seen_as = "the robot seen across the plane it spreads in, its links opaque, its joints white dots, "
+    seen_as += f"the blocks within {NEAR} of a link darker ({darker})"
+    close = "the robot close up among the blocks near it: " + "; ".join(said)
+    if len(poses) == 1:  # reader r32e: a single pose's close-up stands above the overview, and is told first
+        head, _, whole = text.partition(" as a still: ")
+        return f"{head} as a still: first {close}, {seen_as}; then {whole}.", parts
+    return f"{text}; {seen_as}; then {close}.", parts
 
 
 SCENE_NAMES = {  # robot -> the scenario and the robot as the pages name them (reader r28e: not "3do", "youbot")
@@ -381,12 +385,14 @@ def _per_frame(values, frames: int, name: str) -> np.ndarray | None:
 
 
 def _frame_title(index: int, frames: int, series: dict, threshold: float) -> str:
-    parts = [f"frame {index} of 0-{frames - 1}"]
+    """The title: "frame 48/89: valid (exact checker), clearance ≥ 0.028, P(valid) 0.92 ≥ threshold 0.57" (reader
+    r32e: the old title wrapped inside its threshold's brackets)."""
+    parts = []
     if series["valid"] is not None:
         parts.append("valid (exact checker)" if series["valid"][index] else "IN COLLISION (exact checker)")
     if series["clearance"] is not None:
         parts.append(f"clearance ≥ {series['clearance'][index]:.3f}")
     if series["probability"] is not None:
         p = series["probability"][index]
-        parts.append(f"P(valid) = {p:.2f} (threshold {threshold:.2f}: {'valid' if p >= threshold else 'colliding'})")
-    return ", ".join(parts)
+        parts.append(f"P(valid) {p:.2f} {'≥' if p >= threshold else '<'} threshold {threshold:.2f}")
+    return f"frame {index}/{frames - 1}" + (": " + ", ".join(parts) if parts else "")

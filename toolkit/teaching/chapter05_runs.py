@@ -1,9 +1,11 @@
-"""What chapter 05 (3D scenes) prints about its own runs: §1's valid shares, §2's office collisions, §6's counts of a
-planned query and §7's view of the lazy PRM's edge screening, each a Markdown table built from the arrays a cell
-has just computed (the record's tables are :mod:`toolkit.teaching.chapter05`'s).
+"""What chapter 05 (3D scenes) prints about its own runs: §1's valid shares, §2's office collisions, §5's truth vs
+prediction, §6's counts of a planned query and §7's view of the lazy PRM's edge screening, each a Markdown table
+built from the arrays a cell has just computed (the record's tables are :mod:`toolkit.teaching.chapter05`'s).
 """
 
 from __future__ import annotations
+
+from collections.abc import Mapping
 
 import numpy as np
 
@@ -39,10 +41,11 @@ def networks(threshold: float) -> str:
         "</summary>\n\n"
         "Each training chose its threshold on P(valid) on held-out data:\n\n"
         "| the `strong` network of | threshold | where this page uses it |\n| --- | ---: | --- |\n"
-        f"| the timed Algorithm 1 runs (`{COMPILED}` in `docs/results.md`) | {cell[COMPILED]} "
+        f"| the timed Algorithm 1 runs (`{COMPILED}` in {chapter05.RESULTS}) | {cell[COMPILED]} "
         "| the answer above, the closing tables |\n"
         f"| this notebook (trained or loaded by `trained_models`) | {threshold:.2f} | sections 5–7 |\n"
-        f"| the lazy-PRM runs (`strong` in `docs/results.md`) | {cell['strong']} | the closing section's folded note |"
+        f"| the lazy-PRM runs (`strong` in {chapter05.RESULTS}) | {cell['strong']} "
+        "| the closing section's folded note |"
         "\n\n</details>"
     )
 
@@ -142,4 +145,61 @@ def screening(result, model) -> str:
         "| screening drops an edge above |\n| ---: | ---: | ---: | ---: | ---: |\n"
         f"| {len(Q0)} | {points.sum()} | {called.sum()} | {fraction.max(initial=0.0):.0%} "
         f"| {params.screen_reject:.0%} |"
+    )
+
+
+KINDS = {  # §5's four kinds of sample: (the truth, the model's answer) -> the mark and its meaning
+    (True, True): "circle: valid, predicted valid",
+    (False, False): "diamond: in collision, predicted in collision",
+    (False, True): "diamond + sparkle: in collision, predicted valid (dangerous)",
+    (True, False): "circle + sparkle: valid, predicted in collision (conservative)",
+}
+
+
+def truth_vs_prediction(
+    valid: np.ndarray,
+    predicted: np.ndarray,
+    scores: Mapping[str, float],
+    threshold: float,
+    room: np.ndarray,
+    freed: np.ndarray,
+    nudge: float,
+) -> str:
+    """§5's counts: the four kinds of sample, the model's scores against answering "valid" to all, where the mistakes
+    lie (``room (N,)``: clearance bounds, ``freed (N,)``: free after a move of the base by ``nudge``), and a line that
+    reads it. ``valid``, ``predicted (N,)``: the truth and the model's answer."""
+
+    def median_room(mask):
+        return f"{np.median(room[mask]):.2f}" if mask.any() else "none"
+
+    def share_freed(mask):
+        return f"{freed[mask].mean():.0%} of {mask.sum()}" if mask.any() else "none"
+
+    masks = {kind: (valid == truth) & (predicted == answer) for (truth, answer), kind in KINDS.items()}
+    circles, diamonds = valid & predicted, ~valid & ~predicted  # the model right
+    dangerous, conservative = ~valid & predicted, valid & ~predicted  # the model wrong
+    read = []
+    if circles.any() and conservative.any():
+        nearer = np.median(room[conservative]) < np.median(room[circles])
+        read.append(
+            f"the conservative mistakes lie {'nearer' if nearer else 'no nearer'} to the blocks than the circles it "
+            "gets right"
+        )
+    if diamonds.any() and dangerous.any():
+        shallower = freed[dangerous].mean() > freed[diamonds].mean()
+        read.append(
+            f"a nudge frees {'more' if shallower else 'no more'} of the dangerous mistakes than of the diamonds it "
+            "gets right"
+        )
+    return (
+        "| samples | count | share |\n| --- | ---: | ---: |\n"
+        + "\n".join(f"| {kind} | {mask.sum()} | {mask.mean():.1%} |" for kind, mask in masks.items())
+        + f"\n\naccuracy **{scores['acc']:.1%}**, TPR {scores['tpr']:.1%}, TNR {scores['tnr']:.1%} "
+        f'(threshold {threshold:.2f}); answering "valid" to all {len(valid)} of these samples: {valid.mean():.1%}\n\n'
+        "| where the samples lie | the model right | the model wrong |\n| --- | ---: | ---: |\n"
+        f"| valid: median clearance bound (workspace units) | {median_room(circles)} (circles) "
+        f"| {median_room(conservative)} (conservative) |\n"
+        f"| in collision: freed by moving the base {nudge} along one axis | {share_freed(diamonds)} (diamonds) "
+        f"| {share_freed(dangerous)} (dangerous) |\n\n"
+        + (("Read: " + ", and ".join(read) + ".") if read else "Read: the model made no mistake here.")
     )
