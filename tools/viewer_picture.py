@@ -13,9 +13,9 @@ left part, beside the panel, not under it (reader r23b). The workspace's outline
 (:func:`floor_outline`): an upright edge of the office's far corner, its foot behind the panel, poked out above it as
 a stray stroke (reader r23b).
 
-The home page's first picture, ``docs/office.png``, is chapter 05's office as section 2 draws it (seed 0, 2000 uniform
-samples), the overview of its still alone (:func:`office_still`): the whole office, every kind of mark and a legend
-(reader r27e: the JupyterLab screenshot there showed a dozen marks close to the robot and no outline)::
+``docs/office.png`` (linked from the home page's row for chapter 05) is chapter 05's office as section 2 draws it
+(seed 0, 2000 uniform samples), the overview of its still alone (:func:`office_still`): the whole office, every kind
+of mark and a legend (reader r27e: a JupyterLab screenshot showed a dozen marks close to the robot and no outline)::
 
     python -m tools.viewer_picture --office docs/office.png
 """
