@@ -128,17 +128,17 @@ def lazy_prm(tables: Tables) -> str:
         "**Does prediction save planning time against the lazy PRM, the fastest exact planner a network can "
         "drive?** By the ratio of the two modes' median times (the medians tables of “Preset `strong`” and “Preset "
         f"`paper`”), for the accurate `strong` network {answer(len(saved['strong']), cells['strong'])} (chapter 04 "
-        f"shows {chapter} of its cells): it took {told(groups['strong'])}. Counting the `paper` network's cells too "
-        f"(its planner with prediction is Algorithm 1, so planner and prediction both change), "
+        f"shows {chapter} of its cells): it took {told(groups['strong'])}. Counting our `paper`-preset network's "
+        "cells too (its planner with prediction is Algorithm 1, so planner and prediction both change), "
         f"{answer(len(beyond), sum(cells.values()))}:{floor_said} {len(beyond) or 'none'} of {sum(cells.values())}"
         f"{named}."
     )
 
 
 def not_the_method(tables: Tables) -> str:
-    """Reader r31f, item 2: why the `paper` network saves time against Algorithm 1 in some cells, in one sentence read
-    from its Table 2 (unseen workspaces): where its MLP gives one answer to every sample, and how few valid samples it
-    keeps elsewhere."""
+    """Reader r31f, item 2: why our `paper`-preset network saves time against Algorithm 1 in some cells, in one
+    sentence read from its Table 2 (unseen workspaces): where its MLP gives one answer to every sample, and how few
+    valid samples it keeps elsewhere."""
     rows = recorded.table("paper", "MLP accuracy", tables)
     rates = {NAMES.get(s, s): (recorded.ours(r["Unseen TPR"]), recorded.ours(r["Unseen TNR"])) for s, r in rows.items()}
     one = [name for name, (tpr, tnr) in rates.items() if min(tpr, tnr) == 0]
@@ -150,8 +150,8 @@ def not_the_method(tables: Tables) -> str:
         for v in recorded.improvements("paper", scenario, recorded=tables).values()
     ]
     return (
-        f"The `paper` network saved time against Algorithm 1 in {read.count('less time')} of {len(read)} cells, but "
-        "not by the method: its MLP gives one answer to "
+        f"Our `paper`-preset network saved time against Algorithm 1 in {read.count('less time')} of {len(read)} "
+        "cells, but not by the method: its MLP gives one answer to "
         f"every sample in {listed or 'no scenario'}, so Algorithm 1 either skips every sample's check or starts from "
         "an empty roadmap and first tries the straight edge from start to goal"
         + (
@@ -164,7 +164,7 @@ def not_the_method(tables: Tables) -> str:
 
 
 def algorithm_1(tables: Tables) -> str:
-    """The `paper` network against the paper's Algorithm 1, Table 3's means counted (the page's section on the
+    """Our `paper`-preset network against the paper's Algorithm 1, Table 3's means counted (the page's section on the
     `paper` preset points here rather than count again)."""
     ours = {
         s: recorded.improvements("paper", s, recorded=tables)
@@ -178,7 +178,7 @@ def algorithm_1(tables: Tables) -> str:
         if column.startswith("Total")
     ]
     return (
-        "**Against the paper's Algorithm 1** (the `paper` section's Table 3, of means), the `paper` network "
+        "**Against the paper's Algorithm 1** (the `paper` section's Table 3, of means), our `paper`-preset network "
         f"saved 10 % or more of a query's time in {verdicts.count('less time')} of {len(verdicts)} cells, "
         f"lost 10 % or more in {verdicts.count('more time')} and tied in {verdicts.count('about the same time')} "
         f"(the paper: savings of up to {percent(max(papers))} %). With the MLP above, those savings are not the "
@@ -204,14 +204,20 @@ def stage_shares(tables: Tables, preset: str) -> tuple[list[float], list[float]]
     return shares, saved
 
 
+def network_costs(tables: Tables) -> dict[str, float]:
+    """The `strong` network's cost per configuration over the exact check's, in the run inside Algorithm 1 with our
+    compiled checker (the inverse of its throughput table's "learned / exact"): ``{scenario: cost}``."""
+    rates = recorded.table(recorded.ALGORITHM_1, "Checker throughput", tables)
+    return {s: 1 / recorded.ours(row["learned / exact"]) for s, row in rates.items()}
+
+
 def why_no_saving(tables: Tables) -> str:
     """The arithmetic behind the verdict (review r27f, item 7): prediction shortens only the sampling stage, a small
     share of a query; with a fast checker the network costs more than the check it replaces; with a slow one the
     sampling it saves is a small share of the query. Every number from the two runs inside Algorithm 1."""
     fast, _ = stage_shares(tables, recorded.ALGORITHM_1)
     slow, saved = stage_shares(tables, checker_scope.SLOW)
-    rates = recorded.table(recorded.ALGORITHM_1, "Checker throughput", tables)
-    costs = {s: 1 / recorded.ours(row["learned / exact"]) for s, row in rates.items()}
+    costs = network_costs(tables)
     cost_3d = [c for s, c in costs.items() if s != "2ds"]
     cost_2d = f"{costs['2ds']:.2g} in {NAMES['2ds']}; " if "2ds" in costs else ""
     means = counted(
@@ -301,8 +307,8 @@ def not_from_sampling(tables: Tables) -> str:
 def summary(tables: Tables) -> str:
     """The findings ("What reproduces and what does not"), without their markers: why the summary's verdict comes out
     as it does (:func:`why_no_saving`), the paper's networks (Tables 1 and 2, with :func:`unseen_table`), and the
-    answers against the lazy PRM and against Algorithm 1 with the `paper` network; no count the summary gives is said
-    again (review r27f, item 2)."""
+    answers against the lazy PRM and against Algorithm 1 with our `paper`-preset network; no count the summary gives
+    is said again (review r27f, item 2)."""
     items = [
         why_no_saving(tables),
         cae(tables),
