@@ -41,7 +41,8 @@ def cae(tables: Tables) -> str:
         else f"at most {percent(gain)} points better than a CAE that answers “free” everywhere"
     )
     return (
-        f"**The CAE (Table 1).** The `paper` CAE reconstructs unseen workspaces at {span(ours)} % of their cells "
+        f"**The CAE (Table 1): {'no better than' if round(gain * 100) <= 0 else 'barely better than'} answering "
+        f"“free” everywhere.** The `paper` CAE reconstructs unseen workspaces at {span(ours)} % of their cells "
         f"(the paper: {span(papers)} %), {than_free} ({span(free)} %)."
     )
 
@@ -98,12 +99,17 @@ def mlp(tables: Tables) -> str:
     blind = [recorded.ours(row["Unseen Acc"]) for row in rows.values()]
     always = [recorded.ours(row["Unseen always valid"]) for row in rows.values()]
     return (
-        f"**The MLP (Table 2).** On unseen workspaces' balanced samples (half of them valid) the `paper` MLP is right "
+        f"**The MLP (Table 2): the `paper` MLP guesses, the `strong` one is right "
+        f"{span(balanced(recorded.ALGORITHM_1))} % of the time.** On unseen workspaces' balanced samples (half of "
+        "them valid) the `paper` MLP is right "
         f"{span(balanced('paper'))} % of the time, where a coin flip is right 50 %; the `strong` MLP of Figure 1 "
         f"{span(balanced(recorded.ALGORITHM_1))} %. On the validity-blind samples the paper describes, which chapter "
         f"04 quotes, the `paper` MLP is right {span(blind)} %, answering “valid” to every sample {span(always)} %."
         + trivial
     )
+
+
+VERDICTS = {"no": "saves no time", "rarely": "rarely saves time", "mostly": "mostly saves time"}  # lazy_prm's
 
 
 def lazy_prm(tables: Tables) -> str:
@@ -125,9 +131,10 @@ def lazy_prm(tables: Tables) -> str:
     named = f" ({', '.join(f'{name} {r:.2f}' for name, r in beyond)})" if beyond else ""
     floor_said = f" beyond this ratio's noise floor ({floor[0]:.2f}–{floor[1]:.2f})," if floor else ""
     return (  # review r28f, items 2 and 3: four lines, the count read by its own noise floor
-        "**Does prediction save planning time against the lazy PRM, the fastest exact planner a network can "
-        "drive?** By the ratio of the two modes' median times (the medians tables of “Preset `strong`” and “Preset "
-        f"`paper`”), for the accurate `strong` network {answer(len(saved['strong']), cells['strong'])} (chapter 04 "
+        "**Against the lazy PRM, the fastest exact planner a network can drive, the `strong` network "
+        f"{VERDICTS[answer(len(saved['strong']), cells['strong'])]}.** By the ratio of the two modes' median times "
+        "(the medians tables of “Preset `strong`” and “Preset `paper`”), for the accurate `strong` network "
+        f"{answer(len(saved['strong']), cells['strong'])} (chapter 04 "
         f"shows {chapter} of its cells): it took {told(groups['strong'])}. Counting our `paper`-preset network's "
         "cells too (its planner with prediction is Algorithm 1, so planner and prediction both change), "
         f"{answer(len(beyond), sum(cells.values()))}:{floor_said} {len(beyond) or 'none'} of {sum(cells.values())}"
@@ -178,8 +185,10 @@ def algorithm_1(tables: Tables) -> str:
         if column.startswith("Total")
     ]
     return (
-        "**Against the paper's Algorithm 1** (the `paper` section's Table 3, of means), our `paper`-preset network "
-        f"saved 10 % or more of a query's time in {verdicts.count('less time')} of {len(verdicts)} cells, "
+        "**Against the paper's Algorithm 1, our `paper`-preset network "
+        f"{'saves time in some cells, but not by the method' if 'less time' in verdicts else 'saves no time'}.** "
+        "By the `paper` section's Table 3, of means, our `paper`-preset network saved 10 % or more of a query's "
+        f"time in {verdicts.count('less time')} of {len(verdicts)} cells, "
         f"lost 10 % or more in {verdicts.count('more time')} and tied in {verdicts.count('about the same time')} "
         f"(the paper: savings of up to {percent(max(papers))} %). With the MLP above, those savings are not the "
         "method working (below: “Savings against Algorithm 1 that are not the method”)."
@@ -228,7 +237,8 @@ def why_no_saving(tables: Tables) -> str:
         ]
     )
     return (  # review r28f, item 2: three sentences
-        "**Why a fast checker erases the saving.** Prediction shortens only sampling, which, without prediction, "
+        "**Why a fast checker erases the saving: prediction shortens only sampling, a small share of a query.** "
+        "Sampling, without prediction, "
         f"took {span(fast, lambda f: f'{f * 100:.2g}')} % of a mean query with our compiled checker "
         f"({slow_share(tables, slow)}, with python-fcl), and in that run, timed beside other work, the network cost "
         f"{span(cost_3d, lambda c: f'{c:.2g}')} times an exact check per configuration in 3D ({cost_2d}"
@@ -236,7 +246,24 @@ def why_no_saving(tables: Tables) -> str:
         f"in {means[2]} of {sum(means)} cells. python-fcl is tens of times slower than "
         "today's compiled checker ([Benchmarks](benchmarks.md)), so with it the network is the cheaper check, yet the "
         f"sampling time it saved came to {span(saved, lambda f: f'{f * 100:.2g}')} % of a mean query's time."
-        + not_from_sampling(tables)
+        + worked_example(tables)
+    )
+
+
+def worked_example(tables: Tables) -> str:
+    """Reader r32f, item 4: the arithmetic once, in the cell of the run with python-fcl where sampling saved the
+    largest share of a query: its share, the cut in sampling time, their product, and the whole query's saving as
+    Table 3 measured it. Shares are written as fractions, so that a percentage here is a saving (review r30f)."""
+    slow, saved = stage_shares(tables, checker_scope.SLOW)
+    times = next(t for heading, t in tables[checker_scope.SLOW].items() if "Times behind Table 3" in heading)
+    top = max(range(len(saved)), key=saved.__getitem__)
+    scenario, sampler = times["rows"][top][0], times["rows"][top][1]
+    total = recorded.improvements(checker_scope.SLOW, scenario, recorded=tables)[sampler]
+    cut = saved[top] / slow[top]
+    return (
+        f" Worked through for {NAMES.get(scenario, scenario)} {sampler} with python-fcl: sampling took "
+        f"{slow[top]:.2f} of a mean query, the network cut it by {percent(cut)} %, and {slow[top]:.2f} × {cut:.2f} ≈ "
+        f"{saved[top]:.2f} of the query; Table 3 measured a {percent(total)} % saving of the whole query."
     )
 
 
@@ -281,6 +308,10 @@ def apart(tables: Tables) -> list[Apart]:
     return found
 
 
+APART_BEGIN = "<!-- apart: written by `python -m tools.results_summary` from the tables below; edit it there -->"
+APART_END = "<!-- end of apart -->"
+
+
 def not_from_sampling(tables: Tables) -> str:
     """One sentence on :func:`apart`'s cells, each with its whole query's change beside the sampling time saved
     there, both as shares of a mean query (review r28f, item 4; r31f: which way each moved); empty where there are
@@ -295,8 +326,9 @@ def not_from_sampling(tables: Tables) -> str:
 
     timed = any("timed twice" in heading for heading in tables[checker_scope.SLOW])
     noise = "" if timed else ", and this run was not timed twice, so timing noise in its means may add to it"
-    return (  # review r30f, contradiction 4: the cause said here, where the summary points
-        f" In {len(cells)} cells the whole query moved 10 points or more away from what sampling saved there "
+    return (  # review r30f, contradiction 4; reader r32f, item 4: in the fold, under the worked example's cell
+        f"- *Where the whole query moved apart from sampling*: in {len(cells)} cells of the run with python-fcl the "
+        "whole query moved 10 points or more away from what sampling saved there "
         f"(as shares of a mean query without prediction: {'; '.join(map(said, cells))}): the rest of the query, "
         "which prediction does not shorten, moved them; with other samples the planner grows another roadmap, "
         "with other edges to check and other repairs"

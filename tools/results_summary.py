@@ -34,7 +34,17 @@ from tools.results_figures import (
     figure_markdown,
     table3_figure,
 )
-from tools.results_findings import DETAIL_BEGIN, DETAIL_END, network_costs, share_word, stage_shares, summary
+from tools.results_findings import (
+    APART_BEGIN,
+    APART_END,
+    DETAIL_BEGIN,
+    DETAIL_END,
+    network_costs,
+    not_from_sampling,
+    share_word,
+    stage_shares,
+    summary,
+)
 from tools.results_noise import NOISE_EDGE, own_intervals, reach_of
 from tools.results_words import change, counted, span
 
@@ -198,6 +208,7 @@ def with_summary(text: str) -> str:
     made again from its tables (:func:`summary`) and the figure's text between its own (:func:`figure_markdown`)."""
     text = between(narrow(text), BEGIN, END, short(parse(text)))
     text = between(text, DETAIL_BEGIN, DETAIL_END, summary(parse(text)))
+    text = between(text, APART_BEGIN, APART_END, not_from_sampling(parse(text)))
     text = between(text, CLAIM_BEGIN, CLAIM_END, claim_markdown(text))
     for kind in FIGURES:
         text = between(text, FIGURE_BEGIN.format(kind=kind), FIGURE_END.format(kind=kind), figure_markdown(text, kind))
