@@ -563,8 +563,8 @@ def test_the_arithmetic_of_the_saving_is_the_times_behind_table_3():
     assert why.count(". ") <= 3 and why.startswith("**Why a fast checker erases the saving: prediction shortens only")
     # reader r32f, item 4: one worked example, its product the cell's share of sampling saved, Table 3's total beside
     top = max(range(len(slow_saved)), key=slow_saved.__getitem__)
-    assert f"≈ {slow_saved[top]:.2f} of the query; Table 3 measured a " in why
-    assert f"sampling took {slow[top]:.2f} of a mean query, the network cut it by" in why
+    assert f"≈ {slow_saved[top]:.3f} of the query; Table 3 measured a " in why
+    assert f"sampling took {slow[top]:.3f} of a mean query, the network cut it by" in why
 
 
 def test_the_findings_say_which_run_each_cost_is_and_what_moved_3dc9_ob():

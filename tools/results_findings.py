@@ -99,7 +99,7 @@ def mlp(tables: Tables) -> str:
     blind = [recorded.ours(row["Unseen Acc"]) for row in rows.values()]
     always = [recorded.ours(row["Unseen always valid"]) for row in rows.values()]
     return (
-        f"**The MLP (Table 2): the `paper` MLP guesses, the `strong` one is right "
+        f"**The MLP (Table 2): the `paper` MLP is at chance, the `strong` one right "
         f"{span(balanced(recorded.ALGORITHM_1))} % of the time.** On unseen workspaces' balanced samples (half of "
         "them valid) the `paper` MLP is right "
         f"{span(balanced('paper'))} % of the time, where a coin flip is right 50 %; the `strong` MLP of Figure 1 "
@@ -262,8 +262,8 @@ def worked_example(tables: Tables) -> str:
     cut = saved[top] / slow[top]
     return (
         f" Worked through for {NAMES.get(scenario, scenario)} {sampler} with python-fcl: sampling took "
-        f"{slow[top]:.2f} of a mean query, the network cut it by {percent(cut)} %, and {slow[top]:.2f} × {cut:.2f} ≈ "
-        f"{saved[top]:.2f} of the query; Table 3 measured a {percent(total)} % saving of the whole query."
+        f"{slow[top]:.3f} of a mean query, the network cut it by {percent(cut)} %, and {slow[top]:.3f} × {cut:.3f} ≈ "
+        f"{saved[top]:.3f} of the query; Table 3 measured a {percent(total)} % saving of the whole query."
     )
 
 
