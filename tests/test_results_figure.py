@@ -62,7 +62,7 @@ def test_each_point_is_a_cell_of_table_3_or_the_papers(drawn):
     kind, fig = drawn
     table3 = "Table 3: time improvement ratio"
     tables = {
-        "ours, paper network, compiled checker of 2 December": f"`paper`, {table3}",
+        "ours, paper-preset network, compiled checker of 2 December": f"`paper`, {table3}",
         "ours, accurate strong network, compiled checker of 5 December": f"`strong --planner paper`, {table3}",
     }
     assert len(fig.axes) == 4
@@ -71,7 +71,8 @@ def test_each_point_is_a_cell_of_table_3_or_the_papers(drawn):
     for scenario, ax in zip(results_words.NAMES, fig.axes):
         assert ax.get_title().startswith(f"{results_words.NAMES[scenario]}: {kind} time")
         points = {line.get_label(): list(line.get_ydata()) for line in ax.get_lines() if line.get_marker() != "None"}
-        assert points["the paper (Table 3)"] == pytest.approx([1 - IMPROVEMENT[scenario][kind][s] for s in SAMPLERS])
+        papers = [1 - IMPROVEMENT[scenario][kind][s] for s in SAMPLERS]
+        assert points["the paper's reported results (Table 3)"] == pytest.approx(papers)
         for name, table in tables.items():
             if name not in points:  # a run that did not plan this scenario: its Table 3 has no row for it
                 assert f"| {scenario} |" not in TEXT.partition(f"### {table}")[2].partition("\n###")[0], (
@@ -97,7 +98,7 @@ def test_the_sentence_over_each_figure_counts_the_papers_cells_by_the_tie_rule(k
     cells = [v for row in IMPROVEMENT.values() for v in row[kind].values()]  # the paper's Table 3, kind's columns
     saved, lost = sum(v >= 0.10 for v in cells), sum(v <= -0.10 for v in cells)
     block = TEXT.partition(results_figures.FIGURE_BEGIN.format(kind=kind))[2]
-    said = re.search(r"(?m)^\| the paper \(Table 3\) \| 16 \| (\d+) \| (\d+) \| (\d+) \|$", block)
+    said = re.search(r"(?m)^\| the paper's reported results \(Table 3\) \| 16 \| (\d+) \| (\d+) \| (\d+) \|$", block)
     assert f"| {kind} time | cells | saved 10 % or more | tied | lost 10 % or more |" in block
     assert said and [int(n) for n in said.groups()] == [saved, 16 - saved - lost, lost]
 
@@ -118,9 +119,13 @@ def test_each_panel_shades_the_tie_band_its_counts_are_read_with(drawn):
         spans = sorted(tuple(sorted({round(y, 6) for y in ys})) for ys in hatched)  # reader r31f, item 3
         assert spans == [(floor[0], 0.9), (1.1, floor[1])]
         assert "log axis" in ax.get_ylabel() or not ax.get_subplotspec().is_first_col()
-    noise = f"timing alone moved a ratio of means to {floor[0]:.2f}–{floor[1]:.2f}"
+    noise = f"ratio-of-means floor, {floor[0]:.2f}–{floor[1]:.2f}"  # reader r32f, item 6: not Figure 1's band
     assert noise in [t.get_text() for t in fig.legends[0].texts] and noise in alt.alt_text(fig)
-    assert f"Timing alone moved a ratio of means to {floor[0]:.2f}–{floor[1]:.2f} (hatched)" in TEXT
+    assert {p.get_hatch() for ax in fig.axes for p in ax.patches if p.get_hatch()} == {query_ratios.NOISE_HATCH}
+    assert query_ratios.NOISE_HATCH != query_ratios.EDGE_HATCH
+    left = {t.get_text() for t in fig.axes[0].get_yticklabels()}
+    assert {f"{floor[0]:g}", f"{floor[1]:g}"} <= left  # the floor's edges labelled
+    assert f"Timing alone moved a ratio of means to {floor[0]:.2f}–{floor[1]:.2f} (the ratio-of-means floor" in TEXT
     for ax in fig.axes:  # reader r31f: Figure 1's verdict colours and shapes name no series here
         for line in ax.get_lines():
             assert line.get_marker() in ("None", None) or (
@@ -222,7 +227,7 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
         assert image.size[0] <= COLUMN
     assert CLAIM == results_figures.claim_markdown(TEXT), AGAIN
     costs = sum(m >= 1.1 for m, _, _ in table.values())  # review r27f, item 2: counted once, in the summary
-    said = f"saved a whole query's time in 0, tied in {16 - costs} and cost time in {costs}, each cell read by"
+    said = f"| ours, `strong` network, our compiled checker | 0 / {16 - costs} / {costs} |"
     assert said in TEXT  # reader r31f, item 1: the noise edge's cells are the caption's (review r28f's robust count)
     reach = results_noise.reach_of(recorded_results.parse(TEXT))  # how far timing alone moved a median query
     edge = [f"{n} {s} {m:.2f}" for (n, s), (m, _, _) in table.items() if m >= 1.1 and abs(m - 1) < 2 * reach]
@@ -278,9 +283,11 @@ def test_figure_1_hatches_the_noise_edge_and_labels_the_band_apart_from_the_1():
         for p in hatched
     )
     assert spans == [(round(1 - edge, 6), 0.9), (1.1, round(1 + edge, 6))]
-    named = f"the noise edge, {1 - edge:.2f}–{1 + edge:.2f}"
+    named = f"median noise edge, {1 - edge:.2f}–{1 + edge:.2f}"  # reader r32f, item 6: not Figures 2-3's floor
     assert named in [t.get_text() for t in fig.legends[0].texts] and named in alt.alt_text(fig)
-    assert "0.9" not in {t.get_text() for t in ax.get_yticklabels()}
+    assert {p.get_hatch() for p in hatched} == {query_ratios.EDGE_HATCH}
+    left = {t.get_text() for t in ax.get_yticklabels()}
+    assert "0.9" not in left and {f"{1 - edge:.2f}", f"{1 + edge:.2f}"} <= left  # the edge's ends labelled
     shown = [t for child in ax.child_axes for t in child.get_yticklabels() if t.get_text()]  # the right-hand axis
     low, high = sorted(shown, key=lambda t: t.get_window_extent(renderer).y0)
     assert [low.get_text(), high.get_text()] == ["0.9", "1.1"]

@@ -34,7 +34,7 @@ MARGINS = {"total": 1.15, "sampling": 1.25}  # each figure's range: its points',
 ROW_HEIGHTS = {"total": 2.9, "sampling": 3.2}  # inches a row of panels: each band is read to 0.9 and 1.1 (r27f)
 KEY = (  # under Figure 2 (reader r31f, item 3): its marks are not Figure 1's verdicts
     " Here colour and shape name a series, not a verdict as in Figure 1 (none takes its circle, square or triangle); "
-    "hollow is python-fcl on both sides, as there."
+    "hollow is python-fcl on both sides, as there, and its orange hexagons are the `strong` network with it."
 )
 CLAIM_FIGURE = RESULTS.parent / "results_claim.png"  # Figure 1: the statistic the verdict on the paper's claim reads
 CLAIM_BEGIN = "<!-- figure of the claim: drawn by `python -m tools.results_summary` from the tables below -->"
@@ -46,8 +46,8 @@ FIGURE_END = "<!-- end of the figure of {kind} times -->"
 FIGURE_DPI = 110  # as docs/crossover.png: the site's column shows it at about its size
 SOURCES = {  # a series of the figure: its preset in the tables (None: the paper's own numbers) and its name; the
     # 1-2 December run with python-fcl is history, left out (review r27f, item 5: five series were 80 markers)
-    "the paper (Table 3)": None,
-    "ours, paper network, compiled checker of 2 December": "paper",
+    "the paper's reported results (Table 3)": None,
+    "ours, paper-preset network, compiled checker of 2 December": "paper",
     "ours, accurate strong network, compiled checker of 5 December": recorded.ALGORITHM_1,
     "ours, accurate strong network, python-fcl on both sides": checker_scope.SLOW,
 }
@@ -125,7 +125,7 @@ def claim_markdown(text: str) -> str:
     )
     edge_said = (
         f" Cells that read as costs or savings but lie within {NOISE_EDGE * reach_of(tables):.2f} of 1 (twice "
-        f"that reach: the hatched band) are at the noise edge: {', '.join(edge)}."
+        f"that reach: the median noise edge, hatched, its edges dashed) are at the noise edge: {', '.join(edge)}."
         if edge
         else ""
     )
@@ -152,7 +152,7 @@ def means_not_verdict(tables: Tables) -> str:
     return (
         " Figures 2 and 3 show means, Table 3's statistic; the verdict on the paper's claim reads each query's own "
         f"ratio (Figure 1): the `strong` network's {name} {sampler}, for one, is {mean:.2f} by means here and "
-        f"{median:.2f} by its median query there."
+        f"{median:.2f} by the median of each query's own ratio there."
     )
 
 
@@ -176,8 +176,9 @@ def figure_markdown(text: str, kind: str = "total") -> str:
     floor = noise(parse(text))
     said = (
         f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule (0.90 or less: saved; 1.10 or "
-        f"more: lost). Timing alone moved a ratio of means to {floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched), "
-        "wider than the band: read a row's counts together, never one cell." + KEY * (kind == "total")
+        f"more: lost). Timing alone moved a ratio of means to {floor.means[0]:.2f}–{floor.means[1]:.2f} (the "
+        "ratio-of-means floor, hatched with dotted edges; Figure 1's dashed band is another statistic's), wider than "
+        "the band: read a row's counts together, never one cell." + KEY * (kind == "total")
     )
     tables = parse(text)
     lead = LEADS[kind] + (f"{means_not_verdict(tables)} {not_the_method(tables)}" if kind == "total" else "")

@@ -41,7 +41,8 @@ def cae(tables: Tables) -> str:
         else f"at most {percent(gain)} points better than a CAE that answers “free” everywhere"
     )
     return (
-        f"**The CAE (Table 1).** The `paper` CAE reconstructs unseen workspaces at {span(ours)} % of their cells "
+        f"**The CAE (Table 1): {'no better than' if round(gain * 100) <= 0 else 'barely better than'} answering "
+        f"“free” everywhere.** The `paper` CAE reconstructs unseen workspaces at {span(ours)} % of their cells "
         f"(the paper: {span(papers)} %), {than_free} ({span(free)} %)."
     )
 
@@ -98,12 +99,17 @@ def mlp(tables: Tables) -> str:
     blind = [recorded.ours(row["Unseen Acc"]) for row in rows.values()]
     always = [recorded.ours(row["Unseen always valid"]) for row in rows.values()]
     return (
-        f"**The MLP (Table 2).** On unseen workspaces' balanced samples (half of them valid) the `paper` MLP is right "
+        f"**The MLP (Table 2): the `paper` MLP is at chance, the `strong` one right "
+        f"{span(balanced(recorded.ALGORITHM_1))} % of the time.** On unseen workspaces' balanced samples (half of "
+        "them valid) the `paper` MLP is right "
         f"{span(balanced('paper'))} % of the time, where a coin flip is right 50 %; the `strong` MLP of Figure 1 "
         f"{span(balanced(recorded.ALGORITHM_1))} %. On the validity-blind samples the paper describes, which chapter "
         f"04 quotes, the `paper` MLP is right {span(blind)} %, answering “valid” to every sample {span(always)} %."
         + trivial
     )
+
+
+VERDICTS = {"no": "saves no time", "rarely": "rarely saves time", "mostly": "mostly saves time"}  # lazy_prm's
 
 
 def lazy_prm(tables: Tables) -> str:
@@ -125,20 +131,21 @@ def lazy_prm(tables: Tables) -> str:
     named = f" ({', '.join(f'{name} {r:.2f}' for name, r in beyond)})" if beyond else ""
     floor_said = f" beyond this ratio's noise floor ({floor[0]:.2f}–{floor[1]:.2f})," if floor else ""
     return (  # review r28f, items 2 and 3: four lines, the count read by its own noise floor
-        "**Does prediction save planning time against the lazy PRM, the fastest exact planner a network can "
-        "drive?** By the ratio of the two modes' median times (the medians tables of “Preset `strong`” and “Preset "
-        f"`paper`”), for the accurate `strong` network {answer(len(saved['strong']), cells['strong'])} (chapter 04 "
-        f"shows {chapter} of its cells): it took {told(groups['strong'])}. Counting the `paper` network's cells too "
-        f"(its planner with prediction is Algorithm 1, so planner and prediction both change), "
+        "**Against the lazy PRM, the fastest exact planner a network can drive, the `strong` network "
+        f"{VERDICTS[answer(len(saved['strong']), cells['strong'])]}.** By the ratio of the two modes' median times "
+        "(the medians tables of “Preset `strong`” and “Preset `paper`”), for the accurate `strong` network "
+        f"{answer(len(saved['strong']), cells['strong'])} (chapter 04 "
+        f"shows {chapter} of its cells): it took {told(groups['strong'])}. Counting our `paper`-preset network's "
+        "cells too (its planner with prediction is Algorithm 1, so planner and prediction both change), "
         f"{answer(len(beyond), sum(cells.values()))}:{floor_said} {len(beyond) or 'none'} of {sum(cells.values())}"
         f"{named}."
     )
 
 
 def not_the_method(tables: Tables) -> str:
-    """Reader r31f, item 2: why the `paper` network saves time against Algorithm 1 in some cells, in one sentence read
-    from its Table 2 (unseen workspaces): where its MLP gives one answer to every sample, and how few valid samples it
-    keeps elsewhere."""
+    """Reader r31f, item 2: why our `paper`-preset network saves time against Algorithm 1 in some cells, in one
+    sentence read from its Table 2 (unseen workspaces): where its MLP gives one answer to every sample, and how few
+    valid samples it keeps elsewhere."""
     rows = recorded.table("paper", "MLP accuracy", tables)
     rates = {NAMES.get(s, s): (recorded.ours(r["Unseen TPR"]), recorded.ours(r["Unseen TNR"])) for s, r in rows.items()}
     one = [name for name, (tpr, tnr) in rates.items() if min(tpr, tnr) == 0]
@@ -150,8 +157,8 @@ def not_the_method(tables: Tables) -> str:
         for v in recorded.improvements("paper", scenario, recorded=tables).values()
     ]
     return (
-        f"The `paper` network saved time against Algorithm 1 in {read.count('less time')} of {len(read)} cells, but "
-        "not by the method: its MLP gives one answer to "
+        f"Our `paper`-preset network saved time against Algorithm 1 in {read.count('less time')} of {len(read)} "
+        "cells, but not by the method: its MLP gives one answer to "
         f"every sample in {listed or 'no scenario'}, so Algorithm 1 either skips every sample's check or starts from "
         "an empty roadmap and first tries the straight edge from start to goal"
         + (
@@ -164,7 +171,7 @@ def not_the_method(tables: Tables) -> str:
 
 
 def algorithm_1(tables: Tables) -> str:
-    """The `paper` network against the paper's Algorithm 1, Table 3's means counted (the page's section on the
+    """Our `paper`-preset network against the paper's Algorithm 1, Table 3's means counted (the page's section on the
     `paper` preset points here rather than count again)."""
     ours = {
         s: recorded.improvements("paper", s, recorded=tables)
@@ -178,8 +185,10 @@ def algorithm_1(tables: Tables) -> str:
         if column.startswith("Total")
     ]
     return (
-        "**Against the paper's Algorithm 1** (the `paper` section's Table 3, of means), the `paper` network "
-        f"saved 10 % or more of a query's time in {verdicts.count('less time')} of {len(verdicts)} cells, "
+        "**Against the paper's Algorithm 1, our `paper`-preset network "
+        f"{'saves time in some cells, but not by the method' if 'less time' in verdicts else 'saves no time'}.** "
+        "By the `paper` section's Table 3, of means, our `paper`-preset network saved 10 % or more of a query's "
+        f"time in {verdicts.count('less time')} of {len(verdicts)} cells, "
         f"lost 10 % or more in {verdicts.count('more time')} and tied in {verdicts.count('about the same time')} "
         f"(the paper: savings of up to {percent(max(papers))} %). With the MLP above, those savings are not the "
         "method working (below: “Savings against Algorithm 1 that are not the method”)."
@@ -204,14 +213,20 @@ def stage_shares(tables: Tables, preset: str) -> tuple[list[float], list[float]]
     return shares, saved
 
 
+def network_costs(tables: Tables) -> dict[str, float]:
+    """The `strong` network's cost per configuration over the exact check's, in the run inside Algorithm 1 with our
+    compiled checker (the inverse of its throughput table's "learned / exact"): ``{scenario: cost}``."""
+    rates = recorded.table(recorded.ALGORITHM_1, "Checker throughput", tables)
+    return {s: 1 / recorded.ours(row["learned / exact"]) for s, row in rates.items()}
+
+
 def why_no_saving(tables: Tables) -> str:
     """The arithmetic behind the verdict (review r27f, item 7): prediction shortens only the sampling stage, a small
     share of a query; with a fast checker the network costs more than the check it replaces; with a slow one the
     sampling it saves is a small share of the query. Every number from the two runs inside Algorithm 1."""
     fast, _ = stage_shares(tables, recorded.ALGORITHM_1)
     slow, saved = stage_shares(tables, checker_scope.SLOW)
-    rates = recorded.table(recorded.ALGORITHM_1, "Checker throughput", tables)
-    costs = {s: 1 / recorded.ours(row["learned / exact"]) for s, row in rates.items()}
+    costs = network_costs(tables)
     cost_3d = [c for s, c in costs.items() if s != "2ds"]
     cost_2d = f"{costs['2ds']:.2g} in {NAMES['2ds']}; " if "2ds" in costs else ""
     means = counted(
@@ -222,7 +237,8 @@ def why_no_saving(tables: Tables) -> str:
         ]
     )
     return (  # review r28f, item 2: three sentences
-        "**Why a fast checker erases the saving.** Prediction shortens only sampling, which, without prediction, "
+        "**Why a fast checker erases the saving: prediction shortens only sampling, a small share of a query.** "
+        "Sampling, without prediction, "
         f"took {span(fast, lambda f: f'{f * 100:.2g}')} % of a mean query with our compiled checker "
         f"({slow_share(tables, slow)}, with python-fcl), and in that run, timed beside other work, the network cost "
         f"{span(cost_3d, lambda c: f'{c:.2g}')} times an exact check per configuration in 3D ({cost_2d}"
@@ -230,7 +246,24 @@ def why_no_saving(tables: Tables) -> str:
         f"in {means[2]} of {sum(means)} cells. python-fcl is tens of times slower than "
         "today's compiled checker ([Benchmarks](benchmarks.md)), so with it the network is the cheaper check, yet the "
         f"sampling time it saved came to {span(saved, lambda f: f'{f * 100:.2g}')} % of a mean query's time."
-        + not_from_sampling(tables)
+        + worked_example(tables)
+    )
+
+
+def worked_example(tables: Tables) -> str:
+    """Reader r32f, item 4: the arithmetic once, in the cell of the run with python-fcl where sampling saved the
+    largest share of a query: its share, the cut in sampling time, their product, and the whole query's saving as
+    Table 3 measured it. Shares are written as fractions, so that a percentage here is a saving (review r30f)."""
+    slow, saved = stage_shares(tables, checker_scope.SLOW)
+    times = next(t for heading, t in tables[checker_scope.SLOW].items() if "Times behind Table 3" in heading)
+    top = max(range(len(saved)), key=saved.__getitem__)
+    scenario, sampler = times["rows"][top][0], times["rows"][top][1]
+    total = recorded.improvements(checker_scope.SLOW, scenario, recorded=tables)[sampler]
+    cut = saved[top] / slow[top]
+    return (
+        f" Worked through for {NAMES.get(scenario, scenario)} {sampler} with python-fcl: sampling took "
+        f"{slow[top]:.3f} of a mean query, the network cut it by {percent(cut)} %, and {slow[top]:.3f} × {cut:.3f} ≈ "
+        f"{saved[top]:.3f} of the query; Table 3 measured a {percent(total)} % saving of the whole query."
     )
 
 
@@ -275,6 +308,10 @@ def apart(tables: Tables) -> list[Apart]:
     return found
 
 
+APART_BEGIN = "<!-- apart: written by `python -m tools.results_summary` from the tables below; edit it there -->"
+APART_END = "<!-- end of apart -->"
+
+
 def not_from_sampling(tables: Tables) -> str:
     """One sentence on :func:`apart`'s cells, each with its whole query's change beside the sampling time saved
     there, both as shares of a mean query (review r28f, item 4; r31f: which way each moved); empty where there are
@@ -289,8 +326,9 @@ def not_from_sampling(tables: Tables) -> str:
 
     timed = any("timed twice" in heading for heading in tables[checker_scope.SLOW])
     noise = "" if timed else ", and this run was not timed twice, so timing noise in its means may add to it"
-    return (  # review r30f, contradiction 4: the cause said here, where the summary points
-        f" In {len(cells)} cells the whole query moved 10 points or more away from what sampling saved there "
+    return (  # review r30f, contradiction 4; reader r32f, item 4: in the fold, under the worked example's cell
+        f"- *Where the whole query moved apart from sampling*: in {len(cells)} cells of the run with python-fcl the "
+        "whole query moved 10 points or more away from what sampling saved there "
         f"(as shares of a mean query without prediction: {'; '.join(map(said, cells))}): the rest of the query, "
         "which prediction does not shorten, moved them; with other samples the planner grows another roadmap, "
         "with other edges to check and other repairs"
@@ -301,8 +339,8 @@ def not_from_sampling(tables: Tables) -> str:
 def summary(tables: Tables) -> str:
     """The findings ("What reproduces and what does not"), without their markers: why the summary's verdict comes out
     as it does (:func:`why_no_saving`), the paper's networks (Tables 1 and 2, with :func:`unseen_table`), and the
-    answers against the lazy PRM and against Algorithm 1 with the `paper` network; no count the summary gives is said
-    again (review r27f, item 2)."""
+    answers against the lazy PRM and against Algorithm 1 with our `paper`-preset network; no count the summary gives
+    is said again (review r27f, item 2)."""
     items = [
         why_no_saving(tables),
         cae(tables),

@@ -24,7 +24,7 @@ from matplotlib.figure import Figure
 from matplotlib.ticker import NullLocator
 
 from toolkit.plots.alt import Part, describe
-from toolkit.plots.palette import COLORS, LINE_COLORS, PAGE_WIDTH, halo, series_style
+from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO, PAGE_WIDTH, halo, series_style
 from toolkit.plots.timings import band_words, legend_above, log_ticks, ratio_parts, tie_band
 from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 
@@ -39,18 +39,14 @@ MEANS_STYLES = (  # :func:`means_grid`'s series in turn: colour, marker, hollow;
     (LINE_COLORS[5], "D", False),  # grey diamonds: the paper's own numbers (r28f: its cross read as the pluses)
     (LINE_COLORS[3], "X", False),  # bluish green crosses: a network with our compiled checker
     (LINE_COLORS[4], "*", False),  # reddish purple stars: another network with our compiled checker
-    (
-        LINE_COLORS[4],
-        "h",
-        True,
-    ),  # reddish purple, hollow hexagons: that network with python-fcl (hollow, as Figure 1's;
-    # r31f: a hollow plus read as filled)
+    (OKABE_ITO["orange"], "h", True),  # orange, hollow hexagons: that network with python-fcl (hollow, as Figure 1's;
+    # r31f: a hollow plus read as filled; r32f: its own colour, the page's headline contrast)
     (LINE_COLORS[3], "P", True),  # bluish green, hollow pluses: the first network with python-fcl
 )
 """Reader r31f: Figure 1's blue, vermillion and black are its verdicts, its circle, square and triangle too, so no
 series here takes any of them; a network keeps its hue, and hollow is python-fcl on both sides, as in Figure 1."""
 Y_LABEL = "time with / without\n(log axis; below 1: saves)"  # reader r31f: the axis is log, and says so
-MEANS_SIZE = 5.5  # points (r28f asked 1.5 times 5; no two markers of a panel may touch at the page width)
+MEANS_SIZE = 5.5  # points (r28f asked 1.5 times 5; r32f 1.5 times more, but then neighbouring markers would touch)
 STAR_SCALE = 1.35  # a star fills less of its box than the other markers: drawn this much larger, it reads as large
 MEANS_SPREAD = 0.95  # of the space between two samplers, what a sampler's points spread over
 
@@ -102,7 +98,7 @@ def own_ratios(
     ax.set_xlabel("sampler, by scenario", labelpad=16)  # under the scenarios' names
     ax.set_xlim(-0.7, ticks[-1] + 0.7)
     drawn = [v for table in (cells, slow) for by in table.values() for value in by.values() for v in value]
-    _own_axis(ax, [*drawn, *([1 - edge, 1 + edge] if edge is not None else [])], tie)
+    _own_axis(ax, drawn, tie, [] if edge is None else [1 - edge, 1 + edge])
     ax.set_ylabel(Y_LABEL, fontsize=9)  # room for the band's edges on the right
     ax.set_title(title, fontsize=10)
     legend_above(fig, [ax], 2)
@@ -116,21 +112,26 @@ def own_ratios(
     )
 
 
-def _own_axis(ax, drawn: list[float], tie: float) -> None:
-    """:func:`own_ratios`' log axis over every ``drawn`` value and the tie band, labelled at its 1-2-5 steps and
-    :data:`BELOW_1`, the band's edges on the right (:func:`_band_edges`)."""
+def _own_axis(ax, drawn: list[float], tie: float, edges: list[float]) -> None:
+    """:func:`own_ratios`' log axis over every ``drawn`` value, the tie band and the noise edge's ``edges``, labelled at
+    its 1-2-5 steps, :data:`BELOW_1` and ``edges`` (reader r32f: the hatched band's edges unlabelled), the tie band's
+    edges on the right (:func:`_band_edges`)."""
     ax.set_yscale("log")
-    ax.set_ylim(min(*drawn, 1 - tie) / 1.15, max(*drawn, 1 + tie) * 1.15)
+    ax.set_ylim(min(*drawn, *edges, 1 - tie) / 1.15, max(*drawn, *edges, 1 + tie) * 1.15)
     log_ticks(ax)
     low, high = ax.get_ylim()
-    shown = sorted({round(s, 6) for s in (*ax.get_yticks(), *BELOW_1) if low <= s <= high})  # r25c: 0.7 alone below 1
+    every = (*ax.get_yticks(), *BELOW_1, *edges)  # r25c: 0.7 alone below 1
+    shown = sorted({round(s, 2) for s in every if low <= s <= high})
     ax.set_yticks(shown, [f"{s:g}" for s in shown])
     ax.yaxis.set_minor_locator(NullLocator())  # review r27f: an unlabelled tick under 0.7 read as a missing label
     _band_edges(ax, [1 - tie, 1 + tie])
 
 
-NOISE_WORDS = "timing alone moved a ratio of means to {low:.2f}–{high:.2f}"  # means_grid's hatching
-EDGE_WORDS = "the noise edge, {low:.2f}–{high:.2f}: a cost or saving there is no clear evidence"
+NOISE_WORDS = (  # means_grid's hatching, told apart from own_ratios' (reader r32f: one hatch meant two bands)
+    "ratio-of-means floor, {low:.2f}–{high:.2f}: timing alone moved a ratio of means that far"
+)
+EDGE_WORDS = "median noise edge, {low:.2f}–{high:.2f}: a cost or saving there is no clear evidence"
+EDGE_HATCH, NOISE_HATCH = "///", "\\\\\\"  # own_ratios' noise edge; means_grid's floor, the other slant
 
 
 def _edge_band(ax, edge: float, tie: float) -> None:
@@ -139,22 +140,24 @@ def _edge_band(ax, edge: float, tie: float) -> None:
     _hatch_round(ax, (1 - edge, 1 + edge), tie, EDGE_WORDS.format(low=1 - edge, high=1 + edge).split(":")[0])
 
 
-def _hatch_round(ax, reach: tuple[float, float], tie: float, label: str | None) -> None:
-    """Hatch from ``reach[0]`` to the tie band and from it to ``reach[1]``, each outer edge a dashed line, so the
-    hatching reads at the page's width (reader r31f: it was faint); ``label`` names it once in the legend."""
+def _hatch_round(ax, reach: tuple[float, float], tie: float, label: str | None, hatch: str = EDGE_HATCH) -> None:
+    """Hatch from ``reach[0]`` to the tie band and from it to ``reach[1]``, each outer edge a line (dashed under
+    :data:`EDGE_HATCH`, dotted under any other), so the hatching reads at the page's width (reader r31f: it was
+    faint); ``label`` names it once in the legend."""
     for k, (low, high) in enumerate(((reach[0], 1 - tie), (1 + tie, reach[1]))):
         ax.axhspan(
             low,
             high,
             facecolor="none",
             edgecolor=COLORS["reference"],
-            hatch="///",
+            hatch=hatch,
             linewidth=0,
             zorder=0,
             label=label if k == 0 else None,
         )
     for y in reach:
-        ax.axhline(y, color=COLORS["reference"], linestyle="--", linewidth=0.8, zorder=0.5)
+        style = "--" if hatch == EDGE_HATCH else ":"
+        ax.axhline(y, color=COLORS["reference"], linestyle=style, linewidth=1.0, zorder=0.5)
 
 
 def _legend_entries(ax, series: tuple[str, str] | None, edge: tuple[float, float] | None = None) -> None:
@@ -290,8 +293,9 @@ def means_grid(
     axes[0].set_ylim(low, high)
     log_ticks(axes[0])  # shared by every panel
     beside = [t for t in ticks if low <= t <= high and 1 / NEAR_1 < t < NEAR_1]  # would crowd the "1"
-    if ticks:
-        shown = sorted({round(t, 6) for t in (*axes[0].get_yticks(), *ticks) if low <= t <= high and t not in beside})
+    if ticks or noise:  # reader r32f: the floor's edges labelled on the left, the tie band's on the right
+        every = (*axes[0].get_yticks(), *ticks, *(noise or ()))
+        shown = sorted({round(t, 6) for t in every if low <= t <= high and t not in beside})
         axes[0].set_yticks(shown, [f"{t:g}" for t in shown])
     for ax in axes[: len(panels)] if beside else ():  # r25c: 0.9, 1 and 1.1 crammed on the left; r28f: every panel
         _band_edges(ax, beside)
@@ -306,8 +310,8 @@ def _noise_bands(axes, noise: tuple[float, float] | None, tie: float) -> list[st
         return []
     words = NOISE_WORDS.format(low=noise[0], high=noise[1])
     for k, ax in enumerate(axes):
-        _hatch_round(ax, noise, tie, words if k == 0 else None)
-    return [f"hatched round the tie band, {words}"]
+        _hatch_round(ax, noise, tie, words.split(":")[0] if k == 0 else None, NOISE_HATCH)
+    return [f"hatched the other way round the tie band, the {words}"]
 
 
 def _band_edges(ax, ticks: list[float]) -> None:
@@ -347,7 +351,7 @@ def _means_panel(ax, title: str, series: Mapping[str, Mapping[str, float]], name
     ax.grid(True, axis="x", which="minor", color=COLORS["shade"], linewidth=0.8)
     ax.tick_params(axis="x", which="minor", length=0)
     ax.set_xticks(np.arange(len(samplers)), samplers)
-    ax.set_xlim(-0.5, len(samplers) - 0.5)
+    ax.set_xlim(-0.6, len(samplers) - 0.4)  # reader r32f: the outer points clear the spines
     ax.set_title(title, fontsize=10)
     ax.tick_params(labelsize=9)
     ax.tick_params(axis="y", labelsize=8)
