@@ -908,7 +908,7 @@ def _slow_checker(nb, facts: checker_scope.SlowChecker | None = None) -> list[st
     papers = sum(findings.time_verdict(1 - t) == findings.SAVES for t in facts.papers_totals)
     means = Counter(findings.time_verdict(1 - t) for t in facts.totals)
     first = outputs[0] if outputs else ""
-    bullet = [(m[1], m[3], m[6]) for m in FAST_BULLET.finditer(first)]
+    bullet: list[tuple[str, ...]] = [(m[1], m[3], m[6]) for m in FAST_BULLET.finditer(first)]
     bullet += [m.groups() for m in SLOW_BULLET.finditer(first)]
     expected = [
         (str(papers), str(ours or "none"), str(totals[findings.SAVES] or "none")),

@@ -450,7 +450,7 @@ def test_chapter_04_fails_where_section_6s_recorded_verdicts_contradict_its_answ
     assert problems(CH04, nb)[0].startswith("04: the answer says what the `paper` MLP answers")
 
 
-def _claim_expected() -> tuple[str, ...]:
+def _claim_expected() -> tuple[str | None, ...]:
     """What the first code cell must say of the paper's claim: docs/results.md's
     counts, read by hand (inside Algorithm 1 the accurate network saves in none of 16 cells, ties in 7, costs in 9;
     against the lazy PRM, on 2DS and 3DC-7, it saves in none of 8)."""
