@@ -12,6 +12,7 @@ import numpy as np
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
+from toolkit.plots.palette import COLORS
 
 
 def nearby_blocks(workspace: Workspace, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
@@ -73,7 +74,7 @@ def name_blocks(ax, workspace: Workspace, blocks: np.ndarray, plane: list[int]) 
     if not workspace.labels:
         return
     window = np.array([ax.get_xlim(), ax.get_ylim()]).T  # (2, 2): low corner, high corner
-    box = dict(boxstyle="round,pad=0.1", facecolor="white", edgecolor="none", alpha=0.8)
+    box = dict(boxstyle="round,pad=0.1", facecolor=COLORS["free"], edgecolor="none", alpha=0.8)
     for k in blocks:
         lo, hi = (
             np.maximum(workspace.boxes[k, 0, plane], window[0]),

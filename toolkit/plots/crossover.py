@@ -17,6 +17,7 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
+from matplotlib.colors import to_rgba
 from matplotlib.figure import Figure
 from matplotlib.ticker import NullFormatter, NullLocator
 
@@ -121,7 +122,7 @@ def _paper_scenes(ax, key: str, sweep: dict) -> None:
 
 
 CALLS_TOP = 0.86  # the planner calls' strip's top, in the panel's height: its name above it
-CALLS_LOOK: dict[str, Any] = dict(facecolor=(0.53, 0.53, 0.53, 0.12), edgecolor=COLORS["block"], hatch="..", lw=0,
+CALLS_LOOK: dict[str, Any] = dict(facecolor=to_rgba(COLORS["block"], 0.12), edgecolor=COLORS["block"], hatch="..", lw=0,
                                   zorder=0.5)  # fmt: skip
 
 

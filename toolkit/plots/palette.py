@@ -68,6 +68,7 @@ COLORS: dict[str, str] = {
     "mesh": OKABE_ITO["orange"],
     "voxel": OKABE_ITO["blue"],
     "highlight": OKABE_ITO["vermillion"],  # a region a figure points at (the narrow passage)
+    "overlap": OKABE_ITO["yellow"],  # the part of a link inside a block (chapter 01's first check)
     # the CAE's reconstruction errors (§IV-B)
     "phantom": OKABE_ITO["blue"],  # free cell decoded occupied
     "missed": OKABE_ITO["vermillion"],  # occupied cell decoded free

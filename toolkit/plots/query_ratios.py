@@ -24,7 +24,7 @@ from matplotlib.figure import Figure
 from matplotlib.ticker import NullLocator
 
 from toolkit.plots.alt import Part, describe
-from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO, PAGE_WIDTH, halo, series_style
+from toolkit.plots.palette import CATEGORICAL, COLORS, LINE_COLORS, PAGE_WIDTH, halo, series_style
 from toolkit.plots.timings import band_words, legend_above, log_ticks, ratio_parts, tie_band
 from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 
@@ -39,7 +39,7 @@ MEANS_STYLES = (  # :func:`means_grid`'s series in turn: colour, marker, hollow;
     (LINE_COLORS[5], "D", False),  # grey diamonds: the paper's own numbers (r28f: its cross read as the pluses)
     (LINE_COLORS[3], "X", False),  # bluish green crosses: a network with our compiled checker
     (LINE_COLORS[4], "*", False),  # reddish purple stars: another network with our compiled checker
-    (OKABE_ITO["orange"], "h", True),  # orange, hollow hexagons: that network with python-fcl (hollow, as Figure 1's;
+    (CATEGORICAL[1], "h", True),  # orange, hollow hexagons: that network with python-fcl (hollow, as Figure 1's;
     # r31f: a hollow plus read as filled; r32f: its own colour, the page's headline contrast)
     (LINE_COLORS[3], "P", True),  # bluish green, hollow pluses: the first network with python-fcl
 )

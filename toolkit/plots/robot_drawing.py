@@ -26,7 +26,7 @@ from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
 from toolkit.plots.contact import clip_to_box, contacts, name_blocks, nearby_blocks
-from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, OKABE_ITO, PAGE_WIDTH
+from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
 
 VALID_COLOR, INVALID_COLOR = COLORS["valid"], COLORS["invalid"]
 BLOCK_STYLE: dict[str, Any] = dict(facecolor=COLORS["block"], edgecolor=COLORS["occupied"], gid="block")
@@ -368,7 +368,7 @@ def _outline_touching(ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray, 
         inside = clip_to_box(corners, b_lo[at], b_hi[at]) if robot.dim == 2 and depth > 0 else np.zeros((0, 2))
         if len(inside) > 2:  # in 3D a shadow's overlap need not be the boxes' own: nothing filled
             light: dict[str, Any] = dict(
-                facecolor=OKABE_ITO["yellow"], edgecolor=COLORS["ink"], linewidth=1
+                facecolor=COLORS["overlap"], edgecolor=COLORS["ink"], linewidth=1
             )  # over the outlines
             ax.add_patch(Polygon(inside, gid="overlap", zorder=6, **light))
 
