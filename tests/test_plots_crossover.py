@@ -183,7 +183,7 @@ def test_a_3dc_sweep_marks_where_the_paper_s_scenes_sit():
 
     fig = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": sweeps})
     legend = [t.get_text() for t in fig.legends[0].get_texts()]
-    assert PAPER_LEGEND in legend and "Plain grey strips mark the paper's scenes" in alt_text(fig)
+    assert PAPER_LEGEND in legend and "Plain grey strips mark the paper's 3DC scenes" in alt_text(fig)
     spans = [(p.get_x(), p.get_x() + p.get_width()) for ax in fig.axes for p in ax.patches]  # each strip's x-extent
     assert [(round(low * 1.05), round(high / 1.05)) for low, high in spans] == [(110, 125), (2, 2), (4, 4)]
     plain = crossover({"scenario": "2ds", "preset": "paper", "quick": False, "variables": sweeps})
@@ -220,8 +220,8 @@ def test_the_call_size_panel_marks_our_planners_calls():
     FigureCanvasAgg(fig).draw()
     name = next(t for t in ax.texts if t.get_text() == "planner calls").get_window_extent()
     assert name.y0 >= ax.patches[0].get_window_extent().y1
-    assert PAPER_LEGEND.startswith("plain grey strip") and "a dotted strip marks the planner calls" in alt_text(fig)
+    assert PAPER_LEGEND.startswith("plain grey strip") and "a dotted strip marks calls of the sizes" in alt_text(fig)
     low, high = PLANNER_CALLS
-    assert f"the planner calls a network could answer, {low} to {high} configurations" in alt_text(fig)
+    assert f"calls of the sizes a network could answer, {low} to {high} configurations" in alt_text(fig)
     plain = crossover({"scenario": "2ds", "preset": "paper", "quick": False, "variables": {"batch": batch}})
     assert not plain.axes[0].patches and "planner calls" not in alt_text(plain)

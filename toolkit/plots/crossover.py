@@ -96,19 +96,19 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
 
 
 PAPER_SCENES = {"obstacles": ((110, 125),), "links": ((2, 2), (4, 4))}  # the paper's 3DC: 110-125 blocks; 2, 4 links
-PAPER_LEGEND = "plain grey strip: the paper's scenes (110–125 blocks; chains of 2 and 4 links)"
+PAPER_LEGEND = "plain grey strip: the paper's 3DC scenes (110–125 blocks; chains of 2 and 4 links)"
 PAPER_SAID = (
-    "Plain grey strips mark the paper's scenes: 110 to 125 blocks, chains of 2 and 4 links; they hold no mesh. "
+    "Plain grey strips mark the paper's 3DC scenes: 110 to 125 blocks, chains of 2 and 4 links; they hold no mesh. "
 )
 NO_MESH = " (paper scenes: no mesh)"
 TICKS: dict[str, tuple[float, ...]] = {}  # a panel's values to name, if not all; reader r32g: every obstacle count
 # named (r29f's 350 and 500 part slanted; r30f's unlabelled ticks are gone with the choice)
 PLANNER_CALLS = (8, 400)  # the planner calls a network could answer on a 3DC scene: RRT-Connect's 8-56 configurations
 # (docs/benchmarks_history.md, its profile), a round's samples (the lazy PRM's 50 doubling to |S| = plan_samples = 400)
-CALLS_LEGEND = "dotted strip (call size): planner calls a network could answer (8–400)"
+CALLS_LEGEND = "dotted strip (call size): calls of the sizes a network could answer (8–400)"
 CALLS_SAID = (
-    "On the call-size panel a dotted strip marks the planner calls a network could answer, 8 to 400 configurations: "
-    "RRT-Connect's calls of 8 to 56, a round's 50 to 400 samples. "
+    "On the call-size panel a dotted strip marks calls of the sizes a network could answer, 8 to 400 configurations: "
+    "a round's 50 to 400 samples, and calls the size of RRT-Connect's, 8 to 56 (no network drives RRT-Connect). "
 )
 
 
