@@ -42,13 +42,17 @@ def test_the_answer_names_both_30_grid_caes_and_gives_each_a_row():
     rows = [line.split(" | ")[0].lstrip("| ") for line in text.splitlines() if line.startswith("| ")][2:]
     assert [row.split(":")[0] for row in rows] == ["paper, Table 1", "CAE-long", "CAE-preset", rows[3].split(":")[0]]
     assert "the paper's layer sizes" in rows[1] and "1,500 steps" in rows[1]
-    # reader r32b: its "seen" is 500 of its own 1,000 training grids, not the 30 above; the label says so
-    assert rows[3].endswith("(not the paper's recipe, section 8); seen: 500 of them")
+    # reader r32b: its "seen" is 500 of its own 1,000 training grids, not the 30 above; the label says so; reader
+    # r33b: its "unseen" is 500 new grids, not the 10 test grids of the rows above; the label says that too
+    assert rows[3].endswith(
+        "(not the paper's recipe, section 8); seen and unseen: 500 grids each, not the 30 grids and the unseen test "
+        "grids above"
+    )
     said = text.split("**In numbers.**")[1]
     assert re.search(r'it gets 86.7%, where answering "all free" gets 87.6% \(0.9 points below\)', said)
     assert "CAE-preset, stopped before it memorizes, reproduces neither column: seen 89.2%" in said
     assert "unseen 85.9% (all free 87.6%: -1.7 points, below it)" in said
-    assert '91.0% on unseen grids, where "all free" gets 87.8%: better, and still 9 points short of 100%' in said
+    assert '91.0% on 500 unseen grids, where "all free" gets 87.8%: better, and still 9 points short of 100%' in said
 
 
 def test_the_answer_in_a_quick_run_says_it_has_not_memorized():
@@ -65,7 +69,8 @@ def test_the_answer_in_a_quick_run_says_it_has_not_memorized():
         quick=True,
     )
     assert "has trained too briefly in this quick run to memorize them (80.0%)" in text
-    assert "in this quick run, not better yet" in text and "In this quick run, CAE-preset has trained" in text
+    assert "on 100 unseen grids" in text and "in this quick run, not better yet" in text
+    assert "In this quick run, CAE-preset has trained" in text
 
 
 def test_the_closing_table_gives_the_paper_then_each_row_beside_all_free():
@@ -74,3 +79,5 @@ def test_the_closing_table_gives_the_paper_then_each_row_beside_all_free():
         "| paper, Table 1 | 100% | 100% | not reported |",
         "| CAE-long | 99.6% | 86.7% | 88.6% / 87.6% |",
     ]
+    # reader r33b: "AdamW" read as "which decay?"; the toolkit's AdamW runs with its weight decay at 0, plain Adam
+    assert "Every CAE in this table trains with Adam (AdamW with its weight decay at 0)" in table

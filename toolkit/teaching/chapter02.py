@@ -85,7 +85,9 @@ def answer(
         _row(f"CAE-long: the paper's layer sizes and loss, {n_seen} grids, {steps:,} steps (this page)", long),
         _row("CAE-preset: the same, stopped early by the `paper` preset (chapters 03–04 load it)", preset),
         _row(
-            f"the same layer sizes on {many_name} (not the paper's recipe, section 8); seen: {many_seen} of them", many
+            f"the same layer sizes on {many_name} (not the paper's recipe, section 8); seen and unseen: "
+            f"{many_seen} grids each, not the {n_seen} grids and the unseen test grids above",
+            many,
         ),
     ]
     seen_said = (
@@ -101,10 +103,11 @@ def answer(
     )
     many_unseen, many_free = many["unseen_acc"], many["unseen_all_free"]
     many_said = (
-        f'{many_unseen:.1%} on unseen grids, where "all free" gets {many_free:.1%}: better, and still '
+        f'{many_unseen:.1%} on {many_seen} unseen grids, where "all free" gets {many_free:.1%}: better, and still '
         f"{100 * (paper['unseen_acc'] - many_unseen):.0f} points short of {paper['unseen_acc']:.0%}"
         if many_unseen > many_free
-        else f'{many_unseen:.1%} on unseen grids ("all free" {many_free:.1%}): in this quick run, not better yet'
+        else f'{many_unseen:.1%} on {many_seen} unseen grids ("all free" {many_free:.1%}): in this quick run, '
+        "not better yet"
     )
     return "\n".join(table) + (
         f"\n\n**In numbers.** Trained on {n_seen} grids, CAE-long {seen_said}. On unseen grids it gets "
@@ -132,6 +135,7 @@ def closing_table(paper: Scores, rows: Mapping[str, Scores]) -> str:
         f"| paper, Table 1 | {paper['seen_acc']:.0%} | {paper['unseen_acc']:.0%} | not reported |",
     ] + [_row(label, scores) for label, scores in rows.items()]
     return "\n".join(table) + (
-        "\n\nEvery CAE here trains with AdamW where the paper uses Adagrad at 0.1 (§IV-B3; with our CAE it diverges, "
+        "\n\nEvery CAE in this table trains with Adam (AdamW with its weight decay at 0) where the paper uses "
+        "Adagrad at 0.1 (§IV-B3; with our CAE it diverges, "
         "section 4), for a number of steps the paper does not give."
     )
