@@ -243,8 +243,8 @@ def _adds(tables: Tables | None = None) -> str:
     dearer = [1 / recorded.ours(row["learned / exact"]) for row in rates.values()]
     low, high = (f"{v:.2g}" for v in (min(dearer), max(dearer)))
     said = (
-        f"in that recorded run a network call cost {low if low == high else f'{low}–{high}'} times an exact check per "
-        "configuration, and "
+        "in the recorded Algorithm 1 run (`--planner paper`) a network call cost "
+        f"{low if low == high else f'{low}–{high}'} times an exact check per configuration, and "
         "each query first encodes its workspace for the network"
     )
     cells = costs.dear_cells(tables)
