@@ -138,6 +138,8 @@ def test_the_noise_edge_is_given_in_numbers_with_its_cells():
     the record (twice the 0.09 that timing alone moved a median) and names each cell inside it."""
     said = chapter04.edge_line()
     assert "moved a median ratio up to 0.09 from 1" in said and "between 0.82 and 1.18" in said
+    # reader r33d, contradiction 2: a cell there is "costs time" by the band and no clear evidence, both said
+    assert "twice that reach, keeps its verdict word in the table but is no clear evidence on its own." in said
     assert "for our fast checker, 4 of its costs and 0 of its savings: 2DS BS 1.13, 2DS OB 1.17, 2DS BT 1.10, " in said
     assert said.endswith("3DO BT 1.13; for python-fcl, 0 of its costs and 1 of its savings: 2DS OB 0.87.")
 

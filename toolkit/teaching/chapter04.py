@@ -201,8 +201,8 @@ def edge_line(tables: Tables | None = None) -> str:
     return (
         "**At the noise edge.** Timing one computation twice moved a median ratio up to "
         f"{costs.timing_reach(tables):.2f} from 1 (`docs/results.md`, under its Figure 1), so a saving or a cost "
-        f"between {1 - reach:.2f} and {1 + reach:.2f}, twice that reach, is no clear evidence either way. In the "
-        "table above these are, for " + "; for ".join(named) + "."
+        f"between {1 - reach:.2f} and {1 + reach:.2f}, twice that reach, keeps its verdict word in the table but is "
+        "no clear evidence on its own. In the table above these are, for " + "; for ".join(named) + "."
     )
 
 
