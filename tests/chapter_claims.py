@@ -520,7 +520,11 @@ def _call_cost_runs(nb) -> list[str]:
     """Section 4 (review r28d: the opening's 23.3 and 6.9 beside this run's 15.52 and 5.32): the network's cost per
     configuration over the exact check's moves between runs, the `strong` network's two recorded runs' 3DC-7 figures
     named as the record has them."""
-    said = re.search(r"recorded runs put 3DC-7's at ([\d.]+) and ([\d.]+)", prose(nb))
+    said = re.search(  # each figure named by its run (reader r33d: which one the answer reads)
+        r"recorded runs put 3DC-7's at ([\d.]+) \(the `strong` run[^)]*\) and ([\d.]+) "
+        r"\(the `strong --planner paper` run",
+        prose(nb),
+    )
     runs = ("strong", recorded.ALGORITHM_1)
     record = tuple(
         f"{1 / recorded.ours(recorded.table(p, 'Checker throughput')['3dc7']['learned / exact']):.2f}" for p in runs

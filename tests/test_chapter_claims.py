@@ -331,7 +331,7 @@ def test_chapter_04_names_the_recorded_runs_3dc7_call_costs_as_the_record_has_th
     nb = chapter_04()
     for cell in nb["cells"]:
         if cell["cell_type"] == "markdown":
-            cell["source"] = "".join(cell["source"]).replace("at 1.32 and 6.90", "at 1.32 and 6.9")
+            cell["source"] = "".join(cell["source"]).replace("and 6.90 (", "and 6.9 (")
     assert problems(CH04, nb) == ["04: section 4 on the recorded runs' 3DC-7 costs; the record: ('1.32', '6.90')"]
 
 

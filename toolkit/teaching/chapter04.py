@@ -201,8 +201,8 @@ def edge_line(tables: Tables | None = None) -> str:
     return (
         "**At the noise edge.** Timing one computation twice moved a median ratio up to "
         f"{costs.timing_reach(tables):.2f} from 1 (`docs/results.md`, under its Figure 1), so a saving or a cost "
-        f"between {1 - reach:.2f} and {1 + reach:.2f}, twice that reach, is no clear evidence either way. In the "
-        "table above these are, for " + "; for ".join(named) + "."
+        f"between {1 - reach:.2f} and {1 + reach:.2f}, twice that reach, keeps its verdict word in the table but is "
+        "no clear evidence on its own. In the table above these are, for " + "; for ".join(named) + "."
     )
 
 
@@ -243,8 +243,8 @@ def _adds(tables: Tables | None = None) -> str:
     dearer = [1 / recorded.ours(row["learned / exact"]) for row in rates.values()]
     low, high = (f"{v:.2g}" for v in (min(dearer), max(dearer)))
     said = (
-        f"in that recorded run a network call cost {low if low == high else f'{low}–{high}'} times an exact check per "
-        "configuration, and "
+        "in the recorded Algorithm 1 run (`--planner paper`) a network call cost "
+        f"{low if low == high else f'{low}–{high}'} times an exact check per configuration, and "
         "each query first encodes its workspace for the network"
     )
     cells = costs.dear_cells(tables)
