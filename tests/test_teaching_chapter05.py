@@ -214,3 +214,31 @@ def test_the_closing_applies_the_home_pages_test_to_a_longer_query_and_sets_the_
         in said
     )
     assert "That last row is not a statistic of the answer at the top" in said
+
+
+def test_the_closing_applies_the_home_pages_test_to_the_papers_own_row():
+    """Reader r33e, ch05 contradictions 1, 2 and 4: by the paper's own §V mean times its 3DC-7 BT query saved more
+    than all its sampling took (the home page's test); the fold of the medians row says it is another statistic; the
+    python-fcl product is said to come from the unrounded rates (6.9 x 6.0 rounded gives 41, the rates 42)."""
+    from toolkit.experiments import paper_numbers
+
+    times = paper_numbers.TIMES[chapter05.SCENARIO]
+    beyond = [
+        s
+        for s in chapter05.SAMPLERS
+        if times["total_s"][s][0][0] - times["total_s"][s][1][0] > times["sampling_s"][s][0][0]
+    ]
+    assert beyond == ["BT"]
+    (without, _), (with_, _) = times["total_s"]["BT"]
+    said = " ".join(chapter05.time_tables().split())
+    assert (
+        f"By the paper's own §V mean times its mean BT query fell from {without:.2f} to {with_:.2f} s, by more than "
+        f"all the sampling it took without prediction ({times['sampling_s']['BT'][0][0]:.2f} s): skipping the "
+        "samples' checks cannot save more than that, so that saving is not prediction's."
+    ) in said
+    assert "a ratio of two medians (another statistic than the answer's, read against its own noise)</summary>" in said
+    rates = recorded.table(chapter05.COMPILED, "Checker throughput")["3dc7"]
+    product = recorded.ours(rates["exact cfg/s"]) / recorded.ours(rates["FCL cfg/s"])
+    assert f"From the two unrounded rates, one python-fcl check takes as long as about {product:.0f} compiled" in (
+        " ".join(chapter05.answer().split())
+    )
