@@ -627,5 +627,9 @@ def test_a_threshold_sweeps_zoom_draws_the_span_of_p_valid_beside_the_whole_rang
     (legend,) = fig.legends
     assert all(legend.get_window_extent(renderer).y1 <= ax.get_window_extent(renderer).y0 for ax in fig.axes)
     assert "from 0.35 to 0.65" in alt.alt_text(fig)
+    whole_part, zoomed_part = alt.details(fig)  # each panel in numbers, not the guard's read from titles
+    assert not alt.is_fallback(whole_part["name"]) and zoomed_part["rows"][0][0] == "0.350"
+    accuracy = metrics.threshold_sweep(probability, valid, np.array([0.35]))["acc"][0]
+    assert zoomed_part["rows"][0][1] == f"{accuracy:.2f}" and zoomed_part["rows"][-1][0] == "0.650"
     assert len(threshold_sweep(probability, valid, 0.5).axes) == 1  # reproduce's figure unchanged
     assert len(threshold_sweep(np.linspace(0, 1, 400), valid, 0.5, zoom=True).axes) == 1  # nothing to zoom into

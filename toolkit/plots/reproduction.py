@@ -150,9 +150,14 @@ def threshold_sweep(
     fig = Figure(figsize=(PAGE_WIDTH if window else 5, 4.2), layout="constrained")
     axes = fig.subplots(1, 2 if window else 1, squeeze=False)[0]
     curves = _draw_sweep(axes[0], metrics.SWEEP, p, truth, threshold)
+    parts = []
     if window:
         axes[0].axvspan(*window, color=COLORS["reference"], alpha=0.15, lw=0, label="the right panel's range")
-        _draw_sweep(axes[1], np.linspace(*window, 121), p, truth, threshold)
+        finer = np.linspace(*window, 121)  # (121,) the right panel's thresholds
+        parts = [_sweep_part("thresholds 0 to 1", metrics.SWEEP, curves)]
+        parts.append(
+            _sweep_part("the span of P(valid), finer", finer, _draw_sweep(axes[1], finer, p, truth, threshold))
+        )
         axes[1].set_xlim(*window)
         axes[1].set_title(f"thresholds {window[0]:.2f} to {window[1]:.2f}, finer", fontsize=10)
         axes[0].set_title("thresholds 0 to 1", fontsize=10)
@@ -170,7 +175,18 @@ def threshold_sweep(
         )
     if window:
         text += f"; a second panel draws the same from {window[0]:.2f} to {window[1]:.2f}, the span of P(valid)"
-    return describe(fig, text + ".")
+    return describe(fig, text + ".", parts)
+
+
+def _sweep_part(name: str, ts: np.ndarray, curves: dict) -> Part:
+    """One panel of a sweep in numbers: eleven of its thresholds ``ts (T,)``, evenly picked, and each curve there."""
+    rows = np.unique(np.linspace(0, len(ts) - 1, 11).round().astype(int))  # (<= 11,) indices, first and last kept
+    return Part(
+        name,
+        f"accuracy, TPR and TNR at thresholds {ts[0]:.2f} to {ts[-1]:.2f}",
+        ("threshold", *curves),
+        tuple((f"{ts[i]:.3f}", *(f"{curve[i]:.2f}" for curve in curves.values())) for i in rows),
+    )
 
 
 ZOOM_STEP = 0.05  # a zoomed sweep's ends: the span of P(valid) rounded out to this step
