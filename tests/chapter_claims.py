@@ -696,7 +696,7 @@ def _sampling_in_algorithm_1() -> list[str]:
 
 
 EAGER_ROW = "3DC-7, Algorithm 1"  # section 5's planning row: the paper's claim with an accurate network
-MOVED = "so the machine's speed moved between the two modes' runs"  # findings.per_point_sentence, where it did
+MOVED = "so something besides prediction moved between the two modes' runs"  # findings.per_point_sentence, where it did
 CLAIM = re.compile(
     r"inside the paper's Algorithm 1, 3DC-7, uniform sampler, (\d+) quer(?:y|ies): time with / without "
     r"prediction ([\d.]+) \(middle half ([\d.]+)–([\d.]+)\), (prediction saved time|prediction cost time|"
@@ -718,8 +718,8 @@ def _eager_rows(found: list[tuple[list[str], list[list[str]]]]) -> list[list[str
 def _paper_claim(nb, found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
     """Section 5 states its small run's verdict under its table, as its planning row gives it: the same queries,
     median, middle half and verdict (reader r12a; "can't tell" where the line on the cost of an edge point says the
-    machine's speed moved, review r25a), and how few queries that is (review r13a); the paper's claim
-    itself is read from the recorded runs (:func:`_claim_status`)."""
+    same check took a different time in the two modes, review r25a), and how few queries that is (review r13a); the
+    paper's claim itself is read from the recorded runs (:func:`_claim_status`)."""
     rows = _eager_rows(found)
     said = [m.groups() for m in CLAIM.finditer(" ".join(texts(nb)))]
     if not rows or len(said) != 1:

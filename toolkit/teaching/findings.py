@@ -83,14 +83,15 @@ SAID = {  # a planning verdict at the end of a sentence (its band filled in)
 
 
 SPEED_MOVED = (  # a planning sentence's verdict where the same exact check's cost moved between the modes (review r25a)
-    "can't tell: the machine's speed moved (the same exact check of an edge point took {ratio:.2f} times as long "
-    "with prediction)"
+    "can't tell: the same exact check of an edge point took {ratio:.2f} times as long with prediction, so something "
+    "besides prediction moved this run's times"
 )
 
 
 def speed_moved(per_point: Mapping[str, float], tie: float = TIE) -> float | None:
     """The time per exact edge point with / without prediction, ``{"without": s, "with": s}``, where it lies outside
-    the tie band (the machine's speed moved between the two modes' runs, :func:`per_point_sentence`), else ``None``."""
+    the tie band (something besides prediction moved between the two modes' runs, :func:`per_point_sentence`; reader
+    r33d: interleaved turns share a slow spell, so a steady ratio need not be the machine), else ``None``."""
     ratio = per_point["with"] / per_point["without"]
     return None if time_verdict(ratio, tie=tie) == TIES else ratio
 
@@ -100,7 +101,7 @@ def planning_sentence(what: str, row: Mapping[str, Mapping], tie: float = TIE, m
     per-query ratios' median and middle half, and the verdict of :func:`planning_verdict` in words (never "saves"
     beside ratios above 1: the words are read from the same interval as the table's); with ``moved``
     (:func:`speed_moved`), "can't tell" instead: the same exact check cost that much more or less in one mode, so the
-    time ratio measures the machine, not prediction (review r25a)."""
+    time ratio measures more than prediction (review r25a)."""
     median, q1, q3, said = planning_verdict(row, tie)
     n = row["without"]["n_queries"]
     verdict = SAID[said].format(band=f"{tie:.0%}") if moved is None else SPEED_MOVED.format(ratio=moved)
@@ -175,9 +176,9 @@ def per_point_sentence(per_point: Mapping[str, float], tie: float = TIE) -> str:
     if time_verdict(with_ / without, tie=tie) == TIES:
         return f"{said}: the same cost, as it should be, since the same exact checker checks both modes' edges."
     return (
-        f"{said}: {with_ / without:.2f} times as much with prediction for the same exact check of a point, so the "
-        "machine's speed moved between the two modes' runs; read the edge points, not this stage's time, for what "
-        "prediction changed."
+        f"{said}: {with_ / without:.2f} times as much with prediction for the same exact check of a point, so "
+        "something besides prediction moved between the two modes' runs; read the edge points, not this stage's "
+        "time, for what prediction changed."
     )
 
 
