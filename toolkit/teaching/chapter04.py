@@ -20,7 +20,7 @@ from collections.abc import Mapping
 import numpy as np
 from matplotlib.figure import Figure
 
-from toolkit.experiments.paper_numbers import TIMES
+from toolkit.experiments.paper_numbers import TIMES, saved_beyond_sampling
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.answer import answer_ratios
 from toolkit.teaching import checker_scope, costs, findings, recorded
@@ -302,12 +302,7 @@ def beyond_sampling(tables: Tables | None = None) -> str:
     the cells whose total saving exceeds all their sampling time without prediction, the largest two in different
     scenarios, and how many of them save less than a query's time spreads (its standard deviation without); ours
     with python-fcl on both sides: the savings larger than their sampling stage's, as shares of the mean query."""
-    over = {}  # the paper's cells: (seconds saved, seconds of sampling without, standard deviation without)
-    for key, kinds in TIMES.items():
-        for sampler, ((total_without, spread), (total_with, _)) in kinds["total_s"].items():
-            sampling = kinds["sampling_s"][sampler][0][0]
-            if total_without - total_with > sampling:
-                over[key, sampler] = (total_without - total_with, sampling, spread)
+    over = saved_beyond_sampling()  # the paper's cells: (seconds saved, seconds of sampling without, its spread)
     best = {key: max((c for c in over if c[0] == key), key=lambda c: over[c][0]) for key, _ in over}
     first, second = sorted(best.values(), key=lambda c: -over[c][0])[:2]
     spread = sum(over[c][2] > over[c][0] for c in over)
