@@ -189,13 +189,9 @@ def edge_line(tables: Tables | None = None) -> str:
     reach = costs.noise_edge(tables)
     named = []
     for preset, who in ((recorded.ALGORITHM_1, "our fast checker"), (checker_scope.SLOW, "python-fcl")):
-        cells = [
-            f"{checker_scope.NAMES[key]} {s} {median:.2f}"
-            for key, by_sampler in costs.middle_halves(preset, tables).items()
-            for s, (median, _, _) in by_sampler.items()
-            if time_verdict(median) in (COSTS, SAVES) and abs(median - 1) < reach
-        ]
-        count = costs.at_edge(preset, tables)
+        edge = costs.edge_cells(preset, tables)
+        cells = [f"{checker_scope.NAMES[key]} {s} {median:.2f}" for key, s, median in edge]
+        count = Counter(time_verdict(median) for _, _, median in edge)
         said = f"{who}, {count[COSTS]} of its costs and {count[SAVES]} of its savings"
         named.append(said + (f": {', '.join(cells)}" if cells else ""))
     return (

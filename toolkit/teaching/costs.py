@@ -171,14 +171,19 @@ def noise_edge(tables: Tables | None = None) -> float:
     return NOISE_EDGE * timing_reach(tables)
 
 
-def at_edge(preset: str, tables: Tables | None = None) -> Counter:
-    """How many of ``preset``'s saves and costs (by the median of each query's own ratio) lie at the noise edge, less
-    than :func:`noise_edge` from 1: the results page's count (review r31d: one rule for the page and the record)."""
+def edge_cells(preset: str, tables: Tables | None = None) -> list[tuple[str, str, float]]:
+    """``preset``'s saves and costs (by the median of each query's own ratio) that lie at the noise edge, less than
+    :func:`noise_edge` from 1: ``[(scenario key, sampler, median), ...]``, the results page's cells (review r31d: one
+    rule for the page and the record)."""
     reach = noise_edge(tables)
-    edge: Counter = Counter()
-    for by_sampler in middle_halves(preset, tables).values():
-        for median, _, _ in by_sampler.values():
-            verdict = time_verdict(median)
-            if verdict in (COSTS, SAVES) and abs(median - 1) < reach:
-                edge[verdict] += 1
-    return edge
+    return [
+        (key, sampler, median)
+        for key, by_sampler in middle_halves(preset, tables).items()
+        for sampler, (median, _, _) in by_sampler.items()
+        if time_verdict(median) in (COSTS, SAVES) and abs(median - 1) < reach
+    ]
+
+
+def at_edge(preset: str, tables: Tables | None = None) -> Counter:
+    """How many of :func:`edge_cells` are saves and how many costs."""
+    return Counter(time_verdict(median) for _, _, median in edge_cells(preset, tables))
