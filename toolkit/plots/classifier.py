@@ -285,10 +285,9 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     cross = dict(markersize=10, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True))  # over the path (5)
     ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **cross)  # as the maps' squares (r30c)
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
-    for node in nodes[~nodes_valid][:3]:  # a few named in words as well
-        ax.annotate(
-            "in collision", node[[x, y]], xytext=(12, 12), textcoords="offset points", fontsize=9, zorder=7, bbox=box
-        )
+    label = dict(xytext=(-10, 10), textcoords="offset points", ha="right", va="bottom", fontsize=9, zorder=7, bbox=box)
+    for node in nodes[~nodes_valid][:3]:  # a few named in words as well, above-left: on the map's light side, off the
+        ax.annotate("in collision", node[[x, y]], **label)  # dotted line and nodes right of it (r33c: above-right hid)
     ax.plot(
         path[:, x],
         path[:, y],
