@@ -15,8 +15,8 @@ def test_the_opening_table_gives_the_papers_accuracy_as_reported_and_its_balance
     paper = next(line for line in lines if line.startswith("| the paper's MLP"))
     assert f"as reported: {published['acc']:.0%})" in paper
     assert f"| {(published['tpr'] + published['tnr']) / 2:.1%} |" in paper  # 87.5 %, not the reported 88 %
-    strong7 = recorded.table("strong", "MLP accuracy")["3dc7"]
-    label = "our `strong` preset, 3DC-7, recorded run"  # r29c, r30c
+    strong7 = recorded.table(recorded.ALGORITHM_1, "MLP accuracy")["3dc7"]  # r33c: the summary's, Figure 1's network
+    label = "our `strong` preset, 3DC-7, recorded run (Figure 1's network)"  # r29c, r30c
     assert any(line.startswith(f"| {label} | {recorded.ours(strong7['Balanced unseen Acc']):.0%} |") for line in lines)
     paper7 = "| the paper's MLP, its Table 2, 3DC-7 (a 7-DoF chain of two boxes in 3D, section 5; its accuracy, as "
     assert lines[5].startswith(paper7 + "reported: 71%) | 73.0% | 85% | 61% |")  # r32c: 3DC-7 defined, beside ours
@@ -24,39 +24,50 @@ def test_the_opening_table_gives_the_papers_accuracy_as_reported_and_its_balance
     assert "preset (the toolkit's training recipe" in lines[3]
 
 
-def test_the_closing_table_holds_the_paper_and_each_recorded_run_above_this_pages_draw_and_a_box_the_other_runs():
-    """Reader r29c: thirteen rows, the others folded; reader r30c: the recorded run (55 %) in the fold and this page's
-    draw (53 %) visible, named alike: each recorded run now stands directly above this page's draw of it."""
-    scores = {"paper\nbalanced": {"acc": 0.5, "tpr": 0.3, "tnr": 0.7}, "always valid\nbalanced": {"acc": 0.5}}
-    scores["always valid\nbalanced"] |= {"tpr": 1.0, "tnr": 0.0}
-    evaluation = {"mlp": {"unseen": {"acc": 0.9, "tpr": 0.8, "tnr": 1.0}}}
-    table = chapter03.closing_table(scores, lambda scenario, preset: evaluation)
-    rows = [line.split(" | ")[0].lstrip("| ") for line in table.splitlines()[2:]]
-    assert rows == [
-        "the paper's Table 2, 2DS unseen",
-        "`paper` preset, 2DS unseen, recorded run (docs/results.md)",
-        "`paper` preset, 2DS unseen, this page's draw (section 4)",
-        "always valid",
-        "the paper's Table 2, 3DC-7 unseen",  # reader r32c
-        "`strong` preset, 3DC-7 unseen, recorded run (docs/results.md)",
-        "`strong` preset, 3DC-7 unseen, this page's model (`trained_scores`)",
+def test_the_closing_table_holds_the_paper_row_and_this_pages_draws_in_six_rows():
+    """Reader r33c: fourteen rows and a box of other runs said again what the opening table and section 4 say; the
+    paper's samples are unstated (§IV-A says validity-blind), its rates imply a share of valid ones."""
+    rates = {"acc": 0.5, "tpr": 0.3, "tnr": 0.7}
+    scores = {f"{who}\n{kind}": rates for kind in ("balanced", "validity-blind") for who in ("paper", "strong")}
+    scores |= {f"always valid\n{kind}": {"acc": 0.5, "tpr": 1.0, "tnr": 0.0} for kind in ("balanced", "validity-blind")}
+    table = chapter03.closing_table(scores)
+    rows = [line.split(" | ")[:2] for line in table.splitlines()[2:]]
+    assert [" | ".join(row).lstrip("| ") for row in rows] == [
+        "the paper's Table 2, 2DS unseen | unstated (§IV-A: validity-blind); its rates imply 60% valid",
+        "`paper` preset, 2DS unseen, this page's draw (section 4) | balanced",
+        "`strong` preset, 2DS unseen, this page's draw (section 4) | balanced",
+        "`paper` preset, 2DS unseen, this page's draw (section 4) | validity-blind",
+        "`strong` preset, 2DS unseen, this page's draw (section 4) | validity-blind",
+        "always valid | validity-blind",
     ]
-    paper_row = "| validity-blind by §IV-A; its rates imply 60% valid | 88% | 90% / 85% | 87.5% |"  # r31c
-    assert paper_row in table  # the paper's, as the opening table prints it
-    assert "| validity-blind by §IV-A; its rates imply 42% valid | 71% | 85% / 61% | 73.0% |" in table  # r32c
-    paper2, strong7 = (recorded.table(p, "MLP accuracy")[s] for p, s in (("paper", "2ds"), ("strong", "3dc7")))
-    opening = chapter03.opening_table()
-    for row in (paper2, strong7):  # the recorded rows carry the opening table's numbers, rounded alike
-        said = [f"{recorded.ours(row[c]):.0%}" for c in ("Balanced unseen Acc", "TPR", "TNR")]
-        assert f"| {said[0]} | {said[1]} / {said[2]} |" in table and f"| {' | '.join(said)} |" in opening
-    kept, valid = np.array([True, False, True, True]), np.array([True, False, False, True])
-    box = chapter03.other_runs((kept, valid), lambda scenario, preset: evaluation)
-    assert box.startswith("<details><summary>") and box.endswith("</details>")
-    rows = [line.split(" | ")[0].lstrip("| ") for line in box.splitlines() if line.startswith("| `")]
-    assert rows[0] == "`strong` preset, 3DC-7 slice of section 5"
-    assert sum("this page's model (`trained_scores`)" in row for row in rows) == 2
-    assert not any("recorded run" in row for row in rows)  # r30c: visible in the closing table, not folded
-    assert "| its 4 cells | 75% | 100% / 50% | 75% |" in box
+    assert "| 88% | 90% / 85% | 87.5% |" in table  # the paper's, its balanced accuracy as the opening table prints it
+
+
+def test_near_a_boundary_counts_the_other_truth_and_the_walls_never_the_edge_of_an_obstacle():
+    """Reader r33c: an obstacle block in the map's corner made its kept cells "near a boundary" for touching the
+    map's edge; beyond a position map's edge lie the walls (in collision), beyond an angle's it wraps round."""
+    truth = np.ones((12, 12), dtype=bool)
+    truth[:4, :4] = False  # a block in the corner
+    close = chapter03.near_boundary(truth, 1)
+    assert close[3, 0] and close[4, 0] and close[0, 11]  # beside the other truth; a free cell against the wall
+    assert not close[0, 0] and not close[6, 6]  # an obstacle cell in the corner; a free one in the middle
+    assert chapter03.near_boundary(truth, 2)[5, 1] and not chapter03.near_boundary(truth, 2)[6, 6]
+    wrapped = chapter03.near_boundary(truth, 1, edge="wrap")
+    assert wrapped[11, 0] and not wrapped[0, 11] and not wrapped[6, 6]  # the first axis wraps; no walls
+    kept = truth.copy()
+    kept[0, 0] = True  # a dangerous cell in the corner, two steps from any free cell
+    grid = type("Grid", (), {"axes": (np.arange(12.0), np.arange(12.0))})()
+    table = chapter03.mistakes_table({"m": kept.astype(float)}, {"m": 0.5}, truth, grid, 1)
+    assert "| 1; 0% (of all obstacle cells: 44%) | 1 at (0.0, 0.0) |" in table
+
+
+def test_groups_name_each_cluster_of_marked_cells_not_one_box_round_them():
+    marked = np.zeros((30, 30), dtype=bool)
+    marked[2:4, 2:5] = marked[25, 26] = True
+    grid = type("Grid", (), {"axes": (np.arange(30.0) / 2, np.arange(30.0))})()
+    assert chapter03.groups(marked, grid, 2) == "6 in x 1.0–1.5, y 2.0–4.0; 1 at (12.5, 26.0)"
+    assert chapter03.groups(marked, grid, 2, most=1) == "6 in x 1.0–1.5, y 2.0–4.0; 1 more in 1 smaller group"
+    assert chapter03.groups(~np.ones((3, 3), dtype=bool), grid, 2) == "none"
 
 
 def test_the_mistakes_table_prints_a_share_below_1_percent_with_a_decimal():

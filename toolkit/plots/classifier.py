@@ -80,6 +80,7 @@ def probability_maps(
     said, parts = [], []
     for ax, (name, probability), t in zip(axes, probabilities.items(), cut.values()):
         image = _draw_probability(ax, probability, valid, grid, t)
+        ax.set_box_aspect(1)  # square, as section 4's decision map (reader r33c: 2DS's square drawn 32 % wide)
         bar = fig.colorbar(image, ax=ax, label=f"P(valid); the line: threshold {t:.2f}", shrink=0.9)
         bar.ax.axhline(t, color=COLORS["ink"], linewidth=2.5, path_effects=halo(2.5, ("free",)))
         counts = confusion_counts(np.asarray(probability) >= t, valid)
@@ -160,16 +161,13 @@ def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> 
     balanced = [(s["tpr"] + s["tnr"]) / 2 for s in scores.values()]
     x, line = np.arange(len(scores)), dict(linestyles="--", linewidth=1.5, zorder=4, label="balanced accuracy")
     ax.hlines(balanced, x - 0.42, x + 0.42, colors=COLORS["ink"], path_effects=halo(1.5, ("free",)), **line)  # type: ignore[arg-type]
-    if any(scores):  # each group's balanced accuracy named under it; a bar's value on the line lifted off it (r30c)
+    if any(scores):  # each group's balanced accuracy named under it, not on the line (r30c)
         ax.set_xticks(x, [f"{name}\nbal. acc. {b:.2f}" for name, b in zip(scores, balanced)], fontsize=8)
     ax.legend(fontsize=8, loc="upper center", ncols=2, frameon=False)  # the rates' legend, and the line's
     fig.suptitle(title or "Accuracy, TPR (valid kept), TNR (invalid rejected)")
-    fig.draw_without_rendering()  # laid out: a share's height in points
-    per = ax.bbox.height / np.diff(ax.get_ylim())[0] * 72 / fig.dpi
-    for value in [t for t in ax.texts if isinstance(t, Annotation)]:  # bar_label's: at (a bar's middle, its top)
-        below = balanced[round(value.xy[0])] - value.xy[1]  # the dashed line above the bar; the value ~20 points long
-        if -0.03 < below < 24 / per:
-            value.xyann = (value.xyann[0], max(value.xyann[1], below * per + 5))  # starts above the dashed line
+    for value in [t for t in ax.texts if isinstance(t, Annotation)]:  # bar_label's: each on its bar's top, over the
+        value.set_zorder(5)  # dashed line in a white ring (reader r33c: one lifted above the line read as the line's)
+        value.set_path_effects(halo(2.5, ("free",)))
     said = "; ".join(
         f"{name}: accuracy {s['acc']:.2f}, TPR {s['tpr']:.2f}, TNR {s['tnr']:.2f}, balanced accuracy {b:.2f}"
         for (name, s), b in zip(scores.items(), balanced)
@@ -287,10 +285,9 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     cross = dict(markersize=10, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True))  # over the path (5)
     ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **cross)  # as the maps' squares (r30c)
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
-    for node in nodes[~nodes_valid][:3]:  # a few named in words as well
-        ax.annotate(
-            "in collision", node[[x, y]], xytext=(12, 12), textcoords="offset points", fontsize=9, zorder=7, bbox=box
-        )
+    label = dict(xytext=(-10, 10), textcoords="offset points", ha="right", va="bottom", fontsize=9, zorder=7, bbox=box)
+    for node in nodes[~nodes_valid][:3]:  # a few named in words as well, above-left: on the map's light side, off the
+        ax.annotate("in collision", node[[x, y]], **label)  # dotted line and nodes right of it (r33c: above-right hid)
     ax.plot(
         path[:, x],
         path[:, y],
