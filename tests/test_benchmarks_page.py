@@ -97,7 +97,7 @@ def test_the_opening_says_what_a_check_costs_as_the_checker_table_measured_it():
     assert said_at_top(r"and (\S+) times the network's answer") == (
         f"{min(times_less):.1f}–{max(times_less):.1f}"  # review r25c, item 3: 3DC-7's 8.7, not 9
     )
-    assert said_at_top(r"our compiled exact checker (\S+) µs") == µs(exact, 2)
+    assert said_at_top(r"our compiled exact checker costs (\S+) µs") == µs(exact, 2)
     # review r25c, "what lifts it", item 2: one plain sentence first, its ratio the checker table's, said once
     first = r"^: in the paper's 3D scenes, all made of blocks, the network's answer costs (\S+) times as much as"
     assert said_at_top(first) == (
@@ -848,3 +848,27 @@ def test_reader_r33g_race_slips_read_from_the_race_s_tables():
     assert "With OMPL's checks batched (its time less its Python callbacks, plus one batched call of our checker" in (
         RACE_SUMMARY
     )
+
+
+def test_the_break_even_is_worked_through_from_the_checker_table():
+    """Reader r33g, benchmarks lift 1, 2 and 4: "In short" in three sentences (the verdict, the three costs, where the
+    network is the cheaper check), its machine, date, load and the sweep's ranges in a fold below it; one worked
+    break-even line near the top, read from the checker table's 3DC-9 row: what each answer the network gives in
+    place of a compiled check costs more, and what it would save in place of python-fcl's."""
+    assert len(re.findall(r"[a-z)]\. [A-Z(]", LEAD)) + 1 == 3 and "load average" not in LEAD
+    exact, fcl = (
+        1e6 / numbers(column(h)["3DC-9"])[0]
+        for h in ("default exact: configurations a second", "python-fcl: configurations a second")
+    )
+    network = [1 / r for r in numbers(column("network: configurations a second")["3DC-9"])]  # millions a second
+    more = f"{min(network) - exact:.2f}–{max(network) - exact:.2f}"
+    saved = {f"{fcl - n:.1f}" for n in network}
+    assert len(saved) == 1
+    flat = " ".join(PAGE.split())
+    assert (
+        f"*Worked through for 3DC-9*: a compiled check costs {exact:.3f} µs and the network's answer "
+        f"{min(network):.2f}–{max(network):.2f} µs, so each answer the network gives in place of a check costs {more} "
+        f"µs more; in place of python-fcl's {fcl:.1f} µs it would save {saved.pop()} µs."
+    ) in flat
+    assert flat.index("*Worked through for 3DC-9*") < flat.index("## How to read this page")
+    assert "3.4–4 times cheaper" not in flat  # reader r33g, lift 8: the mesh result one way, as a time ratio
