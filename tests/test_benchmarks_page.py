@@ -872,3 +872,13 @@ def test_the_break_even_is_worked_through_from_the_checker_table():
     ) in flat
     assert flat.index("*Worked through for 3DC-9*") < flat.index("## How to read this page")
     assert "3.4–4 times cheaper" not in flat  # reader r33g, lift 8: the mesh result one way, as a time ratio
+
+
+def test_the_race_s_table_and_chart_come_before_its_notes_on_other_runs():
+    """Reader r33g, race lift 3 and 5: "An older commit" (the aa0eb97 rerun) stood before the table; it follows the
+    chart now. The reconciliation with the Results page's timings, not teaching, is a fold."""
+    measured = RACE.partition("## What it measured")[2]
+    assert measured.index("| scenario, seed | ours: RRT-Connect") < measured.index("](planner_race.png)")
+    assert measured.index("](planner_race.png)") < measured.index("**An older commit.**")
+    fold = RACE.rpartition("<details")[2].partition("</details>")[0]
+    assert "- **Against the Results page's timings.**" in fold
