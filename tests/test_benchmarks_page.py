@@ -882,3 +882,16 @@ def test_the_race_s_table_and_chart_come_before_its_notes_on_other_runs():
     assert measured.index("](planner_race.png)") < measured.index("**An older commit.**")
     fold = RACE.rpartition("<details")[2].partition("</details>")[0]
     assert "- **Against the Results page's timings.**" in fold
+
+
+def test_each_row_of_the_race_s_chart_says_whose_it_is():
+    """Reader r33g, race figure: the scenario's name sat between its two rows, so which was OMPL's took a moment; a
+    thin "OMPL" / "ours" tag at the left of each row says it (OMPL's above, ours below, as the dots are drawn)."""
+    from toolkit.plots import race
+
+    medians, batched = race.from_tables(RACE, 9300)
+    ax = race.race_medians(medians, batched, seed=9300).axes[0]
+    ticks = dict(zip(ax.get_yticks(minor=True), (t.get_text() for t in ax.get_yticklabels(minor=True)), strict=True))
+    assert [ticks[k] for k in sorted(ticks)] == ["OMPL", "ours"] * len(medians)
+    ours = next(line for line in ax.lines if line.get_label() == "ours: RRT-Connect")
+    assert all(ticks[y] == "ours" for y in ours.get_ydata())
