@@ -81,8 +81,8 @@ def race_medians(
     ax.set_xticks(ticks, [f"{v:g}" for v in ticks])  # plain numbers, not 10^2
     ax.xaxis.set_minor_locator(NullLocator())
     ax.set_yticks(range(len(scenarios)), scenarios)
-    rows = [y + d for y in range(len(scenarios)) for d in (-0.15, 0.15)]  # reader r33g: each row says whose it is
-    ax.set_yticks(rows, ["OMPL", "ours"] * len(scenarios), minor=True)
+    tagged = [y + d for y in range(len(scenarios)) for d in (-0.15, 0.15)]  # reader r33g: each row says whose it is
+    ax.set_yticks(tagged, ["OMPL", "ours"] * len(scenarios), minor=True)
     ax.tick_params(axis="y", which="minor", labelsize=POINTS - 1, labelcolor=COLORS["rejected"], length=2)
     ax.tick_params(axis="y", which="major", length=0, pad=POINTS * 3.6)  # the scenario left of its two rows' tags
     ax.set_ylim(len(scenarios) - 0.5, -0.5)  # the first scenario on top
