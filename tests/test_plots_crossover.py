@@ -75,7 +75,14 @@ def test_the_text_alternative_says_when_the_sweep_was_measured_and_ticks_name_te
     assert '3DC-7, the network at the "strong" preset\'s sizes' in strong.get_suptitle()
     low = {**SWEEP, "exact_us": [0.09, 0.1, 0.12, 0.14], "learned_us": [0.3] * 4, "fcl_us": [5, 50, 500, 900]}
     ax = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"obstacles": low}}).axes[0]
-    assert {"0.1", "0.2", "0.5"} <= {t.get_text() for t in ax.get_yticklabels()}  # four decades: 1-2-5 below 1
+    # reader r33g: on four decades and more, 1-2-5 below 1 crowded (1 / 0.5 / 0.2): decades named, 2 and 5 short ticks
+    assert {"0.1", "1"} <= {t.get_text() for t in ax.get_yticklabels()}
+    assert not {"0.2", "0.5"} & {t.get_text() for t in ax.get_yticklabels()}
+    assert {0.2, 0.5} <= {round(t, 3) for t in ax.get_yticks(minor=True)}
+    assert not any(t.get_text() for t in ax.get_yticklabels(minor=True))
+    narrow = {**low, "fcl_us": [5, 6, 7, 8]}  # three decades: the network's few tenths named (reader r24c)
+    ax = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"obstacles": narrow}}).axes[0]
+    assert {"0.1", "0.2", "0.5"} <= {t.get_text() for t in ax.get_yticklabels()}
 
 
 def test_a_tick_label_that_would_touch_its_neighbour_is_left_out_and_the_last_is_always_named():
@@ -225,3 +232,19 @@ def test_the_call_size_panel_marks_our_planners_calls():
     assert f"calls of the sizes a network could answer, {low} to {high} configurations" in alt_text(fig)
     plain = crossover({"scenario": "2ds", "preset": "paper", "quick": False, "variables": {"batch": batch}})
     assert not plain.axes[0].patches and "planner calls" not in alt_text(plain)
+
+
+def test_the_recorded_figure_names_only_decades_on_its_widest_panels():
+    """Reader r33g: the mesh panel's 1 / 0.5 / 0.2 and the call-size panel's 0.2 / 0.1 / 0.05 crowded; those two panels
+    (four decades and more) name only decades now, the obstacles' and the links' (under 3.5) keep 0.2 and 0.5; the
+    network's triangles are no larger than the compiled check's circles, so they hide no value."""
+    import json
+
+    from toolkit.plots.crossover import MARKS
+
+    recorded = json.loads((Path(__file__).resolve().parents[1] / "docs" / "crossover.json").read_text())
+    fig = crossover(recorded)
+    named = {ax.get_title(): {t.get_text() for t in ax.get_yticklabels()} for ax in fig.axes if ax.get_visible()}
+    wide = [title for title, labels in named.items() if not {"0.2", "0.5"} & labels]
+    assert sorted(wide) == ["Call size", "Mesh (paper scenes: no mesh)"], named
+    assert MARKS["learned"]["markersize"] <= MARKS["exact"]["markersize"]

@@ -250,7 +250,8 @@ TICK_POINTS = 9
 MARKS: dict[str, dict] = {  # where two curves meet, the network's triangle beneath, the exact circle and python-fcl's
     "exact": dict(markersize=6, zorder=3.5),  # square above it, each ringed in white (review r19a: at a batch of one
     "fcl": dict(markersize=7, zorder=3, markeredgecolor=COLORS["free"]),  # the triangle nearly covered the square;
-    "learned": dict(markersize=8, zorder=2.5, alpha=0.8, path_effects=halo(1.5)),  # r23a/c: it hid the exact curve)
+    "learned": dict(markersize=6, zorder=2.5, alpha=0.8, path_effects=halo(1)),  # r23a/c: it hid the exact curve;
+    # r33g: at 8 points it hid where the network's own values lie
 }
 
 
@@ -286,13 +287,24 @@ def _crossings(sweep: dict, name: str) -> list[float]:
 
 def _plain_log_ticks(ax) -> None:
     """The y axis labelled in plain numbers at 1-2-5 steps (0.2, 0.5, 1, 2, ...) where it spans under three decades,
-    at each decade otherwise, and at 1-2-5 steps below 1 µs always: the decade where curves cross is never left
-    without a number, nor the network's and the compiled check's few tenths of a µs (reader r24c)."""
+    at each decade otherwise, and at 1-2-5 steps below 1 µs where it spans under :data:`WIDE` decades: the decade
+    where curves cross is never left without a number, nor the network's and the compiled check's few tenths of a µs
+    (reader r24c). On a wider axis (the mesh's and the call size's, four decades or more) the labels below 1 crowd
+    (reader r33g: 1 / 0.5 / 0.2 and 0.2 / 0.1 / 0.05): there only decades are named, 2 and 5 short unnamed ticks."""
     lo, hi = ax.get_ylim()
+    wide = hi / lo >= 10**WIDE
     steps = (1, 2, 5) if hi / lo < 10**2.5 else (1,)
+    below = (1,) if wide else (1, 2, 5)
     decades = range(int(np.floor(np.log10(lo))), int(np.ceil(np.log10(hi))) + 1)
-    ticks = [m * 10.0**e for e in decades for m in (steps if e >= 0 else (1, 2, 5)) if lo <= m * 10.0**e <= hi]
+    ticks = [m * 10.0**e for e in decades for m in (steps if e >= 0 else below) if lo <= m * 10.0**e <= hi]
     ax.set_yticks(ticks, [f"{t:g}" for t in ticks])
+    if wide:
+        minor = [m * 10.0**e for e in decades for m in (2, 5) if lo <= m * 10.0**e <= hi]
+        ax.set_yticks(minor, minor=True)
+        ax.yaxis.set_minor_formatter(NullFormatter())
+
+
+WIDE = 3.5  # decades: an axis this wide or wider names only its decades (the obstacles' and links' panels span fewer)
 
 
 def _cheaper(sweep: dict) -> np.ndarray:
@@ -370,5 +382,5 @@ def _name_ticks(ax, measured: np.ndarray, chosen: tuple[float, ...] | None = Non
             label.set_rotation_mode("anchor")  # the label's end at its tick, whatever the angle
 
 
-SLANT = 60  # degrees: two labels a line's height apart along the axis lie a line's height apart across their slant
-# times sin 60° (reader r27f: at 45° the obstacles' 350 and 500 nearly touched)
+SLANT = 75  # degrees: two labels a line's height apart along the axis lie a line's height apart across their slant
+# times sin 75° (reader r27f: at 45° the obstacles' 350 and 500 nearly touched; reader r33g: at 60° almost)

@@ -73,7 +73,7 @@ def race_medians(
         ax.plot(x, y, marker, color=colour, markersize=8, ls="none", label=planner, clip_on=False)
         if batched and all(planner in batched[s] for s in scenarios):
             x = [batched[s][planner] for s in scenarios]
-            ax.plot(x, y, marker, color=colour, markersize=8, ls="none", mfc=COLORS["free"], mew=1.8,
+            ax.plot(x, y, marker, color=colour, markersize=9, ls="none", mfc=COLORS["free"], mew=2.4,
                     label=f"{planner}, checks batched (hollow: estimated)", clip_on=False)  # fmt: skip
     ax.set_xscale("log")
     low, high = ax.get_xlim()
@@ -81,6 +81,10 @@ def race_medians(
     ax.set_xticks(ticks, [f"{v:g}" for v in ticks])  # plain numbers, not 10^2
     ax.xaxis.set_minor_locator(NullLocator())
     ax.set_yticks(range(len(scenarios)), scenarios)
+    tagged = [y + d for y in range(len(scenarios)) for d in (-0.15, 0.15)]  # reader r33g: each row says whose it is
+    ax.set_yticks(tagged, ["OMPL", "ours"] * len(scenarios), minor=True)
+    ax.tick_params(axis="y", which="minor", labelsize=POINTS - 1, labelcolor=COLORS["rejected"], length=2)
+    ax.tick_params(axis="y", which="major", length=0, pad=POINTS * 3.6)  # the scenario left of its two rows' tags
     ax.set_ylim(len(scenarios) - 0.5, -0.5)  # the first scenario on top
     ax.grid(axis="x", color=COLORS["block"], lw=0.6, zorder=0)
     for between in np.arange(len(scenarios) - 1) + 0.5:  # reader r31f: a line between scenarios, the dots in rows
