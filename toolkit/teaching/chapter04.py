@@ -174,28 +174,21 @@ def answer(tables: Tables | None = None) -> str:
         "its means (ours by means: section 6).\n"
         "- **Why**: prediction only skips the samples' checks; without prediction sampling took at most "
         f"{100 * share:.0f} % of a mean query with our fast checker, so skipping them could save at most that, even "
-        "with a network that cost nothing. The rest is exact checks of points along the roadmap's edges (section 5).\n"
+        "with a network that cost nothing. The rest is exact checks of points along the roadmap's edges, which "
+        "Algorithm 1 never asks the network about (section 5).\n"
         f"- **Cost**: {_adds(tables)}."
     )
 
 
 def edge_line(tables: Tables | None = None) -> str:
-    """Section 6's noise edge in numbers (review r32d: the page never printed it): how far timing one computation
-    twice moved a median (:func:`toolkit.teaching.costs.timing_reach`), the band twice that spans, and the cells of
-    the answer's table whose saving or cost lies inside it (:func:`toolkit.teaching.costs.at_edge`'s rule)."""
+    """The footnote under section 6's tables (reader r33d: one band in prose, the noise edge a mark in the table):
+    what the mark :data:`toolkit.teaching.costs.MARK` on a verdict means, the band it marks (twice how far timing one
+    computation twice moved a median ratio, :func:`toolkit.teaching.costs.timing_reach`) and where that was measured."""
     reach = costs.noise_edge(tables)
-    named = []
-    for preset, who in ((recorded.ALGORITHM_1, "our fast checker"), (checker_scope.SLOW, "python-fcl")):
-        edge = costs.edge_cells(preset, tables)
-        cells = [f"{checker_scope.NAMES[key]} {s} {median:.2f}" for key, s, median in edge]
-        count = Counter(time_verdict(median) for _, _, median in edge)
-        said = f"{who}, {count[COSTS]} of its costs and {count[SAVES]} of its savings"
-        named.append(said + (f": {', '.join(cells)}" if cells else ""))
     return (
-        "**At the noise edge.** Timing one computation twice moved a median ratio up to "
-        f"{costs.timing_reach(tables):.2f} from 1 (`docs/results.md`, under its Figure 1), so a saving or a cost "
-        f"between {1 - reach:.2f} and {1 + reach:.2f}, twice that reach, keeps its verdict word in the table but is "
-        "no clear evidence on its own. In the table above these are, for " + "; for ".join(named) + "."
+        f"{costs.MARK} inside timing's own reach, {1 - reach:.2f}–{1 + reach:.2f}: no clear evidence (twice the "
+        f"{costs.timing_reach(tables):.2f} by which timing one computation twice moved a median ratio, "
+        "`docs/results.md` under its Figure 1)."
     )
 
 
