@@ -697,7 +697,7 @@ def _sampling_in_algorithm_1() -> list[str]:
 
 
 EAGER_ROW = "3DC-7, Algorithm 1"  # section 5's planning row: the paper's claim with an accurate network
-MOVED = "so something besides prediction moved between the two modes' runs"  # findings.per_point_sentence, where it did
+MOVED = "so the mix of work per point checked differs between the modes"  # findings.per_point_sentence, where it did
 CLAIM = re.compile(
     r"inside the paper's Algorithm 1, 3DC-7, uniform sampler, (\d+) quer(?:y|ies): time with / without "
     r"prediction ([\d.]+) \(middle half ([\d.]+)–([\d.]+)\), (prediction saved time|prediction cost time|"
