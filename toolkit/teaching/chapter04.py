@@ -316,17 +316,17 @@ def beyond_sampling(tables: Tables | None = None) -> str:
     )
 
 
-SERIES = {  # the answer figure's legend (review r28d: the circles are our fast checker, compiled in 3D only)
-    "the paper's Table 3": "the paper's Table 3: its means",
-    "ours (`strong` preset), medians": "our fast checker (compiled in 3D, numpy in 2DS): median ratio, middle half",
-    "ours (`strong`, python-fcl), medians": "python-fcl on both sides: the same",
+SERIES = {  # the answer figure's legend, a line a series (reader r33d: five lines for three marker kinds)
+    "the paper's Table 3": "the paper's Table 3 (its means)",
+    "ours (`strong` preset), medians": "ours, our fast checker (compiled in 3D, numpy in 2DS)",
+    "ours (`strong`, python-fcl), medians": "ours, python-fcl on both sides",
 }
 
 
 def answer_figure(tables: Tables | None = None) -> Figure:
-    """The answer's evidence, under it (review r28d: it came at screen 15 of 18): the paper's Table 3 beside our
-    accurate network inside Algorithm 1, with the fast checker and with python-fcl on both sides, by the median of
-    each query's own ratio with its middle half, our ratio of mean times as a ring
+    """The answer's evidence, under it (review r28d: it came at screen 15 of 18): above, the paper's Table 3 beside
+    our accurate network's ratios of mean times inside Algorithm 1, with the fast checker and with python-fcl on both
+    sides; below, ours by the median of each query's own ratio with its middle half
     (:func:`toolkit.plots.answer.answer_ratios` of :func:`toolkit.teaching.checker_scope.compact`)."""
     return answer_ratios(
         checker_scope.compact(tables),
