@@ -52,7 +52,7 @@ def answer_ratios(
         ]
     else:
         panels = [(rows, spans or {}, False)]
-    fig = Figure(figsize=(PAGE_WIDTH, 4.3 * len(panels) + 1.2), layout="constrained")
+    fig = Figure(figsize=(PAGE_WIDTH, 3.8 * len(panels) + 1.2), layout="constrained")
     axes = fig.subplots(len(panels), 1, squeeze=False)[:, 0]  # each panel its own ticks: read without the other
     if means:
         axes[0].set_title(MEANS_TITLE, fontsize=10)
