@@ -3,8 +3,9 @@
 from __future__ import annotations
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
+from toolkit.plots import answer
 from toolkit.plots.alt import alt_text
-from toolkit.plots.answer import MEAN_WORDS, answer_ratios
+from toolkit.plots.answer import answer_ratios
 from toolkit.teaching import chapter04, checker_scope, costs, findings
 
 
@@ -17,34 +18,47 @@ def test_answer_ratios_draws_every_scenario_sampler_and_series_in_one_panel():
     assert "tie band, above 0.90 and below 1.10" in alt_text(fig)
 
 
-def test_answer_ratios_rings_our_means_around_our_medians():
-    """Review r28d: the paper's squares are means and our filled markers medians; our means are drawn as rings at the
-    same x as the medians of the same series, one legend entry for them all."""
+def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_them():
+    """Reader r33d, figure 1: the large markers compared our medians with the paper's means. With ``means`` the figure
+    has two panels on one scale: above, the paper's squares beside our means, filled (like for like); below, our
+    medians, hollow, each with its whisker; a legend of three lines, one a series."""
     rows, means = checker_scope.compact(), checker_scope.our_means()
-    fig = answer_ratios(rows, tie=findings.TIE, means=means)
-    rings = [c for c in fig.axes[0].collections if len(c.get_offsets())]
-    assert len(rings) == 1 and len(rings[0].get_offsets()) == sum(len(r) for r in means.values()) == 32
-    filled = {
-        (round(x, 6), y) for line in fig.axes[0].lines for x, y in zip(line.get_xdata(), line.get_ydata(), strict=True)
-    }
-    medians_x = {x for x, _ in filled}
-    assert all(round(x, 6) in medians_x for x, _ in rings[0].get_offsets())
-    assert "a bar across each of our points at its series' ratio of mean times" in alt_text(fig)
+    fig = answer_ratios(rows, tie=findings.TIE, means=means, spans=checker_scope.spans(), names=chapter04.SERIES)
+    top, low = fig.axes
+    assert top.get_ylim() == low.get_ylim()
+
+    def marks(ax) -> dict[str, list]:
+        return {line.get_marker(): line for line in ax.lines if line.get_marker() in answer.MARKERS}
+
+    def values(ax, marker: str) -> list[float]:
+        return sorted(v for line in ax.lines if line.get_marker() == marker for v in line.get_ydata())
+
+    assert set(marks(top)) == {"s", "o", "^"} and set(marks(low)) == {"o", "^"}  # no square below: the paper's means
+    assert values(top, "o") == sorted(v for label, r in means.items() if "python-fcl" not in label for v in r.values())
+    assert values(top, "^") == sorted(v for label, r in means.items() if "python-fcl" in label for v in r.values())
+    assert values(low, "o") == sorted(
+        v for label, r in rows.items() if label.endswith("(`strong` preset), medians") for v in r.values()
+    )
+    assert all(line.get_markerfacecolor() == "none" for line in marks(low).values())  # hollow: the second statistic
+    assert all(line.get_markerfacecolor() != "none" for line in marks(top).values())
+    assert len(low.collections) == 32 and not top.collections  # a whisker a median, none above
     labels = [t.get_text() for legend in fig.legends for t in legend.get_texts()]
-    assert labels.count(MEAN_WORDS) == 1
+    assert labels == list(chapter04.SERIES.values())  # three lines
+    said = alt_text(fig)
+    assert "Above, means, Table 3's statistic: the paper's squares beside our two series' means, 48 points" in said
+    assert "Below, our medians of each query's own ratio, hollow" in said and "32 points, 3 of them at or below" in said
 
 
-def test_a_means_bar_lies_under_every_marker_and_shows_on_both_sides_of_one():
-    """Review r32d: at 3DC-7 G the paper's square (1.09) and our circle's mean bar (1.08) met, and the bar, drawn over
-    the square, hid which mark was which. Every marker is drawn whole over the bars, which are wider than a marker."""
-    from toolkit.plots import answer
-
+def test_the_papers_squares_sit_inside_their_samplers_slot():
+    """Reader r33d, figure 1: the squares sat on the dotted lines between samplers, so it was unclear whose they were.
+    Every point lies at least a marker's width inside its sampler's slot (half a unit either side of its tick)."""
     fig = answer_ratios(checker_scope.compact(), tie=findings.TIE, means=checker_scope.our_means())
-    ax = fig.axes[0]
-    bars = [c for c in ax.collections if len(c.get_offsets())]
-    marks = [line for line in ax.lines if line.get_marker() in answer.MARKERS]
-    assert all(bar.get_zorder() < line.get_zorder() for bar in bars for line in marks)
-    assert answer.BAR**0.5 > max(line.get_markersize() for line in marks) + 4  # 2 points a side at least
+    for ax in fig.axes:
+        ticks = ax.get_xticks()
+        for line in ax.lines:
+            if line.get_marker() in answer.MARKERS:
+                for x in line.get_xdata():
+                    assert min(abs(x - t) for t in ticks) <= 0.5 - 0.2
 
 
 def test_cost_table_splits_the_cells_where_prediction_cost_25_percent_or_more():

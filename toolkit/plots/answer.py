@@ -1,20 +1,21 @@
-"""Chapter 04's answer in one panel (review r25a: the panel that carried it was third of five, and half the answer,
+"""Chapter 04's answer in a figure (review r25a: the panel that carried it was third of five, and half the answer,
 the python-fcl runs, and two of four scenarios were not drawn).
 
 :func:`answer_ratios` draws, for every scenario and sampler, total time with / without prediction inside the paper's
 Algorithm 1 for each series of ``{"<scenario>, <series>": {sampler: ratio}}`` (the rows of
 :func:`toolkit.teaching.checker_scope.compact`: the paper's Table 3, our accurate network with our fast checker
 (compiled in 3D, numpy in 2DS) and with python-fcl on both sides), on a log axis against the line at 1 and the tie
-band; with ``means``, each of our series' mean-based ratio (Table 3's statistic) as a short bar across its median's
-x (reader r31d: rings around the points overlapped them).
+band. With ``means`` (our series' ratios of mean times, Table 3's statistic) it draws two panels (reader r33d: the
+large markers compared our medians with the paper's means): above, like for like, the paper's squares beside our
+means, filled; below, our medians of each query's own ratio, hollow, each with its middle half.
 """
 
 from __future__ import annotations
 
+import dataclasses
+
 import numpy as np
 from matplotlib.figure import Figure
-from matplotlib.legend_handler import HandlerTuple
-from matplotlib.lines import Line2D
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import Part, describe
@@ -22,10 +23,10 @@ from toolkit.plots.palette import COLORS, PAGE_WIDTH, series_style
 from toolkit.plots.timings import band_words, log_ticks
 
 MARKERS = ("s", "o", "^")  # a series' marker, beside its colour
-SPREAD = 0.28  # a series' offset from its sampler's tick: a sampler's three series side by side, nearer each other
-# than a neighbour's (review r29d: at 0.32 a triangle sat nearer the next sampler's square), a faint line between
-MEAN_WORDS = "short level bars, in each series' colour: our ratios of mean times (Table 3's statistic)"
-BAR = 190  # a mean's bar, its scatter size (points squared): wider than a marker, so it shows on both sides of one
+SPREAD = 0.25  # a series' offset from its sampler's tick: a sampler's three series side by side, each well inside its
+# sampler's slot (reader r33d: at 0.28 the paper's squares seemed to sit on the dotted lines between samplers)
+MEANS_TITLE = "Means, Table 3's statistic: the paper's squares beside ours"
+MEDIANS_TITLE = "Ours by the median query (hollow), whiskers: the middle half of the queries' ratios"
 
 
 def answer_ratios(
@@ -36,57 +37,69 @@ def answer_ratios(
     spans: dict[str, dict[str, tuple[float, float]]] | None = None,
     means: dict[str, dict[str, float]] | None = None,
 ) -> Figure:
-    """One panel: a group of four samplers per scenario, one point per series in each, the tie band ``1 ± tie``
-    shaded darker than the page's other bands, and the series named in a legend above (``names`` renames them);
-    ``spans``: a whisker per point of the rows it names (the middle half of the queries' ratios); ``means``: a short
-    bar across each point of the rows it names, at that series' ratio of mean times (review r28d: the
-    paper's squares are means, our filled markers medians, and our means were not drawn)."""
+    """A group of four samplers per scenario, one point per series in each, the tie band ``1 ± tie`` shaded, and the
+    series named in a legend above, a line each (``names`` renames them); ``spans``: a whisker per point of the rows
+    it names (the middle half of the queries' ratios). Without ``means``, one panel of ``rows``; with ``means`` (by
+    the labels of the rows they stand beside), two: the rows that ``means`` does not name (the paper's) beside
+    ``means``, filled, and under them the rows it names, hollow, with their whiskers."""
     scenarios = list(dict.fromkeys(label.split(", ", 1)[0] for label in rows))
     series = list(dict.fromkeys(label.split(", ", 1)[1] for label in rows))
     names = names or {}
-    fig = Figure(figsize=(PAGE_WIDTH, 5.5), layout="constrained")  # review r30d: 20 % taller, the groups apart
-    ax = fig.subplots()
-    ax.axhspan(
-        1 - tie,
-        1 + tie,
-        facecolor=COLORS["shade"],
-        edgecolor=COLORS["reference"],
-        alpha=0.9,
-        zorder=0,
-        label=band_words(tie),
-    )
-    ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
-    drawn, parts = _series(ax, rows, scenarios, series, names, spans or {})
-    rings, ring_handles = _rings(ax, means or {}, scenarios, series)
-    drawn += rings
-    _groups(ax, scenarios)
-    ax.set_ylim(min(*drawn, 1 - tie) / 1.25, max(*drawn, 1 + tie) * 1.25)
-    log_ticks(ax)
-    ax.set_ylabel("total time with / without\n(log scale; below 1: saves)")
-    ax.set_xlabel("sampler, grouped by scenario", labelpad=24)  # under the scenarios' names
-    handles: list = ax.get_legend_handles_labels()[0]
-    labels = ax.get_legend_handles_labels()[1]
-    if ring_handles:  # one entry, a bar in each series' colour (review r30d: the orange one was not shown)
-        handles, labels = [*handles, tuple(ring_handles)], [*labels, MEAN_WORDS]
-    fig.legend(  # over the panel: long names, a row each
-        handles,
-        labels,
-        loc="outside upper center",
-        ncol=1,
-        fontsize=9,
-        frameon=False,
-        handler_map={tuple: HandlerTuple(ndivide=None, pad=0.6)},
-    )
-    points = [v for row in rows.values() for v in row.values()]
-    below = int(np.sum(np.array(points) <= 1 - tie))
-    text = (
+    if means:
+        panels = [
+            ({label: r for label, r in rows.items() if label not in means} | means, {}, False),
+            ({label: rows[label] for label in means if label in rows}, spans or {}, True),
+        ]
+    else:
+        panels = [(rows, spans or {}, False)]
+    fig = Figure(figsize=(PAGE_WIDTH, 3.8 * len(panels) + 1.2), layout="constrained")
+    axes = fig.subplots(len(panels), 1, squeeze=False)[:, 0]  # each panel its own ticks: read without the other
+    if means:
+        axes[0].set_title(MEANS_TITLE, fontsize=10)
+        axes[1].set_title(MEDIANS_TITLE, fontsize=10)
+    parts, counted, every = [], [], []
+    for ax, (shown, whiskers, hollow) in zip(axes, panels):
+        ax.axhspan(1 - tie, 1 + tie, facecolor=COLORS["shade"], edgecolor=COLORS["reference"], alpha=0.9, zorder=0)
+        ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
+        drawn, found = _series(ax, shown, scenarios, series, names, whiskers, hollow)
+        _groups(ax, scenarios)
+        every += drawn
+        ax.set_ylabel(f"time with / without\n(log; shaded: a tie, {1 - tie:.2f}–{1 + tie:.2f})")
+        points = [v for row in shown.values() for v in row.values()]
+        counted.append((len(points), int(np.sum(np.array(points) <= 1 - tie))))
+        parts += [dataclasses.replace(p, name=f"{_title(ax, means)}: {p.name}") for p in found]
+    for ax in axes:  # one scale for both panels: a point above reads against one below
+        ax.set_ylim(min(*every, 1 - tie) / 1.25, max(*every, 1 + tie) * 1.25)
+        log_ticks(ax)
+        ax.set_xlabel("sampler, grouped by scenario", labelpad=24)  # under the scenarios' names
+    handles, labels = axes[0].get_legend_handles_labels()
+    fig.legend(handles, labels, loc="outside upper center", ncol=1, fontsize=9, frameon=False)  # a line a series
+    return describe(fig, _text(tie, len(series), counted, spans, means), parts)
+
+
+def _title(ax, means) -> str:
+    """A panel's name in its figure's description: its title, or "ratios" where the figure has one panel."""
+    return ax.get_title() if means else "ratios"
+
+
+def _text(tie: float, series: int, counted: list[tuple[int, int]], spans, means) -> str:
+    """The figure's text alternative, each panel's points counted from its data."""
+    said = (
         "Inside the paper's Algorithm 1, total time with prediction over time without, per scenario and sampler, "
-        f"log scale, against the line at 1 and the shaded {band_words(tie)}: {len(points)} points in "
-        f"{len(series)} series, {below} of them at or below {1 - tie:.2f}"
-        + (", whiskers spanning the middle half of the queries' ratios where a series has them" if spans else "")
-        + (", a bar across each of our points at its series' ratio of mean times." if means else ".")
+        f"log scale, against the line at 1 and the shaded {band_words(tie)}"
     )
-    return describe(fig, text, parts)
+    if not means:
+        n, below = counted[0]
+        return f"{said}: {n} points in {series} series, {below} of them at or below {1 - tie:.2f}" + (
+            ", whiskers spanning the middle half of the queries' ratios where a series has them." if spans else "."
+        )
+    (n_top, below_top), (n_low, below_low) = counted
+    return (
+        f"{said}, in two panels. Above, means, Table 3's statistic: the paper's squares beside our two series' means, "
+        f"{n_top} points, {below_top} of them at or below {1 - tie:.2f}. Below, our medians of each query's own "
+        f"ratio, hollow, with whiskers spanning the middle half of the queries' ratios: {n_low} points, {below_low} of "
+        f"them at or below {1 - tie:.2f}."
+    )
 
 
 def _groups(ax, scenarios: list[str]) -> None:
@@ -115,7 +128,9 @@ def _groups(ax, scenarios: list[str]) -> None:
         )
 
 
-def _series(ax, rows, scenarios: list[str], series: list[str], names: dict[str, str], spans) -> tuple[list, list]:
+def _series(
+    ax, rows, scenarios: list[str], series: list[str], names: dict[str, str], spans, hollow: bool = False
+) -> tuple[list, list]:
     """Each series' points, its scenarios in groups of :data:`PAPER_SAMPLERS` and a series a little left or right of
     a sampler's tick, with a whisker where ``spans`` gives one; returns every value drawn and one :class:`Part` a
     series (its numbers, for the text alternative)."""
@@ -123,6 +138,8 @@ def _series(ax, rows, scenarios: list[str], series: list[str], names: dict[str, 
     drawn: list[float] = []
     parts = []
     for k, name in enumerate(series):
+        if not any(f"{scenario}, {name}" in rows for scenario in scenarios):
+            continue  # not in this panel: its place and style kept for the series that are
         cells = []
         for i, scenario in enumerate(scenarios):
             ratios = rows.get(f"{scenario}, {name}", {})
@@ -131,7 +148,7 @@ def _series(ax, rows, scenarios: list[str], series: list[str], names: dict[str, 
             whiskers = spans.get(f"{scenario}, {name}", {})
             for xi, s in zip(x, (s for s in PAPER_SAMPLERS if s in ratios)):
                 if s in whiskers:
-                    ax.vlines(xi, *whiskers[s], color=series_style(k)["color"], linewidth=1.4, zorder=2)
+                    ax.vlines(xi, *whiskers[s], color=series_style(k)["color"], linewidth=1.0, zorder=2)
                     drawn += list(whiskers[s])
             ax.plot(
                 x,
@@ -139,9 +156,10 @@ def _series(ax, rows, scenarios: list[str], series: list[str], names: dict[str, 
                 linestyle="none",
                 marker=MARKERS[k % len(MARKERS)],
                 color=series_style(k)["color"],
-                markersize=6,
-                markeredgecolor=COLORS["ink"],
-                markeredgewidth=0.6,
+                markersize=7,
+                markerfacecolor="none" if hollow else series_style(k)["color"],
+                markeredgecolor=series_style(k)["color"] if hollow else COLORS["ink"],
+                markeredgewidth=1.4 if hollow else 0.6,
                 zorder=3,
                 label=names.get(name, name) if i == 0 else None,
             )
@@ -151,30 +169,6 @@ def _series(ax, rows, scenarios: list[str], series: list[str], names: dict[str, 
             Part(names.get(name, name), "total time with / without", ("scenario", *PAPER_SAMPLERS), tuple(cells))
         )
     return drawn, parts
-
-
-def _rings(ax, means: dict[str, dict[str, float]], scenarios: list[str], series: list[str]) -> tuple[list, list]:
-    """A short bar at each ratio of ``means``, across the x of the filled point of the same label and sampler (reader
-    r31d: rings overlapped the points). Returns the values drawn, and a bar per colour for the legend's one entry."""
-    width = len(PAPER_SAMPLERS) + 1
-    x, y, colors = [], [], []
-    for k, name in enumerate(series):
-        for i, scenario in enumerate(scenarios):
-            ratios = means.get(f"{scenario}, {name}", {})
-            for j, s in enumerate(PAPER_SAMPLERS):
-                if s in ratios:
-                    x.append(i * width + j + (k - 1) * SPREAD)
-                    y.append(ratios[s])
-                    colors.append(series_style(k)["color"])
-    if x:
-        # under the markers (reader r32d: a bar over the next series' square hid which mark was which), each marker
-        # whole, the bar's ends on both sides of it (reader r31d: rings hid dots)
-        ax.scatter(x, y, s=BAR, marker="_", color=colors, linewidths=2.6, zorder=2.5)
-    handles = [
-        Line2D([], [], linestyle="none", marker="_", markersize=BAR**0.5, markeredgewidth=2.6, markeredgecolor=c)
-        for c in dict.fromkeys(colors)
-    ]
-    return y, handles
 
 
 def _cell(ratio: float | None, whisker: tuple[float, float] | None) -> str:

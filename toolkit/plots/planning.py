@@ -196,7 +196,7 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
     ax = fig.subplots()
     _draw_cspace(ax, exact)
     groups: list[tuple[np.ndarray, dict[str, Any], str]] = [  # (mask, scatter style, label)
-        (~accepted, dict(marker="x", s=24, linewidths=1.2, color=COLORS["rejected"]), "rejected"),
+        (~accepted, dict(marker="x", s=50, linewidths=1.8, color=COLORS["rejected"]), "rejected"),  # r33d: larger
         (accepted & truly_valid, dict(s=16, marker="o", color=COLORS["valid"]), "S' (accepted)"),
         (
             accepted & ~truly_valid,
@@ -205,7 +205,7 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
         ),
     ]
     within = OVERLAP * float(np.linalg.norm(exact.robot.upper - exact.robot.lower))
-    for mask, style, label in groups:  # whole at the edges of the C-space too
+    for mask, style, label in ((m, st, la) for m, st, la in groups if m.any()):  # reader r33d: no empty legend entry
         shown, many = merged(S[mask], within)  # markers on one another drawn once, with their count
         ax.scatter(shown[:, 0], shown[:, 1], label=f"{label}: {mask.sum()}", clip_on=False, **style)
         for (x, y), n in ((p, n) for p, n in zip(shown, many) if n > 1):
@@ -287,14 +287,14 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
             clip_on=False,  # whole at the edge of the C-space, where start and goal often lie
         )
     _margin(ax)
-    where = "".join(f"\nring: hits ({x:.1f}, {y:.1f})" for x, y in hits)  # reader r31d: off the roadmap, above it
+    where = "\nring: where the removed edge enters a C-obstacle" if hits else ""  # reader r33d: words, not (x, y)
     ax.set_title(f"round {step.round}, {step.stage}:\n{len(P)} nodes, {len(step.edges)} edges{where}", fontsize=10)
 
 
 def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: int = 201) -> list[tuple[float, float]]:
     """The edges a repair removes, ``segments (R, 2, 2)``, thick, and where each first enters a C-obstacle, a ring
     (review r25a: at the page's size one could not see whether the edge cut the block or grazed it); returns those
-    points, which the panel's title writes (reader r31d: a box beside the ring sat on the roadmap)."""
+    points; the panel's title names the ring (reader r33d: in words, not its coordinates)."""
     removed = LineCollection(
         list(segments), colors=REPAIR_COLOR, linewidths=4.5, zorder=5, label="edge removed by a repair"
     )

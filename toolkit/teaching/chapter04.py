@@ -159,46 +159,36 @@ def other_line(records: Mapping[str, list[dict]]) -> str:
 
 def answer(tables: Tables | None = None) -> str:
     """Chapter 04's answer in numbers, three short bullets read from ``docs/results.md`` (100 recorded queries a
-    scenario; review r32d: like for like first, the paper's count and ours by Table 3's statistic, the ratio of mean
-    times, then ours by the median query; why, in one number; and what prediction adds with the fast checker). The
-    ties, the costs and the noise edge are section 6's (:func:`edge_line`, :func:`full_answer`)."""
+    scenario), one number each (reader r33d: bullets a student can repeat): how often our accurate network saved time
+    by the median query, with the paper's count beside it; the most that skipping the samples' checks could save; what
+    a network call cost against our fast check. The counts by means, the ties, the costs, the sampling stage with
+    python-fcl and the noise edge are section 6's (:func:`edge_line`, :func:`full_answer`)."""
     facts = checker_scope.slow_checker(tables)
     fast, slow = _counts(recorded.ALGORITHM_1, tables), facts.total_verdicts()
-    fast_means, slow_means = (_counts(p, tables, means=True) for p in (recorded.ALGORITHM_1, checker_scope.SLOW))
     papers = sum(time_verdict(1 - saved) == SAVES for saved in facts.papers_totals)
+    share = max(costs.sampling_shares(recorded.ALGORITHM_1, tables))
     return (
-        f"- By Table 3's own statistic, the ratio of mean times, the paper saves time in {papers} of its "
-        f"{len(facts.own)} scenario–sampler pairs; our accurate network, inside the same Algorithm 1, in "
-        f"{fast_means[SAVES] or 'none'} with our fast exact checker and {slow_means[SAVES] or 'none'} with python-fcl "
-        f"on both sides. By the median query it saved time in {fast[SAVES] or 'none'} of the {fast.total()} with our "
-        f"fast checker and in {slow[SAVES] or 'none'} with python-fcl (section 6 counts the ties and the costs).\n"
-        f"- **Why**: prediction replaces only the checks of samples; without it sampling took "
-        f"{_span(costs.sampling_shares(recorded.ALGORITHM_1, tables))} % of a mean query with our fast checker "
-        f"({_span(costs.sampling_shares(checker_scope.SLOW, tables))} % with python-fcl, where prediction made it "
-        f"{checker_scope.sampling_words(facts)}; the paper's Table 3: {checker_scope.percents(facts.papers_sampling)}"
-        "). The rest is exact edge checks, which Algorithm 1 never asks the network about (sections 2–3's lazy "
-        "planner does) and an accurate network changes little (section 5).\n"
-        f"- With our fast checker prediction also adds time: {_adds(tables)}."
+        f"- **Saved time**: by the median query, our accurate network saved time in {fast[SAVES] or 'none'} of the "
+        f"{fast.total()} scenario–sampler pairs with our fast exact checker and in {slow[SAVES] or 'none'} of "
+        f"{slow.total()} with python-fcl on both sides; the paper's Table 3 saves in {papers} of {len(facts.own)}, by "
+        "its means (ours by means: section 6).\n"
+        "- **Why**: prediction only skips the samples' checks; without prediction sampling took at most "
+        f"{100 * share:.0f} % of a mean query with our fast checker, so skipping them could save at most that, even "
+        "with a network that cost nothing. The rest is exact checks of points along the roadmap's edges, which "
+        "Algorithm 1 never asks the network about (section 5).\n"
+        f"- **Cost**: {_adds(tables)}."
     )
 
 
 def edge_line(tables: Tables | None = None) -> str:
-    """Section 6's noise edge in numbers (review r32d: the page never printed it): how far timing one computation
-    twice moved a median (:func:`toolkit.teaching.costs.timing_reach`), the band twice that spans, and the cells of
-    the answer's table whose saving or cost lies inside it (:func:`toolkit.teaching.costs.at_edge`'s rule)."""
+    """The footnote under section 6's tables (reader r33d: one band in prose, the noise edge a mark in the table):
+    what the mark :data:`toolkit.teaching.costs.MARK` on a verdict means, the band it marks (twice how far timing one
+    computation twice moved a median ratio, :func:`toolkit.teaching.costs.timing_reach`) and where that was measured."""
     reach = costs.noise_edge(tables)
-    named = []
-    for preset, who in ((recorded.ALGORITHM_1, "our fast checker"), (checker_scope.SLOW, "python-fcl")):
-        edge = costs.edge_cells(preset, tables)
-        cells = [f"{checker_scope.NAMES[key]} {s} {median:.2f}" for key, s, median in edge]
-        count = Counter(time_verdict(median) for _, _, median in edge)
-        said = f"{who}, {count[COSTS]} of its costs and {count[SAVES]} of its savings"
-        named.append(said + (f": {', '.join(cells)}" if cells else ""))
     return (
-        "**At the noise edge.** Timing one computation twice moved a median ratio up to "
-        f"{costs.timing_reach(tables):.2f} from 1 (`docs/results.md`, under its Figure 1), so a saving or a cost "
-        f"between {1 - reach:.2f} and {1 + reach:.2f}, twice that reach, keeps its verdict word in the table but is "
-        "no clear evidence on its own. In the table above these are, for " + "; for ".join(named) + "."
+        f"{costs.MARK} inside timing's own reach, {1 - reach:.2f}–{1 + reach:.2f}: no clear evidence (twice the "
+        f"{costs.timing_reach(tables):.2f} by which timing one computation twice moved a median ratio, "
+        "`docs/results.md` under its Figure 1)."
     )
 
 
@@ -233,24 +223,15 @@ def _span(values: list[float]) -> str:
 
 
 def _adds(tables: Tables | None = None) -> str:
-    """What prediction adds with the fast checker, from the record: the network's cost per configuration against the
-    exact check's (Checker throughput), the workspace's encoding, and the dear cells' growth after sampling."""
+    """What a network call cost against the fast exact check, per configuration, in the recorded Algorithm 1 run
+    (Checker throughput), a range over the scenarios."""
     rates = recorded.table(recorded.ALGORITHM_1, "Checker throughput", tables)
     dearer = [1 / recorded.ours(row["learned / exact"]) for row in rates.values()]
     low, high = (f"{v:.2g}" for v in (min(dearer), max(dearer)))
-    said = (
-        "in the recorded Algorithm 1 run (`--planner paper`) a network call cost "
-        f"{low if low == high else f'{low}–{high}'} times an exact check per configuration, and "
-        "each query first encodes its workspace for the network"
+    return (
+        f"our network cost {low if low == high else f'{low}–{high}'} times an exact check per configuration with our "
+        "fast checker (the recorded Algorithm 1 run, `--planner paper`), so there prediction adds time"
     )
-    cells = costs.dear_cells(tables)
-    mostly = sum(c.after_share > 0.5 for c in cells)
-    if mostly:
-        said += (
-            f"; in {mostly} of the {len(cells)} costliest cells most of the extra time came after sampling, where "
-            "the record does not split it (section 6)"
-        )
-    return said
 
 
 def _counts(preset: str, tables: Tables | None = None, means: bool = False) -> Counter:
@@ -335,17 +316,17 @@ def beyond_sampling(tables: Tables | None = None) -> str:
     )
 
 
-SERIES = {  # the answer figure's legend (review r28d: the circles are our fast checker, compiled in 3D only)
-    "the paper's Table 3": "the paper's Table 3: its means",
-    "ours (`strong` preset), medians": "our fast checker (compiled in 3D, numpy in 2DS): median ratio, middle half",
-    "ours (`strong`, python-fcl), medians": "python-fcl on both sides: the same",
+SERIES = {  # the answer figure's legend, a line a series (reader r33d: five lines for three marker kinds)
+    "the paper's Table 3": "the paper's Table 3 (its means)",
+    "ours (`strong` preset), medians": "ours, our fast checker (compiled in 3D, numpy in 2DS)",
+    "ours (`strong`, python-fcl), medians": "ours, python-fcl on both sides",
 }
 
 
 def answer_figure(tables: Tables | None = None) -> Figure:
-    """The answer's evidence, under it (review r28d: it came at screen 15 of 18): the paper's Table 3 beside our
-    accurate network inside Algorithm 1, with the fast checker and with python-fcl on both sides, by the median of
-    each query's own ratio with its middle half, our ratio of mean times as a ring
+    """The answer's evidence, under it (review r28d: it came at screen 15 of 18): above, the paper's Table 3 beside
+    our accurate network's ratios of mean times inside Algorithm 1, with the fast checker and with python-fcl on both
+    sides; below, ours by the median of each query's own ratio with its middle half
     (:func:`toolkit.plots.answer.answer_ratios` of :func:`toolkit.teaching.checker_scope.compact`)."""
     return answer_ratios(
         checker_scope.compact(tables),

@@ -104,7 +104,7 @@ def slow_sentence(facts: SlowChecker, ranges: bool = True) -> str:
     own = facts.own
     total = _counted(facts.total_verdicts())
     if facts.edge:
-        total += f" ({facts.edge} of the {facts.total_verdicts()[SAVES]} savings at the noise edge)"
+        total += f" ({facts.edge} of the {facts.total_verdicts()[SAVES]} savings marked {costs.MARK})"
     said = (
         f"With a slow exact checker on both sides (python-fcl, {where}; 100 recorded queries a scenario), our accurate "
         f"network {stage} (the paper's Table 3: {percents(facts.papers_sampling)}), but {total}"
@@ -267,7 +267,10 @@ def section_6(this_run: dict[str, float], tables: Tables | None = None, first: s
     Algorithm 1 by means, against the lazy PRM, the sampling stage inside Algorithm 1, what the `paper` preset's MLP
     answers, and a network call's cost per configuration over the exact check's (``this_run``: {scenario: cost} of
     the chapter's own section 4, beside the recorded runs')."""
-    table = findings.ratio_table
+
+    def table(rows: dict[str, dict[str, float]], **how: bool) -> str:  # our verdicts inside timing's reach marked
+        return costs.marked(findings.ratio_table(rows, **how), tables)
+
     inside = recorded.median_ratios(recorded.ALGORITHM_1, tables)
     ours_sampling = [r for key in inside for r in inside[key]["sampling"].values()]
     papers_saved = [IMPROVEMENT[key]["sampling"][s] for _, key in SCENARIOS_4 for s in IMPROVEMENT[key]["sampling"]]
@@ -337,9 +340,9 @@ def _call_costs(this_run: dict[str, float], tables: Tables | None = None) -> str
     }
     return (
         "A network call's cost per configuration over the default exact check's (below 1 the network is the cheaper "
-        "check; within 25 % of 1, too close to tell): the recorded runs (`docs/results.md`'s throughput tables; the "
-        "network's cost, and so this ratio, moves from run to run and machine to machine) and this run's section "
-        "4:\n\n" + findings.cost_table(costs)
+        "check; between 0.90 and 1.10, close: can't tell): the recorded runs (`docs/results.md`'s throughput tables; "
+        "the network's cost, and so this ratio, moves from run to run and machine to machine) and this run's section "
+        "4:\n\n" + findings.cost_table(costs, tie=findings.TIE)
     )
 
 

@@ -187,3 +187,21 @@ def edge_cells(preset: str, tables: Tables | None = None) -> list[tuple[str, str
 def at_edge(preset: str, tables: Tables | None = None) -> Counter:
     """How many of :func:`edge_cells` are saves and how many costs."""
     return Counter(time_verdict(median) for _, _, median in edge_cells(preset, tables))
+
+
+MARK = r"\*"  # Markdown for the mark on a verdict inside timing's own reach (reader r33d: one band in prose)
+_VERDICT_CELL = re.compile(rf"({SAVES}|{COSTS})<br>\((\d+\.\d+)\)")
+
+
+def marked(table: str, tables: Tables | None = None) -> str:
+    """``table`` (a narrow :func:`toolkit.teaching.findings.ratio_table`) with :data:`MARK` after each "saves time" or
+    "costs time" of our rows (not the paper's) whose ratio lies less than :func:`noise_edge` from 1: the verdict word
+    stays, the mark says timing alone could have moved it that far."""
+    reach = noise_edge(tables)
+
+    def mark(found: re.Match) -> str:
+        inside = abs(float(found[2]) - 1) < reach
+        return f"{found[1]}{MARK if inside else ''}<br>({found[2]})"
+
+    rows = table.splitlines()
+    return "\n".join(row if "the paper" in row.split("|")[1] else _VERDICT_CELL.sub(mark, row) for row in rows)

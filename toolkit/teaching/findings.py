@@ -83,14 +83,14 @@ SAID = {  # a planning verdict at the end of a sentence (its band filled in)
 
 
 SPEED_MOVED = (  # a planning sentence's verdict where the same exact check's cost moved between the modes (review r25a)
-    "can't tell: the same exact check of an edge point took {ratio:.2f} times as long with prediction, so something "
-    "besides prediction moved this run's times"
+    "can't tell: the connection stage took {ratio:.2f} times as long an edge point with prediction, so its time "
+    "holds more than the exact checks of points (the line under the tables says what)"
 )
 
 
 def speed_moved(per_point: Mapping[str, float], tie: float = TIE) -> float | None:
     """The time per exact edge point with / without prediction, ``{"without": s, "with": s}``, where it lies outside
-    the tie band (something besides prediction moved between the two modes' runs, :func:`per_point_sentence`; reader
+    the tie band (the connection stage's mix of work per point differs, :func:`per_point_sentence`; reader
     r33d: interleaved turns share a slow spell, so a steady ratio need not be the machine), else ``None``."""
     ratio = per_point["with"] / per_point["without"]
     return None if time_verdict(ratio, tie=tie) == TIES else ratio
@@ -163,10 +163,9 @@ def claim_status(eager: Mapping[str, Mapping[str, float]], lazy: Mapping[str, Ma
 
 
 def per_point_sentence(per_point: Mapping[str, float], tie: float = TIE) -> str:
-    """One sentence on Algorithm 1's connection stage: its time per edge point checked exactly in each mode,
-    ``{"without": s, "with": s}`` (medians over the queries). The same exact checker checks both modes' edges, so
-    the cost of a point should not change with prediction; where it differs by ``tie`` or more, the machine's speed
-    moved between the runs (review r15a: about as many edge points with and without, yet 102 against 50 ms)."""
+    """Algorithm 1's connection stage in one sentence: its time per exact edge point in each mode, ``{"without": s,
+    "with": s}`` (medians over the queries); where the two differ by ``tie`` or more, the mix of the stage's other work
+    per point differs (review r15a: 102 against 50 ms; reader r33d: the modes run in turns, so not the machine)."""
     without, with_ = per_point["without"], per_point["with"]
     said = (
         f"The connection stage took {1e9 * without:,.0f} ns an edge point without prediction and "
@@ -176,9 +175,10 @@ def per_point_sentence(per_point: Mapping[str, float], tie: float = TIE) -> str:
     if time_verdict(with_ / without, tie=tie) == TIES:
         return f"{said}: the same cost, as it should be, since the same exact checker checks both modes' edges."
     return (
-        f"{said}: {with_ / without:.2f} times as much with prediction for the same exact check of a point, so "
-        "something besides prediction moved between the two modes' runs; read the edge points, not this stage's "
-        "time, for what prediction changed."
+        f"{said}: {with_ / without:.2f} times as much with prediction. The modes ran in turns, so a steady difference "
+        "is not the machine's: the stage does more than check points (it finds each node's nearest neighbours and "
+        "tries bridges between the roadmap's parts), and prediction changes the roadmap, so the mix of work per "
+        "point checked differs between the modes; read the edge points, not this stage's time, for what it changed."
     )
 
 
