@@ -603,3 +603,9 @@ def test_a_path_frame_draws_the_closest_pair_labelled_with_the_gap_and_the_bound
     scene = fig.axes[0]
     assert [line.get_gid() for line in scene.get_lines()].count("closest") == 1
     assert [t.get_text() for t in scene.texts if "apart" in t.get_text()] == [f"0.250 apart\n(bound ≥ {bound:.3f})"]
+    # reader r33e: the base's dashed trace ran through the label; it is drawn above every line and face, on white
+    fig.canvas.draw()  # mplot3d gives its artists their z-orders by depth when it draws
+    label = next(t for t in scene.texts if "apart" in t.get_text())
+    drawn = [*scene.get_lines(), *scene.collections, *scene.patches]
+    assert label.get_zorder() > max(a.get_zorder() for a in drawn)
+    assert label.get_bbox_patch() is not None and label.get_bbox_patch().get_facecolor()[:3] == (1.0, 1.0, 1.0)
