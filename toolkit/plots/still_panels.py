@@ -47,6 +47,12 @@ SAMPLE_WORDS = {
 DANGEROUS_STAR = 1.8  # a dangerous mistake's star this many times a conservative one's area, its line thicker (r27e)
 DANGEROUS_LABEL = "sample, model wrong, dangerous"  # a collection of the larger stars, round diamonds
 OVERVIEW_SAMPLES = 200  # at most this many samples in a still's overview: more hide the blocks and the robot
+DENSE_BLOCKS = 60  # a workspace of more blocks is dense (3DC: 110-125; the office: 25-30)
+DENSE_SAMPLES = 100  # at most this many samples in a dense workspace's overview (reader r33e: 3DC-9's was a haze)
+OVERVIEW_BLOCKS = {  # {dense: (far blocks' style, near blocks')} in an overview (reader r33e): the office's few blocks
+    False: (dict(alpha=0.3, linewidth=0.6), dict(alpha=0.45, linewidth=1.0)),  # darker on its wide floor, the
+    True: (dict(alpha=0.1, linewidth=0.2), dict(alpha=0.3, linewidth=0.8)),  # clutter's fainter, the near ones not
+}
 OVERVIEW_STAR = 150  # points²: an overview's star round a mistake (a close-up's: SAMPLE_MARKS' 300, scaled)
 OVERVIEW_ALPHA = 0.45  # an overview's marks, light: the robot drawn over them and the blocks under them show
 CLOSE_UP_SCALE = 1.5  # a close-up's marks this many times larger: a small window, seen near
@@ -67,10 +73,10 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
     near = np.zeros(len(workspace.boxes), dtype=bool)  # (K,) a block near a pose
     for boxes in aabbs:
         near |= near_blocks(workspace.boxes, boxes)
+    styles = OVERVIEW_BLOCKS[len(workspace.boxes) > DENSE_BLOCKS]  # (far, near) blocks' styles
     for (lo, hi), dark in zip(workspace.boxes, near):
-        style = dict(alpha=0.3, linewidth=0.8) if dark else dict(alpha=0.15, linewidth=0.2)
-        add_box_3d(ax, aabb_corners(lo, hi), **style, **BLOCK_STYLE)
-    step = 1 if samples is None else overview_step(len(samples[0]))
+        add_box_3d(ax, aabb_corners(lo, hi), **styles[bool(dark)], **BLOCK_STYLE)
+    step = 1 if samples is None else overview_step(len(samples[0]), len(workspace.boxes))
     extra = 0  # dangerous mistakes drawn beyond the every k-th
     if samples is not None:  # every k-th of every kind alike, light: a fair share (reader r19c: every mistake added
         keep = np.arange(len(samples[0])) % step == 0  # (N,) to every k-th right one made stars look 40 % of marks)
@@ -150,9 +156,10 @@ def flat(workspace: Workspace) -> bool:
     return bool(extent[2] < 0.5 * extent[:2].max())
 
 
-def overview_step(n: int) -> int:
-    """k: a still's overview draws every k-th of ``n`` samples, at most :data:`OVERVIEW_SAMPLES`."""
-    return -(-n // OVERVIEW_SAMPLES)
+def overview_step(n: int, blocks: int = 0) -> int:
+    """k: a still's overview draws every k-th of ``n`` samples, at most :data:`OVERVIEW_SAMPLES`, or
+    :data:`DENSE_SAMPLES` among more than :data:`DENSE_BLOCKS` ``blocks``."""
+    return -(-n // (DENSE_SAMPLES if blocks > DENSE_BLOCKS else OVERVIEW_SAMPLES))
 
 
 def close_up(
