@@ -63,6 +63,7 @@ JOINT_MARK = dict(marker="o", s=8, color=COLORS["free"], edgecolors=COLORS["ink"
 #   0.1 cube shows round it (review r15b: at 22 points² the dots hid 3DC-9's cubes)
 ELEVATION = (15.0, 45.0)  # degrees: a close-up's camera stays this far above the horizon, no lower and no higher
 USUAL_VIEW = (30.0, -60.0)  # degrees: mplot3d's camera, elevation and azimuth; a close-up's stays on its side
+CLOSE_UP_TURNS = (0.0, 180.0, 90.0, -90.0)  # degrees: a close-up's camera turned, the bends' plane still across first
 OFF_AXIS = 20.0  # degrees: the least a close-up's azimuth keeps from an axis of the workspace
 
 
@@ -163,11 +164,12 @@ def overview_step(n: int, blocks: int = 0) -> int:
 
 
 def close_up(
-    ax, robot: BoxRobot, q: np.ndarray, workspace: Workspace, *, color: str, margin: float
+    ax, robot: BoxRobot, q: np.ndarray, workspace: Workspace, *, color: str, margin: float, turns=CLOSE_UP_TURNS
 ) -> tuple[int, tuple[float, float]]:
     """The robot at ``q (dof,)`` in ``color`` among the blocks within ``margin`` of it (their parts in that window, one
-    within :data:`NEAR` up to ``margin`` taller), seen from :func:`view_angles`. Returns how many blocks lie within
-    :data:`NEAR` of a link's box, and the camera's (elevation, azimuth)."""
+    within :data:`NEAR` up to ``margin`` taller), seen from :func:`view_angles` turned by the first of ``turns``
+    (degrees) that puts the fewest blocks on a line of sight through a link (:func:`clear_turn`). Returns how many
+    blocks lie within :data:`NEAR` of a link's box, and the camera's (elevation, azimuth)."""
     q = np.asarray(q, dtype=float)
     draw_robot(ax, robot, q[None], colors=[color], view="3d", margin=margin)  # the links; the blocks below
     aabbs = robot.link_aabbs(q[None])[0]  # (L, 2, 3)
@@ -178,7 +180,8 @@ def close_up(
     hi[2] = min(z[:, 1].max(initial=hi[2]), hi[2] + margin, workspace.upper[2])  # like a thin slab: more of it
     ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), zlim=(lo[2], hi[2]))
     ax.set_box_aspect(hi - lo, zoom=1.15)  # the robot larger in its panel: mplot3d leaves wide margins
-    elevation, azimuth = view_angles(robot, q)
+    elevation, azimuth = view_angles(robot, q)  # turned where a block stands on a line of sight through a link
+    azimuth += clear_turn(robot, q, workspace, margin, turns, (elevation, azimuth))  # (reader r33e)
     ax.view_init(elev=elevation, azim=azimuth)
     toward = _toward_camera(elevation, azimuth)  # (3,)
     ax.computed_zorder = False  # drawn in the order set below, not by mplot3d's guess of each collection's depth
