@@ -1206,11 +1206,10 @@ def chapter_05(
             f"| 3DC-7, unseen | accuracy | TPR | TNR | {chapter05.ALWAYS} |",
             "| --- | ---: | ---: | ---: | ---: |",
             "| paper, Table 2 | 71% | 85% | 61% | — |",
-            "| ours: the paper's recipe (`paper` preset), uniform unseen samples, `docs/results.md` "
+            "| ours: the paper's recipe (`paper` preset), uniform unseen samples "
             f"| {recipe_acc} | {recipe_tpr} | 0% | 76% |",
-            "| ours: the same recipe, balanced unseen samples (half valid), `docs/results.md` "
-            "| 50% | 100% | 0% | 50% |",
-            f"| {chapter05.TIMED_ROW} (threshold 0.63), uniform unseen samples, `docs/results.md` "
+            "| ours: the same recipe, balanced unseen samples (half valid) | 50% | 100% | 0% | 50% |",
+            f"| {chapter05.TIMED_ROW} (threshold 0.63), uniform unseen samples "
             f"| {timed['acc']:.0%} | {timed['tpr']:.0%} | {timed['tnr']:.0%} | {timed_share:.0%} |",
             "| ours: this notebook's `strong` model (threshold 0.57), §5's 2000 uniform samples, seed 0 "
             f"| {fifth} | 93.5% | 97.5% | 74.5% |",
@@ -1302,7 +1301,7 @@ def test_chapter_05_fails_where_its_closing_answer_would_not_hold():
     valid and costs time with every sampler; the path found is valid at every frame."""
     assert problems(CH05, chapter_05(recipe_tpr="93%")) == [
         "05: the paper's recipe does not call every 3DC-7 sample valid: "
-        '[["ours: the paper\'s recipe (`paper` preset), uniform unseen samples, `docs/results.md`", '
+        '[["ours: the paper\'s recipe (`paper` preset), uniform unseen samples", '
         "'76%', '93%', '0%', '76%']]"
     ]
     assert problems(CH05, chapter_05(recipe_medians={"BS": 2.0, "OB": 0.5, "G": 2.0, "BT": 2.0})) == [
