@@ -293,7 +293,8 @@ def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose
 
 def test_a_stills_overview_thins_a_dense_cloud_and_its_text_says_so(crossing):
     robot, workspace, _, _, _ = crossing
-    n = 2 * still_panels.OVERVIEW_SAMPLES + 1
+    assert len(workspace.boxes) > still_panels.DENSE_BLOCKS  # reader r33e: a dense workspace's overview draws fewer
+    n = 2 * still_panels.DENSE_SAMPLES + 1
     points = robot.link_boxes(robot.sample(np.random.default_rng(0), n))[0][:, 0]  # (n, 3) bases
     valid = np.arange(n) % 5 == 0  # (n,) every 5th: 0, 5, 10, ...
     fig = scenes.scene_still(
@@ -305,7 +306,7 @@ def test_a_stills_overview_thins_a_dense_cloud_and_its_text_says_so(crossing):
     close_up, overview = fig.axes  # one pose: seen once, a whole row wide, above the overview (reader r31e)
     assert close_up.get_title() == "here, close up"
     drawn = {c.get_label(): c for c in overview.collections if c.get_label().startswith("sample")}
-    kept = np.arange(n) % 3 == 0  # 1 in 3: at most OVERVIEW_SAMPLES of 2 * OVERVIEW_SAMPLES + 1
+    kept = np.arange(n) % 3 == 0  # 1 in 3: at most DENSE_SAMPLES of 2 * DENSE_SAMPLES + 1
     assert len(drawn["sample, valid"].get_offsets()) == int((kept & valid).sum())
     assert len(drawn["sample, in collision"].get_offsets()) == int((kept & ~valid).sum())
     assert all(c.get_alpha() < 1 for c in drawn.values())  # lighter: the blocks show through
@@ -381,10 +382,11 @@ def test_a_stills_overview_stars_mistakes_as_often_as_the_model_makes_them(cross
     them, so its share of those stars is the model's rate of them; reader r27e: every dangerous mistake drawn, thinned
     or not (the rare kind: thinning left one of 13). Its title and text say which k, and the dangerous ones added."""
     robot, workspace, _, _, _ = crossing
-    n = 2 * still_panels.OVERVIEW_SAMPLES + 1
+    assert len(workspace.boxes) > still_panels.DENSE_BLOCKS  # reader r33e: a dense workspace's overview draws fewer
+    n = 2 * still_panels.DENSE_SAMPLES + 1
     points = robot.link_boxes(robot.sample(np.random.default_rng(0), n))[0][:, 0]  # (n, 3) bases
     valid = np.arange(n) % 5 == 0  # (n,)
-    wrong = np.arange(n) % 7 == 1  # (n,) 58 of 401: 14 %
+    wrong = np.arange(n) % 7 == 1  # (n,) 29 of 201: 14 %
     kinds = {"valid": valid, "in collision": ~valid, "model wrong": wrong}
     fig = scenes.scene_still(robot, workspace, {}, samples=(points, kinds))
     overview = fig.axes[0]
@@ -392,14 +394,14 @@ def test_a_stills_overview_stars_mistakes_as_often_as_the_model_makes_them(cross
     kept = np.arange(n) % 3 == 0  # (n,) 1 in 3, whatever its kind
     dangerous = wrong & ~valid  # (n,) every one drawn
     assert drawn["sample, model wrong"] == int((kept & wrong & valid).sum())  # conservative: thinned alike
-    assert drawn[still_panels.DANGEROUS_LABEL] == int(dangerous.sum()) == 46
+    assert drawn[still_panels.DANGEROUS_LABEL] == int(dangerous.sum()) == 23
     assert drawn["sample, valid"] == int((kept & valid).sum())
     assert drawn["sample, in collision"] == int(((kept | dangerous) & ~valid).sum())
     stars = drawn["sample, model wrong"] / drawn["sample, valid"]
     assert stars == pytest.approx((wrong & valid).sum() / valid.sum(), abs=0.05)
     extra = int((dangerous & ~kept).sum())
     assert overview.get_title().endswith(  # reader r29e: "(11 more)" was cryptic
-        f"1 sample in 3 drawn\nand all 46 dangerous mistakes ({extra} added to the 1-in-3 draw)"
+        f"1 sample in 3 drawn\nand all 23 dangerous mistakes ({extra} added to the 1-in-3 draw)"
     )
     assert "1 sample in 3 of every kind drawn, and all the dangerous mistakes" in alt_text(fig)
 
@@ -603,3 +605,21 @@ def test_a_path_frame_draws_the_closest_pair_labelled_with_the_gap_and_the_bound
     scene = fig.axes[0]
     assert [line.get_gid() for line in scene.get_lines()].count("closest") == 1
     assert [t.get_text() for t in scene.texts if "apart" in t.get_text()] == [f"0.250 apart\n(bound ≥ {bound:.3f})"]
+    # reader r33e: the base's dashed trace ran through the label; it is drawn above every line and face, on white
+    fig.canvas.draw()  # mplot3d gives its artists their z-orders by depth when it draws
+    label = next(t for t in scene.texts if "apart" in t.get_text())
+    drawn = [*scene.get_lines(), *scene.collections, *scene.patches]
+    assert label.get_zorder() > max(a.get_zorder() for a in drawn)
+    assert label.get_bbox_patch() is not None and label.get_bbox_patch().get_facecolor()[:3] == (1.0, 1.0, 1.0)
+
+
+def test_an_overview_draws_a_sparse_workspaces_blocks_darker_and_a_dense_ones_fainter_with_fewer_samples():
+    """Reader r33e: the office's 30 blocks were very faint on its wide floor, and 3DC-9's 123 blocks with 167 marks a
+    grey haze. Blocks of a sparse workspace are drawn darker than a dense one's, and a dense one's overview draws at
+    most DENSE_SAMPLES samples."""
+    sparse, dense = (still_panels.OVERVIEW_BLOCKS[d] for d in (False, True))
+    assert sparse[0]["alpha"] > dense[0]["alpha"] and sparse[0]["linewidth"] > dense[0]["linewidth"]
+    assert all(far["alpha"] < near["alpha"] for far, near in (sparse, dense))  # the blocks near the robot darker
+    office, clutter = (len(scenarios.get(s).make_workspace(np.random.default_rng(0)).boxes) for s in ("3do", "3dc9"))
+    assert office <= still_panels.DENSE_BLOCKS < clutter
+    assert still_panels.overview_step(2000, office) == 10 and still_panels.overview_step(500, clutter) == 5

@@ -84,13 +84,27 @@ def test_a_block_between_the_robot_and_the_camera_is_drawn_over_it_faded_one_beh
     middle = CHAIN7.link_boxes(q[None])[0][0].mean(axis=0)  # (3,)
     blocks = np.array([[c - 0.25, c + 0.25] for c in (middle + 0.6 * toward, middle - 0.6 * toward)])  # (2, 2, 3)
     workspace = Workspace(np.zeros(3), np.full(3, 11.0), blocks, family="3dc")
-    still_panels.close_up(ax, CHAIN7, q, workspace, color=VALID_COLOR, margin=1.0)
+    still_panels.close_up(ax, CHAIN7, q, workspace, color=VALID_COLOR, margin=1.0, turns=(0.0,))  # not turned
     links = [c.get_zorder() for c in ax.collections if c.get_gid() == "link"]
     front, back = sorted((c for c in ax.collections if c.get_gid() == "block"), key=lambda c: -c.get_zorder())
     assert back.get_zorder() < min(links) and max(links) < front.get_zorder()
     corners = front._faces.reshape(-1, 3)  # (24, 3) its faces' corners (mplot3d has no public getter)
     assert np.allclose(corners.mean(axis=0), middle + 0.6 * toward)  # the one toward the camera is the one in front
     assert front.get_alpha() < 0.5  # faded: the robot shows through it
+
+
+def test_a_close_up_turns_its_camera_round_where_a_block_stands_between_it_and_the_robot():
+    """Reader r33e: chapter 05's goal close-up drew the chain through a faded block in front of it, and it looked
+    inside the block. Where turning the camera half round clears every line of sight, the close-up turns it."""
+    q = np.array([5.5, 5.5, 5.5, 0.0, 0.0, 0.0, 0.0])  # 3DC-7, straight along x
+    elevation, azimuth = still_panels.view_angles(CHAIN7, q)
+    middle = CHAIN7.link_boxes(q[None])[0][0].mean(axis=0)  # (3,)
+    centre = middle + 0.6 * still_panels._toward_camera(elevation, azimuth)  # (3,) a block toward the camera
+    workspace = Workspace(np.zeros(3), np.full(3, 11.0), np.array([[centre - 0.25, centre + 0.25]]), family="3dc")
+    ax, _, angles = _close_up(CHAIN7, q, workspace, margin=1.0)
+    assert angles == (elevation, azimuth + 180.0)
+    links = [c.get_zorder() for c in ax.collections if c.get_gid() == "link"]
+    assert all(c.get_zorder() < min(links) for c in ax.collections if c.get_gid() == "block")  # behind it now
 
 
 def test_blocks_near_a_link_are_darker_than_the_rest_of_the_window_and_counted():

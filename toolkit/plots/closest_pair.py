@@ -58,12 +58,15 @@ def mark_closest(scene, robot: BoxRobot, q: np.ndarray, blocks: np.ndarray, boun
         ha="right" if away[0] < 0 else "left",
         va="top" if away[1] < 0 else "bottom",
         arrowprops=dict(arrowstyle="-", color=COLORS["ink"], linewidth=0.6, shrinkA=1.0, shrinkB=2.0),
-        **scene_label(),
+        **{**scene_label(), **LABEL_ON_TOP},
     )
     return gap
 
 
 LABEL_OUT = 36.0  # points: the gap's label this far from the line's middle, away from the block (reader r31e)
+# reader r33e: the base's dashed trace ran through the label ("0.028" read "0:028"). mplot3d gives its lines and
+# faces z-orders above the label's by depth, so the label goes above them all, on a white ground.
+LABEL_ON_TOP = dict(zorder=1e6, bbox=dict(boxstyle="round,pad=0.2", facecolor=COLORS["free"], edgecolor="none"))
 
 
 def _away_from(scene, point: np.ndarray, blocks: np.ndarray) -> np.ndarray:

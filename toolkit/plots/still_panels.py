@@ -47,6 +47,12 @@ SAMPLE_WORDS = {
 DANGEROUS_STAR = 1.8  # a dangerous mistake's star this many times a conservative one's area, its line thicker (r27e)
 DANGEROUS_LABEL = "sample, model wrong, dangerous"  # a collection of the larger stars, round diamonds
 OVERVIEW_SAMPLES = 200  # at most this many samples in a still's overview: more hide the blocks and the robot
+DENSE_BLOCKS = 60  # a workspace of more blocks is dense (3DC: 110-125; the office: 25-30)
+DENSE_SAMPLES = 100  # at most this many samples in a dense workspace's overview (reader r33e: 3DC-9's was a haze)
+OVERVIEW_BLOCKS = {  # {dense: (far blocks' style, near blocks')} in an overview (reader r33e): the office's few blocks
+    False: (dict(alpha=0.3, linewidth=0.6), dict(alpha=0.45, linewidth=1.0)),  # darker on its wide floor, the
+    True: (dict(alpha=0.1, linewidth=0.2), dict(alpha=0.3, linewidth=0.8)),  # clutter's fainter, the near ones not
+}
 OVERVIEW_STAR = 150  # points²: an overview's star round a mistake (a close-up's: SAMPLE_MARKS' 300, scaled)
 OVERVIEW_ALPHA = 0.45  # an overview's marks, light: the robot drawn over them and the blocks under them show
 CLOSE_UP_SCALE = 1.5  # a close-up's marks this many times larger: a small window, seen near
@@ -57,6 +63,7 @@ JOINT_MARK = dict(marker="o", s=8, color=COLORS["free"], edgecolors=COLORS["ink"
 #   0.1 cube shows round it (review r15b: at 22 points² the dots hid 3DC-9's cubes)
 ELEVATION = (15.0, 45.0)  # degrees: a close-up's camera stays this far above the horizon, no lower and no higher
 USUAL_VIEW = (30.0, -60.0)  # degrees: mplot3d's camera, elevation and azimuth; a close-up's stays on its side
+CLOSE_UP_TURNS = (0.0, 180.0, 90.0, -90.0)  # degrees: a close-up's camera turned, the bends' plane still across first
 OFF_AXIS = 20.0  # degrees: the least a close-up's azimuth keeps from an axis of the workspace
 
 
@@ -67,10 +74,10 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
     near = np.zeros(len(workspace.boxes), dtype=bool)  # (K,) a block near a pose
     for boxes in aabbs:
         near |= near_blocks(workspace.boxes, boxes)
+    styles = OVERVIEW_BLOCKS[len(workspace.boxes) > DENSE_BLOCKS]  # (far, near) blocks' styles
     for (lo, hi), dark in zip(workspace.boxes, near):
-        style = dict(alpha=0.3, linewidth=0.8) if dark else dict(alpha=0.15, linewidth=0.2)
-        add_box_3d(ax, aabb_corners(lo, hi), **style, **BLOCK_STYLE)
-    step = 1 if samples is None else overview_step(len(samples[0]))
+        add_box_3d(ax, aabb_corners(lo, hi), **styles[bool(dark)], **BLOCK_STYLE)
+    step = 1 if samples is None else overview_step(len(samples[0]), len(workspace.boxes))
     extra = 0  # dangerous mistakes drawn beyond the every k-th
     if samples is not None:  # every k-th of every kind alike, light: a fair share (reader r19c: every mistake added
         keep = np.arange(len(samples[0])) % step == 0  # (N,) to every k-th right one made stars look 40 % of marks)
@@ -150,17 +157,19 @@ def flat(workspace: Workspace) -> bool:
     return bool(extent[2] < 0.5 * extent[:2].max())
 
 
-def overview_step(n: int) -> int:
-    """k: a still's overview draws every k-th of ``n`` samples, at most :data:`OVERVIEW_SAMPLES`."""
-    return -(-n // OVERVIEW_SAMPLES)
+def overview_step(n: int, blocks: int = 0) -> int:
+    """k: a still's overview draws every k-th of ``n`` samples, at most :data:`OVERVIEW_SAMPLES`, or
+    :data:`DENSE_SAMPLES` among more than :data:`DENSE_BLOCKS` ``blocks``."""
+    return -(-n // (DENSE_SAMPLES if blocks > DENSE_BLOCKS else OVERVIEW_SAMPLES))
 
 
 def close_up(
-    ax, robot: BoxRobot, q: np.ndarray, workspace: Workspace, *, color: str, margin: float
+    ax, robot: BoxRobot, q: np.ndarray, workspace: Workspace, *, color: str, margin: float, turns=CLOSE_UP_TURNS
 ) -> tuple[int, tuple[float, float]]:
     """The robot at ``q (dof,)`` in ``color`` among the blocks within ``margin`` of it (their parts in that window, one
-    within :data:`NEAR` up to ``margin`` taller), seen from :func:`view_angles`. Returns how many blocks lie within
-    :data:`NEAR` of a link's box, and the camera's (elevation, azimuth)."""
+    within :data:`NEAR` up to ``margin`` taller), seen from :func:`view_angles` turned by the first of ``turns``
+    (degrees) that puts the fewest blocks on a line of sight through a link (:func:`clear_turn`). Returns how many
+    blocks lie within :data:`NEAR` of a link's box, and the camera's (elevation, azimuth)."""
     q = np.asarray(q, dtype=float)
     draw_robot(ax, robot, q[None], colors=[color], view="3d", margin=margin)  # the links; the blocks below
     aabbs = robot.link_aabbs(q[None])[0]  # (L, 2, 3)
@@ -171,7 +180,8 @@ def close_up(
     hi[2] = min(z[:, 1].max(initial=hi[2]), hi[2] + margin, workspace.upper[2])  # like a thin slab: more of it
     ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), zlim=(lo[2], hi[2]))
     ax.set_box_aspect(hi - lo, zoom=1.15)  # the robot larger in its panel: mplot3d leaves wide margins
-    elevation, azimuth = view_angles(robot, q)
+    elevation, azimuth = view_angles(robot, q)  # turned where a block stands on a line of sight through a link
+    azimuth += clear_turn(robot, q, workspace, margin, turns, (elevation, azimuth))  # (reader r33e)
     ax.view_init(elev=elevation, azim=azimuth)
     toward = _toward_camera(elevation, azimuth)  # (3,)
     ax.computed_zorder = False  # drawn in the order set below, not by mplot3d's guess of each collection's depth

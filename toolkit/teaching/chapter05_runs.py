@@ -31,22 +31,17 @@ def plan_tables(result) -> str:
 
 
 def networks(threshold: float) -> str:
-    """The fold under the answer naming the three `strong` trainings on the page (readers r29e, r30e, r31e): the timed
-    Algorithm 1 run's, this notebook's (at ``threshold``) and the lazy-PRM run's, each with its threshold and where
-    the page uses it."""
+    """Section 5's three lines, one a training of the `strong` recipe (readers r29e, r33e): the timed Algorithm 1
+    run's, this notebook's (at ``threshold``) and the lazy-PRM run's, each with its threshold and where the page uses
+    it."""
     said = {p: chapter05.recorded_threshold(p) for p in (COMPILED, "strong")}
     cell = {p: "none recorded" if t is None else f"{t:.2f}" for p, t in said.items()}
     return (
-        "<details><summary>Three trainings of the `strong` recipe on this page, each with its own threshold"
-        "</summary>\n\n"
-        "Each training chose its threshold on P(valid) on held-out data:\n\n"
-        "| the `strong` network of | threshold | where this page uses it |\n| --- | ---: | --- |\n"
-        f"| the timed Algorithm 1 runs (`{COMPILED}` in {chapter05.RESULTS}) | {cell[COMPILED]} "
-        "| the answer above, the closing tables |\n"
-        f"| this notebook (trained or loaded by `trained_models`) | {threshold:.2f} | sections 5–7 |\n"
-        f"| the lazy-PRM runs (`strong` in {chapter05.RESULTS}) | {cell['strong']} "
-        "| the closing section's folded note |"
-        "\n\n</details>"
+        f"- **the timed network**, threshold {cell[COMPILED]} (`{COMPILED}` in {chapter05.RESULTS}): the answer at "
+        "the top and the closing tables;\n"
+        f"- **this notebook's**, threshold {threshold:.2f} (trained or loaded by `trained_models`): sections 5–7;\n"
+        f"- **the lazy-PRM runs'**, threshold {cell['strong']} (`strong` in {chapter05.RESULTS}): the closing's "
+        'folded "More" only.'
     )
 
 
