@@ -12,6 +12,7 @@ from tools import (
     recorded_results,
     results_figures,
     results_findings,
+    results_networks,
     results_noise,
     results_summary,
     results_words,
@@ -97,7 +98,7 @@ def test_the_cae_sentence_says_better_than_all_free_only_where_it_is():
         rows = [["2ds", "**89%** / 100%", f"**{unseen}** / 100%", "89% / 88%"]]
         columns = ["", "Seen", "Unseen", "all free: Seen / Unseen"]
         table = {"Table 1: CAE reconstruction accuracy": {"without": None, "columns": columns, "rows": rows}}
-        return results_findings.cae({"paper": table})
+        return results_networks.cae({"paper": table})
 
     assert "at 86 % of their cells (the paper: 100 %), no better, scenario by scenario, than" in cae("86%")
     assert "(88 %)" in cae("86%") and "no better" in cae("88%")
@@ -321,14 +322,14 @@ IMPLIED = {"2ds": 0.60, "3dc7": 0.42, "3dc9": 0.50, "3do": 0.52}  # review r14a'
 def test_the_valid_share_the_papers_table_2_implies_is_solved_from_its_scores():
     for scenario, scores in paper_numbers.MLP.items():
         acc, tpr, tnr = (scores["unseen"][k] for k in ("acc", "tpr", "tnr"))
-        found = results_findings.above_always_valid(scores["unseen"])
+        found = results_networks.above_always_valid(scores["unseen"])
         assert found.share == pytest.approx(IMPLIED[scenario], abs=0.005)
         assert tpr * found.share + tnr * (1 - found.share) == pytest.approx(acc)  # back into Acc = TPR·p + TNR·(1-p)
         assert found.gap == pytest.approx(acc - found.share) and found.low <= found.share <= found.high
         assert found.least_gap <= found.gap
-    assert results_findings.implied_valid_share(0.8, 0.9, 0.7) == pytest.approx(0.5)
+    assert results_networks.implied_valid_share(0.8, 0.9, 0.7) == pytest.approx(0.5)
     with pytest.raises(ValueError, match="TPR and TNR are equal"):
-        results_findings.implied_valid_share(0.8, 0.7, 0.7)
+        results_networks.implied_valid_share(0.8, 0.7, 0.7)
 
 
 def test_the_papers_mlp_figures_are_set_against_always_valid_on_the_samples_its_table_2_implies():
@@ -343,7 +344,7 @@ def test_the_papers_mlp_figures_are_set_against_always_valid_on_the_samples_its_
         r"The paper reports no such share"
     )
     assert [int(v) for v in said] == [round(ours[s] * 100) for s in order]
-    found = {s: results_findings.above_always_valid(paper_numbers.MLP[s]["unseen"]) for s in order}
+    found = {s: results_networks.above_always_valid(paper_numbers.MLP[s]["unseen"]) for s in order}
     said = claim(
         r"share p gives about (\d+) % \(2DS\), (\d+) % \(3DC-7\), (\d+) % \(3DC-9\) and (\d+) % \(3DO\), so on its "
         r"own samples its MLP's (\d+) %, (\d+) %, (\d+) % and (\d+) % lie (\d+), (\d+), (\d+) and (\d+) points above",
@@ -631,7 +632,7 @@ def test_the_counts_a_noise_floor_undercuts_are_told_apart():
 def test_tables_1_and_2_on_unseen_workspaces_are_shown_as_the_runs_tables_give_them():
     """Review r29f, item 3: the title promised the paper's tables, and Tables 1 and 2 were prose only. One small table
     sets ours beside the paper's and beside the trivial answer, each cell read from the runs' own tables."""
-    said = results_findings.unseen_table(TABLES)
+    said = results_networks.unseen_table(TABLES)
     shown = "\n".join(f"    {line}" if line else "" for line in said.splitlines())  # under the MLP's bullet
     assert shown in TEXT and said.count("\n| ") == 7  # a header, its rule and five rows
     html = site.page_html(TEXT)
@@ -650,14 +651,14 @@ def test_the_paper_networks_savings_are_explained_at_table_3_and_the_slash_at_ta
     """Reader r31f, item 2: the `paper` network's 8 of 16 savings against Algorithm 1 explained in one sentence where
     Table 3's figure shows them, from its Table 2; contradiction 3: the last row of Tables 1 and 2's "A / B" is two
     presets, not ours / the paper's, said at the table."""
-    said = results_findings.not_the_method(TABLES)
+    said = results_networks.not_the_method(TABLES)
     table3 = {s: recorded.improvements("paper", s, recorded=TABLES) for s in ("2ds", *THREE_D)}
     counts = [results_words.change(1 - v) for row in table3.values() for v in row.values()]
     saved = counts.count("less time")
     assert said.startswith(f"Our `paper`-preset network saved time against Algorithm 1 in {saved} of 16")
     assert "gives one answer to every sample in 3DC-7, 3DC-9 and 3DO," in said and "2DS (a TPR of 28 %)" in said
     assert said in TEXT.partition("**Figure 2")[2].partition("![")[0]
-    table = results_findings.unseen_table(TABLES)
+    table = results_networks.unseen_table(TABLES)
     assert "A cell “A / B” is ours / the paper's, except in the last row" in table
     assert table.splitlines()[-1].startswith("| MLP on balanced samples, `paper` / `strong` preset")
 

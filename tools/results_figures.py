@@ -18,7 +18,7 @@ from toolkit.plots import alt, query_ratios
 from toolkit.teaching import checker_scope, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
-from tools.results_findings import not_the_method
+from tools.results_networks import not_the_method
 from tools.results_noise import NOISE_EDGE, at_noise_edge, noise, noise_line, own_intervals, reach_of
 from tools.results_words import NAMES, change
 
