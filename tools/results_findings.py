@@ -173,6 +173,21 @@ def why_no_saving(tables: Tables) -> str:
         "today's compiled checker ([Benchmarks](benchmarks.md)), so with it the network is the cheaper check, yet the "
         f"sampling time it saved came to {span(saved, lambda f: f'{f * 100:.2g}')} % of a mean query's time."
         + worked_example(tables)
+        + whole_moved(tables)
+    )
+
+
+def whole_moved(tables: Tables) -> str:
+    """Reader r33f, contradiction 1: the sampling time saved is no ceiling on the whole query's saving; the cells of
+    :func:`apart` whose whole query, by means, saved more than the most sampling saved are named (not their
+    percentages: here a percentage of a query is sampling's saving); empty where there are none."""
+    _, saved = stage_shares(tables, checker_scope.SLOW)
+    more = [cell.name for cell in apart(tables) if cell.total > max(saved)]
+    if not more:
+        return ""
+    return (
+        f" By means the whole query saved more than that in {', '.join(more)}, moved by the parts prediction does "
+        "not shorten (below, “Where the whole query moved apart from sampling”)."
     )
 
 
