@@ -101,7 +101,7 @@ def bands(tables: Tables) -> str:
             "tie band (chapter 04's rule)",
             edges(1 - tie, 1 + tie),
             "a tie; at or past its edges, a saving or a cost",
-            "every count; shaded in every figure",
+            "every count (as shown to two decimals); shaded in every figure",
         ),
         (
             "noise floor, each query's own ratio",
@@ -112,19 +112,20 @@ def bands(tables: Tables) -> str:
         (
             "noise edge",
             edges(1 - edge, 1 + edge),
-            "a saving or cost this near 1 is no clear evidence",
+            f"twice as far from 1 as the floor above reaches (2 × {reach_of(tables):.2f}): a saving or cost inside it "
+            "is no clear evidence",
             "Figure 1 (hatched, dashed edges); the counts above",
         ),
         (
             "noise floor, ratio of means",
             edges(*floor.means),
-            "how far timing alone moved it",
+            "the same, for a ratio of the two modes' mean times",
             "Figures 2–3 (hatched, dotted edges); Table 3's counts",
         ),
         (
             "noise floor, ratio of medians",
             edges(*floor.medians),
-            "how far timing alone moved it",
+            "the same, for a ratio of their median times",
             "against the lazy PRM (the medians tables)",
         ),
     ]

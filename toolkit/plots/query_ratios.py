@@ -97,7 +97,7 @@ def own_ratios(
     groups.set_xticks(centres, list(cells))
     groups.tick_params(length=0, pad=16, labelsize=10)
     ax.set_xlabel("sampler, by scenario", labelpad=16)  # under the scenarios' names
-    ax.set_xlim(-0.7, ticks[-1] + 0.7)
+    ax.set_xlim(-0.7, ticks[-1] + 0.9)  # reader r33f: the last hollow point clears the frame
     drawn = [v for table in (cells, slow) for by in table.values() for value in by.values() for v in value]
     _own_axis(ax, drawn, tie, [] if edge is None else [1 - edge, 1 + edge])
     ax.set_ylabel(Y_LABEL, fontsize=9)  # room for the band's edges on the right
@@ -125,7 +125,7 @@ def _own_axis(ax, drawn: list[float], tie: float, edges: list[float]) -> None:
     shown = sorted({round(s, 2) for s in every if low <= s <= high})
     ax.set_yticks(shown, [f"{s:g}" for s in shown])
     ax.yaxis.set_minor_locator(NullLocator())  # review r27f: an unlabelled tick under 0.7 read as a missing label
-    _band_edges(ax, [1 - tie, 1 + tie])
+    _band_edges(ax, [1 - tie, 1 + tie], centred=True)
 
 
 NOISE_WORDS = (  # means_grid's hatching, told apart from own_ratios' (reader r32f: one hatch meant two bands)
@@ -320,7 +320,7 @@ def _noise_bands(axes, noise: tuple[float, float] | None, tie: float) -> list[st
     return [f"hatched the other way round the tie band, the {words}"]
 
 
-def _band_edges(ax, ticks: list[float], size: float = 8) -> None:
+def _band_edges(ax, ticks: list[float], size: float = 8, centred: bool = False) -> None:
     """``ticks`` near 1 (the tie band's edges) labelled on the right of ``ax``, apart from the "1" on the left; those
     above 1 written above their tick, those below under it, so two edges never touch (review r30f: Figure 3's "1.1"
     and "0.9" did)."""
@@ -328,8 +328,8 @@ def _band_edges(ax, ticks: list[float], size: float = 8) -> None:
     edges.set_yticks(ticks, [f"{t:g}" for t in ticks])
     edges.yaxis.set_minor_locator(NullLocator())
     edges.tick_params(labelsize=size, length=2, pad=1)
-    for label, t in zip(edges.get_yticklabels(), ticks):
-        label.set_verticalalignment("bottom" if t > 1 else "top")
+    for label, t in zip(edges.get_yticklabels(), ticks):  # ``centred``: on the band's edges (reader r33f: Figure 1's
+        label.set_verticalalignment("center" if centred else "bottom" if t > 1 else "top")  # read as the dashed lines)
 
 
 def _means_panel(ax, title: str, series: Mapping[str, Mapping[str, float]], names, samplers, tie: float) -> str:
