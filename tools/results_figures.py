@@ -128,7 +128,7 @@ def claim_markdown(text: str) -> str:
     )
     edge_said = (
         f" Cells that read as costs or savings but lie within {NOISE_EDGE * reach_of(tables):.2f} of 1 (twice "
-        f"that reach: the median noise edge, hatched, its edges dashed) are at the noise edge: {', '.join(edge)}."
+        f"that reach, hatched, its edges dashed) are at the noise edge: {', '.join(edge)}."
         if edge
         else ""
     )
