@@ -716,3 +716,18 @@ def test_the_last_contradictions_of_reader_r33f_are_gone():
         "in 3D the 5 December checker measured 6.7–13 times the 2 December one's rate, and python-fcl, timed beside "
         "each, 1.4–2.4 times" in PAGE
     )
+
+
+def test_the_five_bands_near_1_are_set_side_by_side_where_the_first_appears():
+    """Reader r33f, item 3 and contradiction 4: the tie band, three noise floors and the noise edge in one small table
+    at the top, each read from the table "timed twice", and a line on why Figure 1 doubles its floor and Figures 2-3
+    do not, whose reasons hold by those numbers."""
+    floor = results_noise.noise(TABLES)
+    edge = results_noise.NOISE_EDGE * results_noise.reach_of(TABLES)
+    said = results_noise.bands(TABLES)
+    assert said in TEXT and TEXT.index(said) < TEXT.index("**Figure 1") < TEXT.index("## ")
+    for low, high in ((0.9, 1.1), floor.own, (1 - edge, 1 + edge), floor.means, floor.medians):
+        assert f"| {low:.2f}–{high:.2f} |" in said
+    assert "Figure 1 doubles its floor and Figures 2–3 do not: each query's own floor lies inside the tie band" in said
+    assert 0.9 < floor.own[0] and floor.own[1] < 1.1  # inside the tie band: as measured it sets no cell apart
+    assert "already reaches past the tie band" in said and floor.means[0] < 0.9 and floor.means[1] > 1.1
