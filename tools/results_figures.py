@@ -18,7 +18,7 @@ from toolkit.plots import alt, query_ratios
 from toolkit.teaching import checker_scope, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
-from tools.results_findings import not_the_method
+from tools.results_networks import not_the_method
 from tools.results_noise import NOISE_EDGE, at_noise_edge, noise, noise_line, own_intervals, reach_of
 from tools.results_words import NAMES, change
 
@@ -34,7 +34,8 @@ MARGINS = {"total": 1.15, "sampling": 1.25}  # each figure's range: its points',
 ROW_HEIGHTS = {"total": 2.9, "sampling": 3.2}  # inches a row of panels: each band is read to 0.9 and 1.1 (r27f)
 KEY = (  # under Figure 2 (reader r31f, item 3): its marks are not Figure 1's verdicts
     " Here colour and shape name a series, not a verdict as in Figure 1 (none takes its circle, square or triangle); "
-    "hollow is python-fcl on both sides, as there, and its orange hexagons are the `strong` network with it."
+    "hollow is python-fcl on both sides, as there: the hollow hexagons, in the stars' reddish purple, are the `strong` "
+    "network with it."
 )
 CLAIM_FIGURE = RESULTS.parent / "results_claim.png"  # Figure 1: the statistic the verdict on the paper's claim reads
 CLAIM_BEGIN = "<!-- figure of the claim: drawn by `python -m tools.results_summary` from the tables below -->"
@@ -44,6 +45,7 @@ CLAIM_SERIES = ("our compiled checker on both sides", "python-fcl on both sides"
 FIGURE_BEGIN = "<!-- figure of {kind} times: drawn by `python -m tools.results_summary` from the tables below -->"
 FIGURE_END = "<!-- end of the figure of {kind} times -->"
 FIGURE_DPI = 110  # as docs/crossover.png: the site's column shows it at about its size
+WIDTH = 6.35  # inches, Figures 2-3: at FIGURE_DPI, cropped, the site's column (688 px at 1280), shown at its size
 SOURCES = {  # a series of the figure: its preset in the tables (None: the paper's own numbers) and its name; the
     # 1-2 December run with python-fcl is history, left out (review r27f, item 5: five series were 80 markers)
     "the paper's reported results (Table 3)": None,
@@ -89,6 +91,7 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
         ticks=TICKS[kind],
         row_height=ROW_HEIGHTS[kind],
         noise=floor,
+        width=WIDTH,
     )
 
 
@@ -125,7 +128,7 @@ def claim_markdown(text: str) -> str:
     )
     edge_said = (
         f" Cells that read as costs or savings but lie within {NOISE_EDGE * reach_of(tables):.2f} of 1 (twice "
-        f"that reach: the median noise edge, hatched, its edges dashed) are at the noise edge: {', '.join(edge)}."
+        f"that reach, hatched, its edges dashed) are at the noise edge: {', '.join(edge)}."
         if edge
         else ""
     )
@@ -177,8 +180,8 @@ def figure_markdown(text: str, kind: str = "total") -> str:
     said = (
         f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule (0.90 or less: saved; 1.10 or "
         f"more: lost). Timing alone moved a ratio of means to {floor.means[0]:.2f}–{floor.means[1]:.2f} (the "
-        "ratio-of-means floor, hatched with dotted edges; Figure 1's dashed band is another statistic's), wider than "
-        "the band: read a row's counts together, never one cell." + KEY * (kind == "total")
+        "ratio-of-means floor, hatched with dotted edges, as measured, not doubled as Figure 1's: the bands at the "
+        "top), wider than the tie band: read a row's counts together, never one cell." + KEY * (kind == "total")
     )
     tables = parse(text)
     lead = LEADS[kind] + (f"{means_not_verdict(tables)} {not_the_method(tables)}" if kind == "total" else "")

@@ -1,144 +1,49 @@
-"""The findings of ``docs/results.md`` ("What reproduces and what does not"), one bullet each, every number
-computed from the tables the page prints: why a fast checker erases the saving (:func:`why_no_saving`), the
-paper's CAE and MLP (Tables 1 and 2), the lazy PRM and Algorithm 1. :func:`summary` writes them between
-:data:`DETAIL_BEGIN` and :data:`DETAIL_END`.
-
-Table 2's accuracy, TPR and TNR imply the share of valid samples in the paper's tests (:func:`implied_valid_share`),
-which the paper does not report; docs/fidelity.md, §7, sets the paper's accuracies against answering "valid" to all of
-them (tests/test_results_page.py checks its figures against :func:`above_always_valid`)."""
+"""The findings of ``docs/results.md`` ("What reproduces and what does not") about time, one bullet each, every
+number computed from the tables the page prints: why a fast checker erases the saving (:func:`why_no_saving`: the
+sampling stage's share of a query, the network's cost per check, a worked example), where the whole query moved
+apart from sampling (:func:`apart`), the answers against the lazy PRM (:func:`lazy_prm`) and against Algorithm 1
+(:func:`algorithm_1`). :func:`summary` writes them, with the paper's two networks (:mod:`tools.results_networks`),
+between :data:`DETAIL_BEGIN` and :data:`DETAIL_END`."""
 
 from __future__ import annotations
 
-import itertools
 from typing import NamedTuple
 
 from toolkit.teaching import checker_scope, findings, recorded
 from toolkit.teaching.recorded import Tables
+from tools.results_networks import cae, mlp, unseen_table
 from tools.results_noise import medians_floor, noise
 from tools.results_words import NAMES, change, counted, grouped, percent, span, told
 
 DETAIL_BEGIN = "<!-- findings: written by `python -m tools.results_summary` from the tables below; edit them there -->"
 DETAIL_END = "<!-- end of the findings -->"
-CHAPTER_04 = ("2ds", "3dc7")  # the scenarios whose lazy-PRM cells chapter 04 shows
-
-
-def cae_unseen(tables: Tables) -> tuple[list[float], list[float], float]:
-    """The `paper` CAE's accuracy on unseen grids and a CAE answering "free" everywhere's, per scenario (Table 1),
-    and the most the first beats the second by (0 or less: no better)."""
-    rows = recorded.table("paper", "CAE reconstruction", tables)
-    ours = [recorded.ours(row["Unseen"]) for row in rows.values()]
-    free = [recorded.ours(row["all free: Seen / Unseen"].split("/")[-1]) for row in rows.values()]
-    return ours, free, max(o - f for o, f in zip(ours, free))
-
-
-def cae(tables: Tables) -> str:
-    rows = recorded.table("paper", "CAE reconstruction", tables)
-    papers = [recorded.ours(row["Unseen"].split("/")[-1]) for row in rows.values()]
-    ours, free, gain = cae_unseen(tables)
-    than_free = (
-        "no better, scenario by scenario, than a CAE that answers “free” everywhere"
-        if round(gain * 100) <= 0
-        else f"at most {percent(gain)} points better than a CAE that answers “free” everywhere"
-    )
-    return (
-        f"**The CAE (Table 1): {'no better than' if round(gain * 100) <= 0 else 'barely better than'} answering "
-        f"“free” everywhere.** The `paper` CAE reconstructs unseen workspaces at {span(ours)} % of their cells "
-        f"(the paper: {span(papers)} %), {than_free} ({span(free)} %)."
-    )
-
-
-def implied_valid_share(acc: float, tpr: float, tnr: float) -> float:
-    """The share ``p`` of valid samples in a test that a classifier's accuracy, TPR and TNR on it imply:
-    Acc = TPR·p + TNR·(1 − p). The paper gives no share for its unseen tests (its seen ones: "approximately
-    distributed 50/50"); its Table 2 gives the three scores."""
-    if tpr == tnr:
-        raise ValueError(f"TPR and TNR are equal ({tpr}): the accuracy is the same for every share of valid samples")
-    return (acc - tnr) / (tpr - tnr)
-
-
-class Implied(NamedTuple):
-    """A test's valid share as a classifier's printed scores imply it, and the accuracy above "always valid"."""
-
-    share: float  # at the printed scores
-    gap: float  # the accuracy minus the share
-    low: float  # the least share any scores that round to the printed ones give
-    high: float  # the largest
-    least_gap: float  # the least gap they give
-
-
-def above_always_valid(scores: dict[str, float], rounded: float = 0.005) -> Implied:
-    """``scores`` (``{"acc", "tpr", "tnr"}`` as Table 2 prints them, to whole percent) against answering "valid" to
-    every sample of the same test (:func:`implied_valid_share`), at the printed scores and over every scores within
-    ``rounded`` of them (share and gap are monotone in each score, so the corners bound them)."""
-    acc, tpr, tnr = scores["acc"], scores["tpr"], scores["tnr"]
-    corners = [
-        (acc + a, implied_valid_share(acc + a, tpr + t, tnr + n))
-        for a, t, n in itertools.product((-rounded, rounded), repeat=3)
-    ]
-    share = implied_valid_share(acc, tpr, tnr)
-    shares = [p for _, p in corners]
-    return Implied(share, acc - share, min(shares), max(shares), min(a - p for a, p in corners))
-
-
-def mlp(tables: Tables) -> str:
-    def balanced(preset: str) -> list[float]:  # review r30f, contradiction 1: `strong` is Figure 1's network
-        return [
-            recorded.ours(row["Balanced unseen Acc"]) for row in recorded.table(preset, "MLP accuracy", tables).values()
-        ]
-
-    rows = recorded.table("paper", "MLP accuracy", tables)
-    one_answer = [
-        NAMES.get(name, name)
-        for name, row in rows.items()
-        if min(recorded.ours(row["Unseen TPR"]), recorded.ours(row["Unseen TNR"])) == 0
-    ]
-    listed = ", ".join(one_answer[:-1]) + " and " * (len(one_answer) > 1) + "".join(one_answer[-1:])
-    trivial = (
-        f" In {listed} the `paper` MLP gives one answer to every sample (a TPR or TNR of 0 %)." if one_answer else ""
-    )
-    blind = [recorded.ours(row["Unseen Acc"]) for row in rows.values()]
-    always = [recorded.ours(row["Unseen always valid"]) for row in rows.values()]
-    return (
-        f"**The MLP (Table 2): the `paper` MLP is at chance, the `strong` one right "
-        f"{span(balanced(recorded.ALGORITHM_1))} % of the time.** On unseen workspaces' balanced samples (half of "
-        "them valid) the `paper` MLP is right "
-        f"{span(balanced('paper'))} % of the time, where a coin flip is right 50 %; the `strong` MLP of Figure 1 "
-        f"{span(balanced(recorded.ALGORITHM_1))} %. On the validity-blind samples the paper describes, which chapter "
-        f"04 quotes, the `paper` MLP is right {span(blind)} %, answering “valid” to every sample {span(always)} %."
-        + trivial
-    )
 
 
 VERDICTS = {"no": "saves no time", "rarely": "rarely saves time", "mostly": "mostly saves time"}  # lazy_prm's
 
 
 def lazy_prm(tables: Tables) -> str:
-    """Against the lazy PRM, one answer per scope, each scope named (reader r18a: chapter 04's "none of 8" and this
-    page's "Rarely" read as disagreeing): the accurate `strong` network alone, then both networks together."""
+    """Against the lazy PRM, one sentence a network (reader r33f, item 5: "Counting ... rarely: 1 of 32" could not be
+    read at once): the accurate `strong` network's cells by the ratio of the two medians, then our `paper`-preset
+    network's savings beyond that ratio's noise floor (its planner with prediction is Algorithm 1), then the
+    `strong` network's savings by means (:func:`by_means`)."""
     groups = {
         preset: grouped({s: kinds["total"] for s, kinds in recorded.median_ratios(preset, tables).items()})
         for preset in ("strong", "paper")
     }
-    cells = {preset: sum(map(len, g.values())) for preset, g in groups.items()}
-    saved = {preset: g["less time"] for preset, g in groups.items()}
-    chapter = sum(len(row["total"]) for s, row in recorded.median_ratios("strong", tables).items() if s in CHAPTER_04)
-
-    def answer(count: int, total: int) -> str:
-        return "no" if count == 0 else "rarely" if count < total / 2 else "mostly"
-
+    strong = sum(map(len, groups["strong"].values()))
+    saved = len(groups["strong"]["less time"])
+    answer = "no" if saved == 0 else "rarely" if saved < strong / 2 else "mostly"
     floor = medians_floor(tables)
-    beyond = [(name, r) for g in groups.values() for name, r in g["less time"] if floor is None or r < floor[0]]
-    named = f" ({', '.join(f'{name} {r:.2f}' for name, r in beyond)})" if beyond else ""
-    floor_said = f" beyond this ratio's noise floor ({floor[0]:.2f}–{floor[1]:.2f})," if floor else ""
-    return (  # review r28f, items 2 and 3: four lines, the count read by its own noise floor
+    beyond = [(name, r) for name, r in groups["paper"]["less time"] if floor is None or r < floor[0]]
+    named = f" ({', '.join(f'{name} {r:.2f}' for name, r in beyond)})" if 0 < len(beyond) <= 3 else ""
+    floor_said = f" beyond this ratio's noise floor ({floor[0]:.2f}–{floor[1]:.2f})" if floor else ""
+    return (  # review r28f, items 2 and 3: the count read by its own noise floor
         "**Against the lazy PRM, the fastest exact planner a network can drive, the `strong` network "
-        f"{VERDICTS[answer(len(saved['strong']), cells['strong'])]}.** By the ratio of the two modes' median times "
-        "(the medians tables of “Preset `strong`” and “Preset `paper`”), for the accurate `strong` network "
-        f"{answer(len(saved['strong']), cells['strong'])} (chapter 04 "
-        f"shows {chapter} of its cells): it took {told(groups['strong'])}. Counting our `paper`-preset network's "
-        "cells too (its planner with prediction is Algorithm 1, so planner and prediction both change), "
-        f"{answer(len(beyond), sum(cells.values()))}:{floor_said} {len(beyond) or 'none'} of {sum(cells.values())}"
-        f"{named}.{by_means(tables)}"
+        f"{VERDICTS[answer]}.** By the ratio of the two modes' median times (the medians tables), it took "
+        f"{told(groups['strong'])}. Our `paper`-preset network, whose planner with prediction is Algorithm 1 (so "
+        f"planner and prediction both change), saved time{floor_said} in {len(beyond) or 'none'} of "
+        f"{sum(map(len, groups['paper'].values()))}{named}.{by_means(tables)}"
     )
 
 
@@ -158,34 +63,6 @@ def by_means(tables: Tables) -> str:
     return (
         " By means, which a few slow queries pull, the `strong` network saved 10 % or more in "
         f"{len(saves)} of {len(means)} ({'; '.join(saves)}: below, “Means and medians”)."
-    )
-
-
-def not_the_method(tables: Tables) -> str:
-    """Reader r31f, item 2: why our `paper`-preset network saves time against Algorithm 1 in some cells, in one
-    sentence read from its Table 2 (unseen workspaces): where its MLP gives one answer to every sample, and how few
-    valid samples it keeps elsewhere."""
-    rows = recorded.table("paper", "MLP accuracy", tables)
-    rates = {NAMES.get(s, s): (recorded.ours(r["Unseen TPR"]), recorded.ours(r["Unseen TNR"])) for s, r in rows.items()}
-    one = [name for name, (tpr, tnr) in rates.items() if min(tpr, tnr) == 0]
-    rest = [f"{name} (a TPR of {percent(tpr)} %)" for name, (tpr, tnr) in rates.items() if name not in one]
-    listed = ", ".join(one[:-1]) + " and " * (len(one) > 1) + "".join(one[-1:])
-    read = [
-        change(1 - v)
-        for scenario in recorded.table("paper", "time improvement", tables)
-        for v in recorded.improvements("paper", scenario, recorded=tables).values()
-    ]
-    return (
-        f"Our `paper`-preset network saved time against Algorithm 1 in {read.count('less time')} of {len(read)} "
-        "cells, but not by the method: its MLP gives one answer to "
-        f"every sample in {listed or 'no scenario'}, so Algorithm 1 either skips every sample's check or starts from "
-        "an empty roadmap and first tries the straight edge from start to goal"
-        + (
-            f", and it keeps few valid samples in {', '.join(rest)}, a smaller roadmap, not a better one"
-            if rest
-            else ""
-        )
-        + "."
     )
 
 
@@ -290,6 +167,21 @@ def why_no_saving(tables: Tables) -> str:
         "today's compiled checker ([Benchmarks](benchmarks.md)), so with it the network is the cheaper check, yet the "
         f"sampling time it saved came to {span(saved, lambda f: f'{f * 100:.2g}')} % of a mean query's time."
         + worked_example(tables)
+        + whole_moved(tables)
+    )
+
+
+def whole_moved(tables: Tables) -> str:
+    """Reader r33f, contradiction 1: the sampling time saved is no ceiling on the whole query's saving; the cells of
+    :func:`apart` whose whole query, by means, saved more than the most sampling saved are named (not their
+    percentages: here a percentage of a query is sampling's saving); empty where there are none."""
+    _, saved = stage_shares(tables, checker_scope.SLOW)
+    more = [cell.name for cell in apart(tables) if cell.total > max(saved)]
+    if not more:
+        return ""
+    return (
+        f" By means the whole query saved more than that in {', '.join(more)}, moved by the parts prediction does "
+        "not shorten (below, “Where the whole query moved apart from sampling”)."
     )
 
 
@@ -395,48 +287,3 @@ def summary(tables: Tables) -> str:
         algorithm_1(tables),
     ]
     return "\n".join(f"- {item}" for item in items)
-
-
-def unseen_table(tables: Tables) -> str:
-    """Tables 1 and 2 on unseen workspaces in one small table, ours beside the paper's and beside the trivial answer
-    each is read against (review r29f, item 3: the page's title promised tables that were prose only)."""
-    cae_rows = {p: recorded.table(p, "CAE reconstruction", tables) for p in ("paper", "strong")}
-    mlp_rows = {p: recorded.table(p, "MLP accuracy", tables) for p in ("paper", recorded.ALGORITHM_1)}
-    scenarios = list(mlp_rows["paper"])
-
-    def pair(cell: str) -> str:  # "**86%** / 100%": ours / the paper's
-        ours, paper = (recorded.ours(part) for part in cell.split("/"))
-        return f"{percent(ours)} / {percent(paper)}"
-
-    def row(name: str, cells: list[str]) -> str:
-        return f"| {name} | " + " | ".join(cells) + " |"
-
-    lines = [
-        row("unseen workspaces, % right", [NAMES.get(s, s) for s in scenarios]),
-        row("---", ["---"] * len(scenarios)),
-        row("CAE, `paper` preset / the paper", [pair(cae_rows["paper"][s]["Unseen"]) for s in scenarios]),
-        row(
-            "CAE answering “free” everywhere",
-            [percent(recorded.ours(cae_rows["paper"][s]["all free: Seen / Unseen"].split("/")[-1])) for s in scenarios],
-        ),
-        row("MLP, `paper` preset / the paper", [pair(mlp_rows["paper"][s]["Unseen Acc"]) for s in scenarios]),
-        row(
-            "MLP answering “valid” to every sample",
-            [percent(recorded.ours(mlp_rows["paper"][s]["Unseen always valid"])) for s in scenarios],
-        ),
-        row(
-            "MLP on balanced samples, `paper` / `strong` preset of Figure 1 (5 December; a coin flip: 50)",
-            [
-                f"{percent(recorded.ours(mlp_rows['paper'][s]['Balanced unseen Acc']))} / "
-                f"{percent(recorded.ours(mlp_rows[recorded.ALGORITHM_1][s]['Balanced unseen Acc']))}"
-                for s in scenarios
-            ],
-        ),
-    ]
-    return (  # reader r31f, contradiction 3: what "/" means, said at the table
-        "*Tables 1 and 2 on unseen workspaces*, each network's row read against the answer in the row under it, the "
-        "last against a coin flip's 50 % (each run's section holds the full tables). A cell “A / B” is ours / the "
-        "paper's, except in the last row, where it is the `paper` preset's / the `strong` preset's: the paper gives "
-        "no balanced figures. The paper's Table 1 has one 3DC row, shown under both 3DC-7 and 3DC-9.\n\n"  # r33f, 7
-        + "\n".join(lines)
-    )

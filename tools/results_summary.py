@@ -19,6 +19,7 @@ from typing import NamedTuple
 
 from toolkit.plots import alt
 from toolkit.teaching import checker_scope, findings, recorded
+from toolkit.teaching.checker_scope import SLOW
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
 from tools.results_figures import (
@@ -39,15 +40,11 @@ from tools.results_findings import (
     APART_END,
     DETAIL_BEGIN,
     DETAIL_END,
-    apart,
-    network_costs,
     not_from_sampling,
-    share_word,
-    stage_shares,
     summary,
 )
-from tools.results_noise import NOISE_EDGE, own_intervals, reach_of
-from tools.results_words import change, counted, percent, span
+from tools.results_noise import NOISE_EDGE, bands, own_intervals, reach_of
+from tools.results_words import change, counted
 
 BEGIN = "<!-- summary: written by `python -m tools.results_summary` from the tables below; edit it there -->"
 END = "<!-- end of the summary -->"
@@ -86,53 +83,54 @@ ANSWERS = {findings.HOLDS: "Yes", findings.IN_PART: "In part", findings.DOES_NOT
 
 
 def short(tables: Tables) -> str:
-    """The summary's Markdown, without its markers: three plain sentences and a small table (reader r32f, item 1).
-    The answer, with why: what the network costs against our compiled checker and how small a share of a query
-    sampling is; why python-fcl, the slow checker, saves little; what the paper reported. The table (:func:`counts`)
-    gives each series' cells by each query's own ratio, beyond the noise edge and by means, so no count the page gives
-    elsewhere reads as contradicting it (contradictions 2, 3 and 7)."""
+    """The summary's Markdown, without its markers: the answer, then three one-line verdicts a student can repeat
+    (reader r33f, item 1), one a series (our compiled checker, python-fcl on both sides, the paper), each read from
+    the counts the table under them gives (:func:`counts`), then the bands near 1 those counts are read with
+    (:func:`tools.results_noise.bands`). Why prediction saves so little is the findings' first bullet."""
     ratios = recorded.query_ratios(recorded.ALGORITHM_1, tables)
-    costs = [c for s, c in network_costs(tables).items() if s != "2ds"]
-    fast, _ = stage_shares(tables, recorded.ALGORITHM_1)
-    slow, saved = stage_shares(tables, checker_scope.SLOW)
-    facts = checker_scope.slow_checker(tables)
+    papers = counted([change(1 - s) for s in checker_scope.slow_checker(tables).papers_totals])
     answer = (
         "**In short: does an accurate network inside the paper's Algorithm 1 save planning time? "
-        f"{ANSWERS[findings.claim_verdict(ratios)]}, against our fast compiled checker.** There our accurate `strong` "
-        f"network cost {span(costs, lambda c: f'{c:.2g}')} times an exact check per configuration in 3D, and sampling, "
-        f"the only stage prediction shortens, took at most {max(fast) * 100:.2g} % of a mean query."
+        f"{ANSWERS[findings.claim_verdict(ratios)]}, against our fast compiled checker.** Our accurate network is "
+        "the `strong` preset's, Algorithm 1 the paper's PRM planner. Each line counts 16 cells, a cell one scenario "
+        "with one sampler (say 3DC-9 OB), ours by each query's time with prediction over its own time without, the "
+        "paper's by mean times:"
     )
-    slow_said = (
-        "With python-fcl, a slow exact checker, on both sides, the network is the cheaper check, but sampling took "
-        f"at most about {share_word(max(slow))} of a mean query, so the sampling time it saved came to at most "
-        f"{max(saved) * 100:.2g} % of a query's time ([why](#what-reproduces-and-what-does-not))"
-        + whole_moved(tables)
-        + "."
+    verdicts = [
+        verdict_line("With our fast compiled checker", own_medians(tables, recorded.ALGORITHM_1), tables),
+        verdict_line("With python-fcl, a slow exact checker, on both sides", own_medians(tables, SLOW), tables),
+        f"- **The paper's Table 3: {READS[max(range(3), key=lambda k: (papers[k], k == 1))]}.** Of {sum(papers)} "
+        f"cells, {papers[0]} saved 10 % or more, {papers[1]} tied, {papers[2] or 'none'} cost (read as mean times: "
+        "[how we read it](#how-these-results-were-made)).",
+    ]
+    why = (
+        "Why so little is saved: prediction shortens only sampling, a small share of a query ([the findings]"
+        "(#what-reproduces-and-what-does-not)). Saved: 0.90 or less; cost: 1.10 or more; the noise edge and the "
+        "other bands near 1 are in the second table."
     )
-    papers = counted([change(1 - s) for s in facts.papers_totals])
-    paper = (
-        f"The paper's reported results (its Table 3) saved 10 % or more of a query's time in {papers[0]} of "
-        f"{sum(papers)} cells, read as the improvement of the mean times (the paper does not say which: "
-        "[how we read it](#how-these-results-were-made)). "
-        "Counted cell by cell (a cell is one scenario with one sampler, say 3DC-9 OB; saved: 0.90 or less, cost: "
-        "1.10 or more):"
-    )
-    return f"{answer} {slow_said} {paper}\n\n{counts(tables)}"
+    return f"{answer}\n\n" + "\n".join(verdicts) + f"\n\n{why}\n\n{counts(tables)}\n\n{bands(tables)}"
 
 
-def whole_moved(tables: Tables) -> str:
-    """Reader r33f, contradiction 1: "at most 16 %" is the sampling time saved, not a ceiling on the whole query's
-    saving; the cells whose whole query, by means, saved more than that (of :func:`apart`'s) are named."""
-    _, saved = stage_shares(tables, checker_scope.SLOW)
-    more = [cell for cell in apart(tables) if cell.total > max(saved)]
-    if not more:
-        return ""
-    cells = ", ".join(f"{cell.name} {percent(cell.total)} %" for cell in more)
-    return (
-        "; by means the whole query, which also moves with the parts prediction does not shorten, saved more in "
-        f"{len(more)} {'cell' if len(more) == 1 else 'cells'} ({cells}: "
-        "[where](#what-reproduces-and-what-does-not))"
-    )
+READS = ("prediction saves time", "mostly a tie", "prediction costs time")  # a series' verdict: its largest count
+
+
+def own_medians(tables: Tables, key: str) -> list[tuple[str, float]]:
+    """The medians of each query's own ratio of the run ``key``: ``[("3DC-9 OB", 0.79), ...]``."""
+    return [(f"{s} {sampler}", m) for s, by in own_intervals(tables, key).items() for sampler, (m, _, _) in by.items()]
+
+
+def verdict_line(series: str, cells: list[tuple[str, float]], tables: Tables) -> str:
+    """One of the summary's verdicts: the series' largest count (:data:`READS`, a tie where two are equal), then its
+    cells saved, tied and cost, those beyond the noise edge counted and, up to three, named."""
+    read = counted([change(m) for _, m in cells])
+    edge = NOISE_EDGE * reach_of(tables)
+    parts = []
+    for k, name, word in ((0, "saved", "less time"), (2, "cost", "more time")):
+        far = [f"{cell} {m:.2f}" for cell, m in cells if change(m) == word and abs(m - 1) >= edge]
+        named = f": {', '.join(far)}" if 0 < len(far) <= 3 else ""
+        parts.append(f"{read[k] or 'none'} {name}" + (f" ({len(far)} beyond the noise edge{named})" if read[k] else ""))
+    said = READS[max(range(3), key=lambda k: (read[k], k == 1))]
+    return f"- **{series}: {said}.** Of {len(cells)} cells, {parts[0]}, {read[1]} tied, {parts[1]}."
 
 
 def counts(tables: Tables) -> str:

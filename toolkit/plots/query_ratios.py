@@ -24,7 +24,7 @@ from matplotlib.figure import Figure
 from matplotlib.ticker import NullLocator
 
 from toolkit.plots.alt import Part, describe
-from toolkit.plots.palette import CATEGORICAL, COLORS, LINE_COLORS, PAGE_WIDTH, halo, series_style
+from toolkit.plots.palette import COLORS, LINE_COLORS, PAGE_WIDTH, halo, series_style
 from toolkit.plots.timings import band_words, legend_above, log_ticks, ratio_parts, tie_band
 from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 
@@ -39,8 +39,9 @@ MEANS_STYLES = (  # :func:`means_grid`'s series in turn: colour, marker, hollow;
     (LINE_COLORS[5], "D", False),  # grey diamonds: the paper's own numbers (r28f: its cross read as the pluses)
     (LINE_COLORS[3], "X", False),  # bluish green crosses: a network with our compiled checker
     (LINE_COLORS[4], "*", False),  # reddish purple stars: another network with our compiled checker
-    (CATEGORICAL[1], "h", True),  # orange, hollow hexagons: that network with python-fcl (hollow, as Figure 1's;
-    # r31f: a hollow plus read as filled; r32f: its own colour, the page's headline contrast)
+    (LINE_COLORS[4], "h", True),  # reddish purple, hollow hexagons: that network with python-fcl (hollow, as Figure
+    # 1's; r31f: a hollow plus read as filled; r33f: orange, Figure 1's "tie", meant two things; the stars' hue: the
+    # same network, its fill the checker, as in Figure 1)
     (LINE_COLORS[3], "P", True),  # bluish green, hollow pluses: the first network with python-fcl
 )
 """Reader r31f: Figure 1's blue, vermillion and black are its verdicts, its circle, square and triangle too, so no
@@ -96,7 +97,7 @@ def own_ratios(
     groups.set_xticks(centres, list(cells))
     groups.tick_params(length=0, pad=16, labelsize=10)
     ax.set_xlabel("sampler, by scenario", labelpad=16)  # under the scenarios' names
-    ax.set_xlim(-0.7, ticks[-1] + 0.7)
+    ax.set_xlim(-0.7, ticks[-1] + 0.9)  # reader r33f: the last hollow point clears the frame
     drawn = [v for table in (cells, slow) for by in table.values() for value in by.values() for v in value]
     _own_axis(ax, drawn, tie, [] if edge is None else [1 - edge, 1 + edge])
     ax.set_ylabel(Y_LABEL, fontsize=9)  # room for the band's edges on the right
@@ -124,7 +125,7 @@ def _own_axis(ax, drawn: list[float], tie: float, edges: list[float]) -> None:
     shown = sorted({round(s, 2) for s in every if low <= s <= high})
     ax.set_yticks(shown, [f"{s:g}" for s in shown])
     ax.yaxis.set_minor_locator(NullLocator())  # review r27f: an unlabelled tick under 0.7 read as a missing label
-    _band_edges(ax, [1 - tie, 1 + tie])
+    _band_edges(ax, [1 - tie, 1 + tie], centred=True)
 
 
 NOISE_WORDS = (  # means_grid's hatching, told apart from own_ratios' (reader r32f: one hatch meant two bands)
@@ -261,6 +262,7 @@ def means_grid(
     row_height: float = 2.3,
     samplers: tuple[str, ...] = ("BS", "OB", "G", "BT"),
     noise: tuple[float, float] | None = None,
+    width: float = PAGE_WIDTH,
 ) -> Figure:
     """``{panel title: {series: {sampler: ratio}}}`` of time ratios with / without prediction (below 1: saves), one
     panel per title in a grid of two columns: a point per series and sampler (a series keeps its place, colour and
@@ -269,13 +271,15 @@ def means_grid(
     those within 25 % of 1, e.g. the tie band's edges, on the right of each row, apart from the "1"; ``row_height``
     inches a row of panels), the legend once, over the grid. ``noise``, where given, is how far timing alone moved a
     ratio of means: hatched round the tie band in every panel (:func:`_hatch_round`; reader r31f: the text forbade
-    single-cell readings the figure invited). The text alternative counts each series' points as the page's rule
-    reads them (:func:`toolkit.util.verdicts.time_verdict` on the ratio shown to two decimals)."""
+    single-cell readings the figure invited), its edges named in the legend, not on the axis (reader r33f: "1.24",
+    "1" and "0.84" crowded). ``width``: inches (a page's column may be wider than a chapter's).
+    The text alternative counts each series' points as the page's rule reads them
+    (:func:`toolkit.util.verdicts.time_verdict` on the ratio shown to two decimals)."""
     names = list(dict.fromkeys(name for series in panels.values() for name in series))
     if len(names) > len(MEANS_STYLES):
         raise ValueError(f"{len(names)} series: means_grid has looks for {len(MEANS_STYLES)}")
     rows = -(-len(panels) // 2)
-    fig = Figure(figsize=(PAGE_WIDTH, row_height * rows + 1.1))
+    fig = Figure(figsize=(width, row_height * rows + 1.1))
     grid = fig.subplots(rows, 2, squeeze=False, sharey=True)
     axes = list(grid.flat)
     said = [_means_panel(ax, title, series, names, samplers, tie) for ax, (title, series) in zip(axes, panels.items())]
@@ -283,9 +287,9 @@ def means_grid(
         ax.set_visible(False)
     said += _noise_bands(axes[: len(panels)], noise, tie)
     for ax in grid[:, 0]:
-        ax.set_ylabel(Y_LABEL, fontsize=9)
+        ax.set_ylabel(Y_LABEL, fontsize=10)
     for ax in grid[-1, :]:
-        ax.set_xlabel("sampler", fontsize=9)
+        ax.set_xlabel("sampler", fontsize=10)
     drawn = [float(r) for series in panels.values() for by in series.values() for r in by.values()]
     drawn += list(noise or ())
     low, high = ylim if ylim is not None else (min(*drawn, 1 - tie) / 1.3, max(*drawn, 1 + tie) * 1.3)
@@ -293,12 +297,14 @@ def means_grid(
     axes[0].set_ylim(low, high)
     log_ticks(axes[0])  # shared by every panel
     beside = [t for t in ticks if low <= t <= high and 1 / NEAR_1 < t < NEAR_1]  # would crowd the "1"
-    if ticks or noise:  # reader r32f: the floor's edges labelled on the left, the tie band's on the right
-        every = (*axes[0].get_yticks(), *ticks, *(noise or ()))
+    if (
+        ticks
+    ):  # the tie band's edges on the right (r33f: the floor's, on the left, crowded the "1"; the legend names them)
+        every = (*axes[0].get_yticks(), *ticks)
         shown = sorted({round(t, 6) for t in every if low <= t <= high and t not in beside})
         axes[0].set_yticks(shown, [f"{t:g}" for t in shown])
     for ax in axes[: len(panels)] if beside else ():  # r25c: 0.9, 1 and 1.1 crammed on the left; r28f: every panel
-        _band_edges(ax, beside)
+        _band_edges(ax, beside, 9)
     legend_above(fig, axes[:1], 1)  # one column: two of these names side by side overflow the page
     return _means_described(fig, panels, names, samplers, tie, said)
 
@@ -314,16 +320,16 @@ def _noise_bands(axes, noise: tuple[float, float] | None, tie: float) -> list[st
     return [f"hatched the other way round the tie band, the {words}"]
 
 
-def _band_edges(ax, ticks: list[float]) -> None:
+def _band_edges(ax, ticks: list[float], size: float = 8, centred: bool = False) -> None:
     """``ticks`` near 1 (the tie band's edges) labelled on the right of ``ax``, apart from the "1" on the left; those
     above 1 written above their tick, those below under it, so two edges never touch (review r30f: Figure 3's "1.1"
     and "0.9" did)."""
     edges = ax.secondary_yaxis("right")
     edges.set_yticks(ticks, [f"{t:g}" for t in ticks])
     edges.yaxis.set_minor_locator(NullLocator())
-    edges.tick_params(labelsize=8, length=2, pad=1)
-    for label, t in zip(edges.get_yticklabels(), ticks):
-        label.set_verticalalignment("bottom" if t > 1 else "top")
+    edges.tick_params(labelsize=size, length=2, pad=1)
+    for label, t in zip(edges.get_yticklabels(), ticks):  # ``centred``: on the band's edges (reader r33f: Figure 1's
+        label.set_verticalalignment("center" if centred else "bottom" if t > 1 else "top")  # read as the dashed lines)
 
 
 def _means_panel(ax, title: str, series: Mapping[str, Mapping[str, float]], names, samplers, tie: float) -> str:
@@ -352,9 +358,8 @@ def _means_panel(ax, title: str, series: Mapping[str, Mapping[str, float]], name
     ax.tick_params(axis="x", which="minor", length=0)
     ax.set_xticks(np.arange(len(samplers)), samplers)
     ax.set_xlim(-0.6, len(samplers) - 0.4)  # reader r32f: the outer points clear the spines
-    ax.set_title(title, fontsize=10)
-    ax.tick_params(labelsize=9)
-    ax.tick_params(axis="y", labelsize=8)
+    ax.set_title(title, fontsize=11)
+    ax.tick_params(labelsize=10)  # reader r33f: 9 px tick text at the page's width
     return f"{title}: ratios from {every.min():.2f} to {every.max():.2f}"
 
 

@@ -1,0 +1,178 @@
+"""The paper's two networks on the results page (``docs/results.md``), Tables 1 and 2, every number computed from
+the tables the page prints: the CAE against answering "free" everywhere (:func:`cae`), the MLP against a coin flip
+and against answering "valid" to every sample (:func:`mlp`, :func:`unseen_table`), and why our `paper`-preset
+network's savings against Algorithm 1 are not the method working (:func:`not_the_method`).
+:mod:`tools.results_findings` writes them among the page's findings.
+
+Table 2's accuracy, TPR and TNR imply the share of valid samples in the paper's tests (:func:`implied_valid_share`),
+which the paper does not report; docs/fidelity.md, §7, sets the paper's accuracies against answering "valid" to all of
+them (tests/test_results_page.py checks its figures against :func:`above_always_valid`)."""
+
+from __future__ import annotations
+
+import itertools
+from typing import NamedTuple
+
+from toolkit.teaching import recorded
+from toolkit.teaching.recorded import Tables
+from tools.results_words import NAMES, change, percent, span
+
+
+def cae_unseen(tables: Tables) -> tuple[list[float], list[float], float]:
+    """The `paper` CAE's accuracy on unseen grids and a CAE answering "free" everywhere's, per scenario (Table 1),
+    and the most the first beats the second by (0 or less: no better)."""
+    rows = recorded.table("paper", "CAE reconstruction", tables)
+    ours = [recorded.ours(row["Unseen"]) for row in rows.values()]
+    free = [recorded.ours(row["all free: Seen / Unseen"].split("/")[-1]) for row in rows.values()]
+    return ours, free, max(o - f for o, f in zip(ours, free))
+
+
+def cae(tables: Tables) -> str:
+    rows = recorded.table("paper", "CAE reconstruction", tables)
+    papers = [recorded.ours(row["Unseen"].split("/")[-1]) for row in rows.values()]
+    ours, free, gain = cae_unseen(tables)
+    than_free = (
+        "no better, scenario by scenario, than a CAE that answers “free” everywhere"
+        if round(gain * 100) <= 0
+        else f"at most {percent(gain)} points better than a CAE that answers “free” everywhere"
+    )
+    return (
+        f"**The CAE (Table 1): {'no better than' if round(gain * 100) <= 0 else 'barely better than'} answering "
+        f"“free” everywhere.** The `paper` CAE reconstructs unseen workspaces at {span(ours)} % of their cells "
+        f"(the paper: {span(papers)} %), {than_free} ({span(free)} %)."
+    )
+
+
+def implied_valid_share(acc: float, tpr: float, tnr: float) -> float:
+    """The share ``p`` of valid samples in a test that a classifier's accuracy, TPR and TNR on it imply:
+    Acc = TPR·p + TNR·(1 − p). The paper gives no share for its unseen tests (its seen ones: "approximately
+    distributed 50/50"); its Table 2 gives the three scores."""
+    if tpr == tnr:
+        raise ValueError(f"TPR and TNR are equal ({tpr}): the accuracy is the same for every share of valid samples")
+    return (acc - tnr) / (tpr - tnr)
+
+
+class Implied(NamedTuple):
+    """A test's valid share as a classifier's printed scores imply it, and the accuracy above "always valid"."""
+
+    share: float  # at the printed scores
+    gap: float  # the accuracy minus the share
+    low: float  # the least share any scores that round to the printed ones give
+    high: float  # the largest
+    least_gap: float  # the least gap they give
+
+
+def above_always_valid(scores: dict[str, float], rounded: float = 0.005) -> Implied:
+    """``scores`` (``{"acc", "tpr", "tnr"}`` as Table 2 prints them, to whole percent) against answering "valid" to
+    every sample of the same test (:func:`implied_valid_share`), at the printed scores and over every scores within
+    ``rounded`` of them (share and gap are monotone in each score, so the corners bound them)."""
+    acc, tpr, tnr = scores["acc"], scores["tpr"], scores["tnr"]
+    corners = [
+        (acc + a, implied_valid_share(acc + a, tpr + t, tnr + n))
+        for a, t, n in itertools.product((-rounded, rounded), repeat=3)
+    ]
+    share = implied_valid_share(acc, tpr, tnr)
+    shares = [p for _, p in corners]
+    return Implied(share, acc - share, min(shares), max(shares), min(a - p for a, p in corners))
+
+
+def mlp(tables: Tables) -> str:
+    def balanced(preset: str) -> list[float]:  # review r30f, contradiction 1: `strong` is Figure 1's network
+        return [
+            recorded.ours(row["Balanced unseen Acc"]) for row in recorded.table(preset, "MLP accuracy", tables).values()
+        ]
+
+    rows = recorded.table("paper", "MLP accuracy", tables)
+    one_answer = [
+        NAMES.get(name, name)
+        for name, row in rows.items()
+        if min(recorded.ours(row["Unseen TPR"]), recorded.ours(row["Unseen TNR"])) == 0
+    ]
+    listed = ", ".join(one_answer[:-1]) + " and " * (len(one_answer) > 1) + "".join(one_answer[-1:])
+    trivial = (
+        f" In {listed} the `paper` MLP gives one answer to every sample (a TPR or TNR of 0 %)." if one_answer else ""
+    )
+    blind = [recorded.ours(row["Unseen Acc"]) for row in rows.values()]
+    always = [recorded.ours(row["Unseen always valid"]) for row in rows.values()]
+    return (
+        f"**The MLP (Table 2): the `paper` MLP is at chance, the `strong` one right "
+        f"{span(balanced(recorded.ALGORITHM_1))} % of the time.** On unseen workspaces' balanced samples (half of "
+        "them valid) the `paper` MLP is right "
+        f"{span(balanced('paper'))} % of the time, where a coin flip is right 50 %; the `strong` MLP of Figure 1 "
+        f"{span(balanced(recorded.ALGORITHM_1))} %. On the validity-blind samples the paper describes, which chapter "
+        f"04 quotes, the `paper` MLP is right {span(blind)} %, answering “valid” to every sample {span(always)} %."
+        + trivial
+    )
+
+
+def not_the_method(tables: Tables) -> str:
+    """Reader r31f, item 2: why our `paper`-preset network saves time against Algorithm 1 in some cells, in one
+    sentence read from its Table 2 (unseen workspaces): where its MLP gives one answer to every sample, and how few
+    valid samples it keeps elsewhere."""
+    rows = recorded.table("paper", "MLP accuracy", tables)
+    rates = {NAMES.get(s, s): (recorded.ours(r["Unseen TPR"]), recorded.ours(r["Unseen TNR"])) for s, r in rows.items()}
+    one = [name for name, (tpr, tnr) in rates.items() if min(tpr, tnr) == 0]
+    rest = [f"{name} (a TPR of {percent(tpr)} %)" for name, (tpr, tnr) in rates.items() if name not in one]
+    listed = ", ".join(one[:-1]) + " and " * (len(one) > 1) + "".join(one[-1:])
+    read = [
+        change(1 - v)
+        for scenario in recorded.table("paper", "time improvement", tables)
+        for v in recorded.improvements("paper", scenario, recorded=tables).values()
+    ]
+    return (
+        f"Our `paper`-preset network saved time against Algorithm 1 in {read.count('less time')} of {len(read)} "
+        "cells, but not by the method: its MLP gives one answer to "
+        f"every sample in {listed or 'no scenario'}, so Algorithm 1 either skips every sample's check or starts from "
+        "an empty roadmap and first tries the straight edge from start to goal"
+        + (
+            f", and it keeps few valid samples in {', '.join(rest)}, a smaller roadmap, not a better one"
+            if rest
+            else ""
+        )
+        + "."
+    )
+
+
+def unseen_table(tables: Tables) -> str:
+    """Tables 1 and 2 on unseen workspaces in one small table, ours beside the paper's and beside the trivial answer
+    each is read against (review r29f, item 3: the page's title promised tables that were prose only)."""
+    cae_rows = {p: recorded.table(p, "CAE reconstruction", tables) for p in ("paper", "strong")}
+    mlp_rows = {p: recorded.table(p, "MLP accuracy", tables) for p in ("paper", recorded.ALGORITHM_1)}
+    scenarios = list(mlp_rows["paper"])
+
+    def pair(cell: str) -> str:  # "**86%** / 100%": ours / the paper's
+        ours, paper = (recorded.ours(part) for part in cell.split("/"))
+        return f"{percent(ours)} / {percent(paper)}"
+
+    def row(name: str, cells: list[str]) -> str:
+        return f"| {name} | " + " | ".join(cells) + " |"
+
+    lines = [
+        row("unseen workspaces, % right", [NAMES.get(s, s) for s in scenarios]),
+        row("---", ["---"] * len(scenarios)),
+        row("CAE, `paper` preset / the paper", [pair(cae_rows["paper"][s]["Unseen"]) for s in scenarios]),
+        row(
+            "CAE answering “free” everywhere",
+            [percent(recorded.ours(cae_rows["paper"][s]["all free: Seen / Unseen"].split("/")[-1])) for s in scenarios],
+        ),
+        row("MLP, `paper` preset / the paper", [pair(mlp_rows["paper"][s]["Unseen Acc"]) for s in scenarios]),
+        row(
+            "MLP answering “valid” to every sample",
+            [percent(recorded.ours(mlp_rows["paper"][s]["Unseen always valid"])) for s in scenarios],
+        ),
+        row(
+            "MLP on balanced samples, `paper` / `strong` preset of Figure 1 (5 December; a coin flip: 50)",
+            [
+                f"{percent(recorded.ours(mlp_rows['paper'][s]['Balanced unseen Acc']))} / "
+                f"{percent(recorded.ours(mlp_rows[recorded.ALGORITHM_1][s]['Balanced unseen Acc']))}"
+                for s in scenarios
+            ],
+        ),
+    ]
+    return (  # reader r31f, contradiction 3: what "/" means, said at the table
+        "*Tables 1 and 2 on unseen workspaces*, each network's row read against the answer in the row under it, the "
+        "last against a coin flip's 50 % (each run's section holds the full tables). A cell “A / B” is ours / the "
+        "paper's, except in the last row, where it is the `paper` preset's / the `strong` preset's: the paper gives "
+        "no balanced figures. The paper's Table 1 has one 3DC row, shown under both 3DC-7 and 3DC-9.\n\n"  # r33f, 7
+        + "\n".join(lines)
+    )
