@@ -186,5 +186,5 @@ def closing_table(paper: Scores, rows: Mapping[str, Scores]) -> str:
     return "\n".join(table) + (
         "\n\nEvery CAE in this table trains with Adam (AdamW with its weight decay at 0) where the paper uses "
         "Adagrad at 0.1 (§IV-B3; with our CAE it diverges, "
-        "section 4), for a number of steps the paper does not give."
+        "the aside after section 8), for a number of steps the paper does not give."
     )
