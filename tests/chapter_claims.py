@@ -188,6 +188,9 @@ def chapter_02(nb) -> list[str]:
     corr = re.findall(r"correlation of PC 1 with the share of occupied cells: ([+-][\d.]+)", found)
     if len(corr) == 2 and abs(float(corr[0])) >= abs(float(corr[1])):  # both printed: the first the weaker
         problems.append(f"02: the 30-grid CAE's PC 1 correlation is not the smaller of the two in size: {corr}")
+    said = re.findall(r"\(r = ([+-][\d.]+), section [78]\)", found)  # reader r33b: the answer at the top says them
+    if said and said != corr:
+        problems.append(f"02: the answer's correlations {said} are not sections 7 and 8's {corr}")
     return problems + _chapter_02_unseen(nb, found) + _chapter_02_gaps(nb, found) + _chapter_02_contracts(nb, found)
 
 
@@ -227,11 +230,16 @@ def _chapter_02_gaps(nb, found: str) -> list[str]:
                 for r in rows
             ]
     answer = re.search(
-        r'it gets ([\d.]+)%, where answering "all free" gets ([\d.]+)% \(([\d.]+) points (below|above)\)', found
+        r'it gets ([\d.]+)%, where answering "all free" gets ([\d.]+)% \(([\d.]+) points (below|above)[;)]', found
     )
     if answer:
         gap = float(answer.group(3)) * (-1 if answer.group(4) == "below" else 1)
         said.append((float(answer.group(1)), float(answer.group(2)), gap))
+    # reader r33b: the test grids' mean beside the new grids' verdict
+    said += [
+        (float(a), float(b), float(c))
+        for a, b, c in re.findall(r"it gets ([\d.]+)% against ([\d.]+)% \(([+-][\d.]+) points\)", found)
+    ]
     return [
         f"02: {a}% against 'all free' {b}% is printed as {c:+.1f} points" for a, b, c in said if abs(a - b - c) > 0.05
     ]
@@ -253,7 +261,7 @@ def _chapter_02_unseen(nb, found: str) -> list[str]:
         if abs(float(row[-1].split()[0])) > COUPLE:
             problems.append(f"02: {row[0]} scores {row[-1]} against 'all free' on unseen grids: not within a couple")
     answer = re.search(
-        r'\*\*In numbers\.\*\* .*? On unseen grids it gets ([\d.]+)%, where answering "all free" gets '
+        r'\*\*In numbers\.\*\* .*? On \d+ new grids it gets ([\d.]+)%, where answering "all free" gets '
         r'([\d.]+)% .*?\*\*no better than answering "all free"\*\*',
         found,
     )

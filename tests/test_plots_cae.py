@@ -150,8 +150,16 @@ def test_accuracy_vs_all_free_has_one_point_per_workspace_and_the_diagonal():
     np.testing.assert_allclose(means["unseen: mean"], [0.89, 0.88])
     hollow = [c for c in ax.collections if c.get_gid().endswith(": mean")]  # r20b: a filled mean hid points at 1.00
     assert all(c.get_facecolor().size == 0 or np.all(c.get_facecolor()[:, 3] == 0) for c in hollow)
-    (diagonal,) = ax.get_lines()
+    (diagonal,) = [line for line in ax.get_lines() if line.get_gid() is None]
     np.testing.assert_allclose(diagonal.get_xdata(), diagonal.get_ydata())
+    # reader r33b: thin lines lead from each mean to both axes, under every point
+    drops = {line.get_gid(): line for line in ax.get_lines() if line.get_gid() is not None}
+    assert drops.keys() == {"seen: mean lines", "unseen: mean lines"}
+    unseen = drops["unseen: mean lines"]
+    assert unseen.get_xdata()[1:].tolist() == pytest.approx([0.89, 0.89])
+    assert unseen.get_ydata()[:2].tolist() == pytest.approx([0.88, 0.88])
+    assert unseen.get_xdata()[0] == ax.get_xlim()[0] and unseen.get_ydata()[-1] == ax.get_ylim()[0]
+    assert unseen.get_zorder() < min(p.get_zorder() for p in points)
     (legend,) = fig.legends  # below the axes, over no point
     assert "99.7%" in legend.get_texts()[0].get_text()  # the seen group's mean accuracy
     assert points[0].get_zorder() > points[1].get_zorder()  # the smaller group drawn on top
@@ -327,11 +335,12 @@ def test_contraction_reads_one_flip_as_well_as_thirty_and_its_legend_covers_no_c
     one, two, thirty = (to_px((1, v))[1] for v in (1.1, 2.2, 30.0))  # a doubling near 1 as tall as one near 15
     assert two - one == pytest.approx(to_px((1, 30.0))[1] - to_px((1, 15.0))[1], rel=0.01) and thirty > two
     assert ax_z.get_legend() is None and ax_x.get_legend() is None
-    (legend,) = fig.legends
+    (legend,) = [legend for part in fig.subfigs for legend in part.legends]
     assert [t.get_text() for t in legend.get_texts()] == [*names, "as many as flipped"]
     FigureCanvasAgg(fig).draw()
     box = legend.get_window_extent()
-    assert all(box.y0 >= ax.get_window_extent().y1 for ax in (ax_j, ax_z))  # r31b: above every panel, beside none
+    assert all(box.y0 >= ax.get_window_extent().y1 for ax in (ax_z, ax_x))  # r31b: above the line panels, beside none
+    assert box.y1 <= ax_j.get_window_extent().y0  # reader r33b: the boxes a row of their own above it
 
 
 def test_large_groups_interleave_so_that_none_hides_under_another():

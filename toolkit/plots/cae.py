@@ -27,7 +27,7 @@ from matplotlib.font_manager import FontProperties
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from matplotlib.textpath import TextToPath
-from matplotlib.ticker import NullLocator
+from matplotlib.ticker import FuncFormatter, LogLocator, NullLocator
 
 from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots.alt import Part, describe, lines_part
@@ -53,8 +53,11 @@ def training_curves(
         every = max(1, len(history) // 8)  # about 8 markers a line, each line's shifted: never over each other's
         style = _stacked(k, n) | dict(markevery=(k * every // n, every), markersize=6)
         ax.plot(np.arange(1, len(history) + 1), history, label=name, **style)
-    if log:
+    if log:  # reader r33b: 10² and 10³ alone on an axis from 40 to 4,000; ticks at 1, 2 and 5 of each power of ten
         ax.set_yscale("log")
+        ax.yaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 5.0)))
+        ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:,.0f}" if v >= 1 else f"{v:g}"))
+        ax.yaxis.set_minor_locator(NullLocator())
     ax.set_xlabel("epoch")
     ax.set_ylabel(ylabel)
     ax.legend(fontsize=9)
@@ -184,15 +187,36 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
         )
     low = min(min(np.min(f), np.min(a)) for f, a in groups.values())
     ax.plot([low, 1], [low, 1], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal)')
+    _drop_lines(ax, groups)
     ax.set_xlabel('share of free cells = accuracy of answering "all free"')
     ax.set_ylabel("reconstruction accuracy")
     ax.set_title("Above the diagonal: better than all free", fontsize=10)
     handles, labels = ax.get_legend_handles_labels()
     mean = Line2D([], [], marker="o", linestyle="", markersize=13, fillstyle="none", color=COLORS["reference"], mew=2.2)
-    handles, labels = [*handles, mean], [*labels, "large hollow mark, in the group's shape: its mean"]  # r29b: not in
+    mean_said = "large hollow mark in the group's shape, its thin lines to the axes: the group's mean"
+    handles, labels = [*handles, mean], [*labels, mean_said]  # r29b: not in
     fig.legend(handles, labels, loc="outside lower center", fontsize=9, frameon=False)  # the title; below: on no point
     text = "Reconstruction accuracy against the accuracy of answering all free, one point per workspace. "
     return describe(fig, text + "; ".join(said) + ".")
+
+
+def _drop_lines(ax, groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> None:
+    """Thin lines from each group's mean to both axes, in its colour, under every point (reader r33b: a hollow mean
+    over a row of points at 1.00, or on a point, was hard to find; the lines lead the eye to it and read it off)."""
+    (x_low, x_high), (y_low, y_high) = ax.get_xlim(), ax.get_ylim()
+    for k, (name, (all_free, accuracy)) in enumerate(groups.items()):
+        x, y = float(np.mean(all_free)), float(np.mean(accuracy))
+        ax.plot(
+            [x_low, x, x],
+            [y, y, y_low],
+            color=series_style(k)["color"],
+            linestyle=(0, (4, 2)),
+            linewidth=1.2,
+            zorder=0.5,
+            gid=f"{name}: mean lines",
+        )
+    ax.set_xlim(x_low, x_high)
+    ax.set_ylim(y_low, y_high)
 
 
 def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int) -> None:
@@ -230,10 +254,12 @@ def contraction(
     unchanged, one above it changed at least the difference of cells that were not flipped.
     """
     flips = np.asarray(flips)
-    fig = Figure(figsize=(PAGE_WIDTH, 8.0), layout="constrained")  # the page's width: text at its size, 9 pt or more
-    # the norms tall on the left, the two responses stacked on the right, the wider (review r30b: they were small)
-    panels = fig.subplot_mosaic([["j", "z"], ["j", "x"]], width_ratios=[2, 3])
-    ax_j, ax_z, ax_x = panels["j"], panels["z"], panels["x"]
+    fig = Figure(figsize=(PAGE_WIDTH, 6.6), layout="constrained")  # the page's width: text at its size, 9 pt or more
+    # reader r33b: the norms a short row of their own (tall and narrow, a third of it legend, the figure ran over two
+    # screens), the two responses side by side under them, their legend between the rows
+    boxes, responses = fig.subfigures(2, 1, height_ratios=(2.3, 4.3), squeeze=False)[:, 0]
+    ax_j = boxes.subplots()
+    ax_z, ax_x = responses.subplots(1, 2)
     names = list(jacobian_norms)
     _draw_norms(ax_j, jacobian_norms)
     for k, name in enumerate(names):  # two models that respond alike: the first line wide under the next, thinner
@@ -241,15 +267,16 @@ def contraction(
         ax_x.plot(flips, np.mean(decoded_change[name], axis=1), label=name, **_stacked(k, len(names)))
     ax_x.plot(flips, flips, color=COLORS["reference"], linestyle=":", label="as many as flipped", zorder=1)
     ax_z.set_ylabel("||z' - z|| / ||z||")  # review r30b: the long label was cramped; the title says what it is
-    ax_z.set_title("Latent code moves (relative to ||z||)", fontsize=10)
-    ax_x.set_title("Reconstruction changes (log scale)", fontsize=10)
+    ax_z.set_title("Latent code moves", fontsize=10)  # its axis says relative to what
+    ax_x.set_title("Reconstruction changes", fontsize=10)
     changes = np.concatenate([flips, *(np.mean(decoded_change[name], axis=1) for name in names)])  # the counts drawn
     _counts_axis(ax_x, "y", _count_ticks(changes.min(), changes.max(), end=flips[-1]))  # 1 reads as 30 does
-    ax_x.set_ylabel("decoded cells that change sign, anywhere")
+    ax_x.set_ylabel("decoded cells that change sign")
     for ax in (ax_z, ax_x):
         _counts_axis(ax, "x", flips)  # the numbers of flips measured
         ax.set_xlabel("cells flipped (log scale)")
-    fig.legend(handles=ax_x.get_lines(), loc="outside upper center", ncols=2, fontsize=9, frameon=False)  # r31b: above
+    # r31b: above the line panels, not a screen below them
+    responses.legend(handles=ax_x.get_lines(), loc="outside upper center", ncols=2, fontsize=9, frameon=False)
     for ax in (ax_j, ax_z, ax_x):  # review r16b: the legends and ticks at 8 pt, shrunk to the page, read as 8 px
         ax.tick_params(labelsize=9)
     said = "; ".join(
@@ -258,20 +285,24 @@ def contraction(
         "decoded cells"
         for name in names
     )
-    norms = Part(
+    parts = [_norms_part(jacobian_norms), *(lines_part(ax, text="mean over the trials") for ax in (ax_z, ax_x))]
+    text = "How strongly each encoder reacts to its input: the norm of its Jacobian (a box per model, the median a"
+    text += " thick line, the mean a triangle), and how far the latent code and the reconstruction move when cells of"
+    text += " the input are flipped (the flips, and the decoded cells that change, on log scales)"
+    return describe(fig, f"{text}. {said}.", parts)
+
+
+def _norms_part(jacobian_norms: dict[str, np.ndarray]) -> Part:
+    """The box plot's numbers, a row per model, for the figure's description."""
+    return Part(
         "Encoder Jacobian norm",
         "the Frobenius norm of dz/dx over the workspaces, per model",
         ("model", "workspaces", "lowest", "median", "mean", "highest"),
         tuple(
             (n, str(len(v)), *(f"{f(v):.3g}" for f in (np.min, np.median, np.mean, np.max)))
-            for n, v in ((n, np.asarray(jacobian_norms[n])) for n in names)
+            for n, v in ((n, np.asarray(values)) for n, values in jacobian_norms.items())
         ),
     )
-    parts = [norms, lines_part(ax_z, text="mean over the trials"), lines_part(ax_x, text="mean over the trials")]
-    text = "How strongly each encoder reacts to its input: the norm of its Jacobian (a box per model, the median a"
-    text += " thick line, the mean a triangle), and how far the latent code and the reconstruction move when cells of"
-    text += " the input are flipped (the flips, and the decoded cells that change, on log scales)"
-    return describe(fig, f"{text}. {said}.", parts)
 
 
 COUNT_TICKS = (0, 1, 2, 5, 10, 20, 50, 100, 200, 500, 1000)
@@ -316,13 +347,11 @@ def _draw_norms(ax, jacobian_norms: dict[str, np.ndarray]) -> None:
     props = dict(boxprops=ink, whiskerprops=ink, capprops=ink, medianprops=median, meanprops=mean, flierprops=outlier)
     ax.boxplot([np.asarray(jacobian_norms[n]) for n in names], showmeans=True, **props)
     marks = [Line2D([], [], linestyle="-" if "marker" not in style else "", **style) for style in NORM_MARKS.values()]
-    low, high = ax.get_ylim()
-    ax.set_ylim(low, high + 0.35 * (high - low))  # room above the boxes: the legend covers none
-    ax.legend(marks, list(NORM_MARKS), fontsize=9, loc="upper center")
+    ax.legend(marks, list(NORM_MARKS), fontsize=9, loc="center left", bbox_to_anchor=(1.01, 0.5))  # beside: on none
     ticks, axis_name = _tick_names(names)
     ax.set_xticks(range(1, len(names) + 1), _fitted(ticks, _slot_points(ax, len(names)), NAME_POINTS), fontsize=9)
     ax.set_xlabel(axis_name)
-    ax.set_ylabel("Jacobian norm ||dz/dx|| per workspace")
+    ax.set_ylabel("||dz/dx|| per workspace")  # r33b: a short panel; its title names it
     ax.set_title("Encoder Jacobian norm", fontsize=10)
 
 
@@ -340,8 +369,9 @@ def _tick_names(names: list[str]) -> tuple[list[str], str]:
 
 def _slot_points(ax, n: int) -> float:
     """The width in points of one of ``n`` equal slots across ``ax`` once its figure is laid out, less a gap."""
-    ax.figure.draw_without_rendering()  # the axes take their width
-    return 0.85 * ax.bbox.width * 72 / ax.figure.dpi / n
+    root = ax.get_figure(root=True)  # the figure itself, where ax sits in one of its subfigures
+    root.draw_without_rendering()  # the axes take their width
+    return 0.85 * ax.bbox.width * 72 / root.dpi / n
 
 
 def _fitted(names: list[str], width: float, size: float) -> list[str]:

@@ -5,7 +5,8 @@
 - :func:`memorized`: section 5's sentence on a CAE's scores: memorized, not yet, or above "all free" on new grids;
 - :func:`against_all_free`: one split of a CAE's recorded scores beside "all free";
 - :func:`correlation_in_words`: the size of a correlation in a word (section 7);
-- :func:`answer`: the table and the answer at the top of the page, in this run's numbers.
+- :func:`answer`: the table and the answer at the top of the page, in this run's numbers: the verdict from the new
+  grids, the test grids beside it, and what each CAE's code follows.
 
 Scores are shares (0.866, not 86.6) and come in mappings with the keys of
 :func:`toolkit.learning.training.evaluate`'s CAE part: ``seen_acc``, ``unseen_acc``, ``seen_all_free``,
@@ -66,56 +67,104 @@ def answer(
     long: Scores,
     preset: Scores,
     many: Scores,
+    new: Scores,
     *,
     n_seen: int,
+    n_test: int,
     steps: int,
     many_name: str,
-    many_seen: int,
+    n_new: int,
     quick: bool,
 ) -> str:
-    """The table and the answer at the top of the page, as Markdown: Table 1's 2DS row (``paper``'s ``seen_acc`` and
-    ``unseen_acc``), then CAE-long (this page's, ``steps`` steps on ``n_seen`` grids), CAE-preset (the `paper`
-    preset's, recorded) and the CAE on ``many_name``, each beside "all free" (reader r30b: one sentence each, and the
-    preset's row in the table the answer points to). The last row's "seen" is ``many_seen`` of its own training grids,
-    not the 30 above it, and its label says so (reader r32b)."""
+    """The table and the answer at the top of the page, as Markdown (reader r33b: the verdict read from the test of
+    ``n_new`` new grids, not from the ``n_test`` test grids alone; each column says which grids it scores).
+
+    ``paper``: Table 1's 2DS row (``seen_acc``, ``unseen_acc``); ``long``: CAE-long (``steps`` steps on ``n_seen``
+    grids) on its training grids and the test grids; ``preset``: CAE-preset's recorded scores; ``many``: the CAE on
+    ``many_name``, ``seen`` being ``n_new`` of its own training grids and ``unseen`` the ``n_new`` new grids.
+    ``new``: on those new grids, CAE-long's accuracy (``long_acc``) and how many of them it rebuilds better than
+    "all free" (``long_above``); the many-grids CAE's accuracy on the test grids (``many_test``); CAE-long's lowest and
+    highest gap to "all free" on single test grids in points (``low``, ``high``); each CAE's correlation of its codes'
+    first principal component with the share of occupied cells (``r_long``, ``r_many``)."""
+    free = many["unseen_all_free"]  # "all free" on the new grids, the same for both CAEs scored there
     table = [
-        '| CAE (2DS) | seen | unseen | "all free": seen / unseen |',
+        f"| CAE (2DS) | its training grids | the {n_test} unseen test grids | {n_new} new grids (the first {n_test} "
+        "the test grids) |",
         "| --- | --- | --- | --- |",
         f"| paper, Table 1 | {paper['seen_acc']:.0%} | {paper['unseen_acc']:.0%} | not reported |",
-        _row(f"CAE-long: the paper's layer sizes and loss, {n_seen} grids, {steps:,} steps (this page)", long),
-        _row("CAE-preset: the same, stopped early by the `paper` preset (chapters 03–04 load it)", preset),
-        _row(
-            f"the same layer sizes on {many_name} (not the paper's recipe, section 8); seen and unseen: "
-            f"{many_seen} grids each, not the {n_seen} grids and the unseen test grids above",
-            many,
-        ),
+        f"| CAE-long: the paper's layer sizes and loss, {n_seen} grids, {steps:,} steps (this page) "
+        f"| {_cell(long['seen_acc'], long['seen_all_free'])} | {_cell(long['unseen_acc'], long['unseen_all_free'])} "
+        f"| {_cell(new['long_acc'], free)} |",
+        "| CAE-preset: the same, stopped early by the `paper` preset (loaded; chapters 03–04 use it) "
+        f"| {_cell(preset['seen_acc'], preset['seen_all_free'])} "
+        f"| {_cell(preset['unseen_acc'], preset['unseen_all_free'])} | not scored here |",
+        f"| the same layer sizes on {many_name} (not the paper's recipe, section 8) "
+        f"| {n_new} of them: {_cell(many['seen_acc'], many['seen_all_free'])} "
+        f"| {_cell(new['many_test'], long['unseen_all_free'])} | {_cell(many['unseen_acc'], free)} |",
     ]
+    return (
+        "\n".join(table) + "\n\n" + _in_numbers(paper, long, preset, many, new, n_seen, n_test, many_name, n_new, quick)
+    )
+
+
+def _spread(low: float, high: float, n_test: int) -> str:
+    """Single test grids' gaps to "all free", in points; where they lie on both sides of it, what that says of the
+    mean of ``n_test`` (reader r33b: 0.9 points below on 10 grids read as a measured deficit)."""
+    said = f'single test grids lie from {low:+.1f} to {high:+.1f} points of "all free" (section 5)'
+    return said + (f": {n_test} grids are too few to tell a point below it from level" if low < 0 < high else "")
+
+
+def _cell(acc: float, free: float) -> str:
+    return f"{acc:.1%} (all free {free:.1%})"
+
+
+def _in_numbers(
+    paper: Scores,
+    long: Scores,
+    preset: Scores,
+    many: Scores,
+    new: Scores,
+    n_seen: int,
+    n_test: int,
+    many_name: str,
+    n_new: int,
+    quick: bool,
+) -> str:
+    """The answer's paragraph under the table: the verdict from the new grids, then the test grids, CAE-preset, the
+    many-grids CAE, and what each code follows."""
     seen_said = (
         f"memorizes them: {long['seen_acc']:.1%} of their cells right"
         if long["seen_acc"] >= MEMORIZED
         else f"has trained too briefly in this quick run to memorize them ({long['seen_acc']:.1%})"
     )
-    below = gap_points(long["unseen_acc"], long["unseen_all_free"])
+    free = many["unseen_all_free"]
+    gap = gap_points(new["long_acc"], free)
+    test_gap = gap_points(long["unseen_acc"], long["unseen_all_free"])
     preset_said = (
         "in this quick run, CAE-preset has trained a few steps only"
         if quick
         else "CAE-preset, stopped before it memorizes, reproduces neither column"
     )
-    many_unseen, many_free = many["unseen_acc"], many["unseen_all_free"]
+    many_unseen = many["unseen_acc"]
     many_said = (
-        f'{many_unseen:.1%} on {many_seen} unseen grids, where "all free" gets {many_free:.1%}: better, and still '
+        f'{many_unseen:.1%} on the same {n_new} new grids: better than "all free", and still '
         f"{100 * (paper['unseen_acc'] - many_unseen):.0f} points short of {paper['unseen_acc']:.0%}"
-        if many_unseen > many_free
-        else f'{many_unseen:.1%} on {many_seen} unseen grids ("all free" {many_free:.1%}): in this quick run, '
-        "not better yet"
+        if many_unseen > free
+        else f"{many_unseen:.1%} on the same {n_new} new grids: in this quick run, not better yet"
     )
-    return "\n".join(table) + (
-        f"\n\n**In numbers.** Trained on {n_seen} grids, CAE-long {seen_said}. On unseen grids it gets "
-        f'{long["unseen_acc"]:.1%}, where answering "all free" gets {long["unseen_all_free"]:.1%} ({abs(below):.1f} '
-        f"points {'below' if below < 0 else 'above'}): it rebuilds a new workspace **no better than answering "
-        f'"all free"**, and the paper\'s unseen column does not reproduce. {preset_said[0].upper()}{preset_said[1:]}: '
-        f"{against_all_free(preset, 'seen')}, {against_all_free(preset, 'unseen')}. Trained on {many_name}, the same "
-        f"layers get {many_said}."
+    r_long, r_many = new["r_long"], new["r_many"]
+    return (
+        f"**In numbers.** Trained on {n_seen} grids, CAE-long {seen_said}. On {n_new} new grids it gets "
+        f'{new["long_acc"]:.1%}, where answering "all free" gets {free:.1%} ({abs(gap):.1f} points '
+        f"{'below' if gap < 0 else 'above'}; {int(new['long_above'])} of the {n_new} grids above it): it rebuilds a "
+        f'new workspace **no better than answering "all free"**, and the paper\'s unseen column does not reproduce. '
+        f"On the {n_test} test grids alone it gets {long['unseen_acc']:.1%} against {long['unseen_all_free']:.1%} "
+        f"({test_gap:+.1f} points); {_spread(new['low'], new['high'], n_test)}. "
+        f"{preset_said[0].upper()}{preset_said[1:]}: {against_all_free(preset, 'seen')}, "
+        f"{against_all_free(preset, 'unseen')}. Trained on {many_name}, the same layers get {many_said}.\n\n"
+        f"**What the codes follow.** The first principal direction of CAE-long's codes follows a grid's share of "
+        f"occupied cells {correlation_in_words(r_long)}ly (r = {r_long:+.2f}, section 7); that of the CAE on "
+        f"{many_name} {correlation_in_words(r_many)}ly (r = {r_many:+.2f}, section 8)."
     )
 
 
@@ -137,5 +186,5 @@ def closing_table(paper: Scores, rows: Mapping[str, Scores]) -> str:
     return "\n".join(table) + (
         "\n\nEvery CAE in this table trains with Adam (AdamW with its weight decay at 0) where the paper uses "
         "Adagrad at 0.1 (§IV-B3; with our CAE it diverges, "
-        "section 4), for a number of steps the paper does not give."
+        "the aside after section 8), for a number of steps the paper does not give."
     )
