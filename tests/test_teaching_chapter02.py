@@ -71,8 +71,8 @@ def test_the_answer_names_both_30_grid_caes_and_gives_each_a_row():
     )
     # reader r34b: the test grids' caveat read the same way for every CAE, the new grids carry each one's verdict
     assert (
-        "The 10 test grids alone are too few to tell a point or two below it from level: single test grids lie from "
-        '-4.7 to +4.8 points of "all free" for CAE-long (section 5).' in said
+        'The 10 test grids alone are too few to tell a point or two below "all free" from level: single test grids '
+        "lie from -4.7 to +4.8 points of it for CAE-long (section 5)." in said
     )
     assert (
         "CAE-preset, stopped before it memorizes, reproduces neither column: seen 89.2% (all free 88.6%: +0.6 points, "
@@ -105,9 +105,7 @@ def test_the_answer_in_a_quick_run_says_it_has_not_memorized():
     assert "has trained too briefly in this quick run to memorize them (80.0%)" in text
     assert "on the same 100 new grids: in this quick run, not better yet" in text
     assert "In this quick run, CAE-preset has trained" in text
-    assert (
-        'On the 4 test grids alone, single test grids lie from -4.3 to -0.6 points of "all free" for CAE-long' in text
-    )
+    assert 'On the 4 test grids alone, against "all free", single test grids lie from -4.3 to -0.6 points of it' in text
     assert "too few" not in text  # all below: no "too few" to say
 
 

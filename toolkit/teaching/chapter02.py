@@ -112,10 +112,11 @@ def answer(
 def _spread(low: float, high: float, n_test: int) -> str:
     """Single test grids' gaps to "all free", in points; where they lie on both sides of it, what that says of the
     ``n_test`` grids' means (readers r33b, r34b: a point or two on 10 grids read as a measured deficit)."""
-    said = f'single test grids lie from {low:+.1f} to {high:+.1f} points of "all free" for CAE-long (section 5)'
+    said = f"single test grids lie from {low:+.1f} to {high:+.1f} points of it for CAE-long (section 5)"
     if low < 0 < high:
-        return f"The {n_test} test grids alone are too few to tell a point or two below it from level: {said}."
-    return f"On the {n_test} test grids alone, {said}."
+        too_few = f'The {n_test} test grids alone are too few to tell a point or two below "all free" from level'
+        return f"{too_few}: {said}."
+    return f'On the {n_test} test grids alone, against "all free", {said}.'
 
 
 def _cell(acc: float, free: float) -> str:
