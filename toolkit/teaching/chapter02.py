@@ -3,7 +3,8 @@
 
 - :func:`gap_points`: a score minus its "all free" baseline, in points, as a reader subtracts the printed values;
 - :func:`memorized`: section 5's sentence on a CAE's scores: memorized, not yet, or above "all free" on new grids;
-- :func:`against_all_free`: one split of a CAE's recorded scores beside "all free";
+- :func:`against_all_free`: one split of a CAE's recorded scores beside "all free"; :func:`beside_all_free` the same
+  from a score and its baseline;
 - :func:`correlation_in_words`: the size of a correlation in a word (section 7);
 - :func:`answer`: the table and the answer at the top of the page, in this run's numbers: the verdict from the new
   grids, the test grids beside it, and what each CAE's code follows.
@@ -82,11 +83,12 @@ def answer(
     ``paper``: Table 1's 2DS row (``seen_acc``, ``unseen_acc``); ``long``: CAE-long (``steps`` steps on ``n_seen``
     grids) on its training grids and the test grids; ``preset``: CAE-preset's recorded scores; ``many``: the CAE on
     ``many_name``, ``seen`` being ``n_new`` of its own training grids and ``unseen`` the ``n_new`` new grids.
-    ``new``: on those new grids, CAE-long's accuracy (``long_acc``) and how many of them it rebuilds better than
+    ``new``: on those new grids, CAE-long's and CAE-preset's accuracy (``long_acc``, ``preset_acc``; reader r34b:
+    CAE-preset is loaded, so scoring it there is a forward pass) and how many of them CAE-long rebuilds better than
     "all free" (``long_above``); the many-grids CAE's accuracy on the test grids (``many_test``); CAE-long's lowest and
     highest gap to "all free" on single test grids in points (``low``, ``high``); each CAE's correlation of its codes'
-    first principal component with the share of occupied cells (``r_long``, ``r_many``)."""
-    free = many["unseen_all_free"]  # "all free" on the new grids, the same for both CAEs scored there
+    first principal component with the share of occupied cells (``r_long``, ``r_many``), printed as its size."""
+    free = many["unseen_all_free"]  # "all free" on the new grids, the same for every CAE scored there
     table = [
         f"| CAE (2DS) | its training grids | the {n_test} unseen test grids | {n_new} new grids (the first {n_test} "
         "the test grids) |",
@@ -97,7 +99,7 @@ def answer(
         f"| {_cell(new['long_acc'], free)} |",
         "| CAE-preset: the same, stopped early by the `paper` preset (loaded; chapters 03–04 use it) "
         f"| {_cell(preset['seen_acc'], preset['seen_all_free'])} "
-        f"| {_cell(preset['unseen_acc'], preset['unseen_all_free'])} | not scored here |",
+        f"| {_cell(preset['unseen_acc'], preset['unseen_all_free'])} | {_cell(new['preset_acc'], free)} |",
         f"| the same layer sizes on {many_name} (not the paper's recipe, section 8) "
         f"| {n_new} of them: {_cell(many['seen_acc'], many['seen_all_free'])} "
         f"| {_cell(new['many_test'], long['unseen_all_free'])} | {_cell(many['unseen_acc'], free)} |",
@@ -109,13 +111,21 @@ def answer(
 
 def _spread(low: float, high: float, n_test: int) -> str:
     """Single test grids' gaps to "all free", in points; where they lie on both sides of it, what that says of the
-    mean of ``n_test`` (reader r33b: 0.9 points below on 10 grids read as a measured deficit)."""
-    said = f'single test grids lie from {low:+.1f} to {high:+.1f} points of "all free" (section 5)'
-    return said + (f": {n_test} grids are too few to tell a point below it from level" if low < 0 < high else "")
+    ``n_test`` grids' means (readers r33b, r34b: a point or two on 10 grids read as a measured deficit)."""
+    said = f"single test grids lie from {low:+.1f} to {high:+.1f} points of it for CAE-long (section 5)"
+    if low < 0 < high:
+        too_few = f'The {n_test} test grids alone are too few to tell a point or two below "all free" from level'
+        return f"{too_few}: {said}."
+    return f'On the {n_test} test grids alone, against "all free", {said}.'
 
 
 def _cell(acc: float, free: float) -> str:
     return f"{acc:.1%} (all free {free:.1%})"
+
+
+def beside_all_free(acc: float, free: float) -> str:
+    """``"86.5% (all free 87.8%: -1.3 points, below it)"``: as :func:`against_all_free`, from the two shares."""
+    return against_all_free({"x_acc": acc, "x_all_free": free}, "x")[2:]
 
 
 def _in_numbers(
@@ -130,8 +140,8 @@ def _in_numbers(
     n_new: int,
     quick: bool,
 ) -> str:
-    """The answer's paragraph under the table: the verdict from the new grids, then the test grids, CAE-preset, the
-    many-grids CAE, and what each code follows."""
+    """The answer's paragraph under the table, in three sentences on the new grids (CAE-long's verdict, CAE-preset,
+    the many-grids CAE), the test grids' caveat, and what each code follows."""
     seen_said = (
         f"memorizes them: {long['seen_acc']:.1%} of their cells right"
         if long["seen_acc"] >= MEMORIZED
@@ -139,7 +149,6 @@ def _in_numbers(
     )
     free = many["unseen_all_free"]
     gap = gap_points(new["long_acc"], free)
-    test_gap = gap_points(long["unseen_acc"], long["unseen_all_free"])
     preset_said = (
         "in this quick run, CAE-preset has trained a few steps only"
         if quick
@@ -152,19 +161,19 @@ def _in_numbers(
         if many_unseen > free
         else f"{many_unseen:.1%} on the same {n_new} new grids: in this quick run, not better yet"
     )
-    r_long, r_many = new["r_long"], new["r_many"]
+    r_long, r_many = abs(new["r_long"]), abs(new["r_many"])
     return (
         f"**In numbers.** Trained on {n_seen} grids, CAE-long {seen_said}. On {n_new} new grids it gets "
         f'{new["long_acc"]:.1%}, where answering "all free" gets {free:.1%} ({abs(gap):.1f} points '
         f"{'below' if gap < 0 else 'above'}; {int(new['long_above'])} of the {n_new} grids above it): it rebuilds a "
         f'new workspace **no better than answering "all free"**, and the paper\'s unseen column does not reproduce. '
-        f"On the {n_test} test grids alone it gets {long['unseen_acc']:.1%} against {long['unseen_all_free']:.1%} "
-        f"({test_gap:+.1f} points); {_spread(new['low'], new['high'], n_test)}. "
-        f"{preset_said[0].upper()}{preset_said[1:]}: {against_all_free(preset, 'seen')}, "
-        f"{against_all_free(preset, 'unseen')}. Trained on {many_name}, the same layers get {many_said}.\n\n"
+        f"{preset_said[0].upper()}{preset_said[1:]}: {against_all_free(preset, 'seen')}; on the same {n_new} new "
+        f"grids {beside_all_free(new['preset_acc'], free)}. Trained on {many_name}, the same layers get {many_said}. "
+        f"{_spread(new['low'], new['high'], n_test)}\n\n"
         f"**What the codes follow.** The first principal direction of CAE-long's codes follows a grid's share of "
-        f"occupied cells {correlation_in_words(r_long)}ly (r = {r_long:+.2f}, section 7); that of the CAE on "
-        f"{many_name} {correlation_in_words(r_many)}ly (r = {r_many:+.2f}, section 8)."
+        f"occupied cells {correlation_in_words(r_long)}ly (|r| = {r_long:.2f}, section 7); that of the CAE on "
+        f"{many_name} {correlation_in_words(r_many)}ly (|r| = {r_many:.2f}, section 8). Only the size counts: a "
+        "principal direction can point either way, so the sign of r is arbitrary."
     )
 
 
@@ -175,11 +184,12 @@ def _row(label: str, scores: Scores) -> str:
     )
 
 
-def closing_table(paper: Scores, rows: Mapping[str, Scores]) -> str:
+def closing_table(paper: Scores, rows: Mapping[str, Scores], unseen: str = "unseen") -> str:
     """The closing section's table, as Markdown: Table 1's 2DS row (``paper``'s ``seen_acc`` and ``unseen_acc``),
-    then one row per ``rows`` label with its scores beside "all free", and the optimizer every CAE here shares."""
+    then one row per ``rows`` label with its scores beside "all free", and the optimizer every CAE here shares.
+    ``unseen`` heads the unseen column: every row's unseen scores are on one set of grids (reader r34b), it names it."""
     table = [
-        '| 2DS reconstruction accuracy | seen | unseen | "all free" (seen / unseen) |',
+        f'| 2DS reconstruction accuracy | seen | {unseen} | "all free" (seen / unseen) |',
         "| --- | --- | --- | --- |",
         f"| paper, Table 1 | {paper['seen_acc']:.0%} | {paper['unseen_acc']:.0%} | not reported |",
     ] + [_row(label, scores) for label, scores in rows.items()]
