@@ -130,7 +130,7 @@ def test_workspace_figure_3d_draws_each_block_at_its_corners(recorded_polys):
     assert legend == sorted(set(ws.labels))
     x, _, z = fig.axes[0].get_box_aspect()  # reader r19b: drawn to scale, the office's 6 high could not be read
     assert z / x == pytest.approx(3 * 6 / 41) and fig.axes[0].get_zlabel() == "z (drawn 3x)"
-    assert "heights drawn 3 times taller than widths" in alt_text(fig)
+    assert "heights stretched 3 times against widths" in alt_text(fig)
     clutter = cspace.workspace_figure(scenarios.get("3dc7").make_workspace(np.random.default_rng(1)))
     assert np.ptp(clutter.axes[0].get_box_aspect()) == pytest.approx(0) and clutter.axes[0].get_zlabel() == "z"
 

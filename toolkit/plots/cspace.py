@@ -148,7 +148,7 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
     text = f"The {workspace.family or 'workspace'} workspace, {size}: {len(workspace.boxes)} blocks"
     text += f" ({', '.join(counts)}, each kind its own colour and hatch)" if counts else ""
     text += f", {_occupied_share(workspace):.0%} of the region occupied"
-    text += f"; heights drawn {stretch} times taller than widths." if stretch > 1 else "."
+    text += f"; heights stretched {stretch} times against widths." if stretch > 1 else "."
     return describe(fig, text, [_blocks_part(workspace)])
 
 
