@@ -12,6 +12,7 @@ import numpy as np
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
+from toolkit.plots.boxes import box_corners, outline
 from toolkit.plots.palette import COLORS
 
 
@@ -46,6 +47,27 @@ def contacts(robot: BoxRobot, workspace: Workspace, q) -> list[tuple[int, int, f
 def touching(robot: BoxRobot, workspace: Workspace, q) -> list[tuple[int, int]]:
     """The (link, block) pairs whose boxes touch at configuration ``q (dof,)``: closed boxes, so touching counts."""
     return [(link, block) for link, block, _ in contacts(robot, workspace, q)]
+
+
+def passed_over(robot: BoxRobot, workspace: Workspace, q, plane: tuple[int, int]) -> np.ndarray:
+    """Which blocks ``(K,) bool`` a flat view onto ``plane`` draws across a link of a 3D robot at ``q (dof,)`` although
+    no link touches them: each passes wholly over or under (in front of or behind) every link it is drawn across,
+    since a link's part inside the block's prism is one convex piece that misses the block (review r34a: judged by
+    the links' bounding boxes, a block above a tilted link was drawn filled across a valid robot)."""
+    centers, rotations, half = robot.link_boxes(robot.check_configs(q)[:1])  # (1, L, D), (1, L, D, D), (L, D)
+    shadows = [outline(box_corners(c, r, h), plane) for c, r, h in zip(centers[0], rotations[0], half)]
+    touched = {block for _, block, _ in contacts(robot, workspace, q)}
+    at = list(plane)
+    over = np.zeros(len(workspace.boxes), dtype=bool)
+    for k, (b_lo, b_hi) in enumerate(workspace.boxes):
+        over[k] = k not in touched and any(_area(clip_to_box(s, b_lo[at], b_hi[at])) > 1e-12 for s in shadows)
+    return over
+
+
+def _area(polygon: np.ndarray) -> float:
+    """The area of a polygon ``(n, 2)`` (0 for fewer than three corners: shadows that only touch)."""
+    x, y = polygon.T if len(polygon) > 2 else np.zeros((2, 0))
+    return 0.5 * abs(float(x @ np.roll(y, -1) - y @ np.roll(x, -1)))
 
 
 def clip_to_box(polygon: np.ndarray, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:

@@ -35,6 +35,7 @@ from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe, map_part
 from toolkit.plots.boxes import aabb_corners, add_box_3d
+from toolkit.plots.contact import passed_over
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
 from toolkit.plots.robot_drawing import (
     BASE_MARK,
@@ -147,7 +148,7 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
     text = f"The {workspace.family or 'workspace'} workspace, {size}: {len(workspace.boxes)} blocks"
     text += f" ({', '.join(counts)}, each kind its own colour and hatch)" if counts else ""
     text += f", {_occupied_share(workspace):.0%} of the region occupied"
-    text += f"; heights drawn {stretch} times taller than widths." if stretch > 1 else "."
+    text += f"; heights stretched {stretch} times against widths." if stretch > 1 else "."
     return describe(fig, text, [_blocks_part(workspace)])
 
 
@@ -340,7 +341,9 @@ def cspace_slice(
     text += ("valid." if q_valid[0] else "in collision.") + (
         " Beside it, the robot there, its base a dot." * bool(view)
     )
-    text += " A block drawn across the links but wholly above or below them is a dotted outline." * bool(outlined)
+    text += " A block drawn across the links that no link touches (above or below them) is a dotted outline." * bool(
+        outlined
+    )
     star_at = Part(
         "the star's configuration",
         "valid" if q_valid[0] else "in collision",
@@ -350,45 +353,32 @@ def cspace_slice(
     return describe(fig, text, [_collision_part("slice", ax, valid), star_at])
 
 
-OUT_OF_REACH: dict[str, Any] = dict(edgecolor=COLORS["occupied"], linewidth=0.8, zorder=0.5)
-
-
-def _beyond_reach(robot: BoxRobot, workspace: Workspace, q: np.ndarray, view: str) -> np.ndarray:
-    """Which blocks a flat ``view`` of a 3D robot at ``q (dof,)`` draws across its links although they lie wholly
-    above or below (in front of or behind) every link drawn over them (review r32a: a valid robot drawn inside a
-    block read as a collision). Judged by the links' bounding boxes, so a block it keeps may still clear a link."""
-    if robot.dim != 3 or view not in VIEWS:
-        return np.zeros(len(workspace.boxes), dtype=bool)
-    plane = list(VIEWS[view])
-    (depth,) = set(range(3)) - set(plane)
-    links, boxes = robot.link_aabbs(q[None])[0], workspace.boxes  # (L, 2, 3), (K, 2, 3)
-    across = np.all(  # (K, L): the block's and the link's shadows meet in the view
-        (boxes[:, None, 0, plane] <= links[None, :, 1, plane]) & (boxes[:, None, 1, plane] >= links[None, :, 0, plane]),
-        axis=2,
-    )
-    level = (boxes[:, None, 0, depth] <= links[None, :, 1, depth]) & (
-        boxes[:, None, 1, depth] >= links[None, :, 0, depth]
-    )
-    return across.any(axis=1) & ~(across & level).any(axis=1)
+OUT_OF_REACH: dict[str, Any] = dict(edgecolor=COLORS["occupied"], linewidth=1.0, zorder=0.5)
 
 
 def _robot_panel(
     fig: Figure, cell, checker: CollisionChecker, q: np.ndarray, q_valid: np.ndarray, view: str, margin
 ) -> int:
     """The robot at ``q (dof,)`` among the nearby blocks in ``fig``'s grid ``cell``, its base a black dot, its
-    verdict titled; blocks wholly above or below every link (in front or behind, from the side) outlined dotted,
-    not filled. Returns how many blocks were outlined."""
+    verdict titled; a block drawn across the links that no link touches (wholly above or below them, in front or
+    behind from the side: :func:`toolkit.plots.contact.passed_over`) outlined dotted, never filled, a little inside
+    its edges so that neighbours' outlines do not join into lines across the panel (review r34a). Returns how many
+    blocks were outlined."""
     robot_ax = fig.add_subplot(cell, **({"projection": "3d"} if view == "3d" else {}))
     robot = checker.robot
     colors, workspace = link_colors(1, q_valid), checker_workspace(checker)
-    beyond = _beyond_reach(robot, workspace, q, view)  # (K,) bool: wholly in front of or behind every link
+    flat_3d = robot.dim == 3 and view in VIEWS
+    beyond = passed_over(robot, workspace, q, VIEWS[view]) if flat_3d else np.zeros(len(workspace.boxes), dtype=bool)
     near = Workspace(workspace.lower, workspace.upper, workspace.boxes[~beyond])
     draw_robot(robot_ax, robot, q[None], colors=colors, view=view, workspace=near, margin=margin)
     flat = workspace.boxes[beyond][:, :, list(VIEWS.get(view, (0, 1)))]  # (B, 2, 2) in the view's plane
     window = np.array([robot_ax.get_xlim(), robot_ax.get_ylim()])  # (2, 2): each axis's low, high
-    flat = flat[np.all((flat[:, 0] <= window[:, 1]) & (flat[:, 1] >= window[:, 0]), axis=1)]  # those in the panel
-    for b_lo, b_hi in flat:  # outlined only: no link can reach them
-        robot_ax.add_patch(Rectangle(b_lo, *(b_hi - b_lo), fill=False, linestyle=":", gid="beyond", **OUT_OF_REACH))
+    flat = np.unique(flat[np.all((flat[:, 0] <= window[:, 1]) & (flat[:, 1] >= window[:, 0]), axis=1)], axis=0)
+    for b_lo, b_hi in flat:  # outlined only, inset: no link touches them
+        inset = np.minimum(0.03 * np.ptp(window, axis=1).min(), (b_hi - b_lo) / 4)  # (2,)
+        robot_ax.add_patch(
+            Rectangle(b_lo + inset, *(b_hi - b_lo - 2 * inset), fill=False, linestyle=":", gid="beyond", **OUT_OF_REACH)
+        )
     base = robot.link_frames(q[None])[0][0, 0, : robot.dim]  # (D,) the base's position: a black dot (r30a)
     robot_ax.plot(*([c] for c in (base if view == "3d" else base[list(VIEWS[view])])), gid="base", **BASE_MARK)
     mark_arm(robot_ax, robot, q, view)
