@@ -296,7 +296,8 @@ def test_each_mark_sits_on_a_mistake_of_its_kind():
         at = (np.asarray(mark.get_offsets()) - first) / cell  # (m, 2) the marks' centres, in cells
         half = (np.sqrt(mark.get_sizes()[0]) / 2 + cell_marks.RING) / cell_marks.cell_points(ax, fine)  # cells
         kind = np.argwhere(codes == code)  # (n, 2) the mistakes of its kind
-        under = np.max(np.abs(at[:, None] - kind[None]), axis=2) + 0.5 <= half + 1e-9  # (m, n) whole under a mark
+        under = np.max(np.abs(at[:, None] - kind[None]), axis=2) - 0.5 < half  # (m, n) touching a mark (r34c: the
+        # mark clear of the outline, beside a mistake on it)
         assert len(at) and under.any(axis=1).all(), label
     assert block_of_squares(fig, "circles") > 1 and block_of_squares(fig, "squares") > 1  # merged into blocks
 

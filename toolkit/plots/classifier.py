@@ -38,7 +38,7 @@ from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
 from toolkit.plots.cell_marks import depth_inside, draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
-from toolkit.plots.mark_sides import fit_on_side, on_side
+from toolkit.plots.mark_sides import fit_on_side, keep_on_side, on_side
 from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import dof_label
 from toolkit.plots.slices import CSpaceSlice
@@ -90,6 +90,7 @@ def probability_maps(
     blocks = fit_on_side(fig, grid)  # laid out: each kind's marks one per k x k cells holding any, on their side
     k = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
     _legend(fig, _mistake_handles(k), above=len(cut) > 1)  # r26c: under the second map, a screen below the first
+    keep_on_side(fig, grid)  # again, the maps as the legend left them (r34c: fitted before, marks met the outlines)
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
     text += "configurations; grey, 0 black to 1 white) with the true C-obstacles outlined and hatched, the threshold's "
     text += f"contour dotted, dangerous mistakes as squares{_per_block(k[3])} and conservative ones as circles"
@@ -212,6 +213,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     labels = ["true C-obstacle boundary", ANSWERS[0], f"{ANSWERS[1]} (circles)", ANSWERS[2]]
     labels.append("invalid kept (dangerous, squares)")
     fig.legend([boundary, *handles], labels, loc="outside lower center", ncols=3, fontsize=8, frameon=False)
+    keep_on_side(fig, grid)  # again, the map as its title and legend left it (r34c)
     text = f"{title + ': ' if title else ''}the model's decision at threshold {threshold:.2f} over {grid.names[0]} and "
     text += f"{grid.names[1]}, each cell by its kind of answer, the mistakes marked on their cells: dangerous ones "
     text += f"with squares{block[3]} and conservative ones with sparse circles{block[1]}, over the boundary; their "
