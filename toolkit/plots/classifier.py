@@ -38,7 +38,7 @@ from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
 from toolkit.plots.cell_marks import depth_inside, draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
-from toolkit.plots.mark_sides import fit_on_side, keep_on_side, on_side
+from toolkit.plots.mark_sides import fit_on_side, keep_on_side, marks_counted, on_side
 from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import dof_label
 from toolkit.plots.slices import CSpaceSlice
@@ -83,12 +83,15 @@ def probability_maps(
         ax.set_box_aspect(1)  # square, as section 4's decision map (reader r33c: 2DS's square drawn 32 % wide)
         bar = fig.colorbar(image, ax=ax, label=f"P(valid); the line: threshold {t:.2f}", shrink=0.9)
         bar.ax.axhline(t, color=COLORS["ink"], linewidth=2.5, path_effects=halo(2.5, ("free",)))
-        counts = confusion_counts(np.asarray(probability) >= t, valid)
-        ax.set_title(f"{name}: P(valid), threshold {t:.2f}\n{_mistakes_counted(counts)}", fontsize=10)
+        ax.set_title(f"{name}: P(valid), threshold {t:.2f}\n\n", fontsize=10)  # its lines, counted once fitted
         said.append(f"{name}, threshold {t:.2f}: " + answers.answers_in_words(np.asarray(probability) >= t, valid))
         parts.append(answers.map_in_regions(name, said[-1], probability, valid, grid, t))
     blocks = fit_on_side(fig, grid)  # laid out: each kind's marks one per k x k cells holding any, on their side
     k = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
+    for ax, (name, probability), t in zip(axes, probabilities.items(), cut.values()):  # the marks counted (r34c)
+        counts = confusion_counts(np.asarray(probability) >= t, valid)
+        tiles = marks_counted(counts[ANSWERS[3]], counts[ANSWERS[1]], ax, k) or _mistakes_counted(counts)
+        ax.set_title(f"{name}: P(valid), threshold {t:.2f}\n{tiles}", fontsize=10)
     _legend(fig, _mistake_handles(k), above=len(cut) > 1)  # r26c: under the second map, a screen below the first
     keep_on_side(fig, grid)  # again, the maps as the legend left them (r34c: fitted before, marks met the outlines)
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "

@@ -5,14 +5,15 @@ deepest inside its side of the outline. A mark is wider than a cell on a fine ma
 with its rings about 3.5 cells wide), so that a mark centred on a C-obstacle's corner cell, where all of a `strong`
 model's dangerous mistakes lie, covered mostly the free space beside it (reader r32c: "the squares appear to sit in
 free space just outside the block they are said to be inside"). A mark given its side (:func:`on_side`) moves, once
-fitted (:func:`fit_on_side`) and again once its figure is laid out for good (:func:`keep_on_side`), while it still
-touches its cell, to where the least of it, rings included, lies on the other side or beyond the map's frame: inside
-the outline and clear of its line (reader r34c: marks on the line read as lying on it) wherever the region is wide
-enough to hold it, and never nearer another mark of its kind than the marks' pitch keeps them.
+fitted (:func:`fit_on_side`) and again once its figure is laid out for good (:func:`keep_on_side`), while its cell
+lies within an outline's width of it, to where the least of it, rings included, lies on the other side or beyond the
+map's frame: inside the outline and clear of its line (reader r34c: marks on the line read as lying on it) wherever
+the region is wide enough to hold it, and never nearer another mark of its kind than the marks' pitch keeps them.
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from weakref import WeakKeyDictionary
 
 import numpy as np
@@ -43,7 +44,8 @@ def fit_on_side(fig: Figure, grid: CSpaceSlice) -> dict[str, int]:
 
 def keep_on_side(fig: Figure, grid: CSpaceSlice) -> None:
     """Each mark given a side (:func:`on_side`) moved, from the cell it was drawn on, to where it lies wholly on that
-    side and clear of the outline by :data:`GAP`, inside the map's frame, as ``fig`` is laid out now (reader r34c: a
+    side and clear of the outline by :data:`GAP`, that cell within GAP of it, inside the map's frame, as ``fig`` is laid
+    out now (reader r34c: a
     legend added after the fit shrank the maps, and marks fitted to the larger cells met their outlines)."""
     fig.draw_without_rendering()  # the layout the figure will be drawn with
     first = np.array([axis[0] for axis in grid.axes])  # (2,) the first cell's centre
@@ -63,7 +65,8 @@ def keep_on_side(fig: Figure, grid: CSpaceSlice) -> None:
             at = _FROM[mark].copy()
             for n in range(len(at)):
                 others = np.delete(at, n, axis=0)
-                at[n] = inward(at[n], side, half + GAP / points, half + 0.49, others, apart)  # touching its cell
+                gap = GAP / points  # cells: the outline's half width
+                at[n] = inward(at[n], side, half + gap, half + gap + 0.49, others, apart)  # its cell within the gap
             inset = max(0.0, half - 0.5)  # inside the map's frame, rings and all
             mark.set_offsets(first + np.clip(at, inset, np.array(side.shape) - 1 - inset) * cell)
 
@@ -101,3 +104,19 @@ def outside_area(at: np.ndarray, side: np.ndarray, half: float) -> float:
     beyond = (2 * half) ** 2 - float(np.sum(wi) * np.sum(wj))  # the square's area off the map
     inside = float(np.sum(np.outer(wi, wj) * ~side[np.ix_(i, j)])) if len(i) and len(j) else 0.0
     return max(0.0, round(beyond + inside, 9))  # no -1e-15 for a square wholly on the map
+
+
+def marks_counted(dangerous: int, conservative: int, ax, blocks: Mapping[int, int]) -> str:
+    """A P(valid) map's title lines: the ``dangerous`` and ``conservative`` cells, each beside the marks on ``ax``
+    that stand for them, one per tile of ``blocks[code]`` cells a side (3: squares, 1: circles); empty where every
+    mark is a cell's (reader r34c: "6,343 conservative (circles)" over 27 circles, the rule only in the legend)."""
+    if max(blocks.values()) == 1:
+        return ""
+    marks = {str(m.get_label()): len(np.asarray(m.get_offsets())) for m in cell_marks(ax)}
+    return "\n".join(
+        f"{cells:,} {word} cells: {marks.get(label, 0)} {shape}, 1 per {k} x {k}-cell tile"
+        for cells, word, label, shape, k in (
+            (dangerous, "dangerous", "invalid kept (dangerous)", "squares", blocks[3]),
+            (conservative, "conservative", "valid rejected", "circles", blocks[1]),
+        )
+    )
