@@ -106,12 +106,13 @@ def outside_area(at: np.ndarray, side: np.ndarray, half: float) -> float:
     return max(0.0, round(beyond + inside, 9))  # no -1e-15 for a square wholly on the map
 
 
-def marks_counted(dangerous: int, conservative: int, ax, blocks: Mapping[int, int]) -> str:
-    """A P(valid) map's title lines: the ``dangerous`` and ``conservative`` cells, each beside the marks on ``ax``
-    that stand for them, one per tile of ``blocks[code]`` cells a side (3: squares, 1: circles); empty where every
-    mark is a cell's (reader r34c: "6,343 conservative (circles)" over 27 circles, the rule only in the legend)."""
+def marks_counted(counts: Mapping[str, int], ax, blocks: Mapping[int, int]) -> str:
+    """A P(valid) map's title lines: its dangerous and conservative cells (``counts``, by answer: ``confusion_counts``)
+    and, where a mark stands for a tile of ``blocks[code]`` cells a side (3: squares, 1: circles), the marks on ``ax``
+    beside them (reader r34c: "6,343 conservative (circles)" over 27 circles, the rule only in the legend)."""
+    dangerous, conservative = counts["invalid kept (dangerous)"], counts["valid rejected"]
     if max(blocks.values()) == 1:
-        return ""
+        return f"{dangerous:,} dangerous cells (squares), {conservative:,} conservative (circles)"
     marks = {str(m.get_label()): len(np.asarray(m.get_offsets())) for m in cell_marks(ax)}
     return "\n".join(
         f"{cells:,} {word} cells: {marks.get(label, 0)} {shape}, 1 per {k} x {k}-cell tile"
