@@ -116,6 +116,8 @@ def marks_counted(counts: Mapping[str, int], ax, blocks: Mapping[int, int]) -> s
     marks = {str(m.get_label()): len(np.asarray(m.get_offsets())) for m in cell_marks(ax)}
     return "\n".join(
         f"{cells:,} {word} cells: {marks.get(label, 0)} {shape}, 1 per {k} x {k}-cell tile"
+        if cells
+        else f"0 {word} cells"
         for cells, word, label, shape, k in (
             (dangerous, "dangerous", "invalid kept (dangerous)", "squares", blocks[3]),
             (conservative, "conservative", "valid rejected", "circles", blocks[1]),
