@@ -343,11 +343,21 @@ def _chapter_03_opening(nb) -> list[str]:
     }
     want = {"our `paper` preset, 2DS": (40, 60), "our `strong` preset, 2DS": (90, 100)}
     want["our `strong` preset, 3DC-7"] = (90, 100)
-    return [
+    problems = [
         f"03: the opening verdict's table gives {who} {said.get(who, float('nan')):g}%, not within {low}-{high}%"
         for who, (low, high) in want.items()
         if not low <= said.get(who, -1) <= high
     ]
+    everything = [  # r34c: the verdict's "answers 'valid' to every sample" on 3DC-7 against its row's TPR and TNR
+        row[2:4]
+        for header, rs in tables(nb)
+        if header and header[0] == "model, unseen workspaces"
+        for row in rs
+        if row[0].startswith("our `paper` preset, 3DC-7")
+    ]
+    if 'on unseen 3DC-7 ones it answers "valid" to every sample' in prose(nb) and everything != [["100%", "0%"]]:
+        problems.append(f"03: the verdict says the `paper` preset keeps every 3DC-7 sample; its row says {everything}")
+    return problems
 
 
 def _chapter_03_accuracy(who: str, said: tuple, table: list[int], always: int) -> list[str]:
@@ -373,10 +383,10 @@ def _beside(points: int) -> str:
 
 
 SLICE = re.compile(  # section 5's verdict on a slice (the notebook's slice_verdict), its numbers and words captured
-    r"(\d+) of \d+ cells wrong, (\d+)% of them near a boundary; \d+% of the C-obstacle's cells called valid, "
-    r"\d+% of the free ones rejected: it (misses parts of the obstacles|finds the obstacles, and errs only at their "
-    r"edges|finds the obstacles and errs (?:mostly at their edges|more often away from their edges than at them); away "
-    r"from any boundary it makes (\d+) conservative and (\d+) dangerous mistakes)"
+    r"(\d+) of \d+ cells wrong, (\d+)% of them near a boundary; \d+ \([^()]*%\) of the C-obstacle's cells called "
+    r"valid, \d+ \([^()]*%\) of the free ones rejected: it (misses parts of the obstacles|finds the obstacles, and "
+    r"errs only at their edges|finds the obstacles and errs (?:mostly at their edges|more often away from their edges "
+    r"than at them); away from any boundary it makes (\d+) conservative and (\d+) dangerous mistakes)"
 )
 
 

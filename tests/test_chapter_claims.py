@@ -891,12 +891,13 @@ def test_the_answer_chapter_04_and_05_state_holds_in_docs_results():
     assert {findings.time_verdict(r) for r in recorded.query_ratios(fcl)["3dc7"].values()} == {findings.TIES}
 
 
-SLICES_03 = (  # section 5's two verdicts on the full-size site of review r8b, as slice_verdict now words them
-    "402 of 10000 cells wrong, 100% of them near a boundary; 2% of the C-obstacle's cells called valid, 4% of the free "
-    "ones rejected: it finds the obstacles, and errs only at their edges",
-    "737 of 10000 cells wrong, 89% of them near a boundary; 0% of the C-obstacle's cells called valid, 10% of the free "
-    "ones rejected: it finds the obstacles and errs mostly at their edges; away from any boundary it makes 81 "
-    "conservative and 0 dangerous mistakes",
+SLICES_03 = (  # section 5's two verdicts on the full-size site of review r8b, as slice_verdict now words them (r34c: a
+    # count beside each share)
+    "402 of 10000 cells wrong, 100% of them near a boundary; 33 (2%) of the C-obstacle's cells called valid, 369 (4%) "
+    "of the free ones rejected: it finds the obstacles, and errs only at their edges",
+    "737 of 10000 cells wrong, 89% of them near a boundary; 9 (0.3%) of the C-obstacle's cells called valid, 728 (10%) "
+    "of the free ones rejected: it finds the obstacles and errs mostly at their edges; away from any boundary it makes "
+    "81 conservative and 0 dangerous mistakes",
 )
 OPENING_03 = (("paper", "2DS", 55), ("strong", "2DS", 100), ("strong", "3DC-7", 96))  # the record, docs/results.md
 PLANNED_03 = "roadmap: 203 nodes, 1 of them in collision (dangerous mistakes the planner accepted); repairs: 0"

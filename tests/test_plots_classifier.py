@@ -14,7 +14,7 @@ from toolkit.geometry import robots
 from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace
 from toolkit.learning import metrics
-from toolkit.plots import alt, answers, cell_marks, slices
+from toolkit.plots import alt, answers, cell_marks, mark_sides, slices
 from toolkit.plots import classifier as pc
 from toolkit.plots.answers import confusion_counts
 from toolkit.plots.palette import COLORS, contrast
@@ -167,9 +167,13 @@ def test_probability_map_shows_the_probabilities_the_boundary_and_exactly_the_mi
     assert dangerous.sum() > 0 and conservative.sum() > 0  # the test means something
     assert_squares_mark(ax, grid, dangerous, block_of_squares(ax.figure))
     assert_squares_mark(ax, grid, conservative, block_of_squares(ax.figure, "circles"), label="valid rejected")
+    marks = {c.get_label(): len(c.get_offsets()) for c in cell_marks.cell_marks(ax)}  # r34c: marks counted too
+    k = {"squares": block_of_squares(ax.figure), "circles": block_of_squares(ax.figure, "circles")}
     assert ax.get_title().endswith(
-        f"{dangerous.sum()} dangerous cells (squares), {conservative.sum()} conservative (circles)"
-    )
+        f"{dangerous.sum()} dangerous cells: {marks['invalid kept (dangerous)']} squares, 1 per {k['squares']} x "
+        f"{k['squares']}-cell tile\n{conservative.sum()} conservative cells: {marks['valid rejected']} circles, 1 per "
+        f"{k['circles']} x {k['circles']}-cell tile"
+    ) or (max(k.values()) == 1 and ax.get_title().endswith("conservative (circles)"))
     # the boundary runs midway between the exact checker's free and blocked cells, around the one block
     blocked = np.argwhere(~valid)
     step = grid.axes[0][1] - grid.axes[0][0]
@@ -296,7 +300,8 @@ def test_each_mark_sits_on_a_mistake_of_its_kind():
         at = (np.asarray(mark.get_offsets()) - first) / cell  # (m, 2) the marks' centres, in cells
         half = (np.sqrt(mark.get_sizes()[0]) / 2 + cell_marks.RING) / cell_marks.cell_points(ax, fine)  # cells
         kind = np.argwhere(codes == code)  # (n, 2) the mistakes of its kind
-        under = np.max(np.abs(at[:, None] - kind[None]), axis=2) + 0.5 <= half + 1e-9  # (m, n) whole under a mark
+        gap = mark_sides.GAP / cell_marks.cell_points(ax, fine)  # cells: r34c, a mark clear of the outline's line
+        under = np.max(np.abs(at[:, None] - kind[None]), axis=2) - 0.5 < half + gap  # (m, n) beside a mark
         assert len(at) and under.any(axis=1).all(), label
     assert block_of_squares(fig, "circles") > 1 and block_of_squares(fig, "squares") > 1  # merged into blocks
 

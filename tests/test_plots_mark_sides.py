@@ -9,10 +9,11 @@ from toolkit.plots import answers, cell_marks, mark_sides, slices
 from toolkit.plots import classifier as pc
 
 
-def test_a_square_on_a_blocks_corner_cell_lies_wholly_inside_the_block_and_still_covers_its_cell():
+def test_a_square_on_a_blocks_corner_cell_lies_inside_the_block_clear_of_its_outline_and_beside_its_cell():
     """Reader r32c: the `strong` map's dangerous cells are a block's corner cells; a square centred on one, 3.5 cells
     wide with its rings, lay mostly in the free space beside the block it was said to be inside. Each square now lies,
-    rings included, inside the outline, and the corner cell it stands for lies whole under it."""
+    rings included, inside the outline and clear of its line (r34c: a square on the line read as lying on it), and
+    still touches the corner cell it stands for."""
     fine = slices.slice_grid(robots.point_robot(), n=100)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
     valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (100, 100)
@@ -29,8 +30,9 @@ def test_a_square_on_a_blocks_corner_cell_lies_wholly_inside_the_block_and_still
     half = (np.sqrt(squares.get_sizes()[0]) / 2 + cell_marks.RING) / cell_marks.cell_points(ax, fine)
     assert len(at) == 2 and half > 1  # wider than two cells: centred on a corner cell, most of it was outside
     for centre, corner in zip(sorted(at.tolist()), corners):
-        assert mark_sides.outside_area(np.array(centre), ~valid, half) == 0.0  # inside, rings and all
-        assert np.max(np.abs(np.array(centre) - corner)) + 0.5 <= half + 1e-9  # its cell whole under it
+        gap = mark_sides.GAP / cell_marks.cell_points(ax, fine)  # cells: the outline's half width, rings included
+        assert mark_sides.outside_area(np.array(centre), ~valid, half + gap) == 0.0  # inside, clear of the line
+        assert np.max(np.abs(np.array(centre) - corner)) - 0.5 < half + gap  # its cell beside it, across the line
     assert (answers.answer_codes(probability >= 0.5, valid) == 3).sum() == 2
 
 
@@ -45,3 +47,11 @@ def test_inward_keeps_a_mark_in_place_where_it_already_lies_inside_and_apart_fro
     assert mark_sides.outside_area(moved, side, 1.7) == 0.0
     blocked = mark_sides.inward(corner, side, 1.7, 1.2, np.array([[7.0, 7.0]]), 3.0)  # no room beside another mark
     np.testing.assert_array_equal(blocked, corner)
+
+
+def test_a_marks_area_beyond_the_maps_frame_counts_as_on_the_other_side():
+    """Reader r34c: a circle in a strip too narrow for it was pushed beyond the frame, where nothing counted, then
+    pulled back in onto the block beside the strip, the frame cutting it in half."""
+    free = np.ones((10, 10), dtype=bool)
+    assert mark_sides.outside_area(np.array([5.0, 5.0]), free, 1.0) == 0.0
+    assert mark_sides.outside_area(np.array([0.0, 5.0]), free, 1.0) == 1.0  # half a cell of its 2-cell side beyond

@@ -16,11 +16,17 @@ def test_the_opening_table_gives_the_papers_accuracy_as_reported_and_its_balance
     assert f"as reported: {published['acc']:.0%})" in paper
     assert f"| {(published['tpr'] + published['tnr']) / 2:.1%} |" in paper  # 87.5 %, not the reported 88 %
     strong7 = recorded.table(recorded.ALGORITHM_1, "MLP accuracy")["3dc7"]  # r33c: the summary's, Figure 1's network
-    label = "our `strong` preset, 3DC-7, recorded run (Figure 1's network)"  # r29c, r30c
+    label = "our `strong` preset, 3DC-7, recorded run (`--planner paper`, Figure 1's network)"  # r29c, r30c, r34c
     assert any(line.startswith(f"| {label} | {recorded.ours(strong7['Balanced unseen Acc']):.0%} |") for line in lines)
     paper7 = "| the paper's MLP, its Table 2, 3DC-7 (a 7-DoF chain of two boxes in 3D, section 5; its accuracy, as "
     assert lines[5].startswith(paper7 + "reported: 71%) | 73.0% | 85% | 61% |")  # r32c: 3DC-7 defined, beside ours
-    assert lines[6].startswith(f"| {label} |") and "| TPR (valid kept) |" in lines[0]  # r32c: "free kept" elsewhere
+    paper3dc7 = recorded.table("paper", "MLP accuracy")["3dc7"]  # r34c: the `paper` preset's "valid" to all, shown
+    assert (
+        lines[6]
+        == f"| our `paper` preset, 3DC-7, recorded run | {recorded.ours(paper3dc7['Balanced unseen Acc']):.0%} "
+        f"| {recorded.ours(paper3dc7['TPR']):.0%} | {recorded.ours(paper3dc7['TNR']):.0%} |"
+    )
+    assert lines[7].startswith(f"| {label} |") and "| TPR (valid kept) |" in lines[0]  # r32c: "free kept" elsewhere
     assert "preset (the toolkit's training recipe" in lines[3]
 
 
@@ -33,7 +39,8 @@ def test_the_closing_table_holds_the_paper_row_and_this_pages_draws_in_six_rows(
     table = chapter03.closing_table(scores)
     rows = [line.split(" | ")[:2] for line in table.splitlines()[2:]]
     assert [" | ".join(row).lstrip("| ") for row in rows] == [
-        "the paper's Table 2, 2DS unseen | unstated (§IV-A: validity-blind); its rates imply 60% valid",
+        'the paper\'s Table 2, 2DS unseen | unstated: §IV-A says "regardless of their validity", but its rates imply '
+        "60% valid",  # r34c: not "validity-blind" outright beside "probably neither of ours"
         "`paper` preset, 2DS unseen, this page's draw (section 4) | balanced",
         "`strong` preset, 2DS unseen, this page's draw (section 4) | balanced",
         "`paper` preset, 2DS unseen, this page's draw (section 4) | validity-blind",
@@ -81,7 +88,8 @@ def test_a_slice_verdict_counts_its_mistakes_by_where_they_lie():
     assert chapter03.slice_verdict(p, truth, 0.5, 1).endswith("it finds the obstacles, and errs only at their edges")
     p[15, 15] = 0.0  # a free cell far from the obstacle rejected
     said = chapter03.slice_verdict(p, truth, 0.5, 1)
-    assert said.startswith("1 of 400 cells wrong, 0% of them near a boundary")
+    assert said.startswith("1 of 400 cells wrong, 0% of them near a boundary; 0 (0%) of the C-obstacle's cells called")
+    assert "1 (0.3%) of the free ones rejected" in said  # r34c: a count beside a share under 1 %, never a bare "0%"
     assert said.endswith("away from any boundary it makes 1 conservative and 0 dangerous mistakes")
 
 

@@ -38,7 +38,7 @@ from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
 from toolkit.plots.cell_marks import depth_inside, draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
-from toolkit.plots.mark_sides import fit_on_side, on_side
+from toolkit.plots.mark_sides import fit_on_side, keep_on_side, marks_counted, on_side
 from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import dof_label
 from toolkit.plots.slices import CSpaceSlice
@@ -83,22 +83,19 @@ def probability_maps(
         ax.set_box_aspect(1)  # square, as section 4's decision map (reader r33c: 2DS's square drawn 32 % wide)
         bar = fig.colorbar(image, ax=ax, label=f"P(valid); the line: threshold {t:.2f}", shrink=0.9)
         bar.ax.axhline(t, color=COLORS["ink"], linewidth=2.5, path_effects=halo(2.5, ("free",)))
-        counts = confusion_counts(np.asarray(probability) >= t, valid)
-        ax.set_title(f"{name}: P(valid), threshold {t:.2f}\n{_mistakes_counted(counts)}", fontsize=10)
         said.append(f"{name}, threshold {t:.2f}: " + answers.answers_in_words(np.asarray(probability) >= t, valid))
         parts.append(answers.map_in_regions(name, said[-1], probability, valid, grid, t))
     blocks = fit_on_side(fig, grid)  # laid out: each kind's marks one per k x k cells holding any, on their side
     k = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
+    for ax, (name, probability), t in zip(axes, probabilities.items(), cut.values()):  # the marks counted (r34c)
+        tiles = marks_counted(confusion_counts(np.asarray(probability) >= t, valid), ax, k)
+        ax.set_title(f"{name}: P(valid), threshold {t:.2f}\n{tiles}", fontsize=10)
     _legend(fig, _mistake_handles(k), above=len(cut) > 1)  # r26c: under the second map, a screen below the first
+    keep_on_side(fig, grid)  # again, the maps as the legend left them (r34c: fitted before, marks met the outlines)
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
     text += "configurations; grey, 0 black to 1 white) with the true C-obstacles outlined and hatched, the threshold's "
     text += f"contour dotted, dangerous mistakes as squares{_per_block(k[3])} and conservative ones as circles"
     return describe(fig, text + f"{_per_block(k[1])}. " + "; ".join(said) + ".", parts)
-
-
-def _mistakes_counted(counts: Mapping[str, int]) -> str:
-    """A map's title line: how many cells of each kind of mistake, by their marks."""
-    return f"{counts[ANSWERS[3]]:,} dangerous cells (squares), {counts[ANSWERS[1]]:,} conservative (circles)"
 
 
 def _per_block(k: int) -> str:
@@ -122,8 +119,9 @@ def path_map(
     fig = Figure(figsize=(6, 6.2), layout="constrained")
     ax = fig.subplots()
     image = _draw_probability(ax, probability, valid, grid, threshold, mistakes=False, cut=CUT)
-    fig.colorbar(image, ax=ax, label="P(valid)", shrink=0.8)
-    cut = Line2D([], [], color=COLORS["ink"], linestyle=":", linewidth=CUT, label=f"P(valid) = {threshold:.2f}")
+    notch: dict[str, Any] = dict(color=COLORS["ink"], path_effects=halo(CUT, ("free",)))  # as the maps' (r34c)
+    fig.colorbar(image, ax=ax, label="P(valid); the line: threshold", shrink=0.8).ax.axhline(threshold, lw=CUT, **notch)
+    cut = Line2D([], [], linestyle=":", linewidth=CUT, label=f"P(valid) = {threshold:.2f}", **notch)
     x, y = grid.dofs
     _draw_roadmap(ax, nodes, nodes_valid, path, (x, y), edges)
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=10, wrap=True)
@@ -212,6 +210,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     labels = ["true C-obstacle boundary", ANSWERS[0], f"{ANSWERS[1]} (circles)", ANSWERS[2]]
     labels.append("invalid kept (dangerous, squares)")
     fig.legend([boundary, *handles], labels, loc="outside lower center", ncols=3, fontsize=8, frameon=False)
+    keep_on_side(fig, grid)  # again, the map as its title and legend left it (r34c)
     text = f"{title + ': ' if title else ''}the model's decision at threshold {threshold:.2f} over {grid.names[0]} and "
     text += f"{grid.names[1]}, each cell by its kind of answer, the mistakes marked on their cells: dangerous ones "
     text += f"with squares{block[3]} and conservative ones with sparse circles{block[1]}, over the boundary; their "
@@ -285,9 +284,10 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     cross = dict(markersize=10, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True))  # over the path (5)
     ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **cross)  # as the maps' squares (r30c)
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
-    label = dict(xytext=(-10, 10), textcoords="offset points", ha="right", va="bottom", fontsize=9, zorder=7, bbox=box)
-    for node in nodes[~nodes_valid][:3]:  # a few named in words as well, above-left: on the map's light side, off the
-        ax.annotate("in collision", node[[x, y]], **label)  # dotted line and nodes right of it (r33c: above-right hid)
+    label = dict(textcoords="offset points", va="bottom", fontsize=9, zorder=7, bbox=box)
+    for node in nodes[~nodes_valid][:3]:  # a few named in words too, above-left (r33c: above-right hid); in the left
+        side = (10, "left") if node[x] < np.mean(ax.get_xlim()) else (-10, "right")  # half above-right,
+        ax.annotate("in collision", node[[x, y]], xytext=(side[0], 10), ha=side[1], **label)  # in the axes (r34c)
     ax.plot(
         path[:, x],
         path[:, y],

@@ -5,13 +5,15 @@ deepest inside its side of the outline. A mark is wider than a cell on a fine ma
 with its rings about 3.5 cells wide), so that a mark centred on a C-obstacle's corner cell, where all of a `strong`
 model's dangerous mistakes lie, covered mostly the free space beside it (reader r32c: "the squares appear to sit in
 free space just outside the block they are said to be inside"). A mark given its side (:func:`on_side`) moves, once
-fitted (:func:`fit_on_side`), by less than its own half side, so that it still covers its whole cell, to where the
-least of it, rings included, lies on the other side: inside the outline wherever the region is wide enough to hold
-it, and never nearer another mark of its kind than the marks' pitch keeps them.
+fitted (:func:`fit_on_side`) and again once its figure is laid out for good (:func:`keep_on_side`), while its cell
+lies within an outline's width of it, to where the least of it, rings included, lies on the other side or beyond the
+map's frame: inside the outline and clear of its line (reader r34c: marks on the line read as lying on it) wherever
+the region is wide enough to hold it, and never nearer another mark of its kind than the marks' pitch keeps them.
 """
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from weakref import WeakKeyDictionary
 
 import numpy as np
@@ -33,8 +35,19 @@ def on_side(marks: PathCollection, side) -> PathCollection:
 
 
 def fit_on_side(fig: Figure, grid: CSpaceSlice) -> dict[str, int]:
-    """:func:`~toolkit.plots.cell_marks.fit_cell_marks`, then each mark given a side moved onto it (its blocks)."""
+    """:func:`~toolkit.plots.cell_marks.fit_cell_marks`, then each mark given a side moved onto it (its blocks); a
+    figure that adds a title or legend after this, changing its maps' size, calls :func:`keep_on_side` again last."""
     blocks = fit_cell_marks(fig, grid)
+    keep_on_side(fig, grid)
+    return blocks
+
+
+def keep_on_side(fig: Figure, grid: CSpaceSlice) -> None:
+    """Each mark given a side (:func:`on_side`) moved, from the cell it was drawn on, to where it lies wholly on that
+    side and clear of the outline by :data:`GAP`, that cell within GAP of it, inside the map's frame, as ``fig`` is laid
+    out now (reader r34c: a
+    legend added after the fit shrank the maps, and marks fitted to the larger cells met their outlines)."""
+    fig.draw_without_rendering()  # the layout the figure will be drawn with
     first = np.array([axis[0] for axis in grid.axes])  # (2,) the first cell's centre
     cell = np.array([abs(axis[1] - axis[0]) if len(axis) > 1 else 1.0 for axis in grid.axes])  # (2,) data units
     for ax in fig.axes:
@@ -42,18 +55,24 @@ def fit_on_side(fig: Figure, grid: CSpaceSlice) -> dict[str, int]:
             side = _SIDE.get(mark)
             if side is None or not len(np.asarray(mark.get_offsets())):
                 continue
+            if mark not in _FROM:
+                _FROM[mark] = (np.asarray(mark.get_offsets()) - first) / cell  # (m, 2) the cells drawn on
             points = cell_points(ax, grid)  # one cell, in points
             size = float(np.sqrt(mark.get_sizes()[0]))  # points
             half = (size / 2 + RING) / points  # cells: the mark's half side, rings included
             pitch = float((str(mark.get_gid()).split(":") + ["0"])[1] or 0)
             apart = (size + CLEAR) / points if pitch else 0.0  # cells between two marks' centres, at least
-            at = (np.asarray(mark.get_offsets()) - first) / cell  # (m, 2) in cells
+            at = _FROM[mark].copy()
             for n in range(len(at)):
                 others = np.delete(at, n, axis=0)
-                at[n] = inward(at[n], side, half, max(size / 2 / points, half - 0.5), others, apart)
+                gap = GAP / points  # cells: the outline's half width
+                at[n] = inward(at[n], side, half + gap, half + gap + 0.49, others, apart)  # its cell within the gap
             inset = max(0.0, half - 0.5)  # inside the map's frame, rings and all
             mark.set_offsets(first + np.clip(at, inset, np.array(side.shape) - 1 - inset) * cell)
-    return blocks
+
+
+GAP = 2.5  # points between a mark's rings and its outline's middle: the outline's half width, its rings included (2.2)
+_FROM: WeakKeyDictionary[PathCollection, np.ndarray] = WeakKeyDictionary()  # the cells each mark was fitted on
 
 
 def inward(at: np.ndarray, side: np.ndarray, half: float, reach: float, others: np.ndarray, apart: float):
@@ -74,13 +93,33 @@ def inward(at: np.ndarray, side: np.ndarray, half: float, reach: float, others: 
 
 def outside_area(at: np.ndarray, side: np.ndarray, half: float) -> float:
     """The area, in cells, of the square of half side ``half`` centred at ``at (2,)`` that lies on the map's cells
-    outside ``side (nx, ny)`` (beyond the map's edge counts as neither)."""
+    outside ``side (nx, ny)`` or beyond the map's frame (reader r34c: a circle pushed beyond it, then pulled back
+    inside, sat on the block beside the frame, cut by it)."""
     overlaps = []
     for axis in range(2):
         lo, hi = at[axis] - half, at[axis] + half
         k = np.arange(max(0, int(np.floor(lo + 0.5))), min(side.shape[axis] - 1, int(np.ceil(hi - 0.5))) + 1)
         overlaps.append((k, np.clip(np.minimum(k + 0.5, hi) - np.maximum(k - 0.5, lo), 0.0, None)))
     (i, wi), (j, wj) = overlaps
-    if not len(i) or not len(j):
-        return 0.0
-    return float(np.sum(np.outer(wi, wj) * ~side[np.ix_(i, j)]))
+    beyond = (2 * half) ** 2 - float(np.sum(wi) * np.sum(wj))  # the square's area off the map
+    inside = float(np.sum(np.outer(wi, wj) * ~side[np.ix_(i, j)])) if len(i) and len(j) else 0.0
+    return max(0.0, round(beyond + inside, 9))  # no -1e-15 for a square wholly on the map
+
+
+def marks_counted(counts: Mapping[str, int], ax, blocks: Mapping[int, int]) -> str:
+    """A P(valid) map's title lines: its dangerous and conservative cells (``counts``, by answer: ``confusion_counts``)
+    and, where a mark stands for a tile of ``blocks[code]`` cells a side (3: squares, 1: circles), the marks on ``ax``
+    beside them (reader r34c: "6,343 conservative (circles)" over 27 circles, the rule only in the legend)."""
+    dangerous, conservative = counts["invalid kept (dangerous)"], counts["valid rejected"]
+    if max(blocks.values()) == 1:
+        return f"{dangerous:,} dangerous cells (squares), {conservative:,} conservative (circles)"
+    marks = {str(m.get_label()): len(np.asarray(m.get_offsets())) for m in cell_marks(ax)}
+    return "\n".join(
+        f"{cells:,} {word} cells: {marks.get(label, 0)} {shape}, 1 per {k} x {k}-cell tile"
+        if cells
+        else f"0 {word} cells"
+        for cells, word, label, shape, k in (
+            (dangerous, "dangerous", "invalid kept (dangerous)", "squares", blocks[3]),
+            (conservative, "conservative", "valid rejected", "circles", blocks[1]),
+        )
+    )
