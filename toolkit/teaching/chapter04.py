@@ -377,6 +377,7 @@ def answer_figure(tables: Tables | None = None) -> Figure:
         spans=checker_scope.spans(tables),
         means=checker_scope.our_means(tables),
         names=SERIES,
+        floor=costs.floors(tables)["means"],
     )
 
 
