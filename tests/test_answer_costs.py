@@ -3,7 +3,7 @@
 from __future__ import annotations
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
-from toolkit.plots import answer
+from toolkit.plots import answer, query_ratios
 from toolkit.plots.alt import alt_text
 from toolkit.plots.answer import answer_ratios
 from toolkit.teaching import chapter04, checker_scope, costs, findings
@@ -21,7 +21,8 @@ def test_answer_ratios_draws_every_scenario_sampler_and_series_in_one_panel():
 def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_them():
     """Reader r33d, figure 1: the large markers compared our medians with the paper's means. With ``means`` the figure
     has two panels on one scale: above, the paper's squares beside our means, filled (like for like); below, our
-    medians, hollow, each with its whisker; a legend of three lines, one a series."""
+    medians, hollow, each with its whisker; a legend of three lines, one a series. Reader r34d: the means floor
+    hatched above (named first in the legend), and the hollow markers in a legend of their own under the figure."""
     rows, means = checker_scope.compact(), checker_scope.our_means()
     fig = answer_ratios(rows, tie=findings.TIE, means=means, spans=checker_scope.spans(), names=chapter04.SERIES)
     top, low = fig.axes
@@ -42,8 +43,14 @@ def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_th
     assert all(line.get_markerfacecolor() == "none" for line in marks(low).values())  # hollow: the second statistic
     assert all(line.get_markerfacecolor() != "none" for line in marks(top).values())
     assert len(low.collections) == 32 and not top.collections  # a whisker a median, none above
-    labels = [t.get_text() for legend in fig.legends for t in legend.get_texts()]
-    assert labels == list(chapter04.SERIES.values())  # three lines
+    labels = [[t.get_text() for t in legend.get_texts()] for legend in fig.legends]
+    assert labels[0] == list(chapter04.SERIES.values())  # three lines
+    assert labels[1] == list(chapter04.SERIES.values())[1:]  # the hollow markers, under the figure
+    hatched = answer_ratios(rows, tie=findings.TIE, means=means, names=chapter04.SERIES, floor=(0.84, 1.24))
+    top = hatched.axes[0]
+    assert [p.get_hatch() for p in top.patches].count(query_ratios.NOISE_HATCH) == 2  # below and above the tie band
+    assert hatched.legends[0].get_texts()[0].get_text() == "ratio-of-means floor, 0.84–1.24"
+    assert "hatched round the tie band, the ratio-of-means floor, 0.84–1.24: timing alone" in alt_text(hatched)
     said = alt_text(fig)
     assert "Above, means, Table 3's statistic: the paper's squares beside our two series' means, 48 points" in said
     assert "Below, our medians of each query's own ratio, hollow" in said and "32 points, 3 of them at or below" in said

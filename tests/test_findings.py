@@ -5,7 +5,7 @@ import numpy as np
 import pytest
 
 from toolkit.experiments import paper_numbers
-from toolkit.teaching import checker_scope, findings
+from toolkit.teaching import checker_scope, costs, findings
 
 
 def summary(totals: list[float]) -> dict:
@@ -111,7 +111,7 @@ def test_ratio_table_gives_each_recorded_ratio_its_verdict():
 
 def test_throughput_table_never_says_cheaper_beside_a_cost_above_one():
     measured = {"3DC-7": {"ratio": 0.5, "exact_cfg_per_s": 2e6, "fcl_cfg_per_s": 1e5, "learned_cfg_per_s": 1e6}}
-    line = findings.throughput_table(measured, 10_000).splitlines()[2]
+    line = costs.throughput_table(measured, 10_000).splitlines()[2]
     assert line == "| 3DC-7 | network dearer (2.00) | network cheaper (0.10) | 2,000,000 / 100,000 / 1,000,000 |"
 
 

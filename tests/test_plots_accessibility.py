@@ -254,6 +254,7 @@ def gallery() -> dict[str, Figure]:
             tie=0.1,
             spans={"2DS, ours": {"BS": (1.2, 1.8), "OB": (0.9, 1.3), "G": (1.1, 1.5), "BT": (1.0, 1.4)}},
             means={"2DS, ours": {"BS": 1.4, "OB": 1.0, "G": 1.2, "BT": 0.85}},  # two panels: means, then medians
+            floor=(0.84, 1.24),  # reader r34d: the means floor hatched in the means panel
         ),
         "query_ratios.own_ratios": query_ratios.own_ratios(
             {

@@ -7,7 +7,9 @@ Algorithm 1 for each series of ``{"<scenario>, <series>": {sampler: ratio}}`` (t
 (compiled in 3D, numpy in 2DS) and with python-fcl on both sides), on a log axis against the line at 1 and the tie
 band. With ``means`` (our series' ratios of mean times, Table 3's statistic) it draws two panels (reader r33d: the
 large markers compared our medians with the paper's means): above, like for like, the paper's squares beside our
-means, filled; below, our medians of each query's own ratio, hollow, each with its middle half.
+means, filled, with ``floor`` (how far timing alone moved a ratio of means) hatched round the tie band (reader r34d:
+0.86 read as a clear saving); below, our medians of each query's own ratio, hollow, each with its middle half, in a
+legend of their own under the figure.
 """
 
 from __future__ import annotations
@@ -20,13 +22,14 @@ from matplotlib.figure import Figure
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, series_style
+from toolkit.plots.query_ratios import NOISE_HATCH, NOISE_WORDS
 from toolkit.plots.timings import band_words, log_ticks
 
 MARKERS = ("s", "o", "^")  # a series' marker, beside its colour
 SPREAD = 0.25  # a series' offset from its sampler's tick: a sampler's three series side by side, each well inside its
 # sampler's slot (reader r33d: at 0.28 the paper's squares seemed to sit on the dotted lines between samplers)
 MEANS_TITLE = "Means, Table 3's statistic: the paper's squares beside ours"
-MEDIANS_TITLE = "Ours by the median query (hollow), whiskers: the middle half of the queries' ratios"
+MEDIANS_TITLE = "Ours by the median query (hollow), whiskers: the queries' middle half"
 
 
 def answer_ratios(
@@ -36,12 +39,14 @@ def answer_ratios(
     names: dict[str, str] | None = None,
     spans: dict[str, dict[str, tuple[float, float]]] | None = None,
     means: dict[str, dict[str, float]] | None = None,
+    floor: tuple[float, float] | None = None,
 ) -> Figure:
     """A group of four samplers per scenario, one point per series in each, the tie band ``1 ± tie`` shaded, and the
     series named in a legend above, a line each (``names`` renames them); ``spans``: a whisker per point of the rows
     it names (the middle half of the queries' ratios). Without ``means``, one panel of ``rows``; with ``means`` (by
     the labels of the rows they stand beside), two: the rows that ``means`` does not name (the paper's) beside
-    ``means``, filled, and under them the rows it names, hollow, with their whiskers."""
+    ``means``, filled, with ``floor`` hatched round the tie band, and under them the rows it names, hollow, with their
+    whiskers and their own legend."""
     scenarios = list(dict.fromkeys(label.split(", ", 1)[0] for label in rows))
     series = list(dict.fromkeys(label.split(", ", 1)[1] for label in rows))
     names = names or {}
@@ -61,6 +66,8 @@ def answer_ratios(
     for ax, (shown, whiskers, hollow) in zip(axes, panels):
         ax.axhspan(1 - tie, 1 + tie, facecolor=COLORS["shade"], edgecolor=COLORS["reference"], alpha=0.9, zorder=0)
         ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
+        if floor and means and ax is axes[0]:
+            _floor(ax, floor, tie)
         drawn, found = _series(ax, shown, scenarios, series, names, whiskers, hollow)
         _groups(ax, scenarios)
         every += drawn
@@ -74,7 +81,29 @@ def answer_ratios(
         ax.set_xlabel("sampler, grouped by scenario", labelpad=24)  # under the scenarios' names
     handles, labels = axes[0].get_legend_handles_labels()
     fig.legend(handles, labels, loc="outside upper center", ncol=1, fontsize=9, frameon=False)  # a line a series
-    return describe(fig, _text(tie, len(series), counted, spans, means), parts)
+    if means:  # reader r34d: the hollow markers had no legend
+        handles, labels = axes[1].get_legend_handles_labels()
+        fig.legend(handles, labels, loc="outside lower center", ncol=1, fontsize=9, frameon=False)
+    return describe(fig, _text(tie, len(series), counted, spans, means, floor), parts)
+
+
+def _floor(ax, floor: tuple[float, float], tie: float) -> None:
+    """``floor`` hatched from its low end to the tie band and from the band to its high end, its ends dotted, named
+    once in the legend as the results page names it (:data:`toolkit.plots.query_ratios.NOISE_WORDS`)."""
+    label = NOISE_WORDS.format(low=floor[0], high=floor[1]).split(":")[0]
+    for k, (low, high) in enumerate(((floor[0], 1 - tie), (1 + tie, floor[1]))):
+        ax.axhspan(
+            low,
+            high,
+            facecolor="none",
+            edgecolor=COLORS["reference"],
+            hatch=NOISE_HATCH,
+            linewidth=0,
+            zorder=0,
+            label=label if k == 0 else None,
+        )
+    for y in floor:
+        ax.axhline(y, color=COLORS["reference"], linestyle=":", linewidth=1.0, zorder=0.5)
 
 
 def _title(ax, means) -> str:
@@ -82,7 +111,9 @@ def _title(ax, means) -> str:
     return ax.get_title() if means else "ratios"
 
 
-def _text(tie: float, series: int, counted: list[tuple[int, int]], spans, means) -> str:
+def _text(
+    tie: float, series: int, counted: list[tuple[int, int]], spans, means, floor: tuple[float, float] | None = None
+) -> str:
     """The figure's text alternative, each panel's points counted from its data."""
     said = (
         "Inside the paper's Algorithm 1, total time with prediction over time without, per scenario and sampler, "
@@ -96,7 +127,9 @@ def _text(tie: float, series: int, counted: list[tuple[int, int]], spans, means)
     (n_top, below_top), (n_low, below_low) = counted
     return (
         f"{said}, in two panels. Above, means, Table 3's statistic: the paper's squares beside our two series' means, "
-        f"{n_top} points, {below_top} of them at or below {1 - tie:.2f}. Below, our medians of each query's own "
+        f"{n_top} points, {below_top} of them at or below {1 - tie:.2f}"
+        + (f"; hatched round the tie band, the {NOISE_WORDS.format(low=floor[0], high=floor[1])}" if floor else "")
+        + f". Below, our medians of each query's own "
         f"ratio, hollow, with whiskers spanning the middle half of the queries' ratios: {n_low} points, {below_low} of "
         f"them at or below {1 - tie:.2f}."
     )

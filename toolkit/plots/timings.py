@@ -21,6 +21,7 @@ from toolkit.util.verdicts import per_query_ratios
 MODES = ("without", "with")
 STAGE_KEYS = ("sampling_s", "connection_s", "query_s")  # PRM stats, in the order the planner spends them
 STAGE_HATCHES = ("", "//", "..", "xx")  # sampling, connection, query, other: told apart without colour
+STAGE_COLORS = tuple(CATEGORICAL[k] for k in (0, 1, 5, 3))  # reader r34d: query white, not sky blue beside blue
 STAGE_LABELS = {
     "sampling_s": "sampling (S, S')",
     "connection_s": "connection (edges)",
@@ -151,7 +152,7 @@ def _draw_stage_bars(ax, x: np.ndarray, table: dict[str, np.ndarray]) -> np.ndar
             BAR,
             bottom=bottom.ravel(),
             label=STAGE_LABELS[key],
-            color=CATEGORICAL[k],
+            color=STAGE_COLORS[k],
             hatch=STAGE_HATCHES[k],  # a second cue besides the colour
             edgecolor=COLORS["ink"],
             linewidth=0.5,

@@ -331,7 +331,7 @@ def _paper_mlp(tables: Tables | None = None) -> str:
 def _call_costs(this_run: dict[str, float], tables: Tables | None = None) -> str:
     """A network call's cost over the exact check's, per recorded run and ``this_run``, a Markdown block."""
     throughput = {p: recorded.table(p, "Checker throughput", tables) for p in ("paper", "strong", recorded.ALGORITHM_1)}
-    costs = {
+    dearer = {
         **{
             f"`{preset}` run": {name: 1 / recorded.ours(rows[key]["learned / exact"]) for name, key in SCENARIOS_4}
             for preset, rows in throughput.items()
@@ -340,9 +340,9 @@ def _call_costs(this_run: dict[str, float], tables: Tables | None = None) -> str
     }
     return (
         "A network call's cost per configuration over the default exact check's (below 1 the network is the cheaper "
-        "check; between 0.90 and 1.10, close: can't tell): the recorded runs (`docs/results.md`'s throughput tables; "
+        "check; between 0.90 and 1.10, about equal): the recorded runs (`docs/results.md`'s throughput tables; "
         "the network's cost, and so this ratio, moves from run to run and machine to machine) and this run's section "
-        "4:\n\n" + findings.cost_table(costs, tie=findings.TIE)
+        "4:\n\n" + costs.call_cost_table(dearer, tie=findings.TIE)
     )
 
 

@@ -14,11 +14,12 @@ from __future__ import annotations
 
 import re
 from collections import Counter
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass
 
 from toolkit.teaching import recorded
 from toolkit.teaching.recorded import Tables
-from toolkit.util.verdicts import COSTS, SAVES, time_verdict
+from toolkit.util.verdicts import CLOSE, COSTS, NEAR, SAVES, cost_verdict, time_verdict
 
 DEAR = 1.25  # a median ratio at or above this: with prediction 25 % or more above the time without
 NAMES = {"2ds": "2DS", "3dc7": "3DC-7", "3dc9": "3DC-9", "3do": "3DO"}
@@ -156,19 +157,44 @@ def middle_halves(preset: str, tables: Tables | None = None) -> dict[str, dict[s
 NOISE_EDGE = 2  # a median within this many times timing's own reach of 1 is "at the noise edge" (docs/results.md)
 
 
-def timing_reach(tables: Tables | None = None) -> float:
-    """The furthest that timing one computation twice moved a median of each query's own ratio from 1 (the table
-    "timed twice" of :data:`toolkit.teaching.recorded.ALGORITHM_1`; ``tables`` without that run borrow the record's,
-    as the results page does)."""
+def _timed_twice(tables: Tables | None = None) -> list[list[str]]:
+    """The rows of the table "timed twice" of :data:`toolkit.teaching.recorded.ALGORITHM_1` (scenario, sampler, ratio
+    of the means, ratio of the medians, each query's own ratio); ``tables`` without that run borrow the record's, as
+    the results page does."""
     runs = [found for found in (tables or {}, recorded.packaged()) if recorded.ALGORITHM_1 in found]
     run = runs[0][recorded.ALGORITHM_1]
-    rows = next(found for heading, found in run.items() if "timed twice" in heading.lower())["rows"]
-    return max(abs(float(row[4].split()[0]) - 1) for row in rows)
+    return next(found for heading, found in run.items() if "timed twice" in heading.lower())["rows"]
+
+
+def _reach(tables: Tables | None, column: int) -> tuple[float, float]:
+    values = [float(row[column].split()[0]) for row in _timed_twice(tables)]
+    return min(values), max(values)
+
+
+def timing_reach(tables: Tables | None = None) -> float:
+    """The furthest that timing one computation twice moved a median of each query's own ratio from 1 (the table
+    "timed twice", :func:`_timed_twice`)."""
+    return max(abs(v - 1) for v in _reach(tables, 4))
 
 
 def noise_edge(tables: Tables | None = None) -> float:
     """How far from 1 the noise edge reaches: :data:`NOISE_EDGE` times :func:`timing_reach` (the results page's)."""
     return NOISE_EDGE * timing_reach(tables)
+
+
+def floors(tables: Tables | None = None) -> dict[str, tuple[float, float]]:
+    """The band inside which a ratio is no clear evidence, per statistic, as the results page draws them (its table of
+    bands): ``"own"``, the median of each query's own ratio, within :func:`noise_edge` of 1; ``"means"`` and
+    ``"medians"``, a ratio of the two modes' mean or median times, as far as timing one computation twice moved it
+    (reader r34d: a ratio of means was marked by the median's band)."""
+    reach = noise_edge(tables)
+    return {"own": (1 - reach, 1 + reach), "means": _reach(tables, 2), "medians": _reach(tables, 3)}
+
+
+def statistic(label: str) -> str:
+    """Which of :func:`floors` judges a table row labelled ``label``: "ratio of medians" rows a ratio of the two
+    medians, other "medians" rows the median of each query's own ratio, every other row of ours a ratio of means."""
+    return "medians" if "ratio of medians" in label else "own" if "medians" in label else "means"
 
 
 def edge_cells(preset: str, tables: Tables | None = None) -> list[tuple[str, str, float]]:
@@ -195,13 +221,99 @@ _VERDICT_CELL = re.compile(rf"({SAVES}|{COSTS})<br>\((\d+\.\d+)\)")
 
 def marked(table: str, tables: Tables | None = None) -> str:
     """``table`` (a narrow :func:`toolkit.teaching.findings.ratio_table`) with :data:`MARK` after each "saves time" or
-    "costs time" of our rows (not the paper's) whose ratio lies less than :func:`noise_edge` from 1: the verdict word
-    stays, the mark says timing alone could have moved it that far."""
-    reach = noise_edge(tables)
+    "costs time" of our rows (not the paper's) whose ratio lies inside its statistic's band of :func:`floors`
+    (:func:`statistic` of the row's label): the verdict word stays, the mark says timing alone could have moved it
+    that far."""
+    bands = floors(tables)
 
-    def mark(found: re.Match) -> str:
-        inside = abs(float(found[2]) - 1) < reach
-        return f"{found[1]}{MARK if inside else ''}<br>({found[2]})"
+    def marker(kind: str) -> Callable[[re.Match], str]:
+        low, high = bands[kind]
+
+        def mark(found: re.Match) -> str:  # the results page: the noise edge strict, a floor as measured inclusive
+            r = float(found[2])
+            inside = low < r < high if kind == "own" else low <= r <= high
+            return f"{found[1]}{MARK if inside else ''}<br>({found[2]})"
+
+        return mark
 
     rows = table.splitlines()
-    return "\n".join(row if "the paper" in row.split("|")[1] else _VERDICT_CELL.sub(mark, row) for row in rows)
+    return "\n".join(
+        row
+        if row.count("|") < 3 or "the paper" in row.split("|")[1]
+        else _VERDICT_CELL.sub(marker(statistic(row.split("|")[1])), row)
+        for row in rows
+    )
+
+
+def over_sampling(preset: str, tables: Tables | None = None) -> list[tuple[str, float, float]]:
+    """``preset``'s cells (inside Algorithm 1) whose total time by means saved more than all their sampling took
+    without prediction, which is all that skipping the samples' checks can save (review r34d: the fast-checker run
+    has such cells too): ``[("3DC-9 OB", share of the mean query saved, sampling's share of it), ...]``."""
+    shares = shares_by_cell(preset, tables)
+    return [
+        (f"{NAMES[key]} {s}", saved, shares[key, s])
+        for key in dict.fromkeys(k for k, _ in shares)
+        for s, saved in recorded.improvements(preset, key, "total", tables).items()
+        if time_verdict(1 - saved) == SAVES and saved > shares[key, s]
+    ]
+
+
+def saved_counts(preset: str, tables: Tables | None = None) -> dict[str, tuple[int, int]]:
+    """How many of ``preset``'s 16 cells inside Algorithm 1 saved time, by the ratio of mean times and by the median of
+    each query's own ratio, each with how many of them lie inside their statistic's band of :func:`floors` (chapter
+    04 marks them :data:`MARK`): ``{"means": (3, 2), "medians": (0, 0)}``."""
+    bands = floors(tables)
+    by_means = [
+        round(1 - saved, 2)
+        for key in recorded.query_ratios(preset, tables)
+        for saved in recorded.improvements(preset, key, "total", tables).values()
+        if time_verdict(1 - saved) == SAVES
+    ]
+    medians = [m for row in middle_halves(preset, tables).values() for m, _, _ in row.values()]
+    return {
+        "means": (len(by_means), sum(bands["means"][0] <= r <= bands["means"][1] for r in by_means)),
+        "medians": (sum(time_verdict(m) == SAVES for m in medians), at_edge(preset, tables)[SAVES]),
+    }
+
+
+ABOUT = "about equal"  # chapter 04's word for a cost ratio inside the tie band (reader r34d: not "can't tell")
+
+
+def cost_word(ratio: float, tie: float = CLOSE) -> str:
+    """:func:`cost_verdict`, with :data:`ABOUT` for a ratio inside the band: chapter 04 keeps "can't tell" for one
+    meaning, a few queries that cannot decide."""
+    verdict = cost_verdict(ratio, tie)
+    return ABOUT if verdict == NEAR else verdict
+
+
+def throughput_table(measured: Mapping[str, Mapping[str, float]], batch: int, tie: float = CLOSE) -> str:
+    """Markdown: per scenario of ``{scenario: bench.throughput result}``, the network's cost per configuration
+    against each exact checker's (network / exact) with its verdict, then the three checkers' configurations a
+    second."""
+    rows = [
+        f"| scenario, {batch:,} a call | cost, network / default exact | cost, network / python-fcl "
+        "| configurations a second: default exact / python-fcl / network |",
+        "| --- | --- | --- | --- |",
+    ]
+    for name, m in measured.items():
+        exact, fcl = 1 / m["ratio"], m["fcl_cfg_per_s"] / m["learned_cfg_per_s"]  # cost ratios, network / exact
+        rows.append(
+            f"| {name} | {cost_word(exact, tie)} ({exact:.2f}) | {cost_word(fcl, tie)} ({fcl:.2f}) "
+            f"| {m['exact_cfg_per_s']:,.0f} / {m['fcl_cfg_per_s']:,.0f} / {m['learned_cfg_per_s']:,.0f} |"
+        )
+    return "\n".join(rows)
+
+
+def call_cost_table(runs: Mapping[str, Mapping[str, float | None]], tie: float = CLOSE) -> str:
+    """Markdown: one column per run of ``{run: {scenario: cost per configuration, network / default exact}}`` (None:
+    not timed in that run), one row per scenario, each ratio with its verdict (:func:`cost_word`)."""
+    scenarios = list(dict.fromkeys(name for ratios in runs.values() for name in ratios))
+    rows = ["| scenario | " + " | ".join(runs) + " |", "| --- |" + " --- |" * len(runs)]
+    for name in scenarios:
+        cells = [ratios.get(name) for ratios in runs.values()]
+        rows.append(
+            f"| {name} | "
+            + " | ".join("not timed" if r is None else f"{cost_word(r, tie)} ({r:.2f})" for r in cells)
+            + " |"
+        )
+    return "\n".join(rows)

@@ -212,39 +212,6 @@ def ratio_table(
     return "\n".join(rows)
 
 
-def throughput_table(measured: Mapping[str, Mapping[str, float]], batch: int, tie: float = CLOSE) -> str:
-    """Markdown: per scenario of ``{scenario: bench.throughput result}``, the network's cost per configuration
-    against each exact checker's (network / exact) with its verdict, then the three checkers' configurations a
-    second."""
-    rows = [
-        f"| scenario, {batch:,} a call | cost, network / default exact | cost, network / python-fcl "
-        "| configurations a second: default exact / python-fcl / network |",
-        "| --- | --- | --- | --- |",
-    ]
-    for name, m in measured.items():
-        exact, fcl = 1 / m["ratio"], m["fcl_cfg_per_s"] / m["learned_cfg_per_s"]  # cost ratios, network / exact
-        rows.append(
-            f"| {name} | {cost_verdict(exact, tie)} ({exact:.2f}) | {cost_verdict(fcl, tie)} ({fcl:.2f}) "
-            f"| {m['exact_cfg_per_s']:,.0f} / {m['fcl_cfg_per_s']:,.0f} / {m['learned_cfg_per_s']:,.0f} |"
-        )
-    return "\n".join(rows)
-
-
-def cost_table(runs: Mapping[str, Mapping[str, float | None]], tie: float = CLOSE) -> str:
-    """Markdown: one column per run of ``{run: {scenario: cost per configuration, network / default exact}}`` (None:
-    not timed in that run), one row per scenario, each ratio with its verdict (:func:`cost_verdict`)."""
-    scenarios = list(dict.fromkeys(name for ratios in runs.values() for name in ratios))
-    rows = ["| scenario | " + " | ".join(runs) + " |", "| --- |" + " --- |" * len(runs)]
-    for name in scenarios:
-        cells = [ratios.get(name) for ratios in runs.values()]
-        rows.append(
-            f"| {name} | "
-            + " | ".join("not timed" if r is None else f"{cost_verdict(r, tie)} ({r:.2f})" for r in cells)
-            + " |"
-        )
-    return "\n".join(rows)
-
-
 def crossover_table(results: Mapping, tie: float = CLOSE) -> str:
     """Markdown: every point of a ``toolkit.experiments.crossover`` run (variables by their short names), the
     network's cost per configuration against the default exact checker's and python-fcl's with verdicts, then the
