@@ -273,10 +273,9 @@ def _beyond_sampling() -> str:
 
 
 def _more(moved: float, longer: str = "") -> str:
-    """The closing's folded tables: the lazy PRM, the paper's recipe and Algorithm 1's ratio of two medians, each
-    ratio of medians read against ``moved``, how far timing the same computation twice moved one; first what the
-    closing's short paragraph leaves out (reader r34e, lift 5): the paper's rows are another measurement, and
-    ``longer`` (:func:`_longer`)."""
+    """The closing's folded tables: the lazy PRM, the paper's recipe and Algorithm 1's ratio of two medians, each read
+    against ``moved``, how far timing the same computation twice moved one; first what the closing's paragraph
+    leaves out (reader r34e, lift 5): the paper's rows are another measurement, and ``longer``."""
     lazy = recorded.median_ratios("strong")[SCENARIO]["total"]  # ratio of the medians, vs the lazy PRM
     recipe = recorded.median_ratios("paper")[SCENARIO]["total"]
     of_medians = recorded.median_ratios(COMPILED)[SCENARIO]["total"]  # Algorithm 1, a ratio of two medians
@@ -292,7 +291,7 @@ def _more(moved: float, longer: str = "") -> str:
         f"for the rows below that are ratios of medians, read only a ratio further than {moved:.0%} from 1. The two "
         f"lazy-PRM rows ({span(lazy)}; {span(recipe)}) {'all are' if lazy_beyond else 'are not all'}; in the last "
         f'row a ratio no further than that from 1 reads "{NOISE}". Against the lazy PRM, the fastest exact planner a '
-        f"network can drive ({TIE_WORDS}):\n\n"
+        f"network can drive, with a third training of `strong` ({run_name('strong')}; {TIE_WORDS}):\n\n"
         + ratio_table(
             {
                 "3DC-7, `strong` preset, medians, vs lazy PRM": lazy,
