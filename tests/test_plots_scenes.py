@@ -253,6 +253,7 @@ def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose
     overview, start, end = fig.axes
     assert overview.get_title() == f"the whole workspace: {len(workspace.boxes)} blocks"
     assert [start.get_title(), end.get_title()] == ["start, close up, valid", "end, close up, in collision"]
+    assert (start.elev, start.azim) == (end.elev, end.azim)  # reader r34e: one camera, so that the poses compare
     assert to_rgba(links(start)[0].get_facecolor()[0], None)[:3] == to_rgba(VALID_COLOR)[:3]
     assert to_rgba(links(end)[0].get_facecolor()[0], None)[:3] == to_rgba(INVALID_COLOR)[:3]
     drawn = {c.get_label(): len(c.get_offsets()) for c in overview.collections if c.get_label().startswith("sample")}
@@ -400,8 +401,10 @@ def test_a_stills_overview_stars_mistakes_as_often_as_the_model_makes_them(cross
     stars = drawn["sample, model wrong"] / drawn["sample, valid"]
     assert stars == pytest.approx((wrong & valid).sum() / valid.sum(), abs=0.05)
     extra = int((dangerous & ~kept).sum())
-    assert overview.get_title().endswith(  # reader r29e: "(11 more)" was cryptic
-        f"1 sample in 3 drawn\nand all 23 dangerous mistakes ({extra} added to the 1-in-3 draw)"
+    assert extra > 0  # reader r34e: the title counts both kinds, so 13 drawn large do not outnumber 97 drawn 1 in 20
+    conservative = int((wrong & valid).sum())
+    assert overview.get_title().endswith(
+        f"1 sample in 3 drawn\n23 dangerous mistakes, all drawn; {conservative} conservative, 1 in 3"
     )
     assert "1 sample in 3 of every kind drawn, and all the dangerous mistakes" in alt_text(fig)
 

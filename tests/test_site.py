@@ -547,6 +547,15 @@ def test_the_index_gives_one_statistic_a_line_behind_its_answer():
         "Below the grey band a cell saved time: 2 of 16 hollow points (python-fcl) beyond the hatched noise edge, 1 "
         f"inside it, and {own(compiled)} filled (compiled checker)."
     ) in answer
+    # reader r34e, home 1: the answer's first clause has its evidence in sight, right under it, not only in the fold
+    evidence = (
+        f"By mean times, sampling got 10 % or more faster with our network in {by_means(fcl, 'sampling')} of 16 cells "
+        f"with python-fcl and in {by_means(compiled, 'sampling')} of 16 with the compiled checker. A whole query did, "
+        f"by each query's own ratio, in {own(fcl)} (one at the noise edge) and {own(compiled)}."
+    )
+    assert evidence in answer and answer.index(evidence) < answer.index("Terms used in the figure.")
+    # reader r34e, home figure 1: the caption says what a whisker is
+    assert "A whisker spans the middle half of the cell's 100 queries" in answer
     # the answer: sampling saves where the check is slow (every cell), seldom where it is fast, a whole query rarely
     assert by_means(fcl, "sampling") == 16 and by_means(compiled, "sampling") <= 2
     assert max(by_means(fcl, "total"), by_means(compiled, "total"), own(fcl), own(compiled)) <= 3

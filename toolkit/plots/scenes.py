@@ -100,7 +100,8 @@ def scene_still(
     moved = False  # a z axis moved, maybe beside the other view's: the panels further apart
     for ax, (label, q) in zip(panels, views):
         ok = valid.get(label)
-        near, angles = close_up(ax, robot, q, workspace, color=colors[label], margin=margin)
+        camera = next(iter(seen.values()))[2] if seen else None  # reader r34e: each close-up seen from the first's
+        near, angles = close_up(ax, robot, q, workspace, color=colors[label], margin=margin, view=camera)
         hide = None if samples is None else over_robot(ax, robot, q, samples[0])  # (N,) marks over the robot
         drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE, hide=hide)
         seen.setdefault(label, (drawn, near, angles))

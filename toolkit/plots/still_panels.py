@@ -79,6 +79,7 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
         add_box_3d(ax, aabb_corners(lo, hi), **styles[bool(dark)], **BLOCK_STYLE)
     step = 1 if samples is None else overview_step(len(samples[0]), len(workspace.boxes))
     extra = 0  # dangerous mistakes drawn beyond the every k-th
+    conservative = 0 if samples is None else int((samples[1].get("model wrong", 0) & samples[1]["valid"]).sum())
     if samples is not None:  # every k-th of every kind alike, light: a fair share (reader r19c: every mistake added
         keep = np.arange(len(samples[0])) % step == 0  # (N,) to every k-th right one made stars look 40 % of marks)
         dangerous = dangerous_mask(samples[1])  # (N,) and every dangerous one, the rare kind (reader r27e)
@@ -115,7 +116,7 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
     few_ticks(ax)
     drawn = f", 1 sample in {step} drawn" if step > 1 else ""
     every = 0 if samples is None else int(dangerous_mask(samples[1]).sum())  # reader r29e: "(11 more)" was cryptic
-    drawn += f"\nand all {every} dangerous mistakes ({extra} added to the 1-in-{step} draw)" if extra else ""
+    drawn += f"\n{every} dangerous mistakes, all drawn; {conservative} conservative, 1 in {step}" if extra else ""
     ax.set_title(f"the whole workspace: {len(workspace.boxes)} blocks{drawn}", fontsize=10)
 
 
@@ -164,12 +165,21 @@ def overview_step(n: int, blocks: int = 0) -> int:
 
 
 def close_up(
-    ax, robot: BoxRobot, q: np.ndarray, workspace: Workspace, *, color: str, margin: float, turns=CLOSE_UP_TURNS
+    ax,
+    robot: BoxRobot,
+    q: np.ndarray,
+    workspace: Workspace,
+    *,
+    color: str,
+    margin: float,
+    turns=CLOSE_UP_TURNS,
+    view: tuple[float, float] | None = None,
 ) -> tuple[int, tuple[float, float]]:
     """The robot at ``q (dof,)`` in ``color`` among the blocks within ``margin`` of it (their parts in that window, one
     within :data:`NEAR` up to ``margin`` taller), seen from :func:`view_angles` turned by the first of ``turns``
     (degrees) that puts the fewest blocks on a line of sight through a link (:func:`clear_turn`). Returns how many
-    blocks lie within :data:`NEAR` of a link's box, and the camera's (elevation, azimuth)."""
+    blocks lie within :data:`NEAR` of a link's box, and the camera's (elevation, azimuth); ``view`` sets that camera
+    (reader r34e: a still's second close-up seen from its first's, so that the two poses compare)."""
     q = np.asarray(q, dtype=float)
     draw_robot(ax, robot, q[None], colors=[color], view="3d", margin=margin)  # the links; the blocks below
     aabbs = robot.link_aabbs(q[None])[0]  # (L, 2, 3)
@@ -180,8 +190,11 @@ def close_up(
     hi[2] = min(z[:, 1].max(initial=hi[2]), hi[2] + margin, workspace.upper[2])  # like a thin slab: more of it
     ax.set(xlim=(lo[0], hi[0]), ylim=(lo[1], hi[1]), zlim=(lo[2], hi[2]))
     ax.set_box_aspect(hi - lo, zoom=1.15)  # the robot larger in its panel: mplot3d leaves wide margins
-    elevation, azimuth = view_angles(robot, q)  # turned where a block stands on a line of sight through a link
-    azimuth += clear_turn(robot, q, workspace, margin, turns, (elevation, azimuth))  # (reader r33e)
+    if view is None:
+        elevation, azimuth = view_angles(robot, q)  # turned where a block stands on a line of sight through a link
+        azimuth += clear_turn(robot, q, workspace, margin, turns, (elevation, azimuth))  # (reader r33e)
+    else:
+        elevation, azimuth = view
     ax.view_init(elev=elevation, azim=azimuth)
     toward = _toward_camera(elevation, azimuth)  # (3,)
     ax.computed_zorder = False  # drawn in the order set below, not by mplot3d's guess of each collection's depth
