@@ -115,7 +115,7 @@ def draw_clearance(clearance: np.ndarray, ax, along: np.ndarray) -> None:
     ax.plot(along, clearance, color=COLORS["ink"], linewidth=1.2, gid="clearance")
     ax.fill_between(along, 0.0, clearance, color=COLORS["shade"])
     ax.set_ylim(bottom=0.0)
-    ax.set_ylabel("clearance")
+    ax.set_ylabel("clearance\n(workspace units)")
 
 
 def draw_probability(p: np.ndarray, threshold: float, ax, along: np.ndarray) -> None:
