@@ -142,16 +142,22 @@ def claim_markdown(text: str) -> str:
     return f"{lead}\n\n{picture}\n\n{caption} {noise_line(tables)}{edge_said}\n\n{described}"
 
 
-def means_not_verdict(tables: Tables) -> str:
-    """Over Figure 2: its points are means, while the page's verdict on the paper's claim reads each query's own ratio
-    (:func:`accurate_in_algorithm_1`); the `strong` cell where the two statistics lie furthest apart shows it."""
+def furthest_apart(tables: Tables) -> tuple[str, str, float, float]:
+    """The `strong` cell (compiled checker) whose ratio of means and median of each query's own ratio lie furthest
+    apart: ``(scenario, sampler, ratio of means, median ratio)``, the example of how far a mean can stray."""
     medians = recorded.query_ratios(recorded.ALGORITHM_1, tables)
     cells = [
         (NAMES.get(s, s), sampler, 1 - saved, medians[s][sampler])
         for s in medians
         for sampler, saved in recorded.improvements(recorded.ALGORITHM_1, s, recorded=tables).items()
     ]
-    name, sampler, mean, median = max(cells, key=lambda c: abs(math.log(c[2] / c[3])))
+    return max(cells, key=lambda c: abs(math.log(c[2] / c[3])))
+
+
+def means_not_verdict(tables: Tables) -> str:
+    """Over Figure 2: its points are means, while the page's verdict on the paper's claim reads each query's own ratio
+    (:func:`accurate_in_algorithm_1`); the cell :func:`furthest_apart` finds shows it."""
+    name, sampler, mean, median = furthest_apart(tables)
     return (
         " Figures 2 and 3 show means, Table 3's statistic; the verdict on the paper's claim reads each query's own "
         f"ratio (Figure 1): the `strong` network's {name} {sampler}, for one, is {mean:.2f} by means here and "

@@ -14,7 +14,6 @@ page's rule, chapter 04's (:mod:`tools.results_words`), and single cells against
 
 from __future__ import annotations
 
-import math
 import sys
 from typing import NamedTuple
 
@@ -34,6 +33,7 @@ from tools.results_figures import (
     claim_figure,
     claim_markdown,
     figure_markdown,
+    furthest_apart,
     table3_figure,
 )
 from tools.results_findings import (
@@ -46,7 +46,7 @@ from tools.results_findings import (
 )
 from tools.results_networks import cae_unseen
 from tools.results_noise import NOISE_EDGE, bands, own_intervals, reach_of
-from tools.results_words import NAMES, change, counted, span
+from tools.results_words import change, counted, span
 
 BEGIN = "<!-- summary: written by `python -m tools.results_summary` from the tables below; edit it there -->"
 END = "<!-- end of the summary -->"
@@ -138,15 +138,9 @@ def fast_means(tables: Tables) -> list[float]:
 
 
 def means_apart(tables: Tables) -> str:
-    """The `strong` cell (compiled checker) whose ratio of means and median of each query's own ratio lie furthest
-    apart (reader r34f, item 2: Figure 2's example, moved into the lead)."""
-    medians = recorded.query_ratios(recorded.ALGORITHM_1, tables)
-    cells = [
-        (NAMES.get(s, s), sampler, 1 - saved, medians[s][sampler])
-        for s in medians
-        for sampler, saved in recorded.improvements(recorded.ALGORITHM_1, s, recorded=tables).items()
-    ]
-    name, sampler, mean, median = max(cells, key=lambda c: abs(math.log(c[2] / c[3])))
+    """The lead's example of a mean pulled by a few slow queries (reader r34f, item 2), Figure 2's
+    (:func:`tools.results_figures.furthest_apart`)."""
+    name, sampler, mean, median = furthest_apart(tables)
     return (
         f"with our compiled checker, {name} {sampler} is {mean:.2f} by means and {median:.2f} by each query's own "
         "ratio."
