@@ -920,7 +920,8 @@ def test_reader_r34g_one_cost_per_check_equal_call_sizes_and_the_paper_s_total_t
     assert "in large calls (20,000 configurations a call, the network's 10,000)" in LEAD
     assert "each run the median of its 5 rounds, and the table gives the median of those runs" in flat
     key = "strong --planner paper"
-    cells = (v for s in recorded.table(key, "time improvement") for v in recorded.improvements(key, s, "sampling").values())
+    scenarios = recorded.table(key, "time improvement")
+    cells = (v for s in scenarios for v in recorded.improvements(key, s, "sampling").values())
     sampling = [change(1 - v) for v in cells]
     assert f"by means, sampling lost 10 % or more in {sampling.count('more time')} of 16 cells" in PREDICTION
     paper = [v for s in IMPROVEMENT for v in IMPROVEMENT[s]["total"].values()]
