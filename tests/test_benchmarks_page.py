@@ -817,8 +817,13 @@ def test_reader_r33g_slips_read_from_the_page_s_tables_and_the_sweep_s_record():
     given = f"give the network itself {net:.2f} µs a configuration in the sweep and {there} µs in the table"
     assert given in maintainers
     assert "the network and an exact check cost the same order in large calls, a few tenths of a µs" in flat
-    assert "Dotted strip: calls of the sizes a network could answer on 3DC-9" in flat  # the alt text is the figure's
-    assert "RRT-Connect's, 8–56 (no network drives RRT-Connect;" in flat
+    # reader r34g, benchmarks 3: the dotted strip is a round's samples, 50-400, named as the figure's legend names it
+    from toolkit.plots.crossover import CALLS_NAME, PLANNER_CALLS
+
+    low, high = PLANNER_CALLS
+    assert f"the dotted strip, {low}–{high}: {CALLS_NAME}, the calls a network answers" in flat
+    assert f"{CALLS_NAME}, the calls a network answers, {low} to {high} configurations.](crossover.png)" in flat
+    assert "8–400" not in flat and "8–56" not in flat
     assert "No network drives RRT-Connect." in RACE
     assert "**Against our compiled checker, by the median query, no; against python-fcl" in flat
     assert "compiled exact check (timed idle, in large calls), so" in flat  # reader r34g, lift 1: the load in the fold
