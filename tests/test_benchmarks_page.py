@@ -17,6 +17,8 @@ LEAD = " ".join(PAGE.partition("**In short**")[2].partition("\n\n")[0].split()) 
 PREDICTION = " ".join(PAGE.partition("## Does prediction make a planner faster?")[2].partition("<details")[0].split())
 RACE = (Path(__file__).resolve().parents[1] / "docs" / "planner_race.md").read_text()  # review r28f, item 1: its page
 RACE_SUMMARY = " ".join(RACE.partition("**In short**")[2].partition("\n\n")[0].split())
+# reader r34g, benchmarks 1-2: the small-calls table and the other timings of the same checker, for maintainers
+ENGINEERING = (Path(__file__).resolve().parents[1] / "docs" / "checker_engineering.md").read_text()
 NUMBER = re.compile(r"\d+(?:,\d{3})*(?:\.\d+)?")  # "10,000", "0.66"; not the comma of a list
 
 
@@ -124,6 +126,7 @@ def test_the_opening_names_the_statistic_of_no_saving_and_counts_the_means():
     own = verdicts(r for row in recorded.query_ratios(algorithm_1).values() for r in row.values())
     medians = verdicts(r for row in recorded.median_ratios("strong").values() for r in row["total"].values())
     assert "less time" not in own + medians
+    assert "in planning, against our compiled checker, it saved time in no cell by the median query" in LEAD  # r34g
     means = {
         key: verdicts(
             1 - v for s in recorded.table(key, "time improvement") for v in recorded.improvements(key, s).values()
@@ -313,7 +316,7 @@ def test_the_2ds_time_ratio_is_explained_against_its_rates():
 
 
 def test_every_ratio_column_of_the_small_calls_table_says_it_is_a_ratio():
-    small = next(t for t in tables() if "call of 0, µs" in t[0])
+    small = next(t for t in tables(ENGINEERING) if "call of 0, µs" in t[0])
     assert all("cost / batch cost" in h for h in small[0] if h.startswith("calls of"))
     assert len(small[0]) <= 6, "seven columns of at least 5 rem overflow the page's column (review r20d)"
 
@@ -355,9 +358,9 @@ def test_what_it_means_quotes_the_run_with_python_fcl_on_both_sides():
     ties = sum(0.9 < r < 1.1 for r in own)  # chapter 04's tie band: within 10 % of 1
     assert (
         f"it cut the sampling stage by {saving} yet tied a whole query's time in {ties} of {len(own)} cells and saved "
-        f"it in {len(fell)}:" in PREDICTION
+        f"it in {len(fell)}, by the median query." in PREDICTION  # reader r34g: its statistic named
     )
-    assert "[the Results page](results.md) gives the verdicts cell by cell" in PREDICTION
+    assert "[The Results page](results.md) gives the verdicts cell by cell" in PREDICTION
     plain = f"sampling fell by {saving} yet a query's time tied in {ties} of {len(own)} cells"  # review r29f, item 1
     assert plain in " ".join(PAGE.partition("## Does prediction make a planner faster?")[2].split())
     results = " ".join((ROOT / "docs" / "results.md").read_text().split())
@@ -492,7 +495,7 @@ def test_the_crossover_names_the_checker_it_measured_and_the_speed_ups_before_it
     small-calls table's after it; and "the checker's two later speed-ups" named none."""
     flat = " ".join(PAGE.split())
     assert "the box checker as the tables above measured it" not in flat and "two later speed-ups" not in flat
-    assert "whose box checker is the one the small-calls table above measured" in flat
+    assert "whose box checker is the one the small-calls table measured" in flat
     assert "came before rounds 5 and 6 of the compiled checker (05:52 and 08:52 UTC), which cut" in flat
     history = " ".join((ROOT / "docs" / "benchmarks_history.md").read_text().split())
     assert "**Round 5 (5 December, 05:52 UTC)" in history and "**Round 6 (5 December, 08:52 UTC)" in history
@@ -591,9 +594,9 @@ def test_the_small_calls_batch_column_is_set_against_the_checker_table():
     no reason given at the table. The gap and why are said under it, read from both tables."""
     rates = column("default exact: configurations a second")
     table = [1e6 / numbers(rates[s])[0] for s in ("3DC-7", "3DC-9", "3DO")]
-    batch = [numbers(c)[0] for c in column("batch, µs a configuration").values()]
+    batch = [numbers(c)[0] for c in column("batch, µs a configuration", ENGINEERING).values()]
     below = [100 * (1 - b / t) for b, t in zip(batch, table, strict=True)]
-    flat = " ".join(PAGE.split())
+    flat = " ".join(ENGINEERING.split())
     assert (
         f"The batch column is {min(below):.0f}–{max(below):.0f} % below the checker table's {min(table):.3f}–"
         f"{max(table):.3f} µs (its rates, inverted): another run, timed by the thread's CPU clock with the exact "
@@ -604,7 +607,7 @@ def test_the_small_calls_batch_column_is_set_against_the_checker_table():
 
 def test_the_small_calls_table_says_what_a_call_of_0_is():
     """Review r28f: the column "call of 0, µs" was never explained."""
-    assert "The second column is what a call that checks no configuration costs" in " ".join(PAGE.split())
+    assert "The second column is what a call that checks no configuration costs" in " ".join(ENGINEERING.split())
 
 
 def test_the_cells_whose_mean_moved_more_than_sampling_could_move_it_are_named():
@@ -651,16 +654,15 @@ def test_the_race_s_summary_says_where_ompl_wins_what_algorithm_1_takes_and_its_
         return sorted((c.split(" (")[0] for r, c in column(header, RACE).items() if r.endswith(", 9300")), key=float)
 
     beaten = held_out("lazy PRM / OMPL RRTConnect, checks batched")
-    beats = "OMPL wins one comparison: its RRTConnect beats the lazy PRM (the lazy PRM takes "
+    beats = "OMPL wins one comparison, estimated: its RRTConnect beats the lazy PRM (the lazy PRM takes "
     beats += f"{beaten[0]}–{beaten[-1]} times its time)"
     assert beats in RACE_SUMMARY
     eager = held_out("ours: the paper's Algorithm 1")
     assert f"the paper's Algorithm 1, as we read it, {eager[0]}–{eager[-1]} ms" in RACE_SUMMARY
-    assert (
-        "Scope: the sampler BS alone, thirty queries a seed, the three 3D scenarios only, on one idle" in RACE_SUMMARY
-    )
+    scope = " ".join(RACE.partition("**In short**")[2].partition("</details>")[0].split())  # reader r34g: a fold
+    assert "The sampler BS alone, thirty queries a seed, the three 3D scenarios only, on one idle" in scope
     assert "--queries 30 --seeds 7300,9300" in RACE and "idle throughout" in RACE  # what the scope says
-    assert RACE.index("**Why this page.**") < RACE.index("**In short**")
+    assert RACE.index("**In short**") < RACE.index("**Why this page.**")  # reader r34g, race lift 1: the answer first
     office = numbers(column("ours: lazy PRM", RACE)["3DO, 9300"])[0]
     flat = " ".join(RACE.split())
     assert "- **Against the Results page's timings.** The Results page's lazy PRM takes" in flat
@@ -672,7 +674,8 @@ def test_the_race_says_its_commit_is_older_and_sets_algorithm_1_against_the_resu
     the page said so only as a date; Algorithm 1's 37-125 ms here stood beside the Results page's 0.04-1.7 s with no
     word on why. Its BS means, read from the Results page's `paper` table "Times behind Table 3", over the medians."""
     flat = " ".join(RACE.split())
-    assert "with the code of commit `5152e40`, older than today's" in RACE_SUMMARY
+    scope = " ".join(RACE.partition("**In short**")[2].partition("</details>")[0].split())  # reader r34g: a fold
+    assert "with the code of commit `5152e40`, older than today's" in scope
     assert "**An older commit.** These numbers are of commit `5152e40`, not of today's code:" in flat
     results = (ROOT / "docs" / "results.md").read_text()
     behind = results.partition("### `paper`, Times behind Table 3")[2].partition("\n### ")[0]
@@ -725,19 +728,21 @@ def test_the_page_reconciles_its_three_batched_costs_its_call_of_16_and_2ds():
     """Reader r32g, benchmarks 1, 2, 3 and 6: three batched costs of 3DC-9 (the checker table, the small-calls table,
     the sweep at 10,000 a call) said side by side with which to quote; a call of 16's cost beyond its batch split into
     the empty call and the rest; the Results run's 2DS ratio beside this table's; no "n times cheaper"."""
-    flat = " ".join(PAGE.split())
+    flat = " ".join(ENGINEERING.split())  # reader r34g, benchmarks 1: on the maintainers' page now
     table = 1e6 / numbers(column("default exact: configurations a second")["3DC-9"])[0]
-    small = numbers(column("batch, µs a configuration")["3DC-9"])[0]
+    small = numbers(column("batch, µs a configuration", ENGINEERING)["3DC-9"])[0]
     batch = CROSSOVER["variables"]["batch"]
     sweep = batch["exact_us"][batch["values"].index(10_000)]
     assert (
-        f"So the page gives 3DC-9 three batched costs: {table:.3f} µs in the checker table (idle, wall clock, "
+        f"So the pages give 3DC-9 three batched costs: {table:.3f} µs in the checker table (idle, wall clock, "
         f"commit `5152e40`), {small:.3f} µs here (CPU clock, not in turns with the others, after that afternoon's "
-        f"change) and {sweep:.2f} µs at 10,000 a call in the crossover sweep below"
+        f"change) and {sweep:.2f} µs at 10,000 a call in the benchmarks page's crossover sweep"
     ) in flat and "Quote the checker table's idle 0.07–0.12 µs for what a 3D check costs" in flat
-    empty = {numbers(c)[0] for c in column("call of 0, µs").values()}
-    beyond = span([numbers(c)[0] for c in column("call of 16, µs more than 16 configurations in the batch").values()])
+    empty = {numbers(c)[0] for c in column("call of 0, µs", ENGINEERING).values()}
+    sixteen = column("call of 16, µs more than 16 configurations in the batch", ENGINEERING)
+    beyond = span([numbers(c)[0] for c in sixteen.values()])
     assert len(empty) == 1 and f"batched cost, {beyond} µs, of which those {empty.pop():.2f} µs are part" in flat
+    flat = " ".join(PAGE.split())
     assert "the fixed cost every call pays" not in flat and "times cheaper than" not in flat.partition("## How")[0]
     results = " ".join((ROOT / "docs" / "results.md").read_text().split())
     loaded = re.search(r"\| `strong --planner paper` \| 5 December[^|]*\|[^|]*\|[^|]*\(2DS: (\S+)\) \|", results)
@@ -802,20 +807,28 @@ def test_reader_r33g_slips_read_from_the_page_s_tables_and_the_sweep_s_record():
     among those a network answers, where the race page says no network drives it; the bold "no" named no statistic;
     the grey strip is the paper's 3DC scenes, not all of them."""
     flat = " ".join(PAGE.split())
-    rest = numbers(column("call of 16, µs more than 16 configurations in the batch")["3DC-7"])[0]
-    rest -= numbers(column("call of 0, µs")["3DC-7"])[0]
-    assert f"about {rest:.2f} µs in 3DC-7, 0.65 − 0.40)" in flat and "checker alone" not in flat
+    maintainers = " ".join(ENGINEERING.split())  # reader r34g, benchmarks 1-2: the other timings moved there
+    rest = numbers(column("call of 16, µs more than 16 configurations in the batch", ENGINEERING)["3DC-7"])[0]
+    rest -= numbers(column("call of 0, µs", ENGINEERING)["3DC-7"])[0]
+    assert f"about {rest:.2f} µs in 3DC-7, 0.65 − 0.40)" in maintainers and "checker alone" not in flat
     batch = CROSSOVER["variables"]["batch"]
     net = batch["learned_us"][batch["values"].index(10_000)]
     rates = numbers(column("network: configurations a second")["3DC-9"])  # millions a second
     there = f"{1 / rates[-1]:.2f}–{1 / rates[0]:.2f}"
-    assert f"which also give the network itself {net:.2f} µs a configuration here and {there} µs there" in flat
+    given = f"give the network itself {net:.2f} µs a configuration in the sweep and {there} µs in the table"
+    assert given in maintainers
     assert "the network and an exact check cost the same order in large calls, a few tenths of a µs" in flat
-    assert "Dotted strip: calls of the sizes a network could answer on 3DC-9" in flat  # the alt text is the figure's
-    assert "RRT-Connect's, 8–56 (no network drives RRT-Connect;" in flat
+    # reader r34g, benchmarks 3: the dotted strip is a round's samples, 50-400, named as the figure's legend names it
+    from toolkit.plots.crossover import CALLS_NAME, PLANNER_CALLS
+
+    low, high = PLANNER_CALLS
+    assert f"the dotted strip, {low}–{high}: {CALLS_NAME}, the calls a network answers" in flat
+    assert f"{CALLS_NAME}, the calls a network answers, {low} to {high} configurations.](crossover.png)" in flat
+    assert "8–400" not in flat and "8–56" not in flat
     assert "No network drives RRT-Connect." in RACE
     assert "**Against our compiled checker, by the median query, no; against python-fcl" in flat
-    assert "compiled exact check (timed idle; the Results page's ratios come from a run timed under load), so" in flat
+    assert "compiled exact check (timed idle, in large calls), so" in flat  # reader r34g, lift 1: the load in the fold
+    assert "the Results page's ratios come from a run timed under load" in SUMMARY
     assert "Plain grey strips: the paper's 3DC scenes, 110–125 blocks" in flat
 
 
@@ -896,3 +909,62 @@ def test_each_row_of_the_race_s_chart_says_whose_it_is():
     assert [ticks[k] for k in sorted(ticks)] == ["OMPL", "ours"] * len(medians)
     ours = next(line for line in ax.lines if line.get_label() == "ours: RRT-Connect")
     assert all(ticks[y] == "ours" for y in ours.get_ydata())
+
+
+def test_reader_r34g_one_cost_per_check_equal_call_sizes_and_the_paper_s_total_time():
+    """Reader r34g, benchmarks 1-7: one figure per quantity on the student's path (the idle checker table's), the other
+    timings on the maintainers' page with one line here; the headline's unequal call sizes said; rounds and runs told
+    apart; the paper's Total Time column beside ours and sampling's losses by means, both read from the record."""
+    from toolkit.experiments.paper_numbers import IMPROVEMENT
+    from toolkit.teaching import recorded
+    from tools.results_summary import change
+
+    flat = " ".join(PAGE.split())
+    assert "batch, µs a configuration" not in PAGE and "Why the sweep's ratio at 10,000" not in PAGE
+    assert "A planner asks tens of configurations" not in flat and "(checker_engineering.md#small-calls)" in PAGE
+    assert "{#small-calls}" in ENGINEERING and "| scenario | batch, µs a configuration |" in ENGINEERING
+    assert "in large calls (20,000 configurations a call, the network's 10,000)" in LEAD
+    assert "each run the median of its 5 rounds, and the table gives the median of those runs" in flat
+    key = "strong --planner paper"
+    scenarios = recorded.table(key, "time improvement")
+    cells = (v for s in scenarios for v in recorded.improvements(key, s, "sampling").values())
+    sampling = [change(1 - v) for v in cells]
+    assert f"by means, sampling lost 10 % or more in {sampling.count('more time')} of 16 cells" in PREDICTION
+    paper = [v for s in IMPROVEMENT for v in IMPROVEMENT[s]["total"].values()]
+    saved = [change(1 - v) for v in paper].count("less time")
+    assert (
+        f"The paper's Table 3 (its Total Time column, of means) saved 10 % or more of a whole query in {saved} of "
+        f"{len(paper)} cells, up to {100 * max(paper):.0f} %"
+    ) in PREDICTION
+    assert flat.index("*Key.*") < flat.index("**What the paper's claim needs")
+    assert "How to read this page](#" not in flat
+
+
+def test_reader_r34g_race_one_convention_estimates_named_and_the_paper_s_own_times():
+    """Reader r34g, race 1-6 and lift 1: "In short" first; the Key says "N times as fast" is the tables' ratio
+    inverted; every prose paragraph that quotes OMPL with its checks batched says it is estimated, and "the fair
+    comparison" is gone; the lazy PRM's "fastest" scoped to the planners a network can drive; the paper's own mean
+    times of Algorithm 1 beside ours, read from paper_numbers; the scope and the commit in a fold."""
+    from toolkit.experiments.paper_numbers import TIMES
+
+    assert RACE.index("**In short**") < RACE.index("**Why this page.**") < RACE.index("\n## ")
+    flat = " ".join(RACE.split())
+    assert 'Where the text says "N times as fast", N is the inverse, B / A' in flat
+    assert "the fair comparison" not in flat and "estimated, not timed" in RACE_SUMMARY
+    for para in re.split(r"\n\s*\n|\n- ", RACE):
+        if "batched" in para and not para.lstrip().startswith(("|", "!")):
+            assert "estimat" in para, para[:120]
+    lazy = {r: numbers(c)[0] for r, c in column("ours: lazy PRM", RACE).items() if r.endswith(", 9300")}
+    rrt = {r: numbers(c)[0] for r, c in column("ours: RRT-Connect", RACE).items() if r.endswith(", 9300")}
+    assert all(0.3 <= rrt[r] / lazy[r] <= 0.4 for r in lazy) and "RRT-Connect takes about a third of its time" in flat
+    assert "It is not our fastest planner" in flat and 'other pages call it "the best exact planner"' not in flat
+    office = [w for w, _ in (pair[0] for pair in TIMES["3do"]["total_s"].values())]
+    chains = [w for s in ("3dc7", "3dc9") for w, _ in (pair[0] for pair in TIMES[s]["total_s"].values())]
+    eager = [numbers(c)[0] for r, c in column("ours: the paper's Algorithm 1", RACE).items() if r.endswith(", 9300")]
+    assert (
+        f"without its network, took {min(office):.2f}–{max(office):.2f} s a mean 3DO query and "
+        f"{min(chains):.2f}–{max(chains):.2f} s a mean 3DC one (§V), on its machine with a checker it does not name; "
+        f"ours takes {min(eager)}–{max(eager)} ms a median query here"
+    ) in flat
+    scope = RACE.partition("**In short**")[2].partition("</details>")[0]
+    assert "commit `5152e40`" in scope and "commit" not in RACE_SUMMARY

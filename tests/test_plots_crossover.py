@@ -7,7 +7,7 @@ from matplotlib.collections import PolyCollection
 
 from toolkit.plots import alt
 from toolkit.plots.alt import alt_text
-from toolkit.plots.crossover import CALLS_LEGEND, PAPER_LEGEND, PLANNER_CALLS, SLANT, TICKS, crossover
+from toolkit.plots.crossover import CALLS_LEGEND, CALLS_NAME, PAPER_LEGEND, PLANNER_CALLS, SLANT, TICKS, crossover
 from toolkit.util.verdicts import CHEAPER, NEAR
 
 SWEEP = {  # network / exact: 0.5 cheaper, 0.9 can't tell, 1.5 dearer, 0.7 cheaper (the band is 25 %)
@@ -43,7 +43,7 @@ def test_only_the_points_whose_verdict_is_network_cheaper_are_shaded():
     assert "hatched: within 25%, can't tell" in fig.get_suptitle()  # reader r24c: the can't-tell band drawn
     assert "3DC-9" in fig.get_suptitle()  # the site's name of the scenario, not its key
     zorder = {line.get_label(): line.get_zorder() for line in ax.lines}
-    exact, learned = (next(k for k in zorder if k.startswith(w)) for w in ("exact, compiled", "learned"))
+    exact, learned = (next(k for k in zorder if k.startswith(w)) for w in ("exact, compiled", "the network"))
     assert zorder[exact] > zorder[learned]  # reader r23a: drawn over the network
     assert "on triangles: the compiled mesh checker" in exact  # reader r24c: the mesh panel's checker named
     assert "cheaper by more than 25% at 10, 10,000." in alt_text(fig)
@@ -219,19 +219,20 @@ def test_the_call_size_panel_marks_our_planners_calls():
     fig = crossover({"scenario": "3dc9", "preset": "paper", "quick": False, "variables": {"batch": batch}})
     ax = fig.axes[0]
     assert [(p.get_x(), p.get_x() + p.get_width()) for p in ax.patches] == [PLANNER_CALLS]
-    assert "planner calls" in [t.get_text() for t in ax.texts]
+    assert CALLS_NAME in [t.get_text() for t in ax.texts]
     assert CALLS_LEGEND in [t.get_text() for t in fig.legends[0].get_texts()]
     # reader r31f: two grey strips of one colour meant two things; the planner calls' is dotted, said in its legend
     assert ax.patches[0].get_hatch() == ".." and CALLS_LEGEND.startswith("dotted strip")
     # reader r32g: the strip's name sat on its dots; the strip stops below the name now
     FigureCanvasAgg(fig).draw()
-    name = next(t for t in ax.texts if t.get_text() == "planner calls").get_window_extent()
+    name = next(t for t in ax.texts if t.get_text() == CALLS_NAME).get_window_extent()
     assert name.y0 >= ax.patches[0].get_window_extent().y1
-    assert PAPER_LEGEND.startswith("plain grey strip") and "a dotted strip marks calls of the sizes" in alt_text(fig)
+    assert PAPER_LEGEND.startswith("plain grey strip") and "a dotted strip marks a round's samples" in alt_text(fig)
     low, high = PLANNER_CALLS
-    assert f"calls of the sizes a network could answer, {low} to {high} configurations" in alt_text(fig)
+    assert f"{CALLS_NAME}, the calls a network answers: {low} to {high} configurations" in alt_text(fig)
+    assert CALLS_NAME in CALLS_LEGEND and (low, high) == (50, 400)  # reader r34g: no RRT-Connect sizes, one name
     plain = crossover({"scenario": "2ds", "preset": "paper", "quick": False, "variables": {"batch": batch}})
-    assert not plain.axes[0].patches and "planner calls" not in alt_text(plain)
+    assert not plain.axes[0].patches and CALLS_NAME not in alt_text(plain)
 
 
 def test_the_recorded_figure_names_only_decades_on_its_widest_panels():

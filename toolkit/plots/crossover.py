@@ -33,7 +33,7 @@ STYLES = {  # checker -> (marker and line, colour, name)
 LEGEND = {  # checker -> its legend's words; reader r24c: which checker the mesh panel times is said
     "exact": "exact, compiled (on triangles: the compiled mesh checker)",
     "fcl": "exact, python-fcl (on triangles: FCL's mesh tree + a numpy inside test)",
-    "learned": "learned: a network of the preset's sizes (its speed does not depend on its weights)",  # r25a: not
+    "learned": "the network (learned), of the preset's sizes (its speed does not depend on its weights)",  # r25a: not
     # "untrained", which read as a fault
 }
 
@@ -103,12 +103,12 @@ PAPER_SAID = (
 NO_MESH = " (paper scenes: no mesh)"
 TICKS: dict[str, tuple[float, ...]] = {}  # a panel's values to name, if not all; reader r32g: every obstacle count
 # named (r29f's 350 and 500 part slanted; r30f's unlabelled ticks are gone with the choice)
-PLANNER_CALLS = (8, 400)  # the planner calls a network could answer on a 3DC scene: RRT-Connect's 8-56 configurations
-# (docs/benchmarks_history.md, its profile), a round's samples (the lazy PRM's 50 doubling to |S| = plan_samples = 400)
-CALLS_LEGEND = "dotted strip (call size): calls of the sizes a network could answer (8–400)"
+PLANNER_CALLS = (50, 400)  # the calls a network answers on a 3DC scene: a round's samples (the lazy PRM's 50 doubling
+# to |S| = plan_samples = 400, Algorithm 1's 400); reader r34g: not RRT-Connect's 8-56, which no network drives
+CALLS_NAME = "a round's samples"  # one name on the panel and in the legend (reader r34g, figure c)
+CALLS_LEGEND = f"dotted strip (call size): {CALLS_NAME}, the calls a network answers (50–400)"
 CALLS_SAID = (
-    "On the call-size panel a dotted strip marks calls of the sizes a network could answer, 8 to 400 configurations: "
-    "a round's 50 to 400 samples, and calls the size of RRT-Connect's, 8 to 56 (no network drives RRT-Connect). "
+    f"On the call-size panel a dotted strip marks {CALLS_NAME}, the calls a network answers: 50 to 400 configurations. "
 )
 
 
@@ -140,7 +140,7 @@ def _planner_calls(ax, key: str, sweep: dict) -> None:
     ax.text(
         np.sqrt(low * high),
         0.97,
-        "planner calls",
+        CALLS_NAME,
         transform=ax.get_xaxis_transform(),
         ha="center",
         va="top",

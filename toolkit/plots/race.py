@@ -73,8 +73,9 @@ def race_medians(
         ax.plot(x, y, marker, color=colour, markersize=8, ls="none", label=planner, clip_on=False)
         if batched and all(planner in batched[s] for s in scenarios):
             x = [batched[s][planner] for s in scenarios]
-            ax.plot(x, y, marker, color=colour, markersize=9, ls="none", mfc=COLORS["free"], mew=2.4,
-                    label=f"{planner}, checks batched (hollow: estimated)", clip_on=False)  # fmt: skip
+            ax.plot(x, y, marker, color=colour, markersize=9, ls="none", mfc=COLORS["free"], mew=1.6, alpha=0.6,
+                    label=f"{planner}, checks batched (estimated)", clip_on=False)  # fmt: skip
+            # reader r34g, race figure b: an estimate drawn lighter than a timing, and named so
     ax.set_xscale("log")
     low, high = ax.get_xlim()
     ticks = [m * 10.0**e for e in range(-1, 5) for m in (1, 2, 5) if low <= m * 10.0**e <= high]
@@ -83,14 +84,14 @@ def race_medians(
     ax.set_yticks(range(len(scenarios)), scenarios)
     tagged = [y + d for y in range(len(scenarios)) for d in (-0.15, 0.15)]  # reader r33g: each row says whose it is
     ax.set_yticks(tagged, ["OMPL", "ours"] * len(scenarios), minor=True)
-    ax.tick_params(axis="y", which="minor", labelsize=POINTS - 1, labelcolor=COLORS["rejected"], length=2)
+    ax.tick_params(axis="y", which="minor", labelsize=POINTS, labelcolor=COLORS["rejected"], length=2)  # r34g: legible
     ax.tick_params(axis="y", which="major", length=0, pad=POINTS * 3.6)  # the scenario left of its two rows' tags
     ax.set_ylim(len(scenarios) - 0.5, -0.5)  # the first scenario on top
     ax.grid(axis="x", color=COLORS["block"], lw=0.6, zorder=0)
     for between in np.arange(len(scenarios) - 1) + 0.5:  # reader r31f: a line between scenarios, the dots in rows
         ax.axhline(between, color=COLORS["block"], lw=0.6, ls=":", zorder=0)
     ax.set_xlabel("median time a query, ms (log axis)")
-    ax.set_ylabel("scenario: OMPL's row above, ours below")  # reader r32g: the offset is no second variable
+    ax.set_ylabel("scenario")  # reader r34g, race figure c: each row's "OMPL" / "ours" tag says whose it is
     ax.tick_params(labelsize=POINTS)
     held = f", seed {seed}" if seed is not None else ""
     ax.set_title(f"Median time a query by planner{held}: further left is faster", fontsize=10)
