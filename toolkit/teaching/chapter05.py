@@ -148,7 +148,7 @@ def _answer_numbers(compiled, fcl_total, fcl_sampling, shares) -> str:
         "(median) |\n| --- | ---: | ---: | ---: | ---: |\n" + rows + "\n\n"
         f"The network timed in both ({run_name(COMPILED)}) is accurate: right on {scores['acc']:.0%} of "
         'uniform samples in the record\'s unseen 3DC-7 workspaces, where answering "valid" to all is right on '
-        f"{share:.0%}. The closing section gives the sampling stage's table, the paper's Table 3 beside it.\n\n</details>"
+        f"{share:.0%}. The closing section gives the sampling stage's table beside the paper's Table 3.\n\n</details>"
     )
 
 
