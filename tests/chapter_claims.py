@@ -1100,7 +1100,7 @@ def chapter_05(nb) -> list[str]:
 def _chapter_05_answer(found: str, measured: list[list[str]], scored: list[list[str]]) -> list[str]:
     """Reader r24b: the answer says "No" where no total-time row of the closing table saves time, and each of its
     numbers is in a table on the page: the sampling cut beside the paper's, the accuracy pair as a row; a ratio of two
-    medians within timing noise reads "within noise", not a verdict."""
+    medians within timing noise reads "inside the noise floor", not a verdict."""
     problems = []
     totals = [
         r
@@ -1145,7 +1145,7 @@ def _chapter_05_answer(found: str, measured: list[list[str]], scored: list[list[
     for r in medians[:1] or [["missing"]]:
         for cell in r[1:] or ["missing"]:
             ratio = re.search(r"\((\d+\.\d+)\)", cell)
-            if ratio is None or (abs(float(ratio.group(1)) - 1) <= moved) != cell.startswith("within noise"):
+            if ratio is None or (abs(float(ratio.group(1)) - 1) <= moved) != cell.startswith(chapter05.NOISE):
                 problems.append(f"05: a ratio of two medians is read against timing noise wrongly: {cell}")
     return problems
 

@@ -626,3 +626,13 @@ def test_an_overview_draws_a_sparse_workspaces_blocks_darker_and_a_dense_ones_fa
     office, clutter = (len(scenarios.get(s).make_workspace(np.random.default_rng(0)).boxes) for s in ("3do", "3dc9"))
     assert office <= still_panels.DENSE_BLOCKS < clutter
     assert still_panels.overview_step(2000, office) == 10 and still_panels.overview_step(500, clutter) == 5
+
+
+def test_the_frame_title_names_a_dip_beside_the_frame():
+    """Reader r35e, 05 item 4: the P(valid) panel's dip to 0.575 at frame 47 touched frame 48's line, whose title said
+    0.92; the title now names a neighbour more than 0.1 lower, and only then."""
+    from toolkit.plots.scenes import _frame_title
+
+    series = {"valid": None, "clearance": None, "probability": np.array([0.9, 0.575, 0.92, 0.95])}
+    assert _frame_title(2, 4, series, 0.57) == "frame 2/3: P(valid) 0.92 ≥ threshold 0.57 (frame 1: 0.57)"
+    assert _frame_title(3, 4, series, 0.57) == "frame 3/3: P(valid) 0.95 ≥ threshold 0.57"

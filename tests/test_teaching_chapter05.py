@@ -59,8 +59,9 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
 
 def test_a_ratio_of_two_medians_within_timing_noise_reads_within_noise():
     row = chapter05._noise_row("r", {"BS": 0.83, "OB": 1.5, "G": 1.07, "BT": 0.69}, moved=0.30)
-    assert row == "| r | within noise (0.83) | costs time (1.50) | within noise (1.07) | saves time (0.69) |"
-    assert "within noise (0.83)" in chapter05.time_tables()
+    noise = "inside the noise floor"
+    assert row == f"| r | {noise} (0.83) | costs time (1.50) | {noise} (1.07) | saves time (0.69) |"
+    assert "inside the noise floor (0.83)" in chapter05.time_tables()
 
 
 def test_the_accuracy_table_has_the_answers_pair_as_a_row():
@@ -213,7 +214,7 @@ def test_the_answer_gives_the_share_of_a_query_sampling_takes_without_the_networ
 def test_the_closing_applies_the_home_pages_test_to_a_longer_query_and_sets_the_medians_row_apart():
     """Reader r32e, contradictions 2-3: OB's query took longer with python-fcl although its sampling got faster (a
     change bigger than sampling allows is not prediction's, as the home page says), and the folded ratio of two
-    medians (0.83 "within noise") is not one of the answer's statistics."""
+    medians (0.83 "inside the noise floor") is not one of the answer's statistics."""
     said = " ".join(chapter05.time_tables().split())
     fcl_sampling = recorded.improvements(chapter05.FCL, chapter05.SCENARIO, "sampling")
     means = recorded.improvements(chapter05.FCL, chapter05.SCENARIO)

@@ -354,8 +354,7 @@ def _draw_trace(ax, robot: BoxRobot, Q: np.ndarray) -> None:
 
 
 def _draw_scene(scene, robot: BoxRobot, Q: np.ndarray, index: int, checked: tuple, workspace, margin: float) -> None:
-    """The 3D panel of :func:`path_frame`: the robot at frame ``index`` among the blocks near it, its base's trace;
-    ``checked``: the frame's ``(valid, clearance bound)``, each None if not given."""
+    """The 3D panel of :func:`path_frame` at frame ``index``; ``checked``: its ``(valid, clearance bound)`` or Nones."""
     valid, bound = checked
     color = UNCHECKED_COLOR if valid is None else VALID_COLOR if valid else INVALID_COLOR
     draw_robot(
@@ -386,14 +385,15 @@ def _per_frame(values, frames: int, name: str) -> np.ndarray | None:
 
 
 def _frame_title(index: int, frames: int, series: dict, threshold: float) -> str:
-    """The title: "frame 48/89: valid (exact checker), clearance ≥ 0.028, P(valid) 0.92 ≥ threshold 0.57" (reader
-    r32e: the old title wrapped inside its threshold's brackets)."""
+    """The title: "frame 48/89: valid (exact checker), clearance ≥ 0.028, P(valid) 0.92 ≥ threshold 0.57"."""
     parts = []
     if series["valid"] is not None:
         parts.append("valid (exact checker)" if series["valid"][index] else "IN COLLISION (exact checker)")
     if series["clearance"] is not None:
         parts.append(f"clearance ≥ {series['clearance'][index]:.3f}")
     if series["probability"] is not None:
-        p = series["probability"][index]
-        parts.append(f"P(valid) {p:.2f} {'≥' if p >= threshold else '<'} threshold {threshold:.2f}")
+        q = series["probability"]  # reader r35e: a dip beside this frame, more than 0.1 lower, is named after it
+        j = min((k for k in (index - 1, index + 1) if 0 <= k < frames), key=lambda k: q[k], default=index)
+        dip = f" (frame {j}: {q[j]:.2f})" if q[j] < q[index] - 0.1 else ""
+        parts.append(f"P(valid) {q[index]:.2f} {'≥' if q[index] >= threshold else '<'} threshold {threshold:.2f}{dip}")
     return f"frame {index}/{frames - 1}" + (": " + ", ".join(parts) if parts else "")

@@ -18,7 +18,7 @@ SAMPLERS = ("BS", "OB", "G", "BT")
 COMPILED = "strong --planner paper"  # docs/results.md: the `strong` network in Algorithm 1, our compiled checker
 FCL = "strong --planner paper --baseline paper-fcl-alike"  # ... python-fcl doing every exact check on both sides
 RESULTS = "[`docs/results.md`](../docs/results.md)"  # a link from the chapter (reader r32e, item 4)
-NOISE = "within noise"  # a ratio of two medians no further from 1 than timing the same computation twice moved it
+NOISE = "inside the noise floor"  # a ratio of two medians no further from 1 than timing the same thing twice moved it
 TIE_WORDS = f'a ratio less than {TIE:.0%} from 1 reads "{TIES}"'  # the band, printed beside each time table
 DID = {SAVES: "saved time", TIES: "tied", COSTS: "cost time"}  # a verdict, as a past verb
 
@@ -287,7 +287,7 @@ def _more(moved: float, longer: str = "") -> str:
         f"beside ours, not the same measurement.{longer}\n\n"
         "Why the median of each query's own ratio: each query is timed with and without prediction in turn, under "
         "the same load. A ratio of two medians, each over its own mode's queries, is not: timing the same computation "
-        f'twice moved it by up to {moved:.0%} ([`docs/results.md`](../docs/results.md), the table "timed twice"), so '
+        f'twice moved it by up to {moved:.0%} (the noise floor of {RESULTS}, its table "timed twice"), so '
         f"for the rows below that are ratios of medians, read only a ratio further than {moved:.0%} from 1. The two "
         f"lazy-PRM rows ({span(lazy)}; {span(recipe)}) {'all are' if lazy_beyond else 'are not all'}; in the last "
         f'row a ratio no further than that from 1 reads "{NOISE}". Against the lazy PRM, the fastest exact planner a '
@@ -304,7 +304,7 @@ def _more(moved: float, longer: str = "") -> str:
         + "\n"
         + _noise_row("3DC-7, `strong` network in Algorithm 1, ratio of the two medians", of_medians, moved)
         + "\n\nThat last row is not a statistic of the answer at the top (each query's own ratio, the ratio of the "
-        "means), and a ratio in it within noise, below 1 or above, is no saving or cost beside the answer's."
+        "means), and a ratio in it inside the noise floor, below 1 or above, is no saving or cost beside the answer's."
         + '\n\nOn 3DC-7 the `paper` preset\'s MLP answers "valid" to every sample, so Algorithm 1 skips the sample '
         'checks: that, not learning, is its one saving by means. On 3DC-9 and 3DO the same recipe answers "invalid" '
         "to every sample; there its savings by means come from the queries whose straight edge from start to goal is "
@@ -382,9 +382,9 @@ def paper_share() -> str:
     return (
         '<details><summary>Which "unseen" test did the paper score?</summary>\n\n'
         'It says only (§IV-A) that it generates "2000 samples for each 3D office-like workspace, and 400 samples for '
-        'each 3D clutter workspace" "regardless of their validity", and "This is evaluated as unseen scenarios". Our '
-        "reading is that its unseen rows score such uniform samples; its own numbers speak against it: Table 2's three "
-        "numbers fix the valid share of its test set.\n\n"
+        'each 3D clutter workspace" "regardless of their validity", and "This is evaluated as unseen scenarios". '
+        "Section 1 reads that as the set Table 2 scores, uniform samples; the paper's own numbers speak against it: "
+        "Table 2's three numbers fix the valid share of its test set.\n\n"
         f"The paper's row: {paper['acc']:.0%} = {paper['tpr']:.0%} × share + {paper['tnr']:.0%} × (1 − share) gives a "
         f"valid share of about {implied:.0%}. On uniform samples in the recipe's unseen workspaces, "
         f"{uniform:.0%} valid, "
