@@ -367,7 +367,7 @@ def test_the_animation_is_titled_apart_from_the_scene_and_says_p_valid_in_words(
     assert "with the box chain (7 DoF)" in titles[0]  # the pages' names, not the code's "chain7 robot"
     said = html.unescape(found(r'<p class="scene-summary">([^<]*)</p>', animation))
     assert "The exact checker finds the robot valid at 5 of the 5 frames." in said  # a verified path
-    assert "goes from 0.20 to 0.80 along the path, median 0.50" in said  # 0.2, 0.35, 0.5, 0.65, 0.8
+    assert "ranges 0.20–0.80 along the path (lowest 0 % of the way along), median 0.50" in said  # 0.2, ..., 0.8
     assert "the model calls the robot colliding (P(valid) below its threshold) at 2 of the 5 frames" in said
 
 

@@ -246,8 +246,9 @@ def animation_summary(
         p = np.asarray(model.probability(configurations), dtype=float)  # (F,)
         doubted = frames - int(np.sum(model.are_valid(configurations)))
         words.append(
-            f"The model's P(valid), the colour of the wireframe around the links (dark low, light high), goes from "
-            f"{p.min():.2f} to {p.max():.2f} along the path, median {np.median(p):.2f}; the model calls the robot "
+            f"The model's P(valid), the colour of the wireframe around the links (dark low, light high), ranges "
+            f"{p.min():.2f}–{p.max():.2f} along the path (lowest {100 * np.argmin(p) / max(frames - 1, 1):.0f} % of "
+            f"the way along), median {np.median(p):.2f}; the model calls the robot "
             f"colliding (P(valid) below its threshold) at {doubted} of the {frames} frames."
         )
     return " ".join(words + ([] if path is None else [_path_words(path)]))
