@@ -272,6 +272,15 @@ def _chapter_02_unseen(nb, found: str) -> list[str]:
         problems.append(
             f"02: the answer says 'no better than all free' of {answer.group(1)}% against {answer.group(2)}%"
         )
+    # reader r35b: a few tenths above "all free" on the ten test grids, the prose says, are level or below on 500
+    on_new = re.findall(r"(?:new grids: |; )(λ = [^:;]*?) [\d.]+% \(all free [\d.]+%: ([+-][\d.]+) points", found)
+    if len(on_new) != 3:
+        problems.append(f"02: section 5 does not print the three CAEs on the new grids: {on_new}")
+    problems += [
+        f"02: {name} is {gap} points against 'all free' on the new grids: not level or below"
+        for name, gap in (on_new if memorized else [])
+        if float(gap) >= 1
+    ]
     closing = [row for header, rows in tables(nb) if header[0] == "2DS reconstruction accuracy" for row in rows]
     if len(closing) < 4:
         problems.append("02: the closing table lacks rows")
