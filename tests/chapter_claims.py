@@ -814,14 +814,15 @@ STATUS = re.compile(  # findings.claim_status: the paper's claim from the record
     r"(?:\([^)]*\) )?in "
     r"(none|\d+) of the (\d+) scenario–sampler pairs"
 )
-ANSWER_NO = "**The answer: no.**"  # the opening's plain answer (review r28d: said once, numbers in bullets under it)
+ANSWER_NO = "**The answer: no with our fast checker"  # the opening (review r28d: said once; r35d: then "rarely")
 FAST_BULLET = re.compile(  # chapter04.answer's first bullet: like for like by means first (reader r34d), then medians
-    r"by Table 3's own statistic, the mean time, our accurate network saved time in (?P<fast_means>none|\d+) of \d+ "
-    r"scenario–sampler pairs with our fast exact checker and in (?P<slow_means>none|\d+) of \d+ with python-fcl on "
-    r"both sides, the paper's Table 3 in (?P<papers>\d+) of \d+; by the median query, in (?P<fast>none|\d+) of "
-    r"(?P<total>\d+) and (?P<slow>none|\d+) of \d+"
+    r"by the median of each query's own ratio, the statistic this page reads, our accurate network saved time in "
+    r"(?P<fast>none|\d+) of (?P<total>\d+) scenario–sampler pairs with our fast checker and in (?P<slow>none|\d+) of "
+    r"\d+ with python-fcl on both sides(?:, \d+ of them inside timing noise \(section 6's \\\*\))?; by mean times, "
+    r"Table 3's statistic, in (?P<fast_means>none|\d+) and (?P<slow_means>none|\d+) of \d+, the paper's Table 3 in "
+    r"(?P<papers>\d+) of \d+"
 )
-EDGE = "inside timing's own reach: no clear evidence"  # chapter04.edge_line: what section 6's mark means
+EDGE = "inside timing noise: no clear evidence"  # chapter04.edge_line: what section 6's mark means
 SLOW_ROW = re.compile(r"(.+), ours \(`strong`, python-fcl\), medians")  # section 6: the same network, python-fcl
 
 

@@ -529,7 +529,7 @@ def test_chapter_04_holds_the_answers_bullet_on_our_fast_checker_to_section_6():
     ]
     nb = chapter_04()
     edge = nb["cells"][0]["outputs"][3]["data"]
-    edge["text/markdown"] = edge["text/markdown"].replace("inside timing's own reach", "near 1")
+    edge["text/markdown"] = edge["text/markdown"].replace("inside timing noise", "near 1")
     assert problems(CH04, nb) == [
         "04: section 6's noise edge counts our fast checker's cells as ('', ''); the record: ('4', '0')",
         "04: section 6's noise edge counts python-fcl's cells as ('', ''); the record: ('0', '1')",
