@@ -815,6 +815,7 @@ STATUS = re.compile(  # findings.claim_status: the paper's claim from the record
     r"(none|\d+) of the (\d+) scenario–sampler pairs"
 )
 ANSWER_NO = "**The answer: no with our fast checker"  # the opening (review r28d: said once; r35d: then "rarely")
+RARELY = "rarely with python-fcl"  # the opening's answer on python-fcl: its median query saved in a few cells, not 0
 FAST_BULLET = re.compile(  # chapter04.answer's first bullet: like for like by means first (reader r34d), then medians
     r"by the median of each query's own ratio, the statistic this page reads, our accurate network saved time in "
     r"(?P<fast>none|\d+) of (?P<total>\d+) scenario–sampler pairs with our fast checker and in (?P<slow>none|\d+) of "
@@ -965,6 +966,8 @@ def _slow_checker(nb, facts: checker_scope.SlowChecker | None = None) -> list[st
         problems.append(
             f"04: the opening says '{ANSWER_NO}'; counted the paper's way: ours {ours}, the paper's {papers}"
         )
+    if RARELY in opening(nb) and not 0 < totals[findings.SAVES] <= len(facts.own) // 4:  # reader r35d
+        problems.append(f"04: the opening says '{RARELY}'; python-fcl's median query saved in {totals[findings.SAVES]}")
     if SLOW_SAMPLING in written and facts.sampling_verdicts()[findings.SAVES] != len(facts.sampling):
         problems.append(f"04: the prose says '{SLOW_SAMPLING}'; the record: {dict(facts.sampling_verdicts())}")
     verdict = next((v for v in SLOW_TOTAL if totals[v] == len(facts.own)), None)
