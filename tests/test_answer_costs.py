@@ -49,8 +49,8 @@ def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_th
     hatched = answer_ratios(rows, tie=findings.TIE, means=means, names=chapter04.SERIES, floor=(0.84, 1.24))
     top = hatched.axes[0]
     assert [p.get_hatch() for p in top.patches].count(query_ratios.NOISE_HATCH) == 2  # below and above the tie band
-    assert hatched.legends[0].get_texts()[0].get_text() == "ratio-of-means floor, 0.84–1.24"
-    assert "hatched round the tie band, the ratio-of-means floor, 0.84–1.24: timing alone" in alt_text(hatched)
+    assert hatched.legends[0].get_texts()[0].get_text() == "timing noise (means), 0.84–1.24"
+    assert "hatched round the tie band, timing noise (means), 0.84–1.24: timing alone" in alt_text(hatched)
     said = alt_text(fig)
     assert "Above, means, Table 3's statistic: the paper's squares beside our two series' means, 48 points" in said
     assert "Below, our medians of each query's own ratio, hollow" in said and "32 points, 3 of them at or below" in said

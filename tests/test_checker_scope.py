@@ -109,17 +109,17 @@ def test_the_answer_gives_three_short_bullets_read_from_the_record():
     the cost moves between runs."""
     said = chapter04.answer().splitlines()
     assert [line[:2] for line in said] == ["- "] * 3
-    assert said[0] == (
-        "- **Saved time**: by Table 3's own statistic, the mean time, our accurate network saved time in 3 of 16 "
-        "scenario–sampler pairs with our fast exact checker and in 2 of 16 with python-fcl on both sides, the paper's "
-        "Table 3 in 10 of 16; by the median query, in none of 16 and 3 of 16. Of our 8 savings, 4 lie inside timing's "
-        "own reach (section 6's \\*)."
+    assert said[0] == (  # reader r35d: the statistic the page reads first, named; python-fcl's noise in cells
+        "- **Saved time**: by the median of each query's own ratio, the statistic this page reads, our accurate "
+        "network saved time in none of 16 scenario–sampler pairs with our fast checker and in 3 of 16 with python-fcl "
+        "on both sides, 1 of them inside timing noise (section 6's \\*); by mean times, Table 3's statistic, in 3 and "
+        "2 of 16, the paper's Table 3 in 10 of 16."
     )
     facts = checker_scope.slow_checker()
     assert said[1] == (
-        "- **Why**: prediction only skips the samples' checks, at most 18 % of a mean query with our fast checker: all "
-        "it could save with a free network. The rest is exact checks of points along the roadmap's edges, never the "
-        "network's in Algorithm 1 (section 5). By means 3 cells saved more than their sampling, 2DS BT 0.87, 3DC-9 OB "
+        "- **Why**: prediction only skips the samples' checks, at most 18 % of a mean query with our fast checker, all "
+        "a free network saves. The rest is exact checks along the roadmap's edges, never the network's in Algorithm 1 "
+        "(section 5). With our fast checker, 3 cells' means saved more than their sampling, 2DS BT 0.87, 3DC-9 OB "
         "0.72, 3DO BS 0.86: a few slow queries moved those means, not prediction."
     )
     assert said[2] == (  # reader r33d: the run named, not "that recorded run"; r34d: the cost moves between runs
@@ -140,7 +140,7 @@ def test_the_noise_edge_is_a_mark_on_the_tables_verdicts_explained_once():
     reader r33d, contradiction 2: one band in prose, so a verdict inside that reach keeps its word and carries a mark,
     which one footnote explains (2DS BT 1.10 "costs time" and no clear evidence were two sentences)."""
     said = chapter04.edge_line()
-    assert said.startswith("\\* inside timing's own reach: no clear evidence. The band depends on the statistic:")
+    assert said.startswith("\\* inside timing noise: no clear evidence. The band depends on the statistic:")
     assert "own ratio 0.82–1.18 (twice the 0.09 by which" in said  # reader r34d: each statistic its band, named
     assert "for a ratio of means 0.84–1.24 and for a ratio of medians 0.80–1.30" in said
     table, more = checker_scope.section_6({"2DS": 5.0})

@@ -159,34 +159,35 @@ def other_line(records: Mapping[str, list[dict]]) -> str:
 
 def answer(tables: Tables | None = None) -> str:
     """Chapter 04's answer in numbers, three short bullets read from ``docs/results.md`` (100 recorded queries a
-    scenario), each a student can repeat (reader r33d): how often our accurate network saved time, like for like with
-    the paper first (by means, Table 3's statistic), then by the median query, with how many of those savings lie
-    inside timing's reach (reader r34d); the most that skipping the samples' checks can save, and the cells whose
-    means saved more; what a network call cost against our fast check. The rest is section 6's (:func:`edge_line`,
-    :func:`full_answer`)."""
+    scenario), each a student can repeat (reader r33d): how often our accurate network saved time by the statistic
+    the page reads, the median of each query's own ratio (reader r35d: the answer led with means, section 6 said it
+    reads medians), with how many python-fcl savings lie inside timing noise, then by means like for like with the
+    paper; the most that skipping the samples' checks can save, and the cells whose means saved more; what a network
+    call cost against our fast check. The rest is section 6's (:func:`edge_line`, :func:`full_answer`)."""
     facts = checker_scope.slow_checker(tables)
     papers = sum(time_verdict(1 - saved) == SAVES for saved in facts.papers_totals)
     share = max(costs.sampling_shares(recorded.ALGORITHM_1, tables))
     fast, slow = (costs.saved_counts(preset, tables) for preset, _ in RUNS)
-    counts = [c for run in (fast, slow) for c in run.values()]  # (saved, of them inside timing's reach)
+    noise = slow["medians"][1]  # python-fcl's median savings inside timing noise (reader r35d: cells, not pairs)
     beyond = costs.over_sampling(recorded.ALGORITHM_1, tables)
+    whose = "cells'" if len(beyond) != 1 else "cell's"
     why = (
-        f" By means {len(beyond)} cell{'s' * (len(beyond) != 1)} saved more than their sampling, "
+        f" With our fast checker, {len(beyond)} {whose} means saved more than their sampling, "
         + ", ".join(f"{c} {1 - a:.2f}" for c, a, _ in beyond)
         + ": a few slow queries moved those means, not prediction."
         if beyond
         else ""
     )
     return (
-        "- **Saved time**: by Table 3's own statistic, the mean time, our accurate network saved time in "
-        f"{_of_16(fast['means'][0])} scenario–sampler pairs with our fast exact checker and in "
-        f"{_of_16(slow['means'][0])} with python-fcl on both sides, the paper's Table 3 in {papers} of "
-        f"{len(facts.own)}; by the median query, in {_of_16(fast['medians'][0])} and {_of_16(slow['medians'][0])}. "
-        f"Of our {sum(n for n, _ in counts)} savings, {sum(k for _, k in counts)} lie inside timing's own reach "
-        f"(section 6's {costs.MARK}).\n"
+        "- **Saved time**: by the median of each query's own ratio, the statistic this page reads, our accurate "
+        f"network saved time in {_of_16(fast['medians'][0])} scenario–sampler pairs with our fast checker and in "
+        f"{_of_16(slow['medians'][0])} with python-fcl on both sides"
+        + (f", {noise} of them inside timing noise (section 6's {costs.MARK})" if noise else "")
+        + f"; by mean times, Table 3's statistic, in {fast['means'][0] or 'none'} and {_of_16(slow['means'][0])}, "
+        f"the paper's Table 3 in {papers} of {len(facts.own)}.\n"
         f"- **Why**: prediction only skips the samples' checks, at most {100 * share:.0f} % of a mean query with our "
-        "fast checker: all it could save with a free network. The rest is exact checks of points "
-        f"along the roadmap's edges, never the network's in Algorithm 1 (section 5).{why}\n"
+        "fast checker, all a free network saves. The rest is exact checks along the roadmap's edges, never the "
+        f"network's in Algorithm 1 (section 5).{why}\n"
         f"- **Cost**: {_adds(tables)}."
     )
 
@@ -205,7 +206,7 @@ def edge_line(tables: Tables | None = None) -> str:
         return f"{bands[kind][0]:.2f}–{bands[kind][1]:.2f}"
 
     return (
-        f"{costs.MARK} inside timing's own reach: no clear evidence. The band depends on the statistic: for the median "
+        f"{costs.MARK} inside timing noise: no clear evidence. The band depends on the statistic: for the median "
         f"of each query's own ratio {band('own')} (twice the {costs.timing_reach(tables):.2f} by which timing one "
         f"computation twice moved it), for a ratio of means {band('means')} and for a ratio of medians "
         f"{band('medians')} (as far as that timing moved them; `docs/results.md`, its table of bands)."
@@ -386,5 +387,5 @@ def load_line() -> str:
     3's and section 5's live verdicts come from wall-clock times): the last minute's load average and the cores."""
     return (
         f"Timed at a load average of {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (the last minute's, as this "
-        "table was finished)."
+        "table was finished). Live timings on a shared machine illustrate; section 6's recorded runs decide."
     )
