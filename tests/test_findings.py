@@ -284,7 +284,7 @@ def test_table_3_against_the_papers_text_names_the_cells_its_means_do_not_give()
     assert differ["3DO sampling OB"] == pytest.approx((1 - 0.56 / 1.13, 0.58))
     assert differ["2DS sampling BT"] == pytest.approx((1 - 0.11 / 0.26, 0.74))
     assert not {"3DC-7 total BT", "2DS total G", "3DO total OB"} & set(differ)
-    assert "in 25 of its 32 cells, and not in 7 (" in findings.table3_sentence()
+    assert "in 25 of its 32 entries, and not in 7 (" in findings.table3_sentence()
 
 
 def test_the_papers_longer_cells_are_ties_by_the_rule_and_the_paper_says_slow_down():

@@ -358,11 +358,11 @@ def describe_threshold_sweep(probability: np.ndarray, valid: np.ndarray) -> str:
 
 
 def table3_sentence() -> str:
-    """In how many of Table 3's cells the text's mean times give its percentage, and what they give in the others
+    """In how many of Table 3's 32 entries the text's mean times give its percentage, and what they give in the others
     (:func:`~toolkit.experiments.paper_numbers.table3_against_text`)."""
     differ, cells = table3_against_text(), sum(len(row) for kinds in IMPROVEMENT.values() for row in kinds.values())
     listed = "; ".join(f"{cell}: {given:.0%}, Table 3 {printed:.0%}" for cell, (given, printed) in differ.items())
     return (
         f"The improvement of the mean times in the paper's text gives Table 3's percentage, within the rounding "
-        f"of both, in {cells - len(differ)} of its {cells} cells, and not in {len(differ)} ({listed})."
+        f"of both, in {cells - len(differ)} of its {cells} entries, and not in {len(differ)} ({listed})."
     )
