@@ -793,9 +793,8 @@ def test_the_race_states_ompl_s_settings_and_reconciles_its_callbacks_and_batche
     )
     rates = column("default exact: configurations a second")
     floor = [1e6 / numbers(rates[s])[0] for s in ("3DC-7", "3DC-9", "3DO")]
-    assert (
-        f"is below the {min(floor):.3f}–{max(floor):.3f} µs of [the benchmarks page](benchmarks.md)'s checker" in flat
-    )
+    said = f"is mostly below the {min(floor):.3f}–{max(floor):.3f} µs of [the benchmarks page](benchmarks.md)'s checker"
+    assert said in flat
     assert "3–4 times in all: the Results page's table in [How these results were made]" in flat
     results = " ".join((ROOT / "docs" / "results.md").read_text().split())
     assert "the fourth round of 4 December (about 2.5× faster) and the two changes of 5 December (about 1.3–1.7×" in (

@@ -198,14 +198,15 @@ def test_describe_threshold_sweep_finds_the_switch_and_the_best_threshold():
     valid = np.array([False, False, False, False, True, True, True, True, True, True])
     sentence = findings.describe_threshold_sweep(probability, valid)
     assert sentence == (
-        "Up to a threshold of 0.45, its lowest P(valid) on this grid, the model calls every sample valid: "
-        'TPR 1, TNR 0, "always valid", 60% accuracy. '
+        "Up to a threshold of 0.45, at or just under its lowest P(valid) on these samples, the model calls every "
+        'sample valid: TPR 1, TNR 0, "always valid", 60% accuracy. '
         "At 0.46 it still calls 90 % or more of the samples valid, at 0.95 only 10 % or fewer: between the two, where "
         "80 % or more of its P(valid) lie, its answers switch. "  # 9 of 10 at 0.46 or more, 1 at 0.95 or more
         'Its best accuracy over the thresholds 0, 0.01, ..., 1 is 100%, at 0.49: 40 points above "always valid".'
     )  # the lowest threshold of the sweep (toolkit.learning.metrics.SWEEP) that keeps 0.905 and rejects 0.485
     flat = findings.describe_threshold_sweep(np.full(4, 0.5), np.array([True, True, True, False]))
-    assert "Up to a threshold of 0.50, its lowest P(valid)" in flat and "At 0.50 it still calls 90 % or more" in flat
+    assert "Up to a threshold of 0.50, at or just under its lowest P(valid)" in flat
+    assert "At 0.50 it still calls 90 % or more" in flat
     assert "at 0.51 only 10 % or fewer" in flat  # the two ends differ even where every P(valid) is the same
     assert flat.endswith('is 75%, at 0.00: no threshold beats "always valid".')  # at 0.00 to 0.50 it calls all valid
     sure = findings.describe_threshold_sweep(np.array([0.2, 1.0, 1.0]), np.array([False, True, True]))

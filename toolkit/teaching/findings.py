@@ -349,9 +349,9 @@ def describe_threshold_sweep(probability: np.ndarray, valid: np.ndarray) -> str:
     )
     beats = "no threshold beats" if top <= always else f"{top - always} points above"
     return (
-        f"Up to a threshold of {every:.2f}, its lowest P(valid) on this grid, the model calls every sample valid: "
-        f'TPR 1, TNR 0, "always valid", '
-        f"{always}% accuracy. At {most:.2f} it still calls 90 % or more of the samples valid, {switch}, its answers "
+        f"Up to a threshold of {every:.2f}, at or just under its lowest P(valid) on these samples, the model calls "
+        f'every sample valid: TPR 1, TNR 0, "always valid", {always}% accuracy. '
+        f"At {most:.2f} it still calls 90 % or more of the samples valid, {switch}, its answers "
         f"switch. Its best accuracy over the thresholds 0, 0.01, ..., 1 is {top}%, at {metrics.SWEEP[best]:.2f}: "
         f'{beats} "always valid".'
     )
