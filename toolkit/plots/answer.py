@@ -22,7 +22,7 @@ from matplotlib.figure import Figure
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, series_style
-from toolkit.plots.query_ratios import NOISE_HATCH
+from toolkit.plots.query_ratios import NOISE_HATCH, hatch_round
 from toolkit.plots.timings import band_words, log_ticks
 
 MARKERS = ("s", "o", "^")  # a series' marker, beside its colour
@@ -91,22 +91,10 @@ NOISE_WORDS = "timing noise (means), {low:.2f}–{high:.2f}: timing alone moved 
 
 
 def _floor(ax, floor: tuple[float, float], tie: float) -> None:
-    """``floor`` hatched from its low end to the tie band and from the band to its high end, its ends dotted, named
-    once in the legend as chapter 04 names it (:data:`NOISE_WORDS`; reader r35d: one name for the band)."""
-    label = NOISE_WORDS.format(low=floor[0], high=floor[1]).split(":")[0]
-    for k, (low, high) in enumerate(((floor[0], 1 - tie), (1 + tie, floor[1]))):
-        ax.axhspan(
-            low,
-            high,
-            facecolor="none",
-            edgecolor=COLORS["reference"],
-            hatch=NOISE_HATCH,
-            linewidth=0,
-            zorder=0,
-            label=label if k == 0 else None,
-        )
-    for y in floor:
-        ax.axhline(y, color=COLORS["reference"], linestyle=":", linewidth=1.0, zorder=0.5)
+    """``floor`` hatched round the tie band, its ends dotted (:func:`~toolkit.plots.query_ratios.hatch_round`, as the
+    results page's Figures 2-3 draw it), named once in the legend as chapter 04 names it (:data:`NOISE_WORDS`; reader
+    r35d: one name for the band)."""
+    hatch_round(ax, floor, tie, NOISE_WORDS.format(low=floor[0], high=floor[1]).split(":")[0], NOISE_HATCH)
 
 
 def _title(ax, means) -> str:

@@ -138,10 +138,10 @@ EDGE_HATCH, NOISE_HATCH = "///", "\\\\\\"  # own_ratios' noise edge; means_grid'
 def _edge_band(ax, edge: float, tie: float) -> None:
     """Hatch ``[1 - edge, 1 + edge]`` round the tie band (``tie``): the noise edge, where a median read as a cost or a
     saving lies within twice timing's own reach of 1, told apart from the clear ones by where it stands."""
-    _hatch_round(ax, (1 - edge, 1 + edge), tie, EDGE_WORDS.format(low=1 - edge, high=1 + edge).split(":")[0])
+    hatch_round(ax, (1 - edge, 1 + edge), tie, EDGE_WORDS.format(low=1 - edge, high=1 + edge).split(":")[0])
 
 
-def _hatch_round(ax, reach: tuple[float, float], tie: float, label: str | None, hatch: str = EDGE_HATCH) -> None:
+def hatch_round(ax, reach: tuple[float, float], tie: float, label: str | None, hatch: str = EDGE_HATCH) -> None:
     """Hatch from ``reach[0]`` to the tie band and from it to ``reach[1]``, each outer edge a line (dashed under
     :data:`EDGE_HATCH`, dotted under any other), so the hatching reads at the page's width (reader r31f: it was
     faint); ``label`` names it once in the legend."""
@@ -270,7 +270,7 @@ def means_grid(
     shared by every panel (``ylim``, where given; else every point's range; ``ticks`` labelled beside its 1-2-5 steps,
     those within 25 % of 1, e.g. the tie band's edges, on the right of each row, apart from the "1"; ``row_height``
     inches a row of panels), the legend once, over the grid. ``noise``, where given, is how far timing alone moved a
-    ratio of means: hatched round the tie band in every panel (:func:`_hatch_round`; reader r31f: the text forbade
+    ratio of means: hatched round the tie band in every panel (:func:`hatch_round`; reader r31f: the text forbade
     single-cell readings the figure invited), its edges named in the legend, not on the axis (reader r33f: "1.24",
     "1" and "0.84" crowded). ``width``: inches (a page's column may be wider than a chapter's).
     The text alternative counts each series' points as the page's rule reads them
@@ -316,7 +316,7 @@ def _noise_bands(axes, noise: tuple[float, float] | None, tie: float) -> list[st
         return []
     words = NOISE_WORDS.format(low=noise[0], high=noise[1])
     for k, ax in enumerate(axes):
-        _hatch_round(ax, noise, tie, words.split(":")[0] if k == 0 else None, NOISE_HATCH)
+        hatch_round(ax, noise, tie, words.split(":")[0] if k == 0 else None, NOISE_HATCH)
     return [f"hatched the other way round the tie band, the {words}"]
 
 
