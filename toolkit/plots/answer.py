@@ -71,7 +71,7 @@ def answer_ratios(
         drawn, found = _series(ax, shown, scenarios, series, names, whiskers, hollow)
         _groups(ax, scenarios)
         every += drawn
-        ax.set_ylabel(f"time with / without\n(log; shaded: a tie, {1 - tie:.2f}–{1 + tie:.2f})")
+        ax.set_ylabel(f"time with / without\n(log axis; grey: a tie, {1 - tie:.2f}–{1 + tie:.2f})")
         points = [v for row in shown.values() for v in row.values()]
         counted.append((len(points), int(np.sum(np.array(points) <= 1 - tie))))
         parts += [dataclasses.replace(p, name=f"{_title(ax, means)}: {p.name}") for p in found]
