@@ -133,6 +133,7 @@ def test_workspace_figure_3d_draws_each_block_at_its_corners(recorded_polys):
     assert "heights stretched 3 times against widths" in alt_text(fig)
     clutter = cspace.workspace_figure(scenarios.get("3dc7").make_workspace(np.random.default_rng(1)))
     assert np.ptp(clutter.axes[0].get_box_aspect()) == pytest.approx(0) and clutter.axes[0].get_zlabel() == "z"
+    assert clutter.get_figwidth() < 0.7 * fig.get_figwidth()  # reader r36a: the clutter's cubes filled a screen
 
 
 def test_occupancy_figure_2d_is_dark_exactly_on_cells_whose_centre_is_in_a_block(square_world):

@@ -116,7 +116,10 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
         ax.set_xlabel("x")
         ax.set_ylabel("y")
     else:
-        fig = Figure(figsize=(PAGE_WIDTH, 5.6))  # as wide as the page: its text as large as it is drawn
+        extent = workspace.upper - workspace.lower  # (3,)
+        stretch = max(1, int(np.ceil(max(extent[:2]) / (3 * extent[2]))))  # r19b: the office's heights unreadable
+        # the page's width for a flat region; a cube (the clutter) at about half of it (r36a: a screen of texture)
+        fig = Figure(figsize=(PAGE_WIDTH, 5.6) if stretch > 1 else (PAGE_WIDTH * 0.6, PAGE_WIDTH * 0.6))
         ax = fig.add_subplot(projection="3d")
         for (lo, hi), color, hatch in zip(workspace.boxes, box_colors, box_hatches):
             add_box_3d(
@@ -130,8 +133,6 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
                 hatch_linewidth=1.3,  # a hatch seen on a small box, at the site's width
             ).set_gid("block")
         frame_region(ax, workspace)
-        extent = workspace.upper - workspace.lower  # (3,)
-        stretch = max(1, int(np.ceil(max(extent[:2]) / (3 * extent[2]))))  # r19b: the office's heights unreadable
         ax.set_box_aspect(extent * [1, 1, stretch])  # a flat region drawn taller, by a whole factor its z label gives
         few_ticks(ax)
         if stretch > 1:
