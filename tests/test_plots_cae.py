@@ -39,6 +39,15 @@ def test_training_curves_plot_each_history_per_epoch():
     assert ax.get_yscale() == "log" and ax.get_xlabel() == "epoch"
 
 
+def test_training_curves_tick_the_log_axis_above_the_highest_start():
+    """Reader r36b: λ = 0.961 starts at 3,830, and the axis had no tick above 2,000; ticks at 1, 2 and 4 of each
+    power of ten put one at 4,000."""
+    ax = plots.training_curves({"lambda 0.961": list(np.geomspace(3830.0, 40.0, 50))}).axes[0]
+    low, high = ax.get_ylim()
+    ticks = [t for t in ax.yaxis.get_majorticklocs() if low <= t <= high]
+    assert 4000 in ticks and 2000 in ticks and max(ticks) == 4000
+
+
 def test_error_cells_are_the_cells_whose_sign_differs(grids_and_decoded):
     grids, decoded = grids_and_decoded
     errors = error_cells(grids, decoded)
