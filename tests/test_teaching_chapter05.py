@@ -151,6 +151,22 @@ def test_screening_counts_the_points_the_lazy_prm_asked_the_model_about_on_the_p
     assert (edges, called, most, drops) == ("2", "0", "0%", "90%") and int(points) > 0
     rows = [line.split("|")[1:-1] for line in chapter05_runs.screening(result, Model(np.inf)).splitlines()[2:]]
     assert [cell.strip() for cell in rows[0]] == ["2", points, points, "100%", "90%"]  # every point called colliding
+    # reader r36e, item 2: the open text says whether a frame below the threshold was one of those points
+    from toolkit.planning.local_planner import path_at
+
+    along = path_at(robot, path, np.linspace(0.0, 1.0, 11))  # (11, dof): frames evenly spaced along the path
+    below = np.zeros(11, dtype=bool)
+    assert chapter05_runs.dips_unscreened(result, Model(-np.inf), along, below) == ""
+    below[2] = True  # 20 % along: between two of the 2 x 17 points, each 1/36 of the straight path apart
+    assert int(points) == 34 and chapter05_runs.dips_unscreened(result, Model(-np.inf), along, below) == (
+        "The frame below the threshold (20 % along the path) is not one of the 34 points screening asked the model "
+        "about, so it could not cost the path an edge."
+    )
+    along[2] = path_at(robot, path, np.array([8 / 36]))[0]  # now one of the points
+    assert chapter05_runs.dips_unscreened(result, Model(-np.inf), along, below) == (
+        "1 of the 1 frame below the threshold (20 % along the path) is among the 34 points screening asked the model "
+        "about."
+    )
 
 
 def test_the_three_strong_trainings_are_named_each_with_its_threshold():
