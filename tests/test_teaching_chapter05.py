@@ -25,7 +25,7 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
         assert " / ".join(f"{means[s]:.2f}" for s in chapter05.SAMPLERS) not in answer
     # reader r31e: the closing is not the answer again; reader r34e, lift 5: the paper's side in three sentences
     closing = chapter05.time_tables().split("<details>")[0].strip().split("\n\n")[-1]
-    assert closing.startswith("The paper's Table 3 says yes for") and closing.count(". ") == 2
+    assert closing.startswith("The paper's Table 3 says yes for") and closing.count(". ") == 1  # r36e: two sentences
     assert "only the sampling stage's verdict changes with the checker" not in tables
     # reader r31e: three sentences above a fold; the "why" bounds the saving by sampling's share times its cut
     shown = answer.split("<details>")[0].replace(chapter05.total_table(), "")
@@ -45,7 +45,7 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
         "(0.51 / 0.42 / 0.49 / 0.39); the mean sampling times its text prints (§V) give 0.43 / 0.45 / 0.44 / 0.40, "
         in tables
     )
-    assert "each within the rounding of those times" in tables
+    assert "each within the rounding of those times" in tables.split("<details>")[1]  # reader r36e, lift 1: folded
     assert "in the record's unseen 3DC-7 workspaces" in answer  # which samples the accuracy pair scores
     threshold = chapter05.recorded_threshold(chapter05.COMPILED)
     assert f"`strong --planner paper` in {chapter05.RESULTS}, threshold {threshold:.2f}" in answer  # r29e: which one
@@ -151,6 +151,22 @@ def test_screening_counts_the_points_the_lazy_prm_asked_the_model_about_on_the_p
     assert (edges, called, most, drops) == ("2", "0", "0%", "90%") and int(points) > 0
     rows = [line.split("|")[1:-1] for line in chapter05_runs.screening(result, Model(np.inf)).splitlines()[2:]]
     assert [cell.strip() for cell in rows[0]] == ["2", points, points, "100%", "90%"]  # every point called colliding
+    # reader r36e, item 2: the open text says whether a frame below the threshold was one of those points
+    from toolkit.planning.local_planner import path_at
+
+    along = path_at(robot, path, np.linspace(0.0, 1.0, 11))  # (11, dof): frames evenly spaced along the path
+    below = np.zeros(11, dtype=bool)
+    assert chapter05_runs.dips_unscreened(result, Model(-np.inf), along, below) == ""
+    below[2] = True  # 20 % along: between two of the 2 x 17 points, each 1/36 of the straight path apart
+    assert int(points) == 34 and chapter05_runs.dips_unscreened(result, Model(-np.inf), along, below) == (
+        "The frame below the threshold (20 % along the path) is not one of the 34 points screening asked the model "
+        "about, so it could not cost the path an edge."
+    )
+    along[2] = path_at(robot, path, np.array([8 / 36]))[0]  # now one of the points
+    assert chapter05_runs.dips_unscreened(result, Model(-np.inf), along, below) == (
+        "1 of the 1 frame below the threshold (20 % along the path) is among the 34 points screening asked the model "
+        "about."
+    )
 
 
 def test_the_three_strong_trainings_are_named_each_with_its_threshold():

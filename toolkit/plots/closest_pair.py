@@ -47,7 +47,7 @@ def mark_closest(scene, robot: BoxRobot, q: np.ndarray, blocks: np.ndarray, boun
     ends = np.stack([robot_point, block_point])  # (2, 3)
     scene.plot(*ends.T, color=COLORS["ink"], linewidth=1.5, gid="closest", path_effects=halo(1.5, ("free",)))
     scene.scatter(*ends.T, s=10, color=COLORS["ink"], depthshade=False, gid="closest ends")
-    said = f"{gap:.3f} apart" + ("" if bound is None else f"\n(bound ≥ {bound:.3f})")  # gap ≥ bound, both to 3
+    said = f"{gap:.3f} apart" + ("" if bound is None else f"\n(bound {bound:.3f})")  # gap ≥ bound (r36e: not "bound ≥")
     x, y, _ = proj3d.proj_transform(*ends.mean(axis=0), scene.get_proj())  # the line's middle on the picture
     away = _away_from(scene, ends.mean(axis=0), blocks)  # (2,) on the picture, from the nearest block's middle
     scene.annotate(

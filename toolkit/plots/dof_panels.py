@@ -50,9 +50,9 @@ def draw_dofs(fig: Figure, robot: BoxRobot, Q: np.ndarray, dofs: list[int], kind
             xycoords=("axes fraction", "data"),
             xytext=(1.02, end),
             textcoords=("axes fraction", "data"),
-            fontsize=8,
+            fontsize=LABEL_POINTS,  # reader r36e: at 8 points, about 8 px tall on the page
             va="center",
-            color=COLORS["ink"],  # 8-point text in a line's colour is 3.1 to 3.9:1 on white (WCAG 1.4.3 asks 4.5)
+            color=COLORS["ink"],  # text in a line's colour is 3.1 to 3.9:1 on white (WCAG 1.4.3 asks 4.5)
             annotation_clip=False,
             arrowprops=dict(  # a thin grey leader, wholly outside the axes (reader r19c: a solid stroke in the line's
                 arrowstyle="-",  # colour past x = 1 read as data, the line still rising after the path's end)
@@ -110,7 +110,8 @@ def wrap_note(robot: BoxRobot, Q: np.ndarray, angles: list[int]) -> str:
 
 
 LEADER_COLOR = COLORS["reference"]  # a name's leader: a grey no DoF's line is drawn in
-LABEL_GAP = 18.0  # points between two names at the lines' ends: an 8-point line of text (~9.4 pt tall) and air
+LABEL_POINTS = 10.0  # a name at a line's end: 14 px a line at 100 dpi, capitals ~10 px (r36e: 8 points read ~8 px)
+LABEL_GAP = 20.0  # points between two names at the lines' ends: a 10-point line of text (~11.7 pt tall) and air
 # enough that two names never read as one (reader r20c: "y" and "z" 11 points apart nearly touched; r23b: at 14 they
 #   still crowded each other, their leaders meeting)
 

@@ -141,6 +141,40 @@ def screening(result, model) -> str:
     )
 
 
+def dips_unscreened(result, model, along: np.ndarray, below: np.ndarray) -> str:
+    """§7's open line (reader r36e, item 2): whether the frames ``along (F, dof)`` that the model calls colliding,
+    ``below (F,)``, are among the points the lazy PRM's edge screening asked it about on ``result``'s path (they lie
+    a fixed step apart on each edge; the frames are evenly spaced along the whole path); empty where none is below."""
+    from toolkit import scenarios
+    from toolkit.experiments.problems import make_planner, scenario_resolution
+    from toolkit.planning.local_planner import segment_points, step_counts
+
+    frames = np.flatnonzero(below)
+    if not len(frames):
+        return ""
+    scenario = scenarios.get(SCENARIO)
+    spacing = scenario_resolution(scenario) * make_planner(scenario).params.screen_spacing
+    Q0, Q1 = result.path[:-1], result.path[1:]  # (E, dof) each
+    n = step_counts(model.robot, Q0, Q1, spacing)  # (E,) steps; n - 1 interior points each
+    points = np.concatenate(
+        [segment_points(model.robot, Q0[[e]], Q1[[e]], np.arange(1, k) / k) for e, k in enumerate(n) if k > 1]
+        or [np.zeros((0, Q0.shape[1]))]
+    )  # (P, dof)
+    screened = [bool(len(points)) and bool(np.any(np.all(np.isclose(points, along[f]), axis=1))) for f in frames]
+    where = ", ".join(f"{100 * f / (len(along) - 1):.0f} %" for f in frames)  # as the animation caption writes it
+    many = len(frames) > 1
+    if not any(screened):
+        return (
+            f"The frame{'s' * many} below the threshold ({where} along the path) {'are' if many else 'is'} not "
+            f"{'among' if many else 'one of'} the {len(points)} points screening asked the model about, so "
+            f"{'they' if many else 'it'} could not cost the path an edge."
+        )
+    return (
+        f"{sum(screened)} of the {len(frames)} frame{'s' * many} below the threshold ({where} along the path) "
+        f"{'is' if sum(screened) == 1 else 'are'} among the {len(points)} points screening asked the model about."
+    )
+
+
 KINDS = {  # §5's four kinds of sample: (the truth, the model's answer) -> the mark and its meaning
     (True, True): "circle: valid, predicted valid",
     (False, False): "diamond: in collision, predicted in collision",
