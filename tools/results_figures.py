@@ -18,8 +18,7 @@ from toolkit.plots import alt, query_ratios
 from toolkit.teaching import checker_scope, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
-from tools.results_networks import not_the_method
-from tools.results_noise import NOISE_EDGE, at_noise_edge, noise, noise_line, own_intervals, reach_of
+from tools.results_noise import NOISE_EDGE, at_noise_edge, bands, noise, noise_line, own_intervals, reach_of
 from tools.results_words import NAMES, change
 
 FIGURES = {kind: RESULTS.parent / f"results_table3_{kind}.png" for kind in ("total", "sampling")}  # Table 3's columns
@@ -139,7 +138,8 @@ def claim_markdown(text: str) -> str:
         )
     described = alt.details_html(alt.details(fig)).strip()
     picture = f"![{html.escape(alt.alt_text(fig))}]({CLAIM_FIGURE.name})"
-    return f"{lead}\n\n{picture}\n\n{caption} {noise_line(tables)}{edge_said}\n\n{described}"
+    # reader r36f, item 3: the bands near 1 directly above the first figure that draws them
+    return f"{bands(tables)}\n\n{lead}\n\n{picture}\n\n{caption} {noise_line(tables)}{edge_said}\n\n{described}"
 
 
 def furthest_apart(tables: Tables) -> tuple[str, str, float, float]:
@@ -183,12 +183,14 @@ def figure_markdown(text: str, kind: str = "total") -> str:
     described = alt.details_html(alt.details(fig)).strip()
     shown = f"![{html.escape(alt.alt_text(fig))}]({FIGURES[kind].name})\n\n{described}"
     floor = noise(parse(text))
-    said = (
+    said = (  # reader r36f, item 3: the bands once, in the table above Figure 1; Figure 3 counted as Figure 2
         f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule (0.90 or less: saved; 1.10 or "
         f"more: lost). Timing alone moved a ratio of means to {floor.means[0]:.2f}–{floor.means[1]:.2f} (the "
-        "ratio-of-means floor, hatched with dotted edges, as measured, not doubled as Figure 1's: the bands at the "
-        "top), wider than the tie band: read a row's counts together, never one cell." + KEY * (kind == "total")
+        "ratio-of-means floor, hatched with dotted edges: the bands above Figure 1), wider than the tie band: read "
+        "a row's counts together, never one cell." + KEY
+        if kind == "total"
+        else f"*{kind.capitalize()} time*, counted and hatched as in Figure 2."
     )
     tables = parse(text)
-    lead = LEADS[kind] + (f"{means_not_verdict(tables)} {not_the_method(tables)}" if kind == "total" else "")
+    lead = LEADS[kind] + (means_not_verdict(tables) if kind == "total" else "")
     return f"{lead}\n\n{shown}\n\n{said}\n\n{head}\n" + "\n".join(rows)

@@ -69,7 +69,7 @@ def noise_line(tables: Tables) -> str:
     floor = noise(tables).own
     return (
         "*Noise floor* of each query's own ratio: timing alone moved its median to "  # reader r35f, item 7: named
-        f"{floor[0]:.2f}–{floor[1]:.2f} (this and the page's other bands near 1: the second table at the top)."
+        f"{floor[0]:.2f}–{floor[1]:.2f} (this and the page's other bands near 1: the table above Figure 1)."
     )
 
 
@@ -107,7 +107,7 @@ def bands(tables: Tables) -> str:
             edges(1 - edge, 1 + edge),
             f"twice as far from 1 as timing alone moved each query's own ratio (2 × {reach_of(tables):.2f}, the "
             "floor's longer reach, taken on both sides): a saving or cost inside it is no clear evidence",
-            "Figure 1 (hatched, dashed edges); the counts above",
+            "Figure 1 (hatched, dashed edges); the summary's counts",
         ),
     ]
     floors = [
