@@ -133,7 +133,7 @@ def bands(tables: Tables) -> str:
     head = ["| band near 1 | from–to | what it judges | where this page uses it |", "| --- | --- | --- | --- |"]
     inside = 1 - tie < floor.own[0] and floor.own[1] < 1 + tie
     past = floor.means[0] < 1 - tie and 1 + tie < floor.means[1]
-    why = (
+    why = (  # reader r36f, item 3: said plainly under the table, the arithmetic of the edge in the fold
         "Figure 1 doubles its floor and Figures 2–3 do not: "
         + (
             "each query's own floor lies inside the tie band, so as measured it would set no cost or saving apart, and "
@@ -143,12 +143,15 @@ def bands(tables: Tables) -> str:
         + "it was measured once, on the run with our compiled checker, which the run with python-fcl borrows; the "
         + "ratio-of-means floor "
         + ("already reaches past the tie band, and " if past else "")
-        + f"is hatched as measured. The noise edge subtracts its reach from 1 ({1 - edge:.2f}); read as a ratio, the "
-        f"mirror of {1 + edge:.2f} would be 1 / {1 + edge:.2f} = {1 / (1 + edge):.2f}, a little narrower."
+        + "is hatched as measured."
+    )
+    mirror = (
+        f"The noise edge subtracts its reach from 1 ({1 - edge:.2f}); read as a ratio, the mirror of {1 + edge:.2f} "
+        f"would be 1 / {1 + edge:.2f} = {1 / (1 + edge):.2f}, a little narrower."
     )
     table = "\n".join(head + [f"| {' | '.join(row)} |" for row in lead])
     folded = "\n".join(head + [f"| {' | '.join(row)} |" for row in floors])
     return (
-        f'{table}\n\n<details markdown="1"><summary>The noise floors the noise edge doubles, and the two that Figures '
-        f"2–3 and the lazy PRM read</summary>\n\n{folded}\n\n{why}\n\n</details>"
+        f'{table}\n\n{why}\n\n<details markdown="1"><summary>The noise floors the noise edge doubles, and the two that '
+        f"Figures 2–3 and the lazy PRM read</summary>\n\n{folded}\n\n{mirror}\n\n</details>"
     )
