@@ -18,8 +18,7 @@ from toolkit.plots import alt, query_ratios
 from toolkit.teaching import checker_scope, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
-from tools.results_networks import not_the_method
-from tools.results_noise import NOISE_EDGE, at_noise_edge, noise, noise_line, own_intervals, reach_of
+from tools.results_noise import NOISE_EDGE, at_noise_edge, bands, noise, noise_line, own_intervals, reach_of
 from tools.results_words import NAMES, change
 
 FIGURES = {kind: RESULTS.parent / f"results_table3_{kind}.png" for kind in ("total", "sampling")}  # Table 3's columns
@@ -29,7 +28,7 @@ LEADS = {  # what each figure shows, over it
     "sampling": "**Figure 3: the sampling stage's time, by means** (Table 3's *Sampling* columns), each against "
     "Algorithm 1 without prediction, ours beside the paper's.",
 }
-TICKS = {"total": (0.9, 1.1), "sampling": (0.9, 1.1, 3.0)}  # labelled beside each figure's 1-2-5 steps
+TICKS = {"total": (), "sampling": (3.0,)}  # labelled beside each figure's 1-2-5 steps, with the floor's edges
 MARGINS = {"total": 1.15, "sampling": 1.25}  # each figure's range: its points', widened by this factor
 ROW_HEIGHTS = {"total": 2.9, "sampling": 3.2}  # inches a row of panels: each band is read to 0.9 and 1.1 (r27f)
 KEY = (  # under Figure 2 (reader r31f, item 3): its marks are not Figure 1's verdicts
@@ -88,7 +87,7 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
         {f"{NAMES[s]}: {kind} time, means": series for s, series in ratios(text, kind).items()},
         tie=findings.TIE,
         ylim=ylim,
-        ticks=TICKS[kind],
+        ticks=(*TICKS[kind], *(round(edge, 2) for edge in floor)),  # reader r36f: the hatch's edges, not the band's
         row_height=ROW_HEIGHTS[kind],
         noise=floor,
         width=WIDTH,
@@ -139,7 +138,8 @@ def claim_markdown(text: str) -> str:
         )
     described = alt.details_html(alt.details(fig)).strip()
     picture = f"![{html.escape(alt.alt_text(fig))}]({CLAIM_FIGURE.name})"
-    return f"{lead}\n\n{picture}\n\n{caption} {noise_line(tables)}{edge_said}\n\n{described}"
+    # reader r36f, item 3: the bands near 1 directly above the first figure that draws them
+    return f"{bands(tables)}\n\n{lead}\n\n{picture}\n\n{caption} {noise_line(tables)}{edge_said}\n\n{described}"
 
 
 def furthest_apart(tables: Tables) -> tuple[str, str, float, float]:
@@ -183,12 +183,14 @@ def figure_markdown(text: str, kind: str = "total") -> str:
     described = alt.details_html(alt.details(fig)).strip()
     shown = f"![{html.escape(alt.alt_text(fig))}]({FIGURES[kind].name})\n\n{described}"
     floor = noise(parse(text))
-    said = (
+    said = (  # reader r36f, item 3: the bands once, in the table above Figure 1; Figure 3 counted as Figure 2
         f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule (0.90 or less: saved; 1.10 or "
         f"more: lost). Timing alone moved a ratio of means to {floor.means[0]:.2f}–{floor.means[1]:.2f} (the "
-        "ratio-of-means floor, hatched with dotted edges, as measured, not doubled as Figure 1's: the bands at the "
-        "top), wider than the tie band: read a row's counts together, never one cell." + KEY * (kind == "total")
+        "ratio-of-means floor, hatched with dotted edges: the bands above Figure 1), wider than the tie band: read "
+        "a row's counts together, never one cell." + KEY
+        if kind == "total"
+        else f"*{kind.capitalize()} time*, counted and hatched as in Figure 2."
     )
     tables = parse(text)
-    lead = LEADS[kind] + (f"{means_not_verdict(tables)} {not_the_method(tables)}" if kind == "total" else "")
+    lead = LEADS[kind] + (means_not_verdict(tables) if kind == "total" else "")
     return f"{lead}\n\n{shown}\n\n{said}\n\n{head}\n" + "\n".join(rows)

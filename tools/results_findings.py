@@ -25,8 +25,8 @@ VERDICTS = {"no": "saves no time", "rarely": "rarely saves time", "mostly": "mos
 def lazy_prm(tables: Tables) -> str:
     """Against the lazy PRM, one sentence a network (reader r33f, item 5: "Counting ... rarely: 1 of 32" could not be
     read at once): the accurate `strong` network's cells by the ratio of the two medians, then our `paper`-preset
-    network's savings beyond that ratio's noise floor (its planner with prediction is Algorithm 1), then the
-    `strong` network's savings by means (:func:`by_means`)."""
+    network's savings beyond that ratio's noise floor (its planner with prediction is Algorithm 1); one statistic
+    (reader r36f, item 8: the `strong` network's mean saving on 2DS OB is told under "Means and medians")."""
     groups = {
         preset: grouped({s: kinds["total"] for s, kinds in recorded.median_ratios(preset, tables).items()})
         for preset in ("strong", "paper")
@@ -45,31 +45,7 @@ def lazy_prm(tables: Tables) -> str:
         "tables), it took "
         f"{told(groups['strong'])}. Our `paper`-preset network, whose planner with prediction is Algorithm 1 (so "
         f"planner and prediction both change), saved time{floor_said} in {len(beyond) or 'none'} of "
-        f"{sum(map(len, groups['paper'].values()))}{named}.{by_means(tables)}"
-    )
-
-
-def by_means(tables: Tables) -> str:
-    """Reader r33f, contradiction 5: the `strong` network's cells against the lazy PRM that saved time by means (its
-    Table 3), which a few slow queries pull, beside the verdict read by medians; empty where there are none."""
-    if not any("time improvement" in heading.lower() for heading in tables.get("strong", {})):
-        return ""
-    means = {
-        f"{NAMES.get(s, s)} {sampler}": saved
-        for s in recorded.table("strong", "time improvement", tables)
-        for sampler, saved in recorded.improvements("strong", s, recorded=tables).items()
-    }
-    saves = [  # reader r34f, contradiction 5: a ratio, then its saving, never a bare percentage
-        f"{cell}, ratio {1 - saved:.2f}, a {percent(saved)} % saving"
-        for cell, saved in means.items()
-        if change(1 - saved) == "less time"
-    ]
-    if not saves:
-        return ""
-    return (
-        " By the lazy-PRM run's means (its Table 3, 3 December; not Figure 2's, which are against Algorithm 1), "
-        f"which a few slow queries pull, the `strong` network saved 10 % or more in {len(saves)} of {len(means)} "
-        f"({'; '.join(saves)}; below, “Means and medians”)."
+        f"{sum(map(len, groups['paper'].values()))}{named}."
     )
 
 
@@ -163,8 +139,6 @@ def why_no_saving(tables: Tables) -> str:
     """The arithmetic behind the verdict (review r27f, item 7): prediction shortens only the sampling stage, a small
     share of a query; with a fast checker the network costs more than the check it replaces; with a slow one the
     sampling it saves is a small share of the query. Every number from the two runs inside Algorithm 1."""
-    fast, _ = stage_shares(tables, recorded.ALGORITHM_1)
-    slow, saved = stage_shares(tables, checker_scope.SLOW)
     costs = network_costs(tables)
     cost_3d = [c for s, c in costs.items() if s != "2ds"]
     cost_2d = f" ({costs['2ds']:.2g} in {NAMES['2ds']})" if "2ds" in costs else ""
@@ -184,11 +158,35 @@ def why_no_saving(tables: Tables) -> str:
         "cheaper check, but the sampling it shortens is too small a part of a query for that to count much."
         + "\n\n   "
         + worked_example(tables)
-        + "\n\n    In all, sampling, without prediction, "
-        f"took {span(fast, lambda f: f'{f * 100:.2g}')} % of a mean query with our compiled checker "
-        f"({slow_share(tables, slow)}, with python-fcl); with python-fcl the sampling time it saved came to "
-        f"{span(saved, lambda f: f'{f * 100:.2g}')} % of a mean query's time." + whole_moved(tables)
+        + "\n\n"
+        + share_table(tables)
+        + whole_moved(tables)
     )
+
+
+def share_table(tables: Tables) -> str:
+    """Reader r36f, item 4: the sampling stage's share of a mean query without prediction, and the sampling time
+    prediction saved as a share of that query (negative: it grew), a row per checker, the 16 cells' range in each."""
+    rows = []
+    for name, preset in (
+        ("our compiled checker", recorded.ALGORITHM_1),
+        ("python-fcl on both sides", checker_scope.SLOW),
+    ):
+        shares, saved = stage_shares(tables, preset)
+        top = max(range(len(shares)), key=shares.__getitem__)
+        times = next(t for heading, t in tables[preset].items() if "Times behind Table 3" in heading)
+        where = f"{NAMES.get(times['rows'][top][0], times['rows'][top][0])} {times['rows'][top][1]}"
+        rows.append(f"    | {name} | {between(shares)} (the most: {where}) | {between(saved)} |")
+    return (
+        "    | 16 cells, mean times | sampling's share of a query without prediction | sampling time prediction "
+        "saved, as a share of that query (below 0: it grew) |\n    | --- | --- | --- |\n" + "\n".join(rows)
+    )
+
+
+def between(shares: list[float]) -> str:
+    """``"−18 to 1.4 %"``: the range of ``shares`` in percent, two figures, a minus sign where one is negative."""
+    low, high = (f"{f * 100:.2g}".replace("-", "−") for f in (min(shares), max(shares)))
+    return f"{low} to {high} %"
 
 
 def whole_moved(tables: Tables) -> str:
@@ -200,8 +198,8 @@ def whole_moved(tables: Tables) -> str:
     if not more:
         return ""
     return (
-        f" By means the whole query saved more than that in {', '.join(more)}, moved by the parts prediction does "
-        "not shorten (below, “Where the whole query moved apart from sampling”)."
+        f"\n\n    By means, the whole query saved more in {', '.join(more)} than sampling saved in any cell, moved by "
+        "the parts prediction does not shorten (below, “Where the whole query moved apart from sampling”)."
     )
 
 
@@ -214,30 +212,13 @@ def worked_example(tables: Tables) -> str:
     top = max(range(len(saved)), key=saved.__getitem__)
     scenario, sampler = times["rows"][top][0], times["rows"][top][1]
     total = recorded.improvements(checker_scope.SLOW, scenario, recorded=tables)[sampler]
-    cut = int(percent(saved[top] / slow[top])) / 100  # reader r35f, contradiction 4: the cut as Figure 3 gives it
+    cut = saved[top] / slow[top]  # reader r36f, contradiction 1: unrounded, so the product is the share saved
     return (
         f" Worked through for {NAMES.get(scenario, scenario)} {sampler} with python-fcl: sampling took "
-        f"{slow[top]:.3f} of a mean query, the network cut it by {percent(cut)} % (Figure 3: {1 - cut:.2f}), and "
-        f"{slow[top]:.3f} × {cut:.2f} ≈ {slow[top] * cut:.3f} of the query; Table 3 measured a {percent(total)} % "
+        f"{slow[top]:.3f} of a mean query, the network cut it by {cut * 100:.1f} % (Figure 3: {1 - cut:.2f}), and "
+        f"{slow[top]:.3f} × {cut:.3f} ≈ {slow[top] * cut:.3f} of the query; Table 3 measured a {percent(total)} % "
         "saving of the whole query."
     )
-
-
-SHARES = ((0.1, "a tenth"), (0.2, "a fifth"), (0.25, "a quarter"), (1 / 3, "a third"), (0.5, "half"))
-
-
-def slow_share(tables: Tables, shares: list[float]) -> str:
-    """Review r30f, contradiction 3: the sampling stage's share of a query with python-fcl, its top said in words and
-    named by its cell ("0.35 % to about a third in 3DO BT"), so that a percentage on the page means a saving only."""
-    times = next(t for heading, t in tables[checker_scope.SLOW].items() if "Times behind Table 3" in heading)
-    top = max(range(len(shares)), key=shares.__getitem__)
-    scenario, sampler = times["rows"][top][0], times["rows"][top][1]
-    return f"{min(shares) * 100:.2g} % to about {share_word(shares[top])} in {NAMES.get(scenario, scenario)} {sampler}"
-
-
-def share_word(share: float) -> str:
-    """``0.31`` as ``"a third"``: a share said in words, the nearest of :data:`SHARES`."""
-    return min(SHARES, key=lambda s: abs(s[0] - share))[1]
 
 
 class Apart(NamedTuple):

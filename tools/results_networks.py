@@ -1,7 +1,6 @@
 """The paper's two networks on the results page (``docs/results.md``), Tables 1 and 2, every number computed from
 the tables the page prints: the CAE against answering "free" everywhere (:func:`cae`), the MLP against a coin flip
-and against answering "valid" to every sample (:func:`mlp`, :func:`unseen_table`), and why our `paper`-preset
-network's savings against Algorithm 1 are not the method working (:func:`not_the_method`).
+and against answering "valid" to every sample (:func:`mlp`, :func:`unseen_table`).
 :mod:`tools.results_findings` writes them among the page's findings.
 
 Table 2's accuracy, TPR and TNR imply the share of valid samples in the paper's tests (:func:`implied_valid_share`),
@@ -15,7 +14,7 @@ from typing import NamedTuple
 
 from toolkit.teaching import recorded
 from toolkit.teaching.recorded import Tables
-from tools.results_words import NAMES, change, percent, span
+from tools.results_words import NAMES, percent, span
 
 
 def cae_unseen(tables: Tables) -> tuple[list[float], list[float], float]:
@@ -102,34 +101,6 @@ def mlp(tables: Tables) -> str:
         f"{span(balanced(recorded.ALGORITHM_1))} %. On the validity-blind samples the paper describes, which chapter "
         f"04 quotes, the `paper` MLP is right {span(blind)} %, answering “valid” to every sample {span(always)} %."
         + trivial
-    )
-
-
-def not_the_method(tables: Tables) -> str:
-    """Reader r31f, item 2: why our `paper`-preset network saves time against Algorithm 1 in some cells, in one
-    sentence read from its Table 2 (unseen workspaces): where its MLP gives one answer to every sample, and how few
-    valid samples it keeps elsewhere."""
-    rows = recorded.table("paper", "MLP accuracy", tables)
-    rates = {NAMES.get(s, s): (recorded.ours(r["Unseen TPR"]), recorded.ours(r["Unseen TNR"])) for s, r in rows.items()}
-    one = [name for name, (tpr, tnr) in rates.items() if min(tpr, tnr) == 0]
-    rest = [f"{name} (a TPR of {percent(tpr)} %)" for name, (tpr, tnr) in rates.items() if name not in one]
-    listed = ", ".join(one[:-1]) + " and " * (len(one) > 1) + "".join(one[-1:])
-    read = [
-        change(1 - v)
-        for scenario in recorded.table("paper", "time improvement", tables)
-        for v in recorded.improvements("paper", scenario, recorded=tables).values()
-    ]
-    return (
-        f"Our `paper`-preset network saved time against Algorithm 1 in {read.count('less time')} of {len(read)} "
-        "cells, but not by the method: its MLP gives one answer to "
-        f"every sample in {listed or 'no scenario'}, so Algorithm 1 either skips every sample's check or starts from "
-        "an empty roadmap and first tries the straight edge from start to goal"
-        + (
-            f", and it keeps few valid samples in {', '.join(rest)}, a smaller roadmap, not a better one"
-            if rest
-            else ""
-        )
-        + "."
     )
 
 

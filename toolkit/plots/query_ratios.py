@@ -115,8 +115,7 @@ def own_ratios(
 
 def _own_axis(ax, drawn: list[float], tie: float, edges: list[float]) -> None:
     """:func:`own_ratios`' log axis over every ``drawn`` value, the tie band and the noise edge's ``edges``, labelled at
-    its 1-2-5 steps, :data:`BELOW_1` and ``edges`` (reader r32f: the hatched band's edges unlabelled), the tie band's
-    edges on the right (:func:`_band_edges`)."""
+    its 1-2-5 steps, :data:`BELOW_1` and ``edges`` (reader r32f: the hatched band's edges unlabelled)."""
     ax.set_yscale("log")
     ax.set_ylim(min(*drawn, *edges, 1 - tie) / 1.15, max(*drawn, *edges, 1 + tie) * 1.15)
     log_ticks(ax)
@@ -125,7 +124,7 @@ def _own_axis(ax, drawn: list[float], tie: float, edges: list[float]) -> None:
     shown = sorted({round(s, 2) for s in every if low <= s <= high})
     ax.set_yticks(shown, [f"{s:g}" for s in shown])
     ax.yaxis.set_minor_locator(NullLocator())  # review r27f: an unlabelled tick under 0.7 read as a missing label
-    _band_edges(ax, [1 - tie, 1 + tie], centred=True)
+    # reader r36f: no tie-band edges on the right, 15 px from the noise edge's on the left; the legend names the band
 
 
 NOISE_WORDS = (  # means_grid's hatching, told apart from own_ratios' (reader r32f: one hatch meant two bands)
@@ -271,8 +270,9 @@ def means_grid(
     those within 25 % of 1, e.g. the tie band's edges, on the right of each row, apart from the "1"; ``row_height``
     inches a row of panels), the legend once, over the grid. ``noise``, where given, is how far timing alone moved a
     ratio of means: hatched round the tie band in every panel (:func:`hatch_round`; reader r31f: the text forbade
-    single-cell readings the figure invited), its edges named in the legend, not on the axis (reader r33f: "1.24",
-    "1" and "0.84" crowded). ``width``: inches (a page's column may be wider than a chapter's).
+    single-cell readings the figure invited), named in the legend; pass its edges in ``ticks`` to label them on the
+    right (reader r33f: on the left "1.24", "1" and "0.84" crowded; r36f: the tie band's edges there read as its).
+    ``width``: inches (a page's column may be wider than a chapter's).
     The text alternative counts each series' points as the page's rule reads them
     (:func:`toolkit.util.verdicts.time_verdict` on the ratio shown to two decimals)."""
     names = list(dict.fromkeys(name for series in panels.values() for name in series))
@@ -320,16 +320,16 @@ def _noise_bands(axes, noise: tuple[float, float] | None, tie: float) -> list[st
     return [f"hatched the other way round the tie band, the {words}"]
 
 
-def _band_edges(ax, ticks: list[float], size: float = 8, centred: bool = False) -> None:
-    """``ticks`` near 1 (the tie band's edges) labelled on the right of ``ax``, apart from the "1" on the left; those
+def _band_edges(ax, ticks: list[float], size: float = 8) -> None:
+    """``ticks`` near 1 (a band's edges) labelled on the right of ``ax``, apart from the "1" on the left; those
     above 1 written above their tick, those below under it, so two edges never touch (review r30f: Figure 3's "1.1"
     and "0.9" did)."""
     edges = ax.secondary_yaxis("right")
     edges.set_yticks(ticks, [f"{t:g}" for t in ticks])
     edges.yaxis.set_minor_locator(NullLocator())
     edges.tick_params(labelsize=size, length=2, pad=1)
-    for label, t in zip(edges.get_yticklabels(), ticks):  # ``centred``: on the band's edges (reader r33f: Figure 1's
-        label.set_verticalalignment("center" if centred else "bottom" if t > 1 else "top")  # read as the dashed lines)
+    for label, t in zip(edges.get_yticklabels(), ticks):
+        label.set_verticalalignment("bottom" if t > 1 else "top")
 
 
 def _means_panel(ax, title: str, series: Mapping[str, Mapping[str, float]], names, samplers, tie: float) -> str:
