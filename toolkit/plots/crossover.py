@@ -2,8 +2,8 @@
 
 :func:`crossover` draws the sweeps of :func:`toolkit.experiments.crossover.crossover` (its
 results dict, as ``crossover.json`` holds it): one panel per variable that makes an exact check
-dear, microseconds per configuration on log-log axes, shaded where the network is the cheaper
-check by more than the band in which a timing moves (the verdict "network cheaper" of
+dear, microseconds per configuration on log-log axes, the gap between its curve and the compiled one shaded where
+the network is the cheaper check by more than the band in which a timing moves (the verdict "network cheaper" of
 :func:`toolkit.util.verdicts.cost_verdict`, the words the tables and the conclusion use: a point
 they call "can't tell" is not shaded) and a dotted line wherever its curve crosses an exact one (twice, where the
 two costs are close: each crossing is marked). On a 3DC scenario's panels a grey strip marks where the paper's own
@@ -17,12 +17,14 @@ from __future__ import annotations
 from typing import Any
 
 import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.colors import to_rgba
 from matplotlib.figure import Figure
 from matplotlib.ticker import NullFormatter, NullLocator
 
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
+from toolkit.plots.tick_rows import name_ticks
 from toolkit.util.verdicts import CHEAPER, CLOSE, NEAR, cost_verdict
 
 STYLES = {  # checker -> (marker and line, colour, name)
@@ -78,21 +80,39 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
     fig.suptitle(  # the network's size said on the figure (reader r27f: "preset paper" alone was easy to miss)
         f"Cost per check: {scenario_name(results['scenario'])}, {network}{quick}\n{said}", fontsize=11
     )
-    handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # one legend, below
-    room = (0, (0.22 * len(handles) + 0.1) / fig.get_figheight(), 1, 1)  # below: a line a legend entry
-    fig.legend(  # its top at the panels' foot (reader r29f: it sat far below them)
-        handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, room[1]), fontsize=9, frameon=False
-    )
+    handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # one legend, on top
+    below_title = 1 - TITLE_INCHES / fig.get_figheight()  # reader r36g: below the panels it fell on the next screen
+    legend = fig.legend(  # under the title, the panels under it (reader r29f: far from the panels it was missed)
+        handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, below_title), fontsize=9,
+        frameon=False,
+    )  # fmt: skip
+    under = legend.get_window_extent(FigureCanvasAgg(fig).get_renderer()).y0  # the legend's foot, pixels
+    room = (0, 0, 1, under / fig.bbox.height)  # the panels below it
     fig.tight_layout(rect=room)
     for ax, (key, sweep) in zip(axes, sweeps.items()):
-        _name_ticks(ax, np.asarray(sweep["values"], dtype=float), TICKS.get(key))
+        name_ticks(ax, np.asarray(sweep["values"], dtype=float), TICKS.get(key), TICK_POINTS)
     fig.tight_layout(rect=room)  # again, for the slanted labels' height
+    _close_up(fig, under)
     text = f"Cost per configuration of the exact and the learned check, {results['scenario']}, preset "
     text += f"{results['preset']}{quick}, microseconds on log axes. {when}"
     text += PAPER_SAID if paper and set(PAPER_SCENES) & set(sweeps) else ""
     text += CALLS_SAID if paper and "batch" in sweeps else ""
     parts = [_in_a_table(sweep) for sweep in sweeps.values()]
     return describe(fig, text + " ".join(_in_words(sweep) for sweep in sweeps.values()), parts)
+
+
+TITLE_INCHES = 0.55  # the two-line title's height: the legend starts under it
+
+
+def _close_up(fig: Figure, under: float) -> None:
+    """Lay the panels out again with their tops (titles included) a little under ``under`` pixels, the legend's foot:
+    ``tight_layout`` leaves more room above the top row than its padding says (reader r36g: the gap split the legend
+    from the panels)."""
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    top = max(ax.get_tightbbox(renderer).y1 for ax in fig.axes if ax.get_visible())  # type: ignore[union-attr]
+    room = (under - 0.1 * fig.dpi - top) / fig.bbox.height  # a tenth of an inch under the legend
+    if room > 0:
+        fig.tight_layout(rect=(0, 0, 1, under / fig.bbox.height + room))
 
 
 PAPER_SCENES = {"obstacles": ((110, 125),), "links": ((2, 2), (4, 4))}  # the paper's 3DC: 110-125 blocks; 2, 4 links
@@ -208,11 +228,7 @@ def _panel(ax, sweep: dict) -> None:
         ax.plot(x, y, style, color=colour, label=LEGEND[name], clip_on=False, **MARKS[name])  # edge markers whole
     bounds = _halfway(x)  # (V+1,)
     for n, i in enumerate(np.flatnonzero(cheaper)):  # a band round each value the verdict calls "network cheaper"
-        legend = SHADED if n == 0 else None
-        span = bounds[i : i + 2]  # (2,) its band: the panel's whole height (a shaded area, not a mark)
-        band = ax.fill_between(
-            span, 0, 1, transform=ax.get_xaxis_transform(), color=COLORS["learned"], alpha=0.2, lw=0, label=legend
-        )
+        band = _gap(ax, sweep, bounds[i : i + 2], SHADED if n == 0 else None)
         band.set_gid(CHEAPER)
     for n, i in enumerate(np.flatnonzero(_close(sweep))):  # reader r24c: and each value it calls "can't tell"
         band = ax.fill_between(
@@ -238,12 +254,28 @@ def _panel(ax, sweep: dict) -> None:
     ax.set_xscale("log")
     ax.set_yscale("log")
     _room_for_marks(ax, sweep)
-    ax.set_xticks(x, [f"{v:,.0f}" for v in x])  # named once laid out, where they keep apart (_name_ticks)
+    ax.set_xticks(x, [f"{v:,.0f}" for v in x])  # named once laid out, where they keep apart (name_ticks)
     ax.yaxis.set_minor_locator(NullLocator())
     _plain_log_ticks(ax)
     ax.set_xlabel(sweep["label"])
     ax.set_ylabel("µs per configuration")
     ax.tick_params(labelsize=TICK_POINTS)
+
+
+def _gap(ax, sweep: dict, span: np.ndarray, label: str | None):
+    """The area between the default exact curve and the network's across ``span (2,)``, cut to the values measured
+    (reader r36g: a band of the panel's whole height read as the panel's background, not as the network's saving);
+    a lone value's band is the panel's height."""
+    x = np.asarray(sweep["values"], dtype=float)  # (V,)
+    look = dict(color=COLORS["learned"], alpha=0.3, lw=0, label=label, zorder=0.6)
+    if len(x) == 1:
+        return ax.fill_between(span, 0, 1, transform=ax.get_xaxis_transform(), **look)
+    grid = np.geomspace(max(span[0], x[0]), min(span[1], x[-1]), 24)  # (24,) along the log axis
+
+    def curve(name: str) -> np.ndarray:  # (24,) the checker's cost, log-log between its measured values
+        return np.exp(np.interp(np.log(grid), np.log(x), np.log(np.asarray(sweep[f"{name}_us"], float))))
+
+    return ax.fill_between(grid, curve("learned"), curve("exact"), **look)
 
 
 TICK_POINTS = 9
@@ -326,61 +358,3 @@ def _halfway(x: np.ndarray) -> np.ndarray:
         return np.array([x[0] / 1.5, x[0] * 1.5])
     middle = np.sqrt(x[1:] * x[:-1])  # (V-1,)
     return np.concatenate([[x[0] ** 2 / middle[0]], middle, [x[-1] ** 2 / middle[-1]]])
-
-
-def _tick_labels(x: np.ndarray, px: np.ndarray, char_px: float) -> list[str]:
-    """The measured values ``x (n,)`` as tick labels at ``px (n,)`` pixels along the axis, a label left out where
-    less than one and a half digits' width (``char_px`` each) would part it from the one before it; the last value
-    is always named. Where the plain numbers (``1,000``) would leave one out, thousands are written short
-    (``1k``, ``10k``: reader r12a found no 1,000 on the batch panel), and only what still crowds is left out."""
-    for labels in ([f"{v:,.0f}" for v in x], [_short(v) for v in x]):
-        kept = _kept_apart(labels, px, [char_px * (len(label) / 2 + 0.75) for label in labels])
-        if all(kept):
-            break
-    return kept
-
-
-def _short(value: float) -> str:
-    """A tick's value in few characters: ``1k`` for 1,000, ``10k`` for 10,000; below 1,000 (or not whole thousands)
-    the plain number."""
-    return f"{value / 1000:g}k" if value >= 1000 and value % 1000 == 0 else f"{value:,.0f}"
-
-
-def _kept_apart(labels: list[str], px: np.ndarray, room: list[float]) -> list[str]:
-    """``labels`` with those left out (``""``) that would come closer to the one before than their ``room`` (n,)
-    pixels each allows (half a label's width, and half the gap wanted between two)."""
-    shown = [0]
-    for k in range(1, len(labels)):
-        if px[k] - px[shown[-1]] >= room[k] + room[shown[-1]]:
-            shown.append(k)
-        elif k == len(labels) - 1:  # the last value is named: the one before it gives way
-            shown[-1] = k
-    return [label if k in shown else "" for k, label in enumerate(labels)]
-
-
-def _name_ticks(ax, measured: np.ndarray, chosen: tuple[float, ...] | None = None) -> None:
-    """Name the measured values ``measured (n,)`` of a laid-out panel under their ticks, or of them only those in
-    ``chosen`` (reader r29f: the obstacles' 350 touched 500; reader r30f: the others get no tick): level where the
-    labels keep apart as drawn, slanted where level ones would crowd (reader r20d: 1,280 triangles had no number),
-    and only what still crowds slanted gets a short, unnamed tick."""
-    picked = measured[np.isin(measured, chosen)] if chosen else measured
-    x = picked if len(picked) >= 2 else measured  # (m,) the values to name
-    px = ax.transData.transform(np.column_stack([x, np.ones_like(x)]))[:, 0]  # (m,) where each tick lies, pixels
-    char_px = TICK_POINTS * ax.figure.dpi / 72 * 0.64  # a digit's width at the tick labels' size
-    labels = _tick_labels(x, px, char_px)
-    slanted = not all(labels)
-    if slanted:  # steep, neighbours part by a line's height, not a label's width
-        labels = _kept_apart([f"{v:,.0f}" for v in x], px, [0.6 * char_px / 0.64] * len(x))
-    named = x[[bool(t) for t in labels]]
-    ax.set_xticks(named, [t for t in labels if t])  # the values named
-    ax.set_xticks(x[~np.isin(x, named)], minor=True)  # crowded out of a name: a short tick; not chosen: none (r30f)
-    ax.xaxis.set_minor_formatter(NullFormatter())
-    if slanted:
-        ax.tick_params(axis="x", labelrotation=SLANT)
-        for label in ax.get_xticklabels():
-            label.set_horizontalalignment("right")
-            label.set_rotation_mode("anchor")  # the label's end at its tick, whatever the angle
-
-
-SLANT = 75  # degrees: two labels a line's height apart along the axis lie a line's height apart across their slant
-# times sin 75° (reader r27f: at 45° the obstacles' 350 and 500 nearly touched; reader r33g: at 60° almost)

@@ -76,7 +76,10 @@ def race_medians(
             x = [batched[s][planner] for s in scenarios]
             ax.plot(x, y, marker, color=colour, markersize=9, ls="none", mfc=COLORS["free"], mew=1.6, alpha=0.6,
                     label=f"{planner}, checks batched (estimated)", clip_on=False)  # fmt: skip
-            # reader r34g, race figure b: an estimate drawn lighter than a timing, and named so
+            # reader r34g, race figure b: an estimate drawn lighter than a timing, and named so; r36g: and marked so
+            for at, row in zip(x, y, strict=True):
+                ax.annotate("est.", (at, row), xytext=(0, 6), textcoords="offset points", ha="center", va="bottom",
+                            fontsize=POINTS - 2, color=colour)  # fmt: skip
     ax.set_xscale("log")
     low, high = ax.set_xlim(ax.get_xlim()[0], 1.5 * ax.get_xlim()[1])  # reader r35g, race figure c: room past 197 ms
     ticks = [m * 10.0**e for e in range(-1, 5) for m in (1, 2, 5) if low <= m * 10.0**e <= high]
@@ -87,6 +90,8 @@ def race_medians(
     ax.set_yticks(tagged, ["OMPL", "ours"] * len(scenarios), minor=True)
     ax.tick_params(axis="y", which="minor", labelsize=POINTS, labelcolor=COLORS["rejected"], length=2)  # r34g: legible
     ax.tick_params(axis="y", which="major", length=0, pad=POINTS * 3.6)  # the scenario left of its two rows' tags
+    for name in ax.get_yticklabels():  # reader r36g, race figure a: the scenario a heading, not a third row's tag
+        name.set_fontweight("bold")
     ax.set_ylim(len(scenarios) - 0.5, -0.5)  # the first scenario on top
     ax.grid(axis="x", color=COLORS["block"], lw=0.6, zorder=0)
     for between in np.arange(len(scenarios) - 1) + 0.5:  # reader r31f: a line between scenarios, the dots in rows
