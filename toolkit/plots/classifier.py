@@ -286,11 +286,11 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     cross = dict(markersize=10, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True))  # over the path (5)
     ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **cross)  # as the maps' squares (r30c)
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
-    label = dict(textcoords="offset points", va="bottom", fontsize=9, zorder=7, bbox=box)
-    for node in nodes[~nodes_valid][:3]:  # a few named in words too, above-left (r33c: above-right hid); in the left
-        side = (10, "left") if node[x] < np.mean(ax.get_xlim()) else (-10, "right")  # half above-right,
-        arrow = dict(arrowstyle="-", color=COLORS["ink"], lw=0.8)  # r36c: at 10 points it hid the line and 2 nodes
-        ax.annotate("in collision", node[[x, y]], xytext=(3 * side[0], 28), ha=side[1], arrowprops=arrow, **label)
+    label = dict(textcoords="offset points", va="top", fontsize=9, zorder=7, bbox=box)
+    arrow = dict(arrowstyle="-", color=COLORS["ink"], lw=0.8)  # a leader line to the node it names
+    for node in nodes[~nodes_valid][:3]:  # a few named in words too, below, towards the middle (r36c: just above
+        side = (30, "left") if node[x] < np.mean(ax.get_xlim()) else (-30, "right")  # it, the label hid the dotted
+        ax.annotate("in collision", node[[x, y]], xytext=(side[0], -30), ha=side[1], arrowprops=arrow, **label)  # line
     ax.plot(
         path[:, x],
         path[:, y],
