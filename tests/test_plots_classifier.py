@@ -7,7 +7,7 @@ import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
 from matplotlib.collections import LineCollection, PathCollection
-from matplotlib.colors import to_hex, to_rgba
+from matplotlib.colors import to_hex, to_rgb, to_rgba
 from matplotlib.contour import ContourSet
 
 from toolkit.geometry import robots
@@ -160,15 +160,20 @@ def test_roc_points_are_fpr_and_tpr_at_each_threshold(probability, valid):
 def test_probability_map_shows_the_probabilities_the_boundary_and_exactly_the_mistakes(grid, probability, valid):
     threshold = 0.45
     ax = pc.probability_map(probability, valid, grid, threshold=threshold).axes[0]
-    (image,) = ax.images
+    image, tint = ax.images  # P(valid), then its wrong cells tinted (reader r36c: circles alone hid 64 % wrong)
     np.testing.assert_array_equal(image.get_array(), probability.T)  # origin lower: row = second DoF
     assert image.origin == "lower" and tuple(image.get_extent()) == grid.extent
     dangerous, conservative = (probability >= threshold) & ~valid, (probability < threshold) & valid
+    tinted = np.asarray(tint.get_array()).transpose(1, 0, 2)  # (nx, ny, RGBA)
+    np.testing.assert_array_equal(tinted[..., 3] > 0, dangerous | conservative)
+    np.testing.assert_allclose(tinted[conservative][:, :3], np.tile(to_rgb(pc.CONSERVATIVE), (conservative.sum(), 1)))
+    np.testing.assert_allclose(tinted[dangerous][:, :3], np.tile(to_rgb(pc.DANGEROUS), (dangerous.sum(), 1)))
     assert dangerous.sum() > 0 and conservative.sum() > 0  # the test means something
     assert_squares_mark(ax, grid, dangerous, block_of_squares(ax.figure))
     assert_squares_mark(ax, grid, conservative, block_of_squares(ax.figure, "circles"), label="valid rejected")
     marks = {c.get_label(): len(c.get_offsets()) for c in cell_marks.cell_marks(ax)}  # r34c: marks counted too
     k = {"squares": block_of_squares(ax.figure), "circles": block_of_squares(ax.figure, "circles")}
+    assert f"{(dangerous.sum() + conservative.sum()) / dangerous.size:.0%} of the map wrong\n" in ax.get_title()
     assert ax.get_title().endswith(
         f"{dangerous.sum()} dangerous cells: {marks['invalid kept (dangerous)']} squares, 1 per {k['squares']} x "
         f"{k['squares']}-cell tile\n{conservative.sum()} conservative cells: {marks['valid rejected']} circles, 1 per "
@@ -218,9 +223,9 @@ def test_probability_maps_side_by_side_each_with_its_own_threshold(grid, probabi
     maps = {"paper": probability, "strong": 1 - probability}
     fig = pc.probability_maps(maps, valid, grid, thresholds={"paper": 0.3, "strong": 0.6})
     axes = [ax for ax in fig.axes if ax.images and ax.get_label() != "<colorbar>"]
-    assert [ax.get_title().split("\n")[0] for ax in axes] == [
-        "paper: P(valid), threshold 0.30",
-        "strong: P(valid), threshold 0.60",
+    assert [ax.get_title().split("\n")[0].split(", ")[:2] for ax in axes] == [  # then the share wrong (r36c)
+        ["paper: P(valid)", "threshold 0.30"],
+        ["strong: P(valid)", "threshold 0.60"],
     ]
     for ax, p, t in zip(axes, maps.values(), (0.3, 0.6)):
         np.testing.assert_array_equal(ax.images[0].get_array(), p.T)

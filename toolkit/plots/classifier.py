@@ -27,7 +27,7 @@ from typing import Any
 
 import numpy as np
 from matplotlib.collections import LineCollection
-from matplotlib.colors import ListedColormap
+from matplotlib.colors import ListedColormap, to_rgb
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
@@ -55,6 +55,7 @@ ZORDER = {1: 2.8, 3: 3.0}  # over the lines (2: the boundary), squares over circ
 PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
 HATCH = COLORS["c_obstacle"]  # the C-obstacles' hatch on a P(valid) map: light, seen on its black and its greys
+TINT = 0.5  # a P(valid) map's wrong cells tinted in their kind's colour at this opacity, their grey still read
 BLOCKS = {1: 5, 3: 10}  # tiles a side on every map: a 100-cell map's circles one per 20 x 20 cells, squares 10 x 10
 
 
@@ -89,11 +90,12 @@ def probability_maps(
     k = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
     for ax, (name, probability), t in zip(axes, probabilities.items(), cut.values()):  # the marks counted (r34c)
         tiles = marks_counted(confusion_counts(np.asarray(probability) >= t, valid), ax, k)
-        ax.set_title(f"{name}: P(valid), threshold {t:.2f}\n{tiles}", fontsize=10)
+        ax.set_title(f"{name}: P(valid), threshold {t:.2f}, {tiles}", fontsize=10)  # r36c: "64% of the map wrong"
     _legend(fig, _mistake_handles(k), above=len(cut) > 1)  # r26c: under the second map, a screen below the first
     keep_on_side(fig, grid)  # again, the maps as the legend left them (r34c: fitted before, marks met the outlines)
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
-    text += "configurations; grey, 0 black to 1 white) with the true C-obstacles outlined and hatched, the threshold's "
+    text += "configurations; grey, 0 black to 1 white; wrong cells tinted, free ones rejected sky blue, obstacle cells "
+    text += "kept vermillion) with the true C-obstacles outlined and hatched, the threshold's "
     text += f"contour dotted, dangerous mistakes as squares{_per_block(k[3])} and conservative ones as circles"
     return describe(fig, text + f"{_per_block(k[1])}. " + "; ".join(said) + ".", parts)
 
@@ -235,16 +237,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     ``mistakes``, dangerous cells as squares and conservative ones as circles, sparse enough that the grey between
     them is P(valid) (review r18b: a hatch of dots over the `paper` map's rejected free space hid its grey)."""
     probability = _on_grid(probability, grid, "probability")
-    image = ax.imshow(
-        probability.T,
-        origin="lower",
-        extent=grid.extent,
-        cmap=GREY_CMAP,
-        vmin=0,
-        vmax=1,
-        aspect="auto",
-        interpolation="nearest",
-    )
+    image = ax.imshow(probability.T, cmap=GREY_CMAP, vmin=0, vmax=1, **_cells(grid))
     if probability.min() < threshold <= probability.max():
         line = ax.contour(*grid.axes, probability.T, levels=[threshold], colors=COLORS["ink"], linestyles=":")
         line.set_linewidth(cut)
@@ -254,8 +247,17 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     draw_cell_hatch(ax, grid, ~_on_grid(valid, grid, "valid"), color=HATCH)  # the truth without reading the grey
     codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
     if mistakes:  # fit_cell_marks sizes them, no two closer than their pitch
+        tint = np.zeros((*codes.shape, 4))  # (nx, ny, RGBA) each wrong cell in its kind's colour, the grey showing
+        for code in MISTAKE_MARKERS:  # through (reader r36c: 22 circles on a flat grey hid 64 % of the map wrong)
+            tint[codes == code] = (*to_rgb(ANSWER_COLORS[code]), TINT)
+        ax.imshow(tint.transpose(1, 0, 2), **_cells(grid))
         _draw_mistakes(ax, grid, codes)
     return image
+
+
+def _cells(grid: CSpaceSlice) -> dict[str, Any]:
+    """imshow's options for an image of one value per cell of ``grid`` (its array transposed: y up)."""
+    return dict(origin="lower", extent=grid.extent, aspect="auto", interpolation="nearest")
 
 
 def _draw_mistakes(ax, grid: CSpaceSlice, codes) -> None:
@@ -284,10 +286,11 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     cross = dict(markersize=10, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True))  # over the path (5)
     ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **cross)  # as the maps' squares (r30c)
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
-    label = dict(textcoords="offset points", va="bottom", fontsize=9, zorder=7, bbox=box)
-    for node in nodes[~nodes_valid][:3]:  # a few named in words too, above-left (r33c: above-right hid); in the left
-        side = (10, "left") if node[x] < np.mean(ax.get_xlim()) else (-10, "right")  # half above-right,
-        ax.annotate("in collision", node[[x, y]], xytext=(side[0], 10), ha=side[1], **label)  # in the axes (r34c)
+    label = dict(textcoords="offset points", va="top", fontsize=9, zorder=7, bbox=box)
+    arrow = dict(arrowstyle="-", color=COLORS["ink"], lw=0.8)  # a leader line to the node it names
+    for node in nodes[~nodes_valid][:3]:  # a few named in words too, below, towards the middle (r36c: just above
+        side = (30, "left") if node[x] < np.mean(ax.get_xlim()) else (-30, "right")  # it, the label hid the dotted
+        ax.annotate("in collision", node[[x, y]], xytext=(side[0], -30), ha=side[1], arrowprops=arrow, **label)  # line
     ax.plot(
         path[:, x],
         path[:, y],
@@ -310,16 +313,7 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
 def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):
     """Each cell coloured by its kind of answer (``ANSWER_COLORS``), and the boundary."""
     codes = answer_codes(_on_grid(predicted_valid, grid, "predictions"), _on_grid(valid, grid, "valid"))
-    image = ax.imshow(
-        codes.T,
-        origin="lower",
-        extent=grid.extent,
-        cmap=ListedColormap(ANSWER_COLORS),
-        vmin=-0.5,
-        vmax=len(ANSWERS) - 0.5,
-        aspect="auto",
-        interpolation="nearest",
-    )
+    image = ax.imshow(codes.T, cmap=ListedColormap(ANSWER_COLORS), vmin=-0.5, vmax=len(ANSWERS) - 0.5, **_cells(grid))
     _draw_boundary(ax, valid, grid)
     _draw_mistakes(ax, grid, codes)  # as on a P(valid) map (r27c: a circle a cell hid the sky blue under a carpet)
     return image

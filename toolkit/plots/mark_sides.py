@@ -71,7 +71,8 @@ def keep_on_side(fig: Figure, grid: CSpaceSlice) -> None:
             mark.set_offsets(first + np.clip(at, inset, np.array(side.shape) - 1 - inset) * cell)
 
 
-GAP = 2.5  # points between a mark's rings and its outline's middle: the outline's half width, its rings included (2.2)
+GAP = 4.0  # points between a mark's rings and its outline's middle: the outline's half width, its rings included (2.2),
+# and a gap one sees at the site's width (reader r36c: at 2.5, squares read as lying on the yaw x joint band's outline)
 _FROM: WeakKeyDictionary[PathCollection, np.ndarray] = WeakKeyDictionary()  # the cells each mark was fitted on
 
 
@@ -107,14 +108,17 @@ def outside_area(at: np.ndarray, side: np.ndarray, half: float) -> float:
 
 
 def marks_counted(counts: Mapping[str, int], ax, blocks: Mapping[int, int]) -> str:
-    """A P(valid) map's title lines: its dangerous and conservative cells (``counts``, by answer: ``confusion_counts``)
-    and, where a mark stands for a tile of ``blocks[code]`` cells a side (3: squares, 1: circles), the marks on ``ax``
-    beside them (reader r34c: "6,343 conservative (circles)" over 27 circles, the rule only in the legend)."""
+    """A P(valid) map's title lines: the share of its cells wrong (reader r36c), then its dangerous and conservative
+    cells (``counts``, by answer: ``confusion_counts``) and, where a mark stands for a tile of ``blocks[code]`` cells
+    a side (3: squares, 1: circles), the marks on ``ax`` beside them (reader r34c: "6,343 conservative (circles)" over
+    27 circles, the rule only in the legend)."""
     dangerous, conservative = counts["invalid kept (dangerous)"], counts["valid rejected"]
+    share = (dangerous + conservative) / max(1, sum(counts.values()))  # r36c: 22 circles stood for 64 % of the map
+    wrong = f"{share:.0%} of the map wrong" if share >= 0.01 or not share else f"{share:.1%} of the map wrong"
     if max(blocks.values()) == 1:
-        return f"{dangerous:,} dangerous cells (squares), {conservative:,} conservative (circles)"
+        return f"{wrong}\n{dangerous:,} dangerous cells (squares), {conservative:,} conservative (circles)"
     marks = {str(m.get_label()): len(np.asarray(m.get_offsets())) for m in cell_marks(ax)}
-    return "\n".join(
+    return f"{wrong}\n" + "\n".join(
         f"{cells:,} {word} cells: {marks.get(label, 0)} {shape}, 1 per {k} x {k}-cell tile"
         if cells
         else f"0 {word} cells"

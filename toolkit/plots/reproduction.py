@@ -206,8 +206,13 @@ def _draw_sweep(ax, ts: np.ndarray, p: np.ndarray, truth: np.ndarray, threshold:
     every = max(1, len(ts) // 10)
     for k, (name, curve) in zip((0, 3, 2), curves.items()):  # no vermillion square: chapter 03's "invalid kept" (r30c)
         ax.plot(ts, curve, label=name, **series_style(k) | dict(markevery=every, markersize=4))
-    if threshold is not None:
-        ax.axvline(threshold, color=COLORS["reference"], linestyle=":", label=f"threshold {threshold:.2f}")
+    if threshold is not None:  # its rates ringed on each curve and named (reader r36c: the line fell on the jump)
+        at = metrics.threshold_sweep(p, truth, np.array([threshold]))  # (1,) each: the rates at the threshold itself
+        said = ", ".join(f"{name.split()[0]} {at[key][0]:.2f}" for name, key in zip(curves, ("acc", "tpr", "tnr")))
+        ax.axvline(threshold, color=COLORS["reference"], linestyle=":", label=f"threshold {threshold:.2f}: {said}")
+        for k, key in zip((0, 3, 2), ("acc", "tpr", "tnr")):
+            ring = dict(markerfacecolor="none", markeredgewidth=1.8, markersize=11, zorder=5)
+            ax.plot([threshold], at[key], "o", color=series_style(k)["color"], **ring)
     ax.set_xlabel("threshold on P(valid)")
     ax.set_ylabel("share")
     ax.set_ylim(0, 1.02)
