@@ -215,10 +215,10 @@ def _section_5(nb) -> list[tuple]:
     for header, rows in tables(nb):
         if header[0] != "CAE" or len(header) != 4:
             continue
-        free = [float(re.search(r"all free ([\d.]+)%", h).group(1)) for h in header[2:]]
+        free = [float(m.group(1)) for h in header[2:] if (m := re.search(r"all free ([\d.]+)%", h))]
         for row in rows:
-            cells = [re.fullmatch(r"([\d.]+)% \(([+-][\d.]+) points\)", c) for c in row[2:]]
-            if row[0].startswith("λ") and all(cells):
+            cells = [m for c in row[2:] if (m := re.fullmatch(r"([\d.]+)% \(([+-][\d.]+) points\)", c))]
+            if row[0].startswith("λ") and len(cells) == len(row[2:]) == len(free):
                 test, new = ((float(c.group(1)), f, float(c.group(2))) for c, f in zip(cells, free))
                 found.append((row[0], float(row[1].rstrip("%")), *test, *new))
     return found
@@ -261,10 +261,10 @@ def _chapter_02_unseen(nb, found: str) -> list[str]:
     against = _section_5(nb)
     if len(against) != 3:
         problems.append(f"02: section 5's table does not give the three CAEs against 'all free': {against}")
-    for row in against if memorized else []:
-        if abs(row[4]) > COUPLE:
+    for lam in against if memorized else []:
+        if abs(lam[4]) > COUPLE:
             problems.append(
-                f"02: {row[0]} scores {row[4]:+.1f} points against 'all free' on the test grids: not within a couple"
+                f"02: {lam[0]} scores {lam[4]:+.1f} points against 'all free' on the test grids: not within a couple"
             )
     answer = re.search(
         r'\*\*The answer\.\*\* .*? scores ([\d.]+)% on \d+ new grids, where answering "all free" gets '

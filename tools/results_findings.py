@@ -153,9 +153,9 @@ def why_no_saving(tables: Tables) -> str:
         "**Why a fast checker erases the saving: prediction shortens only sampling, a small share of a query.** With "
         "our compiled checker the network is the dearer check: in that run, timed beside other work, it cost "
         f"{span(cost_3d, lambda c: f'{c:.2g}')} times an exact check per configuration in 3D{cost_2d}, "
-        f"so by means sampling got 10 % or more slower in {means[2]} of {sum(means)} cells. With python-fcl, which answered "
-        f"a 3D configuration {fcl_slower(tables)} times slower in that run's throughput table, the network is the "
-        "cheaper check, but the sampling it shortens is too small a part of a query for that to count much."
+        f"so by means sampling got 10 % or more slower in {means[2]} of {sum(means)} cells. With python-fcl, which "
+        f"answered a 3D configuration {fcl_slower(tables)} times slower in that run's throughput table, the network "
+        "is the cheaper check, but the sampling it shortens is too small a part of a query for that to count much."
         + "\n\n   "
         + worked_example(tables)
         + "\n\n"
