@@ -833,12 +833,15 @@ STATUS = re.compile(  # findings.claim_status: the paper's claim from the record
 )
 ANSWER_NO = "**The answer: no with our fast checker"  # the opening (review r28d: said once; r35d: then "rarely")
 RARELY = "rarely with python-fcl"  # the opening's answer on python-fcl: its median query saved in a few cells, not 0
-FAST_BULLET = re.compile(  # chapter04.answer's first bullet: like for like by means first (reader r34d), then medians
-    r"by the median of each query's own ratio, the statistic this page reads, our accurate network saved time in "
-    r"(?P<fast>none|\d+) of (?P<total>\d+) scenario–sampler pairs with our fast checker and in (?P<slow>none|\d+) of "
-    r"\d+ with python-fcl on both sides(?:, \d+ of them inside timing noise \(section 6's \\\*\))?; by mean times, "
-    r"Table 3's statistic, in (?P<fast_means>none|\d+) and (?P<slow_means>none|\d+) of \d+, the paper's Table 3 in "
-    r"(?P<papers>\d+) of \d+"
+FAST_BULLET = re.compile(  # chapter04.answer: the median query's counts, each checker (reader r36d), then the means
+    r"\*\*Judged by the median query\*\*, with our fast checker our accurate network saved time in "
+    r"(?P<fast>none|\d+) of the (?P<total>\d+) cells \(4 scenarios × 4 samplers\)(?: \(\d+ of them inside timing "
+    r"noise\))?, tied in (?P<fast_ties>none|\d+) and cost time in (?P<fast_costs>none|\d+)(?: \((?P<fast_edge>\d+) of "
+    r"them inside timing noise\))?\. With python-fcl on both sides it saved time in (?P<slow>none|\d+)(?: \(\d+ of "
+    r"them inside timing noise\))?, tied in (?:none|\d+) and cost time in (?:none|\d+)(?: \(\d+ of them inside timing "
+    r"noise\))?\. The paper's Table 3 saves time in (?P<papers>\d+) of its \d+\.\s+\*\*By mean times\*\*, Table 3's "
+    r"statistic, ours saved time in (?P<fast_means>none|\d+) cells with our fast checker and (?P<slow_means>none|\d+) "
+    r"with python-fcl"
 )
 EDGE = "inside timing noise: no clear evidence"  # chapter04.edge_line: what section 6's mark means
 SLOW_ROW = re.compile(r"(.+), ours \(`strong`, python-fcl\), medians")  # section 6: the same network, python-fcl
@@ -910,8 +913,12 @@ def _claim_status(nb, found: list[tuple[list[str], list[list[str]]]], said: dict
         str(by_means.count(v) or ("none" if v == findings.SAVES else 0))
         for v in (findings.SAVES, findings.TIES, findings.COSTS)
     )
-    bullet = [(m["fast"], m["total"], m["fast_means"]) for m in FAST_BULLET.finditer(outputs[0] if outputs else "")]
-    if bullet != [(*expected[1:3], counted[0])]:
+    bullet = [
+        (m["fast"], m["total"], m["fast_ties"], m["fast_costs"], m["fast_edge"] or "0", m["fast_means"])
+        for m in FAST_BULLET.finditer(outputs[0] if outputs else "")
+    ]
+    ties, dear = (expected[k] if expected[k] != "0" else "none" for k in (3, 4))
+    if bullet != [(*expected[1:3], ties, dear, str(edge[findings.COSTS]), counted[0])]:
         problems.append(f"04: the first code cell's bullet on our fast checker says {bullet}; section 6's: {expected}")
     edges = _marked(nb, ACCURATE_ROW)
     if edges != (str(edge[findings.COSTS]), str(edge[findings.SAVES])):

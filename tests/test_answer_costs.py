@@ -51,6 +51,12 @@ def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_th
     assert [p.get_hatch() for p in top.patches].count(query_ratios.NOISE_HATCH) == 2  # below and above the tie band
     assert hatched.legends[0].get_texts()[0].get_text() == "timing noise (means), 0.84–1.24"
     assert "hatched round the tie band, timing noise (means), 0.84–1.24: timing alone" in alt_text(hatched)
+    both = answer_ratios(  # reader r36d: the lower panel draws the median's band too
+        rows, tie=findings.TIE, means=means, names=chapter04.SERIES, floor=(0.84, 1.24), median_floor=(0.82, 1.18)
+    )
+    assert [p.get_hatch() for p in both.axes[1].patches].count(query_ratios.NOISE_HATCH) == 2
+    assert both.legends[1].get_texts()[0].get_text() == "timing noise (medians), 0.82–1.18"
+    assert "Hatched round the tie band below, timing noise (medians), 0.82–1.18" in alt_text(both)
     said = alt_text(fig)
     assert "Above, means, Table 3's statistic: the paper's squares beside our two series' means, 48 points" in said
     assert "Below, our medians of each query's own ratio, hollow" in said and "32 points, 3 of them at or below" in said
@@ -126,6 +132,13 @@ def test_chapter04_tables_name_every_sampler_and_each_failure():
     assert "| total | 5.0 |" in stages and "| without | 10 | 20 | 0 | 2,000 |" in checks
     assert "encoding the workspace for the network. Each row" in stages  # no encoding time: none said
     assert chapter04.per_point(records) == {"without": 2e-6}
+    two = {"with": [dict(records["without"][0]), dict(records["without"][0], sampling_s=0.011, total_s=0.015)]}
+    stages = chapter04.eager_tables(two)[0]  # reader r36d: section 3's construction, so the rows add up to the total
+    rows = {line.split(" | ")[0][2:]: float(line.split(" | ")[1].rstrip(" |")) for line in stages.splitlines()[4:9]}
+    assert rows["total"] == 10.0 and abs(sum(v for k, v in rows.items() if k != "total") - 10.0) < 0.2
+    folded = chapter04.path_checks(tables, {"2DS": dict.fromkeys(PAPER_SAMPLERS, "2 of 2")})
+    assert folded.startswith("<details><summary>Success and path validity") and folded.endswith("</details>")
+    assert "| 2DS | 2 of 2 | 2 of 2 | 2 of 2 | 2 of 2 |" in folded and said in folded
 
 
 def test_repairs_table_gives_a_row_a_query_and_counts_the_runs_without_repairs():

@@ -150,6 +150,9 @@ def test_outlier_table_lists_the_slow_query_and_the_mean_it_moves():
     lines = findings.outlier_table(tables).splitlines()
     assert len(lines) == 3 and lines[2] == "| 3DC-7 | BS | without | query 1: 2,100 (100) | 767 / 100 |"
     assert findings.outlier_table({"2DS": {"BS": row([0.1, 0.1], [0.1, 0.1])}}) == ""
+    folded = findings.slow_fold(tables, "| segments |")  # chapter 04's fold under section 3's table (reader r36d)
+    assert folded.startswith("<details><summary>Queries so slow") and folded.endswith("| segments |\n\n</details>")
+    assert lines[2] in folded and "No query moved a mean." in findings.slow_fold({}, "")
 
 
 def test_accuracy_against_says_more_less_and_as_accurate_at_the_printed_precision():

@@ -8,8 +8,8 @@ Algorithm 1 for each series of ``{"<scenario>, <series>": {sampler: ratio}}`` (t
 band. With ``means`` (our series' ratios of mean times, Table 3's statistic) it draws two panels (reader r33d: the
 large markers compared our medians with the paper's means): above, like for like, the paper's squares beside our
 means, filled, with ``floor`` (how far timing alone moved a ratio of means) hatched round the tie band (reader r34d:
-0.86 read as a clear saving); below, our medians of each query's own ratio, hollow, each with its middle half, in a
-legend of their own under the figure.
+0.86 read as a clear saving); below, our medians of each query's own ratio, hollow, each with its middle half, with
+``median_floor`` (the median's noise band) hatched (reader r36d), in a legend of their own under the figure.
 """
 
 from __future__ import annotations
@@ -40,13 +40,14 @@ def answer_ratios(
     spans: dict[str, dict[str, tuple[float, float]]] | None = None,
     means: dict[str, dict[str, float]] | None = None,
     floor: tuple[float, float] | None = None,
+    median_floor: tuple[float, float] | None = None,
 ) -> Figure:
     """A group of four samplers per scenario, one point per series in each, the tie band ``1 ± tie`` shaded, and the
     series named in a legend above, a line each (``names`` renames them); ``spans``: a whisker per point of the rows
     it names (the middle half of the queries' ratios). Without ``means``, one panel of ``rows``; with ``means`` (by
     the labels of the rows they stand beside), two: the rows that ``means`` does not name (the paper's) beside
     ``means``, filled, with ``floor`` hatched round the tie band, and under them the rows it names, hollow, with their
-    whiskers and their own legend."""
+    whiskers, ``median_floor`` hatched (reader r36d: 1.13 read as a clear cost) and their own legend."""
     scenarios = list(dict.fromkeys(label.split(", ", 1)[0] for label in rows))
     series = list(dict.fromkeys(label.split(", ", 1)[1] for label in rows))
     names = names or {}
@@ -68,6 +69,8 @@ def answer_ratios(
         ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
         if floor and means and ax is axes[0]:
             _floor(ax, floor, tie)
+        if median_floor and means and ax is axes[1]:
+            _floor(ax, median_floor, tie, MEDIAN_NOISE)
         drawn, found = _series(ax, shown, scenarios, series, names, whiskers, hollow)
         _groups(ax, scenarios)
         every += drawn
@@ -84,17 +87,21 @@ def answer_ratios(
     if means:  # reader r34d: the hollow markers had no legend
         handles, labels = axes[1].get_legend_handles_labels()
         fig.legend(handles, labels, loc="outside lower center", ncol=1, fontsize=9, frameon=False)
-    return describe(fig, _text(tie, len(series), counted, spans, means, floor), parts)
+    said = _text(tie, len(series), counted, spans, means, floor)
+    if median_floor and means:
+        said += f" Hatched round the tie band below, {MEDIAN_NOISE.format(low=median_floor[0], high=median_floor[1])}."
+    return describe(fig, said, parts)
 
 
 NOISE_WORDS = "timing noise (means), {low:.2f}–{high:.2f}: timing alone moved a ratio of means that far"
+MEDIAN_NOISE = "timing noise (medians), {low:.2f}–{high:.2f}: twice as far as timing alone moved a median"
 
 
-def _floor(ax, floor: tuple[float, float], tie: float) -> None:
+def _floor(ax, floor: tuple[float, float], tie: float, words: str = NOISE_WORDS) -> None:
     """``floor`` hatched round the tie band, its ends dotted (:func:`~toolkit.plots.query_ratios.hatch_round`, as the
     results page's Figures 2-3 draw it), named once in the legend as chapter 04 names it (:data:`NOISE_WORDS`; reader
     r35d: one name for the band)."""
-    hatch_round(ax, floor, tie, NOISE_WORDS.format(low=floor[0], high=floor[1]).split(":")[0], NOISE_HATCH)
+    hatch_round(ax, floor, tie, words.format(low=floor[0], high=floor[1]).split(":")[0], NOISE_HATCH)
 
 
 def _title(ax, means) -> str:

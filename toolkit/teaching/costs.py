@@ -19,7 +19,7 @@ from dataclasses import dataclass
 
 from toolkit.teaching import recorded
 from toolkit.teaching.recorded import Tables
-from toolkit.util.verdicts import CLOSE, COSTS, NEAR, SAVES, cost_verdict, time_verdict
+from toolkit.util.verdicts import CLOSE, COSTS, NEAR, SAVES, TIES, cost_verdict, time_verdict
 
 DEAR = 1.25  # a median ratio at or above this: with prediction 25 % or more above the time without
 NAMES = {"2ds": "2DS", "3dc7": "3DC-7", "3dc9": "3DC-9", "3do": "3DO"}
@@ -317,3 +317,73 @@ def call_cost_table(runs: Mapping[str, Mapping[str, float | None]], tie: float =
             + " |"
         )
     return "\n".join(rows)
+
+
+def median_counts(preset: str, tables: Tables | None = None) -> dict[str, tuple[int, int]]:
+    """``preset``'s 16 cells inside Algorithm 1 by the median of each query's own ratio: ``{verdict: (how many, how
+    many of them inside timing noise)}`` for saves, ties and costs (reader r36d: the costs counted too)."""
+    verdicts = Counter(time_verdict(m) for row in middle_halves(preset, tables).values() for m, _, _ in row.values())
+    edge = at_edge(preset, tables)
+    return {v: (verdicts[v], edge[v] if v != TIES else 0) for v in (SAVES, TIES, COSTS)}
+
+
+def clear_mean_savings(preset: str, tables: Tables | None = None) -> list[tuple[str, float]]:
+    """``preset``'s cells whose ratio of mean times saves time outside the means' band of :func:`floors`:
+    ``[("3DC-9 OB", 0.72), ...]`` (reader r36d: the means' savings with their noise)."""
+    low, high = floors(tables)["means"]
+    return [
+        (f"{NAMES[key]} {s}", r)
+        for key in recorded.query_ratios(preset, tables)
+        for s, saved in recorded.improvements(preset, key, "total", tables).items()
+        for r in [round(1 - saved, 2)]
+        if time_verdict(r) == SAVES and not low <= r <= high
+    ]
+
+
+def counted(counts: Mapping[str, tuple[int, int]], total: int = 0) -> str:
+    """``"saved time in none of the 16 cells, tied in 7 and cost time in 9 (4 of them inside timing noise)"``."""
+
+    def noise(verdict: str) -> str:
+        n = counts[verdict][1]
+        return f" ({n} of them inside timing noise)" if n else ""
+
+    of = f" of the {total} cells (4 scenarios × 4 samplers)" if total else ""
+    return (
+        f"saved time in {counts[SAVES][0] or 'none'}{of}{noise(SAVES)}, tied in {counts[TIES][0] or 'none'} and cost "
+        f"time in {counts[COSTS][0] or 'none'}{noise(COSTS)}"
+    )
+
+
+def clear(clear: list[list[tuple[str, float]]]) -> str:
+    """Which savings by means clear timing noise, per checker (:func:`clear_mean_savings`)."""
+    names = [[c for c, _ in cells] for cells in clear]
+    if names[0] == names[1] and names[0]:
+        ratios = " and ".join(", ".join(f"{r:.2f}" for _, r in cells) for cells in clear)
+        return (
+            f"only {', '.join(names[0])} clear{'s' * (len(names[0]) == 1)} timing noise, with each checker ({ratios})"
+        )
+    said = [", ".join(f"{c} {r:.2f}" for c, r in cells) or "none" for cells in clear]
+    return f"those clear of timing noise: {said[0]} with our fast checker, {said[1]} with python-fcl"
+
+
+def mean_verdicts(preset: str, tables: Tables | None = None) -> Counter:
+    """The verdicts of ``preset``'s ratios of mean times inside Algorithm 1 (Table 3's statistic as we read it), every
+    scenario and sampler."""
+    return Counter(
+        time_verdict(1 - saved)
+        for key in recorded.query_ratios(preset, tables)
+        for saved in recorded.improvements(preset, key, "total", tables).values()
+    )
+
+
+def call_cost(tables: Tables | None = None) -> str:
+    """What a network call cost against the fast exact check per configuration in the recorded Algorithm 1 run (its
+    Checker throughput), a range over the scenarios, in one sentence (reader r36d: the spread is section 4's)."""
+    rows = recorded.table(recorded.ALGORITHM_1, "Checker throughput", tables).values()
+    now = [1 / recorded.ours(r["learned / exact"]) for r in rows]
+    low, high = (f"{v:.2g}" for v in (min(now), max(now)))
+    return (
+        f"a network call cost {low if low == high else f'{low}–{high}'} times our exact check per configuration in "
+        "the recorded Algorithm 1 run, so with our fast checker prediction adds time (section 4: that cost moves from "
+        "run to run)"
+    )

@@ -366,3 +366,16 @@ def table3_sentence() -> str:
         f"The improvement of the mean times in the paper's text gives Table 3's percentage, within the rounding "
         f"of both, in {cells - len(differ)} of its {cells} entries, and not in {len(differ)} ({listed})."
     )
+
+
+def slow_fold(tables: Mapping[str, Mapping[str, Mapping]], segments: str) -> str:
+    """Chapter 04's fold under section 3's table (reader r36d: its code filled a screen): :func:`outlier_table` and
+    ``segments``, the stage bars segment by segment (``toolkit.plots.timings.segment_table``)."""
+    slow = outlier_table(tables)
+    return (
+        "<details><summary>Queries so slow that they move a mean; the bars' segments in ms</summary>\n\n"
+        + ("Queries so slow that they move a mean:\n\n" + slow if slow else "No query moved a mean.")
+        + "\n\nThe figure's bars, segment by segment, in ms a query, without / with prediction: each stage's share of "
+        "the average query times the median total, so a segment is not that stage's own median; *query* is the path, "
+        f"its verification and repairs, *other* the encoding and set-up:\n\n{segments}\n\n</details>"
+    )
