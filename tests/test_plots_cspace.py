@@ -129,7 +129,7 @@ def test_workspace_figure_3d_draws_each_block_at_its_corners(recorded_polys):
     legend = [t.get_text() for t in fig.legends[0].get_texts()]  # below the view, over no block
     assert legend == sorted(set(ws.labels))
     x, _, z = fig.axes[0].get_box_aspect()  # reader r19b: drawn to scale, the office's 6 high could not be read
-    assert z / x == pytest.approx(3 * 6 / 41) and fig.axes[0].get_zlabel() == "z (drawn 3x)"
+    assert z / x == pytest.approx(3 * 6 / 41) and fig.axes[0].get_zlabel() == "z (vertical ×3)"
     assert "heights stretched 3 times against widths" in alt_text(fig)
     clutter = cspace.workspace_figure(scenarios.get("3dc7").make_workspace(np.random.default_rng(1)))
     assert np.ptp(clutter.axes[0].get_box_aspect()) == pytest.approx(0) and clutter.axes[0].get_zlabel() == "z"
@@ -569,3 +569,25 @@ def test_the_figure_of_one_check_names_each_office_block_inside_it():
     assert name.get_text() == "1 shelf"
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
     np.testing.assert_allclose(name.get_position(), [(max(9, x0) + min(30, x1)) / 2, (max(11, y0) + min(12, y1)) / 2])
+
+
+def test_a_slices_robot_panel_dashes_the_block_a_link_touches_and_keys_each_way_a_block_is_drawn():
+    """Reader r37a, C1: the figure of one check dashed a touched block, the slices' robot panels filled it, and filled
+    grey blocks beside a valid robot read as touched. One rule in both: dashed is touched, and a key says so."""
+    robot = robots.box_chain(1)  # along +x from (5, 5, 5): x 5.0 to 5.5, z 4.95 to 5.05
+    boxes = [[[4, 4, 6], [6, 6, 7]], [[5.5, 4, 4], [6, 6, 6]], [[7, 7, 6], [8, 8, 7]]]  # above, touching, far
+    world = Workspace(np.zeros(3), np.full(3, 11.0), np.array(boxes, dtype=float), family="3dc")
+    q = np.array([5.0, 5.0, 5.0, 0.0, 0.0, 0.0, 0.0])
+    fig = cspace.cspace_slice(exact_checker(world, robot), q, joints=(5, 6), resolution=8, margin=3.0)
+    ax = fig.axes[1]
+    (dashed,) = _patches(ax, "touched block")
+    assert dashed.get_linestyle() == "--" and not dashed.get_fill() and dashed.get_xy() == (5.5, 4)
+    assert [t.get_text() for t in ax.get_legend().get_texts()] == [
+        "grey: a block",
+        "dotted: the links pass over or under",
+        "dashed: a link touches it",
+    ]
+    assert "A block a link touches is outlined dashed." in alt_text(fig)
+    moved = cspace.cspace_slice(exact_checker(world, robot), q - [1, 0, 0, 0, 0, 0, 0], joints=(5, 6), resolution=8)
+    assert not _patches(moved.axes[1], "touched block")
+    assert "dashed: a link touches it" not in [t.get_text() for t in moved.axes[1].get_legend().get_texts()]

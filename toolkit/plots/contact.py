@@ -8,7 +8,10 @@ axes is how far the link must move to clear the block (closed boxes: touching co
 
 from __future__ import annotations
 
+from typing import Any
+
 import numpy as np
+from matplotlib.patches import Patch, Rectangle
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
@@ -62,6 +65,28 @@ def passed_over(robot: BoxRobot, workspace: Workspace, q, plane: tuple[int, int]
     for k, (b_lo, b_hi) in enumerate(workspace.boxes):
         over[k] = k not in touched and any(_area(clip_to_box(s, b_lo[at], b_hi[at])) > 1e-12 for s in shadows)
     return over
+
+
+TOUCHED: dict[str, Any] = dict(fill=False, edgecolor=COLORS["ink"], linewidth=2.5, linestyle="--")
+
+
+def key_blocks(ax, robot: BoxRobot, workspace: Workspace, q, plane: tuple[int, int], dotted: bool) -> int:
+    """Outline dashed each block a link touches at ``q (dof,)`` in a flat view onto ``plane``, as the figure of one
+    check does, and key the panel below it: grey, a block; dotted, one the links pass over or under (in front or
+    behind, from the side); dashed, one a link touches; each entry only where such a block is drawn (review r37a:
+    grey blocks beside a valid robot read as touched). Returns how many blocks are dashed."""
+    at = list(plane)
+    touched = sorted({block for _, block, _ in contacts(robot, workspace, q)})
+    for b_lo, b_hi in workspace.boxes[touched]:
+        ax.add_patch(Rectangle(b_lo[at], *(b_hi - b_lo)[at], gid="touched block", zorder=4, **TOUCHED))
+    key = {"grey: a block": Patch(facecolor=COLORS["block"], edgecolor=COLORS["occupied"], alpha=0.5)}
+    if dotted:
+        past = "over or under" if plane == (0, 1) else "in front or behind"
+        key[f"dotted: the links pass {past}"] = Patch(fill=False, linestyle=":", edgecolor=COLORS["occupied"])
+    if touched:
+        key["dashed: a link touches it"] = Patch(**TOUCHED)
+    ax.legend(key.values(), key.keys(), fontsize=8, loc="upper center", bbox_to_anchor=(0.5, -0.16), frameon=False)
+    return len(touched)
 
 
 def _area(polygon: np.ndarray) -> float:

@@ -35,7 +35,7 @@ from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe, map_part
 from toolkit.plots.boxes import aabb_corners, add_box_3d
-from toolkit.plots.contact import passed_over
+from toolkit.plots.contact import key_blocks, passed_over
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
 from toolkit.plots.robot_drawing import (
     BASE_MARK,
@@ -136,7 +136,7 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
         ax.set_box_aspect(extent * [1, 1, stretch])  # a flat region drawn taller, by a whole factor its z label gives
         few_ticks(ax)
         if stretch > 1:
-            ax.set_zlabel(f"z (drawn {stretch}x)")
+            ax.set_zlabel(f"z (vertical ×{stretch})")
             ax.view_init(elev=55, azim=-60)  # a flat region seen steeply: low blocks (chairs) less hidden (r26a)
             y_ticks = [t for t in ax.get_yticks() if workspace.lower[1] < t <= workspace.upper[1]]
             ax.set_yticks(y_ticks)  # no y tick at the corner where x's last tick stands (r27a: "40" over "0")
@@ -334,7 +334,7 @@ def cspace_slice(
     ax.set_title(  # the fixed values are the description's table: four-line titles were the page's hardest (r31a)
         f"{robot.name}: {1 - valid.mean():.0%} in collision (dark)\nthe other DoF fixed at the star's", fontsize=9
     )
-    outlined = _robot_panel(fig, grid[0, 1], checker, q, q_valid, view, margin) if view else 0
+    outlined, dashed = _robot_panel(fig, grid[0, 1], checker, q, q_valid, view, margin) if view else (0, 0)
     fig.tight_layout()
     swept = " and ".join(robot.dof_names[k] for k in joints)
     text = f"Slice of the {robot.name} robot's configuration space over {swept}, the other DoF fixed: "
@@ -345,6 +345,7 @@ def cspace_slice(
     text += " A block drawn across the links that no link touches (above or below them) is a dotted outline." * bool(
         outlined
     )
+    text += " A block a link touches is outlined dashed." * bool(dashed)
     star_at = Part(
         "the star's configuration",
         "valid" if q_valid[0] else "in collision",
@@ -359,12 +360,13 @@ OUT_OF_REACH: dict[str, Any] = dict(edgecolor=COLORS["occupied"], linewidth=1.0,
 
 def _robot_panel(
     fig: Figure, cell, checker: CollisionChecker, q: np.ndarray, q_valid: np.ndarray, view: str, margin
-) -> int:
+) -> tuple[int, int]:
     """The robot at ``q (dof,)`` among the nearby blocks in ``fig``'s grid ``cell``, its base a black dot, its
     verdict titled; a block drawn across the links that no link touches (wholly above or below them, in front or
     behind from the side: :func:`toolkit.plots.contact.passed_over`) outlined dotted, never filled, a little inside
-    its edges so that neighbours' outlines do not join into lines across the panel (review r34a). Returns how many
-    blocks were outlined."""
+    its edges so that neighbours' outlines do not join into lines across the panel (review r34a); a block a link
+    touches dashed, and a key below (:func:`toolkit.plots.contact.key_blocks`). Returns how many blocks were
+    outlined dotted and dashed."""
     robot_ax = fig.add_subplot(cell, **({"projection": "3d"} if view == "3d" else {}))
     robot = checker.robot
     colors, workspace = link_colors(1, q_valid), checker_workspace(checker)
@@ -387,4 +389,5 @@ def _robot_panel(
     robot_ax.set_title(f"the robot at the star ({view}):\n{verdict}; black dot: its base", fontsize=9)
     if view == "3d":
         few_ticks(robot_ax)
-    return len(flat)
+        return len(flat), 0
+    return len(flat), key_blocks(robot_ax, robot, workspace, q, VIEWS[view], dotted=bool(len(flat)))
