@@ -4,11 +4,12 @@
 - :func:`gap_points`: a score minus its "all free" baseline, in points, as a reader subtracts the printed values;
 - :func:`memorized`: section 5's sentence on a CAE's scores: memorized, not yet, or above "all free" on new grids;
 - :func:`against_all_free`: one split of a CAE's recorded scores beside "all free";
-- :func:`correlation_in_words`: the size of a correlation in a word (section 7);
+- :func:`correlation_in_words`: the size of a correlation in a word (section 8);
 - :func:`answer`: the answer at the top of the page in one sentence and its table, in this run's numbers: the
   verdict from the new grids, the test grids beside it;
 - :func:`split_table`: section 5's table, each CAE on its training grids, the test grids and the new grids;
-- :func:`closing_table`: the closing section's table, beside Table 1.
+- :func:`closing_table`: the closing section's table, beside Table 1;
+- :func:`principal_plane`, :func:`pc1_correlation`, :func:`folded`: section 8's optional latent maps.
 
 Scores are shares (0.866, not 86.6) and come in mappings with the keys of
 :func:`toolkit.learning.training.evaluate`'s CAE part: ``seen_acc``, ``unseen_acc``, ``seen_all_free``,
@@ -17,7 +18,14 @@ Scores are shares (0.866, not 86.6) and come in mappings with the keys of
 
 from __future__ import annotations
 
+import base64
+import io
 from collections.abc import Mapping
+
+import numpy as np
+from matplotlib.figure import Figure
+
+from toolkit.plots.alt import figure_html
 
 Scores = Mapping[str, float]
 
@@ -100,7 +108,7 @@ def answer(
         f"| CAE-preset: the `paper` preset ({preset_length}; chapters 03–04 use it) "
         f"| {_cell(preset['seen_acc'], preset['seen_all_free'])} "
         f"| {_cell(preset['unseen_acc'], preset['unseen_all_free'])} | {_cell(new['preset_acc'], free)} |",
-        f"| the same layer sizes on {many_name} (not the paper's recipe, section 8) "
+        f"| the same layer sizes on {many_name} (not the paper's recipe, section 7) "
         f"| {n_new} of them: {_cell(many['seen_acc'], many['seen_all_free'])} "
         f"| {_cell(new['many_test'], long['unseen_all_free'])} | {_cell(many['unseen_acc'], free)} |",
     ]
@@ -196,3 +204,30 @@ def closing_table(paper: Scores, rows: Mapping[str, Scores], unseen: str = "unse
         "Adagrad at 0.1 (§IV-B3; with our CAE it diverges, "
         "the aside after section 8), for a number of steps the paper does not give."
     )
+
+
+def principal_plane(codes: Mapping[str, np.ndarray]) -> tuple[dict[str, np.ndarray], np.ndarray]:
+    """``{name: (n, latent)}`` -> ``{name: (n, 2)}`` on the first two principal directions of all the codes together
+    (centre them, take the SVD ``Z - z̄ = U S Vᵀ``: the rows of ``Vᵀ`` are the directions), and the two directions'
+    shares of the variance, ``S_i² / Σ S_j²``."""
+    z = np.concatenate(list(codes.values()))
+    mean = z.mean(axis=0)
+    _, s, vt = np.linalg.svd(z - mean, full_matrices=False)
+    return {name: (c - mean) @ vt[:2].T for name, c in codes.items()}, s[:2] ** 2 / np.sum(s**2)
+
+
+def pc1_correlation(points: Mapping[str, np.ndarray], values: Mapping[str, np.ndarray]) -> float:
+    """The correlation of the first principal component with a value per workspace, over all groups."""
+    first = np.concatenate([p[:, 0] for p in points.values()])
+    return float(np.corrcoef(first, np.concatenate(list(values.values())))[0, 1])
+
+
+def folded(summary: str, figures: list[Figure]) -> str:
+    """``figures`` as HTML in one ``<details>`` fold (reader r37b: the latent maps are optional), each an ``<img>``
+    with its alt text and longer description (:func:`toolkit.plots.alt.figure_html`)."""
+    shown = []
+    for fig in figures:
+        buffer = io.BytesIO()
+        fig.savefig(buffer, format="png", bbox_inches="tight")
+        shown.append(figure_html(fig, base64.b64encode(buffer.getvalue()).decode(), style="max-width: 100%"))
+    return f"<details><summary>{summary}</summary>\n" + "\n".join(shown) + "\n</details>"
