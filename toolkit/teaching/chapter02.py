@@ -9,7 +9,8 @@
   verdict from the new grids, the test grids beside it;
 - :func:`split_table`: section 5's table, each CAE on its training grids, the test grids and the new grids;
 - :func:`closing_table`: the closing section's table, beside Table 1;
-- :func:`principal_plane`, :func:`pc1_correlation`, :func:`folded`: section 8's optional latent maps.
+- :func:`latent_map`, :func:`principal_plane`, :func:`pc1_correlation`, :func:`folded`: section 8's optional
+  latent maps.
 
 Scores are shares (0.866, not 86.6) and come in mappings with the keys of
 :func:`toolkit.learning.training.evaluate`'s CAE part: ``seen_acc``, ``unseen_acc``, ``seen_all_free``,
@@ -23,9 +24,13 @@ import io
 from collections.abc import Mapping
 
 import numpy as np
+import torch
 from matplotlib.figure import Figure
 
+from toolkit.learning.models import CAE
 from toolkit.plots.alt import figure_html
+from toolkit.plots.cae import FEW
+from toolkit.plots.latent import latent_scatter
 
 Scores = Mapping[str, float]
 
@@ -231,3 +236,25 @@ def folded(summary: str, figures: list[Figure]) -> str:
         fig.savefig(buffer, format="png", bbox_inches="tight")
         shown.append(figure_html(fig, base64.b64encode(buffer.getvalue()).decode(), style="max-width: 100%"))
     return f"<details><summary>{summary}</summary>\n" + "\n".join(shown) + "\n</details>"
+
+
+def latent_map(name: str, cae: CAE, trained_on: torch.Tensor, new: torch.Tensor) -> tuple[float, Figure]:
+    """Section 8: ``cae``'s codes of its training grids and of the ``new`` grids on their first two principal
+    directions, coloured by each grid's share of occupied cells; the correlation ``r`` of PC 1 with that share, and the
+    map (the training grids larger when they are few)."""
+    groups = {"training grids": trained_on, "new grids": new}
+    with torch.no_grad():
+        codes = {group: cae.encode(grids).numpy() for group, grids in groups.items()}  # (W, latent) each
+    points, share = principal_plane(codes)
+    occupied = {group: (grids > 0).float().mean(dim=(1, 2)).numpy() for group, grids in groups.items()}
+    r = pc1_correlation(points, occupied)
+    figure = latent_scatter(
+        points,
+        color=occupied,
+        color_label="share of occupied cells",
+        highlight="training grids" if len(trained_on) <= FEW else None,
+        xlabel=f"PC 1 ({share[0]:.0%} of variance)",
+        ylabel=f"PC 2 ({share[1]:.0%})",
+        title=f"Codes of {name}; PC 1 vs share occupied: r = {r:+.2f}",
+    )
+    return r, figure
