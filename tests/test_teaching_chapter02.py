@@ -111,3 +111,26 @@ def test_the_closing_table_gives_the_paper_then_each_row_beside_all_free():
     ]
     # reader r33b: "AdamW" read as "which decay?"; the toolkit's AdamW runs with its weight decay at 0, plain Adam
     assert "Every CAE in this table trains with Adam (AdamW with its weight decay at 0)" in table
+
+
+def test_section_8s_maps_fold_with_their_alt_text_and_read_pc1_against_the_occupied_share():
+    """Reader r37b: the latent maps are optional, one fold; each map an image with its alt text and description."""
+    import numpy as np
+    import torch
+
+    from toolkit.learning.models import CAE
+
+    torch.manual_seed(0)
+    cae = CAE((16, 8, 2))
+    trained_on, new = (torch.where(torch.rand(n, 4, 4) < 0.3, 1.0, -1.0) for n in (5, 12))
+    r, figure = chapter02.latent_map("a CAE", cae, trained_on, new)
+    assert -1 <= r <= 1 and figure.get_suptitle() == f"Codes of a CAE; PC 1 vs share occupied: r = {r:+.2f}"
+    assert [ax.get_title() for ax in figure.axes[:2]] == [
+        "training grids (5)\nthe others grey",
+        "new grids (12)\nthe others grey",
+    ]
+    points, share = chapter02.principal_plane({"a": np.eye(3), "b": -np.eye(3)})
+    assert {k: v.shape for k, v in points.items()} == {"a": (3, 2), "b": (3, 2)} and 0 < share.sum() <= 1 + 1e-9
+    html = chapter02.folded("The maps", [figure])
+    assert html.startswith("<details><summary>The maps</summary>") and html.endswith("</details>")
+    assert html.count('<img src="data:image/png;base64,') == 1 and ' alt="' in html
