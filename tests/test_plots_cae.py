@@ -86,7 +86,7 @@ def test_reconstructions_mark_flipped_cells_as_their_own_kind_not_as_missed_or_i
     decoded[0, 0, 0] = -1.0  # ... and misses the real block: one other cell wrong
     fig = plots.reconstructions(noisy, decoded, ["w"], flipped=flipped)
     errors = fig.subfigs[1].axes[2]
-    assert errors.get_title() == "1 of 2 flips ignored; other cells: 1 missed, 0 invented"
+    assert errors.get_title() == "1 of 2 flips ignored; other cells: 1 missed (x), 0 invented (o)"  # r37b: a key
     # r29b: scored against the clean grid, an ignored flip is right: 2 cells of 30 differ (the copied flip, the block)
     assert fig.subfigs[1].get_suptitle() == "w: 93.3% of cells as in the clean grid (all free: 96.7%)"
     others, ignored = errors.images[1].get_array(), errors.images[2].get_array()
@@ -118,7 +118,7 @@ def test_a_reconstructions_regions_count_flips_as_its_title_does():
     said = [
         int(v)
         for v in re.fullmatch(
-            r"(\d+) of (\d+) flips ignored; other cells: (\d+) missed, (\d+) invented", title
+            r"(\d+) of (\d+) flips ignored; other cells: (\d+) missed \(x\), (\d+) invented \(o\)", title
         ).groups()
     ]
     (part,) = alt.details(fig)

@@ -116,7 +116,7 @@ def reconstructions(
         _image(axes[0], grid, "input")
         _image(axes[1], np.where(out > 0, 1.0, -1.0), "decoded (sign)")
         wrong = wrong_in_words(kinds)
-        _image(axes[2], grid, wrong, alpha=FADED, axes=True)  # the thumbnails on its left: the same x and y
+        _image(axes[2], grid, wrong_in_words(kinds, marks=True), alpha=FADED, axes=True)  # x, y: the thumbnails'
         draw_wrong_cells(axes[2], grid, kinds, cell=72 * 0.62 * fig.get_figwidth() / max(grid.shape))
         all_free = np.mean(target < 0)
         row.suptitle(f"{name}: {acc:.1%} {right} (all free: {all_free:.1%})", fontsize=10)

@@ -49,12 +49,16 @@ def wrong_kinds(grid: np.ndarray, decoded: np.ndarray, flipped: np.ndarray | Non
     return kinds
 
 
-def wrong_in_words(kinds: dict[str, np.ndarray], where: tuple[slice, slice] = (slice(None), slice(None))) -> str:
+def wrong_in_words(
+    kinds: dict[str, np.ndarray], where: tuple[slice, slice] = (slice(None), slice(None)), marks: bool = False
+) -> str:
     """The wrong cells of ``kinds`` (:func:`wrong_kinds`) inside the region ``where`` (default: all), as a title and a
     region of a figure's description both count them: "2 missed, 0 invented", or, given flipped cells, "1 of 3 flips
-    ignored; other cells: 2 missed, 0 invented" (an ignored flip is never counted missed or invented)."""
+    ignored; other cells: 2 missed, 0 invented" (an ignored flip is never counted missed or invented). ``marks``: each
+    kind with its mark, "2 missed (x), 0 invented (o)", a title's key (reader r37b: the legend lay screens above)."""
     count = {kind: int(mask[where].sum()) for kind, mask in kinds.items()}
-    wrong = f"{count['missed']} missed, {count['phantom']} invented"
+    x, o = (f" ({ERROR_MARKERS['missed']})", f" ({ERROR_MARKERS['phantom']})") if marks else ("", "")
+    wrong = f"{count['missed']} missed{x}, {count['phantom']} invented{o}"
     if "ignored" in count:
         wrong = f"{count['ignored']} of {count['ignored'] + count['copied']} flips ignored; other cells: {wrong}"
     return wrong

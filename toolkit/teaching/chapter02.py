@@ -4,11 +4,13 @@
 - :func:`gap_points`: a score minus its "all free" baseline, in points, as a reader subtracts the printed values;
 - :func:`memorized`: section 5's sentence on a CAE's scores: memorized, not yet, or above "all free" on new grids;
 - :func:`against_all_free`: one split of a CAE's recorded scores beside "all free";
-- :func:`correlation_in_words`: the size of a correlation in a word (section 7);
+- :func:`correlation_in_words`: the size of a correlation in a word (section 8);
 - :func:`answer`: the answer at the top of the page in one sentence and its table, in this run's numbers: the
   verdict from the new grids, the test grids beside it;
 - :func:`split_table`: section 5's table, each CAE on its training grids, the test grids and the new grids;
-- :func:`closing_table`: the closing section's table, beside Table 1.
+- :func:`closing_table`: the closing section's table, beside Table 1;
+- :func:`latent_map`, :func:`principal_plane`, :func:`pc1_correlation`, :func:`folded`: section 8's optional
+  latent maps.
 
 Scores are shares (0.866, not 86.6) and come in mappings with the keys of
 :func:`toolkit.learning.training.evaluate`'s CAE part: ``seen_acc``, ``unseen_acc``, ``seen_all_free``,
@@ -17,7 +19,18 @@ Scores are shares (0.866, not 86.6) and come in mappings with the keys of
 
 from __future__ import annotations
 
+import base64
+import io
 from collections.abc import Mapping
+
+import numpy as np
+import torch
+from matplotlib.figure import Figure
+
+from toolkit.learning.models import CAE
+from toolkit.plots.alt import figure_html
+from toolkit.plots.cae import FEW
+from toolkit.plots.latent import latent_scatter
 
 Scores = Mapping[str, float]
 
@@ -94,33 +107,44 @@ def answer(
         "the test grids) |",
         "| --- | --- | --- | --- |",
         f"| paper, Table 1 | {paper['seen_acc']:.0%} | {paper['unseen_acc']:.0%} | not reported |",
-        f"| CAE-long: the paper's recipe, {n_seen} grids, {steps:,} steps "
+        f"| CAE-long: the paper's layers and λ, {n_seen} grids, {steps:,} steps "
         f"| {_cell(long['seen_acc'], long['seen_all_free'])} | {_cell(long['unseen_acc'], long['unseen_all_free'])} "
         f"| {_cell(new['long_acc'], free)} |",
-        f"| CAE-preset: the same recipe, {preset_length} (the toolkit's `paper` preset; chapters 03–04 use it) "
+        f"| CAE-preset: the `paper` preset ({preset_length}; chapters 03–04 use it) "
         f"| {_cell(preset['seen_acc'], preset['seen_all_free'])} "
         f"| {_cell(preset['unseen_acc'], preset['unseen_all_free'])} | {_cell(new['preset_acc'], free)} |",
-        f"| the same layer sizes on {many_name} (not the paper's recipe, section 8) "
+        f"| the same layer sizes on {many_name} (not the paper's recipe, section 7) "
         f"| {n_new} of them: {_cell(many['seen_acc'], many['seen_all_free'])} "
         f"| {_cell(new['many_test'], long['unseen_all_free'])} | {_cell(many['unseen_acc'], free)} |",
     ]
-    said = _one_line(long, new["long_acc"], free, n_seen, n_new)
+    said = _one_line(paper, long, new["long_acc"], free, n_seen=n_seen, n_new=n_new, steps=steps)
     return f"{said}\n\n" + "\n".join(table) + f"\n\n{_in_numbers(paper, many, many_name, quick)}"
 
 
-def _one_line(long: Scores, long_new: float, free: float, n_seen: int, n_new: int) -> str:
-    """The answer in one sentence: CAE-long on its training grids, on the new grids, and "all free" there."""
+def _one_line(paper: Scores, long: Scores, long_new: float, free: float, *, n_seen: int, n_new: int, steps: int) -> str:
+    """The answer without the page's nicknames (reader r37b): Table 1's claim, then CAE-long on its training grids
+    (the seen column) and on the new grids beside "all free" (the unseen column)."""
+    both = (
+        f"both {paper['seen_acc']:.0%} right"
+        if paper["seen_acc"] == paper["unseen_acc"]
+        else f"{paper['seen_acc']:.0%} and {paper['unseen_acc']:.0%} right"
+    )
+    claim = (
+        f"**The answer.** The paper's Table 1 says its 2DS CAE rebuilds its training grids and unseen grids {both}. "
+        f"Trained on {n_seen} grids with the paper's layers and λ (Adam for its Adagrad, which diverges here) for "
+        f"{steps:,} steps, our CAE"
+    )
     seen_said = (
-        f"memorizes them ({long['seen_acc']:.1%} of their cells right)"
+        f"rebuilds its training grids {long['seen_acc']:.1%} right by memorizing them: the seen column reproduces. But "
+        "it"
         if long["seen_acc"] >= MEMORIZED
-        else f"has trained too briefly in this quick run to memorize them ({long['seen_acc']:.1%})"
+        else f"has trained too briefly in this quick run to memorize them ({long['seen_acc']:.1%}). It"
     )
     gap = gap_points(long_new, free)
     return (
-        f"**The answer.** Trained on {n_seen} grids with the paper's recipe, CAE-long {seen_said} but scores "
-        f'{long_new:.1%} on {n_new} new grids, where answering "all free" gets {free:.1%} ({abs(gap):.1f} points '
-        f'{"below" if gap < 0 else "above"}): it rebuilds a new workspace **no better than answering "all free"**, '
-        "and Table 1's 100 % on unseen grids does not reproduce."
+        f'{claim} {seen_said} scores {long_new:.1%} on {n_new} new grids, where answering "all free" gets {free:.1%} '
+        f"({abs(gap):.1f} points {'below' if gap < 0 else 'above'}): it rebuilds a new workspace **no better than "
+        'answering "all free"**, and the unseen column does not reproduce.'
     )
 
 
@@ -132,13 +156,15 @@ def _in_numbers(paper: Scores, many: Scores, many_name: str, quick: bool) -> str
     """Under the table, what it says of the other two CAEs, in one sentence each (reader r36b: its numbers are the
     table's, not said again)."""
     preset_said = (
-        "In this quick run, CAE-preset has trained a few steps only."
+        "In this quick run, the `paper` preset has trained a few steps only."
         if quick
-        else "CAE-preset, stopped before it memorizes, reproduces neither column."
+        else "The `paper` preset, stopped early, when it has learned little even of its training grids, reproduces "
+        "neither column."
     )
     short = 100 * (paper["unseen_acc"] - many["unseen_acc"])
     many_said = (
-        f'Trained on {many_name}, the same layers beat "all free" on the new grids, and stay {short:.0f} points short '
+        f"Trained on {many_name}, the same layers score {many['unseen_acc']:.1%} on the new grids, "
+        f'{gap_points(many["unseen_acc"], many["unseen_all_free"]):.1f} points above "all free" and {short:.0f} short '
         f"of {paper['unseen_acc']:.0%}."
         if many["unseen_acc"] > many["unseen_all_free"]
         else f'Trained on {many_name}, the same layers do not beat "all free" yet in this quick run.'
@@ -183,3 +209,52 @@ def closing_table(paper: Scores, rows: Mapping[str, Scores], unseen: str = "unse
         "Adagrad at 0.1 (§IV-B3; with our CAE it diverges, "
         "the aside after section 8), for a number of steps the paper does not give."
     )
+
+
+def principal_plane(codes: Mapping[str, np.ndarray]) -> tuple[dict[str, np.ndarray], np.ndarray]:
+    """``{name: (n, latent)}`` -> ``{name: (n, 2)}`` on the first two principal directions of all the codes together
+    (centre them, take the SVD ``Z - z̄ = U S Vᵀ``: the rows of ``Vᵀ`` are the directions), and the two directions'
+    shares of the variance, ``S_i² / Σ S_j²``."""
+    z = np.concatenate(list(codes.values()))
+    mean = z.mean(axis=0)
+    _, s, vt = np.linalg.svd(z - mean, full_matrices=False)
+    return {name: (c - mean) @ vt[:2].T for name, c in codes.items()}, s[:2] ** 2 / np.sum(s**2)
+
+
+def pc1_correlation(points: Mapping[str, np.ndarray], values: Mapping[str, np.ndarray]) -> float:
+    """The correlation of the first principal component with a value per workspace, over all groups."""
+    first = np.concatenate([p[:, 0] for p in points.values()])
+    return float(np.corrcoef(first, np.concatenate(list(values.values())))[0, 1])
+
+
+def folded(summary: str, figures: list[Figure]) -> str:
+    """``figures`` as HTML in one ``<details>`` fold (reader r37b: the latent maps are optional), each an ``<img>``
+    with its alt text and longer description (:func:`toolkit.plots.alt.figure_html`)."""
+    shown = []
+    for fig in figures:
+        buffer = io.BytesIO()
+        fig.savefig(buffer, format="png", bbox_inches="tight")
+        shown.append(figure_html(fig, base64.b64encode(buffer.getvalue()).decode(), style="max-width: 100%"))
+    return f"<details><summary>{summary}</summary>\n" + "\n".join(shown) + "\n</details>"
+
+
+def latent_map(name: str, cae: CAE, trained_on: torch.Tensor, new: torch.Tensor) -> tuple[float, Figure]:
+    """Section 8: ``cae``'s codes of its training grids and of the ``new`` grids on their first two principal
+    directions, coloured by each grid's share of occupied cells; the correlation ``r`` of PC 1 with that share, and the
+    map (the training grids larger when they are few)."""
+    groups = {"training grids": trained_on, "new grids": new}
+    with torch.no_grad():
+        codes = {group: cae.encode(grids).numpy() for group, grids in groups.items()}  # (W, latent) each
+    points, share = principal_plane(codes)
+    occupied = {group: (grids > 0).float().mean(dim=(1, 2)).numpy() for group, grids in groups.items()}
+    r = pc1_correlation(points, occupied)
+    figure = latent_scatter(
+        points,
+        color=occupied,
+        color_label="share of occupied cells",
+        highlight="training grids" if len(trained_on) <= FEW else None,
+        xlabel=f"PC 1 ({share[0]:.0%} of variance)",
+        ylabel=f"PC 2 ({share[1]:.0%})",
+        title=f"Codes of {name}; PC 1 vs share occupied: r = {r:+.2f}",
+    )
+    return r, figure
