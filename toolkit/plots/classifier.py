@@ -285,7 +285,8 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
         ends = nodes[np.asarray(edges)][..., [x, y]]  # (E, 2, 2)  seen on the light and the mid greys (r30c)
         ax.add_collection(LineCollection(ends, colors=COLORS["ink"], linewidths=0.5, alpha=0.35, zorder=2.2))  # r32c
     cross = dict(markersize=10, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True))  # over the path (5);
-    cross.update(markerfacecolor="none", markeredgewidth=2.5)  # hollow: the block's outline shows through (r37c)
+    cross.update(markerfacecolor="none", markeredgecolor=ANSWER_COLORS[3], markeredgewidth=2.5, path_effects=halo(2.5))
+    # hollow, a vermillion ring in ink and white: the block's outline shows through it (reader r37c)
     ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **cross)  # as the maps' squares (r30c)
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
     label = dict(textcoords="offset points", va="top", fontsize=9, zorder=7, bbox=box)
