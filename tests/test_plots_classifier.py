@@ -621,28 +621,3 @@ def test_the_outline_runs_on_the_cells_edges_so_a_corner_cells_mark_lies_inside_
     (path,) = [p for p in boundary_of(ax).get_paths() if len(p.vertices)]
     centres = np.stack(np.meshgrid(*fine.axes, indexing="ij"), axis=-1).reshape(-1, 2)  # (31 * 31, 2)
     np.testing.assert_array_equal(path.contains_points(centres), ~valid.ravel())
-
-
-def test_a_threshold_sweeps_zoom_draws_the_span_of_p_valid_beside_the_whole_range():
-    """Reader r32c, chapter 03 section 6: the `paper` model's rates all change between 0.36 and 0.63, on an axis from
-    0 to 1, and its drop met the dotted line. ``zoom`` adds a panel over the span of P(valid), rounded out to 0.05;
-    where P(valid) spans most of 0 to 1, or without ``zoom`` (``toolkit reproduce``'s call), the one panel."""
-    from toolkit.plots.reproduction import threshold_sweep
-
-    rng = np.random.default_rng(0)
-    probability = 0.36 + 0.27 * rng.random(400)  # (400,) squeezed round 0.5
-    valid = rng.random(400) < probability
-    fig = threshold_sweep(probability, valid, 0.5, zoom=True, title="paper")
-    whole, zoomed = fig.axes
-    assert zoomed.get_xlim() == pytest.approx((0.35, 0.65)) and whole.get_xlim()[1] >= 1
-    renderer = FigureCanvasAgg(fig).get_renderer()
-    fig.draw(renderer)
-    (legend,) = fig.legends
-    assert all(legend.get_window_extent(renderer).y1 <= ax.get_window_extent(renderer).y0 for ax in fig.axes)
-    assert "from 0.35 to 0.65" in alt.alt_text(fig)
-    whole_part, zoomed_part = alt.details(fig)  # each panel in numbers, not the guard's read from titles
-    assert not alt.is_fallback(whole_part["name"]) and zoomed_part["rows"][0][0] == "0.350"
-    accuracy = metrics.threshold_sweep(probability, valid, np.array([0.35]))["acc"][0]
-    assert zoomed_part["rows"][0][1] == f"{accuracy:.2f}" and zoomed_part["rows"][-1][0] == "0.650"
-    assert len(threshold_sweep(probability, valid, 0.5).axes) == 1  # reproduce's figure unchanged
-    assert len(threshold_sweep(np.linspace(0, 1, 400), valid, 0.5, zoom=True).axes) == 1  # nothing to zoom into

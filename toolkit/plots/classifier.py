@@ -91,7 +91,7 @@ def probability_maps(
     for ax, (name, probability), t in zip(axes, probabilities.items(), cut.values()):  # the marks counted (r34c)
         tiles = marks_counted(confusion_counts(np.asarray(probability) >= t, valid), ax, k)
         ax.set_title(f"{name}: P(valid), threshold {t:.2f}, {tiles}", fontsize=10)  # r36c: "64% of the map wrong"
-    _legend(fig, _mistake_handles(k), above=len(cut) > 1)  # r26c: under the second map, a screen below the first
+    _legend(fig, _mistake_handles(k))  # under the maps, read after them (r37c: above, a screen from the maps)
     keep_on_side(fig, grid)  # again, the maps as the legend left them (r34c: fitted before, marks met the outlines)
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
     text += "configurations; grey, 0 black to 1 white; wrong cells tinted, free ones rejected sky blue, obstacle cells "
@@ -168,6 +168,7 @@ def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> 
     for value in [t for t in ax.texts if isinstance(t, Annotation)]:  # bar_label's: each on its bar's top, over the
         value.set_zorder(5)  # dashed line in a white ring (reader r33c: one lifted above the line read as the line's)
         value.set_path_effects(halo(2.5, ("free",)))
+        value.set_bbox(dict(boxstyle="square,pad=0.15", fc=COLORS["free"], ec="none"))  # the line hidden (r37c)
     said = "; ".join(
         f"{name}: accuracy {s['acc']:.2f}, TPR {s['tpr']:.2f}, TNR {s['tnr']:.2f}, balanced accuracy {b:.2f}"
         for (name, s), b in zip(scores.items(), balanced)
@@ -283,7 +284,9 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     if edges is not None and len(edges):  # thin, under the nodes: a node in collision visibly has none (r29c); ink,
         ends = nodes[np.asarray(edges)][..., [x, y]]  # (E, 2, 2)  seen on the light and the mid greys (r30c)
         ax.add_collection(LineCollection(ends, colors=COLORS["ink"], linewidths=0.5, alpha=0.35, zorder=2.2))  # r32c
-    cross = dict(markersize=10, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True))  # over the path (5)
+    cross = dict(markersize=10, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True))  # over the path (5);
+    cross.update(markerfacecolor="none", markeredgecolor=ANSWER_COLORS[3], markeredgewidth=2.5, path_effects=halo(2.5))
+    # hollow, a vermillion ring in ink and white: the block's outline shows through it (reader r37c)
     ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **cross)  # as the maps' squares (r30c)
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
     label = dict(textcoords="offset points", va="top", fontsize=9, zorder=7, bbox=box)
@@ -365,13 +368,12 @@ def _mistake_line(code: int) -> Line2D:
     return Line2D([], [], linestyle="", markersize=7, **_mistake_mark(code, legend=True))
 
 
-def _legend(fig: Figure, handles: list, *, above: bool = False) -> None:
-    """The boundary, then ``handles`` (``(handle, label)`` pairs), under the figure (``above``: over it, where the
-    figure's maps lie one above the other and the first must be read with it)."""
+def _legend(fig: Figure, handles: list) -> None:
+    """The boundary, then ``handles`` (``(handle, label)`` pairs), under the figure."""
     boundary = Patch(facecolor=COLORS["occupied"], edgecolor=BOUNDARY, hatch="//", hatchcolor=HATCH, linewidth=1.5)
     pairs = [(boundary, "true C-obstacle (outlined, hatched)"), *handles]
     ncols = len(pairs) if fig.get_figwidth() >= 9 else 2
-    where = "outside upper center" if above else "outside lower center"
+    where = "outside lower center"
     fig.legend(*zip(*pairs), loc=where, ncols=ncols, fontsize=9, frameon=False)  # type: ignore[call-overload]
 
 

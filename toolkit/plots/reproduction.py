@@ -138,33 +138,16 @@ def threshold_sweep(
     threshold: float | None = None,
     *,
     title: str = "MLP on unseen workspaces",
-    zoom: bool = False,
 ) -> Figure:
     """Accuracy, TPR and TNR of the MLP as the decision threshold on P(valid) moves over :data:`metrics.SWEEP`
-    (:func:`toolkit.learning.metrics.threshold_sweep`); ``(N,)`` arrays. ``title`` names the model and samples.
-    ``zoom``: a second panel, beside it, over the span of P(valid) the model gives (rounded out to :data:`ZOOM_STEP`),
-    at a finer step, where the model's P(valid) is squeezed into a narrow band (reader r32c: chapter 03's `paper`
-    model changes everything between 0.36 and 0.63, and its drop met the dotted line at 0.50 on an axis from 0 to 1)."""
+    (:func:`toolkit.learning.metrics.threshold_sweep`); ``(N,)`` arrays. ``title`` names the model and samples (reader
+    r37c: a second, zoomed panel over the span of P(valid) showed chapter 03's switch no finer than this one; cut)."""
     p, truth = np.asarray(probability).reshape(-1), np.asarray(valid, dtype=bool).reshape(-1)
-    window = _zoom_window(p) if zoom else None
-    fig = Figure(figsize=(PAGE_WIDTH if window else 5, 4.2), layout="constrained")
-    axes = fig.subplots(1, 2 if window else 1, squeeze=False)[0]
-    curves = _draw_sweep(axes[0], metrics.SWEEP, p, truth, threshold)
-    parts = []
-    if window:
-        axes[0].axvspan(*window, color=COLORS["reference"], alpha=0.15, lw=0, label="the right panel's range")
-        finer = np.linspace(*window, 121)  # (121,) the right panel's thresholds
-        parts = [_sweep_part("thresholds 0 to 1", metrics.SWEEP, curves)]
-        parts.append(
-            _sweep_part("the span of P(valid), finer", finer, _draw_sweep(axes[1], finer, p, truth, threshold))
-        )
-        axes[1].set_xlim(*window)
-        axes[1].set_title(f"thresholds {window[0]:.2f} to {window[1]:.2f}, finer", fontsize=10)
-        axes[0].set_title("thresholds 0 to 1", fontsize=10)
-        fig.suptitle(title, fontsize=10)
-    else:
-        axes[0].set_title(title, fontsize=10)
-    fig.legend(*axes[0].get_legend_handles_labels(), fontsize=9, loc="outside lower center", ncols=2, frameon=False)
+    fig = Figure(figsize=(5, 4.2), layout="constrained")
+    ax = fig.subplots()
+    curves = _draw_sweep(ax, metrics.SWEEP, p, truth, threshold)
+    ax.set_title(title, fontsize=10)
+    fig.legend(*ax.get_legend_handles_labels(), fontsize=9, loc="outside lower center", ncols=2, frameon=False)
     ts, best = metrics.SWEEP, int(np.argmax(curves["accuracy"]))  # below the axes: the legend hides no curve
     text = "Accuracy, TPR and TNR of the MLP as the threshold on P(valid) moves from 0 to 1: accuracy is highest, "
     text += f"{curves['accuracy'][best]:.2f}, at threshold {ts[best]:.2f}"
@@ -173,30 +156,7 @@ def threshold_sweep(
         text += f"; at the chosen threshold {threshold:.2f}: " + ", ".join(
             f"{name} {curve[at]:.2f}" for name, curve in curves.items()
         )
-    if window:
-        text += f"; a second panel draws the same from {window[0]:.2f} to {window[1]:.2f}, the span of P(valid)"
-    return describe(fig, text + ".", parts)
-
-
-def _sweep_part(name: str, ts: np.ndarray, curves: dict) -> Part:
-    """One panel of a sweep in numbers: eleven of its thresholds ``ts (T,)``, evenly picked, and each curve there."""
-    rows = np.unique(np.linspace(0, len(ts) - 1, 11).round().astype(int))  # (<= 11,) indices, first and last kept
-    return Part(
-        name,
-        f"accuracy, TPR and TNR at thresholds {ts[0]:.2f} to {ts[-1]:.2f}",
-        ("threshold", *curves),
-        tuple((f"{ts[i]:.3f}", *(f"{curve[i]:.2f}" for curve in curves.values())) for i in rows),
-    )
-
-
-ZOOM_STEP = 0.05  # a zoomed sweep's ends: the span of P(valid) rounded out to this step
-
-
-def _zoom_window(p: np.ndarray) -> tuple[float, float] | None:
-    """The span of P(valid) ``p (N,)`` rounded out to :data:`ZOOM_STEP`, or None where it is most of 0 to 1."""
-    lo = np.floor(np.min(p) / ZOOM_STEP) * ZOOM_STEP
-    hi = np.ceil(np.max(p) / ZOOM_STEP) * ZOOM_STEP
-    return (float(lo), float(hi)) if hi - lo <= 0.5 else None
+    return describe(fig, text + ".")
 
 
 def _draw_sweep(ax, ts: np.ndarray, p: np.ndarray, truth: np.ndarray, threshold: float | None) -> dict:
