@@ -377,7 +377,7 @@ def test_chapter_04_section_5_says_cant_tell_where_the_machines_speed_moved():
     assert len(problems(CH04, section_5(moved, same))) == 1
     name = "3DC-7, Algorithm 1 (prediction for samples; every edge exact) vs itself without"
     plain = findings.planning_table({name: {"BS": EAGER_RUN}})
-    unsure = findings.planning_table({name: {"BS": EAGER_RUN}}, moved={name: 2.03})  # its row: marked, no clear evidence
+    unsure = findings.planning_table({name: {"BS": EAGER_RUN}}, moved={name: 2.03})  # its row: marked \\*
     assert findings.NO_CLEAR in unsure and findings.NO_CLEAR not in plain
 
     def table(said: str, per_point: str) -> dict:  # section 5 with its table as the chapter prints it then
@@ -804,8 +804,8 @@ def test_a_second_table_in_one_output_is_read_apart_and_held_to_the_page_width()
         ([1.0, 1.05, 1.1], "1.05 (middle half 1.02–1.08), a tie: less than 10% from 1, neither saved nor cost."),
         (
             [0.8, 1.0, 1.3],
-            "1.00 (middle half 0.90–1.15), no clear evidence (\\*): the middle half lies partly inside the band (less than 10% "
-            "from 1), partly outside.",
+            "1.00 (middle half 0.90–1.15), no clear evidence (\\*): the middle half lies partly inside the band (less "
+            "than 10% from 1), partly outside.",
         ),
     ],
 )

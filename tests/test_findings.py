@@ -268,8 +268,9 @@ def test_planning_sentence_says_cant_tell_where_the_same_exact_check_moved():
     assert ratio == pytest.approx(1.59)
     said = findings.planning_sentence("Algorithm 1", slower, moved=ratio)
     assert said.endswith(
-        "2.00 (middle half 2.00–2.00), no clear evidence (\\*): the connection stage took 1.59 times as long an edge point with "
-        "prediction, so its time holds more than the exact checks of points (the line under the tables says what)."
+        "2.00 (middle half 2.00–2.00), no clear evidence (\\*): the connection stage took 1.59 times as long an edge "
+        "point with prediction, so its time holds more than the exact checks of points (the line under the tables says "
+        "what)."
     )
     assert findings.planning_sentence("Algorithm 1", slower).endswith("prediction cost time.")
 
