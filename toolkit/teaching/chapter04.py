@@ -368,17 +368,19 @@ SERIES = {  # the answer figure's legend, a line a series (reader r33d: five lin
 }
 
 
-def answer_figure(tables: Tables | None = None) -> Figure:
-    """The answer's evidence, under it (review r28d: it came at screen 15 of 18): above, the paper's Table 3 beside
-    our accurate network's ratios of mean times inside Algorithm 1, with the fast checker and with python-fcl on both
-    sides; below, ours by the median of each query's own ratio with its middle half
+def answer_figure(tables: Tables | None = None, means: bool = False) -> Figure:
+    """The answer's evidence under it: our accurate network inside Algorithm 1, by the median of each query's own ratio
+    with its middle half, the median's noise band hatched; with ``means`` (section 6; reader r37d: one statistic and
+    one band at the top), the paper's Table 3 beside our ratios of mean times, the means' band hatched
     (:func:`toolkit.plots.answer.answer_ratios` of :func:`toolkit.teaching.checker_scope.compact`)."""
+    rows = checker_scope.compact(tables)
+    papers = {label: r for label, r in rows.items() if "the paper's" in label}
     return answer_ratios(
-        checker_scope.compact(tables),
+        papers | checker_scope.our_means(tables) if means else {k: r for k, r in rows.items() if k not in papers},
         tie=findings.TIE,
-        spans=checker_scope.spans(tables),
-        means=checker_scope.our_means(tables),
+        spans=None if means else checker_scope.spans(tables),
         names=SERIES,
+        order=list(SERIES),  # each series its marker in both figures
         floor=costs.floors(tables)["means"],
         median_floor=costs.floors(tables)["own"],
     )
