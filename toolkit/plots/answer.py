@@ -88,8 +88,8 @@ def answer_ratios(
     if means:  # reader r34d: the hollow markers had no legend
         handles, labels = axes[1].get_legend_handles_labels()
         fig.legend(handles, labels, loc="outside lower center", ncol=1, fontsize=9, frameon=False)
-    shown = sum(any(label.endswith(f", {name}") for label in rows) for name in series)
-    said = _text(tie, shown, counted, spans, means, None if spans and not means else floor)
+    drawn_series = sum(any(label.endswith(f", {name}") for label in rows) for name in series)
+    said = _text(tie, drawn_series, counted, spans, means, None if spans and not means else floor)
     return describe(fig, said + _median_words(median_floor if means or spans else None, bool(means)), parts)
 
 
