@@ -489,14 +489,18 @@ VERDICT = re.compile(
 
 def verdicts(nb) -> dict[tuple[str, ...], str]:
     """Every verdict a table printed, keyed by the table's first column's header, the row's naming cells and the
-    verdict's column: ``{key: verdict}`` (the run-to-run comparison of ``test_chapter_claims``)."""
+    verdict's column: ``{key: verdict}`` (the run-to-run comparison of ``test_chapter_claims``); a verdict marked
+    :data:`toolkit.teaching.findings.NO_CLEAR` reads :data:`~toolkit.teaching.findings.UNSURE`, as it means."""
     found = {}
     for header, rows in tables(nb):
         naming = [k for k, column in enumerate(header) if column.startswith(LABELS)]
         for row in rows:
             for j, cell in enumerate(row):
-                if (said := VERDICT.fullmatch(cell)) is not None:
-                    found[(header[0], *(row[k] for k in naming), header[j])] = said.group(1)
+                if (said := VERDICT.fullmatch(cell)) is not None:  # marked: no clear evidence, as "can't tell"
+                    marked = cell.startswith(said.group(1) + findings.NO_CLEAR)
+                    found[(header[0], *(row[k] for k in naming), header[j])] = (
+                        findings.UNSURE if marked else said.group(1)
+                    )
     return found
 
 

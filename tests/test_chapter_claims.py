@@ -1548,8 +1548,8 @@ def test_chapter_01_holds_each_ratio_to_its_rows_rates_and_the_page_width():
 @pytest.mark.slow
 def test_chapter_04_verdicts_do_not_flip_beside_a_busy_process_per_core(quick_notebooks):
     """Chapter 04 in quick mode twice, the second time beside one busy process per core: no verdict may turn from
-    "saves time" / "network cheaper" into "costs time" / "network dearer" or back ("can't tell" and a tie may
-    come and go: that is what they are for)."""
+    "saves time" / "network cheaper" into "costs time" / "network dearer" or back (a verdict marked \\*, no clear
+    evidence, and a tie may come and go: that is what they are for)."""
     from chapter_claims import verdicts
 
     from tools.notebook_runner import run_notebook
