@@ -50,7 +50,7 @@ def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_th
     top = hatched.axes[0]
     assert [p.get_hatch() for p in top.patches].count(query_ratios.NOISE_HATCH) == 2  # below and above the tie band
     assert hatched.legends[0].get_texts()[0].get_text() == "timing noise (means), 0.84–1.24"
-    assert "hatched round the tie band, timing noise (means), 0.84–1.24: timing alone" in alt_text(hatched)
+    assert "hatched round the tie band, timing noise (means), 0.84–1.24: the lowest and highest" in alt_text(hatched)
     both = answer_ratios(  # reader r36d: the lower panel draws the median's band too
         rows, tie=findings.TIE, means=means, names=chapter04.SERIES, floor=(0.84, 1.24), median_floor=(0.82, 1.18)
     )

@@ -41,6 +41,7 @@ def answer_ratios(
     means: dict[str, dict[str, float]] | None = None,
     floor: tuple[float, float] | None = None,
     median_floor: tuple[float, float] | None = None,
+    order: list[str] | None = None,
 ) -> Figure:
     """A group of four samplers per scenario, one point per series in each, the tie band ``1 ± tie`` shaded, and the
     series named in a legend above, a line each (``names`` renames them); ``spans``: a whisker per point of the rows
@@ -49,7 +50,7 @@ def answer_ratios(
     ``means``, filled, with ``floor`` hatched round the tie band, and under them the rows it names, hollow, with their
     whiskers, ``median_floor`` hatched (reader r36d: 1.13 read as a clear cost) and their own legend."""
     scenarios = list(dict.fromkeys(label.split(", ", 1)[0] for label in rows))
-    series = list(dict.fromkeys(label.split(", ", 1)[1] for label in rows))
+    series = order or list(dict.fromkeys(label.split(", ", 1)[1] for label in rows))  # a series' style: its place
     names = names or {}
     if means:
         panels = [
@@ -67,9 +68,9 @@ def answer_ratios(
     for ax, (shown, whiskers, hollow) in zip(axes, panels):
         ax.axhspan(1 - tie, 1 + tie, facecolor=COLORS["shade"], edgecolor=COLORS["reference"], alpha=0.9, zorder=0)
         ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
-        if floor and means and ax is axes[0]:
+        if floor and ax is axes[0] and (means or not spans):  # a panel of means (reader r37d: one, in section 6)
             _floor(ax, floor, tie)
-        if median_floor and means and ax is axes[1]:
+        if median_floor and ax is axes[-1] and (means or spans):  # a panel of medians (r37d: the answer's one)
             _floor(ax, median_floor, tie, MEDIAN_NOISE)
         drawn, found = _series(ax, shown, scenarios, series, names, whiskers, hollow)
         _groups(ax, scenarios)
@@ -87,13 +88,21 @@ def answer_ratios(
     if means:  # reader r34d: the hollow markers had no legend
         handles, labels = axes[1].get_legend_handles_labels()
         fig.legend(handles, labels, loc="outside lower center", ncol=1, fontsize=9, frameon=False)
-    said = _text(tie, len(series), counted, spans, means, floor)
-    if median_floor and means:
-        said += f" Hatched round the tie band below, {MEDIAN_NOISE.format(low=median_floor[0], high=median_floor[1])}."
-    return describe(fig, said, parts)
+    drawn_series = sum(any(label.endswith(f", {name}") for label in rows) for name in series)
+    said = _text(tie, drawn_series, counted, spans, means, None if spans and not means else floor)
+    return describe(fig, said + _median_words(median_floor if means or spans else None, bool(means)), parts)
 
 
-NOISE_WORDS = "timing noise (means), {low:.2f}–{high:.2f}: timing alone moved a ratio of means that far"
+def _median_words(band: tuple[float, float] | None, below: bool) -> str:
+    """The text alternative's words on the median's noise band, where a panel hatches it."""
+    said = MEDIAN_NOISE.format(low=band[0], high=band[1]) if band else ""
+    return f" Hatched round the tie band{' below' if below else ''}, {said}." if band else ""
+
+
+NOISE_WORDS = (  # reader r37d: why it is not symmetric round 1
+    "timing noise (means), {low:.2f}–{high:.2f}: the lowest and highest ratio of means that timing one computation "
+    "twice gave, measured, so not symmetric round 1"
+)
 MEDIAN_NOISE = "timing noise (medians), {low:.2f}–{high:.2f}: twice as far as timing alone moved a median"
 
 
@@ -119,8 +128,10 @@ def _text(
     )
     if not means:
         n, below = counted[0]
-        return f"{said}: {n} points in {series} series, {below} of them at or below {1 - tie:.2f}" + (
-            ", whiskers spanning the middle half of the queries' ratios where a series has them." if spans else "."
+        return (
+            f"{said}: {n} points in {series} series, {below} of them at or below {1 - tie:.2f}"
+            + (", whiskers spanning the middle half of the queries' ratios where a series has them." if spans else ".")
+            + (f" Hatched round the tie band, {NOISE_WORDS.format(low=floor[0], high=floor[1])}." if floor else "")
         )
     (n_top, below_top), (n_low, below_low) = counted
     return (

@@ -341,9 +341,9 @@ def step_in_words(step: PlanStep) -> str:
     return text + f"; a repair removed {len(step.removed_nodes)} nodes and {len(step.removed_edges)} edges."
 
 
-def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int = 2) -> Figure:
+def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int = 2, of: int = 0) -> Figure:
     """Several steps of Algorithm 1 side by side, the roadmap drawn at each (one panel per step; ``columns`` a row,
-    as wide as the page together)."""
+    as wide as the page together); ``of``: the trace's steps in all (reader r37d: the title says "3 of 6 steps")."""
     rows = -(-len(steps) // columns)
     fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / columns * 1.08 * rows + 0.4), layout="constrained")
     axes = fig.subplots(rows, columns, squeeze=False).ravel()
@@ -351,7 +351,7 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
         _draw_roadmap(ax, exact, step)
     for ax in axes[len(steps) :]:
         ax.set_axis_off()  # an empty slot: the legend goes there
-    title = "The lazy PRM with edge screening, step by step"  # not Algorithm 1: its edges are predicted, not checked
+    title = f"The lazy PRM with edge screening: {len(steps)} of {of or len(steps)} steps"  # its edges predicted
     fig.suptitle(title, fontsize=11)  # reader r31d: one line; the legend names every mark
     _roadmap_legend(fig, axes, axes[len(steps)] if len(steps) < len(axes) else None)
     text = f"{title}, one panel per step, {len(steps)} steps." + "".join(  # review r28d: the repair's panel too

@@ -61,7 +61,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
             )
         ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=9)
         ax.set_xlabel("sampler, without / with prediction")
-        ax.set_ylabel("ms per query (median)")
+        ax.set_ylabel("ms per query (median),\neach panel its own scale")
         note = STARRED[bool(crossed.any())]  # review r30d: "none here", not a promised mark missing
         ax.set_title(
             f"{title}: above a pair, the median of each query's ratio{note}",  # reader r31d: one line, not three

@@ -383,18 +383,3 @@ def sampling_line(name: str, planning: Mapping[str, Mapping[str, Mapping]]) -> s
         if said[verdict]
     )
     return f"This run's sampling stage on {name}, median time with prediction / median without: {listed}: {counted}."
-
-
-def lazy_beside(live: Mapping[str, Mapping], tables: Tables | None = None) -> str:
-    """Section 3's 3DC-7 ratios of median totals (with / without, ``compare_prediction``'s table), this run's beside
-    the recorded `strong` run's (reader r36d: section 6's fold quoted the record, the live table differed unseen)."""
-    kept = recorded.median_ratios("strong", tables).get("3dc7", {}).get("total", {})
-    cells = ", ".join(
-        f"{s} {row['with']['total_s_median'] / row['without']['total_s_median']:.2f} ({kept[s]:.2f})"
-        for s, row in live.items()
-        if s in kept
-    )
-    return (
-        "3DC-7, the median total with prediction over the median without, this run (the recorded `strong` run, 100 "
-        f"queries a scenario): {cells}. A few live queries can fall outside the recorded range."
-    )

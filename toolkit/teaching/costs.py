@@ -258,24 +258,6 @@ def over_sampling(preset: str, tables: Tables | None = None) -> list[tuple[str, 
     ]
 
 
-def saved_counts(preset: str, tables: Tables | None = None) -> dict[str, tuple[int, int]]:
-    """How many of ``preset``'s 16 cells inside Algorithm 1 saved time, by the ratio of mean times and by the median of
-    each query's own ratio, each with how many of them lie inside their statistic's band of :func:`floors` (chapter
-    04 marks them :data:`MARK`): ``{"means": (3, 2), "medians": (0, 0)}``."""
-    bands = floors(tables)
-    by_means = [
-        round(1 - saved, 2)
-        for key in recorded.query_ratios(preset, tables)
-        for saved in recorded.improvements(preset, key, "total", tables).values()
-        if time_verdict(1 - saved) == SAVES
-    ]
-    medians = [m for row in middle_halves(preset, tables).values() for m, _, _ in row.values()]
-    return {
-        "means": (len(by_means), sum(bands["means"][0] <= r <= bands["means"][1] for r in by_means)),
-        "medians": (sum(time_verdict(m) == SAVES for m in medians), at_edge(preset, tables)[SAVES]),
-    }
-
-
 ABOUT = "about equal"  # chapter 04's word for a cost ratio inside the tie band (reader r34d: not "can't tell")
 
 
@@ -376,14 +358,39 @@ def mean_verdicts(preset: str, tables: Tables | None = None) -> Counter:
     )
 
 
-def call_cost(tables: Tables | None = None) -> str:
-    """What a network call cost against the fast exact check per configuration in the recorded Algorithm 1 run (its
-    Checker throughput), a range over the scenarios, in one sentence (reader r36d: the spread is section 4's)."""
-    rows = recorded.table(recorded.ALGORITHM_1, "Checker throughput", tables).values()
-    now = [1 / recorded.ours(r["learned / exact"]) for r in rows]
-    low, high = (f"{v:.2g}" for v in (min(now), max(now)))
+def largest_share(tables: Tables | None = None) -> str:
+    """The largest of :func:`shares_by_cell` of the recorded Algorithm 1 run, with its cell and the two mean times it
+    divides (reader r37d: the answer's "at most 18 %" was printed nowhere a student could check it)."""
+    shares = shares_by_cell(recorded.ALGORITHM_1, tables)
+    key = max(shares, key=lambda k: shares[k])
+    row = _mean_times(recorded.ALGORITHM_1, tables)[key]
+    parts = (1000 * recorded.ours(row[k]) for k in ("sampling without", "total without"))
+    return "{:.0f} % of a mean query ({} {}: sampling {:.1f} of {:.1f} ms without prediction)".format(
+        100 * shares[key], NAMES[key[0]], key[1], *parts
+    )
+
+
+def split_bullet(tables: Tables | None = None) -> str:
+    """Where the extra time went in :func:`dear_cells`, in one sentence (reader r37d: the answer's "why" rested on the
+    network's call cost, which explains the smaller part of the extra time in most of those cells)."""
+    cells = dear_cells(tables)
+    mostly = sum(c.after_share > 0.5 for c in cells)
+    slower = "got slower" if all(c.sampling[1] > c.sampling[0] for c in cells) else "changed"
     return (
-        f"a network call cost {low if low == high else f'{low}–{high}'} times our exact check per configuration in "
-        "the recorded Algorithm 1 run, so with our fast checker prediction adds time (section 4: that cost moves from "
-        "run to run)"
+        f"in the {len(cells)} cells where prediction cost most (a median ratio of {DEAR:.2f} or more), sampling "
+        f"{slower} with the network, but most of the extra mean time came after sampling in {mostly} of them "
+        "(section 6's last table): the workspace's encoding and another roadmap, which the record does not split"
+    )
+
+
+def planner_banner(tables: Tables | None = None) -> str:
+    """Chapter 04's line over sections 2-3 (reader r37d, lift 3: 3DC-7 cost 2-2.6x there, 1.03-1.58 in the answer):
+    which planner they run, and 3DC-7's recorded range with each planner, each statistic named."""
+    lazy = recorded.median_ratios("strong", tables)["3dc7"]["total"].values()
+    eager = recorded.query_ratios(recorded.ALGORITHM_1, tables)["3dc7"].values()
+    return (
+        "**Sections 2 and 3 run the lazy PRM** (the `strong` preset's planner); the answer at the top is the paper's "
+        f"Algorithm 1. On 3DC-7, over 100 recorded queries, prediction took {min(lazy):.2f}–{max(lazy):.2f} times as "
+        "long with the lazy PRM (the median time with prediction over the median without) and "
+        f"{min(eager):.2f}–{max(eager):.2f} inside Algorithm 1 (the median query), by sampler."
     )

@@ -4,8 +4,9 @@ The chapters' prose states the verdict a student can repeat; the numbers behind 
 tables (``NOTEBOOKS.md``). A verdict is read from an *interval*, not from one number, so that a busy machine cannot
 turn "saves" into "costs": the middle half of the per-query ratios (each query timed without and with prediction in
 turn) for planning, a band of :data:`CLOSE` for a checker's cost timed in one round. Where the interval crosses the
-tie band the verdict is "can't tell" (the words and bands: :mod:`toolkit.util.verdicts`). One statistic throughout:
-medians over the queries, their spread as quartiles; a single slow query that moves a mean is listed.
+tie band the median's verdict is marked :data:`NO_CLEAR`, no clear evidence (the words and bands:
+:mod:`toolkit.util.verdicts`). One statistic throughout: medians over the queries, their spread as quartiles; a
+single slow query that moves a mean is listed.
 """
 
 from __future__ import annotations
@@ -51,14 +52,20 @@ def planning_verdict(row: Mapping[str, Mapping], tie: float = TIE) -> tuple[floa
 
 
 def planning_table(
-    tables: Mapping[str, Mapping[str, Mapping]], tie: float = TIE, moved: Mapping[str, float | None] | None = None
+    tables: Mapping[str, Mapping[str, Mapping]],
+    tie: float = TIE,
+    moved: Mapping[str, float | None] | None = None,
+    planner: str = "",
 ) -> str:
     """Markdown: per scenario and sampler of ``{scenario: compare_prediction table}``, the verdict with the per-query
     ratios' median and middle half, then the median totals without and with prediction (the verdict comes first, so
     that a narrow page shows it, on a line of its own above its named numbers: reader r18a); a scenario whose
-    :func:`speed_moved` ratio ``moved`` holds reads "can't tell", as :func:`planning_sentence` does (reader r31d)."""
+    :func:`speed_moved` ratio ``moved`` holds, and a row whose middle half reaches across the tie band's edge, give the
+    median's verdict marked :data:`NO_CLEAR` (reader r37d: one mark for "no clear evidence" on the page, as section
+    6's recorded cells; :func:`planning_sentence` says it in words); ``planner`` names the planner in the header."""
     rows = [
-        "| scenario | sampler | with / without: verdict (median; middle half) | median total, ms: without / with "
+        f"| scenario{f' ({planner})' if planner else ''} | sampler | with / without: verdict (median; middle half) "
+        "| median total, ms: without / with "
         "| queries |",
         "| --- | --- | --- | --- | --- |",
     ]
@@ -66,6 +73,7 @@ def planning_table(
         for sampler, row in table.items():
             median, q1, q3, said = planning_verdict(row, tie)
             said = UNSURE if (moved or {}).get(name) is not None else said
+            said = f"{time_verdict(median, tie=tie)}{NO_CLEAR}" if said == UNSURE else said
             rows.append(
                 f"| {name} | {sampler} | {said}<br>(median {median:.2f}; middle half {q1:.2f}–{q3:.2f}) "
                 f"| {_ms(row['without']['total_s_median'])} / {_ms(row['with']['total_s_median'])} "
@@ -74,17 +82,19 @@ def planning_table(
     return "\n".join(rows)
 
 
+NO_CLEAR = r"\*"  # after a live verdict: no clear evidence (reader r37d: the mark section 6 gives recorded cells)
 SAID = {  # a planning verdict at the end of a sentence (its band filled in)
     SAVES: "prediction saved time",
     COSTS: "prediction cost time",
     TIES: "a tie: less than {band} from 1, neither saved nor cost",
-    UNSURE: "can't tell: the middle half lies partly inside the band (less than {band} from 1), partly outside",
+    UNSURE: "no clear evidence (\\*): the middle half lies partly inside the band (less than {band} from 1), partly "
+    "outside",
 }
 
 
 SPEED_MOVED = (  # a planning sentence's verdict where the same exact check's cost moved between the modes (review r25a)
-    "can't tell: the connection stage took {ratio:.2f} times as long an edge point with prediction, so its time "
-    "holds more than the exact checks of points (the line under the tables says what)"
+    "no clear evidence (\\*): the connection stage took {ratio:.2f} times as long an edge point with prediction, so "
+    "its time holds more than the exact checks of points (the line under the tables says what)"
 )
 
 
