@@ -161,13 +161,24 @@ def hatch_round(ax, reach: tuple[float, float], tie: float, label: str | None, h
 
 
 def _legend_entries(ax, series: tuple[str, str] | None, edge: tuple[float, float] | None = None) -> None:
-    """The legend's entries: each verdict once, by its colour and shape, always filled; and where there are two
-    ``series``, which a point's fill names, on a plain circle. Fill is the checker's cue alone (review r25c: a hollow
-    "saves time" in the legend read as python-fcl's, where hollow meant python-fcl); the caption counts which
-    checker's points read as each verdict."""
+    """The legend's entries: each verdict once, by its colour and shape, half filled (either checker's); and where
+    there are two ``series``, which a point's fill names, on a plain circle. Fill is the checker's cue alone (review
+    r25c: a hollow "saves time" in the legend read as python-fcl's; reader r37f: a filled one, as the compiled
+    checker's); the caption counts which checker's points read as each verdict."""
     for k, reads in enumerate(READS):
         look = series_style(k)
-        ax.plot([], [], linestyle="none", marker=look["marker"], markersize=7, label=_read(reads), color=look["color"])
+        ax.plot(
+            [],
+            [],
+            linestyle="none",
+            marker=look["marker"],
+            markersize=7,
+            label=_read(reads),
+            color=look["color"],
+            fillstyle="left" if series else "full",
+            markerfacecoloralt=COLORS["free"],
+            markeredgecolor=look["color"],
+        )
     if edge:  # drawn here, so the legend lists it under the verdicts (:func:`_edge_band`, ``(edge, tie)``)
         _edge_band(ax, *edge)
     for hollow, name in zip((False, True), series or ()):
