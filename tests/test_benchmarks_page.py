@@ -238,6 +238,10 @@ def test_the_planner_figures_are_the_race_tables():
         f"used, but {said['lazy batched']} times as slow with its checks batched (estimated)"
     ) in RACE_SUMMARY
     assert " of the time" not in RACE_SUMMARY and "times its time" not in RACE_SUMMARY
+    flat = " ".join(RACE.split())  # the bullets in the same style
+    assert f"and {said['rrt batched']} times as fast as OMPL's own algorithm with its checks batched" in flat
+    assert not re.search(r"takes \d[\d.–]* (?:of|times) (?:its|the) time", flat)
+
 
 
 def test_the_race_has_its_own_page_linked_from_the_benchmarks_page_and_in_the_site_s_order():
@@ -533,9 +537,11 @@ def test_every_ratio_against_ompl_says_its_direction_in_its_sentence():
 
     rrt = held_out("lazy PRM / OMPL RRTConnect, checks batched")
     prm = held_out("lazy PRM / OMPL PRM, checks batched")
-    assert f"faster than the lazy PRM (the lazy PRM takes {rrt} times its time)" in flat
+    assert f"faster than the lazy PRM (the lazy PRM is {rrt} times as slow)" in flat  # reader r37g: one ratio style
     assert f"but {rrt} times as slow with its checks batched (estimated)" in RACE_SUMMARY  # r35g: an estimate
-    assert f"PRM is slower (the lazy PRM takes {prm} of its time)" in flat
+    inverse = [1 / x for r, c in column("lazy PRM / OMPL PRM, checks batched", RACE).items() if r.endswith(", 9300")
+               for x in numbers(c)]  # fmt: skip
+    assert f"PRM is slower (the lazy PRM is {min(inverse):.1f}–{max(inverse):.1f} times as fast)" in flat
     assert f"({rrt})" not in flat and f"({prm})" not in flat
     assert (
         "both seeds' queries pooled, so not like for like), gave the same picture, in time over OMPL's" in flat
@@ -950,7 +956,8 @@ def test_reader_r33g_race_slips_read_from_the_race_s_tables():
     assert f"the rounded ratios of the tables below give {min(ratios):.1f}–{max(ratios):.1f})" in flat
     batched = sorted(held_out("lazy PRM / OMPL PRM, checks batched").values())
     # reader r36g, race lift 1: "In short" in three sentences; the like-for-like roadmap result in its bullet
-    assert f"OMPL's PRM is slower (the lazy PRM takes {batched[0]:.2f}–{batched[-1]:.2f} of its time)" in flat
+    fast = f"{1 / batched[-1]:.1f}–{1 / batched[0]:.1f}"  # reader r37g, race lift 1: "N times as fast" in the prose
+    assert f"OMPL's PRM is slower (the lazy PRM is {fast} times as fast)" in flat
     assert "with OMPL's checks batched (its time less its Python callbacks, plus one batched call of our checker" in (
         RACE_SUMMARY
     )
@@ -1058,7 +1065,8 @@ def test_reader_r34g_race_one_convention_estimates_named_and_the_paper_s_own_tim
             assert "estimat" in para, para[:120]
     lazy = {r: numbers(c)[0] for r, c in column("ours: lazy PRM", RACE).items() if r.endswith(", 9300")}
     rrt = {r: numbers(c)[0] for r, c in column("ours: RRT-Connect", RACE).items() if r.endswith(", 9300")}
-    assert all(0.3 <= rrt[r] / lazy[r] <= 0.4 for r in lazy) and "RRT-Connect takes about a third of its time" in flat
+    assert all(0.3 <= rrt[r] / lazy[r] <= 0.4 for r in lazy) and "RRT-Connect is about three times as fast" in flat
+
     assert "It is not our fastest planner" in flat and 'other pages call it "the best exact planner"' not in flat
     office = [w for w, _ in (pair[0] for pair in TIMES["3do"]["total_s"].values())]
     chains = [w for s in ("3dc7", "3dc9") for w, _ in (pair[0] for pair in TIMES[s]["total_s"].values())]
