@@ -243,7 +243,6 @@ def test_the_planner_figures_are_the_race_tables():
     assert not re.search(r"takes \d[\d.–]* (?:of|times) (?:its|the) time", flat)
 
 
-
 def test_the_race_has_its_own_page_linked_from_the_benchmarks_page_and_in_the_site_s_order():
     """Review r28f, item 1: the race was two of seven screens of a page whose question is what a check costs."""
     from tools.site import DOCS_ORDER
@@ -270,7 +269,8 @@ def test_every_number_the_summary_quotes_is_in_a_table_of_the_page():
     batch = CROSSOVER["variables"]["batch"]
     inside = [(n, u / e) for n, e, u in zip(batch["values"], batch["exact_us"], batch["learned_us"], strict=True)
               if 50 <= n <= 400]  # fmt: skip
-    small = f"in large calls, and more in a planner's calls of 50–400 ({inside[0][1]:.1f} times at {inside[0][0]} a call"
+    small = "in large calls, and more in a planner's calls of 50–400 "
+    small += f"({inside[0][1]:.1f} times at {inside[0][0]} a call"
     assert len(inside) == 1 and small in LEAD
     rest = rest.replace(small, "")
     quoted = set(NUMBER.findall(rest)) - {"3", "5"}  # "3D", "5 December"
@@ -543,10 +543,7 @@ def test_every_ratio_against_ompl_says_its_direction_in_its_sentence():
                for x in numbers(c)]  # fmt: skip
     assert f"PRM is slower (the lazy PRM is {min(inverse):.1f}–{max(inverse):.1f} times as fast)" in flat
     assert f"({rrt})" not in flat and f"({prm})" not in flat
-    assert (
-        "both seeds' queries pooled, so not like for like), gave the same picture, in time over OMPL's" in flat
-
-    )
+    assert "both seeds' queries pooled, so not like for like), gave the same picture, in time over OMPL's" in flat
 
 
 def test_the_crossover_names_the_checker_it_measured_and_the_speed_ups_before_it():
@@ -643,7 +640,6 @@ def test_the_crossover_text_describes_only_marks_the_figure_draws():
     assert "hatches those it calls" not in flat and "a dotted line marks" not in flat
 
 
-
 def test_the_2d_robot_is_named_one_way():
     """Review r28f, contradiction 1: "the 2D point robot" in the Key, "a square that does not turn" later; the paper:
     "The point robot is (0.5x0.5)"."""
@@ -729,8 +725,8 @@ def test_the_race_s_summary_says_where_ompl_wins_what_algorithm_1_takes_and_its_
     timed = held_out("lazy PRM / OMPL RRTConnect")  # reader r35g, race 1: the win is the estimate's, not as timed
     # reader r36g, race 2: "In short" quoted the ratio table's 0.29-0.38 beside the first table's medians; it keeps the
     # estimate's win alone, and the bullet gives the lazy PRM's lead as timed from the first table's medians
-    beats = "times as fast with OMPL's checks batched (its time less its Python callbacks, plus one batched call of our "
-    beats += "checker: estimated, not timed)"
+    beats = "times as fast with OMPL's checks batched (its time less its Python callbacks, plus one batched call of "
+    beats += "our checker: estimated, not timed)"
     assert beats in RACE_SUMMARY and "but " in RACE_SUMMARY  # reader r37g: the lazy PRM's loss, one ratio style
     assert f"{beaten[0]}–{beaten[-1]} times as slow" in RACE_SUMMARY and f"{timed[0]}–{timed[-1]}" not in RACE
     by_row = {r: numbers(column("OMPL RRTConnect", RACE)[r])[0] / numbers(c)[0]
@@ -1087,7 +1083,6 @@ def test_reader_r34g_race_one_convention_estimates_named_and_the_paper_s_own_tim
     assert said in " ".join(scope.split())
 
 
-
 def test_reader_r35g_the_race_s_batched_state_cost_is_no_check_cost_on_either_page():
     """Reader r35g, benchmarks 6 and race 3: the race's batched 0.04-0.08 µs stood below the checker table's cost with
     small calls said to cost more; both pages now say the race's figure is no cost of a check, and that no call size of
@@ -1120,7 +1115,6 @@ def test_reader_r35g_the_race_s_batched_state_cost_is_no_check_cost_on_either_pa
         "These µs are not the checker table's: its exact checkers ran at 20,000 a call, the sweep's at 10,000 at most"
         in flat
     ) and f"{net:.2f} µs here against {min(table):.2f}–{max(table):.2f} µs there" in flat
-
 
 
 def test_reader_r37g_the_race_page_is_the_one_place_that_names_the_baseline_to_quote():
