@@ -138,7 +138,7 @@ def test_the_opening_names_the_statistic_of_no_saving_and_counts_the_means():
     assert found and found.groups() == tuple(str(n) for n in saved)
     # reader r35g, benchmarks 2 and 4: the network named, and the means' count beside the medians' "no"
     assert (  # reader r37g, lift 5: "strong" and "cell" said where "In short" first uses them
-        "In planning, against our compiled checker, the `strong` network (this project's most accurate, larger than "
+        "In planning, against our compiled checker, the `strong` network (our accurate network, larger than "
         "the paper's) saved time in no cell (one scenario with one sampler; 16 in all) by the median query, and "
         f"by mean times, the paper's Table 3 statistic, in {saved[0]} of 16 cells of Algorithm 1, "
         "almost none of it in sampling"
