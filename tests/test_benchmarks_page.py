@@ -757,7 +757,7 @@ def test_the_race_says_its_commit_is_older_and_sets_algorithm_1_against_the_resu
     # reader r36g, race lift 2: the older commit's rerun out of the findings; r37g, lift 3: one line under the table
     measured = " ".join(RACE.partition("## What it measured")[2].partition("- **")[0].split())
     assert (
-        "*Commit* `5152e40`*, before that afternoon's change to a call's fixed cost (`aa0eb97`): a rerun at `aa0eb97`"
+        "The race ran at commit `5152e40`, before that afternoon's change to a call's fixed cost (`aa0eb97`); a rerun"
         in measured
     ) and "aa0eb97" not in scope
     results = (ROOT / "docs" / "results.md").read_text()
