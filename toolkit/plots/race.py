@@ -74,12 +74,13 @@ def race_medians(
         ax.plot(x, y, marker, color=colour, markersize=8, ls="none", label=planner, clip_on=False)
         if batched and all(planner in batched[s] for s in scenarios):
             x = [batched[s][planner] for s in scenarios]
-            ax.plot(x, y, marker, color=colour, markersize=9, ls="none", mfc=COLORS["free"], mew=1.6, alpha=0.6,
+            # reader r34g, race figure b: an estimate drawn apart from a timing (hollow), and named so; r36g: and
+            # marked so; r37g: at full colour and the "est." in ink, since the pale pink was hard to see on white
+            ax.plot(x, y, marker, color=colour, markersize=9, ls="none", mfc=COLORS["free"], mew=2.0,
                     label=f"{planner}, checks batched (estimated)", clip_on=False)  # fmt: skip
-            # reader r34g, race figure b: an estimate drawn lighter than a timing, and named so; r36g: and marked so
             for at, row in zip(x, y, strict=True):
                 ax.annotate("est.", (at, row), xytext=(0, 6), textcoords="offset points", ha="center", va="bottom",
-                            fontsize=POINTS - 2, color=colour)  # fmt: skip
+                            fontsize=POINTS - 1, color=COLORS["ink"])  # fmt: skip
     ax.set_xscale("log")
     low, high = ax.set_xlim(ax.get_xlim()[0], 1.5 * ax.get_xlim()[1])  # reader r35g, race figure c: room past 197 ms
     ticks = [m * 10.0**e for e in range(-1, 5) for m in (1, 2, 5) if low <= m * 10.0**e <= high]
@@ -90,8 +91,7 @@ def race_medians(
     ax.set_yticks(tagged, ["OMPL", "ours"] * len(scenarios), minor=True)
     ax.tick_params(axis="y", which="minor", labelsize=POINTS, labelcolor=COLORS["rejected"], length=2)  # r34g: legible
     ax.tick_params(axis="y", which="major", length=0, pad=POINTS * 3.6)  # the scenario left of its two rows' tags
-    for name in ax.get_yticklabels():  # reader r36g, race figure a: the scenario a heading, not a third row's tag
-        name.set_fontweight("bold")
+
     ax.set_ylim(len(scenarios) - 0.5, -0.5)  # the first scenario on top
     ax.grid(axis="x", color=COLORS["block"], lw=0.6, zorder=0)
     for between in np.arange(len(scenarios) - 1) + 0.5:  # reader r31f: a line between scenarios, the dots in rows
@@ -99,6 +99,9 @@ def race_medians(
     ax.set_xlabel("median time a query, ms (log axis)")
     ax.set_ylabel("scenario")  # reader r34g, race figure c: each row's "OMPL" / "ours" tag says whose it is
     ax.tick_params(labelsize=POINTS)
+    # reader r36g, race figure a: the scenario a heading, not a third row's tag; r37g: larger, not bold, since the
+    # bold face drew in serif beside the sans ticks
+    ax.tick_params(axis="y", which="major", labelsize=POINTS + 2, labelcolor=COLORS["ink"])
     held = f", seed {seed}" if seed is not None else ""
     ax.set_title(f"Median time a query by planner{held}: further left is faster", fontsize=10)
     handles, labels = _columns(*ax.get_legend_handles_labels())
