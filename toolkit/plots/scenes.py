@@ -385,7 +385,7 @@ def _per_frame(values, frames: int, name: str) -> np.ndarray | None:
 
 
 def _frame_title(index: int, frames: int, series: dict, threshold: float) -> str:
-    """The title: "frame 48/89: valid (exact checker), clearance ≥ 0.028, P(valid) 0.92 ≥ threshold 0.57"."""
+    """The title: "frame 48 (frames 0–89): valid (exact checker), clearance ≥ 0.028, P(valid) 0.92 ≥ threshold 0.57"."""
     parts = []
     if series["valid"] is not None:
         parts.append("valid (exact checker)" if series["valid"][index] else "IN COLLISION (exact checker)")
@@ -396,4 +396,4 @@ def _frame_title(index: int, frames: int, series: dict, threshold: float) -> str
         j = min((k for k in (index - 1, index + 1) if 0 <= k < frames), key=lambda k: q[k], default=index)
         dip = f" (frame {j}: {q[j]:.2f})" if q[j] < q[index] - 0.1 else ""
         parts.append(f"P(valid) {q[index]:.2f} {'≥' if q[index] >= threshold else '<'} threshold {threshold:.2f}{dip}")
-    return f"frame {index}/{frames - 1}" + (": " + ", ".join(parts) if parts else "")
+    return f"frame {index} (frames 0–{frames - 1})" + (": " + ", ".join(parts) if parts else "")
