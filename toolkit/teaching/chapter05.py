@@ -54,10 +54,8 @@ def _ratios(improvements: Mapping[str, float]) -> dict[str, float]:
 
 
 def answer() -> str:
-    """The chapter's answer from the record, three sentences (reader r31e): did prediction shorten a 3DC-7 query by
-    10 % or more inside Algorithm 1, with either exact checker, by each query's own ratio and by the ratio of the
-    means; why not with python-fcl (sampling's share of a query times its cut); why not with the compiled checker
-    (one network answer against one check). The numbers behind them, and the timed network's accuracy, are folded."""
+    """The chapter's answer from the record (reader r31e): did prediction shorten a 3DC-7 query by 10 % or more in
+    Algorithm 1, with either checker, by either statistic; why not, in two sentences (r37e); the numbers folded."""
     compiled = recorded.query_ratios(COMPILED)[SCENARIO]  # {sampler: median of each query's own ratio}
     fcl_total = recorded.query_ratios(FCL)[SCENARIO]
     fcl_sampling = recorded.improvements(FCL, SCENARIO, "sampling")  # means
@@ -203,7 +201,9 @@ def _change(improvement: float) -> str:
 def _noise_row(label: str, ratios: Mapping[str, float], band: tuple[float, float]) -> str:
     """A row of ratios of ours: each inside ``band``, as far as timing alone moved its statistic, reads :data:`NOISE`,
     the rest by their verdict (reader r37e: the home page's rule, for the ratio of the means too)."""
-    cells = [f"{NOISE if band[0] <= r <= band[1] else time_verdict(r)} ({r:.2f})" for r in map(ratios.get, SAMPLERS)]
+    cells = [
+        f"{NOISE if band[0] <= r <= band[1] else time_verdict(r)} ({r:.2f})" for r in map(ratios.__getitem__, SAMPLERS)
+    ]
     return f"| {label} | " + " | ".join(cells) + " |"
 
 
