@@ -164,7 +164,9 @@ def test_the_series_panels_show_each_dof_clearance_and_probability(crossing):
     for ax in fig.axes[1:]:
         assert line(ax, "now").get_xdata()[0] == pytest.approx(along[index])
     title = fig.get_suptitle()
-    assert title.startswith(f"frame {index}/{FRAMES - 1}: ") and f"P(valid) {probability[index]:.2f} ≥" in title
+    assert (
+        title.startswith(f"frame {index} (frames 0–{FRAMES - 1}): ") and f"P(valid) {probability[index]:.2f} ≥" in title
+    )
     assert "≥ threshold 0.40" in title  # 0.71 >= 0.4 (reader r32e: no brackets for the title to wrap inside)
 
 
@@ -634,5 +636,5 @@ def test_the_frame_title_names_a_dip_beside_the_frame():
     from toolkit.plots.scenes import _frame_title
 
     series = {"valid": None, "clearance": None, "probability": np.array([0.9, 0.575, 0.92, 0.95])}
-    assert _frame_title(2, 4, series, 0.57) == "frame 2/3: P(valid) 0.92 ≥ threshold 0.57 (frame 1: 0.57)"
-    assert _frame_title(3, 4, series, 0.57) == "frame 3/3: P(valid) 0.95 ≥ threshold 0.57"
+    assert _frame_title(2, 4, series, 0.57) == "frame 2 (frames 0–3): P(valid) 0.92 ≥ threshold 0.57 (frame 1: 0.57)"
+    assert _frame_title(3, 4, series, 0.57) == "frame 3 (frames 0–3): P(valid) 0.95 ≥ threshold 0.57"

@@ -330,10 +330,10 @@ def path_frame(
         name: _per_frame(values, frames, name)
         for name, values in (("valid", valid), ("clearance", clearance), ("probability", probability))
     }
-    fig = Figure(figsize=(PAGE_WIDTH, 13.6))  # as wide as the page: its text as large as it is drawn
+    fig = Figure(figsize=(PAGE_WIDTH, 16.4))  # as wide as the page: its text as large as it is drawn
     # the robot a whole row above the series (review r16c: beside them its panel was 200 px wide); the series the
-    # larger share (readers r18c, r31e: five panels of 70, then 90 px were too small to read at the site's width)
-    grid = fig.add_gridspec(2, 1, height_ratios=(3.5, 6.5), hspace=0.3, top=0.93, bottom=0.05, left=0.12, right=0.86)
+    # larger share (readers r18c, r31e, r37e: five panels of 70, 90, then 80 px were too small at the site's width)
+    grid = fig.add_gridspec(2, 1, height_ratios=(3.5, 8.6), hspace=0.3, top=0.93, bottom=0.05, left=0.12, right=0.86)
     valid_now = None if series["valid"] is None else bool(series["valid"][index])
     bound = None if series["clearance"] is None else float(series["clearance"][index])
     _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, (valid_now, bound), workspace, margin)
@@ -385,7 +385,7 @@ def _per_frame(values, frames: int, name: str) -> np.ndarray | None:
 
 
 def _frame_title(index: int, frames: int, series: dict, threshold: float) -> str:
-    """The title: "frame 48/89: valid (exact checker), clearance ≥ 0.028, P(valid) 0.92 ≥ threshold 0.57"."""
+    """The title: "frame 48 (frames 0–89): valid (exact checker), clearance ≥ 0.028, P(valid) 0.92 ≥ threshold 0.57"."""
     parts = []
     if series["valid"] is not None:
         parts.append("valid (exact checker)" if series["valid"][index] else "IN COLLISION (exact checker)")
@@ -396,4 +396,4 @@ def _frame_title(index: int, frames: int, series: dict, threshold: float) -> str
         j = min((k for k in (index - 1, index + 1) if 0 <= k < frames), key=lambda k: q[k], default=index)
         dip = f" (frame {j}: {q[j]:.2f})" if q[j] < q[index] - 0.1 else ""
         parts.append(f"P(valid) {q[index]:.2f} {'≥' if q[index] >= threshold else '<'} threshold {threshold:.2f}{dip}")
-    return f"frame {index}/{frames - 1}" + (": " + ", ".join(parts) if parts else "")
+    return f"frame {index} (frames 0–{frames - 1})" + (": " + ", ".join(parts) if parts else "")
