@@ -43,8 +43,8 @@ def test_the_answer_names_both_30_grid_caes_and_gives_each_a_row():
     # reader r37b: no nickname before its row defines it, both halves of Table 1, "the paper's recipe" not said of it
     assert text.startswith(
         "**The answer.** The paper's Table 1 says its 2DS CAE rebuilds its training grids and unseen grids both 100% "
-        "right. Trained on 30 grids with the paper's layers and λ (Adam for its Adagrad, which diverges here) for "
-        "1,500 steps, our CAE rebuilds its training grids 99.6% right by memorizing them: the seen column reproduces. "
+        "right. Trained on 30 grids with the paper's layers and λ for 1,500 steps, our CAE rebuilds its training grids "
+        "99.6% right by memorizing them: the seen column reproduces. "
         'But it scores 86.9% on 500 new grids, where answering "all free" gets 87.8% (0.9 points below): it rebuilds a '
         'new workspace **no better than answering "all free"**, and the unseen column does not reproduce.\n\n'
     )

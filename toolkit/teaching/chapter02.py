@@ -131,8 +131,7 @@ def _one_line(paper: Scores, long: Scores, long_new: float, free: float, *, n_se
     )
     claim = (
         f"**The answer.** The paper's Table 1 says its 2DS CAE rebuilds its training grids and unseen grids {both}. "
-        f"Trained on {n_seen} grids with the paper's layers and λ (Adam for its Adagrad, which diverges here) for "
-        f"{steps:,} steps, our CAE"
+        f"Trained on {n_seen} grids with the paper's layers and λ for {steps:,} steps, our CAE"
     )
     seen_said = (
         f"rebuilds its training grids {long['seen_acc']:.1%} right by memorizing them: the seen column reproduces. But "
