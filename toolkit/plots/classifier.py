@@ -215,9 +215,9 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     fig.legend([boundary, *handles], labels, loc="outside lower center", ncols=3, fontsize=8, frameon=False)
     keep_on_side(fig, grid)  # again, the map as its title and legend left it (r34c)
     text = f"{title + ': ' if title else ''}the model's decision at threshold {threshold:.2f} over {grid.names[0]} and "
-    text += f"{grid.names[1]}, each cell by its kind of answer, the mistakes marked on their cells: dangerous ones "
-    text += f"with squares{block[3]} and conservative ones with sparse circles{block[1]}, over the boundary; their "
-    text += "counts, and the ROC curve. "
+    text += f"{grid.names[1]}, each cell by its kind of answer, over the boundary; the mistakes marked near their "
+    text += f"cells, on their side of it: dangerous ones with squares{block[3]} and conservative ones with sparse "
+    text += f"circles{block[1]}; their counts, and the ROC curve. "
     text += f"{answers.answers_in_words(predicted, valid)}; {roc}."
     cut, fpr, tpr = roc_points(probability, valid, np.linspace(0.0, 1.0, 11))  # (11,) each
     curve = Part(
