@@ -239,9 +239,21 @@ def test_the_typed_sentences_on_tables_1_and_2_and_the_throughput_quote_them():
     def column(preset: str, heading: str, name: str) -> dict[str, float]:
         return {s: recorded.ours(row[name]) for s, row in recorded.table(preset, heading, TABLES).items()}
 
-    strong = column("strong", "MLP accuracy", "Unseen Acc")
-    said = claim(r"\*MLP, strong preset\*: 2DS (\d+) %, 3DC-7 (\d+) %, 3DC-9 (\d+) %, 3DO (\d+) % on unseen workspaces")
-    assert [int(v) for v in said] == [round(strong[s] * 100) for s in ("2ds", *THREE_D)]
+    said = claim(  # reader r38f, contradiction 4: one figure a claim, Figure 1's network's, as the table above it
+        r"\*MLP, strong preset\*: Figure 1's network \(5 December\) is right (\d+)–(\d+) % of the time on unseen "
+        r"workspaces' balanced samples \(the table above\), its TPR (\d+)–(\d+) % and TNR (\d+)–(\d+) %; the lazy-PRM "
+        r"run's \(3 December\), (\d+)–(\d+) % too"
+    )
+    ranges = [
+        column(preset, "MLP accuracy", name).values()
+        for preset, name in (
+            (recorded.ALGORITHM_1, "Balanced unseen Acc"),
+            (recorded.ALGORITHM_1, "TPR"),
+            (recorded.ALGORITHM_1, "TNR"),
+            ("strong", "Balanced unseen Acc"),
+        )
+    ]
+    assert [int(v) for v in said] == [round(f(r) * 100) for r in ranges for f in (min, max)]
     balanced = column("paper", "MLP accuracy", "Balanced unseen Acc")
     said = claim(r"at chance on unseen workspaces' balanced samples \(2DS (\d+) %, 3DC-7, 3DC-9 and 3DO (\d+) %\)")
     assert int(said[0]) == round(balanced["2ds"] * 100) and {round(balanced[s] * 100) for s in THREE_D} == {
@@ -575,7 +587,9 @@ def test_the_verdict_names_its_checker_first():
     assert (  # reader r36f, item 2: each query's own ratio alone in a verdict; means in the table under them
         ": prediction costs time.** None saved, 7 tied, 9 cost (5 beyond the noise edge).\n- **With python-fcl (the "
         "FCL library called from Python, a slow exact checker) on both sides: mostly a tie.** 3 saved (2 beyond the "
-        "noise edge: 3DC-9 OB 0.79, 3DO BT 0.72), 13 tied, none cost.\n- **The paper's Table 3, by means: prediction "
+        "noise edge: 3DC-9 OB 0.79, 3DO BT 0.72), 13 tied, none cost. Of those, 3DC-9 OB saved through the rest of "
+        "the query, not sampling (by means; this run was not timed twice: its noise edge is borrowed from the run "
+        "with our compiled checker).\n- **The paper's Table 3, by means: prediction "
         "saves time.** It gives no query's own ratio; 10 saved 10 % or more, 6 tied, none cost 10 % or more (three "
         "cost 2–9 %)"
     ) in said
@@ -663,6 +677,25 @@ def test_the_findings_say_which_run_each_cost_is_and_what_moved_3dc9_ob():
         assert "planner_race.md" in next(p for p in TEXT.split("\n\n") if sentence in p)
 
 
+def test_the_compiled_runs_cost_outside_sampling_is_said():
+    """Reader r38f, contradictions 1 and 2: with our compiled checker sampling grew by at most 18 % of a query while
+    whole queries grew up to 86 %: the "Why" says sampling is only part of the cost and the fold gives the compiled
+    run's cells; python-fcl's 3DC-9 OB saving, beyond the noise edge, is said to come from the rest of the query."""
+    grew = -min(results_findings.stage_shares(TABLES, recorded.ALGORITHM_1)[1])
+    fast = results_findings.apart(TABLES, recorded.ALGORITHM_1)
+    widest = max(fast, key=lambda cell: abs(cell.total - cell.sampling))
+    assert (round(grew * 100), len(fast), widest.name, round(-widest.total * 100)) == (18, 8, "3DC-9 BT", 86)
+    why = results_findings.why_no_saving(TABLES)
+    assert "slower in 13 of 16 cells, though by at most 18 % of a query; in 8 cells the rest of the query" in why
+    apart = results_findings.not_from_sampling(TABLES)
+    assert "in 8 cells of the run with our compiled checker (the widest: 3DC-9 BT, 86 % longer where sampling " in apart
+    said = results_summary.short(TABLES)
+    assert "adding at most 18 % of a query" in said
+    assert "In 8 cells with our compiled checker and 3 with python-fcl" in said
+    slow = {cell.name: cell for cell in results_findings.apart(TABLES)}["3DC-9 OB"]
+    assert slow.total - slow.sampling >= 0.1 and "Of those, 3DC-9 OB saved through the rest of the query" in said
+
+
 def test_the_strong_cae_carrying_over_on_2ds_quotes_its_table_1():
     """Review r25c (item 7): "learns nothing that carries" beside the `strong` CAE's 2DS 93 % unseen against 88 % for
     "all free"; the page says where the `strong` CAE carries over, and its figures are its Table 1's."""
@@ -694,7 +727,8 @@ def test_the_counts_a_noise_floor_undercuts_are_told_apart():
     beyond = sum(r < floor[0] for r in ratios)
     paper = sum(len(row) for row in _total("paper").values())
     assert f"), {beyond} of {len(ratios)}" not in said  # reader r33f, item 5: the `paper` network's cells, on their own
-    assert said.endswith(f"in {beyond} of {paper} (3DO BT 0.69).") and "2DS BT 0.88" not in said
+    invalid = ", a network that answers “invalid” to every 3DO sample"  # reader r38f, contradiction 5
+    assert said.endswith(f"in {beyond} of {paper} (3DO BT 0.69{invalid}).") and "2DS BT 0.88" not in said
     assert "0.26" not in said  # reader r36f, item 8: one statistic in the verdict, the means under "Means and medians"
     _, saved = results_findings.stage_shares(TABLES, checker_scope.SLOW)
     apart = {cell.name: cell for cell in results_findings.apart(TABLES)}
@@ -760,7 +794,7 @@ def test_the_last_contradictions_of_reader_r33f_are_gone():
     said = results_summary.short(tables)
     # item 1; reader r37f, item 2: "at most 16 %" said of sampling's saving alone; 3DC-9 OB's whole query, moved by
     # the rest of the query, is the fold's ("Where the whole query moved apart from sampling")
-    assert "so shortening it saved at most 16 % of one" in said
+    assert "so shortening sampling saved at most 16 % of a query. In 8 cells" in said  # reader r38f, contradiction 3
     why = results_findings.why_no_saving(tables)
     assert "3DC-9 OB" not in why and "3DC-9 OB, 34 % saved where sampling saved 8 %" in PAGE
     assert "([how we read its table](#how-these-results-were-made))" in said

@@ -36,7 +36,20 @@ def lazy_prm(tables: Tables) -> str:
     answer = "no" if saved == 0 else "rarely" if saved < strong / 2 else "mostly"
     floor = medians_floor(tables)
     beyond = [(name, r) for name, r in groups["paper"]["less time"] if floor is None or r < floor[0]]
-    named = f" ({', '.join(f'{name} {r:.2f}' for name, r in beyond)})" if 0 < len(beyond) <= 3 else ""
+    known = any("MLP accuracy" in heading for heading in tables.get("paper", {}))
+    invalid = {  # reader r38f, contradiction 5: where the `paper` MLP answers "invalid" to every sample
+        NAMES.get(s, s)
+        for s, row in (recorded.table("paper", "MLP accuracy", tables) if known else {}).items()
+        if recorded.ours(row["Unseen TPR"]) == 0
+    }
+
+    def cell(name: str, r: float) -> str:
+        scenario = name.split()[0]
+        return f"{name} {r:.2f}" + (
+            f", a network that answers “invalid” to every {scenario} sample" if scenario in invalid else ""
+        )
+
+    named = f" ({'; '.join(cell(name, r) for name, r in beyond)})" if 0 < len(beyond) <= 3 else ""
     floor_said = f" beyond the ratio-of-medians noise floor ({floor[0]:.2f}–{floor[1]:.2f})" if floor else ""
     means = [
         f"{NAMES.get(s, s)} {sampler} saved {percent(cut)} %"
@@ -150,6 +163,7 @@ class Causes(NamedTuple):
     cells: int
     share: float
     saved: float
+    grew: float  # with our compiled checker, the sampling time prediction saved, least (most grown), as a share
 
 
 def causes(tables: Tables) -> Causes:
@@ -162,7 +176,7 @@ def causes(tables: Tables) -> Causes:
         ]
     )
     shares, saved = stage_shares(tables, checker_scope.SLOW)
-    return Causes(means[2], sum(means), max(shares), max(saved))
+    return Causes(means[2], sum(means), max(shares), max(saved), min(stage_shares(tables, recorded.ALGORITHM_1)[1]))
 
 
 def why_no_saving(tables: Tables) -> str:
@@ -177,7 +191,10 @@ def why_no_saving(tables: Tables) -> str:
         "**Why, by means: with a fast checker the network is the dearer check; with a slow one sampling is too small "
         "a share of a query.** With our compiled checker the network, timed beside other work, cost "
         f"{span(cost_3d, lambda c: f'{c:.2g}')} times an exact check per configuration in 3D{cost_2d}, so sampling "
-        f"got 10 % or more slower in {why.slower} of {why.cells} cells. With python-fcl, {fcl_slower(tables)} times "
+        f"got 10 % or more slower in {why.slower} of {why.cells} cells, though by at most {percent(-why.grew)} % of a "
+        f"query; in {len(apart(tables, recorded.ALGORITHM_1))} cells the rest of the query moved the whole query "
+        "further (the fold below: “Where the whole query moved apart from sampling”). With python-fcl, "
+        f"{fcl_slower(tables)} times "
         "slower than our compiled checker in 3D, the network is the cheaper check, but sampling is a small share of a "
         "query, so shortening it saved little (the table below)."
         + "\n\n   "
@@ -239,16 +256,16 @@ class Apart(NamedTuple):
     sampling: float  # the sampling time saved, as a share of a mean query without prediction
 
 
-def apart(tables: Tables) -> list[Apart]:
-    """The cells of the run with python-fcl on both sides whose total improvement by means lies 10 points or more from
-    the sampling time saved as a share of the query (:func:`stage_shares`): the rest of the query, which prediction
-    does not shorten, moved them."""
-    _, saved = stage_shares(tables, checker_scope.SLOW)
-    times = next(t for heading, t in tables[checker_scope.SLOW].items() if "Times behind Table 3" in heading)
+def apart(tables: Tables, preset: str = checker_scope.SLOW) -> list[Apart]:
+    """The cells of the run ``preset`` (by default the one with python-fcl on both sides) whose total improvement by
+    means lies 10 points or more from the sampling time saved as a share of the query (:func:`stage_shares`): the rest
+    of the query, which prediction does not shorten, moved them."""
+    _, saved = stage_shares(tables, preset)
+    times = next(t for heading, t in tables[preset].items() if "Times behind Table 3" in heading)
     cells = [(row[0], row[1]) for row in times["rows"]]  # scenario, sampler, in the order of ``saved``
     found = []
     for (scenario, sampler), share in zip(cells, saved):
-        total = recorded.improvements(checker_scope.SLOW, scenario, recorded=tables)[sampler]
+        total = recorded.improvements(preset, scenario, recorded=tables)[sampler]
         if round(abs(total - share) * 100) >= round(findings.TIE * 100):
             found.append(Apart(f"{NAMES.get(scenario, scenario)} {sampler}", total, share))
     return found
@@ -262,8 +279,8 @@ def not_from_sampling(tables: Tables) -> str:
     """One sentence on :func:`apart`'s cells, each with its whole query's change beside the sampling time saved
     there, both as shares of a mean query (review r28f, item 4; r31f: which way each moved); empty where there are
     none."""
-    cells = apart(tables)
-    if not cells:
+    cells, fast = apart(tables), apart(tables, recorded.ALGORITHM_1)
+    if not cells and not fast:
         return ""
 
     def said(cell: Apart) -> str:
@@ -271,10 +288,19 @@ def not_from_sampling(tables: Tables) -> str:
         return f"{cell.name}, {moved} where sampling saved {percent(cell.sampling)} %"
 
     timed = any("timed twice" in heading for heading in tables[checker_scope.SLOW])
-    noise = "" if timed else ", and this run was not timed twice, so timing noise in its means may add to it"
+    noise = "" if timed else ", and the run with python-fcl was not timed twice, so timing noise in its means may add"
+    noise += " to it" if noise else ""
+    widest = max(fast, key=lambda cell: abs(cell.total - cell.sampling), default=None)
+    compiled = (  # reader r38f, contradiction 1: the compiled run's cost is mostly outside sampling too
+        f"{len(fast)} cells of the run with our compiled checker (the widest: {widest.name}, "
+        f"{percent(abs(widest.total))} % {'saved' if widest.total >= 0 else 'longer'} where sampling "
+        f"{'saved' if widest.sampling >= 0 else 'added'} {percent(abs(widest.sampling))} %) and "
+        if widest
+        else ""
+    )
     return (  # review r30f, contradiction 4; reader r32f, item 4: in the fold, under the worked example's cell
-        f"- *Where the whole query moved apart from sampling*: in {len(cells)} cells of the run with python-fcl the "
-        "whole query moved 10 points or more away from what sampling saved there "
+        f"- *Where the whole query moved apart from sampling*: in {compiled}{len(cells)} cells of the run with "
+        "python-fcl the whole query moved 10 points or more away from what sampling saved there "
         f"(as shares of a mean query without prediction: {'; '.join(map(said, cells))}): the rest of the query, "
         "which prediction does not shorten, moved them; with other samples the planner grows another roadmap, "
         "with other edges to check and other repairs"
