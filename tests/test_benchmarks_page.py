@@ -236,7 +236,10 @@ def test_the_planner_figures_are_the_race_tables():
     """Review r27f, item 6: RRT-Connect was tuned on seed 7300, so the summary quotes the held-out seed 9300's rows.
     Review r28f, item 1: the race has its own page, whose summary quotes them. Reader r37g, race 3: one ratio style."""
     said = race_summary_ratios()
-    assert "our exact planners are quick: on the held-out queries of seed 9300" in RACE_SUMMARY
+    assert (  # reader r38g, race 1: the claim each planner's ratios bear out, not "our exact planners are quick"
+        "our RRT-Connect beats OMPL's RRTConnect both ways, our lazy PRM only as OMPL is used from Python: on the "
+        "held-out queries of seed 9300"
+    ) in RACE_SUMMARY and "planners are quick" not in RACE
     assert (
         f"our RRT-Connect is {said['rrt used']} times as fast as OMPL's RRTConnect as a Python user runs it"
         in RACE_SUMMARY
@@ -647,7 +650,7 @@ def test_rrt_connect_s_lead_over_ompl_is_the_first_table_s_medians():
     lead_sentence = (
         f"is {held} times as fast as OMPL's RRTConnect as used from Python (the quotients of the first table's"
     )
-    assert f"{lead_sentence} medians;" in flat
+    assert f"{lead_sentence} medians)," in flat  # reader r38g, race 2: the rounded ratios' range gone
     assert tuned not in flat and "What these say, from the held-out seed 9300's rows, as the summary at the top" in flat
     assert len(re.findall(r"[a-z)]\. [A-Z(]", RACE_SUMMARY)) + 1 == 3  # reader r36g: "In short" in three sentences
     scope = " ".join(RACE.partition("**In short**")[2].partition("</details>")[0].split())
@@ -966,7 +969,10 @@ def test_reader_r33g_race_slips_read_from_the_race_s_tables():
     quot = [ompl[r] / rrt[r] for r in rrt]
     assert round(min(quot), 1) == 7.2 and 9.2 <= max(quot) <= 9.3 and "is 7.2–9.3 times as fast" in flat
     ratios = [1 / v for v in held_out("RRT-Connect / OMPL RRTConnect").values()]
-    assert f"the rounded ratios of the tables below give {min(ratios):.1f}–{max(ratios):.1f})" in flat
+    assert f"{min(ratios):.1f}–{max(ratios):.1f}" not in flat  # reader r38g, race 2: one range for one fact
+    assert (
+        "is 7.2–9.3 times as fast as OMPL's RRTConnect as used from Python (the quotients of the first table's" in flat
+    )
     batched = sorted(held_out("lazy PRM / OMPL PRM, checks batched").values())
     # reader r36g, race lift 1: "In short" in three sentences; the like-for-like roadmap result in its bullet
     fast = f"{1 / batched[-1]:.1f}–{1 / batched[0]:.1f}"  # reader r37g, race lift 1: "N times as fast" in the prose
@@ -1078,7 +1084,8 @@ def test_reader_r34g_race_one_convention_estimates_named_and_the_paper_s_own_tim
             assert "estimat" in para, para[:120]
     lazy = {r: numbers(c)[0] for r, c in column("ours: lazy PRM", RACE).items() if r.endswith(", 9300")}
     rrt = {r: numbers(c)[0] for r, c in column("ours: RRT-Connect", RACE).items() if r.endswith(", 9300")}
-    assert all(0.3 <= rrt[r] / lazy[r] <= 0.4 for r in lazy) and "RRT-Connect is about three times as fast" in flat
+    times = [lazy[r] / rrt[r] for r in lazy]  # reader r38g, race 5: the table's quotients, not "about three"
+    assert f"RRT-Connect is {min(times):.1f}–{max(times):.1f} times as fast (the first table's medians" in flat
 
     assert "It is not our fastest planner" in flat and 'other pages call it "the best exact planner"' not in flat
     office = [w for w, _ in (pair[0] for pair in TIMES["3do"]["total_s"].values())]
