@@ -114,7 +114,7 @@ def _frames_from(frame: int, tightest: int) -> str:
     side = "before" if frame < tightest else "after"
     return (
         f" It lies {n} frame{'s' * (n != 1)} {side} the least clearance bound (frame {tightest}, where the slider "
-        f"starts): on the P(valid) panel it lies {'left' if side == 'before' else 'right'} of the vertical line."
+        "starts)."
     )
 
 
