@@ -3,8 +3,7 @@
 Chapter 04's answer table gives, for each scenario and sampler, the median of each query's own ratio (time with
 prediction / time without) of our accurate `strong` network inside the paper's Algorithm 1 (``docs/results.md``,
 "Preset `strong` with `--planner paper`"). Where that ratio costs time beyond timing noise and the mean time grew too
-(:func:`dear_cells`; reader r38d: not a cut-off of 1.25 that left out a cell beyond noise), the recorded costs need
-explaining (review r25a: "the recorded costs of 1.5-1.75x are never explained"). The record times
+(:func:`dear_cells`; reader r38d: not a cut-off of 1.25), the costs need explaining (review r25a). The record times
 two things a query, sampling and the total, by means: :func:`cost_table` splits each such cell's mean time into the
 sampling stage and everything after it (connecting the roadmap's edges, extracting and verifying the path), with
 and without prediction. The record keeps no finer split and no counts (rounds, auxiliary samples, roadmap nodes,
