@@ -52,7 +52,7 @@ class Cost:
         return (self.after[1] - self.after[0]) / extra if extra else 0.0
 
 
-def _mean_times(preset: str, tables: Tables | None = None) -> dict[tuple[str, str], dict[str, str]]:
+def mean_times(preset: str, tables: Tables | None = None) -> dict[tuple[str, str], dict[str, str]]:
     """``preset``'s table "Times behind Table 3": ``{(scenario, sampler): {column: cell}}``."""
     times = recorded.packaged() if tables is None else tables
     heading = next(name for name in times[preset] if "times behind table 3" in name.lower())
@@ -70,7 +70,7 @@ def shares_by_cell(preset: str, tables: Tables | None = None) -> dict[tuple[str,
     """:func:`sampling_shares` by cell: ``{(scenario, sampler): share}``."""
     return {
         key: recorded.ours(row["sampling without"]) / recorded.ours(row["total without"])
-        for key, row in _mean_times(preset, tables).items()
+        for key, row in mean_times(preset, tables).items()
     }
 
 
@@ -80,7 +80,7 @@ def dear_cells(tables: Tables | None = None) -> list[Cost]:
     extra time to split)."""
     ratios = recorded.query_ratios(recorded.ALGORITHM_1, tables)
     edge = floors(tables)["own"][1]
-    rows = _mean_times(recorded.ALGORITHM_1, tables)
+    rows = mean_times(recorded.ALGORITHM_1, tables)
     cells = []
     for scenario, by_sampler in ratios.items():
         for sampler, ratio in by_sampler.items():
@@ -366,7 +366,7 @@ def largest_share(tables: Tables | None = None) -> str:
     divides (reader r37d: the answer's "at most 18 %" was printed nowhere a student could check it)."""
     shares = shares_by_cell(recorded.ALGORITHM_1, tables)
     key = max(shares, key=lambda k: shares[k])
-    row = _mean_times(recorded.ALGORITHM_1, tables)[key]
+    row = mean_times(recorded.ALGORITHM_1, tables)[key]
     parts = (1000 * recorded.ours(row[k]) for k in ("sampling without", "total without"))
     return "{:.0f} % of a mean query ({} {}: sampling {:.1f} of {:.1f} ms without prediction)".format(
         100 * shares[key], NAMES[key[0]], key[1], *parts
