@@ -74,11 +74,13 @@ def test_the_papers_squares_sit_inside_their_samplers_slot():
                     assert min(abs(x - t) for t in ticks) <= 0.5 - 0.2
 
 
-def test_cost_table_splits_the_cells_where_prediction_cost_25_percent_or_more():
+def test_cost_table_splits_the_cells_where_both_statistics_cost_time():
+    """Reader r38d, item 8: the median query beyond timing noise and the mean time longer, not a cut-off of 1.25 that
+    left out 3DC-9 OB (1.24, beyond noise; its mean time fell, so it has no extra time to split)."""
     cells = costs.dear_cells()
     assert {f"{c.scenario} {c.sampler}" for c in cells} == {"3DC-7 OB", "3DC-7 BT", "3DC-9 BT", "3DO OB"}
     for c in cells:
-        assert c.ratio >= costs.DEAR
+        assert c.ratio > costs.floors()["own"][1] and c.total[1] > c.total[0]
         assert abs(sum(c.after) + sum(c.sampling) - sum(c.total)) < 1e-12  # the two parts make the total
     table = costs.cost_table()
     assert table.count("\n| 3D") == len(cells) and f"in 3 of these {len(cells)} cells (the other: 3DO OB)." in table
