@@ -512,11 +512,8 @@ def test_a_slice_outlines_the_blocks_a_flat_view_draws_across_links_they_cannot_
     """Review r32a: the 9-DoF chain's panel drew its valid robot inside a filled block lying wholly above it. A block
     drawn across the links but wholly above or below every link over it (in front or behind, from the side) is a
     dotted outline; a block beside the links, whatever its height, stays filled."""
-    robot = robots.box_chain(1)  # along +x from (5, 5, 5): x 5.0 to 5.5, z 4.95 to 5.05
     boxes = [[[4, 4, 6], [6, 6, 7]], [[5.25, 5.25, 4], [5.5, 5.5, 6]], [[7, 7, 6], [8, 8, 7]]]  # above, beside, far
-    world = Workspace(np.zeros(3), np.full(3, 11.0), np.array(boxes, dtype=float), family="3dc")
-    q = np.array([5.0, 5.0, 5.0, 0.0, 0.0, 0.0, 0.0])
-    fig = cspace.cspace_slice(exact_checker(world, robot), q, joints=(5, 6), resolution=8, margin=3.0)
+    fig = _one_link_slice(boxes)
     ax = fig.axes[1]
     (above,) = _patches(ax, "beyond")
     assert not above.get_fill() and above.get_linestyle() == ":"
@@ -525,9 +522,17 @@ def test_a_slice_outlines_the_blocks_a_flat_view_draws_across_links_they_cannot_
     assert "A block drawn across the links that no link touches (above or below them) is a dotted outline." in alt_text(
         fig
     )
-    side = cspace.cspace_slice(exact_checker(world, robot), q, joints=(5, 6), resolution=8, view="xz", margin=3.0)
+    side = _one_link_slice(boxes, view="xz")
     (behind,) = _patches(side.axes[1], "beyond")  # from the side: the second block, behind the links
     assert _drawn_inside(behind, (5.25, 4), (5.5, 6))
+
+
+def _one_link_slice(boxes, view="xy", x=5.0):
+    """The slice of a one-link chain, laid along +x from (x, 5, 5) (to x + 0.5; z 4.95 to 5.05), among ``boxes``."""
+    world = Workspace(np.zeros(3), np.full(3, 11.0), np.array(boxes, dtype=float), family="3dc")
+    q = np.array([x, 5.0, 5.0, 0.0, 0.0, 0.0, 0.0])
+    checker = exact_checker(world, robots.box_chain(1))
+    return cspace.cspace_slice(checker, q, joints=(5, 6), resolution=8, view=view, margin=3.0)
 
 
 def _drawn_inside(outline, lo, hi) -> bool:
@@ -574,11 +579,8 @@ def test_the_figure_of_one_check_names_each_office_block_inside_it():
 def test_a_slices_robot_panel_dashes_the_block_a_link_touches_and_keys_each_way_a_block_is_drawn():
     """Reader r37a, C1: the figure of one check dashed a touched block, the slices' robot panels filled it, and filled
     grey blocks beside a valid robot read as touched. One rule in both: dashed is touched, and a key says so."""
-    robot = robots.box_chain(1)  # along +x from (5, 5, 5): x 5.0 to 5.5, z 4.95 to 5.05
     boxes = [[[4, 4, 6], [6, 6, 7]], [[5.5, 4, 4], [6, 6, 6]], [[7, 7, 6], [8, 8, 7]]]  # above, touching, far
-    world = Workspace(np.zeros(3), np.full(3, 11.0), np.array(boxes, dtype=float), family="3dc")
-    q = np.array([5.0, 5.0, 5.0, 0.0, 0.0, 0.0, 0.0])
-    fig = cspace.cspace_slice(exact_checker(world, robot), q, joints=(5, 6), resolution=8, margin=3.0)
+    fig = _one_link_slice(boxes)
     ax = fig.axes[1]
     (dashed,) = _patches(ax, "touched block")
     assert dashed.get_linestyle() == "--" and not dashed.get_fill() and dashed.get_xy() == (5.5, 4)
@@ -588,6 +590,6 @@ def test_a_slices_robot_panel_dashes_the_block_a_link_touches_and_keys_each_way_
         "dashed: a link touches it",
     ]
     assert "A block a link touches is outlined dashed." in alt_text(fig)
-    moved = cspace.cspace_slice(exact_checker(world, robot), q - [1, 0, 0, 0, 0, 0, 0], joints=(5, 6), resolution=8)
+    moved = _one_link_slice(boxes, x=4.0)  # a unit back: nothing touched
     assert not _patches(moved.axes[1], "touched block")
     assert "dashed: a link touches it" not in [t.get_text() for t in moved.axes[1].get_legend().get_texts()]
