@@ -434,7 +434,8 @@ def test_threshold_views_mistakes_are_marked_at_a_size_one_sees_circles_sparse_o
         area = len(marks.get_offsets()) * (side * fig.dpi / 72) ** 2 * (np.pi / 4 if marker == "o" else 1)
         assert seen >= 0.5 * area  # at least half of the marks' area, in their colour (their cells add to it)
     legend = [t.get_text() for t in fig.legends[0].get_texts()]
-    assert "valid rejected (circles)" in legend and "invalid kept (dangerous, squares)" in legend
+    assert "valid rejected: conservative\nmistake (circles)" in legend  # r39c: section 1's table's names
+    assert "invalid kept: dangerous\nmistake (squares)" in legend
 
 
 def test_roc_curve_draws_every_curve_and_its_operating_point(probability, valid):
@@ -521,6 +522,8 @@ def test_threshold_views_count_bars_are_the_counts_and_keep_them_inside_the_fram
     expected = list(confusion_counts(predicted, valid).values())
     assert [bar.get_height() for bar in ax_counts.patches] == expected and sum(expected) == valid.size
     assert ax_counts.patches[3].get_facecolor()[:3] == to_rgba(COLORS["dangerous"])[:3]
+    names = [t.get_text() for t in ax_counts.get_xticklabels()]  # r39c: the bars named as section 1's table names them
+    assert names[1] == "conservative\nmistake" and names[3] == "dangerous\nmistake"
     renderer = FigureCanvasAgg(fig).get_renderer()
     fig.draw(renderer)
     frame = ax_counts.get_window_extent(renderer)

@@ -196,6 +196,8 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     _draw_decision(ax_map, predicted, valid, grid)
     _draw_counts(ax_counts, predicted, valid)
     roc = answers.draw_roc(ax_roc, {"": (probability, valid, threshold)})
+    _, fpr, tpr = roc_points(probability, valid)  # r39c: the legend lower right hid a curve near the diagonal there
+    ax_roc.legend(fontsize=8, loc="upper left" if np.trapezoid(tpr[::-1], fpr[::-1]) < 0.8 else "lower right")
     fig.suptitle(title)
     cells = [Patch(facecolor=c, edgecolor=COLORS["ink"]) for c in ANSWER_COLORS]
     handles: list[Any] = [  # a mistake's cell with its mark on it
@@ -210,8 +212,8 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     ax_map.set_title(
         f"decision at threshold {threshold:.2f}" + (per_block if max(per.values()) > 1 else ""), fontsize=9
     )
-    labels = ["true C-obstacle boundary", ANSWERS[0], f"{ANSWERS[1]} (circles)", ANSWERS[2]]
-    labels.append("invalid kept (dangerous, squares)")
+    labels = ["true C-obstacle boundary", ANSWERS[0], f"{ANSWERS[1]}: conservative\nmistake (circles)", ANSWERS[2]]
+    labels.append("invalid kept: dangerous\nmistake (squares)")  # r39c: section 1's table's names
     fig.legend([boundary, *handles], labels, loc="outside lower center", ncols=3, fontsize=8, frameon=False)
     keep_on_side(fig, grid)  # again, the map as its title and legend left it (r34c)
     text = f"{title + ': ' if title else ''}the model's decision at threshold {threshold:.2f} over {grid.names[0]} and "
@@ -377,6 +379,9 @@ def _legend(fig: Figure, handles: list) -> None:
     fig.legend(*zip(*pairs), loc=where, ncols=ncols, fontsize=9, frameon=False)  # type: ignore[call-overload]
 
 
+BAR_NAMES = ("valid\nkept", "conservative\nmistake", "invalid\nrejected", "dangerous\nmistake")  # section 1's (r39c)
+
+
 def _draw_counts(ax, predicted_valid, valid) -> None:
     counts = confusion_counts(predicted_valid, valid)
     bars = ax.bar(range(len(counts)), list(counts.values()), color=ANSWER_COLORS, edgecolor=COLORS["ink"])
@@ -384,7 +389,7 @@ def _draw_counts(ax, predicted_valid, valid) -> None:
         ax.plot(code, counts[ANSWERS[code]], linestyle="", clip_on=False, **_mistake_mark(code, legend=True))
     ax.bar_label(bars, fontsize=9, padding=6)
     ax.set_ylim(0, 1.18 * max(max(counts.values()), 1))  # room above the tallest bar for its count, inside the frame
-    ax.set_xticks(range(len(counts)), [a.replace(" ", "\n") for a in ANSWERS], fontsize=9)
+    ax.set_xticks(range(len(counts)), BAR_NAMES, fontsize=9)
     ax.set_xlabel("answer")
     ax.set_ylabel("configurations")
     rates = metrics.classification(np.ravel(predicted_valid), np.ravel(valid))
