@@ -482,6 +482,32 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     ]  # the dotted one
     assert min(cut.get_linewidths()) >= 2.5  # bold: followed across the map (r15c found it faint at 1.5)
     assert [t.xy for t in ax.texts if t.get_text() == "in collision"] == [tuple(n) for n in nodes[~nodes_valid]]
+    hair = next(line for line in ax.get_lines() if line.get_label() == "_hair")  # r39c: where the node is, exactly
+    np.testing.assert_array_equal(np.column_stack([hair.get_xdata(), hair.get_ydata()]), nodes[~nodes_valid])
+
+
+def test_path_maps_in_collision_label_lies_on_free_cells_not_over_the_block():
+    """Reader r39c: the label of a node just inside a block's top edge sat inside the block, hiding its hatching."""
+    fine = slices.slice_grid(robots.point_robot(), n=100)
+    ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[8.0, 8.0], [24.0, 20.0]]]))
+    valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))
+    node = np.array([[16.0, 19.5]])  # just inside the block's top edge: below it, the label would lie on the block
+    fig = pc.path_map(
+        np.full(fine.shape, 0.4),
+        valid,
+        fine,
+        threshold=0.5,
+        path=np.array([[2.0, 2.0], [28.0, 28.0]]),
+        nodes=node,
+        nodes_valid=np.array([False]),
+    )
+    ax = fig.axes[0]
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    fig.draw(renderer)
+    (label,) = [t for t in ax.texts if t.get_text() == "in collision"]
+    box = label.get_bbox_patch().get_window_extent(renderer).transformed(ax.transData.inverted())  # data units
+    corners = np.array([[box.x0, box.y0], [box.x0, box.y1], [box.x1, box.y0], [box.x1, box.y1]])
+    assert exact_checker(ws, robots.point_robot()).are_valid(corners).all()
 
 
 def test_conservative_circles_leave_the_grey_of_p_valid_to_read_and_show_on_every_grey():

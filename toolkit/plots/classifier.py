@@ -38,7 +38,7 @@ from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
 from toolkit.plots.cell_marks import depth_inside, draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
-from toolkit.plots.mark_sides import fit_on_side, keep_on_side, marks_counted, on_side
+from toolkit.plots.mark_sides import fit_on_side, keep_on_side, labels_clear_of, marks_counted, on_side
 from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import dof_label
 from toolkit.plots.slices import CSpaceSlice
@@ -127,8 +127,9 @@ def path_map(
     x, y = grid.dofs
     _draw_roadmap(ax, nodes, nodes_valid, path, (x, y), edges)
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=10, wrap=True)
-    _legend(fig, [(line, line.get_label()) for line in [cut, *ax.get_lines()]])
+    _legend(fig, [(line, line.get_label()) for line in [cut, *ax.get_lines()] if line.get_label() != "_hair"])
     fit_cell_marks(fig, grid)
+    labels_clear_of(ax, grid, _on_grid(valid, grid, "valid"), "in collision")  # r39c: on free cells, not the block
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
     text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (squares), and the"
     text += f" returned path through {len(path)} configurations, checked exactly."
@@ -290,12 +291,13 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     cross.update(markerfacecolor="none", markeredgecolor=ANSWER_COLORS[3], markeredgewidth=2.5, path_effects=halo(2.5))
     # hollow, a vermillion ring in ink and white: the block's outline shows through it (reader r37c)
     ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **cross)  # as the maps' squares (r30c)
+    at = nodes[~nodes_valid][:, [x, y]].T  # (2, k) r39c: a cross-hair where each node is, exactly
+    ax.plot(*at, "+", ms=9, mew=1.2, color=COLORS["ink"], zorder=7.5, label="_hair", path_effects=halo(1.2, ("free",)))
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
-    label = dict(textcoords="offset points", va="top", fontsize=9, zorder=7, bbox=box)
+    label = dict(textcoords="offset points", va="center", fontsize=9, zorder=7, bbox=box)
     arrow = dict(arrowstyle="-", color=COLORS["ink"], lw=0.8)  # a leader line to the node it names
-    for node in nodes[~nodes_valid][:3]:  # a few named in words too, below, towards the middle (r36c: just above
-        side = (30, "left") if node[x] < np.mean(ax.get_xlim()) else (-30, "right")  # it, the label hid the dotted
-        ax.annotate("in collision", node[[x, y]], xytext=(side[0], -30), ha=side[1], arrowprops=arrow, **label)  # line
+    for node in nodes[~nodes_valid][:3]:  # a few named in words too, placed on free cells once laid out (path_map)
+        ax.annotate("in collision", node[[x, y]], xytext=(30, -30), arrowprops=arrow, **label)
     ax.plot(
         path[:, x],
         path[:, y],
