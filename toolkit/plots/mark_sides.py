@@ -71,8 +71,9 @@ def keep_on_side(fig: Figure, grid: CSpaceSlice) -> None:
             mark.set_offsets(first + np.clip(at, inset, np.array(side.shape) - 1 - inset) * cell)
 
 
-GAP = 4.0  # points between a mark's rings and its outline's middle: the outline's half width, its rings included (2.2),
-# and a gap one sees at the site's width (reader r36c: at 2.5, squares read as lying on the yaw x joint band's outline)
+GAP = 7.0  # points between a mark's rings and its outline's middle: the outline's half width, its rings included (2.2),
+# and a gap one sees at the site's width (reader r36c: at 2.5, squares read as lying on the yaw x joint band's outline;
+# r39c: at 4, inside "only just", against the band's stepped outline)
 _FROM: WeakKeyDictionary[PathCollection, np.ndarray] = WeakKeyDictionary()  # the cells each mark was fitted on
 
 
