@@ -44,7 +44,7 @@ def test_the_answer_is_two_sentences_and_three_rows():
     # reader r36b: sentences a student can repeat, with their numbers, before the table; r37b: no nickname
     assert text.startswith(
         "**The answer.** Trained on 30 grids with the paper's layers and λ for 1,500 steps, our CAE rebuilds its "
-        "training grids 99.6% right by memorizing them, as the paper's Table 1 has it (100%). "
+        "training grids 99.6% right by memorizing them (Table 1: 100%). "
         'But it scores 86.9% on 500 new grids, where answering "all free" gets 87.8% (0.9 points below): it rebuilds a '
         'new workspace **no better than answering "all free"**, and Table 1\'s 100% on unseen grids does not '
         "reproduce.\n\n"

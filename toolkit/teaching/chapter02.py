@@ -104,8 +104,8 @@ def _two_sentences(paper: Scores, long: Scores, free: float, *, n_seen: int, n_n
     """The answer without the page's nicknames (reader r37b): our CAE on its training grids beside Table 1's seen
     column, then on the new grids beside "all free" and Table 1's unseen column."""
     seen_said = (
-        f"rebuilds its training grids {long['seen_acc']:.1%} right by memorizing them, as the paper's Table 1 has it "
-        f"({paper['seen_acc']:.0%})"
+        f"rebuilds its training grids {long['seen_acc']:.1%} right by memorizing them "
+        f"(Table 1: {paper['seen_acc']:.0%})"
         if long["seen_acc"] >= MEMORIZED
         else f"has trained too briefly in this quick run to memorize its training grids ({long['seen_acc']:.1%})"
     )
