@@ -154,3 +154,20 @@ def test_section_8s_maps_fold_with_their_alt_text_and_read_pc1_against_the_occup
     html = chapter02.folded("The maps", [figure])
     assert html.startswith("<details><summary>The maps</summary>") and html.endswith("</details>")
     assert html.count('<img src="data:image/png;base64,') == 1 and ' alt="' in html
+
+
+def test_section_5s_ranges_and_section_6s_sensitivity():
+    """Section 5's ranges table and section 6's measurements, out of the page (reader r39b)."""
+    import numpy as np
+    import torch
+
+    from toolkit.learning.models import CAE
+
+    table = chapter02.range_table({"seen": (np.array([0.99, 1.0]), np.array([0.9, 0.95]))})
+    assert table.splitlines()[2] == "| seen | 99.0% – 100.0% | +5.0 – +9.0 | 2 of 2 |"
+    torch.manual_seed(0)
+    grids = torch.where(torch.rand(3, 4, 4) < 0.3, 1.0, -1.0)
+    noisy = chapter02.flipped(grids, [0, 1, 4], np.random.default_rng(0))
+    norms, shift, change = chapter02.sensitivity({"a": CAE((16, 8, 2)).eval()}, grids, noisy)
+    assert norms["a"].shape == (3,) and shift["a"].shape == change["a"].shape == (3, 3)
+    assert not shift["a"][0].any() and not change["a"][0].any()  # no flip: nothing moves

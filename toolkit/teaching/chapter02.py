@@ -7,8 +7,9 @@
 - :func:`correlation_in_words`: the size of a correlation in a word (section 8);
 - :func:`answer`: the answer at the top of the page in two sentences and a table of three rows, in this run's
   numbers: the verdict from the new grids;
-- :func:`jacobian_norm`, :func:`flipped`, :func:`responses`, :func:`flip_counts`: section 6's measurements and Try
-  this's count (reader r39b: helpers folded out of the page);
+- :func:`fit_cae`: section 4's trainings, each from the same start and batches;
+- :func:`jacobian_norm`, :func:`flipped`, :func:`responses`, :func:`sensitivity`, :func:`flip_counts`: section 6's
+  measurements and Try this's count; :func:`range_table`: section 5's ranges (reader r39b: helpers out of the page);
 - :func:`split_table`: section 5's table, each CAE on its training grids, the test grids and the new grids;
 - :func:`closing_table`: the closing section's table, beside Table 1;
 - :func:`latent_map`, :func:`principal_plane`, :func:`pc1_correlation`, :func:`folded`: section 8's optional
@@ -22,6 +23,7 @@ Scores are shares (0.866, not 86.6) and come in mappings with the keys of
 from __future__ import annotations
 
 import base64
+import dataclasses
 import io
 from collections.abc import Mapping
 
@@ -29,10 +31,13 @@ import numpy as np
 import torch
 from matplotlib.figure import Figure
 
-from toolkit.learning.models import CAE
+from toolkit.learning.models import CAE, build_predictor
+from toolkit.learning.presets import Preset
+from toolkit.learning.training import train_cae
 from toolkit.plots.alt import figure_html
 from toolkit.plots.cae import FEW
 from toolkit.plots.latent import latent_scatter
+from toolkit.scenarios import Scenario
 
 Scores = Mapping[str, float]
 
@@ -123,6 +128,24 @@ def _cell(acc: float, free: float) -> str:
     return f"{acc:.1%} (all free {free:.1%})"
 
 
+def fit_cae(
+    scenario: Scenario, grids: torch.Tensor, lam: float, preset: Preset, *, steps: int, seed: int
+) -> tuple[CAE, list[float]]:
+    """Section 4: a CAE of the scenario's sizes fitted to ``grids`` with Eq. (1) at ``lam`` for ``steps`` optimizer
+    steps of ``preset``'s optimizer and batch (its epochs lifted so that ``steps`` alone decides), from the same start
+    and batches every call; prints how many epochs that is, and returns the CAE and its loss per epoch."""
+    torch.manual_seed(seed)
+    predictor = build_predictor(scenario, "raw")  # the paper's networks; only its CAE is trained here
+    settings = dataclasses.replace(preset, cae_lambda=lam, cae_epochs=10**6)
+    history = train_cae(
+        predictor, grids, settings, torch.Generator().manual_seed(seed), progress=False, max_steps=steps
+    )
+    per_epoch = -(-len(grids) // preset.cae_batch)  # batches in one pass over the grids
+    batches = f"{per_epoch} batch{'es' if per_epoch > 1 else ''}"
+    print(f"{steps:,} steps = {len(history)} epochs of {batches} of up to {preset.cae_batch} grids")
+    return predictor.cae.eval(), history
+
+
 def jacobian_norm(cae: CAE, grid: torch.Tensor) -> float:
     """Section 6: the Frobenius norm of the encoder's Jacobian dz/dx at one grid (a backward pass per latent number)."""
     jacobian = torch.autograd.functional.jacobian(lambda x: cae.encode(x[None])[0], grid)  # (latent, 31, 31)
@@ -146,6 +169,37 @@ def responses(cae: CAE, noisy: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor
     ``(K, W, nx, ny)``."""
     flat = noisy.reshape((-1,) + tuple(noisy.shape[2:]))
     return cae.encode(flat).reshape(noisy.shape[:2] + (-1,)), cae(flat).reshape(noisy.shape)
+
+
+def sensitivity(
+    caes: Mapping[str, CAE], seen: torch.Tensor, noisy: torch.Tensor
+) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray], dict[str, np.ndarray]]:
+    """Section 6, per CAE: the Jacobian norm at each ``seen`` grid ``(W,)``; and for the ``noisy`` grids ``(K, W, nx,
+    ny)`` (the first of the K with no flip), how far the code moves relative to its size and how many decoded cells
+    change sign, ``(K, W)`` each."""
+    norms, shift, change = {}, {}, {}
+    for name, cae in caes.items():
+        norms[name] = np.array([jacobian_norm(cae, grid) for grid in seen])
+        z, out = responses(cae, noisy)  # (K, W, latent), (K, W, nx, ny)
+        shift[name] = ((z - z[0]).norm(dim=-1) / z[0].norm(dim=-1)).numpy()
+        change[name] = (torch.sign(out) != torch.sign(out[0])).sum(dim=(2, 3)).numpy()
+    return norms, shift, change
+
+
+def range_table(groups: Mapping[str, tuple[np.ndarray, np.ndarray]]) -> str:
+    """Section 5's table under its scatter, as Markdown: per group of grids (``{name: ((W,) accuracy, (W,) "all free"
+    share)}``) the lowest and highest accuracy, the fewest and most points above "all free", how many grids above."""
+    lines = [
+        '| grids | accuracy, lowest – highest | points above "all free", fewest – most | above the diagonal |',
+        "| --- | ---: | ---: | ---: |",
+    ]
+    for name, (acc, free) in groups.items():
+        gap = acc - free
+        lines.append(
+            f"| {name} | {acc.min():.1%} – {acc.max():.1%} | {100 * gap.min():+.1f} – {100 * gap.max():+.1f} "
+            f"| {np.sum(gap > 0)} of {len(acc)} |"
+        )
+    return "\n".join(lines)
 
 
 def flip_counts(cae: CAE, noisy: torch.Tensor, clean: torch.Tensor) -> tuple[int, int, int, float]:
