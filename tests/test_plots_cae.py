@@ -293,6 +293,16 @@ def test_a_training_curve_under_another_stays_visible():
     assert marked[0] and marked[1] and not marked[0] & marked[1]
 
 
+def test_training_curves_in_panels_give_each_line_its_own_on_one_y_axis():
+    """Reader r39b: λ = 0 hid under λ = 1e-3 on one axes; a panel each, one y axis, the name above its panel."""
+    same = list(np.linspace(5.0, 1.0, 40))
+    fig = plots.training_curves({"lambda 0": same, "lambda 1e-3": same, "lambda 0.961": [9.0] * 40}, panels=True)
+    assert [len(ax.get_lines()) for ax in fig.axes] == [1, 1, 1]
+    assert [ax.get_title() for ax in fig.axes] == ["lambda 0", "lambda 1e-3", "lambda 0.961"]
+    assert len({ax.get_ylim() for ax in fig.axes}) == 1 and fig.axes[0].get_ylabel().startswith("loss of Eq. (1)")
+    assert all(ax.get_yscale() == "log" and ax.get_xlabel() == "epoch" for ax in fig.axes)
+
+
 def test_reconstructions_wrong_cells_carry_marks_one_can_read_at_the_sites_width():
     """31 x 31 grids as chapter 02 draws them: x and o at least 5 px across where the site shows the figure (the
     figure is no wider than the page), rings not dots, in the legend too."""

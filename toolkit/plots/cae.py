@@ -16,21 +16,18 @@ as in :func:`toolkit.learning.metrics.reconstruction_accuracy`. Nothing here cal
 
 from __future__ import annotations
 
-import re
-import textwrap
 from typing import Any
 
 import numpy as np
 from matplotlib import colormaps
 from matplotlib.figure import Figure
-from matplotlib.font_manager import FontProperties
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
-from matplotlib.textpath import TextToPath
 from matplotlib.ticker import FuncFormatter, LogLocator, NullLocator
 
 from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots.alt import Part, describe, lines_part
+from toolkit.plots.box_names import NAME_POINTS, fitted, slot_points, tick_names
 from toolkit.plots.palette import (
     COLORS,
     GREYS_CMAP,
@@ -42,26 +39,37 @@ from toolkit.plots.wrong_cells import draw_wrong_cells, grid_part, legend_handle
 
 
 def training_curves(
-    histories: dict[str, list[float]], *, ylabel: str = "loss of Eq. (1), mean per epoch", log: bool = True
+    histories: dict[str, list[float]],
+    *,
+    ylabel: str = "loss of Eq. (1), mean per epoch",
+    log: bool = True,
+    panels: bool = False,
 ) -> Figure:
     """One line per named history (e.g. ``TrainedModels.history["cae"]``), epochs 1, 2, ... on x. Two curves that
-    coincide stay visible: each later line is drawn thinner over the earlier ones, and their markers take turns."""
-    fig = Figure(figsize=(PAGE_WIDTH, 3.6))
-    ax = fig.subplots()
+    coincide stay visible: each later line is drawn thinner over the earlier ones, and their markers take turns; or,
+    with ``panels``, each line in a panel of its own, all on one y axis (reader r39b: λ = 0 hid under λ = 1e-3)."""
     n = len(histories)
+    fig = Figure(figsize=(PAGE_WIDTH, 3.2 if panels else 3.6))
+    axes = list(fig.subplots(1, n if panels else 1, sharey=True, squeeze=False)[0])
     for k, (name, history) in enumerate(histories.items()):
         every = max(1, len(history) // 8)  # about 8 markers a line, each line's shifted: never over each other's
-        style = _stacked(k, n) | dict(markevery=(k * every // n, every), markersize=6)
-        ax.plot(np.arange(1, len(history) + 1), history, label=name, **style)
-    if log:  # reader r33b: 10² and 10³ alone on an axis from 40 to 4,000; r36b: no tick above a start at 3,830
-        ax.set_yscale("log")
-        ax.yaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 4.0)))
-        ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:,.0f}" if v >= 1 else f"{v:g}"))
-        ax.yaxis.set_minor_locator(NullLocator())
-    ax.set_xlabel("epoch")
-    ax.set_ylabel(ylabel)
-    ax.legend(fontsize=9)
-    ax.set_title("CAE training curves", fontsize=10)  # r26b: how lines are drawn is not a title's to say
+        style = (series_style(k) if panels else _stacked(k, n)) | dict(markevery=(k * every // n, every), markersize=6)
+        axes[k if panels else 0].plot(np.arange(1, len(history) + 1), history, label=name, **style)
+        if panels:
+            axes[k].set_title(name, fontsize=10)
+    for ax in axes:
+        if log:  # reader r33b: 10² and 10³ alone on an axis from 40 to 4,000; r36b: no tick above a start at 3,830
+            ax.set_yscale("log")
+            ax.yaxis.set_major_locator(LogLocator(subs=(1.0, 2.0, 4.0)))
+            ax.yaxis.set_major_formatter(FuncFormatter(lambda v, _: f"{v:,.0f}" if v >= 1 else f"{v:g}"))
+            ax.yaxis.set_minor_locator(NullLocator())
+        ax.set_xlabel("epoch")
+    axes[0].set_ylabel(ylabel)
+    if panels:
+        fig.suptitle("CAE training curves", fontsize=10)
+    else:
+        axes[0].legend(fontsize=9)
+        axes[0].set_title("CAE training curves", fontsize=10)  # r26b: how lines are drawn is not a title's to say
     fig.tight_layout()
     said = "; ".join(
         f"{name}: {len(h)} epochs, from {h[0]:.3g} to {h[-1]:.3g} (lowest {min(h):.3g})"
@@ -348,46 +356,11 @@ def _draw_norms(ax, jacobian_norms: dict[str, np.ndarray]) -> None:
     ax.boxplot([np.asarray(jacobian_norms[n]) for n in names], showmeans=True, **props)
     marks = [Line2D([], [], linestyle="-" if "marker" not in style else "", **style) for style in NORM_MARKS.values()]
     ax.legend(marks, list(NORM_MARKS), fontsize=9, loc="center left", bbox_to_anchor=(1.01, 0.5))  # beside: on none
-    ticks, axis_name = _tick_names(names)
-    ax.set_xticks(range(1, len(names) + 1), _fitted(ticks, _slot_points(ax, len(names)), NAME_POINTS), fontsize=9)
+    ticks, axis_name = tick_names(names)
+    ax.set_xticks(range(1, len(names) + 1), fitted(ticks, slot_points(ax, len(names)), NAME_POINTS), fontsize=9)
     ax.set_xlabel(axis_name)
     ax.set_ylabel("||dz/dx|| per workspace")  # r33b: a short panel; its title names it
     ax.set_title("Encoder Jacobian norm", fontsize=10)
-
-
-NAME_POINTS = 9.0  # the boxes' names, in points
-
-
-def _tick_names(names: list[str]) -> tuple[list[str], str]:
-    """The boxes' tick labels and the axis's name: models all named "λ = ..." ticked by their λ alone, a trailing
-    "(...)" left to the legend (reader r31b: "λ = 0.961 (mean reading)" wrapped to four lines under its box); other
-    names whole, under "model"."""
-    if not all(name.startswith("λ = ") for name in names):
-        return names, "model"
-    return [re.sub(r" \(.*\)$", "", name.removeprefix("λ = ")) for name in names], "λ"
-
-
-def _slot_points(ax, n: int) -> float:
-    """The width in points of one of ``n`` equal slots across ``ax`` once its figure is laid out, less a gap."""
-    root = ax.get_figure(root=True)  # the figure itself, where ax sits in one of its subfigures
-    root.draw_without_rendering()  # the axes take their width
-    return 0.85 * ax.bbox.width * 72 / root.dpi / n
-
-
-def _fitted(names: list[str], width: float, size: float) -> list[str]:
-    """Each name wrapped at its spaces into the fewest lines each at most ``width`` points wide at ``size`` points
-    (a single word wider stays whole): names side by side never run into each other."""
-    measure = TextToPath()
-    font = FontProperties(size=size)
-
-    def fits(lines: list[str]) -> bool:
-        return all(measure.get_text_width_height_descent(line, font, ismath=False)[0] <= width for line in lines)
-
-    wrapped = []
-    for name in names:
-        ways = [textwrap.wrap(name, k, break_long_words=False) for k in range(len(name), 0, -1)]
-        wrapped.append("\n".join(next((lines for lines in ways if fits(lines)), ways[-1])))
-    return wrapped
 
 
 def _image(ax, grid: np.ndarray, title: str, alpha: float = 1.0, axes: bool = False) -> None:

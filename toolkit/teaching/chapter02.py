@@ -5,8 +5,11 @@
 - :func:`memorized`: section 5's sentence on a CAE's scores: memorized, not yet, or above "all free" on new grids;
 - :func:`against_all_free`: one split of a CAE's recorded scores beside "all free";
 - :func:`correlation_in_words`: the size of a correlation in a word (section 8);
-- :func:`answer`: the answer at the top of the page in one sentence and its table, in this run's numbers: the
-  verdict from the new grids, the test grids beside it;
+- :func:`answer`: the answer at the top of the page in two sentences and a table of three rows, in this run's
+  numbers: the verdict from the new grids;
+- :func:`fit_cae`: section 4's trainings, each from the same start and batches;
+- :func:`jacobian_norm`, :func:`flipped`, :func:`responses`, :func:`sensitivity`, :func:`flip_counts`: section 6's
+  measurements and Try this's count; :func:`range_table`: section 5's ranges (reader r39b: helpers out of the page);
 - :func:`split_table`: section 5's table, each CAE on its training grids, the test grids and the new grids;
 - :func:`closing_table`: the closing section's table, beside Table 1;
 - :func:`latent_map`, :func:`principal_plane`, :func:`pc1_correlation`, :func:`folded`: section 8's optional
@@ -20,6 +23,7 @@ Scores are shares (0.866, not 86.6) and come in mappings with the keys of
 from __future__ import annotations
 
 import base64
+import dataclasses
 import io
 from collections.abc import Mapping
 
@@ -27,10 +31,13 @@ import numpy as np
 import torch
 from matplotlib.figure import Figure
 
-from toolkit.learning.models import CAE
+from toolkit.learning.models import CAE, build_predictor
+from toolkit.learning.presets import Preset
+from toolkit.learning.training import train_cae
 from toolkit.plots.alt import figure_html
 from toolkit.plots.cae import FEW
 from toolkit.plots.latent import latent_scatter
+from toolkit.scenarios import Scenario
 
 Scores = Mapping[str, float]
 
@@ -77,73 +84,43 @@ def correlation_in_words(r: float) -> str:
     return "weak" if size < 0.3 else ("moderate" if size < 0.7 else "strong")
 
 
-def answer(
-    paper: Scores,
-    long: Scores,
-    preset: Scores,
-    many: Scores,
-    new: Scores,
-    *,
-    n_seen: int,
-    n_test: int,
-    steps: int,
-    preset_length: str,
-    many_name: str,
-    n_new: int,
-    quick: bool,
-) -> str:
-    """The answer at the top of the page in one sentence, then its table, as Markdown (reader r36b: one sentence a
-    student can repeat, with its three numbers, before the table; the verdict read from ``n_new`` new grids, reader
-    r33b).
+def answer(paper: Scores, long: Scores, many: Scores, *, n_seen: int, steps: int, many_name: str, n_new: int) -> str:
+    """The answer at the top of the page in two sentences, then its table of three rows, as Markdown (reader r39b: the
+    paper, CAE-long and the many-grids CAE; CAE-preset and the ten test grids are section 5's).
 
     ``paper``: Table 1's 2DS row (``seen_acc``, ``unseen_acc``); ``long``: CAE-long (``steps`` steps on ``n_seen``
-    grids) on its training grids and the ``n_test`` test grids; ``preset``: CAE-preset on the same (``preset_length``:
-    how long it trains, e.g. ``"300 steps"``); ``many``: the CAE on ``many_name``, ``seen`` being ``n_new`` of its own
-    training grids and ``unseen`` the ``n_new`` new grids. ``new``: on those new grids, CAE-long's and CAE-preset's
-    accuracy (``long_acc``, ``preset_acc``) and the many-grids CAE's accuracy on the test grids (``many_test``)."""
+    grids), ``seen`` its training grids and ``unseen`` the ``n_new`` new grids; ``many``: the CAE on ``many_name``,
+    ``seen`` being ``n_new`` of its own training grids and ``unseen`` the same ``n_new`` new grids."""
     free = many["unseen_all_free"]  # "all free" on the new grids, the same for every CAE scored there
     table = [
-        f"| CAE (2DS) | its training grids | the {n_test} unseen test grids | {n_new} new grids (the first {n_test} "
-        "the test grids) |",
-        "| --- | --- | --- | --- |",
-        f"| paper, Table 1 | {paper['seen_acc']:.0%} | {paper['unseen_acc']:.0%} | not reported |",
+        f"| CAE (2DS) | its training grids | {n_new} new grids |",
+        "| --- | --- | --- |",
+        f"| paper, Table 1 | {paper['seen_acc']:.0%} | {paper['unseen_acc']:.0%} (its own 10 unseen grids) |",
         f"| CAE-long: the paper's layers and λ, {n_seen} grids, {steps:,} steps "
-        f"| {_cell(long['seen_acc'], long['seen_all_free'])} | {_cell(long['unseen_acc'], long['unseen_all_free'])} "
-        f"| {_cell(new['long_acc'], free)} |",
-        f"| CAE-preset: the `paper` preset ({preset_length}; chapters 03–04 use it) "
-        f"| {_cell(preset['seen_acc'], preset['seen_all_free'])} "
-        f"| {_cell(preset['unseen_acc'], preset['unseen_all_free'])} | {_cell(new['preset_acc'], free)} |",
-        f"| the same layer sizes on {many_name} (not the paper's recipe, section 7) "
-        f"| {n_new} of them: {_cell(many['seen_acc'], many['seen_all_free'])} "
-        f"| {_cell(new['many_test'], long['unseen_all_free'])} | {_cell(many['unseen_acc'], free)} |",
+        f"| {_cell(long['seen_acc'], long['seen_all_free'])} | {_cell(long['unseen_acc'], free)} |",
+        f"| the same layers on {many_name} (not the paper's recipe, section 7) "
+        f"| {n_new} of them: {_cell(many['seen_acc'], many['seen_all_free'])} | {_cell(many['unseen_acc'], free)} |",
     ]
-    said = _one_line(paper, long, new["long_acc"], free, n_seen=n_seen, n_new=n_new, steps=steps)
-    return f"{said}\n\n" + "\n".join(table) + f"\n\n{_in_numbers(paper, many, many_name, quick)}"
+    said = _two_sentences(paper, long, free, n_seen=n_seen, n_new=n_new, steps=steps)
+    return f"{said}\n\n" + "\n".join(table)
 
 
-def _one_line(paper: Scores, long: Scores, long_new: float, free: float, *, n_seen: int, n_new: int, steps: int) -> str:
-    """The answer without the page's nicknames (reader r37b): Table 1's claim, then CAE-long on its training grids
-    (the seen column) and on the new grids beside "all free" (the unseen column)."""
-    both = (
-        f"both {paper['seen_acc']:.0%} right"
-        if paper["seen_acc"] == paper["unseen_acc"]
-        else f"{paper['seen_acc']:.0%} and {paper['unseen_acc']:.0%} right"
-    )
-    claim = (
-        f"**The answer.** The paper's Table 1 says its 2DS CAE rebuilds its training grids and unseen grids {both}. "
-        f"Trained on {n_seen} grids with the paper's layers and λ for {steps:,} steps, our CAE"
-    )
+def _two_sentences(paper: Scores, long: Scores, free: float, *, n_seen: int, n_new: int, steps: int) -> str:
+    """The answer without the page's nicknames (reader r37b): our CAE on its training grids beside Table 1's seen
+    column, then on the new grids beside "all free" and Table 1's unseen column."""
     seen_said = (
-        f"rebuilds its training grids {long['seen_acc']:.1%} right by memorizing them: the seen column reproduces. But "
-        "it"
+        f"rebuilds its training grids {long['seen_acc']:.1%} right by memorizing them "
+        f"(Table 1: {paper['seen_acc']:.0%})"
         if long["seen_acc"] >= MEMORIZED
-        else f"has trained too briefly in this quick run to memorize them ({long['seen_acc']:.1%}). It"
+        else f"has trained too briefly in this quick run to memorize its training grids ({long['seen_acc']:.1%})"
     )
+    long_new = long["unseen_acc"]
     gap = gap_points(long_new, free)
     return (
-        f'{claim} {seen_said} scores {long_new:.1%} on {n_new} new grids, where answering "all free" gets {free:.1%} '
+        f"**The answer.** Trained on {n_seen} grids with the paper's layers and λ for {steps:,} steps, our CAE "
+        f'{seen_said}. But it scores {long_new:.1%} on {n_new} new grids, where answering "all free" gets {free:.1%} '
         f"({abs(gap):.1f} points {'below' if gap < 0 else 'above'}): it rebuilds a new workspace **no better than "
-        'answering "all free"**, and the unseen column does not reproduce.'
+        f'answering "all free"**, and Table 1\'s {paper["unseen_acc"]:.0%} on unseen grids does not reproduce.'
     )
 
 
@@ -151,24 +128,88 @@ def _cell(acc: float, free: float) -> str:
     return f"{acc:.1%} (all free {free:.1%})"
 
 
-def _in_numbers(paper: Scores, many: Scores, many_name: str, quick: bool) -> str:
-    """Under the table, what it says of the other two CAEs, in one sentence each (reader r36b: its numbers are the
-    table's, not said again)."""
-    preset_said = (
-        "In this quick run, the `paper` preset has trained a few steps only."
-        if quick
-        else "The `paper` preset, stopped early, when it has learned little even of its training grids, reproduces "
-        "neither column."
+def fit_cae(
+    scenario: Scenario, grids: torch.Tensor, lam: float, preset: Preset, *, steps: int, seed: int
+) -> tuple[CAE, list[float]]:
+    """Section 4: a CAE of the scenario's sizes fitted to ``grids`` with Eq. (1) at ``lam`` for ``steps`` optimizer
+    steps of ``preset``'s optimizer and batch (its epochs lifted so that ``steps`` alone decides), from the same start
+    and batches every call; prints how many epochs that is, and returns the CAE and its loss per epoch."""
+    torch.manual_seed(seed)
+    predictor = build_predictor(scenario, "raw")  # the paper's networks; only its CAE is trained here
+    settings = dataclasses.replace(preset, cae_lambda=lam, cae_epochs=10**6)
+    history = train_cae(
+        predictor, grids, settings, torch.Generator().manual_seed(seed), progress=False, max_steps=steps
     )
-    short = 100 * (paper["unseen_acc"] - many["unseen_acc"])
-    many_said = (
-        f"Trained on {many_name}, the same layers score {many['unseen_acc']:.1%} on the new grids, "
-        f'{gap_points(many["unseen_acc"], many["unseen_all_free"]):.1f} points above "all free" and {short:.0f} short '
-        f"of {paper['unseen_acc']:.0%}."
-        if many["unseen_acc"] > many["unseen_all_free"]
-        else f'Trained on {many_name}, the same layers do not beat "all free" yet in this quick run.'
-    )
-    return f"{preset_said} {many_said}"
+    per_epoch = -(-len(grids) // preset.cae_batch)  # batches in one pass over the grids
+    batches = f"{per_epoch} batch{'es' if per_epoch > 1 else ''}"
+    print(f"{steps:,} steps = {len(history)} epochs of {batches} of up to {preset.cae_batch} grids")
+    return predictor.cae.eval(), history
+
+
+def jacobian_norm(cae: CAE, grid: torch.Tensor) -> float:
+    """Section 6: the Frobenius norm of the encoder's Jacobian dz/dx at one grid (a backward pass per latent number)."""
+    jacobian = torch.autograd.functional.jacobian(lambda x: cae.encode(x[None])[0], grid)  # (latent, 31, 31)
+    return float(jacobian.norm())
+
+
+def flipped(grids: torch.Tensor, flips: list[int], rng: np.random.Generator) -> torch.Tensor:
+    """Section 6: ``(len(flips), W, nx, ny)``, each grid with the first k cells of its own random order flipped, for
+    each k in ``flips``: the grid with 10 flips contains the one with 5."""
+    count, n_cells = len(grids), grids[0].numel()
+    order = np.stack([rng.permutation(n_cells) for _ in range(count)])  # (W, cells)
+    out = grids.reshape(count, n_cells).repeat(len(flips), 1, 1)  # (K, W, cells)
+    for i, k in enumerate(flips):
+        out[i, np.repeat(np.arange(count), k), order[:, :k].reshape(-1)] *= -1
+    return out.reshape((len(flips),) + tuple(grids.shape))
+
+
+@torch.no_grad()
+def responses(cae: CAE, noisy: torch.Tensor) -> tuple[torch.Tensor, torch.Tensor]:
+    """Section 6: the codes ``(K, W, latent)`` and decoder outputs ``(K, W, nx, ny)`` of perturbed grids
+    ``(K, W, nx, ny)``."""
+    flat = noisy.reshape((-1,) + tuple(noisy.shape[2:]))
+    return cae.encode(flat).reshape(noisy.shape[:2] + (-1,)), cae(flat).reshape(noisy.shape)
+
+
+def sensitivity(
+    caes: Mapping[str, CAE], seen: torch.Tensor, noisy: torch.Tensor
+) -> tuple[dict[str, np.ndarray], dict[str, np.ndarray], dict[str, np.ndarray]]:
+    """Section 6, per CAE: the Jacobian norm at each ``seen`` grid ``(W,)``; and for the ``noisy`` grids ``(K, W, nx,
+    ny)`` (the first of the K with no flip), how far the code moves relative to its size and how many decoded cells
+    change sign, ``(K, W)`` each."""
+    norms, shift, change = {}, {}, {}
+    for name, cae in caes.items():
+        norms[name] = np.array([jacobian_norm(cae, grid) for grid in seen])
+        z, out = responses(cae, noisy)  # (K, W, latent), (K, W, nx, ny)
+        shift[name] = ((z - z[0]).norm(dim=-1) / z[0].norm(dim=-1)).numpy()
+        change[name] = (torch.sign(out) != torch.sign(out[0])).sum(dim=(2, 3)).numpy()
+    return norms, shift, change
+
+
+def range_table(groups: Mapping[str, tuple[np.ndarray, np.ndarray]]) -> str:
+    """Section 5's table under its scatter, as Markdown: per group of grids (``{name: ((W,) accuracy, (W,) "all free"
+    share)}``) the lowest and highest accuracy, the fewest and most points above "all free", how many grids above."""
+    lines = [
+        '| grids | accuracy, lowest – highest | points above "all free", fewest – most | above the diagonal |',
+        "| --- | ---: | ---: | ---: |",
+    ]
+    for name, (acc, free) in groups.items():
+        gap = acc - free
+        lines.append(
+            f"| {name} | {acc.min():.1%} – {acc.max():.1%} | {100 * gap.min():+.1f} – {100 * gap.max():+.1f} "
+            f"| {np.sum(gap > 0)} of {len(acc)} |"
+        )
+    return "\n".join(lines)
+
+
+def flip_counts(cae: CAE, noisy: torch.Tensor, clean: torch.Tensor) -> tuple[int, int, int, float]:
+    """Try this: the decoder's answer to ``noisy`` grids ``(W, nx, ny)``, each ``clean`` grid with some cells flipped,
+    scored against the clean grid: on the first grid, how many flips it ignored, how many it copied, how many other
+    cells it got wrong; and the mean count of cells wrong over all ``W`` grids."""
+    wrong = torch.sign(responses(cae, noisy[None])[1][0]) != clean  # (W, nx, ny) cells that differ from the clean grid
+    flips = noisy[0] != clean[0]  # the first grid's flipped cells
+    copied, other = int(wrong[0][flips].sum()), int(wrong[0][~flips].sum())
+    return int(flips.sum()) - copied, copied, other, float(wrong.sum(dim=(1, 2)).float().mean())
 
 
 def split_table(
