@@ -119,13 +119,13 @@ def test_each_panel_shades_the_tie_band_its_counts_are_read_with(drawn):
         spans = sorted(tuple(sorted({round(y, 6) for y in ys})) for ys in hatched)  # reader r31f, item 3
         assert spans == [(floor[0], 0.9), (1.1, floor[1])]
         assert "log axis" in ax.get_ylabel() or not ax.get_subplotspec().is_first_col()
-    noise = f"ratio-of-means floor, {floor[0]:.2f}–{floor[1]:.2f}"  # reader r32f, item 6: not Figure 1's band
+    noise = f"noise band of a ratio of means, {floor[0]:.2f}–{floor[1]:.2f}"  # reader r32f, item 6: not Figure 1's band
     assert noise in [t.get_text() for t in fig.legends[0].texts] and noise in alt.alt_text(fig)
     assert {p.get_hatch() for ax in fig.axes for p in ax.patches if p.get_hatch()} == {query_ratios.NOISE_HATCH}
     assert query_ratios.NOISE_HATCH != query_ratios.EDGE_HATCH
     left = {t.get_text() for t in fig.axes[0].get_yticklabels()}
     assert not {f"{floor[0]:g}", f"{floor[1]:g}"} & left  # reader r33f: named in the legend, not crowding the "1"
-    assert f"Timing alone moved a ratio of means to {floor[0]:.2f}–{floor[1]:.2f} (the ratio-of-means floor" in TEXT
+    assert f"The noise band of a ratio of means, {floor[0]:.2f}–{floor[1]:.2f} (hatched" in TEXT
     for ax in fig.axes:  # reader r31f: Figure 1's verdict colours and shapes name no series here
         for line in ax.get_lines():
             assert line.get_marker() in ("None", None) or (
@@ -231,7 +231,7 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
     assert said in TEXT  # reader r31f, item 1: the noise edge's cells are the caption's (review r28f's robust count)
     reach = results_noise.reach_of(recorded_results.parse(TEXT))  # how far timing alone moved a median query
     edge = [f"{n} {s} {m:.2f}" for (n, s), (m, _, _) in table.items() if m >= 1.1 and abs(m - 1) < 2 * reach]
-    assert edge and all(cell.split()[-1] in CLAIM.partition("at the noise edge:")[2] for cell in edge)
+    assert edge and all(cell.split()[-1] in CLAIM.partition("is no clear evidence:")[2] for cell in edge)
     assert "The summary above counts the points." in CLAIM and "costs," not in CLAIM.partition("![")[0]
     assert TEXT.index(results_figures.CLAIM_BEGIN) < TEXT.index(results_figures.FIGURE_BEGIN.format(kind="total"))
 
@@ -286,11 +286,12 @@ def test_figure_1_hatches_the_noise_edge_and_labels_the_band_apart_from_the_1():
         for p in hatched
     )
     assert spans == [(round(1 - edge, 6), 0.9), (1.1, round(1 + edge, 6))]
-    named = f"median noise edge, {1 - edge:.2f}–{1 + edge:.2f}"  # reader r32f, item 6: not Figures 2-3's floor
+    named = f"noise band of this ratio, {1 - edge:.2f}–{1 + edge:.2f}"  # reader r32f, item 6: not Figures 2-3's floor
     assert named in [t.get_text() for t in fig.legends[0].texts] and named in alt.alt_text(fig)
     assert {p.get_hatch() for p in hatched} == {query_ratios.EDGE_HATCH}
     left = {t.get_text() for t in ax.get_yticklabels()}
-    assert "0.9" not in left and {f"{1 - edge:.2f}", f"{1 + edge:.2f}"} <= left  # the edge's ends labelled
-    # reader r36f: no right-hand 0.9 and 1.1, 15 px from the left's 0.82 and 1.18; the legend names the tie band
+    # reader r39f, item 6: the band named in the legend only, its ends not crowding the "1"
+    assert "0.9" not in left and not {f"{1 - edge:.2f}", f"{1 + edge:.2f}"} & left
+    # reader r36f: no right-hand 0.9 and 1.1; the legend names the tie band
     assert not [t for child in ax.child_axes for t in child.get_yticklabels() if t.get_text()]
     assert "tie band, above 0.90 and below 1.10" in [t.get_text() for t in fig.legends[0].texts]

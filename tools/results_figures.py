@@ -18,7 +18,7 @@ from toolkit.plots import alt, query_ratios
 from toolkit.teaching import checker_scope, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
-from tools.results_noise import NOISE_EDGE, at_noise_edge, bands, noise, noise_line, own_intervals, reach_of
+from tools.results_noise import NOISE_EDGE, at_noise_edge, noise, own_intervals, reach_of
 from tools.results_words import NAMES, change
 
 FIGURES = {kind: RESULTS.parent / f"results_table3_{kind}.png" for kind in ("total", "sampling")}  # Table 3's columns
@@ -31,10 +31,8 @@ LEADS = {  # what each figure shows, over it
 TICKS = {"total": (), "sampling": (3.0,)}  # labelled beside each figure's 1-2-5 steps, with the floor's edges
 MARGINS = {"total": 1.15, "sampling": 1.25}  # each figure's range: its points', widened by this factor
 ROW_HEIGHTS = {"total": 2.9, "sampling": 3.2}  # inches a row of panels: each band is read to 0.9 and 1.1 (r27f)
-KEY = (  # under Figure 2 (reader r31f, item 3): its marks are not Figure 1's verdicts
-    " Here colour and shape name a series, not a verdict as in Figure 1 (none takes its circle, square or triangle); "
-    "hollow is python-fcl on both sides, as there: the hollow hexagons, in the stars' reddish purple, are the `strong` "
-    "network with it."
+KEY = (  # under Figure 2 (reader r31f, item 3): its marks are not Figure 1's verdicts; r39f, item 7: one colour each
+    " Here colour and shape name a series, not a verdict as in Figure 1 (none takes its circle, square or triangle)."
 )
 CLAIM_FIGURE = RESULTS.parent / "results_claim.png"  # Figure 1: the statistic the verdict on the paper's claim reads
 CLAIM_BEGIN = "<!-- figure of the claim: drawn by `python -m tools.results_summary` from the tables below -->"
@@ -125,21 +123,17 @@ def claim_markdown(text: str) -> str:
         "their middle half. *Shape and colour = verdict, fill = checker*: filled, our compiled checker; hollow, "
         "python-fcl on both sides. The summary above counts the points."
     )
-    edge_said = (
-        f" Cells that read as costs or savings but lie within {NOISE_EDGE * reach_of(tables):.2f} of 1 (twice "
-        f"that reach, hatched, its edges dashed) are at the noise edge: {', '.join(edge)}."
+    edge_said = (  # reader r39f, item 1: the band by its one name, defined in the table under the summary
+        " Inside the noise band of this ratio (hatched, dashed edges), a cost or saving is no clear evidence: "
+        f"{', '.join(edge)}."
         if edge
         else ""
     )
     if not any("timed twice" in heading for heading in tables[checker_scope.SLOW]):  # review r30f, contradiction 5
-        edge_said += (
-            " The floor was measured on the run with our compiled checker; the run with python-fcl was not timed "
-            "twice, so its hollow points borrow that floor."
-        )
+        edge_said += " The run with python-fcl was not timed twice: its hollow points borrow that band."
     described = alt.details_html(alt.details(fig)).strip()
     picture = f"![{html.escape(alt.alt_text(fig))}]({CLAIM_FIGURE.name})"
-    # reader r36f, item 3: the bands near 1 directly above the first figure that draws them
-    return f"{bands(tables)}\n\n{lead}\n\n{picture}\n\n{caption} {noise_line(tables)}{edge_said}\n\n{described}"
+    return f"{lead}\n\n{picture}\n\n{caption}{edge_said}\n\n{described}"
 
 
 def furthest_apart(tables: Tables) -> tuple[str, str, float, float]:
@@ -194,11 +188,10 @@ def figure_markdown(text: str, kind: str = "total") -> str:
     described = alt.details_html(alt.details(fig)).strip()
     shown = f"![{html.escape(alt.alt_text(fig))}]({FIGURES[kind].name})\n\n{described}"
     floor = noise(parse(text))
-    said = (  # reader r36f, item 3: the bands once, in the table above Figure 1; Figure 3 counted as Figure 2
+    said = (  # reader r39f, item 1: the band by its one name, in the table under the summary
         f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule (0.90 or less: saved; 1.10 or "
-        f"more: lost). Timing alone moved a ratio of means to {floor.means[0]:.2f}–{floor.means[1]:.2f} (the "
-        "ratio-of-means floor, hatched with dotted edges), wider than the tie band: read "
-        "a row's counts together, never one cell." + KEY
+        f"more: lost). The noise band of a ratio of means, {floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched, "
+        "dotted edges), is wider than the tie band: read a row's counts together, never one cell." + KEY
         if kind == "total"
         else f"*{kind.capitalize()} time*, counted and hatched as in Figure 2. {sampling_takeaway(counts)}"
     )

@@ -50,21 +50,13 @@ def lazy_prm(tables: Tables) -> str:
         )
 
     named = f" ({'; '.join(cell(name, r) for name, r in beyond)})" if 0 < len(beyond) <= 3 else ""
-    floor_said = f" beyond the ratio-of-medians noise floor ({floor[0]:.2f}–{floor[1]:.2f})" if floor else ""
-    means = [
-        f"{NAMES.get(s, s)} {sampler} saved {percent(cut)} %"
-        for s in recorded.table("strong", "time improvement", tables)
-        for sampler, cut in recorded.improvements("strong", s, recorded=tables).items()
-        if change(1 - cut) == "less time"
-    ]
-    by_means = f"; by means, {', '.join(means)}, pulled by a few slow queries" if means else ""
-    return (  # review r28f, items 2 and 3: the count read by its own noise floor; r37f, item 4: its statistic named
+    floor_said = f" beyond the noise band of a ratio of medians ({floor[0]:.2f}–{floor[1]:.2f})" if floor else ""
+    return (  # reader r39f, items 2 and 8: the 3 December network by its own name; medians alone, means in the fold
         "**Against the lazy PRM (a PRM that checks only a candidate path's edges, our fastest exact planner), the "
-        f"`strong` network {VERDICTS[answer]}, by medians.** This is `strong` (3 Dec), the lazy-PRM run's network. "
-        "By the ratio of the two modes' median times (the medians tables), it took "
-        f"{told(groups['strong'])}{by_means}. Our `paper`-preset network, whose planner with prediction is "
-        f"Algorithm 1 (so planner and prediction both change), saved time{floor_said} in {len(beyond) or 'none'} of "
-        f"{sum(map(len, groups['paper'].values()))}{named}."
+        f"lazy-PRM network {VERDICTS[answer]}, by medians.** By the ratio of the two modes' median times (the "
+        f"medians tables), it took {told(groups['strong'])}. Our `paper`-preset network, whose planner with "
+        f"prediction is Algorithm 1 (so planner and prediction both change), saved time{floor_said} in "
+        f"{len(beyond) or 'none'} of {sum(map(len, groups['paper'].values()))}{named}."
     )
 
 
@@ -106,7 +98,7 @@ def beyond_floor(ours: dict[str, dict[str, float]], tables: Tables) -> str:
     beyond = {cell: r for cell, r in saves.items() if r < low}
     lost = [r for r in ratios.values() if change(r) == "more time"]
     return (
-        f"; beyond the ratio-of-means floor ({low:.2f}–{high:.2f}: timing alone moved a ratio of means that far), "
+        f"; beyond the noise band of a ratio of means ({low:.2f}–{high:.2f}), "
         f"{len(beyond)} of the {len(saves)} savings "
         f"({', '.join(f'{cell} {r:.2f}' for cell, r in beyond.items())}) and "
         + (
@@ -187,20 +179,13 @@ def why_no_saving(tables: Tables) -> str:
     cost_3d = [c for s, c in costs.items() if s != "2ds"]
     cost_2d = f" ({costs['2ds']:.2g} in {NAMES['2ds']})" if "2ds" in costs else ""
     why = causes(tables)
-    return (  # reader r34f, item 6: the mechanism, the worked example, then the ranges, a paragraph each
+    return (  # reader r39f, item 9: the finding and its numbers; the worked example and the table in the fold
         "**Why, by means: with a fast checker the network is the dearer check; with a slow one sampling is too small "
-        "a share of a query.** With our compiled checker the network, timed beside other work, cost "
+        "a share of a query.** With our compiled checker the network cost "
         f"{span(cost_3d, lambda c: f'{c:.2g}')} times an exact check per configuration in 3D{cost_2d}, so sampling "
-        f"got 10 % or more slower in {why.slower} of {why.cells} cells, though by at most {percent(-why.grew)} % of a "
-        f"query; in {len(apart(tables, recorded.ALGORITHM_1))} cells the rest of the query moved the whole query "
-        "further (the fold below: “Where the whole query moved apart from sampling”). With python-fcl, "
-        f"{fcl_slower(tables)} times "
-        "slower than our compiled checker in 3D, the network is the cheaper check, but sampling is a small share of a "
-        "query, so shortening it saved little (the table below)."
-        + "\n\n   "
-        + worked_example(tables)
-        + "\n\n"
-        + share_table(tables)
+        f"got 10 % or more slower in {why.slower} of {why.cells} cells; with python-fcl, {fcl_slower(tables)} times "
+        f"slower than our compiled checker in 3D, sampling took at most {percent(why.share)} % of a query, so "
+        f"shortening it saved at most {percent(why.saved)} % of a query (the fold below works one cell through)."
     )
 
 
@@ -242,8 +227,8 @@ def worked_example(tables: Tables) -> str:
     return (
         f" Worked through for {NAMES.get(scenario, scenario)} {sampler} with python-fcl: sampling took "
         f"{slow[top]:.3f} of a mean query, the network cut it by {cut * 100:.1f} % (Figure 3: {1 - cut:.2f}), and "
-        f"{slow[top]:.3f} × {cut:.3f} ≈ {slow[top] * cut:.3f} of the query; Table 3 measured a {percent(total)} % "
-        "saving of the whole query."
+        f"{slow[top]:.3f} × {cut:.3f} ≈ {slow[top] * cut:.3f} of the query; our Table 3 (python-fcl run) "
+        f"measured a {percent(total)} % saving of the whole query."
     )
 
 
@@ -280,8 +265,11 @@ def not_from_sampling(tables: Tables) -> str:
     there, both as shares of a mean query (review r28f, item 4; r31f: which way each moved); empty where there are
     none."""
     cells, fast = apart(tables), apart(tables, recorded.ALGORITHM_1)
+    shares = (  # reader r39f, item 9: moved here from the finding "Why, by means"
+        f"- *How little shortening sampling saves*:{worked_example(tables)}\n\n{share_table(tables)}\n\n"
+    )
     if not cells and not fast:
-        return ""
+        return shares.rstrip()
 
     def said(cell: Apart) -> str:
         moved = f"{percent(cell.total)} % saved" if cell.total >= 0 else f"{percent(-cell.total)} % longer"
@@ -299,7 +287,7 @@ def not_from_sampling(tables: Tables) -> str:
         else ""
     )
     return (  # review r30f, contradiction 4; reader r32f, item 4: in the fold, under the worked example's cell
-        f"- *Where the whole query moved apart from sampling*: in {compiled}{len(cells)} cells of the run with "
+        f"{shares}- *Where the whole query moved apart from sampling*: in {compiled}{len(cells)} cells of the run with "
         "python-fcl the whole query moved 10 points or more away from what sampling saved there "
         f"(as shares of a mean query without prediction: {'; '.join(map(said, cells))}): the rest of the query, "
         "which prediction does not shorten, moved them; with other samples the planner grows another roadmap, "
@@ -314,7 +302,7 @@ def summary(tables: Tables) -> str:
     answers against the lazy PRM and against Algorithm 1 with our `paper`-preset network; no count the summary gives
     is said again (review r27f, item 2)."""
     items = [
-        why_no_saving(tables) + "\n",  # its paragraphs make the list loose: a blank line before the next bullet
+        why_no_saving(tables),
         cae(tables),
         mlp(tables)  # the table under the MLP's bullet, a blank line after it so the next bullet is not a row
         + "\n\n"

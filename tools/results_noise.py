@@ -1,6 +1,7 @@
-"""The results page's noise floor: how far timing one computation twice moved each of its ratios (the `strong
---planner paper` run's table "timed twice", :func:`noise`), and the cells of Figure 1 that lie at its edge
-(:func:`at_noise_edge`), so no single cell inside timing's own reach is read as evidence (review r28f)."""
+"""The results page's noise bands: how far timing one computation twice moved each of its ratios (the `strong
+--planner paper` run's table "timed twice", :func:`noise`), the bands near 1 read from it (:func:`bands`), and the cells
+of Figure 1 that lie inside the noise band of each query's own ratio (:func:`at_noise_edge`), so no single cell inside
+timing's own reach is read as evidence (review r28f)."""
 
 from __future__ import annotations
 
@@ -53,7 +54,7 @@ class Noise(NamedTuple):
 
 
 def noise(tables: Tables) -> Noise:
-    """The noise floor of the `strong --planner paper` run (:class:`Noise`)."""
+    """How far timing alone moved each ratio in the `strong --planner paper` run (:class:`Noise`)."""
     twice = next(t for heading, t in tables[recorded.ALGORITHM_1].items() if "timed twice" in heading)
     rows = twice["rows"]  # scenario, sampler, ratio of the means, ratio of the medians, each query's own ratio
 
@@ -62,16 +63,6 @@ def noise(tables: Tables) -> Noise:
         return min(values), max(values)
 
     return Noise(own=reach(4), means=reach(2), medians=reach(3))
-
-
-def noise_line(tables: Tables) -> str:
-    """One line under Figure 1: how far timing alone moved its ratio (reader r37f, contradiction 2: no pointer to a
-    row in a fold)."""
-    floor = noise(tables).own
-    return (
-        "*Noise floor* of each query's own ratio: timing alone moved its median to "  # reader r35f, item 7: named
-        f"{floor[0]:.2f}–{floor[1]:.2f}; the noise edge doubles that reach."
-    )
 
 
 def at_noise_edge(medians: dict[str, dict[str, tuple[float, float, float]]], tables: Tables) -> list[str]:
@@ -87,56 +78,42 @@ def at_noise_edge(medians: dict[str, dict[str, tuple[float, float, float]]], tab
 
 
 def bands(tables: Tables) -> str:
-    """The page's bands near 1 (reader r33f, item 3; r37f, item 3: every figure reads two of them, both in the
-    visible table): the tie band every count reads with, the noise edge Figure 1 hatches and the ratio-of-means floor
-    Figures 2-3 hatch; the other two floors, each query's own (which the edge doubles) and the ratio of medians (the
-    lazy PRM's), in a fold."""
-    floor, edge = noise(tables), NOISE_EDGE * reach_of(tables)
-    tie = findings.TIE
+    """The page's bands near 1, one table under the summary (reader r39f, item 1: one tie band, and one noise band per
+    statistic, each defined before it is used; no "floor" or "edge" beside them): the tie band every count reads
+    with; each query's own ratio's noise band (Figure 1, the verdict), twice the larger side of timing's own reach;
+    the ratio of means' (Figures 2-3) and the ratio of medians' (the lazy PRM), each as timing alone moved it."""
+    floor, reach = noise(tables), reach_of(tables)
+    edge, tie = NOISE_EDGE * reach, findings.TIE
 
     def edges(low: float, high: float) -> str:
         return f"{low:.2f}–{high:.2f}"
 
-    lead = [
+    rows = [
         (
             "tie band (our 10 % rule)",
             edges(1 - tie, 1 + tie),
-            "a tie; at or past its edges, a saving or a cost",
+            "inside, a tie; at or past its edges, a saving or a cost",
             "every count; shaded in every figure",
         ),
         (
-            "noise edge",
+            "noise band, each query's own ratio",
             edges(1 - edge, 1 + edge),
-            f"twice as far from 1 as timing alone moved each query's own ratio (2 × {reach_of(tables):.2f}): a "
-            "saving or cost inside it is no clear evidence",
-            "Figure 1 (hatched, dashed edges); the summary's counts",
+            f"timing one computation twice moved this ratio to {edges(*floor.own)}; the band is 1 ± twice the larger "
+            f"side ({NOISE_EDGE} × {reach:.2f}). A saving or cost inside it is no clear evidence",
+            "the summary's last column; Figure 1 (hatched, dashed edges)",
         ),
         (
-            "ratio-of-means floor",
+            "noise band, ratio of means",
             edges(*floor.means),
             "how far timing alone moved a ratio of the two modes' mean times",
-            "Figures 2–3 (hatched, dotted edges); the `paper` preset against Algorithm 1",
-        ),
-    ]
-    floors = [
-        (
-            "noise floor, each query's own ratio",
-            edges(*floor.own),
-            "how far timing one computation twice moved it (the table “timed twice”)",
-            "doubled: the noise edge",
+            "Figures 2–3 (hatched, dotted edges); the `paper`-preset network against Algorithm 1",
         ),
         (
-            "noise floor, ratio of medians",
+            "noise band, ratio of medians",
             edges(*floor.medians),
-            "the same, for a ratio of the two modes' median times (measured on Figure 1's run, borrowed for the "
-            "lazy PRM's)",
-            "against the lazy PRM (the medians tables)",
+            "the same for a ratio of the two modes' median times (measured on Figure 1's run)",
+            "against the lazy PRM",
         ),
     ]
-    head = ["| band near 1 | from–to | what it judges | where this page uses it |", "| --- | --- | --- | --- |"]
-    table = "\n".join(head + [f"| {' | '.join(row)} |" for row in lead])
-    folded = "\n".join(head + [f"| {' | '.join(row)} |" for row in floors])
-    return (
-        f'{table}\n\n<details markdown="1"><summary>The two noise floors behind them: each query\'s own, which the '
-        f"noise edge doubles, and the lazy PRM's</summary>\n\n{folded}\n\n</details>"
-    )
+    head = ["| band near 1 | from–to | what it means | where this page uses it |", "| --- | --- | --- | --- |"]
+    return "\n".join(head + [f"| {' | '.join(row)} |" for row in rows])

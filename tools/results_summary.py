@@ -15,7 +15,6 @@ page's rule, chapter 04's (:mod:`tools.results_words`), and single cells against
 from __future__ import annotations
 
 import sys
-from collections.abc import Sequence
 from typing import NamedTuple
 
 from toolkit.plots import alt
@@ -34,7 +33,6 @@ from tools.results_figures import (
     claim_figure,
     claim_markdown,
     figure_markdown,
-    furthest_apart,
     table3_figure,
 )
 from tools.results_findings import (
@@ -43,13 +41,12 @@ from tools.results_findings import (
     DETAIL_BEGIN,
     DETAIL_END,
     apart,
-    causes,
     not_from_sampling,
     summary,
 )
 from tools.results_networks import cae_unseen
-from tools.results_noise import NOISE_EDGE, own_intervals, reach_of
-from tools.results_words import NAMES, change, counted, percent, span
+from tools.results_noise import NOISE_EDGE, bands, own_intervals, reach_of
+from tools.results_words import change, counted
 
 BEGIN = "<!-- summary: written by `python -m tools.results_summary` from the tables below; edit it there -->"
 END = "<!-- end of the summary -->"
@@ -88,13 +85,11 @@ ANSWERS = {findings.HOLDS: "Yes", findings.IN_PART: "In part", findings.DOES_NOT
 
 
 def short(tables: Tables) -> str:
-    """The summary's Markdown, without its markers: the answer, then three one-line verdicts a student can repeat
-    (reader r33f, item 1), one a series (our compiled checker, python-fcl on both sides, the paper), each read from
-    the counts the table under them gives (:func:`counts`), then the bands near 1 those counts are read with
-    (:func:`tools.results_noise.bands`). Why prediction saves so little is the findings' first bullet."""
+    """The summary's Markdown, without its markers (reader r39f, item 3: three sentences and the table): the answer,
+    what a cell is, and how the table counts; then the table of counts (:func:`counts`), a line on its dashes and on
+    python-fcl's savings, and the bands near 1 those counts are read with (:func:`tools.results_noise.bands`). Why
+    prediction saves so little is the findings' first bullet, said there only."""
     ratios = recorded.query_ratios(recorded.ALGORITHM_1, tables)
-    facts = checker_scope.slow_checker(tables)
-    papers = counted([change(1 - s) for s in facts.papers_totals])
     fast = counted([change(m) for _, m in own_medians(tables, recorded.ALGORITHM_1)])
     edge = NOISE_EDGE * reach_of(tables)
     slow = own_medians(tables, SLOW)
@@ -106,53 +101,18 @@ def short(tables: Tables) -> str:
         f"{VERBS[max(range(3), key=lambda k: (fast[k], k == 1))]} ({fast[2] or 'none'} of {sum(fast)} cells slower, "
         f"{fast[0] or 'none'} faster); with python-fcl, a slow exact checker, it "
         f"{VERBS[max(range(3), key=lambda k: (slow_read[k], k == 1))]} ({beyond[0] or 'none'} of {sum(slow_read)} "
-        f"faster beyond the noise edge); {tables_said(tables)}.** A cell is one scenario with one sampler, say 3DC-9 "
-        "OB: the 9-DoF box chain in 3D clutter with the Obstacle-Based sampler (the Key under the table names all "
-        "eight). Each bullet counts its cells by each query's own ratio, its time with prediction over its own time "
-        "without: saved at 0.90 or less, cost at 1.10 or more (our 10 % rule); the *noise edge*, "
-        f"{1 - edge:.2f}–{1 + edge:.2f}, is twice as far from 1 as timing alone moved that ratio, and a saving or "
-        "cost inside it is no clear evidence:"
+        f"faster beyond the noise band, {1 - edge:.2f}–{1 + edge:.2f}); {tables_said(tables)}.** A cell is one "
+        "scenario with one sampler, say 3DC-9 OB: the 9-DoF box chain in 3D clutter with the Obstacle-Based sampler "
+        "(the Key under the tables names all eight). The table counts each series' cells by the statistic its column "
+        "names (each query's own ratio: its time with prediction over its own time without): saved at 0.90 or "
+        "less, cost at 1.10 or more (our 10 % rule: the tie band), and a saving or cost "
+        "inside a noise band (the table under it) is no clear evidence."
     )
-    verdicts = [
-        verdict_line(
-            "With our fast compiled checker (our exact collision check, compiled with numba)",
-            own_medians(tables, recorded.ALGORITHM_1),
-            tables,
-        ),
-        verdict_line(
-            "With python-fcl (the FCL library called from Python, a slow exact checker) on both sides",
-            own_medians(tables, SLOW),
-            tables,
-        )
-        + not_prediction(tables),
-        f"- **The paper's Table 3, by means: {READS[max(range(3), key=lambda k: (papers[k], k == 1))]}.** It gives no "
-        f"query's own ratio; {papers[0]} saved 10 % or more, {papers[1]} tied, "
-        f"{papers[2] or 'none'} cost 10 % or more{small_costs(facts.papers_totals)} ([how we read its "
-        "table](#how-these-results-were-made)).",
-    ]
-    why = causes(tables)
-    why_said = (  # reader r37f, contradiction 1 and item 2: two causes, one per checker
-        f"Why, by means: with our compiled checker the network is the dearer check, so sampling got 10 % or more "
-        f"slower in {why.slower} of {why.cells} cells, adding at most {percent(-why.grew)} % of a query; with "
-        f"python-fcl sampling took at most {percent(why.share)} % of a query, so shortening sampling saved at most "
-        f"{percent(why.saved)} % of a query. In {len(apart(tables, recorded.ALGORITHM_1))} cells with our compiled "
-        f"checker and {len(apart(tables))} with python-fcl the rest of the query, on the roadmap the screened samples "
-        "built, moved the whole query 10 points or more further than sampling did "
-        "([the findings](#what-reproduces-and-what-does-not)). The table under them adds the counts by mean times, "
-        f"the paper's statistic; a few slow queries pull a mean: {means_apart(tables)}"
+    dashes = (  # reader r39f, contradiction 7: the dashes explained in one line
+        "A “—”: no query's own ratio was recorded (the paper prints means; our `paper`-preset run kept means and "
+        f"medians).{not_prediction(tables)}"
     )
-    return f"{answer}\n\n" + "\n".join(verdicts) + f"\n\n{networks(tables)}\n\n{why_said}\n\n{counts(tables)}"
-
-
-def small_costs(totals: Sequence[float]) -> str:
-    """Reader r36f, contradiction 5: the paper's whole-query costs under 10 %, which the 10 % rule calls ties, said
-    beside "none cost 10 % or more" (``totals``: Table 3's improvements; a cost is a negative one), as
-    ``" (three cost 2–9 %)"``; empty where there are none."""
-    costs = [-saved for saved in totals if saved < 0 and change(1 - saved) != "more time"]
-    if not costs:
-        return ""
-    words = {1: "one", 2: "two", 3: "three", 4: "four", 5: "five"}
-    return f" ({words.get(len(costs), str(len(costs)))} cost {span(costs)} %)"
+    return f"{answer}\n\n{counts(tables)}\n\n{dashes}\n\n{bands(tables)}"
 
 
 def fast_means(tables: Tables) -> list[float]:
@@ -164,69 +124,7 @@ def fast_means(tables: Tables) -> list[float]:
     ]
 
 
-def means_apart(tables: Tables) -> str:
-    """The lead's example of a mean pulled by a few slow queries (reader r34f, item 2), Figure 2's
-    (:func:`tools.results_figures.furthest_apart`)."""
-    name, sampler, mean, median = furthest_apart(tables)
-    return (
-        f"with our compiled checker, {name} {sampler} is {mean:.2f} by means and {median:.2f} by each query's own "
-        "ratio."
-    )
-
-
-def above_paper(rows: list[str], ours: list[float], papers: list[float]) -> list[str]:
-    """The scenarios where our figure beats the paper's, as ``"3DO, 97 / 94 %"`` (reader r35f, contradictions 2-3)."""
-    return [
-        f"{NAMES.get(s, s.upper())}, {percent(o)} / {percent(p)} %"
-        for s, o, p in zip(rows, ours, papers)
-        if int(percent(o)) > int(percent(p))
-    ]
-
-
-def networks(tables: Tables) -> str:
-    """Reader r34f, item 1: the verdicts on the paper's Tables 1 and 2, one line each, read from the record; reader
-    r35f, contradictions 2-3: each leads with the paper's own statistic and the trivial answer beside it."""
-    ours, free, gain = cae_unseen(tables)
-    cae = recorded.table("paper", "CAE reconstruction", tables)
-    papers = [recorded.ours(row["Unseen"].split("/")[-1]) for row in cae.values()]
-    mlp = recorded.table("paper", "MLP accuracy", tables)
-    blind, valid, papers_mlp = (
-        [recorded.ours(row[column].split("/")[side]) for row in mlp.values()]
-        for column, side in (("Unseen Acc", 0), ("Unseen always valid", 0), ("Unseen Acc", -1))
-    )
-    balanced = {
-        preset: [
-            recorded.ours(row["Balanced unseen Acc"]) for row in recorded.table(preset, "MLP accuracy", tables).values()
-        ]
-        for preset in ("paper", recorded.ALGORITHM_1)
-    }
-    cae_said = "no better than" if round(gain * 100) <= 0 else "barely better than"
-    chance = max(balanced["paper"]) < 0.6
-    cae_above = above_paper(list(cae), ours, papers)
-    mlp_above = above_paper(list(mlp), blind, papers_mlp)
-    always = above_paper(list(mlp), [o if percent(o) == percent(v) else 0.0 for o, v in zip(blind, valid)], papers_mlp)
-    return (
-        "The paper's other two tables, on unseen workspaces:\n\n"
-        f"- **Table 1 (the CAE): not reproduced.** Ours reconstructs {span(ours)} % of their cells, {cae_said} "
-        f"answering “free” everywhere ({span(free)} %); the paper's CAE, {span(papers)} %"
-        + (f" (ours higher in {'; '.join(cae_above)})" if cae_above else "")
-        + f".\n- **Table 2 (the MLP): {'not reproduced' if chance else 'in part'}.** On validity-blind samples "
-        "(drawn without regard to collisions, as the paper measures), the paper's recipe is right "
-        f"{span(blind)} % of the time (the paper's: "
-        f"{span(papers_mlp)} %), answering “valid” to every sample {span(valid)} %"
-        + (
-            f"; where it beats the paper ({'; '.join(mlp_above)}), it answers “valid” to every sample"
-            if mlp_above == always != []
-            else ""
-        )
-        + f"; on balanced samples, half valid, it is right {span(balanced['paper'])} % "
-        f"({'chance' if chance else 'above chance'}: a coin flip is right 50 %), our `strong` MLP "
-        f"{span(balanced[recorded.ALGORITHM_1])} %."
-    )
-
-
-READS = ("prediction saves time", "mostly a tie", "prediction costs time")  # a series' verdict: its largest count
-VERBS = ("saves time", "mostly ties", "costs time")  # the same, in the answer's sentence
+VERBS = ("saves time", "mostly ties", "costs time")  # a series' verdict in the answer: its largest count
 
 
 def tables_said(tables: Tables) -> str:
@@ -252,26 +150,11 @@ def not_prediction(tables: Tables) -> str:
     far = {cell for cell, m in own_medians(tables, SLOW) if change(m) == "less time" and abs(m - 1) >= edge}
     rest = [cell.name for cell in apart(tables) if cell.total > cell.sampling and cell.name in far]
     return (
-        f" Of those, {' and '.join(rest)} saved through the rest of the query, not sampling (by means; this run was "
-        "not timed twice: its noise edge is borrowed from the run with our compiled checker)."
+        f" Of python-fcl's savings beyond the noise band, {' and '.join(rest)} came from the rest of the query, not "
+        "sampling (the findings' fold: “Where the whole query moved apart from sampling”)."
         if rest
         else ""
     )
-
-
-def verdict_line(series: str, cells: list[tuple[str, float]], tables: Tables) -> str:
-    """One of the summary's verdicts: the series' largest count by each query's own ratio (:data:`READS`, a tie where
-    two are equal), then its cells saved, tied and cost by that ratio alone (reader r36f, item 2: one statistic a
-    line; the counts by means are the table's), those beyond the noise edge counted and, up to three, named."""
-    read = counted([change(m) for _, m in cells])
-    edge = NOISE_EDGE * reach_of(tables)
-    parts = []
-    for k, name, word in ((0, "saved", "less time"), (2, "cost", "more time")):
-        far = [f"{cell} {m:.2f}" for cell, m in cells if change(m) == word and abs(m - 1) >= edge]
-        named = f": {', '.join(far)}" if 0 < len(far) <= 3 else ""
-        parts.append(f"{read[k] or 'none'} {name}" + (f" ({len(far)} beyond the noise edge{named})" if read[k] else ""))
-    said = READS[max(range(3), key=lambda k: (read[k], k == 1))]
-    return f"- **{series}: {said}.** {parts[0][0].upper()}{parts[0][1:]}, {read[1]} tied, {parts[1]}."
 
 
 def counts(tables: Tables) -> str:
@@ -292,7 +175,7 @@ def counts(tables: Tables) -> str:
 
     lines = [
         f"| whole query, {len(facts.papers_totals)} cells | by means (Table 3, Figure 2): saved / tied / cost "
-        "| by each query's own ratio (Figure 1): saved / tied / cost | of those, beyond the noise edge: saved / cost |",
+        "| by each query's own ratio (Figure 1): saved / tied / cost | of those, beyond the noise band: saved / cost |",
         "| --- | --- | --- | --- |",
         row("the paper's reported results (its Table 3)", None, [1 - s for s in facts.papers_totals]),
         row(  # reader r35f, item 1: the closest copy of the paper's recipe, its savings explained where they are told

@@ -24,7 +24,7 @@ from matplotlib.figure import Figure
 from matplotlib.ticker import NullLocator
 
 from toolkit.plots.alt import Part, describe
-from toolkit.plots.palette import COLORS, LINE_COLORS, PAGE_WIDTH, halo, series_style
+from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO, PAGE_WIDTH, halo, series_style
 from toolkit.plots.timings import band_words, legend_above, log_ticks, ratio_parts, tie_band
 from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 
@@ -39,17 +39,18 @@ MEANS_STYLES = (  # :func:`means_grid`'s series in turn: colour, marker, hollow;
     (LINE_COLORS[5], "D", False),  # grey diamonds: the paper's own numbers (r28f: its cross read as the pluses)
     (LINE_COLORS[3], "X", False),  # bluish green crosses: a network with our compiled checker
     (LINE_COLORS[4], "*", False),  # reddish purple stars: another network with our compiled checker
-    (LINE_COLORS[4], "h", True),  # reddish purple, hollow hexagons: that network with python-fcl (hollow, as Figure
-    # 1's; r31f: a hollow plus read as filled; r33f: orange, Figure 1's "tie", meant two things; the stars' hue: the
-    # same network, its fill the checker, as in Figure 1)
+    (OKABE_ITO["sky blue"], "h", False),  # sky-blue hexagons, outlined in black: that network with python-fcl (reader
+    # r39f: the stars' hue, hollow, could not be told from the stars; r33f: orange, Figure 1's "tie", meant two things;
+    # sky blue is under 3:1 on white, so the halo's black ring carries it)
     (LINE_COLORS[3], "P", True),  # bluish green, hollow pluses: the first network with python-fcl
 )
 """Reader r31f: Figure 1's blue, vermillion and black are its verdicts, its circle, square and triangle too, so no
-series here takes any of them; a network keeps its hue, and hollow is python-fcl on both sides, as in Figure 1."""
+series here takes any of them; each series its own colour (reader r39f: a shared hue could not be told apart)."""
 Y_LABEL = "time with / without\n(log axis; below 1: saves)"  # reader r31f: the axis is log, and says so
 MEANS_SIZE = 5.5  # points (r28f asked 1.5 times 5; r32f 1.5 times more, but then neighbouring markers would touch)
 STAR_SCALE = 1.35  # a star fills less of its box than the other markers: drawn this much larger, it reads as large
-MEANS_SPREAD = 0.95  # of the space between two samplers, what a sampler's points spread over
+MEANS_SPREAD = 1.0  # of the space between two samplers, what a sampler's points spread over: evenly spaced, so
+# neighbours within and across samplers stand as far apart (reader r39f: a star and a hexagon touched)
 
 
 def own_ratios(
@@ -114,13 +115,14 @@ def own_ratios(
 
 
 def _own_axis(ax, drawn: list[float], tie: float, edges: list[float]) -> None:
-    """:func:`own_ratios`' log axis over every ``drawn`` value, the tie band and the noise edge's ``edges``, labelled at
-    its 1-2-5 steps, :data:`BELOW_1` and ``edges`` (reader r32f: the hatched band's edges unlabelled)."""
+    """:func:`own_ratios`' log axis over every ``drawn`` value, the tie band and the noise band's ``edges``, labelled at
+    its 1-2-5 steps and :data:`BELOW_1`; the noise band's edges are named in the legend only (reader r39f: "1.18", "1"
+    and "0.82" crowded)."""
     ax.set_yscale("log")
     ax.set_ylim(min(*drawn, *edges, 1 - tie) / 1.15, max(*drawn, *edges, 1 + tie) * 1.15)
     log_ticks(ax)
     low, high = ax.get_ylim()
-    every = (*ax.get_yticks(), *BELOW_1, *edges)  # r25c: 0.7 alone below 1
+    every = (*ax.get_yticks(), *BELOW_1)  # r25c: 0.7 alone below 1; r39f: the band's edges in the legend only
     shown = sorted({round(s, 2) for s in every if low <= s <= high})
     ax.set_yticks(shown, [f"{s:g}" for s in shown])
     ax.yaxis.set_minor_locator(NullLocator())  # review r27f: an unlabelled tick under 0.7 read as a missing label
@@ -128,9 +130,9 @@ def _own_axis(ax, drawn: list[float], tie: float, edges: list[float]) -> None:
 
 
 NOISE_WORDS = (  # means_grid's hatching, told apart from own_ratios' (reader r32f: one hatch meant two bands)
-    "ratio-of-means floor, {low:.2f}–{high:.2f}: timing alone moved a ratio of means that far"
+    "noise band of a ratio of means, {low:.2f}–{high:.2f}: timing alone moved a ratio of means that far"
 )
-EDGE_WORDS = "median noise edge, {low:.2f}–{high:.2f}: a cost or saving there is no clear evidence"
+EDGE_WORDS = "noise band of this ratio, {low:.2f}–{high:.2f}: a cost or saving there is no clear evidence"
 EDGE_HATCH, NOISE_HATCH = "///", "\\\\\\"  # own_ratios' noise edge; means_grid's floor, the other slant
 
 
@@ -204,12 +206,13 @@ def _points(ax, x: np.ndarray, by_sampler: Mapping[str, tuple[float, float, floa
     )
     for xi, median in zip(x, values[:, 0]):
         look = series_style(READS.index(time_verdict(median, tie=tie)))
-        (point,) = ax.plot(
+        wide = look["marker"] == "^"  # reader r39f: a hollow triangle's small centre read as filled: drawn larger,
+        (point,) = ax.plot(  # its white centre reads, as the hollow circles' and squares' do
             [xi],
             [median],
             linestyle="none",
             marker=look["marker"],
-            markersize=7,
+            markersize=7 + 2 * (wide and hollow),
             zorder=3,
             **_fill(look["color"], hollow),
         )
