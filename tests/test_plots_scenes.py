@@ -638,3 +638,31 @@ def test_the_frame_title_names_a_dip_beside_the_frame():
     series = {"valid": None, "clearance": None, "probability": np.array([0.9, 0.575, 0.92, 0.95])}
     assert _frame_title(2, 4, series, 0.57) == "frame 2 (frames 0–3): P(valid) 0.92 ≥ threshold 0.57 (frame 1: 0.57)"
     assert _frame_title(3, 4, series, 0.57) == "frame 3 (frames 0–3): P(valid) 0.95 ≥ threshold 0.57"
+
+
+def test_a_path_frame_dots_its_p_valid_ticks_a_dip_and_the_nodes_and_draws_no_markers_on_the_dofs(crossing):
+    """Reader r39e, 05 figures 1-2: frame 48's line crossed frame 47's dip, so 0.92 read as 0.58; and markers every
+    few frames read as roadmap nodes. Now a dot at the frame's P(valid), a tick at the dip, none on the DoF lines, and
+    a tick on each panel's lower edge at each node of the path."""
+    from toolkit.plots import path_marks
+
+    robot, workspace, _, path, valid = crossing
+    nodes = path[[0, FRAMES // 2, -1]]  # (3, dof): a straight path, three of its frames named its nodes
+    probability = np.full(FRAMES, 0.9)
+    probability[FRAMES // 2 - 1] = 0.55  # a dip just before the frame shown
+    fig = scenes.path_frame(
+        robot, path, FRAMES // 2, workspace=workspace, valid=valid, probability=probability, threshold=0.5, nodes=nodes
+    )
+    panels = [ax for ax in fig.axes if any(h.get_gid() == "now" for h in ax.get_lines())]
+    assert all(h.get_marker() in ("None", None, "") for ax in panels for h in ax.get_lines() if h.get_gid() == "dof")
+    assert all(h.get_marker() in ("None", None, "") for h in fig.legends[0].legend_handles)
+    ticks = [[h.get_xdata()[0] for h in ax.get_lines() if h.get_gid() == "node"] for ax in panels]
+    assert all(t == pytest.approx([0.0, 0.5, 1.0]) for t in ticks)
+    along = np.linspace(0.0, 1.0, FRAMES)
+    (dot,) = [h for h in panels[-1].get_lines() if h.get_gid() == "frame value"]
+    assert (dot.get_xdata()[0], dot.get_ydata()[0]) == (along[FRAMES // 2], 0.9)
+    (dip,) = [h for h in panels[-1].get_lines() if h.get_gid() == "dip"]
+    assert dip.get_xdata()[0] == along[FRAMES // 2 - 1] and f"frame {FRAMES // 2 - 1}" in [
+        t.get_text() for t in panels[-1].texts
+    ]
+    assert path_marks.dip_beside(probability, FRAMES // 2 - 3) is None and "roadmap nodes" in panels[-1].get_xlabel()
