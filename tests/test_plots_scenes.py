@@ -406,7 +406,8 @@ def test_a_stills_overview_stars_mistakes_as_often_as_the_model_makes_them(cross
     assert extra > 0  # reader r34e: the title counts both kinds, so 13 drawn large do not outnumber 97 drawn 1 in 20
     conservative = int((wrong & valid).sum())
     assert overview.get_title().endswith(
-        f"1 sample in 3 drawn\n23 dangerous mistakes, all drawn; {conservative} conservative, 1 in 3"
+        f"1 sample in 3 drawn\n23 dangerous mistakes, all drawn; {conservative} conservative, "
+        f"{drawn['sample, model wrong']} drawn"  # reader r39e, 05 figure 6: "5 drawn", not "1 in 20"
     )
     assert "1 sample in 3 of every kind drawn, and all the dangerous mistakes" in alt_text(fig)
 
