@@ -429,7 +429,9 @@ def test_the_index_table_counts_the_recorded_cells():
     )
     assert "floor" not in answer.split("<details")[0]
     assert "not prediction's either" not in answer
-    assert said in answer and answer.index("— : not recorded") < answer.index(said) < answer.index("<details")
+    # reader r39e, home lift 3: method, not a finding: folded in "Table 3's statistic"
+    fold = answer.index('<details markdown="1"><summary>Table 3\'s statistic')
+    assert said in answer and fold < answer.index(said) < answer.index("</details>", fold)
 
 
 def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not():
@@ -528,7 +530,8 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
         f"the same {len(over)} cells as Table 3's savings. So did two of ours by means, both {bigger[0].name}. "
         f"With python-fcl its ratio of means was {1 - bigger[0].total:.2f}, where sampling's cut was worth "
         f"{100 * bigger[0].sampling:.0f} % of a query. With the compiled checker it was {compiled_ob:.2f}, though its "
-        f"sampling took longer; by each query's own ratio that cell cost time ({compiled_own:.2f})."
+        f"sampling took longer; by each query's own ratio that cell cost time ({compiled_own:.2f}). A few slow "
+        "queries move a mean, not a median: so the two statistics can disagree."  # reader r39e, home lift 2
     ) in answer
     # its throughput against python-fcl and each cell beside Table 3: docs/benchmarks.md (tests/test_benchmarks_page)
 
