@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.plots.palette import COLORS
@@ -40,11 +41,19 @@ def mark_series(fig: Figure, index: int, probability, nodes) -> None:
     panels = [ax for ax in fig.axes if any(line.get_gid() == "now" for line in ax.get_lines())]
     for line in [h for ax in panels for h in ax.get_lines() if h.get_gid() == "dof"]:
         line.set_marker("None")
-    for legend in fig.legends:
-        for handle in legend.legend_handles:
-            if hasattr(handle, "set_marker"):
-                handle.set_marker("None")
-    for ax in panels if nodes is not None else []:
+    for handle in [h for legend in fig.legends for h in legend.legend_handles]:
+        if isinstance(handle, Line2D):
+            handle.set_marker("None")
+    if nodes is not None and panels:
+        _tick_nodes(panels, nodes)
+    shown = [ax for ax in panels if any(line.get_gid() == "probability" for line in ax.get_lines())]
+    if probability is not None and shown:
+        _mark_probability(shown[0], np.asarray(probability, dtype=float), index)
+
+
+def _tick_nodes(panels: list, nodes: np.ndarray) -> None:
+    """A tick at each of ``nodes (P,)`` (path fractions) on each panel's lower edge, named in the last one's label."""
+    for ax in panels:
         for x in nodes:
             ax.plot(
                 [x, x],
@@ -56,47 +65,30 @@ def mark_series(fig: Figure, index: int, probability, nodes) -> None:
                 gid="node",
                 clip_on=False,
             )
-    if nodes is not None and panels:
-        panels[-1].set_xlabel(f"fraction of the path (ticks inside the lower edges: its {len(nodes)} roadmap nodes)")
-    shown = [ax for ax in panels if any(line.get_gid() == "probability" for line in ax.get_lines())]
-    if probability is None or not shown:
-        return
-    ax, p = shown[0], np.asarray(probability, dtype=float)
+    panels[-1].set_xlabel(f"fraction of the path (ticks inside the lower edges: its {len(nodes)} roadmap nodes)")
+
+
+def _mark_probability(ax, p: np.ndarray, index: int) -> None:
+    """A dot at frame ``index``'s P(valid) ``p (T,)``, and a tick at a dip beside it, labelled with its frame."""
     along = np.linspace(0.0, 1.0, len(p))
-    ax.plot(
-        along[index],
-        p[index],
-        marker="o",
-        markersize=7,
-        color=COLORS["occupied"],
-        markeredgecolor=COLORS["ink"],
-        linestyle="None",
-        gid="frame value",
-        zorder=5,
-    )
+    dot = dict(marker="o", markersize=7, color=COLORS["occupied"], markeredgecolor=COLORS["ink"], linestyle="None")
+    ax.plot(along[index], p[index], gid="frame value", zorder=5, **dot)
     j = dip_beside(p, index)
-    if j is not None:
-        ax.plot(
-            along[j],
-            p[j],
-            marker="|",
-            markersize=14,
-            markeredgewidth=1.6,
-            color=COLORS["ink"],
-            linestyle="None",
-            gid="dip",
-            zorder=5,
-        )
-        ax.annotate(
-            f"frame {j}",
-            (along[j], p[j]),
-            xytext=(-4 if j < index else 4, -12),
-            textcoords="offset points",
-            ha="right" if j < index else "left",
-            va="top",
-            fontsize=9,
-            color=COLORS["ink"],
-        )
+    if j is None:
+        return
+    tick = dict(marker="|", markersize=14, markeredgewidth=1.6, color=COLORS["ink"], linestyle="None")
+    ax.plot(along[j], p[j], gid="dip", zorder=5, **tick)
+    before = j < index
+    ax.annotate(
+        f"frame {j}",
+        (along[j], p[j]),
+        xytext=(-4 if before else 4, -12),
+        textcoords="offset points",
+        ha="right" if before else "left",
+        va="top",
+        fontsize=9,
+        color=COLORS["ink"],
+    )
 
 
 def per_frame(values, frames: int, name: str) -> np.ndarray | None:
