@@ -277,6 +277,7 @@ def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose
     bases = robot.link_boxes(path[[0, -1]])[0][:, 0]  # (2, 3) each pose's first link's centre
     np.testing.assert_allclose(drops, [[base, [*base[:2], 0.0]] for base in bases])
     for close_up, at in ((start, 0), (end, -1)):  # the samples inside its window but off the robot's
+        assert not any(t.get_text() for t in close_up.get_xticklabels())  # reader r39e: half-width, no ticks
         lo, hi = np.array([close_up.get_xlim(), close_up.get_ylim(), close_up.get_zlim()]).T  # picture, shaped by
         inside = np.all((points >= lo) & (points <= hi), axis=1)  # (T,) validity; links told apart; trace dashed
         over = still_panels.over_robot(close_up, robot, path[at], points)  # (T,) pictured on or beside a link

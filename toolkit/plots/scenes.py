@@ -106,7 +106,10 @@ def scene_still(
         hide = None if samples is None else over_robot(ax, robot, q, samples[0])  # (N,) marks over the robot
         drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE, hide=hide)
         seen.setdefault(label, (drawn, near, angles))
-        moved |= _z_apart(ax)  # reader r29e: a close-up's z ticks stood over its y ticks
+        if len(views) > 1:  # reader r39e: half a row wide, its ticks crowded; the overview gives the coordinates
+            ax.set(xticklabels=[], yticklabels=[], zticklabels=[])
+        else:
+            moved |= _z_apart(ax)  # reader r29e: a close-up's z ticks stood over its y ticks
         verdict = model_words((model or {}).get(label), ok)
         ax.set_title(f"{label}, close up{_STATE[ok]}{verdict}", fontsize=10)
     _still_legend(fig, valid, h_pad=4.0 if first else 1.5, w_pad=8.0 if moved else 5.0, close_ups=panels)  # r25b
