@@ -1139,7 +1139,7 @@ def _chapter_05_answer(found: str, measured: list[list[str]], scored: list[list[
         r
         for r in measured
         if r[0].startswith("`strong` network")
-        and r[0].endswith(("median of each query's own ratio (100 queries)", ": ratio of the means"))
+        and r[0].endswith((f": {chapter05.OWN}", ": ratio of the means"))  # reader r39e: short labels
     ]
     saves = any(cell.startswith(findings.SAVES) and chapter05.NOISE not in cell for r in totals for cell in r[1:])
     if len(totals) != 4 or saves or "**No.** On 3DC-7 no sampler's whole query saved 10 % or more" not in found:

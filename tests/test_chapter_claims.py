@@ -1278,7 +1278,7 @@ def chapter_05(
     fcl_sampling = recorded.improvements(chapter05.FCL, "3dc7", "sampling")
     paper_sampling = paper_numbers.IMPROVEMENT["3dc7"]["sampling"]
     recipe_medians = recipe_medians or recorded.median_ratios("paper")["3dc7"]["total"]
-    timed, timed_share = chapter05._recorded_scores(chapter05.COMPILED)
+    timed, timed_share = chapter05.recorded_scores(chapter05.COMPILED)
     scored = "\n".join(
         [
             f"| 3DC-7, unseen | accuracy | TPR | TNR | {chapter05.ALWAYS} |",

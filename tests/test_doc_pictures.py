@@ -108,5 +108,5 @@ def test_the_home_pages_office_link_is_chapter_05s_still():
     assert (~colliding).sum() and (colliding & ~outside).sum() and outside.sum()  # both kinds of diamond are drawn
     readme = " ".join((ROOT / "README.md").read_text().split())
     # reader r32e, lift 2: the still answered no question of the home page; chapter 05's row links it instead
-    assert "[the office it draws](docs/office.png)" in readme and "[![Chapter 05's office" not in readme
+    assert "[a still of its office](docs/office.png)" in readme and "[![Chapter 05's office" not in readme
     assert "docs/jupyterlab.png" not in readme

@@ -277,6 +277,7 @@ def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose
     bases = robot.link_boxes(path[[0, -1]])[0][:, 0]  # (2, 3) each pose's first link's centre
     np.testing.assert_allclose(drops, [[base, [*base[:2], 0.0]] for base in bases])
     for close_up, at in ((start, 0), (end, -1)):  # the samples inside its window but off the robot's
+        assert not any(t.get_text() for t in close_up.get_xticklabels())  # reader r39e: half-width, no ticks
         lo, hi = np.array([close_up.get_xlim(), close_up.get_ylim(), close_up.get_zlim()]).T  # picture, shaped by
         inside = np.all((points >= lo) & (points <= hi), axis=1)  # (T,) validity; links told apart; trace dashed
         over = still_panels.over_robot(close_up, robot, path[at], points)  # (T,) pictured on or beside a link
@@ -406,7 +407,8 @@ def test_a_stills_overview_stars_mistakes_as_often_as_the_model_makes_them(cross
     assert extra > 0  # reader r34e: the title counts both kinds, so 13 drawn large do not outnumber 97 drawn 1 in 20
     conservative = int((wrong & valid).sum())
     assert overview.get_title().endswith(
-        f"1 sample in 3 drawn\n23 dangerous mistakes, all drawn; {conservative} conservative, 1 in 3"
+        f"1 sample in 3 drawn\n23 dangerous mistakes, all drawn; {conservative} conservative, "
+        f"{drawn['sample, model wrong']} drawn"  # reader r39e, 05 figure 6: "5 drawn", not "1 in 20"
     )
     assert "1 sample in 3 of every kind drawn, and all the dangerous mistakes" in alt_text(fig)
 
@@ -638,3 +640,31 @@ def test_the_frame_title_names_a_dip_beside_the_frame():
     series = {"valid": None, "clearance": None, "probability": np.array([0.9, 0.575, 0.92, 0.95])}
     assert _frame_title(2, 4, series, 0.57) == "frame 2 (frames 0–3): P(valid) 0.92 ≥ threshold 0.57 (frame 1: 0.57)"
     assert _frame_title(3, 4, series, 0.57) == "frame 3 (frames 0–3): P(valid) 0.95 ≥ threshold 0.57"
+
+
+def test_a_path_frame_dots_its_p_valid_ticks_a_dip_and_the_nodes_and_draws_no_markers_on_the_dofs(crossing):
+    """Reader r39e, 05 figures 1-2: frame 48's line crossed frame 47's dip, so 0.92 read as 0.58; and markers every
+    few frames read as roadmap nodes. Now a dot at the frame's P(valid), a tick at the dip, none on the DoF lines, and
+    a tick on each panel's lower edge at each node of the path."""
+    from toolkit.plots import path_marks
+
+    robot, workspace, _, path, valid = crossing
+    nodes = path[[0, FRAMES // 2, -1]]  # (3, dof): a straight path, three of its frames named its nodes
+    probability = np.full(FRAMES, 0.9)
+    probability[FRAMES // 2 - 1] = 0.55  # a dip just before the frame shown
+    fig = scenes.path_frame(
+        robot, path, FRAMES // 2, workspace=workspace, valid=valid, probability=probability, threshold=0.5, nodes=nodes
+    )
+    panels = [ax for ax in fig.axes if any(h.get_gid() == "now" for h in ax.get_lines())]
+    assert all(h.get_marker() in ("None", None, "") for ax in panels for h in ax.get_lines() if h.get_gid() == "dof")
+    assert all(h.get_marker() in ("None", None, "") for h in fig.legends[0].legend_handles)
+    ticks = [[h.get_xdata()[0] for h in ax.get_lines() if h.get_gid() == "node"] for ax in panels]
+    assert all(t == pytest.approx([0.0, 0.5, 1.0]) for t in ticks)
+    along = np.linspace(0.0, 1.0, FRAMES)
+    (dot,) = [h for h in panels[-1].get_lines() if h.get_gid() == "frame value"]
+    assert (dot.get_xdata()[0], dot.get_ydata()[0]) == (along[FRAMES // 2], 0.9)
+    (dip,) = [h for h in panels[-1].get_lines() if h.get_gid() == "dip"]
+    assert dip.get_xdata()[0] == along[FRAMES // 2 - 1] and f"frame {FRAMES // 2 - 1}" in [
+        t.get_text() for t in panels[-1].texts
+    ]
+    assert path_marks.dip_beside(probability, FRAMES // 2 - 3) is None and "roadmap nodes" in panels[-1].get_xlabel()

@@ -24,6 +24,7 @@ from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.closest_pair import mark_closest
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
+from toolkit.plots.path_marks import dip_beside, mark_series, node_fractions, per_frame
 from toolkit.plots.path_series import draw_series, series_in_words, series_part
 from toolkit.plots.robot_drawing import INVALID_COLOR, VALID_COLOR, draw_robot, link_style
 from toolkit.plots.still_panels import (
@@ -105,7 +106,10 @@ def scene_still(
         hide = None if samples is None else over_robot(ax, robot, q, samples[0])  # (N,) marks over the robot
         drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE, hide=hide)
         seen.setdefault(label, (drawn, near, angles))
-        moved |= _z_apart(ax)  # reader r29e: a close-up's z ticks stood over its y ticks
+        if len(views) > 1:  # reader r39e: half a row wide, its ticks crowded; the overview gives the coordinates
+            ax.set(xticklabels=[], yticklabels=[], zticklabels=[])
+        else:
+            moved |= _z_apart(ax)  # reader r29e: a close-up's z ticks stood over its y ticks
         verdict = model_words((model or {}).get(label), ok)
         ax.set_title(f"{label}, close up{_STATE[ok]}{verdict}", fontsize=10)
     _still_legend(fig, valid, h_pad=4.0 if first else 1.5, w_pad=8.0 if moved else 5.0, close_ups=panels)  # r25b
@@ -310,8 +314,9 @@ def path_frame(
     probability=None,
     threshold: float = 0.5,
     margin: float = 1.0,
+    nodes=None,
 ) -> Figure:
-    """Frame ``index`` of a path ``configurations (T, dof)`` evenly spaced along it.
+    """Frame ``index`` of a path ``configurations (T, dof)`` evenly spaced along it (through ``nodes (P, dof)``).
 
     Top (3D): the robot's link boxes at that frame among the blocks of ``workspace`` within ``margin`` of it (in the
     valid colour if ``valid[index]``, the invalid colour if not, the title saying which; ``COLORS["unchecked"]`` if
@@ -327,7 +332,7 @@ def path_frame(
     if not 0 <= index < frames:
         raise ValueError(f"index must be in [0, {frames}), got {index}")
     series = {
-        name: _per_frame(values, frames, name)
+        name: per_frame(values, frames, name)
         for name, values in (("valid", valid), ("clearance", clearance), ("probability", probability))
     }
     fig = Figure(figsize=(PAGE_WIDTH, 16.4))  # as wide as the page: its text as large as it is drawn
@@ -338,6 +343,7 @@ def path_frame(
     bound = None if series["clearance"] is None else float(series["clearance"][index])
     _draw_scene(fig.add_subplot(grid[0], projection="3d"), robot, Q, index, (valid_now, bound), workspace, margin)
     draw_series(fig, grid[1], robot, Q, index, series, threshold)
+    mark_series(fig, index, series["probability"], None if nodes is None else node_fractions(robot, nodes))
     fig.suptitle(_frame_title(index, frames, series, threshold), fontsize=10, wrap=True)
     named = " ".join(SCENE_NAMES.get(robot.name, (robot.name, "robot")))  # "3DC-7 box chain" (reader r30e)
     text = f"A path of the {named}, {_frame_title(index, frames, series, threshold)}. At the top, the robot in 3D among"
@@ -374,16 +380,6 @@ def _draw_scene(scene, robot: BoxRobot, Q: np.ndarray, index: int, checked: tupl
     scene.tick_params(labelsize=9)
 
 
-def _per_frame(values, frames: int, name: str) -> np.ndarray | None:
-    """``values`` as a float array ``(T,)``, or None; a clear error for a wrong length."""
-    if values is None:
-        return None
-    values = np.asarray(values, dtype=float).reshape(-1)
-    if len(values) != frames:
-        raise ValueError(f"{name} must have one value per configuration ({frames}), got {len(values)}")
-    return values
-
-
 def _frame_title(index: int, frames: int, series: dict, threshold: float) -> str:
     """The title: "frame 48 (frames 0–89): valid (exact checker), clearance ≥ 0.028, P(valid) 0.92 ≥ threshold 0.57"."""
     parts = []
@@ -392,8 +388,7 @@ def _frame_title(index: int, frames: int, series: dict, threshold: float) -> str
     if series["clearance"] is not None:
         parts.append(f"clearance ≥ {series['clearance'][index]:.3f}")
     if series["probability"] is not None:
-        q = series["probability"]  # reader r35e: a dip beside this frame, more than 0.1 lower, is named after it
-        j = min((k for k in (index - 1, index + 1) if 0 <= k < frames), key=lambda k: q[k], default=index)
-        dip = f" (frame {j}: {q[j]:.2f})" if q[j] < q[index] - 0.1 else ""
+        q, j = series["probability"], dip_beside(series["probability"], index)  # r35e: a dip beside it, named
+        dip = "" if j is None else f" (frame {j}: {q[j]:.2f})"
         parts.append(f"P(valid) {q[index]:.2f} {'≥' if q[index] >= threshold else '<'} threshold {threshold:.2f}{dip}")
     return f"frame {index} (frames 0–{frames - 1})" + (": " + ", ".join(parts) if parts else "")

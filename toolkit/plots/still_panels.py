@@ -116,7 +116,8 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
     few_ticks(ax)
     drawn = f", 1 sample in {step} drawn" if step > 1 else ""
     every = 0 if samples is None else int(dangerous_mask(samples[1]).sum())  # reader r29e: "(11 more)" was cryptic
-    drawn += f"\n{every} dangerous mistakes, all drawn; {conservative} conservative, 1 in {step}" if extra else ""
+    shown = 0 if samples is None else int((samples[1].get("model wrong", 0) & samples[1]["valid"]).sum())  # r39e
+    drawn += f"\n{every} dangerous mistakes, all drawn; {conservative} conservative, {shown} drawn" if extra else ""
     ax.set_title(f"the whole workspace: {len(workspace.boxes)} blocks{drawn}", fontsize=10)
 
 

@@ -1,0 +1,101 @@
+"""Marks on the series under a path frame (:func:`toolkit.plots.scenes.path_frame`, notebook 05, section 7).
+
+Reader r39e: markers every few frames on the DoF lines read as roadmap nodes, though the path has only its few
+nodes; and the frame's line crossed a dip beside it, so the frame's P(valid) read as the dip's. So the DoF lines
+lose their markers (line style, colour and the name at each line's end still tell them apart), the path's nodes get a
+tick on each panel's lower edge, and the P(valid) panel a dot at the frame's value and a tick at a dip beside it.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
+
+from toolkit.geometry.robots import BoxRobot
+from toolkit.plots.palette import COLORS
+
+NODE_TICK = 0.12  # of a panel's height: a node's tick on its lower edge
+DIP = 0.1  # how much lower a neighbouring frame's P(valid) is to get a tick of its own (the title's rule)
+
+
+def node_fractions(robot: BoxRobot, path) -> np.ndarray:
+    """``(P,)`` the fractions of the length of ``path (P, dof)`` (``robot.distance``) at which its nodes lie, as
+    :func:`toolkit.planning.local_planner.path_at` spaces the frames."""
+    path = robot.check_configs(path, "path")
+    ends = np.concatenate([[0.0], np.cumsum(robot.distance(path[:-1], path[1:]))])
+    return ends / max(ends[-1], 1e-12)
+
+
+def dip_beside(p: np.ndarray, index: int) -> int | None:
+    """The neighbour of frame ``index`` whose P(valid) ``p (T,)`` is more than :data:`DIP` lower, the lower one; None
+    where neither is."""
+    j = min((k for k in (index - 1, index + 1) if 0 <= k < len(p)), key=lambda k: p[k], default=index)
+    return j if p[j] < p[index] - DIP else None
+
+
+def mark_series(fig: Figure, index: int, probability, nodes) -> None:
+    """On ``fig``'s series panels (each has its frame line, gid ``now``): no markers on the DoF lines (nor in the
+    legend), a tick at each of ``nodes (P,)`` (path fractions, or None) on each panel's lower edge, and on the P(valid)
+    panel a dot at frame ``index``'s ``probability`` and a tick at a dip beside it, labelled with its frame."""
+    panels = [ax for ax in fig.axes if any(line.get_gid() == "now" for line in ax.get_lines())]
+    for line in [h for ax in panels for h in ax.get_lines() if h.get_gid() == "dof"]:
+        line.set_marker("None")
+    for handle in [h for legend in fig.legends for h in legend.legend_handles]:
+        if isinstance(handle, Line2D):
+            handle.set_marker("None")
+    if nodes is not None and panels:
+        _tick_nodes(panels, nodes)
+    shown = [ax for ax in panels if any(line.get_gid() == "probability" for line in ax.get_lines())]
+    if probability is not None and shown:
+        _mark_probability(shown[0], np.asarray(probability, dtype=float), index)
+
+
+def _tick_nodes(panels: list, nodes: np.ndarray) -> None:
+    """A tick at each of ``nodes (P,)`` (path fractions) on each panel's lower edge, named in the last one's label."""
+    for ax in panels:
+        for x in nodes:
+            ax.plot(
+                [x, x],
+                [0.0, NODE_TICK],
+                transform=ax.get_xaxis_transform(),
+                color=COLORS["ink"],
+                linewidth=1.6,
+                solid_capstyle="butt",
+                gid="node",
+                clip_on=False,
+            )
+    panels[-1].set_xlabel(f"fraction of the path (ticks inside the lower edges: its {len(nodes)} roadmap nodes)")
+
+
+def _mark_probability(ax, p: np.ndarray, index: int) -> None:
+    """A dot at frame ``index``'s P(valid) ``p (T,)``, and a tick at a dip beside it, labelled with its frame."""
+    along = np.linspace(0.0, 1.0, len(p))
+    dot = dict(marker="o", markersize=7, color=COLORS["occupied"], markeredgecolor=COLORS["ink"], linestyle="None")
+    ax.plot(along[index], p[index], gid="frame value", zorder=5, **dot)
+    j = dip_beside(p, index)
+    if j is None:
+        return
+    tick = dict(marker="|", markersize=14, markeredgewidth=1.6, color=COLORS["ink"], linestyle="None")
+    ax.plot(along[j], p[j], gid="dip", zorder=5, **tick)
+    before = j < index
+    ax.annotate(
+        f"frame {j}",
+        (along[j], p[j]),
+        xytext=(-4 if before else 4, -12),
+        textcoords="offset points",
+        ha="right" if before else "left",
+        va="top",
+        fontsize=9,
+        color=COLORS["ink"],
+    )
+
+
+def per_frame(values, frames: int, name: str) -> np.ndarray | None:
+    """``values`` as a float array ``(T,)``, or None; a clear error for a wrong length."""
+    if values is None:
+        return None
+    values = np.asarray(values, dtype=float).reshape(-1)
+    if len(values) != frames:
+        raise ValueError(f"{name} must have one value per configuration ({frames}), got {len(values)}")
+    return values
