@@ -478,8 +478,8 @@ def tables(nb) -> list[tuple[list[str], list[list[str]]]]:
 LABELS = ("scenario", "sampler", "what grows", "value", "measured")  # the columns that name a table's row
 # a cell that gives a verdict, then its numbers: "costs time (median 2.24; middle half 1.29–3.50)", "costs time (2.13)"
 VERDICT = re.compile(
-    r"(saves time|costs time|a tie|close: can't tell|about equal|can't tell|network cheaper|network dearer)(?:\\\*|†)? "
-    r"\((.+)\)"
+    r"(saves time|costs time|a tie|close: can't tell|about equal|can't tell|network cheaper|network dearer)"
+    r"(?:\\\*|\?)? \((.+)\)"
 )
 
 

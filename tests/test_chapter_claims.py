@@ -811,7 +811,7 @@ def test_a_second_table_in_one_output_is_read_apart_and_held_to_the_page_width()
         ([1.0, 1.05, 1.1], "1.05 (middle half 1.02–1.08), a tie: less than 10% from 1, neither saved nor cost."),
         (
             [0.8, 1.0, 1.3],
-            "1.00 (middle half 0.90–1.15), no clear evidence (†): the middle half lies partly inside the band (less "
+            "1.00 (middle half 0.90–1.15), no clear evidence (?): the middle half lies partly inside the band (less "
             "than 10% from 1), partly outside.",
         ),
     ],
