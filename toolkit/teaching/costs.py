@@ -363,13 +363,13 @@ def mean_verdicts(preset: str, tables: Tables | None = None) -> Counter:
 
 def largest_share(tables: Tables | None = None) -> str:
     """The largest of :func:`shares_by_cell` of the Algorithm 1 run, its cell and the times it divides (r37d)."""
-    shares = shares_by_cell(recorded.ALGORITHM_1, tables)
-    key = max(shares, key=lambda k: shares[k])
+    key = max(shares := shares_by_cell(recorded.ALGORITHM_1, tables), key=lambda k: shares[k])
     row = mean_times(recorded.ALGORITHM_1, tables)[key]
-    parts = (1000 * recorded.ours(row[k]) for k in ("sampling without", "total without"))
+    sampling, total = (1000 * recorded.ours(row[k]) for k in ("sampling without", "total without"))
     where = f'`docs/results.md`, "`{recorded.ALGORITHM_1}`, Times behind Table 3"'  # r39d: not section 5's 45.5 ms
-    return "{:.0f} % of a mean query ({} {}: sampling {:.1f} of {:.1f} ms without prediction, {})".format(
-        100 * shares[key], NAMES[key[0]], key[1], *parts, where
+    return (
+        f"{100 * shares[key]:.0f} % of a mean query ({NAMES[key[0]]} {key[1]}: sampling {sampling:.1f} of "
+        f"{total:.1f} ms without prediction, {where})"
     )
 
 
