@@ -373,20 +373,6 @@ def largest_share(tables: Tables | None = None) -> str:
     )
 
 
-def split_bullet(tables: Tables | None = None) -> str:
-    """Where the extra time went in :func:`dear_cells`, in one sentence (reader r37d: the answer's "why" rested on the
-    network's call cost, which explains the smaller part of the extra time in most of those cells)."""
-    cells = dear_cells(tables)
-    mostly = sum(c.after_share > 0.5 for c in cells)
-    slower = "got slower" if all(c.sampling[1] > c.sampling[0] for c in cells) else "changed"
-    return (
-        f"in the {len(cells)} cells where the median query cost time beyond timing noise and the mean time grew too, "
-        "sampling "
-        f"{slower} with the network, but most of the extra mean time came after sampling in {mostly} of them "
-        "(section 6's last table): the workspace's encoding and another roadmap, which the record does not split"
-    )
-
-
 def planner_banner(tables: Tables | None = None) -> str:
     """Chapter 04's line over sections 2-3 (reader r37d, lift 3: 3DC-7 cost 2-2.6x there, 1.03-1.58 in the answer):
     which planner they run, and 3DC-7's recorded range with each planner, each statistic named."""
