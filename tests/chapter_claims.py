@@ -483,8 +483,8 @@ def tables(nb) -> list[tuple[list[str], list[list[str]]]]:
 LABELS = ("scenario", "sampler", "what grows", "value", "measured")  # the columns that name a table's row
 # a cell that gives a verdict, then its numbers: "costs time (median 2.24; middle half 1.29–3.50)", "costs time (2.13)"
 VERDICT = re.compile(
-    r"(saves time|costs time|a tie|close: can't tell|about equal|can't tell|network cheaper|network dearer)(?:\\\*)? "
-    r"\((.+)\)"
+    r"(saves time|costs time|a tie|close: can't tell|about equal|can't tell|network cheaper|network dearer)"
+    r"(?:\\\*|\?)? \((.+)\)"
 )
 
 
@@ -835,15 +835,16 @@ STATUS = re.compile(  # findings.claim_status: the paper's claim from the record
     r"(?:\([^)]*\) )?in "
     r"(none|\d+) of the (\d+) scenario–sampler pairs"
 )
-ANSWER_NO = "**The answer: no with our fast checker"  # the opening (review r28d: said once; r35d: then "rarely")
+ANSWER_NO = "**The answer: no by the median query with our fast checker"  # the opening (r39d: names its statistic)
 RARELY = "rarely with python-fcl"  # the opening's answer on python-fcl: its median query saved in a few cells, not 0
-FAST_BULLET = re.compile(  # chapter04.answer: by means like the paper's Table 3, then the median query (reader r38d)
-    r"\*\*By mean times, the paper's statistic\*\*, with our fast checker our accurate network saved time in "
-    r"(?P<fast_means>none|\d+) of the (?P<total>\d+) cells \(4 scenarios × 4 samplers\), [^;]* beyond timing noise; "
-    r"the paper's Table 3 saves time in (?P<papers>\d+) of its \d+\. \*\*By the median query\*\* it saved time in "
-    r"(?P<fast>none|\d+)(?: \(\d+ of them inside timing noise\))?, tied in (?P<fast_ties>none|\d+) and cost time in "
-    r"(?P<fast_costs>none|\d+)(?: \((?P<fast_edge>\d+) of them inside timing noise\))?\. With python-fcl on both "
-    r"sides it saved time in (?P<slow_means>none|\d+) by means and, by the median query, in (?P<slow>none|\d+)"
+FAST_BULLET = re.compile(  # chapter04.answer: the median query with each checker, then means (reader r39d, lift 1)
+    r"\*\*By the median query\*\*, in the (?P<total>\d+) cells \(4 scenarios × 4 samplers\) our accurate network "
+    r"saved time in (?P<fast>none|\d+)(?: \(\d+ of them inside timing noise\))?, tied in (?P<fast_ties>none|\d+) and "
+    r"cost time in (?P<fast_costs>none|\d+)(?: \((?P<fast_edge>\d+) of them inside timing noise\))? with our fast "
+    r"checker; with python-fcl on both sides it saved time in (?P<slow>none|\d+)[^.]*\. \*\*By mean times\*\*, the "
+    r"paper's statistic, it saved time in (?P<fast_means>none|\d+) cells with our fast checker and "
+    r"(?P<slow_means>none|\d+) with python-fcl, [^;]* beyond timing noise[^;]*; the paper's Table 3 saves time in "
+    r"(?P<papers>\d+) of its \d+\."
 )
 EDGE = "inside timing noise: no clear evidence"  # chapter04.edge_line: what section 6's mark means
 SLOW_ROW = re.compile(r"(.+), ours \(`strong`, python-fcl\), medians")  # section 6: the same network, python-fcl

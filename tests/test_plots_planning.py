@@ -244,7 +244,7 @@ def test_stage_times_one_stacked_bar_per_sampler_and_mode_with_the_given_heights
         assert np.isclose(segment[0, 0], bar.get_x() + bar.get_width() / 2)
         assert all(not b.get_x() <= segment[0, 0] <= b.get_x() + b.get_width() for b in stacks if b is not bar)
     # above each pair the median of the queries' own ratios (0.5, 0.6, 1.2), not the ratio of the median totals (0.5)
-    assert [t.get_text() for t in ax.texts] == ["0.60x (bars 0.50x)"] * 4  # reader r38d: the bars' ratio beside it
+    assert [t.get_text() for t in ax.texts] == ["0.60x\n(bars 0.50x)"] * 4  # reader r38d: the bars' ratio beside it
     assert [t.get_text() for t in ax.get_xticklabels()][:2] == ["BS\nwithout", "BS\nwith"]
     assert ax.get_ylim()[1] > 1500 * MEDIANS["BT"]["without"]["total_s"]  # every whisker within 2x the bars: whole
 
@@ -260,9 +260,9 @@ def test_a_pair_whose_taller_bar_says_the_other_way_is_starred_and_told():
     fig = timings.stage_times({"2DS": planning})
     ax = fig.axes[0]
     assert [t.get_text() for t in ax.texts] == [
-        "0.60x (bars 0.50x)",
-        "0.60x† (bars 1.03x)",
-        *["0.60x (bars 0.50x)"] * 2,
+        "0.60x\n(bars 0.50x)",
+        "0.60x†\n(bars 1.03x)",
+        *["0.60x\n(bars 0.50x)"] * 2,
     ]
     assert "median of each query's ratio" in ax.get_title() and "†: the bars say the other way" in ax.get_title()
     assert "0.60x, though the bar with prediction is the taller" in alt.alt_text(fig)

@@ -61,21 +61,21 @@ def answer_ratios(
         panels = [(rows, spans or {}, False)]
     fig = Figure(figsize=(PAGE_WIDTH, 3.8 * len(panels) + 1.2), layout="constrained")
     axes = fig.subplots(len(panels), 1, squeeze=False)[:, 0]  # each panel its own ticks: read without the other
-    if means:
-        axes[0].set_title(MEANS_TITLE, fontsize=10)
-        axes[1].set_title(MEDIANS_TITLE, fontsize=10)
+    one = MEDIANS_TITLE.replace(" (hollow)", "") if spans else MEANS_TITLE  # r39d: each panel names its statistic
+    for ax, title in zip(axes, [MEANS_TITLE, MEDIANS_TITLE] if means else [one]):
+        ax.set_title(title, fontsize=10)
     parts, counted, every = [], [], []
     for ax, (shown, whiskers, hollow) in zip(axes, panels):
-        ax.axhspan(1 - tie, 1 + tie, facecolor=COLORS["shade"], edgecolor=COLORS["reference"], alpha=0.9, zorder=0)
         ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
         if floor and ax is axes[0] and (means or not spans):  # a panel of means (reader r37d: one, in section 6)
             _floor(ax, floor, tie)
         if median_floor and ax is axes[-1] and (means or spans):  # a panel of medians (r37d: the answer's one)
             _floor(ax, median_floor, tie, MEDIAN_NOISE)
+        _tie_band(ax, tie, named=ax is axes[0])
         drawn, found = _series(ax, shown, scenarios, series, names, whiskers, hollow)
         _groups(ax, scenarios)
         every += drawn
-        ax.set_ylabel(f"time with / without\n(log axis; grey: a tie, {1 - tie:.2f}–{1 + tie:.2f})")
+        ax.set_ylabel("time with / without (log axis)")
         points = [v for row in shown.values() for v in row.values()]
         counted.append((len(points), int(np.sum(np.array(points) <= 1 - tie))))
         parts += [dataclasses.replace(p, name=f"{_title(ax, means)}: {p.name}") for p in found]
@@ -91,6 +91,14 @@ def answer_ratios(
     drawn_series = sum(any(label.endswith(f", {name}") for label in rows) for name in series)
     said = _text(tie, drawn_series, counted, spans, means, None if spans and not means else floor)
     return describe(fig, said + _median_words(median_floor if means or spans else None, bool(means)), parts)
+
+
+def _tie_band(ax, tie: float, named: bool) -> None:
+    """The tie band, grey, named in the legend (``named``) beside the noise band (reader r39d: not in the ylabel)."""
+    label = f"a tie, {1 - tie:.2f}–{1 + tie:.2f}" if named else None
+    ax.axhspan(
+        1 - tie, 1 + tie, facecolor=COLORS["shade"], edgecolor=COLORS["reference"], alpha=0.9, zorder=0, label=label
+    )
 
 
 def _median_words(band: tuple[float, float] | None, below: bool) -> str:

@@ -306,7 +306,7 @@ def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: in
         hit = np.flatnonzero(~exact.are_valid(Q))
         if hit.size:
             x, y = Q[hit[0]]
-            ring = dict(s=60, facecolors="none", edgecolors=COLORS["ink"], linewidths=1.5, zorder=7)
+            ring = dict(s=160, facecolors="none", edgecolors=COLORS["ink"], linewidths=2.2, zorder=7)
             ax.scatter([x], [y], **ring, label="where a removed edge enters a C-obstacle")  # review r29d: named
             hits.append((float(x), float(y)))
     return hits
@@ -345,7 +345,8 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
     """Several steps of Algorithm 1 side by side, the roadmap drawn at each (one panel per step; ``columns`` a row,
     as wide as the page together); ``of``: the trace's steps in all (reader r37d: the title says "3 of 6 steps")."""
     rows = -(-len(steps) // columns)
-    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / columns * 1.08 * rows + 0.4), layout="constrained")
+    below = 1.0 if len(steps) == rows * columns else 0.0  # r39d: no empty slot, so the legend's rows go below
+    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / columns * 1.08 * rows + 0.4 + below), layout="constrained")
     axes = fig.subplots(rows, columns, squeeze=False).ravel()
     for ax, step in zip(axes, steps):
         _draw_roadmap(ax, exact, step)

@@ -56,8 +56,8 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         crossed = (bars - 1) * (np.asarray(ratio) - 1) < 0  # (samplers,): the taller bar says the other way
         for i, r in enumerate(ratio):  # above the frame, over the pair and a cut whisker's end: never on a bar
             where = dict(xycoords=("data", "axes fraction"), xytext=(0, 13), textcoords="offset points")
-            label = f"{r:.2f}x{'†' if crossed[i] else ''} (bars {bars[i]:.2f}x)"  # reader r38d: both ratios
-            ax.annotate(label, (i, 1.0), ha="center", va="bottom", fontsize=9, **where)
+            label = f"{r:.2f}x{'†' if crossed[i] else ''}\n(bars {bars[i]:.2f}x)"  # r38d: both; r39d: over its pair
+            ax.annotate(label, (i, 1.0), ha="center", va="bottom", fontsize=9, weight="bold", **where)
         ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=9)
         ax.set_xlabel("sampler, without / with prediction")
         ax.set_ylabel("ms per query (median),\neach panel its own scale")
@@ -65,7 +65,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         ax.set_title(
             f"{title}: above a pair, the median of each query's ratio{note}",  # reader r31d: one line, not three
             fontsize=9,
-            pad=27,
+            pad=40,
         )
         said.append(_stage_words(title, names, table, ratio, bars, crossed))
         said[-1] += cut_in_words(

@@ -362,28 +362,14 @@ def mean_verdicts(preset: str, tables: Tables | None = None) -> Counter:
 
 
 def largest_share(tables: Tables | None = None) -> str:
-    """The largest of :func:`shares_by_cell` of the recorded Algorithm 1 run, with its cell and the two mean times it
-    divides (reader r37d: the answer's "at most 18 %" was printed nowhere a student could check it)."""
-    shares = shares_by_cell(recorded.ALGORITHM_1, tables)
-    key = max(shares, key=lambda k: shares[k])
+    """The largest of :func:`shares_by_cell` of the Algorithm 1 run, its cell and the times it divides (r37d)."""
+    key = max(shares := shares_by_cell(recorded.ALGORITHM_1, tables), key=lambda k: shares[k])
     row = mean_times(recorded.ALGORITHM_1, tables)[key]
-    parts = (1000 * recorded.ours(row[k]) for k in ("sampling without", "total without"))
-    return "{:.0f} % of a mean query ({} {}: sampling {:.1f} of {:.1f} ms without prediction)".format(
-        100 * shares[key], NAMES[key[0]], key[1], *parts
-    )
-
-
-def split_bullet(tables: Tables | None = None) -> str:
-    """Where the extra time went in :func:`dear_cells`, in one sentence (reader r37d: the answer's "why" rested on the
-    network's call cost, which explains the smaller part of the extra time in most of those cells)."""
-    cells = dear_cells(tables)
-    mostly = sum(c.after_share > 0.5 for c in cells)
-    slower = "got slower" if all(c.sampling[1] > c.sampling[0] for c in cells) else "changed"
+    sampling, total = (1000 * recorded.ours(row[k]) for k in ("sampling without", "total without"))
+    where = f'`docs/results.md`, "`{recorded.ALGORITHM_1}`, Times behind Table 3"'  # r39d: not section 5's 45.5 ms
     return (
-        f"in the {len(cells)} cells where the median query cost time beyond timing noise and the mean time grew too, "
-        "sampling "
-        f"{slower} with the network, but most of the extra mean time came after sampling in {mostly} of them "
-        "(section 6's last table): the workspace's encoding and another roadmap, which the record does not split"
+        f"{100 * shares[key]:.0f} % of a mean query ({NAMES[key[0]]} {key[1]}: sampling {sampling:.1f} of "
+        f"{total:.1f} ms without prediction, {where})"
     )
 
 

@@ -82,18 +82,18 @@ def planning_table(
     return "\n".join(rows)
 
 
-NO_CLEAR = r"\*"  # after a live verdict: no clear evidence (reader r37d: the mark section 6 gives recorded cells)
+NO_CLEAR = "?"  # after a live verdict: no clear evidence (r39d: not section 6's *, nor the stage bars' †)
 SAID = {  # a planning verdict at the end of a sentence (its band filled in)
     SAVES: "prediction saved time",
     COSTS: "prediction cost time",
     TIES: "a tie: less than {band} from 1, neither saved nor cost",
-    UNSURE: "no clear evidence (\\*): the middle half lies partly inside the band (less than {band} from 1), partly "
+    UNSURE: "no clear evidence (?): the middle half lies partly inside the band (less than {band} from 1), partly "
     "outside",
 }
 
 
 SPEED_MOVED = (  # a planning sentence's verdict where the same exact check's cost moved between the modes (review r25a)
-    "no clear evidence (\\*): the connection stage took {ratio:.2f} times as long an edge point with prediction, so "
+    "no clear evidence (?): the connection stage took {ratio:.2f} times as long an edge point with prediction, so "
     "its time holds more than the exact checks of points (the line under the tables says what)"
 )
 
