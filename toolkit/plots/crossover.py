@@ -83,18 +83,7 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
     fig.suptitle(  # the network's size said on the figure (reader r27f: "preset paper" alone was easy to miss)
         f"Cost per check: {scenario_name(results['scenario'])}, {network}{quick}\n{said}", fontsize=11
     )
-    handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # one legend
-    only = [PANEL_NAMES.get(k, k) for k, sweep in sweeps.items() if _cheaper(sweep).any()]
-    if SHADED in handles and len(only) < len(sweeps):  # reader r39g: the shading is drawn on some panels alone
-        handles[f"{SHADED} ({' and '.join(only)} panel{'s' if len(only) > 1 else ''} only)"] = handles.pop(SHADED)
-    below_title = 1 - TITLE_INCHES / fig.get_figheight()
-    legend = fig.legend(  # right of the panels (reader r39g: above them, it was off screen beside the lower pair)
-        handles.values(), [fill(label, LEGEND_CHARACTERS) for label in handles], loc="center right",
-        bbox_to_anchor=(1, below_title / 2), fontsize=8, frameon=False, labelspacing=0.9, handlelength=1.6,
-        handletextpad=0.5, borderaxespad=0.1,
-    )  # fmt: skip
-    left = legend.get_window_extent(FigureCanvasAgg(fig).get_renderer()).x0  # the legend's left edge, pixels
-    room = (0, 0, left / fig.bbox.width, 1)  # the panels left of it; tight_layout keeps them under the title
+    room = _legend_beside(fig, axes, sweeps)
     fig.tight_layout(rect=room)
     for ax, (key, sweep) in zip(axes, sweeps.items()):
         name_ticks(ax, np.asarray(sweep["values"], dtype=float), TICKS.get(key), TICK_POINTS)
@@ -109,6 +98,24 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
 
 TITLE_INCHES = 0.55  # the two-line title's height: the panels start under it
 LEGEND_CHARACTERS = 21  # a legend entry's line, characters: the legend beside the panels, as narrow as it reads
+
+
+def _legend_beside(fig: Figure, axes, sweeps: dict) -> tuple[float, float, float, float]:
+    """One legend for all panels, right of them (reader r39g: above them, it was off screen beside the lower pair),
+    its entries wrapped to :data:`LEGEND_CHARACTERS`; the shading's entry names the panels it is drawn on where that
+    is not all of them. Returns the rectangle, in figure fractions, left for the panels."""
+    handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}
+    only = [PANEL_NAMES.get(k, k) for k, sweep in sweeps.items() if _cheaper(sweep).any()]
+    if SHADED in handles and len(only) < len(sweeps):
+        handles[f"{SHADED} ({' and '.join(only)} panel{'s' if len(only) > 1 else ''} only)"] = handles.pop(SHADED)
+    below_title = 1 - TITLE_INCHES / fig.get_figheight()
+    legend = fig.legend(
+        handles.values(), [fill(label, LEGEND_CHARACTERS) for label in handles], loc="center right",
+        bbox_to_anchor=(1, below_title / 2), fontsize=8, frameon=False, labelspacing=0.9, handlelength=1.6,
+        handletextpad=0.5, borderaxespad=0.1,
+    )  # fmt: skip
+    left = legend.get_window_extent(FigureCanvasAgg(fig).get_renderer()).x0  # the legend's left edge, pixels
+    return (0, 0, left / fig.bbox.width, 1)  # the panels left of it; tight_layout keeps them under the title
 
 
 PAPER_SCENES = {"obstacles": ((110, 125),), "links": ((2, 2), (4, 4))}  # the paper's 3DC: 110-125 blocks; 2, 4 links
