@@ -14,6 +14,7 @@ Nothing here calls ``show()``.
 
 from __future__ import annotations
 
+from textwrap import fill
 from typing import Any
 
 import numpy as np
@@ -33,9 +34,9 @@ STYLES = {  # checker -> (marker and line, colour, name)
     "learned": ("^-", COLORS["learned"], "learned (the network)"),
 }
 LEGEND = {  # checker -> its legend's words; reader r24c: which checker the mesh panel times is said
-    "exact": "exact, compiled (on triangles: the compiled mesh checker)",
-    "fcl": "exact, python-fcl (on triangles: FCL's mesh tree + a numpy inside test)",
-    "learned": "the network (learned), of the preset's sizes (its speed does not depend on its weights)",  # r25a: not
+    "exact": "exact, compiled (mesh: our compiled mesh checker)",
+    "fcl": "exact, python-fcl (mesh: FCL's mesh tree, numpy inside test)",
+    "learned": "the network, of the preset's sizes (its speed does not depend on its weights)",  # r25a: not
     # "untrained", which read as a fault
 }
 
@@ -51,11 +52,13 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
     sweeps = results["variables"]
     columns = min(len(sweeps), 2)
     rows = -(-len(sweeps) // columns)
-    fig = Figure(figsize=(PAGE_WIDTH, 3.2 * rows + 1.8))  # as wide as the page: its text as large as it is drawn
+    fig = Figure(figsize=(PAGE_WIDTH, 2.9 * rows + 0.7))  # as wide as the page: its text as large as it is drawn
     axes = fig.subplots(rows, columns, squeeze=False).ravel()
     paper = results["scenario"].lower().startswith("3dc")  # the paper's 3DC scenes: where they sit, marked
-    for ax, (key, sweep) in zip(axes, sweeps.items()):
+    for k, (ax, (key, sweep)) in enumerate(zip(axes, sweeps.items())):
         _panel(ax, sweep)
+        if k % columns == 0:  # reader r39g: the unit once a row, the panels wider for it
+            ax.set_ylabel("µs per configuration")
         if paper:
             _paper_scenes(ax, key, sweep)
             _planner_calls(ax, key, sweep)
@@ -80,19 +83,11 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
     fig.suptitle(  # the network's size said on the figure (reader r27f: "preset paper" alone was easy to miss)
         f"Cost per check: {scenario_name(results['scenario'])}, {network}{quick}\n{said}", fontsize=11
     )
-    handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}  # one legend, on top
-    below_title = 1 - TITLE_INCHES / fig.get_figheight()  # reader r36g: below the panels it fell on the next screen
-    legend = fig.legend(  # under the title, the panels under it (reader r29f: far from the panels it was missed)
-        handles.values(), handles.keys(), loc="upper center", bbox_to_anchor=(0.5, below_title), fontsize=9,
-        frameon=False,
-    )  # fmt: skip
-    under = legend.get_window_extent(FigureCanvasAgg(fig).get_renderer()).y0  # the legend's foot, pixels
-    room = (0, 0, 1, under / fig.bbox.height)  # the panels below it
+    room = _legend_beside(fig, axes, sweeps)
     fig.tight_layout(rect=room)
     for ax, (key, sweep) in zip(axes, sweeps.items()):
         name_ticks(ax, np.asarray(sweep["values"], dtype=float), TICKS.get(key), TICK_POINTS)
-    fig.tight_layout(rect=room)  # again, for the slanted labels' height
-    _close_up(fig, under)
+    fig.tight_layout(rect=room)  # again, for the tick labels' height
     text = f"Cost per configuration of the exact and the learned check, {results['scenario']}, preset "
     text += f"{results['preset']}{quick}, microseconds on log axes. {when}"
     text += PAPER_SAID if paper and set(PAPER_SCENES) & set(sweeps) else ""
@@ -101,32 +96,42 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
     return describe(fig, text + " ".join(_in_words(sweep) for sweep in sweeps.values()), parts)
 
 
-TITLE_INCHES = 0.55  # the two-line title's height: the legend starts under it
+TITLE_INCHES = 0.55  # the two-line title's height: the panels start under it
+LEGEND_CHARACTERS = 21  # a legend entry's line, characters: the legend beside the panels, as narrow as it reads
 
 
-def _close_up(fig: Figure, under: float) -> None:
-    """Lay the panels out again with their tops (titles included) a little under ``under`` pixels, the legend's foot:
-    ``tight_layout`` leaves more room above the top row than its padding says (reader r36g: the gap split the legend
-    from the panels)."""
-    renderer = FigureCanvasAgg(fig).get_renderer()
-    top = max(ax.get_tightbbox(renderer).y1 for ax in fig.axes if ax.get_visible())  # type: ignore[union-attr]
-    room = (under - 0.1 * fig.dpi - top) / fig.bbox.height  # a tenth of an inch under the legend
-    if room > 0:
-        fig.tight_layout(rect=(0, 0, 1, under / fig.bbox.height + room))
+def _legend_beside(fig: Figure, axes, sweeps: dict) -> tuple[float, float, float, float]:
+    """One legend for all panels, right of them (reader r39g: above them, it was off screen beside the lower pair),
+    its entries wrapped to :data:`LEGEND_CHARACTERS`; the shading's entry names the panels it is drawn on where that
+    is not all of them. Returns the rectangle, in figure fractions, left for the panels."""
+    handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}
+    only = [PANEL_NAMES.get(k, k) for k, sweep in sweeps.items() if _cheaper(sweep).any()]
+    if SHADED in handles and len(only) < len(sweeps):
+        handles[f"{SHADED} ({' and '.join(only)} panel{'s' if len(only) > 1 else ''} only)"] = handles.pop(SHADED)
+    below_title = 1 - TITLE_INCHES / fig.get_figheight()
+    legend = fig.legend(
+        handles.values(), [fill(label, LEGEND_CHARACTERS) for label in handles], loc="center right",
+        bbox_to_anchor=(1, below_title / 2), fontsize=8, frameon=False, labelspacing=0.9, handlelength=1.6,
+        handletextpad=0.5, borderaxespad=0.1,
+    )  # fmt: skip
+    left = legend.get_window_extent(FigureCanvasAgg(fig).get_renderer()).x0  # the legend's left edge, pixels
+    return (0, 0, left / fig.bbox.width, 1)  # the panels left of it; tight_layout keeps them under the title
 
 
 PAPER_SCENES = {"obstacles": ((110, 125),), "links": ((2, 2), (4, 4))}  # the paper's 3DC: 110-125 blocks; 2, 4 links
-PAPER_LEGEND = "plain grey strip: the paper's 3DC scenes (110–125 blocks; chains of 2 and 4 links)"
+PAPER_LEGEND = "plain grey strip: the paper's 3DC scenes (110–125 blocks; 2 and 4 links)"
 PAPER_SAID = (
     "Plain grey strips mark the paper's 3DC scenes: 110 to 125 blocks, chains of 2 and 4 links; they hold no mesh. "
 )
 NO_MESH = " (paper scenes: no mesh)"
-TICKS: dict[str, tuple[float, ...]] = {}  # a panel's values to name, if not all; reader r32g: every obstacle count
-# named (r29f's 350 and 500 part slanted; r30f's unlabelled ticks are gone with the choice)
+TICKS: dict[str, tuple[float, ...]] = {  # a panel's values to name, if not all (reader r30f: the others get no tick);
+    "obstacles": (10, 100, 500),  # reader r39g: one row of labels, where all seven took two rows
+    "triangles": (20, 320, 5120),
+}
 PLANNER_CALLS = (50, 400)  # the calls a network answers on a 3DC scene: a round's samples (the lazy PRM's 50 doubling
 # to |S| = plan_samples = 400, Algorithm 1's 400); reader r34g: not RRT-Connect's 8-56, which no network drives
 CALLS_NAME = "a round's samples"  # one name on the panel and in the legend (reader r34g, figure c)
-CALLS_LEGEND = f"dotted strip (call size): {CALLS_NAME}, the calls a network answers (50–400)"
+CALLS_LEGEND = f"dotted strip: {CALLS_NAME}, the calls a network answers (50–400)"
 CALLS_SAID = (
     f"On the call-size panel a dotted strip marks {CALLS_NAME}, the calls a network answers: 50 to 400 configurations. "
 )
@@ -169,6 +174,7 @@ def _planner_calls(ax, key: str, sweep: dict) -> None:
     )
 
 
+PANEL_NAMES = {"obstacles": "obstacles", "triangles": "mesh", "links": "links", "batch": "call-size"}  # in the legend
 TITLES = {  # a swept variable's key -> its panel's title (reader r25c: only the x-labels told the panels apart)
     "obstacles": "Obstacles",
     "triangles": "Mesh triangles",
@@ -257,8 +263,7 @@ def _panel(ax, sweep: dict) -> None:
     ax.set_xticks(x, [f"{v:,.0f}" for v in x])  # named once laid out, where they keep apart (name_ticks)
     ax.yaxis.set_minor_locator(NullLocator())
     _plain_log_ticks(ax)
-    ax.set_xlabel(sweep["label"])
-    ax.set_ylabel("µs per configuration")
+    ax.set_xlabel(fill(sweep["label"], 26))  # reader r39g: a half-width panel's label in two lines, not past its edge
     ax.tick_params(labelsize=TICK_POINTS)
 
 
