@@ -464,9 +464,8 @@ def test_what_it_means_quotes_the_run_with_python_fcl_on_both_sides():
     )
     assert "[The Results page](results.md) gives the verdicts cell by cell" in flat  # reader r39g: in a fold
     results = " ".join((ROOT / "docs" / "results.md").read_text().split())
-    edge = (
-        results.partition("Inside the noise band of this ratio")[2].partition("is no clear evidence:")[2].partition(". ")[0]
-    )  # review r28f, item 3: 2DS OB 0.87 at the edge
+    band = results.partition("Inside the noise band of this ratio")[2]
+    edge = band.partition("is no clear evidence:")[2].partition(". ")[0]  # review r28f, item 3: 2DS OB 0.87 at the edge
     edged = [r for r in fell if f"{r:.2f} (hollow)" in edge]
     assert [f"{r:.2f}" for r in edged] == ["0.87"] and "2DS OB 0.87 (hollow)" in edge
     rates = recorded.table(FCL_ALIKE, "Checker throughput")
