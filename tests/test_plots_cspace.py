@@ -23,7 +23,7 @@ from toolkit.geometry.collision import (
     exact_checker,
 )
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots import boxes, contact, cspace, near_blocks, palette, robot_drawing, slices
+from toolkit.plots import boxes, contact, cspace, near_blocks, palette, robot_drawing, slices, verdict
 from toolkit.plots.alt import alt_text, parts_of
 from toolkit.plots.palette import CATEGORICAL
 
@@ -432,7 +432,7 @@ def test_verdict_figure_titles_each_panel_with_the_checkers_verdict_and_marks_wh
     moved = np.flatnonzero(hit != q)
     assert len(moved) == 1 and moved[0] in (0, 1)  # one of x, y, by whole steps
     assert abs(hit[moved[0]] - q[moved[0]]) / 0.05 == pytest.approx(round(abs(hit[moved[0]] - q[moved[0]]) / 0.05))
-    fig = robot_drawing.verdict_figure(checker, np.stack([q, hit]))
+    fig = verdict.verdict_figure(checker, np.stack([q, hit]))
     left, right = fig.axes
     assert left.get_title() == "valid" and right.get_title().startswith("in collision:\nlink ")  # FCL proves no gap
     assert left.get_xlim() == right.get_xlim() and left.get_ylim() == right.get_ylim()  # review r27a: one window
@@ -449,7 +449,7 @@ def test_a_valid_panel_says_the_gap_its_checker_proves(square_world):
     exact = exact_checker(square_world, robots.point_robot())
     Q = np.array([[9.5, 11.0], [9.9, 11.0]])  # 0.25 left of the block at [10, 12]^2, then overlapping it
     gap = exact.clearances(Q[:1], cap=1.0)[0]
-    left, right = robot_drawing.verdict_figure(exact, Q).axes
+    left, right = verdict.verdict_figure(exact, Q).axes
     assert gap > 0 and left.get_title() == f"valid: at least {gap:.2g} clear\nof every block and wall"
     assert right.get_title() == "in collision:\nsquare overlaps block 0 by 0.15"  # the point robot's link, by name
 
@@ -459,7 +459,7 @@ def test_a_panel_tells_touching_from_overlapping_and_fills_the_overlap(square_wo
     the outlines. The title says how deep; the part of a 2D link inside the block is filled."""
     exact = exact_checker(square_world, robots.point_robot())
     Q = np.array([[9.75, 11.0], [9.95, 11.0]])  # touching the block at [10, 12]^2, then 0.2 into it
-    touching, overlapping = robot_drawing.verdict_figure(exact, Q).axes
+    touching, overlapping = verdict.verdict_figure(exact, Q).axes
     assert touching.get_title() == "in collision:\nsquare touches block 0" and not _patches(touching, "overlap")
     assert overlapping.get_title() == "in collision:\nsquare overlaps block 0 by 0.2"
     (fill,) = _patches(overlapping, "overlap")
@@ -499,12 +499,12 @@ def test_the_youbots_arm_is_labelled_in_its_flat_views():
     checker = exact_checker(world, youbot)
     q = np.array([10.0, 10.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0])
     panels = [
-        robot_drawing.verdict_figure(checker, q[None]).axes[0],
+        verdict.verdict_figure(checker, q[None]).axes[0],
         cspace.cspace_slice(checker, q, resolution=4).axes[1],
     ]
     assert [[t.get_text() for t in ax.texts] for ax in panels] == [["arm"], ["arm"]]
     assert (
-        not robot_drawing.verdict_figure(exact_checker(world, robots.box_chain(1)), [5.0] * 3 + [0.0] * 4).axes[0].texts
+        not verdict.verdict_figure(exact_checker(world, robots.box_chain(1)), [5.0] * 3 + [0.0] * 4).axes[0].texts
     )
 
 
@@ -569,7 +569,7 @@ def test_the_figure_of_one_check_names_each_office_block_inside_it():
     boxes = np.array([[[20, 20, 0], [22, 22, 1]], [[9, 11, 0], [30, 12, 3]]], dtype=float)
     world = Workspace(np.zeros(3), np.array([41.0, 41.0, 6.0]), boxes, labels=("desk", "shelf"))
     q = np.array([10.0, 10.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0])
-    ax = robot_drawing.verdict_figure(exact_checker(world, youbot), q[None]).axes[0]
+    ax = verdict.verdict_figure(exact_checker(world, youbot), q[None]).axes[0]
     (name,) = [t for t in ax.texts if t.get_gid() == "name"]  # the desk lies far outside the window
     assert name.get_text() == "1 shelf"
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()

@@ -1,5 +1,5 @@
 """Where a drawn robot meets a block: which link boxes touch which blocks, how deep they overlap, and the part of a
-flat shape inside a block (the figure of one check, :func:`toolkit.plots.robot_drawing.verdict_figure`).
+flat shape inside a block (the figure of one check, :func:`toolkit.plots.verdict.verdict_figure`).
 
 Separating axes, as ``SeparatingAxisChecker``: two boxes are apart exactly when some axis separates their shadows,
 among the world's axes, the link's and, in 3D, their cross products; the least overlap of the shadows along those

@@ -45,9 +45,9 @@ from toolkit.plots.robot_drawing import (
     draw_robot,
     few_ticks,
     link_colors,
-    mark_arm,
 )
 from toolkit.plots.slices import joint_bounds, slice_configs
+from toolkit.plots.verdict import mark_arm
 
 COLLISION_CMAP = ListedColormap([COLORS["free"], COLORS["occupied"]])  # 0: valid, 1: in collision (dark)
 OCCUPANCY_CMAP = ListedColormap([COLORS["free"], COLORS["occupied"]])  # -1: free, +1: occupied (dark)
