@@ -503,9 +503,7 @@ def test_the_youbots_arm_is_labelled_in_its_flat_views():
         cspace.cspace_slice(checker, q, resolution=4).axes[1],
     ]
     assert [[t.get_text() for t in ax.texts] for ax in panels] == [["arm"], ["arm"]]
-    assert (
-        not verdict.verdict_figure(exact_checker(world, robots.box_chain(1)), [5.0] * 3 + [0.0] * 4).axes[0].texts
-    )
+    assert not verdict.verdict_figure(exact_checker(world, robots.box_chain(1)), [5.0] * 3 + [0.0] * 4).axes[0].texts
 
 
 def test_a_slice_outlines_the_blocks_a_flat_view_draws_across_links_they_cannot_reach():
