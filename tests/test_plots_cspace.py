@@ -176,6 +176,19 @@ def test_occupancy_figure_3d_draws_one_layer_per_z(clutter):
     assert [ax.get_title() for ax in chosen.axes] == ["layer z = 2.5", "layer z = 7.5"]
 
 
+def test_occupancy_figure_rings_each_block_of_a_kind_on_the_layers_it_reaches():
+    """Reader r39a: the office's chairs, one cell each of layer z = 0.5, could not be told from other furniture."""
+    office = scenarios.get("3do").make_workspace(np.random.default_rng(0))
+    chairs = office.boxes[np.array(office.labels) == "chair"]  # (C, 2, 3)
+    fig = cspace.occupancy_figure(office, layers=range(4), columns=2, ring="chair")
+    rings = [[line for line in ax.get_lines() if line.get_gid() == "ring"] for ax in fig.axes]
+    assert [len(r[0].get_xydata()) for r in rings] == [int(np.sum(chairs[:, 1, 2] >= z + 0.5)) for z in range(4)]
+    np.testing.assert_allclose(rings[0][0].get_xydata(), chairs[:, :, :2].mean(axis=1))
+    assert rings[0][0].get_color() == palette.COLORS["invalid"] and len(chairs) > 0
+    assert fig.get_suptitle().endswith("; each chair ringed")
+    assert f"each chair ringed, per image: {len(chairs)}, 0, 0, 0" in alt_text(fig)
+
+
 # -- robots ----------------------------------------------------------------------------
 
 
@@ -254,6 +267,22 @@ def test_a_figure_of_the_robots_parts_marks_its_base_and_shades_each_link():
         "base",
     ]
     assert "Its base is marked with a black dot" in alt_text(fig)
+
+
+def test_a_robot_figures_flat_views_fill_their_width():
+    """Reader r39a: chain9's two views were 140 px wide under a wide legend, the youBot's side view sat above an empty
+    band. Flat views: the figure as tall as its panels, drawn to scale, need to fill the page's width."""
+    robot = robots.box_chain(3)
+    q = np.array([5.0, 5.0, 5.0, 0.3, 0.2, 0.0, 1.0, -1.0, 0.8])
+    fig = robot_drawing.robot_figure(robot, q, views=("xz", "xy"), margin=0.1, parts=True)
+    fig.draw_without_rendering()
+    widths = [ax.get_window_extent().width / fig.dpi for ax in fig.axes]  # inches
+    assert min(widths) >= 0.28 * fig.get_figwidth(), widths  # were 1.77 and 1.14 of 6.1 inches
+    youbot = scenarios.get("3do").robot
+    side = robot_drawing.robot_figure(youbot, [5.0, 5.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0], views=("xz",), labels=["up"])
+    side.draw_without_rendering()
+    (ax,) = side.axes
+    assert ax.get_window_extent().height >= 0.55 * side.bbox.height  # no empty band under the panel
 
 
 def test_robot_figure_projects_a_chain_by_forward_kinematics():

@@ -35,7 +35,7 @@ from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe, map_part
 from toolkit.plots.boxes import aabb_corners, add_box_3d
-from toolkit.plots.contact import key_blocks, passed_over
+from toolkit.plots.contact import key_blocks, passed_over, ring_blocks
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
 from toolkit.plots.robot_drawing import (
     BASE_MARK,
@@ -172,11 +172,13 @@ def _occupied_share(workspace: Workspace) -> float:
     return float(np.mean(workspace.occupancy() > 0))
 
 
-def occupancy_figure(workspace: Workspace, layers: Sequence[int] | None = None, columns: int = 4) -> Figure:
+def occupancy_figure(
+    workspace: Workspace, layers: Sequence[int] | None = None, columns: int = 4, *, ring: str | None = None
+) -> Figure:
     """The occupancy grid (paper §IV-A: +1 occupied, dark; −1 free, white), one image per z layer in 3D.
 
     Image ``[row, col]`` is cell ``(x=col, y=row)``, so the picture lies as :func:`workspace_figure`'s.
-    ``layers``: which z layers of a 3D grid to draw (default: all).
+    ``layers``: which z layers of a 3D grid to draw (default: all); ``ring``: a kind of block ringed where it is.
     """
     grid = workspace.occupancy()  # (nx, ny) or (nx, ny, nz)
     extent = (workspace.lower[0], workspace.upper[0], workspace.lower[1], workspace.upper[1])
@@ -193,8 +195,10 @@ def occupancy_figure(workspace: Workspace, layers: Sequence[int] | None = None, 
     axes = fig.subplots(
         rows, columns, squeeze=False, sharex=True, sharey=True, gridspec_kw={"hspace": 0.35, "wspace": 0.15}
     )
+    ringed = []
     for ax, image, title in zip(axes.ravel(), images, titles):
         ax.imshow(image.T, origin="lower", extent=extent, cmap=OCCUPANCY_CMAP, vmin=-1, vmax=1, interpolation="nearest")
+        ringed.append(ring_blocks(ax, workspace, ring, float(title.split()[-1]) if grid.ndim == 3 else None))
         ax.set_title(title if len(images) > 1 else "", fontsize=9)  # one image: the figure's title names it (r29a)
         ax.locator_params(nbins=6 if len(images) == 1 else 4)  # a tick every few cells (0..31: every 5), no more:
         # drawing text is most of a many-layered figure's cost
@@ -207,20 +211,19 @@ def occupancy_figure(workspace: Workspace, layers: Sequence[int] | None = None, 
         axes[drawn[-1], column].tick_params(labelbottom=True)
         for r in drawn[:-1]:
             axes[r, column].tick_params(labelbottom=False)
-    for c in range(columns):
-        for r in range(rows):
-            axes[r, c].tick_params(labelleft=c == 0)
+    for (_, c), ax in np.ndenumerate(axes):
+        ax.tick_params(labelleft=c == 0)
     for ax in axes.ravel()[len(images) :]:
         ax.remove()
-    fig.suptitle(
-        f"Occupancy grid {' x '.join(map(str, grid.shape))}\ndark = +1 (occupied), white = -1 (free)", fontsize=10
-    )
+    said = f"Occupancy grid {' x '.join(map(str, grid.shape))}\ndark = +1 (occupied), white = -1 (free)"
+    fig.suptitle(said + f"; each {ring} ringed" * bool(ring), fontsize=10)
     fig.subplots_adjust(top=1 - 0.8 / fig.get_figheight())  # room for the two title lines
     shares = [f"{np.mean(image > 0):.0%}" for image in images]
     text = f"Occupancy grid of the {workspace.family or 'workspace'} workspace, {' x '.join(map(str, grid.shape))} "
     text += f"cells, occupied dark, free white: {np.mean(grid > 0):.0%} of the cells occupied"
     if grid.ndim == 3:
         text += f"; one image per z layer, {len(images)} drawn, occupied per layer from bottom: {', '.join(shares)}"
+    text += f"; each {ring} ringed, per image: {', '.join(map(str, ringed))}" if ring else ""
     x, y = ("x", extent[0], extent[1]), ("y", extent[2], extent[3])
     parts = [  # each image by region: what share of its cells is occupied
         map_part(title, f"{share} occupied; by region, top row first", image.shape, x, y, partial(_occupied, image))

@@ -187,7 +187,8 @@ def robot_figure(
         fig.legend(
             list(handles.values()), list(handles), loc="lower center", ncol=len(handles), fontsize=9, frameon=False
         )
-    fig.tight_layout(rect=(0, 0.08 if handles else 0, 1, 1))
+    _fit_height(fig, [axes[v] for v in views], bool(handles))
+    fig.tight_layout(rect=(0, 0.4 / fig.get_figheight() if handles else 0, 1, 1))
     text = _robot_figure_text(robot, len(Q), views, workspace is not None, valid, labels, hatches, named)
     text += _shades_text(shade_names, parts)
     return describe(fig, text, [configurations_part(robot, Q, labels)])
@@ -215,6 +216,19 @@ def _panels(views: tuple[str, ...], legend: bool) -> tuple[Figure, dict]:
     fig = Figure(figsize=(width, width / columns * (1.6 if len(views) == 3 else rows) + 0.4 * legend))
     in_3d: dict[str | tuple[str, ...], dict[str, Any]] = {"3d": {"projection": "3d"}} if "3d" in views else {}
     return fig, fig.subplot_mosaic(mosaic, per_subplot_kw=in_3d)
+
+
+def _fit_height(fig: Figure, axes: list, legend: bool) -> None:
+    """Flat views only: the figure's height set so that each row's panels, drawn to scale, fill their width (review
+    r39a: chain9's two views 140 px wide under a wide legend; the youBot's side view above an empty band). One panel
+    alone is never taller than it is wide."""
+    if any(ax.name == "3d" for ax in axes):
+        return
+    columns, rows = min(2, len(axes)), -(-len(axes) // 2)
+    ratio = max(np.ptp(ax.get_ylim()) / np.ptp(ax.get_xlim()) for ax in axes)  # the tallest window, height / width
+    drawn = fig.get_figwidth() / columns - 0.7  # inches: a panel's axes, less its y label and ticks
+    ratio = min(max(ratio, 0.3), 1.6 if columns > 1 else 1.0)
+    fig.set_size_inches(fig.get_figwidth(), rows * (drawn * ratio + 0.8) + 0.4 * legend)
 
 
 SHARED_SHADE = (COLORS["shade"], None)  # links the same in every configuration drawn (the youBot's platform, turret)
