@@ -471,6 +471,12 @@ def test_verdict_figure_titles_each_panel_with_the_checkers_verdict_and_marks_wh
     link, block, depth = contact.contacts(robot, clutter, hit)[0]  # numbered as the arrays are (review r30a)
     assert f"link {link} overlaps block {block} by {depth:.2g}" in right.get_title() and depth > 0
     assert "configuration 2, in collision" in alt_text(fig)
+    (key,) = fig.legends  # reader r39a: a key under the panels, right under them, names what they draw
+    assert [t.get_text() for t in key.get_texts()] == ["block", "valid", "in collision", "block touched"]
+    assert "A key under the panels names block, valid, in collision, block touched." in alt_text(fig)
+    fig.draw_without_rendering()
+    panels = min(ax.get_tightbbox().y0 for ax in fig.axes)
+    assert 0 <= panels - key.get_window_extent().y1 <= 10  # pixels: no band between the panels and their key
 
 
 def test_a_valid_panel_says_the_gap_its_checker_proves(square_world):

@@ -29,6 +29,7 @@ import numpy as np
 from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch, Rectangle
+from matplotlib.patheffects import Normal, Stroke
 
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.geometry.robots import BoxRobot
@@ -330,9 +331,10 @@ def cspace_slice(
             pad = (limits[1] - limits[0]) / resolution  # invalid, and a bar at the edge stands off the axis's spine
             set_limits(limits[0] - pad, limits[1] + pad)
     ax.set_facecolor(COLORS["occupied"])
-    star: dict[str, Any] = dict(
-        marker="*", markersize=14, markeredgecolor=COLORS["free"], color=link_colors(1, q_valid)[0]
+    star: dict[str, Any] = dict(  # an ink edge in a white halo: seen on the free white and the dark alike (r39a)
+        marker="*", markersize=15, markeredgecolor=COLORS["ink"], color=link_colors(1, q_valid)[0], markeredgewidth=1
     )
+    star["path_effects"] = [Stroke(linewidth=4, foreground=COLORS["free"]), Normal()]
     ax.plot(q[joints[0]], q[joints[1]], linestyle="none", gid="q", **star)
     ax.set_title(  # the fixed values are the description's table: four-line titles were the page's hardest (r31a)
         f"{robot.name}: {1 - valid.mean():.0%} in collision (dark)\nthe other DoF fixed at the star's", fontsize=9

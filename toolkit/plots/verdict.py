@@ -10,7 +10,7 @@ from typing import Any
 
 import numpy as np
 from matplotlib.figure import Figure
-from matplotlib.patches import Polygon, Rectangle
+from matplotlib.patches import Patch, Polygon, Rectangle
 
 from toolkit.geometry.checker import CollisionChecker
 from toolkit.geometry.robots import BoxRobot
@@ -19,7 +19,16 @@ from toolkit.plots.alt import describe
 from toolkit.plots.boxes import box_corners, outline
 from toolkit.plots.contact import clip_to_box, contacts, name_blocks, nearby_blocks
 from toolkit.plots.palette import COLORS, PAGE_WIDTH
-from toolkit.plots.robot_drawing import BLOCK_STYLE, VIEWS, configurations_part, draw_robot, link_colors
+from toolkit.plots.robot_drawing import (
+    BLOCK_STYLE,
+    INVALID_COLOR,
+    VALID_COLOR,
+    VIEWS,
+    configurations_part,
+    draw_robot,
+    link_colors,
+    link_style,
+)
 
 PARTS = {"youbot": ("platform", "turret", "upper arm", "forearm", "wrist", "gripper"), "point2d": ("square",)}
 
@@ -37,7 +46,7 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
         raise TypeError(f"this figure draws the checker's workspace, and a {type(checker).__name__} knows none")
     Q = robot.check_configs(Q)  # (k, dof)
     valid = checker.are_valid(Q)  # (k,)
-    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / len(Q) + 0.3))
+    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / len(Q) + 0.6))
     axes = fig.subplots(1, len(Q), squeeze=False)[0]
     plane = VIEWS[view] if robot.dim == 3 else (0, 1)
     at = list(plane)
@@ -59,9 +68,11 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
         said.append(verdict.replace("\n", " "))
         ax.set_title(verdict, fontsize=10 if len(Q) < 3 else 9, wrap=True)
         ax.tick_params(labelsize=8)
-    fig.tight_layout()
-    marked = " Each link that touches a block is outlined thick, and the block it touches dashed." * (not all(valid))
     filled = any(p.get_gid() == "overlap" for ax in axes for p in ax.patches)
+    fig.tight_layout(rect=(0, 0.35 / fig.get_figheight(), 1, 1))
+    named = _key(fig, axes, valid, filled)
+    marked = " Each link that touches a block is outlined thick, and the block it touches dashed." * (not all(valid))
+    marked += f" A key under the panels names {', '.join(named)}."
     marked += " The part of the robot inside a block is filled light." * filled
     text = f"The {robot.name} robot at {len(Q)} configurations side by side, seen in the {view} plane with the blocks "
     text += "near it, each panel framing the same window, each titled with the exact checker's verdict: " + "; ".join(
@@ -70,6 +81,22 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
     return describe(
         fig, text + "." + marked, [configurations_part(robot, Q, [f"configuration {i + 1}" for i in range(len(Q))])]
     )
+
+
+def _key(fig: Figure, axes, valid: np.ndarray, filled: bool) -> list[str]:
+    """A key right under :func:`verdict_figure`'s panels (drawn to scale, they need not fill their rows) naming what
+    they draw (review r39a: the nudge's panels had none, the first check's lived in the paragraph); its names."""
+    handles: dict[str, Any] = {"block": Patch(alpha=0.5, **BLOCK_STYLE)}
+    handles |= {"valid": Patch(**link_style(VALID_COLOR))} if valid.any() else {}
+    if not valid.all():
+        handles["in collision"] = Patch(**link_style(INVALID_COLOR))
+        handles["block touched"] = Patch(fill=False, edgecolor=COLORS["ink"], linewidth=2, linestyle="--")
+    handles |= {"inside the block": Patch(facecolor=COLORS["overlap"], edgecolor=COLORS["ink"])} if filled else {}
+    fig.draw_without_rendering()  # the panels' places, drawn to scale
+    under = min(ax.get_tightbbox().y0 for ax in axes) / fig.bbox.height
+    key: dict[str, Any] = dict(bbox_to_anchor=(0.5, under), ncol=len(handles), fontsize=8, frameon=False)
+    fig.legend(list(handles.values()), list(handles), loc="upper center", **key)
+    return list(handles)
 
 
 def _valid_title(checker: CollisionChecker, q: np.ndarray) -> str:
