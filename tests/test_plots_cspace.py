@@ -187,6 +187,8 @@ def test_occupancy_figure_rings_each_block_of_a_kind_on_the_layers_it_reaches():
     assert rings[0][0].get_color() == palette.COLORS["invalid"] and len(chairs) > 0
     assert fig.get_suptitle().endswith("; each chair ringed")
     assert f"each chair ringed, per image: {len(chairs)}, 0, 0, 0" in alt_text(fig)
+    fig.draw_without_rendering()  # two layers a row fill the page's width (were 197 px of 610: 4.8 px a cell)
+    assert fig.get_figwidth() == palette.PAGE_WIDTH and all(ax.get_window_extent().width > 240 for ax in fig.axes)
 
 
 # -- robots ----------------------------------------------------------------------------

@@ -191,10 +191,10 @@ def occupancy_figure(
         titles = [f"layer z = {workspace.lower[2] + z + 0.5:g}" for z in drawn]
     columns = min(columns, len(images))
     rows = -(-len(images) // columns)
-    panel = 4.2 if len(images) == 1 else min(3.0, (PAGE_WIDTH - 0.4) / columns)  # inches: two a row fill the page
-    fig = Figure(figsize=(panel * columns, panel * rows + 0.4))
+    wide = len(images) > 1  # layers fill the page's width, little room between them (r39a: 4 px a cell were too few)
+    fig = Figure(figsize=(PAGE_WIDTH, rows * PAGE_WIDTH / columns * 1.05 + 0.9) if wide else (4.2, 4.6))
     axes = fig.subplots(
-        rows, columns, squeeze=False, sharex=True, sharey=True, gridspec_kw={"hspace": 0.35, "wspace": 0.15}
+        rows, columns, squeeze=False, sharex=True, sharey=True, gridspec_kw={"hspace": 0.25, "wspace": 0.08}
     )
     ringed = []
     for ax, image, title in zip(axes.ravel(), images, titles):
@@ -218,7 +218,8 @@ def occupancy_figure(
         ax.remove()
     said = f"Occupancy grid {' x '.join(map(str, grid.shape))}\ndark = +1 (occupied), white = -1 (free)"
     fig.suptitle(said + f"; each {ring} ringed" * bool(ring), fontsize=10)
-    fig.subplots_adjust(top=1 - 0.8 / fig.get_figheight())  # room for the two title lines
+    fig.subplots_adjust(top=1 - 0.8 / fig.get_figheight())  # room for the two title lines; in the layers, the width
+    fig.subplots_adjust(**(dict(left=0.08, right=0.98, bottom=0.5 / fig.get_figheight()) if wide else {}))
     shares = [f"{np.mean(image > 0):.0%}" for image in images]
     text = f"Occupancy grid of the {workspace.family or 'workspace'} workspace, {' x '.join(map(str, grid.shape))} "
     text += f"cells, occupied dark, free white: {np.mean(grid > 0):.0%} of the cells occupied"
