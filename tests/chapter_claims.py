@@ -55,54 +55,27 @@ def _percent(text: str, label: str) -> list[int]:
     return [int(v) for v in re.findall(re.escape(label) + r" \| (\d+)% \|", text)]
 
 
-RATES = [  # section 3's table of checker speeds, its last column FCL's time per check over the compiled checker's
-    "scenario",
-    "FCL checks / s",
-    "compiled checks / s",
-    "point robot checks / s",
-    "FCL's time / compiled's",
-]
-SPEEDS = re.compile(  # the line under it, its numbers and the fastest 2D check captured
-    r"Same answers, but in 3D FCL took \*\*(\d+)–(\d+)x\*\* the compiled checker's time per check in this run, "
-    r"and in 2D \*\*(\d+)x\*\* the (point robot|compiled) check's, the fastest there\."
+SPEEDS = re.compile(  # section 3's line timing FCL against the compiled checker, its range captured
+    r"Same answers, but FCL took (\d+)–(\d+)x the compiled checker's time per check in this run\."
 )
-MANY = 3  # "many times": the least 3D ratio the prose's "FCL many times the compiled checker's time" allows
+MANY = 3  # "many times": the least ratio the prose's "FCL many times the compiled checker's time" allows
 
 
 def chapter_01(nb) -> list[str]:
-    """Section 3's table of checker speeds (the rates, then FCL's time as a multiple of the compiled checker's,
-    narrow enough for the page) and the line under it (review r26a: not "roughly ten to a hundred times"; r36a: not
-    "about 59x" beside a row of 53x, but "53-59x"): each ratio the one its row's rates give, the line's range the 3D
-    ratios' range, its 2D ratio FCL's time over the fastest check's, that
-    check named as the rates say. The prose says FCL took "many times" the compiled checker's time: at least
-    :data:`MANY` times in every 3D row (full-size runs printed 46-54, quick runs beside other work 9 and more)."""
+    """Section 3's line timing FCL against the compiled checker on the four robots (reader r39a: its table of every
+    checker's rates, chapter 04's and docs/benchmarks.md's material, left the chapter for one line): printed, its
+    range low to high, and at least :data:`MANY` times, as the summary's "many times faster" says (full-size runs
+    printed 46-90, quick runs beside other work 9 and more). Then the closing table and the arm-against-base one."""
     found = tables(nb)
-    rates = {row[0]: row for header, rows in found if header == RATES for row in rows}
-    if set(rates) != {"2ds", "3do", "3dc7", "3dc9"}:
-        return [f"01: section 3's table of checker speeds lacks a scenario: {sorted(rates)}"]
     problems = _page_width(nb, found, "01")
-    numbers: dict[str, tuple[float, float, float | None]] = {}  # scenario: FCL, compiled, point robot checks a second
-    for name, (_, fcl_text, compiled_text, point_text, ratio) in rates.items():
-        fcl, compiled = (float(c.replace(",", "")) for c in (fcl_text, compiled_text))
-        point = None if point_text == "—" else float(point_text.replace(",", ""))
-        numbers[name] = (fcl, compiled, point)
-        if abs(compiled / fcl - float(ratio.rstrip("x").replace(",", ""))) > 0.51:  # printed as rounded
-            problems.append(f"01: {name}: the ratio {ratio} is not its rates' {fcl_text}, {compiled_text}")
-    in_3d = [numbers[n][1] / numbers[n][0] for n in ("3do", "3dc7", "3dc9")]
     said = SPEEDS.search(" ".join(texts(nb)))
     if said is None:
-        return problems + ["01: the line under section 3's table does not give FCL's time against the others'"]
-    low, high, in_2d, fastest = said.groups()
-    fcl, compiled, point = numbers["2ds"]
-    best, which = max((compiled, "compiled"), (point or 0.0, "point robot"))
-    if (int(low), int(high)) != (round(min(in_3d)), round(max(in_3d))):
-        problems.append(f"01: the line says {low}–{high}x, the 3D rates give {sorted(in_3d)}")
-    if abs(int(in_2d) - best / fcl) > 0.51 or fastest != which:
-        problems.append(
-            f"01: the line says {in_2d}x the {fastest} check's in 2D, the rates {best / fcl:.1f}x the {which}"
-        )
-    if min(in_3d) < MANY:
-        problems.append(f"01: FCL took {min(in_3d):.1f}x the compiled checker's time: not many times")
+        return problems + ["01: section 3 does not print FCL's time against the compiled checker's"]
+    low, high = (int(v) for v in said.groups())
+    if low > high:
+        problems.append(f"01: the line's range {low}–{high}x runs backwards")
+    if low < MANY:
+        problems.append(f"01: FCL took {low}x the compiled checker's time: not many times")
     return problems + _closing_free(found) + _arm_against_base(found)
 
 
@@ -129,7 +102,7 @@ def _arm_against_base(found) -> list[str]:
 
 def _closing_free(found) -> list[str]:
     """The closing table's last column is the free share, most of each scenario's uniform configurations, as the
-    prose says ("Uniform samples are mostly valid"); checker speeds stay in section 3's table (review r30a: a second
+    prose says ("Uniform samples are mostly valid"); checker speeds stay in section 3's line (review r30a: a second
     set, timed alone, disagreed with it)."""
     free = {
         row[0]: row[-1]

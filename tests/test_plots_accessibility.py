@@ -53,6 +53,7 @@ from toolkit.plots import (
     slices,
     timings,
     tutorials,
+    verdict,
 )
 
 crossover = importlib.import_module("toolkit.plots.crossover")  # the package exports its function by that name
@@ -73,6 +74,7 @@ MODULES = (
     scenes,
     timings,
     tutorials,
+    verdict,
 )
 PALETTE = {to_hex(c) for c in [*palette.COLORS.values(), *palette.OKABE_ITO.values(), *palette.CATEGORICAL]}
 PALETTE |= {to_hex(c) for c in palette.LINE_COLORS}
@@ -231,7 +233,7 @@ def gallery() -> dict[str, Figure]:
         "robot_drawing.robot_figure": robot_drawing.robot_figure(
             chain.robot, Q, clutter, labels=["joint2 low", "joint2 middle", "joint2 high"]
         ),
-        "robot_drawing.verdict_figure": robot_drawing.verdict_figure(chain_exact, np.stack([near, touching])),
+        "verdict.verdict_figure": verdict.verdict_figure(chain_exact, np.stack([near, touching])),
         "cspace.cspace_image": cspace.cspace_image(exact, resolution=100),
         "cspace.cspace_slice": cspace.cspace_slice(chain_exact, Q[0], (3, 4), resolution=20),
         "planning.samplers": planning.samplers(exact, samples, attempts=60),

@@ -23,7 +23,7 @@ from toolkit.geometry.collision import (
     exact_checker,
 )
 from toolkit.geometry.workspace import Workspace
-from toolkit.plots import boxes, contact, cspace, near_blocks, palette, robot_drawing, slices
+from toolkit.plots import boxes, contact, cspace, near_blocks, palette, robot_drawing, slices, verdict
 from toolkit.plots.alt import alt_text, parts_of
 from toolkit.plots.palette import CATEGORICAL
 
@@ -176,6 +176,21 @@ def test_occupancy_figure_3d_draws_one_layer_per_z(clutter):
     assert [ax.get_title() for ax in chosen.axes] == ["layer z = 2.5", "layer z = 7.5"]
 
 
+def test_occupancy_figure_rings_each_block_of_a_kind_on_the_layers_it_reaches():
+    """Reader r39a: the office's chairs, one cell each of layer z = 0.5, could not be told from other furniture."""
+    office = scenarios.get("3do").make_workspace(np.random.default_rng(0))
+    chairs = office.boxes[np.array(office.labels) == "chair"]  # (C, 2, 3)
+    fig = cspace.occupancy_figure(office, layers=range(4), columns=2, ring="chair")
+    rings = [[line for line in ax.get_lines() if line.get_gid() == "ring"] for ax in fig.axes]
+    assert [len(r[0].get_xydata()) for r in rings] == [int(np.sum(chairs[:, 1, 2] >= z + 0.5)) for z in range(4)]
+    np.testing.assert_allclose(rings[0][0].get_xydata(), chairs[:, :, :2].mean(axis=1))
+    assert rings[0][0].get_color() == palette.COLORS["invalid"] and len(chairs) > 0
+    assert fig.get_suptitle().endswith("; each chair ringed")
+    assert f"each chair ringed, per image: {len(chairs)}, 0, 0, 0" in alt_text(fig)
+    fig.draw_without_rendering()  # two layers a row fill the page's width (were 197 px of 610: 4.8 px a cell)
+    assert fig.get_figwidth() == palette.PAGE_WIDTH and all(ax.get_window_extent().width > 240 for ax in fig.axes)
+
+
 # -- robots ----------------------------------------------------------------------------
 
 
@@ -254,6 +269,22 @@ def test_a_figure_of_the_robots_parts_marks_its_base_and_shades_each_link():
         "base",
     ]
     assert "Its base is marked with a black dot" in alt_text(fig)
+
+
+def test_a_robot_figures_flat_views_fill_their_width():
+    """Reader r39a: chain9's two views were 140 px wide under a wide legend, the youBot's side view sat above an empty
+    band. Flat views: the figure as tall as its panels, drawn to scale, need to fill the page's width."""
+    robot = robots.box_chain(3)
+    q = np.array([5.0, 5.0, 5.0, 0.3, 0.2, 0.0, 1.0, -1.0, 0.8])
+    fig = robot_drawing.robot_figure(robot, q, views=("xz", "xy"), margin=0.1, parts=True)
+    fig.draw_without_rendering()
+    widths = [ax.get_window_extent().width / fig.dpi for ax in fig.axes]  # inches
+    assert min(widths) >= 0.28 * fig.get_figwidth(), widths  # were 1.77 and 1.14 of 6.1 inches
+    youbot = scenarios.get("3do").robot
+    side = robot_drawing.robot_figure(youbot, [5.0, 5.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0], views=("xz",), labels=["up"])
+    side.draw_without_rendering()
+    (ax,) = side.axes
+    assert ax.get_window_extent().height >= 0.55 * side.bbox.height  # no empty band under the panel
 
 
 def test_robot_figure_projects_a_chain_by_forward_kinematics():
@@ -432,7 +463,7 @@ def test_verdict_figure_titles_each_panel_with_the_checkers_verdict_and_marks_wh
     moved = np.flatnonzero(hit != q)
     assert len(moved) == 1 and moved[0] in (0, 1)  # one of x, y, by whole steps
     assert abs(hit[moved[0]] - q[moved[0]]) / 0.05 == pytest.approx(round(abs(hit[moved[0]] - q[moved[0]]) / 0.05))
-    fig = robot_drawing.verdict_figure(checker, np.stack([q, hit]))
+    fig = verdict.verdict_figure(checker, np.stack([q, hit]))
     left, right = fig.axes
     assert left.get_title() == "valid" and right.get_title().startswith("in collision:\nlink ")  # FCL proves no gap
     assert left.get_xlim() == right.get_xlim() and left.get_ylim() == right.get_ylim()  # review r27a: one window
@@ -442,6 +473,12 @@ def test_verdict_figure_titles_each_panel_with_the_checkers_verdict_and_marks_wh
     link, block, depth = contact.contacts(robot, clutter, hit)[0]  # numbered as the arrays are (review r30a)
     assert f"link {link} overlaps block {block} by {depth:.2g}" in right.get_title() and depth > 0
     assert "configuration 2, in collision" in alt_text(fig)
+    (key,) = fig.legends  # reader r39a: a key under the panels, right under them, names what they draw
+    assert [t.get_text() for t in key.get_texts()] == ["block", "valid", "in collision", "block touched"]
+    assert "A key under the panels names block, valid, in collision, block touched." in alt_text(fig)
+    fig.draw_without_rendering()
+    panels = min(ax.get_tightbbox().y0 for ax in fig.axes)
+    assert 0 <= panels - key.get_window_extent().y1 <= 10  # pixels: no band between the panels and their key
 
 
 def test_a_valid_panel_says_the_gap_its_checker_proves(square_world):
@@ -449,7 +486,7 @@ def test_a_valid_panel_says_the_gap_its_checker_proves(square_world):
     exact = exact_checker(square_world, robots.point_robot())
     Q = np.array([[9.5, 11.0], [9.9, 11.0]])  # 0.25 left of the block at [10, 12]^2, then overlapping it
     gap = exact.clearances(Q[:1], cap=1.0)[0]
-    left, right = robot_drawing.verdict_figure(exact, Q).axes
+    left, right = verdict.verdict_figure(exact, Q).axes
     assert gap > 0 and left.get_title() == f"valid: at least {gap:.2g} clear\nof every block and wall"
     assert right.get_title() == "in collision:\nsquare overlaps block 0 by 0.15"  # the point robot's link, by name
 
@@ -459,7 +496,7 @@ def test_a_panel_tells_touching_from_overlapping_and_fills_the_overlap(square_wo
     the outlines. The title says how deep; the part of a 2D link inside the block is filled."""
     exact = exact_checker(square_world, robots.point_robot())
     Q = np.array([[9.75, 11.0], [9.95, 11.0]])  # touching the block at [10, 12]^2, then 0.2 into it
-    touching, overlapping = robot_drawing.verdict_figure(exact, Q).axes
+    touching, overlapping = verdict.verdict_figure(exact, Q).axes
     assert touching.get_title() == "in collision:\nsquare touches block 0" and not _patches(touching, "overlap")
     assert overlapping.get_title() == "in collision:\nsquare overlaps block 0 by 0.2"
     (fill,) = _patches(overlapping, "overlap")
@@ -499,13 +536,11 @@ def test_the_youbots_arm_is_labelled_in_its_flat_views():
     checker = exact_checker(world, youbot)
     q = np.array([10.0, 10.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0])
     panels = [
-        robot_drawing.verdict_figure(checker, q[None]).axes[0],
+        verdict.verdict_figure(checker, q[None]).axes[0],
         cspace.cspace_slice(checker, q, resolution=4).axes[1],
     ]
     assert [[t.get_text() for t in ax.texts] for ax in panels] == [["arm"], ["arm"]]
-    assert (
-        not robot_drawing.verdict_figure(exact_checker(world, robots.box_chain(1)), [5.0] * 3 + [0.0] * 4).axes[0].texts
-    )
+    assert not verdict.verdict_figure(exact_checker(world, robots.box_chain(1)), [5.0] * 3 + [0.0] * 4).axes[0].texts
 
 
 def test_a_slice_outlines_the_blocks_a_flat_view_draws_across_links_they_cannot_reach():
@@ -569,7 +604,7 @@ def test_the_figure_of_one_check_names_each_office_block_inside_it():
     boxes = np.array([[[20, 20, 0], [22, 22, 1]], [[9, 11, 0], [30, 12, 3]]], dtype=float)
     world = Workspace(np.zeros(3), np.array([41.0, 41.0, 6.0]), boxes, labels=("desk", "shelf"))
     q = np.array([10.0, 10.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0])
-    ax = robot_drawing.verdict_figure(exact_checker(world, youbot), q[None]).axes[0]
+    ax = verdict.verdict_figure(exact_checker(world, youbot), q[None]).axes[0]
     (name,) = [t for t in ax.texts if t.get_gid() == "name"]  # the desk lies far outside the window
     assert name.get_text() == "1 shelf"
     (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()

@@ -6,7 +6,8 @@ per topic, in the order of the notebooks:
 
 - :mod:`toolkit.plots.robot_drawing` — a robot's link boxes at configurations, among the blocks near it
   (notebooks 01, 05), each box drawn from its corners by :mod:`toolkit.plots.boxes`, where it touches or overlaps a
-  block found by :mod:`toolkit.plots.contact`;
+  block found by :mod:`toolkit.plots.contact`; one check's configurations side by side with the checker's verdict
+  on each by :mod:`toolkit.plots.verdict` (notebook 01);
 - :mod:`toolkit.plots.slices` — the grid of a 2-DoF slice of configuration space (notebooks 01, 03);
 - :mod:`toolkit.plots.cspace` — workspaces, occupancy grids, configuration-space obstacles (notebook 01);
 - :mod:`toolkit.plots.cae` — the contractive autoencoder's reconstructions and latents (notebook 02), the wrongly

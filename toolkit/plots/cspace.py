@@ -29,13 +29,14 @@ import numpy as np
 from matplotlib.colors import ListedColormap
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch, Rectangle
+from matplotlib.patheffects import Normal, Stroke
 
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe, map_part
 from toolkit.plots.boxes import aabb_corners, add_box_3d
-from toolkit.plots.contact import key_blocks, passed_over
+from toolkit.plots.contact import key_blocks, passed_over, ring_blocks
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
 from toolkit.plots.robot_drawing import (
     BASE_MARK,
@@ -45,9 +46,9 @@ from toolkit.plots.robot_drawing import (
     draw_robot,
     few_ticks,
     link_colors,
-    mark_arm,
 )
 from toolkit.plots.slices import joint_bounds, slice_configs
+from toolkit.plots.verdict import mark_arm
 
 COLLISION_CMAP = ListedColormap([COLORS["free"], COLORS["occupied"]])  # 0: valid, 1: in collision (dark)
 OCCUPANCY_CMAP = ListedColormap([COLORS["free"], COLORS["occupied"]])  # -1: free, +1: occupied (dark)
@@ -172,11 +173,13 @@ def _occupied_share(workspace: Workspace) -> float:
     return float(np.mean(workspace.occupancy() > 0))
 
 
-def occupancy_figure(workspace: Workspace, layers: Sequence[int] | None = None, columns: int = 4) -> Figure:
+def occupancy_figure(
+    workspace: Workspace, layers: Sequence[int] | None = None, columns: int = 4, *, ring: str | None = None
+) -> Figure:
     """The occupancy grid (paper §IV-A: +1 occupied, dark; −1 free, white), one image per z layer in 3D.
 
     Image ``[row, col]`` is cell ``(x=col, y=row)``, so the picture lies as :func:`workspace_figure`'s.
-    ``layers``: which z layers of a 3D grid to draw (default: all).
+    ``layers``: which z layers of a 3D grid to draw (default: all); ``ring``: a kind of block ringed where it is.
     """
     grid = workspace.occupancy()  # (nx, ny) or (nx, ny, nz)
     extent = (workspace.lower[0], workspace.upper[0], workspace.lower[1], workspace.upper[1])
@@ -188,13 +191,15 @@ def occupancy_figure(workspace: Workspace, layers: Sequence[int] | None = None, 
         titles = [f"layer z = {workspace.lower[2] + z + 0.5:g}" for z in drawn]
     columns = min(columns, len(images))
     rows = -(-len(images) // columns)
-    panel = 4.2 if len(images) == 1 else min(3.0, (PAGE_WIDTH - 0.4) / columns)  # inches: two a row fill the page
-    fig = Figure(figsize=(panel * columns, panel * rows + 0.4))
+    wide = len(images) > 1  # layers fill the page's width, little room between them (r39a: 4 px a cell were too few)
+    fig = Figure(figsize=(PAGE_WIDTH, rows * PAGE_WIDTH / columns * 1.05 + 0.9) if wide else (4.2, 4.6))
     axes = fig.subplots(
-        rows, columns, squeeze=False, sharex=True, sharey=True, gridspec_kw={"hspace": 0.35, "wspace": 0.15}
+        rows, columns, squeeze=False, sharex=True, sharey=True, gridspec_kw={"hspace": 0.25, "wspace": 0.08}
     )
+    ringed = []
     for ax, image, title in zip(axes.ravel(), images, titles):
         ax.imshow(image.T, origin="lower", extent=extent, cmap=OCCUPANCY_CMAP, vmin=-1, vmax=1, interpolation="nearest")
+        ringed.append(ring_blocks(ax, workspace, ring, float(title.split()[-1]) if grid.ndim == 3 else None))
         ax.set_title(title if len(images) > 1 else "", fontsize=9)  # one image: the figure's title names it (r29a)
         ax.locator_params(nbins=6 if len(images) == 1 else 4)  # a tick every few cells (0..31: every 5), no more:
         # drawing text is most of a many-layered figure's cost
@@ -207,20 +212,20 @@ def occupancy_figure(workspace: Workspace, layers: Sequence[int] | None = None, 
         axes[drawn[-1], column].tick_params(labelbottom=True)
         for r in drawn[:-1]:
             axes[r, column].tick_params(labelbottom=False)
-    for c in range(columns):
-        for r in range(rows):
-            axes[r, c].tick_params(labelleft=c == 0)
+    for (_, c), ax in np.ndenumerate(axes):
+        ax.tick_params(labelleft=c == 0)
     for ax in axes.ravel()[len(images) :]:
         ax.remove()
-    fig.suptitle(
-        f"Occupancy grid {' x '.join(map(str, grid.shape))}\ndark = +1 (occupied), white = -1 (free)", fontsize=10
-    )
-    fig.subplots_adjust(top=1 - 0.8 / fig.get_figheight())  # room for the two title lines
+    said = f"Occupancy grid {' x '.join(map(str, grid.shape))}\ndark = +1 (occupied), white = -1 (free)"
+    fig.suptitle(said + f"; each {ring} ringed" * bool(ring), fontsize=10)
+    fig.subplots_adjust(top=1 - 0.8 / fig.get_figheight())  # room for the two title lines; in the layers, the width
+    fig.subplots_adjust(**(dict(left=0.08, right=0.98, bottom=0.5 / fig.get_figheight()) if wide else {}))
     shares = [f"{np.mean(image > 0):.0%}" for image in images]
     text = f"Occupancy grid of the {workspace.family or 'workspace'} workspace, {' x '.join(map(str, grid.shape))} "
     text += f"cells, occupied dark, free white: {np.mean(grid > 0):.0%} of the cells occupied"
     if grid.ndim == 3:
         text += f"; one image per z layer, {len(images)} drawn, occupied per layer from bottom: {', '.join(shares)}"
+    text += f"; each {ring} ringed, per image: {', '.join(map(str, ringed))}" if ring else ""
     x, y = ("x", extent[0], extent[1]), ("y", extent[2], extent[3])
     parts = [  # each image by region: what share of its cells is occupied
         map_part(title, f"{share} occupied; by region, top row first", image.shape, x, y, partial(_occupied, image))
@@ -327,9 +332,10 @@ def cspace_slice(
             pad = (limits[1] - limits[0]) / resolution  # invalid, and a bar at the edge stands off the axis's spine
             set_limits(limits[0] - pad, limits[1] + pad)
     ax.set_facecolor(COLORS["occupied"])
-    star: dict[str, Any] = dict(
-        marker="*", markersize=14, markeredgecolor=COLORS["free"], color=link_colors(1, q_valid)[0]
+    star: dict[str, Any] = dict(  # an ink edge in a white halo: seen on the free white and the dark alike (r39a)
+        marker="*", markersize=15, markeredgecolor=COLORS["ink"], color=link_colors(1, q_valid)[0], markeredgewidth=1
     )
+    star["path_effects"] = [Stroke(linewidth=4, foreground=COLORS["free"]), Normal()]
     ax.plot(q[joints[0]], q[joints[1]], linestyle="none", gid="q", **star)
     ax.set_title(  # the fixed values are the description's table: four-line titles were the page's hardest (r31a)
         f"{robot.name}: {1 - valid.mean():.0%} in collision (dark)\nthe other DoF fixed at the star's", fontsize=9

@@ -3,8 +3,8 @@
 Forward kinematics (``robot.link_boxes``) places each link box; :func:`draw_robot` draws them, and the blocks near
 them, on an axes of your own, in 3D or projected onto a plane (the building block of :func:`robot_figure`, one panel
 per view with a legend naming the configurations, of :func:`toolkit.plots.cspace.cspace_slice` and
-:mod:`toolkit.plots.scenes`); :func:`verdict_figure` draws configurations side by side with a checker's verdict on
-each, and marks the link boxes and blocks that touch (:mod:`toolkit.plots.contact`).
+:mod:`toolkit.plots.scenes` and :func:`toolkit.plots.verdict.verdict_figure`, configurations side by side with a
+checker's verdict on each).
 
 A configuration is drawn in the valid colour or, hatched, the invalid one (:func:`link_style`: colour is never the
 only cue), else in a colour and hatch of its own. Each box is drawn from its corners (:mod:`toolkit.plots.boxes`).
@@ -20,17 +20,15 @@ from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Polygon, Rectangle
 
-from toolkit.geometry.checker import CollisionChecker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
-from toolkit.plots.contact import clip_to_box, contacts, name_blocks, nearby_blocks
+from toolkit.plots.contact import nearby_blocks
 from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
 
 VALID_COLOR, INVALID_COLOR = COLORS["valid"], COLORS["invalid"]
 BLOCK_STYLE: dict[str, Any] = dict(facecolor=COLORS["block"], edgecolor=COLORS["occupied"], gid="block")
-PARTS = {"youbot": ("platform", "turret", "upper arm", "forearm", "wrist", "gripper"), "point2d": ("square",)}
 
 
 def link_style(color: str, hatch: str | None = None) -> dict:
@@ -189,10 +187,11 @@ def robot_figure(
         fig.legend(
             list(handles.values()), list(handles), loc="lower center", ncol=len(handles), fontsize=9, frameon=False
         )
-    fig.tight_layout(rect=(0, 0.08 if handles else 0, 1, 1))
+    _fit_height(fig, [axes[v] for v in views], bool(handles))
+    fig.tight_layout(rect=(0, 0.4 / fig.get_figheight() if handles else 0, 1, 1))
     text = _robot_figure_text(robot, len(Q), views, workspace is not None, valid, labels, hatches, named)
     text += _shades_text(shade_names, parts)
-    return describe(fig, text, [_configurations_part(robot, Q, labels)])
+    return describe(fig, text, [configurations_part(robot, Q, labels)])
 
 
 def _legend(labels, colors, hatches, named: bool, shade_names: dict, parts: bool) -> dict[str, Any]:
@@ -217,6 +216,19 @@ def _panels(views: tuple[str, ...], legend: bool) -> tuple[Figure, dict]:
     fig = Figure(figsize=(width, width / columns * (1.6 if len(views) == 3 else rows) + 0.4 * legend))
     in_3d: dict[str | tuple[str, ...], dict[str, Any]] = {"3d": {"projection": "3d"}} if "3d" in views else {}
     return fig, fig.subplot_mosaic(mosaic, per_subplot_kw=in_3d)
+
+
+def _fit_height(fig: Figure, axes: list, legend: bool) -> None:
+    """Flat views only: the figure's height set so that each row's panels, drawn to scale, fill their width (review
+    r39a: chain9's two views 140 px wide under a wide legend; the youBot's side view above an empty band). One panel
+    alone is never taller than it is wide."""
+    if any(ax.name == "3d" for ax in axes):
+        return
+    columns, rows = min(2, len(axes)), -(-len(axes) // 2)
+    ratio = max(np.ptp(ax.get_ylim()) / np.ptp(ax.get_xlim()) for ax in axes)  # the tallest window, height / width
+    drawn = fig.get_figwidth() / columns - 0.7  # inches: a panel's axes, less its y label and ticks
+    ratio = min(max(ratio, 0.3), 1.6 if columns > 1 else 1.0)
+    fig.set_size_inches(fig.get_figwidth(), rows * (drawn * ratio + 0.8) + 0.4 * legend)
 
 
 SHARED_SHADE = (COLORS["shade"], None)  # links the same in every configuration drawn (the youBot's platform, turret)
@@ -278,7 +290,7 @@ def _end_mark(k: int, color: str) -> dict:
     return dict(marker=END_MARKERS[k % len(END_MARKERS)][0], markersize=8, color=color, **edge)
 
 
-def _configurations_part(robot: BoxRobot, Q: np.ndarray, labels: Sequence[str] | None) -> Part:
+def configurations_part(robot: BoxRobot, Q: np.ndarray, labels: Sequence[str] | None) -> Part:
     """The drawn configurations ``Q (k, dof)`` as a table: each one's DoF values and where its last link lies."""
     centers = robot.link_boxes(Q)[0][:, -1]  # (k, D) the last link's centre
     names = labels or [f"configuration {i + 1}" for i in range(len(Q))]
@@ -297,104 +309,3 @@ def _hatch_name(hatch: str | None) -> str:
     return {"": "plain", "//": "hatched with slashes", "..": "dotted", "xx": "cross-hatched"}.get(
         hatch or "", "hatched"
     )
-
-
-def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: float = 1.0) -> Figure:
-    """Configurations ``Q (k, dof)`` side by side, one panel each, drawn in ``view`` with the blocks near them and
-    the checker's verdict in each title. Every panel frames the same window (all of ``Q`` within ``margin``,
-    review r27a: a move hidden by shifted axes), so a block reaching past it is drawn clipped. In a configuration
-    in collision, each link box that touches a block and that block are outlined thick (the block dashed) and named
-    in the title, numbered as the arrays are: "platform touches block 11 (desk)" (review r30a), or "square overlaps
-    block 0 by 0.2" with a 2D link's part inside the block filled light (review r31a); a valid one's title
-    gives its clearance where the checker proves one ("valid: at least 0.15 clear of every block and wall")."""
-    robot, workspace = checker.robot, getattr(checker, "workspace", None)
-    if not isinstance(workspace, Workspace):
-        raise TypeError(f"this figure draws the checker's workspace, and a {type(checker).__name__} knows none")
-    Q = robot.check_configs(Q)  # (k, dof)
-    valid = checker.are_valid(Q)  # (k,)
-    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / len(Q) + 0.3))
-    axes = fig.subplots(1, len(Q), squeeze=False)[0]
-    plane = VIEWS[view] if robot.dim == 3 else (0, 1)
-    at = list(plane)
-    aabbs = robot.link_aabbs(Q)  # (k, L, 2, D): one window for every panel
-    lo = np.maximum(aabbs[:, :, 0].min(axis=(0, 1)) - margin, workspace.lower)
-    hi = np.minimum(aabbs[:, :, 1].max(axis=(0, 1)) + margin, workspace.upper)
-    said = []
-    for ax, q, ok in zip(axes, Q, valid):
-        draw_robot(ax, robot, q[None], colors=link_colors(1, ok), view=view, margin=margin)
-        for b_lo, b_hi in workspace.boxes[nearby_blocks(workspace, lo, hi)]:
-            ax.add_patch(Rectangle(b_lo[at], *(b_hi - b_lo)[at], alpha=0.5, zorder=0.9, **BLOCK_STYLE))
-        ax.set(xlim=(lo[at[0]], hi[at[0]]), ylim=(lo[at[1]], hi[at[1]]))
-        name_blocks(ax, workspace, nearby_blocks(workspace, lo, hi), at)  # "18 shelf" (r32a)
-        found = [] if ok else contacts(robot, workspace, q)  # (link, block, depth) of each pair that touches
-        _outline_touching(ax, robot, workspace, q, found, plane)
-        mark_arm(ax, robot, q, view)
-        named = [f"{_part(robot, link)} {_met(workspace, block, depth)}" for link, block, depth in found]
-        verdict = _valid_title(checker, q) if ok else "in collision:\n" + ("; ".join(named) or "leaves the region")
-        said.append(verdict.replace("\n", " "))
-        ax.set_title(verdict, fontsize=10 if len(Q) < 3 else 9, wrap=True)
-        ax.tick_params(labelsize=8)
-    fig.tight_layout()
-    marked = " Each link that touches a block is outlined thick, and the block it touches dashed." * (not all(valid))
-    filled = any(p.get_gid() == "overlap" for ax in axes for p in ax.patches)
-    marked += " The part of the robot inside a block is filled light." * filled
-    text = f"The {robot.name} robot at {len(Q)} configurations side by side, seen in the {view} plane with the blocks "
-    text += "near it, each panel framing the same window, each titled with the exact checker's verdict: " + "; ".join(
-        f"configuration {i + 1}, {v}" for i, v in enumerate(said)
-    )
-    return describe(
-        fig, text + "." + marked, [_configurations_part(robot, Q, [f"configuration {i + 1}" for i in range(len(Q))])]
-    )
-
-
-def _valid_title(checker: CollisionChecker, q: np.ndarray) -> str:
-    """A valid panel's title, with the checker's clearance where it proves one: a hairline gap is invisible at the
-    page's width, and a panel titled "valid" that looks touching needs its gap said (review r29a)."""
-    gap = float(checker.clearances(q[None], cap=1.0)[0])
-    return f"valid: at least {gap:.2g} clear\nof every block and wall" if gap > 0 else "valid"
-
-
-def _outline_touching(ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray, found, plane: tuple[int, int]) -> None:
-    """Outline thick each link box of ``found`` (link, block, depth) at ``q`` and, dashed, the block it touches; a 2D
-    link's part inside the block filled (review r31a: "0.2 into the block" looked as if it touched)."""
-    centers, rotations, half = robot.link_boxes(q[None])
-    thick: dict[str, Any] = dict(fill=False, edgecolor=COLORS["ink"], linewidth=2.5)
-    at = list(plane)
-    for link, block, depth in found:
-        b_lo, b_hi = workspace.boxes[block]
-        ax.add_patch(Rectangle(b_lo[at], *(b_hi - b_lo)[at], linestyle="--", gid="touched block", zorder=4, **thick))
-        corners = outline(box_corners(centers[0, link], rotations[0, link], half[link]), plane)
-        ax.add_patch(Polygon(corners, gid="touching link", zorder=5, **thick))
-        inside = clip_to_box(corners, b_lo[at], b_hi[at]) if robot.dim == 2 and depth > 0 else np.zeros((0, 2))
-        if len(inside) > 2:  # in 3D a shadow's overlap need not be the boxes' own: nothing filled
-            light: dict[str, Any] = dict(
-                facecolor=COLORS["overlap"], edgecolor=COLORS["ink"], linewidth=1
-            )  # over the outlines
-            ax.add_patch(Polygon(inside, gid="overlap", zorder=6, **light))
-
-
-def mark_arm(ax, robot: BoxRobot, q: np.ndarray, view: str) -> None:
-    """Label the youBot's arm in a flat view: a few pixels on its platform, it went unseen (review r31a)."""
-    if robot.name != "youbot" or view not in VIEWS:
-        return
-    at = robot.link_boxes(q[None])[0][0, 1:][:, list(VIEWS[view])].mean(axis=0)  # (2,) the arm links' mean centre
-    box = dict(boxstyle="round,pad=0.15", facecolor=COLORS["free"], edgecolor=COLORS["ink"], linewidth=0.6)
-    arrow = dict(arrowstyle="-", color=COLORS["ink"], linewidth=0.8)
-    ax.annotate("arm", at, xytext=(14, 14), textcoords="offset points", fontsize=8, bbox=box, arrowprops=arrow)
-
-
-def _met(workspace: Workspace, block: int, depth: float) -> str:
-    """How a link meets a block in a title: "touches block 0" at depth 0, else "overlaps block 0 by 0.2"."""
-    return f"{'overlaps' if depth > 1e-9 else 'touches'} block {block}{_kind(workspace, block)}" + (
-        f" by {depth:.2g}" if depth > 1e-9 else ""
-    )
-
-
-def _kind(workspace: Workspace, block: int) -> str:
-    """A block's kind in brackets where the workspace names kinds (the office's furniture), else nothing."""
-    return f" ({workspace.labels[block]})" if workspace.labels else ""
-
-
-def _part(robot: BoxRobot, link: int) -> str:
-    """A link in a title: the youBot's and the point robot's by name, a chain's numbered from 0 as ``link_boxes``."""
-    return PARTS[robot.name][link] if robot.name in PARTS else f"link {link}"

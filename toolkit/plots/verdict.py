@@ -1,0 +1,152 @@
+"""One check's picture: configurations side by side with a checker's verdict on each (notebook 01's first check and
+its youBot nudged into a block), the link boxes and blocks that touch outlined (:mod:`toolkit.plots.contact`), a 2D
+link's part inside a block filled; split from :mod:`toolkit.plots.robot_drawing`, whose :func:`draw_robot` draws
+each panel.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+from matplotlib.figure import Figure
+from matplotlib.patches import Patch, Polygon, Rectangle
+
+from toolkit.geometry.checker import CollisionChecker
+from toolkit.geometry.robots import BoxRobot
+from toolkit.geometry.workspace import Workspace
+from toolkit.plots.alt import describe
+from toolkit.plots.boxes import box_corners, outline
+from toolkit.plots.contact import clip_to_box, contacts, name_blocks, nearby_blocks
+from toolkit.plots.palette import COLORS, PAGE_WIDTH
+from toolkit.plots.robot_drawing import (
+    BLOCK_STYLE,
+    INVALID_COLOR,
+    VALID_COLOR,
+    VIEWS,
+    configurations_part,
+    draw_robot,
+    link_colors,
+    link_style,
+)
+
+PARTS = {"youbot": ("platform", "turret", "upper arm", "forearm", "wrist", "gripper"), "point2d": ("square",)}
+
+
+def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: float = 1.0) -> Figure:
+    """Configurations ``Q (k, dof)`` side by side, one panel each, drawn in ``view`` with the blocks near them and
+    the checker's verdict in each title. Every panel frames the same window (all of ``Q`` within ``margin``,
+    review r27a: a move hidden by shifted axes), so a block reaching past it is drawn clipped. In a configuration
+    in collision, each link box that touches a block and that block are outlined thick (the block dashed) and named
+    in the title, numbered as the arrays are: "platform touches block 11 (desk)" (review r30a), or "square overlaps
+    block 0 by 0.2" with a 2D link's part inside the block filled light (review r31a); a valid one's title
+    gives its clearance where the checker proves one ("valid: at least 0.15 clear of every block and wall")."""
+    robot, workspace = checker.robot, getattr(checker, "workspace", None)
+    if not isinstance(workspace, Workspace):
+        raise TypeError(f"this figure draws the checker's workspace, and a {type(checker).__name__} knows none")
+    Q = robot.check_configs(Q)  # (k, dof)
+    valid = checker.are_valid(Q)  # (k,)
+    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / len(Q) + 0.6))
+    axes = fig.subplots(1, len(Q), squeeze=False)[0]
+    plane = VIEWS[view] if robot.dim == 3 else (0, 1)
+    at = list(plane)
+    aabbs = robot.link_aabbs(Q)  # (k, L, 2, D): one window for every panel
+    lo = np.maximum(aabbs[:, :, 0].min(axis=(0, 1)) - margin, workspace.lower)
+    hi = np.minimum(aabbs[:, :, 1].max(axis=(0, 1)) + margin, workspace.upper)
+    said = []
+    for ax, q, ok in zip(axes, Q, valid):
+        draw_robot(ax, robot, q[None], colors=link_colors(1, ok), view=view, margin=margin)
+        for b_lo, b_hi in workspace.boxes[nearby_blocks(workspace, lo, hi)]:
+            ax.add_patch(Rectangle(b_lo[at], *(b_hi - b_lo)[at], alpha=0.5, zorder=0.9, **BLOCK_STYLE))
+        ax.set(xlim=(lo[at[0]], hi[at[0]]), ylim=(lo[at[1]], hi[at[1]]))
+        name_blocks(ax, workspace, nearby_blocks(workspace, lo, hi), at)  # "18 shelf" (r32a)
+        found = [] if ok else contacts(robot, workspace, q)  # (link, block, depth) of each pair that touches
+        _outline_touching(ax, robot, workspace, q, found, plane)
+        mark_arm(ax, robot, q, view)
+        named = [f"{_part(robot, link)} {_met(workspace, block, depth)}" for link, block, depth in found]
+        verdict = _valid_title(checker, q) if ok else "in collision:\n" + ("; ".join(named) or "leaves the region")
+        said.append(verdict.replace("\n", " "))
+        ax.set_title(verdict, fontsize=10 if len(Q) < 3 else 9, wrap=True)
+        ax.tick_params(labelsize=8)
+    filled = any(p.get_gid() == "overlap" for ax in axes for p in ax.patches)
+    fig.tight_layout(rect=(0, 0.35 / fig.get_figheight(), 1, 1))
+    named = _key(fig, axes, valid, filled)
+    marked = " Each link that touches a block is outlined thick, and the block it touches dashed." * (not all(valid))
+    marked += f" A key under the panels names {', '.join(named)}."
+    marked += " The part of the robot inside a block is filled light." * filled
+    text = f"The {robot.name} robot at {len(Q)} configurations side by side, seen in the {view} plane with the blocks "
+    text += "near it, each panel framing the same window, each titled with the exact checker's verdict: " + "; ".join(
+        f"configuration {i + 1}, {v}" for i, v in enumerate(said)
+    )
+    return describe(
+        fig, text + "." + marked, [configurations_part(robot, Q, [f"configuration {i + 1}" for i in range(len(Q))])]
+    )
+
+
+def _key(fig: Figure, axes, valid: np.ndarray, filled: bool) -> list[str]:
+    """A key right under :func:`verdict_figure`'s panels (drawn to scale, they need not fill their rows) naming what
+    they draw (review r39a: the nudge's panels had none, the first check's lived in the paragraph); its names."""
+    handles: dict[str, Any] = {"block": Patch(alpha=0.5, **BLOCK_STYLE)}
+    handles |= {"valid": Patch(**link_style(VALID_COLOR))} if valid.any() else {}
+    if not valid.all():
+        handles["in collision"] = Patch(**link_style(INVALID_COLOR))
+        handles["block touched"] = Patch(fill=False, edgecolor=COLORS["ink"], linewidth=2, linestyle="--")
+    handles |= {"inside the block": Patch(facecolor=COLORS["overlap"], edgecolor=COLORS["ink"])} if filled else {}
+    fig.draw_without_rendering()  # the panels' places, drawn to scale
+    under = min(ax.get_tightbbox().y0 for ax in axes) / fig.bbox.height
+    key: dict[str, Any] = dict(bbox_to_anchor=(0.5, under), ncol=len(handles), fontsize=8, frameon=False)
+    fig.legend(list(handles.values()), list(handles), loc="upper center", **key)
+    return list(handles)
+
+
+def _valid_title(checker: CollisionChecker, q: np.ndarray) -> str:
+    """A valid panel's title, with the checker's clearance where it proves one: a hairline gap is invisible at the
+    page's width, and a panel titled "valid" that looks touching needs its gap said (review r29a)."""
+    gap = float(checker.clearances(q[None], cap=1.0)[0])
+    return f"valid: at least {gap:.2g} clear\nof every block and wall" if gap > 0 else "valid"
+
+
+def _outline_touching(ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray, found, plane: tuple[int, int]) -> None:
+    """Outline thick each link box of ``found`` (link, block, depth) at ``q`` and, dashed, the block it touches; a 2D
+    link's part inside the block filled (review r31a: "0.2 into the block" looked as if it touched)."""
+    centers, rotations, half = robot.link_boxes(q[None])
+    thick: dict[str, Any] = dict(fill=False, edgecolor=COLORS["ink"], linewidth=2.5)
+    at = list(plane)
+    for link, block, depth in found:
+        b_lo, b_hi = workspace.boxes[block]
+        ax.add_patch(Rectangle(b_lo[at], *(b_hi - b_lo)[at], linestyle="--", gid="touched block", zorder=4, **thick))
+        corners = outline(box_corners(centers[0, link], rotations[0, link], half[link]), plane)
+        ax.add_patch(Polygon(corners, gid="touching link", zorder=5, **thick))
+        inside = clip_to_box(corners, b_lo[at], b_hi[at]) if robot.dim == 2 and depth > 0 else np.zeros((0, 2))
+        if len(inside) > 2:  # in 3D a shadow's overlap need not be the boxes' own: nothing filled
+            light: dict[str, Any] = dict(
+                facecolor=COLORS["overlap"], edgecolor=COLORS["ink"], linewidth=1
+            )  # over the outlines
+            ax.add_patch(Polygon(inside, gid="overlap", zorder=6, **light))
+
+
+def mark_arm(ax, robot: BoxRobot, q: np.ndarray, view: str) -> None:
+    """Label the youBot's arm in a flat view: a few pixels on its platform, it went unseen (review r31a)."""
+    if robot.name != "youbot" or view not in VIEWS:
+        return
+    at = robot.link_boxes(q[None])[0][0, 1:][:, list(VIEWS[view])].mean(axis=0)  # (2,) the arm links' mean centre
+    box = dict(boxstyle="round,pad=0.15", facecolor=COLORS["free"], edgecolor=COLORS["ink"], linewidth=0.6)
+    arrow = dict(arrowstyle="-", color=COLORS["ink"], linewidth=0.8)
+    ax.annotate("arm", at, xytext=(14, 14), textcoords="offset points", fontsize=8, bbox=box, arrowprops=arrow)
+
+
+def _met(workspace: Workspace, block: int, depth: float) -> str:
+    """How a link meets a block in a title: "touches block 0" at depth 0, else "overlaps block 0 by 0.2"."""
+    return f"{'overlaps' if depth > 1e-9 else 'touches'} block {block}{_kind(workspace, block)}" + (
+        f" by {depth:.2g}" if depth > 1e-9 else ""
+    )
+
+
+def _kind(workspace: Workspace, block: int) -> str:
+    """A block's kind in brackets where the workspace names kinds (the office's furniture), else nothing."""
+    return f" ({workspace.labels[block]})" if workspace.labels else ""
+
+
+def _part(robot: BoxRobot, link: int) -> str:
+    """A link in a title: the youBot's and the point robot's by name, a chain's numbered from 0 as ``link_boxes``."""
+    return PARTS[robot.name][link] if robot.name in PARTS else f"link {link}"
