@@ -18,7 +18,7 @@ Reading order:
 7. :mod:`toolkit.experiments.bench` — throughput and planner benchmarks (``toolkit bench``),
    :mod:`~toolkit.experiments.versus_ompl`, our planners against OMPL's on the same checker, and
    :mod:`~toolkit.experiments.crossover`, where prediction pays: exact against learned cost per configuration,
-   and :mod:`~toolkit.experiments.survey`, chapter 01's checker speeds beside the paper's scenarios;
+   and :mod:`~toolkit.experiments.survey`, chapter 01's scenarios measured beside the paper's;
 8. :mod:`toolkit.experiments.ablation` — the paper's recipe to ours, one change at a time;
 9. :mod:`toolkit.experiments.tuning` — the paper's unstated settings, chosen on held-out workspaces.
 """

@@ -121,24 +121,6 @@ def in_turns(calls: dict[str, tuple[Callable[[], object], int]], repeats: int = 
     return {name: n / float(np.median(seconds[name])) for name, (_, n) in calls.items()}
 
 
-def rate_table(rates: dict[str, dict[str, float]], columns: dict[str, str], ratio: tuple[str, str]) -> str:
-    """A Markdown table of checks a second, one row per scenario of ``rates`` (scenario: {checker: items a
-    second}, as :func:`in_turns` gives them): one column per checker of ``columns`` (checker: its name; "—"
-    where a scenario lacks it), and a last column, ``ratio[0]``'s time per check as a multiple of ``ratio[1]``'s
-    (chapter 01's section 3)."""
-    slow, fast = ratio
-    header = [
-        "scenario",
-        *(f"{c}<br>checks / s" for c in columns.values()),
-        f"{columns[slow]}'s time /<br>{columns[fast]}'s",
-    ]
-    rows = ["| " + " | ".join(header) + " |", "| --- |" + " ---: |" * (len(header) - 1)]
-    for name, found in rates.items():
-        cells = [f"{found[k]:,.0f}" if k in found else "—" for k in columns]
-        rows.append(f"| {name} | {' | '.join(cells)} | {found[fast] / found[slow]:.0f}x |")
-    return "\n".join(rows)
-
-
 def throughput(
     scenario: Scenario,
     models: TrainedModels,

@@ -1,6 +1,5 @@
-"""Chapter 01's tables: its closing one, our workspaces and robots measured against the paper's §IV-A beside what
-the paper does not give, the free share of uniform configurations (:func:`paper_comparison`), and section 3's
-table of checker speeds with the line under it (:func:`speed_summary`).
+"""Chapter 01's closing table: our workspaces and robots measured against the paper's §IV-A beside what the paper
+does not give, the free share of uniform configurations (:func:`paper_comparison`).
 """
 
 from __future__ import annotations
@@ -8,7 +7,6 @@ from __future__ import annotations
 import numpy as np
 
 from toolkit import scenarios
-from toolkit.experiments import bench
 from toolkit.geometry.collision import exact_checker
 
 PAPER = {  # §IV-A, as printed; the paper reports no free share and no collision-check speed
@@ -37,21 +35,6 @@ def paper_comparison(*, n_workspaces: int, n_checked: int, n_samples: int, seed:
         ]
         shapes.append(f"{_shape_row(name, spaces)} {np.mean(free):.0%} |")
     return "\n".join(shapes)
-
-
-def speed_summary(speeds: dict[str, dict[str, float]], names: dict[str, str]) -> str:
-    """Section 3's table of checks a second (``speeds``: scenario: {checker class name: rate}; ``names``: checker
-    class name: its column's name, FCL's first) and the line under it: in 3D FCL's time per check as a multiple of
-    the compiled checker's (the 3D rows' range: review r36a read "about 59x" beside a row of 53x), in 2D as a
-    multiple of the fastest check's, named."""
-    in_3d = [speeds[n]["CompiledChecker"] / speeds[n]["FCLChecker"] for n in speeds if n != "2ds"]
-    fastest = max(speeds["2ds"], key=lambda k: speeds["2ds"][k])  # the 2D check that took least time
-    in_2d = speeds["2ds"][fastest] / speeds["2ds"]["FCLChecker"]
-    return (
-        bench.rate_table(speeds, names, ratio=("FCLChecker", "CompiledChecker"))
-        + f"\n\nSame answers, but in 3D FCL took **{min(in_3d):.0f}–{max(in_3d):.0f}x** the compiled checker's time "
-        f"per check in this run, and in 2D **{in_2d:.0f}x** the {names[fastest]} check's, the fastest there."
-    )
 
 
 def _shape_row(name: str, spaces: list) -> str:
