@@ -31,7 +31,7 @@ from mkdocs.structure.files import File, Files
 from toolkit.plots import alt
 from toolkit.teaching import grading
 from toolkit.viewer import browser as viewer_browser
-from tools import accessibility, handout, site_hooks
+from tools import accessibility, handout, site_fold, site_hooks
 from tools.site import LIVE_ONLY_IN_JUPYTERLAB, Site, build_site, modules, page_html, static_widgets
 
 ROOT = Path(__file__).resolve().parents[1]
@@ -855,6 +855,32 @@ def test_a_complex_figure_is_described_in_full_under_it_and_its_alt_says_so(tmp_
         "</table></div>"
         "<p><strong>right</strong></p>\n</details></div>"
     )
+
+
+def test_a_code_cell_folded_in_jupyterlab_is_folded_on_its_page_and_its_outputs_are_not(tmp_path):
+    hidden = {"jupyter": {"source_hidden": True}}  # what JupyterLab writes when its input is collapsed
+    nb = nbformat.v4.new_notebook()
+    nb.cells = [
+        nbformat.v4.new_code_cell("# the imports\nimport numpy", id="aa1", metadata=hidden),
+        nbformat.v4.new_code_cell("x = 1", id="bb2"),
+        nbformat.v4.new_code_cell("\nprint(1)", id="cc3", metadata=hidden),
+    ]
+    nbformat.write(nb, tmp_path / "chapter.ipynb")
+    code = (  # a code cell's input as mkdocs-jupyter writes it; a "</div>" in its code is text
+        '<div class="jp-Cell-inputWrapper">\n<div class="jp-InputArea jp-Cell-inputArea">'
+        '<div class="highlight-ipynb"><pre>s = "&lt;/div&gt;"</pre></div>\n</div>\n</div>'
+    )
+    output = '\n<div class="jp-Cell-outputWrapper"><div class="jp-OutputArea-output"><pre>1</pre></div></div>\n</div>'
+    page = "".join(f'<div class="jp-Cell jp-CodeCell" id="cell-id={i}">\n{code}{output}' for i in ("aa1", "bb2", "cc3"))
+    assert site_fold.fold_code(page, tmp_path / "chapter.ipynb") == (
+        '<div class="jp-Cell jp-CodeCell" id="cell-id=aa1">\n'
+        f'<details class="code-folded"><summary>Code (folded): the imports</summary>\n{code}</details>{output}'
+        f'<div class="jp-Cell jp-CodeCell" id="cell-id=bb2">\n{code}{output}'
+        '<div class="jp-Cell jp-CodeCell" id="cell-id=cc3">\n'
+        f'<details class="code-folded"><summary>Code (folded)</summary>\n{code}</details>{output}'
+    )
+    assert site_fold.fold_code(page, tmp_path / "a_page_made_by_hand.ipynb") == page
+    assert site_fold.summary("\n  # a helper: draw  \nx") == "Code (folded): a helper: draw"
 
 
 def test_the_audit_counts_nodes_per_rule_and_lists_only_serious_and_critical_ones():

@@ -18,7 +18,8 @@ a cell's output, which nbconvert makes tab stops of no name (every paragraph and
 press of Tab), are not (``docs/site/accessibility.js`` makes a region of an output that scrolls); the colours,
 underlined links and focus outline are in ``docs/site/accessibility.css``. Every figure of a notebook page takes
 the alt text its output carries, and a complex figure (several panels, a map, a 3D view) its longer description
-in a "Figure described" disclosure under it (:func:`figure_alts`, from :mod:`toolkit.plots.alt`).
+in a "Figure described" disclosure under it (:func:`figure_alts`, from :mod:`toolkit.plots.alt`). A code cell whose
+input is collapsed in JupyterLab shows it in a closed "Code (folded)" disclosure (:mod:`tools.site_fold`).
 
 Offline: notebook pages load MathJax from the site's own copy (``assets/mathjax``, at the right depth for
 each page), and nbconvert's loader of mermaid diagrams, which imports its script from a CDN, is dropped
@@ -41,6 +42,7 @@ from mkdocs.structure.pages import Page
 from mkdocs.structure.toc import get_toc
 
 from toolkit.plots import alt as plots_alt
+from tools.site_fold import fold_code
 
 MATHJAX_PLACEHOLDER = '"MATHJAX/'  # how mkdocs.yml's custom_mathjax_url starts; the site's copy replaces it
 MATHJAX = "assets/mathjax"
@@ -116,8 +118,8 @@ def on_page_markdown(markdown: str, page: Page, config, files: Files) -> str:
 
 
 def on_page_content(html: str, page: Page, config, files: Files) -> str:
-    """Notebook pages: links go to pages, MathJax comes from the site, no mermaid loader. API reference:
-    Sphinx roles become cross-references. Every page: its code blocks can be reached by keyboard."""
+    """Notebook pages: links go to pages, MathJax comes from the site, no mermaid loader, folded cells stay folded.
+    API reference: Sphinx roles become cross-references. Every page: its code blocks can be reached by keyboard."""
     html = focusable_code(html)
     toc = getattr(page, "toc", None)  # a Markdown page's, made by mkdocs before this hook
     if toc is not None:
@@ -128,7 +130,8 @@ def on_page_content(html: str, page: Page, config, files: Files) -> str:
         return html
     mathjax = posixpath.relpath(MATHJAX, posixpath.dirname(page.file.dest_uri) or ".")
     html = headings_and_contents(MERMAID_LOADER.sub("", html.replace(MATHJAX_PLACEHOLDER, f'"{mathjax}/')), page)
-    html = figure_alts(one_h1(html), Path(page.file.abs_src_path or "")).replace(CELL_TAB_STOP, CELL)
+    notebook = Path(page.file.abs_src_path or "")
+    html = fold_code(figure_alts(one_h1(html), notebook).replace(CELL_TAB_STOP, CELL), notebook)
     html = take_away(page, config["extra"].get("jupyterhub") if config else None, files) + html
 
     def resolve(match: re.Match) -> str:
