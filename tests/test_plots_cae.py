@@ -301,6 +301,9 @@ def test_training_curves_in_panels_give_each_line_its_own_on_one_y_axis():
     assert [ax.get_title() for ax in fig.axes] == ["lambda 0", "lambda 1e-3", "lambda 0.961"]
     assert len({ax.get_ylim() for ax in fig.axes}) == 1 and fig.axes[0].get_ylabel().startswith("loss of Eq. (1)")
     assert all(ax.get_yscale() == "log" and ax.get_xlabel() == "epoch" for ax in fig.axes)
+    parts = alt.details(fig)  # several panels: each line in words and as a table, never the guard's from titles
+    assert [p["name"] for p in parts] == ["lambda 0", "lambda 1e-3", "lambda 0.961"]
+    assert parts[0]["rows"][0] == ["1", "5"] and parts[2]["rows"][-1] == ["40", "9"]
 
 
 def test_reconstructions_wrong_cells_carry_marks_one_can_read_at_the_sites_width():

@@ -16,6 +16,7 @@ as in :func:`toolkit.learning.metrics.reconstruction_accuracy`. Nothing here cal
 
 from __future__ import annotations
 
+from dataclasses import replace
 from typing import Any
 
 import numpy as np
@@ -75,7 +76,9 @@ def training_curves(
         f"{name}: {len(h)} epochs, from {h[0]:.3g} to {h[-1]:.3g} (lowest {min(h):.3g})"
         for name, h in histories.items()
     )
-    return describe(fig, f"Training curves, epoch across and {ylabel} up{' on a log scale' if log else ''}. {said}.")
+    text = f"Training curves, epoch across and {ylabel} up{' on a log scale' if log else ''}. {said}."
+    parts = [replace(lines_part(ax), text=f"{ylabel} against epoch") for ax in axes] if panels else []
+    return describe(fig, text, parts)  # several panels: each one's line as a table under the figure
 
 
 def _stacked(k: int, n: int) -> dict[str, Any]:
