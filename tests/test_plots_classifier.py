@@ -481,9 +481,11 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
         c for c in ax.collections if isinstance(c, ContourSet) and not c.filled and c.get_linestyle()[0][1]
     ]  # the dotted one
     assert min(cut.get_linewidths()) >= 2.5  # bold: followed across the map (r15c found it faint at 1.5)
-    assert [t.xy for t in ax.texts if t.get_text() == "in collision"] == [tuple(n) for n in nodes[~nodes_valid]]
-    hair = next(line for line in ax.get_lines() if line.get_label() == "_hair")  # r39c: where the node is, exactly
-    np.testing.assert_array_equal(np.column_stack([hair.get_xdata(), hair.get_ydata()]), nodes[~nodes_valid])
+    assert [t.xy for t in ax.texts] == [tuple(n) for n in nodes[~nodes_valid]]  # each "in collision" label
+    # r39c: where the node is, exactly, in its label; r40c: no cross-hair in the square, which read as edges reaching it
+    assert [t.get_text() for t in ax.texts] == ["in collision\n(15.0, 8.0)", "in collision\n(12.0, 6.0)"]
+    assert squares.get_markerfacecolor() != "none" and "_hair" not in [line.get_label() for line in ax.get_lines()]
+    assert ax.figure.axes[1].get_ylabel() == "P(valid); the line: threshold 0.50"  # r40c: the value, as the maps'
 
 
 def test_path_maps_in_collision_label_lies_on_free_cells_not_over_the_block():
@@ -504,7 +506,7 @@ def test_path_maps_in_collision_label_lies_on_free_cells_not_over_the_block():
     ax = fig.axes[0]
     renderer = FigureCanvasAgg(fig).get_renderer()
     fig.draw(renderer)
-    (label,) = [t for t in ax.texts if t.get_text() == "in collision"]
+    (label,) = [t for t in ax.texts if t.get_text().startswith("in collision")]
     box = label.get_bbox_patch().get_window_extent(renderer).transformed(ax.transData.inverted())  # data units
     corners = np.array([[box.x0, box.y0], [box.x0, box.y1], [box.x1, box.y0], [box.x1, box.y1]])
     assert exact_checker(ws, robots.point_robot()).are_valid(corners).all()

@@ -16,7 +16,7 @@ def test_the_opening_table_gives_the_papers_accuracy_as_reported_and_its_balance
     assert f"as reported: {published['acc']:.0%})" in paper
     assert f"| {(published['tpr'] + published['tnr']) / 2:.1%} |" in paper  # 87.5 %, not the reported 88 %
     strong7 = recorded.table(recorded.ALGORITHM_1, "MLP accuracy")["3dc7"]  # r33c: the summary's, Figure 1's network
-    label = "our `strong` preset, 3DC-7, recorded run (`--planner paper`, Figure 1's network)"  # r29c, r30c, r34c
+    label = "our `strong` preset, 3DC-7, recorded run (the one the results page's summary quotes)"  # r34c, r40c
     assert any(line.startswith(f"| {label} | {recorded.ours(strong7['Balanced unseen Acc']):.0%} |") for line in lines)
     paper7 = "| the paper's MLP, its Table 2, 3DC-7 (a 7-DoF chain of two boxes in 3D, section 5; its accuracy, as "
     assert lines[5].startswith(paper7 + "reported: 71%) | 73.0% | 85% | 61% |")  # r32c: 3DC-7 defined, beside ours

@@ -97,7 +97,10 @@ def probability_maps(
     text += "configurations; grey, 0 black to 1 white; wrong cells tinted, free ones rejected sky blue, obstacle cells "
     text += "kept vermillion) with the true C-obstacles outlined and hatched, the threshold's "
     text += f"contour dotted, dangerous mistakes as squares{_per_block(k[3])} and conservative ones as circles"
-    return describe(fig, text + f"{_per_block(k[1])}. " + "; ".join(said) + ".", parts)
+    rule = f"a square per {k[3]} x {k[3]}-cell tile holding dangerous cells, a circle per {k[1]} x {k[1]}-cell tile "
+    rule += "holding conservative ones, each moved up to a few cells into its side of the outline, onto the outline "
+    rule += "where that side is too thin: a mark shows its tile, not the exact cell"  # r40c: from the prose to here
+    return describe(fig, text + f"{_per_block(k[1])}. " + "; ".join(said) + ".", [Part("marks", rule), *parts])
 
 
 def _per_block(k: int) -> str:
@@ -122,7 +125,8 @@ def path_map(
     ax = fig.subplots()
     image = _draw_probability(ax, probability, valid, grid, threshold, mistakes=False, cut=CUT)
     notch: dict[str, Any] = dict(color=COLORS["ink"], path_effects=halo(CUT, ("free",)))  # as the maps' (r34c)
-    fig.colorbar(image, ax=ax, label="P(valid); the line: threshold", shrink=0.8).ax.axhline(threshold, lw=CUT, **notch)
+    bar = fig.colorbar(image, ax=ax, label=f"P(valid); the line: threshold {threshold:.2f}", shrink=0.8)  # r40c
+    bar.ax.axhline(threshold, lw=CUT, **notch)
     cut = Line2D([], [], linestyle=":", linewidth=CUT, label=f"P(valid) = {threshold:.2f}", **notch)
     x, y = grid.dofs
     _draw_roadmap(ax, nodes, nodes_valid, path, (x, y), edges)
@@ -287,17 +291,14 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     if edges is not None and len(edges):  # thin, under the nodes: a node in collision visibly has none (r29c); ink,
         ends = nodes[np.asarray(edges)][..., [x, y]]  # (E, 2, 2)  seen on the light and the mid greys (r30c)
         ax.add_collection(LineCollection(ends, colors=COLORS["ink"], linewidths=0.5, alpha=0.35, zorder=2.2))  # r32c
-    cross = dict(markersize=10, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True))  # over the path (5);
-    cross.update(markerfacecolor="none", markeredgecolor=ANSWER_COLORS[3], markeredgewidth=2.5, path_effects=halo(2.5))
-    # hollow, a vermillion ring in ink and white: the block's outline shows through it (reader r37c)
-    ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **cross)  # as the maps' squares (r30c)
-    at = nodes[~nodes_valid][:, [x, y]].T  # (2, k) r39c: a cross-hair where each node is, exactly
-    ax.plot(*at, "+", ms=9, mew=1.2, color=COLORS["ink"], zorder=7.5, label="_hair", path_effects=halo(1.2, ("free",)))
+    square = dict(markersize=8, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True))  # filled, over the path
+    ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **square)  # r40c: no hair; its label: where
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
     label = dict(textcoords="offset points", va="center", fontsize=9, zorder=7, bbox=box)
     arrow = dict(arrowstyle="-", color=COLORS["ink"], lw=0.8)  # a leader line to the node it names
     for node in nodes[~nodes_valid][:3]:  # a few named in words too, placed on free cells once laid out (path_map)
-        ax.annotate("in collision", node[[x, y]], xytext=(30, -30), arrowprops=arrow, **label)
+        name = f"in collision\n({node[x]:.1f}, {node[y]:.1f})"  # r40c: where, in numbers
+        ax.annotate(name, node[[x, y]], xytext=(30, -30), arrowprops=arrow, **label)
     ax.plot(
         path[:, x],
         path[:, y],

@@ -130,18 +130,19 @@ def marks_counted(counts: Mapping[str, int], ax, blocks: Mapping[int, int]) -> s
     )
 
 
-LABEL = (66.0, 16.0)  # points: a node's "in collision" label, its box included (9-point text)
+LABEL = (66.0, 28.0)  # points: a node's "in collision" label and its coordinates, two lines, box included (9-point)
 OFFSETS = ((30, -30), (-30, -30), (30, 30), (-30, 30), (40, -8), (-40, -8))  # points from the node, tried in order
 
 
 def labels_clear_of(ax, grid: CSpaceSlice, side, text: str) -> None:
-    """Each annotation ``text`` on ``ax`` moved to the first of :data:`OFFSETS` (points from the point it names, the
-    middle of its nearer side there) where its :data:`LABEL`-sized box lies wholly on the cells of ``side (nx, ny)``
-    inside the map, as ``ax`` is laid out now (reader r39c: "in collision" sat inside the hatched block and hid it)."""
+    """Each annotation starting with ``text`` on ``ax`` moved to the first of :data:`OFFSETS` (points from the point
+    it names, the middle of its nearer side there) where its :data:`LABEL`-sized box lies wholly on the cells of
+    ``side (nx, ny)`` inside the map, as ``ax`` is laid out now (reader r39c: "in collision" sat inside the hatched
+    block and hid it)."""
     first = np.array([axis[0] for axis in grid.axes])  # (2,) the first cell's centre
     cell = np.array([abs(axis[1] - axis[0]) if len(axis) > 1 else 1.0 for axis in grid.axes])  # (2,) data units
     points, side = cell_points(ax, grid), np.asarray(side, dtype=bool)  # one cell, in points; (nx, ny)
-    for label in (t for t in ax.texts if t.get_text() == text):
+    for label in (t for t in ax.texts if t.get_text().startswith(text)):
         for dx, dy in OFFSETS:
             lo = np.array([dx if dx > 0 else dx - LABEL[0], dy - LABEL[1] / 2])  # points: the box's lower left corner
             xs, ys = (np.linspace(lo[k], lo[k] + LABEL[k], 7) / points for k in range(2))  # cells, across the box

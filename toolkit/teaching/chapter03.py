@@ -64,7 +64,8 @@ RUN = {  # the recorded run of each preset the opening table quotes: the `strong
     "paper": "paper",
     "strong": recorded.ALGORITHM_1,
 }
-FIGURE_1 = "recorded run (`--planner paper`, Figure 1's network)"  # the `strong` rows' run, named (reader r34c)
+FIGURE_1 = "recorded run (the one the results page's summary quotes)"  # the `strong` rows' run, named (reader r34c;
+# r40c: "`--planner paper`, Figure 1's network" were words a student had not met)
 OPENING = {  # the opening table's row labels: each says what it is, 3DC-7 where it first appears
     ("Table 2", "2ds"): "the paper's MLP, its Table 2, 2DS",
     ("paper", "2ds"): "our `paper` preset (the toolkit's training recipe of the paper's MLP), 2DS, recorded run",
