@@ -222,6 +222,10 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
     assert ends == sorted((q1, q3) for _, q1, q3 in both)
     legend = fig.legends[0].get_window_extent(fig.canvas.get_renderer())
     assert legend.y0 >= ax.get_tightbbox(fig.canvas.get_renderer()).y1 - 1
+    # reader r40e, home figure 1: the verdicts' icons as the plot draws a point, none half filled
+    entries = zip(fig.legends[0].legend_handles, fig.legends[0].texts, strict=True)
+    icons = [h for h, t in entries if t.get_text().startswith("median ")]
+    assert len(icons) == 3 and {h.get_fillstyle() for h in icons} == {"full"}
     with Image.open(results_figures.CLAIM_FIGURE) as image:
         assert image.info.get("Description") == alt.alt_text(fig), AGAIN
         assert image.size[0] <= COLUMN

@@ -3,7 +3,8 @@
 Reader r39e: markers every few frames on the DoF lines read as roadmap nodes, though the path has only its few
 nodes; and the frame's line crossed a dip beside it, so the frame's P(valid) read as the dip's. So the DoF lines
 lose their markers (line style, colour and the name at each line's end still tell them apart), the path's nodes get a
-tick on each panel's lower edge, and the P(valid) panel a dot at the frame's value and a tick at a dip beside it.
+tick on each panel's lower edge, and the P(valid) panel a dot at the frame's value and a ring at a dip beside it
+(reader r40e: a tick there crossed the threshold).
 """
 
 from __future__ import annotations
@@ -37,7 +38,7 @@ def dip_beside(p: np.ndarray, index: int) -> int | None:
 def mark_series(fig: Figure, index: int, probability, nodes) -> None:
     """On ``fig``'s series panels (each has its frame line, gid ``now``): no markers on the DoF lines (nor in the
     legend), a tick at each of ``nodes (P,)`` (path fractions, or None) on each panel's lower edge, and on the P(valid)
-    panel a dot at frame ``index``'s ``probability`` and a tick at a dip beside it, labelled with its frame."""
+    panel a dot at frame ``index``'s ``probability`` and a ring on a dip beside it, labelled with its frame."""
     panels = [ax for ax in fig.axes if any(line.get_gid() == "now" for line in ax.get_lines())]
     for line in [h for ax in panels for h in ax.get_lines() if h.get_gid() == "dof"]:
         line.set_marker("None")
@@ -69,23 +70,25 @@ def _tick_nodes(panels: list, nodes: np.ndarray) -> None:
 
 
 def _mark_probability(ax, p: np.ndarray, index: int) -> None:
-    """A dot at frame ``index``'s P(valid) ``p (T,)``, and a tick at a dip beside it, labelled with its frame."""
+    """A dot at frame ``index``'s P(valid) ``p (T,)``, and a small ring on a dip beside it, labelled above it."""
     along = np.linspace(0.0, 1.0, len(p))
     dot = dict(marker="o", markersize=7, color=COLORS["occupied"], markeredgecolor=COLORS["ink"], linestyle="None")
     ax.plot(along[index], p[index], gid="frame value", zorder=5, **dot)
     j = dip_beside(p, index)
     if j is None:
         return
-    tick = dict(marker="|", markersize=14, markeredgewidth=1.6, color=COLORS["ink"], linestyle="None")
-    ax.plot(along[j], p[j], gid="dip", zorder=5, **tick)
+    # reader r40e, 05 contradiction 2: a tall tick at 0.575 crossed the dashed 0.570 and hid the line's minimum; a
+    # small hollow ring sits on the value, its label above it and away from the frame's dot
+    ring = dict(marker="o", markersize=5, markerfacecolor=COLORS["free"], markeredgecolor=COLORS["ink"])
+    ax.plot(along[j], p[j], gid="dip", zorder=5, linestyle="None", markeredgewidth=1.2, **ring)
     before = j < index
     ax.annotate(
         f"frame {j}",
         (along[j], p[j]),
-        xytext=(-4 if before else 4, -12),
+        xytext=(-10 if before else 10, 8),
         textcoords="offset points",
         ha="right" if before else "left",
-        va="top",
+        va="bottom",
         fontsize=9,
         color=COLORS["ink"],
     )

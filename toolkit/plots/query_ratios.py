@@ -69,7 +69,7 @@ def own_ratios(
     sampler is written under it, each scenario under its samplers. ``slow``, where given, is a second series of the
     same form (any of the scenarios), drawn hollow beside the first; ``series`` names the two in the legend. ``edge``,
     where given, hatches the band from ``1 - edge`` to ``1 + edge`` round the tie band (:func:`_edge_band`): a cost or
-    saving there lies at the noise edge (review r30f, item 2)."""
+    saving there lies in the noise band (review r30f, item 2)."""
     slow = {} if slow is None else slow
     fig = Figure(figsize=(PAGE_WIDTH, 3.9))
     ax = fig.subplots()
@@ -126,18 +126,18 @@ def _own_axis(ax, drawn: list[float], tie: float, edges: list[float]) -> None:
     shown = sorted({round(s, 2) for s in every if low <= s <= high})
     ax.set_yticks(shown, [f"{s:g}" for s in shown])
     ax.yaxis.set_minor_locator(NullLocator())  # review r27f: an unlabelled tick under 0.7 read as a missing label
-    # reader r36f: no tie-band edges on the right, 15 px from the noise edge's on the left; the legend names the band
+    # reader r36f: no tie-band edges on the right, 15 px from the noise band's on the left; the legend names the band
 
 
 NOISE_WORDS = (  # means_grid's hatching, told apart from own_ratios' (reader r32f: one hatch meant two bands)
     "noise band of a ratio of means, {low:.2f}–{high:.2f}: timing alone moved a ratio of means that far"
 )
 EDGE_WORDS = "noise band of this ratio, {low:.2f}–{high:.2f}: a cost or saving there is no clear evidence"
-EDGE_HATCH, NOISE_HATCH = "///", "\\\\\\"  # own_ratios' noise edge; means_grid's floor, the other slant
+EDGE_HATCH, NOISE_HATCH = "///", "\\\\\\"  # own_ratios' noise band; means_grid's, the other slant
 
 
 def _edge_band(ax, edge: float, tie: float) -> None:
-    """Hatch ``[1 - edge, 1 + edge]`` round the tie band (``tie``): the noise edge, where a median read as a cost or a
+    """Hatch ``[1 - edge, 1 + edge]`` round the tie band (``tie``): the noise band, where a median read as a cost or a
     saving lies within twice timing's own reach of 1, told apart from the clear ones by where it stands."""
     hatch_round(ax, (1 - edge, 1 + edge), tie, EDGE_WORDS.format(low=1 - edge, high=1 + edge).split(":")[0])
 
@@ -163,10 +163,10 @@ def hatch_round(ax, reach: tuple[float, float], tie: float, label: str | None, h
 
 
 def _legend_entries(ax, series: tuple[str, str] | None, edge: tuple[float, float] | None = None) -> None:
-    """The legend's entries: each verdict once, by its colour and shape, half filled (either checker's); and where
-    there are two ``series``, which a point's fill names, on a plain circle. Fill is the checker's cue alone (review
-    r25c: a hollow "saves time" in the legend read as python-fcl's; reader r37f: a filled one, as the compiled
-    checker's); the caption counts which checker's points read as each verdict."""
+    """The legend's entries: each verdict once, by its colour and shape, filled as the plot draws its filled points;
+    and where there are two ``series``, which a point's fill names, on a plain circle. Fill is the checker's cue, said
+    in those two entries alone (reader r40e, home figure 1: a half-filled icon drew a marker the plot never draws);
+    the caption counts which checker's points read as each verdict."""
     for k, reads in enumerate(READS):
         look = series_style(k)
         ax.plot(
@@ -177,8 +177,6 @@ def _legend_entries(ax, series: tuple[str, str] | None, edge: tuple[float, float
             markersize=7,
             label=_read(reads),
             color=look["color"],
-            fillstyle="left" if series else "full",
-            markerfacecoloralt=COLORS["free"],
             markeredgecolor=look["color"],
         )
     if edge:  # drawn here, so the legend lists it under the verdicts (:func:`_edge_band`, ``(edge, tie)``)
