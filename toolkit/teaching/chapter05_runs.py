@@ -30,15 +30,6 @@ def plan_tables(result) -> str:
     )
 
 
-def networks(threshold: float) -> str:
-    """One line under the answer on the network the views show (readers r34e, r39e: the two thresholds are set side
-    by side next to the accuracy table at the end, where both trainings are scored)."""
-    return (
-        f"The views below (sections 5–7) use a retrained copy of the same recipe (threshold {threshold:.2f}); the "
-        "accuracy table at the end scores both."
-    )
-
-
 ROBOTS = {"3do": "youBot-like", "3dc7": "box chain", "3dc9": "box chain"}  # §1's robots, in two words
 
 
