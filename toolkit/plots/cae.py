@@ -48,13 +48,15 @@ def training_curves(
 ) -> Figure:
     """One line per named history (e.g. ``TrainedModels.history["cae"]``), epochs 1, 2, ... on x. Two curves that
     coincide stay visible: each later line is drawn thinner over the earlier ones, and their markers take turns; or,
-    with ``panels``, each line in a panel of its own, all on one y axis (reader r39b: λ = 0 hid under λ = 1e-3)."""
+    with ``panels``, each line in a panel of its own, all on one y axis (reader r39b: λ = 0 hid under λ = 1e-3), its
+    markers on the same epochs as the other panels' (reader r40b: shifted markers made equal curves look unequal)."""
     n = len(histories)
     fig = Figure(figsize=(PAGE_WIDTH, 3.2 if panels else 3.6))
     axes = list(fig.subplots(1, n if panels else 1, sharey=True, squeeze=False)[0])
     for k, (name, history) in enumerate(histories.items()):
-        every = max(1, len(history) // 8)  # about 8 markers a line, each line's shifted: never over each other's
-        style = (series_style(k) if panels else _stacked(k, n)) | dict(markevery=(k * every // n, every), markersize=6)
+        every = max(1, len(history) // 8)  # about 8 markers a line; on one axes each line's shifted off the others'
+        marks = dict(markevery=(0 if panels else k * every // n, every), markersize=6)
+        style = (series_style(k) if panels else _stacked(k, n)) | marks
         axes[k if panels else 0].plot(np.arange(1, len(history) + 1), history, label=name, **style)
         if panels:
             axes[k].set_title(name, fontsize=10)
