@@ -263,6 +263,9 @@ def test_latent_scatter_colors_each_workspace_by_its_value(rng):
             max(occupied["seen"].max(), occupied["unseen"].max()),
         )
     assert bar.get_ylabel() == "occupied share"
+    # reader r40b: chapter 02's two maps, each a figure of its own, on one colour scale when given one
+    fig = latent.latent_scatter(points, color=occupied, color_range=(0.0, 0.5))
+    assert {ax.collections[-1].get_clim() for ax in fig.axes[:-1]} == {(0.0, 0.5)}
 
 
 def test_the_boxes_long_names_wrap_apart():

@@ -205,7 +205,7 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
     ax.set_ylabel("reconstruction accuracy")
     ax.set_title("Above the diagonal: better than all free", fontsize=10)
     handles, labels = ax.get_legend_handles_labels()
-    mean = Line2D([], [], marker="o", linestyle="", markersize=13, fillstyle="none", color=COLORS["reference"], mew=2.2)
+    mean = Line2D([], [], marker="o", linestyle="", markersize=13, fillstyle="none", color=COLORS["reference"], mew=1.3)
     mean_said = "large hollow mark in the group's shape, its thin lines to the axes: the group's mean"
     handles, labels = [*handles, mean], [*labels, mean_said]  # r29b: not in
     fig.legend(handles, labels, loc="outside lower center", fontsize=9, frameon=False)  # the title; below: on no point
@@ -242,7 +242,7 @@ def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int) -> None
         facecolors="none",  # hollow: the points under it show (r20b: a filled mean hid the seen grids at 1.00)
         edgecolors=style["color"],
         marker=style["marker"],
-        linewidths=2.2,
+        linewidths=1.3,  # reader r40b: a thicker ring on the row of seen grids at 1.00 hid some of them
         zorder=1 + k / (n + 1),
         path_effects=halo(1.2, ("ink",)),
         gid=f"{name}: mean",

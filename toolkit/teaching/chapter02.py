@@ -290,10 +290,13 @@ def folded(summary: str, figures: list[Figure]) -> str:
     return f"<details><summary>{summary}</summary>\n" + "\n".join(shown) + "\n</details>"
 
 
-def latent_map(name: str, cae: CAE, trained_on: torch.Tensor, new: torch.Tensor) -> tuple[float, Figure]:
+def latent_map(
+    name: str, cae: CAE, trained_on: torch.Tensor, new: torch.Tensor, shares: tuple[float, float] | None = None
+) -> tuple[float, Figure]:
     """Section 8: ``cae``'s codes of its training grids and of the ``new`` grids on their first two principal
-    directions, coloured by each grid's share of occupied cells; the correlation ``r`` of PC 1 with that share, and the
-    map (the training grids larger when they are few)."""
+    directions, coloured by each grid's share of occupied cells (on the scale ``shares``, lowest to highest, when
+    given: two maps compared on one); the correlation ``r`` of PC 1 with that share, and the map (the training grids
+    larger when they are few)."""
     groups = {"training grids": trained_on, "new grids": new}
     with torch.no_grad():
         codes = {group: cae.encode(grids).numpy() for group, grids in groups.items()}  # (W, latent) each
@@ -304,6 +307,7 @@ def latent_map(name: str, cae: CAE, trained_on: torch.Tensor, new: torch.Tensor)
         points,
         color=occupied,
         color_label="share of occupied cells",
+        color_range=shares,
         highlight="training grids" if len(trained_on) <= FEW else None,
         xlabel=f"PC 1 ({share[0]:.0%} of variance)",
         ylabel=f"PC 2 ({share[1]:.0%})",
