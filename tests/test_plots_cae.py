@@ -263,6 +263,9 @@ def test_latent_scatter_colors_each_workspace_by_its_value(rng):
             max(occupied["seen"].max(), occupied["unseen"].max()),
         )
     assert bar.get_ylabel() == "occupied share"
+    # reader r40b: chapter 02's two maps, each a figure of its own, on one colour scale when given one
+    fig = latent.latent_scatter(points, color=occupied, color_range=(0.0, 0.5))
+    assert {ax.collections[-1].get_clim() for ax in fig.axes[:-1]} == {(0.0, 0.5)}
 
 
 def test_the_boxes_long_names_wrap_apart():
@@ -298,6 +301,8 @@ def test_training_curves_in_panels_give_each_line_its_own_on_one_y_axis():
     same = list(np.linspace(5.0, 1.0, 40))
     fig = plots.training_curves({"lambda 0": same, "lambda 1e-3": same, "lambda 0.961": [9.0] * 40}, panels=True)
     assert [len(ax.get_lines()) for ax in fig.axes] == [1, 1, 1]
+    # reader r40b: the same curve in two panels looks the same, its markers on the same epochs
+    assert len({ax.get_lines()[0].get_markevery() for ax in fig.axes}) == 1
     assert [ax.get_title() for ax in fig.axes] == ["lambda 0", "lambda 1e-3", "lambda 0.961"]
     assert len({ax.get_ylim() for ax in fig.axes}) == 1 and fig.axes[0].get_ylabel().startswith("loss of Eq. (1)")
     assert all(ax.get_yscale() == "log" and ax.get_xlabel() == "epoch" for ax in fig.axes)

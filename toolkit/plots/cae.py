@@ -48,13 +48,15 @@ def training_curves(
 ) -> Figure:
     """One line per named history (e.g. ``TrainedModels.history["cae"]``), epochs 1, 2, ... on x. Two curves that
     coincide stay visible: each later line is drawn thinner over the earlier ones, and their markers take turns; or,
-    with ``panels``, each line in a panel of its own, all on one y axis (reader r39b: λ = 0 hid under λ = 1e-3)."""
+    with ``panels``, each line in a panel of its own, all on one y axis (reader r39b: λ = 0 hid under λ = 1e-3), its
+    markers on the same epochs as the other panels' (reader r40b: shifted markers made equal curves look unequal)."""
     n = len(histories)
     fig = Figure(figsize=(PAGE_WIDTH, 3.2 if panels else 3.6))
     axes = list(fig.subplots(1, n if panels else 1, sharey=True, squeeze=False)[0])
     for k, (name, history) in enumerate(histories.items()):
-        every = max(1, len(history) // 8)  # about 8 markers a line, each line's shifted: never over each other's
-        style = (series_style(k) if panels else _stacked(k, n)) | dict(markevery=(k * every // n, every), markersize=6)
+        every = max(1, len(history) // 8)  # about 8 markers a line; on one axes each line's shifted off the others'
+        marks = dict(markevery=(0 if panels else k * every // n, every), markersize=6)
+        style = (series_style(k) if panels else _stacked(k, n)) | marks
         axes[k if panels else 0].plot(np.arange(1, len(history) + 1), history, label=name, **style)
         if panels:
             axes[k].set_title(name, fontsize=10)
@@ -203,7 +205,7 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
     ax.set_ylabel("reconstruction accuracy")
     ax.set_title("Above the diagonal: better than all free", fontsize=10)
     handles, labels = ax.get_legend_handles_labels()
-    mean = Line2D([], [], marker="o", linestyle="", markersize=13, fillstyle="none", color=COLORS["reference"], mew=2.2)
+    mean = Line2D([], [], marker="o", linestyle="", markersize=13, fillstyle="none", color=COLORS["reference"], mew=1.3)
     mean_said = "large hollow mark in the group's shape, its thin lines to the axes: the group's mean"
     handles, labels = [*handles, mean], [*labels, mean_said]  # r29b: not in
     fig.legend(handles, labels, loc="outside lower center", fontsize=9, frameon=False)  # the title; below: on no point
@@ -240,7 +242,7 @@ def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int) -> None
         facecolors="none",  # hollow: the points under it show (r20b: a filled mean hid the seen grids at 1.00)
         edgecolors=style["color"],
         marker=style["marker"],
-        linewidths=2.2,
+        linewidths=1.3,  # reader r40b: a thicker ring on the row of seen grids at 1.00 hid some of them
         zorder=1 + k / (n + 1),
         path_effects=halo(1.2, ("ink",)),
         gid=f"{name}: mean",

@@ -20,6 +20,7 @@ def latent_scatter(
     *,
     color: dict[str, np.ndarray] | None = None,
     color_label: str = "",
+    color_range: tuple[float, float] | None = None,
     highlight: str | None = None,
     xlabel: str = "PC 1",
     ylabel: str = "PC 2",
@@ -30,13 +31,14 @@ def latent_scatter(
     One panel per group on shared axes, the others grey (a few dozen larger, on top): whether the groups form one cloud
     reads from where the colour lies on the grey, not from telling hundreds of small markers apart by shape.
     ``color[group]`` ``(n,)`` (optional): a value per workspace shown on one shared colour scale (e.g. its share of
-    occupied cells). ``highlight``: a group drawn with larger, thick black-edged markers (e.g. a few training
-    workspaces).
+    occupied cells), from ``color_range`` when given (reader r40b: two maps side by side on one scale), else from the
+    values' own lowest to highest. ``highlight``: a group drawn with larger, thick black-edged markers (e.g. a few
+    training workspaces).
     """
     fig = Figure(figsize=(PAGE_WIDTH, 3.6 if len(points) > 1 else 5.2), layout="constrained")
     axes = fig.subplots(1, len(points), squeeze=False, sharex=True, sharey=True)[0]
     if color:
-        low, high = min(np.min(c) for c in color.values()), max(np.max(c) for c in color.values())
+        low, high = color_range or (min(np.min(c) for c in color.values()), max(np.max(c) for c in color.values()))
     said = []
     for k, (ax, (name, xy)) in enumerate(zip(axes, points.items())):
         xy = np.asarray(xy)

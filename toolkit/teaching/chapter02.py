@@ -5,7 +5,7 @@
 - :func:`memorized`: section 5's sentence on a CAE's scores: memorized, not yet, or above "all free" on new grids;
 - :func:`against_all_free`: one split of a CAE's recorded scores beside "all free";
 - :func:`correlation_in_words`: the size of a correlation in a word (section 8);
-- :func:`answer`: the answer at the top of the page in two sentences and a table of three rows, in this run's
+- :func:`answer`: the answer at the top of the page in two sentences and a table of four rows, in this run's
   numbers: the verdict from the new grids;
 - :func:`fit_cae`: section 4's trainings, each from the same start and batches;
 - :func:`jacobian_norm`, :func:`flipped`, :func:`responses`, :func:`sensitivity`, :func:`flip_counts`: section 6's
@@ -84,13 +84,26 @@ def correlation_in_words(r: float) -> str:
     return "weak" if size < 0.3 else ("moderate" if size < 0.7 else "strong")
 
 
-def answer(paper: Scores, long: Scores, many: Scores, *, n_seen: int, steps: int, many_name: str, n_new: int) -> str:
-    """The answer at the top of the page in two sentences, then its table of three rows, as Markdown (reader r39b: the
-    paper, CAE-long and the many-grids CAE; CAE-preset and the ten test grids are section 5's).
+def answer(
+    paper: Scores,
+    long: Scores,
+    many: Scores,
+    *,
+    preset: Scores,
+    preset_length: str,
+    n_seen: int,
+    steps: int,
+    many_name: str,
+    n_new: int,
+) -> str:
+    """The answer at the top of the page in two sentences, then its table of four rows, as Markdown (reader r39b: the
+    paper, CAE-long and the many-grids CAE; reader r40b: and the CAE the toolkit ships, whose scores a student who
+    repeats the answer would otherwise misdescribe; the ten test grids are section 5's).
 
     ``paper``: Table 1's 2DS row (``seen_acc``, ``unseen_acc``); ``long``: CAE-long (``steps`` steps on ``n_seen``
-    grids), ``seen`` its training grids and ``unseen`` the ``n_new`` new grids; ``many``: the CAE on ``many_name``,
-    ``seen`` being ``n_new`` of its own training grids and ``unseen`` the same ``n_new`` new grids."""
+    grids), ``seen`` its training grids and ``unseen`` the ``n_new`` new grids; ``preset``: the `paper` preset's CAE
+    (CAE-long stopped early, ``preset_length`` its length in words), scored on the same grids; ``many``: the CAE on
+    ``many_name``, ``seen`` being ``n_new`` of its own training grids and ``unseen`` the same ``n_new`` new grids."""
     free = many["unseen_all_free"]  # "all free" on the new grids, the same for every CAE scored there
     table = [
         f"| CAE (2DS) | its training grids | {n_new} new grids |",
@@ -98,6 +111,8 @@ def answer(paper: Scores, long: Scores, many: Scores, *, n_seen: int, steps: int
         f"| paper, Table 1 | {paper['seen_acc']:.0%} | {paper['unseen_acc']:.0%} (its own 10 unseen grids) |",
         f"| CAE-long: the paper's layers and λ, {n_seen} grids, {steps:,} steps "
         f"| {_cell(long['seen_acc'], long['seen_all_free'])} | {_cell(long['unseen_acc'], free)} |",
+        f"| the toolkit's CAE (`paper` preset, chapters 03–04): the same, {preset_length} "
+        f"| {_cell(preset['seen_acc'], preset['seen_all_free'])} | {_cell(preset['unseen_acc'], free)} |",
         f"| the same layers on {many_name} (not the paper's recipe, section 7) "
         f"| {n_new} of them: {_cell(many['seen_acc'], many['seen_all_free'])} | {_cell(many['unseen_acc'], free)} |",
     ]
@@ -235,7 +250,8 @@ def _row(label: str, scores: Scores) -> str:
 
 def closing_table(paper: Scores, rows: Mapping[str, Scores], unseen: str = "unseen") -> str:
     """The closing section's table, as Markdown: Table 1's 2DS row (``paper``'s ``seen_acc`` and ``unseen_acc``),
-    then one row per ``rows`` label with its scores beside "all free", and the optimizer every CAE here shares.
+    then one row per ``rows`` label with its scores beside "all free" (reader r40b: the optimizer they share is said
+    at the top of the page and in its aside, not again here).
     ``unseen`` heads the unseen column: every row of ours scores one set of grids (reader r34b), it names it; the
     paper's cell says its 100 % is on the paper's own 10 unseen grids (reader r35b)."""
     table = [
@@ -244,11 +260,7 @@ def closing_table(paper: Scores, rows: Mapping[str, Scores], unseen: str = "unse
         f"| paper, Table 1 | {paper['seen_acc']:.0%} | {paper['unseen_acc']:.0%} on its own 10 unseen grids (§IV-A) "
         "| not reported |",
     ] + [_row(label, scores) for label, scores in rows.items()]
-    return "\n".join(table) + (
-        "\n\nEvery CAE in this table trains with Adam (AdamW with its weight decay at 0) where the paper uses "
-        "Adagrad at 0.1 (§IV-B3; with our CAE it diverges, "
-        "the aside after section 8), for a number of steps the paper does not give."
-    )
+    return "\n".join(table)
 
 
 def principal_plane(codes: Mapping[str, np.ndarray]) -> tuple[dict[str, np.ndarray], np.ndarray]:
@@ -278,10 +290,13 @@ def folded(summary: str, figures: list[Figure]) -> str:
     return f"<details><summary>{summary}</summary>\n" + "\n".join(shown) + "\n</details>"
 
 
-def latent_map(name: str, cae: CAE, trained_on: torch.Tensor, new: torch.Tensor) -> tuple[float, Figure]:
+def latent_map(
+    name: str, cae: CAE, trained_on: torch.Tensor, new: torch.Tensor, shares: tuple[float, float] | None = None
+) -> tuple[float, Figure]:
     """Section 8: ``cae``'s codes of its training grids and of the ``new`` grids on their first two principal
-    directions, coloured by each grid's share of occupied cells; the correlation ``r`` of PC 1 with that share, and the
-    map (the training grids larger when they are few)."""
+    directions, coloured by each grid's share of occupied cells (on the scale ``shares``, lowest to highest, when
+    given: two maps compared on one); the correlation ``r`` of PC 1 with that share, and the map (the training grids
+    larger when they are few)."""
     groups = {"training grids": trained_on, "new grids": new}
     with torch.no_grad():
         codes = {group: cae.encode(grids).numpy() for group, grids in groups.items()}  # (W, latent) each
@@ -292,6 +307,7 @@ def latent_map(name: str, cae: CAE, trained_on: torch.Tensor, new: torch.Tensor)
         points,
         color=occupied,
         color_label="share of occupied cells",
+        color_range=shares,
         highlight="training grids" if len(trained_on) <= FEW else None,
         xlabel=f"PC 1 ({share[0]:.0%} of variance)",
         ylabel=f"PC 2 ({share[1]:.0%})",
