@@ -158,7 +158,8 @@ def test_the_opening_names_the_statistic_of_no_saving_and_counts_the_means():
     # median, and the section's bullet settles means against medians in one sentence, the paper's statistic first
     assert (  # reader r40g, benchmarks 4: which checker each planner's runs had, said where the claim is
         "In planning against the compiled checker, the larger `strong` network shortened no cell's median query "
-        "(Algorithm 1 on the current compiled checker, our lazy PRM on an older, slower one)." in " ".join(LEAD.split())
+        "(Algorithm 1 on the current compiled checker, our lazy PRM on an older, slower one)."
+        in " ".join(LEAD.split())
         and "A *cell*: one scenario with one sampler." in flat
     )
     assert (
