@@ -106,6 +106,13 @@ def test_the_opening_says_what_a_check_costs_as_the_checker_table_measured_it():
         f"{min(times_less):.1f}–{max(times_less):.1f} times the network's answer, so the network is the cheaper "
         "check only against python-fcl or a mesh obstacle."  # review r25c, item 3: 3DC-7's 8.7, not 9
     ) in LEAD
+    # reader r40g, benchmarks lift 2: the break-even rule, in words a student can repeat, held to the network's cost
+    assert (
+        "does not pay: the network pays only where one exact check costs more than its answer, about a third of a µs"
+        in (LEAD)
+        and 0.25 <= min(x for v in network.values() for x in v)
+        and max(x for v in network.values() for x in v) <= 0.4
+    )
     # reader r39g, benchmarks 1: the `strong` network's cost and python-fcl's over it, read from that run's throughput
     # table in the record, in the planning section, labelled as the network the planner used
     cost, fcl_over = strong_run_costs()
