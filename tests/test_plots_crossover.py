@@ -7,7 +7,7 @@ from matplotlib.collections import PolyCollection
 
 from toolkit.plots import alt
 from toolkit.plots.alt import alt_text
-from toolkit.plots.crossover import CALLS_LEGEND, CALLS_NAME, PAPER_LEGEND, PLANNER_CALLS, TICKS, crossover
+from toolkit.plots.crossover import CALLS_LEGEND, CALLS_NAME, PAPER_LEGEND, PLANNER_CALLS, TICK_POINTS, TICKS, crossover
 from toolkit.plots.tick_rows import SLANT
 from toolkit.util.verdicts import CHEAPER, NEAR
 
@@ -193,9 +193,13 @@ def test_the_recorded_crossover_names_every_measured_value():
     assert two_rows == 0 and slanted == 0
     title = fig.get_suptitle()  # reader r27f: no hatching named where none is drawn; the network's size named
     assert "hatched" not in title and "a paper-size network" in title
-    # reader r39g: the legend beside the panels, right of them, and the shading's one panel named in it
+    # reader r40g: the legend below the panels, inside the figure, in larger type than the ticks; the shading's one
+    # panel named in it; every panel names its y axis
     assert "shaded: network cheaper by > 25% (mesh panel only)" in legend_texts(fig)
-    assert fig.legends[0].get_window_extent().x0 > max(ax.get_window_extent().x1 for ax in fig.axes)
+    legend = fig.legends[0].get_window_extent()
+    assert legend.y1 < min(ax.get_tightbbox().y0 for ax in fig.axes) and legend.width <= fig.bbox.width
+    assert fig.legends[0].get_texts()[0].get_fontsize() > TICK_POINTS
+    assert {ax.get_ylabel() for ax in fig.axes} == {"µs per configuration"}
 
 
 def test_a_3dc_sweep_marks_where_the_paper_s_scenes_sit():

@@ -52,13 +52,12 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
     sweeps = results["variables"]
     columns = min(len(sweeps), 2)
     rows = -(-len(sweeps) // columns)
-    fig = Figure(figsize=(PAGE_WIDTH, 2.9 * rows + 0.7))  # as wide as the page: its text as large as it is drawn
+    fig = Figure(figsize=(PAGE_WIDTH, 2.9 * rows + 0.7 + LEGEND_INCHES))  # as wide as the page: text as drawn
     axes = fig.subplots(rows, columns, squeeze=False).ravel()
     paper = results["scenario"].lower().startswith("3dc")  # the paper's 3DC scenes: where they sit, marked
-    for k, (ax, (key, sweep)) in enumerate(zip(axes, sweeps.items())):
+    for ax, (key, sweep) in zip(axes, sweeps.items()):
         _panel(ax, sweep)
-        if k % columns == 0:  # reader r39g: the unit once a row, the panels wider for it
-            ax.set_ylabel("µs per configuration")
+        ax.set_ylabel("µs per configuration")  # reader r40g: on every panel, the right-hand ones too
         if paper:
             _paper_scenes(ax, key, sweep)
             _planner_calls(ax, key, sweep)
@@ -83,7 +82,7 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
     fig.suptitle(  # the network's size said on the figure (reader r27f: "preset paper" alone was easy to miss)
         f"Cost per check: {scenario_name(results['scenario'])}, {network}{quick}\n{said}", fontsize=11
     )
-    room = _legend_beside(fig, axes, sweeps)
+    room = _legend_below(fig, axes, sweeps)
     fig.tight_layout(rect=room)
     for ax, (key, sweep) in zip(axes, sweeps.items()):
         name_ticks(ax, np.asarray(sweep["values"], dtype=float), TICKS.get(key), TICK_POINTS)
@@ -96,26 +95,32 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
     return describe(fig, text + " ".join(_in_words(sweep) for sweep in sweeps.values()), parts)
 
 
-TITLE_INCHES = 0.55  # the two-line title's height: the panels start under it
-LEGEND_CHARACTERS = 21  # a legend entry's line, characters: the legend beside the panels, as narrow as it reads
+LEGEND_INCHES = 1.4  # the legend's room under the panels: three rows of two entries, three lines each at most
+LEGEND_CHARACTERS = (40, 36, 32, 28)  # a legend entry's line, characters: the longest with two entries side by side
+LEGEND_POINTS = 10  # reader r40g: the legend in larger type than the tick labels
 
 
-def _legend_beside(fig: Figure, axes, sweeps: dict) -> tuple[float, float, float, float]:
-    """One legend for all panels, right of them (reader r39g: above them, it was off screen beside the lower pair),
-    its entries wrapped to :data:`LEGEND_CHARACTERS`; the shading's entry names the panels it is drawn on where that
-    is not all of them. Returns the rectangle, in figure fractions, left for the panels."""
+def _legend_below(fig: Figure, axes, sweeps: dict) -> tuple[float, float, float, float]:
+    """One legend for all panels, below them in two columns (reader r40g: beside them, six long entries in small type
+    squeezed the panels and their labels), its entries wrapped to the longest of :data:`LEGEND_CHARACTERS` that fits;
+    the shading's entry names the panels it is drawn on where that is not all of them. Returns the rectangle, in
+    figure fractions, left for the panels."""
     handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}
     only = [PANEL_NAMES.get(k, k) for k, sweep in sweeps.items() if _cheaper(sweep).any()]
     if SHADED in handles and len(only) < len(sweeps):
         handles[f"{SHADED} ({' and '.join(only)} panel{'s' if len(only) > 1 else ''} only)"] = handles.pop(SHADED)
-    below_title = 1 - TITLE_INCHES / fig.get_figheight()
-    legend = fig.legend(
-        handles.values(), [fill(label, LEGEND_CHARACTERS) for label in handles], loc="center right",
-        bbox_to_anchor=(1, below_title / 2), fontsize=8, frameon=False, labelspacing=0.9, handlelength=1.6,
-        handletextpad=0.5, borderaxespad=0.1,
-    )  # fmt: skip
-    left = legend.get_window_extent(FigureCanvasAgg(fig).get_renderer()).x0  # the legend's left edge, pixels
-    return (0, 0, left / fig.bbox.width, 1)  # the panels left of it; tight_layout keeps them under the title
+    renderer = FigureCanvasAgg(fig).get_renderer()
+    for characters in LEGEND_CHARACTERS:  # the widest lines that keep both columns inside the figure
+        legend = fig.legend(
+            handles.values(), [fill(label, characters) for label in handles], loc="lower center",
+            bbox_to_anchor=(0.5, 0), ncol=2, fontsize=LEGEND_POINTS, frameon=False, labelspacing=0.6,
+            handlelength=1.6, handletextpad=0.5, columnspacing=1.0, borderaxespad=0.1,
+        )  # fmt: skip
+        if legend.get_window_extent(renderer).width <= fig.bbox.width or characters == LEGEND_CHARACTERS[-1]:
+            break
+        legend.remove()
+    top = legend.get_window_extent(renderer).y1  # the legend's top edge, pixels
+    return (0, top / fig.bbox.height, 1, 1)  # the panels above it; tight_layout keeps them under the title
 
 
 PAPER_SCENES = {"obstacles": ((110, 125),), "links": ((2, 2), (4, 4))}  # the paper's 3DC: 110-125 blocks; 2, 4 links
@@ -263,7 +268,7 @@ def _panel(ax, sweep: dict) -> None:
     ax.set_xticks(x, [f"{v:,.0f}" for v in x])  # named once laid out, where they keep apart (name_ticks)
     ax.yaxis.set_minor_locator(NullLocator())
     _plain_log_ticks(ax)
-    ax.set_xlabel(fill(sweep["label"], 26))  # reader r39g: a half-width panel's label in two lines, not past its edge
+    ax.set_xlabel(sweep["label"])  # the legend below: a half-width panel holds its label in one line
     ax.tick_params(labelsize=TICK_POINTS)
 
 
