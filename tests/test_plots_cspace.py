@@ -504,6 +504,25 @@ def test_a_panel_tells_touching_from_overlapping_and_fills_the_overlap(square_wo
     assert contact.contacts(robots.point_robot(), square_world, Q[1]) == [(0, 0, pytest.approx(0.2))]
 
 
+def test_a_youbot_platform_overlapping_a_block_by_a_little_is_filled_and_enlarged_in_an_inset():
+    """Reader r40a: chapter 01's youBot "overlaps block 18 (shelf) by 0.078", a few pixels at one corner, unseen.
+    From above, a platform that only turns about z overlaps a block exactly where its shadow does: that part is
+    filled, and an inset enlarges it; a valid panel has neither."""
+    youbot = scenarios.get("3do").robot
+    world = Workspace(np.zeros(3), np.array([41.0, 41.0, 6.0]), np.array([[[20.0, 10, 0], [22, 22, 1]]]))
+    q = np.array([18.5, 15.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0])  # yawed, the platform's front corner short of x = 20
+    reach = youbot.link_aabbs(q[None])[0, 0, 1, 0]  # the platform's farthest x
+    q[0] += 20.05 - reach  # that corner 0.05 into the block
+    fig = verdict.verdict_figure(exact_checker(world, youbot), np.stack([q - 0.3 * np.eye(8)[0], q]))
+    clear, hit = fig.axes
+    assert "platform overlaps block 0" in hit.get_title() and not _patches(clear, "overlap")
+    (fill,) = _patches(hit, "overlap")
+    assert fill.get_xy()[:, 0].min() == pytest.approx(20.0) and fill.get_xy()[:, 0].max() == pytest.approx(20.05)
+    (inset,) = hit.child_axes
+    assert _patches(inset, "overlap") and inset.get_xlim()[0] < 20.0 < 20.05 < inset.get_xlim()[1]
+    assert not clear.child_axes and "An inset enlarges" in alt_text(fig)
+
+
 def test_a_slice_over_positions_shows_a_pixel_beyond_the_bounds_dark(square_world):
     """Review r26a: the wall's bar at x = 0 merged with the axis's spine; a pixel's width beyond the bounds is drawn
     dark (out of bounds is invalid), and an angle's axis is not padded."""
