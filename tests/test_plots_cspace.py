@@ -7,7 +7,7 @@ against python-fcl), so a figure that drew the wrong cells would fail.
 
 import numpy as np
 import pytest
-from matplotlib.colors import to_hex, to_rgba
+from matplotlib.colors import rgb_to_hsv, to_hex, to_rgba
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Polygon, Rectangle
@@ -432,6 +432,9 @@ def test_the_offices_cabinets_and_desks_differ_in_lightness_and_their_hatches_sh
         faces.setdefault(label, block)
     cabinet, desk = (to_hex(faces[k].get_facecolor()[0][:3]) for k in ("cabinet", "desk"))
     assert palette.contrast(cabinet, desk) >= 3.0
+    table = to_hex(faces["table"].get_facecolor()[0][:3])  # reader r40a: a blue cabinet, a sky-blue table, alike
+    hue = [rgb_to_hsv(to_rgba(c)[:3])[0] for c in (cabinet, table)]
+    assert min(abs(hue[0] - hue[1]), 1 - abs(hue[0] - hue[1])) >= 0.2  # a fifth of a turn round the hue circle
     assert all(block.get_hatch() and block.get_hatch_linewidth() >= 1.2 for k, block in faces.items() if k != "cabinet")
     assert fig.get_figwidth() <= palette.PAGE_WIDTH and fig.legends  # the legend below the view, over no block
 
