@@ -273,7 +273,8 @@ def test_a_figure_of_the_robots_parts_marks_its_base_and_shades_each_link():
 
 def test_a_robot_figures_flat_views_fill_their_width():
     """Reader r39a: chain9's two views were 140 px wide under a wide legend, the youBot's side view sat above an empty
-    band. Flat views: the figure as tall as its panels, drawn to scale, need to fill the page's width."""
+    band. Flat views: the figure as tall as its panels, drawn to scale, need to fill the page's width; one wide panel
+    alone, the youBot's side view, most of it (reader r40a: 280 px across)."""
     robot = robots.box_chain(3)
     q = np.array([5.0, 5.0, 5.0, 0.3, 0.2, 0.0, 1.0, -1.0, 0.8])
     fig = robot_drawing.robot_figure(robot, q, views=("xz", "xy"), margin=0.1, parts=True)
@@ -285,6 +286,7 @@ def test_a_robot_figures_flat_views_fill_their_width():
     side.draw_without_rendering()
     (ax,) = side.axes
     assert ax.get_window_extent().height >= 0.55 * side.bbox.height  # no empty band under the panel
+    assert ax.get_window_extent().width >= 0.6 * palette.PAGE_WIDTH * side.dpi  # reader r40a: its arm in hairlines
 
 
 def test_robot_figure_projects_a_chain_by_forward_kinematics():
