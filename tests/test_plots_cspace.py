@@ -7,7 +7,7 @@ against python-fcl), so a figure that drew the wrong cells would fail.
 
 import numpy as np
 import pytest
-from matplotlib.colors import to_hex, to_rgba
+from matplotlib.colors import rgb_to_hsv, to_hex, to_rgba
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Polygon, Rectangle
@@ -273,7 +273,8 @@ def test_a_figure_of_the_robots_parts_marks_its_base_and_shades_each_link():
 
 def test_a_robot_figures_flat_views_fill_their_width():
     """Reader r39a: chain9's two views were 140 px wide under a wide legend, the youBot's side view sat above an empty
-    band. Flat views: the figure as tall as its panels, drawn to scale, need to fill the page's width."""
+    band. Flat views: the figure as tall as its panels, drawn to scale, need to fill the page's width; one wide panel
+    alone, the youBot's side view, most of it (reader r40a: 280 px across)."""
     robot = robots.box_chain(3)
     q = np.array([5.0, 5.0, 5.0, 0.3, 0.2, 0.0, 1.0, -1.0, 0.8])
     fig = robot_drawing.robot_figure(robot, q, views=("xz", "xy"), margin=0.1, parts=True)
@@ -285,6 +286,7 @@ def test_a_robot_figures_flat_views_fill_their_width():
     side.draw_without_rendering()
     (ax,) = side.axes
     assert ax.get_window_extent().height >= 0.55 * side.bbox.height  # no empty band under the panel
+    assert ax.get_window_extent().width >= 0.6 * palette.PAGE_WIDTH * side.dpi  # reader r40a: its arm in hairlines
 
 
 def test_robot_figure_projects_a_chain_by_forward_kinematics():
@@ -432,6 +434,9 @@ def test_the_offices_cabinets_and_desks_differ_in_lightness_and_their_hatches_sh
         faces.setdefault(label, block)
     cabinet, desk = (to_hex(faces[k].get_facecolor()[0][:3]) for k in ("cabinet", "desk"))
     assert palette.contrast(cabinet, desk) >= 3.0
+    table = to_hex(faces["table"].get_facecolor()[0][:3])  # reader r40a: a blue cabinet, a sky-blue table, alike
+    hue = [rgb_to_hsv(to_rgba(c)[:3])[0] for c in (cabinet, table)]
+    assert min(abs(hue[0] - hue[1]), 1 - abs(hue[0] - hue[1])) >= 0.2  # a fifth of a turn round the hue circle
     assert all(block.get_hatch() and block.get_hatch_linewidth() >= 1.2 for k, block in faces.items() if k != "cabinet")
     assert fig.get_figwidth() <= palette.PAGE_WIDTH and fig.legends  # the legend below the view, over no block
 
@@ -502,6 +507,25 @@ def test_a_panel_tells_touching_from_overlapping_and_fills_the_overlap(square_wo
     (fill,) = _patches(overlapping, "overlap")
     np.testing.assert_allclose(np.sort(fill.get_xy()[:, 0])[[0, -1]], (10.0, 10.2))  # the square's part inside
     assert contact.contacts(robots.point_robot(), square_world, Q[1]) == [(0, 0, pytest.approx(0.2))]
+
+
+def test_a_youbot_platform_overlapping_a_block_by_a_little_is_filled_and_enlarged_in_an_inset():
+    """Reader r40a: chapter 01's youBot "overlaps block 18 (shelf) by 0.078", a few pixels at one corner, unseen.
+    From above, a platform that only turns about z overlaps a block exactly where its shadow does: that part is
+    filled, and an inset enlarges it; a valid panel has neither."""
+    youbot = scenarios.get("3do").robot
+    world = Workspace(np.zeros(3), np.array([41.0, 41.0, 6.0]), np.array([[[20.0, 10, 0], [22, 22, 1]]]))
+    q = np.array([18.5, 15.0, 0.5, 0.0, 0.0, 0.0, 0.0, 0.0])  # yawed, the platform's front corner short of x = 20
+    reach = youbot.link_aabbs(q[None])[0, 0, 1, 0]  # the platform's farthest x
+    q[0] += 20.05 - reach  # that corner 0.05 into the block
+    fig = verdict.verdict_figure(exact_checker(world, youbot), np.stack([q - 0.3 * np.eye(8)[0], q]))
+    clear, hit = fig.axes
+    assert "platform overlaps block 0" in hit.get_title() and not _patches(clear, "overlap")
+    (fill,) = _patches(hit, "overlap")
+    assert fill.get_xy()[:, 0].min() == pytest.approx(20.0) and fill.get_xy()[:, 0].max() == pytest.approx(20.05)
+    (inset,) = hit.child_axes
+    assert _patches(inset, "overlap") and inset.get_xlim()[0] < 20.0 < 20.05 < inset.get_xlim()[1]
+    assert not clear.child_axes and "An inset enlarges" in alt_text(fig)
 
 
 def test_a_slice_over_positions_shows_a_pixel_beyond_the_bounds_dark(square_world):

@@ -82,15 +82,9 @@ def _dof_label(robot: BoxRobot, index: int) -> str:
 # -- workspaces and their grids --------------------------------------------------
 
 
-KIND_ORDER = (
-    0,
-    1,
-    5,
-    3,
-    2,
-    4,
-)  # the office's kinds in CATEGORICAL's colours and hatches: cabinets blue, walls grey (r26a:
-# a blue cabinet and a sky-blue wall looked alike), desks white: cabinets and desks, of about one size, 3:1 apart
+KIND_ORDER = (0, 3, 5, 2, 1, 4)  # the office's kinds (sorted) in CATEGORICAL's colours and hatches: cabinets blue,
+# chairs black (r40a: orange specks unseen), desks white (cabinets and desks, of about one size, 3:1 apart), shelves sky
+# blue (long, unlike a cabinet), tables orange (r40a: a sky-blue table beside a blue cabinet), walls grey (r26a)
 
 
 def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:

@@ -221,11 +221,13 @@ def _panels(views: tuple[str, ...], legend: bool) -> tuple[Figure, dict]:
 def _fit_height(fig: Figure, axes: list, legend: bool) -> None:
     """Flat views only: the figure's height set so that each row's panels, drawn to scale, fill their width (review
     r39a: chain9's two views 140 px wide under a wide legend; the youBot's side view above an empty band). One panel
-    alone is never taller than it is wide."""
+    alone is never taller than it is wide, and one much wider than tall is drawn wider."""
     if any(ax.name == "3d" for ax in axes):
         return
     columns, rows = min(2, len(axes)), -(-len(axes) // 2)
     ratio = max(np.ptp(ax.get_ylim()) / np.ptp(ax.get_xlim()) for ax in axes)  # the tallest window, height / width
+    if columns == 1 and ratio < 0.75:  # one wide panel drawn wider (reader r40a: the youBot's arm in hairlines)
+        fig.set_figwidth(PAGE_WIDTH * 0.85)
     drawn = fig.get_figwidth() / columns - 0.7  # inches: a panel's axes, less its y label and ticks
     ratio = min(max(ratio, 0.3), 1.6 if columns > 1 else 1.0)
     fig.set_size_inches(fig.get_figwidth(), rows * (drawn * ratio + 0.8) + 0.4 * legend)

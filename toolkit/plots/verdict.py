@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch, Polygon, Rectangle
+from matplotlib.path import Path
 
 from toolkit.geometry.checker import CollisionChecker
 from toolkit.geometry.robots import BoxRobot
@@ -61,7 +62,8 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
         ax.set(xlim=(lo[at[0]], hi[at[0]]), ylim=(lo[at[1]], hi[at[1]]))
         name_blocks(ax, workspace, nearby_blocks(workspace, lo, hi), at)  # "18 shelf" (r32a)
         found = [] if ok else contacts(robot, workspace, q)  # (link, block, depth) of each pair that touches
-        _outline_touching(ax, robot, workspace, q, found, plane)
+        fills = _outline_touching(ax, robot, workspace, q, found, plane)
+        _zoom_on_small_fills(ax, fills, robot, q, plane)
         mark_arm(ax, robot, q, view)
         named = [f"{_part(robot, link)} {_met(workspace, block, depth)}" for link, block, depth in found]
         verdict = _valid_title(checker, q) if ok else "in collision:\n" + ("; ".join(named) or "leaves the region")
@@ -74,6 +76,8 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
     marked = " Each link that touches a block is outlined thick, and the block it touches dashed." * (not all(valid))
     marked += f" A key under the panels names {', '.join(named)}."
     marked += " The part of the robot inside a block is filled light." * filled
+    zoomed = any(getattr(ax, "zoomed", False) for ax in axes)
+    marked += " An inset enlarges a fill too small to see at the panel's scale." * zoomed
     text = f"The {robot.name} robot at {len(Q)} configurations side by side, seen in the {view} plane with the blocks "
     text += "near it, each panel framing the same window, each titled with the exact checker's verdict: " + "; ".join(
         f"configuration {i + 1}, {v}" for i, v in enumerate(said)
@@ -106,23 +110,68 @@ def _valid_title(checker: CollisionChecker, q: np.ndarray) -> str:
     return f"valid: at least {gap:.2g} clear\nof every block and wall" if gap > 0 else "valid"
 
 
-def _outline_touching(ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray, found, plane: tuple[int, int]) -> None:
-    """Outline thick each link box of ``found`` (link, block, depth) at ``q`` and, dashed, the block it touches; a 2D
-    link's part inside the block filled (review r31a: "0.2 into the block" looked as if it touched)."""
+def _outline_touching(
+    ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray, found, plane: tuple[int, int]
+) -> list[tuple[np.ndarray, np.ndarray, np.ndarray, np.ndarray]]:
+    """Outline thick each link box of ``found`` (link, block, depth) at ``q`` and, dashed, the block it touches; a
+    link's part inside the block filled where the flat view shows it exactly (review r31a: "0.2 into the block"
+    looked as if it touched): in 2D, and from above for a link that only turns about z (review r40a: the youBot's
+    platform "overlaps by 0.078" unseen), whose overlap is its shadow's times a height. Returns each fill with its
+    link's outline and its block's corners in the view (fill, link, block lo, block hi)."""
     centers, rotations, half = robot.link_boxes(q[None])
     thick: dict[str, Any] = dict(fill=False, edgecolor=COLORS["ink"], linewidth=2.5)
     at = list(plane)
+    fills = []
     for link, block, depth in found:
         b_lo, b_hi = workspace.boxes[block]
         ax.add_patch(Rectangle(b_lo[at], *(b_hi - b_lo)[at], linestyle="--", gid="touched block", zorder=4, **thick))
         corners = outline(box_corners(centers[0, link], rotations[0, link], half[link]), plane)
         ax.add_patch(Polygon(corners, gid="touching link", zorder=5, **thick))
-        inside = clip_to_box(corners, b_lo[at], b_hi[at]) if robot.dim == 2 and depth > 0 else np.zeros((0, 2))
-        if len(inside) > 2:  # in 3D a shadow's overlap need not be the boxes' own: nothing filled
-            light: dict[str, Any] = dict(
-                facecolor=COLORS["overlap"], edgecolor=COLORS["ink"], linewidth=1
-            )  # over the outlines
-            ax.add_patch(Polygon(inside, gid="overlap", zorder=6, **light))
+        upright = robot.dim == 3 and plane == (0, 1) and abs(rotations[0, link, 2, 2]) > 1 - 1e-9
+        exact = robot.dim == 2 or upright  # elsewhere a shadow's overlap need not be the boxes' own: nothing filled
+        inside = clip_to_box(corners, b_lo[at], b_hi[at]) if exact and depth > 0 else np.zeros((0, 2))
+        if len(inside) > 2:
+            ax.add_patch(Polygon(inside, gid="overlap", zorder=6, **OVERLAP_STYLE))  # over the outlines
+            fills.append((inside, corners, b_lo[at], b_hi[at]))
+    return fills
+
+
+OVERLAP_STYLE: dict[str, Any] = dict(facecolor=COLORS["overlap"], edgecolor=COLORS["ink"], linewidth=1)
+
+
+def _zoom_on_small_fills(ax, fills, robot: BoxRobot, q: np.ndarray, plane: tuple[int, int]) -> None:
+    """An inset enlarging a fill under a twentieth of the panel's width (review r40a: 0.078 of overlap was a few
+    pixels at a corner), in the panel's corner farthest from the robot, its window marked in the panel."""
+    if not fills:
+        return
+    points = np.concatenate([f[0] for f in fills])  # (m, 2)
+    f_lo, f_hi = points.min(axis=0), points.max(axis=0)
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    if (f_hi - f_lo).max() >= (x1 - x0) / 20:
+        return
+    half = max((f_hi - f_lo).max() * 1.5, (x1 - x0) / 40)
+    mid = (f_lo + f_hi) / 2
+    centers, rotations, halves = robot.link_boxes(q[None])
+    shapes = [Path(outline(box_corners(c, r, h), plane)) for c, r, h in zip(centers[0], rotations[0], halves)]
+    shapes += [Path(np.array([f[2], (f[3][0], f[2][1]), f[3], (f[2][0], f[3][1])])) for f in fills]  # their blocks
+    grid = np.stack(np.meshgrid(np.linspace(0, 0.38, 12), np.linspace(0, 0.38, 12)), axis=-1).reshape(-1, 2)
+    corners = [(a, b) for a in (0.03, 0.59) for b in (0.03, 0.59)]  # the inset's lower left corner, axes fraction
+
+    def covered(c) -> int:  # how much of the robot and the touched blocks the inset would hide
+        points = np.array([x0, y0]) + (grid + c) * np.array([x1 - x0, y1 - y0])
+        return sum(int(shape.contains_points(points).sum()) for shape in shapes)
+
+    inset = ax.inset_axes([*min(corners, key=covered), 0.38, 0.38])
+    for fill, link, b_lo, b_hi in fills:
+        inset.add_patch(Rectangle(b_lo, *(b_hi - b_lo), alpha=0.5, zorder=0.9, **BLOCK_STYLE))
+        inset.add_patch(Rectangle(b_lo, *(b_hi - b_lo), fill=False, edgecolor=COLORS["ink"], linewidth=2, ls="--"))
+        inset.add_patch(Polygon(link, linewidth=2, **link_style(INVALID_COLOR)))
+        inset.add_patch(Polygon(fill, gid="overlap", zorder=6, **OVERLAP_STYLE))
+    inset.set(xlim=(mid[0] - half, mid[0] + half), ylim=(mid[1] - half, mid[1] + half), xticks=[], yticks=[])
+    inset.set_aspect("equal")
+    inset.set_title(f"zoom x{(x1 - x0) / (2 * half):.0f}", fontsize=8, pad=2)
+    ax.indicate_inset_zoom(inset, edgecolor=COLORS["ink"])
+    ax.zoomed = True
 
 
 def mark_arm(ax, robot: BoxRobot, q: np.ndarray, view: str) -> None:
