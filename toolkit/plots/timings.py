@@ -65,7 +65,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         ax.set_title(
             f"{title}: above a pair, the median of each query's ratio{note}",  # reader r31d: one line, not three
             fontsize=9,
-            pad=40,
+            pad=26,
         )
         said.append(_stage_words(title, names, table, ratio, bars, crossed))
         said[-1] += cut_in_words(
