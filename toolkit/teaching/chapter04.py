@@ -236,9 +236,9 @@ def mark_line(tables: Tables | None = None) -> str:
         return f"{bands[kind][0]:.2f}–{bands[kind][1]:.2f}"
 
     return (
-        f"{costs.MARK} on a verdict, in every table of this page: inside the noise band of its statistic: no clear "
-        f"evidence. The noise band (hatched) is how far timing one computation twice moved the statistic, doubled: "
-        f"{band('own')} for the median query, {band('means')} for a ratio of mean times (`docs/results.md`)."
+        f"{costs.MARK} on a verdict, in every table of this page, means inside the noise band of its statistic: no "
+        "clear evidence. The noise band (hatched) is how far timing one computation twice moved the statistic, "
+        f"doubled: {band('own')} for the median query, {band('means')} for a ratio of mean times (`docs/results.md`)."
     )
 
 
