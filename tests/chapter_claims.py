@@ -494,8 +494,10 @@ def _checked_verdicts(header: list[str], row: list[str], j: int, moved: bool = F
         low, high = findings.noise_band()
         few = int(row[header.index("queries")]) < 2
         medians = {findings.time_verdict(max(numbers[0] + d, 1e-9)) for d in shifts}
-        inside = {
-            few or (low < numbers[0] + d < high and findings.time_verdict(numbers[0] + d) != findings.TIES)
+        inside = {  # r40d: inside the noise band, or (a few live queries) the middle half across the tie band
+            few
+            or findings.time_verdict(max(numbers[1] + d, 1e-9), max(numbers[2] + d, 1e-9)) == findings.UNSURE
+            or (low < numbers[0] + d < high and findings.time_verdict(numbers[0] + d) != findings.TIES)
             for d in shifts
         }
         if marked not in inside and not (marked and moved):

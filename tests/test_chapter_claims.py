@@ -808,7 +808,11 @@ def test_a_second_table_in_one_output_is_read_apart_and_held_to_the_page_width()
         ([0.5, 0.5, 0.6], "0.50 (middle half 0.50–0.55), prediction saved time."),
         ([2.0, 2.0, 2.5], "2.00 (middle half 2.00–2.25), prediction cost time."),
         ([1.0, 1.05, 1.1], "1.05 (middle half 1.02–1.08), a tie: less than 10% from 1, neither saved nor cost."),
-        ([0.8, 1.12, 1.3], "1.12 (middle half 0.96–1.21), no clear evidence (\\*): inside the noise band."),
+        (
+            [0.8, 1.12, 1.3],
+            "1.12 (middle half 0.96–1.21), no clear evidence (\\*): inside the noise band, or its middle half reaches "
+            "across the tie band.",
+        ),
     ],
 )
 def test_the_answers_sentence_says_what_its_interval_says(with_, words):

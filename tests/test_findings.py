@@ -82,12 +82,13 @@ def test_planning_verdict_pairs_each_query_with_itself():
     assert said == findings.COSTS  # its median, 2.0, lies above the noise band
     assert findings.planning_verdict(row([1.0, 1.0, 1.0, 1.0], [0.5, 0.6, 0.7, 0.8]))[3] == findings.SAVES
     assert findings.planning_verdict(row([1.0, 1.0, 1.0, 1.0], [0.95, 1.0, 1.02, 1.05]))[3] == findings.TIES
-    assert findings.planning_verdict(row([1.0, 1.0, 1.0, 1.0], [0.5, 0.8, 1.3, 2.0]))[3] == findings.TIES  # 1.05
+    assert findings.planning_verdict(row([1.0, 1.0, 1.0, 1.0], [0.5, 0.8, 1.3, 2.0]))[3] == findings.UNSURE  # across
     low, high = findings.noise_band()  # reader r40d: a saving or cost inside the noise band is no clear evidence
     assert low < 0.9 and high > 1.1
-    inside = row([1.0] * 4, [0.5, high - 0.02, high - 0.02, 2.0])  # a cost just inside the band: no clear evidence
+    inside = row([1.0] * 4, [high - 0.03, high - 0.02, high - 0.02, high - 0.01])  # a cost inside the band
     assert findings.planning_verdict(inside)[3] == findings.UNSURE
-    assert findings.planning_verdict(row([1.0] * 4, [0.5, high + 0.02, high + 0.02, 2.0]))[3] == findings.COSTS
+    beyond = row([1.0] * 4, [high + 0.01, high + 0.02, high + 0.02, high + 0.03])
+    assert findings.planning_verdict(beyond)[3] == findings.COSTS
     assert findings.planning_verdict(row([1.0], [0.1]))[3] == findings.UNSURE  # one query is no interval
 
 

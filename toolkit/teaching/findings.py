@@ -53,12 +53,13 @@ def planning_verdict(
     row: Mapping[str, Mapping], tie: float = TIE, band: tuple[float, float] | None = None
 ) -> tuple[float, float, float, str]:
     """The per-query ratios' median and quartiles, and the median's verdict: :data:`UNSURE` where that saving or cost
-    lies inside the noise band (``band``, else :func:`noise_band`), or with fewer than two queries."""
+    lies inside the noise band (``band``, else :func:`noise_band`), where the middle half reaches across the tie band
+    (a few live queries: a busy machine must not flip a verdict), or with fewer than two queries."""
     ratios = per_query_ratios(row)
     q1, median, q3 = (float(v) for v in np.percentile(ratios, (25, 50, 75)))
     low, high = noise_band() if band is None else band
-    said = time_verdict(median, tie=tie)
-    return median, q1, q3, UNSURE if len(ratios) < 2 or (said != TIES and low < median < high) else said
+    said, across = time_verdict(median, tie=tie), len(ratios) < 2 or time_verdict(q1, q3, tie) == UNSURE
+    return median, q1, q3, UNSURE if across or (said != TIES and low < median < high) else said
 
 
 def planning_table(
@@ -98,7 +99,7 @@ SAID = {  # a planning verdict at the end of a sentence (its band filled in)
     SAVES: "prediction saved time",
     COSTS: "prediction cost time",
     TIES: "a tie: less than {band} from 1, neither saved nor cost",
-    UNSURE: "no clear evidence (\\*): inside the noise band",
+    UNSURE: "no clear evidence (\\*): inside the noise band, or its middle half reaches across the tie band",
 }
 
 
