@@ -49,14 +49,14 @@ def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_th
     hatched = answer_ratios(rows, tie=findings.TIE, means=means, names=chapter04.SERIES, floor=(0.84, 1.24))
     top = hatched.axes[0]
     assert [p.get_hatch() for p in top.patches].count(query_ratios.NOISE_HATCH) == 2  # below and above the tie band
-    assert hatched.legends[0].get_texts()[0].get_text() == "timing noise (means), 0.84–1.24"
-    assert "hatched round the tie band, timing noise (means), 0.84–1.24: the lowest and highest" in alt_text(hatched)
+    assert hatched.legends[0].get_texts()[0].get_text() == "noise band (means), 0.84–1.24"
+    assert "hatched round the tie band, noise band (means), 0.84–1.24: the lowest and highest" in alt_text(hatched)
     both = answer_ratios(  # reader r36d: the lower panel draws the median's band too
         rows, tie=findings.TIE, means=means, names=chapter04.SERIES, floor=(0.84, 1.24), median_floor=(0.82, 1.18)
     )
     assert [p.get_hatch() for p in both.axes[1].patches].count(query_ratios.NOISE_HATCH) == 2
-    assert both.legends[1].get_texts()[0].get_text() == "timing noise (medians), 0.82–1.18"
-    assert "Hatched round the tie band below, timing noise (medians), 0.82–1.18" in alt_text(both)
+    assert both.legends[1].get_texts()[0].get_text() == "noise band (medians), 0.82–1.18"
+    assert "Hatched round the tie band below, noise band (medians), 0.82–1.18" in alt_text(both)
     said = alt_text(fig)
     assert "Above, means, Table 3's statistic: the paper's squares beside our two series' means, 48 points" in said
     assert "Below, our medians of each query's own ratio, hollow" in said and "32 points, 3 of them at or below" in said

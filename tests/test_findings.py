@@ -79,10 +79,16 @@ def test_planning_verdict_pairs_each_query_with_itself():
     assert (
         median == pytest.approx(2.0) and q1 == pytest.approx((0.667 + 2.0) / 2, abs=1e-3) and q3 == pytest.approx(4.0)
     )
-    assert said == findings.COSTS  # its quartiles, 1.33 and 4.0, lie above 1.1
+    assert said == findings.COSTS  # its median, 2.0, lies above the noise band
     assert findings.planning_verdict(row([1.0, 1.0, 1.0, 1.0], [0.5, 0.6, 0.7, 0.8]))[3] == findings.SAVES
     assert findings.planning_verdict(row([1.0, 1.0, 1.0, 1.0], [0.95, 1.0, 1.02, 1.05]))[3] == findings.TIES
-    assert findings.planning_verdict(row([1.0, 1.0, 1.0, 1.0], [0.5, 0.8, 1.3, 2.0]))[3] == findings.UNSURE
+    assert findings.planning_verdict(row([1.0, 1.0, 1.0, 1.0], [0.5, 0.8, 1.3, 2.0]))[3] == findings.UNSURE  # across
+    low, high = findings.noise_band()  # reader r40d: a saving or cost inside the noise band is no clear evidence
+    assert low < 0.9 and high > 1.1
+    inside = row([1.0] * 4, [high - 0.03, high - 0.02, high - 0.02, high - 0.01])  # a cost inside the band
+    assert findings.planning_verdict(inside)[3] == findings.UNSURE
+    beyond = row([1.0] * 4, [high + 0.01, high + 0.02, high + 0.02, high + 0.03])
+    assert findings.planning_verdict(beyond)[3] == findings.COSTS
     assert findings.planning_verdict(row([1.0], [0.1]))[3] == findings.UNSURE  # one query is no interval
 
 
@@ -91,17 +97,17 @@ def test_planning_table_is_a_markdown_table_with_a_verdict_per_row():
         {"3DC-7": {"BS": row([0.1, 0.1, 0.1], [0.2, 0.2, 0.2]), "OB": row([0.1, 0.1, 0.1], [0.05, 0.05, 0.05])}}
     )
     lines = table.splitlines()
-    assert lines[0].startswith("| scenario | sampler | with / without: verdict")  # the verdict before the numbers
+    assert lines[0].startswith("| scenario | sampler | with ÷ without: verdict")  # the verdict before the numbers
     assert lines[2] == "| 3DC-7 | BS | costs time<br>(median 2.00; middle half 2.00–2.00) | 100 / 200 | 3 |"
     assert lines[3] == "| 3DC-7 | OB | saves time<br>(median 0.50; middle half 0.50–0.50) | 100 / 50 | 3 |"
     assert "\n    " not in table  # never pre-wrapped
     # reader r31d: where the same exact check's cost moved between the modes, the table says no clear evidence as the
     # sentence under it does, not a plain "costs time"; r37d: with the page's one mark, \*
     moved = findings.planning_table({"3DC-7": {"BS": row([0.1] * 3, [0.2] * 3)}}, moved={"3DC-7": 1.8, "2DS": None})
-    assert moved.splitlines()[2].startswith("| 3DC-7 | BS | costs time?<br>(median 2.00;")
-    across = findings.planning_table({"2DS": {"OB": row([1.0] * 4, [0.8, 1.0, 1.4, 1.6])}}, planner="lazy PRM")
+    assert moved.splitlines()[2].startswith("| 3DC-7 | BS | costs time\\*<br>(median 2.00;")
+    across = findings.planning_table({"2DS": {"OB": row([1.0] * 4, [0.8, 1.0, 1.24, 1.6])}}, planner="lazy PRM")
     assert across.splitlines()[0].startswith("| scenario (lazy PRM) | sampler |")
-    assert across.splitlines()[2].startswith("| 2DS | OB | costs time?<br>(median 1.20; middle half 0.95–1.45)")
+    assert across.splitlines()[2].startswith("| 2DS | OB | costs time\\*<br>(median 1.12; middle half 0.95–1.33)")
     assert findings.planning_table({"3DC-7": {"BS": row([0.1] * 3, [0.2] * 3)}}, moved={"3DC-7": None}) == "\n".join(
         lines[:3]
     )
@@ -268,7 +274,7 @@ def test_planning_sentence_says_cant_tell_where_the_same_exact_check_moved():
     assert ratio == pytest.approx(1.59)
     said = findings.planning_sentence("Algorithm 1", slower, moved=ratio)
     assert said.endswith(
-        "2.00 (middle half 2.00–2.00), no clear evidence (?): the connection stage took 1.59 times as long an edge "
+        "2.00 (middle half 2.00–2.00), no clear evidence (\\*): the connection stage took 1.59 times as long an edge "
         "point with prediction, so its time holds more than the exact checks of points (the line under the tables says "
         "what)."
     )

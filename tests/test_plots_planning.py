@@ -244,7 +244,8 @@ def test_stage_times_one_stacked_bar_per_sampler_and_mode_with_the_given_heights
         assert np.isclose(segment[0, 0], bar.get_x() + bar.get_width() / 2)
         assert all(not b.get_x() <= segment[0, 0] <= b.get_x() + b.get_width() for b in stacks if b is not bar)
     # above each pair the median of the queries' own ratios (0.5, 0.6, 1.2), not the ratio of the median totals (0.5)
-    assert [t.get_text() for t in ax.texts] == ["0.60x\n(bars 0.50x)"] * 4  # reader r38d: the bars' ratio beside it
+    assert [t.get_text() for t in ax.texts] == ["0.60x"] * 4  # reader r40d: one ratio a pair
+    assert "the bars' own ratio 0.50x" in alt.alt_text(ax.figure)  # the bars' quotient in the figure's words
     assert [t.get_text() for t in ax.get_xticklabels()][:2] == ["BS\nwithout", "BS\nwith"]
     assert ax.get_ylim()[1] > 1500 * MEDIANS["BT"]["without"]["total_s"]  # every whisker within 2x the bars: whole
 
@@ -260,12 +261,12 @@ def test_a_pair_whose_taller_bar_says_the_other_way_is_starred_and_told():
     fig = timings.stage_times({"2DS": planning})
     ax = fig.axes[0]
     assert [t.get_text() for t in ax.texts] == [
-        "0.60x\n(bars 0.50x)",
-        "0.60x†\n(bars 1.03x)",
-        *["0.60x\n(bars 0.50x)"] * 2,
+        "0.60x",
+        "0.60x†",
+        *["0.60x"] * 2,
     ]
     assert "median of each query's ratio" in ax.get_title() and "†: the bars say the other way" in ax.get_title()
-    assert "0.60x, though the bar with prediction is the taller" in alt.alt_text(fig)
+    assert "0.60x; the bars' own ratio 1.03x, though the bar with prediction is the taller" in alt.alt_text(fig)
     untold = timings.stage_times({"2DS": PLANNING}).axes[0].get_title()
     assert "†" not in untold and "other way" not in untold  # reader r31d: no mark promised where none is drawn
 
@@ -412,3 +413,11 @@ def test_segment_table_gives_the_bars_segments_in_ms():
     assert len(lines) == 2 + len(PLANNING) and lines[2].startswith(f"| 2DS, {next(iter(PLANNING))} | ")
     bars = timings._stage_table(PLANNING, list(PLANNING))
     assert lines[2].split(" | ")[1] == f"{bars['sampling_s'][0, 0]:.1f} / {bars['sampling_s'][0, 1]:.1f}"
+
+
+def test_roadmap_steps_titles_number_each_step_and_leave_the_ring_to_the_legend(exact):
+    """Reader r40d: "round 1, repair: ... where the removed edge enters a C-obstacle" ran over its neighbours' titles;
+    now "2 repair" and its counts on a second line, the ring named in the legend only."""
+    fig = planning.roadmap_steps(exact, [a_repair_step()] * 3, columns=2)
+    titles = [ax.get_title() for ax in fig.axes if ax.axison]
+    assert titles == [f"{k} repair\n5 nodes, 5 edges, round 2" for k in (1, 2, 3)]

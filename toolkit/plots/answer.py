@@ -108,10 +108,10 @@ def _median_words(band: tuple[float, float] | None, below: bool) -> str:
 
 
 NOISE_WORDS = (  # reader r37d: why it is not symmetric round 1
-    "timing noise (means), {low:.2f}–{high:.2f}: the lowest and highest ratio of means that timing one computation "
+    "noise band (means), {low:.2f}–{high:.2f}: the lowest and highest ratio of means that timing one computation "
     "twice gave, measured, so not symmetric round 1"
 )
-MEDIAN_NOISE = "timing noise (medians), {low:.2f}–{high:.2f}: twice as far as timing alone moved a median"
+MEDIAN_NOISE = "noise band (medians), {low:.2f}–{high:.2f}: twice as far as timing alone moved a median"
 
 
 def _floor(ax, floor: tuple[float, float], tie: float, words: str = NOISE_WORDS) -> None:

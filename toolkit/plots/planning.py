@@ -231,7 +231,7 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
 EDGE_WORDS = "edge: predicted free, not yet checked"  # reader r31d: the thin edges named in the legend
 
 
-def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
+def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) -> None:
     """One planner step: edges, nodes (hollow: not yet confirmed exactly), start and goal, the candidate path,
     and what a repair removes (thick, and X at removed nodes); a legend names them."""
     _draw_cspace(ax, exact)
@@ -265,7 +265,7 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
             ),
             path_effects=outline,
         )
-    hits = _removed_edges(ax, exact, P[step.edges[removed_edge]])
+    _removed_edges(ax, exact, P[step.edges[removed_edge]])
     ax.scatter(
         *P[step.removed_nodes].T,
         s=70,
@@ -287,20 +287,20 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep) -> None:
             clip_on=False,  # whole at the edge of the C-space, where start and goal often lie
         )
     _margin(ax)
-    where = "\nring: where the removed edge enters a C-obstacle" if hits else ""  # reader r33d: words, not (x, y)
-    ax.set_title(f"round {step.round}, {step.stage}:\n{len(P)} nodes, {len(step.edges)} edges{where}", fontsize=10)
+    head = f"{number} {step.stage}" if number else f"round {step.round}, {step.stage}:"  # r40d: the ring in the legend
+    counts = f"{len(P)} nodes, {len(step.edges)} edges" + (f", round {step.round}" if number else "")
+    ax.set_title(f"{head}\n{counts}", fontsize=10)
 
 
-def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: int = 201) -> list[tuple[float, float]]:
+def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: int = 201) -> None:
     """The edges a repair removes, ``segments (R, 2, 2)``, thick, and where each first enters a C-obstacle, a ring
-    (review r25a: at the page's size one could not see whether the edge cut the block or grazed it); returns those
-    points; the panel's title names the ring (reader r33d: in words, not its coordinates)."""
+    (review r25a: at the page's size one could not see whether the edge cut the block or grazed it); the legend names
+    the ring (reader r40d: not the panel's title, which ran over its neighbours')."""
     removed = LineCollection(
         list(segments), colors=REPAIR_COLOR, linewidths=4.5, zorder=5, label="edge removed by a repair"
     )
     removed.set_path_effects(halo(4.5))
     ax.add_collection(removed)
-    hits = []
     for a, b in segments:
         Q = a + np.linspace(0.0, 1.0, points)[:, None] * (b - a)
         hit = np.flatnonzero(~exact.are_valid(Q))
@@ -308,8 +308,6 @@ def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: in
             x, y = Q[hit[0]]
             ring = dict(s=160, facecolors="none", edgecolors=COLORS["ink"], linewidths=2.2, zorder=7)
             ax.scatter([x], [y], **ring, label="where a removed edge enters a C-obstacle")  # review r29d: named
-            hits.append((float(x), float(y)))
-    return hits
 
 
 def _margin(ax, share: float = 0.04) -> None:
@@ -348,8 +346,8 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
     below = 1.0 if len(steps) == rows * columns else 0.0  # r39d: no empty slot, so the legend's rows go below
     fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / columns * 1.08 * rows + 0.4 + below), layout="constrained")
     axes = fig.subplots(rows, columns, squeeze=False).ravel()
-    for ax, step in zip(axes, steps):
-        _draw_roadmap(ax, exact, step)
+    for k, (ax, step) in enumerate(zip(axes, steps), start=1):
+        _draw_roadmap(ax, exact, step, number=k)
     for ax in axes[len(steps) :]:
         ax.set_axis_off()  # an empty slot: the legend goes there
     title = f"The lazy PRM with edge screening: {len(steps)} of {of or len(steps)} steps"  # its edges predicted

@@ -56,7 +56,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         crossed = (bars - 1) * (np.asarray(ratio) - 1) < 0  # (samplers,): the taller bar says the other way
         for i, r in enumerate(ratio):  # above the frame, over the pair and a cut whisker's end: never on a bar
             where = dict(xycoords=("data", "axes fraction"), xytext=(0, 13), textcoords="offset points")
-            label = f"{r:.2f}x{'†' if crossed[i] else ''}\n(bars {bars[i]:.2f}x)"  # r38d: both; r39d: over its pair
+            label = f"{r:.2f}x{'†' if crossed[i] else ''}"  # r40d: one ratio a pair; the bars' own in the words
             ax.annotate(label, (i, 1.0), ha="center", va="bottom", fontsize=9, weight="bold", **where)
         ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=9)
         ax.set_xlabel("sampler, without / with prediction")
@@ -65,7 +65,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         ax.set_title(
             f"{title}: above a pair, the median of each query's ratio{note}",  # reader r31d: one line, not three
             fontsize=9,
-            pad=40,
+            pad=26,
         )
         said.append(_stage_words(title, names, table, ratio, bars, crossed))
         said[-1] += cut_in_words(
@@ -92,13 +92,15 @@ def stage_times(panels: dict[str, dict]) -> Figure:
 
 def _stage_words(title: str, names: list[str], table: dict, ratio: list[float], bars, crossed) -> str:
     """:func:`stage_times`' words for one panel: each sampler's median totals without and with prediction and the
-    median of its queries' ratios, with which bar is taller where the two say opposite things."""
+    median of its queries' ratios, the bars' own ratio (reader r40d: not over the pair), and which bar is taller where
+    the two say opposite things."""
     words = []
     for i, s in enumerate(names):
         taller = ", though the bar with prediction is the " + ("shorter" if bars[i] < 1 else "taller")
         words.append(
             f"{s} {ms_text(table['total_s'][i, 0])} ms without, {ms_text(table['total_s'][i, 1])} ms with "
-            f"(the median of each query's ratio {ratio[i]:.2f}x{taller if crossed[i] else ''})"
+            f"(the median of each query's ratio {ratio[i]:.2f}x; the bars' own ratio {bars[i]:.2f}x"
+            f"{taller if crossed[i] else ''})"
         )
     return f"{title}: " + ", ".join(words)
 

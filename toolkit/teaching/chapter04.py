@@ -1,13 +1,10 @@
-"""Chapter 04's tables of its own small runs, built here so that the page shows the tables, not their formatting
-(review r25a): :func:`repairs_table` (section 2), :func:`path_checks` (section 3's success and re-checked paths),
-:func:`eager_tables` (section 5); and the answer read from ``docs/results.md``: :func:`answer` at the top,
-:func:`answer_figure` under it, :func:`full_answer` and :func:`edge_line` in section 6.
-"""
+"""Chapter 04's tables of its own small runs (section 2's repairs, section 3's checks, section 5's counts), and the
+answer read from ``docs/results.md``: :func:`answer`, :func:`answer_figure` and :func:`mark_line` at the top,
+:func:`full_answer`, :func:`edge_line` and :func:`by_means` in section 6 (the page shows tables, not formatting)."""
 
 from __future__ import annotations
 
 import os
-from collections import Counter
 from collections.abc import Mapping
 
 import numpy as np
@@ -189,10 +186,27 @@ def other_line(records: Mapping[str, list[dict]]) -> str:
 
 
 def answer(tables: Tables | None = None) -> str:
-    """Chapter 04's answer from ``docs/results.md``: the median query, then one sentence by means (r39d); why; cost."""
+    """Chapter 04's answer from ``docs/results.md`` in two plain sentences, one statistic, the median query (reader
+    r40d, lift 1): our fast checker's counts (the costs beyond the noise band among them), python-fcl's savings, the
+    paper's Table 3's."""
     facts = checker_scope.slow_checker(tables)
     papers = sum(time_verdict(1 - saved) == SAVES for saved in facts.papers_totals)
     fast, slow = (costs.median_counts(preset, tables) for preset, _ in RUNS)
+    total = len(facts.own)
+    word = "No." if not fast[SAVES][0] else "Rarely." if 4 * fast[SAVES][0] <= total else "In part."
+    beyond = fast[COSTS][0] - fast[COSTS][1]
+    return (
+        f"**{word}** With an accurate network, prediction made Algorithm 1's median query faster in "
+        f"{fast[SAVES][0] or 'none'} of {total} scenario–sampler cells against our fast exact checker "
+        f"({fast[COSTS][0]} slower, {beyond} of them beyond the noise band; {fast[TIES][0]} ties), and in "
+        f"{slow[SAVES][0] or 'none'} of {total} against python-fcl. The paper's Table 3 reports savings in {papers} of "
+        f"{total}."
+    )
+
+
+def by_means(tables: Tables | None = None) -> str:
+    """Section 6's line beside the means figure (reader r40d, lift 2: not on the first screen): both runs' savings by
+    mean times, those beyond the means' noise band, and why a mean can save where the median query did not."""
     means = [costs.mean_verdicts(preset, tables)[SAVES] for preset, _ in RUNS]
     clear = list(dict.fromkeys(c for preset, _ in RUNS for c, _ in costs.clear_mean_savings(preset, tables)))
     own = {
@@ -201,67 +215,53 @@ def answer(tables: Tables | None = None) -> str:
         for s, m in r.items()
     }
     moved = "".join(  # reader r39d, item 1: why a mean can save while the median query did not
-        f", and with our fast checker its median query did not save ({own[c]:.2f}): a few slow queries moved that mean"
+        f"; with our fast checker its median query did not save ({own[c]:.2f}): a few slow queries moved that mean"
         for c, _ in costs.clear_mean_savings(RUNS[0][0], tables)[:1]
         if time_verdict(own[c]) != SAVES
     )
-    larger = "".join(  # r39d, item 2: "at most 18 %" is no ceiling on a mean's saving
-        f" A larger mean saving ({c}, {100 * a:.0f} %) comes from a few slow queries or another roadmap, not "
-        "prediction (section 6)."
-        for c, a, _ in sorted(costs.over_sampling(RUNS[0][0], tables), key=lambda c: -c[1])[:1]
-    )
     return (
-        f"**By the median query**, in the {len(facts.own)} cells (4 scenarios × 4 samplers) our accurate network "
-        f"{costs.counted(fast)} with our fast checker; with python-fcl on both sides it "
-        f"{costs.counted(slow).partition(', tied')[0]}. **By mean times**, the paper's statistic, it saved time in "
-        f"{means[0] or 'none'} cells with our fast checker and {means[1] or 'none'} with python-fcl, "
-        f"{'only ' * bool(clear)}{', '.join(clear) or 'none'} beyond timing noise{moved}; the paper's Table 3 saves "
-        f"time in {papers} of its {len(facts.own)}.\n\n"
-        f"- **Why**: the network takes over only the samples' checks: with our fast checker at most "
-        f"{costs.largest_share(tables)}; the rest is exact checks of points along the edges, which "
-        f"Algorithm 1 never gives to the network (section 5).{larger}"  # where the extra time went: section 6's table
+        f"**By mean times**, the paper's statistic, prediction saved time in {means[0] or 'none'} cells with our fast "
+        f"checker and {means[1] or 'none'} with python-fcl, {'only ' * bool(clear)}{', '.join(clear) or 'none'} "
+        f"beyond the noise band{moved}."
     )
 
 
-def edge_line(tables: Tables | None = None) -> str:
-    """The footnote under section 6's tables (reader r33d: the noise edge a mark in the table): what the mark
-    :data:`toolkit.teaching.costs.MARK` on a verdict means, and the band each statistic is marked by
-    (:func:`toolkit.teaching.costs.floors`, reader r34d: a mean was marked by the median's band)."""
+def mark_line(tables: Tables | None = None) -> str:
+    """The page's one mark, said once beside the answer figure (reader r40d: one mark, one rule, every table):
+    :data:`toolkit.teaching.costs.MARK` on a saving or cost inside the noise band of its statistic, each band's
+    numbers (:func:`toolkit.teaching.costs.floors`, as the results page draws them)."""
     bands = costs.floors(tables)
 
     def band(kind: str) -> str:
         return f"{bands[kind][0]:.2f}–{bands[kind][1]:.2f}"
 
     return (
-        f"{_take_from(tables)}\n\n{costs.MARK} inside timing noise: no clear evidence. For this table's statistic, the "
-        f"median of each query's own ratio, that is {band('own')}: twice the {costs.timing_reach(tables):.2f} by which "
-        "timing one computation twice moved it. The folded tables mark a ratio of means or of medians by its own band "
-        "(`docs/results.md`, its table of bands)."
+        f"{costs.MARK} on a verdict, in every table of this page, means inside the noise band of its statistic: no "
+        "clear evidence. The noise band (hatched) is how far timing one computation twice moved the statistic, "
+        f"doubled: {band('own')} for the median query, {band('means')} for a ratio of mean times (`docs/results.md`)."
     )
 
 
-def _take_from(tables: Tables | None = None) -> str:
-    """What to take from section 6's table, in one sentence (reader r36d): in the cells where the paper's Table 3
-    saves time, what each of our rows says."""
+def edge_line(tables: Tables | None = None) -> str:
+    """What to take from section 6's table, in one sentence (reader r40d: its one new fact): in the cells where the
+    paper's Table 3 saves time, how many of our median queries save, with each checker."""
     rows = checker_scope.compact(tables)
     papers = [(label.split(",")[0], s) for label, row in rows.items() if "paper" in label for s, r in row.items()]
     saved = [(n, s) for n, s in papers if time_verdict(rows[f"{n}, the paper's Table 3"][s]) == SAVES]
 
-    def said(series: str) -> str:
-        verdicts = Counter(time_verdict(rows[f"{n}, ours ({series}), medians"][s]) for n, s in saved)
-        words = {SAVES: "saves time", TIES: "ties", COSTS: "costs time"}
-        return " and ".join(f"{w} in {verdicts[v]}" for v, w in words.items() if verdicts[v])
+    def ours(series: str) -> str:
+        return str(sum(time_verdict(rows[f"{n}, ours ({series}), medians"][s]) == SAVES for n, s in saved) or "none")
 
     return (
-        f"**Take from it:** in the {len(saved)} cells where the paper's Table 3 saves time, our fast checker's row "
-        f"{said('`strong` preset')}; python-fcl's {said('`strong`, python-fcl')}."
+        f"**Take from it:** in the {len(saved)} cells where the paper's Table 3 saves time, our median query saved in "
+        f"{ours('`strong` preset')} with our fast checker and in {ours('`strong`, python-fcl')} with python-fcl "
+        f"({costs.MARK} as at the top)."
     )
 
 
 def means_apart(tables: Tables | None = None) -> str:
-    """Of the pairs where the ratio of mean times saves (the answer figure's bars below the band), those where the
-    median query did not save and those where it did (review r32d: "while the median query did not save" was false
-    for two of them)."""
+    """Of the pairs where the ratio of mean times saves, those where the median query did not save and those where it
+    did (review r32d: "while the median query did not save" was false for two of them)."""
     cells: dict[bool, dict[str, list[str]]] = {False: {}, True: {}}
     for preset, who in ((recorded.ALGORITHM_1, "fast checker"), (checker_scope.SLOW, "python-fcl")):
         medians = costs.middle_halves(preset, tables)

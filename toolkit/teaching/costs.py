@@ -2,7 +2,7 @@
 
 Chapter 04's answer table gives, for each scenario and sampler, the median of each query's own ratio (time with
 prediction / time without) of our accurate `strong` network inside the paper's Algorithm 1 (``docs/results.md``,
-"Preset `strong` with `--planner paper`"). Where that ratio costs time beyond timing noise and the mean time grew too
+"Preset `strong` with `--planner paper`"). Where that ratio costs time beyond the noise band and the mean time grew too
 (:func:`dear_cells`; reader r38d: not a cut-off of 1.25), the costs need explaining (review r25a). The record times
 two things a query, sampling and the total, by means: :func:`cost_table` splits each such cell's mean time into the
 sampling stage and everything after it (connecting the roadmap's edges, extracting and verifying the path), with
@@ -75,7 +75,7 @@ def shares_by_cell(preset: str, tables: Tables | None = None) -> dict[tuple[str,
 
 
 def dear_cells(tables: Tables | None = None) -> list[Cost]:
-    """The cells whose median ratio costs time beyond timing noise (above :func:`floors`' band) and whose ratio of
+    """The cells whose median ratio costs time beyond the noise band (above :func:`floors`' band) and whose ratio of
     mean times costs time too, with their mean times from "Times behind Table 3" (a cell whose mean time fell has no
     extra time to split)."""
     ratios = recorded.query_ratios(recorded.ALGORITHM_1, tables)
@@ -140,7 +140,7 @@ def split_sentence(tables: Tables | None = None) -> str:
     else:
         rest = "the rest came after sampling, which the record does not break down"
     return (
-        f"In the {len(cells)} recorded cells where the median query cost time beyond timing noise and the mean "
+        f"In the {len(cells)} recorded cells where the median query cost time beyond the noise band and the mean "
         f"time grew too (section 6's last table), slower sampling explains {span} of the extra mean time; {rest}."
     )
 
@@ -306,7 +306,7 @@ def call_cost_table(runs: Mapping[str, Mapping[str, float | None]], tie: float =
 
 def median_counts(preset: str, tables: Tables | None = None) -> dict[str, tuple[int, int]]:
     """``preset``'s 16 cells inside Algorithm 1 by the median of each query's own ratio: ``{verdict: (how many, how
-    many of them inside timing noise)}`` for saves, ties and costs (reader r36d: the costs counted too)."""
+    many of them inside the noise band)}`` for saves, ties and costs (reader r36d: the costs counted too)."""
     verdicts = Counter(time_verdict(m) for row in middle_halves(preset, tables).values() for m, _, _ in row.values())
     edge = at_edge(preset, tables)
     return {v: (verdicts[v], edge[v] if v != TIES else 0) for v in (SAVES, TIES, COSTS)}
@@ -326,11 +326,11 @@ def clear_mean_savings(preset: str, tables: Tables | None = None) -> list[tuple[
 
 
 def counted(counts: Mapping[str, tuple[int, int]], total: int = 0) -> str:
-    """``"saved time in none of the 16 cells, tied in 7 and cost time in 9 (4 of them inside timing noise)"``."""
+    """``"saved time in none of the 16 cells, tied in 7 and cost time in 9 (4 of them inside the noise band)"``."""
 
     def noise(verdict: str) -> str:
         n = counts[verdict][1]
-        return f" ({n} of them inside timing noise)" if n else ""
+        return f" ({n} of them inside the noise band)" if n else ""
 
     of = f" of the {total} cells (4 scenarios × 4 samplers)" if total else ""
     return (
@@ -340,15 +340,15 @@ def counted(counts: Mapping[str, tuple[int, int]], total: int = 0) -> str:
 
 
 def clear(clear: list[list[tuple[str, float]]]) -> str:
-    """Which savings by means clear timing noise, per checker (:func:`clear_mean_savings`)."""
+    """Which savings by means clear the noise band, per checker (:func:`clear_mean_savings`)."""
     names = [[c for c, _ in cells] for cells in clear]
     if names[0] == names[1] and names[0]:
         ratios = " and ".join(", ".join(f"{r:.2f}" for _, r in cells) for cells in clear)
         return (
-            f"only {', '.join(names[0])} clear{'s' * (len(names[0]) == 1)} timing noise, with each checker ({ratios})"
+            f"only {', '.join(names[0])} clear{'s' * (len(names[0]) == 1)} the noise band, with each checker ({ratios})"
         )
     said = [", ".join(f"{c} {r:.2f}" for c, r in cells) or "none" for cells in clear]
-    return f"those clear of timing noise: {said[0]} with our fast checker, {said[1]} with python-fcl"
+    return f"those clear of the noise band: {said[0]} with our fast checker, {said[1]} with python-fcl"
 
 
 def mean_verdicts(preset: str, tables: Tables | None = None) -> Counter:
@@ -358,29 +358,4 @@ def mean_verdicts(preset: str, tables: Tables | None = None) -> Counter:
         time_verdict(1 - saved)
         for key in recorded.query_ratios(preset, tables)
         for saved in recorded.improvements(preset, key, "total", tables).values()
-    )
-
-
-def largest_share(tables: Tables | None = None) -> str:
-    """The largest of :func:`shares_by_cell` of the Algorithm 1 run, its cell and the times it divides (r37d)."""
-    key = max(shares := shares_by_cell(recorded.ALGORITHM_1, tables), key=lambda k: shares[k])
-    row = mean_times(recorded.ALGORITHM_1, tables)[key]
-    sampling, total = (1000 * recorded.ours(row[k]) for k in ("sampling without", "total without"))
-    where = f'`docs/results.md`, "`{recorded.ALGORITHM_1}`, Times behind Table 3"'  # r39d: not section 5's 45.5 ms
-    return (
-        f"{100 * shares[key]:.0f} % of a mean query ({NAMES[key[0]]} {key[1]}: sampling {sampling:.1f} of "
-        f"{total:.1f} ms without prediction, {where})"
-    )
-
-
-def planner_banner(tables: Tables | None = None) -> str:
-    """Chapter 04's line over sections 2-3 (reader r37d, lift 3: 3DC-7 cost 2-2.6x there, 1.03-1.58 in the answer):
-    which planner they run, and 3DC-7's recorded range with each planner, each statistic named."""
-    lazy = recorded.median_ratios("strong", tables)["3dc7"]["total"].values()
-    eager = recorded.query_ratios(recorded.ALGORITHM_1, tables)["3dc7"].values()
-    return (
-        "**Sections 2 and 3 run the lazy PRM** (the `strong` preset's planner); the answer at the top is the paper's "
-        f"Algorithm 1. On 3DC-7, over 100 recorded queries, prediction took {min(lazy):.2f}–{max(lazy):.2f} times as "
-        "long with the lazy PRM (the median time with prediction over the median without) and "
-        f"{min(eager):.2f}–{max(eager):.2f} inside Algorithm 1 (the median query), by sampler."
     )

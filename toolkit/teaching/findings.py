@@ -1,13 +1,11 @@
 """What a chapter prints from what it has just measured: small Markdown tables, a verdict word in each row.
 
 The chapters' prose states the verdict a student can repeat; the numbers behind it are computed here and shown as
-tables (``NOTEBOOKS.md``). A verdict is read from an *interval*, not from one number, so that a busy machine cannot
-turn "saves" into "costs": the middle half of the per-query ratios (each query timed without and with prediction in
-turn) for planning, a band of :data:`CLOSE` for a checker's cost timed in one round. Where the interval crosses the
-tie band the median's verdict is marked :data:`NO_CLEAR`, no clear evidence (the words and bands:
-:mod:`toolkit.util.verdicts`). One statistic throughout: medians over the queries, their spread as quartiles; a
-single slow query that moves a mean is listed.
-"""
+tables (``NOTEBOOKS.md``). A planning verdict is the median's of the per-query ratios (each query timed without and
+with prediction in turn), marked :data:`NO_CLEAR` (no clear evidence) inside the noise band of that statistic, as
+chapter 04's recorded tables mark theirs (reader r40d: one mark, one rule); a checker's cost timed in one round is
+read with a band of :data:`CLOSE` (the words and bands: :mod:`toolkit.util.verdicts`). A slow query that moves a
+mean is listed."""
 
 from __future__ import annotations
 
@@ -43,12 +41,25 @@ SCORE_NAMES = {"acc": "accuracy", "tpr": "TPR", "tnr": "TNR"}
 CHANCE_BAND = 0.05  # a balanced accuracy this close to 50 % is "about a coin flip" (describe_accuracy)
 
 
-def planning_verdict(row: Mapping[str, Mapping], tie: float = TIE) -> tuple[float, float, float, str]:
-    """The per-query ratios' median and quartiles, and the verdict their quartiles give (:data:`UNSURE` with fewer
-    than two queries: one query is no interval)."""
+def noise_band() -> tuple[float, float]:
+    """The noise band of the median of each query's own ratio, as ``docs/results.md`` measures it
+    (:func:`toolkit.teaching.costs.floors`): a saving or cost inside it is no clear evidence."""
+    from toolkit.teaching import costs  # here: costs reads the record, which only a planning verdict needs
+
+    return costs.floors()["own"]
+
+
+def planning_verdict(
+    row: Mapping[str, Mapping], tie: float = TIE, band: tuple[float, float] | None = None
+) -> tuple[float, float, float, str]:
+    """The per-query ratios' median and quartiles, and the median's verdict: :data:`UNSURE` where that saving or cost
+    lies inside the noise band (``band``, else :func:`noise_band`), where the middle half reaches across the tie band
+    (a few live queries: a busy machine must not flip a verdict), or with fewer than two queries."""
     ratios = per_query_ratios(row)
     q1, median, q3 = (float(v) for v in np.percentile(ratios, (25, 50, 75)))
-    return median, q1, q3, time_verdict(q1, q3, tie) if len(ratios) >= 2 else UNSURE
+    low, high = noise_band() if band is None else band
+    said, across = time_verdict(median, tie=tie), len(ratios) < 2 or time_verdict(q1, q3, tie) == UNSURE
+    return median, q1, q3, UNSURE if across or (said != TIES and low < median < high) else said
 
 
 def planning_table(
@@ -60,11 +71,12 @@ def planning_table(
     """Markdown: per scenario and sampler of ``{scenario: compare_prediction table}``, the verdict with the per-query
     ratios' median and middle half, then the median totals without and with prediction (the verdict comes first, so
     that a narrow page shows it, on a line of its own above its named numbers: reader r18a); a scenario whose
-    :func:`speed_moved` ratio ``moved`` holds, and a row whose middle half reaches across the tie band's edge, give the
-    median's verdict marked :data:`NO_CLEAR` (reader r37d: one mark for "no clear evidence" on the page, as section
-    6's recorded cells; :func:`planning_sentence` says it in words); ``planner`` names the planner in the header."""
+    :func:`speed_moved` ratio ``moved`` holds, and a row whose median saves or costs inside the noise band, give the
+    median's verdict marked :data:`NO_CLEAR` (reader r40d: one mark and one rule for "no clear evidence" on the page,
+    as section 6's recorded cells; :func:`planning_sentence` says it in words); ``planner`` names the planner in the
+    header, "with ÷ without" the ratio (reader r40d: beside the totals "without / with")."""
     rows = [
-        f"| scenario{f' ({planner})' if planner else ''} | sampler | with / without: verdict (median; middle half) "
+        f"| scenario{f' ({planner})' if planner else ''} | sampler | with ÷ without: verdict (median; middle half) "
         "| median total, ms: without / with "
         "| queries |",
         "| --- | --- | --- | --- | --- |",
@@ -82,18 +94,17 @@ def planning_table(
     return "\n".join(rows)
 
 
-NO_CLEAR = "?"  # after a live verdict: no clear evidence (r39d: not section 6's *, nor the stage bars' †)
+NO_CLEAR = r"\*"  # after a live verdict: inside the noise band, no clear evidence (r40d: section 6's mark too)
 SAID = {  # a planning verdict at the end of a sentence (its band filled in)
     SAVES: "prediction saved time",
     COSTS: "prediction cost time",
     TIES: "a tie: less than {band} from 1, neither saved nor cost",
-    UNSURE: "no clear evidence (?): the middle half lies partly inside the band (less than {band} from 1), partly "
-    "outside",
+    UNSURE: "no clear evidence (\\*): inside the noise band, or its middle half reaches across the tie band",
 }
 
 
 SPEED_MOVED = (  # a planning sentence's verdict where the same exact check's cost moved between the modes (review r25a)
-    "no clear evidence (?): the connection stage took {ratio:.2f} times as long an edge point with prediction, so "
+    "no clear evidence (\\*): the connection stage took {ratio:.2f} times as long an edge point with prediction, so "
     "its time holds more than the exact checks of points (the line under the tables says what)"
 )
 
@@ -108,10 +119,8 @@ def speed_moved(per_point: Mapping[str, float], tie: float = TIE) -> float | Non
 
 def planning_sentence(what: str, row: Mapping[str, Mapping], tie: float = TIE, moved: float | None = None) -> str:
     """One sentence a chapter can print where it states its answer: ``what`` was timed, over how many queries, the
-    per-query ratios' median and middle half, and the verdict of :func:`planning_verdict` in words (never "saves"
-    beside ratios above 1: the words are read from the same interval as the table's); with ``moved``
-    (:func:`speed_moved`), "can't tell" instead: the same exact check cost that much more or less in one mode, so the
-    time ratio measures more than prediction (review r25a)."""
+    per-query ratios' median and middle half, and the verdict of :func:`planning_verdict` in words, the table's; with
+    ``moved`` (:func:`speed_moved`), "no clear evidence": the same exact check cost more or less in one mode (r25a)."""
     median, q1, q3, said = planning_verdict(row, tie)
     n = row["without"]["n_queries"]
     verdict = SAID[said].format(band=f"{tie:.0%}") if moved is None else SPEED_MOVED.format(ratio=moved)
