@@ -81,7 +81,7 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
     every = [r for series in ratios(text, kind).values() for by in series.values() for r in by.values()]
     margin = MARGINS[kind]  # room between the outermost points and the frame
     ylim = (min(*every, *floor) / margin, max(*every, *floor) * margin)
-    return query_ratios.means_grid(
+    fig = query_ratios.means_grid(
         {f"{NAMES[s]}: {kind} time, means": series for s, series in ratios(text, kind).items()},
         tie=findings.TIE,
         ylim=ylim,
@@ -90,6 +90,40 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
         noise=floor,
         width=WIDTH,
     )
+    return readable(fig, floor)
+
+
+ROOM = 0.55  # sampler slots added at each panel's right, where the noise band's edges are written
+MARKER_SCALE = 0.85  # Figures 2-3's markers, a little smaller than means_grid draws them, so neighbours stand apart
+
+
+def readable(fig: Figure, floor: tuple[float, float]) -> Figure:
+    """Reader r40f, figures: Figures 2-3 with y tick labels on every panel (the right-hand ones had none), the noise
+    band's edges written inside each panel at its right (in the gutter they read as the next panel's ticks), and
+    the markers a little smaller, so that neighbouring ones (Figure 2's 2DS BS, Figure 3's 2DS BT) stand apart."""
+    for ax in (ax for ax in fig.axes if ax.get_visible()):
+        for child in list(ax.child_axes):  # means_grid's labels of the band's edges, outside the panel
+            child.remove()
+        low, high = ax.get_xlim()
+        ax.set_xlim(low, high + ROOM)
+        for edge in floor:
+            ax.text(
+                high + ROOM - 0.06,
+                edge,
+                f"{edge:.2f}",
+                ha="right",
+                va="bottom" if edge > 1 else "top",
+                fontsize=9,
+                bbox={"facecolor": "white", "edgecolor": "none", "pad": 0.6},
+                zorder=4,
+            )
+        ax.tick_params(axis="y", labelleft=True)
+        for line in ax.lines:
+            if line.get_marker() not in ("None", None, ""):
+                line.set_markersize(line.get_markersize() * MARKER_SCALE)
+    room = (0.1 + 0.2 * len(fig.legends[0].texts)) / fig.get_figheight()  # as legend_above leaves for the legend
+    fig.tight_layout(rect=(0, 0, 1, 1 - room))
+    return fig
 
 
 def claim_figure(text: str) -> Figure:
