@@ -134,9 +134,8 @@ def unseen_table(tables: Tables) -> str:
         ),
     ]
     return (  # reader r31f, contradiction 3: what "/" means, said at the table
-        "*Tables 1 and 2 on unseen workspaces*, each network's row read against the answer in the row under it, the "
-        "last against a coin flip's 50 % (each run's section holds the full tables). A cell “A / B” is ours / the "
-        "paper's, except in the last row, where it is the `paper` preset's / the `strong` preset's: the paper gives "
-        "no balanced figures. The paper's Table 1 has one 3DC row, shown under both 3DC-7 and 3DC-9.\n\n"  # r33f, 7
-        + "\n".join(lines)
+        "*Tables 1 and 2 on unseen workspaces*, each network's row read against the answer in the row under it. A "
+        "cell “A / B” is ours / the paper's, except in the last row, where it is the `paper` preset's / the `strong` "
+        "preset's (the paper gives no balanced figures). The paper's Table 1 has one 3DC row, shown under both 3DC-7 "
+        "and 3DC-9.\n\n" + "\n".join(lines)  # r33f, 7
     )
