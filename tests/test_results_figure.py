@@ -231,7 +231,7 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
         assert image.size[0] <= COLUMN
     assert CLAIM == results_figures.claim_markdown(TEXT), AGAIN
     costs = sum(m >= 1.1 for m, _, _ in table.values())  # review r27f, item 2: counted once, in the summary
-    said = f"our compiled checker | 3 / 7 / 6 | 0 / {16 - costs} / {costs} |"  # by means first (reader r34f, c. 3)
+    said = f"our compiled checker of 5 December | 3 / 7 / 6 | 0 / {16 - costs} / {costs} |"  # by means first (r34f)
     assert said in TEXT  # reader r31f, item 1: the noise edge's cells are the caption's (review r28f's robust count)
     reach = results_noise.reach_of(recorded_results.parse(TEXT))  # how far timing alone moved a median query
     edge = [f"{n} {s} {m:.2f}" for (n, s), (m, _, _) in table.items() if m >= 1.1 and abs(m - 1) < 2 * reach]
@@ -255,9 +255,14 @@ def test_each_figure_of_means_has_its_own_range_the_slow_run_and_counts_by_the_p
     # reader r36f: the right-hand labels are the hatched floor's edges (the legend names the tie band), so 0.9 and
     # 1.1 are not read as the hatch's
     floor = results_noise.noise(recorded_results.parse(TEXT)).means
-    for ax in fig.axes[1::2]:
-        (edges,) = ax.child_axes
-        assert [t.get_text() for t in edges.get_yticklabels()] == [f"{floor[0]:.2f}", f"{floor[1]:.2f}"]
+    # reader r40f, figures: the band's edges written inside every panel (in the gutter they read as the right-hand
+    # panel's ticks), and every panel's y ticks labelled
+    for ax in fig.axes:
+        assert not ax.child_axes and [t.get_text() for t in ax.texts] == [f"{floor[0]:.2f}", f"{floor[1]:.2f}"]
+        x0, x1 = ax.get_xlim()
+        assert all(x0 < t.get_position()[0] < x1 for t in ax.texts)
+        assert "1" in {t.get_text() for t in ax.get_yticklabels() if t.get_visible()}
+        assert ax.yaxis.get_tick_params()["labelleft"]
     names = [t.get_text() for t in fig.legends[0].get_texts()]
     assert "ours, accurate strong network, python-fcl on both sides" in names
     block = TEXT.partition(results_figures.FIGURE_BEGIN.format(kind=kind))[2]

@@ -36,17 +36,22 @@ def test_the_summary_is_what_the_tables_give():
     assert TEXT == results_summary.with_summary(TEXT), "docs/results.md changed: run python -m tools.results_summary"
     assert TEXT.index(results_summary.END) < TEXT.index("## ")  # at the top, before the first section
     said = TEXT.partition(results_summary.BEGIN)[2].partition(results_summary.END)[0]
-    # reader r39f, item 3: three sentences, then the table of counts; no bullet, no "Why" (the findings' first)
+    # reader r39f, item 3: the answer, then the Key (reader r40f, item 4), then the table of counts; no bullet, no "Why"
     prose, _, tables = said.partition("\n\n|")
-    assert prose.count(". ") + prose.count(".** ") == 2
+    answer, _, key = prose.strip().partition("\n\n")
+    assert answer.startswith("**In short") and answer.endswith(".**") and key.startswith("*Key*: a cell is one")
     assert not [line for line in prose.splitlines() if line.startswith("- ")]
     assert "Why, by means" not in said and "saved / " not in prose
-    # reader r37f, item 1: the answer one sentence, both checkers and Tables 1-2, its counts the table's
+    # reader r37f, item 1: both checkers and Tables 1-2, its counts the table's; reader r40f, items 1-2: each count's
+    # statistic named inside the answer, the borrowed band said so
     assert (
-        "No: with our fast compiled checker the network costs time (9 of 16 cells slower, none faster); with "
-        "python-fcl, a slow exact checker, it mostly ties (2 of 16 faster beyond the noise band, 0.82–1.18); and the "
-        "paper's Tables 1 and 2 do not reproduce either.**" in prose
+        "the network costs time by each query's own ratio (its time with prediction over its own time without, the "
+        "median over a cell's queries): 9 of 16 cells slower, none faster; by means, the paper's statistic, 3 faster "
+        "and 6 slower (Figure 2). With python-fcl, a slow exact checker, it mostly ties: 2 of 16 cells faster by each "
+        "query's own ratio, beyond a noise band borrowed from the compiled run (0.82–1.18). The paper's Tables 1 and 2 "
+        "do not reproduce either.**" in answer
     )
+    assert "The table counts each series' cells by the statistic" not in PAGE  # reader r40f, item 1: cut
     assert "| 0 / 7 / 9 | 0 / 5 |" in tables and "| 3 / 13 / 0 | 2 / 0 |" in tables
     # reader r39f, contradiction 7: the dashes said in one line under the table
     assert "\n\nA “—”: no query's own ratio was recorded (the paper prints means;" in said
@@ -59,10 +64,11 @@ def test_the_summary_is_what_the_tables_give():
     assert (
         "December: 8 of 16 save time (0.90 or less), 2 tie, 6 cost time" in TEXT and "| 8 / 2 / 6 | — | — |" in counts
     )
-    # reader r39f, item 1: the bands one visible table under the summary's, one name each, nothing folded
+    # reader r39f, item 1: the bands one visible table under the summary's, one name each, nothing folded; reader
+    # r40f, item 3: two rows, the bands the summary's table reads with; the others where they are used
     bands = said.partition("\n\n| band near 1 |")[2]
-    assert len([line for line in bands.splitlines() if line.startswith("|")]) == 5 and "<details" not in bands
-    assert "| noise band, ratio of means | 0.84–1.24 |" in bands
+    assert len([line for line in bands.splitlines() if line.startswith("|")]) == 3 and "<details" not in bands
+    assert "| noise band of each query's own ratio | 0.82–1.18 |" in bands and "0.84–1.24" not in bands
     assert not re.search(r"noise (floor|edge)|ratio-of-(means|medians)", PAGE.partition("## How these")[0])
 
 
@@ -102,9 +108,9 @@ def test_the_planning_answer_follows_the_medians_both_ways():
     # reader r37f, items 4 and 8: the statistic named in the headline, the network by its one name
     assert "the lazy-PRM network saves no time, by medians.** By the ratio" in said  # reader r39f, item 2
     assert "(3 Dec)" not in PAGE and "This is `strong`" not in PAGE
-    assert "By the ratio of the two modes' median times (the medians tables), it took more time" in said
+    assert "median times (the `strong` section's medians table), it took more time" in said
     # review r25c, item 1: the `paper` network's cells change the planner too; reader r33f, item 5: a sentence its own
-    both = "whose planner with prediction is Algorithm 1 (so planner and prediction both change), saved time in none"
+    both = "its planner with prediction is Algorithm 1, so planner and prediction both change. It saved time in none"
     assert f"{both} of 4." in said
     assert (
         "more time in 3 of 4 scenario–sampler cells (2DS BS 1.50, 2DS OB 1.20, 3DO BS 2.00) and about the same" in said
@@ -112,14 +118,13 @@ def test_the_planning_answer_follows_the_medians_both_ways():
     assert "1–2 December" not in said and "chapter 04 shows" not in said  # review r21a; reader r33f, item 5
     faster = medians({"2ds": {"BS": 0.5, "OB": 0.6}, "3do": {"BS": 0.7, "OB": 0.8}, "3dc7": {"BS": 0.4, "OB": 1.3}})
     said = results_findings.lazy_prm(faster)
-    assert "lazy-PRM network mostly saves time, by medians.**" in said and "both change), saved time in 5 of 6." in said
+    assert "lazy-PRM network mostly saves time, by medians.**" in said and "It saved time in 5 of 6." in said
     assert "less time in 5 of 6 scenario–sampler cells (0.40–0.80 times as much)" in said
     assert "and more time in 1 (3DC-7 OB 1.30)" in said
     mixed = medians({"2ds": {"BS": 0.5, "OB": 1.6}, "3do": {"BS": 1.7, "OB": 1.8}})
     said = results_findings.lazy_prm(mixed)
     assert (
-        "lazy-PRM network rarely saves time, by medians.**" in said
-        and "both change), saved time in 1 of 4 (2DS BS 0.50)." in said
+        "lazy-PRM network rarely saves time, by medians.**" in said and "It saved time in 1 of 4 (2DS BS 0.50)." in said
     )
     table3 = results_findings.algorithm_1(faster)
     assert "saved 10 % or more of a query's time in 5 of 6 cells, lost 10 % or more in 1 and tied in 0" in table3
@@ -181,7 +186,7 @@ def test_the_typed_sentences_on_the_medians_tables_quote_them():
     assert inside == [1.27] and f"all but 2DS G ({inside[0]:.2f}) beyond" in PAGE
     assert floor[0] <= paper["2ds"]["BT"] <= floor[1]
     costs = [r for row in strong.values() for r in row.values() if findings.time_verdict(r) == findings.COSTS]
-    said = f"(the medians tables), it took more time in {len(costs)} of 16 "
+    said = f"(the `strong` section's medians table), it took more time in {len(costs)} of 16 "
     said += f"scenario–sampler cells ({min(costs):.2f}–"
     assert f"{said}{max(costs):.2f} times as much)" in PAGE  # review r27f, item 2: counted once, in the findings
     assert "its median 3D query took" not in PAGE
@@ -498,8 +503,8 @@ def test_the_accurate_network_inside_algorithm_1_is_read_as_its_section_says():
     said = [findings.time_verdict(r) for row in ratios.values() for r in row.values()]
     assert findings.SAVES not in said  # "saves time for no sampler in any scenario by the median of each query's ..."
     counts = f"0 / {said.count(findings.TIES)} / {said.count(findings.COSTS)}"
-    row = f"| ours, `strong` network, our compiled checker | 3 / 7 / 6 | {counts} |"  # by means first (r34f)
-    assert row in PAGE and "A cell is one scenario with one sampler, say 3DC-9 OB" in PAGE  # the summary's table
+    row = f"| ours, `strong` network, our compiled checker of 5 December | 3 / 7 / 6 | {counts} |"  # by means first
+    assert row in PAGE and "*Key*: a cell is one scenario with one sampler, say 3DC-9 OB" in PAGE  # the summary's table
     _the_ratio_of_medians_is_told_apart_where_it_reads_saves(
         ratios, twice=next(t for h, t in TABLES[key].items() if "timed twice" in h)
     )
@@ -571,11 +576,12 @@ def test_the_verdict_names_its_checker_first():
     assert said in TEXT and TEXT.index(said) < TEXT.index("**Figure 1")
     assert said.startswith(  # reader r37f, item 1: the fast checker first, in one sentence with the slow one
         "**In short: does an accurate network inside the paper's Algorithm 1 (its PRM planner) save planning time? "
-        "No: with our fast compiled checker the network costs time"
+        "No. With our compiled checker (a fast exact check, compiled to machine code), the network costs time"
     )  # reader r33f, item 1: the answer, then three one-line verdicts a student can repeat
     # reader r38f, contradiction 2: python-fcl's 3DC-9 OB saving said as the rest of the query's, under the table
     assert (
-        "Of python-fcl's savings beyond the noise band, 3DC-9 OB came from the rest of the query, not sampling"
+        "Of the answer's 2 python-fcl savings, 3DC-9 OB is not sampling's: switching to means, Table 3's statistic, "
+        "it saved 34 % of a query where its sampling saved 8 %"
     ) in said
     # reader r36f, contradiction 5: the paper's own costs under 10 %, read from its Table 3 (3DC-7 BS and G, 3DO BT)
     costs = sorted(-s for s in checker_scope.slow_checker(tables).papers_totals if s < 0)
@@ -589,7 +595,7 @@ def test_the_verdict_names_its_checker_first():
     assert "paper's network" not in said and "paper network" not in said  # reader r32f, contradiction 3
     # reader r32f, contradictions 2 and 7: both statistics and the counts beyond the noise edge, side by side
     assert "| the paper's reported results (its Table 3) | 10 / 6 / 0 | — | — |" in said
-    assert "| ours, `strong` network, our compiled checker | 3 / 7 / 6 | 0 / 7 / 9 | 0 / 5 |" in said
+    assert "| ours, `strong` network, our compiled checker of 5 December | 3 / 7 / 6 | 0 / 7 / 9 | 0 / 5 |" in said
     assert "| ours, `strong` network, python-fcl on both sides | 2 / 12 / 2 | 3 / 13 / 0 | 2 / 0 |" in said
     assert "median query" not in said  # reader r32f, contradiction 8
     fast, _ = results_findings.stage_shares(tables, recorded.ALGORITHM_1)
@@ -630,8 +636,15 @@ def test_the_arithmetic_of_the_saving_is_the_times_behind_table_3():
     )
     # reader r37f, contradiction 1: two causes, one per checker, not "prediction shortens only sampling"
     finding = results_findings.why_no_saving(TABLES)
-    assert finding.startswith("**Why, by means: with a fast checker the network is the dearer check; with a slow one")
-    assert "shortens only sampling" not in PAGE and finding.count(". ") == 0 and "\n" not in finding
+    # reader r40f, contradiction 4: the lead scoped to its runs, and one sentence on the `paper`-preset run's sampling
+    assert finding.startswith(
+        "**Why, by means, in the runs of 5 December: with a fast checker the network was the dearer check; with a slow"
+    )
+    assert "shortens only sampling" not in PAGE and finding.count(". ") == 1 and "\n" not in finding
+    paper = results_findings.paper_sampling(TABLES)
+    assert paper.startswith(" The `paper`-preset run of 2 December lost sampling time in 10 of 16 cells although")
+    said = "network cost 0.43–0.91 of an exact check in 3D: that network answers “invalid” to every 3DC-9 and 3DO"
+    assert said in paper
     assert why.startswith("- *How little shortening sampling saves*: Worked through for")
     # reader r32f, item 4: one worked example, its product the cell's share of sampling saved, Table 3's total beside;
     # reader r36f, contradiction 1: the cut unrounded, so the product is the table's top (16 %), not 0.338 × 0.49
@@ -678,7 +691,7 @@ def test_the_compiled_runs_cost_outside_sampling_is_said():
     said = results_summary.short(TABLES)
     assert "| our compiled checker | 0.29 to 18 % (the most: 3DO BT) | −18 to 1.4 % |" in apart
     slow = {cell.name: cell for cell in results_findings.apart(TABLES)}["3DC-9 OB"]
-    assert slow.total - slow.sampling >= 0.1 and ", 3DC-9 OB came from the rest of the query, not sampling" in said
+    assert slow.total - slow.sampling >= 0.1 and "3DC-9 OB is not sampling's: switching to means" in said
 
 
 def test_the_strong_cae_carrying_over_on_2ds_quotes_its_table_1():
@@ -700,21 +713,25 @@ def test_the_counts_a_noise_floor_undercuts_are_told_apart():
     shares (3DC-9 OB: 34 % saved where sampling saved 8 %)."""
     floor = results_noise.noise(TABLES).medians
     said = results_findings.lazy_prm(TABLES)
-    assert said in PAGE and f"beyond the noise band of a ratio of medians ({floor[0]:.2f}–{floor[1]:.2f})" in said
-    # reader r35f, contradiction 1, and r36f, contradictions 6 and 8: the lazy PRM's means named by their table,
-    # "lazy-PRM Table 3", apart from Figure 2's, and told where the medians beside them are, not in the verdict
+    assert " ".join(said.split()) in PAGE
+    # reader r40f, item 3: the band said where it is used, with what it is
+    assert f"beyond the noise band of a ratio of medians, {floor[0]:.2f}–{floor[1]:.2f} (how far timing alone" in said
+    # reader r35f, contradiction 1, and r36f, contradictions 6 and 8: the lazy PRM's means named by their table;
+    # reader r40f, item 5: the cell whose means part from its medians in the finding, in one parenthesis
     assert (
-        "(lazy-PRM Table 3, 3 December: ratio 0.26, a 74 % saving of the mean, pulled by a few slow queries), while "
-        "the ratio of the two modes' median queries is 1.00" in PAGE
+        "(2DS BS 1.07, 2DS OB 1.00; by means, 2DS OB saved 74 % of the mean query, pulled by a few slow queries: ratio "
+        "0.26 in the `strong` section's Table 3)." in said
     )
+    assert "*Means and medians*" not in PAGE  # the fold's paragraph that said it, cut
     assert "the lazy-PRM run's Table 3" not in PAGE and "its Table 3, 3 December" not in PAGE
     ratios = [r for preset in ("strong", "paper") for row in _total(preset).values() for r in row.values()]
     beyond = sum(r < floor[0] for r in ratios)
     paper = sum(len(row) for row in _total("paper").values())
     assert f"), {beyond} of {len(ratios)}" not in said  # reader r33f, item 5: the `paper` network's cells, on their own
     invalid = ", a network that answers “invalid” to every 3DO sample"  # reader r38f, contradiction 5
-    assert said.endswith(f"in {beyond} of {paper} (3DO BT 0.69{invalid}).") and "2DS BT 0.88" not in said
-    assert "0.26" not in said  # reader r36f, item 8: one statistic in the verdict, the means under "Means and medians"
+    assert said.endswith(f"in {beyond} of {paper} (3DO BT 0.69{invalid}).\n") and "2DS BT 0.88" not in said
+    # reader r40f, item 5: the `paper`-preset network's sentence a paragraph of its own, said to be no test
+    assert "\n\n    Our `paper`-preset network is no test of the method here: its planner with prediction" in said
     _, saved = results_findings.stage_shares(TABLES, checker_scope.SLOW)
     apart = {cell.name: cell for cell in results_findings.apart(TABLES)}
     assert set(apart) == {"3DC-7 OB", "3DC-9 OB", "3DC-9 BT"}
@@ -739,7 +756,7 @@ def test_tables_1_and_2_on_unseen_workspaces_are_shown_as_the_runs_tables_give_t
     shown = "\n".join(f"    {line}" if line else "" for line in said.splitlines())  # under the MLP's bullet
     assert shown in TEXT and said.count("\n| ") == 7  # a header, its rule and five rows
     html = site.page_html(TEXT)
-    assert re.search(r"<li>\s*<p><strong>Against the lazy PRM \(a PRM that checks only", html)  # not a row
+    assert re.search(r"<li>\s*<p><strong>Against the lazy PRM, the lazy-PRM network", html)  # not a row
     cae = recorded.table("paper", "CAE reconstruction", TABLES)["2ds"]["Unseen"]  # "**86%** / 100%"
     ours, paper = (round(recorded.ours(part) * 100) for part in cae.split("/"))
     assert f"| CAE, `paper` preset / the paper | {ours} / {paper} |" in said
@@ -763,7 +780,7 @@ def test_the_paper_networks_savings_are_explained_at_table_3_and_the_slash_at_ta
     assert "not by the method" not in TEXT.partition("**Figure 2")[2].partition("![")[0]
     fold = PAGE.partition("*Savings against Algorithm 1 that are not the method*")[2].partition("- *")[0]
     mlp = recorded.table("paper", "MLP accuracy", TABLES)
-    assert f"(TPR {round(recorded.ours(mlp['2ds']['Unseen TPR']) * 100)} %)" in fold
+    assert f"(its true-positive rate, TPR, is {round(recorded.ours(mlp['2ds']['Unseen TPR']) * 100)} %)" in fold
     assert 'answers "valid" to every sample' in fold and 'On 3DC-9 and 3DO it answers "invalid" to every sample' in fold
     table = results_networks.unseen_table(TABLES)
     assert "A cell “A / B” is ours / the paper's, except in the last row" in table
@@ -791,7 +808,8 @@ def test_the_last_contradictions_of_reader_r33f_are_gone():
     paper = results_findings.algorithm_1(tables)
     assert paper in PAGE and (
         "; beyond the noise band of a ratio of means (0.84–1.24), 3 of the 8 "
-        "savings (2DS BT 0.81, 3DC-7 G 0.79, 3DC-9 OB 0.75) and all 6 losses." in paper
+        "savings (2DS BT 0.81, 3DC-7 G 0.79, 3DC-9 OB 0.75) and all 6 losses (borderline, within 0.01 of the "
+        "band's edge: 2DS BS 1.25)." in paper  # reader r40f, item 3
     )
     assert "The paper's Table 1 has one 3DC row, shown under both 3DC-7 and 3DC-9." in PAGE
     assert "several times faster than the 2 December one" not in PAGE
@@ -822,8 +840,12 @@ def test_the_five_bands_near_1_are_set_side_by_side_where_the_first_appears():
     edge = results_noise.NOISE_EDGE * results_noise.reach_of(TABLES)
     said = results_noise.bands(TABLES)
     assert said in TEXT and TEXT.index(said) < TEXT.index("**Figure 1") < TEXT.index("## ")
-    for low, high in ((0.9, 1.1), (1 - edge, 1 + edge), floor.means, floor.medians):
+    for low, high in ((0.9, 1.1), (1 - edge, 1 + edge)):
         assert f"| {low:.2f}–{high:.2f} |" in said
+    # reader r40f, item 3: the two other bands where they are used, not in this table
+    assert f"{floor.means[0]:.2f}–{floor.means[1]:.2f}" not in said and f"{floor.medians[0]:.2f}" not in said
+    assert f"The noise band of a ratio of means, {floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched" in TEXT
+    assert f"ratio of medians, {floor.medians[0]:.2f}–{floor.medians[1]:.2f} (how far timing alone" in TEXT
     # reader r39f, contradiction 1: the own ratio's band doubles the larger side, and says so
     assert f"moved this ratio to {floor.own[0]:.2f}–{floor.own[1]:.2f}; the band is 1 ± twice the larger side" in said
     # reader r37f, item 3: "Figure 1 doubles its floor..." cut; each figure's two bands in the visible table

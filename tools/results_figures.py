@@ -19,7 +19,7 @@ from toolkit.teaching import checker_scope, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
 from tools.results_noise import NOISE_EDGE, at_noise_edge, noise, own_intervals, reach_of
-from tools.results_words import NAMES, change
+from tools.results_words import BORDER, NAMES, change
 
 FIGURES = {kind: RESULTS.parent / f"results_table3_{kind}.png" for kind in ("total", "sampling")}  # Table 3's columns
 LEADS = {  # what each figure shows, over it
@@ -81,7 +81,7 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
     every = [r for series in ratios(text, kind).values() for by in series.values() for r in by.values()]
     margin = MARGINS[kind]  # room between the outermost points and the frame
     ylim = (min(*every, *floor) / margin, max(*every, *floor) * margin)
-    return query_ratios.means_grid(
+    fig = query_ratios.means_grid(
         {f"{NAMES[s]}: {kind} time, means": series for s, series in ratios(text, kind).items()},
         tie=findings.TIE,
         ylim=ylim,
@@ -90,6 +90,40 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
         noise=floor,
         width=WIDTH,
     )
+    return readable(fig, floor)
+
+
+ROOM = 0.55  # sampler slots added at each panel's right, where the noise band's edges are written
+MARKER_SCALE = 0.85  # Figures 2-3's markers, a little smaller than means_grid draws them, so neighbours stand apart
+
+
+def readable(fig: Figure, floor: tuple[float, float]) -> Figure:
+    """Reader r40f, figures: Figures 2-3 with y tick labels on every panel (the right-hand ones had none), the noise
+    band's edges written inside each panel at its right (in the gutter they read as the next panel's ticks), and
+    the markers a little smaller, so that neighbouring ones (Figure 2's 2DS BS, Figure 3's 2DS BT) stand apart."""
+    for ax in (ax for ax in fig.axes if ax.get_visible()):
+        for child in list(ax.child_axes):  # means_grid's labels of the band's edges, outside the panel
+            child.remove()
+        low, high = ax.get_xlim()
+        ax.set_xlim(low, high + ROOM)
+        for edge in floor:
+            ax.text(
+                high + ROOM - 0.06,
+                edge,
+                f"{edge:.2f}",
+                ha="right",
+                va="bottom" if edge > 1 else "top",
+                fontsize=9,
+                bbox={"facecolor": "white", "edgecolor": "none", "pad": 0.6},
+                zorder=4,
+            )
+        ax.tick_params(axis="y", labelleft=True)
+        for line in ax.lines:
+            if line.get_marker() not in ("None", None, ""):
+                line.set_markersize(line.get_markersize() * MARKER_SCALE)
+    room = (0.1 + 0.2 * len(fig.legends[0].texts)) / fig.get_figheight()  # as legend_above leaves for the legend
+    fig.tight_layout(rect=(0, 0, 1, 1 - room))
+    return fig
 
 
 def claim_figure(text: str) -> Figure:
@@ -191,7 +225,8 @@ def figure_markdown(text: str, kind: str = "total") -> str:
     said = (  # reader r39f, item 1: the band by its one name, in the table under the summary
         f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule (0.90 or less: saved; 1.10 or "
         f"more: lost). The noise band of a ratio of means, {floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched, "
-        "dotted edges), is wider than the tie band: read a row's counts together, never one cell." + KEY
+        "dotted edges: how far timing alone moved a ratio of the two modes' mean times), is wider than the tie band: "
+        f"a single cell counts as evidence only beyond it (within {BORDER:.2f} of its edge, borderline)." + KEY
         if kind == "total"
         else f"*{kind.capitalize()} time*, counted and hatched as in Figure 2. {sampling_takeaway(counts)}"
     )

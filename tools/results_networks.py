@@ -37,7 +37,8 @@ def cae(tables: Tables) -> str:
     )
     return (
         f"**The CAE (Table 1): {'no better than' if round(gain * 100) <= 0 else 'barely better than'} answering "
-        f"“free” everywhere.** The `paper` CAE reconstructs unseen workspaces at {span(ours)} % of their cells "
+        f"“free” everywhere.** The `paper` CAE (the autoencoder that compresses a workspace's occupancy grid into a "
+        f"short code) reconstructs unseen workspaces at {span(ours)} % of their cells "
         f"(the paper: {span(papers)} %), {than_free} ({span(free)} %)."
     )
 
@@ -87,11 +88,12 @@ def mlp(tables: Tables) -> str:
     return (
         f"**The MLP (Table 2): the `paper` MLP is at chance, the `strong` one right "
         f"{span(balanced(recorded.ALGORITHM_1))} % of the time.** On unseen workspaces' balanced samples (half of "
-        "them valid) the `paper` MLP is right "
+        "them valid) the `paper` MLP (the classifier that reads that code and a configuration and answers “valid” "
+        "or “invalid”) is right "
         f"{span(balanced('paper'))} % of the time, where a coin flip is right 50 %; the `strong` MLP of Figure 1 "
-        f"{span(balanced(recorded.ALGORITHM_1))} %. On our validity-blind samples (which kind the paper's unseen test "
-        f"used is unstated, chapter 03), the `paper` MLP is right {span(blind)} %, answering “valid” to every sample "
-        f"{span(always)} %."  # reader r39f, item 9: where it gives one answer to every sample, the fold says
+        f"{span(balanced(recorded.ALGORITHM_1))} %. On our validity-blind samples (drawn regardless of validity, as "
+        "the paper's planning runs draw them; which kind its unseen test used is unstated, chapter 03), the `paper` "
+        f"MLP is right {span(blind)} %, answering “valid” to every sample {span(always)} %."
     )
 
 
@@ -132,9 +134,8 @@ def unseen_table(tables: Tables) -> str:
         ),
     ]
     return (  # reader r31f, contradiction 3: what "/" means, said at the table
-        "*Tables 1 and 2 on unseen workspaces*, each network's row read against the answer in the row under it, the "
-        "last against a coin flip's 50 % (each run's section holds the full tables). A cell “A / B” is ours / the "
-        "paper's, except in the last row, where it is the `paper` preset's / the `strong` preset's: the paper gives "
-        "no balanced figures. The paper's Table 1 has one 3DC row, shown under both 3DC-7 and 3DC-9.\n\n"  # r33f, 7
-        + "\n".join(lines)
+        "*Tables 1 and 2 on unseen workspaces*, each network's row read against the answer in the row under it. A "
+        "cell “A / B” is ours / the paper's, except in the last row, where it is the `paper` preset's / the `strong` "
+        "preset's (the paper gives no balanced figures). The paper's Table 1 has one 3DC row, shown under both 3DC-7 "
+        "and 3DC-9.\n\n" + "\n".join(lines)  # r33f, 7
     )

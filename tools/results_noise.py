@@ -78,10 +78,10 @@ def at_noise_edge(medians: dict[str, dict[str, tuple[float, float, float]]], tab
 
 
 def bands(tables: Tables) -> str:
-    """The page's bands near 1, one table under the summary (reader r39f, item 1: one tie band, and one noise band per
-    statistic, each defined before it is used; no "floor" or "edge" beside them): the tie band every count reads
-    with; each query's own ratio's noise band (Figure 1, the verdict), twice the larger side of timing's own reach;
-    the ratio of means' (Figures 2-3) and the ratio of medians' (the lazy PRM), each as timing alone moved it."""
+    """The two bands near 1 the summary's table reads with, one table under it (reader r40f, item 3: the ratio of
+    means' band is said in Figure 2's caption, the ratio of medians' in the lazy-PRM finding, where each is used): the
+    tie band every count reads with, and each query's own ratio's noise band (Figure 1, the verdict), twice the larger
+    side of timing's own reach."""
     floor, reach = noise(tables), reach_of(tables)
     edge, tie = NOISE_EDGE * reach, findings.TIE
 
@@ -96,24 +96,12 @@ def bands(tables: Tables) -> str:
             "every count; shaded in every figure",
         ),
         (
-            "noise band, each query's own ratio",
+            "noise band of each query's own ratio",
             edges(1 - edge, 1 + edge),
             f"timing one computation twice moved this ratio to {edges(*floor.own)}; the band is 1 ± twice the larger "
-            f"side ({NOISE_EDGE} × {reach:.2f}). A saving or cost inside it is no clear evidence",
-            "the summary's last column; Figure 1 (hatched, dashed edges)",
-        ),
-        (
-            "noise band, ratio of means",
-            edges(*floor.means),
-            "how far timing alone moved a ratio of the two modes' mean times",
-            "Figures 2–3 (hatched, dotted edges); the `paper`-preset network against Algorithm 1",
-        ),
-        (
-            "noise band, ratio of medians",
-            edges(*floor.medians),
-            "the same for a ratio of the two modes' median times (measured on Figure 1's run)",
-            "against the lazy PRM",
+            f"side ({NOISE_EDGE} × {reach:.2f}). A single cell inside it is no clear evidence",
+            "the table's last column; Figure 1 (hatched)",
         ),
     ]
-    head = ["| band near 1 | from–to | what it means | where this page uses it |", "| --- | --- | --- | --- |"]
+    head = ["| band near 1 | from–to | what it means | used in |", "| --- | --- | --- | --- |"]
     return "\n".join(head + [f"| {' | '.join(row)} |" for row in rows])
