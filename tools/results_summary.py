@@ -90,7 +90,8 @@ KEY = (  # reader r40f, item 4: the Key above the table that uses its words, eac
     "samplers BS, OB, G and BT are the paper's Basic PRM (uniform), Obstacle-Based PRM, Gaussian and Bridge Test. The "
     "`paper` preset is the paper's recipe as we read it; the `strong` preset is our accurate one, trained twice: the "
     "`strong` network (5 December) is the one in this summary and Figures 1–3, the *lazy-PRM network* (3 December) the "
-    "one raced against the lazy PRM (a PRM that checks only a candidate path's edges, our fastest exact planner)."
+    "one raced against the lazy PRM (a PRM that checks only a candidate path's edges, the fastest exact planner a "
+    "network can drive)."
 )
 
 
