@@ -206,7 +206,7 @@ def _chapter_02_gaps(nb, found: str) -> list[str]:
     for row in _section_5(nb):
         said += [row[2:5], row[5:8]]
     answer = re.search(
-        r'scores ([\d.]+)% on \d+ new grids, where answering "all free" gets ([\d.]+)% '
+        r'scores ([\d.]+)% on \d+ new grids, where answering "all free"(?: \([^)]*\))? gets ([\d.]+)% '
         r"\(([\d.]+) points (below|above)\)",
         found,
     )
@@ -236,7 +236,7 @@ def _chapter_02_unseen(nb, found: str) -> list[str]:
                 f"02: {lam[0]} scores {lam[4]:+.1f} points against 'all free' on the test grids: not within a couple"
             )
     answer = re.search(
-        r'\*\*The answer\.\*\* .*? scores ([\d.]+)% on \d+ new grids, where answering "all free" gets '
+        r'\*\*The answer\.\*\* .*? scores ([\d.]+)% on \d+ new grids, where answering "all free"(?: \([^)]*\))? gets '
         r'([\d.]+)% .*?\*\*no better than answering "all free"\*\*',
         found,
     )

@@ -44,17 +44,17 @@ def test_the_answer_is_two_sentences_and_four_rows():
     text = chapter02.answer(PAPER, LONG_NEW, MANY, **FULL)
     # reader r36b: sentences a student can repeat, with their numbers, before the table; r37b: no nickname
     assert text.startswith(
-        "**The answer.** Trained on 30 grids with the paper's layers and λ for 1,500 steps, our CAE rebuilds its "
+        "**The answer.** Trained on 30 grids with the paper's layer sizes and λ for 1,500 steps, our CAE rebuilds its "
         "training grids 99.6% right by memorizing them (Table 1: 100%). "
-        'But it scores 86.9% on 500 new grids, where answering "all free" gets 87.8% (0.9 points below): it rebuilds a '
-        'new workspace **no better than answering "all free"**, and Table 1\'s 100% on unseen grids does not '
-        "reproduce.\n\n"
+        'But it scores 86.9% on 500 new grids, where answering "all free" (an empty grid, whatever the input) gets '
+        '87.8% (0.9 points below): it rebuilds a new workspace **no better than answering "all free"**, and Table 1\'s '
+        "100% on unseen grids does not reproduce.\n\n"
     )
     lines = [line for line in text.splitlines() if line.startswith("| ")]
     assert lines[:2] == ["| CAE (2DS) | its training grids | 500 new grids |", "| --- | --- | --- |"]
     assert lines[2:] == [
         "| paper, Table 1 | 100% | 100% (its own 10 unseen grids) |",
-        "| CAE-long: the paper's layers and λ, 30 grids, 1,500 steps | 99.6% (all free 88.6%) "
+        "| CAE-long: the paper's layer sizes and λ, 30 grids, 1,500 steps | 99.6% (all free 88.6%) "
         "| 86.9% (all free 87.8%) |",
         "| the toolkit's CAE (`paper` preset, chapters 03–04): the same, 300 steps | 89.2% (all free 88.6%) "
         "| 85.9% (all free 87.8%) |",
@@ -118,6 +118,17 @@ def test_section_5s_table_sets_the_test_grids_beside_the_new_grids():
         "| --- | --- | --- | --- |",
         "| λ = 0.961 | 99.6% | 88.2% (+0.6 points) | 87.6% (-0.2 points) |",
     ]
+
+
+def test_the_new_grids_verdict_says_below_only_when_every_cae_is_below():
+    """Reader r41b: "not more than a point above 'all free'" where every CAE was below it; the sign is now said."""
+    gaps = {"λ = 0": -0.9, "CAE-long": -0.9, "λ = 0.961": -0.2, "CAE-preset": -1.3}
+    assert chapter02.new_grids_verdict(gaps, 500) == (
+        'On the 500 new grids every one of these CAEs scores below "all free" (-0.2 to -1.3 points).'
+    )
+    assert chapter02.new_grids_verdict(gaps | {"λ = 0.961": 0.4}, 100) == (
+        'On the 100 new grids these CAEs score -1.3 to +0.4 points against "all free".'
+    )
 
 
 def test_the_closing_table_gives_the_paper_then_each_row_beside_all_free():

@@ -11,6 +11,7 @@
 - :func:`jacobian_norm`, :func:`flipped`, :func:`responses`, :func:`sensitivity`, :func:`flip_counts`: section 6's
   measurements and Try this's count; :func:`range_table`: section 5's ranges (reader r39b: helpers out of the page);
 - :func:`split_table`: section 5's table, each CAE on its training grids, the test grids and the new grids;
+- :func:`new_grids_verdict`: the sentence under it, every CAE's place beside "all free" on the new grids, signed;
 - :func:`closing_table`: the closing section's table, beside Table 1;
 - :func:`latent_map`, :func:`principal_plane`, :func:`pc1_correlation`, :func:`folded`: section 8's optional
   latent maps.
@@ -109,7 +110,7 @@ def answer(
         f"| CAE (2DS) | its training grids | {n_new} new grids |",
         "| --- | --- | --- |",
         f"| paper, Table 1 | {paper['seen_acc']:.0%} | {paper['unseen_acc']:.0%} (its own 10 unseen grids) |",
-        f"| CAE-long: the paper's layers and λ, {n_seen} grids, {steps:,} steps "
+        f"| CAE-long: the paper's layer sizes and λ, {n_seen} grids, {steps:,} steps "
         f"| {_cell(long['seen_acc'], long['seen_all_free'])} | {_cell(long['unseen_acc'], free)} |",
         f"| the toolkit's CAE (`paper` preset, chapters 03–04): the same, {preset_length} "
         f"| {_cell(preset['seen_acc'], preset['seen_all_free'])} | {_cell(preset['unseen_acc'], free)} |",
@@ -132,8 +133,9 @@ def _two_sentences(paper: Scores, long: Scores, free: float, *, n_seen: int, n_n
     long_new = long["unseen_acc"]
     gap = gap_points(long_new, free)
     return (
-        f"**The answer.** Trained on {n_seen} grids with the paper's layers and λ for {steps:,} steps, our CAE "
-        f'{seen_said}. But it scores {long_new:.1%} on {n_new} new grids, where answering "all free" gets {free:.1%} '
+        f"**The answer.** Trained on {n_seen} grids with the paper's layer sizes and λ for {steps:,} steps, our CAE "
+        f'{seen_said}. But it scores {long_new:.1%} on {n_new} new grids, where answering "all free" (an empty grid, '
+        f"whatever the input) gets {free:.1%} "
         f"({abs(gap):.1f} points {'below' if gap < 0 else 'above'}): it rebuilds a new workspace **no better than "
         f'answering "all free"**, and Table 1\'s {paper["unseen_acc"]:.0%} on unseen grids does not reproduce.'
     )
@@ -239,6 +241,19 @@ def split_table(
         gaps = [f"{acc:.1%} ({gap_points(acc, share):+.1f} points)" for acc, share in zip((test, new), free[1:])]
         lines.append(f"| {label} | {seen:.1%} | {gaps[0]} | {gaps[1]} |")
     return "\n".join(lines)
+
+
+def new_grids_verdict(gaps: Mapping[str, float], n_new: int) -> str:
+    """Section 5's verdict on the new grids, with its sign (reader r41b: "not more than a point above" read as
+    "perhaps a little above" where every CAE was below): ``gaps`` are each CAE's points against "all free" there, as
+    printed in the table."""
+    low, high = min(gaps.values()), max(gaps.values())
+    if high < 0:
+        return (
+            f'On the {n_new} new grids every one of these CAEs scores below "all free" '
+            f"({high:+.1f} to {low:+.1f} points)."
+        )
+    return f'On the {n_new} new grids these CAEs score {low:+.1f} to {high:+.1f} points against "all free".'
 
 
 def _row(label: str, scores: Scores) -> str:
