@@ -325,7 +325,7 @@ def _chapter_03_opening(nb) -> list[str]:
     want = {"our `paper` preset, 2DS": (50 - band, 50 + band), "our `strong` preset, 2DS": (90, 100)}
     want["our `strong` preset, 3DC-7"] = (90, 100)
     problems = [
-        f"03: the opening verdict's table gives {who} {said.get(who, float('nan')):g}%, not within {low}-{high}%"
+        f"03: the opening verdict's table gives {who} {said.get(who, float('nan')):g}%, not within {low:g}-{high:g}%"
         for who, (low, high) in want.items()
         if not low <= said.get(who, -1) <= high
     ]
