@@ -321,10 +321,11 @@ def _chapter_03_opening(nb) -> list[str]:
         if header and header[0] == "model, unseen workspaces"
         for row in rs
     }
-    want = {"our `paper` preset, 2DS": (40, 60), "our `strong` preset, 2DS": (90, 100)}
+    band = 100 * findings.CHANCE_BAND  # r41c: the verdict's "about" a coin flip, section 4's band (55 % on its edge)
+    want = {"our `paper` preset, 2DS": (50 - band, 50 + band), "our `strong` preset, 2DS": (90, 100)}
     want["our `strong` preset, 3DC-7"] = (90, 100)
     problems = [
-        f"03: the opening verdict's table gives {who} {said.get(who, float('nan')):g}%, not within {low}-{high}%"
+        f"03: the opening verdict's table gives {who} {said.get(who, float('nan')):g}%, not within {low:g}-{high:g}%"
         for who, (low, high) in want.items()
         if not low <= said.get(who, -1) <= high
     ]

@@ -979,7 +979,8 @@ def test_chapter_03_passes_when_its_sentences_carry_the_tables_accuracies():
 
 def test_chapter_03_fails_an_opening_bullet_typing_other_numbers_than_its_table():
     verdict = (
-        "scores {} % balanced accuracy on unseen 2DS workspaces, about a coin flip; the paper's TPR and TNR give {} %."
+        "scores {} % balanced accuracy on unseen 2DS workspaces, within 5 points of a coin flip's 50 % (what this page"
+        ' calls "about"); the paper\'s TPR and TNR give {} %.'
     )
     assert problems(CH03, chapter_03(0.25, 0.25, words=verdict.format(55, 87.5))) == []
     assert problems(CH03, chapter_03(0.25, 0.25, words=verdict.format(54, 87.5))) == [  # reader r36c: 55 % beside 87.5
@@ -998,8 +999,11 @@ def test_chapter_03_fails_a_balanced_accuracy_or_an_opening_verdict_its_numbers_
                 out["data"]["text/markdown"] = text.replace("86% | 100% / 0% | 50% |", "86% | 100% / 0% | 70% |", 1)
             if "our `strong` preset, 3DC-7 | 96%" in text:
                 out["data"]["text/markdown"] = text.replace("3DC-7 | 96%", "3DC-7 | 76%")
+            if "our `paper` preset, 2DS | 55%" in text:  # r41c: past the band that the verdict's "about" names
+                out["data"]["text/markdown"] = out["data"]["text/markdown"].replace("2DS | 55%", "2DS | 56%")
     assert problems(CH03, nb) == [
         "03: the closing table's balanced accuracy for always valid is not (TPR + TNR) / 2",
+        "03: the opening verdict's table gives our `paper` preset, 2DS 56%, not within 45-55%",
         "03: the opening verdict's table gives our `strong` preset, 3DC-7 76%, not within 90-100%",
     ]
 

@@ -486,6 +486,10 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     assert [t.get_text() for t in ax.texts] == ["in collision\n(15.0, 8.0)", "in collision\n(12.0, 6.0)"]
     assert squares.get_markerfacecolor() != "none" and "_hair" not in [line.get_label() for line in ax.get_lines()]
     assert ax.figure.axes[1].get_ylabel() == "P(valid); the line: threshold 0.50"  # r40c: the value, as the maps'
+    # r41c: the label's leader line, dashed vermillion unlike an edge's ink, stops short of the square it names
+    leader = ax.texts[0].arrow_patch
+    assert to_hex(leader.get_edgecolor()) == COLORS["dangerous"] and leader.get_linestyle() == "--"
+    assert leader.shrinkB > 0
 
 
 def test_path_maps_in_collision_label_lies_on_free_cells_not_over_the_block():

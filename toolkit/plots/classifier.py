@@ -295,7 +295,7 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **square)  # r40c: no hair; its label: where
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
     label = dict(textcoords="offset points", va="center", fontsize=9, zorder=7, bbox=box)
-    arrow = dict(arrowstyle="-", color=COLORS["ink"], lw=0.8)  # a leader line to the node it names
+    arrow = dict(arrowstyle="-", color=ANSWER_COLORS[3], lw=1.5, ls="--", shrinkB=8, path_effects=halo(1.5, ("free",)))
     for node in nodes[~nodes_valid][:3]:  # a few named in words too, placed on free cells once laid out (path_map)
         name = f"in collision\n({node[x]:.1f}, {node[y]:.1f})"  # r40c: where, in numbers
         ax.annotate(name, node[[x, y]], xytext=(30, -30), arrowprops=arrow, **label)
