@@ -64,14 +64,13 @@ def answer() -> str:
     rates = _rates()
     cost = rates["exact cfg/s"] / rates["learned cfg/s"]  # compiled exact checks in the time of one network answer
     accuracy = recorded_scores(COMPILED)[0]["acc"]  # the timed network, uniform unseen samples
+    # reader r41e, 05 contradiction 2: the visible sentence rests on the visible table; the means are folded
+    means_too = " Nor by the ratio of the means (folded below)." if none_saved else ""
     return (
         ("**No.** On 3DC-7 no sampler's whole query saved 10 % or more" if none_saved else "**Not always.** On 3DC-7")
         + " with the accurate `strong` network inside Algorithm 1, by the median of each query's own ratio (the "
         "table below), timed against our compiled exact checker or against the slow python-fcl: at most "
-        f"{max(1 - r for r in own) * 100:.0f} %."
-        # reader r41e, 05 contradiction 2: the visible sentence rests on the visible table; the means are folded
-        + (" Nor by the ratio of the means (folded below)." if none_saved else "")
-        + "\n\n"
+        f"{max(1 - r for r in own) * 100:.0f} %.{means_too}\n\n"
         f"**Why.** With python-fcl, sampling was at most {max(shares.values()) * 100:.0f} % of a 3DC-7 query, so even "
         f"a {fcl_sampling[best] * 100:.0f} % cut of it saves at most {shares[best] * fcl_sampling[best] * 100:.0f} %; "
         f"with our fast compiled checker, one network answer costs as much as {cost:.1f} exact checks, so "
