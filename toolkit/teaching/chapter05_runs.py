@@ -47,7 +47,7 @@ def valid_shares(samples: int, seed: int) -> str:
         share = exact_checker(workspace, scenario.robot).are_valid(Q).mean()
         robot = scenario.robot
         rows.append(
-            f"| {name} | {robot_words} | {robot.n_links} / {robot.dof} | {len(workspace.boxes)} | {share:.0%} |"
+            f"| {name} | {robot_words} | {robot.n_links} / {robot.dof} | {len(workspace.boxes)} | {share:.1%} |"
         )
     return (
         f"The share of {samples} uniform samples that is valid, in the workspace of seed {seed}:\n\n"
@@ -228,7 +228,8 @@ def paper_share() -> str:
         '<details><summary>Which "unseen" test did the paper score?</summary>\n\n'
         'It says only (§IV-A) that it generates "2000 samples for each 3D office-like workspace, and 400 samples for '
         'each 3D clutter workspace" "regardless of their validity", and "This is evaluated as unseen scenarios". '
-        "Section 1 reads that as the set Table 2 scores, uniform samples; the paper's own numbers speak against it: "
+        "Section 1's fold \"Why 2000, and how we read the paper's 400 in clutter\" reads that as the set Table 2 "
+        "scores, uniform samples; the paper's own numbers speak against it: "
         "Table 2's three numbers fix the valid share of its test set.\n\n"
         f"The paper's row: {paper['acc']:.0%} = {paper['tpr']:.0%} × share + {paper['tnr']:.0%} × (1 − share) gives a "
         f"valid share of about {implied:.0%}. On uniform samples in the recipe's unseen workspaces, "
