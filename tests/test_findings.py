@@ -99,7 +99,9 @@ def test_planning_table_is_a_markdown_table_with_a_verdict_per_row():
     lines = table.splitlines()
     assert lines[0].startswith("| scenario | sampler | with ÷ without: verdict")  # the verdict before the numbers
     assert lines[2] == "| 3DC-7 | BS | costs time<br>(median 2.00; middle half 2.00–2.00) | 100 / 200 | 3 |"
-    assert lines[3] == "| 3DC-7 | OB | saves time<br>(median 0.50; middle half 0.50–0.50) | 100 / 50 | 3 |"
+    # reader r41d, 5: every median total with three significant figures ("50.0", not "50"; "7.00 / 10.0")
+    assert lines[3] == "| 3DC-7 | OB | saves time<br>(median 0.50; middle half 0.50–0.50) | 100 / 50.0 | 3 |"
+    assert findings._ms(0.007) == "7.00" and findings._ms(0.0068) == "6.80"
     assert "\n    " not in table  # never pre-wrapped
     # reader r31d: where the same exact check's cost moved between the modes, the table says no clear evidence as the
     # sentence under it does, not a plain "costs time"; r37d: with the page's one mark, \*

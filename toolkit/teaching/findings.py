@@ -86,10 +86,10 @@ def planning_table(
             median, q1, q3, said = planning_verdict(row, tie)
             said = UNSURE if (moved or {}).get(name) is not None else said
             said = f"{time_verdict(median, tie=tie)}{NO_CLEAR}" if said == UNSURE else said
+            without, with_ = (_ms(row[mode]["total_s_median"]) for mode in ("without", "with"))
             rows.append(
                 f"| {name} | {sampler} | {said}<br>(median {median:.2f}; middle half {q1:.2f}–{q3:.2f}) "
-                f"| {_ms(row['without']['total_s_median'])} / {_ms(row['with']['total_s_median'])} "
-                f"| {row['without']['n_queries']} |"
+                f"| {without} / {with_} | {row['without']['n_queries']} |"
             )
     return "\n".join(rows)
 
@@ -281,9 +281,9 @@ def outlier_table(tables: Mapping[str, Mapping[str, Mapping]], factor: float = O
 
 
 def _ms(seconds: float) -> str:
-    """Milliseconds, three significant figures, never in exponent notation: ``"0.0812"``, ``"12.3"``, ``"2,100"``."""
+    """Milliseconds, 3 significant figures with their zeros, no exponent: "0.0812", "7.00" (not "7"), "2,100"."""
     ms = 1e3 * seconds
-    return f"{ms:,.0f}" if ms >= 100 else f"{ms:.3g}"
+    return f"{ms:,.0f}" if ms >= 100 else f"{ms:#.3g}".rstrip(".")
 
 
 def accuracy_against(
