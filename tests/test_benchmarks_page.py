@@ -128,7 +128,8 @@ def test_the_opening_says_what_a_check_costs_as_the_checker_table_measured_it():
         f"network: in its Algorithm 1 run of 5 December, timed under load, it cost {cost} times a compiled check in "
         f"3D, and in all four scenarios of that run, 2DS included, a python-fcl check cost {fcl_over} times its "
         "answer ([that run's throughput table](results.md#strong-planner-paper-checker-throughput-configurations-per-"
-        "second-median-and-stage-times-seconds) on the Results page). Algorithm 1's runs are of 5 December, on today's compiled checker; the lazy PRM's are of 3 "
+        "second-median-and-stage-times-seconds) on the Results page). Algorithm 1's runs are of 5 December, on "
+        "today's compiled checker; the lazy PRM's are of 3 "
         "December, on the slower compiled checker of those days."  # reader r40g, benchmarks 4 and 6
     ) in PREDICTION and cost not in LEAD
 
@@ -190,7 +191,8 @@ def test_the_opening_names_the_statistic_of_no_saving_and_counts_the_means():
               for k, r in row["total"].items()}  # fmt: skip
     ties = ", ".join(f"{c} {r:.2f}" for c, r in ratios.items() if change(r) == "about the same time")
     assert f"our lazy PRM's was longer in {longer} of 16 and about the same in {tied} ({ties})." in PREDICTION
-    assert "By the median of each query's own ratio, Algorithm 1's query was shorter in none of its 16 cells" in PREDICTION
+    none = "By the median of each query's own ratio, Algorithm 1's query was shorter in none of its 16 cells"
+    assert none in PREDICTION
     lazy = {f"{checker_scope.NAMES[s]} {k}": v for s in recorded.table("strong", "time improvement")
             for k, v in recorded.improvements("strong", s).items()}  # fmt: skip
     (cell, v), *others = [(c, v) for c, v in lazy.items() if v >= 0.1]
@@ -510,8 +512,9 @@ def test_what_it_means_quotes_the_run_with_python_fcl_on_both_sides():
     sampled_said = ", ".join(f"{100 * v:.0f} %" for v, _ in by_cell.values()).rsplit(", ", 1)
     accounts = [c for c, (v, m) in by_cell.items() if v >= m - 0.01]
     assert (  # reader r36g, lift 2: a bullet of its own, apart from the compiled checker's
-        f"- **Against python-fcl on both sides: the network cut sampling's time by {saving}, yet a query's time tied in "
-        f"{ties} of {len(own)} cells, by the median of each query's own ratio.** In the other {len(fell)} that ratio was "
+        f"- **Against python-fcl on both sides: the network cut sampling's time by {saving}, yet a query's time tied "
+        f"in {ties} of {len(own)} cells, by the median of each query's own ratio.** In the other {len(fell)} that "
+        "ratio was "
         f"{by_ratio}. By means (Table 3), those queries were {' and '.join(by_means)} shorter, and the network saved "
         f"{' and '.join(sampled_said)} of them in sampling: sampling accounts for the saving in "
         f"{' and '.join(accounts)}, not in {', '.join(c for c in by_cell if c not in accounts)}"
@@ -1025,10 +1028,9 @@ def test_reader_r33g_slips_read_from_the_page_s_tables_and_the_sweep_s_record():
     # reader r39g, benchmarks 2: the headline one plain verdict, the statistics settled in the sentence after it
     # reader r40g, benchmarks 1: the headline what the page shows, not "no saving that the network made"
     # reader r41g, benchmarks 3: each of the two medians named apart, not "by medians" for both
-    assert "- **Against our compiled checker: no cell's median query was shorter.** By the median of each query's own " in (
-        flat
-    )
-    assert "Algorithm 1's query was shorter in none of its 16 cells; by the ratio of median times, our lazy PRM's" in flat
+    headline = "- **Against our compiled checker: no cell's median query was shorter.** By the median of each query's"
+    assert headline in flat
+    assert "query was shorter in none of its 16 cells; by the ratio of median times, our lazy PRM's" in flat
     assert "no saving that the network made" not in flat
     assert "timed idle on a 2-core Intel Xeon on 5 December" in SUMMARY and "idle" not in LEAD  # r36g: in the fold
     # reader r37g, contradiction 4: the fold read as if the network ran at 20,000; the loaded run said once, under
@@ -1281,7 +1283,8 @@ def test_the_sweep_s_growth_is_read_from_its_table():
 
 
 def test_the_promised_order_is_the_page_s_order():
-    """Reader r41g, benchmarks 5: "Each answer, with its evidence" listed the sections in another order than the page."""
-    promised = re.findall(r"\]\(#([a-z-]+)\)", PAGE.partition("Each answer, with its evidence")[2].partition("\n\n")[0])
+    """Reader r41g, benchmarks 5: "Each answer, with its evidence" listed the sections in another order."""
+    listing = PAGE.partition("Each answer, with its evidence")[2].partition("\n\n")[0]
+    promised = re.findall(r"\]\(#([a-z-]+)\)", listing)
     headings = [h.lower().rstrip("?").replace(" ", "-") for h in re.findall(r"^## (.+)$", PAGE, re.M)]
     assert promised == [h for h in headings if h in promised] and len(promised) == 3
