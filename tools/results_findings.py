@@ -245,8 +245,9 @@ def paper_sampling(tables: Tables) -> str:
     ]
     if max(costs) > 1 + findings.TIE or not invalid:
         return ""
-    close = [f"{c:.2g}" for c in costs if abs(c - 1) < verdicts.CLOSE]  # reader r41f, contradiction 2: the throughput table's
-    cheaper = [f"{c:.2g}" for c in costs if c <= 1 - verdicts.CLOSE]  # 25 % band, so a cost inside it is no "cheaper"
+    # reader r41f, contradiction 2: the throughput table's 25 % band, so a cost inside it is no "cheaper"
+    close = [f"{c:.2g}" for c in costs if abs(c - 1) < verdicts.CLOSE]
+    cheaper = [f"{c:.2g}" for c in costs if c <= 1 - verdicts.CLOSE]
     said = [f"{' and '.join(close)} too close to tell"] * bool(close) + [f"{' and '.join(cheaper)} cheaper"] * bool(
         cheaper
     )
