@@ -1330,13 +1330,16 @@ def test_at_320_px_tab_reaches_only_the_drawers_panel_on_screen_and_its_panel_bu
     assert remote == []
 
 
-COPY_BUTTONS = """() => [...document.querySelectorAll(".jupyter-wrapper .zeroclipboard-container")].map(box => {
+COPY_BUTTONS = """() => {
+  document.querySelectorAll("details.code-folded").forEach(d => { d.open = true; });  // a folded cell's code, opened
+  return [...document.querySelectorAll(".jupyter-wrapper .zeroclipboard-container")].map(box => {
     box.scrollIntoView({block: "center"});  // each copy button: how far its code runs under it, whether it shows
     const button = box.querySelector("[role=button]").getBoundingClientRect();
     const code = box.parentElement.querySelector(".highlight-ipynb").getBoundingClientRect();
     const top = document.elementFromPoint(button.left + button.width / 2, button.top + button.height / 2);
     return [Math.round(code.right - button.left), button.width > 0 && button.right <= innerWidth && box.contains(top)];
-})"""
+  });
+}"""
 
 
 @pytest.mark.slow
