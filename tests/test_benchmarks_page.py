@@ -592,8 +592,10 @@ def test_the_home_page_compares_the_sampling_savings_with_table_3_as_this_page_d
     line = f"in all four scenarios, by {100 * min(saved):.0f}–{100 * max(saved):.0f} % across the 16 cells, in the "
     line += "paper's direction (its Table 3: "
     line += f"{100 * min(table3):.0f}–{100 * max(table3):.0f} %)"
-    for page in (ROOT / "README.md", ROOT / "docs" / "benchmarks.md"):
-        assert line in " ".join(page.read_text().split()), page.name
+    assert line in " ".join((ROOT / "docs" / "benchmarks.md").read_text().split())
+    home = f"with python-fcl the network cut it in all {len(saved)} cells, by {100 * min(saved):.0f}–"  # reader r41e
+    home += f"{100 * max(saved):.0f} % (the paper's Table 3: {100 * min(table3):.0f}–{100 * max(table3):.0f} %)"
+    assert home in " ".join((ROOT / "README.md").read_text().split())  # visible under Figure 1, the same ranges
     assert beside_table3(scenarios) in " ".join(PAGE.split())
 
 
