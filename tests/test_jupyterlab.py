@@ -2,7 +2,7 @@
 
 Notebook 05's page must show an ipywidgets slider, a matplotlib figure and the
 embedded viewer's iframe, with no "Error displaying widget" and no traceback. A
-notebook many screens tall, saved screen by screen (``--full-page``), must come back
+notebook many screens tall, one of its code cells folded, saved screen by screen (``--full-page``), must come back
 whole: from its first cell's title to its last cell's red picture, no stretch missed.
 Skipped only where no Chromium is installed (``make test`` installs Debian's).
 """
@@ -32,7 +32,8 @@ NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks" / "05_3d_scenes.ipy
 
 def test_notebook_05_runs_in_jupyterlab_with_widgets_figures_and_the_viewer(notebook_cache, tmp_path):
     shown = lab_browser.run_all(
-        NOTEBOOK, env={"TOOLKIT_QUICK": "1", "TOOLKIT_CACHE": str(notebook_cache)}, screenshot=tmp_path / "lab.png"
+        NOTEBOOK, env={"TOOLKIT_QUICK": "1", "TOOLKIT_CACHE": str(notebook_cache)}, screenshot=tmp_path / "lab.png",
+        timeout_s=300,  # quick mode runs in about half a minute; a hang fails in minutes, not a quarter hour
     )
     assert shown.cells_run == shown.code_cells > 0, shown
     assert shown.tracebacks == 0, shown
@@ -51,6 +52,9 @@ TALL_NOTEBOOK = [  # (cell type, source): a title, screens of printed lines, a r
 ]
 
 
+FOLDED = 1  # the first code cell's source is folded, as the course site folds helper code: its run counts too
+
+
 def red_pixels(png: str) -> int:
     return int(np.all(np.asarray(Image.open(png).convert("RGB")) == RED, axis=-1).sum())
 
@@ -58,15 +62,15 @@ def red_pixels(png: str) -> int:
 def test_a_notebook_many_screens_tall_is_saved_whole_screen_by_screen(tmp_path):
     notebook = tmp_path / "tall.ipynb"
     cells = [
-        {"cell_type": kind, "metadata": {}, "source": source}
+        {"cell_type": kind, "metadata": {"jupyter": {"source_hidden": True}} if i == FOLDED else {}, "source": source}
         | ({"outputs": [], "execution_count": None} if kind == "code" else {})
-        for kind, source in TALL_NOTEBOOK
+        for i, (kind, source) in enumerate(TALL_NOTEBOOK)
     ]
     kernel = {"name": "python3", "display_name": "Python 3", "language": "python"}
     notebook.write_text(
         json.dumps({"cells": cells, "metadata": {"kernelspec": kernel}, "nbformat": 4, "nbformat_minor": 5})
     )
-    shown = lab_browser.run_all(notebook, screenshot=tmp_path / "shots" / "lab.png", full_page=True)
+    shown = lab_browser.run_all(notebook, screenshot=tmp_path / "shots" / "lab.png", full_page=True, timeout_s=120)
     assert shown.cells_run == shown.code_cells == 5 and shown.tracebacks == 0, shown
     screens = shown.screens
     height, total = screens[0].bottom - screens[0].top, screens[-1].bottom

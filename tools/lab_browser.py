@@ -226,9 +226,13 @@ def run_all(
 
 def _run_every_cell(page, n_code: int) -> float:
     """Click *Run → Run All Cells* once the kernel has started and wait until every one of the ``n_code`` code
-    cells has run, or one failed and the rest were skipped; the seconds that took."""
+    cells has run, or one failed and the rest were skipped; the seconds that took. Folded code cells (the course
+    site's fold, ``source_hidden`` in a cell's metadata) are opened first with *View → Expand All Code*: a folded
+    cell shows no prompt, so its run could not be counted."""
     page.wait_for_selector(".jp-Notebook .jp-CodeCell")
     _wait_idle(page)  # the kernel has started
+    page.locator("#jp-menu-panel").get_by_text("View", exact=True).click()
+    page.get_by_text("Expand All Code", exact=True).click()
     began = time.monotonic()
     page.locator("#jp-menu-panel").get_by_text("Run", exact=True).click()
     page.get_by_text("Run All Cells", exact=True).click()
