@@ -32,7 +32,9 @@ NOTEBOOK = Path(__file__).resolve().parents[1] / "notebooks" / "05_3d_scenes.ipy
 
 def test_notebook_05_runs_in_jupyterlab_with_widgets_figures_and_the_viewer(notebook_cache, tmp_path):
     shown = lab_browser.run_all(
-        NOTEBOOK, env={"TOOLKIT_QUICK": "1", "TOOLKIT_CACHE": str(notebook_cache)}, screenshot=tmp_path / "lab.png",
+        NOTEBOOK,
+        env={"TOOLKIT_QUICK": "1", "TOOLKIT_CACHE": str(notebook_cache)},
+        screenshot=tmp_path / "lab.png",
         timeout_s=300,  # quick mode runs in about half a minute; a hang fails in minutes, not a quarter hour
     )
     assert shown.cells_run == shown.code_cells > 0, shown
