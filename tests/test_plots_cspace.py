@@ -496,6 +496,21 @@ def test_a_valid_panel_says_the_gap_its_checker_proves(square_world):
     assert right.get_title() == "in collision:\nsquare overlaps block 0 by 0.15"  # the point robot's link, by name
 
 
+def test_panels_in_rows_are_wider_and_their_key_fills_the_empty_place(square_world):
+    """Reader r41a: the first check's three panels, a row, were the page's smallest figure; two a row, the key in
+    the third row's empty place."""
+    exact = exact_checker(square_world, robots.point_robot())
+    Q = np.array([[9.5, 11.0], [9.75, 11.0], [9.95, 11.0]])  # clear, touching, 0.2 into the block at [10, 12]^2
+    in_a_row, in_rows = verdict.verdict_figure(exact, Q), verdict.verdict_figure(exact, Q, columns=2)
+    width = [
+        [ax.get_position().width * fig.get_figwidth() for ax in fig.axes if ax.axison] for fig in (in_a_row, in_rows)
+    ]
+    assert len(width[1]) == 3 and min(width[1]) > 1.4 * max(width[0])
+    (spare,) = [ax for ax in in_rows.axes if not ax.axison]
+    assert spare.get_legend() is not None and not in_rows.legends
+    assert "A key in the last row names block, valid, in collision, block touched" in alt_text(in_rows)
+
+
 def test_a_panel_tells_touching_from_overlapping_and_fills_the_overlap(square_world):
     """Review r31a: chapter 01's squares touching and 0.2 into the block bore one title, the overlap hidden under
     the outlines. The title says how deep; the part of a 2D link inside the block is filled."""

@@ -34,26 +34,37 @@ from toolkit.plots.robot_drawing import (
 PARTS = {"youbot": ("platform", "turret", "upper arm", "forearm", "wrist", "gripper"), "point2d": ("square",)}
 
 
-def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: float = 1.0) -> Figure:
+def verdict_figure(
+    checker: CollisionChecker, Q, *, view: str = "xy", margin: float = 1.0, columns: int | None = None
+) -> Figure:
     """Configurations ``Q (k, dof)`` side by side, one panel each, drawn in ``view`` with the blocks near them and
     the checker's verdict in each title. Every panel frames the same window (all of ``Q`` within ``margin``,
     review r27a: a move hidden by shifted axes), so a block reaching past it is drawn clipped. In a configuration
     in collision, each link box that touches a block and that block are outlined thick (the block dashed) and named
     in the title, numbered as the arrays are: "platform touches block 11 (desk)" (review r30a), or "square overlaps
     block 0 by 0.2" with a 2D link's part inside the block filled light (review r31a); a valid one's title
-    gives its clearance where the checker proves one ("valid: at least 0.15 clear of every block and wall")."""
+    gives its clearance where the checker proves one ("valid: at least 0.15 clear of every block and wall").
+    ``columns`` panels a row (all of them by default; reader r41a: three panels a row were too small to read the
+    first check by), the key in a row's empty place or under the panels."""
     robot, workspace = checker.robot, getattr(checker, "workspace", None)
     if not isinstance(workspace, Workspace):
         raise TypeError(f"this figure draws the checker's workspace, and a {type(checker).__name__} knows none")
     Q = robot.check_configs(Q)  # (k, dof)
     valid = checker.are_valid(Q)  # (k,)
-    fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / len(Q) + 0.6))
-    axes = fig.subplots(1, len(Q), squeeze=False)[0]
     plane = VIEWS[view] if robot.dim == 3 else (0, 1)
     at = list(plane)
     aabbs = robot.link_aabbs(Q)  # (k, L, 2, D): one window for every panel
     lo = np.maximum(aabbs[:, :, 0].min(axis=(0, 1)) - margin, workspace.lower)
     hi = np.minimum(aabbs[:, :, 1].max(axis=(0, 1)) + margin, workspace.upper)
+    columns = columns or len(Q)
+    rows = -(-len(Q) // columns)
+    aspect = min(float((hi - lo)[at[1]] / (hi - lo)[at[0]]), 1.2)  # a row as high as its panels drawn to scale
+    high = PAGE_WIDTH / len(Q) + 0.6 if rows == 1 else rows * ((PAGE_WIDTH / columns - 0.8) * aspect + 1.0)
+    fig = Figure(figsize=(PAGE_WIDTH, high))
+    grid = fig.subplots(rows, columns, squeeze=False).ravel()
+    axes, spare = grid[: len(Q)], grid[len(Q) :]
+    for ax in spare:
+        ax.set_axis_off()
     said = []
     for ax, q, ok in zip(axes, Q, valid):
         draw_robot(ax, robot, q[None], colors=link_colors(1, ok), view=view, margin=margin)
@@ -68,13 +79,13 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
         named = [f"{_part(robot, link)} {_met(workspace, block, depth)}" for link, block, depth in found]
         verdict = _valid_title(checker, q) if ok else "in collision:\n" + ("; ".join(named) or "leaves the region")
         said.append(verdict.replace("\n", " "))
-        ax.set_title(verdict, fontsize=10 if len(Q) < 3 else 9, wrap=True)
+        ax.set_title(verdict, fontsize=10 if columns < 3 else 9, wrap=True)
         ax.tick_params(labelsize=8)
     filled = any(p.get_gid() == "overlap" for ax in axes for p in ax.patches)
-    fig.tight_layout(rect=(0, 0.35 / fig.get_figheight(), 1, 1))
-    named = _key(fig, axes, valid, filled)
+    fig.tight_layout(rect=(0, 0 if len(spare) else 0.35 / fig.get_figheight(), 1, 1))
+    named = _key(fig, axes, valid, filled, spare[0] if len(spare) else None)
     marked = " Each link that touches a block is outlined thick, and the block it touches dashed." * (not all(valid))
-    marked += f" A key under the panels names {', '.join(named)}."
+    marked += f" A key {'in the last row' if len(spare) else 'under the panels'} names {', '.join(named)}."
     marked += " The part of the robot inside a block is filled light." * filled
     zoomed = any(getattr(ax, "zoomed", False) for ax in axes)
     marked += " An inset enlarges a fill too small to see at the panel's scale." * zoomed
@@ -87,15 +98,19 @@ def verdict_figure(checker: CollisionChecker, Q, *, view: str = "xy", margin: fl
     )
 
 
-def _key(fig: Figure, axes, valid: np.ndarray, filled: bool) -> list[str]:
-    """A key right under :func:`verdict_figure`'s panels (drawn to scale, they need not fill their rows) naming what
-    they draw (review r39a: the nudge's panels had none, the first check's lived in the paragraph); its names."""
+def _key(fig: Figure, axes, valid: np.ndarray, filled: bool, place=None) -> list[str]:
+    """A key right under :func:`verdict_figure`'s panels (drawn to scale, they need not fill their rows), or in the
+    empty ``place`` of their last row, naming what they draw (review r39a: the nudge's panels had none, the first
+    check's lived in the paragraph); its names."""
     handles: dict[str, Any] = {"block": Patch(alpha=0.5, **BLOCK_STYLE)}
     handles |= {"valid": Patch(**link_style(VALID_COLOR))} if valid.any() else {}
     if not valid.all():
         handles["in collision"] = Patch(**link_style(INVALID_COLOR))
         handles["block touched"] = Patch(fill=False, edgecolor=COLORS["ink"], linewidth=2, linestyle="--")
     handles |= {"inside the block": Patch(facecolor=COLORS["overlap"], edgecolor=COLORS["ink"])} if filled else {}
+    if place is not None:
+        place.legend(list(handles.values()), list(handles), loc="center", fontsize=9, frameon=False)
+        return list(handles)
     fig.draw_without_rendering()  # the panels' places, drawn to scale
     under = min(ax.get_tightbbox().y0 for ax in axes) / fig.bbox.height
     key: dict[str, Any] = dict(bbox_to_anchor=(0.5, under), ncol=len(handles), fontsize=8, frameon=False)
