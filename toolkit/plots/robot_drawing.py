@@ -176,6 +176,8 @@ def robot_figure(
         marks += [(base, BASE_MARK) for base in bases] if parts else []  # thin links hide a hatch: a marker instead
         for where, style in marks:
             ax.plot(*([c] for c in (where if view == "3d" else where[list(VIEWS[view])])), **style)
+        if parts and view != "3d":
+            _number_links(ax, robot, Q[0], VIEWS[view])
         ax.set_title(f"{robot.name}: {view}", fontsize=10)
         ax.tick_params(labelsize=8)
         if view == "3d":
@@ -183,12 +185,18 @@ def robot_figure(
     if labels is None and valid is not None:
         labels = ["valid" if color == VALID_COLOR else "in collision" for color in colors]
     handles = _legend(labels if not parts else None, colors, hatches, named, shade_names, parts)
+    lines = 0 if not handles else 1 if len(handles) <= 4 else 2  # the legend's rows: five names overran the page
     if handles:
         fig.legend(
-            list(handles.values()), list(handles), loc="lower center", ncol=len(handles), fontsize=9, frameon=False
+            list(handles.values()),
+            list(handles),
+            loc="lower center",
+            ncol=-(-len(handles) // lines),
+            fontsize=9,
+            frameon=False,
         )
-    _fit_height(fig, [axes[v] for v in views], bool(handles))
-    fig.tight_layout(rect=(0, 0.4 / fig.get_figheight() if handles else 0, 1, 1))
+    _fit_height(fig, [axes[v] for v in views], lines)
+    fig.tight_layout(rect=(0, (0.1 + 0.3 * lines) / fig.get_figheight() if handles else 0, 1, 1))
     text = _robot_figure_text(robot, len(Q), views, workspace is not None, valid, labels, hatches, named)
     text += _shades_text(shade_names, parts)
     return describe(fig, text, [configurations_part(robot, Q, labels)])
@@ -218,7 +226,7 @@ def _panels(views: tuple[str, ...], legend: bool) -> tuple[Figure, dict]:
     return fig, fig.subplot_mosaic(mosaic, per_subplot_kw=in_3d)
 
 
-def _fit_height(fig: Figure, axes: list, legend: bool) -> None:
+def _fit_height(fig: Figure, axes: list, legend: int) -> None:
     """Flat views only: the figure's height set so that each row's panels, drawn to scale, fill their width (review
     r39a: chain9's two views 140 px wide under a wide legend; the youBot's side view above an empty band). One panel
     alone is never taller than it is wide, and one much wider than tall is drawn wider."""
@@ -230,7 +238,7 @@ def _fit_height(fig: Figure, axes: list, legend: bool) -> None:
         fig.set_figwidth(PAGE_WIDTH * 0.85)
     drawn = fig.get_figwidth() / columns - 0.7  # inches: a panel's axes, less its y label and ticks
     ratio = min(max(ratio, 0.3), 1.6 if columns > 1 else 1.0)
-    fig.set_size_inches(fig.get_figwidth(), rows * (drawn * ratio + 0.8) + 0.4 * legend)
+    fig.set_size_inches(fig.get_figwidth(), rows * (drawn * ratio + 0.8) + (0.1 + 0.3 * legend) * bool(legend))
 
 
 SHARED_SHADE = (COLORS["shade"], None)  # links the same in every configuration drawn (the youBot's platform, turret)
@@ -240,8 +248,8 @@ BASE_MARK: dict[str, Any] = dict(marker="o", ms=7, color=COLORS["ink"], mec=COLO
 def _link_shades(robot: BoxRobot, Q: np.ndarray, named: bool, parts: bool):
     """Per link, the colour and hatch replacing its configuration's (or None), and the legend's name of each: links
     the same in every named configuration grey ("the same in each"), or with ``parts`` one shade per link."""
-    if parts:  # a shade per link, numbered as link_boxes: two of one size told apart (r31a), link 2 white (r32a)
-        shades = [(CATEGORICAL[i], HATCHES[i]) for i in ((0, 1, 5, 3, 2, 4) * robot.n_links)[: robot.n_links]]
+    if parts:  # a shade per link, numbered as link_boxes: two of one size told apart (r31a); link 2 filled (r41a)
+        shades = [(CATEGORICAL[i], HATCHES[i]) for i in ((0, 1, 2, 3, 4, 5) * robot.n_links)[: robot.n_links]]
         names = {
             f"link {i}: {2 * h.max():g} long": shade for i, (h, shade) in enumerate(zip(robot.half_extents, shades))
         }
@@ -257,10 +265,32 @@ def _link_shades(robot: BoxRobot, Q: np.ndarray, named: bool, parts: bool):
     return [SHARED_SHADE if s else None for s in same], {"the same in each": SHARED_SHADE}
 
 
+def _number_links(ax, robot: BoxRobot, q: np.ndarray, axes: tuple[int, int]) -> None:
+    """Each link's number on the flat view, at the centre of its shadow, on top of every link (reader r41a: chain9's
+    small link 2, under its neighbours' ends, could not be found from the legend alone)."""
+    centers, rotations, half = robot.link_boxes(q[None])
+    for link in range(robot.n_links):
+        middle = outline(box_corners(centers[0, link], rotations[0, link], half[link]), axes).mean(axis=0)
+        ax.text(
+            *middle,
+            str(link),
+            ha="center",
+            va="center",
+            fontsize=8,
+            fontweight="bold",
+            gid="link number",
+            zorder=98,
+            bbox=dict(boxstyle="circle,pad=0.15", facecolor=COLORS["free"], edgecolor=COLORS["ink"], linewidth=0.6),
+        )
+
+
 def _shades_text(shade_names: dict, parts: bool) -> str:
     """What :func:`_link_shades` changed, for the figure's description."""
     if parts:
-        return f" Its base is marked with a black dot; its links from the base ({', '.join(shade_names)}), each shaded."
+        return (
+            f" Its base is marked with a black dot; its links from the base ({', '.join(shade_names)}), each shaded"
+            " and, in a flat view, numbered on the drawing."
+        )
     return " Links the same in every configuration are drawn in light grey ('the same in each')." * bool(shade_names)
 
 
