@@ -603,6 +603,8 @@ def test_a_slice_outlines_the_blocks_a_flat_view_draws_across_links_they_cannot_
     side = _one_link_slice(boxes, view="xz")
     (behind,) = _patches(side.axes[1], "beyond")  # from the side: the second block, behind the links
     assert _drawn_inside(behind, (5.25, 4), (5.5, 6))
+    assert ax.get_title().endswith("black dot: its base at z = 5.00")  # reader r41a: a height a top view cannot show
+    assert side.axes[1].get_title().endswith("black dot: its base")  # the side view shows it
 
 
 def _one_link_slice(boxes, view="xy", x=5.0):

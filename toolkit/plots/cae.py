@@ -68,6 +68,9 @@ def training_curves(
             ax.yaxis.set_minor_locator(NullLocator())
         ax.set_xlabel("epoch")
     axes[0].set_ylabel(ylabel)
+    values = np.concatenate([np.asarray(h, dtype=float) for h in histories.values()])
+    if log and values.min() > 0:  # reader r41b: λ = 0.961's first point, the highest, sat clipped on the top frame
+        axes[0].set_ylim(values.min() / 1.3, values.max() * 1.3)
     if panels:
         fig.suptitle("CAE training curves", fontsize=10)
     else:

@@ -386,7 +386,8 @@ def _robot_panel(
     robot_ax.plot(*([c] for c in (base if view == "3d" else base[list(VIEWS[view])])), gid="base", **BASE_MARK)
     mark_arm(robot_ax, robot, q, view)
     verdict = "valid" if q_valid[0] else "in collision"
-    robot_ax.set_title(f"the robot at the star ({view}):\n{verdict}; black dot: its base", fontsize=9)
+    height = f" at z = {base[2]:.2f}" if robot.dim == 3 and view == "xy" else ""  # reader r41a: from above, unseen
+    robot_ax.set_title(f"the robot at the star ({view}):\n{verdict}; black dot: its base{height}", fontsize=9)
     if view == "3d":
         few_ticks(robot_ax)
         return len(flat), 0
