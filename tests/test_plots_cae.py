@@ -365,6 +365,7 @@ def test_contraction_reads_one_flip_as_well_as_thirty_and_its_legend_covers_no_c
     assert ax_z.get_legend() is None and ax_x.get_legend() is None
     (legend,) = [legend for part in fig.subfigs for legend in part.legends]
     assert [t.get_text() for t in legend.get_texts()] == [*names, "as many as flipped"]
+    assert legend.get_title().get_text() == "the lines of the two panels below"  # r41b: not the boxes' key
     FigureCanvasAgg(fig).draw()
     box = legend.get_window_extent()
     assert all(box.y0 >= ax.get_window_extent().y1 for ax in (ax_z, ax_x))  # r31b: above the line panels, beside none
