@@ -252,6 +252,9 @@ def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int) -> None
     )
 
 
+LINES_KEY: dict[str, Any] = dict(loc="outside upper center", ncols=2, fontsize=9, title_fontsize=9, frameon=False)
+
+
 def contraction(
     jacobian_norms: dict[str, np.ndarray],
     *,
@@ -292,15 +295,7 @@ def contraction(
         _counts_axis(ax, "x", flips)  # the numbers of flips measured
         ax.set_xlabel("cells flipped (log scale)")
     # r31b: above the line panels, not a screen below them; r41b: titled, so that it is not read as the boxes' key
-    responses.legend(
-        handles=ax_x.get_lines(),
-        loc="outside upper center",
-        ncols=2,
-        fontsize=9,
-        frameon=False,
-        title="the lines of the two panels below",
-        title_fontsize=9,
-    )
+    responses.legend(handles=ax_x.get_lines(), title="the lines of the two panels below", **LINES_KEY)
     for ax in (ax_j, ax_z, ax_x):  # review r16b: the legends and ticks at 8 pt, shrunk to the page, read as 8 px
         ax.tick_params(labelsize=9)
     said = "; ".join(

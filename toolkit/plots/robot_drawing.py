@@ -185,16 +185,7 @@ def robot_figure(
     if labels is None and valid is not None:
         labels = ["valid" if color == VALID_COLOR else "in collision" for color in colors]
     handles = _legend(labels if not parts else None, colors, hatches, named, shade_names, parts)
-    lines = 0 if not handles else 1 if len(handles) <= 4 else 2  # the legend's rows: five names overran the page
-    if handles:
-        fig.legend(
-            list(handles.values()),
-            list(handles),
-            loc="lower center",
-            ncol=-(-len(handles) // lines),
-            fontsize=9,
-            frameon=False,
-        )
+    lines = _place_key(fig, handles)
     _fit_height(fig, [axes[v] for v in views], lines)
     fig.tight_layout(rect=(0, (0.1 + 0.3 * lines) / fig.get_figheight() if handles else 0, 1, 1))
     text = _robot_figure_text(robot, len(Q), views, workspace is not None, valid, labels, hatches, named)
@@ -212,6 +203,16 @@ def _legend(labels, colors, hatches, named: bool, shade_names: dict, parts: bool
         )
     handles |= {name: Patch(**link_style(*shade)) for name, shade in shade_names.items()}
     return handles | ({"base": Line2D([], [], **BASE_MARK)} if parts else {})
+
+
+def _place_key(fig: Figure, handles: dict[str, Any]) -> int:
+    """The legend under the panels, in one row or, of five names or more, two (the 9-DoF chain's five overran the
+    page); its number of rows."""
+    lines = 0 if not handles else 1 if len(handles) <= 4 else 2
+    if handles:
+        key: dict[str, Any] = dict(loc="lower center", ncol=-(-len(handles) // lines), fontsize=9, frameon=False)
+        fig.legend(list(handles.values()), list(handles), **key)
+    return lines
 
 
 def _panels(views: tuple[str, ...], legend: bool) -> tuple[Figure, dict]:

@@ -57,14 +57,7 @@ def verdict_figure(
     lo = np.maximum(aabbs[:, :, 0].min(axis=(0, 1)) - margin, workspace.lower)
     hi = np.minimum(aabbs[:, :, 1].max(axis=(0, 1)) + margin, workspace.upper)
     columns = columns or len(Q)
-    rows = -(-len(Q) // columns)
-    aspect = min(float((hi - lo)[at[1]] / (hi - lo)[at[0]]), 1.2)  # a row as high as its panels drawn to scale
-    high = PAGE_WIDTH / len(Q) + 0.6 if rows == 1 else rows * ((PAGE_WIDTH / columns - 0.8) * aspect + 1.0)
-    fig = Figure(figsize=(PAGE_WIDTH, high))
-    grid = fig.subplots(rows, columns, squeeze=False).ravel()
-    axes, spare = grid[: len(Q)], grid[len(Q) :]
-    for ax in spare:
-        ax.set_axis_off()
+    fig, axes, spare = _panels(len(Q), columns, min(float((hi - lo)[at[1]] / (hi - lo)[at[0]]), 1.2))
     said = []
     for ax, q, ok in zip(axes, Q, valid):
         draw_robot(ax, robot, q[None], colors=link_colors(1, ok), view=view, margin=margin)
@@ -96,6 +89,18 @@ def verdict_figure(
     return describe(
         fig, text + "." + marked, [configurations_part(robot, Q, [f"configuration {i + 1}" for i in range(len(Q))])]
     )
+
+
+def _panels(count: int, columns: int, aspect: float) -> tuple[Figure, list, list]:
+    """:func:`verdict_figure`'s figure, its ``count`` panels ``columns`` a row, each row as high as its panels drawn
+    to scale (``aspect``: height / width of the window), and the last row's empty places, unframed."""
+    rows = -(-count // columns)
+    high = PAGE_WIDTH / count + 0.6 if rows == 1 else rows * ((PAGE_WIDTH / columns - 0.8) * aspect + 1.0)
+    fig = Figure(figsize=(PAGE_WIDTH, high))
+    grid = list(fig.subplots(rows, columns, squeeze=False).ravel())
+    for ax in grid[count:]:
+        ax.set_axis_off()
+    return fig, grid[:count], grid[count:]
 
 
 def _key(fig: Figure, axes, valid: np.ndarray, filled: bool, place=None) -> list[str]:
