@@ -55,7 +55,8 @@ ZORDER = {1: 2.8, 3: 3.0}  # over the lines (2: the boundary), squares over circ
 PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
 HATCH = COLORS["c_obstacle"]  # the C-obstacles' hatch on a P(valid) map: light, seen on its black and its greys
-TINT = 0.5  # a P(valid) map's wrong cells tinted in their kind's colour at this opacity, their grey still read
+TINT = {1: 0.25, 3: 0.6}  # wrong cells tinted in their colour: conservative light, its grey read (r41c: 0.5 hid it)
+CUT_LINE = dict(color=COLORS["free"], path_effects=halo(CUT_MAP, ("ink",)))  # r41c: white dots, not a 2nd outline
 BLOCKS = {1: 5, 3: 10}  # tiles a side on every map: a 100-cell map's circles one per 20 x 20 cells, squares 10 x 10
 
 
@@ -83,7 +84,7 @@ def probability_maps(
         image = _draw_probability(ax, probability, valid, grid, t)
         ax.set_box_aspect(1)  # square, as section 4's decision map (reader r33c: 2DS's square drawn 32 % wide)
         bar = fig.colorbar(image, ax=ax, label=f"P(valid); the line: threshold {t:.2f}", shrink=0.9)
-        bar.ax.axhline(t, color=COLORS["ink"], linewidth=2.5, path_effects=halo(2.5, ("free",)))
+        bar.ax.axhline(t, linewidth=2.5, **{**CUT_LINE, "path_effects": halo(2.5, ("ink",))})
         said.append(f"{name}, threshold {t:.2f}: " + answers.answers_in_words(np.asarray(probability) >= t, valid))
         parts.append(answers.map_in_regions(name, said[-1], probability, valid, grid, t))
     blocks = fit_on_side(fig, grid)  # laid out: each kind's marks one per k x k cells holding any, on their side
@@ -124,7 +125,7 @@ def path_map(
     fig = Figure(figsize=(6, 6.2), layout="constrained")
     ax = fig.subplots()
     image = _draw_probability(ax, probability, valid, grid, threshold, mistakes=False, cut=CUT)
-    notch: dict[str, Any] = dict(color=COLORS["ink"], path_effects=halo(CUT, ("free",)))  # as the maps' (r34c)
+    notch: dict[str, Any] = dict(color=COLORS["free"], path_effects=halo(CUT, ("ink",)))  # as the maps' (r34c)
     bar = fig.colorbar(image, ax=ax, label=f"P(valid); the line: threshold {threshold:.2f}", shrink=0.8)  # r40c
     bar.ax.axhline(threshold, lw=CUT, **notch)
     cut = Line2D([], [], linestyle=":", linewidth=CUT, label=f"P(valid) = {threshold:.2f}", **notch)
@@ -247,9 +248,9 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     probability = _on_grid(probability, grid, "probability")
     image = ax.imshow(probability.T, cmap=GREY_CMAP, vmin=0, vmax=1, **_cells(grid))
     if probability.min() < threshold <= probability.max():
-        line = ax.contour(*grid.axes, probability.T, levels=[threshold], colors=COLORS["ink"], linestyles=":")
+        line = ax.contour(*grid.axes, probability.T, levels=[threshold], colors=COLORS["free"], linestyles=":")
         line.set_linewidth(cut)
-        line.set_path_effects(halo(cut, ("free",)))  # a white ring: it shows on the dark side too
+        line.set_path_effects(halo(cut, ("ink",)))  # a black ring: it shows on the light side too
         line.set_zorder(1.9 if cut >= CUT_MAP else 2.5)  # a map's wide line under the boundary (2), the path map's over
     _draw_boundary(ax, valid, grid)
     draw_cell_hatch(ax, grid, ~_on_grid(valid, grid, "valid"), color=HATCH)  # the truth without reading the grey
@@ -257,7 +258,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     if mistakes:  # fit_cell_marks sizes them, no two closer than their pitch
         tint = np.zeros((*codes.shape, 4))  # (nx, ny, RGBA) each wrong cell in its kind's colour, the grey showing
         for code in MISTAKE_MARKERS:  # through (reader r36c: 22 circles on a flat grey hid 64 % of the map wrong)
-            tint[codes == code] = (*to_rgb(ANSWER_COLORS[code]), TINT)
+            tint[codes == code] = (*to_rgb(ANSWER_COLORS[code]), TINT[code])
         ax.imshow(tint.transpose(1, 0, 2), **_cells(grid))
         _draw_mistakes(ax, grid, codes)
     return image
@@ -360,7 +361,7 @@ def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
 def _mistake_handles(blocks: Mapping[int, int]) -> list:
     """The P(valid) maps' legend: the threshold's line, and each mistake's mark, said to be one (``blocks[code]`` 1) or
     one per ``k x k`` cells holding any (review r18b: the conservative circles along the blocks read as a border)."""
-    cut = Line2D([], [], color=COLORS["ink"], linestyle=":", linewidth=CUT_MAP, path_effects=halo(CUT_MAP, ("free",)))
+    cut = Line2D([], [], linestyle=":", linewidth=CUT_MAP, **CUT_LINE)  # type: ignore[arg-type]
     per = {code: f"\none per {k} x {k}-cell tile holding any" if k > 1 else "" for code, k in blocks.items()}
     return [
         (cut, "P(valid) = threshold (dotted):\nthe lighter side is kept"),
