@@ -364,7 +364,7 @@ def _mistake_handles(blocks: Mapping[int, int]) -> list:
     cut = Line2D([], [], linestyle=":", linewidth=CUT_MAP, **CUT_LINE)  # type: ignore[arg-type]
     per = {code: f"\none per {k} x {k}-cell tile holding any" if k > 1 else "" for code, k in blocks.items()}
     return [
-        (cut, "P(valid) = threshold (dotted):\nthe lighter side is kept"),
+        (cut, "P(valid) = threshold (white dots):\nthe lighter side is kept"),
         (_mistake_line(3), f"dangerous mistake: kept, in\ncollision (squares){per[3]}"),
         (_mistake_line(1), f"conservative mistake: rejected,\nfree (circles){per[1]}"),
     ]
