@@ -288,7 +288,7 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     ax.plot(nodes[nodes_valid, x], nodes[nodes_valid, y], ".", **dots)
     if edges is not None and len(edges):  # thin, under the nodes: a node in collision visibly has none (r29c); ink,
         ends = nodes[np.asarray(edges)][..., [x, y]]  # (E, 2, 2)  seen on the light and the mid greys (r30c)
-        ax.add_collection(LineCollection(ends, colors=COLORS["ink"], linewidths=0.5, alpha=0.35, zorder=2.2))  # r32c
+        ax.add_collection(LineCollection(ends, colors=COLORS["ink"], linewidths=0.5, alpha=0.2, zorder=2.2))  # r41c
     square = dict(markersize=8, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True))  # filled, over the path
     ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **square)  # r40c: no hair; its label: where
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
