@@ -55,7 +55,7 @@ PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conse
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
 HATCH = COLORS["c_obstacle"]  # the C-obstacles' hatch on a P(valid) map: light, seen on its black and its greys
 TINT = {1: 0.25, 3: 0.6}  # wrong cells tinted in their colour: conservative light, its grey read (r41c: 0.5 hid it)
-CUT_LINE = dict(color=COLORS["free"], path_effects=halo(CUT_MAP, ("ink",)))  # r41c: white dots, not a 2nd outline
+CUT_LINE: dict[str, Any] = dict(color=COLORS["free"], path_effects=halo(CUT_MAP, ("ink",)))  # r41c: white dots
 BLOCKS = {1: 5, 3: 10}  # tiles a side on every map: a 100-cell map's circles one per 20 x 20 cells, squares 10 x 10
 
 
@@ -358,7 +358,7 @@ def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
 def _mistake_handles(blocks: Mapping[int, int]) -> list:
     """The P(valid) maps' legend: the threshold's line, and each mistake's mark, said to be one (``blocks[code]`` 1) or
     one per ``k x k`` cells holding any (review r18b: the conservative circles along the blocks read as a border)."""
-    cut = Line2D([], [], linestyle=":", linewidth=CUT_MAP, **CUT_LINE)  # type: ignore[arg-type]
+    cut = Line2D([], [], linestyle=":", linewidth=CUT_MAP, **CUT_LINE)
     per = {code: f"\none per {k} x {k}-cell tile holding any" if k > 1 else "" for code, k in blocks.items()}
     return [
         (cut, "P(valid) = threshold (white dots):\nthe lighter side is kept"),
