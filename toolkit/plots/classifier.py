@@ -31,7 +31,6 @@ from matplotlib.colors import ListedColormap, to_rgb
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
-from matplotlib.text import Annotation
 
 from toolkit.learning import metrics
 from toolkit.plots import answers
@@ -55,7 +54,8 @@ ZORDER = {1: 2.8, 3: 3.0}  # over the lines (2: the boundary), squares over circ
 PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
 HATCH = COLORS["c_obstacle"]  # the C-obstacles' hatch on a P(valid) map: light, seen on its black and its greys
-TINT = 0.5  # a P(valid) map's wrong cells tinted in their kind's colour at this opacity, their grey still read
+TINT = {1: 0.25, 3: 0.6}  # wrong cells tinted in their colour: conservative light, its grey read (r41c: 0.5 hid it)
+CUT_LINE: dict[str, Any] = dict(color=COLORS["free"], path_effects=halo(CUT_MAP, ("ink",)))  # r41c: white dots
 BLOCKS = {1: 5, 3: 10}  # tiles a side on every map: a 100-cell map's circles one per 20 x 20 cells, squares 10 x 10
 
 
@@ -83,7 +83,7 @@ def probability_maps(
         image = _draw_probability(ax, probability, valid, grid, t)
         ax.set_box_aspect(1)  # square, as section 4's decision map (reader r33c: 2DS's square drawn 32 % wide)
         bar = fig.colorbar(image, ax=ax, label=f"P(valid); the line: threshold {t:.2f}", shrink=0.9)
-        bar.ax.axhline(t, color=COLORS["ink"], linewidth=2.5, path_effects=halo(2.5, ("free",)))
+        bar.ax.axhline(t, linewidth=2.5, **{**CUT_LINE, "path_effects": halo(2.5, ("ink",))})
         said.append(f"{name}, threshold {t:.2f}: " + answers.answers_in_words(np.asarray(probability) >= t, valid))
         parts.append(answers.map_in_regions(name, said[-1], probability, valid, grid, t))
     blocks = fit_on_side(fig, grid)  # laid out: each kind's marks one per k x k cells holding any, on their side
@@ -124,7 +124,7 @@ def path_map(
     fig = Figure(figsize=(6, 6.2), layout="constrained")
     ax = fig.subplots()
     image = _draw_probability(ax, probability, valid, grid, threshold, mistakes=False, cut=CUT)
-    notch: dict[str, Any] = dict(color=COLORS["ink"], path_effects=halo(CUT, ("free",)))  # as the maps' (r34c)
+    notch: dict[str, Any] = dict(color=COLORS["free"], path_effects=halo(CUT, ("ink",)))  # as the maps' (r34c)
     bar = fig.colorbar(image, ax=ax, label=f"P(valid); the line: threshold {threshold:.2f}", shrink=0.8)  # r40c
     bar.ax.axhline(threshold, lw=CUT, **notch)
     cut = Line2D([], [], linestyle=":", linewidth=CUT, label=f"P(valid) = {threshold:.2f}", **notch)
@@ -159,27 +159,25 @@ def path_map(
 
 
 def metrics_bars(scores: Mapping[str, Mapping[str, float]], title: str = "") -> Figure:
-    """Accuracy, TPR and TNR of several models or baselines (``{name: {"acc", "tpr", "tnr"}}``), grouped, and across
-    each group a dashed line at its balanced accuracy, (TPR + TNR) / 2 (reader r29c: the measure to read, not drawn)."""
-    fig = Figure(figsize=(min(PAGE_WIDTH, 1.6 + 1.6 * len(scores)), 3.8), layout="constrained")
+    """Accuracy, TPR and TNR of several models or baselines (``{name: {"acc", "tpr", "tnr"}}``), grouped, each group's
+    balanced accuracy, (TPR + TNR) / 2, printed under it (reader r29c: the measure to read; r41c: a dashed line at it
+    ran through the bars' values)."""
+    fig = Figure(figsize=(min(PAGE_WIDTH, 1.6 + 1.6 * len(scores)), 3.4), layout="constrained")
     answers.draw_rates(ax := fig.subplots(), scores)
     balanced = [(s["tpr"] + s["tnr"]) / 2 for s in scores.values()]
-    x, line = np.arange(len(scores)), dict(linestyles="--", linewidth=1.5, zorder=4, label="balanced accuracy")
-    ax.hlines(balanced, x - 0.42, x + 0.42, colors=COLORS["ink"], path_effects=halo(1.5, ("free",)), **line)  # type: ignore[arg-type]
-    if any(scores):  # each group's balanced accuracy named under it, not on the line (r30c)
-        ax.set_xticks(x, [f"{name}\nbal. acc. {b:.2f}" for name, b in zip(scores, balanced)], fontsize=8)
-    ax.legend(fontsize=8, loc="upper center", ncols=2, frameon=False)  # the rates' legend, and the line's
+    if any(scores):  # each group's balanced accuracy named under it (r30c)
+        ax.set_xticks(
+            np.arange(len(scores)), [f"{name}\nbal. acc. {b:.2f}" for name, b in zip(scores, balanced)], fontsize=8
+        )
+        ax.set_ylim(0, 1.32)  # r41c: a third of the frame was legend room; the values upright over 1.00, one legend row
+    ax.legend(fontsize=8, loc="upper center", ncols=3, frameon=False)  # the rates' legend
     fig.suptitle(title or "Accuracy, TPR (valid kept), TNR (invalid rejected)")
-    for value in [t for t in ax.texts if isinstance(t, Annotation)]:  # bar_label's: each on its bar's top, over the
-        value.set_zorder(5)  # dashed line in a white ring (reader r33c: one lifted above the line read as the line's)
-        value.set_path_effects(halo(2.5, ("free",)))
-        value.set_bbox(dict(boxstyle="square,pad=0.15", fc=COLORS["free"], ec="none"))  # the line hidden (r37c)
     said = "; ".join(
         f"{name}: accuracy {s['acc']:.2f}, TPR {s['tpr']:.2f}, TNR {s['tnr']:.2f}, balanced accuracy {b:.2f}"
         for (name, s), b in zip(scores.items(), balanced)
     )
     text = f"{title + '. ' if title else ''}Bars of accuracy, TPR (the share of valid configurations kept) and TNR"
-    return describe(fig, f"{text} (the share in collision rejected), a dashed line at balanced accuracy. {said}.")
+    return describe(fig, f"{text} (the share in collision rejected), balanced accuracy under each group. {said}.")
 
 
 def roc_curve(curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]], title: str = "") -> Figure:
@@ -247,9 +245,9 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     probability = _on_grid(probability, grid, "probability")
     image = ax.imshow(probability.T, cmap=GREY_CMAP, vmin=0, vmax=1, **_cells(grid))
     if probability.min() < threshold <= probability.max():
-        line = ax.contour(*grid.axes, probability.T, levels=[threshold], colors=COLORS["ink"], linestyles=":")
+        line = ax.contour(*grid.axes, probability.T, levels=[threshold], colors=COLORS["free"], linestyles=":")
         line.set_linewidth(cut)
-        line.set_path_effects(halo(cut, ("free",)))  # a white ring: it shows on the dark side too
+        line.set_path_effects(halo(cut, ("ink",)))  # a black ring: it shows on the light side too
         line.set_zorder(1.9 if cut >= CUT_MAP else 2.5)  # a map's wide line under the boundary (2), the path map's over
     _draw_boundary(ax, valid, grid)
     draw_cell_hatch(ax, grid, ~_on_grid(valid, grid, "valid"), color=HATCH)  # the truth without reading the grey
@@ -257,7 +255,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     if mistakes:  # fit_cell_marks sizes them, no two closer than their pitch
         tint = np.zeros((*codes.shape, 4))  # (nx, ny, RGBA) each wrong cell in its kind's colour, the grey showing
         for code in MISTAKE_MARKERS:  # through (reader r36c: 22 circles on a flat grey hid 64 % of the map wrong)
-            tint[codes == code] = (*to_rgb(ANSWER_COLORS[code]), TINT)
+            tint[codes == code] = (*to_rgb(ANSWER_COLORS[code]), TINT[code])
         ax.imshow(tint.transpose(1, 0, 2), **_cells(grid))
         _draw_mistakes(ax, grid, codes)
     return image
@@ -290,7 +288,7 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     ax.plot(nodes[nodes_valid, x], nodes[nodes_valid, y], ".", **dots)
     if edges is not None and len(edges):  # thin, under the nodes: a node in collision visibly has none (r29c); ink,
         ends = nodes[np.asarray(edges)][..., [x, y]]  # (E, 2, 2)  seen on the light and the mid greys (r30c)
-        ax.add_collection(LineCollection(ends, colors=COLORS["ink"], linewidths=0.5, alpha=0.35, zorder=2.2))  # r32c
+        ax.add_collection(LineCollection(ends, colors=COLORS["ink"], linewidths=0.5, alpha=0.2, zorder=2.2))  # r41c
     square = dict(markersize=8, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True))  # filled, over the path
     ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **square)  # r40c: no hair; its label: where
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
@@ -360,10 +358,10 @@ def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
 def _mistake_handles(blocks: Mapping[int, int]) -> list:
     """The P(valid) maps' legend: the threshold's line, and each mistake's mark, said to be one (``blocks[code]`` 1) or
     one per ``k x k`` cells holding any (review r18b: the conservative circles along the blocks read as a border)."""
-    cut = Line2D([], [], color=COLORS["ink"], linestyle=":", linewidth=CUT_MAP, path_effects=halo(CUT_MAP, ("free",)))
+    cut = Line2D([], [], linestyle=":", linewidth=CUT_MAP, **CUT_LINE)
     per = {code: f"\none per {k} x {k}-cell tile holding any" if k > 1 else "" for code, k in blocks.items()}
     return [
-        (cut, "P(valid) = threshold (dotted):\nthe lighter side is kept"),
+        (cut, "P(valid) = threshold (white dots):\nthe lighter side is kept"),
         (_mistake_line(3), f"dangerous mistake: kept, in\ncollision (squares){per[3]}"),
         (_mistake_line(1), f"conservative mistake: rejected,\nfree (circles){per[1]}"),
     ]
