@@ -74,9 +74,7 @@ def answer() -> str:
         f"**Why.** With python-fcl, sampling was at most {max(shares.values()) * 100:.0f} % of a 3DC-7 query, so even "
         f"a {fcl_sampling[best] * 100:.0f} % cut of it saves at most {shares[best] * fcl_sampling[best] * 100:.0f} %; "
         f"with our fast compiled checker, one network answer costs as much as {cost:.1f} exact checks, so "
-        "sampling got slower."
-        + (MORAL if none_saved and cost > 1 else "")
-        + "\n\n"
+        "sampling got slower." + (MORAL if none_saved and cost > 1 else "") + "\n\n"
         # reader r40e, 05 lift 1: the middle of the page is about accuracy; this line ties it to the answer
         # reader r41e, 05 contradiction 4: which of the chapter's three trainings of `strong` this one is
         f"The network is not wrong: the timed one is right on {accuracy * 100:.0f} % of uniform samples (its row in "
@@ -399,9 +397,7 @@ def accuracy_table(
         + "\n\n"
         + "\n".join(head + folded)
         + f"\n\nThe same model on its own balanced unseen test (half valid): accuracy {balanced['acc']:.0%}, "
-        f"TPR {balanced['tpr']:.0%}, TNR {balanced['tnr']:.0%}."
-        + (f" {also}" if also else "")
-        + "\n\n</details>"
+        f"TPR {balanced['tpr']:.0%}, TNR {balanced['tnr']:.0%}." + (f" {also}" if also else "") + "\n\n</details>"
     )
 
 
