@@ -125,8 +125,7 @@ def means_table() -> str:
     )
 
 
-# reader r41e, 05 lift 3: the answer's moral, at the end of its "Why." and (written) first in the chapter's Summary
-MORAL = (
+MORAL = (  # reader r41e, 05 lift 3: the answer's moral, at the end of its "Why." and (written) first in the Summary
     " **The moral:** prediction saves time only where a network answer is cheaper than an exact check *and* sampling "
     "is a large share of a query; on 3DC-7 neither checker gave both."
 )
@@ -192,9 +191,8 @@ def check_costs() -> str:
 
 
 def _longer(means: Mapping[str, float], sampling: Mapping[str, float]) -> str:
-    """The samplers whose queries took longer by the ratio of the means (python-fcl's OB at 1.12, reader r28e), as a
-    sentence: a sampling saving (``sampling``, Table 3's improvements) cannot lengthen a query, so the home page's
-    test (a change bigger than sampling allows is not prediction's) is applied here too (reader r32e); "" if none."""
+    """A sentence: the samplers whose queries took longer by the ratio of the means (reader r28e), which a sampling
+    saving (``sampling``) cannot do: the home page's test, applied here too (reader r32e); "" if none."""
     longer = [s for s in SAMPLERS if time_verdict(means[s]) == COSTS]
     if not longer:
         return ""
@@ -268,9 +266,8 @@ def _paper_side() -> str:
 
 
 def _beyond_sampling() -> str:
-    """Reader r33e: the home page's test applied to the paper's 3DC-7 row. Skipping the samples' checks can save at
-    most the sampling stage, so a query saving, by the paper's own §V mean times, more than all its sampling took
-    without prediction is not prediction's; a sentence per such sampler, empty where there is none."""
+    """Reader r33e: the home page's test on the paper's 3DC-7 row: a query saving, by its §V mean times, more than
+    all its sampling took is not prediction's; a sentence per such sampler, "" where there is none."""
     times, over = paper_numbers.TIMES[SCENARIO], paper_numbers.saved_beyond_sampling()
     said = ""
     for s in SAMPLERS:
@@ -357,13 +354,7 @@ ALWAYS = 'answering "valid" to all'  # the accuracy table's baseline column (rea
 
 
 def accuracy_table(
-    scores: Mapping[str, float],
-    valid_share: float,
-    samples: int,
-    seed: int,
-    balanced: Mapping,
-    threshold: float,
-    also: str = "",
+    scores: Mapping, valid_share: float, samples: int, seed: int, balanced: Mapping, threshold: float, also: str = ""
 ) -> str:
     """The closing's accuracy table (reader r41e, 05 lift 4: three rows open, the rest folded), each row beside
     answering "valid" to its samples: the paper's Table 2, the paper's recipe on uniform samples and the timed runs'
