@@ -277,7 +277,11 @@ def test_a_scenes_still_draws_the_workspace_then_the_robot_close_up_at_each_pose
     bases = robot.link_boxes(path[[0, -1]])[0][:, 0]  # (2, 3) each pose's first link's centre
     np.testing.assert_allclose(drops, [[base, [*base[:2], 0.0]] for base in bases])
     for close_up, at in ((start, 0), (end, -1)):  # the samples inside its window but off the robot's
-        assert not any(t.get_text() for t in close_up.get_xticklabels())  # reader r39e: half-width, no ticks
+        fig.draw_without_rendering()  # reader r39e: half-width, its ticks crowded; r41e: but with none, no scale
+        shown = [t.get_text() for t in close_up.get_xticklabels() if t.get_text()]
+        lo_x, hi_x = close_up.get_xlim()
+        within = [x for x in close_up.get_xticks() if lo_x <= x <= hi_x]
+        assert shown and 1 <= len(within) <= 3 and close_up.xaxis.get_ticklabels()[0].get_fontsize() == 8
         lo, hi = np.array([close_up.get_xlim(), close_up.get_ylim(), close_up.get_zlim()]).T  # picture, shaped by
         inside = np.all((points >= lo) & (points <= hi), axis=1)  # (T,) validity; links told apart; trace dashed
         over = still_panels.over_robot(close_up, robot, path[at], points)  # (T,) pictured on or beside a link
@@ -355,7 +359,8 @@ def test_a_stills_model_wrong_star_is_hollow_round_the_mark_it_flags_larger_roun
     entry = still_panels.star_on_mark({"sample, valid": circle, "sample, model wrong": stars})
     assert entry == {"sample, valid": circle, still_panels.CONSERVATIVE_ENTRY: (circle, stars)}
     assert len(stars.get_facecolor()) == 0 or stars.get_facecolor()[0][3] == 0  # the circle or diamond shows inside
-    assert stars.get_sizes()[0] > 4 * still_panels.SAMPLE_MARKS["valid"][2]  # round the mark, larger than it
+    # round the mark, larger than it (reader r41e: smaller than before in the overview, where they overlapped)
+    assert 2.5 * still_panels.SAMPLE_MARKS["valid"][2] < stars.get_sizes()[0] < 150
     with pytest.raises(ValueError, match="drawn in 3D"):
         scenes.scene_still(scenarios.get("2ds").robot, workspace, {})
 

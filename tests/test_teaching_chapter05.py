@@ -45,7 +45,9 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
     # reader r34e, contradiction 3: the sampler whose cut was worth most saved no query time with python-fcl by
     # means; reader r38e, 05 contradictions 1-2: said in "Why", in the table's own words (a cost within noise)
     why = shown.split("**Why.** ")[1].split("\n\n")[0]  # reader r39e, 05 lift 2: one sentence a student can repeat
+    why, moral = why.split(" **The moral:** ")  # reader r41e, 05 lift 3: a one-line moral ends "Why."
     assert why.count(". ") == 0 and why.endswith("so sampling got slower.")
+    assert moral.count(". ") == 0 and moral.endswith("on 3DC-7 neither checker gave both.")
     assert why.startswith("With python-fcl, sampling was at most 14 % of a 3DC-7 query")
     assert (
         'Even OB\'s whole query saved nothing: its ratio of the means reads "costs time, within noise (1.12)"' in fold
@@ -99,9 +101,11 @@ def test_the_accuracy_table_has_the_answers_pair_as_a_row():
     assert row.endswith(f"| {always}% |")  # reader r33e, lift 4: answering "valid" to its samples, its last column
     ours = "ours: this notebook's `strong` model (threshold 0.57)"
     assert f"| {ours}, §5's 2000 uniform samples, workspace of seed 0 | 94.5% | 93.5% | 97.5% | 74.5% |" in table
-    assert table.endswith("its own balanced unseen test (half valid): accuracy 96%, TPR 95%, TNR 96%.")
-    rows = [line for line in table.splitlines() if line.startswith("| ") and not line.startswith("| ---")]
-    assert len(rows) == 6 and rows[1].startswith("| paper, Table 2 |")  # a header and five rows, the paper's first
+    assert table.endswith("its own balanced unseen test (half valid): accuracy 96%, TPR 95%, TNR 96%.\n\n</details>")
+    shown, folded = table.split("<details>")  # reader r41e, 05 lift 4: three rows open, two in a fold
+    rows = [line for line in shown.splitlines() if line.startswith("| ") and not line.startswith("| ---")]
+    assert len(rows) == 4 and rows[1].startswith("| paper, Table 2 |")  # a header and three rows, the paper's first
+    assert rows[3].startswith(f"| {timed} |") and f"| {ours}, §5's" in folded  # the answer's row open, §5's folded
 
 
 def test_truth_vs_prediction_counts_each_kind_once():

@@ -49,13 +49,13 @@ def mark_closest(scene, robot: BoxRobot, q: np.ndarray, blocks: np.ndarray, boun
     scene.scatter(*ends.T, s=10, color=COLORS["ink"], depthshade=False, gid="closest ends")
     said = f"{gap:.3f} apart" + ("" if bound is None else f"\n(bound {bound:.3f})")  # gap ≥ bound (r36e: not "bound ≥")
     x, y, _ = proj3d.proj_transform(*ends.mean(axis=0), scene.get_proj())  # the line's middle on the picture
-    left = _away_from(scene, ends.mean(axis=0), blocks)[0] < 0  # the upper corner on the gap's side, off the block
-    scene.annotate(  # reader r39e: beside the gap the label sat on the dashed path and the chain; a corner is empty
+    away = _away_from(scene, ends.mean(axis=0), blocks)  # (2,) sideways off the nearest block, a little down
+    scene.annotate(  # reader r41e: from a corner its leader crossed the panel; now beside the gap, on a white ground
         said,
         (float(x), float(y)),
-        xytext=(LABEL_CORNER, 1.0 - LABEL_CORNER) if left else (1.0 - LABEL_CORNER, 1.0 - LABEL_CORNER),
-        textcoords="axes fraction",
-        ha="left" if left else "right",
+        xytext=tuple(LABEL_OFFSET * away),
+        textcoords="offset points",
+        ha="left" if away[0] > 0 else "right",
         va="top",
         arrowprops=dict(arrowstyle="-", color=COLORS["ink"], linewidth=0.6, shrinkA=1.0, shrinkB=2.0),
         **{**scene_label(), **LABEL_ON_TOP},
@@ -63,7 +63,7 @@ def mark_closest(scene, robot: BoxRobot, q: np.ndarray, blocks: np.ndarray, boun
     return gap
 
 
-LABEL_CORNER = 0.08  # of the 3D axes: the gap's label this far in from an upper corner (reader r39e)
+LABEL_OFFSET = 40.0  # points: the gap's label this far from the gap's middle (reader r41e)
 # reader r33e: the base's dashed trace ran through the label ("0.028" read "0:028"). mplot3d gives its lines and
 # faces z-orders above the label's by depth, so the label goes above them all, on a white ground.
 LABEL_ON_TOP = dict(zorder=1e6, bbox=dict(boxstyle="round,pad=0.2", facecolor=COLORS["free"], edgecolor="none"))

@@ -50,6 +50,25 @@ def mark_series(fig: Figure, index: int, probability, nodes) -> None:
     shown = [ax for ax in panels if any(line.get_gid() == "probability" for line in ax.get_lines())]
     if probability is not None and shown:
         _mark_probability(shown[0], np.asarray(probability, dtype=float), index)
+        _key_probability(shown[0])
+
+
+def _key_probability(ax) -> None:
+    """The P(valid) panel's own key (reader r41e: its shaded band had no legend entry): the dashed threshold and,
+    where there is one, the band of frames the model calls colliding; in the panel's lower right, over the ticks."""
+    handles = [h for h in ax.get_lines() if h.get_gid() == "threshold"][:1]
+    handles += [h for h in ax.patches if h.get_gid() == "below threshold"][:1]
+    words = {"threshold": "threshold (dashed)", "below threshold": "shaded: the model calls it colliding"}
+    if handles:
+        ax.legend(
+            handles,
+            [words[h.get_gid()] for h in handles],
+            loc="lower right",
+            bbox_to_anchor=(1.0, NODE_TICK),
+            fontsize=8,
+            framealpha=0.9,
+            borderaxespad=0.3,
+        )
 
 
 def _tick_nodes(panels: list, nodes: np.ndarray) -> None:

@@ -106,8 +106,9 @@ def scene_still(
         hide = None if samples is None else over_robot(ax, robot, q, samples[0])  # (N,) marks over the robot
         drawn = draw_points(ax, samples, trace, clip=True, scale=CLOSE_UP_SCALE, hide=hide)
         seen.setdefault(label, (drawn, near, angles))
-        if len(views) > 1:  # reader r39e: half a row wide, its ticks crowded; the overview gives the coordinates
-            ax.set(xticklabels=[], yticklabels=[], zticklabels=[])
+        if len(views) > 1:  # reader r39e: half a row wide, its ticks crowded; r41e: but with none, no scale
+            ax.locator_params(nbins=2)
+            ax.tick_params(labelsize=8, pad=0)
         else:
             moved |= _z_apart(ax)  # reader r29e: a close-up's z ticks stood over its y ticks
         verdict = model_words((model or {}).get(label), ok)
@@ -153,7 +154,8 @@ def _ring_the_robot(ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray) ->
     r23b: in a cube of 123 blocks the robot, about 10 px tall, was hard to find, and its name over it sat on marks)."""
     (label,) = [text for text in ax.texts if text.get_gid() == "pose label"]
     centre = robot.link_aabbs(np.asarray(q, dtype=float)[None])[0].mean(axis=(0, 1))  # (3,) the links' boxes' middle
-    ax.scatter(*centre[:, None], s=(2 * RING_PT) ** 2, depthshade=False, zorder=8.0, gid="robot ring", **RING_STYLE)
+    ring = dict(s=(2 * RING_PT) ** 2, depthshade=False, zorder=9.0, gid="robot ring")  # r41e: over the sparkles
+    ax.scatter(*centre[:, None], **ring, **RING_STYLE).set_path_effects(halo(1.6, ("free",)))  # ringed in white
     x, y, _ = proj3d.proj_transform(*centre, ax.get_proj())  # where the robot is drawn, in the panel's 2D data
     corners = np.array(np.meshgrid(*np.stack([workspace.lower, workspace.upper], axis=1))).reshape(3, -1)  # (3, 8)
     sides, _, _ = proj3d.proj_transform(*corners, ax.get_proj())  # (8,) the region's corners, across the panel
@@ -166,7 +168,7 @@ def _ring_the_robot(ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray) ->
         fontsize=9,
         zorder=8.0,
         path_effects=halo(1.0, ("free",)),
-        arrowprops=dict(arrowstyle="-", color=COLORS["ink"], linewidth=0.8, shrinkA=2.0, shrinkB=RING_PT),
+        arrowprops=LEADER,
         gid="pose label",
     ).set_in_layout(False)  # beside the region, maybe past the panel's side: the layout leaves the panels be
     label.remove()
@@ -174,6 +176,8 @@ def _ring_the_robot(ax, robot: BoxRobot, workspace: Workspace, q: np.ndarray) ->
 
 RING_PT = 14.0  # points: the radius of the ring round a single robot in its still's overview
 RING_STYLE = dict(marker="o", facecolors="none", edgecolors=COLORS["ink"], linewidths=1.6)
+LEADER = dict(arrowstyle="-", color=COLORS["ink"], linewidth=0.8, shrinkA=2.0, shrinkB=RING_PT)  # name to ring,
+LEADER |= dict(path_effects=halo(0.8, ("free",)))  # ringed in white over the sparkles (reader r41e)
 RING_PAD = 0.02  # of the region's width as drawn: the robot's name this far out from its side
 
 

@@ -53,7 +53,8 @@ OVERVIEW_BLOCKS = {  # {dense: (far blocks' style, near blocks')} in an overview
     False: (dict(alpha=0.3, linewidth=0.6), dict(alpha=0.45, linewidth=1.0)),  # darker on its wide floor, the
     True: (dict(alpha=0.1, linewidth=0.2), dict(alpha=0.3, linewidth=0.8)),  # clutter's fainter, the near ones not
 }
-OVERVIEW_STAR = 150  # points²: an overview's star round a mistake (a close-up's: SAMPLE_MARKS' 300, scaled)
+OVERVIEW_STAR = 100  # points²: an overview's star round a mistake (reader r41e: at 150 the dangerous ones, 1.8
+#   times that, overlapped each other and the ringed robot; a close-up's: SAMPLE_MARKS' 300, scaled)
 OVERVIEW_ALPHA = 0.45  # an overview's marks, light: the robot drawn over them and the blocks under them show
 CLOSE_UP_SCALE = 1.5  # a close-up's marks this many times larger: a small window, seen near
 NEAR = 0.3  # workspace units: a block this close to a link's bounding box is drawn darker in a close-up
@@ -89,9 +90,9 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
     draw_points(ax, samples, trace, alpha=OVERVIEW_ALPHA)
     for marks in ax.collections:  # every mistake starred, each star smaller than a close-up's: a hundred fit
         if marks.get_label() == "sample, model wrong":
-            marks.set(sizes=[OVERVIEW_STAR], linewidth=0.9)
+            marks.set(sizes=[OVERVIEW_STAR], linewidth=0.8)
         elif marks.get_label() == DANGEROUS_LABEL:
-            marks.set(sizes=[OVERVIEW_STAR * DANGEROUS_STAR], linewidth=1.6)
+            marks.set(sizes=[OVERVIEW_STAR * DANGEROUS_STAR], linewidth=1.2)
     ax.computed_zorder = False  # the robot in front of every sample
     _floor_cues(ax, robot, [q for q, _ in poses.values()], trace, workspace.lower[2])
     lift = 0.04 * float(np.max(workspace.upper - workspace.lower))  # a label this far above the robot
