@@ -21,6 +21,7 @@ from collections.abc import Mapping
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.legend_handler import HandlerTuple
 from matplotlib.ticker import NullLocator
 
 from toolkit.plots.alt import Part, describe
@@ -30,7 +31,8 @@ from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 
 READS = (COSTS, TIES, SAVES)  # what a median reads as, in the legend's order; each its own colour and marker
 GAP = 1  # an empty slot between two scenarios' groups of samplers
-APART = 0.22  # where a scenario has two series: each point this far from its sampler's tick, the first to the left
+APART = 0.27  # where a scenario has two series: each point this far from its sampler's tick, the first to the left
+# (reader r41f: at 0.22 a filled point and its hollow twin of one sampler touched)
 BELOW_1 = (0.7,)  # labelled on :func:`own_ratios`' axis, where savings lie, beside its 1-2-5 steps (r27f: no 0.8); the
 # tie band's edges on the right (:func:`_band_edges`; r30f: "0.9" crowded the "1")
 NEAR_1 = 1.25  # :func:`means_grid`'s extra ticks this close to 1 are labelled on the right, away from the "1"
@@ -61,6 +63,7 @@ def own_ratios(
     slow: Cells | None = None,
     series: tuple[str, str] = ("", ""),
     edge: float | None = None,
+    width: float = PAGE_WIDTH,
 ) -> Figure:
     """``{scenario: {sampler: (median, q1, q3)}}`` of each query's own ratio, with / without prediction: a point per
     scenario and sampler at its median, a whisker over its middle half (``q1`` to ``q3``), on a log axis with the
@@ -69,9 +72,10 @@ def own_ratios(
     sampler is written under it, each scenario under its samplers. ``slow``, where given, is a second series of the
     same form (any of the scenarios), drawn hollow beside the first; ``series`` names the two in the legend. ``edge``,
     where given, hatches the band from ``1 - edge`` to ``1 + edge`` round the tie band (:func:`_edge_band`): a cost or
-    saving there lies in the noise band (review r30f, item 2)."""
+    saving there lies in the noise band (review r30f, item 2); the edges of both bands are labelled outside the axes,
+    on the right (:func:`_edge_labels`). ``width``: inches (a page's column may be wider than a chapter's)."""
     slow = {} if slow is None else slow
-    fig = Figure(figsize=(PAGE_WIDTH, 3.9))
+    fig = Figure(figsize=(width, 3.9))
     ax = fig.subplots()
     names: list[str] = []  # tick labels: the samplers
     ticks: list[float] = []  # their x
@@ -86,7 +90,7 @@ def own_ratios(
         names += list(by_sampler)
         ticks += list(x)
         centres.append(float(x.mean()))
-    _legend_entries(ax, series if slow else None, None if edge is None else (edge, tie))
+    pairs = _legend_entries(ax, series if slow else None, None if edge is None else (edge, tie))
     ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
     tie_band(ax, tie)
     ax.set_xticks(ticks, names)
@@ -101,12 +105,14 @@ def own_ratios(
     ax.set_xlim(-0.7, ticks[-1] + 0.9)  # reader r33f: the last hollow point clears the frame
     drawn = [v for table in (cells, slow) for by in table.values() for value in by.values() for v in value]
     _own_axis(ax, drawn, tie, [] if edge is None else [1 - edge, 1 + edge])
-    ax.set_ylabel(Y_LABEL, fontsize=9)  # room for the band's edges on the right
+    _edge_labels(ax, sorted({1 - tie, 1 + tie, *([] if edge is None else [1 - edge, 1 + edge])}))
+    ax.set_ylabel(Y_LABEL, fontsize=9)
     ax.set_title(title, fontsize=10)
-    legend_above(fig, [ax], 2)
+    _legend_above(fig, ax, pairs)
     words = _words(cells, title, tie, series[0] if slow else "")
     words += f" Hollow points beside them, {series[1]}. {_counts(slow, tie)}" if slow else ""
     words += f" Hatched round the tie band, {EDGE_WORDS.format(low=1 - edge, high=1 + edge)}." if edge else ""
+    words += " Both bands' edges are labelled on the right." if edge else " The band's edges are labelled on the right."
     if not slow:
         return describe(fig, words, [_part(cells, title)])
     return describe(
@@ -126,7 +132,38 @@ def _own_axis(ax, drawn: list[float], tie: float, edges: list[float]) -> None:
     shown = sorted({round(s, 2) for s in every if low <= s <= high})
     ax.set_yticks(shown, [f"{s:g}" for s in shown])
     ax.yaxis.set_minor_locator(NullLocator())  # review r27f: an unlabelled tick under 0.7 read as a missing label
-    # reader r36f: no tie-band edges on the right, 15 px from the noise band's on the left; the legend names the band
+
+
+def _edge_labels(ax, edges: list[float]) -> None:
+    """The bands' ``edges`` (sorted) labelled outside the axes on the right, where the "1" on the left cannot crowd
+    them (reader r41f: whether 1.10 was a tie or a cost could not be read off the plot): of each pair of edges on one
+    side of 1, the outer label stands beyond its tick and the inner one towards 1, so the two never touch."""
+    right = ax.secondary_yaxis("right")
+    right.set_yticks(edges, [f"{e:.2f}" for e in edges])
+    right.yaxis.set_minor_locator(NullLocator())
+    right.tick_params(labelsize=8, length=3, pad=2)
+    below = [e for e in edges if e < 1]
+    for label, e in zip(right.get_yticklabels(), edges):
+        outer = e == min(below) if e < 1 else e == max(edges)
+        label.set_verticalalignment(("top" if e < 1 else "bottom") if outer else ("bottom" if e < 1 else "top"))
+
+
+def _legend_above(fig: Figure, ax, pairs: dict) -> None:
+    """:func:`~toolkit.plots.timings.legend_above` for :func:`own_ratios`, each verdict's entry its ``pairs`` of
+    markers (filled and hollow, as the plot draws them) side by side."""
+    handles, labels = ax.get_legend_handles_labels()
+    handles = [pairs.get(label, handle) for handle, label in zip(handles, labels)]
+    room = (0.1 + 0.2 * -(-len(labels) // 2)) / fig.get_figheight()
+    fig.legend(
+        handles,
+        labels,
+        loc="upper center",
+        ncol=2,
+        fontsize=9,
+        frameon=False,
+        handler_map={tuple: HandlerTuple(ndivide=None, pad=0.6)},
+    )
+    fig.tight_layout(rect=(0, 0, 1, 1 - room))
 
 
 NOISE_WORDS = (  # means_grid's hatching, told apart from own_ratios' (reader r32f: one hatch meant two bands)
@@ -162,28 +199,34 @@ def hatch_round(ax, reach: tuple[float, float], tie: float, label: str | None, h
         ax.axhline(y, color=COLORS["reference"], linestyle=style, linewidth=1.0, zorder=0.5)
 
 
-def _legend_entries(ax, series: tuple[str, str] | None, edge: tuple[float, float] | None = None) -> None:
-    """The legend's entries: each verdict once, by its colour and shape, filled as the plot draws its filled points;
-    and where there are two ``series``, which a point's fill names, on a plain circle. Fill is the checker's cue, said
-    in those two entries alone (reader r40e, home figure 1: a half-filled icon drew a marker the plot never draws);
-    the caption counts which checker's points read as each verdict."""
+def _legend_entries(ax, series: tuple[str, str] | None, edge: tuple[float, float] | None = None) -> dict:
+    """The legend's entries: each verdict once, by its colour and shape, drawn as the plot draws its points, filled
+    and, where there are two ``series``, hollow beside it (reader r41f: a verdict's hollow look was in no entry);
+    and which series a point's fill names, on a plain circle (reader r40e, home figure 1: no half-filled icon, a
+    marker the plot never draws); the caption counts which checker's points read as each verdict. Returns each
+    verdict's words and its icons, for :func:`_legend_above`."""
+    pairs = {}
     for k, reads in enumerate(READS):
         look = series_style(k)
-        ax.plot(
-            [],
-            [],
-            linestyle="none",
-            marker=look["marker"],
-            markersize=7,
-            label=_read(reads),
-            color=look["color"],
-            markeredgecolor=look["color"],
-        )
+        icons = [
+            ax.plot(
+                [],
+                [],
+                linestyle="none",
+                marker=look["marker"],
+                markersize=7 + 2 * (look["marker"] == "^" and hollow),
+                label=None if hollow else _read(reads),
+                **_fill(look["color"], hollow),
+            )[0]
+            for hollow in ((False, True) if series else (False,))
+        ]
+        pairs[_read(reads)] = tuple(icons)
     if edge:  # drawn here, so the legend lists it under the verdicts (:func:`_edge_band`, ``(edge, tie)``)
         _edge_band(ax, *edge)
     for hollow, name in zip((False, True), series or ()):
         label = f"{'hollow' if hollow else 'filled'}: {name}"
         ax.plot([], [], linestyle="none", marker="o", markersize=7, label=label, **_fill(COLORS["ink"], hollow))
+    return pairs
 
 
 def _points(ax, x: np.ndarray, by_sampler: Mapping[str, tuple[float, float, float]], tie: float, hollow: bool) -> None:
