@@ -8,6 +8,7 @@ import re
 
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.lines import Line2D
 from PIL import Image
 
 from toolkit.experiments.paper_numbers import IMPROVEMENT
@@ -205,7 +206,7 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
     left = {float(p.get_xdata()[0]) for p in filled}
     for point in points:  # each hollow point just right of a filled one: its sampler's, with our compiled checker
         if point not in filled:
-            assert any(0.2 < point.get_xdata()[0] - x < 0.5 for x in left)
+            assert any(0.5 < point.get_xdata()[0] - x < 0.6 for x in left)  # reader r41f: the pair apart
     both = [*table.values(), *slow.values()]  # the whiskers: both series'
     slow_costs = sum(m >= 1.1 for m, _, _ in slow.values())
     slow_saves = sum(m <= 0.9 for m, _, _ in slow.values())
@@ -226,6 +227,18 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
     entries = zip(fig.legends[0].legend_handles, fig.legends[0].texts, strict=True)
     icons = [h for h, t in entries if t.get_text().startswith("median ")]
     assert len(icons) == 3 and {h.get_fillstyle() for h in icons} == {"full"}
+    # reader r41f, figure 1: each verdict's entry draws it filled and hollow, as the plot does
+    drawn = [line for line in fig.legends[0].findobj(Line2D) if line.get_marker() in ("o", "s", "^")]
+    hollow = {line.get_marker() for line in drawn if line.get_markerfacecolor() == COLORS["free"]}
+    assert (
+        {line.get_marker() for line in drawn if line.get_markerfacecolor() != COLORS["free"]}
+        == hollow
+        == {
+            "o",
+            "s",
+            "^",
+        }
+    )
     with Image.open(results_figures.CLAIM_FIGURE) as image:
         assert image.info.get("Description") == alt.alt_text(fig), AGAIN
         assert image.size[0] <= COLUMN
@@ -301,6 +314,10 @@ def test_figure_1_hatches_the_noise_edge_and_labels_the_band_apart_from_the_1():
     left = {t.get_text() for t in ax.get_yticklabels()}
     # reader r39f, item 6: the band named in the legend only, its ends not crowding the "1"
     assert "0.9" not in left and not {f"{1 - edge:.2f}", f"{1 + edge:.2f}"} & left
-    # reader r36f: no right-hand 0.9 and 1.1; the legend names the tie band
-    assert not [t for child in ax.child_axes for t in child.get_yticklabels() if t.get_text()]
+    # reader r41f, figure 1: the edges of both bands labelled outside the axes, on the right, none touching
+    right = [t for child in ax.child_axes for t in child.get_yticklabels() if t.get_text()]
+    assert [t.get_text() for t in right] == [f"{1 - edge:.2f}", "0.90", "1.10", f"{1 + edge:.2f}"]
+    boxes = sorted((t.get_window_extent(renderer) for t in right), key=lambda b: b.y0)
+    assert all(a.y1 <= b.y0 + 0.5 for a, b in zip(boxes, boxes[1:]))
+    assert all(b.x0 >= ax.get_window_extent(renderer).x1 for b in boxes)
     assert "tie band, above 0.90 and below 1.10" in [t.get_text() for t in fig.legends[0].texts]

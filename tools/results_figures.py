@@ -42,6 +42,7 @@ CLAIM_SERIES = ("our compiled checker on both sides", "python-fcl on both sides"
 FIGURE_BEGIN = "<!-- figure of {kind} times: drawn by `python -m tools.results_summary` from the tables below -->"
 FIGURE_END = "<!-- end of the figure of {kind} times -->"
 FIGURE_DPI = 110  # as docs/crossover.png: the site's column shows it at about its size
+CLAIM_WIDTH = 6.3  # inches, Figure 1: with its edges' labels on the right, the column's width (reader r41f: 570 px)
 WIDTH = 6.35  # inches, Figures 2-3: at FIGURE_DPI, cropped, the site's column (688 px at 1280), shown at its size
 SOURCES = {  # a series of the figure: its preset in the tables (None: the paper's own numbers) and its name; the
     # 1-2 December run with python-fcl is history, left out (review r27f, item 5: five series were 80 markers)
@@ -137,6 +138,7 @@ def claim_figure(text: str) -> Figure:
         slow=own_intervals(tables, checker_scope.SLOW),
         series=CLAIM_SERIES,
         edge=NOISE_EDGE * reach_of(tables),  # review r30f, item 2: the noise edge drawn, not only named
+        width=CLAIM_WIDTH,
     )
 
 

@@ -21,18 +21,31 @@ from collections.abc import Mapping
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.legend_handler import HandlerTuple
 from matplotlib.ticker import NullLocator
 
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO, PAGE_WIDTH, halo, series_style
+from toolkit.plots.ratio_bands import (  # noqa: F401  (re-exported: answer.py and the tests read them here)
+    EDGE_HATCH,
+    EDGE_WORDS,
+    NOISE_HATCH,
+    NOISE_WORDS,
+    band_edges,
+    edge_band,
+    edge_labels,
+    hatch_round,
+    noise_bands,
+)
 from toolkit.plots.timings import band_words, legend_above, log_ticks, ratio_parts, tie_band
 from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 
 READS = (COSTS, TIES, SAVES)  # what a median reads as, in the legend's order; each its own colour and marker
 GAP = 1  # an empty slot between two scenarios' groups of samplers
-APART = 0.22  # where a scenario has two series: each point this far from its sampler's tick, the first to the left
+APART = 0.27  # where a scenario has two series: each point this far from its sampler's tick, the first to the left
+# (reader r41f: at 0.22 a filled point and its hollow twin of one sampler touched)
 BELOW_1 = (0.7,)  # labelled on :func:`own_ratios`' axis, where savings lie, beside its 1-2-5 steps (r27f: no 0.8); the
-# tie band's edges on the right (:func:`_band_edges`; r30f: "0.9" crowded the "1")
+# tie band's edges on the right (:func:`band_edges`; r30f: "0.9" crowded the "1")
 NEAR_1 = 1.25  # :func:`means_grid`'s extra ticks this close to 1 are labelled on the right, away from the "1"
 Cells = Mapping[str, Mapping[str, tuple[float, float, float]]]  # {scenario: {sampler: (median, q1, q3)}}
 MEANS_STYLES = (  # :func:`means_grid`'s series in turn: colour, marker, hollow; no verdict look of own_ratios
@@ -61,6 +74,7 @@ def own_ratios(
     slow: Cells | None = None,
     series: tuple[str, str] = ("", ""),
     edge: float | None = None,
+    width: float = PAGE_WIDTH,
 ) -> Figure:
     """``{scenario: {sampler: (median, q1, q3)}}`` of each query's own ratio, with / without prediction: a point per
     scenario and sampler at its median, a whisker over its middle half (``q1`` to ``q3``), on a log axis with the
@@ -68,10 +82,11 @@ def own_ratios(
     its median reads as (:func:`toolkit.util.verdicts.time_verdict`), named in a legend over the panel; each point's
     sampler is written under it, each scenario under its samplers. ``slow``, where given, is a second series of the
     same form (any of the scenarios), drawn hollow beside the first; ``series`` names the two in the legend. ``edge``,
-    where given, hatches the band from ``1 - edge`` to ``1 + edge`` round the tie band (:func:`_edge_band`): a cost or
-    saving there lies in the noise band (review r30f, item 2)."""
+    where given, hatches the band from ``1 - edge`` to ``1 + edge`` round the tie band (:func:`edge_band`): a cost or
+    saving there lies in the noise band (review r30f, item 2); the edges of both bands are labelled outside the axes,
+    on the right (:func:`edge_labels`). ``width``: inches (a page's column may be wider than a chapter's)."""
     slow = {} if slow is None else slow
-    fig = Figure(figsize=(PAGE_WIDTH, 3.9))
+    fig = Figure(figsize=(width, 3.9))
     ax = fig.subplots()
     names: list[str] = []  # tick labels: the samplers
     ticks: list[float] = []  # their x
@@ -86,9 +101,29 @@ def own_ratios(
         names += list(by_sampler)
         ticks += list(x)
         centres.append(float(x.mean()))
-    _legend_entries(ax, series if slow else None, None if edge is None else (edge, tie))
+    pairs = _legend_entries(ax, series if slow else None, None if edge is None else (edge, tie))
     ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
     tie_band(ax, tie)
+    _sampler_axis(ax, cells, names, ticks, centres)
+    drawn = [v for table in (cells, slow) for by in table.values() for value in by.values() for v in value]
+    _own_axis(ax, drawn, tie, [] if edge is None else [1 - edge, 1 + edge])
+    ax.set_ylabel(Y_LABEL, fontsize=9)
+    ax.set_title(title, fontsize=10)
+    _legend_above(fig, ax, pairs)
+    words = _words(cells, title, tie, series[0] if slow else "")
+    words += f" Hollow points beside them, {series[1]}. {_counts(slow, tie)}" if slow else ""
+    words += f" Hatched round the tie band, {EDGE_WORDS.format(low=1 - edge, high=1 + edge)}." if edge else ""
+    words += " Both bands' edges are labelled on the right." if edge else " The band's edges are labelled on the right."
+    if not slow:
+        return describe(fig, words, [_part(cells, title)])
+    return describe(
+        fig, words, [_part(cells, f"{title}, {series[0]} (filled)"), _part(slow, f"{title}, {series[1]} (hollow)")]
+    )
+
+
+def _sampler_axis(ax, cells: Cells, names: list[str], ticks: list[float], centres: list[float]) -> None:
+    """:func:`own_ratios`' x axis: each sampler's name under its ``ticks``, each scenario's under its ``centres``, a
+    line between two scenarios."""
     ax.set_xticks(ticks, names)
     ax.set_xticks([c + (len(cells[s]) + GAP) / 2 for c, s in zip(centres[:-1], cells)], minor=True)
     ax.grid(True, axis="x", which="minor", color=COLORS["shade"], linewidth=0.8)
@@ -99,25 +134,12 @@ def own_ratios(
     groups.tick_params(length=0, pad=16, labelsize=10)
     ax.set_xlabel("sampler, by scenario", labelpad=16)  # under the scenarios' names
     ax.set_xlim(-0.7, ticks[-1] + 0.9)  # reader r33f: the last hollow point clears the frame
-    drawn = [v for table in (cells, slow) for by in table.values() for value in by.values() for v in value]
-    _own_axis(ax, drawn, tie, [] if edge is None else [1 - edge, 1 + edge])
-    ax.set_ylabel(Y_LABEL, fontsize=9)  # room for the band's edges on the right
-    ax.set_title(title, fontsize=10)
-    legend_above(fig, [ax], 2)
-    words = _words(cells, title, tie, series[0] if slow else "")
-    words += f" Hollow points beside them, {series[1]}. {_counts(slow, tie)}" if slow else ""
-    words += f" Hatched round the tie band, {EDGE_WORDS.format(low=1 - edge, high=1 + edge)}." if edge else ""
-    if not slow:
-        return describe(fig, words, [_part(cells, title)])
-    return describe(
-        fig, words, [_part(cells, f"{title}, {series[0]} (filled)"), _part(slow, f"{title}, {series[1]} (hollow)")]
-    )
 
 
 def _own_axis(ax, drawn: list[float], tie: float, edges: list[float]) -> None:
     """:func:`own_ratios`' log axis over every ``drawn`` value, the tie band and the noise band's ``edges``, labelled at
-    its 1-2-5 steps and :data:`BELOW_1`; the noise band's edges are named in the legend only (reader r39f: "1.18", "1"
-    and "0.82" crowded)."""
+    its 1-2-5 steps and :data:`BELOW_1` on the left, the bands' edges on the right (:func:`edge_labels`; reader r39f:
+    on the left "1.18", "1" and "0.82" crowded)."""
     ax.set_yscale("log")
     ax.set_ylim(min(*drawn, *edges, 1 - tie) / 1.15, max(*drawn, *edges, 1 + tie) * 1.15)
     log_ticks(ax)
@@ -126,64 +148,55 @@ def _own_axis(ax, drawn: list[float], tie: float, edges: list[float]) -> None:
     shown = sorted({round(s, 2) for s in every if low <= s <= high})
     ax.set_yticks(shown, [f"{s:g}" for s in shown])
     ax.yaxis.set_minor_locator(NullLocator())  # review r27f: an unlabelled tick under 0.7 read as a missing label
-    # reader r36f: no tie-band edges on the right, 15 px from the noise band's on the left; the legend names the band
+    edge_labels(ax, sorted({1 - tie, 1 + tie, *edges}))  # reader r41f: the edges the verdicts turn on, on the right
 
 
-NOISE_WORDS = (  # means_grid's hatching, told apart from own_ratios' (reader r32f: one hatch meant two bands)
-    "noise band of a ratio of means, {low:.2f}–{high:.2f}: timing alone moved a ratio of means that far"
-)
-EDGE_WORDS = "noise band of this ratio, {low:.2f}–{high:.2f}: a cost or saving there is no clear evidence"
-EDGE_HATCH, NOISE_HATCH = "///", "\\\\\\"  # own_ratios' noise band; means_grid's, the other slant
+def _legend_above(fig: Figure, ax, pairs: dict) -> None:
+    """:func:`~toolkit.plots.timings.legend_above` for :func:`own_ratios`, each verdict's entry its ``pairs`` of
+    markers (filled and hollow, as the plot draws them) side by side."""
+    handles, labels = ax.get_legend_handles_labels()
+    handles = [pairs.get(label, handle) for handle, label in zip(handles, labels)]
+    room = (0.1 + 0.2 * -(-len(labels) // 2)) / fig.get_figheight()
+    fig.legend(
+        handles,
+        labels,
+        loc="upper center",
+        ncol=2,
+        fontsize=9,
+        frameon=False,
+        handler_map={tuple: HandlerTuple(ndivide=None, pad=0.6)},
+    )
+    fig.tight_layout(rect=(0, 0, 1, 1 - room))
 
 
-def _edge_band(ax, edge: float, tie: float) -> None:
-    """Hatch ``[1 - edge, 1 + edge]`` round the tie band (``tie``): the noise band, where a median read as a cost or a
-    saving lies within twice timing's own reach of 1, told apart from the clear ones by where it stands."""
-    hatch_round(ax, (1 - edge, 1 + edge), tie, EDGE_WORDS.format(low=1 - edge, high=1 + edge).split(":")[0])
-
-
-def hatch_round(ax, reach: tuple[float, float], tie: float, label: str | None, hatch: str = EDGE_HATCH) -> None:
-    """Hatch from ``reach[0]`` to the tie band and from it to ``reach[1]``, each outer edge a line (dashed under
-    :data:`EDGE_HATCH`, dotted under any other), so the hatching reads at the page's width (reader r31f: it was
-    faint); ``label`` names it once in the legend."""
-    for k, (low, high) in enumerate(((reach[0], 1 - tie), (1 + tie, reach[1]))):
-        ax.axhspan(
-            low,
-            high,
-            facecolor="none",
-            edgecolor=COLORS["reference"],
-            hatch=hatch,
-            linewidth=0,
-            zorder=0,
-            label=label if k == 0 else None,
-        )
-    for y in reach:
-        style = "--" if hatch == EDGE_HATCH else ":"
-        ax.axhline(y, color=COLORS["reference"], linestyle=style, linewidth=1.0, zorder=0.5)
-
-
-def _legend_entries(ax, series: tuple[str, str] | None, edge: tuple[float, float] | None = None) -> None:
-    """The legend's entries: each verdict once, by its colour and shape, filled as the plot draws its filled points;
-    and where there are two ``series``, which a point's fill names, on a plain circle. Fill is the checker's cue, said
-    in those two entries alone (reader r40e, home figure 1: a half-filled icon drew a marker the plot never draws);
-    the caption counts which checker's points read as each verdict."""
+def _legend_entries(ax, series: tuple[str, str] | None, edge: tuple[float, float] | None = None) -> dict:
+    """The legend's entries: each verdict once, by its colour and shape, drawn as the plot draws its points, filled
+    and, where there are two ``series``, hollow beside it (reader r41f: a verdict's hollow look was in no entry);
+    and which series a point's fill names, on a plain circle (reader r40e, home figure 1: no half-filled icon, a
+    marker the plot never draws); the caption counts which checker's points read as each verdict. Returns each
+    verdict's words and its icons, for :func:`_legend_above`."""
+    pairs = {}
     for k, reads in enumerate(READS):
         look = series_style(k)
-        ax.plot(
-            [],
-            [],
-            linestyle="none",
-            marker=look["marker"],
-            markersize=7,
-            label=_read(reads),
-            color=look["color"],
-            markeredgecolor=look["color"],
-        )
-    if edge:  # drawn here, so the legend lists it under the verdicts (:func:`_edge_band`, ``(edge, tie)``)
-        _edge_band(ax, *edge)
+        icons = [
+            ax.plot(
+                [],
+                [],
+                linestyle="none",
+                marker=look["marker"],
+                markersize=7 + 2 * (look["marker"] == "^" and hollow),
+                label=None if hollow else _read(reads),
+                **_fill(look["color"], hollow),
+            )[0]
+            for hollow in ((False, True) if series else (False,))
+        ]
+        pairs[_read(reads)] = tuple(icons)
+    if edge:  # drawn here, so the legend lists it under the verdicts (:func:`edge_band`, ``(edge, tie)``)
+        edge_band(ax, *edge)
     for hollow, name in zip((False, True), series or ()):
         label = f"{'hollow' if hollow else 'filled'}: {name}"
         ax.plot([], [], linestyle="none", marker="o", markersize=7, label=label, **_fill(COLORS["ink"], hollow))
+    return pairs
 
 
 def _points(ax, x: np.ndarray, by_sampler: Mapping[str, tuple[float, float, float]], tie: float, hollow: bool) -> None:
@@ -297,7 +310,7 @@ def means_grid(
     said = [_means_panel(ax, title, series, names, samplers, tie) for ax, (title, series) in zip(axes, panels.items())]
     for ax in axes[len(panels) :]:
         ax.set_visible(False)
-    said += _noise_bands(axes[: len(panels)], noise, tie)
+    said += noise_bands(axes[: len(panels)], noise, tie)
     for ax in grid[:, 0]:
         ax.set_ylabel(Y_LABEL, fontsize=10)
     for ax in grid[-1, :]:
@@ -316,32 +329,9 @@ def means_grid(
         shown = sorted({round(t, 6) for t in every if low <= t <= high and t not in beside})
         axes[0].set_yticks(shown, [f"{t:g}" for t in shown])
     for ax in axes[: len(panels)] if beside else ():  # r25c: 0.9, 1 and 1.1 crammed on the left; r28f: every panel
-        _band_edges(ax, beside, 9)
+        band_edges(ax, beside, 9)
     legend_above(fig, axes[:1], 1)  # one column: two of these names side by side overflow the page
     return _means_described(fig, panels, names, samplers, tie, said)
-
-
-def _noise_bands(axes, noise: tuple[float, float] | None, tie: float) -> list[str]:
-    """``noise`` (how far timing alone moved a ratio of means) hatched round the tie band of every panel of ``axes``,
-    named once in the legend; what the text alternative says of it (nothing where ``noise`` is ``None``)."""
-    if noise is None:
-        return []
-    words = NOISE_WORDS.format(low=noise[0], high=noise[1])
-    for k, ax in enumerate(axes):
-        hatch_round(ax, noise, tie, words.split(":")[0] if k == 0 else None, NOISE_HATCH)
-    return [f"hatched the other way round the tie band, the {words}"]
-
-
-def _band_edges(ax, ticks: list[float], size: float = 8) -> None:
-    """``ticks`` near 1 (a band's edges) labelled on the right of ``ax``, apart from the "1" on the left; those
-    above 1 written above their tick, those below under it, so two edges never touch (review r30f: Figure 3's "1.1"
-    and "0.9" did)."""
-    edges = ax.secondary_yaxis("right")
-    edges.set_yticks(ticks, [f"{t:g}" for t in ticks])
-    edges.yaxis.set_minor_locator(NullLocator())
-    edges.tick_params(labelsize=size, length=2, pad=1)
-    for label, t in zip(edges.get_yticklabels(), ticks):
-        label.set_verticalalignment("bottom" if t > 1 else "top")
 
 
 def _means_panel(ax, title: str, series: Mapping[str, Mapping[str, float]], names, samplers, tie: float) -> str:
