@@ -534,7 +534,8 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
         f"Yet in {len(over)} of the paper's 16 cells its own §V mean times saved more than all the sampling took "
         f"({NAMES[most[0]]} {most[1]}: {over[most][0]:.2f} s against {over[most][1]:.2f} s). They are not "
         f"the same {len(over)} cells as Table 3's savings. Of our cells, one saved more than its sampling took, by "
-        f"means, with both checkers: {bigger[0].name}. Its ratio of means was {1 - bigger[0].total:.2f} with python-fcl, where sampling's cut was "
+        f"means, with both checkers: {bigger[0].name}. Its ratio of means was {1 - bigger[0].total:.2f} with "
+        "python-fcl, where sampling's cut was "
         f"worth {100 * bigger[0].sampling:.0f} % of a query. With the compiled checker it was {compiled_ob:.2f}, "
         "though its sampling took longer. By each query's own ratio the compiled cell still cost time "
         f"({compiled_own:.2f}): a few slow queries move a mean, not a median."  # reader r40e, home 2: one cell
@@ -542,7 +543,7 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     # reader r41e, home lift 5: one visible line, the paragraph in a fold under it
     line = (
         "**A time saving bigger than the whole sampling stage cannot come from prediction**; the paper's own §V mean "
-        f"times show one in {len(over)} of its 16 cells. <details markdown=\"1\"><summary>Savings bigger than "
+        f'times show one in {len(over)} of its 16 cells. <details markdown="1"><summary>Savings bigger than '
         "sampling allows, the paper's and ours</summary> Skipping the samples' checks can save at most the sampling "
         f"stage. Yet in {len(over)}"
     )
@@ -653,8 +654,10 @@ def test_the_index_gives_one_statistic_a_line_behind_its_answer():
     )
     assert costs > 8 and sampling in answer and answer.index("5 of the circles.*") < answer.index(sampling)
     # reader r41e, home lift 3: the answer, then what the paper does, then the terms, then the figure
-    assert answer.index("**The answer") < answer.index("The answer is what our recorded runs say") < answer.index(
-        "Terms. "
+    assert (
+        answer.index("**The answer")
+        < answer.index("The answer is what our recorded runs say")
+        < answer.index("Terms. ")
     )
     assert max(by_means(fcl, "total"), by_means(compiled, "total"), own(fcl), own(compiled)) <= 3
 
