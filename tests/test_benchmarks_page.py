@@ -192,9 +192,8 @@ def test_the_opening_names_the_statistic_of_no_saving_and_counts_the_means():
               for k, r in row["total"].items()}  # fmt: skip
     (cell, v), *others = [(c, v) for c, v in lazy.items() if v >= 0.1]
     assert not others and saved[1] == 1  # the means in the fold, the lazy PRM's one cell named
-    assert f"in 1 of 16 of the lazy PRM ({cell}, {100 * v:.0f} %, a mean pulled by a few slow queries, where the ratio" in (
-        flat
-    ) and f"of median queries is {ratios[cell]:.2f})" in flat
+    pulled = f"in 1 of 16 of the lazy PRM ({cell}, {100 * v:.0f} %, a mean pulled by a few slow queries, where the"
+    assert pulled in flat and f"ratio of median queries is {ratios[cell]:.2f})" in flat
 
 
 def said_at_top(pattern: str) -> str | tuple[str, ...]:
@@ -225,11 +224,11 @@ def test_the_crossover_figures_are_its_table():
         span(numbers(cheaper["triangles (20–5,120)"])),
     )
     dearer = column("network dearer")
-    # the sweep of 15:37 UTC: no point too close to tell; reader r41g, benchmarks 7: its empty column said once, not drawn
+    # the sweep of 15:37 UTC: no point too close to tell; reader r41g, benchmarks 7: its empty column said once
     from toolkit.plots.crossover import _close
 
     assert not any(_close(sweep).any() for sweep in CROSSOVER["variables"].values())
-    assert "its column \"can't tell\", nowhere in every row, left out:" in " ".join(PAGE.split())
+    assert 'its column "can\'t tell", nowhere in every row, left out:' in " ".join(PAGE.split())
     assert "can't tell" not in tables()[1][0] and "hatched" not in PAGE
     grown = {k.split()[0]: numbers(k.partition("(")[2]) for k in dearer}  # "obstacles (10–500 blocks)": 10, 500
     for key in ("obstacles", "links", "configurations"):  # "Among 10–500 blocks, on chains of 2–16 links, in small
@@ -517,8 +516,8 @@ def test_what_it_means_quotes_the_run_with_python_fcl_on_both_sides():
     # reader r36g, lift 2: a bullet of its own; reader r41g, benchmarks 1-2: one sentence, the 3 cells quoted by the
     # ratio that picked them, their means (as Table 3 rounds them: the Results page's "16%" for 3DO BT) in the fold
     assert (
-        f"- Against python-fcl the network cut sampling's mean time by {saving}, yet only {len(fell)} cells' queries got "
-        f"shorter, by each query's own ratio {by_ratio}." in PREDICTION
+        f"- Against python-fcl the network cut sampling's mean time by {saving}, yet only {len(fell)} cells' queries "
+        f"got shorter, by each query's own ratio {by_ratio}." in PREDICTION
     ) and len(shares) > 0
     assert (
         f"by means those {len(fell)} were {' and '.join(by_means)} shorter, and the network saved "
@@ -620,8 +619,8 @@ def test_the_ceiling_is_sampling_s_share_of_an_algorithm_1_query_from_the_record
     found = re.search(share, PREDICTION), re.search(r"network \((\S+ %) with python-fcl\)", PREDICTION)
     assert found[0] and found[0].group(1) == compiled and found[1] and found[1].group(1) == fcl
     flat = " ".join(PAGE.split())
-    assert 'saved came from elsewhere, a roadmap grown from other samples or timing noise in the means, which these' in flat
-    assert 'runs cannot tell apart (Algorithm 1\'s table "Times behind Table 3")' in flat
+    assert "saved came from elsewhere, a roadmap grown from other samples or timing noise in the means, which" in flat
+    assert 'these runs cannot tell apart (Algorithm 1\'s table "Times behind Table 3")' in flat
     assert "14e1a8a" not in PAGE and "## Where a query's time goes" not in PAGE  # the old profile: in the history
     history = (ROOT / "docs" / "benchmarks_history.md").read_text()
     assert "### Where a lazy-PRM query's time goes, at `14e1a8a`" in history
@@ -1035,9 +1034,9 @@ def test_reader_r33g_slips_read_from_the_page_s_tables_and_the_sweep_s_record():
     # reader r40g, benchmarks 1: the headline what the page shows, not "no saving that the network made"
     # reader r41g, benchmarks 3: each of the two medians named apart, not "by medians" for both
     # reader r41g, benchmarks 1: the bold verdict one line above the table, the table one statistic
-    headline = "**Against our compiled checker, no; against python-fcl, in 3 of 16 cells.** Each planner ran every query"
+    headline = "**Against our compiled checker, no; against python-fcl, in 3 of 16 cells.** Each planner ran every"
     assert headline in flat
-    assert "a cell's verdict reads the median of each query's own ratio, time with / without, and counts it tied" in flat
+    assert "a cell's verdict reads the median of each query's own ratio, time with / without, and counts it" in flat
     assert "no saving that the network made" not in flat
     assert "timed idle on a 2-core Intel Xeon on 5 December" in SUMMARY and "idle" not in LEAD  # r36g: in the fold
     # reader r37g, contradiction 4: the fold read as if the network ran at 20,000; the loaded run said once, under
