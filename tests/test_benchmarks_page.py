@@ -180,11 +180,11 @@ def test_the_opening_names_the_statistic_of_no_saving_and_counts_the_means():
     stage = column("sampling's mean time: cells shorter / tied / longer")
     expected = {
         "Algorithm 1, compiled (5 December)": (counts(own), sampling(algorithm_1)),
-        "lazy PRM, compiled (3 December, a slower checker)": (counts(medians) + " *", sampling("strong")),
+        "lazy PRM, compiled (3 December, a slower checker)": (counts(medians) + " (medians)", sampling("strong")),
         "Algorithm 1, python-fcl (5 December)": (counts(fcl_own), sampling(FCL_ALIKE)),
     }
     assert {r: (rows[r], stage[r]) for r in rows} == expected
-    assert "\\* The lazy PRM's run kept no query's own times: its row reads the ratio of median times." in PAGE
+    assert "\"(medians)\": the lazy PRM's run kept no query's own times, so its row reads the ratio of median" in PAGE
     assert f"in {fcl_own.count('less time')} of 16 cells.** Each planner ran every query" in PREDICTION
     lazy = {f"{checker_scope.NAMES[s]} {k}": v for s in recorded.table("strong", "time improvement")
             for k, v in recorded.improvements("strong", s).items()}  # fmt: skip
