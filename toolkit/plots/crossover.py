@@ -36,8 +36,8 @@ STYLES = {  # checker -> (marker and line, colour, name)
 LEGEND = {  # checker -> its legend's words; reader r24c: which checker the mesh panel times is said
     "exact": "exact, compiled (mesh: our compiled mesh checker)",
     "fcl": "exact, python-fcl (mesh: FCL's mesh tree, numpy inside test)",
-    "learned": "the network, of the preset's sizes (its speed does not depend on its weights)",  # r25a: not
-    # "untrained", which read as a fault
+    "learned": "the network, of the preset's sizes",  # r25a: not "untrained", which read as a fault; reader r41g,
+    # crossover figure: "(its speed does not depend on its weights)" was clutter, the page's text says it
 }
 
 
@@ -149,6 +149,8 @@ def _paper_scenes(ax, key: str, sweep: dict) -> None:
     for n, (low, high) in enumerate(r for r in PAPER_SCENES.get(key, ()) if x[0] <= r[0] and r[1] <= x[-1]):
         label = PAPER_LEGEND if n == 0 else None  # a light grey, under the curves
         ax.axvspan(low / 1.05, high * 1.05, color=COLORS["block"], alpha=0.3, zorder=0.5, lw=0, label=label)
+        if low <= x[0]:  # reader r41g: a strip at the first value (2 links) was half cut by the axis; room for it
+            ax.margins(x=0.1)
 
 
 CALLS_TOP = 0.86  # the planner calls' strip's top, in the panel's height: its name above it
