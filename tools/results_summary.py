@@ -99,22 +99,21 @@ def key(tables: Tables) -> str:
         "*Key*: a cell is one scenario with one sampler, say 3DC-9 OB: the scenarios 2DS, 3DC-7, 3DC-9 and 3DO are the "
         "2D point robot, the 7- and 9-DoF box chains in 3D clutter and the 8-DoF KUKA youBot in the 3D office; the "
         "samplers BS, OB, G and BT are the paper's Basic PRM (uniform), Obstacle-Based PRM, Gaussian and Bridge Test. "
-        "*Algorithm 1* is the paper's planner, a PRM that checks every candidate edge as it adds it, the network "
-        "screening its samples; the *lazy PRM* checks only a candidate path's edges, the fastest planner a network can "
-        "drive. The paper's network is a *CAE*, which compresses a workspace's occupancy grid into a short code, and an "
-        "*MLP*, which reads that code and a configuration and answers “valid” (collision-free) or “invalid”. The "
-        "`paper` preset is that recipe as we read it. The `strong` preset is ours and is not the paper's CAE+MLP: its "
-        "MLP reads the occupancy around each link and the link's box instead of the code. It is the fair test of the "
-        "claim, that an accurate network saves time, because it is accurate: right "
-        f"{span(balanced)} % of the time on unseen workspaces' balanced samples, where the `paper` MLP is at chance "
-        "(Table 2). The `strong` network of 5 December is Figure 1's and the table's last two rows; Figures 2–3 set it "
-        "beside the `paper`-preset network of 2 December; the *lazy-PRM network* of 3 December is the one raced "
-        "against the lazy PRM. The *compiled checker* is our exact collision check, compiled to machine code; "
-        "*python-fcl*, the Python binding of the FCL library, is a far slower exact check. The answer's counts read "
-        "*each query's own ratio*: one query's time with prediction over its own time without, the median over a "
-        "cell's queries; a *ratio of means* (the paper's statistic, Figures 2–3) divides the two modes' mean times, a "
-        "*ratio of medians* their median times. *Beyond the noise band*: outside how far timing alone moved that "
-        "ratio (the table of bands below)."
+        "*Algorithm 1* is the paper's planner, a PRM that checks every candidate edge as it adds it; the *lazy PRM* "
+        "checks only a candidate path's edges, the fastest planner a network can drive. The paper's method screens "
+        "samples with a *CAE*, which compresses a workspace's occupancy grid into a short code, and an *MLP*, which "
+        "reads that code and a configuration and answers “valid” (collision-free) or “invalid”. The `paper` preset is "
+        "that recipe as we read it. The `strong` preset is ours and is not the paper's CAE+MLP: its MLP reads the "
+        "occupancy around each link and the link's box instead of the code. It is the fair test of the claim, that an "
+        f"accurate network saves time, because it is accurate: right {span(balanced)} % of the time on unseen "
+        "workspaces' balanced samples, where the `paper` MLP is at chance (Table 2). The `strong` network of "
+        "5 December is Figure 1's and the table's last two rows; Figures 2–3 set it beside the `paper`-preset network "
+        "of 2 December; the *lazy-PRM network* of 3 December is the one raced against the lazy PRM. The *compiled "
+        "checker* is our exact collision check, compiled to machine code; *python-fcl*, the Python binding of the FCL "
+        "library, is a far slower exact check. The answer's counts read *each query's own ratio*: one query's time "
+        "with prediction over its own time without, the median over a cell's queries; a *ratio of means* (the "
+        "paper's statistic, Figures 2–3) divides the two modes' mean times, a *ratio of medians* their median times. "
+        "*Beyond the noise band*: outside how far timing alone moved that ratio (the table of bands below)."
     )
 
 
@@ -135,7 +134,8 @@ def short(tables: Tables) -> str:
         f"{ANSWERS[findings.claim_verdict(ratios)]}. With our fast compiled checker "
         + ("the network was the dearer check: " if dearer else "")
         + f"{fast[2] or 'none'} of {sum(fast)} cells got slower, {fast[0] or 'none'} faster. With python-fcl, a slow "
-        "checker, " + ("sampling is too small a share of a query: " if small else "")
+        "checker, "
+        + ("sampling is too small a share of a query: " if small else "")
         + f"{beyond[0] or 'none'} of {len(slow)} cells faster beyond the noise band, {beyond[2] or 'none'} slower. "
         f"{tables_said(tables)}.**"
     )
@@ -204,9 +204,6 @@ def fast_means(tables: Tables) -> list[float]:
         for scenario in recorded.table(recorded.ALGORITHM_1, "time improvement", tables)
         for saved in recorded.improvements(recorded.ALGORITHM_1, scenario, recorded=tables).values()
     ]
-
-
-VERBS = ("saves time", "mostly ties", "costs time")  # a series' verdict in the answer: its largest count
 
 
 def tables_said(tables: Tables) -> str:
