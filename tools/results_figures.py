@@ -12,6 +12,7 @@ import html
 import math
 
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
 from matplotlib.ticker import NullFormatter, NullLocator
 
 from toolkit.experiments.paper_numbers import IMPROVEMENT
@@ -105,8 +106,7 @@ def readable(fig: Figure, floor: tuple[float, float], kind: str = "total") -> Fi
     r41f, figures: the noise band's edges outside the axes, on the right of the right-hand panels only (in the gutter
     they read as the next panel's ticks; inside they crowded the points), the tie band's edges 0.9 and 1.1 on the left
     where they stand apart (:data:`TIE_TICKS`), and the `paper`-preset series a shape of its own (:data:`SHAPES`)."""
-    shown = [ax for ax in fig.axes if ax.get_visible() and ax.get_label() != "<colorbar>" and ax.get_subplotspec()]
-    for ax in shown:
+    for ax in (ax for ax in fig.axes if ax.get_visible()):
         for child in list(ax.child_axes):  # means_grid's labels of the band's edges, redrawn below
             child.remove()
         ax.tick_params(axis="y", labelleft=True)
@@ -120,15 +120,15 @@ def readable(fig: Figure, floor: tuple[float, float], kind: str = "total") -> Fi
             ticks = [t for t in ticks if low <= t <= high]
             ax.set_yticks(ticks, [f"{t:g}" for t in ticks])
             ax.yaxis.set_minor_formatter(NullFormatter())
-        if ax.get_subplotspec().colspan.start == 1:  # a right-hand panel: the band's edges beside it, outside
+        spec = ax.get_subplotspec()
+        if spec is not None and spec.colspan.start == 1:  # a right-hand panel: the band's edges beside it, outside
             edges = ax.secondary_yaxis("right")
             edges.set_yticks(list(floor), [f"{edge:.2f}" for edge in floor])
             edges.yaxis.set_minor_locator(NullLocator())
             edges.tick_params(labelsize=9, length=3, pad=1)
     for handle in fig.legends[0].legend_handles:
-        marker = getattr(handle, "get_marker", lambda: None)()
-        if marker in SHAPES:
-            handle.set_marker(SHAPES[marker])
+        if isinstance(handle, Line2D) and str(handle.get_marker()) in SHAPES:
+            handle.set_marker(SHAPES[str(handle.get_marker())])
     room = (0.1 + 0.2 * len(fig.legends[0].texts)) / fig.get_figheight()  # as legend_above leaves for the legend
     fig.tight_layout(rect=(0, 0, 1, 1 - room))
     return fig
