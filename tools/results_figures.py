@@ -21,7 +21,7 @@ from toolkit.teaching import checker_scope, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
 from tools.results_noise import NOISE_EDGE, at_noise_edge, noise, own_intervals, reach_of
-from tools.results_words import BORDER, NAMES, change
+from tools.results_words import NAMES, change
 
 FIGURES = {kind: RESULTS.parent / f"results_table3_{kind}.png" for kind in ("total", "sampling")}  # Table 3's columns
 LEADS = {  # what each figure shows, over it
@@ -231,10 +231,9 @@ def figure_markdown(text: str, kind: str = "total") -> str:
     shown = f"![{html.escape(alt.alt_text(fig))}]({FIGURES[kind].name})\n\n{described}"
     floor = noise(parse(text))
     said = (  # reader r39f, item 1: the band by its one name, in the table under the summary
-        f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule (0.90 or less: saved; 1.10 or "
-        f"more: lost). The noise band of a ratio of means, {floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched, "
-        "dotted edges: how far timing alone moved a ratio of the two modes' mean times), is wider than the tie band: "
-        f"a single cell counts as evidence only beyond it (within {BORDER:.2f} of its edge, borderline)." + KEY
+        f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule. The noise band of a ratio of means, "
+        f"{floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched, dotted edges; built as the table of bands at the top "
+        "says), sets a single cell apart only beyond it." + KEY
         if kind == "total"
         else f"*{kind.capitalize()} time*, counted and hatched as in Figure 2. {sampling_takeaway(counts)}"
     )
