@@ -231,7 +231,7 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
         assert image.size[0] <= COLUMN
     assert CLAIM == results_figures.claim_markdown(TEXT), AGAIN
     costs = sum(m >= 1.1 for m, _, _ in table.values())  # review r27f, item 2: counted once, in the summary
-    said = f"our compiled checker of 5 December | 3 / 7 / 6 | 1 / 4 | 0 / {16 - costs} / {costs} |"
+    said = f"compiled checker, 5 December | 3 / 7 / 6 | 1 / 4 | 0 / {16 - costs} / {costs} |"
     assert said in TEXT  # reader r31f, item 1: the noise edge's cells are the caption's (review r28f's robust count)
     reach = results_noise.reach_of(recorded_results.parse(TEXT))  # how far timing alone moved a median query
     edge = [f"{n} {s} {m:.2f}" for (n, s), (m, _, _) in table.items() if m >= 1.1 and abs(m - 1) < 2 * reach]

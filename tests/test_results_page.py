@@ -68,7 +68,7 @@ def test_the_summary_is_what_the_tables_give():
     assert len(counts.strip().splitlines()) == 6  # a header, its rule and four rows: the bands under the dashes' line
     # reader r35f, item 1: the `paper`-preset network's row, its counts Figure 2's; reader r36f, item 7: "not by the
     # method" said once, in the findings, not in this row
-    assert "| ours, `paper`-preset network, our compiled checker of 2 December | 8 / 2 / 6 |" in counts
+    assert "| `paper` network, compiled checker, 2 December | 8 / 2 / 6 |" in counts
     assert PAGE.count("but not by the method") == 1 and "not the method working" not in PAGE.partition("## What")[0]
     assert (
         "December: 8 of 16 save time (0.90 or less), 2 tie, 6 cost time" in TEXT
@@ -516,7 +516,7 @@ def test_the_accurate_network_inside_algorithm_1_is_read_as_its_section_says():
     said = [findings.time_verdict(r) for row in ratios.values() for r in row.values()]
     assert findings.SAVES not in said  # "saves time for no sampler in any scenario by the median of each query's ..."
     counts = f"0 / {said.count(findings.TIES)} / {said.count(findings.COSTS)}"
-    row = f"| ours, `strong` network, our compiled checker of 5 December | 3 / 7 / 6 | 1 / 4 | {counts} |"
+    row = f"| `strong` network, compiled checker, 5 December | 3 / 7 / 6 | 1 / 4 | {counts} |"
     assert row in PAGE and "*Key*: a cell is one scenario with one sampler, say 3DC-9 OB" in PAGE  # the summary's table
     _the_ratio_of_medians_is_told_apart_where_it_reads_saves(
         ratios, twice=next(t for h, t in TABLES[key].items() if "timed twice" in h)
@@ -607,11 +607,9 @@ def test_the_verdict_names_its_checker_first():
     assert "reproduce with neither checker" in whole.verdict
     assert "paper's network" not in said and "paper network" not in said  # reader r32f, contradiction 3
     # reader r32f, contradictions 2 and 7: both statistics and the counts beyond the noise edge, side by side
-    assert "| the paper's reported results (its Table 3) | 10 / 6 / 0 | — | — | — |" in said
-    assert (
-        "| ours, `strong` network, our compiled checker of 5 December | 3 / 7 / 6 | 1 / 4 | 0 / 7 / 9 | 0 / 5 |" in said
-    )
-    assert "| ours, `strong` network, python-fcl on both sides | 2 / 12 / 2 | 1 / 0 | 3 / 13 / 0 | 2 / 0 |" in said
+    assert "| the paper (its Table 3) | 10 / 6 / 0 | — | — | — |" in said
+    assert "| `strong` network, compiled checker, 5 December | 3 / 7 / 6 | 1 / 4 | 0 / 7 / 9 | 0 / 5 |" in said
+    assert "| `strong` network, python-fcl on both sides | 2 / 12 / 2 | 1 / 0 | 3 / 13 / 0 | 2 / 0 |" in said
     assert "median query" not in said  # reader r32f, contradiction 8
     fast, _ = results_findings.stage_shares(tables, recorded.ALGORITHM_1)
     slow_shares, _ = results_findings.stage_shares(tables, checker_scope.SLOW)
@@ -626,9 +624,7 @@ def test_the_verdict_names_its_checker_first():
     rows = [[row[0], "1.25 (1.1–1.4)", *row[2:]] for row in slow[own]["rows"]]  # one sampler now costs time
     costs = {**tables, checker_scope.SLOW: {**slow, own: {**slow[own], "rows": rows}}}
     said = results_summary.short(costs)
-    assert (
-        "| ours, `strong` network, python-fcl on both sides | 2 / 12 / 2 | 1 / 0 | 3 / 9 / 4 | 2 / 4 |" in said
-    )  # BS: 1.25
+    assert "| `strong` network, python-fcl on both sides | 2 / 12 / 2 | 1 / 0 | 3 / 9 / 4 | 2 / 4 |" in said  # BS: 1.25
 
 
 def test_the_arithmetic_of_the_saving_is_the_times_behind_table_3():
@@ -824,7 +820,7 @@ def test_the_last_contradictions_of_reader_r33f_are_gone():
     assert "cells, by means." not in said
     assert "tens of times slower than the compiled one" not in PAGE
     # reader r34f, contradiction 4: not "tens of times" beside 7.5–16×
-    assert "*python-fcl*, the Python binding of the FCL library, is a far slower exact check" in PAGE  # the Key
+    assert "*python-fcl*, the FCL library's Python binding, is a far slower exact check" in PAGE  # the Key
     assert "tens of times slower than today's compiled checker (7.5" not in PAGE
     assert "7.5–16×" in PAGE and "42–79×" in PAGE  # the fold's table the 7.5–79× range is read from
     paper = results_findings.algorithm_1(tables)

@@ -103,17 +103,17 @@ def key(tables: Tables) -> str:
         "checks only a candidate path's edges, the fastest planner a network can drive. The paper's method screens "
         "samples with a *CAE*, which compresses a workspace's occupancy grid into a short code, and an *MLP*, which "
         "reads that code and a configuration and answers “valid” (collision-free) or “invalid”. The `paper` preset is "
-        "that recipe as we read it. The `strong` preset is ours and is not the paper's CAE+MLP: its MLP reads the "
+        "that recipe as we read it; the `strong` preset is ours and is not the paper's CAE+MLP: its MLP reads the "
         "occupancy around each link and the link's box instead of the code. It is the fair test of the claim, that an "
         f"accurate network saves time, because it is accurate: right {span(balanced)} % of the time on unseen "
-        "workspaces' balanced samples, where the `paper` MLP is at chance (Table 2). The `strong` network of "
-        "5 December is Figure 1's and the table's last two rows; Figures 2–3 set it beside the `paper`-preset network "
-        "of 2 December; the *lazy-PRM network* of 3 December is the one raced against the lazy PRM. The *compiled "
-        "checker* is our exact collision check, compiled to machine code; *python-fcl*, the Python binding of the FCL "
-        "library, is a far slower exact check. The answer's counts read *each query's own ratio*: one query's time "
-        "with prediction over its own time without, the median over a cell's queries; a *ratio of means* (the "
-        "paper's statistic, Figures 2–3) divides the two modes' mean times, a *ratio of medians* their median times. "
-        "*Beyond the noise band*: outside how far timing alone moved that ratio (the table of bands below)."
+        "workspaces' balanced samples, where the `paper` MLP is at chance (Table 2). The *lazy-PRM network* is a "
+        "second `strong` network, raced against the lazy PRM (the four runs: [How these results were made]"
+        "(#how-these-results-were-made)). "
+        "*python-fcl*, the FCL library's Python binding, is a far slower exact check than our *compiled checker*. The "
+        "answer's counts read *each query's own ratio*: one query's time with prediction over its own time without, "
+        "the median over a cell's queries; a *ratio of means* (the paper's statistic, Figures 2–3) divides the two "
+        "modes' mean times, a *ratio of medians* their median times. *Beyond the noise band*: outside how far timing "
+        "alone moved that ratio (the table of bands below)."
     )
 
 
@@ -263,13 +263,13 @@ def counts(tables: Tables) -> str:
         return f"| {name} | {said} | {far} | {read[0]} / {read[1]} / {read[2]} | {beyond[0]} / {beyond[2]} |"
 
     lines = [  # reader r41f, item 9: beyond the noise band by means too, every run of ours
-        f"| whole query, {len(facts.papers_totals)} cells | by means (Table 3, Figure 2): saved / tied / cost "
-        "| of those, beyond the noise band: saved / cost "
-        "| by each query's own ratio (Figure 1): saved / tied / cost | of those, beyond the noise band: saved / cost |",
+        f"| whole query, {len(facts.papers_totals)} cells | by means (Figure 2): saved / tied / cost "
+        "| beyond its noise band: saved / cost "
+        "| by each query's own ratio (Figure 1): saved / tied / cost | beyond its noise band: saved / cost |",
         "| --- | --- | --- | --- | --- |",
-        row("the paper's reported results (its Table 3)", None, [1 - s for s in facts.papers_totals], ours=False),
+        row("the paper (its Table 3)", None, [1 - s for s in facts.papers_totals], ours=False),
         row(  # reader r35f, item 1: the closest copy of the paper's recipe, its savings explained where they are told
-            "ours, `paper`-preset network, our compiled checker of 2 December",
+            "`paper` network, compiled checker, 2 December",
             None,
             [
                 1 - saved
@@ -277,9 +277,9 @@ def counts(tables: Tables) -> str:
                 for saved in recorded.improvements("paper", s, recorded=tables).values()
             ],
         ),
-        row("ours, `strong` network, our compiled checker of 5 December", own_intervals(tables), fast_means(tables)),
+        row("`strong` network, compiled checker, 5 December", own_intervals(tables), fast_means(tables)),
         row(
-            "ours, `strong` network, python-fcl on both sides",
+            "`strong` network, python-fcl on both sides",
             own_intervals(tables, checker_scope.SLOW),
             [1 - s for s in facts.totals],
         ),
