@@ -32,7 +32,7 @@ LEADS = {  # what each figure shows, over it
 }
 TICKS = {"total": (), "sampling": (3.0,)}  # labelled beside each figure's 1-2-5 steps, with the floor's edges
 MARGINS = {"total": 1.15, "sampling": 1.25}  # each figure's range: its points', widened by this factor
-ROW_HEIGHTS = {"total": 3.6, "sampling": 3.2}  # inches a row of panels: each band is read to 0.9 and 1.1 (r27f)
+ROW_HEIGHTS = {"total": 3.3, "sampling": 3.2}  # inches a row of panels: each band is read to 0.9 and 1.1 (r27f)
 KEY = (  # under Figure 2 (reader r31f, item 3): its marks are not Figure 1's verdicts; r39f, item 7: one colour each
     " Here colour and shape name a series, not a verdict as in Figure 1 (none takes its circle, square or triangle)."
 )

@@ -92,25 +92,25 @@ def bands(tables: Tables) -> str:
         return ", already past the tie band, so not doubled" if band[0] < 1 - tie and band[1] > 1 + tie else ""
 
     why_doubled = (  # review r33f's reason (commit 1f7414a), said where the band is: measured, it sets nothing apart
-        ", since as measured it lies inside the tie band and would set no cell apart, and it was measured once"
+        ", since as measured it lies inside the tie band and would set no cell apart"
         if 1 - tie < floor.own[0] and floor.own[1] < 1 + tie
         else ""
     )
 
     rows = [  # reader r41f, item 3: every band the page uses, one row each, a column saying how it is built
-        ("tie band", edges(1 - tie, 1 + tie), "our 10 % rule: inside, a tie", "every count; shaded in every figure"),
+        ("tie band", edges(1 - tie, 1 + tie), "our 10 % rule: inside, a tie", "every count and figure"),
         (
             "noise band of each query's own ratio",
             edges(1 - edge, 1 + edge),
             f"timing one computation twice moved this ratio to {edges(*floor.own)}; doubled, 1 ± {NOISE_EDGE} × "
             f"{reach:.2f}{why_doubled}",
-            "the table's last column; Figure 1 (hatched)",
+            "own-ratio counts; Figure 1",
         ),
         (
             "noise band of a ratio of means",
             edges(*floor.means),
             f"timing one computation twice moved this ratio this far{past(floor.means)}",
-            "the table's third column; Figures 2–3 (hatched)",
+            "counts by means; Figures 2–3",
         ),
         (
             "noise band of a ratio of medians",
