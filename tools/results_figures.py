@@ -12,6 +12,8 @@ import html
 import math
 
 from matplotlib.figure import Figure
+from matplotlib.lines import Line2D
+from matplotlib.ticker import NullFormatter, NullLocator
 
 from toolkit.experiments.paper_numbers import IMPROVEMENT
 from toolkit.plots import alt, query_ratios
@@ -19,7 +21,7 @@ from toolkit.teaching import checker_scope, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
 from tools.results_noise import NOISE_EDGE, at_noise_edge, noise, own_intervals, reach_of
-from tools.results_words import BORDER, NAMES, change
+from tools.results_words import NAMES, change
 
 FIGURES = {kind: RESULTS.parent / f"results_table3_{kind}.png" for kind in ("total", "sampling")}  # Table 3's columns
 LEADS = {  # what each figure shows, over it
@@ -30,7 +32,7 @@ LEADS = {  # what each figure shows, over it
 }
 TICKS = {"total": (), "sampling": (3.0,)}  # labelled beside each figure's 1-2-5 steps, with the floor's edges
 MARGINS = {"total": 1.15, "sampling": 1.25}  # each figure's range: its points', widened by this factor
-ROW_HEIGHTS = {"total": 2.9, "sampling": 3.2}  # inches a row of panels: each band is read to 0.9 and 1.1 (r27f)
+ROW_HEIGHTS = {"total": 3.3, "sampling": 3.2}  # inches a row of panels: each band is read to 0.9 and 1.1 (r27f)
 KEY = (  # under Figure 2 (reader r31f, item 3): its marks are not Figure 1's verdicts; r39f, item 7: one colour each
     " Here colour and shape name a series, not a verdict as in Figure 1 (none takes its circle, square or triangle)."
 )
@@ -91,37 +93,43 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
         noise=floor,
         width=WIDTH,
     )
-    return readable(fig, floor)
+    return readable(fig, floor, kind)
 
 
-ROOM = 0.55  # sampler slots added at each panel's right, where the noise band's edges are written
 MARKER_SCALE = 0.85  # Figures 2-3's markers, a little smaller than means_grid draws them, so neighbours stand apart
+SHAPES = {"X": "P"}  # reader r41f, figures: the `paper`-preset crosses read as the `strong` stars; a plus, axis-square
+TIE_TICKS = {"total": True, "sampling": False}  # 0.9 and 1.1 labelled on the left where they stand apart from the "1"
 
 
-def readable(fig: Figure, floor: tuple[float, float]) -> Figure:
-    """Reader r40f, figures: Figures 2-3 with y tick labels on every panel (the right-hand ones had none), the noise
-    band's edges written inside each panel at its right (in the gutter they read as the next panel's ticks), and
-    the markers a little smaller, so that neighbouring ones (Figure 2's 2DS BS, Figure 3's 2DS BT) stand apart."""
+def readable(fig: Figure, floor: tuple[float, float], kind: str = "total") -> Figure:
+    """Reader r40f, figures: Figures 2-3 with y tick labels on every panel (the right-hand ones had none) and the
+    markers a little smaller, so that neighbouring ones (Figure 2's 2DS BS, Figure 3's 2DS BT) stand apart. Reader
+    r41f, figures: the noise band's edges outside the axes, on the right of the right-hand panels only (in the gutter
+    they read as the next panel's ticks; inside they crowded the points), the tie band's edges 0.9 and 1.1 on the left
+    where they stand apart (:data:`TIE_TICKS`), and the `paper`-preset series a shape of its own (:data:`SHAPES`)."""
     for ax in (ax for ax in fig.axes if ax.get_visible()):
-        for child in list(ax.child_axes):  # means_grid's labels of the band's edges, outside the panel
+        for child in list(ax.child_axes):  # means_grid's labels of the band's edges, redrawn below
             child.remove()
-        low, high = ax.get_xlim()
-        ax.set_xlim(low, high + ROOM)
-        for edge in floor:
-            ax.text(
-                high + ROOM - 0.06,
-                edge,
-                f"{edge:.2f}",
-                ha="right",
-                va="bottom" if edge > 1 else "top",
-                fontsize=9,
-                bbox={"facecolor": "white", "edgecolor": "none", "pad": 0.6},
-                zorder=4,
-            )
         ax.tick_params(axis="y", labelleft=True)
         for line in ax.lines:
             if line.get_marker() not in ("None", None, ""):
                 line.set_markersize(line.get_markersize() * MARKER_SCALE)
+                line.set_marker(SHAPES.get(str(line.get_marker()), line.get_marker()))
+        if TIE_TICKS[kind]:
+            ticks = sorted({*ax.get_yticks(), 0.9, 1.1})
+            low, high = ax.get_ylim()
+            ticks = [t for t in ticks if low <= t <= high]
+            ax.set_yticks(ticks, [f"{t:g}" for t in ticks])
+            ax.yaxis.set_minor_formatter(NullFormatter())
+        spec = ax.get_subplotspec()
+        if spec is not None and spec.colspan.start == 1:  # a right-hand panel: the band's edges beside it, outside
+            edges = ax.secondary_yaxis("right")
+            edges.set_yticks(list(floor), [f"{edge:.2f}" for edge in floor])
+            edges.yaxis.set_minor_locator(NullLocator())
+            edges.tick_params(labelsize=9, length=3, pad=1)
+    for handle in fig.legends[0].legend_handles:
+        if isinstance(handle, Line2D) and str(handle.get_marker()) in SHAPES:
+            handle.set_marker(SHAPES[str(handle.get_marker())])
     room = (0.1 + 0.2 * len(fig.legends[0].texts)) / fig.get_figheight()  # as legend_above leaves for the legend
     fig.tight_layout(rect=(0, 0, 1, 1 - room))
     return fig
@@ -225,10 +233,9 @@ def figure_markdown(text: str, kind: str = "total") -> str:
     shown = f"![{html.escape(alt.alt_text(fig))}]({FIGURES[kind].name})\n\n{described}"
     floor = noise(parse(text))
     said = (  # reader r39f, item 1: the band by its one name, in the table under the summary
-        f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule (0.90 or less: saved; 1.10 or "
-        f"more: lost). The noise band of a ratio of means, {floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched, "
-        "dotted edges: how far timing alone moved a ratio of the two modes' mean times), is wider than the tie band: "
-        f"a single cell counts as evidence only beyond it (within {BORDER:.2f} of its edge, borderline)." + KEY
+        f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule. The noise band of a ratio of means, "
+        f"{floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched, dotted edges; built as the table of bands at the top "
+        "says), sets a single cell apart only beyond it." + KEY
         if kind == "total"
         else f"*{kind.capitalize()} time*, counted and hatched as in Figure 2. {sampling_takeaway(counts)}"
     )

@@ -59,7 +59,7 @@ def lazy_prm(tables: Tables) -> str:
     )
     return (  # reader r39f, items 2 and 8; reader r40f, item 5: the means that part from the medians in one parenthesis
         "**Against the lazy PRM, the lazy-PRM network "
-        f"{VERDICTS[answer]}, by medians.** By the ratio of the two modes' median times (the `strong` section's "
+        f"{VERDICTS[answer]}.** By the ratio of the two modes' median times (the `strong` section's "
         f"medians table), it took {inside(told(groups['strong']), means_apart(tables))}.\n\n    Our `paper`-preset "
         "network is no test of the method here: its planner with prediction is Algorithm 1, so planner and "
         f"prediction both change. It saved time{floor_said} in {len(beyond) or 'none'} of "
@@ -107,7 +107,7 @@ def algorithm_1(tables: Tables) -> str:
     ]
     return (
         "**Against the paper's Algorithm 1, our `paper`-preset network "
-        f"{'saves time in some cells by means, but not by the method' if 'less time' in verdicts else 'saves no time'}"
+        f"{'saves time in some cells, but not by the method' if 'less time' in verdicts else 'saves no time'}"
         ".** By the `paper` section's Table 3, of means, our `paper`-preset network saved 10 % or more of a query's "
         f"time in {verdicts.count('less time')} of {len(verdicts)} cells, "
         f"lost 10 % or more in {verdicts.count('more time')} and tied in {verdicts.count('about the same time')} "
@@ -216,7 +216,7 @@ def why_no_saving(tables: Tables) -> str:
     cost_2d = f" ({costs['2ds']:.2g} in {NAMES['2ds']})" if "2ds" in costs else ""
     why = causes(tables)
     return (  # reader r39f, item 9: the finding and its numbers; reader r40f, item 4: scoped to its runs
-        "**Why, by means, in the runs of 5 December: with a fast checker the network was the dearer check; with a slow "
+        "**Why, in the runs of 5 December: with a fast checker the network was the dearer check; with a slow "
         "one sampling was too small a share of a query.** With our compiled checker the network cost "
         f"{span(cost_3d, lambda c: f'{c:.2g}')} times an exact check per configuration in 3D{cost_2d}, so sampling "
         f"got 10 % or more slower in {why.slower} of {why.cells} cells; with python-fcl, {fcl_slower(tables)} times "
@@ -254,8 +254,8 @@ def paper_sampling(tables: Tables) -> str:
     return (
         f" The `paper`-preset run of 2 December lost sampling time in {slower[2]} of {sum(slower)} cells although its "
         f"network was no dearer than an exact check in 3D ({', '.join(said)}): that network answers “invalid” to "
-        f"every {' and '.join(invalid)} sample, so its round keeps no sample and a query the straight edge from start "
-        "to goal does not solve samples again."
+        f"every {' and '.join(invalid)} sample, so no round of sampling keeps a sample, "
+        "and a query whose straight edge from start to goal is blocked samples round after round."
     )
 
 

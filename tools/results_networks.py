@@ -37,8 +37,8 @@ def cae(tables: Tables) -> str:
     )
     return (
         f"**The CAE (Table 1): {'no better than' if round(gain * 100) <= 0 else 'barely better than'} answering "
-        f"“free” everywhere.** The `paper` CAE (the autoencoder that compresses a workspace's occupancy grid into a "
-        f"short code) reconstructs unseen workspaces at {span(ours)} % of their cells "
+        f"“free” everywhere.** The `paper` CAE reconstructs unseen workspaces at "
+        f"{span(ours)} % of their cells "
         f"(the paper: {span(papers)} %), {than_free} ({span(free)} %)."
     )
 
@@ -88,8 +88,7 @@ def mlp(tables: Tables) -> str:
     return (
         f"**The MLP (Table 2): the `paper` MLP is at chance, the `strong` one right "
         f"{span(balanced(recorded.ALGORITHM_1))} % of the time.** On unseen workspaces' balanced samples (half of "
-        "them valid) the `paper` MLP (the classifier that reads that code and a configuration and answers “valid” "
-        "or “invalid”) is right "
+        "them valid) the `paper` MLP is right "
         f"{span(balanced('paper'))} % of the time, where a coin flip is right 50 %; the `strong` MLP of Figure 1 "
         f"{span(balanced(recorded.ALGORITHM_1))} %. On our validity-blind samples (drawn regardless of validity, as "
         "the paper's planning runs draw them; which kind its unseen test used is unstated, chapter 03), the `paper` "

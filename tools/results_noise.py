@@ -89,42 +89,36 @@ def bands(tables: Tables) -> str:
         return f"{low:.2f}–{high:.2f}"
 
     def past(band: tuple[float, float]) -> str:  # reader r41f, contradiction 1: why a band is not doubled
-        return ", already past the tie band" if band[0] < 1 - tie and band[1] > 1 + tie else ""
+        return ", already past the tie band, so not doubled" if band[0] < 1 - tie and band[1] > 1 + tie else ""
 
     why_doubled = (  # review r33f's reason (commit 1f7414a), said where the band is: measured, it sets nothing apart
-        ": as measured it lies inside the tie band and would set no cell apart, and it was measured once, on the run "
-        "with our compiled checker"
+        ", since as measured it lies inside the tie band and would set no cell apart"
         if 1 - tie < floor.own[0] and floor.own[1] < 1 + tie
         else ""
     )
 
-    rows = [
-        (
-            "tie band (our 10 % rule)",
-            edges(1 - tie, 1 + tie),
-            "inside, a tie; at or past its edges, a saving or a cost",
-            "every count; shaded in every figure",
-        ),
+    rows = [  # reader r41f, item 3: every band the page uses, one row each, a column saying how it is built
+        ("tie band", edges(1 - tie, 1 + tie), "our 10 % rule: inside, a tie", "every count and figure"),
         (
             "noise band of each query's own ratio",
             edges(1 - edge, 1 + edge),
-            f"timing one computation twice moved this ratio to {edges(*floor.own)}; the band is 1 ± twice the larger "
-            f"side ({NOISE_EDGE} × {reach:.2f}){why_doubled}. A single cell inside it is no clear evidence",
-            "the table's last column; Figure 1 (hatched)",
+            f"timing one computation twice moved this ratio to {edges(*floor.own)}; doubled, 1 ± {NOISE_EDGE} × "
+            f"{reach:.2f}{why_doubled}",
+            "own-ratio counts; Figure 1",
         ),
-        (  # reader r41f, contradictions 1 and 8: every band in one table, each saying how it is built
+        (
             "noise band of a ratio of means",
             edges(*floor.means),
-            f"timing one computation twice moved this ratio that far{past(floor.means)}; the band is that reach "
-            "itself, not doubled",
-            "the line under the table; Figures 2–3 (hatched)",
+            f"timing one computation twice moved this ratio this far{past(floor.means)}",
+            "counts by means; Figures 2–3",
         ),
         (
             "noise band of a ratio of medians",
             edges(*floor.medians),
-            f"built as the band above, from that table's ratio of medians{past(floor.medians)}",
+            f"the same, for a ratio of medians{past(floor.medians)}",
             "the lazy-PRM finding",
         ),
     ]
-    head = ["| band near 1 | from–to | what it means | used in |", "| --- | --- | --- | --- |"]
-    return "\n".join(head + [f"| {' | '.join(row)} |" for row in rows])
+    head = ["| band near 1 | from–to | how built | used in |", "| --- | --- | --- | --- |"]
+    said = "\n".join(head + [f"| {' | '.join(row)} |" for row in rows])
+    return f"{said}\n\nA single cell inside a noise band is no clear evidence of a saving or a cost."
