@@ -683,7 +683,7 @@ def test_the_only_is_qualified_and_the_other_pages_figures_are_reconciled():
     race = " ".join(RACE.split())
     assert lazy and f"The Results page's lazy PRM takes {lazy.group(1)} a mean 3DO query" in race
     # the checker run of 5 December 2 and 3 December: one cell cheaper, four too close of the other five
-    cells = re.findall(r"\| `(?:paper|strong)` \| [23] December \| [^|]+\| ([^|]+) \|", results)
+    cells = re.findall(r"\| `(?:paper|strong)` \| [23] December \| [^|]+× \| ([^|]+) \|", results)  # speed-ups
     verdicts = " ".join(cells)
     assert verdicts.count("(the network cheaper)") == 1 and len(cells) == 2
     assert "a network was the cheaper check once, the paper-size one on 3DO, and too close to tell in four" in SUMMARY
