@@ -82,6 +82,9 @@ def answer_ratios(
     for ax in axes:  # one scale for both panels: a point above reads against one below
         ax.set_ylim(min(*every, 1 - tie) / 1.25, max(*every, 1 + tie) * 1.25)
         log_ticks(ax)
+        near = [t for t in (0.8, 0.9, 1.1, 1.2) if ax.get_ylim()[0] <= t <= ax.get_ylim()[1]]  # r41d: the band edges
+        ax.set_yticks(near, [f"{t:g}" for t in near], minor=True)
+        ax.tick_params(axis="y", which="minor", labelsize=8)
         ax.set_xlabel("sampler, grouped by scenario", labelpad=24)  # under the scenarios' names
     handles, labels = axes[0].get_legend_handles_labels()
     fig.legend(handles, labels, loc="outside upper center", ncol=1, fontsize=9, frameon=False)  # a line a series

@@ -238,7 +238,8 @@ def mark_line(tables: Tables | None = None) -> str:
     return (
         f"{costs.MARK} on a verdict, in every table of this page, means inside the noise band of its statistic: no "
         "clear evidence. The noise band (hatched) is how far timing one computation twice moved the statistic, "
-        f"doubled: {band('own')} for the median query, {band('means')} for a ratio of mean times (`docs/results.md`)."
+        f"doubled: {band('own')} for the median query, drawn here; {band('means')} for a ratio of mean times, drawn in "
+        "section 6: another statistic, so another band (`docs/results.md`)."
     )
 
 
