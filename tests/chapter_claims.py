@@ -910,9 +910,8 @@ def _claim_status(nb, found: list[tuple[list[str], list[list[str]]]], said: dict
         for m in FAST_BULLET.finditer(outputs[0] if outputs else "")
     ]
     beyond = str(int(expected[4]) - edge[findings.COSTS])
-    if bullet != [(*expected[1:5], beyond, counted[0])] or [m["fast_means"] for m in MEANS_LINE.finditer(" ".join(outputs))] != [
-        counted[0]
-    ]:
+    means_line = [m["fast_means"] for m in MEANS_LINE.finditer(" ".join(outputs))]
+    if bullet != [(*expected[1:5], beyond, counted[0])] or means_line != [counted[0]]:
         problems.append(f"04: the first code cell's bullet on our fast checker says {bullet}; section 6's: {expected}")
     edges = _marked(nb, ACCURATE_ROW)
     if edges != (str(edge[findings.COSTS]), str(edge[findings.SAVES])):

@@ -133,7 +133,7 @@ def counted(runs: Mapping[str, tuple[list[dict], dict]]) -> dict[str, list[dict]
 
 def per_point(records: Mapping[str, list[dict]]) -> dict[str, float]:
     """Each mode's median connection time per exact edge point, in seconds: the same exact check in both modes."""
-    return {m: float(np.median([r["connection_s"] / max(r["edge_checks"], 1) for r in rs])) for m, rs in records.items()}
+    return {m: float(np.median([r["connection_s"] / max(r["edge_checks"], 1) for r in v])) for m, v in records.items()}
 
 
 def _median_of(records: list[dict], key: str) -> str:
