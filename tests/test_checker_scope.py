@@ -121,7 +121,8 @@ def test_the_answer_is_two_plain_sentences_read_from_the_record():
     assert chapter04.mark_line().startswith(
         "\\* on a verdict, in every table of this page, means inside the noise band of its statistic: no clear "
         "evidence. The noise band (hatched) is how far timing one computation twice moved the statistic, doubled: "
-        "0.82–1.18 for the median query, 0.84–1.24 for a ratio of mean times"
+        "0.82–1.18 for the median query, drawn here; 0.84–1.24 for a ratio of mean times, drawn in section 6: another "
+        "statistic, so another band"  # reader r41d: why the two figures' bands differ, said under the first
     )
     assert "3 of these 4 cells" in costs.cost_table()  # the same count, under the table it comes from
     facts = checker_scope.slow_checker()
