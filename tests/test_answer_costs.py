@@ -160,4 +160,7 @@ def test_repairs_table_gives_a_row_a_query_and_counts_the_runs_without_repairs()
     }
     said = chapter04.repairs_table(repairs)
     assert "| 0 | 0 | 3 | 0 | 1 |\n| 1 | 0 | 2 | 0 | 0 |" in said
-    assert said.endswith("5 of 8 runs needed no repair; the most repairs in all: OB (5), the fewest: BS, G (0).")
+    assert said.startswith(
+        "With prediction, 5 of 8 runs needed no repair; the most repairs in all: OB (5), the fewest: BS, G (0)."
+    )
+    assert "<details><summary>Repairs per query and sampler" in said and said.endswith("</details>")  # r41d: length

@@ -82,6 +82,7 @@ def answer_ratios(
     for ax in axes:  # one scale for both panels: a point above reads against one below
         ax.set_ylim(min(*every, 1 - tie) / 1.25, max(*every, 1 + tie) * 1.25)
         log_ticks(ax)
+        _near_ticks(ax)
         ax.set_xlabel("sampler, grouped by scenario", labelpad=24)  # under the scenarios' names
     handles, labels = axes[0].get_legend_handles_labels()
     fig.legend(handles, labels, loc="outside upper center", ncol=1, fontsize=9, frameon=False)  # a line a series
@@ -91,6 +92,13 @@ def answer_ratios(
     drawn_series = sum(any(label.endswith(f", {name}") for label in rows) for name in series)
     said = _text(tie, drawn_series, counted, spans, means, None if spans and not means else floor)
     return describe(fig, said + _median_words(median_floor if means or spans else None, bool(means)), parts)
+
+
+def _near_ticks(ax) -> None:
+    """Labelled minor ticks at 0.8, 0.9, 1.1 and 1.2 (reader r41d: a value by a band's edge could not be read off)."""
+    near = [t for t in (0.8, 0.9, 1.1, 1.2) if ax.get_ylim()[0] <= t <= ax.get_ylim()[1]]
+    ax.set_yticks(near, [f"{t:g}" for t in near], minor=True)
+    ax.tick_params(axis="y", which="minor", labelsize=8)
 
 
 def _tie_band(ax, tie: float, named: bool) -> None:
