@@ -496,7 +496,7 @@ def test_a_valid_panel_says_the_gap_its_checker_proves(square_world):
     Q = np.array([[9.5, 11.0], [9.9, 11.0]])  # 0.25 left of the block at [10, 12]^2, then overlapping it
     gap = exact.clearances(Q[:1], cap=1.0)[0]
     left, right = verdict.verdict_figure(exact, Q).axes
-    assert gap > 0 and left.get_title() == f"valid: at least {gap:.2g} clear\nof every block and wall"
+    assert gap > 0 and left.get_title() == f"valid: at least {gap:.2g} clear of every\nblock and wall (a lower bound)"
     assert right.get_title() == "in collision:\nsquare overlaps block 0 by 0.15"  # the point robot's link, by name
 
 
@@ -545,6 +545,8 @@ def test_a_youbot_platform_overlapping_a_block_by_a_little_is_filled_and_enlarge
     (inset,) = hit.child_axes
     assert _patches(inset, "overlap") and inset.get_xlim()[0] < 20.0 < 20.05 < inset.get_xlim()[1]
     assert not clear.child_axes and "An inset enlarges" in alt_text(fig)
+    # reader r42a: unframed on white, the inset read as one more block and robot in the room
+    assert inset.get_facecolor() != hit.get_facecolor() and min(s.get_linewidth() for s in inset.spines.values()) >= 2
 
 
 def test_a_slice_over_positions_shows_a_pixel_beyond_the_bounds_dark(square_world):

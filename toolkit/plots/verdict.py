@@ -31,6 +31,7 @@ from toolkit.plots.robot_drawing import (
     link_style,
 )
 
+INSET_BACKGROUND = COLORS["c_obstacle"]  # light grey: the inset's ground, set off from the white room around it
 PARTS = {"youbot": ("platform", "turret", "upper arm", "forearm", "wrist", "gripper"), "point2d": ("square",)}
 
 
@@ -43,7 +44,8 @@ def verdict_figure(
     in collision, each link box that touches a block and that block are outlined thick (the block dashed) and named
     in the title, numbered as the arrays are: "platform touches block 11 (desk)" (review r30a), or "square overlaps
     block 0 by 0.2" with a 2D link's part inside the block filled light (review r31a); a valid one's title
-    gives its clearance where the checker proves one ("valid: at least 0.15 clear of every block and wall").
+    gives its clearance where the checker proves one, a lower bound on the gap ("valid: at least 0.15 clear of every
+    block and wall (a lower bound)", reader r42a: read as the gap itself).
     ``columns`` panels a row (all of them by default; reader r41a: three panels a row were too small to read the
     first check by), the key in a row's empty place or under the panels."""
     robot, workspace = checker.robot, getattr(checker, "workspace", None)
@@ -125,9 +127,10 @@ def _key(fig: Figure, axes, valid: np.ndarray, filled: bool, place=None) -> list
 
 def _valid_title(checker: CollisionChecker, q: np.ndarray) -> str:
     """A valid panel's title, with the checker's clearance where it proves one: a hairline gap is invisible at the
-    page's width, and a panel titled "valid" that looks touching needs its gap said (review r29a)."""
+    page's width, and a panel titled "valid" that looks touching needs its gap said (review r29a); called a lower bound,
+    since the true gap can be wider (reader r42a)."""
     gap = float(checker.clearances(q[None], cap=1.0)[0])
-    return f"valid: at least {gap:.2g} clear\nof every block and wall" if gap > 0 else "valid"
+    return f"valid: at least {gap:.2g} clear of every\nblock and wall (a lower bound)" if gap > 0 else "valid"
 
 
 def _outline_touching(
@@ -161,7 +164,8 @@ OVERLAP_STYLE: dict[str, Any] = dict(facecolor=COLORS["overlap"], edgecolor=COLO
 
 def _zoom_on_small_fills(ax, fills, robot: BoxRobot, q: np.ndarray, plane: tuple[int, int]) -> None:
     """An inset enlarging a fill under a twentieth of the panel's width (review r40a: 0.078 of overlap was a few
-    pixels at a corner), in the panel's corner farthest from the robot, its window marked in the panel."""
+    pixels at a corner), in the panel's corner farthest from the robot, its window marked in the panel; framed heavy,
+    on a tinted ground, so that it reads as a magnifier and not as more of the room (reader r42a)."""
     if not fills:
         return
     points = np.concatenate([f[0] for f in fills])  # (m, 2)
@@ -189,6 +193,9 @@ def _zoom_on_small_fills(ax, fills, robot: BoxRobot, q: np.ndarray, plane: tuple
         inset.add_patch(Polygon(fill, gid="overlap", zorder=6, **OVERLAP_STYLE))
     inset.set(xlim=(mid[0] - half, mid[0] + half), ylim=(mid[1] - half, mid[1] + half), xticks=[], yticks=[])
     inset.set_aspect("equal")
+    inset.set_facecolor(INSET_BACKGROUND)  # reader r42a: unframed, the inset read as a block and a robot in the room
+    for spine in inset.spines.values():
+        spine.set(linewidth=2.5, edgecolor=COLORS["ink"])
     inset.set_title(f"zoom x{(x1 - x0) / (2 * half):.0f}", fontsize=8, pad=2)
     ax.indicate_inset_zoom(inset, edgecolor=COLORS["ink"])
     ax.zoomed = True
