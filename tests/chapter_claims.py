@@ -205,14 +205,14 @@ def _chapter_02_gaps(nb, found: str) -> list[str]:
     ]
     for row in _section_5(nb):
         said += [row[2:5], row[5:8]]
-    answer = re.search(
-        r'scores ([\d.]+)% on \d+ new grids, where answering "all free"(?: \([^)]*\))? gets ([\d.]+)% '
-        r"\(([\d.]+) points (below|above)\)",
+    answer = re.search(  # reader r42b: the gap said of the CAE, before "all free", not after it
+        r'scores ([\d.]+)% on \d+ new grids, ([\d.]+) points (below|above) answering "all free"(?: \([^)]*\))?, '
+        r"which gets ([\d.]+)%",
         found,
     )
     if answer:
-        gap = float(answer.group(3)) * (-1 if answer.group(4) == "below" else 1)
-        said.append((float(answer.group(1)), float(answer.group(2)), gap))
+        gap = float(answer.group(2)) * (-1 if answer.group(3) == "below" else 1)
+        said.append((float(answer.group(1)), float(answer.group(4)), gap))
     return [
         f"02: {a}% against 'all free' {b}% is printed as {c:+.1f} points" for a, b, c in said if abs(a - b - c) > 0.05
     ]
@@ -236,8 +236,8 @@ def _chapter_02_unseen(nb, found: str) -> list[str]:
                 f"02: {lam[0]} scores {lam[4]:+.1f} points against 'all free' on the test grids: not within a couple"
             )
     answer = re.search(
-        r'\*\*The answer\.\*\* .*? scores ([\d.]+)% on \d+ new grids, where answering "all free"(?: \([^)]*\))? gets '
-        r'([\d.]+)% .*?\*\*no better than answering "all free"\*\*',
+        r"\*\*In this run's numbers\.\*\* .*? scores ([\d.]+)% on \d+ new grids, [\d.]+ points (?:below|above) "
+        r'answering "all free"(?: \([^)]*\))?, which gets ([\d.]+)%.*?\*\*no better than answering "all free"\*\*',
         found,
     )
     if answer is None:  # review r26b: the closing answer in this run's numbers, beside the paper's

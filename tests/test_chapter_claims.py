@@ -1136,12 +1136,12 @@ def chapter_02(
         'MD:| grids | accuracy, lowest – highest | points above "all free", fewest – most | above the diagonal |\n'
         f"| --- | ---: | ---: | ---: |\n| seen | 98.9% – 100.0% | +0.8 – +21.6 | {seen_above} of 30 |\n"
         "| unseen | 80.1% – 94.0% | -5.2 – +1.1 | 3 of 10 |",
-        "MD:**The answer.** Trained on 30 grids with the paper's layer sizes and λ for 1,500 steps, our CAE rebuilds "
-        "its training grids 99.6% right by memorizing them (Table 1: 100%). "
-        f'But it scores {unseen[1]:.1f}% on 500 new grids, where answering "all free" (an empty grid, whatever the '
-        "input) gets 87.6% "
-        f"({abs(unseen[1] - 87.6):.1f} points {'below' if unseen[1] < 87.6 else 'above'}): it rebuilds a new "
-        'workspace **no better than answering "all free"**, and Table 1\'s 100% on unseen grids does not reproduce.',
+        "MD:**In this run's numbers.** Trained on 30 grids with the paper's layer sizes and λ for 1,500 steps, our CAE "
+        "rebuilds its training grids 99.6% right by memorizing them (Table 1: 100%). "
+        f"But it scores {unseen[1]:.1f}% on 500 new grids, {abs(unseen[1] - 87.6):.1f} points "
+        f'{"below" if unseen[1] < 87.6 else "above"} answering "all free" (an empty grid, whatever the input), '
+        'which gets 87.6%: it rebuilds a new workspace **no better than answering "all free"**, and Table 1\'s 100% on '
+        "unseen grids does not reproduce.",
     )
 
 
@@ -1211,7 +1211,7 @@ def test_chapter_02_holds_its_closing_answer_to_its_numbers():
     answer = nb["cells"][-1]["outputs"][0]["data"]
     answer["text/markdown"] = answer["text/markdown"].replace("scores 86.8%", "scores 91.0%")
     assert "02: the answer says 'no better than all free' of 91.0% against 87.6%" in problems(CH02, nb)
-    answer["text/markdown"] = "**The answer.** the CAE does better."
+    answer["text/markdown"] = "**In this run's numbers.** the CAE does better."
     assert problems(CH02, nb) == ["02: the closing answer with this run's unseen score and 'all free' is not printed"]
 
 
@@ -1237,7 +1237,7 @@ def test_chapter_02_holds_the_answers_gap_to_what_it_prints():
     values: a gap that is not their difference fails."""
     nb = chapter_02()
     answer = nb["cells"][-1]["outputs"][0]["data"]
-    answer["text/markdown"] = answer["text/markdown"].replace("(0.8 points below)", "(1.0 points below)")
+    answer["text/markdown"] = answer["text/markdown"].replace("0.8 points below", "1.0 points below")
     assert problems(CH02, nb) == ["02: 86.8% against 'all free' 87.6% is printed as -1.0 points"]
 
 
