@@ -238,7 +238,9 @@ def test_the_typed_sentences_on_table_3_quote_it():
     # reader r36f, item 11: one list of the runs, each run's section its heading and its fold, its cells counted once
     # reader r41f, item 8: one section, the runs a four-row table above the provenance's fold
     runs = TEXT.partition("## How these results were made")[2].partition("<details")[0]
-    assert len([line for line in runs.splitlines() if line.startswith("| `")]) == 4 and "## Runs behind" not in TEXT
+    # reader r42f, item 11: each run's name links to its section, whose notes and tables are folded under its heading
+    assert len([line for line in runs.splitlines() if line.startswith("| [`")]) == 4 and "## Runs behind" not in TEXT
+    assert "| [`paper`](#preset-paper) |" in runs and "(#preset-strong) |" in runs
     assert "the provenance at the page's end" not in TEXT
     assert all(
         part.lstrip().startswith('<details markdown="1">')
