@@ -13,7 +13,7 @@ from PIL import Image
 
 from toolkit.experiments.paper_numbers import IMPROVEMENT
 from toolkit.plots import alt, query_ratios
-from toolkit.plots.palette import COLORS, LINE_COLORS
+from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO
 from toolkit.teaching import checker_scope
 from tools import recorded_results, results_figures, results_noise, results_summary, results_words
 
@@ -326,3 +326,20 @@ def test_figure_1_hatches_the_noise_edge_and_labels_the_band_apart_from_the_1():
     assert all(a.y1 <= b.y0 + 0.5 for a, b in zip(boxes, boxes[1:]))
     assert all(b.x0 >= ax.get_window_extent(renderer).x1 for b in boxes)
     assert "tie band, above 0.90 and below 1.10" in [t.get_text() for t in fig.legends[0].texts]
+
+
+def test_figures_2_and_3_take_no_verdict_colour_no_square_like_plus_and_draw_their_marks_over_the_hatch(drawn):
+    """Reader r42f, figures: the python-fcl hexagon was blue (Figure 1's "costs time") and read as a circle, the
+    `paper`-preset plus read as Figure 1's "tie" square, and Figure 3's hatching seemed to cover the markers inside it.
+    Every series' point and legend handle now takes no blue and no plus, and every point is drawn over every band."""
+    _, fig = drawn
+    blues = {OKABE_ITO["blue"], OKABE_ITO["sky blue"]}  # Figure 1's "costs time", and the hexagon's
+    handles = [h for h in fig.legends[0].legend_handles if isinstance(h, Line2D)]
+    for ax in (ax for ax in fig.axes if ax.get_visible() and ax.lines):
+        points = [line for line in ax.lines if line.get_marker() not in ("None", None, "")]
+        assert len(points) == 4
+        bands = [patch.get_zorder() for patch in ax.patches]
+        assert bands and all(line.get_zorder() > max(bands) for line in points)
+        for line in [*points, *handles]:
+            assert str(line.get_marker()) not in ("P", "h", "s", "o")
+            assert not {str(line.get_markerfacecolor()).lower(), str(line.get_color()).lower()} & blues

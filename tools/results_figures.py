@@ -17,6 +17,7 @@ from matplotlib.ticker import NullFormatter, NullLocator
 
 from toolkit.experiments.paper_numbers import IMPROVEMENT
 from toolkit.plots import alt, query_ratios
+from toolkit.plots.palette import LINE_COLORS, OKABE_ITO
 from toolkit.teaching import checker_scope, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
@@ -34,7 +35,7 @@ TICKS = {"total": (), "sampling": (3.0,)}  # labelled beside each figure's 1-2-5
 MARGINS = {"total": 1.15, "sampling": 1.25}  # each figure's range: its points', widened by this factor
 ROW_HEIGHTS = {"total": 3.3, "sampling": 3.2}  # inches a row of panels: each band is read to 0.9 and 1.1 (r27f)
 KEY = (  # under Figure 2 (reader r31f, item 3): its marks are not Figure 1's verdicts; r39f, item 7: one colour each
-    " Here colour and shape name a series, not a verdict as in Figure 1 (none takes its circle, square or triangle)."
+    " Here colour and shape name a series, not a verdict as in Figure 1 (none takes its blue, vermillion or black)."
 )
 CLAIM_FIGURE = RESULTS.parent / "results_claim.png"  # Figure 1: the statistic the verdict on the paper's claim reads
 CLAIM_BEGIN = "<!-- figure of the claim: drawn by `python -m tools.results_summary` from the tables below -->"
@@ -97,8 +98,13 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
 
 
 MARKER_SCALE = 0.85  # Figures 2-3's markers, a little smaller than means_grid draws them, so neighbours stand apart
-SHAPES = {"X": "P"}  # reader r41f, figures: the `paper`-preset crosses read as the `strong` stars; a plus, axis-square
-TIE_TICKS = {"total": True, "sampling": False}  # 0.9 and 1.1 labelled on the left where they stand apart from the "1"
+LOOKS = {  # reader r42f, figures: no blue (Figure 1's "costs time") and no square-like plus (its "tie" square)
+    "ours, paper-preset network, compiled checker of 2 December": (LINE_COLORS[3], "x"),  # bluish green, thin cross
+    "ours, accurate strong network, python-fcl on both sides": (OKABE_ITO["orange"], "v"),  # orange, downward
+}  # the other two keep means_grid's look: the paper's grey diamonds, the `strong` network's reddish purple stars
+CROSS_WIDTH = 2.4  # points: a thin cross is all edge, drawn this thick so it reads beside the filled markers
+MARKER_Z = 4  # over every band and hatch (reader r42f: Figure 3's hatching read as covering the markers inside it)
+TIE_TICKS = {"total": False, "sampling": False}  # reader r42f: 0.9 and 1.1 crowd the "1"; the legend names them
 
 
 def readable(fig: Figure, floor: tuple[float, float], kind: str = "total") -> Figure:
@@ -114,7 +120,8 @@ def readable(fig: Figure, floor: tuple[float, float], kind: str = "total") -> Fi
         for line in ax.lines:
             if line.get_marker() not in ("None", None, ""):
                 line.set_markersize(line.get_markersize() * MARKER_SCALE)
-                line.set_marker(SHAPES.get(str(line.get_marker()), line.get_marker()))
+                line.set_zorder(MARKER_Z)
+                restyle(line)
         if TIE_TICKS[kind]:
             ticks = sorted({*ax.get_yticks(), 0.9, 1.1})
             low, high = ax.get_ylim()
@@ -127,12 +134,27 @@ def readable(fig: Figure, floor: tuple[float, float], kind: str = "total") -> Fi
             edges.set_yticks(list(floor), [f"{edge:.2f}" for edge in floor])
             edges.yaxis.set_minor_locator(NullLocator())
             edges.tick_params(labelsize=9, length=3, pad=1)
-    for handle in fig.legends[0].legend_handles:
-        if isinstance(handle, Line2D) and str(handle.get_marker()) in SHAPES:
-            handle.set_marker(SHAPES[str(handle.get_marker())])
+    legend = fig.legends[0]
+    for handle, label in zip(legend.legend_handles, legend.texts):
+        if isinstance(handle, Line2D):
+            restyle(handle, label.get_text())
     room = (0.1 + 0.2 * len(fig.legends[0].texts)) / fig.get_figheight()  # as legend_above leaves for the legend
     fig.tight_layout(rect=(0, 0, 1, 1 - room))
     return fig
+
+
+def restyle(line: Line2D, name: str | None = None) -> None:
+    """A series' point or legend handle in its :data:`LOOKS` colour and marker, by its series' ``name`` (its label)."""
+    look = LOOKS.get(name if name is not None else str(line.get_label()))
+    if look is None:
+        return
+    colour, marker = look
+    line.set_marker(marker)
+    line.set_color(colour)
+    line.set_markerfacecolor(colour)
+    line.set_markeredgecolor(colour)
+    if marker == "x":
+        line.set_markeredgewidth(CROSS_WIDTH)
 
 
 def claim_figure(text: str) -> Figure:

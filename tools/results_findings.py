@@ -220,7 +220,7 @@ def why_no_saving(tables: Tables) -> str:
         "one sampling was too small a share of a query.** With our compiled checker the network cost "
         f"{span(cost_3d, lambda c: f'{c:.2g}')} times an exact check per configuration in 3D{cost_2d}, so sampling "
         f"got 10 % or more slower in {why.slower} of {why.cells} cells; with python-fcl, {fcl_slower(tables)} times "
-        f"slower than our compiled checker in 3D, sampling's share of a query was at most {why.share:.2f}, so "
+        f"slower than our compiled checker in 3D, sampling's share of a query was at most {percent(why.share)} %, so "
         f"shortening it saved at most {percent(why.saved)} % of a query (the fold below works one cell through)."
         f"{paper_sampling(tables)}"
     )
@@ -279,15 +279,17 @@ def share_table(tables: Tables) -> str:
 
 
 def between(shares: list[float]) -> str:
-    """``"−18 to 1.4 %"``: the range of ``shares`` in percent, two figures, a minus sign where one is negative."""
+    """``"−18 % to 1.4 %"``: the range of ``shares`` in percent, two figures, a minus sign where one is negative; each
+    end its unit, so a share under 1 % does not read as a fraction of a query (reader r42f, contradiction 6)."""
     low, high = (f"{f * 100:.2g}".replace("-", "−") for f in (min(shares), max(shares)))
-    return f"{low} to {high} %"
+    return f"{low} % to {high} %"
 
 
 def worked_example(tables: Tables) -> str:
     """Reader r32f, item 4: the arithmetic once, in the cell of the run with python-fcl where sampling saved the
     largest share of a query: its share, the cut in sampling time, their product, and the whole query's saving as
-    Table 3 measured it. Shares are written as fractions, so that a percentage here is a saving (review r30f)."""
+    Table 3 measured it. Shares are written in percent, as the table under it writes them (reader r42f,
+    contradiction 6)."""
     slow, saved = stage_shares(tables, checker_scope.SLOW)
     times = next(t for heading, t in tables[checker_scope.SLOW].items() if "Times behind Table 3" in heading)
     top = max(range(len(saved)), key=saved.__getitem__)
@@ -296,8 +298,9 @@ def worked_example(tables: Tables) -> str:
     cut = saved[top] / slow[top]  # reader r36f, contradiction 1: unrounded, so the product is the share saved
     return (
         f" Worked through for {NAMES.get(scenario, scenario)} {sampler} with python-fcl: sampling took "
-        f"{slow[top]:.3f} of a mean query, the network cut it by {cut * 100:.1f} % (Figure 3: {1 - cut:.2f}), and "
-        f"{slow[top]:.3f} × {cut:.3f} ≈ {slow[top] * cut:.3f} of the query; our Table 3 (python-fcl run) "
+        f"{slow[top] * 100:.1f} % of a mean query, the network cut it by {cut * 100:.1f} % (Figure 3: {1 - cut:.2f}), "
+        f"and {slow[top] * 100:.1f} % × {cut:.3f} ≈ {slow[top] * cut * 100:.1f} % of the query; our Table 3 "
+        "(python-fcl run) "
         f"measured a {percent(total)} % saving of the whole query."
     )
 

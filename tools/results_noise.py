@@ -88,13 +88,13 @@ def bands(tables: Tables) -> str:
     def edges(low: float, high: float) -> str:
         return f"{low:.2f}–{high:.2f}"
 
-    def past(band: tuple[float, float]) -> str:  # reader r41f, contradiction 1: why a band is not doubled
-        return ", already past the tie band, so not doubled" if band[0] < 1 - tie and band[1] > 1 + tie else ""
+    def past(band: tuple[float, float]) -> str:  # ONE RULE of issue #45: measured, and already past the tie band
+        return " (already past the tie band)" if band[0] < 1 - tie and band[1] > 1 + tie else ""
 
-    why_doubled = (  # review r33f's reason (commit 1f7414a), said where the band is: measured, it sets nothing apart
-        ", since as measured it lies inside the tie band and would set no cell apart"
-        if 1 - tie < floor.own[0] and floor.own[1] < 1 + tie
-        else ""
+    inside = 1 - tie < floor.own[0] and floor.own[1] < 1 + tie
+    why_doubled = (  # ONE RULE of issue #45 (reader r42f, contradiction 3): the reason in the same words everywhere
+        ", doubled because a single repeat understates timing noise"
+        + (" and as measured it would lie inside the tie band" if inside else "")
     )
 
     rows = [  # reader r41f, item 3: every band the page uses, one row each, a column saying how it is built
@@ -102,21 +102,21 @@ def bands(tables: Tables) -> str:
         (
             "noise band of each query's own ratio",
             edges(1 - edge, 1 + edge),
-            f"timing one computation twice moved this ratio to {edges(*floor.own)}; doubled, 1 ± {NOISE_EDGE} × "
-            f"{reach:.2f}{why_doubled}",
+            f"twice the reach timing alone gave it ({edges(*floor.own)}: one computation timed twice), 1 ± "
+            f"{NOISE_EDGE} × {reach:.2f}{why_doubled}",
             "own-ratio counts; Figure 1",
         ),
         (
             "noise band of a ratio of means",
             edges(*floor.means),
-            f"timing one computation twice moved this ratio this far{past(floor.means)}",
+            f"the reach timing alone gave it, as measured{past(floor.means)}",
             "counts by means; Figures 2–3",
         ),
         (
             "noise band of a ratio of medians",
             edges(*floor.medians),
-            f"the same, for a ratio of medians{past(floor.medians)}",
-            "the lazy-PRM finding",
+            f"the reach timing alone gave it, as measured{past(floor.medians)}",
+            "the lazy-PRM finding; the lazy-PRM run (3 December) and the 2 December run borrow it",
         ),
     ]
     head = ["| band near 1 | from–to | how built | used in |", "| --- | --- | --- | --- |"]
