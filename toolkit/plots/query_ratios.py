@@ -177,7 +177,7 @@ def _legend_under_title(fig: Figure, ax, pairs: dict, title: str) -> None:
         handler_map={tuple: HandlerTuple(ndivide=None, pad=0.6)},
     )
     height = legend.get_window_extent().height * 72 / fig.dpi  # points
-    ax.set_title(title, fontsize=10, pad=height + 4)
+    ax.set_title(title, fontsize=10, pad=height + 6)
     fig.tight_layout()
 
 
