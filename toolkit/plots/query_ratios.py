@@ -23,6 +23,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.legend_handler import HandlerTuple
 from matplotlib.ticker import NullLocator
+from matplotlib.transforms import blended_transform_factory
 
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO, PAGE_WIDTH, halo, series_style
@@ -41,9 +42,11 @@ from toolkit.plots.timings import band_words, legend_above, log_ticks, ratio_par
 from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 
 READS = (COSTS, TIES, SAVES)  # what a median reads as, in the legend's order; each its own colour and marker
-GAP = 1  # an empty slot between two scenarios' groups of samplers
-APART = 0.27  # where a scenario has two series: each point this far from its sampler's tick, the first to the left
-# (reader r41f: at 0.22 a filled point and its hollow twin of one sampler touched)
+GAP = 0.4  # the room between two scenarios' groups of samplers, beyond a sampler's own (reader r42f: the width it
+# took is the pairs' now)
+APART = 0.22  # where a scenario has two series: each point this far from its sampler's tick, the first to the left, so
+# a pair stands closer than two samplers' points (reader r42f: at 0.27 a hollow point touched the next sampler's)
+SIZE = 6.5  # points, a marker (a hollow triangle 2 more): a pair at :data:`APART` clears its twin (reader r42f)
 BELOW_1 = (0.7,)  # labelled on :func:`own_ratios`' axis, where savings lie, beside its 1-2-5 steps (r27f: no 0.8); the
 # tie band's edges on the right (:func:`band_edges`; r30f: "0.9" crowded the "1")
 NEAR_1 = 1.25  # :func:`means_grid`'s extra ticks this close to 1 are labelled on the right, away from the "1"
@@ -83,8 +86,9 @@ def own_ratios(
     sampler is written under it, each scenario under its samplers. ``slow``, where given, is a second series of the
     same form (any of the scenarios), drawn hollow beside the first; ``series`` names the two in the legend. ``edge``,
     where given, hatches the band from ``1 - edge`` to ``1 + edge`` round the tie band (:func:`edge_band`): a cost or
-    saving there lies in the noise band (review r30f, item 2); the edges of both bands are labelled outside the axes,
-    on the right (:func:`edge_labels`). ``width``: inches (a page's column may be wider than a chapter's)."""
+    saving there lies in the noise band (review r30f, item 2); its edges are labelled outside the axes, on the right
+    (:func:`edge_labels`; without it, the tie band's). The legend stands between the title and the axes. ``width``:
+    inches (a page's column may be wider than a chapter's)."""
     slow = {} if slow is None else slow
     fig = Figure(figsize=(width, 3.9))
     ax = fig.subplots()
@@ -108,12 +112,13 @@ def own_ratios(
     drawn = [v for table in (cells, slow) for by in table.values() for value in by.values() for v in value]
     _own_axis(ax, drawn, tie, [] if edge is None else [1 - edge, 1 + edge])
     ax.set_ylabel(Y_LABEL, fontsize=9)
-    ax.set_title(title, fontsize=10)
-    _legend_above(fig, ax, pairs)
+    _legend_under_title(fig, ax, pairs, title)
     words = _words(cells, title, tie, series[0] if slow else "")
     words += f" Hollow points beside them, {series[1]}. {_counts(slow, tie)}" if slow else ""
     words += f" Hatched round the tie band, {EDGE_WORDS.format(low=1 - edge, high=1 + edge)}." if edge else ""
-    words += " Both bands' edges are labelled on the right." if edge else " The band's edges are labelled on the right."
+    words += (
+        " The noise band's edges are labelled on the right." if edge else " The band's edges are labelled on the right."
+    )
     if not slow:
         return describe(fig, words, [_part(cells, title)])
     return describe(
@@ -133,13 +138,13 @@ def _sampler_axis(ax, cells: Cells, names: list[str], ticks: list[float], centre
     groups.set_xticks(centres, list(cells))
     groups.tick_params(length=0, pad=16, labelsize=10)
     ax.set_xlabel("sampler, by scenario", labelpad=16)  # under the scenarios' names
-    ax.set_xlim(-0.7, ticks[-1] + 0.9)  # reader r33f: the last hollow point clears the frame
+    ax.set_xlim(-0.55, ticks[-1] + 0.55)  # reader r33f: the last hollow point clears the frame
 
 
 def _own_axis(ax, drawn: list[float], tie: float, edges: list[float]) -> None:
     """:func:`own_ratios`' log axis over every ``drawn`` value, the tie band and the noise band's ``edges``, labelled at
-    its 1-2-5 steps and :data:`BELOW_1` on the left, the bands' edges on the right (:func:`edge_labels`; reader r39f:
-    on the left "1.18", "1" and "0.82" crowded)."""
+    its 1-2-5 steps and :data:`BELOW_1` on the left, the noise band's edges on the right (:func:`edge_labels`; reader
+    r39f: on the left "1.18", "1" and "0.82" crowded)."""
     ax.set_yscale("log")
     ax.set_ylim(min(*drawn, *edges, 1 - tie) / 1.15, max(*drawn, *edges, 1 + tie) * 1.15)
     log_ticks(ax)
@@ -148,25 +153,32 @@ def _own_axis(ax, drawn: list[float], tie: float, edges: list[float]) -> None:
     shown = sorted({round(s, 2) for s in every if low <= s <= high})
     ax.set_yticks(shown, [f"{s:g}" for s in shown])
     ax.yaxis.set_minor_locator(NullLocator())  # review r27f: an unlabelled tick under 0.7 read as a missing label
-    edge_labels(ax, sorted({1 - tie, 1 + tie, *edges}))  # reader r41f: the edges the verdicts turn on, on the right
+    # reader r41f: the edges a verdict turns on, on the right; reader r42f: 1.18 and 1.10 crowded there, so where the
+    # noise band is drawn only its edges are, the tie band's in the legend's words ("1.10 or more")
+    edge_labels(ax, sorted(edges) if edges else [1 - tie, 1 + tie])
 
 
-def _legend_above(fig: Figure, ax, pairs: dict) -> None:
-    """:func:`~toolkit.plots.timings.legend_above` for :func:`own_ratios`, each verdict's entry its ``pairs`` of
-    markers (filled and hollow, as the plot draws them) side by side."""
+def _legend_under_title(fig: Figure, ax, pairs: dict, title: str) -> None:
+    """:func:`own_ratios`' legend between its title and its axes (reader r42e, home figure 1: over the title it read as
+    a separate figure), each verdict's entry its ``pairs`` of markers (filled and hollow, as the plot draws them) side
+    by side; the title raised over it."""
     handles, labels = ax.get_legend_handles_labels()
     handles = [pairs.get(label, handle) for handle, label in zip(handles, labels)]
-    room = (0.1 + 0.2 * -(-len(labels) // 2)) / fig.get_figheight()
-    fig.legend(
+    legend = fig.legend(
         handles,
         labels,
-        loc="upper center",
+        loc="lower center",
+        bbox_to_anchor=(0.5, 1.0),
+        bbox_transform=blended_transform_factory(fig.transFigure, ax.transAxes),  # centred on the figure, as before
         ncol=2,
         fontsize=9,
         frameon=False,
+        borderaxespad=0.2,
         handler_map={tuple: HandlerTuple(ndivide=None, pad=0.6)},
     )
-    fig.tight_layout(rect=(0, 0, 1, 1 - room))
+    height = legend.get_window_extent().height * 72 / fig.dpi  # points
+    ax.set_title(title, fontsize=10, pad=height + 6)
+    fig.tight_layout()
 
 
 def _legend_entries(ax, series: tuple[str, str] | None, edge: tuple[float, float] | None = None) -> dict:
@@ -184,7 +196,7 @@ def _legend_entries(ax, series: tuple[str, str] | None, edge: tuple[float, float
                 [],
                 linestyle="none",
                 marker=look["marker"],
-                markersize=7 + 2 * (look["marker"] == "^" and hollow),
+                markersize=SIZE + 2 * (look["marker"] == "^" and hollow),
                 label=None if hollow else _read(reads),
                 **_fill(look["color"], hollow),
             )[0]
@@ -195,7 +207,7 @@ def _legend_entries(ax, series: tuple[str, str] | None, edge: tuple[float, float
         edge_band(ax, *edge)
     for hollow, name in zip((False, True), series or ()):
         label = f"{'hollow' if hollow else 'filled'}: {name}"
-        ax.plot([], [], linestyle="none", marker="o", markersize=7, label=label, **_fill(COLORS["ink"], hollow))
+        ax.plot([], [], linestyle="none", marker="o", markersize=SIZE, label=label, **_fill(COLORS["ink"], hollow))
     return pairs
 
 
@@ -223,7 +235,7 @@ def _points(ax, x: np.ndarray, by_sampler: Mapping[str, tuple[float, float, floa
             [median],
             linestyle="none",
             marker=look["marker"],
-            markersize=7 + 2 * (wide and hollow),
+            markersize=SIZE + 2 * (wide and hollow),
             zorder=3,
             **_fill(look["color"], hollow),
         )
