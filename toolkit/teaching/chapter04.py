@@ -224,7 +224,7 @@ def by_means(tables: Tables | None = None) -> str:
 def mark_line(tables: Tables | None = None) -> str:
     """The page's one mark, said once beside the answer figure: :data:`toolkit.teaching.costs.MARK` means inside the
     noise band of its statistic, and each band is built in the results page's words (r42d: one meaning, one rule)."""
-    bands = {**costs.floors(tables), "measured": costs._reach(tables, 4)}
+    bands = {**costs.floors(tables), "measured": costs.measured_reach(tables)}
 
     def band(kind: str) -> str:
         return f"{bands[kind][0]:.2f}–{bands[kind][1]:.2f}"

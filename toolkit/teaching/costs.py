@@ -201,6 +201,11 @@ def timing_reach(tables: Tables | None = None) -> float:
     return max(abs(v - 1) for v in _reach(tables, 4))
 
 
+def measured_reach(tables: Tables | None = None) -> tuple[float, float]:
+    """The lowest and highest median of each query's own ratio that timing one computation twice gave."""
+    return _reach(tables, 4)
+
+
 def noise_edge(tables: Tables | None = None) -> float:
     """How far from 1 the noise edge reaches: :data:`NOISE_EDGE` times :func:`timing_reach` (the results page's)."""
     return NOISE_EDGE * timing_reach(tables)
