@@ -458,7 +458,7 @@ LABELS = ("scenario", "sampler", "what grows", "value", "measured")  # the colum
 # a cell that gives a verdict, then its numbers: "costs time (median 2.24; middle half 1.29–3.50)", "costs time (2.13)"
 VERDICT = re.compile(
     r"(saves time|costs time|a tie|close: can't tell|about equal|can't tell|network cheaper|network dearer)"
-    r"(?:\\\*|\?)? \((.+)\)"
+    r"(?:\\\*|\?|†)? \((.+)\)"
 )
 
 
@@ -472,7 +472,7 @@ def verdicts(nb) -> dict[tuple[str, ...], str]:
         for row in rows:
             for j, cell in enumerate(row):
                 if (said := VERDICT.fullmatch(cell)) is not None:  # marked: no clear evidence, as "can't tell"
-                    marked = cell.startswith(said.group(1) + findings.NO_CLEAR)
+                    marked = cell.startswith((said.group(1) + findings.NO_CLEAR, said.group(1) + findings.ACROSS))
                     found[(header[0], *(row[k] for k in naming), header[j])] = (
                         findings.UNSURE if marked else said.group(1)
                     )
@@ -491,7 +491,7 @@ def _checked_verdicts(header: list[str], row: list[str], j: int, moved: bool = F
     numbers = [float(v) for v in re.findall(r"\d+(?:\.\d+)?", said.group(2))]
     shifts = (-0.005, 0.0, 0.005)
     if header[j].startswith(PLANNED):  # a planning table: the median's verdict, marked inside the noise band
-        marked = row[j].startswith(said.group(1) + findings.NO_CLEAR)
+        marked = row[j].startswith((said.group(1) + findings.NO_CLEAR, said.group(1) + findings.ACROSS))
         low, high = findings.noise_band()
         few = int(row[header.index("queries")]) < 2
         medians = {findings.time_verdict(max(numbers[0] + d, 1e-9)) for d in shifts}
@@ -535,7 +535,7 @@ def chapter_04(nb) -> list[str]:
     if re.search(r"\n {4}\S", printed):  # textwrap's continuation lines: a sentence wrapped before the page wraps it
         problems.append("04: pre-wrapped generated lines")
     throughput = {
-        row[0]: row[1] for header, rows in found if header[1:2] == ["cost, network / default exact"] for row in rows
+        row[0]: row[1] for header, rows in found if header[1:2] == ["cost, network / fast exact"] for row in rows
     }
     if set(throughput) != {"2DS", "3DC-7"} or not all(v.startswith(findings.DEARER) for v in throughput.values()):
         problems.append(f"04: the prose says a network call costs more than the default exact check: {throughput}")
@@ -762,7 +762,7 @@ def _paper_claim(nb, found: list[tuple[list[str], list[list[str]]]]) -> list[str
         rows[0][-1],
         *re.findall(r"[\d.]+", verdict.group(2)),
         "no clear evidence"
-        if moved or findings.NO_CLEAR in rows[0][2]
+        if moved or findings.NO_CLEAR in rows[0][2] or findings.ACROSS in rows[0][2]
         else words.get(verdict.group(1), verdict.group(1)),
         rows[0][-1],
     )
@@ -823,19 +823,21 @@ STATUS = re.compile(  # findings.claim_status: the paper's claim from the record
     r"(none|\d+) of the (\d+) scenario–sampler pairs"
 )
 ANSWER_NO = "**No.** With an accurate network"  # chapter04.answer's first words (reader r40d: two plain sentences)
-FAST_BULLET = re.compile(  # chapter04.answer: the median query with each checker, the paper's count (reader r40d)
-    r"\*\*(?:No|Rarely|In part)\.\*\* With an accurate network, prediction made Algorithm 1's median query faster in "
-    r"(?P<fast>none|\d+) of (?P<total>\d+) scenario–sampler cells against our fast exact checker \((?P<fast_costs>\d+) "
-    r"slower, (?P<fast_beyond>\d+) of them beyond the noise band; (?P<fast_ties>\d+) ties\), and in "
-    r"(?P<slow>none|\d+) of \d+ against python-fcl(?: \(\d+ of them inside the noise band\))?\. By mean times, "
-    r"Table 3's statistic, prediction saved time in (?P<means_fast>none|\d+) of \d+ cells with our fast checker and "
-    r"(?P<means_slow>none|\d+) of \d+ with python-fcl; Table 3 saves 10 % or more in (?P<papers>\d+) of \d+\."
+FAST_BULLET = re.compile(  # chapter04.answer: the median query with each checker, the paper's count (reader r42d)
+    r"\*\*(?:No|Rarely|In part)\.\*\* With an accurate network, Algorithm 1's median query with prediction, against "
+    r"our fast exact checker: (?P<fast>none|\d+) of (?P<total>\d+) scenario–sampler cells faster(?: \(\d+ beyond the "
+    r"noise band\))?, (?P<fast_ties>\d+) of \d+ tied, (?P<fast_costs>none|\d+) of \d+ slower(?: \((?P<fast_beyond>\d+) "
+    r"beyond the noise band\))?\. Against python-fcl: (?P<slow>none|\d+) of \d+ faster(?: \(\d+ beyond the noise "
+    r"band\))?, (?:never slower|\d+ of \d+ slower \(\d+ beyond the noise band\))\. By mean times, Table 3's statistic: "
+    r"(?P<means_fast>none|\d+) of \d+ faster(?: \(\d+ beyond the noise band\))? with our fast checker, "
+    r"(?P<means_slow>none|\d+) of \d+ faster(?: \(\d+ beyond the noise band\))? with python-fcl; Table 3 saves 10 % "
+    r"or more in (?P<papers>\d+) of \d+\."
 )
 MEANS_LINE = re.compile(  # chapter04.by_means, beside section 6's means figure (reader r40d: off the first screen)
     r"\*\*By mean times\*\*, the paper's statistic, prediction saved time in (?P<fast_means>none|\d+) cells with our "
     r"fast checker and (?P<slow_means>none|\d+) with python-fcl, [^.;]* beyond the noise band"
 )
-EDGE = "inside the noise band of its statistic: no clear evidence"  # chapter04.edge_line: what section 6's mark means
+EDGE = "inside the noise band of its statistic, so no clear evidence"  # chapter04.mark_line: what the mark means
 SLOW_ROW = re.compile(r"(.+), ours \(`strong`, python-fcl\), medians")  # section 6: the same network, python-fcl
 
 

@@ -380,7 +380,7 @@ def test_chapter_04_section_5_says_cant_tell_where_the_machines_speed_moved():
     name = "3DC-7, Algorithm 1 (prediction for samples; every edge exact) vs itself without"
     plain = findings.planning_table({name: {"BS": EAGER_RUN}})
     unsure = findings.planning_table({name: {"BS": EAGER_RUN}}, moved={name: 2.03})  # its row: marked \\*
-    assert findings.NO_CLEAR in unsure and findings.NO_CLEAR not in plain
+    assert findings.ACROSS in unsure and findings.ACROSS not in plain  # reader r42d: \\* means only the noise band
 
     def table(said: str, per_point: str) -> dict:  # section 5 with its table as the chapter prints it then
         nb = section_5(said, per_point)
@@ -508,7 +508,7 @@ def test_chapter_04_holds_the_answers_bullet_on_our_fast_checker_to_section_6():
     expected = _claim_expected()
     nb = chapter_04()
     first = nb["cells"][0]["outputs"][0]["data"]
-    first["text/markdown"] = first["text/markdown"].replace("faster in none of 16", "faster in 8 of 16", 1)
+    first["text/markdown"] = first["text/markdown"].replace("checker: none of 16", "checker: 8 of 16", 1)
     assert problems(CH04, nb) == [
         f"04: the first code cell's bullet on our fast checker says [('8', '16', '7', '9', '5', '3')]; section 6's: "
         f"{expected}"
@@ -522,14 +522,14 @@ def test_chapter_04_holds_the_answers_bullet_on_our_fast_checker_to_section_6():
     ]
     nb = chapter_04()  # reader r41d: the answer's one sentence by means, Table 3's statistic, is section 6's count
     first = nb["cells"][0]["outputs"][0]["data"]
-    first["text/markdown"] = first["text/markdown"].replace("saved time in 3 of 16", "saved time in 4 of 16", 1)
+    first["text/markdown"] = first["text/markdown"].replace("statistic: 3 of 16", "statistic: 4 of 16", 1)
     assert problems(CH04, nb) == [
         f"04: the first code cell's bullet on our fast checker says [('none', '16', '7', '9', '5', '4')]; section "
         f"6's: {expected}"
     ]
     nb = chapter_04()  # reader r36d: the costs are counted in the answer too, with those beyond the noise band
     first = nb["cells"][0]["outputs"][0]["data"]
-    first["text/markdown"] = first["text/markdown"].replace("(9 slower, 5 of them", "(5 slower, 3 of them")
+    first["text/markdown"] = first["text/markdown"].replace("9 of 16 slower (5 beyond", "5 of 16 slower (3 beyond")
     assert problems(CH04, nb) == [
         f"04: the first code cell's bullet on our fast checker says [('none', '16', '7', '5', '3', '3')]; section "
         f"6's: {expected}"
@@ -817,8 +817,11 @@ def test_a_second_table_in_one_output_is_read_apart_and_held_to_the_page_width()
         ([1.0, 1.05, 1.1], "1.05 (middle half 1.02–1.08), a tie: less than 10% from 1, neither saved nor cost."),
         (
             [0.8, 1.12, 1.3],
-            "1.12 (middle half 0.96–1.21), no clear evidence (\\*): inside the noise band, or its middle half reaches "
-            "across the tie band.",
+            "1.12 (middle half 0.96–1.21), no clear evidence (\\*): inside the noise band.",  # reader r42d: \\*
+        ),
+        (
+            [0.8, 1.3, 1.5],
+            "1.30 (middle half 1.05–1.40), no clear evidence (†): its middle half reaches across the tie band.",
         ),
     ],
 )

@@ -106,10 +106,12 @@ def test_planning_table_is_a_markdown_table_with_a_verdict_per_row():
     # reader r31d: where the same exact check's cost moved between the modes, the table says no clear evidence as the
     # sentence under it does, not a plain "costs time"; r37d: with the page's one mark, \*
     moved = findings.planning_table({"3DC-7": {"BS": row([0.1] * 3, [0.2] * 3)}}, moved={"3DC-7": 1.8, "2DS": None})
-    assert moved.splitlines()[2].startswith("| 3DC-7 | BS | costs time\\*<br>(median 2.00;")
+    assert moved.splitlines()[2].startswith("| 3DC-7 | BS | costs time†<br>(median 2.00;")  # r42d: \\* means one thing
     across = findings.planning_table({"2DS": {"OB": row([1.0] * 4, [0.8, 1.0, 1.24, 1.6])}}, planner="lazy PRM")
     assert across.splitlines()[0].startswith("| scenario (lazy PRM) | sampler |")
     assert across.splitlines()[2].startswith("| 2DS | OB | costs time\\*<br>(median 1.12; middle half 0.95–1.33)")
+    beyond = findings.planning_table({"2DS": {"OB": row([1.0] * 4, [0.9, 1.0, 1.4, 1.5])}})  # past the noise band
+    assert beyond.splitlines()[2].startswith("| 2DS | OB | costs time†<br>(median 1.20;")  # its middle half across
     assert findings.planning_table({"3DC-7": {"BS": row([0.1] * 3, [0.2] * 3)}}, moved={"3DC-7": None}) == "\n".join(
         lines[:3]
     )
@@ -276,7 +278,7 @@ def test_planning_sentence_says_cant_tell_where_the_same_exact_check_moved():
     assert ratio == pytest.approx(1.59)
     said = findings.planning_sentence("Algorithm 1", slower, moved=ratio)
     assert said.endswith(
-        "2.00 (middle half 2.00–2.00), no clear evidence (\\*): the connection stage took 1.59 times as long an edge "
+        "2.00 (middle half 2.00–2.00), no clear evidence (†): the connection stage took 1.59 times as long an edge "
         "point with prediction, so its time holds more than the exact checks of points (the line under the tables says "
         "what)."
     )

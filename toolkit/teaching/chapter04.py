@@ -1,6 +1,5 @@
-"""Chapter 04's tables of its own small runs (section 2's repairs, section 3's checks, section 5's counts), and the
-answer read from ``docs/results.md``: :func:`answer`, :func:`answer_figure` and :func:`mark_line` at the top,
-:func:`full_answer`, :func:`edge_line` and :func:`by_means` in section 6 (the page shows tables, not formatting)."""
+"""Chapter 04's tables of its own small runs (sections 2, 3 and 5), and the answer read from ``docs/results.md``:
+:func:`answer`, :func:`answer_figure`, :func:`mark_line` at the top; :func:`full_answer`, :func:`edge_line` in 6."""
 
 from __future__ import annotations
 
@@ -37,8 +36,7 @@ COUNTS = {  # what each mode checked, per query
 
 
 def success_table(tables: Mapping[str, Mapping[str, Mapping[str, Mapping]]]) -> str:
-    """``{scenario: {sampler: {"without" | "with": summary}}}`` (``compare_prediction``'s) as a five-column Markdown
-    table, and a line naming each sampler, scenario and mode whose success was below 100 %."""
+    """``compare_prediction``'s tables as one Markdown table, and a line naming each cell below 100 % success."""
     rows = [
         "| scenario | sampler | success<br>without / with | paths valid<br>without / with "
         "| rounds / repairs per query, with prediction (means) |",
@@ -63,8 +61,7 @@ def success_table(tables: Mapping[str, Mapping[str, Mapping[str, Mapping]]]) -> 
 
 
 def repairs_table(repairs: Mapping[tuple[int, str], int]) -> str:
-    """Section 2's repairs with prediction, ``{(query, sampler): repairs}``: a line (runs with none, the samplers with
-    the most and the fewest; review r30d), the Markdown table folded under it (reader r41d: length)."""
+    """Section 2's repairs with prediction, ``{(query, sampler): repairs}``: a line, the table folded under it."""
     queries = sorted({i for i, _ in repairs})
     rows = ["| query | " + " | ".join(PAPER_SAMPLERS) + " |", "| --- |" + " --- |" * len(PAPER_SAMPLERS)]
     rows += [f"| {i} | " + " | ".join(str(repairs[i, s]) for s in PAPER_SAMPLERS) + " |" for i in queries]
@@ -97,8 +94,7 @@ def audit(scenario, queries, models, seed: int = 0) -> dict[str, str]:
 def path_checks(
     tables: Mapping[str, Mapping[str, Mapping[str, Mapping]]], audited: Mapping[str, Mapping[str, str]]
 ) -> str:
-    """Section 3's fold (reader r36d: the audit made the page long): :func:`success_table` and the returned paths
-    with prediction that a fresh exact checker accepts at 10x finer resolution (``audited``: :func:`audit`'s)."""
+    """Section 3's fold: :func:`success_table` and the paths :func:`audit` accepts (``audited``)."""
     head = "| scenario | " + " | ".join(PAPER_SAMPLERS) + " |\n| --- |" + " ---: |" * len(PAPER_SAMPLERS)
     body = "\n".join(f"| {name} | " + " | ".join(c[s] for s in PAPER_SAMPLERS) + " |" for name, c in audited.items())
     return (
@@ -116,8 +112,7 @@ def path_checks(
 
 
 def counted(runs: Mapping[str, tuple[list[dict], dict]]) -> dict[str, list[dict]]:
-    """Each mode's per-query records of ``run_interleaved`` with ``samples_exact`` (nodes checked less the network's)
-    and ``other_s``: the total less the three stages (the workspace's encoding, with prediction, and set-up)."""
+    """``run_interleaved``'s records with ``samples_exact`` (nodes less the network's) and ``other_s`` (the rest)."""
     return {
         mode: [
             dict(
@@ -149,8 +144,7 @@ def _stage_ms(records: list[dict], key: str) -> str:
 
 
 def eager_tables(records: Mapping[str, list[dict]]) -> list[str]:
-    """Section 5's two tables under their titles: each stage's ms a query per mode, and what each mode checked per
-    query, medians (``records``: :func:`counted`'s), and a line on what the *other* row holds."""
+    """Section 5's two tables (``records``: :func:`counted`'s): each stage's ms a query, and what each mode checked."""
     modes = list(records)
     head = "| stage, ms a query | " + " | ".join(modes) + " |\n| --- |" + " ---: |" * len(modes)
     body = "\n".join(
@@ -161,10 +155,7 @@ def eager_tables(records: Mapping[str, list[dict]]) -> list[str]:
     counts_body = "\n".join(
         f"| {m} | " + " | ".join(_median_of(rs, k) for k in COUNTS) + " |" for m, rs in records.items()
     )
-    counted_title = (
-        "What each mode checked, per query (medians): the roadmap's nodes, the samples the exact checker and the "
-        "network decided, and the edge points the exact checker checked:"
-    )
+    counted_title = "What each mode checked, per query (medians):"
     return [stages + "\n\n" + other_line(records), f"{counted_title}\n\n{counts_head}\n{counts_body}"]
 
 
@@ -184,29 +175,33 @@ def other_line(records: Mapping[str, list[dict]]) -> str:
 
 
 def answer(tables: Tables | None = None) -> str:
-    """Chapter 04's answer from ``docs/results.md``: the median query with each checker (reader r40d, lift 1), then
-    one sentence like for like in Table 3's statistic, mean times, ours beside the paper's count (reader r41d)."""
+    """Chapter 04's answer from ``docs/results.md``: the median query with each checker, counted by the one rule of
+    every page ("9 of 16 slower (5 beyond the noise band)", r42d), then Table 3's statistic, mean times."""
     facts = checker_scope.slow_checker(tables)
     papers = sum(time_verdict(1 - saved) == SAVES for saved in facts.papers_totals)
     fast, slow = (costs.median_counts(preset, tables) for preset, _ in RUNS)
-    means = [costs.mean_verdicts(preset, tables)[SAVES] or "none" for preset, _ in RUNS]
+    means = [costs.mean_verdicts(preset, tables)[SAVES] for preset, _ in RUNS]
+    clear = [len(costs.clear_mean_savings(preset, tables)) for preset, _ in RUNS]
     total = len(facts.own)
     word = "No." if not fast[SAVES][0] else "Rarely." if 4 * fast[SAVES][0] <= total else "In part."
-    beyond = fast[COSTS][0] - fast[COSTS][1]
-    inside = f" ({slow[SAVES][1]} of them inside the noise band)" if slow[SAVES][1] else ""  # r41d, contradiction 3
+
+    def count(n: tuple[int, int] | tuple[int, int, int], what: str) -> str:  # (cells, inside the band[, beyond])
+        beyond = n[2] if len(n) > 2 else n[0] - n[1]
+        return f"{n[0] or 'none'} of {total} {what}" + f" ({beyond} beyond the noise band)" * bool(n[0])
+
+    slower = f", {count(slow[COSTS], 'slower')}" if slow[COSTS][0] else ", never slower"
     return (
-        f"**{word}** With an accurate network, prediction made Algorithm 1's median query faster in "
-        f"{fast[SAVES][0] or 'none'} of {total} scenario–sampler cells against our fast exact checker "
-        f"({fast[COSTS][0]} slower, {beyond} of them beyond the noise band; {fast[TIES][0]} ties), and in "
-        f"{slow[SAVES][0] or 'none'} of {total} against python-fcl{inside}. By mean times, Table 3's statistic, "
-        f"prediction saved time in {means[0]} of {total} cells with our fast checker and {means[1]} of {total} with "
-        f"python-fcl; Table 3 saves 10 % or more in {papers} of {total}."
+        f"**{word}** With an accurate network, Algorithm 1's median query with prediction, against our fast exact "
+        f"checker: {count(fast[SAVES], 'scenario–sampler cells faster')}, {fast[TIES][0]} of {total} tied, "
+        f"{count(fast[COSTS], 'slower')}. Against python-fcl: {count(slow[SAVES], 'faster')}{slower}. By mean times, "
+        f"Table 3's statistic: {count((means[0], 0, clear[0]), 'faster')} with our fast checker, "
+        f"{count((means[1], 0, clear[1]), 'faster')} with python-fcl; Table 3 saves 10 % or more in {papers} of "
+        f"{total}."
     )
 
 
 def by_means(tables: Tables | None = None) -> str:
-    """Section 6's line beside the means figure: both runs' savings by mean times, those beyond its noise band, and
-    why a mean can save where the median query did not (reader r40d)."""
+    """Section 6's line beside the means figure: both runs' savings by mean times, those beyond its noise band."""
     means = [costs.mean_verdicts(preset, tables)[SAVES] for preset, _ in RUNS]
     clear = list(dict.fromkeys(c for preset, _ in RUNS for c, _ in costs.clear_mean_savings(preset, tables)))
     own = {
@@ -227,42 +222,51 @@ def by_means(tables: Tables | None = None) -> str:
 
 
 def mark_line(tables: Tables | None = None) -> str:
-    """The page's one mark, said once beside the answer figure (reader r40d: one mark, one rule, every table):
-    :data:`toolkit.teaching.costs.MARK` on a saving or cost inside the noise band of its statistic, each band's
-    numbers (:func:`toolkit.teaching.costs.floors`, as the results page draws them)."""
-    bands = costs.floors(tables)
+    """The page's one mark, said once beside the answer figure: :data:`toolkit.teaching.costs.MARK` means inside the
+    noise band of its statistic, and each band is built in the results page's words (r42d: one meaning, one rule)."""
+    bands = {**costs.floors(tables), "measured": costs.measured_reach(tables)}
 
     def band(kind: str) -> str:
         return f"{bands[kind][0]:.2f}–{bands[kind][1]:.2f}"
 
     return (
-        f"{costs.MARK} on a verdict, in every table of this page, means inside the noise band of its statistic: no "
-        "clear evidence. The noise band (hatched) is how far timing one computation twice moved the statistic, "
-        f"doubled: {band('own')} for the median query, drawn here; {band('means')} for a ratio of mean times, drawn in "
-        "section 6: another statistic, so another band (`docs/results.md`)."
+        f"{costs.MARK} on a verdict means one thing on this page: inside the noise band of its statistic, so no clear "
+        "evidence († marks the other cautions of sections 3 and 5, named there). A noise band comes from timing one "
+        f"computation twice. For the median query, drawn here: {band('own')}, twice the reach "
+        f"timing alone gave it ({band('measured')}), doubled because a single repeat understates timing noise and as "
+        f"measured it would lie inside the tie band. For a ratio of mean times (section 6's figure) {band('means')} "
+        f"and for a ratio of medians {band('medians')}: the reach as measured, already past the tie band "
+        "(`docs/results.md`)."
     )
 
 
 def edge_line(tables: Tables | None = None) -> str:
-    """What to take from section 6's table, in one sentence (reader r40d: its one new fact): in the cells where the
-    paper's Table 3 saves time, how many of our median queries save, with each checker."""
-    rows = checker_scope.compact(tables)
+    """Section 6's one new fact: in the cells where Table 3 saves time, our median queries that save, with each
+    checker; python-fcl's named, and its savings in cells Table 3 does not save (reader r42d: 3 in the answer)."""
+    rows, bands = checker_scope.compact(tables), costs.floors(tables)["own"]
     papers = [(label.split(",")[0], s) for label, row in rows.items() if "paper" in label for s, r in row.items()]
     saved = [(n, s) for n, s in papers if time_verdict(rows[f"{n}, the paper's Table 3"][s]) == SAVES]
 
-    def ours(series: str) -> str:
-        return str(sum(time_verdict(rows[f"{n}, ours ({series}), medians"][s]) == SAVES for n, s in saved) or "none")
+    def ours(series: str, cells: list[tuple[str, str]]) -> list[str]:
+        r = {c: rows[f"{c[0]}, ours ({series}), medians"][c[1]] for c in cells}
+        return [f"{n} {s}{costs.MARK * (bands[0] < v)}" for (n, s), v in r.items() if time_verdict(v) == SAVES]
 
+    fast, fcl = ours("`strong` preset", saved), ours("`strong`, python-fcl", saved)
+    other = [c for c in ours("`strong`, python-fcl", papers) if c not in fcl]
+    named = ", ".join(fcl) + f"; {costs.MARK} inside the noise band" * any(costs.MARK in c for c in fcl)
+    many = len(other) > 1
+    named += f"; the {'other' if many else 'third'} python-fcl saving{'s' * many}, {', '.join(other)}, " * bool(other)
+    named += f"{'are cells' if many else 'is a cell'} Table 3 does not save" * bool(other)
     return (
         f"**Take from it:** in the {len(saved)} cells where the paper's Table 3 saves time, our median query saved in "
-        f"{ours('`strong` preset')} with our fast checker and in {ours('`strong`, python-fcl')} with python-fcl "
-        f"({costs.MARK} as at the top)."
+        f"{len(fast) or 'none'} with our fast checker and in {len(fcl) or 'none'} with python-fcl"
+        + f" ({named})" * bool(fcl)
+        + "."
     )
 
 
 def means_apart(tables: Tables | None = None) -> str:
-    """Of the pairs where the ratio of mean times saves, those where the median query did not save and those where it
-    did (review r32d: "while the median query did not save" was false for two of them)."""
+    """Of the pairs where the ratio of mean times saves, those where the median query did not save and did."""
     cells: dict[bool, dict[str, list[str]]] = {False: {}, True: {}}
     for preset, who in ((recorded.ALGORITHM_1, "fast checker"), (checker_scope.SLOW, "python-fcl")):
         medians = costs.middle_halves(preset, tables)
@@ -306,11 +310,9 @@ def full_answer(tables: Tables | None = None) -> str:
 
 
 def beyond_sampling(tables: Tables | None = None) -> str:
-    """Section 6 (review r31d, item 3): where a recorded saving is larger than the whole sampling stage, which is all
-    that skipping the samples' checks can save. The paper's own mean times (its §V text, the times behind Table 3):
-    the cells whose total saving exceeds all their sampling time without prediction, the largest two in different
-    scenarios, and how many of them save less than a query's time spreads (its standard deviation without); ours
-    with python-fcl on both sides: the savings larger than their sampling stage's, as shares of the mean query."""
+    """Section 6 (review r31d): where a recorded saving is larger than the whole sampling stage, all that skipping
+    the samples' checks can save: the paper's own mean times (§V), the largest two, how many its spread exceeds;
+    ours (:func:`_ours_beyond`)."""
     over = saved_beyond_sampling()  # the paper's cells: (seconds saved, seconds of sampling without, its spread)
     best = {key: max((c for c in over if c[0] == key), key=lambda c: over[c][0]) for key, _ in over}
     first, second = sorted(best.values(), key=lambda c: -over[c][0])[:2]
@@ -335,8 +337,7 @@ RUNS = ((recorded.ALGORITHM_1, "fast checker"), (checker_scope.SLOW, "python-fcl
 
 
 def _ours_beyond(tables: Tables | None = None) -> str:
-    """:func:`beyond_sampling`'s sentences on our two runs (:data:`RUNS`): the cells of :func:`over_sampling`, and of
-    them those where the median query did not save, where a few slow queries moved the mean (review r34d)."""
+    """:func:`beyond_sampling`'s sentences on our two runs (:data:`RUNS`), :func:`costs.over_sampling`'s cells."""
     runs = {who: costs.over_sampling(preset, tables) for preset, who in RUNS}
     count = sum(len(cells) for cells in runs.values())
     if not count:
@@ -377,8 +378,7 @@ SERIES = {  # the answer figure's legend, a line a series (reader r33d: five lin
 
 
 def answer_figure(tables: Tables | None = None, means: bool = False) -> Figure:
-    """The answer's evidence: our median query per cell with its middle half and band; with ``means`` (section 6;
-    reader r37d), the paper's Table 3 beside our ratios of mean times and their band (``answer_ratios``)."""
+    """Our median query per cell with its middle half and band; with ``means``, Table 3 beside our ratios of means."""
     rows = checker_scope.compact(tables)
     papers = {label: r for label, r in rows.items() if "the paper's" in label}
     return answer_ratios(

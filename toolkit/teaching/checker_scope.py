@@ -275,11 +275,9 @@ def _answers(tpr: float, tnr: float) -> str:
 
 def section_6(this_run: dict[str, float], tables: Tables | None = None, first: str = "") -> list[str]:
     """Chapter 04's section 6 as two Markdown blocks: the answer's table (:func:`compact`), then, folded in a
-    ``<details>`` box (review r24a: section 6 ran to 8 screens), ``first`` (the answer's counts in full sentences)
-    and the other tables from the recorded runs: against
-    Algorithm 1 by means, against the lazy PRM, the sampling stage inside Algorithm 1, what the `paper` preset's MLP
-    answers, and a network call's cost per configuration over the exact check's (``this_run``: {scenario: cost} of
-    the chapter's own section 4, beside the recorded runs')."""
+    ``<details>`` box (review r24a), ``first`` (the answer's counts in full sentences) and the other tables from
+    the recorded runs: against Algorithm 1 by means, against the lazy PRM, the sampling stage inside Algorithm 1,
+    the `paper` MLP's answers, a network call's cost over the exact check's (``this_run``: section 4's)."""
 
     def table(rows: dict[str, dict[str, float]], **how: bool) -> str:  # our verdicts inside timing's reach marked
         return costs.marked(findings.ratio_table(rows, **how), tables)
@@ -294,8 +292,9 @@ def section_6(this_run: dict[str, float], tables: Tables | None = None, first: s
         + table(_others(tables), counts=True, narrow=True)
         + f"\n\n{papers_longer_sentence()} {findings.table3_sentence()}",
         "**Against the lazy PRM.** Total time with / without prediction, 100 queries a scenario, our runs as "
-        "`docs/results.md` records them (the default exact checker of the day), by means and by the median query time "
-        'with prediction over the median without ("ratio of medians"):\n\n'
+        "`docs/results.md` records them (our fast exact checker as it was that day), by means and by the median query "
+        'time with prediction over the median without ("ratio of medians", noise band '
+        f"{'{:.2f}–{:.2f}'.format(*costs.floors(tables)['medians'])}, the reach as measured):\n\n"
         + table(against_lazy(tables), counts=True, narrow=True)
         + _lazy_means(tables),
         "**Sampling inside Algorithm 1.** The sampling stage's time with / without prediction, 100 queries a scenario: "
@@ -354,7 +353,7 @@ def _call_costs(this_run: dict[str, float], tables: Tables | None = None) -> str
         "this run (section 4)": this_run,
     }
     return (
-        "A network call's cost per configuration over the default exact check's (below 1 the network is the cheaper "
+        "A network call's cost per configuration over the fast exact check's (below 1 the network is the cheaper "
         "check; between 0.90 and 1.10, about equal): the recorded runs (`docs/results.md`'s throughput tables; "
         "the network's cost, and so this ratio, moves from run to run and machine to machine) and this run's section "
         "4:\n\n" + costs.call_cost_table(dearer, tie=findings.TIE)

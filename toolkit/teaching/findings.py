@@ -1,11 +1,9 @@
 """What a chapter prints from what it has just measured: small Markdown tables, a verdict word in each row.
 
 The chapters' prose states the verdict a student can repeat; the numbers behind it are computed here and shown as
-tables (``NOTEBOOKS.md``). A planning verdict is the median's of the per-query ratios (each query timed without and
-with prediction in turn), marked :data:`NO_CLEAR` (no clear evidence) inside the noise band of that statistic, as
-chapter 04's recorded tables mark theirs (reader r40d: one mark, one rule); a checker's cost timed in one round is
-read with a band of :data:`CLOSE` (the words and bands: :mod:`toolkit.util.verdicts`). A slow query that moves a
-mean is listed."""
+tables (``NOTEBOOKS.md``). A planning verdict is the median's of the per-query ratios, marked :data:`NO_CLEAR` inside
+the noise band, :data:`ACROSS` for the other cautions; a checker's cost is read with a band of :data:`CLOSE`
+(:mod:`toolkit.util.verdicts`). A slow query that moves a mean is listed."""
 
 from __future__ import annotations
 
@@ -42,8 +40,7 @@ CHANCE_BAND = 0.05  # a balanced accuracy this close to 50 % is "about a coin fl
 
 
 def noise_band() -> tuple[float, float]:
-    """The noise band of the median of each query's own ratio, as ``docs/results.md`` measures it
-    (:func:`toolkit.teaching.costs.floors`): a saving or cost inside it is no clear evidence."""
+    """The noise band of the median of each query's own ratio (:func:`toolkit.teaching.costs.floors`)."""
     from toolkit.teaching import costs  # here: costs reads the record, which only a planning verdict needs
 
     return costs.floors()["own"]
@@ -68,13 +65,9 @@ def planning_table(
     moved: Mapping[str, float | None] | None = None,
     planner: str = "",
 ) -> str:
-    """Markdown: per scenario and sampler of ``{scenario: compare_prediction table}``, the verdict with the per-query
-    ratios' median and middle half, then the median totals without and with prediction (the verdict comes first, so
-    that a narrow page shows it, on a line of its own above its named numbers: reader r18a); a scenario whose
-    :func:`speed_moved` ratio ``moved`` holds, and a row whose median saves or costs inside the noise band, give the
-    median's verdict marked :data:`NO_CLEAR` (reader r40d: one mark and one rule for "no clear evidence" on the page,
-    as section 6's recorded cells; :func:`planning_sentence` says it in words); ``planner`` names the planner in the
-    header, "with ÷ without" the ratio (reader r40d: beside the totals "without / with")."""
+    """Markdown: per scenario and sampler of ``{scenario: compare_prediction table}``, the verdict (first: reader
+    r18a) with the per-query ratios' median and middle half, marked by :func:`_mark` (``moved``: {scenario:
+    :func:`speed_moved`}), then the median totals without and with prediction; ``planner`` names the planner."""
     rows = [
         f"| scenario{f' ({planner})' if planner else ''} | sampler | with ÷ without: verdict (median; middle half) "
         "| median total, ms: without / with "
@@ -84,8 +77,8 @@ def planning_table(
     for name, table in tables.items():
         for sampler, row in table.items():
             median, q1, q3, said = planning_verdict(row, tie)
-            said = UNSURE if (moved or {}).get(name) is not None else said
-            said = f"{time_verdict(median, tie=tie)}{NO_CLEAR}" if said == UNSURE else said
+            mark = _mark(median, said, (moved or {}).get(name) is not None, tie)
+            said = f"{time_verdict(median, tie=tie)}{mark}" if mark else said
             without, with_ = (_ms(row[mode]["total_s_median"]) for mode in ("without", "with"))
             rows.append(
                 f"| {name} | {sampler} | {said}<br>(median {median:.2f}; middle half {q1:.2f}–{q3:.2f}) "
@@ -94,35 +87,44 @@ def planning_table(
     return "\n".join(rows)
 
 
-NO_CLEAR = r"\*"  # after a live verdict: inside the noise band, no clear evidence (r40d: section 6's mark too)
+NO_CLEAR = r"\*"  # after a verdict: inside the noise band of its statistic, no clear evidence; that only (r42d)
+ACROSS = "†"  # after a live verdict: its middle half reaches across the tie band, or an edge point's time moved (r42d)
 SAID = {  # a planning verdict at the end of a sentence (its band filled in)
     SAVES: "prediction saved time",
     COSTS: "prediction cost time",
     TIES: "a tie: less than {band} from 1, neither saved nor cost",
-    UNSURE: "no clear evidence (\\*): inside the noise band, or its middle half reaches across the tie band",
+    NO_CLEAR: "no clear evidence (\\*): inside the noise band",
+    ACROSS: "no clear evidence (†): its middle half reaches across the tie band",
 }
 
 
+def _mark(median: float, said: str, moved: bool, tie: float = TIE) -> str:
+    """A live verdict's mark (r42d: \\* means one thing): :data:`NO_CLEAR` inside the noise band, :data:`ACROSS` where
+    ``moved`` or its middle half (or too few queries) made it :data:`UNSURE`, else none."""
+    low, high = noise_band()
+    inside = low < median < high and time_verdict(median, tie=tie) != TIES
+    return "" if said != UNSURE and not moved else NO_CLEAR if inside and not moved else ACROSS
+
+
 SPEED_MOVED = (  # a planning sentence's verdict where the same exact check's cost moved between the modes (review r25a)
-    "no clear evidence (\\*): the connection stage took {ratio:.2f} times as long an edge point with prediction, so "
+    "no clear evidence (†): the connection stage took {ratio:.2f} times as long an edge point with prediction, so "
     "its time holds more than the exact checks of points (the line under the tables says what)"
 )
 
 
 def speed_moved(per_point: Mapping[str, float], tie: float = TIE) -> float | None:
     """The time per exact edge point with / without prediction, ``{"without": s, "with": s}``, where it lies outside
-    the tie band (the connection stage's mix of work per point differs, :func:`per_point_sentence`; reader
-    r33d: interleaved turns share a slow spell, so a steady ratio need not be the machine), else ``None``."""
+    the tie band (the stage's mix of work per point differs, :func:`per_point_sentence`), else ``None``."""
     ratio = per_point["with"] / per_point["without"]
     return None if time_verdict(ratio, tie=tie) == TIES else ratio
 
 
 def planning_sentence(what: str, row: Mapping[str, Mapping], tie: float = TIE, moved: float | None = None) -> str:
-    """One sentence a chapter can print where it states its answer: ``what`` was timed, over how many queries, the
-    per-query ratios' median and middle half, and the verdict of :func:`planning_verdict` in words, the table's; with
-    ``moved`` (:func:`speed_moved`), "no clear evidence": the same exact check cost more or less in one mode (r25a)."""
+    """One sentence: ``what`` was timed, over how many queries, the per-query ratios' median and middle half, and the
+    table's verdict in words; with ``moved`` (:func:`speed_moved`), "no clear evidence" (†)."""
     median, q1, q3, said = planning_verdict(row, tie)
     n = row["without"]["n_queries"]
+    said = _mark(median, said, False, tie) or said if moved is None else said
     verdict = SAID[said].format(band=f"{tie:.0%}") if moved is None else SPEED_MOVED.format(ratio=moved)
     return (
         f"{what}, {n} {'query' if n == 1 else 'queries'}: time with / without prediction {median:.2f} (middle half "
@@ -331,9 +333,8 @@ def describe_accuracy(label: str, scores: Mapping[str, float], always_valid: flo
     to everything on the same samples, then its balanced accuracy, (TPR + TNR) / 2, next to a coin flip: 50 % whatever
     the share of valid samples. Both comparisons say "about" within :data:`CHANCE_BAND` (on balanced samples "always
     valid" scores 50 % too, and one model cannot be above the one and about the other); worse than chance only below
-    that band. Plain accuracy below "always valid" is not below chance:
-    on samples mostly valid, a model that rejects most of them is often wrong, yet may tell the two kinds apart a
-    little (review r16b: 38 % on samples 86 % valid, balanced accuracy 54 %)."""
+    that band. Plain accuracy below "always valid" is not below chance (review r16b: 38 % on samples 86 % valid,
+    balanced accuracy 54 %)."""
     balanced = (scores["tpr"] + scores["tnr"]) / 2
     mine, theirs, even = round(100 * scores["acc"]), round(100 * always_valid), round(100 * balanced)
     side, chance = (_beside(difference) for difference in (mine - theirs, even - 50))
@@ -388,8 +389,7 @@ def table3_sentence() -> str:
 
 
 def slow_fold(tables: Mapping[str, Mapping[str, Mapping]], segments: str) -> str:
-    """Chapter 04's fold under section 3's table (reader r36d: its code filled a screen): :func:`outlier_table` and
-    ``segments``, the stage bars segment by segment (``toolkit.plots.timings.segment_table``)."""
+    """Chapter 04's fold under section 3's table: :func:`outlier_table` and ``segments``, the stage bars' segments."""
     slow = outlier_table(tables)
     return (
         "<details><summary>Queries so slow that they move a mean; the bars' segments in ms</summary>\n\n"
