@@ -669,13 +669,12 @@ def test_a_path_frame_dots_its_p_valid_ticks_a_dip_and_the_nodes_and_draws_no_ma
     (dot,) = [h for h in panels[-1].get_lines() if h.get_gid() == "frame value"]
     assert (dot.get_xdata()[0], dot.get_ydata()[0]) == (along[FRAMES // 2], 0.9)
     (dip,) = [h for h in panels[-1].get_lines() if h.get_gid() == "dip"]
-    assert dip.get_xdata()[0] == along[FRAMES // 2 - 1] and f"frame {FRAMES // 2 - 1}" in [
-        t.get_text() for t in panels[-1].texts
-    ]
+    said = f"frame {FRAMES // 2 - 1}\n0.550 ≥ 0.500\ncalled valid"  # reader r42e: the ring's verdict, not hidden
+    assert dip.get_xdata()[0] == along[FRAMES // 2 - 1] and said in [t.get_text() for t in panels[-1].texts]
     # reader r40e, 05 contradiction 2: the dip's mark sits on its value, small, and its label above it, so neither
     # crosses a threshold just under the dip
     assert dip.get_ydata()[0] == 0.55 and dip.get_marker() == "o" and dip.get_markersize() <= 5
-    (label,) = [t for t in panels[-1].texts if t.get_text() == f"frame {FRAMES // 2 - 1}"]
+    (label,) = [t for t in panels[-1].texts if t.get_text() == said]
     assert label.get_va() == "bottom" and label.get_position()[1] > 0
     assert path_marks.dip_beside(probability, FRAMES // 2 - 3) is None and "roadmap nodes" in panels[-1].get_xlabel()
 
