@@ -669,12 +669,27 @@ def test_a_path_frame_dots_its_p_valid_ticks_a_dip_and_the_nodes_and_draws_no_ma
     (dot,) = [h for h in panels[-1].get_lines() if h.get_gid() == "frame value"]
     assert (dot.get_xdata()[0], dot.get_ydata()[0]) == (along[FRAMES // 2], 0.9)
     (dip,) = [h for h in panels[-1].get_lines() if h.get_gid() == "dip"]
-    assert dip.get_xdata()[0] == along[FRAMES // 2 - 1] and f"frame {FRAMES // 2 - 1}" in [
-        t.get_text() for t in panels[-1].texts
-    ]
+    said = f"frame {FRAMES // 2 - 1}\n0.550 ≥ 0.500\ncalled valid"  # reader r42e: the ring's verdict, not hidden
+    assert dip.get_xdata()[0] == along[FRAMES // 2 - 1] and said in [t.get_text() for t in panels[-1].texts]
     # reader r40e, 05 contradiction 2: the dip's mark sits on its value, small, and its label above it, so neither
     # crosses a threshold just under the dip
     assert dip.get_ydata()[0] == 0.55 and dip.get_marker() == "o" and dip.get_markersize() <= 5
-    (label,) = [t for t in panels[-1].texts if t.get_text() == f"frame {FRAMES // 2 - 1}"]
+    (label,) = [t for t in panels[-1].texts if t.get_text() == said]
     assert label.get_va() == "bottom" and label.get_position()[1] > 0
     assert path_marks.dip_beside(probability, FRAMES // 2 - 3) is None and "roadmap nodes" in panels[-1].get_xlabel()
+
+
+def test_a_close_ups_marks_over_the_robot_are_found_in_the_box_as_drawn(crossing):
+    """Reader r42e: a diamond stood on a valid robot's link. The marks were measured in the panel's own (wide) shape,
+    before mplot3d squares it, so their pixels were stretched; now in the box as drawn, the panel left as it was."""
+    robot, workspace, _, path, _ = crossing
+    fig = Figure(figsize=(6.1, 3.0))
+    ax = fig.add_subplot(projection="3d")
+    still_panels.close_up(ax, robot, path[0], workspace, color=VALID_COLOR, margin=0.5)
+    offsets = np.stack(np.meshgrid(*[np.linspace(-0.3, 0.3, 9)] * 3), axis=-1).reshape(-1, 3)  # (729, 3)
+    points = path[0][:3] + offsets  # (729, 3) round the robot's base
+    panel = ax.get_position(original=True).bounds
+    over = still_panels.over_robot(ax, robot, path[0], points)
+    assert ax.get_position(original=True).bounds == panel and over.any() and not over.all()
+    FigureCanvasAgg(fig).draw()  # as the page draws it: the box squared
+    assert np.array_equal(over, still_panels.over_robot(ax, robot, path[0], points))

@@ -89,7 +89,8 @@ def _tick_nodes(panels: list, nodes: np.ndarray) -> None:
 
 
 def _mark_probability(ax, p: np.ndarray, index: int) -> None:
-    """A dot at frame ``index``'s P(valid) ``p (T,)``, and a small ring on a dip beside it, labelled above it."""
+    """A dot at frame ``index``'s P(valid) ``p (T,)``, and a small ring on a dip beside it, labelled above it with its
+    P(valid) against the panel's threshold line and what the model calls it there."""
     along = np.linspace(0.0, 1.0, len(p))
     dot = dict(marker="o", markersize=7, color=COLORS["occupied"], markeredgecolor=COLORS["ink"], linestyle="None")
     ax.plot(along[index], p[index], gid="frame value", zorder=5, **dot)
@@ -101,8 +102,11 @@ def _mark_probability(ax, p: np.ndarray, index: int) -> None:
     ring = dict(marker="o", markersize=5, markerfacecolor=COLORS["free"], markeredgecolor=COLORS["ink"])
     ax.plot(along[j], p[j], gid="dip", zorder=5, linestyle="None", markeredgewidth=1.2, **ring)
     before = j < index
+    cut = [h.get_ydata()[0] for h in ax.get_lines() if h.get_gid() == "threshold"]  # reader r42e: the ring sat on the
+    said = "" if not cut else f"\n{p[j]:.3f} {'≥' if p[j] >= cut[0] else '<'} {cut[0]:.3f}"  # line; its verdict, said
+    called = "" if not cut else f"\ncalled {'valid' if p[j] >= cut[0] else 'colliding'}"
     ax.annotate(
-        f"frame {j}",
+        f"frame {j}{said}{called}",
         (along[j], p[j]),
         xytext=(-10 if before else 10, 8),
         textcoords="offset points",

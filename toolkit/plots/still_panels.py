@@ -369,13 +369,15 @@ CONSERVATIVE_ENTRY = "circle in a sparkle: model wrong, conservative"  # valid, 
 SHADOW_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=1.2, linestyle=":")  # the path's shadow on the floor
 DROP_LABEL = "the robot's base, straight down to the floor"  # reader r29e: no sample has one
 DROP_STYLE = dict(color=COLORS["ink"], alpha=0.6, linewidth=0.9, linestyle="-.")  # a base, straight down: r31e
-OVER = 6.0  # pixels: a close-up's mark nearer than this to a link's picture is left out (about half a mark)
+OVER = 10.0  # pixels: a close-up's mark this near a link's picture is left out (r42e: a diamond reaches 7, an edge 1)
 
 
 def over_robot(ax, robot: BoxRobot, q: np.ndarray, points: np.ndarray) -> np.ndarray:
     """``(N,)`` bool: which ``points (N, 3)`` the 3D axes, its view and window set, pictures within :data:`OVER`
     pixels of a link of the robot at ``q (dof,)``, in front of it or behind (reader r20c: a diamond half behind a
     bar read as part of the robot); a close-up leaves them out, as the 3D views do."""
+    panel = ax.get_position(original=True)  # reader r42e: measured in the box as drawn, square, then the panel back
+    ax.apply_aspect()  # (the panel's own shape stretched the pixels: a diamond on a link was not found)
     proj = ax.get_proj()
 
     def on_screen(p: np.ndarray) -> np.ndarray:  # (n, 3) -> (n, 2) display pixels
@@ -388,7 +390,8 @@ def over_robot(ax, robot: BoxRobot, q: np.ndarray, points: np.ndarray) -> np.nda
     for c, r, h in zip(centers[0], rotations[0], half):
         link = Path(outline(on_screen(box_corners(c, r, h)), (0, 1)))  # the link's picture, a convex polygon
         over |= link.contains_points(marks, radius=OVER) | link.contains_points(marks, radius=-OVER)  # grown: the sign
-    return over  # of the radius that grows a polygon depends on its orientation, so both
+    ax.set_position(panel, which="active")  # of the radius that grows a polygon depends on its orientation, so both
+    return over
 
 
 def inside_mask(ax, points: np.ndarray) -> np.ndarray:

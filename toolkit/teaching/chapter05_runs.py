@@ -228,9 +228,8 @@ def paper_share() -> str:
         '<details><summary>Which "unseen" test did the paper score?</summary>\n\n'
         'It says only (§IV-A) that it generates "2000 samples for each 3D office-like workspace, and 400 samples for '
         'each 3D clutter workspace" "regardless of their validity", and "This is evaluated as unseen scenarios". '
-        "Section 1's fold \"Why 2000, and how we read the paper's 400 in clutter\" reads that as the set Table 2 "
-        "scores, uniform samples; the paper's own numbers speak against it: "
-        "Table 2's three numbers fix the valid share of its test set.\n\n"
+        "Section 1's fold reads those 400 as the planner's uniform samples; Table 2 probably scored another set, "
+        "since its three numbers fix the valid share of its test set.\n\n"
         f"The paper's row: {paper['acc']:.0%} = {paper['tpr']:.0%} × share + {paper['tnr']:.0%} × (1 − share) gives a "
         f"valid share of about {implied:.0%}. On uniform samples in the recipe's unseen workspaces, "
         f"{uniform:.0%} valid, "
