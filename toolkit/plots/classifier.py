@@ -36,8 +36,8 @@ from toolkit.learning import metrics
 from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
-from toolkit.plots.cell_marks import depth_inside, draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
-from toolkit.plots.mark_sides import fit_on_side, keep_on_side, labels_clear_of, marks_counted, on_side
+from toolkit.plots.cell_marks import draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
+from toolkit.plots.mark_sides import fit_on_cells, labels_clear_of, marks_counted, on_cells, place_on_cells
 from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import dof_label
 from toolkit.plots.slices import CSpaceSlice
@@ -86,20 +86,19 @@ def probability_maps(
         bar.ax.axhline(t, linewidth=2.5, **{**CUT_LINE, "path_effects": halo(2.5, ("ink",))})
         said.append(f"{name}, threshold {t:.2f}: " + answers.answers_in_words(np.asarray(probability) >= t, valid))
         parts.append(answers.map_in_regions(name, said[-1], probability, valid, grid, t))
-    blocks = fit_on_side(fig, grid)  # laid out: each kind's marks one per k x k cells holding any, on their side
+    blocks = fit_on_cells(fig, grid)  # laid out: each kind's marks one per k x k cells holding any, on one of them
     k = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
     for ax, (name, probability), t in zip(axes, probabilities.items(), cut.values()):  # the marks counted (r34c)
         tiles = marks_counted(confusion_counts(np.asarray(probability) >= t, valid), ax, k)
         ax.set_title(f"{name}: P(valid), threshold {t:.2f}, {tiles}", fontsize=10)  # r36c: "64% of the map wrong"
     _legend(fig, _mistake_handles(k))  # under the maps, read after them (r37c: above, a screen from the maps)
-    keep_on_side(fig, grid)  # again, the maps as the legend left them (r34c: fitted before, marks met the outlines)
+    place_on_cells(fig, grid, blocks)  # again, the maps as the legend left them (r34c)
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
     text += "configurations; grey, 0 black to 1 white; wrong cells tinted, free ones rejected sky blue, obstacle cells "
     text += "kept vermillion) with the true C-obstacles outlined and hatched, the threshold's "
     text += f"contour dotted, dangerous mistakes as squares{_per_block(k[3])} and conservative ones as circles"
     rule = f"a square per {k[3]} x {k[3]}-cell tile holding dangerous cells, a circle per {k[1]} x {k[1]}-cell tile "
-    rule += "holding conservative ones, each moved up to a few cells into its side of the outline, onto the outline "
-    rule += "where that side is too thin: a mark shows its tile, not the exact cell"  # r40c: from the prose to here
+    rule += "holding conservative ones, each drawn on one of its tile's mistake cells (the one nearest their centroid)"
     return describe(fig, text + f"{_per_block(k[1])}. " + "; ".join(said) + ".", [Part("marks", rule), *parts])
 
 
@@ -208,7 +207,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
         for code, cell in enumerate(cells)
     ]
     boundary = Line2D([], [], color=BOUNDARY, path_effects=halo(1.2))
-    blocks = fit_on_side(fig, grid)  # the mistakes' marks as large as one sees, the circles sparse, on their side
+    blocks = fit_on_cells(fig, grid)  # the mistakes' marks as large as one sees, the circles sparse, on their cells
     per = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
     block = {code: f" (one per {k} x {k} cells holding any)" if k > 1 else "" for code, k in per.items()}
     per_block = f"\nsquares 1 per {per[3]} x {per[3]}-cell tile, circles 1 per {per[1]} x {per[1]}"  # marks < mistakes
@@ -218,10 +217,10 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     labels = ["true C-obstacle boundary", ANSWERS[0], f"{ANSWERS[1]}: conservative\nmistake (circles)", ANSWERS[2]]
     labels.append("invalid kept: dangerous\nmistake (squares)")  # r39c: section 1's table's names
     fig.legend([boundary, *handles], labels, loc="outside lower center", ncols=3, fontsize=8, frameon=False)
-    keep_on_side(fig, grid)  # again, the map as its title and legend left it (r34c)
+    place_on_cells(fig, grid, blocks)  # again, the map as its title and legend left it (r34c)
     text = f"{title + ': ' if title else ''}the model's decision at threshold {threshold:.2f} over {grid.names[0]} and "
-    text += f"{grid.names[1]}, each cell by its kind of answer, over the boundary; the mistakes marked near their "
-    text += f"cells, on their side of it: dangerous ones with squares{block[3]} and conservative ones with sparse "
+    text += f"{grid.names[1]}, each cell by its kind of answer, over the boundary; the mistakes marked on their "
+    text += f"cells: dangerous ones with squares{block[3]} and conservative ones with sparse "
     text += f"circles{block[1]}; their counts, and the ROC curve. "
     text += f"{answers.answers_in_words(predicted, valid)}; {roc}."
     cut, fpr, tpr = roc_points(probability, valid, np.linspace(0.0, 1.0, 11))  # (11,) each
@@ -267,14 +266,11 @@ def _cells(grid: CSpaceSlice) -> dict[str, Any]:
 
 
 def _draw_mistakes(ax, grid: CSpaceSlice, codes) -> None:
-    """Every map's mistakes alike: circles, then squares over them, one per block of ``BLOCKS`` a side, each on its
-    block's cell deepest inside its side of the outline (r30c), then moved wholly onto that side (r32c: fit_on_side)."""
-    valid = codes <= 1  # (nx, ny) the truth: valid kept or rejected
+    """Every map's mistakes alike: circles, then squares over them, one per block of ``BLOCKS`` a side, each on one of
+    its block's mistakes of its kind (r42c: moved towards the truth's side, squares sat where the model rejects)."""
     for code in MISTAKE_MARKERS:
-        side = valid if code == 1 else ~valid  # squares inside the C-obstacle, circles outside it
         style: dict[str, Any] = dict(pitch=PITCH[code], blocks=BLOCKS[code], label=ANSWERS[code], zorder=ZORDER[code])
-        marks = draw_cell_marks(ax, grid, codes == code, depth=depth_inside(side), **style, **_mistake_mark(code))
-        on_side(marks, side)
+        on_cells(draw_cell_marks(ax, grid, codes == code, **style, **_mistake_mark(code)), codes == code)
 
 
 def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tuple[int, int], edges=None) -> None:
@@ -358,7 +354,7 @@ def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
 def _mistake_handles(blocks: Mapping[int, int]) -> list:
     """The P(valid) maps' legend: the threshold's line, and each mistake's mark, said to be one (``blocks[code]`` 1) or
     one per ``k x k`` cells holding any (review r18b: the conservative circles along the blocks read as a border)."""
-    cut = Line2D([], [], linestyle=":", linewidth=CUT_MAP, **CUT_LINE)
+    cut = Line2D([], [], linestyle=":", linewidth=CUT, **{**CUT_LINE, "path_effects": halo(CUT, ("ink",))})  # r42c:
     per = {code: f"\none per {k} x {k}-cell tile holding any" if k > 1 else "" for code, k in blocks.items()}
     return [
         (cut, "P(valid) = threshold (white dots):\nthe lighter side is kept"),
@@ -377,7 +373,7 @@ def _legend(fig: Figure, handles: list) -> None:
     pairs = [(boundary, "true C-obstacle (outlined, hatched)"), *handles]
     ncols = len(pairs) if fig.get_figwidth() >= 9 else 2
     where = "outside lower center"
-    fig.legend(*zip(*pairs), loc=where, ncols=ncols, fontsize=9, frameon=False)  # type: ignore[call-overload]
+    fig.legend(*zip(*pairs), loc=where, ncols=ncols, fontsize=9, frameon=False, handlelength=3)  # type: ignore[call-overload]
 
 
 BAR_NAMES = ("valid\nkept", "conservative\nmistake", "invalid\nrejected", "dangerous\nmistake")  # section 1's (r39c)
