@@ -237,14 +237,18 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
 
 
 def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float, *, mistakes=True, cut=CUT_MAP):
-    """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary, the threshold's contour dotted ``cut`` points
+    """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary, the threshold's line (on the cells' edges
+    between those kept and rejected, as the boundary: r42c, interpolated it ran outside it) dotted ``cut`` points
     wide (:data:`CUT_MAP`: under the boundary and wider, both show where they meet; the path map's over it) and, with
     ``mistakes``, dangerous cells as squares and conservative ones as circles, sparse enough that the grey between
     them is P(valid) (review r18b: a hatch of dots over the `paper` map's rejected free space hid its grey)."""
     probability = _on_grid(probability, grid, "probability")
     image = ax.imshow(probability.T, cmap=GREY_CMAP, vmin=0, vmax=1, **_cells(grid))
     if probability.min() < threshold <= probability.max():
-        line = ax.contour(*grid.axes, probability.T, levels=[threshold], colors=COLORS["free"], linestyles=":")
+        kept = probability >= threshold  # r42c: drawn between the cells kept and rejected, as the outlines are drawn
+        line = draw_cell_outline(
+            ax, grid, kept, colors=COLORS["free"], linestyles=":"
+        )  # (interpolated, it ran outside)
         line.set_linewidth(cut)
         line.set_path_effects(halo(cut, ("ink",)))  # a black ring: it shows on the light side too
         line.set_zorder(1.9 if cut >= CUT_MAP else 2.5)  # a map's wide line under the boundary (2), the path map's over
