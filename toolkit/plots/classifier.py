@@ -29,6 +29,7 @@ import numpy as np
 from matplotlib.collections import LineCollection
 from matplotlib.colors import ListedColormap, to_rgb
 from matplotlib.figure import Figure
+from matplotlib.legend_handler import HandlerLine2D
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
@@ -93,17 +94,14 @@ def probability_maps(
         ax.set_title(f"{name}: P(valid), threshold {t:.2f}, {tiles}", fontsize=10)  # r36c: "64% of the map wrong"
     _legend(fig, _mistake_handles(k))  # under the maps, read after them (r37c: above, a screen from the maps)
     place_on_cells(fig, grid, blocks)  # again, the maps as the legend left them (r34c)
+    per = {code: f" (one per {n} x {n} cells holding any)" if n > 1 else "" for code, n in k.items()}
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
     text += "configurations; grey, 0 black to 1 white; wrong cells tinted, free ones rejected sky blue, obstacle cells "
     text += "kept vermillion) with the true C-obstacles outlined and hatched, the threshold's "
-    text += f"contour dotted, dangerous mistakes as squares{_per_block(k[3])} and conservative ones as circles"
+    text += f"contour dotted, dangerous mistakes as squares{per[3]} and conservative ones as circles"
     rule = f"a square per {k[3]} x {k[3]}-cell tile holding dangerous cells, a circle per {k[1]} x {k[1]}-cell tile "
     rule += "holding conservative ones, each drawn on one of its tile's mistake cells (the one nearest their centroid)"
-    return describe(fig, text + f"{_per_block(k[1])}. " + "; ".join(said) + ".", [Part("marks", rule), *parts])
-
-
-def _per_block(k: int) -> str:
-    return f" (one per {k} x {k} cells holding any)" if k > 1 else ""
+    return describe(fig, text + f"{per[1]}. " + "; ".join(said) + ".", [Part("marks", rule), *parts])
 
 
 def path_map(
@@ -358,7 +356,8 @@ def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
 def _mistake_handles(blocks: Mapping[int, int]) -> list:
     """The P(valid) maps' legend: the threshold's line, and each mistake's mark, said to be one (``blocks[code]`` 1) or
     one per ``k x k`` cells holding any (review r18b: the conservative circles along the blocks read as a border)."""
-    cut = Line2D([], [], linestyle=":", linewidth=CUT, **{**CUT_LINE, "path_effects": halo(CUT, ("ink",))})  # r42c:
+    cut = Line2D([], [], linestyle="", marker="s", markersize=3.5, color=COLORS["free"], gid="dots")  # r42c: dotted
+    cut.set_markeredgecolor(COLORS["ink"])  # line ringed, shrunk to a legend's handle, read as brackets: ringed dots
     per = {code: f"\none per {k} x {k}-cell tile holding any" if k > 1 else "" for code, k in blocks.items()}
     return [
         (cut, "P(valid) = threshold (white dots):\nthe lighter side is kept"),
@@ -376,8 +375,8 @@ def _legend(fig: Figure, handles: list) -> None:
     boundary = Patch(facecolor=COLORS["occupied"], edgecolor=BOUNDARY, hatch="//", hatchcolor=HATCH, linewidth=1.5)
     pairs = [(boundary, "true C-obstacle (outlined, hatched)"), *handles]
     ncols = len(pairs) if fig.get_figwidth() >= 9 else 2
-    where = "outside lower center"
-    fig.legend(*zip(*pairs), loc=where, ncols=ncols, fontsize=9, frameon=False, handlelength=3)  # type: ignore[call-overload]
+    dots = {h: HandlerLine2D(numpoints=3) for h, _ in pairs if h.get_gid() == "dots"}  # the threshold's (r42c)
+    fig.legend(*zip(*pairs), loc="outside lower center", ncols=ncols, fontsize=9, frameon=False, handler_map=dots)
 
 
 BAR_NAMES = ("valid\nkept", "conservative\nmistake", "invalid\nrejected", "dangerous\nmistake")  # section 1's (r39c)
