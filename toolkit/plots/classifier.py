@@ -56,7 +56,6 @@ PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conse
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
 HATCH = COLORS["c_obstacle"]  # the C-obstacles' hatch on a P(valid) map: light, seen on its black and its greys
 TINT = {1: 0.25, 3: 0.6}  # wrong cells tinted in their colour: conservative light, its grey read (r41c: 0.5 hid it)
-CUT_LINE: dict[str, Any] = dict(color=COLORS["free"], path_effects=halo(CUT_MAP, ("ink",)))  # r41c: white dots
 BLOCKS = {1: 5, 3: 10}  # tiles a side on every map: a 100-cell map's circles one per 20 x 20 cells, squares 10 x 10
 
 
@@ -84,7 +83,7 @@ def probability_maps(
         image = _draw_probability(ax, probability, valid, grid, t)
         ax.set_box_aspect(1)  # square, as section 4's decision map (reader r33c: 2DS's square drawn 32 % wide)
         bar = fig.colorbar(image, ax=ax, label=f"P(valid); the line: threshold {t:.2f}", shrink=0.9)
-        bar.ax.axhline(t, linewidth=2.5, **{**CUT_LINE, "path_effects": halo(2.5, ("ink",))})
+        bar.ax.axhline(t, linewidth=2.5, color=COLORS["free"], path_effects=halo(2.5, ("ink",)))  # r41c: white dots
         said.append(f"{name}, threshold {t:.2f}: " + answers.answers_in_words(np.asarray(probability) >= t, valid))
         parts.append(answers.map_in_regions(name, said[-1], probability, valid, grid, t))
     blocks = fit_on_cells(fig, grid)  # laid out: each kind's marks one per k x k cells holding any, on one of them
@@ -121,10 +120,9 @@ def path_map(
     fig = Figure(figsize=(6, 6.2), layout="constrained")
     ax = fig.subplots()
     image = _draw_probability(ax, probability, valid, grid, threshold, mistakes=False, cut=CUT)
-    notch: dict[str, Any] = dict(color=COLORS["free"], path_effects=halo(CUT, ("ink",)))  # as the maps' (r34c)
     bar = fig.colorbar(image, ax=ax, label=f"P(valid); the line: threshold {threshold:.2f}", shrink=0.8)  # r40c
-    bar.ax.axhline(threshold, lw=CUT, **notch)
-    cut = Line2D([], [], linestyle=":", linewidth=CUT, label=f"P(valid) = {threshold:.2f}", **notch)
+    bar.ax.axhline(threshold, lw=CUT, color=COLORS["free"], path_effects=halo(CUT, ("ink",)))  # as the maps' (r34c)
+    cut = _dots(f"P(valid) = {threshold:.2f}")  # r42c: as the maps' legends
     x, y = grid.dofs
     _draw_roadmap(ax, nodes, nodes_valid, path, (x, y), edges)
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=10, wrap=True)
@@ -243,10 +241,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     probability = _on_grid(probability, grid, "probability")
     image = ax.imshow(probability.T, cmap=GREY_CMAP, vmin=0, vmax=1, **_cells(grid))
     if probability.min() < threshold <= probability.max():
-        kept = probability >= threshold  # r42c: drawn between the cells kept and rejected, as the outlines are drawn
-        line = draw_cell_outline(
-            ax, grid, kept, colors=COLORS["free"], linestyles=":"
-        )  # (interpolated, it ran outside)
+        line = draw_cell_outline(ax, grid, probability >= threshold, colors=COLORS["free"], linestyles=":")  # r42c
         line.set_linewidth(cut)
         line.set_path_effects(halo(cut, ("ink",)))  # a black ring: it shows on the light side too
         line.set_zorder(1.9 if cut >= CUT_MAP else 2.5)  # a map's wide line under the boundary (2), the path map's over
@@ -356,14 +351,19 @@ def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
 def _mistake_handles(blocks: Mapping[int, int]) -> list:
     """The P(valid) maps' legend: the threshold's line, and each mistake's mark, said to be one (``blocks[code]`` 1) or
     one per ``k x k`` cells holding any (review r18b: the conservative circles along the blocks read as a border)."""
-    cut = Line2D([], [], linestyle="", marker="s", markersize=3.5, color=COLORS["free"], gid="dots")  # r42c: dotted
-    cut.set_markeredgecolor(COLORS["ink"])  # line ringed, shrunk to a legend's handle, read as brackets: ringed dots
     per = {code: f"\none per {k} x {k}-cell tile holding any" if k > 1 else "" for code, k in blocks.items()}
     return [
-        (cut, "P(valid) = threshold (white dots):\nthe lighter side is kept"),
+        (_dots(), "P(valid) = threshold (white dots):\nthe lighter side is kept"),
         (_mistake_line(3), f"dangerous mistake: kept, in\ncollision (squares){per[3]}"),
         (_mistake_line(1), f"conservative mistake: rejected,\nfree (circles){per[1]}"),
     ]
+
+
+def _dots(label: str = "") -> Line2D:
+    """The threshold's line in a legend: three ringed white dots (:func:`_legend`; r42c: dotted, it read as "⊐ ]")."""
+    dots = Line2D([], [], linestyle="", marker="s", markersize=3.5, color=COLORS["free"], gid="dots", label=label)
+    dots.set_markeredgecolor(COLORS["ink"])
+    return dots
 
 
 def _mistake_line(code: int) -> Line2D:
