@@ -14,7 +14,7 @@ from toolkit.geometry import robots
 from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.workspace import Workspace
 from toolkit.learning import metrics
-from toolkit.plots import alt, answers, cell_marks, mark_sides, slices
+from toolkit.plots import alt, answers, cell_marks, slices
 from toolkit.plots import classifier as pc
 from toolkit.plots.answers import confusion_counts
 from toolkit.plots.palette import COLORS, contrast
@@ -285,9 +285,9 @@ def test_a_fine_maps_marks_stand_apart_and_a_one_cell_strip_of_mistakes_is_marke
 def test_each_mark_sits_on_a_mistake_of_its_kind():
     """Reader r26c, chapter 03: a block's mistakes on two edges of a C-obstacle averaged into its inside, so that a
     circle ("rejected, free") sat in the obstacle and others on the kept side of the threshold. Each mark now covers
-    one of its block's mistakes of its kind, the whole cell under the mark, rings included (reader r32c: moved onto its
-    side of the outline, a mark need not be centred on it): here a ring of free cells rejected around the block, and
-    the block's left and right edges kept (dangerous), at both pitches."""
+    one of its block's mistakes of its kind, centred on it (reader r42c: moved towards the truth's side of the outline,
+    squares sat where the model rejects): here a ring of free cells rejected around the block, and the block's left
+    and right edges kept (dangerous), at both pitches."""
     fine = slices.slice_grid(robots.point_robot(), n=100)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
     valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (100, 100)
@@ -303,43 +303,10 @@ def test_each_mark_sits_on_a_mistake_of_its_kind():
     for label, code in (("valid rejected", 1), ("invalid kept (dangerous)", 3)):
         (mark,) = [c for c in cell_marks.cell_marks(ax) if c.get_label() == label]
         at = (np.asarray(mark.get_offsets()) - first) / cell  # (m, 2) the marks' centres, in cells
-        half = (np.sqrt(mark.get_sizes()[0]) / 2 + cell_marks.RING) / cell_marks.cell_points(ax, fine)  # cells
         kind = np.argwhere(codes == code)  # (n, 2) the mistakes of its kind
-        gap = mark_sides.GAP / cell_marks.cell_points(ax, fine)  # cells: r34c, a mark clear of the outline's line
-        under = np.max(np.abs(at[:, None] - kind[None]), axis=2) - 0.5 < half + gap  # (m, n) beside a mark
+        under = np.max(np.abs(at[:, None] - kind[None]), axis=2) < 1e-6  # (m, n) a mark centred on a mistake
         assert len(at) and under.any(axis=1).all(), label
     assert block_of_squares(fig, "circles") > 1 and block_of_squares(fig, "squares") > 1  # merged into blocks
-
-
-def test_each_mark_sits_on_its_blocks_cell_deepest_inside_its_side():
-    """Reader r30c, chapter 03: squares centred on an outline's corner cell lay half in the free space beside it, and
-    the page had to say "its shape, not its place, tells the side". A square now sits on a cell with no free cell
-    beside it wherever its block holds such a dangerous cell, and a circle on a cell with no obstacle cell beside it
-    wherever its block holds such a conservative one."""
-    fine = slices.slice_grid(robots.point_robot(), n=100)
-    ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
-    valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (100, 100)
-    i, j = np.nonzero(~valid)
-    ring = np.zeros_like(valid)
-    ring[i.min() - 2 : i.max() + 3, j.min() - 2 : j.max() + 3] = True  # the block and two cells around it
-    ring[i.min() + 2 : i.max() - 1, j.min() + 2 : j.max() - 1] = False  # less all but its two outer cells
-    probability = np.where(valid != ring, 0.9, 0.1)  # wrong on a band four cells wide along the block's outline
-    fig = pc.probability_map(probability, valid, fine, threshold=0.5)
-    ax = fig.axes[0]
-    codes = answers.answer_codes(probability >= 0.5, valid)
-    first, cell = np.array([fine.axes[0][0], fine.axes[1][0]]), fine.axes[0][1] - fine.axes[0][0]
-    for label, kind, code in (("invalid kept (dangerous)", "squares", 3), ("valid rejected", "circles", 1)):
-        side = ~valid if code == 3 else valid  # (100, 100) the side the mark names
-        padded = np.pad(side, 1, constant_values=True)  # the map's edge is no cell of the other side
-        inside = np.all([padded[1 + a : 101 + a, 1 + b : 101 + b] for a in (-1, 0, 1) for b in (-1, 0, 1)], axis=0)
-        k = block_of_squares(fig, kind)
-        (mark,) = [c for c in cell_marks.cell_marks(ax) if c.get_label() == label]
-        at = np.rint((np.asarray(mark.get_offsets()) - first) / cell).astype(int)  # (m, 2) the cells under the marks
-        assert len(at) and k > 1, label
-        for i, j in at:
-            block = (slice(i // k * k, i // k * k + k), slice(j // k * k, j // k * k + k))
-            if (inside[block] & (codes[block] == code)).any():
-                assert inside[i, j], (label, i, j)
 
 
 def test_a_maps_circles_lie_over_its_outlines_and_every_mark_inside_its_frame():

@@ -1,4 +1,4 @@
-"""Marks kept wholly on their side of an outline (toolkit.plots.mark_sides; reader r32c, chapter 03's `strong` maps)."""
+"""Marks drawn on their own mistakes (toolkit.plots.mark_sides; reader r42c, chapter 03's P(valid) maps)."""
 
 import numpy as np
 
@@ -9,49 +9,57 @@ from toolkit.plots import answers, cell_marks, mark_sides, slices
 from toolkit.plots import classifier as pc
 
 
-def test_a_square_on_a_blocks_corner_cell_lies_inside_the_block_clear_of_its_outline_and_beside_its_cell():
-    """Reader r32c: the `strong` map's dangerous cells are a block's corner cells; a square centred on one, 3.5 cells
-    wide with its rings, lay mostly in the free space beside the block it was said to be inside. Each square now lies,
-    rings included, inside the outline and clear of its line (r34c: a square on the line read as lying on it), and
-    still touches the corner cell it stands for."""
+def marked_cells(fig, grid, label):
+    """The cells (m, 2) under the centres of ``fig``'s first map's marks of ``label``, and whether each is one."""
+    (marks,) = [c for c in cell_marks.cell_marks(fig.axes[0]) if c.get_label() == label]
+    first, cell = np.array([grid.axes[0][0], grid.axes[1][0]]), grid.axes[0][1] - grid.axes[0][0]
+    at = (np.asarray(marks.get_offsets()) - first) / cell  # (m, 2) in cells
+    return np.rint(at).astype(int), np.allclose(at, np.rint(at))
+
+
+def test_every_square_on_a_kept_colliding_cell_and_every_circle_on_a_rejected_free_one():
+    """Reader r42c: marks moved towards the truth's side of the outline sat where the model is right (squares on the
+    black it rejects, circles past the dotted line on the white it keeps). Each mark is now centred on a cell of its
+    own kind: every square on a cell kept (P(valid) >= threshold) and in collision, every circle on a cell rejected
+    and free, so never across the threshold's contour; here a block's corner cells kept and a ring of free cells
+    rejected around it, on a fine map where a mark stands for a tile."""
     fine = slices.slice_grid(robots.point_robot(), n=100)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
     valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (100, 100)
     i, j = np.nonzero(~valid)
-    probability = np.where(valid, 0.9, 0.1)
-    corners = [(i.min(), j.min()), (i.max(), j.max())]  # two corner cells kept: dangerous
-    for a, b in corners:
-        probability[a, b] = 0.9
+    ring = np.zeros_like(valid)
+    ring[i.min() - 2 : i.max() + 3, j.min() - 2 : j.max() + 3] = True
+    probability = np.where(valid & ~ring, 0.9, 0.1)  # free cells two wide around the block rejected
+    probability[[i.min(), i.max()], j.min() : j.max() + 1] = 0.9  # the block's left and right edges kept
     fig = pc.probability_map(probability, valid, fine, threshold=0.5)
-    ax = fig.axes[0]
-    (squares,) = [c for c in cell_marks.cell_marks(ax) if c.get_label() == "invalid kept (dangerous)"]
-    first, cell = np.array([fine.axes[0][0], fine.axes[1][0]]), fine.axes[0][1] - fine.axes[0][0]
-    at = (np.asarray(squares.get_offsets()) - first) / cell  # (2, 2) in cells
-    half = (np.sqrt(squares.get_sizes()[0]) / 2 + cell_marks.RING) / cell_marks.cell_points(ax, fine)
-    assert len(at) == 2 and half > 1  # wider than two cells: centred on a corner cell, most of it was outside
-    for centre, corner in zip(sorted(at.tolist()), corners):
-        gap = mark_sides.GAP / cell_marks.cell_points(ax, fine)  # cells: the outline's half width, rings included
-        assert mark_sides.outside_area(np.array(centre), ~valid, half + gap) == 0.0  # inside, clear of the line
-        assert np.max(np.abs(np.array(centre) - corner)) - 0.5 < half + gap  # its cell beside it, across the line
-    assert (answers.answer_codes(probability >= 0.5, valid) == 3).sum() == 2
+    kept = probability >= 0.5
+    for label, right_kind in (("invalid kept (dangerous)", kept & ~valid), ("valid rejected", ~kept & valid)):
+        cells, centred = marked_cells(fig, fine, label)
+        assert len(cells) and centred, label  # each centred on a cell
+        assert right_kind[cells[:, 0], cells[:, 1]].all(), label
 
 
-def test_inward_keeps_a_mark_in_place_where_it_already_lies_inside_and_apart_from_the_others():
-    side = np.zeros((20, 20), dtype=bool)
-    side[5:15, 5:15] = True
-    deep = np.array([10.0, 10.0])
-    np.testing.assert_array_equal(mark_sides.inward(deep, side, 1.7, 1.2, np.zeros((0, 2)), 0.0), deep)
-    corner = np.array([5.0, 5.0])  # a corner cell: moved in, up to 1.2 cells each way
-    moved = mark_sides.inward(corner, side, 1.7, 1.2, np.zeros((0, 2)), 0.0)
-    np.testing.assert_allclose(moved, [6.2, 6.2])
-    assert mark_sides.outside_area(moved, side, 1.7) == 0.0
-    blocked = mark_sides.inward(corner, side, 1.7, 1.2, np.array([[7.0, 7.0]]), 3.0)  # no room beside another mark
-    np.testing.assert_array_equal(blocked, corner)
+def test_a_tiles_mark_sits_on_its_mistake_nearest_their_centroid():
+    """Reader r42c: "Put each square and circle on a mistake cell of its tile (the one nearest the tile's mistake
+    centroid)". An L of mistakes, whose centroid lies off it, is marked on its cell nearest that centroid."""
+    cells = np.array([[0, 0], [1, 0], [2, 0], [3, 0], [0, 1], [0, 2], [0, 3]], dtype=float)  # centroid (0.86, 0.86)
+    at = mark_sides.nearest_mistake(cells, np.zeros((0, 2)), 0.0, 0.0, (10, 10))  # not the centroid: no mistake
+    assert at is not None and tuple(at) in {(1, 0), (0, 1)}  # 0.87 cells from it; the corner (0, 0) is 1.21
+    row = np.array([[0, 5], [1, 5], [2, 5]], dtype=float)  # by the map's left edge; a mark 1.5 cells to its rings
+    framed = mark_sides.nearest_mistake(row, np.zeros((0, 2)), 0.0, 1.5, (10, 10))  # (1, 5)'s would cross the frame
+    np.testing.assert_array_equal(framed, [2, 5])  # r19b: a mark inside the map's frame, rings and all
+    assert mark_sides.nearest_mistake(cells, np.array([[1.0, 1.0]]), 5.0, 0.0, (10, 10)) is None  # beside a mark
 
 
-def test_a_marks_area_beyond_the_maps_frame_counts_as_on_the_other_side():
-    """Reader r34c: a circle in a strip too narrow for it was pushed beyond the frame, where nothing counted, then
-    pulled back in onto the block beside the strip, the frame cutting it in half."""
-    free = np.ones((10, 10), dtype=bool)
-    assert mark_sides.outside_area(np.array([5.0, 5.0]), free, 1.0) == 0.0
-    assert mark_sides.outside_area(np.array([0.0, 5.0]), free, 1.0) == 1.0  # half a cell of its 2-cell side beyond
+def test_a_maps_marks_match_its_counted_mistakes():
+    """Every map's squares stand for its dangerous cells only: a map with none has no square."""
+    grid = slices.slice_grid(robots.point_robot(), n=40)
+    ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
+    valid = grid.image(exact_checker(ws, robots.point_robot()).are_valid(grid.configs))  # (40, 40)
+    probability = np.where(valid, 0.9, 0.1)
+    probability[valid.nonzero()[0][:3], valid.nonzero()[1][:3]] = 0.1  # three free cells rejected
+    fig = pc.probability_map(probability, valid, grid, threshold=0.5)
+    assert (answers.answer_codes(probability >= 0.5, valid) == 3).sum() == 0
+    assert len(marked_cells(fig, grid, "invalid kept (dangerous)")[0]) == 0
+    cells, _ = marked_cells(fig, grid, "valid rejected")
+    assert 1 <= len(cells) <= 3 and (probability[cells[:, 0], cells[:, 1]] < 0.5).all()

@@ -96,6 +96,19 @@ def test_a_slice_verdict_counts_its_mistakes_by_where_they_lie():
     assert said.endswith("away from any boundary it makes 1 conservative and 0 dangerous mistakes")
 
 
+def test_band_starts_reads_where_the_middle_row_enters_the_band_beside_the_straight_chains_211():
+    """Reader r42c: the |α| >= 2.11 check, out of its fold, read off the yaw x joint map's middle row."""
+    from types import SimpleNamespace
+
+    alpha, joint = np.linspace(-np.pi, np.pi, 100), np.linspace(-2, 2, 101)  # joint 0 the middle row
+    grid = SimpleNamespace(axes=(alpha, joint))  # the axes are all it reads
+    valid = np.abs(alpha)[:, None] < 2.11 + 0 * joint[None]  # (100, 101) in collision for |α| >= 2.11
+    said = chapter03.band_starts(valid, grid)
+    assert said.startswith("joint 0.00 (the map's middle row): in collision from |α| = 2.1")
+    assert "within a cell of the straight chain's 2.11" in said
+    assert "no cell in collision" in chapter03.band_starts(np.ones_like(valid), grid)
+
+
 def test_score_unseen_scores_each_model_and_always_valid_on_the_same_balanced_and_blind_samples(checkpoint_2ds):
     """Section 4's measurement, moved off the page (reader r29c: a screen of loop code): per kind of sample, the truth,
     each model's P(valid) and its scores, "always valid" scoring the share of valid samples."""

@@ -29,6 +29,7 @@ import numpy as np
 from matplotlib.collections import LineCollection
 from matplotlib.colors import ListedColormap, to_rgb
 from matplotlib.figure import Figure
+from matplotlib.legend_handler import HandlerLine2D
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
@@ -36,8 +37,8 @@ from toolkit.learning import metrics
 from toolkit.plots import answers
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
-from toolkit.plots.cell_marks import depth_inside, draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
-from toolkit.plots.mark_sides import fit_on_side, keep_on_side, labels_clear_of, marks_counted, on_side
+from toolkit.plots.cell_marks import draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
+from toolkit.plots.mark_sides import fit_on_cells, labels_clear_of, marks_counted, on_cells, place_on_cells
 from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import dof_label
 from toolkit.plots.slices import CSpaceSlice
@@ -55,7 +56,6 @@ PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conse
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
 HATCH = COLORS["c_obstacle"]  # the C-obstacles' hatch on a P(valid) map: light, seen on its black and its greys
 TINT = {1: 0.25, 3: 0.6}  # wrong cells tinted in their colour: conservative light, its grey read (r41c: 0.5 hid it)
-CUT_LINE: dict[str, Any] = dict(color=COLORS["free"], path_effects=halo(CUT_MAP, ("ink",)))  # r41c: white dots
 BLOCKS = {1: 5, 3: 10}  # tiles a side on every map: a 100-cell map's circles one per 20 x 20 cells, squares 10 x 10
 
 
@@ -83,28 +83,24 @@ def probability_maps(
         image = _draw_probability(ax, probability, valid, grid, t)
         ax.set_box_aspect(1)  # square, as section 4's decision map (reader r33c: 2DS's square drawn 32 % wide)
         bar = fig.colorbar(image, ax=ax, label=f"P(valid); the line: threshold {t:.2f}", shrink=0.9)
-        bar.ax.axhline(t, linewidth=2.5, **{**CUT_LINE, "path_effects": halo(2.5, ("ink",))})
+        bar.ax.axhline(t, linewidth=2.5, color=COLORS["free"], path_effects=halo(2.5, ("ink",)))  # r41c: white dots
         said.append(f"{name}, threshold {t:.2f}: " + answers.answers_in_words(np.asarray(probability) >= t, valid))
         parts.append(answers.map_in_regions(name, said[-1], probability, valid, grid, t))
-    blocks = fit_on_side(fig, grid)  # laid out: each kind's marks one per k x k cells holding any, on their side
+    blocks = fit_on_cells(fig, grid)  # laid out: each kind's marks one per k x k cells holding any, on one of them
     k = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
     for ax, (name, probability), t in zip(axes, probabilities.items(), cut.values()):  # the marks counted (r34c)
         tiles = marks_counted(confusion_counts(np.asarray(probability) >= t, valid), ax, k)
         ax.set_title(f"{name}: P(valid), threshold {t:.2f}, {tiles}", fontsize=10)  # r36c: "64% of the map wrong"
     _legend(fig, _mistake_handles(k))  # under the maps, read after them (r37c: above, a screen from the maps)
-    keep_on_side(fig, grid)  # again, the maps as the legend left them (r34c: fitted before, marks met the outlines)
+    place_on_cells(fig, grid, blocks)  # again, the maps as the legend left them (r34c)
+    per = {code: f" (one per {n} x {n} cells holding any)" if n > 1 else "" for code, n in k.items()}
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
     text += "configurations; grey, 0 black to 1 white; wrong cells tinted, free ones rejected sky blue, obstacle cells "
     text += "kept vermillion) with the true C-obstacles outlined and hatched, the threshold's "
-    text += f"contour dotted, dangerous mistakes as squares{_per_block(k[3])} and conservative ones as circles"
+    text += f"contour dotted, dangerous mistakes as squares{per[3]} and conservative ones as circles"
     rule = f"a square per {k[3]} x {k[3]}-cell tile holding dangerous cells, a circle per {k[1]} x {k[1]}-cell tile "
-    rule += "holding conservative ones, each moved up to a few cells into its side of the outline, onto the outline "
-    rule += "where that side is too thin: a mark shows its tile, not the exact cell"  # r40c: from the prose to here
-    return describe(fig, text + f"{_per_block(k[1])}. " + "; ".join(said) + ".", [Part("marks", rule), *parts])
-
-
-def _per_block(k: int) -> str:
-    return f" (one per {k} x {k} cells holding any)" if k > 1 else ""
+    rule += "holding conservative ones, each drawn on one of its tile's mistake cells (the one nearest their centroid)"
+    return describe(fig, text + f"{per[1]}. " + "; ".join(said) + ".", [Part("marks", rule), *parts])
 
 
 def path_map(
@@ -124,10 +120,9 @@ def path_map(
     fig = Figure(figsize=(6, 6.2), layout="constrained")
     ax = fig.subplots()
     image = _draw_probability(ax, probability, valid, grid, threshold, mistakes=False, cut=CUT)
-    notch: dict[str, Any] = dict(color=COLORS["free"], path_effects=halo(CUT, ("ink",)))  # as the maps' (r34c)
     bar = fig.colorbar(image, ax=ax, label=f"P(valid); the line: threshold {threshold:.2f}", shrink=0.8)  # r40c
-    bar.ax.axhline(threshold, lw=CUT, **notch)
-    cut = Line2D([], [], linestyle=":", linewidth=CUT, label=f"P(valid) = {threshold:.2f}", **notch)
+    bar.ax.axhline(threshold, lw=CUT, color=COLORS["free"], path_effects=halo(CUT, ("ink",)))  # as the maps' (r34c)
+    cut = _dots(f"P(valid) = {threshold:.2f}")  # r42c: as the maps' legends
     x, y = grid.dofs
     _draw_roadmap(ax, nodes, nodes_valid, path, (x, y), edges)
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=10, wrap=True)
@@ -208,7 +203,7 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
         for code, cell in enumerate(cells)
     ]
     boundary = Line2D([], [], color=BOUNDARY, path_effects=halo(1.2))
-    blocks = fit_on_side(fig, grid)  # the mistakes' marks as large as one sees, the circles sparse, on their side
+    blocks = fit_on_cells(fig, grid)  # the mistakes' marks as large as one sees, the circles sparse, on their cells
     per = {code: blocks.get(ANSWERS[code], 1) for code in MISTAKE_MARKERS}
     block = {code: f" (one per {k} x {k} cells holding any)" if k > 1 else "" for code, k in per.items()}
     per_block = f"\nsquares 1 per {per[3]} x {per[3]}-cell tile, circles 1 per {per[1]} x {per[1]}"  # marks < mistakes
@@ -218,10 +213,10 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
     labels = ["true C-obstacle boundary", ANSWERS[0], f"{ANSWERS[1]}: conservative\nmistake (circles)", ANSWERS[2]]
     labels.append("invalid kept: dangerous\nmistake (squares)")  # r39c: section 1's table's names
     fig.legend([boundary, *handles], labels, loc="outside lower center", ncols=3, fontsize=8, frameon=False)
-    keep_on_side(fig, grid)  # again, the map as its title and legend left it (r34c)
+    place_on_cells(fig, grid, blocks)  # again, the map as its title and legend left it (r34c)
     text = f"{title + ': ' if title else ''}the model's decision at threshold {threshold:.2f} over {grid.names[0]} and "
-    text += f"{grid.names[1]}, each cell by its kind of answer, over the boundary; the mistakes marked near their "
-    text += f"cells, on their side of it: dangerous ones with squares{block[3]} and conservative ones with sparse "
+    text += f"{grid.names[1]}, each cell by its kind of answer, over the boundary; the mistakes marked on their "
+    text += f"cells: dangerous ones with squares{block[3]} and conservative ones with sparse "
     text += f"circles{block[1]}; their counts, and the ROC curve. "
     text += f"{answers.answers_in_words(predicted, valid)}; {roc}."
     cut, fpr, tpr = roc_points(probability, valid, np.linspace(0.0, 1.0, 11))  # (11,) each
@@ -238,14 +233,15 @@ def threshold_view(probability, valid, grid: CSpaceSlice, *, threshold: float, t
 
 
 def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: float, *, mistakes=True, cut=CUT_MAP):
-    """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary, the threshold's contour dotted ``cut`` points
+    """P(valid) ``(nx, ny)`` in gray (0 black, 1 white), the boundary, the threshold's line (on the cells' edges
+    between those kept and rejected, as the boundary: r42c, interpolated it ran outside it) dotted ``cut`` points
     wide (:data:`CUT_MAP`: under the boundary and wider, both show where they meet; the path map's over it) and, with
     ``mistakes``, dangerous cells as squares and conservative ones as circles, sparse enough that the grey between
     them is P(valid) (review r18b: a hatch of dots over the `paper` map's rejected free space hid its grey)."""
     probability = _on_grid(probability, grid, "probability")
     image = ax.imshow(probability.T, cmap=GREY_CMAP, vmin=0, vmax=1, **_cells(grid))
     if probability.min() < threshold <= probability.max():
-        line = ax.contour(*grid.axes, probability.T, levels=[threshold], colors=COLORS["free"], linestyles=":")
+        line = draw_cell_outline(ax, grid, probability >= threshold, colors=COLORS["free"], linestyles=":")  # r42c
         line.set_linewidth(cut)
         line.set_path_effects(halo(cut, ("ink",)))  # a black ring: it shows on the light side too
         line.set_zorder(1.9 if cut >= CUT_MAP else 2.5)  # a map's wide line under the boundary (2), the path map's over
@@ -267,14 +263,11 @@ def _cells(grid: CSpaceSlice) -> dict[str, Any]:
 
 
 def _draw_mistakes(ax, grid: CSpaceSlice, codes) -> None:
-    """Every map's mistakes alike: circles, then squares over them, one per block of ``BLOCKS`` a side, each on its
-    block's cell deepest inside its side of the outline (r30c), then moved wholly onto that side (r32c: fit_on_side)."""
-    valid = codes <= 1  # (nx, ny) the truth: valid kept or rejected
+    """Every map's mistakes alike: circles, then squares over them, one per block of ``BLOCKS`` a side, each on one of
+    its block's mistakes of its kind (r42c: moved towards the truth's side, squares sat where the model rejects)."""
     for code in MISTAKE_MARKERS:
-        side = valid if code == 1 else ~valid  # squares inside the C-obstacle, circles outside it
         style: dict[str, Any] = dict(pitch=PITCH[code], blocks=BLOCKS[code], label=ANSWERS[code], zorder=ZORDER[code])
-        marks = draw_cell_marks(ax, grid, codes == code, depth=depth_inside(side), **style, **_mistake_mark(code))
-        on_side(marks, side)
+        on_cells(draw_cell_marks(ax, grid, codes == code, **style, **_mistake_mark(code)), codes == code)
 
 
 def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tuple[int, int], edges=None) -> None:
@@ -358,13 +351,19 @@ def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
 def _mistake_handles(blocks: Mapping[int, int]) -> list:
     """The P(valid) maps' legend: the threshold's line, and each mistake's mark, said to be one (``blocks[code]`` 1) or
     one per ``k x k`` cells holding any (review r18b: the conservative circles along the blocks read as a border)."""
-    cut = Line2D([], [], linestyle=":", linewidth=CUT_MAP, **CUT_LINE)
     per = {code: f"\none per {k} x {k}-cell tile holding any" if k > 1 else "" for code, k in blocks.items()}
     return [
-        (cut, "P(valid) = threshold (white dots):\nthe lighter side is kept"),
+        (_dots(), "P(valid) = threshold (white dots):\nthe lighter side is kept"),
         (_mistake_line(3), f"dangerous mistake: kept, in\ncollision (squares){per[3]}"),
         (_mistake_line(1), f"conservative mistake: rejected,\nfree (circles){per[1]}"),
     ]
+
+
+def _dots(label: str = "") -> Line2D:
+    """The threshold's line in a legend: three ringed white dots (:func:`_legend`; r42c: dotted, it read as "⊐ ]")."""
+    dots = Line2D([], [], linestyle="", marker="s", markersize=3.5, color=COLORS["free"], gid="dots", label=label)
+    dots.set_markeredgecolor(COLORS["ink"])
+    return dots
 
 
 def _mistake_line(code: int) -> Line2D:
@@ -376,8 +375,8 @@ def _legend(fig: Figure, handles: list) -> None:
     boundary = Patch(facecolor=COLORS["occupied"], edgecolor=BOUNDARY, hatch="//", hatchcolor=HATCH, linewidth=1.5)
     pairs = [(boundary, "true C-obstacle (outlined, hatched)"), *handles]
     ncols = len(pairs) if fig.get_figwidth() >= 9 else 2
-    where = "outside lower center"
-    fig.legend(*zip(*pairs), loc=where, ncols=ncols, fontsize=9, frameon=False)  # type: ignore[call-overload]
+    dots = {h: HandlerLine2D(numpoints=3) for h, _ in pairs if h.get_gid() == "dots"}  # the threshold's (r42c)
+    fig.legend(*zip(*pairs), loc="outside lower center", ncols=ncols, fontsize=9, frameon=False, handler_map=dots)
 
 
 BAR_NAMES = ("valid\nkept", "conservative\nmistake", "invalid\nrejected", "dangerous\nmistake")  # section 1's (r39c)

@@ -1,14 +1,13 @@
-"""Marks kept wholly on their side of an outline: notebook 03's mistakes (reader r32c).
+"""Marks on their own mistakes: notebook 03's squares and circles each drawn on a cell it stands for (reader r42c).
 
-:func:`toolkit.plots.cell_marks.fit_cell_marks` puts one mark per tile of cells on one of the tile's marked cells, the
-deepest inside its side of the outline. A mark is wider than a cell on a fine map (chapter 03 at full size: a square
-with its rings about 3.5 cells wide), so that a mark centred on a C-obstacle's corner cell, where all of a `strong`
-model's dangerous mistakes lie, covered mostly the free space beside it (reader r32c: "the squares appear to sit in
-free space just outside the block they are said to be inside"). A mark given its side (:func:`on_side`) moves, once
-fitted (:func:`fit_on_side`) and again once its figure is laid out for good (:func:`keep_on_side`), while its cell
-lies within an outline's width of it, to where the least of it, rings included, lies on the other side or beyond the
-map's frame: inside the outline and clear of its line (reader r34c: marks on the line read as lying on it) wherever
-the region is wide enough to hold it, and never nearer another mark of its kind than the marks' pitch keeps them.
+:func:`toolkit.plots.cell_marks.fit_cell_marks` sizes the marks on a map and merges them, where the map is fine, into
+one per tile of ``k x k`` cells holding any. A mark given its cells (:func:`on_cells`: the map's mistakes of its
+kind) is then drawn (:func:`fit_on_cells`, again by :func:`place_on_cells` once its figure is laid out for good) on
+one of its tile's mistake cells, the one nearest the tile's mistakes' centroid: a square on a cell kept and in
+collision, a circle on a cell rejected and free, so on the side of the threshold's contour the model chose (reader
+r42c: moved towards the truth's side of the outline, squares sat on the black the model rejects). Among those cells
+it prefers one whose mark, rings included, lies inside the map's frame (r19b) and clear of the marks already placed
+(r18b: a pile of squares could not be counted); a tile whose every mistake lies beside a placed mark has none.
 """
 
 from __future__ import annotations
@@ -23,89 +22,62 @@ from matplotlib.figure import Figure
 from toolkit.plots.cell_marks import CLEAR, RING, cell_marks, cell_points, fit_cell_marks
 from toolkit.plots.slices import CSpaceSlice
 
-STEP = 0.25  # cells: the largest step between two places a mark may move to
-_SIDE: WeakKeyDictionary[PathCollection, np.ndarray] = WeakKeyDictionary()  # marks' side of the outline (nx, ny)
+_CELLS: WeakKeyDictionary[PathCollection, np.ndarray] = WeakKeyDictionary()  # each mark's mistake cells (n, 2)
 
 
-def on_side(marks: PathCollection, side) -> PathCollection:
-    """Give ``marks`` (:func:`~toolkit.plots.cell_marks.draw_cell_marks`'s) the cells ``side (nx, ny)`` they name
-    (dangerous squares: the C-obstacle's), for :func:`fit_on_side` to keep them inside it."""
-    _SIDE[marks] = np.asarray(side, dtype=bool)
+def on_cells(marks: PathCollection, mask) -> PathCollection:
+    """Give ``marks`` (:func:`~toolkit.plots.cell_marks.draw_cell_marks`'s) the cells ``mask (nx, ny)`` they stand
+    for (its mistakes of their kind), for :func:`fit_on_cells` to draw each on one of them."""
+    _CELLS[marks] = np.argwhere(np.asarray(mask, dtype=bool)).astype(float)
     return marks
 
 
-def fit_on_side(fig: Figure, grid: CSpaceSlice) -> dict[str, int]:
-    """:func:`~toolkit.plots.cell_marks.fit_cell_marks`, then each mark given a side moved onto it (its blocks); a
-    figure that adds a title or legend after this, changing its maps' size, calls :func:`keep_on_side` again last."""
+def fit_on_cells(fig: Figure, grid: CSpaceSlice) -> dict[str, int]:
+    """:func:`~toolkit.plots.cell_marks.fit_cell_marks` (its blocks, per label), then each mark given its cells
+    drawn on one of them (:func:`place_on_cells`); a figure that adds a title or legend after this, changing its maps'
+    size, calls :func:`place_on_cells` again last with the blocks this returned."""
     blocks = fit_cell_marks(fig, grid)
-    keep_on_side(fig, grid)
+    place_on_cells(fig, grid, blocks)
     return blocks
 
 
-def keep_on_side(fig: Figure, grid: CSpaceSlice) -> None:
-    """Each mark given a side (:func:`on_side`) moved, from the cell it was drawn on, to where it lies wholly on that
-    side and clear of the outline by :data:`GAP`, that cell within GAP of it, inside the map's frame, as ``fig`` is laid
-    out now (reader r34c: a
-    legend added after the fit shrank the maps, and marks fitted to the larger cells met their outlines)."""
+def place_on_cells(fig: Figure, grid: CSpaceSlice, blocks: Mapping[str, int]) -> None:
+    """Each mark given its cells (:func:`on_cells`) drawn, one per tile of ``blocks[label]`` cells a side holding
+    any, on the tile's cell nearest its mistakes' centroid (:func:`nearest_mistake`), as ``fig`` is laid out now."""
     fig.draw_without_rendering()  # the layout the figure will be drawn with
     first = np.array([axis[0] for axis in grid.axes])  # (2,) the first cell's centre
     cell = np.array([abs(axis[1] - axis[0]) if len(axis) > 1 else 1.0 for axis in grid.axes])  # (2,) data units
     for ax in fig.axes:
         for mark in cell_marks(ax):
-            side = _SIDE.get(mark)
-            if side is None or not len(np.asarray(mark.get_offsets())):
+            cells = _CELLS.get(mark)
+            if cells is None or not len(cells):
                 continue
-            if mark not in _FROM:
-                _FROM[mark] = (np.asarray(mark.get_offsets()) - first) / cell  # (m, 2) the cells drawn on
             points = cell_points(ax, grid)  # one cell, in points
             size = float(np.sqrt(mark.get_sizes()[0]))  # points
-            half = (size / 2 + RING) / points  # cells: the mark's half side, rings included
             pitch = float((str(mark.get_gid()).split(":") + ["0"])[1] or 0)
             apart = (size + CLEAR) / points if pitch else 0.0  # cells between two marks' centres, at least
-            at = _FROM[mark].copy()
-            for n in range(len(at)):
-                others = np.delete(at, n, axis=0)
-                gap = GAP / points  # cells: the outline's half width
-                at[n] = inward(at[n], side, half + gap, half + gap + 0.49, others, apart)  # its cell within the gap
-            inset = max(0.0, half - 0.5)  # inside the map's frame, rings and all
-            mark.set_offsets(first + np.clip(at, inset, np.array(side.shape) - 1 - inset) * cell)
+            inset = max(0.0, (size / 2 + RING) / points - 0.5)  # cells: an edge cell's centre to a whole mark
+            k = int(blocks.get(str(mark.get_label()), 1))
+            tiles, tile_of = np.unique((cells // k).astype(int), axis=0, return_inverse=True)
+            placed = np.zeros((0, 2))
+            for t in range(len(tiles)):
+                at = nearest_mistake(cells[tile_of.ravel() == t], placed, apart, inset, grid.shape)
+                if at is not None:
+                    placed = np.vstack([placed, at])
+            mark.set_offsets(first + placed * cell)
 
 
-GAP = 7.0  # points between a mark's rings and its outline's middle: the outline's half width, its rings included (2.2),
-# and a gap one sees at the site's width (reader r36c: at 2.5, squares read as lying on the yaw x joint band's outline;
-# r39c: at 4, inside "only just", against the band's stepped outline)
-_FROM: WeakKeyDictionary[PathCollection, np.ndarray] = WeakKeyDictionary()  # the cells each mark was fitted on
-
-
-def inward(at: np.ndarray, side: np.ndarray, half: float, reach: float, others: np.ndarray, apart: float):
-    """Where a mark of half side ``half`` (cells) centred at ``at (2,)`` (cell indices) moves: of the centres within
-    ``reach`` cells of it (:func:`fit_on_side`'s: the mark, rings included, still covers that whole cell) and at least
-    ``apart`` from each of ``others (p, 2)``, the one whose square lies least outside ``side (nx, ny)``, then the
-    nearest ``at``."""
-    steps = np.linspace(-reach, reach, 2 * int(np.ceil(reach / STEP)) + 1)  # (s,) 0 and both ends among them
-    moves = np.stack(np.meshgrid(steps, steps, indexing="ij"), axis=-1).reshape(-1, 2)  # (c, 2) the centre (0, 0)
-    centres = at + moves
-    if len(others):
-        clear = np.max(np.abs(centres[:, None] - others[None]), axis=2).min(axis=1)  # (c,) cells to the nearest
-        allowed = (clear >= apart - 1e-9) | (np.abs(moves).max(axis=1) == 0)
-        centres, moves = centres[allowed], moves[allowed]
-    outside = np.round([outside_area(c, side, half) for c in centres], 6)  # (c,) cells' area
-    return centres[np.lexsort((np.abs(moves).max(axis=1), outside))[0]]
-
-
-def outside_area(at: np.ndarray, side: np.ndarray, half: float) -> float:
-    """The area, in cells, of the square of half side ``half`` centred at ``at (2,)`` that lies on the map's cells
-    outside ``side (nx, ny)`` or beyond the map's frame (reader r34c: a circle pushed beyond it, then pulled back
-    inside, sat on the block beside the frame, cut by it)."""
-    overlaps = []
-    for axis in range(2):
-        lo, hi = at[axis] - half, at[axis] + half
-        k = np.arange(max(0, int(np.floor(lo + 0.5))), min(side.shape[axis] - 1, int(np.ceil(hi - 0.5))) + 1)
-        overlaps.append((k, np.clip(np.minimum(k + 0.5, hi) - np.maximum(k - 0.5, lo), 0.0, None)))
-    (i, wi), (j, wj) = overlaps
-    beyond = (2 * half) ** 2 - float(np.sum(wi) * np.sum(wj))  # the square's area off the map
-    inside = float(np.sum(np.outer(wi, wj) * ~side[np.ix_(i, j)])) if len(i) and len(j) else 0.0
-    return max(0.0, round(beyond + inside, 9))  # no -1e-15 for a square wholly on the map
+def nearest_mistake(cells: np.ndarray, placed: np.ndarray, apart: float, inset: float, shape) -> np.ndarray | None:
+    """Of one tile's mistake ``cells (n, 2)``, the one a mark is drawn on: nearest their centroid among those at least
+    ``apart`` cells (the larger axis) from every mark ``placed (p, 2)``, those whose mark lies ``inset`` cells inside
+    the map of ``shape`` first; None where every one lies beside a placed mark (that mark stands for them too)."""
+    if len(placed):
+        cells = cells[np.max(np.abs(cells[:, None] - placed[None]), axis=2).min(axis=1) >= apart - 1e-9]
+    if not len(cells):
+        return None
+    framed = np.all((cells >= inset - 1e-9) & (cells <= np.array(shape) - 1 - inset + 1e-9), axis=1)  # (n,)
+    distance = np.linalg.norm(cells - cells.mean(axis=0), axis=1) + 1e6 * ~framed
+    return cells[np.argmin(distance)]
 
 
 def marks_counted(counts: Mapping[str, int], ax, blocks: Mapping[int, int]) -> str:

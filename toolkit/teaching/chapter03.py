@@ -6,7 +6,8 @@
 - :func:`mistakes_table`: section 3's mistakes on the P(valid) maps, how many lie near a boundary
   (:func:`near_boundary`) beside how many cells do, where the dangerous ones are (:func:`groups`);
 - :func:`score_unseen`: section 4's scores of each model and of "always valid" on unseen workspaces' samples;
-- :func:`slice_verdict`: section 5's verdict on a slice, its counts and words;
+- :func:`slice_verdict`: section 5's verdict on a slice, its counts and words; :func:`band_starts`, where its yaw x
+  joint slice's middle row enters the band;
 - :func:`threshold_explorer`: section 6's slider over the decision maps;
 - :func:`closing_table`: the closing section's table, the paper's row above this page's draws.
 """
@@ -214,6 +215,27 @@ def slice_verdict(p, truth, threshold: float, near: int, edge: str = "walls") ->
     return (
         counts + f"it finds the obstacles and errs {where}; away from any boundary it makes {far_c} "
         f"conservative and {far_d} dangerous mistakes"
+    )
+
+
+def band_starts(valid, grid: CSpaceSlice, reach: float = 0.5, half: float = 0.05, gap: float = 0.3) -> str:
+    """Where the yaw x joint map's middle row (the joint nearest 0) enters the band in collision, beside the |α| at
+    which a straight chain ``reach`` long and ``half`` its half thickness, its base ``gap`` from the block, first
+    touches it: ``reach |cos α| + half |sin α| >= gap``, α towards −x (reader r42c: the check out of its fold)."""
+    alpha, joint = grid.axes
+    row = int(np.argmin(np.abs(joint)))
+    turned = np.linspace(np.pi / 2, np.pi, 100_001)  # towards −x
+    straight = float(turned[np.argmax(-reach * np.cos(turned) + half * np.abs(np.sin(turned)) >= gap)])
+    hit = ~np.asarray(valid, dtype=bool)[:, row]
+    if not hit.any():
+        return (
+            f"joint {joint[row]:.2f}: no cell in collision; the straight chain meets the block at |α| = {straight:.2f}"
+        )
+    first, cell = float(np.abs(alpha[hit]).min()), float(abs(alpha[1] - alpha[0]))
+    within = "within a cell of" if abs(first - straight) <= cell else f"{abs(first - straight):.2f} rad from"
+    return (
+        f"joint {joint[row]:.2f} (the map's middle row): in collision from |α| = {first:.2f}, {within} the straight "
+        f"chain's {straight:.2f} (a cell is {cell:.2f} rad)"
     )
 
 
