@@ -15,7 +15,7 @@ per topic, in the order of the notebooks:
 - :mod:`toolkit.plots.answers` — the collision MLP's answers against the truth: their kinds, counts, ROC points;
 - :mod:`toolkit.plots.classifier` — the collision MLP's decision boundaries and thresholds (notebook 03);
 - :mod:`toolkit.plots.cell_marks` — marks on a map's cells sized to be seen however fine the map (notebook 03),
-  each kept wholly on its side of an outline by :mod:`toolkit.plots.mark_sides`;
+  each drawn on one of its tile's mistakes by :mod:`toolkit.plots.mark_sides`;
 - :mod:`toolkit.plots.planning` — samplers, roadmaps, a planner step by step (notebook 04);
 - :mod:`toolkit.plots.timings` — planning times with and without prediction, checkers' throughputs (notebook 04);
 - :mod:`toolkit.plots.scenes` — a planned 3D path, one frame at a time (notebook 05), its degrees of freedom a
