@@ -193,11 +193,13 @@ def test_the_recorded_crossover_names_every_measured_value():
     assert two_rows == 0 and slanted == 0
     title = fig.get_suptitle()  # reader r27f: no hatching named where none is drawn; the network's size named
     assert "hatched" not in title and "a paper-size network" in title
-    # reader r40g: the legend below the panels, inside the figure, in larger type than the ticks; the shading's one
-    # panel named in it; every panel names its y axis
+    # reader r40g: the legend inside the figure, in larger type than the ticks; the shading's one panel named in it;
+    # every panel names its y axis. Reader r42g: above the panels, under the title (below them, the top panels sat a
+    # screen before their key)
     assert "shaded: network cheaper by > 25% (mesh panel only)" in legend_texts(fig)
     legend = fig.legends[0].get_window_extent()
-    assert legend.y1 < min(ax.get_tightbbox().y0 for ax in fig.axes) and legend.width <= fig.bbox.width
+    assert legend.y0 > max(ax.get_tightbbox().y1 for ax in fig.axes) and legend.width <= fig.bbox.width
+    assert legend.y1 < fig._suptitle.get_window_extent().y0  # under the title, not over it
     assert fig.legends[0].get_texts()[0].get_fontsize() > TICK_POINTS
     assert {ax.get_ylabel() for ax in fig.axes} == {"µs per configuration"}
 

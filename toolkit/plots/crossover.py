@@ -79,10 +79,11 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
         if results["preset"] == "paper"
         else f'the network at the "{results["preset"]}" preset\'s sizes'
     )
-    fig.suptitle(  # the network's size said on the figure (reader r27f: "preset paper" alone was easy to miss)
+    # the network's size said on the figure (reader r27f: "preset paper" alone was easy to miss)
+    heading = fig.suptitle(
         f"Cost per check: {scenario_name(results['scenario'])}, {network}{quick}\n{said}", fontsize=11
     )
-    room = _legend_below(fig, axes, sweeps)
+    room = _legend_above(fig, axes, sweeps, heading)
     fig.tight_layout(rect=room)
     for ax, (key, sweep) in zip(axes, sweeps.items()):
         name_ticks(ax, np.asarray(sweep["values"], dtype=float), TICKS.get(key), TICK_POINTS)
@@ -95,32 +96,35 @@ def crossover(results: dict, measured: str | None = None) -> Figure:
     return describe(fig, text + " ".join(_in_words(sweep) for sweep in sweeps.values()), parts)
 
 
-LEGEND_INCHES = 1.4  # the legend's room under the panels: three rows of two entries, three lines each at most
+LEGEND_INCHES = 1.4  # the legend's room over the panels: three rows of two entries, three lines each at most
 LEGEND_CHARACTERS = (40, 36, 32, 28)  # a legend entry's line, characters: the longest with two entries side by side
 LEGEND_POINTS = 10  # reader r40g: the legend in larger type than the tick labels
 
 
-def _legend_below(fig: Figure, axes, sweeps: dict) -> tuple[float, float, float, float]:
-    """One legend for all panels, below them in two columns (reader r40g: beside them, six long entries in small type
-    squeezed the panels and their labels), its entries wrapped to the longest of :data:`LEGEND_CHARACTERS` that fits;
-    the shading's entry names the panels it is drawn on where that is not all of them. Returns the rectangle, in
-    figure fractions, left for the panels."""
+def _legend_above(fig: Figure, axes, sweeps: dict, heading) -> tuple[float, float, float, float]:
+    """One legend for all panels, above them under the title, in two columns (reader r40g: beside them, six long
+    entries in small type squeezed the panels and their labels; reader r42g: below them, a reader of the top panels at
+    the site's width saw them a screen before their key), its entries wrapped to the longest of
+    :data:`LEGEND_CHARACTERS` that fits; the shading's entry names the panels it is drawn on where that is not all of
+    them. Returns the rectangle, in figure fractions, left for the panels."""
     handles = {label: h for ax in axes for h, label in zip(*ax.get_legend_handles_labels())}
     only = [PANEL_NAMES.get(k, k) for k, sweep in sweeps.items() if _cheaper(sweep).any()]
     if SHADED in handles and len(only) < len(sweeps):
         handles[f"{SHADED} ({' and '.join(only)} panel{'s' if len(only) > 1 else ''} only)"] = handles.pop(SHADED)
     renderer = FigureCanvasAgg(fig).get_renderer()
+    under = heading.get_window_extent(renderer).y0 / fig.bbox.height - 0.005  # just under the title's bottom edge
     for characters in LEGEND_CHARACTERS:  # the widest lines that keep both columns inside the figure
         legend = fig.legend(
-            handles.values(), [fill(label, characters) for label in handles], loc="lower center",
-            bbox_to_anchor=(0.5, 0), ncol=2, fontsize=LEGEND_POINTS, frameon=False, labelspacing=0.6,
+            handles.values(), [fill(label, characters) for label in handles], loc="upper center",
+            bbox_to_anchor=(0.5, under), ncol=2, fontsize=LEGEND_POINTS, frameon=False, labelspacing=0.6,
             handlelength=1.6, handletextpad=0.5, columnspacing=1.0, borderaxespad=0.1,
         )  # fmt: skip
         if legend.get_window_extent(renderer).width <= fig.bbox.width or characters == LEGEND_CHARACTERS[-1]:
             break
         legend.remove()
-    top = legend.get_window_extent(renderer).y1  # the legend's top edge, pixels
-    return (0, top / fig.bbox.height, 1, 1)  # the panels above it; tight_layout keeps them under the title
+    bottom = legend.get_window_extent(renderer).y0  # the legend's bottom edge, pixels
+    heading.set_in_layout(False)  # the rectangle below the legend keeps the panels under the title already
+    return (0, 0, 1, bottom / fig.bbox.height)  # the panels below it
 
 
 PAPER_SCENES = {"obstacles": ((110, 125),), "links": ((2, 2), (4, 4))}  # the paper's 3DC: 110-125 blocks; 2, 4 links
@@ -270,7 +274,7 @@ def _panel(ax, sweep: dict) -> None:
     ax.set_xticks(x, [f"{v:,.0f}" for v in x])  # named once laid out, where they keep apart (name_ticks)
     ax.yaxis.set_minor_locator(NullLocator())
     _plain_log_ticks(ax)
-    ax.set_xlabel(sweep["label"])  # the legend below: a half-width panel holds its label in one line
+    ax.set_xlabel(sweep["label"])  # the legend apart: a half-width panel holds its label in one line
     ax.tick_params(labelsize=TICK_POINTS)
 
 
