@@ -475,6 +475,12 @@ def test_verdict_figure_titles_each_panel_with_the_checkers_verdict_and_marks_wh
     fig = verdict.verdict_figure(checker, np.stack([q, hit]))
     left, right = fig.axes
     assert left.get_title() == "valid" and right.get_title().startswith("in collision:\nlink ")  # FCL proves no gap
+    exact = exact_checker(clutter, robot)  # a robot that turns: its proven gap is a lower bound, and said so
+    Q = robot.sample(np.random.default_rng(0), 200)
+    bounds = exact.clearances(Q, cap=1.0)  # (200,)
+    clear = Q[np.argmax(bounds)]
+    title = verdict.verdict_figure(exact, clear[None]).axes[0].get_title()
+    assert title == f"valid: at least {bounds.max():.2g} clear of every\nblock and wall (a lower bound)"
     assert left.get_xlim() == right.get_xlim() and left.get_ylim() == right.get_ylim()  # review r27a: one window
     assert not _patches(left, "touching link") and not _patches(left, "touched block")
     pairs = contact.touching(robot, clutter, hit)
@@ -496,7 +502,8 @@ def test_a_valid_panel_says_the_gap_its_checker_proves(square_world):
     Q = np.array([[9.5, 11.0], [9.9, 11.0]])  # 0.25 left of the block at [10, 12]^2, then overlapping it
     gap = exact.clearances(Q[:1], cap=1.0)[0]
     left, right = verdict.verdict_figure(exact, Q).axes
-    assert gap > 0 and left.get_title() == f"valid: at least {gap:.2g} clear of every\nblock and wall (a lower bound)"
+    assert gap == pytest.approx(0.25)  # reader r43a: the point robot's square never turns, its bound is its gap
+    assert left.get_title() == "valid: 0.25 clear of the\nnearest block or wall"
     assert right.get_title() == "in collision:\nsquare overlaps block 0 by 0.15"  # the point robot's link, by name
 
 

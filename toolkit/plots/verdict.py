@@ -13,6 +13,7 @@ from matplotlib.figure import Figure
 from matplotlib.patches import Patch, Polygon, Rectangle
 from matplotlib.path import Path
 
+from toolkit.geometry.box_world import is_point_robot
 from toolkit.geometry.checker import CollisionChecker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
@@ -45,7 +46,7 @@ def verdict_figure(
     in the title, numbered as the arrays are: "platform touches block 11 (desk)" (review r30a), or "square overlaps
     block 0 by 0.2" with a 2D link's part inside the block filled light (review r31a); a valid one's title
     gives its clearance where the checker proves one, a lower bound on the gap ("valid: at least 0.15 clear of every
-    block and wall (a lower bound)", reader r42a: read as the gap itself).
+    block and wall (a lower bound)", reader r42a: read as the gap itself), the gap itself for the point robot.
     ``columns`` panels a row (all of them by default; reader r41a: three panels a row were too small to read the
     first check by), the key in a row's empty place or under the panels."""
     robot, workspace = checker.robot, getattr(checker, "workspace", None)
@@ -128,9 +129,15 @@ def _key(fig: Figure, axes, valid: np.ndarray, filled: bool, place=None) -> list
 def _valid_title(checker: CollisionChecker, q: np.ndarray) -> str:
     """A valid panel's title, with the checker's clearance where it proves one: a hairline gap is invisible at the
     page's width, and a panel titled "valid" that looks touching needs its gap said (review r29a); called a lower bound,
-    since the true gap can be wider (reader r42a)."""
-    gap = float(checker.clearances(q[None], cap=1.0)[0])
-    return f"valid: at least {gap:.2g} clear of every\nblock and wall (a lower bound)" if gap > 0 else "valid"
+    since the true gap can be wider (reader r42a), except for the point robot, whose square never turns: the distance
+    between axis-aligned boxes that bounds it is its gap (reader r43a: the first check's 0.2 is exact)."""
+    cap = 1.0
+    gap = float(checker.clearances(q[None], cap=cap)[0])
+    if gap <= 0:
+        return "valid"
+    if is_point_robot(checker.robot) and gap < cap:
+        return f"valid: {gap:.2g} clear of the\nnearest block or wall"
+    return f"valid: at least {gap:.2g} clear of every\nblock and wall (a lower bound)"
 
 
 def _outline_touching(
