@@ -996,6 +996,27 @@ def test_chapter_03_fails_an_opening_bullet_typing_other_numbers_than_its_table(
     assert problems(CH03, chapter_03(0.25, 0.25, words=verdict.format(54, 87.5))) == [  # reader r36c: 55 % beside 87.5
         "03: the verdict types 54 % and 87.5 %; the table gives (55.0, 87.5)"
     ]
+    now = "scores {} % balanced accuracy on unseen 2DS workspaces, where the paper's TPR and TNR give {} %. The main"
+    assert problems(CH03, chapter_03(0.25, 0.25, words=now.format(55, 87.5))) == []  # the verdict's words (r43c)
+    assert problems(CH03, chapter_03(0.25, 0.25, words=now.format(54, 87.5))) == [
+        "03: the verdict types 54 % and 87.5 %; the table gives (55.0, 87.5)"
+    ]
+
+
+def test_chapter_03_types_the_ablation_of_docs_fidelity():
+    """Reader r43c: the verdict's cause and "Why so poor?" quote docs/fidelity.md section 4's 2DS rows (unseen
+    balanced accuracy): dropout and 1000 workspaces (row 6), a CAE that generalizes (row 2 against row 0), the 64-32
+    MLP (row 7)."""
+    fidelity = (ROOT / "docs" / "fidelity.md").read_text()
+    table = fidelity[fidelity.index("### 2DS") : fidelity.index("### 3DC-7")]
+    balanced = {
+        int(m[1]): float(m[2]) for m in re.finditer(r"^\| (\d) \|[^|]*\|[^|]*\|[^|]*\| ([\d.]+) /", table, re.M)
+    }
+    text = " ".join(markdown_of(ROOT / "notebooks" / CH03).split())
+    assert f"with 1000 workspaces it reaches {balanced[6]:.0f} %" in text
+    assert f"a CAE that generalizes gives only {balanced[2] - balanced[0]:.0f} points" in text
+    assert f"lifts the MLP only {balanced[2] - balanced[0]:.0f} points" in text
+    assert f"it reaches {balanced[6]:.0f} % balanced accuracy, and a 64-32 MLP {balanced[7]} %" in text
 
 
 def test_chapter_03_fails_a_balanced_accuracy_or_an_opening_verdict_its_numbers_do_not_bear():

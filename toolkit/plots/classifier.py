@@ -353,7 +353,7 @@ def _mistake_handles(blocks: Mapping[int, int]) -> list:
     one per ``k x k`` cells holding any (review r18b: the conservative circles along the blocks read as a border)."""
     per = {code: f"\none per {k} x {k}-cell tile holding any" if k > 1 else "" for code, k in blocks.items()}
     return [
-        (_dots(), "P(valid) = threshold (white dots):\nthe lighter side is kept"),
+        (_dots(), "P(valid) = threshold: white dots\nringed dark (dark dashes on white);\nthe lighter side is kept"),
         (_mistake_line(3), f"dangerous mistake: kept, in\ncollision (squares){per[3]}"),
         (_mistake_line(1), f"conservative mistake: rejected,\nfree (circles){per[1]}"),
     ]
