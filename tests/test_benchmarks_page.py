@@ -164,7 +164,8 @@ def test_the_opening_names_the_statistic_of_no_saving_and_counts_the_means():
     assert (
         "So in planning against the compiled checker, the larger `strong` network shortened no cell's queries of the "
         "paper's Algorithm 1 (by the median of each query's own time ratio, with / without), on which this page's "
-        "planning verdicts rest" in " ".join(LEAD.split())
+        "planning verdicts rest"
+        in " ".join(LEAD.split())
         and "A *cell*: one scenario with one sampler." in flat
     )
     # reader r41g, benchmarks 1: the planning answer as a 3-row table, one statistic (each query's own ratio; the lazy
@@ -182,7 +183,10 @@ def test_the_opening_names_the_statistic_of_no_saving_and_counts_the_means():
     stage = column("sampling's mean time: cells shorter / tied / longer")
     expected = {
         "Algorithm 1, compiled (5 December)": (counts(own), sampling(algorithm_1)),
-        "lazy PRM, compiled (3 December, that day's slower compiled checker)": (counts(medians) + " (medians)", sampling("strong")),
+        "lazy PRM, compiled (3 December, that day's slower compiled checker)": (
+            counts(medians) + " (medians)",
+            sampling("strong"),
+        ),
         "Algorithm 1, python-fcl (5 December)": (counts(fcl_own), sampling(FCL_ALIKE)),
     }
     assert {r: (rows[r], stage[r]) for r in rows} == expected
@@ -1375,12 +1379,12 @@ def test_reader_r43g_bands_defined_once_the_sweep_s_ratio_reconciled_and_the_rac
     at = batch["values"].index(10000)
     sweep = batch["learned_us"][at] / batch["exact_us"][at]
     table = column(NETWORK_RATIO)["3DC-9"]
-    assert (
-        f"Its ratio network / default exact, about {sweep:.1f} at 10,000 a call, sits below the table's {table} for "
-        'the same reason; both say "network dearer".' in flat
-    ) and sweep > 1 and numbers(table)[0] > 1
+    said = (
+        f"Its ratio network / default exact, about {sweep:.1f} at 10,000 a call, sits below the table's {table} "
+        'for the same reason; both say "network dearer".'
+    )
+    assert said in flat and sweep > 1 and numbers(table)[0] > 1
     race = " ".join(RACE.split())
     assert "against it, in the run of 3 December on that day's slower compiled checker, a network took longer" in race
-    assert "The Results page headlines Algorithm 1 to compare with the paper's Table 3; the stronger test is the lazy" in (
-        race
-    )
+    headline = "The Results page headlines Algorithm 1 to compare with the paper's Table 3; the stronger test is"
+    assert headline in race
