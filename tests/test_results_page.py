@@ -52,8 +52,8 @@ def test_the_summary_is_what_the_tables_give():
         "**In short: does an accurate network inside the paper's Algorithm 1 save planning time? No. With our fast "
         "compiled checker the network was the dearer check: by each query's own ratio, 9 of 16 cells slower (5 beyond "
         "the noise band), none faster. With python-fcl, a slow checker, sampling is too small a share of a query: by "
-        "the same ratio, 3 of 16 cells faster (2 beyond the noise band), none slower. On unseen workspaces, the paper's Tables 1 and 2 do not reproduce "
-        "either.**"
+        "the same ratio, 3 of 16 cells faster (2 beyond the noise band), none slower. On unseen workspaces, the "
+        "paper's Tables 1 and 2 do not reproduce either.**"
     )
     assert "- *each query's own ratio*: what the answer's counts read" in key
     # reader r43f, item 9: the borrowed band said once, under the table of bands; a pointer under the counts

@@ -259,9 +259,7 @@ def paper_sampling(tables: Tables) -> str:
         f"every {' and '.join(invalid)} sample, so there its first round of sampling keeps no sample, and a query "
         "whose straight edge from start to goal is blocked samples again, in rounds that Algorithm 1's auxiliary "
         f"sampler checks exactly, as without prediction: our reading of those scenarios' {len(lost) - len(others)} "
-        "losses"
-        + (f"; the other {len(others)} ({', '.join(others)}) it does not explain" if others else "")
-        + "."
+        "losses" + (f"; the other {len(others)} ({', '.join(others)}) it does not explain" if others else "") + "."
     )
 
 

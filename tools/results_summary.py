@@ -111,7 +111,8 @@ def key(tables: Tables) -> str:
         "“invalid”",
         "*`paper` preset*: that recipe as we read it",
         "*`strong` preset*: ours, and not the paper's CAE+MLP: its MLP reads the occupancy around the robot's base "
-        "cell and where its link boxes are instead of the code. It is the fair test of the claim, that an accurate network saves time, "
+        "cell and where its link boxes are instead of the code. It is the fair test of the claim, that an accurate "
+        "network saves time, "
         f"because it is accurate: right {span(balanced)} % of the time on unseen workspaces' balanced samples, where "
         "the `paper` MLP is at chance (Table 2). The *lazy-PRM network* is a second `strong` network, raced against "
         "the lazy PRM (the four runs: [How these results were made](#how-these-results-were-made))",
@@ -149,12 +150,14 @@ def short(tables: Tables) -> str:
         + f"by each query's own ratio, {tally(fast[2], fast_far[2], 'slower', sum(fast))}, "
         f"{tally(fast[0], fast_far[0], 'faster')}. With python-fcl, a slow checker, "
         + ("sampling is too small a share of a query: " if small else "")
-        + f"by the same ratio, {tally(read[0], beyond[0], 'faster', len(slow))}, {tally(read[2], beyond[2], 'slower')}. "
+        + f"by the same ratio, {tally(read[0], beyond[0], 'faster', len(slow))}, "
+        f"{tally(read[2], beyond[2], 'slower')}. "
         f"{tables_said(tables)}.**"
     )
     dashes = (  # reader r39f, contradiction 7: the dashes explained in one line
         "A “—”: no query's own ratio was recorded (the paper prints means; our `paper`-preset run kept means and "
-        f"medians), and the paper gives no noise band.{borrowed(tables)}{not_prediction(tables)}{ceiling(tables)}{means_saving(tables)}"
+        f"medians), and the paper gives no noise band.{borrowed(tables)}{not_prediction(tables)}{ceiling(tables)}"
+        f"{means_saving(tables)}"
         f"{means_border(tables)}"
     )
     return f"{answer}\n\n{key(tables)}\n\n{counts(tables)}\n\n{dashes}\n\n{bands(tables)}"
