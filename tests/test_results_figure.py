@@ -347,5 +347,8 @@ def test_figures_2_and_3_take_no_verdict_colour_no_square_like_plus_and_draw_the
         bands = [patch.get_zorder() for patch in ax.patches]
         assert bands and all(line.get_zorder() > max(bands) for line in points)
         for line in [*points, *handles]:
-            assert str(line.get_marker()) not in ("P", "h", "s", "o")
+            assert str(line.get_marker()) not in ("P", "h", "s", "o", "^", "v")  # reader r43f: no triangle either
             assert not {str(line.get_markerfacecolor()).lower(), str(line.get_color()).lower()} & blues
+    # reader r43f, figures: the python-fcl series in a colour Figure 1 never uses (nor orange, vermillion's neighbour)
+    fcl = [h for h in handles if "python-fcl" in str(h.get_label())]
+    assert fcl and all(str(h.get_color()).lower() not in (OKABE_ITO["orange"], OKABE_ITO["vermillion"]) for h in fcl)

@@ -50,13 +50,21 @@ def test_the_summary_is_what_the_tables_give():
     # r42f, contradictions 1 and 8: both checkers counted by ONE RULE (tie band, then beyond the noise band), "unseen"
     assert answer == (
         "**In short: does an accurate network inside the paper's Algorithm 1 save planning time? No. With our fast "
-        "compiled checker the network was the dearer check: 9 of 16 cells slower (5 beyond the noise band), none "
-        "faster. With python-fcl, a slow checker, sampling is too small a share of a query: 3 of 16 cells faster (2 "
-        "beyond the noise band), none slower. On unseen workspaces, the paper's Tables 1 and 2 do not reproduce "
-        "either.**"
+        "compiled checker the network was the dearer check: by each query's own ratio, 9 of 16 cells slower (5 beyond "
+        "the noise band), none faster. With python-fcl, a slow checker, sampling is too small a share of a query: by "
+        "the same ratio, 3 of 16 cells faster (2 beyond the noise band), none slower. On unseen workspaces, the "
+        "paper's Tables 1 and 2 do not reproduce either.**"
     )
     assert "- *each query's own ratio*: what the answer's counts read" in key
-    assert "borrowed from the compiled run" in said
+    # reader r43f, item 9: the borrowed band said once, under the table of bands; a pointer under the counts
+    assert said.count("borrowed from the compiled run") == 1
+    assert said.index("borrowed from the compiled run") > said.index("| band near 1 |")
+    assert "The python-fcl row reads borrowed noise bands (the table of bands below)." in said
+    # reader r43f, contradiction 1: what the `strong` MLP reads, the same words as the provenance (encoding.py)
+    assert "its MLP reads the occupancy around the robot's base cell and where its link boxes are" in key
+    assert "occupancy around the robot's base cell and where its link boxes are (forward kinematics)" in PAGE
+    # reader r43f, contradiction 9: the tie band printed as the counts read it
+    assert "| tie band | 0.90 < r < 1.10 | our 10 % rule: strictly inside, a tie |" in said
     # reader r42f, contradictions 5 and 7: the paper's statistic as our reading, with its count; 2DS not compiled
     assert "our reading of the paper's statistic (25 of its 32 entries agree)" in key
     assert "in 2DS, the 2D point robot, our exact check is numpy point checks, not compiled" in key
@@ -69,9 +77,11 @@ def test_the_summary_is_what_the_tables_give():
         and "| 2 / 12 / 2 | 1 / 0 | 3 / 13 / 0 | 2 / 0 |" in tables
     )
     assert "| 8 / 2 / 6 | 3 / 6 | — | — |" in tables  # reader r41f, item 9: beyond the band by means, every run
-    assert "By means, 3DO BT 0.84 (python-fcl) lies within 0.01 of the band's edge: borderline." in said
+    # reader r43f, contradiction 10: on the edge, printed, is inside (as counted)
+    assert "By means, 3DO BT (python-fcl) 0.84 lies exactly on the band's lower edge: inside." in said
     # reader r39f, contradiction 7: the dashes said in one line under the table
     assert "\n\nA “—”: no query's own ratio was recorded (the paper prints means;" in said
+    assert "kept means and medians), and the paper gives no noise band." in said  # reader r43f, contradiction 8
     counts = "|" + tables.partition("\n\n")[0]
     assert len(counts.strip().splitlines()) == 6  # a header, its rule and four rows: the bands under the dashes' line
     # reader r35f, item 1: the `paper`-preset network's row, its counts Figure 2's; reader r36f, item 7: "not by the
@@ -463,8 +473,8 @@ def test_the_exact_planners_times_name_the_tables_they_come_from():
     runs = {
         "the `paper` section's times behind Table 3": _times(TABLES, "paper", "total without"),
         "the `strong` section's": _times(TABLES, "strong", "total without"),
-        "the `paper` recipe on 1–2 December, [now history](benchmarks_history.md#2026-12-06-moved-off-the-results-page-"
-        "the-paper-recipe-on-12-december)": _times(HISTORY, "before25", "total without"),
+        # reader r43f, contradiction 7: the python-fcl run this page uses, not the 1-2 December recipe (history)
+        "the python-fcl run's times behind Table 3": _times(TABLES, checker_scope.SLOW, "total without"),
     }
     for source, times in runs.items():
         (o_low, o_high, c_low, c_high) = claim(
@@ -688,6 +698,12 @@ def test_the_arithmetic_of_the_saving_is_the_times_behind_table_3():
         "network answers “invalid” to every 3DC-9 and 3DO"
     )
     assert said in paper
+    # reader r43f, contradictions 5 and 6: what ends the rounds; which losses that reading covers, the rest said so
+    assert "rounds that Algorithm 1's auxiliary sampler checks exactly, as without prediction" in paper
+    assert "those scenarios' 6 losses; the other 4 (2DS BS 1.60," in paper and "it does not explain." in paper
+    # reader r43f, contradiction 7: the python-fcl run this page uses, its times behind Table 3
+    assert "python-fcl on both sides (the python-fcl run's times behind Table 3), 0.15–17 s in 3DO" in PAGE
+    assert "0.077–3.2 s in 3DC" in PAGE and "0.2–14 s" not in PAGE
     assert why.startswith("- *How little shortening sampling saves*: Worked through for")
     # reader r32f, item 4: one worked example, its product the cell's share of sampling saved, Table 3's total beside;
     # reader r36f, contradiction 1: the cut unrounded, so the product is the table's top (16 %), not 0.338 × 0.49
@@ -885,8 +901,8 @@ def test_the_five_bands_near_1_are_set_side_by_side_where_the_first_appears():
     edge = results_noise.NOISE_EDGE * results_noise.reach_of(TABLES)
     said = results_noise.bands(TABLES)
     assert said in TEXT and TEXT.index(said) < TEXT.index("**Figure 1") < TEXT.index("## ")
-    for low, high in ((0.9, 1.1), (1 - edge, 1 + edge)):
-        assert f"| {low:.2f}–{high:.2f} |" in said
+    assert "| 0.90 < r < 1.10 |" in said  # reader r43f, contradiction 9: printed as the counts read it
+    assert f"| {1 - edge:.2f}–{1 + edge:.2f} |" in said
     # reader r41f, contradictions 1 and 8: the two other bands in this table too, each with why it is (not) doubled
     assert f"| {floor.means[0]:.2f}–{floor.means[1]:.2f} |" in said and f"| {floor.medians[0]:.2f}–" in said
     assert (  # ONE RULE of issue #45 (reader r42f, contradiction 3)

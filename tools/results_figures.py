@@ -99,8 +99,11 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
 
 MARKER_SCALE = 0.85  # Figures 2-3's markers, a little smaller than means_grid draws them, so neighbours stand apart
 LOOKS = {  # reader r42f, figures: no blue (Figure 1's "costs time") and no square-like plus (its "tie" square)
-    "ours, paper-preset network, compiled checker of 2 December": (LINE_COLORS[3], "x"),  # bluish green, thin cross
-    "ours, accurate strong network, python-fcl on both sides": (OKABE_ITO["orange"], "v"),  # orange, downward
+    # reader r43f, figures: python-fcl's orange downward triangle read as Figure 1's black "saves" triangle, its orange
+    # as Figure 1's vermillion "tie": now a colour and a shape Figure 1 never uses, bluish green pentagons; the
+    # paper-preset series takes the orange, as a thin cross, a shape no Figure 1 square or triangle resembles
+    "ours, paper-preset network, compiled checker of 2 December": (OKABE_ITO["orange"], "x"),  # orange, thin cross
+    "ours, accurate strong network, python-fcl on both sides": (LINE_COLORS[3], "p"),  # bluish green, pentagon
 }  # the other two keep means_grid's look: the paper's grey diamonds, the `strong` network's reddish purple stars
 CROSS_WIDTH = 2.4  # points: a thin cross is all edge, drawn this thick so it reads beside the filled markers
 MARKER_Z = 4  # over every band and hatch (reader r42f: Figure 3's hatching read as covering the markers inside it)
