@@ -417,7 +417,8 @@ def test_the_index_table_counts_the_recorded_cells():
     said = (
         # reader r42e, home 2: the means' band as measured, and why (not "one rule" with the doubled one)
         f"**One noise band of means, for savings and losses alike.** It is {floor[0]:.2f}–{floor[1]:.2f}, how far "
-        "timing alone moved a ratio of mean times, used as measured: one slow query moves a mean, so it already lies "
+        # reader r43e, home 2: why this band is not doubled, in the one rule's words
+        "timing alone moved a ratio of mean times, used as measured, not doubled: its measured reach already lies "
         f"past the tie band. Inside it lie {saved_in} of the compiled checker's {saved} savings by means and "
         f"{lost_in} of its {lost} losses, and {fcl_saved_in} of python-fcl's {fcl_saved} savings and both its "
         "losses. The compiled "
