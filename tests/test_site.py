@@ -785,6 +785,18 @@ def test_the_index_gives_each_scenarios_training_grids():
     assert scenarios.get("3dc9").n_seen == scenarios.get("3dc7").n_seen
 
 
+def test_the_index_says_the_python_fcl_count_once_above_its_brief():
+    """Reader r43e, home lift 5: "What we found, in brief" repeated the count of python-fcl's savings given twice
+    above; its bullet is the bold line and a link to the numbers."""
+    brief = README.read_text().partition("\n## What we found, in brief\n")[2].partition("\n## ")[0]
+    bullet = next(b for b in brief.split("\n- ") if "is needed for skipping checks to pay" in b)
+    assert " ".join(bullet.split()) == (
+        "**A network answer cheaper than an exact check is needed for skipping checks to pay, and is not enough** "
+        "([the numbers behind the answer](#the-numbers-behind-the-answer))."
+    )
+    assert "of 16" not in brief and "clear win" not in README.read_text()
+
+
 README = ROOT / "README.md"
 
 
