@@ -457,7 +457,7 @@ def tables(nb) -> list[tuple[list[str], list[list[str]]]]:
 LABELS = ("scenario", "sampler", "what grows", "value", "measured")  # the columns that name a table's row
 # a cell that gives a verdict, then its numbers: "costs time (median 2.24; middle half 1.29–3.50)", "costs time (2.13)"
 VERDICT = re.compile(
-    r"(saves time|costs time|a tie|close: can't tell|about equal|can't tell|network cheaper|network dearer)"
+    r"(saves time|costs time|a tie|close: can't tell|too close to tell|can't tell|network cheaper|network dearer)"
     r"(?:\\\*|\?|†)? \((.+)\)"
 )
 
@@ -506,8 +506,8 @@ def _checked_verdicts(header: list[str], row: list[str], j: int, moved: bool = F
         return medians
     if header[0] == "measured":  # recorded ratios over many queries
         return {findings.time_verdict(max(numbers[0] + d, 1e-9)) for d in shifts}
-    tie = findings.TIE  # a cost per configuration, by the page's one band (reader r33d: 25 % was a second band)
-    return {costs.cost_word(max(numbers[0] + d, 1e-9), tie) for d in shifts}  # chapter 04's words: "about equal"
+    tie = costs.CLOSE  # a cost per configuration: docs/results.md's 25 % band for chapter 04 (reader r43d)
+    return {costs.cost_word(max(numbers[0] + d, 1e-9), tie) for d in shifts}  # "too close to tell" inside it
 
 
 PLANNED = "with ÷ without: verdict"  # findings.planning_table's verdict column (reader r40d: beside "without / with")
@@ -828,7 +828,8 @@ FAST_BULLET = re.compile(  # chapter04.answer: the median query with each checke
     r"our fast exact checker: (?P<fast>none|\d+) of (?P<total>\d+) scenario–sampler cells faster(?: \(\d+ beyond the "
     r"noise band\))?, (?P<fast_ties>\d+) of \d+ tied, (?P<fast_costs>none|\d+) of \d+ slower(?: \((?P<fast_beyond>\d+) "
     r"beyond the noise band\))?\. Against python-fcl: (?P<slow>none|\d+) of \d+ faster(?: \(\d+ beyond the noise "
-    r"band\))?, (?:never slower|\d+ of \d+ slower \(\d+ beyond the noise band\))\. By mean times, Table 3's statistic: "
+    r"band\))?, (?:never slower by the median query|\d+ of \d+ slower \(\d+ beyond the noise band\))\. By mean times, "
+    r"Table 3's statistic: "
     r"(?P<means_fast>none|\d+) of \d+ faster(?: \(\d+ beyond the noise band\))? with our fast checker, "
     r"(?P<means_slow>none|\d+) of \d+ faster(?: \(\d+ beyond the noise band\))? with python-fcl; Table 3 saves 10 % "
     r"or more in (?P<papers>\d+) of \d+\."
