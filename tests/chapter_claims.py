@@ -507,7 +507,8 @@ def _checked_verdicts(header: list[str], row: list[str], j: int, moved: bool = F
     if header[0] == "measured":  # recorded ratios over many queries
         return {findings.time_verdict(max(numbers[0] + d, 1e-9)) for d in shifts}
     tie = costs.CLOSE  # a cost per configuration: docs/results.md's 25 % band for chapter 04 (reader r43d)
-    return {costs.cost_word(max(numbers[0] + d, 1e-9), tie) for d in shifts}  # "too close to tell" inside it
+    words = {costs.cost_word(max(numbers[0] + d, 1e-9), tie) for d in shifts}  # "too close to tell" inside it
+    return words | ({costs.NEAR} if costs.ABOUT in words else set())  # a crossover table's words for the same
 
 
 PLANNED = "with ÷ without: verdict"  # findings.planning_table's verdict column (reader r40d: beside "without / with")
@@ -595,6 +596,7 @@ def figures_shown(nb, calls: tuple[str, ...], chapter: str) -> list[str]:
 DEAR_SAID = (  # section 6's written reading of the cells where prediction cost the most (review r25a: never explained)
     "Sampling took longer with prediction in each of these cells",
     "the time after sampling grew too",  # review r30d: it holds the encoding, which is the network's work
+    "most of the extra mean time came after sampling",  # the top's Why, for most of the cells (reader r43d, 1)
 )
 
 
@@ -611,6 +613,7 @@ def _dear_cells(nb, cells: list[costs.Cost] | None = None) -> list[str]:
     grew = {
         DEAR_SAID[0]: all(c.sampling[1] > c.sampling[0] for c in cells),
         DEAR_SAID[1]: all(c.after[1] > c.after[0] for c in cells),
+        DEAR_SAID[2]: 2 * sum(c.after_share > 0.5 for c in cells) > len(cells),
     }
     written = prose(nb)
     problems += [
