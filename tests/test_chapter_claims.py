@@ -249,12 +249,12 @@ def chapter_04() -> dict:
             "MD:" + chapter04.by_means(),  # section 6, beside the means figure: the counts by means
             "MD:" + chapter04.edge_line(),  # section 6: what to take from its table
         ),
-        "MD:" + costs.throughput_table({"2DS": rates, "3DC-7": rates}, 10_000, tie=findings.TIE),
+        "MD:" + costs.throughput_table({"2DS": rates, "3DC-7": rates}, 10_000),
         (
             "MD:"
-            + findings.crossover_table(crossed, tie=findings.TIE)
+            + findings.crossover_table(crossed, tie=costs.CLOSE)
             + "\n\n"
-            + findings.crossover_counts(crossed, tie=findings.TIE),
+            + findings.crossover_counts(crossed, tie=costs.CLOSE),
             "MD:" + costs.cost_table(),  # section 6: where the recorded costs' extra time went
         ),
         eager_counts(),
@@ -425,6 +425,10 @@ def test_chapter_04_says_where_the_recorded_costs_went_only_as_the_record_has_it
     fell = [costs.Cost("3DC-7", "OB", 1.5, (0.004, 0.010), (0.034, 0.030))]  # after sampling: 30 -> 20 ms
     assert chapter_claims._dear_cells(nb, fell) == [
         f"04: the prose says '{chapter_claims.DEAR_SAID[1]}'; the record: {fell}"
+    ]
+    sampled = [costs.Cost("3DC-7", "OB", 1.5, (0.004, 0.010), (0.034, 0.041))]  # sampling: 6 of the extra 7 ms
+    assert chapter_claims._dear_cells(nb, sampled) == [  # reader r43d, 1: the top's Why says "most" came after
+        f"04: the prose says '{chapter_claims.DEAR_SAID[2]}'; the record: {sampled}"
     ]
     assert all(c.sampling[1] > c.sampling[0] and c.after_share > 0 for c in costs.dear_cells())
 

@@ -109,9 +109,9 @@ def test_the_answer_is_two_plain_sentences_read_from_the_record():
     assert chapter04.answer() == (
         "**No.** With an accurate network, Algorithm 1's median query with prediction, against our fast exact checker: "
         "none of 16 scenario–sampler cells faster, 7 of 16 tied, 9 of 16 slower (5 beyond the noise band). Against "
-        "python-fcl: 3 of 16 faster (2 beyond the noise band), never slower. By mean times, Table 3's statistic: 3 of "
-        "16 faster (1 beyond the noise band) with our fast checker, 2 of 16 faster (1 beyond the noise band) with "
-        "python-fcl; Table 3 saves 10 % or more in 10 of 16."  # reader r42d: counted by the one rule of every page
+        "python-fcl: 3 of 16 faster (2 beyond the noise band), never slower by the median query. By mean times, "
+        "Table 3's statistic: 3 of 16 faster (1 beyond the noise band) with our fast checker, 2 of 16 faster (1 beyond "
+        "the noise band) with python-fcl; Table 3 saves 10 % or more in 10 of 16."  # reader r42d: the one rule
     )
     assert chapter04.by_means() == (
         "**By mean times**, the paper's statistic, prediction saved time in 3 cells with our fast checker and 2 with "
@@ -121,10 +121,10 @@ def test_the_answer_is_two_plain_sentences_read_from_the_record():
     assert chapter04.mark_line() == (  # reader r42d: one meaning for \*, each band built in the results page's words
         "\\* on a verdict means one thing on this page: inside the noise band of its statistic, so no clear evidence "
         "(† marks the other cautions of sections 3 and 5, named there). A noise band comes from timing one computation "
-        "twice. For the median query, drawn here: 0.82–1.18, twice the reach timing alone gave it (0.96–1.09), doubled "
-        "because a single repeat understates timing noise and as measured it would lie inside the tie band. For a "
-        "ratio of mean times (section 6's figure) 0.84–1.24 and for a ratio of medians 0.80–1.30: the reach as "
-        "measured, already past the tie band (`docs/results.md`)."
+        "twice. For the median query, drawn here: 0.82–1.18 = 1 ± 2 × 0.09, twice the reach timing alone gave it "
+        "(0.96–1.09; its larger side, both ways), doubled because a single repeat understates timing noise and as "
+        "measured it would lie inside the tie band. For a ratio of mean times (section 6's figure) 0.84–1.24 and for a "
+        "ratio of medians 0.80–1.30: the reach as measured, already past the tie band (`docs/results.md`)."
     )
     assert "3 of these 4 cells" in costs.cost_table()  # the same count, under the table it comes from
     facts = checker_scope.slow_checker()

@@ -189,7 +189,7 @@ def answer(tables: Tables | None = None) -> str:
         beyond = n[2] if len(n) > 2 else n[0] - n[1]
         return f"{n[0] or 'none'} of {total} {what}" + f" ({beyond} beyond the noise band)" * bool(n[0])
 
-    slower = f", {count(slow[COSTS], 'slower')}" if slow[COSTS][0] else ", never slower"
+    slower = f", {count(slow[COSTS], 'slower')}" if slow[COSTS][0] else ", never slower by the median query"
     return (
         f"**{word}** With an accurate network, Algorithm 1's median query with prediction, against our fast exact "
         f"checker: {count(fast[SAVES], 'scenario–sampler cells faster')}, {fast[TIES][0]} of {total} tied, "
@@ -232,11 +232,11 @@ def mark_line(tables: Tables | None = None) -> str:
     return (
         f"{costs.MARK} on a verdict means one thing on this page: inside the noise band of its statistic, so no clear "
         "evidence († marks the other cautions of sections 3 and 5, named there). A noise band comes from timing one "
-        f"computation twice. For the median query, drawn here: {band('own')}, twice the reach "
-        f"timing alone gave it ({band('measured')}), doubled because a single repeat understates timing noise and as "
-        f"measured it would lie inside the tie band. For a ratio of mean times (section 6's figure) {band('means')} "
-        f"and for a ratio of medians {band('medians')}: the reach as measured, already past the tie band "
-        "(`docs/results.md`)."
+        f"computation twice. For the median query, drawn here: {band('own')} = 1 ± 2 × {costs.timing_reach(tables):.2f}"
+        f", twice the reach timing alone gave it ({band('measured')}; its larger side, both ways), doubled because a "
+        "single repeat understates timing noise and as measured it would lie inside the tie band. For a ratio of mean "
+        f"times (section 6's figure) {band('means')} and for a ratio of medians {band('medians')}: the reach as "
+        "measured, already past the tie band (`docs/results.md`)."
     )
 
 

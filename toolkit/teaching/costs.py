@@ -287,7 +287,7 @@ def over_sampling(preset: str, tables: Tables | None = None) -> list[tuple[str, 
     ]
 
 
-ABOUT = "about equal"  # chapter 04's word for a cost ratio inside the tie band (reader r34d: not "can't tell")
+ABOUT = "too close to tell"  # chapter 04's words inside its 25 % cost band, as docs/results.md's (reader r43d)
 
 
 def cost_word(ratio: float, tie: float = CLOSE) -> str:
