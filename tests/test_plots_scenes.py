@@ -693,3 +693,15 @@ def test_a_close_ups_marks_over_the_robot_are_found_in_the_box_as_drawn(crossing
     assert ax.get_position(original=True).bounds == panel and over.any() and not over.all()
     FigureCanvasAgg(fig).draw()  # as the page draws it: the box squared
     assert np.array_equal(over, still_panels.over_robot(ax, robot, path[0], points))
+
+
+def test_a_robot_standing_on_the_floor_gets_no_line_down_to_it():
+    """Reader r43e: 3DO's legend named "the robot's base, straight down to the floor" for a youBot on the floor."""
+    office, chain = scenarios.get("3do"), scenarios.get("3dc7")
+    standing = office.robot.sample(np.random.default_rng(1), 5)  # (5, 8) the youBot's base on the floor, any pose
+    assert still_panels.on_floor(office.robot, list(standing), 0.0)
+    assert not still_panels.on_floor(chain.robot, [np.full(chain.robot.dof, 0.5)], -1.0)  # the chain flies
+    fig = Figure()
+    ax = fig.add_subplot(projection="3d")
+    still_panels._floor_cues(ax, office.robot, list(standing), None, 0.0)
+    assert not [line for line in ax.get_lines() if line.get_gid() == "drop"]

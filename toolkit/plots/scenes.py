@@ -40,6 +40,7 @@ from toolkit.plots.still_panels import (
     inside_mask,
     mark_nearest,
     model_words,
+    on_floor,
     over_robot,
     overview,
     overview_step,
@@ -298,7 +299,7 @@ def _overview_words(robot, workspace, poses, samples, trace) -> str:
     text += ", the path of the robot's base and its shadow on the floor, dotted" if trace is not None else ""
     text += (
         f", a thin dash-dot line from the robot's base straight down to the floor{' at each pose' * (len(poses) > 1)}"
-        if poses
+        if poses and not on_floor(robot, list(poses.values()), workspace.lower[2])
         else ""
     )
     if poses:

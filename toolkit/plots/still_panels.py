@@ -99,18 +99,10 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
     for (name, (q, color)), boxes in zip(poses.items(), aabbs):
         ax.plot(*robot_strokes(robot, q).T, color=color, zorder=6.0, gid="robot", **OVERVIEW_ROBOT)
         x, y = boxes[:, :, :2].mean(axis=(0, 1))
-        ax.text(
-            x,
-            y,
-            boxes[:, 1, 2].max() + lift,
-            name,
-            fontsize=8,
-            ha="center",
-            va="bottom",
-            zorder=7.0,
-            path_effects=halo(1.0, ("free",)),
-            gid="pose label",
+        said = dict(
+            fontsize=8, ha="center", va="bottom", zorder=7.0, path_effects=halo(1.0, ("free",)), gid="pose label"
         )
+        ax.text(x, y, boxes[:, 1, 2].max() + lift, name, **said)
     frame_region(ax, workspace)
     extent = workspace.upper - workspace.lower  # (3,)
     ax.set_box_aspect(extent, zoom=FLAT_ZOOM if flat(workspace) else 1.0)  # a flat office: wider, less blank above
@@ -124,15 +116,23 @@ def overview(ax, robot: BoxRobot, workspace: Workspace, poses: dict[str, tuple[n
 
 def _floor_cues(ax, robot: BoxRobot, poses: list[np.ndarray], trace, floor: float) -> None:
     """Depth on a flat picture (reader r20c: the path seemed to dive): the base's ``trace (T, 3)`` cast on the floor
-    at height ``floor``, and a line from the base of each pose ``(dof,)`` straight down to it."""
+    at height ``floor``, and a line from the base of each pose ``(dof,)`` down to it, unless it stands on it."""
     if trace is not None:
         shadow = np.array(trace, dtype=float)  # (T, 3)
         shadow[:, 2] = floor
         ax.plot(*shadow.T, zorder=2.5, gid="shadow", label="shadow on the floor", **SHADOW_STYLE)
-    for k, q in enumerate(poses):
+    for k, q in enumerate(poses if not on_floor(robot, poses, floor) else ()):  # r43e: no drop for 3DO's youBot
         base = robot.link_boxes(np.asarray(q, dtype=float)[None])[0][0, 0]  # (3,) the first link's centre
         down = np.array([base, [base[0], base[1], floor]])  # (2, 3)
         ax.plot(*down.T, zorder=2.5, gid="drop", label="" if k else DROP_LABEL, **DROP_STYLE)
+
+
+def on_floor(robot: BoxRobot, poses: list[np.ndarray], floor: float) -> bool:
+    """Whether the base of every pose ``(dof,)`` stands on the ``floor``: its centre no higher than 1.5 times its own
+    half height (a mobile base; a drop line from it would be a dot)."""
+    centers, rotations, half = robot.link_boxes(np.asarray(poses, dtype=float).reshape(-1, robot.dof))
+    reach = np.abs(rotations[:, 0, 2, :]) @ half[0]  # (P,) the base's half height, as turned
+    return bool(len(poses)) and bool(np.all(centers[:, 0, 2] - floor <= 1.5 * reach))
 
 
 def robot_strokes(robot: BoxRobot, q: np.ndarray) -> np.ndarray:
