@@ -60,7 +60,7 @@ def race_medians(
     medians: dict[str, dict[str, float]], batched: dict[str, dict[str, float]] | None = None, seed: int | None = None
 ) -> Figure:
     """One row per scenario of ``medians`` (``{scenario: {planner: median ms}}``), one filled dot per planner on a
-    log axis; ``batched`` (``{scenario: {OMPL planner: ms}}``) as a hollow dot of the planner's colour and shape.
+    log axis; ``batched`` (``{scenario: {OMPL planner: ms}}``) as a hollow marker of the planner's colour and shape.
     Ours sit a little below each scenario's name, OMPL's a little above, so that near values do not cover each other."""
     scenarios = list(medians)
     planners = list(next(iter(medians.values())))
@@ -134,7 +134,7 @@ def _in_words(medians: dict[str, dict[str, float]], batched: dict[str, dict[str,
     """The figure in words: per scenario, the fastest and the slowest planner and their times."""
     text = f"Dot chart of each planner's median time a query in milliseconds on a log axis{held}, a row a scenario"
     text += ", OMPL's planners a little above the scenario's name and ours a little below"
-    text += "; hollow dots: OMPL's planners with their checks batched, estimated, not timed. " if batched else ". "
+    text += "; hollow markers: OMPL's planners with their checks batched, estimated, not timed. " if batched else ". "
     for s, row in medians.items():
         fast, slow = min(row, key=row.get), max(row, key=row.get)  # type: ignore[arg-type]
         text += f"{s}: fastest {fast}, {_ms(row[fast])} ms; slowest {slow}, {_ms(row[slow])} ms. "
