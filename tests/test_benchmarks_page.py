@@ -197,7 +197,7 @@ def test_the_opening_names_the_statistic_of_no_saving_and_counts_the_means():
     # reader r43g, benchmarks 2: "only" of the savings beyond the noise band, as the fold reads them
     assert (
         f"against python-fcl, {fcl_own.count('less time')} of 16 cells faster ({clear} beyond the noise band); of "
-        f"those {clear} savings, only 3DO BT's is about what sampling allows.** Algorithm 1 ran every query"
+        f"those {clear} savings, only 3DO BT's is, by means, about what sampling allows.** Algorithm 1 ran every query"
         in " ".join(PREDICTION.split())
     )
     # reader r42g, benchmarks 5: the lazy PRM's network named as the second one

@@ -536,8 +536,9 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     assert (
         "Of the two, 3DC-9 OB's is bigger than its sampling stage allows (below), so it is not prediction's. The "
         f"3DO BT saving, {100 * whole:.0f} % by means, is about all that sampling allows there ({bt:.3f} × "
-        f"{cut:.3f} ≈ {100 * bt * cut:.0f} %)."
+        f"{cut:.3f} ≈ {100 * bt * cut:.0f} %). By its own ratio, {clear[1].split()[-1]}, it saved more than that."
     ) in answer
+    assert 1 - float(clear[1].split()[-1]) > bt * cut  # reader r44e, home 2: the own ratio saves past that limit
     assert reach == max(1 - floor[0], floor[1] - 1) and NOISE_EDGE == 2
     # reader r30e, item 3: the saving by means larger than its sampling cut could give, said with the explanation
     bigger = [c for c in apart(tables) if change(1 - c.total) == "less time" and c.total > c.sampling]
