@@ -9,7 +9,7 @@ from pathlib import Path
 
 import pytest
 
-from toolkit.teaching import checker_scope
+from toolkit.teaching import checker_scope, costs
 
 PAGE = (Path(__file__).resolve().parents[1] / "docs" / "benchmarks.md").read_text()
 SUMMARY = " ".join(PAGE.partition("**In short**")[2].partition("\n## ")[0].split())
@@ -507,10 +507,10 @@ FCL_ALIKE = "strong --planner paper --baseline paper-fcl-alike"  # results.md: p
 
 def own_edge() -> float:
     """How far from 1 the Results page's noise band of each query's own ratio reaches (0.18: twice timing's reach)."""
-    from tools import recorded_results, results_noise
+    from tools import recorded_results
 
     tables = recorded_results.parse(recorded_results.RESULTS.read_text())
-    return results_noise.NOISE_EDGE * results_noise.reach_of(tables)
+    return costs.noise_edge(tables)
 
 
 def cells(key: str) -> dict[str, tuple[float, float]]:

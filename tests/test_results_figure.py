@@ -14,7 +14,7 @@ from PIL import Image
 from toolkit.experiments.paper_numbers import IMPROVEMENT
 from toolkit.plots import alt, query_ratios
 from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO
-from toolkit.teaching import checker_scope
+from toolkit.teaching import checker_scope, costs
 from tools import recorded_results, results_figures, results_noise, results_summary, results_words
 
 TEXT = recorded_results.RESULTS.read_text()
@@ -251,7 +251,7 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
     costs = sum(m >= 1.1 for m, _, _ in table.values())  # review r27f, item 2: counted once, in the summary
     said = f"compiled checker, 5 December | 3 / 7 / 6 | 1 / 4 | 0 / {16 - costs} / {costs} |"
     assert said in TEXT  # reader r31f, item 1: the noise edge's cells are the caption's (review r28f's robust count)
-    reach = results_noise.reach_of(recorded_results.parse(TEXT))  # how far timing alone moved a median query
+    reach = costs.timing_reach(recorded_results.parse(TEXT))  # how far timing alone moved a median query
     edge = [f"{n} {s} {m:.2f}" for (n, s), (m, _, _) in table.items() if m >= 1.1 and abs(m - 1) < 2 * reach]
     assert edge and all(cell.split()[-1] in CLAIM.partition("is no clear evidence:")[2] for cell in edge)
     assert "The summary above counts the points." in CLAIM and "costs," not in CLAIM.partition("![")[0]
@@ -311,7 +311,7 @@ def test_figure_1_hatches_the_noise_edge_and_labels_the_band_apart_from_the_1():
     renderer = FigureCanvasAgg(fig).get_renderer()
     fig.draw(renderer)
     (ax,) = fig.axes
-    edge = results_noise.NOISE_EDGE * results_noise.reach_of(recorded_results.parse(TEXT))
+    edge = costs.noise_edge(recorded_results.parse(TEXT))
     hatched = [p for p in ax.patches if p.get_hatch()]
     spans = sorted(
         tuple(sorted({round(y, 6) for y in p.get_path().transformed(p.get_patch_transform()).vertices[:, 1]}))

@@ -7,7 +7,7 @@ import re
 import pytest
 
 from toolkit.experiments import paper_numbers
-from toolkit.teaching import checker_scope, findings, recorded
+from toolkit.teaching import checker_scope, costs, findings, recorded
 from tools import (
     recorded_results,
     results_figures,
@@ -898,7 +898,7 @@ def test_the_five_bands_near_1_are_set_side_by_side_where_the_first_appears():
     at the top, each read from the table "timed twice", and a line on why Figure 1 doubles its floor and Figures 2-3
     do not, whose reasons hold by those numbers."""
     floor = results_noise.noise(TABLES)
-    edge = results_noise.NOISE_EDGE * results_noise.reach_of(TABLES)
+    edge = costs.noise_edge(TABLES)
     said = results_noise.bands(TABLES)
     assert said in TEXT and TEXT.index(said) < TEXT.index("**Figure 1") < TEXT.index("## ")
     assert "| 0.90 < r < 1.10 |" in said  # reader r43f, contradiction 9: printed as the counts read it

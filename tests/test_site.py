@@ -438,9 +438,10 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     the record, so the page cannot drift from it."""
     from toolkit.experiments.paper_numbers import IMPROVEMENT, TIMES
     from toolkit.teaching import recorded
+    from toolkit.teaching.costs import NOISE_EDGE, noise_edge, timing_reach
     from tools.recorded_results import RESULTS, parse
     from tools.results_findings import apart
-    from tools.results_noise import NOISE_EDGE, at_noise_edge, noise, own_intervals, reach_of
+    from tools.results_noise import at_noise_edge, noise, own_intervals
     from tools.results_words import NAMES, change
 
     tables = parse(RESULTS.read_text())
@@ -478,7 +479,7 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     fell = [r for r in own if change(r) == "less time"]
     edge = [c for c in at_noise_edge(own_intervals(tables, FCL_ALIKE), tables) if float(c.split()[-1]) < 1]
     assert len(edge) == 1 and len([r for r in own if r <= 0.9]) == len(fell)
-    floor, reach = noise(tables).own, reach_of(tables)
+    floor, reach = noise(tables).own, timing_reach(tables)
     # reader r32e, contradictions 1-2: a saving inside the noise edge is not counted as clear; the edge derived
     clear = [
         f"{NAMES[s]} {sampler} {r:.2f}"
@@ -497,8 +498,8 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     cells = [
         (s, k, r) for s, row in recorded.query_ratios(recorded.ALGORITHM_1, tables).items() for k, r in row.items()
     ]
-    near = max((c for c in cells if c[2] < 1 + NOISE_EDGE * reach_of(tables)), key=lambda c: c[2])
-    assert 1 + NOISE_EDGE * reach_of(tables) - near[2] <= 0.015
+    near = max((c for c in cells if c[2] < 1 + noise_edge(tables)), key=lambda c: c[2])
+    assert 1 + noise_edge(tables) - near[2] <= 0.015
     # reader r40e, home contradiction 1: the text counts by the figure's rule (every triangle, every circle), those
     # beyond the noise band in brackets; the band's derivation in a fold
     # reader r41e, home 2: the counts said once, in the caption, by the figure's two bands; the clear cells named here
@@ -651,9 +652,10 @@ def test_the_index_gives_one_statistic_a_line_behind_its_answer():
     # reader r36e, home lift 1: one statistic a sentence; reader r37e, home 1: the whole query's alone, its terms
     # defined above it, the sampling stage's by means in the fold below the table
     assert len(fast) == 1 and fast[0] == "2DS BT, 0.81" and "at the noise edge" not in answer
-    from tools.results_noise import NOISE_EDGE, noise, reach_of
+    from toolkit.teaching.costs import noise_edge
+    from tools.results_noise import noise
 
-    edge = (1 - NOISE_EDGE * reach_of(tables), 1 + NOISE_EDGE * reach_of(tables))
+    edge = (1 - noise_edge(tables), 1 + noise_edge(tables))
     clear = [r for row in recorded.query_ratios(fcl, tables).values() for r in row.values() if r < edge[0]]
     evidence = f"Beyond it lie {len(clear)} of the triangles"
     floor = noise(tables).own  # reader r42e, home 1: twice timing's reach, not "as far as timing alone could put"

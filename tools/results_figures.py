@@ -18,10 +18,10 @@ from matplotlib.ticker import NullFormatter, NullLocator
 from toolkit.experiments.paper_numbers import IMPROVEMENT
 from toolkit.plots import alt, query_ratios
 from toolkit.plots.palette import LINE_COLORS, OKABE_ITO
-from toolkit.teaching import checker_scope, findings, recorded
+from toolkit.teaching import checker_scope, costs, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
-from tools.results_noise import NOISE_EDGE, at_noise_edge, noise, own_intervals, reach_of
+from tools.results_noise import at_noise_edge, noise, own_intervals
 from tools.results_words import NAMES, change
 
 FIGURES = {kind: RESULTS.parent / f"results_table3_{kind}.png" for kind in ("total", "sampling")}  # Table 3's columns
@@ -170,7 +170,7 @@ def claim_figure(text: str) -> Figure:
         tie=findings.TIE,
         slow=own_intervals(tables, checker_scope.SLOW),
         series=CLAIM_SERIES,
-        edge=NOISE_EDGE * reach_of(tables),  # review r30f, item 2: the noise edge drawn, not only named
+        edge=costs.noise_edge(tables),  # review r30f, item 2: the noise edge drawn, not only named
         width=CLAIM_WIDTH,
     )
 

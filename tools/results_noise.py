@@ -8,10 +8,9 @@ from __future__ import annotations
 import re
 from typing import NamedTuple
 
-from toolkit.teaching import findings, recorded
+from toolkit.teaching import costs, findings, recorded
 from toolkit.teaching.checker_scope import SLOW
 from toolkit.teaching.costs import NOISE_EDGE
-from toolkit.teaching.costs import timing_reach as reach_of  # chapter 04 reads the same rule
 from toolkit.teaching.recorded import Tables
 from tools.results_words import NAMES, change
 
@@ -46,57 +45,51 @@ def own_intervals(tables: Tables, key: str = recorded.ALGORITHM_1) -> dict[str, 
 
 
 class Noise(NamedTuple):
-    """How far timing alone moved each statistic: the table "timed twice" (one computation, Algorithm 1 without
-    prediction, timed twice in turn), its lowest and highest ratio per column."""
+    """One band near 1 per statistic, ``(low, high)``, from the table "timed twice" (one computation, Algorithm 1
+    without prediction, timed twice in turn)."""
 
     own: tuple[float, float]  # the median of each query's own ratio
     means: tuple[float, float]  # the ratio of the means
     medians: tuple[float, float]  # the ratio of the two medians
 
 
+def measured(tables: Tables) -> Noise:
+    """How far timing alone moved each ratio in the `strong --planner paper` run: its lowest and highest value."""
+    _ = next(t for heading, t in tables[recorded.ALGORITHM_1].items() if "timed twice" in heading)  # that run's own
+    return Noise(*(costs.measured_reach(tables, kind) for kind in Noise._fields))
+
+
 def noise(tables: Tables) -> Noise:
-    """How far timing alone moved each ratio in the `strong --planner paper` run (:class:`Noise`)."""
-    twice = next(t for heading, t in tables[recorded.ALGORITHM_1].items() if "timed twice" in heading)
-    rows = twice["rows"]  # scenario, sampler, ratio of the means, ratio of the medians, each query's own ratio
-
-    def reach(column: int) -> tuple[float, float]:
-        values = [float(row[column].split()[0]) for row in rows]
-        return min(values), max(values)
-
-    return Noise(own=reach(4), means=reach(2), medians=reach(3))
+    """The noise band of each ratio (:func:`toolkit.teaching.costs.floors`: twice timing's reach, both ways)."""
+    _ = next(t for heading, t in tables[recorded.ALGORITHM_1].items() if "timed twice" in heading)  # that run's own
+    bands = costs.floors(tables)
+    return Noise(*(bands[kind] for kind in Noise._fields))
 
 
 def at_noise_edge(medians: dict[str, dict[str, tuple[float, float, float]]], tables: Tables) -> list[str]:
     """The cells read as saving or costing time whose median lies less than :data:`NOISE_EDGE` times timing's own
-    reach from 1 (:func:`noise`): ``["2DS BS 1.13", ...]``."""
-    reach = reach_of(tables)
+    reach from 1 (:func:`noise`, each query's own ratio): ``["2DS BS 1.13", ...]``."""
+    edge = costs.noise_edge(tables)
     return [
         f"{scenario} {sampler} {m:.2f}"
         for scenario, by in medians.items()
         for sampler, (m, _, _) in by.items()
-        if change(m) != "about the same time" and abs(m - 1) < NOISE_EDGE * reach
+        if change(m) != "about the same time" and abs(m - 1) < edge
     ]
 
 
 def bands(tables: Tables) -> str:
-    """The bands near 1 the page reads with, one table under the summary: the tie band every count reads with, each
-    query's own ratio's noise band (Figure 1, the verdict), twice the larger side of timing's own reach, and the noise
-    bands of a ratio of means and of medians, timing's reach itself (reader r41f, contradictions 1 and 8: all in one
-    table, each saying how it is built)."""
-    floor, reach = noise(tables), reach_of(tables)
-    edge, tie = NOISE_EDGE * reach, findings.TIE
+    """The bands near 1 the page reads with, one table under the summary: the tie band every count reads with, and
+    the noise band of each statistic, all built by one rule (:func:`toolkit.teaching.costs.floors`; readers r43f, r44e:
+    one rule for the three, not a doubled band beside two as measured)."""
+    band, reach, tie = noise(tables), measured(tables), findings.TIE
 
     def edges(low: float, high: float) -> str:
         return f"{low:.2f}–{high:.2f}"
 
-    def past(band: tuple[float, float]) -> str:  # ONE RULE of issue #45: measured, and already past the tie band
-        return " (already past the tie band)" if band[0] < 1 - tie and band[1] > 1 + tie else ""
-
-    inside = 1 - tie < floor.own[0] and floor.own[1] < 1 + tie
-    why_doubled = (  # ONE RULE of issue #45 (reader r42f, contradiction 3): the reason in the same words everywhere
-        ", doubled because a single repeat understates timing noise"
-        + (" and as measured it would lie inside the tie band" if inside else "")
-    )
+    def built(kind: str) -> str:
+        low, high = getattr(reach, kind)
+        return f"timing alone: {edges(low, high)}; 1 ± {NOISE_EDGE} × {costs.timing_reach(tables, kind):.2f}"
 
     rows = [  # reader r41f, item 3: every band the page uses, one row each, a column saying how it is built
         (  # reader r43f, contradiction 9: printed as the counts read it (0.90 saves, 1.10 costs)
@@ -105,28 +98,25 @@ def bands(tables: Tables) -> str:
             "our 10 % rule: strictly inside, a tie",
             "every count and figure",
         ),
-        (
-            "noise band of each query's own ratio",
-            edges(1 - edge, 1 + edge),
-            f"twice the reach timing alone gave it ({edges(*floor.own)}: one computation timed twice), 1 ± "
-            f"{NOISE_EDGE} × {reach:.2f}{why_doubled}",
-            "own-ratio counts; Figure 1",
-        ),
-        (
-            "noise band of a ratio of means",
-            edges(*floor.means),
-            f"the reach timing alone gave it, as measured{past(floor.means)}",
-            "counts by means; Figures 2–3",
-        ),
+        ("noise band of each query's own ratio", edges(*band.own), built("own"), "own-ratio counts; Figure 1"),
+        ("noise band of a ratio of means", edges(*band.means), built("means"), "counts by means; Figures 2–3"),
         (
             "noise band of a ratio of medians",
-            edges(*floor.medians),
-            f"the reach timing alone gave it, as measured{past(floor.medians)}",
+            edges(*band.medians),
+            built("medians"),
             "the lazy-PRM finding; the lazy-PRM run (3 December) and the 2 December run borrow it",
         ),
     ]
     head = ["| band near 1 | from–to | how built | used in |", "| --- | --- | --- | --- |"]
-    said = "\n".join(head + [f"| {' | '.join(row)} |" for row in rows])
+    rule = (
+        "Every noise band is built one way: time one computation twice (Algorithm 1 without prediction, the table "
+        "“timed twice”), see how far timing alone moved the statistic from 1 on its larger side, and take "
+        f"{NOISE_EDGE} times that, both ways, because a single repeat understates timing noise. A ratio of means or of "
+        "medians moves further than each query's own ratio: it divides two sets of 100 queries timed apart, where a "
+        "few slow queries weigh on a mean, while an own ratio divides one query's two times, taken in turn under the "
+        "same load."
+    )
+    said = rule + "\n\n" + "\n".join(head + [f"| {' | '.join(row)} |" for row in rows])
     borrowed = (  # reader r43f, item 9: said once, here; elsewhere a pointer to this table
         ""
         if any("timed twice" in heading for heading in tables[SLOW])

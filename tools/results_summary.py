@@ -19,7 +19,7 @@ from typing import NamedTuple
 
 from toolkit.experiments.paper_numbers import IMPROVEMENT, table3_against_text
 from toolkit.plots import alt
-from toolkit.teaching import checker_scope, findings, recorded
+from toolkit.teaching import checker_scope, costs, findings, recorded
 from toolkit.teaching.checker_scope import SLOW
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
@@ -49,7 +49,7 @@ from tools.results_findings import (
     summary,
 )
 from tools.results_networks import cae_unseen
-from tools.results_noise import NOISE_EDGE, bands, noise, own_intervals, reach_of
+from tools.results_noise import bands, noise, own_intervals
 from tools.results_words import BORDER, NAMES, change, counted, percent, span
 
 BEGIN = "<!-- summary: written by `python -m tools.results_summary` from the tables below; edit it there -->"
@@ -134,7 +134,7 @@ def short(tables: Tables) -> str:
     python-fcl's savings, and the bands near 1 the table reads with (:func:`tools.results_noise.bands`). Why
     prediction saves so little is the findings' first bullet, said there in full."""
     ratios = recorded.query_ratios(recorded.ALGORITHM_1, tables)
-    edge = NOISE_EDGE * reach_of(tables)
+    edge = costs.noise_edge(tables)
     medians = own_medians(tables, recorded.ALGORITHM_1)
     fast = counted([change(m) for _, m in medians])
     fast_far = counted([change(m) for _, m in medians if abs(m - 1) >= edge])
@@ -256,7 +256,7 @@ def not_prediction(tables: Tables) -> str:
     """Reader r38f, contradiction 2; reader r40f, item 2: python-fcl's savings beyond the noise band whose whole query,
     by means, saved 10 points or more beyond what sampling saved (:func:`apart`), said as not prediction's doing, the
     switch to means said plainly; empty where none."""
-    edge = NOISE_EDGE * reach_of(tables)
+    edge = costs.noise_edge(tables)
     far = {cell for cell, m in own_medians(tables, SLOW) if change(m) == "less time" and abs(m - 1) >= edge}
     rest = [cell for cell in apart(tables) if cell.total > cell.sampling and cell.name in far]
     said = "; ".join(
@@ -311,7 +311,7 @@ def ceiling(tables: Tables) -> str:
     """Reader r42f, contradiction 4: python-fcl's savings beyond the noise band that the whole query, by means, did
     not take past what sampling saved (:func:`apart` finds the others): each saving by means beside the most shortening
     sampling allows there (its share of a mean query times the cut), and its own ratio, a larger saving."""
-    edge = NOISE_EDGE * reach_of(tables)
+    edge = costs.noise_edge(tables)
     far = {cell: m for cell, m in own_medians(tables, SLOW) if change(m) == "less time" and abs(m - 1) >= edge}
     moved = {cell.name for cell in apart(tables)}
     shares, saved = stage_shares(tables, SLOW)
@@ -334,7 +334,7 @@ def counts(tables: Tables) -> str:
     each query's own ratio (Figure 1, the verdict's statistic), those of them beyond the noise edge, and by means
     (Table 3's statistic, Figure 2), the paper's by means alone."""
     facts = checker_scope.slow_checker(tables)
-    edge = NOISE_EDGE * reach_of(tables)
+    edge = costs.noise_edge(tables)
 
     def row(
         name: str, own: dict[str, dict[str, tuple[float, float, float]]] | None, means: list[float], ours: bool = True

@@ -224,19 +224,19 @@ def by_means(tables: Tables | None = None) -> str:
 def mark_line(tables: Tables | None = None) -> str:
     """The page's one mark, said once beside the answer figure: :data:`toolkit.teaching.costs.MARK` means inside the
     noise band of its statistic, and each band is built in the results page's words (r42d: one meaning, one rule)."""
-    bands = {**costs.floors(tables), "measured": costs.measured_reach(tables)}
+    bands, (low, high) = costs.floors(tables), costs.measured_reach(tables)
 
     def band(kind: str) -> str:
         return f"{bands[kind][0]:.2f}–{bands[kind][1]:.2f}"
 
     return (
         f"{costs.MARK} on a verdict means one thing on this page: inside the noise band of its statistic, so no clear "
-        "evidence († marks the other cautions of sections 3 and 5, named there). A noise band comes from timing one "
-        f"computation twice. For the median query, drawn here: {band('own')} = 1 ± 2 × {costs.timing_reach(tables):.2f}"
-        f", twice the reach timing alone gave it ({band('measured')}; its larger side, both ways), doubled because a "
-        "single repeat understates timing noise and as measured it would lie inside the tie band. For a ratio of mean "
-        f"times (section 6's figure) {band('means')} and for a ratio of medians {band('medians')}: the reach as "
-        "measured, already past the tie band (`docs/results.md`)."
+        "evidence († marks the other cautions of sections 3 and 5, named there). Every noise band is built one way "
+        "(`docs/results.md`): time one computation twice, see how far timing alone moved the statistic from 1, and "
+        f"take {costs.NOISE_EDGE} times that, both ways, because a single repeat understates timing noise. For the "
+        f"median query, drawn here: {band('own')} = 1 ± {costs.NOISE_EDGE} × {costs.timing_reach(tables):.2f} (timing "
+        f"alone: {low:.2f}–{high:.2f}). For a ratio of mean times (section 6's figure) {band('means')}, and for a "
+        f"ratio of medians {band('medians')}: those move further, since they divide two sets of queries timed apart."
     )
 
 

@@ -178,7 +178,7 @@ def middle_halves(preset: str, tables: Tables | None = None) -> dict[str, dict[s
     return out
 
 
-NOISE_EDGE = 2  # a median within this many times timing's own reach of 1 is "at the noise edge" (docs/results.md)
+NOISE_EDGE = 2  # every noise band reaches this many times timing's own reach from 1, both ways (docs/results.md)
 
 
 def _timed_twice(tables: Tables | None = None) -> list[list[str]]:
@@ -190,34 +190,38 @@ def _timed_twice(tables: Tables | None = None) -> list[list[str]]:
     return next(found for heading, found in run.items() if "timed twice" in heading.lower())["rows"]
 
 
-def _reach(tables: Tables | None, column: int) -> tuple[float, float]:
-    values = [float(row[column].split()[0]) for row in _timed_twice(tables)]
+COLUMNS = {"means": 2, "medians": 3, "own": 4}  # each statistic's column of the table "timed twice"
+
+
+def measured_reach(tables: Tables | None = None, kind: str = "own") -> tuple[float, float]:
+    """The lowest and highest value of statistic ``kind`` (:data:`COLUMNS`) that timing one computation twice gave:
+    how far timing alone moved it, as measured."""
+    values = [float(row[COLUMNS[kind]].split()[0]) for row in _timed_twice(tables)]
     return min(values), max(values)
 
 
-def timing_reach(tables: Tables | None = None) -> float:
-    """The furthest that timing one computation twice moved a median of each query's own ratio from 1 (the table
-    "timed twice", :func:`_timed_twice`)."""
-    return max(abs(v - 1) for v in _reach(tables, 4))
+def timing_reach(tables: Tables | None = None, kind: str = "own") -> float:
+    """The furthest that timing one computation twice moved statistic ``kind`` from 1, on its larger side."""
+    return max(abs(v - 1) for v in measured_reach(tables, kind))
 
 
-def measured_reach(tables: Tables | None = None) -> tuple[float, float]:
-    """The lowest and highest median of each query's own ratio that timing one computation twice gave."""
-    return _reach(tables, 4)
-
-
-def noise_edge(tables: Tables | None = None) -> float:
-    """How far from 1 the noise edge reaches: :data:`NOISE_EDGE` times :func:`timing_reach` (the results page's)."""
-    return NOISE_EDGE * timing_reach(tables)
+def noise_edge(tables: Tables | None = None, kind: str = "own") -> float:
+    """How far from 1 the noise band of ``kind`` reaches: :data:`NOISE_EDGE` times :func:`timing_reach`."""
+    return NOISE_EDGE * timing_reach(tables, kind)
 
 
 def floors(tables: Tables | None = None) -> dict[str, tuple[float, float]]:
     """The band inside which a ratio is no clear evidence, per statistic, as the results page draws them (its table of
-    bands): ``"own"``, the median of each query's own ratio, within :func:`noise_edge` of 1; ``"means"`` and
-    ``"medians"``, a ratio of the two modes' mean or median times, as far as timing one computation twice moved it
-    (reader r34d: a ratio of means was marked by the median's band)."""
-    reach = noise_edge(tables)
-    return {"own": (1 - reach, 1 + reach), "means": _reach(tables, 2), "medians": _reach(tables, 3)}
+    bands), all built by one rule: 1 ± :data:`NOISE_EDGE` times the furthest timing one computation twice moved that
+    statistic (its larger side, both ways; a single repeat understates timing noise). ``"own"``, the median of each
+    query's own ratio; ``"means"`` and ``"medians"``, a ratio of the two modes' mean or median times."""
+    return {kind: (1 - noise_edge(tables, kind), 1 + noise_edge(tables, kind)) for kind in COLUMNS}
+
+
+def inside(ratio: float, band: tuple[float, float]) -> bool:
+    """Whether ``ratio`` lies inside ``band`` (strictly: a ratio on an edge is beyond it), the one test every page
+    marks with."""
+    return band[0] < ratio < band[1]
 
 
 def statistic(label: str) -> str:
@@ -258,10 +262,8 @@ def marked(table: str, tables: Tables | None = None) -> str:
     def marker(kind: str) -> Callable[[re.Match], str]:
         low, high = bands[kind]
 
-        def mark(found: re.Match) -> str:  # the results page: the noise edge strict, a floor as measured inclusive
-            r = float(found[2])
-            inside = low < r < high if kind == "own" else low <= r <= high
-            return f"{found[1]}{MARK if inside else ''}<br>({found[2]})"
+        def mark(found: re.Match) -> str:
+            return f"{found[1]}{MARK if inside(float(found[2]), (low, high)) else ''}<br>({found[2]})"
 
         return mark
 
@@ -347,7 +349,7 @@ def clear_mean_savings(preset: str, tables: Tables | None = None) -> list[tuple[
         for key in recorded.query_ratios(preset, tables)
         for s, saved in recorded.improvements(preset, key, "total", tables).items()
         for r in [round(1 - saved, 2)]
-        if time_verdict(r) == SAVES and not low <= r <= high
+        if time_verdict(r) == SAVES and not inside(r, (low, high))
     ]
 
 
