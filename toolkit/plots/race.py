@@ -16,7 +16,7 @@ from matplotlib.lines import Line2D
 from matplotlib.ticker import NullLocator
 
 from toolkit.plots.alt import Part, describe
-from toolkit.plots.palette import COLORS, LINE_COLORS, MARKERS, PAGE_WIDTH
+from toolkit.plots.palette import COLORS, LINE_COLORS, MARKER_NAMES, MARKERS, PAGE_WIDTH
 
 OURS = ("ours: RRT-Connect", "ours: lazy PRM", "ours: the paper's Algorithm 1")
 OMPL = ("OMPL RRTConnect", "OMPL PRM")
@@ -25,6 +25,19 @@ BATCHED = {  # OMPL's planner -> (the ratio table's batched column, the planner 
     "OMPL PRM": ("lazy PRM / OMPL PRM, checks batched", "ours: lazy PRM"),
 }
 POINTS = 9  # the tick labels' and the legend's size
+
+
+def _marker(k: int, planner: str) -> str:
+    """Planner ``k``'s marker: the palette's in turn, a star for Algorithm 1 (reader r35g, race figure b: not a second
+    triangle)."""
+    return "*" if "Algorithm 1" in planner else MARKERS[k % len(MARKERS)]
+
+
+def _shape(k: int, planner: str) -> str:
+    """:func:`_marker` in words, one of them ("a circle")."""
+    names = {**MARKER_NAMES, "*": "stars"}
+    word = names[_marker(k, planner)].removesuffix("s")
+    return f"an {word}" if word[0] in "aeiou" else f"a {word}"
 
 
 def from_tables(markdown: str, seed: int) -> tuple[dict[str, dict[str, float]], dict[str, dict[str, float]]]:
@@ -68,8 +81,7 @@ def race_medians(
     fig = Figure(figsize=(PAGE_WIDTH, 1.2 + 0.55 * len(scenarios) + 0.25 * (len(planners) + 2)))
     ax = fig.subplots()
     for k, planner in enumerate(planners):
-        colour, marker = LINE_COLORS[k % len(LINE_COLORS)], MARKERS[k % len(MARKERS)]
-        marker = "*" if "Algorithm 1" in planner else marker  # reader r35g, race figure b: not a second triangle
+        colour, marker = LINE_COLORS[k % len(LINE_COLORS)], _marker(k, planner)
         y = np.arange(len(scenarios)) + (0.15 if planner.startswith("ours") else -0.15)  # (S,)
         x = [medians[s][planner] for s in scenarios]  # (S,) ms
         ax.plot(x, y, marker, color=colour, markersize=8, ls="none", label=planner, clip_on=False)
@@ -127,17 +139,26 @@ def _columns(handles: list, labels: list[str]) -> tuple[list, list[str]]:
 
 
 def _ms(value: float) -> str:
-    return f"{value:.1f}" if value < 100 else f"{value:.0f}"
+    """A median as the page's tables print it (reader r44g, race: the text alternative's values are the figure's)."""
+    return f"{value:.1f}"
 
 
 def _in_words(medians: dict[str, dict[str, float]], batched: dict[str, dict[str, float]] | None, held: str) -> str:
-    """The figure in words: per scenario, the fastest and the slowest planner and their times."""
+    """The figure in words: what each marker is, then per scenario every marker's time, fastest first (reader r44g,
+    race: the values the figure draws, estimates named as such)."""
+    planners = list(next(iter(medians.values())))
     text = f"Dot chart of each planner's median time a query in milliseconds on a log axis{held}, a row a scenario"
-    text += ", OMPL's planners a little above the scenario's name and ours a little below"
-    text += "; hollow markers: OMPL's planners with their checks batched, estimated, not timed. " if batched else ". "
+    text += ", OMPL's planners a little above the scenario's name and ours a little below. Filled markers, timings: "
+    text += "; ".join(f"{_shape(k, p)}, {p}" for k, p in enumerate(planners)) + ". "
+    extra = list(next(iter(batched.values()))) if batched else []
+    if extra:
+        shapes = " and ".join(f"{_shape(planners.index(p), p).partition(' ')[2]}" for p in extra)
+        text += f"Open {shapes}, marked est.: {' and '.join(extra)} with their checks batched, estimated, not timed. "
     for s, row in medians.items():
-        fast, slow = min(row, key=row.get), max(row, key=row.get)  # type: ignore[arg-type]
-        text += f"{s}: fastest {fast}, {_ms(row[fast])} ms; slowest {slow}, {_ms(row[slow])} ms. "
+        dots = {p: row[p] for p in planners}
+        dots.update({f"{p}, checks batched (est.)": batched[s][p] for p in extra if batched})
+        order = sorted(dots, key=dots.__getitem__)
+        text += f"{s}, fastest first: " + "; ".join(f"{p} {_ms(dots[p])} ms" for p in order) + ". "
     return text
 
 
