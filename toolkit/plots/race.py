@@ -41,7 +41,8 @@ def _shape(k: int, planner: str) -> str:
 
 
 def from_tables(markdown: str, seed: int) -> tuple[dict[str, dict[str, float]], dict[str, dict[str, float]]]:
-    """From the race page's Markdown: ``{scenario: {planner: median ms}}`` of the rows of ``seed``, and
+    """From the race page's Markdown: ``{scenario: {planner: median ms}}`` of ``seed`` (its table of medians has a row
+    a planner and a column a scenario and seed; a table the other way round reads too), and
     ``{scenario: {OMPL planner: ms with its checks batched}}``, our planner's median over its batched ratio (as
     the page computes it)."""
     cells: dict[str, dict[str, str]] = {}
@@ -55,8 +56,12 @@ def from_tables(markdown: str, seed: int) -> tuple[dict[str, dict[str, float]], 
             header = row
             continue
         name, _, row_seed = row[0].partition(", ")
-        if row_seed == str(seed):
+        if row_seed == str(seed):  # a row a scenario and seed, a column a planner
             cells.setdefault(name, {}).update(zip(header[1:], row[1:]))
+        for column, cell in zip(header[1:], row[1:]):  # reader r44g, race: a row a planner, a column a scenario
+            scenario, _, column_seed = column.partition(", ")
+            if column_seed == str(seed):
+                cells.setdefault(scenario, {})[row[0]] = cell
     number = re.compile(r"\d+(?:,\d{3})*(?:\.\d+)?")
 
     def first(cell: str) -> float:
