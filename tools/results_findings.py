@@ -14,7 +14,7 @@ from toolkit.teaching.recorded import Tables
 from toolkit.util import verdicts
 from tools.results_networks import cae, mlp, unseen_table
 from tools.results_noise import medians_floor, noise
-from tools.results_words import BORDER, NAMES, change, counted, grouped, percent, span, told
+from tools.results_words import NAMES, change, counted, grouped, percent, span, told
 
 DETAIL_BEGIN = "<!-- findings: written by `python -m tools.results_summary` from the tables below; edit them there -->"
 DETAIL_END = "<!-- end of the findings -->"
@@ -253,7 +253,8 @@ def paper_sampling(tables: Tables) -> str:
     # reader r43f, contradictions 5 and 6: what ends the rounds, and which of the losses that explains
     return (
         f" The `paper`-preset run of 2 December lost sampling time in {slower[2]} of {sum(slower)} cells although its "
-        f"network was no dearer than an exact check in 3D (cost per configuration: {', '.join(said)}): that network answers “invalid” to "
+        f"network was no dearer than an exact check in 3D (cost per configuration: {', '.join(said)}): that network "
+        "answers “invalid” to "
         f"every {' and '.join(invalid)} sample, so there its first round of sampling keeps no sample, and a query "
         "whose straight edge from start to goal is blocked samples again, in rounds that Algorithm 1's auxiliary "
         f"sampler checks exactly, as without prediction: our reading of those scenarios' {len(lost) - len(others)} "
@@ -381,7 +382,11 @@ def moved_beyond(tables: Tables, cells: list[Apart]) -> str:
     named = f" ({', '.join(f'{cell.name} {1 - cell.total:.2f}' for cell in far)})" if far else ""
     return (
         f" By the noise band of a ratio of means, {band[0]:.2f}–{band[1]:.2f}, "
-        + (f"{len(far)} of these {len(cells)} ratios lie beyond it{named}" if far else f"all {len(cells)} lie inside it")
+        + (
+            f"{len(far)} of these {len(cells)} ratios lie beyond it{named}"
+            if far
+            else f"all {len(cells)} lie inside it"
+        )
         + (", the rest inside it." if far and len(far) < len(cells) else ".")
     )
 

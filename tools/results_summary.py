@@ -41,16 +41,14 @@ from tools.results_findings import (
     APART_END,
     DETAIL_BEGIN,
     DETAIL_END,
-    apart,
     causes,
     network_costs,
     not_from_sampling,
-    stage_shares,
     summary,
 )
 from tools.results_networks import cae_unseen
 from tools.results_noise import bands, noise, own_intervals
-from tools.results_words import BORDER, NAMES, change, counted, percent, span
+from tools.results_words import NAMES, change, counted, span
 
 BEGIN = "<!-- summary: written by `python -m tools.results_summary` from the tables below; edit it there -->"
 END = "<!-- end of the summary -->"
@@ -201,9 +199,7 @@ def by_means_inside(tables: Tables) -> str:
     means = by_means(tables, SLOW)
     inside = [cell for cell in far if costs.inside(means[cell], (low, high))]
     cells = ", ".join(f"{cell} {means[cell]:.2f}" for cell in far)
-    where = (
-        "inside" if len(inside) == len(far) else "beyond" if not inside else f"{len(inside)} of them inside"
-    )
+    where = "inside" if len(inside) == len(far) else "beyond" if not inside else f"{len(inside)} of them inside"
     counted_ = "its saving" if len(far) == 1 else f"its {len(far)} savings"
     return (
         f" By means, Table 3's statistic, {counted_} beyond the noise band ({cells}) lie {where} the noise band of a "
@@ -233,8 +229,8 @@ def tables_said(tables: Tables) -> str:
     ]
     if round(gain * 100) <= 0 and max(balanced) < 0.6:  # reader r44f, item 5: what they match, not "do not reproduce"
         return (
-            "On unseen workspaces, the paper's networks match only a trivial answer: its CAE is no better than "
-            "answering “free” everywhere (Table 1), its MLP is at chance (Table 2)"
+            "On unseen workspaces, the paper's CAE and MLP match only a trivial answer: the CAE is no better than "
+            "answering “free” everywhere (Table 1), the MLP is at chance (Table 2)"
         )
     return "On unseen workspaces, the paper's Tables 1 and 2 reproduce in part"
 
