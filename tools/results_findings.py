@@ -370,24 +370,28 @@ def not_from_sampling(tables: Tables) -> str:
         "python-fcl the whole query moved 10 points or more away from what sampling saved there "
         f"(as shares of a mean query without prediction: {'; '.join(map(said, cells))}): the rest of the query, "
         "which prediction does not shorten, moved them (with other samples the planner grows another roadmap, with "
-        f"other edges to check and other repairs), or timing did.{moved_beyond(tables, fast + cells)}"
+        f"other edges to check and other repairs), or timing did.{moved_beyond(tables, fast, cells)}"
     )
 
 
-def moved_beyond(tables: Tables, cells: list[Apart]) -> str:
-    """Reader r44f, item 1: of :func:`apart`'s cells, those whose ratio of means lies beyond the noise band of a ratio
-    of means (read strictly), the rest inside it, where timing alone could have moved them that far."""
+def moved_beyond(tables: Tables, fast: list[Apart], slow: list[Apart]) -> str:
+    """Reader r44f, item 1: of :func:`apart`'s cells (``fast``: our compiled checker's; ``slow``: python-fcl's), those
+    whose ratio of means lies beyond the noise band of a ratio of means (read strictly), each named with its run, the
+    rest inside it, where timing alone could have moved them that far."""
     band = noise(tables).means
-    far = [cell for cell in cells if not costs.inside(1 - cell.total, band)]
-    named = f" ({', '.join(f'{cell.name} {1 - cell.total:.2f}' for cell in far)})" if far else ""
+    runs = (("our compiled checker", fast), ("python-fcl", slow))
+    far = [(run, cell) for run, cells in runs for cell in cells if not costs.inside(1 - cell.total, band)]
+    every = len(fast) + len(slow)
+    named = "; ".join(
+        f"{run}: {', '.join(f'{cell.name} {1 - cell.total:.2f}' for r, cell in far if r == run)}"
+        for run, _ in runs
+        if any(r == run for r, _ in far)
+    )
+    if not far:
+        return f" By the noise band of a ratio of means, {band[0]:.2f}–{band[1]:.2f}, all {every} lie inside it."
     return (
-        f" By the noise band of a ratio of means, {band[0]:.2f}–{band[1]:.2f}, "
-        + (
-            f"{len(far)} of these {len(cells)} ratios lie beyond it{named}"
-            if far
-            else f"all {len(cells)} lie inside it"
-        )
-        + (", the rest inside it." if far and len(far) < len(cells) else ".")
+        f" By the noise band of a ratio of means, {band[0]:.2f}–{band[1]:.2f}, {len(far)} of these {every} ratios lie "
+        f"beyond it ({named})" + (", the rest inside it." if len(far) < every else ".")
     )
 
 
