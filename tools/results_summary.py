@@ -147,8 +147,7 @@ def short(tables: Tables) -> str:
         f"{tables_said(tables)}."
     )
     dashes = (  # reader r44f, item 4: the note under the table, two lines
-        "A “—”: no query's own ratio was recorded (the paper prints means; our `paper`-preset run kept means and "
-        f"medians), and the paper gives no noise band.{borrowed(tables)}{by_means_inside(tables)}"
+        f"A “—”: no query's own ratio was recorded, and the paper gives no noise band.{by_means_inside(tables)}"
     )
     return f"{answer}\n\n{key(tables)}\n\n{counts(tables)}\n\n{dashes}\n\n{bands(tables)}"
 
@@ -160,15 +159,6 @@ def tally(tied: int, far: int, verb: str, cells: int | None = None) -> str:
         return f"none {verb}"
     of = f" of {cells} cells" if cells is not None else ""
     return f"{tied}{of} {verb} ({far} beyond the noise band)"
-
-
-def borrowed(tables: Tables) -> str:
-    """The python-fcl run's noise band, borrowed from the compiled run where it was not timed twice."""
-    return (
-        ""
-        if timed_twice(tables, SLOW)
-        else " The python-fcl row reads borrowed noise bands (the table of bands below)."
-    )
 
 
 def by_means(tables: Tables, key: str) -> dict[str, float]:
@@ -200,10 +190,10 @@ def by_means_inside(tables: Tables) -> str:
     inside = [cell for cell in far if costs.inside(means[cell], (low, high))]
     cells = ", ".join(f"{cell} {means[cell]:.2f}" for cell in far)
     where = "inside" if len(inside) == len(far) else "beyond" if not inside else f"{len(inside)} of them inside"
-    counted_ = "its saving" if len(far) == 1 else f"its {len(far)} savings"
+    counted_ = "saving" if len(far) == 1 else f"{len(far)} savings"
     return (
-        f" By means, Table 3's statistic, {counted_} beyond the noise band ({cells}) lie {where} the noise band of a "
-        f"ratio of means, {low:.2f}–{high:.2f}" + (": by means, no clear evidence." if inside else ".")
+        f" By means, python-fcl's {counted_} beyond the noise band ({cells}) lie {where} the band of a ratio of means, "
+        f"{low:.2f}–{high:.2f}" + (": no clear evidence." if inside else ".")
     )
 
 
