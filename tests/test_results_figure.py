@@ -127,6 +127,17 @@ def test_each_panel_shades_the_tie_band_its_counts_are_read_with(drawn):
     left = {t.get_text() for t in fig.axes[0].get_yticklabels()}
     assert not {f"{floor[0]:g}", f"{floor[1]:g}"} & left  # reader r33f: named in the legend, not crowding the "1"
     assert f"The noise band of a ratio of means, {floor[0]:.2f}–{floor[1]:.2f} (hatched" in TEXT
+    # reader r44f, item 9: every series named by its shape too, the `paper` preset's orange crosses apart from Figure
+    # 1's vermillion, whose circle none of these takes
+    for name, (colour, marker) in results_figures.LOOKS.items():
+        assert marker not in "os^" and colour != OKABE_ITO["vermillion"], name
+    for words in (
+        "grey diamonds, the paper",
+        "orange thin crosses (×), our `paper`-preset network",
+        "reddish-purple stars",
+        "bluish-green pentagons",
+    ):
+        assert words in TEXT, words
     for ax in fig.axes:  # reader r31f: Figure 1's verdict colours and shapes name no series here
         for line in ax.get_lines():
             assert line.get_marker() in ("None", None) or (
@@ -248,13 +259,15 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
         assert image.info.get("Description") == alt.alt_text(fig), AGAIN
         assert image.size[0] <= COLUMN
     assert CLAIM == results_figures.claim_markdown(TEXT), AGAIN
-    costs = sum(m >= 1.1 for m, _, _ in table.values())  # review r27f, item 2: counted once, in the summary
-    said = f"compiled checker, 5 December | 3 / 7 / 6 | 1 / 4 | 0 / {16 - costs} / {costs} |"
+    dear = sum(m >= 1.1 for m, _, _ in table.values())  # review r27f, item 2: counted once, in the summary
+    said = f"compiled checker, 5 December | 3 / 7 / 6 | 0 / 2 | 0 / {16 - dear} / {dear} |"
     assert said in TEXT  # reader r31f, item 1: the noise edge's cells are the caption's (review r28f's robust count)
     reach = costs.timing_reach(recorded_results.parse(TEXT))  # how far timing alone moved a median query
     edge = [f"{n} {s} {m:.2f}" for (n, s), (m, _, _) in table.items() if m >= 1.1 and abs(m - 1) < 2 * reach]
     assert edge and all(cell.split()[-1] in CLAIM.partition("is no clear evidence:")[2] for cell in edge)
-    assert "The summary above counts the points." in CLAIM and "costs," not in CLAIM.partition("![")[0]
+    # reader r44f, item 7: the caption points to the table it means, not "the summary above"
+    assert "The table of counts under the answer, at the top of the page, counts these points" in CLAIM
+    assert "summary above" not in CLAIM and "costs," not in CLAIM.partition("![")[0]
     assert TEXT.index(results_figures.CLAIM_BEGIN) < TEXT.index(results_figures.FIGURE_BEGIN.format(kind="total"))
 
 

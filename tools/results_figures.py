@@ -34,8 +34,12 @@ LEADS = {  # what each figure shows, over it
 TICKS = {"total": (), "sampling": (3.0,)}  # labelled beside each figure's 1-2-5 steps, with the floor's edges
 MARGINS = {"total": 1.15, "sampling": 1.25}  # each figure's range: its points', widened by this factor
 ROW_HEIGHTS = {"total": 3.3, "sampling": 3.2}  # inches a row of panels: each band is read to 0.9 and 1.1 (r27f)
-KEY = (  # under Figure 2 (reader r31f, item 3): its marks are not Figure 1's verdicts; r39f, item 7: one colour each
-    " Here colour and shape name a series, not a verdict as in Figure 1 (none takes its blue, vermillion or black)."
+KEY = (  # under Figure 2 (reader r31f, item 3): its marks are not Figure 1's verdicts; r39f, item 7: one colour each;
+    # reader r44f, item 9: each series named by its shape, the `paper` preset's orange crosses apart from vermillion
+    " Here colour and shape name a series, not a verdict as in Figure 1: grey diamonds, the paper; orange thin crosses "
+    "(×), our `paper`-preset network; reddish-purple stars, the `strong` network with our compiled checker; "
+    "bluish-green pentagons, the `strong` network with python-fcl. No series takes Figure 1's blue, black or "
+    "vermillion, nor its circle, square or triangle."
 )
 CLAIM_FIGURE = RESULTS.parent / "results_claim.png"  # Figure 1: the statistic the verdict on the paper's claim reads
 CLAIM_BEGIN = "<!-- figure of the claim: drawn by `python -m tools.results_summary` from the tables below -->"
@@ -89,7 +93,7 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
         {f"{NAMES[s]}: {kind} time, means": series for s, series in ratios(text, kind).items()},
         tie=findings.TIE,
         ylim=ylim,
-        ticks=(*TICKS[kind], *(round(edge, 2) for edge in floor)),  # reader r36f: the hatch's edges, not the band's
+        ticks=TICKS[kind],  # reader r44f, item 9: the hatch's edges labelled on the right only, clear of 0.5 and 1.5
         row_height=ROW_HEIGHTS[kind],
         noise=floor,
         width=WIDTH,
@@ -190,7 +194,8 @@ def claim_markdown(text: str) -> str:
     caption = (  # review r29f, item 1: the caption and the noise floor one paragraph under the plot
         "Each point is the median of those ratios over 100 queries a scenario (the same for each sampler), its whisker "
         "their middle half. *Shape and colour = verdict, fill = checker*: filled, our compiled checker; hollow, "
-        "python-fcl on both sides. The summary above counts the points."
+        "python-fcl on both sides. The table of counts under the answer, at the top of the page, counts these points "
+        "(its columns “by own ratio”)."
     )
     edge_said = (  # reader r39f, item 1: the band by its one name, defined in the table under the summary
         " Inside the noise band of this ratio (hatched, dashed edges), a cost or saving is no clear evidence: "

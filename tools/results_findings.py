@@ -9,12 +9,12 @@ from __future__ import annotations
 
 from typing import NamedTuple
 
-from toolkit.teaching import checker_scope, findings, recorded
+from toolkit.teaching import checker_scope, costs, findings, recorded
 from toolkit.teaching.recorded import Tables
 from toolkit.util import verdicts
 from tools.results_networks import cae, mlp, unseen_table
 from tools.results_noise import medians_floor, noise
-from tools.results_words import BORDER, NAMES, change, counted, grouped, percent, span, told
+from tools.results_words import NAMES, change, counted, grouped, percent, span, told
 
 DETAIL_BEGIN = "<!-- findings: written by `python -m tools.results_summary` from the tables below; edit them there -->"
 DETAIL_END = "<!-- end of the findings -->"
@@ -36,7 +36,7 @@ def lazy_prm(tables: Tables) -> str:
     saved = len(groups["strong"]["less time"])
     answer = "no" if saved == 0 else "rarely" if saved < strong / 2 else "mostly"
     floor = medians_floor(tables)
-    beyond = [(name, r) for name, r in groups["paper"]["less time"] if floor is None or r < floor[0]]
+    beyond = [(name, r) for name, r in groups["paper"]["less time"] if floor is None or not costs.inside(r, floor)]
     known = any("MLP accuracy" in heading for heading in tables.get("paper", {}))
     invalid = {  # reader r38f, contradiction 5: where the `paper` MLP answers "invalid" to every sample
         NAMES.get(s, s)
@@ -126,21 +126,19 @@ def beyond_floor(ours: dict[str, dict[str, float]], tables: Tables) -> str:
     low, high = noise(tables).means
     ratios = {f"{NAMES.get(s, s)} {sampler}": 1 - saved for s, row in ours.items() for sampler, saved in row.items()}
     saves = {cell: r for cell, r in ratios.items() if change(r) == "less time"}
-    beyond = {cell: r for cell, r in saves.items() if r < low}
-    lost = [r for r in ratios.values() if change(r) == "more time"]
-    near = [  # reader r40f, item 3: a cell within 0.01 of the band's edge is borderline
-        f"{cell} {r:.2f}" for cell, r in ratios.items() if r > high and round(r - high, 2) <= BORDER
-    ]
+    beyond = {cell: r for cell, r in saves.items() if not costs.inside(r, (low, high))}
+    lost = {cell: r for cell, r in ratios.items() if change(r) == "more time"}
+    far = {cell: r for cell, r in lost.items() if not costs.inside(r, (low, high))}
+
+    def some(found: dict[str, float], of: dict[str, float], what: str) -> str:  # reader r44f, item 1: zero in words
+        named = f" ({', '.join(f'{cell} {r:.2f}' for cell, r in found.items())})" if found else ""
+        if not found:
+            return f"none of the {len(of)} {what}"
+        return f"{'all' if len(found) == len(of) else len(found)} of the {len(of)} {what}{named}"
+
     return (
-        f"; beyond the noise band of a ratio of means ({low:.2f}–{high:.2f}), "
-        f"{len(beyond)} of the {len(saves)} savings "
-        f"({', '.join(f'{cell} {r:.2f}' for cell, r in beyond.items())}) and "
-        + (
-            f"all {len(lost)} losses"
-            if lost and all(r > high for r in lost)
-            else f"{sum(r > high for r in lost)} of the {len(lost)} losses"
-        )
-        + (f" (borderline, within {BORDER:.2f} of the band's edge: {', '.join(near)})" if near else "")
+        f"; beyond the noise band of a ratio of means ({low:.2f}–{high:.2f}), {some(beyond, saves, 'savings')} and "
+        f"{some(far, lost, 'losses')}"
     )
 
 
@@ -220,9 +218,7 @@ def why_no_saving(tables: Tables) -> str:
         "one sampling was too small a share of a query.** With our compiled checker the network cost "
         f"{span(cost_3d, lambda c: f'{c:.2g}')} times an exact check per configuration in 3D{cost_2d}, so sampling "
         f"got 10 % or more slower in {why.slower} of {why.cells} cells; with python-fcl, {fcl_slower(tables)} times "
-        f"slower than our compiled checker in 3D, sampling's share of a query was at most {percent(why.share)} %, so "
-        f"shortening it saved at most {percent(why.saved)} % of a query (the fold below works one cell through)."
-        f"{paper_sampling(tables)}"
+        f"slower than our compiled checker in 3D, {worked_example(tables)}{paper_sampling(tables)}"
     )
 
 
@@ -230,7 +226,8 @@ def paper_sampling(tables: Tables) -> str:
     """Reader r40f, contradiction 4: the `paper`-preset run of 2 December lost sampling time although its network was
     no dearer per check in 3D; one sentence on why (a network that answers "invalid" to every sample of a scenario
     keeps no sample in its round); empty where that network was dearer somewhere in 3D or answers so nowhere."""
-    costs = [c for s, c in network_costs(tables, "paper").items() if s != "2ds"]
+    named = {NAMES.get(s, s): c for s, c in network_costs(tables, "paper").items() if s != "2ds"}
+    costs_ = list(named.values())
     ratios = [
         (NAMES.get(scenario, scenario), sampler, 1 - saved)
         for scenario in recorded.table("paper", "time improvement", tables)
@@ -242,11 +239,12 @@ def paper_sampling(tables: Tables) -> str:
         for s, row in recorded.table("paper", "MLP accuracy", tables).items()
         if recorded.ours(row["Unseen TPR"]) == 0
     ]
-    if max(costs) > 1 + findings.TIE or not invalid:
+    if max(costs_) > 1 + findings.TIE or not invalid:
         return ""
     # reader r41f, contradiction 2: the throughput table's 25 % band, so a cost inside it is no "cheaper"
-    close = [f"{c:.2g}" for c in costs if abs(c - 1) < verdicts.CLOSE]
-    cheaper = [f"{c:.2g}" for c in costs if c <= 1 - verdicts.CLOSE]
+    # reader r44f, item 10: each cost ratio named by its scenario
+    close = [f"{s} {c:.2g}" for s, c in named.items() if abs(c - 1) < verdicts.CLOSE]
+    cheaper = [f"{s} {c:.2g}" for s, c in named.items() if c <= 1 - verdicts.CLOSE]
     said = [f"{' and '.join(close)} too close to tell"] * bool(close) + [f"{' and '.join(cheaper)} cheaper"] * bool(
         cheaper
     )
@@ -255,7 +253,8 @@ def paper_sampling(tables: Tables) -> str:
     # reader r43f, contradictions 5 and 6: what ends the rounds, and which of the losses that explains
     return (
         f" The `paper`-preset run of 2 December lost sampling time in {slower[2]} of {sum(slower)} cells although its "
-        f"network was no dearer than an exact check in 3D ({', '.join(said)}): that network answers “invalid” to "
+        f"network was no dearer than an exact check in 3D (cost per configuration: {', '.join(said)}): that network "
+        "answers “invalid” to "
         f"every {' and '.join(invalid)} sample, so there its first round of sampling keeps no sample, and a query "
         "whose straight edge from start to goal is blocked samples again, in rounds that Algorithm 1's auxiliary "
         f"sampler checks exactly, as without prediction: our reading of those scenarios' {len(lost) - len(others)} "
@@ -290,22 +289,26 @@ def between(shares: list[float]) -> str:
 
 
 def worked_example(tables: Tables) -> str:
-    """Reader r32f, item 4: the arithmetic once, in the cell of the run with python-fcl where sampling saved the
-    largest share of a query: its share, the cut in sampling time, their product, and the whole query's saving as
-    Table 3 measured it. Shares are written in percent, as the table under it writes them (reader r42f,
-    contradiction 6)."""
+    """Reader r44f, item 6: the arithmetic once (share × cut), in the cell of the run with python-fcl where sampling
+    saved the largest share of a query: its share, the cut in sampling time, their product, and the whole query's
+    saving as Table 3 measured it; the largest share named too where it is another cell's. A clause of
+    :func:`why_no_saving`."""
     slow, saved = stage_shares(tables, checker_scope.SLOW)
     times = next(t for heading, t in tables[checker_scope.SLOW].items() if "Times behind Table 3" in heading)
+
+    def name(k: int) -> str:
+        return f"{NAMES.get(times['rows'][k][0], times['rows'][k][0])} {times['rows'][k][1]}"
+
     top = max(range(len(saved)), key=saved.__getitem__)
-    scenario, sampler = times["rows"][top][0], times["rows"][top][1]
-    total = recorded.improvements(checker_scope.SLOW, scenario, recorded=tables)[sampler]
+    most = max(range(len(slow)), key=slow.__getitem__)
+    total = recorded.improvements(checker_scope.SLOW, times["rows"][top][0], recorded=tables)[times["rows"][top][1]]
     cut = saved[top] / slow[top]  # reader r36f, contradiction 1: unrounded, so the product is the share saved
+    share = f"sampling took at most {percent(slow[most])} % of a mean query ({name(most)})"
+    there = "there" if top == most else f"in {name(top)}, where shortening it saved the most, it took {slow[top]:.1%}"
     return (
-        f" Worked through for {NAMES.get(scenario, scenario)} {sampler} with python-fcl: sampling took "
-        f"{slow[top] * 100:.1f} % of a mean query, the network cut it by {cut * 100:.1f} % (Figure 3: {1 - cut:.2f}), "
-        f"and {slow[top] * 100:.1f} % × {cut:.3f} ≈ {slow[top] * cut * 100:.1f} % of the query; our Table 3 "
-        "(python-fcl run) "
-        f"measured a {percent(total)} % saving of the whole query."
+        f"{share}; {there} the network cut sampling by {cut * 100:.1f} %, so prediction saved "
+        f"{slow[top] * 100:.1f} % × {cut:.3f} ≈ {slow[top] * cut * 100:.0f} % of the query, the most of any cell "
+        f"(Table 3 measured {percent(total)} %)."
     )
 
 
@@ -342,8 +345,10 @@ def not_from_sampling(tables: Tables) -> str:
     there, both as shares of a mean query (review r28f, item 4; r31f: which way each moved); empty where there are
     none."""
     cells, fast = apart(tables), apart(tables, recorded.ALGORITHM_1)
-    shares = (  # reader r39f, item 9: moved here from the finding "Why, by means"
-        f"- *How little shortening sampling saves*:{worked_example(tables)}\n\n{share_table(tables)}\n\n"
+    shares = (  # reader r44f, item 6: the arithmetic is the first finding's, once; here the 16 cells' ranges
+        "- *How little shortening sampling saves*: sampling's share of a mean query, and what prediction saved of "
+        f"it, in each checker's 16 cells (the first finding works the largest saving through).\n\n"
+        f"{share_table(tables)}\n\n"
     )
     if not cells and not fast:
         return shares.rstrip()
@@ -352,9 +357,6 @@ def not_from_sampling(tables: Tables) -> str:
         moved = f"{percent(cell.total)} % saved" if cell.total >= 0 else f"{percent(-cell.total)} % longer"
         return f"{cell.name}, {moved} where sampling saved {percent(cell.sampling)} %"
 
-    timed = any("timed twice" in heading for heading in tables[checker_scope.SLOW])
-    noise = "" if timed else ", and the run with python-fcl was not timed twice, so timing noise in its means may add"
-    noise += " to it" if noise else ""
     widest = max(fast, key=lambda cell: abs(cell.total - cell.sampling), default=None)
     compiled = (  # reader r38f, contradiction 1: the compiled run's cost is mostly outside sampling too
         f"{len(fast)} cells of the run with our compiled checker (the widest: {widest.name}, "
@@ -367,9 +369,29 @@ def not_from_sampling(tables: Tables) -> str:
         f"{shares}- *Where the whole query moved apart from sampling*: in {compiled}{len(cells)} cells of the run with "
         "python-fcl the whole query moved 10 points or more away from what sampling saved there "
         f"(as shares of a mean query without prediction: {'; '.join(map(said, cells))}): the rest of the query, "
-        "which prediction does not shorten, moved them; with other samples the planner grows another roadmap, "
-        "with other edges to check and other repairs"
-        f"{noise}."
+        "which prediction does not shorten, moved them (with other samples the planner grows another roadmap, with "
+        f"other edges to check and other repairs), or timing did.{moved_beyond(tables, fast, cells)}"
+    )
+
+
+def moved_beyond(tables: Tables, fast: list[Apart], slow: list[Apart]) -> str:
+    """Reader r44f, item 1: of :func:`apart`'s cells (``fast``: our compiled checker's; ``slow``: python-fcl's), those
+    whose ratio of means lies beyond the noise band of a ratio of means (read strictly), each named with its run, the
+    rest inside it, where timing alone could have moved them that far."""
+    band = noise(tables).means
+    runs = (("our compiled checker", fast), ("python-fcl", slow))
+    far = [(run, cell) for run, cells in runs for cell in cells if not costs.inside(1 - cell.total, band)]
+    every = len(fast) + len(slow)
+    named = "; ".join(
+        f"{run}: {', '.join(f'{cell.name} {1 - cell.total:.2f}' for r, cell in far if r == run)}"
+        for run, _ in runs
+        if any(r == run for r, _ in far)
+    )
+    if not far:
+        return f" By the noise band of a ratio of means, {band[0]:.2f}–{band[1]:.2f}, all {every} lie inside it."
+    return (
+        f" By the noise band of a ratio of means, {band[0]:.2f}–{band[1]:.2f}, {len(far)} of these {every} ratios lie "
+        f"beyond it ({named})" + (", the rest inside it." if len(far) < every else ".")
     )
 
 

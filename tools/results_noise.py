@@ -122,4 +122,8 @@ def bands(tables: Tables) -> str:
         if any("timed twice" in heading for heading in tables[SLOW])
         else " The python-fcl run was not timed twice: its noise bands are borrowed from the compiled run."
     )
-    return f"{said}\n\nA single cell inside a noise band is no clear evidence of a saving or a cost.{borrowed}"
+    strict = (  # reader r44f, item 8: said once, here (costs.inside)
+        "Every band is read strictly: a ratio inside one (low < r < high) is no clear evidence of a saving or a cost; "
+        "a ratio on an edge counts as beyond it."
+    )
+    return f"{said}\n\n{strict}{borrowed}"

@@ -41,16 +41,14 @@ from tools.results_findings import (
     APART_END,
     DETAIL_BEGIN,
     DETAIL_END,
-    apart,
     causes,
     network_costs,
     not_from_sampling,
-    stage_shares,
     summary,
 )
 from tools.results_networks import cae_unseen
 from tools.results_noise import bands, noise, own_intervals
-from tools.results_words import BORDER, NAMES, change, counted, percent, span
+from tools.results_words import NAMES, change, counted, span
 
 BEGIN = "<!-- summary: written by `python -m tools.results_summary` from the tables below; edit it there -->"
 END = "<!-- end of the summary -->"
@@ -89,76 +87,67 @@ ANSWERS = {findings.HOLDS: "Yes", findings.IN_PART: "In part", findings.DOES_NOT
 
 
 def key(tables: Tables) -> str:
-    """The Key under the answer (reader r40f, item 4; reader r41f, items 1, 2 and 4): the words the answer and the
-    table use, each defined before the page leans on it, with what the answer's counts read; the glossary that was
-    folded under it is here, once. The `strong` network said not to be the paper's CAE+MLP, and why it is the fair
-    test (its balanced accuracy, computed)."""
+    """The Key under the answer (reader r44f, item 3): the six terms the answer and its table use, one a line, each
+    defined before the page leans on it. The `strong` network said not to be the paper's CAE+MLP, and why it is the
+    fair test (its balanced accuracy, computed)."""
     balanced = [
         recorded.ours(row["Balanced unseen Acc"])
         for row in recorded.table(recorded.ALGORITHM_1, "MLP accuracy", tables).values()
     ]
     differ = table3_against_text()
     entries = sum(len(row) for kinds in IMPROVEMENT.values() for row in kinds.values())
-    items = (  # reader r42f, item 3: a short definition list, one term (or pair) a line
-        "*cell*: one scenario with one sampler, say 3DC-9 OB",
-        "*scenarios*: 2DS, the 2D point robot; 3DC-7 and 3DC-9, the 7- and 9-DoF box chains in 3D clutter; 3DO, the "
-        "8-DoF KUKA youBot in the 3D office",
-        "*samplers*: BS, OB, G and BT, the paper's Basic PRM (uniform), Obstacle-Based PRM, Gaussian and Bridge Test",
-        "*Algorithm 1*: the paper's planner, a PRM that checks every candidate edge as it adds it; the *lazy PRM* "
-        "checks only a candidate path's edges, the fastest planner a network can drive",
-        "*CAE* and *MLP*: the paper's method screens samples with them; the CAE compresses a workspace's occupancy "
-        "grid into a short code, the MLP reads that code and a configuration and answers “valid” (collision-free) or "
-        "“invalid”",
-        "*`paper` preset*: that recipe as we read it",
-        "*`strong` preset*: ours, and not the paper's CAE+MLP: its MLP reads the occupancy around the robot's base "
-        "cell and where its link boxes are instead of the code. It is the fair test of the claim, that an accurate "
-        "network saves time, "
-        f"because it is accurate: right {span(balanced)} % of the time on unseen workspaces' balanced samples, where "
-        "the `paper` MLP is at chance (Table 2). The *lazy-PRM network* is a second `strong` network, raced against "
-        "the lazy PRM (the four runs: [How these results were made](#how-these-results-were-made))",
-        "*python-fcl*: the FCL library's Python binding, a far slower exact check than our *compiled checker*; in "
-        "2DS, the 2D point robot, our exact check is numpy point checks, not compiled",
-        "*each query's own ratio*: what the answer's counts read, one query's time with prediction over its own time "
-        "without, the median over a cell's queries",
-        "*ratio of means*: the two modes' mean times divided (Figures 2–3), our reading of the paper's statistic "
-        f"({entries - len(differ)} of its {entries} entries agree); a *ratio of medians* divides their median times",
-        "*tie band*, *noise band*: the table of bands below; *beyond the noise band*, outside how far timing alone "
-        "moved that ratio",
+    items = (
+        "*cell*: one scenario with one sampler, say 3DC-9 OB. The scenarios: 2DS, the 2D point robot; 3DC-7 and "
+        "3DC-9, the 7- and 9-DoF box chains in 3D clutter; 3DO, the 8-DoF KUKA youBot in the 3D office. The samplers: "
+        "BS, OB, G and BT, the paper's Basic PRM (uniform), Obstacle-Based PRM, Gaussian and Bridge Test",
+        "*Algorithm 1*: the paper's planner, a PRM that checks every candidate edge as it adds it (the *lazy PRM* "
+        "checks only a candidate path's edges)",
+        "*accurate network*: the paper screens samples with a CAE, which compresses a workspace's occupancy grid into "
+        "a short code, and an MLP, which reads that code and a configuration and answers “valid” (collision-free) or "
+        "“invalid”; our *`paper` preset* is that recipe as we read it. The *`strong` preset* is ours: its MLP reads "
+        "the occupancy around the robot's base cell and where its link boxes are instead of the code. It is the fair "
+        "test of the claim because it is accurate: right "
+        f"{span(balanced)} % of the time on unseen workspaces' balanced samples (Table 2)",
+        "*compiled checker*, *python-fcl*: our fast exact check, and the FCL library's Python binding, a far slower "
+        "one (in 2DS our exact check is numpy point checks)",
+        "*faster*, *slower*: by *each query's own ratio*, one query's time with prediction over its own time without, "
+        "the median over a cell's queries, outside the *tie band* (0.90 < r < 1.10). Table 3's statistic is a *ratio "
+        f"of means*, the two modes' mean times divided, our reading of the paper ({entries - len(differ)} of its "
+        f"{entries} entries agree); a *ratio of medians* divides their median times",
+        "*noise band*: how far timing alone can move a ratio (the table of bands below); a cell inside it is no clear "
+        "evidence",
     )
     return "*Key*:\n\n" + "\n".join(f"- {item}" for item in items)
 
 
 def short(tables: Tables) -> str:
-    """The summary's Markdown, without its markers: the answer in three short sentences after the question (reader
-    r41f, item 1), the Key (:func:`key`), the table of counts (:func:`counts`), a line on its dashes and on
-    python-fcl's savings, and the bands near 1 the table reads with (:func:`tools.results_noise.bands`). Why
-    prediction saves so little is the findings' first bullet, said there in full."""
+    """The summary's Markdown, without its markers: the question and its answer, then three plain sentences a student
+    can repeat (reader r44f, item 2), the Key (:func:`key`), the table of counts (:func:`counts`), a two-line note
+    under it (reader r44f, item 4: its dashes, python-fcl's borrowed bands and its savings by means) and the bands
+    near 1 the table reads with (:func:`tools.results_noise.bands`). Why prediction saves so little is the findings'
+    first bullet, said there in full."""
     ratios = recorded.query_ratios(recorded.ALGORITHM_1, tables)
-    edge = costs.noise_edge(tables)
+    band = costs.floors(tables)["own"]
     medians = own_medians(tables, recorded.ALGORITHM_1)
     fast = counted([change(m) for _, m in medians])
-    fast_far = counted([change(m) for _, m in medians if abs(m - 1) >= edge])
+    fast_far = counted([change(m) for _, m in medians if not costs.inside(m, band)])
     slow = own_medians(tables, SLOW)
     read = counted([change(m) for _, m in slow])
-    beyond = counted([change(m) for _, m in slow if abs(m - 1) >= edge])
+    beyond = counted([change(m) for _, m in slow if not costs.inside(m, band)])
     dearer = min(c for s, c in network_costs(tables).items() if s != "2ds") > 1
     small = causes(tables).share < 0.5
-    answer = (  # reader r41f, item 1: three short sentences, the statistic and the band in the Key
+    answer = (  # reader r44f, item 2: the question answered, then three sentences a student can repeat
         "**In short: does an accurate network inside the paper's Algorithm 1 save planning time? "
-        f"{ANSWERS[findings.claim_verdict(ratios)]}. With our fast compiled checker "
+        f"{ANSWERS[findings.claim_verdict(ratios)]}.** With our fast compiled checker, "
         + ("the network was the dearer check: " if dearer else "")
-        + f"by each query's own ratio, {tally(fast[2], fast_far[2], 'slower', sum(fast))}, "
-        f"{tally(fast[0], fast_far[0], 'faster')}. With python-fcl, a slow checker, "
-        + ("sampling is too small a share of a query: " if small else "")
-        + f"by the same ratio, {tally(read[0], beyond[0], 'faster', len(slow))}, "
-        f"{tally(read[2], beyond[2], 'slower')}. "
-        f"{tables_said(tables)}.**"
+        + f"{tally(fast[2], fast_far[2], 'slower', sum(fast))}, {tally(fast[0], fast_far[0], 'faster')}. "
+        "With python-fcl, a slow checker, "
+        + ("sampling was too small a share of a query to matter: " if small else "")
+        + f"{tally(read[0], beyond[0], 'faster', len(slow))}, {tally(read[2], beyond[2], 'slower')}. "
+        f"{tables_said(tables)}."
     )
-    dashes = (  # reader r39f, contradiction 7: the dashes explained in one line
-        "A “—”: no query's own ratio was recorded (the paper prints means; our `paper`-preset run kept means and "
-        f"medians), and the paper gives no noise band.{borrowed(tables)}{not_prediction(tables)}{ceiling(tables)}"
-        f"{means_saving(tables)}"
-        f"{means_border(tables)}"
+    dashes = (  # reader r44f, item 4: the note under the table, two lines
+        f"A “—”: no query's own ratio was recorded, and the paper gives no noise band.{by_means_inside(tables)}"
     )
     return f"{answer}\n\n{key(tables)}\n\n{counts(tables)}\n\n{dashes}\n\n{bands(tables)}"
 
@@ -170,15 +159,6 @@ def tally(tied: int, far: int, verb: str, cells: int | None = None) -> str:
         return f"none {verb}"
     of = f" of {cells} cells" if cells is not None else ""
     return f"{tied}{of} {verb} ({far} beyond the noise band)"
-
-
-def borrowed(tables: Tables) -> str:
-    """The python-fcl run's noise band, borrowed from the compiled run where it was not timed twice."""
-    return (
-        ""
-        if timed_twice(tables, SLOW)
-        else " The python-fcl row reads borrowed noise bands (the table of bands below)."
-    )
 
 
 def by_means(tables: Tables, key: str) -> dict[str, float]:
@@ -193,33 +173,28 @@ def by_means(tables: Tables, key: str) -> dict[str, float]:
 def beyond_means(tables: Tables, ratios: list[float]) -> tuple[int, int]:
     """Reader r41f, item 9: of ``ratios`` (ratios of means), the savings and costs beyond the noise band of a ratio of
     means (:func:`tools.results_noise.noise`)."""
-    low, high = noise(tables).means
-    far = [r for r in ratios if (r < low or r > high) and change(r) != "about the same time"]
+    band = noise(tables).means  # read strictly (reader r44f, item 8): on an edge counts as beyond it
+    far = [r for r in ratios if not costs.inside(r, band) and change(r) != "about the same time"]
     return sum(r < 1 for r in far), sum(r > 1 for r in far)
 
 
-def means_border(tables: Tables) -> str:
-    """Reader r41f, contradiction 7: the `strong` network's cells by means within :data:`BORDER` of the noise band of
-    a ratio of means, named borderline; empty where none, or without the run timed twice."""
-    if not timed_twice(tables, recorded.ALGORITHM_1):
+def by_means_inside(tables: Tables) -> str:
+    """Reader r44f, item 1: python-fcl's savings beyond the noise band of each query's own ratio, read by means (Table
+    3's statistic) against the noise band of a ratio of means; empty where there are none."""
+    band = costs.floors(tables)["own"]
+    far = [cell for cell, m in own_medians(tables, SLOW) if change(m) == "less time" and not costs.inside(m, band)]
+    if not far:
         return ""
     low, high = noise(tables).means
-    near = [
-        (f"{cell}{' (python-fcl)' * (key == SLOW)}", r)
-        for key in (recorded.ALGORITHM_1, SLOW)
-        for cell, r in by_means(tables, key).items()
-        if change(r) != "about the same time" and min(abs(r - low), abs(r - high)) <= BORDER
-    ]
-    said = []  # reader r43f, contradiction 10: a cell printed on an edge is inside the band, as the counts read it
-    for cell, r in near:
-        on = f"{r:.2f}" in (f"{low:.2f}", f"{high:.2f}")
-        edge = "lower" if abs(r - low) < abs(r - high) else "upper"
-        said.append(
-            f"{cell} {r:.2f} lies exactly on the band's {edge} edge: inside"
-            if on
-            else f"{cell} {r:.2f} lies within {BORDER:.2f} of the band's edge: borderline"
-        )
-    return f" By means, {'; '.join(said)}." if said else ""
+    means = by_means(tables, SLOW)
+    inside = [cell for cell in far if costs.inside(means[cell], (low, high))]
+    cells = ", ".join(f"{cell} {means[cell]:.2f}" for cell in far)
+    where = "inside" if len(inside) == len(far) else "beyond" if not inside else f"{len(inside)} of them inside"
+    counted_ = "saving" if len(far) == 1 else f"{len(far)} savings"
+    return (
+        f" By means, python-fcl's {counted_} beyond the noise band ({cells}) lie {where} the band of a ratio of means, "
+        f"{low:.2f}–{high:.2f}" + (": no clear evidence." if inside else ".")
+    )
 
 
 def timed_twice(tables: Tables, key: str) -> bool:
@@ -242,91 +217,17 @@ def tables_said(tables: Tables) -> str:
     balanced = [
         recorded.ours(row["Balanced unseen Acc"]) for row in recorded.table("paper", "MLP accuracy", tables).values()
     ]
-    if round(gain * 100) <= 0 and max(balanced) < 0.6:
-        return "On unseen workspaces, the paper's Tables 1 and 2 do not reproduce either"
+    if round(gain * 100) <= 0 and max(balanced) < 0.6:  # reader r44f, item 5: what they match, not "do not reproduce"
+        return (
+            "On unseen workspaces, the paper's CAE and MLP match only a trivial answer: the CAE is no better than "
+            "answering “free” everywhere (Table 1), the MLP is at chance (Table 2)"
+        )
     return "On unseen workspaces, the paper's Tables 1 and 2 reproduce in part"
 
 
 def own_medians(tables: Tables, key: str) -> list[tuple[str, float]]:
     """The medians of each query's own ratio of the run ``key``: ``[("3DC-9 OB", 0.79), ...]``."""
     return [(f"{s} {sampler}", m) for s, by in own_intervals(tables, key).items() for sampler, (m, _, _) in by.items()]
-
-
-def not_prediction(tables: Tables) -> str:
-    """Reader r38f, contradiction 2; reader r40f, item 2: python-fcl's savings beyond the noise band whose whole query,
-    by means, saved 10 points or more beyond what sampling saved (:func:`apart`), said as not prediction's doing, the
-    switch to means said plainly; empty where none."""
-    edge = costs.noise_edge(tables)
-    far = {cell for cell, m in own_medians(tables, SLOW) if change(m) == "less time" and abs(m - 1) >= edge}
-    rest = [cell for cell in apart(tables) if cell.total > cell.sampling and cell.name in far]
-    said = "; ".join(
-        f"{'it' if len(rest) == 1 else cell.name} saved {percent(cell.total)} % of a query where its sampling saved "
-        f"{percent(cell.sampling)} %"
-        for cell in rest
-    )
-    return (
-        f" Of the answer's {len(far)} python-fcl savings beyond the noise band, {' and '.join(c.name for c in rest)} "
-        f"{'is' if len(rest) == 1 else 'are'} not sampling's: switching to means, Table 3's statistic, {said} (the "
-        "fold under the findings: “Where the whole query moved apart from sampling”)."
-        if rest
-        else ""
-    )
-
-
-def without_times(tables: Tables, key: str) -> dict[str, tuple[float, float]]:
-    """The run ``key``'s mean and standard deviation of a whole query without prediction (its times behind Table 3):
-    ``{"3DC-9 OB": (0.123, 0.46), ...}``."""
-    times = next(t for heading, t in tables[key].items() if "Times behind Table 3" in heading)
-    column = times["columns"].index("total without")
-    found = {}
-    for row in times["rows"]:
-        mean, _, std = row[column].split("/")[0].replace("*", "").partition("±")
-        found[f"{NAMES.get(row[0], row[0])} {row[1]}"] = (float(mean), float(std))
-    return found
-
-
-def means_saving(tables: Tables) -> str:
-    """Reader r42f, contradiction 2: the compiled run's cells that saved beyond the noise band by means, though the
-    answer counts none faster, each with its own ratio and why its mean moved (the mean time without prediction, its
-    spread several times the mean: a few slow queries); empty where none."""
-    low, _ = noise(tables).means
-    own = dict(own_medians(tables, recorded.ALGORITHM_1))
-    spread = without_times(tables, recorded.ALGORITHM_1)
-    cells = [(cell, r) for cell, r in by_means(tables, recorded.ALGORITHM_1).items() if r < low]
-    said = "; ".join(
-        f"{cell}, {r:.2f} by means and {own[cell]:.2f} by its own ratio; without prediction its mean query took "
-        f"{spread[cell][0]:.3g} ± {spread[cell][1]:.2g} s (a standard deviation "
-        f"{spread[cell][1] / spread[cell][0]:.1f} times the mean), so a few slow queries pull that mean up"
-        for cell, r in cells
-    )
-    return (
-        f" With our compiled checker, {len(cells)} {'cell' if len(cells) == 1 else 'cells'} saved beyond the noise "
-        f"band by means, although the answer counts none faster: {said}."
-        if said
-        else ""
-    )
-
-
-def ceiling(tables: Tables) -> str:
-    """Reader r42f, contradiction 4: python-fcl's savings beyond the noise band that the whole query, by means, did
-    not take past what sampling saved (:func:`apart` finds the others): each saving by means beside the most shortening
-    sampling allows there (its share of a mean query times the cut), and its own ratio, a larger saving."""
-    edge = costs.noise_edge(tables)
-    far = {cell: m for cell, m in own_medians(tables, SLOW) if change(m) == "less time" and abs(m - 1) >= edge}
-    moved = {cell.name for cell in apart(tables)}
-    shares, saved = stage_shares(tables, SLOW)
-    times = next(t for heading, t in tables[SLOW].items() if "Times behind Table 3" in heading)
-    names = [f"{NAMES.get(row[0], row[0])} {row[1]}" for row in times["rows"]]
-    means = by_means(tables, SLOW)
-    said = [
-        f"{cell}'s saving, by means {percent(1 - means[cell])} %, is about all that sampling allows there (its "
-        f"{percent(shares[k])} % of a mean query, cut by {saved[k] / shares[k] * 100:.1f} %: "
-        f"{percent(saved[k])} %); its own ratio, {m:.2f}, saves more than that"
-        for cell, m in far.items()
-        if cell not in moved
-        for k in [names.index(cell)]
-    ]
-    return f" {'; '.join(said)}." if said else ""
 
 
 def counts(tables: Tables) -> str:

@@ -10,7 +10,6 @@ RULE = (  # chapter 04's rule for a time ratio with / without, in the page's wor
     "a gain of 10 % or more, on the ratio as shown to two decimals (0.90 or less), is a saving, a loss of 10 % or "
     "more (1.10 or more) a loss, anything between a tie"
 )
-BORDER = 0.01  # a cell this close to a noise band's edge, beyond it, is named as borderline (reader r40f, item 3)
 NAMES = {"2ds": "2DS", "3dc7": "3DC-7", "3dc9": "3DC-9", "3do": "3DO"}
 
 
