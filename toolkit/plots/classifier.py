@@ -376,12 +376,15 @@ def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
     return values
 
 
+UNDER = "hidden where it runs under an outline"  # the threshold's line, where the model is right (r44c)
+
+
 def _mistake_handles(blocks: Mapping[int, int]) -> list:
     """The P(valid) maps' legend: the threshold's line, and each mistake's mark, said to be one (``blocks[code]`` 1) or
     one per ``k x k`` cells holding any (review r18b: the conservative circles along the blocks read as a border)."""
     per = {code: f"\none per {k} x {k}-cell tile holding any" if k > 1 else "" for code, k in blocks.items()}
     return [
-        (_dots(), "P(valid) = threshold: white dots\nringed dark (dark dashes on white);\nthe lighter side is kept"),
+        (_dots(), "P(valid) = threshold: white dots\nringed dark, the lighter side kept;\n" + UNDER),
         (_mistake_line(3), f"dangerous mistake: kept, in\ncollision (squares){per[3]}"),
         (_mistake_line(1), f"conservative mistake: rejected,\nfree (circles){per[1]}"),
     ]
