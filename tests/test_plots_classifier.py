@@ -366,6 +366,9 @@ def test_a_c_obstacle_against_the_maps_edge_is_outlined_along_the_frame():
     segments = sorted(tuple(map(tuple, s)) for s in cells)  # in cells from the map's lower left corner
     assert segments == [((2.0, 0.0), (5.0, 0.0)), ((10.0, 6.0), (10.0, 8.0))]
     assert not frame.get_clip_on() and frame.get_linewidths()[0] == boundary_of(ax).get_linewidths()[0]
+    angles = slices.slice_grid(robots.box_chain(1), dofs=(3, 6), n=10)  # alpha x joint: no wall at either's ends
+    ax = pc.probability_map(valid.astype(float), valid, angles, threshold=0.5).axes[0]
+    assert all(len(c.get_segments()) == 0 for c in ax.collections if c.get_gid() == pc.FRAME)
 
 
 def test_the_conservative_tint_leaves_the_grey_of_p_valid_readable():

@@ -40,7 +40,7 @@ from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_p
 from toolkit.plots.cell_marks import draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
 from toolkit.plots.mark_sides import fit_on_cells, labels_clear_of, marks_counted, on_cells, place_on_cells
 from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
-from toolkit.plots.robot_drawing import dof_label
+from toolkit.plots.robot_drawing import POSITION_NAMES, dof_label
 from toolkit.plots.slices import CSpaceSlice
 
 DANGEROUS, CONSERVATIVE, BOUNDARY = COLORS["dangerous"], COLORS["conservative"], COLORS["boundary"]
@@ -100,7 +100,8 @@ def probability_maps(
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
     text += "configurations; grey, 0 black to 1 white; wrong cells tinted, free ones rejected sky blue, obstacle cells "
     text += "kept vermillion) with the true C-obstacles outlined and hatched, the threshold's "
-    text += f"contour dotted, dangerous mistakes as squares{per[3]} and conservative ones as circles"
+    text += "contour dotted (hidden under an outline where it runs along one), dangerous mistakes as squares"
+    text += f"{per[3]} and conservative ones as circles"
     rule = f"a square per {k[3]} x {k[3]}-cell tile holding dangerous cells, a circle per {k[1]} x {k[1]}-cell tile "
     rule += "holding conservative ones, each drawn on one of its tile's mistake cells (the one nearest their centroid)"
     return describe(fig, text + f"{per[1]}. " + "; ".join(said) + ".", [Part("marks", rule), *parts])
@@ -353,14 +354,18 @@ FRAME = "outline on the frame"  # the gid of the boundary's runs along a map's f
 
 def _frame_runs(valid, grid: CSpaceSlice) -> list[np.ndarray]:
     """The map's frame where C-obstacle cells of ``valid (nx, ny)`` touch it, one segment ``(2, 2)`` per run of them
-    along each side: the outline closed there, so that a block on the map's edge reads as whole, not cut off."""
+    along each side: the outline closed there, so that a block on the map's edge reads as whole, not cut off. Only
+    where the map ends at a position's bound, a wall: an angle's ends are none (α wraps round; a joint's limits)."""
     (x0, x1, y0, y1), runs = grid.extent, []
+    walls = [name in POSITION_NAMES for name in grid.names]  # (2,) each axis's ends are walls
     for along, cells, at, lo, hi, horizontal in (
         (valid[:, 0], grid.shape[0], y0, x0, x1, True),
         (valid[:, -1], grid.shape[0], y1, x0, x1, True),
         (valid[0, :], grid.shape[1], x0, y0, y1, False),
         (valid[-1, :], grid.shape[1], x1, y0, y1, False),
     ):
+        if not walls[1 if horizontal else 0]:
+            continue
         edges = lo + (hi - lo) * np.arange(cells + 1) / cells  # (cells + 1,) the cells' edges along this side
         blocked = np.concatenate([[0], (~along).astype(int), [0]])
         starts, ends = np.flatnonzero(np.diff(blocked) == 1), np.flatnonzero(np.diff(blocked) == -1)
