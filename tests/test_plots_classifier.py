@@ -329,10 +329,11 @@ def test_a_maps_circles_lie_over_its_outlines_and_every_mark_inside_its_frame():
         assert inside >= np.sqrt(mark.get_sizes()[0]) / 2 + cell_marks.RING - 1e-6
 
 
-def test_the_threshold_line_lies_under_the_outlines_and_shows_on_both_sides_of_them():
+def test_the_threshold_line_lies_under_the_outlines_and_hides_where_it_runs_along_them():
     """Reader r20b, chapter 03's `strong` map: where the model is sharp its dotted threshold line runs along the
-    C-obstacle's outlines, and drawn under them it could not be seen; r31c: drawn over them it made the outline look
-    beaded, and neither read. It is drawn under them, wider than the ringed outline, the squares over both."""
+    C-obstacle's outlines; r31c: drawn over them it made the outline look beaded; r44c: drawn under them but wider,
+    its dots stuck out a cell on each side and read as running through the cells beside the outline. It is drawn
+    under them, exactly as wide as the ringed outline: it shows only where the model's answer leaves the truth."""
     fine = slices.slice_grid(robots.point_robot(), n=60)
     ws = Workspace(np.zeros(2), np.full(2, 31.0), np.array([[[10.0, 5.0], [20.0, 12.0]]]))
     valid = fine.image(exact_checker(ws, robots.point_robot()).are_valid(fine.configs))  # (60, 60)
@@ -342,7 +343,42 @@ def test_the_threshold_line_lies_under_the_outlines_and_shows_on_both_sides_of_t
     (squares,) = [c for c in cell_marks.cell_marks(ax) if c.get_label() == "invalid kept (dangerous)"]
     assert cut.get_zorder() < boundary_of(ax).get_zorder() < squares.get_zorder()
     ringed = boundary_of(ax).get_linewidths()[0] + 2 * 1.6  # the outline with its black and white rings
-    assert min(cut.get_linewidths()) >= ringed + 1.0  # its dots stick out on both sides
+    assert max(cut.get_linewidths()) + 1.6 <= ringed + 1e-9  # the line with its dark ring: no wider (r44c)
+    assert min(cut.get_linewidths()) >= 2.5  # still bold where it shows (r15c)
+    cut_paths = np.concatenate([p.vertices for p in cut.get_paths()])  # on the cells' edges, as the outline
+    x0, x1, y0, y1 = fine.extent
+    edges = np.stack([x0 + (x1 - x0) * np.arange(61) / 60, y0 + (y1 - y0) * np.arange(61) / 60], axis=1)  # (61, 2)
+    on_edge = np.isclose(cut_paths[:, None, :], edges[None]).any(axis=1).any(axis=1)  # (m,) x or y on a cell edge
+    assert on_edge.all() and len(on_edge) > 10
+
+
+def test_a_c_obstacle_against_the_maps_edge_is_outlined_along_the_frame():
+    """Reader r44c, chapter 03's z = 5.5 slice: blocks on the bottom row had no outline along the frame and read as
+    cut off by it. The outline runs along the frame exactly where obstacle cells touch it, one segment a run."""
+    grid = slices.slice_grid(robots.point_robot(), n=10)
+    valid = np.ones(grid.shape, dtype=bool)
+    valid[2:5, 0:2] = False  # a block on the bottom edge, cells 2-4 along x
+    valid[9, 6:8] = False  # a strip on the right edge, cells 6-7 along y
+    ax = pc.probability_map(valid.astype(float), valid, grid, threshold=0.5).axes[0]
+    (frame,) = [c for c in ax.collections if c.get_gid() == pc.FRAME]
+    x0, x1, y0, y1 = grid.extent
+    cells = [((s - [x0, y0]) / [(x1 - x0) / 10, (y1 - y0) / 10]).round(6) for s in frame.get_segments()]
+    segments = sorted(tuple(map(tuple, s)) for s in cells)  # in cells from the map's lower left corner
+    assert segments == [((2.0, 0.0), (5.0, 0.0)), ((10.0, 6.0), (10.0, 8.0))]
+    assert not frame.get_clip_on() and frame.get_linewidths()[0] == boundary_of(ax).get_linewidths()[0]
+    angles = slices.slice_grid(robots.box_chain(1), dofs=(3, 6), n=10)  # alpha x joint: no wall at either's ends
+    ax = pc.probability_map(valid.astype(float), valid, angles, threshold=0.5).axes[0]
+    assert all(len(c.get_segments()) == 0 for c in ax.collections if c.get_gid() == pc.FRAME)
+
+
+def test_the_conservative_tint_leaves_the_grey_of_p_valid_readable():
+    """Reader r44c: on the `paper` map, where most cells are conservative mistakes, the sky-blue tint hid the grey of
+    P(valid). Laid over a mid grey, it moves the grey's lightness by under 3 % and each channel by under 0.05."""
+    grey = np.full(3, 0.47)  # the `paper` map's grey, about
+    tinted = (1 - pc.TINT[1]) * grey + pc.TINT[1] * np.array(to_rgb(pc.CONSERVATIVE))
+    lightness = np.array([0.2126, 0.7152, 0.0722])
+    assert abs(tinted @ lightness - grey @ lightness) < 0.03 and np.abs(tinted - grey).max() < 0.05
+    assert pc.TINT[1] > 0 and pc.TINT[3] > pc.TINT[1]  # still tinted; the dangerous ones stronger
 
 
 def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, probability, valid):
@@ -427,7 +463,11 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     ax = pc.path_map(
         probability, valid, grid, threshold=0.5, path=path, nodes=nodes, nodes_valid=nodes_valid, edges=edges
     ).axes[0]
-    (drawn,) = [c for c in ax.collections if isinstance(c, LineCollection) and not isinstance(c, ContourSet)]
+    (drawn,) = [
+        c
+        for c in ax.collections
+        if isinstance(c, LineCollection) and not isinstance(c, ContourSet) and c.get_gid() != pc.FRAME
+    ]
     np.testing.assert_array_equal(drawn.get_segments()[0], nodes[[0, 2]])
     lines = {line.get_label(): np.column_stack([line.get_xdata(), line.get_ydata()]) for line in ax.get_lines()}
     np.testing.assert_array_equal(lines["returned path (checked exactly)"], path)

@@ -145,3 +145,39 @@ def test_the_threshold_explorer_starts_at_the_models_own_threshold_and_moves_to_
     assert "threshold 0.60" in picture.tooltip
     model.value = "b"
     assert threshold.value == 0.25 and "threshold 0.25" in picture.tooltip
+
+
+def test_the_verdict_says_the_ablations_rows_are_cumulative_and_names_their_changes_in_the_tables_order():
+    """Reader r44c item 1: the verdict listed the causes of the `paper` preset's 55 % as if each stood alone;
+    docs/fidelity.md section 4's rows are cumulative (each keeps the changes above it), and the verdict says so in one
+    sentence, naming the changes in the order of the table's rows."""
+    import json
+    import re
+    from pathlib import Path
+
+    root = Path(__file__).resolve().parents[1]
+    fidelity = (root / "docs" / "fidelity.md").read_text()
+    section = fidelity[fidelity.index("## 4. The ablation") : fidelity.index("### 3DC-7")]
+    assert "| change (cumulative) |" in section and "Each row keeps the changes above it" in section
+    rows = {int(m[1]): m[2] for m in re.finditer(r"^\| (\d) \| ([^|]*) \|", section, re.M)}
+    order = [  # (the table's words for the change, the verdict's)
+        ("CAE on 2000 generated grids", "a CAE that generalizes"),
+        ("MLP without dropout", "no dropout"),
+        ("MLP: AdamW", "another optimizer"),
+        ("MLP inputs standardized", "standardized inputs"),
+        ("1000 training workspaces", "1000 workspaces"),
+    ]
+    at = [next(k for k, change in rows.items() if change.startswith(table)) for table, _ in order]
+    assert at == sorted(at)  # the table's order
+    nb = json.loads((root / "notebooks" / "03_mlp_decision_boundaries.ipynb").read_text())
+    verdict = " ".join("".join(nb["cells"][0]["source"]).split())
+    said = "its rows are cumulative: each row keeps every change above it ("
+    assert said in verdict and "so the causes add up; they are not separate" in verdict
+    listed = verdict[verdict.index(said) + len(said) :].split(")")[0]
+    assert [listed.index(words) for _, words in order] == sorted(listed.index(words) for _, words in order)
+    balanced = {
+        int(m[1]): float(m[2]) for m in re.finditer(r"^\| (\d) \|[^|]*\|[^|]*\|[^|]*\| ([\d.]+) /", section, re.M)
+    }
+    assert f"unrounded it is {balanced[0]} %" in verdict  # item 2: what the 5-point rule says of 55.2 %
+    assert (balanced[0] - 50 > 5) == ("past it: by the rule, better than a coin flip by a hair" in verdict)
+    assert f"{balanced[0] - 55:.1f} points past it" in verdict

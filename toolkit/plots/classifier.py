@@ -40,7 +40,7 @@ from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_p
 from toolkit.plots.cell_marks import draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
 from toolkit.plots.mark_sides import fit_on_cells, labels_clear_of, marks_counted, on_cells, place_on_cells
 from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
-from toolkit.plots.robot_drawing import dof_label
+from toolkit.plots.robot_drawing import POSITION_NAMES, dof_label
 from toolkit.plots.slices import CSpaceSlice
 
 DANGEROUS, CONSERVATIVE, BOUNDARY = COLORS["dangerous"], COLORS["conservative"], COLORS["boundary"]
@@ -49,13 +49,16 @@ MISTAKE_MARKERS = {1: "o", 3: "s"}  # conservative circles, dangerous squares: t
 CUT = 2.5  # points: the path map's dotted line at the model's threshold, bold enough to follow across the map (r15c)
 END_CLEAR = 0.06  # of a map's width: a path's diamond nearer an end than this is left out, the end's mark beside it
 OUTLINE = 1.2  # points: the true C-obstacle boundary's line, its black and white rings 1.6 points wider each
-CUT_MAP = OUTLINE + 3 * 1.6  # a map's line: under the ringed outline, wider, dots both sides (r31c: over, it beaded)
+CUT_MAP = OUTLINE + 1.6  # a map's line: under the outline, as wide as it with its dark ring, so that where the model
+# is right it hides under the outline and shows only where it leaves it (r44c: wider, its dots stuck out a cell on
+# each side and read as running through the cells beside the outline; r31c: drawn over the outline, it beaded)
 ZORDER = {1: 2.8, 3: 3.0}  # over the lines (2: the boundary), squares over circles (r29c: circles under the outlines
 # were half hidden; r10b, r11: a square under its ringed line was cut in two)
 PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
 HATCH = COLORS["c_obstacle"]  # the C-obstacles' hatch on a P(valid) map: light, seen on its black and its greys
-TINT = {1: 0.25, 3: 0.6}  # wrong cells tinted in their colour: conservative light, its grey read (r41c: 0.5 hid it)
+TINT = {1: 0.08, 3: 0.6}  # wrong cells tinted in their colour: conservative light, its grey read (r41c: 0.5 hid it;
+# r44c: 0.25 still turned the `paper` map's mid grey blue)
 BLOCKS = {1: 5, 3: 10}  # tiles a side on every map: a 100-cell map's circles one per 20 x 20 cells, squares 10 x 10
 
 
@@ -97,7 +100,8 @@ def probability_maps(
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
     text += "configurations; grey, 0 black to 1 white; wrong cells tinted, free ones rejected sky blue, obstacle cells "
     text += "kept vermillion) with the true C-obstacles outlined and hatched, the threshold's "
-    text += f"contour dotted, dangerous mistakes as squares{per[3]} and conservative ones as circles"
+    text += "contour dotted (hidden under an outline where it runs along one), dangerous mistakes as squares"
+    text += f"{per[3]} and conservative ones as circles"
     rule = f"a square per {k[3]} x {k[3]}-cell tile holding dangerous cells, a circle per {k[1]} x {k[1]}-cell tile "
     rule += "holding conservative ones, each drawn on one of its tile's mistake cells (the one nearest their centroid)"
     return describe(fig, text + f"{per[1]}. " + "; ".join(said) + ".", [Part("marks", rule), *parts])
@@ -337,8 +341,37 @@ def _draw_boundary(ax, valid, grid: CSpaceSlice) -> None:
     valid = _on_grid(valid, grid, "valid")
     if valid.any() and not valid.all():
         draw_cell_outline(ax, grid, valid, colors=BOUNDARY, linewidths=OUTLINE).set_path_effects(halo(OUTLINE))
+        frame = LineCollection(_frame_runs(valid, grid), colors=BOUNDARY, linewidths=OUTLINE, zorder=2, gid=FRAME)
+        frame.set_path_effects(halo(OUTLINE))  # r44c: a block against the map's edge read as cut off by the frame
+        frame.set_clip_on(False)  # whole on the frame, not half of it
+        ax.add_collection(frame, autolim=False)
     ax.set_xlabel(dof_label(grid.names[0]))  # an angle with its unit, radians
     ax.set_ylabel(dof_label(grid.names[1]))
+
+
+FRAME = "outline on the frame"  # the gid of the boundary's runs along a map's frame
+
+
+def _frame_runs(valid, grid: CSpaceSlice) -> list[np.ndarray]:
+    """The map's frame where C-obstacle cells of ``valid (nx, ny)`` touch it, one segment ``(2, 2)`` per run of them
+    along each side: the outline closed there, so that a block on the map's edge reads as whole, not cut off. Only
+    where the map ends at a position's bound, a wall: an angle's ends are none (α wraps round; a joint's limits)."""
+    (x0, x1, y0, y1), runs = grid.extent, []
+    walls = [name in POSITION_NAMES for name in grid.names]  # (2,) each axis's ends are walls
+    for along, cells, at, lo, hi, horizontal in (
+        (valid[:, 0], grid.shape[0], y0, x0, x1, True),
+        (valid[:, -1], grid.shape[0], y1, x0, x1, True),
+        (valid[0, :], grid.shape[1], x0, y0, y1, False),
+        (valid[-1, :], grid.shape[1], x1, y0, y1, False),
+    ):
+        if not walls[1 if horizontal else 0]:
+            continue
+        edges = lo + (hi - lo) * np.arange(cells + 1) / cells  # (cells + 1,) the cells' edges along this side
+        blocked = np.concatenate([[0], (~along).astype(int), [0]])
+        starts, ends = np.flatnonzero(np.diff(blocked) == 1), np.flatnonzero(np.diff(blocked) == -1)
+        for a, b in zip(edges[starts], edges[ends]):
+            runs.append(np.array([[a, at], [b, at]] if horizontal else [[at, a], [at, b]]))
+    return runs
 
 
 def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
@@ -348,12 +381,15 @@ def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
     return values
 
 
+UNDER = "hidden where it runs under an outline"  # the threshold's line, where the model is right (r44c)
+
+
 def _mistake_handles(blocks: Mapping[int, int]) -> list:
     """The P(valid) maps' legend: the threshold's line, and each mistake's mark, said to be one (``blocks[code]`` 1) or
     one per ``k x k`` cells holding any (review r18b: the conservative circles along the blocks read as a border)."""
     per = {code: f"\none per {k} x {k}-cell tile holding any" if k > 1 else "" for code, k in blocks.items()}
     return [
-        (_dots(), "P(valid) = threshold: white dots\nringed dark (dark dashes on white);\nthe lighter side is kept"),
+        (_dots(), "P(valid) = threshold: white dots\nringed dark, the lighter side kept;\n" + UNDER),
         (_mistake_line(3), f"dangerous mistake: kept, in\ncollision (squares){per[3]}"),
         (_mistake_line(1), f"conservative mistake: rejected,\nfree (circles){per[1]}"),
     ]
