@@ -120,6 +120,29 @@ def test_section_6s_jacobian_of_a_one_layer_encoder_is_its_weights():
     assert abs(chapter02.jacobian_norm(cae, torch.ones(4, 4)) - float(weights.norm())) < 1e-5
 
 
+def test_section_6s_scale_free_jacobian_ignores_a_shrunk_code():
+    """Reader r44b: the Jacobian norm has the code's units; divided by the code's length it does not. An encoder whose
+    weights and biases are halved has half the Jacobian norm and the same norm / ||z||."""
+    import numpy as np
+    import torch
+
+    from toolkit.learning.models import CAE
+
+    torch.manual_seed(0)
+    cae, grids = CAE((16, 3)), torch.randn(5, 4, 4)
+    with torch.no_grad():
+        z = cae.encode(grids)
+    assert np.allclose(chapter02.code_norms(cae, grids), z.norm(dim=-1).numpy())
+    norms = np.array([chapter02.jacobian_norm(cae, g) for g in grids])
+    scale_free = norms / chapter02.code_norms(cae, grids)
+    with torch.no_grad():
+        for parameter in cae.encoder.parameters():
+            parameter.mul_(0.5)
+    halved = np.array([chapter02.jacobian_norm(cae, g) for g in grids])
+    assert np.allclose(halved, 0.5 * norms, rtol=1e-4)
+    assert np.allclose(halved / chapter02.code_norms(cae, grids), scale_free, rtol=1e-4)
+
+
 def test_section_5s_table_sets_the_test_grids_beside_the_new_grids():
     """Reader r36b: λ = 0.961's +0.6 on the 10 test grids and its -0.2 on the 500 new grids side by side."""
     table = chapter02.split_table(

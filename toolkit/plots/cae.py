@@ -285,7 +285,15 @@ def contraction(
         ax_z.plot(flips, np.mean(latent_shift[name], axis=1), label=name, **_stacked(k, len(names)))
         ax_x.plot(flips, np.mean(decoded_change[name], axis=1), label=name, **_stacked(k, len(names)))
     ax_x.plot(flips, flips, color=COLORS["reference"], linestyle=":", label="as many as flipped", zorder=1)
-    ax_z.set_ylabel("||z' - z|| / ||z||")  # review r30b: the long label was cramped; the title says what it is
+    ax_z.set_yscale("log")  # reader r44b: log-log, as the right panel; a power of the flips reads as a straight line
+    ax_z.set_ylabel("||z' - z|| / ||z|| (log scale)")  # review r30b: the long label was cramped; the title says what
+    moved = np.concatenate([np.mean(latent_shift[name], axis=1) for name in names])
+    moved = moved[moved > 0]
+    if moved.size:  # ticks of 1, 2, 3, 5 times a power of ten within the range drawn, written as plain numbers
+        steps = [m * 10.0**e for e in range(-4, 2) for m in (1, 2, 3, 5)]
+        ticks = [t for t in steps if moved.min() / 1.5 <= t <= moved.max() * 1.5] or [moved.min()]
+        ax_z.set_yticks(ticks, [f"{t:g}" for t in ticks])
+        ax_z.set_yticks([], minor=True)
     ax_z.set_title("Latent code moves", fontsize=10)  # its axis says relative to what
     ax_x.set_title("Reconstruction changes", fontsize=10)
     changes = np.concatenate([flips, *(np.mean(decoded_change[name], axis=1) for name in names)])  # the counts drawn
@@ -307,7 +315,7 @@ def contraction(
     parts = [_norms_part(jacobian_norms), *(lines_part(ax, text="mean over the trials") for ax in (ax_z, ax_x))]
     text = "How strongly each encoder reacts to its input: the norm of its Jacobian (a box per model, the median a"
     text += " thick line, the mean a triangle), and how far the latent code and the reconstruction move when cells of"
-    text += " the input are flipped (the flips, and the decoded cells that change, on log scales)"
+    text += " the input are flipped (both panels log-log: the flips, the code's move and the decoded cells that change)"
     return describe(fig, f"{text}. {said}.", parts)
 
 

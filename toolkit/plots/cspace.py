@@ -186,7 +186,8 @@ def occupancy_figure(
     columns = min(columns, len(images))
     rows = -(-len(images) // columns)
     wide = len(images) > 1  # layers fill the page's width, little room between them (r39a: 4 px a cell were too few)
-    fig = Figure(figsize=(PAGE_WIDTH, rows * PAGE_WIDTH / columns * 1.05 + 0.9) if wide else (4.2, 4.6))
+    # reader r44a: one image at 4.2 inches was too small to read at 1280 px; now most of the page's width
+    fig = Figure(figsize=(PAGE_WIDTH, rows * PAGE_WIDTH / columns * 1.05 + 0.9) if wide else (5.4, 5.8))
     axes = fig.subplots(
         rows, columns, squeeze=False, sharex=True, sharey=True, gridspec_kw={"hspace": 0.25, "wspace": 0.08}
     )

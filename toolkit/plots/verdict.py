@@ -32,6 +32,7 @@ from toolkit.plots.robot_drawing import (
     link_style,
 )
 
+INSET = 0.46  # the inset's side, a fraction of its panel's (reader r44a: at 0.38 it was hard to read)
 INSET_BACKGROUND = COLORS["c_obstacle"]  # light grey: the inset's ground, set off from the white room around it
 PARTS = {"youbot": ("platform", "turret", "upper arm", "forearm", "wrist", "gripper"), "point2d": ("square",)}
 
@@ -185,14 +186,16 @@ def _zoom_on_small_fills(ax, fills, robot: BoxRobot, q: np.ndarray, plane: tuple
     centers, rotations, halves = robot.link_boxes(q[None])
     shapes = [Path(outline(box_corners(c, r, h), plane)) for c, r, h in zip(centers[0], rotations[0], halves)]
     shapes += [Path(np.array([f[2], (f[3][0], f[2][1]), f[3], (f[2][0], f[3][1])])) for f in fills]  # their blocks
-    grid = np.stack(np.meshgrid(np.linspace(0, 0.38, 12), np.linspace(0, 0.38, 12)), axis=-1).reshape(-1, 2)
-    corners = [(a, b) for a in (0.03, 0.59) for b in (0.03, 0.59)]  # the inset's lower left corner, axes fraction
+    grid = np.stack(np.meshgrid(np.linspace(0, INSET, 12), np.linspace(0, INSET, 12)), axis=-1).reshape(-1, 2)
+    corners = [
+        (a, b) for a in (0.03, 0.97 - INSET) for b in (0.03, 0.97 - INSET)
+    ]  # the inset's lower left corner, axes fraction
 
     def covered(c) -> int:  # how much of the robot and the touched blocks the inset would hide
         points = np.array([x0, y0]) + (grid + c) * np.array([x1 - x0, y1 - y0])
         return sum(int(shape.contains_points(points).sum()) for shape in shapes)
 
-    inset = ax.inset_axes([*min(corners, key=covered), 0.38, 0.38])
+    inset = ax.inset_axes([*min(corners, key=covered), INSET, INSET])
     for fill, link, b_lo, b_hi in fills:
         inset.add_patch(Rectangle(b_lo, *(b_hi - b_lo), alpha=0.5, zorder=0.9, **BLOCK_STYLE))
         inset.add_patch(Rectangle(b_lo, *(b_hi - b_lo), fill=False, edgecolor=COLORS["ink"], linewidth=2, ls="--"))
@@ -203,7 +206,12 @@ def _zoom_on_small_fills(ax, fills, robot: BoxRobot, q: np.ndarray, plane: tuple
     inset.set_facecolor(INSET_BACKGROUND)  # reader r42a: unframed, the inset read as a block and a robot in the room
     for spine in inset.spines.values():
         spine.set(linewidth=2.5, edgecolor=COLORS["ink"])
-    inset.set_title(f"zoom x{(x1 - x0) / (2 * half):.0f}", fontsize=8, pad=2)
+    inset.set_title(  # on a white ground: the title may sit over the robot (reader r44a)
+        f"zoom x{(x1 - x0) / (2 * half):.0f}",
+        fontsize=9,
+        pad=3,
+        bbox={"facecolor": "white", "edgecolor": "none", "pad": 1},
+    )
     ax.indicate_inset_zoom(inset, edgecolor=COLORS["ink"])
     ax.zoomed = True
 

@@ -196,6 +196,14 @@ def jacobian_norm(cae: CAE, grid: torch.Tensor) -> float:
     return float(jacobian.norm())
 
 
+@torch.no_grad()
+def code_norms(cae: CAE, grids: torch.Tensor) -> np.ndarray:
+    """Section 6: ``(W,)`` the length ``||z||`` of each grid's code. The Jacobian norm divided by it is scale-free
+    (reader r44b): an encoder that only shrinks its code, its decoder scaling it back, has a smaller Jacobian norm
+    but not a smaller ratio, as the relative move of the code ``||z' - z|| / ||z||`` is scale-free."""
+    return cae.encode(grids).norm(dim=-1).numpy()
+
+
 def flipped(grids: torch.Tensor, flips: list[int], rng: np.random.Generator) -> torch.Tensor:
     """Section 6: ``(len(flips), W, nx, ny)``, each grid with the first k cells of its own random order flipped, for
     each k in ``flips``: the grid with 10 flips contains the one with 5."""
