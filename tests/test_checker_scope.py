@@ -198,7 +198,12 @@ def test_beyond_sampling_sets_the_papers_own_arithmetic_beside_ours():
     # reader r34d, contradiction 1: both our runs, the fast checker's cells too
     assert "fast checker: 2DS BT 13 % against 8 %, 3DC-9 OB 28 % against 8 %, 3DO BS 14 % against 1 %;" in said
     assert "python-fcl: 3DC-9 OB 34 % against 11 %)." in said
-    assert "In 3 of them (fast checker 2DS BT, fast checker 3DC-9 OB, fast checker 3DO BS) the median" in said
+    # common46: by means each of ours lies inside the means band (0.52-1.48), so no story of a saving beyond sampling
+    assert said.endswith(
+        "Each lies inside the noise band of a ratio of means (0.52–1.48): within timing noise, so no evidence of a "
+        "saving larger than sampling."
+    )
+    assert "another roadmap can explain it" not in said.split("Ours have")[1]
 
 
 def test_the_lazy_prm_fold_explains_a_mean_that_saved_where_the_ratio_of_medians_did_not():
