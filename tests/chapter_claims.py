@@ -570,7 +570,7 @@ FIGURES_04 = (  # the figures chapter 04's prose promises, by the call that draw
     "planning.roadmap_steps(",
     "timings.stage_times(",
     "planning_times(",
-    "checker_rates(",  # section 4: timings.throughputs in the page's checker looks (reader r44d, 3)
+    "rates_figure(",  # section 4: timings.throughputs in the page's checker looks (reader r44d, 3)
     "answer_figure(",  # the answer's one panel, under it (reviews r25a, r28d)
 )
 

@@ -95,7 +95,7 @@ def test_each_checker_keeps_one_look_and_no_marker_hides_another():
         "ours, our fast checker (compiled in 3D, numpy in 2DS): crosses",
         "ours, python-fcl on both sides: hexagons",
     ]
-    rates = answer.checker_rates({"2DS": {"fast exact": 5e6, "python-fcl": 2e5, "network": 1e6}})
+    rates = chapter04.rates_figure({"2DS": {"fast exact": 5e6, "python-fcl": 2e5, "network": 1e6}})
     drawn = {line.get_label(): (line.get_marker(), line.get_color()) for line in rates.axes[0].lines}
     assert drawn == {
         f"{c} ({answer.SHAPES[m]})": (m, color) for c, (color, m) in answer.CHECKERS.items() if c != "paper"

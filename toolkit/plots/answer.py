@@ -23,7 +23,7 @@ from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO, PAGE_WIDTH
 from toolkit.plots.query_ratios import NOISE_HATCH, hatch_round
-from toolkit.plots.timings import band_words, log_ticks, throughputs
+from toolkit.plots.timings import band_words, log_ticks
 
 CHECKERS = {  # reader r44d, item 3: one colour and marker per checker on chapter 04's whole page, none of them a
     # verdict look of the home page's Figure 1 (its circle, square and triangle; its blue, vermillion and black)
@@ -253,22 +253,3 @@ def _cell(ratio: float | None, whisker: tuple[float, float] | None) -> str:
     if ratio is None:
         return ""
     return f"{ratio:.2f}" + (f" ({whisker[0]:.2f}–{whisker[1]:.2f})" if whisker else "")
-
-
-def checker_rates(rates: dict[str, dict[str, float]]) -> Figure:
-    """Section 4's figure, :func:`toolkit.plots.timings.throughputs` (``{scenario: {checker: rate}}``, checkers named
-    as :data:`CHECKERS`), each checker in chapter 04's one colour and marker (reader r44d, item 3: the network's
-    triangle meant "saves time" elsewhere), its marker named in the legend."""
-    fig = throughputs(rates)
-    ax = fig.axes[0]
-    for line in ax.lines:
-        name = str(line.get_label())
-        if name in CHECKERS:
-            color, marker = CHECKERS[name]
-            line.set(marker=marker, color=color, markerfacecolor=color, markeredgecolor=COLORS["ink"])
-            line.set_markeredgewidth(0.6)
-            line.set_label(f"{name} ({SHAPES[marker]})")
-    for legend in list(fig.legends):
-        legend.remove()
-    fig.legend(loc="outside lower center", ncol=len(ax.lines), fontsize=9, frameon=False)
-    return fig

@@ -15,7 +15,9 @@ from toolkit.geometry.collision import exact_checker
 from toolkit.learning.learned import LearnedChecker
 from toolkit.planning.local_planner import path_is_valid
 from toolkit.planning.sampling import PAPER_SAMPLERS
-from toolkit.plots.answer import answer_ratios
+from toolkit.plots.answer import CHECKERS, SHAPES, answer_ratios
+from toolkit.plots.palette import COLORS
+from toolkit.plots.timings import throughputs
 from toolkit.teaching import checker_scope, costs, findings, recorded
 from toolkit.teaching.recorded import Tables
 from toolkit.util.verdicts import COSTS, SAVES, TIES, time_verdict
@@ -415,3 +417,22 @@ def load_line() -> str:
         f"Timed at a load average of {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (the last minute's, as this "
         "table was finished). Live timings on a shared machine illustrate; section 6's recorded runs decide."
     )
+
+
+def rates_figure(rates: dict[str, dict[str, float]]) -> Figure:
+    """Section 4's figure, :func:`toolkit.plots.timings.throughputs` (``{scenario: {checker: rate}}``, checkers named
+    as :data:`toolkit.plots.answer.CHECKERS`), each checker in chapter 04's one colour and marker (reader r44d, item
+    3: the network's triangle meant "saves time" elsewhere), its marker named in the legend."""
+    fig = throughputs(rates)  # then restyled
+    ax = fig.axes[0]
+    for line in ax.lines:
+        name = str(line.get_label())
+        if name in CHECKERS:
+            color, marker = CHECKERS[name]
+            line.set(marker=marker, color=color, markerfacecolor=color, markeredgecolor=COLORS["ink"])
+            line.set_markeredgewidth(0.6)
+            line.set_label(f"{name} ({SHAPES[marker]})")
+    for legend in list(fig.legends):
+        legend.remove()
+    fig.legend(loc="outside lower center", ncol=len(ax.lines), fontsize=9, frameon=False)
+    return fig
