@@ -22,7 +22,7 @@ def test_answer_ratios_draws_every_scenario_sampler_and_series_in_one_panel():
 
 def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_them():
     """Reader r33d, figure 1: the large markers compared our medians with the paper's means. With ``means`` the figure
-    has two panels on one scale: above, the paper's squares beside our means, filled (like for like); below, our
+    has two panels on one scale: above, the paper's diamonds beside our means, filled (like for like); below, our
     medians, hollow, each with its whisker; a legend of three lines, one a series. Reader r34d: the means floor
     hatched above (named first in the legend), and the hollow markers in a legend of their own under the figure."""
     rows, means = checker_scope.compact(), checker_scope.our_means()
