@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import numpy as np
+
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots import answer, query_ratios
 from toolkit.plots.alt import alt_text
@@ -20,7 +22,7 @@ def test_answer_ratios_draws_every_scenario_sampler_and_series_in_one_panel():
 
 def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_them():
     """Reader r33d, figure 1: the large markers compared our medians with the paper's means. With ``means`` the figure
-    has two panels on one scale: above, the paper's squares beside our means, filled (like for like); below, our
+    has two panels on one scale: above, the paper's diamonds beside our means, filled (like for like); below, our
     medians, hollow, each with its whisker; a legend of three lines, one a series. Reader r34d: the means floor
     hatched above (named first in the legend), and the hollow markers in a legend of their own under the figure."""
     rows, means = checker_scope.compact(), checker_scope.our_means()
@@ -34,10 +36,10 @@ def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_th
     def values(ax, marker: str) -> list[float]:
         return sorted(v for line in ax.lines if line.get_marker() == marker for v in line.get_ydata())
 
-    assert set(marks(top)) == {"s", "o", "^"} and set(marks(low)) == {"o", "^"}  # no square below: the paper's means
-    assert values(top, "o") == sorted(v for label, r in means.items() if "python-fcl" not in label for v in r.values())
-    assert values(top, "^") == sorted(v for label, r in means.items() if "python-fcl" in label for v in r.values())
-    assert values(low, "o") == sorted(
+    assert set(marks(top)) == {"D", "X", "h"} and set(marks(low)) == {"X", "h"}  # no diamond below: the paper's means
+    assert values(top, "X") == sorted(v for label, r in means.items() if "python-fcl" not in label for v in r.values())
+    assert values(top, "h") == sorted(v for label, r in means.items() if "python-fcl" in label for v in r.values())
+    assert values(low, "X") == sorted(
         v for label, r in rows.items() if label.endswith("(`strong` preset), medians") for v in r.values()
     )
     assert all(line.get_markerfacecolor() == "none" for line in marks(low).values())  # hollow: the second statistic
@@ -50,7 +52,9 @@ def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_th
     top = hatched.axes[0]
     assert [p.get_hatch() for p in top.patches].count(query_ratios.NOISE_HATCH) == 2  # below and above the tie band
     assert hatched.legends[0].get_texts()[0].get_text() == "noise band (means), 0.84–1.24"
-    assert "hatched round the tie band, noise band (means), 0.84–1.24: the lowest and highest" in alt_text(hatched)
+    assert "hatched round the tie band, noise band (means), 0.84–1.24: twice as far from 1 as timing" in alt_text(
+        hatched
+    )
     both = answer_ratios(  # reader r36d: the lower panel draws the median's band too
         rows, tie=findings.TIE, means=means, names=chapter04.SERIES, floor=(0.84, 1.24), median_floor=(0.82, 1.18)
     )
@@ -58,7 +62,7 @@ def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_th
     assert both.legends[1].get_texts()[0].get_text() == "noise band (medians), 0.82–1.18"
     assert "Hatched round the tie band below, noise band (medians), 0.82–1.18" in alt_text(both)
     said = alt_text(fig)
-    assert "Above, means, Table 3's statistic: the paper's squares beside our two series' means, 48 points" in said
+    assert "Above, means, Table 3's statistic: the paper's diamonds beside our two series' means, 48 points" in said
     assert "Below, our medians of each query's own ratio, hollow" in said and "32 points, 3 of them at or below" in said
 
 
@@ -71,7 +75,33 @@ def test_the_papers_squares_sit_inside_their_samplers_slot():
         for line in ax.lines:
             if line.get_marker() in answer.MARKERS:
                 for x in line.get_xdata():
-                    assert min(abs(x - t) for t in ticks) <= 0.5 - 0.2
+                    assert min(abs(x - t) for t in ticks) <= 0.5 - 0.2 + 1e-9  # a marker inside (r44d: 0.30 apart)
+
+
+def test_each_checker_keeps_one_look_and_no_marker_hides_another():
+    """Reader r44d, items 3 and 7: one colour and marker per checker on the whole page, none a verdict shape of the
+    home page's Figure 1 (circle, square, triangle), named in each legend; at one sampler the series stand at least a
+    marker apart, centred on its tick."""
+    shapes = {marker for _, marker in answer.CHECKERS.values()}
+    assert len(shapes) == len(answer.CHECKERS) and not shapes & {"o", "s", "^", "v"}
+    fig = chapter04.answer_figure()
+    ax = fig.axes[0]
+    lines = [line for line in ax.lines if line.get_marker() in answer.MARKERS]
+    assert sorted({line.get_marker() for line in lines}) == ["X", "h"]  # a line a scenario and series
+    fast, slow = (np.concatenate([line.get_xdata() for line in lines if line.get_marker() == m]) for m in "Xh")
+    assert np.allclose(slow - fast, answer.SPREAD) and np.allclose((slow + fast) / 2, ax.get_xticks())
+    labels = [t.get_text() for t in fig.legends[0].get_texts()]
+    assert labels[-2:] == [
+        "ours, our fast checker (compiled in 3D, numpy in 2DS): crosses",
+        "ours, python-fcl on both sides: hexagons",
+    ]
+    rates = chapter04.rates_figure({"2DS": {"fast exact": 5e6, "python-fcl": 2e5, "network": 1e6}})
+    drawn = {line.get_label(): (line.get_marker(), line.get_color()) for line in rates.axes[0].lines}
+    assert drawn == {
+        f"{c} ({answer.SHAPES[m]})": (m, color) for c, (color, m) in answer.CHECKERS.items() if c != "paper"
+    }
+    assert [t.get_text() for t in rates.legends[0].get_texts()] == list(drawn)
+    assert answer.CHECKERS["fast exact"] == (lines[0].get_color(), lines[0].get_marker())  # one look in both figures
 
 
 def test_cost_table_splits_the_cells_where_both_statistics_cost_time():

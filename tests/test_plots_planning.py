@@ -318,6 +318,25 @@ def test_a_rejected_candidate_and_a_fresh_one_differ_in_line_style_not_only_in_s
     assert "dotted path" in planning.step_in_words(rejected) and "dashed path" in planning.step_in_words(fresh)
 
 
+def test_a_steps_words_count_what_it_holds_in_the_right_number(exact):
+    """Reader r44d, item 8: the alt text said "a repair removed 0 nodes and 0 edges" on every panel, and "1 edges"."""
+    repair = a_repair_step()
+    said = planning.step_in_words(repair)
+    nodes, edges = len(repair.removed_nodes), len(repair.removed_edges)
+    assert (nodes or edges) and "0 nodes" not in said and "0 edges" not in said and "1 edges" not in said
+    words = [f"{n} {w}{'s' * (n != 1)}" for n, w in ((nodes, "node"), (edges, "edge")) if n]
+    assert said.endswith(f"; the exact checker rejected {' and '.join(words)}, removed next.")
+    one = dataclasses.replace(
+        repair,
+        stage="candidate",
+        edges=repair.edges[:1],
+        removed_nodes=np.zeros(0, int),
+        removed_edges=np.zeros(0, int),
+    )
+    assert " and 1 edge over the C-obstacles" in planning.step_in_words(one)
+    assert "rejected" not in planning.step_in_words(one) and "removed" not in planning.step_in_words(one)
+
+
 def test_the_paper_style_times_stack_their_panels_and_cut_a_far_whisker_too():
     """reproduction.planning_times (the paper's Figures 5-7 as medians): a row of sampling panels above a row of
     totals, one panel per sampler, as wide as the page, in ms, the bars named as the paper names them; a sampling

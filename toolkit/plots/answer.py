@@ -21,14 +21,26 @@ from matplotlib.figure import Figure
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import Part, describe
-from toolkit.plots.palette import COLORS, PAGE_WIDTH, series_style
+from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO, PAGE_WIDTH
 from toolkit.plots.query_ratios import NOISE_HATCH, hatch_round
 from toolkit.plots.timings import band_words, log_ticks
 
-MARKERS = ("s", "o", "^")  # a series' marker, beside its colour
-SPREAD = 0.25  # a series' offset from its sampler's tick: a sampler's three series side by side, each well inside its
-# sampler's slot (reader r33d: at 0.28 the paper's squares seemed to sit on the dotted lines between samplers)
-MEANS_TITLE = "Means, Table 3's statistic: the paper's squares beside ours"
+CHECKERS = {  # reader r44d, item 3: one colour and marker per checker on chapter 04's whole page, none of them a
+    # verdict look of the home page's Figure 1 (its circle, square and triangle; its blue, vermillion and black)
+    "paper": (LINE_COLORS[5], "D"),  # grey diamonds: the paper's Table 3 (as the results page draws it)
+    "fast exact": (LINE_COLORS[3], "X"),  # bluish green crosses: our fast exact checker
+    "python-fcl": (LINE_COLORS[4], "h"),  # reddish purple hexagons: python-fcl
+    "network": (OKABE_ITO["sky blue"], "P"),  # sky-blue pluses, outlined in ink: the network (section 4 only)
+}
+SHAPES = {"D": "diamonds", "X": "crosses", "h": "hexagons", "P": "pluses"}  # each marker in words, for a legend
+SERIES_CHECKERS = ("paper", "fast exact", "python-fcl")  # the answer figures' series in turn: whose look each takes
+MARKERS = tuple(CHECKERS[c][1] for c in SERIES_CHECKERS)  # a series' marker, beside its colour
+SPREAD = 0.36  # the distance between two series' points at one sampler, centred on its tick (reader r44d, item 7: at
+# 0.25 a circle hid behind a triangle); three series stand :data:`WIDEST` / 2 apart, so the outer ones keep a
+# marker's width inside the sampler's slot (reader r33d)
+WIDEST = 0.6  # the most a sampler's series span, first to last
+SIZE = 6.0  # points, a marker: series at 0.3 stand apart (about 6.3 points at the page's width)
+MEANS_TITLE = "Means, Table 3's statistic: the paper's diamonds beside ours"
 MEDIANS_TITLE = "Ours by the median query (hollow), whiskers: the queries' middle half"
 
 
@@ -115,11 +127,14 @@ def _median_words(band: tuple[float, float] | None, below: bool) -> str:
     return f" Hatched round the tie band{' below' if below else ''}, {said}." if band else ""
 
 
-NOISE_WORDS = (  # reader r37d: why it is not symmetric round 1
-    "noise band (means), {low:.2f}–{high:.2f}: the lowest and highest ratio of means that timing one computation "
-    "twice gave, measured, so not symmetric round 1"
+NOISE_WORDS = (  # common46: one rule for every band, said the same way for each statistic
+    "noise band (means), {low:.2f}–{high:.2f}: twice as far from 1 as timing one computation twice moved a ratio of "
+    "means, both ways"
 )
-MEDIAN_NOISE = "noise band (medians), {low:.2f}–{high:.2f}: twice as far as timing alone moved a median"
+MEDIAN_NOISE = (
+    "noise band (medians), {low:.2f}–{high:.2f}: twice as far from 1 as timing one computation twice moved each "
+    "query's own ratio, both ways"
+)
 
 
 def _floor(ax, floor: tuple[float, float], tie: float, words: str = NOISE_WORDS) -> None:
@@ -151,7 +166,7 @@ def _text(
         )
     (n_top, below_top), (n_low, below_low) = counted
     return (
-        f"{said}, in two panels. Above, means, Table 3's statistic: the paper's squares beside our two series' means, "
+        f"{said}, in two panels. Above, means, Table 3's statistic: the paper's diamonds beside our two series' means, "
         f"{n_top} points, {below_top} of them at or below {1 - tie:.2f}"
         + (f"; hatched round the tie band, {NOISE_WORDS.format(low=floor[0], high=floor[1])}" if floor else "")
         + f". Below, our medians of each query's own "
@@ -195,28 +210,32 @@ def _series(
     width = len(PAPER_SAMPLERS) + 1
     drawn: list[float] = []
     parts = []
+    present = [name for name in series if any(f"{scenario}, {name}" in rows for scenario in scenarios)]
     for k, name in enumerate(series):
-        if not any(f"{scenario}, {name}" in rows for scenario in scenarios):
-            continue  # not in this panel: its place and style kept for the series that are
+        if name not in present:
+            continue  # not in this panel: its style kept for the series that are
+        color, marker = CHECKERS[SERIES_CHECKERS[k % len(SERIES_CHECKERS)]]
+        step = min(SPREAD, WIDEST / max(len(present) - 1, 1))
+        offset = (present.index(name) - (len(present) - 1) / 2) * step  # the panel's series centred on the tick
         cells = []
         for i, scenario in enumerate(scenarios):
             ratios = rows.get(f"{scenario}, {name}", {})
-            x = [i * width + j + (k - 1) * SPREAD for j, s in enumerate(PAPER_SAMPLERS) if s in ratios]
+            x = [i * width + j + offset for j, s in enumerate(PAPER_SAMPLERS) if s in ratios]
             y = [ratios[s] for s in PAPER_SAMPLERS if s in ratios]
             whiskers = spans.get(f"{scenario}, {name}", {})
             for xi, s in zip(x, (s for s in PAPER_SAMPLERS if s in ratios)):
                 if s in whiskers:
-                    ax.vlines(xi, *whiskers[s], color=series_style(k)["color"], linewidth=1.0, zorder=2)
+                    ax.vlines(xi, *whiskers[s], color=color, linewidth=1.0, zorder=2)
                     drawn += list(whiskers[s])
             ax.plot(
                 x,
                 y,
                 linestyle="none",
-                marker=MARKERS[k % len(MARKERS)],
-                color=series_style(k)["color"],
-                markersize=7,
-                markerfacecolor="none" if hollow else series_style(k)["color"],
-                markeredgecolor=series_style(k)["color"] if hollow else COLORS["ink"],
+                marker=marker,
+                color=color,
+                markersize=SIZE,
+                markerfacecolor="none" if hollow else color,
+                markeredgecolor=color if hollow else COLORS["ink"],
                 markeredgewidth=1.4 if hollow else 0.6,
                 zorder=3,
                 label=names.get(name, name) if i == 0 else None,

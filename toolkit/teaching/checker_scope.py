@@ -294,7 +294,7 @@ def section_6(this_run: dict[str, float], tables: Tables | None = None, first: s
         "**Against the lazy PRM.** Total time with / without prediction, 100 queries a scenario, our runs as "
         "`docs/results.md` records them (our fast exact checker as it was that day), by means and by the median query "
         'time with prediction over the median without ("ratio of medians", noise band '
-        f"{'{:.2f}–{:.2f}'.format(*costs.floors(tables)['medians'])}, the reach as measured):\n\n"
+        f"{'{:.2f}–{:.2f}'.format(*costs.floors(tables)['medians'])}, by the rule under the answer figure):\n\n"
         + table(against_lazy(tables), counts=True, narrow=True)
         + _lazy_means(tables),
         "**Sampling inside Algorithm 1.** The sampling stage's time with / without prediction, 100 queries a scenario: "
