@@ -62,6 +62,7 @@ MEANS_STYLES = (  # :func:`means_grid`'s series in turn: colour, marker, hollow;
 )
 """Reader r31f: Figure 1's blue, vermillion and black are its verdicts, its circle, square and triangle too, so no
 series here takes any of them; each series its own colour (reader r39f: a shared hue could not be told apart)."""
+EDGE_NAME, TIE_EDGE_NAME = "noise band's edges", "tie band's edges"  # what the labels on the right are
 Y_LABEL = "time with / without\n(log axis; below 1: saves)"  # reader r31f: the axis is log, and says so
 MEANS_SIZE = 5.5  # points (r28f asked 1.5 times 5; r32f 1.5 times more, but then neighbouring markers would touch)
 STAR_SCALE = 1.35  # a star fills less of its box than the other markers: drawn this much larger, it reads as large
@@ -155,7 +156,8 @@ def _own_axis(ax, drawn: list[float], tie: float, edges: list[float]) -> None:
     ax.yaxis.set_minor_locator(NullLocator())  # review r27f: an unlabelled tick under 0.7 read as a missing label
     # reader r41f: the edges a verdict turns on, on the right; reader r42f: 1.18 and 1.10 crowded there, so where the
     # noise band is drawn only its edges are, the tie band's in the legend's words ("1.10 or more")
-    edge_labels(ax, sorted(edges) if edges else [1 - tie, 1 + tie])
+    # reader r44e, home 3: the edges named beside them, so 0.82 and 1.18 are not read as the tie band's 0.90 and 1.10
+    edge_labels(ax, sorted(edges) if edges else [1 - tie, 1 + tie], EDGE_NAME if edges else TIE_EDGE_NAME)
 
 
 def _legend_under_title(fig: Figure, ax, pairs: dict, title: str) -> None:

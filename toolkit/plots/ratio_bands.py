@@ -8,14 +8,18 @@ from matplotlib.ticker import NullLocator
 from toolkit.plots.palette import COLORS
 
 
-def edge_labels(ax, edges: list[float]) -> None:
+def edge_labels(ax, edges: list[float], name: str = "") -> None:
     """The bands' ``edges`` (sorted) labelled outside the axes on the right, where the "1" on the left cannot crowd
     them (reader r41f: whether 1.10 was a tie or a cost could not be read off the plot): of each pair of edges on one
-    side of 1, the outer label stands beyond its tick and the inner one towards 1, so the two never touch."""
+    side of 1, the outer label stands beyond its tick and the inner one towards 1, so the two never touch. ``name``,
+    where given, says whose edges they are beside them (reader r44e, home 3: 0.82 and 1.18 could be read as the tie
+    band's)."""
     right = ax.secondary_yaxis("right")
     right.set_yticks(edges, [f"{e:.2f}" for e in edges])
     right.yaxis.set_minor_locator(NullLocator())
     right.tick_params(labelsize=8, length=3, pad=2)
+    if name:
+        right.set_ylabel(name, fontsize=8, rotation=-90, va="bottom", labelpad=2)
     below = [e for e in edges if e < 1]
     for label, e in zip(right.get_yticklabels(), edges):
         outer = e == min(below) if e < 1 else e == max(edges)
