@@ -1182,12 +1182,11 @@ def _chapter_05_answer(found: str, measured: list[list[str]], scored: list[list[
     if pair is None or not row or [row[0][1].strip("*"), row[0][-1]] != [f"{v}%" for v in pair.groups()]:
         problems.append(f"05: the answer's accuracy pair is not a row of the accuracy table: {pair and pair.groups()}")
     medians = [r for r in measured if r[0] == "3DC-7, `strong` network in Algorithm 1, ratio of the two medians"]
-    twice = recorded.table("strong --planner paper", "timed twice")
-    moved = max(abs(float(row["ratio of the medians"]) - 1) for row in twice.values())
+    band = costs.floors()["medians"]  # wave 24: one rule for every band (twice timing's own reach, read strictly)
     for r in medians[:1] or [["missing"]]:
         for cell in r[1:] or ["missing"]:
             ratio = re.search(r"\((\d+\.\d+)\)", cell)
-            noisy = abs(float(ratio.group(1)) - 1) <= moved and not cell.startswith(findings.TIES) if ratio else None
+            noisy = costs.inside(float(ratio.group(1)), band) and not cell.startswith(findings.TIES) if ratio else None
             if ratio is None or noisy != (chapter05.NOISE in cell):
                 problems.append(f"05: a ratio of two medians is read against timing noise wrongly: {cell}")
     return problems

@@ -11,7 +11,7 @@ from collections.abc import Mapping
 
 from toolkit.experiments import paper_numbers
 from toolkit.teaching import recorded
-from toolkit.teaching.costs import floors
+from toolkit.teaching.costs import floors, inside
 from toolkit.teaching.findings import COSTS, SAVES, TIE, TIES, ratio_table, time_verdict
 
 SCENARIO = "3dc7"
@@ -19,7 +19,7 @@ SAMPLERS = ("BS", "OB", "G", "BT")
 COMPILED = "strong --planner paper"  # docs/results.md: the `strong` network in Algorithm 1, our compiled checker
 FCL = "strong --planner paper --baseline paper-fcl-alike"  # ... python-fcl doing every exact check on both sides
 RESULTS = "[`docs/results.md`](../docs/results.md)"  # a link from the chapter (reader r32e, item 4)
-NOISE = "within noise"  # a ratio of ours no further from 1 than timing alone moved its statistic (its noise band)
+NOISE = "within noise"  # a ratio of ours inside its statistic's noise band (costs.floors: twice timing's reach)
 OWN = "median own ratio"  # the answer's rows: each query's time with / without, the median over the queries
 CHECKERS = ((COMPILED, "our compiled checker"), (FCL, "python-fcl on both sides"))  # the answer's two
 TIE_WORDS = f'a ratio less than {TIE:.0%} from 1 reads "{TIES}"'  # the band, printed beside each time table
@@ -78,7 +78,9 @@ def answer() -> str:
         + "\n\n"
         + total_table()
         + "\n\n"
-        + _answer_numbers(fcl_total, fcl_sampling, shares, means[FCL][best], best)
+        + share_table(fcl_total, fcl_sampling, shares)
+        + "\n\n"
+        + _answer_numbers(means[FCL][best], best)
     )
 
 
@@ -106,9 +108,12 @@ def means_table() -> str:
     noise bands by the home page's names (readers r37e, r38e)."""
     paper, band, own = paper_numbers.IMPROVEMENT[SCENARIO], floors()["means"], floors()["own"]
     return (
-        "The same total time by the ratio of the means, Table 3's statistic, the paper's row first; a saving or cost "
-        f'of ours no further from 1 than timing alone moved it adds "{NOISE}": a median inside the noise band, '
-        f"{own[0]:.2f}–{own[1]:.2f}, a ratio of means inside the means' noise band, {band[0]:.2f}–{band[1]:.2f}:\n\n"
+        "The same total time by the ratio of the means, Table 3's statistic, the paper's row first. A saving or cost "
+        f'of ours inside its noise band adds "{NOISE}": {own[0]:.2f}–{own[1]:.2f} for a median of own ratios, '
+        f"{band[0]:.2f}–{band[1]:.2f} for a ratio of means. Each band reaches twice as far from 1 as timing one "
+        "computation twice moved its statistic in the compiled run; python-fcl's run, not timed twice, borrows them. "
+        "The means' band is wider because a ratio of means divides two sets "
+        "of 100 queries timed apart, where a few slow queries weigh on a mean:\n\n"
         + ratio_table(
             {"the paper's Table 3: ratio of the means (its own planner and checker)": _ratios(paper["total"])}
         )
@@ -134,34 +139,40 @@ def _rates() -> dict[str, float]:
     return {k: recorded.ours(v) for k, v in recorded.table(COMPILED, "Checker throughput")[SCENARIO].items()}
 
 
-def _answer_numbers(fcl_total, fcl_sampling, shares, best_means: float, best: str) -> str:
-    """The answer's fold: the "why" in detail, the ratios of the means beside the paper's, the costs of a check, each
-    sampler's bound (sampling's share times its cut) and the timed network's accuracy (readers r29e, r31e, r39e)."""
-    scores, share = recorded_scores(COMPILED)
-    rates = _rates()
+def share_table(fcl_total, fcl_sampling, shares) -> str:
+    """The answer's evidence for its "Why" (reader r44e, item 1: visible, the moral rests on it): with python-fcl,
+    each sampler's share of a query that sampling takes, the network's cut of it, their product (the most the cut
+    could take off a query) and the query's own ratio beside it."""
     rows = "\n".join(
         f"| {s} | {shares[s]:.1%} | {fcl_sampling[s]:.0%} | {shares[s] * fcl_sampling[s]:.1%} | {fcl_total[s]:.2f} |"
         for s in SAMPLERS
     )
+    return (
+        f"With python-fcl the network cut sampling time by {span(fcl_sampling, 100, 0)} % (means). Sampling's share "
+        "of a query's mean time without the network, times that cut, is the most the cut could take off a query:\n\n"
+        "| sampler | sampling's share of a query | sampling cut (means) | at most saved | each query's own ratio "
+        "(median) |\n| --- | ---: | ---: | ---: | ---: |\n" + rows
+    )
+
+
+def _answer_numbers(best_means: float, best: str) -> str:
+    """The answer's fold: the ratios of the means beside the paper's, the costs of a check and the timed network's
+    accuracy (readers r29e, r31e, r39e); ``best``, the sampler whose sampling cut was worth most, and its ratio of the
+    means ``best_means``."""
+    scores, share = recorded_scores(COMPILED)
+    rates = _rates()
     cell = _noise_row("", {best: best_means}, floors()["means"], (best,))[5:-2]  # its cell (reader r38e)
     return (
         "<details><summary>The numbers behind the answer: the ratio of the means, the paper's row, the costs of a "
         "check, and the network it timed</summary>\n\n"
-        f"With python-fcl the network cut sampling time by {span(fcl_sampling, 100, 0)} % (means), but sampling was "
-        f"only {span(shares, 100, 1)} % of a query, so that cut was worth at most "
-        f"{shares[best] * fcl_sampling[best] * 100:.0f} % of a query ({best}'s). Even {best}'s whole query saved "
+        f"{best}'s sampling cut was worth most, yet its whole query saved "
         f'nothing: its ratio of the means reads "{cell}" in the table below.\n\n' + means_table() + "\n\n"
         f"{check_costs()} From the two unrounded rates, one python-fcl check takes as long as about "
         f"{rates['exact cfg/s'] / rates['FCL cfg/s']:.0f} compiled checks in that run.\n\n"
-        "With python-fcl, the most the sampling cut could take off a query: sampling's share of a query's mean time "
-        "without the network, times the cut.\n\n"
-        "| sampler | sampling's share of a query | sampling cut (means) | at most saved | each query's own ratio "
-        "(median) |\n| --- | ---: | ---: | ---: | ---: |\n" + rows + "\n\n"
         f"The network timed in both is the timed training ({run_name(COMPILED)}); section 5's views use another "
         f"training of the same recipe. The timed one is accurate: right on {scores['acc']:.0%} of "
         'uniform samples in the record\'s unseen 3DC-7 workspaces, where answering "valid" to all is right on '
-        f'{share:.0%} (its row in the accuracy table at the end). The "No" is about cost, not accuracy. The closing '
-        "section gives the sampling stage's table beside the paper's Table 3.\n\n</details>"
+        f'{share:.0%} (its row in the accuracy table at the end). The "No" is about cost, not accuracy.\n\n</details>'
     )
 
 
@@ -190,9 +201,10 @@ def check_costs() -> str:
 
 
 def _longer(means: Mapping[str, float], sampling: Mapping[str, float]) -> str:
-    """A sentence: the samplers whose queries took longer by the ratio of the means (reader r28e), which a sampling
-    saving (``sampling``) cannot do: the home page's test, applied here too (reader r32e); "" if none."""
-    longer = [s for s in SAMPLERS if time_verdict(means[s]) == COSTS]
+    """A sentence: the samplers whose queries took longer by the ratio of the means, beyond its noise band (reader
+    r28e), which a sampling saving (``sampling``) cannot do: the home page's test (reader r32e); "" if none (the
+    record's: OB's 1.12 with python-fcl lies inside the means' band, no evidence)."""
+    longer = [s for s in SAMPLERS if time_verdict(means[s]) == COSTS and not inside(means[s], floors()["means"])]
     if not longer:
         return ""
     names = " and ".join(f"{s}'s" for s in longer)
@@ -215,10 +227,10 @@ def _change(improvement: float) -> str:
 
 
 def _noise_row(label: str, ratios: Mapping[str, float], band: tuple[float, float], samplers=SAMPLERS) -> str:
-    """A row of ratios of ours, each by its verdict, and :data:`NOISE` after a saving or cost inside ``band``, as far
-    as timing alone moved its statistic (reader r37e: the home page's rule; r38e: a cost within noise is both)."""
+    """A row of ratios of ours, each by its verdict, and :data:`NOISE` after a saving or cost inside ``band`` (its
+    statistic's noise band, read strictly: :func:`toolkit.teaching.costs.inside`; r38e: a cost within noise is both)."""
     cells = [
-        f"{time_verdict(r)}{', ' + NOISE if band[0] <= r <= band[1] and time_verdict(r) != TIES else ''} ({r:.2f})"
+        f"{time_verdict(r)}{', ' + NOISE if inside(r, band) and time_verdict(r) != TIES else ''} ({r:.2f})"
         for r in map(ratios.__getitem__, samplers)
     ]
     return f"| {label} | " + " | ".join(cells) + " |"
@@ -252,15 +264,21 @@ def time_tables() -> str:
 
 
 def _paper_side() -> str:
-    """The paper's side in words: the samplers its Table 3 saves total time for and not, and a saving bigger than
-    sampling allows (reader r36e: open; where its sampling ratios come from is in :func:`_more`'s fold)."""
+    """The paper's side in words: the samplers its Table 3 saves total time for, ties (reader r44e, item 3: the tie
+    band, not "no") and costs, and a saving bigger than sampling allows (reader r36e: open)."""
     total = paper_numbers.IMPROVEMENT[SCENARIO]["total"]
-    saves = [s for s in SAMPLERS if time_verdict(1 - total[s]) == SAVES]
-    rest = [s for s in SAMPLERS if s not in saves]
+    verdicts = {s: time_verdict(1 - total[s]) for s in SAMPLERS}
+    saves = [s for s in SAMPLERS if verdicts[s] == SAVES]
+    said = [
+        f"{' and '.join(rest)} {'are ties' if verdict == TIES else 'cost time'} "
+        f"({' and '.join(_change(total[s]) for s in rest)})"
+        for verdict in (TIES, COSTS)
+        if (rest := [s for s in SAMPLERS if verdicts[s] == verdict])
+    ]
     return (
         f"The paper's Table 3 says yes for {' and '.join(saves)} "
-        f"({' and '.join(f'{total[s]:.0%}' for s in saves)} less total time) and no for "
-        f"{' and '.join(rest)} ({' and '.join(_change(total[s]) for s in rest)}).{_beyond_sampling()}"
+        f"({' and '.join(f'{total[s]:.0%}' for s in saves)} less total time); {'; '.join(said)}."
+        f"{_beyond_sampling()}"
     )
 
 
@@ -282,12 +300,16 @@ def _beyond_sampling() -> str:
 
 def _more(moved: float, longer: str = "") -> str:
     """The closing's folded tables: the lazy PRM, the paper's recipe and Algorithm 1's ratio of two medians, each read
-    against ``moved``, how far timing the same computation twice moved one; first what the closing's paragraph
-    leaves out (reader r34e, lift 5): the paper's rows are another measurement, and ``longer``."""
+    against its statistic's noise band (:func:`toolkit.teaching.costs.floors`; ``moved``, how far timing the same
+    computation twice moved a ratio of medians); first what the closing's paragraph leaves out (reader r34e, lift 5):
+    the paper's rows are another measurement, and ``longer``."""
+    bands = floors()
     lazy = recorded.median_ratios("strong")[SCENARIO]["total"]  # ratio of the medians, vs the lazy PRM
     recipe = recorded.median_ratios("paper")[SCENARIO]["total"]
+    recipe_means = _ratios(recorded.improvements("paper", SCENARIO))  # Table 3's statistic, vs Algorithm 1
     of_medians = recorded.median_ratios(COMPILED)[SCENARIO]["total"]  # Algorithm 1, a ratio of two medians
-    lazy_beyond = all(abs(r - 1) > moved for r in [*lazy.values(), *recipe.values()])
+    medians = bands["medians"]
+    lazy_beyond = not any(inside(r, medians) for r in [*lazy.values(), *recipe.values()])
     sampling = paper_numbers.IMPROVEMENT[SCENARIO]["sampling"]  # the paper's, and what its §V times give (r29e)
     printed = {s: with_[0] / without[0] for s, (without, with_) in paper_numbers.TIMES[SCENARIO]["sampling_s"].items()}
     within = not any(key.startswith("3DC-7 sampling") for key in paper_numbers.table3_against_text())
@@ -299,32 +321,27 @@ def _more(moved: float, longer: str = "") -> str:
         f"({_slashed(_ratios(sampling))}); the mean sampling times its text prints (§V) give {_slashed(printed)}, "
         + ("each within the rounding of those times." if within else "and the two disagree beyond rounding.")
         + f"{longer}\n\n"
-        "Why the median of each query's own ratio: each query is timed with and without prediction in turn, under "
-        "the same load. A ratio of two medians, each over its own mode's queries, is not: timing the same computation "
-        f"twice moved it by up to {moved:.0%} (the noise of a ratio of two medians, {RESULTS}, its table "
-        '"timed twice"), so '
-        f"for the rows below that are ratios of medians, read only a ratio further than {moved:.0%} from 1. The two "
-        f"lazy-PRM rows ({span(lazy)}; {span(recipe)}) {'all are' if lazy_beyond else 'are not all'}; in the last "
-        f'row a ratio no further than that from 1 reads only "{NOISE}". Against the lazy PRM, the fastest exact '
-        f"planner a network can drive, with a third training of `strong` ({run_name('strong')}; {TIE_WORDS}):\n\n"
-        + ratio_table(
-            {
-                "3DC-7, `strong` preset, medians, vs lazy PRM": lazy,
-                "3DC-7, `paper` preset, medians, vs lazy PRM": recipe,
-                "3DC-7, `paper` preset, Table 3's means, vs Algorithm 1": _ratios(
-                    recorded.improvements("paper", SCENARIO)
-                ),
-            }
-        )
+        "A ratio of two medians, each over its own mode's queries, is noisier than each query's own ratio: timing the "
+        f'same computation twice moved it by up to {moved:.0%} ({RESULTS}, its table "timed twice"), so its noise '
+        f"band is {medians[0]:.2f}–{medians[1]:.2f}; a ratio of means reads against "
+        f"{bands['means'][0]:.2f}–{bands['means'][1]:.2f}. The two lazy-PRM rows ({span(lazy)}; {span(recipe)}) "
+        f"{'lie beyond their band' if lazy_beyond else 'are not all beyond their band'}; a ratio inside its band "
+        f'reads "{NOISE}". Against the lazy PRM, the fastest exact planner a network can drive, with a third '
+        f"training of `strong` ({run_name('strong')}; {TIE_WORDS}):\n\n"
+        + HEADER
+        + "\n"
+        + _noise_row("3DC-7, `strong` preset, medians, vs lazy PRM", lazy, medians)
+        + "\n"
+        + _noise_row("3DC-7, `paper` preset, medians, vs lazy PRM", recipe, medians)
+        + "\n"
+        + _noise_row("3DC-7, `paper` preset, Table 3's means, vs Algorithm 1", recipe_means, bands["means"])
         + "\n"
         + "| 3DC-7, `strong` network in Algorithm 1, ratio of the two medians | "  # r43e: nothing inside the band
-        + " | ".join(f"{NOISE if abs(r - 1) <= moved else time_verdict(r)} ({r:.2f})" for r in of_medians.values())
-        + " |\n\nThat last row is not a statistic of the answer at the top (each query's own ratio, the ratio of the "
-        "means), and a ratio in it within noise, below 1 or above, is no saving or cost beside the answer's."
+        + " | ".join(f"{NOISE if inside(r, medians) else time_verdict(r)} ({r:.2f})" for r in of_medians.values())
+        + " |\n\nThat last row is not a statistic of the answer at the top, and a ratio in it within noise is no "
+        "saving or cost."
         + '\n\nOn 3DC-7 the `paper` preset\'s MLP answers "valid" to every sample, so Algorithm 1 skips the sample '
-        'checks: that, not learning, is its one saving by means. On 3DC-9 and 3DO the same recipe answers "invalid" '
-        "to every sample; there its savings by means come from the queries whose straight edge from start to goal is "
-        "free (chapter 04's closing table).\n\n</details>"
+        "checks: that is not learning, and by means its savings lie within noise.\n\n</details>"
     )
 
 
@@ -354,12 +371,12 @@ ALWAYS = 'answering "valid" to all'  # the accuracy table's baseline column (rea
 def accuracy_table(
     scores: Mapping, valid_share: float, samples: int, seed: int, balanced: Mapping, threshold: float, also: str = ""
 ) -> str:
-    """The closing's accuracy table (reader r41e, 05 lift 4: three rows open, the rest folded), each row beside
+    """The closing's accuracy table (reader r44e, item 6: four rows open, §5's among them), each row beside
     answering "valid" to its samples: the paper's Table 2, the paper's recipe on balanced samples (reader r42e: the row
-    that shows it misses Table 2) and the timed runs' `strong` network, as the record has them. Folded: the recipe on
-    uniform samples with a line on why its accuracy above Table 2's is no win, and this notebook's model (its
-    ``threshold``): §5's ``scores`` on its ``samples`` (``valid_share`` of them valid) in the workspace of ``seed``, a
-    line with that model's ``balanced`` unseen test, then ``also``. Each row names its run (r29e)."""
+    that shows it misses Table 2), the timed runs' `strong` network, as the record has them, and this notebook's
+    model (its ``threshold``): §5's ``scores`` on its ``samples`` (``valid_share`` of them valid) in the workspace of
+    ``seed``. Folded: the recipe on uniform samples with a line on why its accuracy above Table 2's is no win, a line
+    with this notebook's model's ``balanced`` unseen test, then ``also``. Each row names its run (r29e)."""
     recipe, recipe_share = recorded_scores("paper")
     cells = recorded.table("paper", "MLP accuracy")[SCENARIO]  # its balanced unseen test: half valid (the home page's)
     recipe_balanced = {key: recorded.ours(cells[column]) for key, column in KEYS_BALANCED}
@@ -377,14 +394,13 @@ def accuracy_table(
             recorded.ours(cells["always valid"]),
         ),
         _row(f"{TIMED_ROW}{timed_said}, uniform unseen samples", strong, strong_share),
-    ]
-    folded = [
-        _row("ours: the same recipe, uniform unseen samples", recipe, recipe_share),
         _row(f"{ours}, §5's {samples} uniform samples, workspace of seed {seed}", scores, valid_share, 1),
     ]
+    folded = [_row("ours: the same recipe, uniform unseen samples", recipe, recipe_share)]
     return (
         "\n".join(head + shown)
-        + "\n\n<details><summary>Two more rows: the recipe on uniform samples, and this notebook's model</summary>"
+        + "\n\n<details><summary>One more row, the recipe on uniform samples, and this notebook's model on its "
+        "balanced test</summary>"
         + "\n\n"
         + "\n".join(head + folded)
         + f"\n\nOn uniform samples the recipe's {recipe['acc']:.0%} is above Table 2's {paper['acc']:.0%} only because "

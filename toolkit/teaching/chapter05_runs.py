@@ -14,7 +14,8 @@ from toolkit.teaching.chapter05 import SCENARIO
 
 
 def plan_tables(result) -> str:
-    """§6's counts of a planned query (a ``PlanResult``): the path and the roadmap, then who answered how often."""
+    """§6's counts of a planned query (a ``PlanResult``): the path and the roadmap, then who answered how often (reader
+    r44e, item 5: the ratio's column says what it counts, no "x" mark beside a number)."""
     stats = result.stats
     exactly = stats["exact_checks"] + stats["exact_clearances"]  # point checks and clearance bounds
     return (
@@ -22,10 +23,11 @@ def plan_tables(result) -> str:
         "| --- | ---: | ---: | ---: | ---: |\n"
         f"| {'yes' if result.success else 'no'} | {len(result.path)} | {stats['rounds']} | {stats['node_checks']} "
         f"| {stats['nodes']} / {stats['edges']} |\n\n"
-        "| model's answers | exact: checks + bounds | model / exact | repairs | removed: nodes / edges |\n"
+        "| model's answers | exact: checks + bounds | model answers per exact call | repairs "
+        "| removed: nodes / edges |\n"
         "| ---: | ---: | ---: | ---: | ---: |\n"
         f"| {stats['predicted_checks']} | {stats['exact_checks']} + {stats['exact_clearances']} "
-        f"| {stats['predicted_checks'] / max(exactly, 1):.0f}x | {stats['repairs']} "
+        f"| {stats['predicted_checks'] / max(exactly, 1):.0f} | {stats['repairs']} "
         f"| {stats['removed_nodes']} / {stats['removed_edges']} |"
     )
 
