@@ -512,7 +512,8 @@ def test_chapter_04_holds_the_answers_bullet_on_our_fast_checker_to_section_6():
     expected = _claim_expected()
     nb = chapter_04()
     first = nb["cells"][0]["outputs"][0]["data"]
-    first["text/markdown"] = first["text/markdown"].replace("checker, faster in none of 16", "checker, faster in 8 of 16")
+    said = first["text/markdown"]
+    first["text/markdown"] = said.replace("checker, faster in none of 16", "checker, faster in 8 of 16")
     assert problems(CH04, nb) == [
         f"04: the first code cell's bullet on our fast checker says [('8', '16', '7', '9', '5')]; section 6's: "
         f"{expected}"

@@ -181,7 +181,7 @@ def test_the_embedded_scenes_are_titled_and_told_in_words(site):
     summaries = re.findall(r'<p class="scene-summary">([^<]*)</p>', page)
     assert len(summaries) == len(frames) and all("valid" in s for s in summaries)
     assert any(re.search(r"Samples: \d+ valid \(circles\), \d+ in collision \(diamonds\)", s) for s in summaries)
-    assert any(re.search(r"Path: \d+ configurations, length \d+\.\d\d", s) for s in summaries)
+    assert any(re.search(r"Path: \d+ configurations, drawn from start to goal\.", s) for s in summaries)
 
 
 @pytest.mark.slow

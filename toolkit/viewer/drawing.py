@@ -255,11 +255,8 @@ def animation_summary(
 
 
 def _path_words(path: np.ndarray) -> str:
-    length = float(np.sum(np.linalg.norm(np.diff(path, axis=0), axis=1)))
-    return (
-        f"Path: {len(path)} configurations, length {length:.2f} in configuration space "
-        "(positions in workspace units and angles in radians, in one Euclidean sum)."
-    )
+    """The path in words: how many configurations it passes (a length would add workspace units to radians)."""
+    return f"Path: {len(path)} configurations, drawn from start to goal."
 
 
 def probability_colors(probability: npt.ArrayLike) -> np.ndarray:
