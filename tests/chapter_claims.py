@@ -13,7 +13,7 @@ from collections import Counter
 from collections.abc import Callable
 
 from toolkit.experiments import paper_numbers
-from toolkit.teaching import chapter05, checker_scope, costs, findings, recorded
+from toolkit.teaching import chapter05, chapter05_accuracy, checker_scope, costs, findings, recorded
 
 SAMPLERS = ("BS", "OB", "G", "BT")
 SENTENCE = (  # the rest of a findings.describe_accuracy sentence, its numbers and words captured
@@ -1178,7 +1178,7 @@ def _chapter_05_answer(found: str, measured: list[list[str]], scored: list[list[
     pair = re.search(
         r'right on (\d+)% of uniform samples[^,]*, where answering "valid" to all is right on (\d+)%', found
     )
-    row = [r for r in scored if r[0].startswith(chapter05.TIMED_ROW)]  # reader r29e: the timed network's row
+    row = [r for r in scored if r[0].startswith(chapter05_accuracy.TIMED_ROW)]  # reader r29e: the timed network's row
     if pair is None or not row or [row[0][1].strip("*"), row[0][-1]] != [f"{v}%" for v in pair.groups()]:
         problems.append(f"05: the answer's accuracy pair is not a row of the accuracy table: {pair and pair.groups()}")
     medians = [r for r in measured if r[0] == "3DC-7, `strong` network in Algorithm 1, ratio of the two medians"]

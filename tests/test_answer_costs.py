@@ -8,7 +8,8 @@ from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots import answer, query_ratios
 from toolkit.plots.alt import alt_text
 from toolkit.plots.answer import answer_ratios
-from toolkit.teaching import chapter04, checker_scope, costs, findings
+from toolkit.teaching import chapter04, chapter04_figures, checker_scope, costs, findings
+from toolkit.teaching.chapter04_figures import SERIES
 
 
 def test_answer_ratios_draws_every_scenario_sampler_and_series_in_one_panel():
@@ -26,7 +27,7 @@ def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_th
     medians, hollow, each with its whisker; a legend of three lines, one a series. Reader r34d: the means floor
     hatched above (named first in the legend), and the hollow markers in a legend of their own under the figure."""
     rows, means = checker_scope.compact(), checker_scope.our_means()
-    fig = answer_ratios(rows, tie=findings.TIE, means=means, spans=checker_scope.spans(), names=chapter04.SERIES)
+    fig = answer_ratios(rows, tie=findings.TIE, means=means, spans=checker_scope.spans(), names=SERIES)
     top, low = fig.axes
     assert top.get_ylim() == low.get_ylim()
 
@@ -46,9 +47,9 @@ def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_th
     assert all(line.get_markerfacecolor() != "none" for line in marks(top).values())
     assert len(low.collections) == 32 and not top.collections  # a whisker a median, none above
     labels = [[t.get_text() for t in legend.get_texts()] for legend in fig.legends]
-    assert labels[0] == ["a tie, 0.90–1.10", *chapter04.SERIES.values()]  # r39d: the band named there, a line a series
-    assert labels[1] == list(chapter04.SERIES.values())[1:]  # the hollow markers, under the figure
-    hatched = answer_ratios(rows, tie=findings.TIE, means=means, names=chapter04.SERIES, floor=(0.84, 1.24))
+    assert labels[0] == ["a tie, 0.90–1.10", *SERIES.values()]  # r39d: the band named there, a line a series
+    assert labels[1] == list(SERIES.values())[1:]  # the hollow markers, under the figure
+    hatched = answer_ratios(rows, tie=findings.TIE, means=means, names=SERIES, floor=(0.84, 1.24))
     top = hatched.axes[0]
     assert [p.get_hatch() for p in top.patches].count(query_ratios.NOISE_HATCH) == 2  # below and above the tie band
     assert hatched.legends[0].get_texts()[0].get_text() == "noise band (means), 0.84–1.24"
@@ -56,7 +57,7 @@ def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_th
         hatched
     )
     both = answer_ratios(  # reader r36d: the lower panel draws the median's band too
-        rows, tie=findings.TIE, means=means, names=chapter04.SERIES, floor=(0.84, 1.24), median_floor=(0.82, 1.18)
+        rows, tie=findings.TIE, means=means, names=SERIES, floor=(0.84, 1.24), median_floor=(0.82, 1.18)
     )
     assert [p.get_hatch() for p in both.axes[1].patches].count(query_ratios.NOISE_HATCH) == 2
     assert both.legends[1].get_texts()[0].get_text() == "noise band (medians), 0.82–1.18"
@@ -84,7 +85,7 @@ def test_each_checker_keeps_one_look_and_no_marker_hides_another():
     marker apart, centred on its tick."""
     shapes = {marker for _, marker in answer.CHECKERS.values()}
     assert len(shapes) == len(answer.CHECKERS) and not shapes & {"o", "s", "^", "v"}
-    fig = chapter04.answer_figure()
+    fig = chapter04_figures.answer_figure()
     ax = fig.axes[0]
     lines = [line for line in ax.lines if line.get_marker() in answer.MARKERS]
     assert sorted({line.get_marker() for line in lines}) == ["X", "h"]  # a line a scenario and series
@@ -95,7 +96,7 @@ def test_each_checker_keeps_one_look_and_no_marker_hides_another():
         "ours, our fast checker (compiled in 3D, numpy in 2DS): crosses",
         "ours, python-fcl on both sides: hexagons",
     ]
-    rates = chapter04.rates_figure({"2DS": {"fast exact": 5e6, "python-fcl": 2e5, "network": 1e6}})
+    rates = chapter04_figures.rates_figure({"2DS": {"fast exact": 5e6, "python-fcl": 2e5, "network": 1e6}})
     drawn = {line.get_label(): (line.get_marker(), line.get_color()) for line in rates.axes[0].lines}
     assert drawn == {
         f"{c} ({answer.SHAPES[m]})": (m, color) for c, (color, m) in answer.CHECKERS.items() if c != "paper"

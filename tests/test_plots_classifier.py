@@ -360,7 +360,7 @@ def test_a_c_obstacle_against_the_maps_edge_is_outlined_along_the_frame():
     valid[2:5, 0:2] = False  # a block on the bottom edge, cells 2-4 along x
     valid[9, 6:8] = False  # a strip on the right edge, cells 6-7 along y
     ax = pc.probability_map(valid.astype(float), valid, grid, threshold=0.5).axes[0]
-    (frame,) = [c for c in ax.collections if c.get_gid() == pc.FRAME]
+    (frame,) = [c for c in ax.collections if c.get_gid() == cell_marks.FRAME]
     x0, x1, y0, y1 = grid.extent
     cells = [((s - [x0, y0]) / [(x1 - x0) / 10, (y1 - y0) / 10]).round(6) for s in frame.get_segments()]
     segments = sorted(tuple(map(tuple, s)) for s in cells)  # in cells from the map's lower left corner
@@ -368,7 +368,7 @@ def test_a_c_obstacle_against_the_maps_edge_is_outlined_along_the_frame():
     assert not frame.get_clip_on() and frame.get_linewidths()[0] == boundary_of(ax).get_linewidths()[0]
     angles = slices.slice_grid(robots.box_chain(1), dofs=(3, 6), n=10)  # alpha x joint: no wall at either's ends
     ax = pc.probability_map(valid.astype(float), valid, angles, threshold=0.5).axes[0]
-    assert all(len(c.get_segments()) == 0 for c in ax.collections if c.get_gid() == pc.FRAME)
+    assert all(len(c.get_segments()) == 0 for c in ax.collections if c.get_gid() == cell_marks.FRAME)
 
 
 def test_the_conservative_tint_leaves_the_grey_of_p_valid_readable():
@@ -466,7 +466,7 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     (drawn,) = [
         c
         for c in ax.collections
-        if isinstance(c, LineCollection) and not isinstance(c, ContourSet) and c.get_gid() != pc.FRAME
+        if isinstance(c, LineCollection) and not isinstance(c, ContourSet) and c.get_gid() != cell_marks.FRAME
     ]
     np.testing.assert_array_equal(drawn.get_segments()[0], nodes[[0, 2]])
     lines = {line.get_label(): np.column_stack([line.get_xdata(), line.get_ydata()]) for line in ax.get_lines()}

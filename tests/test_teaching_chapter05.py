@@ -5,7 +5,7 @@ from pathlib import Path
 
 import numpy as np
 
-from toolkit.teaching import chapter05, chapter05_runs, findings, recorded
+from toolkit.teaching import chapter05, chapter05_accuracy, chapter05_runs, findings, recorded
 
 
 def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
@@ -110,7 +110,7 @@ def test_the_accuracy_table_has_the_answers_pair_as_a_row():
         r'right on (\d+)% of uniform samples[^,]*, where answering "valid" to all is right on (\d+)%', answer
     ).groups()
     scores = {"acc": 0.945, "tpr": 0.935, "tnr": 0.975}
-    table = chapter05.accuracy_table(scores, 0.745, 2000, 0, {"acc": 0.96, "tpr": 0.95, "tnr": 0.96}, 0.57)
+    table = chapter05_accuracy.accuracy_table(scores, 0.745, 2000, 0, {"acc": 0.96, "tpr": 0.95, "tnr": 0.96}, 0.57)
     threshold = chapter05.recorded_threshold(chapter05.COMPILED)
     timed = f"ours: `strong` network of the timed Algorithm 1 runs (threshold {threshold:.2f}), uniform unseen samples"
     row = next(line for line in table.splitlines() if line.startswith(f"| {timed} | {acc}% |"))
@@ -145,7 +145,7 @@ def test_the_accuracy_table_gives_the_paper_recipes_balanced_score_from_the_reco
     """Reader r25b: the home page's argument rests on the recipe's balanced unseen score (a coin's); the chapter's
     accuracy table shows it, from docs/results.md, open under Table 2's row (reader r42e), the uniform row folded."""
     cells = recorded.table("paper", "MLP accuracy")["3dc7"]
-    table = chapter05.accuracy_table(
+    table = chapter05_accuracy.accuracy_table(
         {"acc": 0.9, "tpr": 0.9, "tnr": 0.9}, 0.7, 400, 0, {"acc": 0.9, "tpr": 0.9, "tnr": 0.9}, 0.5
     )
     acc, tpr, tnr = (cells[column].strip("*") for column in ("Balanced unseen Acc", "TPR", "TNR"))

@@ -64,6 +64,11 @@ def _plain(text: str) -> str:
     return " ".join(text.split())
 
 
+def many(n: int, thing: str) -> str:
+    """A count in words a text alternative can use: ``"1 edge"``, ``"3 edges"`` (reader r44d: "1 edges")."""
+    return f"{n} {thing}{'s' * (n != 1)}"
+
+
 def describe(fig: Figure, text: str, parts: Sequence[Part] = ()) -> Figure:
     """Attach the text alternative ``text`` to ``fig`` (replacing any), and a longer description when the figure is
     complex (``parts``: one per panel, row or step); returns ``fig``."""

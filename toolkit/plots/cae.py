@@ -255,6 +255,17 @@ def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int) -> None
 LINES_KEY: dict[str, Any] = dict(loc="outside upper center", ncols=2, fontsize=9, title_fontsize=9, frameon=False)
 
 
+def _plain_log_ticks(ax, values: np.ndarray) -> None:
+    """``ax``'s log y axis ticked at 1, 2, 3 and 5 times a power of ten within the range of ``values``, written as
+    plain numbers (no minor ticks)."""
+    moved = values[values > 0]
+    if moved.size:
+        steps = [m * 10.0**e for e in range(-4, 2) for m in (1, 2, 3, 5)]
+        ticks = [t for t in steps if moved.min() / 1.5 <= t <= moved.max() * 1.5] or [moved.min()]
+        ax.set_yticks(ticks, [f"{t:g}" for t in ticks])
+        ax.set_yticks([], minor=True)
+
+
 def contraction(
     jacobian_norms: dict[str, np.ndarray],
     *,
@@ -287,13 +298,7 @@ def contraction(
     ax_x.plot(flips, flips, color=COLORS["reference"], linestyle=":", label="as many as flipped", zorder=1)
     ax_z.set_yscale("log")  # reader r44b: log-log, as the right panel; a power of the flips reads as a straight line
     ax_z.set_ylabel("||z' - z|| / ||z|| (log scale)")  # review r30b: the long label was cramped; the title says what
-    moved = np.concatenate([np.mean(latent_shift[name], axis=1) for name in names])
-    moved = moved[moved > 0]
-    if moved.size:  # ticks of 1, 2, 3, 5 times a power of ten within the range drawn, written as plain numbers
-        steps = [m * 10.0**e for e in range(-4, 2) for m in (1, 2, 3, 5)]
-        ticks = [t for t in steps if moved.min() / 1.5 <= t <= moved.max() * 1.5] or [moved.min()]
-        ax_z.set_yticks(ticks, [f"{t:g}" for t in ticks])
-        ax_z.set_yticks([], minor=True)
+    _plain_log_ticks(ax_z, np.concatenate([np.mean(latent_shift[name], axis=1) for name in names]))
     ax_z.set_title("Latent code moves", fontsize=10)  # its axis says relative to what
     ax_x.set_title("Reconstruction changes", fontsize=10)
     changes = np.concatenate([flips, *(np.mean(decoded_change[name], axis=1) for name in names)])  # the counts drawn

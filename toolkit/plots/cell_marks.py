@@ -24,7 +24,7 @@ from weakref import WeakKeyDictionary
 
 import numpy as np
 from matplotlib.axes import Axes
-from matplotlib.collections import PathCollection
+from matplotlib.collections import LineCollection, PathCollection
 from matplotlib.contour import QuadContourSet
 from matplotlib.figure import Figure
 from scipy.ndimage import distance_transform_edt
@@ -183,3 +183,37 @@ def _sub_cells(grid: CSpaceSlice, mask) -> tuple[np.ndarray, np.ndarray, np.ndar
         subs.append((axis[:, None] + width * ((np.arange(EDGE) + 0.5) / EDGE - 0.5)[None]).ravel())
     fine = np.repeat(np.repeat(np.asarray(mask, dtype=float), EDGE, axis=0), EDGE, axis=1)  # each cell EDGE x EDGE
     return subs[0], subs[1], fine.T
+
+
+FRAME = "outline on the frame"  # the gid of the boundary's runs along a map's frame
+
+
+def frame_runs(valid, grid: CSpaceSlice, walls: list[bool]) -> list[np.ndarray]:
+    """The map's frame where C-obstacle cells of ``valid (nx, ny)`` touch it, one segment ``(2, 2)`` per run of them
+    along each side: the outline closed there, so that a block on the map's edge reads as whole, not cut off. Only
+    where ``walls`` (one per axis) says the map ends at a wall: an angle's ends are none (α wraps round; a joint's
+    limits). Chapter 03's maps (:mod:`toolkit.plots.classifier`)."""
+    (x0, x1, y0, y1), runs = grid.extent, []
+    for along, cells, at, lo, hi, horizontal in (
+        (valid[:, 0], grid.shape[0], y0, x0, x1, True),
+        (valid[:, -1], grid.shape[0], y1, x0, x1, True),
+        (valid[0, :], grid.shape[1], x0, y0, y1, False),
+        (valid[-1, :], grid.shape[1], x1, y0, y1, False),
+    ):
+        if not walls[1 if horizontal else 0]:
+            continue
+        edges = lo + (hi - lo) * np.arange(cells + 1) / cells  # (cells + 1,) the cells' edges along this side
+        blocked = np.concatenate([[0], (~along).astype(int), [0]])
+        starts, ends = np.flatnonzero(np.diff(blocked) == 1), np.flatnonzero(np.diff(blocked) == -1)
+        for a, b in zip(edges[starts], edges[ends]):
+            runs.append(np.array([[a, at], [b, at]] if horizontal else [[at, a], [at, b]]))
+    return runs
+
+
+def draw_frame_runs(ax: Axes, grid: CSpaceSlice, valid, walls: list[bool], **style) -> LineCollection:
+    """:func:`frame_runs` drawn on ``ax`` as one collection (gid :data:`FRAME`), whole on the frame, not clipped to
+    half of it; ``style``: the outline's colours and line widths."""
+    frame = LineCollection(frame_runs(valid, grid, walls), zorder=2, gid=FRAME, **style)
+    frame.set_clip_on(False)
+    ax.add_collection(frame, autolim=False)
+    return frame

@@ -34,7 +34,7 @@ from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 
 from toolkit.learning import metrics
-from toolkit.plots import answers
+from toolkit.plots import answers, cell_marks
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
 from toolkit.plots.cell_marks import draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
@@ -132,7 +132,7 @@ def path_map(
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=10, wrap=True)
     _legend(fig, [(line, line.get_label()) for line in [cut, *ax.get_lines()] if line.get_label() != "_hair"])
     fit_cell_marks(fig, grid)
-    labels_clear_of(ax, grid, _on_grid(valid, grid, "valid"), "in collision")  # r39c: on free cells, not the block
+    labels_clear_of(ax, grid, grid.on_grid(valid, "valid"), "in collision")  # r39c: on free cells, not the block
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
     text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (squares), and the"
     text += f" returned path through {len(path)} configurations, checked exactly."
@@ -242,7 +242,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
     wide (:data:`CUT_MAP`: under the boundary and wider, both show where they meet; the path map's over it) and, with
     ``mistakes``, dangerous cells as squares and conservative ones as circles, sparse enough that the grey between
     them is P(valid) (review r18b: a hatch of dots over the `paper` map's rejected free space hid its grey)."""
-    probability = _on_grid(probability, grid, "probability")
+    probability = grid.on_grid(probability, "probability")
     image = ax.imshow(probability.T, cmap=GREY_CMAP, vmin=0, vmax=1, **_cells(grid))
     if probability.min() < threshold <= probability.max():
         line = draw_cell_outline(ax, grid, probability >= threshold, colors=COLORS["free"], linestyles=":")  # r42c
@@ -250,8 +250,8 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
         line.set_path_effects(halo(cut, ("ink",)))  # a black ring: it shows on the light side too
         line.set_zorder(1.9 if cut >= CUT_MAP else 2.5)  # a map's wide line under the boundary (2), the path map's over
     _draw_boundary(ax, valid, grid)
-    draw_cell_hatch(ax, grid, ~_on_grid(valid, grid, "valid"), color=HATCH)  # the truth without reading the grey
-    codes = answer_codes(probability >= threshold, _on_grid(valid, grid, "valid"))
+    draw_cell_hatch(ax, grid, ~grid.on_grid(valid, "valid"), color=HATCH)  # the truth without reading the grey
+    codes = answer_codes(probability >= threshold, grid.on_grid(valid, "valid"))
     if mistakes:  # fit_cell_marks sizes them, no two closer than their pitch
         tint = np.zeros((*codes.shape, 4))  # (nx, ny, RGBA) each wrong cell in its kind's colour, the grey showing
         for code in MISTAKE_MARKERS:  # through (reader r36c: 22 circles on a flat grey hid 64 % of the map wrong)
@@ -315,7 +315,7 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
 
 def _draw_decision(ax, predicted_valid, valid, grid: CSpaceSlice):
     """Each cell coloured by its kind of answer (``ANSWER_COLORS``), and the boundary."""
-    codes = answer_codes(_on_grid(predicted_valid, grid, "predictions"), _on_grid(valid, grid, "valid"))
+    codes = answer_codes(grid.on_grid(predicted_valid, "predictions"), grid.on_grid(valid, "valid"))
     image = ax.imshow(codes.T, cmap=ListedColormap(ANSWER_COLORS), vmin=-0.5, vmax=len(ANSWERS) - 0.5, **_cells(grid))
     _draw_boundary(ax, valid, grid)
     _draw_mistakes(ax, grid, codes)  # as on a P(valid) map (r27c: a circle a cell hid the sky blue under a carpet)
@@ -338,47 +338,14 @@ MARK_RING = 1.0  # points: a mistake's black ring 1.3 points wide (2 pixels on t
 
 def _draw_boundary(ax, valid, grid: CSpaceSlice) -> None:
     """The true C-obstacle boundary: the 0.5 contour of the exact checker's answers; axis names."""
-    valid = _on_grid(valid, grid, "valid")
+    valid = grid.on_grid(valid, "valid")
     if valid.any() and not valid.all():
         draw_cell_outline(ax, grid, valid, colors=BOUNDARY, linewidths=OUTLINE).set_path_effects(halo(OUTLINE))
-        frame = LineCollection(_frame_runs(valid, grid), colors=BOUNDARY, linewidths=OUTLINE, zorder=2, gid=FRAME)
+        walls = [name in POSITION_NAMES for name in grid.names]  # (2,) each axis's ends are walls (an angle's: none)
+        frame = cell_marks.draw_frame_runs(ax, grid, valid, walls, colors=BOUNDARY, linewidths=OUTLINE)
         frame.set_path_effects(halo(OUTLINE))  # r44c: a block against the map's edge read as cut off by the frame
-        frame.set_clip_on(False)  # whole on the frame, not half of it
-        ax.add_collection(frame, autolim=False)
     ax.set_xlabel(dof_label(grid.names[0]))  # an angle with its unit, radians
     ax.set_ylabel(dof_label(grid.names[1]))
-
-
-FRAME = "outline on the frame"  # the gid of the boundary's runs along a map's frame
-
-
-def _frame_runs(valid, grid: CSpaceSlice) -> list[np.ndarray]:
-    """The map's frame where C-obstacle cells of ``valid (nx, ny)`` touch it, one segment ``(2, 2)`` per run of them
-    along each side: the outline closed there, so that a block on the map's edge reads as whole, not cut off. Only
-    where the map ends at a position's bound, a wall: an angle's ends are none (α wraps round; a joint's limits)."""
-    (x0, x1, y0, y1), runs = grid.extent, []
-    walls = [name in POSITION_NAMES for name in grid.names]  # (2,) each axis's ends are walls
-    for along, cells, at, lo, hi, horizontal in (
-        (valid[:, 0], grid.shape[0], y0, x0, x1, True),
-        (valid[:, -1], grid.shape[0], y1, x0, x1, True),
-        (valid[0, :], grid.shape[1], x0, y0, y1, False),
-        (valid[-1, :], grid.shape[1], x1, y0, y1, False),
-    ):
-        if not walls[1 if horizontal else 0]:
-            continue
-        edges = lo + (hi - lo) * np.arange(cells + 1) / cells  # (cells + 1,) the cells' edges along this side
-        blocked = np.concatenate([[0], (~along).astype(int), [0]])
-        starts, ends = np.flatnonzero(np.diff(blocked) == 1), np.flatnonzero(np.diff(blocked) == -1)
-        for a, b in zip(edges[starts], edges[ends]):
-            runs.append(np.array([[a, at], [b, at]] if horizontal else [[at, a], [at, b]]))
-    return runs
-
-
-def _on_grid(values, grid: CSpaceSlice, name: str) -> np.ndarray:
-    values = np.asarray(values, dtype=bool if name != "probability" else float)
-    if values.shape != grid.shape:
-        raise ValueError(f"{name} has shape {values.shape}, the grid {grid.shape}")
-    return values
 
 
 UNDER = "hidden where it runs under an outline"  # the threshold's line, where the model is right (r44c)

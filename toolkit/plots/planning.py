@@ -20,7 +20,7 @@ from scipy.ndimage import distance_transform_edt
 
 from toolkit.geometry.collision import CollisionChecker
 from toolkit.planning.prm import GOAL, START, PlanStep
-from toolkit.plots.alt import Part, describe, map_part
+from toolkit.plots.alt import Part, describe, many, map_part
 from toolkit.plots.cspace import checker_workspace
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo
 from toolkit.plots.slices import slice_configs
@@ -288,7 +288,7 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) 
         )
     _margin(ax)
     head = f"{number} {step.stage}" if number else f"round {step.round}, {step.stage}:"  # r40d: the ring in the legend
-    counts = f"{_many(len(P), 'node')}, {_many(len(step.edges), 'edge')}" + (f", round {step.round}" if number else "")
+    counts = f"{many(len(P), 'node')}, {many(len(step.edges), 'edge')}" + (f", round {step.round}" if number else "")
     ax.set_title(f"{head}\n{counts}", fontsize=10)
 
 
@@ -329,21 +329,15 @@ def roadmap(exact: CollisionChecker, step: PlanStep, title: str = "") -> Figure:
     return describe(fig, f"{title + ': ' if title else ''}{step_in_words(step)}", [_step_part(step)])
 
 
-def _many(n: int, thing: str) -> str:
-    """``"1 edge"``, ``"3 edges"`` (reader r44d, item 8: "1 edges")."""
-    return f"{n} {thing}{'s' * (n != 1)}"
-
-
 def step_in_words(step: PlanStep) -> str:
-    """One step of Algorithm 1 in words (the text alternative of its roadmap picture); a repair's removals only where
-    the step removed something (reader r44d, item 8: "a repair removed 0 nodes and 0 edges" on every panel)."""
-    text = f"Round {step.round}, {step.stage}: a roadmap of {_many(len(step.nodes), 'node')} "
-    text += f"({int(np.sum(step.node_verified))} confirmed exactly) and {_many(len(step.edges), 'edge')} over the "
+    """One step of Algorithm 1 in words (its roadmap picture's text alternative), removals only where there are any."""
+    text = f"Round {step.round}, {step.stage}: a roadmap of {many(len(step.nodes), 'node')} "
+    text += f"({int(np.sum(step.node_verified))} confirmed exactly) and {many(len(step.edges), 'edge')} over the "
     text += "C-obstacles"
     if len(step.path):
         line = {"path": "solid", "repair": "dotted"}.get(step.stage, "dashed")
-        text += f"; a {line} path through {_many(len(step.path), 'node')}"
-    removed = [_many(n, w) for n, w in ((len(step.removed_nodes), "node"), (len(step.removed_edges), "edge")) if n]
+        text += f"; a {line} path through {many(len(step.path), 'node')}"
+    removed = [many(n, w) for n, w in ((len(step.removed_nodes), "node"), (len(step.removed_edges), "edge")) if n]
     return text + (f"; the exact checker rejected {' and '.join(removed)}, removed next" if removed else "") + "."
 
 

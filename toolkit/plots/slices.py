@@ -68,6 +68,14 @@ class CSpaceSlice:
         """Values per configuration ``(nx * ny,)`` as a grid ``(nx, ny)``, ``[i, j]`` at ``axes[0][i], axes[1][j]``."""
         return np.asarray(values).reshape(self.shape)
 
+    def on_grid(self, values, name: str) -> np.ndarray:
+        """``values`` already on the grid ``(nx, ny)``, as booleans (as floats for ``name`` "probability"), or a clear
+        error naming them."""
+        values = np.asarray(values, dtype=bool if name != "probability" else float)
+        if values.shape != self.shape:
+            raise ValueError(f"{name} has shape {values.shape}, the grid {self.shape}")
+        return values
+
 
 def slice_grid(robot: BoxRobot, dofs: tuple[int, int] = (0, 1), *, fixed=None, n: int = 80) -> CSpaceSlice:
     """The ``n x n`` grid over DoFs ``dofs`` of ``robot``, the others at ``fixed (dof,)`` (default: mid-bounds).

@@ -210,7 +210,7 @@ def _zoom_on_small_fills(ax, fills, robot: BoxRobot, q: np.ndarray, plane: tuple
         f"zoom x{(x1 - x0) / (2 * half):.0f}",
         fontsize=9,
         pad=3,
-        bbox={"facecolor": "white", "edgecolor": "none", "pad": 1},
+        bbox={"facecolor": COLORS["free"], "edgecolor": "none", "pad": 1},
     )
     ax.indicate_inset_zoom(inset, edgecolor=COLORS["ink"])
     ax.zoomed = True

@@ -1,5 +1,6 @@
 """Chapter 04's tables of its own small runs (sections 2, 3 and 5), and the answer read from ``docs/results.md``:
-:func:`answer`, :func:`answer_figure`, :func:`mark_line` at the top; :func:`full_answer`, :func:`edge_line` in 6."""
+:func:`answer`, :func:`mark_line` at the top; :func:`full_answer`, :func:`edge_line` in 6 (its figures:
+:mod:`toolkit.teaching.chapter04_figures`)."""
 
 from __future__ import annotations
 
@@ -7,7 +8,6 @@ import os
 from collections.abc import Mapping
 
 import numpy as np
-from matplotlib.figure import Figure
 
 from toolkit.experiments.paper_numbers import TIMES, saved_beyond_sampling
 from toolkit.experiments.queries import solve_query
@@ -15,9 +15,6 @@ from toolkit.geometry.collision import exact_checker
 from toolkit.learning.learned import LearnedChecker
 from toolkit.planning.local_planner import path_is_valid
 from toolkit.planning.sampling import PAPER_SAMPLERS
-from toolkit.plots.answer import CHECKERS, SHAPES, answer_ratios
-from toolkit.plots.palette import COLORS
-from toolkit.plots.timings import throughputs
 from toolkit.teaching import checker_scope, costs, findings, recorded
 from toolkit.teaching.recorded import Tables
 from toolkit.util.verdicts import COSTS, SAVES, TIES, time_verdict
@@ -389,50 +386,9 @@ def _ours_beyond(tables: Tables | None = None) -> str:
     return said
 
 
-SERIES = {  # the answer figure's legend, a line a series (reader r33d: five lines for three marker kinds)
-    "the paper's Table 3": "the paper's Table 3 (its means): diamonds",
-    "ours (`strong` preset), medians": "ours, our fast checker (compiled in 3D, numpy in 2DS): crosses",
-    "ours (`strong`, python-fcl), medians": "ours, python-fcl on both sides: hexagons",
-}
-
-
-def answer_figure(tables: Tables | None = None, means: bool = False) -> Figure:
-    """Our median query per cell with its middle half and band; with ``means``, Table 3 beside our ratios of means."""
-    rows = checker_scope.compact(tables)
-    papers = {label: r for label, r in rows.items() if "the paper's" in label}
-    return answer_ratios(
-        papers | checker_scope.our_means(tables) if means else {k: r for k, r in rows.items() if k not in papers},
-        tie=findings.TIE,
-        spans=None if means else checker_scope.spans(tables),
-        names=SERIES,
-        order=list(SERIES),  # each series its marker in both figures
-        floor=costs.floors(tables)["means"],
-        median_floor=costs.floors(tables)["own"],
-    )
-
-
 def load_line() -> str:
     """The machine's load as a live table was timed (review r32d): the last minute's load average and the cores."""
     return (
         f"Timed at a load average of {os.getloadavg()[0]:.1f} on {os.cpu_count()} cores (the last minute's, as this "
         "table was finished). Live timings on a shared machine illustrate; section 6's recorded runs decide."
     )
-
-
-def rates_figure(rates: dict[str, dict[str, float]]) -> Figure:
-    """Section 4's figure, :func:`toolkit.plots.timings.throughputs` (``{scenario: {checker: rate}}``, checkers named
-    as :data:`toolkit.plots.answer.CHECKERS`), each checker in chapter 04's one colour and marker (reader r44d, item
-    3: the network's triangle meant "saves time" elsewhere), its marker named in the legend."""
-    fig = throughputs(rates)  # then restyled
-    ax = fig.axes[0]
-    for line in ax.lines:
-        name = str(line.get_label())
-        if name in CHECKERS:
-            color, marker = CHECKERS[name]
-            line.set(marker=marker, color=color, markerfacecolor=color, markeredgecolor=COLORS["ink"])
-            line.set_markeredgewidth(0.6)
-            line.set_label(f"{name} ({SHAPES[marker]})")
-    for legend in list(fig.legends):
-        legend.remove()
-    fig.legend(loc="outside lower center", ncol=len(ax.lines), fontsize=9, frameon=False)
-    return fig
