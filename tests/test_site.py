@@ -588,7 +588,7 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     # stated again, the paper's cells that break it
     # reader r45e, home 2: the paper's cells read by the same rule as ours, no stricter one
     line = (
-        "**The paper's savings pass the limit too, and the same rule reads them.** In "
+        "**The paper's savings pass the limit too, and the same rule holds for them.** In "
         f"{len(over)} of its 16 cells, its mean times save more than the whole sampling stage took. Skipping the "
         "samples' checks cannot save that much. So there too, the part beyond the limit is not the skipped checks' "
         'doing. <details markdown="1"><summary>Savings bigger than the whole sampling stage, in the paper</summary> '
