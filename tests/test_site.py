@@ -316,9 +316,17 @@ def test_the_index_opens_in_short_sentences():
     assert len(re.findall(r"(?m)^\| --- ", opening)) == 1, "the opening has one table, the answer's"
     assert opening.index("**The answer") < opening.index("\n|")
     first = " ".join(opening.strip().split("\n\n")[0].split())  # review r23b: the repeatable sentence comes first
+    from toolkit.teaching import recorded
+
+    chance = [recorded.ours(row["Balanced unseen Acc"]) for row in recorded.table("paper", "MLP accuracy").values()]
+    assert max(chance) <= 0.55  # "at chance": a coin flip is right on 50 % of a balanced test
     assert first == (  # review r27e: "only where the exact check is slow" met 2DS BT's 0.81 with the compiled one;
         "**The answer: an accurate network saves sampling time where the exact check is slow, mostly slows "
         "sampling where it is fast, and rarely saves a whole query's time.**"  # r39e: 3DC-7's sampling 2.4-3.3x
+        # reader r45e, home 5 and lift 3: which network the answer is about, and the paper's own, in the answer
+        " The accurate network is our stand-in, `strong`: our rebuild of the paper's own CAE+MLP is at chance on "
+        f"unseen samples, right on {percents(chance)} "
+        "([docs/results.md](docs/results.md#what-reproduces-and-what-does-not))."
     )  # each word counted by test_the_index_gives_one_statistic_a_line_behind_its_answer
 
 
@@ -533,21 +541,31 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
         return shares(FCL_ALIKE)[times["rows"].index(row)], 1 - sampled[1] / sampled[0]  # share, and its cut
 
     bt, cut = limit("3do", "BT")
+    limits = {(s, k): limit(s, k) for s, k in (row[:2] for row in times["rows"])}
+    under = [c for c, (s, k) in limits.items() if s * k < findings.TIE]
+    assert max(limits.values(), key=lambda sk: sk[0] * sk[1]) == (bt, cut)  # 3DO BT's is the largest
+    # reader r45e, home 1 and 4: the limit is what skipping the checks can save, a query may save more by another
+    # roadmap; "barely moves" gone (16 % is above the tie band's 10 %), the cells under 10 % counted instead
     said = (
-        "So a query can save at most sampling's share of it times the cut in sampling. With python-fcl in 3DO BT, "
-        f"that is {bt:.3f} × {cut:.3f} ≈ {100 * bt * cut:.0f} %."
+        "So skipping those checks can save at most sampling's share of a query times the cut in sampling. With "
+        f"python-fcl that limit is under 10 % in {len(under)} of {len(limits)} cells, and largest in 3DO BT: "
+        f"{bt:.3f} × {cut:.3f} ≈ {100 * bt * cut:.0f} %. A query can save more, but not by the skipped checks. With "
+        "other samples the planner grows another roadmap, with other edges to check."
     )
     assert said in answer and answer.index(said) < answer.index("](docs/results_claim.png)")
-    assert answer.count("at most sampling's share") == 1  # said once
+    assert answer.count("at most sampling's share") == 1 and "barely moves" not in answer  # said once
     # both clear own-ratio savings pass that limit: the rest came after sampling
     assert clear[0].startswith("3DC-9 OB") and clear[1].startswith("3DO BT")
     ob = limit("3dc9", "OB")
     assert all(1 - float(c.split()[-1]) > s * k for c, (s, k) in zip(clear, (ob, (bt, cut))))
-    assert (
-        f"Both saved more than the limit above, read from mean times: {100 * ob[0] * ob[1]:.0f} % of a query in "
-        f"3DC-9 OB, {100 * bt * cut:.0f} % in 3DO BT. The rest came after sampling, which prediction does not "
-        "shorten. With other samples the planner grows another roadmap, with other edges to check."
+    saved = [100 * (1 - float(c.split()[-1])) for c in clear]
+    assert (  # reader r45e, home 3: the 8 % and 16 % named as the limits, the savings beside them
+        f"By their own ratios they saved {saved[0]:.0f} % and {saved[1]:.0f} % of a query. The limit above, read from "
+        f"mean times, is {100 * ob[0] * ob[1]:.0f} % of a query in 3DC-9 OB and {100 * bt * cut:.0f} % in 3DO BT. "
+        "That much at most came from the skipped checks. The rest was saved after sampling, on another roadmap, so "
+        "it is not the skipped checks' doing."
     ) in answer
+    assert "Both saved more than the limit above" not in answer
     assert reach == max(1 - floor[0], floor[1] - 1) and NOISE_EDGE == 2
     # wave 24: 3DC-9 OB's saving by means (0.66) lies inside the means' noise band, so it is no finding here
     from toolkit.teaching.costs import floors, inside
@@ -568,15 +586,17 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     assert len(table3) == len(over) and table3 != set(over)  # reader r37e, home 6: "not the same 10 cells"
     # reader r41e, home lift 5: one visible line, the paragraph in a fold under it; r44e, home 2: the limit not
     # stated again, the paper's cells that break it
+    # reader r45e, home 2: the paper's cells read by the same rule as ours, no stricter one
     line = (
-        "**The paper's own times break the limit above.** In "
-        f"{len(over)} of its 16 cells, its mean times save more than the whole sampling stage took. "
-        '<details markdown="1"><summary>Savings bigger than sampling allows, in the paper</summary> Skipping '
-        "the samples' checks can save at most the sampling stage. The paper's largest such gap, in its §V "
-        f"mean times: {NAMES[most[0]]} {most[1]}, {over[most][0]:.2f} s saved against {over[most][1]:.2f} s of "
-        f"sampling. They are not the same {len(over)} cells as Table 3's savings. </details>"
+        "**The paper's savings pass the limit too, and the same rule holds for them.** In "
+        f"{len(over)} of its 16 cells, its mean times save more than the whole sampling stage took. Skipping the "
+        "samples' checks cannot save that much. So there too, the part beyond the limit is not the skipped checks' "
+        'doing. <details markdown="1"><summary>Savings bigger than the whole sampling stage, in the paper</summary> '
+        "The whole sampling stage is a looser limit than sampling's share times its cut. The paper's largest gap "
+        f"beyond it, in its §V mean times: {NAMES[most[0]]} {most[1]}, {over[most][0]:.2f} s saved against "
+        f"{over[most][1]:.2f} s of sampling. They are not the same {len(over)} cells as Table 3's savings. </details>"
     )
-    assert line in answer
+    assert line in answer and "break the limit" not in answer
     # its throughput against python-fcl and each cell beside Table 3: docs/benchmarks.md (tests/test_benchmarks_page)
 
 
@@ -673,6 +693,9 @@ def test_the_index_gives_one_statistic_a_line_behind_its_answer():
     # reader r34e, home figure 1: the caption says what a whisker is
     assert "A whisker spans the middle half of the cell's 100 queries" in answer
     assert "two points per cell, filled for our compiled checker, hollow for python-fcl" in answer  # reader r38e
+    # reader r45e, home 6: the borrowed band said where the hollow points are read, not only in a clause above
+    assert "hollow for python-fcl, which borrows the compiled run's noise band." in answer
+    assert not any("timed twice" in heading for heading in tables[fcl])  # it borrows: its run was timed once
     # the answer: sampling saves where the check is slow (every cell), mostly slows where it is fast, a whole query
     # rarely (reader r39e, home 1: with the compiled checker 3DC-7's sampling took 2.4-3.3 times as long)
     assert by_means(fcl, "sampling") == 16 and by_means(compiled, "sampling") <= 2
