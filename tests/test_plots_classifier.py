@@ -395,7 +395,7 @@ def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, pr
     ]
     on_bars = {line.get_marker(): (line.get_xdata()[0], line.get_ydata()[0]) for line in ax_counts.get_lines()}
     assert on_bars == {"o": (1, heights[1]), "s": (3, heights[3])}  # r19b: a bar of a few cells showed nothing
-    (point,) = [line for line in ax_roc.get_lines() if line.get_marker() == "o"]
+    (point,) = [line for line in ax_roc.get_lines() if line.get_marker() == "^"]  # r45c: not a mistake's circle
     rates = metrics.classification(predicted.ravel(), valid.ravel())
     assert point.get_xdata()[0] == pytest.approx(1 - rates["tnr"])
     assert point.get_ydata()[0] == pytest.approx(rates["tpr"])
@@ -453,6 +453,10 @@ def test_roc_curve_draws_every_curve_and_its_operating_point(probability, valid)
         kept = p >= t
         assert point.get_xdata()[0] == pytest.approx(np.mean(kept[~truth]))
         assert point.get_ydata()[0] == pytest.approx(np.mean(kept[truth]))
+    mistakes = {to_rgba(COLORS["dangerous"]), to_rgba(COLORS["conservative"])}  # r45c: vermillion squares, blue circles
+    assert not {to_rgba(line.get_color()) for line in lines} & mistakes
+    assert not {line.get_marker() for line in lines} & {"s", "o"}
+    assert len({(line.get_color(), line.get_linestyle()) for line in lines[::2]}) == 2  # two curves told apart
 
 
 def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probability, valid):

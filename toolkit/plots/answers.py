@@ -18,7 +18,7 @@ import numpy as np
 
 from toolkit.learning import metrics
 from toolkit.plots.alt import Part, map_part
-from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, series_style
+from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, LINE_COLORS
 from toolkit.plots.slices import CSpaceSlice
 
 ANSWERS = ("valid kept", "valid rejected", "invalid rejected", "invalid kept (dangerous)")  # answer_codes 0-3
@@ -166,14 +166,23 @@ def draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
         ax.legend(fontsize=8, loc="upper center", ncols=2, frameon=False)
 
 
+ROC_STYLES = (  # reader r45c: not the mistakes' marks (vermillion squares: dangerous, sky-blue circles: conservative)
+    {"color": LINE_COLORS[2], "linestyle": "-", "marker": "^"},  # ink
+    {"color": LINE_COLORS[3], "linestyle": "-.", "marker": "D"},  # bluish green
+    {"color": LINE_COLORS[4], "linestyle": ":", "marker": "v"},  # reddish purple
+)
+"""Each ROC curve's colour, line style and operating point's marker, in turn: none a mistake's colour or mark."""
+
+
 def draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> str:
-    """The ROC curves and their operating points; returns them in words."""
+    """The ROC curves and their operating points (styles of :data:`ROC_STYLES`, never a mistake's mark); returns them
+    in words."""
     ax.plot([0, 1], [0, 1], color=COLORS["reference"], linestyle="--", label="chance")
     said = []
     for i, (name, (probability, valid, threshold)) in enumerate(curves.items()):
         _, fpr, tpr = roc_points(probability, valid)
         auc = np.trapezoid(tpr[::-1], fpr[::-1])  # thresholds rise, so FPR falls: integrate left to right
-        style = series_style(i)
+        style = ROC_STYLES[i % len(ROC_STYLES)]
         label = f"{name + ': ' if name else ''}AUC {auc:.2f}"
         (line,) = ax.plot(fpr, tpr, label=label, **style | dict(marker="", linewidth=2.5))  # r27c: thin, a curve
         # along the frame (FPR 0, then TPR 1: a near-perfect model) could not be seen
@@ -183,7 +192,8 @@ def draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> 
             tpr_t,
             style["marker"],
             color=line.get_color(),
-            markeredgecolor=COLORS["ink"],
+            markeredgecolor=COLORS["ink"] if i else COLORS["free"],  # a black mark ringed white on its black line
+            markersize=8,
             label=f"{name + ' ' if name else ''}threshold {threshold:.2f}",
         )
         said.append(

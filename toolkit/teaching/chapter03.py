@@ -7,7 +7,7 @@
   (:func:`near_boundary`) beside how many cells do, where the dangerous ones are (:func:`groups`);
 - :func:`score_unseen`: section 4's scores of each model and of "always valid" on unseen workspaces' samples;
 - :func:`slice_verdict`: section 5's verdict on a slice, its counts and words; :func:`band_starts`, where its yaw x
-  joint slice's middle row enters the band;
+  joint slice's middle row enters the band, and :func:`pockets`, the free triangles the band cuts off;
 - :func:`threshold_explorer`: section 6's slider over the decision maps;
 - :func:`closing_table`: the closing section's table, the paper's row above this page's draws.
 """
@@ -221,7 +221,8 @@ def slice_verdict(p, truth, threshold: float, near: int, edge: str = "walls") ->
 def band_starts(valid, grid: CSpaceSlice, reach: float = 0.5, half: float = 0.05, gap: float = 0.3) -> str:
     """Where the yaw x joint map's middle row (the joint nearest 0) enters the band in collision, beside the |α| at
     which a straight chain ``reach`` long and ``half`` its half thickness, its base ``gap`` from the block, first
-    touches it: ``reach |cos α| + half |sin α| >= gap``, α towards −x (reader r42c: the check out of its fold)."""
+    touches it: ``-reach cos α + half |sin α| >= gap``, α towards −x (reader r42c: the check out of its fold; r45c:
+    −cos α, not |cos α|, which holds near α = 0 too)."""
     alpha, joint = grid.axes
     row = int(np.argmin(np.abs(joint)))
     turned = np.linspace(np.pi / 2, np.pi, 100_001)  # towards −x
@@ -299,19 +300,53 @@ def closing_table(scores: Mapping[str, Mapping[str, float]]) -> str:
 
 def paper_row(scenario: str) -> str:
     """The closing table's row of the paper's Table 2, unseen ``scenario``: its samples unstated, §IV-A's words, the
-    share of valid ones its rates imply (reader r31c: not "unclear", the two that clash; r33c: not "validity-blind"
-    outright; r34c: nor "validity-blind" beside "Reading it"'s "probably neither of ours"), its balanced accuracy to a
-    tenth as in the opening table (r28c)."""
+    shares of valid samples its rates, rounded to whole percent, allow (reader r45c: "imply 60 %" read three rounded
+    numbers as exact), its balanced accuracy to a tenth as in the opening table (r28c)."""
     published = paper_numbers.MLP[scenario]["unseen"]
+    low, high = implied_shares(published)
     return (
-        f'| the paper\'s Table 2, {NAMES[scenario]} unseen | unstated: §IV-A says "regardless of their validity", but '
-        f"its rates imply {_implied_share(published):.0%} valid | {rates(published, '.1%')} |"
+        f'| the paper\'s Table 2, {NAMES[scenario]} unseen | unstated: §IV-A says "regardless of their validity"; '
+        f"its rounded rates fit {100 * low:.0f}–{high:.0%} valid | {rates(published, '.1%')} |"
     )
 
 
 DRAWN = "this page's draw (section 4)"  # the closing table's label of this page's own test
 
 
-def _implied_share(r: Mapping[str, float]) -> float:
-    """The share of valid samples ``s`` for which an accuracy pooling them, ``s TPR + (1 - s) TNR``, is ``r["acc"]``."""
-    return (r["acc"] - r["tnr"]) / (r["tpr"] - r["tnr"])
+def implied_shares(r: Mapping[str, float], rounding: float = 0.005) -> tuple[float, float]:
+    """The least and the most share of valid samples ``s`` for which an accuracy pooling them, ``s TPR + (1 - s)
+    TNR``, is ``r["acc"]``, each of the three rates anywhere within ``rounding`` of its printed value. ``s = (acc -
+    TNR) / (TPR - TNR)`` rises with accuracy and falls with TPR and with TNR (where acc < TPR), so its ends lie at
+    corners of that box."""
+    acc, tpr, tnr = r["acc"], r["tpr"], r["tnr"]
+    ends = [
+        (a - n) / (p - n)
+        for a in (acc - rounding, acc + rounding)
+        for p in (tpr - rounding, tpr + rounding)
+        for n in (tnr - rounding, tnr + rounding)
+        if p > n
+    ]
+    return max(0.0, min(ends)), min(1.0, max(ends))
+
+
+def pockets(valid, grid: CSpaceSlice) -> str:
+    """The free regions of a map ``valid (nx, ny)`` cut off from its largest free region (section 5's yaw x joint
+    slice: the free triangles the band encloses), each with its cells, its ranges and its corner of the picture as it
+    is drawn (the first DoF across, the second up; reader r45c: the page named the corners opposite to the figure)."""
+    from scipy import ndimage
+
+    labels, n = ndimage.label(np.asarray(valid, dtype=bool))  # (nx, ny): 4-connected free regions
+    if n < 2:
+        return "no free region apart from the rest"
+    sizes = ndimage.sum(np.ones_like(labels), labels, range(1, n + 1))
+    said = []
+    for k in np.argsort(-sizes, kind="stable")[1:] + 1:  # the largest region first, left out
+        i, j = np.nonzero(labels == k)
+        x, y = grid.axes[0][i], grid.axes[1][j]
+        across = "right" if x.mean() > np.mean(grid.axes[0]) else "left"
+        up = "top" if y.mean() > np.mean(grid.axes[1]) else "bottom"
+        said.append(
+            f"{len(i)} cells at {grid.names[0]} {x.min():.2f} to {x.max():.2f}, {grid.names[1]} {y.min():.2f} to "
+            f"{y.max():.2f} (the {up} {across} corner)"
+        )
+    return "free regions apart from the rest: " + "; ".join(said)
