@@ -119,7 +119,8 @@ def answer_map() -> str:
         f"| training of `strong` | the timed one (threshold {recorded_threshold(COMPILED):.2f}) | §5's views: "
         "this notebook's (its threshold under the view); the closing fold: a third "
         f"(threshold {recorded_threshold('strong'):.2f}) |\n"
-        "| planner | Algorithm 1 (planner `paper`) | §6–7: the lazy PRM's path; the closing fold: it, timed |\n"
+        "| planner | Algorithm 1 (planner `paper`) | §6–7: the lazy PRM's path; the closing fold: the lazy PRM "
+        "timed |\n"
         f"| statistic | the verdict: the median of each query's own ratio; the limit in **Why**: mean times "
         "| the ratio of means (Table 3's: the sampling table, the folds); a ratio of two medians (the closing fold) |"
     )
