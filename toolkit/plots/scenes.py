@@ -294,7 +294,7 @@ def _overview_words(robot, workspace, poses, samples, trace) -> str:
             f"{int(m.sum())} samples {kind} ({SAMPLE_WORDS[kind]})" for kind, m in samples[1].items() if m.any()
         )
         step = overview_step(len(samples[0]), len(workspace.boxes))
-        text += f", 1 sample in {step} of every kind drawn" if step > 1 else ""
+        text += f", 1 sample in every {step} drawn (in the order sampled, whatever its kind)" if step > 1 else ""
         text += ", and all the dangerous mistakes" if step > 1 and dangerous_mask(samples[1]).any() else ""
     text += ", the path of the robot's base and its shadow on the floor, dotted" if trace is not None else ""
     text += (
