@@ -340,8 +340,9 @@ def share_allows(tables: Tables) -> str:
     top = max(range(len(saved)), key=saved.__getitem__)
     cell = f"{NAMES.get(times['rows'][top][0], times['rows'][top][0])} {times['rows'][top][1]}"
     return (
-        f"There, sampling took at most {percent(max(shares))} % of a mean query, so prediction could save at most "
-        f"that share times its cut in sampling: {percent(saved[top])} % in {cell}, the most of any cell."
+        f"There, sampling took at most {percent(max(shares))} % of a mean query, so shortening it could save at most "
+        f"that share times its cut in sampling: {percent(saved[top])} % of a mean query in {cell}, the most of any "
+        "cell."
     )
 
 
