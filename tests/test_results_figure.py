@@ -133,11 +133,22 @@ def test_each_panel_shades_the_tie_band_its_counts_are_read_with(drawn):
         assert marker not in "os^" and colour != OKABE_ITO["vermillion"], name
     for words in (
         "grey diamonds, the paper",
-        "orange thin crosses (×), our `paper`-preset network",
+        "orange bold crosses (×), our `paper`-preset network",
         "reddish-purple stars",
         "bluish-green pentagons",
     ):
         assert words in TEXT, words
+    assert "thin cross" not in TEXT  # reader r45f, item 5: the words as the picture draws them
+    crosses = [line for ax in fig.axes for line in ax.get_lines() if line.get_marker() == "x"]
+    assert crosses and all(line.get_markeredgewidth() == results_figures.CROSS_WIDTH for line in crosses)
+    # reader r45f, item 5: the hatched band is ours only, not the paper's; Figure 3's alt names sampling time and its
+    # band borrowed from total time
+    assert "It is our machine's timing noise, not the paper's" in TEXT
+    said = alt.alt_text(fig)
+    assert said.startswith(f"Mean {'sampling' if kind == 'sampling' else 'planning'} time with prediction")
+    assert results_figures.BAND_SAID[kind] in said and results_figures.BAND_WORDS + "." not in said
+    if kind == "sampling":
+        assert "borrowed here for sampling times: a rough guide, not a band measured for sampling" in TEXT
     for ax in fig.axes:  # reader r31f: Figure 1's verdict colours and shapes name no series here
         for line in ax.get_lines():
             assert line.get_marker() in ("None", None) or (

@@ -36,7 +36,7 @@ MARGINS = {"total": 1.15, "sampling": 1.25}  # each figure's range: its points',
 ROW_HEIGHTS = {"total": 3.3, "sampling": 3.2}  # inches a row of panels: each band is read to 0.9 and 1.1 (r27f)
 KEY = (  # under Figure 2 (reader r31f, item 3): its marks are not Figure 1's verdicts; r39f, item 7: one colour each;
     # reader r44f, item 9: each series named by its shape, the `paper` preset's orange crosses apart from vermillion
-    " Here colour and shape name a series, not a verdict as in Figure 1: grey diamonds, the paper; orange thin crosses "
+    " Here colour and shape name a series, not a verdict as in Figure 1: grey diamonds, the paper; orange bold crosses "
     "(×), our `paper`-preset network; reddish-purple stars, the `strong` network with our compiled checker; "
     "bluish-green pentagons, the `strong` network with python-fcl. No series takes Figure 1's blue, black or "
     "vermillion, nor its circle, square or triangle."
@@ -98,7 +98,24 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
         noise=floor,
         width=WIDTH,
     )
-    return readable(fig, floor, kind)
+    return worded(readable(fig, floor, kind), kind)
+
+
+BAND_WORDS = "timing alone moved a ratio of means that far"  # toolkit.plots.ratio_bands' words for the hatched band
+BAND_SAID = {  # reader r45f, item 5: the band is our timing's, not the paper's; Figure 3's is built on total times
+    "total": BAND_WORDS + " on our machine (our series only: the paper's points are not read against it)",
+    "sampling": "timing alone moved a ratio of mean total times that far on our machine, borrowed here for sampling "
+    "times (no band was measured for sampling; our series only)",
+}
+
+
+def worded(fig: Figure, kind: str) -> Figure:
+    """Reader r45f, item 5: the text alternative says which time the figure shows (Figure 3's is sampling time, not
+    planning time) and what its hatched band is: our timing noise, and for Figure 3 the total time's band borrowed."""
+    text = alt.alt_text(fig).replace(BAND_WORDS, BAND_SAID[kind])
+    if kind == "sampling":
+        text = text.replace("Mean planning time with prediction", "Mean sampling time with prediction", 1)
+    return alt.describe(fig, text, getattr(fig, alt.DETAILS, ()))
 
 
 MARKER_SCALE = 0.85  # Figures 2-3's markers, a little smaller than means_grid draws them, so neighbours stand apart
@@ -106,10 +123,10 @@ LOOKS = {  # reader r42f, figures: no blue (Figure 1's "costs time") and no squa
     # reader r43f, figures: python-fcl's orange downward triangle read as Figure 1's black "saves" triangle, its orange
     # as Figure 1's vermillion "tie": now a colour and a shape Figure 1 never uses, bluish green pentagons; the
     # paper-preset series takes the orange, as a thin cross, a shape no Figure 1 square or triangle resembles
-    "ours, paper-preset network, compiled checker of 2 December": (OKABE_ITO["orange"], "x"),  # orange, thin cross
+    "ours, paper-preset network, compiled checker of 2 December": (OKABE_ITO["orange"], "x"),  # orange, bold cross
     "ours, accurate strong network, python-fcl on both sides": (LINE_COLORS[3], "p"),  # bluish green, pentagon
 }  # the other two keep means_grid's look: the paper's grey diamonds, the `strong` network's reddish purple stars
-CROSS_WIDTH = 2.4  # points: a thin cross is all edge, drawn this thick so it reads beside the filled markers
+CROSS_WIDTH = 2.4  # points: a cross is all edge, drawn this thick (bold, as the key says) beside the filled markers
 MARKER_Z = 4  # over every band and hatch (reader r42f: Figure 3's hatching read as covering the markers inside it)
 TIE_TICKS = {"total": False, "sampling": False}  # reader r42f: 0.9 and 1.1 crowd the "1"; the legend names them
 
@@ -265,9 +282,12 @@ def figure_markdown(text: str, kind: str = "total") -> str:
     said = (  # reader r39f, item 1: the band by its one name, in the table under the summary
         f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule. The noise band of a ratio of means, "
         f"{floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched, dotted edges; built as the table of bands at the top "
-        "says), sets a single cell apart only beyond it." + KEY
+        "says), sets a single cell of ours apart only beyond it. It is our machine's timing noise, not the paper's: "
+        "the paper's diamonds are drawn over it but not read against it." + KEY
         if kind == "total"
-        else f"*{kind.capitalize()} time*, counted and hatched as in Figure 2. {sampling_takeaway(counts)}"
+        else f"*{kind.capitalize()} time*, counted as in Figure 2. {sampling_takeaway(counts)} The hatched band is "
+        "Figure 2's, built on whole queries' total times (the table “timed twice” holds total times only) and "
+        "borrowed here for sampling times: a rough guide, not a band measured for sampling."
     )
     tables = parse(text)
     lead = LEADS[kind] + (means_not_verdict(tables) if kind == "total" else "")

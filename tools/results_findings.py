@@ -215,7 +215,8 @@ def why_no_saving(tables: Tables) -> str:
     why = causes(tables)
     return (  # reader r39f, item 9: the finding and its numbers; reader r40f, item 4: scoped to its runs
         "**Why, in the runs of 5 December: with a fast checker the network was the dearer check; with a slow "
-        "one sampling was too small a share of a query.** With our compiled checker the network cost "
+        "one sampling was a small share of a query, which caps the saving.** With our compiled checker the network "
+        "cost "
         f"{span(cost_3d, lambda c: f'{c:.2g}')} times an exact check per configuration in 3D{cost_2d}, so sampling "
         f"got 10 % or more slower in {why.slower} of {why.cells} cells; with python-fcl, {fcl_slower(tables)} times "
         f"slower than our compiled checker in 3D, {worked_example(tables)}{paper_sampling(tables)}"
@@ -249,16 +250,34 @@ def paper_sampling(tables: Tables) -> str:
         cheaper
     )
     lost = [(name, sampler, r) for name, sampler, r in ratios if change(r) == "more time"]
-    others = [f"{name} {sampler} {r:.2f}" for name, sampler, r in lost if name not in invalid]
+    # reader r45f, item 3: where the network was the dearer check (2DS), that explains the losses, as for `strong`
+    dear = {
+        NAMES.get(s, s): c
+        for s, c in network_costs(tables, "paper").items()
+        if c >= 1 + verdicts.CLOSE and any(name == NAMES.get(s, s) for name, _, _ in lost)
+    }
+    by_cost = [name for name, _, _ in lost if name in dear]
+    by_rounds = [name for name, _, _ in lost if name in invalid]
+    others = [f"{name} {sampler} {r:.2f}" for name, sampler, r in lost if name not in invalid and name not in dear]
+    dearer = "".join(
+        f" In {name} its network was {c:.2g} times as dear as an exact check per configuration: that explains its "
+        f"{len(by_cost)} {'loss' if len(by_cost) == 1 else 'losses'} in {name}, as for the `strong` network."
+        for name, c in dear.items()
+    )
+    left = (
+        f" {'The last loss' if len(others) == 1 else f'The last {len(others)} losses'}, {', '.join(others)}, "
+        "none of this explains."
+        if others
+        else ""
+    )
     # reader r43f, contradictions 5 and 6: what ends the rounds, and which of the losses that explains
     return (
-        f" The `paper`-preset run of 2 December lost sampling time in {slower[2]} of {sum(slower)} cells although its "
-        f"network was no dearer than an exact check in 3D (cost per configuration: {', '.join(said)}): that network "
-        "answers “invalid” to "
-        f"every {' and '.join(invalid)} sample, so there its first round of sampling keeps no sample, and a query "
-        "whose straight edge from start to goal is blocked samples again, in rounds that Algorithm 1's auxiliary "
-        f"sampler checks exactly, as without prediction: our reading of those scenarios' {len(lost) - len(others)} "
-        "losses" + (f"; the other {len(others)} ({', '.join(others)}) it does not explain" if others else "") + "."
+        f" The `paper`-preset run of 2 December lost sampling time in {slower[2]} of {sum(slower)} cells.{dearer} In "
+        f"3D its network was no dearer than an exact check (cost per configuration: {', '.join(said)}). There it "
+        f"answers “invalid” to every {' and '.join(invalid)} sample, so its first round of sampling keeps no sample. "
+        "A query whose straight edge from start to goal is blocked then samples again, in rounds that Algorithm 1's "
+        f"auxiliary sampler checks exactly, as without prediction. That is our reading of those scenarios' "
+        f"{len(by_rounds)} losses.{left}"
     )
 
 
@@ -309,6 +328,21 @@ def worked_example(tables: Tables) -> str:
         f"{share}; {there} the network cut sampling by {cut * 100:.1f} %, so prediction saved "
         f"{slow[top] * 100:.1f} % × {cut:.3f} ≈ {slow[top] * cut * 100:.0f} % of the query, the most of any cell "
         f"(Table 3 measured {percent(total)} %)."
+    )
+
+
+def share_allows(tables: Tables) -> str:
+    """Reader r45f, item 1: what sampling's share of a query allows with python-fcl, one sentence for the answer:
+    prediction can save at most a cell's sampling share times the cut in its sampling time (share × cut), worked in
+    the cell where that product is largest (the findings' first bullet works its arithmetic)."""
+    shares, saved = stage_shares(tables, checker_scope.SLOW)
+    times = next(t for heading, t in tables[checker_scope.SLOW].items() if "Times behind Table 3" in heading)
+    top = max(range(len(saved)), key=saved.__getitem__)
+    cell = f"{NAMES.get(times['rows'][top][0], times['rows'][top][0])} {times['rows'][top][1]}"
+    return (
+        f"There, sampling took at most {percent(max(shares))} % of a mean query, so shortening it could save at most "
+        f"that share times its cut in sampling: {percent(saved[top])} % of a mean query in {cell}, the most of any "
+        "cell."
     )
 
 

@@ -85,13 +85,15 @@ def mlp(tables: Tables) -> str:
     rows = recorded.table("paper", "MLP accuracy", tables)
     blind = [recorded.ours(row["Unseen Acc"]) for row in rows.values()]
     always = [recorded.ours(row["Unseen always valid"]) for row in rows.values()]
-    return (
-        f"**The MLP (Table 2): the `paper` MLP is at chance, the `strong` one right "
-        f"{span(balanced(recorded.ALGORITHM_1))} % of the time.** On unseen workspaces' balanced samples (half of "
-        "them valid) the `paper` MLP is right "
+    papers = [recorded.ours(row["Unseen Acc"].split("/")[-1]) for row in rows.values()]
+    return (  # reader r45f, item 2: our rebuild of the paper's recipe, the paper's own numbers beside it
+        f"**The MLP (Table 2): our rebuild of the paper's MLP is at chance (the paper reports {span(papers)} %), the "
+        f"`strong` one right {span(balanced(recorded.ALGORITHM_1))} % of the time.** On unseen workspaces' balanced "
+        "samples (half of them valid) our `paper`-preset MLP is right "
         f"{span(balanced('paper'))} % of the time, where a coin flip is right 50 %; the `strong` MLP of Figure 1 "
         f"{span(balanced(recorded.ALGORITHM_1))} %. On our validity-blind samples (drawn regardless of validity, as "
-        "the paper's planning runs draw them; which kind its unseen test used is unstated, chapter 03), the `paper` "
+        "the paper's planning runs draw them; which kind its unseen test used is unstated, "
+        "[chapter 03](../notebooks/03_mlp_decision_boundaries.ipynb)), the `paper` "
         f"MLP is right {span(blind)} %, answering “valid” to every sample {span(always)} %."
     )
 
