@@ -195,6 +195,13 @@ def _chapter_02_contracts(nb, found: str) -> list[str]:
         problems.append("02: section 6 does not print the three median Jacobian norms")
     elif float(norms.group(3)) >= min(float(norms.group(1)), float(norms.group(2))):
         problems.append(f"02: λ = 0.961's median Jacobian norm is not the smallest: {norms.group(0)}")
+    least = re.findall(  # reader r45b: section 6 says it plainly, "names λ = 0.961 by all four" (it once hedged)
+        r"(?:the smallest median \|\|J\|\| / \|\|z\|\||the smallest mean Jacobian norm|the smallest move of z at \d+ "
+        r"flips|the fewest decoded cells changed at \d+ flips): (λ = [\d.e-]+)",
+        found.split("least sensitive in this run: ", 1)[-1][:800],
+    )
+    if any(name != "λ = 0.961" for name in least):  # every measure the line names (the chapter prints four)
+        problems.append(f"02: section 6 says λ = 0.961 is the least sensitive by all four measures; the line: {least}")
     if "memorized. Near perfect on its training grids" in found:  # full size: "all three reproduce the seen column"
         problems += [f"02: {row[0]} scores {row[1]}% on its training grids" for row in _section_5(nb) if row[1] < 98]
     return problems
