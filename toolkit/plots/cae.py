@@ -1,17 +1,16 @@
 """Figures of the contractive autoencoder (paper §III-A, Eq. 1; notebook 02): every function returns a Figure.
 
 - :func:`training_curves` — the loss of Eq. (1) per epoch, one line per model;
-- :func:`reconstructions` — input, decoded grid and the wrongly decoded cells of
-  2D workspaces, each titled with its reconstruction accuracy next to "all free";
-- :func:`accuracy_vs_all_free` — every workspace's reconstruction accuracy against
-  the accuracy of answering "all free" (Table 1, one point per workspace);
-- :func:`contraction` — what the contractive penalty does: the encoder Jacobian's
-  norm, and how far ``z`` and the decoded grid move when a few cells are flipped
-  (the latent codes themselves: :mod:`toolkit.plots.latent`).
+- :func:`reconstructions` — input, decoded grid and the wrongly decoded cells of 2D workspaces, each titled with its
+  reconstruction accuracy next to "all free";
+- :func:`accuracy_vs_all_free` — every workspace's reconstruction accuracy against the accuracy of answering
+  "all free" (Table 1, one point per workspace);
+- :func:`contraction` — what the contractive penalty does: the encoder Jacobian's norm, and how far ``z`` and the
+  decoded grid move when a few cells are flipped (the latent codes themselves: :mod:`toolkit.plots.latent`).
 
-Grids hold -1 (free) and +1 (occupied), as :meth:`toolkit.geometry.workspace.Workspace.occupancy`
-returns them; a decoded cell counts as occupied where the decoder's output is positive,
-as in :func:`toolkit.learning.metrics.reconstruction_accuracy`. Nothing here calls ``show()``.
+Grids hold -1 (free) and +1 (occupied), as :meth:`toolkit.geometry.workspace.Workspace.occupancy` returns them; a
+decoded cell counts as occupied where the decoder's output is positive, as in
+:func:`toolkit.learning.metrics.reconstruction_accuracy`. Nothing here calls ``show()``.
 """
 
 from __future__ import annotations
@@ -22,6 +21,7 @@ from typing import Any
 import numpy as np
 from matplotlib import colormaps
 from matplotlib.figure import Figure
+from matplotlib.legend_handler import HandlerTuple
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch
 from matplotlib.ticker import FuncFormatter, LogLocator, NullLocator
@@ -102,17 +102,15 @@ def reconstructions(
     missed cell (input occupied, decoded free) or an invented one; given ``flipped (W, nx, ny)``, the cells flipped
     in a perturbed input, those are a kind of their own (flip ignored, flip copied) and the rest "other wrong".
     A legend above the first row names the kinds (review r27b: under the last, it lay a screen below the first), in
-    the figure's first subfigure; the rows are the others.
-    Each row's title gives the reconstruction accuracy next to the share of free cells,
-    the accuracy of a CAE that ignores its input and answers "all free". Given ``flipped``, both are of the *clean*
-    grid, the input with its flips undone (review r29b: scored against the noisy input, a decoder that ignored
-    every flip, a perfect denoise, read as 30 cells wrong).
+    the figure's first subfigure; the rows are the others. Each row's title gives the reconstruction accuracy next to
+    the share of free cells, the accuracy of a CAE that ignores its input and answers "all free". Given ``flipped``,
+    both are of the *clean* grid, the input with its flips undone (review r29b: scored against the noisy input, a
+    decoder that ignored every flip, a perfect denoise, read as 30 cells wrong).
     """
     grids, decoded = np.asarray(grids), np.asarray(decoded)
     if grids.ndim != 3 or decoded.shape != grids.shape or len(names) != len(grids):
         raise ValueError(
-            f"need grids and decoded of one shape (W, nx, ny) and W names; got {grids.shape}, "
-            f"{decoded.shape}, {len(names)} names"
+            f"need grids, decoded of one shape (W, nx, ny), W names; got {grids.shape}, {decoded.shape}, {len(names)}"
         )
     if flipped is not None and np.shape(flipped) != grids.shape:
         raise ValueError(f"flipped has shape {np.shape(flipped)}, the grids {grids.shape}")
@@ -136,8 +134,9 @@ def reconstructions(
         draw_wrong_cells(axes[2], grid, kinds, cell=72 * 0.62 * fig.get_figwidth() / max(grid.shape))
         all_free = np.mean(target < 0)
         row.suptitle(f"{name}: {acc:.1%} {right} (all free: {all_free:.1%})", fontsize=10)
-        said.append(f"{name}: {acc:.1%} {right} against {all_free:.1%} for answering all free; {wrong}")
-        parts.append(grid_part(name, said[-1], grid, out, None if flipped is None else flipped[k]))
+        scored = f"{acc:.1%} {right} against {all_free:.1%} for answering all free; {wrong}"
+        said.append(f"{name}: {scored}")  # reader r45b: the part has its name as title, not again ("seen 0: seen 0:")
+        parts.append(grid_part(name, scored, grid, out, None if flipped is None else flipped[k]))
     handles, labels = legend_handles(list(drawn))  # "missed cell", not "block": mostly single cells (r29b)
     handles.append(Patch(facecolor=colormaps[GREYS_CMAP](1.0), alpha=FADED, edgecolor=COLORS["ink"], linewidth=0.5))
     labels.append("occupied in the input (faded)")  # reader r31b: a seen grid's panel, all grey, read as empty
@@ -156,23 +155,27 @@ LAYERS = 10  # slices of a large group drawn in turns with the other large group
 MEAN_SIZE = 300  # the first group's mean marker (points squared); each later group's is smaller, drawn over it
 
 
-def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
+def accuracy_vs_all_free(
+    groups: dict[str, tuple[np.ndarray, np.ndarray]], *, series: tuple[int, ...] | None = None
+) -> Figure:
     """Reconstruction accuracy (y) against the share of free cells (x), one point per workspace, per named group.
 
-    ``groups[name] = (all_free (W,), accuracy (W,))``. Points above the diagonal beat a
-    CAE that answers "all free"; on it, the CAE has learned nothing about that workspace. A small group (a few dozen
+    ``groups[name] = (all_free (W,), accuracy (W,))``. Points above the diagonal beat a CAE that answers "all free";
+    on it, the CAE has learned nothing about that workspace. A small group (a few dozen
     workspaces) has larger, filled markers and is drawn on top, the first over the next: it stays visible over
     hundreds of points. Large groups are hollow markers of their own shapes, drawn in turns, a slice of each at a time
     (:data:`LAYERS`), so that where their clouds overlap every group shows (review r14c: filled squares and triangles
     buried each other). Each group's mean is a large hollow marker behind every point (review r27b: over them, it hid
     the grid at its centre), each later one smaller and on top of the earlier: means that coincide show as nested
-    shapes.
+    shapes. ``series[k]``: group ``k``'s :func:`~toolkit.plots.palette.series_style` (by default ``k``), so that a page
+    keeps one code across figures (reader r45b: blue circles meant two things in two figures).
     """
+    series = tuple(range(len(groups))) if series is None else tuple(series)  # (len(groups),)
     fig = Figure(figsize=(6, 5.2), layout="constrained")
     ax = fig.subplots()
     said = []
     for k, (name, (all_free, accuracy)) in enumerate(groups.items()):
-        style = series_style(k)
+        style = series_style(series[k])
         all_free, accuracy = np.asarray(all_free), np.asarray(accuracy)
         above = int(np.sum(accuracy > all_free))
         few = len(accuracy) <= FEW
@@ -196,49 +199,50 @@ def accuracy_vs_all_free(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Fi
                 zorder=3 + len(groups) - k if few else 2 + (j * len(groups) + k) / (layers * len(groups)),
                 gid=name,
             )
-        _draw_mean(ax, name, (np.mean(all_free), np.mean(accuracy)), k, len(groups))
+        _draw_mean(ax, name, (np.mean(all_free), np.mean(accuracy)), k, len(groups), series[k])
         said.append(
             f"{name}: {len(accuracy)} workspaces, mean accuracy {np.mean(accuracy):.1%} against {np.mean(all_free):.1%}"
             f" for all free, {above} of them above the diagonal"
         )
     low = min(min(np.min(f), np.min(a)) for f, a in groups.values())
     ax.plot([low, 1], [low, 1], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal)')
-    _drop_lines(ax, groups)
+    _drop_lines(ax, groups, series)
     ax.set_xlabel('share of free cells = accuracy of answering "all free"')
     ax.set_ylabel("reconstruction accuracy")
     ax.set_title("Above the diagonal: better than all free", fontsize=10)
-    handles, labels = ax.get_legend_handles_labels()
-    mean = Line2D([], [], marker="o", linestyle="", markersize=13, fillstyle="none", color=COLORS["reference"], mew=1.3)
-    mean_said = "large hollow mark in the group's shape, its thin lines to the axes: the group's mean"
-    handles, labels = [*handles, mean], [*labels, mean_said]  # r29b: not in
-    fig.legend(handles, labels, loc="outside lower center", fontsize=9, frameon=False)  # the title; below: on no point
+    _key(fig, ax, series)
     text = "Reconstruction accuracy against the accuracy of answering all free, one point per workspace. "
     return describe(fig, text + "; ".join(said) + ".")
 
 
-def _drop_lines(ax, groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> None:
+def _key(fig: Figure, ax, series: tuple[int, ...]) -> None:
+    """The scatter's legend below it (the title above; below, on no point), the means one entry: a hollow mark of each
+    group's shape and colour side by side (reader r45b: a circle alone read as one group's mean)."""
+    handles, labels = ax.get_legend_handles_labels()
+    hollow: dict[str, Any] = dict(linestyle="", markersize=11, fillstyle="none", mew=1.3)
+    mean = tuple(Line2D([], [], **{k: series_style(s)[k] for k in ("marker", "color")}, **hollow) for s in series)
+    mean_said = "large hollow mark in the group's shape, its thin lines to the axes: the group's mean"
+    handles, labels = [*handles, mean], [*labels, mean_said]  # r29b: not in
+    key: dict[str, Any] = dict(loc="outside lower center", fontsize=9, frameon=False)
+    fig.legend(handles, labels, handler_map={tuple: HandlerTuple(None)}, **key)
+
+
+def _drop_lines(ax, groups: dict[str, tuple[np.ndarray, np.ndarray]], series: tuple[int, ...]) -> None:
     """Thin lines from each group's mean to both axes, in its colour, under every point (reader r33b: a hollow mean
     over a row of points at 1.00, or on a point, was hard to find; the lines lead the eye to it and read it off)."""
     (x_low, x_high), (y_low, y_high) = ax.get_xlim(), ax.get_ylim()
     for k, (name, (all_free, accuracy)) in enumerate(groups.items()):
         x, y = float(np.mean(all_free)), float(np.mean(accuracy))
-        ax.plot(
-            [x_low, x, x],
-            [y, y, y_low],
-            color=series_style(k)["color"],
-            linestyle=(0, (4, 2)),
-            linewidth=1.2,
-            zorder=0.5,
-            gid=f"{name}: mean lines",
-        )
+        style = dict(color=series_style(series[k])["color"], linestyle=(0, (4, 2)), linewidth=1.2, zorder=0.5)
+        ax.plot([x_low, x, x], [y, y, y_low], gid=f"{name}: mean lines", **style)
     ax.set_xlim(x_low, x_high)
     ax.set_ylim(y_low, y_high)
 
 
-def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int) -> None:
+def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int, s: int) -> None:
     """Group ``k`` of ``n``'s mean, a large hollow marker of its style behind every cloud (points zorder 2 and up),
-    each later group's smaller and on top of the earlier: two means at one spot both show, and every point too."""
-    style = series_style(k)
+    each later group's smaller and on top of the earlier, in series ``s``'s style: two means at one spot both show."""
+    style = series_style(s)
     ax.scatter(
         *mean,
         s=MEAN_SIZE * (1 - 0.6 * k / max(n - 1, 1)),
@@ -275,10 +279,9 @@ def contraction(
 ) -> Figure:
     """Two (or more) CAEs side by side: how strongly the encoder reacts to its input.
 
-    For each named model: ``jacobian_norms (W,)``, the Frobenius norm of dz/dx at each
-    workspace; ``latent_shift (F, T)``, ``||z' - z|| / ||z||`` after flipping
-    ``flips[f]`` random cells, in ``T`` trials; ``decoded_change (F, T)``, how many
-    decoded cells change sign then, anywhere in the grid. Lines are the means over trials. The
+    For each named model: ``jacobian_norms (W,)``, the Frobenius norm of dz/dx at each workspace; ``latent_shift (F,
+    T)``, ``||z' - z|| / ||z||`` after flipping ``flips[f]`` random cells, in ``T`` trials; ``decoded_change (F, T)``,
+    how many decoded cells change sign then, anywhere in the grid. Lines are the means over trials. The
     dotted line of the last panel marks as many changed cells as flipped ones (review r29b: not "a copy machine",
     the counts say how many cells changed, not which): a curve below it left at least the difference of the flips
     unchanged, one above it changed at least the difference of cells that were not flipped.

@@ -47,7 +47,8 @@ def verdict_figure(
     in the title, numbered as the arrays are: "platform touches block 11 (desk)" (review r30a), or "square overlaps
     block 0 by 0.2" with a 2D link's part inside the block filled light (review r31a); a valid one's title
     gives its clearance where the checker proves one, a lower bound on the gap ("valid: at least 0.15 clear of every
-    block and wall (a lower bound)", reader r42a: read as the gap itself), the gap itself for the point robot.
+    block and the region's boundary (a lower bound)", reader r42a: read as the gap itself; reader r45a: "wall" named
+    the office's blocks too), the gap itself for the point robot.
     ``columns`` panels a row (all of them by default; reader r41a: three panels a row were too small to read the
     first check by), the key in a row's empty place or under the panels."""
     robot, workspace = checker.robot, getattr(checker, "workspace", None)
@@ -137,8 +138,8 @@ def _valid_title(checker: CollisionChecker, q: np.ndarray) -> str:
     if gap <= 0:
         return "valid"
     if is_point_robot(checker.robot) and gap < cap:
-        return f"valid: {gap:.2g} clear of the\nnearest block or wall"
-    return f"valid: at least {gap:.2g} clear of every\nblock and wall (a lower bound)"
+        return f"valid: {gap:.2g} clear of the nearest\nblock or the region's boundary"
+    return f"valid: at least {gap:.2g} clear of every\nblock and the region's boundary\n(a lower bound)"
 
 
 def _outline_touching(
@@ -212,7 +213,9 @@ def _zoom_on_small_fills(ax, fills, robot: BoxRobot, q: np.ndarray, plane: tuple
         pad=3,
         bbox={"facecolor": COLORS["free"], "edgecolor": "none", "pad": 1},
     )
-    ax.indicate_inset_zoom(inset, edgecolor=COLORS["ink"])
+    marker = ax.indicate_inset_zoom(inset, edgecolor=COLORS["ink"], linewidth=1.2, alpha=1)
+    marker.set_zorder(7)  # reader r45a: its connectors ran under the robot, unseen; now over it, under the inset
+    inset.set_zorder(8)
     ax.zoomed = True
 
 

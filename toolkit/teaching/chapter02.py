@@ -340,6 +340,9 @@ def folded(summary: str, figures: list[Figure]) -> str:
     return f"<details><summary>{summary}</summary>\n" + "\n".join(shown) + "\n</details>"
 
 
+GREY_SAID = f"grey: the other panel's grids, on top where {FEW} or fewer"  # reader r45b: the panels said only "grey"
+
+
 def latent_map(
     name: str, cae: CAE, trained_on: torch.Tensor, new: torch.Tensor, shares: tuple[float, float] | None = None
 ) -> tuple[float, Figure]:
@@ -361,6 +364,6 @@ def latent_map(
         highlight="training grids" if len(trained_on) <= FEW else None,
         xlabel=f"PC 1 ({share[0]:.0%} of variance)",
         ylabel=f"PC 2 ({share[1]:.0%})",
-        title=f"Codes of {name}; PC 1 vs share occupied: r = {r:+.2f}",
+        title=f"Codes of {name}; PC 1 vs share occupied: r = {r:+.2f}\n{GREY_SAID}",
     )
     return r, figure
