@@ -394,7 +394,7 @@ def test_cspace_slice_equals_the_separating_axis_reference(clutter):
     np.testing.assert_allclose(np.ravel(star.get_data()), q[[5, 6]])
     assert star.get_color() == robot_drawing.VALID_COLOR
     assert len(_patches(fig.axes[1], "link")) == robot.n_links
-    assert ax.get_title().split("\n")[1] == "the other DoF fixed at the star's"  # review r31a: not four lines
+    assert ax.get_title().split("\n")[1] == "the other DoF at the star's values"  # review r31a: not four lines
     (star_at,) = [part for part in parts_of(fig) if part.name == "the star's configuration"]  # the values: its table
     assert [tuple(row) for row in star_at.rows] == [
         (name, f"{q[k]:.3g}", "yes" if k in (5, 6) else "no") for k, name in enumerate(robot.dof_names)
@@ -480,7 +480,8 @@ def test_verdict_figure_titles_each_panel_with_the_checkers_verdict_and_marks_wh
     bounds = exact.clearances(Q, cap=1.0)  # (200,)
     clear = Q[np.argmax(bounds)]
     title = verdict.verdict_figure(exact, clear[None]).axes[0].get_title()
-    assert title == f"valid: at least {bounds.max():.2g} clear of every\nblock and wall (a lower bound)"
+    said = f"valid: at least {bounds.max():.2g} clear of every\nblock and the region's boundary\n(a lower bound)"
+    assert title == said
     assert left.get_xlim() == right.get_xlim() and left.get_ylim() == right.get_ylim()  # review r27a: one window
     assert not _patches(left, "touching link") and not _patches(left, "touched block")
     pairs = contact.touching(robot, clutter, hit)
@@ -503,7 +504,7 @@ def test_a_valid_panel_says_the_gap_its_checker_proves(square_world):
     gap = exact.clearances(Q[:1], cap=1.0)[0]
     left, right = verdict.verdict_figure(exact, Q).axes
     assert gap == pytest.approx(0.25)  # reader r43a: the point robot's square never turns, its bound is its gap
-    assert left.get_title() == "valid: 0.25 clear of the\nnearest block or wall"
+    assert left.get_title() == "valid: 0.25 clear of the nearest\nblock or the region's boundary"
     assert right.get_title() == "in collision:\nsquare overlaps block 0 by 0.15"  # the point robot's link, by name
 
 

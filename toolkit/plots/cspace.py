@@ -333,7 +333,7 @@ def cspace_slice(
     star["path_effects"] = [Stroke(linewidth=4, foreground=COLORS["free"]), Normal()]
     ax.plot(q[joints[0]], q[joints[1]], linestyle="none", gid="q", **star)
     ax.set_title(  # the fixed values are the description's table: four-line titles were the page's hardest (r31a)
-        f"{robot.name}: {1 - valid.mean():.0%} in collision (dark)\nthe other DoF fixed at the star's", fontsize=9
+        f"{robot.name}: {1 - valid.mean():.0%} in collision (dark)\nthe other DoF at the star's values", fontsize=9
     )
     outlined, dashed = _robot_panel(fig, grid[0, 1], checker, q, q_valid, view, margin) if view else (0, 0)
     fig.tight_layout()
