@@ -8,7 +8,7 @@ from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots import answer, query_ratios
 from toolkit.plots.alt import alt_text
 from toolkit.plots.answer import answer_ratios
-from toolkit.teaching import chapter04, chapter04_figures, checker_scope, costs, findings
+from toolkit.teaching import chapter04, chapter04_figures, checker_scope, costs, findings, recorded
 from toolkit.teaching.chapter04_figures import SERIES
 
 
@@ -118,6 +118,10 @@ def test_cost_table_splits_the_cells_where_both_statistics_cost_time():
     # reader r41d, 7: the cell beyond the noise band that the table leaves out is named under it, with why
     assert set(costs.left_out()) == {"3DC-9 OB"} and costs.left_out()["3DC-9 OB"] < 1
     assert "Left out: 3DC-9 OB (ratio of mean times 0.72), beyond the noise band by the median query" in table
+    shares = costs.sampling_shares(recorded.ALGORITHM_1)  # reader r45d, item 1: the top's "a small part" in numbers
+    assert len(shares) == 16 and 0 < min(shares) < max(shares) < 0.2
+    assert f"sampling took {100 * min(shares):.1f}–{100 * max(shares):.0f} % of the mean query in each of" in table
+    assert "sampling took 0.3–18 % of the mean query in each of the run's 16 cells" in table  # the record's numbers
 
 
 def test_after_share_is_the_part_of_the_extra_time_after_sampling():
