@@ -840,7 +840,8 @@ STATUS = re.compile(  # findings.claim_status: the paper's claim from the record
 )
 ANSWER_NO = "**No.** With an accurate network"  # chapter04.answer's first words (reader r40d: two plain sentences)
 FAST_BULLET = re.compile(  # chapter04.answer: the median query with each checker, the paper's count (reader r44d, 1)
-    r"\*\*(?:No|Rarely|In part)\.\*\* With an accurate network inside the paper's Algorithm 1, the median query with "
+    r"\*\*(?:No|Rarely|In part)\.\*\* With an accurate network inside the paper's Algorithm 1, by the median of each "
+    r"query's own time ratio \(with ÷ without prediction\), "
     r"prediction was, against our fast exact checker, faster in (?P<fast>none|\d+) of (?P<total>\d+) scenario–sampler "
     r"cells(?: \(\d+ beyond the noise band\))?, tied in (?P<fast_ties>\d+) and slower in (?P<fast_costs>\d+)"
     r"(?: \((?P<fast_beyond>\d+) beyond the noise band\))?; against python-fcl, faster in (?P<slow>none|\d+) of \d+"

@@ -376,7 +376,7 @@ def papers_longer_sentence() -> str:
     if band == {TIES}:
         return (
             f"{said}: each within 10 %, a tie by the rule this chapter and `docs/results.md` count with, though the "
-            "paper's text calls 3DO's bridge test \"a slow-down (8%)\": the rule reads the paper's cells and ours "
+            "paper's text says of 3DO \"a slow-down for BT (8%)\": the rule reads the paper's cells and ours "
             "alike."
         )
     return f"{said}: by the 10 % rule this chapter counts with, {', '.join(sorted(band))}."
