@@ -126,7 +126,7 @@ def test_cost_table_splits_the_cells_where_both_statistics_cost_time():
     assert table.count("\n| 3D") == len(cells) and f"in 3 of these {len(cells)} cells (the other: 3DO OB)." in table
     # reader r41d, 7: the cell beyond the noise band that the table leaves out is named under it, with why
     assert set(costs.left_out()) == {"3DC-9 OB"} and costs.left_out()["3DC-9 OB"] < 1
-    assert "Left out: 3DC-9 OB (ratio of mean times 0.72), beyond the noise band by the median query" in table
+    assert "Left out: 3DC-9 OB (ratio of mean times 0.72), beyond the noise band by the median own ratio" in table
     shares = costs.sampling_shares(recorded.ALGORITHM_1)  # reader r45d, item 1: the top's "a small part" in numbers
     assert len(shares) == 16 and 0 < min(shares) < max(shares) < 0.2
     assert f"sampling took {100 * min(shares):.1f}–{100 * max(shares):.0f} % of the mean query in each of" in table

@@ -133,7 +133,7 @@ def cost_table(tables: Tables | None = None) -> str:
     skipped = left_out(tables)
     named = ", ".join(f"{name} (ratio of mean times {mean:.2f})" for name, mean in skipped.items())
     gone = (
-        f" Left out: {named}, beyond the noise band by the median query but with no extra mean time to split."
+        f" Left out: {named}, beyond the noise band by the median own ratio but with no extra mean time to split."
         if skipped
         else ""
     )
@@ -164,7 +164,7 @@ def split_sentence(tables: Tables | None = None) -> str:
     else:
         rest = "the rest came after sampling, which the record does not break down"
     return (
-        f"In the {len(cells)} recorded cells where the median query cost time beyond the noise band and the mean "
+        f"In the {len(cells)} recorded cells where the median own ratio cost time beyond the noise band and the mean "
         f"time grew too (section 6's last table), slower sampling explains {span} of the extra mean time; {rest}."
     )
 
