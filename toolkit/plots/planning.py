@@ -357,7 +357,7 @@ def roadmap_steps(
     return describe(fig, text, [_step_part(step, k) for step, k in zip(steps, at)])
 
 
-def _step_part(step: PlanStep, number: int) -> Part:
+def _step_part(step: PlanStep, number: int = 0) -> Part:
     """One step of Algorithm 1 (one panel): in words, and its path's nodes in order with where they lie; named once
     (reader r45d: the words repeated the name's "Round 1, candidate")."""
     rows = tuple(
@@ -365,7 +365,8 @@ def _step_part(step: PlanStep, number: int) -> Part:
         for k, n in enumerate(step.path)
     )
     columns = ("path node", "x", "y", "node") if rows else ()
-    return Part(f"Step {number}, {step.stage}", step_in_words(step).split(": ", 1)[1], columns, rows)
+    name = f"Step {number}, {step.stage}" if number else f"Round {step.round}, {step.stage}"
+    return Part(name, step_in_words(step).split(": ", 1)[1], columns, rows)
 
 
 def _node_state(step: PlanStep, n: int) -> str:
