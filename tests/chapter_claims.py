@@ -558,7 +558,7 @@ def chapter_04(nb) -> list[str]:
         problems.append(f"04: the prose says the network is the cheaper check against python-fcl: {fcl}")
     problems += _eager_counts(found) + _recorded_verdicts(nb, found) + _paper_claim(nb, found) + _page_width(nb, found)
     problems += _recorded_sampling() + _slow_checker(nb) + figures_shown(nb, FIGURES_04, "04") + _dear_cells(nb)
-    problems += _call_cost_runs(nb)
+    problems += _call_cost_runs(nb) + _dagger_said(nb)
     if not re.search(r"This run took \d+ s from the first cell to this one, at a load average of", " ".join(texts(nb))):
         problems.append("04: the run's time is not printed with its load")
     return problems
@@ -574,6 +574,19 @@ def _call_cost_runs(nb) -> list[str]:
     moves = max(costs_) / min(costs_) > 1 + findings.TIE
     said = "The first ratio moves from run to run" in prose(nb)
     return [] if said == moves else [f"04: section 4 on the recorded runs' 3DC-7 costs; the record: {record}"]
+
+
+DAGGER_SAID = ("no clear evidence (†)", f"{findings.ACROSS} marks no clear evidence")  # a † verdict's reason
+
+
+def _dagger_said(nb) -> list[str]:
+    """Reader r45d: the page promises that the line under a table marked † names its reason; a code cell whose table
+    marks a verdict † (``"†<br>"``, :func:`toolkit.teaching.findings.planning_table`) says why, in the same cell."""
+    return [
+        f"04: a table marks a verdict † without its reason: {said[:80]}"
+        for said in texts(nb)
+        if f"{findings.ACROSS}<br>" in said and not any(words in said for words in DAGGER_SAID)
+    ]
 
 
 FIGURES_04 = (  # the figures chapter 04's prose promises, by the call that draws each (review r24a: one was missing)

@@ -1623,3 +1623,12 @@ def test_chapter_05_holds_section_6s_why_to_the_records_costs():
         "05: the answer's costs do not make the network dearer than a compiled check, cheaper than python-fcl: "
         "('0.5', '6.0')"
     ]
+
+
+def test_chapter_04_a_dagger_in_a_table_comes_with_its_reason():
+    """Reader r45d: section 3's table marked "costs time†" while the line under it gave no reason."""
+    table = "| 2DS | BS | costs time†<br>(median 1.20; middle half 0.60–1.44) | 5 / 6 | 4 |"
+    cell = {"cell_type": "code", "outputs": [{"output_type": "display_data", "data": {"text/markdown": table}}]}
+    assert chapter_claims._dagger_said({"cells": [cell]}) != []
+    cell["outputs"][0]["data"]["text/markdown"] += "\n\n† marks no clear evidence: its middle half reaches across"
+    assert chapter_claims._dagger_said({"cells": [cell]}) == []
