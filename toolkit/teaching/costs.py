@@ -119,7 +119,7 @@ def cost_table(tables: Tables | None = None) -> str:
     in how many the larger part of the extra mean time came after sampling."""
     cells = dear_cells(tables)
     rows = [
-        "| cell | median ratio | sampling, ms | after sampling, ms | share of the extra from sampling |",
+        "| cell | median own ratio | sampling, ms | after sampling, ms | share of the extra from sampling |",
         "| --- | ---: | ---: | ---: | ---: |",
     ]
     for c in cells:
