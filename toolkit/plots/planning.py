@@ -178,6 +178,9 @@ def merged(points: np.ndarray, within: float) -> tuple[np.ndarray, list[int]]:
     return np.array(shown).reshape(-1, 2), counts
 
 
+RING = dict(s=70, marker="o", facecolors="none", edgecolors=COLORS["invalid"], linewidths=2.0)  # no checker's mark
+
+
 def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) -> Figure:
     """Algorithm 1, lines 2-3: the attempts ``S (N, 2)``, the ones a checker accepts (``accepted (N,)`` bool: S'),
     and among those the ones the exact checker rejects (the dangerous mistakes: rings in the invalid colour);
@@ -190,11 +193,7 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
         # no checker's marker (chapter 04's crosses are our fast checker): dashes rejected, rings the dangerous ones
         (~accepted, dict(marker="_", s=60, linewidths=2.0, color=COLORS["rejected"]), "rejected (dashes)"),
         (accepted & truly_valid, dict(s=16, marker="o", color=COLORS["valid"]), "S' (accepted, dots)"),
-        (
-            accepted & ~truly_valid,
-            dict(s=70, marker="o", facecolors="none", edgecolors=COLORS["invalid"], linewidths=2.0),
-            "S', truly in collision (rings)",
-        ),
+        (accepted & ~truly_valid, RING | dict(path_effects=halo(2.0)), "S', truly in collision (rings)"),
     ]
     within = OVERLAP * float(np.linalg.norm(exact.robot.upper - exact.robot.lower))
     for mask, style, label in ((m, st, la) for m, st, la in groups if m.any()):  # reader r33d: no empty legend entry
