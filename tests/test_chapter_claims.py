@@ -232,6 +232,9 @@ def slow_unsaid(facts: checker_scope.SlowChecker) -> list[str]:
 SLOW_UNSAID = slow_unsaid(checker_scope.slow_checker())
 
 
+ACROSS_SAID = f"\n\n{findings.ACROSS} marks no clear evidence: {findings.SAID[findings.ACROSS].split(': ')[1]}."
+
+
 def chapter_04() -> dict:
     """A chapter 04 whose tables carry the verdicts their numbers give."""
     planning = {
@@ -243,7 +246,7 @@ def chapter_04() -> dict:
     nb = executed(
         (
             "MD:" + chapter04.answer(),  # the answer in two sentences, one statistic (reader r40d)
-            "MD:" + findings.planning_table(planning),
+            "MD:" + findings.planning_table(planning) + ACROSS_SAID,  # section 3: its † said under it (reader r45d)
             "MD:" + chapter04.full_answer(),  # ... in full, as section 6 folds it
             "MD:" + chapter04.mark_line(),  # beside the answer figure: the page's one mark and its noise bands
             "MD:" + chapter04.by_means(),  # section 6, beside the means figure: the counts by means
