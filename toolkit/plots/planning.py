@@ -32,7 +32,7 @@ PATH_STYLES = {  # by stage: colour, line style (candidate dashed, one a repair 
     "repair": (COLORS["candidate"], ":"),
     "path": (COLORS["path"], "-"),
 }
-REPAIR_COLOR = COLORS["removed"]  # what the exact checker rejected: removed by a repair (drawn as X)
+REPAIR_COLOR = COLORS["removed"]  # what the exact checker rejected: removed by a repair (a node drawn as a ring)
 
 
 def cspace_validity(exact: CollisionChecker, pixels: int = 300) -> tuple[np.ndarray, tuple[float, float, float, float]]:
@@ -183,7 +183,7 @@ RING = dict(s=70, marker="o", facecolors="none", edgecolors=COLORS["invalid"], l
 
 def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) -> Figure:
     """Algorithm 1, lines 2-3: the attempts ``S (N, 2)``, the ones a checker accepts (``accepted (N,)`` bool: S'),
-    and among those the ones the exact checker rejects (the dangerous mistakes: rings in the invalid colour);
+    and among those the ones the exact checker rejects (the dangerous mistakes: :data:`RING`, as a removed node);
     markers on one another are drawn once (:func:`merged`) with their count, "(2)" (r32d: "2×" read as a cross more)."""
     truly_valid = exact.are_valid(S)
     fig = Figure(figsize=(4.6, 5.4), layout="constrained")
@@ -224,7 +224,7 @@ EDGE_WORDS = "edge: predicted free, not yet checked"  # reader r31d: the thin ed
 
 def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) -> None:
     """One planner step: edges, nodes (hollow: not yet confirmed exactly), start and goal, the candidate path,
-    and what a repair removes (thick, and X at removed nodes); a legend names them."""
+    and what a repair removes (thick, and a ring at removed nodes); a legend names them."""
     _draw_cspace(ax, exact)
     P = step.nodes  # (V, 2)
     removed_edge = np.zeros(len(step.edges), dtype=bool)
@@ -257,14 +257,12 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) 
             path_effects=outline,
         )
     _removed_edges(ax, exact, P[step.edges[removed_edge]])
-    ax.scatter(
+    ax.scatter(  # a ring: what truly collides, as in sample_sets (reader r45d, item 1: a cross is a checker's mark)
         *P[step.removed_nodes].T,
-        s=70,
-        marker="X",
-        color=REPAIR_COLOR,
+        **RING,
         zorder=5,
         label="node removed by a repair" if len(step.removed_nodes) else None,  # review r29d: none removed, none named
-        path_effects=halo(0.0),
+        path_effects=halo(2.0),
     )
     for node, marker, size, name in ((START, "s", 90, "start"), (GOAL, "*", 320, "goal")):  # a star's ink is thin
         ax.scatter(
