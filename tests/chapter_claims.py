@@ -605,7 +605,7 @@ def chapter_04(nb) -> list[str]:
         problems.append(f"04: the prose says the network is the cheaper check against python-fcl: {fcl}")
     problems += _eager_counts(found) + _recorded_verdicts(nb, found) + _paper_claim(nb, found) + _page_width(nb, found)
     problems += _recorded_sampling() + _slow_checker(nb) + figures_shown(nb, FIGURES_04, "04") + _dear_cells(nb)
-    problems += _call_cost_runs(nb)
+    problems += _call_cost_runs(nb) + _dagger_said(nb)
     if not re.search(r"This run took \d+ s from the first cell to this one, at a load average of", " ".join(texts(nb))):
         problems.append("04: the run's time is not printed with its load")
     return problems
@@ -621,6 +621,19 @@ def _call_cost_runs(nb) -> list[str]:
     moves = max(costs_) / min(costs_) > 1 + findings.TIE
     said = "The first ratio moves from run to run" in prose(nb)
     return [] if said == moves else [f"04: section 4 on the recorded runs' 3DC-7 costs; the record: {record}"]
+
+
+DAGGER_SAID = ("no clear evidence (†)", f"{findings.ACROSS} marks no clear evidence")  # a † verdict's reason
+
+
+def _dagger_said(nb) -> list[str]:
+    """Reader r45d: the page promises that the line under a table marked † names its reason; a code cell whose table
+    marks a verdict † (``"†<br>"``, :func:`toolkit.teaching.findings.planning_table`) says why, in the same cell."""
+    return [
+        f"04: a table marks a verdict † without its reason: {said[:80]}"
+        for said in texts(nb)
+        if f"{findings.ACROSS}<br>" in said and not any(words in said for words in DAGGER_SAID)
+    ]
 
 
 FIGURES_04 = (  # the figures chapter 04's prose promises, by the call that draws each (review r24a: one was missing)
@@ -887,7 +900,8 @@ STATUS = re.compile(  # findings.claim_status: the paper's claim from the record
 )
 ANSWER_NO = "**No.** With an accurate network"  # chapter04.answer's first words (reader r40d: two plain sentences)
 FAST_BULLET = re.compile(  # chapter04.answer: the median query with each checker, the paper's count (reader r44d, 1)
-    r"\*\*(?:No|Rarely|In part)\.\*\* With an accurate network inside the paper's Algorithm 1, the median query with "
+    r"\*\*(?:No|Rarely|In part)\.\*\* With an accurate network inside the paper's Algorithm 1, by the median of each "
+    r"query's own time ratio \(with ÷ without prediction\), "
     r"prediction was, against our fast exact checker, faster in (?P<fast>none|\d+) of (?P<total>\d+) scenario–sampler "
     r"cells(?: \(\d+ beyond the noise band\))?, tied in (?P<fast_ties>\d+) and slower in (?P<fast_costs>\d+)"
     r"(?: \((?P<fast_beyond>\d+) beyond the noise band\))?; against python-fcl, faster in (?P<slow>none|\d+) of \d+"

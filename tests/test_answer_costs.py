@@ -8,7 +8,7 @@ from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots import answer, query_ratios
 from toolkit.plots.alt import alt_text
 from toolkit.plots.answer import answer_ratios
-from toolkit.teaching import chapter04, chapter04_figures, checker_scope, costs, findings
+from toolkit.teaching import chapter04, chapter04_figures, checker_scope, costs, findings, recorded
 from toolkit.teaching.chapter04_figures import SERIES
 
 
@@ -52,16 +52,25 @@ def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_th
     hatched = answer_ratios(rows, tie=findings.TIE, means=means, names=SERIES, floor=(0.84, 1.24))
     top = hatched.axes[0]
     assert [p.get_hatch() for p in top.patches].count(query_ratios.NOISE_HATCH) == 2  # below and above the tie band
-    assert hatched.legends[0].get_texts()[0].get_text() == "noise band (means), 0.84–1.24"
-    assert "hatched round the tie band, noise band (means), 0.84–1.24: twice as far from 1 as timing" in alt_text(
-        hatched
+    # reader r45d, item 4: the band hatched over the paper's diamonds too, so the legend says whose it is
+    assert (
+        hatched.legends[0].get_texts()[0].get_text() == "noise band of our ratios of means (not the paper's), 0.84–1.24"
+    )
+    assert (
+        "hatched round the tie band, noise band of our ratios of means (not the paper's), 0.84–1.24: twice as far"
+        in (alt_text(hatched))
     )
     both = answer_ratios(  # reader r36d: the lower panel draws the median's band too
         rows, tie=findings.TIE, means=means, names=SERIES, floor=(0.84, 1.24), median_floor=(0.82, 1.18)
     )
     assert [p.get_hatch() for p in both.axes[1].patches].count(query_ratios.NOISE_HATCH) == 2
-    assert both.legends[1].get_texts()[0].get_text() == "noise band (medians), 0.82–1.18"
-    assert "Hatched round the tie band below, noise band (medians), 0.82–1.18" in alt_text(both)
+    # reader r45d, item 3: one name for the statistic, never "(medians)", the name of a ratio of medians' band
+    assert both.legends[1].get_texts()[0].get_text() == "noise band of each query's own ratio, 0.82–1.18"
+    assert "Hatched round the tie band below, noise band of each query's own ratio, 0.82–1.18" in alt_text(both)
+    assert "medians)" not in alt_text(both) + " ".join(t.get_text() for g in both.legends for t in g.get_texts())
+    assert [ax.get_title() for ax in both.axes][
+        1
+    ] == "Ours, each query's own ratio: its median (hollow), whiskers its middle half"
     said = alt_text(fig)
     assert "Above, means, Table 3's statistic: the paper's diamonds beside our two series' means, 48 points" in said
     assert "Below, our medians of each query's own ratio, hollow" in said and "32 points, 3 of them at or below" in said
@@ -117,7 +126,11 @@ def test_cost_table_splits_the_cells_where_both_statistics_cost_time():
     assert table.count("\n| 3D") == len(cells) and f"in 3 of these {len(cells)} cells (the other: 3DO OB)." in table
     # reader r41d, 7: the cell beyond the noise band that the table leaves out is named under it, with why
     assert set(costs.left_out()) == {"3DC-9 OB"} and costs.left_out()["3DC-9 OB"] < 1
-    assert "Left out: 3DC-9 OB (ratio of mean times 0.72), beyond the noise band by the median query" in table
+    assert "Left out: 3DC-9 OB (ratio of mean times 0.72), beyond the noise band by the median own ratio" in table
+    shares = costs.sampling_shares(recorded.ALGORITHM_1)  # reader r45d, item 1: the top's "a small part" in numbers
+    assert len(shares) == 16 and 0 < min(shares) < max(shares) < 0.2
+    assert f"sampling took {100 * min(shares):.1f}–{100 * max(shares):.0f} % of the mean query in each of" in table
+    assert "sampling took 0.3–18 % of the mean query in each of the run's 16 cells" in table  # the record's numbers
 
 
 def test_after_share_is_the_part_of_the_extra_time_after_sampling():

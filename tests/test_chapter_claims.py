@@ -232,6 +232,9 @@ def slow_unsaid(facts: checker_scope.SlowChecker) -> list[str]:
 SLOW_UNSAID = slow_unsaid(checker_scope.slow_checker())
 
 
+ACROSS_SAID = f"\n\n{findings.ACROSS} marks no clear evidence: {findings.SAID[findings.ACROSS].split(': ')[1]}."
+
+
 def chapter_04() -> dict:
     """A chapter 04 whose tables carry the verdicts their numbers give."""
     planning = {
@@ -243,7 +246,7 @@ def chapter_04() -> dict:
     nb = executed(
         (
             "MD:" + chapter04.answer(),  # the answer in two sentences, one statistic (reader r40d)
-            "MD:" + findings.planning_table(planning),
+            "MD:" + findings.planning_table(planning) + ACROSS_SAID,  # section 3: its † said under it (reader r45d)
             "MD:" + chapter04.full_answer(),  # ... in full, as section 6 folds it
             "MD:" + chapter04.mark_line(),  # beside the answer figure: the page's one mark and its noise bands
             "MD:" + chapter04.by_means(),  # section 6, beside the means figure: the counts by means
@@ -1640,3 +1643,12 @@ def test_chapter_05_holds_section_6s_why_to_the_records_costs():
         "05: the answer's costs do not make the network dearer than a compiled check, cheaper than python-fcl: "
         "('0.5', '6.0')"
     ]
+
+
+def test_chapter_04_a_dagger_in_a_table_comes_with_its_reason():
+    """Reader r45d: section 3's table marked "costs time†" while the line under it gave no reason."""
+    table = "| 2DS | BS | costs time†<br>(median 1.20; middle half 0.60–1.44) | 5 / 6 | 4 |"
+    cell = {"cell_type": "code", "outputs": [{"output_type": "display_data", "data": {"text/markdown": table}}]}
+    assert chapter_claims._dagger_said({"cells": [cell]}) != []
+    cell["outputs"][0]["data"]["text/markdown"] += "\n\n† marks no clear evidence: its middle half reaches across"
+    assert chapter_claims._dagger_said({"cells": [cell]}) == []

@@ -94,9 +94,17 @@ def test_sample_sets_marks_accepted_samples_that_are_truly_in_collision(exact, r
     for drawn, mask in ((rejected, ~accepted), (kept, accepted & truth), (wrong, accepted & ~truth)):
         np.testing.assert_array_equal(drawn.get_offsets(), planning.merged(S[mask], within)[0])
         assert sum(planning.merged(S[mask], within)[1]) == mask.sum()
-    assert len(S[accepted & ~truth]) > 0 and is_color(wrong.get_facecolors(), planning.REPAIR_COLOR).all()
+    assert len(S[accepted & ~truth]) > 0 and is_color(wrong.get_edgecolors(), planning.REPAIR_COLOR).all()
+    assert len(wrong.get_facecolors()) == 0  # rings: reader r45d, item 1: no cross, chapter 04's fast checker's marker
     fig = ax.figure
-    assert f"S', truly in collision: {(accepted & ~truth).sum()}" in [t.get_text() for t in fig.legends[0].texts]
+    said = [t.get_text() for t in fig.legends[0].texts]
+    assert f"S', truly in collision (rings): {(accepted & ~truth).sum()}" in said
+    assert (
+        f"rejected (dashes): {(~accepted).sum()}" in said and f"S' (accepted, dots): {(accepted & truth).sum()}" in said
+    )
+    handles = fig.legends[0].legend_handles  # no marker of chapter 04's checkers (diamond, cross, hexagon, plus)
+    shapes = [h.get_paths()[0].vertices.shape for h in handles]
+    assert len(set(shapes)) == 2 and all(len(h.get_paths()) == 1 for h in handles)  # the dash, and circles
     renderer = FigureCanvasAgg(fig).get_renderer()
     fig.draw(renderer)
     assert not fig.legends[0].get_window_extent(renderer).overlaps(ax.get_window_extent(renderer))  # hides no sample
@@ -436,7 +444,15 @@ def test_segment_table_gives_the_bars_segments_in_ms():
 
 def test_roadmap_steps_titles_number_each_step_and_leave_the_ring_to_the_legend(exact):
     """Reader r40d: "round 1, repair: ... where the removed edge enters a C-obstacle" ran over its neighbours' titles;
-    now "2 repair" and its counts on a second line, the ring named in the legend only."""
+    now "step 2: repair" and its counts on a second line, the ring named in the legend only. Reader r45d: a panel is
+    named by its step in the trace, and its description names it once."""
     fig = planning.roadmap_steps(exact, [a_repair_step()] * 3, columns=2)
     titles = [ax.get_title() for ax in fig.axes if ax.axison]
-    assert titles == [f"{k} repair\n5 nodes, 5 edges, round 2" for k in (1, 2, 3)]
+    assert titles == [f"step {k}: repair\n5 nodes, 5 edges, round 2" for k in (1, 2, 3)]
+    fig = planning.roadmap_steps(exact, [a_repair_step()] * 2, columns=2, of=6, at=[3, 6])
+    titles = [ax.get_title() for ax in fig.axes if ax.axison]
+    assert titles == [f"step {k}: repair\n5 nodes, 5 edges, round 2" for k in (3, 6)]
+    assert " Step 3: Round 2, repair: a roadmap" in alt.alt_text(fig)
+    parts = alt.parts_of(fig)
+    assert [p.name for p in parts] == ["Step 3, repair", "Step 6, repair"]
+    assert all(p.text.startswith("a roadmap of 5 nodes") for p in parts)  # named once, not "Round 2, repair: ..."

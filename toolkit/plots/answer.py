@@ -41,7 +41,7 @@ SPREAD = 0.36  # the distance between two series' points at one sampler, centred
 WIDEST = 0.6  # the most a sampler's series span, first to last
 SIZE = 6.0  # points, a marker: series at 0.3 stand apart (about 6.3 points at the page's width)
 MEANS_TITLE = "Means, Table 3's statistic: the paper's diamonds beside ours"
-MEDIANS_TITLE = "Ours by the median query (hollow), whiskers: the queries' middle half"
+MEDIANS_TITLE = "Ours, each query's own ratio: its median (hollow), whiskers its middle half"  # r45d: one name
 
 
 def answer_ratios(
@@ -90,7 +90,7 @@ def answer_ratios(
         ax.set_ylabel("time with / without (log axis)")
         points = [v for row in shown.values() for v in row.values()]
         counted.append((len(points), int(np.sum(np.array(points) <= 1 - tie))))
-        parts += [dataclasses.replace(p, name=f"{_title(ax, means)}: {p.name}") for p in found]
+        parts += [dataclasses.replace(p, name=f"{_title(ax, means)}{p.name}") for p in found]
     for ax in axes:  # one scale for both panels: a point above reads against one below
         ax.set_ylim(min(*every, 1 - tie) / 1.25, max(*every, 1 + tie) * 1.25)
         log_ticks(ax)
@@ -127,13 +127,13 @@ def _median_words(band: tuple[float, float] | None, below: bool) -> str:
     return f" Hatched round the tie band{' below' if below else ''}, {said}." if band else ""
 
 
-NOISE_WORDS = (  # common46: one rule for every band, said the same way for each statistic
-    "noise band (means), {low:.2f}–{high:.2f}: twice as far from 1 as timing one computation twice moved a ratio of "
-    "means, both ways"
+NOISE_WORDS = (  # common46: one rule for every band; reader r45d, item 4: drawn over the paper's diamonds too
+    "noise band of our ratios of means (not the paper's), {low:.2f}–{high:.2f}: twice as far from 1 as timing one "
+    "computation twice moved a ratio of means, both ways"
 )
-MEDIAN_NOISE = (
-    "noise band (medians), {low:.2f}–{high:.2f}: twice as far from 1 as timing one computation twice moved each "
-    "query's own ratio, both ways"
+MEDIAN_NOISE = (  # reader r45d, item 3: "(medians)" read as the band of a ratio of medians, 0.40-1.60
+    "noise band of each query's own ratio, {low:.2f}–{high:.2f}: twice as far from 1 as timing one computation twice "
+    "moved each query's own ratio, both ways"
 )
 
 
@@ -145,8 +145,9 @@ def _floor(ax, floor: tuple[float, float], tie: float, words: str = NOISE_WORDS)
 
 
 def _title(ax, means) -> str:
-    """A panel's name in its figure's description: its title, or "ratios" where the figure has one panel."""
-    return ax.get_title() if means else "ratios"
+    """A panel's name in its figure's description: its title, or none where the figure has one panel (reader r45d:
+    "ratios: ours, ...: crosses" said the series' name twice over)."""
+    return f"{ax.get_title()}: " if means else ""
 
 
 def _text(

@@ -32,7 +32,7 @@ PATH_STYLES = {  # by stage: colour, line style (candidate dashed, one a repair 
     "repair": (COLORS["candidate"], ":"),
     "path": (COLORS["path"], "-"),
 }
-REPAIR_COLOR = COLORS["removed"]  # what the exact checker rejected: removed by a repair (drawn as X)
+REPAIR_COLOR = COLORS["removed"]  # what the exact checker rejected: removed by a repair (a node drawn as a ring)
 
 
 def cspace_validity(exact: CollisionChecker, pixels: int = 300) -> tuple[np.ndarray, tuple[float, float, float, float]]:
@@ -51,19 +51,10 @@ def _draw_cspace(ax, exact: CollisionChecker) -> None:
     valid, extent = cspace_validity(exact)
     ax.imshow(~valid, origin="lower", extent=extent, cmap=C_OBSTACLE, vmin=0, vmax=1, interpolation="nearest")
     ws = checker_workspace(exact)
+    box: dict[str, Any] = dict(fill=False, edgecolor=COLORS["occupied"], linewidth=0.8)
     for lo, hi in ws.boxes:
-        ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor=COLORS["occupied"], linewidth=0.8))
-    ax.add_patch(  # the bounds of the robot's centre
-        Rectangle(
-            extent[::2],
-            extent[1] - extent[0],
-            extent[3] - extent[2],
-            fill=False,
-            edgecolor=COLORS["occupied"],
-            linewidth=0.8,
-            linestyle=":",
-        )
-    )
+        ax.add_patch(Rectangle(lo, *(hi - lo), **box))
+    ax.add_patch(Rectangle(extent[::2], extent[1] - extent[0], extent[3] - extent[2], linestyle=":", **box))  # bounds
     ax.set_xlim(ws.lower[0], ws.upper[0])
     ax.set_ylim(ws.lower[1], ws.upper[1])
     ax.set_aspect("equal")
@@ -187,22 +178,22 @@ def merged(points: np.ndarray, within: float) -> tuple[np.ndarray, list[int]]:
     return np.array(shown).reshape(-1, 2), counts
 
 
+RING = dict(s=70, marker="o", facecolors="none", edgecolors=COLORS["invalid"], linewidths=2.0)  # no checker's mark
+
+
 def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) -> Figure:
     """Algorithm 1, lines 2-3: the attempts ``S (N, 2)``, the ones a checker accepts (``accepted (N,)`` bool: S'),
-    and among those the ones the exact checker rejects (the dangerous mistakes: large X in the invalid colour);
+    and among those the ones the exact checker rejects (the dangerous mistakes: :data:`RING`, as a removed node);
     markers on one another are drawn once (:func:`merged`) with their count, "(2)" (r32d: "2×" read as a cross more)."""
     truly_valid = exact.are_valid(S)
     fig = Figure(figsize=(4.6, 5.4), layout="constrained")
     ax = fig.subplots()
     _draw_cspace(ax, exact)
-    groups: list[tuple[np.ndarray, dict[str, Any], str]] = [  # (mask, scatter style, label)
-        (~accepted, dict(marker="x", s=50, linewidths=1.8, color=COLORS["rejected"]), "rejected"),  # r33d: larger
-        (accepted & truly_valid, dict(s=16, marker="o", color=COLORS["valid"]), "S' (accepted)"),
-        (
-            accepted & ~truly_valid,
-            dict(s=40, marker="X", color=COLORS["invalid"], path_effects=halo(0.0)),
-            "S', truly in collision",
-        ),
+    groups: list[tuple[np.ndarray, dict[str, Any], str]] = [  # (mask, scatter style, label); reader r45d, item 1:
+        # no checker's marker (chapter 04's crosses are our fast checker): dashes rejected, rings the dangerous ones
+        (~accepted, dict(marker="_", s=60, linewidths=2.0, color=COLORS["rejected"]), "rejected (dashes)"),
+        (accepted & truly_valid, dict(s=16, marker="o", color=COLORS["valid"]), "S' (accepted, dots)"),
+        (accepted & ~truly_valid, RING | dict(path_effects=halo(2.0)), "S', truly in collision (rings)"),
     ]
     within = OVERLAP * float(np.linalg.norm(exact.robot.upper - exact.robot.lower))
     for mask, style, label in ((m, st, la) for m, st, la in groups if m.any()):  # reader r33d: no empty legend entry
@@ -224,7 +215,7 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
             )
     fig.legend(fontsize=9, loc="outside lower center", ncol=2, frameon=False)  # below: never over a sample
     ax.set_title(f"S: {len(S)} uniform attempts", fontsize=10)
-    counts = "; ".join(f"{label}: {mask.sum()} (marker {style['marker']})" for mask, style, label in groups)
+    counts = "; ".join(f"{label}: {mask.sum()}" for mask, _, label in groups)
     return describe(fig, f"{len(S)} uniform attempts S over the point robot's C-obstacles (grey). {counts}.")
 
 
@@ -233,7 +224,7 @@ EDGE_WORDS = "edge: predicted free, not yet checked"  # reader r31d: the thin ed
 
 def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) -> None:
     """One planner step: edges, nodes (hollow: not yet confirmed exactly), start and goal, the candidate path,
-    and what a repair removes (thick, and X at removed nodes); a legend names them."""
+    and what a repair removes (thick, and a ring at removed nodes); a legend names them."""
     _draw_cspace(ax, exact)
     P = step.nodes  # (V, 2)
     removed_edge = np.zeros(len(step.edges), dtype=bool)
@@ -266,14 +257,12 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) 
             path_effects=outline,
         )
     _removed_edges(ax, exact, P[step.edges[removed_edge]])
-    ax.scatter(
+    ax.scatter(  # a ring: what truly collides, as in sample_sets (reader r45d, item 1: a cross is a checker's mark)
         *P[step.removed_nodes].T,
-        s=70,
-        marker="X",
-        color=REPAIR_COLOR,
+        **RING,
         zorder=5,
         label="node removed by a repair" if len(step.removed_nodes) else None,  # review r29d: none removed, none named
-        path_effects=halo(0.0),
+        path_effects=halo(2.0),
     )
     for node, marker, size, name in ((START, "s", 90, "start"), (GOAL, "*", 320, "goal")):  # a star's ink is thin
         ax.scatter(
@@ -287,7 +276,7 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) 
             clip_on=False,  # whole at the edge of the C-space, where start and goal often lie
         )
     _margin(ax)
-    head = f"{number} {step.stage}" if number else f"round {step.round}, {step.stage}:"  # r40d: the ring in the legend
+    head = f"step {number}: {step.stage}" if number else f"round {step.round}, {step.stage}:"  # r45d: the trace's step
     counts = f"{many(len(P), 'node')}, {many(len(step.edges), 'edge')}" + (f", round {step.round}" if number else "")
     ax.set_title(f"{head}\n{counts}", fontsize=10)
 
@@ -341,14 +330,18 @@ def step_in_words(step: PlanStep) -> str:
     return text + (f"; the exact checker rejected {' and '.join(removed)}, removed next" if removed else "") + "."
 
 
-def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int = 2, of: int = 0) -> Figure:
+def roadmap_steps(
+    exact: CollisionChecker, steps: list[PlanStep], columns: int = 2, of: int = 0, at: list[int] | None = None
+) -> Figure:
     """Several steps of Algorithm 1 side by side, the roadmap drawn at each (one panel per step; ``columns`` a row,
-    as wide as the page together); ``of``: the trace's steps in all (reader r37d: the title says "3 of 6 steps")."""
+    as wide as the page together); ``of``: the trace's steps in all (reader r37d: the title says "3 of 6 steps");
+    ``at``: each step's number in the trace, from 1 (reader r45d: a panel is named by its step; default 1, 2, ...)."""
+    at = at or list(range(1, len(steps) + 1))
     rows = -(-len(steps) // columns)
     below = 1.0 if len(steps) == rows * columns else 0.0  # r39d: no empty slot, so the legend's rows go below
     fig = Figure(figsize=(PAGE_WIDTH, PAGE_WIDTH / columns * 1.08 * rows + 0.4 + below), layout="constrained")
     axes = fig.subplots(rows, columns, squeeze=False).ravel()
-    for k, (ax, step) in enumerate(zip(axes, steps), start=1):
+    for ax, step, k in zip(axes, steps, at):
         _draw_roadmap(ax, exact, step, number=k)
     for ax in axes[len(steps) :]:
         ax.set_axis_off()  # an empty slot: the legend goes there
@@ -356,19 +349,21 @@ def roadmap_steps(exact: CollisionChecker, steps: list[PlanStep], columns: int =
     fig.suptitle(title, fontsize=11)  # reader r31d: one line; the legend names every mark
     _roadmap_legend(fig, axes, axes[len(steps)] if len(steps) < len(axes) else None)
     text = f"{title}, one panel per step, {len(steps)} steps." + "".join(  # review r28d: the repair's panel too
-        f" Panel {k}: {step_in_words(step)}" for k, step in enumerate(steps, start=1)
+        f" Step {k}: {step_in_words(step)}" for k, step in zip(at, steps)
     )
-    return describe(fig, text, [_step_part(step) for step in steps])
+    return describe(fig, text, [_step_part(step, k) for step, k in zip(steps, at)])
 
 
-def _step_part(step: PlanStep) -> Part:
-    """One step of Algorithm 1 (one panel): in words, and its path's nodes in order with where they lie."""
+def _step_part(step: PlanStep, number: int = 0) -> Part:
+    """One step of Algorithm 1 (one panel): in words, and its path's nodes in order with where they lie; named once
+    (reader r45d: the words repeated the name's "Round 1, candidate")."""
     rows = tuple(
         (str(k + 1), f"{step.nodes[n][0]:.3g}", f"{step.nodes[n][1]:.3g}", _node_state(step, n))
         for k, n in enumerate(step.path)
     )
     columns = ("path node", "x", "y", "node") if rows else ()
-    return Part(f"Round {step.round}, {step.stage}", step_in_words(step), columns, rows)
+    name = f"Step {number}, {step.stage}" if number else f"Round {step.round}, {step.stage}"
+    return Part(name, step_in_words(step).split(": ", 1)[1], columns, rows)
 
 
 def _node_state(step: PlanStep, n: int) -> str:

@@ -191,7 +191,8 @@ def answer(tables: Tables | None = None) -> str:
 
     slower = f" and slower in {slow[COSTS][0]}{beyond(slow[COSTS])}" if slow[COSTS][0] else " and never slower"
     return (
-        f"**{word}** With an accurate network inside the paper's Algorithm 1, the median query with prediction was, "
+        f"**{word}** With an accurate network inside the paper's Algorithm 1, by the median of each query's own time "
+        "ratio (with ÷ without prediction), prediction was, "
         f"against our fast exact checker, faster in {n(fast[SAVES][0])} of {total} scenario–sampler cells"
         f"{beyond(fast[SAVES])}, tied in {fast[TIES][0]} and slower in {fast[COSTS][0]}{beyond(fast[COSTS])}; "
         f"against python-fcl, faster in {n(slow[SAVES][0])} of {total}{beyond(slow[SAVES])}{slower}. "
@@ -265,15 +266,15 @@ def edge_line(tables: Tables | None = None) -> str:
     named += f"; the {'other' if many else 'third'} python-fcl saving{'s' * many}, {', '.join(other)}, " * bool(other)
     named += f"{'are cells' if many else 'is a cell'} Table 3 does not save" * bool(other)
     return (
-        f"**Take from it:** in the {len(saved)} cells where the paper's Table 3 saves time, our median query saved in "
-        f"{len(fast) or 'none'} with our fast checker and in {len(fcl) or 'none'} with python-fcl"
+        f"**Take from it:** in the {len(saved)} cells where the paper's Table 3 saves time, our median own ratio saved "
+        f"in {len(fast) or 'none'} with our fast checker and in {len(fcl) or 'none'} with python-fcl"
         + f" ({named})" * bool(fcl)
         + "."
     )
 
 
 def means_apart(tables: Tables | None = None) -> str:
-    """Of the pairs where the ratio of mean times saves, those where the median query did not save and did."""
+    """Of the pairs where the ratio of mean times saves, those where the median own ratio did not save and did."""
     cells: dict[bool, dict[str, list[str]]] = {False: {}, True: {}}
     for preset, who in ((recorded.ALGORITHM_1, "fast checker"), (checker_scope.SLOW, "python-fcl")):
         medians = costs.middle_halves(preset, tables)
@@ -290,7 +291,7 @@ def means_apart(tables: Tables | None = None) -> str:
         )
 
     total = sum(len(c) for group in cells.values() for c in group.values())
-    said = f"of the {total} pairs where a mean saved, the median query did not {named(cells[False])}"
+    said = f"of the {total} pairs where a mean saved, the median own ratio did not {named(cells[False])}"
     return f"{said} and did {named(cells[True])}"
 
 
@@ -348,7 +349,7 @@ def _ours_beyond(tables: Tables | None = None) -> str:
     runs = {who: costs.over_sampling(preset, tables) for preset, who in RUNS}
     count = sum(len(cells) for cells in runs.values())
     if not count:
-        return " Ours have no such saving, by means or by the median query."
+        return " Ours have no such saving, by means or by the median own ratio."
     named = "; ".join(
         f"{who}: " + ", ".join(f"{c} {100 * a:.0f} % against {100 * b:.0f} %" for c, a, b in cells)
         for who, cells in runs.items()
@@ -375,13 +376,13 @@ def _ours_beyond(tables: Tables | None = None) -> str:
         said += f" Inside the noise band of a ratio of means, so no evidence: {', '.join(noisy)}."
     if split[False]:
         said += (
-            f" In {len(split[False])} of them ({', '.join(split[False])}) the median query did not save: a few slow "
-            "queries moved the mean, not prediction."
+            f" In {len(split[False])} of them ({', '.join(split[False])}) the median own ratio did not save: a few "
+            "slow queries moved the mean, not prediction."
         )
     if split[True]:
         said += (
-            f" Where the median query saved too ({', '.join(split[True])}), another roadmap can explain it; that run "
-            "was not timed twice (`docs/results.md`)."
+            f" Where the median own ratio saved too ({', '.join(split[True])}), another roadmap can explain it; that "
+            "run was not timed twice (`docs/results.md`)."
         )
     return said
 

@@ -86,8 +86,8 @@ def _counted(verdicts: Counter) -> str:
         if verdicts[verdict] == total:
             return f"each query's total time was {words} for every sampler"
     return (
-        f"the median query's total time was shorter in {verdicts[SAVES] or 'none'} of the {total} scenario–sampler "
-        f"pairs, a tie in {verdicts[TIES]} and longer in {verdicts[COSTS]}"
+        f"by the median own ratio, total time was shorter in {verdicts[SAVES] or 'none'} of the {total} "
+        f"scenario–sampler pairs, a tie in {verdicts[TIES]} and longer in {verdicts[COSTS]}"
     )
 
 
@@ -376,7 +376,7 @@ def papers_longer_sentence() -> str:
     if band == {TIES}:
         return (
             f"{said}: each within 10 %, a tie by the rule this chapter and `docs/results.md` count with, though the "
-            "paper's text calls 3DO's bridge test \"a slow-down (8%)\": the rule reads the paper's cells and ours "
+            "paper's text says of 3DO \"a slow-down for BT (8%)\": the rule reads the paper's cells and ours "
             "alike."
         )
     return f"{said}: by the 10 % rule this chapter counts with, {', '.join(sorted(band))}."

@@ -107,15 +107,15 @@ def _mark(median: float, said: str, moved: bool, tie: float = TIE) -> str:
 
 
 SPEED_MOVED = (  # a planning sentence's verdict where the same exact check's cost moved between the modes (review r25a)
-    "no clear evidence (†): the connection stage took {ratio:.2f} times as long an edge point with prediction, so "
-    "its time holds more than the exact checks of points (the line under the tables says what)"
-)
+    "no clear evidence (†): with prediction the connection stage spent {ratio:.2f} times as long per edge point, "
+    "though each point's exact check is the same, so that stage does more than check points (the fold below says what)"
+)  # reader r45d: the reason in plain words
 
 
 def speed_moved(per_point: Mapping[str, float], tie: float = TIE) -> float | None:
     """The time per exact edge point with / without prediction, ``{"without": s, "with": s}``, where it lies outside
     the tie band (the stage's mix of work per point differs, :func:`per_point_sentence`), else ``None``."""
-    ratio = per_point["with"] / per_point["without"]
+    ratio = round(1e9 * per_point["with"]) / round(1e9 * per_point["without"])  # as printed (r45d: 271 / 313 = 0.87)
     return None if time_verdict(ratio, tie=tie) == TIES else ratio
 
 
@@ -193,10 +193,10 @@ def per_point_sentence(per_point: Mapping[str, float], tie: float = TIE) -> str:
         f"{1e9 * with_:,.0f} ns with it (each the median of the queries' own times per point, not the table's median "
         "time over its median count)"
     )
-    if time_verdict(with_ / without, tie=tie) == TIES:
+    if (moved := speed_moved(per_point, tie)) is None:
         return f"{said}: the same cost, as it should be, since the same exact checker checks both modes' edges."
     return (
-        f"{said}: {with_ / without:.2f} times as much with prediction. The modes ran in turns, so a steady difference "
+        f"{said}: {moved:.2f} times as much with prediction. The modes ran in turns, so a steady difference "
         "is not the machine's: the stage does more than check points (it finds each node's nearest neighbours and "
         "tries bridges between the roadmap's parts), and prediction changes the roadmap, so the mix of work per "
         "point checked differs between the modes; read the edge points, not this stage's time, for what it changed."
