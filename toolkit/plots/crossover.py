@@ -140,9 +140,10 @@ TICKS: dict[str, tuple[float, ...]] = {  # a panel's values to name, if not all 
 PLANNER_CALLS = (50, 400)  # the calls a network answers on a 3DC scene: a round's samples (the lazy PRM's 50 doubling
 # to |S| = plan_samples = 400, Algorithm 1's 400); reader r34g: not RRT-Connect's 8-56, which no network drives
 CALLS_NAME = "a round's samples"  # one name on the panel and in the legend (reader r34g, figure c)
-CALLS_LEGEND = f"dotted strip: {CALLS_NAME}, the calls a network answers (50–400)"
+CALLS_LEGEND = f"dotted strip: {CALLS_NAME} in 3DC, the calls a network answers (50–400)"
 CALLS_SAID = (
-    f"On the call-size panel a dotted strip marks {CALLS_NAME}, the calls a network answers: 50 to 400 configurations. "
+    f"On the call-size panel a dotted strip marks {CALLS_NAME} in 3DC, the calls a network answers: 50 to 400 "
+    "configurations. "
 )
 
 
