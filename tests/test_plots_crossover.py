@@ -251,7 +251,7 @@ def test_the_call_size_panel_marks_our_planners_calls():
     assert name.y0 >= ax.patches[0].get_window_extent().y1
     assert PAPER_LEGEND.startswith("plain grey strip") and "a dotted strip marks a round's samples" in alt_text(fig)
     low, high = PLANNER_CALLS
-    assert f"{CALLS_NAME}, the calls a network answers: {low} to {high} configurations" in alt_text(fig)
+    assert f"{CALLS_NAME} in 3DC, the calls a network answers: {low} to {high} configurations" in alt_text(fig)
     assert CALLS_NAME in CALLS_LEGEND and (low, high) == (50, 400)  # reader r34g: no RRT-Connect sizes, one name
     plain = crossover({"scenario": "2ds", "preset": "paper", "quick": False, "variables": {"batch": batch}})
     assert not plain.axes[0].patches and CALLS_NAME not in alt_text(plain)
