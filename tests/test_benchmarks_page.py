@@ -1003,12 +1003,20 @@ def test_the_cells_whose_mean_moved_more_than_sampling_could_move_it_are_named()
     own = {f"{checker_scope.NAMES[s]} {k}": r for s, row in recorded.query_ratios(FCL_ALIKE).items()
            for k, r in row.items() if r < 1 - own_edge()}  # fmt: skip
     assert list(own) == ["3DC-9 OB", "3DO BT"] and all(1 - r > fcl[c][0] + 0.05 for c, r in own.items())
+    # reader r46g, benchmarks 1: the own ratio and a share of a mean compared only roughly; 3DO BT's mean saving is
+    # about its sampling's (within 2 points), 3DC-9 OB's far beyond it but inside the means band
+    assert abs(fcl["3DO BT"][1] - fcl["3DO BT"][0]) < 0.02 and fcl["3DC-9 OB"][1] > 3 * fcl["3DC-9 OB"][0]
+    assert costs.inside(1 - fcl["3DC-9 OB"][1], band("means"))
     assert (
-        "- The two beyond the noise band saved more than sampling's share allows: cheaper sampling saved "
+        "- The two beyond the noise band: cheaper sampling saved "
         f"{100 * fcl['3DC-9 OB'][0]:.0f} % of the mean query in 3DC-9 OB and {100 * fcl['3DO BT'][0]:.0f} % in 3DO "
-        f"BT, where their own ratios say {100 * (1 - own['3DC-9 OB']):.0f} % and {100 * (1 - own['3DO BT']):.0f} %. "
-        "Beyond the noise band, the rest is not timing noise: it came after sampling, from another roadmap, as in the "
-        "compiled cells (the fold below). These are not the method's savings."
+        f"BT, and their own ratios say {100 * (1 - own['3DC-9 OB']):.0f} % and {100 * (1 - own['3DO BT']):.0f} % (a "
+        "median of each query's ratio, not a share of a mean, so the two compare only roughly). By means, 3DO BT's "
+        f"whole query saved {100 * recorded.improvements(FCL_ALIKE, '3do', 'total')['BT']:.0f} %, about what its "
+        "sampling saved: that much is the method's. "
+        f"3DC-9 OB's mean query saved {100 * fcl['3DC-9 OB'][1]:.0f} %, far more than its sampling's "
+        f"{100 * fcl['3DC-9 OB'][0]:.0f} %: the rest came after sampling, from another roadmap (the fold below), and "
+        "by means these runs cannot tell it from timing noise."
     ) in flat
 
 

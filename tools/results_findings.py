@@ -340,9 +340,10 @@ def share_allows(tables: Tables) -> str:
     top = max(range(len(saved)), key=saved.__getitem__)
     cell = f"{NAMES.get(times['rows'][top][0], times['rows'][top][0])} {times['rows'][top][1]}"
     return (
-        f"There, sampling took at most {percent(max(shares))} % of a mean query, so shortening it could save at most "
+        f"There, sampling took at most {percent(max(shares))} % of a mean query, so shortening it explains at most "
         f"that share times its cut in sampling: {percent(saved[top])} % of a mean query in {cell}, the most of any "
-        "cell."
+        "cell; by their own ratios both cells beyond the noise band saved more, and that rest came after sampling, "
+        "with another roadmap."
     )
 
 

@@ -171,7 +171,8 @@ def means_table() -> str:
 
 MORAL = (  # reader r41e, 05 lift 3: the answer's moral, at the end of its "Why." and (written) first in the Summary
     " **The moral:** prediction saves time only where a network answer is cheaper than an exact check *and* sampling "
-    "is a large share of a query; on 3DC-7 neither checker gave both."
+    "is a large share of a query; both are needed, and they are not enough: on 3DC-7, with python-fcl, the sampler "
+    "that cheaper sampling could have helped most (OB) still got slower."
 )
 HEADER = "| measured | " + " | ".join(SAMPLERS) + " |\n| --- |" + " --- |" * len(SAMPLERS)  # a time table's head
 
