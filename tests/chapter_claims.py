@@ -898,15 +898,16 @@ STATUS = re.compile(  # findings.claim_status: the paper's claim from the record
     r"(?:\([^)]*\) )?in "
     r"(none|\d+) of the (\d+) scenario–sampler pairs"
 )
-ANSWER_NO = "**No.** With an accurate network"  # chapter04.answer's first words (reader r40d: two plain sentences)
-FAST_BULLET = re.compile(  # chapter04.answer: the median query with each checker, the paper's count (reader r44d, 1)
-    r"\*\*(?:No|Rarely|In part)\.\*\* With an accurate network inside the paper's Algorithm 1, by the median of each "
-    r"query's own time ratio \(with ÷ without prediction\), "
-    r"prediction was, against our fast exact checker, faster in (?P<fast>none|\d+) of (?P<total>\d+) scenario–sampler "
-    r"cells(?: \(\d+ beyond the noise band\))?, tied in (?P<fast_ties>\d+) and slower in (?P<fast_costs>\d+)"
-    r"(?: \((?P<fast_beyond>\d+) beyond the noise band\))?; against python-fcl, faster in (?P<slow>none|\d+) of \d+"
-    r"(?: \(\d+ beyond the noise band\))?(?: and never slower| and slower in \d+ \(\d+ beyond the noise band\))\. "
-    r"The paper's Table 3, by mean times, saves 10 % or more in (?P<papers>\d+) of the \d+\."
+ANSWER_NO = "**No:** with an accurate network"  # chapter04.answer's first words (reader r46d: two short sentences)
+FAST_BULLET = re.compile(  # chapter04.answer: two sentences, then the counts in a table (r46d item 3), one-spaced
+    r"\*\*(?:No|Rarely|In part):\*\* with an accurate network inside the paper's Algorithm 1 and our fast checker, "
+    r"prediction made (?:no cell|\d+ of \d+) faster and (?:no|\d+ of \d+) slower; with python-fcl, (?:none|\d+ of \d+) "
+    r"faster, (?:none|\d+ of \d+) slower\. The paper's Table 3 reports (?P<papers>\d+) of \d+ faster\.\s"
+    r"\| (?P<total>\d+) scenario–sampler cells, by the median of each query's own time ratio \(with ÷ without\) "
+    r"\| faster \| tie \| slower \|\s\| --- \| --- \| --- \| --- \|\s"
+    r"\| our fast exact checker \| (?P<fast>none|\d+)(?: \(\d+ beyond the noise band\))? \| (?P<fast_ties>none|\d+) "
+    r"\| (?P<fast_costs>none|\d+)(?: \((?P<fast_beyond>\d+) beyond the noise band\))? \|\s"
+    r"\| python-fcl on both sides \(the fast checker's bands\) \| (?P<slow>none|\d+)"
 )
 MEANS_LINE = re.compile(  # chapter04.by_means, beside section 6's means figure (reader r40d: off the first screen)
     r"\*\*By mean times\*\*, the paper's statistic, prediction saved time in (?P<fast_means>none|\d+) cells with our "

@@ -516,7 +516,7 @@ def test_chapter_04_holds_the_answers_bullet_on_our_fast_checker_to_section_6():
     nb = chapter_04()
     first = nb["cells"][0]["outputs"][0]["data"]
     said = first["text/markdown"]
-    first["text/markdown"] = said.replace("checker, faster in none of 16", "checker, faster in 8 of 16")
+    first["text/markdown"] = said.replace("| our fast exact checker | none |", "| our fast exact checker | 8 |")
     assert problems(CH04, nb) == [
         f"04: the first code cell's bullet on our fast checker says [('8', '16', '7', '9', '5')]; section 6's: "
         f"{expected}"
@@ -530,7 +530,7 @@ def test_chapter_04_holds_the_answers_bullet_on_our_fast_checker_to_section_6():
     ]  # reader r44d, item 1: the answer's two sentences carry no count by means; section 6's line does
     nb = chapter_04()  # reader r36d: the costs are counted in the answer too, with those beyond the noise band
     first = nb["cells"][0]["outputs"][0]["data"]
-    first["text/markdown"] = first["text/markdown"].replace("slower in 9 (5 beyond", "slower in 5 (3 beyond", 1)
+    first["text/markdown"] = first["text/markdown"].replace("| 9 (5 beyond", "| 5 (3 beyond", 1)
     assert problems(CH04, nb) == [
         f"04: the first code cell's bullet on our fast checker says [('none', '16', '7', '5', '3')]; section "
         f"6's: {expected}"
@@ -561,7 +561,7 @@ def test_chapter_04_holds_the_answers_bullet_on_our_fast_checker_to_section_6():
     nb["cells"][0]["outputs"].pop(0)
     said = problems(CH04, nb)
     assert said[0] == f"04: the first code cell's bullet on our fast checker says []; section 6's: {expected}"
-    assert said[1].startswith("04: the answer on '**No.** With an accurate network'; the recorded runs: ")
+    assert said[1].startswith("04: the answer on '**No:** with an accurate network'; the recorded runs: ")
 
 
 def test_chapter_04_fails_prose_that_answers_the_papers_claim_otherwise_than_the_recorded_runs():
@@ -574,7 +574,7 @@ def test_chapter_04_fails_prose_that_answers_the_papers_claim_otherwise_than_the
     assert problems(CH04, nb) == [f"04: the prose says '{chapter_claims.PLAIN[other]}'; the recorded runs: {verdict}"]
     nb = chapter_04()
     first = nb["cells"][0]["outputs"][0]["data"]
-    first["text/markdown"] = first["text/markdown"].replace("**No.**", "**Rarely.**")
+    first["text/markdown"] = first["text/markdown"].replace("**No:**", "**Rarely:**")
     assert problems(CH04, nb) == [f"04: the answer on '{chapter_claims.ANSWER_NO}'; the recorded runs: {verdict}"]
 
 

@@ -5,6 +5,7 @@
 from __future__ import annotations
 
 import os
+from collections import Counter
 from collections.abc import Mapping
 
 import numpy as np
@@ -174,29 +175,33 @@ def other_line(records: Mapping[str, list[dict]]) -> str:
 
 
 def answer(tables: Tables | None = None) -> str:
-    """Chapter 04's answer from ``docs/results.md`` in two sentences a student can repeat (reader r44d, item 1): the
-    median query with each checker, counted by the one rule of every page ("9 (5 beyond the noise band)"), then the
-    paper's Table 3 in one clause. The counts by means are section 6's (:func:`by_means`)."""
+    """Chapter 04's answer from ``docs/results.md`` (readers r44d, r46d item 3): two short sentences, the median
+    query's faster and slower cells with each checker and the paper's Table 3 count, then a table with the ties and
+    the counts beyond the noise band. The counts by means are section 6's (:func:`by_means`)."""
     facts = checker_scope.slow_checker(tables)
-    papers = sum(time_verdict(1 - saved) == SAVES for saved in facts.papers_totals)
+    papers = Counter(time_verdict(1 - saved) for saved in facts.papers_totals)
     fast, slow = (costs.median_counts(preset, tables) for preset, _ in RUNS)
     total = len(facts.own)
-    word = "No." if not fast[SAVES][0] else "Rarely." if 4 * fast[SAVES][0] <= total else "In part."
+    word = "No" if not fast[SAVES][0] else "Rarely" if 4 * fast[SAVES][0] <= total else "In part"
 
-    def beyond(n: tuple[int, int]) -> str:  # (cells, of them inside the noise band)
-        return f" ({n[0] - n[1]} beyond the noise band)" * bool(n[0])
+    def n(cells: int, zero: str = "none", of: bool = False) -> str:
+        return f"{cells} of {total}" * of * bool(cells) or str(cells or zero)
 
-    def n(cells: int) -> str:
-        return str(cells or "none")
+    def cell(c: tuple[int, int]) -> str:  # (cells, of them inside the noise band)
+        return n(c[0]) + f" ({c[0] - c[1]} beyond the noise band)" * bool(c[0])
 
-    slower = f" and slower in {slow[COSTS][0]}{beyond(slow[COSTS])}" if slow[COSTS][0] else " and never slower"
+    rows = [
+        (name, [cell(c[SAVES]), n(c[TIES][0]), cell(c[COSTS])])
+        for name, c in (("our fast exact checker", fast), ("python-fcl on both sides (the fast checker's bands)", slow))
+    ]
+    rows.append(("the paper's Table 3 (mean times)", [n(papers[v]) for v in (SAVES, TIES, COSTS)]))
     return (
-        f"**{word}** With an accurate network inside the paper's Algorithm 1, by the median of each query's own time "
-        "ratio (with ÷ without prediction), prediction was, "
-        f"against our fast exact checker, faster in {n(fast[SAVES][0])} of {total} scenario–sampler cells"
-        f"{beyond(fast[SAVES])}, tied in {fast[TIES][0]} and slower in {fast[COSTS][0]}{beyond(fast[COSTS])}; "
-        f"against python-fcl, faster in {n(slow[SAVES][0])} of {total}{beyond(slow[SAVES])}{slower}. "
-        f"The paper's Table 3, by mean times, saves 10 % or more in {papers} of the {total}."
+        f"**{word}:** with an accurate network inside the paper's Algorithm 1 and our fast checker, prediction made "
+        f"{n(fast[SAVES][0], 'no', True)}{' cell' * (not fast[SAVES][0])} faster and {n(fast[COSTS][0], 'no', True)}"
+        f" slower; with python-fcl, {n(slow[SAVES][0], 'none', True)} faster, {n(slow[COSTS][0], 'none', True)} "
+        f"slower. The paper's Table 3 reports {papers[SAVES]} of {total} faster.\n\n"
+        f"| {total} scenario–sampler cells, by the median of each query's own time ratio (with ÷ without) | faster "
+        "| tie | slower |\n| --- | --- | --- | --- |\n" + "\n".join(f"| {name} | {' | '.join(c)} |" for name, c in rows)
     )
 
 
