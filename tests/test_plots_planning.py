@@ -431,6 +431,8 @@ def test_samplers_say_how_many_samples_lie_near_a_c_obstacle_or_a_wall():
     points = np.concatenate([path.vertices for path in dashed.get_paths()])  # (P, 2)
     outside = np.maximum(np.maximum((9.75, 4.75) - points, points - (20.25, 12.25)), 0.0)  # (P, 2) how far out
     np.testing.assert_allclose(np.linalg.norm(outside, axis=1), band, atol=0.15)  # within a pixel and a half
+    dots = [c for c in ax.collections if not isinstance(c, ContourSet)]  # reader r46d: the line above the dots
+    assert dots and dashed.get_zorder() > max(c.get_zorder() for c in dots)
 
 
 def test_segment_table_gives_the_bars_segments_in_ms():

@@ -125,7 +125,9 @@ def samplers(
     for ax, (name, Q) in zip(axes, samples.items()):
         _draw_cspace(ax, exact)
         if nearness and np.isfinite(field).all():
-            ax.contour(x, y, field, levels=[near], colors=COLORS["reference"], linestyles="--", linewidths=1.0)
+            ax.contour(
+                x, y, field, levels=[near], colors=COLORS["reference"], linestyles="--", linewidths=1.2, zorder=4
+            )
         ax.scatter(Q[:, 0], Q[:, 1], s=8, color=NODE_COLOR, zorder=3)
         count = f"{len(Q)} sample{'' if len(Q) == 1 else 's'}" + (f" of {attempts} attempts" if attempts else "")
         where = f"\nnear: {shares[name][0]:.0%} a C-obstacle, {shares[name][1]:.0%} a wall" if name in shares else ""
