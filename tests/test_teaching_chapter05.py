@@ -284,6 +284,7 @@ def test_closest_above_names_the_frame_nearest_the_threshold_that_gets_no_band()
     """Reader r29e: frame 47's dip to the dashed line, above it, read as a second frame below."""
     said = chapter05_runs.closest_above(np.array([0.9, 0.4975, 0.8, 0.5752, 0.7]), 0.57)
     assert said.startswith("The frame that comes nearest the threshold from above: frame 3, P(valid) 0.575 against")
+    assert said.endswith(": called valid, so no band marks it.")  # reader r46e, item 5: not "however near" 0.835
     assert chapter05_runs.closest_above(np.array([0.1, 0.2]), 0.5) == "Every frame lies below the threshold."
     # reader r31e: where that frame lies from the slider's first frame, the least clearance bound's
     near = chapter05_runs.closest_above(np.array([0.9, 0.4975, 0.8, 0.5752, 0.7]), 0.57, tightest=4)
