@@ -1,9 +1,5 @@
-"""What chapter 05 (3D scenes) prints: its answer and its closing tables, read from the record, and §5's counts.
-
-The chapter's prose states what a student can repeat; these helpers build the Markdown under its code cells, so that
-the page shows one call where it showed a screen of f-strings (reader r24b). Every figure is read from the record
-(:mod:`toolkit.teaching.recorded`, ``docs/results.md``) or from the arrays a cell has just computed.
-"""
+"""What chapter 05 (3D scenes) prints: its answer and its closing tables, read from the record (reader r24b: one call
+under a cell, not a screen of f-strings; :mod:`toolkit.teaching.recorded`, ``docs/results.md``)."""
 
 from __future__ import annotations
 
@@ -22,6 +18,7 @@ RESULTS = "[`docs/results.md`](../docs/results.md)"  # a link from the chapter (
 NOISE = "within noise"  # a ratio of ours inside its statistic's noise band (costs.floors: twice timing's reach)
 OWN = "median own ratio"  # the answer's rows: each query's time with / without, the median over the queries
 CHECKERS = ((COMPILED, "our compiled checker"), (FCL, "python-fcl on both sides"))  # the answer's two
+MEDIANS_ROW = "3DC-7, `strong` network, our compiled checker, Algorithm 1: ratio of the two medians"  # r46e
 TIE_WORDS = f'a ratio less than {TIE:.0%} from 1 reads "{TIES}"'  # the band, printed beside each time table
 
 
@@ -48,10 +45,11 @@ def _ratios(improvements: Mapping[str, float]) -> dict[str, float]:
     return {s: 1 - v for s, v in improvements.items()}
 
 
-def answer() -> str:
+def answer(threshold: float | None = None) -> str:
     """The chapter's answer from the record (reader r31e): did prediction shorten a 3DC-7 query by 10 % or more in
     Algorithm 1, with either checker, by either statistic; why not, in one sentence a student can repeat (r39e, lift
-    2); one row per checker under it, each query's own ratio (r39e, lift 1); the rest folded."""
+    2); one row per checker under it, each query's own ratio (r39e, lift 1); the rest folded. ``threshold``: this
+    notebook's model's, named in the folded list of trainings (reader r46e, lift 4)."""
     compiled = recorded.query_ratios(COMPILED)[SCENARIO]  # {sampler: median of each query's own ratio}
     fcl_total = recorded.query_ratios(FCL)[SCENARIO]
     fcl_sampling = recorded.improvements(FCL, SCENARIO, "sampling")  # means
@@ -75,13 +73,10 @@ def answer() -> str:
         "sampling got slower."
         + (MORAL if none_saved and cost > 1 else "")
         + "\n\n"
-        + total_table()
-        + "\n\n"
-        + share_table(fcl_total, fcl_sampling, shares)
-        + "\n\n"
-        + answer_map()
-        + "\n\n"
-        + _answer_numbers(means[FCL][best], best)
+        + "\n\n".join(
+            [total_table(), share_table(fcl_total, fcl_sampling, shares), answer_map(threshold)]
+            + [_answer_numbers(means[FCL][best], best)]
+        )
     )
 
 
@@ -110,19 +105,28 @@ def _moved(ratio: float) -> str:
     return f"{abs(ratio - 1) * 100:.0f} % {'slower' if ratio > 1 else 'faster'}"
 
 
-def answer_map() -> str:
+def answer_map(threshold: float | None = None) -> str:
     """A map beside the answer (reader r45e, 05 item 4): which training, which planner and which statistic the answer
-    uses, against the others the chapter shows."""
+    uses, against the others the chapter shows; the three trainings of `strong`, each with its threshold (this
+    notebook's ``threshold``, where given), folded under it (reader r46e, lift 4)."""
+    mine = "its threshold under §5's view" if threshold is None else f"threshold {threshold:.2f}"
     return (
         "Which of the chapter's runs the answer reads:\n\n"
         "| what | the answer uses | the chapter also shows |\n| --- | --- | --- |\n"
-        f"| training of `strong` | the timed one (threshold {recorded_threshold(COMPILED):.2f}) | §5's views: "
-        "this notebook's (its threshold under the view); the closing fold: a third "
-        f"(threshold {recorded_threshold('strong'):.2f}) |\n"
+        f"| training of `strong` | the timed one (threshold {recorded_threshold(COMPILED):.2f}) | two more trainings "
+        "of the same recipe (the fold below) |\n"
         "| planner | Algorithm 1 (planner `paper`) | §6–7: the lazy PRM's path; the closing fold: the lazy PRM "
         "timed |\n"
         f"| statistic | the verdict: the median of each query's own ratio; the limit in **Why**: mean times "
         "| the ratio of means (Table 3's: the sampling table, the folds); a ratio of two medians (the closing fold) |"
+        "\n\n<details><summary>The three trainings of `strong` in this chapter, each with its own weights and "
+        "threshold</summary>\n\n| training | threshold | where the chapter uses it |\n| --- | ---: | --- |\n"
+        f"| the timed one ({run_name(COMPILED).split(', threshold')[0]}) | {recorded_threshold(COMPILED):.2f} | the "
+        "answer, its accuracy row at the end |\n"
+        f"| this notebook's (`trained_models`, cached) | {mine.removeprefix('threshold ')} | §5's views, §6–7's "
+        "path, its accuracy row at the end |\n"
+        f"| a third ({run_name('strong').split(', threshold')[0]}) | {recorded_threshold('strong'):.2f} | the "
+        "closing fold: the lazy PRM timed |\n\n</details>"
     )
 
 
@@ -130,14 +134,7 @@ def total_table() -> str:
     """The evidence under the answer (readers r34e, r39e: one row per checker): the 3DC-7 total time with / without
     prediction in Algorithm 1, each query's own ratio's median; one inside the noise band adds :data:`NOISE`."""
     own = floors()["own"]
-    rows = [
-        _noise_row(
-            f"`strong` network, {name}: {OWN}",
-            recorded.query_ratios(who)[SCENARIO],
-            own,
-        )
-        for who, name in CHECKERS
-    ]
+    rows = [_noise_row(f"`strong` network, {n}: {OWN}", recorded.query_ratios(w)[SCENARIO], own) for w, n in CHECKERS]
     edge = f'; "{NOISE}": inside the noise band, {own[0]:.2f}–{own[1]:.2f}' if any(NOISE in r for r in rows) else ""
     return (
         f"Total time with / without prediction on 3DC-7, inside Algorithm 1 ({RESULTS}), each query's own ratio, the "
@@ -371,18 +368,17 @@ def _more(moved: float, longer: str = "") -> str:
         f"{'lie beyond their band' if lazy_beyond else 'are not all beyond their band'}; a ratio inside its band "
         f'reads "{NOISE}". Against the lazy PRM, the fastest exact planner a network can drive, with a third '
         f"training of `strong` ({run_name('strong')}; {TIE_WORDS}):\n\n"
-        + HEADER
-        + "\n"
-        + _noise_row("3DC-7, `strong` preset, medians, vs lazy PRM", lazy, medians)
-        + "\n"
-        + _noise_row("3DC-7, `paper` preset, medians, vs lazy PRM", recipe, medians)
-        + "\n"
-        + _noise_row("3DC-7, `paper` preset, Table 3's means, vs Algorithm 1", recipe_means, bands["means"])
-        + "\n"
-        + "| 3DC-7, `strong` network in Algorithm 1, ratio of the two medians | "  # r43e: nothing inside the band
-        + " | ".join(f"{NOISE if inside(r, medians) else time_verdict(r)} ({r:.2f})" for r in of_medians.values())
-        + " |\n\nThat last row is not a statistic of the answer at the top, and a ratio in it within noise is no "
-        "saving or cost."
+        + "\n".join(
+            [
+                HEADER,
+                _noise_row("3DC-7, `strong` preset, medians, vs lazy PRM", lazy, medians),
+                _noise_row("3DC-7, `paper` preset, medians, vs lazy PRM", recipe, medians),
+                _noise_row("3DC-7, `paper` preset, Table 3's means, vs Algorithm 1", recipe_means, bands["means"]),
+                _noise_row(MEDIANS_ROW, of_medians, medians),  # reader r46e, 05 item 3: the other rows' labels
+            ]
+        )
+        + "\n\nThat last row is not a statistic of the answer at the top, and a saving or cost in it within noise "
+        "is no evidence."
         + '\n\nOn 3DC-7 the `paper` preset\'s MLP answers "valid" to every sample, so Algorithm 1 skips the sample '
         "checks: that is not learning, and by means its savings lie within noise.\n\n</details>"
     )

@@ -91,7 +91,7 @@ def closest_above(probability: np.ndarray, threshold: float, tightest: int | Non
     apart = "" if tightest is None else _frames_from(frame, tightest)
     return (
         f"The frame that comes nearest the threshold from above: frame {frame}, P(valid) {probability[frame]:.3f} "
-        f"against {threshold:.3f}: called valid, so no band marks it, however near the dashed line it comes.{apart}"
+        f"against {threshold:.3f}: called valid, so no band marks it.{apart}"
     )
 
 
