@@ -279,11 +279,11 @@ def figure_markdown(text: str, kind: str = "total") -> str:
     described = alt.details_html(alt.details(fig)).strip()
     shown = f"![{html.escape(alt.alt_text(fig))}]({FIGURES[kind].name})\n\n{described}"
     floor = noise(parse(text))
-    said = (  # reader r39f, item 1: the band by its one name, in the table under the summary
+    said = (  # reader r39f, item 1: the band by its one name; r46f, item 3: its table under Figure 1
         f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule. The noise band of a ratio of means, "
-        f"{floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched, dotted edges; built as the table of bands at the top "
-        "says), sets a single cell of ours apart only beyond it. It is our machine's timing noise, not the paper's: "
-        "the paper's diamonds are drawn over it but not read against it." + KEY
+        f"{floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched, dotted edges; built as the table of bands under "
+        "Figure 1 says), sets a single cell of ours apart only beyond it. It is our machine's timing noise, not the "
+        "paper's: the paper's diamonds are drawn over it but not read against it." + KEY
         if kind == "total"
         else f"*{kind.capitalize()} time*, counted as in Figure 2. {sampling_takeaway(counts)} The hatched band is "
         "Figure 2's, built on whole queries' total times (the table “timed twice” holds total times only) and "

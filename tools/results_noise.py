@@ -114,7 +114,8 @@ def bands(tables: Tables) -> str:
     ]
     head = ["| band near 1 | from–to | how built | used in |", "| --- | --- | --- | --- |"]
     rule = (
-        "Every noise band is built one way: time one computation twice (Algorithm 1 without prediction, the table "
+        "*The table of bands*: every noise band is built one way: time one computation twice (Algorithm 1 without "
+        "prediction, the table "
         "“timed twice”), see how far timing alone moved the statistic from 1 on its larger side, and take "
         f"{NOISE_EDGE} times that, both ways, because a single repeat understates timing noise. A ratio of means or of "
         "medians moves further than each query's own ratio: it divides two sets of 100 queries timed apart, where a "
@@ -137,3 +138,16 @@ def bands(tables: Tables) -> str:
         "a ratio on an edge counts as beyond it."
     )
     return f"{said}\n\n{strict}{borrowed}"
+
+
+def costs_far(groups: dict, floor: tuple[float, float] | None) -> str:
+    """Reader r46f, item 6: the accurate network's costs against the lazy PRM read against the noise band of a ratio
+    of medians too, those inside it named; empty where no band is known."""
+    dearer = groups["strong"]["more time"]
+    near = [f"{name} {r:.2f}" for name, r in dearer if floor is not None and costs.inside(r, floor)]
+    if floor is None or not dearer:
+        return ""
+    return (
+        f" Of the {len(dearer)} that took more time, {len(dearer) - len(near)} lie beyond the noise band of a ratio "
+        f"of medians, {floor[0]:.2f}–{floor[1]:.2f}" + (f" ({' and '.join(near)} inside it)." if near else ".")
+    )
