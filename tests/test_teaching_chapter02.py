@@ -194,7 +194,8 @@ def test_section_8s_maps_fold_with_their_alt_text_and_read_pc1_against_the_occup
     trained_on, new = (torch.where(torch.rand(n, 4, 4) < 0.3, 1.0, -1.0) for n in (5, 12))
     r, figure = chapter02.latent_map("a CAE", cae, trained_on, new)
     assert -1 <= r <= 1 and figure.get_suptitle() == (
-        f"Codes of a CAE; PC 1 vs share occupied: r = {r:+.2f}\ngrey: the other panel's grids, on top where 50 or fewer"
+        f"Codes of a CAE; PC 1 vs share occupied: r = {r:+.2f}\n"
+        "(grey: the other panel's grids, on top where 50 or fewer)"
     )
     assert [ax.get_title() for ax in figure.axes[:2]] == [
         "training grids (5)\nthe others grey",

@@ -340,7 +340,7 @@ def folded(summary: str, figures: list[Figure]) -> str:
     return f"<details><summary>{summary}</summary>\n" + "\n".join(shown) + "\n</details>"
 
 
-GREY_SAID = f"grey: the other panel's grids, on top where {FEW} or fewer"  # reader r45b: the panels said only "grey"
+GREY_SAID = f"(grey: the other panel's grids, on top where {FEW} or fewer)"  # r45b: not only "grey"; r46b: brackets
 
 
 def latent_map(
