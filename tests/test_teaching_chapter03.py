@@ -169,7 +169,7 @@ def test_the_why_names_the_ablations_largest_steps_by_their_measure_as_the_table
     assert rows[6][0] < rows[7][0] < 100 * (published["tpr"] + published["tnr"]) / 2  # wider closer, still below
     table = chapter03.ablation_steps().splitlines()
     assert len(table) == 2 + len(steps) + 1 and "| 55% | 36% |" in table[2] and "| 84% | 85% |" in table[-2]
-    assert "50 % and 53 % balanced" in table[5] and "| 87.5% | 88%" in table[-1]
+    assert "alone scored 50 % and 53 %)" in table[5] and "| 87.5% | 88%" in table[-1]
     nb = json.loads((ROOT / "notebooks" / "03_mlp_decision_boundaries.ipynb").read_text())
     texts = [" ".join("".join(cell["source"]).split()) for cell in nb["cells"]]
     verdict, why = texts[0], next(t for t in texts if t.startswith("**Why?**"))

@@ -382,7 +382,7 @@ def ablation_steps(path: Path = FIDELITY) -> str:
         "| --- | ---: | ---: |",
     ]
     for k, name in STEPS.items():
-        name += f" (two training settings before it alone: {between} balanced)" if k == 6 else ""
+        name += f" (after two training settings that alone scored {between})" if k == 6 else ""
         rows_md.append(f"| {name} | {rows[k][0]:.0f}% | {rows[k][1]:.0f}% |")
     published = paper_numbers.MLP["2ds"]["unseen"]
     balanced = (published["tpr"] + published["tnr"]) / 2
