@@ -98,8 +98,8 @@ def probability_maps(
     place_on_cells(fig, grid, blocks)  # again, the maps as the legend left them (r34c)
     per = {code: f" (one per {n} x {n} cells holding any)" if n > 1 else "" for code, n in k.items()}
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
-    text += "configurations; grey, 0 black to 1 white; wrong cells tinted, free ones rejected sky blue, obstacle cells "
-    text += "kept vermillion) with the true C-obstacles outlined and hatched, the threshold's "
+    text += "configurations; grey, 0 black to 1 white; obstacle cells kept tinted vermillion, free cells rejected "
+    text += "tinted too faintly to see) with the true C-obstacles outlined and hatched, the threshold's "
     text += "contour dotted (hidden under an outline where it runs along one), dangerous mistakes as squares"
     text += f"{per[3]} and conservative ones as circles"
     rule = f"a square per {k[3]} x {k[3]}-cell tile holding dangerous cells, a circle per {k[1]} x {k[1]}-cell tile "
@@ -135,7 +135,7 @@ def path_map(
     labels_clear_of(ax, grid, grid.on_grid(valid, "valid"), "in collision")  # r39c: on free cells, not the block
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
     text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (squares), and the"
-    text += f" returned path through {len(path)} configurations, checked exactly."
+    text += f" returned path through {len(path)} configurations (dashed, diamonds, outlines' blue), checked exactly."
     per_cell = answers.per_cell(nodes[:, [x, y]], grid)  # (nx, ny) roadmap nodes in each cell of the map
     parts = [
         answers.map_in_regions(
@@ -297,7 +297,7 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     ax.plot(
         path[:, x],
         path[:, y],
-        "--D",  # dashed, a diamond per configuration: apart from the solid C-obstacle boundary, same blue
+        "--D",  # dashed, a diamond per configuration: apart from the solid C-obstacle boundary, same blue (r46c: said)
         markevery=[k for k in range(1, len(path) - 1) if not near[k]],  # the ends have marks, and room around them
         color=COLORS["path"],
         linewidth=3,
