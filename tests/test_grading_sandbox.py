@@ -291,3 +291,16 @@ def test_the_sandbox_sees_the_toolkit_but_not_the_repository():
     lines = done.stdout.split()
     assert lines[:2] == [f"{sandbox.LIBRARY}/toolkit/__init__.py", "False"], done.stderr
     assert sandbox.FIRST_UID <= int(lines[2]) < sandbox.FIRST_UID + sandbox.UIDS
+
+
+def test_a_sandboxed_program_that_hoards_memory_fails_at_its_limit_not_the_machine():
+    """A submission that allocates without end gets a MemoryError at the sandbox's address-space limit
+    (``sandbox.MEMORY_BYTES``), in seconds, instead of taking the grading machine's memory until its time runs out."""
+    assert sandbox.unavailable() is None, f"the sandbox must run where the tests run: {sandbox.unavailable()}"
+    hoard = "h = []\ntry:\n    while True: h.append(bytearray(2**28))\nexcept MemoryError: print(len(h) * 2**28)"
+    run = subprocess.run(
+        sandbox.command([sys.executable, "-c", hoard], {}, {}, cpu_s=60), capture_output=True, text=True, timeout=120
+    )
+    assert run.returncode == 0, run.stderr
+    held = int(run.stdout)  # bytes it held when the allocation failed
+    assert sandbox.MEMORY_BYTES / 2 < held <= sandbox.MEMORY_BYTES

@@ -28,6 +28,7 @@ import toolkit
 PROCESSES = 256  # processes a sandbox's user may run: a fork bomb stops here
 OPEN_FILES = 1024
 FILE_BYTES = 2**30  # the largest file it may write
+MEMORY_BYTES = 8 * 2**30  # its address space: a submission that hoards memory fails, not the machine grading it
 TMP_BYTES = 2 * 2**30  # its private /tmp (memory-backed)
 PRIVATE_TMP = ("--size", str(TMP_BYTES), "--perms", "1777", "--tmpfs", "/tmp")  # bubblewrap: an empty /tmp of its own
 FIRST_UID, UIDS = 61_000, 1_000  # each running sandbox gets its own uid (process limits are per uid)
@@ -111,7 +112,8 @@ def command(inner: list[str], read_only: dict[str, str], writable: dict[str, str
 def _unprivileged(uid: int, cpu_s: float) -> list[str]:
     """The command line prefix that drops to ``uid`` (no capabilities) under the sandbox's limits."""
     user = ["setpriv", f"--reuid={uid}", f"--regid={uid}", "--clear-groups", "--inh-caps=-all", "--bounding-set=-all"]
-    limits = [f"--nproc={PROCESSES}", f"--nofile={OPEN_FILES}", f"--fsize={FILE_BYTES}", f"--cpu={max(1, int(cpu_s))}"]
+    limits = [f"--nproc={PROCESSES}", f"--nofile={OPEN_FILES}", f"--fsize={FILE_BYTES}", f"--as={MEMORY_BYTES}"]
+    limits.append(f"--cpu={max(1, int(cpu_s))}")
     return [*user, "--", "prlimit", *limits, "--"]
 
 
