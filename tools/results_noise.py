@@ -18,8 +18,8 @@ INTERVAL = re.compile(r"(\d+\.\d+) \((\d+\.\d+)â€“(\d+\.\d+)\)")  # "1.24 (1.12â
 
 
 def medians_floor(tables: Tables) -> tuple[float, float] | None:
-    """How far timing alone moved a ratio of the two medians (:func:`noise`); ``None`` where ``tables`` hold no run
-    timed twice."""
+    """The noise band of a ratio of the two medians (:func:`noise`); ``None`` where ``tables`` hold no run timed
+    twice."""
     try:
         return noise(tables).medians
     except (KeyError, StopIteration):
@@ -53,15 +53,21 @@ class Noise(NamedTuple):
     medians: tuple[float, float]  # the ratio of the two medians
 
 
+def _timed_twice_here(tables: Tables) -> None:
+    """Raise ``KeyError`` or ``StopIteration`` unless ``tables`` hold the `strong --planner paper` run with its table
+    "timed twice" (:mod:`toolkit.teaching.costs` would borrow the packaged record's; this page reads its own)."""
+    next(t for heading, t in tables[recorded.ALGORITHM_1].items() if "timed twice" in heading)
+
+
 def measured(tables: Tables) -> Noise:
     """How far timing alone moved each ratio in the `strong --planner paper` run: its lowest and highest value."""
-    _ = next(t for heading, t in tables[recorded.ALGORITHM_1].items() if "timed twice" in heading)  # that run's own
+    _timed_twice_here(tables)
     return Noise(*(costs.measured_reach(tables, kind) for kind in Noise._fields))
 
 
 def noise(tables: Tables) -> Noise:
     """The noise band of each ratio (:func:`toolkit.teaching.costs.floors`: twice timing's reach, both ways)."""
-    _ = next(t for heading, t in tables[recorded.ALGORITHM_1].items() if "timed twice" in heading)  # that run's own
+    _timed_twice_here(tables)
     bands = costs.floors(tables)
     return Noise(*(bands[kind] for kind in Noise._fields))
 
