@@ -135,7 +135,7 @@ def path_map(
     labels_clear_of(ax, grid, grid.on_grid(valid, "valid"), "in collision")  # r39c: on free cells, not the block
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
     text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (squares), and the"
-    text += f" returned path through {len(path)} configurations (dashed, diamonds, outlines' blue), checked exactly."
+    text += f" returned path through {len(path)} configurations (yellow, dashed, diamonds), checked exactly."
     per_cell = answers.per_cell(nodes[:, [x, y]], grid)  # (nx, ny) roadmap nodes in each cell of the map
     parts = [
         answers.map_in_regions(
@@ -297,9 +297,9 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     ax.plot(
         path[:, x],
         path[:, y],
-        "--D",  # dashed, a diamond per configuration: apart from the solid C-obstacle boundary, same blue (r46c: said)
+        "--D",  # dashed, a diamond per configuration, yellow: apart from the solid blue C-obstacle boundary (r46c)
         markevery=[k for k in range(1, len(path) - 1) if not near[k]],  # the ends have marks, and room around them
-        color=COLORS["path"],
+        color=COLORS["returned_path"],
         linewidth=3,
         markersize=7,
         label="returned path (checked exactly)",

@@ -56,6 +56,8 @@ COLORS: dict[str, str] = {
     "edge": "#7d7d7d",  # 3.1:1 on the C-obstacles' light grey, yet apart from blue for a tritanope
     "candidate": OKABE_ITO["sky blue"],  # dashed: a path the lazy planner has not confirmed yet
     "path": OKABE_ITO["blue"],  # solid: the path returned, checked exactly
+    "returned_path": OKABE_ITO["yellow"],  # the path over chapter 03's P(valid) map, where blue outlines the
+    # C-obstacles (reader r46c: one blue meant two things)
     "removed": OKABE_ITO["vermillion"],  # what the exact checker rejected during a repair
     "endpoint": OKABE_ITO["black"],  # start (square) and goal (star): roadmap nodes, drawn large
     "rejected": "#4d4d4d",  # samples a sampler threw away: 6:1 on the C-obstacles' grey
@@ -127,7 +129,7 @@ SHOWN_TOGETHER: dict[str, tuple[str, ...]] = {
     "C-space picture": ("free", "occupied", "block_outline"),
     "C-space slice": ("free", "occupied", "valid", "invalid"),
     "classifier answers": ("free", "occupied", "dangerous", "conservative", "boundary"),
-    "classifier probability": ("node", "dangerous", "path"),
+    "classifier probability": ("node", "dangerous", "conservative", "boundary", "returned_path"),
     "sampler figure": ("rejected", "valid", "invalid"),
     "roadmap figure": ("node", "edge", "candidate", "path", "removed", "c_obstacle"),
     "CAE errors": ("phantom", "missed", "occupied"),
@@ -156,7 +158,7 @@ MARKS_ON: dict[str, tuple[tuple[str, ...], dict[str, tuple[str, ...]]]] = {
     # map ("cmap:NAME", sampled over its range) or a colour
     "classifier probability": (
         ("cmap:" + GREY_CMAP,),
-        {"boundary": HALO, "dangerous": HALO, "conservative": HALO, "node": ("free",), "path": HALO},
+        {"boundary": HALO, "dangerous": HALO, "conservative": HALO, "node": ("free",), "returned_path": HALO},
     ),
     "classifier answers": (
         ("free", "conservative", "occupied", "dangerous"),
