@@ -307,10 +307,10 @@ def means_grid(
     marker in every panel, :data:`MEANS_STYLES`), read against the line at 1 and the shaded tie band, on one log axis
     shared by every panel (``ylim``, where given; else every point's range; ``ticks`` labelled beside its 1-2-5 steps,
     those within 25 % of 1, e.g. the tie band's edges, on the right of each row, apart from the "1"; ``row_height``
-    inches a row of panels), the legend once, over the grid. ``noise``, where given, is how far timing alone moved a
-    ratio of means: hatched round the tie band in every panel (:func:`hatch_round`; reader r31f: the text forbade
-    single-cell readings the figure invited), named in the legend; pass its edges in ``ticks`` to label them on the
-    right (reader r33f: on the left "1.24", "1" and "0.84" crowded; r36f: the tie band's edges there read as its).
+    inches a row of panels), the legend once, over the grid. ``noise``, where given, is a ratio of means' noise band
+    (twice timing's reach, ``costs.floors``): hatched round the tie band in every panel (:func:`hatch_round`; reader
+    r31f: single cells were read), named in the legend; pass its edges in ``ticks`` to label them on the right (reader
+    r33f: on the left "1.24", "1" and "0.84" crowded; r36f: the tie band's edges there read as its).
     ``width``: inches (a page's column may be wider than a chapter's).
     The text alternative counts each series' points as the page's rule reads them
     (:func:`toolkit.util.verdicts.time_verdict` on the ratio shown to two decimals)."""

@@ -60,8 +60,9 @@ def hatch_round(ax, reach: tuple[float, float], tie: float, label: str | None, h
 
 
 def noise_bands(axes, noise: tuple[float, float] | None, tie: float) -> list[str]:
-    """``noise`` (how far timing alone moved a ratio of means) hatched round the tie band of every panel of ``axes``,
-    named once in the legend; what the text alternative says of it (nothing where ``noise`` is ``None``)."""
+    """``noise`` (the noise band of a ratio of means: twice how far timing alone moved one, both ways) hatched round
+    the tie band of every panel of ``axes``, named once in the legend; what the text alternative says of it (nothing
+    where ``noise`` is ``None``)."""
     if noise is None:
         return []
     words = NOISE_WORDS.format(low=noise[0], high=noise[1])
