@@ -86,6 +86,7 @@ def test_the_answer_in_a_quick_run_says_it_has_not_memorized():
     quick = FULL | dict(preset_length="quick size", n_seen=8, steps=100, many_name="200 grids", n_new=100)
     text = chapter02.answer(PAPER, LONG_NEW | {"seen_acc": 0.80}, MANY | {"unseen_acc": 0.5}, **quick)
     assert "- This quick run has trained too briefly to memorize its training grids (80.0%).\n" in text
+    assert "- A CAE trained on this quick run's 8 grids scores 86.9% on 100 new grids" in text
     assert "| 50.0% (all free 87.8%) |" in text
 
 
@@ -240,3 +241,16 @@ def test_section_5s_ranges_and_section_6s_sensitivity():
     norms, shift, change = chapter02.sensitivity({"a": CAE((16, 8, 2)).eval()}, grids, noisy)
     assert norms["a"].shape == (3,) and shift["a"].shape == change["a"].shape == (3, 3)
     assert not shift["a"][0].any() and not change["a"][0].any()  # no flip: nothing moves
+
+
+def test_section_5s_mean_ring_stands_clear_of_a_point_at_the_mean():
+    """Reader r47b: section 5's unseen mean, the second group's (smaller) ring, hugged the one unseen grid at the mean.
+    A ring of a few dozen grids' mean is at least five times a point's area, so a gap shows between them."""
+    import numpy as np
+
+    from toolkit.plots import cae
+
+    groups = {"seen (trained on)": (np.full(30, 0.886), np.full(30, 0.996)), "unseen": (np.full(10, 0.876),) * 2}
+    ax = cae.accuracy_vs_all_free(groups, series=(2, 1)).axes[0]
+    points, ring = (next(c for c in ax.collections if c.get_gid() == gid) for gid in ("unseen", "unseen: mean"))
+    assert ring.get_sizes()[0] >= 5 * points.get_sizes()[0]
