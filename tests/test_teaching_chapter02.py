@@ -213,7 +213,7 @@ def test_section_8s_maps_fold_with_their_alt_text_and_read_pc1_against_the_occup
     r, figure = chapter02.latent_map("a CAE", cae, trained_on, new)
     assert -1 <= r <= 1 and figure.get_suptitle() == (
         f"Codes of a CAE; PC 1 vs share occupied: r = {r:+.2f}\n"
-        "(grey: the other panel's grids, on top where 50 or fewer)"
+        "(grey: the other panel's grids; 50 or fewer drawn on top, more underneath)"
     )
     assert [ax.get_title() for ax in figure.axes[:2]] == [
         "training grids (5)\nthe others grey",

@@ -361,7 +361,7 @@ def folded(summary: str, figures: list[Figure]) -> str:
     return f"<details><summary>{summary}</summary>\n" + "\n".join(shown) + "\n</details>"
 
 
-GREY_SAID = f"(grey: the other panel's grids, on top where {FEW} or fewer)"  # r45b: not only "grey"; r46b: brackets
+GREY_SAID = f"(grey: the other panel's grids; {FEW} or fewer drawn on top, more underneath)"  # r45b, r46b, r47b
 
 
 def latent_map(
