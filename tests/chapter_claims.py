@@ -181,7 +181,21 @@ def chapter_02(nb) -> list[str]:
     corr = re.findall(r"correlation of PC 1 with the share of occupied cells: ([+-][\d.]+)", found)
     if len(corr) == 2 and abs(float(corr[0])) >= abs(float(corr[1])):  # both printed: the first the weaker
         problems.append(f"02: the 30-grid CAE's PC 1 correlation is not the smaller of the two in size: {corr}")
+    problems += _chapter_02_held_out(found)
     return problems + _chapter_02_unseen(nb, found) + _chapter_02_gaps(nb, found) + _chapter_02_contracts(nb, found)
+
+
+def _chapter_02_held_out(found: str) -> list[str]:
+    """Reader r47b: section 5 says why stopping earlier does not help: on the training grids held out, the shorter
+    training scores higher and neither length beats "all free". Said of the full-size run (memorized CAEs)."""
+    line = re.search(r"On the \d+ held-out training grids .*? lengths above \"all free\"\.", found)
+    if line is None:
+        return ["02: section 5's check on held-out training grids is not printed"]
+    scores = [float(a) for a in re.findall(r"[\d,]+ steps ([\d.]+)% \(", line.group(0))]
+    above = re.search(r"(\d+) of \d+ lengths above", line.group(0))
+    if "memorized. Near perfect" in found and (scores != sorted(scores, reverse=True) or above.group(1) != "0"):
+        return [f"02: section 5 says the shorter training scores higher and none beats 'all free': {line.group(0)}"]
+    return []
 
 
 def _chapter_02_contracts(nb, found: str) -> list[str]:
@@ -276,7 +290,7 @@ def _chapter_02_unseen(nb, found: str) -> list[str]:
                 f"02: {lam[0]} scores {lam[4]:+.1f} points against 'all free' on the test grids: not within a couple"
             )
     answer = re.search(
-        r"\*\*In this run's numbers\.\*\* .*? scores ([\d.]+)% on \d+ new grids, [\d.]+ points (?:below|above) "
+        r"\*\*The answer\.\*\*.*? scores ([\d.]+)% on \d+ new grids, [\d.]+ points (?:below|above) "
         r'answering "all free"(?: \([^)]*\))?, which gets ([\d.]+)%.*?\*\*no better than answering "all free"\*\*',
         found,
     )

@@ -1138,7 +1138,7 @@ def chapter_02(
     """A chapter 02 whose three CAEs score ``unseen`` (%) on unseen grids, "all free" 87.6 % (review r8b's site), the
     `paper` preset's 85.9 % and the many-grids CAE's 91.0 % against 87.8 %; quick: nothing memorized; section 5's
     ranges with ``seen_above`` of the 30 seen grids above the diagonal; the three CAEs ``on_new`` (%) on 500 new grids,
-    "all free" 87.8 %."""
+    "all free" 87.8 %; section 5's check on 6 held-out training grids."""
     names = ("λ = 0", "λ = 1e-3, CAE-long", "λ = 0.961 (mean reading)")
     section_5 = [
         "| CAE | seen: its 30 training grids (all free 88.6%) | the 10 test grids (all free 87.6%) "
@@ -1181,12 +1181,13 @@ def chapter_02(
         'MD:| grids | accuracy, lowest – highest | points above "all free", fewest – most | above the diagonal |\n'
         f"| --- | ---: | ---: | ---: |\n| seen | 98.9% – 100.0% | +0.8 – +21.6 | {seen_above} of 30 |\n"
         "| unseen | 80.1% – 94.0% | -5.2 – +1.1 | 3 of 10 |",
-        "MD:**In this run's numbers.** Trained on 30 grids with the paper's layer sizes and λ for 1,500 steps, our CAE "
-        "rebuilds its training grids 99.6% right by memorizing them (Table 1: 100%). "
-        f"But it scores {unseen[1]:.1f}% on 500 new grids, {abs(unseen[1] - 87.6):.1f} points "
+        'On the 6 held-out training grids ("all free" 91.3%): 300 steps 90.9% (-0.4 points); 1,500 steps 90.3% '
+        '(-1.0 points); 3,000 steps 89.8% (-1.5 points). Best: 300 steps; 0 of 3 lengths above "all free".',
+        "MD:**The answer.**\n\n- A CAE trained on the paper's 30 grids "
+        f"scores {unseen[1]:.1f}% on 500 new grids, {abs(unseen[1] - 87.6):.1f} points "
         f'{"below" if unseen[1] < 87.6 else "above"} answering "all free" (an empty grid, whatever the input), '
-        'which gets 87.6%: it rebuilds a new workspace **no better than answering "all free"**, and Table 1\'s 100% on '
-        "unseen grids does not reproduce.",
+        'which gets 87.6%: **no better than answering "all free"**.\n'
+        "- So Table 1's 100% on unseen grids does not reproduce.",
     )
 
 
@@ -1248,6 +1249,24 @@ def test_chapter_02_states_what_section_6_and_the_closing_measure():
     assert problems(CH02, nb) == ["02: λ = 0 scores 95.0% on its training grids"]
 
 
+def test_chapter_02_holds_section_5s_held_out_check_to_its_words():
+    """Reader r47b: why stopping earlier does not help, on the page: on the held-out training grids the shorter
+    training scores higher and no length beats "all free". A longer training scoring higher fails (full size only);
+    a page without the line fails."""
+    nb = chapter_02()
+    nb["cells"][-2]["outputs"][0]["text"] = nb["cells"][-2]["outputs"][0]["text"].replace("90.3%", "91.0%")
+    assert problems(CH02, nb) == [
+        "02: section 5 says the shorter training scores higher and none beats 'all free': On the 6 held-out training "
+        'grids ("all free" 91.3%): 300 steps 90.9% (-0.4 points); 1,500 steps 91.0% (-1.0 points); 3,000 steps 89.8% '
+        '(-1.5 points). Best: 300 steps; 0 of 3 lengths above "all free".'
+    ]
+    nb = chapter_02((84.0, 70.0, 60.0), quick=True)
+    nb["cells"][-2]["outputs"][0]["text"] = nb["cells"][-2]["outputs"][0]["text"].replace("90.3%", "91.0%")
+    assert problems(CH02, nb) == []  # quick mode memorized nothing: its page says the text is the full-size run's
+    nb["cells"][-2]["outputs"] = []
+    assert problems(CH02, nb) == ["02: section 5's check on held-out training grids is not printed"]
+
+
 def test_chapter_02_holds_its_closing_answer_to_its_numbers():
     """Review r26b: the closing answer gives this run's unseen score beside "all free" and the paper's 100 %; "no
     better than answering 'all free'" beside a score more than a couple of points above it fails, and so does a
@@ -1256,7 +1275,7 @@ def test_chapter_02_holds_its_closing_answer_to_its_numbers():
     answer = nb["cells"][-1]["outputs"][0]["data"]
     answer["text/markdown"] = answer["text/markdown"].replace("scores 86.8%", "scores 91.0%")
     assert "02: the answer says 'no better than all free' of 91.0% against 87.6%" in problems(CH02, nb)
-    answer["text/markdown"] = "**In this run's numbers.** the CAE does better."
+    answer["text/markdown"] = "**The answer.** the CAE does better."
     assert problems(CH02, nb) == ["02: the closing answer with this run's unseen score and 'all free' is not printed"]
 
 

@@ -40,23 +40,28 @@ FULL = dict(
 LONG_NEW = LONG | {"unseen_acc": 0.869, "unseen_all_free": 0.878}  # CAE-long on the 500 new grids
 
 
-def test_the_answer_is_two_sentences_and_five_rows():
-    """Reader r39b: two sentences and a table (the paper, CAE-long, the many-grids CAE), the columns its training
+def test_the_answer_is_four_bullets_and_five_rows():
+    """Reader r39b: the answer, then a table (the paper, CAE-long, the many-grids CAE), the columns its training
     grids and the new grids; the ten test grids are section 5's. Reader r40b: and the CAE the toolkit ships, so that
-    "our CAE" is not read as the one chapters 03-04 load. Reader r41b: and λ = 0.961, as in the closing table."""
+    "our CAE" is not read as the one chapters 03-04 load. Reader r41b: and λ = 0.961, as in the closing table. Reader
+    r47b: the verdict said once, its bullets carrying the numbers, and the table's lead-in true of its rows."""
     text = chapter02.answer(PAPER, LONG_NEW, MANY, **FULL)
-    # reader r36b: sentences a student can repeat, with their numbers, before the table; r37b: no nickname
     assert text.startswith(
-        "**In this run's numbers.** Trained on 30 grids with the paper's layer sizes and λ for 1,500 steps, our CAE "
-        "rebuilds its training grids 99.6% right by memorizing them (Table 1: 100%). "
+        "**The answer.**\n\n"
         # reader r42b: "(0.9 points below)" after "all free" read as the baseline's gap; said of the CAE
-        'But it scores 86.9% on 500 new grids, 0.9 points below answering "all free" (an empty grid, whatever the '
-        'input), which gets 87.8%: it rebuilds a new workspace **no better than answering "all free"**, and Table 1\'s '
-        "100% on unseen grids does not reproduce. "
+        "- A CAE trained on the paper's 30 grids scores 86.9% on 500 new grids, 0.9 points below answering \"all "
+        'free" (an empty grid, whatever the input), which gets 87.8%: **no better than answering "all free"**.\n'
+        "- So Table 1's 100% on unseen grids does not reproduce.\n"
+        "- Trained long (1,500 steps), it rebuilds its training grids 99.6% right (Table 1: 100%), but only by "
+        "memorizing them.\n"
         # reader r42b: the CAE chapters 03-04 use, whose 89.2 % the answer left to the table
-        "The CAE that chapters 03–04 use (the `paper` preset: the same, 300 steps) scores 89.2% on its training grids, "
-        'where "all free" gets 88.6%, and 85.9% on the new grids: it reproduces neither column.\n\n'
+        "- The shorter-trained CAE that chapters 03–04 use (300 steps) reproduces neither column: 89.2% on its "
+        "training grids, 85.9% on the new ones.\n\n"
+        # reader r47b: CAE-preset is loaded, not trained; λ = 0 and the Adagrad run are left out
+        "Four of the CAEs on this page beside the paper's Table 1 (section 4 lists them all):\n\n"
     )
+    assert text.count("whatever the input") == 1 and chapter02.WAITING.count("whatever the input") == 1
+    assert chapter02.WAITING.startswith("**The answer.**") and "This run's numbers appear here" in chapter02.WAITING
     lines = [line for line in text.splitlines() if line.startswith("| ")]
     assert lines[:2] == ["| CAE (2DS) | its training grids | 500 new grids |", "| --- | --- | --- |"]
     assert lines[2:] == [
@@ -80,7 +85,8 @@ def test_the_answer_is_two_sentences_and_five_rows():
 def test_the_answer_in_a_quick_run_says_it_has_not_memorized():
     quick = FULL | dict(preset_length="quick size", n_seen=8, steps=100, many_name="200 grids", n_new=100)
     text = chapter02.answer(PAPER, LONG_NEW | {"seen_acc": 0.80}, MANY | {"unseen_acc": 0.5}, **quick)
-    assert "has trained too briefly in this quick run to memorize its training grids (80.0%)" in text
+    assert "- This quick run has trained too briefly to memorize its training grids (80.0%).\n" in text
+    assert "- A CAE trained on this quick run's 8 grids scores 86.9% on 100 new grids" in text
     assert "| 50.0% (all free 87.8%) |" in text
 
 
@@ -143,6 +149,18 @@ def test_section_6s_scale_free_jacobian_ignores_a_shrunk_code():
     assert np.allclose(halved / chapter02.code_norms(cae, grids), scale_free, rtol=1e-4)
 
 
+def test_section_5s_held_out_check_names_the_best_length_and_counts_those_above_all_free():
+    """Reader r47b: why stopping earlier does not help, in this run's numbers (docs/fidelity.md §5's table)."""
+    said = chapter02.held_out_verdict({300: 0.9091, 1500: 0.9031}, 0.9131, 6)
+    assert said == (
+        'On the 6 held-out training grids ("all free" 91.3%): 300 steps 90.9% (-0.4 points); 1,500 steps 90.3% '
+        '(-1.0 points). Best: 300 steps; 0 of 2 lengths above "all free".'
+    )
+    assert chapter02.held_out_verdict({20: 0.5, 100: 0.95}, 0.9, 1).endswith(
+        'Best: 100 steps; 1 of 2 lengths above "all free".'
+    )
+
+
 def test_section_5s_table_sets_the_test_grids_beside_the_new_grids():
     """Reader r36b: λ = 0.961's +0.6 on the 10 test grids and its -0.2 on the 500 new grids side by side."""
     table = chapter02.split_table(
@@ -195,7 +213,7 @@ def test_section_8s_maps_fold_with_their_alt_text_and_read_pc1_against_the_occup
     r, figure = chapter02.latent_map("a CAE", cae, trained_on, new)
     assert -1 <= r <= 1 and figure.get_suptitle() == (
         f"Codes of a CAE; PC 1 vs share occupied: r = {r:+.2f}\n"
-        "(grey: the other panel's grids, on top where 50 or fewer)"
+        "(grey: the other panel's grids; 50 or fewer drawn on top, more underneath)"
     )
     assert [ax.get_title() for ax in figure.axes[:2]] == [
         "training grids (5)\nthe others grey",
@@ -223,3 +241,16 @@ def test_section_5s_ranges_and_section_6s_sensitivity():
     norms, shift, change = chapter02.sensitivity({"a": CAE((16, 8, 2)).eval()}, grids, noisy)
     assert norms["a"].shape == (3,) and shift["a"].shape == change["a"].shape == (3, 3)
     assert not shift["a"][0].any() and not change["a"][0].any()  # no flip: nothing moves
+
+
+def test_section_5s_mean_ring_stands_clear_of_a_point_at_the_mean():
+    """Reader r47b: section 5's unseen mean, the second group's (smaller) ring, hugged the one unseen grid at the mean.
+    A ring of a few dozen grids' mean is at least five times a point's area, so a gap shows between them."""
+    import numpy as np
+
+    from toolkit.plots import cae
+
+    groups = {"seen (trained on)": (np.full(30, 0.886), np.full(30, 0.996)), "unseen": (np.full(10, 0.876),) * 2}
+    ax = cae.accuracy_vs_all_free(groups, series=(2, 1)).axes[0]
+    points, ring = (next(c for c in ax.collections if c.get_gid() == gid) for gid in ("unseen", "unseen: mean"))
+    assert ring.get_sizes()[0] >= 5 * points.get_sizes()[0]

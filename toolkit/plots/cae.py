@@ -29,13 +29,7 @@ from matplotlib.ticker import FuncFormatter, LogLocator, NullLocator
 from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots.alt import Part, describe, lines_part
 from toolkit.plots.box_names import NAME_POINTS, fitted, slot_points, tick_names
-from toolkit.plots.palette import (
-    COLORS,
-    GREYS_CMAP,
-    PAGE_WIDTH,
-    halo,
-    series_style,
-)
+from toolkit.plots.palette import COLORS, GREYS_CMAP, PAGE_WIDTH, halo, series_style
 from toolkit.plots.wrong_cells import draw_wrong_cells, grid_part, legend_handles, wrong_in_words, wrong_kinds
 
 
@@ -153,6 +147,7 @@ GREY = {True: dict(s=28, alpha=1.0, linewidths=0.8, zorder=3), False: dict(s=10,
 AREA = {"^": 1.7, "v": 1.7, "o": 1.2}  # marker area factors: a triangle of the same size looks half a square's
 LAYERS = 10  # slices of a large group drawn in turns with the other large groups' (accuracy_vs_all_free)
 MEAN_SIZE = 300  # the first group's mean marker (points squared); each later group's is smaller, drawn over it
+POINT_SIZE = 45  # a point of a small group; its mean's marker at least 5 times its area (r47b: it hugged one point)
 
 
 def accuracy_vs_all_free(
@@ -192,14 +187,14 @@ def accuracy_vs_all_free(
                 accuracy[j::layers],
                 label=f"{name}: mean {np.mean(accuracy):.1%} vs {np.mean(all_free):.1%}" if j == 0 else None,
                 alpha=0.9 if few else 0.8,
-                s=(45 if few else 14) * AREA.get(style["marker"], 1.0),
+                s=(POINT_SIZE if few else 14) * AREA.get(style["marker"], 1.0),
                 marker=style["marker"],
                 **marks,
                 linewidths=0.9,
                 zorder=3 + len(groups) - k if few else 2 + (j * len(groups) + k) / (layers * len(groups)),
                 gid=name,
             )
-        _draw_mean(ax, name, (np.mean(all_free), np.mean(accuracy)), k, len(groups), series[k])
+        _draw_mean(ax, name, (np.mean(all_free), np.mean(accuracy)), k, len(groups), series[k], few)
         said.append(
             f"{name}: {len(accuracy)} workspaces, mean accuracy {np.mean(accuracy):.1%} against {np.mean(all_free):.1%}"
             f" for all free, {above} of them above the diagonal"
@@ -239,13 +234,14 @@ def _drop_lines(ax, groups: dict[str, tuple[np.ndarray, np.ndarray]], series: tu
     ax.set_ylim(y_low, y_high)
 
 
-def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int, s: int) -> None:
+def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int, s: int, few: bool) -> None:
     """Group ``k`` of ``n``'s mean, a large hollow marker of its style behind every cloud (points zorder 2 and up),
-    each later group's smaller and on top of the earlier, in series ``s``'s style: two means at one spot both show."""
+    each later group's smaller and on top of the earlier, in series ``s``'s style: two means at one spot both show;
+    a ``few`` group's ring well outside a point of its own at the mean (reader r47b)."""
     style = series_style(s)
     ax.scatter(
         *mean,
-        s=MEAN_SIZE * (1 - 0.6 * k / max(n - 1, 1)),
+        s=max(MEAN_SIZE * (1 - 0.6 * k / max(n - 1, 1)), 5 * POINT_SIZE * AREA.get(style["marker"], 1.0) * few),
         facecolors="none",  # hollow: the points under it show (r20b: a filled mean hid the seen grids at 1.00)
         edgecolors=style["color"],
         marker=style["marker"],

@@ -5,8 +5,10 @@
 - :func:`memorized`: section 5's sentence on a CAE's scores: memorized, not yet, or above "all free" on new grids;
 - :func:`against_all_free`: one split of a CAE's recorded scores beside "all free";
 - :func:`correlation_in_words`: the size of a correlation in a word (section 8);
-- :func:`answer`: the answer at the top of the page in three sentences and a table of five rows, in this run's
-  numbers: the verdict from the new grids; :func:`row_names`: the names both tables give its CAEs;
+- :func:`answer`: the answer at the top of the page in four bullets and a table of five rows, in this run's
+  numbers: the verdict from the new grids (:data:`WAITING` before they are in); :func:`row_names`: the names both
+  tables give its CAEs;
+- :func:`held_out_verdict`: section 5's check of how CAE-preset's length was picked, on held-out training grids;
 - :func:`fit_cae`: section 4's trainings, each from the same start and batches;
 - :func:`jacobian_norm`, :func:`flipped`, :func:`responses`, :func:`sensitivity`, :func:`flip_counts`: section 6's
   measurements and Try this's count; :func:`range_table`: section 5's ranges (reader r39b: helpers out of the page);
@@ -96,6 +98,17 @@ def row_names(*, n_seen: int, steps: int, preset_length: str, many_name: str, n_
     }
 
 
+WAITING = (  # the answer at the top before the page's last code cell fills in this run's numbers
+    "**The answer.**\n\n"
+    '- A CAE trained on the paper\'s 30 grids rebuilds new workspaces no better than answering "all free" (an empty '
+    "grid, whatever the input).\n"
+    "- So Table 1's 100 % on unseen grids does not reproduce.\n"
+    "- Trained long (1,500 steps), it reaches Table 1's seen column, but only by memorizing its 30 grids.\n"
+    "- The shorter-trained CAE that chapters 03–04 use reproduces neither column.\n\n"
+    "*This run's numbers appear here once the page's last code cell has run.*"
+)
+
+
 def answer(
     paper: Scores,
     long: Scores,
@@ -109,11 +122,10 @@ def answer(
     many_name: str,
     n_new: int,
 ) -> str:
-    """The answer at the top of the page in three sentences, then its table of five rows, as Markdown (reader r39b: the
-    paper, CAE-long and the many-grids CAE; reader r40b: and the CAE the toolkit ships, whose scores a student who
-    repeats the answer would otherwise misdescribe; reader r41b: and λ = 0.961, so that this table and the closing
-    one list the same CAEs, under the same names, :func:`row_names`; the ten test grids are section 5's; reader r42b:
-    the sentences name CAE-preset's scores too).
+    """The answer at the top of the page, said once (reader r47b: bullets, then the same verdict again in a paragraph):
+    four bullets in this run's numbers, then a table of five rows, as Markdown (reader r39b: the paper, CAE-long and
+    the many-grids CAE; reader r40b: and the CAE the toolkit ships; reader r41b: and λ = 0.961, so that this table and
+    the closing one list the same CAEs, under the same names, :func:`row_names`).
 
     ``paper``: Table 1's 2DS row (``seen_acc``, ``unseen_acc``); ``long``: CAE-long (``steps`` steps on ``n_seen``
     grids), ``seen`` its training grids and ``unseen`` the ``n_new`` new grids; ``preset``: the `paper` preset's CAE
@@ -131,40 +143,49 @@ def answer(
         f"| {_cell(scores['unseen_acc'], free)} |"
         for role, scores in (("long", long), ("preset", preset), ("mean", mean), ("many", many))
     ]
-    said = _two_sentences(paper, long, free, n_seen=n_seen, n_new=n_new, steps=steps)
-    return f"{said} {_preset_sentence(preset, preset_length)}\n\n" + "\n".join(table)
+    bullets = _bullets(paper, long, preset, free, n_seen=n_seen, n_new=n_new, steps=steps, length=preset_length)
+    lead = "Four of the CAEs on this page beside the paper's Table 1 (section 4 lists them all):"
+    return "**The answer.**\n\n" + "\n".join(f"- {b}" for b in bullets) + f"\n\n{lead}\n\n" + "\n".join(table)
 
 
-def _two_sentences(paper: Scores, long: Scores, free: float, *, n_seen: int, n_new: int, steps: int) -> str:
-    """The answer without the page's nicknames (reader r37b): our CAE on its training grids beside Table 1's seen
-    column, then on the new grids, its gap to "all free" said of it (reader r42b: after "all free", the gap read as
-    the baseline's), beside Table 1's unseen column."""
+def _bullets(
+    paper: Scores, long: Scores, preset: Scores, free: float, *, n_seen: int, n_new: int, steps: int, length: str
+) -> list[str]:
+    """The answer's four bullets, each with its numbers (reader r37b: no nicknames; reader r42b: the gap said of the
+    CAE, before "all free"; and CAE-preset's scores): new grids, Table 1's unseen column, the seen column, the CAE
+    chapters 03-04 use."""
+    gap = gap_points(long["unseen_acc"], free)
     seen_said = (
-        f"rebuilds its training grids {long['seen_acc']:.1%} right by memorizing them "
-        f"(Table 1: {paper['seen_acc']:.0%})"
+        f"Trained long ({steps:,} steps), it rebuilds its training grids {long['seen_acc']:.1%} right "
+        f"(Table 1: {paper['seen_acc']:.0%}), but only by memorizing them."
         if long["seen_acc"] >= MEMORIZED
-        else f"has trained too briefly in this quick run to memorize its training grids ({long['seen_acc']:.1%})"
+        else f"This quick run has trained too briefly to memorize its training grids ({long['seen_acc']:.1%})."
     )
-    long_new = long["unseen_acc"]
-    gap = gap_points(long_new, free)
-    return (
-        f"**In this run's numbers.** Trained on {n_seen} grids with the paper's layer sizes and λ for {steps:,} "
-        f"steps, our CAE {seen_said}. But it scores {long_new:.1%} on {n_new} new grids, {abs(gap):.1f} points "
-        f'{"below" if gap < 0 else "above"} answering "all free" (an empty grid, whatever the input), which gets '
-        f'{free:.1%}: it rebuilds a new workspace **no better than answering "all free"**, and Table 1\'s '
-        f"{paper['unseen_acc']:.0%} on unseen grids does not reproduce."
-    )
+    whose = "the paper" if n_seen == 30 else "this quick run"  # the paper's 30 grids, §IV-A
+    column = "the seen column only" if preset["seen_acc"] >= MEMORIZED else "neither column"
+    return [
+        f"A CAE trained on {whose}'s {n_seen} grids scores {long['unseen_acc']:.1%} on {n_new} new grids, "
+        f'{abs(gap):.1f} points {"below" if gap < 0 else "above"} answering "all free" (an empty grid, whatever the '
+        f'input), which gets {free:.1%}: **no better than answering "all free"**.',
+        f"So Table 1's {paper['unseen_acc']:.0%} on unseen grids does not reproduce.",
+        seen_said,
+        f"The shorter-trained CAE that chapters 03–04 use ({length}) reproduces {column}: "
+        f"{preset['seen_acc']:.1%} on its training grids, {preset['unseen_acc']:.1%} on the new ones.",
+    ]
 
 
-def _preset_sentence(preset: Scores, preset_length: str) -> str:
-    """The CAE chapters 03-04 use, in one sentence (reader r42b: the answer left out that it misses the seen column
-    too): its two scores beside "all free", and which of Table 1's columns it reproduces."""
-    seen = preset["seen_acc"] >= MEMORIZED
+def held_out_verdict(scores: Mapping[int, float], free: float, n_held: int) -> str:
+    """Section 5, why stopping earlier does not help (reader r47b): each training length's accuracy on ``n_held``
+    training grids held out (``{steps: share}``), its points against "all free" there (``free``), the best length, and
+    how many lengths beat "all free"."""
+    said = "; ".join(
+        f"{steps:,} steps {acc:.1%} ({gap_points(acc, free):+.1f} points)" for steps, acc in scores.items()
+    )
+    best = max(scores, key=lambda steps: scores[steps])
+    above = sum(gap_points(acc, free) > 0 for acc in scores.values())
     return (
-        f"The CAE that chapters 03–04 use (the `paper` preset: the same, {preset_length}) scores "
-        f'{preset["seen_acc"]:.1%} on its training grids, where "all free" gets {preset["seen_all_free"]:.1%}, and '
-        f"{preset['unseen_acc']:.1%} on the new grids: it reproduces "
-        f"{'the seen column only' if seen else 'neither column'}."
+        f'On the {n_held} held-out training grids ("all free" {free:.1%}): {said}. Best: {best:,} steps; '
+        f'{above} of {len(scores)} lengths above "all free".'
     )
 
 
@@ -340,7 +361,7 @@ def folded(summary: str, figures: list[Figure]) -> str:
     return f"<details><summary>{summary}</summary>\n" + "\n".join(shown) + "\n</details>"
 
 
-GREY_SAID = f"(grey: the other panel's grids, on top where {FEW} or fewer)"  # r45b: not only "grey"; r46b: brackets
+GREY_SAID = f"(grey: the other panel's grids; {FEW} or fewer drawn on top, more underneath)"  # r45b, r46b, r47b
 
 
 def latent_map(
