@@ -1442,7 +1442,7 @@ def test_chapter_05_holds_the_recipe_row_and_the_tie_band_to_its_closing():
         "05: the fold does not say why the recipe's uniform accuracy above Table 2's is no win",
     ]
     assert problems(CH05, chapter_05(tie="a ratio near 1 is a tie")) == [
-        "05: the tie band is not printed beside both time tables"
+        "05: the tie band is not printed beside every time table"
     ]
 
 

@@ -373,12 +373,12 @@ def test_section_7_says_plainly_whether_the_model_cost_the_path_an_edge(monkeypa
     monkeypatch.setattr(chapter05_runs, "_screened", lambda result, model: counts)
     assert chapter05_runs.path_mistakes(None, None, np.zeros(90, bool)) == (
         "None of the 90 frames falls below the threshold, and screening called 0 of the path's 12 screened points "
-        "colliding: on this path the model made no conservative mistake, so it cost the lazy PRM no edge."
+        "colliding: no conservative mistake at any of them, so the model cost this path no edge."
     )
     below = np.zeros(90, bool)
     below[[3, 4]] = True
     said = chapter05_runs.path_mistakes(None, None, below)
-    assert said.startswith("2 of the 90 frames fall below the threshold") and "cost the lazy PRM no edge" not in said
+    assert said.startswith("2 of the 90 frames fall below the threshold") and "cost this path no edge" not in said
     assert said.endswith("screening drops an edge only where more than 50% of its points are called colliding.")
 
 

@@ -148,7 +148,7 @@ def path_mistakes(result, model, below: np.ndarray) -> str:
         f"threshold, and screening called {called.sum()} of the path's {points.sum()} screened points colliding"
     )
     if not frames and not called.sum():
-        return said + ": on this path the model made no conservative mistake, so it cost the lazy PRM no edge."
+        return said + ": no conservative mistake at any of them, so the model cost this path no edge."
     return (
         said + f": conservative mistakes, since the robot is valid at every frame. They cost no edge of this path: "
         f"screening drops an edge only where more than {reject:.0%} of its points are called colliding."
