@@ -239,6 +239,13 @@ def test_screening_counts_the_points_the_lazy_prm_asked_the_model_about_on_the_p
     assert said.endswith("An edge is dropped when more than 90% of its points are called colliding.")
     rows = [line.split("|")[1:-1] for line in chapter05_runs.screening(result, Model(np.inf)).splitlines()[2:3]]
     assert [cell.strip() for cell in rows[0]] == ["2", points, points, "100%"]  # every point called colliding
+    # reader r47e, 05 item 3: the plain line under §7's table reads the same counts (a real path, no stand-in)
+    none = chapter05_runs.path_mistakes(result, Model(-np.inf), np.zeros(11, bool))
+    assert none.startswith(
+        f"None of the 11 frames falls below the threshold, and screening called 0 of the path's {points}"
+    )
+    dropped = chapter05_runs.path_mistakes(result, Model(np.inf), np.ones(11, bool))  # every point called colliding
+    assert "cost this path no edge" not in dropped and "They would cost an edge of this path" in dropped
     # reader r36e, item 2: the open text says whether a frame below the threshold was one of those points
     from toolkit.planning.local_planner import path_at
 

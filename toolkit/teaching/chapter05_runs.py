@@ -141,7 +141,7 @@ def path_mistakes(result, model, below: np.ndarray) -> str:
     """§7's plain answer to §6's question (reader r47e, 05 item 3): did the model call the valid robot colliding on
     ``result``'s path, at its frames (``below (F,)``: P(valid) under the threshold) or at the points screening asked
     it about, and could that have cost the path an edge."""
-    points, called, _, reject = _screened(result, model)
+    points, called, fraction, reject = _screened(result, model)
     frames = int(np.sum(below))
     said = (
         f"{frames or 'None'} of the {len(below)} frames {'falls' if frames <= 1 else 'fall'} below the "
@@ -149,9 +149,11 @@ def path_mistakes(result, model, below: np.ndarray) -> str:
     )
     if not frames and not called.sum():
         return said + ": no conservative mistake at any of them, so the model cost this path no edge."
-    return (
-        said + f": conservative mistakes, since the robot is valid at every frame. They cost no edge of this path: "
-        f"screening drops an edge only where more than {reject:.0%} of its points are called colliding."
+    kept = fraction.max(initial=0.0) <= reject  # a returned path's edges always are: screening kept them
+    return said + (
+        f": conservative mistakes, where the robot is valid. {'They cost' if kept else 'They would cost'} "
+        f"{'no' if kept else 'an'} edge of this path: screening drops an edge only where more than {reject:.0%} of "
+        "its points are called colliding."
     )
 
 
