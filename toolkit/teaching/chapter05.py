@@ -179,7 +179,7 @@ MORAL = (  # reader r41e, 05 lift 3: the answer's moral, at the end of its "Why.
 )
 DETAILS = (  # the answer's one fold (reader r47e, 05 lift 2: the top slimmed to the answer and one table)
     "Details of the answer: what skipping the checks could save per sampler, which runs it reads (three trainings "
-    "of `strong`), and the ratio of the means"
+    "of the strong recipe), and the ratio of the means"  # a summary shows no Markdown: no backticks
 )
 HEADER = "| measured | " + " | ".join(SAMPLERS) + " |\n| --- |" + " --- |" * len(SAMPLERS)  # a time table's head
 
