@@ -12,7 +12,7 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
     answer, tables = chapter05.answer(), chapter05.total_table() + chapter05.means_table() + chapter05.time_tables()
     assert chapter05.total_table() in answer  # reader r34e, lift 1: the total-time table right under the answer
     # reader r39e, 05 lift 1: one row per checker above the fold, each query's own ratio; the means in the fold
-    front, fold = answer.split("<details><summary>The numbers behind the answer")  # r46e: the trainings' fold first
+    front, fold = answer.split(f"<details><summary>{chapter05.DETAILS}</summary>")  # r47e, lift 2: one fold
     assert chapter05.total_table().count("\n| `strong` network") == 2 and "ratio of the means |" not in front
     assert chapter05.means_table() in fold and "the paper's Table 3: ratio of the means" in fold
     compiled = recorded.query_ratios(chapter05.COMPILED)["3dc7"]
@@ -23,66 +23,69 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
     # r29e: the answer names both statistics and leaves the ratios to the closing (said once)
     assert "by the median of each query's own ratio (the table below)" in answer  # reader r41e, 05 contradiction 2
     assert "Nor by the ratio of the means" not in answer  # reader r42e, 05 lift 4: the fold's title names them
-    assert "<summary>The numbers behind the answer: the ratio of the means" in answer
+    assert "**The numbers behind the answer: the ratio of the means" in fold
+    assert front.count("| `strong` network") == 2 and front.count("\n| --- |") == 1  # r47e: one table above the fold
+    assert "0.52" not in front and "0.54" not in chapter05.answer(0.54).split("<details>")[0]  # trainings folded
     for who, name in ((chapter05.COMPILED, "our compiled checker"), (chapter05.FCL, "python-fcl on both sides")):
         means = {s: 1 - v for s, v in recorded.improvements(who, "3dc7").items()}
         low, high = chapter05.floors()["means"]  # reader r37e, 05 lift 3: the home page's rule, both ways; r38e:
-        verdict = {s: findings.time_verdict(r) for s, r in means.items()}  # a cost within noise says both
+        verdict = {s: findings.time_verdict(r) for s, r in means.items()}  # r47e: within noise is no saving shown
         noisy = {s: low < r < high and verdict[s] != findings.TIES for s, r in means.items()}  # strictly inside
-        verdict = {s: f"{v}, {chapter05.NOISE}" if noisy[s] else v for s, v in verdict.items()}
+        verdict = {s: chapter05.NOISE if noisy[s] else v for s, v in verdict.items()}
         cells = " | ".join(f"{verdict[s]} ({means[s]:.2f})" for s in chapter05.SAMPLERS)
         assert f"| `strong` network, {name}: ratio of the means | {cells} |" in tables
         assert " / ".join(f"{means[s]:.2f}" for s in chapter05.SAMPLERS) not in answer
     # reader r31e: the closing is not the answer again; reader r34e, lift 5: the paper's side in three sentences
     closing = chapter05.time_tables().split("<details>")[0].strip().split("\n\n")[-1]
-    assert closing.startswith("The paper's Table 3 says yes for") and closing.count(". ") == 1  # r36e: two sentences
+    assert closing.startswith("The paper's Table 3 gives OB and BT") and closing.count(". ") == 1  # r36e: two
     assert "only the sampling stage's verdict changes with the checker" not in tables
     # reader r31e: three sentences above a fold; the "why" bounds the saving by sampling's share times its cut
-    shown, shares = answer.split("<details>")[0].split(chapter05.total_table())
+    shown, after = answer.split("<details>")[0].split(chapter05.total_table())
     assert (
         shown.count("\n\n") == 2
-        and "at most 6 %" in shown
-        and "so cutting it could take at most 11 % off a query (OB, from mean times)." in shown
+        and "at most 6 % less time" in shown
+        and "so skipping its checks could take at most 11 % off a query (OB, from mean times)." in shown
     )
+    assert after.strip() == ""  # reader r47e, lift 2: the answer's one table, then its one fold
+    shares = fold
     # reader r44e, item 1: the table the moral rests on (what share of a query sampling takes) is open, under the
     # total-time table, and the fold does not say it again
     assert shares.startswith("\n\nWith python-fcl the network cut sampling time by 67–78 % (means). Sampling's share")
     assert (
         "| OB | 14.2% | 78% | 11.1% | 1.06 |" in shares
         and "| at most saved (means) |" in shares
-        and "sampling's share of a query" not in fold
+        and fold.count("sampling's share of a query") == 1
     )
-    assert "OB's sampling cut was worth most, yet its whole query saved nothing" in fold
+    assert "OB's sampling cut was worth most, yet its whole query showed no saving" in fold
     # reader r34e, contradiction 3: the sampler whose cut was worth most saved no query time with python-fcl by
     # means; reader r38e, 05 contradictions 1-2: said in "Why", in the table's own words (a cost within noise)
     why = shown.split("**Why.** ")[1].split("\n\n")[0]  # reader r39e, 05 lift 2: one sentence a student can repeat
     why, moral = why.split(" **The moral:** ")  # reader r41e, 05 lift 3: a one-line moral ends "Why."
-    assert why.count(". ") == 2 and why.endswith("so sampling got slower.")  # r45e: short sentences, OB's own
+    assert why.count(". ") == 2 and why.endswith("so sampling took more time.")  # common47 rule 2: no "slower"
     # reader r45e, 05 item 1: OB's limit (11.1 %, from mean times) is above the 10 % bar, so the visible "Why" says
     # what its whole query did, by each statistic named
     fcl_own = recorded.query_ratios(chapter05.FCL)["3dc7"]["OB"]
-    fcl_means = 1 - recorded.improvements(chapter05.FCL, "3dc7")["OB"]
     assert (
-        f"That is above the 10 % bar, but OB's whole query got {(fcl_own - 1) * 100:.0f} % slower by the median of "
-        f"its own ratios and {(fcl_means - 1) * 100:.0f} % slower by the ratio of means: the rest of the query, not "
-        "sampling, decided it."
-    ) in why
-    assert "6 % slower by the median" in why and "12 % slower by the ratio of means" in why
+        f"OB's whole query took {(fcl_own - 1) * 100:.0f} % more time instead, by the median of its own ratios." in why
+    )
+    assert "6 % more time instead" in why and "slower" not in answer and "faster" not in answer  # r47e: one statistic
     # reader r45e, 05 item 4: a map of the trainings, planners and statistics, after the answer's tables
     assert "\n\nWhich of the chapter's runs the answer reads:\n\n| what | the answer uses |" in shares
     assert "| training of `strong` | the timed one (threshold 0.63) | two more trainings" in shares
-    # reader r46e, lift 4: the three trainings, each with its threshold, in a fold under the map
-    trainings = answer.split("<details><summary>The three trainings of `strong`")[1].split("</details>")[0]
+    # reader r46e, lift 4: the three trainings, each with its threshold, in the fold (r47e: the answer's only one)
+    trainings = answer.split("The three trainings of `strong` in this chapter")[1].split("</details>")[0]
     assert "| 0.63 | the answer," in trainings and "| 0.52 | the closing fold" in trainings
     assert "| this notebook's (`trained_models`, cached) | 0.54 |" in chapter05.answer(0.54)
     assert "| planner | Algorithm 1 (planner `paper`) | §6–7: the lazy PRM's path;" in shares
     assert (
         "| statistic | the verdict: the median of each query's own ratio; the limit in **Why**: mean times |" in shares
     )
-    assert moral.count(". ") == 0 and moral.endswith("could have helped most (OB) still got slower.")
+    # reader r47e, 05 contradiction 1: the moral bounds what skipping the sample checks can save, not a query's time
+    assert moral.startswith("skipping the sample checks can save time only where") and moral.count(". ") == 1
+    assert moral.endswith("The rest of a query (another roadmap, its edges) can still change its time either way.")
     assert why.startswith("With python-fcl, sampling took at most 14 % of a 3DC-7 query")
-    assert 'saved nothing: its ratio of the means reads "costs time, within noise (1.12)"' in fold
-    assert "python-fcl on both sides: ratio of the means | a tie (0.91) | costs time, within noise (1.12) |" in answer
+    assert 'showed no saving: its ratio of the means reads "within noise (1.12)"' in fold
+    assert "python-fcl on both sides: ratio of the means | a tie (0.91) | within noise (1.12) |" in answer
     accuracy = chapter05.recorded_scores(chapter05.COMPILED)[0]["acc"]  # reader r40e, 05 lift 1: tied to the answer
     assert "The network is not wrong" not in shown  # reader r42e, 05 lift 4: said once, in the fold
     assert f"right on {accuracy:.0%} of uniform samples" in fold and 'The "No" is about cost, not accuracy.' in fold
@@ -91,13 +94,15 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
     # timing's own reach (costs.floors: the own ratio 0.82–1.18, a ratio of means 0.52–1.48), and why means move more
     own, band = chapter05.floors()["own"], chapter05.floors()["means"]
     assert np.allclose([*own, *band], [0.82, 1.18, 0.52, 1.48])  # the record's bands, as the results page draws them
-    assert 'adds "within noise": 0.82–1.18 for a median of own ratios, 0.52–1.48 for a ratio of means.' in fold
+    assert 'reads "within noise": no saving or cost shown. The bands are 0.82–1.18 for a median of own ratios, ' in fold
+    assert "0.52–1.48 for a ratio of means." in fold
     assert "twice as far from 1 as timing one computation twice moved its statistic" in fold
     assert "as measured" not in answer and "doubled" not in answer
     assert "never" not in answer  # reader r25b: python-fcl's medians 0.94 and 0.99 are shorter, only not by 10 %
     # reader r25b: the paper's side, Table 3's 3DC-7 total times (-2 %, 14 %, -9 %, 54 %)
-    assert "The paper's Table 3 says yes for OB and BT (14% and 54% less total time)" in tables
-    assert "BS and G are ties (2% more and 9% more)." in tables and "no for" not in tables  # reader r44e, item 3
+    # common47 rule 1: Table 3 quoted exactly (less / more time), the 10 % tie band named as ours
+    assert "The paper's Table 3 gives OB and BT 14% and 54% less total time, and BS and G 2% and 9% more" in tables
+    assert "; read with our 10% tie band, BS and G are ties." in tables and "no for" not in tables  # r44e, item 3
     # reader r29e: which source the paper's sampling ratios are, and what its text's means give
     assert (
         "(0.51 / 0.42 / 0.49 / 0.39); the mean sampling times its text prints (§V) give 0.43 / 0.45 / 0.44 / 0.40, "
@@ -117,8 +122,9 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
 
 def test_a_ratio_of_two_medians_within_timing_noise_reads_within_noise():
     row = chapter05._noise_row("r", {"BS": 0.83, "OB": 1.5, "G": 1.07, "BT": 0.69}, band=(0.70, 1.30))
-    noise = "within noise"  # reader r38e, 05 contradiction 2: a saving or cost within noise says both, a tie is one
-    assert row == f"| r | saves time, {noise} (0.83) | costs time (1.50) | a tie (1.07) | saves time (0.69) |"
+    noise = "within noise"  # reader r47e, 05 contradiction 2: a saving inside the noise band is no saving shown, so
+    # it reads "within noise" alone (no "saves" under the answer's "No"); a tie reads by the tie band
+    assert row == f"| r | {noise} (0.83) | costs time (1.50) | a tie (1.07) | saves time (0.69) |"
     # reader r43e, 05 contradiction 4: the fold's last row reads against its own band; reader r46e, 05 item 3: with
     # the labels the other rows use ("saves time"/"a tie", "within noise" inside 0.40–1.60) and its checker named
     assert "floor" not in chapter05.time_tables()
@@ -127,11 +133,12 @@ def test_a_ratio_of_two_medians_within_timing_noise_reads_within_noise():
     last = next(line for line in chapter05.time_tables().splitlines() if "ratio of the two medians |" in line)
     assert last == (
         "| 3DC-7, `strong` network, our compiled checker, Algorithm 1: ratio of the two medians "
-        f"| saves time, {noise} (0.83) | costs time, {noise} (1.50) | a tie (1.07) | costs time (1.67) |"
+        f"| {noise} (0.83) | {noise} (1.50) | a tie (1.07) | costs time (1.67) |"
     )
-    assert "a saving or cost in it within noise is no evidence" in chapter05.time_tables()
+    assert '"within noise" in it shows no saving or cost.' in chapter05.time_tables()
     assert "its noise band is 0.40–1.60; a ratio of means reads against 0.52–1.48" in chapter05.time_tables()
-    assert "| saves time, within noise (0.79) | costs time, within noise (1.35) |" in chapter05.time_tables()
+    assert "| within noise (0.79) | within noise (1.35) |" in chapter05.time_tables()
+    assert "saves time, within noise" not in chapter05.time_tables() + chapter05.answer()
     assert "its one saving by means" not in chapter05.time_tables()  # 0.79 is inside the means' band: no evidence
 
 
@@ -232,6 +239,13 @@ def test_screening_counts_the_points_the_lazy_prm_asked_the_model_about_on_the_p
     assert said.endswith("An edge is dropped when more than 90% of its points are called colliding.")
     rows = [line.split("|")[1:-1] for line in chapter05_runs.screening(result, Model(np.inf)).splitlines()[2:3]]
     assert [cell.strip() for cell in rows[0]] == ["2", points, points, "100%"]  # every point called colliding
+    # reader r47e, 05 item 3: the plain line under §7's table reads the same counts (a real path, no stand-in)
+    none = chapter05_runs.path_mistakes(result, Model(-np.inf), np.zeros(11, bool))
+    assert none.startswith(
+        f"None of the 11 frames falls below the threshold, and screening called 0 of the path's {points}"
+    )
+    dropped = chapter05_runs.path_mistakes(result, Model(np.inf), np.ones(11, bool))  # every point called colliding
+    assert "cost this path no edge" not in dropped and "They would cost an edge of this path" in dropped
     # reader r36e, item 2: the open text says whether a frame below the threshold was one of those points
     from toolkit.planning.local_planner import path_at
 
@@ -301,16 +315,22 @@ def test_the_answer_gives_the_share_of_a_query_sampling_takes_without_the_networ
     assert sorted(shares) == sorted(chapter05.SAMPLERS) and max(shares.values()) < 0.5
     answer = chapter05.answer()
     cut = recorded.improvements(chapter05.FCL, "3dc7", "sampling")  # reader r31e: share times cut, per sampler
-    front = answer.split("<details>")[0]  # reader r44e, item 1: open, not folded
-    assert f"the network cut sampling time by {chapter05.span(cut, 100, 0)} % (means)" in front
-    assert all(f"| {s} | {shares[s]:.1%} | {cut[s]:.0%} | {shares[s] * cut[s]:.1%} |" in front for s in shares)
+    # reader r44e, item 1: the table under "Why"; reader r47e, lift 2: the first thing in the answer's one fold, "Why"
+    # giving its largest share and limit in view
+    front, fold = answer.split("<details>")
+    assert f"<summary>{chapter05.DETAILS}</summary>\n\nWith python-fcl the network cut sampling time by" in fold
+    assert f"the network cut sampling time by {chapter05.span(cut, 100, 0)} % (means)" in fold
+    assert all(f"| {s} | {shares[s]:.1%} | {cut[s]:.0%} | {shares[s] * cut[s]:.1%} |" in fold for s in shares)
+    best = max(shares, key=lambda s: shares[s] * cut[s])
+    assert f"at most {max(shares.values()):.0%} of a 3DC-7 query".replace("%", " %") in front
+    assert f"at most {shares[best] * cut[best]:.0%} off a query ({best}".replace("%", " %") in front
     assert chapter05.check_costs() in answer
 
 
 def test_the_closing_tells_no_longer_query_inside_the_means_band_and_sets_the_medians_row_apart():
     """Reader r32e told OB's python-fcl query, 12 % longer by means although its sampling got faster, as a change
     bigger than sampling allows. Wave 24: a ratio of means reads against 0.52–1.48, so OB's 1.12 is within noise, no
-    evidence: the closing tells no such story, and the answer's fold reads it "costs time, within noise". The folded
+    evidence: the closing tells no such story, and the answer's fold reads it "within noise". The folded
     ratio of two medians is not one of the answer's statistics."""
     said = " ".join(chapter05.time_tables().split())
     fcl_sampling = recorded.improvements(chapter05.FCL, chapter05.SCENARIO, "sampling")
@@ -321,8 +341,8 @@ def test_the_closing_tells_no_longer_query_inside_the_means_band_and_sets_the_me
     assert "took 12% longer" not in said and "bigger than sampling allows" not in said
     assert chapter05._longer({s: 1 - v for s, v in means.items()}, fcl_sampling) == ""
     beyond = chapter05._longer({"BS": 1.0, "OB": 1.6, "G": 1.0, "BT": 1.0}, fcl_sampling)  # a cost beyond the band
-    assert beyond.startswith(" With python-fcl, by the ratio of the means, OB's queries even took 60% longer")
-    assert 'its ratio of the means reads "costs time, within noise (1.12)"' in chapter05.answer()
+    assert beyond.startswith(" With python-fcl, by the ratio of the means, OB's queries even took 60% more time")
+    assert 'its ratio of the means reads "within noise (1.12)"' in chapter05.answer()  # r47e: not "costs time"
     assert "That last row is not a statistic of the answer at the top" in said
 
 
@@ -351,3 +371,35 @@ def test_the_closing_applies_the_home_pages_test_to_the_papers_own_row():
     assert f"From the two unrounded rates, one python-fcl check takes as long as about {product:.0f} compiled" in (
         " ".join(chapter05.answer().split())
     )
+
+
+def test_section_7_says_plainly_whether_the_model_cost_the_path_an_edge(monkeypatch):
+    """Reader r47e, 05 contradiction 3: §6 promised that §7 says whether a conservative mistake cost the lazy PRM an
+    edge; §7 showed 0 frames below the threshold and never said so in a sentence."""
+    counts = (np.array([5, 7]), np.array([0, 0]), np.array([0.0, 0.0]), 0.5)  # screened, called, shares, reject
+    monkeypatch.setattr(chapter05_runs, "_screened", lambda result, model: counts)
+    assert chapter05_runs.path_mistakes(None, None, np.zeros(90, bool)) == (
+        "None of the 90 frames falls below the threshold, and screening called 0 of the path's 12 screened points "
+        "colliding: no conservative mistake at any of them, so the model cost this path no edge."
+    )
+    below = np.zeros(90, bool)
+    below[[3, 4]] = True
+    said = chapter05_runs.path_mistakes(None, None, below)
+    assert said.startswith("2 of the 90 frames fall below the threshold") and "cost this path no edge" not in said
+    assert said.endswith("screening drops an edge only where more than 50% of its points are called colliding.")
+
+
+def test_a_share_is_printed_rounded_half_up():
+    """Reader r47e, 05 item 4: 1897 of 2000 right is 94.85 %, which Python's ``:.1%`` prints as 94.8 %."""
+    right = np.arange(2000) < 1897
+    assert f"{right.mean():.1%}" == "94.8%" and chapter05_accuracy.percent(right.mean()) == "94.9%"
+    assert [chapter05_accuracy.percent(v, d) for v, d in ((0.7445, 1), (1.0, 0), (0.0, 0), (0.945, 1))] == [
+        "74.5%",
+        "100%",
+        "0%",
+        "94.5%",
+    ]
+    valid, predicted = np.arange(2000) < 1489, np.arange(2000) < 1401  # 88 conservative mistakes, none dangerous
+    scores = {"acc": right.mean(), "tpr": 1401 / 1489, "tnr": 1.0}
+    table = chapter05_runs.truth_vs_prediction(valid, predicted, scores, 0.54, np.ones(2000), np.zeros(2000, bool), 0.2)
+    assert "accuracy **94.9%**, TPR 94.1%, TNR 100.0%" in table

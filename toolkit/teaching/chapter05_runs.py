@@ -11,6 +11,7 @@ import numpy as np
 
 from toolkit.teaching import chapter05
 from toolkit.teaching.chapter05 import SCENARIO
+from toolkit.teaching.chapter05_accuracy import percent
 
 
 def plan_tables(result) -> str:
@@ -107,10 +108,10 @@ def _frames_from(frame: int, tightest: int) -> str:
     )
 
 
-def screening(result, model) -> str:
-    """§7's reading of a kept edge: how the lazy PRM's learned edge screening saw the edges of ``result``'s path (a
-    ``PlanResult``): the points it asked ``model`` about, how many the model called colliding, and the most on one
-    edge, and the share above which screening drops an edge (``LazyParams.screen_reject``), in words (r39e)."""
+def _screened(result, model) -> tuple[np.ndarray, np.ndarray, np.ndarray, float]:
+    """How the lazy PRM's learned edge screening saw the edges of ``result``'s path (a ``PlanResult``): per edge, the
+    points it asked ``model`` about, how many the model called colliding and their share; and the share above which
+    screening drops an edge (``LazyParams.screen_reject``)."""
     from toolkit import scenarios
     from toolkit.experiments.problems import make_planner, scenario_resolution
     from toolkit.planning.local_planner import invalid_fractions, step_counts
@@ -122,11 +123,37 @@ def screening(result, model) -> str:
     fraction, _ = invalid_fractions(model, Q0, Q1, spacing)  # (E,) share of each edge's screened points
     points = np.maximum(step_counts(model.robot, Q0, Q1, spacing) - 1, 0)  # (E,) screened points per edge
     called = np.rint(fraction * points).astype(int)  # (E,) of those, called colliding by the model
+    return points, called, fraction, params.screen_reject
+
+
+def screening(result, model) -> str:
+    """§7's reading of a kept edge (:func:`_screened`), in a table and a line (r39e)."""
+    points, called, fraction, reject = _screened(result, model)
     return (
         "| path edges | points screening asked the model about | called colliding | most on one edge |\n"
         "| ---: | ---: | ---: | ---: |\n"
-        f"| {len(Q0)} | {points.sum()} | {called.sum()} | {fraction.max(initial=0.0):.0%} |\n\n"
-        f"An edge is dropped when more than {params.screen_reject:.0%} of its points are called colliding."
+        f"| {len(points)} | {points.sum()} | {called.sum()} | {fraction.max(initial=0.0):.0%} |\n\n"
+        f"An edge is dropped when more than {reject:.0%} of its points are called colliding."
+    )
+
+
+def path_mistakes(result, model, below: np.ndarray) -> str:
+    """§7's plain answer to §6's question (reader r47e, 05 item 3): did the model call the valid robot colliding on
+    ``result``'s path, at its frames (``below (F,)``: P(valid) under the threshold) or at the points screening asked
+    it about, and could that have cost the path an edge."""
+    points, called, fraction, reject = _screened(result, model)
+    frames = int(np.sum(below))
+    said = (
+        f"{frames or 'None'} of the {len(below)} frames {'falls' if frames <= 1 else 'fall'} below the "
+        f"threshold, and screening called {called.sum()} of the path's {points.sum()} screened points colliding"
+    )
+    if not frames and not called.sum():
+        return said + ": no conservative mistake at any of them, so the model cost this path no edge."
+    kept = fraction.max(initial=0.0) <= reject  # a returned path's edges always are: screening kept them
+    return said + (
+        f": conservative mistakes, where the robot is valid. {'They cost' if kept else 'They would cost'} "
+        f"{'no' if kept else 'an'} edge of this path: screening drops an edge only where more than {reject:.0%} of "
+        "its points are called colliding."
     )
 
 
@@ -209,9 +236,10 @@ def truth_vs_prediction(
         )
     return (
         "| samples | count | share |\n| --- | ---: | ---: |\n"
-        + "\n".join(f"| {kind} | {mask.sum()} | {mask.mean():.1%} |" for kind, mask in masks.items())
-        + f"\n\naccuracy **{scores['acc']:.1%}**, TPR {scores['tpr']:.1%}, TNR {scores['tnr']:.1%} "
-        f'(threshold {threshold:.2f}); answering "valid" to all {len(valid)} of these samples: {valid.mean():.1%}\n\n'
+        + "\n".join(f"| {kind} | {mask.sum()} | {percent(mask.mean())} |" for kind, mask in masks.items())
+        + f"\n\naccuracy **{percent(scores['acc'])}**, TPR {percent(scores['tpr'])}, TNR {percent(scores['tnr'])} "
+        f'(threshold {threshold:.2f}); answering "valid" to all {len(valid)} of these samples: {percent(valid.mean())}'
+        "\n\n"
         "| where the samples lie | the model right | the model wrong |\n| --- | ---: | ---: |\n"
         f"| valid: median clearance bound (workspace units) | {median_room(circles)} (circles) "
         f"| {median_room(conservative)} (conservative) |\n"
