@@ -1463,6 +1463,13 @@ def test_reader_r34g_one_cost_per_check_equal_call_sizes_and_the_paper_s_total_t
         f"The paper's Table 3 (its Total Time column, of means) saved 10 % or more of a whole query in {saved} of "
         f"{len(paper)} cells, up to {100 * max(paper):.0f} %"
     ) in flat
+    # common47 rule 1: Table 3 quoted whole, the cells that saved some time and the 3 that took more
+    lost = [-v for v in paper if v < 0]
+    assert (
+        f"and some time in {sum(v > 0 for v in paper)}; its other {len(lost)} cells took "
+        f"{100 * min(lost):.0f}–{100 * max(lost):.0f} % more time (3DO BT's "
+        f"{-100 * IMPROVEMENT['3do']['total']['BT']:.0f} % the paper calls a slow-down)" in flat
+    )
     assert flat.index("*Key.*") < flat.index("**What the paper's claim needs")
     assert "How to read this page](#" not in flat
 
