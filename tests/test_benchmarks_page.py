@@ -368,6 +368,14 @@ def test_the_crossover_figures_are_its_table():
     assert not any(_close(sweep).any() for sweep in CROSSOVER["variables"].values())
     assert 'Its column "can\'t tell" is left out: no point fell there.' in " ".join(PAGE.split())  # reader r47g, 6
     assert "can't tell" not in tables()[1][0] and "hatched" not in PAGE
+    # reader r47g, crossover figure: the call size of each panel from the sweep's record; the network's triangles as
+    # drawn (filled in its colour, edged), not "outlined"
+    caption = " ".join(PAGE.partition("*Cost per check, not planning time:")[2].partition(".*")[0].split())
+    assert (
+        f"at {CROSSOVER['batch']:,} configurations a call (the mesh panel at {CROSSOVER['mesh_batch']:,}; the last "
+        "panel varies it)" in caption
+    )
+    assert "orange triangles with a dark edge on a thick line, the network" in caption and "outlined" not in PAGE
     grown = {k.split()[0]: numbers(k.partition("(")[2]) for k in dearer}  # "obstacles (10–500 blocks)": 10, 500
     for key in ("obstacles", "links", "configurations"):  # "Among 10–500 blocks, on chains of 2–16 links, in small
         assert dearer[next(k for k in dearer if k.startswith(key))].startswith("every size")  # calls and large ..."
