@@ -468,6 +468,11 @@ def test_the_planner_figures_are_the_race_tables():
         "network's saving measured against Algorithm 1 says little and the lazy PRM is the baseline to quote"
     ) in RACE_SUMMARY
     flat_race = " ".join(RACE.split())
+    # reader r47g, race 4: the benchmarks page's python-fcl saving is against Algorithm 1, said on both pages
+    assert "is of Algorithm 1 too: no lazy-PRM run had python-fcl on both sides." in flat_race
+    assert "Every python-fcl count is of Algorithm 1, the only planner run with python-fcl on both sides" in " ".join(
+        PAGE.split()
+    )
     assert 'its step 4 reads "Feed S′ into a standard PRM approach to yield a valid roadmap R"' in flat_race
     # reader r45g, race 6: the fastest planner a network can drive; the sampling stage shortened by cheaper checks
     assert "the planner a network drives" not in RACE and "our lazy PRM, the fastest planner a network can drive" in (
