@@ -393,3 +393,17 @@ def test_figures_2_and_3_take_no_verdict_colour_no_square_like_plus_and_draw_the
     # reader r43f, figures: the python-fcl series in a colour Figure 1 never uses (nor orange, vermillion's neighbour)
     fcl = [h for h in handles if "python-fcl" in str(h.get_label())]
     assert fcl and all(str(h.get_color()).lower() not in (OKABE_ITO["orange"], OKABE_ITO["vermillion"]) for h in fcl)
+
+
+def test_figure_1_says_which_legend_looks_no_point_takes():
+    """Reader r47f, Figure 1: the legend keys a filled "saves" triangle and a hollow "costs" circle that no point takes;
+    the caption says so, from the record (0 filled savings, 0 hollow costs), and no look a point does take."""
+    tables = recorded_results.parse(TEXT)
+    filled = [m for by in results_noise.own_intervals(tables).values() for m, _, _ in by.values()]
+    hollow = [
+        m
+        for by in results_noise.own_intervals(tables, "strong --planner paper --baseline paper-fcl-alike").values()
+        for m, _, _ in by.values()
+    ]
+    assert min(filled) > 0.9 and max(hollow) < 1.1  # none filled saves, none hollow costs (the tie band: 0.90-1.10)
+    assert "The legend keys every look: no filled point saves time and no hollow point costs time." in CLAIM

@@ -252,7 +252,7 @@ def claim_markdown(text: str) -> str:
         "Each point is the median of those ratios over 100 queries a scenario (the same for each sampler), its whisker "
         "their middle half. *Shape and colour = verdict, fill = checker*: filled, our compiled checker; hollow, "
         "python-fcl on both sides. The table of counts under the answer, at the top of the page, counts these points "
-        "(its columns “by own ratio”)."
+        "(its columns “by own ratio”)." + unused_looks(tables)
     )
     edge_said = (  # reader r39f, item 1: the band by its one name, defined in the table under the summary
         " Inside the noise band of this ratio (hatched, dashed edges), a cost or saving is no clear evidence: "
@@ -265,6 +265,20 @@ def claim_markdown(text: str) -> str:
     described = alt.details_html(alt.details(fig)).strip()
     picture = f"![{html.escape(alt.alt_text(fig))}]({CLAIM_FIGURE.name})"
     return f"{lead}\n\n{picture}\n\n{caption}{edge_said}\n\n{described}"
+
+
+def unused_looks(tables: Tables) -> str:
+    """Reader r47f, Figure 1: the legend keys every look, some of which no point takes (no filled triangle, no hollow
+    circle); said under the figure, computed, so a student does not look for them."""
+    looks = {"less time": "saves time", "more time": "costs time"}
+    runs = (("filled", recorded.ALGORITHM_1), ("hollow", checker_scope.SLOW))
+    missing = [
+        f"no {fill} point {said}"
+        for fill, key in runs
+        for verdict, said in looks.items()
+        if all(change(m) != verdict for by in own_intervals(tables, key).values() for m, _, _ in by.values())
+    ]
+    return f" The legend keys every look: {' and '.join(missing)}." if missing else ""
 
 
 def furthest_apart(tables: Tables) -> tuple[str, str, float, float]:
