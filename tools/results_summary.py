@@ -270,7 +270,8 @@ def by_means_inside(tables: Tables) -> str:
     # reader r45f, item 1: the means do not overrule the own ratio; they only cannot tell these cells from noise
     return (
         f" By means (Table 3's statistic), python-fcl's "
-        f"{'clear saving reads' if len(far) == 1 else f'{len(far)} clear savings read'} {cells}: "
+        f"{'saving' if len(far) == 1 else f'{len(far)} savings'} beyond the noise band of their own ratio "
+        f"{'reads' if len(far) == 1 else 'read'} {cells}: "
         f"{'a saving' if len(far) == 1 else 'savings'} too, {where} the wider band of a ratio of means, "
         f"{low:.2f}–{high:.2f}. The own ratio decides; by means our runs cannot tell savings this size from timing "
         "noise."
