@@ -117,8 +117,22 @@ def test_each_panel_shades_the_tie_band_its_counts_are_read_with(drawn):
         hatched = [
             p.get_path().transformed(p.get_patch_transform()).vertices[:, 1] for p in ax.patches if p.get_hatch()
         ]
-        spans = sorted(tuple(sorted({round(y, 6) for y in ys})) for ys in hatched)  # reader r31f, item 3
+        spans = sorted({tuple(sorted({round(y, 6) for y in ys})) for ys in hatched})  # reader r31f, item 3
         assert spans == [(floor[0], 0.9), (1.1, floor[1])]
+        # reader r47f, item 5: hatched over our series' columns only, never behind the paper's diamonds
+        columns = [
+            p.get_path().transformed(p.get_patch_transform()).vertices[:, 0] for p in ax.patches if p.get_hatch()
+        ]
+        paper = [x for line in ax.get_lines() if line.get_label() == results_figures.PAPER for x in line.get_xdata()]
+        ours = [
+            x
+            for line in ax.get_lines()
+            if line.get_label() in results_figures.SOURCES and line.get_label() != results_figures.PAPER
+            for x in line.get_xdata()
+        ]
+        assert len(paper) == 4 and len(columns) == 2 * len(paper)
+        assert not any(min(xs) <= x <= max(xs) for xs in columns for x in paper)
+        assert all(any(min(xs) < x < max(xs) for xs in columns) for x in ours)
         assert "log axis" in ax.get_ylabel() or not ax.get_subplotspec().is_first_col()
     noise = f"noise band of a ratio of means, {floor[0]:.2f}–{floor[1]:.2f}"  # reader r32f, item 6: not Figure 1's band
     assert noise in [t.get_text() for t in fig.legends[0].texts] and noise in alt.alt_text(fig)
@@ -127,20 +141,23 @@ def test_each_panel_shades_the_tie_band_its_counts_are_read_with(drawn):
     left = {t.get_text() for t in fig.axes[0].get_yticklabels()}
     assert not {f"{floor[0]:g}", f"{floor[1]:g}"} & left  # reader r33f: named in the legend, not crowding the "1"
     assert f"The noise band of a ratio of means, {floor[0]:.2f}–{floor[1]:.2f} (hatched" in TEXT
-    # reader r44f, item 9: every series named by its shape too, the `paper` preset's orange crosses apart from Figure
-    # 1's vermillion, whose circle none of these takes
+    # reader r44f, item 9: every series named by its shape too; reader r47f, item 5: the `paper` preset's crosses no
+    # longer orange (read as Figure 1's vermillion "tie"), but yellow edged in black
     for name, (colour, marker) in results_figures.LOOKS.items():
-        assert marker not in "os^" and colour != OKABE_ITO["vermillion"], name
+        assert marker not in "os^" and colour not in (OKABE_ITO["vermillion"], OKABE_ITO["orange"]), name
     for words in (
         "grey diamonds, the paper",
-        "orange bold crosses (×), our `paper`-preset network",
+        "yellow bold crosses (×) edged in black, our `paper`-preset network",
         "reddish-purple stars",
         "bluish-green pentagons",
     ):
         assert words in TEXT, words
     assert "thin cross" not in TEXT  # reader r45f, item 5: the words as the picture draws them
     crosses = [line for ax in fig.axes for line in ax.get_lines() if line.get_marker() == "x"]
-    assert crosses and all(line.get_markeredgewidth() == results_figures.CROSS_WIDTH for line in crosses)
+    assert crosses and all(
+        line.get_markeredgewidth() == results_figures.CROSS_WIDTH and line.get_color() == OKABE_ITO["yellow"]
+        for line in crosses
+    )
     # reader r45f, item 5: the hatched band is ours only, not the paper's; Figure 3's alt names sampling time and its
     # band borrowed from total time
     assert "It is our machine's timing noise, not the paper's" in TEXT
@@ -376,3 +393,17 @@ def test_figures_2_and_3_take_no_verdict_colour_no_square_like_plus_and_draw_the
     # reader r43f, figures: the python-fcl series in a colour Figure 1 never uses (nor orange, vermillion's neighbour)
     fcl = [h for h in handles if "python-fcl" in str(h.get_label())]
     assert fcl and all(str(h.get_color()).lower() not in (OKABE_ITO["orange"], OKABE_ITO["vermillion"]) for h in fcl)
+
+
+def test_figure_1_says_which_legend_looks_no_point_takes():
+    """Reader r47f, Figure 1: the legend keys a filled "saves" triangle and a hollow "costs" circle that no point takes;
+    the caption says so, from the record (0 filled savings, 0 hollow costs), and no look a point does take."""
+    tables = recorded_results.parse(TEXT)
+    filled = [m for by in results_noise.own_intervals(tables).values() for m, _, _ in by.values()]
+    hollow = [
+        m
+        for by in results_noise.own_intervals(tables, "strong --planner paper --baseline paper-fcl-alike").values()
+        for m, _, _ in by.values()
+    ]
+    assert min(filled) > 0.9 and max(hollow) < 1.1  # none filled saves, none hollow costs (the tie band: 0.90-1.10)
+    assert "The legend keys every look: no filled point saves time and no hollow point costs time." in CLAIM

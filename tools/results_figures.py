@@ -11,13 +11,16 @@ from __future__ import annotations
 import html
 import math
 
+import numpy as np
+from matplotlib import patheffects
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
+from matplotlib.patches import Rectangle
 from matplotlib.ticker import NullFormatter, NullLocator
 
 from toolkit.experiments.paper_numbers import IMPROVEMENT
 from toolkit.plots import alt, query_ratios
-from toolkit.plots.palette import LINE_COLORS, OKABE_ITO
+from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO
 from toolkit.teaching import checker_scope, costs, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
@@ -35,11 +38,12 @@ TICKS = {"total": (), "sampling": (3.0,)}  # labelled beside each figure's 1-2-5
 MARGINS = {"total": 1.15, "sampling": 1.25}  # each figure's range: its points', widened by this factor
 ROW_HEIGHTS = {"total": 3.3, "sampling": 3.2}  # inches a row of panels: each band is read to 0.9 and 1.1 (r27f)
 KEY = (  # under Figure 2 (reader r31f, item 3): its marks are not Figure 1's verdicts; r39f, item 7: one colour each;
-    # reader r44f, item 9: each series named by its shape, the `paper` preset's orange crosses apart from vermillion
-    " Here colour and shape name a series, not a verdict as in Figure 1: grey diamonds, the paper; orange bold crosses "
-    "(×), our `paper`-preset network; reddish-purple stars, the `strong` network with our compiled checker; "
+    # reader r44f, item 9: each series named by its shape; reader r47f, item 5: its crosses yellow, not orange
+    " Here colour and shape name a series, not a verdict as in Figure 1: grey diamonds, the paper; yellow bold "
+    "crosses (×) edged in black, our `paper`-preset network; reddish-purple stars, the `strong` network with our "
+    "compiled checker; "
     "bluish-green pentagons, the `strong` network with python-fcl. No series takes Figure 1's blue, black or "
-    "vermillion, nor its circle, square or triangle."
+    "vermillion (nor orange, its neighbour), nor its circle, square or triangle."
 )
 CLAIM_FIGURE = RESULTS.parent / "results_claim.png"  # Figure 1: the statistic the verdict on the paper's claim reads
 CLAIM_BEGIN = "<!-- figure of the claim: drawn by `python -m tools.results_summary` from the tables below -->"
@@ -102,10 +106,12 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
 
 
 BAND_WORDS = "timing alone moved a ratio of means that far"  # toolkit.plots.ratio_bands' words for the hatched band
-BAND_SAID = {  # reader r45f, item 5: the band is our timing's, not the paper's; Figure 3's is built on total times
-    "total": BAND_WORDS + " on our machine (our series only: the paper's points are not read against it)",
-    "sampling": "timing alone moved a ratio of mean total times that far on our machine, borrowed here for sampling "
-    "times (no band was measured for sampling; our series only)",
+BAND_SAID = {  # reader r45f, item 5: the band is our timing's, not the paper's; Figure 3's is built on total times;
+    # reader r47f, item 2 (common rule 3): twice how far timing alone moved the ratio, not how far
+    "total": "twice how far timing alone moved a ratio of means on our machine, hatched over our series only (the "
+    "paper's points are not read against it)",
+    "sampling": "twice how far timing alone moved a ratio of mean total times on our machine, borrowed here for "
+    "sampling times (no band was measured for sampling) and hatched over our series only",
 }
 
 
@@ -118,15 +124,20 @@ def worded(fig: Figure, kind: str) -> Figure:
     return alt.describe(fig, text, getattr(fig, alt.DETAILS, ()))
 
 
-MARKER_SCALE = 0.85  # Figures 2-3's markers, a little smaller than means_grid draws them, so neighbours stand apart
+MARKER_SCALE = {"total": 0.85, "sampling": 0.75}  # Figures 2-3's markers, smaller than means_grid draws them, so
+# neighbours stand apart (reader r47f, item 5: Figure 3's 2DS BT trio nearly touched)
+SPREAD = {"total": 1.0, "sampling": 1.07}  # a sampler's points spread this much wider than means_grid's
 LOOKS = {  # reader r42f, figures: no blue (Figure 1's "costs time") and no square-like plus (its "tie" square)
     # reader r43f, figures: python-fcl's orange downward triangle read as Figure 1's black "saves" triangle, its orange
     # as Figure 1's vermillion "tie": now a colour and a shape Figure 1 never uses, bluish green pentagons; the
     # paper-preset series takes the orange, as a thin cross, a shape no Figure 1 square or triangle resembles
-    "ours, paper-preset network, compiled checker of 2 December": (OKABE_ITO["orange"], "x"),  # orange, bold cross
+    # reader r47f, item 5: orange still read as Figure 1's vermillion "tie"; now yellow, edged in black
+    "ours, paper-preset network, compiled checker of 2 December": (OKABE_ITO["yellow"], "x"),  # yellow, bold cross
     "ours, accurate strong network, python-fcl on both sides": (LINE_COLORS[3], "p"),  # bluish green, pentagon
 }  # the other two keep means_grid's look: the paper's grey diamonds, the `strong` network's reddish purple stars
 CROSS_WIDTH = 2.4  # points: a cross is all edge, drawn this thick (bold, as the key says) beside the filled markers
+CROSS_SCALE = 1.15  # a bold cross's arms fill less of its box than a filled marker: drawn this much larger
+CROSS_EDGE = 0.7  # points: the yellow cross's black edge, so it stands 3:1 on white (yellow alone is 1.2:1)
 MARKER_Z = 4  # over every band and hatch (reader r42f: Figure 3's hatching read as covering the markers inside it)
 TIE_TICKS = {"total": False, "sampling": False}  # reader r42f: 0.9 and 1.1 crowd the "1"; the legend names them
 
@@ -143,7 +154,9 @@ def readable(fig: Figure, floor: tuple[float, float], kind: str = "total") -> Fi
         ax.tick_params(axis="y", labelleft=True)
         for line in ax.lines:
             if line.get_marker() not in ("None", None, ""):
-                line.set_markersize(line.get_markersize() * MARKER_SCALE)
+                line.set_markersize(line.get_markersize() * MARKER_SCALE[kind])
+                x = [float(v) for v in np.asarray(line.get_xdata())]
+                line.set_xdata([round(v) + (v - round(v)) * SPREAD[kind] for v in x])
                 line.set_zorder(MARKER_Z)
                 restyle(line)
         if TIE_TICKS[kind]:
@@ -152,6 +165,7 @@ def readable(fig: Figure, floor: tuple[float, float], kind: str = "total") -> Fi
             ticks = [t for t in ticks if low <= t <= high]
             ax.set_yticks(ticks, [f"{t:g}" for t in ticks])
             ax.yaxis.set_minor_formatter(NullFormatter())
+        clear_of_paper(ax, floor)
         spec = ax.get_subplotspec()
         if spec is not None and spec.colspan.start == 1:  # a right-hand panel: the band's edges beside it, outside
             edges = ax.secondary_yaxis("right")
@@ -167,6 +181,28 @@ def readable(fig: Figure, floor: tuple[float, float], kind: str = "total") -> Fi
     return fig
 
 
+def clear_of_paper(ax, floor: tuple[float, float]) -> None:
+    """Reader r47f, item 5: the noise band of a ratio of means is our machine's, so it is hatched over our series'
+    columns only, not behind the paper's diamonds: means_grid's hatch and dotted edges across the panel are drawn
+    again from halfway between each sampler's diamond and our first point to the sampler's right-hand edge."""
+    for patch in [p for p in ax.patches if p.get_hatch()]:
+        patch.remove()
+    for line in [line for line in ax.lines if line.get_linestyle() == ":"]:
+        line.remove()
+    paper = next(line for line in ax.lines if line.get_label() == PAPER)
+    ours = sorted({float(v) for line in ax.lines if line.get_label() in SOURCES for v in line.get_xdata()})
+    for x in paper.get_xdata():
+        start = (x + min(v for v in ours if v > x)) / 2
+        end = round(x) + 0.5
+        for low, high in ((floor[0], 1 - findings.TIE), (1 + findings.TIE, floor[1])):
+            ax.add_patch(Rectangle((start, low), end - start, high - low, **HATCHED))  # type: ignore[arg-type]
+        ax.hlines(list(floor), start, end, colors=COLORS["reference"], linestyles=":", linewidth=1.0, zorder=0.5)
+
+
+PAPER = next(name for name, preset in SOURCES.items() if preset is None)  # the paper's own series
+HATCHED = dict(facecolor="none", edgecolor=COLORS["reference"], hatch=query_ratios.NOISE_HATCH, linewidth=0, zorder=0)
+
+
 def restyle(line: Line2D, name: str | None = None) -> None:
     """A series' point or legend handle in its :data:`LOOKS` colour and marker, by its series' ``name`` (its label)."""
     look = LOOKS.get(name if name is not None else str(line.get_label()))
@@ -177,8 +213,12 @@ def restyle(line: Line2D, name: str | None = None) -> None:
     line.set_color(colour)
     line.set_markerfacecolor(colour)
     line.set_markeredgecolor(colour)
-    if marker == "x":
+    if marker == "x":  # reader r47f, item 5: yellow, bold, edged in black (a ring just wider than the cross's arms)
         line.set_markeredgewidth(CROSS_WIDTH)
+        line.set_path_effects(
+            [patheffects.Stroke(linewidth=CROSS_WIDTH + 2 * CROSS_EDGE, foreground=COLORS["ink"]), patheffects.Normal()]
+        )
+        line.set_markersize(line.get_markersize() * CROSS_SCALE)
 
 
 def claim_figure(text: str) -> Figure:
@@ -212,7 +252,7 @@ def claim_markdown(text: str) -> str:
         "Each point is the median of those ratios over 100 queries a scenario (the same for each sampler), its whisker "
         "their middle half. *Shape and colour = verdict, fill = checker*: filled, our compiled checker; hollow, "
         "python-fcl on both sides. The table of counts under the answer, at the top of the page, counts these points "
-        "(its columns “by own ratio”)."
+        "(its columns “by own ratio”)." + unused_looks(tables)
     )
     edge_said = (  # reader r39f, item 1: the band by its one name, defined in the table under the summary
         " Inside the noise band of this ratio (hatched, dashed edges), a cost or saving is no clear evidence: "
@@ -225,6 +265,20 @@ def claim_markdown(text: str) -> str:
     described = alt.details_html(alt.details(fig)).strip()
     picture = f"![{html.escape(alt.alt_text(fig))}]({CLAIM_FIGURE.name})"
     return f"{lead}\n\n{picture}\n\n{caption}{edge_said}\n\n{described}"
+
+
+def unused_looks(tables: Tables) -> str:
+    """Reader r47f, Figure 1: the legend keys every look, some of which no point takes (no filled triangle, no hollow
+    circle); said under the figure, computed, so a student does not look for them."""
+    looks = {"less time": "saves time", "more time": "costs time"}
+    runs = (("filled", recorded.ALGORITHM_1), ("hollow", checker_scope.SLOW))
+    missing = [
+        f"no {fill} point {said}"
+        for fill, key in runs
+        for verdict, said in looks.items()
+        if all(change(m) != verdict for by in own_intervals(tables, key).values() for m, _, _ in by.values())
+    ]
+    return f" The legend keys every look: {' and '.join(missing)}." if missing else ""
 
 
 def furthest_apart(tables: Tables) -> tuple[str, str, float, float]:
@@ -283,7 +337,7 @@ def figure_markdown(text: str, kind: str = "total") -> str:
         f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule. The noise band of a ratio of means, "
         f"{floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched, dotted edges; built as the table of bands under "
         "Figure 1 says), sets a single cell of ours apart only beyond it. It is our machine's timing noise, not the "
-        "paper's: the paper's diamonds are drawn over it but not read against it." + KEY
+        "paper's: it is hatched over our series only, not behind the paper's diamonds." + KEY
         if kind == "total"
         else f"*{kind.capitalize()} time*, counted as in Figure 2. {sampling_takeaway(counts)} The hatched band is "
         "Figure 2's, built on whole queries' total times (the table “timed twice” holds total times only) and "
