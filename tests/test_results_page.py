@@ -1063,7 +1063,7 @@ def test_the_five_bands_near_1_are_set_side_by_side_where_the_first_appears():
     assert "doubled" not in said and "as measured" not in said and "already past the tie band" not in said
     assert f"The noise band of a ratio of means, {floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched" in TEXT
     assert f"ratio of medians, {floor.medians[0]:.2f}–{floor.medians[1]:.2f} (twice how far timing alone" in TEXT
-    assert "timing alone moved a ratio of means that far" not in TEXT  # reader r47f, contradiction 2 (rule 3)
+    assert ": timing alone moved a ratio of means that far" not in TEXT  # reader r47f, contradiction 2 (rule 3)
     assert "timing alone moved that ratio" not in TEXT.replace("twice how far timing alone moved that ratio", "")
     # why a ratio of means moves further than an own ratio: one plain sentence under the table's lead
     assert "a few slow queries weigh on a mean, while an own ratio divides one query's two times" in said

@@ -105,11 +105,10 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
     return worded(readable(fig, floor, kind), kind)
 
 
-BAND_WORDS = "timing alone moved a ratio of means that far"  # toolkit.plots.ratio_bands' words for the hatched band
+BAND_WORDS = "twice how far timing alone moved a ratio of means"  # ratio_bands.NOISE_WORDS' words for the hatch
 BAND_SAID = {  # reader r45f, item 5: the band is our timing's, not the paper's; Figure 3's is built on total times;
     # reader r47f, item 2 (common rule 3): twice how far timing alone moved the ratio, not how far
-    "total": "twice how far timing alone moved a ratio of means on our machine, hatched over our series only (the "
-    "paper's points are not read against it)",
+    "total": BAND_WORDS + " on our machine, hatched over our series only (the paper's points are not read against it)",
     "sampling": "twice how far timing alone moved a ratio of mean total times on our machine, borrowed here for "
     "sampling times (no band was measured for sampling) and hatched over our series only",
 }
@@ -118,7 +117,10 @@ BAND_SAID = {  # reader r45f, item 5: the band is our timing's, not the paper's;
 def worded(fig: Figure, kind: str) -> Figure:
     """Reader r45f, item 5: the text alternative says which time the figure shows (Figure 3's is sampling time, not
     planning time) and what its hatched band is: our timing noise, and for Figure 3 the total time's band borrowed."""
-    text = alt.alt_text(fig).replace(BAND_WORDS, BAND_SAID[kind])
+    text = alt.alt_text(fig)
+    if BAND_WORDS not in text:  # the hatch's words come from ratio_bands.NOISE_WORDS: the two change together
+        raise ValueError(f"the figure's text alternative no longer says {BAND_WORDS!r}; update BAND_WORDS")
+    text = text.replace(BAND_WORDS, BAND_SAID[kind])
     if kind == "sampling":
         text = text.replace("Mean planning time with prediction", "Mean sampling time with prediction", 1)
     return alt.describe(fig, text, getattr(fig, alt.DETAILS, ()))

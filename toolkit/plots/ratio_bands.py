@@ -27,7 +27,7 @@ def edge_labels(ax, edges: list[float], name: str = "") -> None:
 
 
 NOISE_WORDS = (  # means_grid's hatching, told apart from own_ratios' (reader r32f: one hatch meant two bands)
-    "noise band of a ratio of means, {low:.2f}–{high:.2f}: timing alone moved a ratio of means that far"
+    "noise band of a ratio of means, {low:.2f}–{high:.2f}: twice how far timing alone moved a ratio of means"
 )
 EDGE_WORDS = "noise band of this ratio, {low:.2f}–{high:.2f}: a cost or saving there is no clear evidence"
 EDGE_HATCH, NOISE_HATCH = "///", "\\\\\\"  # own_ratios' noise band; means_grid's, the other slant
