@@ -189,7 +189,7 @@ def test_the_why_names_the_ablations_largest_steps_by_their_measure_as_the_table
     nb = json.loads((ROOT / "notebooks" / "03_mlp_decision_boundaries.ipynb").read_text())
     texts = [" ".join("".join(cell["source"]).split()) for cell in nb["cells"]]
     verdict = texts[0]
-    why = next(k for k, t in enumerate(texts) if t.startswith("### Why so poor? From the paper's recipe"))
+    why = next(k for k, t in enumerate(texts) if t.startswith("### From the paper's recipe to ours, one change"))
     section4 = next(k for k, t in enumerate(texts) if t.startswith("## 4."))
     assert section4 < why < next(k for k, t in enumerate(texts) if t.startswith("## 5."))  # r47c: after section 4
     assert "chapter03.ablation_steps()" in texts[why + 1] and "**Why?**" not in " ".join(texts)
