@@ -303,10 +303,9 @@ DRAWN = "this page's draw (section 4)"  # the closing table's label of this page
 
 
 def implied_shares(r: Mapping[str, float], rounding: float = 0.005) -> tuple[float, float]:
-    """The least and the most share of valid samples ``s`` for which an accuracy pooling them, ``s TPR + (1 - s)
-    TNR``, is ``r["acc"]``, each of the three rates anywhere within ``rounding`` of its printed value. ``s = (acc -
-    TNR) / (TPR - TNR)`` rises with accuracy and falls with TPR and with TNR (where acc < TPR), so its ends lie at
-    corners of that box."""
+    """The least and most share of valid samples ``s`` for which ``s TPR + (1 - s) TNR`` is ``r["acc"]``, each rate
+    within ``rounding`` of its printed value: ``s = (acc - TNR) / (TPR - TNR)`` is monotone in each (where acc < TPR),
+    so its ends lie at corners of that box."""
     acc, tpr, tnr = r["acc"], r["tpr"], r["tnr"]
     ends = [
         (a - n) / (p - n)
@@ -332,8 +331,9 @@ def pockets(valid, grid: CSpaceSlice, wrap: bool = False) -> str:
         if a and b and root[a] != root[b]:
             root = [root[b] if r == root[a] else r for r in root]
     whole = {r: sum(sizes[k - 1] for k in range(1, n + 1) if root[k] == r) for r in set(root[1:])}
-    rest = max(whole, key=whole.get) if whole else 0
-    seam, apart = [], []
+    rest = max(whole, key=lambda r: whole[r]) if whole else 0
+    seam: list[str] = []
+    apart: list[str] = []
     for k in np.argsort(-sizes, kind="stable")[1:] + 1:  # the largest region as drawn left out
         i, j = np.nonzero(labels == k)
         x, y = grid.axes[0][i], grid.axes[1][j]
