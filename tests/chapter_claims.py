@@ -495,12 +495,16 @@ def _chapter_03_verdict(nb, found: str) -> list[str]:
 
 
 CORNERS = re.compile(r"\(the (top|bottom) (left|right) corner\)")  # chapter03.pockets' words
+SEAM = "free regions cut off only as drawn, joined to the rest where alpha wraps round"  # pockets(..., wrap=True)
 
 
 def _chapter_03_corners(nb, found: str) -> list[str]:
     """Section 5's yaw x joint figure: the corners the prose names for the free triangles are the ones the printed
-    line finds in the data, as the picture draws them (reader r45c: the page named the two opposite corners)."""
-    printed = {" ".join(c) for c in CORNERS.findall(found[found.find("free regions apart from the rest") :])}
+    line finds in the data, as the picture draws them (reader r45c: the page named the two opposite corners), and the
+    prose calls them cut off only on the drawn map where the line finds them joined to the rest across α = ±π, and
+    only there (reader r47c: "apart from the rest" on a map whose α wraps round)."""
+    start = min((k for k in (found.find(SEAM), found.find("free regions apart from the rest")) if k >= 0), default=-1)
+    printed = {" ".join(c) for c in CORNERS.findall(found[start:])} if start >= 0 else set()
     named = re.search(
         r"Two corners hold outlined free triangles: the (\w+ \w+), near .*?, and the (\w+ \w+), near", prose(nb)
     )
@@ -508,6 +512,8 @@ def _chapter_03_corners(nb, found: str) -> list[str]:
         return [
             f"03: section 5 names the free triangles' corners {named and named.groups()}; the data: {sorted(printed)}"
         ]
+    if ("They are cut off only on the drawn map" in prose(nb)) != (SEAM in found):
+        return ["03: section 5 says whether the free triangles are cut off only as drawn; the printed line disagrees"]
     return []
 
 

@@ -932,9 +932,10 @@ SLICES_03 = (  # section 5's two verdicts on the full-size site of review r8b, a
     "81 conservative and 0 dangerous mistakes",
 )
 OPENING_03 = (("paper", "2DS", 55), ("strong", "2DS", 100), ("strong", "3DC-7", 96))  # the record, docs/results.md
-POCKETS_03 = (  # section 5's yaw x joint slice at full size, as chapter03.pockets words it
-    "free regions apart from the rest: 148 cells at alpha -3.11 to -2.23, joint1 -1.98 to -1.22 (the bottom left "
-    "corner); 148 cells at alpha 2.23 to 3.11, joint1 1.22 to 1.98 (the top right corner)"
+POCKETS_03 = (  # section 5's yaw x joint slice at full size, as chapter03.pockets words it (wrap=True, reader r47c)
+    "free regions cut off only as drawn, joined to the rest where alpha wraps round: 148 cells at alpha -3.11 to "
+    "-2.23, joint1 -1.98 to -1.22 (the bottom left corner); 148 cells at alpha 2.23 to "
+    "3.11, joint1 1.22 to 1.98 (the top right corner)"
 )
 PLANNED_03 = "roadmap: 203 nodes, 1 of them in collision (dangerous mistakes the planner accepted); repairs: 0"
 
@@ -948,7 +949,8 @@ def chapter_03(
     planned: str = PLANNED_03,
     blind_rates: tuple[float, float] = (0.31, 0.77),
     words: str = "",
-    corners: str = "the top right, near (α, joint) = (π, 2), and the bottom left, near (−π, −2)",
+    corners: str = "the top right, near (α, joint) = (π, 2), and the bottom left, near (−π, −2). They are cut off "
+    "only on the drawn map",
 ) -> dict:
     """A chapter 03 whose `paper` preset scores ``paper_blind`` on validity-blind samples in the table and
     ``sentence_blind`` in section 4's sentence, with TPR and TNR ``blind_rates`` there (review r16b's full-size site:
@@ -1101,6 +1103,10 @@ def test_chapter_03_names_the_free_triangles_corners_as_the_data_finds_them():
     assert problems(CH03, chapter_03(0.25, 0.25, corners=wrong)) == [
         "03: section 5 names the free triangles' corners ('top left', 'bottom right'); the data: "
         + "['bottom left', 'top right']"
+    ]
+    apart = "the top right, near (α, joint) = (π, 2), and the bottom left, near (−π, −2), apart from the rest"
+    assert problems(CH03, chapter_03(0.25, 0.25, corners=apart)) == [  # reader r47c: α wraps round; they join
+        "03: section 5 says whether the free triangles are cut off only as drawn; the printed line disagrees"
     ]
 
 

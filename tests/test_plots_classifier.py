@@ -583,6 +583,12 @@ def test_metrics_bars_one_group_per_model():
     assert not ax.collections and not ax.lines  # the balanced accuracy is read under each group, nothing drawn across
     heights = [bar.get_height() for bar in ax.patches]  # drawn measure by measure: acc of each, then tpr, then tnr
     assert heights == [0.57, 0.85, 0.29, 1.0, 0.85, 0.0]
+    from matplotlib.colors import to_hex
+
+    from toolkit.plots.palette import COLORS
+
+    shades = [to_hex(bar.get_facecolor()) for bar in ax.patches]  # reader r47c: TNR in the maps' conservative sky blue
+    assert COLORS["conservative"] not in shades and COLORS["dangerous"] not in shades and len(set(shades)) == 3
 
 
 def test_maps_refuse_arrays_of_another_shape(grid, probability, valid):

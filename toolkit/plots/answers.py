@@ -135,18 +135,22 @@ def answer_tables(predicted_valid, valid) -> list[Part]:
     ]
 
 
+RATE_SHADES = (0, 1, 4)  # accuracy blue, TPR orange, TNR grey: CATEGORICAL's and HATCHES' entries (reader r47c: a
+# sky-blue TNR bar read as the maps' sky blue, a conservative mistake)
+
+
 def draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
     """Accuracy, TPR and TNR of each model in ``scores`` (``metrics.classification``'s keys) as bars, each bar's value
     written on it."""
     keys, labels = ("acc", "tpr", "tnr"), ("accuracy", "TPR (valid kept)", "TNR (invalid rejected)")
     x, width = np.arange(len(scores)), 0.8 / len(keys)
-    for k, (key, label) in enumerate(zip(keys, labels)):
+    for k, (key, label, shade) in enumerate(zip(keys, labels, RATE_SHADES)):
         bars = ax.bar(
             x + (k - 1) * width,
             [s[key] for s in scores.values()],
             width,
-            color=CATEGORICAL[k],
-            hatch=HATCHES[k],
+            color=CATEGORICAL[shade],
+            hatch=HATCHES[shade],
             edgecolor=COLORS["ink"],
             linewidth=0.6,
             label=label,
