@@ -59,13 +59,17 @@ SPEEDS = re.compile(  # section 3's line timing FCL against the compiled checker
     r"Same answers, but FCL took (\d+)–(\d+)x the compiled checker's time per check in this run\."
 )
 MANY = 3  # "many times": the least ratio the prose's "FCL many times the compiled checker's time" allows
+OPENING_SPEEDS = re.compile(  # the opening's range from our runs (reader r47a: it pointed to section 3's line)
+    r"took about (\d+)–(\d+) times the compiled checker's time per check in our runs"
+)
 
 
 def chapter_01(nb) -> list[str]:
     """Section 3's line timing FCL against the compiled checker on the four robots (reader r39a: its table of every
     checker's rates, chapter 04's and docs/benchmarks.md's material, left the chapter for one line): printed, its
     range low to high, and at least :data:`MANY` times, as the summary's "many times faster" says (full-size runs
-    printed 46-90, quick runs beside other work 9 and more). Then the closing table and the arm-against-base one."""
+    printed 46-101, quick runs 33-58, beside other work 9 and more), and overlapping the opening's range from our runs.
+    Then the closing table and the arm-against-base one."""
     found = tables(nb)
     problems = _page_width(nb, found, "01")
     said = SPEEDS.search(" ".join(texts(nb)))
@@ -76,6 +80,11 @@ def chapter_01(nb) -> list[str]:
         problems.append(f"01: the line's range {low}–{high}x runs backwards")
     if low < MANY:
         problems.append(f"01: FCL took {low}x the compiled checker's time: not many times")
+    stated = OPENING_SPEEDS.search(opening(nb))
+    if stated is None:
+        problems.append("01: the opening gives no range for FCL's time against the compiled checker's")
+    elif high < int(stated[1]) or low > int(stated[2]):
+        problems.append(f"01: the opening's {stated[1]}–{stated[2]} times and section 3's {low}–{high}x do not overlap")
     return problems + _closing_free(found) + _arm_against_base(found) + _chain_joints(found)
 
 

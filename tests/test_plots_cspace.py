@@ -269,6 +269,12 @@ def test_a_figure_of_the_robots_parts_marks_its_base_and_shades_each_link():
         "base",
     ]
     assert "Its base is marked with a black dot" in alt_text(fig)
+    # reader r47a: link 3's swatch, opaque black, hid the cross-hatch its drawing shows: each swatch as drawn
+    links = sorted(_patches(fig.axes[0], "link"), key=lambda p: to_hex(p.get_facecolor()[:3]))
+    swatches = sorted(fig.legends[0].get_patches(), key=lambda p: to_hex(p.get_facecolor()[:3]))
+    assert [(tuple(p.get_facecolor()), p.get_hatch()) for p in swatches] == [
+        (tuple(p.get_facecolor()), p.get_hatch()) for p in links
+    ]
     # reader r41a: link 2, white under its neighbours' ends, could not be found: every link numbered on the drawing
     numbers = [t for t in fig.axes[0].texts if t.get_gid() == "link number"]
     assert [t.get_text() for t in numbers] == ["0", "1", "2", "3"] and min(t.get_zorder() for t in numbers) > 90

@@ -38,6 +38,7 @@ def link_style(color: str, hatch: str | None = None) -> dict:
 
 
 VIEWS = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
+FLAT_ALPHA = 0.85  # a link's opacity in a flat view, and its legend swatch's: black link 3's hatch shows (r47a)
 POSITION_NAMES = ("x", "y", "z")
 
 
@@ -107,7 +108,7 @@ def draw_robot(
     toward_viewer = np.cross(*np.eye(3)[list(axes)]) if robot.dim == 3 else np.zeros(2)  # (D,) out of the page
     for corners, color, hatch in sorted(link_boxes, key=lambda box: float((box[0] @ toward_viewer).max())):
         ax.add_patch(  # nearest the viewer last, on top: from above, a higher link hides what lies under it
-            Polygon(outline(corners, axes), linewidth=0.6, alpha=0.85, gid="link", **link_style(color, hatch))
+            Polygon(outline(corners, axes), linewidth=0.6, alpha=FLAT_ALPHA, gid="link", **link_style(color, hatch))
         )
     ax.set_xlim(lo[axes[0]], hi[axes[0]])
     ax.set_ylim(lo[axes[1]], hi[axes[1]])
@@ -201,7 +202,7 @@ def _legend(labels, colors, hatches, named: bool, shade_names: dict, parts: bool
         handles[label] = (
             (Patch(**link_style(c, h)), Line2D([], [], **_end_mark(k, c))) if named else Patch(**link_style(c, h))
         )
-    handles |= {name: Patch(**link_style(*shade)) for name, shade in shade_names.items()}
+    handles |= {name: Patch(alpha=FLAT_ALPHA, **link_style(*shade)) for name, shade in shade_names.items()}
     return handles | ({"base": Line2D([], [], **BASE_MARK)} if parts else {})
 
 
