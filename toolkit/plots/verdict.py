@@ -33,7 +33,8 @@ from toolkit.plots.robot_drawing import (
 )
 
 INSET = 0.46  # the inset's side, a fraction of its panel's (reader r44a: at 0.38 it was hard to read)
-INSET_BACKGROUND = COLORS["c_obstacle"]  # light grey: the inset's ground, set off from the white room around it
+INSET_BACKGROUND = COLORS["free"]  # white, as the room: only blocks are grey (reader r47a: a grey ground read as one)
+INSET_SHAPES = ((INSET, INSET), (0.62, 0.34))  # the inset's (width, height), axes fraction: square, or a wide strip
 PARTS = {"youbot": ("platform", "turret", "upper arm", "forearm", "wrist", "gripper"), "point2d": ("square",)}
 
 
@@ -187,28 +188,23 @@ def _zoom_on_small_fills(ax, fills, robot: BoxRobot, q: np.ndarray, plane: tuple
     centers, rotations, halves = robot.link_boxes(q[None])
     shapes = [Path(outline(box_corners(c, r, h), plane)) for c, r, h in zip(centers[0], rotations[0], halves)]
     shapes += [Path(np.array([f[2], (f[3][0], f[2][1]), f[3], (f[2][0], f[3][1])])) for f in fills]  # their blocks
-    grid = np.stack(np.meshgrid(np.linspace(0, INSET, 12), np.linspace(0, INSET, 12)), axis=-1).reshape(-1, 2)
-    corners = [
-        (a, b) for a in (0.03, 0.97 - INSET) for b in (0.03, 0.97 - INSET)
-    ]  # the inset's lower left corner, axes fraction
-
-    def covered(c) -> int:  # how much of the robot and the touched blocks the inset would hide
-        points = np.array([x0, y0]) + (grid + c) * np.array([x1 - x0, y1 - y0])
-        return sum(int(shape.contains_points(points).sum()) for shape in shapes)
-
-    inset = ax.inset_axes([*min(corners, key=covered), INSET, INSET])
+    corner = np.array([mid - half, (mid[0] + half, mid[1] - half), mid + half, (mid[0] - half, mid[1] + half)])
+    w, h, at = _inset_place(ax, [*shapes, Path(corner)])  # off the robot, its blocks and the window it zooms
+    wide = w * (x1 - x0) / (h * (y1 - y0))  # the inset's width / height, in data units as on the page
+    half_x, half_y = half * max(1.0, wide), half * max(1.0, wide) / wide
+    inset = ax.inset_axes([*at, w, h])
     for fill, link, b_lo, b_hi in fills:
         inset.add_patch(Rectangle(b_lo, *(b_hi - b_lo), alpha=0.5, zorder=0.9, **BLOCK_STYLE))
         inset.add_patch(Rectangle(b_lo, *(b_hi - b_lo), fill=False, edgecolor=COLORS["ink"], linewidth=2, ls="--"))
         inset.add_patch(Polygon(link, linewidth=2, **link_style(INVALID_COLOR)))
         inset.add_patch(Polygon(fill, gid="overlap", zorder=6, **OVERLAP_STYLE))
-    inset.set(xlim=(mid[0] - half, mid[0] + half), ylim=(mid[1] - half, mid[1] + half), xticks=[], yticks=[])
+    inset.set(xlim=(mid[0] - half_x, mid[0] + half_x), ylim=(mid[1] - half_y, mid[1] + half_y), xticks=[], yticks=[])
     inset.set_aspect("equal")
     inset.set_facecolor(INSET_BACKGROUND)  # reader r42a: unframed, the inset read as a block and a robot in the room
     for spine in inset.spines.values():
         spine.set(linewidth=2.5, edgecolor=COLORS["ink"])
     inset.set_title(  # on a white ground: the title may sit over the robot (reader r44a)
-        f"zoom x{(x1 - x0) / (2 * half):.0f}",
+        f"zoom x{w * (x1 - x0) / (2 * half_x):.0f}",
         fontsize=9,
         pad=3,
         bbox={"facecolor": COLORS["free"], "edgecolor": "none", "pad": 1},
@@ -217,6 +213,27 @@ def _zoom_on_small_fills(ax, fills, robot: BoxRobot, q: np.ndarray, plane: tuple
     marker.set_zorder(7)  # reader r45a: its connectors ran under the robot, unseen; now over it, under the inset
     inset.set_zorder(8)
     ax.zoomed = True
+
+
+def _inset_place(ax, shapes: list[Path]) -> tuple[float, float, tuple[float, float]]:
+    """Where an inset hides least of ``shapes`` (data coordinates) with its title: its width, height and lower left
+    corner, axes fractions; a square one in a corner, else along a side, else a wide strip (reader r47a: the square
+    in the nudge's corner hid the platform, whose free room below was a strip)."""
+    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+    steps = np.linspace(0, 1, 40)  # finely: a robot's corner is not missed
+
+    def covered(w: float, h: float, c) -> int:
+        grid = np.stack(np.meshgrid(steps * w, steps * (h + 0.08)), axis=-1).reshape(-1, 2)  # the title above it
+        points = np.array([x0, y0]) + (grid + c) * np.array([x1 - x0, y1 - y0])
+        return sum(int(shape.contains_points(points).sum()) for shape in shapes)
+
+    places = [
+        (w, h, (a, b))
+        for w, h in INSET_SHAPES
+        for a in np.linspace(0.03, 0.97 - w, 5)
+        for b in np.linspace(0.03, 0.89 - h, 5)
+    ]  # the square's places first: on a tie, min keeps the first, the square
+    return min(places, key=lambda p: covered(*p))
 
 
 def mark_arm(ax, robot: BoxRobot, q: np.ndarray, view: str) -> None:
