@@ -583,7 +583,7 @@ def test_claim_status_reads_the_accurate_network_inside_algorithm_1():
     some = findings.claim_status({"2DS": {"BS": 0.8, "OB": 1.05}, "3DC-9": {"BS": 1.5, "OB": 1.2}}, lazy)
     assert some == (
         "Against our fast exact checker (compiled in 3D, numpy interval tests in 2DS), the paper's claim holds here "
-        "only in part for an accurate network: inside the paper's Algorithm 1 the median query of our accurate "
+        "only in part for an accurate network: inside the paper's Algorithm 1 the median own ratio of our accurate "
         "`strong` network saved time in 1 of the 4 scenario–sampler pairs (2DS BS) (a tie in 1, a cost in 2), and "
         "against the lazy PRM (on 2DS and 3DC-7, by the median time with over the median without) in 2 of the 4 "
         "scenario–sampler pairs (2DS BS, 3DC-7 OB) "
