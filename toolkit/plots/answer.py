@@ -18,6 +18,7 @@ import dataclasses
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.ticker import NullLocator
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import Part, describe
@@ -107,10 +108,17 @@ def answer_ratios(
 
 
 def _near_ticks(ax) -> None:
-    """Labelled minor ticks at 0.8, 0.9, 1.1 and 1.2 (reader r41d: a value by a band's edge could not be read off)."""
-    near = [t for t in (0.8, 0.9, 1.1, 1.2) if ax.get_ylim()[0] <= t <= ax.get_ylim()[1]]
+    """Labelled minor ticks at 0.8 and 1.2 on the left, and the tie band's edges 0.9 and 1.1 on a right-hand axis
+    (reader r41d: a value by a band's edge could not be read off; r47d: five labels within 0.8-1.2 were crammed)."""
+    lo, hi = ax.get_ylim()
+    near = [t for t in (0.8, 1.2) if lo <= t <= hi]
     ax.set_yticks(near, [f"{t:g}" for t in near], minor=True)
     ax.tick_params(axis="y", which="minor", labelsize=8)
+    edges = [t for t in (0.9, 1.1) if lo <= t <= hi]
+    right = ax.secondary_yaxis("right")
+    right.set_yticks(edges, [f"{t:g}" for t in edges])
+    right.yaxis.set_minor_locator(NullLocator())
+    right.tick_params(axis="y", labelsize=8)
 
 
 def _tie_band(ax, tie: float, named: bool) -> None:
