@@ -22,7 +22,7 @@ from matplotlib.ticker import NullLocator
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import Part, describe
-from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO, PAGE_WIDTH
+from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO, PAGE_WIDTH, halo
 from toolkit.plots.query_ratios import NOISE_HATCH, hatch_round
 from toolkit.plots.timings import band_words, log_ticks
 
@@ -248,6 +248,7 @@ def _series(
                 markeredgewidth=1.4 if hollow else 0.6,
                 zorder=3,
                 label=names.get(name, name) if i == 0 else None,
+                path_effects=[] if hollow else halo(0.6, ("free",)),  # r47d: a white ring, clear of the hatching
             )
             drawn += y
             cells.append((scenario, *(_cell(ratios.get(s), whiskers.get(s)) for s in PAPER_SAMPLERS)))
