@@ -216,7 +216,7 @@ def test_the_ratio_figures_spread_their_labels_near_1_over_both_sides():
     and 1.1, are labelled on a right-hand axis; 0.8, 1 and 1.2 on the left; no two labels of a side touch."""
     for fig in (chapter04_figures.answer_figure(), chapter04_figures.answer_figure(means=True)):
         FigureCanvasAgg(fig).draw()  # the labels take their places when drawn
-        renderer = fig.canvas.get_renderer()  # type: ignore[attr-defined]  # the Agg canvas's
+        renderer = fig.canvas.get_renderer()  # the Agg canvas's
         for ax in fig.axes:
             left = [t for t in ax.get_yticklabels(which="both") if t.get_visible() and t.get_text()]
             assert {"0.8", "1", "1.2"} <= {t.get_text() for t in left} and "0.9" not in {t.get_text() for t in left}
