@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import numpy as np
+from matplotlib.backends.backend_agg import FigureCanvasAgg
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots import answer, query_ratios
@@ -208,3 +209,19 @@ def test_repairs_table_gives_a_row_a_query_and_counts_the_runs_without_repairs()
         "With prediction, 5 of 8 runs needed no repair; the most repairs in all: OB (5), the fewest: BS, G (0)."
     )
     assert "<details><summary>Repairs per query and sampler" in said and said.endswith("</details>")  # r41d: length
+
+
+def test_the_ratio_figures_spread_their_labels_near_1_over_both_sides():
+    """Reader r47d: 0.8, 0.9, 1, 1.1 and 1.2 were crammed within a few pixels on one side. The tie band's edges, 0.9
+    and 1.1, are labelled on a right-hand axis; 0.8, 1 and 1.2 on the left; no two labels of a side touch."""
+    for fig in (chapter04_figures.answer_figure(), chapter04_figures.answer_figure(means=True)):
+        FigureCanvasAgg(fig).draw()  # the labels take their places when drawn
+        renderer = fig.canvas.get_renderer()  # the Agg canvas's
+        for ax in fig.axes:
+            left = [t for t in ax.get_yticklabels(which="both") if t.get_visible() and t.get_text()]
+            assert {"0.8", "1", "1.2"} <= {t.get_text() for t in left} and "0.9" not in {t.get_text() for t in left}
+            (right,) = ax.child_axes
+            assert [t.get_text() for t in right.get_yticklabels()] == ["0.9", "1.1"]
+            for labels in (left, right.get_yticklabels()):
+                boxes = sorted((t.get_window_extent(renderer) for t in labels), key=lambda b: b.y0)
+                assert all(b.y0 - a.y1 >= 2 for a, b in zip(boxes, boxes[1:]))  # at least 2 pixels apart

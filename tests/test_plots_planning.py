@@ -154,12 +154,16 @@ def test_roadmap_draws_every_edge_and_the_repair_in_red(exact):
     lines = [c for c in ax.collections if isinstance(c, LineCollection)]
     assert [is_color(c.get_colors(), planning.REPAIR_COLOR).all() for c in lines] == [False, True]
     points = [c for c in ax.collections if not isinstance(c, LineCollection)]
-    confirmed, unconfirmed, removed_nodes = (points[i].get_offsets() for i in range(3))
+    confirmed, unconfirmed, on_confirmed, on_unconfirmed, removed_nodes = (points[i].get_offsets() for i in range(5))
     np.testing.assert_array_equal(confirmed, step.nodes[:3])
     np.testing.assert_array_equal(unconfirmed, step.nodes[3:])
+    # reader r47d: the path's own nodes again, over its line, filled where confirmed (0, 2, 1), hollow where not (3, 4)
+    np.testing.assert_array_equal(on_confirmed, step.nodes[[0, 2, 1]])
+    np.testing.assert_array_equal(on_unconfirmed, step.nodes[[3, 4]])
     np.testing.assert_array_equal(removed_nodes, step.nodes[[3]])
-    assert is_color(points[2].get_facecolors(), planning.REPAIR_COLOR).all()
+    assert is_color(points[4].get_facecolors(), planning.REPAIR_COLOR).all()
     (path,) = ax.lines
+    assert points[2].get_zorder() > path.get_zorder() and points[3].get_zorder() > path.get_zorder()
     np.testing.assert_array_equal(np.c_[path.get_xdata(), path.get_ydata()], step.nodes[step.path])
     assert ax.get_title() == "round 2, repair:\n5 nodes, 5 edges"
 

@@ -18,10 +18,11 @@ import dataclasses
 
 import numpy as np
 from matplotlib.figure import Figure
+from matplotlib.ticker import NullLocator
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots.alt import Part, describe
-from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO, PAGE_WIDTH
+from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO, PAGE_WIDTH, halo
 from toolkit.plots.query_ratios import NOISE_HATCH, hatch_round
 from toolkit.plots.timings import band_words, log_ticks
 
@@ -107,10 +108,17 @@ def answer_ratios(
 
 
 def _near_ticks(ax) -> None:
-    """Labelled minor ticks at 0.8, 0.9, 1.1 and 1.2 (reader r41d: a value by a band's edge could not be read off)."""
-    near = [t for t in (0.8, 0.9, 1.1, 1.2) if ax.get_ylim()[0] <= t <= ax.get_ylim()[1]]
+    """Labelled minor ticks at 0.8 and 1.2 on the left, and the tie band's edges 0.9 and 1.1 on a right-hand axis
+    (reader r41d: a value by a band's edge could not be read off; r47d: five labels within 0.8-1.2 were crammed)."""
+    lo, hi = ax.get_ylim()
+    near = [t for t in (0.8, 1.2) if lo <= t <= hi]
     ax.set_yticks(near, [f"{t:g}" for t in near], minor=True)
     ax.tick_params(axis="y", which="minor", labelsize=8)
+    edges = [t for t in (0.9, 1.1) if lo <= t <= hi]
+    right = ax.secondary_yaxis("right")
+    right.set_yticks(edges, [f"{t:g}" for t in edges])
+    right.yaxis.set_minor_locator(NullLocator())
+    right.tick_params(axis="y", labelsize=8)
 
 
 def _tie_band(ax, tie: float, named: bool) -> None:
@@ -240,6 +248,7 @@ def _series(
                 markeredgewidth=1.4 if hollow else 0.6,
                 zorder=3,
                 label=names.get(name, name) if i == 0 else None,
+                path_effects=[] if hollow else halo(0.6, ("free",)),  # r47d: a white ring, clear of the hatching
             )
             drawn += y
             cells.append((scenario, *(_cell(ratios.get(s), whiskers.get(s)) for s in PAPER_SAMPLERS)))

@@ -224,6 +224,13 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
 EDGE_WORDS = "edge: predicted free, not yet checked"  # reader r31d: the thin edges named in the legend
 
 
+def _nodes(ax, P: np.ndarray, confirmed: np.ndarray, labels: tuple, zorder: float = 3, **style) -> None:
+    """Nodes ``P``: filled where ``confirmed`` (checked exactly), hollow where not; ``labels`` name the two kinds."""
+    ax.scatter(*P[confirmed].T, s=22, color=NODE_COLOR, zorder=zorder, label=labels[0], **style)
+    look = dict(facecolors=COLORS["free"], edgecolors=NODE_COLOR, linewidths=1.0)
+    ax.scatter(*P[~confirmed].T, s=22, **look, zorder=zorder, label=labels[1], **style)
+
+
 def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) -> None:
     """One planner step: edges, nodes (hollow: not yet confirmed exactly), start and goal, the candidate path,
     and what a repair removes (thick, and a ring at removed nodes); a legend names them."""
@@ -234,16 +241,7 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) 
     edges = P[step.edges[~removed_edge]]
     ax.add_collection(LineCollection(edges, colors=EDGE_COLOR, linewidths=0.4, alpha=0.6, zorder=2, label=EDGE_WORDS))
     confirmed = step.node_verified
-    ax.scatter(*P[confirmed].T, s=22, color=NODE_COLOR, zorder=3, label="node, confirmed (filled)")
-    ax.scatter(
-        *P[~confirmed].T,
-        s=22,
-        facecolors=COLORS["free"],
-        edgecolors=NODE_COLOR,
-        linewidths=1.0,
-        zorder=3,
-        label="node, not yet confirmed (hollow)",
-    )
+    _nodes(ax, P, confirmed, ("node, confirmed (filled)", "node, not yet confirmed (hollow)"))
     if len(step.path):
         color, style = PATH_STYLES[step.stage]
         outline = halo(2.2) if color != COLORS["path"] else []  # the candidate's light blue needs an outline
@@ -258,6 +256,8 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) 
             ),
             path_effects=outline,
         )
+        on = np.asarray(step.path)  # reader r47d: the path's own nodes over its line, filled or hollow as elsewhere
+        _nodes(ax, P[on], confirmed[on], (None, None), zorder=4.5, path_effects=halo(1.5))
     _removed_edges(ax, exact, P[step.edges[removed_edge]])
     ax.scatter(  # a ring: what truly collides, as in sample_sets (reader r45d, item 1: a cross is a checker's mark)
         *P[step.removed_nodes].T,

@@ -10,13 +10,13 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from toolkit.experiments.paper_numbers import TIMES, saved_beyond_sampling
 from toolkit.experiments.queries import solve_query
 from toolkit.geometry.collision import exact_checker
 from toolkit.learning.learned import LearnedChecker
 from toolkit.planning.local_planner import path_is_valid
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.teaching import checker_scope, costs, findings, recorded
+from toolkit.teaching.chapter04_paper import RUNS, papers_line, papers_table
 from toolkit.teaching.recorded import Tables
 from toolkit.util.verdicts import COSTS, SAVES, TIES, time_verdict
 
@@ -175,9 +175,10 @@ def other_line(records: Mapping[str, list[dict]]) -> str:
 
 
 def answer(tables: Tables | None = None) -> str:
-    """Chapter 04's answer from ``docs/results.md`` (readers r44d, r46d item 3): two short sentences, the median
-    query's faster and slower cells with each checker and the paper's Table 3 count, then a table with the ties and
-    the counts beyond the noise band. The counts by means are section 6's (:func:`by_means`)."""
+    """Chapter 04's answer from ``docs/results.md`` (readers r44d, r46d item 3, r47d item 1): three short sentences,
+    the median own ratio's faster and slower cells with each checker and the paper's Table 3 quoted exactly
+    (:func:`~toolkit.teaching.chapter04_paper.papers_line`), then our table with the ties and the counts beyond the
+    noise band, and Table 3's under its own header (it is by means). The counts by means are section 6's."""
     facts = checker_scope.slow_checker(tables)
     papers = Counter(time_verdict(1 - saved) for saved in facts.papers_totals)
     fast, slow = (costs.median_counts(preset, tables) for preset, _ in RUNS)
@@ -194,14 +195,16 @@ def answer(tables: Tables | None = None) -> str:
         (name, [cell(c[SAVES]), n(c[TIES][0]), cell(c[COSTS])])
         for name, c in (("our fast exact checker", fast), ("python-fcl on both sides (the fast checker's bands)", slow))
     ]
-    rows.append(("the paper's Table 3 (mean times)", [n(papers[v]) for v in (SAVES, TIES, COSTS)]))
     return (
         f"**{word}:** with an accurate network inside the paper's Algorithm 1 and our fast checker, prediction made "
         f"{n(fast[SAVES][0], 'no', True)}{' cell' * (not fast[SAVES][0])} faster and {n(fast[COSTS][0], 'no', True)}"
         f" slower; with python-fcl, {n(slow[SAVES][0], 'none', True)} faster, {n(slow[COSTS][0], 'none', True)} "
-        f"slower. The paper's Table 3 reports {papers[SAVES]} of {total} faster.\n\n"
+        f"slower. {papers_line()}\n\n"
         f"| {total} scenario–sampler cells, by the median of each query's own time ratio (with ÷ without) | faster "
-        "| tie | slower |\n| --- | --- | --- | --- |\n" + "\n".join(f"| {name} | {' | '.join(c)} |" for name, c in rows)
+        "| tie | slower |\n| --- | --- | --- | --- |\n"
+        + "\n".join(f"| {name} | {' | '.join(c)} |" for name, c in rows)
+        + "\n\n"
+        + papers_table((papers[SAVES], papers[TIES], papers[COSTS]))
     )
 
 
@@ -249,7 +252,8 @@ def mark_line(tables: Tables | None = None) -> str:
         "queries timed apart.\n\n"
         f"{costs.MARK} means one thing on this page: inside the noise band of its statistic, so no clear evidence. "
         "† means one thing too: no clear evidence for a reason other than the noise band, which the line under "
-        "its table names (sections 3 and 5 only).\n\n</details>"
+        f"its table names (sections 3 and 5 only). Where both hold, {costs.MARK} takes precedence: the verdict carries "
+        f"{costs.MARK} alone.\n\n</details>"
     )
 
 
@@ -269,9 +273,10 @@ def edge_line(tables: Tables | None = None) -> str:
     named = ", ".join(fcl) + f"; {costs.MARK} inside the noise band" * any(costs.MARK in c for c in fcl)
     many = len(other) > 1
     named += f"; the {'other' if many else 'third'} python-fcl saving{'s' * many}, {', '.join(other)}, " * bool(other)
-    named += f"{'are cells' if many else 'is a cell'} Table 3 does not save" * bool(other)
+    named += f"{'are cells' if many else 'is a cell'} where Table 3 does not save 10 % or more" * bool(other)
     return (
-        f"**Take from it:** in the {len(saved)} cells where the paper's Table 3 saves time, our median own ratio saved "
+        f"**Take from it:** in the {len(saved)} cells where the paper's Table 3 saves 10 % or more, our median own "
+        "ratio saved "
         f"in {len(fast) or 'none'} with our fast checker and in {len(fcl) or 'none'} with python-fcl"
         + f" ({named})" * bool(fcl)
         + "."
@@ -320,76 +325,6 @@ def full_answer(tables: Tables | None = None) -> str:
         "A mean follows the few slowest queries (*The statistic*, below): where those saved, a mean "
         f"can save while most queries did not; {means_apart(tables)}."
     )
-
-
-def beyond_sampling(tables: Tables | None = None) -> str:
-    """Section 6 (review r31d): where a recorded saving is larger than the whole sampling stage, all that skipping
-    the samples' checks can save: the paper's own mean times (§V), the largest two, how many its spread exceeds;
-    ours (:func:`_ours_beyond`)."""
-    over = saved_beyond_sampling()  # the paper's cells: (seconds saved, seconds of sampling without, its spread)
-    best = {key: max((c for c in over if c[0] == key), key=lambda c: over[c][0]) for key, _ in over}
-    first, second = sorted(best.values(), key=lambda c: -over[c][0])[:2]
-    spread = sum(over[c][2] > over[c][0] for c in over)
-
-    def cell(c: tuple[str, str]) -> str:
-        return f"{checker_scope.NAMES[c[0]]} {c[1]}"
-
-    return (
-        "**Savings larger than all of sampling.** Skipping the samples' checks can save at most the whole sampling "
-        "stage. Yet in the paper's own mean times (§V, the times behind Table 3) the total time saved exceeds all the "
-        f"sampling time without prediction in {len(over)} of its {sum(len(k['total_s']) for k in TIMES.values())} "
-        f"cells: {cell(first)} saves {over[first][0]:.2f} s while its sampling took {over[first][1]:.2f} s, "
-        f"{cell(second)} {over[second][0]:.2f} s against {over[second][1]:.2f} s. Prediction of samples alone cannot "
-        "explain these. Another roadmap can, and so can the spread of the times: in "
-        f"{spread} of those {len(over)} cells the paper's standard deviation of a query's time exceeds the saving."
-        + _ours_beyond(tables)
-    )
-
-
-RUNS = ((recorded.ALGORITHM_1, "fast checker"), (checker_scope.SLOW, "python-fcl"))  # our two Algorithm 1 runs
-
-
-def _ours_beyond(tables: Tables | None = None) -> str:
-    """:func:`beyond_sampling`'s sentences on our two runs (:data:`RUNS`), :func:`costs.over_sampling`'s cells."""
-    runs = {who: costs.over_sampling(preset, tables) for preset, who in RUNS}
-    count = sum(len(cells) for cells in runs.values())
-    if not count:
-        return " Ours have no such saving, by means or by the median own ratio."
-    named = "; ".join(
-        f"{who}: " + ", ".join(f"{c} {100 * a:.0f} % against {100 * b:.0f} %" for c, a, b in cells)
-        for who, cells in runs.items()
-        if cells
-    )
-    said = (
-        f" Ours have {count} such saving{'s' * (count > 1)} by means (the share of the mean query saved against "
-        f"sampling's share without prediction; {named})."
-    )
-    band = costs.floors(tables)["means"]
-    noisy = [f"{who} {c}" for who, cells in runs.items() for c, a, _ in cells if costs.inside(round(1 - a, 2), band)]
-    if len(noisy) == count:  # common46: by means ours lie within timing noise, so no story is told of them
-        return said + (
-            f" Each lies inside the noise band of a ratio of means ({band[0]:.2f}–{band[1]:.2f}): within timing "
-            "noise, so no evidence of a saving larger than sampling."
-        )
-    medians = {who: costs.middle_halves(preset, tables) for preset, who in RUNS}
-    split: dict[bool, list[str]] = {False: [], True: []}
-    for who, cells in runs.items():
-        for c, _, _ in cells:
-            key = next(k for k, n in checker_scope.NAMES.items() if c.startswith(n + " "))
-            split[time_verdict(medians[who][key][c.split()[1]][0]) == SAVES].append(f"{who} {c}")
-    if noisy:
-        said += f" Inside the noise band of a ratio of means, so no evidence: {', '.join(noisy)}."
-    if split[False]:
-        said += (
-            f" In {len(split[False])} of them ({', '.join(split[False])}) the median own ratio did not save: a few "
-            "slow queries moved the mean, not prediction."
-        )
-    if split[True]:
-        said += (
-            f" Where the median own ratio saved too ({', '.join(split[True])}), another roadmap can explain it; that "
-            "run was not timed twice (`docs/results.md`)."
-        )
-    return said
 
 
 def load_line() -> str:

@@ -1,4 +1,4 @@
-"""Chapter 04's two figures: the answer (our median query per cell, or Table 3 beside our ratios of means) and
+"""Chapter 04's two figures: the answer (our median own ratio per cell, or Table 3 beside our ratios of means) and
 section 4's checker rates, each checker in one colour and marker across the page (reader r44d, item 3)."""
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ SERIES = {  # the answer figure's legend, a line a series (reader r33d: five lin
 
 
 def answer_figure(tables: Tables | None = None, means: bool = False) -> Figure:
-    """Our median query per cell with its middle half and band; with ``means``, Table 3 beside our ratios of means."""
+    """Our median own ratio per cell, its middle half and band; with ``means``, Table 3 beside our ratios of means."""
     rows = checker_scope.compact(tables)
     papers = {label: r for label, r in rows.items() if "the paper's" in label}
     return answer_ratios(

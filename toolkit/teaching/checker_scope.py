@@ -118,12 +118,12 @@ def slow_sentence(facts: SlowChecker, ranges: bool = True) -> str:
 
 
 def like_for_like(facts: SlowChecker) -> str:
-    """Table 3's own count on the run closest to the paper's (python-fcl on both sides): the cells whose total time
-    saved 10 % or more by means, ours and the paper's (review r23a: the page printed a range, never this count)."""
+    """Table 3's statistic on the run closest to the paper's (python-fcl on both sides): the cells whose total time
+    saved 10 % or more by means, ours and the paper's, read by our tie band (the paper has none: reader r47d)."""
     ours = sum(time_verdict(1 - saved) == SAVES for saved in facts.totals)
     papers = sum(time_verdict(1 - saved) == SAVES for saved in facts.papers_totals)
     return (
-        f"Counted as the paper counts (Table 3's means, a saving of 10 % or more), that run saved total time in "
+        "Read by our 10 % tie band, by means (Table 3's statistic), that run saved 10 % or more of the total time in "
         f"{ours or 'none'} of its {len(facts.totals)} cells, the paper's Table 3 in {papers or 'none'} of the same "
         f"{len(facts.papers_totals)}."
     )
@@ -292,7 +292,7 @@ def section_6(this_run: dict[str, float], tables: Tables | None = None, first: s
         + table(_others(tables), counts=True, narrow=True)
         + f"\n\n{papers_longer_sentence()} {findings.table3_sentence()}",
         "**Against the lazy PRM.** Total time with / without prediction, 100 queries a scenario, our runs as "
-        "`docs/results.md` records them (our fast exact checker as it was that day), by means and by the median query "
+        "`docs/results.md` records them (our fast exact checker as it was that day), by means and by the median "
         'time with prediction over the median without ("ratio of medians", noise band '
         f"{'{:.2f}–{:.2f}'.format(*costs.floors(tables)['medians'])}, by the rule under the answer figure):\n\n"
         + table(against_lazy(tables), counts=True, narrow=True)
@@ -375,11 +375,10 @@ def papers_longer_sentence() -> str:
     said = f"The paper's own Table 3 has total time longer with prediction in {len(longer)} of {cells} cells ({listed})"
     if band == {TIES}:
         return (
-            f"{said}: each within 10 %, a tie by the rule this chapter and `docs/results.md` count with, though the "
-            "paper's text says of 3DO \"a slow-down for BT (8%)\": the rule reads the paper's cells and ours "
-            "alike."
+            f"{said}: each within 10 %, a tie by our tie band (the paper has none), though the paper's text says of "
+            '3DO "a slow-down for BT (8%)": the band reads the paper\'s cells and ours alike.'
         )
-    return f"{said}: by the 10 % rule this chapter counts with, {', '.join(sorted(band))}."
+    return f"{said}: by our 10 % tie band, {', '.join(sorted(band))}."
 
 
 def sampling_line(name: str, planning: Mapping[str, Mapping[str, Mapping]]) -> str:

@@ -176,7 +176,7 @@ def claim_status(eager: Mapping[str, Mapping[str, float]], lazy: Mapping[str, Ma
     return (
         f"Against our fast exact checker ({FAST_CHECKER}), the paper's claim {status} for an accurate network: inside "
         "the "
-        "paper's Algorithm 1 the median query of "
+        "paper's Algorithm 1 the median own ratio of "
         f"our accurate `strong` network saved time in {_saved_in(eager)} ({rest}), and against the lazy PRM (on "
         f"{' and '.join(lazy)}, by the median time with over the median without) in "
         f"{_saved_in(lazy)} (recorded runs, 100 queries a scenario)."
