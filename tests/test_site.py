@@ -621,7 +621,7 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     assert [c.name for c in bigger] == ["3DC-9 OB"] and inside(1 - bigger[0].total, floors(tables)["means"])
     assert "bigger than its sampling stage allows" not in answer and "0.66" not in answer
     # reader r32e, contradiction 4: the paper's own §V times meet the same test (chapter 04's section 6 names them,
-    # toolkit.teaching.chapter04.beyond_sampling)
+    # toolkit.teaching.chapter04_paper.beyond_sampling)
     over = {
         (s, k): (without - with_, TIMES[s]["sampling_s"][k][0][0])
         for s, kinds in TIMES.items()

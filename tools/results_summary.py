@@ -57,7 +57,7 @@ BANDS_END = "<!-- end of the table of bands -->"
 
 
 class Whole(NamedTuple):
-    """The whole query with python-fcl on both sides, counted as the paper counts (Table 3's means)."""
+    """The whole query with python-fcl on both sides, read by our 10 % tie band by means (Table 3's statistic)."""
 
     means: int  # our cells that saved 10 % or more by means
     papers: int  # the paper's Table 3's, in the same cells
