@@ -202,6 +202,8 @@ def _chapter_02_held_out(found: str) -> list[str]:
         return ["02: section 5's check on held-out training grids is not printed"]
     scores = [float(a) for a in re.findall(r"[\d,]+ steps ([\d.]+)% \(", line.group(0))]
     above = re.search(r"(\d+) of \d+ lengths above", line.group(0))
+    if above is None:
+        return [f"02: section 5's held-out line does not count the lengths above 'all free': {line.group(0)}"]
     if "memorized. Near perfect" in found and (scores != sorted(scores, reverse=True) or above.group(1) != "0"):
         return [f"02: section 5 says the shorter training scores higher and none beats 'all free': {line.group(0)}"]
     return []
