@@ -388,8 +388,8 @@ def _chapter_03_opening(nb) -> list[str]:
         if header and header[0] == "model, unseen workspaces"
         for row in rs
     }
-    band = 100 * findings.CHANCE_BAND  # r45c: "barely beats a coin flip": above 50 %, within section 4's band of it
-    want = {"our `paper` preset, 2DS": (51, 50 + band), "our `strong` preset, 2DS": (90, 100)}
+    band = 100 * findings.CHANCE_BAND  # r48c: "does about as well as a coin flip": within section 4's band of 50 %
+    want = {"our `paper` preset, 2DS": (50 - band, 50 + band), "our `strong` preset, 2DS": (90, 100)}
     want["our `strong` preset, 3DC-7"] = (90, 100)
     problems = [
         f"03: the opening verdict's table gives {who} {said.get(who, float('nan')):g}%, not within {low:g}-{high:g}%"

@@ -203,7 +203,11 @@ def test_the_why_names_the_ablations_largest_steps_by_their_measure_as_the_table
     assert "The largest step there is removing dropout" in said
     assert "A CAE that generalizes adds little: a few points of balanced accuracy" in said
     assert "rows 1 to 6" not in " ".join(texts) and "rows 3 and 6" not in " ".join(texts)
-    assert "main cause" not in verdict and "barely beats a coin flip" in verdict and 50 < rows[0][0] < 56
+    assert "main cause" not in verdict and "does about as well as a coin flip" in verdict and 50 < rows[0][0] < 56
+    assert "not the samples of section 4's bars" in said  # r48c item 4: the steps' own draw, not the bars' (85 %, 86 %)
+    whole = " ".join(texts)  # r48c items 1 and 3: the paper's samples are open; a dangerous mistake can cost time
+    assert "the paper's validity-blind" not in whole and "on section 4's validity-blind 2DS samples" in whole
+    assert "harmless" not in whole and "It can cost time, but two exact checks keep it off any returned path" in whole
     assert "plain Adam" in " ".join(texts) and "Its AdamW keeps" not in " ".join(texts)  # r47c: Adam, explained once
 
 
