@@ -78,7 +78,7 @@ def mistakes_table(
     (the share mistakes scattered at random would have), and where the dangerous ones lie, as a Markdown table (reader
     r33c: the map's edge counted as a boundary of the obstacle cells in a corner, and one box held two far groups)."""
     rows = [
-        "| model, mistake | cells | near a boundary | all its truth's cells: near one | where the dangerous ones lie |",
+        "| model, mistake | cells | near a boundary | near one, at random | where the dangerous ones lie |",
         "| --- | ---: | ---: | ---: | --- |",
     ]
     close = near_boundary(valid, near)  # (nx, ny) bool
