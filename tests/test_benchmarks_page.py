@@ -463,9 +463,9 @@ def test_the_planner_figures_are_the_race_tables():
     assert " ".join(RACE_SUMMARY.split()).startswith(
         ": our RRT-Connect is the fastest; our lazy PRM, the fastest planner a network can drive, beats both of OMPL's "
         "planners as a Python user runs them, and comes between them against OMPL with its checks batched (an "
-        "estimate); the paper's Algorithm 1 is our slowest planner. These are exact planners only, with no network in "
-        "any of them, raced on the held-out queries of seed 9300 (sampler BS, thirty queries in each 3D scenario, OMPL "
-        "untuned):"
+        "estimate of OMPL whose checks cost what ours do); the paper's Algorithm 1 is our slowest planner. These are "
+        "exact planners only, with no network in any of them, raced on the held-out queries of seed 9300, on which "
+        "none was tuned (sampler BS, thirty queries in each 3D scenario, OMPL untuned):"
     )
     # reader r47g, race 5-6: as used the lazy PRM beats both OMPL planners (every scenario); Algorithm 1 is the
     # slowest of ours, while OMPL's PRM as used is slower still
