@@ -49,7 +49,7 @@ def test_the_answer_is_four_bullets_and_five_rows():
     assert text.startswith(
         "**The answer.**\n\n"
         # reader r42b: "(0.9 points below)" after "all free" read as the baseline's gap; said of the CAE
-        "- A CAE trained on the paper's 30 grids scores 86.9% on 500 new grids, 0.9 points below answering \"all "
+        "- CAE-long, trained on the paper's 30 grids, scores 86.9% on 500 new grids, 0.9 points below answering \"all "
         'free" (an empty grid, whatever the input), which gets 87.8%: **no better than answering "all free"**.\n'
         "- So Table 1's 100% on unseen grids does not reproduce.\n"
         "- Trained long (1,500 steps), it rebuilds its training grids 99.6% right (Table 1: 100%), but only by "
@@ -74,7 +74,7 @@ def test_the_answer_is_four_bullets_and_five_rows():
         "| λ = 0.961: CAE-long's training with λ read as a mean over cells (section 3) | 99.6% (all free 88.6%) "
         "| 87.6% (all free 87.8%) |",
         # reader r32b: its "seen" is 500 of its own 1,000 training grids, not the 30 above
-        "| 1,000 grids: the same layers (not the paper's recipe), section 7; seen: 500 of them "
+        "| 1,000 grids: the same layers (not the paper's recipe), section 7; 500 of its training grids scored "
         "| 91.7% (all free 88.2%) | 91.0% (all free 87.8%) |",
     ]
     names = chapter02.row_names(n_seen=30, steps=1500, preset_length="300 steps", many_name="1,000 grids", n_new=500)
@@ -86,7 +86,7 @@ def test_the_answer_in_a_quick_run_says_it_has_not_memorized():
     quick = FULL | dict(preset_length="quick size", n_seen=8, steps=100, many_name="200 grids", n_new=100)
     text = chapter02.answer(PAPER, LONG_NEW | {"seen_acc": 0.80}, MANY | {"unseen_acc": 0.5}, **quick)
     assert "- This quick run has trained too briefly to memorize its training grids (80.0%).\n" in text
-    assert "- A CAE trained on this quick run's 8 grids scores 86.9% on 100 new grids" in text
+    assert "- CAE-long, trained on this quick run's 8 grids, scores 86.9% on 100 new grids" in text
     assert "| 50.0% (all free 87.8%) |" in text
 
 
