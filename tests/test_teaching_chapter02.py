@@ -212,12 +212,11 @@ def test_section_8s_maps_fold_with_their_alt_text_and_read_pc1_against_the_occup
     trained_on, new = (torch.where(torch.rand(n, 4, 4) < 0.3, 1.0, -1.0) for n in (5, 12))
     r, figure = chapter02.latent_map("a CAE", cae, trained_on, new)
     assert -1 <= r <= 1 and figure.get_suptitle() == (
-        f"Codes of a CAE; PC 1 vs share occupied: r = {r:+.2f}\n"
-        "(grey: the other panel's grids; 50 or fewer drawn on top, more underneath)"
+        f"Codes of a CAE; PC 1 vs share occupied: r = {r:+.2f}\n(grey: the other panel's grids)"
     )
     assert [ax.get_title() for ax in figure.axes[:2]] == [
-        "training grids (5)\nthe others grey",
-        "new grids (12)\nthe others grey",
+        "training grids: 5 circles\nthe others grey",  # reader r48b: the shapes named in the figure
+        "new grids: 12 squares\nthe others grey",
     ]
     points, share = chapter02.principal_plane({"a": np.eye(3), "b": -np.eye(3)})
     assert {k: v.shape for k, v in points.items()} == {"a": (3, 2), "b": (3, 2)} and 0 < share.sum() <= 1 + 1e-9

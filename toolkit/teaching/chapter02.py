@@ -363,7 +363,7 @@ def folded(summary: str, figures: list[Figure]) -> str:
     return f"<details><summary>{summary}</summary>\n" + "\n".join(shown) + "\n</details>"
 
 
-GREY_SAID = f"(grey: the other panel's grids; {FEW} or fewer drawn on top, more underneath)"  # r45b, r46b, r47b
+GREY_SAID = "(grey: the other panel's grids)"  # r45b-r47b; r48b: the layering took two readings, the fold says it
 
 
 def latent_map(
