@@ -229,7 +229,27 @@ def _chapter_02_contracts(nb, found: str) -> list[str]:
         problems.append(f"02: section 6 says λ = 0.961 is the least sensitive by all four measures; the line: {least}")
     if "memorized. Near perfect on its training grids" in found:  # full size: "all three reproduce the seen column"
         problems += [f"02: {row[0]} scores {row[1]}% on its training grids" for row in _section_5(nb) if row[1] < 98]
+        problems += _chapter_02_margins(found)
     return problems
+
+
+def _chapter_02_margins(found: str) -> list[str]:
+    """Reader r48b: section 6 says which margins are small. λ = 0.961 against λ = 0: the two scale-free measures less
+    than a fifth lower ("a small margin"), the decoded cells that change at 30 flips about two fifths fewer."""
+    line = re.search(
+        r"against λ = 0: median \|\|J\|\| ([+-]\d+)%, median \|\|J\|\| / \|\|z\|\| ([+-]\d+)%, "
+        r"z's move at \d+ flips ([+-]\d+)%, decoded cells changed at \d+ flips ([+-]\d+)%",
+        found,
+    )
+    if line is None:
+        return ["02: section 6 does not print λ = 0.961's change against λ = 0, measure by measure"]
+    _, scale_free, move, decoded = (int(g) for g in line.groups())
+    if not (-20 < scale_free < 0 and -20 < move < 0 and -50 <= decoded <= -30):
+        return [
+            f"02: section 6 says the scale-free measures fall by under a fifth, the decoded cells by about two "
+            f"fifths: {line.group(0)}"
+        ]
+    return []
 
 
 def _section_5(nb) -> list[tuple]:
@@ -316,6 +336,12 @@ def _chapter_02_unseen(nb, found: str) -> list[str]:
         f"02: {row[0]} is {row[7]:+.1f} points against 'all free' on the new grids: not level or below"
         for row in (against if memorized else [])
         if row[7] >= 1
+    ]
+    # reader r48b: the top fold says both readings of Eq. (1)'s error, CAE-long's sum and λ = 0.961's mean, score below
+    problems += [
+        f"02: {row[0]} is {row[7]:+.1f} points against 'all free' on the new grids: the top fold says below"
+        for row in (against if memorized else [])
+        if row[0] != "λ = 0" and 0 <= row[7] < 1  # a point or more: the line above says it
     ]
     closing = [row for header, rows in tables(nb) if header[0] == "2DS reconstruction accuracy" for row in rows]
     if not closing:  # reader r44b: the closing table dropped, its rows are the answer's table at the top

@@ -49,7 +49,7 @@ def test_the_answer_is_four_bullets_and_five_rows():
     assert text.startswith(
         "**The answer.**\n\n"
         # reader r42b: "(0.9 points below)" after "all free" read as the baseline's gap; said of the CAE
-        "- A CAE trained on the paper's 30 grids scores 86.9% on 500 new grids, 0.9 points below answering \"all "
+        "- CAE-long, trained on the paper's 30 grids, scores 86.9% on 500 new grids, 0.9 points below answering \"all "
         'free" (an empty grid, whatever the input), which gets 87.8%: **no better than answering "all free"**.\n'
         "- So Table 1's 100% on unseen grids does not reproduce.\n"
         "- Trained long (1,500 steps), it rebuilds its training grids 99.6% right (Table 1: 100%), but only by "
@@ -74,7 +74,7 @@ def test_the_answer_is_four_bullets_and_five_rows():
         "| λ = 0.961: CAE-long's training with λ read as a mean over cells (section 3) | 99.6% (all free 88.6%) "
         "| 87.6% (all free 87.8%) |",
         # reader r32b: its "seen" is 500 of its own 1,000 training grids, not the 30 above
-        "| 1,000 grids: the same layers (not the paper's recipe), section 7; seen: 500 of them "
+        "| 1,000 grids: the same layers (not the paper's recipe), section 7; 500 of its training grids scored "
         "| 91.7% (all free 88.2%) | 91.0% (all free 87.8%) |",
     ]
     names = chapter02.row_names(n_seen=30, steps=1500, preset_length="300 steps", many_name="1,000 grids", n_new=500)
@@ -86,7 +86,7 @@ def test_the_answer_in_a_quick_run_says_it_has_not_memorized():
     quick = FULL | dict(preset_length="quick size", n_seen=8, steps=100, many_name="200 grids", n_new=100)
     text = chapter02.answer(PAPER, LONG_NEW | {"seen_acc": 0.80}, MANY | {"unseen_acc": 0.5}, **quick)
     assert "- This quick run has trained too briefly to memorize its training grids (80.0%).\n" in text
-    assert "- A CAE trained on this quick run's 8 grids scores 86.9% on 100 new grids" in text
+    assert "- CAE-long, trained on this quick run's 8 grids, scores 86.9% on 100 new grids" in text
     assert "| 50.0% (all free 87.8%) |" in text
 
 
@@ -212,12 +212,11 @@ def test_section_8s_maps_fold_with_their_alt_text_and_read_pc1_against_the_occup
     trained_on, new = (torch.where(torch.rand(n, 4, 4) < 0.3, 1.0, -1.0) for n in (5, 12))
     r, figure = chapter02.latent_map("a CAE", cae, trained_on, new)
     assert -1 <= r <= 1 and figure.get_suptitle() == (
-        f"Codes of a CAE; PC 1 vs share occupied: r = {r:+.2f}\n"
-        "(grey: the other panel's grids; 50 or fewer drawn on top, more underneath)"
+        f"Codes of a CAE; PC 1 vs share occupied: r = {r:+.2f}\n(grey: the other panel's grids)"
     )
     assert [ax.get_title() for ax in figure.axes[:2]] == [
-        "training grids (5)\nthe others grey",
-        "new grids (12)\nthe others grey",
+        "training grids: 5 circles\nthe others grey",  # reader r48b: the shapes named in the figure
+        "new grids: 12 squares\nthe others grey",
     ]
     points, share = chapter02.principal_plane({"a": np.eye(3), "b": -np.eye(3)})
     assert {k: v.shape for k, v in points.items()} == {"a": (3, 2), "b": (3, 2)} and 0 < share.sum() <= 1 + 1e-9

@@ -318,7 +318,7 @@ def contraction(
     )
     parts = [_norms_part(jacobian_norms), *(lines_part(ax, text="mean over the trials") for ax in (ax_z, ax_x))]
     text = "How strongly each encoder reacts to its input: the norm of its Jacobian (a box per model, the median a"
-    text += " thick line, the mean a triangle), and how far the latent code and the reconstruction move when cells of"
+    text += " thick line, the mean a star), and how far the latent code and the reconstruction move when cells of"
     text += " the input are flipped (both panels log-log: the flips, the code's move and the decoded cells that change)"
     return describe(fig, f"{text}. {said}.", parts)
 
@@ -361,7 +361,9 @@ def _counts_axis(ax, which: str, ticks) -> None:
 
 NORM_MARKS: dict[str, dict[str, Any]] = {  # a box plot's marks, each named in the panel's legend
     "median": dict(color=COLORS["ink"], linewidth=2),
-    "mean": dict(marker="^", color=COLORS["ink"], markerfacecolor=COLORS["free"], markeredgecolor=COLORS["ink"]),
+    "mean": dict(  # reader r48b: a star, no model's marker (a triangle was λ = 0.961's in the panels below)
+        marker="*", color=COLORS["ink"], markerfacecolor=COLORS["free"], markeredgecolor=COLORS["ink"], markersize=11
+    ),
     "outlier (beyond\n1.5 × IQR)": dict(
         marker="o", markerfacecolor="none", markeredgecolor=COLORS["ink"], markersize=3
     ),
@@ -370,7 +372,7 @@ NORM_MARKS: dict[str, dict[str, Any]] = {  # a box plot's marks, each named in t
 
 def _draw_norms(ax, jacobian_norms: dict[str, np.ndarray]) -> None:
     """A box per model of its encoder's Jacobian norms over the workspaces (the middle half of them, whiskers to the
-    farthest within 1.5 interquartile ranges, IQR), the median a thick line, the mean a triangle: a legend names
+    farthest within 1.5 interquartile ranges, IQR), the median a thick line, the mean a star: a legend names
     each mark."""
     names = list(jacobian_norms)
     ink = dict(color=COLORS["ink"])

@@ -51,7 +51,10 @@ def latent_scatter(
         if color:
             style.update(c=color[name], cmap=SEQUENTIAL_CMAP, vmin=low, vmax=high)
         drawn = ax.scatter(xy[:, 0], xy[:, 1], label=f"{name} ({len(xy)})", alpha=0.9, zorder=2, **style)
-        ax.set_title(f"{name} ({len(xy)})" + ("\nthe others grey" if others else ""), fontsize=10)
+        shapes = (
+            f"{len(xy)} {MARKER_NAMES[style['marker']]}"  # reader r48b: the shapes in the figure, not in prose only
+        )
+        ax.set_title(f"{name}: {shapes}" + ("\nthe others grey" if others else ""), fontsize=10)
         ax.set_xlabel(xlabel)
         ax.set_ylabel(ylabel if k == 0 else "")
         ax.tick_params(labelsize=9)

@@ -94,14 +94,16 @@ def row_names(*, n_seen: int, steps: int, preset_length: str, many_name: str, n_
         "long": f"CAE-long: the paper's layer sizes and λ, {n_seen} grids, {steps:,} steps",
         "preset": f"CAE-preset: the same, {preset_length} (the `paper` preset, chapters 03–04)",
         "mean": "λ = 0.961: CAE-long's training with λ read as a mean over cells (section 3)",
-        "many": f"{many_name}: the same layers (not the paper's recipe), section 7; seen: {n_new} of them",
+        # reader r48b: "seen: 500 of them" was cryptic
+        "many": f"{many_name}: the same layers (not the paper's recipe), section 7; "
+        f"{n_new} of its training grids scored",
     }
 
 
 WAITING = (  # the answer at the top before the page's last code cell fills in this run's numbers
     "**The answer.**\n\n"
-    '- A CAE trained on the paper\'s 30 grids rebuilds new workspaces no better than answering "all free" (an empty '
-    "grid, whatever the input).\n"
+    "- CAE-long, trained on the paper's 30 grids, rebuilds new workspaces no better than answering "
+    '"all free" (an empty grid, whatever the input).\n'
     "- So Table 1's 100 % on unseen grids does not reproduce.\n"
     "- Trained long (1,500 steps), it reaches Table 1's seen column, but only by memorizing its 30 grids.\n"
     "- The shorter-trained CAE that chapters 03–04 use reproduces neither column.\n\n"
@@ -164,7 +166,7 @@ def _bullets(
     whose = "the paper" if n_seen == 30 else "this quick run"  # the paper's 30 grids, §IV-A
     column = "the seen column only" if preset["seen_acc"] >= MEMORIZED else "neither column"
     return [
-        f"A CAE trained on {whose}'s {n_seen} grids scores {long['unseen_acc']:.1%} on {n_new} new grids, "
+        f"CAE-long, trained on {whose}'s {n_seen} grids, scores {long['unseen_acc']:.1%} on {n_new} new grids, "
         f'{abs(gap):.1f} points {"below" if gap < 0 else "above"} answering "all free" (an empty grid, whatever the '
         f'input), which gets {free:.1%}: **no better than answering "all free"**.',
         f"So Table 1's {paper['unseen_acc']:.0%} on unseen grids does not reproduce.",
@@ -361,7 +363,7 @@ def folded(summary: str, figures: list[Figure]) -> str:
     return f"<details><summary>{summary}</summary>\n" + "\n".join(shown) + "\n</details>"
 
 
-GREY_SAID = f"(grey: the other panel's grids; {FEW} or fewer drawn on top, more underneath)"  # r45b, r46b, r47b
+GREY_SAID = "(grey: the other panel's grids)"  # r45b-r47b; r48b: the layering took two readings, the fold says it
 
 
 def latent_map(
