@@ -279,6 +279,8 @@ def test_a_figure_of_the_robots_parts_marks_its_base_and_shades_each_link():
     numbers = [t for t in fig.axes[0].texts if t.get_gid() == "link number"]
     assert [t.get_text() for t in numbers] == ["0", "1", "2", "3"] and min(t.get_zorder() for t in numbers) > 90
     assert to_hex("#ffffff") not in faces
+    # reader r48a: link 3 cross-hatched like a robot in collision; a link's shade is never the verdict's hatch
+    assert not {p.get_hatch() for p in _patches(fig.axes[0], "link")} & {"xx", "++"}
 
 
 def test_a_robot_figures_flat_views_fill_their_width():
@@ -448,6 +450,8 @@ def test_the_offices_cabinets_and_desks_differ_in_lightness_and_their_hatches_sh
     hue = [rgb_to_hsv(to_rgba(c)[:3])[0] for c in (cabinet, table)]
     assert min(abs(hue[0] - hue[1]), 1 - abs(hue[0] - hue[1])) >= 0.2  # a fifth of a turn round the hue circle
     assert all(block.get_hatch() and block.get_hatch_linewidth() >= 1.2 for k, block in faces.items() if k != "cabinet")
+    # reader r48a: desks cross-hatched like a robot in collision; a kind's hatch is never the verdict's "xx" or "++"
+    assert not {block.get_hatch() for block in faces.values()} & {"xx", "++"}
     assert fig.get_figwidth() <= palette.PAGE_WIDTH and fig.legends  # the legend below the view, over no block
 
 
