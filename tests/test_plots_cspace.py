@@ -398,6 +398,7 @@ def test_cspace_slice_equals_the_separating_axis_reference(clutter):
     assert 0 < image.mean() < 1  # the slice crosses a C-obstacle
     ax = fig.axes[0]
     assert (ax.get_xlabel(), ax.get_ylabel()) == ("gamma (rad)", "joint1 (rad)")
+    assert ax.get_box_aspect() == 1  # reader r48a: two angles, 2π and 4 rad, drawn as a square, not taller
     star = next(line for line in ax.lines if line.get_gid() == "q")
     np.testing.assert_allclose(np.ravel(star.get_data()), q[[5, 6]])
     assert star.get_color() == robot_drawing.VALID_COLOR
@@ -490,7 +491,8 @@ def test_verdict_figure_titles_each_panel_with_the_checkers_verdict_and_marks_wh
     bounds = exact.clearances(Q, cap=1.0)  # (200,)
     clear = Q[np.argmax(bounds)]
     title = verdict.verdict_figure(exact, clear[None]).axes[0].get_title()
-    said = f"valid: at least {bounds.max():.2g} clear of every\nblock and the region's boundary\n(a lower bound)"
+    said = f"valid; the check proves a gap of at least\n{bounds.max():.2g} to every block and the boundary\n"
+    said += "(the true gap can be wider)"  # reader r48a: "at least 0.15 clear" beside a drawn gap of 0.46
     assert title == said
     assert left.get_xlim() == right.get_xlim() and left.get_ylim() == right.get_ylim()  # review r27a: one window
     assert not _patches(left, "touching link") and not _patches(left, "touched block")
@@ -577,6 +579,7 @@ def test_a_slice_over_positions_shows_a_pixel_beyond_the_bounds_dark(square_worl
     ax = fig.axes[0]
     lo, hi = robot.lower[0], robot.upper[0]
     np.testing.assert_allclose(ax.get_xlim(), (lo - (hi - lo) / 31, hi + (hi - lo) / 31))
+    assert ax.get_aspect() == 1.0  # reader r48a: two lengths drawn to one scale (the youBot's 41 x 41 was 1.3x tall)
     assert to_hex(ax.get_facecolor()) == palette.COLORS["occupied"]
 
 

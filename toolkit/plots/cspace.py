@@ -327,6 +327,8 @@ def cspace_slice(
         if robot.dof_names[k] in POSITION_NAMES:  # a pixel's width beyond the bounds, dark: out of bounds is
             pad = (limits[1] - limits[0]) / resolution  # invalid, and a bar at the edge stands off the axis's spine
             set_limits(limits[0] - pad, limits[1] + pad)
+    lengths = all(robot.dof_names[k] in POSITION_NAMES for k in joints)  # reader r48a: the 41 x 41 slice drawn tall
+    ax.set_aspect("equal", adjustable="box") if lengths else ax.set_box_aspect(1)  # to scale; angles square
     ax.set_facecolor(COLORS["occupied"])
     star: dict[str, Any] = dict(  # an ink edge in a white halo: seen on the free white and the dark alike (r39a)
         marker="*", markersize=15, markeredgecolor=COLORS["ink"], color=link_colors(1, q_valid)[0], markeredgewidth=1
