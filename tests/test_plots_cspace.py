@@ -279,6 +279,8 @@ def test_a_figure_of_the_robots_parts_marks_its_base_and_shades_each_link():
     numbers = [t for t in fig.axes[0].texts if t.get_gid() == "link number"]
     assert [t.get_text() for t in numbers] == ["0", "1", "2", "3"] and min(t.get_zorder() for t in numbers) > 90
     assert to_hex("#ffffff") not in faces
+    # reader r48a: link 3 cross-hatched like a robot in collision; a link's shade is never the verdict's hatch
+    assert not {p.get_hatch() for p in _patches(fig.axes[0], "link")} & {"xx", "++"}
 
 
 def test_a_robot_figures_flat_views_fill_their_width():
@@ -396,6 +398,7 @@ def test_cspace_slice_equals_the_separating_axis_reference(clutter):
     assert 0 < image.mean() < 1  # the slice crosses a C-obstacle
     ax = fig.axes[0]
     assert (ax.get_xlabel(), ax.get_ylabel()) == ("gamma (rad)", "joint1 (rad)")
+    assert ax.get_box_aspect() == 1  # reader r48a: two angles, 2π and 4 rad, drawn as a square, not taller
     star = next(line for line in ax.lines if line.get_gid() == "q")
     np.testing.assert_allclose(np.ravel(star.get_data()), q[[5, 6]])
     assert star.get_color() == robot_drawing.VALID_COLOR
@@ -448,6 +451,8 @@ def test_the_offices_cabinets_and_desks_differ_in_lightness_and_their_hatches_sh
     hue = [rgb_to_hsv(to_rgba(c)[:3])[0] for c in (cabinet, table)]
     assert min(abs(hue[0] - hue[1]), 1 - abs(hue[0] - hue[1])) >= 0.2  # a fifth of a turn round the hue circle
     assert all(block.get_hatch() and block.get_hatch_linewidth() >= 1.2 for k, block in faces.items() if k != "cabinet")
+    # reader r48a: desks cross-hatched like a robot in collision; a kind's hatch is never the verdict's "xx" or "++"
+    assert not {block.get_hatch() for block in faces.values()} & {"xx", "++"}
     assert fig.get_figwidth() <= palette.PAGE_WIDTH and fig.legends  # the legend below the view, over no block
 
 
@@ -486,7 +491,8 @@ def test_verdict_figure_titles_each_panel_with_the_checkers_verdict_and_marks_wh
     bounds = exact.clearances(Q, cap=1.0)  # (200,)
     clear = Q[np.argmax(bounds)]
     title = verdict.verdict_figure(exact, clear[None]).axes[0].get_title()
-    said = f"valid: at least {bounds.max():.2g} clear of every\nblock and the region's boundary\n(a lower bound)"
+    said = f"valid; the check proves a gap of at least\n{bounds.max():.2g} to every block and the boundary\n"
+    said += "(the true gap can be wider)"  # reader r48a: "at least 0.15 clear" beside a drawn gap of 0.46
     assert title == said
     assert left.get_xlim() == right.get_xlim() and left.get_ylim() == right.get_ylim()  # review r27a: one window
     assert not _patches(left, "touching link") and not _patches(left, "touched block")
@@ -573,6 +579,7 @@ def test_a_slice_over_positions_shows_a_pixel_beyond_the_bounds_dark(square_worl
     ax = fig.axes[0]
     lo, hi = robot.lower[0], robot.upper[0]
     np.testing.assert_allclose(ax.get_xlim(), (lo - (hi - lo) / 31, hi + (hi - lo) / 31))
+    assert ax.get_aspect() == 1.0  # reader r48a: two lengths drawn to one scale (the youBot's 41 x 41 was 1.3x tall)
     assert to_hex(ax.get_facecolor()) == palette.COLORS["occupied"]
 
 
@@ -683,7 +690,7 @@ def test_a_slices_robot_panel_dashes_the_block_a_link_touches_and_keys_each_way_
     (dashed,) = _patches(ax, "touched block")
     assert dashed.get_linestyle() == "--" and not dashed.get_fill() and dashed.get_xy() == (5.5, 4)
     assert [t.get_text() for t in ax.get_legend().get_texts()] == [
-        "grey: a block",
+        "grey: a block at any height",  # reader r48a: a block at z 2-3 over a base at 0.73 looked level with it
         "dotted: the links pass over or under",
         "dashed: a link touches it",
     ]

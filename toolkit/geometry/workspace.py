@@ -270,7 +270,7 @@ def _place(rng: np.random.Generator, size: np.ndarray, region: np.ndarray, on_fl
 
 
 def simple_2d(rng: np.random.Generator) -> Workspace:
-    """2DS: 31x31 region, 3-5 rectangular blocks, sides 2-9 (paper §IV-A)."""
+    """2DS: 31x31 region, 3-5 rectangular blocks, sides 2-9 (paper §IV-A), placed independently: they may overlap."""
     region = np.array([31.0, 31.0])
     count = int(rng.integers(3, 6))
     boxes = [_place(rng, rng.integers(2, 10, size=2).astype(float), region) for _ in range(count)]
@@ -289,7 +289,8 @@ OFFICE_TYPES: dict[str, tuple[float, float, float]] = {
 
 
 def office_3d(rng: np.random.Generator) -> Workspace:
-    """3DO: 41x41x6 office, 25-30 blocks whose type and place are random (paper §IV-A)."""
+    """3DO: 41x41x6 office, 25-30 blocks whose type and place are random (paper §IV-A), placed independently: they
+    may overlap."""
     region = np.array([41.0, 41.0, 6.0])
     names = list(OFFICE_TYPES)
     count = int(rng.integers(25, 31))
@@ -305,7 +306,8 @@ def office_3d(rng: np.random.Generator) -> Workspace:
 
 
 def clutter_3d(rng: np.random.Generator) -> Workspace:
-    """3DC: 11x11x11 clutter, 110-125 identical unit blocks (paper §IV-A)."""
+    """3DC: 11x11x11 clutter, 110-125 identical unit blocks (paper §IV-A), each in a cell of its own: they never
+    overlap."""
     region = np.array([11.0, 11.0, 11.0])
     count = int(rng.integers(110, 126))
     cells = rng.choice(11**3, size=count, replace=False)  # distinct cells: every block counts

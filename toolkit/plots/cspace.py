@@ -37,9 +37,10 @@ from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe, map_part
 from toolkit.plots.boxes import aabb_corners, add_box_3d
 from toolkit.plots.contact import key_blocks, passed_over, ring_blocks
-from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
+from toolkit.plots.palette import CATEGORICAL, COLORS, PAGE_WIDTH
 from toolkit.plots.robot_drawing import (
     BASE_MARK,
+    KEY_HATCHES,
     POSITION_NAMES,
     VIEWS,
     dof_label,
@@ -96,7 +97,7 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
     title = title or f"{workspace.family or 'workspace'}: {len(workspace.boxes)} blocks in {size}"
     kinds = sorted(set(workspace.labels))
     colors = {kind: CATEGORICAL[KIND_ORDER[i % len(KIND_ORDER)]] for i, kind in enumerate(kinds)}
-    hatches = {kind: HATCHES[KIND_ORDER[i % len(KIND_ORDER)]] for i, kind in enumerate(kinds)}
+    hatches = {kind: KEY_HATCHES[KIND_ORDER[i % len(KIND_ORDER)]] for i, kind in enumerate(kinds)}
     box_colors = [colors[label] for label in workspace.labels] or [COLORS["block"]] * len(workspace.boxes)
     box_hatches = [hatches[label] for label in workspace.labels] or [""] * len(workspace.boxes)
     stretch = 1  # how much taller than its widths a region's height is drawn
@@ -326,6 +327,8 @@ def cspace_slice(
         if robot.dof_names[k] in POSITION_NAMES:  # a pixel's width beyond the bounds, dark: out of bounds is
             pad = (limits[1] - limits[0]) / resolution  # invalid, and a bar at the edge stands off the axis's spine
             set_limits(limits[0] - pad, limits[1] + pad)
+    lengths = all(robot.dof_names[k] in POSITION_NAMES for k in joints)  # reader r48a: the 41 x 41 slice drawn tall
+    ax.set_aspect("equal", adjustable="box") if lengths else ax.set_box_aspect(1)  # to scale; angles square
     ax.set_facecolor(COLORS["occupied"])
     star: dict[str, Any] = dict(  # an ink edge in a white halo: seen on the free white and the dark alike (r39a)
         marker="*", markersize=15, markeredgecolor=COLORS["ink"], color=link_colors(1, q_valid)[0], markeredgewidth=1

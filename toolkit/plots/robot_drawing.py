@@ -25,7 +25,7 @@ from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
 from toolkit.plots.contact import nearby_blocks
-from toolkit.plots.palette import CATEGORICAL, COLORS, HATCHES, PAGE_WIDTH
+from toolkit.plots.palette import CATEGORICAL, COLORS, PAGE_WIDTH
 
 VALID_COLOR, INVALID_COLOR = COLORS["valid"], COLORS["invalid"]
 BLOCK_STYLE: dict[str, Any] = dict(facecolor=COLORS["block"], edgecolor=COLORS["occupied"], gid="block")
@@ -40,6 +40,9 @@ def link_style(color: str, hatch: str | None = None) -> dict:
 VIEWS = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
 FLAT_ALPHA = 0.85  # a link's opacity in a flat view, and its legend swatch's: black link 3's hatch shows (r47a)
 POSITION_NAMES = ("x", "y", "z")
+KEY_HATCHES = ("", "//", "..", "--", "\\\\", "||")
+"""Hatches that only tell things apart (links, poses, furniture kinds), in :data:`CATEGORICAL`'s order: the
+palette's, less the in-collision cross-hatch "xx" and its look-alike "++" (reader r48a: desks, chain9's link 3)."""
 
 
 def dof_label(name: str) -> str:
@@ -163,7 +166,7 @@ def robot_figure(
         raise ValueError(f"{len(labels)} labels for {len(Q)} configurations: give one label a configuration")
     fig, axes = _panels(views, legend=labels is not None or parts)
     colors = link_colors(len(Q), valid)
-    hatches = [HATCHES[k % len(HATCHES)] for k in range(len(Q))] if valid is None else [None] * len(Q)
+    hatches = [KEY_HATCHES[k % len(KEY_HATCHES)] for k in range(len(Q))] if valid is None else [None] * len(Q)
     named = labels is not None and valid is None and len(Q) > 1  # configurations a legend tells apart
     shades, shade_names = _link_shades(robot, Q, named, parts and valid is None)
     ends = robot.link_boxes(Q)[0][:, -1]  # (k, D) the centre of each configuration's last link
@@ -251,7 +254,7 @@ def _link_shades(robot: BoxRobot, Q: np.ndarray, named: bool, parts: bool):
     """Per link, the colour and hatch replacing its configuration's (or None), and the legend's name of each: links
     the same in every named configuration grey ("the same in each"), or with ``parts`` one shade per link."""
     if parts:  # a shade per link, numbered as link_boxes: two of one size told apart (r31a); link 2 filled (r41a)
-        shades = [(CATEGORICAL[i], HATCHES[i]) for i in ((0, 1, 2, 3, 4, 5) * robot.n_links)[: robot.n_links]]
+        shades = [(CATEGORICAL[i], KEY_HATCHES[i]) for i in ((0, 1, 2, 3, 4, 5) * robot.n_links)[: robot.n_links]]
         names = {
             f"link {i}: {2 * h.max():g} long": shade for i, (h, shade) in enumerate(zip(robot.half_extents, shades))
         }
@@ -340,6 +343,6 @@ def configurations_part(robot: BoxRobot, Q: np.ndarray, labels: Sequence[str] | 
 
 
 def _hatch_name(hatch: str | None) -> str:
-    return {"": "plain", "//": "hatched with slashes", "..": "dotted", "xx": "cross-hatched"}.get(
-        hatch or "", "hatched"
-    )
+    names = {"": "plain", "//": "hatched with slashes", "..": "dotted", "xx": "cross-hatched", "||": "hatched upright"}
+    names |= {"--": "hatched with level lines", "\\\\": "hatched with back-slashes"}
+    return names.get(hatch or "", "hatched")

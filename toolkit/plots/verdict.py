@@ -47,9 +47,10 @@ def verdict_figure(
     in collision, each link box that touches a block and that block are outlined thick (the block dashed) and named
     in the title, numbered as the arrays are: "platform touches block 11 (desk)" (review r30a), or "square overlaps
     block 0 by 0.2" with a 2D link's part inside the block filled light (review r31a); a valid one's title
-    gives its clearance where the checker proves one, a lower bound on the gap ("valid: at least 0.15 clear of every
-    block and the region's boundary (a lower bound)", reader r42a: read as the gap itself; reader r45a: "wall" named
-    the office's blocks too), the gap itself for the point robot.
+    gives its clearance where the checker proves one, a lower bound on the gap ("valid; the check proves a gap of at
+    least 0.15 to every block and the boundary (the true gap can be wider)", reader r42a: read as the gap itself;
+    reader r45a: "wall" named the office's blocks too; reader r48a: 0.15 beside a drawn gap of 0.46), the gap itself
+    for the point robot.
     ``columns`` panels a row (all of them by default; reader r41a: three panels a row were too small to read the
     first check by), the key in a row's empty place or under the panels."""
     robot, workspace = checker.robot, getattr(checker, "workspace", None)
@@ -140,7 +141,8 @@ def _valid_title(checker: CollisionChecker, q: np.ndarray) -> str:
         return "valid"
     if is_point_robot(checker.robot) and gap < cap:
         return f"valid: {gap:.2g} clear of the nearest\nblock or the region's boundary"
-    return f"valid: at least {gap:.2g} clear of every\nblock and the region's boundary\n(a lower bound)"
+    proven = f"valid; the check proves a gap of at least\n{gap:.2g} to every block and the boundary\n"
+    return proven + "(the true gap can be wider)"  # reader r48a: 0.15 beside a drawn gap of 0.46
 
 
 def _outline_touching(
