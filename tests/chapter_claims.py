@@ -1198,7 +1198,7 @@ def chapter_05(nb) -> list[str]:
     found, problems = " ".join(texts(nb)), []
     documented = recorded.median_ratios("strong")["3dc7"]["total"]
     measured = [r for header, rows in tables(nb) if header[:1] == ["measured"] for r in rows]
-    strong = [r for r in measured if "3DC-7" in r[0] and "`strong` preset, medians" in r[0]]
+    strong = [r for r in measured if "3DC-7" in r[0] and f"{chapter05.LAZY}, medians" in r[0]]
     expected = [f"{findings.time_verdict(documented[s])} ({documented[s]:.2f})" for s in SAMPLERS]
     if len(strong) != 1 or any(r[1:] != expected for r in strong):  # once: the closing's "More" (reader r23b)
         problems.append(f"05: docs/results.md's 3DC-7 medians are not displayed as findings.ratio_table says: {strong}")
@@ -1242,7 +1242,7 @@ def chapter_05(nb) -> list[str]:
     fifth = [
         [*(c.strip("*%") for c in r[1:4]), *re.findall(r"threshold (\d\.\d+)", r[0])]
         for r in scored
-        if r[0].startswith("ours: this notebook's `strong` model") and "§5's" in r[0]
+        if r[0].startswith("ours: the notebook's network") and "§5's" in r[0]
     ]  # reader r29e: and names the model by its threshold, §5's, not a record's
     if fifth and (said is None or fifth != [list(said.groups())]):
         problems.append(f"05: the accuracy table's §5 row is not what §5 printed: {fifth}, {said and said.groups()}")
@@ -1274,7 +1274,7 @@ def _chapter_05_answer(found: str, measured: list[list[str]], scored: list[list[
     totals = [
         r
         for r in measured
-        if r[0].startswith("`strong` network")
+        if r[0].startswith(chapter05.TIMED)  # reader r48e, 05 item 4: each training by its label
         and r[0].endswith((f": {chapter05.OWN}", ": ratio of the means"))  # reader r39e: short labels
     ]
     saves = any(cell.startswith(findings.SAVES) and chapter05.NOISE not in cell for r in totals for cell in r[1:])
@@ -1297,7 +1297,7 @@ def _chapter_05_answer(found: str, measured: list[list[str]], scored: list[list[
         problems.append(f"05: the answer's paper side is not its Table 3 row: {said and said.group(1)}, {paper_saves}")
     cut = re.search(r"cut sampling time by (\d+)–(\d+) % \(means\)", found)
     sampling = [
-        r for r in measured if r[0].startswith("`strong` network, python-fcl on both sides: ") and "less" in r[0]
+        r for r in measured if r[0].startswith(f"{chapter05.TIMED}, python-fcl on both sides: ") and "less" in r[0]
     ]
     shown = [int(v) for r in sampling for v in re.findall(r"(\d+)%", r[0])]
     if cut is None or not shown or [int(cut.group(1)), int(cut.group(2))] != [min(shown), max(shown)]:

@@ -13,18 +13,18 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
     assert chapter05.total_table() in answer  # reader r34e, lift 1: the total-time table right under the answer
     # reader r39e, 05 lift 1: one row per checker above the fold, each query's own ratio; the means in the fold
     front, fold = answer.split(f"<details><summary>{chapter05.DETAILS}</summary>")  # r47e, lift 2: one fold
-    assert chapter05.total_table().count("\n| `strong` network") == 2 and "ratio of the means |" not in front
+    assert chapter05.total_table().count("\n| timed network") == 2 and "ratio of the means |" not in front
     assert chapter05.means_table() in fold and "the paper's Table 3: ratio of the means" in fold
     compiled = recorded.query_ratios(chapter05.COMPILED)["3dc7"]
     fcl = recorded.query_ratios(chapter05.FCL)["3dc7"]
     assert all(findings.time_verdict(r) != findings.SAVES for r in [*compiled.values(), *fcl.values()])
-    assert answer.startswith("**No.** On 3DC-7 no sampler's whole query saved 10 % or more with the accurate")
+    assert answer.startswith("**No.** On 3DC-7 no sampler's whole query saved 10 % or more with the timed network (an")
     # reader r27e: our ratios of the means beside the paper's, each a row of the closing's total-time table; reader
     # r29e: the answer names both statistics and leaves the ratios to the closing (said once)
     assert "by the median of each query's own ratio (the table below)" in answer  # reader r41e, 05 contradiction 2
     assert "Nor by the ratio of the means" not in answer  # reader r42e, 05 lift 4: the fold's title names them
     assert "**The numbers behind the answer: the ratio of the means" in fold
-    assert front.count("| `strong` network") == 2 and front.count("\n| --- |") == 1  # r47e: one table above the fold
+    assert front.count("| timed network") == 2 and front.count("\n| --- |") == 1  # r47e: one table above the fold
     assert "0.52" not in front and "0.54" not in chapter05.answer(0.54).split("<details>")[0]  # trainings folded
     for who, name in ((chapter05.COMPILED, "our compiled checker"), (chapter05.FCL, "python-fcl on both sides")):
         means = {s: 1 - v for s, v in recorded.improvements(who, "3dc7").items()}
@@ -33,7 +33,7 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
         noisy = {s: low < r < high and verdict[s] != findings.TIES for s, r in means.items()}  # strictly inside
         verdict = {s: chapter05.NOISE if noisy[s] else v for s, v in verdict.items()}
         cells = " | ".join(f"{verdict[s]} ({means[s]:.2f})" for s in chapter05.SAMPLERS)
-        assert f"| `strong` network, {name}: ratio of the means | {cells} |" in tables
+        assert f"| timed network, {name}: ratio of the means | {cells} |" in tables
         assert " / ".join(f"{means[s]:.2f}" for s in chapter05.SAMPLERS) not in answer
     # reader r31e: the closing is not the answer again; reader r34e, lift 5: the paper's side in three sentences
     closing = chapter05.time_tables().split("<details>")[0].strip().split("\n\n")[-1]
@@ -71,11 +71,11 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
     assert "6 % more time instead" in why and "slower" not in answer and "faster" not in answer  # r47e: one statistic
     # reader r45e, 05 item 4: a map of the trainings, planners and statistics, after the answer's tables
     assert "\n\nWhich of the chapter's runs the answer reads:\n\n| what | the answer uses |" in shares
-    assert "| training of `strong` | the timed one (threshold 0.63) | two more trainings" in shares
+    assert "| training of `strong` | the timed network (threshold 0.63) | the notebook's network and the lazy" in shares
     # reader r46e, lift 4: the three trainings, each with its threshold, in the fold (r47e: the answer's only one)
     trainings = answer.split("The three trainings of `strong` in this chapter")[1].split("</details>")[0]
     assert "| 0.63 | the answer," in trainings and "| 0.52 | the closing fold" in trainings
-    assert "| this notebook's (`trained_models`, cached) | 0.54 |" in chapter05.answer(0.54)
+    assert "| **notebook's network** (`trained_models`, cached) | 0.54 |" in chapter05.answer(0.54)  # r48e: labels
     assert "| planner | Algorithm 1 (planner `paper`) | §6–7: the lazy PRM's path;" in shares
     assert (
         "| statistic | the verdict: the median of each query's own ratio; the limit in **Why**: mean times |" in shares
@@ -132,7 +132,7 @@ def test_a_ratio_of_two_medians_within_timing_noise_reads_within_noise():
     # BS's 0.83 and OB's 1.50 are within noise, G's 1.07 a tie, BT's 1.67 beyond; the recipe's means, 0.52–1.48
     last = next(line for line in chapter05.time_tables().splitlines() if "ratio of the two medians |" in line)
     assert last == (
-        "| 3DC-7, `strong` network, our compiled checker, Algorithm 1: ratio of the two medians "
+        "| 3DC-7, timed network, our compiled checker, Algorithm 1: ratio of the two medians "
         f"| {noise} (0.83) | {noise} (1.50) | a tie (1.07) | costs time (1.67) |"
     )
     assert '"within noise" in it shows no saving or cost.' in chapter05.time_tables()
@@ -150,10 +150,12 @@ def test_the_accuracy_table_has_the_answers_pair_as_a_row():
     scores = {"acc": 0.945, "tpr": 0.935, "tnr": 0.975}
     table = chapter05_accuracy.accuracy_table(scores, 0.745, 2000, 0, {"acc": 0.96, "tpr": 0.95, "tnr": 0.96}, 0.57)
     threshold = chapter05.recorded_threshold(chapter05.COMPILED)
-    timed = f"ours: `strong` network of the timed Algorithm 1 runs (threshold {threshold:.2f}), uniform unseen samples"
+    timed = (
+        f"ours: the timed network (`strong`, the Algorithm 1 runs) (threshold {threshold:.2f}), uniform unseen samples"
+    )
     row = next(line for line in table.splitlines() if line.startswith(f"| {timed} | {acc}% |"))
     assert row.endswith(f"| {always}% |")  # reader r33e, lift 4: answering "valid" to its samples, its last column
-    ours = "ours: this notebook's `strong` model (threshold 0.57)"
+    ours = "ours: the notebook's network (`strong`, threshold 0.57)"
     assert f"| {ours}, §5's 2000 uniform samples, workspace of seed 0 | 94.5% | 93.5% | 97.5% | 74.5% |" in table
     assert table.endswith("its own balanced unseen test (half valid): accuracy 96%, TPR 95%, TNR 96%.\n\n</details>")
     shown, folded = table.split("<details>")  # reader r44e, item 6: four rows open, §5's model among them
@@ -281,7 +283,7 @@ def test_the_three_strong_trainings_are_named_each_with_its_threshold():
     assert written["strong"] != written[chapter05.COMPILED]  # two trainings, two thresholds
     timed = f"`strong --planner paper` in {chapter05.RESULTS}, threshold {written[chapter05.COMPILED]:.2f}"
     assert timed in chapter05.answer()  # the timed network's threshold, in the answer's fold
-    lazy = f"with a third training of `strong` (`strong` in {chapter05.RESULTS}, threshold {written['strong']:.2f};"
+    lazy = f"with the lazy-PRM network (`strong` in {chapter05.RESULTS}, threshold {written['strong']:.2f};"
     assert lazy in chapter05.time_tables()  # the lazy-PRM runs' training, named in the fold that uses it
 
 

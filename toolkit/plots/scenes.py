@@ -202,6 +202,8 @@ def _still_legend(
     }
     fig.tight_layout(rect=(0, 0.8 / fig.get_figheight(), 1, 1), w_pad=w_pad, h_pad=h_pad)  # r17c: "y" met a title;
     #   r23b: a close-up's "x" touched the overview's title at h_pad 2.5
+    for name in (t for ax in fig.axes for t in ax.texts if t.get_gid() == "pose label"):  # r48e, 05 item 6: laid out,
+        name.set_in_layout(True)  # now counted in a tight crop (it clipped "the robot" to "robot" at the page's edge)
     for ax in close_ups:  # the layout reshapes each panel, and mplot3d may then draw its z axis on the other side
         _z_apart(ax)
     low = min((ax.get_tightbbox() or ax.bbox).y0 for ax in fig.axes) / fig.bbox.height  # the lowest label
@@ -220,15 +222,11 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
     and what the ``model`` answers for it)."""
     text = _overview_words(robot, workspace, poses, samples, trace)
     counted = [("blocks", str(len(workspace.boxes)))]
-    counted += [(f"samples {kind}", str(int(m.sum()))) for kind, m in (samples[1].items() if samples else ())]
+    kinds = {k: m for k, m in (samples[1] if samples else {}).items() if model or k != "model wrong"}  # r48e, 05 5
+    counted += [(f"samples {kind}", str(int(m.sum()))) for kind, m in kinds.items()]  # no model: no "model wrong"
     counted += [("points of the base's path", str(len(trace)))] if trace is not None else []
-    columns = (
-        "pose",
-        "exact checker",
-        "samples drawn near it (none over it)",
-        f"blocks within {NEAR} of a link",
-        "seen from",
-    )
+    within = f"blocks within {NEAR} of a link"
+    columns = ("pose", "exact checker", "samples drawn near it (none over it)", within, "seen from")
     parts = [
         Part("the whole workspace", "what the overview draws", ("drawn", "count"), tuple(counted)),
         Part(

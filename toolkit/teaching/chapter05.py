@@ -18,7 +18,8 @@ RESULTS = "[`docs/results.md`](../docs/results.md)"  # a link from the chapter (
 NOISE = "within noise"  # a ratio of ours inside its statistic's noise band (costs.floors: twice timing's reach)
 OWN = "median own ratio"  # the answer's rows: each query's time with / without, the median over the queries
 CHECKERS = ((COMPILED, "our compiled checker"), (FCL, "python-fcl on both sides"))  # the answer's two
-MEDIANS_ROW = "3DC-7, `strong` network, our compiled checker, Algorithm 1: ratio of the two medians"  # r46e
+MEDIANS_ROW = "3DC-7, timed network, our compiled checker, Algorithm 1: ratio of the two medians"  # r46e
+TIMED, MINE, LAZY = "timed network", "notebook's network", "lazy-PRM network"  # r48e, 05 item 4: trainings' labels
 TIE_WORDS = f'a ratio less than {TIE:.0%} from 1 reads "{TIES}"'  # the band, printed beside each time table
 
 
@@ -65,8 +66,8 @@ def answer(threshold: float | None = None) -> str:
     # lift 4: the fold's title names them, and the timed network's accuracy is said there too)
     return (
         ("**No.** On 3DC-7 no sampler's whole query saved 10 % or more" if none_saved else "**Not always.** On 3DC-7")
-        + " with the accurate `strong` network inside Algorithm 1, by the median of each query's own ratio (the "
-        "table below), timed against our compiled exact checker or against the slow python-fcl: at most "
+        + f" with the {TIMED} (an accurate `strong` network) inside Algorithm 1, by the median of each query's own "
+        "ratio (the table below), timed against our compiled exact checker or against the slow python-fcl: at most "
         f"{max(1 - r for r in own) * 100:.0f} % less time.\n\n**Why.** "
         + _why(shares, fcl_sampling, fcl_total)
         + f" With our fast compiled checker, one network answer costs as much as {cost:.1f} exact checks, so "
@@ -115,19 +116,19 @@ def answer_map(threshold: float | None = None) -> str:
     return (
         "Which of the chapter's runs the answer reads:\n\n"
         "| what | the answer uses | the chapter also shows |\n| --- | --- | --- |\n"
-        f"| training of `strong` | the timed one (threshold {recorded_threshold(COMPILED):.2f}) | two more trainings "
-        "of the same recipe (the table below) |\n"
+        f"| training of `strong` | the {TIMED} (threshold {recorded_threshold(COMPILED):.2f}) | the {MINE} and the "
+        f"{LAZY} (the table below) |\n"
         "| planner | Algorithm 1 (planner `paper`) | §6–7: the lazy PRM's path; the closing fold: the lazy PRM "
         "timed |\n"
         f"| statistic | the verdict: the median of each query's own ratio; the limit in **Why**: mean times "
         "| the ratio of means (Table 3's: the sampling table, the folds); a ratio of two medians (the closing fold) |"
-        "\n\nThe three trainings of `strong` in this chapter, each with its own weights and threshold:\n\n"
+        "\n\nThe three trainings of `strong` in this chapter, each with its own weights, threshold and label:\n\n"
         "| training | threshold | where the chapter uses it |\n| --- | ---: | --- |\n"
-        f"| the timed one ({run_name(COMPILED).split(', threshold')[0]}) | {recorded_threshold(COMPILED):.2f} | the "
+        f"| **{TIMED}** ({run_name(COMPILED).split(', threshold')[0]}) | {recorded_threshold(COMPILED):.2f} | the "
         "answer, its accuracy row at the end |\n"
-        f"| this notebook's (`trained_models`, cached) | {mine.removeprefix('threshold ')} | §5's views, §6–7's "
+        f"| **{MINE}** (`trained_models`, cached) | {mine.removeprefix('threshold ')} | §5's views, §6–7's "
         "path, its accuracy row at the end |\n"
-        f"| a third ({run_name('strong').split(', threshold')[0]}) | {recorded_threshold('strong'):.2f} | the "
+        f"| **{LAZY}** ({run_name('strong').split(', threshold')[0]}) | {recorded_threshold('strong'):.2f} | the "
         "closing fold: the lazy PRM timed |"
     )
 
@@ -136,7 +137,7 @@ def total_table() -> str:
     """The evidence under the answer (readers r34e, r39e: one row per checker): the 3DC-7 total time with / without
     prediction in Algorithm 1, each query's own ratio's median; one inside the noise band adds :data:`NOISE`."""
     own = floors()["own"]
-    rows = [_noise_row(f"`strong` network, {n}: {OWN}", recorded.query_ratios(w)[SCENARIO], own) for w, n in CHECKERS]
+    rows = [_noise_row(f"{TIMED}, {n}: {OWN}", recorded.query_ratios(w)[SCENARIO], own) for w, n in CHECKERS]
     edge = f'; "{NOISE}": inside the noise band, {own[0]:.2f}–{own[1]:.2f}' if any(NOISE in r for r in rows) else ""
     return (
         f"Total time with / without prediction on 3DC-7, inside Algorithm 1 ({RESULTS}), each query's own ratio, the "
@@ -162,9 +163,7 @@ def means_table() -> str:
         )
         + "".join(
             "\n"
-            + _noise_row(
-                f"`strong` network, {name}: ratio of the means", _ratios(recorded.improvements(who, SCENARIO)), band
-            )
+            + _noise_row(f"{TIMED}, {name}: ratio of the means", _ratios(recorded.improvements(who, SCENARIO)), band)
             for who, name in CHECKERS
         )
     )
@@ -218,8 +217,8 @@ def _answer_numbers(best_means: float, best: str) -> str:
         f'of the means reads "{cell}" in the table below.\n\n' + means_table() + "\n\n"
         f"{check_costs()} From the two unrounded rates, one python-fcl check takes as long as about "
         f"{rates['exact cfg/s'] / rates['FCL cfg/s']:.0f} compiled checks in that run.\n\n"
-        f"The network timed in both is the timed training ({run_name(COMPILED)}); section 5's views use another "
-        f"training of the same recipe. The timed one is accurate: right on {scores['acc']:.0%} of "
+        f"The network timed in both is the {TIMED} ({run_name(COMPILED)}); section 5's views use the {MINE}. "
+        f"The {TIMED} is accurate: right on {scores['acc']:.0%} of "
         'uniform samples in the record\'s unseen 3DC-7 workspaces, where answering "valid" to all is right on '
         f'{share:.0%} (its row in the accuracy table at the end). The "No" is about cost, not accuracy.'
     )
@@ -243,7 +242,7 @@ def check_costs() -> str:
     compiled = rates["exact cfg/s"] / rates["learned cfg/s"]  # compiled checks in the time of one network answer
     fcl = rates["learned cfg/s"] / rates["FCL cfg/s"]  # network answers in the time of one python-fcl check
     return (
-        f"On 3DC-7 one answer of the timed `strong` network takes as long as {compiled:.1f} compiled exact checks, "
+        f"On 3DC-7 one answer of the {TIMED} takes as long as {compiled:.1f} compiled exact checks, "
         f"and one python-fcl check as long as {fcl:.1f} network answers ({RESULTS}, the timed run's "
         "configurations a second)."
     )
@@ -297,10 +296,8 @@ def time_tables() -> str:
         + ratio_table(
             {
                 f"the paper's Table 3: {paper_less} less": _ratios(paper["sampling"]),
-                "`strong` network, our compiled checker": _ratios(
-                    recorded.improvements(COMPILED, SCENARIO, "sampling")
-                ),
-                f"`strong` network, python-fcl on both sides: {less} less": _ratios(fcl_sampling),
+                f"{TIMED}, our compiled checker": _ratios(recorded.improvements(COMPILED, SCENARIO, "sampling")),
+                f"{TIMED}, python-fcl on both sides: {less} less": _ratios(fcl_sampling),
             }
         )
         + f"\n\n{_paper_side()}"
@@ -371,12 +368,12 @@ def _more(moved: float, longer: str = "") -> str:
         f"band is {medians[0]:.2f}–{medians[1]:.2f}; a ratio of means reads against "
         f"{bands['means'][0]:.2f}–{bands['means'][1]:.2f}. The two lazy-PRM rows ({span(lazy)}; {span(recipe)}) "
         f"{'lie beyond their band' if lazy_beyond else 'are not all beyond their band'}; a ratio inside its band "
-        f'reads "{NOISE}". Against the lazy PRM, the fastest exact planner a network can drive, with a third '
-        f"training of `strong` ({run_name('strong')}; {TIE_WORDS}):\n\n"
+        f'reads "{NOISE}". Against the lazy PRM, the fastest exact planner a network can drive, with the '
+        f"{LAZY} ({run_name('strong')}; {TIE_WORDS}):\n\n"
         + "\n".join(
             [
                 HEADER,
-                _noise_row("3DC-7, `strong` preset, medians, vs lazy PRM", lazy, medians),
+                _noise_row(f"3DC-7, {LAZY}, medians, vs lazy PRM", lazy, medians),
                 _noise_row("3DC-7, `paper` preset, medians, vs lazy PRM", recipe, medians),
                 _noise_row("3DC-7, `paper` preset, Table 3's means, vs Algorithm 1", recipe_means, bands["means"]),
                 _noise_row(MEDIANS_ROW, of_medians, medians),  # reader r46e, 05 item 3: the other rows' labels

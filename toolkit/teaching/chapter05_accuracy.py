@@ -8,7 +8,7 @@ from decimal import ROUND_HALF_UP, Decimal
 
 from toolkit.experiments import paper_numbers
 from toolkit.teaching import recorded
-from toolkit.teaching.chapter05 import COMPILED, SCENARIO, recorded_scores, recorded_threshold
+from toolkit.teaching.chapter05 import COMPILED, MINE, SCENARIO, TIMED, recorded_scores, recorded_threshold
 
 
 def percent(value: float, digits: int = 1) -> str:
@@ -26,7 +26,7 @@ def _row(label: str, scores: Mapping[str, float], always: float | None, digits: 
     return f"| {label} | " + " | ".join(cells) + " |"
 
 
-TIMED_ROW = "ours: `strong` network of the timed Algorithm 1 runs"  # the accuracy table's row of the answer's network
+TIMED_ROW = f"ours: the {TIMED} (`strong`, the Algorithm 1 runs)"  # the row of the answer's network (r48e: its label)
 KEYS_BALANCED = (("acc", "Balanced unseen Acc"), ("tpr", "TPR"), ("tnr", "TNR"))  # docs/results.md's columns
 ALWAYS = 'answering "valid" to all'  # the accuracy table's baseline column (reader r33e, lift 4)
 
@@ -46,7 +46,7 @@ def accuracy_table(
     strong, strong_share = recorded_scores(COMPILED)
     timed = recorded_threshold(COMPILED)
     timed_said = "" if timed is None else f" (threshold {timed:.2f})"
-    ours = f"ours: this notebook's `strong` model (threshold {threshold:.2f})"
+    ours = f"ours: the {MINE} (`strong`, threshold {threshold:.2f})"
     head = [f"| 3DC-7, unseen | accuracy | TPR | TNR | {ALWAYS} |", "| --- | ---: | ---: | ---: | ---: |"]
     paper = paper_numbers.MLP[SCENARIO]["unseen"]
     shown = [
@@ -62,14 +62,14 @@ def accuracy_table(
     folded = [_row("ours: the same recipe, uniform unseen samples", recipe, recipe_share)]
     return (
         "\n".join(head + shown)
-        + "\n\n<details><summary>One more row, the recipe on uniform samples, and this notebook's model on its "
+        + f"\n\n<details><summary>One more row, the recipe on uniform samples, and the {MINE} on its "
         "balanced test</summary>"
         + "\n\n"
         + "\n".join(head + folded)
         + f"\n\nOn uniform samples the recipe's {recipe['acc']:.0%} is above Table 2's {paper['acc']:.0%} only because "
         f'{recipe_share:.0%} of them are valid: answering "valid" to all scores the same, and the recipe does nothing '
         "else (TPR 100 %, TNR 0 %)."
-        + f"\n\nThis notebook's model on its own balanced unseen test (half valid): accuracy {balanced['acc']:.0%}, "
+        + f"\n\nThe {MINE} on its own balanced unseen test (half valid): accuracy {balanced['acc']:.0%}, "
         f"TPR {balanced['tpr']:.0%}, TNR {balanced['tnr']:.0%}." + (f" {also}" if also else "") + "\n\n</details>"
     )
 
