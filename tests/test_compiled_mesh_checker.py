@@ -79,10 +79,21 @@ def test_links_wholly_inside_a_sphere_collide_and_cells_are_classified_once():
         np.stack(np.unravel_index(np.arange(len(checker._mesh.cell_state)), tuple(checker._grid.shape)), axis=-1) + 0.5
     )
     known = np.flatnonzero(checker._mesh.cell_state != 2)
-    np.testing.assert_array_equal(  # a classified cell's centre: the winding number's answer
-        checker._mesh.cell_state[known] == INSIDE, ws.solid.inside(centres[known])
-    )
     assert {INSIDE, OUTSIDE} <= set(checker._mesh.cell_state[known].tolist())
+    # a classified cell's centre: the winding number's answer, on every cell beside the unclassified band round the
+    # surface (where a fill would first go wrong) and 20,000 others (all 1.3 million took 66 s of the suite's time)
+    unknown = (checker._mesh.cell_state == 2).reshape(tuple(checker._grid.shape))  # (nx, ny, nz)
+    beside = np.zeros_like(unknown)
+    for axis in range(3):
+        ahead, behind = [slice(None)] * 3, [slice(None)] * 3
+        ahead[axis], behind[axis] = slice(1, None), slice(None, -1)
+        beside[tuple(ahead)] |= unknown[tuple(behind)]
+        beside[tuple(behind)] |= unknown[tuple(ahead)]
+    border = np.flatnonzero((beside & ~unknown).ravel())
+    others = np.random.default_rng(3).choice(known, 20_000, replace=False)
+    cells = np.union1d(border, others)
+    assert len(border) > 1_000  # the band is round the whole sphere
+    np.testing.assert_array_equal(checker._mesh.cell_state[cells] == INSIDE, ws.solid.inside(centres[cells]))
     Q = scenario.robot.sample(np.random.default_rng(4), 3000)
     assert_agree(ws, scenario.robot, Q)
     inside, outside = straddle_the_boundary(checker, np.random.default_rng(5), 100)
