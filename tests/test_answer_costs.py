@@ -186,6 +186,15 @@ def test_chapter04_tables_name_every_sampler_and_each_failure():
     stages = chapter04.eager_tables(two)[0]  # reader r36d: section 3's construction, so the rows add up to the total
     rows = {line.split(" | ")[0][2:]: float(line.split(" | ")[1].rstrip(" |")) for line in stages.splitlines()[4:9]}
     assert rows["total"] == 10.0 and abs(sum(v for k, v in rows.items() if k != "total") - 10.0) < 0.2
+    modes = {"without": records["without"], "with": [dict(records["without"][0], nodes=8, connection_s=0.003)]}
+    assert chapter04.roadmap_line(modes) == (  # reader r48d, item 1: the roadmap moves the time, either way
+        "With prediction the median roadmap had fewer nodes (8 against 10 without), and the connection stage took "
+        "3.0 ms a query against 4.0 ms: prediction moves this time through the roadmap it leaves, here less, "
+        "whatever a network call costs against the sample checks it replaces (section 4)."
+    )
+    modes["with"] = [dict(records["without"][0], nodes=12, connection_s=0.0045)]
+    assert "had more nodes (12 against 10 without)" in chapter04.roadmap_line(modes)
+    assert "here more, " in chapter04.roadmap_line(modes)
     folded = chapter04.path_checks(tables, {"2DS": dict.fromkeys(PAPER_SAMPLERS, "2 of 2")})
     assert folded.startswith("<details><summary>Success and path validity") and folded.endswith("</details>")
     assert "| 2DS | 2 of 2 | 2 of 2 | 2 of 2 | 2 of 2 |" in folded and said in folded

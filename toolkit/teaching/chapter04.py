@@ -159,6 +159,22 @@ def eager_tables(records: Mapping[str, list[dict]]) -> list[str]:
     return [stages + "\n\n" + other_line(records), f"{counted_title}\n\n{counts_head}\n{counts_body}"]
 
 
+def roadmap_line(records: Mapping[str, list[dict]]) -> str:
+    """Under section 5's counts (reader r48d, item 1): the roadmap prediction left, and the connection stage's time
+    in each mode, as the stage table gives it; the roadmap moves the time whatever a network call costs."""
+    nodes = {m: float(np.median([r["nodes"] for r in records[m]])) for m in ("without", "with")}
+    ms = {m: _stage_ms(records[m], "connection_s") for m in ("without", "with")}
+    fewer = "fewer" if nodes["with"] < nodes["without"] else "more" if nodes["with"] > nodes["without"] else "as many"
+    shorter = float(ms["with"]) < float(ms["without"])
+    return (
+        f"With prediction the median roadmap had {fewer} nodes ({nodes['with']:,.0f} against {nodes['without']:,.0f} "
+        f"without), and the connection stage took {ms['with']} ms a query against {ms['without']} ms: prediction "
+        "moves this time through the roadmap it leaves, "
+        + ("here less, " if shorter else "here more, ")
+        + "whatever a network call costs against the sample checks it replaces (section 4)."
+    )
+
+
 def other_line(records: Mapping[str, list[dict]]) -> str:
     """What section 5's *other* row holds (with prediction the workspace's encoding), and how rows are built."""
     said = (
