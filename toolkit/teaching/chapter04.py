@@ -111,6 +111,25 @@ def path_checks(
     )
 
 
+def live_line(tables: Mapping[str, Mapping[str, Mapping]]) -> str:
+    """Section 3's visible result (reader r48d, item 3): the live cells' verdicts by the median of each query's own
+    ratio, their range, and how many are no clear evidence (marked in the folded table)."""
+    found = [findings.planning_verdict(row) for table in tables.values() for row in table.values()]
+    medians = [median for median, *_ in found]
+    said = Counter(time_verdict(median) for median in medians)
+    unsure = sum(v == findings.UNSURE and time_verdict(m) != TIES for m, *_, v in found)
+    words = {COSTS: "cost time in", SAVES: "saved time in", TIES: "tied in"}
+    parts = [f"{words[v]} {said[v]}" for v in (COSTS, SAVES, TIES) if said[v]]
+    only = next((words[v] for v in said if said[v] == len(found)), "")
+    cells = f"{only} all {len(found)} cells" if only else f"{', '.join(parts)} of the {len(found)} cells"
+    return (
+        f"**In these live queries** prediction {cells} (the median of each query's own ratio, "
+        f"{min(medians):.2f} to {max(medians):.2f})"
+        + f"; {unsure} of those verdicts {'is' if unsure == 1 else 'are'} no clear evidence" * bool(unsure)
+        + ". A handful of queries illustrate; section 6's recorded runs decide."
+    )
+
+
 def counted(runs: Mapping[str, tuple[list[dict], dict]]) -> dict[str, list[dict]]:
     """``run_interleaved``'s records with ``samples_exact`` (nodes less the network's) and ``other_s`` (the rest)."""
     return {
