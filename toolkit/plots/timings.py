@@ -37,7 +37,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
     as "other"); a whisker from the total's first to third quartile; above each pair the median of the queries' own
     ratios, time with / without (the summaries' ``total_s_per_query``: each query was solved in both modes in turn),
     the number the chapters' tables read their verdicts from. It is not the bars' quotient: where the two fall on
-    opposite sides of 1 (the taller bar is the other mode's) the number carries a "†" that the title explains
+    opposite sides of 1 (the taller bar is the other mode's) the number carries a "‡" that the title explains
     (reader r35d: "*" is chapter 04's timing noise).
 
     Each panel has its own scale, set by its bars: a whisker reaching past :data:`CUT` times the tallest bar (one
@@ -56,7 +56,7 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         crossed = (bars - 1) * (np.asarray(ratio) - 1) < 0  # (samplers,): the taller bar says the other way
         for i, r in enumerate(ratio):  # above the frame, over the pair and a cut whisker's end: never on a bar
             where = dict(xycoords=("data", "axes fraction"), xytext=(0, 13), textcoords="offset points")
-            label = f"{r:.2f}x{'†' if crossed[i] else ''}"  # r40d: one ratio a pair; the bars' own in the words
+            label = f"{r:.2f}x{CROSSED if crossed[i] else ''}"  # r40d: one ratio a pair; the bars' own in the words
             ax.annotate(label, (i, 1.0), ha="center", va="bottom", fontsize=9, weight="bold", **where)
         ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=9)
         ax.set_xlabel("sampler, without / with prediction")
@@ -106,8 +106,9 @@ def _stage_words(title: str, names: list[str], table: dict, ratio: list[float], 
 
 
 MS = 1000.0  # the figure's unit, ms, per second
+CROSSED = "‡"  # not chapter 04's † (no clear evidence, its tables) nor its * (the noise band): reader r48d
 STARRED = {  # a stage panel's title's end, where a pair is starred; none where none is (no mark promised)
-    True: " (†: the bars say the other way)",
+    True: " (‡: the bars say the other way)",
     False: "",
 }
 BAR = 0.3  # a stage bar's width; a pair's centres are 0.44 apart, each bar's whisker stands on its right
