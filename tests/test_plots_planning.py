@@ -279,6 +279,11 @@ def test_a_pair_whose_taller_bar_says_the_other_way_is_starred_and_told():
     ]
     assert "median of each query's ratio" in ax.get_title() and "‡: the bars say the other way" in ax.get_title()
     assert "0.60x; the bars' own ratio 1.03x, though the bar with prediction is the taller" in alt.alt_text(fig)
+    fig = timings.stage_times({"2DS": planning}, band=(0.5, 0.7))  # reader r48d: * as chapter 04's tables mark it
+    assert [t.get_text() for t in fig.axes[0].texts] == ["0.60x*", "0.60x*‡", *["0.60x*"] * 2]
+    assert "(*: inside the noise band; ‡: the bars say the other way)" in fig.axes[0].get_title()
+    assert "query's ratio 0.60x, inside the noise band; the bars' own ratio" in alt.alt_text(fig)
+    assert "*" not in timings.stage_times({"2DS": planning}, band=(0.7, 1.3)).axes[0].get_title()
     untold = timings.stage_times({"2DS": PLANNING}).axes[0].get_title()
     assert "‡" not in untold and "other way" not in untold  # reader r31d: no mark promised where none is drawn
 

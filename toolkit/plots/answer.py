@@ -95,8 +95,7 @@ def answer_ratios(
     for ax in axes:  # one scale for both panels: a point above reads against one below
         ax.set_ylim(min(*every, 1 - tie) / 1.25, max(*every, 1 + tie) * 1.25)
         log_ticks(ax)
-        of_means = ax is axes[0] and bool(means or not spans)  # a panel of means, as _floor's (reader r48d)
-        _near_ticks(ax, labelled=not of_means)  # 0.8, 1.2 bracket the own ratios' band, not the means'
+        _near_ticks(ax, labelled=not (ax is axes[0] and (means or not spans)))  # r48d: not on a panel of means
         ax.set_xlabel("sampler, grouped by scenario", labelpad=24)  # under the scenarios' names
     handles, labels = axes[0].get_legend_handles_labels()
     fig.legend(handles, labels, loc="outside upper center", ncol=1, fontsize=9, frameon=False)  # a line a series
