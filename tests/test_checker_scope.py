@@ -253,6 +253,10 @@ def test_the_answers_why_gives_sampling_s_share_and_the_papers_savings_beyond_sa
         "saves 4.10 s; its sampling took 0.21 s)." in said
     )
     assert "section 6's last table" not in said
+    assert said.startswith(  # reader r48d: the accurate network's accuracy in one number, from the record
+        "**Why no saving:** the network is accurate (it is right 93–100 % of the time on half-valid samples in "
+        "unseen workspaces, by scenario: `docs/results.md`, that run's Table 2), but prediction replaces only"
+    )
 
 
 def test_table_3_is_quoted_exactly_and_our_tie_band_is_named_ours():
