@@ -959,14 +959,15 @@ STATUS = re.compile(  # findings.claim_status: the paper's claim from the record
 ANSWER_NO = "**No:** with an accurate network"  # chapter04.answer's first words (reader r46d: two short sentences)
 FAST_BULLET = re.compile(  # chapter04.answer: two sentences, then the counts in a table (r46d item 3), one-spaced
     r"\*\*(?:No|Rarely|In part):\*\* with an accurate network inside the paper's Algorithm 1 and our fast checker, "
-    r"prediction made (?:no cell|\d+ of \d+) faster and (?:no|\d+ of \d+) slower; with python-fcl, (?:none|\d+ of \d+) "
+    r"prediction made (?:no cell|\d+ of \d+) faster and (?:no|\d+ of \d+) slower"
+    r"(?:, (?P<said_beyond>none|\d+) of them beyond the noise band)?; with python-fcl, (?:none|\d+ of \d+) "
     r"faster, (?:none|\d+ of \d+) slower\. The paper's Table 3 saves time in (?P<some>\d+) of its \d+ cells, 10 % or "
     r"more in (?P<papers>\d+)\.\s"
     r"\| (?P<total>\d+) scenario–sampler cells, by the median of each query's own time ratio \(with ÷ without\) "
     r"\| faster \| tie \| slower \|\s\| --- \| --- \| --- \| --- \|\s"
     r"\| our fast exact checker \| (?P<fast>none|\d+)(?: \(\d+ beyond the noise band\))? \| (?P<fast_ties>none|\d+) "
     r"\| (?P<fast_costs>none|\d+)(?: \((?P<fast_beyond>\d+) beyond the noise band\))? \|\s"
-    r"\| python-fcl on both sides \(the fast checker's bands\) \| (?P<slow>none|\d+)"
+    r"\| python-fcl on both sides \(not timed twice: it borrows the fast checker's noise band\) \| (?P<slow>none|\d+)"
 )
 MEANS_LINE = re.compile(  # chapter04.by_means, beside section 6's means figure (reader r40d: off the first screen)
     r"\*\*By mean times\*\*, the paper's statistic, prediction saved time in (?P<fast_means>none|\d+) cells with our "
@@ -1047,6 +1048,9 @@ def _claim_status(nb, found: list[tuple[list[str], list[list[str]]]], said: dict
         for m in FAST_BULLET.finditer(outputs[0] if outputs else "")
     ]
     beyond = str(int(expected[4]) - edge[findings.COSTS])
+    said_beyond = [m["said_beyond"] for m in FAST_BULLET.finditer(outputs[0] if outputs else "")]
+    if said_beyond not in ([], [str(int(beyond) or "none")]):  # reader r48d, item 2: the sentence and its table agree
+        problems.append(f"04: the answer's sentence counts {said_beyond} costs beyond the noise band, not {beyond}")
     means_line = [m["fast_means"] for m in MEANS_LINE.finditer(" ".join(outputs))]
     if bullet != [(*expected[1:5], beyond)] or means_line != [counted[0]]:
         problems.append(f"04: the first code cell's bullet on our fast checker says {bullet}; section 6's: {expected}")

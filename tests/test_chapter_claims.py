@@ -549,6 +549,10 @@ def test_chapter_04_holds_the_answers_bullet_on_our_fast_checker_to_section_6():
         f"04: the first code cell's bullet on our fast checker says [('none', '16', '7', '5', '3')]; section "
         f"6's: {expected}"
     ]
+    nb = chapter_04()  # reader r48d, item 2: the sentence says how many of its slower cells are beyond the band
+    first = nb["cells"][0]["outputs"][0]["data"]
+    first["text/markdown"] = first["text/markdown"].replace("5 of them beyond", "9 of them beyond", 1)
+    assert problems(CH04, nb) == ["04: the answer's sentence counts ['9'] costs beyond the noise band, not 5"]
     nb = chapter_04()  # reader r33d: the noise band is a mark on the table's verdicts, explained once
     for cell in nb["cells"]:
         for output in cell.get("outputs", []):

@@ -265,8 +265,8 @@ def test_stage_times_one_stacked_bar_per_sampler_and_mode_with_the_given_heights
 def test_a_pair_whose_taller_bar_says_the_other_way_is_starred_and_told():
     """Review r13a: "0.80x" over a pair whose bar with prediction was the taller (7.64 ms against 7.42). The number
     is the median of each query's ratio, not the bars' quotient; where the two fall on opposite sides of 1 it
-    carries a "†" that the title explains (reader r35d: not "*", chapter 04's timing noise), and the description says
-    which bar is taller."""
+    carries a "‡" that the title explains (reader r35d: not "*", chapter 04's timing noise; r48d: nor its tables'
+    †), and the description says which bar is taller."""
     planning = {s: {m: dict(row) for m, row in modes.items()} for s, modes in PLANNING.items()}
     taller = 1.03 * planning["OB"]["without"]["total_s_median"]  # its queries' own ratios still 0.5, 0.6, 1.2
     planning["OB"]["with"].update(total_s_median=taller, total_s_q1=0.8 * taller, total_s_q3=1.5 * taller)
@@ -274,13 +274,18 @@ def test_a_pair_whose_taller_bar_says_the_other_way_is_starred_and_told():
     ax = fig.axes[0]
     assert [t.get_text() for t in ax.texts] == [
         "0.60x",
-        "0.60x†",
+        "0.60x‡",
         *["0.60x"] * 2,
     ]
-    assert "median of each query's ratio" in ax.get_title() and "†: the bars say the other way" in ax.get_title()
+    assert "median of each query's ratio" in ax.get_title() and "‡: the bars say the other way" in ax.get_title()
     assert "0.60x; the bars' own ratio 1.03x, though the bar with prediction is the taller" in alt.alt_text(fig)
+    fig = timings.stage_times({"2DS": planning}, band=(0.5, 0.7))  # reader r48d: * as chapter 04's tables mark it
+    assert [t.get_text() for t in fig.axes[0].texts] == ["0.60x*", "0.60x*‡", *["0.60x*"] * 2]
+    assert "(*: inside the noise band; ‡: the bars say the other way)" in fig.axes[0].get_title()
+    assert "query's ratio 0.60x, inside the noise band; the bars' own ratio" in alt.alt_text(fig)
+    assert "*" not in timings.stage_times({"2DS": planning}, band=(0.7, 1.3)).axes[0].get_title()
     untold = timings.stage_times({"2DS": PLANNING}).axes[0].get_title()
-    assert "†" not in untold and "other way" not in untold  # reader r31d: no mark promised where none is drawn
+    assert "‡" not in untold and "other way" not in untold  # reader r31d: no mark promised where none is drawn
 
 
 def test_a_whisker_far_above_the_bars_is_cut_at_the_top_with_its_end_written():

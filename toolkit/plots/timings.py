@@ -16,7 +16,7 @@ from matplotlib.transforms import offset_copy
 
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import CATEGORICAL, COLORS, PAGE_WIDTH, halo, series_style
-from toolkit.util.verdicts import per_query_ratios
+from toolkit.util.verdicts import TIES, per_query_ratios, time_verdict
 
 MODES = ("without", "with")
 STAGE_KEYS = ("sampling_s", "connection_s", "query_s")  # PRM stats, in the order the planner spends them
@@ -30,19 +30,20 @@ STAGE_LABELS = {
 }
 
 
-def stage_times(panels: dict[str, dict]) -> Figure:
+def stage_times(panels: dict[str, dict], band: tuple[float, float] | None = None) -> Figure:
     """Per panel (e.g. a scenario), a ``planning`` table ``{sampler: {"without": summary, "with": summary}}``
     (``queries.summarize``): one bar per sampler and mode, as tall as the median total over the queries in ms, split
     into the planner's stages in the shares of an average query (``_share``; the rest, encoding and set-up, on top
     as "other"); a whisker from the total's first to third quartile; above each pair the median of the queries' own
     ratios, time with / without (the summaries' ``total_s_per_query``: each query was solved in both modes in turn),
     the number the chapters' tables read their verdicts from. It is not the bars' quotient: where the two fall on
-    opposite sides of 1 (the taller bar is the other mode's) the number carries a "†" that the title explains
+    opposite sides of 1 (the taller bar is the other mode's) the number carries a "‡" that the title explains
     (reader r35d: "*" is chapter 04's timing noise).
 
     Each panel has its own scale, set by its bars: a whisker reaching past :data:`CUT` times the tallest bar (one
     slow query's spread would flatten every bar) is cut at the panel's top, a triangle there and its end written
-    beside it, inside the frame (the pair's ratio above the frame)."""
+    beside it, inside the frame (the pair's ratio above the frame). With ``band`` (chapter 04's noise band of each
+    query's own ratio), a saving or cost inside it carries "*", as chapter 04's tables mark it (reader r48d)."""
     fig = Figure(figsize=(PAGE_WIDTH, 3.7 * len(panels) + 0.8))  # one panel a row, as wide as a chapter's column
     axes = fig.subplots(len(panels), 1, squeeze=False)[:, 0]
     said, parts = [], []
@@ -54,20 +55,19 @@ def stage_times(panels: dict[str, dict]) -> Figure:
         ratio = [float(np.median(per_query_ratios(planning[s]))) for s in names]  # (samplers,)
         bars = table["total_s"][:, 1] / table["total_s"][:, 0]  # (samplers,): the bars' own quotient, with / without
         crossed = (bars - 1) * (np.asarray(ratio) - 1) < 0  # (samplers,): the taller bar says the other way
-        for i, r in enumerate(ratio):  # above the frame, over the pair and a cut whisker's end: never on a bar
+        labels, note = _ratio_labels(ratio, crossed, band)  # r40d: one ratio a pair; the bars' own in the words
+        for i, label in enumerate(labels):  # above the frame, over the pair and a cut whisker's end: never on a bar
             where = dict(xycoords=("data", "axes fraction"), xytext=(0, 13), textcoords="offset points")
-            label = f"{r:.2f}x{'†' if crossed[i] else ''}"  # r40d: one ratio a pair; the bars' own in the words
             ax.annotate(label, (i, 1.0), ha="center", va="bottom", fontsize=9, weight="bold", **where)
         ax.set_xticks(x.ravel(), [f"{s}\n{m}" for s in names for m in MODES], fontsize=9)
         ax.set_xlabel("sampler, without / with prediction")
         ax.set_ylabel("ms per query (median),\neach panel its own scale")
-        note = STARRED[bool(crossed.any())]  # review r30d: "none here", not a promised mark missing
         ax.set_title(
             f"{title}: above a pair, the median of each query's ratio{note}",  # reader r31d: one line, not three
             fontsize=9,
             pad=26,
         )
-        said.append(_stage_words(title, names, table, ratio, bars, crossed))
+        said.append(_stage_words(title, names, table, ratio, bars, crossed, labels))
         said[-1] += cut_in_words(
             cut, [[f"{s} {m}" for m in MODES] for s in names], table["total_s_q3"], ax.get_ylim()[1]
         )
@@ -90,7 +90,18 @@ def stage_times(panels: dict[str, dict]) -> Figure:
     return describe(fig, f"{text}. {'; '.join(said)}.", parts)
 
 
-def _stage_words(title: str, names: list[str], table: dict, ratio: list[float], bars, crossed) -> str:
+def _ratio_labels(ratio: list[float], crossed: np.ndarray, band: tuple[float, float] | None) -> tuple[list[str], str]:
+    """Each pair's ratio as written over it, "*" inside ``band`` (a saving or cost only), :data:`CROSSED` where the
+    bars say the other way; and the title's note naming the marks drawn (review r30d: none promised where none is)."""
+    noisy = [band is not None and band[0] < r < band[1] and time_verdict(r) != TIES for r in ratio]
+    labels = [f"{r:.2f}x{'*' * noisy[i]}{CROSSED if crossed[i] else ''}" for i, r in enumerate(ratio)]
+    marks = [NOISY] * any(noisy) + [STARRED] * bool(crossed.any())
+    return labels, f" ({'; '.join(marks)})" if marks else ""
+
+
+def _stage_words(
+    title: str, names: list[str], table: dict, ratio: list[float], bars, crossed, labels: Sequence[str] = ()
+) -> str:
     """:func:`stage_times`' words for one panel: each sampler's median totals without and with prediction and the
     median of its queries' ratios, the bars' own ratio (reader r40d: not over the pair), and which bar is taller where
     the two say opposite things."""
@@ -99,17 +110,19 @@ def _stage_words(title: str, names: list[str], table: dict, ratio: list[float], 
         taller = ", though the bar with prediction is the " + ("shorter" if bars[i] < 1 else "taller")
         words.append(
             f"{s} {ms_text(table['total_s'][i, 0])} ms without, {ms_text(table['total_s'][i, 1])} ms with "
-            f"(the median of each query's ratio {ratio[i]:.2f}x; the bars' own ratio {bars[i]:.2f}x"
+            f"(the median of each query's ratio {ratio[i]:.2f}x"
+            + ", inside the noise band"
+            * ("*" in (labels[i] if labels else ""))
+            + f"; the bars' own ratio {bars[i]:.2f}x"
             f"{taller if crossed[i] else ''})"
         )
     return f"{title}: " + ", ".join(words)
 
 
 MS = 1000.0  # the figure's unit, ms, per second
-STARRED = {  # a stage panel's title's end, where a pair is starred; none where none is (no mark promised)
-    True: " (†: the bars say the other way)",
-    False: "",
-}
+CROSSED = "‡"  # not chapter 04's † (no clear evidence, its tables) nor its * (the noise band): reader r48d
+STARRED = "‡: the bars say the other way"  # a stage panel's title's end, where a pair is marked so
+NOISY = "*: inside the noise band"  # ... and where a pair's ratio is inside ``band``
 BAR = 0.3  # a stage bar's width; a pair's centres are 0.44 apart, each bar's whisker stands on its right
 CUT = 2.0  # a whisker reaching past CUT times a panel's tallest bar is cut at its top, its end written there
 
