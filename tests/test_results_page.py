@@ -838,7 +838,7 @@ def test_the_arithmetic_of_the_saving_is_the_times_behind_table_3():
     paper = results_findings.paper_sampling(TABLES)
     # reader r47f, contradiction 1; reader r48f, items 1 and 5: after the worked example, the cell whose saving is
     # mostly not sampling's, each number a share of its mean query (no "do not subtract")
-    cause, hedge, _ = finding.partition(" 3DC-9 OB's saving is mostly not from sampling: ")
+    cause, hedge, _ = finding.partition(" 3DC-9 OB's saving with python-fcl is mostly not from sampling: ")
     assert cause.count(". ") == 0 and "\n" not in finding and "do not subtract" not in PAGE  # r40f
     assert hedge and "the rest of the query, or timing, moved it" in finding.lower()
     assert (

@@ -387,11 +387,11 @@ def share_allows(tables: Tables, cleared: list[tuple[str, float]]) -> str:
     )
     own = dict(cleared)
     said += "".join(
-        f" {cell}'s saving is mostly not from sampling: sampling took {percent(cells[cell].share)} % of its mean "
-        f"query, and skipping its checks saved {percent(cells[cell].saved)} % of that query, where the whole query "
-        f"saved {percent(cells[cell].total)} % by means and {percent(1 - own[cell])} % by each query's own ratio "
-        f"({own[cell]:.2f}). The rest of the query, or timing, moved it (below: “Where the whole query moved apart "
-        "from sampling”)."
+        f" {cell}'s saving with python-fcl is mostly not from sampling: sampling took {percent(cells[cell].share)} % "
+        f"of its mean query, and skipping its checks saved {percent(cells[cell].saved)} % of that query, where the "
+        f"whole query saved {percent(cells[cell].total)} % by means and {percent(1 - own[cell])} % by each query's own "
+        f"ratio ({own[cell]:.2f}). The rest of the query, or timing, moved it (below: “Where the whole query moved "
+        "apart from sampling”)."
         for cell in other
     )
     return said
