@@ -90,33 +90,43 @@ def table3_figure(text: str, kind: str = "total") -> Figure:
     height in every panel (:func:`toolkit.plots.query_ratios.means_grid`); each figure its own range, so the tie band of
     the total times is not squeezed by the sampling stage's wider one, the band's edges labelled (:data:`TICKS`)."""
     floor = noise(parse(text)).means  # reader r31f, item 3: the noise band the text under the figure reads by
+    banded = kind in BANDED  # reader r48f, figures: Figure 3 draws no band (none was measured for sampling times)
     every = [r for series in ratios(text, kind).values() for by in series.values() for r in by.values()]
+    drawn = [*every, *floor] if banded else every
     margin = MARGINS[kind]  # room between the outermost points and the frame
-    ylim = (min(*every, *floor) / margin, max(*every, *floor) * margin)
+    ylim = (min(drawn) / margin, max(drawn) * margin)
     fig = query_ratios.means_grid(
         {f"{NAMES[s]}: {kind} time, means": series for s, series in ratios(text, kind).items()},
         tie=findings.TIE,
         ylim=ylim,
         ticks=TICKS[kind],  # reader r44f, item 9: the hatch's edges labelled on the right only, clear of 0.5 and 1.5
         row_height=ROW_HEIGHTS[kind],
-        noise=floor,
+        noise=floor if banded else None,
         width=WIDTH,
     )
-    return worded(readable(fig, floor, kind), kind)
+    fig = readable(fig, floor if banded else None, kind)
+    return worded(fig, kind) if banded else sampled_words(fig)
+
+
+BANDED = ("total",)  # the figures that draw the noise band of a ratio of means: it was measured on total times only
 
 
 BAND_WORDS = "twice how far timing alone moved a ratio of means"  # ratio_bands.NOISE_WORDS' words for the hatch
 BAND_SAID = {  # reader r45f, item 5: the band is our timing's, not the paper's; Figure 3's is built on total times;
     # reader r47f, item 2 (common rule 3): twice how far timing alone moved the ratio, not how far
     "total": BAND_WORDS + " on our machine, hatched over our series only (the paper's points are not read against it)",
-    "sampling": "twice how far timing alone moved a ratio of mean total times on our machine, borrowed here for "
-    "sampling times (no band was measured for sampling) and hatched over our series only",
 }
+
+
+def sampled_words(fig: Figure) -> Figure:
+    """Figure 3's text alternative: it shows sampling time, not planning time, and draws no noise band."""
+    text = alt.alt_text(fig).replace("Mean planning time with prediction", "Mean sampling time with prediction", 1)
+    return alt.describe(fig, text, getattr(fig, alt.DETAILS, ()))
 
 
 def worded(fig: Figure, kind: str) -> Figure:
     """Reader r45f, item 5: the text alternative says which time the figure shows (Figure 3's is sampling time, not
-    planning time) and what its hatched band is: our timing noise, and for Figure 3 the total time's band borrowed."""
+    planning time) and what its hatched band is: our timing noise (Figure 2's only: :data:`BANDED`)."""
     text = alt.alt_text(fig)
     if BAND_WORDS not in text:  # the hatch's words come from ratio_bands.NOISE_WORDS: the two change together
         raise ValueError(f"the figure's text alternative no longer says {BAND_WORDS!r}; update BAND_WORDS")
@@ -138,13 +148,14 @@ LOOKS = {  # reader r42f, figures: no blue (Figure 1's "costs time") and no squa
     "ours, accurate strong network, python-fcl on both sides": (LINE_COLORS[3], "p"),  # bluish green, pentagon
 }  # the other two keep means_grid's look: the paper's grey diamonds, the `strong` network's reddish purple stars
 CROSS_WIDTH = 2.4  # points: a cross is all edge, drawn this thick (bold, as the key says) beside the filled markers
-CROSS_SCALE = 1.15  # a bold cross's arms fill less of its box than a filled marker: drawn this much larger
+CROSS_SCALE = 1.5  # a bold cross's arms fill less of its box than a filled marker: drawn this much larger (reader
+# r48f, figures: at 1.15 the crosses read as yellow blobs at 1280 px)
 CROSS_EDGE = 0.7  # points: the yellow cross's black edge, so it stands 3:1 on white (yellow alone is 1.2:1)
 MARKER_Z = 4  # over every band and hatch (reader r42f: Figure 3's hatching read as covering the markers inside it)
 TIE_TICKS = {"total": False, "sampling": False}  # reader r42f: 0.9 and 1.1 crowd the "1"; the legend names them
 
 
-def readable(fig: Figure, floor: tuple[float, float], kind: str = "total") -> Figure:
+def readable(fig: Figure, floor: tuple[float, float] | None, kind: str = "total") -> Figure:
     """Reader r40f, figures: Figures 2-3 with y tick labels on every panel (the right-hand ones had none) and the
     markers a little smaller, so that neighbouring ones (Figure 2's 2DS BS, Figure 3's 2DS BT) stand apart. Reader
     r41f, figures: the noise band's edges outside the axes, on the right of the right-hand panels only (in the gutter
@@ -167,6 +178,8 @@ def readable(fig: Figure, floor: tuple[float, float], kind: str = "total") -> Fi
             ticks = [t for t in ticks if low <= t <= high]
             ax.set_yticks(ticks, [f"{t:g}" for t in ticks])
             ax.yaxis.set_minor_formatter(NullFormatter())
+        if floor is None:
+            continue
         clear_of_paper(ax, floor)
         spec = ax.get_subplotspec()
         if spec is not None and spec.colspan.start == 1:  # a right-hand panel: the band's edges beside it, outside
@@ -178,6 +191,8 @@ def readable(fig: Figure, floor: tuple[float, float], kind: str = "total") -> Fi
     for handle, label in zip(legend.legend_handles, legend.texts):
         if isinstance(handle, Line2D):
             restyle(handle, label.get_text())
+        if floor is not None and label.get_text().startswith("noise band"):  # reader r48f, figures: said once
+            label.set_text(f"{label.get_text()} in every panel")
     room = (0.1 + 0.2 * len(fig.legends[0].texts)) / fig.get_figheight()  # as legend_above leaves for the legend
     fig.tight_layout(rect=(0, 0, 1, 1 - room))
     return fig
@@ -341,9 +356,8 @@ def figure_markdown(text: str, kind: str = "total") -> str:
         "Figure 1 says), sets a single cell of ours apart only beyond it. It is our machine's timing noise, not the "
         "paper's: it is hatched over our series only, not behind the paper's diamonds." + KEY
         if kind == "total"
-        else f"*{kind.capitalize()} time*, counted as in Figure 2. {sampling_takeaway(counts)} The hatched band is "
-        "Figure 2's, built on whole queries' total times (the table “timed twice” holds total times only) and "
-        "borrowed here for sampling times: a rough guide, not a band measured for sampling."
+        else f"*{kind.capitalize()} time*, counted as in Figure 2. {sampling_takeaway(counts)} No noise band is "
+        "drawn: the table “timed twice” holds total times only, so sampling times have no band of their own."
     )
     tables = parse(text)
     lead = LEADS[kind] + (means_not_verdict(tables) if kind == "total" else "")

@@ -105,11 +105,12 @@ def bands(tables: Tables) -> str:
             "every count and figure",
         ),
         ("noise band of each query's own ratio", edges(*band.own), built("own"), "own-ratio counts; Figure 1"),
-        (  # reader r45f, item 4: every run counted by means borrows it, the 2 December run too; Figure 3 for sampling
+        (  # reader r45f, item 4: every run counted by means borrows it, the 2 December run too (r48f: not Figure 3)
             "noise band of a ratio of means",
             edges(*band.means),
             built("means"),
-            "counts by means, the 2 December run's included; Figure 2; Figure 3 borrows it for sampling times",
+            "counts by means, the 2 December run's included; Figure 2 (Figure 3 draws none: sampling times were never "
+            "timed twice)",
         ),
         (
             "noise band of a ratio of medians",
@@ -134,7 +135,7 @@ def bands(tables: Tables) -> str:
         if any("timed twice" in heading for heading in tables[SLOW])
         else " The python-fcl run was not timed twice: its noise bands are borrowed from the compiled run."
     ) + (  # reader r45f, item 4: the 2 December run borrows two bands, each where its statistic is read
-        " Nor was the run of 2 December: it borrows the means band (its Table 3: the top table, Figures 2–3) and the "
+        " Nor was the run of 2 December: it borrows the means band (its Table 3: the top table, Figure 2) and the "
         "medians band (against the lazy PRM)."
         if not any("timed twice" in heading for heading in tables["paper"])
         else ""
