@@ -1778,7 +1778,8 @@ def test_reader_r48g_the_mean_against_the_median_the_paper_network_s_answers_and
         f"3DC-7's {exact7:,.0f} over {low7:g}–{high7:g} M gives {exact7 / 1e6 / high7:.1f}–{exact7 / 1e6 / low7:.1f}, "
         f"and its {own7[1]:g} is a run whose compiled checker ran faster than the median run." in flat
     )
-    assert "(and the caption above)" not in PAGE and "# the date goes into the figure's own text alternative (here: the prose above)" in PAGE
+    assert "(and the caption above)" not in PAGE
+    assert "# the date goes into the figure's own text alternative (here: the prose above)" in PAGE
     # reader r48g, benchmarks 2: one sentence per planner, each by the table's statistic and its own noise band
     own = [r for row in recorded.query_ratios("strong --planner paper").values() for r in row.values()]
     longer, clear = sum(r >= 1.1 for r in own), sum(r >= 1 + own_edge() for r in own)
