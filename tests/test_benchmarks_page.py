@@ -1829,3 +1829,26 @@ def test_reader_r48g_the_mean_against_the_median_the_paper_network_s_answers_and
     own = [r for row in recorded.query_ratios("strong --planner paper").values() for r in row.values()]
     longer, clear = sum(r >= 1.1 for r in own), sum(r >= 1 + own_edge() for r in own)
     assert f"no cell's queries got shorter, and {longer} took longer ({clear} beyond the noise band)." in PREDICTION
+
+
+def test_the_race_says_how_far_ompl_s_prm_moves_between_the_seeds():
+    """Reader r49g, race polish 3: the lazy PRM's lead over OMPL's PRM is seed 9300's; seed 7300's, from its rows of
+    the medians' fold and the ratios' fold, said beside it in the scope's fold."""
+
+    def lead(seed: str) -> tuple[str, str]:
+        prm, lazy = (
+            {r: numbers(c)[0] for r, c in column(h, RACE).items() if r.endswith(seed)}
+            for h in ("OMPL PRM", "ours: lazy PRM")
+        )
+        used = [prm[r] / lazy[r] for r in lazy]
+        batched = [1 / numbers(c)[0] for r, c in column("lazy PRM / OMPL PRM, checks batched", RACE).items()
+                   if r.endswith(seed)]  # fmt: skip
+        return f"{min(used):.0f}–{max(used):.0f}", f"{min(batched):.1f}–{max(batched):.1f}"
+
+    (used_7300, batched_7300), (used_9300, batched_9300) = lead("7300"), lead("9300")
+    assert (
+        f"with seed 7300's queries the lazy PRM is {used_7300} times as fast as it as used and {batched_7300} times as "
+        f"fast as it with its checks batched (estimated), against seed 9300's {used_9300} and {batched_9300} times."
+    ) in " ".join(RACE.split())
+    assert f"{used_9300} times as fast as OMPL's PRM" in RACE_SUMMARY  # the summary's seed
+    assert batched_9300 == race_summary_ratios()["lazy prm batched"] and used_7300 != used_9300
