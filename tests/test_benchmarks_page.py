@@ -281,9 +281,17 @@ def test_the_opening_names_the_statistic_of_no_saving_and_counts_the_means():
         and "sampling's time, by the ratio of means" not in PREDICTION
     )
     # reader r48g, benchmarks 1: each statistic's own noise band beside the tie band, none "a statistic that moves less"
+    # reader r49g, "where I got lost": at most two bands before the first figure (common rule 6); the planning
+    # tables' bands in "How to read this page", moved to just above the planning section
+    figure = PAGE.index("](crossover.png)")
     assert "a statistic that moves less" not in PAGE and (
-        "The planning tables read a verdict against the tie band, 10 %, and whether it is clear against the noise band "
-        f"of its own statistic: {edges('own')}, {edges('means')} or {edges('medians')}" in flat
+        'The planning tables read a verdict against a tie band, 10 %, and noise bands of their own: "How to read this '
+        'page" below.' in flat
+    )
+    assert all(edges(kind) not in PAGE[:figure] for kind in ("own", "means", "medians"))
+    assert PAGE.index("](crossover.png)") < PAGE.index("## How to read this page") < PAGE.index("## Does prediction")
+    assert (
+        f"That gives {edges('own')} for the median of each query's own ratio, {edges('means')} for a ratio of " in flat
     )
     # reader r47g, benchmarks 3: the lazy PRM's sampling by medians where its checks cost what a compiled check did,
     # and the one cell shorter by means named with its median ratio
@@ -1347,8 +1355,9 @@ def test_the_crossover_caption_says_the_1k_bump_is_noise_and_the_paper_has_no_me
     # checker table in the fold below it
     assert (
         "Shaded (mesh panel only): the network cheaper by more than 25 %. The network is the dearer check in every "
-        "panel but the mesh. This network is the paper-size one of the checker table, not the larger `strong` network "
-        f"that planned below ({strong_run_costs()[0]} times a compiled check in 3D; its sweep is in chapter 04).*"
+        "panel but the mesh. This network is the paper-size one of the checker table, not the two larger `strong` "
+        f"networks that planned below (Algorithm 1's cost {strong_run_costs()[0]} times a compiled check in 3D; "
+        "chapter 04 sweeps a `strong` network).*"  # reader r49g, benchmarks 2: two strong networks
     ) in flat  # reader r48g, benchmarks 3: the figure's network named in its caption
     # reader r40g, benchmarks 5: the figure's costs against the table's, said in the caption (reader r45g: the fold)
     # reader r42g, benchmarks 2: smaller calls cost more a configuration (the call-size panel), so they are no reason
