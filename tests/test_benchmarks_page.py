@@ -1861,3 +1861,23 @@ def test_the_race_says_how_far_ompl_s_prm_moves_between_the_seeds():
     ) in " ".join(RACE.split())
     assert f"{used_9300} times as fast as OMPL's PRM" in RACE_SUMMARY  # the summary's seed
     assert batched_9300 == race_summary_ratios()["lazy prm batched"] and used_7300 != used_9300
+
+
+def test_the_planning_section_sets_the_paper_s_table_3_beside_our_python_fcl_run():
+    """Reader r49g, benchmarks lift 3: the paper's Table 3 (sampling and whole queries, by means) beside our python-fcl
+    run in the section's list, not only in its fold; every figure from paper_numbers and the record."""
+    from toolkit.experiments.paper_numbers import IMPROVEMENT
+    from toolkit.teaching import recorded
+    from tools.results_summary import change
+
+    sampling = [v for s in IMPROVEMENT for v in IMPROVEMENT[s]["sampling"].values()]
+    total = [v for s in IMPROVEMENT for v in IMPROVEMENT[s]["total"].values()]
+    ours = [v for s in recorded.table(FCL_ALIKE, "time improvement")
+            for v in recorded.improvements(FCL_ALIKE, s, "sampling").values()]  # fmt: skip
+    ties = [change(r) for row in recorded.query_ratios(FCL_ALIKE).values() for r in row.values()]
+    assert (
+        f"- The paper's Table 3, by means, took {100 * min(sampling):.0f}–{100 * max(sampling):.0f} % less time in "
+        f"sampling and saved 10 % or more of a whole query in {sum(v >= 0.1 for v in total)} of its {len(total)} "
+        f"cells; our python-fcl run took {100 * min(ours):.0f}–{100 * max(ours):.0f} % less time in sampling, yet "
+        f"its queries tied in {ties.count('about the same time')} of {len(ties)} cells."
+    ) in " ".join(PREDICTION.split())
