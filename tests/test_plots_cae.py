@@ -457,3 +457,19 @@ def test_accuracy_panels_of_three_groups_go_two_a_row_the_legend_in_the_spare_sl
     for ax, name in zip(drawn, groups):
         (points,) = [c for c in ax.collections if c.get_gid() == name]
         assert points.get_alpha() <= 0.3
+
+
+def test_training_curves_keep_the_highest_point_clear_of_the_frame():
+    """Reader r49b: at full size λ = 0.961's first point (3.83e3) touched the top frame, a 1.3x margin being few pixels
+    on a log axis down to a loss of a few: its marker's centre now lies more than its size from the frame, as drawn."""
+    histories = {
+        "lambda 0": list(np.geomspace(2800.0, 2.0, 500)),  # 6 px from the frame with the 1.3x margin, 8 px a marker
+        "lambda 0.961": [3830.0, *np.geomspace(3000, 1200, 499)],
+    }
+    fig = plots.training_curves(histories, panels=True)
+    FigureCanvasAgg(fig).draw()
+    ax = fig.axes[1]
+    line = ax.get_lines()[0]
+    top = ax.transData.transform((0, line.get_ydata()[0]))[1]
+    frame = ax.transAxes.transform((0, 1))[1]
+    assert frame - top > line.get_markersize() * fig.dpi / 72

@@ -49,8 +49,9 @@ def test_the_answer_is_four_bullets_and_five_rows():
     assert text.startswith(
         "**The answer.**\n\n"
         # reader r42b: "(0.9 points below)" after "all free" read as the baseline's gap; said of the CAE
-        "- CAE-long, trained on the paper's 30 grids, scores 86.9% on 500 new grids, 0.9 points below answering \"all "
-        'free" (an empty grid, whatever the input), which gets 87.8%: **no better than answering "all free"**.\n'
+        "- CAE-long, trained on 30 generated grids (the paper's count), scores 86.9% on 500 new grids, 0.9 points "
+        'below answering "all free" (an empty grid, whatever the input), which gets 87.8%: **no better than '
+        'answering "all free"**.\n'
         "- So Table 1's 100% on unseen grids does not reproduce.\n"
         "- Trained long (1,500 steps), it rebuilds its training grids 99.6% right (Table 1: 100%), but only by "
         "memorizing them.\n"
@@ -215,9 +216,16 @@ def test_section_8s_maps_fold_with_their_alt_text_and_read_pc1_against_the_occup
         f"Codes of a CAE; PC 1 vs share occupied: r = {r:+.2f}\n(grey: the other panel's grids)"
     )
     assert [ax.get_title() for ax in figure.axes[:2]] == [
-        "training grids: 5 circles\nthe others grey",  # reader r48b: the shapes named in the figure
-        "new grids: 12 squares\nthe others grey",
+        "training grids: 5 triangles\nthe others grey",  # reader r48b: the shapes named in the figure
+        "new grids: 12 squares\nthe others grey",  # reader r49b: section 7's shapes (triangles: training grids)
     ]
+    _, many = chapter02.latent_map("a CAE", cae, trained_on, new, new_marker="o")  # the many-grids CAE's new grids
+    assert [ax.get_title() for ax in many.axes[:2]] == [
+        "training grids: 5 triangles\nthe others grey",
+        "new grids: 12 circles\nthe others grey",
+    ]
+    shapes = [[c.get_paths()[0].vertices.shape for c in ax.collections] for ax in many.axes[:2]]
+    assert shapes[0] == shapes[1][::-1]  # the grey group keeps its own shape in the other panel
     points, share = chapter02.principal_plane({"a": np.eye(3), "b": -np.eye(3)})
     assert {k: v.shape for k, v in points.items()} == {"a": (3, 2), "b": (3, 2)} and 0 < share.sum() <= 1 + 1e-9
     html = chapter02.folded("The maps", [figure])

@@ -64,7 +64,8 @@ def training_curves(
     axes[0].set_ylabel(ylabel)
     values = np.concatenate([np.asarray(h, dtype=float) for h in histories.values()])
     if log and values.min() > 0:  # reader r41b: λ = 0.961's first point, the highest, sat clipped on the top frame
-        axes[0].set_ylim(values.min() / 1.3, values.max() * 1.3)
+        pad = max(1.3, (values.max() / values.min()) ** 0.1)  # r49b: a tenth of the range each side, its ends clear
+        axes[0].set_ylim(values.min() / pad, values.max() * pad)
     if panels:
         fig.suptitle("CAE training curves", fontsize=10)
     else:

@@ -5,13 +5,14 @@ the training ones do. Nothing here calls ``show()``.
 
 from __future__ import annotations
 
+from collections.abc import Mapping
 from typing import Any
 
 import numpy as np
 from matplotlib.figure import Figure
 
 from toolkit.plots.alt import Part, describe
-from toolkit.plots.cae import FEW, GREY
+from toolkit.plots.cae import AREA, FEW, GREY
 from toolkit.plots.palette import COLORS, MARKER_NAMES, MARKERS, PAGE_WIDTH, SEQUENTIAL_CMAP, series_style
 
 
@@ -22,6 +23,7 @@ def latent_scatter(
     color_label: str = "",
     color_range: tuple[float, float] | None = None,
     highlight: str | None = None,
+    markers: Mapping[str, str] | None = None,
     xlabel: str = "PC 1",
     ylabel: str = "PC 2",
     title: str = "Latent codes, projected to 2D",
@@ -33,27 +35,29 @@ def latent_scatter(
     ``color[group]`` ``(n,)`` (optional): a value per workspace shown on one shared colour scale (e.g. its share of
     occupied cells), from ``color_range`` when given (reader r40b: two maps side by side on one scale), else from the
     values' own lowest to highest. ``highlight``: a group drawn with larger, thick black-edged markers (e.g. a few
-    training workspaces).
+    training workspaces). ``markers[group]``: its marker shape, grey or not (reader r49b: a chapter's shapes for its
+    groups of grids kept from figure to figure); else :data:`MARKERS` in turn.
     """
     fig = Figure(figsize=(PAGE_WIDTH, 3.6 if len(points) > 1 else 5.2), layout="constrained")
     axes = fig.subplots(1, len(points), squeeze=False, sharex=True, sharey=True)[0]
     if color:
         low, high = color_range or (min(np.min(c) for c in color.values()), max(np.max(c) for c in color.values()))
+    shape = {name: (markers or {}).get(name, MARKERS[k % len(MARKERS)]) for k, name in enumerate(points)}
     said = []
     for k, (ax, (name, xy)) in enumerate(zip(axes, points.items())):
         xy = np.asarray(xy)
-        others = [np.asarray(v) for other, v in points.items() if other != name]
-        for rest in others:  # grey: where this group lies among them; a few dozen larger, edged, on top, never buried
-            ax.scatter(*rest.T, color=COLORS["reference"], edgecolors=COLORS["ink"], **GREY[len(rest) <= FEW])
+        others = {other: np.asarray(v) for other, v in points.items() if other != name}
+        for other, rest in others.items():  # grey: where this group lies among them; a few dozen larger, on top
+            grey = dict(GREY[len(rest) <= FEW], marker=shape[other])
+            ax.scatter(*rest.T, color=COLORS["reference"], edgecolors=COLORS["ink"], **grey)
         big = name == highlight
-        style: dict[str, Any] = dict(s=60 if big else 22, edgecolors=COLORS["ink"], linewidths=1.4 if big else 0.3)
-        style.update(marker=MARKERS[k % len(MARKERS)], c=series_style(k)["color"])
+        size = (60 if big else 22) * AREA.get(shape[name], 1.0)  # a triangle as large to the eye as a square
+        style: dict[str, Any] = dict(s=size, edgecolors=COLORS["ink"], linewidths=1.4 if big else 0.3)
+        style.update(marker=shape[name], c=series_style(k)["color"])
         if color:
             style.update(c=color[name], cmap=SEQUENTIAL_CMAP, vmin=low, vmax=high)
         drawn = ax.scatter(xy[:, 0], xy[:, 1], label=f"{name} ({len(xy)})", alpha=0.9, zorder=2, **style)
-        shapes = (
-            f"{len(xy)} {MARKER_NAMES[style['marker']]}"  # reader r48b: the shapes in the figure, not in prose only
-        )
+        shapes = f"{len(xy)} {MARKER_NAMES[shape[name]]}"  # reader r48b: the shapes in the figure, not in prose only
         ax.set_title(f"{name}: {shapes}" + ("\nthe others grey" if others else ""), fontsize=10)
         ax.set_xlabel(xlabel)
         ax.set_ylabel(ylabel if k == 0 else "")

@@ -102,7 +102,7 @@ def row_names(*, n_seen: int, steps: int, preset_length: str, many_name: str, n_
 
 WAITING = (  # the answer at the top before the page's last code cell fills in this run's numbers
     "**The answer.**\n\n"
-    "- CAE-long, trained on the paper's 30 grids, rebuilds new workspaces no better than answering "
+    "- CAE-long, trained on 30 generated grids (the paper's count), rebuilds new workspaces no better than answering "
     '"all free" (an empty grid, whatever the input).\n'
     "- So Table 1's 100 % on unseen grids does not reproduce.\n"
     "- Trained long (1,500 steps), it reaches Table 1's seen column, but only by memorizing its 30 grids.\n"
@@ -163,10 +163,11 @@ def _bullets(
         if long["seen_acc"] >= MEMORIZED
         else f"This quick run has trained too briefly to memorize its training grids ({long['seen_acc']:.1%})."
     )
-    whose = "the paper" if n_seen == 30 else "this quick run"  # the paper's 30 grids, §IV-A
+    # reader r49b: the grids are generated, only their count is the paper's (§IV-A)
+    grids = f"{n_seen} generated grids (the paper's count)" if n_seen == 30 else f"this quick run's {n_seen} grids"
     column = "the seen column only" if preset["seen_acc"] >= MEMORIZED else "neither column"
     return [
-        f"CAE-long, trained on {whose}'s {n_seen} grids, scores {long['unseen_acc']:.1%} on {n_new} new grids, "
+        f"CAE-long, trained on {grids}, scores {long['unseen_acc']:.1%} on {n_new} new grids, "
         f'{abs(gap):.1f} points {"below" if gap < 0 else "above"} answering "all free" (an empty grid, whatever the '
         f'input), which gets {free:.1%}: **no better than answering "all free"**.',
         f"So Table 1's {paper['unseen_acc']:.0%} on unseen grids does not reproduce.",
@@ -367,12 +368,18 @@ GREY_SAID = "(grey: the other panel's grids)"  # r45b-r47b; r48b: the layering t
 
 
 def latent_map(
-    name: str, cae: CAE, trained_on: torch.Tensor, new: torch.Tensor, shares: tuple[float, float] | None = None
+    name: str,
+    cae: CAE,
+    trained_on: torch.Tensor,
+    new: torch.Tensor,
+    shares: tuple[float, float] | None = None,
+    new_marker: str = "s",
 ) -> tuple[float, Figure]:
     """Section 8: ``cae``'s codes of its training grids and of the ``new`` grids on their first two principal
     directions, coloured by each grid's share of occupied cells (on the scale ``shares``, lowest to highest, when
     given: two maps compared on one); the correlation ``r`` of PC 1 with that share, and the map (the training grids
-    larger when they are few)."""
+    larger when they are few). Sections 5 and 7's shapes (reader r49b): the training grids triangles, the new grids
+    ``new_marker`` (squares for CAE-long, circles for the many-grids CAE)."""
     groups = {"training grids": trained_on, "new grids": new}
     with torch.no_grad():
         codes = {group: cae.encode(grids).numpy() for group, grids in groups.items()}  # (W, latent) each
@@ -385,6 +392,7 @@ def latent_map(
         color_label="share of occupied cells",
         color_range=shares,
         highlight="training grids" if len(trained_on) <= FEW else None,
+        markers={"training grids": "^", "new grids": new_marker},
         xlabel=f"PC 1 ({share[0]:.0%} of variance)",
         ylabel=f"PC 2 ({share[1]:.0%})",
         title=f"Codes of {name}; PC 1 vs share occupied: r = {r:+.2f}\n{GREY_SAID}",
