@@ -401,8 +401,8 @@ def share_allows(tables: Tables, cleared: list[tuple[str, float]]) -> str:
         f" {cell}'s saving with python-fcl is mostly not from sampling: sampling took {percent(cells[cell].share)} % "
         f"of its mean query, and skipping its checks saved {percent(cells[cell].saved)} % of that query, where the "
         f"whole query saved {percent(cells[cell].total)} % by means and {percent(1 - own[cell])} % by each query's own "
-        f"ratio ({own[cell]:.2f}). The rest of the query, or timing, moved it (below: “Where the whole query moved "
-        "apart from sampling”)."
+        f"ratio ({own[cell]:.2f}). The rest of the query, or timing, moved it (below, in the fold “The findings in "
+        "detail”: “Where the whole query moved apart from sampling”)."
         for cell in other
     )
     return said
