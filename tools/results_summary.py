@@ -279,9 +279,9 @@ def apart_said(tables: Tables) -> str:
     listed = ", ".join(f"{cell} {ours:.2f} against {paper:.2f}" for cell, paper, ours in apart)
     return (
         f" With python-fcl, our own ratio lies within {(high - low) / 2:.2f} (half the noise band's width) of the "
-        f"paper's ratio of means (it gives no other) in {near} of the cells where the paper saves 10 % or more: too "
-        f"near to tell apart. It lies further above it in {len(apart)}, where the paper's saving is not observed "
-        f"({listed})."
+        f"paper's ratio of means (it gives no other) in {near} of the {near + len(apart)} cells where the paper saves "
+        f"10 % or more: too near to tell apart. It lies further above it in {len(apart)}, where the paper's saving is "
+        f"not observed ({listed})."
         if apart
         else ""
     )
