@@ -41,6 +41,7 @@ from tools.results_findings import (
     DETAIL_BEGIN,
     DETAIL_END,
     elsewhere,
+    from_sampling,
     not_from_sampling,
     summary,
 )
@@ -144,9 +145,10 @@ def short(tables: Tables) -> str:
     beyond = counted([change(m) for _, m in slow if not costs.inside(m, band)])
     cleared = [(cell, m) for cell, m in slow if change(m) == "less time" and not costs.inside(m, band)]
     other = elsewhere(tables, cleared)  # reader r48f, item 1: where the saving is mostly not sampling's
-    saved_far = [f"{cell} {m:.2f}" for cell, m in cleared if cell not in other] + [
-        f"{cell} {m:.2f}, mostly not from sampling" for cell, m in cleared if cell in other
-    ]
+    mostly = from_sampling(tables, cleared)  # reader r49f, contradiction 1: where it is mostly sampling's
+    how = {**dict.fromkeys(mostly, ", mostly from sampling"), **dict.fromkeys(other, ", mostly not from sampling")}
+    ordered = sorted(cleared, key=lambda c: c[0] not in mostly)  # the saving sampling explains first
+    saved_far = [f"{cell} {m:.2f}{how.get(cell, '')}" for cell, m in ordered]
     verdict = ANSWERS[findings.claim_verdict(ratios)]
     qualified = verdict == "No" and saved_far  # reader r45f, item 1: python-fcl's clear savings qualify the "No"
     borrowed = "" if timed_twice(tables, SLOW) else " this run borrows from the compiled one"  # reader r47f, item 3
@@ -156,11 +158,11 @@ def short(tables: Tables) -> str:
     said = f"{verdict} with a fast exact checker; with a slow one, a little" if qualified else verdict
     answer = (
         "**In short: does an accurate network inside the paper's Algorithm 1 save planning time? "
-        f"{said}.** With our fast compiled checker {fast_said}: "
+        f"{said}.** By each query's own ratio (defined below), with our fast compiled checker {fast_said}: "
         f"{tally(fast[2], fast_far[2], 'slower', sum(fast))}, {tally(fast[0], fast_far[0], 'faster')}; with "
         f"python-fcl, a slow checker, {slow_said}: "
         f"{tally(read[0], beyond[0], 'faster', len(slow), saved_far, borrowed)}, "
-        f"{tally(read[2], beyond[2], 'slower')}. {papers_table_3(tables)} {tables_said(tables)}."
+        f"{tally(read[2], beyond[2], 'slower')}. {papers_table_3(tables, fast_far)} {tables_said(tables)}."
     )
     # reader r47f, item 4: one band named under the table, the means columns' pointed to, not numbered; reader r48f,
     # item 2: by means the result is inconclusive, and the verdict rests on each query's own ratio
@@ -193,24 +195,46 @@ def terms(tables: Tables) -> str:
     )
 
 
-def papers_table_3(tables: Tables) -> str:
-    """The answer's second sentence (common rule 1; reader r48f, item 3): the paper's Table 3 quoted exactly, that its
-    total-time columns do not reproduce, and whether its sampling columns do with python-fcl (cells whose sampling
-    took 10 % or more less time, ours beside the paper's)."""
+def papers_table_3(tables: Tables, fast_far: tuple[int, int, int]) -> str:
+    """The answer's second sentence (common rule 1; reader r49f, contradiction 3): the paper's Table 3 quoted exactly,
+    what each query's own ratio can say of its total-time savings (``fast_far``: the compiled run's cells beyond the
+    noise band, saved / tied / cost; with python-fcl, :func:`papers_apart`), and whether its sampling columns
+    reproduce with python-fcl (cells whose sampling took 10 % or more less time, ours beside the paper's)."""
     facts = checker_scope.slow_checker(tables)
     papers = counted([change(1 - s) for s in facts.papers_totals])[0]
     cells = len(facts.papers_totals)
     sampled = counted([change(1 - s) for s in facts.sampling])[0]
     papers_sampled = counted([change(1 - s) for s in facts.papers_sampling])[0]
-    total = f"The paper's Table 3 saves 10 % or more of a query's time in {papers} of its {cells} cells"
-    if sampled < papers_sampled:
-        return f"{total}; neither its total-time nor its sampling columns reproduce."
+    apart, near = papers_apart(tables)
+    fast = "those savings are not observed" if not fast_far[0] else f"{fast_far[0]} cells clearly save"
+    names = [cell for cell, _, _ in apart]
+    missed = " and ".join([", ".join(names[:-1]), names[-1]] if len(names) > 1 else names)
+    in_cells = f"all {cells} cells" if sampled == cells else f"{sampled} of {cells} cells"
+    as_paper = "as in the paper" if sampled == papers_sampled else f"the paper: {papers_sampled}"
+    reproduce = "reproduce" if sampled >= papers_sampled else "do not reproduce"
+    whole = f"its total-time savings in {missed} are not observed, and its other {near}" if apart else f"its {near}"
     return (
-        f"{total}: by each query's own ratio those total-time columns do not reproduce, but its sampling columns do "
-        "with python-fcl, where "
-        f"sampling took 10 % or more less time in {sampled} of {cells} cells"
-        + (", as in the paper." if sampled == papers_sampled else f" (the paper: {papers_sampled}).")
+        f"The paper's Table 3 saves 10 % or more of a query's time in {papers} of its {cells} cells: with our "
+        f"compiled checker {fast} and {fast_far[2]} cells clearly cost time; with python-fcl its sampling savings "
+        f"{reproduce} (10 % or more in {in_cells}, {as_paper}), {whole} lie too near ours to tell apart."
     )
+
+
+def papers_apart(tables: Tables) -> tuple[list[tuple[str, float, float]], int]:
+    """Reader r49f, contradiction 3: of the paper's Table 3 cells that save 10 % or more of a query's time, those
+    where our own ratio with python-fcl lies the noise band's half-width (0.18) or more above the paper's ratio, so
+    the paper's saving is not observed (``[("3DC-7 BT", 0.46, 1.02), ...]``), and how many others lie nearer: too
+    close to tell apart."""
+    low, high = costs.floors(tables)["own"]
+    reach = round((high - low) / 2, 2)
+    ours = dict(own_medians(tables, SLOW))
+    names = list(by_means(tables, SLOW))
+    totals = checker_scope.slow_checker(tables).papers_totals
+    if len(names) != len(totals):
+        raise ValueError(f"Table 3 with python-fcl: {len(names)} cells, {len(totals)} of the paper's")
+    saved = [(cell, round(1 - s, 2)) for cell, s in zip(names, totals) if change(1 - s) == "less time"]
+    apart = [(cell, p, ours[cell]) for cell, p in saved if round(ours[cell] - p, 2) >= reach]
+    return apart, len(saved) - len(apart)
 
 
 def table_3_said(tables: Tables) -> str:
@@ -235,7 +259,7 @@ def table_3_said(tables: Tables) -> str:
     return (
         "**The paper's Table 3: its sampling columns reproduce with python-fcl"
         f"{'' if sampled['python-fcl'] >= papers_sampled else ' in part'}, not with our compiled checker; its "
-        "total-time columns do not.** The paper's Table 3 saves 10 % or "
+        "total-time savings are not observed, or lie too near ours to tell apart.** The paper's Table 3 saves 10 % or "
         f"more of a query's time in {papers} of its {cells} cells (some time in {some}), and 10 % or more of sampling "
         f"time in {'all ' + str(cells) if papers_sampled == cells else f'{papers_sampled} of {cells}'}. By means, the "
         f"accurate network saves 10 % or more of sampling time in {sampled['compiled']} of {cells} cells with the "
@@ -243,6 +267,23 @@ def table_3_said(tables: Tables) -> str:
         f"{faster['compiled']} and {faster['python-fcl']} ({far or 'none'} beyond the noise band of a ratio of means)."
         f"{by_means_inside(tables)} The verdict on the total-time columns rests on each query's own ratio (Figure 1): "
         f"{own['compiled']} of {cells} cells faster with the compiled checker, {own['python-fcl']} with python-fcl."
+        f"{apart_said(tables)}"
+    )
+
+
+def apart_said(tables: Tables) -> str:
+    """Reader r49f, contradiction 3: the paper's total-time savings set beside our own ratios with python-fcl, the
+    numbers behind the answer's "not observed" and "too near ours to tell apart" (:func:`papers_apart`)."""
+    apart, near = papers_apart(tables)
+    low, high = costs.floors(tables)["own"]
+    listed = ", ".join(f"{cell} {ours:.2f} against {paper:.2f}" for cell, paper, ours in apart)
+    return (
+        f" With python-fcl, our own ratio lies within {(high - low) / 2:.2f} (half the noise band's width) of the "
+        f"paper's ratio of means (it gives no other) in {near} of the {near + len(apart)} cells where the paper saves "
+        f"10 % or more: too near to tell apart. It lies further above it in {len(apart)}, where the paper's saving is "
+        f"not observed ({listed})."
+        if apart
+        else ""
     )
 
 
@@ -268,7 +309,7 @@ def tally(
     if not tied:
         return f"none {verb}"
     of = f" of {cells} cells" if cells is not None else ""
-    them = f": {' and '.join(named)}" if named else ""
+    them = f": {(', and ' if any(',' in n for n in named) else ' and ').join(named)}" if named else ""
     return f"{tied}{of} {verb} ({far} beyond the noise band{band}{them})"
 
 
