@@ -982,7 +982,7 @@ def chapter_03(
     }
     rows = ["| | samples | accuracy | TPR / TNR | balanced accuracy |", "| --- | --- | --- | --- | --- |"]
     rows += [  # to a tenth, as printed; the share of valid samples its rates imply in its samples cell (r33c)
-        f"| the paper's Table 2, 2DS unseen | unstated; its rounded rates fit {share[0]}–{share[1]}% valid | 88% "
+        f"| the paper's Table 2, 2DS unseen | unclear; its rounded rates fit {share[0]}–{share[1]}% valid | 88% "
         "| 90% / 85% | 87.5% |"
     ]
     rows += [
