@@ -395,6 +395,9 @@ def chapter_03(nb) -> list[str]:
         problems.append("03: the threshold sweep's sentence is not printed")
     elif 'no threshold beats "always valid"' not in found:
         problems.append('03: section 6 says no threshold beats "always valid"; the sweep\'s sentence says one does')
+    best = re.search(r"paper preset: best balanced accuracy over all thresholds (\d+)%", found)
+    if not best or abs(int(best.group(1)) - 50) > 100 * findings.CHANCE_BAND:  # r49c: "at the best ... a coin flip"
+        problems.append(f"03: the opening says no threshold lifts `paper` off a coin flip; best: {best and best[1]}")
     return (
         problems
         + _chapter_03_opening(nb)
