@@ -358,6 +358,9 @@ def _chapter_02_unseen(nb, found: str) -> list[str]:
     return problems
 
 
+FAR_BELOW = 70  # chapter 03: "far below" the paper's 87.5 % balanced accuracy: under 70 %
+
+
 def chapter_03(nb) -> list[str]:
     """Section 4's sentences against the closing table's rows: each preset's accuracy against "always valid" on the
     same samples, its balanced accuracy, (TPR + TNR) / 2, against a coin flip, "worse than chance" only below it (review
@@ -395,6 +398,9 @@ def chapter_03(nb) -> list[str]:
         problems.append("03: the threshold sweep's sentence is not printed")
     elif 'no threshold beats "always valid"' not in found:
         problems.append('03: section 6 says no threshold beats "always valid"; the sweep\'s sentence says one does')
+    best = re.search(r"paper preset: best balanced accuracy over all thresholds (\d+)%", found)
+    if not best or int(best.group(1)) >= FAR_BELOW:  # r49c: "at the best of them it stays far below 87.5 %"
+        problems.append(f"03: the opening says no threshold lifts `paper` near 87.5 %; its best: {best and best[1]}")
     return (
         problems
         + _chapter_03_opening(nb)

@@ -157,6 +157,15 @@ def test_roc_points_are_fpr_and_tpr_at_each_threshold(probability, valid):
         answers.roc_points(probability, np.ones_like(valid))
 
 
+def test_best_balanced_is_the_highest_tpr_plus_tnr_over_thresholds():
+    """Reader r49c: the best balanced accuracy any threshold reaches, and where."""
+    p = np.array([0.1, 0.2, 0.3, 0.6, 0.7, 0.8])
+    valid = np.array([False, False, True, True, True, False])
+    balanced, threshold = answers.best_balanced(p, valid)
+    assert threshold == 0.3 and balanced == pytest.approx((1 + 2 / 3) / 2)  # keeps all 3 valid, rejects 2 of 3
+    assert answers.best_balanced([0.5, 0.5], [True, False]) == (0.5, 0.5)  # nothing to tell apart: a coin flip
+
+
 def test_probability_map_shows_the_probabilities_the_boundary_and_exactly_the_mistakes(grid, probability, valid):
     threshold = 0.45
     ax = pc.probability_map(probability, valid, grid, threshold=threshold).axes[0]

@@ -39,14 +39,14 @@ def test_the_opening_table_gives_the_papers_accuracy_as_reported_and_its_balance
 
 def test_the_closing_table_holds_the_paper_row_and_this_pages_draws_in_six_rows():
     """Reader r33c: fourteen rows and a box of other runs said again what the opening table and section 4 say; the
-    paper's samples are unstated (§IV-A says validity-blind), its rounded rates fit a range of shares of valid ones."""
+    paper's samples are unclear (§IV-A says validity-blind), its rounded rates fit a range of shares of valid ones."""
     rates = {"acc": 0.5, "tpr": 0.3, "tnr": 0.7}
     scores = {f"{who}\n{kind}": rates for kind in ("balanced", "validity-blind") for who in ("paper", "strong")}
     scores |= {f"always valid\n{kind}": {"acc": 0.5, "tpr": 1.0, "tnr": 0.0} for kind in ("balanced", "validity-blind")}
     table = chapter03.closing_table(scores)
     rows = [line.split(" | ")[:2] for line in table.splitlines()[2:]]
     assert [" | ".join(row).lstrip("| ") for row in rows] == [
-        'the paper\'s Table 2, 2DS unseen | unstated: §IV-A says "regardless of their validity"; its rounded rates '
+        'the paper\'s Table 2, 2DS unseen | unclear: §IV-A says "regardless of their validity"; its rounded rates '
         "fit 40–80% valid",  # r45c: Table 2's whole percents allow a range, not "60 %"
         "`paper` preset, 2DS unseen, this page's draw (section 4) | balanced",
         "`strong` preset, 2DS unseen, this page's draw (section 4) | balanced",

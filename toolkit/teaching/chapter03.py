@@ -288,13 +288,13 @@ def closing_table(scores: Mapping[str, Mapping[str, float]]) -> str:
 
 
 def paper_row(scenario: str) -> str:
-    """The closing table's row of the paper's Table 2, unseen ``scenario``: its samples unstated, §IV-A's words, the
-    shares of valid samples its rates, rounded to whole percent, allow (reader r45c: "imply 60 %" read three rounded
-    numbers as exact), its balanced accuracy to a tenth as in the opening table (r28c)."""
+    """The closing table's row of the paper's Table 2, unseen ``scenario``: its samples unclear (r49c), §IV-A's words,
+    the shares of valid samples its rates, rounded to whole percent, allow (reader r45c: "imply 60 %" read three
+    rounded numbers as exact), its balanced accuracy to a tenth as in the opening table (r28c)."""
     published = paper_numbers.MLP[scenario]["unseen"]
     low, high = implied_shares(published)
     return (
-        f'| the paper\'s Table 2, {NAMES[scenario]} unseen | unstated: §IV-A says "regardless of their validity"; '
+        f'| the paper\'s Table 2, {NAMES[scenario]} unseen | unclear: §IV-A says "regardless of their validity"; '
         f"its rounded rates fit {100 * low:.0f}–{high:.0%} valid | {rates(published, '.1%')} |"
     )
 
