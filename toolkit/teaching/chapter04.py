@@ -179,18 +179,23 @@ def eager_tables(records: Mapping[str, list[dict]]) -> list[str]:
 
 
 def roadmap_line(records: Mapping[str, list[dict]]) -> str:
-    """Under section 5's counts (reader r48d, item 1): the roadmap prediction left, and the connection stage's time
-    in each mode, as the stage table gives it; the roadmap moves the time whatever a network call costs."""
+    """Under section 5's counts (readers r48d item 1, r49d item 1): the roadmap prediction left, and the connection
+    stage's time in each mode, read against the 10 % tie band: "about the same" inside it, "less" / "more" only beyond
+    it. Prediction moves this time only through the roadmap it leaves, whatever a network call costs."""
     nodes = {m: float(np.median([r["nodes"] for r in records[m]])) for m in ("without", "with")}
     ms = {m: _stage_ms(records[m], "connection_s") for m in ("without", "with")}
     fewer = "fewer" if nodes["with"] < nodes["without"] else "more" if nodes["with"] > nodes["without"] else "as many"
-    shorter = float(ms["with"]) < float(ms["without"])
+    verdict = time_verdict(float(ms["with"]) / max(float(ms["without"]), 1e-9))
+    read = {
+        TIES: "about the same (within our 10 % tie band): here the roadmap changed too little to move this time",
+        SAVES: "10 % or more less: here the roadmap it left took less time to connect",
+        COSTS: "10 % or more longer: here the roadmap it left took more time to connect",
+    }[verdict]
     return (
         f"With prediction the median roadmap had {fewer} nodes ({nodes['with']:,.0f} against {nodes['without']:,.0f} "
-        f"without), and the connection stage took {ms['with']} ms a query against {ms['without']} ms: prediction "
-        "moves this time through the roadmap it leaves, "
-        + ("here less, " if shorter else "here more, ")
-        + "whatever a network call costs against the sample checks it replaces (section 4)."
+        f"without), and the connection stage took {ms['with']} ms a query against {ms['without']} ms, {read}. "
+        "Prediction can move this time only through the roadmap it leaves, whatever a network call costs against "
+        "the sample checks it replaces (section 4)."
     )
 
 
