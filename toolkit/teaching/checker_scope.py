@@ -86,8 +86,8 @@ def _counted(verdicts: Counter) -> str:
         if verdicts[verdict] == total:
             return f"each query's total time was {words} for every sampler"
     return (
-        f"by the median own ratio, total time was shorter in {verdicts[SAVES] or 'none'} of the {total} "
-        f"scenario–sampler pairs, a tie in {verdicts[TIES]} and longer in {verdicts[COSTS]}"
+        f"by the median own ratio, total time was 10 % or more shorter in {verdicts[SAVES] or 'none'} of the {total} "
+        f"cells, a tie in {verdicts[TIES]} and 10 % or more longer in {verdicts[COSTS] or 'none'}"
     )
 
 
