@@ -164,6 +164,7 @@ def test_roadmap_draws_every_edge_and_the_repair_in_red(exact):
     assert is_color(points[4].get_facecolors(), planning.REPAIR_COLOR).all()
     (path,) = ax.lines
     assert points[2].get_zorder() > path.get_zorder() and points[3].get_zorder() > path.get_zorder()
+    assert points[2].get_path_effects() and not points[3].get_path_effects()  # r49d, item 5: no bold ring when hollow
     np.testing.assert_array_equal(np.c_[path.get_xdata(), path.get_ydata()], step.nodes[step.path])
     assert ax.get_title() == "round 2, repair:\n5 nodes, 5 edges"
 
