@@ -59,8 +59,8 @@ def _our_means(who: str, ratios: dict[str, float], band: tuple[float, float]) ->
 
     less, more = sum(r < 1 for r in ratios.values()), sum(r > 1 for r in ratios.values())
     equal = [c for c, r in ratios.items() if r == 1]
-    same = f"{len(equal)} ({', '.join(equal)})" if equal else "none"
-    return f"| ours, {who} | {less or 'none'} | {same} | {more or 'none'} | {n(SAVES)} | {n(TIES)} | {n(COSTS)} |"
+    same = f", {len(equal)} equal ({', '.join(equal)})" if equal else ""
+    return f"| ours, {who} | {less or 'none'} / {more or 'none'}{same} | {n(SAVES)} | {n(TIES)} | {n(COSTS)} |"
 
 
 def papers_table(read: tuple[int, int, int], tables: Tables | None = None) -> str:
@@ -70,8 +70,8 @@ def papers_table(read: tuple[int, int, int], tables: Tables | None = None) -> st
     ratio decides."""
     t = table3_totals()
     low, high = (round(100 * f) for f in (min(t["longer"]), max(t["longer"])))
-    more = f'{len(t["longer"])} ({low}–{high} % more; of {SLOW_DOWN} the paper says "a slow-down")'
     equal = len(t["all"]) - len(t["saved"]) - len(t["longer"])
+    same = f", {equal} equal" if equal else ""
     bands = costs.floors(tables)
     ours = "\n".join(
         _our_means(who + " (noise band borrowed)" * (who != RUNS[0][1]), mean_ratios(preset, tables), bands["means"])
@@ -87,11 +87,13 @@ def papers_table(read: tuple[int, int, int], tables: Tables | None = None) -> st
     return (
         f"<details><summary>The same {len(t['all'])} cells by mean times (Table 3's statistic): the paper's Table 3 "
         "beside ours</summary>\n\n"
-        f"| {len(t['all'])} cells, by mean times | less time | equal | more time | faster | tie | slower |\n"
-        "| --- | --- | --- | --- | --- | --- | --- |\n"
-        f"| the paper's Table 3 | {len(t['saved'])} | {n(equal)} | {more} | {n(read[0])} | {n(read[1])} "
+        f"| {len(t['all'])} cells, by mean times | less / more time | faster | tie | slower |\n"
+        "| --- | --- | --- | --- | --- |\n"
+        f"| the paper's Table 3 | {len(t['saved'])} / {len(t['longer'])}{same} | {n(read[0])} | {n(read[1])} "
         f"| {n(read[2])} |\n{ours}\n\n"
-        "*Less time* and *more time* count any ratio of mean times below or above 1 (*equal*: 1.00 as printed). "
+        "*Less time* and *more time* count any ratio of mean times below or above 1 (*equal*: 1.00 as printed); "
+        f"Table 3's {len(t['longer'])} cells with more time are {low}–{high} % more, and of {SLOW_DOWN} the paper "
+        'says "a slow-down". '
         "*Faster* counts only 0.90 or less, *slower* only 1.10 or more: our 10 % tie band, not the paper's; we read "
         "the paper's cells and ours with it alike. Why each query's own ratio decides: a ratio of means divides two "
         "sets of 100 queries timed apart, and a few slow queries weigh on a mean, so its noise band is wide "
