@@ -134,7 +134,7 @@ def _stage_words(
 MS = 1000.0  # the figure's unit, ms, per second
 CROSSED = "‡"  # not chapter 04's † (no clear evidence, its tables) nor its * (the noise band): reader r48d
 STARRED = "‡: the bars say the other way"  # a stage panel's title's end, where a pair is marked so
-WIDE = "†: its middle half reaches across the tie band"  # chapter 04's table's other mark (reader r49d, item 4)
+WIDE = "†: middle half across the tie band"  # chapter 04's table's other mark (reader r49d, item 4)
 NOISY = "*: inside the noise band"  # ... and where a pair's ratio is inside ``band``
 BAR = 0.3  # a stage bar's width; a pair's centres are 0.44 apart, each bar's whisker stands on its right
 CUT = 2.0  # a whisker reaching past CUT times a panel's tallest bar is cut at its top, its end written there
