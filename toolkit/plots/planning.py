@@ -135,7 +135,7 @@ def samplers(
     for ax in axes[len(samples) :]:
         ax.set_axis_off()
     title = "Samples over the exact checker (grey: C-obstacles)"
-    nearby = f"near: within {near:.2g} of a C-obstacle (dashed line) or of a wall (the dotted frame is the wall itself)"
+    nearby = f"near: within {near:.2g} of a C-obstacle (dashed line) or of a wall (dotted: how far the centre may go)"
     nearby += f";\nof the free space, {space[0]:.0%} lies near a C-obstacle, {space[1]:.0%} near a wall"
     fig.suptitle(f"{title}.\n{nearby[0].upper()}{nearby[1:]}" if nearness else title, fontsize=9)
     counts = "; ".join(
