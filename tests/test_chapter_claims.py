@@ -537,7 +537,7 @@ def test_chapter_04_holds_the_answers_bullet_on_our_fast_checker_to_section_6():
     ]
     nb = chapter_04()  # reader r39d: the count by means, the paper's statistic, in one sentence (r40d: section 6)
     means = nb["cells"][0]["outputs"][4]["data"]
-    means["text/markdown"] = means["text/markdown"].replace("saved time in 3 cells", "saved time in 5 cells")
+    means["text/markdown"] = means["text/markdown"].replace("more in 3 cells", "more in 5 cells")
     assert problems(CH04, nb) == [
         f"04: the first code cell's bullet on our fast checker says [('none', '16', '7', '9', '5')]; section "
         f"6's: {expected}"
@@ -570,7 +570,7 @@ def test_chapter_04_holds_the_answers_bullet_on_our_fast_checker_to_section_6():
     ]
     nb = chapter_04()
     full = nb["cells"][0]["outputs"][2]["data"]
-    full["text/markdown"] = full["text/markdown"].replace("saved time in 3 of the 16 pairs", "saved time in none", 1)
+    full["text/markdown"] = full["text/markdown"].replace("more in 3 of the 16 cells", "more in none", 1)
     assert problems(CH04, nb) == [
         "04: section 6's fold counts our fast checker's means as []; its table: ('3', '7', '6')",
         "04: section 6's fold counts python-fcl's means as []; the record: ('2', '12', '2')",

@@ -164,6 +164,7 @@ def test_roadmap_draws_every_edge_and_the_repair_in_red(exact):
     assert is_color(points[4].get_facecolors(), planning.REPAIR_COLOR).all()
     (path,) = ax.lines
     assert points[2].get_zorder() > path.get_zorder() and points[3].get_zorder() > path.get_zorder()
+    assert points[2].get_path_effects() and not points[3].get_path_effects()  # r49d, item 5: no bold ring when hollow
     np.testing.assert_array_equal(np.c_[path.get_xdata(), path.get_ydata()], step.nodes[step.path])
     assert ax.get_title() == "round 2, repair:\n5 nodes, 5 edges"
 
@@ -286,6 +287,14 @@ def test_a_pair_whose_taller_bar_says_the_other_way_is_starred_and_told():
     assert "*" not in timings.stage_times({"2DS": planning}, band=(0.7, 1.3)).axes[0].get_title()
     untold = timings.stage_times({"2DS": PLANNING}).axes[0].get_title()
     assert "‡" not in untold and "other way" not in untold  # reader r31d: no mark promised where none is drawn
+    wide = {s: {m: dict(row) for m, row in modes.items()} for s, modes in PLANNING.items()}
+    base = wide["BS"]["without"]["total_s_per_query"]  # BS's queries: 0.5, 0.6, 1.5: the middle half 0.55-1.05
+    wide["BS"]["with"]["total_s_per_query"] = [f * t for f, t in zip((0.5, 0.6, 1.5), base, strict=True)]
+    fig = timings.stage_times({"2DS": wide}, band=(0.4, 0.55))  # reader r49d, item 4: the table's † drawn too
+    assert [t.get_text() for t in fig.axes[0].texts][:2] == ["0.60x†", "0.60x"]
+    assert "(†: middle half across the tie band)" in fig.axes[0].get_title()
+    assert "query's ratio 0.60x, its middle half across the tie band; the bars'" in alt.alt_text(fig)
+    assert "†" not in timings.stage_times({"2DS": wide}).axes[0].get_title()  # no band: chapter 04's marks off
 
 
 def test_a_whisker_far_above_the_bars_is_cut_at_the_top_with_its_end_written():

@@ -95,7 +95,7 @@ def answer_ratios(
     for ax in axes:  # one scale for both panels: a point above reads against one below
         ax.set_ylim(min(*every, 1 - tie) / 1.25, max(*every, 1 + tie) * 1.25)
         log_ticks(ax)
-        _near_ticks(ax, labelled=not (ax is axes[0] and (means or not spans)))  # r48d: not on a panel of means
+        _near_ticks(ax, not (ax is axes[0] and (means or not spans)), median_floor)  # r48d: not on a panel of means
         ax.set_xlabel("sampler, grouped by scenario", labelpad=24)  # under the scenarios' names
     handles, labels = axes[0].get_legend_handles_labels()
     fig.legend(handles, labels, loc="outside upper center", ncol=1, fontsize=9, frameon=False)  # a line a series
@@ -107,12 +107,13 @@ def answer_ratios(
     return describe(fig, said + _median_words(median_floor if means or spans else None, bool(means)), parts)
 
 
-def _near_ticks(ax, labelled: bool = True) -> None:
-    """Labelled minor ticks at 0.8 and 1.2 on the left where ``labelled`` (they bracket the own ratios' noise band;
-    reader r48d: a panel of means has another band), and the tie band's edges 0.9 and 1.1 on a right-hand axis
-    (reader r41d: a value by a band's edge could not be read off; r47d: five labels within 0.8-1.2 were crammed)."""
+def _near_ticks(ax, labelled: bool = True, band: tuple[float, float] | None = None) -> None:
+    """Labelled minor ticks on the left where ``labelled``, at the own ratios' noise ``band``'s edges (reader r49d:
+    "1.2" / "0.8" beside a band of 0.82-1.18), else at 0.8 and 1.2 (reader r48d: a panel of means has another band),
+    and the tie band's edges 0.9 and 1.1 on a right-hand axis (reader r41d: a value by a band's edge could not be read
+    off; r47d: five labels within 0.8-1.2 were crammed)."""
     lo, hi = ax.get_ylim()
-    near = [t for t in (0.8, 1.2) if lo <= t <= hi and labelled]
+    near = [round(t, 2) for t in (band or (0.8, 1.2)) if lo <= t <= hi and labelled]
     ax.set_yticks(near, [f"{t:g}" for t in near], minor=True)
     ax.tick_params(axis="y", which="minor", labelsize=8)
     edges = [t for t in (0.9, 1.1) if lo <= t <= hi]

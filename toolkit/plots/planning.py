@@ -135,7 +135,7 @@ def samplers(
     for ax in axes[len(samples) :]:
         ax.set_axis_off()
     title = "Samples over the exact checker (grey: C-obstacles)"
-    nearby = f"near: within {near:.2g} of a C-obstacle (dashed line) or of a wall (the dotted frame is the wall itself)"
+    nearby = f"near: within {near:.2g} of a C-obstacle (dashed line) or of a wall (dotted: how far the centre may go)"
     nearby += f";\nof the free space, {space[0]:.0%} lies near a C-obstacle, {space[1]:.0%} near a wall"
     fig.suptitle(f"{title}.\n{nearby[0].upper()}{nearby[1:]}" if nearness else title, fontsize=9)
     counts = "; ".join(
@@ -222,13 +222,13 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
 
 
 EDGE_WORDS = "edge: predicted free, not yet checked"  # reader r31d: the thin edges named in the legend
+HOLLOW = dict(facecolors=COLORS["free"], edgecolors=NODE_COLOR, linewidths=1.0)  # a node not yet confirmed exactly
 
 
 def _nodes(ax, P: np.ndarray, confirmed: np.ndarray, labels: tuple, zorder: float = 3, **style) -> None:
     """Nodes ``P``: filled where ``confirmed`` (checked exactly), hollow where not; ``labels`` name the two kinds."""
     ax.scatter(*P[confirmed].T, s=22, color=NODE_COLOR, zorder=zorder, label=labels[0], **style)
-    look = dict(facecolors=COLORS["free"], edgecolors=NODE_COLOR, linewidths=1.0)
-    ax.scatter(*P[~confirmed].T, s=22, **look, zorder=zorder, label=labels[1], **style)
+    ax.scatter(*P[~confirmed].T, s=22, **HOLLOW, zorder=zorder, label=labels[1], **style)
 
 
 def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) -> None:
@@ -257,7 +257,9 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) 
             path_effects=outline,
         )
         on = np.asarray(step.path)  # reader r47d: the path's own nodes over its line, filled or hollow as elsewhere
-        _nodes(ax, P[on], confirmed[on], (None, None), zorder=4.5, path_effects=halo(1.5))
+        filled = on[confirmed[on]]  # reader r49d, item 5: a halo only on filled nodes; a hollow one stays thin, not
+        ax.scatter(*P[filled].T, s=22, color=NODE_COLOR, zorder=4.5, path_effects=halo(1.5))  # a ring's look
+        ax.scatter(*P[on[~confirmed[on]]].T, s=22, **HOLLOW, zorder=4.5)
     _removed_edges(ax, exact, P[step.edges[removed_edge]])
     ax.scatter(  # a ring: what truly collides, as in sample_sets (reader r45d, item 1: a cross is a checker's mark)
         *P[step.removed_nodes].T,

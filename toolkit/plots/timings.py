@@ -16,7 +16,7 @@ from matplotlib.transforms import offset_copy
 
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import CATEGORICAL, COLORS, PAGE_WIDTH, halo, series_style
-from toolkit.util.verdicts import TIES, per_query_ratios, time_verdict
+from toolkit.util.verdicts import TIES, UNSURE, per_query_ratios, time_verdict
 
 MODES = ("without", "with")
 STAGE_KEYS = ("sampling_s", "connection_s", "query_s")  # PRM stats, in the order the planner spends them
@@ -55,7 +55,8 @@ def stage_times(panels: dict[str, dict], band: tuple[float, float] | None = None
         ratio = [float(np.median(per_query_ratios(planning[s]))) for s in names]  # (samplers,)
         bars = table["total_s"][:, 1] / table["total_s"][:, 0]  # (samplers,): the bars' own quotient, with / without
         crossed = (bars - 1) * (np.asarray(ratio) - 1) < 0  # (samplers,): the taller bar says the other way
-        labels, note = _ratio_labels(ratio, crossed, band)  # r40d: one ratio a pair; the bars' own in the words
+        across = [_across(per_query_ratios(planning[s])) for s in names]  # reader r49d, item 4: the table's †
+        labels, note = _ratio_labels(ratio, crossed, band, across)  # r40d: one ratio a pair; the bars' own in words
         for i, label in enumerate(labels):  # above the frame, over the pair and a cut whisker's end: never on a bar
             where = dict(xycoords=("data", "axes fraction"), xytext=(0, 13), textcoords="offset points")
             ax.annotate(label, (i, 1.0), ha="center", va="bottom", fontsize=9, weight="bold", **where)
@@ -84,18 +85,29 @@ def stage_times(panels: dict[str, dict], band: tuple[float, float] | None = None
     fig.legend([shown[k] for k in order], order, loc="upper center", ncol=2, fontsize=9, frameon=False)
     fig.tight_layout(rect=(0, 0, 1, 1 - 0.8 / fig.get_figheight()))  # the legend over the panels, where a reader starts
     text = "Median planning time per query in ms without and with prediction, per sampler, split into the planner's"
-    text += " stages (hatched), with the median of each query's own time ratio, with / without (not a ratio of the"
-    text += " bars), above each pair;"
+    text += " stages (each its own colour and fill pattern), with the median of each query's own time ratio,"
+    text += " with / without (not a ratio of the bars), above each pair;"
     text += " each panel on its own scale"
     return describe(fig, f"{text}. {'; '.join(said)}.", parts)
 
 
-def _ratio_labels(ratio: list[float], crossed: np.ndarray, band: tuple[float, float] | None) -> tuple[list[str], str]:
-    """Each pair's ratio as written over it, "*" inside ``band`` (a saving or cost only), :data:`CROSSED` where the
-    bars say the other way; and the title's note naming the marks drawn (review r30d: none promised where none is)."""
+def _across(ratios: np.ndarray) -> bool:
+    """Whether the queries' middle half reaches across the tie band (or fewer than two queries): chapter 04's table
+    then marks its verdict † (:func:`toolkit.teaching.findings.planning_verdict`)."""
+    q1, q3 = (float(v) for v in np.percentile(ratios, (25, 75)))
+    return len(ratios) < 2 or time_verdict(q1, q3) == UNSURE
+
+
+def _ratio_labels(
+    ratio: list[float], crossed: np.ndarray, band: tuple[float, float] | None, across: Sequence[bool] = ()
+) -> tuple[list[str], str]:
+    """Each pair's ratio as written over it, "*" inside ``band`` (a saving or cost only), else "†" where ``across``
+    (its middle half reaches across the tie band, as chapter 04's table marks it), :data:`CROSSED` where the bars say
+    the other way; and the title's note naming the marks drawn (review r30d: none promised where none is)."""
     noisy = [band is not None and band[0] < r < band[1] and time_verdict(r) != TIES for r in ratio]
-    labels = [f"{r:.2f}x{'*' * noisy[i]}{CROSSED if crossed[i] else ''}" for i, r in enumerate(ratio)]
-    marks = [NOISY] * any(noisy) + [STARRED] * bool(crossed.any())
+    wide = [band is not None and bool(across) and across[i] and not noisy[i] for i in range(len(ratio))]
+    labels = [f"{r:.2f}x{'*' * noisy[i]}{'†' * wide[i]}{CROSSED if crossed[i] else ''}" for i, r in enumerate(ratio)]
+    marks = [NOISY] * any(noisy) + [WIDE] * any(wide) + [STARRED] * bool(crossed.any())
     return labels, f" ({'; '.join(marks)})" if marks else ""
 
 
@@ -111,8 +123,8 @@ def _stage_words(
         words.append(
             f"{s} {ms_text(table['total_s'][i, 0])} ms without, {ms_text(table['total_s'][i, 1])} ms with "
             f"(the median of each query's ratio {ratio[i]:.2f}x"
-            + ", inside the noise band"
-            * ("*" in (labels[i] if labels else ""))
+            + ", inside the noise band" * ("*" in (labels[i] if labels else ""))
+            + ", its middle half across the tie band" * ("†" in (labels[i] if labels else ""))
             + f"; the bars' own ratio {bars[i]:.2f}x"
             f"{taller if crossed[i] else ''})"
         )
@@ -122,6 +134,7 @@ def _stage_words(
 MS = 1000.0  # the figure's unit, ms, per second
 CROSSED = "‡"  # not chapter 04's † (no clear evidence, its tables) nor its * (the noise band): reader r48d
 STARRED = "‡: the bars say the other way"  # a stage panel's title's end, where a pair is marked so
+WIDE = "†: middle half across the tie band"  # chapter 04's table's other mark (reader r49d, item 4)
 NOISY = "*: inside the noise band"  # ... and where a pair's ratio is inside ``band``
 BAR = 0.3  # a stage bar's width; a pair's centres are 0.44 apart, each bar's whisker stands on its right
 CUT = 2.0  # a whisker reaching past CUT times a panel's tallest bar is cut at its top, its end written there

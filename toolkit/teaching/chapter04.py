@@ -179,18 +179,23 @@ def eager_tables(records: Mapping[str, list[dict]]) -> list[str]:
 
 
 def roadmap_line(records: Mapping[str, list[dict]]) -> str:
-    """Under section 5's counts (reader r48d, item 1): the roadmap prediction left, and the connection stage's time
-    in each mode, as the stage table gives it; the roadmap moves the time whatever a network call costs."""
+    """Under section 5's counts (readers r48d item 1, r49d item 1): the roadmap prediction left, and the connection
+    stage's time in each mode, read against the 10 % tie band: "about the same" inside it, "less" / "more" only beyond
+    it. Prediction moves this time only through the roadmap it leaves, whatever a network call costs."""
     nodes = {m: float(np.median([r["nodes"] for r in records[m]])) for m in ("without", "with")}
     ms = {m: _stage_ms(records[m], "connection_s") for m in ("without", "with")}
     fewer = "fewer" if nodes["with"] < nodes["without"] else "more" if nodes["with"] > nodes["without"] else "as many"
-    shorter = float(ms["with"]) < float(ms["without"])
+    verdict = time_verdict(float(ms["with"]) / max(float(ms["without"]), 1e-9))
+    read = {
+        TIES: "about the same (within our 10 % tie band): here the roadmap changed too little to move this time",
+        SAVES: "10 % or more less: here the roadmap it left took less time to connect",
+        COSTS: "10 % or more longer: here the roadmap it left took more time to connect",
+    }[verdict]
     return (
         f"With prediction the median roadmap had {fewer} nodes ({nodes['with']:,.0f} against {nodes['without']:,.0f} "
-        f"without), and the connection stage took {ms['with']} ms a query against {ms['without']} ms: prediction "
-        "moves this time through the roadmap it leaves, "
-        + ("here less, " if shorter else "here more, ")
-        + "whatever a network call costs against the sample checks it replaces (section 4)."
+        f"without), and the connection stage took {ms['with']} ms a query against {ms['without']} ms, {read}. "
+        "Prediction can move this time only through the roadmap it leaves, whatever a network call costs against "
+        "the sample checks it replaces (section 4)."
     )
 
 
@@ -259,7 +264,8 @@ def by_means(tables: Tables | None = None) -> str:
         return f"{bands[kind][0]:.2f}–{bands[kind][1]:.2f}"
 
     return (
-        f"**By mean times**, the paper's statistic, prediction saved time in {means[0] or 'none'} cells with our fast "
+        f"**By mean times**, the paper's statistic, prediction saved 10 % or more in {means[0] or 'none'} cells with "
+        "our fast "
         f"checker and {means[1] or 'none'} with python-fcl, {'only ' * bool(clear)}{', '.join(clear) or 'none'} "
         f"beyond the noise band of a ratio of means ({band('means')}). "
         + (
@@ -341,7 +347,9 @@ def means_apart(tables: Tables | None = None) -> str:
         )
 
     total = sum(len(c) for group in cells.values() for c in group.values())
-    said = f"of the {total} pairs where a mean saved, the median own ratio did not {named(cells[False])}"
+    runs = ", ".join(f"{sum(len(c[w]) for c in cells.values() if w in c)} {w}" for _, w in RUNS)
+    said = f"of the {total} cells ({runs}) where a mean saved 10 % or more, the median own ratio did not "
+    said += named(cells[False])
     return f"{said} and did {named(cells[True])}"
 
 
@@ -355,11 +363,12 @@ def full_answer(tables: Tables | None = None) -> str:
     facts = checker_scope.slow_checker(tables)
     fast, slow = (costs.mean_verdicts(preset, tables) for preset, _ in RUNS)
     counts = {who: f"{c[SAVES] or 'none'}" for who, c in (("fast", fast), ("slow", slow))}
-    rest = {who: f"{c[TIES]} tied, {c[COSTS]} longer" for who, c in (("fast", fast), ("slow", slow))}
+    rest = {who: f"{c[TIES]} tied, {c[COSTS]} took 10 % or more longer" for who, c in (("fast", fast), ("slow", slow))}
     return (
         f"{findings.claim_status(eager, lazy)}\n\n"
         f"{checker_scope.slow_sentence(facts, ranges=False)} {checker_scope.like_for_like(facts)}\n\n"
-        f"By mean times, the paper's statistic, prediction saved time in {counts['fast']} of the {fast.total()} pairs "
+        f"By mean times, the paper's statistic, prediction saved 10 % or more in {counts['fast']} of the "
+        f"{fast.total()} cells "
         f"with our fast checker ({rest['fast']}) and in {counts['slow']} with python-fcl on both sides "
         f"({rest['slow']}); {costs.clear([costs.clear_mean_savings(p, tables) for p, _ in RUNS])}. "
         "A mean follows the few slowest queries (*The statistic*, below): where those saved, a mean "

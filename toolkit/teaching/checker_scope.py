@@ -86,8 +86,8 @@ def _counted(verdicts: Counter) -> str:
         if verdicts[verdict] == total:
             return f"each query's total time was {words} for every sampler"
     return (
-        f"by the median own ratio, total time was shorter in {verdicts[SAVES] or 'none'} of the {total} "
-        f"scenario–sampler pairs, a tie in {verdicts[TIES]} and longer in {verdicts[COSTS]}"
+        f"by the median own ratio, total time was 10 % or more shorter in {verdicts[SAVES] or 'none'} of the {total} "
+        f"cells, a tie in {verdicts[TIES]} and 10 % or more longer in {verdicts[COSTS] or 'none'}"
     )
 
 
@@ -329,9 +329,9 @@ def _paper_mlp(tables: Tables | None = None) -> str:
     rates = {name: {c: recorded.ours(mlp[key][c]) for c in columns} for name, key in SCENARIOS_4}
     balanced = [recorded.ours(mlp[key]["Balanced unseen Acc"]) for _, key in SCENARIOS_4]  # half the samples valid
     return (
-        "The `paper` preset's MLP on unseen workspaces, on our validity-blind samples (which kind the paper's unseen "
-        "test used is unstated, chapter 03) "
-        "(`docs/results.md`, Table 2's *Unseen* columns; on balanced samples, half of them valid, the same MLP is "
+        "The `paper` preset's MLP on unseen workspaces, on our validity-blind samples; which kind the paper's unseen "
+        "test used is unstated (chapter 03). From `docs/results.md`, Table 2's *Unseen* columns "
+        "(on balanced samples, half of them valid, the same MLP is "
         f"right {min(balanced):.0%} to {max(balanced):.0%} of the time, its *Balanced unseen* column):\n\n"
         '| scenario | keeps valid<br>(TPR) | rejects colliding<br>(TNR) | accuracy / "valid" to all '
         "| what it<br>answers |\n| --- | ---: | ---: | ---: | --- |\n"
