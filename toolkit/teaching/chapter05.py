@@ -89,17 +89,22 @@ def answer(threshold: float | None = None) -> str:
 
 def _why(shares, cut, own) -> str:
     """The answer's "Why" for python-fcl (reader r45e, 05 item 1): sampling's share of a query times the network's cut
-    of it, both from mean times, bounds what skipping the sample checks could take off a query; a sampler whose bound
-    reaches the tie bar is read by what its whole query did, each query's own ratio (reader r47e: one statistic in
-    view, the means in the fold)."""
+    of it, both from mean times, bounds what skipping the sample checks could take off a query; a bound past the tie
+    bar is set against the own ratio's noise band and what its whole query did (readers r47e, r49e)."""
     limit = {s: shares[s] * cut[s] for s in SAMPLERS}  # of a query's mean time
     best = max(SAMPLERS, key=limit.__getitem__)
     said = (
         f"With python-fcl, sampling took at most {max(shares.values()) * 100:.0f} % of a 3DC-7 query, so skipping "
         f"its checks could take at most {limit[best] * 100:.0f} % off a query ({best}, from mean times)."
     )
+    band = floors()["own"]
     for s in (s for s in SAMPLERS if limit[s] >= TIE):
-        said += f" {s}'s whole query took {_moved(own[s])} instead, by the median of its own ratios."
+        said += (  # python-fcl's run borrows the compiled run's bands (common rule 4)
+            f" Even all {limit[s] * 100:.0f} % would lie inside the noise band of a query's own ratio, "
+            f"{band[0]:.2f}–{band[1]:.2f} (python-fcl's run borrows the compiled run's band), and"
+            if inside(1 - limit[s], band)
+            else " Yet"
+        ) + f" {s}'s whole query took {_moved(own[s])} instead, by the median of its own ratios."
     return said
 
 
