@@ -429,8 +429,10 @@ def test_section_6s_counts_say_what_a_removed_edge_was():
         "removes nothing: it only keeps a node or an edge out."
     )
     stats.update(repairs=2, removed_nodes=1, removed_edges=2)
-    assert "The 1 node and 2 edges removed lay on a candidate path: the model had let them into" in (
-        chapter05_runs.plan_tables(SimpleNamespace(stats=stats, success=True, path=np.zeros((5, 7))))
+    assert (
+        "The 1 node and 2 edges removed lay on candidate paths: the model had let them into the roadmap, and the "
+        "exact check found collisions there. Each is a dangerous mistake"
+        in (chapter05_runs.plan_tables(SimpleNamespace(stats=stats, success=True, path=np.zeros((5, 7)))))
     )
     stats.update(repairs=0, removed_nodes=0, removed_edges=0)
     assert chapter05_runs.plan_tables(SimpleNamespace(stats=stats, success=True, path=np.zeros((5, 7)))).endswith(

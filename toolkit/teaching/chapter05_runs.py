@@ -40,10 +40,13 @@ def _removed(stats) -> str:
     if not nodes + edges:
         return "No candidate path failed the exact check, so nothing was removed."
     counted = " and ".join(f"{n} {kind}{'' if n == 1 else 's'}" for n, kind in ((nodes, "node"), (edges, "edge")) if n)
+    one = nodes + edges == 1
+    hit = "a collision" if one else "collisions"
     return (
-        f"The {counted} removed lay on a candidate path: the model had let {'it' if nodes + edges == 1 else 'them'} "
-        "into the roadmap, and the exact check found a collision there. That is a dangerous mistake caught before the "
-        "path was returned. A conservative mistake removes nothing: it only keeps a node or an edge out."
+        f"The {counted} removed lay on {'a candidate path' if one else 'candidate paths'}: the model had let "
+        f"{'it' if one else 'them'} into the roadmap, and the exact check found {hit} "
+        f"there. {'That is a' if one else 'Each is a'} dangerous mistake caught before the path was returned. A "
+        "conservative mistake removes nothing: it only keeps a node or an edge out."
     )
 
 
