@@ -29,7 +29,24 @@ def plan_tables(result) -> str:
         "| ---: | ---: | ---: | ---: | ---: |\n"
         f"| {stats['predicted_checks']} | {stats['exact_checks']} + {stats['exact_clearances']} "
         f"| {stats['predicted_checks'] / max(exactly, 1):.0f} | {stats['repairs']} "
-        f"| {stats['removed_nodes']} / {stats['removed_edges']} |"
+        f"| {stats['removed_nodes']} / {stats['removed_edges']} |\n\n" + _removed(stats)
+    )
+
+
+def _removed(stats) -> str:
+    """What §6's removed nodes and edges were (reader r49e, 05 item 2: beside §7's "no edge" line): places on a
+    candidate path that the model had let in and the exact check found colliding, dangerous mistakes caught."""
+    nodes, edges = stats["removed_nodes"], stats["removed_edges"]
+    if not nodes + edges:
+        return "No candidate path failed the exact check, so nothing was removed."
+    counted = " and ".join(f"{n} {kind}{'' if n == 1 else 's'}" for n, kind in ((nodes, "node"), (edges, "edge")) if n)
+    one = nodes + edges == 1
+    hit = "a collision" if one else "collisions"
+    return (
+        f"The {counted} removed lay on {'a candidate path' if one else 'candidate paths'}: the model had let "
+        f"{'it' if one else 'them'} into the roadmap, and the exact check found {hit} "
+        f"there. {'That is a' if one else 'Each is a'} dangerous mistake caught before the path was returned. A "
+        "conservative mistake removes nothing: it only keeps a node or an edge out."
     )
 
 
@@ -188,6 +205,18 @@ def dips_unscreened(result, model, along: np.ndarray, below: np.ndarray) -> str:
     return (
         f"{sum(screened)} of the {len(frames)} frame{'s' * many} below the threshold ({where} along the path) "
         f"{'is' if sum(screened) == 1 else 'are'} among the {len(points)} points screening asked the model about."
+    )
+
+
+def mistake_counts(valid: np.ndarray, predicted: np.ndarray) -> str:
+    """The line under §5's view (reader r49e, 05 item 3): the overview draws every dangerous mistake but only some
+    of the conservative ones, so the true proportion, from ``valid``, ``predicted (N,)``, is said in words."""
+    dangerous, conservative = int(np.sum(~valid & predicted)), int(np.sum(valid & ~predicted))
+    more = "more" if conservative > dangerous else "fewer" if conservative < dangerous else "as many"
+    return (
+        f"Count the mistakes, not the stars: of the {len(valid)} samples, {conservative} are conservative mistakes "
+        f"and {dangerous} dangerous ones ({more} conservative than dangerous, {conservative} to {dangerous}). The "
+        "overview draws every dangerous one but only some of the conservative ones."
     )
 
 
