@@ -336,14 +336,15 @@ def test_chapter_04_passes_when_every_verdict_agrees_with_its_row():
 
 
 def test_chapter_04_quotes_table_3_exactly():
-    """Common47 rule 1 (reader r47d, item 1): Table 3 saves time in 13 of 16 cells, 10 % or more in 10; the 10 % tie
-    band is ours, so the page never says the paper "reports 10 of 16 faster" or counts "as the paper counts"."""
+    """Common47 rule 1 (reader r47d, item 1; r50d: "saves" is ours for 10 % or more): Table 3 takes less time in 13
+    of 16 cells, 10 % or more less in 10; the 10 % tie band is ours, so the page never says the paper "reports 10
+    of 16 faster" or counts "as the paper counts"."""
     nb = chapter_04()
     answer = nb["cells"][0]["outputs"][0]["data"]
     answer["text/markdown"] = answer["text/markdown"].replace(
-        "saves time in 13 of its 16", "saves time in 10 of its 16"
+        "takes less time in 13 of its 16", "takes less time in 10 of its 16"
     )
-    assert problems(CH04, nb) == ["04: the answer says Table 3 saves time in ['10'] cells; it does in 13"]
+    assert problems(CH04, nb) == ["04: the answer says Table 3 takes less time in ['10'] cells; it does in 13"]
     nb = chapter_04()
     nb["cells"].insert(-1, {"cell_type": "markdown", "source": "Counted as the paper counts, Table 3 reports 10."})
     assert problems(CH04, nb) == ["04: the page quotes Table 3 loosely: ['as the paper counts', 'Table 3 reports']"]
@@ -1582,7 +1583,7 @@ def test_chapter_05_holds_table_2s_valid_share_and_the_offices_collisions_to_its
 # ---- chapter 01: the checker-cost words against section 3's ratios ----
 
 
-OPENING_01 = "general-purpose collision library, only many times slower per check (section 3 prints how many times in"
+OPENING_01 = "general-purpose collision library; FCL is the slow one, many times slower per check (section 3 prints how"
 
 
 def chapter_01(low: int = 46, high: int = 90, closing: dict[str, str] | None = None, said: str = OPENING_01) -> dict:
@@ -1629,7 +1630,7 @@ def test_chapter_01_fails_words_its_ratios_do_not_give():
         "01: the opening types a range, '30–100 times', beside section 3's 50–103x"
     ]
     assert problems(CH01, chapter_01(said="in a fraction of its time")) == [
-        "01: the opening does not say FCL 'only many times slower per check'"
+        "01: the opening does not say FCL 'FCL is the slow one, many times slower per check'"
     ]
 
 
