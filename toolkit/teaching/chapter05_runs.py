@@ -285,8 +285,10 @@ def paper_share() -> str:
     _, uniform = chapter05.recorded_scores("paper")
     return (
         '<details><summary>Which "unseen" test did the paper score?</summary>\n\n'
-        'It says only (§IV-A) that it generates "2000 samples for each 3D office-like workspace, and 400 samples for '
-        'each 3D clutter workspace" "regardless of their validity", and "This is evaluated as unseen scenarios". '
+        'Of its seen test, §IV-A says the samples are "approximately distributed 50/50 between valid and invalid". '
+        'Of the unseen one it says only that it generates "2000 samples for each 3D office-like workspace, and 400 '
+        'samples for each 3D clutter workspace" "regardless of their validity", and "This is evaluated as unseen '
+        'scenarios". '
         "Section 1's fold reads those 400 as the planner's uniform samples; Table 2 probably scored another set, "
         "since its three numbers fix the valid share of its test set.\n\n"
         f"The paper's row: {paper['acc']:.0%} = {paper['tpr']:.0%} × share + {paper['tnr']:.0%} × (1 − share) gives a "
