@@ -144,7 +144,7 @@ def answer_tables(predicted_valid, valid) -> list[Part]:
     ]
 
 
-RATE_SHADES = {"accuracy": 0, "TPR": 1, "TNR": 4}  # blue, orange, grey: CATEGORICAL's and HATCHES' entries (r47c: a
+RATE_SHADES = {"acc": 0, "tpr": 1, "tnr": 4}  # blue, orange, grey: CATEGORICAL's and HATCHES' entries (r47c: a
 # sky-blue TNR bar read as the maps' sky blue, a conservative mistake)
 
 
@@ -153,7 +153,8 @@ def draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
     written on it."""
     keys, labels = ("acc", "tpr", "tnr"), ("accuracy", "TPR (valid kept)", "TNR (invalid rejected)")
     x, width = np.arange(len(scores)), 0.8 / len(keys)
-    for k, (key, label, shade) in enumerate(zip(keys, labels, RATE_SHADES.values())):
+    for k, (key, label) in enumerate(zip(keys, labels)):
+        shade = RATE_SHADES[key]
         bars = ax.bar(
             x + (k - 1) * width,
             [s[key] for s in scores.values()],
