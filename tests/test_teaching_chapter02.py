@@ -185,20 +185,15 @@ def test_the_new_grids_verdict_says_below_only_when_every_cae_is_below():
     )
 
 
-def test_the_closing_table_gives_the_paper_then_each_row_beside_all_free():
-    table = chapter02.closing_table(PAPER, {"CAE-long": LONG}, unseen="unseen (ours: 500 new grids)")
-    # reader r34b: every row's unseen column on one set of grids, which the header names
-    assert (
-        table.splitlines()[0]
-        == '| 2DS reconstruction accuracy | seen | unseen (ours: 500 new grids) | "all free" (seen / unseen) |'
-    )
-    assert table.splitlines()[2:4] == [
-        # reader r35b: the paper's unseen 100 % is on its own 10 grids, not on the header's 500
-        "| paper, Table 1 | 100% | 100% on its own 10 unseen grids (§IV-A) | not reported |",
-        "| CAE-long | 99.6% | 86.7% | 88.6% / 87.6% |",
-    ]
-    # reader r40b: the optimizer caveat at most twice on the page (the top and the aside), not under this table
-    assert "Adam" not in table and table.splitlines()[-1] == "| CAE-long | 99.6% | 86.7% | 88.6% / 87.6% |"
+def test_section_5s_held_out_check_is_a_fold_around_its_line():
+    """Reader r50b: the held-out length check lost the thread in section 5's main text; it is one fold, its printed
+    line inside, the main text keeping "stopping earlier does not help on new grids"."""
+    line = chapter02.held_out_verdict({300: 0.9091, 1500: 0.9031}, 0.9131, 6)
+    fold = chapter02.held_out_fold(line, 30, 500)
+    assert fold.startswith("<details><summary>Why stopping earlier does not help: how CAE-preset's 300 steps")
+    assert fold.endswith("</details>") and f"\n\n{line}\n\n" in fold  # the line a paragraph of its own, inside
+    assert "the 500 new grids, the two lengths even swap places" in fold and "all 30 grids" in fold
+    assert f"]({chapter02.FIDELITY_5})" in fold and chapter02.FIDELITY_5.startswith("../docs/fidelity.md#5-")
 
 
 def test_section_8s_maps_fold_with_their_alt_text_and_read_pc1_against_the_occupied_share():
