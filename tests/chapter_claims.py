@@ -321,7 +321,7 @@ def _chapter_02_unseen(nb, found: str) -> list[str]:
                 f"02: {lam[0]} scores {lam[4]:+.1f} points against 'all free' on the test grids: not within a couple"
             )
     answer = re.search(
-        r"\*\*The answer\.\*\*.*? scores ([\d.]+)% on \d+ new grids, [\d.]+ points (?:below|above) "
+        r"- CAE-long, [^:]*? scores ([\d.]+)% on \d+ new grids, [\d.]+ points (?:below|above) "  # r50b: label above
         r'answering "all free"(?: \([^)]*\))?, which gets ([\d.]+)%.*?\*\*no better than answering "all free"\*\*',
         found,
     )

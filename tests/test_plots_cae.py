@@ -211,8 +211,8 @@ def pixels_of(fig, ax, color: str, tolerance: float = 0.08) -> int:
 
 
 def test_contraction_shows_a_line_that_another_covers_exactly():
-    """Reader r8b: the lambda = 0 line lay under lambda = 1e-3, hidden. The first line is drawn wider, with larger
-    markers, under the later ones: where two models respond alike, the first still shows at the second's edges."""
+    """Reader r8b: the lambda = 0 line lay under lambda = 1e-3, hidden. The first line is drawn wider, under the later
+    ones: where two models respond alike, the first still shows at the second's edges."""
     flips = np.array([1, 3, 10, 30])
     same = np.array([[0.01], [0.03], [0.1], [0.3]])  # (F, 1): one trial
     names = ["lambda = 0", "lambda = 1e-3"]
@@ -221,20 +221,25 @@ def test_contraction_shows_a_line_that_another_covers_exactly():
         flips=flips,
         latent_shift=dict.fromkeys(names, same),
         decoded_change=dict.fromkeys(names, same * 100),
+        series=(4, 1),
     )
     ax_j, ax_z, ax_x = fig.axes
-    first, second = (series_style(k)["color"] for k in range(2))
+    first, second = (series_style(k)["color"] for k in (4, 1))
     for ax in (ax_z, ax_x):
         under, over = (line for line in ax.get_lines() if line.get_label() in names)
-        assert under.get_linewidth() > over.get_linewidth() + 2 and under.get_markersize() > over.get_markersize()
+        assert under.get_linewidth() > over.get_linewidth() + 2
+        assert (under.get_color(), over.get_color()) == (first, second)  # the series asked for
+        assert under.get_linestyle() != over.get_linestyle()  # told apart without colour
         assert under.get_zorder() < over.get_zorder()
         assert pixels_of(fig, ax, first) > 0.5 * pixels_of(fig, ax, second) > 0  # the line beneath shows
     (legend,) = [ax_j.get_legend()]  # the box plot's marks named: the star is the mean
     named = dict(zip([t.get_text() for t in legend.get_texts()], legend.legend_handles))
     assert named["mean"].get_marker() == "*" and "median" in named
-    # reader r48b: the mean was a triangle, λ = 0.961's marker in the panels below: no marker means two things
+    # reader r50b: markers stand for groups of grids on the page, so the models' lines have none; and no box mark
+    # is a circle or triangle (reader r48b: the mean was a triangle)
     models = {line.get_marker() for ax in (ax_z, ax_x) for line in ax.get_lines() if line.get_label() in names}
-    assert len(models) == len(names) and named["mean"].get_marker() not in models
+    assert models <= {"", "None", None}
+    assert not {named[mark].get_marker() for mark in named if mark != "median"} & {"o", "^", "s"}
 
 
 def test_latent_scatter_has_one_point_per_workspace_at_its_coordinates(rng):
@@ -305,8 +310,13 @@ def test_training_curves_in_panels_give_each_line_its_own_on_one_y_axis():
     same = list(np.linspace(5.0, 1.0, 40))
     fig = plots.training_curves({"lambda 0": same, "lambda 1e-3": same, "lambda 0.961": [9.0] * 40}, panels=True)
     assert [len(ax.get_lines()) for ax in fig.axes] == [1, 1, 1]
-    # reader r40b: the same curve in two panels looks the same, its markers on the same epochs
-    assert len({ax.get_lines()[0].get_markevery() for ax in fig.axes}) == 1
+    # reader r50b: no markers (they stand for groups of grids on the page): each line its colour and line style
+    lines = [ax.get_lines()[0] for ax in fig.axes]
+    assert {line.get_marker() for line in lines} <= {"", "None", None}
+    assert len({line.get_color() for line in lines}) == len({line.get_linestyle() for line in lines}) == 3
+    assert fig.axes[0].get_lines()[0].get_color() == series_style(0)["color"]
+    coloured = plots.training_curves({"a": same, "b": same}, panels=True, series=(4, 1))
+    assert [ax.get_lines()[0].get_color() for ax in coloured.axes] == [series_style(k)["color"] for k in (4, 1)]
     assert [ax.get_title() for ax in fig.axes] == ["lambda 0", "lambda 1e-3", "lambda 0.961"]
     assert len({ax.get_ylim() for ax in fig.axes}) == 1 and fig.axes[0].get_ylabel().startswith("loss of Eq. (1)")
     assert all(ax.get_yscale() == "log" and ax.get_xlabel() == "epoch" for ax in fig.axes)
@@ -330,6 +340,8 @@ def test_reconstructions_wrong_cells_carry_marks_one_can_read_at_the_sites_width
     (legend,) = fig.subfigs[0].legends
     shown = [m for m in legend.findobj(Line2D) if m.get_marker() in ("x", "o")]  # what the legend draws
     assert sorted(m.get_marker() for m in shown) == ["o", "x"] and {m.get_fillstyle() for m in shown} == {"none"}
+    # reader r50b: vermillion and blue are CAEs or groups of grids elsewhere on the page; the key says what they mean
+    assert legend.get_title().get_text() == "the colours here: kinds of wrong cell, not models or groups of grids"
     fig.canvas.draw()  # r27b: the legend above the first grid, not a screen below it under the last
     first = fig.subfigs[1]._suptitle.get_window_extent()  # the first workspace's title
     assert legend.get_window_extent().y0 >= first.y1 and not fig.legends
@@ -413,6 +425,9 @@ def test_large_groups_are_hollow_and_coinciding_means_nest():
         edges = np.concatenate([c.get_edgecolor() for c in drawn])
         if name == "few":
             assert np.all(faces[:, 3] > 0) and np.allclose(edges[:, :3], to_rgb(COLORS["ink"]))
+            # reader r50b: a point on a mean's outline read as hidden in it; a white ring sets each point apart
+            (ring, *_) = drawn[0].get_path_effects()
+            assert all(c.get_zorder() > 3 for c in drawn) and to_rgb(ring._gc["foreground"]) == (1.0, 1.0, 1.0)
         else:
             assert faces.size == 0 or np.all(faces[:, 3] == 0)  # hollow
             assert np.allclose(edges[:, :3], to_rgb(series_style(k)["color"]))

@@ -1,12 +1,10 @@
 """Figures of the contractive autoencoder (paper §III-A, Eq. 1; notebook 02): every function returns a Figure.
 
 - :func:`training_curves` — the loss of Eq. (1) per epoch, one line per model;
-- :func:`reconstructions` — input, decoded grid and the wrongly decoded cells of 2D workspaces, each titled with its
-  reconstruction accuracy next to "all free";
-- :func:`accuracy_vs_all_free` — every workspace's reconstruction accuracy against the accuracy of answering
-  "all free" (Table 1, one point per workspace);
-- :func:`contraction` — what the contractive penalty does: the encoder Jacobian's norm, and how far ``z`` and the
-  decoded grid move when a few cells are flipped (the latent codes themselves: :mod:`toolkit.plots.latent`).
+- :func:`reconstructions` — input, decoded grid and wrong cells of 2D workspaces, titled with accuracy and "all free";
+- :func:`accuracy_vs_all_free` — each workspace's reconstruction accuracy against answering "all free" (Table 1);
+- :func:`contraction` — the encoder Jacobian's norm, and how far ``z`` and the decoded grid move when a few cells are
+  flipped (the latent codes themselves: :mod:`toolkit.plots.latent`).
 
 Grids hold -1 (free) and +1 (occupied), as :meth:`toolkit.geometry.workspace.Workspace.occupancy` returns them; a
 decoded cell counts as occupied where the decoder's output is positive, as in
@@ -29,7 +27,7 @@ from matplotlib.ticker import FuncFormatter, LogLocator, NullLocator
 from toolkit.learning.metrics import reconstruction_accuracy
 from toolkit.plots.alt import Part, describe, lines_part
 from toolkit.plots.box_names import NAME_POINTS, fitted, slot_points, tick_names
-from toolkit.plots.palette import COLORS, GREYS_CMAP, PAGE_WIDTH, halo, series_style
+from toolkit.plots.palette import COLORS, GREYS_CMAP, LINE_COLORS, LINE_STYLES, PAGE_WIDTH, halo, series_style
 from toolkit.plots.wrong_cells import draw_wrong_cells, grid_part, legend_handles, wrong_in_words, wrong_kinds
 
 
@@ -39,18 +37,21 @@ def training_curves(
     ylabel: str = "loss of Eq. (1), mean per epoch",
     log: bool = True,
     panels: bool = False,
+    series: tuple[int, ...] | None = None,
 ) -> Figure:
     """One line per named history (e.g. ``TrainedModels.history["cae"]``), epochs 1, 2, ... on x. Two curves that
     coincide stay visible: each later line is drawn thinner over the earlier ones, and their markers take turns; or,
-    with ``panels``, each line in a panel of its own, all on one y axis (reader r39b: λ = 0 hid under λ = 1e-3), its
-    markers on the same epochs as the other panels' (reader r40b: shifted markers made equal curves look unequal)."""
+    with ``panels``, each line in a panel of its own, all on one y axis (reader r39b: λ = 0 hid under λ = 1e-3), in
+    colour and line style only, the colour of series ``series[k]`` (reader r50b: no marker, which meant groups of
+    grids elsewhere on the page)."""
     n = len(histories)
+    series = tuple(range(n)) if series is None else tuple(series)
     fig = Figure(figsize=(PAGE_WIDTH, 3.2 if panels else 3.6))
     axes = list(fig.subplots(1, n if panels else 1, sharey=True, squeeze=False)[0])
     for k, (name, history) in enumerate(histories.items()):
-        every = max(1, len(history) // 8)  # about 8 markers a line; on one axes each line's shifted off the others'
-        marks = dict(markevery=(0 if panels else k * every // n, every), markersize=6)
-        style = (series_style(k) if panels else _stacked(k, n)) | marks
+        every = max(1, len(history) // 8)  # about 8 markers a line, each line's shifted off the others'
+        marks = dict(markevery=(k * every // n, every), markersize=6)
+        style = _line(k, series[k]) if panels else _stacked(k, n) | marks
         axes[k if panels else 0].plot(np.arange(1, len(history) + 1), history, label=name, **style)
         if panels:
             axes[k].set_title(name, fontsize=10)
@@ -81,11 +82,17 @@ def training_curves(
     return describe(fig, text, parts)  # several panels: each one's line as a table under the figure
 
 
-def _stacked(k: int, n: int) -> dict[str, Any]:
-    """The style of the ``k``-th of ``n`` lines that may coincide: its series' colour, line style and marker, each
-    later line thinner, its markers smaller, drawn over the earlier ones (a line under another shows at its edges)."""
+def _stacked(k: int, n: int, s: int | None = None) -> dict[str, Any]:
+    """The ``k``-th of ``n`` lines that may coincide, series ``k``'s style (given ``s``, :func:`_line`'s), each later
+    line thinner, its markers smaller, drawn over the earlier ones (a line under another shows at its edges)."""
     under = (n - 1 - k) / max(n - 1, 1)  # 1 for the first line (the lowest), 0 for the last (on top)
-    return series_style(k) | dict(linewidth=1.2 + 3.0 * under, markersize=5 + 5 * under, zorder=2 + k)
+    style = series_style(k) if s is None else _line(k, s)
+    return style | dict(linewidth=1.2 + 3.0 * under, markersize=5 + 5 * under, zorder=2 + k)
+
+
+def _line(k: int, s: int) -> dict[str, Any]:
+    """The ``k``-th line of a figure in series ``s``'s colour and the ``k``-th line style, no marker."""
+    return dict(color=LINE_COLORS[s % len(LINE_COLORS)], linestyle=LINE_STYLES[k % len(LINE_STYLES)], marker="")
 
 
 def reconstructions(
@@ -96,11 +103,10 @@ def reconstructions(
     ``grids``, ``decoded``: ``(W, nx, ny)``. Wrong cells are marked by kind (:mod:`toolkit.plots.wrong_cells`): a
     missed cell (input occupied, decoded free) or an invented one; given ``flipped (W, nx, ny)``, the cells flipped
     in a perturbed input, those are a kind of their own (flip ignored, flip copied) and the rest "other wrong".
-    A legend above the first row names the kinds (review r27b: under the last, it lay a screen below the first), in
-    the figure's first subfigure; the rows are the others. Each row's title gives the reconstruction accuracy next to
-    the share of free cells, the accuracy of a CAE that ignores its input and answers "all free". Given ``flipped``,
-    both are of the *clean* grid, the input with its flips undone (review r29b: scored against the noisy input, a
-    decoder that ignored every flip, a perfect denoise, read as 30 cells wrong).
+    A legend above the first row names the kinds (review r27b), in the figure's first subfigure; the rows are the
+    others. Each row's title gives the reconstruction accuracy next to the share of free cells, the accuracy of
+    answering "all free". Given ``flipped``, both are of the *clean* grid, the input with its flips undone (review
+    r29b: against the noisy input, a decoder that ignored every flip read as 30 cells wrong).
     """
     grids, decoded = np.asarray(grids), np.asarray(decoded)
     if grids.ndim != 3 or decoded.shape != grids.shape or len(names) != len(grids):
@@ -112,9 +118,9 @@ def reconstructions(
     clean = grids if flipped is None else np.where(flipped, -grids, grids)  # the flips undone
     accuracy = reconstruction_accuracy(decoded, clean)  # (W,)
     right = "of cells right" if flipped is None else "of cells as in the clean grid"
-    fig = Figure(figsize=(PAGE_WIDTH, 4.3 * len(grids) + 0.4), layout="constrained")
+    fig = Figure(figsize=(PAGE_WIDTH, 4.3 * len(grids) + 0.65), layout="constrained")
     # a strip for the legend, then one row per workspace: a figure's "outside" legend would overlap the rows' titles
-    key, *rows = fig.subfigures(len(grids) + 1, 1, height_ratios=(0.4, *[4.3] * len(grids)), squeeze=False)[:, 0]
+    key, *rows = fig.subfigures(len(grids) + 1, 1, height_ratios=(0.65, *[4.3] * len(grids)), squeeze=False)[:, 0]
     said, parts = [], []
     drawn: dict[str, np.ndarray] = {}  # the kinds of wrong cell drawn in any row, for the legend
     for k, (row, grid, out, name, acc, target) in enumerate(zip(rows, grids, decoded, names, accuracy, clean)):
@@ -135,7 +141,8 @@ def reconstructions(
     handles, labels = legend_handles(list(drawn))  # "missed cell", not "block": mostly single cells (r29b)
     handles.append(Patch(facecolor=colormaps[GREYS_CMAP](1.0), alpha=FADED, edgecolor=COLORS["ink"], linewidth=0.5))
     labels.append("occupied in the input (faded)")  # reader r31b: a seen grid's panel, all grey, read as empty
-    key.legend(handles, labels, loc="center", ncols=2, fontsize=9, frameon=False)
+    colours = "the colours here: kinds of wrong cell, not models or groups of grids"  # reader r50b: on the page, too
+    key.legend(handles, labels, loc="center", ncols=2, fontsize=9, frameon=False, title=colours, title_fontsize=9)
     grids_said = f"{len(grids)} occupancy grid{'s' if len(grids) > 1 else ''}"
     text = f"{grids_said}, each beside its reconstruction and its wrong cells. " + "; ".join(said)
     return describe(fig, text + ".", parts)
@@ -157,14 +164,12 @@ def accuracy_vs_all_free(
     """Reconstruction accuracy (y) against the share of free cells (x), one point per workspace, per named group.
 
     ``groups[name] = (all_free (W,), accuracy (W,))``. Points above the diagonal beat a CAE that answers "all free";
-    on it, the CAE has learned nothing about that workspace. A small group (a few dozen
-    workspaces) has larger, filled markers and is drawn on top, the first over the next: it stays visible over
-    hundreds of points. Large groups are hollow markers of their own shapes, drawn in turns, a slice of each at a time
-    (:data:`LAYERS`), so that where their clouds overlap every group shows (review r14c: filled squares and triangles
-    buried each other). Each group's mean is a large hollow marker behind every point (review r27b: over them, it hid
-    the grid at its centre), each later one smaller and on top of the earlier: means that coincide show as nested
-    shapes. ``series[k]``: group ``k``'s :func:`~toolkit.plots.palette.series_style` (by default ``k``), so that a page
-    keeps one code across figures (reader r45b: blue circles meant two things in two figures).
+    on it, the CAE has learned nothing about that workspace. A small group (a few dozen workspaces) has larger, filled
+    markers ringed in white, drawn on top, the first over the next. Large groups are hollow markers of their own
+    shapes, drawn in turns, a slice of each at a time (:data:`LAYERS`): where clouds overlap every group shows (review
+    r14c). Each group's mean is a large hollow marker behind every point (review r27b), each later one smaller and on
+    top of the earlier: means that coincide nest. ``series[k]``: group ``k``'s
+    :func:`~toolkit.plots.palette.series_style` (by default ``k``): a page keeps one code across figures (r45b).
     """
     series = tuple(range(len(groups))) if series is None else tuple(series)  # (len(groups),)
     fig = Figure(figsize=(6, 5.2), layout="constrained")
@@ -192,6 +197,7 @@ def accuracy_vs_all_free(
                 marker=style["marker"],
                 **marks,
                 linewidths=0.9,
+                path_effects=halo(0.9, ("free",)) if few else None,  # r50b: a point on a mean's outline stands out
                 zorder=3 + len(groups) - k if few else 2 + (j * len(groups) + k) / (layers * len(groups)),
                 gid=name,
             )
@@ -212,8 +218,7 @@ def accuracy_vs_all_free(
 
 
 def _key(fig: Figure, ax, series: tuple[int, ...]) -> None:
-    """The scatter's legend below it (the title above; below, on no point), the means one entry: a hollow mark of each
-    group's shape and colour side by side (reader r45b: a circle alone read as one group's mean)."""
+    """The scatter's legend below it, the means one entry: a hollow mark of each group's shape and colour (r45b)."""
     handles, labels = ax.get_legend_handles_labels()
     hollow: dict[str, Any] = dict(linestyle="", markersize=11, fillstyle="none", mew=1.3)
     mean = tuple(Line2D([], [], **{k: series_style(s)[k] for k in ("marker", "color")}, **hollow) for s in series)
@@ -224,8 +229,8 @@ def _key(fig: Figure, ax, series: tuple[int, ...]) -> None:
 
 
 def _drop_lines(ax, groups: dict[str, tuple[np.ndarray, np.ndarray]], series: tuple[int, ...]) -> None:
-    """Thin lines from each group's mean to both axes, in its colour, under every point (reader r33b: a hollow mean
-    over a row of points at 1.00, or on a point, was hard to find; the lines lead the eye to it and read it off)."""
+    """Thin lines from each group's mean to both axes, in its colour, under every point (reader r33b: they lead the
+    eye to a mean and read it off)."""
     (x_low, x_high), (y_low, y_high) = ax.get_xlim(), ax.get_ylim()
     for k, (name, (all_free, accuracy)) in enumerate(groups.items()):
         x, y = float(np.mean(all_free)), float(np.mean(accuracy))
@@ -257,8 +262,7 @@ LINES_KEY: dict[str, Any] = dict(loc="outside upper center", ncols=2, fontsize=9
 
 
 def _plain_log_ticks(ax, values: np.ndarray) -> None:
-    """``ax``'s log y axis ticked at 1, 2, 3 and 5 times a power of ten within the range of ``values``, written as
-    plain numbers (no minor ticks)."""
+    """``ax``'s log y axis ticked at 1, 2, 3 and 5 times a power of ten in the range of ``values``, plain numbers."""
     moved = values[values > 0]
     if moved.size:
         steps = [m * 10.0**e for e in range(-4, 2) for m in (1, 2, 3, 5)]
@@ -273,28 +277,28 @@ def contraction(
     flips: np.ndarray,
     latent_shift: dict[str, np.ndarray],
     decoded_change: dict[str, np.ndarray],
+    series: tuple[int, ...] | None = None,
 ) -> Figure:
-    """Two (or more) CAEs side by side: how strongly the encoder reacts to its input.
+    """Two (or more) CAEs side by side: how strongly the encoder reacts to its input; model ``k``'s lines in
+    :func:`_line` ``(k, series[k])``'s style, no marker (reader r50b: markers meant groups of grids on the page).
 
     For each named model: ``jacobian_norms (W,)``, the Frobenius norm of dz/dx at each workspace; ``latent_shift (F,
     T)``, ``||z' - z|| / ||z||`` after flipping ``flips[f]`` random cells, in ``T`` trials; ``decoded_change (F, T)``,
-    how many decoded cells change sign then, anywhere in the grid. Lines are the means over trials. The
-    dotted line of the last panel marks as many changed cells as flipped ones (review r29b: not "a copy machine",
-    the counts say how many cells changed, not which): a curve below it left at least the difference of the flips
-    unchanged, one above it changed at least the difference of cells that were not flipped.
+    how many decoded cells change sign then, anywhere in the grid. Lines are the means over trials. The dotted line
+    of the last panel marks as many changed cells as flipped ones.
     """
     flips = np.asarray(flips)
     fig = Figure(figsize=(PAGE_WIDTH, 6.6), layout="constrained")  # the page's width: text at its size, 9 pt or more
-    # reader r33b: the norms a short row of their own (tall and narrow, a third of it legend, the figure ran over two
-    # screens), the two responses side by side under them, their legend between the rows
+    # reader r33b: the norms a short row of their own, the two responses side by side under them, their legend between
     boxes, responses = fig.subfigures(2, 1, height_ratios=(2.3, 4.3), squeeze=False)[:, 0]
     ax_j = boxes.subplots()
     ax_z, ax_x = responses.subplots(1, 2)
     names = list(jacobian_norms)
     _draw_norms(ax_j, jacobian_norms)
+    series = tuple(range(len(names))) if series is None else tuple(series)
     for k, name in enumerate(names):  # two models that respond alike: the first line wide under the next, thinner
-        ax_z.plot(flips, np.mean(latent_shift[name], axis=1), label=name, **_stacked(k, len(names)))
-        ax_x.plot(flips, np.mean(decoded_change[name], axis=1), label=name, **_stacked(k, len(names)))
+        ax_z.plot(flips, np.mean(latent_shift[name], axis=1), label=name, **_stacked(k, len(names), series[k]))
+        ax_x.plot(flips, np.mean(decoded_change[name], axis=1), label=name, **_stacked(k, len(names), series[k]))
     ax_x.plot(flips, flips, color=COLORS["reference"], linestyle=":", label="as many as flipped", zorder=1)
     ax_z.set_yscale("log")  # reader r44b: log-log, as the right panel; a power of the flips reads as a straight line
     ax_z.set_ylabel("||z' - z|| / ||z|| (log scale)")  # review r30b: the long label was cramped; the title says what
@@ -342,17 +346,15 @@ COUNT_TICKS = (0, 1, 2, 5, 10, 20, 50, 100, 200, 500, 1000)
 
 def _count_ticks(low: float, high: float, end: float) -> list[float]:
     """The ticks of a count axis from ``low`` to ``high``: from the highest of :data:`COUNT_TICKS` at or below ``low``
-    (review r26b: a mean of 0.61 sat below the lowest tick, 1), and ``end`` (the copy line's last count, 30) among them
-    in place of a round tick too close to it."""
+    (review r26b), and ``end`` (the copy line's last count, 30) in place of a round tick too close to it."""
     floor = max(t for t in COUNT_TICKS if t <= max(low, 0))
     ticks = [t for t in COUNT_TICKS if floor <= t <= high and not end / 2 < t < 2 * end]
     return sorted(set(ticks) | {end})
 
 
 def _counts_axis(ax, which: str, ticks) -> None:
-    """An axis of counts (``which``: "x" or "y") on a log scale from 1 up and a linear stretch from 0 to 1 below it
-    (matplotlib's "symlog"): a count of 1 reads as well as one of 30, and a count of 0 still shows; ``ticks`` in
-    plain numbers, no others."""
+    """An axis of counts (``which``: "x" or "y"), "symlog": log from 1 up, linear from 0 to 1 (a count of 0 shows);
+    ``ticks`` in plain numbers, no others."""
     (ax.set_xscale if which == "x" else ax.set_yscale)("symlog", linthresh=1, linscale=0.4)
     axis = ax.xaxis if which == "x" else ax.yaxis
     axis.set_ticks(list(ticks), [f"{t:g}" for t in ticks])
@@ -365,9 +367,7 @@ NORM_MARKS: dict[str, dict[str, Any]] = {  # a box plot's marks, each named in t
     "mean": dict(  # reader r48b: a star, no model's marker (a triangle was λ = 0.961's in the panels below)
         marker="*", color=COLORS["ink"], markerfacecolor=COLORS["free"], markeredgecolor=COLORS["ink"], markersize=11
     ),
-    "outlier (beyond\n1.5 × IQR)": dict(
-        marker="o", markerfacecolor="none", markeredgecolor=COLORS["ink"], markersize=3
-    ),
+    "outlier (beyond\n1.5 × IQR)": dict(marker="+", markeredgecolor=COLORS["ink"], markersize=5),  # r50b: no circle
 }
 
 
