@@ -108,7 +108,7 @@ def key(tables: Tables) -> str:
         "robot's base cell and where its link boxes are, not the CAE's code (a `strong` CAE is trained only for "
         "Table 1). It is the fair test of the claim because it is accurate: right "
         f"{span(balanced)} % of the time on unseen workspaces' balanced samples (the last row of *Tables 1 and 2 on "
-        "unseen workspaces*, under the findings). The paper's "
+        "unseen workspaces*, under the MLP's finding in “What reproduces and what does not”). The paper's "
         "recipe, rebuilt as our *`paper` preset*, screens samples with a CAE, which compresses a workspace's "
         "occupancy grid into a short code, and an MLP, which reads that code and a configuration and answers “valid” "
         "(collision-free) or “invalid”. A preset names a network and its planner's settings",
