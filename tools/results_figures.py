@@ -38,12 +38,14 @@ TICKS = {"total": (), "sampling": (3.0,)}  # labelled beside each figure's 1-2-5
 MARGINS = {"total": 1.15, "sampling": 1.25}  # each figure's range: its points', widened by this factor
 ROW_HEIGHTS = {"total": 3.3, "sampling": 3.2}  # inches a row of panels: each band is read to 0.9 and 1.1 (r27f)
 KEY = (  # under Figure 2 (reader r31f, item 3): its marks are not Figure 1's verdicts; r39f, item 7: one colour each;
-    # reader r44f, item 9: each series named by its shape; reader r47f, item 5: its crosses yellow, not orange
+    # reader r44f, item 9: each series named by its shape; reader r47f, item 5: its crosses yellow, not orange;
+    # reader r50f, item 5: a fill colour (black outlines every mark)
     " Here colour and shape name a series, not a verdict as in Figure 1: grey diamonds, the paper; yellow bold "
     "crosses (×) edged in black, our `paper`-preset network; reddish-purple stars, the `strong` network with our "
     "compiled checker; "
     "bluish-green pentagons, the `strong` network with python-fcl. No series takes Figure 1's blue, black or "
-    "vermillion (nor orange, its neighbour), nor its circle, square or triangle."
+    "vermillion as its fill colour (nor orange, its neighbour), nor its circle, square or triangle; black here only "
+    "outlines the marks."
 )
 CLAIM_FIGURE = RESULTS.parent / "results_claim.png"  # Figure 1: the statistic the verdict on the paper's claim reads
 CLAIM_BEGIN = "<!-- figure of the claim: drawn by `python -m tools.results_summary` from the tables below -->"

@@ -61,7 +61,7 @@ def lazy_prm(tables: Tables) -> str:
     return (  # reader r39f, items 2 and 8; reader r40f, item 5: the means that part from the medians in one parenthesis
         "**Against the lazy PRM, the lazy-PRM network "
         f"{VERDICTS[answer]}.** By the ratio of the two modes' median times (the `strong` section's "
-        f"medians table), it took {inside(told(groups['strong']), means_apart(tables))}.{costs_far(groups, floor)}"
+        f"medians table), it took {told(groups['strong'])}.{costs_far(groups, floor)}{means_apart(tables)}"
         "\n\n    Our `paper`-preset network is no test of the method against the lazy PRM: its planner with prediction "
         "is Algorithm 1, so planner and "
         f"prediction both change. It saved time{floor_said} in {len(beyond) or 'none'} of "
@@ -70,27 +70,40 @@ def lazy_prm(tables: Tables) -> str:
 
 
 def means_apart(tables: Tables) -> str:
-    """Reader r40f, item 5: the lazy-PRM network's cells that save time by means (its Table 3) but not by the ratio of
-    medians, in one parenthesis; empty where there are none."""
+    """Reader r40f, item 5; reader r50f, item 3: the lazy-PRM network's cells that save time by means (its Table 3) but
+    not by the ratio of medians, each said plainly beside the noise band of a ratio of means, and why the medians are
+    the statistic read; empty where there are none."""
     medians = recorded.median_ratios("strong", tables)
     cells = [
-        (NAMES.get(s, s), sampler, saved, medians[s]["total"][sampler])
+        (NAMES.get(s, s), s, sampler, 1 - saved, medians[s]["total"][sampler])
         for s in recorded.table("strong", "time improvement", tables)
         for sampler, saved in recorded.improvements("strong", s, recorded=tables).items()
         if change(1 - saved) == "less time" and change(medians[s]["total"][sampler]) != "less time"
     ]
-    return "; ".join(
-        f"by means, {name} {sampler} saved {percent(saved)} % of the mean query, pulled by a few slow queries: ratio "
-        f"{1 - saved:.2f} in the `strong` section's Table 3"
-        for name, sampler, saved, _ in cells
-    )
-
-
-def inside(said: str, more: str) -> str:
-    """``said`` with ``more`` added inside its closing parenthesis (one parenthesis, not two side by side)."""
-    if not more:
-        return said
-    return f"{said[:-1]}; {more})" if said.endswith(")") else f"{said} ({more})"
+    if not cells:
+        return ""
+    band = noise(tables).means
+    times = next(t for heading, t in tables["strong"].items() if "Times behind Table 3" in heading)
+    column = times["columns"].index("total without")
+    spread = {
+        (row[0], row[1]): [float(v) for v in row[column].split("/")[0].replace("*", "").split("±")]
+        for row in times["rows"]
+    }
+    said = []
+    for name, scenario, sampler, ratio, median in cells:
+        clear = "beyond" if not costs.inside(ratio, band) else "inside"
+        mean, std = spread[(scenario, sampler)]
+        said.append(
+            f" By means {name} {sampler} reads otherwise: its ratio of means is {ratio:.2f} (the `strong` section's "
+            f"Table 3), {clear} the noise band of a ratio of means, {band[0]:.2f}–{band[1]:.2f}"
+            + (", a clear saving by that statistic." if clear == "beyond" else ".")
+            + " The medians decide it, by the page's one rule (“Which statistic decides”, under Figure 1): each "
+            "query's own ratio, or, where a run kept none, as here, the ratio of medians, because the verdict asks "
+            f"what a typical query costs. By medians {name} {sampler} took {change(median)} ({median:.2f}); the "
+            "saving by means lies in a few long queries (without prediction its mean query took "
+            f"{mean:.3g} s, with a standard deviation of {std:.2g} s)."
+        )
+    return "".join(said)
 
 
 def algorithm_1(tables: Tables) -> str:
@@ -228,7 +241,31 @@ def why_no_saving(tables: Tables) -> str:
         "cost "
         f"{span(cost_3d, lambda c: f'{c:.2g}')} times an exact check per configuration in 3D{cost_2d}, so sampling "
         f"got 10 % or more slower in {why.slower} of {why.cells} cells; with python-fcl, {fcl_slower(tables)} times "
-        f"slower than our compiled checker in 3D, {worked_example(tables)}{share_allows(tables, cleared)}"
+        f"slower than our compiled checker in 3D, {worked_example(tables)}{cleared_said(tables, cleared)}"
+        f"{share_allows(tables, cleared)}"
+    )
+
+
+def cleared_said(tables: Tables, cleared: list[tuple[str, float]]) -> str:
+    """Reader r50f, item 1 (moved from the answer): python-fcl's cells beyond the noise band of their own ratio
+    (``cleared``), that band said to be borrowed where the run was not timed twice, those mostly from sampling told so
+    (:func:`from_sampling`; :func:`share_allows` tells the others); empty where there are none."""
+    if not cleared:
+        return ""
+    faster = sum(
+        change(m) == "less time"
+        for _, by in own_intervals(tables, checker_scope.SLOW).items()
+        for m, _, _ in by.values()
+    )
+    borrowed = not any("timed twice" in heading for heading in tables[checker_scope.SLOW])
+    mostly = from_sampling(tables, cleared)  # the others, mostly not from sampling, are told next (share_allows)
+    ordered = sorted(cleared, key=lambda c: c[0] not in mostly)  # sampling's saving first
+    how = dict.fromkeys(mostly, ", mostly from sampling")
+    named = ", and ".join(f"{cell} {m:.2f}{how.get(cell, '')}" for cell, m in ordered)
+    band = ", a band that run borrows from the compiled one (it was not timed twice)" if borrowed else ""
+    return (
+        f" Of python-fcl's {faster} cells faster, {len(cleared)} lie beyond the noise band of their own ratio{band}: "
+        f"{named}."
     )
 
 
@@ -287,7 +324,23 @@ def paper_sampling(tables: Tables) -> str:
         f"answers “invalid” to every {' and '.join(invalid)} sample, so its first round of sampling keeps no sample. "
         "A query whose straight edge from start to goal is blocked then samples again, in rounds that Algorithm 1's "
         f"auxiliary sampler checks exactly, as without prediction. That is our reading of those scenarios' "
-        f"{len(by_rounds)} losses.{left}"
+        f"{len(by_rounds)} losses.{unexplained(ratios, invalid)}{left}"
+    )
+
+
+def unexplained(ratios: list[tuple[str, str, float]], invalid: list[str]) -> str:
+    """Reader r50f, contradiction 4: the cells of the scenarios where the `paper` MLP answers "invalid" to every
+    sample that did not lose sampling time, which the reading by rounds leaves out (``ratios``: ``(scenario, sampler,
+    sampling ratio of means)``); empty where there are none."""
+    kept = [(n, sampler, r) for n, sampler, r in ratios if n in invalid and change(r) != "more time"]
+    if not kept:
+        return ""
+    cells = "; ".join(
+        f"{n} {sampler} {r:.2f}, {'a saving' if change(r) == 'less time' else 'a tie'}" for n, sampler, r in kept
+    )
+    return (
+        f" It leaves out {'the cell' if len(kept) == 1 else f'the {len(kept)} cells'} of those scenarios that lost no "
+        f"sampling time, where the same network answers “invalid” too: {cells}."
     )
 
 

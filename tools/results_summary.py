@@ -40,8 +40,6 @@ from tools.results_findings import (
     APART_END,
     DETAIL_BEGIN,
     DETAIL_END,
-    elsewhere,
-    from_sampling,
     not_from_sampling,
     summary,
 )
@@ -110,7 +108,7 @@ def key(tables: Tables) -> str:
         "robot's base cell and where its link boxes are, not the CAE's code (a `strong` CAE is trained only for "
         "Table 1). It is the fair test of the claim because it is accurate: right "
         f"{span(balanced)} % of the time on unseen workspaces' balanced samples (the last row of *Tables 1 and 2 on "
-        "unseen workspaces*, under the findings). The paper's "
+        "unseen workspaces*, under the MLP's finding in “What reproduces and what does not”). The paper's "
         "recipe, rebuilt as our *`paper` preset*, screens samples with a CAE, which compresses a workspace's "
         "occupancy grid into a short code, and an MLP, which reads that code and a configuration and answers “valid” "
         "(collision-free) or “invalid”. A preset names a network and its planner's settings",
@@ -143,26 +141,24 @@ def short(tables: Tables) -> str:
     slow = own_medians(tables, SLOW)
     read = counted([change(m) for _, m in slow])
     beyond = counted([change(m) for _, m in slow if not costs.inside(m, band)])
-    cleared = [(cell, m) for cell, m in slow if change(m) == "less time" and not costs.inside(m, band)]
-    other = elsewhere(tables, cleared)  # reader r48f, item 1: where the saving is mostly not sampling's
-    mostly = from_sampling(tables, cleared)  # reader r49f, contradiction 1: where it is mostly sampling's
-    how = {**dict.fromkeys(mostly, ", mostly from sampling"), **dict.fromkeys(other, ", mostly not from sampling")}
-    ordered = sorted(cleared, key=lambda c: c[0] not in mostly)  # the saving sampling explains first
-    saved_far = [f"{cell} {m:.2f}{how.get(cell, '')}" for cell, m in ordered]
     verdict = ANSWERS[findings.claim_verdict(ratios)]
-    qualified = verdict == "No" and saved_far  # reader r45f, item 1: python-fcl's clear savings qualify the "No"
-    borrowed = "" if timed_twice(tables, SLOW) else " this run borrows from the compiled one"  # reader r47f, item 3
+    qualified = verdict == "No" and beyond[0]  # reader r45f, item 1: python-fcl's clear savings qualify the "No"
+    # reader r47f, item 3: a borrowed band said where python-fcl's count beyond it is first claimed; reader r50f, item
+    # 1: which cells, and how much of each saving is sampling's, are the first finding's (why_no_saving)
+    borrowed = "" if timed_twice(tables, SLOW) else ", which this run borrows from the compiled one"
     fast_said = "it costs time" if fast[2] > fast[0] else "it saves time" if fast[0] else "it changes little"
     slow_said = "it saves a little" if read[0] > read[2] else "it costs time" if read[2] else "it changes little"
     # reader r48f, item 3: the qualification named in the answer's first sentence
     said = f"{verdict} with a fast exact checker; with a slow one, a little" if qualified else verdict
+    # reader r50f, item 1: the answer, one sentence a checker with its own-ratio counts, one on the paper's networks
     answer = (
         "**In short: does an accurate network inside the paper's Algorithm 1 save planning time? "
-        f"{said}.** By each query's own ratio (defined below), with our fast compiled checker {fast_said}: "
-        f"{tally(fast[2], fast_far[2], 'slower', sum(fast))}, {tally(fast[0], fast_far[0], 'faster')}; with "
-        f"python-fcl, a slow checker, {slow_said}: "
-        f"{tally(read[0], beyond[0], 'faster', len(slow), saved_far, borrowed)}, "
-        f"{tally(read[2], beyond[2], 'slower')}. {papers_table_3(tables, fast_far)} {tables_said(tables)}."
+        f"{said}.** With our fast compiled checker {fast_said}: by each query's own ratio (defined below), "
+        f"{tally(fast[2], fast_far[2], 'slower', sum(fast))}, {fast[1]} tied, "
+        f"{tally(fast[0], fast_far[0], 'faster')}. "
+        f"With python-fcl, a slow checker, {slow_said}: "
+        f"{tally(read[0], beyond[0], 'faster', len(slow), band=borrowed)}, {read[1]} tied, "
+        f"{tally(read[2], beyond[2], 'slower')}. {tables_said(tables)}."
     )
     # reader r47f, item 4: one band named under the table, the means columns' pointed to, not numbered; reader r48f,
     # item 2: by means the result is inconclusive, and the verdict rests on each query's own ratio
@@ -195,46 +191,23 @@ def terms(tables: Tables) -> str:
     )
 
 
-def papers_table_3(tables: Tables, fast_far: tuple[int, int, int]) -> str:
-    """The answer's second sentence (common rule 1; reader r49f, contradiction 3): the paper's Table 3 quoted exactly,
-    what each query's own ratio can say of its total-time savings (``fast_far``: the compiled run's cells beyond the
-    noise band, saved / tied / cost; with python-fcl, :func:`papers_apart`), and whether its sampling columns
-    reproduce with python-fcl (cells whose sampling took 10 % or more less time, ours beside the paper's)."""
-    facts = checker_scope.slow_checker(tables)
-    papers = counted([change(1 - s) for s in facts.papers_totals])[0]
-    cells = len(facts.papers_totals)
-    sampled = counted([change(1 - s) for s in facts.sampling])[0]
-    papers_sampled = counted([change(1 - s) for s in facts.papers_sampling])[0]
-    apart, near = papers_apart(tables)
-    fast = "those savings are not observed" if not fast_far[0] else f"{fast_far[0]} cells clearly save"
-    names = [cell for cell, _, _ in apart]
-    missed = " and ".join([", ".join(names[:-1]), names[-1]] if len(names) > 1 else names)
-    in_cells = f"all {cells} cells" if sampled == cells else f"{sampled} of {cells} cells"
-    as_paper = "as in the paper" if sampled == papers_sampled else f"the paper: {papers_sampled}"
-    reproduce = "reproduce" if sampled >= papers_sampled else "do not reproduce"
-    whole = f"its total-time savings in {missed} are not observed, and its other {near}" if apart else f"its {near}"
-    return (
-        f"The paper's Table 3 saves 10 % or more of a query's time in {papers} of its {cells} cells: with our "
-        f"compiled checker {fast} and {fast_far[2]} cells clearly cost time; with python-fcl its sampling savings "
-        f"{reproduce} (10 % or more in {in_cells}, {as_paper}), {whole} lie too near ours to tell apart."
-    )
-
-
-def papers_apart(tables: Tables) -> tuple[list[tuple[str, float, float]], int]:
-    """Reader r49f, contradiction 3: of the paper's Table 3 cells that save 10 % or more of a query's time, those
-    where our own ratio with python-fcl lies the noise band's half-width (0.18) or more above the paper's ratio, so
-    the paper's saving is not observed (``[("3DC-7 BT", 0.46, 1.02), ...]``), and how many others lie nearer: too
-    close to tell apart."""
+def papers_apart(
+    tables: Tables, key: str = SLOW
+) -> tuple[list[tuple[str, float, float]], list[tuple[str, float, float]]]:
+    """Reader r49f, contradiction 3; reader r50f, item 2 (one test for both checkers): of the paper's Table 3 cells
+    that save 10 % or more of a query's time, those where our own ratio in the run ``key`` lies the noise band's
+    half-width (0.18) or more above the paper's ratio, so the paper's saving is not observed, and those nearer: too
+    close to tell apart. Each ``(cell, the paper's ratio, ours)``: ``[("3DC-7 BT", 0.46, 1.02), ...]``."""
     low, high = costs.floors(tables)["own"]
     reach = round((high - low) / 2, 2)
-    ours = dict(own_medians(tables, SLOW))
+    ours = dict(own_medians(tables, key))
     names = list(by_means(tables, SLOW))
     totals = checker_scope.slow_checker(tables).papers_totals
     if len(names) != len(totals):
         raise ValueError(f"Table 3 with python-fcl: {len(names)} cells, {len(totals)} of the paper's")
-    saved = [(cell, round(1 - s, 2)) for cell, s in zip(names, totals) if change(1 - s) == "less time"]
-    apart = [(cell, p, ours[cell]) for cell, p in saved if round(ours[cell] - p, 2) >= reach]
-    return apart, len(saved) - len(apart)
+    saved = [(cell, round(1 - s, 2), ours[cell]) for cell, s in zip(names, totals) if change(1 - s) == "less time"]
+    apart = [(cell, p, o) for cell, p, o in saved if round(o - p, 2) >= reach]
+    return apart, [cell for cell in saved if cell not in apart]
 
 
 def table_3_said(tables: Tables) -> str:
@@ -272,18 +245,29 @@ def table_3_said(tables: Tables) -> str:
 
 
 def apart_said(tables: Tables) -> str:
-    """Reader r49f, contradiction 3: the paper's total-time savings set beside our own ratios with python-fcl, the
-    numbers behind the answer's "not observed" and "too near ours to tell apart" (:func:`papers_apart`)."""
-    apart, near = papers_apart(tables)
+    """Reader r49f, contradiction 3; reader r50f, item 2: the paper's total-time savings set beside our own ratios,
+    one test for both checkers (:func:`papers_apart`), each counted, and in how many of those cells ours saves too."""
     low, high = costs.floors(tables)["own"]
-    listed = ", ".join(f"{cell} {ours:.2f} against {paper:.2f}" for cell, paper, ours in apart)
+    read = {name: papers_apart(tables, key) for name, key in OWN_RUNS.items()}
+    cells = len(read["compiled"][0]) + len(read["compiled"][1])
+
+    def listed(found: list[tuple[str, float, float]]) -> str:
+        return ", ".join(f"{cell} {ours:.2f} against {paper:.2f}" for cell, paper, ours in found)
+
+    also = {
+        name: [f"{cell} {ours:.2f}" for cell, _, ours in apart + near if change(ours) == "less time"]
+        for name, (apart, near) in read.items()
+    }
+    near, apart = (len(read["compiled"][1]), len(read["python-fcl"][1])), [len(a) for a, _ in read.values()]
+    named = f" ({', '.join(also['python-fcl'])})" if also["python-fcl"] else ""
     return (
-        f" With python-fcl, our own ratio lies within {(high - low) / 2:.2f} (half the noise band's width) of the "
-        f"paper's ratio of means (it gives no other) in {near} of the {near + len(apart)} cells where the paper saves "
-        f"10 % or more: too near to tell apart. It lies further above it in {len(apart)}, where the paper's saving is "
-        f"not observed ({listed})."
-        if apart
-        else ""
+        f" One test for both checkers: in the {cells} cells where the paper saves 10 % or more, our own ratio lies "
+        f"within {(high - low) / 2:.2f} (half the noise band's width) of the paper's ratio of means (it gives no "
+        f"other), too near to tell apart, in {near[0]} with the compiled checker ({listed(read['compiled'][1])}) and "
+        f"{near[1]} with python-fcl; it lies further above it, where the paper's saving is not observed, in "
+        f"{apart[0]} and {apart[1]} (with python-fcl: {listed(read['python-fcl'][0])}). In those {cells} cells ours "
+        f"saves 10 % or more itself in {len(also['compiled']) or 'none'} with the compiled checker and "
+        f"{len(also['python-fcl']) or 'none'} with python-fcl{named}; the rest are ties or costs."
     )
 
 
