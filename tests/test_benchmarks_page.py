@@ -158,8 +158,9 @@ def test_the_opening_says_what_a_check_costs_as_the_checker_table_measured_it():
     ) in LEAD
     assert "does not explain" not in LEAD and LEAD.count("(") <= 4
     assert (
-        f"The 2.3 above is the figure's, at the paper's chain of 4 links; the checker table's runs give {low:g}–{high:g}."
-    ).replace("2.3", f"{chain[4]:.1f}") in SUMMARY
+        f"The {chain[4]:.1f} above is the figure's, at the paper's chain of 4 links; the checker table's runs give "
+        f"{low:g}–{high:g}."
+    ) in SUMMARY
     assert "larger `strong` network" not in LEAD and "per check, a" not in LEAD and "µs against" not in LEAD
     assert (
         f"per 3D configuration, a paper-size network's answer costs {µs(network, 2)} µs against the compiled check's "
@@ -966,7 +967,6 @@ def test_the_ceiling_is_sampling_s_share_of_an_algorithm_1_query_from_the_record
     """Review r27f, item 1: the ceiling bullet rested on a lazy-PRM profile of an older checker on the other machine.
     It now quotes sampling's share of a query's mean time without the network in the Algorithm 1 runs, read from their
     tables "Times behind Table 3": the compiled checker's run and python-fcl on both sides."""
-    from toolkit.teaching import recorded
 
     def shares(key: str) -> str:
         found = sampling_shares(key)
@@ -1694,7 +1694,8 @@ def test_reader_r35g_the_race_s_batched_state_cost_is_no_check_cost_on_either_pa
         # reader r46g, benchmarks 3: the comparison said once, in the fold, and no pointer to a caption without it
         # reader r50g, benchmarks 3: not "a commit later" (the fold names the commits, the fixed-cost change between)
         "The sweep was timed an hour after the checker table, at a later commit, after that afternoon's change to a "
-        "call's fixed cost (below), by the CPU clock beside other work." in flat
+        "call's fixed cost (below), by the CPU clock beside other work."
+        in flat
         and "a commit later" not in flat
         and "as the caption says" not in flat
         and "the caption's numbers" not in flat
