@@ -1930,3 +1930,29 @@ def test_the_planning_section_sets_the_paper_s_table_3_beside_our_python_fcl_run
         f"cells; our python-fcl run took {100 * min(ours):.0f}–{100 * max(ours):.0f} % less time in sampling, yet "
         f"its queries tied in {ties.count('about the same time')} of {len(ties)} cells."
     ) in " ".join(PREDICTION.split())
+
+
+def test_reader_r50g_each_costs_section_opens_with_its_answer():
+    """Reader r50g, benchmarks lift 4: "How fast is the exact checker?" never answered itself in a sentence, and "Where
+    is the network the cheaper check?" only in the caption's last sentence; each now opens with its answer, read here
+    from the checker table and the sweep's record."""
+    exact = [1e6 / numbers(c)[0] for n, c in column("default exact: configurations a second").items() if "3D" in n]
+    fcl = [x for n, c in column("time, python-fcl / default exact").items() if "3D" in n for x in numbers(c)[1:]]
+    network = [x for n, c in column(NETWORK_RATIO).items() if n.startswith("3D") for x in numbers(c)]
+    section = " ".join(PAGE.partition("## How fast is the exact checker?")[2].split())
+    assert section.startswith(
+        f"**In 3D our compiled check costs {min(exact):.2f}–{max(exact):.2f} µs a configuration; python-fcl takes "
+        f"{min(fcl):g}–{max(fcl):g} times as long, and a paper-size network's answer {min(network):g}–"
+        f"{max(network):g} times as long (the table below).**"
+    )
+    sweep = CROSSOVER["variables"]
+    dearer = {k: all(n / e > 1.25 for n, e in zip(v["learned_us"], v["exact_us"])) for k, v in sweep.items()}
+    assert dearer == {"obstacles": True, "triangles": False, "links": True, "batch": True}
+    assert all(n / e < 0.75 for n, e in zip(sweep["triangles"]["learned_us"], sweep["triangles"]["exact_us"]))
+    blocks, links, calls = (sweep[k]["values"] for k in ("obstacles", "links", "batch"))
+    section = " ".join(PAGE.partition("## Where is the network the cheaper check?")[2].split())
+    assert section.startswith(
+        f"**Only around a mesh obstacle: among {min(blocks)}–{max(blocks)} blocks, on chains of {min(links)}–"
+        f"{max(links)} links and at every call size from {min(calls)} to {max(calls):,} the network is the dearer "
+        "check (the table under the figure).**"
+    )
