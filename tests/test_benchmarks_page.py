@@ -159,7 +159,7 @@ def test_the_opening_says_what_a_check_costs_as_the_checker_table_measured_it():
     assert "does not explain" not in LEAD and LEAD.count("(") <= 4
     assert (
         f"The {chain[4]:.1f} above is the figure's, at the paper's chain of 4 links; the checker table's runs give "
-        f"{low:g}–{high:g}."
+        f"no less than {low:g} (below)."
     ) in SUMMARY
     assert "larger `strong` network" not in LEAD and "per check, a" not in LEAD and "µs against" not in LEAD
     assert (
