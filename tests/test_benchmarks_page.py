@@ -1998,3 +1998,15 @@ def test_reader_r50g_the_planning_counts_point_at_the_figure_that_draws_their_ce
         "Figure 1 on [the Results page](results.md) draws every cell of the two Algorithm 1 runs: each cell's median "
         "of its queries' own ratios, with their middle half." in " ".join(PAGE.split())
     )
+
+
+def test_reader_r50g_the_caption_says_what_the_mesh_panel_holds():
+    """Reader r50g, crossover nit: the figure says 3DC-9, but its mesh panel is a sphere (crossover.sphere, in the
+    scenario's region, with its robot), not 3DC-9's blocks."""
+    from toolkit.experiments import crossover
+
+    assert CROSSOVER["scenario"] == "3dc9" and "icosphere" in (crossover.sphere.__doc__ or "")
+    assert (
+        "python-fcl (the mesh panel: 3DC-9's robot in its region, which holds one sphere in its middle and no blocks)"
+        in " ".join(PAGE.split())
+    )
