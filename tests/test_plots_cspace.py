@@ -418,6 +418,7 @@ def test_cspace_slice_equals_the_separating_axis_reference(clutter):
     star = next(line for line in ax.lines if line.get_gid() == "q")
     np.testing.assert_allclose(np.ravel(star.get_data()), q[[5, 6]])
     assert star.get_color() == robot_drawing.VALID_COLOR
+    assert star.get_markersize() <= 11  # reader r50a: a 2-unit star touched a grown shelf 0.4 from q
     assert len(_patches(fig.axes[1], "link")) == robot.n_links
     assert ax.get_title().split("\n")[1] == "the other DoF at the star's values"  # review r31a: not four lines
     (star_at,) = [part for part in parts_of(fig) if part.name == "the star's configuration"]  # the values: its table
@@ -643,7 +644,7 @@ def test_a_slice_outlines_the_blocks_a_flat_view_draws_across_links_they_cannot_
     assert not above.get_fill() and above.get_linestyle() == ":"
     assert _drawn_inside(above, (4, 4), (6, 6))
     assert len(_patches(ax, "block")) == 2  # the block beside the links, and the far one
-    assert "A block drawn across the links that no link touches (above or below them) is a dotted outline." in alt_text(
+    assert "no link touches (above or below them) is a dotted outline, drawn a little inside its edges." in alt_text(
         fig
     )
     side = _one_link_slice(boxes, view="xz")

@@ -330,9 +330,9 @@ def cspace_slice(
     ax.set_aspect("equal", adjustable="box") if lengths else ax.set_box_aspect(1)  # to scale; angles square
     ax.set_facecolor(COLORS["occupied"])
     star: dict[str, Any] = dict(  # an ink edge in a white halo: seen on the free white and the dark alike (r39a)
-        marker="*", markersize=15, markeredgecolor=COLORS["ink"], color=link_colors(1, q_valid)[0], markeredgewidth=1
-    )
-    star["path_effects"] = [Stroke(linewidth=4, foreground=COLORS["free"]), Normal()]
+        marker="*", markersize=11, markeredgecolor=COLORS["ink"], color=link_colors(1, q_valid)[0], markeredgewidth=1
+    )  # reader r50a: at 15 points the youBot's star, 2 units across, touched a grown shelf 0.4 away
+    star["path_effects"] = [Stroke(linewidth=3, foreground=COLORS["free"]), Normal()]
     ax.plot(q[joints[0]], q[joints[1]], linestyle="none", gid="q", **star)
     ax.set_title(  # the fixed values are the description's table: four-line titles were the page's hardest (r31a)
         f"{robot.name}: {1 - valid.mean():.0%} in collision (dark)\nthe other DoF at the star's values", fontsize=9
@@ -345,9 +345,10 @@ def cspace_slice(
     text += ("valid." if q_valid[0] else "in collision.") + (
         " Beside it, the robot there, its base a dot." * bool(view)
     )
-    text += " A block drawn across the links that no link touches (above or below them) is a dotted outline." * bool(
+    text += " A block drawn across the links that no link touches (above or below them) is a dotted outline" * bool(
         outlined
     )
+    text += ", drawn a little inside its edges." * bool(outlined)
     text += " A block a link touches is outlined dashed." * bool(dashed)
     star_at = Part(
         "the star's configuration",
