@@ -25,7 +25,7 @@ from toolkit.geometry.collision import (
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots import boxes, contact, cspace, near_blocks, palette, robot_drawing, slices, verdict
 from toolkit.plots.alt import alt_text, parts_of
-from toolkit.plots.palette import CATEGORICAL
+from toolkit.plots.robot_drawing import KEY_COLORS
 
 
 @pytest.fixture
@@ -184,7 +184,8 @@ def test_occupancy_figure_rings_each_block_of_a_kind_on_the_layers_it_reaches():
     rings = [[line for line in ax.get_lines() if line.get_gid() == "ring"] for ax in fig.axes]
     assert [len(r[0].get_xydata()) for r in rings] == [int(np.sum(chairs[:, 1, 2] >= z + 0.5)) for z in range(4)]
     np.testing.assert_allclose(rings[0][0].get_xydata(), chairs[:, :, :2].mean(axis=1))
-    assert rings[0][0].get_color() == palette.COLORS["invalid"] and len(chairs) > 0
+    assert rings[0][0].get_color() == palette.COLORS["ink"] and len(chairs) > 0  # reader r50a: not the verdict's
+    assert rings[0][0].get_path_effects()  # ringed white: seen on a dark cell
     assert fig.get_suptitle().endswith("; each chair ringed")
     assert f"each chair ringed, per image: {len(chairs)}, 0, 0, 0" in alt_text(fig)
     fig.draw_without_rendering()  # two layers a row fill the page's width (were 197 px of 610: 4.8 px a cell)
@@ -192,6 +193,20 @@ def test_occupancy_figure_rings_each_block_of_a_kind_on_the_layers_it_reaches():
 
 
 # -- robots ----------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize("deficiency", [None, "deuteranopia", "protanopia", "tritanopia"])
+def test_the_colours_that_tell_links_and_poses_apart_are_never_the_verdicts_and_stay_apart(deficiency):
+    """Reader r50a: chain7's link 1 orange over its blue link 0, where the text says overlap is no collision; orange
+    means "in collision" on every figure of chapter 01. Every two key colours stay apart in each colour vision."""
+    from test_palette import ciede2000, seen_as
+
+    assert not set(KEY_COLORS) & {palette.COLORS["valid"], palette.COLORS["invalid"], palette.OKABE_ITO["orange"]}
+    assert not set(KEY_COLORS) & {palette.OKABE_ITO["blue"], palette.OKABE_ITO["sky blue"]}
+    seen = seen_as(list(KEY_COLORS), deficiency)
+    assert min(ciede2000(a, b) for i, a in enumerate(seen) for b in seen[i + 1 :]) >= palette.MIN_DISTANCE
+    shared = robot_drawing.SHARED_SHADE[0]  # "the same in each" beside the youBot's three poses
+    assert min(ciede2000(*seen_as([shared, c], deficiency)) for c in KEY_COLORS[:3]) >= palette.MIN_DISTANCE
 
 
 def test_robot_figure_draws_the_point_robot_square_at_q(square_world):
@@ -205,7 +220,7 @@ def test_robot_figure_draws_the_point_robot_square_at_q(square_world):
     assert len(_patches(fig.axes[0], "block")) == 1  # the block at [10, 12]^2; [20, 25] x [3, 9] is far
     unjudged = robot_drawing.robot_figure(robot, [[5.0, 6.0], [9.9, 11.0]])  # no validity: a colour per configuration
     assert [p.get_facecolor()[:3] for p in _patches(unjudged.axes[0], "link")] == [
-        to_rgba(c)[:3] for c in CATEGORICAL[:2]
+        to_rgba(c)[:3] for c in KEY_COLORS[:2]
     ]
 
 
@@ -220,9 +235,9 @@ def test_robot_figure_overlays_configurations_nearest_the_viewer_last_and_names_
     top_z = youbot.link_aabbs(bending)[:, :, 1, 2]  # (3, L): how high each link reaches
     k, link = np.unravel_index(np.argsort(top_z, axis=None, kind="stable"), top_z.shape)
     shared = to_rgba(palette.COLORS["shade"])[:3]  # review r29a: the platform and turret, the same in all three
-    drawn = [shared if j < 2 else to_rgba(CATEGORICAL[i])[:3] for i, j in zip(k, link)]
+    drawn = [shared if j < 2 else to_rgba(KEY_COLORS[i])[:3] for i, j in zip(k, link)]
     assert [p.get_facecolor()[:3] for p in links] == drawn  # from above: lowest first, the upright gripper last
-    assert links[-1].get_facecolor()[:3] == to_rgba(CATEGORICAL[1])[:3]
+    assert links[-1].get_facecolor()[:3] == to_rgba(KEY_COLORS[1])[:3]
     assert [t.get_text() for t in fig.legends[0].get_texts()] == labels + ["the same in each"]
     with pytest.raises(ValueError, match="2 labels for 3 configurations"):
         robot_drawing.robot_figure(youbot, bending, labels=labels[:2])
@@ -241,7 +256,7 @@ def test_named_configurations_carry_a_marker_of_their_own_at_their_last_link():
     for ax, axes in zip(fig.axes, ((0, 2), (0, 1))):
         marks = [line for line in ax.get_lines() if line.get_marker() not in ("None", "")]
         assert [m.get_marker() for m in marks] == ["o", "s", "^"]
-        assert [m.get_color() for m in marks] == [to_hex(c) for c in CATEGORICAL[:3]]
+        assert [m.get_color() for m in marks] == [to_hex(c) for c in KEY_COLORS[:3]]
         np.testing.assert_allclose([m.get_xydata()[0] for m in marks], ends[:, list(axes)])
     assert [line.get_marker() for line in fig.legends[0].findobj(Line2D)] == ["o", "s", "^"]  # each beside its name
     assert (
@@ -278,7 +293,8 @@ def test_a_figure_of_the_robots_parts_marks_its_base_and_shades_each_link():
     # reader r41a: link 2, white under its neighbours' ends, could not be found: every link numbered on the drawing
     numbers = [t for t in fig.axes[0].texts if t.get_gid() == "link number"]
     assert [t.get_text() for t in numbers] == ["0", "1", "2", "3"] and min(t.get_zorder() for t in numbers) > 90
-    assert to_hex("#ffffff") not in faces
+    small = [to_hex(fig.legends[0].get_patches()[k].get_facecolor()[:3]) for k in (0, 2)]  # links 0 and 2: 0.1 long
+    assert to_hex("#ffffff") not in small  # a white link is a long one, outlined along its length
     # reader r48a: link 3 cross-hatched like a robot in collision; a link's shade is never the verdict's hatch
     assert not {p.get_hatch() for p in _patches(fig.axes[0], "link")} & {"xx", "++"}
 
@@ -402,6 +418,7 @@ def test_cspace_slice_equals_the_separating_axis_reference(clutter):
     star = next(line for line in ax.lines if line.get_gid() == "q")
     np.testing.assert_allclose(np.ravel(star.get_data()), q[[5, 6]])
     assert star.get_color() == robot_drawing.VALID_COLOR
+    assert star.get_markersize() <= 11  # reader r50a: a 2-unit star touched a grown shelf 0.4 from q
     assert len(_patches(fig.axes[1], "link")) == robot.n_links
     assert ax.get_title().split("\n")[1] == "the other DoF at the star's values"  # review r31a: not four lines
     (star_at,) = [part for part in parts_of(fig) if part.name == "the star's configuration"]  # the values: its table
@@ -450,7 +467,10 @@ def test_the_offices_cabinets_and_desks_differ_in_lightness_and_their_hatches_sh
     table = to_hex(faces["table"].get_facecolor()[0][:3])  # reader r40a: a blue cabinet, a sky-blue table, alike
     hue = [rgb_to_hsv(to_rgba(c)[:3])[0] for c in (cabinet, table)]
     assert min(abs(hue[0] - hue[1]), 1 - abs(hue[0] - hue[1])) >= 0.2  # a fifth of a turn round the hue circle
-    assert all(block.get_hatch() and block.get_hatch_linewidth() >= 1.2 for k, block in faces.items() if k != "cabinet")
+    assert all(block.get_hatch() and block.get_hatch_linewidth() >= 1.2 for k, block in faces.items() if k != "chair")
+    assert len({block.get_hatch() for block in faces.values()}) == len(faces) == 6  # reader r50a: a hatch each
+    verdict = {palette.COLORS["valid"], palette.COLORS["invalid"], palette.OKABE_ITO["orange"]}
+    assert not {to_hex(block.get_facecolor()[0][:3]) for block in faces.values()} & verdict  # r50a: tables orange
     # reader r48a: desks cross-hatched like a robot in collision; a kind's hatch is never the verdict's "xx" or "++"
     assert not {block.get_hatch() for block in faces.values()} & {"xx", "++"}
     assert fig.get_figwidth() <= palette.PAGE_WIDTH and fig.legends  # the legend below the view, over no block
@@ -564,7 +584,9 @@ def test_a_youbot_platform_overlapping_a_block_by_a_little_is_filled_and_enlarge
     assert fill.get_xy()[:, 0].min() == pytest.approx(20.0) and fill.get_xy()[:, 0].max() == pytest.approx(20.05)
     (inset,) = hit.child_axes
     assert _patches(inset, "overlap") and inset.get_xlim()[0] < 20.0 < 20.05 < inset.get_xlim()[1]
-    assert not clear.child_axes and "An inset enlarges" in alt_text(fig)
+    assert not clear.child_axes and "An inset under the panel enlarges" in alt_text(fig)
+    fig.draw_without_rendering()  # reader r50a: inside the panel it read as a second block and robot: under it
+    assert inset.get_window_extent().y1 < hit.get_window_extent().y0 and "zoom x" in inset.get_xlabel()
     # reader r42a: unframed, the inset read as one more block and robot in the room: framed heavy. Reader r47a: on a
     # grey ground it read as a block: white, as the room
     assert min(s.get_linewidth() for s in inset.spines.values()) >= 2
@@ -622,7 +644,7 @@ def test_a_slice_outlines_the_blocks_a_flat_view_draws_across_links_they_cannot_
     assert not above.get_fill() and above.get_linestyle() == ":"
     assert _drawn_inside(above, (4, 4), (6, 6))
     assert len(_patches(ax, "block")) == 2  # the block beside the links, and the far one
-    assert "A block drawn across the links that no link touches (above or below them) is a dotted outline." in alt_text(
+    assert "no link touches (above or below them) is a dotted outline, drawn a little inside its edges." in alt_text(
         fig
     )
     side = _one_link_slice(boxes, view="xz")

@@ -16,7 +16,7 @@ from matplotlib.patches import Patch, Rectangle
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.boxes import box_corners, outline
-from toolkit.plots.palette import COLORS
+from toolkit.plots.palette import COLORS, halo
 
 
 def nearby_blocks(workspace: Workspace, lo: np.ndarray, hi: np.ndarray) -> np.ndarray:
@@ -145,5 +145,6 @@ def ring_blocks(ax, workspace: Workspace, kind: str | None, z: float | None = No
         boxes = boxes[(boxes[:, 0, 2] <= z) & (boxes[:, 1, 2] >= z)]
     middles = boxes[:, :, :2].mean(axis=1)  # (M, 2)
     ring = dict(marker="o", markersize=13, markerfacecolor="none", markeredgewidth=2, linestyle="")
-    ax.plot(middles[:, 0], middles[:, 1], color=COLORS["invalid"], gid="ring", **ring)
+    ring["path_effects"] = halo(2.0, ("free",))  # black, ringed white: seen on a dark cell and a light one alike
+    ax.plot(middles[:, 0], middles[:, 1], color=COLORS["ink"], gid="ring", **ring)  # not orange: r50a
     return len(boxes)

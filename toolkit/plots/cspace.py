@@ -37,16 +37,18 @@ from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe, map_part
 from toolkit.plots.boxes import aabb_corners, add_box_3d
 from toolkit.plots.contact import key_blocks, passed_over, ring_blocks
-from toolkit.plots.palette import CATEGORICAL, COLORS, PAGE_WIDTH
+from toolkit.plots.palette import COLORS, OKABE_ITO, PAGE_WIDTH
 from toolkit.plots.robot_drawing import (
     BASE_MARK,
-    KEY_HATCHES,
+    KIND_SHADES,
     POSITION_NAMES,
     VIEWS,
     dof_label,
     draw_robot,
     few_ticks,
+    hatch_ink,
     link_colors,
+    link_style,
 )
 from toolkit.plots.slices import joint_bounds, slice_configs
 from toolkit.plots.verdict import mark_arm
@@ -83,11 +85,6 @@ def _dof_label(robot: BoxRobot, index: int) -> str:
 # -- workspaces and their grids --------------------------------------------------
 
 
-KIND_ORDER = (0, 3, 5, 2, 1, 4)  # the office's kinds (sorted) in CATEGORICAL's colours and hatches: cabinets blue,
-# chairs black (r40a: orange specks unseen), desks white (cabinets and desks, of about one size, 3:1 apart), shelves sky
-# blue (long, unlike a cabinet), tables orange (r40a: a sky-blue table beside a blue cabinet), walls grey (r26a)
-
-
 def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
     """The workspace's blocks: one ``Rectangle`` per block in 2D, one ``Poly3DCollection`` per block in 3D.
 
@@ -96,8 +93,8 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
     size = " x ".join(f"{s:g}" for s in workspace.upper - workspace.lower)
     title = title or f"{workspace.family or 'workspace'}: {len(workspace.boxes)} blocks in {size}"
     kinds = sorted(set(workspace.labels))
-    colors = {kind: CATEGORICAL[KIND_ORDER[i % len(KIND_ORDER)]] for i, kind in enumerate(kinds)}
-    hatches = {kind: KEY_HATCHES[KIND_ORDER[i % len(KIND_ORDER)]] for i, kind in enumerate(kinds)}
+    colors = {kind: KIND_SHADES[i % len(KIND_SHADES)][0] for i, kind in enumerate(kinds)}
+    hatches = {kind: KIND_SHADES[i % len(KIND_SHADES)][1] for i, kind in enumerate(kinds)}
     box_colors = [colors[label] for label in workspace.labels] or [COLORS["block"]] * len(workspace.boxes)
     box_hatches = [hatches[label] for label in workspace.labels] or [""] * len(workspace.boxes)
     stretch = 1  # how much taller than its widths a region's height is drawn
@@ -126,6 +123,7 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
                 linewidth=0.3,
                 alpha=0.8,
                 hatch=hatch,
+                hatchcolor=hatch_ink(color),  # white on the dark grey walls
                 hatch_linewidth=1.3,  # a hatch seen on a small box, at the site's width
             ).set_gid("block")
         frame_region(ax, workspace)
@@ -137,7 +135,7 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
             y_ticks = [t for t in ax.get_yticks() if workspace.lower[1] < t <= workspace.upper[1]]
             ax.set_yticks(y_ticks)  # no y tick at the corner where x's last tick stands (r27a: "40" over "0")
     if kinds:
-        handles = [Patch(facecolor=colors[k], edgecolor=COLORS["ink"], hatch=hatches[k], label=k) for k in kinds]
+        handles = [Patch(label=k, **link_style(colors[k], hatches[k])) for k in kinds]  # as drawn
         fig.legend(handles=handles, fontsize=9, loc="lower center", ncols=min(len(kinds), 3), frameon=False)
         fig.subplots_adjust(bottom=0.16)  # the legend below the view, over no block and clear of its ticks (r29a)
     ax.set_title(title)
@@ -260,10 +258,13 @@ def _draw_cspace(
     return valid
 
 
+BLOCK_OUTLINE = OKABE_ITO["bluish green"]  # 3.7:1 on the dark C-obstacle; not orange, "in collision" (reader r50a)
+
+
 def cspace_image(checker: CollisionChecker, resolution: int = 600, window: tuple | None = None) -> Figure:
     """The point robot's whole C-space (x, y), dark where ``checker`` reports a collision.
 
-    The workspace's blocks are outlined (``COLORS["block_outline"]``, gid ``"block"``): each dark C-obstacle is
+    The workspace's blocks are outlined (:data:`BLOCK_OUTLINE`, gid ``"block"``): each dark C-obstacle is
     its block grown by the robot's half width, since the square's centre is the configuration.
     ``window = ((x_lo, x_hi), (y_lo, y_hi))`` zooms in; ``resolution``: pixels (configurations) per axis.
     """
@@ -274,9 +275,7 @@ def cspace_image(checker: CollisionChecker, resolution: int = 600, window: tuple
     ax = fig.subplots()
     valid = _draw_cspace(ax, checker, robot.lower, (0, 1), resolution, window)
     for lo, hi in checker_workspace(checker).boxes:
-        ax.add_patch(
-            Rectangle(lo, *(hi - lo), fill=False, edgecolor=COLORS["block_outline"], linewidth=1.2, gid="block")
-        )
+        ax.add_patch(Rectangle(lo, *(hi - lo), fill=False, edgecolor=BLOCK_OUTLINE, linewidth=1.2, gid="block"))
     left, right, bottom, top = ax.images[0].get_extent()
     ax.set(xlim=(left, right), ylim=(bottom, top), aspect="equal")  # the window, whatever blocks lie beyond it
     ax.set_title(
@@ -331,9 +330,9 @@ def cspace_slice(
     ax.set_aspect("equal", adjustable="box") if lengths else ax.set_box_aspect(1)  # to scale; angles square
     ax.set_facecolor(COLORS["occupied"])
     star: dict[str, Any] = dict(  # an ink edge in a white halo: seen on the free white and the dark alike (r39a)
-        marker="*", markersize=15, markeredgecolor=COLORS["ink"], color=link_colors(1, q_valid)[0], markeredgewidth=1
-    )
-    star["path_effects"] = [Stroke(linewidth=4, foreground=COLORS["free"]), Normal()]
+        marker="*", markersize=11, markeredgecolor=COLORS["ink"], color=link_colors(1, q_valid)[0], markeredgewidth=1
+    )  # reader r50a: at 15 points the youBot's star, 2 units across, touched a grown shelf 0.4 away
+    star["path_effects"] = [Stroke(linewidth=3, foreground=COLORS["free"]), Normal()]
     ax.plot(q[joints[0]], q[joints[1]], linestyle="none", gid="q", **star)
     ax.set_title(  # the fixed values are the description's table: four-line titles were the page's hardest (r31a)
         f"{robot.name}: {1 - valid.mean():.0%} in collision (dark)\nthe other DoF at the star's values", fontsize=9
@@ -346,9 +345,10 @@ def cspace_slice(
     text += ("valid." if q_valid[0] else "in collision.") + (
         " Beside it, the robot there, its base a dot." * bool(view)
     )
-    text += " A block drawn across the links that no link touches (above or below them) is a dotted outline." * bool(
+    text += " A block drawn across the links that no link touches (above or below them) is a dotted outline" * bool(
         outlined
     )
+    text += ", drawn a little inside its edges." * bool(outlined)
     text += " A block a link touches is outlined dashed." * bool(dashed)
     star_at = Part(
         "the star's configuration",

@@ -25,7 +25,7 @@ from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.boxes import aabb_corners, add_box_3d, box_corners, outline
 from toolkit.plots.contact import nearby_blocks
-from toolkit.plots.palette import CATEGORICAL, COLORS, PAGE_WIDTH
+from toolkit.plots.palette import COLORS, OKABE_ITO, PAGE_WIDTH
 
 VALID_COLOR, INVALID_COLOR = COLORS["valid"], COLORS["invalid"]
 BLOCK_STYLE: dict[str, Any] = dict(facecolor=COLORS["block"], edgecolor=COLORS["occupied"], gid="block")
@@ -34,15 +34,38 @@ BLOCK_STYLE: dict[str, Any] = dict(facecolor=COLORS["block"], edgecolor=COLORS["
 def link_style(color: str, hatch: str | None = None) -> dict:
     """A link's face and edge; a link in collision is hatched too (colour is never the only cue), and so is each
     configuration a legend names (``hatch``)."""
-    return dict(facecolor=color, edgecolor=COLORS["ink"], hatch="xx" if color == INVALID_COLOR else hatch or None)
+    hatch = "xx" if color == INVALID_COLOR else hatch or None
+    return dict(facecolor=color, edgecolor=COLORS["ink"], hatch=hatch, hatchcolor=hatch_ink(color))
+
+
+def hatch_ink(color: str) -> str:
+    """The colour of a hatch on a face of ``color``: white on the black and dark grey of :data:`KEY_COLORS`, where
+    a black hatch would not show (reader r47a), else black."""
+    return COLORS["free"] if color in (COLORS["ink"], COLORS["rejected"]) else COLORS["ink"]
 
 
 VIEWS = {"xy": (0, 1), "xz": (0, 2), "yz": (1, 2)}
 FLAT_ALPHA = 0.85  # a link's opacity in a flat view, and its legend swatch's: black link 3's hatch shows (r47a)
 POSITION_NAMES = ("x", "y", "z")
 KEY_HATCHES = ("", "//", "..", "--", "\\\\", "||")
-"""Hatches that only tell things apart (links, poses, furniture kinds), in :data:`CATEGORICAL`'s order: the
+"""Hatches that only tell things apart (links, poses, furniture kinds), in :data:`KEY_COLORS`' order: the
 palette's, less the in-collision cross-hatch "xx" and its look-alike "++" (reader r48a: desks, chain9's link 3)."""
+KEY_COLORS = (OKABE_ITO["bluish green"], COLORS["ink"], COLORS["rejected"], COLORS["free"])
+"""Colours that only tell things apart (links, poses): bluish green, black, a dark grey and white, never the
+verdict's blue or orange, so that orange means "in collision" on every figure (reader r50a: chain7's orange link 1
+over its blue link 0, where the text says that overlap is no collision); every two stay apart in each colour
+vision (``tests/test_plots_cspace.py``)."""
+
+KIND_SHADES = (
+    (OKABE_ITO["bluish green"], "--"),  # cabinets
+    (COLORS["ink"], ""),  # chairs: black (r40a: orange specks unseen), where no hatch would show
+    (COLORS["free"], "||"),  # desks: white
+    (OKABE_ITO["reddish purple"], ".."),  # shelves
+    (COLORS["obstacle"], "//"),  # tables: Okabe and Ito's yellow
+    (COLORS["rejected"], "\\\\"),  # walls: dark grey
+)
+"""The office's furniture kinds (sorted), each in a colour and a hatch of its own (its picture in
+:func:`toolkit.plots.cspace.workspace_figure`), never the verdict's blue, orange or cross-hatch (reader r50a)."""
 
 
 def dof_label(name: str) -> str:
@@ -133,9 +156,9 @@ def _window(aabbs: np.ndarray, workspace: Workspace | None, margin: float):
 
 
 def link_colors(n: int, valid: np.ndarray | None) -> list[str]:
-    """One colour per configuration: valid / invalid by ``valid (n,)``, else the categorical colours in turn."""
+    """One colour per configuration: valid / invalid by ``valid (n,)``, else :data:`KEY_COLORS` in turn."""
     if valid is None:
-        return [CATEGORICAL[k % len(CATEGORICAL)] for k in range(n)]
+        return [KEY_COLORS[k % len(KEY_COLORS)] for k in range(n)]
     return [VALID_COLOR if v else INVALID_COLOR for v in np.asarray(valid, dtype=bool).reshape(n)]
 
 
@@ -254,7 +277,7 @@ def _link_shades(robot: BoxRobot, Q: np.ndarray, named: bool, parts: bool):
     """Per link, the colour and hatch replacing its configuration's (or None), and the legend's name of each: links
     the same in every named configuration grey ("the same in each"), or with ``parts`` one shade per link."""
     if parts:  # a shade per link, numbered as link_boxes: two of one size told apart (r31a); link 2 filled (r41a)
-        shades = [(CATEGORICAL[i], KEY_HATCHES[i]) for i in ((0, 1, 2, 3, 4, 5) * robot.n_links)[: robot.n_links]]
+        shades = [(KEY_COLORS[i % len(KEY_COLORS)], KEY_HATCHES[i % len(KEY_HATCHES)]) for i in range(robot.n_links)]
         names = {
             f"link {i}: {2 * h.max():g} long": shade for i, (h, shade) in enumerate(zip(robot.half_extents, shades))
         }
@@ -322,8 +345,9 @@ END_MARKERS = (("o", "with a circle"), ("s", "with a square"), ("^", "with a tri
 
 
 def _end_mark(k: int, color: str) -> dict:
-    """The marker of the ``k``-th named configuration, in its colour with a black edge (``plot``'s options)."""
-    edge = dict(markeredgecolor=COLORS["ink"], markeredgewidth=1.2, linestyle="", zorder=5, clip_on=False)
+    """The marker of the ``k``-th named configuration, in its colour with a black edge, white on a dark one (seen
+    on a black link), ``plot``'s options."""
+    edge = dict(markeredgecolor=hatch_ink(color), markeredgewidth=1.2, linestyle="", zorder=5, clip_on=False)
     return dict(marker=END_MARKERS[k % len(END_MARKERS)][0], markersize=8, color=color, **edge)
 
 

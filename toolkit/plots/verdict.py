@@ -11,7 +11,6 @@ from typing import Any
 import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.patches import Patch, Polygon, Rectangle
-from matplotlib.path import Path
 
 from toolkit.geometry.box_world import is_point_robot
 from toolkit.geometry.checker import CollisionChecker
@@ -32,9 +31,9 @@ from toolkit.plots.robot_drawing import (
     link_style,
 )
 
-INSET = 0.46  # the inset's side, a fraction of its panel's (reader r44a: at 0.38 it was hard to read)
+INSET = 0.62  # the inset's width, a fraction of its panel's (reader r44a: at 0.38 it was hard to read)
+INSET_HIGH = 0.5  # the inset's height, a fraction of its panel's, under the panel (room the figure grows by)
 INSET_BACKGROUND = COLORS["free"]  # white, as the room: only blocks are grey (reader r47a: a grey ground read as one)
-INSET_SHAPES = ((INSET, INSET), (0.62, 0.34))  # the inset's (width, height), axes fraction: square, or a wide strip
 PARTS = {"youbot": ("platform", "turret", "upper arm", "forearm", "wrist", "gripper"), "point2d": ("square",)}
 
 
@@ -46,7 +45,7 @@ def verdict_figure(
     review r27a: a move hidden by shifted axes), so a block reaching past it is drawn clipped. In a configuration
     in collision, each link box that touches a block and that block are outlined thick (the block dashed) and named
     in the title, numbered as the arrays are: "platform touches block 11 (desk)" (review r30a), or "square overlaps
-    block 0 by 0.2" with a 2D link's part inside the block filled light (review r31a); a valid one's title
+    block 0 by 0.2" with a 2D link's part inside the block filled yellow (review r31a); a valid one's title
     gives its clearance where the checker proves one, a lower bound on the gap ("valid; the check proves a gap of at
     least 0.15 to every block and the boundary (the true gap can be wider)", reader r42a: read as the gap itself;
     reader r45a: "wall" named the office's blocks too; reader r48a: 0.15 beside a drawn gap of 0.46), the gap itself
@@ -82,13 +81,15 @@ def verdict_figure(
         ax.set_title(verdict, fontsize=10 if columns < 3 else 9, wrap=True)
         ax.tick_params(labelsize=8)
     filled = any(p.get_gid() == "overlap" for ax in axes for p in ax.patches)
+    if any(getattr(ax, "zoomed", False) for ax in axes):  # room under the panels for the inset (reader r50a)
+        fig.set_figheight(fig.get_figheight() + 1.7)
     fig.tight_layout(rect=(0, 0 if len(spare) else 0.35 / fig.get_figheight(), 1, 1))
     named = _key(fig, axes, valid, filled, spare[0] if len(spare) else None)
     marked = " Each link that touches a block is outlined thick, and the block it touches dashed." * (not all(valid))
     marked += f" A key {'in the last row' if len(spare) else 'under the panels'} names {', '.join(named)}."
-    marked += " The part of the robot inside a block is filled light." * filled
+    marked += " The part of the robot inside a block is filled yellow." * filled  # reader r50a: was "light"
     zoomed = any(getattr(ax, "zoomed", False) for ax in axes)
-    marked += " An inset enlarges a fill too small to see at the panel's scale." * zoomed
+    marked += " An inset under the panel enlarges a fill too small to see at the panel's scale." * zoomed
     text = f"The {robot.name} robot at {len(Q)} configurations side by side, seen in the {view} plane with the blocks "
     text += "near it, each panel framing the same window, each titled with the exact checker's verdict: " + "; ".join(
         f"configuration {i + 1}, {v}" for i, v in enumerate(said)
@@ -176,8 +177,8 @@ OVERLAP_STYLE: dict[str, Any] = dict(facecolor=COLORS["overlap"], edgecolor=COLO
 
 def _zoom_on_small_fills(ax, fills, robot: BoxRobot, q: np.ndarray, plane: tuple[int, int]) -> None:
     """An inset enlarging a fill under a twentieth of the panel's width (review r40a: 0.078 of overlap was a few
-    pixels at a corner), in the panel's corner farthest from the robot, its window marked in the panel; framed heavy,
-    on a tinted ground, so that it reads as a magnifier and not as more of the room (reader r42a)."""
+    pixels at a corner), under the panel, out of its data area (reader r50a: inside the room it read at first as a
+    second block and robot), its window marked in the panel; framed heavy (reader r42a)."""
     if not fills:
         return
     points = np.concatenate([f[0] for f in fills])  # (m, 2)
@@ -187,11 +188,7 @@ def _zoom_on_small_fills(ax, fills, robot: BoxRobot, q: np.ndarray, plane: tuple
         return
     half = max((f_hi - f_lo).max() * 1.5, (x1 - x0) / 40)
     mid = (f_lo + f_hi) / 2
-    centers, rotations, halves = robot.link_boxes(q[None])
-    shapes = [Path(outline(box_corners(c, r, h), plane)) for c, r, h in zip(centers[0], rotations[0], halves)]
-    shapes += [Path(np.array([f[2], (f[3][0], f[2][1]), f[3], (f[2][0], f[3][1])])) for f in fills]  # their blocks
-    corner = np.array([mid - half, (mid[0] + half, mid[1] - half), mid + half, (mid[0] - half, mid[1] + half)])
-    w, h, at = _inset_place(ax, [*shapes, Path(corner)])  # off the robot, its blocks and the window it zooms
+    w, h, at = INSET, INSET_HIGH, ((1 - INSET) / 2, -INSET_HIGH - 0.2)  # under the x axis's ticks and label
     wide = w * (x1 - x0) / (h * (y1 - y0))  # the inset's width / height, in data units as on the page
     half_x, half_y = half * max(1.0, wide), half * max(1.0, wide) / wide
     inset = ax.inset_axes([*at, w, h])
@@ -205,37 +202,11 @@ def _zoom_on_small_fills(ax, fills, robot: BoxRobot, q: np.ndarray, plane: tuple
     inset.set_facecolor(INSET_BACKGROUND)  # reader r42a: unframed, the inset read as a block and a robot in the room
     for spine in inset.spines.values():
         spine.set(linewidth=2.5, edgecolor=COLORS["ink"])
-    inset.set_title(  # on a white ground: the title may sit over the robot (reader r44a)
-        f"zoom x{w * (x1 - x0) / (2 * half_x):.0f}",
-        fontsize=9,
-        pad=3,
-        bbox={"facecolor": COLORS["free"], "edgecolor": "none", "pad": 1},
-    )
+    inset.set_xlabel(f"zoom x{w * (x1 - x0) / (2 * half_x):.0f}", fontsize=9, labelpad=3)  # under it: the axis above
     marker = ax.indicate_inset_zoom(inset, edgecolor=COLORS["ink"], linewidth=1.2, alpha=1)
     marker.set_zorder(7)  # reader r45a: its connectors ran under the robot, unseen; now over it, under the inset
     inset.set_zorder(8)
     ax.zoomed = True
-
-
-def _inset_place(ax, shapes: list[Path]) -> tuple[float, float, tuple[float, float]]:
-    """Where an inset hides least of ``shapes`` (data coordinates) with its title: its width, height and lower left
-    corner, axes fractions; a square one in a corner, else along a side, else a wide strip (reader r47a: the square
-    in the nudge's corner hid the platform, whose free room below was a strip)."""
-    (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
-    steps = np.linspace(0, 1, 40)  # finely: a robot's corner is not missed
-
-    def covered(w: float, h: float, c) -> int:
-        grid = np.stack(np.meshgrid(steps * w, steps * (h + 0.08)), axis=-1).reshape(-1, 2)  # the title above it
-        points = np.array([x0, y0]) + (grid + c) * np.array([x1 - x0, y1 - y0])
-        return sum(int(shape.contains_points(points).sum()) for shape in shapes)
-
-    places = [
-        (w, h, (a, b))
-        for w, h in INSET_SHAPES
-        for a in np.linspace(0.03, 0.97 - w, 5)
-        for b in np.linspace(0.03, 0.89 - h, 5)
-    ]  # the square's places first: on a tie, min keeps the first, the square
-    return min(places, key=lambda p: covered(*p))
 
 
 def mark_arm(ax, robot: BoxRobot, q: np.ndarray, view: str) -> None:
