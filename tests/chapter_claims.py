@@ -444,7 +444,18 @@ def _chapter_03_opening(nb) -> list[str]:
     table = (said.get("our `paper` preset, 2DS"), said.get("the paper's MLP, its Table 2, 2DS"))
     if typed and (float(typed.group(1)), float(typed.group(2))) != table:  # r36c: our 55 % beside the paper's 87.5 %
         problems.append(f"03: the verdict types {typed.group(1)} % and {typed.group(2)} %; the table gives {table}")
+    close = re.search(
+        r"design reaches (\d+)% balanced accuracy on unseen 2DS: close to the paper's ([\d.]+)%, still below it",
+        " ".join(texts(nb)),
+    )  # r50c item 3: "comes close to ... but stays below it"
+    if "comes close to the paper's accuracy but stays below it" in prose(nb) and not (
+        close and 0 < float(close[2]) - float(close[1]) <= CLOSE
+    ):
+        problems.append(f"03: the opening says the [z, q] design comes close, below; its line: {close and close[0]}")
     return problems
+
+
+CLOSE = 5  # chapter 03: "close to" the paper's balanced accuracy: within 5 points
 
 
 def _number(cell: str) -> float:
@@ -549,7 +560,7 @@ def _chapter_03_corners(nb, found: str) -> list[str]:
     start = min((k for k in (found.find(SEAM), found.find("free regions apart from the rest")) if k >= 0), default=-1)
     printed = {" ".join(c) for c in CORNERS.findall(found[start:])} if start >= 0 else set()
     named = re.search(
-        r"Two corners hold outlined free triangles: the (\w+ \w+), near .*?, and the (\w+ \w+), near", prose(nb)
+        r"Two corners hold outlined triangles, not hatched: the (\w+ \w+), near .*?, and the (\w+ \w+), near", prose(nb)
     )
     if not printed or named is None or set(named.groups()) != printed:
         return [

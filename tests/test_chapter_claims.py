@@ -1012,7 +1012,9 @@ def chapter_03(
         POCKETS_03,
         planned,
     )
-    nb["cells"].append({"cell_type": "markdown", "source": [f"Two corners hold outlined free triangles: {corners}."]})
+    nb["cells"].append(
+        {"cell_type": "markdown", "source": [f"Two corners hold outlined triangles, not hatched: {corners}."]}
+    )
     nb["cells"].append({"cell_type": "markdown", "source": [words]})
     return nb
 
@@ -1035,6 +1037,20 @@ def test_chapter_03_fails_an_opening_bullet_typing_other_numbers_than_its_table(
     assert problems(CH03, chapter_03(0.25, 0.25, words=now.format(54, 87.5))) == [
         "03: the verdict types 54 % and 87.5 %; the table gives (55.0, 87.5)"
     ]
+
+
+def test_chapter_03_says_the_z_q_design_comes_close_only_where_its_line_is_close_and_below():
+    """Reader r50c item 3: the opening and the summary say that with more data and a larger MLP the same [z, q] design
+    comes close to the paper's accuracy but stays below it; the line under the opening table must show it."""
+    words = "the same design comes close to the paper's accuracy but stays below it (the line under the table)."
+    line = (
+        "the same `[z, q]` design reaches {}% balanced accuracy on unseen 2DS: close to the paper's 87.5%, still below"
+    )
+    for ours, caught in ((84, False), (87, False), (88, True), (80, True), (None, True)):
+        nb = chapter_03(0.25, 0.25, words=words)
+        nb["cells"] += executed(line.format(ours) + " it.")["cells"] if ours else []
+        found = [p for p in problems(CH03, nb) if "comes close" in p]
+        assert bool(found) == caught, (ours, found)
 
 
 def test_chapter_03_reads_the_ablation_of_docs_fidelity_and_types_none_of_it():

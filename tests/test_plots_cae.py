@@ -472,6 +472,10 @@ def test_accuracy_panels_of_three_groups_go_two_a_row_the_legend_in_the_spare_sl
     for ax, name in zip(drawn, groups):
         (points,) = [c for c in ax.collections if c.get_gid() == name]
         assert points.get_alpha() <= 0.3
+        (mean,) = [c for c in ax.collections if c.get_gid() == f"{name}: mean"]
+        assert mean.get_facecolor()[0][3] == 1  # filled (cae.py's one-axes scatter draws its means hollow)
+    said = " ".join(t.get_text() for t in spare.get_legend().get_texts()).replace("\n", " ")
+    assert "large filled mark" in said and "mean" in said  # the legend says which (lead, wave 31 item 4)
 
 
 def test_training_curves_keep_the_highest_point_clear_of_the_frame():

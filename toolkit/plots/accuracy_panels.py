@@ -96,7 +96,7 @@ def _legend(fig: Figure, spare=None) -> None:
             markeredgecolor=COLORS["free"],
             markeredgewidth=1.2,
             path_effects=halo(1.2, ("ink",)),
-            label="large ringed mark, in the panel's own shape: its mean",
+            label="large filled mark, ringed, in the panel's own shape: the panel's mean",
         ),
     ]
     if spare is not None:  # wrapped to the slot, and out of the layout: a wide legend there squeezed every column
