@@ -376,11 +376,11 @@ def test_the_index_table_counts_the_recorded_cells():
     def counted(ratios: dict[str, list[float]], band: tuple[float, float] | None = None) -> str:
         """Reader r50e, home 2: chapter 05's labels: saved / tie / within noise / cost, a ratio beyond the tie band
         but inside its statistic's noise band ``band`` within noise ("—" where there is no band: the paper's)."""
-        verdicts = [change(r) for row in ratios.values() for r in row]
-        noisy = [r for row in ratios.values() for r in row if band and change(r) != "about the same time"]
-        noisy = [r for r in noisy if inside(r, band)]
-        clear = [v for v, r in zip(verdicts, (r for row in ratios.values() for r in row)) if r not in noisy]
-        counts = [clear.count("less time"), verdicts.count("about the same time"), len(noisy), clear.count("more time")]
+        flat = [r for row in ratios.values() for r in row]
+        tied = [r for r in flat if change(r) == "about the same time"]
+        noisy = [r for r in flat if band is not None and r not in tied and inside(r, band)]
+        clear = [change(r) for r in flat if r not in noisy]
+        counts = [clear.count("less time"), len(tied), len(noisy), clear.count("more time")]
         return " / ".join("—" if i == 2 and not band else str(n) for i, n in enumerate(counts))
 
     def cells(scenarios: list[str]) -> str:
