@@ -72,7 +72,8 @@ def test_valid_and_invalid_are_okabe_ito_and_roles_read_as_bytes():
     with pytest.raises(KeyError, match="no colour role 'green'"):
         palette.rgb("green")
     ends = palette.probability_rgb([0.0, 1.0])
-    assert ends.shape == (2, 3) and ends[0].sum() < ends[1].sum()  # cividis: dark at 0, light at 1
+    assert ends.shape == (2, 3) and ends[0].sum() < ends[1].sum()  # dark grey at 0, yellow at 1
+    assert all(b <= max(r, g) for r, g, b in palette.probability_rgb(np.linspace(0, 1, 65)))  # never blue (r50e)
 
 
 # ---- no colour outside the palette ----

@@ -295,6 +295,15 @@ def test_the_three_strong_trainings_are_named_each_with_its_threshold():
     assert timed in chapter05.answer()  # the timed network's threshold, in the answer's fold
     lazy = f"with the lazy-PRM network (`strong` in {chapter05.RESULTS}, threshold {written['strong']:.2f};"
     assert lazy in chapter05.time_tables()  # the lazy-PRM runs' training, named in the fold that uses it
+    # reader r50e, 05 lift 5: the same three rows under §5's first mention of the trainings, this notebook's threshold
+    rows = chapter05_runs.trainings(0.54).splitlines()
+    assert rows[0] == "The three trainings of `strong` in this chapter, each with its own weights, threshold and label:"
+    assert [row.split(" | ")[1] for row in rows[4:]] == [
+        f"{written[chapter05.COMPILED]:.2f}",
+        "0.54",
+        f"{written['strong']:.2f}",
+    ]
+    assert "\n".join(rows) in chapter05.answer(0.54)  # the fold's table, word for word
 
 
 def test_check_costs_reads_one_answer_against_one_check_from_the_record():

@@ -248,7 +248,7 @@ def test_a_wrong_model_is_marked_everywhere(make_panel, rng):
     assert v.valid and v.probability == 0.0 and not v.predicted_valid
     assert v.nodes["disagreement"].visible
     wireframe = v.nodes["prediction"]
-    assert np.all(np.asarray(wireframe.colors) == draw.probability_colors([0.0])[0])  # cividis' dark end
+    assert np.all(np.asarray(wireframe.colors) == draw.probability_colors([0.0])[0])  # the map's dark grey end
     # reader r19c: a 1-pixel wireframe with its faces' diagonals read as hair lines: now each box's 12 edges, 3 px wide
     assert wireframe.thickness == draw.PREDICTION_PX >= 3 and wireframe.thickness_units == "screen"
     # reader r15b: at 1.15 times a 0.1-thick link the wireframe lay on the link's edges; it stands half the thinnest

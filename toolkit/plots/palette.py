@@ -16,8 +16,8 @@ the backgrounds and the marks drawn on them; ``tests/test_palette.py`` computes 
 
 - :data:`COLORS` — role name to ``"#rrggbb"`` (``"valid"``, ``"invalid"``, ``"candidate"``, ...);
 - :data:`SHOWN_TOGETHER` — the roles each figure (or the viewer) shows side by side;
-- :data:`PROBABILITY_CMAP` — the colour map of a continuous probability (cividis: monotone in
-  lightness, readable in every colour vision), and :func:`probability_rgb` for the viewer;
+- :data:`PROBABILITY_CMAP` — the colour map of the viewer's P(valid), dark grey to yellow (monotone in
+  lightness, readable in every colour vision; no blue, which means valid), and :func:`probability_rgb`;
 - :func:`rgb` — a role's colour as ``(r, g, b)`` bytes, as the viewer draws it;
 - :data:`LINE_COLORS`, :data:`LINE_STYLES`, :data:`MARKERS`, :data:`HATCHES` — series a legend names;
 - :func:`contrast`, :func:`halo`, :data:`MARKS_ON` — marks that stand out from what they are drawn on;
@@ -26,11 +26,10 @@ the backgrounds and the marks drawn on them; ``tests/test_palette.py`` computes 
 
 from __future__ import annotations
 
-import matplotlib
 import numpy as np
 import numpy.typing as npt
 from matplotlib import patheffects
-from matplotlib.colors import to_rgb
+from matplotlib.colors import LinearSegmentedColormap, to_rgb
 
 OKABE_ITO = {  # Okabe & Ito (2008), the eight colours of Color Universal Design
     "black": "#000000",
@@ -146,7 +145,9 @@ PAGE_WIDTH = 6.1  # inches: a chapter page's output column is 631 px at 1280 px 
 # little); a wider figure shrinks, its text with it, so a figure a chapter shows is at most this wide and its text
 # stays at 8 pt or more as shown
 MIN_DISTANCE = 20.0  # CIEDE2000, between two roles shown together, under each simulated dichromacy
-PROBABILITY_CMAP = "cividis"  # P(valid): dark blue (0, in collision) to yellow (1, valid)
+# P(valid): dark grey (0, in collision) to yellow (1, valid), cividis' upper half with its dark blue end greyed
+# (reader r50e: blue means valid on the robot the viewer's wireframe is drawn round)
+PROBABILITY_CMAP = LinearSegmentedColormap.from_list("P(valid)", ["#4d4d4d", "#7c7b78", "#fee838"])
 GREYS_CMAP = "gray_r"  # an occupancy grid: free light, occupied dark
 GREY_CMAP = "gray"  # P(valid) under coloured marks (the classifier's mistakes): 0 black, 1 white
 SEQUENTIAL_CMAP = "viridis"  # any other quantity on a colour bar
@@ -231,4 +232,4 @@ def rgb(role: str) -> tuple[int, int, int]:
 def probability_rgb(probability: npt.ArrayLike) -> np.ndarray:
     """``(N, 3)`` uint8 colours of probabilities ``(N,)`` on :data:`PROBABILITY_CMAP`."""
     p = np.clip(np.asarray(probability, dtype=float), 0.0, 1.0)  # (N,)
-    return np.round(matplotlib.colormaps[PROBABILITY_CMAP](p)[:, :3] * 255).astype(np.uint8)
+    return np.round(PROBABILITY_CMAP(p)[:, :3] * 255).astype(np.uint8)

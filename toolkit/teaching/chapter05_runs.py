@@ -299,3 +299,9 @@ def paper_share() -> str:
         f"With collisions the positive class, TPR and TNR swap places, and the share is about {1 - implied:.0%} "
         f"valid: still not {uniform:.0%}.\n\n</details>"
     )
+
+
+def trainings(threshold: float) -> str:
+    """§5's map of the three trainings of `strong`, each with its threshold (``threshold``: the notebook's network's),
+    beside the section's first mention of them (reader r50e, 05 lift 5); the same table as the answer's fold."""
+    return "The three trainings" + chapter05.answer_map(threshold).partition("The three trainings")[2]

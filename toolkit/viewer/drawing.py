@@ -9,8 +9,8 @@ Colors tell validity (§III), from :mod:`toolkit.plots.palette` (Okabe-Ito, apar
 the valid colour (blue), the invalid one (vermillion) in collision. Samples carry a second cue, their shape
 (:data:`SAMPLE_SHAPES`): circles valid, diamonds in collision, and a larger sparkle behind the mark where a learned
 model disagrees with the exact checker; on a page, the far ones grow until their shapes can be told, and in a
-crowded view the near ones shrink (:func:`far_scale`). A probability of validity is drawn on cividis (dark: 0,
-light: 1), the model's wireframe a box's 12 edges around each link (:func:`add_wireframe`). Blocks and links are
+crowded view the near ones shrink (:func:`far_scale`). A probability of validity is drawn dark grey (0) to
+yellow (1), the model's wireframe a box's 12 edges around each link (:func:`add_wireframe`). Blocks and links are
 edged in ink (:func:`add_edges`).
 """
 
@@ -260,7 +260,7 @@ def _path_words(path: np.ndarray) -> str:
 
 
 def probability_colors(probability: npt.ArrayLike) -> np.ndarray:
-    """``(N, 3)`` uint8 colors of P(valid) ``(N,)`` on cividis (p = 0 dark blue, p = 1 light yellow)."""
+    """``(N, 3)`` uint8 colors of P(valid) ``(N,)`` on ``palette.PROBABILITY_CMAP`` (p = 0 dark grey, p = 1 yellow)."""
     return probability_rgb(probability)
 
 
@@ -298,7 +298,7 @@ def add_edges(scene: viser.SceneApi, name: str, boxes: Boxes, width: float = EDG
 
 def add_wireframe(scene: viser.SceneApi, name: str, boxes: Boxes, color) -> viser.LineSegmentsHandle:
     """The 12 edges of each of ``boxes`` as lines :data:`PREDICTION_PX` pixels wide in one ``color`` (a model's
-    P(valid) on cividis, :func:`probability_colors`): no face, no diagonal; :func:`move_wireframe` moves it."""
+    P(valid), :func:`probability_colors`): no face, no diagonal; :func:`move_wireframe` moves it."""
     return scene.add_line_segments(
         name, box_edges(boxes), np.asarray(color, dtype=np.uint8), thickness=PREDICTION_PX, thickness_units="screen"
     )

@@ -153,7 +153,7 @@ class Viewer:
 
     def set_configuration(self, q) -> None:
         """Move the robot to ``q (dof,)`` and color it by validity (§III): valid or invalid colour, by the exact
-        checker; the model's wireframe on cividis, dark (p = 0) to light (p = 1)."""
+        checker; the model's wireframe dark grey (p = 0) to yellow (p = 1)."""
         q = self.robot.check_configs(q, "q")[0]
         with self.lock:
             self.q = q
