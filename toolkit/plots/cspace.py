@@ -37,7 +37,7 @@ from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import Part, describe, map_part
 from toolkit.plots.boxes import aabb_corners, add_box_3d
 from toolkit.plots.contact import key_blocks, passed_over, ring_blocks
-from toolkit.plots.palette import COLORS, OKABE_ITO, PAGE_WIDTH
+from toolkit.plots.palette import COLORS, PAGE_WIDTH
 from toolkit.plots.robot_drawing import (
     BASE_MARK,
     KIND_SHADES,
@@ -258,7 +258,7 @@ def _draw_cspace(
     return valid
 
 
-BLOCK_OUTLINE = OKABE_ITO["bluish green"]  # 3.7:1 on the dark C-obstacle; not orange, "in collision" (reader r50a)
+BLOCK_OUTLINE = COLORS["block_outline"]  # 3.7:1 on the dark C-obstacle; not orange, "in collision" (reader r50a)
 
 
 def cspace_image(checker: CollisionChecker, resolution: int = 600, window: tuple | None = None) -> Figure:

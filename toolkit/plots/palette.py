@@ -62,7 +62,7 @@ COLORS: dict[str, str] = {
     "rejected": "#4d4d4d",  # samples a sampler threw away: 6:1 on the C-obstacles' grey
     # geometry
     "block": "#888888",  # the workspace's blocks in a figure
-    "block_outline": OKABE_ITO["orange"],  # blocks outlined over a dark C-space picture
+    "block_outline": OKABE_ITO["bluish green"],  # blocks over a dark C-space picture: 3.7:1, not "in collision"
     "obstacle": OKABE_ITO["yellow"],  # the viewer's blocks (a hue of their own: the browser test looks for it)
     "trace": OKABE_ITO["sky blue"],  # a path drawn in 3D (the viewer's, and the robot's base in a frame)
     "unchecked": OKABE_ITO["orange"],  # the robot when no validity is given
