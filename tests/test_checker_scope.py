@@ -6,6 +6,7 @@ import dataclasses
 
 import pytest
 
+from toolkit.experiments import paper_numbers
 from toolkit.teaching import chapter04, chapter04_paper, checker_scope, costs, recorded
 
 TABLE3 = (
@@ -290,3 +291,15 @@ def test_table_3_is_quoted_exactly_and_our_tie_band_is_named_ours():
     )
     assert "the paper counts" not in checker_scope.papers_longer_sentence()
     assert "a tie by our tie band (the paper has none)" in checker_scope.papers_longer_sentence()
+
+
+def test_the_paper_networks_table_sets_the_papers_reported_rates_beside_ours():
+    """Reader r50d, item 4: "far less accurate than the paper reports (its table in the box)", and the box did not
+    show what the paper reports; nor may "Table 2" name the results page's table, which is not the paper's."""
+    said = checker_scope._paper_mlp()
+    for _, key in checker_scope.SCENARIOS_4:
+        unseen = paper_numbers.MLP[key]["unseen"]
+        assert f"| {unseen['tpr']:.0%} / {unseen['tnr']:.0%} / {unseen['acc']:.0%} |" in said
+    assert "| 3DC-7 | 100% | 0% | 76% / 76% | 85% / 61% / 71% |" in said  # the record as of r50d
+    assert "where the paper's rates would be right 72% to 88%" in said  # balanced: (TPR + TNR) / 2
+    assert "From the results page's accuracy table (`docs/results.md`" in said and "Table 2's" not in said
