@@ -259,7 +259,7 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) 
         on = np.asarray(step.path)  # reader r47d: the path's own nodes over its line, dot or diamond as elsewhere
         filled = on[confirmed[on]]  # reader r49d, item 5: a halo only on black dots; a diamond stays thin, not
         ax.scatter(*P[filled].T, s=22, color=NODE_COLOR, zorder=4.5, path_effects=halo(1.5))  # a ring's look
-        ax.scatter(*P[on[~confirmed[on]]].T, **HOLLOW, zorder=4.5)
+        ax.scatter(*P[on[~confirmed[on]]].T, **HOLLOW | dict(s=40, edgecolors=NODE_COLOR), zorder=4.5)  # on the line
     _removed_edges(ax, exact, P[step.edges[removed_edge]])
     ax.scatter(  # a ring: what truly collides, as in sample_sets (reader r45d, item 1: a cross is a checker's mark)
         *P[step.removed_nodes].T,

@@ -3,8 +3,7 @@
 The paper names no exact checker. ``docs/results.md`` records our accurate `strong` network inside the paper's
 Algorithm 1 twice: with our compiled exact checker on both sides (:data:`toolkit.teaching.recorded.ALGORITHM_1`), and
 with python-fcl doing every exact check on both sides (:data:`SLOW`), a checker tens of times slower. A slow checker
-makes every sample check the network skips worth more, so the chapters name the checker first, then the answer.
-Table 3's statistic (means) gives the sampling stage; each query's own ratio gives the total."""
+makes every sample check the network skips worth more, so the chapters name the checker first, then the answer."""
 
 from __future__ import annotations
 
@@ -324,20 +323,21 @@ def _paper_mlp(tables: Tables | None = None) -> str:
     mlp = recorded.table("paper", "MLP accuracy", tables)
     cols = ("Unseen TPR", "Unseen TNR", "Unseen Acc", "Unseen always valid")
     rates = {name: {c: recorded.ours(mlp[key][c]) for c in cols} for name, key in SCENARIOS_4}
-    papers = {n: " / ".join(f"{MLP[k]['unseen'][r]:.0%}" for r in ("tpr", "tnr", "acc")) for n, k in SCENARIOS_4}
+    papers = {name: {r: f" ({MLP[key]['unseen'][r]:.0%})" for r in ("tpr", "tnr", "acc")} for name, key in SCENARIOS_4}
     balanced = [recorded.ours(mlp[key]["Balanced unseen Acc"]) for _, key in SCENARIOS_4]  # half the samples valid
-    fair = [(MLP[k]["unseen"]["tpr"] + MLP[k]["unseen"]["tnr"]) / 2 for _, k in SCENARIOS_4]  # r50d, item 4
+    fair = [(MLP[k]["unseen"]["tpr"] + MLP[k]["unseen"]["tnr"]) / 2 for _, k in SCENARIOS_4]  # the paper's, so
     return (
         "The `paper` preset's MLP on unseen workspaces, on our validity-blind samples; which kind the paper's unseen "
-        "test used is unstated (chapter 03), beside the rates the paper reports (its Table 2). From the results "
+        "test used is unstated (chapter 03); in parentheses, the paper's rates (its Table 2). From the results "
         "page's accuracy table (`docs/results.md`; on balanced samples, half of them valid, the same MLP is right "
         f"{min(balanced):.0%} to {max(balanced):.0%} of the time, its *Balanced unseen* column, where the paper's "
         f"rates would be right {min(fair):.0%} to {max(fair):.0%}):\n\n"
-        '| scenario | keeps valid<br>(TPR) | rejects colliding<br>(TNR) | accuracy / "valid" to all | the paper\'s '
-        "TPR / TNR /<br>accuracy | what it<br>answers |\n| --- | ---: | ---: | ---: | ---: | --- |\n"
+        '| scenario | keeps valid<br>(TPR) | rejects colliding<br>(TNR) | accuracy / "valid" to all '
+        "| what it<br>answers |\n| --- | ---: | ---: | ---: | --- |\n"
         + "\n".join(
-            f"| {name} | {r['Unseen TPR']:.0%} | {r['Unseen TNR']:.0%} | {r['Unseen Acc']:.0%} / "
-            f"{r['Unseen always valid']:.0%} | {papers[name]} | {_answers(r['Unseen TPR'], r['Unseen TNR'])} |"
+            f"| {name} | {r['Unseen TPR']:.0%}{papers[name]['tpr']} | {r['Unseen TNR']:.0%}{papers[name]['tnr']} | "
+            f"{r['Unseen Acc']:.0%}{papers[name]['acc']} / {r['Unseen always valid']:.0%} | "
+            f"{_answers(r['Unseen TPR'], r['Unseen TNR'])} |"
             for name, r in rates.items()
         )
     )
