@@ -550,10 +550,12 @@ def test_chapter_04_holds_the_answers_bullet_on_our_fast_checker_to_section_6():
         f"04: the first code cell's bullet on our fast checker says [('none', '16', '7', '5', '3')]; section "
         f"6's: {expected}"
     ]
-    nb = chapter_04()  # reader r48d, item 2: the sentence says how many of its slower cells are beyond the band
+    nb = chapter_04()  # reader r50d, items 1 and 2: sampling's share of a query, in plain words, from the record
     first = nb["cells"][0]["outputs"][0]["data"]
-    first["text/markdown"] = first["text/markdown"].replace("5 of them beyond", "9 of them beyond", 1)
-    assert problems(CH04, nb) == ["04: the answer's sentence counts ['9'] costs beyond the noise band, not 5"]
+    first["text/markdown"] = first["text/markdown"].replace("where sampling is 0.3–34 %", "where sampling is 0.3–9 %")
+    assert problems(CH04, nb) == [
+        "04: the answer gives sampling's share of a query as [('18', '0.3', '9')]; the record: ('18', '0.3', '34')"
+    ]
     nb = chapter_04()  # reader r33d: the noise band is a mark on the table's verdicts, explained once
     for cell in nb["cells"]:
         for output in cell.get("outputs", []):
@@ -580,7 +582,7 @@ def test_chapter_04_holds_the_answers_bullet_on_our_fast_checker_to_section_6():
     nb["cells"][0]["outputs"].pop(0)
     said = problems(CH04, nb)
     assert said[0] == f"04: the first code cell's bullet on our fast checker says []; section 6's: {expected}"
-    assert said[1].startswith("04: the answer on '**No:** with an accurate network'; the recorded runs: ")
+    assert said[1].startswith("04: the answer on '**No.** Letting our accurate network'; the recorded runs: ")
 
 
 def test_chapter_04_fails_prose_that_answers_the_papers_claim_otherwise_than_the_recorded_runs():
@@ -593,7 +595,7 @@ def test_chapter_04_fails_prose_that_answers_the_papers_claim_otherwise_than_the
     assert problems(CH04, nb) == [f"04: the prose says '{chapter_claims.PLAIN[other]}'; the recorded runs: {verdict}"]
     nb = chapter_04()
     first = nb["cells"][0]["outputs"][0]["data"]
-    first["text/markdown"] = first["text/markdown"].replace("**No:**", "**Rarely:**")
+    first["text/markdown"] = first["text/markdown"].replace("**No.**", "**Rarely.**")
     assert problems(CH04, nb) == [f"04: the answer on '{chapter_claims.ANSWER_NO}'; the recorded runs: {verdict}"]
 
 

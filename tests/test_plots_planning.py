@@ -339,8 +339,16 @@ def test_throughputs_a_point_per_scenario_and_checker_on_a_log_axis_labelled_at_
 def test_a_rejected_candidate_and_a_fresh_one_differ_in_line_style_not_only_in_shade(exact):
     rejected = a_repair_step()
     fresh = dataclasses.replace(rejected, stage="candidate", removed_nodes=np.zeros(0, int))
-    styles = [planning.roadmap(exact, step).axes[0].lines[0].get_linestyle() for step in (rejected, fresh)]
-    assert styles == [":", "--"]  # dotted against dashed: told apart at the site's width, as dash-dot was not
+    lines = [planning.roadmap(exact, step).axes[0].lines[0] for step in (rejected, fresh)]
+    assert [line.get_linestyle() for line in lines] == [":", "--"]  # dotted against dashed, as dash-dot was not
+    assert is_color(lines[0].get_color(), planning.REPAIR_COLOR).all()  # reader r50d, item 3: not two light blues
+    assert not is_color(lines[1].get_color(), planning.REPAIR_COLOR).all()
+    (unconfirmed,) = [
+        c
+        for c in planning.roadmap(exact, fresh).axes[0].collections
+        if "confirmed (" in c.get_label() and "not" in c.get_label()
+    ]  # reader r50d, item 3: filled, so a ring marks only what collides
+    assert is_color(unconfirmed.get_facecolors(), planning.EDGE_COLOR).all()
     assert "dotted path" in planning.step_in_words(rejected) and "dashed path" in planning.step_in_words(fresh)
 
 

@@ -29,7 +29,7 @@ C_OBSTACLE = ListedColormap([COLORS["free"], COLORS["c_obstacle"]])  # valid, in
 EDGE_COLOR, NODE_COLOR = COLORS["edge"], COLORS["node"]
 PATH_STYLES = {  # by stage: colour, line style (candidate dashed, one a repair rejected dotted, answer solid)
     "candidate": (COLORS["candidate"], "--"),
-    "repair": (COLORS["candidate"], ":"),
+    "repair": (COLORS["removed"], ":"),  # reader r50d, item 3: the rejected candidate in the repairs' colour too
     "path": (COLORS["path"], "-"),
 }
 REPAIR_COLOR = COLORS["removed"]  # what the exact checker rejected: removed by a repair (a node drawn as a ring)
@@ -222,17 +222,17 @@ def sample_sets(exact: CollisionChecker, S: np.ndarray, accepted: np.ndarray) ->
 
 
 EDGE_WORDS = "edge: predicted free, not yet checked"  # reader r31d: the thin edges named in the legend
-HOLLOW = dict(facecolors=COLORS["free"], edgecolors=NODE_COLOR, linewidths=1.0)  # a node not yet confirmed exactly
+HOLLOW = dict(marker="D", s=16, facecolors=EDGE_COLOR, edgecolors=COLORS["free"], linewidths=0.5)  # r50d: no ring
 
 
 def _nodes(ax, P: np.ndarray, confirmed: np.ndarray, labels: tuple, zorder: float = 3, **style) -> None:
-    """Nodes ``P``: filled where ``confirmed`` (checked exactly), hollow where not; ``labels`` name the two kinds."""
+    """Nodes ``P``: black dots where ``confirmed`` (checked exactly), grey diamonds where not; ``labels`` name them."""
     ax.scatter(*P[confirmed].T, s=22, color=NODE_COLOR, zorder=zorder, label=labels[0], **style)
-    ax.scatter(*P[~confirmed].T, s=22, **HOLLOW, zorder=zorder, label=labels[1], **style)
+    ax.scatter(*P[~confirmed].T, **HOLLOW, zorder=zorder, label=labels[1], **style)
 
 
 def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) -> None:
-    """One planner step: edges, nodes (hollow: not yet confirmed exactly), start and goal, the candidate path,
+    """One planner step: edges, nodes (grey diamonds: not yet confirmed exactly), start and goal, the candidate path,
     and what a repair removes (thick, and a ring at removed nodes); a legend names them."""
     _draw_cspace(ax, exact)
     P = step.nodes  # (V, 2)
@@ -241,10 +241,10 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) 
     edges = P[step.edges[~removed_edge]]
     ax.add_collection(LineCollection(edges, colors=EDGE_COLOR, linewidths=0.4, alpha=0.6, zorder=2, label=EDGE_WORDS))
     confirmed = step.node_verified
-    _nodes(ax, P, confirmed, ("node, confirmed (filled)", "node, not yet confirmed (hollow)"))
+    _nodes(ax, P, confirmed, ("node, confirmed (black dot)", "node, not yet confirmed (grey diamond)"))
     if len(step.path):
         color, style = PATH_STYLES[step.stage]
-        outline = halo(2.2) if color != COLORS["path"] else []  # the candidate's light blue needs an outline
+        outline = halo(2.2) if color != COLORS["path"] else []  # light blue and vermillion need an outline
         ax.plot(
             *P[step.path].T,
             color=color,
@@ -256,10 +256,10 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) 
             ),
             path_effects=outline,
         )
-        on = np.asarray(step.path)  # reader r47d: the path's own nodes over its line, filled or hollow as elsewhere
-        filled = on[confirmed[on]]  # reader r49d, item 5: a halo only on filled nodes; a hollow one stays thin, not
+        on = np.asarray(step.path)  # reader r47d: the path's own nodes over its line, dot or diamond as elsewhere
+        filled = on[confirmed[on]]  # reader r49d, item 5: a halo only on black dots; a diamond stays thin, not
         ax.scatter(*P[filled].T, s=22, color=NODE_COLOR, zorder=4.5, path_effects=halo(1.5))  # a ring's look
-        ax.scatter(*P[on[~confirmed[on]]].T, s=22, **HOLLOW, zorder=4.5)
+        ax.scatter(*P[on[~confirmed[on]]].T, **HOLLOW | dict(s=40, edgecolors=NODE_COLOR), zorder=4.5)  # on the line
     _removed_edges(ax, exact, P[step.edges[removed_edge]])
     ax.scatter(  # a ring: what truly collides, as in sample_sets (reader r45d, item 1: a cross is a checker's mark)
         *P[step.removed_nodes].T,
