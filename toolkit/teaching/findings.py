@@ -103,7 +103,7 @@ def _mark(median: float, said: str, moved: bool, tie: float = TIE) -> str:
     ``moved`` or its middle half (or too few queries) made it :data:`UNSURE`, else none."""
     low, high = noise_band()
     inside = low < median < high and time_verdict(median, tie=tie) != TIES
-    return "" if said != UNSURE and not moved else NO_CLEAR if inside and not moved else ACROSS
+    return "" if said != UNSURE and not moved else NO_CLEAR if inside else ACROSS
 
 
 SPEED_MOVED = (  # a planning sentence's verdict where the same exact check's cost moved between the modes (review r25a)
