@@ -1684,7 +1684,8 @@ def test_reader_r35g_the_race_s_batched_state_cost_is_no_check_cost_on_either_pa
         f"less than the checker table's 3DC-9 and 3DO checks ({cost['3DC-9']:.3f} and {cost['3DO']:.3f} µs), while "
         f"3DC-7's "
         f"{cost['3DC-7']:.3f} µs lies inside that range. Along the sweep's call sizes (an hour later, at a later "
-        f"commit, after the change to a call's fixed cost, by the CPU clock beside other work: not like for like), the compiled check costs no less than {least:.3f} µs; with "
+        f"commit, after the change to a call's fixed cost, by the CPU clock beside other work: not like for like), "
+        f"the compiled check costs no less than {least:.3f} µs; with "
         f"fewer blocks or links it comes down to {anywhere:.3f} µs."
     ) in flat
     assert "that cheap" not in flat

@@ -340,7 +340,7 @@ def test_the_sampling_line_counts_each_samplers_verdict():
 def test_a_live_verdict_inside_the_noise_band_is_starred_even_where_an_edge_points_time_moved():
     """r42d: \\* means one thing, inside the noise band; † only where a verdict outside it is unsure or moved
     (wave 30: a moved verdict inside the band was marked †, while the page says \\* comes first)."""
-    low, high = findings.noise_band()
+    _, high = findings.noise_band()
     inside, beyond = (1 + findings.TIE + high) / 2, high + 0.1  # a cost inside the noise band, one beyond it
     assert findings._mark(inside, "costs", moved=True) == findings.NO_CLEAR
     assert findings._mark(beyond, "costs", moved=True) == findings.ACROSS
