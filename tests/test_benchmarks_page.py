@@ -251,8 +251,9 @@ def test_the_opening_names_the_statistic_of_no_saving_and_counts_the_means():
             # named
             f"*Accurate*: each `strong` network is right {accurate()} % of the time on unseen workspaces' balanced "
             "samples ([the Results page](results.md)), so it is not a weak model. It is not the paper's CAE and MLP "
-            "made larger: its MLP reads the occupancy around the robot's links instead of the CAE's code, so it tests "
-            "whether accurate prediction saves planning time, not the CAE. Each planner ran its own network: "
+            "made larger: its MLP reads the occupancy around the robot and where each of its links is, instead of the "
+            "CAE's code, so it tests whether accurate prediction saves planning time, not the CAE. Each planner ran "
+            "its own network: "
             "Algorithm 1's screens samples; the lazy PRM's screens samples and edges."
         )
         in SUMMARY
