@@ -322,6 +322,13 @@ def test_the_opening_names_the_statistic_of_no_saving_and_counts_the_means():
     )
     assert all(edges(kind) not in PAGE[:figure] for kind in ("own", "means", "medians"))
     assert PAGE.index("](crossover.png)") < PAGE.index("## How to read this page") < PAGE.index("## Does prediction")
+    # reader r51g, "places I got lost" and lift 5: how a ratio reads, said in the Key before the first section uses one
+    key = flat.partition("*Key.*")[2].partition("## ")[0]
+    assert (
+        "*Ratios*: every ratio on this page is a time ratio, A / B, the time A takes over the time B takes: above 1, A "
+        "is the slower or dearer. Costs per configuration are read with a 25 % band (below), planning times with the "
+        'bands in "How to read this page", just above the planning section.' in key
+    ) and flat.index("*Key.*") < flat.index("## How fast is the exact checker?")
     assert (
         f"That gives {edges('own')} for the median of each query's own ratio, {edges('means')} for a ratio of " in flat
     )
