@@ -341,7 +341,7 @@ def test_reconstructions_wrong_cells_carry_marks_one_can_read_at_the_sites_width
     shown = [m for m in legend.findobj(Line2D) if m.get_marker() in ("x", "o")]  # what the legend draws
     assert sorted(m.get_marker() for m in shown) == ["o", "x"] and {m.get_fillstyle() for m in shown} == {"none"}
     # reader r50b: vermillion and blue are CAEs or groups of grids elsewhere on the page; the key says what they mean
-    assert legend.get_title().get_text() == "the colours here: kinds of wrong cell, not models or groups of grids"
+    assert legend.get_title().get_text() == "the colours here: kinds of cell, not models or groups of grids"
     fig.canvas.draw()  # r27b: the legend above the first grid, not a screen below it under the last
     first = fig.subfigs[1]._suptitle.get_window_extent()  # the first workspace's title
     assert legend.get_window_extent().y0 >= first.y1 and not fig.legends

@@ -141,7 +141,7 @@ def reconstructions(
     handles, labels = legend_handles(list(drawn))  # "missed cell", not "block": mostly single cells (r29b)
     handles.append(Patch(facecolor=colormaps[GREYS_CMAP](1.0), alpha=FADED, edgecolor=COLORS["ink"], linewidth=0.5))
     labels.append("occupied in the input (faded)")  # reader r31b: a seen grid's panel, all grey, read as empty
-    colours = "the colours here: kinds of wrong cell, not models or groups of grids"  # reader r50b: on the page, too
+    colours = "the colours here: kinds of cell, not models or groups of grids"  # r50b; r51b: an ignored flip is right
     key.legend(handles, labels, loc="center", ncols=2, fontsize=9, frameon=False, title=colours, title_fontsize=9)
     grids_said = f"{len(grids)} occupancy grid{'s' if len(grids) > 1 else ''}"
     text = f"{grids_said}, each beside its reconstruction and its wrong cells. " + "; ".join(said)
