@@ -100,6 +100,11 @@ def test_the_answer_in_a_quick_run_says_it_has_not_memorized():
         "- A different recipe (200 grids, batches of 100, learning rate 10⁻³; section 7) scores 50.0% on new grids, "
         '37.8 points below "all free": no clear gain here.\n\n' in text
     )
+    level = chapter02.answer(PAPER, LONG_NEW, MANY | {"unseen_acc": 0.878}, **quick)
+    assert (
+        "- A different recipe (200 grids, batches of 100, learning rate 10⁻³; section 7) scores 87.8% on new grids, "
+        'level with "all free": no clear gain here.' in level
+    )  # quick mode once printed "0.0 points above"
 
 
 def test_section_6s_flips_nest_and_try_this_counts_them_against_the_clean_grid():

@@ -171,8 +171,8 @@ def _many_bullet(paper: Scores, many: Scores, free: float, many_name: str) -> st
     if gain > CARRIES:
         said = f"{gain:.1f} points above, still far from Table 1's {paper['unseen_acc']:.0%}"
         return f'Only a {recipe} beats "all free" on new grids: {acc:.1%} against {free:.1%}, {said}.'
-    side = "below" if gain < 0 else "above"
-    return f'A {recipe} scores {acc:.1%} on new grids, {abs(gain):.1f} points {side} "all free": no clear gain here.'
+    where = f"{abs(gain):.1f} points {'below' if gain < 0 else 'above'}" if gain else "level with"
+    return f'A {recipe} scores {acc:.1%} on new grids, {where} "all free": no clear gain here.'
 
 
 def held_out_verdict(scores: Mapping[int, float], free: float, n_held: int) -> str:
