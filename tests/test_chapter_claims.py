@@ -1235,11 +1235,10 @@ def chapter_02(
         "| unseen | 80.1% – 94.0% | -5.2 – +1.1 | 3 of 10 |",
         'On the 6 held-out training grids ("all free" 91.3%): 300 steps 90.9% (-0.4 points); 1,500 steps 90.3% '
         '(-1.0 points); 3,000 steps 89.8% (-1.5 points). Best: 300 steps; 0 of 3 lengths above "all free".',
-        "MD:- CAE-long, the paper's network and λ trained 1,500 steps on 30 generated grids (the paper's count), "
-        f"scores {unseen[1]:.1f}% on 500 new grids, {abs(unseen[1] - 87.6):.1f} points "
-        f'{"below" if unseen[1] < 87.6 else "above"} answering "all free" (an empty grid, whatever the input), '
-        'which gets 87.6%: **no better than answering "all free"**.\n'
-        "- So Table 1's 100% on unseen grids does not reproduce.",
+        "MD:Four findings, in this run's numbers:\n\n- CAE-long, the paper's network and λ trained 1,500 steps on 30 "
+        f"generated grids (the paper's count), scores {unseen[1]:.1f}% on 500 new grids, "
+        f'{abs(unseen[1] - 87.6):.1f} points {"below" if unseen[1] < 87.6 else "above"} answering "all free", '
+        'which gets 87.6%: **no better than answering "all free"**.',
     )
 
 

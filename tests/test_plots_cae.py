@@ -158,22 +158,18 @@ def test_accuracy_vs_all_free_has_one_point_per_workspace_and_the_diagonal():
     means = {c.get_gid(): c.get_offsets()[0] for c in ax.collections if c.get_gid().endswith(": mean")}
     assert means.keys() == {"seen: mean", "unseen: mean"}  # each group's mean drawn large, behind every point
     np.testing.assert_allclose(means["unseen: mean"], [0.89, 0.88])
-    hollow = [c for c in ax.collections if c.get_gid().endswith(": mean")]  # r20b: a filled mean hid points at 1.00
-    assert all(c.get_facecolor().size == 0 or np.all(c.get_facecolor()[:, 3] == 0) for c in hollow)
-    (diagonal,) = [line for line in ax.get_lines() if line.get_gid() is None]
+    # reader r51b: filled and ringed in white, as section 7's panels draw theirs; behind the points (r20b: a filled
+    # mean on top hid points at 1.00), so none hides under it
+    filled = [c for c in ax.collections if c.get_gid().endswith(": mean")]
+    assert all(np.all(c.get_facecolor()[:, 3] > 0) for c in filled)
+    assert all(np.allclose(c.get_edgecolor()[0, :3], to_rgb(COLORS["free"])) for c in filled)
+    (diagonal,) = ax.get_lines()  # reader r51b: no dashed lines from the means, read as a second diagonal
     np.testing.assert_allclose(diagonal.get_xdata(), diagonal.get_ydata())
-    # reader r33b: thin lines lead from each mean to both axes, under every point
-    drops = {line.get_gid(): line for line in ax.get_lines() if line.get_gid() is not None}
-    assert drops.keys() == {"seen: mean lines", "unseen: mean lines"}
-    unseen = drops["unseen: mean lines"]
-    assert unseen.get_xdata()[1:].tolist() == pytest.approx([0.89, 0.89])
-    assert unseen.get_ydata()[:2].tolist() == pytest.approx([0.88, 0.88])
-    assert unseen.get_xdata()[0] == ax.get_xlim()[0] and unseen.get_ydata()[-1] == ax.get_ylim()[0]
-    assert unseen.get_zorder() < min(p.get_zorder() for p in points)
     (legend,) = fig.legends  # below the axes, over no point
     assert "99.7%" in legend.get_texts()[0].get_text()  # the seen group's mean accuracy
     assert points[0].get_zorder() > points[1].get_zorder()  # the smaller group drawn on top
-    assert max(m.get_zorder() for m in hollow) < min(p.get_zorder() for p in points)  # r27b: a mean hid a grid
+    assert max(m.get_zorder() for m in filled) < min(p.get_zorder() for p in points)  # r27b: a mean hid a grid
+    assert legend.get_texts()[-1].get_text() == "large filled mark, ringed, in the group's shape: the group's mean"
     assert legend.get_texts()[0].get_text() == "seen: mean 99.7% vs 87.7%"  # r27b: once "seen (trained on) (mean"
 
 
@@ -341,7 +337,7 @@ def test_reconstructions_wrong_cells_carry_marks_one_can_read_at_the_sites_width
     shown = [m for m in legend.findobj(Line2D) if m.get_marker() in ("x", "o")]  # what the legend draws
     assert sorted(m.get_marker() for m in shown) == ["o", "x"] and {m.get_fillstyle() for m in shown} == {"none"}
     # reader r50b: vermillion and blue are CAEs or groups of grids elsewhere on the page; the key says what they mean
-    assert legend.get_title().get_text() == "the colours here: kinds of wrong cell, not models or groups of grids"
+    assert legend.get_title().get_text() == "the colours here: kinds of cell, not models or groups of grids"
     fig.canvas.draw()  # r27b: the legend above the first grid, not a screen below it under the last
     first = fig.subfigs[1]._suptitle.get_window_extent()  # the first workspace's title
     assert legend.get_window_extent().y0 >= first.y1 and not fig.legends

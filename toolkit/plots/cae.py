@@ -141,7 +141,7 @@ def reconstructions(
     handles, labels = legend_handles(list(drawn))  # "missed cell", not "block": mostly single cells (r29b)
     handles.append(Patch(facecolor=colormaps[GREYS_CMAP](1.0), alpha=FADED, edgecolor=COLORS["ink"], linewidth=0.5))
     labels.append("occupied in the input (faded)")  # reader r31b: a seen grid's panel, all grey, read as empty
-    colours = "the colours here: kinds of wrong cell, not models or groups of grids"  # reader r50b: on the page, too
+    colours = "the colours here: kinds of cell, not models or groups of grids"  # r50b; r51b: an ignored flip is right
     key.legend(handles, labels, loc="center", ncols=2, fontsize=9, frameon=False, title=colours, title_fontsize=9)
     grids_said = f"{len(grids)} occupancy grid{'s' if len(grids) > 1 else ''}"
     text = f"{grids_said}, each beside its reconstruction and its wrong cells. " + "; ".join(said)
@@ -167,9 +167,10 @@ def accuracy_vs_all_free(
     on it, the CAE has learned nothing about that workspace. A small group (a few dozen workspaces) has larger, filled
     markers ringed in white, drawn on top, the first over the next. Large groups are hollow markers of their own
     shapes, drawn in turns, a slice of each at a time (:data:`LAYERS`): where clouds overlap every group shows (review
-    r14c). Each group's mean is a large hollow marker behind every point (review r27b), each later one smaller and on
-    top of the earlier: means that coincide nest. ``series[k]``: group ``k``'s
-    :func:`~toolkit.plots.palette.series_style` (by default ``k``): a page keeps one code across figures (r45b).
+    r14c). Each group's mean is a large filled marker, ringed, behind every point (review r27b; reader r51b: as
+    section 7's panels draw it), each later one smaller and on top of the earlier: means that coincide nest.
+    ``series[k]``: group ``k``'s :func:`~toolkit.plots.palette.series_style` (by default ``k``): a page keeps one
+    code across figures (r45b).
     """
     series = tuple(range(len(groups))) if series is None else tuple(series)  # (len(groups),)
     fig = Figure(figsize=(6, 5.2), layout="constrained")
@@ -208,7 +209,6 @@ def accuracy_vs_all_free(
         )
     low = min(min(np.min(f), np.min(a)) for f, a in groups.values())
     ax.plot([low, 1], [low, 1], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal)')
-    _drop_lines(ax, groups, series)
     ax.set_xlabel('share of free cells = accuracy of answering "all free"')
     ax.set_ylabel("reconstruction accuracy")
     ax.set_title("Above the diagonal: better than all free", fontsize=10)
@@ -218,40 +218,31 @@ def accuracy_vs_all_free(
 
 
 def _key(fig: Figure, ax, series: tuple[int, ...]) -> None:
-    """The scatter's legend below it, the means one entry: a hollow mark of each group's shape and colour (r45b)."""
+    """The scatter's legend below it, the means one entry: a filled, ringed mark of each group's shape and colour,
+    drawn as :mod:`toolkit.plots.accuracy_panels` draws its means (r45b; reader r51b: one style on the page)."""
     handles, labels = ax.get_legend_handles_labels()
-    hollow: dict[str, Any] = dict(linestyle="", markersize=11, fillstyle="none", mew=1.3)
-    mean = tuple(Line2D([], [], **{k: series_style(s)[k] for k in ("marker", "color")}, **hollow) for s in series)
-    mean_said = "large hollow mark in the group's shape, its thin lines to the axes: the group's mean"
+    ringed: dict[str, Any] = dict(linestyle="", markersize=11, markeredgecolor=COLORS["free"], mew=1.2)
+    ringed["path_effects"] = halo(1.2, ("ink",))
+    mean = tuple(Line2D([], [], **{k: series_style(s)[k] for k in ("marker", "color")}, **ringed) for s in series)
+    mean_said = "large filled mark, ringed, in the group's shape: the group's mean"
     handles, labels = [*handles, mean], [*labels, mean_said]  # r29b: not in
     key: dict[str, Any] = dict(loc="outside lower center", fontsize=9, frameon=False)
     fig.legend(handles, labels, handler_map={tuple: HandlerTuple(None)}, **key)
 
 
-def _drop_lines(ax, groups: dict[str, tuple[np.ndarray, np.ndarray]], series: tuple[int, ...]) -> None:
-    """Thin lines from each group's mean to both axes, in its colour, under every point (reader r33b: they lead the
-    eye to a mean and read it off)."""
-    (x_low, x_high), (y_low, y_high) = ax.get_xlim(), ax.get_ylim()
-    for k, (name, (all_free, accuracy)) in enumerate(groups.items()):
-        x, y = float(np.mean(all_free)), float(np.mean(accuracy))
-        style = dict(color=series_style(series[k])["color"], linestyle=(0, (4, 2)), linewidth=1.2, zorder=0.5)
-        ax.plot([x_low, x, x], [y, y, y_low], gid=f"{name}: mean lines", **style)
-    ax.set_xlim(x_low, x_high)
-    ax.set_ylim(y_low, y_high)
-
-
 def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int, s: int, few: bool) -> None:
-    """Group ``k`` of ``n``'s mean, a large hollow marker of its style behind every cloud (points zorder 2 and up),
-    each later group's smaller and on top of the earlier, in series ``s``'s style: two means at one spot both show;
-    a ``few`` group's ring well outside a point of its own at the mean (reader r47b)."""
+    """Group ``k`` of ``n``'s mean, a large filled marker of its style ringed in white (as section 7's panels draw
+    theirs; reader r51b), behind every cloud (points zorder 2 and up, each a point of its own over it), each later
+    group's smaller and on top of the earlier, in series ``s``'s style: two means at one spot both show; a ``few``
+    group's mark well outside a point of its own at the mean (reader r47b)."""
     style = series_style(s)
     ax.scatter(
         *mean,
         s=max(MEAN_SIZE * (1 - 0.6 * k / max(n - 1, 1)), 5 * POINT_SIZE * AREA.get(style["marker"], 1.0) * few),
-        facecolors="none",  # hollow: the points under it show (r20b: a filled mean hid the seen grids at 1.00)
-        edgecolors=style["color"],
+        c=style["color"],  # filled, behind the points: none hides under it (r20b: a filled mean on top hid some)
+        edgecolors=COLORS["free"],
         marker=style["marker"],
-        linewidths=1.3,  # reader r40b: a thicker ring on the row of seen grids at 1.00 hid some of them
+        linewidths=1.2,
         zorder=1 + k / (n + 1),
         path_effects=halo(1.2, ("ink",)),
         gid=f"{name}: mean",
