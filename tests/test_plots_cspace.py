@@ -239,6 +239,11 @@ def test_robot_figure_overlays_configurations_nearest_the_viewer_last_and_names_
     assert [p.get_facecolor()[:3] for p in links] == drawn  # from above: lowest first, the upright gripper last
     assert links[-1].get_facecolor()[:3] == to_rgba(KEY_COLORS[1])[:3]
     assert [t.get_text() for t in fig.legends[0].get_texts()] == labels + ["the same in each"]
+    # reader r51a: "at most one of them is plain": the first pose plain, the shared links hatched upright
+    hatches = [p.get_hatch() or "" for p in links]  # drawn in the order of (k, link)
+    assert {h for h, j in zip(hatches, link) if j < 2} == {"||"}
+    assert [j for h, i, j in zip(hatches, k, link) if not h] == [j for i, j in zip(k, link) if i == 0 and j >= 2]
+    assert "light grey, hatched upright" in alt_text(fig)
     with pytest.raises(ValueError, match="2 labels for 3 configurations"):
         robot_drawing.robot_figure(youbot, bending, labels=labels[:2])
 
@@ -471,6 +476,7 @@ def test_the_offices_cabinets_and_desks_differ_in_lightness_and_their_hatches_sh
     assert len({block.get_hatch() for block in faces.values()}) == len(faces) == 6  # reader r50a: a hatch each
     verdict = {palette.COLORS["valid"], palette.COLORS["invalid"], palette.OKABE_ITO["orange"]}
     assert not {to_hex(block.get_facecolor()[0][:3]) for block in faces.values()} & verdict  # r50a: tables orange
+    assert palette.COLORS["overlap"] not in {to_hex(b.get_facecolor()[0][:3]) for b in faces.values()}  # r51a
     # reader r48a: desks cross-hatched like a robot in collision; a kind's hatch is never the verdict's "xx" or "++"
     assert not {block.get_hatch() for block in faces.values()} & {"xx", "++"}
     assert fig.get_figwidth() <= palette.PAGE_WIDTH and fig.legends  # the legend below the view, over no block
