@@ -726,3 +726,25 @@ def test_a_slices_robot_panel_dashes_the_block_a_link_touches_and_keys_each_way_
     moved = _one_link_slice(boxes, x=4.0)  # a unit back: nothing touched
     assert not _patches(moved.axes[1], "touched block")
     assert "dashed: a link touches it" not in [t.get_text() for t in moved.axes[1].get_legend().get_texts()]
+
+
+def test_slice_hits_names_the_block_the_chapters_joint_slice_reaches_and_counts_the_boundary_apart():
+    """Reader r51a: chapter 01's joint2 x joint3 slice said "the last two links sweep into a nearby block" and named
+    none. Over the slice's in-collision pixels, each (link, block) pair that touches is counted; at the chapter's
+    configuration only the last link reaches one block, the unit cube right above the base, in every dark pixel."""
+    clutter0 = scenarios.get("3dc9").make_workspace(np.random.default_rng(0))
+    chain9 = scenarios.get("3dc9").robot
+    checker = exact_checker(clutter0, chain9)
+    q = near_blocks.configuration_near_blocks(checker, np.random.default_rng(0))
+    hits, elsewhere = near_blocks.slice_hits(checker, q, (7, 8), 12)
+    Q = slices.slice_configs(chain9, q, (7, 8), resolution=12)[2].reshape(-1, chain9.dof)
+    dark = int((~checker.are_valid(Q)).sum())
+    assert set(hits) == {(3, 117)} and hits[(3, 117)] == dark > 0 and elsewhere == 0
+    np.testing.assert_array_equal(clutter0.boxes[117], [[0, 9, 1], [1, 10, 2]])
+    table = near_blocks.slice_hits_table(checker, q, (7, 8), 12).splitlines()
+    assert table[2:] == [f"| link 3 | block 117, (0, 9, 1) to (1, 10, 2) | {dark} of 144 |"]
+    empty = Workspace(clutter0.lower, clutter0.upper, clutter0.boxes[:0])  # no block: the floor alone
+    hits, elsewhere = near_blocks.slice_hits(exact_checker(empty, chain9), q, (3, 4), 12)
+    assert not hits and elsewhere > 0
+    table = near_blocks.slice_hits_table(exact_checker(empty, chain9), q, (3, 4), 12).splitlines()
+    assert table[2:] == [f"| a link | the region's boundary | {elsewhere} of 144 |"]
