@@ -718,7 +718,7 @@ def test_a_slices_robot_panel_dashes_the_block_a_link_touches_and_keys_each_way_
     (dashed,) = _patches(ax, "touched block")
     assert dashed.get_linestyle() == "--" and not dashed.get_fill() and dashed.get_xy() == (5.5, 4)
     assert [t.get_text() for t in ax.get_legend().get_texts()] == [
-        "grey: a block at any height",  # reader r48a: a block at z 2-3 over a base at 0.73 looked level with it
+        "grey: a block beside the links (any height)",  # r48a: a block at z 2-3 looked level; r51a: vs dotted?
         "dotted: the links pass over or under",
         "dashed: a link touches it",
     ]
