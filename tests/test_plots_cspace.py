@@ -239,6 +239,11 @@ def test_robot_figure_overlays_configurations_nearest_the_viewer_last_and_names_
     assert [p.get_facecolor()[:3] for p in links] == drawn  # from above: lowest first, the upright gripper last
     assert links[-1].get_facecolor()[:3] == to_rgba(KEY_COLORS[1])[:3]
     assert [t.get_text() for t in fig.legends[0].get_texts()] == labels + ["the same in each"]
+    # reader r51a: "at most one of them is plain": the first pose plain, the shared links hatched upright
+    hatches = [p.get_hatch() or "" for p in links]  # drawn in the order of (k, link)
+    assert {h for h, j in zip(hatches, link) if j < 2} == {"||"}
+    assert [j for h, i, j in zip(hatches, k, link) if not h] == [j for i, j in zip(k, link) if i == 0 and j >= 2]
+    assert "light grey, hatched upright" in alt_text(fig)
     with pytest.raises(ValueError, match="2 labels for 3 configurations"):
         robot_drawing.robot_figure(youbot, bending, labels=labels[:2])
 
@@ -471,6 +476,7 @@ def test_the_offices_cabinets_and_desks_differ_in_lightness_and_their_hatches_sh
     assert len({block.get_hatch() for block in faces.values()}) == len(faces) == 6  # reader r50a: a hatch each
     verdict = {palette.COLORS["valid"], palette.COLORS["invalid"], palette.OKABE_ITO["orange"]}
     assert not {to_hex(block.get_facecolor()[0][:3]) for block in faces.values()} & verdict  # r50a: tables orange
+    assert palette.COLORS["overlap"] not in {to_hex(b.get_facecolor()[0][:3]) for b in faces.values()}  # r51a
     # reader r48a: desks cross-hatched like a robot in collision; a kind's hatch is never the verdict's "xx" or "++"
     assert not {block.get_hatch() for block in faces.values()} & {"xx", "++"}
     assert fig.get_figwidth() <= palette.PAGE_WIDTH and fig.legends  # the legend below the view, over no block
@@ -712,7 +718,7 @@ def test_a_slices_robot_panel_dashes_the_block_a_link_touches_and_keys_each_way_
     (dashed,) = _patches(ax, "touched block")
     assert dashed.get_linestyle() == "--" and not dashed.get_fill() and dashed.get_xy() == (5.5, 4)
     assert [t.get_text() for t in ax.get_legend().get_texts()] == [
-        "grey: a block at any height",  # reader r48a: a block at z 2-3 over a base at 0.73 looked level with it
+        "grey: a block beside the links (any height)",  # r48a: a block at z 2-3 looked level; r51a: vs dotted?
         "dotted: the links pass over or under",
         "dashed: a link touches it",
     ]
@@ -720,3 +726,25 @@ def test_a_slices_robot_panel_dashes_the_block_a_link_touches_and_keys_each_way_
     moved = _one_link_slice(boxes, x=4.0)  # a unit back: nothing touched
     assert not _patches(moved.axes[1], "touched block")
     assert "dashed: a link touches it" not in [t.get_text() for t in moved.axes[1].get_legend().get_texts()]
+
+
+def test_slice_hits_names_the_block_the_chapters_joint_slice_reaches_and_counts_the_boundary_apart():
+    """Reader r51a: chapter 01's joint2 x joint3 slice said "the last two links sweep into a nearby block" and named
+    none. Over the slice's in-collision pixels, each (link, block) pair that touches is counted; at the chapter's
+    configuration only the last link reaches one block, the unit cube right above the base, in every dark pixel."""
+    clutter0 = scenarios.get("3dc9").make_workspace(np.random.default_rng(0))
+    chain9 = scenarios.get("3dc9").robot
+    checker = exact_checker(clutter0, chain9)
+    q = near_blocks.configuration_near_blocks(checker, np.random.default_rng(0))
+    hits, elsewhere = near_blocks.slice_hits(checker, q, (7, 8), 12)
+    Q = slices.slice_configs(chain9, q, (7, 8), resolution=12)[2].reshape(-1, chain9.dof)
+    dark = int((~checker.are_valid(Q)).sum())
+    assert set(hits) == {(3, 117)} and hits[(3, 117)] == dark > 0 and elsewhere == 0
+    np.testing.assert_array_equal(clutter0.boxes[117], [[0, 9, 1], [1, 10, 2]])
+    table = near_blocks.slice_hits_table(checker, q, (7, 8), 12).splitlines()
+    assert table[2:] == [f"| link 3 | block 117, (0, 9, 1) to (1, 10, 2) | {dark} of 144 |"]
+    empty = Workspace(clutter0.lower, clutter0.upper, clutter0.boxes[:0])  # no block: the floor alone
+    hits, elsewhere = near_blocks.slice_hits(exact_checker(empty, chain9), q, (3, 4), 12)
+    assert not hits and elsewhere > 0
+    table = near_blocks.slice_hits_table(exact_checker(empty, chain9), q, (3, 4), 12).splitlines()
+    assert table[2:] == [f"| a link | the region's boundary | {elsewhere} of 144 |"]

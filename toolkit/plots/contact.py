@@ -74,14 +74,18 @@ def key_blocks(ax, robot: BoxRobot, workspace: Workspace, q, plane: tuple[int, i
     """Outline dashed each block a link touches at ``q (dof,)`` in a flat view onto ``plane``, as the figure of one
     check does, and key the panel below it: grey, a block; dotted, one the links pass over or under (in front or
     behind, from the side); dashed, one a link touches; each entry only where such a block is drawn (review r37a:
-    grey blocks beside a valid robot read as touched). Grey is a block at any height (reader r48a). Returns how many
-    blocks are dashed."""
+    grey blocks beside a valid robot read as touched). Grey is a block beside the links, at any height (r48a, r51a).
+    Returns how many blocks are dashed."""
     at = list(plane)
     touched = sorted({block for _, block, _ in contacts(robot, workspace, q)})
     for b_lo, b_hi in workspace.boxes[touched]:
         ax.add_patch(Rectangle(b_lo[at], *(b_hi - b_lo)[at], gid="touched block", zorder=4, **TOUCHED))
     depth = "height" if plane == (0, 1) else "depth"  # reader r48a: a block far above the base drawn like one beside it
-    key = {f"grey: a block at any {depth}": Patch(facecolor=COLORS["block"], edgecolor=COLORS["occupied"], alpha=0.5)}
+    key = {
+        f"grey: a block beside the links (any {depth})": Patch(
+            facecolor=COLORS["block"], edgecolor=COLORS["occupied"], alpha=0.5
+        )
+    }
     if dotted:
         past = "over or under" if plane == (0, 1) else "in front or behind"
         key[f"dotted: the links pass {past}"] = Patch(fill=False, linestyle=":", edgecolor=COLORS["occupied"])

@@ -3,13 +3,14 @@ sweep slices of configuration space through it (paper §II-A: a C-obstacle seen 
 
 A random valid configuration is usually far from every block, and its slices are all free;
 :func:`configuration_near_blocks` picks one whose slices cross C-obstacles, :func:`nudged_into_a_block` moves it
-until a block makes it invalid (the figure of one check), and :func:`slice_explorer` draws
-:func:`toolkit.plots.cspace.cspace_slice` through it under sliders.
+until a block makes it invalid (the figure of one check), :func:`slice_hits` names the blocks a slice's links
+reach, and :func:`slice_explorer` draws :func:`toolkit.plots.cspace.cspace_slice` through it under sliders.
 """
 
 from __future__ import annotations
 
 import itertools
+from collections import Counter
 from functools import lru_cache
 
 import numpy as np
@@ -17,6 +18,7 @@ import numpy as np
 from toolkit.geometry.collision import CollisionChecker, exact_checker
 from toolkit.plots.contact import touching
 from toolkit.plots.cspace import checker_workspace, cspace_slice
+from toolkit.plots.slices import slice_configs
 
 
 def configuration_near_blocks(checker: CollisionChecker, rng: np.random.Generator, n: int = 2000) -> np.ndarray:
@@ -51,6 +53,35 @@ def nudged_into_a_block(checker: CollisionChecker, q, dofs: tuple[int, ...] = (0
             if robot.in_bounds(moved[None])[0] and not checker.is_valid(moved) and touching(robot, workspace, moved):
                 return moved
     return None
+
+
+def slice_hits(checker: CollisionChecker, q, joints: tuple[int, int], resolution: int) -> tuple[Counter, int]:
+    """Over the in-collision pixels of :func:`toolkit.plots.cspace.cspace_slice`'s slice through ``q`` sweeping
+    ``joints``: how many pixels each (link, block) pair touches in, and how many no block touches in (a link out of
+    the region). Reader r51a: the text named no block for the links to sweep into."""
+    robot, workspace = checker.robot, checker_workspace(checker)
+    Q = slice_configs(robot, q, joints, resolution=resolution)[2].reshape(-1, robot.dof)  # (n * n, dof)
+    hits: Counter = Counter()
+    elsewhere = 0
+    for moved in Q[~checker.are_valid(Q)]:
+        pairs = touching(robot, workspace, moved)
+        hits.update(pairs)
+        elsewhere += not pairs
+    return hits, elsewhere
+
+
+def slice_hits_table(checker: CollisionChecker, q, joints: tuple[int, int], resolution: int) -> str:
+    """:func:`slice_hits` as a Markdown table: each link, the block it reaches (its corners) and in how many of the
+    slice's pixels."""
+    hits, elsewhere = slice_hits(checker, q, joints, resolution)
+    boxes, pixels = checker_workspace(checker).boxes, int(resolution) ** 2
+    corner = lambda c: "(" + ", ".join(f"{v:g}" for v in c) + ")"
+    rows = [
+        f"| link {link} | block {block}, {corner(boxes[block][0])} to {corner(boxes[block][1])} | {n} of {pixels} |"
+        for (link, block), n in sorted(hits.items())
+    ]
+    rows += [f"| a link | the region's boundary | {elsewhere} of {pixels} |"] if elsewhere else []
+    return "| link | touches | pixels |\n| --- | --- | ---: |\n" + "\n".join(rows)
 
 
 def slice_explorer(sweeps: dict[str, tuple[int, int]], start: str, seed: int = 0, resolution: int = 60):

@@ -61,7 +61,7 @@ KIND_SHADES = (
     (COLORS["ink"], ""),  # chairs: black (r40a: orange specks unseen), where no hatch would show
     (COLORS["free"], "||"),  # desks: white
     (OKABE_ITO["reddish purple"], ".."),  # shelves
-    (COLORS["obstacle"], "//"),  # tables: Okabe and Ito's yellow
+    (COLORS["block"], "//"),  # tables: a block's grey (reader r51a: yellow meant "inside the block" too)
     (COLORS["rejected"], "\\\\"),  # walls: dark grey
 )
 """The office's furniture kinds (sorted), each in a colour and a hatch of its own (its picture in
@@ -269,7 +269,8 @@ def _fit_height(fig: Figure, axes: list, legend: int) -> None:
     fig.set_size_inches(fig.get_figwidth(), rows * (drawn * ratio + 0.8) + (0.1 + 0.3 * legend) * bool(legend))
 
 
-SHARED_SHADE = (COLORS["shade"], None)  # links the same in every configuration drawn (the youBot's platform, turret)
+SHARED_SHADE = (COLORS["shade"], KEY_HATCHES[-1])  # links the same in every configuration (the youBot's platform,
+# turret), hatched: beside a plain pose none but that pose is plain (reader r51a)
 BASE_MARK: dict[str, Any] = dict(marker="o", ms=7, color=COLORS["ink"], mec=COLORS["free"], ls="", zorder=99)
 
 
@@ -319,7 +320,8 @@ def _shades_text(shade_names: dict, parts: bool) -> str:
             f" Its base is marked with a black dot; its links from the base ({', '.join(shade_names)}), each shaded"
             " and, in a flat view, numbered on the drawing."
         )
-    return " Links the same in every configuration are drawn in light grey ('the same in each')." * bool(shade_names)
+    same = f" Links the same in every configuration are drawn in light grey, {_hatch_name(SHARED_SHADE[1])}"
+    return (same + " ('the same in each').") * bool(shade_names)
 
 
 def _robot_figure_text(robot, count, views, near, valid, labels, hatches, named) -> str:
