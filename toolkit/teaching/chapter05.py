@@ -50,7 +50,7 @@ def answer(threshold: float | None = None) -> str:
     """The chapter's answer from the record (reader r31e): did prediction shorten a 3DC-7 query by 10 % or more in
     Algorithm 1, with either checker, by either statistic; why not, in one sentence a student can repeat (r39e, lift
     2); one row per checker under it, each query's own ratio (r39e, lift 1); the rest folded. ``threshold``: this
-    notebook's model's, named in the folded list of trainings (reader r46e, lift 4)."""
+    notebook's model's, once named in the fold; its trainings' table is §5's now (reader r51e, 05 lift 4)."""
     compiled = recorded.query_ratios(COMPILED)[SCENARIO]  # {sampler: median of each query's own ratio}
     fcl_total = recorded.query_ratios(FCL)[SCENARIO]
     fcl_sampling = recorded.improvements(FCL, SCENARIO, "sampling")  # means
@@ -110,26 +110,17 @@ def _moved(ratio: float) -> str:
 
 def answer_map(threshold: float | None = None) -> str:
     """A map beside the answer (reader r45e, 05 item 4): which training, which planner and which statistic the answer
-    uses, against the others the chapter shows; the three trainings of `strong`, each with its threshold (this
-    notebook's ``threshold``, where given), under it; both in the answer's one fold (reader r47e, lift 2)."""
-    mine = "its threshold under §5's view" if threshold is None else f"threshold {threshold:.2f}"
+    uses, against the others the chapter shows, in the answer's one fold (reader r47e, lift 2); the three trainings'
+    table is §5's alone (reader r51e, 05 lift 4: it was shown twice), :func:`chapter05_runs.trainings`."""
     return (
         "Which of the chapter's runs the answer reads:\n\n"
         "| what | the answer uses | the chapter also shows |\n| --- | --- | --- |\n"
         f"| training of `strong` | the {TIMED} (threshold {recorded_threshold(COMPILED):.2f}) | the {MINE} and the "
-        f"{LAZY} (the table below) |\n"
+        f"{LAZY} (section 5 tables the three trainings) |\n"
         "| planner | Algorithm 1 (planner `paper`) | §6–7: the lazy PRM's path; the closing fold: the lazy PRM "
         "timed |\n"
         f"| statistic | the verdict: the median of each query's own ratio; the limit in **Why**: mean times "
         "| the ratio of means (Table 3's: the sampling table, the folds); a ratio of two medians (the closing fold) |"
-        "\n\nThe three trainings of `strong` in this chapter, each with its own weights, threshold and label:\n\n"
-        "| training | threshold | where the chapter uses it |\n| --- | ---: | --- |\n"
-        f"| **{TIMED}** ({run_name(COMPILED).split(', threshold')[0]}) | {recorded_threshold(COMPILED):.2f} | the "
-        "answer, its accuracy row at the end |\n"
-        f"| **{MINE}** (`trained_models`, cached) | {mine.removeprefix('threshold ')} | §5's views, §6–7's "
-        "path, its accuracy row at the end |\n"
-        f"| **{LAZY}** ({run_name('strong').split(', threshold')[0]}) | {recorded_threshold('strong'):.2f} | the "
-        "closing fold: the lazy PRM timed |"
     )
 
 
@@ -177,8 +168,8 @@ MORAL = (  # reader r41e, 05 lift 3: the answer's moral, at the end of its "Why.
     "change its time either way."
 )
 DETAILS = (  # the answer's one fold (reader r47e, 05 lift 2: the top slimmed to the answer and one table)
-    "Details of the answer: what skipping the checks could save per sampler, which runs it reads (three trainings "
-    "of the strong recipe), and the ratio of the means"  # a summary shows no Markdown: no backticks
+    "Details of the answer: what skipping the checks could save per sampler, which runs it reads, and the ratio of "
+    "the means"  # a summary shows no Markdown: no backticks
 )
 HEADER = "| measured | " + " | ".join(SAMPLERS) + " |\n| --- |" + " --- |" * len(SAMPLERS)  # a time table's head
 
