@@ -67,7 +67,7 @@ def answer(threshold: float | None = None) -> str:
     return (
         ("**No.** On 3DC-7 no sampler's whole query saved 10 % or more" if none_saved else "**Not always.** On 3DC-7")
         + f" with the {TIMED} (an accurate `strong` network) inside Algorithm 1, by the median of each query's own "
-        "ratio (the table below), with our compiled exact checker or the slow python-fcl: at most "
+        "ratio (the table below), timed against our compiled exact checker or the slow python-fcl: at most "
         f'{max(1 - r for r in own) * 100:.0f} % less time. The "No" is about cost, not accuracy: the network is '
         f"right on {accuracy * 100:.0f} % of uniform samples, but its answer costs more than a compiled check, and "
         "with python-fcl sampling is too small a share of a query.\n\n**Why.** "
