@@ -330,7 +330,8 @@ def test_the_index_opens_in_short_sentences():
         # reader r49e, home 6: the page's question before its answer; reader r50e, home lift 1: the time answer
         # first ("mostly no"), accuracy after it, and whose `strong` is at its first use
         "**The question:** does the paper's learned collision check save a planner time? "
-        "**The answer: mostly no. An accurate network of our own, `strong`, rarely saves a whole query's time. "
+        "**The answer: mostly no. An accurate network of our own, `strong`, rarely saves a whole query's time "
+        "(judged by each query's own ratio, defined below). "  # reader r51e, home lift 4: the statistic named
         "It saves sampling time where the exact check is slow, and mostly slows sampling where the "
         "exact check is fast. The paper's network, rebuilt here, is right on only "  # r39e: 3DC-7 2.4-3.3x
         f"{percents(chance)} of unseen samples in a balanced test.**"
