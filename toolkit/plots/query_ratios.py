@@ -209,7 +209,7 @@ def _legend_entries(ax, series: tuple[str, str] | None, edge: tuple[float, float
         edge_band(ax, *edge)
     for hollow, name in zip((False, True), series or ()):
         label = f"{'hollow' if hollow else 'filled'}: {name}"
-        ax.plot([], [], linestyle="none", marker="o", markersize=SIZE, label=label, **_fill(COLORS["ink"], hollow))
+        ax.plot([], [], linestyle="none", marker="o", markersize=SIZE, label=label, **_fill(LINE_COLORS[5], hollow))
     return pairs
 
 
@@ -252,10 +252,9 @@ def _fill(colour: str, hollow: bool) -> dict:
 
 
 def _read(reads: str) -> str:
-    """A legend's entry: what a median that reads as ``reads`` is."""
-    return {COSTS: "median costs time (1.10 or more)", TIES: "median a tie", SAVES: "median saves time (0.90 or less)"}[
-        reads
-    ]
+    """A legend's entry: where a median that reads as ``reads`` lies (reader r51e: not "costs" or "saves", which a
+    point inside the noise band does not show); the fill key's circles are grey, as black is a verdict's colour."""
+    return {COSTS: "median 1.10 or more", TIES: "median in the tie band", SAVES: "median 0.90 or less"}[reads]
 
 
 def _words(cells: Cells, title: str, tie: float, label: str = "") -> str:

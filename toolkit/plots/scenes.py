@@ -1,15 +1,14 @@
 """Figures of notebook 05: a planned path of a 3D robot, one frame at a time (paper §III-B, Algorithm 1).
 
-A PRM path is a list of configurations joined by straight lines in configuration space (the straight-line local
-planner of §III-B). :func:`scene_still` draws a viewer's scene as a still picture (what a browser without WebGL shows
-in the 3D view's place): the whole workspace with its samples and the path, and the robot close up, its panels drawn
-by :mod:`toolkit.plots.still_panels`. :func:`path_frame` shows one configuration along a path in the workspace, among
-the blocks near the robot (the closest pair marked by :mod:`toolkit.plots.closest_pair`), next to what stays hidden
-in a 3D picture, drawn by :mod:`toolkit.plots.path_series`: every degree of freedom along the path, how much room the
-robot has (the exact checker's clearance bound) and what a learned model thinks of each configuration (P(valid)).
-
-The 3D drawing of the robot and its nearby blocks is :mod:`toolkit.plots.robot_drawing`'s.
-Every function returns a matplotlib ``Figure`` and never calls ``show()``.
+A PRM path is a list of configurations joined by straight lines in configuration space (the straight-line local planner
+of §III-B). :func:`scene_still` draws a viewer's scene as a still picture (what a browser without WebGL shows in the 3D
+view's place): the whole workspace with its samples and the path, and the robot close up, its panels drawn by
+:mod:`toolkit.plots.still_panels`. :func:`path_frame` shows one configuration along a path in the workspace, among the
+blocks near the robot (the closest pair marked by :mod:`toolkit.plots.closest_pair`), next to what stays hidden in a 3D
+picture, drawn by :mod:`toolkit.plots.path_series`: every degree of freedom along the path, how much room the robot has
+(the exact checker's clearance bound) and what a learned model thinks of each configuration (P(valid)). The 3D drawing
+of the robot and its nearby blocks is :mod:`toolkit.plots.robot_drawing`'s. Every function returns a matplotlib
+``Figure`` and never calls ``show()``.
 """
 
 from __future__ import annotations
@@ -56,6 +55,7 @@ CLOSE_UP_HEIGHT = 3.2  # inches: a row of two close-ups
 SINGLE_CLOSE_UP_HEIGHT = 3.6  # inches: a single pose's close-up, a row of its own (reader r31e)
 FLAT_OVERVIEW_HEIGHT = 4.0  # inches: the overview of a flat workspace (still_panels.flat), drawn larger
 OVERVIEW_HEIGHT = 5.0  # inches: the overview, a row of its own (review r16c: in half a row, 230 px, stars were lost)
+OVERVIEW_COLUMNS = ("what", "in the workspace or sample set", "drawn in the overview")  # r51e: not "what is drawn"
 
 
 def scene_still(
@@ -221,14 +221,17 @@ def _still_described(robot, workspace, poses, valid, samples, trace, seen, model
     samples and blocks near it and where the camera stands, ``seen``: ``{label: (samples, blocks, (elev, azim))}``,
     and what the ``model`` answers for it)."""
     text = _overview_words(robot, workspace, poses, samples, trace)
-    counted = [("blocks", str(len(workspace.boxes)))]
+    n = len(samples[0]) if samples else 0  # reader r51e, 05 item 1: the sample set's counts beside what is drawn
+    keep = np.arange(n) % max(1, overview_step(n, len(workspace.boxes))) == 0  # (N,) as still_panels.overview draws
+    keep = keep | dangerous_mask(samples[1]) if samples else keep  # every k-th, and every dangerous mistake
+    counted = [("blocks", *[str(len(workspace.boxes))] * 2)]
     kinds = {k: m for k, m in (samples[1] if samples else {}).items() if model or k != "model wrong"}  # r48e, 05 5
-    counted += [(f"samples {kind}", str(int(m.sum()))) for kind, m in kinds.items()]  # no model: no "model wrong"
-    counted += [("points of the base's path", str(len(trace)))] if trace is not None else []
+    counted += [(f"samples {kind}", str(int(m.sum())), str(int((m & keep).sum()))) for kind, m in kinds.items()]
+    counted += [("points of the base's path", *[str(len(trace))] * 2)] if trace is not None else []
     within = f"blocks within {NEAR} of a link"
     columns = ("pose", "exact checker", "samples drawn near it (none over it)", within, "seen from")
     parts = [
-        Part("the whole workspace", "what the overview draws", ("drawn", "count"), tuple(counted)),
+        Part("the whole workspace", "its sample set, and what is drawn", OVERVIEW_COLUMNS, tuple(counted)),
         Part(
             "the robot close up",
             "each pose's joint values, in the robot's order, what the exact checker says of it, and the camera's "
@@ -287,8 +290,8 @@ def _overview_words(robot, workspace, poses, samples, trace) -> str:
     pose."""
     text = f"{scene_words(workspace, robot)} as a still: "
     text += "the whole workspace"
-    if samples is not None:
-        text += ", " + ", ".join(
+    if samples is not None:  # reader r51e, 05 item 1: these counts are the sample set's, the overview draws fewer
+        text += "; in its sample set, " + ", ".join(
             f"{int(m.sum())} samples {kind} ({SAMPLE_WORDS[kind]})" for kind, m in samples[1].items() if m.any()
         )
         step = overview_step(len(samples[0]), len(workspace.boxes))

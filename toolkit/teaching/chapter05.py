@@ -50,7 +50,7 @@ def answer(threshold: float | None = None) -> str:
     """The chapter's answer from the record (reader r31e): did prediction shorten a 3DC-7 query by 10 % or more in
     Algorithm 1, with either checker, by either statistic; why not, in one sentence a student can repeat (r39e, lift
     2); one row per checker under it, each query's own ratio (r39e, lift 1); the rest folded. ``threshold``: this
-    notebook's model's, named in the folded list of trainings (reader r46e, lift 4)."""
+    notebook's model's, once named in the fold; its trainings' table is §5's now (reader r51e, 05 lift 4)."""
     compiled = recorded.query_ratios(COMPILED)[SCENARIO]  # {sampler: median of each query's own ratio}
     fcl_total = recorded.query_ratios(FCL)[SCENARIO]
     fcl_sampling = recorded.improvements(FCL, SCENARIO, "sampling")  # means
@@ -62,17 +62,19 @@ def answer(threshold: float | None = None) -> str:
     best = max(SAMPLERS, key=lambda s: shares[s] * fcl_sampling[s])  # whose sampling cut could take most off
     rates = _rates()
     cost = rates["exact cfg/s"] / rates["learned cfg/s"]  # compiled exact checks in the time of one network answer
-    # reader r41e, 05 contradiction 2: the visible sentence rests on the visible table; the means are folded (r42e,
-    # lift 4: the fold's title names them, and the timed network's accuracy is said there too)
+    # reader r51e, 05 item 2: the answer in two plain sentences, the "No" about cost with the accuracy beside it
+    accuracy = recorded_scores(COMPILED)[0]["acc"]
     return (
         ("**No.** On 3DC-7 no sampler's whole query saved 10 % or more" if none_saved else "**Not always.** On 3DC-7")
         + f" with the {TIMED} (an accurate `strong` network) inside Algorithm 1, by the median of each query's own "
-        "ratio (the table below), timed against our compiled exact checker or against the slow python-fcl: at most "
-        f"{max(1 - r for r in own) * 100:.0f} % less time.\n\n**Why.** "
-        + _why(shares, fcl_sampling, fcl_total)
-        + f" With our fast compiled checker, one network answer costs as much as {cost:.1f} exact checks, so sampling "
+        "ratio (the table below), timed against our compiled exact checker or the slow python-fcl: at most "
+        f'{max(1 - r for r in own) * 100:.0f} % less time. The "No" is about cost, not accuracy: the network is '
+        f"right on {accuracy * 100:.0f} % of uniform samples, but its answer costs more than a compiled check, and "
+        "with python-fcl sampling is too small a share of a query.\n\n**Why.** "
+        f"With our fast compiled checker, one network answer costs as much as {cost:.1f} exact checks, so sampling "
         f"took {span(_ratios(recorded.improvements(COMPILED, SCENARIO, 'sampling')))} times as long (it does more than "
-        "check)."
+        "check). "
+        + _why(shares, fcl_sampling, fcl_total)
         + (MORAL if none_saved and cost > 1 else "")
         + "\n\n"
         + total_table()
@@ -89,22 +91,15 @@ def answer(threshold: float | None = None) -> str:
 
 
 def _why(shares, cut, own) -> str:
-    """The "Why" for python-fcl (r45e-r50e): sampling's share times its cut (means) bounds what skipping saves."""
+    """The "Why" for python-fcl (r45e-r50e): sampling's share times its cut (means) bounds what skipping the sample
+    checks saves, not the whole query (reader r51e, 05 item 3); the band it lies in is the fold's (r51e, item 2)."""
     limit = {s: shares[s] * cut[s] for s in SAMPLERS}  # of a query's mean time
     best = max(SAMPLERS, key=limit.__getitem__)
-    said = (
-        f"With python-fcl, sampling took at most {max(shares.values()) * 100:.0f} % of a 3DC-7 query, so skipping "
-        f"its checks could take at most {limit[best] * 100:.0f} % off a query ({best}, from mean times)."
+    return (
+        f"With python-fcl, sampling took at most {max(shares.values()) * 100:.0f} % of a 3DC-7 query, so the most "
+        f"that skipping its checks could save is {limit[best] * 100:.0f} % of a query's mean time ({best}). "
+        f"{best}'s whole query {_moved(own[best])} ({own[best]:.2f}, the median of its own ratios)."
     )
-    band = floors()["means"]  # a bound of mean times, read against a ratio of means' band (reader r50e)
-    for s in (s for s in SAMPLERS if limit[s] >= TIE):
-        said += (  # python-fcl's run borrows the compiled run's bands (common rule 4)
-            f" Even all {limit[s] * 100:.0f} % would lie inside a ratio of means' noise band (the fold's table gives"
-            " it; python-fcl's run borrows the compiled run's band), and"
-            if inside(1 - limit[s], band)
-            else " Yet"
-        ) + f" {s}'s whole query {_moved(own[s])} instead ({own[s]:.2f}, the median of its own ratios)."
-    return said
 
 
 def _moved(ratio: float) -> str:
@@ -115,26 +110,17 @@ def _moved(ratio: float) -> str:
 
 def answer_map(threshold: float | None = None) -> str:
     """A map beside the answer (reader r45e, 05 item 4): which training, which planner and which statistic the answer
-    uses, against the others the chapter shows; the three trainings of `strong`, each with its threshold (this
-    notebook's ``threshold``, where given), under it; both in the answer's one fold (reader r47e, lift 2)."""
-    mine = "its threshold under §5's view" if threshold is None else f"threshold {threshold:.2f}"
+    uses, against the others the chapter shows, in the answer's one fold (reader r47e, lift 2); the three trainings'
+    table is §5's alone (reader r51e, 05 lift 4: it was shown twice), :func:`chapter05_runs.trainings`."""
     return (
         "Which of the chapter's runs the answer reads:\n\n"
         "| what | the answer uses | the chapter also shows |\n| --- | --- | --- |\n"
         f"| training of `strong` | the {TIMED} (threshold {recorded_threshold(COMPILED):.2f}) | the {MINE} and the "
-        f"{LAZY} (the table below) |\n"
+        f"{LAZY} (section 5 tables the three trainings) |\n"
         "| planner | Algorithm 1 (planner `paper`) | §6–7: the lazy PRM's path; the closing fold: the lazy PRM "
         "timed |\n"
         f"| statistic | the verdict: the median of each query's own ratio; the limit in **Why**: mean times "
         "| the ratio of means (Table 3's: the sampling table, the folds); a ratio of two medians (the closing fold) |"
-        "\n\nThe three trainings of `strong` in this chapter, each with its own weights, threshold and label:\n\n"
-        "| training | threshold | where the chapter uses it |\n| --- | ---: | --- |\n"
-        f"| **{TIMED}** ({run_name(COMPILED).split(', threshold')[0]}) | {recorded_threshold(COMPILED):.2f} | the "
-        "answer, its accuracy row at the end |\n"
-        f"| **{MINE}** (`trained_models`, cached) | {mine.removeprefix('threshold ')} | §5's views, §6–7's "
-        "path, its accuracy row at the end |\n"
-        f"| **{LAZY}** ({run_name('strong').split(', threshold')[0]}) | {recorded_threshold('strong'):.2f} | the "
-        "closing fold: the lazy PRM timed |"
     )
 
 
@@ -182,8 +168,8 @@ MORAL = (  # reader r41e, 05 lift 3: the answer's moral, at the end of its "Why.
     "change its time either way."
 )
 DETAILS = (  # the answer's one fold (reader r47e, 05 lift 2: the top slimmed to the answer and one table)
-    "Details of the answer: what skipping the checks could save per sampler, which runs it reads (three trainings "
-    "of the strong recipe), and the ratio of the means"  # a summary shows no Markdown: no backticks
+    "Details of the answer: what skipping the checks could save per sampler, which runs it reads, and the ratio of "
+    "the means"  # a summary shows no Markdown: no backticks
 )
 HEADER = "| measured | " + " | ".join(SAMPLERS) + " |\n| --- |" + " --- |" * len(SAMPLERS)  # a time table's head
 
@@ -201,9 +187,13 @@ def share_table(fcl_total, fcl_sampling, shares) -> str:
         f"| {s} | {shares[s]:.1%} | {fcl_sampling[s]:.0%} | {shares[s] * fcl_sampling[s]:.1%} | {fcl_total[s]:.2f} |"
         for s in SAMPLERS
     )
+    most, band = max(shares[s] * fcl_sampling[s] for s in SAMPLERS), floors()["means"]  # r51e, 05 item 2: folded
+    said = f" Even all {most * 100:.0f} % would lie inside a ratio of means' noise band, {band[0]:.2f}–{band[1]:.2f}"
+    said = said + " (python-fcl's run borrows the compiled run's band)." if inside(1 - most, band) else ""
     return (
         f"With python-fcl the network cut sampling time by {span(fcl_sampling, 100, 0)} % (means). Sampling's share "
-        "of a query's mean time without the network, times that cut, is the most the cut could take off a query:\n\n"
+        "of a query's mean time without the network, times that cut, is the most that skipping the sample checks "
+        "could save; the rest of a query can still move either way on its own." + said + "\n\n"
         "| sampler | sampling's share of a query (means) | sampling cut (means) | at most saved (means) "
         "| each query's own ratio (median) |\n| --- | ---: | ---: | ---: | ---: |\n" + rows
     )
@@ -225,7 +215,7 @@ def _answer_numbers(best_means: float, best: str) -> str:
         f"The network timed in both is the {TIMED} ({run_name(COMPILED)}); section 5's views use the {MINE}. "
         f"The {TIMED} is accurate: right on {scores['acc']:.0%} of "
         'uniform samples in the record\'s unseen 3DC-7 workspaces, where answering "valid" to all is right on '
-        f'{share:.0%} (its row in the accuracy table at the end). The "No" is about cost, not accuracy.'
+        f"{share:.0%} (its row in the accuracy table at the end)."
     )
 
 

@@ -303,5 +303,22 @@ def paper_share() -> str:
 
 def trainings(threshold: float) -> str:
     """§5's map of the three trainings of `strong`, each with its threshold (``threshold``: the notebook's network's),
-    beside the section's first mention of them (reader r50e, 05 lift 5); the same table as the answer's fold."""
-    return "The three trainings" + chapter05.answer_map(threshold).partition("The three trainings")[2]
+    beside the section's first mention of them (reader r50e, 05 lift 5); the answer's fold names them only (r51e)."""
+    timed, mine, lazy, name, at = (
+        chapter05.TIMED,
+        chapter05.MINE,
+        chapter05.LAZY,
+        chapter05.run_name,
+        chapter05.COMPILED,
+    )
+    threshold_of = chapter05.recorded_threshold
+    return (
+        "The three trainings of `strong` in this chapter, each with its own weights, threshold and label:\n\n"
+        "| training | threshold | where the chapter uses it |\n| --- | ---: | --- |\n"
+        f"| **{timed}** ({name(at).split(', threshold')[0]}) | {threshold_of(at):.2f} | the answer, its accuracy "
+        "row at the end |\n"
+        f"| **{mine}** (`trained_models`, cached) | {threshold:.2f} | §5's views, §6–7's path, its accuracy row at "
+        "the end |\n"
+        f"| **{lazy}** ({name('strong').split(', threshold')[0]}) | {threshold_of('strong'):.2f} | the closing "
+        "fold: the lazy PRM timed |"
+    )
