@@ -246,7 +246,7 @@ def animation_summary(
         p = np.asarray(model.probability(configurations), dtype=float)  # (F,)
         doubted = frames - int(np.sum(model.are_valid(configurations)))
         words.append(
-            f"The model's P(valid), the colour of the wireframe around the links (dark low, light high), ranges "
+            f"The model's P(valid), the colour of the wireframe around the links (dark grey low, yellow high), ranges "
             f"{p.min():.2f}–{p.max():.2f} along the path (lowest {100 * np.argmin(p) / max(frames - 1, 1):.0f} % of "
             f"the way along), median {np.median(p):.2f}; the model calls the robot "
             f"colliding (P(valid) below its threshold) at {doubted} of the {frames} frames."
