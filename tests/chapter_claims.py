@@ -974,14 +974,18 @@ STATUS = re.compile(  # findings.claim_status: the paper's claim from the record
     r"(?:\([^)]*\) )?in "
     r"(none|\d+) of the (\d+) scenario–sampler pairs"
 )
-ANSWER_NO = "**No.** Letting our accurate network"  # chapter04.answer's first words (reader r50d: plain words first)
+# chapter04.answer's first words (reader r50d: plain words first; r51d: its statistic named)
+ANSWER_NO = "**No.** By each query's own ratio, letting our accurate network"
 FAST_BULLET = re.compile(  # chapter04.answer: three sentences, then the counts in a table (r46d item 3), one-spaced
-    r"\*\*(?:No|Rarely|In part)\.\*\* Letting our accurate network decide which samples are valid (?:did not make|"
-    r"made) the paper's planner take 10 % or more less time in (?:any cell|only \d+ of \d+ cells) with our fast "
-    r"exact checker: sampling, whose checks the network replaces, is at most (?P<share>\d+) % of a query, and that "
+    r"\*\*(?:No|Rarely|In part)\.\*\* By each query's own ratio, letting our accurate network decide which samples "
+    r"are valid (?:did not make|made) the paper's planner take 10 % or more less time in "
+    r"(?:any cell|only \d+ of \d+ cells) with our fast exact checker: sampling, whose checks the network replaces, "
+    r"is at most (?P<share>\d+) % of a query, and that "
     r"checker is [^.]+\. Even against slow python-fcl, where sampling is (?P<low>\d+\.\d)–(?P<high>\d+) % of a query, "
     r"(?:no cell|only \d+ of \d+ cells) took 10 % or more less time\. "
-    r"The paper's Table 3 takes less time in (?P<some>\d+) of its \d+ cells, 10 % or more less in (?P<papers>\d+)\.\s"
+    r"By means, Table 3's statistic, (?:no cell|(?P<means>\d+) of \d+ cells) took 10 % or more less time with our "
+    r"fast checker, (?P<means_beyond>none|\d+) beyond that statistic's noise band; "
+    r"the paper's Table 3 takes less time in (?P<some>\d+) of its \d+ cells, 10 % or more less in (?P<papers>\d+)\.\s"
     r"\| (?P<total>\d+) scenario–sampler cells, by the median of each query's own time ratio \(with ÷ without\) "
     r"\| faster \| tie \| slower \|\s\| --- \| --- \| --- \| --- \|\s"
     r"\| our fast exact checker \| (?P<fast>none|\d+)(?: \(\d+ beyond the noise band\))? \| (?P<fast_ties>none|\d+) "
@@ -1073,6 +1077,12 @@ def _claim_status(nb, found: list[tuple[list[str], list[list[str]]]], said: dict
     if plain not in ([], [share]):  # reader r50d, items 1 and 2: sampling's share in plain words, from the record
         problems.append(f"04: the answer gives sampling's share of a query as {plain}; the record: {share}")
     means_line = [m["fast_means"] for m in MEANS_LINE.finditer(" ".join(outputs))]
+    first_means = [
+        (m["means"] or "none", m["means_beyond"]) for m in FAST_BULLET.finditer(outputs[0] if outputs else "")
+    ]
+    clear = str(len(costs.clear_mean_savings(recorded.ALGORITHM_1)) or "none")
+    if first_means not in ([], [(counted[0], clear)]):  # reader r51d, item 1: the answer's count by means
+        problems.append(f"04: the answer counts our fast checker by means as {first_means}; the record: {counted[0]}")
     if bullet != [(*expected[1:5], beyond)] or means_line != [counted[0]]:
         problems.append(f"04: the first code cell's bullet on our fast checker says {bullet}; section 6's: {expected}")
     edges = _marked(nb, ACCURATE_ROW)

@@ -16,7 +16,7 @@ from toolkit.learning.learned import LearnedChecker
 from toolkit.planning.local_planner import path_is_valid
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.teaching import checker_scope, costs, findings, recorded
-from toolkit.teaching.chapter04_paper import RUNS, papers_line, papers_table, plain
+from toolkit.teaching.chapter04_paper import RUNS, means_sentence, papers_table, plain
 from toolkit.teaching.recorded import Tables
 from toolkit.util.verdicts import COSTS, SAVES, TIES, time_verdict
 
@@ -239,7 +239,7 @@ def answer(tables: Tables | None = None) -> str:
         for name, c in (("our fast exact checker", fast), (SLOW_ROW, slow))
     ]
     return (
-        f"**{word}.** {plain(fast[SAVES][0], slow[SAVES][0], total, tables)} {papers_line()}\n\n"
+        f"**{word}.** {plain(fast[SAVES][0], slow[SAVES][0], total, tables)} {means_sentence(tables)}\n\n"
         f"| {total} scenario–sampler cells, by the median of each query's own time ratio (with ÷ without) | faster "
         "| tie | slower |\n| --- | --- | --- | --- |\n"
         + "\n".join(f"| {name} | {' | '.join(c)} |" for name, c in rows)
@@ -282,9 +282,9 @@ def mark_line(tables: Tables | None = None) -> str:
         return f"{bands[kind][0]:.2f}–{bands[kind][1]:.2f}"
 
     return (
-        f"The hatched band is the noise band of each query's own ratio, {band('own')}: a verdict inside it is no clear "
-        f"evidence, and carries {costs.MARK}.\n\n<details><summary>How every noise band is built, and the page's two "
-        "marks</summary>\n\n"
+        f"The hatched band is the noise band of each query's own ratio, {band('own')}: a saves or costs verdict "
+        f"inside it is no clear evidence, and carries {costs.MARK} (a tie never does).\n\n<details><summary>How "
+        "every noise band is built, and the page's two marks</summary>\n\n"
         "Every noise band is built one way (`docs/results.md`): time one computation twice, see how far timing alone "
         f"moved the statistic from 1, and take {costs.NOISE_EDGE} times that, both ways, because a single repeat "
         f"understates timing noise. Each query's own ratio: {band('own')} = 1 ± {costs.NOISE_EDGE} × "

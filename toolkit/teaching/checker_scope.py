@@ -355,9 +355,9 @@ def _call_costs(this_run: dict[str, float], tables: Tables | None = None) -> str
     }
     return (
         "A network call's cost per configuration over the fast exact check's (below 1 the network is the cheaper "
-        "check; from 0.75 to 1.25, too close to tell): the recorded runs (`docs/results.md`'s throughput tables; "
-        "the network's cost, and so this ratio, moves from run to run and machine to machine) and this run's section "
-        "4:\n\n" + costs.call_cost_table(dearer)
+        "check; from 0.75 to 1.25, too close to tell). The answer's run is `strong --planner paper`; the other "
+        "recorded runs show how this ratio moves from run to run and machine to machine (`docs/results.md`'s "
+        "throughput tables), beside this run's section 4:\n\n" + costs.call_cost_table(dearer)
     )
 
 
