@@ -404,7 +404,9 @@ def test_threshold_view_colours_each_cell_by_its_answer_and_counts_them(grid, pr
     ]
     on_bars = {line.get_marker(): (line.get_xdata()[0], line.get_ydata()[0]) for line in ax_counts.get_lines()}
     assert on_bars == {"o": (1, heights[1]), "s": (3, heights[3])}  # r19b: a bar of a few cells showed nothing
-    (point,) = [line for line in ax_roc.get_lines() if line.get_marker() == "^"]  # r45c: not a mistake's circle
+    (point,) = [
+        line for line in ax_roc.get_lines() if line.get_marker() == "v"
+    ]  # r45c, r51c: no mistake's or sweep's mark
     rates = metrics.classification(predicted.ravel(), valid.ravel())
     assert point.get_xdata()[0] == pytest.approx(1 - rates["tnr"])
     assert point.get_ydata()[0] == pytest.approx(rates["tpr"])

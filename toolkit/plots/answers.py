@@ -180,10 +180,10 @@ def draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
         ax.legend(fontsize=8, loc="upper center", ncols=2, frameon=False)
 
 
-ROC_STYLES = (  # reader r45c: not the mistakes' marks (vermillion squares: dangerous, sky-blue circles: conservative)
-    {"color": LINE_COLORS[2], "linestyle": "-", "marker": "^"},  # ink
-    {"color": LINE_COLORS[3], "linestyle": "-.", "marker": "D"},  # bluish green
-    {"color": LINE_COLORS[4], "linestyle": ":", "marker": "v"},  # reddish purple
+ROC_STYLES = (  # reader r45c: not the mistakes' marks (vermillion squares: dangerous, sky-blue circles: conservative);
+    {"color": LINE_COLORS[2], "linestyle": "-", "marker": "v"},  # ink; r51c: not the threshold sweep's triangle and
+    {"color": LINE_COLORS[3], "linestyle": "-.", "marker": "X"},  # bluish green; diamond (TNR, TPR), nor §7's start
+    {"color": LINE_COLORS[4], "linestyle": ":", "marker": "P"},  # reddish purple
 )
 """Each ROC curve's colour, line style and operating point's marker, in turn: none a mistake's colour or mark."""
 
