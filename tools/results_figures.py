@@ -270,10 +270,10 @@ def claim_markdown(text: str) -> str:
         "each query's total time with prediction over its own time without."
     )
     caption = (  # review r29f, item 1: the caption and the noise floor one paragraph under the plot
-        "Each point is the median of those ratios over 100 queries a scenario (the same for each sampler), its whisker "
-        "their middle half. *Shape and colour = verdict, fill = checker*: filled, our compiled checker; hollow, "
-        "python-fcl on both sides. The table of counts under the answer, at the top of the page, counts these points "
-        "(its columns “by own ratio”)." + unused_looks(tables)
+        "Each point is a cell: the median of those ratios over its 100 queries (each scenario's four samplers plan "
+        "the same 100 queries), its whisker their middle half. *Shape and colour = verdict, fill = checker*: "
+        "filled, our compiled checker; hollow, python-fcl on both sides. The table of counts under the answer, at "
+        "the top of the page, counts these points (its columns “by own ratio”)." + unused_looks(tables)
     )
     edge_said = (  # reader r39f, item 1: the band by its one name, defined in the table under the summary
         " Inside the noise band of this ratio (hatched, dashed edges), a cost or saving is no clear evidence: "
