@@ -1229,7 +1229,9 @@ def test_the_key_and_figure_2s_caption_say_where_and_what_they_mean():
     """Reader r50f, item 5: the balanced-accuracy row is under the MLP's finding (not "under the findings", the fold's
     name), and Figure 2's marks are all outlined in black, so its caption keeps Figure 1's colours off their fill."""
     key = results_summary.key(TABLES)
-    assert "(the last row of *Tables 1 and 2 on unseen workspaces*, under the MLP's finding in “What reproduces" in key
+    # reader r51f, "where I got lost": the cross-reference said plainly
+    assert "balanced samples (the MLP's finding, below, and the last row of the table under it)" in key
+    assert PAGE.index("**The MLP (Table 2)") < PAGE.index("| MLP on balanced samples, `paper` / `strong` preset")
     assert "under the findings)" not in PAGE
     reproduces = TEXT.partition("## What reproduces and what does not")[2].partition("<details")[0]
     assert "| MLP on balanced samples, `paper` / `strong` preset of Figure 1" in reproduces

@@ -110,11 +110,11 @@ def key(tables: Tables) -> str:
         "configuration, its MLP reads the occupancy around the "
         "robot's base cell and where its link boxes are, not the CAE's code (a `strong` CAE is trained only for "
         "Table 1). It is a fair test of the claim on accuracy: right "
-        f"{span(balanced)} % of the time on unseen workspaces' balanced samples (the last row of *Tables 1 and 2 on "
-        "unseen workspaces*, under the MLP's finding in “What reproduces and what does not”), where our rebuild of "
-        "the paper's recipe is at chance. On cost, see the first finding, “Why”. The paper's "
-        "recipe, rebuilt as our *`paper` preset*, screens samples with a CAE, which compresses a workspace's "
-        "occupancy grid into a short code, and an MLP, which reads that code and a configuration and answers “valid” "
+        f"{span(balanced)} % of the time on unseen workspaces' balanced samples (the MLP's finding, below, and the "
+        "last row of the table under it), where our rebuild of the paper's recipe is at chance. On cost, see the "
+        "first finding, “Why”. The paper's recipe, rebuilt as our *`paper` preset*, screens samples with a CAE, "
+        "which compresses a workspace's occupancy grid into a short code, and an MLP, which reads that code and a "
+        "configuration and answers “valid” "
         "(collision-free) or “invalid”. A preset names a network and its planner's settings",
         # reader r46f, item 5: the third network the findings name, defined before they lean on it
         "*lazy-PRM network*: a second `strong` network, trained in the run of 3 December for the lazy PRM, where it "
