@@ -243,7 +243,7 @@ def table_3_said(tables: Tables) -> str:
     return (
         "**The paper's Table 3: its sampling columns reproduce with python-fcl"
         f"{'' if sampled['python-fcl'] >= papers_sampled else ' in part'}, not with our compiled checker; by means, "
-        "its total-time savings cannot be told from timing noise.** The paper's Table 3 saves 10 % or "
+        "our total-time ratios lie mostly within timing noise.** The paper's Table 3 saves 10 % or "
         f"more of a query's time in {papers} of its {cells} cells (some time in {some}), and 10 % or more of sampling "
         f"time in {'all ' + str(cells) if papers_sampled == cells else f'{papers_sampled} of {cells}'}. By means, the "
         f"accurate network saves 10 % or more of sampling time in {sampled['compiled']} of {cells} cells with the "
