@@ -291,8 +291,10 @@ def own_said(tables: Tables) -> str:
         f"{' in most cells' if any(also.values()) else ''}.** This verdict rests on each query's own ratio (Figure "
         f"1): {own['compiled']} of 16 cells faster with the compiled checker, {own['python-fcl']} with python-fcl. "
     )
+    band = costs.floors(tables)["own"]  # the count beyond it said with the count (the page's one rule)
     rest = "".join(
-        f" With {name} it saves 10 % or more in the other {len(found)} ({', '.join(found)})."
+        f" With {name} it saves 10 % or more in the other {len(found)} ({', '.join(found)}; "
+        f"{sum(not costs.inside(float(f.rsplit(' ', 1)[1]), band) for f in found)} beyond the noise band)."
         for name, found in also.items()
         if found
     )
