@@ -8,6 +8,7 @@ import re
 
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
+from matplotlib.collections import LineCollection
 from matplotlib.lines import Line2D
 from PIL import Image
 
@@ -122,6 +123,10 @@ def test_each_panel_shades_the_tie_band_its_counts_are_read_with(drawn):
             assert not hatched
             continue
         assert spans == [(floor[0], 0.9), (1.1, floor[1])]
+        # reader r51f, item 5: the noise band's edges dashed, as Figure 1's; no dotted line left (dotted: the tie band)
+        edges = [c for c in ax.collections if isinstance(c, LineCollection)]
+        assert edges and all(c.get_linestyle()[0][1] is not None for c in edges)
+        assert all(c.get_linestyle()[0][1][0] > 2 * c.get_linewidth()[0] for c in edges)  # a dash, not a dot
         # reader r47f, item 5: hatched over our series' columns only, never behind the paper's diamonds
         columns = [
             p.get_path().transformed(p.get_patch_transform()).vertices[:, 0] for p in ax.patches if p.get_hatch()

@@ -203,7 +203,8 @@ def readable(fig: Figure, floor: tuple[float, float] | None, kind: str = "total"
 def clear_of_paper(ax, floor: tuple[float, float]) -> None:
     """Reader r47f, item 5: the noise band of a ratio of means is our machine's, so it is hatched over our series'
     columns only, not behind the paper's diamonds: means_grid's hatch and dotted edges across the panel are drawn
-    again from halfway between each sampler's diamond and our first point to the sampler's right-hand edge."""
+    again from halfway between each sampler's diamond and our first point to the sampler's right-hand edge, the edges
+    dashed (:data:`NOISE_EDGE`), as Figure 1's noise band's."""
     for patch in [p for p in ax.patches if p.get_hatch()]:
         patch.remove()
     for line in [line for line in ax.lines if line.get_linestyle() == ":"]:
@@ -215,10 +216,11 @@ def clear_of_paper(ax, floor: tuple[float, float]) -> None:
         end = round(x) + 0.5
         for low, high in ((floor[0], 1 - findings.TIE), (1 + findings.TIE, floor[1])):
             ax.add_patch(Rectangle((start, low), end - start, high - low, **HATCHED))  # type: ignore[arg-type]
-        ax.hlines(list(floor), start, end, colors=COLORS["reference"], linestyles=":", linewidth=1.0, zorder=0.5)
+        ax.hlines(list(floor), start, end, colors=COLORS["reference"], linestyles=NOISE_EDGE, linewidth=1.0, zorder=0.5)
 
 
 PAPER = next(name for name, preset in SOURCES.items() if preset is None)  # the paper's own series
+NOISE_EDGE = "--"  # reader r51f, item 5: a noise band's edges dashed, as Figure 1's; dotted means the tie band only
 HATCHED = dict(facecolor="none", edgecolor=COLORS["reference"], hatch=query_ratios.NOISE_HATCH, linewidth=0, zorder=0)
 
 
@@ -268,10 +270,10 @@ def claim_markdown(text: str) -> str:
         "each query's total time with prediction over its own time without."
     )
     caption = (  # review r29f, item 1: the caption and the noise floor one paragraph under the plot
-        "Each point is the median of those ratios over 100 queries a scenario (the same for each sampler), its whisker "
-        "their middle half. *Shape and colour = verdict, fill = checker*: filled, our compiled checker; hollow, "
-        "python-fcl on both sides. The table of counts under the answer, at the top of the page, counts these points "
-        "(its columns “by own ratio”)." + unused_looks(tables)
+        "Each point is a cell: the median of those ratios over its 100 queries (each scenario's four samplers plan "
+        "the same 100 queries), its whisker their middle half. *Shape and colour = verdict, fill = checker*: "
+        "filled, our compiled checker; hollow, python-fcl on both sides. The table of counts under the answer, at "
+        "the top of the page, counts these points (its columns “by own ratio”)." + unused_looks(tables)
     )
     edge_said = (  # reader r39f, item 1: the band by its one name, defined in the table under the summary
         " Inside the noise band of this ratio (hatched, dashed edges), a cost or saving is no clear evidence: "
@@ -354,9 +356,9 @@ def figure_markdown(text: str, kind: str = "total") -> str:
     floor = noise(parse(text))
     said = (  # reader r39f, item 1: the band by its one name; r46f, item 3: its table under Figure 1
         f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule. The noise band of a ratio of means, "
-        f"{floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched, dotted edges; built as the table of bands under "
-        "Figure 1 says), sets a single cell of ours apart only beyond it. It is our machine's timing noise, not the "
-        "paper's: it is hatched over our series only, not behind the paper's diamonds." + KEY
+        f"{floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched, dashed edges as in Figure 1; built as the table of "
+        "bands under Figure 1 says), sets a single cell of ours apart only beyond it. It is our machine's timing "
+        "noise, not the paper's: it is hatched over our series only, not behind the paper's diamonds." + KEY
         if kind == "total"
         else f"*{kind.capitalize()} time*, counted as in Figure 2. {sampling_takeaway(counts)} No noise band is "
         "drawn: the table “timed twice” holds total times only, so sampling times have no band of their own."
