@@ -291,7 +291,8 @@ def claim_markdown(text: str) -> str:
 def unused_looks(tables: Tables) -> str:
     """Reader r47f, Figure 1: the legend keys every look, some of which no point takes (no filled triangle, no hollow
     circle); said under the figure, computed, so a student does not look for them."""
-    looks = {"less time": "saves time", "more time": "costs time"}
+    tie = findings.TIE  # r51e: where a median lies, as the legend says it
+    looks = {"less time": f"at {1 - tie:.2f} or less", "more time": f"at {1 + tie:.2f} or more"}
     runs = (("filled", recorded.ALGORITHM_1), ("hollow", checker_scope.SLOW))
     missing = [
         f"no {fill} point {said}"
