@@ -1605,8 +1605,8 @@ def test_chapter_05_holds_table_2s_valid_share_and_the_offices_collisions_to_its
 
 
 OPENING_01 = (
-    "general-purpose collision library. FCL as called here (one Python call per\n"
-    "  link) is the slow one, many times slower per check (section 3 prints how"
+    "general-purpose collision library. FCL as called here (a Python call for each\n"
+    "  link the pre-filter cannot clear) is the slow one, many times slower per check (section 3 prints how"
 )
 
 
@@ -1654,15 +1654,15 @@ def test_chapter_01_fails_words_its_ratios_do_not_give():
         "01: the opening types a range, '30–100 times', beside section 3's 50–103x"
     ]
     assert problems(CH01, chapter_01(said="in a fraction of its time")) == [
-        "01: the opening does not say FCL 'FCL as called here (one Python call per link) is the slow one, many times"
-        " slower per check'"
+        "01: the opening does not say FCL 'FCL as called here (a Python call for each link the pre-filter cannot clear)"
+        " is the slow one, many times slower per check'"
     ]
     # reader r51a: the bullet blamed the library, the fold the one Python call per link
     assert problems(
         CH01, chapter_01(said="general-purpose collision library; FCL is the slow one, many times slower per check")
     ) == [
-        "01: the opening does not say FCL 'FCL as called here (one Python call per link) is the slow one, many times"
-        " slower per check'"
+        "01: the opening does not say FCL 'FCL as called here (a Python call for each link the pre-filter cannot clear)"
+        " is the slow one, many times slower per check'"
     ]
 
 
