@@ -1042,13 +1042,12 @@ def test_the_counts_a_noise_floor_undercuts_are_told_apart():
     assert not costs.inside(0.26, means) and "pulled by a few slow queries" not in PAGE
     assert (
         "(2DS BS 1.07, 2DS OB 1.00). Of the 14 that took more time, 12 lie beyond the noise band of a ratio of "
-        "medians, 0.40–1.60 (2DS BT 1.58 and 3DO BT 1.37 inside it). By means 2DS OB reads otherwise: its ratio of "
-        "means is 0.26 (the `strong` section's Table 3), beyond the noise band of a ratio of means, 0.52–1.48, a clear "
-        "saving by that statistic. The medians decide it, by the page's one rule (“Which statistic decides”, under "
-        "Figure 1): each query's own ratio, or, where a run kept none, as here, the ratio of medians, because the "
-        "verdict asks what a typical query costs. By medians 2DS OB took about the same time (1.00); the saving by "
-        "means lies in a few long queries (without prediction its mean query took 0.103 s, with a standard deviation "
-        "of 0.33 s)." in said
+        "medians, 0.40–1.60 (2DS BT 1.58 and 3DO BT 1.37 inside it). The medians decide it, by the page's one rule "
+        "(“Which statistic decides”, under Figure 1): each query's own ratio, or, where a run kept none, as here, the "
+        "ratio of medians, because the verdict asks what a typical query costs. By medians 2DS OB took about the same "
+        "time (1.00). By means it reads otherwise: its ratio of means is 0.26 (the `strong` section's Table 3), "
+        "beyond the noise band of a ratio of means, 0.52–1.48, but that saving lies in a few long queries (without "
+        "prediction its mean query took 0.103 s, with a standard deviation of 0.33 s)." in said
     )
     times = next(t for heading, t in TABLES["strong"].items() if "Times behind Table 3" in heading)
     row = next(r for r in times["rows"] if r[:2] == ["2ds", "OB"])

@@ -300,7 +300,8 @@ def unused_looks(tables: Tables) -> str:
         for verdict, said in looks.items()
         if all(change(m) != verdict for by in own_intervals(tables, key).values() for m, _, _ in by.values())
     ]
-    return f" The legend keys every look: {' and '.join(missing)}." if missing else ""
+    # reader r52f, Figure 1: said plainly, the legend's markers that no point takes
+    return f" The legend shows markers that no point takes: {', '.join(missing)}." if missing else ""
 
 
 def furthest_apart(tables: Tables) -> tuple[str, str, float, float]:
