@@ -427,4 +427,7 @@ def test_figure_1_says_which_legend_looks_no_point_takes():
         for m, _, _ in by.values()
     ]
     assert min(filled) > 0.9 and max(hollow) < 1.1  # none filled saves, none hollow costs (the tie band: 0.90-1.10)
-    assert "The legend keys every look: no filled point at 0.90 or less and no hollow point at 1.10 or more." in CLAIM
+    assert (
+        "The legend shows markers that no point takes: no filled point at 0.90 or less, no hollow point at 1.10 or "
+        "more." in CLAIM
+    )

@@ -44,7 +44,8 @@ def test_the_summary_is_what_the_tables_give():
     assert "| band near 1 |" not in said and banded.startswith("\n*The table of bands*: every noise band is built")
     # reader r51f, item 3: the answer, the Key folded (the terms and the run map in it), then the table of counts
     prose, _, tables = said.partition("\n\n|")
-    answer, key = prose.strip().split("\n\n", 1)
+    answer, bullets, rest = prose.strip().split("\n\n", 2)
+    key, _, caption = rest.rpartition("\n\n")
     assert answer.startswith("**In short") and answer.endswith(".")
     # reader r42f, item 3: the Key a short definition list, one term a line; no other bullet (no "Why"), folded
     assert key.startswith(
@@ -54,10 +55,13 @@ def test_the_summary_is_what_the_tables_give():
     assert key.endswith("\n\n</details>")
     key_terms = key.partition("\n\n*The runs behind")[0]
     assert all(line.startswith("- *") for line in key_terms.splitlines()[2:])
-    assert "Why, by means" not in said and "saved / " not in prose
-    # reader r47f, item 1: the question answered, then three short sentences a student can repeat: both checkers by
-    # ONE RULE (tie band, then beyond the noise band; reader r42f, contradictions 1 and 8), the paper's Table 3 quoted
-    # as common rule 1 words it, Tables 1-2 beside a trivial answer, like with like (contradiction 4)
+    assert "Why, by means" not in said and "saved / " not in answer + bullets
+    # reader r52f, item 3: the table of counts captioned, each "beyond" column named by its band
+    assert caption.startswith("*The counts*: of the 16 cells, how many saved, tied or cost time by each statistic")
+    assert (
+        "| beyond the noise band of a ratio of means: saved / cost | by own ratio: saved / tied / cost "
+        "| beyond the noise band of each query's own ratio: saved / cost |" in tables
+    )
     question, _, sentences = answer.partition(".** ")
     # reader r45f, item 1: python-fcl's 2 clear savings by the deciding statistic qualify the "No", in the answer;
     # reader r48f, item 3: the qualification named in the question's answer itself
@@ -70,18 +74,20 @@ def test_the_summary_is_what_the_tables_give():
     dearer = results_findings.network_costs(recorded_results.parse(TEXT))
     in_3d = [c for s, c in dearer.items() if s != "2ds"]
     assert (round(min(in_3d), 1), round(max(in_3d), 1)) == (2.6, 6.9)
-    assert sentences.count(". ") == 2 and sentences.endswith(".")
-    # reader r50f, item 1: the bold answer, one sentence a checker with its own-ratio counts (saved / tied / cost,
-    # python-fcl's band said borrowed where its count beyond it is first claimed: common rule 4), one on the paper's
-    # networks; reader r51f, item 3 and contradiction 4: only 3DO BT's clear saving is from skipped sample checks
+    # reader r52f, item 1: in plain view, what the network reads, then the paper's own recipe beside trivial answers
     assert sentences == (
-        "With our compiled checker it costs time: by each query's own ratio (the Key defines it), 9 of 16 cells "
-        "slower (5 beyond the noise band), 7 tied, none faster. With python-fcl it saves a little: 3 of 16 cells "
-        "faster (2 beyond the noise band, which this run borrows from the compiled one), 13 tied, none slower; only "
-        "3DO BT's clear saving comes mostly from skipping sample checks. Our rebuild of the paper's own recipe (the "
-        "`paper` preset) is no better on unseen workspaces than trivial answers: its CAE scores no better than "
-        "calling every cell free, its MLP no better than calling every sample valid."
+        "That network's MLP reads the occupancy near the robot, not the CAE's code; our rebuild of the paper's own "
+        "recipe (the `paper` preset) is no better on unseen workspaces than trivial answers: its CAE scores no better "
+        "than calling every cell free, its MLP no better than calling every sample valid."
     )
+    # reader r50f, item 1: one bullet a checker with its own-ratio counts (saved / tied / cost, python-fcl's band
+    # said borrowed where its count beyond it is first claimed: common rule 4); reader r52f, item 1: two short bullets
+    assert bullets == (
+        "- With our compiled checker it costs time: by each query's own ratio (the Key defines it), 9 of 16 cells "
+        "slower (5 beyond the noise band), 7 tied, none faster.\n- With python-fcl it saves a little: 3 of 16 cells "
+        "faster (2 beyond the noise band, which this run borrows from the compiled one), 13 tied, none slower."
+    )
+    answer = f"{answer}\n\n{bullets}"
     assert "0.18" not in answer and "Table 3" not in answer and "its CAE than" not in PAGE
     # ... and the first finding names python-fcl's 2 clear cells, the band borrowed, 3DO BT's saving sampling's
     why = results_findings.why_no_saving(recorded_results.parse(TEXT))
@@ -125,10 +131,15 @@ def test_the_summary_is_what_the_tables_give():
     assert all(round(b, 2) <= round(a, 2) for b, a in zip(blind, always))
     # reader r50f, item 2: "always valid" is a score on our samples, not on the paper's (its rates imply other shares)
     assert (  # reader r51f, item 4 (common rule): the paper describes its samples; their valid share is not given
-        "both on our samples; the paper reports 71–88 % on unseen samples drawn regardless of validity, whose valid "
-        "share it does not give)" in PAGE
+        "both on our samples; the paper reports 71–88 % on unseen samples drawn “regardless of their validity” "
+        "(§IV-A), whose valid share it does not give)" in PAGE
     )
     assert "does not describe" not in PAGE and "unseen test used is unstated" not in PAGE
+    # reader r52f, item 2: the note under every Table 2 in the same words, not "our choice"
+    assert "these are our choice" not in TEXT and "does not say which samples" not in TEXT
+    note = "drawn as the paper (§IV-A) draws its unseen tests, “regardless of their validity”, as many"
+    assert TEXT.count(note) == TEXT.count("\n*Seen*: balanced samples (half valid)") == 3
+    assert TEXT.count("the paper does not give their valid share (its rates imply about 60 % valid in 2DS") == 3
     gain = results_networks.cae_unseen(recorded_results.parse(TEXT))[2]
     assert round(gain * 100) <= 0
     assert "too small a share of a query to matter" not in PAGE  # reader r45f, item 1: 3DO BT saved about 16 %
@@ -252,6 +263,12 @@ def test_the_summary_is_what_the_tables_give():
     )
     assert "the lazy-PRM run (3 December) and the 2 December run, against the lazy PRM" in bands
     assert "it borrows the means band (its Table 3: the top table, Figure 2) and the medians band" in bands
+    # reader r52f, smaller items: the lazy-PRM run of 3 December, never timed twice, borrows the medians band too
+    assert not any("timed twice" in heading for heading in recorded_results.parse(TEXT)["strong"])
+    assert "Nor was the lazy-PRM run of 3 December: it borrows the medians band, timed with Algorithm 1." in bands
+    # reader r52f, smaller items: Figure 2 hatched the other way from Figure 1; Figure 3's dotted lines named
+    assert "(hatched the other way from Figure 1's band, its edges dashed as there;" in TEXT
+    assert "dashed edges as in Figure 1" not in TEXT and "The dotted lines are the tie band's edges." in TEXT
     assert bands.startswith(" from–to | how built | used in |")  # reader r41f, item 3
     # reader r44f, item 8: every band read strictly, said once (costs.inside)
     strict = "Every band is read strictly: a ratio inside one (low < r < high) is no clear evidence"
@@ -799,8 +816,11 @@ def test_the_verdict_names_its_checker_first():
     assert said.startswith(  # reader r37f, item 1: the fast checker first, in one sentence with the slow one
         "**In short: does our accurate network, whose answer takes the time of 2.6–6.9 exact compiled checks in 3D, "
         "save planning time inside the paper's Algorithm 1? No with our fast compiled checker; with the slow "
-        "python-fcl, a little.** With our compiled checker it costs time: by each query's own ratio (the Key defines "
-        "it), 9 of 16 cells slower"
+        "python-fcl, a little.** That network's MLP reads the occupancy near the robot, not the CAE's code;"
+    )
+    assert (
+        "\n\n- With our compiled checker it costs time: by each query's own ratio (the Key defines it), 9 of 16 "
+        in said
     )  # reader r33f, item 1: the answer, then three one-line verdicts a student can repeat
     # reader r44f, item 1 (one rule for every band): python-fcl's 2 savings beyond the noise band of each query's own
     # ratio are, by means, inside the noise band of a ratio of means: no "not sampling's" or "sampling allows" story,
@@ -1022,13 +1042,12 @@ def test_the_counts_a_noise_floor_undercuts_are_told_apart():
     assert not costs.inside(0.26, means) and "pulled by a few slow queries" not in PAGE
     assert (
         "(2DS BS 1.07, 2DS OB 1.00). Of the 14 that took more time, 12 lie beyond the noise band of a ratio of "
-        "medians, 0.40–1.60 (2DS BT 1.58 and 3DO BT 1.37 inside it). By means 2DS OB reads otherwise: its ratio of "
-        "means is 0.26 (the `strong` section's Table 3), beyond the noise band of a ratio of means, 0.52–1.48, a clear "
-        "saving by that statistic. The medians decide it, by the page's one rule (“Which statistic decides”, under "
-        "Figure 1): each query's own ratio, or, where a run kept none, as here, the ratio of medians, because the "
-        "verdict asks what a typical query costs. By medians 2DS OB took about the same time (1.00); the saving by "
-        "means lies in a few long queries (without prediction its mean query took 0.103 s, with a standard deviation "
-        "of 0.33 s)." in said
+        "medians, 0.40–1.60 (2DS BT 1.58 and 3DO BT 1.37 inside it). The medians decide it, by the page's one rule "
+        "(“Which statistic decides”, under Figure 1): each query's own ratio, or, where a run kept none, as here, the "
+        "ratio of medians, because the verdict asks what a typical query costs. By medians 2DS OB took about the same "
+        "time (1.00). By means it reads otherwise: its ratio of means is 0.26 (the `strong` section's Table 3), "
+        "beyond the noise band of a ratio of means, 0.52–1.48, but that saving lies in a few long queries (without "
+        "prediction its mean query took 0.103 s, with a standard deviation of 0.33 s)." in said
     )
     times = next(t for heading, t in TABLES["strong"].items() if "Times behind Table 3" in heading)
     row = next(r for r in times["rows"] if r[:2] == ["2ds", "OB"])

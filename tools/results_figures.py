@@ -300,7 +300,8 @@ def unused_looks(tables: Tables) -> str:
         for verdict, said in looks.items()
         if all(change(m) != verdict for by in own_intervals(tables, key).values() for m, _, _ in by.values())
     ]
-    return f" The legend keys every look: {' and '.join(missing)}." if missing else ""
+    # reader r52f, Figure 1: said plainly, the legend's markers that no point takes
+    return f" The legend shows markers that no point takes: {', '.join(missing)}." if missing else ""
 
 
 def furthest_apart(tables: Tables) -> tuple[str, str, float, float]:
@@ -357,12 +358,14 @@ def figure_markdown(text: str, kind: str = "total") -> str:
     floor = noise(parse(text))
     said = (  # reader r39f, item 1: the band by its one name; r46f, item 3: its table under Figure 1
         f"*{kind.capitalize()} time*, Table 3's cells counted with the 10 % rule. The noise band of a ratio of means, "
-        f"{floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched, dashed edges as in Figure 1; built as the table of "
-        "bands under Figure 1 says), sets a single cell of ours apart only beyond it. It is our machine's timing "
-        "noise, not the paper's: it is hatched over our series only, not behind the paper's diamonds." + KEY
+        f"{floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched the other way from Figure 1's band, its edges "
+        "dashed as there; built as the table of bands under Figure 1 says), sets a single cell of ours apart only "
+        "beyond it. It is our machine's timing noise, not the paper's: it is hatched over our series only, not "
+        "behind the paper's diamonds." + KEY
         if kind == "total"
-        else f"*{kind.capitalize()} time*, counted as in Figure 2. {sampling_takeaway(counts)} No noise band is "
-        "drawn: the table “timed twice” holds total times only, so sampling times have no band of their own."
+        else f"*{kind.capitalize()} time*, counted as in Figure 2. {sampling_takeaway(counts)} The dotted lines "
+        "are the tie band's edges. No noise band is drawn: the table “timed twice” holds total times only, so "
+        "sampling times have no band of their own."
     )
     tables = parse(text)
     lead = LEADS[kind] + (means_not_verdict(tables) if kind == "total" else "")
