@@ -330,7 +330,7 @@ def test_the_index_opens_in_short_sentences():
         # reader r49e, home 6: the page's question before its answer; reader r50e, home lift 1: the time answer
         # first ("mostly no"), accuracy after it, and whose `strong` is at its first use
         "**The question:** does the paper's learned collision check save a planner time? "
-        "**The answer: mostly no. An accurate network of our own, `strong`, rarely saves a whole query's time "
+        "**The answer: mostly no. An accurate network of our own (preset `strong`) rarely saves a whole query's time "
         "(judged by each query's own ratio, defined below). "  # reader r51e, home lift 4: the statistic named
         "It saves sampling time where the exact check is slow, and mostly slows sampling where the "
         "exact check is fast. The paper's network, rebuilt here, is right on only "  # r39e: 3DC-7 2.4-3.3x
@@ -712,7 +712,8 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
         "**Many of the paper's savings are bigger than skipping checks allows.** Skipping the samples' exact checks "
         "can save at most the time the whole sampling stage took. A saving beyond that came from elsewhere in the "
         f"query: another roadmap, with other edges to check. In {len(over)} of its 16 cells, the paper's mean times "
-        "save more than the whole sampling stage took. "
+        "save more than the whole sampling stage took. That stage's time is its §V's \"average time to validate "
+        'samples". '  # reader r52e, home 4: which of the paper's numbers is "the whole sampling stage"
         '<details markdown="1"><summary>Savings bigger than the whole sampling stage, in the paper</summary> '
         "The whole sampling stage is a looser limit than sampling's share times its cut (the fold \"Why a whole "
         "query rarely saves: the limit\"). The paper's largest gap "
@@ -854,7 +855,7 @@ def test_the_index_gives_one_statistic_a_line_behind_its_answer():
     assert (
         answer.index("**The answer")
         < answer.index("The paper's claim: its network")  # reader r46e, home lift 1
-        < answer.index("The answer is what our recorded runs say")
+        < answer.index("The paper is *Predicting Sample Collision")  # reader r52e, home 5: a plain opening
         < answer.index("Terms. ")
     )
     # reader r46e, home 3: Table 3 as a ratio of means is our reading, the agreeing entries counted from the paper
