@@ -49,7 +49,8 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
         and "so the most that skipping its checks could save is 11 % of a query's mean time (OB)." in shown
         and "off a query" not in answer
     )
-    assert after.strip() == ""  # reader r47e, lift 2: the answer's one table, then its one fold
+    # reader r47e, lift 2: the answer's one table, then its one fold; r52e, 05 item 2: one line between, whose run
+    assert after.strip() == chapter05.WHO_SPEAKS
     shares = fold
     # reader r44e, item 1: the table the moral rests on (what share of a query sampling takes) is open, under the
     # total-time table, and the fold does not say it again
@@ -475,3 +476,38 @@ def test_section_5_says_the_proportion_of_mistakes_the_overview_cannot_show():
     assert "(fewer conservative than dangerous, 1 to 3)" in chapter05_runs.mistake_counts(
         np.array([True, False, False, False]), np.array([False, True, True, True])
     )
+
+
+def test_section_5_says_when_the_close_up_pose_is_itself_a_mistake():
+    """Reader r52e, 05 item 3: the first close-up's pose is a conservative mistake; the line under it says so, with
+    the count of its kind, and says nothing where the model is right on the pose."""
+    valid = np.array([True] * 90 + [False] * 20)
+    predicted = np.array([True] * 2 + [False] * 88 + [True] * 15 + [False] * 5)
+    plain = chapter05_runs.mistake_counts(valid, predicted)
+    assert chapter05_runs.mistake_counts(valid, predicted, (True, True)) == plain
+    assert chapter05_runs.mistake_counts(valid, predicted, (True, False)) == (
+        "The robot's own pose in the close-up is a conservative mistake, the kind 88 of the 110 samples are: a "
+        "picture of one wrong answer, not of the model's accuracy. " + plain
+    )
+    assert chapter05_runs.mistake_counts(valid, predicted, (False, True)).startswith(
+        "The robot's own pose in the close-up is a dangerous mistake, the kind 15 of the 110 samples are:"
+    )
+
+
+def test_the_unseen_test_fold_says_its_uniform_share_rests_on_our_block_size():
+    """Reader r52e, 05 item 1: the 76 % valid of uniform samples is our workspaces' (1 × 1 × 1 blocks); the paper
+    gives no block size, so the comparison with Table 2's implied share is a hint, not evidence."""
+    fold = chapter05_runs.paper_share()
+    _, uniform = chapter05.recorded_scores("paper")
+    assert f"This is a hint, not evidence. The {uniform:.0%} is the valid share of our workspaces" in fold
+    assert "The paper gives no block size" in fold and "probably" not in fold
+    assert "about 42% valid, and Table 2 could then have scored the planner's 400." in fold
+
+
+def test_the_answer_says_beside_it_which_run_each_part_of_the_chapter_uses():
+    """Reader r52e, 05 item 2: outside the answer's fold, one line names the timed network, the notebook's network
+    and the lazy PRM, the planner the answer does not time."""
+    front = chapter05.answer(0.54).split("<details>")[0]
+    assert front.endswith(chapter05.WHO_SPEAKS + "\n\n")
+    assert "**timed network** in Algorithm 1" in front and "**notebook's network**" in front
+    assert "lazy PRM, which the answer does not time" in front

@@ -78,6 +78,8 @@ def answer(threshold: float | None = None) -> str:
         + (MORAL if none_saved and cost > 1 else "")
         + "\n\n"
         + total_table()
+        + "\n\n"
+        + WHO_SPEAKS
         + f"\n\n<details><summary>{DETAILS}</summary>\n\n"
         + "\n\n".join(
             [
@@ -166,6 +168,11 @@ MORAL = (  # reader r41e, 05 lift 3: the answer's moral, at the end of its "Why.
     " **The moral:** skipping the sample checks can save time only where a network answer is cheaper than an exact "
     "check *and* sampling is a large share of a query. The rest of a query (another roadmap, its edges) can still "
     "change its time either way."
+)
+WHO_SPEAKS = (  # reader r52e, 05 item 2: beside the answer, which training and planner each part of the chapter uses
+    f"Which run speaks where: the answer is the **{TIMED}** in Algorithm 1. §5's views and counts come from the "
+    f"**{MINE}**, a second training of the same recipe, and §6–7's path from the lazy PRM, which the answer does "
+    "not time."
 )
 DETAILS = (  # the answer's one fold (reader r47e, 05 lift 2: the top slimmed to the answer and one table)
     "Details of the answer: what skipping the checks could save per sampler, which runs it reads, and the ratio of "

@@ -208,12 +208,21 @@ def dips_unscreened(result, model, along: np.ndarray, below: np.ndarray) -> str:
     )
 
 
-def mistake_counts(valid: np.ndarray, predicted: np.ndarray) -> str:
+def mistake_counts(valid: np.ndarray, predicted: np.ndarray, pose: tuple[bool, bool] | None = None) -> str:
     """The line under §5's view (reader r49e, 05 item 3): the overview draws every dangerous mistake but only some
-    of the conservative ones, so the true proportion, from ``valid``, ``predicted (N,)``, is said in words."""
+    of the conservative ones, so the true proportion, from ``valid``, ``predicted (N,)``, is said in words. ``pose``:
+    the close-up robot's (exact, model) verdicts; where the model is wrong on it, the line says so first (r52e, 05
+    item 3: the first close-up shows a mistake)."""
     dangerous, conservative = int(np.sum(~valid & predicted)), int(np.sum(valid & ~predicted))
     more = "more" if conservative > dangerous else "fewer" if conservative < dangerous else "as many"
-    return (
+    kind, count = ("conservative", conservative) if pose and pose[0] else ("dangerous", dangerous)
+    wrong = (
+        f"The robot's own pose in the close-up is a {kind} mistake, the kind {count} of the {len(valid)} samples are: "
+        "a picture of one wrong answer, not of the model's accuracy. "
+        if pose and pose[0] != pose[1]
+        else ""
+    )
+    return wrong + (
         f"Count the mistakes, not the stars: of the {len(valid)} samples, {conservative} are conservative mistakes "
         f"and {dangerous} dangerous ones ({more} conservative than dangerous, {conservative} to {dangerous}). The "
         "overview draws every dangerous one but only some of the conservative ones."
@@ -289,7 +298,7 @@ def paper_share() -> str:
         'Of the unseen one it says only that it generates "2000 samples for each 3D office-like workspace, and 400 '
         'samples for each 3D clutter workspace" "regardless of their validity", and "This is evaluated as unseen '
         'scenarios". '
-        "Section 1's fold reads those 400 as the planner's uniform samples; Table 2 probably scored another set, "
+        "Section 1's fold reads those 400 as the planner's uniform samples; Table 2 may have scored another set, "
         "since its three numbers fix the valid share of its test set.\n\n"
         f"The paper's row: {paper['acc']:.0%} = {paper['tpr']:.0%} × share + {paper['tnr']:.0%} × (1 − share) gives a "
         f"valid share of about {implied:.0%}. On uniform samples in the recipe's unseen workspaces, "
@@ -297,7 +306,11 @@ def paper_share() -> str:
         f"the same TPR and TNR would give an accuracy of {paper['tpr'] * uniform + paper['tnr'] * (1 - uniform):.0%}, "
         f"not {paper['acc']:.0%}. That reads TPR as valid configurations called valid, our reading. "
         f"With collisions the positive class, TPR and TNR swap places, and the share is about {1 - implied:.0%} "
-        f"valid: still not {uniform:.0%}.\n\n</details>"
+        f"valid: still not {uniform:.0%}.\n\n"
+        # reader r52e, 05 item 1: the uniform share is our workspaces', set by a block size the paper does not give
+        f"This is a hint, not evidence. The {uniform:.0%} is the valid share of our workspaces, whose blocks are "
+        "1 × 1 × 1 cubes. The paper gives no block size; with larger blocks its uniform samples could be about "
+        f"{implied:.0%} valid, and Table 2 could then have scored the planner's 400.\n\n</details>"
     )
 
 
