@@ -2154,3 +2154,16 @@ def test_table_3_is_counted_by_its_own_column_and_the_text_s_means_said():
         "and 3DO G's means give 0.903, 0.90 read to two decimals (then 9 / 7 / 0) but inside the band unrounded."
     ) in flat
     assert "A change of 10 % or more counts: a ratio of 0.90 or below, read to two decimals, is shorter" in flat
+
+
+def test_reader_r52g_each_python_fcl_ratio_says_its_run_and_the_key_defines_the_own_ratio():
+    """Reader r52g, item 5 and lift 5-6: python-fcl's 43-57 times (idle) and the Results page's 42-79 times (the
+    planning runs, under load) said apart; the python-fcl run's throughput columns said to be copied; "own ratio" in
+    the Key."""
+    flat = " ".join(PAGE.split())
+    results = " ".join((ROOT / "docs" / "results.md").read_text().split())
+    assert "python-fcl answered 42–79 times slower than our compiled checker in 3D" in results
+    assert "(the Results page's 42–79 times is the planning runs', timed under load at `a634114`)" in flat
+    assert "its throughput columns are copied from the compiled run's, measured under load at `a634114`" in flat
+    key = flat.partition("*Key.*")[2].partition("**What the paper's claim needs")[0]
+    assert "A query's *own ratio*: its time with the network over its time without, the two timed in turn." in key
