@@ -1407,7 +1407,7 @@ def test_the_race_states_ompl_s_settings_and_reconciles_its_callbacks_and_batche
     assert [r.partition(",")[0] for r in rows] == ["3DC-7", "3DC-9", "3DO"]
     assert (
         f"OMPL's RRTConnect takes {listed([numbers(first[r])[0] for r in rows])} ms a median query in 3DC-7, 3DC-9 "
-        f"and 3DO; with its checks batched, an estimate, not a timing, {listed(estimate)} ms: its callbacks cost it "
+        f"and 3DO; with its checks batched (estimated), {listed(estimate)} ms: its callbacks cost it "
         f"{listed(gap)} ms a query more than one batched call would."  # reader r50g, race 1: their excess, not cost
     ) in flat
     states = [numbers(column("OMPL RRTConnect, states", RACE)[r])[0] for r in rows]
