@@ -5,6 +5,9 @@ exactly (:func:`papers_line`, :func:`papers_table`), the answer's *Why* with its
 from __future__ import annotations
 
 from collections import Counter
+from collections.abc import Mapping
+
+import numpy as np
 
 from toolkit.experiments.paper_numbers import IMPROVEMENT, TIMES, saved_beyond_sampling
 from toolkit.teaching import checker_scope, costs, recorded
@@ -291,3 +294,37 @@ def _by_own(tables: Tables | None = None) -> str:
         f" By each query's own ratio, python-fcl's {', '.join(over)} did save more than all of sampling, beyond that "
         "statistic's noise band (the answer's *Why*)."
     ) * bool(over)
+
+
+def encoding_line(records: Mapping[str, list[dict]], tables: Tables | None = None) -> str:
+    """Under section 6's cost table (reader r52d, item 2): the encoding, measured in section 5's live 3DC-7 queries,
+    beside each costly cell's growth after sampling (which includes it), and what it leaves unexplained."""
+    encoded = [r.get("encode_s", 0.0) for r in records.get("with", [])]
+    if not encoded or max(encoded) <= 0:
+        return ""
+    ms = 1000 * float(np.median(encoded))
+    grew = {f"{c.scenario} {c.sampler}": 1000 * (c.after[1] - c.after[0]) for c in costs.dear_cells(tables)}
+    here = {n: g for n, g in grew.items() if n.startswith("3DC-7")}
+    said = [
+        f"{n}'s time after sampling grew {g:.1f} ms, "
+        + (
+            "which the encoding alone could cover"
+            if ms >= g
+            else f"of which the encoding is about {100 * ms / g:.0f} %"
+        )
+        for n, g in here.items()
+    ]
+    elsewhere = [f"{n} +{g:.1f} ms" for n, g in grew.items() if n not in here]
+    short = sum(ms < g for g in here.values())
+    return (
+        "**The encoding beside that growth.** The time after sampling includes encoding the workspace for the network. "
+        f"Section 5's live 3DC-7 queries spent {ms:.1f} ms a query on it (median; on this machine, not in the recorded "
+        f"run, so a rough size). {'; '.join(said) or 'No 3DC-7 cell costs that much'}. "
+        + (
+            f"The other scenarios' encoding is not measured here ({', '.join(elsewhere)} after sampling). "
+            if elsewhere
+            else ""
+        )
+        + f"Where the encoding falls short (in {short} of the {len(here)} 3DC-7 cells), something else after sampling "
+        "grew too, and these runs do not say what; elsewhere they cannot tell."
+    )
