@@ -9,7 +9,7 @@ from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots import answer, query_ratios
 from toolkit.plots.alt import alt_text
 from toolkit.plots.answer import answer_ratios
-from toolkit.teaching import chapter04, chapter04_figures, checker_scope, costs, findings, recorded
+from toolkit.teaching import chapter04, chapter04_figures, chapter04_paper, checker_scope, costs, findings, recorded
 from toolkit.teaching.chapter04_figures import SERIES
 
 
@@ -138,6 +138,18 @@ def test_after_share_is_the_part_of_the_extra_time_after_sampling():
     cell = costs.Cost("X", "BS", 1.5, (0.001, 0.003), (0.010, 0.016))  # extra 6 ms: 2 sampling, 4 after
     assert all(abs(a - b) < 1e-12 for a, b in zip(cell.after, (0.009, 0.013)))
     assert abs(cell.after_share - 4 / 6) < 1e-12 and abs(cell.sampling_share - 2 / 6) < 1e-12
+
+
+def test_encoding_line_sets_the_live_encoding_beside_each_costly_cells_growth_after_sampling():
+    """Reader r52d, item 2: "after sampling" includes the encoding; its measured size (section 5's live 3DC-7 queries)
+    beside each costly 3DC-7 cell's growth after sampling, from the record: OB +11.7 ms, BT +2.8 ms."""
+    said = chapter04_paper.encoding_line({"with": [{"encode_s": 0.003}, {"encode_s": 0.0031}, {"encode_s": 0.0029}]})
+    assert "The time after sampling includes encoding the workspace" in said and "spent 3.0 ms a query" in said
+    assert "3DC-7 OB's time after sampling grew 11.7 ms, of which the encoding is about 26 %" in said
+    assert "3DC-7 BT's time after sampling grew 2.8 ms, which the encoding alone could cover" in said
+    assert "(3DC-9 BT +15.3 ms, 3DO OB +18.0 ms after sampling)" in said and "(in 1 of the 2 3DC-7 cells)" in said
+    assert "in 2 of the 2" in chapter04_paper.encoding_line({"with": [{"encode_s": 0.001}]})  # covers neither
+    assert chapter04_paper.encoding_line({"with": [{"encode_s": 0.0}]}) == ""  # no network, no encoding to set
 
 
 def test_split_sentence_gives_the_sampling_shares_of_the_dear_cells():

@@ -847,7 +847,8 @@ def test_a_second_table_in_one_output_is_read_apart_and_held_to_the_page_width()
         ),
         (
             [0.8, 1.3, 1.5],
-            "1.30 (middle half 1.05–1.40), no clear evidence (†): its middle half reaches across the tie band.",
+            "1.30 (middle half 1.05–1.40), no clear evidence (†): its middle half includes an edge of the tie band "
+            "(0.90 or 1.10).",
         ),
     ],
 )
@@ -1776,5 +1777,5 @@ def test_chapter_04_a_dagger_in_a_table_comes_with_its_reason():
     table = "| 2DS | BS | costs time†<br>(median 1.20; middle half 0.60–1.44) | 5 / 6 | 4 |"
     cell = {"cell_type": "code", "outputs": [{"output_type": "display_data", "data": {"text/markdown": table}}]}
     assert chapter_claims._dagger_said({"cells": [cell]}) != []
-    cell["outputs"][0]["data"]["text/markdown"] += "\n\n† marks no clear evidence: its middle half reaches across"
+    cell["outputs"][0]["data"]["text/markdown"] += "\n\n† marks no clear evidence: its middle half includes an edge"
     assert chapter_claims._dagger_said({"cells": [cell]}) == []

@@ -92,7 +92,7 @@ def stage_times(panels: dict[str, dict], band: tuple[float, float] | None = None
 
 
 def _across(ratios: np.ndarray) -> bool:
-    """Whether the queries' middle half reaches across the tie band (or fewer than two queries): chapter 04's table
+    """Whether the queries' middle half includes a tie band edge (or fewer than two queries): chapter 04's table
     then marks its verdict † (:func:`toolkit.teaching.findings.planning_verdict`)."""
     q1, q3 = (float(v) for v in np.percentile(ratios, (25, 75)))
     return len(ratios) < 2 or time_verdict(q1, q3) == UNSURE
@@ -102,7 +102,7 @@ def _ratio_labels(
     ratio: list[float], crossed: np.ndarray, band: tuple[float, float] | None, across: Sequence[bool] = ()
 ) -> tuple[list[str], str]:
     """Each pair's ratio as written over it, "*" inside ``band`` (a saving or cost only), else "†" where ``across``
-    (its middle half reaches across the tie band, as chapter 04's table marks it), :data:`CROSSED` where the bars say
+    (its middle half includes a tie band edge, as chapter 04's table marks it), :data:`CROSSED` where the bars say
     the other way; and the title's note naming the marks drawn (review r30d: none promised where none is)."""
     noisy = [band is not None and band[0] < r < band[1] and time_verdict(r) != TIES for r in ratio]
     wide = [band is not None and bool(across) and across[i] and not noisy[i] for i in range(len(ratio))]

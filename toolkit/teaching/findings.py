@@ -50,7 +50,7 @@ def planning_verdict(
     row: Mapping[str, Mapping], tie: float = TIE, band: tuple[float, float] | None = None
 ) -> tuple[float, float, float, str]:
     """The per-query ratios' median and quartiles, and the median's verdict: :data:`UNSURE` where that saving or cost
-    lies inside the noise band (``band``, else :func:`noise_band`), where the middle half reaches across the tie band
+    lies inside the noise band (``band``, else :func:`noise_band`), where the middle half includes a tie band edge
     (a few live queries: a busy machine must not flip a verdict), or with fewer than two queries."""
     ratios = per_query_ratios(row)
     q1, median, q3 = (float(v) for v in np.percentile(ratios, (25, 50, 75)))
@@ -88,13 +88,13 @@ def planning_table(
 
 
 NO_CLEAR = r"\*"  # after a verdict: inside the noise band of its statistic, no clear evidence; that only (r42d)
-ACROSS = "†"  # after a live verdict: its middle half reaches across the tie band, or an edge point's time moved (r42d)
+ACROSS = "†"  # after a live verdict: its middle half includes a tie band edge, or an edge point's time moved
 SAID = {  # a planning verdict at the end of a sentence (its band filled in)
     SAVES: "prediction saved time",
     COSTS: "prediction cost time",
     TIES: "a tie: less than {band} from 1, neither saved nor cost",
     NO_CLEAR: "no clear evidence (\\*): inside the noise band",
-    ACROSS: "no clear evidence (†): its middle half reaches across the tie band",
+    ACROSS: "no clear evidence (†): its middle half includes an edge of the tie band (0.90 or 1.10)",
 }
 
 
