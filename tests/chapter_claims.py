@@ -60,7 +60,10 @@ SPEEDS = re.compile(  # section 3's line timing FCL against the fast exact check
 )
 MANY = 3  # "many times": the least ratio the prose's "FCL many times the fast checkers' time" allows
 # the opening's words (reader r48a: no typed range; r51a: the call, as the fold says, not the library, is slow)
-OPENING_SPEEDS = "FCL as called here (a Python call for each link the pre-filter cannot clear) is the slow one, many times slower per check"
+OPENING_SPEEDS = (
+    "FCL as called here (a Python call for each link the pre-filter cannot clear) is the slow one, many times slower "
+    "per check"
+)
 TYPED_RANGE = re.compile(r"\d+ ?[–-] ?\d+ ?(?:times|x\b)")  # a range of ratios typed into the opening
 
 
