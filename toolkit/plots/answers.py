@@ -207,7 +207,8 @@ def draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> 
             style["marker"],
             color=line.get_color(),
             markeredgecolor=COLORS["ink"] if i else COLORS["free"],  # a black mark ringed white on its black line
-            markersize=8,
+            markersize=11,  # r52c: at 8 the black mark hid on its black curve at page size
+            markeredgewidth=1.5,
             label=f"{name + ' ' if name else ''}threshold {threshold:.2f}",
         )
         said.append(
