@@ -468,6 +468,7 @@ def test_roc_curve_draws_every_curve_and_its_operating_point(probability, valid)
     assert not {to_rgba(line.get_color()) for line in lines} & mistakes
     assert not {line.get_marker() for line in lines} & {"s", "o"}
     assert len({(line.get_color(), line.get_linestyle()) for line in lines[::2]}) == 2  # two curves told apart
+    assert all(point.get_markersize() >= 10 and point.get_markeredgewidth() >= 1.5 for point in lines[1::2])  # r52c
 
 
 def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probability, valid):

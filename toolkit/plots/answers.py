@@ -182,8 +182,8 @@ def draw_rates(ax, scores: Mapping[str, Mapping[str, float]]) -> None:
 
 ROC_STYLES = (  # reader r45c: not the mistakes' marks (vermillion squares: dangerous, sky-blue circles: conservative);
     {"color": LINE_COLORS[2], "linestyle": "-", "marker": "v"},  # ink; r51c: not the threshold sweep's triangle and
-    {"color": LINE_COLORS[3], "linestyle": "-.", "marker": "X"},  # bluish green; diamond (TNR, TPR), nor §7's start
-    {"color": LINE_COLORS[4], "linestyle": ":", "marker": "P"},  # reddish purple
+    {"color": LINE_COLORS[4], "linestyle": "-.", "marker": "X"},  # reddish purple (r52c: green is the sweep's TPR);
+    {"color": LINE_COLORS[3], "linestyle": ":", "marker": "P"},  # bluish green; diamond (TNR, TPR), nor §7's start
 )
 """Each ROC curve's colour, line style and operating point's marker, in turn: none a mistake's colour or mark."""
 
@@ -207,7 +207,8 @@ def draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> 
             style["marker"],
             color=line.get_color(),
             markeredgecolor=COLORS["ink"] if i else COLORS["free"],  # a black mark ringed white on its black line
-            markersize=8,
+            markersize=11,  # r52c: at 8 the black mark hid on its black curve at page size
+            markeredgewidth=1.5,
             label=f"{name + ' ' if name else ''}threshold {threshold:.2f}",
         )
         said.append(
