@@ -133,9 +133,9 @@ EVERY_CELL = (
 )
 TABLE_2_NOTE = (
     "*Seen*: balanced samples (half valid) in training workspaces. *Unseen*: validity-blind samples in unseen "
-    'workspaces, as many as the paper (§IV-A) feeds each workspace\'s planning runs "regardless of their validity" '
-    '(2DS 200, 3DO 2000, 3DC 400 each; it ends that paragraph "This is evaluated as unseen scenarios" and does not '
-    "say which samples Table 2's unseen columns scored: these are our choice); *always valid*: the "
+    'workspaces, drawn as the paper (§IV-A) draws its unseen tests, "regardless of their validity", as many (2DS '
+    "200, 3DO 2000, 3DC 400 each); the paper does not give their valid share (its rates imply fewer valid ones than "
+    "ours: docs/fidelity.md); *always valid*: the "
     'accuracy of answering "valid" on the same samples. *Balanced unseen*: half-valid samples in the same '
     "workspaces (ours only; the paper reports none)."
 )
