@@ -302,6 +302,11 @@ def test_a_figure_of_the_robots_parts_marks_its_base_and_shades_each_link():
     assert to_hex("#ffffff") not in small  # a white link is a long one, outlined along its length
     # reader r48a: link 3 cross-hatched like a robot in collision; a link's shade is never the verdict's hatch
     assert not {p.get_hatch() for p in _patches(fig.axes[0], "link")} & {"xx", "++"}
+    # reader r53a: link 2, under the rising link 3 from above, was hidden: every link's outline dashed on top
+    outlines = _patches(fig.axes[0], "link outline")
+    assert len(outlines) == 4 and not any(p.get_fill() for p in outlines)
+    assert all(p.get_linestyle() == (0, (3, 2)) for p in outlines)  # dashed
+    assert min(p.get_zorder() for p in outlines) > max(p.get_zorder() for p in _patches(fig.axes[0], "link"))
 
 
 def test_a_robot_figures_flat_views_fill_their_width():
@@ -656,8 +661,8 @@ def test_a_slice_outlines_the_blocks_a_flat_view_draws_across_links_they_cannot_
     side = _one_link_slice(boxes, view="xz")
     (behind,) = _patches(side.axes[1], "beyond")  # from the side: the second block, behind the links
     assert _drawn_inside(behind, (5.25, 4), (5.5, 6))
-    assert ax.get_title().endswith("black dot: its base at z = 5.00")  # reader r41a: a height a top view cannot show
-    assert side.axes[1].get_title().endswith("black dot: its base")  # the side view shows it
+    assert ax.get_title().endswith("valid — base (black dot) at z = 5.00")  # r41a: a top view hides the height
+    assert side.axes[1].get_title().endswith(" — base (black dot)")  # the side view shows it
 
 
 def _one_link_slice(boxes, view="xy", x=5.0):

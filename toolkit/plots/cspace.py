@@ -391,7 +391,7 @@ def _robot_panel(
     mark_arm(robot_ax, robot, q, view)
     verdict = "valid" if q_valid[0] else "in collision"
     height = f" at z = {base[2]:.2f}" if robot.dim == 3 and view == "xy" else ""  # reader r41a: from above, unseen
-    robot_ax.set_title(f"the robot at the star ({view}):\n{verdict}; black dot: its base{height}", fontsize=9)
+    robot_ax.set_title(f"the robot at the star ({view}):\n{verdict} — base (black dot){height}", fontsize=9)  # r53a
     if view == "3d":
         few_ticks(robot_ax)
         return len(flat), 0

@@ -19,6 +19,7 @@ import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Patch, Polygon, Rectangle
+from matplotlib.patheffects import Normal, Stroke
 
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
@@ -294,12 +295,21 @@ def _link_shades(robot: BoxRobot, Q: np.ndarray, named: bool, parts: bool):
     return [SHARED_SHADE if s else None for s in same], {"the same in each": SHARED_SHADE}
 
 
+HIDDEN_EDGE: dict[str, Any] = dict(fill=False, edgecolor=COLORS["ink"], linestyle=(0, (3, 2)), linewidth=0.9)
+"""A link's outline drawn again on top of every link, dashed in a white halo: a link under another (chain9's link 2
+under link 3, from above) still shows its whole shape (reader r53a)."""
+
+
 def _number_links(ax, robot: BoxRobot, q: np.ndarray, axes: tuple[int, int]) -> None:
     """Each link's number on the flat view, at the centre of its shadow, on top of every link (reader r41a: chain9's
-    small link 2, under its neighbours' ends, could not be found from the legend alone)."""
+    small link 2, under its neighbours' ends, could not be found from the legend alone), and its outline dashed on
+    top (:data:`HIDDEN_EDGE`)."""
     centers, rotations, half = robot.link_boxes(q[None])
+    halo = [Stroke(linewidth=2.4, foreground=COLORS["free"]), Normal()]
     for link in range(robot.n_links):
-        middle = outline(box_corners(centers[0, link], rotations[0, link], half[link]), axes).mean(axis=0)
+        shadow = outline(box_corners(centers[0, link], rotations[0, link], half[link]), axes)  # (corners, 2)
+        ax.add_patch(Polygon(shadow, zorder=97, gid="link outline", path_effects=halo, **HIDDEN_EDGE))
+        middle = shadow.mean(axis=0)
         ax.text(
             *middle,
             str(link),
@@ -318,7 +328,7 @@ def _shades_text(shade_names: dict, parts: bool) -> str:
     if parts:
         return (
             f" Its base is marked with a black dot; its links from the base ({', '.join(shade_names)}), each shaded"
-            " and, in a flat view, numbered on the drawing."
+            " and, in a flat view, numbered on the drawing and outlined dashed on top of every link."
         )
     same = f" Links the same in every configuration are drawn in light grey, {_hatch_name(SHARED_SHADE[1])}"
     return (same + " ('the same in each').") * bool(shade_names)
