@@ -287,6 +287,7 @@ def test_a_figure_of_the_robots_parts_marks_its_base_and_shades_each_link():
         "link 2: 0.1 long",
         "link 3: 0.4 long",
         "base",
+        "dashed: link outlines, on top",
     ]
     assert "Its base is marked with a black dot" in alt_text(fig)
     # reader r47a: link 3's swatch, opaque black, hid the cross-hatch its drawing shows: each swatch as drawn

@@ -230,7 +230,8 @@ def _legend(labels, colors, hatches, named: bool, shade_names: dict, parts: bool
             (Patch(**link_style(c, h)), Line2D([], [], **_end_mark(k, c))) if named else Patch(**link_style(c, h))
         )
     handles |= {name: Patch(alpha=FLAT_ALPHA, **link_style(*shade)) for name, shade in shade_names.items()}
-    return handles | ({"base": Line2D([], [], **BASE_MARK)} if parts else {})
+    outlines = Line2D([], [], color=HIDDEN_EDGE["edgecolor"], linestyle=HIDDEN_EDGE["linestyle"], linewidth=0.9)
+    return handles | ({"base": Line2D([], [], **BASE_MARK), "dashed: link outlines, on top": outlines} if parts else {})
 
 
 def _place_key(fig: Figure, handles: dict[str, Any]) -> int:
