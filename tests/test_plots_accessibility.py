@@ -356,7 +356,14 @@ def test_a_reconstructions_regions_count_every_wrong_cell():
     invented = int(np.sum((grids < 0) & (decoded > 0)))
     assert missed + invented > 0
     assert sum(int(m[1]) for m in wrong) == missed and sum(int(m[2]) for m in wrong) == invented
-    assert len(part["rows"]) == 4 and part["columns"][1] == "x cell 0 to 2"  # 10 cells in 4 regions: 0 2 5 8 10
+    # 10 cells in 4 regions, edges 0 2 5 8 10; reader r53b: each range's last cell said, not the next one's first
+    assert len(part["rows"]) == 4 and part["columns"][1:] == [
+        "x cells 0–1",
+        "x cells 2–4",
+        "x cells 5–7",
+        "x cells 8–9",
+    ]
+    assert [row[0] for row in part["rows"]] == ["y cells 8–9", "y cells 5–7", "y cells 2–4", "y cells 0–1"]
 
 
 def test_the_crossover_curves_are_in_a_table_at_their_measured_values():

@@ -13,7 +13,9 @@ decoded cell counts as occupied where the decoder's output is positive, as in
 
 from __future__ import annotations
 
+import re
 from dataclasses import replace
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -137,7 +139,7 @@ def reconstructions(
         row.suptitle(f"{name}: {acc:.1%} {right} (all free: {all_free:.1%})", fontsize=10)
         scored = f"{acc:.1%} {right} against {all_free:.1%} for answering all free; {wrong}"
         said.append(f"{name}: {scored}")  # reader r45b: the part has its name as title, not again ("seen 0: seen 0:")
-        parts.append(grid_part(name, scored, grid, out, None if flipped is None else flipped[k]))
+        parts.append(_cells(grid_part(name, scored, grid, out, None if flipped is None else flipped[k])))
     handles, labels = legend_handles(list(drawn))  # "missed cell", not "block": mostly single cells (r29b)
     handles.append(Patch(facecolor=colormaps[GREYS_CMAP](1.0), alpha=FADED, edgecolor=COLORS["ink"], linewidth=0.5))
     labels.append("occupied in the input (faded)")  # reader r31b: a seen grid's panel, all grey, read as empty
@@ -146,6 +148,13 @@ def reconstructions(
     grids_said = f"{len(grids)} occupancy grid{'s' if len(grids) > 1 else ''}"
     text = f"{grids_said}, each beside its reconstruction and its wrong cells. " + "; ".join(said)
     return describe(fig, text + ".", parts)
+
+
+def _cells(part: Part) -> Part:
+    """A region table's ranges of cells, both ends said (reader r53b: "x cell 0 to 8 | 8 to 16" read as overlapping
+    ends): "x cells 0–7 | 8–15"."""
+    said = partial(re.sub, r"([xy]) cell (\d+) to (\d+)", lambda m: f"{m[1]} cells {m[2]}–{int(m[3]) - 1}")
+    return replace(part, columns=tuple(map(said, part.columns)), rows=tuple((said(r[0]), *r[1:]) for r in part.rows))
 
 
 FADED = 0.25  # the input's opacity under the wrong cells' marks: its obstacles light grey
