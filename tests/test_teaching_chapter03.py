@@ -99,6 +99,17 @@ def test_a_slice_verdict_counts_its_mistakes_by_where_they_lie():
     assert said.startswith("1 of 400 cells wrong, 0% of them near a boundary; 0 (0%) of the C-obstacle's cells called")
     assert "1 (0.3%) of the free ones rejected" in said  # r34c: a count beside a share under 1 %, never a bare "0%"
     assert said.endswith("away from any boundary it makes 1 conservative and 0 dangerous mistakes")
+    p[19, 12], p[5, 7] = 0.0, 1.0  # a free cell by the wall rejected, an obstacle cell at the obstacle's edge kept
+    said = chapter03.slice_verdict(p, truth, 0.5, 1)  # r53c: the walls' mistakes apart from the obstacles'
+    assert said.endswith(
+        "it finds the obstacles and errs mostly along the walls or the obstacles' edges: 1 within 1 cells of the map's "
+        "edge, 1 beside an obstacle elsewhere; away from any boundary it makes 1 conservative and 0 dangerous mistakes"
+    )
+    wrapped = chapter03.slice_verdict(p, truth, 0.5, 1, edge="wrap")  # no wall: the map's edge is no boundary
+    assert wrapped.endswith(
+        "errs more often away from their edges than at them; away from any boundary it makes 2 "
+        "conservative and 0 dangerous mistakes"
+    )
 
 
 def test_band_starts_reads_where_the_middle_row_enters_the_band_beside_the_straight_chains_211():
