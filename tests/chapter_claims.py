@@ -490,26 +490,33 @@ def _beside(points: int) -> str:
 
 SLICE = re.compile(  # section 5's verdict on a slice (the notebook's slice_verdict), its numbers and words captured
     r"(\d+) of \d+ cells wrong, (\d+)% of them near a boundary; \d+ \([^()]*%\) of the C-obstacle's cells called "
-    r"valid, \d+ \([^()]*%\) of the free ones rejected: it (misses parts of the obstacles|finds the obstacles, and "
-    r"errs only at their edges|finds the obstacles and errs (?:mostly at their edges|more often away from their edges "
-    r"than at them); away from any boundary it makes (\d+) conservative and (\d+) dangerous mistakes)"
+    r"valid, \d+ \([^()]*%\) of the free ones rejected: it (misses parts of the obstacles|finds the obstacles(?:, and "
+    r"errs only| and errs mostly) (?:at their edges|along the walls or the obstacles' edges: (\d+) within \d+ cells "
+    r"of the map's edge, (\d+) beside an obstacle elsewhere)|finds the obstacles and errs more often away from their "
+    r"edges than at them)(?:; away from any boundary it makes (\d+) conservative and (\d+) dangerous mistakes)?"
 )
 
 
 def _chapter_03_slices(found: str) -> list[str]:
-    """Section 5's two slice verdicts against their own counts: "only at their edges" where every mistake is near a
-    boundary, "mostly" where at least half are, and the mistakes away from a boundary adding up to the rest; section
-    7: the paper's planner, whose edges are all checked exactly, repairs no path."""
+    """Section 5's two slice verdicts against their own counts: "only" near an edge where every mistake is near a
+    boundary, "mostly" where at least half are, the mistakes away from a boundary adding up to the rest, and those by
+    the walls and beside an obstacle to the mistakes near one (r53c); section 7: the paper's planner, whose edges are
+    all checked exactly, repairs no path."""
     said = SLICE.findall(found)
     problems = [] if len(said) == 2 else [f"03: expected two slice verdicts (section 5), found {len(said)}"]
-    for wrong, near, words, conservative, dangerous in said:
+    for wrong, near, words, walls, beside, conservative, dangerous in said:
         far = int(wrong) - round(int(wrong) * int(near) / 100)  # the mistakes away from a boundary, as printed
-        if words.endswith("only at their edges") and int(near) < 100:
-            problems.append(f"03: a slice 'errs only at their edges' with {near}% of its mistakes near a boundary")
-        if "mostly at their edges" in words and int(near) < 50:
-            problems.append(f"03: a slice 'errs mostly at their edges' with {near}% of its mistakes near a boundary")
+        if " errs only " in words and int(near) < 100:
+            problems.append(f"03: a slice 'errs only' near an edge with {near}% of its mistakes near a boundary")
+        if " errs mostly " in words and int(near) < 50:
+            problems.append(f"03: a slice 'errs mostly' near an edge with {near}% of its mistakes near a boundary")
         if conservative and abs(int(conservative) + int(dangerous) - far) > max(2, 0.01 * int(wrong)):
             problems.append(f"03: a slice's mistakes away from a boundary ({conservative} + {dangerous}) are not {far}")
+        away = int(conservative or 0) + int(dangerous or 0)
+        if walls and int(walls) + int(beside) + away != int(wrong):
+            problems.append(
+                f"03: a slice's mistakes by the walls ({walls}) and beside an obstacle ({beside}) do not add up"
+            )
     if not re.search(r"of them in collision \(dangerous mistakes the planner accepted\); repairs: 0\b", found):
         problems.append("03: section 7 says the paper's planner never puts a node in collision on a path; it repaired")
     return problems
