@@ -251,7 +251,7 @@ def test_beyond_sampling_sets_the_papers_own_arithmetic_beside_ours():
     assert said.endswith(  # reader r51d, item 2: by each query's own ratio one python-fcl saving is, clearly
         "Each lies inside the noise band of a ratio of means (0.52–1.48): within timing noise, so no evidence of a "
         "saving larger than sampling. By each query's own ratio, python-fcl's 3DC-9 OB (21 % against 11 %) did save "
-        "more than all of sampling, beyond that statistic's noise band (the answer's *Why*)."
+        "more than all of sampling, beyond that statistic's noise band (the fold under the answer's *Why*)."
     )
     assert "another roadmap can explain it" not in said.split("Ours have")[1]
 

@@ -337,7 +337,7 @@ def _ours_beyond(tables: Tables | None = None) -> str:
 
 def _by_own(tables: Tables | None = None) -> str:
     """The fold's last sentence (reader r51d, item 2): python-fcl's savings larger than all of sampling by each
-    query's own ratio, beyond that statistic's noise band, where the answer's *Why* names them."""
+    query's own ratio, beyond that statistic's noise band, where the fold under the answer's *Why* names them."""
     over = [
         f"{cell} ({100 * saved:.0f} % against {100 * share:.0f} %)"
         for cell, saved, share, _ in fcl_clear(tables)
@@ -345,7 +345,7 @@ def _by_own(tables: Tables | None = None) -> str:
     ]
     return (
         f" By each query's own ratio, python-fcl's {', '.join(over)} did save more than all of sampling, beyond that "
-        "statistic's noise band (the answer's *Why*)."
+        "statistic's noise band (the fold under the answer's *Why*)."
     ) * bool(over)
 
 
