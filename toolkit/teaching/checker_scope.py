@@ -312,8 +312,8 @@ def section_6(this_run: dict[str, float], tables: Tables | None = None, first: s
         "exact checker (compiled in 3D, numpy interval tests in 2DS) and with python-fcl on both sides "
         "(`docs/results.md`):\n\n" + table(compact(tables), counts=True, narrow=True),
         "<details><summary>The counts in full sentences and by means, and more tables: the same runs by means, the "
-        "<code>paper</code> preset, the lazy PRM, the sampling stage, the <code>paper</code> MLP's accuracy, and what "
-        "a network call "
+        "<code>paper</code> preset, the lazy PRM, the sampling stage, the <code>paper</code> MLP's accuracy (not "
+        "the answer's network), and what a network call "
         "cost</summary>\n\n" + "\n\n".join([first, *more] if first else more) + "\n\n</details>",
     ]
 
