@@ -147,8 +147,11 @@ def test_encoding_line_sets_the_live_encoding_beside_each_costly_cells_growth_af
     assert "The time after sampling includes encoding the workspace" in said and "spent 3.0 ms a query" in said
     assert "3DC-7 OB's time after sampling grew 11.7 ms, of which the encoding is about 26 %" in said
     assert "3DC-7 BT's time after sampling grew 2.8 ms, which the encoding alone could cover" in said
-    assert "(3DC-9 BT +15.3 ms, 3DO OB +18.0 ms after sampling)" in said and "(in 1 of the 2 3DC-7 cells)" in said
-    assert "in 2 of the 2" in chapter04_paper.encoding_line({"with": [{"encode_s": 0.001}]})  # covers neither
+    assert "(3DC-9 BT +15.3 ms, 3DO OB +18.0 ms after sampling)" in said  # reader r53d, item 5: named, not counted
+    assert "In 3DC-7 OB the encoding is smaller than that growth, so something else after sampling grew too" in said
+    covers_neither = chapter04_paper.encoding_line({"with": [{"encode_s": 0.001}]})
+    assert "In 3DC-7 OB and 3DC-7 BT the encoding is smaller than that growth" in covers_neither
+    assert "smaller than that growth" not in chapter04_paper.encoding_line({"with": [{"encode_s": 0.02}]})
     assert chapter04_paper.encoding_line({"with": [{"encode_s": 0.0}]}) == ""  # no network, no encoding to set
 
 

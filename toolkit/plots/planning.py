@@ -159,7 +159,7 @@ def _samples_part(robot, name: str, Q: np.ndarray, blocked: np.ndarray) -> Part:
     counts = np.histogram2d(Q[:, 0], Q[:, 1], bins=edges)[0]  # (b, b), [x, y]
     x, y = ("x", robot.lower[0], robot.upper[0]), ("y", robot.lower[1], robot.upper[1])
     cell = lambda r: f"{int(counts[r].sum())} samples; {blocked[r].mean():.0%} C-obstacle"
-    text = f"{len(Q)} samples; by region, top row first: how many fell there, and the share of it that is C-obstacle"
+    text = f"{len(Q)} samples; by region, top row first: samples there, and its C-obstacle share (alike in every table)"
     return map_part(name, text, counts.shape, x, y, cell)
 
 

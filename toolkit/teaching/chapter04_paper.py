@@ -154,8 +154,9 @@ def sampling_claim(tables: Tables | None = None) -> str:
 
 
 def why(tables: Tables | None = None) -> str:
-    """The answer's *Why* (reader r47d, item 3): sampling's share of a query in our fast checker's run, inline, and
-    the paper's cells whose total saving exceeds all of their sampling time (:func:`saved_beyond_sampling`)."""
+    """The answer's *Why* (reader r47d, item 3; r53d, item 3: three sentences, one statistic each): sampling's share
+    of a query with each checker, with the shares by cell and python-fcl's clear savings folded (:func:`shares_fold`),
+    the paper's cells whose total saving exceeds all of their sampling time, and the network's accuracy."""
     shares, slow = (costs.sampling_shares(preset, tables) for preset, _ in RUNS)
     ties = costs.median_counts(RUNS[1][0], tables)[TIES][0]
     rows = recorded.table(recorded.ALGORITHM_1, "Checker throughput", tables).values()
@@ -163,24 +164,36 @@ def why(tables: Tables | None = None) -> str:
     over = saved_beyond_sampling()
     top = max(over, key=lambda c: over[c][0])
     cells = sum(len(k["total_s"]) for k in TIMES.values())
+    cheaper = "a network call is the cheaper check" if fcl == len(rows) else f"a network call is cheaper in {fcl}"
     return (
-        f"**Why no saving:** the network is accurate ({accuracy(tables)}), but prediction replaces only the "
-        "samples' checks, and sampling is "
-        f"{100 * min(shares):.1f}–{100 * max(shares):.0f} % of a query (our fast checker's mean times without "
-        "prediction, by cell). With our fast checker a network call also costs more than the exact check it replaces "
-        "([section 4](#4-is-the-network-a-cheaper-check)), and encoding the workspace comes on top. Against python-fcl "
-        + (
-            "a network call is the cheaper check"
-            if fcl == len(rows)
-            else f"a network call is cheaper in {fcl} of {len(rows)} scenarios"
-        )
-        + f", but sampling is only {100 * min(slow):.1f}–{100 * max(slow):.0f} % of "
-        f"a query there, so skipping its checks saves little: {ties} of {len(slow)} cells tie. "
-        f"{fcl_savings(tables)}\n\n"
+        "**Why no saving:** prediction replaces only the samples' checks, and with our fast checker sampling is "
+        f"{100 * min(shares):.1f}–{100 * max(shares):.0f} % of a query (mean times without prediction, by cell). "
+        "A network call also costs more than that checker's check ([section 4](#4-is-the-network-a-cheaper-check)), "
+        f"and encoding the workspace comes on top. Against python-fcl {cheaper}, but sampling is only "
+        f"{100 * min(slow):.1f}–{100 * max(slow):.0f} % of a query there, so {ties} of {len(slow)} cells tie.\n\n"
+        f"{shares_fold(tables)}\n\n"
         "**Nor can skipped sample checks explain the paper's savings:** in "
         f"{len(over)} of its {cells} cells the total time saved exceeds the whole sampling time without prediction "
         f"(e.g. {checker_scope.NAMES[top[0]]} {top[1]} saves {over[top][0]:.2f} s; its sampling took "
-        f"{over[top][1]:.2f} s)."
+        f"{over[top][1]:.2f} s).\n\n{accuracy(tables)}"
+    )
+
+
+def shares_fold(tables: Tables | None = None) -> str:
+    """The *Why*'s fold (reader r53d, items 3-4): sampling's share of a mean query without prediction by cell, both
+    runs, so the *Why*'s ranges can be checked; then python-fcl's clear savings beside it (:func:`fcl_savings`)."""
+    fast, slow = (costs.shares_by_cell(preset, tables) for preset, _ in RUNS)
+    samplers = list(dict.fromkeys(s for _, s in fast))
+    rows = "\n".join(
+        f"| {name} | " + " | ".join(f"{100 * fast[key, s]:.1f} / {100 * slow[key, s]:.1f}" for s in samplers) + " |"
+        for key, name in checker_scope.NAMES.items()
+    )
+    return (
+        "<details><summary>Sampling's share of a query, cell by cell, and python-fcl's two clear savings</summary>"
+        "\n\nSampling's share of a mean query without prediction, in % (`docs/results.md`, \"Times behind Table "
+        '3"): our fast checker / python-fcl.\n\n'
+        f"| scenario | {' | '.join(samplers)} |\n| --- |{' ---: |' * len(samplers)}\n{rows}\n\n"
+        f"{fcl_savings(tables)}\n\n</details>"
     )
 
 
@@ -196,15 +209,19 @@ def fcl_clear(tables: Tables | None = None) -> list[tuple[str, float, float, boo
     ]
 
 
-def _by_means(cell: str, share: float, tables: Tables | None = None) -> str:
-    """Reader r52d, item 4: what skipped checks explain of a python-fcl saving that sampling's share allows, by the
-    sampling table's means (sampling's saving times its share of a mean query) beside the total's saving by means."""
+def _by_means(cell: str, share: float, saved: float, tables: Tables | None = None) -> str:
+    """Reader r52d, item 4, and r53d, item 3: a python-fcl saving that sampling's share allows, by the sampling
+    table's means (sampling's saving times its share of a mean query) beside the total's saving by means, one
+    statistic a sentence; the median own ratio's saving is set beside last, said to be another statistic."""
     key = next(k for k, name in checker_scope.NAMES.items() if cell.startswith(name + " "))
     sampling, total = (1 - checker_scope.means(RUNS[1][0], key, kind, tables)[cell.split()[-1]] for kind in KINDS)
+    covers = sampling * share >= total
     return (
-        f": by means its sampling took {100 * sampling:.0f} % less time, about {100 * sampling * share:.0f} % of a "
-        f"mean query, and its total {100 * total:.0f} % less: skipped checks "
-        f"{'can' if sampling * share >= total else 'cannot'} explain that saving by means"
+        f" By means, its sampling took {100 * sampling:.0f} % less time, about {100 * sampling * share:.0f} % of a "
+        f"mean query. By means, its total took {100 * total:.0f} % less time, so skipped checks "
+        f"{'can' if covers else 'cannot'} explain its saving by means. The {100 * saved:.0f} % above is the median "
+        f"of each query's own ratio, another statistic: it is {'more' if saved > sampling * share else 'no more'} "
+        f"than those {100 * sampling * share:.0f} %, and no table here splits a median own ratio into stages."
     )
 
 
@@ -213,33 +230,41 @@ KINDS = ("sampling", "total")
 
 def fcl_savings(tables: Tables | None = None) -> str:
     """The python-fcl run's savings beyond the noise band (:func:`fcl_clear`) put to the test the paper's cells fail
-    (reader r51d, item 2): the share of the median query saved against sampling's share of a mean query; the cell
-    whose share is the top of the answer's range is named so."""
+    (reader r51d, item 2; r53d, item 3: one statistic a sentence): the share of the median query saved, then
+    sampling's share of a mean query, then the reading; the cell whose share tops the table is named so."""
     said = [
-        f"{cell} saved {100 * saved:.0f} % where sampling is {100 * share:.0f} %"
-        + " (the top of that range)" * top
-        + (": skipped checks cannot explain it" if saved > share else _by_means(cell, share, tables))
+        f"**{cell}**: by each query's own ratio, its median query took {100 * saved:.0f} % less time. Sampling is "
+        f"{100 * share:.0f} % of its mean query without prediction"
+        + " (the table's largest share)" * top
+        + "."
+        + (
+            " That saving is larger than all of sampling: skipped checks cannot explain it."
+            if saved > share
+            else _by_means(cell, share, saved, tables)
+        )
         for cell, saved, share, top in fcl_clear(tables)
     ]
     if not said:
         return ""
     return (
-        "A saving larger than all of sampling cannot come from skipping sample checks. Of python-fcl's "
-        f"{len(said)} saving{'s' * (len(said) > 1)} beyond the noise band (by each query's own ratio; sampling as a "
-        f"share of a mean query): {'; '.join(said)}."
+        "Skipping sample checks can save at most all of sampling. python-fcl's run has "
+        f"{len(said)} saving{'s' * (len(said) > 1)} beyond the noise band of each query's own ratio (a band borrowed "
+        "from the fast checker's run).\n\n" + "\n\n".join(f"- {one}" for one in said)
     )
 
 
 def accuracy(tables: Tables | None = None) -> str:
-    """The accurate network's accuracy in the Algorithm 1 run, one range (reader r48d: the page gave no number): its
-    balanced unseen accuracy by scenario, as ``docs/results.md``'s accuracy table records it for that run."""
-    scores = [
-        int(row["Balanced unseen Acc"].strip("*%"))
-        for row in recorded.table(RUNS[0][0], "MLP accuracy", tables).values()
-    ]
+    """What *accurate* means on this page (reader r48d; r53d, item 2): the `strong` network's balanced unseen accuracy
+    in the Algorithm 1 run, by scenario, a one-line table from ``docs/results.md``'s accuracy table for that run."""
+    found = recorded.table(RUNS[0][0], "MLP accuracy", tables)
+    names = [name for key, name in checker_scope.NAMES.items() if key in found]
+    scores = [found[key]["Balanced unseen Acc"].strip("*%") + " %" for key in checker_scope.NAMES if key in found]
     return (
-        f"it is right {min(scores)}–{max(scores)} % of the time on half-valid samples in unseen workspaces, by "
-        "scenario: the results page's accuracy table for that run, `docs/results.md`"
+        "**How accurate:** how often the network the answer uses (the `strong` preset's) is right in unseen "
+        "workspaces, on samples half of them valid (the results page's accuracy table for that run, "
+        "`docs/results.md`; [notebook 03](03_mlp_decision_boundaries.ipynb) trains and tests it):\n\n"
+        f"| right this often | {' | '.join(names)} |\n| --- |{' ---: |' * len(names)}\n"
+        f"| the `strong` network | {' | '.join(scores)} |"
     )
 
 
@@ -312,7 +337,7 @@ def _ours_beyond(tables: Tables | None = None) -> str:
 
 def _by_own(tables: Tables | None = None) -> str:
     """The fold's last sentence (reader r51d, item 2): python-fcl's savings larger than all of sampling by each
-    query's own ratio, beyond that statistic's noise band, where the answer's *Why* names them."""
+    query's own ratio, beyond that statistic's noise band, where the fold under the answer's *Why* names them."""
     over = [
         f"{cell} ({100 * saved:.0f} % against {100 * share:.0f} %)"
         for cell, saved, share, _ in fcl_clear(tables)
@@ -320,7 +345,7 @@ def _by_own(tables: Tables | None = None) -> str:
     ]
     return (
         f" By each query's own ratio, python-fcl's {', '.join(over)} did save more than all of sampling, beyond that "
-        "statistic's noise band (the answer's *Why*)."
+        "statistic's noise band (the fold under the answer's *Why*)."
     ) * bool(over)
 
 
@@ -343,16 +368,22 @@ def encoding_line(records: Mapping[str, list[dict]], tables: Tables | None = Non
         for n, g in here.items()
     ]
     elsewhere = [f"{n} +{g:.1f} ms" for n, g in grew.items() if n not in here]
-    short = sum(ms < g for g in here.values())
+    short = [n for n, g in here.items() if ms < g]  # reader r53d, item 5: named, not "2 of the 2"
+    rest = (
+        f"In {' and '.join(short)} the encoding is smaller than that growth, so something else after sampling grew "
+        "too; these runs do not say what. "
+        if short
+        else ""
+    )
     return (
         "**The encoding beside that growth.** The time after sampling includes encoding the workspace for the network. "
         f"Section 5's live 3DC-7 queries spent {ms:.1f} ms a query on it (median; on this machine, not in the recorded "
         f"run, so a rough size). {'; '.join(said) or 'No 3DC-7 cell costs that much'}. "
+        + rest
         + (
-            f"The other scenarios' encoding is not measured here ({', '.join(elsewhere)} after sampling). "
+            f"The other scenarios' encoding is not measured here ({', '.join(elsewhere)} after sampling), so these "
+            "runs cannot tell what grew there."
             if elsewhere
             else ""
         )
-        + f"Where the encoding falls short (in {short} of the {len(here)} 3DC-7 cells), something else after sampling "
-        "grew too, and these runs do not say what; elsewhere they cannot tell."
-    )
+    ).strip()

@@ -312,8 +312,8 @@ def section_6(this_run: dict[str, float], tables: Tables | None = None, first: s
         "exact checker (compiled in 3D, numpy interval tests in 2DS) and with python-fcl on both sides "
         "(`docs/results.md`):\n\n" + table(compact(tables), counts=True, narrow=True),
         "<details><summary>The counts in full sentences and by means, and more tables: the same runs by means, the "
-        "<code>paper</code> preset, the lazy PRM, the sampling stage, the <code>paper</code> MLP's accuracy, and what "
-        "a network call "
+        "<code>paper</code> preset, the lazy PRM, the sampling stage, the <code>paper</code> MLP's accuracy (not "
+        "the answer's network), and what a network call "
         "cost</summary>\n\n" + "\n\n".join([first, *more] if first else more) + "\n\n</details>",
     ]
 
@@ -327,8 +327,8 @@ def _paper_mlp(tables: Tables | None = None) -> str:
     balanced = [recorded.ours(mlp[key]["Balanced unseen Acc"]) for _, key in SCENARIOS_4]  # half the samples valid
     fair = [(MLP[k]["unseen"]["tpr"] + MLP[k]["unseen"]["tnr"]) / 2 for _, k in SCENARIOS_4]  # the paper's, so
     return (
-        "The `paper` preset's MLP on unseen workspaces, on our validity-blind samples; which kind the paper's unseen "
-        "test used is unstated (chapter 03); in parentheses, the paper's rates (its Table 2). From the results "
+        "**The `paper` preset's MLP (not the network the answer uses)** on unseen workspaces, on samples drawn "
+        '"regardless of their validity" as the paper\'s (§IV-A); in parentheses, its rates (Table 2). From the results '
         "page's accuracy table (`docs/results.md`; on balanced samples, half of them valid, the same MLP is right "
         f"{min(balanced):.0%} to {max(balanced):.0%} of the time, its *Balanced unseen* column, where the paper's "
         f"rates would be right {min(fair):.0%} to {max(fair):.0%}):\n\n"
