@@ -2164,6 +2164,14 @@ def test_the_paper_s_bs_rows_bound_its_check_s_cost():
     halves = [bound(s, 1) / bound(s, 0) for s in ("2ds", "3dc7", "3dc9", "3do")]
     assert 0.4 < min(halves) and max(halves) < 0.6
     assert f"With the network the same bound is about half ({bound('2ds', 1):.0f} µs in 2DS, {spread(1)})." in flat
+    # reader r53g, lift 2: the bound's arithmetic in the fold under the answer, the rule it serves above it
+    fold = PAGE.index("<summary>What the paper's times allow one check to cost;")
+    assert (
+        PAGE.index("That pays, through cheaper checks")
+        < fold
+        < PAGE.index("BS checks each of its")
+        < PAGE.index("\n## ")
+    )
 
 
 def test_table_3_is_counted_by_its_own_column_and_the_text_s_means_said():
