@@ -1722,6 +1722,14 @@ def test_reader_r34g_race_one_convention_estimates_named_and_the_paper_s_own_tim
     assert "UTC" not in measured and "load average" not in measured
     when = flat.partition("When the race ran, and under what load</summary>")[2].partition("</details>")[0]
     assert "14:37–14:39 UTC" in when and "load average 0.9–1.0" in when
+    # reader r53g, race 4: the minute the two ranges share, said
+    assert "the table's last run ended and the race began within the same minute, 14:37 (the record keeps" in when
+    # reader r53g, race polish 1 and 3: RRT-Connect's calls said one way in both places; three planners of ours
+    assert flat.count("at most two calls of tens of states each") == 2 and "a few batched calls" not in flat
+    assert (
+        "The toolkit has two exact planners of its own, for two jobs, plus the paper's Algorithm 1 as we read it."
+        in flat
+    )
     said = "older than today's (below)"  # reader r39g, race 3: the commit story in this fold
     assert said in " ".join(scope.split())
 
@@ -1749,6 +1757,13 @@ def test_reader_r35g_the_race_s_batched_state_cost_is_no_check_cost_on_either_pa
     # reader r48g, race 6: the fold opens with its conclusion; how an estimate's row is made, said where it is printed
     assert "benchmarks page's price of a check</summary> **No verdict above changes, even with OMPL's states" in race
     assert "The race printed each estimate as a ratio to one of our planners' medians, not as a time, so" in race
+    from toolkit.plots.race import BATCHED  # reader r53g, race 2: which of our medians each estimate row divides
+
+    (rrt_ratio, rrt), (prm_ratio, prm) = (BATCHED[p] for p in ("OMPL RRTConnect", "OMPL PRM"))
+    assert (
+        f"OMPL RRTConnect's is our {rrt.removeprefix('ours: ')}'s median over \"{rrt_ratio}\", OMPL PRM's our "
+        f'{prm.removeprefix("ours: ")}\'s median over "{prm_ratio}"' in race
+    )
     flat = " ".join(ENGINEERING.split())  # reader r37g, lift 1: moved to the maintainers' page with the small calls
     # reader r36g, contradiction 1: 3DC-7's check lies inside the race's range; each table's cost said, and the
     # sweep's least compiled cost along the call sizes apart from its least anywhere
