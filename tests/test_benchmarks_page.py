@@ -365,11 +365,17 @@ def test_the_opening_names_the_statistic_of_no_saving_and_counts_the_means():
     assert PAGE.index("](crossover.png)") < PAGE.index("## How to read this page") < PAGE.index("## Does prediction")
     # reader r51g, "places I got lost" and lift 5: how a ratio reads, said in the Key before the first section uses one
     key = flat.partition("*Key.*")[2].partition("## ")[0]
+    # reader r53g, lift 5: the Key a glossary list, the three networks, the three statistics and the bands named
     assert (
         "*Ratios*: every ratio on this page is a time ratio, A / B, the time A takes over the time B takes: above 1, A "
-        "is the slower or dearer. Costs per configuration are read with a 25 % band (below), planning times with the "
-        'bands in "How to read this page", just above the planning section.' in key
+        "is the slower or dearer. - *Three statistics of a planning cell*"
+        in key
+        and "- *Bands*: costs per configuration are read with a 25 % band (below), planning times with the bands in "
+        '"How to read this page", just above the planning section: a 10 % tie band, and a noise band for each '
+        "statistic."
+        in key
     ) and flat.index("*Key.*") < flat.index("## How fast is the exact checker?")
+    assert "- *Three networks*: the *paper-size* one" in key and "The *ratio of medians*:" in key
     assert (
         f"That gives {edges('own')} for the median of each query's own ratio, {edges('means')} for a ratio of " in flat
     )
@@ -2049,11 +2055,15 @@ def test_the_planning_section_sets_the_paper_s_table_3_beside_our_python_fcl_run
         f"sampling; read with our tie band, its whole queries took less time in {paper.count(verdicts[0])} of its "
         f"{len(total)} cells, tied in {paper.count(verdicts[1])} and took more in none (its own column; the mean "
         "times of its text give about 8 / 8 / 0, the fold below). By means too, our python-fcl "
-        f"run took {100 * min(ours):.0f}–{100 * max(ours):.0f} % less time in sampling, yet its queries took less "
-        f"time in {means.count(verdicts[0])} cells, tied in {means.count(verdicts[1])} and took more in "
-        f"{means.count(verdicts[2])} (by each query's own ratio: {ties.count(verdicts[0])}, "
-        f"{ties.count(verdicts[1])} and {ties.count(verdicts[2])})."
+        f"run took {100 * min(ours):.0f}–{100 * max(ours):.0f} % less time in sampling, yet its whole queries, by "
+        f"means, took less time in {means.count(verdicts[0])} cells, tied in {means.count(verdicts[1])} and took more "
+        f"in {means.count(verdicts[2])} (the table above counts them by each query's own ratio)."
     ) in " ".join(PREDICTION.split())
+    # reader r53g, "where I got lost": one count in the sentence, the own ratios' in the section's table
+    row = column(
+        "a query's time, by each query's own ratio (lazy PRM: by the ratio of medians): cells shorter / tied / longer"
+    )["Algorithm 1, python-fcl (5 December)"]
+    assert row == " / ".join(str(ties.count(v)) for v in verdicts)
 
 
 def test_reader_r50g_each_costs_section_opens_with_its_answer():
