@@ -158,9 +158,9 @@ def test_the_opening_says_what_a_check_costs_as_the_checker_table_measured_it():
     # two statistics first, python-fcl second, the mesh last and outside the box scenes' clause
     assert LEAD.startswith(
         ": in the paper's box scenes a network is dearer than our compiled exact check (a paper-size network's answer "
-        f"costs {low:g}–{high:g} times a check in 3D), and our accurate `strong` networks made no cell's queries "
-        "shorter (by the median of each query's own ratio, time with / without, for Algorithm 1; by the ratio of "
-        "median times for the lazy PRM). "
+        f"costs {low:g}–{high:g} times a check in 3D), and against that check our accurate `strong` networks made no "
+        "cell's queries shorter (by the median of each query's own ratio, time with / without, for Algorithm 1; by "
+        "the ratio of median times for the lazy PRM). "
     )
     assert LEAD.endswith(
         " The network is cheaper than our compiled check only around a mesh obstacle, which the paper's scenes lack."
