@@ -41,3 +41,20 @@ def test_the_command_fails_on_a_raising_cell_and_names_it(tmp_path, capsys):
     path = write(tmp_path, "1 / 0")
     assert notebook_runner.main([str(path)]) == 1
     assert "FAILED" in capsys.readouterr().out
+
+
+def test_notebooks_run_side_by_side_report_in_order_each_with_its_own_kernels_cpu(tmp_path, capsys):
+    busy, idle = tmp_path / "busy", tmp_path / "idle"
+    busy.mkdir(), idle.mkdir()
+    paths = [write(busy, "sum(i * i for i in range(60_000_000))"), write(idle, "1 + 1")]  # the idle one ends first
+    assert notebook_runner.main(["--jobs", "2", *map(str, paths)]) == 0
+    lines = [line for line in capsys.readouterr().out.splitlines() if "kernel CPU" in line]
+    assert [line.split(": ")[0] for line in lines] == list(map(str, paths))
+    cpu = [float(line.split("kernel CPU ")[1].split(" s")[0]) for line in lines]
+    assert cpu[0] >= 3 and cpu[1] < cpu[0] / 2, lines  # the busy kernel's CPU is not counted to the idle one
+
+
+def test_the_command_names_a_bad_number_of_jobs(tmp_path, capsys):
+    with pytest.raises(SystemExit):
+        notebook_runner.main(["--jobs", "0", str(write(tmp_path, "1"))])
+    assert "--jobs must be at least 1, not 0" in capsys.readouterr().err

@@ -16,6 +16,7 @@ building the assignment, which a whole session has done before), ``toolkit plan`
 """
 
 import json
+import os
 import shutil
 import subprocess
 from pathlib import Path
@@ -58,11 +59,12 @@ def installed(toolkit_wheel, fresh_environment, tmp_path_factory) -> tuple[Path,
 
 @pytest.fixture(scope="module")
 def notebook_runs(installed) -> dict[str, str]:
-    """Each chapter's and tutorial's line from the notebook runner, which ran them all from the copy, one after
-    another in one process (its start-up, importing the toolkit, paid once): ``{name: "...: wall ..."}``."""
+    """Each chapter's and tutorial's line from the notebook runner, which ran them all from the copy, one per core
+    at a time, each worker importing the toolkit once: ``{name: "...: wall ..."}``."""
     python, env, course = installed
     copies = [course / notebook.relative_to(ROOT) for notebook in NOTEBOOKS]
-    run = [python, course.parent / "notebook_runner.py", "--quick", *copies]
+    jobs = str(len(os.sched_getaffinity(0)))  # a quick kernel keeps about one core busy: one at a time per core
+    run = [python, course.parent / "notebook_runner.py", "--quick", "--jobs", jobs, *copies]
     done = subprocess.run(run, cwd=course, env=env, capture_output=True, text=True, timeout=3600)
     print(done.stdout.strip())  # each one's wall and CPU time (pytest -s)
     lines = {Path(line.split(": ")[0]).stem: line for line in done.stdout.splitlines() if ".ipynb: " in line}

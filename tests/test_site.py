@@ -14,6 +14,7 @@ from __future__ import annotations
 
 import html
 import itertools
+import os
 import re
 import time
 from collections.abc import Iterator
@@ -50,7 +51,8 @@ def site(tmp_path_factory, notebook_cache) -> Site:
     with pytest.MonkeyPatch.context() as env:
         env.setenv("TOOLKIT_CACHE", str(notebook_cache))
         began = time.perf_counter()
-        built = build_site(root / "site", quick=True, work=root / "build")
+        jobs = len(os.sched_getaffinity(0))  # quick kernels keep about one core busy each: one per core at a time
+        built = build_site(root / "site", quick=True, work=root / "build", jobs=jobs)
     took = time.perf_counter() - began
     print(f"\nsite built in {took:.0f} s (sources {built.assemble_s:.0f} s, mkdocs {built.render_s:.0f} s)")
     return built

@@ -5,22 +5,29 @@ command measures the running times the notebooks state in their first cell::
 
     python -m tools.notebook_runner notebooks/02_cae_reconstruction.ipynb            # full size
     python -m tools.notebook_runner --quick notebooks/*.ipynb tutorials/*.ipynb     # TOOLKIT_QUICK=1
+    python -m tools.notebook_runner --quick --jobs 2 notebooks/*.ipynb               # two at a time
 
 It prints the wall-clock time and the kernel's CPU time: on a machine shared with
-other work the first grows with the load, the second hardly does.
+other work the first grows with the load, the second hardly does. A quick-mode kernel keeps about one core
+busy, so ``--jobs`` set to the number of cores runs the set in about that fraction of the time; time a
+notebook's full size with one job, on an idle machine, as its first cell quotes.
 """
 
 from __future__ import annotations
 
 import argparse
 import base64
+import multiprocessing
 import os
 import resource
 import sys
 import time
+from collections.abc import Callable, Iterator
+from concurrent.futures import ProcessPoolExecutor
 from dataclasses import dataclass
 from pathlib import Path
 from queue import Empty
+from typing import TypeVar
 
 import nbformat
 from nbclient import NotebookClient
@@ -28,6 +35,7 @@ from nbclient.exceptions import CellExecutionError
 
 from toolkit.teaching.notebook import QUICK_ENV
 
+T = TypeVar("T")
 PNG_IN_HTML = 'src="data:image/png;base64,'  # a picture inside an HTML output
 NO_PROGRESS_BARS = "TQDM_DISABLE"  # tqdm's switch, read from the environment: off in a headless run
 
@@ -91,6 +99,22 @@ def run_notebook(path: str | Path, *, timeout: float = 900) -> NotebookRun:
     return NotebookRun(nb, outputs, wall, cpu)
 
 
+def each_in_a_worker(call: Callable[[Path], T], paths: list[Path], *, jobs: int) -> Iterator[tuple[Path, T]]:
+    """``call(path)`` for every path, ``jobs`` at a time, each in a worker process: yields ``(path, result)`` in
+    the order of ``paths`` (an exception of ``call`` is raised there, and what has not started is dropped).
+
+    A worker of its own counts each kernel's CPU time apart (:func:`run_notebook` reads the CPU time of the
+    process's finished children); ``call`` must be picklable, a module's function or a ``functools.partial``
+    of one. Workers are spawned, so they see the environment as it is when this is called."""
+    pool = ProcessPoolExecutor(jobs, mp_context=multiprocessing.get_context("spawn"))
+    try:
+        futures = [pool.submit(call, path) for path in paths]
+        for path, future in zip(paths, futures, strict=True):
+            yield path, future.result()
+    finally:
+        pool.shutdown(wait=True, cancel_futures=True)
+
+
 def _children_cpu() -> float:
     usage = resource.getrusage(resource.RUSAGE_CHILDREN)
     return usage.ru_utime + usage.ru_stime
@@ -151,28 +175,33 @@ def main(argv: list[str] | None = None) -> int:
     )
     parser.add_argument("notebooks", nargs="+", type=Path, help="notebook files (.ipynb)")
     parser.add_argument("--quick", action="store_true", help=f"set {QUICK_ENV}=1: the notebooks' small sizes")
+    parser.add_argument("--jobs", type=int, default=1, help="notebooks run at a time (default 1)")
     args = parser.parse_args(argv)
     missing = [str(p) for p in args.notebooks if not p.is_file()]
     if missing:
         parser.error(f"no such notebook: {', '.join(missing)}")
+    if args.jobs < 1:
+        parser.error(f"--jobs must be at least 1, not {args.jobs}")
     if args.quick:
         os.environ[QUICK_ENV] = "1"
+    lines = each_in_a_worker(_report, args.notebooks, jobs=args.jobs)
     failed = 0
-    for path in args.notebooks:
-        try:
-            run = run_notebook(path)
-        except CellExecutionError as error:  # a cell raised: nbclient stops there
-            failed += 1
-            print(f"{path}: FAILED: {str(error).strip().splitlines()[-1]}", flush=True)
-            continue
-        problem = run.problem()
-        failed += problem is not None
-        print(
-            f"{path}: wall {run.wall_s:.0f} s, kernel CPU {run.kernel_cpu_s:.0f} s, {run.figures} figures"
-            + (f", FAILED: {problem}" if problem else ""),
-            flush=True,
-        )
+    for _, line in lines:
+        failed += "FAILED" in line
+        print(line, flush=True)
     return 1 if failed else 0
+
+
+def _report(path: Path) -> str:
+    """The runner's line for one notebook: its times and figures, or FAILED and why."""
+    try:
+        run = run_notebook(path)
+    except CellExecutionError as error:  # a cell raised: nbclient stops there
+        return f"{path}: FAILED: {str(error).strip().splitlines()[-1]}"
+    problem = run.problem()
+    return f"{path}: wall {run.wall_s:.0f} s, kernel CPU {run.kernel_cpu_s:.0f} s, {run.figures} figures" + (
+        f", FAILED: {problem}" if problem else ""
+    )
 
 
 if __name__ == "__main__":

@@ -22,6 +22,7 @@ from __future__ import annotations
 import argparse
 import ast
 import contextlib
+import functools
 import importlib.util
 import os
 import re
@@ -37,7 +38,7 @@ import nbformat
 from toolkit.teaching import grading
 from toolkit.teaching.notebook import QUICK_ENV, is_quick
 from tools.executed_notebooks import run_or_reuse
-from tools.notebook_runner import NotebookRun, image_widget_output
+from tools.notebook_runner import NotebookRun, each_in_a_worker, image_widget_output
 
 ROOT = Path(__file__).resolve().parents[1]  # the repository (this file is tools/site.py)
 CONFIG = ROOT / "mkdocs.yml"
@@ -106,22 +107,28 @@ class Site:
 
 
 def build_site(
-    out: str | Path = ROOT / "site", *, quick: bool = False, work: str | Path = ROOT / "build" / "site"
+    out: str | Path = ROOT / "site",
+    *,
+    quick: bool = False,
+    work: str | Path = ROOT / "build" / "site",
+    jobs: int = 1,
 ) -> Site:
-    """Build the static site into ``out`` (replaced), its sources under ``work``; quick-sized when ``quick``."""
+    """Build the static site into ``out`` (replaced), its sources under ``work``; quick-sized when ``quick``;
+    ``jobs`` notebooks executed at a time (one for a full-size build, whose chapters time things)."""
     docs = Path(work) / "docs"
     began = time.perf_counter()
-    runs = assemble(docs, quick=quick, executed=Path(work) / "executed")
+    runs = assemble(docs, quick=quick, executed=Path(work) / "executed", jobs=jobs)
     assembled = time.perf_counter()
     render(docs, Path(out))
     return Site(Path(out), runs, assembled - began, time.perf_counter() - assembled)
 
 
-def assemble(docs: Path, *, quick: bool = False, executed: Path | None = None) -> dict[str, NotebookRun]:
+def assemble(docs: Path, *, quick: bool = False, executed: Path | None = None, jobs: int = 1) -> dict[str, NotebookRun]:
     """Write the site's source tree into ``docs`` (replaced); returns the runs of the notebooks it executed.
 
     A notebook whose inputs have not changed since it was executed into ``executed`` (default: beside ``docs``)
-    is not run again (:mod:`tools.executed_notebooks`). Each notebook is also offered to download as a student
+    is not run again (:mod:`tools.executed_notebooks`); ``jobs`` run at a time, each in a worker process
+    (:func:`~tools.notebook_runner.each_in_a_worker`). Each notebook is also offered to download as a student
     runs it, without outputs (:data:`DOWNLOADS`): chapters and tutorials as written, assignments' student versions.
     Raises ``RuntimeError`` naming the notebook when one fails: a chapter with a traceback is no page to publish.
     """
@@ -133,10 +140,12 @@ def assemble(docs: Path, *, quick: bool = False, executed: Path | None = None) -
     for own, served in SITE_FILES.items():
         copy(ROOT / own, docs / served)
     runs = {}
+    sources = sorted(ROOT.glob(CHAPTERS)) + sorted(ROOT.glob(TUTORIALS))
     with kernel_environment(quick):
-        for source in sorted(ROOT.glob(CHAPTERS)) + sorted(ROOT.glob(TUTORIALS)):
+        into_docs = functools.partial(execute_into, docs=docs, quick=quick, executed=executed)
+        for source, (run, reused) in each_in_a_worker(into_docs, sources, jobs=jobs):
             name = str(source.relative_to(ROOT))
-            runs[name], reused = execute(source, docs / name, quick=quick, executed=executed)
+            runs[name] = run
             took = (
                 f"reused, unchanged since it ran ({runs[name].wall_s:.0f} s)"
                 if reused
@@ -190,6 +199,11 @@ def offer_download(source: Path, docs: Path) -> None:
             cell.outputs, cell.execution_count = [], None
     target.parent.mkdir(parents=True, exist_ok=True)
     nbformat.write(notebook, target)
+
+
+def execute_into(source: Path, *, docs: Path, quick: bool, executed: Path) -> tuple[NotebookRun, bool]:
+    """:func:`execute` of ``source`` to its place in ``docs``."""
+    return execute(source, docs / source.relative_to(ROOT), quick=quick, executed=executed)
 
 
 def execute(source: Path, target: Path, *, quick: bool, executed: Path) -> tuple[NotebookRun, bool]:
@@ -384,8 +398,16 @@ def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(prog="python -m tools.site", description="Build the course website.")
     parser.add_argument("--out", type=Path, default=ROOT / "site", help="where the site goes (default: site/)")
     parser.add_argument("--quick", action="store_true", help=f"quick-sized chapters (also when {QUICK_ENV}=1)")
+    parser.add_argument(
+        "--jobs",
+        type=int,
+        default=1,
+        help="notebooks executed at a time (default 1: a full-size chapter times things, so give it the machine)",
+    )
     args = parser.parse_args(argv)
-    site = build_site(args.out, quick=args.quick or is_quick())
+    if args.jobs < 1:
+        parser.error(f"--jobs must be at least 1, not {args.jobs}")
+    site = build_site(args.out, quick=args.quick or is_quick(), jobs=args.jobs)
     print(f"site: {site.out}/index.html (sources {site.assemble_s:.0f} s, mkdocs {site.render_s:.0f} s)")
     return 0
 
