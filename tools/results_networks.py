@@ -101,10 +101,10 @@ def mlp(tables: Tables) -> str:
     )
     return (  # reader r47f, contradiction 4: the paper's accuracy beside ours on the same kind of samples
         f"**The MLP (Table 2): our rebuild of the paper's MLP is {headline} (ours {span(blind)} %, that answer "
-        f"{span(always)} %, both on our samples; the paper reports {span(papers)} % on unseen samples drawn "
-        "“regardless of their validity” (§IV-A), whose valid share it does not give), the `strong` one right "
+        f"{span(always)} %, both on our samples; the paper reports {span(papers)} % on unseen samples, drawn, as we "
+        "read §IV-A, “regardless of their validity”, their valid share not given), the `strong` one right "
         f"{span(balanced(recorded.ALGORITHM_1))} % of the time.** On our validity-blind samples (drawn “regardless "
-        "of their validity”, as the paper draws its unseen tests, "
+        "of their validity”, as we read §IV-A's unseen tests, "
         "[chapter 03](../notebooks/03_mlp_decision_boundaries.ipynb)), the `paper` "
         f"MLP is right {span(blind)} %, answering “valid” to every sample {span(always)} %. On unseen workspaces' "
         "balanced samples (half of them valid; the paper reports none) it is at chance: right "
