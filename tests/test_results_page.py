@@ -954,10 +954,10 @@ def test_the_arithmetic_of_the_saving_is_the_times_behind_table_3():
     cut = slow_saved[top] / slow[top]
     assert top == max(range(len(slow)), key=slow.__getitem__)  # the largest share is where the most was saved
     said = (
-        f"sampling took at most {round(slow[top] * 100)} % of a mean query (3DO BT). In 3DO BT the network cut sampling by "
-        f"{cut * 100:.1f} %, so prediction saved {slow[top] * 100:.1f} % × {cut:.3f} ≈ {slow[top] * cut * 100:.0f} % "
-        "of the query, the most that skipping sampling's checks saved in any cell (our python-fcl Table 3 measured "
-        "16 % for the whole query; the paper's Table 3, −8 %)."
+        f"sampling took at most {round(slow[top] * 100)} % of a mean query (3DO BT). In 3DO BT the network cut "
+        f"sampling by {cut * 100:.1f} %, so prediction saved {slow[top] * 100:.1f} % × {cut:.3f} ≈ "
+        f"{slow[top] * cut * 100:.0f} % of the query, the most that skipping sampling's checks saved in any cell (our "
+        "python-fcl Table 3 measured 16 % for the whole query; the paper's Table 3, −8 %)."
     )
     assert said in finding and PAGE.count("% × ") == 1 and "≈" not in why
     assert round(slow[top] * cut * 100) == round(max(slow_saved) * 100) == int(slow_row[3])

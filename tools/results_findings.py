@@ -261,7 +261,8 @@ def smaller_said(tables: Tables) -> str:
     if not cheaper or max(cheaper) >= 1:
         return ""
     return (
-        " Whether prediction can save time turns on what the network costs, and that depends on the network: the `paper` preset's "
+        " Whether prediction can save time turns on what the network costs, and that depends on the network: the "
+        "`paper` preset's "
         f"smaller network cost {span(cheaper, lambda c: f'{c:.2g}')} times an exact check in 3D (in its run of 2 "
         "December, against that day's slower compiled checker), but it is not accurate (the MLP's finding, below)."
     )
