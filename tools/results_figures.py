@@ -283,8 +283,8 @@ def claim_markdown(text: str) -> str:
     caption = (  # review r29f, item 1: the caption and the noise floor one paragraph under the plot
         "Each point is a cell: the median of those ratios over its 100 queries (each scenario's four samplers plan "
         "the same 100 queries), its whisker their middle half. *Shape and colour = verdict, fill = checker*: "
-        "filled, our compiled checker; hollow, python-fcl on both sides. The fold under this figure counts these "
-        "points (its columns “by own ratio”)." + unused_looks(tables)
+        "filled, our compiled checker; hollow, python-fcl on both sides. The fold “The counts by each statistic”, "
+        "under this figure, counts these points (its columns “by own ratio”)." + unused_looks(tables)
     )
     edge_said = (  # reader r39f, item 1: the band by its one name, defined in the table under the summary
         " Inside the noise band of this ratio (hatched, dashed edges), a cost or saving is no clear evidence: "
