@@ -315,7 +315,9 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
     edge = [f"{n} {s} {m:.2f}" for (n, s), (m, _, _) in table.items() if m >= 1.1 and abs(m - 1) < 2 * reach]
     assert edge and all(cell.split()[-1] in CLAIM.partition("is no clear evidence:")[2] for cell in edge)
     # reader r44f, item 7: the caption points to the table it means, not "the summary above"
-    assert "The table of counts under the answer, at the top of the page, counts these points" in CLAIM
+    assert (
+        "The fold “The counts by each statistic”, under this figure, counts these points" in CLAIM
+    )  # reader r53f, item 1: the counts folded
     assert "summary above" not in CLAIM and "costs," not in CLAIM.partition("![")[0]
     assert TEXT.index(results_figures.CLAIM_BEGIN) < TEXT.index(results_figures.FIGURE_BEGIN.format(kind="total"))
 

@@ -13,6 +13,7 @@ import math
 
 import numpy as np
 from matplotlib import patheffects
+from matplotlib.colors import to_rgb
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
 from matplotlib.patches import Rectangle
@@ -43,9 +44,7 @@ KEY = (  # under Figure 2 (reader r31f, item 3): its marks are not Figure 1's ve
     " Here colour and shape name a series, not a verdict as in Figure 1: grey diamonds, the paper; yellow bold "
     "crosses (×) edged in black, our `paper`-preset network; reddish-purple stars, the `strong` network with our "
     "compiled checker; "
-    "bluish-green pentagons, the `strong` network with python-fcl. No series takes Figure 1's blue, black or "
-    "vermillion as its fill colour (nor orange, its neighbour), nor its circle, square or triangle; black here only "
-    "outlines the marks."
+    "bluish-green pentagons, the `strong` network with python-fcl."
 )
 CLAIM_FIGURE = RESULTS.parent / "results_claim.png"  # Figure 1: the statistic the verdict on the paper's claim reads
 CLAIM_BEGIN = "<!-- figure of the claim: drawn by `python -m tools.results_summary` from the tables below -->"
@@ -138,7 +137,7 @@ def worded(fig: Figure, kind: str) -> Figure:
     return alt.describe(fig, text, getattr(fig, alt.DETAILS, ()))
 
 
-MARKER_SCALE = {"total": 0.85, "sampling": 0.75}  # Figures 2-3's markers, smaller than means_grid draws them, so
+MARKER_SCALE = {"total": 0.78, "sampling": 0.75}  # Figures 2-3's markers, smaller than means_grid draws them, so
 # neighbours stand apart (reader r47f, item 5: Figure 3's 2DS BT trio nearly touched)
 SPREAD = {"total": 1.0, "sampling": 1.07}  # a sampler's points spread this much wider than means_grid's
 LOOKS = {  # reader r42f, figures: no blue (Figure 1's "costs time") and no square-like plus (its "tie" square)
@@ -153,6 +152,7 @@ CROSS_WIDTH = 2.4  # points: a cross is all edge, drawn this thick (bold, as the
 CROSS_SCALE = 1.5  # a bold cross's arms fill less of its box than a filled marker: drawn this much larger (reader
 # r48f, figures: at 1.15 the crosses read as yellow blobs at 1280 px)
 CROSS_EDGE = 0.7  # points: the yellow cross's black edge, so it stands 3:1 on white (yellow alone is 1.2:1)
+STAR_SCALE = 1.3  # reader r53f, figures: the `strong` network's stars were the smallest marks, the verdict's series
 MARKER_Z = 4  # over every band and hatch (reader r42f: Figure 3's hatching read as covering the markers inside it)
 TIE_TICKS = {"total": False, "sampling": False}  # reader r42f: 0.9 and 1.1 crowd the "1"; the legend names them
 
@@ -169,7 +169,8 @@ def readable(fig: Figure, floor: tuple[float, float] | None, kind: str = "total"
         ax.tick_params(axis="y", labelleft=True)
         for line in ax.lines:
             if line.get_marker() not in ("None", None, ""):
-                line.set_markersize(line.get_markersize() * MARKER_SCALE[kind])
+                star = STAR_SCALE if line.get_marker() == "*" else 1.0  # reader r53f: the verdict's series
+                line.set_markersize(line.get_markersize() * MARKER_SCALE[kind] * star)
                 x = [float(v) for v in np.asarray(line.get_xdata())]
                 line.set_xdata([round(v) + (v - round(v)) * SPREAD[kind] for v in x])
                 line.set_zorder(MARKER_Z)
@@ -193,7 +194,10 @@ def readable(fig: Figure, floor: tuple[float, float] | None, kind: str = "total"
     for handle, label in zip(legend.legend_handles, legend.texts):
         if isinstance(handle, Line2D):
             restyle(handle, label.get_text())
+            if handle.get_marker() == "*":  # the key's star as large as the panels' (reader r53f, figures)
+                handle.set_markersize(handle.get_markersize() * STAR_SCALE)
         if floor is not None and label.get_text().startswith("noise band"):  # reader r48f, figures: said once
+            handle.set_edgecolor(HATCHED["edgecolor"])  # type: ignore[union-attr]  # as the panels' hatch
             label.set_text(f"{label.get_text()} in every panel")
     room = (0.1 + 0.2 * len(fig.legends[0].texts)) / fig.get_figheight()  # as legend_above leaves for the legend
     fig.tight_layout(rect=(0, 0, 1, 1 - room))
@@ -221,7 +225,14 @@ def clear_of_paper(ax, floor: tuple[float, float]) -> None:
 
 PAPER = next(name for name, preset in SOURCES.items() if preset is None)  # the paper's own series
 NOISE_EDGE = "--"  # reader r51f, item 5: a noise band's edges dashed, as Figure 1's; dotted means the tie band only
-HATCHED = dict(facecolor="none", edgecolor=COLORS["reference"], hatch=query_ratios.NOISE_HATCH, linewidth=0, zorder=0)
+HATCH_ALPHA = 0.4  # reader r53f, figures: the hatch filled most of every panel and drowned the points; lighter now
+HATCHED = dict(
+    facecolor="none",
+    edgecolor=(*to_rgb(COLORS["reference"]), HATCH_ALPHA),
+    hatch=query_ratios.NOISE_HATCH,
+    linewidth=0,
+    zorder=0,
+)
 
 
 def restyle(line: Line2D, name: str | None = None) -> None:
@@ -272,8 +283,8 @@ def claim_markdown(text: str) -> str:
     caption = (  # review r29f, item 1: the caption and the noise floor one paragraph under the plot
         "Each point is a cell: the median of those ratios over its 100 queries (each scenario's four samplers plan "
         "the same 100 queries), its whisker their middle half. *Shape and colour = verdict, fill = checker*: "
-        "filled, our compiled checker; hollow, python-fcl on both sides. The table of counts under the answer, at "
-        "the top of the page, counts these points (its columns “by own ratio”)." + unused_looks(tables)
+        "filled, our compiled checker; hollow, python-fcl on both sides. The fold “The counts by each statistic”, "
+        "under this figure, counts these points (its columns “by own ratio”)." + unused_looks(tables)
     )
     edge_said = (  # reader r39f, item 1: the band by its one name, defined in the table under the summary
         " Inside the noise band of this ratio (hatched, dashed edges), a cost or saving is no clear evidence: "

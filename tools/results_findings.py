@@ -21,7 +21,11 @@ DETAIL_BEGIN = "<!-- findings: written by `python -m tools.results_summary` from
 DETAIL_END = "<!-- end of the findings -->"
 
 
-VERDICTS = {"no": "saves no time", "rarely": "rarely saves time", "mostly": "mostly saves time"}  # lazy_prm's
+VERDICTS = {  # lazy_prm's; reader r53f, item 4: "no typical-query saving", not "saves no time" (2DS OB by means 0.26)
+    "no": "makes no typical-query saving",
+    "rarely": "rarely saves time",
+    "mostly": "mostly saves time",
+}
 
 
 def lazy_prm(tables: Tables) -> str:
@@ -241,10 +245,10 @@ def why_no_saving(tables: Tables) -> str:
     return (  # reader r39f, item 9: the finding and its numbers; reader r51f, item 3: a bullet a checker
         "**Why, in the runs of 5 December: with a fast checker the network was the dearer check.** With our compiled "
         f"checker the network cost {span(cost_3d, lambda c: f'{c:.2g}')} times an exact check per configuration in "
-        f"3D{cost_2d}. So sampling got 10 % or more slower in {why.slower} of {why.cells} cells.{smaller_said(tables)}"
+        f"3D{cost_2d}, so sampling got 10 % or more slower in {why.slower} of {why.cells} cells.{smaller_said(tables)}"
         "\n- **With a slow "
         "checker, sampling was a small share of a query, which caps the saving.** python-fcl answered "
-        f"{fcl_slower(tables)} times slower than our compiled checker in 3D. {worked_example(tables)}"
+        f"{fcl_slower(tables)} times slower than our compiled checker in 3D, yet {worked_example(tables)}"
         f"{cleared_said(tables, cleared)}{share_allows(tables, cleared)}"
     )
 
@@ -257,7 +261,8 @@ def smaller_said(tables: Tables) -> str:
     if not cheaper or max(cheaper) >= 1:
         return ""
     return (
-        " Whether prediction can save time turns on that cost, and the cost on the network: the `paper` preset's "
+        " Whether prediction can save time turns on what the network costs, and that depends on the network: the "
+        "`paper` preset's "
         f"smaller network cost {span(cheaper, lambda c: f'{c:.2g}')} times an exact check in 3D (in its run of 2 "
         "December, against that day's slower compiled checker), but it is not accurate (the MLP's finding, below)."
     )
@@ -403,8 +408,12 @@ def worked_example(tables: Tables) -> str:
     total = recorded.improvements(checker_scope.SLOW, times["rows"][top][0], recorded=tables)[times["rows"][top][1]]
     papers = IMPROVEMENT[times["rows"][top][0]]["total"][times["rows"][top][1]]  # reader r49f, item 5: the paper's
     cut = saved[top] / slow[top]  # reader r36f, contradiction 1: unrounded, so the product is the share saved
-    share = f"Sampling took at most {percent(slow[most])} % of a mean query ({name(most)})"
-    there = "There" if top == most else f"In {name(top)}, where shortening it saved the most, it took {slow[top]:.1%}"
+    share = f"sampling took at most {percent(slow[most])} % of a mean query ({name(most)})"
+    there = (
+        f"In {name(most)}"
+        if top == most
+        else f"In {name(top)}, where shortening it saved the most, it took {slow[top]:.1%}"
+    )
     return (
         f"{share}. {there} the network cut sampling by {cut * 100:.1f} %, so prediction saved "
         f"{slow[top] * 100:.1f} % × {cut:.3f} ≈ {slow[top] * cut * 100:.0f} % of the query, the most that skipping "
@@ -567,15 +576,38 @@ def summary(tables: Tables, table_3: str = "") -> str:
     answers against the lazy PRM and against Algorithm 1 with our `paper`-preset network; no count the summary gives
     is said again (review r27f, item 2)."""
     items = [
-        why_no_saving(tables),
-        *([table_3] if table_3 else []),  # reader r47f, item 1: the counts by means, moved from the answer
+        *why_no_saving(tables).split("\n- "),
+        *(table_3.split("\n- ") if table_3 else []),  # reader r47f, item 1: the counts by means, moved from the answer
         cae(tables),
-        mlp(tables)  # the table under the MLP's bullet, a blank line after it so the next bullet is not a row
-        + "\n\n"
-        + "\n".join(f"    {line}" if line else "" for line in unseen_table(tables).splitlines())
-        + "\n",
-        lazy_prm(tables),
+        mlp(tables),
+        lazy_prm(tables).rstrip("\n"),
         algorithm_1(tables),
         *([paper_why] if (paper_why := paper_sampling(tables)) else []),  # reader r48f, item 4: its own bullet
     ]
-    return "\n".join(f"- {item}" for item in items)
+    cut = [brief(item) for item in items]  # reader r53f, item 4: a bold claim and one sentence; the rest folded
+    table = "\n".join(f"    {line}" if line else "" for line in unseen_table(tables).splitlines())
+    shown = [f"- {said}" + (f"\n\n{table}\n" if said.startswith("**The MLP") else "") for said, _, _ in cut]
+    folded = "\n".join(  # an item of two paragraphs ends with a blank line, so the next is an item too
+        f"- *{named(claim)}*: {rest}" + ("\n" if "\n\n" in rest else "") for _, claim, rest in cut if rest
+    )
+    return "\n".join(shown) + f"\n\n{HOW_READ}\n\n{folded}\n\n</details>"
+
+
+HOW_READ = '<details markdown="1"><summary>How each finding was read: the arithmetic and the mechanisms</summary>'
+
+
+def named(claim: str) -> str:
+    """A finding's name in the fold under the findings: its bold claim up to a colon, or, if longer than 60
+    characters, up to its first comma: ``"Against the lazy PRM"``."""
+    name = claim.partition(":")[0]
+    return name.partition(",")[0] if len(name) > 60 else name
+
+
+def brief(item: str) -> tuple[str, str, str]:
+    """Reader r53f, item 4: a finding cut after its bold claim and the first sentence that follows it: ``(shown, claim,
+    rest)``, ``claim`` the bold words without their full stop, ``rest`` what the fold under the findings says."""
+    head, _, body = item.partition(".** ")
+    first, stop, rest = body.partition(". ")
+    if not stop:
+        return item, head.removeprefix("**"), ""
+    return f"{head}.** {first}.", head.removeprefix("**"), rest.strip()
