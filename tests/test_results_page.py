@@ -127,7 +127,7 @@ def test_the_summary_is_what_the_tables_give():
     assert "does not describe" not in PAGE and "unseen test used is unstated" not in PAGE
     # reader r52f, item 2: the note under every Table 2 in the same words, not "our choice"
     assert "these are our choice" not in TEXT and "does not say which samples" not in TEXT
-    note = "drawn as the paper (§IV-A) draws its unseen tests, “regardless of their validity”, as many"
+    note = "drawn as we read the paper (§IV-A) to draw its unseen tests, “regardless of their validity”, as many"
     assert TEXT.count(note) == TEXT.count("\n*Seen*: balanced samples (half valid)") == 3
     assert TEXT.count("the paper does not give their valid share (its rates imply about 60 % valid in 2DS") == 3
     gain = results_networks.cae_unseen(recorded_results.parse(TEXT))[2]

@@ -133,7 +133,8 @@ EVERY_CELL = (
 )
 TABLE_2_NOTE = (
     "*Seen*: balanced samples (half valid) in training workspaces. *Unseen*: validity-blind samples in unseen "
-    'workspaces, drawn as the paper (§IV-A) draws its unseen tests, "regardless of their validity", as many (2DS '
+    "workspaces, drawn as we read the paper (§IV-A) to draw its unseen tests, "
+    '"regardless of their validity", as many (2DS '
     "200, 3DO 2000, 3DC 400 each); the paper does not give their valid share (its rates imply fewer valid ones than "
     "ours: docs/fidelity.md); *always valid*: the "
     'accuracy of answering "valid" on the same samples. *Balanced unseen*: half-valid samples in the same '
