@@ -615,6 +615,15 @@ def test_a_slice_over_positions_shows_a_pixel_beyond_the_bounds_dark(square_worl
     np.testing.assert_allclose(ax.get_xlim(), (lo - (hi - lo) / 31, hi + (hi - lo) / 31))
     assert ax.get_aspect() == 1.0  # reader r48a: two lengths drawn to one scale (the youBot's 41 x 41 was 1.3x tall)
     assert to_hex(ax.get_facecolor()) == palette.COLORS["occupied"]
+    frame = "A dark frame runs round the slice: there the robot leaves its bounds or the region."
+    assert frame in alt_text(fig)  # reader r54a: the youBot's (x, y) slice's text named the frame, its alt did not
+
+
+def test_a_slice_over_angles_names_no_frame(clutter):
+    """Reader r54a's frame is a slice over two positions' alone: an angle's axis is not padded."""
+    q = [5.5, 5.5, 5.5, 0.0, 0.0, 0.0, 0.0]
+    fig = cspace.cspace_slice(exact_checker(clutter, robots.box_chain(1)), q, joints=(3, 4), resolution=8, view=None)
+    assert "Slice of the" in alt_text(fig) and "dark frame" not in alt_text(fig)
 
 
 def test_the_slice_explorer_starts_at_a_valid_configuration_and_redraws_when_a_slider_moves(capsys):

@@ -342,9 +342,8 @@ def cspace_slice(
     swept = " and ".join(robot.dof_names[k] for k in joints)
     text = f"Slice of the {robot.name} robot's configuration space over {swept}, the other DoF fixed: "
     text += f"{1 - valid.mean():.0%} in collision (dark). A star marks the fixed configuration, which is "
-    text += ("valid." if q_valid[0] else "in collision.") + (
-        " Beside it, the robot there, its base a dot." * bool(view)
-    )
+    text += ("valid." if q_valid[0] else "in collision.") + " Beside it, the robot there, its base a dot." * bool(view)
+    text += " A dark frame runs round the slice: there the robot leaves its bounds or the region." * lengths  # r54a
     text += " A block drawn across the links that no link touches (above or below them) is a dotted outline" * bool(
         outlined
     )
