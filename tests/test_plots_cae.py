@@ -158,18 +158,19 @@ def test_accuracy_vs_all_free_has_one_point_per_workspace_and_the_diagonal():
     means = {c.get_gid(): c.get_offsets()[0] for c in ax.collections if c.get_gid().endswith(": mean")}
     assert means.keys() == {"seen: mean", "unseen: mean"}  # each group's mean drawn large, behind every point
     np.testing.assert_allclose(means["unseen: mean"], [0.89, 0.88])
-    # reader r51b: filled and ringed in white, as section 7's panels draw theirs; behind the points (r20b: a filled
-    # mean on top hid points at 1.00), so none hides under it
+    # reader r51b: as section 7's panels draw theirs; behind the points (r20b: a filled mean on top hid points at
+    # 1.00), so none hides under it; reader r54b: hollow, in the group's colour, so a point under it shows
     filled = [c for c in ax.collections if c.get_gid().endswith(": mean")]
-    assert all(np.all(c.get_facecolor()[:, 3] > 0) for c in filled)
-    assert all(np.allclose(c.get_edgecolor()[0, :3], to_rgb(COLORS["free"])) for c in filled)
+    assert all(len(c.get_facecolor()) == 0 or np.all(c.get_facecolor()[:, 3] == 0) for c in filled)
+    for k, mean in enumerate(filled):
+        assert np.allclose(mean.get_edgecolor()[0, :3], to_rgb(series_style(k)["color"]))
     (diagonal,) = ax.get_lines()  # reader r51b: no dashed lines from the means, read as a second diagonal
     np.testing.assert_allclose(diagonal.get_xdata(), diagonal.get_ydata())
     (legend,) = fig.legends  # below the axes, over no point
     assert "99.7%" in legend.get_texts()[0].get_text()  # the seen group's mean accuracy
     assert points[0].get_zorder() > points[1].get_zorder()  # the smaller group drawn on top
     assert max(m.get_zorder() for m in filled) < min(p.get_zorder() for p in points)  # r27b: a mean hid a grid
-    assert legend.get_texts()[-1].get_text() == "large filled mark, ringed, in the group's shape: the group's mean"
+    assert legend.get_texts()[-1].get_text() == "large hollow mark, thick, in the group's shape: the group's mean"
     assert legend.get_texts()[0].get_text() == "seen: mean 99.7% vs 87.7%"  # r27b: once "seen (trained on) (mean"
 
 
@@ -469,9 +470,9 @@ def test_accuracy_panels_of_three_groups_go_two_a_row_the_legend_in_the_spare_sl
         (points,) = [c for c in ax.collections if c.get_gid() == name]
         assert points.get_alpha() <= 0.3
         (mean,) = [c for c in ax.collections if c.get_gid() == f"{name}: mean"]
-        assert mean.get_facecolor()[0][3] == 1  # filled (cae.py's one-axes scatter draws its means hollow)
+        assert len(mean.get_facecolor()) == 0 or mean.get_facecolor()[0][3] == 0  # hollow, as cae.py's (r54b)
     said = " ".join(t.get_text() for t in spare.get_legend().get_texts()).replace("\n", " ")
-    assert "large filled mark" in said and "mean" in said  # the legend says which (lead, wave 31 item 4)
+    assert "large hollow mark" in said and "mean" in said  # the legend says which (lead, wave 31 item 4)
 
 
 def test_training_curves_keep_the_highest_point_clear_of_the_frame():

@@ -49,12 +49,12 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
         ax.scatter(
             *mean,
             s=120,
-            c=style["color"],
+            facecolors="none",  # reader r54b: hollow, as the section 5 scatter's: the points under it show
             marker=style["marker"],
-            edgecolors=COLORS["free"],
-            linewidths=1.2,
+            edgecolors=style["color"],
+            linewidths=2.0,
             zorder=5,
-            path_effects=halo(1.2, ("ink",)),
+            path_effects=halo(2.0, ("ink",)),
             gid=f"{name}: mean",
         )
         above = int(np.sum(accuracy > all_free))
@@ -86,17 +86,17 @@ def _legend(fig: Figure, spare=None) -> None:
     covers nothing."""
     handles = [
         Line2D([], [], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal): above it, better'),
-        Line2D(  # drawn as the means are: the group's colour (here a neutral grey), a light ring, a dark edge
+        Line2D(  # drawn as the means are: hollow, the group's colour (here a neutral grey), a dark edge
             [],
             [],
             marker="o",
             linestyle="",
             markersize=11,
-            markerfacecolor=COLORS["reference"],
-            markeredgecolor=COLORS["free"],
-            markeredgewidth=1.2,
-            path_effects=halo(1.2, ("ink",)),
-            label="large filled mark, ringed, in the panel's own shape: the panel's mean",
+            markerfacecolor="none",
+            markeredgecolor=COLORS["reference"],
+            markeredgewidth=2.0,
+            path_effects=halo(2.0, ("ink",)),
+            label="large hollow mark, thick, in the panel's own shape: the panel's mean",
         ),
     ]
     if spare is not None:  # wrapped to the slot, and out of the layout: a wide legend there squeezed every column

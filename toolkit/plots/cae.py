@@ -176,7 +176,7 @@ def accuracy_vs_all_free(
     on it, the CAE has learned nothing about that workspace. A small group (a few dozen workspaces) has larger, filled
     markers ringed in white, drawn on top, the first over the next. Large groups are hollow markers of their own
     shapes, drawn in turns, a slice of each at a time (:data:`LAYERS`): where clouds overlap every group shows (review
-    r14c). Each group's mean is a large filled marker, ringed, behind every point (review r27b; reader r51b: as
+    r14c). Each group's mean is a large hollow marker, thick, behind every point (review r27b; reader r54b: as
     section 7's panels draw it), each later one smaller and on top of the earlier: means that coincide nest.
     ``series[k]``: group ``k``'s :func:`~toolkit.plots.palette.series_style` (by default ``k``): a page keeps one
     code across figures (r45b).
@@ -227,20 +227,20 @@ def accuracy_vs_all_free(
 
 
 def _key(fig: Figure, ax, series: tuple[int, ...]) -> None:
-    """The scatter's legend below it, the means one entry: a filled, ringed mark of each group's shape and colour,
+    """The scatter's legend below it, the means one entry: a hollow, thick mark of each group's shape and colour,
     drawn as :mod:`toolkit.plots.accuracy_panels` draws its means (r45b; reader r51b: one style on the page)."""
     handles, labels = ax.get_legend_handles_labels()
-    ringed: dict[str, Any] = dict(linestyle="", markersize=11, markeredgecolor=COLORS["free"], mew=1.2)
-    ringed["path_effects"] = halo(1.2, ("ink",))
+    ringed: dict[str, Any] = dict(linestyle="", markersize=11, markerfacecolor="none", mew=2.0)  # r54b: hollow
+    ringed["path_effects"] = halo(2.0, ("ink",))
     mean = tuple(Line2D([], [], **{k: series_style(s)[k] for k in ("marker", "color")}, **ringed) for s in series)
-    mean_said = "large filled mark, ringed, in the group's shape: the group's mean"
+    mean_said = "large hollow mark, thick, in the group's shape: the group's mean"
     handles, labels = [*handles, mean], [*labels, mean_said]  # r29b: not in
     key: dict[str, Any] = dict(loc="outside lower center", fontsize=9, frameon=False)
     fig.legend(handles, labels, handler_map={tuple: HandlerTuple(None)}, **key)
 
 
 def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int, s: int, few: bool) -> None:
-    """Group ``k`` of ``n``'s mean, a large filled marker of its style ringed in white (as section 7's panels draw
+    """Group ``k`` of ``n``'s mean, a large hollow marker of its style, edged in ink (as section 7's panels draw
     theirs; reader r51b), behind every cloud (points zorder 2 and up, each a point of its own over it), each later
     group's smaller and on top of the earlier, in series ``s``'s style: two means at one spot both show; a ``few``
     group's mark well outside a point of its own at the mean (reader r47b)."""
@@ -248,12 +248,12 @@ def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int, s: int,
     ax.scatter(
         *mean,
         s=max(MEAN_SIZE * (1 - 0.6 * k / max(n - 1, 1)), 5 * POINT_SIZE * AREA.get(style["marker"], 1.0) * few),
-        c=style["color"],  # filled, behind the points: none hides under it (r20b: a filled mean on top hid some)
-        edgecolors=COLORS["free"],
+        facecolors="none",  # reader r54b: hollow, so a point under it shows; behind the points (r20b: on top hid some)
+        edgecolors=style["color"],
         marker=style["marker"],
-        linewidths=1.2,
+        linewidths=2.0,
         zorder=1 + k / (n + 1),
-        path_effects=halo(1.2, ("ink",)),
+        path_effects=halo(2.0, ("ink",)),
         gid=f"{name}: mean",
     )
 

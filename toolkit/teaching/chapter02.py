@@ -95,9 +95,9 @@ WAITING = (  # the findings before the page's last code cell fills in this run's
     f"{FINDINGS}\n\n- CAE-long, the paper's network and λ trained 1,500 steps on 30 generated grids (the paper's "
     'count), rebuilds new workspaces no better than answering "all free".\n- It reaches Table 1\'s seen column, but '
     "only by memorizing its 30 grids.\n- CAE-preset, the same network trained 300 steps (the toolkit's default, "
-    "not the paper's recipe; chapters 03–04 use it), reproduces neither column.\n- Only a different recipe (1,000 "
-    'grids, batches of 100, learning rate 10⁻³; section 7) beats "all free" on new grids, by a few points.\n\n'
-    "*This run's numbers appear here once the page's last code cell has run.*"
+    "which chapters 03–04 use; the paper gives no training length), reproduces neither column.\n- Only a different "
+    'recipe (1,000 grids, batches of 100, learning rate 10⁻³; section 7) beats "all free" on new grids, by a few '
+    "points.\n\n*This run's numbers appear here once the page's last code cell has run.*"
 )
 
 
@@ -159,8 +159,8 @@ def _bullets(
         f'{n_new} new grids, {abs(gap):.1f} points {"below" if gap < 0 else "above"} answering "all free", which gets '
         f'{free:.1%}: **no better than answering "all free"**.',
         seen_said,
-        f"CAE-preset, the same network trained shorter (the toolkit's default, {length}, not the paper's recipe; "
-        f"chapters 03–04 use it), reproduces {column}: {preset['seen_acc']:.1%} on its training grids, "
+        f"CAE-preset, the same network trained shorter ({length}, the toolkit's default, which chapters 03–04 use; "
+        f"the paper gives no training length), reproduces {column}: {preset['seen_acc']:.1%} on its training grids, "
         f"{preset['unseen_acc']:.1%} on the new ones.",
     ]
 
