@@ -494,6 +494,14 @@ def test_section_5_says_the_proportion_of_mistakes_the_overview_cannot_show():
         "(more conservative than dangerous, 88 to 15). The overview draws every dangerous one but only some of the "
         "conservative ones."
     )
+    # reader r54e, 05 figure: given the overview's step, the line counts what it draws of each kind, 1 in 10 of the
+    # conservative ones (indices 2, 3, ..., 89: those at 10, 20, ..., 80, 8 of them) and all 15 dangerous ones
+    assert chapter05_runs.mistake_counts(valid, predicted, step=10).endswith(
+        "The overview draws all 15 dangerous mistakes but only 8 of the 88 conservative ones (1 sample in 10), so most "
+        "of its stars are dangerous although most mistakes are not."
+    )
+    every = chapter05_runs.mistake_counts(valid, predicted, step=1)
+    assert every.endswith("The overview draws every sample, each mistake among them.")
     assert "(fewer conservative than dangerous, 1 to 3)" in chapter05_runs.mistake_counts(
         np.array([True, False, False, False]), np.array([False, True, True, True])
     )
