@@ -98,9 +98,10 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
     # reader r45e, 05 item 4: a map of the trainings, planners and statistics, after the answer's tables
     assert "\n\nWhich of the chapter's runs the answer reads:\n\n| what | the answer uses |" in shares
     assert "| training of `strong` | the timed network (threshold 0.63) | the notebook's network and the lazy" in shares
-    # reader r51e, 05 lift 4: the three trainings' table shown once, in §5; the fold names them and points there
+    # reader r51e, 05 lift 4: the three trainings' table shown once (reader r54e, 05 lift 2: under the answer, its
+    # own display); the fold names them and points there
     assert "The three trainings of `strong` in this chapter" not in answer and "| 0.52 |" not in answer
-    assert "the notebook's network and the lazy-PRM network (section 5 tables the three trainings) |" in shares
+    assert "the notebook's network and the lazy-PRM network (the table under this answer gives all three) |" in shares
     trainings = chapter05_runs.trainings(0.54)
     assert "| 0.63 | the answer," in trainings and "| 0.52 | the closing fold" in trainings
     assert "| **notebook's network** (`trained_models`, cached) | 0.54 |" in trainings  # r48e: labels

@@ -121,12 +121,12 @@ def _moved(ratio: float) -> str:
 def answer_map(threshold: float | None = None) -> str:
     """A map beside the answer (reader r45e, 05 item 4): which training, which planner and which statistic the answer
     uses, against the others the chapter shows, in the answer's one fold (reader r47e, lift 2); the three trainings'
-    table is §5's alone (reader r51e, 05 lift 4: it was shown twice), :func:`chapter05_runs.trainings`."""
+    table, shown once, under the answer (reader r54e, 05 lift 2), :func:`chapter05_runs.trainings`."""
     return (
         "Which of the chapter's runs the answer reads:\n\n"
         "| what | the answer uses | the chapter also shows |\n| --- | --- | --- |\n"
         f"| training of `strong` | the {TIMED} (threshold {recorded_threshold(COMPILED):.2f}) | the {MINE} and the "
-        f"{LAZY} (section 5 tables the three trainings) |\n"
+        f"{LAZY} (the table under this answer gives all three) |\n"
         "| planner | Algorithm 1 (planner `paper`) | §6–7: the lazy PRM's path; the closing fold: the lazy PRM "
         "timed |\n"
         f"| statistic | the verdict: the median of each query's own ratio; the limit in **Why**: mean times "

@@ -335,8 +335,8 @@ def paper_share() -> str:
 
 
 def trainings(threshold: float) -> str:
-    """§5's map of the three trainings of `strong`, each with its threshold (``threshold``: the notebook's network's),
-    beside the section's first mention of them (reader r50e, 05 lift 5); the answer's fold names them only (r51e)."""
+    """The chapter's map of its three trainings of `strong`, each with its threshold (``threshold``: the notebook's
+    network's), under the answer (reader r54e, 05 lift 2; r50e, 05 lift 5); the answer's fold names them only (r51e)."""
     timed, mine, lazy, name, at = (
         chapter05.TIMED,
         chapter05.MINE,
