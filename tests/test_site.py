@@ -345,7 +345,7 @@ def test_the_index_opens_in_short_sentences():
         "**The question:** does the paper's learned collision check save a planner time? "
         # reader r54e, home 3: "mostly no" replaced by the count the table shows (counted above)
         "**The answer: by each query's own ratio, a whole query saved no time beyond timing noise in "
-        f"{unsaved} of our {cells} cells (16 cells, two exact checkers each).** That ratio is a query's time with the "
+        f"{unsaved} of {cells} cases (16 cells, each with two exact checkers).** That ratio is a query's time with the "
         "network over its time without. "  # r51e, home lift 4: the statistic named, in the verdict's sentence
         # reader r54e, home 1: the timed network is not the paper's CAE+MLP, said in the lead
         "We timed an accurate network of our own (preset `strong`), not the paper's CAE+MLP: its MLP reads the "
