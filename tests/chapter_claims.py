@@ -1295,7 +1295,7 @@ def chapter_05(nb) -> list[str]:
     office = [r for header, rows in tables(nb) if header[:2] == ["uniform samples", "in collision"] for r in rows]
     if len(office) != 1 or int(office[0][1]) != int(office[0][2]) + int(office[0][3]) or "0" in office[0][2:]:
         problems.append(f"05: the office's collisions are not the two kinds the prose names: {office}")
-    problems += _chapter_05_answer(found, measured, scored)
+    problems += _chapter_05_answer(found, measured, scored) + _chapter_05_summary(prose(nb))
     # readers r28e, r29e, r30e: the answer's "why" calls a network answer dearer than a compiled check, cheaper than
     # python-fcl's
     costs = re.search(
@@ -1309,6 +1309,26 @@ def chapter_05(nb) -> list[str]:
     if ("**No.**" in found) != bool(re.search(r"\*\*The question\.\*\*[^*]{0,200}\*\*No\*\*", opening(nb))):
         problems.append("05: the question paragraph does not give the answer's 'No' (reader r27e)")
     return problems + _page_width(nb, tables(nb), "05")  # review r14b: the valid-share table's sixth column was cut
+
+
+def _chapter_05_summary(said: str) -> list[str]:
+    """Reader r54e, 05 contradiction 1: the Summary reads OB's whole query (python-fcl) by two statistics, each named
+    with its own word and number from the record: a tie by the median own ratio, within noise by the ratio of means."""
+    own, means = (
+        recorded.query_ratios(chapter05.FCL)["3dc7"],
+        chapter05._ratios(recorded.improvements(chapter05.FCL, "3dc7")),
+    )
+    found = re.search(
+        r"(\w+)'s whole query, [^.]*, was a tie by the median of each query's own ratio \((\d\.\d\d)\), and within "
+        r"noise by the ratio of its means \((\d\.\d\d)\)",
+        " ".join(said.split()),
+    )
+    s = found.group(1) if found else "OB"
+    wanted = [s, f"{own[s]:.2f}", f"{means[s]:.2f}"]
+    holds = findings.time_verdict(own[s]) == findings.TIES and costs.inside(means[s], costs.floors()["means"])
+    if found is None or list(found.groups()) != wanted or not holds or findings.time_verdict(means[s]) == findings.TIES:
+        return [f"05: the Summary's reading of {s}'s whole query is not the record's: {found and found.groups()}"]
+    return []
 
 
 def _chapter_05_answer(found: str, measured: list[list[str]], scored: list[list[str]]) -> list[str]:

@@ -1426,6 +1426,7 @@ def chapter_05(
     question: str = "**No**: not by 10 %.",
     paper_side: str | None = None,
     costs: str | None = None,
+    summary: str = "a tie by the median of each query's own ratio (1.06), and within noise by the ratio of its means",
 ):
     """A chapter 05 that prints docs/results.md's medians and the closing tables (review r8b's numbers), the lazy
     PRM's after ``tie``; the paper's recipe with ``recipe_acc``, ``recipe_tpr`` and ``recipe_medians``, and
@@ -1498,8 +1499,23 @@ def chapter_05(
         + chapter05._noise_row(chapter05.MEDIANS_ROW, of_medians, band),
     )
     nb["cells"].append({"cell_type": "markdown", "source": ["the label **model disagrees** appears"]})
+    said = f"OB's whole query, where skipping the checks could save most, was {summary} (1.12)."  # the Summary's
+    nb["cells"].insert(0, {"cell_type": "markdown", "source": [said]})  # the last cells stay where tests find them
     nb["cells"].insert(0, {"cell_type": "markdown", "source": [f"**The question.** Does it save time? {question}"]})
     return nb
+
+
+def test_chapter_05_summary_reads_ob_by_two_named_statistics():
+    """Reader r54e, 05 contradiction 1: the Summary called OB's whole query "a tie" where the answer, by the ratio of
+    the means (1.12), says "within noise"; each clause now names its statistic and its number from the record."""
+    unnamed = "a tie, as the answer says, and within noise by the ratio of its means"
+    assert problems(CH05, chapter_05(summary=unnamed)) == [
+        "05: the Summary's reading of OB's whole query is not the record's: None"
+    ]
+    wrong = "a tie by the median of each query's own ratio (1.12), and within noise by the ratio of its means"
+    assert problems(CH05, chapter_05(summary=wrong)) == [
+        "05: the Summary's reading of OB's whole query is not the record's: ('OB', '1.12', '1.12')"
+    ]
 
 
 def test_chapter_05_passes_when_its_closing_tables_carry_its_answer():

@@ -327,16 +327,33 @@ def test_the_index_opens_in_short_sentences():
     rows = recorded.table("paper", "MLP accuracy")
     assert all(sorted(recorded.ours(rows[s][k]) for k in ("TPR", "TNR")) == [0, 1] for s in ("3dc7", "3dc9", "3do"))
     assert all(recorded.ours(rows[s]["Balanced unseen Acc"]) == 0.5 for s in ("3dc7", "3dc9", "3do"))
+    from toolkit.teaching.costs import floors as bands
+
+    own = [
+        r
+        for key in (recorded.ALGORITHM_1, FCL_ALIKE)
+        for row in recorded.query_ratios(key).values()
+        for r in row.values()
+    ]
+    cells = len(own)
+    unsaved = cells - sum(r <= bands()["own"][0] for r in own)  # beyond the own ratio's noise band, on the saving side
+    assert (cells, unsaved) == (32, 30)
     assert first == (  # review r27e: "only where the exact check is slow" met 2DS BT's 0.81 with the compiled one;
         # reader r48e, home 2: the paper's network's verdict first, then whose accurate network the rest is about;
         # reader r49e, home 6: the page's question before its answer; reader r50e, home lift 1: the time answer
         # first ("mostly no"), accuracy after it, and whose `strong` is at its first use
         "**The question:** does the paper's learned collision check save a planner time? "
-        "**The answer: mostly no. An accurate network of our own (preset `strong`) rarely saves a whole query's time "
-        "(judged by each query's own ratio: its time with the network over its time without). "  # r51e, home lift
-        # 4: the statistic named; reader r53e, home lift 2: glossed in a few words, so the answer stands before it
+        # reader r54e, home 3: "mostly no" replaced by the count the table shows (counted above)
+        "**The answer: by each query's own ratio, a whole query saved no time beyond timing noise in "
+        f"{unsaved} of {cells} cases (16 cells, each with two exact checkers).** That ratio is a query's time with the "
+        "network over its time without. "  # r51e, home lift 4: the statistic named, in the verdict's sentence
+        # reader r54e, home 1: the timed network is not the paper's CAE+MLP, said in the lead
+        "We timed an accurate network of our own (preset `strong`), not the paper's CAE+MLP: its MLP reads the "
+        "occupancy around the robot, not the CAE's code `z`. "
+        f"Its {cells - unsaved} savings beyond noise are both with the slow python-fcl checker, whose run borrows the "
+        "compiled run's noise band. "  # common47 rule 4: the borrowed band where the count is first claimed
         "It saves sampling time where the exact check is slow, and mostly slows sampling where the "
-        "exact check is fast. The paper's network, rebuilt here, is right on only "  # r39e: 3DC-7 2.4-3.3x
+        "exact check is fast. **The paper's network, rebuilt here, is right on only "  # r39e: 3DC-7 2.4-3.3x
         f"{percents(chance)} of unseen samples in a balanced test.**"
     )  # each word counted by test_the_index_gives_one_statistic_a_line_behind_its_answer; reader r47e: "the exact
     # check is fast", not "it is fast" (read as the network)
@@ -574,9 +591,8 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     # reader r30e, item 1: the mechanism under the answer, sampling's share over both Algorithm 1 runs
     both = shares(FCL_ALIKE) + shares(recorded.ALGORITHM_1)
     assert (
-        "Prediction replaces only the exact checks of sampled configurations, and in our runs sampling took "
-        f"{percents(both, digits=1)} of a query's time without the network. Algorithm 1's line 4 says only "
-        '"a standard PRM approach"; we read it as checking every edge of the roadmap exactly'
+        f"In our runs sampling took {percents(both, digits=1)} of a query's time without the network. Algorithm 1's "
+        'line 4 says only "a standard PRM approach"; we read it as checking every edge of the roadmap exactly'
         # reader r35e, home 2: the lazy PRM screens edges too; reader r37e, home 2: our reading, not the paper's words
     ) in answer
     assert "spends most of its time" not in answer  # reader r30e, contradiction 3
@@ -657,15 +673,18 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     # reader r45e, home 1 and 4: the limit is what skipping the checks can save, a query may save more by another
     # roadmap; "barely moves" gone (16 % is above the tie band's 10 %), the cells under 10 % counted instead
     # reader r46e, home 2: the limit below the figure, in one fold, with the two savings it bounds (said once)
-    said = (
-        '<details markdown="1"><summary>Why a whole query rarely saves: the limit</summary> Prediction replaces only '
-        "the exact checks of sampled configurations, and in our runs sampling took "
-        f"{percents(both, digits=1)} of a query's time without the network. Algorithm 1's line 4 says only "
-        '"a standard PRM approach"; we read it as checking every edge of the roadmap exactly. So skipping those '
-        "checks can save at most sampling's share of a query times the cut in sampling. With "
-        f"python-fcl that limit is under 10 % in {len(under)} of {len(limits)} cells, and largest in 3DO BT: "
-        f"{bt:.3f} × {cut:.3f} ≈ {100 * bt * cut:.0f} %."
+    free = [c for c, (s, k) in limits.items() if s < findings.TIE]  # a free network: at most sampling's whole share
+    said = (  # reader r54e, home 2: the limit in sight, not only in the fold; a free network's bound beside ours
+        "**A whole query has little to save.** Prediction replaces only the exact checks of sampled configurations. "
+        "Even with a free network, skipping those checks can save at most sampling's share of a query: with "
+        f"python-fcl, under 10 % in {len(free)} of {len(limits)} cells. With ours it can save at most that share "
+        "times its cut in sampling: under 10 % "
+        f"in {len(under)} of {len(limits)} cells. The largest is 3DO BT's: {bt:.3f} × {cut:.3f} ≈ "
+        f"{100 * bt * cut:.0f} %. "
+        '<details markdown="1"><summary>Why a whole query rarely saves: the limit</summary> In our runs sampling took '
+        f"{percents(both, digits=1)} of a query's time without the network."
     )
+    assert (len(free), len(under)) == (10, 14)
     assert said in answer and answer.index(said) > answer.index("](docs/results_claim.png)")
     assert answer.index(said) > answer.index("these counts read the tie band only.")  # after the figure's reading
     assert answer.count("at most sampling's share") == 1 and "barely moves" not in answer  # said once

@@ -98,9 +98,10 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
     # reader r45e, 05 item 4: a map of the trainings, planners and statistics, after the answer's tables
     assert "\n\nWhich of the chapter's runs the answer reads:\n\n| what | the answer uses |" in shares
     assert "| training of `strong` | the timed network (threshold 0.63) | the notebook's network and the lazy" in shares
-    # reader r51e, 05 lift 4: the three trainings' table shown once, in §5; the fold names them and points there
+    # reader r51e, 05 lift 4: the three trainings' table shown once (reader r54e, 05 lift 2: under the answer, its
+    # own display); the fold names them and points there
     assert "The three trainings of `strong` in this chapter" not in answer and "| 0.52 |" not in answer
-    assert "the notebook's network and the lazy-PRM network (section 5 tables the three trainings) |" in shares
+    assert "the notebook's network and the lazy-PRM network (the table under this answer gives all three) |" in shares
     trainings = chapter05_runs.trainings(0.54)
     assert "| 0.63 | the answer," in trainings and "| 0.52 | the closing fold" in trainings
     assert "| **notebook's network** (`trained_models`, cached) | 0.54 |" in trainings  # r48e: labels
@@ -150,6 +151,16 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
     low, high = re.search(r"cut sampling time by (\d+)–(\d+) %", answer).groups()
     assert f"{low}%" in tables and f"{high}%" in tables
     assert "49% / 58% / 51% / 61% less" in tables  # the paper's 3DC-7 sampling (Table 3) beside ours
+
+
+def test_the_sampling_table_reads_the_tie_band_only():
+    """Reader r54e, 05 contradiction 2: the home page's caveat on sampling times, above the table it qualifies."""
+    said = chapter05.time_tables()
+    caveat = "Sampling times were not timed twice, so they have no noise band of their own: read these rows against "
+    assert caveat + "the tie band only." in said
+    assert said.index(caveat) < said.index("| measured |")
+    sampling = said[: said.index("<details>")]  # the open part: the sampling rows, no noise verdict among them
+    assert "costs time (" in sampling and "saves time (" in sampling and chapter05.NOISE not in sampling
 
 
 def test_a_ratio_of_two_medians_within_timing_noise_reads_within_noise():
@@ -484,6 +495,14 @@ def test_section_5_says_the_proportion_of_mistakes_the_overview_cannot_show():
         "(more conservative than dangerous, 88 to 15). The overview draws every dangerous one but only some of the "
         "conservative ones."
     )
+    # reader r54e, 05 figure: given the overview's step, the line counts what it draws of each kind, 1 in 10 of the
+    # conservative ones (indices 2, 3, ..., 89: those at 10, 20, ..., 80, 8 of them) and all 15 dangerous ones
+    assert chapter05_runs.mistake_counts(valid, predicted, step=10).endswith(
+        "The overview draws all 15 dangerous mistakes but only 8 of the 88 conservative ones (1 sample in 10), so most "
+        "of its stars are dangerous although most mistakes are not."
+    )
+    every = chapter05_runs.mistake_counts(valid, predicted, step=1)
+    assert every.endswith("The overview draws every sample, each mistake among them.")
     assert "(fewer conservative than dangerous, 1 to 3)" in chapter05_runs.mistake_counts(
         np.array([True, False, False, False]), np.array([False, True, True, True])
     )

@@ -121,12 +121,12 @@ def _moved(ratio: float) -> str:
 def answer_map(threshold: float | None = None) -> str:
     """A map beside the answer (reader r45e, 05 item 4): which training, which planner and which statistic the answer
     uses, against the others the chapter shows, in the answer's one fold (reader r47e, lift 2); the three trainings'
-    table is §5's alone (reader r51e, 05 lift 4: it was shown twice), :func:`chapter05_runs.trainings`."""
+    table, shown once, under the answer (reader r54e, 05 lift 2), :func:`chapter05_runs.trainings`."""
     return (
         "Which of the chapter's runs the answer reads:\n\n"
         "| what | the answer uses | the chapter also shows |\n| --- | --- | --- |\n"
         f"| training of `strong` | the {TIMED} (threshold {recorded_threshold(COMPILED):.2f}) | the {MINE} and the "
-        f"{LAZY} (section 5 tables the three trainings) |\n"
+        f"{LAZY} (the table under this answer gives all three) |\n"
         "| planner | Algorithm 1 (planner `paper`) | §6–7: the lazy PRM's path; the closing fold: the lazy PRM "
         "timed |\n"
         f"| statistic | the verdict: the median of each query's own ratio; the limit in **Why**: mean times "
@@ -293,15 +293,15 @@ def time_tables() -> str:
     """The closing's time table, from the record: the sampling time beside the paper's Table 3 (the total time is
     the answer's, :func:`total_table`), the paper's side in three sentences, then (folded) the lazy PRM, the paper's
     recipe and a ratio of two medians read against timing noise."""
-    fcl_sampling = recorded.improvements(FCL, SCENARIO, "sampling")
-    paper = paper_numbers.IMPROVEMENT[SCENARIO]
+    fcl_sampling, paper = recorded.improvements(FCL, SCENARIO, "sampling"), paper_numbers.IMPROVEMENT[SCENARIO]
     twice = recorded.table(COMPILED, "timed twice")  # {scenario: one computation timed twice}
     moved = max(abs(float(row["ratio of the medians"]) - 1) for row in twice.values())  # timing alone moved it so far
     less = " / ".join(f"{v:.0%}" for v in fcl_sampling.values())
     paper_less = " / ".join(f"{paper['sampling'][s]:.0%}" for s in SAMPLERS)
     return (
-        "The sampling stage alone (line 3 of Algorithm 1, where the network replaces the exact check), time "
-        "with / without, a ratio of the means, the one statistic the paper's Table 3 gives:\n\n"
+        "The sampling stage alone (line 3 of Algorithm 1, where the network replaces the exact check), time with / "
+        "without, a ratio of the means, the one statistic the paper's Table 3 gives. Sampling times were not timed "
+        "twice, so they have no noise band of their own: read these rows against the tie band only.\n\n"
         + ratio_table(
             {
                 f"the paper's Table 3: {paper_less} less": _ratios(paper["sampling"]),

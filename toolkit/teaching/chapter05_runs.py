@@ -208,11 +208,15 @@ def dips_unscreened(result, model, along: np.ndarray, below: np.ndarray) -> str:
     )
 
 
-def mistake_counts(valid: np.ndarray, predicted: np.ndarray, pose: tuple[bool, bool] | None = None) -> str:
+def mistake_counts(
+    valid: np.ndarray, predicted: np.ndarray, pose: tuple[bool, bool] | None = None, step: int | None = None
+) -> str:
     """The line under §5's view (reader r49e, 05 item 3): the overview draws every dangerous mistake but only some
     of the conservative ones, so the true proportion, from ``valid``, ``predicted (N,)``, is said in words. ``pose``:
     the close-up robot's (exact, model) verdicts; where the model is wrong on it, the line says so first (r52e, 05
-    item 3: the first close-up shows a mistake)."""
+    item 3: the first close-up shows a mistake). ``step``: the overview draws 1 sample in ``step``
+    (``toolkit.plots.scenes.overview_step``) and every dangerous one; given, the line says how many of each kind it
+    draws (reader r54e, 05 figure: the eye read 15 stars of 17 as "mostly dangerous")."""
     dangerous, conservative = int(np.sum(~valid & predicted)), int(np.sum(valid & ~predicted))
     more = "more" if conservative > dangerous else "fewer" if conservative < dangerous else "as many"
     kind, count = ("conservative", conservative) if pose and pose[0] else ("dangerous", dangerous)
@@ -222,10 +226,26 @@ def mistake_counts(valid: np.ndarray, predicted: np.ndarray, pose: tuple[bool, b
         if pose and pose[0] != pose[1]
         else ""
     )
+    drawn = "overview draws every dangerous one but only some of the conservative ones."
     return wrong + (
         f"Count the mistakes, not the stars: of the {len(valid)} samples, {conservative} are conservative mistakes "
         f"and {dangerous} dangerous ones ({more} conservative than dangerous, {conservative} to {dangerous}). The "
-        "overview draws every dangerous one but only some of the conservative ones."
+        + (drawn if step is None else _drawn(valid & ~predicted, dangerous, step))
+    )
+
+
+def _drawn(conservative: np.ndarray, dangerous: int, step: int) -> str:
+    """How many mistakes of each kind the overview draws: every dangerous one, of the ``conservative (N,)`` ones
+    those among every ``step``-th sample."""
+    shown, total = int(np.sum(conservative[::step])), int(np.sum(conservative))
+    most = "so most of its stars are dangerous although most mistakes are not" if shown < dangerous < total else ""
+    return (
+        "overview draws every sample, each mistake among them."
+        if step <= 1
+        else (
+            f"overview draws all {dangerous} dangerous mistakes but only {shown} of the {total} conservative ones "
+            f"(1 sample in {step}){', ' + most if most else ''}."
+        )
     )
 
 
@@ -315,8 +335,8 @@ def paper_share() -> str:
 
 
 def trainings(threshold: float) -> str:
-    """§5's map of the three trainings of `strong`, each with its threshold (``threshold``: the notebook's network's),
-    beside the section's first mention of them (reader r50e, 05 lift 5); the answer's fold names them only (r51e)."""
+    """The chapter's map of its three trainings of `strong`, each with its threshold (``threshold``: the notebook's
+    network's), under the answer (reader r54e, 05 lift 2; r50e, 05 lift 5); the answer's fold names them only (r51e)."""
     timed, mine, lazy, name, at = (
         chapter05.TIMED,
         chapter05.MINE,
