@@ -518,7 +518,9 @@ def test_the_crossover_figures_are_its_table():
     assert "can't tell" not in tables()[1][0] and "hatched" not in PAGE
     # reader r47g, crossover figure: the call size of each panel from the sweep's record; the network's triangles as
     # drawn (filled in its colour, edged), not "outlined"
-    caption = " ".join(PAGE.partition("*Cost per check, not planning time:")[2].partition(".*")[0].split())
+    # reader r54g, crossover figure: the caption's first words say it is not the networks that planned
+    opening = "*Cost per check, not planning time, and of a paper-size network, not the networks that planned:"
+    caption = " ".join(PAGE.partition(opening)[2].partition(".*")[0].split())
     assert (
         f"at {CROSSOVER['batch']:,} configurations a call (the mesh panel at {CROSSOVER['mesh_batch']:,}; the last "
         "panel varies it)" in caption
@@ -2306,3 +2308,18 @@ def test_sampling_s_share_caps_the_paper_s_savings_too():
     (gw, _), (gh, _) = times["3do"]["sampling_s"]["G"]
     (Gw, _), (Gh, _) = times["3do"]["total_s"]["G"]
     assert f"and {gw - gh:.2f} s of the {Gw - Gh:.2f} s that 3DO G's query saved" in flat
+
+
+def test_the_key_says_which_measurements_the_planning_verdicts_rest_on():
+    """Reader r54g, "where I got lost": four measurements on four footings; the Key says in one place that the planning
+    verdicts rest on the planning runs, dated as the section's table dates them."""
+    key = " ".join(PAGE.partition("*Key.*")[2].partition("**What the paper's claim needs")[0].split())
+    rows = column(
+        "a query's time, by each query's own ratio (lazy PRM: by the ratio of medians): cells shorter / tied / longer"
+    )
+    dates = {name.split(",")[0]: re.search(r"\((\d+ December)", name).group(1) for name in rows}
+    assert (
+        f"The planning verdicts rest on the planning runs alone (Algorithm 1's of {dates['Algorithm 1']}, the lazy "
+        f"PRM's of {dates['lazy PRM']}); the checker table and the figure, each timed on its own, measure what a check "
+        "costs."
+    ) in key
