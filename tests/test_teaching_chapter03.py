@@ -73,7 +73,7 @@ def test_near_a_boundary_counts_the_other_truth_and_the_walls_never_the_edge_of_
     grid = type("Grid", (), {"axes": (np.arange(12.0), np.arange(12.0))})()
     table = chapter03.mistakes_table({"m": kept.astype(float)}, {"m": 0.5}, truth, grid, 1)
     assert "| `m`, dangerous (obstacle cells kept) | 1 | 0% | 44% | 1 at (0.0, 0.0) |" in table
-    assert "| near a boundary | near one, at random |" in table  # r48c: the column named by what it stands for
+    assert "| near a boundary | near one, if at random |" in table  # r48c: the column named by what it stands for
 
 
 def test_groups_name_each_cluster_of_marked_cells_not_one_box_round_them():

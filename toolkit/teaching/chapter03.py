@@ -69,7 +69,7 @@ def mistakes_table(
     kind of mistake: its cells, the share of them near a boundary beside the share of all cells of its truth that are
     (what mistakes at random would have), and where the dangerous ones lie, as a Markdown table (r33c)."""
     rows = [
-        "| model, mistake | cells | near a boundary | near one, at random | where the dangerous ones lie |",
+        "| model, mistake | cells | near a boundary | near one, if at random | where the dangerous ones lie |",
         "| --- | ---: | ---: | ---: | --- |",
     ]
     close = near_boundary(valid, near)  # (nx, ny) bool
