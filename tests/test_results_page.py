@@ -1118,7 +1118,8 @@ def test_tables_1_and_2_on_unseen_workspaces_are_shown_as_the_runs_tables_give_t
     shown = "\n".join(f"    {line}" if line else "" for line in said.splitlines())  # under the MLP's bullet
     assert shown in TEXT and said.count("\n| ") == 7  # a header, its rule and five rows
     html = site.page_html(TEXT)
-    assert re.search(r"<li>\s*<p><strong>Against the lazy PRM, the lazy-PRM network", html)  # not a row
+    # not a row; reader r54f, item 3: a list of its own under its heading
+    assert re.search(r"<li>\s*(<p>)?<strong>Against the lazy PRM, the lazy-PRM network", html)
     cae = recorded.table("paper", "CAE reconstruction", TABLES)["2ds"]["Unseen"]  # "**86%** / 100%"
     ours, paper = (round(recorded.ours(part) * 100) for part in cae.split("/"))
     assert f"| CAE, `paper` preset / the paper | {ours} / {paper} |" in said
@@ -1280,3 +1281,26 @@ def test_the_key_and_figure_2s_caption_say_where_and_what_they_mean():
     assert "| MLP on balanced samples, `paper` / `strong` preset of Figure 1" in reproduces
     assert "No series takes Figure 1's blue" not in PAGE  # reader r53f, figures: maintainer text, dropped
     assert "reddish-purple stars, the `strong` network with our compiled checker" in PAGE
+
+
+def test_the_findings_open_with_a_verdict_table_and_the_lazy_prm_stands_apart():
+    """Reader r54f, item 3: "What reproduces and what does not" opens with four lines (Table 1, Table 2, Table 3's
+    sampling and total time: reproduces? with which network and checker), each from the record; the lazy-PRM finding
+    (another baseline) under its own heading, not between the findings against Algorithm 1."""
+    table = results_summary.verdict_table(TABLES)
+    findings_text = TEXT.partition("## What reproduces and what does not")[2]
+    assert findings_text.partition("\n- ")[0].strip().endswith(table.strip().splitlines()[-1])
+    rows = [line.split(" | ")[0].removeprefix("| ") for line in table.strip().splitlines()[2:]]
+    assert rows == ["Table 1, the CAE", "Table 2, the MLP", "Table 3, sampling time", "Table 3, total time"]
+    assert "| Table 3, sampling time | yes, by count of cells, with python-fcl (16 of 16 save 10 % or more" in table
+    assert "no with our compiled checker (1 of 16)" in table
+    assert (
+        "| Table 3, total time | no: by each query's own ratio 0 of 16 cells faster with our compiled checker, 3"
+        in table
+    )
+    assert table.count("`strong` network inside Algorithm 1; each checker on both sides") == 2
+    lazy = results_findings.lazy_said(TABLES)
+    assert lazy in TEXT and results_findings.LAZY_HEADING in lazy
+    between = TEXT.partition(results_findings.DETAIL_BEGIN)[2].partition(results_findings.DETAIL_END)[0]
+    assert "Against the lazy PRM" not in between and TEXT.index(lazy) < TEXT.index("## Our Table 3 beside the paper's")
+    assert "\n    Our `paper`-preset network" not in lazy  # no code block once out of its list item
