@@ -561,9 +561,9 @@ def not_from_sampling(tables: Tables) -> str:
     there, both as shares of a mean query (review r28f, item 4; r31f: which way each moved); empty where there are
     none."""
     cells, fast = apart(tables), apart(tables, recorded.ALGORITHM_1)
-    shares = (  # reader r44f, item 6: the arithmetic is the first finding's, once; here the 16 cells' ranges
+    shares = (  # reader r44f, item 6: the arithmetic is one finding's, once; here the 16 cells' ranges
         "- *How little shortening sampling saves*: sampling's share of a mean query, and what prediction saved of "
-        f"it, in each checker's 16 cells (the first finding works the largest saving through).\n\n"
+        f"it, in each checker's 16 cells (the finding “With a slow checker” works the largest saving through).\n\n"
         f"{share_table(tables)}\n\n"
     )
     if not cells and not fast:
@@ -616,12 +616,12 @@ def summary(tables: Tables, table_3: str = "") -> str:
     as it does (:func:`why_no_saving`), the paper's networks (Tables 1 and 2, with :func:`unseen_table`), and the
     answers against the lazy PRM and against Algorithm 1 with our `paper`-preset network; no count the summary gives
     is said again (review r27f, item 2)."""
-    items = [
-        *why_no_saving(tables).split("\n- "),
+    items = [  # reader r54f, item 3: what reproduces first, then why
         *(table_3.split("\n- ") if table_3 else []),  # reader r47f, item 1: the counts by means, moved from the answer
         cae(tables),
         mlp(tables),
         algorithm_1(tables),  # reader r54f, item 3: the lazy PRM's finding under its own heading (:func:`lazy_said`)
+        *why_no_saving(tables).split("\n- "),
         *([paper_why] if (paper_why := paper_sampling(tables)) else []),  # reader r48f, item 4: its own bullet
     ]
     cut = [brief(item) for item in items]  # reader r53f, item 4: a bold claim and one sentence; the rest folded

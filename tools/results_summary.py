@@ -122,7 +122,8 @@ def key(tables: Tables) -> str:
         "Table 1). It is a fair test of the claim on accuracy: right "
         f"{span(balanced)} % of the time on unseen workspaces' balanced samples (the MLP's finding, below, and the "
         "last row of the table under it), where our rebuild of the paper's recipe is at chance. On cost, see the "
-        "first finding, “Why”. The paper's recipe, rebuilt as our *`paper` preset*, screens samples with a CAE, "
+        "finding “Why, in the runs of 5 December”. The paper's recipe, rebuilt as our *`paper` preset*, screens "
+        "samples with a CAE, "
         "which compresses a workspace's occupancy grid into a short code, and an MLP, which reads that code and a "
         "configuration and answers “valid” "
         "(collision-free) or “invalid”. A preset names a network and its planner's settings",
