@@ -433,3 +433,25 @@ def test_figure_1_says_which_legend_looks_no_point_takes():
         "The legend shows markers that no point takes: no filled point at 0.90 or less, no hollow point at 1.10 or "
         "more." in CLAIM
     )
+
+
+def test_figure_2s_pentagons_stand_off_the_next_columns_divider():
+    """Reader r54f, item 4: 2DS G's pentagon sat against the G/BT divider, beside BT's diamond; python-fcl's pentagons
+    are drawn nearer their column's middle, and nearer it than the paper's diamonds are on the other side."""
+    fig = results_figures.table3_figure(results_figures.RESULTS.read_text(), "total")
+    lines = [line for ax in fig.axes for line in ax.get_lines()]
+    offsets = {
+        marker: [float(x) - round(float(x)) for line in lines if line.get_marker() == marker for x in line.get_xdata()]
+        for marker in ("p", "D")
+    }
+    assert len(offsets["p"]) == len(offsets["D"]) == 16  # a pentagon and a diamond a cell
+    assert all(0.3 < x < 0.35 for x in offsets["p"]) and all(x < -0.36 for x in offsets["D"])
+
+
+def test_figure_1s_caption_states_the_edge_rule_with_its_point():
+    """Reader r54f, item 4: 2DS BT's filled point, at exactly 1.10, sits on the tie band's edge and reads as inside it;
+    the caption says it counts as a cost (the page's strict rule), from the record."""
+    tables = recorded_results.parse(results_figures.RESULTS.read_text())
+    said = results_figures.on_tie_edge(tables)
+    assert said == " A point on the tie band's edge counts as beyond it: 2DS BT, at exactly 1.10, counts as a cost."
+    assert said in results_figures.claim_markdown(results_figures.RESULTS.read_text())

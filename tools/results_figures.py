@@ -140,6 +140,8 @@ def worded(fig: Figure, kind: str) -> Figure:
 MARKER_SCALE = {"total": 0.78, "sampling": 0.75}  # Figures 2-3's markers, smaller than means_grid draws them, so
 # neighbours stand apart (reader r47f, item 5: Figure 3's 2DS BT trio nearly touched)
 SPREAD = {"total": 1.0, "sampling": 1.07}  # a sampler's points spread this much wider than means_grid's
+PENTAGON_IN = {"total": 0.9, "sampling": 1.0}  # reader r54f, item 4: Figure 2's 2DS G pentagon sat against the G/BT
+# divider, beside BT's diamond; the rightmost series (python-fcl's pentagons) drawn this much nearer its column's middle
 LOOKS = {  # reader r42f, figures: no blue (Figure 1's "costs time") and no square-like plus (its "tie" square)
     # reader r43f, figures: python-fcl's orange downward triangle read as Figure 1's black "saves" triangle, its orange
     # as Figure 1's vermillion "tie": now a colour and a shape Figure 1 never uses, bluish green pentagons; the
@@ -172,7 +174,9 @@ def readable(fig: Figure, floor: tuple[float, float] | None, kind: str = "total"
                 star = STAR_SCALE if line.get_marker() == "*" else 1.0  # reader r53f: the verdict's series
                 line.set_markersize(line.get_markersize() * MARKER_SCALE[kind] * star)
                 x = [float(v) for v in np.asarray(line.get_xdata())]
-                line.set_xdata([round(v) + (v - round(v)) * SPREAD[kind] for v in x])
+                pentagon = LOOKS.get(str(line.get_label()), ("", ""))[1] == "p"  # before restyle draws it so
+                spread = SPREAD[kind] * (PENTAGON_IN[kind] if pentagon else 1.0)
+                line.set_xdata([round(v) + (v - round(v)) * spread for v in x])
                 line.set_zorder(MARKER_Z)
                 restyle(line)
         if TIE_TICKS[kind]:
@@ -284,7 +288,9 @@ def claim_markdown(text: str) -> str:
         "Each point is a cell: the median of those ratios over its 100 queries (each scenario's four samplers plan "
         "the same 100 queries), its whisker their middle half. *Shape and colour = verdict, fill = checker*: "
         "filled, our compiled checker; hollow, python-fcl on both sides. The fold “The counts by each statistic”, "
-        "under this figure, counts these points (its columns “by own ratio”)." + unused_looks(tables)
+        "under this figure, counts these points (its columns “by own ratio”)."
+        + on_tie_edge(tables)
+        + unused_looks(tables)
     )
     edge_said = (  # reader r39f, item 1: the band by its one name, defined in the table under the summary
         " Inside the noise band of this ratio (hatched, dashed edges), a cost or saving is no clear evidence: "
@@ -297,6 +303,23 @@ def claim_markdown(text: str) -> str:
     described = alt.details_html(alt.details(fig)).strip()
     picture = f"![{html.escape(alt.alt_text(fig))}]({CLAIM_FIGURE.name})"
     return f"{lead}\n\n{picture}\n\n{caption}{edge_said}\n\n{described}"
+
+
+def on_tie_edge(tables: Tables) -> str:
+    """Reader r54f, item 4: the edge rule in the caption, with the points that sit on a tie band's edge as shown (two
+    decimals): ``" A point on the tie band's edge counts as beyond it: 2DS BT, at exactly 1.10, counts as a cost."``;
+    empty where none does."""
+    tie = findings.TIE
+    edges = {f"{1 - tie:.2f}": "a saving", f"{1 + tie:.2f}": "a cost"}
+    runs = (("", recorded.ALGORITHM_1), (" (hollow)", checker_scope.SLOW))
+    found = [
+        f"{NAMES.get(s, s)} {sampler}{fill}, at exactly {m:.2f}, counts as {edges[f'{m:.2f}']}"
+        for fill, key in runs
+        for s, by in own_intervals(tables, key).items()
+        for sampler, (m, _, _) in by.items()
+        if f"{m:.2f}" in edges
+    ]
+    return f" A point on the tie band's edge counts as beyond it: {'; '.join(found)}." if found else ""
 
 
 def unused_looks(tables: Tables) -> str:
