@@ -770,6 +770,16 @@ def test_chapter_04_holds_section_3s_sampling_sentence_to_the_recorded_runs(monk
         "04: the `paper` run's means save sampling time for "
         "{'2ds': ['BT'], '3dc7': ['BS'], '3dc9': ['OB'], '3do': []}, not as the prose says"
     ]
+    monkeypatch.undo()  # reader r54d, item 3: by means only 3DO OB's sampling saved (26 %, inside the means band)
+    monkeypatch.setattr(
+        recorded,
+        "improvements",
+        lambda p, k, kind="total": {**means(p, k, kind), **({"BT": 0.05} if p == "strong" and k == "2ds" else {})},
+    )
+    assert chapter_claims._recorded_sampling() == [
+        "04: by means the `strong` run's sampling saves {('2ds', 'BT'): 0.05, ('3do', 'OB'): 0.26}, not 3DO OB's 26 % "
+        "inside the band"
+    ]
 
 
 def test_chapter_04_holds_its_sampling_inside_algorithm_1_to_the_recorded_run(monkeypatch):
@@ -781,8 +791,12 @@ def test_chapter_04_holds_its_sampling_inside_algorithm_1_to_the_recorded_run(mo
     inside = medians(recorded.ALGORITHM_1)
     tied = {**inside, "3do": {**inside["3do"], "sampling": {**inside["3do"]["sampling"], "BT": 1.05}}}
     monkeypatch.setattr(recorded, "median_ratios", lambda p: tied if p == recorded.ALGORITHM_1 else medians(p))
-    (said,) = chapter_claims._sampling_in_algorithm_1()
+    said, unclear = chapter_claims._sampling_in_algorithm_1()
     assert said.startswith("04: Algorithm 1's sampling with the network reads") and findings.TIES in said
+    assert unclear == (  # reader r54d, item 2: "clearly in 15" holds only while 2DS BT alone is inside the band
+        "04: Algorithm 1's sampling by medians is inside the noise band in {('2ds', 'BT'): 1.56, ('3do', 'BT'): 1.05}, "
+        "not 2DS BT 1.56"
+    )
     monkeypatch.undo()
     rates = table(recorded.ALGORITHM_1, "Checker throughput")
     close = {**rates, "3do": {**rates["3do"], "learned / exact": "0.9"}}
