@@ -78,7 +78,7 @@ def _our_means(who: str, ratios: dict[str, float], band: tuple[float, float]) ->
     return f"| ours, {who} | {less or 'none'} / {more or 'none'}{same} | {n(SAVES)} | {n(TIES)} | {n(COSTS)} |"
 
 
-def papers_table(read: tuple[int, int, int], tables: Tables | None = None) -> str:
+def papers_table(read: tuple[int, int, int], tables: Tables | None = None, lead: str = "") -> str:
     """Table 3 by means, folded under the answer's table (reader r49d, item 3): less time, equal, more time, and
     ``read`` (faster, ties, slower) by our 10 % tie band, which is ours, not the paper's, one count a column; beside
     it our two runs by the same statistic (reader r48d, item 3), and one line on the words and why each query's own
@@ -102,7 +102,8 @@ def papers_table(read: tuple[int, int, int], tables: Tables | None = None) -> st
     return (
         f"<details><summary>The same {len(t['all'])} cells by mean times (Table 3's statistic): the paper's Table 3 "
         "beside ours</summary>\n\n"
-        f"| {len(t['all'])} cells, by mean times | less / more time | faster | tie | slower |\n"
+        + (f"{lead}\n\n" if lead else "")
+        + f"| {len(t['all'])} cells, by mean times | less / more time | faster | tie | slower |\n"
         "| --- | --- | --- | --- | --- |\n"
         f"| the paper's Table 3 | {len(t['saved'])} / {len(t['longer'])}{same} | {n(read[0])} | {n(read[1])} "
         f"| {n(read[2])} |\n{ours}\n\n"
@@ -117,39 +118,38 @@ def papers_table(read: tuple[int, int, int], tables: Tables | None = None) -> st
     )
 
 
-def plain(fast: int, slow: int, total: int, tables: Tables | None = None) -> str:
-    """The answer's first words, before any statistic (reader r50d, item 2): ``fast`` and ``slow`` cells that took
-    10 % or more less time with each checker, of ``total``; sampling's largest share of a query with each checker
-    (its range with python-fcl, whose ties it explains), and whether every network call cost more than the check."""
+def plain(counts: tuple[int, int, int], total: int, tables: Tables | None = None) -> str:
+    """The answer's three short sentences (reader r54d, item 3): by each query's own ratio, ``counts`` (the fast
+    checker's cells that took 10 % or more less and more time, python-fcl's that took 10 % or more less) of ``total``;
+    why, sampling's largest share of a query with each checker and whether every network call cost more than the fast
+    check; the paper's Table 3's cells that save 10 % or more."""
+    fast, costly, slow = counts
     fast_share, slow_share = (costs.sampling_shares(preset, tables) for preset, _ in RUNS)
     rows = recorded.table(recorded.ALGORITHM_1, "Checker throughput", tables).values()
     dearer = sum(recorded.ours(row["learned / exact"]) < 1 for row in rows)  # a network call costs more
-    cheaper = "cheaper than a network call" if dearer == len(rows) else f"the cheaper check in {dearer} of {len(rows)}"
-    took = (
-        "did not make the paper's planner take 10 % or more less time in any cell"
-        if not fast
-        else f"made the paper's planner take 10 % or more less time in only {fast} of {total} cells"
-    )
+    dear = "a network call costs more than a check" if dearer == len(rows) else f"in {dearer} of {len(rows)} "
+    dear += "scenarios a network call costs more than a check" * (dearer != len(rows))
     return (
-        f"By each query's own ratio, letting our accurate network decide which samples are valid {took} with our fast "
-        "exact checker: sampling, "
-        f"whose checks the network replaces, is at most {100 * max(fast_share):.0f} % of a query, and in that run "
-        f"that checker is {cheaper}. Even against slow python-fcl, where sampling is {100 * min(slow_share):.1f}–"
-        f"{100 * max(slow_share):.0f} % of a query, {f'only {slow} of {total} cells' if slow else 'no cell'} took 10 "
-        f"% or more less time{sampling_claim(tables)}."
+        f"By each query's own ratio, our accurate network made the paper's planner take 10 % or more less time in "
+        f"{fast or 'none'} of {total} cells with our fast exact checker ({costly or 'none'} took 10 % or more longer), "
+        f"and in {slow or 'none'} of {total} with slow python-fcl. Sampling is the only step it replaces, at most "
+        f"{100 * max(fast_share):.0f} % of a query ({100 * max(slow_share):.0f} % with python-fcl), and with the fast "
+        f"checker {dear}. The paper's Table 3 (mean times) saves 10 % or more in {len(table3_totals()['ten'])} of its "
+        f"{len(table3_totals()['all'])} cells."
     )
 
 
 def sampling_claim(tables: Tables | None = None) -> str:
-    """The answer's clause on the paper's sampling-time claim against python-fcl (reader r52d, item 3): where every
-    cell's sampling took less time by means, the claim holds there, so the answer's "No" is about total time."""
+    """The answer fold's sentence on the paper's sampling-time claim against python-fcl (reader r52d, item 3; r54d,
+    item 4: the same direction, not the same size): where every cell's sampling took less time by means."""
     facts = checker_scope.slow_checker(tables)
     saved, cells = facts.sampling_verdicts()[SAVES], len(facts.sampling)
     if saved < cells:
-        return f", and sampling itself took less time in {saved or 'none'} of its {cells} cells by means"
+        return f"With python-fcl sampling itself took less time by means in {saved or 'none'} of its {cells} cells."
     return (
-        f", though sampling itself took {checker_scope.percents(facts.sampling)} less time by means, as the paper's "
-        f'Table 3 claims ({checker_scope.percents(facts.papers_sampling)}): the "No" is about total time'
+        f"With python-fcl sampling itself took {checker_scope.percents(facts.sampling)} less time by means: the same "
+        f'direction as the paper\'s Table 3 ({checker_scope.percents(facts.papers_sampling)} less), so the "No" is '
+        "about total time."
     )
 
 
