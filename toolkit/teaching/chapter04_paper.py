@@ -40,8 +40,8 @@ def papers_line() -> str:
 
 
 def means_sentence(tables: Tables | None = None) -> str:
-    """The answer's last sentence (reader r51d, item 1): by means, Table 3's statistic, our fast checker's cells that
-    took 10 % or more less time and how many of them lie beyond that statistic's noise band, then Table 3 beside."""
+    """The answer fold's sentence (reader r51d, item 1; r54d, item 3: folded): by means, Table 3's statistic, our
+    fast checker's cells that took 10 % or more less time, how many lie beyond that statistic's noise band, Table 3."""
     fast = costs.mean_verdicts(RUNS[0][0], tables)[SAVES]
     beyond = len(costs.clear_mean_savings(RUNS[0][0], tables))
     cells = f"{fast} of {sum(costs.mean_verdicts(RUNS[0][0], tables).values())} cells" if fast else "no cell"
