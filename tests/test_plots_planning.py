@@ -285,6 +285,13 @@ def test_a_pair_whose_taller_bar_says_the_other_way_is_starred_and_told():
     assert "(*: inside the noise band; ‡: the bars say the other way)" in fig.axes[0].get_title()
     assert "query's ratio 0.60x, inside the noise band; the bars' own ratio" in alt.alt_text(fig)
     assert "*" not in timings.stage_times({"2DS": planning}, band=(0.7, 1.3)).axes[0].get_title()
+    # reader r54d, item 4: the bars' own ratio is the quotient of the heights the description prints (4.23 / 2.85 =
+    # 1.48), not of the unrounded medians (1.49)
+    odd = {s: {m: dict(row) for m, row in modes.items()} for s, modes in PLANNING.items()}
+    odd["OB"]["without"].update(total_s_median=0.0028451, total_s_q1=0.002, total_s_q3=0.004)
+    odd["OB"]["with"].update(total_s_median=0.0042349, total_s_q1=0.003, total_s_q3=0.006)
+    said = alt.alt_text(timings.stage_times({"2DS": odd}))
+    assert "OB 2.85 ms without, 4.23 ms with" in said and "the bars' own ratio 1.48x" in said
     untold = timings.stage_times({"2DS": PLANNING}).axes[0].get_title()
     assert "‡" not in untold and "other way" not in untold  # reader r31d: no mark promised where none is drawn
     wide = {s: {m: dict(row) for m, row in modes.items()} for s, modes in PLANNING.items()}

@@ -120,12 +120,14 @@ def _stage_words(
     words = []
     for i, s in enumerate(names):
         taller = ", though the bar with prediction is the " + ("shorter" if bars[i] < 1 else "taller")
+        without, with_ = (ms_text(table["total_s"][i, mode]) for mode in (0, 1))
+        own = float(with_) / float(without) if float(without) else bars[i]  # r54d: the printed heights' quotient
         words.append(
-            f"{s} {ms_text(table['total_s'][i, 0])} ms without, {ms_text(table['total_s'][i, 1])} ms with "
+            f"{s} {without} ms without, {with_} ms with "
             f"(the median of each query's ratio {ratio[i]:.2f}x"
             + ", inside the noise band" * ("*" in (labels[i] if labels else ""))
             + ", its middle half across the tie band" * ("†" in (labels[i] if labels else ""))
-            + f"; the bars' own ratio {bars[i]:.2f}x"
+            + f"; the bars' own ratio {own:.2f}x"
             f"{taller if crossed[i] else ''})"
         )
     return f"{title}: " + ", ".join(words)

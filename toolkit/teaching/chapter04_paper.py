@@ -40,8 +40,8 @@ def papers_line() -> str:
 
 
 def means_sentence(tables: Tables | None = None) -> str:
-    """The answer's last sentence (reader r51d, item 1): by means, Table 3's statistic, our fast checker's cells that
-    took 10 % or more less time and how many of them lie beyond that statistic's noise band, then Table 3 beside."""
+    """The answer fold's sentence (reader r51d, item 1; r54d, item 3: folded): by means, Table 3's statistic, our
+    fast checker's cells that took 10 % or more less time, how many lie beyond that statistic's noise band, Table 3."""
     fast = costs.mean_verdicts(RUNS[0][0], tables)[SAVES]
     beyond = len(costs.clear_mean_savings(RUNS[0][0], tables))
     cells = f"{fast} of {sum(costs.mean_verdicts(RUNS[0][0], tables).values())} cells" if fast else "no cell"
@@ -78,7 +78,7 @@ def _our_means(who: str, ratios: dict[str, float], band: tuple[float, float]) ->
     return f"| ours, {who} | {less or 'none'} / {more or 'none'}{same} | {n(SAVES)} | {n(TIES)} | {n(COSTS)} |"
 
 
-def papers_table(read: tuple[int, int, int], tables: Tables | None = None) -> str:
+def papers_table(read: tuple[int, int, int], tables: Tables | None = None, lead: str = "") -> str:
     """Table 3 by means, folded under the answer's table (reader r49d, item 3): less time, equal, more time, and
     ``read`` (faster, ties, slower) by our 10 % tie band, which is ours, not the paper's, one count a column; beside
     it our two runs by the same statistic (reader r48d, item 3), and one line on the words and why each query's own
@@ -102,7 +102,8 @@ def papers_table(read: tuple[int, int, int], tables: Tables | None = None) -> st
     return (
         f"<details><summary>The same {len(t['all'])} cells by mean times (Table 3's statistic): the paper's Table 3 "
         "beside ours</summary>\n\n"
-        f"| {len(t['all'])} cells, by mean times | less / more time | faster | tie | slower |\n"
+        + (f"{lead}\n\n" if lead else "")
+        + f"| {len(t['all'])} cells, by mean times | less / more time | faster | tie | slower |\n"
         "| --- | --- | --- | --- | --- |\n"
         f"| the paper's Table 3 | {len(t['saved'])} / {len(t['longer'])}{same} | {n(read[0])} | {n(read[1])} "
         f"| {n(read[2])} |\n{ours}\n\n"
@@ -117,39 +118,38 @@ def papers_table(read: tuple[int, int, int], tables: Tables | None = None) -> st
     )
 
 
-def plain(fast: int, slow: int, total: int, tables: Tables | None = None) -> str:
-    """The answer's first words, before any statistic (reader r50d, item 2): ``fast`` and ``slow`` cells that took
-    10 % or more less time with each checker, of ``total``; sampling's largest share of a query with each checker
-    (its range with python-fcl, whose ties it explains), and whether every network call cost more than the check."""
+def plain(counts: tuple[int, int, int], total: int, tables: Tables | None = None) -> str:
+    """The answer's three short sentences (reader r54d, item 3): by each query's own ratio, ``counts`` (the fast
+    checker's cells that took 10 % or more less and more time, python-fcl's that took 10 % or more less) of ``total``;
+    why, sampling's largest share of a query with each checker and whether every network call cost more than the fast
+    check; the paper's Table 3's cells that save 10 % or more."""
+    fast, costly, slow = counts
     fast_share, slow_share = (costs.sampling_shares(preset, tables) for preset, _ in RUNS)
     rows = recorded.table(recorded.ALGORITHM_1, "Checker throughput", tables).values()
     dearer = sum(recorded.ours(row["learned / exact"]) < 1 for row in rows)  # a network call costs more
-    cheaper = "cheaper than a network call" if dearer == len(rows) else f"the cheaper check in {dearer} of {len(rows)}"
-    took = (
-        "did not make the paper's planner take 10 % or more less time in any cell"
-        if not fast
-        else f"made the paper's planner take 10 % or more less time in only {fast} of {total} cells"
-    )
+    dear = "a network call costs more than a check" if dearer == len(rows) else f"in {dearer} of {len(rows)} "
+    dear += "scenarios a network call costs more than a check" * (dearer != len(rows))
     return (
-        f"By each query's own ratio, letting our accurate network decide which samples are valid {took} with our fast "
-        "exact checker: sampling, "
-        f"whose checks the network replaces, is at most {100 * max(fast_share):.0f} % of a query, and in that run "
-        f"that checker is {cheaper}. Even against slow python-fcl, where sampling is {100 * min(slow_share):.1f}–"
-        f"{100 * max(slow_share):.0f} % of a query, {f'only {slow} of {total} cells' if slow else 'no cell'} took 10 "
-        f"% or more less time{sampling_claim(tables)}."
+        f"By each query's own ratio, our accurate network made the paper's planner take 10 % or more less time in "
+        f"{fast or 'none'} of {total} cells with our fast exact checker ({costly or 'none'} took 10 % or more longer), "
+        f"and in {slow or 'none'} of {total} with slow python-fcl. Sampling is the only step it replaces, at most "
+        f"{100 * max(fast_share):.0f} % of a query ({100 * max(slow_share):.0f} % with python-fcl), and with the fast "
+        f"checker {dear}. The paper's Table 3 (mean times) saves 10 % or more in {len(table3_totals()['ten'])} of its "
+        f"{len(table3_totals()['all'])} cells."
     )
 
 
 def sampling_claim(tables: Tables | None = None) -> str:
-    """The answer's clause on the paper's sampling-time claim against python-fcl (reader r52d, item 3): where every
-    cell's sampling took less time by means, the claim holds there, so the answer's "No" is about total time."""
+    """The answer fold's sentence on the paper's sampling-time claim against python-fcl (reader r52d, item 3; r54d,
+    item 4: the same direction, not the same size): where every cell's sampling took less time by means."""
     facts = checker_scope.slow_checker(tables)
     saved, cells = facts.sampling_verdicts()[SAVES], len(facts.sampling)
     if saved < cells:
-        return f", and sampling itself took less time in {saved or 'none'} of its {cells} cells by means"
+        return f"With python-fcl sampling itself took less time by means in {saved or 'none'} of its {cells} cells."
     return (
-        f", though sampling itself took {checker_scope.percents(facts.sampling)} less time by means, as the paper's "
-        f'Table 3 claims ({checker_scope.percents(facts.papers_sampling)}): the "No" is about total time'
+        f"With python-fcl sampling itself took {checker_scope.percents(facts.sampling)} less time by means: the same "
+        f'direction as the paper\'s Table 3 ({checker_scope.percents(facts.papers_sampling)} less), so the "No" is '
+        "about total time."
     )
 
 
@@ -282,9 +282,10 @@ def beyond_sampling(tables: Tables | None = None) -> str:
 
     return (
         "**Savings larger than all of sampling.** Skipping the samples' checks can save at most the whole sampling "
-        "stage. Yet in the paper's own mean times (§V, the times behind Table 3) the total time saved exceeds all the "
-        f"sampling time without prediction in {len(over)} of its {sum(len(k['total_s']) for k in TIMES.values())} "
-        f"cells: {cell(first)} saves {over[first][0]:.2f} s while its sampling took {over[first][1]:.2f} s, "
+        "stage. We count every saving larger than that, of any size, for the paper and for ours. In the paper's own "
+        "mean times (§V, the times behind Table 3) the total time saved exceeds all the sampling time without "
+        f"prediction in {len(over)} of its {sum(len(k['total_s']) for k in TIMES.values())} cells: {cell(first)} "
+        f"saves {over[first][0]:.2f} s while its sampling took {over[first][1]:.2f} s, "
         f"{cell(second)} {over[second][0]:.2f} s against {over[second][1]:.2f} s. Prediction of samples alone cannot "
         "explain these. Another roadmap can, and so can the spread of the times: in "
         f"{spread} of those {len(over)} cells the paper's standard deviation of a query's time exceeds the saving."
@@ -299,20 +300,20 @@ def _ours_beyond(tables: Tables | None = None) -> str:
     if not count:
         return " Ours have no such saving, by means or by the median own ratio."
     named = "; ".join(
-        f"{who}: " + ", ".join(f"{c} {100 * a:.0f} % against {100 * b:.0f} %" for c, a, b in cells)
+        f"{who}: " + ", ".join(f"{c} {100 * a:.0f} % against {100 * b:.1f} %" for c, a, b in cells)
         for who, cells in runs.items()
         if cells
     )
     said = (
-        f" Ours have {count} such saving{'s' * (count > 1)} by means (the share of the mean query saved against "
-        f"sampling's share without prediction; {named})."
+        f" By the same rule ours have {count} such saving{'s' * (count > 1)} by means (the share of the mean query "
+        f"saved against sampling's share without prediction; {named})." + _ten_or_more(runs)
     )
     band = costs.floors(tables)["means"]
     noisy = [f"{who} {c}" for who, cells in runs.items() for c, a, _ in cells if costs.inside(round(1 - a, 2), band)]
     if len(noisy) == count:  # common46: by means ours lie within timing noise, so no story is told of them
         return said + (
-            f" Each lies inside the noise band of a ratio of means ({band[0]:.2f}–{band[1]:.2f}): within timing "
-            "noise, so no evidence of a saving larger than sampling." + _by_own(tables)
+            f" Each of our {count} lies inside the noise band of a ratio of means ({band[0]:.2f}–{band[1]:.2f}): "
+            "within timing noise, so no evidence of a saving larger than sampling." + _by_own(tables)
         )
     medians = {who: costs.middle_halves(preset, tables) for preset, who in RUNS}
     split: dict[bool, list[str]] = {False: [], True: []}
@@ -333,6 +334,13 @@ def _ours_beyond(tables: Tables | None = None) -> str:
             "run was not timed twice (`docs/results.md`)."
         )
     return said
+
+
+def _ten_or_more(runs: Mapping[str, list[tuple[str, float, float]]]) -> str:
+    """Reader r54d, contradiction 1: the same count with only savings of 10 % or more, the paper's and ours."""
+    paper = sum(IMPROVEMENT[s]["total"][c] >= 0.1 for s, c in saved_beyond_sampling())
+    ours = sum(a >= 0.1 for cells in runs.values() for _, a, _ in cells)
+    return f" Counting only savings of 10 % or more, the paper has {paper} and ours {ours}."
 
 
 def _by_own(tables: Tables | None = None) -> str:
