@@ -96,7 +96,7 @@ def test_a_slice_verdict_counts_its_mistakes_by_where_they_lie():
     assert chapter03.slice_verdict(p, truth, 0.5, 1).endswith("it finds the obstacles, and errs only at their edges")
     p[15, 15] = 0.0  # a free cell far from the obstacle rejected
     said = chapter03.slice_verdict(p, truth, 0.5, 1)
-    assert said.startswith("1 of 400 cells wrong, 0% of them near a boundary; 0 (0%) of the C-obstacle's cells called")
+    assert said.startswith("1 of 400 cells wrong, 0 of them near a boundary; 0 (0%) of the C-obstacle's cells called")
     assert "1 (0.3%) of the free ones rejected" in said  # r34c: a count beside a share under 1 %, never a bare "0%"
     assert said.endswith("away from any boundary it makes 1 conservative and 0 dangerous mistakes")
     p[19, 12], p[5, 7] = 0.0, 1.0  # a free cell by the wall rejected, an obstacle cell at the obstacle's edge kept
@@ -224,8 +224,11 @@ def test_the_why_names_the_ablations_largest_steps_by_their_measure_as_the_table
     assert abs(gains[3] - gains[7]) < 1 and "Its balanced bracket is about the 64-32 MLP's" in said  # r51c
     three = [rows[k][0] for k in (3, 4, 5, 6)]  # r54c: the span from the no-dropout row, unrounded, said plainly
     assert three[1] < three[2] < three[0] < three[3] and f"{three[3] - three[0]:.1f}" == "13.8"
-    assert three[3] - three[0] > max(v for k, v in gains.items() if k != 6)  # "more than any other step's bracket"
-    assert "the 1000-workspace row is 13.8 points higher, more than any other step's bracket" in said
+    assert three[3] - three[0] > max(v for k, v in gains.items() if k != 6)  # "more than any other step's gain"
+    assert min(gains.values()) < -(three[3] - three[0])  # r55c 2: a loss (AdamW's) is larger, so "gain", not "bracket"
+    assert "the 1000-workspace row is 13.8 points higher, more than any other step's gain" in said
+    assert "shows what each step adds" in texts[2] and "why" not in texts[2]  # r55c 5: the table cannot rank causes
+    assert "(the line under the opening table, just below)" in verdict  # r55c 3: the table the line is under
     assert "then adds about six points more" in said and round(gains[7]) == 6
     assert "samples it does not state" not in " ".join(texts) and "its rates imply about 60 % valid" in said
     assert "rows 1 to 6" not in " ".join(texts) and "rows 3 and 6" not in " ".join(texts)
@@ -234,6 +237,9 @@ def test_the_why_names_the_ablations_largest_steps_by_their_measure_as_the_table
     whole = " ".join(texts)  # r48c items 1 and 3: the paper's samples are open; a dangerous mistake can cost time
     assert "the paper's validity-blind" not in whole and "on section 4's validity-blind 2DS samples" in whole
     assert "harmless" not in whole and "It can cost time, but two exact checks keep it off any returned path" in whole
+    two = whole[whole.index("two exact checks keep it off") :].split(". Edges are also checked as they are added")[0]
+    assert two.endswith("), and the returned path is verified again at a tenth of that step")  # r55c 1: two checks
+    assert "Algorithm 1" not in two and ";" not in two  # listed, the edges checked on insertion not counted as one
     assert "plain Adam" in " ".join(texts) and "Its AdamW keeps" not in " ".join(texts)  # r47c: Adam, explained once
 
 

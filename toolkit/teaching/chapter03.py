@@ -173,11 +173,11 @@ def slice_verdict(p, truth, threshold: float, near: int, edge: str = "walls") ->
     close = near_boundary(truth, near, edge)
     conservative, dangerous = ~kept & truth, kept & ~truth  # free cells rejected; obstacle cells kept
     wrong = int(conservative.sum() + dangerous.sum())
-    near_all = float((close & (conservative | dangerous)).sum() / max(1, wrong))
+    near_all = int((close & (conservative | dangerous)).sum())  # a count, never a share read as 99 % (r55c)
     far_c, far_d = int((conservative & ~close).sum()), int((dangerous & ~close).sum())
     missed, rejected = np.mean(kept[~truth]), np.mean(~kept[truth])  # obstacle cells called valid; free ones rejected
     counts = (  # a count beside each share, so that 9 cells never read "0%" beside their 9 marks (reader r34c)
-        f"{wrong} of {truth.size} cells wrong, {int(100 * near_all)}% of them near a boundary; "
+        f"{wrong} of {truth.size} cells wrong, {near_all} of them near a boundary; "
         f"{int(dangerous.sum())} ({share(missed)}) of the C-obstacle's cells called valid, "
         f"{int(conservative.sum())} ({share(rejected)}) of the free ones rejected: "
     )
@@ -188,7 +188,7 @@ def slice_verdict(p, truth, threshold: float, near: int, edge: str = "walls") ->
     edges = f"along the walls or the obstacles' edges: {at}" if rim else "at their edges"  # r53c: the walls too
     if far_c + far_d == 0:
         return counts + f"it finds the obstacles, and errs only {edges}"
-    where = f"mostly {edges}" if near_all >= 0.5 else "more often away from their edges than at them"
+    where = f"mostly {edges}" if 2 * near_all >= wrong else "more often away from their edges than at them"
     away = f"away from any boundary it makes {far_c} conservative and {far_d} dangerous mistakes"
     return counts + f"it finds the obstacles and errs {where}; {away}"
 
