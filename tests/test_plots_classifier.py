@@ -3,6 +3,7 @@ checker's C-obstacles, exactly the dangerous and conservative cells, hand-comput
 
 import re
 
+import matplotlib as mpl
 import numpy as np
 import pytest
 from matplotlib.backends.backend_agg import FigureCanvasAgg
@@ -469,6 +470,12 @@ def test_roc_curve_draws_every_curve_and_its_operating_point(probability, valid)
     assert not {line.get_marker() for line in lines} & {"s", "o"}
     assert len({(line.get_color(), line.get_linestyle()) for line in lines[::2]}) == 2  # two curves told apart
     assert all(point.get_markersize() >= 10 and point.get_markeredgewidth() >= 1.5 for point in lines[1::2])  # r52c
+    legend = ax.get_legend()  # r55c: the dash-dot curve's handle drew solid, its period longer than the handle
+    names = {"-": None, "--": "dashed", "-.": "dashdot", ":": "dotted"}
+    for curve in lines[::2]:
+        name = names[curve.get_linestyle()]
+        period = sum(mpl.rcParams[f"lines.{name}_pattern"]) * curve.get_linewidth() if name else 0.0  # in points
+        assert period < legend.handlelength * legend.prop.get_size_in_points(), curve.get_linestyle()
 
 
 def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probability, valid):

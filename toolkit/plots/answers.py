@@ -220,5 +220,5 @@ def draw_roc(ax, curves: Mapping[str, tuple[np.ndarray, np.ndarray, float]]) -> 
     ax.set_xlim(-0.06, 1.02)  # the frame inset from FPR 0 and TPR 1: a curve along them shows apart from it
     ax.set_ylim(-0.02, 1.06)
     ax.set_aspect("equal")
-    ax.legend(fontsize=8, loc="lower right")
+    ax.legend(fontsize=8, loc="lower right", handlelength=4.5)  # r55c: a whole dash-dot period shows in its handle
     return "; ".join(said)
