@@ -281,11 +281,12 @@ def why_no_saving(tables: Tables) -> str:
 
 def exceptions(tables: Tables, cleared: list[tuple[str, float]]) -> str:
     """Reader r54f, item 2: the cells beyond the noise band of their own ratio that saved mostly by something else
-    than sampling (:func:`elsewhere`), named in the bold claim as moved by the rest of the query or by timing."""
+    than sampling (:func:`elsewhere`), named in the bold claim (reader r55f, item 5: no parenthesis; what moved them,
+    the rest of the query or timing, is the fold's)."""
     other = elsewhere(tables, cleared) if cleared else []
     if not other:
         return ""
-    return f" ({' and '.join(other)} saved more, moved by the rest of the query or by timing)"
+    return f"; in {' and '.join(other)} the whole query saved more than sampling's share"
 
 
 def smaller_said(tables: Tables) -> str:
@@ -369,7 +370,7 @@ def paper_sampling(tables: Tables) -> str:
     )
     read = (  # reader r54f, item 2: in plain view, which of the losses each reading explains, and which none does
         [f"{len(by_cost)} in {' and '.join(dear)} by the network's cost"] * bool(by_cost)
-        + [f"{len(by_rounds)} in {' and '.join(invalid)} by its empty first rounds"] * bool(by_rounds)
+        + [f"{len(by_rounds)} in {' and '.join(invalid)} by first rounds that keep no sample"] * bool(by_rounds)
         + [f"{', '.join(others)} unexplained"] * bool(others)
     )
     left = (
