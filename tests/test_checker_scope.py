@@ -112,12 +112,12 @@ def test_the_answer_is_three_plain_sentences_read_from_the_record():
     6's, which says plainly that by means almost nothing of ours is beyond the noise band (0.52-1.48)."""
     said = chapter04.answer()
     sentences, _, table = said.partition("\n\n")
-    assert sentences == (  # reader r54d, item 3: three short sentences, the by-means sentence and runs folded
+    assert sentences == (  # reader r54d, item 3: three short sentences; r55d, item 1: a cap, then the rest
         "**No.** By each query's own ratio, our accurate network made the paper's planner take 10 % or more less time "
         "in none of 16 cells with our fast exact checker (9 took 10 % or more longer), and in 3 of 16 with slow "
         "python-fcl. Skipping sample checks, the only step it replaces, can save at most 18 % of a query (34 % with "
-        "python-fcl); the rest of its effect runs through the roadmap built from the samples it keeps. The paper's "
-        "Table 3 (mean times) saves 10 % or more in 10 of its 16 cells."  # reader r55d, item 1: a cap, then the rest
+        "python-fcl); the rest of its effect comes after sampling: the encoding, and the roadmap built from the "
+        "samples it keeps. The paper's Table 3 (mean times) saves 10 % or more in 10 of its 16 cells."
     )
     assert "median" not in sentences and "noise band" not in sentences  # r50d: bands come with the table
     assert costs.clear_mean_savings(recorded.ALGORITHM_1) == []
@@ -299,9 +299,10 @@ def test_the_answers_why_gives_sampling_s_share_and_the_papers_savings_beyond_sa
     )
     # reader r55d, item 1: the rest runs through the roadmap, computed from the cost table and python-fcl's savings
     assert chapter04_paper.roadmap() in said and chapter04_paper.roadmap() == (
-        "**The rest runs through the roadmap:** by changing which samples are kept, prediction changes the roadmap "
-        "built from them, and so the time after sampling. In 3 of the 4 costly cells that section 6's last table "
-        "splits into stages, most of the extra mean time came after sampling. It can save time too: python-fcl's "
+        "**The rest comes after sampling:** by changing which samples are kept, prediction changes the roadmap "
+        "built from them, and so the time after sampling (which also holds the encoding). In 3 of the 4 costly cells "
+        'that section 6 splits into stages ("Where the extra time went"), most of the extra mean time came after '
+        "sampling. It can save time too: python-fcl's "
         "3DC-9 OB (its median query 21 % less time; sampling 11 % of its mean query) saved more than all of sampling."
     )
     assert sum(c.after_share > 0.5 for c in costs.dear_cells()) == 3 and len(costs.dear_cells()) == 4

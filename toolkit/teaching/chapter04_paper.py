@@ -126,7 +126,8 @@ def plain(counts: tuple[int, int, int], total: int, tables: Tables | None = None
         f"{fast or 'none'} of {total} cells with our fast exact checker ({costly or 'none'} took 10 % or more longer), "
         f"and in {slow or 'none'} of {total} with slow python-fcl. Skipping sample checks, the only step it replaces, "
         f"can save at most {100 * max(fast_share):.0f} % of a query ({100 * max(slow_share):.0f} % with python-fcl); "
-        "the rest of its effect runs through the roadmap built from the samples it keeps. The paper's Table 3 (mean "
+        "the rest of its effect comes after sampling: the encoding, and the roadmap built from the samples it keeps. "
+        "The paper's Table 3 (mean "
         f"times) saves 10 % or more in {len(table3_totals()['ten'])} of its {len(table3_totals()['all'])} cells."
     )
 
@@ -159,8 +160,9 @@ def why(tables: Tables | None = None) -> str:
     return (
         "**Why no saving:** skipping the samples' checks, the only step prediction replaces, can save at most "
         f"sampling's share of a query: {100 * min(shares):.1f}–{100 * max(shares):.0f} % with our fast checker (mean "
-        "times without prediction, by cell). A network call also costs more than that checker's check ([section 4]"
-        "(#4-is-the-network-a-cheaper-check)), and encoding the workspace comes on top. Against python-fcl "
+        "times without prediction, by cell). A network call also costs more than that checker's check (measured in "
+        "[section 4](#4-is-the-network-a-cheaper-check) for 2DS and 3DC-7, recorded for all four in the last table of "
+        "section 6's fold), and encoding the workspace comes on top. Against python-fcl "
         f"{cheaper}, but sampling is only {100 * min(slow):.1f}–{100 * max(slow):.0f} % of a query there, so {ties} "
         f"of {len(slow)} cells tie.\n\n{roadmap(tables)}\n\n{shares_fold(tables)}\n\n"
         "**Nor can skipped sample checks explain the paper's savings:** in "
@@ -178,9 +180,10 @@ def roadmap(tables: Tables | None = None) -> str:
     big = [f"{c} (its median query {100 * a:.0f} % less time; sampling {100 * b:.0f} % of its mean query)"
            for c, a, b, _ in fcl_clear(tables) if a > b]  # fmt: skip
     return (
-        "**The rest runs through the roadmap:** by changing which samples are kept, prediction changes the roadmap "
-        f"built from them, and so the time after sampling. In {after} of the {len(dear)} costly cells that section "
-        "6's last table splits into stages, most of the extra mean time came after sampling."
+        "**The rest comes after sampling:** by changing which samples are kept, prediction changes the roadmap "
+        f"built from them, and so the time after sampling (which also holds the encoding). In {after} of the "
+        f'{len(dear)} costly cells that section 6 splits into stages ("Where the extra time went"), most of the '
+        "extra mean time came after sampling."
         + f" It can save time too: python-fcl's {'; '.join(big)} saved more than all of sampling."
         * bool(big)
     )
