@@ -299,7 +299,7 @@ def test_the_answers_why_gives_sampling_s_share_and_the_papers_savings_beyond_sa
     )
     # reader r55d, item 1: the rest runs through the roadmap, computed from the cost table and python-fcl's savings
     assert chapter04_paper.roadmap() in said and chapter04_paper.roadmap() == (
-        "**The rest comes after sampling:** by changing which samples are kept, prediction changes the roadmap "
+        "**The rest comes after sampling:** by changing which samples are kept, prediction can change the roadmap "
         "built from them, and so the time after sampling (which also holds the encoding). In 3 of the 4 costly cells "
         'that section 6 splits into stages ("Where the extra time went"), most of the extra mean time came after '
         "sampling. It can save time too: python-fcl's "

@@ -180,7 +180,7 @@ def roadmap(tables: Tables | None = None) -> str:
     big = [f"{c} (its median query {100 * a:.0f} % less time; sampling {100 * b:.0f} % of its mean query)"
            for c, a, b, _ in fcl_clear(tables) if a > b]  # fmt: skip
     return (
-        "**The rest comes after sampling:** by changing which samples are kept, prediction changes the roadmap "
+        "**The rest comes after sampling:** by changing which samples are kept, prediction can change the roadmap "
         f"built from them, and so the time after sampling (which also holds the encoding). In {after} of the "
         f'{len(dear)} costly cells that section 6 splits into stages ("Where the extra time went"), most of the '
         "extra mean time came after sampling."
