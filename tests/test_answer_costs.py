@@ -9,7 +9,15 @@ from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.plots import answer, query_ratios
 from toolkit.plots.alt import alt_text
 from toolkit.plots.answer import answer_ratios
-from toolkit.teaching import chapter04, chapter04_figures, chapter04_paper, checker_scope, costs, findings, recorded
+from toolkit.teaching import (
+    chapter04,
+    chapter04_encoding,
+    chapter04_figures,
+    checker_scope,
+    costs,
+    findings,
+    recorded,
+)
 from toolkit.teaching.chapter04_figures import SERIES
 
 
@@ -143,16 +151,16 @@ def test_after_share_is_the_part_of_the_extra_time_after_sampling():
 def test_encoding_line_sets_the_live_encoding_beside_each_costly_cells_growth_after_sampling():
     """Reader r52d, item 2: "after sampling" includes the encoding; its measured size (section 5's live 3DC-7 queries)
     beside each costly 3DC-7 cell's growth after sampling, from the record: OB +11.7 ms, BT +2.8 ms."""
-    said = chapter04_paper.encoding_line({"with": [{"encode_s": 0.003}, {"encode_s": 0.0031}, {"encode_s": 0.0029}]})
+    said = chapter04_encoding.encoding_line({"with": [{"encode_s": 0.003}, {"encode_s": 0.0031}, {"encode_s": 0.0029}]})
     assert "The time after sampling includes encoding the workspace" in said and "spent 3.0 ms a query" in said
     assert "3DC-7 OB's time after sampling grew 11.7 ms, of which the encoding is about 26 %" in said
     assert "3DC-7 BT's time after sampling grew 2.8 ms, which the encoding alone could cover" in said
     assert "(3DC-9 BT +15.3 ms, 3DO OB +18.0 ms after sampling)" in said  # reader r53d, item 5: named, not counted
     assert "In 3DC-7 OB the encoding is smaller than that growth, so something else after sampling grew too" in said
-    covers_neither = chapter04_paper.encoding_line({"with": [{"encode_s": 0.001}]})
+    covers_neither = chapter04_encoding.encoding_line({"with": [{"encode_s": 0.001}]})
     assert "In 3DC-7 OB and 3DC-7 BT the encoding is smaller than that growth" in covers_neither
-    assert "smaller than that growth" not in chapter04_paper.encoding_line({"with": [{"encode_s": 0.02}]})
-    assert chapter04_paper.encoding_line({"with": [{"encode_s": 0.0}]}) == ""  # no network, no encoding to set
+    assert "smaller than that growth" not in chapter04_encoding.encoding_line({"with": [{"encode_s": 0.02}]})
+    assert chapter04_encoding.encoding_line({"with": [{"encode_s": 0.0}]}) == ""  # no network, no encoding to set
 
 
 def test_split_sentence_gives_the_sampling_shares_of_the_dear_cells():

@@ -298,8 +298,10 @@ def mark_line(tables: Tables | None = None) -> str:
         f"{costs.MARK} means one thing on this page: inside the noise band of its statistic, so no clear evidence. "
         "† means one thing too: no clear evidence for a reason other than the noise band, which the line under "
         "its table names: in sections 3 and 5 only, from their few live queries (say, a median whose middle half "
-        "includes an edge of the tie band, 0.90 or 1.10, which counts as a saving or a cost); the recorded runs "
-        "carry none. Where both hold, "
+        "includes an edge of the tie band, 0.90 or 1.10, which counts as a saving or a cost). The recorded runs "
+        "carry none, because a middle half shows how the queries spread, not how sure their median is: the median of "
+        "100 recorded queries is pinned far more tightly than their spread, the median of a few live queries is not. "
+        "Where both hold, "
         f"{costs.MARK} takes precedence: the verdict carries {costs.MARK} alone.\n\n</details>"
     )
 

@@ -7,8 +7,6 @@ from __future__ import annotations
 from collections import Counter
 from collections.abc import Mapping
 
-import numpy as np
-
 from toolkit.experiments.paper_numbers import IMPROVEMENT, TIMES, saved_beyond_sampling
 from toolkit.teaching import checker_scope, costs, recorded
 from toolkit.teaching.recorded import Tables
@@ -119,23 +117,18 @@ def papers_table(read: tuple[int, int, int], tables: Tables | None = None, lead:
 
 
 def plain(counts: tuple[int, int, int], total: int, tables: Tables | None = None) -> str:
-    """The answer's three short sentences (reader r54d, item 3): by each query's own ratio, ``counts`` (the fast
-    checker's cells that took 10 % or more less and more time, python-fcl's that took 10 % or more less) of ``total``;
-    why, sampling's largest share of a query with each checker and whether every network call cost more than the fast
-    check; the paper's Table 3's cells that save 10 % or more."""
+    """The answer's three short sentences (reader r54d, item 3; r55d, item 1): by each query's own ratio, ``counts``
+    of ``total``; what skipping sample checks can save, and that the rest runs through the roadmap; Table 3's count."""
     fast, costly, slow = counts
     fast_share, slow_share = (costs.sampling_shares(preset, tables) for preset, _ in RUNS)
-    rows = recorded.table(recorded.ALGORITHM_1, "Checker throughput", tables).values()
-    dearer = sum(recorded.ours(row["learned / exact"]) < 1 for row in rows)  # a network call costs more
-    dear = "a network call costs more than a check" if dearer == len(rows) else f"in {dearer} of {len(rows)} "
-    dear += "scenarios a network call costs more than a check" * (dearer != len(rows))
     return (
         f"By each query's own ratio, our accurate network made the paper's planner take 10 % or more less time in "
         f"{fast or 'none'} of {total} cells with our fast exact checker ({costly or 'none'} took 10 % or more longer), "
-        f"and in {slow or 'none'} of {total} with slow python-fcl. Sampling is the only step it replaces, at most "
-        f"{100 * max(fast_share):.0f} % of a query ({100 * max(slow_share):.0f} % with python-fcl), and with the fast "
-        f"checker {dear}. The paper's Table 3 (mean times) saves 10 % or more in {len(table3_totals()['ten'])} of its "
-        f"{len(table3_totals()['all'])} cells."
+        f"and in {slow or 'none'} of {total} with slow python-fcl. Skipping sample checks, the only step it replaces, "
+        f"can save at most {100 * max(fast_share):.0f} % of a query ({100 * max(slow_share):.0f} % with python-fcl); "
+        "the rest of its effect comes after sampling: the encoding, and the roadmap built from the samples it keeps. "
+        "The paper's Table 3 (mean "
+        f"times) saves 10 % or more in {len(table3_totals()['ten'])} of its {len(table3_totals()['all'])} cells."
     )
 
 
@@ -154,9 +147,8 @@ def sampling_claim(tables: Tables | None = None) -> str:
 
 
 def why(tables: Tables | None = None) -> str:
-    """The answer's *Why* (reader r47d, item 3; r53d, item 3: three sentences, one statistic each): sampling's share
-    of a query with each checker, with the shares by cell and python-fcl's clear savings folded (:func:`shares_fold`),
-    the paper's cells whose total saving exceeds all of their sampling time, and the network's accuracy."""
+    """The answer's *Why* (reader r47d, item 3; r53d, item 3; r55d, items 1-2): what sampling's share caps, the rest
+    through the roadmap (:func:`roadmap`), the shares folded, the paper's savings beyond sampling, the accuracy."""
     shares, slow = (costs.sampling_shares(preset, tables) for preset, _ in RUNS)
     ties = costs.median_counts(RUNS[1][0], tables)[TIES][0]
     rows = recorded.table(recorded.ALGORITHM_1, "Checker throughput", tables).values()
@@ -166,16 +158,50 @@ def why(tables: Tables | None = None) -> str:
     cells = sum(len(k["total_s"]) for k in TIMES.values())
     cheaper = "a network call is the cheaper check" if fcl == len(rows) else f"a network call is cheaper in {fcl}"
     return (
-        "**Why no saving:** prediction replaces only the samples' checks, and with our fast checker sampling is "
-        f"{100 * min(shares):.1f}–{100 * max(shares):.0f} % of a query (mean times without prediction, by cell). "
-        "A network call also costs more than that checker's check ([section 4](#4-is-the-network-a-cheaper-check)), "
-        f"and encoding the workspace comes on top. Against python-fcl {cheaper}, but sampling is only "
-        f"{100 * min(slow):.1f}–{100 * max(slow):.0f} % of a query there, so {ties} of {len(slow)} cells tie.\n\n"
-        f"{shares_fold(tables)}\n\n"
+        "**Why no saving:** skipping the samples' checks, the only step prediction replaces, can save at most "
+        f"sampling's share of a query: {100 * min(shares):.1f}–{100 * max(shares):.0f} % with our fast checker (mean "
+        "times without prediction, by cell). A network call also costs more than that checker's check (measured in "
+        "[section 4](#4-is-the-network-a-cheaper-check) for 2DS and 3DC-7, recorded for all four in the last table of "
+        "section 6's fold), and encoding the workspace comes on top. Against python-fcl "
+        f"{cheaper}, but sampling is only {100 * min(slow):.1f}–{100 * max(slow):.0f} % of a query there, so {ties} "
+        f"of {len(slow)} cells tie.\n\n{roadmap(tables)}\n\n{shares_fold(tables)}\n\n"
         "**Nor can skipped sample checks explain the paper's savings:** in "
         f"{len(over)} of its {cells} cells the total time saved exceeds the whole sampling time without prediction "
         f"(e.g. {checker_scope.NAMES[top[0]]} {top[1]} saves {over[top][0]:.2f} s; its sampling took "
-        f"{over[top][1]:.2f} s).\n\n{accuracy(tables)}"
+        f"{over[top][1]:.2f} s). {not_the_same_ten()}\n\n{accuracy(tables)}"
+    )
+
+
+def roadmap(tables: Tables | None = None) -> str:
+    """Reader r55d, item 1: the rest of a query's change runs through the roadmap, computed: the costly cells whose
+    extra mean time came mostly after sampling (:func:`costs.dear_cells`), python-fcl's savings beyond sampling."""
+    dear = costs.dear_cells(tables)
+    after = sum(c.after_share > 0.5 for c in dear)
+    big = [f"{c} (its median query {100 * a:.0f} % less time; sampling {100 * b:.0f} % of its mean query)"
+           for c, a, b, _ in fcl_clear(tables) if a > b]  # fmt: skip
+    return (
+        "**The rest comes after sampling:** by changing which samples are kept, prediction can change the roadmap "
+        f"built from them, and so the time after sampling (which also holds the encoding). In {after} of the "
+        f'{len(dear)} costly cells that section 6 splits into stages ("Where the extra time went"), most of the '
+        "extra mean time came after sampling."
+        + f" It can save time too: python-fcl's {'; '.join(big)} saved more than all of sampling."
+        * bool(big)
+    )
+
+
+def not_the_same_ten() -> str:
+    """Reader r55d, item 2: the cells whose saving exceeds all of sampling are not the cells saving 10 % or more."""
+    over = {(s, c) for s, c in saved_beyond_sampling()}
+    ten = {(s, c) for s, row in IMPROVEMENT.items() for c, v in row["total"].items() if time_verdict(1 - v) == SAVES}
+    if over == ten:
+        return "They are the same cells as those saving 10 % or more."
+
+    def named(cells: set[tuple[str, str]]) -> str:
+        return " and ".join(sorted(f"{checker_scope.NAMES[s]} {c}" for s, c in cells)) or "none"
+
+    return (
+        f"These are not the {len(ten)} cells that save 10 % or more: {named(over - ten)} are only here, "
+        f"{named(ten - over)} only there."
     )
 
 
@@ -355,43 +381,3 @@ def _by_own(tables: Tables | None = None) -> str:
         f" By each query's own ratio, python-fcl's {', '.join(over)} did save more than all of sampling, beyond that "
         "statistic's noise band (the fold under the answer's *Why*)."
     ) * bool(over)
-
-
-def encoding_line(records: Mapping[str, list[dict]], tables: Tables | None = None) -> str:
-    """Under section 6's cost table (reader r52d, item 2): the encoding, measured in section 5's live 3DC-7 queries,
-    beside each costly cell's growth after sampling (which includes it), and what it leaves unexplained."""
-    encoded = [r.get("encode_s", 0.0) for r in records.get("with", [])]
-    if not encoded or max(encoded) <= 0:
-        return ""
-    ms = 1000 * float(np.median(encoded))
-    grew = {f"{c.scenario} {c.sampler}": 1000 * (c.after[1] - c.after[0]) for c in costs.dear_cells(tables)}
-    here = {n: g for n, g in grew.items() if n.startswith("3DC-7")}
-    said = [
-        f"{n}'s time after sampling grew {g:.1f} ms, "
-        + (
-            "which the encoding alone could cover"
-            if ms >= g
-            else f"of which the encoding is about {100 * ms / g:.0f} %"
-        )
-        for n, g in here.items()
-    ]
-    elsewhere = [f"{n} +{g:.1f} ms" for n, g in grew.items() if n not in here]
-    short = [n for n, g in here.items() if ms < g]  # reader r53d, item 5: named, not "2 of the 2"
-    rest = (
-        f"In {' and '.join(short)} the encoding is smaller than that growth, so something else after sampling grew "
-        "too; these runs do not say what. "
-        if short
-        else ""
-    )
-    return (
-        "**The encoding beside that growth.** The time after sampling includes encoding the workspace for the network. "
-        f"Section 5's live 3DC-7 queries spent {ms:.1f} ms a query on it (median; on this machine, not in the recorded "
-        f"run, so a rough size). {'; '.join(said) or 'No 3DC-7 cell costs that much'}. "
-        + rest
-        + (
-            f"The other scenarios' encoding is not measured here ({', '.join(elsewhere)} after sampling), so these "
-            "runs cannot tell what grew there."
-            if elsewhere
-            else ""
-        )
-    ).strip()
