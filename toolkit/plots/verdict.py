@@ -48,10 +48,10 @@ def verdict_figure(
     in collision, each link box that touches a block and that block are outlined thick (the block dashed) and named
     in the title, numbered as the arrays are: "platform touches block 11 (desk)" (review r30a), or "square overlaps
     block 0 by 0.2" with a 2D link's part inside the block filled yellow (review r31a); a valid one's title
-    gives its clearance where the checker proves one, a lower bound on the gap ("valid; the check proves a gap of at
-    least 0.15 to every block and the boundary (the true gap can be wider)", reader r42a: read as the gap itself;
-    reader r45a: "wall" named the office's blocks too; reader r48a: 0.15 beside a drawn gap of 0.46), the gap itself
-    for the point robot.
+    gives its clearance where the checker proves one, a lower bound on the gap to the blocks ("valid; at least 0.43
+    from every block (a lower bound: the gap can be wider)", reader r42a: read as the gap itself; reader r55a: a
+    bound that counted the floor titled a view from above), that gap drawn as a labelled segment where a view from
+    above shows it, the gap itself for the point robot.
     ``columns`` panels a row (all of them by default; reader r41a: three panels a row were too small to read the
     first check by), the key in a row's empty place or under the panels."""
     robot, workspace = checker.robot, getattr(checker, "workspace", None)
