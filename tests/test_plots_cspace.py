@@ -523,9 +523,10 @@ def test_verdict_figure_titles_each_panel_with_the_checkers_verdict_and_marks_wh
     bounds = exact.clearances(Q, cap=1.0)  # (200,)
     clear = Q[np.argmax(bounds)]
     title = verdict.verdict_figure(exact, clear[None]).axes[0].get_title()
-    said = f"valid; the check proves a gap of at least\n{bounds.max():.2g} to every block and the boundary\n"
-    said += "(the true gap can be wider)"  # reader r48a: "at least 0.15 clear" beside a drawn gap of 0.46
-    assert title == said
+    wide = Workspace(clutter.lower - 1, clutter.upper + 1, clutter.boxes)  # no wall within the cap: blocks alone
+    to_blocks = exact_checker(wide, robot).clearances(clear[None], cap=1.0)[0]
+    assert 0 < bounds.max() <= to_blocks  # reader r55a: the title's bound is to the blocks, not to a floor
+    assert title == f"valid; at least {to_blocks:.2g} from every block\n(a lower bound: the gap can be wider)"
     assert left.get_xlim() == right.get_xlim() and left.get_ylim() == right.get_ylim()  # review r27a: one window
     assert not _patches(left, "touching link") and not _patches(left, "touched block")
     pairs = contact.touching(robot, clutter, hit)
@@ -597,6 +598,14 @@ def test_a_youbot_platform_overlapping_a_block_by_a_little_is_filled_and_enlarge
     (inset,) = hit.child_axes
     assert _patches(inset, "overlap") and inset.get_xlim()[0] < 20.0 < 20.05 < inset.get_xlim()[1]
     assert not clear.child_axes and "An inset under the panel enlarges" in alt_text(fig)
+    (gap,) = [line for line in clear.lines if line.get_gid() == "gap"]  # reader r55a: the gap drawn, labelled
+    assert not [line for line in hit.lines if line.get_gid() == "gap"]
+    x0, x1 = sorted(gap.get_xdata())
+    assert x1 == pytest.approx(20.0) and x0 == pytest.approx(19.75, abs=0.02)  # platform corner -> block face
+    bound = verdict.blocks_bound(exact_checker(world, youbot), q - 0.3 * np.eye(8)[0], world)
+    assert 0 < bound <= 0.25 + 1e-9 and clear.get_title().startswith(f"valid; at least {bound:.2g} from every block")
+    assert [t.get_text() for t in clear.texts if t.get_gid() == "gap label"] == [f"gap ≥ {bound:.2g}"]
+    assert "In configuration 1's panel a labelled segment draws its gap to a block." in alt_text(fig)
     fig.draw_without_rendering()  # reader r50a: inside the panel it read as a second block and robot: under it
     assert inset.get_window_extent().y1 < hit.get_window_extent().y0 and "zoom x" in inset.get_xlabel()
     # reader r42a: unframed, the inset read as one more block and robot in the room: framed heavy. Reader r47a: on a
@@ -615,8 +624,20 @@ def test_a_slice_over_positions_shows_a_pixel_beyond_the_bounds_dark(square_worl
     np.testing.assert_allclose(ax.get_xlim(), (lo - (hi - lo) / 31, hi + (hi - lo) / 31))
     assert ax.get_aspect() == 1.0  # reader r48a: two lengths drawn to one scale (the youBot's 41 x 41 was 1.3x tall)
     assert to_hex(ax.get_facecolor()) == palette.COLORS["occupied"]
-    frame = "A dark frame runs round the slice: there the robot leaves its bounds or the region."
+    frame = "A dark frame runs round the slice: a pixel's width past the robot's bounds."  # r55a: no "leaves"
     assert frame in alt_text(fig)  # reader r54a: the youBot's (x, y) slice's text named the frame, its alt did not
+
+
+def test_a_youbot_slice_names_its_frame_where_the_platform_crosses_the_region_s_boundary():
+    """Reader r55a: the youBot's (x, y) slice never leaves its bounds; its frame, inside them, is the platform
+    crossing the region's boundary (every edge pixel dark at 60 pixels across 41), plus the pixel drawn past them."""
+    youbot = scenarios.get("3do").robot
+    world = Workspace(np.zeros(3), np.array([41.0, 41.0, 6.0]), np.array([[[20.0, 20, 0], [21, 21, 1]]]))
+    q = np.array([10.0, 10.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0])
+    fig = cspace.cspace_slice(exact_checker(world, youbot), q, joints=(0, 1), resolution=60, view=None)
+    frame = "A dark frame runs round the slice: a pixel's width past the robot's bounds, and inside them where it "
+    assert frame + "crosses the region's boundary." in alt_text(fig)
+    assert "leaves its bounds" not in alt_text(fig)
 
 
 def test_a_slice_over_angles_names_no_frame(clutter):

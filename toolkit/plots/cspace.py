@@ -343,11 +343,11 @@ def cspace_slice(
     text = f"Slice of the {robot.name} robot's configuration space over {swept}, the other DoF fixed: "
     text += f"{1 - valid.mean():.0%} in collision (dark). A star marks the fixed configuration, which is "
     text += ("valid." if q_valid[0] else "in collision.") + " Beside it, the robot there, its base a dot." * bool(view)
-    text += " A dark frame runs round the slice: there the robot leaves its bounds or the region." * lengths  # r54a
-    text += " A block drawn across the links that no link touches (above or below them) is a dotted outline" * bool(
-        outlined
-    )
-    text += ", drawn a little inside its edges." * bool(outlined)
+    rim = not np.concatenate([valid[0], valid[-1], valid[:, 0], valid[:, -1]]).any()  # every edge pixel dark (r55a)
+    frame = "a pixel's width past the robot's bounds" + ", and inside them where it crosses the region's boundary" * rim
+    text += f" A dark frame runs round the slice: {frame}." * lengths  # r54a; r55a: in bounds, not "leaves its bounds"
+    dotted = " A block drawn across the links that no link touches (above or below them) is a dotted outline"
+    text += (dotted + ", drawn a little inside its edges.") * bool(outlined)
     text += " A block a link touches is outlined dashed." * bool(dashed)
     star_at = Part(
         "the star's configuration",

@@ -14,10 +14,12 @@ from matplotlib.patches import Patch, Polygon, Rectangle
 
 from toolkit.geometry.box_world import is_point_robot
 from toolkit.geometry.checker import CollisionChecker
+from toolkit.geometry.collision import exact_checker
 from toolkit.geometry.robots import BoxRobot
 from toolkit.geometry.workspace import Workspace
 from toolkit.plots.alt import describe
 from toolkit.plots.boxes import box_corners, outline
+from toolkit.plots.closest_pair import closest_pair
 from toolkit.plots.contact import clip_to_box, contacts, name_blocks, nearby_blocks
 from toolkit.plots.palette import COLORS, PAGE_WIDTH
 from toolkit.plots.robot_drawing import (
@@ -46,10 +48,10 @@ def verdict_figure(
     in collision, each link box that touches a block and that block are outlined thick (the block dashed) and named
     in the title, numbered as the arrays are: "platform touches block 11 (desk)" (review r30a), or "square overlaps
     block 0 by 0.2" with a 2D link's part inside the block filled yellow (review r31a); a valid one's title
-    gives its clearance where the checker proves one, a lower bound on the gap ("valid; the check proves a gap of at
-    least 0.15 to every block and the boundary (the true gap can be wider)", reader r42a: read as the gap itself;
-    reader r45a: "wall" named the office's blocks too; reader r48a: 0.15 beside a drawn gap of 0.46), the gap itself
-    for the point robot.
+    gives its clearance where the checker proves one, a lower bound on the gap to the blocks ("valid; at least 0.43
+    from every block (a lower bound: the gap can be wider)", reader r42a: read as the gap itself; reader r55a: a
+    bound that counted the floor titled a view from above), that gap drawn as a labelled segment where a view from
+    above shows it, the gap itself for the point robot.
     ``columns`` panels a row (all of them by default; reader r41a: three panels a row were too small to read the
     first check by), the key in a row's empty place or under the panels."""
     robot, workspace = checker.robot, getattr(checker, "workspace", None)
@@ -75,8 +77,7 @@ def verdict_figure(
         fills = _outline_touching(ax, robot, workspace, q, found, plane)
         _zoom_on_small_fills(ax, fills, robot, q, plane)
         mark_arm(ax, robot, q, view)
-        named = [f"{_part(robot, link)} {_met(workspace, block, depth)}" for link, block, depth in found]
-        verdict = _valid_title(checker, q) if ok else "in collision:\n" + ("; ".join(named) or "leaves the region")
+        verdict = _valid_panel(ax, checker, q, workspace, view) if ok else _collision_title(robot, workspace, found)
         said.append(verdict.replace("\n", " "))
         ax.set_title(verdict, fontsize=10 if columns < 3 else 9, wrap=True)
         ax.tick_params(labelsize=8)
@@ -88,6 +89,7 @@ def verdict_figure(
     marked = " Each link that touches a block is outlined thick, and the block it touches dashed." * (not all(valid))
     marked += f" A key {'in the last row' if len(spare) else 'under the panels'} names {', '.join(named)}."
     marked += " The part of the robot inside a block is filled yellow." * filled  # reader r50a: was "light"
+    marked += _gap_sentence(axes)
     zoomed = any(getattr(ax, "zoomed", False) for ax in axes)
     marked += " An inset under the panel enlarges a fill too small to see at the panel's scale." * zoomed
     text = f"The {robot.name} robot at {len(Q)} configurations side by side, seen in the {view} plane with the blocks "
@@ -131,19 +133,69 @@ def _key(fig: Figure, axes, valid: np.ndarray, filled: bool, place=None) -> list
     return list(handles)
 
 
-def _valid_title(checker: CollisionChecker, q: np.ndarray) -> str:
+def _valid_panel(ax, checker: CollisionChecker, q: np.ndarray, ws: Workspace, view: str) -> str:
+    """A valid panel's gap drawn (:func:`_mark_gap`) where it can be, and its title (:func:`_valid_title`)."""
+    _mark_gap(ax, checker, ws, q, view)
+    return _valid_title(checker, q, ws)
+
+
+def _gap_sentence(axes) -> str:
+    """The alt text's sentence on each panel whose gap :func:`_mark_gap` drew, numbered from 1."""
+    gaps = [i + 1 for i, ax in enumerate(axes) if any(line.get_gid() == "gap" for line in ax.lines)]
+    return "".join(f" In configuration {i}'s panel a labelled segment draws its gap to a block." for i in gaps)
+
+
+def _valid_title(checker: CollisionChecker, q: np.ndarray, ws: Workspace) -> str:
     """A valid panel's title, with the checker's clearance where it proves one: a hairline gap is invisible at the
     page's width, and a panel titled "valid" that looks touching needs its gap said (review r29a); called a lower bound,
     since the true gap can be wider (reader r42a), except for the point robot, whose square never turns: the distance
-    between axis-aligned boxes that bounds it is its gap (reader r43a: the first check's 0.2 is exact)."""
+    between axis-aligned boxes that bounds it is its gap (reader r43a: the first check's 0.2 is exact). A turning
+    robot's title gives the bound to the blocks alone, the gap a view can draw (reader r55a: its 0.15 was the arm's
+    height above the floor, the platform 0.02 above it, beside a drawn gap of 0.43 to a shelf)."""
     cap = 1.0
     gap = float(checker.clearances(q[None], cap=cap)[0])
     if gap <= 0:
         return "valid"
     if is_point_robot(checker.robot) and gap < cap:
         return f"valid: {gap:.2g} clear of the nearest\nblock or the region's boundary"
-    proven = f"valid; the check proves a gap of at least\n{gap:.2g} to every block and the boundary\n"
-    return proven + "(the true gap can be wider)"  # reader r48a: 0.15 beside a drawn gap of 0.46
+    bound = blocks_bound(checker, q, ws, cap)
+    return f"valid; at least {bound:.2g} from every block\n(a lower bound: the gap can be wider)"
+
+
+def blocks_bound(checker: CollisionChecker, q: np.ndarray, ws: Workspace, cap: float = 1.0) -> float:
+    """The exact checker's lower bound on the gap from the robot at ``q (dof,)`` to the blocks alone, up to ``cap``:
+    its clearance in the region made ``cap`` wider on every side, so that no wall or floor is nearer than a block."""
+    wide = Workspace(ws.lower - cap, ws.upper + cap, ws.boxes)
+    return float(exact_checker(wide, checker.robot).clearances(q[None], cap=cap)[0])
+
+
+def _mark_gap(ax, checker: CollisionChecker, ws: Workspace, q: np.ndarray, view: str) -> bool:
+    """In a valid panel from above, a turning 3D robot's gap to the nearest block drawn as a labelled ink segment
+    between the closest points found (reader r55a: "the gap drawn beside it" had no mark), if the gap runs mostly
+    in the view's plane and is under 1; whether one was drawn."""
+    robot = checker.robot
+    if robot.dim != 3 or view != "xy" or is_point_robot(robot) or not len(ws.boxes):
+        return False
+    start, end, length = closest_pair(robot, q, ws.boxes)
+    flat = np.linalg.norm((end - start)[:2])
+    if not 0 < length < 1.0 or flat < 0.9 * length:
+        return False
+    ends = np.stack([start[:2], end[:2]])  # (2, 2)
+    ax.plot(*ends.T, color=COLORS["ink"], linewidth=1.8, marker="|", markersize=9, zorder=6, gid="gap")
+    label = f"gap ≥ {blocks_bound(checker, q, ws):.2g}"
+    box = dict(boxstyle="round,pad=0.15", facecolor=COLORS["free"], edgecolor=COLORS["ink"], linewidth=0.6)
+    ax.annotate(
+        label,
+        ends.mean(axis=0),
+        xytext=(-8, -12),  # left of the segment and under it, off the robot drawn right of the block here
+        textcoords="offset points",
+        ha="right",
+        fontsize=8,
+        bbox=box,
+        zorder=7,
+        gid="gap label",
+    )
+    return True
 
 
 def _outline_touching(
@@ -217,6 +269,12 @@ def mark_arm(ax, robot: BoxRobot, q: np.ndarray, view: str) -> None:
     box = dict(boxstyle="round,pad=0.15", facecolor=COLORS["free"], edgecolor=COLORS["ink"], linewidth=0.6)
     arrow = dict(arrowstyle="-", color=COLORS["ink"], linewidth=0.8)
     ax.annotate("arm", at, xytext=(14, 14), textcoords="offset points", fontsize=8, bbox=box, arrowprops=arrow)
+
+
+def _collision_title(robot: BoxRobot, workspace: Workspace, found) -> str:
+    """An in-collision panel's title: each (link, block, depth) of ``found`` named, or the region left."""
+    named = [f"{_part(robot, link)} {_met(workspace, block, depth)}" for link, block, depth in found]
+    return "in collision:\n" + ("; ".join(named) or "leaves the region")
 
 
 def _met(workspace: Workspace, block: int, depth: float) -> str:
