@@ -214,6 +214,7 @@ def test_section_5s_held_out_check_is_a_fold_around_its_line():
     assert fold.startswith("<details><summary>Why stopping earlier does not help: how CAE-preset's 300 steps")
     assert fold.endswith("</details>") and f"\n\n{line}\n\n" in fold  # the line a paragraph of its own, inside
     assert "the 500 new grids, the two lengths even swap places" in fold and "all 30 grids" in fold
+    assert "scores higher, probably because it has learned less" in fold  # reader r55b: a reading, not measured
     assert f"]({chapter02.FIDELITY_5})" in fold and chapter02.FIDELITY_5.startswith("../docs/fidelity.md#5-")
 
 

@@ -203,7 +203,7 @@ def held_out_fold(verdict: str, n_seen: int, n_new: int) -> str:
         "Without looking at any test grid: `toolkit tune` trained on the first 24 of the 30 training grids and scored "
         f"the last 6 ([docs/fidelity.md §5]({FIDELITY_5})). The code just above repeats that check for "
         f"CAE-preset's and CAE-long's lengths (300 and 1,500 steps at full size):\n\n{verdict}\n\n"
-        "On the held-out grids the shorter training scores higher only because it has learned less, so it stays "
+        "On the held-out grids the shorter training scores higher, probably because it has learned less, so it stays "
         'nearer to answering "all free", and neither length beats "all free" there. The check picked the least bad '
         f"length, not one whose code carries over to new grids. Trained on all {n_seen} grids and scored on the "
         f"{n_new} new grids, the two lengths even swap places: CAE-preset (300 steps) is below CAE-long (1,500) in "
