@@ -747,8 +747,8 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
         "**Many of the paper's savings are bigger than skipping checks allows.** Skipping the samples' exact checks "
         "can save at most the time the whole sampling stage took. A saving beyond that came from elsewhere in the "
         f"query: another roadmap, with other edges to check. In {len(over)} of its 16 cells, the paper's mean times "
-        "save more than the whole sampling stage took. That stage's time is its §V's \"average time to validate "
-        'samples". '  # reader r52e, home 4: which of the paper's numbers is "the whole sampling stage"
+        "save more than the whole sampling stage took. In our reading, that stage's time is its §V's \"average time "
+        'to validate samples". '  # r52e, home 4; r55e, home C7: our reading, marked
         '<details markdown="1"><summary>Savings bigger than the whole sampling stage, in the paper</summary> '
         "The whole sampling stage is a looser limit than sampling's share times its cut (the fold \"Why a whole "
         "query rarely saves: the limit\"). The paper's largest gap "
