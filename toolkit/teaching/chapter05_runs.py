@@ -352,6 +352,6 @@ def trainings(threshold: float) -> str:
         "row at the end |\n"
         f"| **{mine}** (`trained_models`, cached) | {threshold:.2f} | §5's views, §6–7's lazy-PRM path, its accuracy "
         "row at the end |\n"
-        f"| **{lazy}** ({name('strong').split(', threshold')[0]}) | {threshold_of('strong'):.2f} | the closing "
-        "fold: the lazy PRM timed |"
+        f"| **{lazy}** ({name('strong').split(', threshold')[0]}, which calls it the *lazy-PRM network*) | "
+        f"{threshold_of('strong'):.2f} | the closing fold: the lazy PRM timed |"
     )
