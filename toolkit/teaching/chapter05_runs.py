@@ -350,8 +350,8 @@ def trainings(threshold: float) -> str:
         "| training | threshold | where the chapter uses it |\n| --- | ---: | --- |\n"
         f"| **{timed}** ({name(at).split(', threshold')[0]}) | {threshold_of(at):.2f} | the answer, its accuracy "
         "row at the end |\n"
-        f"| **{mine}** (`trained_models`, cached) | {threshold:.2f} | §5's views, §6–7's path, its accuracy row at "
-        "the end |\n"
-        f"| **{lazy}** ({name('strong').split(', threshold')[0]}) | {threshold_of('strong'):.2f} | the closing "
-        "fold: the lazy PRM timed |"
+        f"| **{mine}** (`trained_models`, cached) | {threshold:.2f} | §5's views, §6–7's lazy-PRM path, its accuracy "
+        "row at the end |\n"
+        f"| **{lazy}** ({name('strong').split(', threshold')[0]}, which calls it the *lazy-PRM network*) | "
+        f"{threshold_of('strong'):.2f} | the closing fold: the lazy PRM timed |"
     )
