@@ -635,8 +635,8 @@ def test_a_youbot_slice_names_its_frame_where_the_platform_crosses_the_region_s_
     world = Workspace(np.zeros(3), np.array([41.0, 41.0, 6.0]), np.array([[[20.0, 20, 0], [21, 21, 1]]]))
     q = np.array([10.0, 10.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0])
     fig = cspace.cspace_slice(exact_checker(world, youbot), q, joints=(0, 1), resolution=60, view=None)
-    frame = "A dark frame runs round the slice: a pixel's width past the robot's bounds, and inside them where it "
-    assert frame + "crosses the region's boundary." in alt_text(fig)
+    frame = "A dark frame runs round the slice: the robot must stay inside the region's boundary, and a pixel's "
+    assert frame + "width past the robot's bounds is drawn dark too." in alt_text(fig)  # reader r56a: as the text says
     assert "leaves its bounds" not in alt_text(fig)
 
 

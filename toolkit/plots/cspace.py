@@ -344,7 +344,8 @@ def cspace_slice(
     text += f"{1 - valid.mean():.0%} in collision (dark). A star marks the fixed configuration, which is "
     text += ("valid." if q_valid[0] else "in collision.") + " Beside it, the robot there, its base a dot." * bool(view)
     rim = not np.concatenate([valid[0], valid[-1], valid[:, 0], valid[:, -1]]).any()  # every edge pixel dark (r55a)
-    frame = "a pixel's width past the robot's bounds" + ", and inside them where it crosses the region's boundary" * rim
+    past = "a pixel's width past the robot's bounds"  # r56a: said as chapter 01's text says it
+    frame = f"the robot must stay inside the region's boundary, and {past} is drawn dark too" if rim else past
     text += f" A dark frame runs round the slice: {frame}." * lengths  # r54a; r55a: in bounds, not "leaves its bounds"
     dotted = " A block drawn across the links that no link touches (above or below them) is a dotted outline"
     text += (dotted + ", drawn a little inside its edges.") * bool(outlined)
