@@ -221,8 +221,8 @@ def test_chapter04_tables_name_every_sampler_and_each_failure():
     assert "4.5 ms a query against 4.0 ms, 10 % or more longer: " in chapter04.roadmap_line(modes)
     modes["with"] = [dict(records["without"][0], nodes=9, connection_s=0.00402)]  # 38.7 against 38.5: a tie
     assert (
-        "4.0 ms a query against 4.0 ms, about the same (within our 10 % tie band): here the roadmap changed too "
-        "little" in chapter04.roadmap_line(modes)
+        "4.0 ms a query against 4.0 ms, about the same (within our 10 % tie band): no sign here that the roadmap it "
+        "left moved this time." in chapter04.roadmap_line(modes)  # reader r56d, item 4: a tie credits no roadmap
     )
     assert " more" not in chapter04.roadmap_line(modes).split("nodes (")[1]
 

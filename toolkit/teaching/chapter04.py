@@ -187,7 +187,7 @@ def roadmap_line(records: Mapping[str, list[dict]]) -> str:
     fewer = "fewer" if nodes["with"] < nodes["without"] else "more" if nodes["with"] > nodes["without"] else "as many"
     verdict = time_verdict(float(ms["with"]) / max(float(ms["without"]), 1e-9))
     read = {
-        TIES: "about the same (within our 10 % tie band): here the roadmap changed too little to move this time",
+        TIES: "about the same (within our 10 % tie band): no sign here that the roadmap it left moved this time",
         SAVES: "10 % or more less: here the roadmap it left took less time to connect",
         COSTS: "10 % or more longer: here the roadmap it left took more time to connect",
     }[verdict]

@@ -194,7 +194,7 @@ def per_point_sentence(per_point: Mapping[str, float], tie: float = TIE) -> str:
         "time over its median count)"
     )
     if (moved := speed_moved(per_point, tie)) is None:
-        return f"{said}: the same cost, as it should be, since the same exact checker checks both modes' edges."
+        return f"{said}: within our 10 % tie band, as expected, since one exact checker checks both modes' edges."
     return (
         f"{said}: {moved:.2f} times as much with prediction. The modes ran in turns, so a steady difference "
         "is not the machine's: the stage does more than check points (it finds each node's nearest neighbours and "
