@@ -490,7 +490,8 @@ def test_the_index_table_counts_the_recorded_cells():
     paper_saves = [v for row in IMPROVEMENT.values() for v in row["total"].values() if change(1 - v) == "less time"]
     alike = [v for v in paper_saves if inside(1 - v, band)]  # Table 3's savings our means' band would not tell apart
     said = (  # reader r44e, home 4: the by-means sentence, in short sentences, with the new band
-        "**By means, none of our savings is beyond timing noise.** A ratio of means has a much wider noise band (the "
+        "**By means, none of our Algorithm 1 savings is beyond timing noise.** A ratio of means has a much wider noise "
+        "band (the "
         "key under Figure 1 gives it). It divides two sets of 100 queries timed apart, and a few "
         f"slow queries weigh on a mean. All {len(saves)} of the compiled checker's ratios of means at 0.90 or less lie "
         f"inside it, and both of python-fcl's. Of the compiled checker's {len(losses)} at 1.10 or more, {len(beyond)} "
