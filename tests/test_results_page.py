@@ -1376,7 +1376,8 @@ def test_reader_r56f_contradictions_are_gone():
     )
     stars = results_figures.stars_below(TABLES)
     assert stars.startswith(
-        "By means the reddish-purple stars save 10 % or more in 3 cells (2DS BT 0.87, 3DC-9 OB 0.72, 3DO BS 0.86), "
+        "By means the reddish-purple stars (the `strong` network, our compiled checker) save 10 % or more in 3 cells "
+        "(2DS BT 0.87, 3DC-9 OB 0.72, 3DO BS 0.86), "
         "where by each query's own ratio the same run saved time in 0 of 16 (these 3: 1.10, 1.24, 0.99): all 3 lie "
         "inside the noise band of a ratio of means, 0.52–1.48"
     )

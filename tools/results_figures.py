@@ -395,7 +395,8 @@ def stars_below(tables: Tables) -> str:
     named = ", ".join(f"{NAMES.get(s, s)} {sampler} {means[(s, sampler)]:.2f}" for s, sampler in below)
     owns = ", ".join(f"{own[s][sampler]:.2f}" for s, sampler in below)
     said = (
-        f"By means the reddish-purple stars save 10 % or more in {len(below)} cells ({named}), where by each query's "
+        f"By means the reddish-purple stars (the `strong` network, our compiled checker) save 10 % or more in "
+        f"{len(below)} cells ({named}), where by each query's "
         f"own ratio the same run saved time in {saved} of {len(means)} (these {len(below)}: {owns}): "
         + (
             f"{'all ' + str(len(below)) + ' lie' if len(below) > 1 else 'it lies'} inside the noise band of a ratio "
