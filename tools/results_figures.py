@@ -361,6 +361,63 @@ def means_not_verdict(tables: Tables) -> str:
     )
 
 
+def spread_without(tables: Tables, key: str) -> dict[tuple[str, str], tuple[float, float]]:
+    """``{(scenario, sampler): (mean, std)}`` of a whole query's time without prediction, ``key``'s section's
+    "Times behind Table 3" (ours, seconds)."""
+    times = next(t for heading, t in tables[key].items() if "Times behind Table 3" in heading)
+    column = times["columns"].index("total without")
+    found = {}
+    for row in times["rows"]:
+        mean, std = (float(v) for v in row[column].split("/")[0].replace("*", "").split("±"))
+        found[(row[0], row[1])] = (mean, std)
+    return found
+
+
+def stars_below(tables: Tables) -> str:
+    """Reader r56f, item 4: under Figure 2, why the `strong` network's compiled-checker cells that save 10 % or more
+    by means do not contradict the verdict by each query's own ratio: the means band holds them, and a mean weighs a
+    few long queries (the cells whose queries without prediction spread wider than their mean); empty where none."""
+    key = recorded.ALGORITHM_1
+    own = recorded.query_ratios(key, tables)
+    means = {
+        (s, sampler): 1 - saved
+        for s in own
+        for sampler, saved in recorded.improvements(key, s, recorded=tables).items()
+    }
+    below = [cell for cell, r in means.items() if change(r) == "less time"]
+    if not below:
+        return ""
+    band = noise(tables).means
+    saved = sum(change(r) == "less time" for by in own.values() for r in by.values())
+    inside = all(costs.inside(means[cell], band) for cell in below)
+    spread = spread_without(tables, key)
+    wide = [cell for cell in below if spread[cell][1] > spread[cell][0]]
+    named = ", ".join(f"{NAMES.get(s, s)} {sampler} {means[(s, sampler)]:.2f}" for s, sampler in below)
+    owns = ", ".join(f"{own[s][sampler]:.2f}" for s, sampler in below)
+    said = (
+        f"By means the reddish-purple stars (the `strong` network, our compiled checker) save 10 % or more in "
+        f"{len(below)} cells ({named}), where by each query's "
+        f"own ratio the same run saved time in {saved} of {len(means)} (these {len(below)}: {owns}): "
+        + (
+            f"{'all ' + str(len(below)) + ' lie' if len(below) > 1 else 'it lies'} inside the noise band of a ratio "
+            f"of means, {band[0]:.2f}–{band[1]:.2f}, which is wide "
+            if inside
+            else "a ratio of means strays from each query's own ratio "
+        )
+        + "because a mean counts a few long queries' time in full"
+    )
+    if wide:
+        said += (
+            f" (without prediction, the queries of {len(wide)} of them spread wider than their mean: "
+            + ", ".join(
+                f"{NAMES.get(s, s)} {sampler} {spread[(s, sampler)][0]:.3g} ± {spread[(s, sampler)][1]:.2g} s"
+                for s, sampler in wide
+            )
+            + ", mean ± standard deviation)"
+        )
+    return said + "."
+
+
 def sampling_takeaway(counts: dict[str, list[str]]) -> str:
     """Figure 3's one line on what it shows (reader r37f, item 7): how many cells the `strong` network's sampling got
     shorter with python-fcl, and longer with our compiled checker, by the 10 % rule."""
@@ -403,4 +460,5 @@ def figure_markdown(text: str, kind: str = "total") -> str:
     )
     tables = parse(text)
     lead = LEADS[kind] + (means_not_verdict(tables) if kind == "total" else "")
-    return f"{lead}\n\n{shown}\n\n{said}\n\n{head}\n" + "\n".join(rows)
+    stars = f"{stars_below(tables)}\n\n" if kind == "total" and stars_below(tables) else ""
+    return f"{lead}\n\n{shown}\n\n{stars}{said}\n\n{head}\n" + "\n".join(rows)

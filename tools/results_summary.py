@@ -297,6 +297,10 @@ def verdict_table(tables: Tables) -> str:
     papers_sampled = counted([change(1 - s) for s in facts.papers_sampling])[0]
     own = {name: counted([change(m) for _, m in own_medians(tables, key)])[0] for name, key in OWN_RUNS.items()}
     papers = counted([change(1 - s) for s in facts.papers_totals])[0]
+    means = {  # reader r56f, item 3: ours by means too, as the paper's count in the first column
+        "compiled": counted([change(1 - s) for s in recorded_totals(tables)])[0],
+        "python-fcl": counted([change(1 - s) for s in facts.totals])[0],
+    }
     cells = len(facts.papers_totals)
     rows = (  # reader r55f, item 3: one statistic per cell; the paper's by-means counts in the first column
         ("Table 1, the CAE", cae_said, "`paper` preset (the paper's recipe); no planner"),
@@ -310,8 +314,9 @@ def verdict_table(tables: Tables) -> str:
         ),
         (
             f"Table 3, total time (the paper: {papers} of {cells} cells save 10 % or more, by means)",
-            f"no: by each query's own ratio, {own['compiled']} of {cells} cells faster with our compiled checker, "
-            f"{own['python-fcl']} with python-fcl",
+            f"no: by means, {means['compiled']} of {cells} cells save 10 % or more with our compiled checker, "
+            f"{means['python-fcl']} with python-fcl; by each query's own ratio, {own['compiled']} of {cells} cells "
+            f"faster with our compiled checker, {own['python-fcl']} with python-fcl",
             "`strong` network inside Algorithm 1; each checker on both sides",
         ),
     )
@@ -397,6 +402,15 @@ def recorded_sampling(tables: Tables) -> list[float]:
         saved
         for scenario in recorded.table(recorded.ALGORITHM_1, "time improvement", tables)
         for saved in recorded.improvements(recorded.ALGORITHM_1, scenario, "sampling", recorded=tables).values()
+    ]
+
+
+def recorded_totals(tables: Tables) -> list[float]:
+    """Table 3's total-time improvements of the `strong` network inside Algorithm 1, our compiled checker."""
+    return [
+        saved
+        for scenario in recorded.table(recorded.ALGORITHM_1, "time improvement", tables)
+        for saved in recorded.improvements(recorded.ALGORITHM_1, scenario, "total", recorded=tables).values()
     ]
 
 
