@@ -1040,9 +1040,9 @@ FAST_BULLET = re.compile(  # chapter04.answer: three sentences (r54d item 3), th
     r"10 % or more less time in (?P<fast_said>none|\d+) of (?P<total>\d+) cells with our fast exact checker "
     r"\((?P<longer>none|\d+) took 10 % or more longer\), and in (?P<slow_said>none|\d+) of \d+ with slow python-fcl\. "
     r"Skipping sample checks, the only step it replaces, can save at most (?P<share>\d+) % of a query "  # r55d, 1
-    r"\((?P<high>\d+) % with python-fcl\); the rest of its effect comes after sampling: the encoding, which we "
-    r"measured, and possibly a different roadmap from the samples it keeps, which these runs can neither show nor "
-    r"rule out\. The paper's Table 3 \(mean times\) saves 10 % or more in (?P<papers>\d+) of "
+    r"\((?P<high>\d+) % with python-fcl\); the rest of its effect comes after sampling: the encoding \(measured "
+    r"live in 3DC-7, section 5\), and possibly a different roadmap from the samples it keeps, which these runs can "
+    r"neither show nor rule out\. The paper's Table 3 \(mean times\) saves 10 % or more in (?P<papers>\d+) of "
     r"its \d+ cells\.\s"
     r"\| (?P=total) scenario–sampler cells, by the median of each query's own time ratio \(with ÷ without\) "
     r"\| faster \| tie \| slower \|\s\| --- \| --- \| --- \| --- \|\s"
