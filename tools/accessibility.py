@@ -15,6 +15,7 @@ import collections
 import functools
 import http.server
 import json
+import os
 import sys
 import threading
 from collections.abc import Iterator
@@ -37,13 +38,19 @@ def pages(site: Path) -> list[str]:
     return sorted(str(p.relative_to(site)) for p in site.rglob("*.html") if p.name != "404.html")
 
 
-def audit_page(page, script: str) -> list[dict]:
-    """axe's WCAG 2.0/2.1/2.2 A and AA violations on the loaded ``page``, its frames (the viewers) included: one dict
-    per rule with ``id``, ``impact`` and ``nodes`` (each with ``target`` and ``html``)."""
+def start_audit(page, script: str) -> None:
+    """Start axe's WCAG 2.0/2.1/2.2 A and AA audit of the loaded ``page``, its frames (the viewers) included, without
+    waiting for it: audits of several pages then run at once, each in its own renderer process."""
     for frame in page.frames:  # axe reaches a frame only where it runs too
         frame.evaluate(script)
     options = {"runOnly": {"type": "tag", "values": WCAG_AA}, "resultTypes": ["violations"], "iframes": True}
-    result = page.evaluate("options => axe.run(document, options)", options)
+    page.evaluate("options => { window.__axeAudit = axe.run(document, options); }", options)
+
+
+def finish_audit(page) -> list[dict]:
+    """The violations of the audit :func:`start_audit` began on ``page``: one dict per rule with ``id``, ``impact``
+    and ``nodes`` (each with ``target`` and ``html``)."""
+    result = page.evaluate("() => window.__axeAudit")
     return [
         {
             "id": v["id"],
@@ -54,6 +61,12 @@ def audit_page(page, script: str) -> list[dict]:
     ]
 
 
+def audit_page(page, script: str) -> list[dict]:
+    """axe's violations on the loaded ``page`` (:func:`start_audit`, then :func:`finish_audit`)."""
+    start_audit(page, script)
+    return finish_audit(page)
+
+
 @contextmanager
 def served(folder: Path) -> Iterator[str]:
     """``folder`` on a free port of 127.0.0.1 (the base URL); the port is free again afterwards."""
@@ -62,7 +75,12 @@ def served(folder: Path) -> Iterator[str]:
         def log_message(self, format, *args):
             pass
 
-    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), functools.partial(Quiet, directory=str(folder)))
+    class Server(http.server.ThreadingHTTPServer):
+        def handle_error(self, request, client_address):
+            if not isinstance(sys.exc_info()[1], ConnectionError):  # a page closed before its last file came
+                super().handle_error(request, client_address)
+
+    server = Server(("127.0.0.1", 0), functools.partial(Quiet, directory=str(folder)))
     thread = threading.Thread(target=server.serve_forever, daemon=True)
     thread.start()
     try:
@@ -73,16 +91,23 @@ def served(folder: Path) -> Iterator[str]:
         thread.join()
 
 
-def audit_site(browser, base: str, paths: list[str]) -> dict[str, list[dict]]:
-    """Each page's violations (:func:`audit_page`), by path; ``browser``: a Playwright Chromium."""
+def audit_site(browser, base: str, paths: list[str], at_once: int | None = None) -> dict[str, list[dict]]:
+    """Each page's violations (:func:`finish_audit`), by path; ``browser``: a Playwright Chromium. ``at_once`` pages
+    are audited together (default: one per core this process may use), since axe's run is most of the time."""
     script, found = axe_script(), {}
-    for path in paths:
-        page = browser.new_page(viewport={"width": 1280, "height": 900})
+    at_once = at_once or len(os.sched_getaffinity(0))
+    for first in range(0, len(paths), at_once):
+        batch = paths[first : first + at_once]
+        opened = [browser.new_page(viewport={"width": 1280, "height": 900}) for _ in batch]
         try:
-            page.goto(base + path, wait_until="load")
-            found[path] = audit_page(page, script)
+            for page, path in zip(opened, batch):
+                page.goto(base + path, wait_until="load")
+                start_audit(page, script)
+            for page, path in zip(opened, batch):
+                found[path] = finish_audit(page)
         finally:
-            page.close()
+            for page in opened:
+                page.close()
     return found
 
 
