@@ -131,6 +131,10 @@ def test_workspace_figure_3d_draws_each_block_at_its_corners(recorded_polys):
     x, _, z = fig.axes[0].get_box_aspect()  # reader r19b: drawn to scale, the office's 6 high could not be read
     assert z / x == pytest.approx(3 * 6 / 41) and fig.axes[0].get_zlabel() == "z (vertical ×3)"
     assert "heights stretched 3 times against widths" in alt_text(fig)
+    # reader r27a: no y tick at the corner where the x and y axes meet; reader r57a: nor x's "40", which stood there
+    # alone above the legend
+    assert [t.get_text() for t in fig.axes[0].get_xticklabels()] == ["0", "10", "20", "30"]
+    assert [t.get_text() for t in fig.axes[0].get_yticklabels()] == ["10", "20", "30", "40"]
     clutter = cspace.workspace_figure(scenarios.get("3dc7").make_workspace(np.random.default_rng(1)))
     assert np.ptp(clutter.axes[0].get_box_aspect()) == pytest.approx(0) and clutter.axes[0].get_zlabel() == "z"
     assert clutter.get_figwidth() < 0.7 * fig.get_figwidth()  # reader r36a: the clutter's cubes filled a screen
@@ -626,6 +630,8 @@ def test_a_slice_over_positions_shows_a_pixel_beyond_the_bounds_dark(square_worl
     assert to_hex(ax.get_facecolor()) == palette.COLORS["occupied"]
     frame = "A dark frame runs round the slice: a pixel's width past the robot's bounds."  # r55a: no "leaves"
     assert frame in alt_text(fig)  # reader r54a: the youBot's (x, y) slice's text named the frame, its alt did not
+    # reader r57a: the frame's outer pixel is past the bounds, outside X: said so, and left out of the title's share
+    assert "That outer pixel lies outside the bounds: never checked, not in the share in collision." in alt_text(fig)
 
 
 def test_a_youbot_slice_names_its_frame_where_the_platform_crosses_the_region_s_boundary():
@@ -762,6 +768,28 @@ def test_a_slices_robot_panel_dashes_the_block_a_link_touches_and_keys_each_way_
     moved = _one_link_slice(boxes, x=4.0)  # a unit back: nothing touched
     assert not _patches(moved.axes[1], "touched block")
     assert "dashed: a link touches it" not in [t.get_text() for t in moved.axes[1].get_legend().get_texts()]
+
+
+def test_the_chapters_joint_slice_tips_its_last_link_up_at_positive_joint2_its_gamma_near_pi():
+    """Reader r57a: section 2's q9 tips the last link up at negative joint2, yet chapter 01's joint2 x joint3 slice
+    reaches the cube above the base at positive joint2. The chapter says why: the star's gamma, near pi, has rolled
+    the chain almost upside down, which turns the joint's sense round."""
+    chain9 = scenarios.get("3dc9").robot
+    checker = exact_checker(scenarios.get("3dc9").make_workspace(np.random.default_rng(0)), chain9)
+    q = near_blocks.configuration_near_blocks(checker, np.random.default_rng(0))
+    assert abs(q[chain9.dof_names.index("gamma")]) > 0.9 * np.pi
+
+    def last_link_height(config, joint2: float) -> float:
+        config = np.array(config, dtype=float)
+        config[chain9.dof_names.index("joint2")] = joint2
+        return float(chain9.link_boxes(config)[0][0, -1, 2])
+
+    assert last_link_height(q, 1.0) > last_link_height(q, 0.0) > last_link_height(q, -1.0)  # up at positive joint2
+    q9 = [5.0, 5.0, 5.0, 0.3, 0.2, 0.0, 1.0, -1.0, 0.8]  # section 2's, gamma 0
+    assert last_link_height(q9, -1.0) > last_link_height(q9, 0.0) > last_link_height(q9, 1.0)  # up at negative
+    values, _, Q = slices.slice_configs(chain9, q, (7, 8), resolution=12)
+    dark = ~checker.are_valid(Q.reshape(-1, chain9.dof)).reshape(12, 12)  # (joint2, joint3)
+    assert dark.any() and values[dark.any(axis=1)].min() > 0  # every dark pixel at positive joint2
 
 
 def test_slice_hits_names_the_block_the_chapters_joint_slice_reaches_and_counts_the_boundary_apart():

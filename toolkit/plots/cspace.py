@@ -103,11 +103,8 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
         ax = fig.subplots()
         for (lo, hi), color, hatch in zip(workspace.boxes, box_colors, box_hatches):
             ax.add_patch(Rectangle(lo, *(hi - lo), facecolor=color, edgecolor=COLORS["ink"], hatch=hatch, gid="block"))
-        ax.set_xlim(workspace.lower[0], workspace.upper[0])
-        ax.set_ylim(workspace.lower[1], workspace.upper[1])
-        ax.set_aspect("equal")
-        ax.set_xlabel("x")
-        ax.set_ylabel("y")
+        ax.set(xlim=(workspace.lower[0], workspace.upper[0]), ylim=(workspace.lower[1], workspace.upper[1]))
+        ax.set(aspect="equal", xlabel="x", ylabel="y")
     else:
         extent = workspace.upper - workspace.lower  # (3,)
         stretch = max(1, int(np.ceil(max(extent[:2]) / (3 * extent[2]))))  # r19b: the office's heights unreadable
@@ -134,6 +131,8 @@ def workspace_figure(workspace: Workspace, title: str | None = None) -> Figure:
             ax.view_init(elev=55, azim=-60)  # a flat region seen steeply: low blocks (chairs) less hidden (r26a)
             y_ticks = [t for t in ax.get_yticks() if workspace.lower[1] < t <= workspace.upper[1]]
             ax.set_yticks(y_ticks)  # no y tick at the corner where x's last tick stands (r27a: "40" over "0")
+            x_ticks = [t for t in ax.get_xticks() if workspace.lower[0] <= t < workspace.upper[0] - 0.1 * extent[0]]
+            ax.set_xticks(x_ticks)  # nor x's last: by the corner, it floated above the legend (r57a: a stray "40")
     if kinds:
         handles = [Patch(label=k, **link_style(colors[k], hatches[k])) for k in kinds]  # as drawn
         fig.legend(handles=handles, fontsize=9, loc="lower center", ncols=min(len(kinds), 3), frameon=False)
@@ -259,6 +258,7 @@ def _draw_cspace(
 
 
 BLOCK_OUTLINE = COLORS["block_outline"]  # 3.7:1 on the dark C-obstacle; not orange, "in collision" (reader r50a)
+PAST_BOUNDS = "That outer pixel lies outside the bounds: never checked, not in the share in collision."  # r57a
 
 
 def cspace_image(checker: CollisionChecker, resolution: int = 600, window: tuple | None = None) -> Figure:
@@ -346,7 +346,7 @@ def cspace_slice(
     rim = not np.concatenate([valid[0], valid[-1], valid[:, 0], valid[:, -1]]).any()  # every edge pixel dark (r55a)
     past = "a pixel's width past the robot's bounds"  # r56a: said as chapter 01's text says it
     frame = f"the robot must stay inside the region's boundary, and {past} is drawn dark too" if rim else past
-    text += f" A dark frame runs round the slice: {frame}." * lengths  # r54a; r55a: in bounds, not "leaves its bounds"
+    text += f" A dark frame runs round the slice: {frame}. {PAST_BOUNDS}" * lengths  # r54a; r55a: not "leaves bounds"
     dotted = " A block drawn across the links that no link touches (above or below them) is a dotted outline"
     text += (dotted + ", drawn a little inside its edges.") * bool(outlined)
     text += " A block a link touches is outlined dashed." * bool(dashed)
