@@ -287,7 +287,7 @@ def test_closest_step_gives_the_last_row_of_the_steps_close_to_and_below_the_pap
     table1 = f"{paper_numbers.CAE['2ds']['unseen_acc']:.0%}".replace("%", " %")  # r57c item 1: why both hold
     assert (
         f"Our `z` is not the paper's: its Table 1 gives its CAE {table1} on unseen 2DS grids, and our rebuild"
-        in (texts[0])
+        in texts[0]
         and f"where the paper's Table 1 gives its own CAE {table1} on them: here our rebuild and the paper" in whole
     )
     assert "the first weighing more" not in whole and "the first weighs more" not in whole
