@@ -233,6 +233,8 @@ def test_the_why_names_the_ablations_largest_steps_by_their_measure_as_the_table
     assert "shows what each step adds" in texts[2] and "why" not in texts[2]  # r55c 5: the table cannot rank causes
     assert "(the line under the opening table, just below)" in verdict  # r55c 3: the table the line is under
     assert "then adds about six points more" in bullets and round(gains[7]) == 6
+    assert "even if `z` told it" not in " ".join(texts)  # r57c item 4: Q4 cites the step it rests on
+    assert "given a CAE that generalizes it gains only about three points of balanced accuracy" in " ".join(texts)
     assert "samples it does not state" not in " ".join(texts) and "its rates imply about 60 % valid" in said
     assert "rows 1 to 6" not in " ".join(texts) and "rows 3 and 6" not in " ".join(texts)
     assert "main cause" not in verdict and "does little better than a coin flip" in verdict and 50 < rows[0][0] < 56
