@@ -212,24 +212,29 @@ def test_the_why_names_the_ablations_largest_steps_by_their_measure_as_the_table
     assert verdict.index("**balanced accuracy**") < verdict.index("55 % balanced accuracy")  # defined, then used
     assert "On 2DS, no threshold fixes it" in verdict and "Adam" not in verdict and "section 7" in verdict
     assert "trains with Adam at $10^{-4}$, not the paper's Adagrad at 0.1" in texts[2]  # the preset's one change
-    said = texts[why]
-    assert "*Balanced accuracy*, the score to read: the largest step is 1000 training workspaces" in said
+    said = " ".join(texts[why : why + 3])  # r57c item 2: intro, the table, then three bullets and a fold
+    assert texts[why + 2].startswith("Read the balanced column, the score to read: - *1000 training workspaces* is")
+    bullets, fold = texts[why + 2].split("<details>")
+    assert bullets.count(" - *") == 3 and "*Removing dropout* is named as no cause here" in fold  # caveats folded
+    assert "AdamW with a cosine schedule and batches of 256" in fold and "fidelity.md, reading validity-blind" in fold
     assert "AdamW with a cosine schedule and batches of 256" in said and "standardized inputs" in table[7]
     assert "No 6–4 row reaches it; the 64-32 MLP only draws level with it, a fraction of a point below" in said
     assert 0 < chapter03.ALWAYS_VALID_2DS[1] - rows[7][1] < 1  # "a fraction of a point below"
     assert "*Removing dropout* is named as no cause here" in said  # r54c item 1: its evidence is no clear evidence
     assert "The largest step there is removing dropout" not in said and "heavy dropout" not in " ".join(texts)
-    assert "it is measured on the weak 6–4 MLP only" in said and "does not rank the two causes" in said
-    assert "A CAE that generalizes adds little: a few points of balanced accuracy" in said
+    assert "measured on the weak 6–4 MLP only" in bullets and "does not rank the two causes" in bullets
+    assert "*A CAE that generalizes* adds about three points" in bullets and round(gains[2]) == 3
     assert abs(gains[3] - gains[7]) < 1 and "Its balanced bracket is about the 64-32 MLP's" in said  # r51c
     three = [rows[k][0] for k in (3, 4, 5, 6)]  # r54c: the span from the no-dropout row, unrounded, said plainly
     assert three[1] < three[2] < three[0] < three[3] and f"{three[3] - three[0]:.1f}" == "13.8"
     assert three[3] - three[0] > max(v for k, v in gains.items() if k != 6)  # "more than any other step's gain"
     assert min(gains.values()) < -(three[3] - three[0])  # r55c 2: a loss (AdamW's) is larger, so "gain", not "bracket"
-    assert "the 1000-workspace row is 13.8 points higher, more than any other step's gain" in said
+    assert "13.8 points above the no-dropout row before them, more than any other step's gain" in bullets
     assert "shows what each step adds" in texts[2] and "why" not in texts[2]  # r55c 5: the table cannot rank causes
     assert "(the line under the opening table, just below)" in verdict  # r55c 3: the table the line is under
-    assert "then adds about six points more" in said and round(gains[7]) == 6
+    assert "then adds about six points more" in bullets and round(gains[7]) == 6
+    assert "even if `z` told it" not in " ".join(texts)  # r57c item 4: Q4 cites the step it rests on
+    assert "given a CAE that generalizes it gains only about three points of balanced accuracy" in " ".join(texts)
     assert "samples it does not state" not in " ".join(texts) and "its rates imply about 60 % valid" in said
     assert "rows 1 to 6" not in " ".join(texts) and "rows 3 and 6" not in " ".join(texts)
     assert "main cause" not in verdict and "does little better than a coin flip" in verdict and 50 < rows[0][0] < 56
@@ -281,6 +286,12 @@ def test_closest_step_gives_the_last_row_of_the_steps_close_to_and_below_the_pap
     )  # r52c item 1: both of the closing section's causes; r54c item 1: unranked (the CAE tried on the weak MLP only)
     whole = " ".join(texts)
     assert causes in texts[0] and causes in summary and "Two things fail, and this page does not rank them" in whole
+    table1 = f"{paper_numbers.CAE['2ds']['unseen_acc']:.0%}".replace("%", " %")  # r57c item 1: why both hold
+    assert (
+        f"Our `z` is not the paper's: its Table 1 gives its CAE {table1} on unseen 2DS grids, and our rebuild"
+        in texts[0]
+        and f"where the paper's Table 1 gives its own CAE {table1} on them: here our rebuild and the paper" in whole
+    )
     assert "the first weighing more" not in whole and "the first weighs more" not in whole
     assert "Two things fail, as in the opening, and this page does not rank them" in whole  # Q4 agrees (r54c)
     assert "workspaces lift its balanced accuracy most" in whole and "gains most" not in whole  # r54c: the table

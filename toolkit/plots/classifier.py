@@ -98,9 +98,9 @@ def probability_maps(
     place_on_cells(fig, grid, blocks)  # again, the maps as the legend left them (r34c)
     per = {code: f" (one per {n} x {n} cells holding any)" if n > 1 else "" for code, n in k.items()}
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
-    text += "configurations; grey, 0 black to 1 white; obstacle cells kept tinted vermillion, free cells rejected "
-    text += "marked by the circles) with the true C-obstacles outlined and hatched, the threshold's contour dotted "
-    text += "(hidden under an outline where it runs along one), dangerous mistakes as squares"
+    text += "configurations; grey, 0 black to 1 white; obstacle cells kept tinted vermillion, their squares' colour; "
+    text += "free cells rejected marked by circles) with the true C-obstacles outlined and hatched, the threshold's "
+    text += "contour dotted (hidden under an outline where it runs along one), dangerous mistakes as squares"
     text += f"{per[3]} and conservative ones as circles"
     rule = f"a square per {k[3]} x {k[3]}-cell tile holding dangerous cells, a circle per {k[1]} x {k[1]}-cell tile "
     rule += "holding conservative ones, each drawn on one of its tile's mistake cells (the one nearest their centroid)"
@@ -134,7 +134,7 @@ def path_map(
     fit_cell_marks(fig, grid)
     labels_clear_of(ax, grid, grid.on_grid(valid, "valid"), "in collision")  # r39c: on free cells, not the block
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
-    text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (squares), and the"
+    text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (a square each), and the"
     text += f" returned path through {len(path)} configurations (yellow, dashed, diamonds), checked exactly."
     per_cell = answers.per_cell(nodes[:, [x, y]], grid)  # (nx, ny) roadmap nodes in each cell of the map
     parts = [
