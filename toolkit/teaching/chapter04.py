@@ -15,7 +15,7 @@ from toolkit.geometry.collision import exact_checker
 from toolkit.learning.learned import LearnedChecker
 from toolkit.planning.local_planner import path_is_valid
 from toolkit.planning.sampling import PAPER_SAMPLERS
-from toolkit.teaching import checker_scope, costs, findings, recorded
+from toolkit.teaching import chapter04_encoding, checker_scope, costs, findings, recorded
 from toolkit.teaching.chapter04_paper import RUNS, how_to_read, means_sentence, papers_table, plain, sampling_claim
 from toolkit.teaching.recorded import Tables
 from toolkit.util.verdicts import COSTS, SAVES, TIES, time_verdict
@@ -241,7 +241,8 @@ def answer(tables: Tables | None = None) -> str:
     ]
     runs = (  # reader r54d, item 3: the run names, the counts by means and the sampling claim in the fold
         "From the recorded run `strong --planner paper` (100 queries a scenario, `docs/results.md`; python-fcl's row: "
-        f"the same run with `--baseline paper-fcl-alike`). {means_sentence(tables)} {sampling_claim(tables)}"
+        f"the same run with `--baseline paper-fcl-alike`). {means_sentence(tables)} "
+        f"{chapter04_encoding.disagreement(tables)} {sampling_claim(tables)}"
     )
     return (
         f"**{word}.** {plain(counts, total, tables)}\n\n{how_to_read(tables)}\n\n"

@@ -10,7 +10,7 @@ from collections.abc import Mapping
 from toolkit.experiments.paper_numbers import IMPROVEMENT, TIMES, saved_beyond_sampling
 from toolkit.teaching import checker_scope, costs, recorded
 from toolkit.teaching.recorded import Tables
-from toolkit.util.verdicts import COSTS, SAVES, TIES, time_verdict
+from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 
 RUNS = ((recorded.ALGORITHM_1, "fast checker"), (checker_scope.SLOW, "python-fcl"))  # our two Algorithm 1 runs
 SLOW_DOWN = "3DO BT"  # the one cell the paper's text calls "a slow-down for BT (8%)" (§V)
@@ -117,9 +117,8 @@ def papers_table(read: tuple[int, int, int], tables: Tables | None = None, lead:
 
 
 def plain(counts: tuple[int, int, int, int], total: int, tables: Tables | None = None) -> str:
-    """The answer's three short sentences (reader r57d, lift 1): one jargon-free sentence first (saves in how many
-    settings with each checker, Table 3's count, sampling's largest share), then the statistic and its noise band,
-    then the rest of prediction's effect; ``counts``: fast saves, fast costs, of them beyond the band, slow saves."""
+    """The answer's three sentences (reader r57d, lift 1): a jargon-free one, then the statistic and its noise band,
+    then the rest; ``counts``: fast checker's savings, its costs, of them beyond the band, python-fcl's savings."""
     fast, costly, beyond, slow = counts
     fast_share, slow_share = (costs.sampling_shares(preset, tables) for preset, _ in RUNS)
     return (
@@ -140,15 +139,15 @@ HOW_TO_READ = (  # common57: visible, at most four lines, under the answer (read
     "> - A *ratio* is time with prediction ÷ time without, for one setting (scenario and sampler), called a *cell* "
     "below: 100 recorded queries.\n"
     "> - The *median own ratio*: each query is timed with and without, in turn; the median of its 100 ratios.\n"
-    "> - {tie} is a *tie* (our 10 % band, not the paper's): {low} or less saves time, {high} or more costs time.\n"
+    f"> - {1 - TIE:.2f}–{1 + TIE:.2f} is a *tie* (our 10 % band, not the paper's): {1 - TIE:.2f} or less saves time, "
+    f"{1 + TIE:.2f} or more costs time.\n"
     "> - {own} is the median own ratio's *noise band*: a verdict inside it is no clear evidence (marked \\*)."
 )
 
 
 def how_to_read(tables: Tables | None = None) -> str:
     """The visible box under the answer: a ratio, a cell, the median own ratio, the tie band and its noise band."""
-    low, high = costs.floors(tables)["own"]
-    return HOW_TO_READ.format(tie="0.90–1.10", low="0.90", high="1.10", own=f"{low:.2f}–{high:.2f}")
+    return HOW_TO_READ.format(own="{:.2f}–{:.2f}".format(*costs.floors(tables)["own"]))
 
 
 def sampling_claim(tables: Tables | None = None) -> str:
