@@ -50,8 +50,7 @@ def means_sentence(tables: Tables | None = None) -> str:
 
 
 def mean_ratios(preset: str, tables: Tables | None = None) -> dict[str, float]:
-    """``preset``'s ratios of mean times inside Algorithm 1, every scenario and sampler (rounded as printed), by cell:
-    ``{"2DS BS": 1.0, ...}``."""
+    """``preset``'s ratios of mean times inside Algorithm 1 by cell, rounded as printed: ``{"2DS BS": 1.0, ...}``."""
     return {
         f"{checker_scope.NAMES[key]} {s}": round(1 - saved, 2)
         for key in recorded.query_ratios(preset, tables)
@@ -138,7 +137,8 @@ HOW_TO_READ = (  # common57: visible, at most four lines, under the answer (read
     "> **How to read the ratios**\n>\n"
     "> - A *ratio* is time with prediction ÷ time without, for one setting (scenario and sampler), called a *cell* "
     "below: 100 recorded queries.\n"
-    "> - The *median own ratio*: each query is timed with and without, in turn; the median of its 100 ratios.\n"
+    "> - The *median own ratio*: each query is timed with and without, in turn, giving its own ratio; the median of "
+    "a cell's 100.\n"
     f"> - {1 - TIE:.2f}–{1 + TIE:.2f} is a *tie* (our 10 % band, not the paper's): {1 - TIE:.2f} or less saves time, "
     f"{1 + TIE:.2f} or more costs time.\n"
     "> - {own} is the median own ratio's *noise band*: a verdict inside it is no clear evidence (marked \\*)."
