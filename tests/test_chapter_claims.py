@@ -533,7 +533,7 @@ def test_chapter_04_holds_the_answers_bullet_on_our_fast_checker_to_section_6():
     said = first["text/markdown"]
     first["text/markdown"] = said.replace("| our fast exact checker | none |", "| our fast exact checker | 8 |")
     assert problems(CH04, nb) == [
-        "04: the answer's first sentence counts [('none', '9', '3')]; its table [('8', '9', '3')]",  # reader r54d
+        "04: the answer's first sentence counts [('none', '9', '5', '3')]; its table [('8', '9', '5', '3')]",  # r54d
         f"04: the first code cell's bullet on our fast checker says [('8', '16', '7', '9', '5')]; section 6's: "
         f"{expected}",
     ]
@@ -548,7 +548,7 @@ def test_chapter_04_holds_the_answers_bullet_on_our_fast_checker_to_section_6():
     first = nb["cells"][0]["outputs"][0]["data"]
     first["text/markdown"] = first["text/markdown"].replace("| 9 (5 beyond", "| 5 (3 beyond", 1)
     assert problems(CH04, nb) == [
-        "04: the answer's first sentence counts [('none', '9', '3')]; its table [('none', '5', '3')]",
+        "04: the answer's first sentence counts [('none', '9', '5', '3')]; its table [('none', '5', '3', '3')]",
         f"04: the first code cell's bullet on our fast checker says [('none', '16', '7', '5', '3')]; section "
         f"6's: {expected}",
     ]

@@ -15,8 +15,8 @@ from toolkit.geometry.collision import exact_checker
 from toolkit.learning.learned import LearnedChecker
 from toolkit.planning.local_planner import path_is_valid
 from toolkit.planning.sampling import PAPER_SAMPLERS
-from toolkit.teaching import checker_scope, costs, findings, recorded
-from toolkit.teaching.chapter04_paper import RUNS, means_sentence, papers_table, plain, sampling_claim
+from toolkit.teaching import chapter04_encoding, checker_scope, costs, findings, recorded
+from toolkit.teaching.chapter04_paper import RUNS, how_to_read, means_sentence, papers_table, plain, sampling_claim
 from toolkit.teaching.recorded import Tables
 from toolkit.util.verdicts import COSTS, SAVES, TIES, time_verdict
 
@@ -226,6 +226,7 @@ def answer(tables: Tables | None = None) -> str:
     papers = Counter(time_verdict(1 - saved) for saved in facts.papers_totals)
     fast, slow = (costs.median_counts(preset, tables) for preset, _ in RUNS)
     total = len(facts.own)
+    counts = (fast[SAVES][0], fast[COSTS][0], fast[COSTS][0] - fast[COSTS][1], slow[SAVES][0])
     word = "No" if not fast[SAVES][0] else "Rarely" if 4 * fast[SAVES][0] <= total else "In part"
 
     def n(cells: int, zero: str = "none", of: bool = False) -> str:
@@ -240,10 +241,11 @@ def answer(tables: Tables | None = None) -> str:
     ]
     runs = (  # reader r54d, item 3: the run names, the counts by means and the sampling claim in the fold
         "From the recorded run `strong --planner paper` (100 queries a scenario, `docs/results.md`; python-fcl's row: "
-        f"the same run with `--baseline paper-fcl-alike`). {means_sentence(tables)} {sampling_claim(tables)}"
+        f"the same run with `--baseline paper-fcl-alike`). {means_sentence(tables)} "
+        f"{chapter04_encoding.disagreement(tables)} {sampling_claim(tables)}"
     )
     return (
-        f"**{word}.** {plain((fast[SAVES][0], fast[COSTS][0], slow[SAVES][0]), total, tables)}\n\n"
+        f"**{word}.** {plain(counts, total, tables)}\n\n{how_to_read(tables)}\n\n"
         f"| {total} scenario–sampler cells, by the median of each query's own time ratio (with ÷ without) | faster "
         "| tie | slower |\n| --- | --- | --- | --- |\n"
         + "\n".join(f"| {name} | {' | '.join(c)} |" for name, c in rows)

@@ -1,5 +1,6 @@
 """Chapter 04, section 6: the encoding measured in section 5's live queries beside the growth after sampling of the
-recorded cells that cost the most (reader r52d, item 2; moved out of :mod:`chapter04_paper` to keep it short)."""
+recorded cells that cost the most (reader r52d, item 2; moved out of :mod:`chapter04_paper` to keep it short), and
+the cell where the two statistics lie furthest apart (reader r57d, item 6)."""
 
 from __future__ import annotations
 
@@ -7,8 +8,9 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from toolkit.teaching import costs
+from toolkit.teaching import checker_scope, costs, recorded
 from toolkit.teaching.recorded import Tables
+from toolkit.util.verdicts import COSTS, SAVES, TIES, time_verdict
 
 
 def encoding_line(records: Mapping[str, list[dict]], tables: Tables | None = None) -> str:
@@ -49,3 +51,20 @@ def encoding_line(records: Mapping[str, list[dict]], tables: Tables | None = Non
             else ""
         )
     ).strip()
+
+
+def disagreement(tables: Tables | None = None) -> str:
+    """Reader r57d, item 6: the cell where the median own ratio and the ratio of means lie furthest apart (log)."""
+    own = recorded.query_ratios(recorded.ALGORITHM_1, tables)
+    cells = [
+        (o, 1 - recorded.improvements(recorded.ALGORITHM_1, k, "total", tables)[s], k, s)
+        for k in own
+        for s, o in own[k].items()
+    ]
+    o, m, k, s = max(cells, key=lambda c: abs(np.log(c[0] / c[1])))
+    said = {SAVES: "saves time", TIES: "ties", COSTS: "costs time"}
+    return (
+        f"The two statistics lie furthest apart in {checker_scope.NAMES[k]} {s}: by its median own ratio it "
+        f"{said[time_verdict(o)]} ({o:.2f}), by means it {said[time_verdict(m)]} ({m:.2f}); a mean follows a few slow "
+        "queries."
+    )

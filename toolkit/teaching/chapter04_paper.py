@@ -10,7 +10,7 @@ from collections.abc import Mapping
 from toolkit.experiments.paper_numbers import IMPROVEMENT, TIMES, saved_beyond_sampling
 from toolkit.teaching import checker_scope, costs, recorded
 from toolkit.teaching.recorded import Tables
-from toolkit.util.verdicts import COSTS, SAVES, TIES, time_verdict
+from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 
 RUNS = ((recorded.ALGORITHM_1, "fast checker"), (checker_scope.SLOW, "python-fcl"))  # our two Algorithm 1 runs
 SLOW_DOWN = "3DO BT"  # the one cell the paper's text calls "a slow-down for BT (8%)" (§V)
@@ -50,8 +50,7 @@ def means_sentence(tables: Tables | None = None) -> str:
 
 
 def mean_ratios(preset: str, tables: Tables | None = None) -> dict[str, float]:
-    """``preset``'s ratios of mean times inside Algorithm 1, every scenario and sampler (rounded as printed), by cell:
-    ``{"2DS BS": 1.0, ...}``."""
+    """``preset``'s ratios of mean times inside Algorithm 1 by cell, rounded as printed: ``{"2DS BS": 1.0, ...}``."""
     return {
         f"{checker_scope.NAMES[key]} {s}": round(1 - saved, 2)
         for key in recorded.query_ratios(preset, tables)
@@ -116,22 +115,39 @@ def papers_table(read: tuple[int, int, int], tables: Tables | None = None, lead:
     )
 
 
-def plain(counts: tuple[int, int, int], total: int, tables: Tables | None = None) -> str:
-    """The answer's three short sentences (reader r54d, item 3; r55d, item 1): by each query's own ratio, ``counts``
-    of ``total``; what skipping sample checks can save, and that the rest runs through the roadmap; Table 3's count."""
-    fast, costly, slow = counts
+def plain(counts: tuple[int, int, int, int], total: int, tables: Tables | None = None) -> str:
+    """The answer's three sentences (reader r57d, lift 1): a jargon-free one, then the statistic and its noise band,
+    then the rest; ``counts``: fast checker's savings, its costs, of them beyond the band, python-fcl's savings."""
+    fast, costly, beyond, slow = counts
     fast_share, slow_share = (costs.sampling_shares(preset, tables) for preset, _ in RUNS)
     return (
-        f"By each query's own ratio, our accurate network made the paper's planner take 10 % or more less time in "
-        f"{fast or 'none'} of {total} cells with our fast exact checker ({costly or 'none'} took 10 % or more longer), "
-        f"and in {slow or 'none'} of {total} with slow python-fcl. Skipping sample checks, the only step it replaces, "
-        f"can save at most {100 * max(fast_share):.0f} % of a query ({100 * max(slow_share):.0f} % with python-fcl); "
-        "the rest of its effect comes after sampling: the encoding (measured live in 3DC-7, section 5), and possibly "
-        "a different "
-        "roadmap from the samples it keeps, which these runs can neither show nor rule out. "
-        "The paper's Table 3 (mean "
-        f"times) saves 10 % or more in {len(table3_totals()['ten'])} of its {len(table3_totals()['all'])} cells."
+        "With an accurate network inside the paper's own planner (Algorithm 1), prediction saved 10 % or more of a "
+        f"query's time in {fast or 'none'} of {total} settings (a scenario and a sampler) against our fast exact "
+        f"checker and in {slow or 'none'} of {total} against slow python-fcl (the paper's Table 3, by mean times: "
+        f"{len(table3_totals()['ten'])} of {len(table3_totals()['all'])}), because the sample checks it replaces take "
+        f"at most {100 * max(fast_share):.0f} % of a query ({100 * max(slow_share):.0f} % with python-fcl). "
+        "Each count reads a setting's median own ratio (the box below); with our fast checker "
+        f"{costly or 'none'} of {total} settings took 10 % or more longer, {beyond} of them beyond the noise band. "
+        "The rest of prediction's effect comes after sampling: the encoding (measured in 3DC-7 only, section 5) and "
+        "perhaps a different roadmap, which these runs cannot show."
     )
+
+
+HOW_TO_READ = (  # common57: visible, at most four lines, under the answer (reader r57d, lift 1)
+    "> **How to read the ratios**\n>\n"
+    "> - A *ratio* is time with prediction ÷ time without, for one setting (scenario and sampler), called a *cell* "
+    "below: 100 recorded queries.\n"
+    "> - The *median own ratio*: each query is timed with and without, in turn, giving its own ratio; the median of "
+    "a cell's 100.\n"
+    f"> - {1 - TIE:.2f}–{1 + TIE:.2f} is a *tie* (our 10 % band, not the paper's): {1 - TIE:.2f} or less saves time, "
+    f"{1 + TIE:.2f} or more costs time.\n"
+    "> - {own} is the median own ratio's *noise band*: a verdict inside it is no clear evidence (marked \\*)."
+)
+
+
+def how_to_read(tables: Tables | None = None) -> str:
+    """The visible box under the answer: a ratio, a cell, the median own ratio, the tie band and its noise band."""
+    return HOW_TO_READ.format(own="{:.2f}–{:.2f}".format(*costs.floors(tables)["own"]))
 
 
 def sampling_claim(tables: Tables | None = None) -> str:
@@ -177,14 +193,19 @@ def why(tables: Tables | None = None) -> str:
 
 def roadmap(tables: Tables | None = None) -> str:
     """Reader r55d, item 1: the rest of a query's change runs through the roadmap, computed: the costly cells whose
-    extra mean time came mostly after sampling (:func:`costs.dear_cells`); a roadmap change possible, not shown."""
+    extra mean time came mostly after sampling (:func:`costs.dear_cells`), named where first said (r57d, lift 2)."""
     dear = costs.dear_cells(tables)
     after = sum(c.after_share > 0.5 for c in dear)
+    out = costs.left_out(tables)
+    beyond = len(dear) + len(out)
+    less = f", less {' and '.join(out)}, whose mean time did not grow" if out else ""
+    named = ", ".join(f"{c.scenario} {c.sampler}" for c in dear)
     return (
         "**The rest comes after sampling:** by changing which samples are kept, prediction can change the roadmap "
-        f"built from them, and so the time after sampling (which also holds the encoding). In {after} of the "
-        f'{len(dear)} costly cells that section 6 splits into stages ("Where the extra time went"), most of the '
-        "extra mean time came after sampling."
+        'built from them, and so the time after sampling (which also holds the encoding). Section 6 ("Where the '
+        f'extra time went") splits {len(dear)} costly cells into stages: the {beyond} whose median own ratio costs '
+        f"time beyond its noise band{less} ({named}). In {after} of those {len(dear)}, most of the extra mean time "
+        "came after sampling."
     )
 
 
