@@ -2443,6 +2443,29 @@ def test_sampling_s_share_caps_the_paper_s_savings_too():
     (gw, _), (gh, _) = times["3do"]["sampling_s"]["G"]
     (Gw, _), (Gh, _) = times["3do"]["total_s"]["G"]
     assert f"and {gw - gh:.2f} s of the {Gw - Gh:.2f} s that 3DO G's query saved" in flat
+    # reader r57g, lift 3: the share caps what cheaper sampling explains, not the savings, which exceeded it
+    assert "- Sampling's share caps what cheaper sampling can explain of the paper's savings. By its" in PREDICTION
+    assert "caps the paper's savings" not in flat
+
+
+def test_reader_r57g_the_lazy_prm_s_borrowed_band_and_its_network_s_edge_calls():
+    """Reader r57g, lift 4: the lazy PRM's ratio-of-medians band is borrowed from Algorithm 1's run, timed twice, said
+    where its row is read (the Results page says so too); lift 5: the lazy-PRM network's edge calls beside a round's
+    samples in "Reading it"."""
+    results = (ROOT / "docs" / "results.md").read_text()
+    assert "Nor was the lazy-PRM run of 3 December: it borrows the medians band, timed with Algorithm 1." in results
+    flat = " ".join(PAGE.split())
+    assert (
+        f"whose noise band is {edges('medians')}. The lazy-PRM run was not timed twice: it borrows that band from "
+        "Algorithm 1's run, timed twice." in flat
+    )
+    assert "(its band borrowed from Algorithm 1's run, timed twice)" in flat
+    reading = flat.partition("**Reading it.**")[2].partition("[Chapter 04]")[0]
+    assert (
+        "a round's samples, hold 50–2,000 configurations (50–400 in 3DC); the lazy-PRM network also answers the "
+        in (reading)
+        and "points it predicts along candidate edges" in reading
+    )
 
 
 def test_the_key_says_which_measurements_the_planning_verdicts_rest_on():
