@@ -64,8 +64,8 @@ def test_each_point_is_a_cell_of_table_3_or_the_papers(drawn):
     kind, fig = drawn
     table3 = "Table 3: time improvement ratio"
     tables = {
-        "ours, paper-preset network, compiled checker of 2 December": f"`paper`, {table3}",
-        "ours, accurate strong network, compiled checker of 5 December": f"`strong --planner paper`, {table3}",
+        "ours, paper-recipe network, compiled checker of 2 December": f"`paper`, {table3}",
+        "ours, strong network, compiled checker of 5 December": f"`strong --planner paper`, {table3}",
     }
     assert len(fig.axes) == 4
     names = {line.get_label() for ax in fig.axes for line in ax.get_lines() if line.get_marker() != "None"}
@@ -160,7 +160,7 @@ def test_each_panel_shades_the_tie_band_its_counts_are_read_with(drawn):
         assert marker not in "os^" and colour not in (OKABE_ITO["vermillion"], OKABE_ITO["orange"]), name
     for words in (
         "grey diamonds, the paper",
-        "yellow bold crosses (×) edged in black, our `paper`-preset network",
+        "yellow bold crosses (×) edged in black, the paper-recipe network",
         "reddish-purple stars",
         "bluish-green pentagons",
     ):
@@ -247,7 +247,7 @@ def _own_ratios(text: str, key: str = "strong --planner paper") -> dict[tuple[st
 
 
 def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
-    """Reader r18a: the first figure plotted the `strong` network by means (3DC-9 OB 0.72, a saving) while the verdict
+    """Reader r18a: the first figure plotted the strong network by means (3DC-9 OB 0.72, a saving) while the verdict
     reads each query's own ratio (1.24, a cost). Figure 1 is the verdict's statistic: each point a median of that
     table, its whisker the middle half, its marker what the median reads as; it comes before the figures of means,
     its picture carries its description and the page says so."""
@@ -341,7 +341,7 @@ def test_each_figure_of_means_has_its_own_range_the_slow_run_and_counts_by_the_p
     floor = results_noise.noise(recorded_results.parse(TEXT)).means
     # reader r40f, figures: every panel's y ticks labelled; reader r41f, figures: the band's edges outside the axes,
     # beside the right-hand panels only (in the gutter they read as the right-hand panel's ticks; inside they crowded
-    # the points); the `paper`-preset series no cross, which read as the stars
+    # the points); the paper-recipe series no cross, which read as the stars
     for ax in fig.axes:
         right = ax.get_subplotspec().colspan.start == 1 and kind in results_figures.BANDED  # r48f: Figure 3 none
         assert not ax.texts and len(ax.child_axes) == right
@@ -351,7 +351,7 @@ def test_each_figure_of_means_has_its_own_range_the_slow_run_and_counts_by_the_p
         assert "X" not in {line.get_marker() for line in ax.get_lines()}
         assert ax.yaxis.get_tick_params()["labelleft"]
     names = [t.get_text() for t in fig.legends[0].get_texts()]
-    assert "ours, accurate strong network, python-fcl on both sides" in names
+    assert "ours, strong network, python-fcl on both sides" in names
     block = TEXT.partition(results_figures.FIGURE_BEGIN.format(kind=kind))[2]
     rows = re.findall(
         r"(?m)^\| (ours[^|]*|the paper[^|]*) \| 16 \| (\d+) \| (\d+) \| (\d+) \|$", block.split("<!--")[0]
