@@ -16,7 +16,7 @@ from toolkit.experiments.paper_numbers import IMPROVEMENT
 from toolkit.plots import alt, query_ratios
 from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO
 from toolkit.teaching import checker_scope, costs
-from tools import recorded_results, results_figures, results_noise, results_summary, results_words
+from tools import recorded_results, results_figures, results_noise, results_rings, results_summary, results_words
 
 TEXT = recorded_results.RESULTS.read_text()
 AGAIN = "docs/results.md's tables changed: run python -m tools.results_summary"
@@ -256,7 +256,8 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
     (ax,) = fig.axes
     table = _own_ratios(TEXT)
     assert len(table) == 16 and table["3dc9", "OB"] == (1.24, 1.12, 1.36)
-    points = [line for line in ax.get_lines() if len(line.get_ydata()) == 1]
+    drawn = [line for line in ax.get_lines() if len(line.get_ydata()) == 1]
+    points = [line for line in drawn if line.get_markerfacecolor() != "none"]  # the rings are apart (below)
     filled = [line for line in points if line.get_markerfacecolor() != COLORS["free"]]  # the compiled checker's
     medians = sorted(float(line.get_ydata()[0]) for line in filled)
     assert medians == pytest.approx(sorted(m for m, _, _ in table.values()))
@@ -455,3 +456,31 @@ def test_figure_1s_caption_states_the_edge_rule_with_its_point():
     said = results_figures.on_tie_edge(tables)
     assert said == " A point on the tie band's edge counts as beyond it: 2DS BT, at exactly 1.10, counts as a cost."
     assert said in results_figures.claim_markdown(results_figures.RESULTS.read_text())
+
+
+def test_figure_1_rings_the_points_beyond_the_noise_band_and_keys_the_fill_on_a_neutral_glyph():
+    """Reader r57f, lift item 4: the verdict a reader sees is the page's: a ring round each point beyond the noise band
+    of each query's own ratio (5 filled, 2 hollow: the counts' "beyond" column), centred on it; the fill key drawn on
+    a hexagon, no verdict's circle, square or triangle; the alt text and the longer description say which are ringed."""
+    fig = results_figures.claim_figure(TEXT)
+    (ax,) = fig.axes
+    drawn = [line for line in ax.get_lines() if len(line.get_ydata()) == 1]
+    rings = [line for line in drawn if line.get_markerfacecolor() == "none"]
+    points = {(float(line.get_xdata()[0]), float(line.get_ydata()[0])) for line in drawn if line not in rings}
+    at = {(float(line.get_xdata()[0]), float(line.get_ydata()[0])) for line in rings}
+    assert at <= points and sorted(round(y, 2) for _, y in at) == [0.72, 0.79, 1.24, 1.28, 1.5, 1.58, 1.75]
+    low, high = costs.floors(recorded_results.parse(TEXT))["own"]
+    assert all(not low < y < high for _, y in at) and all(low < y < high for _, y in points - at)
+    assert all(line.get_marker() == "o" and line.get_markersize() > 2 * query_ratios.SIZE for line in rings)
+    (legend,) = fig.legends
+    labels = [text.get_text() for text in legend.get_texts()]
+    assert results_rings.RING_LABEL in labels and len(labels) == 8 and len(set(labels)) == 8
+    keys = [line for line in ax.get_lines() if line.get_label().startswith(("filled:", "hollow:"))]
+    assert len(keys) == 2 and all(line.get_marker() == "h" for line in keys)  # not "o", "s" or "^"
+    said = alt.alt_text(fig)
+    assert "Ringed, beyond the noise band (0.82–1.18) and so clear: 5 filled points (3DC-7 OB 1.50," in said
+    assert "and 2 hollow points (3DC-9 OB 0.79, 3DO BT 0.72)." in said
+    filled, hollow = alt.parts_of(fig)
+    assert sum(cell.endswith(", ringed") for row in filled.rows for cell in row) == 5
+    assert sum(cell.endswith(", ringed") for row in hollow.rows for cell in row) == 2
+    assert "ring = clear*" in CLAIM and "ringed, beyond the noise band of this ratio: 5 filled and 2 hollow." in CLAIM

@@ -26,6 +26,7 @@ from toolkit.teaching import checker_scope, costs, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
 from tools.results_noise import at_noise_edge, noise, own_intervals
+from tools.results_rings import beyond, ring
 from tools.results_words import NAMES, change
 
 FIGURES = {kind: RESULTS.parent / f"results_table3_{kind}.png" for kind in ("total", "sampling")}  # Table 3's columns
@@ -261,15 +262,18 @@ def claim_figure(text: str) -> Figure:
     """Figure 1: what the verdict on the paper's claim reads (:func:`accurate_in_algorithm_1`), the median of each
     query's own ratio with its middle half, per scenario and sampler (:func:`toolkit.plots.query_ratios.own_ratios`)."""
     tables = parse(text)
-    return query_ratios.own_ratios(
-        own_intervals(tables),
+    fast, slow = own_intervals(tables), own_intervals(tables, checker_scope.SLOW)
+    fig = query_ratios.own_ratios(
+        fast,
         title=CLAIM_TITLE,
         tie=findings.TIE,
-        slow=own_intervals(tables, checker_scope.SLOW),
+        slow=slow,
         series=CLAIM_SERIES,
         edge=costs.noise_edge(tables),  # review r30f, item 2: the noise edge drawn, not only named
         width=CLAIM_WIDTH,
     )
+    # reader r57f, lift item 4: the points beyond the noise band ringed, the fill key on a neutral hexagon
+    return ring(fig, fast, slow, costs.floors(tables)["own"], CLAIM_TITLE)
 
 
 def claim_markdown(text: str) -> str:
@@ -286,9 +290,10 @@ def claim_markdown(text: str) -> str:
     )
     caption = (  # review r29f, item 1: the caption and the noise floor one paragraph under the plot
         "Each point is a cell: the median of those ratios over its 100 queries (each scenario's four samplers plan "
-        "the same 100 queries), its whisker their middle half. *Shape and colour = verdict, fill = checker*: "
-        "filled, our compiled checker; hollow, python-fcl on both sides. The fold “The counts by each statistic”, "
-        "under this figure, counts these points (its columns “by own ratio”)."
+        "the same 100 queries), its whisker their middle half. *Shape and colour = verdict, fill = checker, ring = "
+        "clear*: filled, our compiled checker; hollow, python-fcl on both sides (the legend's grey hexagons name the "
+        f"checker only); ringed, beyond the noise band of this ratio: {ringed(tables)}. The fold “The counts by each "
+        "statistic”, under this figure, counts these points (its columns “by own ratio”)."
         + on_tie_edge(tables)
         + unused_looks(tables)
     )
@@ -303,6 +308,13 @@ def claim_markdown(text: str) -> str:
     described = alt.details_html(alt.details(fig)).strip()
     picture = f"![{html.escape(alt.alt_text(fig))}]({CLAIM_FIGURE.name})"
     return f"{lead}\n\n{picture}\n\n{caption}{edge_said}\n\n{described}"
+
+
+def ringed(tables: Tables) -> str:
+    """Reader r57f, lift item 4: how many points Figure 1 rings, each checker's: ``"5 filled and 2 hollow"``."""
+    band = costs.floors(tables)["own"]
+    fast, slow = (len(beyond(own_intervals(tables, key), band)) for key in (recorded.ALGORITHM_1, checker_scope.SLOW))
+    return f"{fast} filled and {slow} hollow"
 
 
 def on_tie_edge(tables: Tables) -> str:
