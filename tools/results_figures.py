@@ -156,6 +156,7 @@ CROSS_SCALE = 1.5  # a bold cross's arms fill less of its box than a filled mark
 # r48f, figures: at 1.15 the crosses read as yellow blobs at 1280 px)
 CROSS_EDGE = 0.7  # points: the yellow cross's black edge, so it stands 3:1 on white (yellow alone is 1.2:1)
 STAR_SCALE = 1.3  # reader r53f, figures: the strong network's stars were the smallest marks, the verdict's series
+PENTAGON_SCALE = 1.1  # reader r57f, Figure 2: python-fcl's pentagons read smaller than the other marks
 MARKER_Z = 4  # over every band and hatch (reader r42f: Figure 3's hatching read as covering the markers inside it)
 TIE_TICKS = {"total": False, "sampling": False}  # reader r42f: 0.9 and 1.1 crowd the "1"; the legend names them
 
@@ -173,9 +174,10 @@ def readable(fig: Figure, floor: tuple[float, float] | None, kind: str = "total"
         for line in ax.lines:
             if line.get_marker() not in ("None", None, ""):
                 star = STAR_SCALE if line.get_marker() == "*" else 1.0  # reader r53f: the verdict's series
-                line.set_markersize(line.get_markersize() * MARKER_SCALE[kind] * star)
-                x = [float(v) for v in np.asarray(line.get_xdata())]
                 pentagon = LOOKS.get(str(line.get_label()), ("", ""))[1] == "p"  # before restyle draws it so
+                scale = MARKER_SCALE[kind] * star * (PENTAGON_SCALE if pentagon else 1.0)
+                line.set_markersize(line.get_markersize() * scale)
+                x = [float(v) for v in np.asarray(line.get_xdata())]
                 spread = SPREAD[kind] * (PENTAGON_IN[kind] if pentagon else 1.0)
                 line.set_xdata([round(v) + (v - round(v)) * spread for v in x])
                 line.set_zorder(MARKER_Z)
@@ -201,6 +203,8 @@ def readable(fig: Figure, floor: tuple[float, float] | None, kind: str = "total"
             restyle(handle, label.get_text())
             if handle.get_marker() == "*":  # the key's star as large as the panels' (reader r53f, figures)
                 handle.set_markersize(handle.get_markersize() * STAR_SCALE)
+            if handle.get_marker() == "p":  # the key's pentagon as the panels' (reader r57f, Figure 2)
+                handle.set_markersize(handle.get_markersize() * PENTAGON_SCALE)
         if floor is not None and label.get_text().startswith("noise band"):  # reader r48f, figures: said once
             handle.set_edgecolor(HATCHED["edgecolor"])  # type: ignore[union-attr]  # as the panels' hatch
             label.set_text(f"{label.get_text()} in every panel")
@@ -230,7 +234,7 @@ def clear_of_paper(ax, floor: tuple[float, float]) -> None:
 
 PAPER = next(name for name, preset in SOURCES.items() if preset is None)  # the paper's own series
 NOISE_EDGE = "--"  # reader r51f, item 5: a noise band's edges dashed, as Figure 1's; dotted means the tie band only
-HATCH_ALPHA = 0.4  # reader r53f, figures: the hatch filled most of every panel and drowned the points; lighter now
+HATCH_ALPHA = 0.6  # reader r53f, figures: at 1 the hatch drowned the points; reader r57f: at 0.4 it was faint
 HATCHED = dict(
     facecolor="none",
     edgecolor=(*to_rgb(COLORS["reference"]), HATCH_ALPHA),
