@@ -782,7 +782,7 @@ def test_the_accurate_network_inside_algorithm_1_is_read_as_its_section_says():
     assert findings.SAVES not in said  # "saves time for no sampler in any scenario by the median of each query's ..."
     counts = f"0 / {said.count(findings.TIES)} / {said.count(findings.COSTS)}"
     row = f"| strong network, compiled checker, 5 December | 3 / 7 / 6 | 0 / 2 | {counts} |"
-    assert row in PAGE and "for one *cell* (one scenario and one sampler, 100 queries)" in PAGE  # the box
+    assert row in PAGE and "for one setting, a *cell* (one scenario and one sampler, 100 queries)" in PAGE  # the box
     _the_ratio_of_medians_is_told_apart_where_it_reads_saves(
         ratios, twice=next(t for h, t in TABLES[key].items() if "timed twice" in h)
     )

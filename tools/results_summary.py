@@ -202,7 +202,8 @@ def ratios_box(tables: Tables) -> str:
     cell, the median own ratio, the tie band and that statistic's noise band; no other band before Figure 1."""
     low, high = costs.floors(tables)["own"]
     lines = (
-        "*ratio*: time with prediction / time without, for one *cell* (one scenario and one sampler, 100 queries); "
+        "*ratio*: time with prediction / time without, for one setting, a *cell* (one scenario and one sampler, 100 "
+        "queries); "
         "below 1, prediction saved time.",
         "*median own ratio*: each query is timed with and without prediction in turn; a cell's median own ratio is "
         "the median of its queries' ratios (Figure 1).",
