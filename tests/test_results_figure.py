@@ -16,7 +16,7 @@ from toolkit.experiments.paper_numbers import IMPROVEMENT
 from toolkit.plots import alt, query_ratios
 from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO
 from toolkit.teaching import checker_scope, costs
-from tools import recorded_results, results_figures, results_noise, results_summary, results_words
+from tools import recorded_results, results_figures, results_noise, results_rings, results_summary, results_words
 
 TEXT = recorded_results.RESULTS.read_text()
 AGAIN = "docs/results.md's tables changed: run python -m tools.results_summary"
@@ -64,8 +64,8 @@ def test_each_point_is_a_cell_of_table_3_or_the_papers(drawn):
     kind, fig = drawn
     table3 = "Table 3: time improvement ratio"
     tables = {
-        "ours, paper-preset network, compiled checker of 2 December": f"`paper`, {table3}",
-        "ours, accurate strong network, compiled checker of 5 December": f"`strong --planner paper`, {table3}",
+        "ours, paper-recipe network, compiled checker of 2 December": f"`paper`, {table3}",
+        "ours, strong network, compiled checker of 5 December": f"`strong --planner paper`, {table3}",
     }
     assert len(fig.axes) == 4
     names = {line.get_label() for ax in fig.axes for line in ax.get_lines() if line.get_marker() != "None"}
@@ -160,7 +160,7 @@ def test_each_panel_shades_the_tie_band_its_counts_are_read_with(drawn):
         assert marker not in "os^" and colour not in (OKABE_ITO["vermillion"], OKABE_ITO["orange"]), name
     for words in (
         "grey diamonds, the paper",
-        "yellow bold crosses (×) edged in black, our `paper`-preset network",
+        "yellow bold crosses (×) edged in black, the paper-recipe network",
         "reddish-purple stars",
         "bluish-green pentagons",
     ):
@@ -247,7 +247,7 @@ def _own_ratios(text: str, key: str = "strong --planner paper") -> dict[tuple[st
 
 
 def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
-    """Reader r18a: the first figure plotted the `strong` network by means (3DC-9 OB 0.72, a saving) while the verdict
+    """Reader r18a: the first figure plotted the strong network by means (3DC-9 OB 0.72, a saving) while the verdict
     reads each query's own ratio (1.24, a cost). Figure 1 is the verdict's statistic: each point a median of that
     table, its whisker the middle half, its marker what the median reads as; it comes before the figures of means,
     its picture carries its description and the page says so."""
@@ -256,7 +256,8 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
     (ax,) = fig.axes
     table = _own_ratios(TEXT)
     assert len(table) == 16 and table["3dc9", "OB"] == (1.24, 1.12, 1.36)
-    points = [line for line in ax.get_lines() if len(line.get_ydata()) == 1]
+    drawn = [line for line in ax.get_lines() if len(line.get_ydata()) == 1]
+    points = [line for line in drawn if line.get_markerfacecolor() != "none"]  # the rings are apart (below)
     filled = [line for line in points if line.get_markerfacecolor() != COLORS["free"]]  # the compiled checker's
     medians = sorted(float(line.get_ydata()[0]) for line in filled)
     assert medians == pytest.approx(sorted(m for m, _, _ in table.values()))
@@ -341,7 +342,7 @@ def test_each_figure_of_means_has_its_own_range_the_slow_run_and_counts_by_the_p
     floor = results_noise.noise(recorded_results.parse(TEXT)).means
     # reader r40f, figures: every panel's y ticks labelled; reader r41f, figures: the band's edges outside the axes,
     # beside the right-hand panels only (in the gutter they read as the right-hand panel's ticks; inside they crowded
-    # the points); the `paper`-preset series no cross, which read as the stars
+    # the points); the paper-recipe series no cross, which read as the stars
     for ax in fig.axes:
         right = ax.get_subplotspec().colspan.start == 1 and kind in results_figures.BANDED  # r48f: Figure 3 none
         assert not ax.texts and len(ax.child_axes) == right
@@ -351,7 +352,7 @@ def test_each_figure_of_means_has_its_own_range_the_slow_run_and_counts_by_the_p
         assert "X" not in {line.get_marker() for line in ax.get_lines()}
         assert ax.yaxis.get_tick_params()["labelleft"]
     names = [t.get_text() for t in fig.legends[0].get_texts()]
-    assert "ours, accurate strong network, python-fcl on both sides" in names
+    assert "ours, strong network, python-fcl on both sides" in names
     block = TEXT.partition(results_figures.FIGURE_BEGIN.format(kind=kind))[2]
     rows = re.findall(
         r"(?m)^\| (ours[^|]*|the paper[^|]*) \| 16 \| (\d+) \| (\d+) \| (\d+) \|$", block.split("<!--")[0]
@@ -455,3 +456,31 @@ def test_figure_1s_caption_states_the_edge_rule_with_its_point():
     said = results_figures.on_tie_edge(tables)
     assert said == " A point on the tie band's edge counts as beyond it: 2DS BT, at exactly 1.10, counts as a cost."
     assert said in results_figures.claim_markdown(results_figures.RESULTS.read_text())
+
+
+def test_figure_1_rings_the_points_beyond_the_noise_band_and_keys_the_fill_on_a_neutral_glyph():
+    """Reader r57f, lift item 4: the verdict a reader sees is the page's: a ring round each point beyond the noise band
+    of each query's own ratio (5 filled, 2 hollow: the counts' "beyond" column), centred on it; the fill key drawn on
+    a hexagon, no verdict's circle, square or triangle; the alt text and the longer description say which are ringed."""
+    fig = results_figures.claim_figure(TEXT)
+    (ax,) = fig.axes
+    drawn = [line for line in ax.get_lines() if len(line.get_ydata()) == 1]
+    rings = [line for line in drawn if line.get_markerfacecolor() == "none"]
+    points = {(float(line.get_xdata()[0]), float(line.get_ydata()[0])) for line in drawn if line not in rings}
+    at = {(float(line.get_xdata()[0]), float(line.get_ydata()[0])) for line in rings}
+    assert at <= points and sorted(round(y, 2) for _, y in at) == [0.72, 0.79, 1.24, 1.28, 1.5, 1.58, 1.75]
+    low, high = costs.floors(recorded_results.parse(TEXT))["own"]
+    assert all(not low < y < high for _, y in at) and all(low < y < high for _, y in points - at)
+    assert all(line.get_marker() == "o" and line.get_markersize() > 2 * query_ratios.SIZE for line in rings)
+    (legend,) = fig.legends
+    labels = [text.get_text() for text in legend.get_texts()]
+    assert results_rings.RING_LABEL in labels and len(labels) == 8 and len(set(labels)) == 8
+    keys = [line for line in ax.get_lines() if line.get_label().startswith(("filled:", "hollow:"))]
+    assert len(keys) == 2 and all(line.get_marker() == "h" for line in keys)  # not "o", "s" or "^"
+    said = alt.alt_text(fig)
+    assert "Ringed, beyond the noise band (0.82–1.18) and so clear: 5 filled points (3DC-7 OB 1.50," in said
+    assert "and 2 hollow points (3DC-9 OB 0.79, 3DO BT 0.72)." in said
+    filled, hollow = alt.parts_of(fig)
+    assert sum(cell.endswith(", ringed") for row in filled.rows for cell in row) == 5
+    assert sum(cell.endswith(", ringed") for row in hollow.rows for cell in row) == 2
+    assert "ring = clear*" in CLAIM and "ringed, beyond the noise band of this ratio: 5 filled and 2 hollow." in CLAIM

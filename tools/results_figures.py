@@ -1,5 +1,5 @@
 """The results page's three figures and their text. Figure 1, :data:`CLAIM_FIGURE`, is the statistic the verdict on
-the paper's claim reads: the `strong` network inside Algorithm 1, the median of each query's own ratio with its middle
+the paper's claim reads: the strong network inside Algorithm 1, the median of each query's own ratio with its middle
 half, with our compiled checker (filled) and with python-fcl on both sides (hollow; :data:`CLAIM_SERIES`), drawn by
 :func:`toolkit.plots.query_ratios.own_ratios`. Figures 2 and 3, :data:`FIGURES`, are Table 3's total and sampling
 columns by means, ours beside the paper's (:func:`table3_figure`, :func:`toolkit.plots.query_ratios.means_grid`).
@@ -26,6 +26,7 @@ from toolkit.teaching import checker_scope, costs, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
 from tools.results_noise import at_noise_edge, noise, own_intervals
+from tools.results_rings import beyond, ring
 from tools.results_words import NAMES, change
 
 FIGURES = {kind: RESULTS.parent / f"results_table3_{kind}.png" for kind in ("total", "sampling")}  # Table 3's columns
@@ -42,9 +43,9 @@ KEY = (  # under Figure 2 (reader r31f, item 3): its marks are not Figure 1's ve
     # reader r44f, item 9: each series named by its shape; reader r47f, item 5: its crosses yellow, not orange;
     # reader r50f, item 5: a fill colour (black outlines every mark)
     " Here colour and shape name a series, not a verdict as in Figure 1: grey diamonds, the paper; yellow bold "
-    "crosses (×) edged in black, our `paper`-preset network; reddish-purple stars, the `strong` network with our "
+    "crosses (×) edged in black, the paper-recipe network; reddish-purple stars, the strong network with our "
     "compiled checker; "
-    "bluish-green pentagons, the `strong` network with python-fcl."
+    "bluish-green pentagons, the strong network with python-fcl."
 )
 CLAIM_FIGURE = RESULTS.parent / "results_claim.png"  # Figure 1: the statistic the verdict on the paper's claim reads
 CLAIM_BEGIN = "<!-- figure of the claim: drawn by `python -m tools.results_summary` from the tables below -->"
@@ -59,9 +60,9 @@ WIDTH = 6.35  # inches, Figures 2-3: at FIGURE_DPI, cropped, the site's column (
 SOURCES = {  # a series of the figure: its preset in the tables (None: the paper's own numbers) and its name; the
     # 1-2 December run with python-fcl is history, left out (review r27f, item 5: five series were 80 markers)
     "the paper's reported results (Table 3)": None,
-    "ours, paper-preset network, compiled checker of 2 December": "paper",
-    "ours, accurate strong network, compiled checker of 5 December": recorded.ALGORITHM_1,
-    "ours, accurate strong network, python-fcl on both sides": checker_scope.SLOW,
+    "ours, paper-recipe network, compiled checker of 2 December": "paper",
+    "ours, strong network, compiled checker of 5 December": recorded.ALGORITHM_1,
+    "ours, strong network, python-fcl on both sides": checker_scope.SLOW,
 }
 
 
@@ -145,16 +146,17 @@ PENTAGON_IN = {"total": 0.9, "sampling": 1.0}  # reader r54f, item 4: Figure 2's
 LOOKS = {  # reader r42f, figures: no blue (Figure 1's "costs time") and no square-like plus (its "tie" square)
     # reader r43f, figures: python-fcl's orange downward triangle read as Figure 1's black "saves" triangle, its orange
     # as Figure 1's vermillion "tie": now a colour and a shape Figure 1 never uses, bluish green pentagons; the
-    # paper-preset series takes the orange, as a thin cross, a shape no Figure 1 square or triangle resembles
+    # paper-recipe series takes the orange, as a thin cross, a shape no Figure 1 square or triangle resembles
     # reader r47f, item 5: orange still read as Figure 1's vermillion "tie"; now yellow, edged in black
-    "ours, paper-preset network, compiled checker of 2 December": (OKABE_ITO["yellow"], "x"),  # yellow, bold cross
-    "ours, accurate strong network, python-fcl on both sides": (LINE_COLORS[3], "p"),  # bluish green, pentagon
-}  # the other two keep means_grid's look: the paper's grey diamonds, the `strong` network's reddish purple stars
+    "ours, paper-recipe network, compiled checker of 2 December": (OKABE_ITO["yellow"], "x"),  # yellow, bold cross
+    "ours, strong network, python-fcl on both sides": (LINE_COLORS[3], "p"),  # bluish green, pentagon
+}  # the other two keep means_grid's look: the paper's grey diamonds, the strong network's reddish purple stars
 CROSS_WIDTH = 2.4  # points: a cross is all edge, drawn this thick (bold, as the key says) beside the filled markers
 CROSS_SCALE = 1.5  # a bold cross's arms fill less of its box than a filled marker: drawn this much larger (reader
 # r48f, figures: at 1.15 the crosses read as yellow blobs at 1280 px)
 CROSS_EDGE = 0.7  # points: the yellow cross's black edge, so it stands 3:1 on white (yellow alone is 1.2:1)
-STAR_SCALE = 1.3  # reader r53f, figures: the `strong` network's stars were the smallest marks, the verdict's series
+STAR_SCALE = 1.3  # reader r53f, figures: the strong network's stars were the smallest marks, the verdict's series
+PENTAGON_SCALE = 1.1  # reader r57f, Figure 2: python-fcl's pentagons read smaller than the other marks
 MARKER_Z = 4  # over every band and hatch (reader r42f: Figure 3's hatching read as covering the markers inside it)
 TIE_TICKS = {"total": False, "sampling": False}  # reader r42f: 0.9 and 1.1 crowd the "1"; the legend names them
 
@@ -164,7 +166,7 @@ def readable(fig: Figure, floor: tuple[float, float] | None, kind: str = "total"
     markers a little smaller, so that neighbouring ones (Figure 2's 2DS BS, Figure 3's 2DS BT) stand apart. Reader
     r41f, figures: the noise band's edges outside the axes, on the right of the right-hand panels only (in the gutter
     they read as the next panel's ticks; inside they crowded the points), the tie band's edges 0.9 and 1.1 on the left
-    where they stand apart (:data:`TIE_TICKS`), and the `paper`-preset series a shape of its own (:data:`SHAPES`)."""
+    where they stand apart (:data:`TIE_TICKS`), and the paper-recipe series a shape of its own (:data:`SHAPES`)."""
     for ax in (ax for ax in fig.axes if ax.get_visible()):
         for child in list(ax.child_axes):  # means_grid's labels of the band's edges, redrawn below
             child.remove()
@@ -172,9 +174,10 @@ def readable(fig: Figure, floor: tuple[float, float] | None, kind: str = "total"
         for line in ax.lines:
             if line.get_marker() not in ("None", None, ""):
                 star = STAR_SCALE if line.get_marker() == "*" else 1.0  # reader r53f: the verdict's series
-                line.set_markersize(line.get_markersize() * MARKER_SCALE[kind] * star)
-                x = [float(v) for v in np.asarray(line.get_xdata())]
                 pentagon = LOOKS.get(str(line.get_label()), ("", ""))[1] == "p"  # before restyle draws it so
+                scale = MARKER_SCALE[kind] * star * (PENTAGON_SCALE if pentagon else 1.0)
+                line.set_markersize(line.get_markersize() * scale)
+                x = [float(v) for v in np.asarray(line.get_xdata())]
                 spread = SPREAD[kind] * (PENTAGON_IN[kind] if pentagon else 1.0)
                 line.set_xdata([round(v) + (v - round(v)) * spread for v in x])
                 line.set_zorder(MARKER_Z)
@@ -200,6 +203,8 @@ def readable(fig: Figure, floor: tuple[float, float] | None, kind: str = "total"
             restyle(handle, label.get_text())
             if handle.get_marker() == "*":  # the key's star as large as the panels' (reader r53f, figures)
                 handle.set_markersize(handle.get_markersize() * STAR_SCALE)
+            if handle.get_marker() == "p":  # the key's pentagon as the panels' (reader r57f, Figure 2)
+                handle.set_markersize(handle.get_markersize() * PENTAGON_SCALE)
         if floor is not None and label.get_text().startswith("noise band"):  # reader r48f, figures: said once
             handle.set_edgecolor(HATCHED["edgecolor"])  # type: ignore[union-attr]  # as the panels' hatch
             label.set_text(f"{label.get_text()} in every panel")
@@ -229,7 +234,7 @@ def clear_of_paper(ax, floor: tuple[float, float]) -> None:
 
 PAPER = next(name for name, preset in SOURCES.items() if preset is None)  # the paper's own series
 NOISE_EDGE = "--"  # reader r51f, item 5: a noise band's edges dashed, as Figure 1's; dotted means the tie band only
-HATCH_ALPHA = 0.4  # reader r53f, figures: the hatch filled most of every panel and drowned the points; lighter now
+HATCH_ALPHA = 0.6  # reader r53f, figures: at 1 the hatch drowned the points; reader r57f: at 0.4 it was faint
 HATCHED = dict(
     facecolor="none",
     edgecolor=(*to_rgb(COLORS["reference"]), HATCH_ALPHA),
@@ -261,15 +266,18 @@ def claim_figure(text: str) -> Figure:
     """Figure 1: what the verdict on the paper's claim reads (:func:`accurate_in_algorithm_1`), the median of each
     query's own ratio with its middle half, per scenario and sampler (:func:`toolkit.plots.query_ratios.own_ratios`)."""
     tables = parse(text)
-    return query_ratios.own_ratios(
-        own_intervals(tables),
+    fast, slow = own_intervals(tables), own_intervals(tables, checker_scope.SLOW)
+    fig = query_ratios.own_ratios(
+        fast,
         title=CLAIM_TITLE,
         tie=findings.TIE,
-        slow=own_intervals(tables, checker_scope.SLOW),
+        slow=slow,
         series=CLAIM_SERIES,
         edge=costs.noise_edge(tables),  # review r30f, item 2: the noise edge drawn, not only named
         width=CLAIM_WIDTH,
     )
+    # reader r57f, lift item 4: the points beyond the noise band ringed, the fill key on a neutral hexagon
+    return ring(fig, fast, slow, costs.floors(tables)["own"], CLAIM_TITLE)
 
 
 def claim_markdown(text: str) -> str:
@@ -281,14 +289,15 @@ def claim_markdown(text: str) -> str:
         f"{cell} (hollow)" for cell in at_noise_edge(own_intervals(tables, checker_scope.SLOW), tables)
     ]
     lead = (  # review r28f, item 1: the title over the plot, the caption under it, so the figure fits one screen
-        "**Figure 1: the paper's claim, as the verdict reads it**: the accurate `strong` network inside Algorithm 1, "
+        "**Figure 1: the paper's claim, as the verdict reads it**: the strong network inside Algorithm 1, "
         "each query's total time with prediction over its own time without."
     )
     caption = (  # review r29f, item 1: the caption and the noise floor one paragraph under the plot
         "Each point is a cell: the median of those ratios over its 100 queries (each scenario's four samplers plan "
-        "the same 100 queries), its whisker their middle half. *Shape and colour = verdict, fill = checker*: "
-        "filled, our compiled checker; hollow, python-fcl on both sides. The fold “The counts by each statistic”, "
-        "under this figure, counts these points (its columns “by own ratio”)."
+        "the same 100 queries), its whisker their middle half. *Shape and colour = verdict, fill = checker, ring = "
+        "clear*: filled, our compiled checker; hollow, python-fcl on both sides (the legend's grey hexagons name the "
+        f"checker only); ringed, beyond the noise band of this ratio: {ringed(tables)}. The fold “The counts by each "
+        "statistic”, under this figure, counts these points (its columns “by own ratio”)."
         + on_tie_edge(tables)
         + unused_looks(tables)
     )
@@ -303,6 +312,13 @@ def claim_markdown(text: str) -> str:
     described = alt.details_html(alt.details(fig)).strip()
     picture = f"![{html.escape(alt.alt_text(fig))}]({CLAIM_FIGURE.name})"
     return f"{lead}\n\n{picture}\n\n{caption}{edge_said}\n\n{described}"
+
+
+def ringed(tables: Tables) -> str:
+    """Reader r57f, lift item 4: how many points Figure 1 rings, each checker's: ``"5 filled and 2 hollow"``."""
+    band = costs.floors(tables)["own"]
+    fast, slow = (len(beyond(own_intervals(tables, key), band)) for key in (recorded.ALGORITHM_1, checker_scope.SLOW))
+    return f"{fast} filled and {slow} hollow"
 
 
 def on_tie_edge(tables: Tables) -> str:
@@ -356,7 +372,7 @@ def means_not_verdict(tables: Tables) -> str:
     name, sampler, mean, median = furthest_apart(tables)
     return (
         " Figures 2 and 3 show means, Table 3's statistic; the verdict on the paper's claim reads each query's own "
-        f"ratio (Figure 1): the `strong` network's {name} {sampler}, for one, is {mean:.2f} by means here and "
+        f"ratio (Figure 1): the strong network's {name} {sampler}, for one, is {mean:.2f} by means here and "
         f"{median:.2f} by the median of each query's own ratio there."
     )
 
@@ -374,7 +390,7 @@ def spread_without(tables: Tables, key: str) -> dict[tuple[str, str], tuple[floa
 
 
 def stars_below(tables: Tables) -> str:
-    """Reader r56f, item 4: under Figure 2, why the `strong` network's compiled-checker cells that save 10 % or more
+    """Reader r56f, item 4: under Figure 2, why the strong network's compiled-checker cells that save 10 % or more
     by means do not contradict the verdict by each query's own ratio: the means band holds them, and a mean weighs a
     few long queries (the cells whose queries without prediction spread wider than their mean); empty where none."""
     key = recorded.ALGORITHM_1
@@ -395,7 +411,7 @@ def stars_below(tables: Tables) -> str:
     named = ", ".join(f"{NAMES.get(s, s)} {sampler} {means[(s, sampler)]:.2f}" for s, sampler in below)
     owns = ", ".join(f"{own[s][sampler]:.2f}" for s, sampler in below)
     said = (
-        f"By means the reddish-purple stars (the `strong` network, our compiled checker) save 10 % or more in "
+        f"By means the reddish-purple stars (the strong network, our compiled checker) save 10 % or more in "
         f"{len(below)} cells ({named}), where by each query's "
         f"own ratio the same run saved time in {saved} of {len(means)} (these {len(below)}: {owns}): "
         + (
@@ -419,12 +435,12 @@ def stars_below(tables: Tables) -> str:
 
 
 def sampling_takeaway(counts: dict[str, list[str]]) -> str:
-    """Figure 3's one line on what it shows (reader r37f, item 7): how many cells the `strong` network's sampling got
+    """Figure 3's one line on what it shows (reader r37f, item 7): how many cells the strong network's sampling got
     shorter with python-fcl, and longer with our compiled checker, by the 10 % rule."""
     slow = next(words for name, words in counts.items() if "strong" in name and "python-fcl" in name)
     fast = next(words for name, words in counts.items() if "strong" in name and "compiled" in name)
     return (
-        f"It shows the `strong` network shortening sampling in {slow.count('less time')} of {len(slow)} cells with "
+        f"It shows the strong network shortening sampling in {slow.count('less time')} of {len(slow)} cells with "
         f"python-fcl and lengthening it in {fast.count('more time')} of {len(fast)} with our compiled checker."
     )
 

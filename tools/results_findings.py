@@ -30,9 +30,9 @@ VERDICTS = {  # lazy_prm's; reader r53f, item 4: "no typical-query saving", not 
 
 def lazy_prm(tables: Tables) -> str:
     """Against the lazy PRM, one sentence a network (reader r33f, item 5: "Counting ... rarely: 1 of 32" could not be
-    read at once): the accurate `strong` network's cells by the ratio of the two medians, then our `paper`-preset
+    read at once): the strong network's cells by the ratio of the two medians, then our `paper`-preset
     network's savings beyond that ratio's noise floor (its planner with prediction is Algorithm 1); one statistic
-    (reader r36f, item 8: the `strong` network's mean saving on 2DS OB is told under "Means and medians")."""
+    (reader r36f, item 8: the strong network's mean saving on 2DS OB is told under "Means and medians")."""
     groups = {
         preset: grouped({s: kinds["total"] for s, kinds in recorded.median_ratios(preset, tables).items()})
         for preset in ("strong", "paper")
@@ -43,7 +43,7 @@ def lazy_prm(tables: Tables) -> str:
     floor = medians_floor(tables)
     beyond = [(name, r) for name, r in groups["paper"]["less time"] if floor is None or not costs.inside(r, floor)]
     known = any("MLP accuracy" in heading for heading in tables.get("paper", {}))
-    invalid = {  # reader r38f, contradiction 5: where the `paper` MLP answers "invalid" to every sample
+    invalid = {  # reader r38f, contradiction 5: where the paper-recipe MLP answers "invalid" to every sample
         NAMES.get(s, s)
         for s, row in (recorded.table("paper", "MLP accuracy", tables) if known else {}).items()
         if recorded.ours(row["Unseen TPR"]) == 0
@@ -67,7 +67,7 @@ def lazy_prm(tables: Tables) -> str:
         f"{VERDICTS[answer]}.** By the ratio of the two modes' median times (the `strong` section's "
         f"medians table), it took {told(groups['strong'])}{means_beside(tables)}.{costs_far(groups, floor)}"
         f"{means_apart(tables)}"
-        "\n\n    Our `paper`-preset network is no test of the method against the lazy PRM: its planner with prediction "
+        "\n\n    The paper-recipe network is no test of the method against the lazy PRM: its planner with prediction "
         "is Algorithm 1, so planner and "
         f"prediction both change. It saved time{floor_said} in {len(beyond) or 'none'} of "
         f"{sum(map(len, groups['paper'].values()))}{named}.\n"
@@ -139,7 +139,7 @@ def means_apart(tables: Tables) -> str:
 
 
 def algorithm_1(tables: Tables) -> str:
-    """Our `paper`-preset network against the paper's Algorithm 1, Table 3's means counted (the page's section on the
+    """The paper-recipe network against the paper's Algorithm 1, Table 3's means counted (the page's section on the
     `paper` preset points here rather than count again)."""
     ours = {
         s: recorded.improvements("paper", s, recorded=tables)
@@ -153,9 +153,9 @@ def algorithm_1(tables: Tables) -> str:
         if column.startswith("Total")
     ]
     return (
-        "**Against the paper's Algorithm 1, our `paper`-preset network "
+        "**Against the paper's Algorithm 1, the paper-recipe network "
         f"{'saves time in some cells, but not by the method' if 'less time' in verdicts else 'saves no time'}"
-        ".** By the `paper` section's Table 3, of means, our `paper`-preset network saved 10 % or more of a query's "
+        ".** By the `paper` section's Table 3, of means, the paper-recipe network saved 10 % or more of a query's "
         f"time in {verdicts.count('less time')} of {len(verdicts)} cells, "
         f"lost 10 % or more in {verdicts.count('more time')} and tied in {verdicts.count('about the same time')} "
         f"(the paper: savings of up to {percent(max(papers))} %){beyond_floor(ours, tables)}. With the MLP above, "
@@ -295,15 +295,15 @@ def dear_savings(tables: Tables, preset: str = recorded.ALGORITHM_1) -> dict[str
 
 def cost_exception(tables: Tables) -> str:
     """Reader r56f, item 2: after the cost argument of the runs of 5 December, the cells it does not explain named
-    (their sampling took less time with a dearer network), with the `paper` preset's run where that saved there too;
-    empty where there are none."""
+    (their sampling took less time with a dearer network), with the paper-recipe network's run where that saved there
+    too; empty where there are none."""
     strong, paper = dear_savings(tables), dear_savings(tables, "paper")
     if not strong:
         return ""
     said = " and ".join(
         f"{cell}'s sampling, {round((1 - r) * 100)} % less time"
         + (
-            f" (with the `paper` preset's network of 2 December, {round((1 - paper[cell]) * 100)} % less)"
+            f" (with the paper-recipe network of 2 December, {round((1 - paper[cell]) * 100)} % less)"
             if cell in paper
             else ""
         )
@@ -335,9 +335,9 @@ def smaller_said(tables: Tables) -> str:
         return ""
     return (
         " Whether prediction can save time turns on what the network costs, and that depends on the network: the "
-        "`paper` preset's "
-        f"smaller network cost {span(cheaper, lambda c: f'{c:.2g}')} times an exact check in 3D (in its run of 2 "
-        "December, against that day's slower compiled checker), but it is not accurate (the MLP's finding, below)."
+        f"smaller paper-recipe network cost {span(cheaper, lambda c: f'{c:.2g}')} times an exact check in 3D (in its "
+        "run of 2 December, against that day's slower compiled checker), but it is not accurate (the MLP's finding, "
+        "below)."
     )
 
 
@@ -365,9 +365,10 @@ def cleared_said(tables: Tables, cleared: list[tuple[str, float]]) -> str:
 
 
 def paper_sampling(tables: Tables) -> str:
-    """Reader r40f, contradiction 4: the `paper`-preset run of 2 December lost sampling time although its network was
-    no dearer per check in 3D; one sentence on why (a network that answers "invalid" to every sample of a scenario
-    keeps no sample in its round); empty where that network was dearer somewhere in 3D or answers so nowhere."""
+    """Reader r40f, contradiction 4: the paper-recipe network's run of 2 December lost sampling time although its
+    network was no dearer per check in 3D; one sentence on why (a network that answers "invalid" to every sample of a
+    scenario keeps no sample in its round); empty where that network was dearer somewhere in 3D or answers so
+    nowhere."""
     named = {NAMES.get(s, s): c for s, c in network_costs(tables, "paper").items() if s != "2ds"}
     costs_ = list(named.values())
     ratios = [
@@ -402,7 +403,7 @@ def paper_sampling(tables: Tables) -> str:
     others = [f"{name} {sampler} {r:.2f}" for name, sampler, r in lost if name not in invalid and name not in dear]
     dearer = "".join(
         f" In {name} its network was {c:.2g} times as dear as an exact check per configuration: that explains its "
-        f"{len(by_cost)} {'loss' if len(by_cost) == 1 else 'losses'} in {name}, as for the `strong` network"
+        f"{len(by_cost)} {'loss' if len(by_cost) == 1 else 'losses'} in {name}, as for the strong network"
         + "".join(
             f". {cell}'s sampling, which took {round((1 - r) * 100)} % less time, is the exception with both networks"
             for cell, r in dear_savings(tables, "paper").items()
@@ -413,7 +414,7 @@ def paper_sampling(tables: Tables) -> str:
     )
     read = (  # reader r54f, item 2: in plain view, which of the losses each reading explains, and which none does
         [f"{len(by_cost)} in {' and '.join(dear)} by the network's cost"] * bool(by_cost)
-        + [f"{len(by_rounds)} in {' and '.join(invalid)} by first rounds that keep no sample"] * bool(by_rounds)
+        + [f"{len(by_rounds)} in {' and '.join(invalid)} where it rejects every sample"] * bool(by_rounds)
         + [f"{', '.join(others)} unexplained"] * bool(others)
     )
     left = (
@@ -424,7 +425,7 @@ def paper_sampling(tables: Tables) -> str:
     )
     # reader r43f, contradictions 5 and 6: what ends the rounds, and which of the losses that explains
     return (
-        f"**Why the `paper`-preset run of 2 December lost sampling time in {slower[2]} of {sum(slower)} cells: "
+        f"**Why the paper-recipe network's run of 2 December lost sampling time in {slower[2]} of {sum(slower)} cells: "
         f"{', '.join(read)}.**"
         f"{dearer} In "
         f"3D its network was no dearer than an exact check (cost per configuration: {', '.join(said)}). There it "
@@ -436,7 +437,7 @@ def paper_sampling(tables: Tables) -> str:
 
 
 def unexplained(ratios: list[tuple[str, str, float]], invalid: list[str]) -> str:
-    """Reader r50f, contradiction 4: the cells of the scenarios where the `paper` MLP answers "invalid" to every
+    """Reader r50f, contradiction 4: the cells of the scenarios where the paper-recipe MLP answers "invalid" to every
     sample that did not lose sampling time, which the reading by rounds leaves out (``ratios``: ``(scenario, sampler,
     sampling ratio of means)``); empty where there are none."""
     kept = [(n, sampler, r) for n, sampler, r in ratios if n in invalid and change(r) != "more time"]
@@ -658,7 +659,7 @@ def moved_beyond(tables: Tables, fast: list[Apart], slow: list[Apart]) -> str:
 def summary(tables: Tables, table_3: str = "") -> str:
     """The findings ("What reproduces and what does not"), without their markers: why the summary's verdict comes out
     as it does (:func:`why_no_saving`), the paper's networks (Tables 1 and 2, with :func:`unseen_table`), and the
-    answers against the lazy PRM and against Algorithm 1 with our `paper`-preset network; no count the summary gives
+    answers against the lazy PRM and against Algorithm 1 with the paper-recipe network; no count the summary gives
     is said again (review r27f, item 2)."""
     items = [  # reader r54f, item 3: what reproduces first, then why
         *(table_3.split("\n- ") if table_3 else []),  # reader r47f, item 1: the counts by means, moved from the answer
@@ -700,7 +701,17 @@ def named(claim: str) -> str:
     """A finding's name in the fold under the findings: its bold claim up to a colon, or, if longer than 60
     characters, up to its first comma: ``"Against the lazy PRM"``."""
     name = claim.partition(":")[0]
+    for start, other in FOLD_NAMES.items():  # reader r57f, item 3: no fold paragraph repeats a bold heading
+        if name.startswith(start):
+            return other
     return name.partition(",")[0] if len(name) > 60 else name
+
+
+FOLD_NAMES = {  # a finding whose fold opens on another claim than its bold heading's, named for what the fold says
+    "Why the paper-recipe network's run of 2 December": (
+        "The run of 2 December, cell by cell: 2DS BT, then the 3D losses"
+    ),
+}
 
 
 def brief(item: str) -> tuple[str, str, str]:

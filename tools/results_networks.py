@@ -18,7 +18,7 @@ from tools.results_words import NAMES, percent, span
 
 
 def cae_unseen(tables: Tables) -> tuple[list[float], list[float], float]:
-    """The `paper` CAE's accuracy on unseen grids and a CAE answering "free" everywhere's, per scenario (Table 1),
+    """The paper-recipe CAE's accuracy on unseen grids and a CAE answering "free" everywhere's, per scenario (Table 1),
     and the most the first beats the second by (0 or less: no better)."""
     rows = recorded.table("paper", "CAE reconstruction", tables)
     ours = [recorded.ours(row["Unseen"]) for row in rows.values()]
@@ -37,7 +37,7 @@ def cae(tables: Tables) -> str:
     )
     return (
         f"**The CAE (Table 1): {'no better than' if round(gain * 100) <= 0 else 'barely better than'} answering "
-        f"“free” everywhere.** The `paper` CAE reconstructs unseen workspaces at "
+        f"“free” everywhere.** The paper-recipe CAE reconstructs unseen workspaces at "
         f"{span(ours)} % of their cells "
         f"(the paper: {span(papers)} %), {than_free} ({span(free)} %)."
     )
@@ -77,8 +77,8 @@ def above_always_valid(scores: dict[str, float], rounded: float = 0.005) -> Impl
 
 
 def mlp_unseen(tables: Tables) -> tuple[list[float], list[float], list[float]]:
-    """The `paper` MLP's accuracy on unseen workspaces' validity-blind samples, answering "valid" to every one of them,
-    and the paper's unseen accuracy, per scenario (Table 2): like with like (reader r47f, contradiction 4)."""
+    """The paper-recipe MLP's accuracy on unseen workspaces' validity-blind samples, answering "valid" to every one of
+    them, and the paper's unseen accuracy, per scenario (Table 2): like with like (reader r47f, contradiction 4)."""
     rows = recorded.table("paper", "MLP accuracy", tables)
     blind = [recorded.ours(row["Unseen Acc"]) for row in rows.values()]
     always = [recorded.ours(row["Unseen always valid"]) for row in rows.values()]
@@ -101,15 +101,15 @@ def mlp(tables: Tables) -> str:
     )
     return (  # reader r47f, contradiction 4: the paper's accuracy beside ours on the same kind of samples; reader
         # r53f, item 4: a short bold claim, then one sentence with ours, the trivial answer's and the paper's
-        f"**The MLP (Table 2): our rebuild of the paper's MLP is {headline}; the `strong` one is right "
-        f"{span(balanced(recorded.ALGORITHM_1))} % of the time.** On our validity-blind samples, the `paper` MLP is "
-        f"right {span(blind)} % and answering “valid” to every sample {span(always)} %, where the paper reports "
+        f"**The MLP (Table 2): the paper-recipe network's MLP is {headline}; the strong network's is right "
+        f"{span(balanced(recorded.ALGORITHM_1))} % of the time.** On our validity-blind samples, the paper-recipe MLP "
+        f"is right {span(blind)} % and answering “valid” to every sample {span(always)} %, where the paper reports "
         f"{span(papers)} % on unseen samples drawn, as we read §IV-A, “regardless of their validity”, their valid "
         "share not given. Our samples are drawn that way too "
         "([chapter 03](../notebooks/03_mlp_decision_boundaries.ipynb)). "
         "On unseen workspaces' balanced samples (half of them valid; the paper reports none) our rebuild is at "
-        f"chance: right {span(balanced('paper'))} % of the time, where a coin flip is right 50 %; the `strong` MLP "
-        f"of Figure 1 {span(balanced(recorded.ALGORITHM_1))} %."
+        f"chance: right {span(balanced('paper'))} % of the time, where a coin flip is right 50 %; the strong network's "
+        f"MLP of Figure 1 {span(balanced(recorded.ALGORITHM_1))} %."
     )
 
 
@@ -130,18 +130,18 @@ def unseen_table(tables: Tables) -> str:
     lines = [
         row("unseen workspaces, % right", [NAMES.get(s, s) for s in scenarios]),
         row("---", ["---"] * len(scenarios)),
-        row("CAE, `paper` preset / the paper", [pair(cae_rows["paper"][s]["Unseen"]) for s in scenarios]),
+        row("CAE, paper-recipe network / the paper", [pair(cae_rows["paper"][s]["Unseen"]) for s in scenarios]),
         row(
             "CAE answering “free” everywhere",
             [percent(recorded.ours(cae_rows["paper"][s]["all free: Seen / Unseen"].split("/")[-1])) for s in scenarios],
         ),
-        row("MLP, `paper` preset / the paper", [pair(mlp_rows["paper"][s]["Unseen Acc"]) for s in scenarios]),
+        row("MLP, paper-recipe network / the paper", [pair(mlp_rows["paper"][s]["Unseen Acc"]) for s in scenarios]),
         row(
             "MLP answering “valid” to every one of our samples",  # reader r50f, item 3: not the paper's samples
             [percent(recorded.ours(mlp_rows["paper"][s]["Unseen always valid"])) for s in scenarios],
         ),
         row(
-            "MLP on balanced samples, `paper` / `strong` preset of Figure 1 (5 December; a coin flip: 50)",
+            "MLP on balanced samples, paper-recipe / strong network (5 December; a coin flip: 50)",
             [
                 f"{percent(recorded.ours(mlp_rows['paper'][s]['Balanced unseen Acc']))} / "
                 f"{percent(recorded.ours(mlp_rows[recorded.ALGORITHM_1][s]['Balanced unseen Acc']))}"
@@ -151,9 +151,9 @@ def unseen_table(tables: Tables) -> str:
     ]
     return (  # reader r31f, contradiction 3: what "/" means, said at the table
         "*Tables 1 and 2 on unseen workspaces*, each network's row read against the answer in the row under it. A "
-        "cell “A / B” is ours / the paper's, except in the last row, where it is the `paper` preset's / the `strong` "
-        "preset's (the paper gives no balanced figures). The paper's Table 1 has one 3DC row, shown under both 3DC-7 "
-        "and 3DC-9.\n\n" + "\n".join(lines)  # r33f, 7
+        "cell “A / B” is ours / the paper's, except in the last row, where it is the paper-recipe network's / the "
+        "strong network's (the paper gives no balanced figures). The paper's Table 1 has one 3DC row, shown under "
+        "both 3DC-7 and 3DC-9.\n\n" + "\n".join(lines)  # r33f, 7
     )
 
 
@@ -168,7 +168,7 @@ def above_papers(ours: list[float], papers: list[float], scenarios: list[str]) -
 
 def reproduces_said(tables: Tables) -> tuple[str, str]:
     """Reader r55f, item 3: the "What reproduces" cells of Tables 1 and 2. "No" said as "no better than the trivial
-    answer" (some of our raw figures equal or beat the paper's, named), and the `paper` MLP at chance on seen 3D
+    answer" (some of our raw figures equal or beat the paper's, named), and the paper-recipe MLP at chance on seen 3D
     workspaces too; every number computed."""
     cae_rows = recorded.table("paper", "CAE reconstruction", tables)
     mlp_rows = recorded.table("paper", "MLP accuracy", tables)

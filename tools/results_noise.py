@@ -27,7 +27,7 @@ def medians_floor(tables: Tables) -> tuple[float, float] | None:
 
 
 def own_intervals(tables: Tables, key: str = recorded.ALGORITHM_1) -> dict[str, dict[str, tuple[float, float, float]]]:
-    """The `strong` network inside Algorithm 1 (``key``: with our compiled checker, or :data:`checker_scope.SLOW`), its
+    """The strong network inside Algorithm 1 (``key``: with our compiled checker, or :data:`checker_scope.SLOW`), its
     table "each query's own ratio": ``{scenario name: {sampler: (median, q1, q3)}}`` of each query's total time with /
     without prediction."""
     found: dict[str, dict[str, tuple[float, float, float]]] = {}
@@ -156,7 +156,7 @@ def bands(tables: Tables) -> str:
 
 
 def costs_far(groups: dict, floor: tuple[float, float] | None) -> str:
-    """Reader r46f, item 6: the accurate network's costs against the lazy PRM read against the noise band of a ratio
+    """Reader r46f, item 6: the strong network's costs against the lazy PRM read against the noise band of a ratio
     of medians too, those inside it named; empty where no band is known."""
     dearer = groups["strong"]["more time"]
     near = [f"{name} {r:.2f}" for name, r in dearer if floor is not None and costs.inside(r, floor)]
