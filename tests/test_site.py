@@ -344,9 +344,10 @@ def test_the_index_opens_in_short_sentences():
         # sentences a student can repeat, "whole query" in the question, no term before the box that defines it
         "**The question:** does a learned collision check, even an accurate one, save a planner time on a whole "
         "query? **The answer: for a whole query, no. "
-        f"In {unsaved} of {cells} cases our accurate network saved no time beyond timing noise, and in {costly} it "
-        "cost time. It cuts the sampling stage when the exact check is slow, but sampling is too small a share of a "
-        f"query to matter.** The {cells} cases are 16 pairs of a scenario and a sampler, each timed with two exact "
+        f"In {unsaved} of {cells} cases, compared query by query, our accurate network saved no time beyond timing "
+        f"noise, and in {costly} it cost time. It cuts the sampling stage when the exact check is slow, but sampling "
+        f"is too small a share of a query to matter.** The {cells} cases are 16 pairs of a scenario and a sampler, "
+        "each timed with two exact "
         'checkers. The box "How to read the ratios", below, says how each is scored.'
     )  # each clause counted by test_the_index_gives_one_statistic_a_line_behind_its_answer
     box = opening.partition("> **How to read the ratios**\n>\n")[2].partition("\n\n")[0]
