@@ -638,16 +638,18 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     # reader r41e, home 2: the counts said once, in the caption, by the figure's two bands; the clear cells named here
     assert (  # reader r48e, home 3: the caption says what the legend does not (the bands' edges are in the legend)
         f"Triangles mark medians of 0.90 or less: {len(fell)} of 16 hollow points (python-fcl) and 0 filled. Circles "
-        f"mark medians of 1.10 or more: {len(costs)} of 16 filled points and 0 hollow. Beyond the noise band lie "
-        f"{len(clear)} of the triangles and {len(costs) - len(edged)} of the circles; {NAMES[near[0]]} {near[1]}'s "
-        f"circle, at {near[2]:.2f}, lies just inside it. The table below counts those beyond it as saved or cost, the "
-        f"other circles and triangles as within noise. Those {len(clear)} triangles are python-fcl's; its run was "
-        "not timed twice, so it "  # reader r55e, home C6: "the rest" named
+        f"mark medians of 1.10 or more: {len(costs)} of 16 filled points and 0 hollow. A ring marks a point beyond "
+        f"the noise band: {len(clear)} of the triangles and {len(costs) - len(edged)} of the circles; "
+        f"{NAMES[near[0]]} {near[1]}'s circle, at {near[2]:.2f}, lies just inside it. The table below counts the "
+        "ringed points as saved or cost, the other circles and triangles as within noise. The "
+        f"{len(clear)} ringed triangles are python-fcl's; its run was not timed twice, so it "  # r57e, home lift 2
         "borrows this band from the compiled run.*"  # common47 rule 4, r47e: the borrowed band where its count is given
     ) in answer
     alt_said = (  # reader r51e, home figure 1: the alt text says what each shape means, with the caption's counts
         f"Circles mark medians of 1.10 or more: {len(costs)} filled, 0 hollow. Squares mark the tie band. Triangles "
-        f"mark medians of 0.90 or less: 0 filled, {len(fell)} hollow.](docs/results_claim.png)"
+        f"mark medians of 0.90 or less: 0 filled, {len(fell)} hollow. A ring marks each point beyond the noise band: "
+        f"{len(costs) - len(edged)} filled circles and {len(clear)} hollow triangles. The fill key's grey hexagons "
+        "name the checker only.](docs/results_claim.png)"  # reader r57e, home lift 2: Figure 1's rings (helper r)
     )
     assert alt_said in answer
     legend = f"noise band of this ratio, {1 - NOISE_EDGE * reach:.2f}–{1 + NOISE_EDGE * reach:.2f}"
@@ -839,7 +841,7 @@ def test_the_index_gives_one_statistic_a_line_behind_its_answer():
 
     edge = (1 - noise_edge(tables), 1 + noise_edge(tables))
     clear = [r for row in recorded.query_ratios(fcl, tables).values() for r in row.values() if r < edge[0]]
-    evidence = f"Beyond the noise band lie {len(clear)} of the triangles"
+    evidence = f"A ring marks a point beyond the noise band: {len(clear)} of the triangles"
     floor = measured(tables).own  # reader r42e, home 1: twice timing's reach, not "as far as timing alone could put"
     defined = (  # wave 24: one rule for every noise band, said once, then this median's band
         # reader r56e, home 2: the rule holds with the borrowed band, said in the rule
