@@ -1442,7 +1442,7 @@ def _chapter_05_answer(found: str, measured: list[list[str]], scored: list[list[
     row = [r for r in scored if r[0].startswith(chapter05_accuracy.TIMED_ROW)]  # reader r29e: the timed network's row
     if pair is None or not row or [row[0][1].strip("*"), row[0][-1]] != [f"{v}%" for v in pair.groups()]:
         problems.append(f"05: the answer's accuracy pair is not a row of the accuracy table: {pair and pair.groups()}")
-    medians = [r for r in measured if r[0] == chapter05.MEDIANS_ROW]  # reader r46e: it names its checker
+    medians = [r for r in measured if r[0] == chapter05.MEDIANS_ROW]  # r57e, 05 item 1: the lazy PRM's, by medians
     band = costs.floors()["medians"]  # wave 24: one rule for every band (twice timing's own reach, read strictly)
     for r in medians[:1] or [["missing"]]:
         for cell in r[1:] or ["missing"]:

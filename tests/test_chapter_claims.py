@@ -1504,7 +1504,7 @@ def chapter_05(
     ``of_medians`` in Algorithm 1 read against timing noise (reader r24b); the closing's ``paper_side``
     (``chapter05._paper_side()``) and the answer's ``costs`` (``chapter05.check_costs()``), readers r29e, r30e."""
     strong = recorded.median_ratios("strong")["3dc7"]["total"]
-    of_medians = of_medians or recorded.median_ratios("strong --planner paper")["3dc7"]["total"]
+    of_medians = of_medians or strong  # reader r57e, 05 item 1: the fold's ratio of two medians is the lazy PRM's
     band = chapter05.floors()["medians"]  # wave 24: a ratio of two medians reads against 0.40–1.60, one rule for all
     fcl_sampling = recorded.improvements(chapter05.FCL, "3dc7", "sampling")
     paper_sampling = paper_numbers.IMPROVEMENT["3dc7"]["sampling"]
@@ -1562,11 +1562,9 @@ def chapter_05(
             }
         )
         + f"\n\nAgainst the lazy PRM ({tie}):\n\n"
-        + findings.ratio_table(
-            {"3DC-7, `paper` preset, medians": recipe_medians, f"3DC-7, {chapter05.LAZY}, medians": strong}
-        )
+        + findings.ratio_table({"3DC-7, `paper` preset, medians": recipe_medians})
         + "\n"
-        + chapter05._noise_row(chapter05.MEDIANS_ROW, of_medians, band),
+        + chapter05._noise_row(chapter05.MEDIANS_ROW, of_medians, band),  # the lazy PRM's row (r57e, 05 item 1)
     )
     nb["cells"].append({"cell_type": "markdown", "source": ["the label **model disagrees** appears"]})
     said = f"OB's whole query, where skipping the checks could save most, was {summary} (1.12)."  # the Summary's
@@ -1666,16 +1664,20 @@ def test_chapter_05_holds_its_answer_to_the_closing_tables():
     assert problems(CH05, chapter_05(answer=said.replace(pair, "right on 91% of uniform")))[0].startswith(
         "05: the answer's accuracy pair is not a row of the accuracy table"
     )
-    saving = {"BS": 0.83, "OB": 1.5, "G": 1.07, "BT": 1.67}
-    assert problems(CH05, chapter_05(of_medians=saving)) == []
+    saving = {"BS": 0.83, "OB": 1.5, "G": 1.07, "BT": 1.67}  # not the record's: the lazy PRM's row (r57e, 05 item 1)
+
+    def banded(nb: dict) -> list[str]:  # the band's reading alone, not the record's values (checked above)
+        return [p for p in problems(CH05, nb) if "medians are not displayed" not in p]
+
+    assert banded(chapter_05(of_medians=saving)) == []
     row = findings.ratio_table({"r": saving}).splitlines()[-1]  # a verdict where timing noise could make one
-    nb = chapter_05()
+    nb = chapter_05(of_medians=saving)
     markdown = nb["cells"][-2]["outputs"][0]["data"]["text/markdown"]
     nb["cells"][-2]["outputs"][0]["data"]["text/markdown"] = markdown.replace(
         chapter05._noise_row(chapter05.MEDIANS_ROW, saving, costs.floors()["medians"]),
         row.replace("| r |", f"| {chapter05.MEDIANS_ROW} |"),
     )
-    assert problems(CH05, nb) == [  # reader r38e: a tie within noise is a tie, a saving within noise says both
+    assert banded(nb) == [  # reader r38e: a tie within noise is a tie, a saving within noise says both
         "05: a ratio of two medians is read against timing noise wrongly: saves time (0.83)",
         "05: a ratio of two medians is read against timing noise wrongly: costs time (1.50)",  # inside 0.40–1.60
     ]
