@@ -2299,9 +2299,8 @@ def test_reader_r50g_the_planning_counts_point_at_the_figure_that_draws_their_ce
     """Reader r50g, benchmarks figure problems: no figure for the headline result; the Results page's Figure 1 draws
     each cell of the two Algorithm 1 runs, the compiled checker's filled and python-fcl's hollow."""
     results = " ".join((ROOT / "docs" / "results.md").read_text().split())
-    assert (
-        "**Figure 1: the paper's claim, as the verdict reads it**: the accurate `strong` network inside Algorithm 1"
-        in (results)
+    assert "**Figure 1: the paper's claim, as the verdict reads it**: the strong network inside Algorithm 1" in (
+        results
     )
     assert "python-fcl on both sides (hollow)" in results and "our compiled checker on both sides (filled)" in results
     assert (
