@@ -33,8 +33,11 @@ lint: setup
 	$(VENV)/bin/ruff format --check toolkit tools tests docs/scripts
 	$(VENV)/bin/mypy
 
+# The quick tests first, spread over every core, each test file in one worker (its fixtures made once there); then
+# the slow ones in one process, since they spread their own work (notebooks, the site, grading) over the cores.
 test: setup browser sandbox lint
-	$(PY) -m pytest -q --durations=40
+	$(PY) -m pytest -q -m "not slow" -n auto --dist loadfile
+	$(PY) -m pytest -q -m slow --durations=40
 
 # JupyterLab on the notebooks, for a student: open the URL it prints, start with 01.
 lab: setup

@@ -125,6 +125,7 @@ def test_every_notebook_page_links_its_notebook_without_outputs_and_assignments_
             assert [c.source for c in notebook.cells] == [c.source for c in nbformat.read(source, as_version=4).cells]
 
 
+@pytest.mark.slow
 def test_every_figure_of_every_chapter_and_tutorial_has_a_text_alternative(site):
     lacking = {}
     for name, run in site.runs.items():
