@@ -65,6 +65,7 @@ OPENING_SPEEDS = (
     "(a general-purpose collision library, called from Python here), many times faster per check: section 3's last "
     "line prints how many times"
 )
+KEY = "**The key number:** the same answers, but FCL took {}–{}x"  # under the answer, and in the summary (reader r58a)
 TYPED_RANGE = re.compile(r"\d+ ?[–-] ?\d+ ?(?:times|x\b)")  # a range of ratios typed into the opening
 
 
@@ -87,6 +88,10 @@ def chapter_01(nb) -> list[str]:
         problems.append(f"01: FCL took {low}x the fast exact checker's time: not many times")
     if OPENING_SPEEDS not in opening(nb):
         problems.append(f'01: the opening does not say "{OPENING_SPEEDS}"')
+    if not texts(nb)[0].startswith(KEY.format(low, high)):  # the first code cell: the line under the answer
+        problems.append(f"01: the line under the answer does not say {KEY.format(low, high)!r}")
+    if f"- Same answers, but FCL took {low}–{high}x" not in texts(nb)[-1]:  # the summary's last bullet
+        problems.append(f"01: the summary does not repeat section 3's {low}–{high}x")
     typed = TYPED_RANGE.search(opening(nb))
     if typed:
         problems.append(f"01: the opening types a range, {typed[0]!r}, beside section 3's {low}–{high}x")

@@ -1719,7 +1719,9 @@ def chapter_01(low: int = 46, high: int = 90, closing: dict[str, str] | None = N
         closed.append(
             f"| {name} | **3–5** / 3–5 | 10% | **0.5×0.5** / 0.5 × 0.5 | {(closing or {}).get(name, '80%')} |"
         )
-    nb = executed("2ds   81.9% valid   configurations that differ from FCL: {}\n" + line, "MD:" + "\n".join(closed))
+    key = f"MD:**The key number:** the same answers, but FCL took {low}–{high}x the fast exact checker's time."
+    summary = f"MD:- Same answers, but FCL took {low}–{high}x the fast exact checker's time per check in this run."
+    nb = executed(key, "2ds   81.9% valid   differ from FCL: {}\n" + line, "MD:" + "\n".join(closed), summary)
     nb["cells"].append({"cell_type": "markdown", "source": [said]})  # the first Markdown cell: the opening
     return nb
 
@@ -1739,7 +1741,8 @@ def test_chapter_01_fails_words_its_ratios_do_not_give():
     assert problems(CH01, chapter_01(2, 60)) == ["01: FCL took 2x the fast exact checker's time: not many times"]
     assert problems(CH01, chapter_01(60, 46)) == ["01: the line's range 60–46x runs backwards"]
     nb = chapter_01()
-    nb["cells"][0]["outputs"][0]["text"] = "FCL took 46x"
+    nb["cells"][1]["outputs"][0]["text"] = "FCL took 46x"
+    nb["cells"][-2]["outputs"][0]["data"]["text/markdown"] = "- FCL took 46x"  # the summary repeats section 3's line
     assert problems(CH01, nb) == ["01: section 3 does not print FCL's time against the fast exact checker's"]
     assert problems(CH01, chapter_01(closing={"3do": "40%"})) == [
         "01: 3do: 40% of uniform configurations free, not most"
@@ -1765,6 +1768,18 @@ def test_chapter_01_fails_words_its_ratios_do_not_give():
     assert problems(CH01, chapter_01(said=heavy + " slower per check")) == [
         '01: the opening does not say "(a general-purpose collision library, called from Python here), many times'
         " faster per check: section 3's last line prints how many times\""
+    ]
+
+
+def test_chapter_01_repeats_section_3_s_ratio_under_the_answer_and_in_the_summary():
+    """Reader r58a: the answer said "many times faster" and the number stood 9 screens down; the line under the
+    answer and the summary's last bullet now print it, and must print section 3's."""
+    nb = chapter_01(46, 90)
+    nb["cells"][0]["outputs"][0]["data"]["text/markdown"] = "*The key number appears here once section 3 has run.*"
+    nb["cells"][-2]["outputs"][0]["data"]["text/markdown"] = "- Same answers, but FCL took 40–90x the time."
+    assert problems(CH01, nb) == [
+        "01: the line under the answer does not say '**The key number:** the same answers, but FCL took 46–90x'",
+        "01: the summary does not repeat section 3's 46–90x",
     ]
 
 

@@ -618,20 +618,26 @@ def test_a_youbot_platform_overlapping_a_block_by_a_little_is_filled_and_enlarge
     assert to_hex(inset.get_facecolor()) == palette.COLORS["free"] != palette.COLORS["block"]
 
 
-def test_a_slice_over_positions_shows_a_pixel_beyond_the_bounds_dark(square_world):
-    """Review r26a: the wall's bar at x = 0 merged with the axis's spine; a pixel's width beyond the bounds is drawn
-    dark (out of bounds is invalid), and an angle's axis is not padded."""
+def test_a_slice_over_positions_shows_a_pixel_beyond_the_bounds_hatched_grey(square_world):
+    """Review r26a: the wall's bar at x = 0 merged with the axis's spine; a pixel's width beyond the bounds is drawn,
+    and an angle's axis is not padded. Reader r58a: drawn dark, that never-checked pixel read as "in collision": it is
+    light grey and hatched, with a key entry."""
     robot = robots.point_robot()
     fig = cspace.cspace_slice(exact_checker(square_world, robot), [5.0, 6.0], joints=(0, 1), resolution=31)
     ax = fig.axes[0]
     lo, hi = robot.lower[0], robot.upper[0]
     np.testing.assert_allclose(ax.get_xlim(), (lo - (hi - lo) / 31, hi + (hi - lo) / 31))
     assert ax.get_aspect() == 1.0  # reader r48a: two lengths drawn to one scale (the youBot's 41 x 41 was 1.3x tall)
-    assert to_hex(ax.get_facecolor()) == palette.COLORS["occupied"]
-    frame = "A dark frame runs round the slice: a pixel's width past the robot's bounds."  # r55a: no "leaves"
-    assert frame in alt_text(fig)  # reader r54a: the youBot's (x, y) slice's text named the frame, its alt did not
-    # reader r57a: the frame's outer pixel is past the bounds, outside X: said so, and left out of the title's share
-    assert "That outer pixel lies outside the bounds: never checked, not in the share in collision." in alt_text(fig)
+    (ring,) = [p for p in ax.patches if p.get_gid() == "unchecked"]
+    assert to_hex(ring.get_facecolor()) == palette.COLORS["shade"] != palette.COLORS["occupied"]
+    assert ring.get_hatch() == "//" and ring.get_zorder() < ax.images[0].get_zorder()  # under the checked pixels
+    np.testing.assert_allclose(ring.get_x(), lo - (hi - lo) / 31)
+    (key,) = ax.get_legend().get_texts()
+    assert key.get_text() == "past the bounds: not checked"
+    assert "dark frame" not in alt_text(fig)  # the square's edge pixels are free: no frame inside the bounds
+    # reader r57a: the outer pixel is past the bounds, outside X: said so, and left out of the title's share
+    past = "A pixel's width past the bounds, hatched light grey, is never checked and not in the share in collision."
+    assert past in alt_text(fig)
 
 
 def test_a_youbot_slice_names_its_frame_where_the_platform_crosses_the_region_s_boundary():
@@ -641,8 +647,8 @@ def test_a_youbot_slice_names_its_frame_where_the_platform_crosses_the_region_s_
     world = Workspace(np.zeros(3), np.array([41.0, 41.0, 6.0]), np.array([[[20.0, 20, 0], [21, 21, 1]]]))
     q = np.array([10.0, 10.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0])
     fig = cspace.cspace_slice(exact_checker(world, youbot), q, joints=(0, 1), resolution=60, view=None)
-    frame = "A dark frame runs round the slice: the robot must stay inside the region's boundary, and a pixel's "
-    assert frame + "width past the robot's bounds is drawn dark too." in alt_text(fig)  # reader r56a: as the text says
+    frame = "A dark frame runs round the slice: the robot must stay inside the region's boundary. A pixel's width past"
+    assert frame + " the bounds, hatched light grey, is never checked" in alt_text(fig)  # reader r58a: not dark
     assert "leaves its bounds" not in alt_text(fig)
 
 
@@ -650,7 +656,10 @@ def test_a_slice_over_angles_names_no_frame(clutter):
     """Reader r54a's frame is a slice over two positions' alone: an angle's axis is not padded."""
     q = [5.5, 5.5, 5.5, 0.0, 0.0, 0.0, 0.0]
     fig = cspace.cspace_slice(exact_checker(clutter, robots.box_chain(1)), q, joints=(3, 4), resolution=8, view=None)
-    assert "Slice of the" in alt_text(fig) and "dark frame" not in alt_text(fig)
+    assert (
+        "Slice of the" in alt_text(fig) and "dark frame" not in alt_text(fig) and "past the bounds" not in alt_text(fig)
+    )
+    assert fig.axes[0].get_legend() is None
 
 
 def test_the_slice_explorer_starts_at_a_valid_configuration_and_redraws_when_a_slider_moves(capsys):

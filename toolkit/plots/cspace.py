@@ -50,7 +50,7 @@ from toolkit.plots.robot_drawing import (
     link_colors,
     link_style,
 )
-from toolkit.plots.slices import joint_bounds, slice_configs
+from toolkit.plots.slices import joint_bounds, pad_unchecked, slice_configs
 from toolkit.plots.verdict import mark_arm
 
 COLLISION_CMAP = ListedColormap([COLORS["free"], COLORS["occupied"]])  # 0: valid, 1: in collision (dark)
@@ -258,7 +258,7 @@ def _draw_cspace(
 
 
 BLOCK_OUTLINE = COLORS["block_outline"]  # 3.7:1 on the dark C-obstacle; not orange, "in collision" (reader r50a)
-PAST_BOUNDS = "That outer pixel lies outside the bounds: never checked, not in the share in collision."  # r57a
+PAST_BOUNDS = "A pixel's width past the bounds, hatched light grey, is never checked and not in the share in collision."
 
 
 def cspace_image(checker: CollisionChecker, resolution: int = 600, window: tuple | None = None) -> Figure:
@@ -322,13 +322,9 @@ def cspace_slice(
     grid = fig.add_gridspec(1, 2 if view else 1, width_ratios=(1, 1.1) if side else None)
     ax = fig.add_subplot(grid[0, 0])
     valid = _draw_cspace(ax, checker, q, joints, resolution, None)
-    for k, limits, set_limits in ((joints[0], ax.get_xlim(), ax.set_xlim), (joints[1], ax.get_ylim(), ax.set_ylim)):
-        if robot.dof_names[k] in POSITION_NAMES:  # a pixel's width beyond the bounds, dark: out of bounds is
-            pad = (limits[1] - limits[0]) / resolution  # invalid, and a bar at the edge stands off the axis's spine
-            set_limits(limits[0] - pad, limits[1] + pad)
+    padded = pad_unchecked(ax, robot, joints, resolution)  # a pixel past the bounds: grey, hatched, keyed
     lengths = all(robot.dof_names[k] in POSITION_NAMES for k in joints)  # reader r48a: the 41 x 41 slice drawn tall
     ax.set_aspect("equal", adjustable="box") if lengths else ax.set_box_aspect(1)  # to scale; angles square
-    ax.set_facecolor(COLORS["occupied"])
     star: dict[str, Any] = dict(  # an ink edge in a white halo: seen on the free white and the dark alike (r39a)
         marker="*", markersize=11, markeredgecolor=COLORS["ink"], color=link_colors(1, q_valid)[0], markeredgewidth=1
     )  # reader r50a: at 15 points the youBot's star, 2 units across, touched a grown shelf 0.4 away
@@ -344,9 +340,8 @@ def cspace_slice(
     text += f"{1 - valid.mean():.0%} in collision (dark). A star marks the fixed configuration, which is "
     text += ("valid." if q_valid[0] else "in collision.") + " Beside it, the robot there, its base a dot." * bool(view)
     rim = not np.concatenate([valid[0], valid[-1], valid[:, 0], valid[:, -1]]).any()  # every edge pixel dark (r55a)
-    past = "a pixel's width past the robot's bounds"  # r56a: said as chapter 01's text says it
-    frame = f"the robot must stay inside the region's boundary, and {past} is drawn dark too" if rim else past
-    text += f" A dark frame runs round the slice: {frame}. {PAST_BOUNDS}" * lengths  # r54a; r55a: not "leaves bounds"
+    text += " A dark frame runs round the slice: the robot must stay inside the region's boundary." * (rim and lengths)
+    text += f" {PAST_BOUNDS}" * padded  # reader r58a: grey and hatched, not dark
     dotted = " A block drawn across the links that no link touches (above or below them) is a dotted outline"
     text += (dotted + ", drawn a little inside its edges.") * bool(outlined)
     text += " A block a link touches is outlined dashed." * bool(dashed)

@@ -10,15 +10,41 @@ answers back into an image (notebook 03's maps of the MLP, :mod:`toolkit.plots.c
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
+from matplotlib.patches import Patch, Rectangle
 
 from toolkit.geometry.robots import BoxRobot
+from toolkit.plots.palette import COLORS
+from toolkit.plots.robot_drawing import POSITION_NAMES
+
+UNCHECKED: dict[str, Any] = dict(facecolor=COLORS["shade"], hatch="//", edgecolor=COLORS["reference"], linewidth=0)
+"""The pixel's width drawn past a position's bounds: light grey, hatched, never checked (reader r58a: drawn dark,
+it read as "in collision")."""
 
 
 def joint_bounds(robot: BoxRobot, joints: tuple[int, int]) -> tuple:
     """``((lo_i, hi_i), (lo_j, hi_j))``: the bounds of two DoF."""
     return tuple((float(robot.lower[k]), float(robot.upper[k])) for k in joints)
+
+
+def pad_unchecked(ax, robot: BoxRobot, joints: tuple[int, int], resolution: int) -> bool:
+    """Widen each position axis of a slice image on ``ax`` by a pixel's width past the robot's bounds, so that a dark
+    bar at a bound stands off the axis's spine (review r26a), drawn :data:`UNCHECKED` and named in a key below the
+    axes. Returns whether any axis was widened (an angle's is not: it wraps)."""
+    padded = False
+    for k, limits, set_limits in ((joints[0], ax.get_xlim(), ax.set_xlim), (joints[1], ax.get_ylim(), ax.set_ylim)):
+        if robot.dof_names[k] in POSITION_NAMES:
+            pad = (limits[1] - limits[0]) / resolution
+            set_limits(limits[0] - pad, limits[1] + pad)
+            padded = True
+    if padded:
+        (x0, x1), (y0, y1) = ax.get_xlim(), ax.get_ylim()
+        ax.add_patch(Rectangle((x0, y0), x1 - x0, y1 - y0, zorder=-1, gid="unchecked", **UNCHECKED))
+        key = Patch(label="past the bounds: not checked", **UNCHECKED)
+        ax.legend(handles=[key], loc="upper center", bbox_to_anchor=(0.5, -0.16), fontsize=8, frameon=False)
+    return padded
 
 
 def slice_configs(
