@@ -244,6 +244,9 @@ def test_the_why_names_the_ablations_largest_steps_by_their_measure_as_the_table
     assert f"88% is not that effect: its own rates imply only about {share:.0%}" in " ".join(texts).replace(" %", "%")
     assert rates.replace("%", " %") in " ".join(texts)  # base rate that lifts "always valid" on validity-blind samples
     assert "between {q1:.4f} and {q3:.4f} over half" in " ".join(texts)  # r58c item 3: "between 0.48 and 0.48"
+    assert "row 2 goes back to Eq. (1)'s sum, so no later row keeps it" in fold  # r58c: row 1 is not carried on
+    assert "which is why the planner verifies" not in " ".join(texts)  # r58c: 10x finer narrows the gap, no more
+    assert "10× finer resolution, which narrows that gap but does not close it" in " ".join(texts)
     assert "rows 1 to 6" not in " ".join(texts) and "rows 3 and 6" not in " ".join(texts)
     assert "main cause" not in verdict and "does little better than a coin flip" in verdict and 50 < rows[0][0] < 56
     assert "is about a coin flip on new workspaces" not in " ".join(texts)  # r56c 1: 55.2 % is past the 5-point "about"
