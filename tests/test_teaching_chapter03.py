@@ -229,13 +229,24 @@ def test_the_why_names_the_ablations_largest_steps_by_their_measure_as_the_table
     assert three[1] < three[2] < three[0] < three[3] and f"{three[3] - three[0]:.1f}" == "13.8"
     assert three[3] - three[0] > max(v for k, v in gains.items() if k != 6)  # "more than any other step's gain"
     assert min(gains.values()) < -(three[3] - three[0])  # r55c 2: a loss (AdamW's) is larger, so "gain", not "bracket"
-    assert "13.8 points above the no-dropout row before them, more than any other step's gain" in bullets
+    assert "13.8 points above the no-dropout row before them, still more than any other step's gain" in bullets
+    moved = f"(+{gains[6]:.1f}). Of the two rows above it, one lost {-gains[4]:.1f} points and the other gained "
+    moved += f"{gains[5]:.1f} (−{-(gains[4] + gains[5]):.1f} together), so it ends {three[3] - three[0]:.1f} points"
+    assert moved in bullets and "wins back what the two rows above it lost" not in bullets  # r58c item 2
     assert "shows what each step adds" in texts[2] and "why" not in texts[2]  # r55c 5: the table cannot rank causes
     assert "(the line under the opening table, just below)" in verdict  # r55c 3: the table the line is under
     assert "then adds about six points more" in bullets and round(gains[7]) == 6
     assert "even if `z` told it" not in " ".join(texts)  # r57c item 4: Q4 cites the step it rests on
     assert "given a CAE that generalizes it gains only about three points of balanced accuracy" in " ".join(texts)
     assert "samples it does not state" not in " ".join(texts) and "its rates imply about 60 % valid" in said
+    share = (published["acc"] - published["tnr"]) / (published["tpr"] - published["tnr"])  # r58c item 1: not the
+    rates = f"keeps {published['tpr']:.0%} of the valid samples and rejects {published['tnr']:.0%} of the invalid"
+    assert f"88% is not that effect: its own rates imply only about {share:.0%}" in " ".join(texts).replace(" %", "%")
+    assert rates.replace("%", " %") in " ".join(texts)  # base rate that lifts "always valid" on validity-blind samples
+    assert "between {q1:.4f} and {q3:.4f} over half" in " ".join(texts)  # r58c item 3: "between 0.48 and 0.48"
+    assert "row 2 goes back to Eq. (1)'s sum, so no later row keeps it" in fold  # r58c: row 1 is not carried on
+    assert "which is why the planner verifies" not in " ".join(texts)  # r58c: 10x finer narrows the gap, no more
+    assert "10× finer resolution, which narrows that gap but does not close it" in " ".join(texts)
     assert "rows 1 to 6" not in " ".join(texts) and "rows 3 and 6" not in " ".join(texts)
     assert "main cause" not in verdict and "does little better than a coin flip" in verdict and 50 < rows[0][0] < 56
     assert "is about a coin flip on new workspaces" not in " ".join(texts)  # r56c 1: 55.2 % is past the 5-point "about"
