@@ -1048,8 +1048,11 @@ FAST_BULLET = re.compile(  # chapter04.answer: three sentences (r57d lift 1), th
     r"replaces take at most (?P<share>\d+) % of a query \((?P<high>\d+) % with python-fcl\)\. "  # r55d, 1
     r"Each count reads a setting's median own ratio \(the box below\); with our fast checker "
     r"(?P<longer>none|\d+) of \d+ settings took 10 % or more longer, (?P<beyond_said>\d+) of them beyond the noise "
-    r"band\. The rest of prediction's effect comes after sampling: the encoding \(measured in 3DC-7 only, section "
-    r"5\) and perhaps a different roadmap, which these runs cannot show\.\s"
+    r"band; with python-fcl, sampling itself took (?P<fcl_sampling>\d+–\d+) % less time by means \(the paper: "
+    r"(?P<paper_sampling>\d+–\d+) %\), so the \"(?:No|Rarely|In part)\" is about a whole query\. "  # r58d, 2
+    r"The rest of prediction's effect comes after sampling: the encoding \(measured in 3DC-7 only, section "
+    r"5\) and perhaps a different roadmap, which the recorded runs cannot show \(section 5's live queries show one, "
+    r"in (?P<live>a tie cell|a costly cell|a cell that saves time)\)\.\s"  # reader r58d, item 1
     r"> \*\*How to read the ratios\*\*[^|]*"  # the visible box (common57)
     r"\| (?P=total) scenario–sampler cells, by the median of each query's own time ratio \(with ÷ without\) "
     r"\| faster \| tie \| slower \|\s\| --- \| --- \| --- \| --- \|\s"
@@ -1225,6 +1228,14 @@ def _slow_checker(nb, facts: checker_scope.SlowChecker | None = None) -> list[st
     saving = str(sum(t > 0 for t in facts.papers_totals))  # reader r47d: Table 3 saves some time in 13 of 16
     if some != [saving]:
         problems.append(f"04: the answer says Table 3 takes less time in {some} cells; it does in {saving}")
+    ranges = [(m["fcl_sampling"], m["paper_sampling"], m["live"]) for m in FAST_BULLET.finditer(first)]
+    live = findings.time_verdict(recorded.query_ratios(recorded.ALGORITHM_1)["3dc7"]["BS"])  # section 5's cell
+    cell = {findings.SAVES: "a cell that saves time", findings.TIES: "a tie cell", findings.COSTS: "a costly cell"}
+    record = (*(checker_scope.percents(f)[:-2] for f in (facts.sampling, facts.papers_sampling)), cell[live])
+    if ranges != [record]:  # reader r58d, items 1-2: python-fcl's sampling and section 5's live cell, as recorded
+        problems.append(
+            f"04: the answer gives python-fcl's sampling and section 5's cell as {ranges}; the record: {record}"
+        )
     expected = [(str(papers), str(totals[findings.SAVES] or "none"), str(ours or "none"))]
     if bullet != expected:
         problems.append(f"04: the first code cell's bullets on python-fcl say {bullet}; the record: {expected}")

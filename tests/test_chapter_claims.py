@@ -1842,10 +1842,12 @@ def test_chapter_04_holds_its_answer_with_python_fcl_on_both_sides_to_the_record
         f"04: the prose says '{mostly}'; the record: {{'a tie': {len(facts.own)}}}",
     ]
     tied = dataclasses.replace(facts, sampling=(*facts.sampling[:-1], 0.05))
-    said = chapter_claims._slow_checker(nb, tied)  # the bullet leaves the sampling stage to section 6 (reader r33d)
+    said = chapter_claims._slow_checker(nb, tied)  # reader r58d, item 2: the answer's sampling range, from the record
     assert said[0].startswith("04: section 6 does not print the slow checker's record")
     assert said[1:] == [
-        f"04: the prose says '{chapter_claims.SLOW_SAMPLING}'; the record: {dict(tied.sampling_verdicts())}"
+        "04: the answer gives python-fcl's sampling and section 5's cell as [('22–91', '39–74', 'a tie cell')]; the "
+        "record: ('5–91', '39–74', 'a tie cell')",
+        f"04: the prose says '{chapter_claims.SLOW_SAMPLING}'; the record: {dict(tied.sampling_verdicts())}",
     ]
     saving = dataclasses.replace(facts, totals=(0.5,) * len(facts.totals))  # every cell saves, by means
     assert (

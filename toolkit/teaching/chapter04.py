@@ -16,7 +16,7 @@ from toolkit.learning.learned import LearnedChecker
 from toolkit.planning.local_planner import path_is_valid
 from toolkit.planning.sampling import PAPER_SAMPLERS
 from toolkit.teaching import chapter04_encoding, checker_scope, costs, findings, recorded
-from toolkit.teaching.chapter04_paper import RUNS, how_to_read, means_sentence, papers_table, plain, sampling_claim
+from toolkit.teaching.chapter04_paper import RUNS, how_to_read, means_sentence, papers_table, plain
 from toolkit.teaching.recorded import Tables
 from toolkit.util.verdicts import COSTS, SAVES, TIES, time_verdict
 
@@ -239,13 +239,13 @@ def answer(tables: Tables | None = None) -> str:
         (name, [cell(c[SAVES]), n(c[TIES][0]), cell(c[COSTS])])
         for name, c in (("our fast exact checker", fast), (SLOW_ROW, slow))
     ]
-    runs = (  # reader r54d, item 3: the run names, the counts by means and the sampling claim in the fold
+    runs = (  # reader r54d, item 3: the run names and the counts by means in the fold (r58d: sampling in the answer)
         "From the recorded run `strong --planner paper` (100 queries a scenario, `docs/results.md`; python-fcl's row: "
         f"the same run with `--baseline paper-fcl-alike`). {means_sentence(tables)} "
-        f"{chapter04_encoding.disagreement(tables)} {sampling_claim(tables)}"
+        f"{chapter04_encoding.disagreement(tables)}"
     )
     return (
-        f"**{word}.** {plain(counts, total, tables)}\n\n{how_to_read(tables)}\n\n"
+        f"**{word}.** {plain(counts, total, tables, word)}\n\n{how_to_read(tables)}\n\n"
         f"| {total} scenario–sampler cells, by the median of each query's own time ratio (with ÷ without) | faster "
         "| tie | slower |\n| --- | --- | --- | --- |\n"
         + "\n".join(f"| {name} | {' | '.join(c)} |" for name, c in rows)

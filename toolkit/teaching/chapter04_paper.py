@@ -8,7 +8,7 @@ from collections import Counter
 from collections.abc import Mapping
 
 from toolkit.experiments.paper_numbers import IMPROVEMENT, TIMES, saved_beyond_sampling
-from toolkit.teaching import checker_scope, costs, recorded
+from toolkit.teaching import chapter04_encoding, checker_scope, costs, recorded
 from toolkit.teaching.recorded import Tables
 from toolkit.util.verdicts import COSTS, SAVES, TIE, TIES, time_verdict
 
@@ -115,9 +115,10 @@ def papers_table(read: tuple[int, int, int], tables: Tables | None = None, lead:
     )
 
 
-def plain(counts: tuple[int, int, int, int], total: int, tables: Tables | None = None) -> str:
-    """The answer's three sentences (reader r57d, lift 1): a jargon-free one, then the statistic and its noise band,
-    then the rest; ``counts``: fast checker's savings, its costs, of them beyond the band, python-fcl's savings."""
+def plain(counts: tuple[int, int, int, int], total: int, tables: Tables | None = None, word: str = "No") -> str:
+    """The answer's three sentences (reader r57d, lift 1): a jargon-free one, then the statistic and its noise band
+    and python-fcl's sampling (r58d, item 2), then the rest, which the recorded runs cannot show and section 5's live
+    cell does (r58d, item 1); ``counts``: fast checker's savings, its costs, of them beyond the band, python-fcl's."""
     fast, costly, beyond, slow = counts
     fast_share, slow_share = (costs.sampling_shares(preset, tables) for preset, _ in RUNS)
     return (
@@ -127,9 +128,10 @@ def plain(counts: tuple[int, int, int, int], total: int, tables: Tables | None =
         f"{len(table3_totals()['ten'])} of {len(table3_totals()['all'])}), because the sample checks it replaces take "
         f"at most {100 * max(fast_share):.0f} % of a query ({100 * max(slow_share):.0f} % with python-fcl). "
         "Each count reads a setting's median own ratio (the box below); with our fast checker "
-        f"{costly or 'none'} of {total} settings took 10 % or more longer, {beyond} of them beyond the noise band. "
-        "The rest of prediction's effect comes after sampling: the encoding (measured in 3DC-7 only, section 5) and "
-        "perhaps a different roadmap, which these runs cannot show."
+        f"{costly or 'none'} of {total} settings took 10 % or more longer, {beyond} of them beyond the noise band; "
+        f"{chapter04_encoding.sampling_clause(word, tables)}. The rest of prediction's effect comes after sampling: "
+        "the encoding (measured in 3DC-7 only, section 5) and perhaps a different roadmap, which the recorded runs "
+        f"cannot show (section 5's live queries show one, in {chapter04_encoding.live_cell(tables)})."
     )
 
 
@@ -148,20 +150,6 @@ HOW_TO_READ = (  # common57: visible, at most four lines, under the answer (read
 def how_to_read(tables: Tables | None = None) -> str:
     """The visible box under the answer: a ratio, a cell, the median own ratio, the tie band and its noise band."""
     return HOW_TO_READ.format(own="{:.2f}–{:.2f}".format(*costs.floors(tables)["own"]))
-
-
-def sampling_claim(tables: Tables | None = None) -> str:
-    """The answer fold's sentence on the paper's sampling-time claim against python-fcl (reader r52d, item 3; r54d,
-    item 4: the same direction, not the same size): where every cell's sampling took less time by means."""
-    facts = checker_scope.slow_checker(tables)
-    saved, cells = facts.sampling_verdicts()[SAVES], len(facts.sampling)
-    if saved < cells:
-        return f"With python-fcl sampling itself took less time by means in {saved or 'none'} of its {cells} cells."
-    return (
-        f"With python-fcl sampling itself took {checker_scope.percents(facts.sampling)} less time by means: the same "
-        f'direction as the paper\'s Table 3 ({checker_scope.percents(facts.papers_sampling)} less), so the "No" is '
-        "about total time."
-    )
 
 
 def why(tables: Tables | None = None) -> str:
@@ -198,14 +186,14 @@ def roadmap(tables: Tables | None = None) -> str:
     after = sum(c.after_share > 0.5 for c in dear)
     out = costs.left_out(tables)
     beyond = len(dear) + len(out)
-    less = f", less {' and '.join(out)}, whose mean time did not grow" if out else ""
+    less = f", but in {' and '.join(out)} the mean time did not grow" if out else ""  # r58d, item 3: two sentences
     named = ", ".join(f"{c.scenario} {c.sampler}" for c in dear)
     return (
         "**The rest comes after sampling:** by changing which samples are kept, prediction can change the roadmap "
-        'built from them, and so the time after sampling (which also holds the encoding). Section 6 ("Where the '
-        f'extra time went") splits {len(dear)} costly cells into stages: the {beyond} whose median own ratio costs '
-        f"time beyond its noise band{less} ({named}). In {after} of those {len(dear)}, most of the extra mean time "
-        "came after sampling."
+        "built from them, and so the time after sampling (which also holds the encoding). In "
+        f'{beyond} cells the median own ratio costs time beyond its noise band{less}. Section 6 ("Where the extra '
+        f'time went") splits {"the other " if out else "those "}{len(dear)} into stages ({named}). In {after} of '
+        f"those {len(dear)}, most of the extra mean time came after sampling."
     )
 
 
