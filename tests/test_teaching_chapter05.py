@@ -54,8 +54,8 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
         and "so the most that skipping its checks could save is 11 % of a query's mean time (OB)." in shown
         and "off a query" not in answer
     )
-    # reader r47e, lift 2: the answer's one table, then its one fold; r52e, 05 item 2: one line between, whose run
-    assert after.strip() == chapter05.WHO_SPEAKS
+    # reader r47e, lift 2: the answer's one table, then its one fold; r58e, 05 lift 1: one line between, the route
+    assert after.strip() == chapter05.ROUTE
     shares = fold
     # reader r44e, item 1: the table the moral rests on (what share of a query sampling takes) is open, under the
     # total-time table, and the fold does not say it again
@@ -101,11 +101,12 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
     # reader r45e, 05 item 4: a map of the trainings, planners and statistics, after the answer's tables
     assert "\n\nWhich of the chapter's runs the answer reads:\n\n| what | the answer uses |" in shares
     assert "| training of `strong` | the timed network (threshold 0.63) | the notebook's network and the lazy" in shares
-    # reader r51e, 05 lift 4: the three trainings' table shown once (reader r54e, 05 lift 2: under the answer, its
-    # own display); the fold names them and points there
+    # reader r58e, 05 lift 1: the three trainings' table shown once, first in the answer's one fold
     assert "The three trainings of `strong` in this chapter" not in answer and "| 0.52 |" not in answer
-    assert "and the lazy-PRM timing network (the table under this answer gives all three) |" in shares
+    assert "and the lazy-PRM timing network (the table above gives all three) |" in shares
     trainings = chapter05_runs.trainings(0.54)
+    with_table = chapter05.answer(0.54, trainings).split(f"<details><summary>{chapter05.DETAILS}</summary>\n\n")
+    assert with_table[1].startswith(trainings + "\n\nWith python-fcl") and "| 0.52 |" not in with_table[0]
     assert "| 0.63 | the answer," in trainings and "| 0.52 | the closing fold" in trainings
     assert "| **notebook's network** (`trained_models`, cached) | 0.54 |" in trainings  # r48e: labels
     assert "| planner | Algorithm 1 (planner `paper`) | §6–7: the lazy PRM's path;" in shares
@@ -545,11 +546,9 @@ def test_the_unseen_test_fold_says_its_uniform_share_rests_on_our_block_size():
 
 
 def test_the_answer_says_beside_it_which_run_each_part_of_the_chapter_uses():
-    """Reader r52e, 05 item 2: outside the answer's fold, one line names the timed network, the notebook's network
-    and the lazy PRM, the planner the answer does not time."""
+    """Reader r52e, 05 item 2; r58e, 05 lift 1: outside the answer's fold, one line (the route) names the timed
+    network's place and the notebook's network's, and the lazy PRM, the planner the answer does not time."""
     front = chapter05.answer(0.54).split("<details>")[0]
-    assert front.endswith(chapter05.WHO_SPEAKS + "\n\n")
-    assert "**timed network** in Algorithm 1" in front and "**notebook's network**" in front
-    assert "lazy PRM, which the answer does not time" in front
-    # reader r55e, 05 C4: §6-7's path is the notebook's network's; the closing fold's training named apart
-    assert "and so does §6–7's path, planned by the lazy PRM" in front and "**lazy-PRM timing network**" in front
+    assert front.endswith(chapter05.ROUTE + "\n\n")
+    assert "with the timed network (an accurate `strong` network" in front and "**notebook's network**" in front
+    assert "plan a path with it (a lazy PRM, not timed)" in front and "noise band" not in chapter05.ROUTE
