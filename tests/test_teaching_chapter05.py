@@ -479,6 +479,8 @@ def test_section_6s_counts_say_what_a_removed_edge_was():
                  exact_clearances=10, repairs=1, removed_nodes=0, removed_edges=1)  # fmt: skip
     shown = chapter05_runs.plan_tables(SimpleNamespace(stats=stats, success=True, path=np.zeros((5, 7))))
     assert "| 1 | 0 / 1 |" in shown
+    shown, _, priced = shown.partition(" What this costs: ")  # reader r58e, 05 lift 2: the counts priced, last
+    assert priced == chapter05_runs.answers_cost(stats)[len("What this costs: ") :]
     assert shown.endswith(
         "The 1 edge removed lay on a candidate path: the model had let it into the roadmap, and the exact check found "
         "a collision there. That is a dangerous mistake caught before the path was returned. A conservative mistake "
@@ -492,8 +494,24 @@ def test_section_6s_counts_say_what_a_removed_edge_was():
     )
     stats.update(repairs=0, removed_nodes=0, removed_edges=0)
     assert chapter05_runs.plan_tables(SimpleNamespace(stats=stats, success=True, path=np.zeros((5, 7)))).endswith(
-        "No candidate path failed the exact check, so nothing was removed."
+        "No candidate path failed the exact check, so nothing was removed. " + chapter05_runs.answers_cost(stats)
     )
+
+
+def test_section_6_prices_the_models_answers_in_compiled_checks():
+    """Reader r58e, 05 lift 2: §6's 6219 answers against 333 exact calls, at the timed run's measured cost per answer
+    (docs/results.md's 3DC-7 throughput): the answer's "cost, not accuracy" in the query's own counts."""
+    rates = {k: recorded.ours(v) for k, v in recorded.table(chapter05.COMPILED, "Checker throughput")["3dc7"].items()}
+    cost = rates["exact cfg/s"] / rates["learned cfg/s"]
+    assert 6.5 < cost < 7.5  # the chapter's "6.9 compiled exact checks"
+    said = chapter05_runs.answers_cost(dict(predicted_checks=6219, exact_checks=10, exact_clearances=323))
+    assert said == (
+        "What this costs: the model answered 6219 times, the exact checker 333 times. One network answer takes as "
+        f"long as {cost:.1f} compiled exact checks (the timed run's rates), so the 6219 answers took as long as about "
+        f"{round(6219 * cost, -2):.0f} compiled checks; checking the same configurations exactly would have cost 6219 "
+        "checks. That is the answer's \"cost, not accuracy\", in this query's own counts."
+    )
+    assert f"{round(6219 * cost, -2):.0f}" == "42900"
 
 
 def test_section_5_says_the_proportion_of_mistakes_the_overview_cannot_show():
