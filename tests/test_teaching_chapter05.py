@@ -561,6 +561,14 @@ def test_the_unseen_test_fold_says_its_uniform_share_rests_on_our_block_size():
     assert f"This is a hint, not evidence. The {uniform:.0%} is the valid share of our workspaces" in fold
     assert "The paper gives no block size" in fold and "probably" not in fold
     assert "about 42% valid, and Table 2 could then have scored the planner's 400." in fold
+    # reader r58e, 05 lift 3: the home page's promise kept, the no-skill comparison stated and computed
+    paper = chapter05.paper_numbers.MLP["3dc7"]["unseen"]
+    valid = (paper["acc"] - paper["tnr"]) / (paper["tpr"] - paper["tnr"])
+    assert round(max(valid, 1 - valid), 2) == 0.58 and paper["acc"] == 0.71
+    assert (
+        "On either reading, one answer for every sample would score at most 58% on that test, below the paper's "
+        "71%: the paper's 71% is not a no-skill score." in fold
+    )
 
 
 def test_the_answer_says_beside_it_which_run_each_part_of_the_chapter_uses():

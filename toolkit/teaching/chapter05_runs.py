@@ -340,7 +340,9 @@ def paper_share() -> str:
         f"the same TPR and TNR would give an accuracy of {paper['tpr'] * uniform + paper['tnr'] * (1 - uniform):.0%}, "
         f"not {paper['acc']:.0%}. That reads TPR as valid configurations called valid, our reading. "
         f"With collisions the positive class, TPR and TNR swap places, and the share is about {1 - implied:.0%} "
-        f"valid: still not {uniform:.0%}.\n\n"
+        f"valid: still not {uniform:.0%}. On either reading, one answer for every sample would score at most "
+        f"{max(implied, 1 - implied):.0%} on that test, below the paper's {paper['acc']:.0%}: the paper's "
+        f"{paper['acc']:.0%} is not a no-skill score.\n\n"  # reader r58e, 05 lift 3
         # reader r52e, 05 item 1: the uniform share is our workspaces', set by a block size the paper does not give
         f"This is a hint, not evidence. The {uniform:.0%} is the valid share of our workspaces, whose blocks are "
         "1 × 1 × 1 cubes. The paper gives no block size; with larger blocks its uniform samples could be about "
