@@ -578,3 +578,20 @@ def test_the_answer_says_beside_it_which_run_each_part_of_the_chapter_uses():
     assert front.endswith(chapter05.ROUTE + "\n\n")
     assert "with the timed network (an accurate `strong` network" in front and "**notebook's network**" in front
     assert "plan a path with it (a lazy PRM, not timed)" in front and "noise band" not in chapter05.ROUTE
+
+
+def test_the_frame_picture_says_where_an_angle_wraps_at_once():
+    """Reader r58e, 05 lift 3: the alt said "beta 0.00 to 0.38" while the line seemed to start at 1.0 (a wrap past ±π
+    after the first frame): the caption and the alt say so; an angle that wraps later, or none, adds nothing."""
+    from toolkit import scenarios
+
+    robot = scenarios.get("3dc7").robot
+    Q = np.tile((robot.lower + robot.upper) / 2, (5, 1))  # (5, 7) at mid-range, no wrap
+    assert chapter05_runs.wrap_starts(robot, Q) == ""
+    beta = robot.dof_names.index("beta")
+    Q[:, beta] = np.linspace(robot.lower[beta] + 0.01, robot.lower[beta] + 0.05, 5)
+    Q[1:, beta] += robot.upper[beta] - robot.lower[beta] - 0.3  # from the lower edge to near the upper one at once
+    said = chapter05_runs.wrap_starts(robot, Q)
+    assert said.startswith("In the picture, beta starts at 0.00 and wraps round ±π at once, so its line seems to start")
+    assert said.endswith(", its first point alone on the other edge.") and "alpha" not in said
+    assert chapter05_runs.wrap_starts(robot, np.concatenate([Q[:1], Q])) == ""  # the same jump a frame later

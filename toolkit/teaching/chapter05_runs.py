@@ -9,6 +9,7 @@ from collections.abc import Mapping
 
 import numpy as np
 
+from toolkit.plots.dof_panels import wrap_frames
 from toolkit.teaching import chapter05
 from toolkit.teaching.chapter05 import SCENARIO
 from toolkit.teaching.chapter05_accuracy import percent
@@ -109,6 +110,19 @@ def office_collisions(samples: np.ndarray, seed: int) -> str:
         "| ---: | ---: | ---: | ---: |\n"
         f"| {len(samples)} | {colliding.sum()} | {(colliding & outside).sum()} | {(colliding & ~outside).sum()} |"
     )
+
+
+def wrap_starts(robot, Q: np.ndarray) -> str:
+    """§7's frame picture: each angle that wraps round ±π right after the first frame (reader r58e, 05 lift 3: the
+    alt said "beta 0.00", the line seemed to start at 1.0): its first point sits alone on one edge of its panel."""
+    scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
+    said = [
+        f"{name} starts at {scaled[0, k]:.2f} and wraps round ±π at once, so its line seems to start at "
+        f"{scaled[1, k]:.2f}, its first point alone on the other edge"
+        for k, name in enumerate(robot.dof_names)
+        if len(scaled) > 1 and 0 in wrap_frames(scaled[:, k])
+    ]
+    return ("In the picture, " + "; ".join(said) + ".") if said else ""
 
 
 def closest_above(probability: np.ndarray, threshold: float, tightest: int | None = None) -> str:
