@@ -344,7 +344,7 @@ def test_the_three_strong_trainings_are_named_each_with_its_threshold():
         "0.54",
         f"{written['strong']:.2f}",
     ]
-    assert "\n".join(rows) not in chapter05.answer(0.54)  # reader r51e, 05 lift 4: the table once, in §5
+    assert "\n".join(rows) not in chapter05.answer(0.54)  # r58e, 05 lift 1: once, in the fold the notebook passes it
 
 
 def test_check_costs_reads_one_answer_against_one_check_from_the_record():
