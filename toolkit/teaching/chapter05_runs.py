@@ -10,7 +10,7 @@ from collections.abc import Mapping
 import numpy as np
 
 from toolkit.plots.dof_panels import wrap_frames
-from toolkit.teaching import chapter05
+from toolkit.teaching import chapter05, recorded
 from toolkit.teaching.chapter05 import SCENARIO
 from toolkit.teaching.chapter05_accuracy import percent
 
@@ -37,8 +37,8 @@ def plan_tables(result) -> str:
 def answers_cost(stats) -> str:
     """§6's counts tied to the chapter's question (reader r58e, 05 lift 2): the model's answers priced in compiled
     exact checks at the timed run's measured cost per answer (``docs/results.md``): cost, not accuracy."""
-    rates = chapter05._rates()
-    cost = rates["exact cfg/s"] / rates["learned cfg/s"]  # compiled checks in the time of one network answer
+    rates = recorded.table(chapter05.COMPILED, "Checker throughput")[SCENARIO]  # docs/results.md, the timed run's
+    cost = recorded.ours(rates["exact cfg/s"]) / recorded.ours(rates["learned cfg/s"])  # checks in one answer's time
     answers, exact = stats["predicted_checks"], stats["exact_checks"] + stats["exact_clearances"]
     return (
         f"What this costs: the model answered {answers} times, the exact checker {exact} times. One network answer "
