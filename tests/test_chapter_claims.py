@@ -943,7 +943,7 @@ def test_the_answer_chapter_04_and_05_state_holds_in_docs_results():
     assert findings.SAVES not in [findings.time_verdict(r) for r in lazy + own]
     # reader r24b: 05's answer, printed once under its first code cell, says "No" for both checkers
     first = next(c for c in json.loads((ROOT / "notebooks" / CH05).read_text())["cells"] if c["cell_type"] == "code")
-    assert "display(Markdown(chapter05.answer(models.threshold)))" in "".join(first["source"])  # r46e
+    assert "display(Markdown(chapter05.answer(models.threshold, trainings)))" in "".join(first["source"])  # r58e
     answer = chapter05.answer()
     assert (
         answer.startswith("**No.** On 3DC-7 no sampler's whole query saved 10 % or more with the timed network (an")

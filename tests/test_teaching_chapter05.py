@@ -54,8 +54,8 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
         and "so the most that skipping its checks could save is 11 % of a query's mean time (OB)." in shown
         and "off a query" not in answer
     )
-    # reader r47e, lift 2: the answer's one table, then its one fold; r52e, 05 item 2: one line between, whose run
-    assert after.strip() == chapter05.WHO_SPEAKS
+    # reader r47e, lift 2: the answer's one table, then its one fold; r58e, 05 lift 1: one line between, the route
+    assert after.strip() == chapter05.ROUTE
     shares = fold
     # reader r44e, item 1: the table the moral rests on (what share of a query sampling takes) is open, under the
     # total-time table, and the fold does not say it again
@@ -101,11 +101,12 @@ def test_the_answer_says_no_and_each_of_its_numbers_is_in_a_closing_table():
     # reader r45e, 05 item 4: a map of the trainings, planners and statistics, after the answer's tables
     assert "\n\nWhich of the chapter's runs the answer reads:\n\n| what | the answer uses |" in shares
     assert "| training of `strong` | the timed network (threshold 0.63) | the notebook's network and the lazy" in shares
-    # reader r51e, 05 lift 4: the three trainings' table shown once (reader r54e, 05 lift 2: under the answer, its
-    # own display); the fold names them and points there
+    # reader r58e, 05 lift 1: the three trainings' table shown once, first in the answer's one fold
     assert "The three trainings of `strong` in this chapter" not in answer and "| 0.52 |" not in answer
-    assert "and the lazy-PRM timing network (the table under this answer gives all three) |" in shares
+    assert "and the lazy-PRM timing network (the table above gives all three) |" in shares
     trainings = chapter05_runs.trainings(0.54)
+    with_table = chapter05.answer(0.54, trainings).split(f"<details><summary>{chapter05.DETAILS}</summary>\n\n")
+    assert with_table[1].startswith(trainings + "\n\nWith python-fcl") and "| 0.52 |" not in with_table[0]
     assert "| 0.63 | the answer," in trainings and "| 0.52 | the closing fold" in trainings
     assert "| **notebook's network** (`trained_models`, cached) | 0.54 |" in trainings  # r48e: labels
     assert "| planner | Algorithm 1 (planner `paper`) | §6–7: the lazy PRM's path;" in shares
@@ -343,7 +344,7 @@ def test_the_three_strong_trainings_are_named_each_with_its_threshold():
         "0.54",
         f"{written['strong']:.2f}",
     ]
-    assert "\n".join(rows) not in chapter05.answer(0.54)  # reader r51e, 05 lift 4: the table once, in §5
+    assert "\n".join(rows) not in chapter05.answer(0.54)  # r58e, 05 lift 1: once, in the fold the notebook passes it
 
 
 def test_check_costs_reads_one_answer_against_one_check_from_the_record():
@@ -478,6 +479,8 @@ def test_section_6s_counts_say_what_a_removed_edge_was():
                  exact_clearances=10, repairs=1, removed_nodes=0, removed_edges=1)  # fmt: skip
     shown = chapter05_runs.plan_tables(SimpleNamespace(stats=stats, success=True, path=np.zeros((5, 7))))
     assert "| 1 | 0 / 1 |" in shown
+    shown, _, priced = shown.partition(" What this costs: ")  # reader r58e, 05 lift 2: the counts priced, last
+    assert priced == chapter05_runs.answers_cost(stats)[len("What this costs: ") :]
     assert shown.endswith(
         "The 1 edge removed lay on a candidate path: the model had let it into the roadmap, and the exact check found "
         "a collision there. That is a dangerous mistake caught before the path was returned. A conservative mistake "
@@ -491,8 +494,24 @@ def test_section_6s_counts_say_what_a_removed_edge_was():
     )
     stats.update(repairs=0, removed_nodes=0, removed_edges=0)
     assert chapter05_runs.plan_tables(SimpleNamespace(stats=stats, success=True, path=np.zeros((5, 7)))).endswith(
-        "No candidate path failed the exact check, so nothing was removed."
+        "No candidate path failed the exact check, so nothing was removed. " + chapter05_runs.answers_cost(stats)
     )
+
+
+def test_section_6_prices_the_models_answers_in_compiled_checks():
+    """Reader r58e, 05 lift 2: §6's 6219 answers against 333 exact calls, at the timed run's measured cost per answer
+    (docs/results.md's 3DC-7 throughput): the answer's "cost, not accuracy" in the query's own counts."""
+    rates = {k: recorded.ours(v) for k, v in recorded.table(chapter05.COMPILED, "Checker throughput")["3dc7"].items()}
+    cost = rates["exact cfg/s"] / rates["learned cfg/s"]
+    assert 6.5 < cost < 7.5  # the chapter's "6.9 compiled exact checks"
+    said = chapter05_runs.answers_cost(dict(predicted_checks=6219, exact_checks=10, exact_clearances=323))
+    assert said == (
+        "What this costs: the model answered 6219 times, the exact checker 333 times. One network answer takes as "
+        f"long as {cost:.1f} compiled exact checks (the timed run's rates), so the 6219 answers took as long as about "
+        f"{round(6219 * cost, -2):.0f} compiled checks; checking the same configurations exactly would have cost 6219 "
+        "checks. That is the answer's \"cost, not accuracy\", in this query's own counts."
+    )
+    assert f"{round(6219 * cost, -2):.0f}" == "42900"
 
 
 def test_section_5_says_the_proportion_of_mistakes_the_overview_cannot_show():
@@ -542,14 +561,37 @@ def test_the_unseen_test_fold_says_its_uniform_share_rests_on_our_block_size():
     assert f"This is a hint, not evidence. The {uniform:.0%} is the valid share of our workspaces" in fold
     assert "The paper gives no block size" in fold and "probably" not in fold
     assert "about 42% valid, and Table 2 could then have scored the planner's 400." in fold
+    # reader r58e, 05 lift 3: the home page's promise kept, the no-skill comparison stated and computed
+    paper = chapter05.paper_numbers.MLP["3dc7"]["unseen"]
+    valid = (paper["acc"] - paper["tnr"]) / (paper["tpr"] - paper["tnr"])
+    assert round(max(valid, 1 - valid), 2) == 0.58 and paper["acc"] == 0.71
+    assert (
+        "On either reading, one answer for every sample would score at most 58% on that test, below the paper's "
+        "71%: the paper's 71% is not a no-skill score." in fold
+    )
 
 
 def test_the_answer_says_beside_it_which_run_each_part_of_the_chapter_uses():
-    """Reader r52e, 05 item 2: outside the answer's fold, one line names the timed network, the notebook's network
-    and the lazy PRM, the planner the answer does not time."""
+    """Reader r52e, 05 item 2; r58e, 05 lift 1: outside the answer's fold, one line (the route) names the timed
+    network's place and the notebook's network's, and the lazy PRM, the planner the answer does not time."""
     front = chapter05.answer(0.54).split("<details>")[0]
-    assert front.endswith(chapter05.WHO_SPEAKS + "\n\n")
-    assert "**timed network** in Algorithm 1" in front and "**notebook's network**" in front
-    assert "lazy PRM, which the answer does not time" in front
-    # reader r55e, 05 C4: §6-7's path is the notebook's network's; the closing fold's training named apart
-    assert "and so does §6–7's path, planned by the lazy PRM" in front and "**lazy-PRM timing network**" in front
+    assert front.endswith(chapter05.ROUTE + "\n\n")
+    assert "with the timed network (an accurate `strong` network" in front and "**notebook's network**" in front
+    assert "plan a path with it (a lazy PRM, not timed)" in front and "noise band" not in chapter05.ROUTE
+
+
+def test_the_frame_picture_says_where_an_angle_wraps_at_once():
+    """Reader r58e, 05 lift 3: the alt said "beta 0.00 to 0.38" while the line seemed to start at 1.0 (a wrap past ±π
+    after the first frame): the caption and the alt say so; an angle that wraps later, or none, adds nothing."""
+    from toolkit import scenarios
+
+    robot = scenarios.get("3dc7").robot
+    Q = np.tile((robot.lower + robot.upper) / 2, (5, 1))  # (5, 7) at mid-range, no wrap
+    assert chapter05_runs.wrap_starts(robot, Q) == ""
+    beta = robot.dof_names.index("beta")
+    Q[:, beta] = np.linspace(robot.lower[beta] + 0.01, robot.lower[beta] + 0.05, 5)
+    Q[1:, beta] += robot.upper[beta] - robot.lower[beta] - 0.3  # from the lower edge to near the upper one at once
+    said = chapter05_runs.wrap_starts(robot, Q)
+    assert said.startswith("In the picture, beta starts at 0.00 and wraps round ±π at once, so its line seems to start")
+    assert said.endswith(", its first point alone on the other edge.") and "alpha" not in said
+    assert chapter05_runs.wrap_starts(robot, np.concatenate([Q[:1], Q])) == ""  # the same jump a frame later

@@ -9,7 +9,8 @@ from collections.abc import Mapping
 
 import numpy as np
 
-from toolkit.teaching import chapter05
+from toolkit.plots.dof_panels import wrap_frames
+from toolkit.teaching import chapter05, recorded
 from toolkit.teaching.chapter05 import SCENARIO
 from toolkit.teaching.chapter05_accuracy import percent
 
@@ -29,7 +30,21 @@ def plan_tables(result) -> str:
         "| ---: | ---: | ---: | ---: | ---: |\n"
         f"| {stats['predicted_checks']} | {stats['exact_checks']} + {stats['exact_clearances']} "
         f"| {stats['predicted_checks'] / max(exactly, 1):.0f} | {stats['repairs']} "
-        f"| {stats['removed_nodes']} / {stats['removed_edges']} |\n\n" + _removed(stats)
+        f"| {stats['removed_nodes']} / {stats['removed_edges']} |\n\n" + _removed(stats) + " " + answers_cost(stats)
+    )
+
+
+def answers_cost(stats) -> str:
+    """§6's counts tied to the chapter's question (reader r58e, 05 lift 2): the model's answers priced in compiled
+    exact checks at the timed run's measured cost per answer (``docs/results.md``): cost, not accuracy."""
+    rates = recorded.table(chapter05.COMPILED, "Checker throughput")[SCENARIO]  # docs/results.md, the timed run's
+    cost = recorded.ours(rates["exact cfg/s"]) / recorded.ours(rates["learned cfg/s"])  # checks in one answer's time
+    answers, exact = stats["predicted_checks"], stats["exact_checks"] + stats["exact_clearances"]
+    return (
+        f"What this costs: the model answered {answers} times, the exact checker {exact} times. One network answer "
+        f"takes as long as {cost:.1f} compiled exact checks (the timed run's rates), so the {answers} answers took as "
+        f"long as about {round(answers * cost, -2):.0f} compiled checks; checking the same configurations exactly "
+        f"would have cost {answers} checks. That is the answer's \"cost, not accuracy\", in this query's own counts."
     )
 
 
@@ -95,6 +110,19 @@ def office_collisions(samples: np.ndarray, seed: int) -> str:
         "| ---: | ---: | ---: | ---: |\n"
         f"| {len(samples)} | {colliding.sum()} | {(colliding & outside).sum()} | {(colliding & ~outside).sum()} |"
     )
+
+
+def wrap_starts(robot, Q: np.ndarray) -> str:
+    """§7's frame picture: each angle that wraps round ±π right after the first frame (reader r58e, 05 lift 3: the
+    alt said "beta 0.00", the line seemed to start at 1.0): its first point sits alone on one edge of its panel."""
+    scaled = (Q - robot.lower) / (robot.upper - robot.lower)  # (T, dof) in [0, 1]
+    said = [
+        f"{name} starts at {scaled[0, k]:.2f} and wraps round ±π at once, so its line seems to start at "
+        f"{scaled[1, k]:.2f}, its first point alone on the other edge"
+        for k, name in enumerate(robot.dof_names)
+        if len(scaled) > 1 and 0 in wrap_frames(scaled[:, k])
+    ]
+    return ("In the picture, " + "; ".join(said) + ".") if said else ""
 
 
 def closest_above(probability: np.ndarray, threshold: float, tightest: int | None = None) -> str:
@@ -326,7 +354,9 @@ def paper_share() -> str:
         f"the same TPR and TNR would give an accuracy of {paper['tpr'] * uniform + paper['tnr'] * (1 - uniform):.0%}, "
         f"not {paper['acc']:.0%}. That reads TPR as valid configurations called valid, our reading. "
         f"With collisions the positive class, TPR and TNR swap places, and the share is about {1 - implied:.0%} "
-        f"valid: still not {uniform:.0%}.\n\n"
+        f"valid: still not {uniform:.0%}. On either reading, one answer for every sample would score at most "
+        f"{max(implied, 1 - implied):.0%} on that test, below the paper's {paper['acc']:.0%}: the paper's "
+        f"{paper['acc']:.0%} is not a no-skill score.\n\n"  # reader r58e, 05 lift 3
         # reader r52e, 05 item 1: the uniform share is our workspaces', set by a block size the paper does not give
         f"This is a hint, not evidence. The {uniform:.0%} is the valid share of our workspaces, whose blocks are "
         "1 × 1 × 1 cubes. The paper gives no block size; with larger blocks its uniform samples could be about "
