@@ -170,8 +170,8 @@ def test_the_answer_is_three_plain_sentences_read_from_the_record():
         "*Less time* and *more time* count any ratio of mean times below or above 1 (*equal*: 1.00 as printed); "
         'Table 3\'s 3 cells with more time are 2–9 % more, and of 3DO BT the paper says "a slow-down". *Faster* '
         "counts only 0.90 or less, *slower* only 1.10 or more: our 10 % tie band, not the paper's; we read the "
-        "paper's cells and ours with it alike. Why each query's own ratio decides: a ratio of means divides two sets "
-        "of 100 queries timed apart, and a few slow queries weigh on a mean, so its noise band is wide (0.52–1.48); "
+        "paper's cells and ours with it alike. Why each query's own ratio decides: a ratio of means divides two sums "
+        "over the same 100 queries, and a few slow queries weigh on a mean, so its noise band is wide (0.52–1.48); "
         "each query's own ratio divides one query's two times, taken in turn (0.82–1.18). python-fcl's run was not "
         "timed twice: it borrows the fast checker's noise band."
     )
@@ -179,9 +179,9 @@ def test_the_answer_is_three_plain_sentences_read_from_the_record():
     assert chapter04.by_means() == (
         "**By mean times**, the paper's statistic, prediction saved 10 % or more in 3 cells with our fast checker and "
         "2 with python-fcl, none beyond the noise band of a ratio of means (0.52–1.48). So by means our runs cannot "
-        "tell savings of Table 3's size from timing noise: a ratio of means divides two sets of 100 queries timed "
-        "apart, and a few slow queries weigh on a mean. That is why this page judges by each query's own ratio, whose "
-        "noise band is 0.82–1.18."
+        "tell savings of Table 3's size from timing noise: a ratio of means divides two sums over the same 100 "
+        "queries, and a few slow queries weigh on a mean. That is why this page judges by each query's own ratio, "
+        "whose noise band is 0.82–1.18."
     )
     line = chapter04.mark_line()  # reader r44d, item 2: one visible sentence, the one rule folded under it
     visible, _, folded = line.partition("<details>")

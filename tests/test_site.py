@@ -504,7 +504,7 @@ def test_the_index_table_counts_the_recorded_cells():
     said = (  # reader r44e, home 4: the by-means sentence, in short sentences, with the new band
         "**By means, none of our Algorithm 1 savings is beyond timing noise.** A ratio of means has a much wider noise "
         "band (the "
-        "key under Figure 1 gives it). It divides two sets of 100 queries timed apart, and a few "
+        "key under Figure 1 gives it). It divides two sums over the same 100 queries, and a few "
         f"slow queries weigh on a mean. All {len(saves)} of the compiled checker's ratios of means at 0.90 or less lie "
         f"inside it, and both of python-fcl's. Of the compiled checker's {len(losses)} at 1.10 or more, {len(beyond)} "
         "lie beyond it "  # reader r52e, home 1: "its" pointed to python-fcl, the last one named

@@ -125,9 +125,9 @@ def bands(tables: Tables) -> str:
         "prediction, the table "
         "“timed twice”), see how far timing alone moved the statistic from 1 on its larger side, and take "
         f"{NOISE_EDGE} times that, both ways, because a single repeat understates timing noise. A ratio of means or of "
-        "medians moves further than each query's own ratio: it divides two sets of 100 queries timed apart, where a "
-        "few slow queries weigh on a mean, while an own ratio divides one query's two times, taken in turn under the "
-        "same load."
+        "medians moves further than each query's own ratio: it divides two sums (or two medians) over the same 100 "
+        "queries, where a few slow queries weigh on a mean, while an own ratio divides one query's two times, taken "
+        "in turn under the same load."
     )
     said = rule + "\n\n" + "\n".join(head + [f"| {' | '.join(row)} |" for row in rows])
     borrowed = (

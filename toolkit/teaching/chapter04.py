@@ -274,7 +274,7 @@ def by_means(tables: Tables | None = None) -> str:
             if len(clear) <= 1
             else "By means only these few are clear of timing noise"
         )
-        + ": a ratio of means divides two sets of 100 queries timed apart, and a few slow queries weigh on a mean. "
+        + ": a ratio of means divides two sums over the same 100 queries, and a few slow queries weigh on a mean. "
         f"That is why this page judges by each query's own ratio, whose noise band is {band('own')}."
     )
 
@@ -295,8 +295,8 @@ def mark_line(tables: Tables | None = None) -> str:
         f"moved the statistic from 1, and take {costs.NOISE_EDGE} times that, both ways, because a single repeat "
         f"understates timing noise. Each query's own ratio: {band('own')} = 1 ± {costs.NOISE_EDGE} × "
         f"{costs.timing_reach(tables):.2f} (timing alone: {low:.2f}–{high:.2f}). A ratio of mean times: "
-        f"{band('means')}; a ratio of medians: {band('medians')}. Those two are wider, since they divide two sets of "
-        "queries timed apart.\n\n"
+        f"{band('means')}; a ratio of medians: {band('medians')}. Those two are wider: a few slow queries weigh on a "
+        "mean, and the two medians can fall on different queries.\n\n"
         f"{costs.MARK} means one thing on this page: inside the noise band of its statistic, so no clear evidence. "
         "† means one thing too: no clear evidence for a reason other than the noise band, which the line under "
         "its table names: in sections 3 and 5 only, from their few live queries (say, a median whose middle half "

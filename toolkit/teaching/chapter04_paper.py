@@ -109,7 +109,7 @@ def papers_table(read: tuple[int, int, int], tables: Tables | None = None, lead:
         'says "a slow-down". '
         "*Faster* counts only 0.90 or less, *slower* only 1.10 or more: our 10 % tie band, not the paper's; we read "
         "the paper's cells and ours with it alike. Why each query's own ratio decides: a ratio of means divides two "
-        "sets of 100 queries timed apart, and a few slow queries weigh on a mean, so its noise band is wide "
+        "sums over the same 100 queries, and a few slow queries weigh on a mean, so its noise band is wide "
         f"({band('means')}); each query's own ratio divides one query's two times, taken in turn ({band('own')}). "
         "python-fcl's run was not timed twice: it borrows the fast checker's noise band.\n\n</details>"
     )

@@ -157,8 +157,8 @@ def means_table() -> str:
         f"{own[0]:.2f}–{own[1]:.2f} for a median of own ratios, {band[0]:.2f}–{band[1]:.2f} for a ratio of means. "
         "Each band reaches twice as far from 1 as timing one computation twice moved its statistic in the compiled "
         "run; python-fcl's run, not timed twice, borrows them. "
-        "The means' band is wider because a ratio of means divides two sets "
-        "of 100 queries timed apart, where a few slow queries weigh on a mean:\n\n"
+        "The means' band is wider because a ratio of means divides two sums "
+        "over the same 100 queries, where a few slow queries weigh on a mean:\n\n"
         + ratio_table(
             {"the paper's Table 3: ratio of the means (its own planner and checker)": _ratios(paper["total"])}
         )
