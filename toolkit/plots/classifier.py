@@ -59,6 +59,7 @@ PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conse
 HATCH = COLORS["c_obstacle"]  # the C-obstacles' hatch on a P(valid) map: light, seen on its black and its greys
 TINT = {1: 0.08, 3: 0.6}  # wrong cells tinted in their colour: conservative light, its grey read (r41c: 0.5 hid it;
 # r44c: 0.25 still turned the `paper` map's mid grey blue)
+DARK = 0.25  # P(valid) under which a conservative cell is filled sky blue, its light tint unseen on the dark grey
 BLOCKS = {1: 5, 3: 10}  # tiles a side on every map: a 100-cell map's circles one per 20 x 20 cells, squares 10 x 10
 
 
@@ -99,8 +100,9 @@ def probability_maps(
     per = {code: f" (one per {n} x {n} cells holding any)" if n > 1 else "" for code, n in k.items()}
     text = f"Map of P(valid) over {grid.names[0]} and {grid.names[1]} ({grid.shape[0]} x {grid.shape[1]} "
     text += "configurations; grey, 0 black to 1 white; obstacle cells kept tinted vermillion, their squares' colour; "
-    text += "free cells rejected marked by circles) with the true C-obstacles outlined and hatched, the threshold's "
-    text += "contour dotted (hidden under an outline where it runs along one), dangerous mistakes as squares"
+    text += f"free cells rejected marked by circles, filled sky blue below P(valid) {DARK}) with the true C-obstacles "
+    text += "outlined and hatched, the threshold's contour dotted (hidden under an outline where it runs along one), "
+    text += "dangerous mistakes as squares"
     text += f"{per[3]} and conservative ones as circles"
     rule = f"a square per {k[3]} x {k[3]}-cell tile holding dangerous cells, a circle per {k[1]} x {k[1]}-cell tile "
     rule += "holding conservative ones, each drawn on one of its tile's mistake cells (the one nearest their centroid)"
@@ -256,6 +258,7 @@ def _draw_probability(ax, probability, valid, grid: CSpaceSlice, threshold: floa
         tint = np.zeros((*codes.shape, 4))  # (nx, ny, RGBA) each wrong cell in its kind's colour, the grey showing
         for code in MISTAKE_MARKERS:  # through (reader r36c: 22 circles on a flat grey hid 64 % of the map wrong)
             tint[codes == code] = (*to_rgb(ANSWER_COLORS[code]), TINT[code])
+        tint[(codes == 1) & (probability < DARK), 3] = 1.0  # r59c: on a dark grey the light tint was unseen: filled
         ax.imshow(tint.transpose(1, 0, 2), **_cells(grid))
         _draw_mistakes(ax, grid, codes)
     return image
@@ -348,17 +351,14 @@ def _draw_boundary(ax, valid, grid: CSpaceSlice) -> None:
     ax.set_ylabel(dof_label(grid.names[1]))
 
 
-UNDER = "hidden where it runs under an outline"  # the threshold's line, where the model is right (r44c)
-
-
 def _mistake_handles(blocks: Mapping[int, int]) -> list:
     """The P(valid) maps' legend: the threshold's line, and each mistake's mark, said to be one (``blocks[code]`` 1) or
     one per ``k x k`` cells holding any (review r18b: the conservative circles along the blocks read as a border)."""
     per = {code: f"\none per {k} x {k}-cell tile holding any" if k > 1 else "" for code, k in blocks.items()}
     return [
-        (_dots(), "P(valid) = threshold: white dots\nringed dark, the lighter side kept;\n" + UNDER),
+        (_dots(), "P(valid) = threshold: white dots\nringed dark, the lighter side kept;\nhidden under an outline"),
         (_mistake_line(3), f"dangerous mistake: kept, in\ncollision (squares){per[3]}"),
-        (_mistake_line(1), f"conservative mistake: rejected,\nfree (circles){per[1]}"),
+        (_mistake_line(1), f"conservative mistake: rejected,\nfree (circles; filled where dark){per[1]}"),
     ]
 
 
