@@ -134,7 +134,7 @@ def path_map(
     ax.set_title(title or f"P(valid) at threshold {threshold:.2f}, roadmap and path", fontsize=10, wrap=True)
     _legend(fig, [(line, line.get_label()) for line in [cut, *ax.get_lines()] if line.get_label() != "_hair"])
     fit_cell_marks(fig, grid)
-    labels_clear_of(ax, grid, grid.on_grid(valid, "valid"), "in collision")  # r39c: on free cells, not the block
+    labels_clear_of(ax, grid, grid.on_grid(valid, "valid") & (np.asarray(probability) < threshold), "in collision")
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
     text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (a square each), and the"
     text += f" returned path through {len(path)} configurations (yellow, dashed, diamonds), checked exactly."

@@ -103,7 +103,7 @@ def marks_counted(counts: Mapping[str, int], ax, blocks: Mapping[int, int]) -> s
 
 
 LABEL = (66.0, 28.0)  # points: a node's "in collision" label and its coordinates, two lines, box included (9-point)
-OFFSETS = ((30, -30), (-30, -30), (30, 30), (-30, 30), (40, -8), (-40, -8))  # points from the node, tried in order
+OFFSETS = ((30, -30), (-30, -30), (30, 30), (-30, 30), (40, -8), (-40, -8), (60, 40))  # points from the node, in order
 
 
 def labels_clear_of(ax, grid: CSpaceSlice, side, text: str) -> None:
