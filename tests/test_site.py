@@ -692,8 +692,8 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     said = (  # reader r54e, home 2: the limit in sight, not only in the fold; a free network's bound beside ours
         "**A whole query has little to save.** Prediction replaces only the exact checks of sampled configurations. "
         "Even with a free network, skipping those checks can save at most sampling's share of a query: with "
-        f"python-fcl, under 10 % in {len(free)} of {len(limits)} cells. With our `strong` network, which is not "
-        "free, it can save at most that share times its cut in sampling: under 10 % "  # r57e, home 3: not "ours"
+        f"python-fcl, under 10 % in {len(free)} of {len(limits)} cells. With our `strong` network and python-fcl, "
+        "it can save at most that share times its cut in sampling: under 10 % "  # r57e, home 3; r59e, home lift 4
         f"in {len(under)} of {len(limits)} cells. The largest is 3DO BT's: {bt:.3f} × {cut:.3f} ≈ "
         f"{100 * bt * cut:.0f} %. "
         '<details markdown="1"><summary>Why a whole query rarely saves: the limit</summary> In our runs sampling took '
