@@ -449,7 +449,7 @@ def test_the_index_table_counts_the_recorded_cells():
             own_ratios(FCL_ALIKE),
         ],
     }  # reader r40e, home lift 3: three rows; the paper's recipe and the lazy PRM on the results page
-    table = readme_opening().partition("\n| a query's total time")  # the answer's table, after the bands' key
+    table = readme_opening().partition("\n| a query's total time")  # the answer's table, under the figure
     lines = (table[1] + table[2]).strip().split("\n\n")[0].splitlines()
     rows = [[c.strip() for c in line.strip("|").split("|")] for line in lines if line[:2] == "| "]
     shown = {key: row[1:] for key in expected for row in rows[1:] if key in row[0]}
