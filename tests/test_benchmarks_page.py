@@ -482,7 +482,20 @@ def test_the_opening_names_the_statistic_of_no_saving_and_counts_the_means():
     assert PAGE.index("> **How to read the ratios.**") < PAGE.index("own ratio")
     # reader r58g, item 3: the tie band ours, its rule not read as the paper's; the wider bands with queries timed in
     # turn (a ratio of means divides two sums); one name for the figure's network, the legend's read in the caption
-    assert "> - 0.90–1.10 is a *tie*; by this band of ours (the paper has none), 0.90 or below is shorter" in box
+    # reader r59g, item 3: the box's tie strict, as the Key reads it, so its two phrases agree at the edges
+    assert (
+        "> - A *tie*: strictly between 0.90 and 1.10 (our band; the paper has none); 0.90 or below shorter, 1.10 or "
+        "above longer." in box
+    )
+    assert "0.90–1.10 is a *tie*" not in PAGE
+    # reader r59g, item 3 and lift 4: the four networks, cell, own ratio and dearer, visible just above the planning
+    # section in four short items (the Key stays folded)
+    words = PAGE.partition("> **The words of the planning section**")[2].partition("\n## ")[0]
+    items = [line for line in words.splitlines() if line.startswith("> - ")]
+    assert words + "\n## Does prediction make a planner faster?" in PAGE
+    starts = ("> - Four networks:", "> - A *cell*:", "> - A query's *own ratio*:", "> - *Dearer*:")
+    assert len(items) == 4 and all(item.startswith(start) for item, start in zip(items, starts, strict=True))
+    assert "*paper-size*" in words and "*`paper`-preset*" in words and "*lazy-PRM network*" in words
     assert "not the paper's (0.90 or below" not in PAGE and "timed apart" not in PAGE
     assert (
         "The bands of means and medians are wider, though each query was timed with and without in turn: a ratio of "
