@@ -2426,7 +2426,9 @@ def test_the_paper_s_bs_rows_bound_its_check_s_cost():
     fcl_low = min(float(numbers(c)[0]) for n, c in column("time, python-fcl / default exact").items())
     assert fcl_low > 1  # python-fcl dearer than the compiled check; its µs are the fold's, tested above
     assert (
-        f"so one check cost at most its time to validate samples over |S|: about {bound('2ds', 0):.0f} µs in "
+        # reader r59g, "where I got lost": the bound reads the time to validate samples as a query's, and says so
+        "so one check cost at most its time to validate samples, read as a query's (as its total time is), over "
+        f"|S|: about {bound('2ds', 0):.0f} µs in "
         f"2DS and {spread(0)} (2DS: 0.0004 s / 200). That is a bound on the paper's machine, not a timing: if that "
         "time holds other work too, or BS drew more than |S| samples, a check cost less. But in 3D it allows a "
         "check as slow as python-fcl's"
