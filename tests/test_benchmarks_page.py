@@ -503,7 +503,9 @@ def test_the_opening_names_the_statistic_of_no_saving_and_counts_the_means():
     ) in flat
     from toolkit.plots.crossover import LEGEND
 
-    assert f"(the legend's \"{LEGEND['learned']}\": here the `paper` preset's, so the paper-size network)" in flat
+    # reader r59g, figure: the legend no second name for the network; the title and the caption say paper-size
+    assert LEGEND["learned"] == "the network the title names" and "preset's sizes" not in LEGEND["learned"]
+    assert "orange triangles with a dark edge on a thick line, the paper-size network." in flat
     rows = {row[0]: row[-1] for row in next(t for t in tables() if t[0][0] == "statistic")[1:]}
     assert rows == {
         "the median of a cell's queries' *own ratios*": edges("own"),
@@ -663,7 +665,8 @@ def test_the_crossover_figures_are_its_table():
         f"at {CROSSOVER['batch']:,} configurations a call (the mesh panel at {CROSSOVER['mesh_batch']:,}; the last "
         "panel varies it)" in caption
     )
-    assert "orange triangles with a dark edge on a thick line, the network" in caption and "outlined" not in PAGE
+    assert "orange triangles with a dark edge on a thick line, the paper-size network" in caption
+    assert "outlined" not in PAGE
     grown = {k.split()[0]: numbers(k.partition("(")[2]) for k in dearer}  # "obstacles (10–500 blocks)": 10, 500
     for key in ("obstacles", "links", "configurations"):  # "Among 10–500 blocks, on chains of 2–16 links, in small
         assert dearer[next(k for k in dearer if k.startswith(key))].startswith("every size")  # calls and large ..."
