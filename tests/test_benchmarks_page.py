@@ -181,8 +181,8 @@ def test_the_opening_says_what_a_check_costs_as_the_checker_table_measured_it():
     assert LEAD.startswith(
         ": one answer of the untrained paper-size network that `bench` times costs as much as "
         f"{low:g}–{high:g} of our fast exact checks in 3D and {two_ds} in 2DS. This page's planning results come "
-        "from two trained networks, and with our fast exact checkers neither made its planner's typical query shorter, in "
-        "Algorithm 1 or in the lazy PRM. Against the slow python-fcl checker, in Algorithm 1,"
+        "from two trained networks, and with our fast exact checkers neither made its planner's typical query "
+        "shorter, in Algorithm 1 or in the lazy PRM. Against the slow python-fcl checker, in Algorithm 1,"
     )
     assert "December" not in LEAD and "`" + "5152e40" not in LEAD and "cause" not in LEAD
     assert "about as much as an exact check" not in PAGE and float(two_ds.split("–")[0]) > 5
