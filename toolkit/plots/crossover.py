@@ -36,8 +36,9 @@ STYLES = {  # checker -> (marker and line, colour, name)
 LEGEND = {  # checker -> its legend's words; reader r24c: which checker the mesh panel times is said
     "exact": "exact, compiled (mesh: our compiled mesh checker)",
     "fcl": "exact, python-fcl (mesh: FCL's mesh tree, numpy inside test)",
-    "learned": "the network, of the preset's sizes",  # r25a: not "untrained", which read as a fault; reader r41g,
-    # crossover figure: "(its speed does not depend on its weights)" was clutter, the page's text says it
+    "learned": "the network the title names",  # r25a: not "untrained", which read as a fault; reader r41g,
+    # crossover figure: "(its speed does not depend on its weights)" was clutter, the page's text says it; reader
+    # r59g: "of the preset's sizes" beside a title naming a paper-size network read as two names for one network
 }
 
 
