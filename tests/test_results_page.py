@@ -1411,3 +1411,21 @@ def test_reader_r56f_contradictions_are_gone():
     assert "2DS BT 0.034 ± 0.085 s, 3DC-9 OB 0.123 ± 0.46 s" in stars
     figure = TEXT.partition("**Figure 2")[2]
     assert figure.partition("</details>")[2].lstrip().startswith(stars)
+
+
+def test_figure_2_opens_with_its_takeaway_and_names_the_points_on_its_dashed_edge():
+    """Reader r59f, lift items 3 and 5: over Figure 2, how many of our points lie inside the noise band of a ratio of
+    means (counted here from the figure's ratios); under it, the points on its dashed edge said to be beyond it."""
+    low, high = results_noise.noise(TABLES).means
+    ours = [
+        r
+        for series in results_figures.ratios(TEXT, "total").values()
+        for name, by in series.items()
+        if name.startswith("ours")
+        for r in by.values()
+    ]
+    inside = sum(low < r < high for r in ours)
+    assert (inside, len(ours)) == (45, 48)
+    assert f" {inside} of our 48 points lie inside the noise band of a ratio of means, 0.52–1.48, so by means" in PAGE
+    assert "2DS OB 1.51 (yellow cross) and 3DC-7 OB 1.53 (star) sit on the dashed edge at 1.48, just beyond it." in PAGE
+    assert all(r >= high for r in (1.51, 1.53)) and results_figures.just_beyond(TEXT).count("(") == 2

@@ -394,6 +394,24 @@ def just_beyond(text: str) -> str:
     return f" {named} sit{'s' if len(close) == 1 else ''} on the dashed {edge}, just beyond it."
 
 
+def inside_means(text: str) -> str:
+    """Reader r59f, lift item 3: Figure 2's takeaway first, how many of our points lie inside the noise band of a
+    ratio of means, so that by means the figure cannot tell those cells from timing noise."""
+    low, high = noise(parse(text)).means
+    ours = [
+        r
+        for series in ratios(text, "total").values()
+        for name, by in series.items()
+        if name in MARKS
+        for r in by.values()
+    ]
+    inside = sum(costs.inside(r, (low, high)) for r in ours)
+    return (
+        f" {inside} of our {len(ours)} points lie inside the noise band of a ratio of means, "
+        f"{low:.2f}–{high:.2f}, so by means this figure cannot tell those cells from timing noise."
+    )
+
+
 def means_not_verdict(tables: Tables) -> str:
     """Over Figure 2: its points are means, while the page's verdict on the paper's claim reads each query's own ratio
     (:func:`accurate_in_algorithm_1`); the cell :func:`furthest_apart` finds shows it."""
@@ -503,6 +521,6 @@ def figure_markdown(text: str, kind: str = "total") -> str:
         "sampling times have no band of their own."
     )
     tables = parse(text)
-    lead = LEADS[kind] + (means_not_verdict(tables) if kind == "total" else "")
+    lead = LEADS[kind] + (inside_means(text) + means_not_verdict(tables) if kind == "total" else "")
     stars = f"{stars_below(tables)}\n\n" if kind == "total" and stars_below(tables) else ""
     return f"{lead}\n\n{shown}\n\n{stars}{said}\n\n{head}\n" + "\n".join(rows)
