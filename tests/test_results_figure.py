@@ -484,3 +484,22 @@ def test_figure_1_rings_the_points_beyond_the_noise_band_and_keys_the_fill_on_a_
     assert sum(cell.endswith(", ringed") for row in filled.rows for cell in row) == 5
     assert sum(cell.endswith(", ringed") for row in hollow.rows for cell in row) == 2
     assert "ring = clear*" in CLAIM and "ringed, beyond the noise band of this ratio: 5 filled and 2 hollow." in CLAIM
+
+
+def test_figure_1_labels_the_tie_bands_edges_and_its_last_ring_clears_the_frame():
+    """Reader r59f, item 5: the tie band's 0.90 and 1.10 labelled on the left axis beside the "1" (the home page shows
+    this figure too), and the right limit far enough out that the last point's ring, drawn in pixels, stays inside."""
+    fig = results_figures.claim_figure(TEXT)
+    ax = fig.axes[0]
+    FigureCanvasAgg(fig).draw()
+    labels = {label.get_text(): label for label in ax.get_yticklabels()}
+    assert {"0.90", "1", "1.10"} <= set(labels)
+    assert labels["1.10"].get_verticalalignment() == "bottom" and labels["0.90"].get_verticalalignment() == "top"
+    frame = ax.get_window_extent()
+    rings = [line for line in ax.lines if line.get_marker() == "o" and line.get_markerfacecolor() == "none"]
+    rings = [line for line in rings if len(line.get_xdata())]
+    assert len(rings) == 7
+    for line in rings:
+        x, _ = ax.transData.transform((line.get_xdata()[0], line.get_ydata()[0]))
+        radius = line.get_markersize() / 2 * fig.dpi / 72
+        assert frame.x0 < x - radius and x + radius < frame.x1

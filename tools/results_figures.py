@@ -366,6 +366,52 @@ def furthest_apart(tables: Tables) -> tuple[str, str, float, float]:
     return max(cells, key=lambda c: abs(math.log(c[2] / c[3])))
 
 
+MARKS = {  # each series of ours by its mark, as the key names it
+    "ours, paper-recipe network, compiled checker of 2 December": "yellow cross",
+    "ours, strong network, compiled checker of 5 December": "star",
+    "ours, strong network, python-fcl on both sides": "pentagon",
+}
+NEAR = 1.05  # a point of ours beyond the noise band but within this factor of its edge sits on the dashed line
+
+
+def just_beyond(text: str) -> str:
+    """Reader r59f, item 5: Figure 2's points of ours that lie beyond the noise band of a ratio of means but so close
+    to its edge that their marker covers the dashed line, said beyond it in words; empty where there are none."""
+    low, high = noise(parse(text)).means
+    close = [
+        (f"{NAMES[s]} {sampler} {r:.2f} ({MARKS[name]})", high if r > 1 else low)
+        for s, series in ratios(text, "total").items()
+        for name, by in series.items()
+        if name in MARKS
+        for sampler, r in by.items()
+        if (high <= r < high * NEAR) or (low / NEAR < r <= low)
+    ]
+    if not close:
+        return ""
+    edges = sorted({edge for _, edge in close})
+    edge = f"edge at {edges[0]:.2f}" if len(edges) == 1 else "edges"
+    named = " and ".join(cell for cell, _ in close)
+    return f" {named} sit{'s' if len(close) == 1 else ''} on the dashed {edge}, just beyond it."
+
+
+def inside_means(text: str) -> str:
+    """Reader r59f, lift item 3: Figure 2's takeaway first, how many of our points lie inside the noise band of a
+    ratio of means, so that by means the figure cannot tell those cells from timing noise."""
+    low, high = noise(parse(text)).means
+    ours = [
+        r
+        for series in ratios(text, "total").values()
+        for name, by in series.items()
+        if name in MARKS
+        for r in by.values()
+    ]
+    inside = sum(costs.inside(r, (low, high)) for r in ours)
+    return (
+        f" {inside} of our {len(ours)} points lie inside the noise band of a ratio of means, "
+        f"{low:.2f}–{high:.2f}, so by means this figure cannot tell those cells from timing noise."
+    )
+
+
 def means_not_verdict(tables: Tables) -> str:
     """Over Figure 2: its points are means, while the page's verdict on the paper's claim reads each query's own ratio
     (:func:`accurate_in_algorithm_1`); the cell :func:`furthest_apart` finds shows it."""
@@ -468,13 +514,13 @@ def figure_markdown(text: str, kind: str = "total") -> str:
         f"{floor.means[0]:.2f}–{floor.means[1]:.2f} (hatched the other way from Figure 1's band, its edges "
         "dashed as there; built as the table of bands under Figure 1 says), sets a single cell of ours apart only "
         "beyond it. It is our machine's timing noise, not the paper's: it is hatched over our series only, not "
-        "behind the paper's diamonds." + KEY
+        "behind the paper's diamonds." + just_beyond(text) + KEY
         if kind == "total"
         else f"*{kind.capitalize()} time*, counted as in Figure 2. {sampling_takeaway(counts)} The dotted lines "
         "are the tie band's edges. No noise band is drawn: the table “timed twice” holds total times only, so "
         "sampling times have no band of their own."
     )
     tables = parse(text)
-    lead = LEADS[kind] + (means_not_verdict(tables) if kind == "total" else "")
+    lead = LEADS[kind] + (inside_means(text) + means_not_verdict(tables) if kind == "total" else "")
     stars = f"{stars_below(tables)}\n\n" if kind == "total" and stars_below(tables) else ""
     return f"{lead}\n\n{shown}\n\n{stars}{said}\n\n{head}\n" + "\n".join(rows)

@@ -155,7 +155,7 @@ def algorithm_1(tables: Tables) -> str:
     return (
         "**Against the paper's Algorithm 1, the paper-recipe network "
         f"{'saves time in some cells, but not by the method' if 'less time' in verdicts else 'saves no time'}"
-        ".** By the `paper` section's Table 3, of means, the paper-recipe network saved 10 % or more of a query's "
+        ".** By means (the paper-recipe run's Table 3), the paper-recipe network saved 10 % or more of a query's "
         f"time in {verdicts.count('less time')} of {len(verdicts)} cells, "
         f"lost 10 % or more in {verdicts.count('more time')} and tied in {verdicts.count('about the same time')} "
         f"(the paper: savings of up to {percent(max(papers))} %){beyond_floor(ours, tables)}. With the MLP above, "
@@ -274,7 +274,7 @@ def why_no_saving(tables: Tables) -> str:
         f"{cost_exception(tables)}"
         f"{smaller_said(tables)}"
         "\n- **With a slow "
-        f"checker, sampling was a small share of a query, which caps what skipping sampling's checks can save"
+        f"checker, sampling was a small share of a query, which caps the saving that skipping its checks explains"
         f"{exceptions(tables, cleared)}.** python-fcl answered "
         f"{fcl_slower(tables)} times slower than our compiled checker in 3D, yet {worked_example(tables)}"
         f"{cleared_said(tables, cleared)}{share_allows(tables, cleared)}"
@@ -323,7 +323,12 @@ def exceptions(tables: Tables, cleared: list[tuple[str, float]]) -> str:
     other = elsewhere(tables, cleared) if cleared else []
     if not other:
         return ""
-    return f"; in {' and '.join(other)} the whole query saved more than sampling's share"
+    cells, band = sampled(tables), noise(tables).means
+    return "".join(  # reader r59f, item 1: the exception read in place, by means against that statistic's band
+        f"; {cell}'s whole query saved more, {percent(cells[cell].total)} % by means, "
+        f"{'inside' if costs.inside(1 - cells[cell].total, band) else 'beyond'} the noise band of a ratio of means"
+        for cell in other
+    )
 
 
 def smaller_said(tables: Tables) -> str:
@@ -334,7 +339,7 @@ def smaller_said(tables: Tables) -> str:
     if not cheaper or max(cheaper) >= 1:
         return ""
     return (
-        " Whether prediction can save time turns on what the network costs, and that depends on the network: the "
+        " Whether sampling gets cheaper turns on what the network costs, and that depends on the network: the "
         f"smaller paper-recipe network cost {span(cheaper, lambda c: f'{c:.2g}')} times an exact check in 3D (in its "
         "run of 2 December, against that day's slower compiled checker), but it is not accurate (the MLP's finding, "
         "below)."

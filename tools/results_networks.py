@@ -141,7 +141,7 @@ def unseen_table(tables: Tables) -> str:
             [percent(recorded.ours(mlp_rows["paper"][s]["Unseen always valid"])) for s in scenarios],
         ),
         row(
-            "MLP on balanced samples, paper-recipe / strong network (5 December; a coin flip: 50)",
+            "MLP on balanced samples, paper-recipe (2 December) / strong network (5 December; a coin flip: 50)",
             [
                 f"{percent(recorded.ours(mlp_rows['paper'][s]['Balanced unseen Acc']))} / "
                 f"{percent(recorded.ours(mlp_rows[recorded.ALGORITHM_1][s]['Balanced unseen Acc']))}"

@@ -23,6 +23,8 @@ RING_WIDTH = 1.4  # points, the ring's line
 RING_LABEL = "ringed: beyond the noise band (clearly)"
 FILL_GLYPH = "h"  # the fill key's hexagon: a shape no verdict takes
 FILL_KEYS = ("filled:", "hollow:")
+RIGHT_PAD = 0.3  # x units added on the right: the last hollow point's ring (2.15 markers wide) clears the frame
+TIE_EDGES = (0.9, 1.1)  # the tie band's edges, labelled on the left axis (findings.TIE either side of 1)
 
 
 def beyond(cells: Cells, band: tuple[float, float]) -> list[tuple[str, str, float]]:
@@ -59,8 +61,26 @@ def ring(fig: Figure, fast: Cells, slow: Cells, band: tuple[float, float], title
         if str(line.get_label()).startswith(FILL_KEYS):
             line.set_marker(FILL_GLYPH)
             line.set_markersize(query_ratios.SIZE * 1.2)  # a hexagon reads small at a circle's size
+    _tie_edges(ax)
     _legend(fig, ax, title)
     return _words(fig, fast, slow, band)
+
+
+def _tie_edges(ax) -> None:
+    """Reader r59f, item 5: the right limit moved out so the last point's ring clears the frame, and the tie band's
+    edges labelled on the left beside the "1", set apart from it (above and below, smaller), as the home page shows
+    this figure too."""
+    low, high = ax.get_xlim()
+    ax.set_xlim(low, high + RIGHT_PAD)
+    ticks = [float(t) for t in ax.get_yticks()]
+    names = {t: label.get_text() for t, label in zip(ticks, ax.get_yticklabels())}
+    names.update({TIE_EDGES[0]: f"{TIE_EDGES[0]:.2f}", TIE_EDGES[1]: f"{TIE_EDGES[1]:.2f}"})
+    shown = sorted(names)
+    ax.set_yticks(shown, [names[t] for t in shown])
+    for t, label in zip(shown, ax.get_yticklabels()):
+        if t in TIE_EDGES:
+            label.set_fontsize(7.5)
+            label.set_verticalalignment("top" if t < 1 else "bottom")
 
 
 def _ring_look() -> dict:
