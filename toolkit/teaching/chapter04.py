@@ -288,8 +288,8 @@ def mark_line(tables: Tables | None = None) -> str:
         return f"{bands[kind][0]:.2f}–{bands[kind][1]:.2f}"
 
     return (
-        f"The hatched band is the noise band of each query's own ratio, {band('own')}: a saves or costs verdict "
-        f"inside it is no clear evidence, and carries {costs.MARK} (a tie never does).\n\n<details><summary>How "
+        f"The hatched band is the box's noise band, {band('own')}; a tie never carries {costs.MARK}."
+        "\n\n<details><summary>How "
         "every noise band is built, and the page's two marks</summary>\n\n"
         "Every noise band is built one way (`docs/results.md`): time one computation twice, see how far timing alone "
         f"moved the statistic from 1, and take {costs.NOISE_EDGE} times that, both ways, because a single repeat "
