@@ -218,10 +218,9 @@ SLOW_ROW = "python-fcl on both sides (not timed twice: it borrows the fast check
 
 
 def answer(tables: Tables | None = None) -> str:
-    """Chapter 04's answer from ``docs/results.md`` (readers r44d, r46d item 3, r47d item 1): three short sentences,
-    the median own ratio's faster and slower cells with each checker and the paper's Table 3 quoted exactly
-    (:func:`~toolkit.teaching.chapter04_paper.papers_line`), then our table with the ties and the counts beyond the
-    noise band, and Table 3's under its own header (it is by means). The counts by means are section 6's."""
+    """Chapter 04's answer from ``docs/results.md`` (reader r59d, lifts 1-3): two sentences by one statistic, with no
+    term the box under them defines, then the box, our table with the ties and the counts beyond the noise band, and
+    the paper's Table 3 beside ours by means in a fold (like with like)."""
     facts = checker_scope.slow_checker(tables)
     papers = Counter(time_verdict(1 - saved) for saved in facts.papers_totals)
     fast, slow = (costs.median_counts(preset, tables) for preset, _ in RUNS)
