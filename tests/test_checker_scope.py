@@ -310,8 +310,8 @@ def test_the_answers_why_gives_sampling_s_share_and_the_papers_savings_beyond_sa
         'after sampling, which also holds the encoding. In 3 of the 4 costly cells section 6 splits ("Where the '
         'extra time went": 3DC-7 OB, 3DC-7 BT, 3DC-9 BT, 3DO OB), most of the extra mean time came after sampling. '
         "The recorded runs keep no node counts and time the encoding in 3DC-7 only, so they cannot say what else "
-        "grew. [Section 5](#5-where-a-querys-time-goes-in-one-tie-cell-3dc-7-bs)'s live queries, in a tie cell, show "
-        "another roadmap, the same time."
+        "grew. [Section 5](#5-where-a-querys-time-goes-in-one-tie-cell-3dc-7-bs)'s live queries show another roadmap, "
+        "in a cell whose recorded time ties."
     )
     assert sum(c.after_share > 0.5 for c in costs.dear_cells()) == 3 and len(costs.dear_cells()) == 4
     # reader r55d, item 2: the two sets of 10 cells named apart (the record as of r55d)
