@@ -284,7 +284,7 @@ def test_the_ratio_figures_spread_their_labels_near_1_over_both_sides():
             assert ({"0.82", "1.18"} <= said) == near and "1" in said and "0.9" not in said  # r49d: the band's edges
             assert not {"0.8", "1.2"} & said
             (right,) = ax.child_axes
-            assert [t.get_text() for t in right.get_yticklabels()] == ["0.9", "1.1"]
+            assert [t.get_text() for t in right.get_yticklabels()] == ["0.90", "1.10"]  # reader r59d: as the legend
             for labels in (left, right.get_yticklabels()):
                 boxes = sorted((t.get_window_extent(renderer) for t in labels), key=lambda b: b.y0)
                 assert all(b.y0 - a.y1 >= 2 for a, b in zip(boxes, boxes[1:]))  # at least 2 pixels apart

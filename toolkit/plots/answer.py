@@ -120,7 +120,7 @@ def _near_ticks(ax, labelled: bool = True, band: tuple[float, float] | None = No
     ax.tick_params(axis="y", which="minor", labelsize=8)
     edges = [t for t in (0.9, 1.1) if lo <= t <= hi]
     right = ax.secondary_yaxis("right")
-    right.set_yticks(edges, [f"{t:g}" for t in edges])
+    right.set_yticks(edges, [f"{t:.2f}" for t in edges])  # reader r59d: 0.90 and 1.10, as the text and legend
     right.yaxis.set_minor_locator(NullLocator())
     right.tick_params(axis="y", labelsize=8)
 

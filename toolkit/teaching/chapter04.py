@@ -218,10 +218,9 @@ SLOW_ROW = "python-fcl on both sides (not timed twice: it borrows the fast check
 
 
 def answer(tables: Tables | None = None) -> str:
-    """Chapter 04's answer from ``docs/results.md`` (readers r44d, r46d item 3, r47d item 1): three short sentences,
-    the median own ratio's faster and slower cells with each checker and the paper's Table 3 quoted exactly
-    (:func:`~toolkit.teaching.chapter04_paper.papers_line`), then our table with the ties and the counts beyond the
-    noise band, and Table 3's under its own header (it is by means). The counts by means are section 6's."""
+    """Chapter 04's answer from ``docs/results.md`` (reader r59d, lifts 1-3): two sentences by one statistic, with no
+    term the box under them defines, then the box, our table with the ties and the counts beyond the noise band, and
+    the paper's Table 3 beside ours by means in a fold (like with like)."""
     facts = checker_scope.slow_checker(tables)
     papers = Counter(time_verdict(1 - saved) for saved in facts.papers_totals)
     fast, slow = (costs.median_counts(preset, tables) for preset, _ in RUNS)
@@ -288,8 +287,8 @@ def mark_line(tables: Tables | None = None) -> str:
         return f"{bands[kind][0]:.2f}–{bands[kind][1]:.2f}"
 
     return (
-        f"The hatched band is the noise band of each query's own ratio, {band('own')}: a saves or costs verdict "
-        f"inside it is no clear evidence, and carries {costs.MARK} (a tie never does).\n\n<details><summary>How "
+        f"The hatched band is the box's noise band, {band('own')}; a tie never carries {costs.MARK}."
+        "\n\n<details><summary>How "
         "every noise band is built, and the page's two marks</summary>\n\n"
         "Every noise band is built one way (`docs/results.md`): time one computation twice, see how far timing alone "
         f"moved the statistic from 1, and take {costs.NOISE_EDGE} times that, both ways, because a single repeat "

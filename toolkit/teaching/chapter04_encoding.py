@@ -70,19 +70,6 @@ def disagreement(tables: Tables | None = None) -> str:
     )
 
 
-def sampling_clause(word: str = "No", tables: Tables | None = None) -> str:
-    """The answer's clause on the paper's sampling-time claim against python-fcl (reader r58d, item 2; r54d, item 4:
-    the same direction, not the same size), where every cell's sampling took 10 % or more less time by means."""
-    facts = checker_scope.slow_checker(tables)
-    saved, cells = facts.sampling_verdicts()[SAVES], len(facts.sampling)
-    if saved < cells:
-        return f"with python-fcl, sampling itself took 10 % or more less time by means in {saved or 'none'} of {cells}"
-    return (
-        f"with python-fcl, sampling itself took {checker_scope.percents(facts.sampling)} less time by means (the "
-        f'paper: {checker_scope.percents(facts.papers_sampling)}), so the "{word}" is about a whole query'
-    )
-
-
 def live_cell(tables: Tables | None = None) -> str:
     """Reader r58d, item 1: section 5's live cell (3DC-7, BS) as the record's median own ratio reads it."""
     ratio = recorded.query_ratios(recorded.ALGORITHM_1, tables).get("3dc7", {}).get("BS")

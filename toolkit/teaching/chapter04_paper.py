@@ -116,22 +116,20 @@ def papers_table(read: tuple[int, int, int], tables: Tables | None = None, lead:
 
 
 def plain(counts: tuple[int, int, int, int], total: int, tables: Tables | None = None, word: str = "No") -> str:
-    """The answer's three sentences (reader r57d, lift 1): a jargon-free one, then the statistic and its noise band
-    and python-fcl's sampling (r58d, item 2), then the rest, which the recorded runs cannot show and section 5's live
-    cell does (r58d, item 1); ``counts``: fast checker's savings, its costs, of them beyond the band, python-fcl's."""
-    fast, costly, beyond, slow = counts
+    """The answer after its word (reader r59d, lifts 1-2): one count by one statistic, named in the box under it, and
+    both halves of the "why" in few words; ``counts``: fast checker's savings, its costs, beyond the band, python-fcl's.
+    """
+    fast, _, _, slow = counts
     fast_share, slow_share = (costs.sampling_shares(preset, tables) for preset, _ in RUNS)
+    rows = recorded.table(recorded.ALGORITHM_1, "Checker throughput", tables).values()
+    dear = sum(recorded.ours(r["learned cfg/s"]) < recorded.ours(r["exact cfg/s"]) for r in rows)
+    where = "" if dear == len(rows) else f" in {dear} of {len(rows)} scenarios"
     return (
         "With an accurate network inside the paper's own planner (Algorithm 1), prediction saved 10 % or more of a "
-        f"query's time in {fast or 'none'} of {total} settings (a scenario and a sampler) against our fast exact "
-        f"checker and in {slow or 'none'} of {total} against slow python-fcl (the paper's Table 3, by mean times: "
-        f"{len(table3_totals()['ten'])} of {len(table3_totals()['all'])}), because the sample checks it replaces take "
-        f"at most {100 * max(fast_share):.0f} % of a query ({100 * max(slow_share):.0f} % with python-fcl). "
-        "Each count reads a setting's median own ratio (the box below); with our fast checker "
-        f"{costly or 'none'} of {total} settings took 10 % or more longer, {beyond} of them beyond the noise band; "
-        f"{chapter04_encoding.sampling_clause(word, tables)}. The rest of prediction's effect comes after sampling: "
-        "the encoding (measured in 3DC-7 only, section 5) and perhaps a different roadmap, which the recorded runs "
-        f"cannot show (section 5's live queries show one, in {chapter04_encoding.live_cell(tables)})."
+        f"query's time in {fast or 'none'} of {total} settings against our fast exact checker and in "
+        f"{slow or 'none'} of {total} against slow python-fcl. Two reasons: sample checks are at most "
+        f"{100 * max(fast_share):.0f} % of a query ({100 * max(slow_share):.0f} % with python-fcl), and a network "
+        f"call costs more than the fast check it replaces{where}."
     )
 
 
@@ -153,25 +151,22 @@ def how_to_read(tables: Tables | None = None) -> str:
 
 
 def why(tables: Tables | None = None) -> str:
-    """The answer's *Why* (reader r47d, item 3; r53d, item 3; r55d, items 1-2): what sampling's share caps, the rest
-    through the roadmap (:func:`roadmap`), the shares folded, the paper's savings beyond sampling, the accuracy."""
-    shares, slow = (costs.sampling_shares(preset, tables) for preset, _ in RUNS)
+    """Under the answer (reader r59d, lift 4): where its two reasons are measured and python-fcl's ties, in one short
+    paragraph; what stays open (:func:`roadmap`); the shares folded; the paper's savings beyond sampling; accuracy."""
+    slow = costs.sampling_shares(RUNS[1][0], tables)
     ties = costs.median_counts(RUNS[1][0], tables)[TIES][0]
     rows = recorded.table(recorded.ALGORITHM_1, "Checker throughput", tables).values()
     fcl = sum(recorded.ours(r["FCL cfg/s"]) < recorded.ours(r["learned cfg/s"]) for r in rows)  # network cheaper
     over = saved_beyond_sampling()
     top = max(over, key=lambda c: over[c][0])
     cells = sum(len(k["total_s"]) for k in TIMES.values())
-    cheaper = "a network call is the cheaper check" if fcl == len(rows) else f"a network call is cheaper in {fcl}"
+    cheaper = "the network is the cheaper check" if fcl == len(rows) else f"the network is cheaper in {fcl} scenarios"
     return (
-        "**Why no saving:** skipping the samples' checks, the only step prediction replaces, can save at most "
-        f"sampling's share of a query: {100 * min(shares):.1f}–{100 * max(shares):.0f} % with our fast checker (mean "
-        "times without prediction, by cell). A network call also costs more than that checker's check (measured in "
-        "[section 4](#4-is-the-network-a-cheaper-check) for 2DS and 3DC-7, recorded for all four in the last table of "
-        "section 6's fold), and encoding the workspace comes on top. Against python-fcl "
-        f"{cheaper} (measured in section 4 for 2DS and 3DC-7; for all four in the results page's checker throughputs "
-        f"of that run), but sampling is only {100 * min(slow):.1f}–{100 * max(slow):.0f} % of a query there, so {ties} "
-        f"of {len(slow)} cells tie.\n\n{roadmap(tables)}\n\n{shares_fold(tables)}\n\n"
+        "**Why, measured:** the answer's shares are of mean times without prediction (the fold below); a network "
+        "call's cost against each checker is measured in [section 4](#4-is-the-network-a-cheaper-check) for 2DS "
+        "and 3DC-7, and for all four in the results page's checker throughputs. "
+        f"Against python-fcl {cheaper}, yet {ties} of {len(slow)} cells tie: sampling is a small share there too."
+        f"\n\n{roadmap(tables)}\n\n{shares_fold(tables)}\n\n"
         "**Nor can skipped sample checks explain the paper's savings:** in "
         f"{len(over)} of its {cells} cells the total time saved exceeds the whole sampling time without prediction "
         f"(e.g. {checker_scope.NAMES[top[0]]} {top[1]} saves {over[top][0]:.2f} s; its sampling took "
@@ -180,20 +175,20 @@ def why(tables: Tables | None = None) -> str:
 
 
 def roadmap(tables: Tables | None = None) -> str:
-    """Reader r55d, item 1: the rest of a query's change runs through the roadmap, computed: the costly cells whose
-    extra mean time came mostly after sampling (:func:`costs.dear_cells`), named where first said (r57d, lift 2)."""
+    """What stays open, in one place (reader r59d, lift 4; r59d item 3: what section 5 shows): the costly cells whose
+    extra mean time came mostly after sampling (:func:`costs.dear_cells`), the encoding, the roadmap."""
     dear = costs.dear_cells(tables)
     after = sum(c.after_share > 0.5 for c in dear)
-    out = costs.left_out(tables)
-    beyond = len(dear) + len(out)
-    less = f", but in {' and '.join(out)} the mean time did not grow" if out else ""  # r58d, item 3: two sentences
     named = ", ".join(f"{c.scenario} {c.sampler}" for c in dear)
+    moved = {"a tie cell": "ties", "a costly cell": "grows", "a cell that saves time": "falls"}  # the record's
+    time = moved.get(chapter04_encoding.live_cell(tables), "is recorded")  # r59d: what section 5 shows, held live
     return (
-        "**The rest comes after sampling:** by changing which samples are kept, prediction can change the roadmap "
-        "built from them, and so the time after sampling (which also holds the encoding). In "
-        f'{beyond} cells the median own ratio costs time beyond its noise band{less}. Section 6 ("Where the extra '
-        f'time went") splits {"the other " if out else "those "}{len(dear)} into stages ({named}). In {after} of '
-        f"those {len(dear)}, most of the extra mean time came after sampling."
+        "**What stays open:** by changing which samples are kept, prediction can change the roadmap, and so the time "
+        f"after sampling, which also holds the encoding. In {after} of the {len(dear)} costly cells section 6 splits "
+        f'("Where the extra time went": {named}), most of the extra mean time came after sampling. The recorded runs '
+        "keep no node counts and time the encoding in 3DC-7 only, so they cannot say what else grew. "
+        f"[Section 5](#5-where-a-querys-time-goes-in-one-tie-cell-3dc-7-bs)'s live queries show another roadmap, in "
+        f"a cell whose recorded time {time}."
     )
 
 
