@@ -287,9 +287,9 @@ def test_closest_step_gives_the_last_row_of_the_steps_close_to_and_below_the_pap
     summary = " ".join(texts).split("## Summary and next", 1)[1]
     assert said in summary and close in summary and "mostly through" not in texts[0] + summary  # r51c item 2
     causes = (
-        "Two things cause it, and this page does not rank them: the paper's small MLP and "
-        "the CAE's code `z`, which says little about a new workspace."
-    )  # r52c item 1: both of the closing section's causes; r54c item 1: unranked (the CAE tried on the weak MLP only)
+        "Two things cause it, and this page does not rank them: the paper's small MLP, trained on our 30 workspaces, "
+        "and the CAE's code `z`, which says little about a new workspace."
+    )  # r52c item 1: both of the closing section's causes; r54c item 1: unranked; r60c item 1: the workspaces named
     whole = " ".join(texts)
     assert causes in texts[0] and causes in summary and "Two things fail, and this page does not rank them" in whole
     table1 = f"{paper_numbers.CAE['2ds']['unseen_acc']:.0%}".replace("%", " %")  # r57c item 1: why both hold
