@@ -249,13 +249,14 @@ def _chapter_02_error_terms(nb, found: str) -> list[str]:
 
 def _chapter_02_below(found: str) -> list[str]:
     """Reader r55b: section 7 says most of the many-grids CAE's points on the new grids lie above the diagonal, not
-    all (it once said "few lie below" of 61 of 500). Held to its printed count at full size."""
-    line = re.search(r"(\d+) of (\d+) new grids below the diagonal", found)
+    all (it once said "few lie below" of 61 of 500); reader r60b: "lies mostly above", with both counts printed.
+    Held to its printed counts at full size."""
+    line = re.search(r"(\d+) of (\d+) new grids above the diagonal, (\d+) below", found)
     if line is None:
-        return ["02: section 7 does not count the many-grids CAE's new grids below the diagonal"]
-    below, total = int(line[1]), int(line[2])
-    if "memorized. Near perfect on its training grids" in found and not 0 < below < total / 2:
-        return [f"02: section 7 says most of its points lie above the diagonal, not all: {line.group(0)}"]
+        return ["02: section 7 does not count the many-grids CAE's new grids above and below the diagonal"]
+    above, total, below = int(line[1]), int(line[2]), int(line[3])
+    if "memorized. Near perfect on its training grids" in found and not (0 < below and total / 2 < above <= total):
+        return [f"02: section 7 says its points lie mostly above the diagonal, not all: {line.group(0)}"]
     return []
 
 
