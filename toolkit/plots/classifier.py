@@ -59,7 +59,7 @@ PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conse
 HATCH = COLORS["c_obstacle"]  # the C-obstacles' hatch on a P(valid) map: light, seen on its black and its greys
 TINT = {1: 0.08, 3: 0.6}  # wrong cells tinted in their colour: conservative light, its grey read (r41c, r44c)
 DARK = 0.25  # P(valid) under which a conservative cell is filled sky blue, its light tint unseen on the dark grey
-UNDER = f"the cell under\none sky blue if P(valid) < {DARK}"  # the circles' legend (r60c: not the circle's fill)
+UNDER = f"its cell filled\nsky blue if P(valid) < {DARK}"  # the circles' legend (r60c: not the circle's fill)
 BLOCKS = {1: 5, 3: 10}  # tiles a side on every map: a 100-cell map's circles one per 20 x 20 cells, squares 10 x 10
 
 
