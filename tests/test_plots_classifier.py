@@ -179,6 +179,8 @@ def test_probability_map_shows_the_probabilities_the_boundary_and_exactly_the_mi
     np.testing.assert_allclose(tinted[conservative][:, :3], np.tile(to_rgb(pc.CONSERVATIVE), (conservative.sum(), 1)))
     np.testing.assert_allclose(tinted[dangerous][:, :3], np.tile(to_rgb(pc.DANGEROUS), (dangerous.sum(), 1)))
     assert dangerous.sum() > 0 and conservative.sum() > 0  # the test means something
+    legend = " ".join(t.get_text() for t in ax.figure.legends[0].get_texts())  # r60c: the cell, not the circle
+    assert "(circles; its cell filled\nsky blue if P(valid) < 0.25)" in legend and "where dark" not in legend
     assert_squares_mark(ax, grid, dangerous, block_of_squares(ax.figure))
     assert_squares_mark(ax, grid, conservative, block_of_squares(ax.figure, "circles"), label="valid rejected")
     marks = {c.get_label(): len(c.get_offsets()) for c in cell_marks.cell_marks(ax)}  # r34c: marks counted too

@@ -228,6 +228,9 @@ def test_the_why_names_the_ablations_largest_steps_by_their_measure_as_the_table
     assert "*Removing dropout* is named as no cause here" in said  # r54c item 1: its evidence is no clear evidence
     assert "The largest step there is removing dropout" not in said and "heavy dropout" not in " ".join(texts)
     assert "tried with the weak 6–4 MLP only" in bullets and "does not rank the two causes" in bullets
+    assert "+3.2 and dropout's +5.4 both lie within that" in bullets and "rests on notebook 02 and on" in bullets
+    assert "What a good `z` adds to an MLP that can use it" not in bullets  # r60c item 2: one rule for a cause
+    assert "the lines printed above the figure give its balanced" in " ".join(texts)  # r60c: the sweep has none
     assert "+6.2, and still below the paper's 87.5 %" in bullets  # the last row, below Table 2's balanced accuracy
     assert "shows what each step adds" in texts[2] and "why" not in texts[2]  # r55c 5: the table cannot rank causes
     assert "(the line under the opening table)" in verdict  # r55c 3: the table the line is under

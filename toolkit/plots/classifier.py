@@ -57,9 +57,9 @@ ZORDER = {1: 2.8, 3: 3.0}  # over the lines (2: the boundary), squares over circ
 PITCH = {1: 40.0, 3: 14.0}  # points between two marks' centres, at least: conservative circles sparse (the grey between
 # them is P(valid)), dangerous squares apart, a gap between their rings (r18b: a pile of them could not be counted)
 HATCH = COLORS["c_obstacle"]  # the C-obstacles' hatch on a P(valid) map: light, seen on its black and its greys
-TINT = {1: 0.08, 3: 0.6}  # wrong cells tinted in their colour: conservative light, its grey read (r41c: 0.5 hid it;
-# r44c: 0.25 still turned the `paper` map's mid grey blue)
+TINT = {1: 0.08, 3: 0.6}  # wrong cells tinted in their colour: conservative light, its grey read (r41c, r44c)
 DARK = 0.25  # P(valid) under which a conservative cell is filled sky blue, its light tint unseen on the dark grey
+UNDER = f"its cell filled\nsky blue if P(valid) < {DARK}"  # the circles' legend (r60c: not the circle's fill)
 BLOCKS = {1: 5, 3: 10}  # tiles a side on every map: a 100-cell map's circles one per 20 x 20 cells, squares 10 x 10
 
 
@@ -358,7 +358,7 @@ def _mistake_handles(blocks: Mapping[int, int]) -> list:
     return [
         (_dots(), "P(valid) = threshold: white dots\nringed dark, the lighter side kept;\nhidden under an outline"),
         (_mistake_line(3), f"dangerous mistake: kept, in\ncollision (squares){per[3]}"),
-        (_mistake_line(1), f"conservative mistake: rejected,\nfree (circles; filled where dark){per[1]}"),
+        (_mistake_line(1), f"conservative mistake: rejected,\nfree (circles; {UNDER}){per[1]}"),
     ]
 
 
