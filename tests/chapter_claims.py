@@ -1043,7 +1043,7 @@ STATUS = re.compile(  # findings.claim_status: the paper's claim from the record
 ANSWER_NO = "**No.** With an accurate network inside the paper's own planner"  # r57d: plain words first
 FAST_BULLET = re.compile(  # chapter04.answer: two sentences (r59d lifts 1-2), the box, the counts in a table, a fold
     r"\*\*(?:No|Rarely|In part)\.\*\* With an accurate network inside the paper's own planner \(Algorithm 1\), "
-    r"prediction saved 10 % or more of a query's time in (?P<fast_said>none|\d+) of (?P<total>\d+) settings "
+    r"prediction saved 10 % or more of a typical query's time in (?P<fast_said>none|\d+) of (?P<total>\d+) settings "
     r"against our fast exact checker and in (?P<slow_said>none|\d+) of \d+ against slow python-fcl\. "
     r"Two reasons: sample checks are at most (?P<share>\d+) % of a query \((?P<high>\d+) % with python-fcl\), "
     r"and a network call costs more than the fast check it replaces(?: in \d+ of \d+ scenarios)?\.\s"  # r59d, 2

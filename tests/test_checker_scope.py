@@ -115,7 +115,7 @@ def test_the_answer_is_three_plain_sentences_read_from_the_record():
     box, _, table = rest.partition("\n\n")
     assert sentences == (  # reader r59d, lifts 1-2: one statistic's count, both halves of the why, under 70 words
         "**No.** With an accurate network inside the paper's own planner (Algorithm 1), prediction saved 10 % or more "
-        "of a query's time in none of 16 settings against our fast exact checker and in 3 of 16 against slow "
+        "of a typical query's time in none of 16 settings against our fast exact checker and in 3 of 16 against slow "
         "python-fcl. Two reasons: sample checks are at most 18 % of a query (34 % with python-fcl), and a network call "
         "costs more than the fast check it replaces."
     )
@@ -180,7 +180,9 @@ def test_the_answer_is_three_plain_sentences_read_from_the_record():
     )
     line = chapter04.mark_line()  # reader r44d, item 2: one visible sentence, the one rule folded under it
     visible, _, folded = line.partition("<details>")
-    assert visible.strip() == ("The hatched band is the box's noise band, 0.82–1.18; a tie never carries \\*.")
+    assert visible.strip() == (
+        'The hatched band is the noise band of "How to read the ratios", 0.82–1.18; a tie never carries \\*.'
+    )
     assert "take 2 times that, both ways, because a single repeat understates timing noise" in folded
     assert "0.82–1.18 = 1 ± 2 × 0.09 (timing alone: 0.96–1.09)" in folded
     assert "A ratio of mean times: 0.52–1.48; a ratio of medians: 0.40–1.60." in folded
@@ -310,8 +312,8 @@ def test_the_answers_why_gives_sampling_s_share_and_the_papers_savings_beyond_sa
         'after sampling, which also holds the encoding. In 3 of the 4 costly cells section 6 splits ("Where the '
         'extra time went": 3DC-7 OB, 3DC-7 BT, 3DC-9 BT, 3DO OB), most of the extra mean time came after sampling. '
         "The recorded runs keep no node counts and time the encoding in 3DC-7 only, so they cannot say what else "
-        "grew. [Section 5](#5-where-a-querys-time-goes-in-one-tie-cell-3dc-7-bs)'s live queries show another roadmap, "
-        "in a cell whose recorded time ties."
+        "grew. [Section 5](#5-where-a-querys-time-goes-in-one-tie-cell-3dc-7-bs)'s live queries show a slightly "
+        "smaller roadmap, in a cell whose recorded time ties."
     )
     assert sum(c.after_share > 0.5 for c in costs.dear_cells()) == 3 and len(costs.dear_cells()) == 4
     # reader r55d, item 2: the two sets of 10 cells named apart (the record as of r55d)
@@ -320,7 +322,9 @@ def test_the_answers_why_gives_sampling_s_share_and_the_papers_savings_beyond_sa
         "only there." in said
     )
     why = said.split("\n\n")[0]
-    assert why.endswith("yet 13 of 16 cells tie: sampling is a small share there too.")  # r50d item 2: fcl's ties
+    assert why.endswith(  # r50d item 2: fcl's ties; r60d item 1: share × cut by means, computed from the record
+        "yet 13 of 16 cells tie: by means, the sampling time it saves is under 10 % of a query in 14 of 16."
+    )
     assert "Table 2" not in said  # reader r50d, item 4: the paper's Table 2 is another table
     assert "and for all four in the results page's checker throughputs. Against python-fcl the network is" in why
     # reader r53d, item 2: the accurate network's accuracy on the page, a one-line table from the record, chapter 03

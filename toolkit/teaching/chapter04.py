@@ -287,7 +287,8 @@ def mark_line(tables: Tables | None = None) -> str:
         return f"{bands[kind][0]:.2f}–{bands[kind][1]:.2f}"
 
     return (
-        f"The hatched band is the box's noise band, {band('own')}; a tie never carries {costs.MARK}."
+        f'The hatched band is the noise band of "How to read the ratios", {band("own")}; a tie never carries '
+        f"{costs.MARK}."
         "\n\n<details><summary>How "
         "every noise band is built, and the page's two marks</summary>\n\n"
         "Every noise band is built one way (`docs/results.md`): time one computation twice, see how far timing alone "
