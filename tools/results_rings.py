@@ -33,18 +33,12 @@ def beyond(cells: Cells, band: tuple[float, float]) -> list[tuple[str, str, floa
     return [(s, sampler, m) for s, by in cells.items() for sampler, (m, _, _) in by.items() if not low < m < high]
 
 
-def _centres(fast: Cells, slow: Cells) -> dict[tuple[str, str, bool], float]:
-    """Each point's x as :func:`toolkit.plots.query_ratios.own_ratios` places it: ``{(scenario, sampler, hollow): x}``,
-    the filled point left of its sampler's tick and the hollow one right of it where a scenario has both."""
-    found, count = {}, 0
-    for k, (scenario, by) in enumerate(fast.items()):
-        second = slow.get(scenario, {})
-        for i, sampler in enumerate(by):
-            x = count + k * query_ratios.GAP + i
-            found[(scenario, sampler, False)] = x - query_ratios.APART * bool(second)
-            found[(scenario, sampler, True)] = x + query_ratios.APART
-        count += len(by)
-    return found
+def _drawn_beyond(ax, band: tuple[float, float]) -> list[tuple[float, float]]:
+    """Where :func:`toolkit.plots.query_ratios.own_ratios` drew each median on an edge of ``band`` or beyond it, read
+    from the figure itself (a median is a one-point marker line): ``[(x, median), ...]``."""
+    low, high = band
+    medians = [line for line in ax.lines if len(line.get_xdata()) == 1 and line.get_marker() not in ("None", "")]
+    return [(line.get_xdata()[0], line.get_ydata()[0]) for line in medians if not low < line.get_ydata()[0] < high]
 
 
 def ring(fig: Figure, fast: Cells, slow: Cells, band: tuple[float, float], title: str) -> Figure:
@@ -52,10 +46,8 @@ def ring(fig: Figure, fast: Cells, slow: Cells, band: tuple[float, float], title
     key on hexagons, its legend rebuilt with the ring's entry (:func:`_legend`), and its words told which points are
     ringed (:func:`_words`)."""
     ax = fig.axes[0]
-    at = _centres(fast, slow)
-    for hollow, cells in ((False, fast), (True, slow)):
-        for scenario, sampler, m in beyond(cells, band):
-            ax.plot([at[(scenario, sampler, hollow)]], [m], **_ring_look(), zorder=4)
+    for x, median in _drawn_beyond(ax, band):
+        ax.plot([x], [median], **_ring_look(), zorder=4)
     ax.plot([], [], **_ring_look(), label=RING_LABEL)
     for line in ax.lines:
         if str(line.get_label()).startswith(FILL_KEYS):
