@@ -503,8 +503,8 @@ def test_path_map_draws_the_path_and_marks_the_nodes_in_collision(grid, probabil
     assert path_line.get_linestyle() == "--" and path_line.get_marker() == "D"  # not the boundary's solid line
     squares = next(line for line in ax.get_lines() if line.get_label() == pc.COLLIDING)
     assert squares.get_zorder() > path_line.get_zorder()
-    # reader r30c: a node in collision is marked as the maps' dangerous squares, and the start is no square
-    assert (squares.get_marker(), to_hex(squares.get_color())) == ("s", COLORS["dangerous"])
+    # w41c: a node in collision in the dangerous colour, but no square (a map's tile of dangerous cells) nor the start's
+    assert (squares.get_marker(), to_hex(squares.get_color())) == ("P", COLORS["dangerous"])
     assert next(line for line in ax.get_lines() if line.get_label() == "start").get_marker() != "s"
     assert to_hex(drawn.get_colors()[0]) == COLORS["ink"]  # the edges: ink, seen on the light and the mid greys
     # readers r12b, r13b, r15c: a cross among the map's dangerous squares hid there; the map's mistakes go unmarked

@@ -193,7 +193,15 @@ def test_the_why_names_the_ablations_largest_steps_by_their_measure_as_the_table
         len(table) == 2 + 1 + len(steps) + 1
         and table[2] == '| "always valid", no model, on the same samples | 50.0% | 85.2% |'
     )  # r54c item 4: fidelity.md's one decimal, each change from its unrounded values (+26.3, not +27)
-    assert table[3].endswith("| 55.2% | 36.2% |") and table[4].endswith("| 58.4% (+3.2) | 45.4% (+9.2) |")
+    run = recorded.table("paper", "MLP accuracy")["2ds"]  # w41c: row 0 is the opening's recorded run, to a tenth
+    assert [f"{v:.0f}" for v in rows[0]] == [
+        f"{100 * recorded.ours(run[c]):.0f}" for c in ("Balanced unseen Acc", "Unseen Acc")
+    ]
+    assert (
+        "the opening's recorded run" in table[3]
+        and table[3].endswith("| 55.2% | 36.2% |")
+        and table[4].endswith("| 58.4% (+3.2) | 45.4% (+9.2) |")
+    )
     assert table[5].endswith("| 63.8% (+5.4) | 71.7% (+26.3) |")
     assert table[6].endswith("| 49.8% (−14.0) | 52.4% (−19.3) |") and table[-2].endswith(
         "| 83.8% (+6.2) | 85.0% (+11.3) |"

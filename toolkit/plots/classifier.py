@@ -115,8 +115,8 @@ def path_map(
     """A planner's roadmap ``nodes (M, dof)`` and returned ``path (P, dof)`` over a P(valid) map of the grid's two DoFs.
 
     Nodes in collision (``nodes_valid`` False, by the exact checker) are the dangerous mistakes the planner accepted:
-    vermillion squares ringed as the maps' dangerous squares, labelled; the start a triangle (r30c: a square there read
-    as one). The path, checked exactly, avoids them; it is dashed with a diamond per configuration (none beside an
+    vermillion plus signs, labelled (w41c: not a map's square, a tile of dangerous cells); the start a triangle.
+    The path, checked exactly, avoids them; it is dashed with a diamond per configuration (none beside an
     end), to stand apart from the solid C-obstacle boundary. The model's threshold is a bold dotted line (P(valid) =
     threshold): the roadmap's dots on its dark side are nodes the model rejected, which the exact checker drew. The
     map's mistakes are not marked: no square of theirs passes for a node. ``edges (E, 2)``, node indices: the roadmap's
@@ -136,7 +136,7 @@ def path_map(
     fit_cell_marks(fig, grid)
     labels_clear_of(ax, grid, grid.on_grid(valid, "valid") & (np.asarray(probability) < threshold), "in collision")
     text = f"Map of the model's P(valid) over {grid.names[0]} and {grid.names[1]} (grey, 0 black to 1 white) with a"
-    text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} of them in collision (a square each), and the"
+    text += f" roadmap of {len(nodes)} nodes, {int(np.sum(~nodes_valid))} in collision (a plus sign each), and the"
     text += f" returned path through {len(path)} configurations (yellow, dashed, diamonds), checked exactly."
     per_cell = answers.per_cell(nodes[:, [x, y]], grid)  # (nx, ny) roadmap nodes in each cell of the map
     parts = [
@@ -278,7 +278,7 @@ def _draw_mistakes(ax, grid: CSpaceSlice, codes) -> None:
 
 
 def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tuple[int, int], edges=None) -> None:
-    """A roadmap's valid nodes as dots, those in collision as squares, its ``edges (E, 2)`` (node indices) as faint
+    """A roadmap's valid nodes as dots, those in collision as plus signs, its ``edges (E, 2)`` (node indices) as faint
     lines, and the path dashed with diamonds, over a map of the two ``dofs``."""
     x, y = dofs
     scale = np.abs(np.diff([ax.get_xlim(), ax.get_ylim()]).ravel())  # (2,) the map's width and height
@@ -289,8 +289,8 @@ def _draw_roadmap(ax, nodes: np.ndarray, nodes_valid, path: np.ndarray, dofs: tu
     if edges is not None and len(edges):  # thin, under the nodes: a node in collision visibly has none (r29c); ink,
         ends = nodes[np.asarray(edges)][..., [x, y]]  # (E, 2, 2)  seen on the light and the mid greys (r30c)
         ax.add_collection(LineCollection(ends, colors=COLORS["ink"], linewidths=0.5, alpha=0.2, zorder=2.2))  # r41c
-    square = dict(markersize=8, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True))  # filled, over the path
-    ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **square)  # r40c: no hair; its label: where
+    mark = dict(markersize=10, label=COLLIDING, zorder=7, **_mistake_mark(3, legend=True) | dict(marker=NODE))  # filled
+    ax.plot(nodes[~nodes_valid, x], nodes[~nodes_valid, y], linestyle="", **mark)  # r40c: no hair; its label: where
     box = dict(boxstyle="round,pad=0.2", fc=COLORS["free"], ec=COLORS["ink"], lw=0.6)
     label = dict(textcoords="offset points", va="center", fontsize=9, zorder=7, bbox=box)
     arrow = dict(arrowstyle="-", color=ANSWER_COLORS[3], lw=1.5, ls="--", shrinkB=8, path_effects=halo(1.5, ("free",)))
@@ -335,7 +335,7 @@ def _mistake_mark(code: int, *, legend: bool = False) -> dict[str, Any]:
     return dict(c=color, marker=MISTAKE_MARKERS[code], linewidths=0, path_effects=halo(MARK_RING), clip_on=False)
 
 
-COLLIDING = "roadmap node in collision\n(a dangerous mistake kept)"  # the path map's mark of one, a map's square
+COLLIDING, NODE = "roadmap node in collision\n(a dangerous mistake kept)", "P"  # the path map's mark: no tile's square
 MARK_RING = 1.0  # points: a mistake's black ring 1.3 points wide (2 pixels on the site), its white one 0.8 beyond
 
 
