@@ -314,11 +314,8 @@ def test_figure_1_draws_the_statistic_the_verdict_reads_before_any_mean():
     assert said in TEXT  # reader r31f, item 1: the noise edge's cells are the caption's (review r28f's robust count)
     reach = costs.timing_reach(recorded_results.parse(TEXT))  # how far timing alone moved a median query
     edge = [f"{n} {s} {m:.2f}" for (n, s), (m, _, _) in table.items() if m >= 1.1 and abs(m - 1) < 2 * reach]
-    assert edge and all(cell.split()[-1] in CLAIM.partition("is no clear evidence:")[2] for cell in edge)
-    # reader r44f, item 7: the caption points to the table it means, not "the summary above"
-    assert (
-        "The fold “The counts by each statistic”, under this figure, counts these points" in CLAIM
-    )  # reader r53f, item 1: the counts folded
+    assert edge  # reader r60f, item 3: no longer listed in the caption; the longer description gives every median
+    assert all(cell.split()[-1] in CLAIM.partition("Figure described")[2] for cell in edge)
     assert "summary above" not in CLAIM and "costs," not in CLAIM.partition("![")[0]
     assert TEXT.index(results_figures.CLAIM_BEGIN) < TEXT.index(results_figures.FIGURE_BEGIN.format(kind="total"))
 
@@ -419,21 +416,16 @@ def test_figures_2_and_3_take_no_verdict_colour_no_square_like_plus_and_draw_the
     assert fcl and all(str(h.get_color()).lower() not in (OKABE_ITO["orange"], OKABE_ITO["vermillion"]) for h in fcl)
 
 
-def test_figure_1_says_which_legend_looks_no_point_takes():
-    """Reader r47f, Figure 1: the legend keys a filled "saves" triangle and a hollow "costs" circle that no point takes;
-    the caption says so, from the record (0 filled savings, 0 hollow costs), and no look a point does take."""
-    tables = recorded_results.parse(TEXT)
-    filled = [m for by in results_noise.own_intervals(tables).values() for m, _, _ in by.values()]
-    hollow = [
-        m
-        for by in results_noise.own_intervals(tables, "strong --planner paper --baseline paper-fcl-alike").values()
-        for m, _, _ in by.values()
-    ]
-    assert min(filled) > 0.9 and max(hollow) < 1.1  # none filled saves, none hollow costs (the tie band: 0.90-1.10)
-    assert (
-        "The legend shows markers that no point takes: no filled point at 0.90 or less, no hollow point at 1.10 or "
-        "more." in CLAIM
-    )
+def test_figure_1s_caption_says_what_each_mark_is_in_90_words():
+    """Reader r60f, item 3: the caption under Figure 1 was about 180 words; at most 90 now, and it still says what a
+    point, a whisker, a ring, the two bands and the marker shapes are, the bands' edges computed. The edge rule (a
+    ratio of 1.10 is a cost) is the box "How to read the ratios"'s, not repeated under the figure."""
+    caption = CLAIM.split("\n\n")[2]
+    assert caption.startswith("Each point is a cell") and len(caption.split()) <= 90
+    for said in ("Each point is a cell", "its whisker", "*Shape and colour = verdict, fill = checker, ring = clear*"):
+        assert said in caption
+    assert "shaded tie band, 0.90–1.10" in caption and "hatched noise band, 0.82–1.18" in caption
+    assert "at or above 1.10, *slower*" in TEXT.partition("How to read the ratios")[2].partition("<details")[0]
 
 
 def test_figure_2s_pentagons_stand_off_the_next_columns_divider():
@@ -447,15 +439,6 @@ def test_figure_2s_pentagons_stand_off_the_next_columns_divider():
     }
     assert len(offsets["p"]) == len(offsets["D"]) == 16  # a pentagon and a diamond a cell
     assert all(0.3 < x < 0.35 for x in offsets["p"]) and all(x < -0.36 for x in offsets["D"])
-
-
-def test_figure_1s_caption_states_the_edge_rule_with_its_point():
-    """Reader r54f, item 4: 2DS BT's filled point, at exactly 1.10, sits on the tie band's edge and reads as inside it;
-    the caption says it counts as a cost (the page's strict rule), from the record."""
-    tables = recorded_results.parse(results_figures.RESULTS.read_text())
-    said = results_figures.on_tie_edge(tables)
-    assert said == " A point on the tie band's edge counts as beyond it: 2DS BT, at exactly 1.10, counts as a cost."
-    assert said in results_figures.claim_markdown(results_figures.RESULTS.read_text())
 
 
 def test_figure_1_rings_the_points_beyond_the_noise_band_and_keys_the_fill_on_a_neutral_glyph():
@@ -483,7 +466,9 @@ def test_figure_1_rings_the_points_beyond_the_noise_band_and_keys_the_fill_on_a_
     filled, hollow = alt.parts_of(fig)
     assert sum(cell.endswith(", ringed") for row in filled.rows for cell in row) == 5
     assert sum(cell.endswith(", ringed") for row in hollow.rows for cell in row) == 2
-    assert "ring = clear*" in CLAIM and "ringed, beyond the noise band of this ratio: 5 filled and 2 hollow." in CLAIM
+    assert "ring = clear*" in CLAIM
+    assert "ringed, beyond the hatched noise band, 0.82–1.18, inside which a cost or saving is no clear" in CLAIM
+    assert "no clear evidence: 5 filled and 2 hollow." in CLAIM
 
 
 def test_figure_1_labels_the_tie_bands_edges_and_its_last_ring_clears_the_frame():

@@ -25,7 +25,7 @@ from toolkit.plots.palette import COLORS, LINE_COLORS, OKABE_ITO
 from toolkit.teaching import checker_scope, costs, findings, recorded
 from toolkit.teaching.recorded import Tables
 from tools.recorded_results import RESULTS, parse
-from tools.results_noise import at_noise_edge, noise, own_intervals
+from tools.results_noise import noise, own_intervals
 from tools.results_rings import beyond, ring
 from tools.results_words import NAMES, change
 
@@ -285,33 +285,23 @@ def claim_markdown(text: str) -> str:
     with its text alternative and its longer description; its counts are the summary's (review r27f, item 2)."""
     fig = claim_figure(text)
     tables = parse(text)
-    edge = at_noise_edge(own_intervals(tables), tables) + [
-        f"{cell} (hollow)" for cell in at_noise_edge(own_intervals(tables, checker_scope.SLOW), tables)
-    ]
     lead = (  # review r28f, item 1: the title over the plot, the caption under it, so the figure fits one screen
         "**Figure 1: the paper's claim, as the verdict reads it**: the strong network inside Algorithm 1, "
         "each query's total time with prediction over its own time without."
     )
-    caption = (  # review r29f, item 1: the caption and the noise floor one paragraph under the plot
-        "Each point is a cell: the median of those ratios over its 100 queries (each scenario's four samplers plan "
-        "the same 100 queries), its whisker their middle half. *Shape and colour = verdict, fill = checker, ring = "
-        "clear*: filled, our compiled checker; hollow, python-fcl on both sides (the legend's grey hexagons name the "
-        f"checker only); ringed, beyond the noise band of this ratio: {ringed(tables)}. The fold “The counts by each "
-        "statistic”, under this figure, counts these points (its columns “by own ratio”)."
-        + on_tie_edge(tables)
-        + unused_looks(tables)
-    )
-    edge_said = (  # reader r39f, item 1: the band by its one name, defined in the table under the summary
-        " Inside the noise band of this ratio (hatched, dashed edges), a cost or saving is no clear evidence: "
-        f"{', '.join(edge)}."
-        if edge
-        else ""
+    tie, (low, high) = findings.TIE, costs.floors(tables)["own"]
+    caption = (  # reader r60f, item 3: what a point, a whisker, a ring, the bands and the shapes are; no more
+        "Each point is a cell: the median of its 100 queries' ratios; its whisker, their middle half. *Shape and "
+        f"colour = verdict, fill = checker, ring = clear*: the verdict read against the shaded tie band, "
+        f"{1 - tie:.2f}–{1 + tie:.2f}; filled, our compiled checker; hollow, python-fcl on both sides; ringed, beyond "
+        f"the hatched noise band, {low:.2f}–{high:.2f}, inside which a cost or saving is no clear evidence: "
+        f"{ringed(tables)}."
     )
     if not any("timed twice" in heading for heading in tables[checker_scope.SLOW]):  # review r30f, contradiction 5
-        edge_said += " The run with python-fcl was not timed twice: its hollow points borrow that band."
+        caption += " The run with python-fcl was not timed twice: its hollow points borrow that band."
     described = alt.details_html(alt.details(fig)).strip()
     picture = f"![{html.escape(alt.alt_text(fig))}]({CLAIM_FIGURE.name})"
-    return f"{lead}\n\n{picture}\n\n{caption}{edge_said}\n\n{described}"
+    return f"{lead}\n\n{picture}\n\n{caption}\n\n{described}"
 
 
 def ringed(tables: Tables) -> str:
@@ -319,39 +309,6 @@ def ringed(tables: Tables) -> str:
     band = costs.floors(tables)["own"]
     fast, slow = (len(beyond(own_intervals(tables, key), band)) for key in (recorded.ALGORITHM_1, checker_scope.SLOW))
     return f"{fast} filled and {slow} hollow"
-
-
-def on_tie_edge(tables: Tables) -> str:
-    """Reader r54f, item 4: the edge rule in the caption, with the points that sit on a tie band's edge as shown (two
-    decimals): ``" A point on the tie band's edge counts as beyond it: 2DS BT, at exactly 1.10, counts as a cost."``;
-    empty where none does."""
-    tie = findings.TIE
-    edges = {f"{1 - tie:.2f}": "a saving", f"{1 + tie:.2f}": "a cost"}
-    runs = (("", recorded.ALGORITHM_1), (" (hollow)", checker_scope.SLOW))
-    found = [
-        f"{NAMES.get(s, s)} {sampler}{fill}, at exactly {m:.2f}, counts as {edges[f'{m:.2f}']}"
-        for fill, key in runs
-        for s, by in own_intervals(tables, key).items()
-        for sampler, (m, _, _) in by.items()
-        if f"{m:.2f}" in edges
-    ]
-    return f" A point on the tie band's edge counts as beyond it: {'; '.join(found)}." if found else ""
-
-
-def unused_looks(tables: Tables) -> str:
-    """Reader r47f, Figure 1: the legend keys every look, some of which no point takes (no filled triangle, no hollow
-    circle); said under the figure, computed, so a student does not look for them."""
-    tie = findings.TIE  # r51e: where a median lies, as the legend says it
-    looks = {"less time": f"at {1 - tie:.2f} or less", "more time": f"at {1 + tie:.2f} or more"}
-    runs = (("filled", recorded.ALGORITHM_1), ("hollow", checker_scope.SLOW))
-    missing = [
-        f"no {fill} point {said}"
-        for fill, key in runs
-        for verdict, said in looks.items()
-        if all(change(m) != verdict for by in own_intervals(tables, key).values() for m, _, _ in by.values())
-    ]
-    # reader r52f, Figure 1: said plainly, the legend's markers that no point takes
-    return f" The legend shows markers that no point takes: {', '.join(missing)}." if missing else ""
 
 
 def furthest_apart(tables: Tables) -> tuple[str, str, float, float]:
