@@ -441,10 +441,11 @@ def test_figure_2s_pentagons_stand_off_the_next_columns_divider():
     assert all(0.3 < x < 0.35 for x in offsets["p"]) and all(x < -0.36 for x in offsets["D"])
 
 
-def test_figure_1_rings_the_points_beyond_the_noise_band_and_keys_the_fill_on_a_neutral_glyph():
+def test_figure_1_rings_the_points_beyond_the_noise_band_and_keys_the_fill_in_words():
     """Reader r57f, lift item 4: the verdict a reader sees is the page's: a ring round each point beyond the noise band
-    of each query's own ratio (5 filled, 2 hollow: the counts' "beyond" column), centred on it; the fill key drawn on
-    a hexagon, no verdict's circle, square or triangle; the alt text and the longer description say which are ringed."""
+    of each query's own ratio (5 filled, 2 hollow: the counts' "beyond" column), centred on it; the fill key in
+    words with no glyph (reader r60e: a hexagon no point took); the alt text and the longer description say which
+    are ringed."""
     fig = results_figures.claim_figure(TEXT)
     (ax,) = fig.axes
     drawn = [line for line in ax.get_lines() if len(line.get_ydata()) == 1]
@@ -459,7 +460,7 @@ def test_figure_1_rings_the_points_beyond_the_noise_band_and_keys_the_fill_on_a_
     labels = [text.get_text() for text in legend.get_texts()]
     assert results_rings.RING_LABEL in labels and len(labels) == 8 and len(set(labels)) == 8
     keys = [line for line in ax.get_lines() if line.get_label().startswith(("filled:", "hollow:"))]
-    assert len(keys) == 2 and all(line.get_marker() == "h" for line in keys)  # not "o", "s" or "^"
+    assert len(keys) == 2 and all(line.get_marker() == "None" for line in keys)  # no glyph the figure lacks
     said = alt.alt_text(fig)
     assert "Ringed, beyond the noise band (0.82–1.18) and so clear: 5 filled points (3DC-7 OB 1.50," in said
     assert "and 2 hollow points (3DC-9 OB 0.79, 3DO BT 0.72)." in said

@@ -548,8 +548,7 @@ def test_the_index_says_what_python_fcl_on_both_sides_saved_and_what_it_did_not(
     alt_said = (  # reader r51e, home figure 1: the alt text says what each shape means, with the caption's counts
         f"Circles mark medians of 1.10 or more: {len(costs)} filled, 0 hollow. Squares mark the tie band. Triangles "
         f"mark medians of 0.90 or less: 0 filled, {len(fell)} hollow. A ring marks each point beyond the noise band: "
-        f"{len(costs) - len(edged)} filled circles and {len(clear)} hollow triangles. The fill key's grey hexagons "
-        "name the checker only.](docs/results_claim.png)"  # reader r57e, home lift 2: Figure 1's rings (helper r)
+        f"{len(costs) - len(edged)} filled circles and {len(clear)} hollow triangles.](docs/results_claim.png)"
     )
     assert alt_said in answer
     legend = f"noise band of this ratio, {1 - NOISE_EDGE * reach:.2f}–{1 + NOISE_EDGE * reach:.2f}"

@@ -276,7 +276,7 @@ def claim_figure(text: str) -> Figure:
         edge=costs.noise_edge(tables),  # review r30f, item 2: the noise edge drawn, not only named
         width=CLAIM_WIDTH,
     )
-    # reader r57f, lift item 4: the points beyond the noise band ringed, the fill key on a neutral hexagon
+    # reader r57f, lift item 4: the points beyond the noise band ringed; the fill key in words (r60e)
     return ring(fig, fast, slow, costs.floors(tables)["own"], CLAIM_TITLE)
 
 

@@ -1,8 +1,8 @@
 """Figure 1's verdict as the page reads it (reader r57f, lift item 4): a ring round every point beyond the noise band
-of each query's own ratio (the page's "clearly"), and a fill key drawn on a neutral hexagon, which is none of the
-verdicts' circle, square or triangle. :func:`ring` takes the figure :func:`toolkit.plots.query_ratios.own_ratios`
-draws and adds both, its legend rebuilt and its text alternative and longer description told which points are
-ringed, from the data."""
+of each query's own ratio (the page's "clearly"), and a fill key in words with no glyph (reader r60e: a key glyph
+no point takes reads as a missing point). :func:`ring` takes the figure
+:func:`toolkit.plots.query_ratios.own_ratios` draws and adds both, its legend rebuilt and its text alternative and
+longer description told which points are ringed, from the data."""
 
 from __future__ import annotations
 
@@ -21,7 +21,7 @@ from tools.results_words import NAMES
 RING_SIZE = 2.15  # a ring's diameter over a marker's: it clears a hollow triangle's wider edge
 RING_WIDTH = 1.4  # points, the ring's line
 RING_LABEL = "ringed: beyond the noise band (clearly)"
-FILL_GLYPH = "h"  # the fill key's hexagon: a shape no verdict takes
+FILL_GLYPH = "None"  # the fill key's entries are words only: every glyph in the key is one the figure draws
 FILL_KEYS = ("filled:", "hollow:")
 RIGHT_PAD = 0.3  # x units added on the right: the last hollow point's ring (2.15 markers wide) clears the frame
 TIE_EDGES = (0.9, 1.1)  # the tie band's edges, labelled on the left axis (findings.TIE either side of 1)
@@ -43,7 +43,7 @@ def _drawn_beyond(ax, band: tuple[float, float]) -> list[tuple[float, float]]:
 
 def ring(fig: Figure, fast: Cells, slow: Cells, band: tuple[float, float], title: str) -> Figure:
     """``fig`` (Figure 1, ``fast`` filled and ``slow`` hollow) with a ring round each point beyond ``band``, the fill
-    key on hexagons, its legend rebuilt with the ring's entry (:func:`_legend`), and its words told which points are
+    key as words, its legend rebuilt with the ring's entry (:func:`_legend`), and its words told which points are
     ringed (:func:`_words`)."""
     ax = fig.axes[0]
     for x, median in _drawn_beyond(ax, band):
@@ -52,7 +52,6 @@ def ring(fig: Figure, fast: Cells, slow: Cells, band: tuple[float, float], title
     for line in ax.lines:
         if str(line.get_label()).startswith(FILL_KEYS):
             line.set_marker(FILL_GLYPH)
-            line.set_markersize(query_ratios.SIZE * 1.2)  # a hexagon reads small at a circle's size
     _tie_edges(ax)
     _legend(fig, ax, title)
     return _words(fig, fast, slow, band)
@@ -137,7 +136,7 @@ def _words(fig: Figure, fast: Cells, slow: Cells, band: tuple[float, float]) -> 
         f" Ringed, beyond the noise band ({low:.2f}–{high:.2f}) and so clear: "
         f"{alt.many(len(far[False]), 'filled point')}"
         f"{' (' + said(fast) + ')' if far[False] else ''} and {alt.many(len(far[True]), 'hollow point')}"
-        f"{' (' + said(slow) + ')' if far[True] else ''}. The fill key's hexagons name the checker only."
+        f"{' (' + said(slow) + ')' if far[True] else ''}."
     )
     parts = []
     for part, cells in zip(alt.parts_of(fig), (fast, slow)):
