@@ -1006,8 +1006,10 @@ FAST_BULLET = re.compile(  # chapter04.answer: two sentences (r59d lifts 1-2), t
     r"\*\*(?:No|Rarely|In part)\.\*\* With an accurate network inside the paper's own planner \(Algorithm 1\), "
     r"prediction saved 10 % or more of a typical query's time in (?P<fast_said>none|\d+) of (?P<total>\d+) settings "
     r"against our fast exact checker and in (?P<slow_said>none|\d+) of \d+ against slow python-fcl\. "
-    r"Two reasons: sample checks are at most (?P<share>\d+) % of a query \((?P<high>\d+) % with python-fcl\), "
-    r"and a network call costs more than the fast check it replaces(?: in \d+ of \d+ scenarios)?\.\s"  # r59d, 2
+    r"Sample checks are at most (?P<share>\d+) % of a query \((?P<high>\d+) % with python-fcl\), "
+    r"and a network call costs more than the fast check(?: in \d+ of \d+ scenarios)?; "
+    r"why (?P<open>\d+) of the (?P<open_of>\d+) slower settings cost more than all of sampling is left open "  # r61d, 4
+    r"\(section 6\)\.\s"
     r"> \*\*How to read the ratios\*\*[^|]*"  # the visible box (common57)
     r"\| (?P=total) scenario–sampler cells, by the median of each query's own time ratio \(with ÷ without\) "
     r"\| faster \| tie \| slower \|\s\| --- \| --- \| --- \| --- \|\s"
@@ -1113,6 +1115,9 @@ def _claim_status(nb, found: list[tuple[list[str], list[list[str]]]], said: dict
         problems.append(f"04: the answer counts our fast checker by means as {first_means}; the record: {counted[0]}")
     sentence = [(m["fast_said"], m["slow_said"]) for m in FAST_BULLET.finditer(outputs[0] if outputs else "")]
     table = [(m["fast"], m["slow"]) for m in FAST_BULLET.finditer(outputs[0] if outputs else "")]
+    slower = [(m["open_of"], m["fast_costs"]) for m in FAST_BULLET.finditer(outputs[0] if outputs else "")]
+    if any(a != b for a, b in slower):  # reader r61d, item 4: the cells left open are of the table's slower ones
+        problems.append(f"04: the answer leaves open cells of {slower[0][0]} slower; its table: {slower[0][1]}")
     if sentence != table:  # reader r54d, item 3: the answer's first sentence counts what its table counts
         problems.append(f"04: the answer's first sentence counts {sentence}; its table {table}")
     if bullet != [(*expected[1:5], beyond)] or means_line != [counted[0]]:
