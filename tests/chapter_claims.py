@@ -672,12 +672,11 @@ def verdicts(nb) -> dict[tuple[str, ...], str]:
     return found
 
 
-def _checked_verdicts(header: list[str], row: list[str], j: int, moved: bool = False) -> set[str] | None:
+def _checked_verdicts(header: list[str], row: list[str], j: int) -> set[str] | None:
     """The verdicts cell ``j``'s own numbers allow, as printed (two decimals: a number that rounds onto a band's
     edge allows either side of it); None where it is no verdict cell. A planning table's cell marked
     :data:`toolkit.teaching.findings.NO_CLEAR` (reader r40d: the page's one mark for no clear evidence) gives its
-    median's verdict, and a cell is marked exactly where that saving or cost lies inside the noise band (or may be,
-    where ``moved``)."""
+    median's verdict, and a cell is marked exactly where that saving or cost lies inside the noise band."""
     said = VERDICT.fullmatch(row[j])
     if said is None:
         return None
@@ -694,7 +693,7 @@ def _checked_verdicts(header: list[str], row: list[str], j: int, moved: bool = F
             or (low < numbers[0] + d < high and findings.time_verdict(numbers[0] + d) != findings.TIES)
             for d in shifts
         }
-        if marked not in inside and not (marked and moved):
+        if marked not in inside:
             return {"unmarked" if marked else "marked"}
         return medians
     if header[0] == "measured":  # recorded ratios over many queries
@@ -713,12 +712,10 @@ def chapter_04(nb) -> list[str]:
     planned = [rows for header, rows in found if f"{PLANNED} (median; middle half)" in header]
     if not planned or {r[0] for r in planned[0]} != {"2DS", "3DC-7"}:
         problems.append("04: no verdict table for 2DS and 3DC-7 (findings.planning_table)")
-    moved = MOVED in " ".join(texts(nb))  # section 5's row is marked * where the line under it says so
     for header, rows in found:
         for row in rows:
             for j, cell in enumerate(row):
-                eager = moved and row[0].startswith(EAGER_ROW)
-                allowed, said = _checked_verdicts(header, row, j, eager), VERDICT.fullmatch(cell)
+                allowed, said = _checked_verdicts(header, row, j), VERDICT.fullmatch(cell)
                 if allowed is not None and said is not None and said.group(1) not in allowed:
                     problems.append(
                         f"04: {row[0]} {row[1]}: says '{cell}', its numbers say '{' or '.join(sorted(allowed))}'"
@@ -736,7 +733,7 @@ def chapter_04(nb) -> list[str]:
     fcl = {row[0]: row[2] for header, rows in found if header[2:3] == ["cost, network / python-fcl"] for row in rows}
     if not fcl or not all(v.startswith(findings.CHEAPER) for v in fcl.values()):
         problems.append(f"04: the prose says the network is the cheaper check against python-fcl: {fcl}")
-    problems += _eager_counts(found) + _recorded_verdicts(nb, found) + _paper_claim(nb, found) + _page_width(nb, found)
+    problems += _eager_counts(nb, found) + _recorded_verdicts(nb, found) + _page_width(nb, found)
     problems += _recorded_sampling() + _slow_checker(nb) + figures_shown(nb, FIGURES_04, "04") + _dear_cells(nb)
     problems += _call_cost_runs(nb) + _dagger_said(nb)
     if not re.search(r"This run took \d+ s from the first cell to this one, at a load average of", " ".join(texts(nb))):
@@ -837,14 +834,21 @@ EAGER = ("samples, exact", "samples, network", "edge points, exact")  # section 
 STAGES = ("connection (edges)", "total")  # ... and its stage times, ms a query
 
 
-def _eager_counts(found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
-    """Section 5's prose: the sample checks prediction takes over are a small fraction (under 5 %) of Algorithm 1's
-    exact checks, nearly all edge points, and the connection stage is most of its time (over half), in both modes
-    (two tables, each narrow enough for the page: the stages' times and the counts)."""
+ROADMAP = re.compile(  # chapter04.roadmap_line: section 5's counts in words (reader r61d, item 1: counts only)
+    r"the median roadmap had ([\d,]+) nodes against ([\d,]+) without, and its exact checker checked ([\d,]+) edge "
+    r"points against ([\d,]+): in both modes at least (\d+) % of the exact checks are edge points"
+)
+
+
+def _eager_counts(nb, found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
+    """Section 5 (reader r61d, item 1): its sentences read counts only, as its counts table prints them: the sample
+    checks prediction takes over are a small fraction (under 5 %) of Algorithm 1's exact checks, nearly all edge
+    points, in both modes; its times are one table (a row a stage, whose rows sum to the total), read by no sentence."""
     counted = [(header, rows) for header, rows in found if set(EAGER) <= set(header)]
     timed = [(h, rows) for h, rows in found if h[0].startswith("stage") and set(STAGES) <= {r[0] for r in rows}]
-    if not counted or not timed:
-        return ["04: section 5's counts of Algorithm 1's checks are not displayed"]
+    said = ROADMAP.findall(" ".join(texts(nb)))
+    if not counted or not timed or len(said) != 1:
+        return ["04: section 5's counts of Algorithm 1's checks, their line or its times are not displayed once"]
     header, rows = timed[0]  # a row a stage, a column a mode (review r27d: with 'other', the stages sum)
     timed = [(["mode", *(r[0] for r in rows)], [[m, *(r[j] for r in rows)] for j, m in enumerate(header) if j])]
 
@@ -852,13 +856,15 @@ def _eager_counts(found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
         header, rows = table
         return next(float(r[header.index(column)].replace(",", "")) for r in rows if r[0] == mode)
 
-    problems = []
+    read = [number(counted[0], m, c) for c in ("roadmap nodes", "edge points, exact") for m in ("with", "without")]
+    problems = [] if [float(v.replace(",", "")) for v in said[0][:4]] == read else [f"04: section 5 says {said[0]}"]
     for mode in (r[0] for r in counted[0][1]):
         samples = number(counted[0], mode, "samples, exact") + number(counted[0], mode, "samples, network")
         if not samples < 0.05 * number(counted[0], mode, "edge points, exact"):
             problems.append(f"04: Algorithm 1 {mode}: the sample checks are no small fraction of the edge points")
-        if not number(timed[0], mode, "connection (edges)") > 0.5 * number(timed[0], mode, "total"):
-            problems.append(f"04: Algorithm 1 {mode}: the connection stage is not most of its time")
+        edge = number(counted[0], mode, "edge points, exact")
+        if edge < int(said[0][4]) / 100 * (edge + number(counted[0], mode, "samples, exact")):
+            problems.append(f"04: Algorithm 1 {mode}: edge points are not {said[0][4]} % of the exact checks")
         parts = sum(number(timed[0], mode, c) for c in timed[0][0][1:] if c != "total")
         if abs(parts - number(timed[0], mode, "total")) > 0.25 * number(timed[0], mode, "total"):
             problems.append(f"04: Algorithm 1 {mode}: the stages' medians sum to {parts:.1f}, far from the total")
@@ -940,51 +946,6 @@ def _sampling_in_algorithm_1() -> list[str]:
     return problems
 
 
-EAGER_ROW = "3DC-7, Algorithm 1"  # section 5's planning row: the paper's claim with an accurate network
-MOVED = "so the mix of work per point checked differs between the modes"  # findings.per_point_sentence, where it did
-CLAIM = re.compile(
-    r"inside the paper's Algorithm 1, 3DC-7, uniform sampler, (\d+) quer(?:y|ies): time with / without "
-    r"prediction ([\d.]+) \(middle half ([\d.]+)–([\d.]+)\), (prediction saved time|prediction cost time|"
-    r"a tie|no clear evidence)(?:[^.]|\.(?=\d))*\. Only (\d+) queries, one sampler, one scenario"
-)  # ... and how few queries that is (findings.FEW_QUERIES; review r13a)
-
-
-def _eager_rows(found: list[tuple[list[str], list[list[str]]]]) -> list[list[str]]:
-    """Section 5's planning row (Algorithm 1 with the `strong` network against itself without), once if displayed."""
-    return [
-        r
-        for h, rows in found
-        if h[0] == "scenario" and len(h) > 2 and h[2].startswith(PLANNED)
-        for r in rows
-        if r[0].startswith(EAGER_ROW)
-    ]
-
-
-def _paper_claim(nb, found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
-    """Section 5 states its small run's verdict under its table, as its planning row gives it: the same queries,
-    median, middle half and verdict (reader r12a; "no clear evidence" where the line on the cost of an edge point says
-    the same check took a different time in the two modes, review r25a), and how few queries that is (review r13a); the
-    paper's claim itself is read from the recorded runs (:func:`_claim_status`)."""
-    rows = _eager_rows(found)
-    said = [m.groups() for m in CLAIM.finditer(" ".join(texts(nb)))]
-    if not rows or len(said) != 1:
-        return ["04: section 5's verdict is not stated once under its table"]
-    verdict = VERDICT.fullmatch(rows[0][2])
-    if verdict is None:
-        return [f"04: section 5's verdict cell {rows[0][2]!r} is not a verdict"]
-    words = {findings.SAVES: "prediction saved time", findings.COSTS: "prediction cost time"}
-    moved = MOVED in " ".join(texts(nb))  # per_point_sentence
-    expected = (
-        rows[0][-1],
-        *re.findall(r"[\d.]+", verdict.group(2)),
-        "no clear evidence"
-        if moved or findings.NO_CLEAR in rows[0][2] or findings.ACROSS in rows[0][2]
-        else words.get(verdict.group(1), verdict.group(1)),
-        rows[0][-1],
-    )
-    return [f"04: section 5 says {s}, its table {expected}" for s in said if s != expected]
-
-
 def _recorded_verdicts(nb, found: list[tuple[list[str], list[list[str]]]]) -> list[str]:
     """Section 6's tables of recorded ratios against the answer the chapter states: each row's count column equals
     its verdicts; the `paper` preset's means against Algorithm 1 save time for one sampler on 2DS and 3DC-7 and three
@@ -1045,8 +1006,10 @@ FAST_BULLET = re.compile(  # chapter04.answer: two sentences (r59d lifts 1-2), t
     r"\*\*(?:No|Rarely|In part)\.\*\* With an accurate network inside the paper's own planner \(Algorithm 1\), "
     r"prediction saved 10 % or more of a typical query's time in (?P<fast_said>none|\d+) of (?P<total>\d+) settings "
     r"against our fast exact checker and in (?P<slow_said>none|\d+) of \d+ against slow python-fcl\. "
-    r"Two reasons: sample checks are at most (?P<share>\d+) % of a query \((?P<high>\d+) % with python-fcl\), "
-    r"and a network call costs more than the fast check it replaces(?: in \d+ of \d+ scenarios)?\.\s"  # r59d, 2
+    r"Sample checks are at most (?P<share>\d+) % of a query \((?P<high>\d+) % with python-fcl\), "
+    r"and a network call costs more than the fast check(?: in \d+ of \d+ scenarios)?; "
+    r"why (?P<open>\d+) of the (?P<open_of>\d+) slower settings cost more than all of sampling is left open "  # r61d, 4
+    r"\(section 6\)\.\s"
     r"> \*\*How to read the ratios\*\*[^|]*"  # the visible box (common57)
     r"\| (?P=total) scenario–sampler cells, by the median of each query's own time ratio \(with ÷ without\) "
     r"\| faster \| tie \| slower \|\s\| --- \| --- \| --- \| --- \|\s"
@@ -1152,6 +1115,9 @@ def _claim_status(nb, found: list[tuple[list[str], list[list[str]]]], said: dict
         problems.append(f"04: the answer counts our fast checker by means as {first_means}; the record: {counted[0]}")
     sentence = [(m["fast_said"], m["slow_said"]) for m in FAST_BULLET.finditer(outputs[0] if outputs else "")]
     table = [(m["fast"], m["slow"]) for m in FAST_BULLET.finditer(outputs[0] if outputs else "")]
+    slower = [(m["open_of"], m["fast_costs"]) for m in FAST_BULLET.finditer(outputs[0] if outputs else "")]
+    if any(a != b for a, b in slower):  # reader r61d, item 4: the cells left open are of the table's slower ones
+        problems.append(f"04: the answer leaves open cells of {slower[0][0]} slower; its table: {slower[0][1]}")
     if sentence != table:  # reader r54d, item 3: the answer's first sentence counts what its table counts
         problems.append(f"04: the answer's first sentence counts {sentence}; its table {table}")
     if bullet != [(*expected[1:5], beyond)] or means_line != [counted[0]]:

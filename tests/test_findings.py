@@ -103,18 +103,11 @@ def test_planning_table_is_a_markdown_table_with_a_verdict_per_row():
     assert lines[3] == "| 3DC-7 | OB | saves time<br>(median 0.50; middle half 0.50–0.50) | 100 / 50.0 | 3 |"
     assert findings._ms(0.007) == "7.00" and findings._ms(0.0068) == "6.80"
     assert "\n    " not in table  # never pre-wrapped
-    # reader r31d: where the same exact check's cost moved between the modes, the table says no clear evidence as the
-    # sentence under it does, not a plain "costs time"; r37d: with the page's one mark, \*
-    moved = findings.planning_table({"3DC-7": {"BS": row([0.1] * 3, [0.2] * 3)}}, moved={"3DC-7": 1.8, "2DS": None})
-    assert moved.splitlines()[2].startswith("| 3DC-7 | BS | costs time†<br>(median 2.00;")  # r42d: \\* means one thing
     across = findings.planning_table({"2DS": {"OB": row([1.0] * 4, [0.8, 1.0, 1.24, 1.6])}}, planner="lazy PRM")
     assert across.splitlines()[0].startswith("| scenario (lazy PRM) | sampler |")
     assert across.splitlines()[2].startswith("| 2DS | OB | costs time\\*<br>(median 1.12; middle half 0.95–1.33)")
     beyond = findings.planning_table({"2DS": {"OB": row([1.0] * 4, [0.9, 1.0, 1.4, 1.5])}})  # past the noise band
     assert beyond.splitlines()[2].startswith("| 2DS | OB | costs time†<br>(median 1.20;")  # its middle half across
-    assert findings.planning_table({"3DC-7": {"BS": row([0.1] * 3, [0.2] * 3)}}, moved={"3DC-7": None}) == "\n".join(
-        lines[:3]
-    )
 
 
 def test_ratio_table_gives_each_recorded_ratio_its_verdict():
@@ -256,40 +249,6 @@ def test_a_saving_of_exactly_ten_percent_counts_in_a_tables_row():
     assert findings.time_verdict(1 - 0.10) == findings.SAVES and findings.time_verdict(1 + 0.10) == findings.COSTS
 
 
-def test_per_point_sentence_names_something_besides_prediction_where_an_edge_point_costs_more_in_one_mode():
-    """Review r15a: about as many edge points with and without prediction, yet the connection stage took 102 against
-    50 ms. The same exact checker checks both modes' points: a cost per point that differs is not prediction's
-    (reader r33d: nor surely the machine's, since the modes run in turns)."""
-    same = findings.per_point_sentence({"without": 500e-9, "with": 520e-9})
-    assert same.startswith("The connection stage took 500 ns an edge point without prediction and 520 ns with it")
-    # reader r56d, item 4: about 10 % apart is not "the same cost": it is read against the tie band
-    assert same.endswith("within our 10 % tie band, as expected, since one exact checker checks both modes' edges.")
-    assert "the same cost" not in findings.per_point_sentence({"without": 275e-9, "with": 249e-9})
-    moved = findings.per_point_sentence({"without": 320e-9, "with": 650e-9})
-    assert ": 2.03 times as much with prediction. The modes ran in turns, so a steady difference is not the " in moved
-    assert "mix of work per point" in findings.per_point_sentence({"without": 500e-9, "with": 450e-9})  # 0.90 counts
-    printed = findings.per_point_sentence({"without": 313.4e-9, "with": 270.6e-9})  # reader r45d: 271 / 313 = 0.87
-    assert "took 313 ns an edge point without prediction and 271 ns with it" in printed and ": 0.87 times as" in printed
-    assert findings.speed_moved({"without": 313.4e-9, "with": 270.6e-9}) == pytest.approx(271 / 313)
-
-
-def test_planning_sentence_says_cant_tell_where_the_same_exact_check_moved():
-    """Review r25a: "prediction cost time" beside a line saying the same exact check took 1.59 times as long with
-    prediction. speed_moved gives the ratio only outside the tie band; planning_sentence then says "no clear evidence"
-    (reader r37d: the page's one mark, \\*, where it said "can't tell")."""
-    slower = {"without": summary([1.0, 1.0, 1.0]), "with": summary([2.0, 2.0, 2.0])}
-    assert findings.speed_moved({"without": 500e-9, "with": 520e-9}) is None
-    ratio = findings.speed_moved({"without": 400e-9, "with": 636e-9})
-    assert ratio == pytest.approx(1.59)
-    said = findings.planning_sentence("Algorithm 1", slower, moved=ratio)
-    assert said.endswith(
-        "2.00 (middle half 2.00–2.00), no clear evidence (†): with prediction the connection stage spent 1.59 times as "
-        "long per edge point, though each point's exact check is the same, so that stage does more than check points "
-        "(the fold below says what)."
-    )
-    assert findings.planning_sentence("Algorithm 1", slower).endswith("prediction cost time.")
-
-
 def test_the_papers_savings_beyond_its_sampling_are_read_from_its_mean_times():
     """By hand from §V: 3DO G total 42.32 -> 38.22 s saves 4.10 s where sampling took 0.21 s; 3DC-9 BT 7.10 -> 4.50 s
     saves 2.60 s against 0.10 s; 3DC-7 BS took 0.01 s longer with the framework, so it is not among them."""
@@ -339,11 +298,11 @@ def test_the_sampling_line_counts_each_samplers_verdict():
     )
 
 
-def test_a_live_verdict_inside_the_noise_band_is_starred_even_where_an_edge_points_time_moved():
-    """r42d: \\* means one thing, inside the noise band; † only where a verdict outside it is unsure or moved
-    (wave 30: a moved verdict inside the band was marked †, while the page says \\* comes first)."""
+def test_a_live_verdict_inside_the_noise_band_is_starred_and_one_beyond_it_across_the_tie_band_marked_across():
+    """r42d: \\* means one thing, inside the noise band; r61d: † one thing too, an unsure verdict beyond it (its middle
+    half includes an edge of the tie band), and \\* comes first."""
     _, high = findings.noise_band()
     inside, beyond = (1 + findings.TIE + high) / 2, high + 0.1  # a cost inside the noise band, one beyond it
-    assert findings._mark(inside, "costs", moved=True) == findings.NO_CLEAR
-    assert findings._mark(beyond, "costs", moved=True) == findings.ACROSS
-    assert findings._mark(beyond, "costs", moved=False) == ""
+    assert findings._mark(inside, findings.UNSURE) == findings.NO_CLEAR
+    assert findings._mark(beyond, findings.UNSURE) == findings.ACROSS
+    assert findings._mark(beyond, findings.COSTS) == ""

@@ -15,12 +15,9 @@ means, filled, with ``floor`` (how far timing alone moved a ratio of means) hatc
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Sequence
-from typing import Any
 
 import numpy as np
 from matplotlib.figure import Figure
-from matplotlib.patches import Rectangle
 from matplotlib.ticker import NullLocator
 
 from toolkit.planning.sampling import PAPER_SAMPLERS
@@ -80,7 +77,7 @@ def answer_ratios(
     one = MEDIANS_TITLE.replace(" (hollow)", "") if spans else MEANS_TITLE  # r39d: each panel names its statistic
     for ax, title in zip(axes, [MEANS_TITLE, MEDIANS_TITLE] if means else [one]):
         ax.set_title(title, fontsize=10)
-    parts, counted, every, clear = [], [], [], False
+    parts, counted, every = [], [], []
     for ax, (shown, whiskers, hollow) in zip(axes, panels):
         ax.axhline(1.0, color=COLORS["ink"], linewidth=1.0, zorder=1)
         if median_floor and ax is axes[-1] and (means or spans):  # a panel of medians (r37d: the answer's one)
@@ -88,7 +85,7 @@ def answer_ratios(
         _tie_band(ax, tie, named=ax is axes[0])
         drawn, found = _series(ax, shown, scenarios, series, names, whiskers, hollow)
         if floor and ax is axes[0] and (means or not spans):  # a panel of means (reader r37d: one, in section 6)
-            clear = _floor(ax, floor, tie, columns=_ours_only(ax))  # r57d, lift 3: not behind the paper's
+            _floor(ax, floor, tie)  # r61d, item 5: one band across the axis, not strips that read as error bars
         _groups(ax, scenarios)
         every += drawn
         ax.set_ylabel("time with / without (log axis)")
@@ -105,7 +102,7 @@ def answer_ratios(
         handles, labels = axes[1].get_legend_handles_labels()
         fig.legend(handles, labels, loc="outside lower center", ncol=1, fontsize=9, frameon=False)
     drawn_series = sum(any(label.endswith(f", {name}") for label in rows) for name in series)
-    said = _over_ours(_text(tie, drawn_series, counted, spans, means, None if spans and not means else floor), clear)
+    said = _text(tie, drawn_series, counted, spans, means, None if spans and not means else floor)
     return describe(fig, said + _median_words(median_floor if means or spans else None, bool(means)), parts)
 
 
@@ -149,26 +146,11 @@ MEDIAN_NOISE = (  # reader r45d, item 3: "(medians)" read as the band of a ratio
 )
 
 
-def _floor(
-    ax, floor: tuple[float, float], tie: float, words: str = NOISE_WORDS, columns: Sequence[tuple[float, float]] = ()
-) -> bool:
-    """``floor`` hatched round the tie band, its ends dotted (:func:`~toolkit.plots.query_ratios.hatch_round`, as the
-    results page's Figures 2-3 draw it), named once in the legend as chapter 04 names it (:data:`NOISE_WORDS`; reader
-    r35d: one name for the band); with ``columns`` (x from, x to), over those columns only (reader r57d, lift 3):
-    returns whether it did so."""
-    label: str | None = words.format(low=floor[0], high=floor[1]).split(":")[0]
-    if not columns:
-        hatch_round(ax, floor, tie, label, NOISE_HATCH)
-        return False
-    for start, end in columns:
-        for low, high in ((floor[0], 1 - tie), (1 + tie, floor[1])):
-            ax.add_patch(Rectangle((start, low), end - start, high - low, label=label, hatch=NOISE_HATCH, **HATCH))
-            label = None  # named once
-        ax.hlines(list(floor), start, end, colors=COLORS["reference"], linestyles=":", linewidth=1.0, zorder=0.5)
-    return True
-
-
-HATCH: dict[str, Any] = dict(facecolor="none", edgecolor=COLORS["reference"], linewidth=0, zorder=0)
+def _floor(ax, floor: tuple[float, float], tie: float, words: str = NOISE_WORDS) -> None:
+    """``floor`` hatched round the tie band across the axis, its ends dotted
+    (:func:`~toolkit.plots.query_ratios.hatch_round`, as the results page's Figures 2-3 draw it), named once in the
+    legend as chapter 04 names it (:data:`NOISE_WORDS`; reader r35d: one name for the band)."""
+    hatch_round(ax, floor, tie, words.format(low=floor[0], high=floor[1]).split(":")[0], NOISE_HATCH)
 
 
 def _band_first(ax) -> tuple[list, list]:
@@ -176,21 +158,6 @@ def _band_first(ax) -> tuple[list, list]:
     handles, labels = ax.get_legend_handles_labels()
     first = sorted(range(len(labels)), key=lambda i: not labels[i].startswith("noise band"))
     return [handles[i] for i in first], [labels[i] for i in first]
-
-
-def _over_ours(said: str, clear: bool) -> str:
-    """The text alternative, saying where the means' noise band is hatched over our series only (reader r57d)."""
-    band = "round the tie band, noise band of our ratios of means"
-    return said.replace(band, band.replace(",", " over our series only,")) if clear else said
-
-
-def _ours_only(ax) -> list[tuple[float, float]]:
-    """Where a panel holds the paper's diamonds, the columns of our series only: in each sampler's slot, from halfway
-    between its diamond and our first point to the slot's right-hand edge (as the results page's Figure 2); else
-    none (the whole width)."""
-    paper = [x for line in ax.lines if line.get_marker() == CHECKERS["paper"][1] for x in line.get_xdata()]
-    ours = [x for line in ax.lines if line.get_marker() in MARKERS[1:] for x in line.get_xdata()]
-    return [((x + min(v for v in ours if v > x)) / 2, round(x) + 0.5) for x in paper if any(v > x for v in ours)]
 
 
 def _title(ax, means) -> str:

@@ -265,7 +265,7 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) 
         *P[step.removed_nodes].T,
         **RING,
         zorder=5,
-        label="node removed by a repair" if len(step.removed_nodes) else None,  # review r29d: none removed, none named
+        label="node removed by a repair (ring)" if len(step.removed_nodes) else None,  # r29d: none removed, none named
         path_effects=halo(2.0),
     )
     for node, marker, size, name in ((START, "s", 90, "start"), (GOAL, "*", 320, "goal")):  # a star's ink is thin
@@ -286,9 +286,9 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) 
 
 
 def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: int = 201) -> None:
-    """The edges a repair removes, ``segments (R, 2, 2)``, thick, and where each first enters a C-obstacle, a ring
-    (review r25a: at the page's size one could not see whether the edge cut the block or grazed it); the legend names
-    the ring (reader r40d: not the panel's title, which ran over its neighbours')."""
+    """The edges a repair removes, ``segments (R, 2, 2)``, thick, and where each first enters a C-obstacle, a black
+    triangle (review r25a: at the page's size one could not see whether the edge cut the block or grazed it; reader
+    r61d, item 6: a ring means only what truly collides); the legend names the triangle (reader r40d)."""
     removed = LineCollection(
         list(segments), colors=REPAIR_COLOR, linewidths=4.5, zorder=5, label="edge removed by a repair"
     )
@@ -299,8 +299,8 @@ def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: in
         hit = np.flatnonzero(~exact.are_valid(Q))
         if hit.size:
             x, y = Q[hit[0]]
-            ring = dict(s=160, facecolors="none", edgecolors=COLORS["ink"], linewidths=2.2, zorder=7)
-            ax.scatter([x], [y], **ring, label="where a removed edge enters a C-obstacle")  # review r29d: named
+            entry = dict(s=90, marker="v", color=COLORS["ink"], edgecolors=COLORS["free"], linewidths=0.8, zorder=7)
+            ax.scatter([x], [y], **entry, label="where a removed edge enters a C-obstacle (triangle)")  # r29d: named
 
 
 def _margin(ax, share: float = 0.04) -> None:

@@ -41,8 +41,8 @@ def encoding_line(records: Mapping[str, list[dict]], tables: Tables | None = Non
     )
     return (
         "**The encoding beside that growth.** The time after sampling includes encoding the workspace for the network. "
-        f"Section 5's live 3DC-7 queries spent {ms:.1f} ms a query on it (median; on this machine, not in the recorded "
-        f"run, so a rough size). {'; '.join(said) or 'No 3DC-7 cell costs that much'}. "
+        f"Section 5's live 3DC-7 queries spent {ms:.1f} ms a query on it (median, this machine; the recorded runs do "
+        f"not time the encoding). {'; '.join(said) or 'No 3DC-7 cell costs that much'}. "
         + rest
         + (
             f"The other scenarios' encoding is not measured here ({', '.join(elsewhere)} after sampling), so these "

@@ -62,12 +62,11 @@ def planning_verdict(
 def planning_table(
     tables: Mapping[str, Mapping[str, Mapping]],
     tie: float = TIE,
-    moved: Mapping[str, float | None] | None = None,
     planner: str = "",
 ) -> str:
     """Markdown: per scenario and sampler of ``{scenario: compare_prediction table}``, the verdict (first: reader
-    r18a) with the per-query ratios' median and middle half, marked by :func:`_mark` (``moved``: {scenario:
-    :func:`speed_moved`}), then the median totals without and with prediction; ``planner`` names the planner."""
+    r18a) with the per-query ratios' median and middle half, marked by :func:`_mark`, then the median totals without
+    and with prediction; ``planner`` names the planner."""
     rows = [
         f"| scenario{f' ({planner})' if planner else ''} | sampler | with ÷ without: verdict (median; middle half) "
         "| median total, ms: without / with "
@@ -77,7 +76,7 @@ def planning_table(
     for name, table in tables.items():
         for sampler, row in table.items():
             median, q1, q3, said = planning_verdict(row, tie)
-            mark = _mark(median, said, (moved or {}).get(name) is not None, tie)
+            mark = _mark(median, said, tie)
             said = f"{time_verdict(median, tie=tie)}{mark}" if mark else said
             without, with_ = (_ms(row[mode]["total_s_median"]) for mode in ("without", "with"))
             rows.append(
@@ -88,54 +87,16 @@ def planning_table(
 
 
 NO_CLEAR = r"\*"  # after a verdict: inside the noise band of its statistic, no clear evidence; that only (r42d)
-ACROSS = "†"  # after a live verdict: its middle half includes a tie band edge, or an edge point's time moved
-SAID = {  # a planning verdict at the end of a sentence (its band filled in)
-    SAVES: "prediction saved time",
-    COSTS: "prediction cost time",
-    TIES: "a tie: less than {band} from 1, neither saved nor cost",
-    NO_CLEAR: "no clear evidence (\\*): inside the noise band",
-    ACROSS: "no clear evidence (†): its middle half includes an edge of the tie band (0.90 or 1.10)",
-}
+ACROSS = "†"  # after a live verdict: its middle half includes an edge of the tie band; that only (r61d)
+ACROSS_REASON = "its middle half includes an edge of the tie band (0.90 or 1.10)"  # said under a table with a †
 
 
-def _mark(median: float, said: str, moved: bool, tie: float = TIE) -> str:
+def _mark(median: float, said: str, tie: float = TIE) -> str:
     """A live verdict's mark (r42d: \\* means one thing): :data:`NO_CLEAR` inside the noise band, :data:`ACROSS` where
-    ``moved`` or its middle half (or too few queries) made it :data:`UNSURE`, else none."""
+    its middle half (or too few queries) made it :data:`UNSURE`, else none."""
     low, high = noise_band()
     inside = low < median < high and time_verdict(median, tie=tie) != TIES
-    return "" if said != UNSURE and not moved else NO_CLEAR if inside else ACROSS
-
-
-SPEED_MOVED = (  # a planning sentence's verdict where the same exact check's cost moved between the modes (review r25a)
-    "no clear evidence (†): with prediction the connection stage spent {ratio:.2f} times as long per edge point, "
-    "though each point's exact check is the same, so that stage does more than check points (the fold below says what)"
-)  # reader r45d: the reason in plain words
-
-
-def speed_moved(per_point: Mapping[str, float], tie: float = TIE) -> float | None:
-    """The time per exact edge point with / without prediction, ``{"without": s, "with": s}``, where it lies outside
-    the tie band (the stage's mix of work per point differs, :func:`per_point_sentence`), else ``None``."""
-    ratio = round(1e9 * per_point["with"]) / round(1e9 * per_point["without"])  # as printed (r45d: 271 / 313 = 0.87)
-    return None if time_verdict(ratio, tie=tie) == TIES else ratio
-
-
-def planning_sentence(what: str, row: Mapping[str, Mapping], tie: float = TIE, moved: float | None = None) -> str:
-    """One sentence: ``what`` was timed, over how many queries, the per-query ratios' median and middle half, and the
-    table's verdict in words; with ``moved`` (:func:`speed_moved`), "no clear evidence" (†)."""
-    median, q1, q3, said = planning_verdict(row, tie)
-    n = row["without"]["n_queries"]
-    said = _mark(median, said, False, tie) or said if moved is None else said
-    verdict = SAID[said].format(band=f"{tie:.0%}") if moved is None else SPEED_MOVED.format(ratio=moved)
-    return (
-        f"{what}, {n} {'query' if n == 1 else 'queries'}: time with / without prediction {median:.2f} (middle half "
-        f"{q1:.2f}–{q3:.2f}), {verdict}."
-    )
-
-
-FEW_QUERIES = (  # after a planning_sentence on a handful of queries: how few they are beside the paper's Table 3
-    " Only {n} queries, one sampler, one scenario (the paper's Table 3: 100 queries a scenario, four samplers, four "
-    "scenarios): a first look, too few to settle the claim; the recorded runs of 100 queries a scenario settle it."
-)
+    return "" if said != UNSURE else NO_CLEAR if inside else ACROSS
 
 
 HOLDS, IN_PART, DOES_NOT_HOLD = "holds here", "holds here only in part", "does not hold here"  # the paper's claim
@@ -180,26 +141,6 @@ def claim_status(eager: Mapping[str, Mapping[str, float]], lazy: Mapping[str, Ma
         f"our accurate `strong` network saved time in {_saved_in(eager)} ({rest}), and against the lazy PRM (on "
         f"{' and '.join(lazy)}, by the median time with over the median without) in "
         f"{_saved_in(lazy)} (recorded runs, 100 queries a scenario)."
-    )
-
-
-def per_point_sentence(per_point: Mapping[str, float], tie: float = TIE) -> str:
-    """Algorithm 1's connection stage in one sentence: its time per exact edge point in each mode, ``{"without": s,
-    "with": s}`` (medians over the queries); where the two differ by ``tie`` or more, the mix of the stage's other work
-    per point differs (review r15a: 102 against 50 ms; reader r33d: the modes run in turns, so not the machine)."""
-    without, with_ = per_point["without"], per_point["with"]
-    said = (
-        f"The connection stage took {1e9 * without:,.0f} ns an edge point without prediction and "
-        f"{1e9 * with_:,.0f} ns with it (each the median of the queries' own times per point, not the table's median "
-        "time over its median count)"
-    )
-    if (moved := speed_moved(per_point, tie)) is None:
-        return f"{said}: within our 10 % tie band, as expected, since one exact checker checks both modes' edges."
-    return (
-        f"{said}: {moved:.2f} times as much with prediction. The modes ran in turns, so a steady difference "
-        "is not the machine's: the stage does more than check points (it finds each node's nearest neighbours and "
-        "tries bridges between the roadmap's parts), and prediction changes the roadmap, so the mix of work per "
-        "point checked differs between the modes; read the edge points, not this stage's time, for what it changed."
     )
 
 
