@@ -70,9 +70,8 @@ def test_answer_ratios_puts_our_means_beside_the_papers_and_our_medians_under_th
     assert (
         hatched.legends[0].get_texts()[0].get_text() == "noise band of our ratios of means (not the paper's), 0.84–1.24"
     )
-    assert (
-        "round the tie band, noise band of our ratios of means (not the paper's), 0.84–1.24: twice"
-        in (alt_text(hatched))
+    assert "round the tie band, noise band of our ratios of means (not the paper's), 0.84–1.24: twice" in (
+        alt_text(hatched)
     )
     both = answer_ratios(  # reader r36d: the lower panel draws the median's band too
         rows, tie=findings.TIE, means=means, names=SERIES, floor=(0.84, 1.24), median_floor=(0.82, 1.18)
