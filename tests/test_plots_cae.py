@@ -170,7 +170,10 @@ def test_accuracy_vs_all_free_has_one_point_per_workspace_and_the_diagonal():
     assert "99.7%" in legend.get_texts()[0].get_text()  # the seen group's mean accuracy
     assert points[0].get_zorder() > points[1].get_zorder()  # the smaller group drawn on top
     assert max(m.get_zorder() for m in filled) < min(p.get_zorder() for p in points)  # r27b: a mean hid a grid
-    assert legend.get_texts()[-1].get_text() == "large hollow mark, thick, in the group's shape: the group's mean"
+    assert (
+        legend.get_texts()[-1].get_text()
+        == "thin cross-hair, open at its centre, in the group's colour: the group's mean"
+    )
     assert legend.get_texts()[0].get_text() == "seen: mean 99.7% vs 87.7%"  # r27b: once "seen (trained on) (mean"
 
 
@@ -472,7 +475,7 @@ def test_accuracy_panels_of_three_groups_go_two_a_row_the_legend_in_the_spare_sl
         (mean,) = [c for c in ax.collections if c.get_gid() == f"{name}: mean"]
         assert len(mean.get_facecolor()) == 0 or mean.get_facecolor()[0][3] == 0  # hollow, as cae.py's (r54b)
     said = " ".join(t.get_text() for t in spare.get_legend().get_texts()).replace("\n", " ")
-    assert "large hollow mark" in said and "mean" in said  # the legend says which (lead, wave 31 item 4)
+    assert "thin cross-hair" in said and "mean" in said  # the legend says which (lead, wave 31 item 4)
 
 
 def test_training_curves_keep_the_highest_point_clear_of_the_frame():

@@ -281,14 +281,18 @@ def test_section_5s_ranges_and_section_6s_sensitivity():
     assert not shift["a"][0].any() and not change["a"][0].any()  # no flip: nothing moves
 
 
-def test_section_5s_mean_ring_stands_clear_of_a_point_at_the_mean():
-    """Reader r47b: section 5's unseen mean, the second group's (smaller) ring, hugged the one unseen grid at the mean.
-    A ring of a few dozen grids' mean is at least five times a point's area, so a gap shows between them."""
+def test_section_5s_mean_leaves_a_point_at_the_mean_whole():
+    """Reader r47b: section 5's unseen mean, the second group's (smaller) ring, hugged the one unseen grid at the mean;
+    later that grid read as part of the hollow mark around it. The mean is a thin cross-hair open at its centre, the
+    opening wider than a point, its arms reaching past it: a point at the mean shows whole, nothing drawn under it."""
     import numpy as np
 
     from toolkit.plots import cae
+    from toolkit.plots.accuracy_panels import GAP
 
     groups = {"seen (trained on)": (np.full(30, 0.886), np.full(30, 0.996)), "unseen": (np.full(10, 0.876),) * 2}
     ax = cae.accuracy_vs_all_free(groups, series=(2, 1)).axes[0]
-    points, ring = (next(c for c in ax.collections if c.get_gid() == gid) for gid in ("unseen", "unseen: mean"))
-    assert ring.get_sizes()[0] >= 5 * points.get_sizes()[0]
+    points, mean = (next(c for c in ax.collections if c.get_gid() == gid) for gid in ("unseen", "unseen: mean"))
+    reach = np.abs(mean.get_paths()[0].vertices).max(axis=1)  # each end of an arm, from the centre
+    assert np.isclose(reach.min(), GAP * reach.max()) and len(mean.get_paths()[0]) == 8  # four arms, open centre
+    assert GAP * np.sqrt(mean.get_sizes()[0]) > np.sqrt(points.get_sizes()[0])  # the opening wider than a point

@@ -14,10 +14,32 @@ import textwrap
 import numpy as np
 from matplotlib.figure import Figure
 from matplotlib.lines import Line2D
+from matplotlib.path import Path
 from matplotlib.ticker import MaxNLocator
 
 from toolkit.plots.alt import Part, describe
 from toolkit.plots.palette import COLORS, PAGE_WIDTH, halo, series_style
+
+GAP = 0.4  # the cross-hair's open centre, a share of its half-width: a point at the mean shows whole in it
+CROSS_HAIR = Path(  # a group's mean (a point at the mean read as part of a hollow mark around it)
+    [(-1, 0), (-GAP, 0), (GAP, 0), (1, 0), (0, -1), (0, -GAP), (0, GAP), (0, 1)], [Path.MOVETO, Path.LINETO] * 4
+)
+MEAN_SAID = "thin cross-hair, open at its centre, in the {0}'s colour: the {0}'s mean"
+
+
+def mean_handle(color: str, label: str | None = None) -> Line2D:
+    """The legend's icon of a mean drawn in ``color``: the cross-hair, as the figures draw it."""
+    return Line2D(
+        [],
+        [],
+        label=label,
+        marker=CROSS_HAIR,
+        linestyle="",
+        markersize=14,
+        markerfacecolor="none",
+        markeredgecolor=color,
+        markeredgewidth=1.4,
+    )
 
 
 def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
@@ -46,15 +68,15 @@ def accuracy_panels(groups: dict[str, tuple[np.ndarray, np.ndarray]]) -> Figure:
             all_free, accuracy, s=16, marker=style["marker"], c=style["color"], alpha=0.3, lw=0, gid=name
         )  # r19b; r30b: light enough that 500 points show where they crowd
         mean = (float(np.mean(all_free)), float(np.mean(accuracy)))
-        ax.scatter(
+        ax.scatter(  # as the section 5 scatter's: thin, open at its centre, so it hides no point
             *mean,
-            s=120,
-            facecolors="none",  # reader r54b: hollow, as the section 5 scatter's: the points under it show
-            marker=style["marker"],
+            s=400,
+            marker=CROSS_HAIR,
+            facecolors="none",
             edgecolors=style["color"],
-            linewidths=2.0,
+            linewidths=1.4,
             zorder=5,
-            path_effects=halo(2.0, ("ink",)),
+            path_effects=halo(1.4, ("free",)),
             gid=f"{name}: mean",
         )
         above = int(np.sum(accuracy > all_free))
@@ -86,18 +108,7 @@ def _legend(fig: Figure, spare=None) -> None:
     covers nothing."""
     handles = [
         Line2D([], [], color=COLORS["reference"], linestyle="--", label='"all free" (diagonal): above it, better'),
-        Line2D(  # drawn as the means are: hollow, the group's colour (here a neutral grey), a dark edge
-            [],
-            [],
-            marker="o",
-            linestyle="",
-            markersize=11,
-            markerfacecolor="none",
-            markeredgecolor=COLORS["reference"],
-            markeredgewidth=2.0,
-            path_effects=halo(2.0, ("ink",)),
-            label="large hollow mark, thick, in the panel's own shape: the panel's mean",
-        ),
+        mean_handle(COLORS["reference"], MEAN_SAID.format("panel")),  # in a neutral grey for the panel's colour
     ]
     if spare is not None:  # wrapped to the slot, and out of the layout: a wide legend there squeezed every column
         for handle in handles:

@@ -27,6 +27,7 @@ from matplotlib.patches import Patch
 from matplotlib.ticker import FuncFormatter, LogLocator, NullLocator
 
 from toolkit.learning.metrics import reconstruction_accuracy
+from toolkit.plots.accuracy_panels import CROSS_HAIR, MEAN_SAID, mean_handle
 from toolkit.plots.alt import Part, describe, lines_part
 from toolkit.plots.box_names import NAME_POINTS, fitted, slot_points, tick_names
 from toolkit.plots.palette import COLORS, GREYS_CMAP, LINE_COLORS, LINE_STYLES, PAGE_WIDTH, halo, series_style
@@ -163,8 +164,8 @@ FEW = 50  # a group of at most this many workspaces is drawn larger and on top: 
 GREY = {True: dict(s=28, alpha=1.0, linewidths=0.8, zorder=3), False: dict(s=10, alpha=0.5, linewidths=0, zorder=1)}
 AREA = {"^": 1.7, "v": 1.7, "o": 1.2}  # marker area factors: a triangle of the same size looks half a square's
 LAYERS = 10  # slices of a large group drawn in turns with the other large groups' (accuracy_vs_all_free)
-MEAN_SIZE = 300  # the first group's mean marker (points squared); each later group's is smaller, drawn over it
-POINT_SIZE = 45  # a point of a small group; its mean's marker at least 5 times its area (r47b: it hugged one point)
+MEAN_SIZE = 1000  # the first group's mean cross-hair (points squared); each later group's is smaller, drawn over it
+POINT_SIZE = 45  # a point of a small group; its mean's cross-hair 10 times its area at least (r47b)
 
 
 def accuracy_vs_all_free(
@@ -176,8 +177,8 @@ def accuracy_vs_all_free(
     on it, the CAE has learned nothing about that workspace. A small group (a few dozen workspaces) has larger, filled
     markers ringed in white, drawn on top, the first over the next. Large groups are hollow markers of their own
     shapes, drawn in turns, a slice of each at a time (:data:`LAYERS`): where clouds overlap every group shows (review
-    r14c). Each group's mean is a large hollow marker, thick, behind every point (review r27b; reader r54b: as
-    section 7's panels draw it), each later one smaller and on top of the earlier: means that coincide nest.
+    r14c). Each group's mean is a thin cross-hair open at its centre, behind every point (review r27b; as section 7's
+    panels draw it): a point at the mean shows whole; each later one smaller and on top: means that coincide nest.
     ``series[k]``: group ``k``'s :func:`~toolkit.plots.palette.series_style` (by default ``k``): a page keeps one
     code across figures (r45b).
     """
@@ -227,33 +228,30 @@ def accuracy_vs_all_free(
 
 
 def _key(fig: Figure, ax, series: tuple[int, ...]) -> None:
-    """The scatter's legend below it, the means one entry: a hollow, thick mark of each group's shape and colour,
-    drawn as :mod:`toolkit.plots.accuracy_panels` draws its means (r45b; reader r51b: one style on the page)."""
+    """The scatter's legend below it, the means one entry: a cross-hair in each group's colour, drawn as
+    :mod:`toolkit.plots.accuracy_panels` draws its means (r45b; reader r51b: one style on the page)."""
     handles, labels = ax.get_legend_handles_labels()
-    ringed: dict[str, Any] = dict(linestyle="", markersize=11, markerfacecolor="none", mew=2.0)  # r54b: hollow
-    ringed["path_effects"] = halo(2.0, ("ink",))
-    mean = tuple(Line2D([], [], **{k: series_style(s)[k] for k in ("marker", "color")}, **ringed) for s in series)
-    mean_said = "large hollow mark, thick, in the group's shape: the group's mean"
-    handles, labels = [*handles, mean], [*labels, mean_said]  # r29b: not in
+    mean = tuple(mean_handle(series_style(s)["color"]) for s in series)
+    handles, labels = [*handles, mean], [*labels, MEAN_SAID.format("group")]  # r29b: not in
     key: dict[str, Any] = dict(loc="outside lower center", fontsize=9, frameon=False)
     fig.legend(handles, labels, handler_map={tuple: HandlerTuple(None)}, **key)
 
 
 def _draw_mean(ax, name: str, mean: tuple[float, float], k: int, n: int, s: int, few: bool) -> None:
-    """Group ``k`` of ``n``'s mean, a large hollow marker of its style, edged in ink (as section 7's panels draw
-    theirs; reader r51b), behind every cloud (points zorder 2 and up, each a point of its own over it), each later
-    group's smaller and on top of the earlier, in series ``s``'s style: two means at one spot both show; a ``few``
-    group's mark well outside a point of its own at the mean (reader r47b)."""
-    style = series_style(s)
+    """Group ``k`` of ``n``'s mean, a thin cross-hair open at its centre in series ``s``'s colour (as section 7's
+    panels draw theirs; reader r51b), behind every cloud (points zorder 2 and up), each later group's smaller and on
+    top of the earlier: two means at one spot both show; a ``few`` group's arms reach well past a point of its own
+    at the mean (reader r47b), which shows whole in the open centre (a hollow mark around it read as one mark)."""
+    least = 10 * POINT_SIZE * AREA.get(series_style(s)["marker"], 1.0) * few  # arms well past a point at the mean
     ax.scatter(
         *mean,
-        s=max(MEAN_SIZE * (1 - 0.6 * k / max(n - 1, 1)), 5 * POINT_SIZE * AREA.get(style["marker"], 1.0) * few),
-        facecolors="none",  # reader r54b: hollow, so a point under it shows; behind the points (r20b: on top hid some)
-        edgecolors=style["color"],
-        marker=style["marker"],
-        linewidths=2.0,
+        s=max(MEAN_SIZE * (1 - 0.6 * k / max(n - 1, 1)), least),
+        marker=CROSS_HAIR,
+        facecolors="none",
+        edgecolors=series_style(s)["color"],
+        linewidths=1.4,
         zorder=1 + k / (n + 1),
-        path_effects=halo(2.0, ("ink",)),
+        path_effects=halo(1.4, ("free",)),
         gid=f"{name}: mean",
     )
 
