@@ -197,8 +197,8 @@ def roadmap(tables: Tables | None = None) -> str:
         f"after sampling, which also holds the encoding. In {after} of the {len(dear)} costly cells section 6 splits "
         f'("Where the extra time went": {named}), most of the extra mean time came after sampling. The recorded runs '
         "keep no node counts and do not time the encoding, so they cannot say what grew. "
-        f"[Section 5](#5-where-a-querys-work-goes-in-one-tie-cell-3dc-7-bs)'s live queries show a slightly smaller "
-        f"roadmap, in a cell whose recorded time {time}."
+        f"[Section 5](#5-where-a-querys-work-goes-in-one-tie-cell-3dc-7-bs)'s live queries count the roadmap's nodes "
+        f"and edge points in both modes, in a cell whose recorded time {time}."
     )
 
 
