@@ -192,7 +192,7 @@ def test_roadmap_names_every_mark_and_draws_start_and_goal_whole_and_large(exact
     fig = planning.roadmap(exact, step)
     ax = fig.axes[0]
     named = [t.get_text() for t in fig.legends[0].texts]
-    assert {"edge removed by a repair", "node removed by a repair (ring)", "start", "goal"} <= set(named)
+    assert {"edge removed by a repair", "node removed by a repair", "start", "goal"} <= set(named)
     rings = [c for c in ax.collections if not isinstance(c, LineCollection) and len(c.get_facecolors()) == 0]
     assert len(rings) == 1  # reader r61d, item 6: one ring, the removed node; an edge's entry point is a triangle
     nodes, *_, start, goal = [c for c in ax.collections if not isinstance(c, LineCollection)]

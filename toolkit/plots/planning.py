@@ -265,7 +265,7 @@ def _draw_roadmap(ax, exact: CollisionChecker, step: PlanStep, number: int = 0) 
         *P[step.removed_nodes].T,
         **RING,
         zorder=5,
-        label="node removed by a repair (ring)" if len(step.removed_nodes) else None,  # r29d: none removed, none named
+        label="node removed by a repair" if len(step.removed_nodes) else None,  # review r29d: none removed, none named
         path_effects=halo(2.0),
     )
     for node, marker, size, name in ((START, "s", 90, "start"), (GOAL, "*", 320, "goal")):  # a star's ink is thin
@@ -300,7 +300,7 @@ def _removed_edges(ax, exact: CollisionChecker, segments: np.ndarray, points: in
         if hit.size:
             x, y = Q[hit[0]]
             entry = dict(s=90, marker="v", color=COLORS["ink"], edgecolors=COLORS["free"], linewidths=0.8, zorder=7)
-            ax.scatter([x], [y], **entry, label="where a removed edge enters a C-obstacle (triangle)")  # r29d: named
+            ax.scatter([x], [y], **entry, label="where a removed edge enters a C-obstacle")  # review r29d: named
 
 
 def _margin(ax, share: float = 0.04) -> None:
