@@ -226,11 +226,13 @@ def test_chapter04_tables_name_every_sampler_and_each_failure():
     live = {"2DS": {"BS": cell([1.5, 1.6, 1.7]), "OB": cell([1.12, 1.15, 1.2])}}
     assert chapter04.live_line(live) == (  # reader r48d, item 3: section 3's result, visible
         "**In these live queries** prediction cost time in all 2 cells (the median of each query's own ratio, 1.15 "
-        "to 1.60); 1 of those verdicts is no clear evidence. A handful of queries illustrate; section 6's recorded "
+        "to 1.60); 1 of the 2 verdicts is no clear evidence. A handful of queries illustrate; section 6's recorded "
         "runs decide."
     )
     live["3DC-7"] = {"BS": cell([0.5, 0.6, 0.7]), "G": cell([1.0, 1.0, 1.01])}
     assert "prediction cost time in 2, saved time in 1, tied in 1 of the 4 cells" in chapter04.live_line(live)
+    crossing = {"2DS": {"G": cell([0.7, 1.0, 1.3])}}  # r62d: a tie whose middle half crosses a band edge counts
+    assert "; 1 of the 1 verdicts is no clear evidence" in chapter04.live_line(crossing)
     folded = chapter04.path_checks(tables, {"2DS": dict.fromkeys(PAPER_SAMPLERS, "2 of 2")})
     assert folded.startswith("<details><summary>Success and path validity") and folded.endswith("</details>")
     assert "| 2DS | 2 of 2 | 2 of 2 | 2 of 2 | 2 of 2 |" in folded and said in folded

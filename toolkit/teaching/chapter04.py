@@ -117,7 +117,7 @@ def live_line(tables: Mapping[str, Mapping[str, Mapping]]) -> str:
     found = [findings.planning_verdict(row) for table in tables.values() for row in table.values()]
     medians = [median for median, *_ in found]
     said = Counter(time_verdict(median) for median in medians)
-    unsure = sum(v == findings.UNSURE and time_verdict(m) != TIES for m, *_, v in found)
+    unsure = sum(v == findings.UNSURE for *_, v in found)  # r62d: every verdict the table marks, ties included
     words = {COSTS: "cost time in", SAVES: "saved time in", TIES: "tied in"}
     parts = [f"{words[v]} {said[v]}" for v in (COSTS, SAVES, TIES) if said[v]]
     only = next((words[v] for v in said if said[v] == len(found)), "")
@@ -125,7 +125,7 @@ def live_line(tables: Mapping[str, Mapping[str, Mapping]]) -> str:
     return (
         f"**In these live queries** prediction {cells} (the median of each query's own ratio, "
         f"{min(medians):.2f} to {max(medians):.2f})"
-        + f"; {unsure} of those verdicts {'is' if unsure == 1 else 'are'} no clear evidence" * bool(unsure)
+        + f"; {unsure} of the {len(found)} verdicts {'is' if unsure == 1 else 'are'} no clear evidence" * bool(unsure)
         + ". A handful of queries illustrate; section 6's recorded runs decide."
     )
 
