@@ -1,6 +1,7 @@
 """Planning figures (notebook 04) draw what they are given: C-obstacles, samples, roadmaps, repairs, bar heights."""
 
 import dataclasses
+import io
 import re
 
 import numpy as np
@@ -10,6 +11,7 @@ from matplotlib.collections import LineCollection
 from matplotlib.colors import to_rgba, to_rgba_array
 from matplotlib.contour import ContourSet
 from matplotlib.figure import Figure
+from PIL import Image
 
 from toolkit import scenarios
 from toolkit.experiments.queries import make_queries
@@ -284,7 +286,10 @@ def test_a_pair_whose_taller_bar_says_the_other_way_is_starred_and_told():
     assert "0.60x; the bars' own ratio 1.03x, though the bar with prediction is the taller" in alt.alt_text(fig)
     fig = timings.stage_times({"2DS": planning}, band=(0.5, 0.7))  # reader r48d: * as chapter 04's tables mark it
     assert [t.get_text() for t in fig.axes[0].texts] == ["0.60x*", "0.60x*‡", *["0.60x*"] * 2]
-    assert "(*: inside the noise band; ‡: the bars say the other way)" in fig.axes[0].get_title()
+    assert "\n(*: inside the noise band; ‡: the bars say the other way)" in fig.axes[0].get_title()
+    buffer = io.BytesIO()  # reader r62d: the marks' note on its own line keeps the figure at the column's width
+    fig.savefig(buffer, format="png", dpi=100, bbox_inches="tight")
+    assert Image.open(buffer).size[0] <= 100 * PAGE_WIDTH + 20
     assert "query's ratio 0.60x, inside the noise band; the bars' own ratio" in alt.alt_text(fig)
     assert "*" not in timings.stage_times({"2DS": planning}, band=(0.7, 1.3)).axes[0].get_title()
     # reader r54d, item 4: the bars' own ratio is the quotient of the heights the description prints (4.23 / 2.85 =

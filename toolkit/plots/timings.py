@@ -64,7 +64,8 @@ def stage_times(panels: dict[str, dict], band: tuple[float, float] | None = None
         ax.set_xlabel("sampler, without / with prediction")
         ax.set_ylabel("ms per query (median),\neach panel its own scale")
         ax.set_title(
-            f"{title}: above a pair, the median of each query's ratio{note}",  # reader r31d: one line, not three
+            f"{title}: above a pair, the median of each query's ratio{note}",  # r31d: not three lines; r62d: the
+            # marks' note on a line of its own, since one line of both widened the figure past the column (944 px)
             fontsize=9,
             pad=26,
         )
@@ -108,7 +109,7 @@ def _ratio_labels(
     wide = [band is not None and bool(across) and across[i] and not noisy[i] for i in range(len(ratio))]
     labels = [f"{r:.2f}x{'*' * noisy[i]}{'†' * wide[i]}{CROSSED if crossed[i] else ''}" for i, r in enumerate(ratio)]
     marks = [NOISY] * any(noisy) + [WIDE] * any(wide) + [STARRED] * bool(crossed.any())
-    return labels, f" ({'; '.join(marks)})" if marks else ""
+    return labels, f"\n({'; '.join(marks)})" if marks else ""
 
 
 def _stage_words(
