@@ -1664,7 +1664,7 @@ def test_the_race_states_ompl_s_settings_and_reconciles_its_callbacks_and_batche
     floor = [1e6 / numbers(rates[s])[0] for s in ("3DC-7", "3DC-9", "3DO")]
     # reader r42g, race 4: the 0.04-0.08 µs a state was in no table of the page: cut; the fold prices the states at
     # the checker table's dearest 3D check instead
-    assert "0.04–0.08" not in flat and f"dearest 3D check, {max(floor):.3f} µs" in flat
+    assert "0.04–0.08" not in flat and f"dearest compiled 3D check, {max(floor):.3f} µs" in flat
     # reader r42g, race 6: about 2.5 times, then 1.3-1.7 times more: 3.25-4.25, rounded half up
     whole = [(Decimal("2.5") * Decimal(f)).quantize(Decimal("0.1"), ROUND_HALF_UP) for f in ("1.3", "1.7")]
     assert f"{whole[0]}–{whole[1]} times in all: the Results page's table in [How these results were made]" in flat
@@ -1998,7 +1998,7 @@ def test_reader_r35g_the_race_s_batched_state_cost_is_no_check_cost_on_either_pa
     added = {r: n * round(dearest, 3) / 1000 for r, n in states.items()}  # ms
     estimates = race_held_out("OMPL RRTConnect, checks batched (est.)")
     assert (
-        f"Priced instead at that table's dearest 3D check, {dearest:.3f} µs, OMPL's RRTConnect's "
+        f"Priced instead at that table's dearest compiled 3D check, {dearest:.3f} µs, OMPL's RRTConnect's "
         f"{min(states.values()):,.0f}–{max(states.values()):,.0f} states a query would cost "
         f"{min(added.values()):.2f}–{max(added.values()):.2f} ms; added in full to its estimates of "
         f"{span(list(estimates.values()))} ms, that changes no verdict above."
