@@ -34,11 +34,10 @@ lint: setup
 	$(VENV)/bin/mypy
 
 # The quick tests first, spread over every core, each test file in one worker (its fixtures made once there); then
-# the slow ones on two workers, each test file in one (the grading and install files together: tests/conftest.py),
-# so that one's installs and waits overlap the other's notebooks and site.
+# the slow ones in one process, since they spread their own work (notebooks, the site, grading) over the cores.
 test: setup browser sandbox lint
 	$(PY) -m pytest -q -m "not slow" -n auto --dist loadfile
-	$(PY) -m pytest -q -m slow -n 2 --dist loadgroup --durations=40
+	$(PY) -m pytest -q -m slow --durations=40
 
 # JupyterLab on the notebooks, for a student: open the URL it prints, start with 01.
 lab: setup

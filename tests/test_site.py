@@ -18,7 +18,6 @@ import os
 import re
 import time
 from collections.abc import Iterator
-from concurrent.futures import ThreadPoolExecutor
 from html.parser import HTMLParser
 from pathlib import Path
 from urllib.error import HTTPError
@@ -46,11 +45,8 @@ needs_chromium = pytest.mark.skipif(
 
 
 @pytest.fixture(scope="module")
-def site(tmp_path_factory, notebook_cache, assignment_zip) -> Site:
-    """The site in quick mode, built once for this module (its build time is printed: ``pytest -s``), after the
-    assignments' ``otter assign`` (once a test run: tests/conftest.py), whose student versions it copies."""
-    with ThreadPoolExecutor() as pool:  # another worker may be building some; dist/ stays as they leave it
-        list(pool.map(assignment_zip, grading.assignment_names()))
+def site(tmp_path_factory, notebook_cache) -> Site:
+    """The site in quick mode, built once for this module (its build time is printed: ``pytest -s``)."""
     root = tmp_path_factory.mktemp("site")
     with pytest.MonkeyPatch.context() as env:
         env.setenv("TOOLKIT_CACHE", str(notebook_cache))
