@@ -230,20 +230,6 @@ def ratios_box(tables: Tables) -> str:
     return f'!!! note "How to read the ratios"\n\n{listed}'
 
 
-def sampling_said(tables: Tables) -> str:
-    """Reader r54f, item 1: the answer no flatter than the page: with python-fcl the sampling stage itself took 10 %
-    or more less time by means in so many cells, too small a share of a query to show in most cells' total time;
-    empty where it did so in fewer than half the cells."""
-    facts = checker_scope.slow_checker(tables)
-    saved = facts.sampling_verdicts()[findings.SAVES]
-    if 2 * saved < len(facts.sampling):
-        return ""
-    return (
-        f" With python-fcl the sampling stage itself did take less time, by means, in {saved} of "
-        f"{len(facts.sampling)} cells, but sampling is too small a share of a query to show in most cells' total time."
-    )
-
-
 def counted_said(tables: Tables) -> str:
     """The fold under Figure 1 (reader r53f, lift item 1): the table of counts (:func:`counts`) and a line under it,
     python-fcl's borrowed bands said where its counts beyond them are first given (common rule 4)."""
