@@ -245,7 +245,8 @@ def test_the_why_names_the_ablations_largest_steps_by_their_measure_as_the_table
     assert "even if `z` told it" not in " ".join(texts)  # r57c item 4: Q4 cites the step it rests on
     # r63c item 1: the better CAE's step read one way everywhere, as the bullets' computed +3.2 within the noise
     assert "it moves +3.2 points of balanced accuracy on one seed, too little to tell from noise" in " ".join(texts)
-    assert "balanced accuracy +3.2 points, within noise" in " ".join(texts) and "only a few points" not in said
+    page = " ".join(texts)
+    assert "balanced accuracy +3.2 points, within noise" in page and "only a few points" not in page
     assert "samples it does not state" not in " ".join(texts) and "its rates imply about 60 % valid" in said
     share = (published["acc"] - published["tnr"]) / (published["tpr"] - published["tnr"])  # r58c item 1: not the
     rates = f"keeps {published['tpr']:.0%} of the valid samples and rejects {published['tnr']:.0%} of the invalid"
